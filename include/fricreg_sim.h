@@ -1,0 +1,188 @@
+/*
+ * fricreg_sim.h — GSL ODE drivers for the paper's three reference systems.
+ *
+ * D. D. Quinn, J. Vib. Acoust. 126 (2004): the 1-dof oscillator, Eq. (5); the n-dof chain of
+ * Sec. 3.2; the two blocks on a belt, Eqs. (7). Each driver integrates the bodies' positions and
+ * velocities plus the dissipated energy D as one more state, by the same scheme, on GSL's
+ * gsl_odeiv2 (fixed-step classical RK4 by default, the paper's method), and evaluates friction
+ * through a fricreg context (fricreg.h). No GSL type crosses this header.
+ *
+ * Conventions are those of fricreg.h: int results are fricreg_status codes, nothing is printed,
+ * a failed call leaves the caller's arrays untouched, one simulation per thread.
+ */
+#ifndef FRICREG_SIM_H
+#define FRICREG_SIM_H
+
+#include "fricreg.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Reference systems. Values are fixed forever. */
+enum fricreg_system {
+    /** Eq. (5): x'' + x = f + a sin(omega t), one contact with bound mun, f_eq = x - a sin(wt).
+     *  Paper defaults: a = 0, omega = 1 (sets the cycle length), mun = 1, x0 = 2.75, v0 = 0. */
+    FRICREG_SYSTEM_OSCILLATOR = 1,
+    /** Sec. 3.2: n blocks of mass 1/n, springs of stiffness n, block n tied to a wall, block 1
+     *  driven by a sin(omega t), every block mun = 1, friction entering as f_i/n; W = I.
+     *  Paper defaults: n = 32, a = 0.25, omega = 0.5, at rest at the origin. */
+    FRICREG_SYSTEM_CHAIN = 2,
+    /** Eqs. (7): lower block x1 on a belt u(t) = belt_amp sin(belt_omega t), upper block x2 on
+     *  it, springs 1 and k to the ground; contacts z1 = x1 - u, z2 = x2 - x1 with bounds mu1,
+     *  mu2; W = [[1, -1], [-1, 2]]. Paper defaults: k = 2, mu1 = 0.5, mu2 = 0.25,
+     *  belt_amp = 1, belt_omega = 0.5, at rest at the origin. */
+    FRICREG_SYSTEM_TWOBLOCK = 3
+};
+
+/** System parameters for fricreg_sim_set_param. Values are fixed forever. Which system reads
+ *  which is listed at each; setting one the system does not read is FRICREG_EINVAL. */
+enum fricreg_param {
+    FRICREG_PARAM_A = 1,          /**< forcing amplitude a (oscillator, chain), finite */
+    FRICREG_PARAM_OMEGA = 2,      /**< forcing frequency omega > 0 (oscillator, chain) */
+    FRICREG_PARAM_MUN = 3,        /**< friction bound mun >= 0 (oscillator) */
+    FRICREG_PARAM_X0 = 4,         /**< initial position (oscillator) */
+    FRICREG_PARAM_V0 = 5,         /**< initial velocity (oscillator) */
+    FRICREG_PARAM_N = 6,          /**< number of blocks n, integer 2 … 10^7 (chain) */
+    FRICREG_PARAM_K = 7,          /**< upper spring stiffness K > 0 (twoblock) */
+    FRICREG_PARAM_MU1 = 8,        /**< lower interface bound mu1 N >= 0 (twoblock) */
+    FRICREG_PARAM_MU2 = 9,        /**< upper interface bound mu2 N >= 0 (twoblock) */
+    FRICREG_PARAM_BELT_AMP = 10,  /**< belt displacement amplitude (twoblock) */
+    FRICREG_PARAM_BELT_OMEGA = 11 /**< belt frequency > 0 (twoblock) */
+};
+
+/** Integrators: our own numbering of GSL's gsl_odeiv2 steppers. Values are fixed forever. */
+enum fricreg_integrator {
+    FRICREG_INT_RK2 = 1,     /**< explicit embedded Runge–Kutta (2, 3) */
+    FRICREG_INT_RK4 = 2,     /**< explicit classical 4th-order Runge–Kutta (the paper's) */
+    FRICREG_INT_RKF45 = 3,   /**< explicit Runge–Kutta–Fehlberg (4, 5) */
+    FRICREG_INT_RKCK = 4,    /**< explicit Runge–Kutta Cash–Karp (4, 5) */
+    FRICREG_INT_RK8PD = 5,   /**< explicit Runge–Kutta Prince–Dormand (8, 9) */
+    FRICREG_INT_RK1IMP = 6,  /**< implicit Euler */
+    FRICREG_INT_RK2IMP = 7,  /**< implicit Gaussian 2nd order */
+    FRICREG_INT_RK4IMP = 8,  /**< implicit Gaussian 4th order */
+    FRICREG_INT_BSIMP = 9,   /**< implicit Bulirsch–Stoer (Bader–Deuflhard) */
+    FRICREG_INT_MSADAMS = 10, /**< variable-order Adams, explicit-implicit */
+    FRICREG_INT_MSBDF = 11   /**< variable-order BDF, for stiff problems */
+};
+
+/** GSL's name of an integrator ("rk4", "msbdf", …), or NULL if unknown. Static storage. */
+FRICREG_API const char *fricreg_integrator_name(int integrator);
+
+/** The integrator with GSL's name `name` (as above), or 0 if there is none. */
+FRICREG_API int fricreg_integrator_from_name(const char *name);
+
+/** Opaque simulation of one reference system: parameters, law, integrator, results. */
+typedef struct fricreg_sim fricreg_sim;
+
+/** Create a simulation of `system` (enum fricreg_system) with the paper's parameters, law (4)
+ *  and fixed-step RK4 with dt = 0.01 and eps following the paper's rule (see
+ *  fricreg_sim_set_law). Release with fricreg_sim_free.
+ *  Returns FRICREG_OK; FRICREG_ENULL if out is NULL; FRICREG_EINVAL for an unknown system;
+ *  FRICREG_ENOMEM. */
+FRICREG_API int fricreg_sim_create(int system, fricreg_sim **out);
+
+/** Release a simulation. fricreg_sim_free(NULL) does nothing. */
+FRICREG_API void fricreg_sim_free(fricreg_sim *sim);
+
+/** Set one system parameter (enum fricreg_param; units nondimensional as in the paper).
+ *  Discards any results. Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for a parameter
+ *  the system does not have or a value out of its range; FRICREG_ENONFINITE. */
+FRICREG_API int fricreg_sim_set_param(fricreg_sim *sim, int param, double value);
+
+/** Select the friction law (enum fricreg_law) and eps > 0; eps = 0 selects the paper's rule,
+ *  recomputed from dt: eps = 2 dt (oscillator, twoblock), eps = 10 omega dt (chain).
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown law or eps < 0;
+ *  FRICREG_ENONFINITE. */
+FRICREG_API int fricreg_sim_set_law(fricreg_sim *sim, int law, double eps);
+
+/** Select the integrator (enum fricreg_integrator) and its step control.
+ *  rtol = atol = 0: fixed step dt > 0 (each cycle's last step is shortened to end on the cycle
+ *  boundary). Otherwise adaptive with GSL's standard control (|error| <= atol + rtol |y|),
+ *  dt the initial step. Implicit steppers use a finite-difference Jacobian
+ *  (gsl_multiroot_fdjacobian).
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown integrator, dt <= 0,
+ *  rtol < 0 or atol < 0; FRICREG_ENONFINITE. */
+FRICREG_API int fricreg_sim_set_integrator(fricreg_sim *sim, int integrator, double dt,
+                                           double rtol, double atol);
+
+/** Called after every accepted step with the state at time t: the ndof body positions x and
+ *  velocities v, and the m contact friction forces f and f_eq (NaN where not computed, as in
+ *  fricreg_ctx_eval), all evaluated at (t, x, v). The arrays are valid during the call only.
+ *  Return 0 to go on, nonzero to stop the run early (fricreg_sim_run then returns FRICREG_OK). */
+typedef int (*fricreg_sim_observer)(void *user, double t, size_t ndof, const double x[],
+                                    const double v[], size_t m, const double f[],
+                                    const double f_eq[]);
+
+/** Install an observer (NULL removes it); user is passed back unchanged. Also called once at
+ *  t = 0. Returns FRICREG_OK or FRICREG_ENULL if sim is NULL. */
+FRICREG_API int fricreg_sim_set_observer(fricreg_sim *sim, fricreg_sim_observer fn, void *user);
+
+/** Integrate from t = 0 and the initial conditions to t_end > 0 (replacing earlier results).
+ *  D is recorded per forcing cycle of period 2 pi/omega (belt_omega for twoblock).
+ *
+ *  Before it starts, a fixed explicit step is checked against the stick-zone stiffness
+ *  lambda = W_ii * (slope of the law at v = 0), i.e. 2 mun/eps for (4): dt * lambda must not
+ *  exceed the stepper's stability bound on the negative real axis (FRICREG_ESTEP, naming the
+ *  contact). After every step the state is checked for finiteness (FRICREG_EDIVERGED, naming
+ *  the time and the first non-finite body).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if t_end <= 0 or too many steps
+ *  (more than 2^31); FRICREG_ENONFINITE; FRICREG_ESTEP; FRICREG_EDIVERGED; FRICREG_EINTEGRATOR
+ *  (GSL failed, e.g. the adaptive step underflowed); FRICREG_ESINGULAR; FRICREG_ENOMEM.
+ *  On failure the results hold what was reached before it. */
+FRICREG_API int fricreg_sim_run(fricreg_sim *sim, double t_end);
+
+/** fricreg_sim_run for `cycles` >= 1 whole forcing cycles. Same returns. */
+FRICREG_API int fricreg_sim_run_cycles(fricreg_sim *sim, int cycles);
+
+/** Number of bodies (degrees of freedom): 1, n or 2. 0 if sim is NULL. */
+FRICREG_API size_t fricreg_sim_ndof(const fricreg_sim *sim);
+
+/** Number of contacts: 1, n or 2. 0 if sim is NULL. */
+FRICREG_API size_t fricreg_sim_ncontacts(const fricreg_sim *sim);
+
+/** Quantities of a simulation, for fricreg_sim_get_value. Values are fixed forever. */
+enum fricreg_sim_value {
+    FRICREG_VALUE_TIME = 0,      /**< time reached by the last run */
+    FRICREG_VALUE_EPS = 1,       /**< eps in use (after the paper's rule, if selected) */
+    FRICREG_VALUE_DT = 2,        /**< step size (fixed) or initial step (adaptive) */
+    FRICREG_VALUE_PERIOD = 3,    /**< forcing period 2 pi / omega */
+    FRICREG_VALUE_STEPS = 4,     /**< accepted steps of the last run */
+    FRICREG_VALUE_RHS_EVALS = 5, /**< right-hand-side evaluations of the last run */
+    FRICREG_VALUE_CYCLES = 6,    /**< whole forcing cycles completed by the last run */
+    FRICREG_VALUE_DISSIPATION = 7 /**< total dissipated energy D(t) of the last run */
+};
+
+/** Read one quantity (enum fricreg_sim_value) into *value (counts as exact doubles).
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown quantity. */
+FRICREG_API int fricreg_sim_get_value(const fricreg_sim *sim, int which, double *value);
+
+/** Copy the state at the end of the last run: x[ndof] positions, v[ndof] velocities (body
+ *  coordinates: x for the oscillator, u_i for the chain, x1, x2 for the two blocks).
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if ndof is not fricreg_sim_ndof. */
+FRICREG_API int fricreg_sim_get_state(const fricreg_sim *sim, size_t ndof, double x[],
+                                      double v[]);
+
+/** Copy the dissipation of each whole forcing cycle, D_k = -∫ sum_i w_i zdot_i f_i dt over
+ *  cycle k (w_i = 1/n for the chain, else 1), into D[ncycles]; ncycles must equal
+ *  FRICREG_VALUE_CYCLES. Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE. */
+FRICREG_API int fricreg_sim_get_dissipation(const fricreg_sim *sim, size_t ncycles, double D[]);
+
+/** Copy, per contact, the fraction of time with |zdot_i| < eps (the near-stick set) over the
+ *  last whole cycle, or over the whole run if it completed none, into frac[m].
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if m is not fricreg_sim_ncontacts. */
+FRICREG_API int fricreg_sim_get_stick_fraction(const fricreg_sim *sim, size_t m, double frac[]);
+
+/** Status of the last failed call (FRICREG_OK if none or sim NULL). */
+FRICREG_API int fricreg_sim_errcode(const fricreg_sim *sim);
+
+/** Message of the last failed call: names the parameter, time or contact. "" if none;
+ *  "NULL simulation" if sim is NULL. Owned by sim, valid until its next call. */
+FRICREG_API const char *fricreg_sim_errmsg(const fricreg_sim *sim);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FRICREG_SIM_H */

@@ -1,0 +1,259 @@
+/* ctx.c — context life cycle, setters, error state and counters. Evaluation: partition.c. */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <stdint.h>
+#include <string.h>
+
+#include <gsl/gsl_eigen.h>
+#include <gsl/gsl_matrix.h>
+
+#include "ctx_internal.h"
+#include "gsl_guard.h"
+#include "law.h"
+
+#define SYMMETRY_RTOL 1e-12
+#define PSD_RTOL 1e-12
+
+int fr_fail(fricreg_ctx *ctx, int code, const char *fmt, ...)
+{
+    va_list ap;
+    ctx->errcode = code;
+    va_start(ap, fmt);
+    vsnprintf(ctx->errmsg, sizeof ctx->errmsg, fmt, ap);
+    va_end(ap);
+    return code;
+}
+
+static void free_dense(fricreg_ctx *ctx)
+{
+    free(ctx->W);
+    free(ctx->factor);
+    free(ctx->perm);
+    free(ctx->rhs);
+    free(ctx->rcond_work);
+    ctx->W = ctx->factor = ctx->rhs = ctx->rcond_work = NULL;
+    ctx->perm = NULL;
+}
+
+void fricreg_ctx_free(fricreg_ctx *ctx)
+{
+    if (ctx == NULL)
+        return;
+    free_dense(ctx);
+    free(ctx->mun);
+    free(ctx->w_diag);
+    free(ctx->f);
+    free(ctx->f_eq);
+    free(ctx->stick);
+    free(ctx->stick_prev);
+    free(ctx);
+}
+
+int fricreg_ctx_create(size_t m, fricreg_ctx **out)
+{
+    if (out == NULL)
+        return FRICREG_ENULL;
+    if (m == 0 || m > FR_MAX_CONTACTS)
+        return FRICREG_EINVAL;
+    fricreg_ctx *ctx = calloc(1, sizeof *ctx);
+    if (ctx == NULL)
+        return FRICREG_ENOMEM;
+    ctx->m = m;
+    ctx->law = FRICREG_LAW_QUINN;
+    ctx->eps = 1e-3;
+    ctx->mun = malloc(m * sizeof *ctx->mun);
+    ctx->w_diag = malloc(m * sizeof *ctx->w_diag);
+    ctx->f = malloc(m * sizeof *ctx->f);
+    ctx->f_eq = malloc(m * sizeof *ctx->f_eq);
+    ctx->stick = malloc(m * sizeof *ctx->stick);
+    ctx->stick_prev = malloc(m * sizeof *ctx->stick_prev);
+    if (!ctx->mun || !ctx->w_diag || !ctx->f || !ctx->f_eq || !ctx->stick || !ctx->stick_prev) {
+        fricreg_ctx_free(ctx);
+        return FRICREG_ENOMEM;
+    }
+    for (size_t i = 0; i < m; i++)
+        ctx->mun[i] = ctx->w_diag[i] = 1.0;
+    *out = ctx;
+    return FRICREG_OK;
+}
+
+size_t fricreg_ctx_size(const fricreg_ctx *ctx)
+{
+    return ctx ? ctx->m : 0;
+}
+
+int fricreg_ctx_set_law(fricreg_ctx *ctx, int law, double eps)
+{
+    if (ctx == NULL)
+        return FRICREG_ENULL;
+    if (!fr_law_known(law))
+        return fr_fail(ctx, FRICREG_EINVAL, "set_law: unknown law %d", law);
+    if (!isfinite(eps))
+        return fr_fail(ctx, FRICREG_ENONFINITE, "set_law: eps is not finite");
+    if (!(eps > 0.0))
+        return fr_fail(ctx, FRICREG_EINVAL, "set_law: eps = %g must be > 0", eps);
+    ctx->law = law;
+    ctx->eps = eps;
+    return FRICREG_OK;
+}
+
+/* Common checks of an array argument of m contacts and n = m or m*m elements; `what` names it
+ * in the message. */
+static int check_array(fricreg_ctx *ctx, const char *what, size_t m, size_t n, const double a[])
+{
+    if (ctx == NULL)
+        return FRICREG_ENULL;
+    if (m != ctx->m)
+        return fr_fail(ctx, FRICREG_ESIZE, "%s: m = %zu, context has %zu contacts", what, m,
+                       ctx->m);
+    if (a == NULL)
+        return fr_fail(ctx, FRICREG_ENULL, "%s: array is NULL", what);
+    for (size_t k = 0; k < n; k++)
+        if (!isfinite(a[k]))
+            return fr_fail(ctx, FRICREG_ENONFINITE, "%s: element %zu is not finite", what, k);
+    return FRICREG_OK;
+}
+
+int fricreg_ctx_set_bounds(fricreg_ctx *ctx, size_t m, const double mun[])
+{
+    int status = check_array(ctx, "set_bounds", m, m, mun);
+    if (status != FRICREG_OK)
+        return status;
+    for (size_t i = 0; i < m; i++)
+        if (mun[i] < 0.0)
+            return fr_fail(ctx, FRICREG_EINVAL, "set_bounds: mun[%zu] = %g is negative", i,
+                           mun[i]);
+    memcpy(ctx->mun, mun, m * sizeof *mun);
+    return FRICREG_OK;
+}
+
+int fricreg_ctx_set_coupling_diagonal(fricreg_ctx *ctx, size_t m, const double w[])
+{
+    int status = check_array(ctx, "set_coupling_diagonal", m, m, w);
+    if (status != FRICREG_OK)
+        return status;
+    for (size_t i = 0; i < m; i++)
+        if (!(w[i] > 0.0))
+            return fr_fail(ctx, FRICREG_EINVAL, "set_coupling_diagonal: w[%zu] = %g must be > 0",
+                           i, w[i]);
+    free_dense(ctx);
+    memcpy(ctx->w_diag, w, m * sizeof *w);
+    ctx->factor_valid = 0;
+    return FRICREG_OK;
+}
+
+/* Smallest eigenvalue of the symmetric m x m matrix W (GSL's symmetric eigensolver). */
+static int min_eigenvalue(const double W[], size_t m, double *lambda_min)
+{
+    gsl_matrix *A = gsl_matrix_alloc(m, m);
+    gsl_vector *eval = gsl_vector_alloc(m);
+    gsl_eigen_symm_workspace *work = gsl_eigen_symm_alloc(m);
+    int status = FRICREG_ENOMEM;
+    if (A && eval && work) {
+        memcpy(A->data, W, m * m * sizeof *W); /* a fresh gsl_matrix has tda == m */
+        gsl_error_handler_t *previous = fr_gsl_quiet();
+        int gsl_status = gsl_eigen_symm(A, eval, work);
+        fr_gsl_restore(previous);
+        status = gsl_status ? FRICREG_ENOTPSD : FRICREG_OK;
+        *lambda_min = gsl_vector_min(eval);
+    }
+    gsl_eigen_symm_free(work);
+    gsl_vector_free(eval);
+    gsl_matrix_free(A);
+    return status;
+}
+
+static int check_delassus(fricreg_ctx *ctx, size_t m, const double W[])
+{
+    const char *who = "set_coupling_dense";
+    double scale = 0.0;
+    for (size_t k = 0; k < m * m; k++)
+        scale = fmax(scale, fabs(W[k]));
+    for (size_t i = 0; i < m; i++) {
+        if (!(W[i * m + i] > 0.0))
+            return fr_fail(ctx, FRICREG_ENOTPSD, "%s: W[%zu][%zu] = %g must be > 0", who, i, i,
+                           W[i * m + i]);
+        for (size_t j = i + 1; j < m; j++)
+            if (fabs(W[i * m + j] - W[j * m + i]) > SYMMETRY_RTOL * scale)
+                return fr_fail(ctx, FRICREG_ENOTSYM, "%s: W[%zu][%zu] = %g but W[%zu][%zu] = %g",
+                               who, i, j, W[i * m + j], j, i, W[j * m + i]);
+    }
+    double lambda_min = 0.0;
+    int status = min_eigenvalue(W, m, &lambda_min);
+    if (status == FRICREG_ENOMEM)
+        return fr_fail(ctx, status, "%s: out of memory", who);
+    if (status != FRICREG_OK || lambda_min < -PSD_RTOL * scale * (double)m)
+        return fr_fail(ctx, FRICREG_ENOTPSD, "%s: smallest eigenvalue %g is negative", who,
+                       lambda_min);
+    return FRICREG_OK;
+}
+
+int fricreg_ctx_set_coupling_dense(fricreg_ctx *ctx, size_t m, const double W[])
+{
+    if (m > 0 && m > SIZE_MAX / m)
+        return ctx ? fr_fail(ctx, FRICREG_ESIZE, "set_coupling_dense: m = %zu", m) : FRICREG_ENULL;
+    int status = check_array(ctx, "set_coupling_dense", m, m * m, W);
+    if (status == FRICREG_OK)
+        status = check_delassus(ctx, m, W);
+    if (status != FRICREG_OK)
+        return status;
+
+    double *copy = malloc(m * m * sizeof *copy);
+    double *factor = malloc(m * m * sizeof *factor);
+    size_t *perm = malloc(m * sizeof *perm);
+    double *rhs = malloc(m * sizeof *rhs);
+    double *rcond_work = malloc(3 * m * sizeof *rcond_work);
+    if (!copy || !factor || !perm || !rhs || !rcond_work) {
+        free(copy), free(factor), free(perm), free(rhs), free(rcond_work);
+        return fr_fail(ctx, FRICREG_ENOMEM, "set_coupling_dense: out of memory for m = %zu", m);
+    }
+    free_dense(ctx);
+    memcpy(copy, W, m * m * sizeof *W);
+    for (size_t i = 0; i < m; i++)
+        ctx->w_diag[i] = W[i * m + i];
+    ctx->W = copy;
+    ctx->factor = factor;
+    ctx->perm = perm;
+    ctx->rhs = rhs;
+    ctx->rcond_work = rcond_work;
+    ctx->factor_valid = 0;
+    return FRICREG_OK;
+}
+
+int fricreg_ctx_get_stat(const fricreg_ctx *ctx, int which, int64_t *value)
+{
+    if (ctx == NULL || value == NULL)
+        return FRICREG_ENULL;
+    if (which < 0 || which >= FR_NSTATS)
+        return FRICREG_EINVAL;
+    *value = ctx->stats[which];
+    return FRICREG_OK;
+}
+
+void fricreg_ctx_reset_stats(fricreg_ctx *ctx)
+{
+    if (ctx != NULL)
+        memset(ctx->stats, 0, sizeof ctx->stats);
+}
+
+int fricreg_ctx_errcode(const fricreg_ctx *ctx)
+{
+    return ctx ? ctx->errcode : FRICREG_OK;
+}
+
+const char *fricreg_ctx_errmsg(const fricreg_ctx *ctx)
+{
+    return ctx ? ctx->errmsg : "NULL context";
+}
+
+size_t fricreg_ctx_errmsg_copy(const fricreg_ctx *ctx, char *buf, size_t len)
+{
+    const char *msg = fricreg_ctx_errmsg(ctx);
+    size_t n = strlen(msg);
+    if (buf == NULL || len == 0)
+        return 0;
+    snprintf(buf, len, "%s", msg);
+    return n;
+}
