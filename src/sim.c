@@ -1,0 +1,508 @@
+/* sim.c — fricreg_sim: runs a reference system (systems.c) on GSL's gsl_odeiv2 steppers.
+ *
+ * The state is y = (x, v, D): body positions, velocities and the dissipated energy, all
+ * advanced by the same scheme. Each forcing cycle is integrated to its exact end, so D per
+ * cycle is a difference of two states. After every step the state is checked for finiteness,
+ * because GSL carries a NaN to the end and reports success. */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gsl/gsl_multiroots.h>
+#include <gsl/gsl_odeiv2.h>
+
+#include "ctx_internal.h"
+#include "gsl_guard.h"
+#include "integrator.h"
+#include "law.h"
+#include "sim_internal.h"
+
+#define MAX_GSL_STEPS 2147483648.0 /* 2^31 fixed steps in one run */
+#define STOP_REQUESTED (-1)         /* the observer asked to stop: not an error */
+
+static int sim_fail(fricreg_sim *sim, int code, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+static int sim_fail(fricreg_sim *sim, int code, const char *fmt, ...)
+{
+    va_list ap;
+    sim->errcode = code;
+    va_start(ap, fmt);
+    vsnprintf(sim->errmsg, sizeof sim->errmsg, fmt, ap);
+    va_end(ap);
+    return code;
+}
+
+/* ---- Life cycle and settings ------------------------------------------------------------- */
+
+static void free_run(fricreg_sim *sim)
+{
+    fricreg_ctx_free(sim->ctx);
+    free(sim->y);
+    free(sim->zdot);
+    free(sim->a_free);
+    free(sim->f);
+    free(sim->f_eq);
+    free(sim->stick_time);
+    free(sim->stick_fraction);
+    free(sim->D);
+    sim->ctx = NULL;
+    sim->y = sim->zdot = sim->a_free = sim->f = sim->f_eq = NULL;
+    sim->stick_time = sim->stick_fraction = sim->D = NULL;
+    sim->ndof = sim->m = sim->cycles = 0;
+    sim->t = 0.0;
+    sim->steps = sim->rhs_evals = 0;
+}
+
+void fricreg_sim_free(fricreg_sim *sim)
+{
+    if (sim == NULL)
+        return;
+    free_run(sim);
+    free(sim);
+}
+
+int fricreg_sim_create(int system, fricreg_sim **out)
+{
+    if (out == NULL)
+        return FRICREG_ENULL;
+    if (system < FRICREG_SYSTEM_OSCILLATOR || system > FRICREG_SYSTEM_TWOBLOCK)
+        return FRICREG_EINVAL;
+    fricreg_sim *sim = calloc(1, sizeof *sim);
+    if (sim == NULL)
+        return FRICREG_ENOMEM;
+    sim->system = system;
+    /* The paper's values (spec: reference systems 1-3). */
+    sim->p = (struct fr_params){.a = system == FRICREG_SYSTEM_CHAIN ? 0.25 : 0.0,
+                                .omega = system == FRICREG_SYSTEM_CHAIN ? 0.5 : 1.0,
+                                .mun = 1.0, .x0 = 2.75, .v0 = 0.0, .n = 32,
+                                .k = 2.0, .mu1 = 0.5, .mu2 = 0.25,
+                                .belt_amp = 1.0, .belt_omega = 0.5};
+    sim->law = FRICREG_LAW_QUINN;
+    sim->eps_set = 0.0;
+    sim->integrator = FRICREG_INT_RK4;
+    sim->dt = 0.01;
+    *out = sim;
+    return FRICREG_OK;
+}
+
+int fricreg_sim_set_param(fricreg_sim *sim, int param, double value)
+{
+    if (sim == NULL)
+        return FRICREG_ENULL;
+    struct fr_params p = sim->p;
+    const char *why = "";
+    int status = fr_system_set_param(&p, sim->system, param, value, &why);
+    if (status != FRICREG_OK)
+        return sim_fail(sim, status, "set_param: parameter %d = %g %s", param, value, why);
+    free_run(sim);
+    sim->p = p;
+    return FRICREG_OK;
+}
+
+int fricreg_sim_set_law(fricreg_sim *sim, int law, double eps)
+{
+    if (sim == NULL)
+        return FRICREG_ENULL;
+    if (!fr_law_known(law))
+        return sim_fail(sim, FRICREG_EINVAL, "set_law: unknown law %d", law);
+    if (!isfinite(eps))
+        return sim_fail(sim, FRICREG_ENONFINITE, "set_law: eps is not finite");
+    if (eps < 0.0)
+        return sim_fail(sim, FRICREG_EINVAL, "set_law: eps = %g must be >= 0", eps);
+    free_run(sim);
+    sim->law = law;
+    sim->eps_set = eps;
+    return FRICREG_OK;
+}
+
+int fricreg_sim_set_integrator(fricreg_sim *sim, int integrator, double dt, double rtol,
+                               double atol)
+{
+    if (sim == NULL)
+        return FRICREG_ENULL;
+    if (fr_integrator_find(integrator) == NULL)
+        return sim_fail(sim, FRICREG_EINVAL, "set_integrator: unknown integrator %d", integrator);
+    if (!isfinite(dt) || !isfinite(rtol) || !isfinite(atol))
+        return sim_fail(sim, FRICREG_ENONFINITE, "set_integrator: dt, rtol or atol not finite");
+    if (!(dt > 0.0))
+        return sim_fail(sim, FRICREG_EINVAL, "set_integrator: dt = %g must be > 0", dt);
+    if (rtol < 0.0 || atol < 0.0)
+        return sim_fail(sim, FRICREG_EINVAL, "set_integrator: rtol = %g, atol = %g must be >= 0",
+                        rtol, atol);
+    free_run(sim);
+    sim->integrator = integrator;
+    sim->dt = dt;
+    sim->rtol = rtol;
+    sim->atol = atol;
+    return FRICREG_OK;
+}
+
+int fricreg_sim_set_observer(fricreg_sim *sim, fricreg_sim_observer fn, void *user)
+{
+    if (sim == NULL)
+        return FRICREG_ENULL;
+    sim->observer = fn;
+    sim->observer_user = user;
+    return FRICREG_OK;
+}
+
+static int adaptive(const fricreg_sim *sim)
+{
+    return sim->rtol > 0.0 || sim->atol > 0.0;
+}
+
+/* ---- Right-hand side and Jacobian for GSL ------------------------------------------------ */
+
+/* Contact kinematics and friction at (t, x, v), into sim->zdot, a_free, f (and f_eq). */
+static int eval_friction(fricreg_sim *sim, double t, const double y[], int want_feq)
+{
+    const double *x = y, *v = y + sim->ndof;
+    fr_system_contacts(sim, t, x, v, sim->zdot, sim->a_free);
+    return fricreg_ctx_eval(sim->ctx, sim->m, sim->zdot, sim->a_free, sim->f,
+                            want_feq ? sim->f_eq : NULL);
+}
+
+static int rhs(double t, const double y[], double dydt[], void *params)
+{
+    fricreg_sim *sim = params;
+    size_t n = sim->ndof;
+    sim->rhs_evals++;
+    int status = eval_friction(sim, t, y, 0);
+    if (status != FRICREG_OK) {
+        sim->rhs_status = status;
+        return GSL_EBADFUNC; /* GSL stops the step at once */
+    }
+    memcpy(dydt, y + n, n * sizeof *dydt);
+    fr_system_accelerations(sim, t, y, sim->a_free, sim->f, dydt + n);
+    double power = 0.0;
+    for (size_t i = 0; i < sim->m; i++)
+        power += sim->zdot[i] * sim->f[i];
+    dydt[2 * n] = -fr_system_dissipation_weight(sim) * power;
+    return GSL_SUCCESS;
+}
+
+struct frozen_time {
+    fricreg_sim *sim;
+    double t;
+};
+
+static int rhs_frozen(const gsl_vector *y, void *params, gsl_vector *dydt)
+{
+    struct frozen_time *ft = params;
+    return rhs(ft->t, y->data, dydt->data, ft->sim);
+}
+
+/* Jacobian for the implicit steppers: GSL's forward-difference gsl_multiroot_fdjacobian in y,
+ * one forward difference in t. */
+static int jacobian(double t, const double y[], double *dfdy, double dfdt[], void *params)
+{
+    fricreg_sim *sim = params;
+    size_t dim = 2 * sim->ndof + 1;
+    gsl_vector *f0 = gsl_vector_alloc(dim), *f1 = gsl_vector_alloc(dim);
+    int status = (f0 && f1) ? rhs(t, y, f0->data, sim) : GSL_ENOMEM;
+    if (status == GSL_SUCCESS) {
+        struct frozen_time ft = {sim, t};
+        gsl_multiroot_function F = {rhs_frozen, dim, &ft};
+        gsl_vector_const_view yv = gsl_vector_const_view_array(y, dim);
+        gsl_matrix_view J = gsl_matrix_view_array(dfdy, dim, dim);
+        status = gsl_multiroot_fdjacobian(&F, &yv.vector, f0, GSL_SQRT_DBL_EPSILON, &J.matrix);
+    }
+    double ht = GSL_SQRT_DBL_EPSILON * fmax(1.0, fabs(t));
+    if (status == GSL_SUCCESS)
+        status = rhs(t + ht, y, f1->data, sim);
+    for (size_t k = 0; status == GSL_SUCCESS && k < dim; k++)
+        dfdt[k] = (f1->data[k] - f0->data[k]) / ht;
+    gsl_vector_free(f0);
+    gsl_vector_free(f1);
+    return status;
+}
+
+/* ---- Running ----------------------------------------------------------------------------- */
+
+static int alloc_run(fricreg_sim *sim, size_t cycles)
+{
+    size_t n = fr_system_ndof(sim), m = n;
+    sim->ndof = n;
+    sim->m = m;
+    sim->y = malloc((2 * n + 1) * sizeof *sim->y);
+    sim->zdot = malloc(m * sizeof *sim->zdot);
+    sim->a_free = malloc(m * sizeof *sim->a_free);
+    sim->f = malloc(m * sizeof *sim->f);
+    sim->f_eq = malloc(m * sizeof *sim->f_eq);
+    sim->stick_time = calloc(m, sizeof *sim->stick_time);
+    sim->stick_fraction = calloc(m, sizeof *sim->stick_fraction);
+    sim->D = calloc(cycles + 1, sizeof *sim->D);
+    if (!sim->y || !sim->zdot || !sim->a_free || !sim->f || !sim->f_eq || !sim->stick_time ||
+        !sim->stick_fraction || !sim->D)
+        return sim_fail(sim, FRICREG_ENOMEM, "run: out of memory for %zu bodies", n);
+    int status = fricreg_ctx_create(m, &sim->ctx);
+    if (status == FRICREG_OK)
+        status = fricreg_ctx_set_law(sim->ctx, sim->law, sim->eps);
+    if (status == FRICREG_OK)
+        status = fr_system_configure(sim);
+    if (status != FRICREG_OK)
+        return sim_fail(sim, status, "run: %s",
+                        sim->ctx ? fricreg_ctx_errmsg(sim->ctx) : fricreg_strerror(status));
+    return FRICREG_OK;
+}
+
+/* Slope |df/dv| of the law at the centre of its stick zone: the stiffness it adds. */
+static double law_slope(int law, double mun, double eps)
+{
+    switch (law) {
+    case FRICREG_LAW_QUINN: return 2.0 * mun / eps;               /* (4a) */
+    case FRICREG_LAW_VELOCITY_LIMITED:
+    case FRICREG_LAW_TANH: return mun / eps;                      /* (3), tanh'(0) = 1 */
+    default: return 0.0;                                          /* (1), (2), Karnopp */
+    }
+}
+
+/* A fixed explicit step must keep dt * lambda_i within the stepper's real-axis bound, with
+ * lambda_i = W_ii * slope: the decay rate of contact i in its stick zone (Sec. 3.1.1). */
+static int check_step(fricreg_sim *sim, const struct fr_integrator *integ)
+{
+    if (adaptive(sim) || integ->real_axis_bound == 0.0)
+        return FRICREG_OK;
+    for (size_t i = 0; i < sim->m; i++) {
+        double lambda = sim->ctx->w_diag[i] * law_slope(sim->law, sim->ctx->mun[i], sim->eps);
+        if (sim->dt * lambda > integ->real_axis_bound)
+            return sim_fail(sim, FRICREG_ESTEP,
+                            "run: dt = %g too large for contact %zu: stick-zone stiffness %g "
+                            "gives dt*lambda = %g > %g, the stability bound of %s; reduce dt or "
+                            "raise eps",
+                            sim->dt, i, lambda, sim->dt * lambda, integ->real_axis_bound,
+                            integ->name);
+    }
+    return FRICREG_OK;
+}
+
+static int observe(fricreg_sim *sim)
+{
+    int status = eval_friction(sim, sim->t, sim->y, 1);
+    if (status != FRICREG_OK)
+        return sim_fail(sim, status, "run: t = %.17g: %s", sim->t, fricreg_ctx_errmsg(sim->ctx));
+    const double *x = sim->y, *v = sim->y + sim->ndof;
+    int stop = sim->observer(sim->observer_user, sim->t, sim->ndof, x, v, sim->m, sim->f,
+                             sim->f_eq);
+    return stop ? STOP_REQUESTED : FRICREG_OK;
+}
+
+/* After a step from t_before: finiteness, near-stick time, the observer. */
+static int after_step(fricreg_sim *sim, double t_before)
+{
+    size_t dim = 2 * sim->ndof + 1;
+    for (size_t k = 0; k < dim; k++)
+        if (!isfinite(sim->y[k]))
+            return sim_fail(sim, FRICREG_EDIVERGED,
+                            "run: state not finite at t = %.17g (%s of body %zu): the step is "
+                            "unstable; reduce dt",
+                            sim->t, k < sim->ndof ? "position" : k < 2 * sim->ndof ? "velocity" : "dissipation",
+                            k % sim->ndof);
+    double h = sim->t - t_before;
+    fr_system_contacts(sim, sim->t, sim->y, sim->y + sim->ndof, sim->zdot, sim->a_free);
+    for (size_t i = 0; i < sim->m; i++)
+        sim->stick_time[i] += fabs(sim->zdot[i]) < sim->eps ? h : 0.0;
+    return sim->observer ? observe(sim) : FRICREG_OK;
+}
+
+static int step_failure(fricreg_sim *sim, int gsl_status)
+{
+    if (sim->rhs_status != FRICREG_OK)
+        return sim_fail(sim, sim->rhs_status, "run: t = %.17g: %s", sim->t,
+                        fricreg_ctx_errmsg(sim->ctx));
+    return sim_fail(sim, FRICREG_EINTEGRATOR, "run: GSL stepper failed at t = %.17g: %s", sim->t,
+                    gsl_strerror(gsl_status));
+}
+
+/* Integrates from sim->t to t_target exactly. */
+static int advance(fricreg_sim *sim, gsl_odeiv2_driver *d, const struct fr_integrator *integ,
+                   double t_target, double *h)
+{
+    double gsl_dt = sim->dt * integ->substeps;
+    while (sim->t < t_target) {
+        double t_before = sim->t;
+        int gsl_status;
+        gsl_error_handler_t *previous = fr_gsl_quiet();
+        if (adaptive(sim)) {
+            gsl_status = gsl_odeiv2_evolve_apply(d->e, d->c, d->s, d->sys, &sim->t, t_target, h,
+                                                 sim->y);
+        } else {
+            /* The last step of a cycle is shortened to end on its boundary. */
+            int last = t_target - sim->t <= gsl_dt * (1.0 + 1e-9);
+            double step = last ? t_target - sim->t : gsl_dt;
+            gsl_status = gsl_odeiv2_evolve_apply_fixed_step(d->e, NULL, d->s, d->sys, &sim->t,
+                                                            step, sim->y);
+            if (last && gsl_status == GSL_SUCCESS)
+                sim->t = t_target;
+        }
+        fr_gsl_restore(previous);
+        if (gsl_status != GSL_SUCCESS)
+            return step_failure(sim, gsl_status);
+        sim->steps += adaptive(sim) ? 1 : integ->substeps;
+        int status = after_step(sim, t_before);
+        if (status != FRICREG_OK)
+            return status;
+    }
+    return FRICREG_OK;
+}
+
+static void close_cycle(fricreg_sim *sim, double period, double *D_start)
+{
+    double D_now = sim->y[2 * sim->ndof];
+    sim->D[sim->cycles++] = D_now - *D_start;
+    *D_start = D_now;
+    for (size_t i = 0; i < sim->m; i++) {
+        sim->stick_fraction[i] = sim->stick_time[i] / period;
+        sim->stick_time[i] = 0.0;
+    }
+}
+
+static int integrate(fricreg_sim *sim, gsl_odeiv2_driver *d, const struct fr_integrator *integ,
+                     double t_end)
+{
+    double period = fr_system_period(sim), D_start = 0.0, h = sim->dt;
+    int status = sim->observer ? observe(sim) : FRICREG_OK;
+    for (size_t k = 1; status == FRICREG_OK && sim->t < t_end; k++) {
+        double boundary = (double)k * period;
+        int whole = boundary <= t_end * (1.0 + 1e-12);
+        status = advance(sim, d, integ, whole ? boundary : t_end, &h);
+        if (status == FRICREG_OK && whole)
+            close_cycle(sim, period, &D_start);
+    }
+    if (sim->cycles == 0 && sim->t > 0.0) /* no whole cycle: report over the whole run */
+        for (size_t i = 0; i < sim->m; i++)
+            sim->stick_fraction[i] = sim->stick_time[i] / sim->t;
+    return status == STOP_REQUESTED ? FRICREG_OK : status;
+}
+
+int fricreg_sim_run(fricreg_sim *sim, double t_end)
+{
+    if (sim == NULL)
+        return FRICREG_ENULL;
+    if (!isfinite(t_end))
+        return sim_fail(sim, FRICREG_ENONFINITE, "run: t_end is not finite");
+    const struct fr_integrator *integ = fr_integrator_find(sim->integrator);
+    if (!(t_end > 0.0))
+        return sim_fail(sim, FRICREG_EINVAL, "run: t_end = %g must be > 0", t_end);
+    if (!adaptive(sim) && t_end / (sim->dt * integ->substeps) > MAX_GSL_STEPS)
+        return sim_fail(sim, FRICREG_EINVAL, "run: t_end/dt = %g steps is too many", t_end / sim->dt);
+    free_run(sim);
+    sim->eps = sim->eps_set > 0.0 ? sim->eps_set : fr_system_paper_eps(sim, sim->dt);
+    size_t cycles = (size_t)floor(t_end / fr_system_period(sim) * (1.0 + 1e-12));
+    int status = alloc_run(sim, cycles);
+    if (status == FRICREG_OK)
+        status = check_step(sim, integ);
+    if (status != FRICREG_OK)
+        return status;
+    fr_system_initial(sim, sim->y, sim->y + sim->ndof);
+    sim->y[2 * sim->ndof] = 0.0;
+    sim->rhs_status = FRICREG_OK;
+
+    size_t dim = 2 * sim->ndof + 1;
+    gsl_odeiv2_system sys = {rhs, jacobian, dim, sim};
+    double tol_abs = adaptive(sim) ? sim->atol : 1e-6, tol_rel = adaptive(sim) ? sim->rtol : 0.0;
+    gsl_error_handler_t *previous = fr_gsl_quiet();
+    gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys, integ->type(),
+                                                         sim->dt * integ->substeps, tol_abs,
+                                                         tol_rel);
+    fr_gsl_restore(previous);
+    if (d == NULL)
+        return sim_fail(sim, FRICREG_ENOMEM, "run: GSL driver allocation failed");
+    status = integrate(sim, d, integ, t_end);
+    gsl_odeiv2_driver_free(d);
+    return status;
+}
+
+int fricreg_sim_run_cycles(fricreg_sim *sim, int cycles)
+{
+    if (sim == NULL)
+        return FRICREG_ENULL;
+    if (cycles < 1)
+        return sim_fail(sim, FRICREG_EINVAL, "run_cycles: cycles = %d must be >= 1", cycles);
+    return fricreg_sim_run(sim, cycles * fr_system_period(sim));
+}
+
+/* ---- Results ----------------------------------------------------------------------------- */
+
+size_t fricreg_sim_ndof(const fricreg_sim *sim)
+{
+    return sim ? fr_system_ndof(sim) : 0;
+}
+
+size_t fricreg_sim_ncontacts(const fricreg_sim *sim)
+{
+    return fricreg_sim_ndof(sim); /* one contact per body in all three systems */
+}
+
+int fricreg_sim_get_value(const fricreg_sim *sim, int which, double *value)
+{
+    if (sim == NULL || value == NULL)
+        return FRICREG_ENULL;
+    switch (which) {
+    case FRICREG_VALUE_TIME: *value = sim->t; break;
+    case FRICREG_VALUE_EPS:
+        *value = sim->eps_set > 0.0 ? sim->eps_set : fr_system_paper_eps(sim, sim->dt);
+        break;
+    case FRICREG_VALUE_DT: *value = sim->dt; break;
+    case FRICREG_VALUE_PERIOD: *value = fr_system_period(sim); break;
+    case FRICREG_VALUE_STEPS: *value = (double)sim->steps; break;
+    case FRICREG_VALUE_RHS_EVALS: *value = (double)sim->rhs_evals; break;
+    case FRICREG_VALUE_CYCLES: *value = (double)sim->cycles; break;
+    case FRICREG_VALUE_DISSIPATION: *value = sim->y ? sim->y[2 * sim->ndof] : 0.0; break;
+    default: return FRICREG_EINVAL;
+    }
+    return FRICREG_OK;
+}
+
+int fricreg_sim_get_state(const fricreg_sim *sim, size_t ndof, double x[], double v[])
+{
+    if (sim == NULL || x == NULL || v == NULL)
+        return FRICREG_ENULL;
+    if (ndof != fr_system_ndof(sim))
+        return FRICREG_ESIZE;
+    if (sim->y == NULL) /* not run yet: the initial conditions */
+        fr_system_initial(sim, x, v);
+    else {
+        memcpy(x, sim->y, ndof * sizeof *x);
+        memcpy(v, sim->y + ndof, ndof * sizeof *v);
+    }
+    return FRICREG_OK;
+}
+
+int fricreg_sim_get_dissipation(const fricreg_sim *sim, size_t ncycles, double D[])
+{
+    if (sim == NULL || (D == NULL && ncycles > 0))
+        return FRICREG_ENULL;
+    if (ncycles != sim->cycles)
+        return FRICREG_ESIZE;
+    if (ncycles > 0)
+        memcpy(D, sim->D, ncycles * sizeof *D);
+    return FRICREG_OK;
+}
+
+int fricreg_sim_get_stick_fraction(const fricreg_sim *sim, size_t m, double frac[])
+{
+    if (sim == NULL || frac == NULL)
+        return FRICREG_ENULL;
+    if (m != fricreg_sim_ncontacts(sim))
+        return FRICREG_ESIZE;
+    for (size_t i = 0; i < m; i++)
+        frac[i] = sim->stick_fraction ? sim->stick_fraction[i] : 0.0;
+    return FRICREG_OK;
+}
+
+int fricreg_sim_errcode(const fricreg_sim *sim)
+{
+    return sim ? sim->errcode : FRICREG_OK;
+}
+
+const char *fricreg_sim_errmsg(const fricreg_sim *sim)
+{
+    return sim ? sim->errmsg : "NULL simulation";
+}
