@@ -1,1 +1,198 @@
-/* placeholder */
+/* options.c — parsing and validation of fricreg-sim's options. Every error is one line on
+ * stderr that names the option, and exit status 2; nothing is run or written. */
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+
+static const char *const law_names[] = {NULL, "coulomb", "force-balance", "karnopp",
+                                        "velocity-limited", "tanh", "quinn"};
+
+const char *cli_law_name(int law)
+{
+    return law >= 1 && law <= 6 ? law_names[law] : "?";
+}
+
+const char *cli_system_name(int system)
+{
+    switch (system) {
+    case FRICREG_SYSTEM_OSCILLATOR: return "oscillator";
+    case FRICREG_SYSTEM_CHAIN: return "chain";
+    default: return "twoblock";
+    }
+}
+
+/* A system parameter option: its name, its enum, and the system that has it. */
+struct param_option {
+    const char *name;
+    int param;
+    int system;
+};
+
+static const struct param_option param_options[] = {
+    {"--a", FRICREG_PARAM_A, FRICREG_SYSTEM_OSCILLATOR},
+    {"--omega", FRICREG_PARAM_OMEGA, FRICREG_SYSTEM_OSCILLATOR},
+    {"--mun", FRICREG_PARAM_MUN, FRICREG_SYSTEM_OSCILLATOR},
+    {"--x0", FRICREG_PARAM_X0, FRICREG_SYSTEM_OSCILLATOR},
+    {"--v0", FRICREG_PARAM_V0, FRICREG_SYSTEM_OSCILLATOR},
+    {"--n", FRICREG_PARAM_N, FRICREG_SYSTEM_CHAIN},
+    {"--a", FRICREG_PARAM_A, FRICREG_SYSTEM_CHAIN},
+    {"--omega", FRICREG_PARAM_OMEGA, FRICREG_SYSTEM_CHAIN},
+    {"--k", FRICREG_PARAM_K, FRICREG_SYSTEM_TWOBLOCK},
+    {"--mu1", FRICREG_PARAM_MU1, FRICREG_SYSTEM_TWOBLOCK},
+    {"--mu2", FRICREG_PARAM_MU2, FRICREG_SYSTEM_TWOBLOCK},
+    {"--belt-amp", FRICREG_PARAM_BELT_AMP, FRICREG_SYSTEM_TWOBLOCK},
+    {"--belt-omega", FRICREG_PARAM_BELT_OMEGA, FRICREG_SYSTEM_TWOBLOCK},
+};
+
+static int usage_error(const char *option, const char *what)
+{
+    fprintf(stderr, "fricreg-sim: %s: %s\n", option, what);
+    return CLI_EXIT_USAGE;
+}
+
+/* A finite double, the whole of text. */
+static int parse_double(const char *option, const char *text, double *value)
+{
+    char *end = NULL;
+    errno = 0;
+    *value = strtod(text, &end);
+    if (end == text || *end != '\0' || errno == ERANGE)
+        return usage_error(option, "not a number");
+    if (!isfinite(*value))
+        return usage_error(option, "not a finite number");
+    return 0;
+}
+
+static int parse_positive(const char *option, const char *text, double *value)
+{
+    int status = parse_double(option, text, value);
+    if (status == 0 && !(*value > 0.0))
+        return usage_error(option, "must be > 0");
+    return status;
+}
+
+static int parse_nonnegative(const char *option, const char *text, double *value)
+{
+    int status = parse_double(option, text, value);
+    if (status == 0 && !(*value >= 0.0))
+        return usage_error(option, "must be >= 0");
+    return status;
+}
+
+static int parse_law(const char *text, int *law)
+{
+    for (int k = 1; k <= 6; k++)
+        if (strcmp(text, law_names[k]) == 0) {
+            *law = k;
+            return 0;
+        }
+    return usage_error("--law", "expected coulomb, force-balance, karnopp, velocity-limited, "
+                                "tanh or quinn");
+}
+
+static int parse_param(int system, const char *option, const char *text, struct cli_run *run)
+{
+    for (size_t k = 0; k < sizeof param_options / sizeof param_options[0]; k++) {
+        const struct param_option *p = &param_options[k];
+        if (p->system != system || strcmp(p->name, option) != 0)
+            continue;
+        double value;
+        int status = parse_double(option, text, &value);
+        if (status != 0)
+            return status;
+        /* The library's own check gives the range (e.g. omega > 0, n integer >= 2). */
+        fricreg_sim *probe = NULL;
+        if (fricreg_sim_create(system, &probe) != FRICREG_OK)
+            return usage_error(option, "out of memory");
+        status = fricreg_sim_set_param(probe, p->param, value);
+        if (status != FRICREG_OK) {
+            const char *msg = strstr(fricreg_sim_errmsg(probe), "= ");
+            char what[160];
+            snprintf(what, sizeof what, "value %s", msg ? msg + 2 : fricreg_strerror(status));
+            fricreg_sim_free(probe);
+            return usage_error(option, what);
+        }
+        fricreg_sim_free(probe);
+        if (run->nparams == (int)(sizeof run->params / sizeof run->params[0]))
+            return usage_error(option, "too many parameters");
+        run->params[run->nparams].param = p->param;
+        run->params[run->nparams++].value = value;
+        return 0;
+    }
+    return usage_error(option, "unknown option for this system (see fricreg-sim --help)");
+}
+
+/* Options that every system has. Returns -1 if option is not one of them. */
+static int parse_common(const char *option, const char *text, struct cli_run *run)
+{
+    if (strcmp(option, "--law") == 0)
+        return parse_law(text, &run->law);
+    if (strcmp(option, "--integrator") == 0) {
+        run->integrator = fricreg_integrator_from_name(text);
+        return run->integrator ? 0 : usage_error(option, "unknown integrator (rk2, rk4, rkf45, "
+                                                 "rkck, rk8pd, rk1imp, rk2imp, rk4imp, bsimp, "
+                                                 "msadams, msbdf)");
+    }
+    if (strcmp(option, "--dt") == 0)
+        return parse_positive(option, text, &run->dt);
+    if (strcmp(option, "--eps") == 0)
+        return parse_positive(option, text, &run->eps);
+    if (strcmp(option, "--rtol") == 0)
+        return parse_nonnegative(option, text, &run->rtol);
+    if (strcmp(option, "--atol") == 0)
+        return parse_nonnegative(option, text, &run->atol);
+    if (strcmp(option, "--t-end") == 0)
+        return parse_positive(option, text, &run->t_end);
+    if (strcmp(option, "--cycles") == 0) {
+        double cycles;
+        int status = parse_positive(option, text, &cycles);
+        if (status == 0 && (cycles != floor(cycles) || cycles > 1e7))
+            return usage_error(option, "must be a whole number from 1 to 10^7");
+        run->cycles = (int)cycles;
+        return status;
+    }
+    if (strcmp(option, "--output") == 0) {
+        if (strcmp(text, "summary") == 0)
+            run->output = CLI_SUMMARY;
+        else if (strcmp(text, "trajectory") == 0)
+            run->output = CLI_TRAJECTORY;
+        else
+            return usage_error(option, "expected summary or trajectory");
+        return 0;
+    }
+    return -1;
+}
+
+int cli_parse_run(int system, int argc, char **argv, struct cli_run *run)
+{
+    *run = (struct cli_run){.system = system, .law = FRICREG_LAW_QUINN,
+                            .integrator = FRICREG_INT_RK4, .dt = 0.01, .cycles = 4,
+                            .output = CLI_SUMMARY};
+    int cycles_given = 0;
+    for (int k = 0; k < argc; k++) {
+        char *option = argv[k], *value = NULL;
+        if (strncmp(option, "--", 2) != 0)
+            return usage_error(option, "unexpected argument");
+        char *eq = strchr(option, '=');
+        if (eq != NULL) { /* --name=value */
+            *eq = '\0';
+            value = eq + 1;
+        } else if (k + 1 < argc) {
+            value = argv[++k];
+        } else {
+            return usage_error(option, "missing value");
+        }
+        cycles_given |= strcmp(option, "--cycles") == 0;
+        int status = parse_common(option, value, run);
+        if (status < 0)
+            status = parse_param(system, option, value, run);
+        if (status != 0)
+            return status;
+    }
+    if (run->t_end > 0.0 && cycles_given)
+        return usage_error("--t-end", "give --t-end or --cycles, not both");
+    return 0;
+}

@@ -1,1 +1,164 @@
-/* placeholder */
+/* output.c — runs one simulation and writes its JSON summary or its CSV trajectory. */
+#include <math.h>
+#include <stdlib.h>
+#include <time.h>
+
+#include "cli.h"
+
+static int run_failed(fricreg_sim *sim, int status)
+{
+    /* A step that is too large is a bad --dt: a usage error like any other bad value. */
+    fprintf(stderr, "fricreg-sim: %s%s\n", status == FRICREG_ESTEP ? "--dt: " : "",
+            fricreg_sim_errmsg(sim));
+    fricreg_sim_free(sim);
+    return status == FRICREG_ESTEP ? CLI_EXIT_USAGE : CLI_EXIT_RUN;
+}
+
+fricreg_sim *cli_make_sim(const struct cli_run *run)
+{
+    fricreg_sim *sim = NULL;
+    if (fricreg_sim_create(run->system, &sim) != FRICREG_OK) {
+        fprintf(stderr, "fricreg-sim: out of memory\n");
+        return NULL;
+    }
+    int status = fricreg_sim_set_law(sim, run->law, run->eps);
+    if (status == FRICREG_OK)
+        status = fricreg_sim_set_integrator(sim, run->integrator, run->dt, run->rtol, run->atol);
+    for (int k = 0; status == FRICREG_OK && k < run->nparams; k++)
+        status = fricreg_sim_set_param(sim, run->params[k].param, run->params[k].value);
+    if (status != FRICREG_OK) {
+        fprintf(stderr, "fricreg-sim: %s\n", fricreg_sim_errmsg(sim));
+        fricreg_sim_free(sim);
+        return NULL;
+    }
+    return sim;
+}
+
+static int execute(fricreg_sim *sim, const struct cli_run *run)
+{
+    return run->t_end > 0.0 ? fricreg_sim_run(sim, run->t_end)
+                            : fricreg_sim_run_cycles(sim, run->cycles);
+}
+
+static void json_array(FILE *out, const char *name, size_t n, const double a[])
+{
+    fprintf(out, "\"%s\": [", name);
+    for (size_t i = 0; i < n; i++)
+        fprintf(out, "%s%.17g", i ? ", " : "", a[i]);
+    fprintf(out, "]");
+}
+
+static double value(const fricreg_sim *sim, int which)
+{
+    double v = 0.0;
+    fricreg_sim_get_value(sim, which, &v);
+    return v;
+}
+
+static void write_summary(FILE *out, const struct cli_run *run, const fricreg_sim *sim,
+                          double cpu_seconds)
+{
+    size_t n = fricreg_sim_ndof(sim), m = fricreg_sim_ncontacts(sim);
+    size_t cycles = (size_t)value(sim, FRICREG_VALUE_CYCLES);
+    double *buf = malloc((2 * n + m + cycles + 1) * sizeof *buf);
+    if (buf == NULL) {
+        fprintf(stderr, "fricreg-sim: out of memory\n");
+        return;
+    }
+    double *x = buf, *v = x + n, *stick = v + n, *D = stick + m;
+    fricreg_sim_get_state(sim, n, x, v);
+    fricreg_sim_get_stick_fraction(sim, m, stick);
+    fricreg_sim_get_dissipation(sim, cycles, D);
+    fprintf(out, "{\"system\": \"%s\", \"law\": \"%s\", \"integrator\": \"%s\", ",
+            cli_system_name(run->system), cli_law_name(run->law),
+            fricreg_integrator_name(run->integrator));
+    fprintf(out, "\"adaptive\": %s, \"dt\": %.17g, \"rtol\": %.17g, \"atol\": %.17g, ",
+            run->rtol > 0.0 || run->atol > 0.0 ? "true" : "false", run->dt, run->rtol, run->atol);
+    fprintf(out, "\"eps\": %.17g, \"steps\": %.0f, \"rhs_evals\": %.0f, \"t\": %.17g, ",
+            value(sim, FRICREG_VALUE_EPS), value(sim, FRICREG_VALUE_STEPS),
+            value(sim, FRICREG_VALUE_RHS_EVALS), value(sim, FRICREG_VALUE_TIME));
+    fprintf(out, "\"period\": %.17g, ", value(sim, FRICREG_VALUE_PERIOD));
+    json_array(out, "x", n, x);
+    fprintf(out, ", ");
+    json_array(out, "v", n, v);
+    fprintf(out, ", ");
+    json_array(out, "dissipation_per_cycle", cycles, D);
+    fprintf(out, ", ");
+    json_array(out, "stick_fraction", m, stick);
+    fprintf(out, ", \"cpu_seconds\": %.6f}\n", cpu_seconds);
+    free(buf);
+}
+
+int cli_run_summary(const struct cli_run *run, FILE *out)
+{
+    fricreg_sim *sim = cli_make_sim(run);
+    if (sim == NULL)
+        return CLI_EXIT_USAGE;
+    clock_t start = clock();
+    int status = execute(sim, run);
+    double cpu_seconds = (double)(clock() - start) / CLOCKS_PER_SEC;
+    if (status != FRICREG_OK)
+        return run_failed(sim, status);
+    write_summary(out, run, sim, cpu_seconds);
+    fricreg_sim_free(sim);
+    return 0;
+}
+
+/* CSV row per step; f_eq is an empty field where it was not computed (slipping contact). */
+static int csv_row(void *user, double t, size_t ndof, const double x[], const double v[],
+                   size_t m, const double f[], const double f_eq[])
+{
+    FILE *out = user;
+    fprintf(out, "%.17g", t);
+    for (size_t i = 0; i < ndof; i++)
+        fprintf(out, ",%.17g", x[i]);
+    for (size_t i = 0; i < ndof; i++)
+        fprintf(out, ",%.17g", v[i]);
+    for (size_t i = 0; i < m; i++)
+        fprintf(out, ",%.17g", f[i]);
+    for (size_t i = 0; i < m; i++)
+        isnan(f_eq[i]) ? fputc(',', out) : fprintf(out, ",%.17g", f_eq[i]);
+    fputc('\n', out);
+    return 0;
+}
+
+static void csv_header(FILE *out, size_t ndof, size_t m)
+{
+    const char *names[4] = {"x", "v", "f", "f_eq"};
+    fprintf(out, "t");
+    for (int k = 0; k < 4; k++) {
+        size_t count = k < 2 ? ndof : m;
+        for (size_t i = 0; i < count; i++)
+            count == 1 ? fprintf(out, ",%s", names[k]) : fprintf(out, ",%s%zu", names[k], i + 1);
+    }
+    fputc('\n', out);
+}
+
+/* Rows go to a temporary file first, so that a failed run writes nothing to out. */
+int cli_run_trajectory(const struct cli_run *run, FILE *out)
+{
+    fricreg_sim *sim = cli_make_sim(run);
+    if (sim == NULL)
+        return CLI_EXIT_USAGE;
+    FILE *tmp = tmpfile();
+    if (tmp == NULL) {
+        fprintf(stderr, "fricreg-sim: cannot create a temporary file\n");
+        fricreg_sim_free(sim);
+        return CLI_EXIT_RUN;
+    }
+    csv_header(tmp, fricreg_sim_ndof(sim), fricreg_sim_ncontacts(sim));
+    fricreg_sim_set_observer(sim, csv_row, tmp);
+    int status = execute(sim, run);
+    if (status != FRICREG_OK) {
+        fclose(tmp);
+        return run_failed(sim, status);
+    }
+    rewind(tmp);
+    char chunk[1 << 16];
+    size_t got;
+    while ((got = fread(chunk, 1, sizeof chunk, tmp)) > 0)
+        fwrite(chunk, 1, got, out);
+    fclose(tmp);
+    fricreg_sim_free(sim);
+    return 0;
+}

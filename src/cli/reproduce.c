@@ -1,1 +1,359 @@
-/* placeholder */
+/* reproduce.c — `fricreg-sim reproduce --out DIR`: the paper's experiments (Figs. 5, 6, 9
+ * and 11 of Quinn 2004), one CSV per figure, a PNG per figure when gnuplot is installed, and a
+ * table of each paper number beside ours on stdout. */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "cli.h"
+
+#define PAPER_X_REST (-0.750090) /* Sec. 3.1.1, law (4), dt = 0.01, eps = 2 dt */
+#define PAPER_D_CHAIN 0.0105     /* Fig. 9, n = 32, a = 0.25, omega = 0.5 */
+#define UNFORCED_T_END 20.0
+#define CHAIN_CYCLES 4
+
+/* The time series an observer collects: t and up to 8 named columns per step. */
+struct series {
+    size_t n, cap, width;
+    double *rows; /* n rows of (t, columns…) */
+    int (*columns)(const struct series *s, double t, const double x[], const double v[],
+                   const double f[], const double f_eq[], double out[]);
+};
+
+static int series_push(void *user, double t, size_t ndof, const double x[], const double v[],
+                       size_t m, const double f[], const double f_eq[])
+{
+    (void)ndof, (void)m;
+    struct series *s = user;
+    if (s->n == s->cap) {
+        size_t cap = s->cap ? 2 * s->cap : 4096;
+        double *rows = realloc(s->rows, cap * (s->width + 1) * sizeof *rows);
+        if (rows == NULL)
+            return 1; /* stop the run; the caller sees the short series */
+        s->rows = rows;
+        s->cap = cap;
+    }
+    double *row = s->rows + s->n++ * (s->width + 1);
+    row[0] = t;
+    return s->columns(s, t, x, v, f, f_eq, row + 1);
+}
+
+static int cols_x_f(const struct series *s, double t, const double x[], const double v[],
+                    const double f[], const double f_eq[], double out[])
+{
+    (void)s, (void)t, (void)v;
+    out[0] = x[0];
+    out[1] = f[0];
+    out[2] = isnan(f_eq[0]) ? x[0] : f_eq[0]; /* Eq. (5), a = 0: f_eq = x */
+    return 0;
+}
+
+/* Two blocks: x1, x2, zdot1, zdot2, f1, f2 with the default belt u = sin(0.5 t). */
+static int cols_twoblock(const struct series *s, double t, const double x[], const double v[],
+                         const double f[], const double f_eq[], double out[])
+{
+    (void)s, (void)f_eq;
+    double belt_v = 0.5 * cos(0.5 * t);
+    double row[6] = {x[0], x[1], v[0] - belt_v, v[1] - v[0], f[0], f[1]};
+    memcpy(out, row, sizeof row);
+    return 0;
+}
+
+/* Runs `system` with `law` and RK4 at step dt (eps by the paper's rule) for t_end or, if
+ * t_end is 0, `cycles` cycles; collects s if given. Returns the simulation, or NULL. */
+static fricreg_sim *run_paper(int system, int law, double dt, double t_end, int cycles,
+                              struct series *s)
+{
+    fricreg_sim *sim = NULL;
+    int status = fricreg_sim_create(system, &sim);
+    if (status == FRICREG_OK)
+        status = fricreg_sim_set_law(sim, law, 0.0);
+    if (status == FRICREG_OK)
+        status = fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, dt, 0.0, 0.0);
+    if (status == FRICREG_OK && s != NULL)
+        status = fricreg_sim_set_observer(sim, series_push, s);
+    if (status == FRICREG_OK)
+        status = t_end > 0.0 ? fricreg_sim_run(sim, t_end) : fricreg_sim_run_cycles(sim, cycles);
+    if (status != FRICREG_OK) {
+        fprintf(stderr, "fricreg-sim: reproduce: %s, law %s, dt %g: %s\n",
+                cli_system_name(system), cli_law_name(law), dt, fricreg_sim_errmsg(sim));
+        fricreg_sim_free(sim);
+        return NULL;
+    }
+    return sim;
+}
+
+static double final_position(const fricreg_sim *sim)
+{
+    double x[1], v[1];
+    fricreg_sim_get_state(sim, 1, x, v);
+    return x[0];
+}
+
+static double last_cycle_dissipation(const fricreg_sim *sim)
+{
+    double D[CHAIN_CYCLES] = {0};
+    fricreg_sim_get_dissipation(sim, CHAIN_CYCLES, D);
+    return D[CHAIN_CYCLES - 1];
+}
+
+static FILE *open_in(const char *dir, const char *name, char *path, size_t len)
+{
+    snprintf(path, len, "%s/%s", dir, name);
+    FILE *f = fopen(path, "w");
+    if (f == NULL)
+        fprintf(stderr, "fricreg-sim: reproduce: cannot write %s: %s\n", path, strerror(errno));
+    return f;
+}
+
+static void table_row(const char *figure, const char *quantity, const char *paper, double ours,
+                      const char *difference)
+{
+    printf("%-7s %-44s %-16s %-12.6f %s\n", figure, quantity, paper, ours, difference);
+}
+
+static void table_row_vs(const char *figure, const char *quantity, double paper, double ours,
+                         int relative)
+{
+    char p[32], d[48];
+    snprintf(p, sizeof p, "%.6f", paper);
+    if (relative)
+        snprintf(d, sizeof d, "%+.2f%%", 100.0 * (ours - paper) / fabs(paper));
+    else
+        snprintf(d, sizeof d, "%+.1e", ours - paper);
+    table_row(figure, quantity, p, ours, d);
+}
+
+/* ---- Figure 5 and 6: the unforced oscillator -------------------------------------------- */
+
+static int figure5(const char *dir)
+{
+    static const int laws[4] = {FRICREG_LAW_COULOMB, FRICREG_LAW_FORCE_BALANCE,
+                                FRICREG_LAW_VELOCITY_LIMITED, FRICREG_LAW_QUINN};
+    static const char *const label[4] = {"(1) Coulomb", "(2) force balance",
+                                         "(3) velocity-limited", "(4) Quinn"};
+    struct series s[4];
+    double x_final[4];
+    int ok = 1;
+    for (int k = 0; k < 4 && ok; k++) {
+        s[k] = (struct series){.width = 3, .columns = cols_x_f};
+        fricreg_sim *sim = run_paper(FRICREG_SYSTEM_OSCILLATOR, laws[k], 0.01, UNFORCED_T_END,
+                                     0, &s[k]);
+        ok = sim != NULL && s[k].n == s[0].n;
+        x_final[k] = ok ? final_position(sim) : NAN;
+        fricreg_sim_free(sim);
+    }
+    char path[4096];
+    FILE *out = ok ? open_in(dir, "fig5_unforced.csv", path, sizeof path) : NULL;
+    if (out != NULL) {
+        fprintf(out, "t,x_coulomb,x_force_balance,x_velocity_limited,x_quinn\n");
+        for (size_t i = 0; i < s[0].n; i++) {
+            fprintf(out, "%.10g", s[0].rows[4 * i]);
+            for (int k = 0; k < 4; k++)
+                fprintf(out, ",%.10g", s[k].rows[4 * i + 1]);
+            fputc('\n', out);
+        }
+        fclose(out);
+    }
+    for (int k = 0; k < 4; k++)
+        free(ok ? s[k].rows : NULL);
+    if (out == NULL)
+        return 1;
+    char q[64];
+    for (int k = 0; k < 3; k++) {
+        snprintf(q, sizeof q, "x(t=20), %s", label[k]);
+        table_row("Fig. 5", q, "drifts to 0", x_final[k], "(no stick at -0.75)");
+    }
+    table_row_vs("Fig. 5", "x(t=20), (4) Quinn, dt 0.01, eps 2dt", PAPER_X_REST, x_final[3], 0);
+    table_row_vs("Fig. 5", "x(t=20), (4) Quinn, vs exact rest -0.75", -0.75, x_final[3], 0);
+    return 0;
+}
+
+/* Total variation of f over the rows, divided by its net change: 1 for a monotone force,
+ * large when it chatters. */
+static double variation_ratio(const struct series *s, double t_from)
+{
+    double tv = 0.0, first = NAN, last = NAN;
+    for (size_t i = 0; i < s->n; i++) {
+        const double *r = s->rows + 4 * i;
+        if (r[0] < t_from - 1e-9)
+            continue;
+        tv += isnan(last) ? 0.0 : fabs(r[2] - last);
+        first = isnan(first) ? r[2] : first;
+        last = r[2];
+    }
+    return tv / fabs(last - first);
+}
+
+static int figure6(const char *dir)
+{
+    struct series s = {.width = 3, .columns = cols_x_f};
+    fricreg_sim *sim = run_paper(FRICREG_SYSTEM_OSCILLATOR, FRICREG_LAW_QUINN, 0.01, 3.5, 0, &s);
+    fricreg_sim_free(sim);
+    char path[4096];
+    FILE *out = sim ? open_in(dir, "fig6_force.csv", path, sizeof path) : NULL;
+    if (out != NULL) {
+        fprintf(out, "t,x,f,f_eq\n");
+        for (size_t i = 0; i < s.n; i++) {
+            const double *r = s.rows + 4 * i;
+            if (r[0] >= 2.5 - 1e-9)
+                fprintf(out, "%.10g,%.10g,%.10g,%.10g\n", r[0], r[1], r[2], r[3]);
+        }
+        fclose(out);
+        const double *last = s.rows + 4 * (s.n - 1);
+        table_row("Fig. 6", "f: total variation / net change, (4)", "1 (no chatter)",
+                  variation_ratio(&s, 2.5), "");
+        table_row_vs("Fig. 6", "f - f_eq at t = 3.5, (4) (force balance)", 0.0,
+                     last[2] - last[3], 0);
+    }
+    free(s.rows);
+    return out == NULL;
+}
+
+/* ---- Figure 9: the chain's dissipation against the step -------------------------------- */
+
+static int figure9(const char *dir)
+{
+    static const double dts[] = {1e-4, 2e-4, 5e-4, 1e-3, 2e-3, 5e-3, 1e-2, 2e-2};
+    static const int laws[3] = {FRICREG_LAW_COULOMB, FRICREG_LAW_VELOCITY_LIMITED,
+                                FRICREG_LAW_QUINN};
+    enum { NDT = sizeof dts / sizeof dts[0] };
+    double D[NDT][3];
+    for (int i = 0; i < NDT; i++)
+        for (int k = 0; k < 3; k++) {
+            fricreg_sim *sim = run_paper(FRICREG_SYSTEM_CHAIN, laws[k], dts[i], 0.0,
+                                         CHAIN_CYCLES, NULL);
+            if (sim == NULL)
+                return 1;
+            D[i][k] = last_cycle_dissipation(sim);
+            fricreg_sim_free(sim);
+        }
+    char path[4096];
+    FILE *out = open_in(dir, "fig9_chain.csv", path, sizeof path);
+    if (out == NULL)
+        return 1;
+    fprintf(out, "dt,D_coulomb,D_velocity_limited,D_quinn\n");
+    for (int i = 0; i < NDT; i++)
+        fprintf(out, "%g,%.10g,%.10g,%.10g\n", dts[i], D[i][0], D[i][1], D[i][2]);
+    fclose(out);
+    const int at_001 = 6;
+    table_row_vs("Fig. 9", "D, 4th cycle, (4) Quinn, dt 0.01", PAPER_D_CHAIN, D[at_001][2], 1);
+    table_row_vs("Fig. 9", "D, 4th cycle, (1) Coulomb, dt 0.01", PAPER_D_CHAIN, D[at_001][0], 1);
+    table_row_vs("Fig. 9", "D, 4th cycle, (3) vel.-limited, dt 0.01", PAPER_D_CHAIN,
+                 D[at_001][1], 1);
+    table_row_vs("Fig. 9", "D, 4th cycle, (4) Quinn, dt 1e-4", PAPER_D_CHAIN, D[0][2], 1);
+    table_row_vs("Fig. 9", "D, 4th cycle, (1) Coulomb, dt 1e-4", PAPER_D_CHAIN, D[0][0], 1);
+    table_row_vs("Fig. 9", "D, 4th cycle, (3) vel.-limited, dt 1e-4", PAPER_D_CHAIN, D[0][1], 1);
+    table_row_vs("Sec 3.2", "D, (4) dt 1e-4, vs continuum 2a^3/3", 2.0 * pow(0.25, 3) / 3.0,
+                 D[0][2], 1);
+    return 0;
+}
+
+/* ---- Figure 11: two blocks on a belt --------------------------------------------------- */
+
+static int figure11(const char *dir)
+{
+    struct series s = {.width = 6, .columns = cols_twoblock};
+    fricreg_sim *sim = run_paper(FRICREG_SYSTEM_TWOBLOCK, FRICREG_LAW_QUINN, 0.01, 0.0,
+                                 CHAIN_CYCLES, &s);
+    double stick[2] = {0, 0};
+    if (sim != NULL)
+        fricreg_sim_get_stick_fraction(sim, 2, stick);
+    char path[4096];
+    FILE *out = sim ? open_in(dir, "fig11_twoblock.csv", path, sizeof path) : NULL;
+    fricreg_sim_free(sim);
+    if (out == NULL) {
+        free(s.rows);
+        return 1;
+    }
+    fprintf(out, "t,x1,x2,zdot1,zdot2,f1,f2\n");
+    for (size_t i = 0; i < s.n; i++) {
+        const double *r = s.rows + 7 * i;
+        fprintf(out, "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g\n", r[0], r[1], r[2], r[3], r[4],
+                r[5], r[6]);
+    }
+    fclose(out);
+    free(s.rows);
+    table_row("Fig. 11", "stick fraction, lower interface, 4th cycle", "long sticks", stick[0],
+              "");
+    table_row("Fig. 11", "stick fraction, upper interface, 4th cycle", "long sticks", stick[1],
+              "");
+    return 0;
+}
+
+/* ---- Plots ----------------------------------------------------------------------------- */
+
+static const char plot_script[] =
+    "set terminal pngcairo noenhanced size 900,560\n"
+    "set datafile separator ','\n"
+    "set key autotitle columnhead\n"
+    "set output 'fig5_unforced.png'\n"
+    "set title 'Fig. 5: unforced oscillator, dt = 0.01'\n"
+    "set xlabel 't'; set ylabel 'x'\n"
+    "plot for [c=2:5] 'fig5_unforced.csv' using 1:c with lines\n"
+    "set output 'fig6_force.png'\n"
+    "set title 'Fig. 6: force near stick, law (4)'\n"
+    "plot 'fig6_force.csv' using 1:2 with lines, '' using 1:3 with lines\n"
+    "set output 'fig9_chain.png'\n"
+    "set title 'Fig. 9: chain, D on the 4th cycle'\n"
+    "set logscale x; set xlabel 'dt'; set ylabel 'D'\n"
+    "plot for [c=2:4] 'fig9_chain.csv' using 1:c with linespoints\n"
+    "unset logscale x\n"
+    "set output 'fig11_twoblock.png'\n"
+    "set title 'Fig. 11: two blocks on a belt, law (4)'\n"
+    "set xlabel 't'; set ylabel 'relative velocity'\n"
+    "plot 'fig11_twoblock.csv' using 1:4 with lines, '' using 1:5 with lines\n";
+
+/* PNGs through gnuplot, when it is installed; the CSVs stand on their own without it. */
+static void plot(const char *dir)
+{
+    char path[4096], command[8400];
+    FILE *gp = open_in(dir, "plots.gp", path, sizeof path);
+    if (gp == NULL)
+        return;
+    fputs(plot_script, gp);
+    fclose(gp);
+    if (system("command -v gnuplot >/dev/null 2>&1") != 0) {
+        printf("gnuplot not found: CSVs and %s written, no PNGs\n", path);
+        return;
+    }
+    snprintf(command, sizeof command, "cd '%s' && gnuplot plots.gp", dir);
+    if (system(command) != 0)
+        fprintf(stderr, "fricreg-sim: reproduce: gnuplot failed on %s\n", path);
+}
+
+int cli_reproduce(int argc, char **argv)
+{
+    const char *dir = NULL;
+    for (int k = 0; k < argc; k++) {
+        if (strcmp(argv[k], "--out") == 0 && k + 1 < argc)
+            dir = argv[++k];
+        else if (strncmp(argv[k], "--out=", 6) == 0)
+            dir = argv[k] + 6;
+        else {
+            fprintf(stderr, "fricreg-sim: %s: unknown option for reproduce (--out DIR)\n",
+                    argv[k]);
+            return CLI_EXIT_USAGE;
+        }
+    }
+    if (dir == NULL || *dir == '\0' || strchr(dir, '\'') != NULL) {
+        fprintf(stderr, "fricreg-sim: --out: a directory name is required (no quotes)\n");
+        return CLI_EXIT_USAGE;
+    }
+    if (mkdir(dir, 0777) != 0 && errno != EEXIST) {
+        fprintf(stderr, "fricreg-sim: --out: cannot create %s: %s\n", dir, strerror(errno));
+        return CLI_EXIT_USAGE;
+    }
+    printf("fricreg %s: reproduction of Quinn (2004), RK4, paper's eps rules; files in %s\n\n",
+           fricreg_version(), dir);
+    printf("%-7s %-44s %-16s %-12s %s\n", "figure", "quantity", "paper", "ours", "difference");
+    int failed = figure5(dir) || figure6(dir) || figure9(dir) || figure11(dir);
+    if (failed)
+        return CLI_EXIT_RUN;
+    putchar('\n');
+    plot(dir);
+    return 0;
+}

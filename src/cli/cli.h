@@ -1,0 +1,42 @@
+/* cli.h — fricreg-sim, the command-line tool: shared declarations of its parts. */
+#ifndef FRICREG_CLI_H
+#define FRICREG_CLI_H
+
+#include <stdio.h>
+
+#include "fricreg_sim.h"
+
+#define CLI_EXIT_USAGE 2 /* bad option or value: nothing written */
+#define CLI_EXIT_RUN 1   /* the simulation failed */
+
+enum cli_output { CLI_SUMMARY, CLI_TRAJECTORY };
+
+/* One run of a reference system, as the options describe it. */
+struct cli_run {
+    int system;
+    int law;
+    int integrator;
+    double dt, rtol, atol, eps; /* eps = 0: the paper's rule */
+    double t_end;               /* 0: use cycles */
+    int cycles;
+    enum cli_output output;
+    struct { int param; double value; } params[16];
+    int nparams;
+};
+
+/* options.c: parses argv (after the subcommand) into run; on error prints one line naming the
+ * option to stderr and returns CLI_EXIT_USAGE. */
+int cli_parse_run(int system, int argc, char **argv, struct cli_run *run);
+const char *cli_system_name(int system);
+const char *cli_law_name(int law);
+
+/* output.c */
+int cli_run_summary(const struct cli_run *run, FILE *out);
+int cli_run_trajectory(const struct cli_run *run, FILE *out);
+/* Applies the run's settings to a new simulation; on failure prints why and returns NULL. */
+fricreg_sim *cli_make_sim(const struct cli_run *run);
+
+/* reproduce.c: the paper's experiments into dir, and the comparison table on stdout. */
+int cli_reproduce(int argc, char **argv);
+
+#endif

@@ -1,0 +1,68 @@
+#!/bin/sh
+# fricreg-sim's command line: usage errors exit 2 with one line naming the option and write
+# nothing to stdout; runs print the paper's numbers. Usage: cli.sh PATH/TO/fricreg-sim
+sim=$1
+fails=0
+tmp=${TMPDIR:-/tmp}/fricreg-cli.$$
+mkdir -p "$tmp"
+trap 'rm -rf "$tmp"' EXIT
+
+# expect_usage_error OPTION-NAMED-IN-MESSAGE ARGS...
+expect_usage_error() {
+    named=$1; shift
+    "$sim" "$@" >"$tmp/out" 2>"$tmp/err"
+    rc=$?
+    if [ $rc -ne 2 ] || [ -s "$tmp/out" ] || [ "$(wc -l <"$tmp/err")" -ne 1 ] ||
+       ! grep -q -- "$named" "$tmp/err"; then
+        echo "FAIL: fricreg-sim $* -> exit $rc, stdout $(wc -c <"$tmp/out") bytes, stderr: $(cat "$tmp/err")"
+        fails=$((fails + 1))
+    fi
+}
+
+# expect_output REGEX ARGS...
+expect_output() {
+    regex=$1; shift
+    if ! "$sim" "$@" >"$tmp/out" 2>"$tmp/err" || ! grep -Eq -- "$regex" "$tmp/out"; then
+        echo "FAIL: fricreg-sim $* did not print /$regex/: $(head -c 300 "$tmp/out") $(cat "$tmp/err")"
+        fails=$((fails + 1))
+    fi
+}
+
+expect_usage_error "unknown command" frobnicate
+expect_usage_error "--dt" oscillator --dt -1
+expect_usage_error "--dt" oscillator --dt 0
+expect_usage_error "--dt" oscillator --dt nan
+expect_usage_error "--dt" oscillator --dt inf
+expect_usage_error "--dt" oscillator --dt 1e999
+expect_usage_error "--dt" oscillator --dt 0.01x
+expect_usage_error "--eps" oscillator --eps -0.1
+expect_usage_error "--law" oscillator --law sticky
+expect_usage_error "--integrator" chain --integrator euler
+expect_usage_error "--omega" chain --omega 0
+expect_usage_error "--n" chain --n 1
+expect_usage_error "--n" chain --n 2.5
+expect_usage_error "--k" oscillator --k 2
+expect_usage_error "--mun" oscillator --mun -1
+expect_usage_error "--cycles" twoblock --cycles 1.5
+expect_usage_error "--t-end" oscillator --t-end 5 --cycles 2
+expect_usage_error "--output" oscillator --output xml
+expect_usage_error "--a" oscillator --a
+expect_usage_error "--rtol" oscillator --rtol -1e-6
+# A step too large for the stick zone of (4): dt * 2 mun/eps = 5 > 2.78 (RK4).
+expect_usage_error "--dt" oscillator --dt 0.05 --eps 0.02
+expect_usage_error "--out" reproduce
+
+# Quinn (2004) Sec. 3.1.1: the unforced oscillator sticks at -0.750090.
+expect_output '"x": \[-0\.75008[0-9]+' oscillator --t-end 20
+# Sec. 3.2, Fig. 9: the chain's D on the 4th cycle is 0.0105 (ours 0.010495).
+expect_output '"dissipation_per_cycle": \[[^]]*, 0\.01049[0-9]+\]' chain
+expect_output '"stick_fraction": \[0\.[1-9][0-9]*, 0\.[1-9][0-9]*\]' twoblock
+# Trajectory: header, and one row per GSL step (2 dt for RK4) plus t = 0: 1 + 5/0.02 + header.
+"$sim" oscillator --t-end 5 --output trajectory >"$tmp/traj.csv" || fails=$((fails + 1))
+[ "$(head -n 1 "$tmp/traj.csv")" = "t,x,v,f,f_eq" ] || { echo "FAIL: trajectory header"; fails=$((fails + 1)); }
+rows=$(wc -l <"$tmp/traj.csv")
+[ "$rows" -eq 252 ] || { echo "FAIL: trajectory has $rows lines, expected 252"; fails=$((fails + 1)); }
+
+total=25
+echo "$((total - fails)) passed, $fails failed"
+[ $fails -eq 0 ]

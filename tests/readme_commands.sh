@@ -1,0 +1,11 @@
+#!/bin/sh
+# The README's first two commands are exactly what .ci/run runs. Usage: readme_commands.sh ROOT
+root=$1
+commands=$(awk '/^```sh$/ {inside = 1; n++; next} /^```$/ {inside = 0} inside && n <= 2' "$root/README.md")
+[ -n "$commands" ] || { echo "FAIL: no sh blocks in README.md"; exit 1; }
+fails=0
+echo "$commands" | while IFS= read -r line; do
+    grep -qxF -- "$line" "$root/.ci/run" || { echo "FAIL: README command not in .ci/run: $line"; exit 1; }
+done || fails=1
+echo "$((1 - fails)) passed, $fails failed"
+[ $fails -eq 0 ]
