@@ -1,6 +1,5 @@
 /* ctx.c — context life cycle, setters, error state and counters. Evaluation: partition.c. */
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <stdint.h>
@@ -15,16 +14,6 @@
 
 #define SYMMETRY_RTOL 1e-12
 #define PSD_RTOL 1e-12
-
-int fr_fail(fricreg_ctx *ctx, int code, const char *fmt, ...)
-{
-    va_list ap;
-    ctx->errcode = code;
-    va_start(ap, fmt);
-    vsnprintf(ctx->errmsg, sizeof ctx->errmsg, fmt, ap);
-    va_end(ap);
-    return code;
-}
 
 static void free_dense(fricreg_ctx *ctx)
 {
@@ -240,12 +229,12 @@ void fricreg_ctx_reset_stats(fricreg_ctx *ctx)
 
 int fricreg_ctx_errcode(const fricreg_ctx *ctx)
 {
-    return ctx ? ctx->errcode : FRICREG_OK;
+    return ctx ? ctx->err.code : FRICREG_OK;
 }
 
 const char *fricreg_ctx_errmsg(const fricreg_ctx *ctx)
 {
-    return ctx ? ctx->errmsg : "NULL context";
+    return ctx ? ctx->err.msg : "NULL context";
 }
 
 size_t fricreg_ctx_errmsg_copy(const fricreg_ctx *ctx, char *buf, size_t len)

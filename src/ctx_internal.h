@@ -5,6 +5,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "error.h"
 #include "fricreg.h"
 
 #define FR_NSTATS 4
@@ -32,15 +33,10 @@ struct fricreg_ctx {
     double *rcond_work; /* [3m] dense only: workspace of the condition estimate */
 
     int64_t stats[FR_NSTATS];
-    int errcode;
-    char errmsg[256];
+    struct fr_error err;
 };
 
 /* Records a failure (code and printf-style message) in the context and returns the code. */
-int fr_fail(fricreg_ctx *ctx, int code, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 3, 4)))
-#endif
-    ;
+#define fr_fail(ctx, ...) fr_error_set(&(ctx)->err, __VA_ARGS__)
 
 #endif

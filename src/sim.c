@@ -5,7 +5,6 @@
  * cycle is a difference of two states. After every step the state is checked for finiteness,
  * because GSL carries a NaN to the end and reports success. */
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -22,21 +21,7 @@
 #define MAX_GSL_STEPS 2147483648.0 /* 2^31 fixed steps in one run */
 #define STOP_REQUESTED (-1)         /* the observer asked to stop: not an error */
 
-static int sim_fail(fricreg_sim *sim, int code, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 3, 4)))
-#endif
-    ;
-
-static int sim_fail(fricreg_sim *sim, int code, const char *fmt, ...)
-{
-    va_list ap;
-    sim->errcode = code;
-    va_start(ap, fmt);
-    vsnprintf(sim->errmsg, sizeof sim->errmsg, fmt, ap);
-    va_end(ap);
-    return code;
-}
+#define sim_fail(sim, ...) fr_error_set(&(sim)->err, __VA_ARGS__)
 
 /* ---- Life cycle and settings ------------------------------------------------------------- */
 
@@ -499,10 +484,10 @@ int fricreg_sim_get_stick_fraction(const fricreg_sim *sim, size_t m, double frac
 
 int fricreg_sim_errcode(const fricreg_sim *sim)
 {
-    return sim ? sim->errcode : FRICREG_OK;
+    return sim ? sim->err.code : FRICREG_OK;
 }
 
 const char *fricreg_sim_errmsg(const fricreg_sim *sim)
 {
-    return sim ? sim->errmsg : "NULL simulation";
+    return sim ? sim->err.msg : "NULL simulation";
 }

@@ -5,6 +5,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "error.h"
 #include "fricreg_sim.h"
 
 struct fr_params {
@@ -38,8 +39,7 @@ struct fricreg_sim {
     int64_t steps, rhs_evals;
     int rhs_status; /* fricreg status raised inside the right-hand side */
 
-    int errcode;
-    char errmsg[256];
+    struct fr_error err;
 };
 
 /* systems.c: the equations of motion of each reference system. */

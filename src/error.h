@@ -1,0 +1,17 @@
+/* error.h — the last error of a context or a simulation: a status code and its message. */
+#ifndef FRICREG_ERROR_H
+#define FRICREG_ERROR_H
+
+struct fr_error {
+    int code;
+    char msg[256];
+};
+
+/* Records code and a printf-style message in err, and returns code. */
+int fr_error_set(struct fr_error *err, int code, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+#endif
