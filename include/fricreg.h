@@ -102,7 +102,7 @@ FRICREG_API int fricreg_law_eval(int law, double v, double f_eq, double mun, dou
 /** Evaluate one friction law over an array of m contacts (one eps for all).
  *
  *  v[m]     relative velocities; f_eq[m] equilibrium forces, or NULL for laws (1), (3) and
- *  tanh, which do not use it; mun[m] bounds >= 0; f[m] out: friction forces (may alias v or
+ *  tanh, which do not use it (if given, it is validated all the same); mun[m] bounds >= 0; f[m] out: friction forces (may alias v or
  *  f_eq). Inputs are validated before any output is written. m = 0 is valid and does nothing.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if v, mun, f, or f_eq for a law that needs it, is NULL

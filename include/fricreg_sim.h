@@ -125,7 +125,8 @@ FRICREG_API int fricreg_sim_set_observer(fricreg_sim *sim, fricreg_sim_observer 
  *  lambda = W_ii * (slope of the law at v = 0), i.e. 2 mun/eps for (4): dt * lambda must not
  *  exceed the stepper's stability bound on the negative real axis (FRICREG_ESTEP, naming the
  *  contact). After every step the state is checked for finiteness (FRICREG_EDIVERGED, naming
- *  the time and the first non-finite body).
+ *  the time and the first non-finite body, or the contact whose kinematics overflowed within
+ *  a step).
  *
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if t_end <= 0 or too many steps
  *  (more than 2^31); FRICREG_ENONFINITE; FRICREG_ESTEP; FRICREG_EDIVERGED; FRICREG_EINTEGRATOR

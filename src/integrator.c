@@ -14,7 +14,7 @@
 #include "fricreg_sim.h"
 #include "integrator.h"
 
-#define ROW(ID, NAME, BOUND, SUB) {ID, #NAME, gsl_type_##NAME, BOUND, SUB}
+#define ROW(ID, NAME, BOUND, SUB, TOL) {ID, #NAME, gsl_type_##NAME, BOUND, SUB, TOL}
 
 /* gsl_odeiv2_step_* are data symbols; functions returning them keep the table constant. */
 #define GSL_TYPE(NAME) \
@@ -32,17 +32,17 @@ GSL_TYPE(msadams)
 GSL_TYPE(msbdf)
 
 static const struct fr_integrator table[] = {
-    ROW(FRICREG_INT_RK2, rk2, 2.5, 1),
-    ROW(FRICREG_INT_RK4, rk4, 2.78, 2),
-    ROW(FRICREG_INT_RKF45, rkf45, 3.6, 1),
-    ROW(FRICREG_INT_RKCK, rkck, 3.7, 1),
-    ROW(FRICREG_INT_RK8PD, rk8pd, 5.1, 1),
-    ROW(FRICREG_INT_RK1IMP, rk1imp, 0.0, 1),
-    ROW(FRICREG_INT_RK2IMP, rk2imp, 0.0, 1),
-    ROW(FRICREG_INT_RK4IMP, rk4imp, 0.0, 1),
-    ROW(FRICREG_INT_BSIMP, bsimp, 0.0, 1),
-    ROW(FRICREG_INT_MSADAMS, msadams, 0.0, 1),
-    ROW(FRICREG_INT_MSBDF, msbdf, 0.0, 1),
+    ROW(FRICREG_INT_RK2, rk2, 2.5, 1, 1e-6),
+    ROW(FRICREG_INT_RK4, rk4, 2.78, 2, 1e-6),
+    ROW(FRICREG_INT_RKF45, rkf45, 3.6, 1, 1e-6),
+    ROW(FRICREG_INT_RKCK, rkck, 3.7, 1, 1e-6),
+    ROW(FRICREG_INT_RK8PD, rk8pd, 5.1, 1, 1e-6),
+    ROW(FRICREG_INT_RK1IMP, rk1imp, 0.0, 1, 1e300),
+    ROW(FRICREG_INT_RK2IMP, rk2imp, 0.0, 1, 1e300),
+    ROW(FRICREG_INT_RK4IMP, rk4imp, 0.0, 1, 1e300),
+    ROW(FRICREG_INT_BSIMP, bsimp, 0.0, 1, 1e-6),
+    ROW(FRICREG_INT_MSADAMS, msadams, 0.0, 1, 1e-6),
+    ROW(FRICREG_INT_MSBDF, msbdf, 0.0, 1, 1e-6),
 };
 
 const struct fr_integrator *fr_integrator_find(int id)

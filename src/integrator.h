@@ -11,8 +11,13 @@ struct fr_integrator {
     /* Largest stable dt*lambda on the negative real axis for a fixed step of this stepper
      * (0: not checked a priori, the stepper reports its own failure). */
     double real_axis_bound;
-    /* GSL steps of this stepper per fricreg step dt (see fr_integrator_gsl_step). */
+    /* GSL steps of this stepper per fricreg step dt (GSL's rk4: 2, see integrator.c). */
     int substeps;
+    /* Absolute tolerance given to GSL's driver in a fixed-step run. Only some steppers read
+     * it: the multistep ones to choose their order (1e-6 keeps them accurate), and the
+     * implicit Runge-Kutta ones as their Newton tolerance, which no iteration meets once a
+     * stick brings the velocity to the rounding floor: they get 1e300, no test at all. */
+    double fixed_tolerance;
 };
 
 /* The table row of an integrator id, or NULL if unknown. */

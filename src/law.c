@@ -50,7 +50,7 @@ int fricreg_law_eval_batch(int law, double eps, size_t m, const double v[], cons
         return status;
     if (v == NULL || mun == NULL || f == NULL || (f_eq == NULL && fr_law_uses_feq(law)))
         return FRICREG_ENULL;
-    status = bad_batch_inputs(m, v, fr_law_uses_feq(law) ? f_eq : NULL, mun);
+    status = bad_batch_inputs(m, v, f_eq, mun); /* f_eq is checked whenever given */
     if (status != FRICREG_OK)
         return status;
     /* One loop per law: the switch stays outside, so each loop is a straight-line kernel. */

@@ -55,11 +55,11 @@ static inline double fr_tanh(double v, double mun, double eps)
 }
 
 /* (4): xi = (eps/2) sat(f_eq/mun) (4b); in |v - xi| < eps/2, f = -(2 mun/eps)(v - xi), else
- * -mun sgn(v - xi) (4a). Both branches are -mun sat(2(v - xi)/eps), one select-only formula. */
+ * -mun sgn(v - xi) (4a). Both branches are -mun sat(2(v - xi)/eps) = -mun sat(2v/eps - s)
+ * with s = sat(f_eq/mun): one select-only formula, and at v = 0 exactly mun s, i.e. (2). */
 static inline double fr_quinn(double v, double f_eq, double mun, double eps)
 {
-    double xi = 0.5 * eps * fr_sat_ratio(f_eq, mun);
-    return -mun * fr_sat(2.0 * (v - xi) / eps);
+    return -mun * fr_sat(2.0 * v / eps - fr_sat_ratio(f_eq, mun));
 }
 
 /* Whether the law reads f_eq at velocity v: the near-stick test of Sec. 3.3. */

@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include <gsl/gsl_multiroots.h>
+#include <gsl/gsl_math.h>
 #include <gsl/gsl_odeiv2.h>
 
 #include "ctx_internal.h"
@@ -36,6 +36,8 @@ static void free_run(fricreg_sim *sim)
     free(sim->stick_time);
     free(sim->stick_fraction);
     free(sim->D);
+    free(sim->jac_work);
+    sim->jac_work = NULL;
     sim->ctx = NULL;
     sim->y = sim->zdot = sim->a_free = sim->f = sim->f_eq = NULL;
     sim->stick_time = sim->stick_fraction = sim->D = NULL;
@@ -153,6 +155,34 @@ static int eval_friction(fricreg_sim *sim, double t, const double y[], int want_
                             want_feq ? sim->f_eq : NULL);
 }
 
+static size_t first_nonfinite(const double y[], size_t dim)
+{
+    size_t k = 0;
+    while (k < dim && isfinite(y[k]))
+        k++;
+    return k;
+}
+
+/* The first contact whose kinematics overflowed: a stage of an unstable step. */
+static size_t first_nonfinite_contact(const fricreg_sim *sim)
+{
+    size_t i = 0;
+    while (i < sim->m && isfinite(sim->zdot[i]) && isfinite(sim->a_free[i]))
+        i++;
+    return i;
+}
+
+/* Names component k of the state y = (x, v, D), e.g. "velocity of body 7". */
+static const char *state_part(const fricreg_sim *sim, size_t k, char *buf, size_t len)
+{
+    size_t n = sim->ndof;
+    if (k >= 2 * n)
+        snprintf(buf, len, "dissipation");
+    else
+        snprintf(buf, len, "%s of body %zu", k < n ? "position" : "velocity", k % n);
+    return buf;
+}
+
 static int rhs(double t, const double y[], double dydt[], void *params)
 {
     fricreg_sim *sim = params;
@@ -161,6 +191,7 @@ static int rhs(double t, const double y[], double dydt[], void *params)
     int status = eval_friction(sim, t, y, 0);
     if (status != FRICREG_OK) {
         sim->rhs_status = status;
+        sim->bad_contact = first_nonfinite_contact(sim);
         return GSL_EBADFUNC; /* GSL stops the step at once */
     }
     memcpy(dydt, y + n, n * sizeof *dydt);
@@ -172,39 +203,31 @@ static int rhs(double t, const double y[], double dydt[], void *params)
     return GSL_SUCCESS;
 }
 
-struct frozen_time {
-    fricreg_sim *sim;
-    double t;
-};
-
-static int rhs_frozen(const gsl_vector *y, void *params, gsl_vector *dydt)
-{
-    struct frozen_time *ft = params;
-    return rhs(ft->t, y->data, dydt->data, ft->sim);
-}
-
-/* Jacobian for the implicit steppers: GSL's forward-difference gsl_multiroot_fdjacobian in y,
- * one forward difference in t. */
+/* Jacobian for the implicit steppers, by forward differences with the step
+ * sqrt(DBL_EPSILON) max(|y_j|, 1). GSL's gsl_multiroot_fdjacobian is not used: its step is
+ * relative to |y_j| alone, and at a stick the velocity sits at ~1e-18, where that step is
+ * lost in rounding and the Jacobian becomes noise. One column costs one right-hand side;
+ * the D column is zero, as nothing depends on D. */
 static int jacobian(double t, const double y[], double *dfdy, double dfdt[], void *params)
 {
     fricreg_sim *sim = params;
     size_t dim = 2 * sim->ndof + 1;
-    gsl_vector *f0 = gsl_vector_alloc(dim), *f1 = gsl_vector_alloc(dim);
-    int status = (f0 && f1) ? rhs(t, y, f0->data, sim) : GSL_ENOMEM;
-    if (status == GSL_SUCCESS) {
-        struct frozen_time ft = {sim, t};
-        gsl_multiroot_function F = {rhs_frozen, dim, &ft};
-        gsl_vector_const_view yv = gsl_vector_const_view_array(y, dim);
-        gsl_matrix_view J = gsl_matrix_view_array(dfdy, dim, dim);
-        status = gsl_multiroot_fdjacobian(&F, &yv.vector, f0, GSL_SQRT_DBL_EPSILON, &J.matrix);
+    double *f0 = sim->jac_work, *f1 = f0 + dim, *y1 = f1 + dim;
+    int status = rhs(t, y, f0, sim);
+    memcpy(y1, y, dim * sizeof *y);
+    for (size_t j = 0; status == GSL_SUCCESS && j < dim; j++) {
+        double h = GSL_SQRT_DBL_EPSILON * fmax(fabs(y[j]), 1.0);
+        y1[j] = y[j] + h;
+        status = rhs(t, y1, f1, sim);
+        y1[j] = y[j];
+        for (size_t i = 0; i < dim; i++)
+            dfdy[i * dim + j] = (f1[i] - f0[i]) / h;
     }
-    double ht = GSL_SQRT_DBL_EPSILON * fmax(1.0, fabs(t));
+    double ht = GSL_SQRT_DBL_EPSILON * fmax(fabs(t), 1.0);
     if (status == GSL_SUCCESS)
-        status = rhs(t + ht, y, f1->data, sim);
-    for (size_t k = 0; status == GSL_SUCCESS && k < dim; k++)
-        dfdt[k] = (f1->data[k] - f0->data[k]) / ht;
-    gsl_vector_free(f0);
-    gsl_vector_free(f1);
+        status = rhs(t + ht, y, f1, sim);
+    for (size_t i = 0; status == GSL_SUCCESS && i < dim; i++)
+        dfdt[i] = (f1[i] - f0[i]) / ht;
     return status;
 }
 
@@ -223,7 +246,8 @@ static int alloc_run(fricreg_sim *sim, size_t cycles)
     sim->stick_time = calloc(m, sizeof *sim->stick_time);
     sim->stick_fraction = calloc(m, sizeof *sim->stick_fraction);
     sim->D = calloc(cycles + 1, sizeof *sim->D);
-    if (!sim->y || !sim->zdot || !sim->a_free || !sim->f || !sim->f_eq || !sim->stick_time ||
+    sim->jac_work = malloc(3 * (2 * n + 1) * sizeof *sim->jac_work);
+    if (!sim->jac_work || !sim->y || !sim->zdot || !sim->a_free || !sim->f || !sim->f_eq || !sim->stick_time ||
         !sim->stick_fraction || !sim->D)
         return sim_fail(sim, FRICREG_ENOMEM, "run: out of memory for %zu bodies", n);
     int status = fricreg_ctx_create(m, &sim->ctx);
@@ -281,14 +305,12 @@ static int observe(fricreg_sim *sim)
 /* After a step from t_before: finiteness, near-stick time, the observer. */
 static int after_step(fricreg_sim *sim, double t_before)
 {
-    size_t dim = 2 * sim->ndof + 1;
-    for (size_t k = 0; k < dim; k++)
-        if (!isfinite(sim->y[k]))
-            return sim_fail(sim, FRICREG_EDIVERGED,
-                            "run: state not finite at t = %.17g (%s of body %zu): the step is "
-                            "unstable; reduce dt",
-                            sim->t, k < sim->ndof ? "position" : k < 2 * sim->ndof ? "velocity" : "dissipation",
-                            k % sim->ndof);
+    size_t k = first_nonfinite(sim->y, 2 * sim->ndof + 1);
+    char part[64];
+    if (k <= 2 * sim->ndof)
+        return sim_fail(sim, FRICREG_EDIVERGED,
+                        "run: state not finite at t = %.17g (%s): the step is unstable; reduce dt",
+                        sim->t, state_part(sim, k, part, sizeof part));
     double h = sim->t - t_before;
     fr_system_contacts(sim, sim->t, sim->y, sim->y + sim->ndof, sim->zdot, sim->a_free);
     for (size_t i = 0; i < sim->m; i++)
@@ -298,11 +320,35 @@ static int after_step(fricreg_sim *sim, double t_before)
 
 static int step_failure(fricreg_sim *sim, int gsl_status)
 {
+    if (sim->rhs_status == FRICREG_ENONFINITE) /* a stage of the step blew up */
+        return sim_fail(sim, FRICREG_EDIVERGED,
+                        "run: contact %zu overflowed in the step from t = %.17g: the step is "
+                        "unstable; reduce dt",
+                        sim->bad_contact, sim->t);
     if (sim->rhs_status != FRICREG_OK)
         return sim_fail(sim, sim->rhs_status, "run: t = %.17g: %s", sim->t,
                         fricreg_ctx_errmsg(sim->ctx));
     return sim_fail(sim, FRICREG_EINTEGRATOR, "run: GSL stepper failed at t = %.17g: %s", sim->t,
                     gsl_strerror(gsl_status));
+}
+
+/* One fixed step of size h. GSL's implicit and multistep steppers fail a step when their
+ * Newton or corrector iteration does not converge, which happens at an exact stick, where the
+ * velocity sits at the rounding floor; such a step is retried as two half steps, down to
+ * h / 2^MAX_HALVINGS, so the run keeps the caller's step grid. Explicit steppers never fail. */
+#define MAX_HALVINGS 10
+static int apply_fixed_step(fricreg_sim *sim, gsl_odeiv2_driver *d,
+                            const struct fr_integrator *integ, double h, int depth)
+{
+    double t0 = sim->t, *y = sim->y;
+    int status = gsl_odeiv2_evolve_apply_fixed_step(d->e, NULL, d->s, d->sys, &sim->t, h, y);
+    if (status != GSL_FAILURE || depth == MAX_HALVINGS || sim->rhs_status != FRICREG_OK)
+        return status;
+    sim->t = t0; /* GSL leaves t and y unchanged on failure */
+    gsl_odeiv2_step_reset(d->s);
+    status = apply_fixed_step(sim, d, integ, 0.5 * h, depth + 1);
+    return status == GSL_SUCCESS ? apply_fixed_step(sim, d, integ, t0 + h - sim->t, depth + 1)
+                                 : status;
 }
 
 /* Integrates from sim->t to t_target exactly. */
@@ -321,8 +367,7 @@ static int advance(fricreg_sim *sim, gsl_odeiv2_driver *d, const struct fr_integ
             /* The last step of a cycle is shortened to end on its boundary. */
             int last = t_target - sim->t <= gsl_dt * (1.0 + 1e-9);
             double step = last ? t_target - sim->t : gsl_dt;
-            gsl_status = gsl_odeiv2_evolve_apply_fixed_step(d->e, NULL, d->s, d->sys, &sim->t,
-                                                            step, sim->y);
+            gsl_status = apply_fixed_step(sim, d, integ, step, 0);
             if (last && gsl_status == GSL_SUCCESS)
                 sim->t = t_target;
         }
@@ -391,7 +436,11 @@ int fricreg_sim_run(fricreg_sim *sim, double t_end)
 
     size_t dim = 2 * sim->ndof + 1;
     gsl_odeiv2_system sys = {rhs, jacobian, dim, sim};
-    double tol_abs = adaptive(sim) ? sim->atol : 1e-6, tol_rel = adaptive(sim) ? sim->rtol : 0.0;
+    /* Fixed steps never consult the control, but some steppers read the driver's tolerances:
+     * the multistep ones to pick their order (moderate values), the implicit Runge-Kutta
+     * ones for their Newton iteration (integrator.h, fixed_tolerance). */
+    double tol_abs = adaptive(sim) ? sim->atol : integ->fixed_tolerance;
+    double tol_rel = adaptive(sim) ? sim->rtol : 0.0;
     gsl_error_handler_t *previous = fr_gsl_quiet();
     gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys, integ->type(),
                                                          sim->dt * integ->substeps, tol_abs,

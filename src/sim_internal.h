@@ -34,10 +34,12 @@ struct fricreg_sim {
     double *stick_time;     /* [m] near-stick time in the current cycle */
     double *stick_fraction; /* [m] result */
     double *D;              /* [cycles] dissipation per cycle */
+    double *jac_work;       /* [3 (2 ndof + 1)] finite-difference Jacobian scratch */
     size_t cycles;
     double t;
     int64_t steps, rhs_evals;
-    int rhs_status; /* fricreg status raised inside the right-hand side */
+    int rhs_status;   /* fricreg status raised inside the right-hand side */
+    size_t bad_contact; /* with FRICREG_ENONFINITE: the first contact that overflowed */
 
     struct fr_error err;
 };

@@ -1,0 +1,488 @@
+/* test_sim_api.c — the contract of fricreg_sim.h: every error path, the step checks, the
+ * observer, integrator names, and every GSL stepper on the paper's oscillator case.
+ *
+ * Error checks use a fresh simulation each, so errcode and errmsg can only come from the
+ * failing call itself (a new simulation has errcode FRICREG_OK and errmsg ""). */
+#include <check.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fricreg_sim.h"
+
+#define PI 3.14159265358979323846
+
+static fricreg_sim *make(int system)
+{
+    fricreg_sim *sim = NULL;
+    ck_assert_int_eq(fricreg_sim_create(system, &sim), FRICREG_OK);
+    ck_assert_ptr_nonnull(sim);
+    ck_assert_int_eq(fricreg_sim_errcode(sim), FRICREG_OK);
+    ck_assert_str_eq(fricreg_sim_errmsg(sim), "");
+    return sim;
+}
+
+/* The call returned `code`, and the simulation recorded it with a message. */
+static void expect_failure(const fricreg_sim *sim, int status, int code)
+{
+    ck_assert_int_eq(status, code);
+    ck_assert_int_eq(fricreg_sim_errcode(sim), code);
+    ck_assert_str_ne(fricreg_sim_errmsg(sim), "");
+}
+
+static double value(const fricreg_sim *sim, int which)
+{
+    double out = NAN;
+    ck_assert_int_eq(fricreg_sim_get_value(sim, which, &out), FRICREG_OK);
+    return out;
+}
+
+/* ---- create and NULL handles --------------------------------------------------------------- */
+
+/* Header: FRICREG_EINVAL for an unknown system (valid: 1, 2, 3), FRICREG_ENULL for out NULL;
+ * out is written only on success. */
+START_TEST(test_create_rejects_unknown_system_and_null_out)
+{
+    static const int bad[] = {0, 4, -1, 1000};
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        fricreg_sim *sim = NULL;
+        ck_assert_int_eq(fricreg_sim_create(bad[k], &sim), FRICREG_EINVAL);
+        ck_assert_ptr_null(sim);
+    }
+    ck_assert_int_eq(fricreg_sim_create(FRICREG_SYSTEM_OSCILLATOR, NULL), FRICREG_ENULL);
+}
+END_TEST
+
+/* Every function taking a simulation answers FRICREG_ENULL (or its documented neutral value)
+ * for a NULL one, and free(NULL) does nothing. */
+START_TEST(test_null_simulation_is_rejected_everywhere)
+{
+    double x = 0.0, v = 0.0, d = 0.0;
+    ck_assert_int_eq(fricreg_sim_set_param(NULL, FRICREG_PARAM_A, 1.0), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_sim_set_law(NULL, FRICREG_LAW_QUINN, 0.0), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_sim_set_integrator(NULL, FRICREG_INT_RK4, 0.01, 0.0, 0.0),
+                     FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_sim_set_observer(NULL, NULL, NULL), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_sim_run(NULL, 1.0), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_sim_run_cycles(NULL, 1), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_sim_get_value(NULL, FRICREG_VALUE_TIME, &d), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_sim_get_state(NULL, 1, &x, &v), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_sim_get_dissipation(NULL, 1, &d), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_sim_get_stick_fraction(NULL, 1, &d), FRICREG_ENULL);
+    ck_assert_uint_eq(fricreg_sim_ndof(NULL), 0);
+    ck_assert_uint_eq(fricreg_sim_ncontacts(NULL), 0);
+    ck_assert_int_eq(fricreg_sim_errcode(NULL), FRICREG_OK);
+    ck_assert_str_eq(fricreg_sim_errmsg(NULL), "NULL simulation");
+    fricreg_sim_free(NULL);
+}
+END_TEST
+
+/* ---- set_param ----------------------------------------------------------------------------- */
+
+struct bad_param {
+    int system, param;
+    double value;
+    int code;
+};
+
+/* Header, enum fricreg_param: which system reads which parameter and its valid range. */
+static const struct bad_param bad_params[] = {
+    {FRICREG_SYSTEM_OSCILLATOR, 99, 1.0, FRICREG_EINVAL},     /* unknown parameter */
+    {FRICREG_SYSTEM_OSCILLATOR, 0, 1.0, FRICREG_EINVAL},      /* unknown parameter */
+    {FRICREG_SYSTEM_CHAIN, FRICREG_PARAM_K, 2.385, FRICREG_EINVAL},      /* twoblock's */
+    {FRICREG_SYSTEM_CHAIN, FRICREG_PARAM_MUN, 1.5, FRICREG_EINVAL},      /* oscillator's */
+    {FRICREG_SYSTEM_OSCILLATOR, FRICREG_PARAM_N, 8.0, FRICREG_EINVAL},   /* chain's */
+    {FRICREG_SYSTEM_TWOBLOCK, FRICREG_PARAM_X0, 0.3, FRICREG_EINVAL},    /* oscillator's */
+    {FRICREG_SYSTEM_TWOBLOCK, FRICREG_PARAM_OMEGA, 0.7, FRICREG_EINVAL}, /* belt_omega there */
+    {FRICREG_SYSTEM_OSCILLATOR, FRICREG_PARAM_OMEGA, 0.0, FRICREG_EINVAL},
+    {FRICREG_SYSTEM_CHAIN, FRICREG_PARAM_OMEGA, -0.5, FRICREG_EINVAL},
+    {FRICREG_SYSTEM_TWOBLOCK, FRICREG_PARAM_BELT_OMEGA, 0.0, FRICREG_EINVAL},
+    {FRICREG_SYSTEM_TWOBLOCK, FRICREG_PARAM_K, -2.0, FRICREG_EINVAL},
+    {FRICREG_SYSTEM_OSCILLATOR, FRICREG_PARAM_MUN, -0.1, FRICREG_EINVAL},
+    {FRICREG_SYSTEM_TWOBLOCK, FRICREG_PARAM_MU1, -0.1, FRICREG_EINVAL},
+    {FRICREG_SYSTEM_CHAIN, FRICREG_PARAM_N, 1.0, FRICREG_EINVAL},  /* n >= 2 */
+    {FRICREG_SYSTEM_CHAIN, FRICREG_PARAM_N, 2.5, FRICREG_EINVAL},  /* an integer */
+    {FRICREG_SYSTEM_CHAIN, FRICREG_PARAM_N, 1e7 + 1.0, FRICREG_EINVAL}, /* n <= 10^7 */
+    {FRICREG_SYSTEM_OSCILLATOR, FRICREG_PARAM_A, NAN, FRICREG_ENONFINITE},
+    {FRICREG_SYSTEM_OSCILLATOR, FRICREG_PARAM_X0, INFINITY, FRICREG_ENONFINITE},
+    {FRICREG_SYSTEM_CHAIN, FRICREG_PARAM_N, NAN, FRICREG_ENONFINITE},
+    {FRICREG_SYSTEM_TWOBLOCK, FRICREG_PARAM_BELT_AMP, -INFINITY, FRICREG_ENONFINITE},
+};
+
+START_TEST(test_set_param_rejects_bad_parameter)
+{
+    const struct bad_param *b = &bad_params[_i];
+    fricreg_sim *sim = make(b->system);
+    expect_failure(sim, fricreg_sim_set_param(sim, b->param, b->value), b->code);
+    fricreg_sim_free(sim);
+}
+END_TEST
+
+/* A rejected value changes nothing: the chain keeps n = 32 and period 2 pi/0.5. */
+START_TEST(test_failed_set_param_keeps_parameters)
+{
+    fricreg_sim *sim = make(FRICREG_SYSTEM_CHAIN);
+    expect_failure(sim, fricreg_sim_set_param(sim, FRICREG_PARAM_OMEGA, -0.5), FRICREG_EINVAL);
+    expect_failure(sim, fricreg_sim_set_param(sim, FRICREG_PARAM_N, 2.5), FRICREG_EINVAL);
+    ck_assert_uint_eq(fricreg_sim_ndof(sim), 32);
+    ck_assert_double_eq_tol(value(sim, FRICREG_VALUE_PERIOD), 4.0 * PI, 1e-14);
+    fricreg_sim_free(sim);
+}
+END_TEST
+
+/* ---- set_law and set_integrator ------------------------------------------------------------ */
+
+/* Header: FRICREG_EINVAL for an unknown law (valid 1 … 6) or eps < 0; FRICREG_ENONFINITE. A
+ * rejected call keeps eps at the paper's rule, 2 dt = 0.02. */
+START_TEST(test_set_law_rejects_bad_law_and_eps)
+{
+    static const struct { int law; double eps; int code; } bad[] = {
+        {0, 0.0, FRICREG_EINVAL},
+        {7, 0.0, FRICREG_EINVAL},
+        {FRICREG_LAW_QUINN, -0.01, FRICREG_EINVAL},
+        {FRICREG_LAW_QUINN, NAN, FRICREG_ENONFINITE},
+        {FRICREG_LAW_TANH, INFINITY, FRICREG_ENONFINITE},
+    };
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        fricreg_sim *sim = make(FRICREG_SYSTEM_OSCILLATOR);
+        expect_failure(sim, fricreg_sim_set_law(sim, bad[k].law, bad[k].eps), bad[k].code);
+        ck_assert_double_eq_tol(value(sim, FRICREG_VALUE_EPS), 0.02, 1e-16);
+        fricreg_sim_free(sim);
+    }
+}
+END_TEST
+
+/* Header: FRICREG_EINVAL for an unknown integrator (valid 1 … 11), dt <= 0, rtol < 0 or
+ * atol < 0; FRICREG_ENONFINITE. A rejected call keeps dt = 0.01. */
+START_TEST(test_set_integrator_rejects_bad_settings)
+{
+    static const struct { int integ; double dt, rtol, atol; int code; } bad[] = {
+        {0, 0.01, 0.0, 0.0, FRICREG_EINVAL},
+        {12, 0.01, 0.0, 0.0, FRICREG_EINVAL},
+        {FRICREG_INT_RK4, 0.0, 0.0, 0.0, FRICREG_EINVAL},
+        {FRICREG_INT_RK4, -0.01, 0.0, 0.0, FRICREG_EINVAL},
+        {FRICREG_INT_RKF45, 0.01, -1e-6, 1e-8, FRICREG_EINVAL},
+        {FRICREG_INT_RKF45, 0.01, 1e-6, -1e-8, FRICREG_EINVAL},
+        {FRICREG_INT_RK4, INFINITY, 0.0, 0.0, FRICREG_ENONFINITE},
+        {FRICREG_INT_RK4, NAN, 0.0, 0.0, FRICREG_ENONFINITE},
+        {FRICREG_INT_RKF45, 0.01, INFINITY, 1e-8, FRICREG_ENONFINITE},
+        {FRICREG_INT_RKF45, 0.01, 1e-6, NAN, FRICREG_ENONFINITE},
+    };
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        fricreg_sim *sim = make(FRICREG_SYSTEM_OSCILLATOR);
+        int status = fricreg_sim_set_integrator(sim, bad[k].integ, bad[k].dt, bad[k].rtol,
+                                                bad[k].atol);
+        expect_failure(sim, status, bad[k].code);
+        ck_assert_double_eq_tol(value(sim, FRICREG_VALUE_DT), 0.01, 1e-17);
+        fricreg_sim_free(sim);
+    }
+}
+END_TEST
+
+/* ---- run ----------------------------------------------------------------------------------- */
+
+/* Header: FRICREG_EINVAL if t_end <= 0 or more than 2^31 steps; FRICREG_ENONFINITE for a
+ * NaN or infinite t_end; run_cycles needs cycles >= 1. (dt = 1e-9 to t = 10 is 5e9 GSL steps
+ * of 2 dt.) */
+START_TEST(test_run_rejects_bad_end_time)
+{
+    static const struct { double t_end; int code; } bad[] = {
+        {0.0, FRICREG_EINVAL},
+        {-2.385, FRICREG_EINVAL},
+        {NAN, FRICREG_ENONFINITE},
+        {INFINITY, FRICREG_ENONFINITE},
+    };
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        fricreg_sim *sim = make(FRICREG_SYSTEM_OSCILLATOR);
+        expect_failure(sim, fricreg_sim_run(sim, bad[k].t_end), bad[k].code);
+        fricreg_sim_free(sim);
+    }
+    fricreg_sim *sim = make(FRICREG_SYSTEM_OSCILLATOR);
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 1e-9, 0.0, 0.0),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_COULOMB, 0.0), FRICREG_OK);
+    expect_failure(sim, fricreg_sim_run(sim, 10.0), FRICREG_EINVAL);
+    fricreg_sim_free(sim);
+}
+END_TEST
+
+START_TEST(test_run_cycles_rejects_fewer_than_one)
+{
+    static const int bad[] = {0, -3};
+    for (size_t k = 0; k < 2; k++) {
+        fricreg_sim *sim = make(FRICREG_SYSTEM_CHAIN);
+        expect_failure(sim, fricreg_sim_run_cycles(sim, bad[k]), FRICREG_EINVAL);
+        fricreg_sim_free(sim);
+    }
+}
+END_TEST
+
+/* Sec. 3.1.1: in the stick zone of (4) a contact decays at lambda = W_ii 2 mun/eps; RK4's
+ * real-axis bound is 2.78. Oscillator, eps = 0.02, dt = 0.05: dt lambda = 5 > 2.78. The message
+ * names the contact and dt. */
+START_TEST(test_too_large_step_is_estep_naming_the_contact)
+{
+    fricreg_sim *sim = make(FRICREG_SYSTEM_OSCILLATOR);
+    ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_QUINN, 0.02), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 0.05, 0.0, 0.0),
+                     FRICREG_OK);
+    expect_failure(sim, fricreg_sim_run(sim, 20.0), FRICREG_ESTEP);
+    ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "contact 0"));
+    ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "dt"));
+    fricreg_sim_free(sim);
+}
+END_TEST
+
+/* The same check with coupled contacts uses W_ii: two blocks, eps = 0.02, dt = 0.03, mu2 = 0.6:
+ * contact 0 has lambda = 1 * 2 * 0.5/0.02 = 50 (dt lambda = 1.5), contact 1 has
+ * lambda = 2 * 2 * 0.6/0.02 = 120 (dt lambda = 3.6 > 2.78): the message names contact 1. */
+START_TEST(test_estep_uses_the_coupling_diagonal)
+{
+    fricreg_sim *sim = make(FRICREG_SYSTEM_TWOBLOCK);
+    ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_MU2, 0.6), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_QUINN, 0.02), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 0.03, 0.0, 0.0),
+                     FRICREG_OK);
+    expect_failure(sim, fricreg_sim_run_cycles(sim, 1), FRICREG_ESTEP);
+    ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "contact 1"));
+    fricreg_sim_free(sim);
+}
+END_TEST
+
+/* A divergent run: chain n = 32 under (1) (no stick-zone stiffness, so no FRICREG_ESTEP), RK4
+ * with dt = 0.06. The highest spring mode has frequency near 2n = 64 rad/s, and
+ * 64 * 0.06 = 3.84 exceeds RK4's imaginary-axis bound 2 sqrt(2) = 2.83: the state grows
+ * without bound and overflows within 4 cycles. Header: FRICREG_EDIVERGED, "naming the time and
+ * the first non-finite body"; the results stop before t_end. */
+START_TEST(test_unstable_run_is_ediverged)
+{
+    fricreg_sim *sim = make(FRICREG_SYSTEM_CHAIN);
+    ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_COULOMB, 0.0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 0.06, 0.0, 0.0),
+                     FRICREG_OK);
+    int status = fricreg_sim_run_cycles(sim, 4);
+    ck_assert_msg(status == FRICREG_EDIVERGED, "status %d (%s), message \"%s\"", status,
+                  fricreg_strerror(status), fricreg_sim_errmsg(sim));
+    ck_assert_int_eq(fricreg_sim_errcode(sim), FRICREG_EDIVERGED);
+    ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "t = "));
+    ck_assert_msg(strstr(fricreg_sim_errmsg(sim), "body") || strstr(fricreg_sim_errmsg(sim), "contact"),
+                  "message names no body or contact: %s", fricreg_sim_errmsg(sim));
+    ck_assert_double_lt(value(sim, FRICREG_VALUE_TIME), 4.0 * 4.0 * PI);
+    fricreg_sim_free(sim);
+}
+END_TEST
+
+/* ---- getters ------------------------------------------------------------------------------- */
+
+/* Header: FRICREG_ESIZE for a length that is not ndof / ncontacts / CYCLES, FRICREG_ENULL for a
+ * NULL array, FRICREG_EINVAL for an unknown quantity; a failed call leaves the caller's arrays
+ * untouched. (The getters take a const simulation, so they cannot record errcode/errmsg.) */
+START_TEST(test_getters_reject_size_mismatch_and_null)
+{
+    fricreg_sim *sim = make(FRICREG_SYSTEM_OSCILLATOR);
+    ck_assert_int_eq(fricreg_sim_run(sim, 3.0 * 2.0 * PI), FRICREG_OK); /* 3 whole cycles */
+    ck_assert_double_eq(value(sim, FRICREG_VALUE_CYCLES), 3.0);
+    double x[2] = {2.385, 2.385}, v[2] = {2.385, 2.385}, D[4] = {2.385, 2.385, 2.385, 2.385};
+
+    ck_assert_int_eq(fricreg_sim_get_state(sim, 2, x, v), FRICREG_ESIZE);
+    ck_assert_int_eq(fricreg_sim_get_state(sim, 0, x, v), FRICREG_ESIZE);
+    ck_assert_int_eq(fricreg_sim_get_state(sim, 1, NULL, v), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_sim_get_state(sim, 1, x, NULL), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_sim_get_dissipation(sim, 2, D), FRICREG_ESIZE);
+    ck_assert_int_eq(fricreg_sim_get_dissipation(sim, 4, D), FRICREG_ESIZE);
+    ck_assert_int_eq(fricreg_sim_get_dissipation(sim, 3, NULL), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_sim_get_stick_fraction(sim, 2, D), FRICREG_ESIZE);
+    ck_assert_int_eq(fricreg_sim_get_stick_fraction(sim, 1, NULL), FRICREG_ENULL);
+    for (int k = 0; k < 4; k++)
+        ck_assert_double_eq(D[k], 2.385);
+    for (int k = 0; k < 2; k++) {
+        ck_assert_double_eq(x[k], 2.385);
+        ck_assert_double_eq(v[k], 2.385);
+    }
+
+    double out = 2.385;
+    ck_assert_int_eq(fricreg_sim_get_value(sim, 8, &out), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_sim_get_value(sim, -1, &out), FRICREG_EINVAL);
+    ck_assert_double_eq(out, 2.385);
+    ck_assert_int_eq(fricreg_sim_get_value(sim, FRICREG_VALUE_TIME, NULL), FRICREG_ENULL);
+    fricreg_sim_free(sim);
+}
+END_TEST
+
+/* Header: set_param "discards any results" (and so do set_law and set_integrator, which change
+ * what a run means): after each, no cycle, time or dissipation remains. */
+START_TEST(test_setters_discard_results)
+{
+    fricreg_sim *sim = make(FRICREG_SYSTEM_OSCILLATOR);
+    for (int k = 0; k < 3; k++) {
+        ck_assert_int_eq(fricreg_sim_run_cycles(sim, 2), FRICREG_OK);
+        ck_assert_double_eq(value(sim, FRICREG_VALUE_CYCLES), 2.0);
+        ck_assert_double_gt(value(sim, FRICREG_VALUE_DISSIPATION), 0.0);
+        int status = k == 0   ? fricreg_sim_set_param(sim, FRICREG_PARAM_X0, 2.385)
+                     : k == 1 ? fricreg_sim_set_law(sim, FRICREG_LAW_QUINN, 0.0)
+                              : fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 0.01, 0.0, 0.0);
+        ck_assert_int_eq(status, FRICREG_OK);
+        ck_assert_double_eq(value(sim, FRICREG_VALUE_CYCLES), 0.0);
+        ck_assert_double_eq(value(sim, FRICREG_VALUE_TIME), 0.0);
+        ck_assert_double_eq(value(sim, FRICREG_VALUE_DISSIPATION), 0.0);
+        ck_assert_int_eq(fricreg_sim_get_dissipation(sim, 0, NULL), FRICREG_OK);
+    }
+    fricreg_sim_free(sim);
+}
+END_TEST
+
+/* ---- observer ------------------------------------------------------------------------------ */
+
+struct stopper {
+    double t_stop, t_first, t_last;
+    int calls;
+};
+
+static int stop_after(void *user, double t, size_t ndof, const double x[], const double v[],
+                      size_t m, const double f[], const double f_eq[])
+{
+    struct stopper *s = user;
+    (void)ndof, (void)x, (void)v, (void)m, (void)f, (void)f_eq;
+    if (s->calls++ == 0)
+        s->t_first = t;
+    s->t_last = t;
+    return t >= s->t_stop;
+}
+
+/* Header: the observer is called once at t = 0 and after every accepted step; a nonzero return
+ * stops the run, which then returns FRICREG_OK. RK4 with dt = 0.01 is one GSL step of 0.02 per
+ * call, so the run stops within 0.02 past t_stop = 1.2345. */
+START_TEST(test_observer_stops_the_run_early)
+{
+    fricreg_sim *sim = make(FRICREG_SYSTEM_OSCILLATOR);
+    struct stopper s = {1.2345, NAN, NAN, 0};
+    ck_assert_int_eq(fricreg_sim_set_observer(sim, stop_after, &s), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run(sim, 20.0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_errcode(sim), FRICREG_OK);
+    ck_assert_double_eq(s.t_first, 0.0);
+    ck_assert_double_ge(s.t_last, 1.2345);
+    ck_assert_double_lt(s.t_last, 1.2345 + 0.02 + 1e-12);
+    ck_assert_double_eq(value(sim, FRICREG_VALUE_TIME), s.t_last);
+    ck_assert_int_eq(s.calls, 1 + (int)ceil(1.2345 / 0.02));
+    fricreg_sim_free(sim);
+}
+END_TEST
+
+/* Stopping at the first call (t = 0) is also a successful, empty run. */
+START_TEST(test_observer_stopping_at_start_is_ok)
+{
+    fricreg_sim *sim = make(FRICREG_SYSTEM_TWOBLOCK);
+    struct stopper s = {0.0, NAN, NAN, 0};
+    ck_assert_int_eq(fricreg_sim_set_observer(sim, stop_after, &s), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run_cycles(sim, 2), FRICREG_OK);
+    ck_assert_int_eq(s.calls, 1);
+    ck_assert_double_eq(value(sim, FRICREG_VALUE_TIME), 0.0);
+    ck_assert_double_eq(value(sim, FRICREG_VALUE_CYCLES), 0.0);
+    fricreg_sim_free(sim);
+}
+END_TEST
+
+/* ---- integrator names ---------------------------------------------------------------------- */
+
+START_TEST(test_integrator_names_round_trip)
+{
+    static const char *gsl_names[] = {"rk2", "rk4", "rkf45", "rkck", "rk8pd", "rk1imp",
+                                      "rk2imp", "rk4imp", "bsimp", "msadams", "msbdf"};
+    for (int id = 1; id <= 11; id++) {
+        const char *name = fricreg_integrator_name(id);
+        ck_assert_ptr_nonnull(name);
+        ck_assert_str_eq(name, gsl_names[id - 1]);
+        ck_assert_int_eq(fricreg_integrator_from_name(name), id);
+    }
+    ck_assert_ptr_null(fricreg_integrator_name(0));
+    ck_assert_ptr_null(fricreg_integrator_name(12));
+    ck_assert_int_eq(fricreg_integrator_from_name("rk5"), 0);
+    ck_assert_int_eq(fricreg_integrator_from_name("RK4"), 0);
+    ck_assert_int_eq(fricreg_integrator_from_name(""), 0);
+    ck_assert_int_eq(fricreg_integrator_from_name(NULL), 0);
+}
+END_TEST
+
+/* ---- every stepper on the paper's oscillator case ------------------------------------------ */
+
+/* x_final of the unforced oscillator from (2.75, 0) under (4) with eps = 0.02, to t = 20. */
+static double oscillator_final_x(int integ, double dt, double rtol, double atol)
+{
+    fricreg_sim *sim = make(FRICREG_SYSTEM_OSCILLATOR);
+    ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_QUINN, 0.02), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, integ, dt, rtol, atol), FRICREG_OK);
+    int status = fricreg_sim_run(sim, 20.0);
+    ck_assert_msg(status == FRICREG_OK, "%s: status %d (%s)", fricreg_integrator_name(integ),
+                  status, fricreg_sim_errmsg(sim));
+    double x, v;
+    ck_assert_int_eq(fricreg_sim_get_state(sim, 1, &x, &v), FRICREG_OK);
+    fricreg_sim_free(sim);
+    return x;
+}
+
+/* Paper Sec. 3.1.1 and spec ("adaptive and stiff integrators exhibit the same behavior"): every
+ * GSL stepper, adaptive with rtol = 1e-8, atol = 1e-10, holds the stick at -0.75 (the O(eps^2)
+ * regularization error is 9e-5 at eps = 0.02, well inside 1e-3). */
+START_TEST(test_adaptive_stepper_holds_the_stick)
+{
+    const int integ = FRICREG_INT_RK2 + _i; /* all 11 */
+    double x = oscillator_final_x(integ, 0.01, 1e-8, 1e-10);
+    ck_assert_msg(fabs(x + 0.75) < 1e-3, "%s: x_final = %.9g", fricreg_integrator_name(integ), x);
+}
+END_TEST
+
+/* The same with a fixed step dt = 0.005 (dt lambda = 0.5 in the stick zone). */
+START_TEST(test_fixed_step_stepper_holds_the_stick)
+{
+    /* All but rk1imp, implicit Euler, whose first-order error at this step is 7e-3. */
+    static const int integ[] = {FRICREG_INT_RK2,    FRICREG_INT_RK4,     FRICREG_INT_RKF45,
+                                FRICREG_INT_RKCK,   FRICREG_INT_RK8PD,   FRICREG_INT_RK2IMP,
+                                FRICREG_INT_RK4IMP, FRICREG_INT_BSIMP,   FRICREG_INT_MSADAMS,
+                                FRICREG_INT_MSBDF};
+    double x = oscillator_final_x(integ[_i], 0.005, 0.0, 0.0);
+    ck_assert_msg(fabs(x + 0.75) < 1e-3, "%s: x_final = %.9g", fricreg_integrator_name(integ[_i]),
+                  x);
+}
+END_TEST
+
+static Suite *sim_api_suite(void)
+{
+    Suite *s = suite_create("sim_api");
+    TCase *errors = tcase_create("errors");
+    tcase_add_test(errors, test_create_rejects_unknown_system_and_null_out);
+    tcase_add_test(errors, test_null_simulation_is_rejected_everywhere);
+    tcase_add_loop_test(errors, test_set_param_rejects_bad_parameter, 0,
+                        (int)(sizeof bad_params / sizeof bad_params[0]));
+    tcase_add_test(errors, test_failed_set_param_keeps_parameters);
+    tcase_add_test(errors, test_set_law_rejects_bad_law_and_eps);
+    tcase_add_test(errors, test_set_integrator_rejects_bad_settings);
+    tcase_add_test(errors, test_run_rejects_bad_end_time);
+    tcase_add_test(errors, test_run_cycles_rejects_fewer_than_one);
+    tcase_add_test(errors, test_getters_reject_size_mismatch_and_null);
+    tcase_add_test(errors, test_setters_discard_results);
+    suite_add_tcase(s, errors);
+
+    TCase *run = tcase_create("run_checks");
+    tcase_add_test(run, test_too_large_step_is_estep_naming_the_contact);
+    tcase_add_test(run, test_estep_uses_the_coupling_diagonal);
+    tcase_add_test(run, test_unstable_run_is_ediverged);
+    tcase_add_test(run, test_observer_stops_the_run_early);
+    tcase_add_test(run, test_observer_stopping_at_start_is_ok);
+    suite_add_tcase(s, run);
+
+    TCase *steppers = tcase_create("steppers");
+    tcase_add_test(steppers, test_integrator_names_round_trip);
+    tcase_add_loop_test(steppers, test_adaptive_stepper_holds_the_stick, 0, 11);
+    tcase_add_loop_test(steppers, test_fixed_step_stepper_holds_the_stick, 0, 10);
+    suite_add_tcase(s, steppers);
+    return s;
+}
+
+int main(void)
+{
+    SRunner *sr = srunner_create(sim_api_suite());
+    srunner_run_all(sr, CK_NORMAL);
+    int failed = srunner_ntests_failed(sr);
+    srunner_free(sr);
+    return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
