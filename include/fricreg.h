@@ -201,7 +201,8 @@ FRICREG_API int fricreg_ctx_get_stat(const fricreg_ctx *ctx, int which, int64_t 
 FRICREG_API void fricreg_ctx_reset_stats(fricreg_ctx *ctx);
 
 /** Status code of the last failed call on this context (FRICREG_OK if none, or ctx NULL).
- *  A successful call does not clear it. */
+ *  A successful call does not clear it. Calls that take a const context
+ *  (fricreg_ctx_get_stat) return their status without recording it. */
 FRICREG_API int fricreg_ctx_errcode(const fricreg_ctx *ctx);
 
 /** Message of the last failed call on this context: names the argument, contact or value.

@@ -128,8 +128,8 @@ FRICREG_API int fricreg_sim_set_observer(fricreg_sim *sim, fricreg_sim_observer 
  *  the time and the first non-finite body, or the contact whose kinematics overflowed within
  *  a step).
  *
- *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if t_end <= 0 or too many steps
- *  (more than 2^31); FRICREG_ENONFINITE; FRICREG_ESTEP; FRICREG_EDIVERGED; FRICREG_EINTEGRATOR
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if t_end <= 0, or too many fixed steps
+ *  (more than 2^31) or cycles (more than 10^9); FRICREG_ENONFINITE; FRICREG_ESTEP; FRICREG_EDIVERGED; FRICREG_EINTEGRATOR
  *  (GSL failed, e.g. the adaptive step underflowed); FRICREG_ESINGULAR; FRICREG_ENOMEM.
  *  On failure the results hold what was reached before it. */
 FRICREG_API int fricreg_sim_run(fricreg_sim *sim, double t_end);
@@ -175,7 +175,8 @@ FRICREG_API int fricreg_sim_get_dissipation(const fricreg_sim *sim, size_t ncycl
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if m is not fricreg_sim_ncontacts. */
 FRICREG_API int fricreg_sim_get_stick_fraction(const fricreg_sim *sim, size_t m, double frac[]);
 
-/** Status of the last failed call (FRICREG_OK if none or sim NULL). */
+/** Status of the last failed call (FRICREG_OK if none or sim NULL). The getters, which take
+ *  a const simulation, return their status without recording it. */
 FRICREG_API int fricreg_sim_errcode(const fricreg_sim *sim);
 
 /** Message of the last failed call: names the parameter, time or contact. "" if none;

@@ -19,6 +19,7 @@
 #include "sim_internal.h"
 
 #define MAX_GSL_STEPS 2147483648.0 /* 2^31 fixed steps in one run */
+#define MAX_CYCLES 1e9              /* forcing cycles recorded in one run */
 #define STOP_REQUESTED (-1)         /* the observer asked to stop: not an error */
 
 #define sim_fail(sim, ...) fr_error_set(&(sim)->err, __VA_ARGS__)
@@ -422,9 +423,12 @@ int fricreg_sim_run(fricreg_sim *sim, double t_end)
         return sim_fail(sim, FRICREG_EINVAL, "run: t_end = %g must be > 0", t_end);
     if (!adaptive(sim) && t_end / (sim->dt * integ->substeps) > MAX_GSL_STEPS)
         return sim_fail(sim, FRICREG_EINVAL, "run: t_end/dt = %g steps is too many", t_end / sim->dt);
+    double whole_cycles = floor(t_end / fr_system_period(sim) * (1.0 + 1e-12));
+    if (whole_cycles > MAX_CYCLES)
+        return sim_fail(sim, FRICREG_EINVAL, "run: t_end = %g spans more than 10^9 cycles", t_end);
     free_run(sim);
     sim->eps = sim->eps_set > 0.0 ? sim->eps_set : fr_system_paper_eps(sim, sim->dt);
-    size_t cycles = (size_t)floor(t_end / fr_system_period(sim) * (1.0 + 1e-12));
+    size_t cycles = (size_t)whole_cycles;
     int status = alloc_run(sim, cycles);
     if (status == FRICREG_OK)
         status = check_step(sim, integ);

@@ -202,6 +202,10 @@ START_TEST(test_run_rejects_bad_end_time)
                      FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_COULOMB, 0.0), FRICREG_OK);
     expect_failure(sim, fricreg_sim_run(sim, 10.0), FRICREG_EINVAL);
+    /* Adaptive steps have no step count to bound, but 1e300 spans more than 10^9 cycles. */
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RKF45, 0.01, 1e-6, 1e-8),
+                     FRICREG_OK);
+    expect_failure(sim, fricreg_sim_run(sim, 1e300), FRICREG_EINVAL);
     fricreg_sim_free(sim);
 }
 END_TEST
