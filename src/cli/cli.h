@@ -36,6 +36,10 @@ int cli_run_trajectory(const struct cli_run *run, FILE *out);
 /* Applies the run's settings to a new simulation; on failure prints why and returns NULL. */
 fricreg_sim *cli_make_sim(const struct cli_run *run);
 
+/* exact.c: `fricreg-sim exact`, the closed-form oscillator (fricreg_exact.h). */
+int cli_parse_exact(int argc, char **argv, struct cli_run *run);
+int cli_exact_summary(const struct cli_run *run, FILE *out);
+
 /* reproduce.c: the paper's experiments into dir, and the comparison table on stdout. */
 int cli_reproduce(int argc, char **argv);
 

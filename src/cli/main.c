@@ -5,6 +5,7 @@
 
 static const char usage[] =
     "usage: fricreg-sim oscillator|chain|twoblock [options]\n"
+    "       fricreg-sim exact [--a --omega --mun --x0 --v0] [--t-end T | --cycles N]\n"
     "       fricreg-sim reproduce --out DIR\n"
     "       fricreg-sim --help | --version\n"
     "\n"
@@ -48,12 +49,16 @@ int main(int argc, char **argv)
     }
     if (strcmp(argv[1], "reproduce") == 0)
         return cli_reproduce(argc - 2, argv + 2);
+    struct cli_run run;
+    if (strcmp(argv[1], "exact") == 0) {
+        int status = cli_parse_exact(argc - 2, argv + 2, &run);
+        return status ? status : cli_exact_summary(&run, stdout);
+    }
     int system = system_of(argv[1]);
     if (system == 0) {
         fprintf(stderr, "fricreg-sim: %s: unknown command (see fricreg-sim --help)\n", argv[1]);
         return CLI_EXIT_USAGE;
     }
-    struct cli_run run;
     int status = cli_parse_run(system, argc - 2, argv + 2, &run);
     if (status != 0)
         return status;

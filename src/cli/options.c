@@ -196,3 +196,22 @@ int cli_parse_run(int system, int argc, char **argv, struct cli_run *run)
         return usage_error("--t-end", "give --t-end or --cycles, not both");
     return 0;
 }
+
+/* `exact` takes the oscillator's parameters and the run length; the integration options have
+ * no meaning for it and are refused by name. */
+int cli_parse_exact(int argc, char **argv, struct cli_run *run)
+{
+    static const char *const refused[] = {"--law", "--integrator", "--dt", "--rtol", "--atol",
+                                          "--eps"};
+    for (int k = 0; k < argc; k++)
+        for (size_t r = 0; r < sizeof refused / sizeof refused[0]; r++) {
+            size_t len = strlen(refused[r]);
+            if (strncmp(argv[k], refused[r], len) == 0 &&
+                (argv[k][len] == '\0' || argv[k][len] == '='))
+                return usage_error(refused[r], "not an option of exact (closed-form solution)");
+        }
+    int status = cli_parse_run(FRICREG_SYSTEM_OSCILLATOR, argc, argv, run);
+    if (status == 0 && run->output != CLI_SUMMARY)
+        return usage_error("--output", "exact writes a summary only");
+    return status;
+}

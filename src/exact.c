@@ -1,0 +1,331 @@
+/* exact.c — the semi-analytical solution of Eq. (5) under Coulomb friction (1) with force
+ * balance at rest (2): closed forms on each phase, switching times by GSL's Brent solver.
+ *
+ * A phase is a stick (x constant, x' = 0, while |f_eq| <= mun) or a slip in direction s,
+ * on which x'' + x = -s mun + a sin(omega t) has the closed form of slip_state(). Each phase
+ * ends at the first root of its own "phase holds" function, found by scanning at a step of
+ * 1/1024 of the shortest period and refining the bracket with Brent to the last bits. */
+#include <math.h>
+#include <stdlib.h>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
+
+#include "fricreg_exact.h"
+#include "gsl_guard.h"
+
+#define TWO_PI 6.283185307179586
+#define SCAN_PER_PERIOD 1024.0
+#define MAX_CYCLES 1e6
+#define BRENT_MAX_ITER 200
+#define START_REFINEMENTS 40 /* halvings of the first scan step at a phase start */
+
+struct phase {
+    double t0, x0, v0;
+    int s; /* 0: stick; +1 or -1: slip in that direction */
+};
+
+struct fricreg_exact {
+    double a, omega, mun, t_end;
+    struct phase *ph;
+    size_t n, cap;
+};
+
+/* The forced response to a sin(omega t) and its rate: a sin(wt)/(1 - w^2), or at resonance
+ * the secular -(a/2) t cos t. */
+static void forced(const fricreg_exact *ex, double t, double *xp, double *vp)
+{
+    double a = ex->a, w = ex->omega;
+    if (w == 1.0) {
+        *xp = -0.5 * a * t * cos(t);
+        *vp = -0.5 * a * cos(t) + 0.5 * a * t * sin(t);
+    } else {
+        double P = a / (1.0 - w * w);
+        *xp = P * sin(w * t);
+        *vp = P * w * cos(w * t);
+    }
+}
+
+/* Closed-form state in phase p at time t (Eq. (5) with f = -s mun constant). */
+static void phase_state(const fricreg_exact *ex, const struct phase *p, double t, double *x,
+                        double *v)
+{
+    if (p->s == 0) {
+        *x = p->x0;
+        *v = 0.0;
+        return;
+    }
+    double c = -p->s * ex->mun, xp0, vp0, xp, vp;
+    forced(ex, p->t0, &xp0, &vp0);
+    forced(ex, t, &xp, &vp);
+    double A = p->x0 - c - xp0, B = p->v0 - vp0, tau = t - p->t0;
+    *x = c + xp + A * cos(tau) + B * sin(tau);
+    *v = vp - A * sin(tau) + B * cos(tau);
+}
+
+static double f_eq(const fricreg_exact *ex, double x, double t)
+{
+    return x - ex->a * sin(ex->omega * t);
+}
+
+struct phase_probe {
+    const fricreg_exact *ex;
+    const struct phase *p;
+};
+
+/* Positive while the phase holds: s x' for a slip, mun - |f_eq| for a stick. */
+static double holds(double t, void *params)
+{
+    const struct phase_probe *pr = params;
+    double x, v;
+    phase_state(pr->ex, pr->p, t, &x, &v);
+    if (pr->p->s != 0)
+        return pr->p->s * v;
+    return pr->ex->mun - fabs(f_eq(pr->ex, x, t));
+}
+
+/* Brent on [lo, hi] with holds(lo) > 0 >= holds(hi): the first time the phase fails. */
+static int refine(struct phase_probe *pr, double lo, double hi, double *root)
+{
+    if (holds(hi, pr) == 0.0) {
+        *root = hi;
+        return FRICREG_OK;
+    }
+    gsl_function F = {holds, pr};
+    gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    if (s == NULL)
+        return FRICREG_ENOMEM;
+    gsl_error_handler_t *previous = fr_gsl_quiet();
+    int status = gsl_root_fsolver_set(s, &F, lo, hi);
+    for (int it = 0; status == GSL_SUCCESS && it < BRENT_MAX_ITER; it++) {
+        status = gsl_root_fsolver_iterate(s);
+        lo = gsl_root_fsolver_x_lower(s);
+        hi = gsl_root_fsolver_x_upper(s);
+        if (status == GSL_SUCCESS && gsl_root_test_interval(lo, hi, 0.0, 2.0 * GSL_DBL_EPSILON) == GSL_SUCCESS)
+            break;
+    }
+    fr_gsl_restore(previous);
+    *root = gsl_root_fsolver_root(s);
+    gsl_root_fsolver_free(s);
+    return status == GSL_SUCCESS ? FRICREG_OK : FRICREG_EINTEGRATOR;
+}
+
+/* The end of phase p: the first t > t0 where it stops holding, or t_end. *ends says which. */
+static int phase_end(const fricreg_exact *ex, const struct phase *p, double *t_end, int *ends)
+{
+    struct phase_probe pr = {ex, p};
+    double h = TWO_PI / fmax(1.0, ex->omega) / SCAN_PER_PERIOD;
+    /* At the start the phase function is 0 (x' = 0, or |f_eq| = mun): find a first point
+     * where it is positive, halving the step; none means the phase has no length. */
+    double lo = p->t0 + h;
+    int k = 0;
+    while (k < START_REFINEMENTS && lo > p->t0 && !(holds(fmin(lo, ex->t_end), &pr) > 0.0))
+        lo = p->t0 + h * ldexp(1.0, -++k);
+    *ends = 1;
+    if (k == START_REFINEMENTS || !(lo > p->t0)) {
+        *t_end = p->t0;
+        return FRICREG_OK;
+    }
+    if (lo >= ex->t_end) {
+        *ends = 0;
+        *t_end = ex->t_end;
+        return FRICREG_OK;
+    }
+    /* Scan on from lo (after a refined start, the first scan point is still t0 + h). */
+    for (double hi = k > 0 ? p->t0 + h : lo + h;; lo = hi, hi += h) {
+        if (hi >= ex->t_end)
+            hi = ex->t_end;
+        if (!(holds(hi, &pr) > 0.0))
+            return refine(&pr, lo, hi, t_end);
+        if (hi == ex->t_end) {
+            *ends = 0;
+            *t_end = ex->t_end;
+            return FRICREG_OK;
+        }
+    }
+}
+
+static int push_phase(fricreg_exact *ex, struct phase p)
+{
+    if (ex->n == ex->cap) {
+        size_t cap = ex->cap ? 2 * ex->cap : 64;
+        struct phase *ph = realloc(ex->ph, cap * sizeof *ph);
+        if (ph == NULL)
+            return FRICREG_ENOMEM;
+        ex->ph = ph;
+        ex->cap = cap;
+    }
+    ex->ph[ex->n++] = p;
+    return FRICREG_OK;
+}
+
+/* The phase that starts at rest at (t, x): a stick if the force balance (2) holds,
+ * else a slip towards the free acceleration -f_eq. */
+static struct phase from_rest(const fricreg_exact *ex, double t, double x)
+{
+    double feq = f_eq(ex, x, t);
+    int sticks = fabs(feq) <= ex->mun;
+    return (struct phase){t, x, 0.0, sticks ? 0 : (feq > 0.0 ? -1 : 1)};
+}
+
+static int solve(fricreg_exact *ex, double x0, double v0)
+{
+    struct phase p = v0 != 0.0 ? (struct phase){0.0, x0, v0, v0 > 0.0 ? 1 : -1}
+                               : from_rest(ex, 0.0, x0);
+    for (;;) {
+        int status = push_phase(ex, p);
+        double t1 = p.t0;
+        int ends = 0;
+        if (status == FRICREG_OK)
+            status = phase_end(ex, &p, &t1, &ends);
+        if (status != FRICREG_OK || !ends)
+            return status;
+        double x, v;
+        phase_state(ex, &p, t1, &x, &v);
+        /* A stick always ends in a slip; a slip ends at rest (v = 0 to rounding). */
+        struct phase next = from_rest(ex, t1, x);
+        if (p.s == 0 && next.s == 0) { /* the root's last bit: |f_eq| = mun to rounding */
+            double feq = f_eq(ex, x, t1);
+            next.s = feq > 0.0 ? -1 : 1;
+        }
+        if (t1 <= p.t0 && next.s == p.s) /* nothing would change: stop rather than loop */
+            return FRICREG_EINTEGRATOR;
+        p = next;
+    }
+}
+
+int fricreg_exact_solve(double a, double omega, double mun, double x0, double v0, double t_end,
+                        fricreg_exact **out)
+{
+    if (out == NULL)
+        return FRICREG_ENULL;
+    if (!isfinite(a) || !isfinite(omega) || !isfinite(mun) || !isfinite(x0) || !isfinite(v0) ||
+        !isfinite(t_end))
+        return FRICREG_ENONFINITE;
+    if (!(omega > 0.0) || !(mun >= 0.0) || !(t_end > 0.0) ||
+        t_end * omega / TWO_PI > MAX_CYCLES)
+        return FRICREG_EINVAL;
+    fricreg_exact *ex = calloc(1, sizeof *ex);
+    if (ex == NULL)
+        return FRICREG_ENOMEM;
+    *ex = (fricreg_exact){.a = a, .omega = omega, .mun = mun, .t_end = t_end};
+    int status = solve(ex, x0, v0);
+    if (status != FRICREG_OK) {
+        fricreg_exact_free(ex);
+        return status;
+    }
+    *out = ex;
+    return FRICREG_OK;
+}
+
+void fricreg_exact_free(fricreg_exact *ex)
+{
+    if (ex == NULL)
+        return;
+    free(ex->ph);
+    free(ex);
+}
+
+/* Index of the phase holding time t: the last one that starts at or before t. */
+static size_t phase_at(const fricreg_exact *ex, double t)
+{
+    size_t lo = 0, hi = ex->n;
+    while (hi - lo > 1) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (ex->ph[mid].t0 <= t)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+int fricreg_exact_state(const fricreg_exact *ex, double t, double *x, double *v)
+{
+    if (ex == NULL || x == NULL || v == NULL)
+        return FRICREG_ENULL;
+    if (!(t >= 0.0 && t <= ex->t_end))
+        return FRICREG_EINVAL;
+    phase_state(ex, &ex->ph[phase_at(ex, t)], t, x, v);
+    return FRICREG_OK;
+}
+
+size_t fricreg_exact_nswitches(const fricreg_exact *ex)
+{
+    return ex ? ex->n - 1 : 0;
+}
+
+int fricreg_exact_switches(const fricreg_exact *ex, size_t n, double times[], int sticks[])
+{
+    if (ex == NULL || (times == NULL && n > 0))
+        return FRICREG_ENULL;
+    if (n != ex->n - 1)
+        return FRICREG_ESIZE;
+    for (size_t k = 0; k < n; k++) {
+        times[k] = ex->ph[k + 1].t0;
+        if (sticks != NULL)
+            sticks[k] = ex->ph[k + 1].s == 0;
+    }
+    return FRICREG_OK;
+}
+
+static double period(const fricreg_exact *ex)
+{
+    return TWO_PI / ex->omega;
+}
+
+size_t fricreg_exact_ncycles(const fricreg_exact *ex)
+{
+    return ex ? (size_t)floor(ex->t_end / period(ex) * (1.0 + 1e-12)) : 0;
+}
+
+/* Phase k covers [t0_k, t0_{k+1}); the last one ends at t_end. Overlap with [ta, tb]. */
+static int overlap(const fricreg_exact *ex, size_t k, double ta, double tb, double *lo,
+                   double *hi)
+{
+    double end = k + 1 < ex->n ? ex->ph[k + 1].t0 : ex->t_end;
+    *lo = fmax(ta, ex->ph[k].t0);
+    *hi = fmin(tb, end);
+    return *hi > *lo;
+}
+
+/* Distance slid in [ta, tb]: on a slip x is monotone, so it is |x(hi) - x(lo)| per phase. */
+static double slid(const fricreg_exact *ex, double ta, double tb)
+{
+    double total = 0.0, lo, hi, x_lo, x_hi, v;
+    for (size_t k = phase_at(ex, ta); k < ex->n && ex->ph[k].t0 < tb; k++) {
+        if (ex->ph[k].s == 0 || !overlap(ex, k, ta, tb, &lo, &hi))
+            continue;
+        phase_state(ex, &ex->ph[k], lo, &x_lo, &v);
+        phase_state(ex, &ex->ph[k], hi, &x_hi, &v);
+        total += fabs(x_hi - x_lo);
+    }
+    return total;
+}
+
+int fricreg_exact_dissipation(const fricreg_exact *ex, size_t ncycles, double D[])
+{
+    if (ex == NULL || (D == NULL && ncycles > 0))
+        return FRICREG_ENULL;
+    if (ncycles != fricreg_exact_ncycles(ex))
+        return FRICREG_ESIZE;
+    double T = period(ex);
+    for (size_t k = 0; k < ncycles; k++) /* -∫ x' f dt = mun ∫ |x'| dt on a slip */
+        D[k] = ex->mun * slid(ex, (double)k * T, (double)(k + 1) * T);
+    return FRICREG_OK;
+}
+
+int fricreg_exact_stick_fraction(const fricreg_exact *ex, double t0, double t1,
+                                 double *fraction)
+{
+    if (ex == NULL || fraction == NULL)
+        return FRICREG_ENULL;
+    if (!(t0 >= 0.0 && t1 > t0 && t1 <= ex->t_end))
+        return FRICREG_EINVAL;
+    double at_rest = 0.0, lo, hi;
+    for (size_t k = phase_at(ex, t0); k < ex->n && ex->ph[k].t0 < t1; k++)
+        if (ex->ph[k].s == 0 && overlap(ex, k, t0, t1, &lo, &hi))
+            at_rest += hi - lo;
+    *fraction = at_rest / (t1 - t0);
+    return FRICREG_OK;
+}
