@@ -183,6 +183,11 @@ FRICREG_API int fricreg_sim_errcode(const fricreg_sim *sim);
  *  "NULL simulation" if sim is NULL. Owned by sim, valid until its next call. */
 FRICREG_API const char *fricreg_sim_errmsg(const fricreg_sim *sim);
 
+/** Copy the last error message into buf[len], NUL-terminated and truncated to fit (for
+ *  Fortran). Returns the full message length, as snprintf does; 0 and nothing written if buf
+ *  is NULL or len is 0. */
+FRICREG_API size_t fricreg_sim_errmsg_copy(const fricreg_sim *sim, char *buf, size_t len);
+
 #ifdef __cplusplus
 }
 #endif

@@ -239,10 +239,5 @@ const char *fricreg_ctx_errmsg(const fricreg_ctx *ctx)
 
 size_t fricreg_ctx_errmsg_copy(const fricreg_ctx *ctx, char *buf, size_t len)
 {
-    const char *msg = fricreg_ctx_errmsg(ctx);
-    size_t n = strlen(msg);
-    if (buf == NULL || len == 0)
-        return 0;
-    snprintf(buf, len, "%s", msg);
-    return n;
+    return fr_error_copy(fricreg_ctx_errmsg(ctx), buf, len);
 }

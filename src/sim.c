@@ -544,3 +544,8 @@ const char *fricreg_sim_errmsg(const fricreg_sim *sim)
 {
     return sim ? sim->err.msg : "NULL simulation";
 }
+
+size_t fricreg_sim_errmsg_copy(const fricreg_sim *sim, char *buf, size_t len)
+{
+    return fr_error_copy(fricreg_sim_errmsg(sim), buf, len);
+}
