@@ -13,10 +13,6 @@ struct fr_error {
 int fr_error_set(struct fr_error *err, int code, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 3, 4)))
-/* Copies msg into buf[len], truncated and NUL-terminated; returns strlen(msg), or 0 and
- * writes nothing if buf is NULL or len is 0 (the errmsg_copy functions). */
-size_t fr_error_copy(const char *msg, char *buf, size_t len);
-
 #endif
     ;
 
