@@ -1,0 +1,192 @@
+! fricreg_f77.f90 — module-free entry points for Fortran 77 callers: laws and contexts.
+!
+! Plain external subroutines (no module, no interface needed), every argument by reference,
+! names of at most six characters, and an INTEGER status STAT last (FRICREG_OK = 0 or a
+! FRICREG_E* code; INCLUDE 'fricreg.fi' for the names). Written in free form here but callable
+! from fixed-form code compiled with -std=legacy: the compiler mangles these names as it does
+! its own (frctxc_ for gfortran). Argument types:
+!   INTEGER            M, LAW, WHICH, CODE, STAT (default integer kind)
+!   INTEGER*8          H, a handle holding the C pointer (0: none)
+!   DOUBLE PRECISION   every real scalar and array
+!   CHARACTER*(*)      MSG, TEXT: blank-padded, truncated to the caller's length
+! Arrays are passed with their length M and checked against the context by the C library
+! (FRICREG_ESIZE). On failure no argument is changed. See fortran/README.md for the table.
+
+!> FRVERS(NUM, TEXT, STAT): the library's version number and string.
+subroutine frvers(num, text, stat)
+  use fricreg_c
+  implicit none
+  integer, intent(out) :: num, stat
+  character(len=*), intent(out) :: text
+  num = int(fricreg_version_number())
+  text = fricreg_c_string(fricreg_version())
+  stat = FRICREG_OK
+end subroutine frvers
+
+!> FRSTRE(CODE, MSG, STAT): fixed English text of status code CODE.
+subroutine frstre(code, msg, stat)
+  use fricreg_c
+  implicit none
+  integer, intent(in) :: code
+  character(len=*), intent(out) :: msg
+  integer, intent(out) :: stat
+  msg = fricreg_c_string(fricreg_strerror(int(code, c_int)))
+  stat = FRICREG_OK
+end subroutine frstre
+
+!> FRLAWE(LAW, V, FEQ, MUN, EPS, F, STAT): one law at one contact (fricreg_law_eval).
+subroutine frlawe(law, v, feq, mun, eps, f, stat)
+  use fricreg_c
+  implicit none
+  integer, intent(in) :: law
+  double precision, intent(in) :: v, feq, mun, eps
+  double precision, intent(inout) :: f
+  integer, intent(out) :: stat
+  stat = int(fricreg_law_eval(int(law, c_int), v, feq, mun, eps, f))
+end subroutine frlawe
+
+!> FRLAWB(LAW, EPS, M, V, FEQ, MUN, F, STAT): one law over M contacts
+!> (fricreg_law_eval_batch). FEQ(M) is always read and validated, even by the laws that do not
+!> use it: pass zeros there.
+subroutine frlawb(law, eps, m, v, feq, mun, f, stat)
+  use fricreg_c
+  implicit none
+  integer, intent(in) :: law, m
+  double precision, intent(in) :: eps, v(*), feq(*), mun(*)
+  double precision, intent(inout) :: f(*)
+  integer, intent(out) :: stat
+  if (m < 0) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  stat = int(fricreg_law_eval_batch(int(law, c_int), eps, int(m, c_size_t), v, feq, mun, f))
+end subroutine frlawb
+
+!> FRCTXC(M, H, STAT): create a context of M contacts into handle H (fricreg_ctx_create).
+subroutine frctxc(m, h, stat)
+  use fricreg_c
+  implicit none
+  integer, intent(in) :: m
+  integer(c_int64_t), intent(inout) :: h
+  integer, intent(out) :: stat
+  type(c_ptr) :: p
+  if (m < 1) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  stat = int(fricreg_ctx_create(int(m, c_size_t), p))
+  if (stat == FRICREG_OK) h = fricreg_ptr_to_handle(p)
+end subroutine frctxc
+
+!> FRCTXF(H, STAT): release the context H and set H = 0; H = 0 does nothing.
+subroutine frctxf(h, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(inout) :: h
+  integer, intent(out) :: stat
+  call fricreg_ctx_free(fricreg_handle_to_ptr(h))
+  h = 0
+  stat = int(FRICREG_OK)
+end subroutine frctxf
+
+!> FRLAW(H, LAW, EPS, STAT): select the law and eps (fricreg_ctx_set_law).
+subroutine frlaw(h, law, eps, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: law
+  double precision, intent(in) :: eps
+  integer, intent(out) :: stat
+  stat = int(fricreg_ctx_set_law(fricreg_handle_to_ptr(h), int(law, c_int), eps))
+end subroutine frlaw
+
+!> FRBND(H, M, MUN, STAT): friction bounds MUN(M) (fricreg_ctx_set_bounds).
+subroutine frbnd(h, m, mun, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m
+  double precision, intent(in) :: mun(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_ctx_set_bounds(fricreg_handle_to_ptr(h), int(m, c_size_t), mun))
+end subroutine frbnd
+
+!> FRCPLG(H, M, W, STAT): diagonal coupling W(M) (fricreg_ctx_set_coupling_diagonal).
+subroutine frcplg(h, m, w, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m
+  double precision, intent(in) :: w(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_ctx_set_coupling_diagonal(fricreg_handle_to_ptr(h), int(m, c_size_t), w))
+end subroutine frcplg
+
+!> FRCPLD(H, M, W, STAT): dense symmetric coupling W(M, M), leading dimension M
+!> (fricreg_ctx_set_coupling_dense; symmetric, so Fortran's column order is C's row order).
+subroutine frcpld(h, m, w, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m
+  double precision, intent(in) :: w(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_ctx_set_coupling_dense(fricreg_handle_to_ptr(h), int(m, c_size_t), w))
+end subroutine frcpld
+
+!> FREVAL(H, M, ZDOT, AFREE, F, FEQ, STAT): friction forces F(M) and FEQ(M) (NaN outside the
+!> near-stick set) from velocities ZDOT(M) and free accelerations AFREE(M) (fricreg_ctx_eval).
+subroutine freval(h, m, zdot, afree, f, feq, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m
+  double precision, intent(in) :: zdot(*), afree(*)
+  double precision, intent(inout) :: f(*), feq(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_ctx_eval(fricreg_handle_to_ptr(h), int(m, c_size_t), zdot, afree, f, feq))
+end subroutine freval
+
+!> FRSTAT(H, WHICH, VALUE, STAT): counter WHICH (FRICREG_STAT_*) into INTEGER*8 VALUE.
+subroutine frstat(h, which, value, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: which
+  integer(c_int64_t), intent(inout) :: value
+  integer, intent(out) :: stat
+  stat = int(fricreg_ctx_get_stat(fricreg_handle_to_ptr(h), int(which, c_int), value))
+end subroutine frstat
+
+!> FRRSTS(H, STAT): set the counters to zero.
+subroutine frrsts(h, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(out) :: stat
+  call fricreg_ctx_reset_stats(fricreg_handle_to_ptr(h))
+  stat = int(FRICREG_OK)
+end subroutine frrsts
+
+!> FRERRM(H, CODE, MSG, STAT): status CODE and message MSG of the context's last failed call
+!> (FRICREG_OK and blanks if none; 'NULL context' for H = 0).
+subroutine frerrm(h, code, msg, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(out) :: code
+  character(len=*), intent(out) :: msg
+  integer, intent(out) :: stat
+  character(kind=c_char) :: buf(len(msg) + 1)
+  integer(c_size_t) :: n
+  integer :: i
+  type(c_ptr) :: p
+  p = fricreg_handle_to_ptr(h)
+  code = int(fricreg_ctx_errcode(p))
+  n = fricreg_ctx_errmsg_copy(p, buf, int(size(buf), c_size_t))
+  msg = ' '
+  do i = 1, min(int(n), len(msg))
+    msg(i:i) = buf(i)
+  end do
+  stat = int(FRICREG_OK)
+end subroutine frerrm
