@@ -18,7 +18,8 @@
 #define SCAN_PER_PERIOD 1024.0
 #define MAX_CYCLES 1e6
 #define BRENT_MAX_ITER 200
-#define START_REFINEMENTS 40 /* halvings of the first scan step at a phase start */
+#define START_REFINEMENTS 40
+#define EMPTY_PHASE (64.0 * GSL_DBL_EPSILON) /* a phase this short (relative to t) has no length */ /* halvings of the first scan step at a phase start */
 
 struct phase {
     double t0, x0, v0;
@@ -71,9 +72,18 @@ static double f_eq(const fricreg_exact *ex, double x, double t)
 struct phase_probe {
     const fricreg_exact *ex;
     const struct phase *p;
+    int slack; /* add the stick's slack (stick_slack) */
 };
 
-/* Positive while the phase holds: s x' for a slip, mun - |f_eq| for a stick. */
+/* A stick holds while |f_eq| <= mun, the force balance (2); rounding in x at the switch
+ * that started it must not break it, so the bound gets a few ulps of slack (which moves a
+ * breakaway by ~1e-15). The floor keeps a stick with mun = a = x = 0 alive. */
+static double stick_slack(const fricreg_exact *ex, double x)
+{
+    return 4.0 * GSL_DBL_EPSILON * (ex->mun + fabs(ex->a) + fabs(x)) + GSL_DBL_MIN;
+}
+
+/* Positive while the phase holds: s x' for a slip, mun - |f_eq| (+ slack) for a stick. */
 static double holds(double t, void *params)
 {
     const struct phase_probe *pr = params;
@@ -81,12 +91,18 @@ static double holds(double t, void *params)
     phase_state(pr->ex, pr->p, t, &x, &v);
     if (pr->p->s != 0)
         return pr->p->s * v;
-    return pr->ex->mun - fabs(f_eq(pr->ex, x, t));
+    return pr->ex->mun - fabs(f_eq(pr->ex, x, t)) + (pr->slack ? stick_slack(pr->ex, x) : 0.0);
 }
 
-/* Brent on [lo, hi] with holds(lo) > 0 >= holds(hi): the first time the phase fails. */
+/* Brent on [lo, hi] with holds(lo) > 0 >= holds(hi): the first time the phase fails. The
+ * slack only has to carry a stick over its first instants: where lo is clear of them, the
+ * root is that of the exact condition |f_eq| = mun. */
 static int refine(struct phase_probe *pr, double lo, double hi, double *root)
 {
+    struct phase_probe exact = *pr;
+    exact.slack = 0;
+    if (holds(lo, &exact) > 0.0)
+        pr = &exact;
     if (holds(hi, pr) == 0.0) {
         *root = hi;
         return FRICREG_OK;
@@ -113,7 +129,7 @@ static int refine(struct phase_probe *pr, double lo, double hi, double *root)
 /* The end of phase p: the first t > t0 where it stops holding, or t_end. *ends says which. */
 static int phase_end(const fricreg_exact *ex, const struct phase *p, double *t_end, int *ends)
 {
-    struct phase_probe pr = {ex, p};
+    struct phase_probe pr = {ex, p, 1};
     double h = TWO_PI / fmax(1.0, ex->omega) / SCAN_PER_PERIOD;
     /* At the start the phase function is 0 (x' = 0, or |f_eq| = mun): find a first point
      * where it is positive, halving the step; none means the phase has no length. */
@@ -159,37 +175,52 @@ static int push_phase(fricreg_exact *ex, struct phase p)
     return FRICREG_OK;
 }
 
-/* The phase that starts at rest at (t, x): a stick if the force balance (2) holds,
- * else a slip towards the free acceleration -f_eq. */
-static struct phase from_rest(const fricreg_exact *ex, double t, double x)
+/* Direction of a slip that starts from rest at (t, x): towards the free acceleration -f_eq,
+ * or, where f_eq is 0 (mun = 0), towards where it goes next: -df_eq/dt = a w cos(wt). */
+static int breakaway_direction(const fricreg_exact *ex, double t, double x)
 {
     double feq = f_eq(ex, x, t);
-    int sticks = fabs(feq) <= ex->mun;
-    return (struct phase){t, x, 0.0, sticks ? 0 : (feq > 0.0 ? -1 : 1)};
+    double towards = fabs(feq) > stick_slack(ex, x) ? -feq : ex->a * ex->omega * cos(ex->omega * t);
+    return towards < 0.0 ? -1 : 1;
 }
 
+/* The phase that starts at rest at (t, x): a stick if the force balance (2) holds, else a
+ * slip. */
+static struct phase from_rest(const fricreg_exact *ex, double t, double x)
+{
+    int sticks = fabs(f_eq(ex, x, t)) <= ex->mun + stick_slack(ex, x);
+    return (struct phase){t, x, 0.0, sticks ? 0 : breakaway_direction(ex, t, x)};
+}
+
+/* The phases from t = 0 to t_end. A phase of zero length (a stick broken at once, a slip
+ * with no motion) is replaced by its successor, so no switch is reported for it; two in a
+ * row would mean no progress, which the closed forms exclude. */
 static int solve(fricreg_exact *ex, double x0, double v0)
 {
     struct phase p = v0 != 0.0 ? (struct phase){0.0, x0, v0, v0 > 0.0 ? 1 : -1}
                                : from_rest(ex, 0.0, x0);
+    int empty_in_a_row = 0;
     for (;;) {
         int status = push_phase(ex, p);
-        double t1 = p.t0;
+        double t1 = p.t0, x, v;
         int ends = 0;
         if (status == FRICREG_OK)
             status = phase_end(ex, &p, &t1, &ends);
         if (status != FRICREG_OK || !ends)
             return status;
-        double x, v;
         phase_state(ex, &p, t1, &x, &v);
-        /* A stick always ends in a slip; a slip ends at rest (v = 0 to rounding). */
-        struct phase next = from_rest(ex, t1, x);
-        if (p.s == 0 && next.s == 0) { /* the root's last bit: |f_eq| = mun to rounding */
-            double feq = f_eq(ex, x, t1);
-            next.s = feq > 0.0 ? -1 : 1;
+        /* A slip ends at rest; a stick ends in a slip. */
+        struct phase next = p.s != 0 ? from_rest(ex, t1, x)
+                                     : (struct phase){t1, x, 0.0, breakaway_direction(ex, t1, x)};
+        if (t1 <= p.t0 + EMPTY_PHASE * fmax(1.0, p.t0)) {
+            if (++empty_in_a_row == 2)
+                return FRICREG_EINTEGRATOR;
+            ex->n--;
+            next.t0 = p.t0; /* the successor takes its place, from the same state */
+            next.x0 = p.x0;
+        } else {
+            empty_in_a_row = 0;
         }
-        if (t1 <= p.t0 && next.s == p.s) /* nothing would change: stop rather than loop */
-            return FRICREG_EINTEGRATOR;
         p = next;
     }
 }

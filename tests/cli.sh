@@ -63,6 +63,18 @@ expect_output '"stick_fraction": \[0\.[1-9][0-9]*, 0\.[1-9][0-9]*\]' twoblock
 rows=$(wc -l <"$tmp/traj.csv")
 [ "$rows" -eq 252 ] || { echo "FAIL: trajectory has $rows lines, expected 252"; fails=$((fails + 1)); }
 
-total=25
+# exact: the closed-form solution of the unforced case sticks at -0.75 exactly (spec); the
+# integration options and a trajectory have no meaning for it.
+expect_output '"x": \[-0\.75\]' exact --t-end 20
+expect_output '"dissipation_per_cycle": \[3\.5, 0, 0\]' exact --t-end 20
+# Spec "Forced" (a = 2, omega = 0.5 from rest at the origin): D of cycle 50, 10.4274336336.
+expect_output '"dissipation_per_cycle": \[[^]]*, 10\.4274336335[0-9]*\]' exact --a 2 --omega 0.5 --x0 0 --cycles 50
+expect_usage_error "--dt" exact --dt 0.01
+expect_usage_error "--law" exact --law coulomb
+expect_usage_error "--eps" exact --eps 0.02
+expect_usage_error "--eps" exact --eps=0.02
+expect_usage_error "--output" exact --output trajectory
+
+total=33
 echo "$((total - fails)) passed, $fails failed"
 [ $fails -eq 0 ]
