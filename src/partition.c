@@ -16,6 +16,19 @@
 /* Below this reciprocal condition number W_SS is treated as singular. */
 #define RCOND_MIN 1e-12
 
+/* The index of the first non-finite zdot[i] or a_free[i], or m. The scan itself is
+ * branch-free (it runs on every evaluation); only a failure looks for the index. */
+static size_t first_nonfinite(size_t m, const double zdot[], const double a_free[])
+{
+    int bad = 0;
+    for (size_t i = 0; i < m; i++)
+        bad |= !isfinite(zdot[i]) | !isfinite(a_free[i]);
+    size_t i = 0;
+    while (bad && isfinite(zdot[i]) && isfinite(a_free[i]))
+        i++;
+    return bad ? i : m;
+}
+
 static int check_inputs(fricreg_ctx *ctx, size_t m, const double zdot[], const double a_free[],
                         const double f[])
 {
@@ -24,25 +37,41 @@ static int check_inputs(fricreg_ctx *ctx, size_t m, const double zdot[], const d
     if (zdot == NULL || a_free == NULL || f == NULL)
         return fr_fail(ctx, FRICREG_ENULL, "eval: %s is NULL",
                        zdot == NULL ? "zdot" : a_free == NULL ? "a_free" : "f");
-    for (size_t i = 0; i < m; i++)
-        if (!isfinite(zdot[i]) || !isfinite(a_free[i]))
-            return fr_fail(ctx, FRICREG_ENONFINITE, "eval: %s[%zu] is not finite",
-                           isfinite(zdot[i]) ? "a_free" : "zdot", i);
+    size_t i = first_nonfinite(m, zdot, a_free);
+    if (i < m)
+        return fr_fail(ctx, FRICREG_ENONFINITE, "eval: %s[%zu] is not finite",
+                       isfinite(zdot[i]) ? "a_free" : "zdot", i);
     return FRICREG_OK;
 }
 
-/* Splits the contacts: slip contacts get their force now, near-stick ones are listed in S. */
+/* Splits the contacts: slip contacts get their force now, near-stick ones are listed in S
+ * (and get f = 0 for now, which leaves them out of W_SL f_L). The law is fixed for the loop,
+ * so the test and the force are written without branches: a select, and an index list that
+ * always stores and advances only on a near-stick contact. */
+#define SPLIT_LOOP(NEAR, SLIP_FORCE)                                      \
+    for (size_t i = 0; i < ctx->m; i++) {                                 \
+        double v = zdot[i];                                               \
+        int near = (NEAR);                                                \
+        ctx->stick[n_stick] = i;                                          \
+        n_stick += (size_t)near;                                          \
+        ctx->f[i] = near ? 0.0 : (SLIP_FORCE);                            \
+    }
+
 static void split_contacts(fricreg_ctx *ctx, const double zdot[])
 {
     size_t n_stick = 0;
-    for (size_t i = 0; i < ctx->m; i++) {
-        ctx->f_eq[i] = NAN; /* not computed: the law does not read it here */
-        if (fr_needs_feq(ctx->law, zdot[i], ctx->eps)) {
-            ctx->stick[n_stick++] = i;
-            ctx->f[i] = 0.0; /* excluded from W_SL f_L below */
-        } else {
-            ctx->f[i] = fr_law(ctx->law, zdot[i], 0.0, ctx->mun[i], ctx->eps);
-        }
+    const double eps = ctx->eps, *mun = ctx->mun;
+    switch (ctx->law) {
+    case FRICREG_LAW_QUINN: /* outside |v| < eps both are (1), whatever f_eq is */
+    case FRICREG_LAW_KARNOPP:
+        SPLIT_LOOP(fabs(v) < eps, fr_coulomb(v, mun[i]))
+        break;
+    case FRICREG_LAW_FORCE_BALANCE:
+        SPLIT_LOOP(v == 0.0, fr_coulomb(v, mun[i]))
+        break;
+    default: /* (1), (3), tanh: f_eq is never needed */
+        SPLIT_LOOP(0, fr_law(ctx->law, v, 0.0, mun[i], eps))
+        break;
     }
     ctx->n_stick = n_stick;
 }
@@ -120,6 +149,33 @@ static void solve_diagonal(fricreg_ctx *ctx, const double a_free[])
     }
 }
 
+/* f_S = the law at (zdot_S, f_eq,S); the switch on the law stays outside the loops. */
+#define STICK_LOOP(FORCE)                                                 \
+    for (size_t a = 0; a < ctx->n_stick; a++) {                           \
+        size_t i = ctx->stick[a];                                         \
+        double v = zdot[i], feq = ctx->f_eq[i];                           \
+        ctx->f[i] = (FORCE);                                              \
+    }
+
+static void apply_law_on_stick_set(fricreg_ctx *ctx, const double zdot[])
+{
+    const double eps = ctx->eps, *mun = ctx->mun;
+    switch (ctx->law) {
+    case FRICREG_LAW_QUINN: STICK_LOOP(fr_quinn(v, feq, mun[i], eps)) break;
+    case FRICREG_LAW_KARNOPP: STICK_LOOP(fr_karnopp(v, feq, mun[i], eps)) break;
+    default: STICK_LOOP(fr_force_balance(v, feq, mun[i])) break; /* the only other with S */
+    }
+}
+
+/* f_eq out: the solved values on S, NaN elsewhere (not computed: the law does not read it). */
+static void write_feq(const fricreg_ctx *ctx, double f_eq[])
+{
+    for (size_t i = 0; i < ctx->m; i++)
+        f_eq[i] = NAN;
+    for (size_t a = 0; a < ctx->n_stick; a++)
+        f_eq[ctx->stick[a]] = ctx->f_eq[ctx->stick[a]];
+}
+
 int fricreg_ctx_eval(fricreg_ctx *ctx, size_t m, const double zdot[], const double a_free[],
                      double f[], double f_eq[])
 {
@@ -137,14 +193,11 @@ int fricreg_ctx_eval(fricreg_ctx *ctx, size_t m, const double zdot[], const doub
         } else {
             solve_diagonal(ctx, a_free);
         }
-        for (size_t a = 0; a < ctx->n_stick; a++) {
-            size_t i = ctx->stick[a];
-            ctx->f[i] = fr_law(ctx->law, zdot[i], ctx->f_eq[i], ctx->mun[i], ctx->eps);
-        }
+        apply_law_on_stick_set(ctx, zdot);
     }
     memcpy(f, ctx->f, m * sizeof *f);
     if (f_eq != NULL)
-        memcpy(f_eq, ctx->f_eq, m * sizeof *f_eq);
+        write_feq(ctx, f_eq);
     ctx->stats[FRICREG_STAT_EVALS]++;
     ctx->stats[FRICREG_STAT_FEQ_CONTACTS] += (int64_t)ctx->n_stick;
     return FRICREG_OK;
