@@ -1,0 +1,45 @@
+#!/bin/sh
+# Installs the build into a temporary prefix, then builds and runs three consumers against
+# the installed copy only: C with find_package(fricreg CONFIG), C with pkg-config, and
+# Fortran with the installed module (when the Fortran interface was built).
+# Usage: install.sh BUILD_DIR SOURCE_DIR C_COMPILER FORTRAN_COMPILER|-
+build=$1 src=$2 cc=$3 fc=$4
+work=$(mktemp -d "${TMPDIR:-/tmp}/fricreg-install.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+prefix=$work/prefix
+fails=0 passes=0
+check() { # NAME COMMAND...: runs a step, counts it
+    name=$1; shift
+    if "$@" >"$work/log" 2>&1; then passes=$((passes + 1)); else
+        fails=$((fails + 1)); echo "FAIL: $name"; tail -n 20 "$work/log"; fi
+}
+
+check "install" cmake --install "$build" --prefix "$prefix"
+libdir=$(dirname "$(find "$prefix" -name 'libfricreg.so.*' | head -n 1)")
+export LD_LIBRARY_PATH="$libdir${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+
+# 1. CMake: find_package(fricreg CONFIG), shared and static.
+check "cmake configure" cmake -S "$src/tests/consumer" -B "$work/cmake" \
+    -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_C_COMPILER="$cc"
+check "cmake build" cmake --build "$work/cmake"
+check "find_package consumer (shared)" "$work/cmake/consumer"
+check "find_package consumer (static)" "$work/cmake/consumer_static"
+check "the shared consumer loads the installed library" \
+    sh -c "ldd '$work/cmake/consumer' | grep -q '$libdir/libfricreg.so'"
+
+# 2. pkg-config.
+export PKG_CONFIG_PATH="$libdir/pkgconfig"
+check "pkg-config knows fricreg" pkg-config --exists fricreg
+check "pkg-config consumer build" sh -c "$cc '$src/tests/consumer/consumer.c' \
+    \$(pkg-config --cflags fricreg) \$(pkg-config --libs fricreg) -o '$work/pc_consumer'"
+check "pkg-config consumer" "$work/pc_consumer"
+
+# 3. Fortran, with the installed module (include/fricreg/<compiler-version>/).
+if [ "$fc" != "-" ]; then
+    moddir=$(dirname "$(find "$prefix" -name 'fricreg.mod' | head -n 1)")
+    check "Fortran consumer build" "$fc" -I"$moddir" "$src/tests/consumer/consumer.f90" \
+        -L"$libdir" -lfricreg_fortran -lfricreg -o "$work/f_consumer"
+    check "Fortran consumer" "$work/f_consumer"
+fi
+echo "$passes passed, $fails failed"
+[ $fails -eq 0 ]
