@@ -177,16 +177,9 @@ subroutine frerrm(h, code, msg, stat)
   integer, intent(out) :: code
   character(len=*), intent(out) :: msg
   integer, intent(out) :: stat
-  character(kind=c_char) :: buf(len(msg) + 1)
-  integer(c_size_t) :: n
-  integer :: i
   type(c_ptr) :: p
   p = fricreg_handle_to_ptr(h)
   code = int(fricreg_ctx_errcode(p))
-  n = fricreg_ctx_errmsg_copy(p, buf, int(size(buf), c_size_t))
-  msg = ' '
-  do i = 1, min(int(n), len(msg))
-    msg(i:i) = buf(i)
-  end do
+  msg = fricreg_c_string(fricreg_ctx_errmsg(p)) ! assignment pads or truncates to len(msg)
   stat = int(FRICREG_OK)
 end subroutine frerrm
