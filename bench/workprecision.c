@@ -1,0 +1,519 @@
+/* workprecision.c — fricreg-bench-wp OUTDIR: work against precision of every method on the
+ * four problems (bench.h), in one process.
+ *
+ * For each problem: its reference D (reference.c) and the order of law (4)'s regularization
+ * error in eps; then every method over its sweep, each point with its relative error in D,
+ * steps, right-hand-side evaluations and the median CPU seconds of repeated runs. The repeats
+ * are interleaved: the whole sweep runs again (PASSES times; slow points only MIN_PASSES
+ * times), so a burst of load from other processes on a shared machine spoils one repeat of
+ * many points rather than every repeat of one. Writes to OUTDIR:
+ *   workprecision.csv    one row per point
+ *   orders.csv           observed convergence order of each law (fixed-step RK4)
+ *   summary.csv          CPU time each method needs to reach 1% and 0.01% error
+ *   wp_<problem>.dat     the points, one block per method, for gnuplot
+ *   workprecision.gp     the gnuplot script: wp_<problem>.png and conv_<problem>.png
+ * and prints the references, the tables and the summary. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bench.h"
+#include "reference.h"
+#ifdef FRICREG_BENCH_CVODE
+#include "event_driven.h"
+#endif
+
+/* ---- Methods and sweeps ---------------------------------------------------------------- */
+
+enum kind { FIXED, ADAPTIVE, EVENT };
+
+struct method {
+    const char *name; /* CSV and plot name */
+    enum kind kind;
+    int law, integrator, ed_method;
+};
+
+static const struct method methods[] = {
+    {"rk4/quinn(4)", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0},
+    {"rk4/coulomb(1)", FIXED, FRICREG_LAW_COULOMB, FRICREG_INT_RK4, 0},
+    {"rk4/force-balance(2)", FIXED, FRICREG_LAW_FORCE_BALANCE, FRICREG_INT_RK4, 0},
+    {"rk4/karnopp", FIXED, FRICREG_LAW_KARNOPP, FRICREG_INT_RK4, 0},
+    {"rk4/velocity-limited(3)", FIXED, FRICREG_LAW_VELOCITY_LIMITED, FRICREG_INT_RK4, 0},
+    {"rk4/tanh", FIXED, FRICREG_LAW_TANH, FRICREG_INT_RK4, 0},
+    {"rkf45/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RKF45, 0},
+    {"rk8pd/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0},
+    {"msbdf/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_MSBDF, 0},
+#ifdef FRICREG_BENCH_CVODE
+    {"cvode-bdf/event-driven", EVENT, 0, 0, ED_BDF},
+    {"cvode-adams/event-driven", EVENT, 0, 0, ED_ADAMS},
+#endif
+};
+enum { NMETHODS = sizeof methods / sizeof methods[0], NSWEEP = 9 };
+
+/* Fixed steps (eps by the paper's rule) and tolerances (rtol = atol), coarse to fine. */
+static const double dts[NSWEEP] = {0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 5e-4, 2e-4, 1e-4};
+static const double tols[NSWEEP] = {1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10};
+#define ADAPTIVE_DT0 1e-4 /* first step of the adaptive steppers */
+
+/* The ranges for the observed order: the finest points, dt <= 1e-3 (asymptotic), and
+ * dt <= 0.02 (whole: 0.05 is unstable for the chain). */
+#define ORDER_FIRST 5
+#define ORDER_WHOLE 1
+
+static const double targets[2] = {1e-2, 1e-4}; /* 1% and 0.01% */
+
+enum { PASSES = 5, MIN_PASSES = 3 };
+#define SLOW_POINT 0.25 /* CPU seconds of a first run above which a point gets MIN_PASSES */
+
+struct point {
+    int ok;        /* the run succeeded */
+    double param;  /* dt or tolerance */
+    double eps;    /* eps used (fixed-step and adaptive law runs) */
+    double err;    /* relative error in D */
+    double t[PASSES];
+    int nt;        /* runs timed */
+    int nondeterministic; /* a repeat gave another D */
+    double cpu;    /* median of t */
+    struct bench_run run; /* the first run's results */
+};
+
+static struct point results[BENCH_NPROBLEMS][NMETHODS][NSWEEP];
+static struct bench_reference refs[BENCH_NPROBLEMS];
+
+static int applies(const struct method *m, const struct bench_problem *p)
+{
+    return m->kind != EVENT || p->event_driven;
+}
+
+/* Runs one point of one method on one problem once, in pass `pass`. */
+static void run_point(const struct bench_problem *p, const struct method *m, int k,
+                      struct point *pt, int pass)
+{
+    struct bench_run run;
+    double t;
+    if (m->kind == EVENT) {
+#ifdef FRICREG_BENCH_CVODE
+        struct ed_point ep = {p, m->ed_method, tols[k]};
+        t = bench_time_once(ed_run, &ep, &run);
+#else
+        return;
+#endif
+    } else {
+        struct bench_sim_point sp = {p, m->law, m->integrator,
+                                     m->kind == FIXED ? dts[k] : ADAPTIVE_DT0,
+                                     m->kind == FIXED ? 0.0 : tols[k],
+                                     m->kind == FIXED ? 0.0 : p->adaptive_eps};
+        t = bench_time_once(bench_sim_run, &sp, &run);
+    }
+    pt->t[pt->nt++] = t;
+    if (pass > 0) {
+        pt->nondeterministic |= pt->ok && !(run.D == pt->run.D);
+        return;
+    }
+    pt->run = run;
+    pt->param = m->kind == FIXED ? dts[k] : tols[k];
+    pt->eps = m->kind == EVENT   ? 0.0
+              : m->kind == FIXED ? (p->system == FRICREG_SYSTEM_CHAIN ? 10.0 * p->omega * dts[k]
+                                                                      : 2.0 * dts[k])
+                                 : p->adaptive_eps;
+    pt->ok = run.status == FRICREG_OK;
+    pt->err = pt->ok ? bench_rel_error(run.D, refs[p - bench_problems].D) : NAN;
+}
+
+/* Whether pass `pass` runs this point: every pass for fast points, MIN_PASSES for slow ones,
+ * only the first for a failed one. */
+static int runs_in_pass(const struct point *pt, int pass)
+{
+    if (pass == 0)
+        return 1;
+    return pt->ok && (pass < MIN_PASSES || pt->t[0] < SLOW_POINT);
+}
+
+static const char *status_word(const struct point *pt)
+{
+    if (pt->ok)
+        return "ok";
+    switch (pt->run.status) {
+    case FRICREG_ESTEP: return "unstable";
+    case FRICREG_EDIVERGED: return "diverged";
+    default: return "failed";
+    }
+}
+
+/* ---- Derived numbers ------------------------------------------------------------------- */
+
+/* CPU time from which the method stays below `target`: the cheapest successful point such
+ * that every finer successful point of the sweep also reaches the target. NAN if none.
+ * *bound is set when that holds from the first successful point on: the sweep starts too
+ * fine to tell, and the time is an upper bound. */
+static double time_to_reach(const struct point pts[NSWEEP], double target, int *bound)
+{
+    double best = NAN;
+    int first_ok = 0, all = 1;
+    while (first_ok < NSWEEP && !pts[first_ok].ok)
+        first_ok++;
+    for (int k = NSWEEP - 1; k >= 0; k--) {
+        if (!pts[k].ok)
+            continue;
+        if (!(pts[k].err <= target)) {
+            all = 0;
+            break;
+        }
+        best = isnan(best) ? pts[k].cpu : fmin(best, pts[k].cpu);
+    }
+    *bound = !isnan(best) && all && first_ok < NSWEEP;
+    return best;
+}
+
+/* Least-squares slope of log(err) against log(dt) over the points k >= first whose error
+ * is above the reference's floor; *used gets their number. */
+static double observed_order(const struct point pts[NSWEEP], int first, double floor_err,
+                             int *used)
+{
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    int n = 0;
+    for (int k = first; k < NSWEEP; k++) {
+        if (!pts[k].ok || !(pts[k].err > floor_err))
+            continue;
+        double x = log(pts[k].param), y = log(pts[k].err);
+        sx += x, sy += y, sxx += x * x, sxy += x * y;
+        n++;
+    }
+    *used = n;
+    return n >= 2 ? (n * sxy - sx * sy) / (n * sxx - sx * sx) : NAN;
+}
+
+/* The error floor below which a measured error is the reference's, not the method's. */
+static double error_floor(int ip)
+{
+    return fmax(10.0 * refs[ip].uncertainty / fabs(refs[ip].D), 1e-13);
+}
+
+/* ---- Output ---------------------------------------------------------------------------- */
+
+static FILE *open_out(const char *dir, const char *name)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    FILE *f = fopen(path, "w");
+    if (f == NULL)
+        fprintf(stderr, "fricreg-bench-wp: cannot write %s\n", path);
+    return f;
+}
+
+static void write_csv(FILE *f)
+{
+    fprintf(f, "problem,method,kind,param_name,param,eps,status,D,D_ref,rel_error,cpu_s,"
+               "cpu_min,cpu_max,repeats,steps,rhs_evals,events,message\n");
+    for (int ip = 0; ip < BENCH_NPROBLEMS; ip++)
+        for (int im = 0; im < NMETHODS; im++) {
+            if (!applies(&methods[im], &bench_problems[ip]))
+                continue;
+            for (int k = 0; k < NSWEEP; k++) {
+                const struct point *pt = &results[ip][im][k];
+                const struct bench_run *r = &pt->run;
+                double lo = INFINITY, hi = 0.0;
+                for (int j = 0; j < pt->nt; j++)
+                    lo = fmin(lo, pt->t[j]), hi = fmax(hi, pt->t[j]);
+                fprintf(f, "%s,%s,%s,%s,%g,%g,%s,%.15g,%.15g,%.6e,%.6e,%.6e,%.6e,%d,%.0f,%.0f,"
+                           "%.0f,\"%s\"\n",
+                        bench_problems[ip].key, methods[im].name,
+                        methods[im].kind == FIXED ? "fixed" : methods[im].kind == ADAPTIVE
+                                                                  ? "adaptive" : "event",
+                        methods[im].kind == FIXED ? "dt" : "tol", pt->param, pt->eps,
+                        status_word(pt), r->D, refs[ip].D, pt->err, pt->cpu, lo, hi, pt->nt,
+                        r->steps, r->rhs_evals, r->events, pt->ok ? "" : r->msg);
+            }
+        }
+}
+
+/* One data file per problem: a block per method (two blank lines apart), cpu and error. */
+static void write_dat(const char *dir, int ip)
+{
+    char name[128];
+    snprintf(name, sizeof name, "wp_%s.dat", bench_problems[ip].key);
+    FILE *f = open_out(dir, name);
+    if (f == NULL)
+        return;
+    for (int im = 0; im < NMETHODS; im++) {
+        if (!applies(&methods[im], &bench_problems[ip]))
+            continue;
+        fprintf(f, "# %s\n# param cpu_s rel_error steps rhs_evals\n", methods[im].name);
+        for (int k = 0; k < NSWEEP; k++) {
+            const struct point *pt = &results[ip][im][k];
+            if (pt->ok) /* an exact hit would be 0 on a log axis: floor it */
+                fprintf(f, "%g %.6e %.6e %.0f %.0f\n", pt->param, pt->cpu,
+                        fmax(pt->err, 1e-16), pt->run.steps, pt->run.rhs_evals);
+        }
+        fprintf(f, "\n\n");
+    }
+    fclose(f);
+}
+
+static void write_gnuplot(const char *dir)
+{
+    FILE *f = open_out(dir, "workprecision.gp");
+    if (f == NULL)
+        return;
+    fprintf(f, "# generated by fricreg-bench-wp; run in this folder: gnuplot workprecision.gp\n"
+               "set terminal pngcairo noenhanced size 1000,650\n"
+               "set logscale xy; set grid; set key outside right\n"
+               "set yrange [*:10] # an error above 1000%% is off the chart\n"
+               "set format x '%%.0e'; set format y '%%.0e'\n");
+    for (int ip = 0; ip < BENCH_NPROBLEMS; ip++) {
+        const struct bench_problem *p = &bench_problems[ip];
+        fprintf(f, "set output 'wp_%s.png'\nset title \"work-precision\\n%s\"\n", p->key,
+                p->title);
+        fprintf(f, "set xlabel 'CPU seconds (median)'; set ylabel 'relative error in D'\n");
+        fprintf(f, "plot ");
+        int block = 0, first = 1;
+        for (int im = 0; im < NMETHODS; im++) {
+            if (!applies(&methods[im], p))
+                continue;
+            fprintf(f, "%s'wp_%s.dat' index %d using 2:3 with linespoints title '%s'",
+                    first ? "" : ", \\\n     ", p->key, block++, methods[im].name);
+            first = 0;
+        }
+        fprintf(f, ", 1e-2 with lines dt 2 lc 'gray' notitle, 1e-4 with lines dt 2 lc 'gray' "
+                   "notitle\n");
+        fprintf(f, "set output 'conv_%s.png'\nset title \"convergence in dt (RK4, the paper's "
+                   "eps rules)\\n%s\"\n", p->key, p->title);
+        fprintf(f, "set xlabel 'dt'; set ylabel 'relative error in D'\nplot ");
+        first = 1;
+        for (int im = 0; im < NMETHODS; im++) {
+            if (methods[im].kind != FIXED)
+                continue;
+            fprintf(f, "%s'wp_%s.dat' index %d using 1:3 with linespoints title '%s'",
+                    first ? "" : ", \\\n     ", p->key, im, methods[im].name);
+            first = 0;
+        }
+        fprintf(f, ", 0.5*x with lines dt 3 lc 'black' title 'slope 1', "
+                   "5*x**2 with lines dt 4 lc 'black' title 'slope 2'\n");
+    }
+    fclose(f);
+}
+
+static void fmt_time(char *buf, size_t len, double t, int bound)
+{
+    if (isnan(t))
+        snprintf(buf, len, "-");
+    else
+        snprintf(buf, len, "%s%.3g", bound ? "<=" : "", t);
+}
+
+static void fmt_ratio(char *buf, size_t len, double t, int bound, double t_quinn, int q_bound)
+{
+    if (isnan(t) || isnan(t_quinn))
+        snprintf(buf, len, "-");
+    else
+        snprintf(buf, len, "%s%.3g", bound || q_bound ? "~" : "", t / t_quinn);
+}
+
+static void print_summary(FILE *csv)
+{
+    printf("\n== Summary: CPU seconds to reach 1%% and 0.01%% relative error in D ==\n"
+           "(the cheapest point from which every finer point of the sweep stays below the\n"
+           "target; ratio = that time / the time of rk4/quinn(4) on the same problem;\n"
+           "'-' = not reached within the sweep; '<=' = reached already at the coarsest point,\n"
+           "so the time is an upper bound; '~' = a ratio involving such a bound)\n");
+    fprintf(csv, "problem,method,cpu_1pct,ratio_1pct,cpu_001pct,ratio_001pct,best_error\n");
+    for (int ip = 0; ip < BENCH_NPROBLEMS; ip++) {
+        const struct bench_problem *p = &bench_problems[ip];
+        double q[2];
+        int q_bound[2];
+        for (int j = 0; j < 2; j++)
+            q[j] = time_to_reach(results[ip][0], targets[j], &q_bound[j]);
+        printf("\n%s\n%-26s %10s %8s %10s %8s %10s\n", p->title, "method", "t(1%)", "ratio",
+               "t(0.01%)", "ratio", "best err");
+        for (int im = 0; im < NMETHODS; im++) {
+            if (!applies(&methods[im], p))
+                continue;
+            double t[2], best = INFINITY;
+            int bound[2];
+            char s[4][32];
+            for (int j = 0; j < 2; j++) {
+                t[j] = time_to_reach(results[ip][im], targets[j], &bound[j]);
+                fmt_time(s[2 * j], sizeof s[0], t[j], bound[j]);
+                fmt_ratio(s[2 * j + 1], sizeof s[0], t[j], bound[j], q[j], q_bound[j]);
+            }
+            for (int k = 0; k < NSWEEP; k++)
+                if (results[ip][im][k].ok)
+                    best = fmin(best, results[ip][im][k].err);
+            printf("%-26s %10s %8s %10s %8s %10.2e\n", methods[im].name, s[0], s[1], s[2],
+                   s[3], best);
+            fprintf(csv, "%s,%s,%s,%s,%s,%s,%.3e\n", p->key, methods[im].name, s[0], s[1], s[2],
+                    s[3], best);
+        }
+        if (!p->event_driven)
+            printf("(event-driven baseline: not run here; the contacts are coupled, so a mode "
+                   "switch needs a complementarity solve)\n");
+    }
+}
+
+static void print_orders(FILE *csv, const double eps_orders[])
+{
+    printf("\n== Observed convergence order in dt (RK4, eps by the paper's rule) ==\n"
+           "(least-squares slope of log error against log dt, points above 10x the reference's\n"
+           "uncertainty: 'a | w' = asymptotic range dt = %g … %g | whole range %g … %g;\n"
+           "the paper: 2 for (4), 1 for (1) and (3) with sticking (Fig. 7a), 2 for all\n"
+           "without (Fig. 7b))\n",
+           dts[ORDER_FIRST], dts[NSWEEP - 1], dts[ORDER_WHOLE], dts[NSWEEP - 1]);
+    printf("%-26s", "method");
+    for (int ip = 0; ip < BENCH_NPROBLEMS; ip++)
+        printf(" %13s", bench_problems[ip].key);
+    printf("\n");
+    fprintf(csv, "problem,method,order_asymptotic,points,order_whole,points_whole,"
+                 "err_dt_1e-3,err_dt_1e-4\n");
+    for (int im = 0; im < NMETHODS; im++) {
+        if (methods[im].kind != FIXED)
+            continue;
+        printf("%-26s", methods[im].name);
+        for (int ip = 0; ip < BENCH_NPROBLEMS; ip++) {
+            int used, used_whole;
+            const struct point *pts = results[ip][im];
+            double order = observed_order(pts, ORDER_FIRST, error_floor(ip), &used);
+            double whole = observed_order(pts, ORDER_WHOLE, error_floor(ip), &used_whole);
+            char cell[32];
+            snprintf(cell, sizeof cell, "%5.2f | %4.2f", order, whole);
+            printf(" %13s", cell);
+            fprintf(csv, "%s,%s,%.3f,%d,%.3f,%d,%.3e,%.3e\n", bench_problems[ip].key,
+                    methods[im].name, order, used, whole, used_whole, pts[ORDER_FIRST].err,
+                    pts[NSWEEP - 1].err);
+        }
+        printf("\n");
+    }
+    printf("%-26s", "quinn(4): order in eps");
+    for (int ip = 0; ip < BENCH_NPROBLEMS; ip++)
+        printf(" %13.2f", eps_orders[ip]);
+    printf("\n(the last row: law (4) at fixed dt = 1e-4, eps = 3.2e-3 … 4e-4)\n"
+           "Relative errors at dt = 1e-3 and 1e-4:\n");
+    for (int im = 0; im < NMETHODS; im++) {
+        if (methods[im].kind != FIXED)
+            continue;
+        printf("%-26s", methods[im].name);
+        for (int ip = 0; ip < BENCH_NPROBLEMS; ip++)
+            printf("  %8.1e %8.1e", results[ip][im][ORDER_FIRST].err,
+                   results[ip][im][NSWEEP - 1].err);
+        printf("\n");
+    }
+}
+
+/* Points that did not run, with why. */
+static void print_failures(void)
+{
+    int any = 0;
+    for (int ip = 0; ip < BENCH_NPROBLEMS; ip++)
+        for (int im = 0; im < NMETHODS; im++)
+            for (int k = 0; k < NSWEEP; k++) {
+                const struct point *pt = &results[ip][im][k];
+                if (!applies(&methods[im], &bench_problems[ip]) || pt->ok)
+                    continue;
+                if (!any++)
+                    printf("\n== Points without a result ==\n");
+                printf("%-10s %-26s %s %-8g %-9s %s\n", bench_problems[ip].key,
+                       methods[im].name, methods[im].kind == FIXED ? "dt " : "tol", pt->param,
+                       status_word(pt), pt->run.msg);
+            }
+}
+
+/* The regularization error of law (4) alone: RK4 at a fixed small step, eps from 32 dt down
+ * to 4 dt. Its slope separates what eps costs from what dt costs (the paper's rule ties
+ * them). Returns the least-squares slope of log|error| against log eps. */
+static double eps_order(int ip)
+{
+    static const double eps[4] = {3.2e-3, 1.6e-3, 8e-4, 4e-4};
+    const double dt = 1e-4;
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    printf("  law (4) error against eps at fixed dt = %g (RK4):", dt);
+    for (int k = 0; k < 4; k++) {
+        struct bench_sim_point sp = {&bench_problems[ip], FRICREG_LAW_QUINN, FRICREG_INT_RK4,
+                                     dt, 0.0, eps[k]};
+        struct bench_run run;
+        if (bench_sim_run(&sp, &run) != FRICREG_OK) {
+            printf(" eps %g failed: %s\n", eps[k], run.msg);
+            return NAN;
+        }
+        double e = (run.D - refs[ip].D) / fabs(refs[ip].D);
+        printf(" %+.2e", e);
+        double x = log(eps[k]), y = log(fabs(e));
+        sx += x, sy += y, sxx += x * x, sxy += x * y;
+    }
+    double slope = (4 * sxy - sx * sy) / (4 * sxx - sx * sx);
+    printf(" at eps = %g … %g: order %.2f in eps\n", eps[0], eps[3], slope);
+    return slope;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc != 2) {
+        fprintf(stderr, "usage: fricreg-bench-wp OUTDIR\n");
+        return 2;
+    }
+    const char *dir = argv[1];
+    double t_start = bench_cpu_seconds(), eps_orders[BENCH_NPROBLEMS];
+    printf("fricreg %s work-precision benchmark\n", fricreg_version());
+#ifdef FRICREG_BENCH_CVODE
+    printf("event-driven baseline: %s CVODE, classical Coulomb (1)+(2), root finding on the "
+           "stick/slip switching functions\n", ed_version());
+#else
+    printf("event-driven baseline: not built (libsundials-dev not found)\n");
+#endif
+    printf("fixed step: RK4, dt = %g … %g, eps by the paper's rule (2 dt; chain 10 omega dt)\n"
+           "adaptive: law (4), rtol = atol = %g … %g, fixed eps per problem (below)\n"
+           "CPU time: median of %d interleaved runs (%d for points slower than %g s)\n",
+           dts[0], dts[NSWEEP - 1], tols[0], tols[NSWEEP - 1], PASSES, MIN_PASSES, SLOW_POINT);
+    for (int ip = 0; ip < BENCH_NPROBLEMS; ip++) {
+        const struct bench_problem *p = &bench_problems[ip];
+        printf("\n== %s ==\n", p->title);
+        if (bench_reference(p, &refs[ip], stdout) != FRICREG_OK) {
+            fprintf(stderr, "fricreg-bench-wp: the reference of %s failed\n", p->key);
+            return 1;
+        }
+        eps_orders[ip] = eps_order(ip);
+        printf("  adaptive runs: eps = %g\n", p->adaptive_eps);
+        fflush(stdout);
+    }
+    for (int pass = 0; pass < PASSES; pass++) {
+        double t0 = bench_cpu_seconds();
+        for (int ip = 0; ip < BENCH_NPROBLEMS; ip++)
+            for (int im = 0; im < NMETHODS; im++)
+                for (int k = 0; k < NSWEEP; k++) {
+                    struct point *pt = &results[ip][im][k];
+                    if (applies(&methods[im], &bench_problems[ip]) && runs_in_pass(pt, pass))
+                        run_point(&bench_problems[ip], &methods[im], k, pt, pass);
+                }
+        fprintf(stderr, "fricreg-bench-wp: pass %d of %d: %.1f CPU s\n", pass + 1, PASSES,
+                bench_cpu_seconds() - t0);
+    }
+    int nondeterministic = 0;
+    for (int ip = 0; ip < BENCH_NPROBLEMS; ip++)
+        for (int im = 0; im < NMETHODS; im++)
+            for (int k = 0; k < NSWEEP; k++) {
+                struct point *pt = &results[ip][im][k];
+                pt->cpu = pt->nt ? bench_median(pt->t, (size_t)pt->nt) : NAN;
+                nondeterministic += pt->nondeterministic;
+            }
+    if (nondeterministic)
+        printf("\nwarning: %d points gave a different D when repeated\n", nondeterministic);
+
+    FILE *csv = open_out(dir, "workprecision.csv");
+    FILE *orders = open_out(dir, "orders.csv");
+    FILE *summary = open_out(dir, "summary.csv");
+    if (!csv || !orders || !summary)
+        return 1;
+    write_csv(csv);
+    fclose(csv);
+    for (int ip = 0; ip < BENCH_NPROBLEMS; ip++)
+        write_dat(dir, ip);
+    write_gnuplot(dir);
+    print_failures();
+    print_orders(orders, eps_orders);
+    print_summary(summary);
+    fclose(orders);
+    fclose(summary);
+    printf("\nwork-precision benchmark: %.0f CPU seconds; files in %s: workprecision.csv, "
+           "orders.csv, summary.csv, wp_*.dat, workprecision.gp\n",
+           bench_cpu_seconds() - t_start, dir);
+    return 0;
+}
