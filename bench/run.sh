@@ -1,0 +1,40 @@
+#!/bin/sh
+# bench/run.sh — the whole benchmark, from the top of a fresh clone:
+#   builds with -DFRICREG_BENCH=ON in build-bench/, runs the work-precision and the scaling
+#   benchmarks, writes every CSV, gnuplot script and PNG to bench-results/, and prints the
+#   tables (the summary ends the work-precision part). Not run by ctest: it takes minutes.
+# The event-driven baseline is built when SUNDIALS CVODE is installed (Debian:
+# libsundials-dev); without it the rest runs and says so.
+set -eu
+cd "$(dirname "$0")/.."
+start=$(date +%s)
+out=bench-results
+
+mkdir -p build-bench "$out"
+log=build-bench/bench-build.log
+cmake -S . -B build-bench -DFRICREG_BENCH=ON -DFRICREG_TESTS=OFF -DFRICREG_EXAMPLES=OFF \
+      -DFRICREG_FORTRAN=OFF >"$log" 2>&1 || { cat "$log"; exit 1; }
+cmake --build build-bench -j2 >>"$log" 2>&1 || { cat "$log"; exit 1; }
+grep 'fricreg bench:' "$log" || true
+
+{
+    echo "date: $(date -u '+%Y-%m-%d %H:%M UTC')"
+    echo "machine: $(uname -srm), $(nproc) CPUs," \
+         "$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -n 1)," \
+         "load average $(cut -d' ' -f1-3 /proc/loadavg)"
+    echo "commit: $(git rev-parse --short HEAD 2>/dev/null || echo unknown)"
+} | tee "$out/machine.txt"
+echo
+
+./build-bench/bench/fricreg-bench-wp "$out" | tee "$out/workprecision.txt"
+echo
+./build-bench/bench/fricreg-bench-scaling "$out" | tee "$out/scaling.txt"
+echo
+
+if command -v gnuplot >/dev/null 2>&1; then
+    (cd "$out" && gnuplot workprecision.gp && gnuplot scaling.gp)
+    echo "plots: $(cd "$out" && ls ./*.png | sed 's|^\./||' | tr '\n' ' ')"
+else
+    echo "gnuplot not found: no PNGs (the .gp scripts and the data are in $out/)"
+fi
+echo "results in $out/; benchmark wall time $(( $(date +%s) - start )) s"
