@@ -458,7 +458,8 @@ int main(int argc, char **argv)
     printf("event-driven baseline: %s CVODE, classical Coulomb (1)+(2), root finding on the "
            "stick/slip switching functions\n", ed_version());
 #else
-    printf("event-driven baseline: not built (libsundials-dev not found)\n");
+    printf("event-driven baseline: not built (libsundials-dev not found, or "
+           "FRICREG_BENCH_CVODE=OFF)\n");
 #endif
     printf("fixed step: RK4, dt = %g … %g, eps by the paper's rule (2 dt; chain 10 omega dt)\n"
            "adaptive: law (4), rtol = atol = %g … %g, fixed eps per problem (below)\n"
