@@ -54,8 +54,9 @@ enum fricreg_status {
     FRICREG_ENOTSYM = 6,     /**< a coupling matrix is not symmetric */
     FRICREG_ENOTPSD = 7,     /**< a coupling matrix is not positive semidefinite */
     FRICREG_ESINGULAR = 8,   /**< the near-stick block W_SS is singular: f_eq is not unique */
-    FRICREG_ESTEP = 9,       /**< the step is too large for the stick-zone stiffness */
-    FRICREG_EDIVERGED = 10,  /**< the integrated state became NaN or infinite */
+    FRICREG_ESTEP = 9,       /**< the step is too large for the stick-zone stiffness or the
+                                  system's highest frequency (explicit fixed steps) */
+    FRICREG_EDIVERGED = 10,  /**< the integrated state became NaN, infinite or beyond 1e100 */
     FRICREG_EINTEGRATOR = 11 /**< the ODE integrator failed (step size underflow, …) */
 };
 

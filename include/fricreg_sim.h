@@ -124,8 +124,11 @@ FRICREG_API int fricreg_sim_set_observer(fricreg_sim *sim, fricreg_sim_observer 
  *  Before it starts, a fixed explicit step is checked against the stick-zone stiffness
  *  lambda = W_ii * (slope of the law at v = 0), i.e. 2 mun/eps for (4): dt * lambda must not
  *  exceed the stepper's stability bound on the negative real axis (FRICREG_ESTEP, naming the
- *  contact). After every step the state is checked for finiteness (FRICREG_EDIVERGED, naming
- *  the time and the first non-finite body, or the contact whose kinematics overflowed within
+ *  contact), nor dt times the system's highest natural frequency (1; 2n for the chain;
+ *  sqrt(max(1, k)) for the two blocks) its bound on the imaginary axis (FRICREG_ESTEP).
+ *  After every step the state is checked for finiteness and for |y| <= 1e100, which no
+ *  motion of these systems approaches (FRICREG_EDIVERGED, naming the time and the first such
+ *  body, or the contact whose kinematics overflowed within
  *  a step).
  *
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if t_end <= 0, or too many fixed steps

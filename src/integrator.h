@@ -11,6 +11,9 @@ struct fr_integrator {
     /* Largest stable dt*lambda on the negative real axis for a fixed step of this stepper
      * (0: not checked a priori, the stepper reports its own failure). */
     double real_axis_bound;
+    /* Largest dt*omega on the imaginary axis (an undamped oscillation of frequency omega) at
+     * which the amplification per fixed step stays below 1 + 1e-4 (0: not checked). */
+    double imag_axis_bound;
     /* GSL steps of this stepper per fricreg step dt (GSL's rk4: 2, see integrator.c). */
     int substeps;
     /* Absolute tolerance given to GSL's driver in a fixed-step run. Only some steppers read

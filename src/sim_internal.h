@@ -47,6 +47,7 @@ struct fricreg_sim {
 /* systems.c: the equations of motion of each reference system. */
 size_t fr_system_ndof(const fricreg_sim *sim);
 double fr_system_period(const fricreg_sim *sim);
+double fr_system_max_frequency(const fricreg_sim *sim);
 double fr_system_paper_eps(const fricreg_sim *sim, double dt);
 double fr_system_dissipation_weight(const fricreg_sim *sim);
 int fr_system_configure(fricreg_sim *sim); /* bounds and coupling into sim->ctx */

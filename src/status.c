@@ -13,8 +13,8 @@ const char *fricreg_strerror(int status)
     case FRICREG_ENOTSYM: return "coupling matrix is not symmetric";
     case FRICREG_ENOTPSD: return "coupling matrix is not positive semidefinite";
     case FRICREG_ESINGULAR: return "near-stick block W_SS is singular: f_eq is not unique";
-    case FRICREG_ESTEP: return "step too large for the stick-zone stiffness";
-    case FRICREG_EDIVERGED: return "integrated state became NaN or infinite";
+    case FRICREG_ESTEP: return "step too large for the stability of the explicit stepper";
+    case FRICREG_EDIVERGED: return "integrated state diverged (non-finite or beyond 1e100)";
     case FRICREG_EINTEGRATOR: return "ODE integrator failed";
     default: return "unknown fricreg status code";
     }

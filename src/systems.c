@@ -24,6 +24,18 @@ double fr_system_period(const fricreg_sim *sim)
     return TWO_PI / omega;
 }
 
+/* An upper bound of the system's highest natural frequency without friction: 1 for Eq. (5);
+ * 2n for the chain (the stiffness n^2 tridiag(-1, 2, -1) has eigenvalues below 4 n^2); the
+ * larger of the two ground springs for the two blocks (unit masses). */
+double fr_system_max_frequency(const fricreg_sim *sim)
+{
+    switch (sim->system) {
+    case FRICREG_SYSTEM_CHAIN: return 2.0 * (double)sim->p.n;
+    case FRICREG_SYSTEM_TWOBLOCK: return sqrt(fmax(1.0, sim->p.k));
+    default: return 1.0;
+    }
+}
+
 /* The paper's choices: eps = 2 dt (Sec. 3.1, also used for Sec. 3.3), 10 omega dt (Sec. 3.2). */
 double fr_system_paper_eps(const fricreg_sim *sim, double dt)
 {
