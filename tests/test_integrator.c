@@ -26,14 +26,15 @@ struct explicit_row {
     double table_bound;     /* src/integrator.c, in fricreg's dt (classical step for rk4) */
     double measured;        /* src/integrator.c's comment: the measured value */
     double gsl_steps_per_dt; /* GSL step length per fricreg dt: 2 for rk4 (step doubling) */
+    double imag_bound;      /* src/integrator.c: dt*omega with amplification <= 1 + 1e-4 */
 };
 
 static const struct explicit_row rows[] = {
-    {FRICREG_INT_RK2, 2.5, 2.51, 1.0},
-    {FRICREG_INT_RK4, 2.78, 2.785, 2.0},
-    {FRICREG_INT_RKF45, 3.6, 3.67, 1.0},
-    {FRICREG_INT_RKCK, 3.7, 3.73, 1.0},
-    {FRICREG_INT_RK8PD, 5.1, 5.16, 1.0},
+    {FRICREG_INT_RK2, 2.5, 2.51, 1.0, 1.73},
+    {FRICREG_INT_RK4, 2.78, 2.785, 2.0, 2.82},
+    {FRICREG_INT_RKF45, 3.6, 3.67, 1.0, 0.7},
+    {FRICREG_INT_RKCK, 3.7, 3.73, 1.0, 0.88},
+    {FRICREG_INT_RK8PD, 5.1, 5.16, 1.0, 3.7},
 };
 #define NROWS ((int)(sizeof rows / sizeof rows[0]))
 
@@ -83,6 +84,45 @@ static double stability_function(int id, double z, double gsl_steps_per_dt)
     ck_assert_int_eq(status, GSL_SUCCESS);
     return y;
 }
+
+/* y' = i y as a real system: (y0, y1)' = (-y1, y0), an undamped oscillation of frequency 1. */
+static int rotation(double t, const double y[], double dydt[], void *params)
+{
+    (void)t, (void)params;
+    dydt[0] = -y[1];
+    dydt[1] = y[0];
+    return GSL_SUCCESS;
+}
+
+/* |R(i z)|: the amplification of one fixed step of y' = i y, as stability_function. */
+static double amplification_on_imaginary_axis(int id, double z, double gsl_steps_per_dt)
+{
+    gsl_odeiv2_system sys = {rotation, NULL, 2, NULL};
+    double h = z * gsl_steps_per_dt, t = 0.0, y[2] = {1.0, 0.0};
+    gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_type(id), h, 1e-6, 0.0);
+    ck_assert_ptr_nonnull(d);
+    ck_assert_int_eq(gsl_odeiv2_evolve_apply_fixed_step(d->e, NULL, d->s, &sys, &t, h, y),
+                     GSL_SUCCESS);
+    gsl_odeiv2_driver_free(d);
+    return hypot(y[0], y[1]);
+}
+
+/* The table's imaginary-axis bound (the system-frequency check of src/sim.c) keeps the
+ * amplification per step within 1 + 1e-4, and 10% beyond it the amplification is larger. */
+START_TEST(test_imaginary_axis_bound)
+{
+    const struct explicit_row *r = &rows[_i];
+    const char *name = fricreg_integrator_name(r->id);
+    for (int k = 1; k <= 100; k++) {
+        double z = r->imag_bound * k / 100.0;
+        double A = amplification_on_imaginary_axis(r->id, z, r->gsl_steps_per_dt);
+        ck_assert_msg(A <= 1.0 + 1e-4, "%s: |R(%gi)| = %.9g", name, z, A);
+    }
+    double beyond = amplification_on_imaginary_axis(r->id, 1.1 * r->imag_bound,
+                                                    r->gsl_steps_per_dt);
+    ck_assert_msg(beyond > 1.0 + 1e-4, "%s: |R(%gi)| = %.9g", name, 1.1 * r->imag_bound, beyond);
+}
+END_TEST
 
 /* The table's bound is stable: |R(-z)| <= 1 on a grid of (0, bound] including the bound. */
 START_TEST(test_table_bound_is_stable)
@@ -188,6 +228,7 @@ static Suite *integrator_suite(void)
     TCase *gsl = tcase_create("gsl_stability");
     tcase_add_loop_test(gsl, test_table_bound_is_stable, 0, NROWS);
     tcase_add_loop_test(gsl, test_measured_bound_is_tight, 0, NROWS);
+    tcase_add_loop_test(gsl, test_imaginary_axis_bound, 0, NROWS);
     tcase_add_loop_test(gsl, test_implicit_steppers_are_a_stable, 0, 4);
     suite_add_tcase(s, gsl);
 
