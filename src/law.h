@@ -60,7 +60,7 @@ static inline double fr_tanh(double v, double mun, double eps)
  * with s = sat(f_eq/mun): one select-only formula, and at v = 0 exactly mun s, i.e. (2). */
 static inline double fr_quinn(double v, double f_eq, double mun, double eps)
 {
-    return -mun * fr_sat(2.0 * v / eps - fr_sat_ratio(f_eq, mun));
+    return -mun * fr_sat(v * (2.0 / eps) - fr_sat_ratio(f_eq, mun)); /* 2/eps: hoisted */
 }
 
 /* Whether the law reads f_eq at velocity v: the near-stick test of Sec. 3.3. */
