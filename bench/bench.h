@@ -7,6 +7,7 @@
 #define FRICREG_BENCH_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include <fricreg.h>
 #include <fricreg_sim.h>
@@ -75,5 +76,9 @@ int bench_sim_run(const void *point, struct bench_run *out);
 
 /** Relative error |D - ref| / |ref|. */
 double bench_rel_error(double D, double ref);
+
+/** Opens dir/name for writing; on failure says so on stderr, naming program, and returns
+ *  NULL. */
+FILE *bench_open_out(const char *program, const char *dir, const char *name);
 
 #endif

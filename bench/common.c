@@ -100,3 +100,13 @@ double bench_rel_error(double D, double ref)
 {
     return fabs(D - ref) / fabs(ref);
 }
+
+FILE *bench_open_out(const char *program, const char *dir, const char *name)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    FILE *f = fopen(path, "w");
+    if (f == NULL)
+        fprintf(stderr, "%s: cannot write %s\n", program, path);
+    return f;
+}

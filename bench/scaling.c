@@ -169,12 +169,7 @@ static int law_costs(void)
 
 static FILE *open_out(const char *dir, const char *name)
 {
-    char path[4096];
-    snprintf(path, sizeof path, "%s/%s", dir, name);
-    FILE *f = fopen(path, "w");
-    if (f == NULL)
-        fprintf(stderr, "fricreg-bench-scaling: cannot write %s\n", path);
-    return f;
+    return bench_open_out("fricreg-bench-scaling", dir, name);
 }
 
 static int write_files(const char *dir)

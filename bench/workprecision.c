@@ -195,12 +195,7 @@ static double error_floor(int ip)
 
 static FILE *open_out(const char *dir, const char *name)
 {
-    char path[4096];
-    snprintf(path, sizeof path, "%s/%s", dir, name);
-    FILE *f = fopen(path, "w");
-    if (f == NULL)
-        fprintf(stderr, "fricreg-bench-wp: cannot write %s\n", path);
-    return f;
+    return bench_open_out("fricreg-bench-wp", dir, name);
 }
 
 static void write_csv(FILE *f)

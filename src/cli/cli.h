@@ -30,7 +30,19 @@ int cli_parse_run(int system, int argc, char **argv, struct cli_run *run);
 const char *cli_system_name(int system);
 const char *cli_law_name(int law);
 
+/* One run's summary, as `--output summary` prints it (one JSON object). */
+struct cli_summary {
+    const char *system, *law, *integrator;
+    int adaptive;
+    double dt, rtol, atol, eps, steps, rhs_evals, t, period, cpu_seconds;
+    size_t ndof, ncontacts, cycles;
+    const double *x, *v;   /* [ndof] */
+    const double *D;       /* [cycles] dissipation per cycle */
+    const double *stick;   /* [ncontacts] stick fraction of the last whole cycle */
+};
+
 /* output.c */
+void cli_write_summary(FILE *out, const struct cli_summary *s);
 int cli_run_summary(const struct cli_run *run, FILE *out);
 int cli_run_trajectory(const struct cli_run *run, FILE *out);
 /* Applies the run's settings to a new simulation; on failure prints why and returns NULL. */

@@ -26,14 +26,6 @@ static void oscillator_params(const struct cli_run *run, double *a, double *omeg
     }
 }
 
-static void json_array(FILE *out, const char *name, size_t n, const double a[])
-{
-    fprintf(out, "\"%s\": [", name);
-    for (size_t i = 0; i < n; i++)
-        fprintf(out, "%s%.17g", i ? ", " : "", a[i]);
-    fprintf(out, "]");
-}
-
 int cli_exact_summary(const struct cli_run *run, FILE *out)
 {
     double a, omega, mun, x0, v0, x, v;
@@ -59,19 +51,12 @@ int cli_exact_summary(const struct cli_run *run, FILE *out)
     fricreg_exact_state(ex, t_end, &x, &v);
     double from = cycles > 0 ? (double)(cycles - 1) * period : 0.0;
     fricreg_exact_stick_fraction(ex, from, cycles > 0 ? cycles * period : t_end, &stick);
-    fprintf(out, "{\"system\": \"oscillator\", \"law\": \"coulomb+force-balance\", "
-                 "\"integrator\": \"exact\", \"adaptive\": false, \"dt\": 0, \"rtol\": 0, "
-                 "\"atol\": 0, \"eps\": 0, ");
-    fprintf(out, "\"steps\": %zu, \"rhs_evals\": 0, \"t\": %.17g, \"period\": %.17g, ",
-            fricreg_exact_nswitches(ex), t_end, period);
-    json_array(out, "x", 1, &x);
-    fprintf(out, ", ");
-    json_array(out, "v", 1, &v);
-    fprintf(out, ", ");
-    json_array(out, "dissipation_per_cycle", cycles, D);
-    fprintf(out, ", ");
-    json_array(out, "stick_fraction", 1, &stick);
-    fprintf(out, ", \"cpu_seconds\": %.6f}\n", cpu_seconds);
+    struct cli_summary s = {
+        .system = "oscillator", .law = "coulomb+force-balance", .integrator = "exact",
+        .steps = (double)fricreg_exact_nswitches(ex), .t = t_end, .period = period,
+        .cpu_seconds = cpu_seconds, .ndof = 1, .ncontacts = 1, .cycles = cycles,
+        .x = &x, .v = &v, .D = D, .stick = &stick};
+    cli_write_summary(out, &s);
     free(D);
     fricreg_exact_free(ex);
     return 0;

@@ -42,10 +42,26 @@ static int execute(fricreg_sim *sim, const struct cli_run *run)
 
 static void json_array(FILE *out, const char *name, size_t n, const double a[])
 {
-    fprintf(out, "\"%s\": [", name);
+    fprintf(out, ", \"%s\": [", name);
     for (size_t i = 0; i < n; i++)
         fprintf(out, "%s%.17g", i ? ", " : "", a[i]);
     fprintf(out, "]");
+}
+
+void cli_write_summary(FILE *out, const struct cli_summary *s)
+{
+    fprintf(out, "{\"system\": \"%s\", \"law\": \"%s\", \"integrator\": \"%s\", ", s->system,
+            s->law, s->integrator);
+    fprintf(out, "\"adaptive\": %s, \"dt\": %.17g, \"rtol\": %.17g, \"atol\": %.17g, ",
+            s->adaptive ? "true" : "false", s->dt, s->rtol, s->atol);
+    fprintf(out, "\"eps\": %.17g, \"steps\": %.0f, \"rhs_evals\": %.0f, \"t\": %.17g, ",
+            s->eps, s->steps, s->rhs_evals, s->t);
+    fprintf(out, "\"period\": %.17g", s->period);
+    json_array(out, "x", s->ndof, s->x);
+    json_array(out, "v", s->ndof, s->v);
+    json_array(out, "dissipation_per_cycle", s->cycles, s->D);
+    json_array(out, "stick_fraction", s->ncontacts, s->stick);
+    fprintf(out, ", \"cpu_seconds\": %.6f}\n", s->cpu_seconds);
 }
 
 static double value(const fricreg_sim *sim, int which)
@@ -69,23 +85,16 @@ static void write_summary(FILE *out, const struct cli_run *run, const fricreg_si
     fricreg_sim_get_state(sim, n, x, v);
     fricreg_sim_get_stick_fraction(sim, m, stick);
     fricreg_sim_get_dissipation(sim, cycles, D);
-    fprintf(out, "{\"system\": \"%s\", \"law\": \"%s\", \"integrator\": \"%s\", ",
-            cli_system_name(run->system), cli_law_name(run->law),
-            fricreg_integrator_name(run->integrator));
-    fprintf(out, "\"adaptive\": %s, \"dt\": %.17g, \"rtol\": %.17g, \"atol\": %.17g, ",
-            run->rtol > 0.0 || run->atol > 0.0 ? "true" : "false", run->dt, run->rtol, run->atol);
-    fprintf(out, "\"eps\": %.17g, \"steps\": %.0f, \"rhs_evals\": %.0f, \"t\": %.17g, ",
-            value(sim, FRICREG_VALUE_EPS), value(sim, FRICREG_VALUE_STEPS),
-            value(sim, FRICREG_VALUE_RHS_EVALS), value(sim, FRICREG_VALUE_TIME));
-    fprintf(out, "\"period\": %.17g, ", value(sim, FRICREG_VALUE_PERIOD));
-    json_array(out, "x", n, x);
-    fprintf(out, ", ");
-    json_array(out, "v", n, v);
-    fprintf(out, ", ");
-    json_array(out, "dissipation_per_cycle", cycles, D);
-    fprintf(out, ", ");
-    json_array(out, "stick_fraction", m, stick);
-    fprintf(out, ", \"cpu_seconds\": %.6f}\n", cpu_seconds);
+    struct cli_summary s = {
+        .system = cli_system_name(run->system), .law = cli_law_name(run->law),
+        .integrator = fricreg_integrator_name(run->integrator),
+        .adaptive = run->rtol > 0.0 || run->atol > 0.0,
+        .dt = run->dt, .rtol = run->rtol, .atol = run->atol, .eps = value(sim, FRICREG_VALUE_EPS),
+        .steps = value(sim, FRICREG_VALUE_STEPS), .rhs_evals = value(sim, FRICREG_VALUE_RHS_EVALS),
+        .t = value(sim, FRICREG_VALUE_TIME), .period = value(sim, FRICREG_VALUE_PERIOD),
+        .cpu_seconds = cpu_seconds, .ndof = n, .ncontacts = m, .cycles = cycles,
+        .x = x, .v = v, .D = D, .stick = stick};
+    cli_write_summary(out, &s);
     free(buf);
 }
 
