@@ -130,6 +130,24 @@ module fricreg_c
       integer(c_int) :: fricreg_ctx_eval
     end function
 
+    !> Select the partition of coupled contacts (FRICREG_PARTITION_*).
+    function fricreg_ctx_set_partition(ctx, partition) &
+        bind(C, name='fricreg_ctx_set_partition')
+      import :: c_int, c_ptr
+      type(c_ptr), value :: ctx
+      integer(c_int), value :: partition
+      integer(c_int) :: fricreg_ctx_set_partition
+    end function
+
+    !> The stick zone's stiffness lambda (bound of dt*lambda for explicit steps).
+    function fricreg_ctx_stick_stiffness(ctx, lambda) &
+        bind(C, name='fricreg_ctx_stick_stiffness')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: ctx
+      real(c_double), intent(inout) :: lambda ! written only on success
+      integer(c_int) :: fricreg_ctx_stick_stiffness
+    end function
+
     function fricreg_ctx_get_stat(ctx, which, value) bind(C, name='fricreg_ctx_get_stat')
       import :: c_int, c_int64_t, c_ptr
       type(c_ptr), value :: ctx

@@ -70,6 +70,14 @@ module fricreg_sim_c
       integer(c_int) :: fricreg_sim_set_law
     end function
 
+    function fricreg_sim_set_partition(sim, partition) &
+        bind(C, name='fricreg_sim_set_partition')
+      import :: c_int, c_ptr
+      type(c_ptr), value :: sim
+      integer(c_int), value :: partition
+      integer(c_int) :: fricreg_sim_set_partition
+    end function
+
     function fricreg_sim_set_integrator(sim, integrator, dt, rtol, atol) &
         bind(C, name='fricreg_sim_set_integrator')
       import :: c_int, c_double, c_ptr

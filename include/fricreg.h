@@ -163,6 +163,43 @@ FRICREG_API int fricreg_ctx_set_coupling_diagonal(fricreg_ctx *ctx, size_t m, co
  *  FRICREG_ENOTPSD (also if some W_ii <= 0: a contact with no mobility); FRICREG_ENOMEM. */
 FRICREG_API int fricreg_ctx_set_coupling_dense(fricreg_ctx *ctx, size_t m, const double W[]);
 
+/** How the near-stick forces of coupled contacts (dense W) are found. Values are fixed forever.
+ *  With a diagonal W both give law (4) contact by contact (the same numbers to rounding). */
+enum fricreg_partition {
+    /** The consistent near-stick law (default): f_eq,i is the force that zeroes contact i's
+     *  acceleration given every other contact's actual force, so the near-stick forces are the
+     *  unique solution of a box-constrained convex QP on S (docs/coupled.md). Continuous in
+     *  (zdot, a_free, mun), also where a contact crosses |zdot_j| = eps; equal to Coulomb's
+     *  stick problem with saturation at zdot_S = 0. */
+    FRICREG_PARTITION_CONSISTENT = 1,
+    /** The paper's Sec. 3.3: W_SS f_eq,S = -(a_free,S + W_SL f_L), then the law at each
+     *  contact of S. The force jumps when a coupled contact crosses |zdot_j| = eps; kept to
+     *  reproduce the paper's Fig. 11. */
+    FRICREG_PARTITION_PAPER = 2
+};
+
+/** Select the partition (enum fricreg_partition) used by fricreg_ctx_eval with a dense W.
+ *  Cheap; discards the cached factor of W_SS.
+ *  Returns FRICREG_OK; FRICREG_ENULL if ctx is NULL; FRICREG_EINVAL for an unknown partition. */
+FRICREG_API int fricreg_ctx_set_partition(fricreg_ctx *ctx, int partition);
+
+/** The stiffness of the stick zone: an upper bound lambda (1/time units of zdot/eps) of the
+ *  decay rates of the linearized near-stick dynamics d(zddot)/d(zdot), for the context's law,
+ *  eps, bounds, coupling and partition, over every near-stick set. A fixed explicit step dt
+ *  keeps the stick zone stable when dt * lambda is within the stepper's stability bound on the
+ *  negative real axis (classical RK4: 2.785); fricreg's drivers check exactly that.
+ *
+ *  With s_i the slope of the law at v = 0 (2 mun_i/eps for (4), Sec. 3.1.1; mun_i/eps for (3)
+ *  and tanh; 0 for (1), (2) and Karnopp) and D = diag(s): a diagonal W, or (4) under the
+ *  consistent partition, gives max_i W_ii s_i (its free contacts decouple); the paper's
+ *  partition, (3) and tanh with a dense W give the largest eigenvalue of D^1/2 W D^1/2 (GSL's
+ *  symmetric eigensolver, O(m^3), allocating O(m^2) for the call), which is larger by up to
+ *  the coupling: 1.707x on the paper's two blocks with mu1 = 2 mu2.
+ *
+ *  lambda  out: the bound, >= 0. Written only on success.
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ENOMEM. */
+FRICREG_API int fricreg_ctx_stick_stiffness(fricreg_ctx *ctx, double *lambda);
+
 /** Evaluate the friction forces of all m contacts (Sec. 3.3, with the context's law).
  *
  *  The contacts obey zddot = a_free + W f. The near-stick set S is where the law needs f_eq:

@@ -96,6 +96,13 @@ FRICREG_API int fricreg_sim_set_param(fricreg_sim *sim, int param, double value)
  *  FRICREG_ENONFINITE. */
 FRICREG_API int fricreg_sim_set_law(fricreg_sim *sim, int law, double eps);
 
+/** Select how coupled contacts are partitioned (enum fricreg_partition; default
+ *  FRICREG_PARTITION_CONSISTENT; see fricreg_ctx_set_partition). Only the two blocks have
+ *  coupled contacts; the oscillator and the chain give the same numbers under both.
+ *  Discards any results. Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown
+ *  partition. */
+FRICREG_API int fricreg_sim_set_partition(fricreg_sim *sim, int partition);
+
 /** Select the integrator (enum fricreg_integrator) and its step control.
  *  rtol = atol = 0: fixed step dt > 0 (each cycle's last step is shortened to end on the cycle
  *  boundary). Otherwise adaptive with GSL's standard control (|error| <= atol + rtol |y|),
@@ -122,9 +129,9 @@ FRICREG_API int fricreg_sim_set_observer(fricreg_sim *sim, fricreg_sim_observer 
  *  D is recorded per forcing cycle of period 2 pi/omega (belt_omega for twoblock).
  *
  *  Before it starts, a fixed explicit step is checked against the stick-zone stiffness
- *  lambda = W_ii * (slope of the law at v = 0), i.e. 2 mun/eps for (4): dt * lambda must not
- *  exceed the stepper's stability bound on the negative real axis (FRICREG_ESTEP, naming the
- *  contact), nor dt times the system's highest natural frequency (1; 2n for the chain;
+ *  lambda of fricreg_ctx_stick_stiffness (W_ii * 2 mun_i/eps for (4) under the consistent
+ *  partition; coupled contacts included): dt * lambda must not exceed the stepper's stability
+ *  bound on the negative real axis (FRICREG_ESTEP), nor dt times the system's highest natural frequency (1; 2n for the chain;
  *  sqrt(max(1, k)) for the two blocks) its bound on the imaginary axis (FRICREG_ESTEP).
  *  After every step the state is checked for finiteness and for |y| <= 1e100, which no
  *  motion of these systems approaches (FRICREG_EDIVERGED, naming the time and the first such

@@ -51,6 +51,7 @@ int fricreg_ctx_create(size_t m, fricreg_ctx **out)
         return FRICREG_ENOMEM;
     ctx->m = m;
     ctx->law = FRICREG_LAW_QUINN;
+    ctx->partition = FRICREG_PARTITION_CONSISTENT;
     ctx->eps = 1e-3;
     ctx->mun = malloc(m * sizeof *ctx->mun);
     ctx->w_diag = malloc(m * sizeof *ctx->w_diag);
@@ -85,6 +86,17 @@ int fricreg_ctx_set_law(fricreg_ctx *ctx, int law, double eps)
         return fr_fail(ctx, FRICREG_EINVAL, "set_law: eps = %g must be > 0", eps);
     ctx->law = law;
     ctx->eps = eps;
+    return FRICREG_OK;
+}
+
+int fricreg_ctx_set_partition(fricreg_ctx *ctx, int partition)
+{
+    if (ctx == NULL)
+        return FRICREG_ENULL;
+    if (partition != FRICREG_PARTITION_CONSISTENT && partition != FRICREG_PARTITION_PAPER)
+        return fr_fail(ctx, FRICREG_EINVAL, "set_partition: unknown partition %d", partition);
+    ctx->partition = partition;
+    ctx->factor_valid = 0;
     return FRICREG_OK;
 }
 

@@ -14,6 +14,7 @@
 struct fricreg_ctx {
     size_t m;
     int law;
+    int partition;  /* enum fricreg_partition: used with a dense W */
     double eps;
     double *mun;    /* [m] friction bounds */
     double *w_diag; /* [m] diagonal of W (the whole of W when W is diagonal) */

@@ -12,7 +12,6 @@
 #include <gsl/gsl_math.h>
 #include <gsl/gsl_odeiv2.h>
 
-#include "ctx_internal.h"
 #include "gsl_guard.h"
 #include "integrator.h"
 #include "law.h"
@@ -73,6 +72,7 @@ int fricreg_sim_create(int system, fricreg_sim **out)
                                 .k = 2.0, .mu1 = 0.5, .mu2 = 0.25,
                                 .belt_amp = 1.0, .belt_omega = 0.5};
     sim->law = FRICREG_LAW_QUINN;
+    sim->partition = FRICREG_PARTITION_CONSISTENT;
     sim->eps_set = 0.0;
     sim->integrator = FRICREG_INT_RK4;
     sim->dt = 0.01;
@@ -107,6 +107,17 @@ int fricreg_sim_set_law(fricreg_sim *sim, int law, double eps)
     free_run(sim);
     sim->law = law;
     sim->eps_set = eps;
+    return FRICREG_OK;
+}
+
+int fricreg_sim_set_partition(fricreg_sim *sim, int partition)
+{
+    if (sim == NULL)
+        return FRICREG_ENULL;
+    if (partition != FRICREG_PARTITION_CONSISTENT && partition != FRICREG_PARTITION_PAPER)
+        return sim_fail(sim, FRICREG_EINVAL, "set_partition: unknown partition %d", partition);
+    free_run(sim);
+    sim->partition = partition;
     return FRICREG_OK;
 }
 
@@ -258,6 +269,8 @@ static int alloc_run(fricreg_sim *sim, size_t cycles)
     if (status == FRICREG_OK)
         status = fricreg_ctx_set_law(sim->ctx, sim->law, sim->eps);
     if (status == FRICREG_OK)
+        status = fricreg_ctx_set_partition(sim->ctx, sim->partition);
+    if (status == FRICREG_OK)
         status = fr_system_configure(sim);
     if (status != FRICREG_OK)
         return sim_fail(sim, status, "run: %s",
@@ -265,35 +278,23 @@ static int alloc_run(fricreg_sim *sim, size_t cycles)
     return FRICREG_OK;
 }
 
-/* Slope |df/dv| of the law at the centre of its stick zone: the stiffness it adds. */
-static double law_slope(int law, double mun, double eps)
-{
-    switch (law) {
-    case FRICREG_LAW_QUINN: return 2.0 * mun / eps;               /* (4a) */
-    case FRICREG_LAW_VELOCITY_LIMITED:
-    case FRICREG_LAW_TANH: return mun / eps;                      /* (3), tanh'(0) = 1 */
-    default: return 0.0;                                          /* (1), (2), Karnopp */
-    }
-}
-
-/* A fixed explicit step must keep dt * lambda_i within the stepper's real-axis bound, with
- * lambda_i = W_ii * slope: the decay rate of contact i in its stick zone (Sec. 3.1.1); and
- * dt * omega_max within its imaginary-axis bound, omega_max the system's highest natural
- * frequency (the chain's springs: 2n). */
+/* A fixed explicit step must keep dt * lambda within the stepper's real-axis bound, lambda
+ * the context's stick-zone stiffness (fricreg_ctx_stick_stiffness: coupled contacts
+ * included), and dt * omega_max within its imaginary-axis bound, omega_max the system's
+ * highest natural frequency (the chain's springs: 2n). */
 static int check_step(fricreg_sim *sim, const struct fr_integrator *integ)
 {
     if (adaptive(sim))
         return FRICREG_OK;
-    for (size_t i = 0; integ->real_axis_bound > 0.0 && i < sim->m; i++) {
-        double lambda = sim->ctx->w_diag[i] * law_slope(sim->law, sim->ctx->mun[i], sim->eps);
-        if (sim->dt * lambda > integ->real_axis_bound)
-            return sim_fail(sim, FRICREG_ESTEP,
-                            "run: dt = %g too large for contact %zu: stick-zone stiffness %g "
-                            "gives dt*lambda = %g > %g, the stability bound of %s; reduce dt or "
-                            "raise eps",
-                            sim->dt, i, lambda, sim->dt * lambda, integ->real_axis_bound,
-                            integ->name);
-    }
+    double lambda = 0.0;
+    if (integ->real_axis_bound > 0.0 &&
+        fricreg_ctx_stick_stiffness(sim->ctx, &lambda) != FRICREG_OK)
+        return sim_fail(sim, FRICREG_ENOMEM, "run: %s", fricreg_ctx_errmsg(sim->ctx));
+    if (integ->real_axis_bound > 0.0 && sim->dt * lambda > integ->real_axis_bound)
+        return sim_fail(sim, FRICREG_ESTEP,
+                        "run: dt = %g too large for the stick zone: its stiffness %g gives "
+                        "dt*lambda = %g > %g, the stability bound of %s; reduce dt or raise eps",
+                        sim->dt, lambda, sim->dt * lambda, integ->real_axis_bound, integ->name);
     double omega = fr_system_max_frequency(sim);
     if (integ->imag_axis_bound > 0.0 && sim->dt * omega > integ->imag_axis_bound)
         return sim_fail(sim, FRICREG_ESTEP,

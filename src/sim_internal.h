@@ -18,6 +18,7 @@ struct fricreg_sim {
     int system;
     struct fr_params p;
     int law;
+    int partition; /* enum fricreg_partition, passed to the context */
     double eps_set; /* 0: the paper's rule */
     int integrator;
     double dt, rtol, atol;

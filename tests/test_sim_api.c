@@ -223,23 +223,24 @@ END_TEST
 
 /* Sec. 3.1.1: in the stick zone of (4) a contact decays at lambda = W_ii 2 mun/eps; RK4's
  * real-axis bound is 2.78. Oscillator, eps = 0.02, dt = 0.05: dt lambda = 5 > 2.78. The message
- * names the contact and dt. */
-START_TEST(test_too_large_step_is_estep_naming_the_contact)
+ * names the stick zone, dt and lambda = 100. */
+START_TEST(test_too_large_step_is_estep_naming_the_stick_zone)
 {
     fricreg_sim *sim = make(FRICREG_SYSTEM_OSCILLATOR);
     ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_QUINN, 0.02), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 0.05, 0.0, 0.0),
                      FRICREG_OK);
     expect_failure(sim, fricreg_sim_run(sim, 20.0), FRICREG_ESTEP);
-    ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "contact 0"));
+    ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "stick zone"));
+    ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "stiffness 100 "));
     ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "dt"));
     fricreg_sim_free(sim);
 }
 END_TEST
 
-/* The same check with coupled contacts uses W_ii: two blocks, eps = 0.02, dt = 0.03, mu2 = 0.6:
- * contact 0 has lambda = 1 * 2 * 0.5/0.02 = 50 (dt lambda = 1.5), contact 1 has
- * lambda = 2 * 2 * 0.6/0.02 = 120 (dt lambda = 3.6 > 2.78): the message names contact 1. */
+/* The same check with coupled contacts under the consistent law uses W_ii: two blocks,
+ * eps = 0.02, dt = 0.03, mu2 = 0.6: contact 0 has lambda = 1 * 2 * 0.5/0.02 = 50
+ * (dt lambda = 1.5), contact 1 has lambda = 2 * 2 * 0.6/0.02 = 120 (dt lambda = 3.6 > 2.78). */
 START_TEST(test_estep_uses_the_coupling_diagonal)
 {
     fricreg_sim *sim = make(FRICREG_SYSTEM_TWOBLOCK);
@@ -248,7 +249,30 @@ START_TEST(test_estep_uses_the_coupling_diagonal)
     ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 0.03, 0.0, 0.0),
                      FRICREG_OK);
     expect_failure(sim, fricreg_sim_run_cycles(sim, 1), FRICREG_ESTEP);
-    ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "contact 1"));
+    ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "stiffness 120 "));
+    fricreg_sim_free(sim);
+}
+END_TEST
+
+/* Under the paper's partition the stick zone of coupled contacts is stiffer than its diagonal
+ * (shared/spec/coupled.md): two blocks, mun = (10, 5), eps = 0.02, RK4 dt = 0.0025. Consistent:
+ * lambda = max W_ii 2 mun_i/eps = 1000, dt lambda = 2.5 <= 2.78, accepted; paper's:
+ * lambda = 1000 (1 + 1/sqrt 2) = 1707.1, dt lambda = 4.27, refused. */
+START_TEST(test_estep_paper_partition_sees_the_coupling)
+{
+    fricreg_sim *sim = make(FRICREG_SYSTEM_TWOBLOCK);
+    ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_MU1, 10.0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_MU2, 5.0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_QUINN, 0.02), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 0.0025, 0.0, 0.0),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_partition(sim, FRICREG_PARTITION_PAPER), FRICREG_OK);
+    expect_failure(sim, fricreg_sim_run(sim, 0.1), FRICREG_ESTEP);
+    ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "stiffness 1707.1"));
+    ck_assert_int_eq(fricreg_sim_set_partition(sim, FRICREG_PARTITION_CONSISTENT), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run(sim, 0.1), FRICREG_OK);
+    expect_failure(sim, fricreg_sim_set_partition(sim, 99), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_sim_set_partition(NULL, FRICREG_PARTITION_PAPER), FRICREG_ENULL);
     fricreg_sim_free(sim);
 }
 END_TEST
@@ -483,8 +507,9 @@ static Suite *sim_api_suite(void)
     suite_add_tcase(s, errors);
 
     TCase *run = tcase_create("run_checks");
-    tcase_add_test(run, test_too_large_step_is_estep_naming_the_contact);
+    tcase_add_test(run, test_too_large_step_is_estep_naming_the_stick_zone);
     tcase_add_test(run, test_estep_uses_the_coupling_diagonal);
+    tcase_add_test(run, test_estep_paper_partition_sees_the_coupling);
     tcase_add_test(run, test_spring_mode_too_fast_is_estep);
     tcase_add_test(run, test_unstable_run_is_ediverged);
     tcase_add_test(run, test_observer_stops_the_run_early);

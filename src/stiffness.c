@@ -1,0 +1,82 @@
+/* stiffness.c — fricreg_ctx_stick_stiffness: the decay rate that bounds a fixed explicit step.
+ *
+ * In the stick zone a law with slope s_i at v = 0 gives d(zddot)/d(zdot) = -W_SS D_S with
+ * D = diag(s) whenever f_eq is held fixed (the paper's partition, and (3), tanh, which ignore
+ * f_eq). Its eigenvalues are those of D^1/2 W_SS D^1/2, bounded over every S by those of
+ * D^1/2 W D^1/2 (Cauchy interlacing). Under the consistent law each free contact's
+ * acceleration is -W_ii s_i zdot_i whatever the others do (docs/coupled.md), so the diagonal
+ * gives the rate. */
+#include <math.h>
+#include <string.h>
+
+#include <gsl/gsl_eigen.h>
+#include <gsl/gsl_matrix.h>
+
+#include "ctx_internal.h"
+#include "gsl_guard.h"
+
+/* The slope s of the law at v = 0, per unit of mun: f = -s mun v / mun near v = 0. */
+static double law_slope(int law, double mun, double eps)
+{
+    switch (law) {
+    case FRICREG_LAW_QUINN: return 2.0 * mun / eps; /* (4a) */
+    case FRICREG_LAW_VELOCITY_LIMITED:
+    case FRICREG_LAW_TANH: return mun / eps; /* (3), tanh'(0) = 1 */
+    default: return 0.0; /* (1), (2), Karnopp: no velocity feedback at rest */
+    }
+}
+
+static double diagonal_rate(const fricreg_ctx *ctx)
+{
+    double lambda = 0.0;
+    for (size_t i = 0; i < ctx->m; i++)
+        lambda = fmax(lambda, ctx->w_diag[i] * law_slope(ctx->law, ctx->mun[i], ctx->eps));
+    return lambda;
+}
+
+/* Largest eigenvalue of D^1/2 W D^1/2 (symmetric positive semidefinite), by GSL. */
+static int coupled_rate(fricreg_ctx *ctx, double *lambda)
+{
+    size_t m = ctx->m;
+    gsl_matrix *A = gsl_matrix_alloc(m, m);
+    gsl_vector *eval = gsl_vector_alloc(m);
+    gsl_eigen_symm_workspace *work = gsl_eigen_symm_alloc(m);
+    int status = FRICREG_ENOMEM;
+    if (A && eval && work) {
+        for (size_t i = 0; i < m; i++) {
+            double si = sqrt(law_slope(ctx->law, ctx->mun[i], ctx->eps));
+            for (size_t j = 0; j < m; j++) {
+                double sj = sqrt(law_slope(ctx->law, ctx->mun[j], ctx->eps));
+                gsl_matrix_set(A, i, j, si * ctx->W[i * m + j] * sj);
+            }
+        }
+        gsl_error_handler_t *previous = fr_gsl_quiet();
+        int gsl_status = gsl_eigen_symm(A, eval, work);
+        fr_gsl_restore(previous);
+        status = gsl_status ? FRICREG_ENOMEM : FRICREG_OK; /* symm fails only on bad sizes */
+        *lambda = fmax(0.0, gsl_vector_max(eval));
+    }
+    gsl_eigen_symm_free(work);
+    gsl_vector_free(eval);
+    gsl_matrix_free(A);
+    return status;
+}
+
+int fricreg_ctx_stick_stiffness(fricreg_ctx *ctx, double *lambda)
+{
+    if (ctx == NULL || lambda == NULL)
+        return ctx ? fr_fail(ctx, FRICREG_ENULL, "stick_stiffness: lambda is NULL")
+                   : FRICREG_ENULL;
+    int decoupled = ctx->W == NULL || (ctx->law == FRICREG_LAW_QUINN &&
+                                       ctx->partition == FRICREG_PARTITION_CONSISTENT);
+    if (decoupled) {
+        *lambda = diagonal_rate(ctx);
+        return FRICREG_OK;
+    }
+    double rate = 0.0;
+    if (coupled_rate(ctx, &rate) != FRICREG_OK)
+        return fr_fail(ctx, FRICREG_ENOMEM, "stick_stiffness: out of memory for m = %zu",
+                       ctx->m);
+    *lambda = rate;
+    return FRICREG_OK;
+}
