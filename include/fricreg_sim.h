@@ -54,7 +54,10 @@ enum fricreg_param {
 /** Integrators: our own numbering of GSL's gsl_odeiv2 steppers. Values are fixed forever. */
 enum fricreg_integrator {
     FRICREG_INT_RK2 = 1,     /**< explicit embedded Runge–Kutta (2, 3) */
-    FRICREG_INT_RK4 = 2,     /**< explicit classical 4th-order Runge–Kutta (the paper's) */
+    /** explicit classical 4th-order Runge–Kutta (the paper's). Adaptive: GSL's rk4 (error by
+     *  step doubling). Fixed steps: fricreg's own gsl_odeiv2 step type on GSL rk4's grid, the
+     *  same numbers to rounding for 4 right-hand sides per step instead of 6. */
+    FRICREG_INT_RK4 = 2,
     FRICREG_INT_RKF45 = 3,   /**< explicit Runge–Kutta–Fehlberg (4, 5) */
     FRICREG_INT_RKCK = 4,    /**< explicit Runge–Kutta Cash–Karp (4, 5) */
     FRICREG_INT_RK8PD = 5,   /**< explicit Runge–Kutta Prince–Dormand (8, 9) */
@@ -63,13 +66,17 @@ enum fricreg_integrator {
     FRICREG_INT_RK4IMP = 8,  /**< implicit Gaussian 4th order */
     FRICREG_INT_BSIMP = 9,   /**< implicit Bulirsch–Stoer (Bader–Deuflhard) */
     FRICREG_INT_MSADAMS = 10, /**< variable-order Adams, explicit-implicit */
-    FRICREG_INT_MSBDF = 11   /**< variable-order BDF, for stiff problems */
+    FRICREG_INT_MSBDF = 11,  /**< variable-order BDF, for stiff problems */
+    /** GSL's rk4 in fixed steps too (6 right-hand sides per step), to compare with
+     *  FRICREG_INT_RK4. */
+    FRICREG_INT_RK4_GSL = 12
 };
 
-/** GSL's name of an integrator ("rk4", "msbdf", …), or NULL if unknown. Static storage. */
+/** The name of an integrator: GSL's ("rk4", "msbdf", …), and "rk4-gsl" for
+ *  FRICREG_INT_RK4_GSL; NULL if unknown. Static storage. */
 FRICREG_API const char *fricreg_integrator_name(int integrator);
 
-/** The integrator with GSL's name `name` (as above), or 0 if there is none. */
+/** The integrator named `name` (as above), or 0 if there is none. */
 FRICREG_API int fricreg_integrator_from_name(const char *name);
 
 /** Opaque simulation of one reference system: parameters, law, integrator, results. */

@@ -10,14 +10,18 @@
  * rk8pd 5.16. The imaginary-axis bounds likewise, on y' = i y, where the amplification per
  * step reaches 1 + 1e-4: rk2 1.73, rk4 2.83 per half step, rkf45 0.71, rkck 0.88 (the two
  * embedded 4(5) pairs are weakly unstable on that axis), rk8pd 3.71. Implicit steppers are
- * A-stable; the multistep ones report their own failure. */
+ * A-stable; the multistep ones report their own failure.
+ *
+ * Fixed steps of rk4 are not GSL's (rk4_classic.c): GSL's rk4 grid (two classical steps per
+ * call, `substeps` = 2) without the error estimate, 4 right-hand sides per step where GSL's
+ * rk4 spends 6, for the same numbers to rounding. "rk4-gsl" keeps GSL's for comparison. */
 #include <stddef.h>
 #include <string.h>
 
 #include "fricreg_sim.h"
 #include "integrator.h"
 
-#define ROW(ID, NAME, REAL, IMAG, SUB, TOL) {ID, #NAME, gsl_type_##NAME, REAL, IMAG, SUB, TOL}
+#define ROW(ID, NAME, REAL, IMAG, SUB, TOL) {ID, #NAME, gsl_type_##NAME, REAL, IMAG, SUB, TOL, NULL}
 
 /* gsl_odeiv2_step_* are data symbols; functions returning them keep the table constant. */
 #define GSL_TYPE(NAME) \
@@ -36,7 +40,8 @@ GSL_TYPE(msbdf)
 
 static const struct fr_integrator table[] = {
     ROW(FRICREG_INT_RK2, rk2, 2.5, 1.73, 1, 1e-6),
-    ROW(FRICREG_INT_RK4, rk4, 2.78, 2.82, 2, 1e-6),
+    /* rk4: GSL's for adaptive steps, fricreg's classical RK4 for fixed ones (same numbers) */
+    {FRICREG_INT_RK4, "rk4", gsl_type_rk4, 2.78, 2.82, 2, 1e-6, fr_step_rk4_classic},
     ROW(FRICREG_INT_RKF45, rkf45, 3.6, 0.7, 1, 1e-6),
     ROW(FRICREG_INT_RKCK, rkck, 3.7, 0.88, 1, 1e-6),
     ROW(FRICREG_INT_RK8PD, rk8pd, 5.1, 3.7, 1, 1e-6),
@@ -46,6 +51,8 @@ static const struct fr_integrator table[] = {
     ROW(FRICREG_INT_BSIMP, bsimp, 0.0, 0.0, 1, 1e-6),
     ROW(FRICREG_INT_MSADAMS, msadams, 0.0, 0.0, 1, 1e-6),
     ROW(FRICREG_INT_MSBDF, msbdf, 0.0, 0.0, 1, 1e-6),
+    /* GSL's rk4 for fixed steps too, for comparison */
+    {FRICREG_INT_RK4_GSL, "rk4-gsl", gsl_type_rk4, 2.78, 2.82, 2, 1e-6, NULL},
 };
 
 const struct fr_integrator *fr_integrator_find(int id)
@@ -54,6 +61,11 @@ const struct fr_integrator *fr_integrator_find(int id)
         if (table[k].id == id)
             return &table[k];
     return NULL;
+}
+
+const gsl_odeiv2_step_type *fr_integrator_stepper(const struct fr_integrator *integ, int adaptive)
+{
+    return !adaptive && integ->fixed_type ? integ->fixed_type() : integ->type();
 }
 
 const char *fricreg_integrator_name(int integrator)

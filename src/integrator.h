@@ -21,9 +21,18 @@ struct fr_integrator {
      * implicit Runge-Kutta ones as their Newton tolerance, which no iteration meets once a
      * stick brings the velocity to the rounding floor: they get 1e300, no test at all. */
     double fixed_tolerance;
+    /* The stepper used for fixed steps, or NULL for `type` itself: fricreg's own classical
+     * RK4 for rk4, which gives GSL rk4's numbers without its error estimate. */
+    const gsl_odeiv2_step_type *(*fixed_type)(void);
 };
+
+/* rk4_classic.c: two classical RK4 steps per call, as GSL's rk4, with no error estimate. */
+const gsl_odeiv2_step_type *fr_step_rk4_classic(void);
 
 /* The table row of an integrator id, or NULL if unknown. */
 const struct fr_integrator *fr_integrator_find(int id);
+
+/* The stepper for a run: fixed or adaptive steps. */
+const gsl_odeiv2_step_type *fr_integrator_stepper(const struct fr_integrator *integ, int adaptive);
 
 #endif

@@ -458,9 +458,9 @@ int fricreg_sim_run(fricreg_sim *sim, double t_end)
     double tol_abs = adaptive(sim) ? sim->atol : integ->fixed_tolerance;
     double tol_rel = adaptive(sim) ? sim->rtol : 0.0;
     gsl_error_handler_t *previous = fr_gsl_quiet();
-    gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys, integ->type(),
-                                                         sim->dt * integ->substeps, tol_abs,
-                                                         tol_rel);
+    const gsl_odeiv2_step_type *stepper = fr_integrator_stepper(integ, adaptive(sim));
+    gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys, stepper, sim->dt * integ->substeps,
+                                                         tol_abs, tol_rel);
     fr_gsl_restore(previous);
     if (d == NULL)
         return sim_fail(sim, FRICREG_ENOMEM, "run: GSL driver allocation failed");
