@@ -45,7 +45,7 @@ static void free_run(fricreg_sim *sim)
     sim->stick_time = sim->stick_fraction = sim->D = NULL;
     sim->ndof = sim->m = sim->cycles = 0;
     sim->t = 0.0;
-    sim->steps = sim->rhs_evals = 0;
+    sim->steps = sim->rhs_evals = sim->rejected_steps = 0;
 }
 
 void fricreg_sim_free(fricreg_sim *sim)
@@ -109,6 +109,17 @@ int fricreg_sim_set_param(fricreg_sim *sim, int param, double value)
         return reject_param(sim, param, value, spec);
     free_run(sim);
     sim->sys.p[slot] = value;
+    return FRICREG_OK;
+}
+
+int fricreg_sim_get_param(const fricreg_sim *sim, int param, double *value)
+{
+    if (sim == NULL || value == NULL)
+        return FRICREG_ENULL;
+    size_t slot = 0;
+    if (fr_system_param(sim->sys.type, param, &slot) == NULL)
+        return FRICREG_EINVAL;
+    *value = sim->sys.p[slot];
     return FRICREG_OK;
 }
 
@@ -379,7 +390,9 @@ static int step_failure(fricreg_sim *sim, int gsl_status)
 /* One fixed step of size h. GSL's implicit and multistep steppers fail a step when their
  * Newton or corrector iteration does not converge, which happens at an exact stick, where the
  * velocity sits at the rounding floor; such a step is retried as two half steps, down to
- * h / 2^MAX_HALVINGS, so the run keeps the caller's step grid. Explicit steppers never fail. */
+ * h / 2^MAX_HALVINGS, so the run keeps the caller's step grid. Explicit steppers never fail.
+ * Each retried step counts as rejected (FRICREG_SIM_STAT_REJECTED_STEPS), as GSL counts the
+ * adaptive control's retries. */
 #define MAX_HALVINGS 10
 static int apply_fixed_step(fricreg_sim *sim, gsl_odeiv2_driver *d,
                             const struct fr_integrator *integ, double h, int depth)
@@ -388,6 +401,7 @@ static int apply_fixed_step(fricreg_sim *sim, gsl_odeiv2_driver *d,
     int status = gsl_odeiv2_evolve_apply_fixed_step(d->e, NULL, d->s, d->sys, &sim->t, h, y);
     if (status != GSL_FAILURE || depth == MAX_HALVINGS || sim->rhs_status != FRICREG_OK)
         return status;
+    sim->rejected_steps++;
     sim->t = t0; /* GSL leaves t and y unchanged on failure */
     gsl_odeiv2_step_reset(d->s);
     status = apply_fixed_step(sim, d, integ, 0.5 * h, depth + 1);
@@ -496,6 +510,7 @@ int fricreg_sim_run(fricreg_sim *sim, double t_end)
     if (d == NULL)
         return sim_fail(sim, FRICREG_ENOMEM, "run: GSL driver allocation failed");
     status = integrate(sim, d, integ, t_end, cycles);
+    sim->rejected_steps += (int64_t)d->e->failed_steps; /* the adaptive control's rejections */
     gsl_odeiv2_driver_free(d);
     return status;
 }
@@ -534,6 +549,20 @@ int fricreg_sim_get_value(const fricreg_sim *sim, int which, double *value)
     case FRICREG_VALUE_RHS_EVALS: *value = (double)sim->rhs_evals; break;
     case FRICREG_VALUE_CYCLES: *value = (double)sim->cycles; break;
     case FRICREG_VALUE_DISSIPATION: *value = sim->y ? sim->y[2 * sim->ndof] : 0.0; break;
+    default: return FRICREG_EINVAL;
+    }
+    return FRICREG_OK;
+}
+
+int fricreg_sim_get_stat(const fricreg_sim *sim, int which, int64_t *value)
+{
+    if (sim == NULL || value == NULL)
+        return FRICREG_ENULL;
+    switch (which) {
+    case FRICREG_SIM_STAT_STEPS: *value = sim->steps; break;
+    case FRICREG_SIM_STAT_RHS_EVALS: *value = sim->rhs_evals; break;
+    case FRICREG_SIM_STAT_CYCLES: *value = (int64_t)sim->cycles; break;
+    case FRICREG_SIM_STAT_REJECTED_STEPS: *value = sim->rejected_steps; break;
     default: return FRICREG_EINVAL;
     }
     return FRICREG_OK;

@@ -33,7 +33,7 @@ struct fricreg_sim {
     double *jac_work;       /* [3 (2 ndof + 1)] finite-difference Jacobian scratch */
     size_t cycles;
     double t;
-    int64_t steps, rhs_evals;
+    int64_t steps, rhs_evals, rejected_steps; /* enum fricreg_sim_stat */
     int rhs_status;   /* fricreg status raised inside the right-hand side */
     size_t bad_contact; /* with FRICREG_ENONFINITE: the first contact that overflowed */
 

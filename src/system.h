@@ -21,7 +21,7 @@ struct fr_param_spec {
     const char *name;           /* the paper's symbol, for messages: "omega" */
     double paper_value;         /* the default: the paper's value (its one home) */
     int (*valid)(double value); /* NULL: any finite value */
-    const char *rule;           /* what valid() demands, completing "omega = -1 ...": "must be > 0" */
+    const char *rule;           /* what valid() demands, after "omega = -1": "must be > 0" */
 };
 
 struct fr_system;
