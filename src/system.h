@@ -15,6 +15,9 @@
 
 #define FR_MAX_PARAMS 8 /* parameters of one system (the oscillator has 5) */
 
+/* In each system's file: its table fits struct fr_system (C99 has no static_assert). */
+#define FR_CHECK_NPARAMS(n) typedef char fr_nparams_fit[(n) <= FR_MAX_PARAMS ? 1 : -1]
+
 /* One parameter a system reads: its row in the system's parameter table. */
 struct fr_param_spec {
     int param;                  /* enum fricreg_param */

@@ -9,6 +9,7 @@
 #include "system.h"
 
 enum { N, A, OMEGA, NPARAMS };
+FR_CHECK_NPARAMS(NPARAMS);
 
 #define MAX_BLOCKS 1e7
 

@@ -6,6 +6,7 @@
 #include "system.h"
 
 enum { A, OMEGA, MUN, X0, V0, NPARAMS };
+FR_CHECK_NPARAMS(NPARAMS);
 
 /* The paper's values (spec: reference system 1, Sec. 3.1.1). */
 static const struct fr_param_spec params[NPARAMS] = {

@@ -8,6 +8,7 @@
 #include "system.h"
 
 enum { K, MU1, MU2, BELT_AMP, BELT_OMEGA, NPARAMS };
+FR_CHECK_NPARAMS(NPARAMS);
 
 /* The paper's values (spec: reference system 3, Sec. 3.3). */
 static const struct fr_param_spec params[NPARAMS] = {
