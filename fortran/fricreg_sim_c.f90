@@ -6,7 +6,8 @@
 ! include/fricreg_sim.h apply unchanged. The idiomatic layer is type fricreg_simulation in
 ! module fricreg. Built only with the drivers (FRICREG_DRIVERS).
 module fricreg_sim_c
-  use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_ptr, c_funptr, c_char
+  use, intrinsic :: iso_c_binding, only: c_int, c_int64_t, c_double, c_size_t, c_ptr, c_funptr, &
+                                         c_char
   implicit none
   public
 
@@ -176,6 +177,24 @@ module fricreg_sim_c
       character(kind=c_char), intent(inout) :: buf(*)
       integer(c_size_t), value :: len
       integer(c_size_t) :: fricreg_sim_errmsg_copy
+    end function
+
+    !> The value in use of a system parameter: the paper's default or the value set.
+    function fricreg_sim_get_param(sim, param, value) bind(C, name='fricreg_sim_get_param')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: sim
+      integer(c_int), value :: param
+      real(c_double), intent(inout) :: value ! written only on success
+      integer(c_int) :: fricreg_sim_get_param
+    end function
+
+    !> One integer counter of the last run (FRICREG_SIM_STAT_*).
+    function fricreg_sim_get_stat(sim, which, value) bind(C, name='fricreg_sim_get_stat')
+      import :: c_int, c_int64_t, c_ptr
+      type(c_ptr), value :: sim
+      integer(c_int), value :: which
+      integer(c_int64_t), intent(inout) :: value ! written only on success
+      integer(c_int) :: fricreg_sim_get_stat
     end function
   end interface
 

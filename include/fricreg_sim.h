@@ -35,8 +35,9 @@ enum fricreg_system {
     FRICREG_SYSTEM_TWOBLOCK = 3
 };
 
-/** System parameters for fricreg_sim_set_param. Values are fixed forever. Which system reads
- *  which is listed at each; setting one the system does not read is FRICREG_EINVAL. */
+/** System parameters for fricreg_sim_set_param and fricreg_sim_get_param. Values are fixed
+ *  forever. Which system reads which is listed at each; setting or reading one the system
+ *  does not read is FRICREG_EINVAL. */
 enum fricreg_param {
     FRICREG_PARAM_A = 1,          /**< forcing amplitude a (oscillator, chain), finite */
     FRICREG_PARAM_OMEGA = 2,      /**< forcing frequency omega > 0 (oscillator, chain) */
@@ -96,6 +97,16 @@ FRICREG_API void fricreg_sim_free(fricreg_sim *sim);
  *  Discards any results. Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for a parameter
  *  the system does not have or a value out of its range; FRICREG_ENONFINITE. */
 FRICREG_API int fricreg_sim_set_param(fricreg_sim *sim, int param, double value);
+
+/** Read the value in use of one system parameter (enum fricreg_param): the paper's default
+ *  (enum fricreg_system) or the value last set by fricreg_sim_set_param. The chain's n reads
+ *  as an exact integer-valued double.
+ *  sim    in: the simulation; not modified (errcode and errmsg included).
+ *  param  in: the parameter; the system must read it (see enum fricreg_param).
+ *  value  out: the value; written only on success.
+ *  Returns FRICREG_OK; FRICREG_ENULL if sim or value is NULL; FRICREG_EINVAL for a parameter
+ *  the system does not read or an unknown one. Since ABI 1.1. */
+FRICREG_API int fricreg_sim_get_param(const fricreg_sim *sim, int param, double *value);
 
 /** Select the friction law (enum fricreg_law) and eps > 0; eps = 0 selects the paper's rule,
  *  recomputed from dt: eps = 2 dt (oscillator, twoblock), eps = 10 omega dt (chain).
@@ -160,7 +171,9 @@ FRICREG_API size_t fricreg_sim_ndof(const fricreg_sim *sim);
 /** Number of contacts: 1, n or 2. 0 if sim is NULL. */
 FRICREG_API size_t fricreg_sim_ncontacts(const fricreg_sim *sim);
 
-/** Quantities of a simulation, for fricreg_sim_get_value. Values are fixed forever. */
+/** Quantities of a simulation, for fricreg_sim_get_value. Values are fixed forever. The
+ *  counts (STEPS, RHS_EVALS, CYCLES) are also integer counters of fricreg_sim_get_stat, the
+ *  preferred form for them. */
 enum fricreg_sim_value {
     FRICREG_VALUE_TIME = 0,      /**< time reached by the last run */
     FRICREG_VALUE_EPS = 1,       /**< eps in use (after the paper's rule, if selected) */
@@ -172,9 +185,36 @@ enum fricreg_sim_value {
     FRICREG_VALUE_DISSIPATION = 7 /**< total dissipated energy D(t) of the last run */
 };
 
-/** Read one quantity (enum fricreg_sim_value) into *value (counts as exact doubles).
+/** Read one quantity (enum fricreg_sim_value) into *value (counts as exact doubles below
+ *  2^53; prefer fricreg_sim_get_stat for them).
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown quantity. */
 FRICREG_API int fricreg_sim_get_value(const fricreg_sim *sim, int which, double *value);
+
+/** Integer counters of the last run (zero before any run and after a setter discarded it),
+ *  for fricreg_sim_get_stat. Values are fixed forever. */
+enum fricreg_sim_stat {
+    /** Accepted steps. Fixed step: steps of size dt, GSL's rk4 step of 2 dt counting as two
+     *  (src/integrator.c), a cycle's shortened last step as a full one and a retried step
+     *  once. Adaptive: steps accepted by GSL's control. */
+    FRICREG_SIM_STAT_STEPS = 0,
+    /** Right-hand-side evaluations by the stepper, the Jacobian's differences included (the
+     *  observer's friction evaluations are not). */
+    FRICREG_SIM_STAT_RHS_EVALS = 1,
+    /** Whole forcing cycles completed: the length of fricreg_sim_get_dissipation's record. */
+    FRICREG_SIM_STAT_CYCLES = 2,
+    /** Steps tried, rejected and retried smaller. Adaptive: rejected by GSL's error control
+     *  or failed in the stepper (gsl_odeiv2_evolve's failed_steps). Fixed step: implicit or
+     *  multistep steps whose iteration failed, retried as two halves; 0 for explicit ones. */
+    FRICREG_SIM_STAT_REJECTED_STEPS = 3
+};
+
+/** Read one counter of the last run (enum fricreg_sim_stat).
+ *  sim    in: the simulation; not modified (errcode and errmsg included).
+ *  which  in: the counter.
+ *  value  out: the count; written only on success.
+ *  Returns FRICREG_OK; FRICREG_ENULL if sim or value is NULL; FRICREG_EINVAL for an unknown
+ *  counter. Since ABI 1.1. */
+FRICREG_API int fricreg_sim_get_stat(const fricreg_sim *sim, int which, int64_t *value);
 
 /** Copy the state at the end of the last run: x[ndof] positions, v[ndof] velocities (body
  *  coordinates: x for the oscillator, u_i for the chain, x1, x2 for the two blocks).

@@ -1,4 +1,4 @@
-/* sim.c — fricreg_sim: runs a reference system (systems.c) on GSL's gsl_odeiv2 steppers.
+/* sim.c — fricreg_sim: runs a reference system (system.h) on GSL's gsl_odeiv2 steppers.
  *
  * The state is y = (x, v, D): body positions, velocities and the dissipated energy, all
  * advanced by the same scheme. Each forcing cycle is integrated to its exact end, so D per
@@ -12,6 +12,7 @@
 #include <gsl/gsl_math.h>
 #include <gsl/gsl_odeiv2.h>
 
+#include "fr_math.h"
 #include "gsl_guard.h"
 #include "integrator.h"
 #include "law.h"
@@ -19,7 +20,7 @@
 
 #define MAX_GSL_STEPS 2147483648.0 /* 2^31 fixed steps in one run */
 #define MAX_CYCLES 1e9              /* forcing cycles recorded in one run */
-#define STATE_LIMIT 1e100          /* |state| beyond this: diverged (first_nonfinite) */
+#define STATE_LIMIT 1e100          /* |state| beyond this: diverged (first_diverged) */
 #define STOP_REQUESTED (-1)         /* the observer asked to stop: not an error */
 
 #define sim_fail(sim, ...) fr_error_set(&(sim)->err, __VA_ARGS__)
@@ -44,7 +45,7 @@ static void free_run(fricreg_sim *sim)
     sim->stick_time = sim->stick_fraction = sim->D = NULL;
     sim->ndof = sim->m = sim->cycles = 0;
     sim->t = 0.0;
-    sim->steps = sim->rhs_evals = 0;
+    sim->steps = sim->rhs_evals = sim->rejected_steps = 0;
 }
 
 void fricreg_sim_free(fricreg_sim *sim)
@@ -59,18 +60,13 @@ int fricreg_sim_create(int system, fricreg_sim **out)
 {
     if (out == NULL)
         return FRICREG_ENULL;
-    if (system < FRICREG_SYSTEM_OSCILLATOR || system > FRICREG_SYSTEM_TWOBLOCK)
+    const struct fr_system_type *type = fr_system_type_find(system);
+    if (type == NULL)
         return FRICREG_EINVAL;
     fricreg_sim *sim = calloc(1, sizeof *sim);
     if (sim == NULL)
         return FRICREG_ENOMEM;
-    sim->system = system;
-    /* The paper's values (spec: reference systems 1-3). */
-    sim->p = (struct fr_params){.a = system == FRICREG_SYSTEM_CHAIN ? 0.25 : 0.0,
-                                .omega = system == FRICREG_SYSTEM_CHAIN ? 0.5 : 1.0,
-                                .mun = 1.0, .x0 = 2.75, .v0 = 0.0, .n = 32,
-                                .k = 2.0, .mu1 = 0.5, .mu2 = 0.25,
-                                .belt_amp = 1.0, .belt_omega = 0.5};
+    fr_system_init(&sim->sys, type); /* the paper's parameters */
     sim->law = FRICREG_LAW_QUINN;
     sim->partition = FRICREG_PARTITION_CONSISTENT;
     sim->eps_set = 0.0;
@@ -80,17 +76,50 @@ int fricreg_sim_create(int system, fricreg_sim **out)
     return FRICREG_OK;
 }
 
+/* Records why `param` = value was refused: not finite, not read by this system, or outside
+ * the range of the system's table row `spec`. */
+static int reject_param(fricreg_sim *sim, int param, double value,
+                        const struct fr_param_spec *spec)
+{
+    const char *name = fr_param_name(param);
+    char label[32];
+    if (name == NULL)
+        snprintf(label, sizeof label, "parameter %d", param);
+    else
+        snprintf(label, sizeof label, "%s", name);
+    if (!isfinite(value))
+        return sim_fail(sim, FRICREG_ENONFINITE, "set_param: %s = %g is not finite", label,
+                        value);
+    if (name == NULL)
+        return sim_fail(sim, FRICREG_EINVAL, "set_param: %s = %g is not a known parameter",
+                        label, value);
+    if (spec == NULL)
+        return sim_fail(sim, FRICREG_EINVAL, "set_param: %s = %g is not a parameter of the %s",
+                        label, value, sim->sys.type->name);
+    return sim_fail(sim, FRICREG_EINVAL, "set_param: %s = %g %s", label, value, spec->rule);
+}
+
 int fricreg_sim_set_param(fricreg_sim *sim, int param, double value)
 {
     if (sim == NULL)
         return FRICREG_ENULL;
-    struct fr_params p = sim->p;
-    const char *why = "";
-    int status = fr_system_set_param(&p, sim->system, param, value, &why);
-    if (status != FRICREG_OK)
-        return sim_fail(sim, status, "set_param: parameter %d = %g %s", param, value, why);
+    size_t slot = 0;
+    const struct fr_param_spec *spec = fr_system_param(sim->sys.type, param, &slot);
+    if (spec == NULL || !isfinite(value) || (spec->valid && !spec->valid(value)))
+        return reject_param(sim, param, value, spec);
     free_run(sim);
-    sim->p = p;
+    sim->sys.p[slot] = value;
+    return FRICREG_OK;
+}
+
+int fricreg_sim_get_param(const fricreg_sim *sim, int param, double *value)
+{
+    if (sim == NULL || value == NULL)
+        return FRICREG_ENULL;
+    size_t slot = 0;
+    if (fr_system_param(sim->sys.type, param, &slot) == NULL)
+        return FRICREG_EINVAL;
+    *value = sim->sys.p[slot];
     return FRICREG_OK;
 }
 
@@ -157,20 +186,32 @@ static int adaptive(const fricreg_sim *sim)
     return sim->rtol > 0.0 || sim->atol > 0.0;
 }
 
+static double period(const fricreg_sim *sim)
+{
+    return sim->sys.type->period(&sim->sys);
+}
+
+/* The eps set by fricreg_sim_set_law, or the paper's rule for the current dt. */
+static double eps_in_use(const fricreg_sim *sim)
+{
+    return sim->eps_set > 0.0 ? sim->eps_set : sim->sys.type->paper_eps(&sim->sys, sim->dt);
+}
+
 /* ---- Right-hand side and Jacobian for GSL ------------------------------------------------ */
 
 /* Contact kinematics and friction at (t, x, v), into sim->zdot, a_free, f (and f_eq). */
 static int eval_friction(fricreg_sim *sim, double t, const double y[], int want_feq)
 {
     const double *x = y, *v = y + sim->ndof;
-    fr_system_contacts(sim, t, x, v, sim->zdot, sim->a_free);
+    sim->sys.type->contacts(&sim->sys, t, x, v, sim->zdot, sim->a_free);
     return fricreg_ctx_eval(sim->ctx, sim->m, sim->zdot, sim->a_free, sim->f,
                             want_feq ? sim->f_eq : NULL);
 }
 
-/* The first component of y that is not finite or beyond STATE_LIMIT: no motion of these
- * systems comes near it, so it is an unstable step on its way to overflow. */
-static size_t first_nonfinite(const double y[], size_t dim)
+/* The first component of y that has diverged: not finite or beyond STATE_LIMIT, which no
+ * motion of these systems comes near, so an unstable step on its way to overflow. dim if
+ * none has. */
+static size_t first_diverged(const double y[], size_t dim)
 {
     size_t k = 0;
     while (k < dim && fabs(y[k]) <= STATE_LIMIT)
@@ -210,11 +251,11 @@ static int rhs(double t, const double y[], double dydt[], void *params)
         return GSL_EBADFUNC; /* GSL stops the step at once */
     }
     memcpy(dydt, y + n, n * sizeof *dydt);
-    fr_system_accelerations(sim, t, y, sim->a_free, sim->f, dydt + n);
+    sim->sys.type->accelerations(&sim->sys, t, y, sim->a_free, sim->f, dydt + n);
     double power = 0.0;
     for (size_t i = 0; i < sim->m; i++)
         power += sim->zdot[i] * sim->f[i];
-    dydt[2 * n] = -fr_system_dissipation_weight(sim) * power;
+    dydt[2 * n] = -sim->sys.type->dissipation_weight(&sim->sys) * power;
     return GSL_SUCCESS;
 }
 
@@ -250,7 +291,7 @@ static int jacobian(double t, const double y[], double *dfdy, double dfdt[], voi
 
 static int alloc_run(fricreg_sim *sim, size_t cycles)
 {
-    size_t n = fr_system_ndof(sim), m = n;
+    size_t n = sim->sys.type->ndof(&sim->sys), m = sim->sys.type->ncontacts(&sim->sys);
     sim->ndof = n;
     sim->m = m;
     sim->y = malloc((2 * n + 1) * sizeof *sim->y);
@@ -271,7 +312,7 @@ static int alloc_run(fricreg_sim *sim, size_t cycles)
     if (status == FRICREG_OK)
         status = fricreg_ctx_set_partition(sim->ctx, sim->partition);
     if (status == FRICREG_OK)
-        status = fr_system_configure(sim);
+        status = sim->sys.type->configure(&sim->sys, sim->ctx);
     if (status != FRICREG_OK)
         return sim_fail(sim, status, "run: %s",
                         sim->ctx ? fricreg_ctx_errmsg(sim->ctx) : fricreg_strerror(status));
@@ -295,7 +336,7 @@ static int check_step(fricreg_sim *sim, const struct fr_integrator *integ)
                         "run: dt = %g too large for the stick zone: its stiffness %g gives "
                         "dt*lambda = %g > %g, the stability bound of %s; reduce dt or raise eps",
                         sim->dt, lambda, sim->dt * lambda, integ->real_axis_bound, integ->name);
-    double omega = fr_system_max_frequency(sim);
+    double omega = sim->sys.type->max_frequency(&sim->sys);
     if (integ->imag_axis_bound > 0.0 && sim->dt * omega > integ->imag_axis_bound)
         return sim_fail(sim, FRICREG_ESTEP,
                         "run: dt = %g too large for the system's highest frequency %g: "
@@ -318,14 +359,15 @@ static int observe(fricreg_sim *sim)
 /* After a step from t_before: finiteness, near-stick time, the observer. */
 static int after_step(fricreg_sim *sim, double t_before)
 {
-    size_t k = first_nonfinite(sim->y, 2 * sim->ndof + 1);
+    size_t k = first_diverged(sim->y, 2 * sim->ndof + 1);
     char part[64];
     if (k <= 2 * sim->ndof)
         return sim_fail(sim, FRICREG_EDIVERGED,
                         "run: state diverged at t = %.17g (%s): the step is unstable; reduce dt",
                         sim->t, state_part(sim, k, part, sizeof part));
     double h = sim->t - t_before;
-    fr_system_contacts(sim, sim->t, sim->y, sim->y + sim->ndof, sim->zdot, sim->a_free);
+    sim->sys.type->contacts(&sim->sys, sim->t, sim->y, sim->y + sim->ndof, sim->zdot,
+                            sim->a_free);
     for (size_t i = 0; i < sim->m; i++)
         sim->stick_time[i] += fabs(sim->zdot[i]) < sim->eps ? h : 0.0;
     return sim->observer ? observe(sim) : FRICREG_OK;
@@ -348,7 +390,9 @@ static int step_failure(fricreg_sim *sim, int gsl_status)
 /* One fixed step of size h. GSL's implicit and multistep steppers fail a step when their
  * Newton or corrector iteration does not converge, which happens at an exact stick, where the
  * velocity sits at the rounding floor; such a step is retried as two half steps, down to
- * h / 2^MAX_HALVINGS, so the run keeps the caller's step grid. Explicit steppers never fail. */
+ * h / 2^MAX_HALVINGS, so the run keeps the caller's step grid. Explicit steppers never fail.
+ * Each retried step counts as rejected (FRICREG_SIM_STAT_REJECTED_STEPS), as GSL counts the
+ * adaptive control's retries. */
 #define MAX_HALVINGS 10
 static int apply_fixed_step(fricreg_sim *sim, gsl_odeiv2_driver *d,
                             const struct fr_integrator *integ, double h, int depth)
@@ -357,6 +401,7 @@ static int apply_fixed_step(fricreg_sim *sim, gsl_odeiv2_driver *d,
     int status = gsl_odeiv2_evolve_apply_fixed_step(d->e, NULL, d->s, d->sys, &sim->t, h, y);
     if (status != GSL_FAILURE || depth == MAX_HALVINGS || sim->rhs_status != FRICREG_OK)
         return status;
+    sim->rejected_steps++;
     sim->t = t0; /* GSL leaves t and y unchanged on failure */
     gsl_odeiv2_step_reset(d->s);
     status = apply_fixed_step(sim, d, integ, 0.5 * h, depth + 1);
@@ -406,17 +451,17 @@ static void close_cycle(fricreg_sim *sim, double period, double *D_start)
     }
 }
 
+/* Integrates the `cycles` whole forcing cycles within t_end, then the rest of the way. */
 static int integrate(fricreg_sim *sim, gsl_odeiv2_driver *d, const struct fr_integrator *integ,
-                     double t_end)
+                     double t_end, size_t cycles)
 {
-    double period = fr_system_period(sim), D_start = 0.0, h = sim->dt;
+    double T = period(sim), D_start = 0.0, h = sim->dt;
     int status = sim->observer ? observe(sim) : FRICREG_OK;
     for (size_t k = 1; status == FRICREG_OK && sim->t < t_end; k++) {
-        double boundary = (double)k * period;
-        int whole = boundary <= t_end * (1.0 + 1e-12);
-        status = advance(sim, d, integ, whole ? boundary : t_end, &h);
+        int whole = k <= cycles;
+        status = advance(sim, d, integ, whole ? (double)k * T : t_end, &h);
         if (status == FRICREG_OK && whole)
-            close_cycle(sim, period, &D_start);
+            close_cycle(sim, T, &D_start);
     }
     if (sim->cycles == 0 && sim->t > 0.0) /* no whole cycle: report over the whole run */
         for (size_t i = 0; i < sim->m; i++)
@@ -435,18 +480,18 @@ int fricreg_sim_run(fricreg_sim *sim, double t_end)
         return sim_fail(sim, FRICREG_EINVAL, "run: t_end = %g must be > 0", t_end);
     if (!adaptive(sim) && t_end / (sim->dt * integ->substeps) > MAX_GSL_STEPS)
         return sim_fail(sim, FRICREG_EINVAL, "run: t_end/dt = %g steps is too many", t_end / sim->dt);
-    double whole_cycles = floor(t_end / fr_system_period(sim) * (1.0 + 1e-12));
+    double whole_cycles = fr_whole_cycles(t_end, period(sim));
     if (whole_cycles > MAX_CYCLES)
         return sim_fail(sim, FRICREG_EINVAL, "run: t_end = %g spans more than 10^9 cycles", t_end);
     free_run(sim);
-    sim->eps = sim->eps_set > 0.0 ? sim->eps_set : fr_system_paper_eps(sim, sim->dt);
+    sim->eps = eps_in_use(sim);
     size_t cycles = (size_t)whole_cycles;
     int status = alloc_run(sim, cycles);
     if (status == FRICREG_OK)
         status = check_step(sim, integ);
     if (status != FRICREG_OK)
         return status;
-    fr_system_initial(sim, sim->y, sim->y + sim->ndof);
+    sim->sys.type->initial(&sim->sys, sim->y, sim->y + sim->ndof);
     sim->y[2 * sim->ndof] = 0.0;
     sim->rhs_status = FRICREG_OK;
 
@@ -464,7 +509,8 @@ int fricreg_sim_run(fricreg_sim *sim, double t_end)
     fr_gsl_restore(previous);
     if (d == NULL)
         return sim_fail(sim, FRICREG_ENOMEM, "run: GSL driver allocation failed");
-    status = integrate(sim, d, integ, t_end);
+    status = integrate(sim, d, integ, t_end, cycles);
+    sim->rejected_steps += (int64_t)d->e->failed_steps; /* the adaptive control's rejections */
     gsl_odeiv2_driver_free(d);
     return status;
 }
@@ -475,19 +521,19 @@ int fricreg_sim_run_cycles(fricreg_sim *sim, int cycles)
         return FRICREG_ENULL;
     if (cycles < 1)
         return sim_fail(sim, FRICREG_EINVAL, "run_cycles: cycles = %d must be >= 1", cycles);
-    return fricreg_sim_run(sim, cycles * fr_system_period(sim));
+    return fricreg_sim_run(sim, cycles * period(sim));
 }
 
 /* ---- Results ----------------------------------------------------------------------------- */
 
 size_t fricreg_sim_ndof(const fricreg_sim *sim)
 {
-    return sim ? fr_system_ndof(sim) : 0;
+    return sim ? sim->sys.type->ndof(&sim->sys) : 0;
 }
 
 size_t fricreg_sim_ncontacts(const fricreg_sim *sim)
 {
-    return fricreg_sim_ndof(sim); /* one contact per body in all three systems */
+    return sim ? sim->sys.type->ncontacts(&sim->sys) : 0;
 }
 
 int fricreg_sim_get_value(const fricreg_sim *sim, int which, double *value)
@@ -496,11 +542,9 @@ int fricreg_sim_get_value(const fricreg_sim *sim, int which, double *value)
         return FRICREG_ENULL;
     switch (which) {
     case FRICREG_VALUE_TIME: *value = sim->t; break;
-    case FRICREG_VALUE_EPS:
-        *value = sim->eps_set > 0.0 ? sim->eps_set : fr_system_paper_eps(sim, sim->dt);
-        break;
+    case FRICREG_VALUE_EPS: *value = eps_in_use(sim); break;
     case FRICREG_VALUE_DT: *value = sim->dt; break;
-    case FRICREG_VALUE_PERIOD: *value = fr_system_period(sim); break;
+    case FRICREG_VALUE_PERIOD: *value = period(sim); break;
     case FRICREG_VALUE_STEPS: *value = (double)sim->steps; break;
     case FRICREG_VALUE_RHS_EVALS: *value = (double)sim->rhs_evals; break;
     case FRICREG_VALUE_CYCLES: *value = (double)sim->cycles; break;
@@ -510,14 +554,28 @@ int fricreg_sim_get_value(const fricreg_sim *sim, int which, double *value)
     return FRICREG_OK;
 }
 
+int fricreg_sim_get_stat(const fricreg_sim *sim, int which, int64_t *value)
+{
+    if (sim == NULL || value == NULL)
+        return FRICREG_ENULL;
+    switch (which) {
+    case FRICREG_SIM_STAT_STEPS: *value = sim->steps; break;
+    case FRICREG_SIM_STAT_RHS_EVALS: *value = sim->rhs_evals; break;
+    case FRICREG_SIM_STAT_CYCLES: *value = (int64_t)sim->cycles; break;
+    case FRICREG_SIM_STAT_REJECTED_STEPS: *value = sim->rejected_steps; break;
+    default: return FRICREG_EINVAL;
+    }
+    return FRICREG_OK;
+}
+
 int fricreg_sim_get_state(const fricreg_sim *sim, size_t ndof, double x[], double v[])
 {
     if (sim == NULL || x == NULL || v == NULL)
         return FRICREG_ENULL;
-    if (ndof != fr_system_ndof(sim))
+    if (ndof != fricreg_sim_ndof(sim))
         return FRICREG_ESIZE;
     if (sim->y == NULL) /* not run yet: the initial conditions */
-        fr_system_initial(sim, x, v);
+        sim->sys.type->initial(&sim->sys, x, v);
     else {
         memcpy(x, sim->y, ndof * sizeof *x);
         memcpy(v, sim->y + ndof, ndof * sizeof *v);

@@ -66,6 +66,9 @@ START_TEST(test_null_simulation_is_rejected_everywhere)
     ck_assert_int_eq(fricreg_sim_run(NULL, 1.0), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_sim_run_cycles(NULL, 1), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_sim_get_value(NULL, FRICREG_VALUE_TIME, &d), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_sim_get_param(NULL, FRICREG_PARAM_A, &d), FRICREG_ENULL);
+    int64_t count = 0;
+    ck_assert_int_eq(fricreg_sim_get_stat(NULL, FRICREG_SIM_STAT_STEPS, &count), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_sim_get_state(NULL, 1, &x, &v), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_sim_get_dissipation(NULL, 1, &d), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_sim_get_stick_fraction(NULL, 1, &d), FRICREG_ENULL);
@@ -118,6 +121,31 @@ START_TEST(test_set_param_rejects_bad_parameter)
 }
 END_TEST
 
+/* The message names the parameter by its symbol, the value and the rule it breaks, or the
+ * system that does not read it (the CLI shows the part after "= "). */
+START_TEST(test_set_param_message_names_parameter_and_rule)
+{
+    static const struct { int system, param; double value; const char *msg; } cases[] = {
+        {FRICREG_SYSTEM_CHAIN, FRICREG_PARAM_OMEGA, -0.5, "set_param: omega = -0.5 must be > 0"},
+        {FRICREG_SYSTEM_CHAIN, FRICREG_PARAM_N, 2.5,
+         "set_param: n = 2.5 must be an integer from 2 to 10^7"},
+        {FRICREG_SYSTEM_TWOBLOCK, FRICREG_PARAM_MU2, -0.25, "set_param: mu2 = -0.25 must be >= 0"},
+        {FRICREG_SYSTEM_CHAIN, FRICREG_PARAM_K, 2.385,
+         "set_param: k = 2.385 is not a parameter of the chain"},
+        {FRICREG_SYSTEM_OSCILLATOR, 99, 2.385,
+         "set_param: parameter 99 = 2.385 is not a known parameter"},
+        {FRICREG_SYSTEM_OSCILLATOR, FRICREG_PARAM_X0, INFINITY,
+         "set_param: x0 = inf is not finite"},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        fricreg_sim *sim = make(cases[k].system);
+        ck_assert_int_ne(fricreg_sim_set_param(sim, cases[k].param, cases[k].value), FRICREG_OK);
+        ck_assert_str_eq(fricreg_sim_errmsg(sim), cases[k].msg);
+        fricreg_sim_free(sim);
+    }
+}
+END_TEST
+
 /* A rejected value changes nothing: the chain keeps n = 32 and period 2 pi/0.5. */
 START_TEST(test_failed_set_param_keeps_parameters)
 {
@@ -126,6 +154,11 @@ START_TEST(test_failed_set_param_keeps_parameters)
     expect_failure(sim, fricreg_sim_set_param(sim, FRICREG_PARAM_N, 2.5), FRICREG_EINVAL);
     ck_assert_uint_eq(fricreg_sim_ndof(sim), 32);
     ck_assert_double_eq_tol(value(sim, FRICREG_VALUE_PERIOD), 4.0 * PI, 1e-14);
+    double n = 0.0, omega = 0.0;
+    ck_assert_int_eq(fricreg_sim_get_param(sim, FRICREG_PARAM_N, &n), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_get_param(sim, FRICREG_PARAM_OMEGA, &omega), FRICREG_OK);
+    ck_assert_double_eq(n, 32.0);
+    ck_assert_double_eq(omega, 0.5);
     fricreg_sim_free(sim);
 }
 END_TEST
@@ -490,6 +523,192 @@ START_TEST(test_fixed_step_stepper_holds_the_stick)
 }
 END_TEST
 
+/* ---- get_param ----------------------------------------------------------------------------- */
+
+#define NPARAMS 11 /* enum fricreg_param: 1 … 11 */
+
+struct paper_value {
+    int system, param;
+    double value;
+};
+
+/* The header's defaults (enum fricreg_system), the paper's values: every parameter each system
+ * reads, and no other. */
+static const struct paper_value paper_values[] = {
+    {FRICREG_SYSTEM_OSCILLATOR, FRICREG_PARAM_A, 0.0},
+    {FRICREG_SYSTEM_OSCILLATOR, FRICREG_PARAM_OMEGA, 1.0},
+    {FRICREG_SYSTEM_OSCILLATOR, FRICREG_PARAM_MUN, 1.0},
+    {FRICREG_SYSTEM_OSCILLATOR, FRICREG_PARAM_X0, 2.75},
+    {FRICREG_SYSTEM_OSCILLATOR, FRICREG_PARAM_V0, 0.0},
+    {FRICREG_SYSTEM_CHAIN, FRICREG_PARAM_N, 32.0},
+    {FRICREG_SYSTEM_CHAIN, FRICREG_PARAM_A, 0.25},
+    {FRICREG_SYSTEM_CHAIN, FRICREG_PARAM_OMEGA, 0.5},
+    {FRICREG_SYSTEM_TWOBLOCK, FRICREG_PARAM_K, 2.0},
+    {FRICREG_SYSTEM_TWOBLOCK, FRICREG_PARAM_MU1, 0.5},
+    {FRICREG_SYSTEM_TWOBLOCK, FRICREG_PARAM_MU2, 0.25},
+    {FRICREG_SYSTEM_TWOBLOCK, FRICREG_PARAM_BELT_AMP, 1.0},
+    {FRICREG_SYSTEM_TWOBLOCK, FRICREG_PARAM_BELT_OMEGA, 0.5},
+};
+
+/* The paper's value of `param` in `system`, or NAN if the system does not read it. */
+static double paper_default(int system, int param)
+{
+    for (size_t k = 0; k < sizeof paper_values / sizeof paper_values[0]; k++)
+        if (paper_values[k].system == system && paper_values[k].param == param)
+            return paper_values[k].value;
+    return NAN;
+}
+
+/* Header: get_param reads the paper's default of every parameter the system reads, and
+ * answers FRICREG_EINVAL, leaving *value alone, for each one it does not (0, 12 and -1 are
+ * no parameter at all). A getter records no error. */
+START_TEST(test_get_param_reads_the_papers_defaults)
+{
+    const int system = FRICREG_SYSTEM_OSCILLATOR + _i;
+    fricreg_sim *sim = make(system);
+    for (int param = -1; param <= NPARAMS + 1; param++) {
+        double expected = paper_default(system, param), out = 2.385;
+        int status = fricreg_sim_get_param(sim, param, &out);
+        if (isnan(expected)) {
+            ck_assert_msg(status == FRICREG_EINVAL, "system %d, param %d: %d", system, param,
+                          status);
+            ck_assert_double_eq(out, 2.385);
+        } else {
+            ck_assert_int_eq(status, FRICREG_OK);
+            ck_assert_double_eq(out, expected);
+        }
+    }
+    ck_assert_int_eq(fricreg_sim_get_param(sim, FRICREG_PARAM_A, NULL), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_sim_errcode(sim), FRICREG_OK);
+    fricreg_sim_free(sim);
+}
+END_TEST
+
+/* get_param reads back what set_param stored, for every parameter of every system; a rejected
+ * set_param leaves the value read before it. Values: 2.385 + k/8 (exact in binary), 17 for n. */
+START_TEST(test_get_param_reads_back_set_values)
+{
+    for (size_t k = 0; k < sizeof paper_values / sizeof paper_values[0]; k++) {
+        const struct paper_value *pv = &paper_values[k];
+        fricreg_sim *sim = make(pv->system);
+        double set = pv->param == FRICREG_PARAM_N ? 17.0 : 2.385 + (double)k / 8.0, out = NAN;
+        ck_assert_int_eq(fricreg_sim_set_param(sim, pv->param, set), FRICREG_OK);
+        ck_assert_int_eq(fricreg_sim_get_param(sim, pv->param, &out), FRICREG_OK);
+        ck_assert_double_eq(out, set);
+        ck_assert_int_ne(fricreg_sim_set_param(sim, pv->param, NAN), FRICREG_OK);
+        ck_assert_int_eq(fricreg_sim_get_param(sim, pv->param, &out), FRICREG_OK);
+        ck_assert_double_eq(out, set);
+        fricreg_sim_free(sim);
+    }
+}
+END_TEST
+
+/* ---- get_stat ------------------------------------------------------------------------------ */
+
+static int64_t counter(const fricreg_sim *sim, int which)
+{
+    int64_t out = -1;
+    ck_assert_int_eq(fricreg_sim_get_stat(sim, which, &out), FRICREG_OK);
+    return out;
+}
+
+/* Header: FRICREG_EINVAL for an unknown counter (valid 0 … 3), FRICREG_ENULL for a NULL value;
+ * *value untouched on failure, no error recorded. Before any run every counter is 0. */
+START_TEST(test_get_stat_rejects_unknown_counter)
+{
+    fricreg_sim *sim = make(FRICREG_SYSTEM_TWOBLOCK);
+    static const int bad[] = {-1, 4, 1000};
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        int64_t out = 2385;
+        ck_assert_int_eq(fricreg_sim_get_stat(sim, bad[k], &out), FRICREG_EINVAL);
+        ck_assert_int_eq(out, 2385);
+    }
+    ck_assert_int_eq(fricreg_sim_get_stat(sim, FRICREG_SIM_STAT_STEPS, NULL), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_sim_errcode(sim), FRICREG_OK);
+    for (int which = FRICREG_SIM_STAT_STEPS; which <= FRICREG_SIM_STAT_REJECTED_STEPS; which++)
+        ck_assert_int_eq(counter(sim, which), 0);
+    fricreg_sim_free(sim);
+}
+END_TEST
+
+/* Fixed-step RK4 over 3.5 cycles of the oscillator with omega = 1.2385, dt = 0.01: the period
+ * T = 2 pi/1.2385 = 5.07326 is ceil(T/0.02) = ceil(253.66) = 254 GSL rk4 steps of 2 dt per
+ * cycle (the last shortened to end on the boundary), and the half cycle after the third is
+ * ceil(126.83) = 127: 3 * 254 + 127 = 889 GSL steps, counted as 2 steps of dt each,
+ * STEPS = 1778; each costs 8 evaluations (test_chain.c), RHS_EVALS = 7112; CYCLES =
+ * floor(3.5) = 3; an explicit stepper never fails a step, REJECTED_STEPS = 0. The double
+ * forms of get_value agree, and a setter zeroes every counter. */
+START_TEST(test_fixed_rk4_counts_match_the_step_grid)
+{
+    fricreg_sim *sim = make(FRICREG_SYSTEM_OSCILLATOR);
+    ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_OMEGA, 1.2385), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run(sim, 3.5 * 2.0 * PI / 1.2385), FRICREG_OK);
+    ck_assert_int_eq(counter(sim, FRICREG_SIM_STAT_STEPS), 1778);
+    ck_assert_int_eq(counter(sim, FRICREG_SIM_STAT_RHS_EVALS), 7112);
+    ck_assert_int_eq(counter(sim, FRICREG_SIM_STAT_CYCLES), 3);
+    ck_assert_int_eq(counter(sim, FRICREG_SIM_STAT_REJECTED_STEPS), 0);
+    ck_assert_double_eq(value(sim, FRICREG_VALUE_STEPS), 1778.0);
+    ck_assert_double_eq(value(sim, FRICREG_VALUE_RHS_EVALS), 7112.0);
+    ck_assert_double_eq(value(sim, FRICREG_VALUE_CYCLES), 3.0);
+    ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_X0, 2.385), FRICREG_OK);
+    for (int which = FRICREG_SIM_STAT_STEPS; which <= FRICREG_SIM_STAT_REJECTED_STEPS; which++)
+        ck_assert_int_eq(counter(sim, which), 0);
+    fricreg_sim_free(sim);
+}
+END_TEST
+
+static int count_calls(void *user, double t, size_t ndof, const double x[], const double v[],
+                       size_t m, const double f[], const double f_eq[])
+{
+    (void)t, (void)ndof, (void)x, (void)v, (void)m, (void)f, (void)f_eq;
+    ++*(int64_t *)user;
+    return 0;
+}
+
+/* Adaptive rkf45 (GSL 2.7): each attempt at a step, accepted or rejected, evaluates the five
+ * stages after k1 and dydt at its end, which the next step reuses as its k1; only the first
+ * step evaluates its k1. So RHS_EVALS = 1 + 6 (STEPS + REJECTED_STEPS) exactly. An initial
+ * step dt = 1 against rtol = 1e-9 is rejected at once, so REJECTED_STEPS > 0; the observer,
+ * called at t = 0 and after every accepted step, counts STEPS + 1 calls. Forced oscillator,
+ * a = 0.6137, eps = 0.02, 2 cycles. */
+START_TEST(test_adaptive_counts_rejected_steps)
+{
+    fricreg_sim *sim = make(FRICREG_SYSTEM_OSCILLATOR);
+    int64_t calls = 0;
+    ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_A, 0.6137), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_QUINN, 0.02), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RKF45, 1.0, 1e-9, 1e-12),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_observer(sim, count_calls, &calls), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run_cycles(sim, 2), FRICREG_OK);
+    int64_t steps = counter(sim, FRICREG_SIM_STAT_STEPS);
+    int64_t rejected = counter(sim, FRICREG_SIM_STAT_REJECTED_STEPS);
+    ck_assert_int_gt(rejected, 0);
+    ck_assert_int_eq(counter(sim, FRICREG_SIM_STAT_RHS_EVALS), 1 + 6 * (steps + rejected));
+    ck_assert_int_eq(calls, steps + 1);
+    ck_assert_int_eq(counter(sim, FRICREG_SIM_STAT_CYCLES), 2);
+    fricreg_sim_free(sim);
+}
+END_TEST
+
+/* A fixed-step multistep stepper whose corrector fails at the stick retries the step as two
+ * halves (REJECTED_STEPS > 0) and keeps the caller's grid: the unforced oscillator to t = 20
+ * with dt = 0.005 is 3 cycles of ceil(2 pi/0.005) = 1257 steps and ceil((20 - 6 pi)/0.005) =
+ * ceil(230.09) = 231 more, STEPS = 4002 whatever the retries. */
+START_TEST(test_fixed_step_retries_count_as_rejected)
+{
+    fricreg_sim *sim = make(FRICREG_SYSTEM_OSCILLATOR);
+    ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_QUINN, 0.02), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_MSADAMS, 0.005, 0.0, 0.0),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run(sim, 20.0), FRICREG_OK);
+    ck_assert_int_eq(counter(sim, FRICREG_SIM_STAT_STEPS), 4002);
+    ck_assert_int_gt(counter(sim, FRICREG_SIM_STAT_REJECTED_STEPS), 0);
+    ck_assert_int_eq(counter(sim, FRICREG_SIM_STAT_CYCLES), 3);
+    fricreg_sim_free(sim);
+}
+END_TEST
+
 static Suite *sim_api_suite(void)
 {
     Suite *s = suite_create("sim_api");
@@ -498,6 +717,7 @@ static Suite *sim_api_suite(void)
     tcase_add_test(errors, test_null_simulation_is_rejected_everywhere);
     tcase_add_loop_test(errors, test_set_param_rejects_bad_parameter, 0,
                         (int)(sizeof bad_params / sizeof bad_params[0]));
+    tcase_add_test(errors, test_set_param_message_names_parameter_and_rule);
     tcase_add_test(errors, test_failed_set_param_keeps_parameters);
     tcase_add_test(errors, test_set_law_rejects_bad_law_and_eps);
     tcase_add_test(errors, test_set_integrator_rejects_bad_settings);
@@ -516,6 +736,18 @@ static Suite *sim_api_suite(void)
     tcase_add_test(run, test_observer_stops_the_run_early);
     tcase_add_test(run, test_observer_stopping_at_start_is_ok);
     suite_add_tcase(s, run);
+
+    TCase *params = tcase_create("get_param");
+    tcase_add_loop_test(params, test_get_param_reads_the_papers_defaults, 0, 3);
+    tcase_add_test(params, test_get_param_reads_back_set_values);
+    suite_add_tcase(s, params);
+
+    TCase *stats = tcase_create("get_stat");
+    tcase_add_test(stats, test_get_stat_rejects_unknown_counter);
+    tcase_add_test(stats, test_fixed_rk4_counts_match_the_step_grid);
+    tcase_add_test(stats, test_adaptive_counts_rejected_steps);
+    tcase_add_test(stats, test_fixed_step_retries_count_as_rejected);
+    suite_add_tcase(s, stats);
 
     TCase *steppers = tcase_create("steppers");
     tcase_add_test(steppers, test_integrator_names_round_trip);

@@ -1,0 +1,90 @@
+/* system.h — internal: a reference system as a table of function pointers, one file each.
+ *
+ * As GSL's ode-initval2 has one file per stepper behind gsl_odeiv2_step_type, each system of
+ * the drivers is one file in src/systems/ defining one `const struct fr_system_type`, and
+ * systems.c maps enum fricreg_system onto them. A system is written as contacts
+ * zddot = a_free + W f (Sec. 3.3): it gives the contact velocities zdot and free
+ * accelerations a_free from the state, its W and bounds, and the body accelerations once the
+ * friction forces f are known. A new system is one new file and one entry in systems.c. */
+#ifndef FRICREG_SYSTEM_H
+#define FRICREG_SYSTEM_H
+
+#include <stddef.h>
+
+#include "fricreg_sim.h"
+
+#define FR_MAX_PARAMS 8 /* parameters of one system (the oscillator has 5) */
+
+/* In each system's file: its table fits struct fr_system (C99 has no static_assert). */
+#define FR_CHECK_NPARAMS(n) typedef char fr_nparams_fit[(n) <= FR_MAX_PARAMS ? 1 : -1]
+
+/* One parameter a system reads: its row in the system's parameter table. */
+struct fr_param_spec {
+    int param;                  /* enum fricreg_param */
+    const char *name;           /* the paper's symbol, for messages: "omega" */
+    double paper_value;         /* the default: the paper's value (its one home) */
+    int (*valid)(double value); /* NULL: any finite value */
+    const char *rule;           /* what valid() demands, after "omega = -1": "must be > 0" */
+};
+
+struct fr_system;
+
+/* A reference system. Every function reads the parameters from sys->p, in the order of
+ * `params`; array lengths are ndof(sys) for bodies and ncontacts(sys) for contacts. */
+struct fr_system_type {
+    int id;           /* enum fricreg_system */
+    const char *name; /* for messages: "oscillator" */
+    const struct fr_param_spec *params;
+    size_t nparams; /* <= FR_MAX_PARAMS */
+
+    size_t (*ndof)(const struct fr_system *sys);
+    size_t (*ncontacts)(const struct fr_system *sys);
+    /* The forcing period: cycles of the dissipation record. */
+    double (*period)(const struct fr_system *sys);
+    /* An upper bound of the highest natural frequency without friction (the step check). */
+    double (*max_frequency)(const struct fr_system *sys);
+    /* The paper's eps for the step dt. */
+    double (*paper_eps)(const struct fr_system *sys, double dt);
+    /* w in D = -w sum_i ∫ zdot_i f_i dt. */
+    double (*dissipation_weight)(const struct fr_system *sys);
+    /* Bounds and coupling W into a context of ncontacts(sys) contacts; a fricreg status. */
+    int (*configure)(const struct fr_system *sys, fricreg_ctx *ctx);
+    void (*initial)(const struct fr_system *sys, double x[], double v[]);
+    void (*contacts)(const struct fr_system *sys, double t, const double x[], const double v[],
+                     double zdot[], double a_free[]);
+    void (*accelerations)(const struct fr_system *sys, double t, const double x[],
+                          const double a_free[], const double f[], double acc[]);
+};
+
+/* One system with its parameter values. */
+struct fr_system {
+    const struct fr_system_type *type;
+    double p[FR_MAX_PARAMS]; /* in the order of type->params */
+};
+
+/* systems.c: the table of types and the parameter lookups. */
+
+/* The type of a system id (enum fricreg_system), or NULL if unknown. */
+const struct fr_system_type *fr_system_type_find(int id);
+
+/* A system of `type` with the paper's parameter values. */
+void fr_system_init(struct fr_system *sys, const struct fr_system_type *type);
+
+/* The row of `param` in the type's table and its index in p[] (*slot), or NULL if the system
+ * does not read it. */
+const struct fr_param_spec *fr_system_param(const struct fr_system_type *type, int param,
+                                            size_t *slot);
+
+/* The paper's symbol of a parameter of any system ("k"), or NULL for an unknown one. */
+const char *fr_param_name(int param);
+
+/* Validity rules shared by the systems' tables. */
+int fr_param_positive(double value);    /* "must be > 0" */
+int fr_param_nonnegative(double value); /* "must be >= 0" */
+
+/* The three reference systems (src/systems/). */
+extern const struct fr_system_type fr_oscillator_type;
+extern const struct fr_system_type fr_chain_type;
+extern const struct fr_system_type fr_twoblock_type;
+
+#endif

@@ -1,0 +1,108 @@
+/* chain.c — the chain of Sec. 3.2: n blocks of mass 1/n joined by springs of stiffness n,
+ * block n tied to a wall, block 1 driven by a sin(omega t), every block on its own contact
+ * with mun = 1 and W = I. In the paper's scaling u_i'' = a_free_i + f_i with
+ * a_free = -n^2 K u + n G(t) e_1, K the tridiagonal (-1, 2, -1) stiffness with a free end at
+ * block 1, and the friction entering the energy as f_i/n. */
+#include <math.h>
+
+#include "fr_math.h"
+#include "system.h"
+
+enum { N, A, OMEGA, NPARAMS };
+FR_CHECK_NPARAMS(NPARAMS);
+
+#define MAX_BLOCKS 1e7
+
+/* n: an integer from 2 to 10^7. */
+static int valid_size(double value)
+{
+    return value >= 2.0 && value <= MAX_BLOCKS && value == floor(value);
+}
+
+/* The paper's values (spec: reference system 2, Sec. 3.2). */
+static const struct fr_param_spec params[NPARAMS] = {
+    [N] = {FRICREG_PARAM_N, "n", 32.0, valid_size, "must be an integer from 2 to 10^7"},
+    [A] = {FRICREG_PARAM_A, "a", 0.25, NULL, NULL},
+    [OMEGA] = {FRICREG_PARAM_OMEGA, "omega", 0.5, fr_param_positive, "must be > 0"},
+};
+
+static size_t blocks(const struct fr_system *sys)
+{
+    return (size_t)sys->p[N];
+}
+
+static double period(const struct fr_system *sys)
+{
+    return FR_TWO_PI / sys->p[OMEGA];
+}
+
+/* n^2 K has its eigenvalues below 4 n^2: frequencies below 2n. */
+static double max_frequency(const struct fr_system *sys)
+{
+    return 2.0 * sys->p[N];
+}
+
+/* eps = 10 omega dt (Sec. 3.2). */
+static double paper_eps(const struct fr_system *sys, double dt)
+{
+    return 10.0 * sys->p[OMEGA] * dt;
+}
+
+/* D = -(1/n) sum_i ∫ u_i' f_i dt (Sec. 3.2). */
+static double weight(const struct fr_system *sys)
+{
+    return 1.0 / sys->p[N];
+}
+
+/* The context's defaults are the chain's: mun_i = 1 and W = I. */
+static int configure(const struct fr_system *sys, fricreg_ctx *ctx)
+{
+    (void)sys, (void)ctx;
+    return FRICREG_OK;
+}
+
+static void initial(const struct fr_system *sys, double x[], double v[])
+{
+    for (size_t i = 0; i < blocks(sys); i++)
+        x[i] = v[i] = 0.0;
+}
+
+static void contacts(const struct fr_system *sys, double t, const double u[], const double v[],
+                     double zdot[], double a_free[])
+{
+    size_t n = blocks(sys);
+    double n2 = (double)n * (double)n;
+    double G = sys->p[A] * sin(sys->p[OMEGA] * t);
+    for (size_t i = 0; i < n; i++)
+        zdot[i] = v[i];
+    a_free[0] = -n2 * (u[0] - u[1]) + (double)n * G;
+    for (size_t i = 1; i + 1 < n; i++)
+        a_free[i] = -n2 * (-u[i - 1] + 2.0 * u[i] - u[i + 1]);
+    a_free[n - 1] = -n2 * (-u[n - 2] + 2.0 * u[n - 1]);
+}
+
+/* Contacts at the bodies: u'' = a_free + f. */
+static void accelerations(const struct fr_system *sys, double t, const double u[],
+                          const double a_free[], const double f[], double acc[])
+{
+    (void)t, (void)u;
+    for (size_t i = 0; i < blocks(sys); i++)
+        acc[i] = a_free[i] + f[i];
+}
+
+const struct fr_system_type fr_chain_type = {
+    .id = FRICREG_SYSTEM_CHAIN,
+    .name = "chain",
+    .params = params,
+    .nparams = NPARAMS,
+    .ndof = blocks,
+    .ncontacts = blocks,
+    .period = period,
+    .max_frequency = max_frequency,
+    .paper_eps = paper_eps,
+    .dissipation_weight = weight,
+    .configure = configure,
+    .initial = initial,
+    .contacts = contacts,
+    .accelerations = accelerations,
+};

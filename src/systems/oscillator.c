@@ -1,0 +1,91 @@
+/* oscillator.c — the 1-dof oscillator of Eq. (5): x'' + x = f + a sin(omega t), one contact
+ * at the body with bound mun, so W = 1 and f_eq = x - a sin(omega t) = -a_free. */
+#include <math.h>
+
+#include "fr_math.h"
+#include "system.h"
+
+enum { A, OMEGA, MUN, X0, V0, NPARAMS };
+FR_CHECK_NPARAMS(NPARAMS);
+
+/* The paper's values (spec: reference system 1, Sec. 3.1.1). */
+static const struct fr_param_spec params[NPARAMS] = {
+    [A] = {FRICREG_PARAM_A, "a", 0.0, NULL, NULL},
+    [OMEGA] = {FRICREG_PARAM_OMEGA, "omega", 1.0, fr_param_positive, "must be > 0"},
+    [MUN] = {FRICREG_PARAM_MUN, "mun", 1.0, fr_param_nonnegative, "must be >= 0"},
+    [X0] = {FRICREG_PARAM_X0, "x0", 2.75, NULL, NULL},
+    [V0] = {FRICREG_PARAM_V0, "v0", 0.0, NULL, NULL},
+};
+
+static size_t one(const struct fr_system *sys)
+{
+    (void)sys;
+    return 1;
+}
+
+static double period(const struct fr_system *sys)
+{
+    return FR_TWO_PI / sys->p[OMEGA];
+}
+
+/* The spring alone: frequency 1. */
+static double max_frequency(const struct fr_system *sys)
+{
+    (void)sys;
+    return 1.0;
+}
+
+/* eps = 2 dt (Sec. 3.1). */
+static double paper_eps(const struct fr_system *sys, double dt)
+{
+    (void)sys;
+    return 2.0 * dt;
+}
+
+static double unit_weight(const struct fr_system *sys)
+{
+    (void)sys;
+    return 1.0;
+}
+
+static int configure(const struct fr_system *sys, fricreg_ctx *ctx)
+{
+    return fricreg_ctx_set_bounds(ctx, 1, &sys->p[MUN]); /* W = 1: the context's default */
+}
+
+static void initial(const struct fr_system *sys, double x[], double v[])
+{
+    x[0] = sys->p[X0];
+    v[0] = sys->p[V0];
+}
+
+static void contacts(const struct fr_system *sys, double t, const double x[], const double v[],
+                     double zdot[], double a_free[])
+{
+    zdot[0] = v[0];
+    a_free[0] = -x[0] + sys->p[A] * sin(sys->p[OMEGA] * t);
+}
+
+static void accelerations(const struct fr_system *sys, double t, const double x[],
+                          const double a_free[], const double f[], double acc[])
+{
+    (void)sys, (void)t, (void)x;
+    acc[0] = a_free[0] + f[0];
+}
+
+const struct fr_system_type fr_oscillator_type = {
+    .id = FRICREG_SYSTEM_OSCILLATOR,
+    .name = "oscillator",
+    .params = params,
+    .nparams = NPARAMS,
+    .ndof = one,
+    .ncontacts = one,
+    .period = period,
+    .max_frequency = max_frequency,
+    .paper_eps = paper_eps,
+    .dissipation_weight = unit_weight,
+    .configure = configure,
+    .initial = initial,
+    .contacts = contacts,
+    .accelerations = accelerations,
+};
