@@ -85,7 +85,10 @@ expect_usage_error "--law" exact --law coulomb
 expect_usage_error "--eps" exact --eps 0.02
 expect_usage_error "--eps" exact --eps=0.02
 expect_usage_error "--output" exact --output trajectory
+# A run length the solver refuses (more than 10^6 cycles): the option, then its message.
+expect_usage_error "^fricreg-sim: --cycles: .*cycles = 2000000 must be from 1 to 10^6$" exact --cycles 2000000
+expect_usage_error "^fricreg-sim: --t-end: .*t_end = 1e+300 .*more than 10^6$" exact --t-end 1e300
 
-total=45
+total=47
 echo "$((total - fails)) passed, $fails failed"
 [ $fails -eq 0 ]
