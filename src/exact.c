@@ -296,7 +296,12 @@ static int run_to(fricreg_exact *ex, double t_end)
         return status;
     }
     free(ex->ph);
-    *ex = work;
+    ex->t_end = work.t_end;
+    ex->ph = work.ph;
+    ex->n = work.n;
+    ex->cap = work.cap;
+    for (int k = 0; k < N_STATS; k++)
+        ex->stats[k] = work.stats[k];
     return FRICREG_OK;
 }
 

@@ -1112,9 +1112,19 @@ START_TEST(test_run_messages)
     expect_run_failure(ex, FRICREG_EINVAL, 1, -3, "run_cycles: cycles = -3 must be from 1 to 10^6");
     expect_run_failure(ex, FRICREG_EINVAL, 1, 1000001,
                        "run_cycles: cycles = 1000001 must be from 1 to 10^6");
+    /* Neither a success nor a getter's failure (const object) changes the last error. */
+    const char *last = "run_cycles: cycles = 1000001 must be from 1 to 10^6";
     ck_assert_int_eq(fricreg_exact_run_cycles(ex, 2), FRICREG_OK);
+    double x, v, frac, value;
+    int64_t count;
+    ck_assert_int_eq(fricreg_exact_state(ex, -1.0, &x, &v), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_exact_stick_fraction(ex, 2.0, 1.0, &frac), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_exact_switches(ex, 1000, NULL, NULL), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_exact_dissipation(ex, 1000, &x), FRICREG_ESIZE);
+    ck_assert_int_eq(fricreg_exact_get_value(ex, -1, &value), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_exact_get_stat(ex, -1, &count), FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_exact_errcode(ex), FRICREG_EINVAL);
-    ck_assert_str_eq(fricreg_exact_errmsg(ex), "run_cycles: cycles = 1000001 must be from 1 to 10^6");
+    ck_assert_str_eq(fricreg_exact_errmsg(ex), last);
     ck_assert_int_eq(fricreg_exact_run(NULL, 30.0), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_exact_run_cycles(NULL, 2), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_exact_errcode(NULL), FRICREG_OK);
@@ -1155,7 +1165,8 @@ START_TEST(test_getters_reject_bad_input)
     fricreg_exact *ex = solve(2.0, 0.5, 1.0, 0.0, 0.0, 30.0);
     double value = -2.385;
     int64_t count = -7;
-    ck_assert_int_eq(fricreg_exact_get_value(NULL, FRICREG_EXACT_VALUE_TIME, &value), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_exact_get_value(NULL, FRICREG_EXACT_VALUE_TIME, &value),
+                     FRICREG_ENULL);
     ck_assert_int_eq(fricreg_exact_get_value(ex, FRICREG_EXACT_VALUE_TIME, NULL), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_exact_get_stat(NULL, FRICREG_EXACT_STAT_ROOTS, &count), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_exact_get_stat(ex, FRICREG_EXACT_STAT_ROOTS, NULL), FRICREG_ENULL);

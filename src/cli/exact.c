@@ -30,8 +30,8 @@ static void oscillator_params(const struct cli_run *run, double *a, double *omeg
 static int run_failed(fricreg_exact *ex, int status, const struct cli_run *run)
 {
     int usage = status == FRICREG_EINVAL;
-    fprintf(stderr, "fricreg-sim: %s: %s\n",
-            usage ? (run->t_end > 0.0 ? "--t-end" : "--cycles") : "exact", fricreg_exact_errmsg(ex));
+    const char *what = usage ? (run->t_end > 0.0 ? "--t-end" : "--cycles") : "exact";
+    fprintf(stderr, "fricreg-sim: %s: %s\n", what, fricreg_exact_errmsg(ex));
     fricreg_exact_free(ex);
     return usage ? CLI_EXIT_USAGE : CLI_EXIT_RUN;
 }
@@ -60,7 +60,8 @@ int cli_exact_summary(const struct cli_run *run, FILE *out)
     if (status != FRICREG_OK)
         return run_failed(ex, status, run);
     size_t cycles = fricreg_exact_ncycles(ex);
-    double t_end = value(ex, FRICREG_EXACT_VALUE_TIME), period = value(ex, FRICREG_EXACT_VALUE_PERIOD);
+    double t_end = value(ex, FRICREG_EXACT_VALUE_TIME);
+    double period = value(ex, FRICREG_EXACT_VALUE_PERIOD);
     double *D = malloc((cycles + 1) * sizeof *D), stick = 0.0;
     if (D == NULL) {
         fricreg_exact_free(ex);
