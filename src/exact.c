@@ -148,7 +148,8 @@ static int phase_end(fricreg_exact *ex, const struct phase *p, double *t_end, in
      * where it is positive, halving the step; none means the phase has no length. */
     double lo = p->t0 + h;
     int k = 0;
-    while (k < START_REFINEMENTS && lo > p->t0 && !(scan_point(ex, fmin(lo, ex->t_end), &pr) > 0.0))
+    while (k < START_REFINEMENTS && lo > p->t0 &&
+           !(scan_point(ex, fmin(lo, ex->t_end), &pr) > 0.0))
         lo = p->t0 + h * ldexp(1.0, -++k);
     *ends = 1;
     if (k == START_REFINEMENTS || !(lo > p->t0)) {

@@ -26,6 +26,7 @@ static void usage(FILE *out)
           "  --eps EPS        regularization; default 2dt, or 10*omega*dt for chain\n"
           "  --t-end T | --cycles N   run length in time or forcing cycles         [--cycles 4]\n"
           "  --output summary|trajectory   JSON summary, or CSV row per step       [summary]\n"
+          /* TODO: these defaults from fricreg_sim_get_param (being added), not a copy. */
           "oscillator: --a [0] --omega [1] --mun [1] --x0 [2.75] --v0 [0]\n"
           "chain:      --n [32] --a [0.25] --omega [0.5]\n"
           "twoblock:   --k [2] --mu1 [0.5] --mu2 [0.25] --belt-amp [1] --belt-omega [0.5]\n"
