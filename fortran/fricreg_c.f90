@@ -182,6 +182,21 @@ module fricreg_c
       integer(c_size_t), value :: len
       integer(c_size_t) :: fricreg_ctx_errmsg_copy
     end function
+
+    !> Name of a friction law, static storage (fricreg_c_string converts it); c_null_ptr if
+    !> unknown. Since 1.1.
+    function fricreg_law_name(law) bind(C, name='fricreg_law_name')
+      import :: c_int, c_ptr
+      integer(c_int), value :: law
+      type(c_ptr) :: fricreg_law_name
+    end function
+
+    !> The law named name (NUL-terminated: 'quinn'//c_null_char), or 0. Since 1.1.
+    function fricreg_law_from_name(name) bind(C, name='fricreg_law_from_name')
+      import :: c_int, c_char
+      character(kind=c_char), intent(in) :: name(*)
+      integer(c_int) :: fricreg_law_from_name
+    end function
   end interface
 
 contains

@@ -196,6 +196,66 @@ module fricreg_sim_c
       integer(c_int64_t), intent(inout) :: value ! written only on success
       integer(c_int) :: fricreg_sim_get_stat
     end function
+
+    ! ---- The exact solution (fricreg_exact.h), since 1.1 ----------------------------------
+    function fricreg_exact_create(a, omega, mun, x0, v0, ex) bind(C, name='fricreg_exact_create')
+      import :: c_int, c_double, c_ptr
+      real(c_double), value :: a, omega, mun, x0, v0
+      type(c_ptr), intent(out) :: ex
+      integer(c_int) :: fricreg_exact_create
+    end function
+
+    function fricreg_exact_run(ex, t_end) bind(C, name='fricreg_exact_run')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: ex
+      real(c_double), value :: t_end
+      integer(c_int) :: fricreg_exact_run
+    end function
+
+    function fricreg_exact_run_cycles(ex, cycles) bind(C, name='fricreg_exact_run_cycles')
+      import :: c_int, c_ptr
+      type(c_ptr), value :: ex
+      integer(c_int), value :: cycles
+      integer(c_int) :: fricreg_exact_run_cycles
+    end function
+
+    function fricreg_exact_errcode(ex) bind(C, name='fricreg_exact_errcode')
+      import :: c_int, c_ptr
+      type(c_ptr), value :: ex
+      integer(c_int) :: fricreg_exact_errcode
+    end function
+
+    !> Last error message, owned by ex (fricreg_c_string converts it).
+    function fricreg_exact_errmsg(ex) bind(C, name='fricreg_exact_errmsg')
+      import :: c_ptr
+      type(c_ptr), value :: ex
+      type(c_ptr) :: fricreg_exact_errmsg
+    end function
+
+    !> Copy the last error message into buf(len), NUL-terminated; returns its full length.
+    function fricreg_exact_errmsg_copy(ex, buf, len) bind(C, name='fricreg_exact_errmsg_copy')
+      import :: c_size_t, c_char, c_ptr
+      type(c_ptr), value :: ex
+      character(kind=c_char), intent(inout) :: buf(*)
+      integer(c_size_t), value :: len
+      integer(c_size_t) :: fricreg_exact_errmsg_copy
+    end function
+
+    function fricreg_exact_get_value(ex, which, value) bind(C, name='fricreg_exact_get_value')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: ex
+      integer(c_int), value :: which
+      real(c_double), intent(inout) :: value
+      integer(c_int) :: fricreg_exact_get_value
+    end function
+
+    function fricreg_exact_get_stat(ex, which, value) bind(C, name='fricreg_exact_get_stat')
+      import :: c_int, c_int64_t, c_ptr
+      type(c_ptr), value :: ex
+      integer(c_int), value :: which
+      integer(c_int64_t), intent(inout) :: value
+      integer(c_int) :: fricreg_exact_get_stat
+    end function
   end interface
 
 end module fricreg_sim_c

@@ -84,6 +84,24 @@ enum fricreg_law {
     FRICREG_LAW_QUINN = 6
 };
 
+/** Name of a friction law (enum fricreg_law): "coulomb", "force-balance", "karnopp",
+ *  "velocity-limited", "tanh" or "quinn", the names fricreg-sim's --law takes.
+ *
+ *  law  one of enum fricreg_law.
+ *
+ *  Returns the name, lowercase, in static storage owned by the library (never free it); NULL
+ *  for an unknown law. Laws are numbered 1, 2, … without gaps, so a loop from 1 until NULL
+ *  visits every law. Since 1.1 (FRICREG_1.1). Pure function; thread safe. */
+FRICREG_API const char *fricreg_law_name(int law);
+
+/** The friction law (enum fricreg_law) whose fricreg_law_name is `name`.
+ *
+ *  name  in: NUL-terminated name, compared exactly (case-sensitive); may be NULL.
+ *
+ *  Returns the law's value (>= 1); 0 if name is NULL or names no law. Since 1.1
+ *  (FRICREG_1.1). Pure function; thread safe. */
+FRICREG_API int fricreg_law_from_name(const char *name);
+
 /** Evaluate one friction law at one contact.
  *
  *  law   one of enum fricreg_law.

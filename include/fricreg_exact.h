@@ -13,7 +13,13 @@
  * The dissipation per cycle is mun times the distance slid in that cycle, exactly.
  *
  * Conventions are those of fricreg.h: int results are fricreg_status codes, nothing is
- * printed, a failed call leaves the caller's arrays untouched, one object per thread.
+ * printed, a failed call leaves the caller's arrays untouched, one object per thread. As for
+ * contexts and simulations, an object keeps the status and a message of its last failed call
+ * (fricreg_exact_errcode, fricreg_exact_errmsg, fricreg_exact_errmsg_copy).
+ *
+ * Use (since 1.1): fricreg_exact_create with the parameters, fricreg_exact_run (or _run_cycles),
+ * then the getters below; fricreg_exact_free. fricreg_exact_solve (1.0) does create and run in
+ * one call, with no message on failure.
  */
 #ifndef FRICREG_EXACT_H
 #define FRICREG_EXACT_H
@@ -39,18 +45,98 @@ typedef struct fricreg_exact fricreg_exact;
  *
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ENONFINITE; FRICREG_EINVAL (omega <= 0,
  *  mun < 0, t_end <= 0 or too long); FRICREG_ENOMEM; FRICREG_EINTEGRATOR if a switching
- *  time cannot be bracketed (never seen; it would mean two switches closer than 1e-3). */
+ *  time cannot be bracketed (never seen; it would mean two switches closer than 1e-3).
+ *  The same as fricreg_exact_create then fricreg_exact_run, keeping the object only if both
+ *  succeed: with no object on failure there is no message; use those two to get one. */
 FRICREG_API int fricreg_exact_solve(double a, double omega, double mun, double x0, double v0,
                                     double t_end, fricreg_exact **out);
+
+/** Create an exact solution of Eq. (5) with (1)+(2) from (x, x')(0) = (x0, v0). Nothing is
+ *  solved yet: fricreg_exact_run or fricreg_exact_run_cycles does that. The Brent root solver
+ *  is allocated here, so a run allocates only the list of phases.
+ *
+ *  a      forcing amplitude (finite; 0: unforced).
+ *  omega  forcing frequency > 0; sets the forcing period 2 pi/omega of the cycles
+ *         (fricreg_exact_get_value). Resonance omega = 1 as for fricreg_exact_solve.
+ *  mun    friction bound >= 0 (finite).
+ *  x0, v0 initial position and velocity (finite).
+ *  out    out: the new object, released with fricreg_exact_free. Written only on success.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if out is NULL; FRICREG_ENONFINITE if a number is NaN or
+ *  infinite; FRICREG_EINVAL if omega <= 0 or mun < 0; FRICREG_ENOMEM. With no object to keep
+ *  it, a failure has no message beyond its status, as for fricreg_ctx_create. Since 1.1. */
+FRICREG_API int fricreg_exact_create(double a, double omega, double mun, double x0, double v0,
+                                     fricreg_exact **out);
+
+/** Solve over 0 <= t <= t_end, replacing the solution held (if any); the getters below then
+ *  describe this one. Switching times to the last bits (Brent), see the top of this header.
+ *
+ *  t_end  end time > 0 (finite), at most 10^6 forcing cycles (t_end omega/(2 pi) <= 10^6).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if ex is NULL; FRICREG_ENONFINITE if t_end is NaN or
+ *  infinite; FRICREG_EINVAL if t_end <= 0 or too long; FRICREG_ENOMEM; FRICREG_EINTEGRATOR if
+ *  a switching time cannot be found (never seen; it would mean two switches closer than 1e-3).
+ *  On failure fricreg_exact_errmsg names the value, or the time where the solution stopped,
+ *  and the solution held before the call is kept unchanged. Since 1.1. */
+FRICREG_API int fricreg_exact_run(fricreg_exact *ex, double t_end);
+
+/** fricreg_exact_run over `cycles` whole forcing cycles: t_end = cycles 2 pi/omega, so
+ *  fricreg_exact_ncycles is then `cycles`. 1 <= cycles <= 10^6.
+ *  Returns as fricreg_exact_run; FRICREG_EINVAL for cycles out of range. Since 1.1. */
+FRICREG_API int fricreg_exact_run_cycles(fricreg_exact *ex, int cycles);
+
+/** Status of the last failed call on ex (FRICREG_OK if none, or ex NULL). A successful call
+ *  does not clear it. The getters, which take a const object, return their status without
+ *  recording it. Since 1.1. */
+FRICREG_API int fricreg_exact_errcode(const fricreg_exact *ex);
+
+/** Message of the last failed call on ex: names the argument and its value, or the time.
+ *  "" if none; "NULL exact solution" if ex is NULL. Owned by ex, valid until its next call.
+ *  Since 1.1. */
+FRICREG_API const char *fricreg_exact_errmsg(const fricreg_exact *ex);
+
+/** Copy the last error message into buf[len], NUL-terminated and truncated to fit (for
+ *  Fortran). Returns the full message length (excluding the NUL), as snprintf does; 0 and
+ *  nothing written if buf is NULL or len is 0. Since 1.1. */
+FRICREG_API size_t fricreg_exact_errmsg_copy(const fricreg_exact *ex, char *buf, size_t len);
+
+/** Quantities of an exact solution, for fricreg_exact_get_value. Values are fixed forever. */
+enum fricreg_exact_value {
+    FRICREG_EXACT_VALUE_TIME = 0,  /**< end time t_end of the solution held; 0 before a run */
+    FRICREG_EXACT_VALUE_PERIOD = 1 /**< forcing period 2 pi/omega, the length of a cycle */
+};
+
+/** Read one quantity (enum fricreg_exact_value) into *value.
+ *  Returns FRICREG_OK; FRICREG_ENULL if ex or value is NULL; FRICREG_EINVAL for an unknown
+ *  quantity (*value untouched). Since 1.1. */
+FRICREG_API int fricreg_exact_get_value(const fricreg_exact *ex, int which, double *value);
+
+/** Work counters of the solution held (zero before a run), for fricreg_exact_get_stat.
+ *  Values are fixed forever. The scan step is h = 2 pi/max(1, omega)/1024, so a run costs
+ *  about t_end/h scan points whatever the number of switches. */
+enum fricreg_exact_stat {
+    FRICREG_EXACT_STAT_SCAN_POINTS = 0,    /**< closed-form tests "the phase still holds" on the
+                                                scan grid, including the halved first steps */
+    FRICREG_EXACT_STAT_ROOTS = 1,          /**< phase ends bracketed and refined: one per
+                                                switch, plus any phase of zero length */
+    FRICREG_EXACT_STAT_ROOT_ITERATIONS = 2 /**< Brent iterations, summed over the roots */
+};
+
+/** Read one counter (enum fricreg_exact_stat) into *value.
+ *  Returns FRICREG_OK; FRICREG_ENULL if ex or value is NULL; FRICREG_EINVAL for an unknown
+ *  counter (*value untouched). Since 1.1. */
+FRICREG_API int fricreg_exact_get_stat(const fricreg_exact *ex, int which, int64_t *value);
 
 /** Release a solution. fricreg_exact_free(NULL) does nothing. */
 FRICREG_API void fricreg_exact_free(fricreg_exact *ex);
 
 /** The state at time t, 0 <= t <= t_end, in closed form (no integration error).
- *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if t is outside [0, t_end]. */
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if t is outside [0, t_end], or if ex
+ *  holds no solution yet (created, never run successfully). */
 FRICREG_API int fricreg_exact_state(const fricreg_exact *ex, double t, double *x, double *v);
 
-/** Number of switches (phase changes after t = 0) up to t_end; 0 if ex is NULL. */
+/** Number of switches (phase changes after t = 0) up to t_end; 0 if ex is NULL or holds no
+ *  solution yet. */
 FRICREG_API size_t fricreg_exact_nswitches(const fricreg_exact *ex);
 
 /** Copy the switching times into times[n] (increasing), and into sticks[n] (may be NULL) 1

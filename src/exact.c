@@ -6,20 +6,23 @@
  * ends at the first root of its own "phase holds" function, found by scanning at a step of
  * 1/1024 of the shortest period and refining the bracket with Brent to the last bits. */
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
 
+#include "error.h"
+#include "fr_math.h"
 #include "fricreg_exact.h"
 #include "gsl_guard.h"
 
-#define TWO_PI 6.283185307179586
 #define SCAN_PER_PERIOD 1024.0
 #define MAX_CYCLES 1e6
 #define BRENT_MAX_ITER 200
-#define START_REFINEMENTS 40
-#define EMPTY_PHASE (64.0 * GSL_DBL_EPSILON) /* a phase this short (relative to t) has no length */ /* halvings of the first scan step at a phase start */
+#define START_REFINEMENTS 40 /* halvings of the first scan step at a phase start */
+#define EMPTY_PHASE (64.0 * GSL_DBL_EPSILON) /* a phase this short (relative to t) has no length */
+#define N_STATS 3
 
 struct phase {
     double t0, x0, v0;
@@ -27,9 +30,13 @@ struct phase {
 };
 
 struct fricreg_exact {
-    double a, omega, mun, t_end;
-    struct phase *ph;
+    double a, omega, mun, x0, v0; /* as given to fricreg_exact_create */
+    double t_end;                 /* end of the solution held; 0 before the first run */
+    struct phase *ph;             /* its phases; ph[0] starts at t = 0 */
     size_t n, cap;
+    int64_t stats[N_STATS];       /* enum fricreg_exact_stat, of the solution held */
+    gsl_root_fsolver *brent;      /* allocated at create: a run allocates only phases */
+    struct fr_error err;
 };
 
 /* The forced response to a sin(omega t) and its rate: a sin(wt)/(1 - w^2), or at resonance
@@ -97,24 +104,24 @@ static double holds(double t, void *params)
 /* Brent on [lo, hi] with holds(lo) > 0 >= holds(hi): the first time the phase fails. The
  * slack only has to carry a stick over its first instants: where lo is clear of them, the
  * root is that of the exact condition |f_eq| = mun. */
-static int refine(struct phase_probe *pr, double lo, double hi, double *root)
+static int refine(fricreg_exact *ex, struct phase_probe *pr, double lo, double hi, double *root)
 {
     struct phase_probe exact = *pr;
     exact.slack = 0;
     if (holds(lo, &exact) > 0.0)
         pr = &exact;
+    ex->stats[FRICREG_EXACT_STAT_ROOTS]++;
     if (holds(hi, pr) == 0.0) {
         *root = hi;
         return FRICREG_OK;
     }
     gsl_function F = {holds, pr};
-    gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-    if (s == NULL)
-        return FRICREG_ENOMEM;
+    gsl_root_fsolver *s = ex->brent;
     gsl_error_handler_t *previous = fr_gsl_quiet();
     int status = gsl_root_fsolver_set(s, &F, lo, hi);
     for (int it = 0; status == GSL_SUCCESS && it < BRENT_MAX_ITER; it++) {
         status = gsl_root_fsolver_iterate(s);
+        ex->stats[FRICREG_EXACT_STAT_ROOT_ITERATIONS]++;
         lo = gsl_root_fsolver_x_lower(s);
         hi = gsl_root_fsolver_x_upper(s);
         if (status == GSL_SUCCESS && gsl_root_test_interval(lo, hi, 0.0, 2.0 * GSL_DBL_EPSILON) == GSL_SUCCESS)
@@ -122,20 +129,27 @@ static int refine(struct phase_probe *pr, double lo, double hi, double *root)
     }
     fr_gsl_restore(previous);
     *root = gsl_root_fsolver_root(s);
-    gsl_root_fsolver_free(s);
     return status == GSL_SUCCESS ? FRICREG_OK : FRICREG_EINTEGRATOR;
 }
 
+/* holds() at a scan point of phase_end, counted. */
+static double scan_point(fricreg_exact *ex, double t, struct phase_probe *pr)
+{
+    ex->stats[FRICREG_EXACT_STAT_SCAN_POINTS]++;
+    return holds(t, pr);
+}
+
 /* The end of phase p: the first t > t0 where it stops holding, or t_end. *ends says which. */
-static int phase_end(const fricreg_exact *ex, const struct phase *p, double *t_end, int *ends)
+static int phase_end(fricreg_exact *ex, const struct phase *p, double *t_end, int *ends)
 {
     struct phase_probe pr = {ex, p, 1};
-    double h = TWO_PI / fmax(1.0, ex->omega) / SCAN_PER_PERIOD;
+    double h = FR_TWO_PI / fmax(1.0, ex->omega) / SCAN_PER_PERIOD;
     /* At the start the phase function is 0 (x' = 0, or |f_eq| = mun): find a first point
      * where it is positive, halving the step; none means the phase has no length. */
     double lo = p->t0 + h;
     int k = 0;
-    while (k < START_REFINEMENTS && lo > p->t0 && !(holds(fmin(lo, ex->t_end), &pr) > 0.0))
+    while (k < START_REFINEMENTS && lo > p->t0 &&
+           !(scan_point(ex, fmin(lo, ex->t_end), &pr) > 0.0))
         lo = p->t0 + h * ldexp(1.0, -++k);
     *ends = 1;
     if (k == START_REFINEMENTS || !(lo > p->t0)) {
@@ -151,8 +165,8 @@ static int phase_end(const fricreg_exact *ex, const struct phase *p, double *t_e
     for (double hi = k > 0 ? p->t0 + h : lo + h;; lo = hi, hi += h) {
         if (hi >= ex->t_end)
             hi = ex->t_end;
-        if (!(holds(hi, &pr) > 0.0))
-            return refine(&pr, lo, hi, t_end);
+        if (!(scan_point(ex, hi, &pr) > 0.0))
+            return refine(ex, &pr, lo, hi, t_end);
         if (hi == ex->t_end) {
             *ends = 0;
             *t_end = ex->t_end;
@@ -192,13 +206,27 @@ static struct phase from_rest(const fricreg_exact *ex, double t, double x)
     return (struct phase){t, x, 0.0, sticks ? 0 : breakaway_direction(ex, t, x)};
 }
 
-/* The phases from t = 0 to t_end. A phase of zero length (a stick broken at once, a slip
- * with no motion) is replaced by its successor, so no switch is reported for it; two in a
- * row would mean no progress, which the closed forms exclude. */
-static int solve(fricreg_exact *ex, double x0, double v0)
+/* Records why solve() stopped at phase p (a stick if p->s is 0) and returns status. */
+static int solve_failed(const fricreg_exact *ex, const struct phase *p, int status,
+                        int no_progress, struct fr_error *err)
 {
-    struct phase p = v0 != 0.0 ? (struct phase){0.0, x0, v0, v0 > 0.0 ? 1 : -1}
-                               : from_rest(ex, 0.0, x0);
+    if (status == FRICREG_ENOMEM)
+        return fr_error_set(err, status, "run: out of memory at phase %zu, t = %.17g",
+                            ex->n, p->t0);
+    if (no_progress)
+        return fr_error_set(err, status, "run: no progress at t = %.17g: two phases of zero "
+                            "length in a row", p->t0);
+    return fr_error_set(err, status, "run: Brent's method failed on the end of the %s that "
+                        "starts at t = %.17g", p->s == 0 ? "stick" : "slip", p->t0);
+}
+
+/* The phases from t = 0 to ex->t_end into ex->ph, which is empty. A phase of zero length (a
+ * stick broken at once, a slip with no motion) is replaced by its successor, so no switch is
+ * reported for it; two in a row would mean no progress, which the closed forms exclude. */
+static int solve(fricreg_exact *ex, struct fr_error *err)
+{
+    struct phase p = ex->v0 != 0.0 ? (struct phase){0.0, ex->x0, ex->v0, ex->v0 > 0.0 ? 1 : -1}
+                                   : from_rest(ex, 0.0, ex->x0);
     int empty_in_a_row = 0;
     for (;;) {
         int status = push_phase(ex, p);
@@ -206,15 +234,17 @@ static int solve(fricreg_exact *ex, double x0, double v0)
         int ends = 0;
         if (status == FRICREG_OK)
             status = phase_end(ex, &p, &t1, &ends);
-        if (status != FRICREG_OK || !ends)
-            return status;
+        if (status != FRICREG_OK)
+            return solve_failed(ex, &p, status, 0, err);
+        if (!ends)
+            return FRICREG_OK;
         phase_state(ex, &p, t1, &x, &v);
         /* A slip ends at rest; a stick ends in a slip. */
         struct phase next = p.s != 0 ? from_rest(ex, t1, x)
                                      : (struct phase){t1, x, 0.0, breakaway_direction(ex, t1, x)};
         if (t1 <= p.t0 + EMPTY_PHASE * fmax(1.0, p.t0)) {
             if (++empty_in_a_row == 2)
-                return FRICREG_EINTEGRATOR;
+                return solve_failed(ex, &p, FRICREG_EINTEGRATOR, 1, err);
             ex->n--;
             next.t0 = p.t0; /* the successor takes its place, from the same state */
             next.x0 = p.x0;
@@ -225,22 +255,94 @@ static int solve(fricreg_exact *ex, double x0, double v0)
     }
 }
 
+int fricreg_exact_create(double a, double omega, double mun, double x0, double v0,
+                         fricreg_exact **out)
+{
+    if (out == NULL)
+        return FRICREG_ENULL;
+    if (!isfinite(a) || !isfinite(omega) || !isfinite(mun) || !isfinite(x0) || !isfinite(v0))
+        return FRICREG_ENONFINITE;
+    if (!(omega > 0.0) || !(mun >= 0.0))
+        return FRICREG_EINVAL;
+    fricreg_exact *ex = calloc(1, sizeof *ex);
+    if (ex == NULL)
+        return FRICREG_ENOMEM;
+    *ex = (fricreg_exact){.a = a, .omega = omega, .mun = mun, .x0 = x0, .v0 = v0};
+    ex->brent = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    if (ex->brent == NULL) {
+        free(ex);
+        return FRICREG_ENOMEM;
+    }
+    *out = ex;
+    return FRICREG_OK;
+}
+
+static double period(const fricreg_exact *ex)
+{
+    return FR_TWO_PI / ex->omega;
+}
+
+/* Solves into a copy, so that a failed run leaves the solution held as it was. */
+static int run_to(fricreg_exact *ex, double t_end)
+{
+    fricreg_exact work = *ex;
+    work.t_end = t_end;
+    work.ph = NULL;
+    work.n = work.cap = 0;
+    for (int k = 0; k < N_STATS; k++)
+        work.stats[k] = 0;
+    int status = solve(&work, &ex->err);
+    if (status != FRICREG_OK) {
+        free(work.ph);
+        return status;
+    }
+    free(ex->ph);
+    ex->t_end = work.t_end;
+    ex->ph = work.ph;
+    ex->n = work.n;
+    ex->cap = work.cap;
+    for (int k = 0; k < N_STATS; k++)
+        ex->stats[k] = work.stats[k];
+    return FRICREG_OK;
+}
+
+int fricreg_exact_run(fricreg_exact *ex, double t_end)
+{
+    if (ex == NULL)
+        return FRICREG_ENULL;
+    if (!isfinite(t_end))
+        return fr_error_set(&ex->err, FRICREG_ENONFINITE, "run: t_end = %g is not finite", t_end);
+    if (!(t_end > 0.0))
+        return fr_error_set(&ex->err, FRICREG_EINVAL, "run: t_end = %g must be > 0", t_end);
+    if (t_end * ex->omega / FR_TWO_PI > MAX_CYCLES)
+        return fr_error_set(&ex->err, FRICREG_EINVAL, "run: t_end = %g spans %g forcing cycles "
+                            "of period %g, more than 10^6", t_end, t_end / period(ex), period(ex));
+    return run_to(ex, t_end);
+}
+
+int fricreg_exact_run_cycles(fricreg_exact *ex, int cycles)
+{
+    if (ex == NULL)
+        return FRICREG_ENULL;
+    if (cycles < 1 || cycles > MAX_CYCLES)
+        return fr_error_set(&ex->err, FRICREG_EINVAL,
+                            "run_cycles: cycles = %d must be from 1 to 10^6", cycles);
+    return run_to(ex, cycles * period(ex));
+}
+
+/* 1.0's one-call form: create, run, and the object only if both succeed. A non-finite t_end
+ * is checked first, as 1.0 checked every number before any range. */
 int fricreg_exact_solve(double a, double omega, double mun, double x0, double v0, double t_end,
                         fricreg_exact **out)
 {
     if (out == NULL)
         return FRICREG_ENULL;
-    if (!isfinite(a) || !isfinite(omega) || !isfinite(mun) || !isfinite(x0) || !isfinite(v0) ||
-        !isfinite(t_end))
+    if (!isfinite(t_end))
         return FRICREG_ENONFINITE;
-    if (!(omega > 0.0) || !(mun >= 0.0) || !(t_end > 0.0) ||
-        t_end * omega / TWO_PI > MAX_CYCLES)
-        return FRICREG_EINVAL;
-    fricreg_exact *ex = calloc(1, sizeof *ex);
-    if (ex == NULL)
-        return FRICREG_ENOMEM;
-    *ex = (fricreg_exact){.a = a, .omega = omega, .mun = mun, .t_end = t_end};
-    int status = solve(ex, x0, v0);
+    fricreg_exact *ex = NULL;
+    int status = fricreg_exact_create(a, omega, mun, x0, v0, &ex);
+    if (status == FRICREG_OK)
+        status = fricreg_exact_run(ex, t_end);
     if (status != FRICREG_OK) {
         fricreg_exact_free(ex);
         return status;
@@ -253,8 +355,45 @@ void fricreg_exact_free(fricreg_exact *ex)
 {
     if (ex == NULL)
         return;
+    gsl_root_fsolver_free(ex->brent);
     free(ex->ph);
     free(ex);
+}
+
+int fricreg_exact_errcode(const fricreg_exact *ex)
+{
+    return ex ? ex->err.code : FRICREG_OK;
+}
+
+const char *fricreg_exact_errmsg(const fricreg_exact *ex)
+{
+    return ex ? ex->err.msg : "NULL exact solution";
+}
+
+size_t fricreg_exact_errmsg_copy(const fricreg_exact *ex, char *buf, size_t len)
+{
+    return fr_error_copy(fricreg_exact_errmsg(ex), buf, len);
+}
+
+int fricreg_exact_get_value(const fricreg_exact *ex, int which, double *value)
+{
+    if (ex == NULL || value == NULL)
+        return FRICREG_ENULL;
+    switch (which) {
+    case FRICREG_EXACT_VALUE_TIME: *value = ex->t_end; return FRICREG_OK;
+    case FRICREG_EXACT_VALUE_PERIOD: *value = period(ex); return FRICREG_OK;
+    default: return FRICREG_EINVAL;
+    }
+}
+
+int fricreg_exact_get_stat(const fricreg_exact *ex, int which, int64_t *value)
+{
+    if (ex == NULL || value == NULL)
+        return FRICREG_ENULL;
+    if (which < 0 || which >= N_STATS)
+        return FRICREG_EINVAL;
+    *value = ex->stats[which];
+    return FRICREG_OK;
 }
 
 /* Index of the phase holding time t: the last one that starts at or before t. */
@@ -275,7 +414,7 @@ int fricreg_exact_state(const fricreg_exact *ex, double t, double *x, double *v)
 {
     if (ex == NULL || x == NULL || v == NULL)
         return FRICREG_ENULL;
-    if (!(t >= 0.0 && t <= ex->t_end))
+    if (ex->n == 0 || !(t >= 0.0 && t <= ex->t_end))
         return FRICREG_EINVAL;
     phase_state(ex, &ex->ph[phase_at(ex, t)], t, x, v);
     return FRICREG_OK;
@@ -283,14 +422,14 @@ int fricreg_exact_state(const fricreg_exact *ex, double t, double *x, double *v)
 
 size_t fricreg_exact_nswitches(const fricreg_exact *ex)
 {
-    return ex ? ex->n - 1 : 0;
+    return ex && ex->n > 0 ? ex->n - 1 : 0;
 }
 
 int fricreg_exact_switches(const fricreg_exact *ex, size_t n, double times[], int sticks[])
 {
     if (ex == NULL || (times == NULL && n > 0))
         return FRICREG_ENULL;
-    if (n != ex->n - 1)
+    if (n != fricreg_exact_nswitches(ex))
         return FRICREG_ESIZE;
     for (size_t k = 0; k < n; k++) {
         times[k] = ex->ph[k + 1].t0;
@@ -300,14 +439,9 @@ int fricreg_exact_switches(const fricreg_exact *ex, size_t n, double times[], in
     return FRICREG_OK;
 }
 
-static double period(const fricreg_exact *ex)
-{
-    return TWO_PI / ex->omega;
-}
-
 size_t fricreg_exact_ncycles(const fricreg_exact *ex)
 {
-    return ex ? (size_t)floor(ex->t_end / period(ex) * (1.0 + 1e-12)) : 0;
+    return ex ? (size_t)fr_whole_cycles(ex->t_end, period(ex)) : 0;
 }
 
 /* Phase k covers [t0_k, t0_{k+1}); the last one ends at t_end. Overlap with [ta, tb]. */

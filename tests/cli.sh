@@ -37,8 +37,19 @@ expect_usage_error "--dt" oscillator --dt 1e999
 expect_usage_error "--dt" oscillator --dt 0.01x
 expect_usage_error "--eps" oscillator --eps -0.1
 expect_usage_error "--law" oscillator --law sticky
+# The valid names come from the library (fricreg_law_name, fricreg_integrator_name).
+expect_usage_error "coulomb, force-balance, karnopp, velocity-limited, tanh, quinn" oscillator --law Quinn
+expect_usage_error "rk2, rk4, rkf45, rkck, rk8pd, rk1imp, rk2imp, rk4imp, bsimp, msadams, msbdf" chain --integrator rk45
+expect_output '^  --law coulomb\|force-balance\|karnopp\|velocity-limited\|tanh\|quinn +\[quinn\]$' --help
+expect_output '^  --integrator rk2\|rk4\|rkf45\|rkck\|rk8pd\|rk1imp\|rk2imp\|rk4imp\|bsimp\|msadams\|msbdf\|rk4-gsl \[rk4\]$' --help
+for law in coulomb force-balance karnopp velocity-limited tanh quinn; do
+    expect_output "\"law\": \"$law\"" oscillator --law "$law" --t-end 0.5
+done
 expect_usage_error "--integrator" chain --integrator euler
 expect_usage_error "--omega" chain --omega 0
+# A bad parameter value: the option, then the library's message as it is (its range).
+expect_usage_error "^fricreg-sim: --omega: .*= 0 must be > 0$" chain --omega 0
+expect_usage_error "^fricreg-sim: --n: .*= 2.5 must be an integer from 2 to 10^7$" chain --n 2.5
 expect_usage_error "--n" chain --n 1
 expect_usage_error "--n" chain --n 2.5
 expect_usage_error "--k" oscillator --k 2
@@ -74,7 +85,10 @@ expect_usage_error "--law" exact --law coulomb
 expect_usage_error "--eps" exact --eps 0.02
 expect_usage_error "--eps" exact --eps=0.02
 expect_usage_error "--output" exact --output trajectory
+# A run length the solver refuses (more than 10^6 cycles): the option, then its message.
+expect_usage_error "^fricreg-sim: --cycles: .*cycles = 2000000 must be from 1 to 10^6$" exact --cycles 2000000
+expect_usage_error "^fricreg-sim: --t-end: .*t_end = 1e+300 .*more than 10^6$" exact --t-end 1e300
 
-total=33
+total=47
 echo "$((total - fails)) passed, $fails failed"
 [ $fails -eq 0 ]

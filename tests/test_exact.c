@@ -8,7 +8,10 @@
  * of fricreg_sim (fricreg_sim.h) at tiny steps. */
 #include <check.h>
 #include <math.h>
+#include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
@@ -857,6 +860,371 @@ START_TEST(test_stick_fraction_rejects_bad_interval)
 }
 END_TEST
 
+/* ------------------------------------ 7. the object: create, run, messages, counters (1.1) */
+
+/* Allocation failure on demand, for the ENOMEM paths: this program's realloc and calloc come
+ * before libc's for the library too (ELF symbol interposition) and fail once their countdown
+ * reaches 0 (-1: never). glibc only, and not under AddressSanitizer, which owns them. */
+#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
+#define CAN_FAIL_ALLOCATION 1
+extern void *__libc_realloc(void *p, size_t size);
+extern void *__libc_calloc(size_t n, size_t size);
+static int realloc_fails_in = -1, calloc_fails_in = -1;
+
+static int countdown(int *fails_in)
+{
+    if (*fails_in == 0)
+        return 1;
+    if (*fails_in > 0)
+        --*fails_in;
+    return 0;
+}
+
+void *realloc(void *p, size_t size)
+{
+    return countdown(&realloc_fails_in) ? NULL : __libc_realloc(p, size);
+}
+
+void *calloc(size_t n, size_t size)
+{
+    return countdown(&calloc_fails_in) ? NULL : __libc_calloc(n, size);
+}
+#else
+#define CAN_FAIL_ALLOCATION 0
+#endif
+
+static fricreg_exact *create(double a, double omega, double mun, double x0, double v0)
+{
+    fricreg_exact *ex = NULL;
+    ck_assert_int_eq(fricreg_exact_create(a, omega, mun, x0, v0, &ex), FRICREG_OK);
+    ck_assert_ptr_nonnull(ex);
+    return ex;
+}
+
+static double get_value(const fricreg_exact *ex, int which)
+{
+    double value = -2.385;
+    ck_assert_int_eq(fricreg_exact_get_value(ex, which, &value), FRICREG_OK);
+    return value;
+}
+
+static int64_t get_stat(const fricreg_exact *ex, int which)
+{
+    int64_t value = -7;
+    ck_assert_int_eq(fricreg_exact_get_stat(ex, which, &value), FRICREG_OK);
+    return value;
+}
+
+/* The two solutions have the same switches and dissipation, bit for bit. */
+static void assert_same_solution(const fricreg_exact *p, const fricreg_exact *q)
+{
+    struct switches a = get_switches(p), b = get_switches(q);
+    ck_assert_uint_eq(a.n, b.n);
+    for (size_t k = 0; k < a.n; k++) {
+        ck_assert_double_eq(a.t[k], b.t[k]);
+        ck_assert_int_eq(a.stick[k], b.stick[k]);
+    }
+    size_t na, nb;
+    double *Da = dissipation(p, &na), *Db = dissipation(q, &nb);
+    ck_assert_uint_eq(na, nb);
+    for (size_t k = 0; k < na; k++)
+        ck_assert_double_eq(Da[k], Db[k]);
+    free(Da);
+    free(Db);
+    free_switches(&a);
+    free_switches(&b);
+}
+
+/* fricreg_exact_solve is create + run (header): the same solution bit for bit, in the regimes
+ * of the spec (stick-slip, no stick, resonance). run_cycles(k) is run(k T) with T the object's
+ * period: ncycles = k and the time reached is k T exactly. */
+START_TEST(test_create_run_equals_solve)
+{
+    static const double cases[][5] = {{2.0, 0.5, 1.0, 0.0, 0.0}, {3.0, 1.5, 1.0, 0.0, 0.0},
+                                      {1.2, 1.0, 1.0, -2.385, 0.0}, {0.0, 1.0, 0.731, 0.3, 1.7}};
+    const double *c = cases[_i];
+    const int cycles = 7;
+    fricreg_exact *ex = create(c[0], c[1], c[2], c[3], c[4]);
+    const double T = get_value(ex, FRICREG_EXACT_VALUE_PERIOD);
+    ck_assert_double_eq_tol(T, 2.0 * PI / c[1], 4e-16 * T);
+    ck_assert_int_eq(fricreg_exact_run_cycles(ex, cycles), FRICREG_OK);
+    ck_assert_uint_eq(fricreg_exact_ncycles(ex), (size_t)cycles);
+    ck_assert_double_eq(get_value(ex, FRICREG_EXACT_VALUE_TIME), cycles * T);
+    fricreg_exact *ref = solve(c[0], c[1], c[2], c[3], c[4], cycles * T);
+    assert_same_solution(ex, ref);
+    fricreg_exact_free(ref);
+
+    ck_assert_int_eq(fricreg_exact_run(ex, 23.85), FRICREG_OK);
+    ck_assert_double_eq(get_value(ex, FRICREG_EXACT_VALUE_TIME), 23.85);
+    ref = solve(c[0], c[1], c[2], c[3], c[4], 23.85);
+    assert_same_solution(ex, ref);
+    fricreg_exact_free(ref);
+    ck_assert_int_eq(fricreg_exact_errcode(ex), FRICREG_OK);
+    ck_assert_str_eq(fricreg_exact_errmsg(ex), "");
+    fricreg_exact_free(ex);
+}
+END_TEST
+
+/* Header: before a run the object holds no solution: time 0, counters 0, no switches or cycles,
+ * state() and stick_fraction() EINVAL (no time covered), empty arrays fine; the period is
+ * already known (2 pi/omega). */
+START_TEST(test_before_a_run)
+{
+    fricreg_exact *ex = create(2.0, 2.385, 1.0, 0.0, 0.0);
+    ck_assert_double_eq(get_value(ex, FRICREG_EXACT_VALUE_TIME), 0.0);
+    ck_assert_double_eq_tol(get_value(ex, FRICREG_EXACT_VALUE_PERIOD), 2.0 * PI / 2.385, 1e-15);
+    for (int k = FRICREG_EXACT_STAT_SCAN_POINTS; k <= FRICREG_EXACT_STAT_ROOT_ITERATIONS; k++)
+        ck_assert_int_eq(get_stat(ex, k), 0);
+    ck_assert_uint_eq(fricreg_exact_nswitches(ex), 0);
+    ck_assert_uint_eq(fricreg_exact_ncycles(ex), 0);
+    double x = 2.385, v = -2.385, frac = 7.0;
+    ck_assert_int_eq(fricreg_exact_state(ex, 0.0, &x, &v), FRICREG_EINVAL);
+    ck_assert_double_eq(x, 2.385);
+    ck_assert_double_eq(v, -2.385);
+    ck_assert_int_eq(fricreg_exact_stick_fraction(ex, 0.0, 1.0, &frac), FRICREG_EINVAL);
+    ck_assert_double_eq(frac, 7.0);
+    ck_assert_int_eq(fricreg_exact_switches(ex, 0, NULL, NULL), FRICREG_OK);
+    ck_assert_int_eq(fricreg_exact_dissipation(ex, 0, NULL), FRICREG_OK);
+    ck_assert_int_eq(fricreg_exact_errcode(ex), FRICREG_OK);
+    ck_assert_str_eq(fricreg_exact_errmsg(ex), "");
+    fricreg_exact_free(ex);
+}
+END_TEST
+
+/* A second run replaces the first: a shorter one gives the shorter solution (as a fresh
+ * solve), and its own counters. */
+START_TEST(test_run_replaces_solution)
+{
+    fricreg_exact *ex = create(2.0, 0.5, 1.0, 0.0, 0.0);
+    ck_assert_int_eq(fricreg_exact_run(ex, 60.0), FRICREG_OK);
+    size_t long_switches = fricreg_exact_nswitches(ex);
+    int64_t long_scan = get_stat(ex, FRICREG_EXACT_STAT_SCAN_POINTS);
+    ck_assert_int_eq(fricreg_exact_run(ex, 17.31), FRICREG_OK);
+    ck_assert_uint_lt(fricreg_exact_nswitches(ex), long_switches);
+    ck_assert_int_lt(get_stat(ex, FRICREG_EXACT_STAT_SCAN_POINTS), long_scan);
+    fricreg_exact *ref = solve(2.0, 0.5, 1.0, 0.0, 0.0, 17.31);
+    assert_same_solution(ex, ref);
+    for (int k = FRICREG_EXACT_STAT_SCAN_POINTS; k <= FRICREG_EXACT_STAT_ROOT_ITERATIONS; k++)
+        ck_assert_int_eq(get_stat(ex, k), get_stat(ref, k));
+    fricreg_exact_free(ref);
+    fricreg_exact_free(ex);
+}
+END_TEST
+
+/* Counters (header): each phase is scanned on the grid of step h = 2 pi/max(1, omega)/1024 from
+ * its start to its end, so the scan points add up to t_end/h within about one point per phase
+ * (a phase's last step is partial; a start may halve its first step): asserted within
+ * [t_end/h - phases, t_end/h + 2 phases]. Each switch is one root (these regimes have no
+ * phase of zero length). Brent, superlinear, needs fewer iterations per root than bisection
+ * from h down to 2 ulps of t, log2(h/(2 eps t_end)) (~40); and at least one unless the scan
+ * hits a root exactly (measured: 2 to 4 per root). Cases: the unforced paper case, stick-slip
+ * at omega = 0.5 and 2.385 (h then shrinks by 2.385), a long no-stick run. */
+START_TEST(test_counters_follow_the_scan_grid)
+{
+    static const double cases[][6] = {{0.0, 1.0, 1.0, 2.75, 0.0, 20.0},
+                                      {2.0, 0.5, 1.0, 0.0, 0.0, 30.0},
+                                      {2.0, 2.385, 1.0, 0.0, 0.0, 30.0},
+                                      {0.3, 1.0, 0.1, 1.2, 0.0, 200.0}};
+    const double *c = cases[_i], t_end = c[5];
+    fricreg_exact *ex = create(c[0], c[1], c[2], c[3], c[4]);
+    ck_assert_int_eq(fricreg_exact_run(ex, t_end), FRICREG_OK);
+    const double h = 2.0 * PI / fmax(1.0, c[1]) / 1024.0, grid = t_end / h;
+    const double phases = (double)fricreg_exact_nswitches(ex) + 1.0;
+    const int64_t scan = get_stat(ex, FRICREG_EXACT_STAT_SCAN_POINTS);
+    const int64_t roots = get_stat(ex, FRICREG_EXACT_STAT_ROOTS);
+    const int64_t iterations = get_stat(ex, FRICREG_EXACT_STAT_ROOT_ITERATIONS);
+    ck_assert_msg((double)scan >= grid - phases && (double)scan <= grid + 2.0 * phases,
+                  "case %d: %lld scan points for a grid of %.2f points and %g phases", _i,
+                  (long long)scan, grid, phases);
+    ck_assert_int_eq(roots, (int64_t)fricreg_exact_nswitches(ex));
+    const double bisection = log2(h / (2.0 * GSL_DBL_EPSILON * t_end));
+    ck_assert_msg(iterations >= roots && (double)iterations <= bisection * (double)roots,
+                  "case %d: %lld Brent iterations for %lld roots", _i, (long long)iterations,
+                  (long long)roots);
+    fricreg_exact_free(ex);
+}
+END_TEST
+
+/* Header: create() ENULL for a NULL out, ENONFINITE for NaN or Inf in any number (before the
+ * ranges), EINVAL for omega <= 0 or mun < 0; *out untouched. */
+START_TEST(test_create_rejects_bad_input)
+{
+    ck_assert_int_eq(fricreg_exact_create(2.0, 0.5, 1.0, 0.0, 0.0, NULL), FRICREG_ENULL);
+    static const struct {
+        double a, omega, mun, x0, v0;
+        int status;
+    } cases[] = {
+        {NAN, 1, 1, 0, 0, FRICREG_ENONFINITE},  {1, NAN, 1, 0, 0, FRICREG_ENONFINITE},
+        {1, 1, NAN, 0, 0, FRICREG_ENONFINITE},  {1, 1, 1, NAN, 0, FRICREG_ENONFINITE},
+        {1, 1, 1, 0, NAN, FRICREG_ENONFINITE},  {-INFINITY, 1, 1, 0, 0, FRICREG_ENONFINITE},
+        {1, INFINITY, 1, 0, 0, FRICREG_ENONFINITE}, {1, 1, INFINITY, 0, 0, FRICREG_ENONFINITE},
+        {1, 1, 1, INFINITY, 0, FRICREG_ENONFINITE}, {1, 1, 1, 0, -INFINITY, FRICREG_ENONFINITE},
+        {1, 0, -1, 0, NAN, FRICREG_ENONFINITE}, {1, 0, 1, 0, 0, FRICREG_EINVAL},
+        {1, -0.5, 1, 0, 0, FRICREG_EINVAL},     {1, 1, -1e-300, 0, 0, FRICREG_EINVAL},
+        {1, 1, -2.385, 0, 0, FRICREG_EINVAL},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        fricreg_exact *ex = SENTINEL;
+        int status = fricreg_exact_create(cases[i].a, cases[i].omega, cases[i].mun, cases[i].x0,
+                                          cases[i].v0, &ex);
+        ck_assert_msg(status == cases[i].status, "case %zu: status %d, expected %d", i, status,
+                      cases[i].status);
+        ck_assert_ptr_eq(ex, SENTINEL);
+    }
+}
+END_TEST
+
+/* Runs that must fail on an object that holds the solution of run(30): each gives its status,
+ * records it with the message below, and leaves that solution as it was. */
+static void expect_run_failure(fricreg_exact *ex, int status, int by_cycles, double arg,
+                               const char *message)
+{
+    size_t switches = fricreg_exact_nswitches(ex);
+    int64_t scan = get_stat(ex, FRICREG_EXACT_STAT_SCAN_POINTS);
+    int got = by_cycles ? fricreg_exact_run_cycles(ex, (int)arg) : fricreg_exact_run(ex, arg);
+    ck_assert_int_eq(got, status);
+    ck_assert_int_eq(fricreg_exact_errcode(ex), status);
+    ck_assert_str_eq(fricreg_exact_errmsg(ex), message);
+    ck_assert_double_eq(get_value(ex, FRICREG_EXACT_VALUE_TIME), 30.0);
+    ck_assert_uint_eq(fricreg_exact_nswitches(ex), switches);
+    ck_assert_int_eq(get_stat(ex, FRICREG_EXACT_STAT_SCAN_POINTS), scan);
+    ck_assert_double_eq_tol(position(ex, PI / 3.0), 0.0, 1e-15); /* still the same solution */
+}
+
+/* Header: every message of run() and run_cycles(), word for word; they name the value. A
+ * successful call does not clear the last error. From rest at the origin with a = 2,
+ * omega = 0.5, the body sticks until 2 sin(t/2) = 1, t = pi/3 (as in
+ * test_stick_fraction_rejects_bad_interval). T = 4 pi = 12.5664. */
+START_TEST(test_run_messages)
+{
+    fricreg_exact *ex = create(2.0, 0.5, 1.0, 0.0, 0.0);
+    ck_assert_int_eq(fricreg_exact_run(ex, 30.0), FRICREG_OK);
+    expect_run_failure(ex, FRICREG_ENONFINITE, 0, NAN, "run: t_end = nan is not finite");
+    expect_run_failure(ex, FRICREG_ENONFINITE, 0, -INFINITY, "run: t_end = -inf is not finite");
+    expect_run_failure(ex, FRICREG_EINVAL, 0, 0.0, "run: t_end = 0 must be > 0");
+    expect_run_failure(ex, FRICREG_EINVAL, 0, -2.385, "run: t_end = -2.385 must be > 0");
+    expect_run_failure(ex, FRICREG_EINVAL, 0, 1e300, "run: t_end = 1e+300 spans 7.95775e+298 "
+                       "forcing cycles of period 12.5664, more than 10^6");
+    /* just over 10^6 cycles: 4 pi 10^6 (1 + 1e-6) */
+    expect_run_failure(ex, FRICREG_EINVAL, 0, 12566383.3, "run: t_end = 1.25664e+07 spans "
+                       "1e+06 forcing cycles of period 12.5664, more than 10^6");
+    expect_run_failure(ex, FRICREG_EINVAL, 1, 0, "run_cycles: cycles = 0 must be from 1 to 10^6");
+    expect_run_failure(ex, FRICREG_EINVAL, 1, -3, "run_cycles: cycles = -3 must be from 1 to 10^6");
+    expect_run_failure(ex, FRICREG_EINVAL, 1, 1000001,
+                       "run_cycles: cycles = 1000001 must be from 1 to 10^6");
+    /* Neither a success nor a getter's failure (const object) changes the last error. */
+    const char *last = "run_cycles: cycles = 1000001 must be from 1 to 10^6";
+    ck_assert_int_eq(fricreg_exact_run_cycles(ex, 2), FRICREG_OK);
+    double x, v, frac, value;
+    int64_t count;
+    ck_assert_int_eq(fricreg_exact_state(ex, -1.0, &x, &v), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_exact_stick_fraction(ex, 2.0, 1.0, &frac), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_exact_switches(ex, 1000, NULL, NULL), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_exact_dissipation(ex, 1000, &x), FRICREG_ESIZE);
+    ck_assert_int_eq(fricreg_exact_get_value(ex, -1, &value), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_exact_get_stat(ex, -1, &count), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_exact_errcode(ex), FRICREG_EINVAL);
+    ck_assert_str_eq(fricreg_exact_errmsg(ex), last);
+    ck_assert_int_eq(fricreg_exact_run(NULL, 30.0), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_exact_run_cycles(NULL, 2), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_exact_errcode(NULL), FRICREG_OK);
+    ck_assert_str_eq(fricreg_exact_errmsg(NULL), "NULL exact solution");
+    fricreg_exact_free(ex);
+}
+END_TEST
+
+/* Header: errmsg_copy() truncates to len - 1 characters and a NUL and returns the full length
+ * (as snprintf); writes nothing for a NULL buf or len 0; copies "NULL exact solution" for a
+ * NULL object. */
+START_TEST(test_errmsg_copy)
+{
+    fricreg_exact *ex = create(2.0, 0.5, 1.0, 0.0, 0.0);
+    const char *message = "run: t_end = -2.385 must be > 0"; /* 31 characters */
+    ck_assert_int_eq(fricreg_exact_run(ex, -2.385), FRICREG_EINVAL);
+    char buf[40];
+    memset(buf, '#', sizeof buf);
+    ck_assert_uint_eq(fricreg_exact_errmsg_copy(ex, buf, 12), 31);
+    ck_assert_str_eq(buf, "run: t_end ");
+    ck_assert_int_eq(buf[12], '#');
+    ck_assert_uint_eq(fricreg_exact_errmsg_copy(ex, buf, sizeof buf), 31);
+    ck_assert_str_eq(buf, message);
+    memset(buf, '#', sizeof buf);
+    ck_assert_uint_eq(fricreg_exact_errmsg_copy(ex, buf, 0), 0);
+    ck_assert_int_eq(buf[0], '#');
+    ck_assert_uint_eq(fricreg_exact_errmsg_copy(ex, NULL, 12), 0);
+    ck_assert_uint_eq(fricreg_exact_errmsg_copy(NULL, buf, sizeof buf), 19);
+    ck_assert_str_eq(buf, "NULL exact solution");
+    fricreg_exact_free(ex);
+}
+END_TEST
+
+/* Header: get_value() and get_stat() ENULL for a NULL object or output, EINVAL for an unknown
+ * quantity or counter; the output untouched on failure. */
+START_TEST(test_getters_reject_bad_input)
+{
+    fricreg_exact *ex = solve(2.0, 0.5, 1.0, 0.0, 0.0, 30.0);
+    double value = -2.385;
+    int64_t count = -7;
+    ck_assert_int_eq(fricreg_exact_get_value(NULL, FRICREG_EXACT_VALUE_TIME, &value),
+                     FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_exact_get_value(ex, FRICREG_EXACT_VALUE_TIME, NULL), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_exact_get_stat(NULL, FRICREG_EXACT_STAT_ROOTS, &count), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_exact_get_stat(ex, FRICREG_EXACT_STAT_ROOTS, NULL), FRICREG_ENULL);
+    static const int unknown[] = {-1, 2, 3, 1000};
+    for (size_t i = 0; i < sizeof unknown / sizeof unknown[0]; i++) {
+        int which = unknown[i];
+        if (which != 2)
+            ck_assert_int_eq(fricreg_exact_get_stat(ex, which, &count), FRICREG_EINVAL);
+        ck_assert_int_eq(fricreg_exact_get_value(ex, which, &value), FRICREG_EINVAL);
+    }
+    ck_assert_double_eq(value, -2.385);
+    ck_assert_int_eq(count, -7);
+    ck_assert_double_eq(get_value(ex, FRICREG_EXACT_VALUE_TIME), 30.0);
+    fricreg_exact_free(ex);
+}
+END_TEST
+
+/* ENOMEM, by failing the allocation itself. create(): its calloc fails, *out untouched. run():
+ * the phase list grows by doubling from 64, so in a run of 64 switches (65 phases; the long
+ * no-stick case of test_counters_follow_the_scan_grid) its second realloc, at phase 64, fails;
+ * the message gives the phase and its start time, the 64th switch; the earlier solution stays;
+ * the same run succeeds once memory is back. */
+START_TEST(test_out_of_memory)
+{
+#if CAN_FAIL_ALLOCATION
+    fricreg_exact *ex = SENTINEL;
+    calloc_fails_in = 0;
+    int status = fricreg_exact_create(0.3, 1.0, 0.1, 1.2, 0.0, &ex);
+    calloc_fails_in = -1;
+    ck_assert_int_eq(status, FRICREG_ENOMEM);
+    ck_assert_ptr_eq(ex, SENTINEL);
+
+    ex = create(0.3, 1.0, 0.1, 1.2, 0.0);
+    ck_assert_int_eq(fricreg_exact_run(ex, 200.0), FRICREG_OK);
+    struct switches sw = get_switches(ex);
+    ck_assert_uint_eq(sw.n, 64);
+    char expected[128];
+    snprintf(expected, sizeof expected, "run: out of memory at phase 64, t = %.17g", sw.t[63]);
+    ck_assert_int_eq(fricreg_exact_run(ex, 30.0), FRICREG_OK);
+    size_t switches_30 = fricreg_exact_nswitches(ex);
+
+    realloc_fails_in = 1;
+    status = fricreg_exact_run(ex, 200.0);
+    realloc_fails_in = -1;
+    ck_assert_int_eq(status, FRICREG_ENOMEM);
+    ck_assert_int_eq(fricreg_exact_errcode(ex), FRICREG_ENOMEM);
+    ck_assert_str_eq(fricreg_exact_errmsg(ex), expected);
+    ck_assert_double_eq(get_value(ex, FRICREG_EXACT_VALUE_TIME), 30.0);
+    ck_assert_uint_eq(fricreg_exact_nswitches(ex), switches_30);
+
+    ck_assert_int_eq(fricreg_exact_run(ex, 200.0), FRICREG_OK);
+    ck_assert_uint_eq(fricreg_exact_nswitches(ex), 64);
+    free_switches(&sw);
+    fricreg_exact_free(ex);
+#endif
+}
+END_TEST
+
 static Suite *exact_suite(void)
 {
     Suite *s = suite_create("exact");
@@ -904,6 +1272,18 @@ static Suite *exact_suite(void)
     tcase_add_test(errors, test_arrays_reject_wrong_size);
     tcase_add_test(errors, test_stick_fraction_rejects_bad_interval);
     suite_add_tcase(s, errors);
+
+    TCase *object = tcase_create("object");
+    tcase_add_loop_test(object, test_create_run_equals_solve, 0, 4);
+    tcase_add_test(object, test_before_a_run);
+    tcase_add_test(object, test_run_replaces_solution);
+    tcase_add_loop_test(object, test_counters_follow_the_scan_grid, 0, 4);
+    tcase_add_test(object, test_create_rejects_bad_input);
+    tcase_add_test(object, test_run_messages);
+    tcase_add_test(object, test_errmsg_copy);
+    tcase_add_test(object, test_getters_reject_bad_input);
+    tcase_add_test(object, test_out_of_memory);
+    suite_add_tcase(s, object);
     return s;
 }
 

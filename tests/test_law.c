@@ -1,5 +1,5 @@
 /* test_law.c — Check suite for the friction laws: fricreg_law_eval, fricreg_law_eval_batch,
- * fricreg_strerror and the version functions.
+ * fricreg_law_name, fricreg_law_from_name, fricreg_strerror and the version functions.
  *
  * Expected values come from the laws table of shared/spec/paper.md (equations (1)-(4), Karnopp,
  * tanh), evaluated by hand in exact rational arithmetic and written here to 17 digits; each test
@@ -588,6 +588,52 @@ START_TEST(version_matches_header)
 }
 END_TEST
 
+/* ---- Names (fricreg_law_name, fricreg_law_from_name) --------------------------------------- */
+
+/* Header: the six names, exactly as fricreg-sim's --law has taken them since 1.0. */
+START_TEST(law_names_are_the_cli_names)
+{
+    static const char *const expected[] = {"coulomb", "force-balance", "karnopp",
+                                           "velocity-limited", "tanh", "quinn"};
+    for (size_t l = 0; l < N_LAWS; l++)
+        ck_assert_str_eq(fricreg_law_name(all_laws[l]), expected[l]);
+}
+END_TEST
+
+/* Round trip both ways for every law; and the header's loop "from 1 until NULL" visits
+ * exactly the laws that fricreg_law_eval accepts. */
+START_TEST(law_names_round_trip)
+{
+    for (size_t l = 0; l < N_LAWS; l++)
+        ck_assert_int_eq(fricreg_law_from_name(fricreg_law_name(all_laws[l])), all_laws[l]);
+    int law = 1;
+    for (; fricreg_law_name(law) != NULL; law++) {
+        double f = SENTINEL;
+        ck_assert_int_eq(fricreg_law_eval(law, 0.0213, 1.137, MUN, EPS, &f), FRICREG_OK);
+        ck_assert_ptr_eq(fricreg_law_name(law), fricreg_law_name(law)); /* static storage */
+    }
+    ck_assert_int_eq(law - 1, (int)N_LAWS);
+    double f = SENTINEL;
+    ck_assert_int_eq(fricreg_law_eval(law, 0.0213, 1.137, MUN, EPS, &f), FRICREG_EINVAL);
+}
+END_TEST
+
+/* Header: NULL for an unknown law, 0 for a NULL or unknown name; names compare exactly. */
+START_TEST(law_names_unknown)
+{
+    static const int bad_laws[] = {0, -1, 7, 1000, INT32_MIN, INT32_MAX};
+    for (size_t i = 0; i < sizeof bad_laws / sizeof bad_laws[0]; i++)
+        ck_assert_ptr_null(fricreg_law_name(bad_laws[i]));
+    static const char *const bad_names[] = {"", "Quinn", "QUINN", "quinn ", " quinn", "quin",
+                                            "quinnn", "force_balance", "velocity limited",
+                                            "coulomb+force-balance", "rk4", "1", "6"};
+    for (size_t i = 0; i < sizeof bad_names / sizeof bad_names[0]; i++)
+        ck_assert_msg(fricreg_law_from_name(bad_names[i]) == 0, "\"%s\" named a law",
+                      bad_names[i]);
+    ck_assert_int_eq(fricreg_law_from_name(NULL), 0);
+}
+END_TEST
+
 static Suite *law_suite(void)
 {
     Suite *s = suite_create("law");
@@ -624,6 +670,12 @@ static Suite *law_suite(void)
     tcase_add_test(tc, batch_nonfinite_feq_rejected_for_every_law);
     tcase_add_test(tc, strerror_texts);
     tcase_add_test(tc, version_matches_header);
+    suite_add_tcase(s, tc);
+
+    tc = tcase_create("names");
+    tcase_add_test(tc, law_names_are_the_cli_names);
+    tcase_add_test(tc, law_names_round_trip);
+    tcase_add_test(tc, law_names_unknown);
     suite_add_tcase(s, tc);
     return s;
 }

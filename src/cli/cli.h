@@ -28,7 +28,9 @@ struct cli_run {
  * option to stderr and returns CLI_EXIT_USAGE. */
 int cli_parse_run(int system, int argc, char **argv, struct cli_run *run);
 const char *cli_system_name(int system);
-const char *cli_law_name(int law);
+/* The library's names name_of(1), name_of(2), … up to the first NULL (fricreg_law_name,
+ * fricreg_integrator_name), joined by sep into buf[len] (truncated to fit); returns buf. */
+const char *cli_names(char *buf, size_t len, const char *(*name_of)(int), const char *sep);
 
 /* One run's summary, as `--output summary` prints it (one JSON object). */
 struct cli_summary {

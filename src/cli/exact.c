@@ -1,15 +1,15 @@
 /* exact.c — `fricreg-sim exact`: the closed-form oscillator, with the summary fields of a
- * simulated run (integrator "exact"; steps counts the switches). */
-#include <math.h>
+ * simulated run (integrator "exact"; steps counts the switches). The period, the run length
+ * in cycles, the law names and every message come from the library. */
 #include <stdlib.h>
 #include <time.h>
 
 #include "cli.h"
 #include "fricreg_exact.h"
 
-#define TWO_PI 6.283185307179586
-
-/* The oscillator's parameters as the options set them, over the paper's defaults. */
+/* The oscillator's parameters as the options set them, over the paper's defaults.
+ * TODO: take the defaults from a fricreg_sim with fricreg_sim_get_param (being added to
+ * fricreg_sim.h) instead of this copy of src/sim.c's. */
 static void oscillator_params(const struct cli_run *run, double *a, double *omega, double *mun,
                               double *x0, double *v0)
 {
@@ -26,21 +26,42 @@ static void oscillator_params(const struct cli_run *run, double *a, double *omeg
     }
 }
 
+/* A run length the solver refuses is a bad --t-end or --cycles: a usage error naming it. */
+static int run_failed(fricreg_exact *ex, int status, const struct cli_run *run)
+{
+    int usage = status == FRICREG_EINVAL;
+    const char *what = usage ? (run->t_end > 0.0 ? "--t-end" : "--cycles") : "exact";
+    fprintf(stderr, "fricreg-sim: %s: %s\n", what, fricreg_exact_errmsg(ex));
+    fricreg_exact_free(ex);
+    return usage ? CLI_EXIT_USAGE : CLI_EXIT_RUN;
+}
+
+static double value(const fricreg_exact *ex, int which)
+{
+    double v = 0.0;
+    fricreg_exact_get_value(ex, which, &v);
+    return v;
+}
+
 int cli_exact_summary(const struct cli_run *run, FILE *out)
 {
     double a, omega, mun, x0, v0, x, v;
     oscillator_params(run, &a, &omega, &mun, &x0, &v0);
-    double period = TWO_PI / omega;
-    double t_end = run->t_end > 0.0 ? run->t_end : run->cycles * period;
     fricreg_exact *ex = NULL;
-    clock_t start = clock();
-    int status = fricreg_exact_solve(a, omega, mun, x0, v0, t_end, &ex);
-    double cpu_seconds = (double)(clock() - start) / CLOCKS_PER_SEC;
-    if (status != FRICREG_OK) {
+    int status = fricreg_exact_create(a, omega, mun, x0, v0, &ex);
+    if (status != FRICREG_OK) { /* the values passed fricreg_sim_set_param already */
         fprintf(stderr, "fricreg-sim: exact: %s\n", fricreg_strerror(status));
-        return status == FRICREG_EINVAL ? CLI_EXIT_USAGE : CLI_EXIT_RUN;
+        return CLI_EXIT_RUN;
     }
+    clock_t start = clock();
+    status = run->t_end > 0.0 ? fricreg_exact_run(ex, run->t_end)
+                              : fricreg_exact_run_cycles(ex, run->cycles);
+    double cpu_seconds = (double)(clock() - start) / CLOCKS_PER_SEC;
+    if (status != FRICREG_OK)
+        return run_failed(ex, status, run);
     size_t cycles = fricreg_exact_ncycles(ex);
+    double t_end = value(ex, FRICREG_EXACT_VALUE_TIME);
+    double period = value(ex, FRICREG_EXACT_VALUE_PERIOD);
     double *D = malloc((cycles + 1) * sizeof *D), stick = 0.0;
     if (D == NULL) {
         fricreg_exact_free(ex);
@@ -49,10 +70,14 @@ int cli_exact_summary(const struct cli_run *run, FILE *out)
     }
     fricreg_exact_dissipation(ex, cycles, D);
     fricreg_exact_state(ex, t_end, &x, &v);
+    /* The stick fraction of the last whole cycle, as a simulation reports it. */
     double from = cycles > 0 ? (double)(cycles - 1) * period : 0.0;
-    fricreg_exact_stick_fraction(ex, from, cycles > 0 ? cycles * period : t_end, &stick);
+    fricreg_exact_stick_fraction(ex, from, cycles > 0 ? (double)cycles * period : t_end, &stick);
+    char law[64];
+    snprintf(law, sizeof law, "%s+%s", fricreg_law_name(FRICREG_LAW_COULOMB),
+             fricreg_law_name(FRICREG_LAW_FORCE_BALANCE));
     struct cli_summary s = {
-        .system = "oscillator", .law = "coulomb+force-balance", .integrator = "exact",
+        .system = "oscillator", .law = law, .integrator = "exact",
         .steps = (double)fricreg_exact_nswitches(ex), .t = t_end, .period = period,
         .cpu_seconds = cpu_seconds, .ndof = 1, .ncontacts = 1, .cycles = cycles,
         .x = &x, .v = &v, .D = D, .stick = &stick};

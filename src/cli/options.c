@@ -7,12 +7,13 @@
 
 #include "cli.h"
 
-static const char *const law_names[] = {NULL, "coulomb", "force-balance", "karnopp",
-                                        "velocity-limited", "tanh", "quinn"};
-
-const char *cli_law_name(int law)
+const char *cli_names(char *buf, size_t len, const char *(*name_of)(int), const char *sep)
 {
-    return law >= 1 && law <= 6 ? law_names[law] : "?";
+    size_t used = 0;
+    buf[0] = '\0';
+    for (int k = 1; name_of(k) != NULL && used < len; k++)
+        used += (size_t)snprintf(buf + used, len - used, "%s%s", k > 1 ? sep : "", name_of(k));
+    return buf;
 }
 
 const char *cli_system_name(int system)
@@ -84,13 +85,13 @@ static int parse_nonnegative(const char *option, const char *text, double *value
 
 static int parse_law(const char *text, int *law)
 {
-    for (int k = 1; k <= 6; k++)
-        if (strcmp(text, law_names[k]) == 0) {
-            *law = k;
-            return 0;
-        }
-    return usage_error("--law", "expected coulomb, force-balance, karnopp, velocity-limited, "
-                                "tanh or quinn");
+    *law = fricreg_law_from_name(text);
+    if (*law != 0)
+        return 0;
+    char names[256], what[300];
+    snprintf(what, sizeof what, "unknown law (%s)",
+             cli_names(names, sizeof names, fricreg_law_name, ", "));
+    return usage_error("--law", what);
 }
 
 static int parse_param(int system, const char *option, const char *text, struct cli_run *run)
@@ -109,11 +110,9 @@ static int parse_param(int system, const char *option, const char *text, struct 
             return usage_error(option, "out of memory");
         status = fricreg_sim_set_param(probe, p->param, value);
         if (status != FRICREG_OK) {
-            const char *msg = strstr(fricreg_sim_errmsg(probe), "= ");
-            char what[160];
-            snprintf(what, sizeof what, "value %s", msg ? msg + 2 : fricreg_strerror(status));
+            status = usage_error(option, fricreg_sim_errmsg(probe));
             fricreg_sim_free(probe);
-            return usage_error(option, what);
+            return status;
         }
         fricreg_sim_free(probe);
         if (run->nparams == (int)(sizeof run->params / sizeof run->params[0]))
@@ -132,9 +131,12 @@ static int parse_common(const char *option, const char *text, struct cli_run *ru
         return parse_law(text, &run->law);
     if (strcmp(option, "--integrator") == 0) {
         run->integrator = fricreg_integrator_from_name(text);
-        return run->integrator ? 0 : usage_error(option, "unknown integrator (rk2, rk4, rkf45, "
-                                                 "rkck, rk8pd, rk1imp, rk2imp, rk4imp, bsimp, "
-                                                 "msadams, msbdf)");
+        if (run->integrator != 0)
+            return 0;
+        char names[256], what[300];
+        snprintf(what, sizeof what, "unknown integrator (%s)",
+                 cli_names(names, sizeof names, fricreg_integrator_name, ", "));
+        return usage_error(option, what);
     }
     if (strcmp(option, "--dt") == 0)
         return parse_positive(option, text, &run->dt);

@@ -86,7 +86,7 @@ static void write_summary(FILE *out, const struct cli_run *run, const fricreg_si
     fricreg_sim_get_stick_fraction(sim, m, stick);
     fricreg_sim_get_dissipation(sim, cycles, D);
     struct cli_summary s = {
-        .system = cli_system_name(run->system), .law = cli_law_name(run->law),
+        .system = cli_system_name(run->system), .law = fricreg_law_name(run->law),
         .integrator = fricreg_integrator_name(run->integrator),
         .adaptive = run->rtol > 0.0 || run->atol > 0.0,
         .dt = run->dt, .rtol = run->rtol, .atol = run->atol, .eps = value(sim, FRICREG_VALUE_EPS),

@@ -79,7 +79,7 @@ static fricreg_sim *run_paper(int system, int law, double dt, double t_end, int 
         status = t_end > 0.0 ? fricreg_sim_run(sim, t_end) : fricreg_sim_run_cycles(sim, cycles);
     if (status != FRICREG_OK) {
         fprintf(stderr, "fricreg-sim: reproduce: %s, law %s, dt %g: %s\n",
-                cli_system_name(system), cli_law_name(law), dt, fricreg_sim_errmsg(sim));
+                cli_system_name(system), fricreg_law_name(law), dt, fricreg_sim_errmsg(sim));
         fricreg_sim_free(sim);
         return NULL;
     }
