@@ -28,6 +28,8 @@ struct cli_run {
  * option to stderr and returns CLI_EXIT_USAGE. */
 int cli_parse_run(int system, int argc, char **argv, struct cli_run *run);
 const char *cli_system_name(int system);
+/* Each system's parameter options with the library's defaults, one line per system. */
+void cli_print_param_defaults(FILE *out);
 /* The library's names name_of(1), name_of(2), … up to the first NULL (fricreg_law_name,
  * fricreg_integrator_name), joined by sep into buf[len] (truncated to fit); returns buf. */
 const char *cli_names(char *buf, size_t len, const char *(*name_of)(int), const char *sep);

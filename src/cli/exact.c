@@ -7,23 +7,19 @@
 #include "cli.h"
 #include "fricreg_exact.h"
 
-/* The oscillator's parameters as the options set them, over the paper's defaults.
- * TODO: take the defaults from a fricreg_sim with fricreg_sim_get_param (being added to
- * fricreg_sim.h) instead of this copy of src/sim.c's. */
-static void oscillator_params(const struct cli_run *run, double *a, double *omega, double *mun,
-                              double *x0, double *v0)
+/* The oscillator's parameters a, omega, mun, x0, v0 as the options set them over the
+ * library's defaults: a simulation of the oscillator holds both (fricreg_sim_get_param). */
+static int oscillator_params(const struct cli_run *run, double p[5])
 {
-    *a = 0.0, *omega = 1.0, *mun = 1.0, *x0 = 2.75, *v0 = 0.0;
-    for (int k = 0; k < run->nparams; k++) {
-        double value = run->params[k].value;
-        switch (run->params[k].param) {
-        case FRICREG_PARAM_A: *a = value; break;
-        case FRICREG_PARAM_OMEGA: *omega = value; break;
-        case FRICREG_PARAM_MUN: *mun = value; break;
-        case FRICREG_PARAM_X0: *x0 = value; break;
-        default: *v0 = value; break;
-        }
-    }
+    static const int which[5] = {FRICREG_PARAM_A, FRICREG_PARAM_OMEGA, FRICREG_PARAM_MUN,
+                                 FRICREG_PARAM_X0, FRICREG_PARAM_V0};
+    fricreg_sim *sim = cli_make_sim(run);
+    if (sim == NULL)
+        return CLI_EXIT_USAGE;
+    for (int k = 0; k < 5; k++)
+        fricreg_sim_get_param(sim, which[k], &p[k]);
+    fricreg_sim_free(sim);
+    return 0;
 }
 
 /* A run length the solver refuses is a bad --t-end or --cycles: a usage error naming it. */
@@ -45,10 +41,12 @@ static double value(const fricreg_exact *ex, int which)
 
 int cli_exact_summary(const struct cli_run *run, FILE *out)
 {
-    double a, omega, mun, x0, v0, x, v;
-    oscillator_params(run, &a, &omega, &mun, &x0, &v0);
+    double p[5], x, v;
+    int status = oscillator_params(run, p);
+    if (status != 0)
+        return status;
     fricreg_exact *ex = NULL;
-    int status = fricreg_exact_create(a, omega, mun, x0, v0, &ex);
+    status = fricreg_exact_create(p[0], p[1], p[2], p[3], p[4], &ex);
     if (status != FRICREG_OK) { /* the values passed fricreg_sim_set_param already */
         fprintf(stderr, "fricreg-sim: exact: %s\n", fricreg_strerror(status));
         return CLI_EXIT_RUN;

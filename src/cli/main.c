@@ -25,12 +25,10 @@ static void usage(FILE *out)
           "  --rtol R --atol A  adaptive step control (both 0: fixed step)         [0 0]\n"
           "  --eps EPS        regularization; default 2dt, or 10*omega*dt for chain\n"
           "  --t-end T | --cycles N   run length in time or forcing cycles         [--cycles 4]\n"
-          "  --output summary|trajectory   JSON summary, or CSV row per step       [summary]\n"
-          /* TODO: these defaults from fricreg_sim_get_param (being added), not a copy. */
-          "oscillator: --a [0] --omega [1] --mun [1] --x0 [2.75] --v0 [0]\n"
-          "chain:      --n [32] --a [0.25] --omega [0.5]\n"
-          "twoblock:   --k [2] --mu1 [0.5] --mu2 [0.25] --belt-amp [1] --belt-omega [0.5]\n"
-          "Exit status: 0 success, 1 the simulation failed, 2 bad option or value.\n", out);
+          "  --output summary|trajectory   JSON summary, or CSV row per step       [summary]\n",
+          out);
+    cli_print_param_defaults(out);
+    fputs("Exit status: 0 success, 1 the simulation failed, 2 bad option or value.\n", out);
 }
 
 static int system_of(const char *name)

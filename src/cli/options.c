@@ -48,6 +48,29 @@ static const struct param_option param_options[] = {
     {"--belt-omega", FRICREG_PARAM_BELT_OMEGA, FRICREG_SYSTEM_TWOBLOCK},
 };
 
+void cli_print_param_defaults(FILE *out)
+{
+    int system = 0;
+    fricreg_sim *sim = NULL;
+    for (size_t k = 0; k < sizeof param_options / sizeof param_options[0]; k++) {
+        const struct param_option *p = &param_options[k];
+        if (p->system != system) { /* the table lists each system's options together */
+            fricreg_sim_free(sim);
+            sim = NULL;
+            fricreg_sim_create(p->system, &sim);
+            char label[16];
+            snprintf(label, sizeof label, "%s:", cli_system_name(p->system));
+            fprintf(out, "%s%-11s", system ? "\n" : "", label);
+            system = p->system;
+        }
+        double value = NAN;
+        fricreg_sim_get_param(sim, p->param, &value);
+        fprintf(out, " %s [%g]", p->name, value);
+    }
+    fputs("\n", out);
+    fricreg_sim_free(sim);
+}
+
 static int usage_error(const char *option, const char *what)
 {
     fprintf(stderr, "fricreg-sim: %s: %s\n", option, what);
