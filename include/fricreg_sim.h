@@ -134,13 +134,17 @@ FRICREG_API int fricreg_sim_set_integrator(fricreg_sim *sim, int integrator, dou
 /** Called after every accepted step with the state at time t: the ndof body positions x and
  *  velocities v, and the m contact friction forces f and f_eq (NaN where not computed, as in
  *  fricreg_ctx_eval), all evaluated at (t, x, v). The arrays are valid during the call only.
- *  Return 0 to go on, nonzero to stop the run early (fricreg_sim_run then returns FRICREG_OK). */
+ *  Return 0 to go on, nonzero to stop the run early (fricreg_sim_run then returns FRICREG_OK).
+ *  It may call the getters of its simulation; a setter or fricreg_sim_run called on it
+ *  from here returns FRICREG_EINVAL and changes nothing (the run goes on); it must not free
+ *  it. */
 typedef int (*fricreg_sim_observer)(void *user, double t, size_t ndof, const double x[],
                                     const double v[], size_t m, const double f[],
                                     const double f_eq[]);
 
 /** Install an observer (NULL removes it); user is passed back unchanged. Also called once at
- *  t = 0. Returns FRICREG_OK or FRICREG_ENULL if sim is NULL. */
+ *  t = 0. Returns FRICREG_OK; FRICREG_ENULL if sim is NULL; FRICREG_EINVAL if called from the
+ *  observer during a run. */
 FRICREG_API int fricreg_sim_set_observer(fricreg_sim *sim, fricreg_sim_observer fn, void *user);
 
 /** Integrate from t = 0 and the initial conditions to t_end > 0 (replacing earlier results).
@@ -159,7 +163,9 @@ FRICREG_API int fricreg_sim_set_observer(fricreg_sim *sim, fricreg_sim_observer 
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if t_end <= 0, or too many fixed steps
  *  (more than 2^31) or cycles (more than 10^9); FRICREG_ENONFINITE; FRICREG_ESTEP; FRICREG_EDIVERGED; FRICREG_EINTEGRATOR
  *  (GSL failed, e.g. the adaptive step underflowed); FRICREG_ESINGULAR; FRICREG_ENOMEM.
- *  On failure the results hold what was reached before it. */
+ *  On failure the results hold what was reached before it: a run refused before its first
+ *  step (e.g. FRICREG_ESTEP) leaves the initial state, time 0 and no cycles. A call from the
+ *  observer during a run is FRICREG_EINVAL. */
 FRICREG_API int fricreg_sim_run(fricreg_sim *sim, double t_end);
 
 /** fricreg_sim_run for `cycles` >= 1 whole forcing cycles. Same returns. */

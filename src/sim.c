@@ -99,10 +99,20 @@ static int reject_param(fricreg_sim *sim, int param, double value,
     return sim_fail(sim, FRICREG_EINVAL, "set_param: %s = %g %s", label, value, spec->rule);
 }
 
+/* A setter or a run called from the observer would free or replace the state the run is
+ * stepping: refused, and the run goes on. `who` names the call. */
+static int refuse_during_run(fricreg_sim *sim, const char *who)
+{
+    return sim_fail(sim, FRICREG_EINVAL, "%s: not allowed during a run (called from the observer)",
+                    who);
+}
+
 int fricreg_sim_set_param(fricreg_sim *sim, int param, double value)
 {
     if (sim == NULL)
         return FRICREG_ENULL;
+    if (sim->running)
+        return refuse_during_run(sim, "set_param");
     size_t slot = 0;
     const struct fr_param_spec *spec = fr_system_param(sim->sys.type, param, &slot);
     if (spec == NULL || !isfinite(value) || (spec->valid && !spec->valid(value)))
@@ -127,6 +137,8 @@ int fricreg_sim_set_law(fricreg_sim *sim, int law, double eps)
 {
     if (sim == NULL)
         return FRICREG_ENULL;
+    if (sim->running)
+        return refuse_during_run(sim, "set_law");
     if (!fr_law_known(law))
         return sim_fail(sim, FRICREG_EINVAL, "set_law: unknown law %d", law);
     if (!isfinite(eps))
@@ -143,6 +155,8 @@ int fricreg_sim_set_partition(fricreg_sim *sim, int partition)
 {
     if (sim == NULL)
         return FRICREG_ENULL;
+    if (sim->running)
+        return refuse_during_run(sim, "set_partition");
     if (partition != FRICREG_PARTITION_CONSISTENT && partition != FRICREG_PARTITION_PAPER)
         return sim_fail(sim, FRICREG_EINVAL, "set_partition: unknown partition %d", partition);
     free_run(sim);
@@ -155,6 +169,8 @@ int fricreg_sim_set_integrator(fricreg_sim *sim, int integrator, double dt, doub
 {
     if (sim == NULL)
         return FRICREG_ENULL;
+    if (sim->running)
+        return refuse_during_run(sim, "set_integrator");
     if (fr_integrator_find(integrator) == NULL)
         return sim_fail(sim, FRICREG_EINVAL, "set_integrator: unknown integrator %d", integrator);
     if (!isfinite(dt) || !isfinite(rtol) || !isfinite(atol))
@@ -176,6 +192,8 @@ int fricreg_sim_set_observer(fricreg_sim *sim, fricreg_sim_observer fn, void *us
 {
     if (sim == NULL)
         return FRICREG_ENULL;
+    if (sim->running)
+        return refuse_during_run(sim, "set_observer");
     sim->observer = fn;
     sim->observer_user = user;
     return FRICREG_OK;
@@ -473,6 +491,8 @@ int fricreg_sim_run(fricreg_sim *sim, double t_end)
 {
     if (sim == NULL)
         return FRICREG_ENULL;
+    if (sim->running)
+        return refuse_during_run(sim, "run");
     if (!isfinite(t_end))
         return sim_fail(sim, FRICREG_ENONFINITE, "run: t_end is not finite");
     const struct fr_integrator *integ = fr_integrator_find(sim->integrator);
@@ -489,8 +509,10 @@ int fricreg_sim_run(fricreg_sim *sim, double t_end)
     int status = alloc_run(sim, cycles);
     if (status == FRICREG_OK)
         status = check_step(sim, integ);
-    if (status != FRICREG_OK)
+    if (status != FRICREG_OK) {
+        free_run(sim); /* nothing was reached: the getters report the initial state */
         return status;
+    }
     sim->sys.type->initial(&sim->sys, sim->y, sim->y + sim->ndof);
     sim->y[2 * sim->ndof] = 0.0;
     sim->rhs_status = FRICREG_OK;
@@ -509,7 +531,9 @@ int fricreg_sim_run(fricreg_sim *sim, double t_end)
     fr_gsl_restore(previous);
     if (d == NULL)
         return sim_fail(sim, FRICREG_ENOMEM, "run: GSL driver allocation failed");
+    sim->running = 1;
     status = integrate(sim, d, integ, t_end, cycles);
+    sim->running = 0;
     sim->rejected_steps += (int64_t)d->e->failed_steps; /* the adaptive control's rejections */
     gsl_odeiv2_driver_free(d);
     return status;

@@ -14,6 +14,7 @@ struct fricreg_sim {
     struct fr_system sys; /* the system and its parameters */
     int law;
     int partition; /* enum fricreg_partition, passed to the context */
+    int running;   /* 1 while fricreg_sim_run steps: the observer may not change the run */
     double eps_set; /* 0: the paper's rule */
     int integrator;
     double dt, rtol, atol;

@@ -445,6 +445,80 @@ START_TEST(test_observer_stops_the_run_early)
 }
 END_TEST
 
+/* An observer that calls every setter and fricreg_sim_run on its own simulation at its
+ * second call: each is refused with FRICREG_EINVAL (1.0 freed the run's state under it), and
+ * the run completes with the settings it started with: D per cycle bit for bit that of an
+ * undisturbed run, x0 still the paper's 2.75. */
+struct meddler {
+    fricreg_sim *sim;
+    int calls, status[6];
+};
+
+static int meddle(void *user, double t, size_t ndof, const double x[], const double v[],
+                  size_t m, const double f[], const double f_eq[])
+{
+    (void)t, (void)ndof, (void)x, (void)v, (void)m, (void)f, (void)f_eq;
+    struct meddler *md = user;
+    if (md->calls++ == 1) {
+        md->status[0] = fricreg_sim_set_param(md->sim, FRICREG_PARAM_X0, 1.0);
+        md->status[1] = fricreg_sim_set_law(md->sim, FRICREG_LAW_COULOMB, 0.0);
+        md->status[2] = fricreg_sim_set_integrator(md->sim, FRICREG_INT_RK2, 0.05, 0.0, 0.0);
+        md->status[3] = fricreg_sim_set_partition(md->sim, FRICREG_PARTITION_PAPER);
+        md->status[4] = fricreg_sim_set_observer(md->sim, NULL, NULL);
+        md->status[5] = fricreg_sim_run(md->sim, 1.0);
+    }
+    return 0;
+}
+
+START_TEST(test_observer_cannot_change_its_own_run)
+{
+    fricreg_sim *sim = make(FRICREG_SYSTEM_OSCILLATOR), *plain = make(FRICREG_SYSTEM_OSCILLATOR);
+    struct meddler md = {sim, 0, {0}};
+    ck_assert_int_eq(fricreg_sim_set_observer(sim, meddle, &md), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run_cycles(sim, 2), FRICREG_OK);
+    for (int k = 0; k < 6; k++)
+        ck_assert_int_eq(md.status[k], FRICREG_EINVAL);
+    ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "during a run"));
+    ck_assert_int_eq(fricreg_sim_run_cycles(plain, 2), FRICREG_OK);
+    double D[2], D_plain[2], x0 = NAN;
+    ck_assert_int_eq(fricreg_sim_get_dissipation(sim, 2, D), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_get_dissipation(plain, 2, D_plain), FRICREG_OK);
+    ck_assert_double_eq(D[0], D_plain[0]);
+    ck_assert_double_eq(D[1], D_plain[1]);
+    ck_assert_int_eq(fricreg_sim_get_param(sim, FRICREG_PARAM_X0, &x0), FRICREG_OK);
+    ck_assert_double_eq(x0, 2.75);
+    /* after the run the setters work again */
+    ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_X0, 1.0), FRICREG_OK);
+    fricreg_sim_free(plain);
+    fricreg_sim_free(sim);
+}
+END_TEST
+
+/* A run refused before its first step leaves no stale results: after a good run, an ESTEP run
+ * (dt = 0.05 with eps = 0.02, test above) reports the initial state x0 = 2.75, v0 = 0, time 0,
+ * no cycles and zero stick fractions (1.0 returned uninitialized memory here). */
+START_TEST(test_refused_run_leaves_the_initial_state)
+{
+    fricreg_sim *sim = make(FRICREG_SYSTEM_OSCILLATOR);
+    ck_assert_int_eq(fricreg_sim_run_cycles(sim, 1), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_X0, 2.385), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_QUINN, 0.02), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 0.05, 0.0, 0.0),
+                     FRICREG_OK);
+    expect_failure(sim, fricreg_sim_run(sim, 20.0), FRICREG_ESTEP);
+    double x = NAN, v = NAN, frac = NAN;
+    ck_assert_int_eq(fricreg_sim_get_state(sim, 1, &x, &v), FRICREG_OK);
+    ck_assert_double_eq(x, 2.385);
+    ck_assert_double_eq(v, 0.0);
+    ck_assert_double_eq(value(sim, FRICREG_VALUE_TIME), 0.0);
+    ck_assert_double_eq(value(sim, FRICREG_VALUE_CYCLES), 0.0);
+    ck_assert_int_eq(fricreg_sim_get_dissipation(sim, 0, NULL), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_get_stick_fraction(sim, 1, &frac), FRICREG_OK);
+    ck_assert_double_eq(frac, 0.0);
+    fricreg_sim_free(sim);
+}
+END_TEST
+
 /* Stopping at the first call (t = 0) is also a successful, empty run. */
 START_TEST(test_observer_stopping_at_start_is_ok)
 {
@@ -731,9 +805,11 @@ static Suite *sim_api_suite(void)
     tcase_add_test(run, test_too_large_step_is_estep_naming_the_stick_zone);
     tcase_add_test(run, test_estep_uses_the_coupling_diagonal);
     tcase_add_test(run, test_estep_paper_partition_sees_the_coupling);
+    tcase_add_test(run, test_refused_run_leaves_the_initial_state);
     tcase_add_test(run, test_spring_mode_too_fast_is_estep);
     tcase_add_test(run, test_unstable_run_is_ediverged);
     tcase_add_test(run, test_observer_stops_the_run_early);
+    tcase_add_test(run, test_observer_cannot_change_its_own_run);
     tcase_add_test(run, test_observer_stopping_at_start_is_ok);
     suite_add_tcase(s, run);
 
