@@ -4,8 +4,9 @@
 # 1. probe_ok.f90 compiles against module fricreg_c (so a failure below is not a set-up fault);
 # 2. probe_arity.f90 (one argument too many) and probe_type.f90 (a default integer for a
 #    size_t) do not, each with the compiler's message for that fault;
-# 3. gen_interfaces.cmake refuses a header with a type it cannot spell (float) and a variadic
-#    prototype, naming them, instead of writing a wrong interface.
+# 3. gen_interfaces.cmake refuses a header with a type it cannot spell (float), a variadic
+#    prototype, and two parameters one in Fortran (W, w), naming them, instead of writing a
+#    wrong interface.
 foreach(var FC MODDIR GENERATOR PROBES WORK)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "check_probes.cmake: -D${var}=... is required")
@@ -42,7 +43,8 @@ endforeach()
 
 set(expect_unknown_type "fricreg_probe_scale: parameter factor of type 'float' has no Fortran")
 set(expect_variadic "fricreg_probe_printf is variadic")
-foreach(probe unknown_type variadic)
+set(expect_case "fricreg_probe_scale: two parameters named 'w' to Fortran")
+foreach(probe unknown_type variadic case)
   execute_process(COMMAND "${CMAKE_COMMAND}" "-DHEADER=${PROBES}/probe_${probe}.h"
                           "-DOUT=${WORK}/probe_${probe}.inc" "-DPUBLIC_OUT=${WORK}/probe_pub.inc"
                           -P "${GENERATOR}"
@@ -61,5 +63,5 @@ if(failures)
   list(JOIN failures "\n" text)
   message(FATAL_ERROR "${text}")
 endif()
-message(STATUS "all 5 probes behave: the interfaces catch a wrong arity and a wrong type, and "
+message(STATUS "all 6 probes behave: the interfaces catch a wrong arity and a wrong type, and "
                "the generator refuses what it cannot spell")
