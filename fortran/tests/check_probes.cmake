@@ -7,6 +7,7 @@
 # 3. gen_interfaces.cmake refuses a header with a type it cannot spell (float), a variadic
 #    prototype, and two parameters one in Fortran (W, w), naming them, instead of writing a
 #    wrong interface.
+cmake_minimum_required(VERSION 3.25)
 foreach(var FC MODDIR GENERATOR PROBES WORK)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "check_probes.cmake: -D${var}=... is required")
@@ -27,20 +28,29 @@ compile_probe(probe_ok result text)
 if(NOT result EQUAL 0)
   list(APPEND failures "probe_ok.f90 does not compile: ${text}")
 endif()
-# expected: the compiler's words for the fault (gfortran's first; others' after the |).
-set(expect_arity "More actual than formal arguments|[Tt]oo many arguments")
-set(expect_type "Type mismatch in argument ...?m|type mismatch|does not match")
-foreach(probe arity type)
-  compile_probe(probe_${probe} result text)
+# expect_refused(PROBE RESULT TEXT EXPECTED): PROBE must have failed (RESULT nonzero) with a
+# message matching EXPECTED, else a line in `failures`.
+function(expect_refused probe result text expected)
+  string(REGEX REPLACE "[ \t\r\n]+" " " text "${text}")
   if(result EQUAL 0)
-    list(APPEND failures "probe_${probe}.f90 compiled: the interfaces did not catch it")
-  elseif(NOT text MATCHES "${expect_${probe}}")
-    list(APPEND failures "probe_${probe}.f90 failed, but not for its fault: ${text}")
+    list(APPEND failures "${probe} was accepted: the check cannot catch its fault")
+  elseif(NOT text MATCHES "${expected}")
+    list(APPEND failures "${probe} was refused, but not for its fault: ${text}")
   else()
-    message(STATUS "probe_${probe}.f90 rejected as it must be")
+    message(STATUS "${probe} refused as it must be")
   endif()
-endforeach()
+  set(failures "${failures}" PARENT_SCOPE)
+endfunction()
 
+# The compiler's words for each fault (gfortran's first; others' after the |).
+compile_probe(probe_arity result text)
+expect_refused(probe_arity.f90 "${result}" "${text}"
+               "More actual than formal arguments|[Tt]oo many arguments")
+compile_probe(probe_type result text)
+expect_refused(probe_type.f90 "${result}" "${text}"
+               "Type mismatch in argument ...?m|type mismatch|does not match")
+
+# The generator's own messages.
 set(expect_unknown_type "fricreg_probe_scale: parameter factor of type 'float' has no Fortran")
 set(expect_variadic "fricreg_probe_printf is variadic")
 set(expect_case "fricreg_probe_scale: two parameters named 'w' to Fortran")
@@ -49,14 +59,7 @@ foreach(probe unknown_type variadic case)
                           "-DOUT=${WORK}/probe_${probe}.inc" "-DPUBLIC_OUT=${WORK}/probe_pub.inc"
                           -P "${GENERATOR}"
                   RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  string(REGEX REPLACE "[ \t\r\n]+" " " text "${out}${err}")
-  if(result EQUAL 0)
-    list(APPEND failures "gen_interfaces.cmake accepted probe_${probe}.h")
-  elseif(NOT text MATCHES "${expect_${probe}}")
-    list(APPEND failures "gen_interfaces.cmake failed on probe_${probe}.h, but not for its fault: ${text}")
-  else()
-    message(STATUS "probe_${probe}.h refused by the generator as it must be")
-  endif()
+  expect_refused(probe_${probe}.h "${result}" "${out}${err}" "${expect_${probe}}")
 endforeach()
 
 if(failures)
