@@ -80,24 +80,6 @@ module fricreg
     character(len=:), allocatable :: msg
   end type
 
-  ! The C functions an object needs besides its own calls: release, and read its last error.
-  abstract interface
-    subroutine c_free_fn(handle) bind(C)
-      import :: c_ptr
-      type(c_ptr), value :: handle
-    end subroutine
-    function c_errcode_fn(handle) bind(C)
-      import :: c_int, c_ptr
-      type(c_ptr), value :: handle
-      integer(c_int) :: c_errcode_fn
-    end function
-    function c_errmsg_fn(handle) bind(C)
-      import :: c_ptr
-      type(c_ptr), value :: handle
-      type(c_ptr) :: c_errmsg_fn
-    end function
-  end interface
-
   !> The parent of every object of this module: the C handle it owns, the C functions that
   !> release it and read its last error (set by each type's create, bound straight to the
   !> generated bind(C) interfaces), and the error record of failures found in Fortran.
@@ -107,9 +89,9 @@ module fricreg
     private
     type(c_ptr) :: ptr = c_null_ptr
     type(error_record) :: err
-    procedure(c_free_fn), pointer, nopass :: c_free => null()
-    procedure(c_errcode_fn), pointer, nopass :: c_errcode => null()
-    procedure(c_errmsg_fn), pointer, nopass :: c_errmsg => null()
+    procedure(fricreg_free_fn), pointer, nopass :: c_free => null()
+    procedure(fricreg_errcode_fn), pointer, nopass :: c_errcode => null()
+    procedure(fricreg_errmsg_fn), pointer, nopass :: c_errmsg => null()
   contains
     procedure :: destroy => object_destroy
     procedure :: is_created => object_is_created
@@ -212,9 +194,9 @@ contains
   subroutine adopt(self, p, free, errcode, errmsg)
     class(fricreg_object), intent(inout) :: self
     type(c_ptr), intent(in) :: p
-    procedure(c_free_fn) :: free
-    procedure(c_errcode_fn), optional :: errcode
-    procedure(c_errmsg_fn), optional :: errmsg
+    procedure(fricreg_free_fn) :: free
+    procedure(fricreg_errcode_fn), optional :: errcode
+    procedure(fricreg_errmsg_fn), optional :: errmsg
     call self%destroy()
     self%ptr = p
     self%c_free => free

@@ -24,9 +24,30 @@ module fricreg_c
   public :: c_int, c_double, c_size_t, c_int64_t, c_intptr_t, c_ptr, c_funptr, c_char, &
             c_null_ptr, c_null_char, c_associated, c_f_pointer, c_loc, c_funloc
   public :: fricreg_c_string, fricreg_ptr_to_handle, fricreg_handle_to_ptr
+  ! For module fricreg and the F77 entry points (module fricreg does not re-export them).
+  public :: fricreg_free_fn, fricreg_errcode_fn, fricreg_errmsg_fn, fricreg_f77_created, &
+            fricreg_f77_release, fricreg_f77_last_error
 
   interface
     include 'fricreg_h.inc'
+  end interface
+
+  ! What every C object type has besides its own calls: a release, and its last error.
+  abstract interface
+    subroutine fricreg_free_fn(handle) bind(C)
+      import :: c_ptr
+      type(c_ptr), value :: handle
+    end subroutine
+    function fricreg_errcode_fn(handle) bind(C)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: handle
+      integer(c_int) :: fricreg_errcode_fn
+    end function
+    function fricreg_errmsg_fn(handle) bind(C)
+      import :: c_ptr
+      type(c_ptr), value :: handle
+      type(c_ptr) :: fricreg_errmsg_fn
+    end function
   end interface
 
 contains
@@ -71,5 +92,40 @@ contains
     type(c_ptr) :: p
     p = transfer(int(h, c_intptr_t), c_null_ptr)
   end function fricreg_handle_to_ptr
+
+  ! ---- For the F77 entry points: handles as INTEGER*8, statuses as default INTEGER ----------
+
+  !> After a create that returned status with the new object p: h takes p only on success.
+  !> Returns the status as a default integer, for STAT.
+  integer function fricreg_f77_created(status, p, h) result(stat)
+    integer(c_int), intent(in) :: status
+    type(c_ptr), intent(in) :: p
+    integer(c_int64_t), intent(inout) :: h
+    stat = int(status)
+    if (status == FRICREG_OK) h = fricreg_ptr_to_handle(p)
+  end function fricreg_f77_created
+
+  !> Release the object of handle h with free (its C release; h = 0 does nothing) and set
+  !> h = 0. Returns FRICREG_OK, for STAT.
+  integer function fricreg_f77_release(h, free) result(stat)
+    integer(c_int64_t), intent(inout) :: h
+    procedure(fricreg_free_fn) :: free
+    call free(fricreg_handle_to_ptr(h))
+    h = 0
+    stat = int(FRICREG_OK)
+  end function fricreg_f77_release
+
+  !> Code and message of the last failure of the object of handle h, read with its C errcode
+  !> and errmsg; msg is blank-padded or truncated to its length. Returns FRICREG_OK, for STAT.
+  integer function fricreg_f77_last_error(h, errcode, errmsg, code, msg) result(stat)
+    integer(c_int64_t), intent(in) :: h
+    procedure(fricreg_errcode_fn) :: errcode
+    procedure(fricreg_errmsg_fn) :: errmsg
+    integer, intent(out) :: code
+    character(len=*), intent(out) :: msg
+    code = int(errcode(fricreg_handle_to_ptr(h)))
+    msg = fricreg_c_string(errmsg(fricreg_handle_to_ptr(h)))
+    stat = int(FRICREG_OK)
+  end function fricreg_f77_last_error
 
 end module fricreg_c
