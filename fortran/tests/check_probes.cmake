@@ -1,9 +1,11 @@
 # check_probes.cmake — the generated interfaces can catch drift, proved on probes (cmake -P).
 #   -DFC=<Fortran compiler> -DMODDIR=<fricreg's .mod folder> -DGENERATOR=gen_interfaces.cmake
 #   -DPROBES=<fortran/tests/probes> -DWORK=<scratch folder>
-# 1. probe_ok.f90 compiles against module fricreg_c (so a failure below is not a set-up fault);
+# 1. probe_ok.f90 compiles against module fricreg_c (so a failure below is not a set-up fault),
+#    and probe_public.f90, which names what the README says `use fricreg` gives;
 # 2. probe_arity.f90 (one argument too many) and probe_type.f90 (a default integer for a
-#    size_t) do not, each with the compiler's message for that fault;
+#    size_t) do not, each with the compiler's message for that fault, nor probe_private.f90,
+#    which names an internal helper of module fricreg;
 # 3. gen_interfaces.cmake refuses a header with a type it cannot spell (float), a variadic
 #    prototype, and two parameters one in Fortran (W, w), naming them, instead of writing a
 #    wrong interface.
@@ -24,10 +26,12 @@ function(compile_probe name out_result out_text)
   set(${out_text} "${out}${err}" PARENT_SCOPE)
 endfunction()
 
-compile_probe(probe_ok result text)
-if(NOT result EQUAL 0)
-  list(APPEND failures "probe_ok.f90 does not compile: ${text}")
-endif()
+foreach(probe probe_ok probe_public)
+  compile_probe(${probe} result text)
+  if(NOT result EQUAL 0)
+    list(APPEND failures "${probe}.f90 does not compile: ${text}")
+  endif()
+endforeach()
 # expect_refused(PROBE RESULT TEXT EXPECTED): PROBE must have failed (RESULT nonzero) with a
 # message matching EXPECTED, else a line in `failures`.
 function(expect_refused probe result text expected)
@@ -49,6 +53,9 @@ expect_refused(probe_arity.f90 "${result}" "${text}"
 compile_probe(probe_type result text)
 expect_refused(probe_type.f90 "${result}" "${text}"
                "Type mismatch in argument ...?m|type mismatch|does not match")
+compile_probe(probe_private result text)
+expect_refused(probe_private.f90 "${result}" "${text}"
+               "error_record.* not found in module|is PRIVATE|not a public entity|private")
 
 # The generator's own messages.
 set(expect_unknown_type "fricreg_probe_scale: parameter factor of type 'float' has no Fortran")
@@ -66,5 +73,6 @@ if(failures)
   list(JOIN failures "\n" text)
   message(FATAL_ERROR "${text}")
 endif()
-message(STATUS "all 6 probes behave: the interfaces catch a wrong arity and a wrong type, and "
-               "the generator refuses what it cannot spell")
+message(STATUS "all 8 probes behave: the interfaces catch a wrong arity and a wrong type, "
+               "module fricreg gives its public names only, and the generator refuses what it "
+               "cannot spell")
