@@ -20,7 +20,8 @@
 #   fricreg_X *, const fricreg_X *      type(c_ptr), value (the handle; c_null_ptr for NULL)
 #   fricreg_X **                        type(c_ptr), intent(inout) (create writes it)
 #   void *                              type(c_ptr), value
-#   fricreg_sim_observer (a callback)   type(c_funptr), value (c_funloc of a bind(C) function)
+#   a callback type of the header       type(c_funptr), value (c_funloc of a bind(C) function):
+#     (`typedef R (*fricreg_name)(...)`, such as fricreg_sim_observer)
 # Every pointer argument but a handle is `optional`: omitting it passes NULL, as C allows for
 # any pointer (the library answers FRICREG_ENULL where it needs one; f_eq and sticks may be
 # NULL on purpose). Results: int, size_t, double by value; const char * as type(c_ptr)
@@ -40,6 +41,13 @@ string(REGEX REPLACE "[ \t\r\n]+" " " text "${text}")
 string(REPLACE "[]" " @ARRAY@" text "${text}")
 string(REPLACE ";" " #END#" text "${text}")
 string(REGEX MATCHALL "FRICREG_API [^#]*#END#" decls "${text}")
+# Callback types, `typedef R (*fricreg_name)(...)`: passed as type(c_funptr), value.
+string(REGEX MATCHALL "typedef [^#(]*\\( ?\\* ?fricreg_[a-z0-9_]+ ?\\)" typedefs "${text}")
+set(callbacks "")
+foreach(typedef IN LISTS typedefs)
+  string(REGEX MATCH "fricreg_[a-z0-9_]+" callback "${typedef}")
+  list(APPEND callbacks "${callback}")
+endforeach()
 if(NOT decls)
   message(FATAL_ERROR "gen_interfaces.cmake: no FRICREG_API prototype in ${HEADER}")
 endif()
@@ -72,7 +80,7 @@ function(fortran_of kind ctype out_var)
     set(decl "integer(c_int64_t), value")
   elseif(ctype STREQUAL "void *")
     set(decl "type(c_ptr), value")
-  elseif(ctype STREQUAL "fricreg_sim_observer")
+  elseif(ctype IN_LIST callbacks)
     set(decl "type(c_funptr), value")
   elseif(ctype MATCHES "^(const )?fricreg_[a-z0-9_]+ \\*$")
     set(decl "type(c_ptr), value")
