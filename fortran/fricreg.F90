@@ -64,8 +64,7 @@ module fricreg
   public :: fricreg_object, fricreg_context, law_eval, fricreg_error_string, &
             fricreg_version_string
 #ifdef FRICREG_HAVE_SIM
-  include 'fricreg_sim_h_public.inc'
-  include 'fricreg_exact_h_public.inc'
+  include 'fricreg_drivers_h_public.inc'
   public :: fricreg_sim_observer
   public :: fricreg_simulation, fricreg_exact_solution, fricreg_integrator_string, &
             fricreg_integrator_id

@@ -1,9 +1,10 @@
-! fricreg_sim_c.f90 — module fricreg_sim_c: thin bind(C) interfaces to every function of
-! fricreg_sim.h (the GSL ODE drivers of the paper's three reference systems) and of
-! fricreg_exact.h (the exact solution of the oscillator).
+! fricreg_sim_c.f90 — module fricreg_sim_c: thin bind(C) interfaces to every function of the
+! public headers beside fricreg.h: fricreg_sim.h (the GSL ODE drivers of the paper's three
+! reference systems), fricreg_exact.h (the exact solution of the oscillator), and any header
+! added to the library's public list later.
 !
 ! As in module fricreg_c, the interfaces are generated from the C prototypes at build time
-! (fricreg_sim_h.inc, fricreg_exact_h.inc): argument for argument, scalars by value, arrays
+! (fricreg_drivers_h.inc): argument for argument, scalars by value, arrays
 ! dimension(*), the simulation or solution as type(c_ptr), size_t as integer(c_size_t),
 ! omitted pointer arguments passed as NULL; the docstrings of include/fricreg_sim.h and
 ! include/fricreg_exact.h apply unchanged. The idiomatic layer is types fricreg_simulation and
@@ -15,8 +16,7 @@ module fricreg_sim_c
                                          c_funptr, c_char
   implicit none
   private
-  include 'fricreg_sim_h_public.inc'
-  include 'fricreg_exact_h_public.inc'
+  include 'fricreg_drivers_h_public.inc'
   public :: fricreg_sim_observer
 
   abstract interface
@@ -37,8 +37,7 @@ module fricreg_sim_c
   end interface
 
   interface
-    include 'fricreg_sim_h.inc'
-    include 'fricreg_exact_h.inc'
+    include 'fricreg_drivers_h.inc'
   end interface
 
 end module fricreg_sim_c

@@ -1,15 +1,16 @@
-# gen_interfaces.cmake — the Fortran bind(C) interfaces, generated from a C header (cmake -P).
+# gen_interfaces.cmake — the Fortran bind(C) interfaces, generated from C headers (cmake -P).
 #
-#   cmake -DHEADER=include/fricreg.h -DOUT=fricreg_h.inc -DPUBLIC_OUT=fricreg_h_public.inc \
-#         -P gen_interfaces.cmake
+#   cmake "-DHEADERS=include/fricreg_sim.h|include/fricreg_exact.h" -DOUT=drivers.inc \
+#         -DPUBLIC_OUT=drivers_public.inc -P gen_interfaces.cmake
 #
-# Writes one interface body per `FRICREG_API` prototype of HEADER into OUT, for INCLUDE inside
-# an `interface` block (fricreg_c.f90, fricreg_sim_c.f90), and `public :: <those names>` into
-# PUBLIC_OUT, for the modules' explicit public lists. As FFTW generates fftw3.f03, the
-# Fortran side is derived from the C prototypes at build time, so it cannot drift from them.
-# Every C type the headers use has one Fortran spelling (the table below); a prototype with a
-# type that is not in the table, varargs, an unnamed parameter, or two parameter names that
-# differ only in case (one name to Fortran) stops the build, naming it.
+# Writes one interface body per `FRICREG_API` prototype of HEADERS (a |-separated list: a
+# CMake list would not survive the command line) into OUT, for INCLUDE inside an `interface`
+# block (fricreg_c.f90, fricreg_sim_c.f90), and `public :: <those names>` into PUBLIC_OUT, for
+# the modules' explicit public lists. As FFTW generates fftw3.f03, the Fortran side is derived
+# from the C prototypes at build time, so it cannot drift from them. Every C type the headers
+# use has one Fortran spelling (the table below); a prototype with a type that is not in the
+# table, varargs, an unnamed parameter, or two parameter names that differ only in case (one
+# name to Fortran) stops the build, naming it.
 #
 # The mapping relies on two rules of include/fricreg.h's conventions: an array is declared
 # `T name[]` and a single output `T *name`; a handle is a pointer to an opaque fricreg_* type.
@@ -27,30 +28,35 @@
 # NULL on purpose). Results: int, size_t, double by value; const char * as type(c_ptr)
 # (fricreg_c_string converts it); void makes a subroutine.
 cmake_minimum_required(VERSION 3.25)
-foreach(var HEADER OUT PUBLIC_OUT)
+foreach(var HEADERS OUT PUBLIC_OUT)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "gen_interfaces.cmake: -D${var}=... is required")
   endif()
 endforeach()
-get_filename_component(header_name "${HEADER}" NAME)
-file(READ "${HEADER}" text)
-string(REGEX REPLACE "/\\*([^*]|\\*+[^*/])*\\*+/" " " text "${text}")
-string(REGEX REPLACE "//[^\n]*" " " text "${text}")
-string(REGEX REPLACE "[ \t\r\n]+" " " text "${text}")
-# Brackets and semicolons confuse CMake lists: [] becomes @ARRAY@, a prototype ends at #END#.
-string(REPLACE "[]" " @ARRAY@" text "${text}")
-string(REPLACE ";" " #END#" text "${text}")
-string(REGEX MATCHALL "FRICREG_API [^#]*#END#" decls "${text}")
-# Callback types, `typedef R (*fricreg_name)(...)`: passed as type(c_funptr), value.
-string(REGEX MATCHALL "typedef [^#(]*\\( ?\\* ?fricreg_[a-z0-9_]+ ?\\)" typedefs "${text}")
+string(REPLACE "|" ";" HEADERS "${HEADERS}")
+
+# read_header(PATH VAR): the header without comments, white space folded, `[]` as @ARRAY@ and
+# `;` as #END# (brackets and semicolons confuse CMake lists).
+function(read_header path out_var)
+  file(READ "${path}" text)
+  string(REGEX REPLACE "/\\*([^*]|\\*+[^*/])*\\*+/" " " text "${text}")
+  string(REGEX REPLACE "//[^\n]*" " " text "${text}")
+  string(REGEX REPLACE "[ \t\r\n]+" " " text "${text}")
+  string(REPLACE "[]" " @ARRAY@" text "${text}")
+  string(REPLACE ";" " #END#" text "${text}")
+  set(${out_var} "${text}" PARENT_SCOPE)
+endfunction()
+
+# Callback types of any of the headers, `typedef R (*fricreg_name)(...)`: type(c_funptr).
 set(callbacks "")
-foreach(typedef IN LISTS typedefs)
-  string(REGEX MATCH "fricreg_[a-z0-9_]+" callback "${typedef}")
-  list(APPEND callbacks "${callback}")
+foreach(header IN LISTS HEADERS)
+  read_header("${header}" text)
+  string(REGEX MATCHALL "typedef [^#(]*\\( ?\\* ?fricreg_[a-z0-9_]+ ?\\)" typedefs "${text}")
+  foreach(typedef IN LISTS typedefs)
+    string(REGEX MATCH "fricreg_[a-z0-9_]+" callback "${typedef}")
+    list(APPEND callbacks "${callback}")
+  endforeach()
 endforeach()
-if(NOT decls)
-  message(FATAL_ERROR "gen_interfaces.cmake: no FRICREG_API prototype in ${HEADER}")
-endif()
 
 # fortran_of(KIND CTYPE VAR): the declaration of one argument (KIND arg) or result (KIND
 # result) of C type CTYPE (normalized: "const double @ARRAY@", "fricreg_ctx *", ...).
@@ -155,119 +161,130 @@ endfunction()
 
 set(body "")
 set(count 0)
-foreach(decl IN LISTS decls)
-  if(NOT decl MATCHES "^FRICREG_API (.*[^a-z0-9_])(fricreg_[a-z0-9_]+) ?\\((.*)\\) ?#END#$")
-    message(FATAL_ERROR "gen_interfaces.cmake: ${header_name}: cannot read '${decl}'")
-  endif()
-  set(fname "${CMAKE_MATCH_2}")
-  string(STRIP "${CMAKE_MATCH_1}" ret)
-  string(STRIP "${CMAKE_MATCH_3}" params)
-  string(REGEX REPLACE " ?\\* ?" " *" ret "${ret}")
-  string(REPLACE "* *" "**" ret "${ret}")
-  set(result_decl "")
-  if(NOT ret STREQUAL "void")
-    fortran_of(result "${ret}" result_decl)
-    if(result_decl STREQUAL "")
-      message(FATAL_ERROR "gen_interfaces.cmake: ${header_name}: ${fname} returns '${ret}', "
-                          "which has no Fortran spelling in gen_interfaces.cmake")
+set(header_names "")
+foreach(header IN LISTS HEADERS)
+  get_filename_component(header_name "${header}" NAME)
+  list(APPEND header_names "${header_name}")
+  read_header("${header}" text)
+  string(REGEX MATCHALL "FRICREG_API [^#]*#END#" decls "${text}")
+  foreach(decl IN LISTS decls)
+    if(NOT decl MATCHES "^FRICREG_API (.*[^a-z0-9_])(fricreg_[a-z0-9_]+) ?\\((.*)\\) ?#END#$")
+      message(FATAL_ERROR "gen_interfaces.cmake: ${header_name}: cannot read '${decl}'")
     endif()
-  endif()
-  set(names "")
-  set(lines "")
-  set(lower_names "")
-  if(NOT params STREQUAL "void")
-    string(REPLACE "," ";" plist "${params}")
-    foreach(p IN LISTS plist)
-      string(STRIP "${p}" p)
-      if(p STREQUAL "...")
-        message(FATAL_ERROR "gen_interfaces.cmake: ${header_name}: ${fname} is variadic, "
-                            "which Fortran cannot call")
+    set(fname "${CMAKE_MATCH_2}")
+    string(STRIP "${CMAKE_MATCH_1}" ret)
+    string(STRIP "${CMAKE_MATCH_3}" params)
+    string(REGEX REPLACE " ?\\* ?" " *" ret "${ret}")
+    string(REPLACE "* *" "**" ret "${ret}")
+    set(result_decl "")
+    if(NOT ret STREQUAL "void")
+      fortran_of(result "${ret}" result_decl)
+      if(result_decl STREQUAL "")
+        message(FATAL_ERROR "gen_interfaces.cmake: ${header_name}: ${fname} returns '${ret}', "
+                            "which has no Fortran spelling in gen_interfaces.cmake")
       endif()
-      # "const double v @ARRAY@" -> type "const double @ARRAY@", name "v";
-      # "fricreg_ctx **out" -> type "fricreg_ctx **", name "out".
-      if(NOT p MATCHES "^(.*[ *])([A-Za-z_][A-Za-z0-9_]*)( @ARRAY@)?$")
-        message(FATAL_ERROR "gen_interfaces.cmake: ${header_name}: ${fname}: cannot read "
-                            "parameter '${p}' (every parameter needs a name)")
-      endif()
-      set(pname "${CMAKE_MATCH_2}")
-      set(ptype "${CMAKE_MATCH_1}${CMAKE_MATCH_3}")
-      string(REGEX REPLACE " ?\\* ?" " *" ptype "${ptype}")
-      string(REPLACE "* *" "**" ptype "${ptype}")
-      string(REGEX REPLACE " +" " " ptype "${ptype}")
-      string(STRIP "${ptype}" ptype)
-      if(ptype MATCHES "^[a-z_]+$" AND pname MATCHES "^(int|double|size_t|void|const|char)$")
-        message(FATAL_ERROR "gen_interfaces.cmake: ${header_name}: ${fname}: parameter "
-                            "'${p}' has no name")
-      endif()
-      fortran_of(arg "${ptype}" pdecl)
-      if(pdecl STREQUAL "")
-        message(FATAL_ERROR "gen_interfaces.cmake: ${header_name}: ${fname}: parameter "
-                            "${pname} of type '${ptype}' has no Fortran spelling in "
-                            "gen_interfaces.cmake")
-      endif()
-      set(dims "")
-      if(pdecl MATCHES "^(.*)\\|(.*)$")
-        set(pdecl "${CMAKE_MATCH_1}")
-        set(dims "${CMAKE_MATCH_2}")
-      endif()
-      string(TOLOWER "${pname}" lower)
-      if(lower IN_LIST lower_names)
-        message(FATAL_ERROR "gen_interfaces.cmake: ${header_name}: ${fname}: two parameters "
-                            "named '${pname}' to Fortran, which does not tell case")
-      endif()
-      list(APPEND lower_names "${lower}")
-      list(APPEND names "${pname}")
-      string(APPEND lines "      ${pdecl} :: ${pname}${dims}\n")
+    endif()
+    set(names "")
+    set(lines "")
+    set(lower_names "")
+    if(NOT params STREQUAL "void")
+      string(REPLACE "," ";" plist "${params}")
+      foreach(p IN LISTS plist)
+        string(STRIP "${p}" p)
+        if(p STREQUAL "...")
+          message(FATAL_ERROR "gen_interfaces.cmake: ${header_name}: ${fname} is variadic, "
+                              "which Fortran cannot call")
+        endif()
+        # "const double v @ARRAY@" -> type "const double @ARRAY@", name "v";
+        # "fricreg_ctx **out" -> type "fricreg_ctx **", name "out".
+        if(NOT p MATCHES "^(.*[ *])([A-Za-z_][A-Za-z0-9_]*)( @ARRAY@)?$")
+          message(FATAL_ERROR "gen_interfaces.cmake: ${header_name}: ${fname}: cannot read "
+                              "parameter '${p}' (every parameter needs a name)")
+        endif()
+        set(pname "${CMAKE_MATCH_2}")
+        set(ptype "${CMAKE_MATCH_1}${CMAKE_MATCH_3}")
+        string(REGEX REPLACE " ?\\* ?" " *" ptype "${ptype}")
+        string(REPLACE "* *" "**" ptype "${ptype}")
+        string(REGEX REPLACE " +" " " ptype "${ptype}")
+        string(STRIP "${ptype}" ptype)
+        if(ptype MATCHES "^[a-z_]+$" AND pname MATCHES "^(int|double|size_t|void|const|char)$")
+          message(FATAL_ERROR "gen_interfaces.cmake: ${header_name}: ${fname}: parameter "
+                              "'${p}' has no name")
+        endif()
+        fortran_of(arg "${ptype}" pdecl)
+        if(pdecl STREQUAL "")
+          message(FATAL_ERROR "gen_interfaces.cmake: ${header_name}: ${fname}: parameter "
+                              "${pname} of type '${ptype}' has no Fortran spelling in "
+                              "gen_interfaces.cmake")
+        endif()
+        set(dims "")
+        if(pdecl MATCHES "^(.*)\\|(.*)$")
+          set(pdecl "${CMAKE_MATCH_1}")
+          set(dims "${CMAKE_MATCH_2}")
+        endif()
+        string(TOLOWER "${pname}" lower)
+        if(lower IN_LIST lower_names)
+          message(FATAL_ERROR "gen_interfaces.cmake: ${header_name}: ${fname}: two parameters "
+                              "named '${pname}' to Fortran, which does not tell case")
+        endif()
+        list(APPEND lower_names "${lower}")
+        list(APPEND names "${pname}")
+        string(APPEND lines "      ${pdecl} :: ${pname}${dims}\n")
+      endforeach()
+    endif()
+    list(JOIN names ", " arglist)
+    if(ret STREQUAL "void")
+      set(kw "subroutine")
+    else()
+      set(kw "function")
+    endif()
+    set(bind "bind(C, name='${fname}')")
+    string(LENGTH "    ${kw} ${fname}(${arglist}) ${bind}" head_len)
+    if(head_len LESS_EQUAL 100)
+      set(head "    ${kw} ${fname}(${arglist}) ${bind}\n")
+    else()
+      wrap_line("    ${kw} ${fname}(${arglist})" "    " "&" head)
+      string(REGEX REPLACE "\n$" " &\n        ${bind}\n" head "${head}")
+    endif()
+    string(REPLACE " @ARRAY@" "[]" c_params "${params}")
+    wrap_line("    !> ${header_name}: ${ret} ${fname}(${c_params})" "    " "!>" comment)
+    # Import only the kinds this interface uses: a blanket import could clash with a dummy.
+    set(kinds "")
+    string(REGEX MATCHALL "c_[a-z0-9_]+[)]" used "${lines}${result_decl}")
+    foreach(kind IN LISTS used)
+      string(REPLACE ")" "" kind "${kind}")
+      list(APPEND kinds "${kind}")
     endforeach()
-  endif()
-  list(JOIN names ", " arglist)
-  if(ret STREQUAL "void")
-    set(kw "subroutine")
-  else()
-    set(kw "function")
-  endif()
-  set(bind "bind(C, name='${fname}')")
-  string(LENGTH "    ${kw} ${fname}(${arglist}) ${bind}" head_len)
-  if(head_len LESS_EQUAL 100)
-    set(head "    ${kw} ${fname}(${arglist}) ${bind}\n")
-  else()
-    wrap_line("    ${kw} ${fname}(${arglist})" "    " "&" head)
-    string(REGEX REPLACE "\n$" " &\n        ${bind}\n" head "${head}")
-  endif()
-  string(REPLACE " @ARRAY@" "[]" c_params "${params}")
-  wrap_line("    !> ${header_name}: ${ret} ${fname}(${c_params})" "    " "!>" comment)
-  # Import only the kinds this interface uses: a blanket import could clash with a dummy.
-  set(kinds "")
-  string(REGEX MATCHALL "c_[a-z0-9_]+[)]" used "${lines}${result_decl}")
-  foreach(kind IN LISTS used)
-    string(REPLACE ")" "" kind "${kind}")
-    list(APPEND kinds "${kind}")
+    list(REMOVE_DUPLICATES kinds)
+    list(SORT kinds)
+    list(JOIN kinds ", " kinds)
+    set(import "")
+    if(NOT kinds STREQUAL "")
+      set(import "      import :: ${kinds}\n")
+    endif()
+    string(APPEND body "\n${comment}${head}${import}      implicit none\n${lines}")
+    if(NOT ret STREQUAL "void")
+      string(APPEND body "      ${result_decl} :: ${fname}\n")
+    endif()
+    string(APPEND body "    end ${kw} ${fname}\n")
+    list(APPEND functions "${fname}")
+    math(EXPR count "${count} + 1")
   endforeach()
-  list(REMOVE_DUPLICATES kinds)
-  list(SORT kinds)
-  list(JOIN kinds ", " kinds)
-  set(import "")
-  if(NOT kinds STREQUAL "")
-    set(import "      import :: ${kinds}\n")
-  endif()
-  string(APPEND body "\n${comment}${head}${import}      implicit none\n${lines}")
-  if(NOT ret STREQUAL "void")
-    string(APPEND body "      ${result_decl} :: ${fname}\n")
-  endif()
-  string(APPEND body "    end ${kw} ${fname}\n")
-  list(APPEND functions "${fname}")
-  math(EXPR count "${count} + 1")
 endforeach()
+list(JOIN header_names ", " from)
+if(count EQUAL 0)
+  message(FATAL_ERROR "gen_interfaces.cmake: no FRICREG_API prototype in ${from}")
+endif()
 
-set(content "! Generated by fortran/gen_interfaces.cmake from ${header_name}: do not edit.\n")
-string(APPEND content "! ${count} bind(C) interface bodies, for INCLUDE inside an interface block of a module\n")
-string(APPEND content "! that uses iso_c_binding's c_int, c_double, c_size_t, c_int64_t, c_ptr, c_funptr, c_char.\n")
-string(APPEND content "${body}")
+set(content "! Generated by fortran/gen_interfaces.cmake from ${from}: do not edit.\n")
+string(APPEND content "! ${count} bind(C) interface bodies, for INCLUDE inside an interface block\n")
+string(APPEND content "! of a module that uses the iso_c_binding kinds they import.\n${body}")
 
 # The public statement for the same names, for INCLUDE in a module's specification part.
 list(JOIN functions ", " joined)
 wrap_line("  public :: ${joined}" "  " "&" public)
-set(public_content "! Generated by fortran/gen_interfaces.cmake from ${header_name}: do not edit.\n${public}")
+set(public_content "! Generated by fortran/gen_interfaces.cmake from ${from}: do not edit.\n")
+string(APPEND public_content "${public}")
 
 include(${CMAKE_CURRENT_LIST_DIR}/write_if_changed.cmake)
 write_if_changed("${OUT}" "${content}")

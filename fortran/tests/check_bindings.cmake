@@ -1,7 +1,7 @@
 # check_bindings.cmake — every function the library exports has a Fortran bind(C) interface
 # (cmake -P; -DHEADERS=a.h|b.h -DSOURCES=a.f90|b.inc).
 #
-# The interfaces are generated from the headers fed to gen_interfaces.cmake, so they match the
+# The interfaces are generated from the public headers of include/, so they match the
 # prototypes by construction; what can still go wrong is a public header (or a function) that
 # never reaches the generator. HEADERS is every installed public header, SOURCES the thin-layer
 # modules and the generated interface files: a FRICREG_API function of any public header with
@@ -32,6 +32,6 @@ if(count EQUAL 0)
 endif()
 if(missing)
   message(FATAL_ERROR "C functions with no Fortran bind(C) interface: ${missing} "
-                      "(is their header in FRICREG_F_API_HEADERS of fortran/CMakeLists.txt?)")
+                      "(are their headers under include/ in the top-level FRICREG_PUBLIC_HEADERS?)")
 endif()
 message(STATUS "all ${count} public C functions have a Fortran bind(C) interface")

@@ -62,7 +62,7 @@ set(expect_unknown_type "fricreg_probe_scale: parameter factor of type 'float' h
 set(expect_variadic "fricreg_probe_printf is variadic")
 set(expect_case "fricreg_probe_scale: two parameters named 'w' to Fortran")
 foreach(probe unknown_type variadic case)
-  execute_process(COMMAND "${CMAKE_COMMAND}" "-DHEADER=${PROBES}/probe_${probe}.h"
+  execute_process(COMMAND "${CMAKE_COMMAND}" "-DHEADERS=${PROBES}/probe_${probe}.h"
                           "-DOUT=${WORK}/probe_${probe}.inc" "-DPUBLIC_OUT=${WORK}/probe_pub.inc"
                           -P "${GENERATOR}"
                   RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE err)
