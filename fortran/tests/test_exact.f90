@@ -103,5 +103,6 @@ program test_exact
              'destroy, twice, empties the object')
   call check_status(ex%dissipation(D), FRICREG_ENULL, 'dissipation after destroy')
   call check(size(D) == 2, 'D untouched on failure')
+  deallocate (times, sticks, D) ! so that valgrind --leak-check sees no block of ours left
   call finish('test_exact')
 end program test_exact
