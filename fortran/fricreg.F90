@@ -9,15 +9,21 @@
 !   if (status /= FRICREG_OK) print '(a)', ctx%errmsg()
 !   call ctx%destroy()
 !
-! What `use fricreg` gives:
+! The module is private by default. What `use fricreg` gives (the public lists below):
 !   - every constant of the C headers (FRICREG_OK, FRICREG_LAW_QUINN, ...), generated from
-!     them at build time (module fricreg_constants), and the iso_c_binding kinds c_int,
-!     c_double, c_size_t, c_int64_t, c_ptr;
-!   - every C function by its C name, bound argument for argument (modules fricreg_c and
-!     fricreg_sim_c: scalars by value, arrays dimension(*) with the count passed, handles as
-!     type(c_ptr));
-!   - the idiomatic layer below: type fricreg_context (and fricreg_simulation, with the
-!     drivers), law_eval, fricreg_error_string, fricreg_version_string.
+!     them at build time (module fricreg_constants);
+!   - every C function by its C name, with an interface generated from its prototype
+!     (modules fricreg_c and fricreg_sim_c: scalars by value, arrays dimension(*) with the
+!     count passed, handles as type(c_ptr), omitted pointer arguments passed as NULL), the
+!     abstract interface fricreg_sim_observer, and fricreg_c_string, fricreg_ptr_to_handle,
+!     fricreg_handle_to_ptr;
+!   - the iso_c_binding names used with them: c_int, c_double, c_size_t, c_int64_t,
+!     c_intptr_t, c_ptr, c_funptr, c_char, c_null_ptr, c_null_funptr, c_null_char,
+!     c_associated, c_f_pointer, c_loc, c_funloc;
+!   - the idiomatic layer below: the types fricreg_context, fricreg_simulation and
+!     fricreg_exact_solution (the last two with the drivers), their common parent
+!     fricreg_object, the generic law_eval, and fricreg_error_string, fricreg_version_string,
+!     fricreg_integrator_string, fricreg_integrator_id.
 !
 ! Conventions of the idiomatic layer:
 !   - Every procedure that can fail is a function returning a status, integer(c_int):
@@ -38,41 +44,69 @@
 !     handle and leaves b empty; calls on an empty object return FRICREG_ENULL.
 !   - One object must not be used from two threads at once; separate objects may.
 module fricreg
-  use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_int64_t, c_ptr, &
-                                         c_funptr, c_char, c_null_ptr, c_null_funptr, &
-                                         c_null_char, c_associated, c_funloc
+  use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_int64_t, c_intptr_t, &
+                                         c_ptr, c_funptr, c_char, c_null_ptr, c_null_funptr, &
+                                         c_null_char, c_associated, c_f_pointer, c_loc, c_funloc
   use fricreg_c
 #ifdef FRICREG_HAVE_SIM
   use fricreg_sim_c
 #endif
   implicit none
-  public
-  private :: error_record, fail, not_created, set_failed, check_size, as_size, message_of, &
-             ctx_create, ctx_destroy, ctx_final, ctx_assign, ctx_is_created, ctx_handle, &
-             ctx_size, ctx_set_law, ctx_set_bounds, ctx_set_coupling_diagonal, &
-             ctx_set_coupling_dense, ctx_eval, ctx_get_stat, ctx_reset_stats, ctx_errcode, &
-             ctx_errmsg, law_eval_scalar, law_eval_array
+  private
 
-  !> A failure detected in Fortran (a size mismatch, an object not created), kept beside the
-  !> C library's own record; `last` says which of the two is the more recent.
+  ! ---- Public: the C layer, re-exported (lists generated from the headers) ------------------
+  include 'fricreg_constants_public.inc'
+  include 'fricreg_h_public.inc'
+  public :: c_int, c_double, c_size_t, c_int64_t, c_intptr_t, c_ptr, c_funptr, c_char, &
+            c_null_ptr, c_null_funptr, c_null_char, c_associated, c_f_pointer, c_loc, c_funloc
+  public :: fricreg_c_string, fricreg_ptr_to_handle, fricreg_handle_to_ptr
+  ! ---- Public: the idiomatic layer ------------------------------------------------------------
+  public :: fricreg_object, fricreg_context, law_eval, fricreg_error_string, &
+            fricreg_version_string
+#ifdef FRICREG_HAVE_SIM
+  include 'fricreg_drivers_h_public.inc'
+  public :: fricreg_sim_observer
+  public :: fricreg_simulation, fricreg_exact_solution, fricreg_integrator_string, &
+            fricreg_integrator_id
+#endif
+
+  !> A failure detected in Fortran (a size mismatch, an object not created, or a C failure the
+  !> C object does not record), kept beside the C library's own record; `last` says which of
+  !> the two is the more recent.
   type :: error_record
     integer(c_int) :: code = FRICREG_OK
     logical :: last = .false.
     character(len=:), allocatable :: msg
   end type
 
-  !> m coupled contacts z'' = a_free + W f (Sec. 3.3): law, eps, bounds mun, coupling W.
-  !> Holds a fricreg_ctx; see include/fricreg.h for the meaning of every setting.
-  type :: fricreg_context
+  !> The parent of every object of this module: the C handle it owns, the C functions that
+  !> release it and read its last error (set by each type's create, bound straight to the
+  !> generated bind(C) interfaces), and the error record of failures found in Fortran.
+  !> It gives its children destroy (safe twice), is_created, handle, errcode, errmsg and an
+  !> assignment that cannot free one handle twice.
+  type, abstract :: fricreg_object
     private
     type(c_ptr) :: ptr = c_null_ptr
-    integer(c_size_t) :: m = 0
     type(error_record) :: err
+    procedure(fricreg_free_fn), pointer, nopass :: c_free => null()
+    procedure(fricreg_errcode_fn), pointer, nopass :: c_errcode => null()
+    procedure(fricreg_errmsg_fn), pointer, nopass :: c_errmsg => null()
+  contains
+    procedure :: destroy => object_destroy
+    procedure :: is_created => object_is_created
+    procedure :: handle => object_handle
+    procedure :: errcode => object_errcode
+    procedure :: errmsg => object_errmsg
+    procedure, private :: object_assign
+    generic :: assignment(=) => object_assign
+    procedure, private :: adopt, ready, fail, record, unrecorded, check_size
+  end type
+
+  !> m coupled contacts z'' = a_free + W f (Sec. 3.3): law, eps, bounds mun, coupling W.
+  !> Holds a fricreg_ctx; see include/fricreg.h for the meaning of every setting.
+  type, extends(fricreg_object) :: fricreg_context
   contains
     procedure :: create => ctx_create
-    procedure :: destroy => ctx_destroy
-    procedure :: is_created => ctx_is_created
-    procedure :: handle => ctx_handle
     procedure :: size => ctx_size
     procedure :: set_law => ctx_set_law
     procedure :: set_bounds => ctx_set_bounds
@@ -81,10 +115,6 @@ module fricreg
     procedure :: eval => ctx_eval
     procedure :: get_stat => ctx_get_stat
     procedure :: reset_stats => ctx_reset_stats
-    procedure :: errcode => ctx_errcode
-    procedure :: errmsg => ctx_errmsg
-    procedure, private :: ctx_assign
-    generic :: assignment(=) => ctx_assign
     final :: ctx_final
   end type
 
@@ -99,21 +129,10 @@ module fricreg
   end interface
 
 #ifdef FRICREG_HAVE_SIM
-  private :: sim_create, sim_destroy, sim_final, sim_assign, sim_is_created, sim_handle, &
-             sim_set_param, sim_set_law, sim_set_integrator, sim_set_observer, sim_run, &
-             sim_run_cycles, sim_ndof, sim_ncontacts, sim_get_value, sim_get_state, &
-             sim_get_dissipation, sim_get_stick_fraction, sim_errcode, sim_errmsg
-
   !> One of the paper's reference systems on a GSL ODE driver (include/fricreg_sim.h).
-  type :: fricreg_simulation
-    private
-    type(c_ptr) :: ptr = c_null_ptr
-    type(error_record) :: err
+  type, extends(fricreg_object) :: fricreg_simulation
   contains
     procedure :: create => sim_create
-    procedure :: destroy => sim_destroy
-    procedure :: is_created => sim_is_created
-    procedure :: handle => sim_handle
     procedure :: set_param => sim_set_param
     procedure :: set_law => sim_set_law
     procedure :: set_integrator => sim_set_integrator
@@ -126,11 +145,21 @@ module fricreg
     procedure :: get_state => sim_get_state
     procedure :: get_dissipation => sim_get_dissipation
     procedure :: get_stick_fraction => sim_get_stick_fraction
-    procedure :: errcode => sim_errcode
-    procedure :: errmsg => sim_errmsg
-    procedure, private :: sim_assign
-    generic :: assignment(=) => sim_assign
     final :: sim_final
+  end type
+
+  !> The exact solution of the oscillator, Eq. (5), under (1)+(2) (include/fricreg_exact.h):
+  !> its switching times, state in closed form, and dissipation per cycle.
+  type, extends(fricreg_object) :: fricreg_exact_solution
+  contains
+    procedure :: solve => exact_solve
+    procedure :: state => exact_state
+    procedure :: nswitches => exact_nswitches
+    procedure :: switches => exact_switches
+    procedure :: ncycles => exact_ncycles
+    procedure :: dissipation => exact_dissipation
+    procedure :: stick_fraction => exact_stick_fraction
+    final :: exact_final
   end type
 #endif
 
@@ -151,37 +180,141 @@ contains
     text = fricreg_c_string(fricreg_version())
   end function fricreg_version_string
 
-  ! ---- Helpers -----------------------------------------------------------------------------
+  pure function as_size(n) result(m)
+    integer, intent(in) :: n
+    integer(c_size_t) :: m
+    m = int(n, c_size_t)
+  end function as_size
+
+  ! ---- fricreg_object: the handle and the error plumbing -----------------------------------
+
+  !> Take ownership of the new handle p (released with free; errcode and errmsg read its last
+  !> error, absent where the C object keeps none), releasing the one held before.
+  subroutine adopt(self, p, free, errcode, errmsg)
+    class(fricreg_object), intent(inout) :: self
+    type(c_ptr), intent(in) :: p
+    procedure(fricreg_free_fn) :: free
+    procedure(fricreg_errcode_fn), optional :: errcode
+    procedure(fricreg_errmsg_fn), optional :: errmsg
+    call self%destroy()
+    self%ptr = p
+    self%c_free => free
+    nullify (self%c_errcode, self%c_errmsg)
+    if (present(errcode)) self%c_errcode => errcode
+    if (present(errmsg)) self%c_errmsg => errmsg
+    self%err = error_record()
+  end subroutine adopt
+
+  !> Release the C object. Safe to call twice, and on an object never created.
+  subroutine object_destroy(self)
+    class(fricreg_object), intent(inout) :: self
+    if (c_associated(self%ptr) .and. associated(self%c_free)) call self%c_free(self%ptr)
+    self%ptr = c_null_ptr
+  end subroutine object_destroy
+
+  !> `lhs = rhs`: objects cannot be copied (C has no clone); lhs is released and left empty,
+  !> so no handle is ever owned twice.
+  subroutine object_assign(lhs, rhs)
+    class(fricreg_object), intent(inout) :: lhs
+    class(fricreg_object), intent(in) :: rhs
+    if (c_associated(lhs%ptr, rhs%ptr)) return ! a = a
+    call lhs%destroy()
+    lhs%err = error_record()
+  end subroutine object_assign
+
+  logical function object_is_created(self)
+    class(fricreg_object), intent(in) :: self
+    object_is_created = c_associated(self%ptr)
+  end function object_is_created
+
+  !> The C handle (fricreg_ctx *, fricreg_sim *, ...), for the bind(C) functions; still owned
+  !> by self.
+  type(c_ptr) function object_handle(self)
+    class(fricreg_object), intent(in) :: self
+    object_handle = self%ptr
+  end function object_handle
+
+  !> Status of the last failed call on this object (FRICREG_OK if none).
+  integer(c_int) function object_errcode(self)
+    class(fricreg_object), intent(in) :: self
+    object_errcode = FRICREG_OK
+    if (c_associated(self%ptr) .and. associated(self%c_errcode)) &
+      object_errcode = self%c_errcode(self%ptr)
+    if (self%err%last .or. object_errcode == FRICREG_OK) then
+      if (self%err%code /= FRICREG_OK) object_errcode = self%err%code
+    end if
+  end function object_errcode
+
+  !> Message of the last failed call, naming the argument, contact or value ('' if none): the
+  !> more recent of the Fortran record and the C object's.
+  function object_errmsg(self) result(msg)
+    class(fricreg_object), intent(in) :: self
+    character(len=:), allocatable :: msg
+    logical :: c_has_one
+    c_has_one = .false.
+    if (c_associated(self%ptr) .and. associated(self%c_errcode)) &
+      c_has_one = self%c_errcode(self%ptr) /= FRICREG_OK .and. associated(self%c_errmsg)
+    if (c_has_one .and. .not. self%err%last) then
+      msg = fricreg_c_string(self%c_errmsg(self%ptr))
+    else if (self%err%code /= FRICREG_OK) then
+      msg = self%err%msg
+    else
+      msg = ''
+    end if
+  end function object_errmsg
 
   !> Records a failure found on the Fortran side and returns its code.
-  function fail(err, code, msg) result(status)
-    type(error_record), intent(inout) :: err
+  function fail(self, code, msg) result(status)
+    class(fricreg_object), intent(inout) :: self
     integer(c_int), intent(in) :: code
     character(len=*), intent(in) :: msg
     integer(c_int) :: status
-    err%code = code
-    err%msg = msg
-    err%last = .true.
+    self%err%code = code
+    self%err%msg = msg
+    self%err%last = .true.
     status = code
   end function fail
 
-  function not_created(err, what, kind) result(status)
-    type(error_record), intent(inout) :: err
-    character(len=*), intent(in) :: what, kind
+  !> FRICREG_OK if the object holds a C object, else a recorded FRICREG_ENULL for call `what`
+  !> saying which object (noun) and what makes one (maker, default 'create').
+  function ready(self, what, noun, maker) result(status)
+    class(fricreg_object), intent(inout) :: self
+    character(len=*), intent(in) :: what, noun
+    character(len=*), intent(in), optional :: maker
     integer(c_int) :: status
-    status = fail(err, FRICREG_ENULL, what // ': the ' // kind // ' is not created (call create)')
-  end function not_created
+    status = FRICREG_OK
+    if (c_associated(self%ptr)) return
+    if (present(maker)) then
+      status = self%fail(FRICREG_ENULL, what // ': the ' // noun // ' is not created (call ' // &
+                         maker // ')')
+    else
+      status = self%fail(FRICREG_ENULL, what // ': the ' // noun // ' is not created (call create)')
+    end if
+  end function ready
 
-  !> After a C call: a failure there is now the most recent one.
-  subroutine set_failed(err, status)
-    type(error_record), intent(inout) :: err
+  !> After a C call that records its failures: a failure there is now the most recent one.
+  function record(self, status) result(same)
+    class(fricreg_object), intent(inout) :: self
     integer(c_int), intent(in) :: status
-    if (status /= FRICREG_OK) err%last = .false.
-  end subroutine set_failed
+    integer(c_int) :: same
+    if (status /= FRICREG_OK) self%err%last = .false.
+    same = status
+  end function record
+
+  !> After a C call that does not record (a getter on a const object, the exact solver): the
+  !> failure is recorded here, with the code's text.
+  function unrecorded(self, what, status) result(same)
+    class(fricreg_object), intent(inout) :: self
+    character(len=*), intent(in) :: what
+    integer(c_int), intent(in) :: status
+    integer(c_int) :: same
+    same = status
+    if (status /= FRICREG_OK) same = self%fail(status, what // ': ' // fricreg_error_string(status))
+  end function unrecorded
 
   !> FRICREG_OK if n == expected, else a recorded FRICREG_ESIZE naming the array.
-  function check_size(err, what, array, n, expected) result(status)
-    type(error_record), intent(inout) :: err
+  function check_size(self, what, array, n, expected) result(status)
+    class(fricreg_object), intent(inout) :: self
     character(len=*), intent(in) :: what, array
     integer, intent(in) :: n
     integer(c_size_t), intent(in) :: expected
@@ -190,27 +323,9 @@ contains
     status = FRICREG_OK
     if (int(n, c_size_t) /= expected) then
       write (buf, '(a, i0, a, i0)') ') = ', n, ', expected ', expected
-      status = fail(err, FRICREG_ESIZE, what // ': size(' // array // trim(buf))
+      status = self%fail(FRICREG_ESIZE, what // ': size(' // array // trim(buf))
     end if
   end function check_size
-
-  pure function as_size(n) result(m)
-    integer, intent(in) :: n
-    integer(c_size_t) :: m
-    m = int(n, c_size_t)
-  end function as_size
-
-  function message_of(err, c_code, c_msg) result(msg)
-    type(error_record), intent(in) :: err
-    integer(c_int), intent(in) :: c_code
-    type(c_ptr), intent(in) :: c_msg
-    character(len=:), allocatable :: msg
-    if (err%last .or. (c_code == FRICREG_OK .and. err%code /= FRICREG_OK)) then
-      msg = err%msg
-    else
-      msg = fricreg_c_string(c_msg)
-    end if
-  end function message_of
 
   ! ---- Laws --------------------------------------------------------------------------------
 
@@ -261,58 +376,28 @@ contains
     character(len=32) :: buf
     write (buf, '(i0)') m
     if (m < 1) then
-      status = fail(self%err, FRICREG_EINVAL, 'create: m = ' // trim(buf) // ' must be >= 1')
+      status = self%fail(FRICREG_EINVAL, 'create: m = ' // trim(buf) // ' must be >= 1')
       return
     end if
+    p = c_null_ptr
     status = fricreg_ctx_create(as_size(m), p)
     if (status /= FRICREG_OK) then
-      status = fail(self%err, status, 'create: m = ' // trim(buf) // ': ' // &
-                    fricreg_error_string(status))
+      status = self%fail(status, 'create: m = ' // trim(buf) // ': ' // &
+                         fricreg_error_string(status))
       return
     end if
-    call fricreg_ctx_free(self%ptr)
-    self%ptr = p
-    self%m = fricreg_ctx_size(p)
-    self%err = error_record()
+    call self%adopt(p, fricreg_ctx_free, fricreg_ctx_errcode, fricreg_ctx_errmsg)
   end function ctx_create
-
-  !> Release the C context. Safe to call twice, and on an object never created.
-  subroutine ctx_destroy(self)
-    class(fricreg_context), intent(inout) :: self
-    call fricreg_ctx_free(self%ptr) ! fricreg_ctx_free(NULL) does nothing
-    self%ptr = c_null_ptr
-    self%m = 0
-  end subroutine ctx_destroy
 
   subroutine ctx_final(self)
     type(fricreg_context), intent(inout) :: self
-    call ctx_destroy(self)
+    call self%destroy()
   end subroutine ctx_final
-
-  !> `lhs = rhs`: contexts cannot be copied; lhs is released and left empty.
-  subroutine ctx_assign(lhs, rhs)
-    class(fricreg_context), intent(inout) :: lhs
-    class(fricreg_context), intent(in) :: rhs
-    if (c_associated(lhs%ptr, rhs%ptr)) return ! a = a
-    call ctx_destroy(lhs)
-    lhs%err = error_record()
-  end subroutine ctx_assign
-
-  logical function ctx_is_created(self)
-    class(fricreg_context), intent(in) :: self
-    ctx_is_created = c_associated(self%ptr)
-  end function ctx_is_created
-
-  !> The C handle (fricreg_ctx *), for the bind(C) functions; still owned by self.
-  type(c_ptr) function ctx_handle(self)
-    class(fricreg_context), intent(in) :: self
-    ctx_handle = self%ptr
-  end function ctx_handle
 
   !> Number of contacts m (0 if not created).
   integer function ctx_size(self)
     class(fricreg_context), intent(in) :: self
-    ctx_size = int(self%m)
+    ctx_size = int(fricreg_ctx_size(self%ptr))
   end function ctx_size
 
   !> Law (enum fricreg_law: FRICREG_LAW_*) and eps > 0 (velocity units).
@@ -322,12 +407,8 @@ contains
     integer(c_int), intent(in) :: law
     real(c_double), intent(in) :: eps
     integer(c_int) :: status
-    if (.not. c_associated(self%ptr)) then
-      status = not_created(self%err, 'set_law', 'context')
-      return
-    end if
-    status = fricreg_ctx_set_law(self%ptr, law, eps)
-    call set_failed(self%err, status)
+    status = self%ready('set_law', 'context')
+    if (status == FRICREG_OK) status = self%record(fricreg_ctx_set_law(self%ptr, law, eps))
   end function ctx_set_law
 
   !> Friction bounds mun(m) = mu_i N_i >= 0. FRICREG_ESIZE; FRICREG_EINVAL; FRICREG_ENONFINITE.
@@ -335,14 +416,11 @@ contains
     class(fricreg_context), intent(inout) :: self
     real(c_double), intent(in), contiguous :: mun(:)
     integer(c_int) :: status
-    if (.not. c_associated(self%ptr)) then
-      status = not_created(self%err, 'set_bounds', 'context')
-      return
-    end if
-    status = check_size(self%err, 'set_bounds', 'mun', size(mun), self%m)
-    if (status /= FRICREG_OK) return
-    status = fricreg_ctx_set_bounds(self%ptr, self%m, mun)
-    call set_failed(self%err, status)
+    integer(c_size_t) :: m
+    m = fricreg_ctx_size(self%ptr)
+    status = self%ready('set_bounds', 'context')
+    if (status == FRICREG_OK) status = self%check_size('set_bounds', 'mun', size(mun), m)
+    if (status == FRICREG_OK) status = self%record(fricreg_ctx_set_bounds(self%ptr, m, mun))
   end function ctx_set_bounds
 
   !> Uncoupled contacts, W = diag(w), w(m) > 0 (inverse effective masses).
@@ -350,14 +428,12 @@ contains
     class(fricreg_context), intent(inout) :: self
     real(c_double), intent(in), contiguous :: w(:)
     integer(c_int) :: status
-    if (.not. c_associated(self%ptr)) then
-      status = not_created(self%err, 'set_coupling_diagonal', 'context')
-      return
-    end if
-    status = check_size(self%err, 'set_coupling_diagonal', 'w', size(w), self%m)
-    if (status /= FRICREG_OK) return
-    status = fricreg_ctx_set_coupling_diagonal(self%ptr, self%m, w)
-    call set_failed(self%err, status)
+    integer(c_size_t) :: m
+    m = fricreg_ctx_size(self%ptr)
+    status = self%ready('set_coupling_diagonal', 'context')
+    if (status == FRICREG_OK) status = self%check_size('set_coupling_diagonal', 'w', size(w), m)
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_ctx_set_coupling_diagonal(self%ptr, m, w))
   end function ctx_set_coupling_diagonal
 
   !> Coupled contacts: the Delassus matrix W(m, m), symmetric positive semidefinite. C reads
@@ -369,16 +445,12 @@ contains
     class(fricreg_context), intent(inout) :: self
     real(c_double), intent(in), contiguous :: W(:, :)
     integer(c_int) :: status
-    if (.not. c_associated(self%ptr)) then
-      status = not_created(self%err, 'set_coupling_dense', 'context')
-      return
-    end if
-    status = check_size(self%err, 'set_coupling_dense', 'W, 1', size(W, 1), self%m)
-    if (status == FRICREG_OK) &
-      status = check_size(self%err, 'set_coupling_dense', 'W, 2', size(W, 2), self%m)
-    if (status /= FRICREG_OK) return
-    status = fricreg_ctx_set_coupling_dense(self%ptr, self%m, W)
-    call set_failed(self%err, status)
+    integer(c_size_t) :: m
+    m = fricreg_ctx_size(self%ptr)
+    status = self%ready('set_coupling_dense', 'context')
+    if (status == FRICREG_OK) status = self%check_size('set_coupling_dense', 'W, 1', size(W, 1), m)
+    if (status == FRICREG_OK) status = self%check_size('set_coupling_dense', 'W, 2', size(W, 2), m)
+    if (status == FRICREG_OK) status = self%record(fricreg_ctx_set_coupling_dense(self%ptr, m, W))
   end function ctx_set_coupling_dense
 
   !> Friction forces f(m) of all contacts, z'' = a_free + W f, with the context's law
@@ -392,18 +464,16 @@ contains
     real(c_double), intent(inout), contiguous :: f(:)
     real(c_double), intent(inout), contiguous, optional :: f_eq(:)
     integer(c_int) :: status
-    if (.not. c_associated(self%ptr)) then
-      status = not_created(self%err, 'eval', 'context')
-      return
-    end if
-    status = check_size(self%err, 'eval', 'zdot', size(zdot), self%m)
-    if (status == FRICREG_OK) status = check_size(self%err, 'eval', 'a_free', size(a_free), self%m)
-    if (status == FRICREG_OK) status = check_size(self%err, 'eval', 'f', size(f), self%m)
+    integer(c_size_t) :: m
+    m = fricreg_ctx_size(self%ptr)
+    status = self%ready('eval', 'context')
+    if (status == FRICREG_OK) status = self%check_size('eval', 'zdot', size(zdot), m)
+    if (status == FRICREG_OK) status = self%check_size('eval', 'a_free', size(a_free), m)
+    if (status == FRICREG_OK) status = self%check_size('eval', 'f', size(f), m)
     if (status == FRICREG_OK .and. present(f_eq)) &
-      status = check_size(self%err, 'eval', 'f_eq', size(f_eq), self%m)
-    if (status /= FRICREG_OK) return
-    status = fricreg_ctx_eval(self%ptr, self%m, zdot, a_free, f, f_eq)
-    call set_failed(self%err, status)
+      status = self%check_size('eval', 'f_eq', size(f_eq), m)
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_ctx_eval(self%ptr, m, zdot, a_free, f, f_eq))
   end function ctx_eval
 
   !> One counter (FRICREG_STAT_*) into value. FRICREG_EINVAL for an unknown counter.
@@ -412,41 +482,15 @@ contains
     integer(c_int), intent(in) :: which
     integer(c_int64_t), intent(inout) :: value
     integer(c_int) :: status
-    if (.not. c_associated(self%ptr)) then
-      status = not_created(self%err, 'get_stat', 'context')
-      return
-    end if
-    status = fricreg_ctx_get_stat(self%ptr, which, value)
-    if (status /= FRICREG_OK) status = fail(self%err, status, 'get_stat: ' // &
-                                            fricreg_error_string(status))
+    status = self%ready('get_stat', 'context')
+    if (status == FRICREG_OK) &
+      status = self%unrecorded('get_stat', fricreg_ctx_get_stat(self%ptr, which, value))
   end function ctx_get_stat
 
   subroutine ctx_reset_stats(self)
     class(fricreg_context), intent(inout) :: self
     call fricreg_ctx_reset_stats(self%ptr) ! does nothing on NULL
   end subroutine ctx_reset_stats
-
-  !> Status of the last failed call on this object (FRICREG_OK if none).
-  integer(c_int) function ctx_errcode(self)
-    class(fricreg_context), intent(in) :: self
-    ctx_errcode = fricreg_ctx_errcode(self%ptr)
-    if (self%err%last .or. ctx_errcode == FRICREG_OK) then
-      if (self%err%code /= FRICREG_OK) ctx_errcode = self%err%code
-    end if
-  end function ctx_errcode
-
-  !> Message of the last failed call, naming the argument, contact or value ('' if none).
-  function ctx_errmsg(self) result(msg)
-    class(fricreg_context), intent(in) :: self
-    character(len=:), allocatable :: msg
-    if (c_associated(self%ptr)) then
-      msg = message_of(self%err, fricreg_ctx_errcode(self%ptr), fricreg_ctx_errmsg(self%ptr))
-    else if (self%err%code /= FRICREG_OK) then
-      msg = self%err%msg
-    else
-      msg = ''
-    end if
-  end function ctx_errmsg
 
 #ifdef FRICREG_HAVE_SIM
   ! ---- Simulations (fricreg_sim.h) ---------------------------------------------------------
@@ -474,49 +518,21 @@ contains
     integer(c_int) :: status
     type(c_ptr) :: p
     character(len=32) :: buf
+    p = c_null_ptr
     status = fricreg_sim_create(system, p)
     if (status /= FRICREG_OK) then
       write (buf, '(i0)') system
-      status = fail(self%err, status, 'create: system ' // trim(buf) // ': ' // &
-                    fricreg_error_string(status))
+      status = self%fail(status, 'create: system ' // trim(buf) // ': ' // &
+                         fricreg_error_string(status))
       return
     end if
-    call fricreg_sim_free(self%ptr)
-    self%ptr = p
-    self%err = error_record()
+    call self%adopt(p, fricreg_sim_free, fricreg_sim_errcode, fricreg_sim_errmsg)
   end function sim_create
-
-  !> Release the simulation. Safe to call twice.
-  subroutine sim_destroy(self)
-    class(fricreg_simulation), intent(inout) :: self
-    call fricreg_sim_free(self%ptr)
-    self%ptr = c_null_ptr
-  end subroutine sim_destroy
 
   subroutine sim_final(self)
     type(fricreg_simulation), intent(inout) :: self
-    call sim_destroy(self)
+    call self%destroy()
   end subroutine sim_final
-
-  !> `lhs = rhs`: simulations cannot be copied; lhs is released and left empty.
-  subroutine sim_assign(lhs, rhs)
-    class(fricreg_simulation), intent(inout) :: lhs
-    class(fricreg_simulation), intent(in) :: rhs
-    if (c_associated(lhs%ptr, rhs%ptr)) return ! a = a
-    call sim_destroy(lhs)
-    lhs%err = error_record()
-  end subroutine sim_assign
-
-  logical function sim_is_created(self)
-    class(fricreg_simulation), intent(in) :: self
-    sim_is_created = c_associated(self%ptr)
-  end function sim_is_created
-
-  !> The C handle (fricreg_sim *), for the bind(C) functions; still owned by self.
-  type(c_ptr) function sim_handle(self)
-    class(fricreg_simulation), intent(in) :: self
-    sim_handle = self%ptr
-  end function sim_handle
 
   !> One system parameter (FRICREG_PARAM_*); discards results. FRICREG_EINVAL for a parameter
   !> the system does not have or a value out of range; FRICREG_ENONFINITE.
@@ -525,12 +541,8 @@ contains
     integer(c_int), intent(in) :: param
     real(c_double), intent(in) :: value
     integer(c_int) :: status
-    if (.not. c_associated(self%ptr)) then
-      status = not_created(self%err, 'set_param', 'simulation')
-      return
-    end if
-    status = fricreg_sim_set_param(self%ptr, param, value)
-    call set_failed(self%err, status)
+    status = self%ready('set_param', 'simulation')
+    if (status == FRICREG_OK) status = self%record(fricreg_sim_set_param(self%ptr, param, value))
   end function sim_set_param
 
   !> Law (FRICREG_LAW_*) and eps > 0; eps = 0 selects the paper's rule (2 dt, or 10 omega dt
@@ -540,12 +552,8 @@ contains
     integer(c_int), intent(in) :: law
     real(c_double), intent(in) :: eps
     integer(c_int) :: status
-    if (.not. c_associated(self%ptr)) then
-      status = not_created(self%err, 'set_law', 'simulation')
-      return
-    end if
-    status = fricreg_sim_set_law(self%ptr, law, eps)
-    call set_failed(self%err, status)
+    status = self%ready('set_law', 'simulation')
+    if (status == FRICREG_OK) status = self%record(fricreg_sim_set_law(self%ptr, law, eps))
   end function sim_set_law
 
   !> Integrator (FRICREG_INT_*), step dt > 0, and rtol, atol (both omitted or 0: fixed step).
@@ -556,16 +564,13 @@ contains
     real(c_double), intent(in), optional :: rtol, atol
     integer(c_int) :: status
     real(c_double) :: r, a
-    if (.not. c_associated(self%ptr)) then
-      status = not_created(self%err, 'set_integrator', 'simulation')
-      return
-    end if
     r = 0.0_c_double
     a = 0.0_c_double
     if (present(rtol)) r = rtol
     if (present(atol)) a = atol
-    status = fricreg_sim_set_integrator(self%ptr, integrator, dt, r, a)
-    call set_failed(self%err, status)
+    status = self%ready('set_integrator', 'simulation')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_sim_set_integrator(self%ptr, integrator, dt, r, a))
   end function sim_set_integrator
 
   !> Install an observer (a bind(C) function with interface fricreg_sim_observer), called
@@ -579,16 +584,12 @@ contains
     integer(c_int) :: status
     type(c_funptr) :: fn
     type(c_ptr) :: u
-    if (.not. c_associated(self%ptr)) then
-      status = not_created(self%err, 'set_observer', 'simulation')
-      return
-    end if
     fn = c_null_funptr
     u = c_null_ptr
     if (present(fricreg_observer)) fn = c_funloc(fricreg_observer)
     if (present(user)) u = user
-    status = fricreg_sim_set_observer(self%ptr, fn, u)
-    call set_failed(self%err, status)
+    status = self%ready('set_observer', 'simulation')
+    if (status == FRICREG_OK) status = self%record(fricreg_sim_set_observer(self%ptr, fn, u))
   end function sim_set_observer
 
   !> Integrate from t = 0 to t_end > 0 (see fricreg_sim_run for the returns).
@@ -596,12 +597,8 @@ contains
     class(fricreg_simulation), intent(inout) :: self
     real(c_double), intent(in) :: t_end
     integer(c_int) :: status
-    if (.not. c_associated(self%ptr)) then
-      status = not_created(self%err, 'run', 'simulation')
-      return
-    end if
-    status = fricreg_sim_run(self%ptr, t_end)
-    call set_failed(self%err, status)
+    status = self%ready('run', 'simulation')
+    if (status == FRICREG_OK) status = self%record(fricreg_sim_run(self%ptr, t_end))
   end function sim_run
 
   !> Integrate `cycles` >= 1 whole forcing cycles.
@@ -609,12 +606,9 @@ contains
     class(fricreg_simulation), intent(inout) :: self
     integer, intent(in) :: cycles
     integer(c_int) :: status
-    if (.not. c_associated(self%ptr)) then
-      status = not_created(self%err, 'run_cycles', 'simulation')
-      return
-    end if
-    status = fricreg_sim_run_cycles(self%ptr, int(cycles, c_int))
-    call set_failed(self%err, status)
+    status = self%ready('run_cycles', 'simulation')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_sim_run_cycles(self%ptr, int(cycles, c_int)))
   end function sim_run_cycles
 
   !> Number of bodies: 1 (oscillator), n (chain), 2 (two blocks); 0 if not created.
@@ -635,13 +629,9 @@ contains
     integer(c_int), intent(in) :: which
     real(c_double), intent(inout) :: value
     integer(c_int) :: status
-    if (.not. c_associated(self%ptr)) then
-      status = not_created(self%err, 'get_value', 'simulation')
-      return
-    end if
-    status = fricreg_sim_get_value(self%ptr, which, value)
-    if (status /= FRICREG_OK) status = fail(self%err, status, 'get_value: ' // &
-                                            fricreg_error_string(status))
+    status = self%ready('get_value', 'simulation')
+    if (status == FRICREG_OK) &
+      status = self%unrecorded('get_value', fricreg_sim_get_value(self%ptr, which, value))
   end function sim_get_value
 
   !> State at the end of the last run (the initial state before one): x(ndof), v(ndof).
@@ -650,17 +640,12 @@ contains
     real(c_double), intent(inout), contiguous :: x(:), v(:)
     integer(c_int) :: status
     integer(c_size_t) :: n
-    if (.not. c_associated(self%ptr)) then
-      status = not_created(self%err, 'get_state', 'simulation')
-      return
-    end if
     n = fricreg_sim_ndof(self%ptr)
-    status = check_size(self%err, 'get_state', 'x', size(x), n)
-    if (status == FRICREG_OK) status = check_size(self%err, 'get_state', 'v', size(v), n)
-    if (status /= FRICREG_OK) return
-    status = fricreg_sim_get_state(self%ptr, n, x, v)
-    if (status /= FRICREG_OK) status = fail(self%err, status, 'get_state: ' // &
-                                            fricreg_error_string(status))
+    status = self%ready('get_state', 'simulation')
+    if (status == FRICREG_OK) status = self%check_size('get_state', 'x', size(x), n)
+    if (status == FRICREG_OK) status = self%check_size('get_state', 'v', size(v), n)
+    if (status == FRICREG_OK) &
+      status = self%unrecorded('get_state', fricreg_sim_get_state(self%ptr, n, x, v))
   end function sim_get_state
 
   !> D per whole forcing cycle of the last run, D_k = -int sum_i w_i zdot_i f_i dt (w_i = 1/n
@@ -671,21 +656,16 @@ contains
     integer(c_int) :: status
     real(c_double) :: cycles
     real(c_double), allocatable :: tmp(:)
-    if (.not. c_associated(self%ptr)) then
-      status = not_created(self%err, 'get_dissipation', 'simulation')
-      return
-    end if
     cycles = 0.0_c_double
+    status = self%ready('get_dissipation', 'simulation')
+    if (status /= FRICREG_OK) return
     status = fricreg_sim_get_value(self%ptr, FRICREG_VALUE_CYCLES, cycles)
     if (status == FRICREG_OK) then
       allocate (tmp(max(1, int(cycles))))
       status = fricreg_sim_get_dissipation(self%ptr, int(cycles, c_size_t), tmp)
     end if
-    if (status /= FRICREG_OK) then
-      status = fail(self%err, status, 'get_dissipation: ' // fricreg_error_string(status))
-      return
-    end if
-    D = tmp(1:int(cycles))
+    status = self%unrecorded('get_dissipation', status)
+    if (status == FRICREG_OK) D = tmp(1:int(cycles))
   end function sim_get_dissipation
 
   !> Per contact, the fraction of the last whole cycle with |zdot_i| < eps: frac(ncontacts).
@@ -694,38 +674,114 @@ contains
     real(c_double), intent(inout), contiguous :: frac(:)
     integer(c_int) :: status
     integer(c_size_t) :: m
-    if (.not. c_associated(self%ptr)) then
-      status = not_created(self%err, 'get_stick_fraction', 'simulation')
-      return
-    end if
     m = fricreg_sim_ncontacts(self%ptr)
-    status = check_size(self%err, 'get_stick_fraction', 'frac', size(frac), m)
-    if (status /= FRICREG_OK) return
-    status = fricreg_sim_get_stick_fraction(self%ptr, m, frac)
-    if (status /= FRICREG_OK) status = fail(self%err, status, 'get_stick_fraction: ' // &
-                                            fricreg_error_string(status))
+    status = self%ready('get_stick_fraction', 'simulation')
+    if (status == FRICREG_OK) status = self%check_size('get_stick_fraction', 'frac', size(frac), m)
+    if (status == FRICREG_OK) status = self%unrecorded('get_stick_fraction', &
+                                           fricreg_sim_get_stick_fraction(self%ptr, m, frac))
   end function sim_get_stick_fraction
 
-  integer(c_int) function sim_errcode(self)
-    class(fricreg_simulation), intent(in) :: self
-    sim_errcode = fricreg_sim_errcode(self%ptr)
-    if (self%err%last .or. sim_errcode == FRICREG_OK) then
-      if (self%err%code /= FRICREG_OK) sim_errcode = self%err%code
-    end if
-  end function sim_errcode
+  ! ---- Exact solution of the oscillator (fricreg_exact.h) ----------------------------------
+  ! Failures of solve carry the C solver's message; its getters record none (const in C).
 
-  !> Message of the last failed call: names the parameter, time or contact ('' if none).
-  function sim_errmsg(self) result(msg)
-    class(fricreg_simulation), intent(in) :: self
-    character(len=:), allocatable :: msg
-    if (c_associated(self%ptr)) then
-      msg = message_of(self%err, fricreg_sim_errcode(self%ptr), fricreg_sim_errmsg(self%ptr))
-    else if (self%err%code /= FRICREG_OK) then
-      msg = self%err%msg
+  !> Solve Eq. (5) under (1)+(2), x'' + x = f + a sin(omega t), from x(0) = x0, x'(0) = v0
+  !> over 0 <= t <= t_end (nondimensional, as in the paper). Replaces (and releases) any
+  !> solution self held; on failure keeps it, and errmsg names the argument or value.
+  !> FRICREG_EINVAL (omega <= 0, mun < 0, t_end <= 0 or above 10^6 cycles);
+  !> FRICREG_ENONFINITE; FRICREG_ENOMEM; FRICREG_EINTEGRATOR.
+  function exact_solve(self, a, omega, mun, x0, v0, t_end) result(status)
+    class(fricreg_exact_solution), intent(inout) :: self
+    real(c_double), intent(in) :: a, omega, mun, x0, v0, t_end
+    integer(c_int) :: status
+    type(c_ptr) :: p
+    p = c_null_ptr
+    status = self%unrecorded('solve', fricreg_exact_create(a, omega, mun, x0, v0, p))
+    if (status /= FRICREG_OK) return
+    status = fricreg_exact_run(p, t_end)
+    if (status == FRICREG_OK) then
+      call self%adopt(p, fricreg_exact_free, fricreg_exact_errcode, fricreg_exact_errmsg)
     else
-      msg = ''
+      status = self%fail(status, 'solve: ' // fricreg_c_string(fricreg_exact_errmsg(p)))
+      call fricreg_exact_free(p)
     end if
-  end function sim_errmsg
+  end function exact_solve
+
+  subroutine exact_final(self)
+    type(fricreg_exact_solution), intent(inout) :: self
+    call self%destroy()
+  end subroutine exact_final
+
+  !> Position x and velocity v at time t, 0 <= t <= t_end, in closed form.
+  !> FRICREG_EINVAL if t is outside [0, t_end].
+  function exact_state(self, t, x, v) result(status)
+    class(fricreg_exact_solution), intent(inout) :: self
+    real(c_double), intent(in) :: t
+    real(c_double), intent(inout) :: x, v
+    integer(c_int) :: status
+    status = self%ready('state', 'solution', 'solve')
+    if (status == FRICREG_OK) &
+      status = self%unrecorded('state', fricreg_exact_state(self%ptr, t, x, v))
+  end function exact_state
+
+  !> Number of switches (phase changes after t = 0) up to t_end; 0 if not solved.
+  integer function exact_nswitches(self)
+    class(fricreg_exact_solution), intent(in) :: self
+    exact_nswitches = int(fricreg_exact_nswitches(self%ptr))
+  end function exact_nswitches
+
+  !> Switching times, increasing, into times (reallocated to nswitches()); with sticks,
+  !> sticks(k) is .true. where the phase starting at times(k) is a stick, .false. for a slip.
+  function exact_switches(self, times, sticks) result(status)
+    class(fricreg_exact_solution), intent(inout) :: self
+    real(c_double), allocatable, intent(inout) :: times(:)
+    logical, allocatable, intent(inout), optional :: sticks(:)
+    integer(c_int) :: status
+    integer(c_size_t) :: n
+    real(c_double), allocatable :: t(:)
+    integer(c_int), allocatable :: s(:)
+    n = fricreg_exact_nswitches(self%ptr)
+    allocate (t(max(1_c_size_t, n)), s(max(1_c_size_t, n)))
+    status = self%ready('switches', 'solution', 'solve')
+    if (status == FRICREG_OK) &
+      status = self%unrecorded('switches', fricreg_exact_switches(self%ptr, n, t, s))
+    if (status /= FRICREG_OK) return
+    times = t(1:n)
+    if (present(sticks)) sticks = s(1:n) /= 0
+  end function exact_switches
+
+  !> Number of whole forcing cycles 2 pi/omega in [0, t_end]; 0 if not solved.
+  integer function exact_ncycles(self)
+    class(fricreg_exact_solution), intent(in) :: self
+    exact_ncycles = int(fricreg_exact_ncycles(self%ptr))
+  end function exact_ncycles
+
+  !> Dissipation D_k = -int x' f dt of each whole cycle, mun times the distance slid in it:
+  !> D is (re)allocated to ncycles().
+  function exact_dissipation(self, D) result(status)
+    class(fricreg_exact_solution), intent(inout) :: self
+    real(c_double), allocatable, intent(inout) :: D(:)
+    integer(c_int) :: status
+    integer(c_size_t) :: n
+    real(c_double), allocatable :: tmp(:)
+    n = fricreg_exact_ncycles(self%ptr)
+    allocate (tmp(max(1_c_size_t, n)))
+    status = self%ready('dissipation', 'solution', 'solve')
+    if (status == FRICREG_OK) &
+      status = self%unrecorded('dissipation', fricreg_exact_dissipation(self%ptr, n, tmp))
+    if (status == FRICREG_OK) D = tmp(1:n)
+  end function exact_dissipation
+
+  !> Fraction of time at rest within [t0, t1], 0 <= t0 < t1 <= t_end, into fraction.
+  !> FRICREG_EINVAL for a bad interval.
+  function exact_stick_fraction(self, t0, t1, fraction) result(status)
+    class(fricreg_exact_solution), intent(inout) :: self
+    real(c_double), intent(in) :: t0, t1
+    real(c_double), intent(inout) :: fraction
+    integer(c_int) :: status
+    status = self%ready('stick_fraction', 'solution', 'solve')
+    if (status == FRICREG_OK) status = self%unrecorded('stick_fraction', &
+                                       fricreg_exact_stick_fraction(self%ptr, t0, t1, fraction))
+  end function exact_stick_fraction
 #endif
 
 end module fricreg

@@ -74,8 +74,8 @@ subroutine frctxc(m, h, stat)
     stat = int(FRICREG_EINVAL)
     return
   end if
-  stat = int(fricreg_ctx_create(int(m, c_size_t), p))
-  if (stat == FRICREG_OK) h = fricreg_ptr_to_handle(p)
+  p = c_null_ptr
+  stat = fricreg_f77_created(fricreg_ctx_create(int(m, c_size_t), p), p, h)
 end subroutine frctxc
 
 !> FRCTXF(H, STAT): release the context H and set H = 0; H = 0 does nothing.
@@ -84,9 +84,7 @@ subroutine frctxf(h, stat)
   implicit none
   integer(c_int64_t), intent(inout) :: h
   integer, intent(out) :: stat
-  call fricreg_ctx_free(fricreg_handle_to_ptr(h))
-  h = 0
-  stat = int(FRICREG_OK)
+  stat = fricreg_f77_release(h, fricreg_ctx_free)
 end subroutine frctxf
 
 !> FRLAW(H, LAW, EPS, STAT): select the law and eps (fricreg_ctx_set_law).
@@ -177,9 +175,5 @@ subroutine frerrm(h, code, msg, stat)
   integer, intent(out) :: code
   character(len=*), intent(out) :: msg
   integer, intent(out) :: stat
-  type(c_ptr) :: p
-  p = fricreg_handle_to_ptr(h)
-  code = int(fricreg_ctx_errcode(p))
-  msg = fricreg_c_string(fricreg_ctx_errmsg(p)) ! assignment pads or truncates to len(msg)
-  stat = int(FRICREG_OK)
+  stat = fricreg_f77_last_error(h, fricreg_ctx_errcode, fricreg_ctx_errmsg, code, msg)
 end subroutine frerrm

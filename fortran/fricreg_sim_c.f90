@@ -1,15 +1,23 @@
-! fricreg_sim_c.f90 — module fricreg_sim_c: thin bind(C) interfaces to every function of
-! fricreg_sim.h (the GSL ODE drivers of the paper's three reference systems).
+! fricreg_sim_c.f90 — module fricreg_sim_c: thin bind(C) interfaces to every function of the
+! public headers beside fricreg.h: fricreg_sim.h (the GSL ODE drivers of the paper's three
+! reference systems), fricreg_exact.h (the exact solution of the oscillator), and any header
+! added to the library's public list later.
 !
-! As in module fricreg_c: argument for argument, scalars by value, arrays dimension(*), the
-! simulation as type(c_ptr), size_t as integer(c_size_t); the docstrings of
-! include/fricreg_sim.h apply unchanged. The idiomatic layer is type fricreg_simulation in
-! module fricreg. Built only with the drivers (FRICREG_DRIVERS).
+! As in module fricreg_c, the interfaces are generated from the C prototypes at build time
+! (fricreg_drivers_h.inc): argument for argument, scalars by value, arrays
+! dimension(*), the simulation or solution as type(c_ptr), size_t as integer(c_size_t),
+! omitted pointer arguments passed as NULL; the docstrings of include/fricreg_sim.h and
+! include/fricreg_exact.h apply unchanged. The idiomatic layer is types fricreg_simulation and
+! fricreg_exact_solution in module fricreg. Built only with the drivers (FRICREG_DRIVERS).
+!
+! Public: the generated interfaces and the abstract interface fricreg_sim_observer.
 module fricreg_sim_c
-  use, intrinsic :: iso_c_binding, only: c_int, c_int64_t, c_double, c_size_t, c_ptr, c_funptr, &
-                                         c_char
+  use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_int64_t, c_ptr, &
+                                         c_funptr, c_char
   implicit none
-  public
+  private
+  include 'fricreg_drivers_h_public.inc'
+  public :: fricreg_sim_observer
 
   abstract interface
     !> An observer (fricreg_sim_observer): called after every accepted step, and once at t = 0,
@@ -29,233 +37,7 @@ module fricreg_sim_c
   end interface
 
   interface
-    !> GSL's name of an integrator, static storage; c_null_ptr if unknown.
-    function fricreg_integrator_name(integrator) bind(C, name='fricreg_integrator_name')
-      import :: c_int, c_ptr
-      integer(c_int), value :: integrator
-      type(c_ptr) :: fricreg_integrator_name
-    end function
-
-    !> The integrator named name (NUL-terminated: 'rk4'//c_null_char), or 0.
-    function fricreg_integrator_from_name(name) bind(C, name='fricreg_integrator_from_name')
-      import :: c_int, c_char
-      character(kind=c_char), intent(in) :: name(*)
-      integer(c_int) :: fricreg_integrator_from_name
-    end function
-
-    function fricreg_sim_create(system, sim) bind(C, name='fricreg_sim_create')
-      import :: c_int, c_ptr
-      integer(c_int), value :: system
-      type(c_ptr), intent(out) :: sim
-      integer(c_int) :: fricreg_sim_create
-    end function
-
-    subroutine fricreg_sim_free(sim) bind(C, name='fricreg_sim_free')
-      import :: c_ptr
-      type(c_ptr), value :: sim
-    end subroutine
-
-    function fricreg_sim_set_param(sim, param, value) bind(C, name='fricreg_sim_set_param')
-      import :: c_int, c_double, c_ptr
-      type(c_ptr), value :: sim
-      integer(c_int), value :: param
-      real(c_double), value :: value
-      integer(c_int) :: fricreg_sim_set_param
-    end function
-
-    function fricreg_sim_set_law(sim, law, eps) bind(C, name='fricreg_sim_set_law')
-      import :: c_int, c_double, c_ptr
-      type(c_ptr), value :: sim
-      integer(c_int), value :: law
-      real(c_double), value :: eps
-      integer(c_int) :: fricreg_sim_set_law
-    end function
-
-    function fricreg_sim_set_partition(sim, partition) &
-        bind(C, name='fricreg_sim_set_partition')
-      import :: c_int, c_ptr
-      type(c_ptr), value :: sim
-      integer(c_int), value :: partition
-      integer(c_int) :: fricreg_sim_set_partition
-    end function
-
-    function fricreg_sim_set_integrator(sim, integrator, dt, rtol, atol) &
-        bind(C, name='fricreg_sim_set_integrator')
-      import :: c_int, c_double, c_ptr
-      type(c_ptr), value :: sim
-      integer(c_int), value :: integrator
-      real(c_double), value :: dt, rtol, atol
-      integer(c_int) :: fricreg_sim_set_integrator
-    end function
-
-    !> fn = c_funloc(an observer), or c_null_funptr to remove it; user is passed back.
-    function fricreg_sim_set_observer(sim, fn, user) bind(C, name='fricreg_sim_set_observer')
-      import :: c_int, c_ptr, c_funptr
-      type(c_ptr), value :: sim
-      type(c_funptr), value :: fn
-      type(c_ptr), value :: user
-      integer(c_int) :: fricreg_sim_set_observer
-    end function
-
-    function fricreg_sim_run(sim, t_end) bind(C, name='fricreg_sim_run')
-      import :: c_int, c_double, c_ptr
-      type(c_ptr), value :: sim
-      real(c_double), value :: t_end
-      integer(c_int) :: fricreg_sim_run
-    end function
-
-    function fricreg_sim_run_cycles(sim, cycles) bind(C, name='fricreg_sim_run_cycles')
-      import :: c_int, c_ptr
-      type(c_ptr), value :: sim
-      integer(c_int), value :: cycles
-      integer(c_int) :: fricreg_sim_run_cycles
-    end function
-
-    function fricreg_sim_ndof(sim) bind(C, name='fricreg_sim_ndof')
-      import :: c_size_t, c_ptr
-      type(c_ptr), value :: sim
-      integer(c_size_t) :: fricreg_sim_ndof
-    end function
-
-    function fricreg_sim_ncontacts(sim) bind(C, name='fricreg_sim_ncontacts')
-      import :: c_size_t, c_ptr
-      type(c_ptr), value :: sim
-      integer(c_size_t) :: fricreg_sim_ncontacts
-    end function
-
-    function fricreg_sim_get_value(sim, which, value) bind(C, name='fricreg_sim_get_value')
-      import :: c_int, c_double, c_ptr
-      type(c_ptr), value :: sim
-      integer(c_int), value :: which
-      real(c_double), intent(inout) :: value ! written only on success
-      integer(c_int) :: fricreg_sim_get_value
-    end function
-
-    function fricreg_sim_get_state(sim, ndof, x, v) bind(C, name='fricreg_sim_get_state')
-      import :: c_int, c_double, c_size_t, c_ptr
-      type(c_ptr), value :: sim
-      integer(c_size_t), value :: ndof
-      real(c_double), intent(inout) :: x(*), v(*) ! written only on success
-      integer(c_int) :: fricreg_sim_get_state
-    end function
-
-    function fricreg_sim_get_dissipation(sim, ncycles, D) &
-        bind(C, name='fricreg_sim_get_dissipation')
-      import :: c_int, c_double, c_size_t, c_ptr
-      type(c_ptr), value :: sim
-      integer(c_size_t), value :: ncycles
-      real(c_double), intent(inout) :: D(*)
-      integer(c_int) :: fricreg_sim_get_dissipation
-    end function
-
-    function fricreg_sim_get_stick_fraction(sim, m, frac) &
-        bind(C, name='fricreg_sim_get_stick_fraction')
-      import :: c_int, c_double, c_size_t, c_ptr
-      type(c_ptr), value :: sim
-      integer(c_size_t), value :: m
-      real(c_double), intent(inout) :: frac(*)
-      integer(c_int) :: fricreg_sim_get_stick_fraction
-    end function
-
-    function fricreg_sim_errcode(sim) bind(C, name='fricreg_sim_errcode')
-      import :: c_int, c_ptr
-      type(c_ptr), value :: sim
-      integer(c_int) :: fricreg_sim_errcode
-    end function
-
-    !> Last error message, owned by sim (fricreg_c_string converts it).
-    function fricreg_sim_errmsg(sim) bind(C, name='fricreg_sim_errmsg')
-      import :: c_ptr
-      type(c_ptr), value :: sim
-      type(c_ptr) :: fricreg_sim_errmsg
-    end function
-
-    !> Copy the last error message into buf(len), NUL-terminated; returns its full length.
-    function fricreg_sim_errmsg_copy(sim, buf, len) bind(C, name='fricreg_sim_errmsg_copy')
-      import :: c_size_t, c_char, c_ptr
-      type(c_ptr), value :: sim
-      character(kind=c_char), intent(inout) :: buf(*)
-      integer(c_size_t), value :: len
-      integer(c_size_t) :: fricreg_sim_errmsg_copy
-    end function
-
-    !> The value in use of a system parameter: the paper's default or the value set.
-    function fricreg_sim_get_param(sim, param, value) bind(C, name='fricreg_sim_get_param')
-      import :: c_int, c_double, c_ptr
-      type(c_ptr), value :: sim
-      integer(c_int), value :: param
-      real(c_double), intent(inout) :: value ! written only on success
-      integer(c_int) :: fricreg_sim_get_param
-    end function
-
-    !> One integer counter of the last run (FRICREG_SIM_STAT_*).
-    function fricreg_sim_get_stat(sim, which, value) bind(C, name='fricreg_sim_get_stat')
-      import :: c_int, c_int64_t, c_ptr
-      type(c_ptr), value :: sim
-      integer(c_int), value :: which
-      integer(c_int64_t), intent(inout) :: value ! written only on success
-      integer(c_int) :: fricreg_sim_get_stat
-    end function
-
-    ! ---- The exact solution (fricreg_exact.h), since 1.1 ----------------------------------
-    function fricreg_exact_create(a, omega, mun, x0, v0, ex) bind(C, name='fricreg_exact_create')
-      import :: c_int, c_double, c_ptr
-      real(c_double), value :: a, omega, mun, x0, v0
-      type(c_ptr), intent(out) :: ex
-      integer(c_int) :: fricreg_exact_create
-    end function
-
-    function fricreg_exact_run(ex, t_end) bind(C, name='fricreg_exact_run')
-      import :: c_int, c_double, c_ptr
-      type(c_ptr), value :: ex
-      real(c_double), value :: t_end
-      integer(c_int) :: fricreg_exact_run
-    end function
-
-    function fricreg_exact_run_cycles(ex, cycles) bind(C, name='fricreg_exact_run_cycles')
-      import :: c_int, c_ptr
-      type(c_ptr), value :: ex
-      integer(c_int), value :: cycles
-      integer(c_int) :: fricreg_exact_run_cycles
-    end function
-
-    function fricreg_exact_errcode(ex) bind(C, name='fricreg_exact_errcode')
-      import :: c_int, c_ptr
-      type(c_ptr), value :: ex
-      integer(c_int) :: fricreg_exact_errcode
-    end function
-
-    !> Last error message, owned by ex (fricreg_c_string converts it).
-    function fricreg_exact_errmsg(ex) bind(C, name='fricreg_exact_errmsg')
-      import :: c_ptr
-      type(c_ptr), value :: ex
-      type(c_ptr) :: fricreg_exact_errmsg
-    end function
-
-    !> Copy the last error message into buf(len), NUL-terminated; returns its full length.
-    function fricreg_exact_errmsg_copy(ex, buf, len) bind(C, name='fricreg_exact_errmsg_copy')
-      import :: c_size_t, c_char, c_ptr
-      type(c_ptr), value :: ex
-      character(kind=c_char), intent(inout) :: buf(*)
-      integer(c_size_t), value :: len
-      integer(c_size_t) :: fricreg_exact_errmsg_copy
-    end function
-
-    function fricreg_exact_get_value(ex, which, value) bind(C, name='fricreg_exact_get_value')
-      import :: c_int, c_double, c_ptr
-      type(c_ptr), value :: ex
-      integer(c_int), value :: which
-      real(c_double), intent(inout) :: value
-      integer(c_int) :: fricreg_exact_get_value
-    end function
-
-    function fricreg_exact_get_stat(ex, which, value) bind(C, name='fricreg_exact_get_stat')
-      import :: c_int, c_int64_t, c_ptr
-      type(c_ptr), value :: ex
-      integer(c_int), value :: which
-      integer(c_int64_t), intent(inout) :: value
-      integer(c_int) :: fricreg_exact_get_stat
-    end function
+    include 'fricreg_drivers_h.inc'
   end interface
 
 end module fricreg_sim_c

@@ -13,8 +13,8 @@ subroutine frsimc(system, h, stat)
   integer(c_int64_t), intent(inout) :: h
   integer, intent(out) :: stat
   type(c_ptr) :: p
-  stat = int(fricreg_sim_create(int(system, c_int), p))
-  if (stat == FRICREG_OK) h = fricreg_ptr_to_handle(p)
+  p = c_null_ptr
+  stat = fricreg_f77_created(fricreg_sim_create(int(system, c_int), p), p, h)
 end subroutine frsimc
 
 !> FRSIMF(H, STAT): release the simulation H and set H = 0; H = 0 does nothing.
@@ -24,9 +24,7 @@ subroutine frsimf(h, stat)
   implicit none
   integer(c_int64_t), intent(inout) :: h
   integer, intent(out) :: stat
-  call fricreg_sim_free(fricreg_handle_to_ptr(h))
-  h = 0
-  stat = int(FRICREG_OK)
+  stat = fricreg_f77_release(h, fricreg_sim_free)
 end subroutine frsimf
 
 !> FRSIMP(H, PARAM, VALUE, STAT): one system parameter (FRICREG_PARAM_*).
@@ -165,9 +163,5 @@ subroutine frsime(h, code, msg, stat)
   integer, intent(out) :: code
   character(len=*), intent(out) :: msg
   integer, intent(out) :: stat
-  type(c_ptr) :: p
-  p = fricreg_handle_to_ptr(h)
-  code = int(fricreg_sim_errcode(p))
-  msg = fricreg_c_string(fricreg_sim_errmsg(p)) ! assignment pads or truncates to len(msg)
-  stat = int(FRICREG_OK)
+  stat = fricreg_f77_last_error(h, fricreg_sim_errcode, fricreg_sim_errmsg, code, msg)
 end subroutine frsime

@@ -119,7 +119,7 @@ enum fricreg_exact_stat {
                                                 scan grid, including the halved first steps */
     FRICREG_EXACT_STAT_ROOTS = 1,          /**< phase ends bracketed and refined: one per
                                                 switch, plus any phase of zero length */
-    FRICREG_EXACT_STAT_ROOT_ITERATIONS = 2 /**< Brent iterations, summed over the roots */
+    FRICREG_EXACT_STAT_ROOT_ITERS = 2 /**< Brent iterations, summed over the roots */
 };
 
 /** Read one counter (enum fricreg_exact_stat) into *value.

@@ -121,7 +121,7 @@ static int refine(fricreg_exact *ex, struct phase_probe *pr, double lo, double h
     int status = gsl_root_fsolver_set(s, &F, lo, hi);
     for (int it = 0; status == GSL_SUCCESS && it < BRENT_MAX_ITER; it++) {
         status = gsl_root_fsolver_iterate(s);
-        ex->stats[FRICREG_EXACT_STAT_ROOT_ITERATIONS]++;
+        ex->stats[FRICREG_EXACT_STAT_ROOT_ITERS]++;
         lo = gsl_root_fsolver_x_lower(s);
         hi = gsl_root_fsolver_x_upper(s);
         if (status == GSL_SUCCESS && gsl_root_test_interval(lo, hi, 0.0, 2.0 * GSL_DBL_EPSILON) == GSL_SUCCESS)

@@ -1,7 +1,8 @@
 #!/bin/sh
-# Installs the build into a temporary prefix, then builds and runs three consumers against
+# Installs the build into a temporary prefix, then builds and runs four consumers against
 # the installed copy only: C with find_package(fricreg CONFIG), C with pkg-config, and
-# Fortran with the installed module (when the Fortran interface was built).
+# Fortran with the installed module and with the installed module sources (when the Fortran
+# interface was built).
 # Usage: install.sh BUILD_DIR SOURCE_DIR C_COMPILER FORTRAN_COMPILER|-
 build=$1 src=$2 cc=$3 fc=$4
 work=$(mktemp -d "${TMPDIR:-/tmp}/fricreg-install.XXXXXX")
@@ -40,6 +41,21 @@ if [ "$fc" != "-" ]; then
     check "Fortran consumer build" "$fc" -I"$moddir" "$src/tests/consumer/consumer.f90" \
         -L"$libdir" -lfricreg_fortran -lfricreg -o "$work/f_consumer"
     check "Fortran consumer" "$work/f_consumer"
+
+    # 4. Fortran from the installed module sources, compiled in the order fortran/README.md
+    #    gives, as a compiler that cannot read the installed .mod files would.
+    fsrc=$prefix/include/fricreg/src
+    order="fricreg_constants.f90 fricreg_c.f90 fricreg.F90 fricreg_f77.f90" sim=""
+    if [ -f "$fsrc/fricreg_sim_c.f90" ]; then
+        order="fricreg_constants.f90 fricreg_c.f90 fricreg_sim_c.f90 fricreg.F90"
+        order="$order fricreg_f77.f90 fricreg_sim_f77.f90" sim=-DFRICREG_HAVE_SIM
+    fi
+    mkdir -p "$work/fsrc"
+    check "Fortran module sources compile" sh -c "cd '$work/fsrc' && for f in $order; do
+        '$fc' -c $sim -I'$fsrc' '$fsrc/'\$f || exit 1; done"
+    check "Fortran consumer build from the sources" sh -c "cd '$work/fsrc' && '$fc' -I. \
+        '$src/tests/consumer/consumer.f90' *.o -L'$libdir' -lfricreg -o '$work/f_src_consumer'"
+    check "Fortran consumer from the sources" "$work/f_src_consumer"
 fi
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]

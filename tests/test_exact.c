@@ -973,7 +973,7 @@ START_TEST(test_before_a_run)
     fricreg_exact *ex = create(2.0, 2.385, 1.0, 0.0, 0.0);
     ck_assert_double_eq(get_value(ex, FRICREG_EXACT_VALUE_TIME), 0.0);
     ck_assert_double_eq_tol(get_value(ex, FRICREG_EXACT_VALUE_PERIOD), 2.0 * PI / 2.385, 1e-15);
-    for (int k = FRICREG_EXACT_STAT_SCAN_POINTS; k <= FRICREG_EXACT_STAT_ROOT_ITERATIONS; k++)
+    for (int k = FRICREG_EXACT_STAT_SCAN_POINTS; k <= FRICREG_EXACT_STAT_ROOT_ITERS; k++)
         ck_assert_int_eq(get_stat(ex, k), 0);
     ck_assert_uint_eq(fricreg_exact_nswitches(ex), 0);
     ck_assert_uint_eq(fricreg_exact_ncycles(ex), 0);
@@ -1004,7 +1004,7 @@ START_TEST(test_run_replaces_solution)
     ck_assert_int_lt(get_stat(ex, FRICREG_EXACT_STAT_SCAN_POINTS), long_scan);
     fricreg_exact *ref = solve(2.0, 0.5, 1.0, 0.0, 0.0, 17.31);
     assert_same_solution(ex, ref);
-    for (int k = FRICREG_EXACT_STAT_SCAN_POINTS; k <= FRICREG_EXACT_STAT_ROOT_ITERATIONS; k++)
+    for (int k = FRICREG_EXACT_STAT_SCAN_POINTS; k <= FRICREG_EXACT_STAT_ROOT_ITERS; k++)
         ck_assert_int_eq(get_stat(ex, k), get_stat(ref, k));
     fricreg_exact_free(ref);
     fricreg_exact_free(ex);
@@ -1032,7 +1032,7 @@ START_TEST(test_counters_follow_the_scan_grid)
     const double phases = (double)fricreg_exact_nswitches(ex) + 1.0;
     const int64_t scan = get_stat(ex, FRICREG_EXACT_STAT_SCAN_POINTS);
     const int64_t roots = get_stat(ex, FRICREG_EXACT_STAT_ROOTS);
-    const int64_t iterations = get_stat(ex, FRICREG_EXACT_STAT_ROOT_ITERATIONS);
+    const int64_t iterations = get_stat(ex, FRICREG_EXACT_STAT_ROOT_ITERS);
     ck_assert_msg((double)scan >= grid - phases && (double)scan <= grid + 2.0 * phases,
                   "case %d: %lld scan points for a grid of %.2f points and %g phases", _i,
                   (long long)scan, grid, phases);

@@ -1,6 +1,12 @@
-# check_bindings.cmake — every function of the public C headers has a bind(C) interface in the
-# Fortran thin layer (cmake -P; -DHEADERS=a.h|b.h -DSOURCES=a.f90|b.f90). A function added to a
-# header without its Fortran binding fails here, naming it.
+# check_bindings.cmake — every function the library exports has a Fortran bind(C) interface
+# (cmake -P; -DHEADERS=a.h|b.h -DSOURCES=a.f90|b.inc).
+#
+# The interfaces are generated from the public headers of include/, so they match the
+# prototypes by construction; what can still go wrong is a public header (or a function) that
+# never reaches the generator. HEADERS is every installed public header, SOURCES the thin-layer
+# modules and the generated interface files: a FRICREG_API function of any public header with
+# no `bind(C, name='...')` fails here, naming it. The generator's own mapping is checked by
+# check_probes.cmake (wrong arity, wrong type, an unknown C type).
 string(REPLACE "|" ";" HEADERS "${HEADERS}")
 string(REPLACE "|" ";" SOURCES "${SOURCES}")
 set(fortran "")
@@ -25,6 +31,7 @@ if(count EQUAL 0)
   message(FATAL_ERROR "no FRICREG_API declaration found in ${HEADERS}")
 endif()
 if(missing)
-  message(FATAL_ERROR "C functions with no Fortran bind(C) interface: ${missing}")
+  message(FATAL_ERROR "C functions with no Fortran bind(C) interface: ${missing} "
+                      "(are their headers under include/ in the top-level FRICREG_PUBLIC_HEADERS?)")
 endif()
 message(STATUS "all ${count} public C functions have a Fortran bind(C) interface")

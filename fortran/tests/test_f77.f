@@ -88,13 +88,3 @@ C
       WRITE (*, '(A, I0, A)') 'test_f77: ', NFAIL, ' failed'
       IF (NFAIL .GT. 0) STOP 1
       END
-C
-      SUBROUTINE CHK(OK, WHAT, NFAIL)
-      LOGICAL OK
-      CHARACTER*(*) WHAT
-      INTEGER NFAIL
-      IF (.NOT. OK) THEN
-         NFAIL = NFAIL + 1
-         WRITE (*, '(A, A)') 'FAIL: ', WHAT
-      END IF
-      END

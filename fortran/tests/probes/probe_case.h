@@ -1,0 +1,3 @@
+/* probe_case.h — two parameters whose names differ only in case, one dummy to Fortran: the
+ * generator must stop, naming them. */
+FRICREG_API int fricreg_probe_scale(double W, double w);

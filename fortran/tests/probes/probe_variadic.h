@@ -1,0 +1,2 @@
+/* probe_variadic.h — a variadic prototype, which Fortran cannot call: the generator must stop. */
+FRICREG_API int fricreg_probe_printf(const char *format, ...);
