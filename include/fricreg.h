@@ -2,8 +2,9 @@
  * fricreg.h — public C API of fricreg, a library for dry (Coulomb) friction with stick–slip.
  *
  * Implements the friction laws of D. D. Quinn, "A New Regularization of Coulomb Friction",
- * J. Vib. Acoust. 126 (2004) 391–397, equations (1)–(4), and the f_eq partition of its
- * Sec. 3.3 for coupled contacts. Equation numbers below are the paper's.
+ * J. Vib. Acoust. 126 (2004) 391–397, equations (1)–(4), and for coupled contacts the f_eq
+ * partition of its Sec. 3.3 and a consistent near-stick law beyond the paper (docs/coupled.md).
+ * Equation numbers below are the paper's.
  *
  * Conventions, for every function:
  *   - v (or zdot) is a contact's relative velocity; f is the friction force on the body whose
@@ -53,7 +54,8 @@ enum fricreg_status {
     FRICREG_ENOMEM = 5,      /**< memory allocation failed */
     FRICREG_ENOTSYM = 6,     /**< a coupling matrix is not symmetric */
     FRICREG_ENOTPSD = 7,     /**< a coupling matrix is not positive semidefinite */
-    FRICREG_ESINGULAR = 8,   /**< the near-stick block W_SS is singular: f_eq is not unique */
+    FRICREG_ESINGULAR = 8,   /**< the near-stick block W_SS (or the consistent law's W_FF) is
+                                  singular: the near-stick forces are not unique */
     FRICREG_ESTEP = 9,       /**< the step is too large for the stick-zone stiffness or the
                                   system's highest frequency (explicit fixed steps) */
     FRICREG_EDIVERGED = 10,  /**< the integrated state became NaN, infinite or beyond 1e100 */
@@ -80,7 +82,9 @@ enum fricreg_law {
     /** Smooth (paper refs. [13,14]): f = -mun tanh(v/eps). */
     FRICREG_LAW_TANH = 5,
     /** (4) Quinn: xi = (eps/2) sat(f_eq/mun); |v - xi| < eps/2: f = -(2 mun/eps)(v - xi);
-     *  else f = -mun sgn(v - xi). Continuous in (v, f_eq); equals (2) at v = 0. */
+     *  else f = -mun sgn(v - xi). Continuous in (v, f_eq); equals (2) at v = 0. With coupled
+     *  contacts the forces are continuous in (zdot, a_free) under the consistent partition
+     *  only (enum fricreg_partition). */
     FRICREG_LAW_QUINN = 6
 };
 
@@ -197,7 +201,8 @@ enum fricreg_partition {
 };
 
 /** Select the partition (enum fricreg_partition) used by fricreg_ctx_eval with a dense W.
- *  Cheap; discards the cached factor of W_SS.
+ *  Cheap; discards the cached factor, and (like every setter) the tangent of the last
+ *  evaluation.
  *  Returns FRICREG_OK; FRICREG_ENULL if ctx is NULL; FRICREG_EINVAL for an unknown partition. */
 FRICREG_API int fricreg_ctx_set_partition(fricreg_ctx *ctx, int partition);
 
@@ -212,7 +217,11 @@ FRICREG_API int fricreg_ctx_set_partition(fricreg_ctx *ctx, int partition);
  *  consistent partition, gives max_i W_ii s_i (its free contacts decouple); the paper's
  *  partition, (3) and tanh with a dense W give the largest eigenvalue of D^1/2 W D^1/2 (GSL's
  *  symmetric eigensolver, O(m^3), allocating O(m^2) for the call), which is larger by up to
- *  the coupling: 1.707x on the paper's two blocks with mu1 = 2 mu2.
+ *  the coupling: 1.707x on the paper's two blocks with mu1 = 2 mu2. Under the consistent law
+ *  contacts held at a velocity-dependent bound (breaking away, |f_eq,i| > mun_i) see the
+ *  Schur complement (W_AA - W_AF W_FF^-1 W_FA) D_A, which can be larger; it is left out: such
+ *  a contact accelerates out of that zone, which it crosses in about one step at this bound,
+ *  and the measured error stays O(eps) with no stability edge (docs/coupled.md).
  *
  *  lambda  out: the bound, >= 0. Written only on success.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ENOMEM. */
@@ -222,31 +231,91 @@ FRICREG_API int fricreg_ctx_stick_stiffness(fricreg_ctx *ctx, double *lambda);
  *
  *  The contacts obey zddot = a_free + W f. The near-stick set S is where the law needs f_eq:
  *  |zdot_i| < eps for (4) and Karnopp, zdot_i == 0 for (2), empty for (1), (3) and tanh.
- *  The slip set L gets f_L = -mun_L sgn(zdot_L) with no f_eq work. On S,
- *  W_SS f_eq,S = -(a_free,S + W_SL f_L) is solved (diagonal W: a division; dense W: pivoted
- *  Cholesky LDL^T of W_SS, kept and reused while S and W are unchanged), and f_S is the law at
- *  (zdot_S, f_eq,S).
+ *  The slip set L gets f_L = -mun_L sgn(zdot_L) with no f_eq work. On S:
+ *   - diagonal W (either partition): f_eq,i = -a_free,i / W_ii and the law, contact by contact;
+ *   - dense W, FRICREG_PARTITION_CONSISTENT (default): the consistent law. f_eq,i is the force
+ *     that zeroes contact i's acceleration given the others' actual forces, and f_S is the
+ *     unique solution of the box-constrained convex QP
+ *       min 1/2 f^T W_SS f + b^T f  on lo <= f <= hi,  b_i = a_free,i + W_ii c_i mun_i
+ *       + (W_SL f_L)_i,  lo_i = -mun_i (1 - max(-c_i, 0)),  hi_i = mun_i (1 - max(c_i, 0)),
+ *     with c_i = 2 zdot_i/eps for (4) and c = 0 for Karnopp and (2) (docs/coupled.md), solved
+ *     exactly by a primal active-set method warm-started from the previous call's active set;
+ *     f is continuous (Lipschitz) in (zdot, a_free, mun), across |zdot_j| = eps too, and each
+ *     f_i is the law at (zdot_i, f_eq,i);
+ *   - dense W, FRICREG_PARTITION_PAPER: W_SS f_eq,S = -(a_free,S + W_SL f_L), then the law at
+ *     (zdot_S, f_eq,S); f jumps when a coupled contact crosses |zdot_j| = eps.
+ *  Dense W solves with a pivoted Cholesky LDL^T (GSL) of W_SS or of W_FF on the QP's free set,
+ *  kept and reused while that set and W are unchanged (FRICREG_STAT_FACTORIZATIONS).
  *
  *  m          must equal the context's contact count.
  *  zdot[m]    relative contact velocities.
  *  a_free[m]  free relative accelerations (the relative accelerations with f = 0).
  *  f[m]       out: friction forces.
- *  f_eq[m]    out, optional (NULL to skip): f_eq,i for i in S; NaN for i not in S, where the
- *             law does not use f_eq and it is not computed.
+ *  f_eq[m]    out, optional (NULL to skip): f_eq,i for i in S (under the consistent law
+ *             -(a_free,i + sum_{j != i} W_ij f_j)/W_ii with the returned f); NaN for i not
+ *             in S, where the law does not use f_eq and it is not computed.
  *  No heap allocation. Outputs are written only on success.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE (NaN/Inf input);
- *  FRICREG_ESINGULAR if W_SS is singular (reciprocal condition number below 1e-12), which
- *  happens for redundant contacts: their f_eq is not unique. */
+ *  FRICREG_ESINGULAR if the block of W to be factorized (W_SS, or the consistent law's W_FF)
+ *  is singular: reciprocal condition number of the Jacobi-scaled block D^-1/2 W D^-1/2 below
+ *  1e-12, which happens for redundant contacts (their forces are not unique), whatever the
+ *  contacts' units; also (never seen, a safeguard) if the QP's active-set iterations exceed
+ *  100 + 10 |S|. */
 FRICREG_API int fricreg_ctx_eval(fricreg_ctx *ctx, size_t m, const double zdot[],
                                  const double a_free[], double f[], double f_eq[]);
+
+/** The Jacobian of the forces of the last successful fricreg_ctx_eval, for Newton in an implicit
+ *  integrator (Newmark, HHT-alpha, BDF): how f moves with zdot and with a_free.
+ *
+ *  m             must equal the context's contact count.
+ *  df_dzdot      out, optional (NULL to skip): m x m, row-major, df_dzdot[i*m + j] =
+ *                d f_i / d zdot_j, in force per velocity (f's unit over zdot's).
+ *  df_dafree     out, optional (NULL to skip): m x m, row-major, df_dafree[i*m + j] =
+ *                d f_i / d a_free_j, in force per acceleration (a mass, when f is a force and
+ *                a_free an acceleration). A Fortran caller passing an (m, m) array receives
+ *                the transpose: a(j, i) = d f_i / d zdot_j.
+ *  Written only on success, both in full (zeros included).
+ *
+ *  What it is, by law and partition (docs/coupled.md):
+ *   - slip contacts, and every contact of (1), (3) and tanh: the law's own slope in v on the
+ *     diagonal (0 for (1), (2), (4) and Karnopp sliding; -mun/eps inside (3)'s band;
+ *     -(mun/eps) sech^2(v/eps) for tanh), and nothing in a_free;
+ *   - near-stick contacts with a diagonal W, or under FRICREG_PARTITION_PAPER: law (4)
+ *     (Karnopp, (2)) differentiated at (zdot_i, f_eq,i), with d f_eq,S/d a_free,S = -W_SS^-1
+ *     (f_L does not move with zdot or a_free);
+ *   - near-stick contacts of a dense W under FRICREG_PARTITION_CONSISTENT: from the QP's final
+ *     active set A (contacts held at a bound) and free set F, d f_A from the bounds
+ *     (0 or -2 mun_i/eps in zdot_i) and d f_F = -W_FF^-1 (d b_F + W_FA d f_A), with
+ *     d b_i/d zdot_i = 2 W_ii mun_i/eps and d b/d a_free = I on F.
+ *  Exact wherever the force is differentiable, which is almost everywhere. On a kink it is
+ *  one-sided, the Jacobian of one adjacent piece: a contact exactly on its bound (|f_eq| = mun
+ *  type kinks, and the saturation edge of (4)) is held there; at zdot_i = 0 the bounds'
+ *  slopes are those of zdot_i > 0; at |zdot_i| = eps the contact slides (as eval decides).
+ *
+ *  Cost: no factorization when the evaluation's factor is still held (a failed eval or an
+ *  eval with another free set since may cost one, counted in FRICREG_STAT_FACTORIZATIONS);
+ *  then |S| + |F| triangular solves of order |F| (paper: 1 + |S| of order |S|), counted in
+ *  FRICREG_STAT_SOLVES, plus O(m^2) to write the zeros. No heap allocation.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if ctx is NULL or both outputs are NULL; FRICREG_ESIZE
+ *  if m differs from the context's; FRICREG_EINVAL if no evaluation has succeeded since the
+ *  context was created or since the last setter call (set_law, set_bounds, set_coupling_*,
+ *  set_partition); FRICREG_ESINGULAR only if the block it must refactorize has become
+ *  singular, which cannot happen with the same W. */
+FRICREG_API int fricreg_ctx_tangent(fricreg_ctx *ctx, size_t m, double df_dzdot[],
+                                    double df_dafree[]);
 
 /** Counters kept by a context since creation or the last fricreg_ctx_reset_stats. */
 enum fricreg_stat {
     FRICREG_STAT_EVALS = 0,          /**< successful calls of fricreg_ctx_eval */
     FRICREG_STAT_FEQ_CONTACTS = 1,   /**< contacts that needed f_eq, summed over evaluations */
-    FRICREG_STAT_FACTORIZATIONS = 2, /**< factorizations of W_SS */
-    FRICREG_STAT_SOLVES = 3          /**< triangular solves with a factor of W_SS */
+    FRICREG_STAT_FACTORIZATIONS = 2, /**< factorizations of a block of W (W_SS, or W_FF of the
+                                          consistent law's free set), by eval or tangent */
+    FRICREG_STAT_SOLVES = 3,         /**< triangular solves with such a factor */
+    FRICREG_STAT_QP_ITERATIONS = 4   /**< active-set iterations of the consistent law's QP,
+                                          summed over evaluations: 1 per evaluation with a
+                                          near-stick set when the warm start is right */
 };
 
 /** Read one counter (enum fricreg_stat) into *value.
