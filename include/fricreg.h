@@ -112,11 +112,12 @@ FRICREG_API int fricreg_law_from_name(const char *name);
  *  v     relative contact velocity (finite).
  *  f_eq  equilibrium force (finite); ignored by laws (1), (3) and tanh.
  *  mun   friction bound mu*N >= 0 (finite). mun = 0 gives f = 0.
- *  eps   regularization parameter > 0 (finite), in velocity units; ignored by (1) and (2).
+ *  eps   regularization parameter >= DBL_MIN (a normal number > 0: smaller ones make 2/eps
+ *        overflow), in velocity units; ignored by (1) and (2) but validated.
  *  f     out: the friction force, |f| <= mun. Written only on success.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if f is NULL; FRICREG_EINVAL for an unknown law, mun < 0
- *  or eps <= 0; FRICREG_ENONFINITE if v, f_eq, mun or eps is NaN or infinite.
+ *  or eps < DBL_MIN; FRICREG_ENONFINITE if v, f_eq, mun or eps is NaN or infinite.
  *  Implements (1), (2), (3), (4) and the Karnopp and tanh laws of the paper's Sec. 2.
  *  Pure function; thread safe. */
 FRICREG_API int fricreg_law_eval(int law, double v, double f_eq, double mun, double eps,
@@ -129,7 +130,7 @@ FRICREG_API int fricreg_law_eval(int law, double v, double f_eq, double mun, dou
  *  f_eq). Inputs are validated before any output is written. m = 0 is valid and does nothing.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if v, mun, f, or f_eq for a law that needs it, is NULL
- *  (when m > 0); FRICREG_EINVAL for an unknown law, eps <= 0 or some mun[i] < 0;
+ *  (when m > 0); FRICREG_EINVAL for an unknown law, eps < DBL_MIN or some mun[i] < 0;
  *  FRICREG_ENONFINITE if any input is NaN or infinite. Thread safe. */
 FRICREG_API int fricreg_law_eval_batch(int law, double eps, size_t m, const double v[],
                                        const double f_eq[], const double mun[], double f[]);
@@ -158,9 +159,9 @@ FRICREG_API void fricreg_ctx_free(fricreg_ctx *ctx);
 /** Number of contacts m of the context (0 if ctx is NULL). */
 FRICREG_API size_t fricreg_ctx_size(const fricreg_ctx *ctx);
 
-/** Select the friction law and its regularization parameter eps > 0 (velocity units; for
+/** Select the friction law and its regularization parameter eps >= DBL_MIN (velocity units; for
  *  FRICREG_LAW_KARNOPP the dead band; ignored by (1) and (2) but still validated).
- *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown law or eps <= 0;
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown law or eps < DBL_MIN;
  *  FRICREG_ENONFINITE if eps is NaN or infinite. */
 FRICREG_API int fricreg_ctx_set_law(fricreg_ctx *ctx, int law, double eps);
 

@@ -85,8 +85,9 @@ int fricreg_ctx_set_law(fricreg_ctx *ctx, int law, double eps)
         return fr_fail(ctx, FRICREG_EINVAL, "set_law: unknown law %d", law);
     if (!isfinite(eps))
         return fr_fail(ctx, FRICREG_ENONFINITE, "set_law: eps is not finite");
-    if (!(eps > 0.0))
-        return fr_fail(ctx, FRICREG_EINVAL, "set_law: eps = %g must be > 0", eps);
+    if (!fr_eps_valid(eps))
+        return fr_fail(ctx, FRICREG_EINVAL, "set_law: eps = %g must be >= DBL_MIN (a normal "
+                       "number > 0)", eps);
     ctx->law = law;
     ctx->eps = eps;
     ctx->last_valid = 0;
@@ -151,15 +152,17 @@ int fricreg_ctx_set_coupling_diagonal(fricreg_ctx *ctx, size_t m, const double w
     return FRICREG_OK;
 }
 
-/* Smallest eigenvalue of the symmetric m x m matrix W (GSL's symmetric eigensolver). */
-static int min_eigenvalue(const double W[], size_t m, double *lambda_min)
+/* Smallest eigenvalue of the symmetric m x m matrix W / scale (GSL's symmetric eigensolver).
+ * Scaled so that entries near DBL_MAX cannot overflow inside the solver into a NaN. */
+static int min_eigenvalue(const double W[], size_t m, double scale, double *lambda_min)
 {
     gsl_matrix *A = gsl_matrix_alloc(m, m);
     gsl_vector *eval = gsl_vector_alloc(m);
     gsl_eigen_symm_workspace *work = gsl_eigen_symm_alloc(m);
     int status = FRICREG_ENOMEM;
     if (A && eval && work) {
-        memcpy(A->data, W, m * m * sizeof *W); /* a fresh gsl_matrix has tda == m */
+        for (size_t k = 0; k < m * m; k++) /* a fresh gsl_matrix has tda == m */
+            A->data[k] = W[k] / scale;
         gsl_error_handler_t *previous = fr_gsl_quiet();
         int gsl_status = gsl_eigen_symm(A, eval, work);
         fr_gsl_restore(previous);
@@ -187,13 +190,13 @@ static int check_delassus(fricreg_ctx *ctx, size_t m, const double W[])
                 return fr_fail(ctx, FRICREG_ENOTSYM, "%s: W[%zu][%zu] = %g but W[%zu][%zu] = %g",
                                who, i, j, W[i * m + j], j, i, W[j * m + i]);
     }
-    double lambda_min = 0.0;
-    int status = min_eigenvalue(W, m, &lambda_min);
+    double lambda_min = 0.0; /* of W / scale: NaN-safe test, a NaN is refused */
+    int status = min_eigenvalue(W, m, scale, &lambda_min);
     if (status == FRICREG_ENOMEM)
         return fr_fail(ctx, status, "%s: out of memory", who);
-    if (status != FRICREG_OK || lambda_min < -PSD_RTOL * scale * (double)m)
+    if (status != FRICREG_OK || !(lambda_min >= -PSD_RTOL * (double)m))
         return fr_fail(ctx, FRICREG_ENOTPSD, "%s: smallest eigenvalue %g is negative", who,
-                       lambda_min);
+                       lambda_min * scale);
     return FRICREG_OK;
 }
 

@@ -7,7 +7,7 @@ static int bad_law_params(int law, double eps)
 {
     if (!isfinite(eps))
         return FRICREG_ENONFINITE;
-    if (!fr_law_known(law) || !(eps > 0.0))
+    if (!fr_law_known(law) || !fr_eps_valid(eps))
         return FRICREG_EINVAL;
     return FRICREG_OK;
 }

@@ -2,6 +2,7 @@
 #ifndef FRICREG_LAW_INTERNAL_H
 #define FRICREG_LAW_INTERNAL_H
 
+#include <float.h>
 #include <math.h>
 
 #include "fricreg.h"
@@ -96,6 +97,13 @@ static inline int fr_law_uses_feq(int law)
 {
     return law == FRICREG_LAW_FORCE_BALANCE || law == FRICREG_LAW_KARNOPP ||
            law == FRICREG_LAW_QUINN;
+}
+
+/* eps must be a normal positive number: below DBL_MIN, 2/eps overflows and (4) would give
+ * +mun at v = 0 whatever f_eq is. */
+static inline int fr_eps_valid(double eps)
+{
+    return eps >= DBL_MIN;
 }
 
 static inline int fr_law_known(int law)

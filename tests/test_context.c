@@ -679,6 +679,33 @@ END_TEST
 
 /* eval: ENULL (each array), ESIZE, ENONFINITE (zdot or a_free); outputs untouched, no counter
  * moves, the factor is not built. */
+/* Overflow is refused, not passed off as success (issue 11):
+ *  - a subnormal eps makes 2/eps overflow, and law (4) then gave +mun at v = 0 whatever f_eq
+ *    was; eps >= DBL_MIN is required, and at eps = DBL_MIN (4) is still the force balance (2)
+ *    at v = 0: f = mun sat(f_eq/mun) = 0.3 for f_eq = 0.3, mun = 1;
+ *  - W = [[1, 1.5], [1.5, 1]] * 1e308 is indefinite (eigenvalues 2.5e308 and -0.5e308); its
+ *    eigenvalues overflowed to NaN inside GSL and the check passed it. */
+START_TEST(overflow_is_refused)
+{
+    double f = SENTINEL;
+    ck_assert_int_eq(fricreg_law_eval(FRICREG_LAW_QUINN, 0.0, 0.3, 1.0, 1e-310, &f),
+                     FRICREG_EINVAL);
+    ck_assert_double_eq(f, SENTINEL);
+    ck_assert_int_eq(fricreg_law_eval(FRICREG_LAW_QUINN, 0.0, 0.3, 1.0, 2.2250738585072014e-308,
+                                      &f), FRICREG_OK);
+    ck_assert_double_eq_tol(f, 0.3, 1e-15);
+    fricreg_ctx *ctx = make_ctx(2);
+    expect_failure_recorded(ctx, fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, 1e-310),
+                            FRICREG_EINVAL, "set_law, subnormal eps");
+    const double W[4] = {1e308, 1.5e308, 1.5e308, 1e308};
+    expect_failure_recorded(ctx, fricreg_ctx_set_coupling_dense(ctx, 2, W), FRICREG_ENOTPSD,
+                            "indefinite W near DBL_MAX");
+    const double W_spd[4] = {1.5e308, 1e308, 1e308, 1.5e308}; /* eigenvalues 2.5e308, 0.5e308 */
+    ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, 2, W_spd), FRICREG_OK);
+    fricreg_ctx_free(ctx);
+}
+END_TEST
+
 START_TEST(eval_errors)
 {
     fricreg_ctx *ctx = make_two_block();
@@ -1085,6 +1112,7 @@ static Suite *context_suite(void)
     tcase_add_test(tc, set_coupling_diagonal_errors);
     tcase_add_test(tc, set_coupling_dense_errors);
     tcase_add_test(tc, eval_errors);
+    tcase_add_test(tc, overflow_is_refused);
     tcase_add_test(tc, eval_singular_stick_block);
     tcase_add_test(tc, eval_failed_factorization_leaves_no_stale_factor);
     tcase_add_test(tc, eval_nearly_singular_stick_block);
