@@ -59,10 +59,10 @@ module fricreg
   include 'fricreg_h_public.inc'
   public :: c_int, c_double, c_size_t, c_int64_t, c_intptr_t, c_ptr, c_funptr, c_char, &
             c_null_ptr, c_null_funptr, c_null_char, c_associated, c_f_pointer, c_loc, c_funloc
-  public :: fricreg_c_string, fricreg_ptr_to_handle, fricreg_handle_to_ptr
+  public :: fricreg_c_string, fricreg_ptr_to_handle, fricreg_handle_to_ptr, fricreg_transpose
   ! ---- Public: the idiomatic layer ------------------------------------------------------------
   public :: fricreg_object, fricreg_context, law_eval, fricreg_error_string, &
-            fricreg_version_string
+            fricreg_version_string, fricreg_law_string, fricreg_law_id
 #ifdef FRICREG_HAVE_SIM
   include 'fricreg_drivers_h_public.inc'
   public :: fricreg_sim_observer
@@ -99,7 +99,7 @@ module fricreg
     procedure :: errmsg => object_errmsg
     procedure, private :: object_assign
     generic :: assignment(=) => object_assign
-    procedure, private :: adopt, ready, fail, record, unrecorded, check_size
+    procedure, private :: adopt, ready, fail, record, unrecorded, check_size, check_square
   end type
 
   !> m coupled contacts z'' = a_free + W f (Sec. 3.3): law, eps, bounds mun, coupling W.
@@ -112,7 +112,10 @@ module fricreg
     procedure :: set_bounds => ctx_set_bounds
     procedure :: set_coupling_diagonal => ctx_set_coupling_diagonal
     procedure :: set_coupling_dense => ctx_set_coupling_dense
+    procedure :: set_partition => ctx_set_partition
     procedure :: eval => ctx_eval
+    procedure :: tangent => ctx_tangent
+    procedure :: stick_stiffness => ctx_stick_stiffness
     procedure :: get_stat => ctx_get_stat
     procedure :: reset_stats => ctx_reset_stats
     final :: ctx_final
@@ -135,6 +138,7 @@ module fricreg
     procedure :: create => sim_create
     procedure :: set_param => sim_set_param
     procedure :: set_law => sim_set_law
+    procedure :: set_partition => sim_set_partition
     procedure :: set_integrator => sim_set_integrator
     procedure :: set_observer => sim_set_observer
     procedure :: run => sim_run
@@ -142,6 +146,8 @@ module fricreg
     procedure :: ndof => sim_ndof
     procedure :: ncontacts => sim_ncontacts
     procedure :: get_value => sim_get_value
+    procedure :: get_stat => sim_get_stat
+    procedure :: get_param => sim_get_param
     procedure :: get_state => sim_get_state
     procedure :: get_dissipation => sim_get_dissipation
     procedure :: get_stick_fraction => sim_get_stick_fraction
@@ -179,6 +185,20 @@ contains
     character(len=:), allocatable :: text
     text = fricreg_c_string(fricreg_version())
   end function fricreg_version_string
+
+  !> The name of a law (FRICREG_LAW_*: 'coulomb', ..., 'quinn'; C's fricreg_law_name), '' if
+  !> unknown.
+  function fricreg_law_string(law) result(name)
+    integer(c_int), intent(in) :: law
+    character(len=:), allocatable :: name
+    name = fricreg_c_string(fricreg_law_name(law))
+  end function fricreg_law_string
+
+  !> The law (FRICREG_LAW_*) named name (trailing blanks ignored), 0 if there is none.
+  integer(c_int) function fricreg_law_id(name)
+    character(len=*), intent(in) :: name
+    fricreg_law_id = fricreg_law_from_name(trim(name) // c_null_char)
+  end function fricreg_law_id
 
   pure function as_size(n) result(m)
     integer, intent(in) :: n
@@ -327,6 +347,18 @@ contains
     end if
   end function check_size
 
+  !> FRICREG_OK if an array of shape extents is expected x expected, else a recorded
+  !> FRICREG_ESIZE naming the array and the dimension.
+  function check_square(self, what, array, extents, expected) result(status)
+    class(fricreg_object), intent(inout) :: self
+    character(len=*), intent(in) :: what, array
+    integer, intent(in) :: extents(2)
+    integer(c_size_t), intent(in) :: expected
+    integer(c_int) :: status
+    status = self%check_size(what, array // ', 1', extents(1), expected)
+    if (status == FRICREG_OK) status = self%check_size(what, array // ', 2', extents(2), expected)
+  end function check_square
+
   ! ---- Laws --------------------------------------------------------------------------------
 
   function law_eval_scalar(law, eps, v, f_eq, mun, f) result(status)
@@ -448,10 +480,30 @@ contains
     integer(c_size_t) :: m
     m = fricreg_ctx_size(self%ptr)
     status = self%ready('set_coupling_dense', 'context')
-    if (status == FRICREG_OK) status = self%check_size('set_coupling_dense', 'W, 1', size(W, 1), m)
-    if (status == FRICREG_OK) status = self%check_size('set_coupling_dense', 'W, 2', size(W, 2), m)
+    if (status == FRICREG_OK) status = self%check_square('set_coupling_dense', 'W', shape(W), m)
     if (status == FRICREG_OK) status = self%record(fricreg_ctx_set_coupling_dense(self%ptr, m, W))
   end function ctx_set_coupling_dense
+
+  !> How coupled contacts are partitioned: FRICREG_PARTITION_CONSISTENT (default) or
+  !> FRICREG_PARTITION_PAPER (C's fricreg_ctx_set_partition). FRICREG_EINVAL if unknown.
+  function ctx_set_partition(self, partition) result(status)
+    class(fricreg_context), intent(inout) :: self
+    integer(c_int), intent(in) :: partition
+    integer(c_int) :: status
+    status = self%ready('set_partition', 'context')
+    if (status == FRICREG_OK) status = self%record(fricreg_ctx_set_partition(self%ptr, partition))
+  end function ctx_set_partition
+
+  !> The stick zone's stiffness lambda (1/time): a fixed explicit step dt is stable there when
+  !> dt*lambda is within the stepper's real-axis bound (C's fricreg_ctx_stick_stiffness).
+  !> lambda is written only on success. FRICREG_ENOMEM.
+  function ctx_stick_stiffness(self, lambda) result(status)
+    class(fricreg_context), intent(inout) :: self
+    real(c_double), intent(inout) :: lambda
+    integer(c_int) :: status
+    status = self%ready('stick_stiffness', 'context')
+    if (status == FRICREG_OK) status = self%record(fricreg_ctx_stick_stiffness(self%ptr, lambda))
+  end function ctx_stick_stiffness
 
   !> Friction forces f(m) of all contacts, z'' = a_free + W f, with the context's law
   !> (Sec. 3.3): zdot(m) relative velocities, a_free(m) free accelerations (with f = 0).
@@ -475,6 +527,29 @@ contains
     if (status == FRICREG_OK) &
       status = self%record(fricreg_ctx_eval(self%ptr, m, zdot, a_free, f, f_eq))
   end function ctx_eval
+
+  !> The Jacobian of the forces of the last successful eval (C's fricreg_ctx_tangent), in
+  !> Fortran's order: df_dzdot(i, j) = d f_i / d zdot_j (force per velocity) and
+  !> df_dafree(i, j) = d f_i / d a_free_j (mass), each (m, m) and optional. Written only on
+  !> success. FRICREG_ESIZE unless each is m x m; FRICREG_EINVAL if there is no evaluation to
+  !> differentiate (none yet, or a setter since).
+  function ctx_tangent(self, df_dzdot, df_dafree) result(status)
+    class(fricreg_context), intent(inout) :: self
+    real(c_double), intent(inout), contiguous, optional :: df_dzdot(:, :), df_dafree(:, :)
+    integer(c_int) :: status
+    integer(c_size_t) :: m
+    m = fricreg_ctx_size(self%ptr)
+    status = self%ready('tangent', 'context')
+    if (status == FRICREG_OK .and. present(df_dzdot)) &
+      status = self%check_square('tangent', 'df_dzdot', shape(df_dzdot), m)
+    if (status == FRICREG_OK .and. present(df_dafree)) &
+      status = self%check_square('tangent', 'df_dafree', shape(df_dafree), m)
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_ctx_tangent(self%ptr, m, df_dzdot, df_dafree))
+    if (status /= FRICREG_OK) return
+    if (present(df_dzdot)) call fricreg_transpose(df_dzdot, m)
+    if (present(df_dafree)) call fricreg_transpose(df_dafree, m)
+  end function ctx_tangent
 
   !> One counter (FRICREG_STAT_*) into value. FRICREG_EINVAL for an unknown counter.
   function ctx_get_stat(self, which, value) result(status)
@@ -556,6 +631,15 @@ contains
     if (status == FRICREG_OK) status = self%record(fricreg_sim_set_law(self%ptr, law, eps))
   end function sim_set_law
 
+  !> Partition of coupled contacts (FRICREG_PARTITION_*; C's fricreg_sim_set_partition).
+  function sim_set_partition(self, partition) result(status)
+    class(fricreg_simulation), intent(inout) :: self
+    integer(c_int), intent(in) :: partition
+    integer(c_int) :: status
+    status = self%ready('set_partition', 'simulation')
+    if (status == FRICREG_OK) status = self%record(fricreg_sim_set_partition(self%ptr, partition))
+  end function sim_set_partition
+
   !> Integrator (FRICREG_INT_*), step dt > 0, and rtol, atol (both omitted or 0: fixed step).
   function sim_set_integrator(self, integrator, dt, rtol, atol) result(status)
     class(fricreg_simulation), intent(inout) :: self
@@ -633,6 +717,30 @@ contains
     if (status == FRICREG_OK) &
       status = self%unrecorded('get_value', fricreg_sim_get_value(self%ptr, which, value))
   end function sim_get_value
+
+  !> One integer counter of the last run (FRICREG_SIM_STAT_*) into value. FRICREG_EINVAL for
+  !> an unknown counter.
+  function sim_get_stat(self, which, value) result(status)
+    class(fricreg_simulation), intent(inout) :: self
+    integer(c_int), intent(in) :: which
+    integer(c_int64_t), intent(inout) :: value
+    integer(c_int) :: status
+    status = self%ready('get_stat', 'simulation')
+    if (status == FRICREG_OK) &
+      status = self%unrecorded('get_stat', fricreg_sim_get_stat(self%ptr, which, value))
+  end function sim_get_stat
+
+  !> The value in use of a system parameter (FRICREG_PARAM_*): the paper's default or the
+  !> value set. FRICREG_EINVAL for a parameter the system does not read.
+  function sim_get_param(self, param, value) result(status)
+    class(fricreg_simulation), intent(inout) :: self
+    integer(c_int), intent(in) :: param
+    real(c_double), intent(inout) :: value
+    integer(c_int) :: status
+    status = self%ready('get_param', 'simulation')
+    if (status == FRICREG_OK) &
+      status = self%unrecorded('get_param', fricreg_sim_get_param(self%ptr, param, value))
+  end function sim_get_param
 
   !> State at the end of the last run (the initial state before one): x(ndof), v(ndof).
   function sim_get_state(self, x, v) result(status)

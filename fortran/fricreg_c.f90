@@ -23,7 +23,7 @@ module fricreg_c
   include 'fricreg_h_public.inc'
   public :: c_int, c_double, c_size_t, c_int64_t, c_intptr_t, c_ptr, c_funptr, c_char, &
             c_null_ptr, c_null_char, c_associated, c_f_pointer, c_loc, c_funloc
-  public :: fricreg_c_string, fricreg_ptr_to_handle, fricreg_handle_to_ptr
+  public :: fricreg_c_string, fricreg_ptr_to_handle, fricreg_handle_to_ptr, fricreg_transpose
   ! For module fricreg and the F77 entry points (module fricreg does not re-export them).
   public :: fricreg_free_fn, fricreg_errcode_fn, fricreg_errmsg_fn, fricreg_f77_created, &
             fricreg_f77_release, fricreg_f77_last_error
@@ -92,6 +92,22 @@ contains
     type(c_ptr) :: p
     p = transfer(int(h, c_intptr_t), c_null_ptr)
   end function fricreg_handle_to_ptr
+
+  !> Transpose the m x m matrix a in place: C's row-major a(i*m + j) = A_ij becomes Fortran's
+  !> column-major a(i, j) = A_ij (the tangent's layout in both Fortran layers).
+  subroutine fricreg_transpose(a, m)
+    integer(c_size_t), intent(in) :: m
+    real(c_double), intent(inout) :: a(m, m)
+    real(c_double) :: t
+    integer(c_size_t) :: i, j
+    do j = 1, m
+      do i = j + 1, m
+        t = a(i, j)
+        a(i, j) = a(j, i)
+        a(j, i) = t
+      end do
+    end do
+  end subroutine fricreg_transpose
 
   ! ---- For the F77 entry points: handles as INTEGER*8, statuses as default INTEGER ----------
 

@@ -177,3 +177,43 @@ subroutine frerrm(h, code, msg, stat)
   integer, intent(out) :: stat
   stat = fricreg_f77_last_error(h, fricreg_ctx_errcode, fricreg_ctx_errmsg, code, msg)
 end subroutine frerrm
+
+!> FRPART(H, PART, STAT): the partition of coupled contacts, FRICREG_PARTITION_CONSISTENT or
+!> FRICREG_PARTITION_PAPER (fricreg_ctx_set_partition).
+subroutine frpart(h, part, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: part
+  integer, intent(out) :: stat
+  stat = int(fricreg_ctx_set_partition(fricreg_handle_to_ptr(h), int(part, c_int)))
+end subroutine frpart
+
+!> FRSTIF(H, LAMBDA, STAT): the stick zone's stiffness LAMBDA (1/time) that bounds a fixed
+!> explicit step: DT*LAMBDA within the stepper's real-axis bound (fricreg_ctx_stick_stiffness).
+subroutine frstif(h, lambda, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  double precision, intent(inout) :: lambda
+  integer, intent(out) :: stat
+  stat = int(fricreg_ctx_stick_stiffness(fricreg_handle_to_ptr(h), lambda))
+end subroutine frstif
+
+!> FRTANG(H, M, DFDZ, DFDA, STAT): the Jacobian of the last FREVAL's forces, column-major
+!> DFDZ(I, J) = dF_I/dZDOT_J and DFDA(I, J) = dF_I/dAFREE_J, each (M, M) with leading
+!> dimension M (fricreg_ctx_tangent, transposed from C's row order). Written only on success.
+subroutine frtang(h, m, dfdz, dfda, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m
+  double precision, intent(inout) :: dfdz(*), dfda(*)
+  integer, intent(out) :: stat
+  integer(c_size_t) :: n
+  n = int(max(m, 0), c_size_t)
+  stat = int(fricreg_ctx_tangent(fricreg_handle_to_ptr(h), int(m, c_size_t), dfdz, dfda))
+  if (stat /= FRICREG_OK) return
+  call fricreg_transpose(dfdz, n)
+  call fricreg_transpose(dfda, n)
+end subroutine frtang

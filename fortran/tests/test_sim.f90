@@ -45,6 +45,7 @@ program test_sim
   real(c_double), allocatable :: D(:)
   real(c_double) :: x(1), v(1), x2(2), value, frac(32)
   integer(c_int), target :: calls
+  integer(c_int64_t) :: count
   type(c_ptr) :: p
   integer :: i
 
@@ -70,6 +71,19 @@ program test_sim
   call check(size(D) == 3, 'three whole cycles of 2 pi in t = 20')
   ! The energy lost sliding from 2.75 to -0.75 (mun = 1, all in the first cycle): 1.75 * 2.
   call check_close(D(1), 3.5_c_double, 1e-4_c_double, 'D, first cycle = 3.5')
+  ! 1.1: integer counters and the parameters in use. RK4, dt = 0.01, t = 20: 1000 calls of
+  ! two steps, 3 of them shortened to end a cycle (3 cycles): 2 * (1000 + 3) = 2006 steps
+  ! (test_sim_api.c counts the same grid), 4 right-hand sides each.
+  call check_status(sim%get_stat(FRICREG_SIM_STAT_STEPS, count), FRICREG_OK, 'get_stat(STEPS)')
+  call check(count == 2006_c_int64_t, 'steps on the grid of 2 dt with 3 cycle ends')
+  call check_status(sim%get_stat(FRICREG_SIM_STAT_RHS_EVALS, count), FRICREG_OK, 'RHS_EVALS')
+  call check(count == 4_c_int64_t * 2006_c_int64_t, '4 right-hand sides per fixed RK4 step')
+  call check_status(sim%get_stat(77_c_int, count), FRICREG_EINVAL, 'unknown counter')
+  call check_status(sim%get_param(FRICREG_PARAM_X0, value), FRICREG_OK, 'get_param(X0)')
+  call check_close(value, 2.75_c_double, 0.0_c_double, "the paper's x0")
+  call check_status(sim%get_param(FRICREG_PARAM_K, value), FRICREG_EINVAL, 'no K here')
+  call check_status(sim%set_partition(FRICREG_PARTITION_PAPER), FRICREG_OK, 'set_partition')
+  call check_status(sim%run(20.0_c_double), FRICREG_OK, 'rerun: one contact, either partition')
 
   ! The bind(C) layer sees the same simulation.
   call check_status(fricreg_sim_get_state(sim%handle(), 1_c_size_t, x, v), FRICREG_OK, &
