@@ -1,0 +1,423 @@
+/* test_coupled.c — Check suite for the consistent near-stick law of coupled contacts (issue 9,
+ * shared/spec/coupled.md), verified against a reference written independently of the library.
+ *
+ * The reference. Under FRICREG_PARTITION_CONSISTENT the forces of the near-stick set S solve
+ *     f_S = argmin_{l <= f <= u} 1/2 f^T W_SS f + b^T f,
+ *     b_i = a_free,i + W_ii c_i mun_i + (W_SL f_L)_i,  f_L = -mun_L sgn(zdot_L),
+ *     l_i = -mun_i (1 - max(-c_i, 0)),  u_i = mun_i (1 - max(c_i, 0)),
+ * with c_i = 2 zdot_i / eps for law (4) and c = 0 for Karnopp and force balance (spec, "The
+ * consistent law" and consequence 6). W_SS is positive definite, so the minimizer is unique and
+ * is the one point meeting the KKT conditions: a free coordinate lies within [l_i, u_i] with zero
+ * gradient g = W_SS f + b; one at its lower bound has g_i >= 0, one at its upper bound g_i <= 0.
+ * brute_force() tries all 3^s (lower / free / upper) assignments with GSL's Cholesky on each free
+ * block and keeps the one that meets them; it shares no code with the library. */
+#include <check.h>
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_linalg.h>
+
+#include "fricreg.h"
+
+#define MMAX 8          /* largest contact count of the random cases: 3^8 assignments */
+#define KKT_TOL 1e-10   /* largest scaled KKT violation the reference accepts */
+#define SENTINEL (-777.125)
+
+/* ---- Random numbers: splitmix64, so every run and platform sees the same cases ------------- */
+
+static uint64_t rng_state;
+
+static double uniform(double lo, double hi)
+{
+    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    return lo + (hi - lo) * ((double)(z >> 11) * 0x1.0p-53);
+}
+
+static size_t uniform_size(size_t lo, size_t hi) /* in [lo, hi] */
+{
+    size_t k = lo + (size_t)uniform(0.0, (double)(hi - lo + 1));
+    return k > hi ? hi : k;
+}
+
+/* ---- Cases ------------------------------------------------------------------------------- */
+
+typedef struct {
+    size_t m;
+    double W[MMAX * MMAX]; /* row-major, SPD */
+    double mun[MMAX], eps, zdot[MMAX], a_free[MMAX];
+} contact_case;
+
+/* W = D (A A^T / m + delta I) D with A_ij, delta and D_ii random: SPD with condition number
+ * at most a few hundred, and unequal diagonal entries. */
+static void random_spd(size_t m, double W[])
+{
+    double A[MMAX * MMAX], d[MMAX], delta = uniform(0.2, 1.0);
+    for (size_t k = 0; k < m * m; k++)
+        A[k] = uniform(-1.0, 1.0);
+    for (size_t i = 0; i < m; i++)
+        d[i] = uniform(0.5, 2.0);
+    for (size_t i = 0; i < m; i++)
+        for (size_t j = 0; j <= i; j++) {
+            double s = 0.0;
+            for (size_t k = 0; k < m; k++)
+                s += A[i * m + k] * A[j * m + k];
+            s = s / (double)m + (i == j ? delta : 0.0);
+            W[i * m + j] = W[j * m + i] = d[i] * s * d[j];
+        }
+}
+
+/* zdot: mostly inside the band, some exactly at rest, some sliding either way. */
+static double random_velocity(double eps)
+{
+    double r = uniform(0.0, 1.0);
+    if (r < 0.15)
+        return 0.0;
+    if (r < 0.75)
+        return uniform(-eps, eps);
+    return (r < 0.875 ? 1.0 : -1.0) * eps * uniform(1.0, 3.0);
+}
+
+/* a_free on the scale of the largest |W f| a contact can see, so that some contacts saturate
+ * and others hold. */
+static void random_case(contact_case *c, size_t m)
+{
+    c->m = m;
+    random_spd(m, c->W);
+    c->eps = uniform(0.005, 0.2);
+    for (size_t i = 0; i < m; i++)
+        c->mun[i] = uniform(0.0, 1.0) < 0.06 ? 0.0 : uniform(0.1, 3.0);
+    for (size_t i = 0; i < m; i++) {
+        double reach = 0.0;
+        for (size_t k = 0; k < m; k++)
+            reach += fabs(c->W[i * m + k]) * c->mun[k];
+        c->zdot[i] = random_velocity(c->eps);
+        c->a_free[i] = uniform(-1.2, 1.2) * (reach + 0.1);
+    }
+}
+
+static double max_of(const double x[], size_t n)
+{
+    double r = 0.0;
+    for (size_t i = 0; i < n; i++)
+        r = fmax(r, fabs(x[i]));
+    return r;
+}
+
+/* ---- The reference: the box QP of the spec, and brute-force enumeration ------------------- */
+
+typedef struct {
+    size_t s;
+    size_t idx[MMAX]; /* S, in contact order */
+    double W[MMAX * MMAX], b[MMAX], l[MMAX], u[MMAX];
+} box_qp;
+
+static int near_stick(int law, double zdot, double eps)
+{
+    return law == FRICREG_LAW_FORCE_BALANCE ? zdot == 0.0 : fabs(zdot) < eps;
+}
+
+/* The QP of the consistent law for law (4), Karnopp or force balance; f gets the slip forces
+ * -mun sgn(zdot) on L (and 0 on S). */
+static void build_qp(const contact_case *c, int law, box_qp *qp, double f[])
+{
+    size_t m = c->m, s = 0;
+    for (size_t i = 0; i < m; i++) {
+        int in_s = near_stick(law, c->zdot[i], c->eps);
+        f[i] = in_s ? 0.0 : -c->mun[i] * (double)((c->zdot[i] > 0) - (c->zdot[i] < 0));
+        if (in_s)
+            qp->idx[s++] = i;
+    }
+    qp->s = s;
+    for (size_t a = 0; a < s; a++) {
+        size_t i = qp->idx[a];
+        double ci = law == FRICREG_LAW_QUINN ? 2.0 * c->zdot[i] / c->eps : 0.0;
+        double slip_coupling = 0.0;
+        for (size_t k = 0; k < m; k++)
+            slip_coupling += c->W[i * m + k] * f[k]; /* f is 0 on S */
+        qp->b[a] = c->a_free[i] + c->W[i * m + i] * ci * c->mun[i] + slip_coupling;
+        qp->l[a] = -c->mun[i] * (1.0 - fmax(-ci, 0.0));
+        qp->u[a] = c->mun[i] * (1.0 - fmax(ci, 0.0));
+        for (size_t e = 0; e < s; e++)
+            qp->W[a * s + e] = c->W[i * m + qp->idx[e]];
+    }
+}
+
+enum { AT_LOWER = 0, FREE = 1, AT_UPPER = 2 };
+
+/* The candidate of one assignment: bounds where active, W_FF f_F = -(b_F + W_FA f_A) on the
+ * free set F (GSL Cholesky). Returns its scaled KKT violation (HUGE_VAL if W_FF fails). */
+static double candidate(const box_qp *qp, const int state[], double f[])
+{
+    size_t s = qp->s, nf = 0, free_idx[MMAX];
+    for (size_t a = 0; a < s; a++) {
+        f[a] = state[a] == AT_LOWER ? qp->l[a] : state[a] == AT_UPPER ? qp->u[a] : 0.0;
+        if (state[a] == FREE)
+            free_idx[nf++] = a;
+    }
+    if (nf > 0) {
+        double A[MMAX * MMAX], r[MMAX];
+        for (size_t p = 0; p < nf; p++) {
+            size_t a = free_idx[p];
+            r[p] = -qp->b[a];
+            for (size_t e = 0; e < s; e++)
+                if (state[e] != FREE)
+                    r[p] -= qp->W[a * s + e] * f[e];
+            for (size_t q = 0; q < nf; q++)
+                A[p * nf + q] = qp->W[a * s + free_idx[q]];
+        }
+        gsl_matrix_view Av = gsl_matrix_view_array(A, nf, nf);
+        gsl_vector_view rv = gsl_vector_view_array(r, nf);
+        if (gsl_linalg_cholesky_decomp1(&Av.matrix) != GSL_SUCCESS ||
+            gsl_linalg_cholesky_svx(&Av.matrix, &rv.vector) != GSL_SUCCESS)
+            return HUGE_VAL;
+        for (size_t p = 0; p < nf; p++)
+            f[free_idx[p]] = r[p];
+    }
+    double fscale = fmax(max_of(qp->l, s), max_of(qp->u, s)), bscale = max_of(qp->b, s);
+    fscale = fscale > 0.0 ? fscale : 1.0;
+    double gscale = bscale + max_of(qp->W, s * s) * fscale, violation = 0.0;
+    for (size_t a = 0; a < s; a++) {
+        double g = qp->b[a];
+        for (size_t e = 0; e < s; e++)
+            g += qp->W[a * s + e] * f[e];
+        if (state[a] == FREE)
+            violation = fmax(violation, fmax(qp->l[a] - f[a], f[a] - qp->u[a]) / fscale);
+        else
+            violation = fmax(violation, (state[a] == AT_LOWER ? -g : g) / gscale);
+    }
+    return violation;
+}
+
+/* All 3^s assignments; f_S gets the one with the smallest KKT violation, which must meet the
+ * conditions (<= KKT_TOL), and every other assignment that meets them must give the same f_S
+ * (uniqueness, up to ties such as l_i = u_i). Returns the number of assignments tried. */
+static long brute_force(const box_qp *qp, double f_S[])
+{
+    size_t s = qp->s;
+    long total = 1;
+    for (size_t a = 0; a < s; a++)
+        total *= 3;
+    double best = HUGE_VAL, accepted[16][MMAX];
+    int n_accepted = 0;
+    for (long code = 0; code < total; code++) {
+        int state[MMAX];
+        long rest = code;
+        for (size_t a = 0; a < s; a++, rest /= 3)
+            state[a] = (int)(rest % 3);
+        double f[MMAX], violation = candidate(qp, state, f);
+        if (violation < best) {
+            best = violation;
+            memcpy(f_S, f, s * sizeof *f);
+        }
+        if (violation <= KKT_TOL && n_accepted < 16)
+            memcpy(accepted[n_accepted++], f, s * sizeof *f);
+    }
+    ck_assert_msg(best <= KKT_TOL, "reference: no assignment meets KKT (best %.3g, s = %zu)",
+                  best, s);
+    double fscale = fmax(fmax(max_of(qp->l, s), max_of(qp->u, s)), 1e-300);
+    for (int k = 0; k < n_accepted; k++)
+        for (size_t a = 0; a < s; a++)
+            ck_assert_msg(fabs(accepted[k][a] - f_S[a]) <= 1e-8 * fscale,
+                          "reference: two KKT points differ at %zu: %.17g vs %.17g", a,
+                          accepted[k][a], f_S[a]);
+    return total;
+}
+
+/* Reference forces of all m contacts under the consistent law. */
+static void reference_forces(const contact_case *c, int law, double f[])
+{
+    box_qp qp;
+    double f_S[MMAX];
+    build_qp(c, law, &qp, f);
+    brute_force(&qp, f_S);
+    for (size_t a = 0; a < qp.s; a++)
+        f[qp.idx[a]] = f_S[a];
+}
+
+/* ---- The reference on hand-solved cases --------------------------------------------------- */
+
+/* The two blocks of the issue: W = [[1, -1], [-1, 2]] (det 1, W^-1 = [[2, 1], [1, 1]]),
+ * mun = (0.5, 0.25), eps = 0.02. */
+static contact_case two_block(double z1, double z2, double a1, double a2)
+{
+    contact_case c = {.m = 2, .W = {1.0, -1.0, -1.0, 2.0}, .mun = {0.5, 0.25}, .eps = 0.02,
+                      .zdot = {z1, z2}, .a_free = {a1, a2}};
+    return c;
+}
+
+static void expect_forces(const double f[], double f1, double f2, double tol)
+{
+    ck_assert_double_eq_tol(f[0], f1, tol);
+    ck_assert_double_eq_tol(f[1], f2, tol);
+}
+
+/* At rest, a_free = (0.1, 0.1): c = 0, b = a_free, the unconstrained minimizer
+ * f = -W^-1 b = -(0.3, 0.2) lies inside the box [-0.5, 0.5] x [-0.25, 0.25]. */
+START_TEST(reference_interior_at_rest)
+{
+    contact_case c = two_block(0.0, 0.0, 0.1, 0.1);
+    double f[2];
+    reference_forces(&c, FRICREG_LAW_QUINN, f);
+    expect_forces(f, -0.3, -0.2, 1e-15);
+}
+END_TEST
+
+/* The issue's first jump: zdot = (0, eps(1 - 1e-9)). c_2 = 2(1 - 1e-9) squeezes contact 2's box
+ * to [l_2, u_2] = [-0.25, -0.25 + 5e-10], and b_2 = 0.1 + W_22 c_2 mun_2 = 1.1 - 1e-9 pushes it to
+ * l_2 = -0.25; then f_1 = -(b_1 + W_12 f_2) / W_11 = -(0.1 + 0.25) = -0.35 (gradient of contact 2:
+ * 0.35 - 0.5 + 1.1 > 0). The paper's partition gives -0.35 only once contact 2 has left. */
+START_TEST(reference_edge_pins_the_leaving_contact)
+{
+    contact_case c = two_block(0.0, 0.02 * (1.0 - 1e-9), 0.1, 0.1);
+    double f[2];
+    reference_forces(&c, FRICREG_LAW_QUINN, f);
+    expect_forces(f, -0.35, -0.25, 1e-15);
+}
+END_TEST
+
+/* The issue's sign change: a_free = (-0.3, 0.1), zdot = (eps(1 - 1e-9), 0). Contact 1's box is
+ * [-0.5, -0.5 + 1e-9] and b_1 = -0.3 + 1 - 1e-9 puts it at -0.5; f_2's unconstrained value
+ * -(0.1 - f_1)/2 = -0.3 is below -0.25, so it sits at its lower bound, with gradients
+ * (-0.5 + 0.25 + 0.7, 0.5 - 0.5 + 0.1) >= 0. The paper's partition gives f_2 = +0.2 here. */
+START_TEST(reference_edge_with_saturated_partner)
+{
+    contact_case c = two_block(0.02 * (1.0 - 1e-9), 0.0, -0.3, 0.1);
+    double f[2];
+    reference_forces(&c, FRICREG_LAW_QUINN, f);
+    expect_forces(f, -0.5, -0.25, 1e-15);
+}
+END_TEST
+
+/* Saturation consistency at rest, a_free = (0.4, -0.1): the unconstrained -W^-1 a = (-0.7, -0.3)
+ * leaves the box in both coordinates. With f_1 = -0.5 at its bound, f_2 = -(b_2 + W_21 f_1) / W_22
+ * = -(-0.1 + 0.5)/2 = -0.2 is inside, and contact 1's gradient -0.5 + 0.2 + 0.4 = 0.1 >= 0: the
+ * KKT point is (-0.5, -0.2). (The paper's partition gives law (4) at f_eq = (-0.7, -0.3):
+ * (-0.5, -0.25), contact 2 saturated although it holds.) */
+START_TEST(reference_one_saturated_one_holding)
+{
+    contact_case c = two_block(0.0, 0.0, 0.4, -0.1);
+    double f[2];
+    reference_forces(&c, FRICREG_LAW_QUINN, f);
+    expect_forces(f, -0.5, -0.2, 1e-15);
+}
+END_TEST
+
+/* Inside the band, zdot = (0.006, -0.004), a_free = (0.1, 0.1): c = (0.6, -0.4),
+ * b = a_free + W_ii c_i mun_i = (0.1 + 0.3, 0.1 - 0.2) = (0.4, -0.1), box [-0.5, 0.2] x
+ * [-0.15, 0.25]. Unconstrained -W^-1 b = -(0.7, 0.3) violates both lower bounds; f_1 = -0.5 with
+ * f_2 free gives f_2 = -(-0.1 + 0.5)/2 = -0.2 < -0.15, so f_2 = -0.15 as well; gradients
+ * (-0.5 + 0.15 + 0.4, 0.5 - 0.3 - 0.1) = (0.05, 0.1) >= 0: both at their lower bounds. */
+START_TEST(reference_moving_both_at_lower_bounds)
+{
+    contact_case c = two_block(0.006, -0.004, 0.1, 0.1);
+    double f[2];
+    reference_forces(&c, FRICREG_LAW_QUINN, f);
+    expect_forces(f, -0.5, -0.15, 1e-15);
+}
+END_TEST
+
+/* Karnopp, zdot = (0.01, 0.03): contact 2 slides (f_2 = -0.25), contact 1 holds with c = 0:
+ * b_1 = a_1 + W_12 f_2 = 0.2 + 0.25 = 0.45 gives f_1 = -0.45, inside [-0.5, 0.5]. */
+START_TEST(reference_karnopp_slip_force_moves_into_b)
+{
+    contact_case c = two_block(0.01, 0.03, 0.2, 0.1);
+    double f[2];
+    reference_forces(&c, FRICREG_LAW_KARNOPP, f);
+    expect_forces(f, -0.45, -0.25, 1e-15);
+}
+END_TEST
+
+/* m = 3, W = diag(2, 3, 4) + 0.5 (J - I) (J all ones), every contact at rest with a large
+ * a_free: the unconstrained force -W^-1 a is far outside the box, so all three saturate against
+ * a_free: f = -mun sgn(a) = (-1.5, 0.75, -0.2); each gradient (W f + a)_i points the way its
+ * bound requires, e.g. g_1 = -3 + 0.375 - 0.1 + 40 > 0. */
+START_TEST(reference_all_saturated)
+{
+    contact_case c = {.m = 3,
+                      .W = {2.0, 0.5, 0.5, 0.5, 3.0, 0.5, 0.5, 0.5, 4.0},
+                      .mun = {1.5, 0.75, 0.2},
+                      .eps = 0.05,
+                      .zdot = {0.0, 0.0, 0.0},
+                      .a_free = {40.0, -30.0, 20.0}};
+    double f[3];
+    reference_forces(&c, FRICREG_LAW_QUINN, f);
+    ck_assert_double_eq_tol(f[0], -1.5, 1e-15);
+    ck_assert_double_eq_tol(f[1], 0.75, 1e-15);
+    ck_assert_double_eq_tol(f[2], -0.2, 1e-15);
+}
+END_TEST
+
+/* 1/2 f^T W f + b^T f on S. */
+static double objective(const box_qp *qp, const double f[])
+{
+    double q = 0.0;
+    for (size_t a = 0; a < qp->s; a++) {
+        double wf = 0.0;
+        for (size_t e = 0; e < qp->s; e++)
+            wf += qp->W[a * qp->s + e] * f[e];
+        q += f[a] * (0.5 * wf + qp->b[a]);
+    }
+    return q;
+}
+
+/* The reference on random cases: a KKT point exists and is unique (brute_force asserts both),
+ * it lies in the box, and no random point of the box has a smaller objective. */
+START_TEST(reference_is_the_box_minimizer)
+{
+    rng_state = 0x5eed0001u;
+    for (int n = 0; n < 300; n++) {
+        contact_case c;
+        random_case(&c, uniform_size(2, 6));
+        box_qp qp;
+        double f[MMAX], f_S[MMAX];
+        build_qp(&c, FRICREG_LAW_QUINN, &qp, f);
+        brute_force(&qp, f_S);
+        for (size_t a = 0; a < qp.s; a++)
+            ck_assert(f_S[a] >= qp.l[a] - 1e-14 && f_S[a] <= qp.u[a] + 1e-14);
+        double best = objective(&qp, f_S);
+        for (int k = 0; k < 50; k++) {
+            double g[MMAX];
+            for (size_t a = 0; a < qp.s; a++)
+                g[a] = uniform(qp.l[a], qp.u[a]);
+            ck_assert_msg(objective(&qp, g) >= best - 1e-12 * (1.0 + fabs(best)),
+                          "case %d: a box point beats the reference", n);
+        }
+    }
+}
+END_TEST
+
+/* ---- Suite -------------------------------------------------------------------------------- */
+
+static Suite *coupled_suite(void)
+{
+    Suite *s = suite_create("coupled");
+    TCase *tc = tcase_create("reference");
+    tcase_add_test(tc, reference_interior_at_rest);
+    tcase_add_test(tc, reference_edge_pins_the_leaving_contact);
+    tcase_add_test(tc, reference_edge_with_saturated_partner);
+    tcase_add_test(tc, reference_one_saturated_one_holding);
+    tcase_add_test(tc, reference_moving_both_at_lower_bounds);
+    tcase_add_test(tc, reference_karnopp_slip_force_moves_into_b);
+    tcase_add_test(tc, reference_all_saturated);
+    tcase_add_test(tc, reference_is_the_box_minimizer);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+int main(void)
+{
+    gsl_set_error_handler_off(); /* the reference reads GSL's status codes itself */
+    SRunner *sr = srunner_create(coupled_suite());
+    srunner_run_all(sr, CK_NORMAL);
+    int failed = srunner_ntests_failed(sr);
+    srunner_free(sr);
+    return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
