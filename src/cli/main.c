@@ -20,6 +20,7 @@ static const char usage[] =
     "oscillator: --a [0] --omega [1] --mun [1] --x0 [2.75] --v0 [0]\n"
     "chain:      --n [32] --a [0.25] --omega [0.5]\n"
     "twoblock:   --k [2] --mu1 [0.5] --mu2 [0.25] --belt-amp [1] --belt-omega [0.5]\n"
+    "            --partition paper|consistent  coupled contacts' near-stick law [consistent]\n"
     "Exit status: 0 success, 1 the simulation failed, 2 bad option or value.\n";
 
 static int system_of(const char *name)
