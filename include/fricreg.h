@@ -227,8 +227,12 @@ FRICREG_API int fricreg_ctx_eval(fricreg_ctx *ctx, size_t m, const double zdot[]
 enum fricreg_stat {
     FRICREG_STAT_EVALS = 0,          /**< successful calls of fricreg_ctx_eval */
     FRICREG_STAT_FEQ_CONTACTS = 1,   /**< contacts that needed f_eq, summed over evaluations */
-    FRICREG_STAT_FACTORIZATIONS = 2, /**< factorizations of W_SS */
-    FRICREG_STAT_SOLVES = 3          /**< triangular solves with a factor of W_SS */
+    FRICREG_STAT_FACTORIZATIONS = 2, /**< factorizations of a block of W (W_SS, or W_FF of the
+                                          consistent law's free set), by eval or tangent */
+    FRICREG_STAT_SOLVES = 3,         /**< triangular solves with such a factor */
+    FRICREG_STAT_QP_ITERATIONS = 4   /**< active-set iterations of the consistent law's QP,
+                                          summed over evaluations: 1 per evaluation with a
+                                          near-stick set when the warm start is right */
 };
 
 /** Read one counter (enum fricreg_stat) into *value.
