@@ -394,6 +394,327 @@ START_TEST(reference_is_the_box_minimizer)
 }
 END_TEST
 
+
+/* ---- The library ------------------------------------------------------------------------- */
+
+static fricreg_ctx *make_ctx(const contact_case *c, int law, int partition)
+{
+    fricreg_ctx *ctx = NULL;
+    ck_assert_int_eq(fricreg_ctx_create(c->m, &ctx), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, c->m, c->W), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, c->m, c->mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_law(ctx, law, c->eps), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_partition(ctx, partition), FRICREG_OK);
+    return ctx;
+}
+
+static void eval(fricreg_ctx *ctx, size_t m, const double zdot[], const double a_free[],
+                 double f[], double f_eq[])
+{
+    int status = fricreg_ctx_eval(ctx, m, zdot, a_free, f, f_eq);
+    ck_assert_msg(status == FRICREG_OK, "eval: %s", fricreg_ctx_errmsg(ctx));
+}
+
+/* ---- 1. The library against brute force -------------------------------------------------- */
+
+/* Thousands of random cases, m = 2..8, law (4) mostly, Karnopp and force balance too: f to
+ * 1e-12 of max mun; f_eq,i = -(a_free,i + sum_{j != i} W_ij f_j) / W_ii on S (the spec's
+ * definition, from the reference's forces), NaN elsewhere. A fresh context per case: no warm
+ * start (warm_started_walk_matches_brute_force has them). */
+START_TEST(consistent_law_matches_brute_force)
+{
+    static const int laws[4] = {FRICREG_LAW_QUINN, FRICREG_LAW_QUINN, FRICREG_LAW_KARNOPP,
+                                FRICREG_LAW_FORCE_BALANCE};
+    rng_state = 0x5eed0002u;
+    double worst = 0.0, worst_feq = 0.0;
+    long assignments = 0, near_stick_contacts = 0;
+    size_t largest_s = 0;
+    int n_cases = 3000;
+    for (int n = 0; n < n_cases; n++) {
+        contact_case c;
+        random_case(&c, uniform_size(2, MMAX));
+        int law = laws[n % 4];
+        if (n % 5 == 0) /* every contact near stick: s = m, up to 3^8 assignments */
+            for (size_t i = 0; i < c.m; i++)
+                c.zdot[i] = law == FRICREG_LAW_FORCE_BALANCE ? 0.0 : uniform(-0.9, 0.9) * c.eps;
+        fricreg_ctx *ctx = make_ctx(&c, law, FRICREG_PARTITION_CONSISTENT);
+        box_qp qp;
+        double f_ref[MMAX], f_S[MMAX], f[MMAX], f_eq[MMAX];
+        build_qp(&c, law, &qp, f_ref);
+        assignments += brute_force(&qp, f_S);
+        for (size_t a = 0; a < qp.s; a++)
+            f_ref[qp.idx[a]] = f_S[a];
+        near_stick_contacts += (long)qp.s;
+        largest_s = qp.s > largest_s ? qp.s : largest_s;
+        eval(ctx, c.m, c.zdot, c.a_free, f, f_eq);
+        double scale = max_of(c.mun, c.m);
+        for (size_t i = 0; i < c.m; i++) {
+            double err = fabs(f[i] - f_ref[i]) / (scale > 0.0 ? scale : 1.0);
+            worst = fmax(worst, err);
+            ck_assert_msg(err <= 1e-12,
+                          "case %d (law %d, m %zu): f[%zu] = %.17g, reference %.17g", n, law,
+                          c.m, i, f[i], f_ref[i]);
+            if (!near_stick(law, c.zdot[i], c.eps)) {
+                ck_assert_msg(isnan(f_eq[i]), "case %d: f_eq[%zu] = %g off S", n, i, f_eq[i]);
+                continue;
+            }
+            double others = c.a_free[i];
+            for (size_t j = 0; j < c.m; j++)
+                others += j == i ? 0.0 : c.W[i * c.m + j] * f_ref[j];
+            double expected = -others / c.W[i * c.m + i];
+            double err_feq = fabs(f_eq[i] - expected) / (scale + fabs(expected));
+            worst_feq = fmax(worst_feq, err_feq);
+            ck_assert_msg(err_feq <= 1e-11, "case %d: f_eq[%zu] = %.17g, expected %.17g", n, i,
+                          f_eq[i], expected);
+        }
+        fricreg_ctx_free(ctx);
+    }
+    printf("brute force: %d cases, %ld near-stick contacts (s up to %zu), %ld assignments; "
+           "largest |f - f_ref| / max mun %.3g, f_eq %.3g\n",
+           n_cases, near_stick_contacts, largest_s, assignments, worst, worst_feq);
+    fflush(stdout); /* Check forks: the child may _exit before stdio flushes */
+    ck_assert_uint_eq(largest_s, MMAX);
+}
+END_TEST
+
+/* The same contexts reused along a random walk of states: each evaluation starts from the
+ * previous call's active set (the warm start), which must not change the answer. */
+START_TEST(warm_started_walk_matches_brute_force)
+{
+    rng_state = 0x5eed0003u;
+    for (int n = 0; n < 40; n++) {
+        contact_case c;
+        random_case(&c, uniform_size(2, MMAX));
+        fricreg_ctx *ctx = make_ctx(&c, FRICREG_LAW_QUINN, FRICREG_PARTITION_CONSISTENT);
+        for (int step = 0; step < 25; step++) {
+            size_t j = uniform_size(0, c.m - 1);
+            c.a_free[j] += uniform(-0.3, 0.3) * c.W[j * c.m + j] * (c.mun[j] + 0.1);
+            c.zdot[j] = fmax(-1.5 * c.eps, fmin(1.5 * c.eps, c.zdot[j] + uniform(-0.3, 0.3) * c.eps));
+            double f_ref[MMAX], f[MMAX];
+            reference_forces(&c, FRICREG_LAW_QUINN, f_ref);
+            eval(ctx, c.m, c.zdot, c.a_free, f, NULL);
+            double scale = fmax(max_of(c.mun, c.m), 1e-300);
+            for (size_t i = 0; i < c.m; i++)
+                ck_assert_msg(fabs(f[i] - f_ref[i]) <= 1e-12 * scale,
+                              "walk %d step %d: f[%zu] = %.17g, reference %.17g", n, step, i,
+                              f[i], f_ref[i]);
+        }
+        fricreg_ctx_free(ctx);
+    }
+}
+END_TEST
+
+/* The issue's two-block numbers through the library: the consistent law gives the hand-solved
+ * values of the reference tests on both sides of each band edge. */
+START_TEST(two_block_issue_cases)
+{
+    const double eps = 0.02, in = 1.0 - 1e-9, out = 1.0 + 1e-9;
+    struct { double z1, z2, a1, a2, f1, f2; } rows[] = {
+        {0.0, eps * in, 0.1, 0.1, -0.35, -0.25},
+        {0.0, eps * out, 0.1, 0.1, -0.35, -0.25},
+        {eps * in, 0.0, -0.3, 0.1, -0.5, -0.25},
+        {eps * out, 0.0, -0.3, 0.1, -0.5, -0.25},
+        {0.0, 0.0, 0.1, 0.1, -0.3, -0.2},
+        {0.0, 0.0, 0.4, -0.1, -0.5, -0.2},
+        {0.006, -0.004, 0.1, 0.1, -0.5, -0.15},
+    };
+    for (size_t r = 0; r < sizeof rows / sizeof rows[0]; r++) {
+        contact_case c = two_block(rows[r].z1, rows[r].z2, rows[r].a1, rows[r].a2);
+        fricreg_ctx *ctx = make_ctx(&c, FRICREG_LAW_QUINN, FRICREG_PARTITION_CONSISTENT);
+        double f[2];
+        eval(ctx, 2, c.zdot, c.a_free, f, NULL);
+        ck_assert_msg(fabs(f[0] - rows[r].f1) <= 1e-9 && fabs(f[1] - rows[r].f2) <= 1e-9,
+                      "row %zu: f = (%.17g, %.17g), expected (%g, %g)", r, f[0], f[1],
+                      rows[r].f1, rows[r].f2);
+        fricreg_ctx_free(ctx);
+    }
+}
+END_TEST
+
+/* ---- 2. Continuity across every band edge and every saturation edge ---------------------- */
+
+/* The jump of f at x along one input (zdot_j or a_free_j), free of f's slope: f is piecewise
+ * affine in each input (a parametric QP with the parameter in b, l and u), so with
+ * D(p, q) = f(q) - f(p), D(x-d, x+d) - (D(x+d, x+3d) + D(x-3d, x-d))/2 is zero to rounding on
+ * each side's affine piece with one kink at x, and equals the jump if f jumps at x. Returns
+ * max_i of its modulus. */
+static double jump_at(fricreg_ctx *ctx, const contact_case *c, int along_zdot, size_t j,
+                      double x, double d)
+{
+    double zdot[MMAX], a[MMAX], f[4][MMAX], jump = 0.0;
+    static const double at[4] = {-3.0, -1.0, 1.0, 3.0};
+    memcpy(zdot, c->zdot, c->m * sizeof *zdot);
+    memcpy(a, c->a_free, c->m * sizeof *a);
+    for (int k = 0; k < 4; k++) {
+        (along_zdot ? zdot : a)[j] = x + at[k] * d;
+        eval(ctx, c->m, zdot, a, f[k], NULL);
+    }
+    for (size_t i = 0; i < c->m; i++) {
+        double centre = f[2][i] - f[1][i];
+        double sides = 0.5 * ((f[3][i] - f[2][i]) + (f[1][i] - f[0][i]));
+        jump = fmax(jump, fabs(centre - sides));
+    }
+    return jump;
+}
+
+/* f_eq,j of the context at a_free_j = x (NaN if j is not near-stick). */
+static double feq_at(fricreg_ctx *ctx, const contact_case *c, size_t j, double x)
+{
+    double a[MMAX], f[MMAX], f_eq[MMAX];
+    memcpy(a, c->a_free, c->m * sizeof *a);
+    a[j] = x;
+    eval(ctx, c->m, c->zdot, a, f, f_eq);
+    return f_eq[j];
+}
+
+/* Bisection for a_free_j where the context's f_eq,j crosses `level` (= +-mun_j), between lo
+ * and hi, whose f_eq,j - level have opposite signs. Returns 0 if they do not. */
+static int saturation_edge(fricreg_ctx *ctx, const contact_case *c, size_t j, double level,
+                           double lo, double hi, double *edge)
+{
+    double g_lo = feq_at(ctx, c, j, lo) - level, g_hi = feq_at(ctx, c, j, hi) - level;
+    if (!(g_lo * g_hi < 0.0))
+        return 0;
+    for (int it = 0; it < 200 && hi - lo > 1e-15 * fmax(fabs(lo), fabs(hi)); it++) {
+        double mid = 0.5 * (lo + hi), g = feq_at(ctx, c, j, mid) - level;
+        if ((g < 0.0) == (g_lo < 0.0))
+            lo = mid, g_lo = g;
+        else
+            hi = mid;
+    }
+    *edge = 0.5 * (lo + hi);
+    return 1;
+}
+
+typedef struct {
+    double band, saturation; /* largest jump / max mun found at each kind of edge */
+    long n_band, n_saturation;
+} jumps;
+
+/* Sweep every edge of contact j of case c, law (4), in the given context. */
+static void sweep_contact(fricreg_ctx *ctx, const contact_case *c, size_t j, jumps *out)
+{
+    double scale = fmax(max_of(c->mun, c->m), 1e-300);
+    for (int side = -1; side <= 1; side += 2) { /* zdot_j = -eps, +eps, from (1 -+ 1e-9) eps */
+        double jump = jump_at(ctx, c, 1, j, side * c->eps, 1e-9 * c->eps) / scale;
+        out->band = fmax(out->band, jump);
+        out->n_band++;
+    }
+    if (!(fabs(c->zdot[j]) < c->eps) || c->mun[j] == 0.0)
+        return;
+    /* |a_free_j| beyond W_jj mun_j + sum_k |W_jk| mun_k saturates f_eq,j under the consistent
+     * law whatever the others do: the bracket of both crossings. */
+    double reach = 0.0;
+    for (size_t k = 0; k < c->m; k++)
+        reach += fabs(c->W[j * c->m + k]) * c->mun[k];
+    double big = 4.0 * (reach + c->W[j * c->m + j] * c->mun[j]);
+    for (int side = -1; side <= 1; side += 2) {
+        double edge;
+        if (!saturation_edge(ctx, c, j, side * c->mun[j], -big, big, &edge))
+            continue;
+        double jump = jump_at(ctx, c, 0, j, edge, 1e-9 * fmax(fabs(edge), big * 1e-3)) / scale;
+        out->saturation = fmax(out->saturation, jump);
+        out->n_saturation++;
+    }
+}
+
+/* Random SPD W, m = 2..8, random states: the consistent law's largest jump across every
+ * |zdot_j| = eps and every |f_eq,j| = mun_j is <= 1e-12 max mun; the paper's partition, for
+ * comparison, jumps by more than 0.1 mun somewhere (the issue measured up to 1.8 mun). */
+START_TEST(consistent_law_is_continuous_across_every_edge)
+{
+    rng_state = 0x5eed0004u;
+    jumps consistent = {0}, paper = {0};
+    for (int n = 0; n < 400; n++) {
+        contact_case c;
+        random_case(&c, uniform_size(2, MMAX));
+        fricreg_ctx *cons = make_ctx(&c, FRICREG_LAW_QUINN, FRICREG_PARTITION_CONSISTENT);
+        fricreg_ctx *pap = make_ctx(&c, FRICREG_LAW_QUINN, FRICREG_PARTITION_PAPER);
+        for (size_t j = 0; j < c.m; j++) {
+            sweep_contact(cons, &c, j, &consistent);
+            sweep_contact(pap, &c, j, &paper);
+        }
+        fricreg_ctx_free(cons);
+        fricreg_ctx_free(pap);
+    }
+    printf("largest jump / max mun: consistent %.3g at %ld band edges, %.3g at %ld saturation "
+           "edges; paper %.3g (band), %.3g (saturation)\n",
+           consistent.band, consistent.n_band, consistent.saturation, consistent.n_saturation,
+           paper.band, paper.saturation);
+    fflush(stdout); /* Check forks: the child may _exit before stdio flushes */
+    ck_assert_int_gt(consistent.n_saturation, 1000);
+    ck_assert_msg(consistent.band <= 1e-12, "band-edge jump %.3g max mun", consistent.band);
+    ck_assert_msg(consistent.saturation <= 1e-12, "saturation-edge jump %.3g max mun",
+                  consistent.saturation);
+    ck_assert_msg(paper.band > 0.1, "the paper's partition did not jump: %.3g", paper.band);
+}
+END_TEST
+
+/* The issue's measured jumps of the paper's partition, as the detector sees them: f_1
+ * -0.30 -> -0.35 (0.05 = 0.1 max mun) and f_2 +0.2 -> -0.25 (0.45 = 0.9 max mun, 1.8 mun_2). */
+START_TEST(paper_partition_jumps_as_the_issue_measured)
+{
+    contact_case c = two_block(0.0, 0.0, 0.1, 0.1);
+    fricreg_ctx *ctx = make_ctx(&c, FRICREG_LAW_QUINN, FRICREG_PARTITION_PAPER);
+    ck_assert_double_eq_tol(jump_at(ctx, &c, 1, 1, 0.02, 1e-9 * 0.02), 0.05, 1e-9);
+    c = two_block(0.0, 0.0, -0.3, 0.1);
+    ck_assert_double_eq_tol(jump_at(ctx, &c, 1, 0, 0.02, 1e-9 * 0.02), 0.45, 1e-9);
+    fricreg_ctx_free(ctx);
+}
+END_TEST
+
+/* ---- 3. Diagonal W: law (4) contact by contact -------------------------------------------- */
+
+/* With W = diag(w) the QP separates, so the consistent law is law (4) at f_eq,i = -a_free,i/w_i:
+ * fricreg_law_eval(QUINN, ...) to rounding (8 ulp of mun_i + |f_eq,i|, the size of the terms
+ * that cancel in f_eq,i - c_i mun_i), through set_coupling_diagonal and
+ * through a dense matrix that happens to be diagonal, under either partition. Karnopp too. */
+START_TEST(diagonal_w_is_law_4_contact_by_contact)
+{
+    static const int laws[2] = {FRICREG_LAW_QUINN, FRICREG_LAW_KARNOPP};
+    rng_state = 0x5eed0005u;
+    double worst = 0.0;
+    for (int n = 0; n < 1000; n++) {
+        contact_case c;
+        random_case(&c, uniform_size(2, MMAX));
+        double w[MMAX];
+        memset(c.W, 0, sizeof c.W);
+        for (size_t i = 0; i < c.m; i++) {
+            w[i] = uniform(0.2, 5.0);
+            c.W[i * c.m + i] = w[i];
+            c.a_free[i] = uniform(-2.0, 2.0) * w[i] * (c.mun[i] + 0.1);
+        }
+        int law = laws[n % 2];
+        fricreg_ctx *dense = make_ctx(&c, law, FRICREG_PARTITION_CONSISTENT);
+        fricreg_ctx *paper = make_ctx(&c, law, FRICREG_PARTITION_PAPER);
+        fricreg_ctx *diag = make_ctx(&c, law, FRICREG_PARTITION_CONSISTENT);
+        ck_assert_int_eq(fricreg_ctx_set_coupling_diagonal(diag, c.m, w), FRICREG_OK);
+        fricreg_ctx *ctxs[3] = {dense, paper, diag};
+        for (int k = 0; k < 3; k++) {
+            double f[MMAX];
+            eval(ctxs[k], c.m, c.zdot, c.a_free, f, NULL);
+            for (size_t i = 0; i < c.m; i++) {
+                double expected;
+                ck_assert_int_eq(fricreg_law_eval(law, c.zdot[i], -c.a_free[i] / w[i], c.mun[i],
+                                                  c.eps, &expected),
+                                 FRICREG_OK);
+                double err = fabs(f[i] - expected);
+                double size = c.mun[i] + fabs(c.a_free[i] / w[i]);
+                worst = fmax(worst, err / size);
+                ck_assert_msg(err <= 8.0 * DBL_EPSILON * size,
+                              "case %d ctx %d law %d: f[%zu] = %.17g, law %.17g", n, k, law, i,
+                              f[i], expected);
+            }
+        }
+        fricreg_ctx_free(dense);
+        fricreg_ctx_free(paper);
+        fricreg_ctx_free(diag);
+    }
+    printf("diagonal W: largest |f - law| / (mun + |f_eq|) %.3g\n", worst);
+    fflush(stdout); /* Check forks: the child may _exit before stdio flushes */
+}
+END_TEST
+
 /* ---- Suite -------------------------------------------------------------------------------- */
 
 static Suite *coupled_suite(void)
@@ -409,6 +730,16 @@ static Suite *coupled_suite(void)
     tcase_add_test(tc, reference_all_saturated);
     tcase_add_test(tc, reference_is_the_box_minimizer);
     suite_add_tcase(s, tc);
+
+    tc = tcase_create("library");
+    tcase_add_test(tc, consistent_law_matches_brute_force);
+    tcase_add_test(tc, warm_started_walk_matches_brute_force);
+    tcase_add_test(tc, two_block_issue_cases);
+    tcase_add_test(tc, consistent_law_is_continuous_across_every_edge);
+    tcase_add_test(tc, paper_partition_jumps_as_the_issue_measured);
+    tcase_add_test(tc, diagonal_w_is_law_4_contact_by_contact);
+    suite_add_tcase(s, tc);
+
     return s;
 }
 
