@@ -63,7 +63,11 @@ expect_output '"stick_fraction": \[0\.[1-9][0-9]*, 0\.[1-9][0-9]*\]' twoblock
 expect_usage_error "--partition" twoblock --partition joint
 expect_usage_error "--partition" oscillator --partition paper
 expect_output '"stick_fraction": \[0\.37878[0-9]*, 0\.44404[0-9]*\]' twoblock --partition paper
+expect_output '"stick_fraction": \[0\.37878[0-9]*, 0\.44563[0-9]*\]' twoblock --partition consistent
 expect_usage_error "--dt" twoblock --mu1 10 --mu2 5 --eps 0.02 --dt 0.0025 --cycles 2 --partition paper
+# ... and under the consistent law that step holds the stick (shared/spec/coupled.md: D of the
+# second cycle 6e-9, against 2e-13 at dt 0.0005 and 1.18 where the stick is lost).
+expect_output '"dissipation_per_cycle": \[0\.2501[0-9]*, [0-9.]+e-(09|1[0-9])\]' twoblock --mu1 10 --mu2 5 --eps 0.02 --dt 0.0025 --cycles 2 --partition consistent
 
 # Trajectory: header, and one row per GSL step (2 dt for RK4) plus t = 0: 1 + 5/0.02 + header.
 "$sim" oscillator --t-end 5 --output trajectory >"$tmp/traj.csv" || fails=$((fails + 1))
@@ -83,6 +87,6 @@ expect_usage_error "--eps" exact --eps 0.02
 expect_usage_error "--eps" exact --eps=0.02
 expect_usage_error "--output" exact --output trajectory
 
-total=37
+total=39
 echo "$((total - fails)) passed, $fails failed"
 [ $fails -eq 0 ]
