@@ -51,7 +51,7 @@ static int check_inputs(fricreg_ctx *ctx, size_t m, const double zdot[], const d
         ctx->f[i] = near ? 0.0 : (SLIP_FORCE);                            \
     }
 
-static void split_contacts(fricreg_ctx *ctx, const double zdot[])
+void fr_split_contacts(fricreg_ctx *ctx, const double zdot[])
 {
     size_t n_stick = 0;
     const double eps = ctx->eps, *mun = ctx->mun;
@@ -106,7 +106,7 @@ static void eval_diagonal(fricreg_ctx *ctx, const double zdot[], const double a_
 /* A dense W (or a law without f_eq): split, then the near-stick forces by the partition. */
 static int eval_dense(fricreg_ctx *ctx, const double zdot[], const double a_free[])
 {
-    split_contacts(ctx, zdot);
+    fr_split_contacts(ctx, zdot);
     if (!fr_law_uses_feq(ctx->law))
         return FRICREG_OK; /* S is empty */
     if (ctx->partition == FRICREG_PARTITION_CONSISTENT)

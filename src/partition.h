@@ -4,6 +4,10 @@
 
 #include "ctx_internal.h"
 
+/* Splits the contacts at zdot[m]: slip contacts get their force in ctx->f, the near-stick
+ * set S (where the law reads f_eq) is listed in ctx->stick[ctx->n_stick] with f = 0. */
+void fr_split_contacts(fricreg_ctx *ctx, const double zdot[]);
+
 /* Both take ctx->f with the slip forces on L and 0 on S = ctx->stick[ctx->n_stick] (W dense;
  * S non-empty for the paper's), and complete ctx->f on S and ctx->f_eq on S. They return FRICREG_OK or
  * FRICREG_ESINGULAR (recorded); on failure ctx->f and ctx->f_eq are scratch. */
