@@ -715,6 +715,206 @@ START_TEST(diagonal_w_is_law_4_contact_by_contact)
 }
 END_TEST
 
+/* ---- 4. The tangent ----------------------------------------------------------------------- */
+
+/* The tangent of the last evaluation against central differences of fricreg_ctx_eval, column
+ * by column: column j of df/dzdot with step h = 1e-6 eps, of df/da_free with h = 1e-6 (W_jj mun_j
+ * + 0.1). Every law but tanh is piecewise affine in each input, so where no kink lies within h
+ * the four differences over h from x - 2h to x + 2h agree to rounding (~1e-8 of the scale); a
+ * column where they differ by more than 1e-7 of the scale straddles a kink or a jump (band
+ * edge, bound, active-set change, Coulomb's v = 0) and is skipped. tanh is smooth: its central difference is O(h^2). The
+ * tangent must match to 1e-6 of the scale: the largest entry of the difference matrix, at least
+ * max mun / eps (df/dzdot) or 1 / max W_jj (df/da_free), so that a zero matrix is compared too.
+ * Returns the number of columns compared; *worst gets the largest scaled error. */
+static int check_tangent(fricreg_ctx *ctx, const contact_case *c, int law, double *worst,
+                         int *skipped)
+{
+    size_t m = c->m;
+    double T[2][MMAX * MMAX], D[2][MMAX * MMAX], f0[MMAX], floor_scale[2] = {0.0, 0.0};
+    int ok[2][MMAX], compared = 0;
+    eval(ctx, m, c->zdot, c->a_free, f0, NULL);
+    ck_assert_int_eq(fricreg_ctx_tangent(ctx, m, T[0], T[1]), FRICREG_OK);
+    for (size_t j = 0; j < m; j++) {
+        floor_scale[0] = fmax(floor_scale[0], c->mun[j] / c->eps);
+        floor_scale[1] = fmax(floor_scale[1], 1.0 / c->W[j * m + j]);
+    }
+    for (int which = 0; which < 2; which++) {
+        double scale = floor_scale[which];
+        for (size_t j = 0; j < m; j++) {
+            double zdot[MMAX], a[MMAX], fp[MMAX], fm[MMAX], fpp[MMAX], fmm[MMAX];
+            double *x = which == 0 ? zdot : a;
+            double h = which == 0 ? 1e-6 * c->eps
+                                  : 1e-6 * (c->W[j * m + j] * c->mun[j] + 0.1);
+            memcpy(zdot, c->zdot, m * sizeof *zdot);
+            memcpy(a, c->a_free, m * sizeof *a);
+            double x0 = x[j];
+            const double offsets[4] = {h, -h, 2.0 * h, -2.0 * h};
+            double *outs[4] = {fp, fm, fpp, fmm};
+            for (int k = 0; k < 4; k++) {
+                x[j] = x0 + offsets[k];
+                eval(ctx, m, zdot, a, outs[k], NULL);
+            }
+            /* the four steps from x - 2h to x + 2h are equal on one affine piece; a jump at x
+             * (Coulomb at v = 0) keeps the two middle ones equal but not the outer ones */
+            double kink = 0.0;
+            for (size_t i = 0; i < m; i++) {
+                double steps[4] = {fmm[i] - fm[i], fm[i] - f0[i], f0[i] - fp[i], fp[i] - fpp[i]};
+                for (int k = 1; k < 4; k++)
+                    kink = fmax(kink, fabs(steps[k] - steps[0]) / h);
+                D[which][i * m + j] = (fp[i] - fm[i]) / (2.0 * h);
+                scale = fmax(scale, fabs(D[which][i * m + j]));
+            }
+            ok[which][j] = law == FRICREG_LAW_TANH || kink <= 1e-7 * floor_scale[which];
+        }
+        for (size_t j = 0; j < m; j++) {
+            if (!ok[which][j]) {
+                (*skipped)++;
+                continue;
+            }
+            compared++;
+            for (size_t i = 0; i < m; i++) {
+                double diff = fabs(T[which][i * m + j] - D[which][i * m + j]);
+                double err = diff == 0.0 ? 0.0 : diff / scale; /* scale 0: every mun is 0 */
+                *worst = fmax(*worst, err);
+                ck_assert_msg(err <= 1e-6,
+                              "law %d, %s, m %zu: d f_%zu / d %s_%zu = %.10g, central "
+                              "difference %.10g (scale %.3g)",
+                              law, which == 0 ? "df_dzdot" : "df_dafree", m, i,
+                              which == 0 ? "zdot" : "a_free", j, T[which][i * m + j],
+                              D[which][i * m + j], scale);
+            }
+        }
+    }
+    return compared;
+}
+
+/* Every law, both partitions, random dense SPD W (m = 2..6) and the diagonal W: the tangent
+ * matches central differences away from kinks, and most columns are away from kinks. */
+START_TEST(tangent_matches_central_differences)
+{
+    static const int laws[6] = {FRICREG_LAW_QUINN, FRICREG_LAW_KARNOPP, FRICREG_LAW_FORCE_BALANCE,
+                                FRICREG_LAW_COULOMB, FRICREG_LAW_VELOCITY_LIMITED,
+                                FRICREG_LAW_TANH};
+    static const int partitions[2] = {FRICREG_PARTITION_CONSISTENT, FRICREG_PARTITION_PAPER};
+    rng_state = 0x5eed0006u;
+    for (int l = 0; l < 6; l++)
+        for (int p = 0; p < 2; p++) {
+            double worst = 0.0;
+            int compared = 0, skipped = 0;
+            for (int n = 0; n < 150; n++) {
+                contact_case c;
+                random_case(&c, uniform_size(2, 6));
+                fricreg_ctx *ctx = make_ctx(&c, laws[l], partitions[p]);
+                if (n % 5 == 0) { /* the diagonal W's own path */
+                    double w[MMAX];
+                    for (size_t i = 0; i < c.m; i++)
+                        w[i] = c.W[i * c.m + i];
+                    memset(c.W, 0, sizeof c.W);
+                    for (size_t i = 0; i < c.m; i++)
+                        c.W[i * c.m + i] = w[i];
+                    ck_assert_int_eq(fricreg_ctx_set_coupling_diagonal(ctx, c.m, w), FRICREG_OK);
+                }
+                compared += check_tangent(ctx, &c, laws[l], &worst, &skipped);
+                fricreg_ctx_free(ctx);
+            }
+            printf("tangent, law %d, partition %d: %d columns compared, %d skipped at kinks, "
+                   "largest error %.3g of scale\n",
+                   laws[l], partitions[p], compared, skipped, worst);
+            fflush(stdout);
+            ck_assert_int_gt(compared, 3 * skipped);
+        }
+}
+END_TEST
+
+/* Closed forms on the two blocks at rest, a_free = (0.1, 0.1) (all interior, see
+ * reference_interior_at_rest). Consistent: f = -W^-1 (a_free + diag(W_ii 2 mun_i / eps) zdot),
+ * so df/da_free = -W^-1 = -[[2, 1], [1, 1]] and df/dzdot = -W^-1 diag(1 * 50, 2 * 25)
+ * = -[[100, 50], [50, 50]]. Paper's partition: f = f_eq - diag(2 mun / eps) zdot with
+ * f_eq = -W^-1 a_free: df/da_free = -W^-1 again, df/dzdot = -diag(50, 25). */
+START_TEST(tangent_closed_form_two_blocks)
+{
+    contact_case c = two_block(0.0, 0.0, 0.1, 0.1);
+    static const double dfda[4] = {-2.0, -1.0, -1.0, -1.0};
+    static const double dfdz_consistent[4] = {-100.0, -50.0, -50.0, -50.0};
+    static const double dfdz_paper[4] = {-50.0, 0.0, 0.0, -25.0};
+    const int partitions[2] = {FRICREG_PARTITION_CONSISTENT, FRICREG_PARTITION_PAPER};
+    const double *dfdz[2] = {dfdz_consistent, dfdz_paper};
+    for (int p = 0; p < 2; p++) {
+        fricreg_ctx *ctx = make_ctx(&c, FRICREG_LAW_QUINN, partitions[p]);
+        double f[2], Tz[4], Ta[4];
+        eval(ctx, 2, c.zdot, c.a_free, f, NULL);
+        ck_assert_int_eq(fricreg_ctx_tangent(ctx, 2, Tz, Ta), FRICREG_OK);
+        for (int k = 0; k < 4; k++) {
+            ck_assert_double_eq_tol(Ta[k], dfda[k], 1e-12);
+            ck_assert_double_eq_tol(Tz[k], dfdz[p][k], 1e-10);
+        }
+        fricreg_ctx_free(ctx);
+    }
+}
+END_TEST
+
+static void expect_tangent_failure(fricreg_ctx *ctx, size_t m, double Tz[], double Ta[],
+                                   int code, const char *what)
+{
+    double *outs[2] = {Tz, Ta};
+    for (int k = 0; k < 2; k++)
+        if (outs[k] != NULL)
+            for (size_t i = 0; i < m * m; i++)
+                outs[k][i] = SENTINEL;
+    int status = fricreg_ctx_tangent(ctx, m, Tz, Ta);
+    ck_assert_msg(status == code, "%s: status %d, expected %d", what, status, code);
+    if (ctx != NULL) {
+        ck_assert_int_eq(fricreg_ctx_errcode(ctx), code);
+        ck_assert_msg(strlen(fricreg_ctx_errmsg(ctx)) > 0, "%s: no message", what);
+    }
+    for (int k = 0; k < 2; k++)
+        if (outs[k] != NULL)
+            for (size_t i = 0; i < m * m; i++)
+                ck_assert_msg(outs[k][i] == SENTINEL, "%s: output written", what);
+}
+
+/* Every error return: NULL context, both outputs NULL, a wrong m, no evaluation yet, and each
+ * setter invalidating the last evaluation; one NULL output is allowed and leaves it alone. */
+START_TEST(tangent_errors)
+{
+    contact_case c = two_block(0.0, 0.0, 0.1, 0.1);
+    double Tz[9], Ta[9], f[2];
+    const double w[2] = {1.0, 2.0};
+    fricreg_ctx *ctx = make_ctx(&c, FRICREG_LAW_QUINN, FRICREG_PARTITION_CONSISTENT);
+    expect_tangent_failure(NULL, 2, Tz, Ta, FRICREG_ENULL, "NULL context");
+    expect_tangent_failure(ctx, 2, Tz, Ta, FRICREG_EINVAL, "no evaluation yet");
+
+    eval(ctx, 2, c.zdot, c.a_free, f, NULL);
+    expect_tangent_failure(ctx, 2, NULL, NULL, FRICREG_ENULL, "both outputs NULL");
+    expect_tangent_failure(ctx, 3, Tz, Ta, FRICREG_ESIZE, "m = 3");
+    expect_tangent_failure(ctx, 1, Tz, Ta, FRICREG_ESIZE, "m = 1");
+    for (int k = 0; k < 4; k++)
+        Ta[k] = SENTINEL;
+    ck_assert_int_eq(fricreg_ctx_tangent(ctx, 2, Tz, NULL), FRICREG_OK);
+    ck_assert_double_eq_tol(Tz[0], -100.0, 1e-10);
+    ck_assert_int_eq(fricreg_ctx_tangent(ctx, 2, NULL, Ta), FRICREG_OK);
+    ck_assert_double_eq_tol(Ta[0], -2.0, 1e-12);
+
+    for (int setter = 0; setter < 5; setter++) {
+        eval(ctx, 2, c.zdot, c.a_free, f, NULL);
+        ck_assert_int_eq(fricreg_ctx_tangent(ctx, 2, Tz, Ta), FRICREG_OK);
+        switch (setter) {
+        case 0: ck_assert_int_eq(fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, 0.02), FRICREG_OK); break;
+        case 1: ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, 2, c.mun), FRICREG_OK); break;
+        case 2: ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, 2, c.W), FRICREG_OK); break;
+        case 3: ck_assert_int_eq(fricreg_ctx_set_coupling_diagonal(ctx, 2, w), FRICREG_OK); break;
+        default:
+            ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, 2, c.W), FRICREG_OK);
+            eval(ctx, 2, c.zdot, c.a_free, f, NULL);
+            ck_assert_int_eq(fricreg_ctx_set_partition(ctx, FRICREG_PARTITION_PAPER), FRICREG_OK);
+            break;
+        }
+        expect_tangent_failure(ctx, 2, Tz, Ta, FRICREG_EINVAL, "after a setter");
+    }
+    fricreg_ctx_free(ctx);
+}
+END_TEST
+
 /* ---- Suite -------------------------------------------------------------------------------- */
 
 static Suite *coupled_suite(void)
@@ -738,6 +938,12 @@ static Suite *coupled_suite(void)
     tcase_add_test(tc, consistent_law_is_continuous_across_every_edge);
     tcase_add_test(tc, paper_partition_jumps_as_the_issue_measured);
     tcase_add_test(tc, diagonal_w_is_law_4_contact_by_contact);
+    suite_add_tcase(s, tc);
+
+    tc = tcase_create("tangent");
+    tcase_add_test(tc, tangent_matches_central_differences);
+    tcase_add_test(tc, tangent_closed_form_two_blocks);
+    tcase_add_test(tc, tangent_errors);
     suite_add_tcase(s, tc);
 
     return s;
