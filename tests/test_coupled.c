@@ -650,6 +650,84 @@ START_TEST(consistent_law_is_continuous_across_every_edge)
 }
 END_TEST
 
+/* f and f_eq of case c with mun_j replaced by x (the context's bounds are set to it). */
+static void eval_with_bound(fricreg_ctx *ctx, const contact_case *c, size_t j, double x,
+                            double f[], double f_eq[])
+{
+    double mun[MMAX];
+    memcpy(mun, c->mun, c->m * sizeof *mun);
+    mun[j] = x;
+    ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, c->m, mun), FRICREG_OK);
+    eval(ctx, c->m, c->zdot, c->a_free, f, f_eq);
+}
+
+/* The bound mun_j in (0, hi) where |f_eq,j| = mun_j (contact j starts to saturate), by
+ * bisection: near 0 the bound is below |f_eq,j|; at hi (beyond what the others can push,
+ * (|a_free,j| + sum_{k != j} |W_jk| mun_k) / W_jj) it is above. Returns 0 if not bracketed. */
+static int bound_edge(fricreg_ctx *ctx, const contact_case *c, size_t j, double hi, double *edge)
+{
+    double f[MMAX], f_eq[MMAX], lo = 1e-9 * hi;
+    eval_with_bound(ctx, c, j, lo, f, f_eq);
+    if (!(fabs(f_eq[j]) > lo))
+        return 0;
+    for (int it = 0; it < 200 && hi - lo > 1e-15 * hi; it++) {
+        double mid = 0.5 * (lo + hi);
+        eval_with_bound(ctx, c, j, mid, f, f_eq);
+        if (fabs(f_eq[j]) > mid)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    *edge = 0.5 * (lo + hi);
+    return 1;
+}
+
+/* The slope-free jump of jump_at, along mun_j. */
+static double jump_along_bound(fricreg_ctx *ctx, const contact_case *c, size_t j, double x,
+                               double d)
+{
+    static const double at[4] = {-3.0, -1.0, 1.0, 3.0};
+    double f[4][MMAX], f_eq[MMAX], jump = 0.0;
+    for (int k = 0; k < 4; k++)
+        eval_with_bound(ctx, c, j, x + at[k] * d, f[k], f_eq);
+    for (size_t i = 0; i < c->m; i++)
+        jump = fmax(jump, fabs((f[2][i] - f[1][i]) -
+                               0.5 * ((f[3][i] - f[2][i]) + (f[1][i] - f[0][i]))));
+    return jump;
+}
+
+/* fricreg.h: the consistent law is continuous in mun too. Random cases as above, every
+ * near-stick contact's saturation edge along its own bound: no jump beyond rounding. */
+START_TEST(consistent_law_is_continuous_in_the_bounds)
+{
+    rng_state = 0x5eed0007u;
+    double worst = 0.0;
+    long edges = 0;
+    for (int n = 0; n < 300; n++) {
+        contact_case c;
+        random_case(&c, uniform_size(2, MMAX));
+        fricreg_ctx *ctx = make_ctx(&c, FRICREG_LAW_QUINN, FRICREG_PARTITION_CONSISTENT);
+        for (size_t j = 0; j < c.m; j++) {
+            if (!(fabs(c.zdot[j]) < c.eps))
+                continue;
+            double reach = fabs(c.a_free[j]), edge;
+            for (size_t k = 0; k < c.m; k++)
+                reach += k == j ? 0.0 : fabs(c.W[j * c.m + k]) * c.mun[k];
+            if (!bound_edge(ctx, &c, j, 2.0 * reach / c.W[j * c.m + j] + 1.0, &edge))
+                continue;
+            double scale = fmax(max_of(c.mun, c.m), edge);
+            worst = fmax(worst, jump_along_bound(ctx, &c, j, edge, 1e-9 * edge) / scale);
+            edges++;
+        }
+        fricreg_ctx_free(ctx);
+    }
+    printf("largest jump / max mun along mun_j at %ld saturation edges: %.3g\n", edges, worst);
+    fflush(stdout); /* Check forks: the child may _exit before stdio flushes */
+    ck_assert_int_gt(edges, 300);
+    ck_assert_msg(worst <= 1e-12, "jump %.3g max mun along a bound", worst);
+}
+END_TEST
+
 /* The issue's measured jumps of the paper's partition, as the detector sees them: f_1
  * -0.30 -> -0.35 (0.05 = 0.1 max mun) and f_2 +0.2 -> -0.25 (0.45 = 0.9 max mun, 1.8 mun_2). */
 START_TEST(paper_partition_jumps_as_the_issue_measured)
@@ -1060,6 +1138,7 @@ static Suite *coupled_suite(void)
     tcase_add_test(tc, warm_started_walk_matches_brute_force);
     tcase_add_test(tc, two_block_issue_cases);
     tcase_add_test(tc, consistent_law_is_continuous_across_every_edge);
+    tcase_add_test(tc, consistent_law_is_continuous_in_the_bounds);
     tcase_add_test(tc, paper_partition_jumps_as_the_issue_measured);
     tcase_add_test(tc, diagonal_w_is_law_4_contact_by_contact);
     suite_add_tcase(s, tc);
