@@ -3,12 +3,14 @@
 # nothing to stdout; runs print the paper's numbers. Usage: cli.sh PATH/TO/fricreg-sim
 sim=$1
 fails=0
+total=0
 tmp=${TMPDIR:-/tmp}/fricreg-cli.$$
 mkdir -p "$tmp"
 trap 'rm -rf "$tmp"' EXIT
 
 # expect_usage_error OPTION-NAMED-IN-MESSAGE ARGS...
 expect_usage_error() {
+    total=$((total + 1))
     named=$1; shift
     "$sim" "$@" >"$tmp/out" 2>"$tmp/err"
     rc=$?
@@ -21,6 +23,7 @@ expect_usage_error() {
 
 # expect_output REGEX ARGS...
 expect_output() {
+    total=$((total + 1))
     regex=$1; shift
     if ! "$sim" "$@" >"$tmp/out" 2>"$tmp/err" || ! grep -Eq -- "$regex" "$tmp/out"; then
         echo "FAIL: fricreg-sim $* did not print /$regex/: $(head -c 300 "$tmp/out") $(cat "$tmp/err")"
@@ -68,6 +71,18 @@ expect_output '"x": \[-0\.75008[0-9]+' oscillator --t-end 20
 # Sec. 3.2, Fig. 9: the chain's D on the 4th cycle is 0.0105 (ours 0.010495).
 expect_output '"dissipation_per_cycle": \[[^]]*, 0\.01049[0-9]+\]' chain
 expect_output '"stick_fraction": \[0\.[1-9][0-9]*, 0\.[1-9][0-9]*\]' twoblock
+# --partition: the two blocks only; the paper's partition gives reproduce's Fig. 11 rows, and
+# its coupled stick-zone stiffness 1000 (1 + 1/sqrt 2) refuses dt 0.0025 that the consistent
+# law's 1000 accepts (dt * lambda = 4.27 and 2.5 against RK4's 2.785).
+expect_usage_error "--partition" twoblock --partition joint
+expect_usage_error "--partition" oscillator --partition paper
+expect_output '"stick_fraction": \[0\.37878[0-9]*, 0\.44404[0-9]*\]' twoblock --partition paper
+expect_output '"stick_fraction": \[0\.37878[0-9]*, 0\.44563[0-9]*\]' twoblock --partition consistent
+expect_usage_error "--dt" twoblock --mu1 10 --mu2 5 --eps 0.02 --dt 0.0025 --cycles 2 --partition paper
+# ... and under the consistent law that step holds the stick (shared/spec/coupled.md: D of the
+# second cycle 6e-9, against 2e-13 at dt 0.0005 and 1.18 where the stick is lost).
+expect_output '"dissipation_per_cycle": \[0\.2501[0-9]*, [0-9.]+e-(09|1[0-9])\]' twoblock --mu1 10 --mu2 5 --eps 0.02 --dt 0.0025 --cycles 2 --partition consistent
+
 # Trajectory: header, and one row per GSL step (2 dt for RK4) plus t = 0: 1 + 5/0.02 + header.
 "$sim" oscillator --t-end 5 --output trajectory >"$tmp/traj.csv" || fails=$((fails + 1))
 [ "$(head -n 1 "$tmp/traj.csv")" = "t,x,v,f,f_eq" ] || { echo "FAIL: trajectory header"; fails=$((fails + 1)); }
@@ -89,6 +104,5 @@ expect_usage_error "--output" exact --output trajectory
 expect_usage_error "^fricreg-sim: --cycles: .*cycles = 2000000 must be from 1 to 10^6$" exact --cycles 2000000
 expect_usage_error "^fricreg-sim: --t-end: .*t_end = 1e+300 .*more than 10^6$" exact --t-end 1e300
 
-total=47
 echo "$((total - fails)) passed, $fails failed"
 [ $fails -eq 0 ]

@@ -20,6 +20,7 @@ struct cli_run {
     double t_end;               /* 0: use cycles */
     int cycles;
     enum cli_output output;
+    int partition; /* enum fricreg_partition; only twoblock's differs from the default */
     struct { int param; double value; } params[16];
     int nparams;
 };

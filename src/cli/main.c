@@ -28,6 +28,8 @@ static void usage(FILE *out)
           "  --output summary|trajectory   JSON summary, or CSV row per step       [summary]\n",
           out);
     cli_print_param_defaults(out);
+    fputs("            --partition paper|consistent  coupled contacts' near-stick law "
+          "[consistent]\n", out);
     fputs("Exit status: 0 success, 1 the simulation failed, 2 bad option or value.\n", out);
 }
 

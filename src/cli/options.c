@@ -147,6 +147,21 @@ static int parse_param(int system, const char *option, const char *text, struct 
     return usage_error(option, "unknown option for this system (see fricreg-sim --help)");
 }
 
+/* --partition paper|consistent (the two blocks only: the other systems have no coupled
+ * contacts, so the choice would change nothing there). */
+static int parse_partition(int system, const char *text, struct cli_run *run)
+{
+    if (system != FRICREG_SYSTEM_TWOBLOCK)
+        return usage_error("--partition", "only twoblock has coupled contacts");
+    if (strcmp(text, "consistent") == 0)
+        run->partition = FRICREG_PARTITION_CONSISTENT;
+    else if (strcmp(text, "paper") == 0)
+        run->partition = FRICREG_PARTITION_PAPER;
+    else
+        return usage_error("--partition", "expected paper or consistent");
+    return 0;
+}
+
 /* Options that every system has. Returns -1 if option is not one of them. */
 static int parse_common(const char *option, const char *text, struct cli_run *run)
 {
@@ -195,7 +210,7 @@ int cli_parse_run(int system, int argc, char **argv, struct cli_run *run)
 {
     *run = (struct cli_run){.system = system, .law = FRICREG_LAW_QUINN,
                             .integrator = FRICREG_INT_RK4, .dt = 0.01, .cycles = 4,
-                            .output = CLI_SUMMARY};
+                            .output = CLI_SUMMARY, .partition = FRICREG_PARTITION_CONSISTENT};
     int cycles_given = 0;
     for (int k = 0; k < argc; k++) {
         char *option = argv[k], *value = NULL;
@@ -211,7 +226,8 @@ int cli_parse_run(int system, int argc, char **argv, struct cli_run *run)
             return usage_error(option, "missing value");
         }
         cycles_given |= strcmp(option, "--cycles") == 0;
-        int status = parse_common(option, value, run);
+        int status = strcmp(option, "--partition") == 0 ? parse_partition(system, value, run)
+                                                         : parse_common(option, value, run);
         if (status < 0)
             status = parse_param(system, option, value, run);
         if (status != 0)

@@ -24,6 +24,8 @@ fricreg_sim *cli_make_sim(const struct cli_run *run)
     int status = fricreg_sim_set_law(sim, run->law, run->eps);
     if (status == FRICREG_OK)
         status = fricreg_sim_set_integrator(sim, run->integrator, run->dt, run->rtol, run->atol);
+    if (status == FRICREG_OK)
+        status = fricreg_sim_set_partition(sim, run->partition);
     for (int k = 0; status == FRICREG_OK && k < run->nparams; k++)
         status = fricreg_sim_set_param(sim, run->params[k].param, run->params[k].value);
     if (status != FRICREG_OK) {
