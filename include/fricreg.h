@@ -289,10 +289,13 @@ FRICREG_API int fricreg_ctx_eval(fricreg_ctx *ctx, size_t m, const double zdot[]
  *     active set A (contacts held at a bound) and free set F, d f_A from the bounds
  *     (0 or -2 mun_i/eps in zdot_i) and d f_F = -W_FF^-1 (d b_F + W_FA d f_A), with
  *     d b_i/d zdot_i = 2 W_ii mun_i/eps and d b/d a_free = I on F.
- *  Exact wherever the force is differentiable, which is almost everywhere. On a kink it is
- *  one-sided, the Jacobian of one adjacent piece: a contact exactly on its bound (|f_eq| = mun
- *  type kinks, and the saturation edge of (4)) is held there; at zdot_i = 0 the bounds'
- *  slopes are those of zdot_i > 0; at |zdot_i| = eps the contact slides (as eval decides).
+ *  Exact wherever the force is differentiable, which is almost everywhere. On a kink it
+ *  follows fixed rules: a contact exactly on its bound (|f_eq| = mun type kinks, and the
+ *  saturation edge of (4)) is held there; at zdot_i = 0 the bounds' slopes are those of
+ *  zdot_i > 0; at |zdot_i| = eps the contact slides (as eval decides). Each rule alone gives
+ *  the Jacobian of one adjacent piece; where two meet (a contact at rest exactly on its bound
+ *  with a zero multiplier) the result can lie between the pieces' Jacobians (on the two blocks:
+ *  their mean), which Newton's method tolerates but which is not one-sided.
  *
  *  Cost: no factorization when the evaluation's factor is still held (a failed eval or an
  *  eval with another free set since may cost one, counted in FRICREG_STAT_FACTORIZATIONS);
