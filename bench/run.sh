@@ -1,8 +1,9 @@
 #!/bin/sh
 # bench/run.sh — the whole benchmark, from the top of a fresh clone:
 #   builds with -DFRICREG_BENCH=ON in build-bench/, runs the work-precision and the scaling
-#   benchmarks, writes every CSV, gnuplot script and PNG to bench-results/, and prints the
-#   tables (the summary ends the work-precision part). Not run by ctest: it takes minutes.
+#   benchmarks, writes every CSV, gnuplot script and PNG to bench-results/, prints the
+#   tables (the summary ends the work-precision part), and rewrites the dated results page
+#   docs/results.md from them (commit it to publish a run). Not run by ctest: it takes minutes.
 # The event-driven baseline is built when SUNDIALS CVODE is installed (Debian:
 # libsundials-dev); without it the rest runs and says so.
 set -eu
@@ -37,4 +38,5 @@ if command -v gnuplot >/dev/null 2>&1; then
 else
     echo "gnuplot not found: no PNGs (the .gp scripts and the data are in $out/)"
 fi
+sh bench/results_page.sh "$out" docs/results.md
 echo "results in $out/; benchmark wall time $(( $(date +%s) - start )) s"

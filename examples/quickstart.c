@@ -1,4 +1,4 @@
-/* quickstart.c — the README's example: one law, then two coupled contacts through a context.
+/* quickstart.c — a first complete program: one law, then two coupled contacts through a context.
  * Build: cc quickstart.c $(pkg-config --cflags --libs fricreg) or with CMake (fricreg::fricreg). */
 #include <stdio.h>
 

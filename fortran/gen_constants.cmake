@@ -14,7 +14,7 @@
 # the build: the Fortran side must never silently miss or misread one. The test
 # fortran_constants compiles the names into C and compares the values the C compiler gives
 # them with the parsed ones, so a parse that went wrong in any other way fails there.
-cmake_minimum_required(VERSION 3.25)
+cmake_minimum_required(VERSION 3.18...3.25)
 foreach(var OUT_DIR HEADERS VERSION_HEADER)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "gen_constants.cmake: -D${var}=... is required")

@@ -36,7 +36,8 @@ extern "C" {
 /* ---- Version ----------------------------------------------------------------------------- */
 
 /** Library version as major*10000 + minor*100 + patch, of the library actually linked.
- *  Compare with FRICREG_VERSION_NUMBER (the header's) to detect a header/library mismatch. */
+ *  Compare with FRICREG_VERSION_NUMBER (the header's) to detect a header/library mismatch.
+ *  Returns that number, not a status: it cannot fail. */
 FRICREG_API int fricreg_version_number(void);
 
 /** Library version as a static string "MAJOR.MINOR.PATCH"; never NULL, owned by the library. */
@@ -102,7 +103,7 @@ FRICREG_API const char *fricreg_law_name(int law);
  *
  *  name  in: NUL-terminated name, compared exactly (case-sensitive); may be NULL.
  *
- *  Returns the law's value (>= 1); 0 if name is NULL or names no law. Since 1.1
+ *  Returns the law's value (>= 1), not a status; 0 if name is NULL or names no law. Since 1.1
  *  (FRICREG_1.1). Pure function; thread safe. */
 FRICREG_API int fricreg_law_from_name(const char *name);
 
@@ -329,7 +330,8 @@ FRICREG_API int fricreg_ctx_get_stat(const fricreg_ctx *ctx, int which, int64_t 
 /** Set every counter to zero. Does nothing if ctx is NULL. */
 FRICREG_API void fricreg_ctx_reset_stats(fricreg_ctx *ctx);
 
-/** Status code of the last failed call on this context (FRICREG_OK if none, or ctx NULL).
+/** Returns the status code of the last failed call on this context (FRICREG_OK if none, or
+ *  ctx NULL).
  *  A successful call does not clear it. Calls that take a const context
  *  (fricreg_ctx_get_stat) return their status without recording it. */
 FRICREG_API int fricreg_ctx_errcode(const fricreg_ctx *ctx);

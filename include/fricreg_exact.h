@@ -82,11 +82,12 @@ FRICREG_API int fricreg_exact_run(fricreg_exact *ex, double t_end);
 
 /** fricreg_exact_run over `cycles` whole forcing cycles: t_end = cycles 2 pi/omega, so
  *  fricreg_exact_ncycles is then `cycles`. 1 <= cycles <= 10^6.
- *  Returns as fricreg_exact_run; FRICREG_EINVAL for cycles out of range. Since 1.1. */
+ *  Returns FRICREG_OK or the codes of fricreg_exact_run; FRICREG_EINVAL also for cycles out
+ *  of range. Since 1.1. */
 FRICREG_API int fricreg_exact_run_cycles(fricreg_exact *ex, int cycles);
 
-/** Status of the last failed call on ex (FRICREG_OK if none, or ex NULL). A successful call
- *  does not clear it. The getters, which take a const object, return their status without
+/** Status of the last failed call on ex. Returns that code, or FRICREG_OK if none (or ex
+ *  NULL). A successful call does not clear it. The getters, which take a const object, return their status without
  *  recording it. Since 1.1. */
 FRICREG_API int fricreg_exact_errcode(const fricreg_exact *ex);
 

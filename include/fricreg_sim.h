@@ -77,7 +77,8 @@ enum fricreg_integrator {
  *  FRICREG_INT_RK4_GSL; NULL if unknown. Static storage. */
 FRICREG_API const char *fricreg_integrator_name(int integrator);
 
-/** The integrator named `name` (as above), or 0 if there is none. */
+/** The integrator named `name` (as above). Returns its enum value, not a status: 0 if there
+ *  is none (or name is NULL). */
 FRICREG_API int fricreg_integrator_from_name(const char *name);
 
 /** Opaque simulation of one reference system: parameters, law, integrator, results. */
@@ -168,7 +169,8 @@ FRICREG_API int fricreg_sim_set_observer(fricreg_sim *sim, fricreg_sim_observer 
  *  observer during a run is FRICREG_EINVAL. */
 FRICREG_API int fricreg_sim_run(fricreg_sim *sim, double t_end);
 
-/** fricreg_sim_run for `cycles` >= 1 whole forcing cycles. Same returns. */
+/** fricreg_sim_run for `cycles` >= 1 whole forcing cycles.
+ *  Returns FRICREG_OK, or the codes of fricreg_sim_run; FRICREG_EINVAL also if cycles < 1. */
 FRICREG_API int fricreg_sim_run_cycles(fricreg_sim *sim, int cycles);
 
 /** Number of bodies (degrees of freedom): 1, n or 2. 0 if sim is NULL. */
@@ -238,7 +240,7 @@ FRICREG_API int fricreg_sim_get_dissipation(const fricreg_sim *sim, size_t ncycl
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if m is not fricreg_sim_ncontacts. */
 FRICREG_API int fricreg_sim_get_stick_fraction(const fricreg_sim *sim, size_t m, double frac[]);
 
-/** Status of the last failed call (FRICREG_OK if none or sim NULL). The getters, which take
+/** Returns the status of the last failed call (FRICREG_OK if none or sim NULL). The getters, which take
  *  a const simulation, return their status without recording it. */
 FRICREG_API int fricreg_sim_errcode(const fricreg_sim *sim);
 

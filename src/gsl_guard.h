@@ -3,7 +3,7 @@
  * Every call into GSL that can report an error is bracketed by fr_gsl_quiet() and
  * fr_gsl_restore(): the caller's handler is put back afterwards. GSL's handler is one
  * process-wide pointer, so a program that calls GSL from other threads at the same time should
- * call gsl_set_error_handler_off() once itself (README, "Threads"). */
+ * call gsl_set_error_handler_off() once itself (docs/usage.md, "Errors and threads"). */
 #ifndef FRICREG_GSL_GUARD_H
 #define FRICREG_GSL_GUARD_H
 

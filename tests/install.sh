@@ -31,6 +31,8 @@ check "the shared consumer loads the installed library" \
 # 2. pkg-config.
 export PKG_CONFIG_PATH="$libdir/pkgconfig"
 check "pkg-config knows fricreg" pkg-config --exists fricreg
+check "fricreg.pc names the licence" grep -qx 'License: GPL-3.0-or-later' "$libdir/pkgconfig/fricreg.pc"
+check "the licence text is installed" sh -c "find '$prefix' -path '*/doc/fricreg/LICENSE' | grep -q ."
 check "pkg-config consumer build" sh -c "$cc '$src/tests/consumer/consumer.c' \
     \$(pkg-config --cflags fricreg) \$(pkg-config --libs fricreg) -o '$work/pc_consumer'"
 check "pkg-config consumer" "$work/pc_consumer"
