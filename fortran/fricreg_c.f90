@@ -182,6 +182,16 @@ module fricreg_c
       integer(c_size_t), value :: len
       integer(c_size_t) :: fricreg_ctx_errmsg_copy
     end function
+
+    !> Jacobian of the last evaluation's forces, each m*m, row-major: df_dzdot(i*m + j + 1) =
+    !> d f_i/d zdot_j (an (m, m) array receives the transpose); an absent one is skipped.
+    function fricreg_ctx_tangent(ctx, m, df_dzdot, df_dafree) bind(C, name='fricreg_ctx_tangent')
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: ctx
+      integer(c_size_t), value :: m
+      real(c_double), intent(inout), optional :: df_dzdot(*), df_dafree(*) ! on success
+      integer(c_int) :: fricreg_ctx_tangent
+    end function
   end interface
 
 contains

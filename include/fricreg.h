@@ -223,12 +223,57 @@ FRICREG_API int fricreg_ctx_stick_stiffness(fricreg_ctx *ctx, double *lambda);
 FRICREG_API int fricreg_ctx_eval(fricreg_ctx *ctx, size_t m, const double zdot[],
                                  const double a_free[], double f[], double f_eq[]);
 
+/** The Jacobian of the forces of the last successful fricreg_ctx_eval, for Newton in an implicit
+ *  integrator (Newmark, HHT-alpha, BDF): how f moves with zdot and with a_free.
+ *
+ *  m             must equal the context's contact count.
+ *  df_dzdot      out, optional (NULL to skip): m x m, row-major, df_dzdot[i*m + j] =
+ *                d f_i / d zdot_j, in force per velocity (f's unit over zdot's).
+ *  df_dafree     out, optional (NULL to skip): m x m, row-major, df_dafree[i*m + j] =
+ *                d f_i / d a_free_j, in force per acceleration (a mass, when f is a force and
+ *                a_free an acceleration). A Fortran caller passing an (m, m) array receives
+ *                the transpose: a(j, i) = d f_i / d zdot_j.
+ *  Written only on success, both in full (zeros included).
+ *
+ *  What it is, by law and partition (docs/coupled.md):
+ *   - slip contacts, and every contact of (1), (3) and tanh: the law's own slope in v on the
+ *     diagonal (0 for (1), (2), (4) and Karnopp sliding; -mun/eps inside (3)'s band;
+ *     -(mun/eps) sech^2(v/eps) for tanh), and nothing in a_free;
+ *   - near-stick contacts with a diagonal W, or under FRICREG_PARTITION_PAPER: law (4)
+ *     (Karnopp, (2)) differentiated at (zdot_i, f_eq,i), with d f_eq,S/d a_free,S = -W_SS^-1
+ *     (f_L does not move with zdot or a_free);
+ *   - near-stick contacts of a dense W under FRICREG_PARTITION_CONSISTENT: from the QP's final
+ *     active set A (contacts held at a bound) and free set F, d f_A from the bounds
+ *     (0 or -2 mun_i/eps in zdot_i) and d f_F = -W_FF^-1 (d b_F + W_FA d f_A), with
+ *     d b_i/d zdot_i = 2 W_ii mun_i/eps and d b/d a_free = I on F.
+ *  Exact wherever the force is differentiable, which is almost everywhere. On a kink it is
+ *  one-sided, the Jacobian of one adjacent piece: a contact exactly on its bound (|f_eq| = mun
+ *  type kinks, and the saturation edge of (4)) is held there; at zdot_i = 0 the bounds'
+ *  slopes are those of zdot_i > 0; at |zdot_i| = eps the contact slides (as eval decides).
+ *
+ *  Cost: no factorization when the evaluation's factor is still held (a failed eval or an
+ *  eval with another free set since may cost one, counted in FRICREG_STAT_FACTORIZATIONS);
+ *  then |S| + |F| triangular solves of order |F| (paper: 1 + |S| of order |S|), counted in
+ *  FRICREG_STAT_SOLVES, plus O(m^2) to write the zeros. No heap allocation.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if ctx is NULL or both outputs are NULL; FRICREG_ESIZE
+ *  if m differs from the context's; FRICREG_EINVAL if no evaluation has succeeded since the
+ *  context was created or since the last setter call (set_law, set_bounds, set_coupling_*,
+ *  set_partition); FRICREG_ESINGULAR only if the block it must refactorize has become
+ *  singular, which cannot happen with the same W. */
+FRICREG_API int fricreg_ctx_tangent(fricreg_ctx *ctx, size_t m, double df_dzdot[],
+                                    double df_dafree[]);
+
 /** Counters kept by a context since creation or the last fricreg_ctx_reset_stats. */
 enum fricreg_stat {
     FRICREG_STAT_EVALS = 0,          /**< successful calls of fricreg_ctx_eval */
     FRICREG_STAT_FEQ_CONTACTS = 1,   /**< contacts that needed f_eq, summed over evaluations */
-    FRICREG_STAT_FACTORIZATIONS = 2, /**< factorizations of W_SS */
-    FRICREG_STAT_SOLVES = 3          /**< triangular solves with a factor of W_SS */
+    FRICREG_STAT_FACTORIZATIONS = 2, /**< factorizations of a block of W (W_SS, or W_FF of the
+                                          consistent law's free set), by eval or tangent */
+    FRICREG_STAT_SOLVES = 3,         /**< triangular solves with such a factor */
+    FRICREG_STAT_QP_ITERATIONS = 4   /**< active-set iterations of the consistent law's QP,
+                                          summed over evaluations: 1 per evaluation with a
+                                          near-stick set when the warm start is right */
 };
 
 /** Read one counter (enum fricreg_stat) into *value.

@@ -18,12 +18,10 @@
 static void free_dense(fricreg_ctx *ctx)
 {
     free(ctx->W);
-    free(ctx->factor);
-    free(ctx->perm);
     free(ctx->rhs);
-    free(ctx->rcond_work);
-    ctx->W = ctx->factor = ctx->rhs = ctx->rcond_work = NULL;
-    ctx->perm = NULL;
+    ctx->W = ctx->rhs = NULL;
+    fr_factor_free(&ctx->fac);
+    fr_box_qp_free(&ctx->qp);
 }
 
 void fricreg_ctx_free(fricreg_ctx *ctx)
@@ -36,7 +34,9 @@ void fricreg_ctx_free(fricreg_ctx *ctx)
     free(ctx->f);
     free(ctx->f_eq);
     free(ctx->stick);
-    free(ctx->stick_prev);
+    free(ctx->side);
+    free(ctx->last_zdot);
+    free(ctx->last_afree);
     free(ctx);
 }
 
@@ -58,8 +58,11 @@ int fricreg_ctx_create(size_t m, fricreg_ctx **out)
     ctx->f = malloc(m * sizeof *ctx->f);
     ctx->f_eq = malloc(m * sizeof *ctx->f_eq);
     ctx->stick = malloc(m * sizeof *ctx->stick);
-    ctx->stick_prev = malloc(m * sizeof *ctx->stick_prev);
-    if (!ctx->mun || !ctx->w_diag || !ctx->f || !ctx->f_eq || !ctx->stick || !ctx->stick_prev) {
+    ctx->side = calloc(m, sizeof *ctx->side); /* all free: the QP's first warm start */
+    ctx->last_zdot = malloc(m * sizeof *ctx->last_zdot);
+    ctx->last_afree = malloc(m * sizeof *ctx->last_afree);
+    if (!ctx->mun || !ctx->w_diag || !ctx->f || !ctx->f_eq || !ctx->stick || !ctx->side ||
+        !ctx->last_zdot || !ctx->last_afree) {
         fricreg_ctx_free(ctx);
         return FRICREG_ENOMEM;
     }
@@ -86,6 +89,7 @@ int fricreg_ctx_set_law(fricreg_ctx *ctx, int law, double eps)
         return fr_fail(ctx, FRICREG_EINVAL, "set_law: eps = %g must be > 0", eps);
     ctx->law = law;
     ctx->eps = eps;
+    ctx->last_valid = 0;
     return FRICREG_OK;
 }
 
@@ -96,7 +100,8 @@ int fricreg_ctx_set_partition(fricreg_ctx *ctx, int partition)
     if (partition != FRICREG_PARTITION_CONSISTENT && partition != FRICREG_PARTITION_PAPER)
         return fr_fail(ctx, FRICREG_EINVAL, "set_partition: unknown partition %d", partition);
     ctx->partition = partition;
-    ctx->factor_valid = 0;
+    ctx->fac.valid = 0;
+    ctx->last_valid = 0;
     return FRICREG_OK;
 }
 
@@ -127,6 +132,7 @@ int fricreg_ctx_set_bounds(fricreg_ctx *ctx, size_t m, const double mun[])
             return fr_fail(ctx, FRICREG_EINVAL, "set_bounds: mun[%zu] = %g is negative", i,
                            mun[i]);
     memcpy(ctx->mun, mun, m * sizeof *mun);
+    ctx->last_valid = 0;
     return FRICREG_OK;
 }
 
@@ -141,7 +147,7 @@ int fricreg_ctx_set_coupling_diagonal(fricreg_ctx *ctx, size_t m, const double w
                            i, w[i]);
     free_dense(ctx);
     memcpy(ctx->w_diag, w, m * sizeof *w);
-    ctx->factor_valid = 0;
+    ctx->last_valid = 0;
     return FRICREG_OK;
 }
 
@@ -202,12 +208,13 @@ int fricreg_ctx_set_coupling_dense(fricreg_ctx *ctx, size_t m, const double W[])
         return status;
 
     double *copy = malloc(m * m * sizeof *copy);
-    double *factor = malloc(m * m * sizeof *factor);
-    size_t *perm = malloc(m * sizeof *perm);
     double *rhs = malloc(m * sizeof *rhs);
-    double *rcond_work = malloc(3 * m * sizeof *rcond_work);
-    if (!copy || !factor || !perm || !rhs || !rcond_work) {
-        free(copy), free(factor), free(perm), free(rhs), free(rcond_work);
+    struct fr_factor fac;
+    struct fr_box_qp qp;
+    int fac_status = fr_factor_alloc(&fac, m), qp_status = fr_box_qp_alloc(&qp, m);
+    if (!copy || !rhs || fac_status != FRICREG_OK || qp_status != FRICREG_OK) {
+        free(copy), free(rhs);
+        fr_factor_free(&fac), fr_box_qp_free(&qp);
         return fr_fail(ctx, FRICREG_ENOMEM, "set_coupling_dense: out of memory for m = %zu", m);
     }
     free_dense(ctx);
@@ -215,11 +222,10 @@ int fricreg_ctx_set_coupling_dense(fricreg_ctx *ctx, size_t m, const double W[])
     for (size_t i = 0; i < m; i++)
         ctx->w_diag[i] = W[i * m + i];
     ctx->W = copy;
-    ctx->factor = factor;
-    ctx->perm = perm;
     ctx->rhs = rhs;
-    ctx->rcond_work = rcond_work;
-    ctx->factor_valid = 0;
+    ctx->fac = fac; /* not valid: nothing factored yet */
+    ctx->qp = qp;
+    ctx->last_valid = 0;
     return FRICREG_OK;
 }
 

@@ -1,14 +1,17 @@
-/* ctx_internal.h — the context's layout, shared by ctx.c (set-up) and partition.c (eval). */
+/* ctx_internal.h — the context's layout, shared by ctx.c (set-up), the partitions (eval), the
+ * QP, the factor cache and the tangent. */
 #ifndef FRICREG_CTX_INTERNAL_H
 #define FRICREG_CTX_INTERNAL_H
 
 #include <stddef.h>
 #include <stdint.h>
 
+#include "box_qp.h"
 #include "error.h"
+#include "factor.h"
 #include "fricreg.h"
 
-#define FR_NSTATS 4
+#define FR_NSTATS 5
 #define FR_MAX_CONTACTS ((size_t)1 << 26)
 
 struct fricreg_ctx {
@@ -20,18 +23,20 @@ struct fricreg_ctx {
     double *w_diag; /* [m] diagonal of W (the whole of W when W is diagonal) */
     double *W;      /* [m*m] row-major dense W, or NULL when W is diagonal */
 
-    /* Scratch, allocated with the coupling so that eval never allocates. */
+    /* Scratch, allocated with the context or the coupling so that eval never allocates. */
     double *f;          /* [m] friction forces being built */
     double *f_eq;       /* [m] f_eq being built */
     size_t *stick;      /* [m] indices of the near-stick set S */
     size_t n_stick;
-    size_t *stick_prev; /* [m] S of the last factorization; valid while factor_valid */
-    size_t n_stick_prev;
-    int factor_valid;
-    double *factor;     /* [m*m] dense only: pivoted LDL^T of W_SS, packed |S| x |S| */
-    size_t *perm;       /* [m] dense only: its pivot permutation */
-    double *rhs;        /* [m] dense only: right-hand side of the W_SS solve */
-    double *rcond_work; /* [3m] dense only: workspace of the condition estimate */
+    double *rhs;        /* [m] dense only: right-hand side of the paper's W_SS solve */
+    struct fr_factor fac; /* dense only: cached factor of a principal block of W */
+    struct fr_box_qp qp;  /* dense only: the consistent law's QP on S */
+    signed char *side;  /* [m] the QP's last working set per contact: its warm start */
+
+    /* The inputs of the last successful evaluation, for fricreg_ctx_tangent. */
+    double *last_zdot;  /* [m] */
+    double *last_afree; /* [m] */
+    int last_valid;     /* an evaluation succeeded since the last setter call */
 
     int64_t stats[FR_NSTATS];
     struct fr_error err;

@@ -63,6 +63,23 @@ static inline double fr_quinn(double v, double f_eq, double mun, double eps)
     return -mun * fr_sat(v * (2.0 / eps) - fr_sat_ratio(f_eq, mun)); /* 2/eps: hoisted */
 }
 
+/* Law (4) on the band |c| < 2, c = 2 v/eps, written division-free (docs/coupled.md):
+ * f = clamp(clamp(f_eq, -mun, mun) - c mun, -mun, mun) = clamp(f_eq - c mun, lo, hi) with
+ *   lo = -mun (1 - max(-c, 0)),   hi = mun (1 - max(c, 0)),
+ * the box of the consistent law's QP. Karnopp and (2) are the same with c = 0. */
+static inline void fr_box(double c, double mun, double *lo, double *hi)
+{
+    *lo = -mun * (1.0 - fmax(-c, 0.0));
+    *hi = mun * (1.0 - fmax(c, 0.0));
+}
+
+/* d lo/dc and d hi/dc; at the kink c = 0, the side c > 0 (the tangent's convention). */
+static inline void fr_box_slopes(double c, double mun, double *dlo, double *dhi)
+{
+    *dlo = c < 0.0 ? -mun : 0.0;
+    *dhi = c >= 0.0 ? -mun : 0.0;
+}
+
 /* Whether the law reads f_eq at velocity v: the near-stick test of Sec. 3.3. */
 static inline int fr_needs_feq(int law, double v, double eps)
 {

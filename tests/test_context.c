@@ -30,13 +30,22 @@ static fricreg_ctx *make_ctx(size_t m)
     return ctx;
 }
 
-/* The two-block context: dense W2B, bounds MUN2B, law (4) with eps = 0.02. */
-static fricreg_ctx *make_two_block(void)
+/* The two-block context under the consistent law (the default): dense W2B, bounds MUN2B,
+ * law (4) with eps = 0.02. */
+static fricreg_ctx *make_two_block_consistent(void)
 {
     fricreg_ctx *ctx = make_ctx(2);
     ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, 2, W2B), FRICREG_OK);
     ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, 2, MUN2B), FRICREG_OK);
     ck_assert_int_eq(fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, EPS2B), FRICREG_OK);
+    return ctx;
+}
+
+/* The same under the paper's partition, whose joint f_eq the hand solutions below assume. */
+static fricreg_ctx *make_two_block(void)
+{
+    fricreg_ctx *ctx = make_two_block_consistent();
+    ck_assert_int_eq(fricreg_ctx_set_partition(ctx, FRICREG_PARTITION_PAPER), FRICREG_OK);
     return ctx;
 }
 
@@ -489,14 +498,14 @@ START_TEST(get_stat_errors)
 {
     fricreg_ctx *ctx = make_ctx(2);
     int64_t value = -4242;
-    ck_assert_int_eq(fricreg_ctx_get_stat(ctx, 4, &value), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_ctx_get_stat(ctx, 5, &value), FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_ctx_get_stat(ctx, -1, &value), FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_ctx_get_stat(ctx, 99, &value), FRICREG_EINVAL);
     ck_assert_int_eq(value, -4242);
     ck_assert_int_eq(fricreg_ctx_get_stat(NULL, FRICREG_STAT_EVALS, &value), FRICREG_ENULL);
     ck_assert_int_eq(value, -4242);
     ck_assert_int_eq(fricreg_ctx_get_stat(ctx, FRICREG_STAT_EVALS, NULL), FRICREG_ENULL);
-    for (int k = FRICREG_STAT_EVALS; k <= FRICREG_STAT_SOLVES; k++) {
+    for (int k = FRICREG_STAT_EVALS; k <= FRICREG_STAT_QP_ITERATIONS; k++) {
         value = -4242;
         ck_assert_int_eq(fricreg_ctx_get_stat(ctx, k, &value), FRICREG_OK);
         ck_assert_int_eq(value, 0);
@@ -833,6 +842,7 @@ START_TEST(dense_five_contacts_residual)
     const double a[M5] = {0.617, -1.385, 0.244, 2.031, -0.779};
     const double eps = 0.0731;
     fricreg_ctx *ctx = make_ctx(M5);
+    ck_assert_int_eq(fricreg_ctx_set_partition(ctx, FRICREG_PARTITION_PAPER), FRICREG_OK);
     ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, M5, W), FRICREG_OK);
     ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, M5, mun), FRICREG_OK);
     ck_assert_int_eq(fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, eps), FRICREG_OK);
@@ -873,6 +883,166 @@ START_TEST(dense_five_contacts_residual)
 }
 END_TEST
 
+/* ---- The consistent law (the default partition; docs/coupled.md) ------------------------ */
+
+/* Both near-stick, both free in their boxes. c = 2 zdot/eps = (0.37, -0.31); boxes
+ * [-0.5, 0.5 (1 - 0.37)] = [-0.5, 0.315] and [-0.25 (1 - 0.31), 0.25] = [-0.1725, 0.25];
+ * b = a + diag(W) c mun = (0.213 + 0.185, -0.347 - 0.155) = (0.398, -0.502);
+ * f = -W^-1 b = -[[2, 1], [1, 1]] b = (-0.294, 0.104), inside both boxes.
+ * f_eq,i given the other's actual force: f_eq0 = -(0.213 - 0.104) = -0.109,
+ * f_eq1 = -(-0.347 + 0.294)/2 = 0.0265; and f_i = f_eq,i - c_i mun_i. The paper's partition
+ * gives (-0.264, 0.2115) here (two_block_both_near_stick). One QP iteration, one factor. */
+START_TEST(consistent_two_block_both_free)
+{
+    fricreg_ctx *ctx = make_two_block_consistent();
+    const double zdot[2] = {0.0037, -0.0031}, a[2] = {0.213, -0.347};
+    double f[2], feq[2];
+    ck_assert_int_eq(fricreg_ctx_eval(ctx, 2, zdot, a, f, feq), FRICREG_OK);
+    ck_assert_double_eq_tol(f[0], -0.294, TOL);
+    ck_assert_double_eq_tol(f[1], 0.104, TOL);
+    ck_assert_double_eq_tol(feq[0], -0.109, TOL);
+    ck_assert_double_eq_tol(feq[1], 0.0265, TOL);
+    for (int i = 0; i < 2; i++) { /* law (4) at (zdot_i, f_eq,i): the consistent fixed point */
+        double law = SENTINEL;
+        ck_assert_int_eq(fricreg_law_eval(FRICREG_LAW_QUINN, zdot[i], feq[i], MUN2B[i], EPS2B,
+                                          &law), FRICREG_OK);
+        ck_assert_double_eq_tol(f[i], law, TOL);
+    }
+    expect_stats(ctx, 1, 2, 1, 1);
+    ck_assert_int_eq(counter(ctx, FRICREG_STAT_QP_ITERATIONS), 1);
+    /* Same inputs again: the warm start is right and the factor is reused. */
+    ck_assert_int_eq(fricreg_ctx_eval(ctx, 2, zdot, a, f, NULL), FRICREG_OK);
+    ck_assert_double_eq_tol(f[0], -0.294, TOL);
+    expect_stats(ctx, 2, 4, 1, 2);
+    ck_assert_int_eq(counter(ctx, FRICREG_STAT_QP_ITERATIONS), 2);
+    fricreg_ctx_free(ctx);
+}
+END_TEST
+
+/* The issue's jumps, at the band edge |zdot_j| = eps(1 -+ 1e-9).
+ * (a) a = (0.1, 0.1), zdot = (0, eps(1 -+ 1e-9)). Outside: f1 = -0.25, S = {0}:
+ *     f0 = -(0.1 + (-1)(-0.25)) = -0.35. Inside: c1 = 2 (1 - 1e-9), box1 = [-0.25,
+ *     -0.25 + 5e-10]; f1 is held at -0.25 (its free value -(b1 - f0)/2 = -0.725 is below),
+ *     so f0 = -0.35 again. The paper's joint f_eq = -W^-1 a = (-0.3, -0.2) gives f0 = -0.30.
+ * (b) a = (-0.3, 0.1), zdot = (eps(1 -+ 1e-9), 0). Outside: f0 = -0.5, S = {1}:
+ *     f1 = clamp(-(0.1 + 0.5)/2, -0.25, 0.25) = -0.25. Inside: f0 held at -0.5 (its free value
+ *     -(b0 - f1) = -(0.7 + 0.25) is below), and f1 = -0.25 again. The paper's: f_eq = (0.5, 0.2),
+ *     f1 = +0.2, a jump of 1.8 mun1 with a change of sign. */
+START_TEST(consistent_no_jump_at_band_edge)
+{
+    const double a_cases[2][2] = {{0.1, 0.1}, {-0.3, 0.1}};
+    const int edge[2] = {1, 0}, watch[2] = {0, 1};
+    const double consistent[2] = {-0.35, -0.25}, paper_inside[2] = {-0.30, 0.2};
+    for (int k = 0; k < 2; k++) {
+        for (int paper = 0; paper < 2; paper++) {
+            fricreg_ctx *ctx = paper ? make_two_block() : make_two_block_consistent();
+            double inside[2] = {0.0, 0.0}, outside[2] = {0.0, 0.0}, fin[2], fout[2];
+            inside[edge[k]] = EPS2B * (1.0 - 1e-9);
+            outside[edge[k]] = EPS2B * (1.0 + 1e-9);
+            ck_assert_int_eq(fricreg_ctx_eval(ctx, 2, inside, a_cases[k], fin, NULL),
+                             FRICREG_OK);
+            ck_assert_int_eq(fricreg_ctx_eval(ctx, 2, outside, a_cases[k], fout, NULL),
+                             FRICREG_OK);
+            int i = watch[k];
+            ck_assert_double_eq_tol(fout[i], consistent[k], TOL);
+            ck_assert_double_eq_tol(fin[i], paper ? paper_inside[k] : consistent[k], TOL);
+            fricreg_ctx_free(ctx);
+        }
+    }
+}
+END_TEST
+
+/* m = 5 (make_spd5), mixed: every near-stick contact satisfies law (4) at (zdot_i, f_eq,i) with
+ * f_eq,i = -(a_i + sum_{j != i} W_ij f_j)/W_ii from the returned forces (the consistent law's
+ * defining fixed point), slip contacts have -mun sgn(zdot). The a_free are large enough that
+ * some contacts saturate, so the QP's bounds are active; a second evaluation from the kept
+ * working set takes one iteration and no factorization. */
+START_TEST(consistent_five_contacts_fixed_point)
+{
+    double W[M5 * M5];
+    make_spd5(W);
+    const double mun[M5] = {0.9, 0.35, 1.2, 2.385, 0.731};
+    const double a[M5] = {1.617, -2.385, 0.244, 3.031, -1.779};
+    const double z[M5] = {0.0104, 0.2, 0.0003, -0.0611, -0.0217};
+    const double eps = 0.0731;
+    fricreg_ctx *ctx = make_ctx(M5);
+    ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, M5, W), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, M5, mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, eps), FRICREG_OK);
+    double f[M5], feq[M5];
+    ck_assert_int_eq(fricreg_ctx_eval(ctx, M5, z, a, f, feq), FRICREG_OK);
+    int held = 0;
+    for (int i = 0; i < M5; i++) {
+        if (fabs(z[i]) >= eps) {
+            ck_assert_double_eq(f[i], -mun[i] * (z[i] > 0 ? 1.0 : -1.0));
+            ck_assert_double_nan(feq[i]);
+            continue;
+        }
+        double others = 0.0;
+        for (int j = 0; j < M5; j++)
+            others += j == i ? 0.0 : W[i * M5 + j] * f[j];
+        ck_assert_double_eq_tol(feq[i], -(a[i] + others) / W[i * M5 + i], 1e-12);
+        double law = SENTINEL;
+        ck_assert_int_eq(fricreg_law_eval(FRICREG_LAW_QUINN, z[i], feq[i], mun[i], eps, &law),
+                         FRICREG_OK);
+        ck_assert_double_eq_tol(f[i], law, 1e-12);
+        held += fabs(law - (feq[i] - 2.0 * z[i] / eps * mun[i])) > 1e-9; /* on a bound */
+    }
+    ck_assert_int_gt(held, 0);
+    int64_t fact = counter(ctx, FRICREG_STAT_FACTORIZATIONS);
+    int64_t iters = counter(ctx, FRICREG_STAT_QP_ITERATIONS);
+    double g[M5];
+    ck_assert_int_eq(fricreg_ctx_eval(ctx, M5, z, a, g, NULL), FRICREG_OK);
+    for (int i = 0; i < M5; i++)
+        ck_assert_double_eq_tol(g[i], f[i], 1e-15);
+    ck_assert_int_eq(counter(ctx, FRICREG_STAT_FACTORIZATIONS), fact);
+    ck_assert_int_eq(counter(ctx, FRICREG_STAT_QP_ITERATIONS), iters + 1);
+    fricreg_ctx_free(ctx);
+}
+END_TEST
+
+/* The singularity test is scale-invariant: W = diag(1, 1e-14) passed as dense is regular (its
+ * contact 1 is just very heavy), under both partitions; before, rcond 1e-14 was refused.
+ * a = (0.213, -3.47e-15), zdot = (0.0037, 0): f_eq = (-0.213, 0.347); (4) gives
+ * f0 = -50 (0.0037 + 0.01 (0.426)) = -0.398 and f1 = 0.25 sat(0.347/0.25) = 0.25. */
+START_TEST(singularity_test_is_scale_invariant)
+{
+    const double Wd[4] = {1.0, 0.0, 0.0, 1e-14}, a[2] = {0.213, -3.47e-15};
+    const double z[2] = {0.0037, 0.0};
+    for (int paper = 0; paper < 2; paper++) {
+        fricreg_ctx *ctx = paper ? make_two_block() : make_two_block_consistent();
+        ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, 2, Wd), FRICREG_OK);
+        double f[2];
+        ck_assert_int_eq(fricreg_ctx_eval(ctx, 2, z, a, f, NULL), FRICREG_OK);
+        ck_assert_double_eq_tol(f[0], -0.398, TOL);
+        ck_assert_double_eq_tol(f[1], 0.25, TOL);
+        fricreg_ctx_free(ctx);
+    }
+}
+END_TEST
+
+/* A truly redundant pair, W = [[1, 1], [1, 1]] (also scaled), both free at rest: ESINGULAR
+ * under the consistent law too, outputs untouched, no evaluation counted. */
+START_TEST(consistent_redundant_pair_is_singular)
+{
+    fricreg_ctx *ctx = make_two_block_consistent();
+    const double Ws[4] = {1.0, 1.0, 1.0, 1.0}, Wr[4] = {0.731, 1.462, 1.462, 2.924};
+    const double z[2] = {0.0, 0.0}, a[2] = {0.0213, -0.0347};
+    double f[2], feq[2];
+    for (int k = 0; k < 2; k++) {
+        ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, 2, k ? Wr : Ws), FRICREG_OK);
+        fill(f, 2, SENTINEL);
+        fill(feq, 2, SENTINEL);
+        expect_failure_recorded(ctx, fricreg_ctx_eval(ctx, 2, z, a, f, feq), FRICREG_ESINGULAR,
+                                "redundant pair, consistent law");
+        expect_untouched(f, 2);
+        expect_untouched(feq, 2);
+    }
+    ck_assert_int_eq(counter(ctx, FRICREG_STAT_EVALS), 0);
+    fricreg_ctx_free(ctx);
+}
+END_TEST
+
 static Suite *context_suite(void)
 {
     Suite *s = suite_create("context");
@@ -891,6 +1061,14 @@ static Suite *context_suite(void)
     tcase_add_test(tc, laws_without_feq_have_empty_stick_set);
     tcase_add_test(tc, force_balance_and_karnopp_stick_sets);
     tcase_add_test(tc, dense_five_contacts_residual);
+    suite_add_tcase(s, tc);
+
+    tc = tcase_create("consistent");
+    tcase_add_test(tc, consistent_two_block_both_free);
+    tcase_add_test(tc, consistent_no_jump_at_band_edge);
+    tcase_add_test(tc, consistent_five_contacts_fixed_point);
+    tcase_add_test(tc, singularity_test_is_scale_invariant);
+    tcase_add_test(tc, consistent_redundant_pair_is_singular);
     suite_add_tcase(s, tc);
 
     tc = tcase_create("stats");

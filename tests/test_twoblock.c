@@ -99,6 +99,8 @@ static fricreg_sim *twoblock_run(struct record *r)
 {
     fricreg_sim *sim = NULL;
     ck_assert_int_eq(fricreg_sim_create(FRICREG_SYSTEM_TWOBLOCK, &sim), FRICREG_OK);
+    /* the residuals below are those of the paper's joint f_eq (Sec. 3.3) */
+    ck_assert_int_eq(fricreg_sim_set_partition(sim, FRICREG_PARTITION_PAPER), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, DT, 0.0, 0.0), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_set_observer(sim, observe, r), FRICREG_OK);
     int status = fricreg_sim_run_cycles(sim, 4);

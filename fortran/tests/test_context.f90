@@ -26,6 +26,9 @@ program test_context
   call check_status(ctx%set_coupling_dense(W), FRICREG_OK, 'set_coupling_dense(W)')
   call check_status(ctx%set_bounds(mun), FRICREG_OK, 'set_bounds(mun)')
   call check_status(ctx%set_law(FRICREG_LAW_QUINN, eps), FRICREG_OK, 'set_law(QUINN, 0.02)')
+  ! The values below are the paper's joint f_eq of Sec. 3.3, not the consistent default's.
+  call check_status(fricreg_ctx_set_partition(ctx%handle(), FRICREG_PARTITION_PAPER), &
+                    FRICREG_OK, 'set_partition(PAPER)')
 
   ! Both near-stick at rest: f_eq = W^-1 (0.2385, -0.0917) = (0.477 - 0.0917, 0.2385 - 0.0917).
   zdot = 0.0_c_double

@@ -1,0 +1,211 @@
+/* tangent.c — fricreg_ctx_tangent: the Jacobian of the forces of the last evaluation.
+ *
+ * Recomputed from that evaluation's inputs (kept by fricreg_ctx_eval) and, for the consistent
+ * law, its final working set (ctx->side), so a later failed evaluation does not disturb it.
+ *   Slip contacts: the law's own slope in v (0 for (1), -mun/eps in (3)'s band,
+ *     -(mun/eps) sech^2(v/eps) for tanh), nothing in a_free.
+ *   Near-stick, f_eq given (diagonal W; the paper's partition with f_eq,S solved from
+ *     W_SS f_eq,S = -(a_free,S + W_SL f_L)): law (4) as clamp(f_eq - c mun, lo(c), hi(c)),
+ *     differentiated on its piece, times d f_eq/d a_free = -W_SS^-1.
+ *   Consistent law (docs/coupled.md): from the final active set A and free set F,
+ *     d f_A from the bounds, d f_F = -W_FF^-1 (d b_F + W_FA d f_A), with the eval's factor.
+ * Kinks: a contact exactly on a bound counts as held there; at zdot_i = 0 the bounds' slopes
+ * are those of zdot_i > 0; at |zdot_i| = eps the contact slides. */
+#include <math.h>
+#include <string.h>
+
+#include "factor.h"
+#include "law.h"
+#include "partition.h"
+
+/* d f/d zdot of a contact that does not read f_eq at zdot = v. */
+static double slip_slope(int law, double v, double mun, double eps)
+{
+    switch (law) {
+    case FRICREG_LAW_VELOCITY_LIMITED: return fabs(v) < eps ? -mun / eps : 0.0;
+    case FRICREG_LAW_TANH: {
+        double t = tanh(v / eps);
+        return -(mun / eps) * (1.0 - t * t);
+    }
+    default: return 0.0; /* (1), and (2), (4), Karnopp outside their bands */
+    }
+}
+
+/* d f/d zdot and d f/d f_eq of a near-stick contact at (v, f_eq) with f_eq held fixed. */
+static void near_slopes(const fricreg_ctx *ctx, double v, double feq, double mun, double *dv,
+                        double *dfeq)
+{
+    double dc = ctx->law == FRICREG_LAW_QUINN ? 2.0 / ctx->eps : 0.0, c = v * dc;
+    double lo, hi, dlo, dhi;
+    fr_box(c, mun, &lo, &hi);
+    fr_box_slopes(c, mun, &dlo, &dhi);
+    double y = feq - c * mun;
+    *dfeq = y >= hi || y <= lo ? 0.0 : 1.0;
+    *dv = (y >= hi ? dhi : y <= lo ? dlo : -mun) * dc;
+}
+
+/* Laws without f_eq, or a diagonal W: one contact at a time, the diagonals only. */
+static void tangent_diagonal(const fricreg_ctx *ctx, double dz[], double da[])
+{
+    size_t m = ctx->m;
+    for (size_t i = 0; i < m; i++) {
+        double v = ctx->last_zdot[i], mun = ctx->mun[i], dv, dfeq = 0.0;
+        if (fr_needs_feq(ctx->law, v, ctx->eps))
+            near_slopes(ctx, v, -ctx->last_afree[i] / ctx->w_diag[i], mun, &dv, &dfeq);
+        else
+            dv = slip_slope(ctx->law, v, mun, ctx->eps);
+        if (dz)
+            dz[i * m + i] = dv;
+        if (da)
+            da[i * m + i] = -dfeq / ctx->w_diag[i];
+    }
+}
+
+/* Column k of -W_BB^-1 into rhs[0..n) (B the held factor's set), then scattered into row
+ * set[a] of out, column col, scaled by row_scale[a] (NULL: 1). */
+static void scatter_solution(fricreg_ctx *ctx, const size_t set[], size_t n, double out[],
+                             size_t col, const double row_scale[])
+{
+    size_t m = ctx->m;
+    fr_factor_solve(ctx, ctx->rhs, "tangent"); /* cannot fail: the factor is held */
+    for (size_t a = 0; a < n; a++)
+        out[set[a] * m + col] = -ctx->rhs[a] * (row_scale ? row_scale[a] : 1.0);
+}
+
+/* The paper's partition: f_eq,S = -W_SS^-1 (a_free,S + W_SL f_L), then the law on S, with
+ * the held factor of W_SS. */
+static void tangent_paper(fricreg_ctx *ctx, double dz[], double da[])
+{
+    size_t m = ctx->m, s = ctx->n_stick;
+    const size_t *S = ctx->stick;
+    for (size_t a = 0; a < s; a++) {
+        const double *row = ctx->W + S[a] * m;
+        double coupling = 0.0;
+        for (size_t j = 0; j < m; j++)
+            coupling += row[j] * ctx->f[j];
+        ctx->rhs[a] = -(ctx->last_afree[S[a]] + coupling);
+    }
+    fr_factor_solve(ctx, ctx->rhs, "tangent");
+    double *dfeq = ctx->qp.y; /* d f_i/d f_eq,i on S: scratch of the QP, free here */
+    for (size_t a = 0; a < s; a++) {
+        size_t i = S[a];
+        double dv;
+        near_slopes(ctx, ctx->last_zdot[i], ctx->rhs[a], ctx->mun[i], &dv, &dfeq[a]);
+        if (dz)
+            dz[i * m + i] = dv;
+    }
+    for (size_t b = 0; da && b < s; b++) { /* d f_eq,S/d a_free,k = -(W_SS^-1) e_k */
+        memset(ctx->rhs, 0, s * sizeof *ctx->rhs);
+        ctx->rhs[b] = 1.0;
+        scatter_solution(ctx, S, s, da, S[b], dfeq);
+    }
+}
+
+/* d(bound)/d zdot of a held contact i of S. */
+static double held_slope(const fricreg_ctx *ctx, size_t i)
+{
+    double dc = ctx->law == FRICREG_LAW_QUINN ? 2.0 / ctx->eps : 0.0, dlo, dhi;
+    fr_box_slopes(ctx->last_zdot[i] * dc, ctx->mun[i], &dlo, &dhi);
+    return (ctx->side[i] == FR_UPPER ? dhi : dlo) * dc;
+}
+
+/* The consistent law's free set F (in ctx->qp.free_set), from the final working set. */
+static size_t consistent_free_set(fricreg_ctx *ctx)
+{
+    size_t nf = 0;
+    for (size_t a = 0; a < ctx->n_stick; a++)
+        if (ctx->side[ctx->stick[a]] == FR_FREE)
+            ctx->qp.free_set[nf++] = ctx->stick[a];
+    return nf;
+}
+
+/* The consistent law: d f_F = -W_FF^-1 (d b_F + W_FA d f_A), column by column, with the held
+ * factor of W_FF (F = ctx->qp.free_set[nf]). */
+static void tangent_consistent(fricreg_ctx *ctx, size_t nf, double dz[], double da[])
+{
+    size_t m = ctx->m, s = ctx->n_stick;
+    const size_t *S = ctx->stick, *F = ctx->qp.free_set;
+    double dc = ctx->law == FRICREG_LAW_QUINN ? 2.0 / ctx->eps : 0.0;
+    for (size_t b = 0; dz && b < s; b++) { /* column k = S[b] of d f/d zdot */
+        size_t k = S[b];
+        int held = ctx->side[k] != FR_FREE;
+        double dk = held ? held_slope(ctx, k) : 0.0;
+        if (held)
+            dz[k * m + k] = dk;
+        for (size_t a = 0; a < nf; a++) /* d b_F/d zdot_k + W_F,k d f_k/d zdot_k */
+            ctx->rhs[a] = held ? ctx->W[F[a] * m + k] * dk
+                               : (F[a] == k ? ctx->W[k * m + k] * ctx->mun[k] * dc : 0.0);
+        if (nf > 0)
+            scatter_solution(ctx, F, nf, dz, k, NULL);
+    }
+    for (size_t b = 0; da && b < nf; b++) { /* d b_F/d a_free,k = e_k for k in F */
+        memset(ctx->rhs, 0, nf * sizeof *ctx->rhs);
+        ctx->rhs[b] = 1.0;
+        scatter_solution(ctx, F, nf, da, F[b], NULL);
+    }
+}
+
+/* Slip contacts' diagonal in zdot (their f does not depend on a_free). */
+static void tangent_slip(const fricreg_ctx *ctx, double dz[])
+{
+    size_t m = ctx->m;
+    for (size_t i = 0; dz && i < m; i++)
+        if (!fr_needs_feq(ctx->law, ctx->last_zdot[i], ctx->eps))
+            dz[i * m + i] = slip_slope(ctx->law, ctx->last_zdot[i], ctx->mun[i], ctx->eps);
+}
+
+static int check_tangent_args(fricreg_ctx *ctx, size_t m, const double dz[], const double da[])
+{
+    if (m != ctx->m)
+        return fr_fail(ctx, FRICREG_ESIZE, "tangent: m = %zu, context has %zu contacts", m,
+                       ctx->m);
+    if (dz == NULL && da == NULL)
+        return fr_fail(ctx, FRICREG_ENULL, "tangent: df_dzdot and df_dafree are both NULL");
+    if (!ctx->last_valid)
+        return fr_fail(ctx, FRICREG_EINVAL,
+                       "tangent: no successful evaluation since the context was created or"
+                       " last set up");
+    return FRICREG_OK;
+}
+
+/* Dense W: the split of the last evaluation and the factor the tangent solves with (W_SS for
+ * the paper's partition, W_FF for the consistent law), before any output is written: the
+ * factor is the only thing that can fail. *nf is the consistent law's |F|. */
+static int prepare_dense(fricreg_ctx *ctx, size_t *nf)
+{
+    fr_split_contacts(ctx, ctx->last_zdot);
+    *nf = 0;
+    if (ctx->n_stick == 0)
+        return FRICREG_OK;
+    if (ctx->partition == FRICREG_PARTITION_PAPER)
+        return fr_factor_ensure(ctx, ctx->stick, ctx->n_stick, "tangent");
+    *nf = consistent_free_set(ctx);
+    return *nf > 0 ? fr_factor_ensure(ctx, ctx->qp.free_set, *nf, "tangent") : FRICREG_OK;
+}
+
+int fricreg_ctx_tangent(fricreg_ctx *ctx, size_t m, double df_dzdot[], double df_dafree[])
+{
+    if (ctx == NULL)
+        return FRICREG_ENULL;
+    int status = check_tangent_args(ctx, m, df_dzdot, df_dafree);
+    if (status != FRICREG_OK)
+        return status;
+    int dense = ctx->W != NULL && fr_law_uses_feq(ctx->law);
+    size_t nf = 0;
+    if (dense && (status = prepare_dense(ctx, &nf)) != FRICREG_OK)
+        return status;
+    if (df_dzdot)
+        memset(df_dzdot, 0, m * m * sizeof *df_dzdot);
+    if (df_dafree)
+        memset(df_dafree, 0, m * m * sizeof *df_dafree);
+    if (!dense) {
+        tangent_diagonal(ctx, df_dzdot, df_dafree);
+    } else {
+        tangent_slip(ctx, df_dzdot);
+        if (ctx->n_stick > 0 && ctx->partition == FRICREG_PARTITION_PAPER)
+            tangent_paper(ctx, df_dzdot, df_dafree);
+        else if (ctx->n_stick > 0)
+            tangent_consistent(ctx, nf, df_dzdot, df_dafree);
+    }
+    return FRICREG_OK;
+}
