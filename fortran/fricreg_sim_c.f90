@@ -1,12 +1,14 @@
 ! fricreg_sim_c.f90 — module fricreg_sim_c: thin bind(C) interfaces to every function of
-! fricreg_sim.h (the GSL ODE drivers of the paper's three reference systems).
+! fricreg_sim.h (the GSL ODE drivers of the paper's three reference systems) and of
+! fricreg_structure.h (a linear structure with friction).
 !
 ! As in module fricreg_c: argument for argument, scalars by value, arrays dimension(*), the
 ! simulation as type(c_ptr), size_t as integer(c_size_t); the docstrings of
 ! include/fricreg_sim.h apply unchanged. The idiomatic layer is type fricreg_simulation in
 ! module fricreg. Built only with the drivers (FRICREG_DRIVERS).
 module fricreg_sim_c
-  use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_ptr, c_funptr, c_char
+  use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_ptr, c_funptr, c_char, &
+                                         c_int64_t
   implicit none
   public
 
@@ -176,6 +178,229 @@ module fricreg_sim_c
       character(kind=c_char), intent(inout) :: buf(*)
       integer(c_size_t), value :: len
       integer(c_size_t) :: fricreg_sim_errmsg_copy
+    end function
+
+    ! ---- fricreg_structure.h: a linear structure with friction (Newmark, HHT-alpha) ----
+    ! Matrices are row-major in C: M, C and K are symmetric (pass them as they are); J is
+    ! m x ndof row-major, i.e. a Fortran Jt(ndof, m) array, the transpose of J(m, ndof).
+
+    function fricreg_structure_create(ndof, m, s) bind(C, name='fricreg_structure_create')
+      import :: c_int, c_size_t, c_ptr
+      integer(c_size_t), value :: ndof, m
+      type(c_ptr), intent(out) :: s
+      integer(c_int) :: fricreg_structure_create
+    end function
+
+    subroutine fricreg_structure_free(s) bind(C, name='fricreg_structure_free')
+      import :: c_ptr
+      type(c_ptr), value :: s
+    end subroutine
+
+    function fricreg_structure_set_mass(s, ndof, M) bind(C, name='fricreg_structure_set_mass')
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: s
+      integer(c_size_t), value :: ndof
+      real(c_double), intent(in) :: M(*)
+      integer(c_int) :: fricreg_structure_set_mass
+    end function
+
+    function fricreg_structure_set_stiffness(s, ndof, K) bind(C, name='fricreg_structure_set_stiffness')
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: s
+      integer(c_size_t), value :: ndof
+      real(c_double), intent(in) :: K(*)
+      integer(c_int) :: fricreg_structure_set_stiffness
+    end function
+
+    function fricreg_structure_set_damping(s, ndof, C) bind(C, name='fricreg_structure_set_damping')
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: s
+      integer(c_size_t), value :: ndof
+      real(c_double), intent(in) :: C(*)
+      integer(c_int) :: fricreg_structure_set_damping
+    end function
+
+    function fricreg_structure_set_rayleigh(s, a0, a1) &
+        bind(C, name='fricreg_structure_set_rayleigh')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: s
+      real(c_double), value :: a0, a1
+      integer(c_int) :: fricreg_structure_set_rayleigh
+    end function
+
+    function fricreg_structure_set_contacts(s, m, ndof, J) &
+        bind(C, name='fricreg_structure_set_contacts')
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: s
+      integer(c_size_t), value :: m, ndof
+      real(c_double), intent(in) :: J(*) ! J(i*ndof + k), i.e. a Fortran Jt(ndof, m)
+      integer(c_int) :: fricreg_structure_set_contacts
+    end function
+
+    function fricreg_structure_set_bounds(s, m, mun) bind(C, name='fricreg_structure_set_bounds')
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: s
+      integer(c_size_t), value :: m
+      real(c_double), intent(in) :: mun(*)
+      integer(c_int) :: fricreg_structure_set_bounds
+    end function
+
+    function fricreg_structure_set_law(s, law, eps) bind(C, name='fricreg_structure_set_law')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int), value :: law
+      real(c_double), value :: eps
+      integer(c_int) :: fricreg_structure_set_law
+    end function
+
+    function fricreg_structure_set_influence(s, ndof, r) &
+        bind(C, name='fricreg_structure_set_influence')
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: s
+      integer(c_size_t), value :: ndof
+      real(c_double), intent(in) :: r(*)
+      integer(c_int) :: fricreg_structure_set_influence
+    end function
+
+    !> Ground acceleration record: n samples ag(n) every dt_rec from t0 (n = 0 removes it).
+    function fricreg_structure_set_ground_accel(s, t0, dt_rec, n, ag) &
+        bind(C, name='fricreg_structure_set_ground_accel')
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: s
+      real(c_double), value :: t0, dt_rec
+      integer(c_size_t), value :: n
+      real(c_double), intent(in), optional :: ag(*)
+      integer(c_int) :: fricreg_structure_set_ground_accel
+    end function
+
+    !> Load p(ndof) times the record g(n) (n = 0, g absent: constant load).
+    function fricreg_structure_set_load(s, ndof, p, t0, dt_rec, n, g) &
+        bind(C, name='fricreg_structure_set_load')
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: s
+      integer(c_size_t), value :: ndof
+      real(c_double), intent(in) :: p(*)
+      real(c_double), value :: t0, dt_rec
+      integer(c_size_t), value :: n
+      real(c_double), intent(in), optional :: g(*)
+      integer(c_int) :: fricreg_structure_set_load
+    end function
+
+    function fricreg_structure_set_initial(s, ndof, u0, v0) &
+        bind(C, name='fricreg_structure_set_initial')
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: s
+      integer(c_size_t), value :: ndof
+      real(c_double), intent(in) :: u0(*), v0(*)
+      integer(c_int) :: fricreg_structure_set_initial
+    end function
+
+    function fricreg_structure_set_newmark(s, beta, gamma) &
+        bind(C, name='fricreg_structure_set_newmark')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: s
+      real(c_double), value :: beta, gamma
+      integer(c_int) :: fricreg_structure_set_newmark
+    end function
+
+    function fricreg_structure_set_hht(s, alpha) bind(C, name='fricreg_structure_set_hht')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: s
+      real(c_double), value :: alpha
+      integer(c_int) :: fricreg_structure_set_hht
+    end function
+
+    function fricreg_structure_set_newton(s, tol, max_iter) &
+        bind(C, name='fricreg_structure_set_newton')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: s
+      real(c_double), value :: tol
+      integer(c_int), value :: max_iter
+      integer(c_int) :: fricreg_structure_set_newton
+    end function
+
+    function fricreg_structure_step(s, dt) bind(C, name='fricreg_structure_step')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: s
+      real(c_double), value :: dt
+      integer(c_int) :: fricreg_structure_step
+    end function
+
+    function fricreg_structure_run(s, dt, t_end) bind(C, name='fricreg_structure_run')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: s
+      real(c_double), value :: dt, t_end
+      integer(c_int) :: fricreg_structure_run
+    end function
+
+    !> Any of u, v, a may be absent (not all three); each written only on success.
+    function fricreg_structure_get_state(s, ndof, u, v, a) &
+        bind(C, name='fricreg_structure_get_state')
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: s
+      integer(c_size_t), value :: ndof
+      real(c_double), intent(inout), optional :: u(*), v(*), a(*)
+      integer(c_int) :: fricreg_structure_get_state
+    end function
+
+    function fricreg_structure_get_forces(s, m, f) bind(C, name='fricreg_structure_get_forces')
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: s
+      integer(c_size_t), value :: m
+      real(c_double), intent(inout) :: f(*)
+      integer(c_int) :: fricreg_structure_get_forces
+    end function
+
+    function fricreg_structure_get_dissipation(s, m, D) &
+        bind(C, name='fricreg_structure_get_dissipation')
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: s
+      integer(c_size_t), value :: m
+      real(c_double), intent(inout) :: D(*)
+      integer(c_int) :: fricreg_structure_get_dissipation
+    end function
+
+    !> One quantity FRICREG_SVALUE_* (time, energies).
+    function fricreg_structure_get_value(s, which, value) &
+        bind(C, name='fricreg_structure_get_value')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int), value :: which
+      real(c_double), intent(inout) :: value
+      integer(c_int) :: fricreg_structure_get_value
+    end function
+
+    !> One counter FRICREG_SSTAT_* (steps, Newton iterations and failures).
+    function fricreg_structure_get_stat(s, which, value) &
+        bind(C, name='fricreg_structure_get_stat')
+      import :: c_int, c_int64_t, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int), value :: which
+      integer(c_int64_t), intent(inout) :: value
+      integer(c_int) :: fricreg_structure_get_stat
+    end function
+
+    function fricreg_structure_errcode(s) bind(C, name='fricreg_structure_errcode')
+      import :: c_int, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int) :: fricreg_structure_errcode
+    end function
+
+    !> Last error message, owned by s (fricreg_c_string converts it).
+    function fricreg_structure_errmsg(s) bind(C, name='fricreg_structure_errmsg')
+      import :: c_ptr
+      type(c_ptr), value :: s
+      type(c_ptr) :: fricreg_structure_errmsg
+    end function
+
+    !> Copy the last error message into buf(len), NUL-terminated; returns its full length.
+    function fricreg_structure_errmsg_copy(s, buf, len) &
+        bind(C, name='fricreg_structure_errmsg_copy')
+      import :: c_size_t, c_char, c_ptr
+      type(c_ptr), value :: s
+      character(kind=c_char), intent(inout) :: buf(*)
+      integer(c_size_t), value :: len
+      integer(c_size_t) :: fricreg_structure_errmsg_copy
     end function
   end interface
 
