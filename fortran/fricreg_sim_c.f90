@@ -196,7 +196,8 @@ module fricreg_sim_c
       type(c_ptr), value :: s
     end subroutine
 
-    function fricreg_structure_set_mass(s, ndof, M) bind(C, name='fricreg_structure_set_mass')
+    function fricreg_structure_set_mass(s, ndof, M) &
+        bind(C, name='fricreg_structure_set_mass')
       import :: c_int, c_double, c_size_t, c_ptr
       type(c_ptr), value :: s
       integer(c_size_t), value :: ndof
@@ -204,7 +205,8 @@ module fricreg_sim_c
       integer(c_int) :: fricreg_structure_set_mass
     end function
 
-    function fricreg_structure_set_stiffness(s, ndof, K) bind(C, name='fricreg_structure_set_stiffness')
+    function fricreg_structure_set_stiffness(s, ndof, K) &
+        bind(C, name='fricreg_structure_set_stiffness')
       import :: c_int, c_double, c_size_t, c_ptr
       type(c_ptr), value :: s
       integer(c_size_t), value :: ndof
@@ -212,7 +214,8 @@ module fricreg_sim_c
       integer(c_int) :: fricreg_structure_set_stiffness
     end function
 
-    function fricreg_structure_set_damping(s, ndof, C) bind(C, name='fricreg_structure_set_damping')
+    function fricreg_structure_set_damping(s, ndof, C) &
+        bind(C, name='fricreg_structure_set_damping')
       import :: c_int, c_double, c_size_t, c_ptr
       type(c_ptr), value :: s
       integer(c_size_t), value :: ndof

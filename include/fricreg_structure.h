@@ -34,10 +34,11 @@ typedef struct fricreg_structure fricreg_structure;
 
 /** Create a structure of ndof >= 1 degrees of freedom and m >= 1 friction contacts.
  *
- *  Defaults: M = I, C = 0, K = 0, J unset (set_contacts before the first step), mun[i] = 1, law (4) with
- *  eps = 1e-3, r = 0, no load and no ground motion, u = u' = 0 at t = 0, average-acceleration
- *  Newmark (beta = 1/4, gamma = 1/2), Newton tolerance 1e-10 and at most 20 iterations.
- *  All memory is allocated here: steps never allocate.
+ *  Defaults: M = I, C = 0, K = 0, J unset (set_contacts before the first step), mun[i] = 1,
+ *  law (4) with eps = 1e-3, r = 0, no load and no ground motion, u = u' = 0 at t = 0,
+ *  average-acceleration Newmark (beta = 1/4, gamma = 1/2), Newton tolerance 1e-10 and at
+ *  most 20 iterations. All memory is allocated here (O(ndof^2 + m ndof + m^2) doubles), but
+ *  for the records of set_ground_accel and set_load: steps never allocate.
  *
  *  ndof  number of degrees of freedom, 1 <= ndof <= 2^15.
  *  m     number of friction contacts, 1 <= m <= 2^15 (a structure without friction: one
@@ -164,10 +165,16 @@ FRICREG_API int fricreg_structure_set_newton(fricreg_structure *s, double tol, i
  *  (Armijo, 1e-4), at most 30 halvings. A step whose Newton does not converge within
  *  max_iter iterations (or whose line search or LU fails) is still taken, from its last
  *  iterate (the smallest residual), and counted in FRICREG_SSTAT_NEWTON_FAILURES.
- *  The energy balance is updated (fricreg_structure_get_value).
+ *  The energy balance is updated (fricreg_structure_get_value). The first step after a model
+ *  setter forms G = J M^-1 and W (O(m ndof^2 + m^2 ndof)) and the equilibrium acceleration
+ *  at t; each Newton iteration costs one tangent, O(m^2 ndof + m ndof^2) to form the matrix
+ *  and an O(ndof^3) LU. No heap allocation.
  *
- *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if dt <= 0 or J was never set; FRICREG_ENONFINITE if dt is not finite; FRICREG_ENOTPSD if W has a zero diagonal;
- *  FRICREG_ESINGULAR (redundant contacts sticking together); FRICREG_EDIVERGED if the
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if dt <= 0, t + dt rounds to t, or J
+ *  was never set; FRICREG_ENONFINITE if dt is not finite; FRICREG_ENOTSYM or
+ *  FRICREG_ENOTPSD if the context refuses W (not expected: W is formed symmetric from a
+ *  positive definite M and non-zero rows of J); FRICREG_ESINGULAR (redundant contacts
+ *  sticking together: their forces are not unique); FRICREG_EDIVERGED if the
  *  residual or the state becomes non-finite or beyond 1e100. On failure the state is
  *  unchanged. */
 FRICREG_API int fricreg_structure_step(fricreg_structure *s, double dt);
