@@ -37,7 +37,7 @@ typedef struct fricreg_structure fricreg_structure;
  *  Defaults: M = I, C = 0, K = 0, J unset (set_contacts before the first step), mun[i] = 1,
  *  law (4) with eps = 1e-3, r = 0, no load and no ground motion, u = u' = 0 at t = 0,
  *  average-acceleration Newmark (beta = 1/4, gamma = 1/2), Newton tolerance 1e-10 and at
- *  most 20 iterations. All memory is allocated here (O(ndof^2 + m ndof + m^2) doubles), but
+ *  most 50 iterations. All memory is allocated here (O(ndof^2 + m ndof + m^2) doubles), but
  *  for the records of set_ground_accel and set_load: steps never allocate.
  *
  *  ndof  number of degrees of freedom, 1 <= ndof <= 2^15.
@@ -147,8 +147,12 @@ FRICREG_API int fricreg_structure_set_newmark(fricreg_structure *s, double beta,
 FRICREG_API int fricreg_structure_set_hht(fricreg_structure *s, double alpha);
 
 /** Newton's stopping rule: a step converges when the residual's largest entry is at most
- *  tol times the step's force scale (the largest entry of |M a|, |C v + K u|, |p - M r a_g|
- *  and |J|^T mun at its start and load). 0 < tol < 1; 1 <= max_iter <= 1000.
+ *  tol times the step's force scale: the largest entry of |M a| and |C v + K u - p~ - J^T f|
+ *  at the step's start, |p~| at its end, and |J|^T mun. 0 < tol < 1; 1 <= max_iter <= 1000.
+ *  Iterations grow as eps shrinks against dt times the contacts' accelerations (law (4) then
+ *  approaches a jump): on the ten-storey building of issue 10 at dt = 0.01 s, mean (max)
+ *  iterations per step were 1.05 (8) at eps = 0.01 m/s, 2.2 (19) at 1e-3, 5.6 (26) at 3e-4
+ *  and 9.9 (42) at 1e-4; hence the default max_iter = 50.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ENONFINITE; FRICREG_EINVAL. */
 FRICREG_API int fricreg_structure_set_newton(fricreg_structure *s, double tol, int max_iter);
 

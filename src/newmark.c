@@ -122,12 +122,13 @@ static int newton_direction(fricreg_structure *s, double dt)
     return FRICREG_OK;
 }
 
-/* The step's force scale: the largest entry of |M a|, |C v + K u|, |p~1| and |J|^T mun. */
+/* The step's force scale: the largest entry of |M a| and |C v + K u - p~ - J^T f| at its
+ * start (hist), |p~1| at its end, and |J|^T mun. */
 static double force_scale(fricreg_structure *s)
 {
     gsl_blas_dgemv(CblasNoTrans, 1.0, s->M, s->a, 0.0, s->work);
     double scale = fmax(norm_inf(s->work), norm_inf(s->ptil1));
-    scale = fmax(scale, norm_inf(s->hist)); /* with p~ and J^T f: at least |C v + K u| */
+    scale = fmax(scale, norm_inf(s->hist));
     for (size_t k = 0; k < s->n; k++) {
         double sum = 0.0;
         for (size_t i = 0; i < s->m; i++)

@@ -97,7 +97,7 @@ int fricreg_structure_create(size_t ndof, size_t m, fricreg_structure **out)
     s->beta = 0.25;
     s->gamma = 0.5;
     s->newton_tol = 1e-10;
-    s->newton_max = 20;
+    s->newton_max = 50;
     s->fresh = 1;
     *out = s;
     return FRICREG_OK;
