@@ -96,7 +96,9 @@ FRICREG_API int fricreg_structure_set_bounds(fricreg_structure *s, size_t m,
                                              const double mun[]);
 
 /** Select the friction law (enum fricreg_law) and eps > 0 (velocity units, e.g. m/s), as
- *  fricreg_ctx_set_law. Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown law
+ *  fricreg_ctx_set_law. The continuous laws (3), (4) and tanh give an implicit step with a
+ *  solution that Newton finds; (1) and (2) jump at v = 0 and Karnopp at |v| = eps, where a
+ *  step may have no root: such steps end on Newton's last iterate and count as failures. Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown law
  *  or eps <= 0; FRICREG_ENONFINITE. */
 FRICREG_API int fricreg_structure_set_law(fricreg_structure *s, int law, double eps);
 
@@ -108,9 +110,12 @@ FRICREG_API int fricreg_structure_set_influence(fricreg_structure *s, size_t ndo
 
 /** Set the ground acceleration a_g(t) (acceleration units, e.g. m/s^2) as a record of n >= 2
  *  samples ag[n] at times t0 + k dt_rec, dt_rec > 0, interpolated linearly and zero outside
- *  [t0, t0 + (n-1) dt_rec]. n = 0 (ag may be NULL) removes the ground motion. Copied.
- *  A caller who computes a_g step by step passes the two samples {a_g(t), a_g(t + dt)} with
- *  t0 = t, dt_rec = dt before each step. The steps only read the record at their ends.
+ *  [t0, t0 + (n-1) dt_rec] (a time within 1e-9 dt_rec of an end is on it: step times are
+ *  rounded). n = 0 (ag may be NULL) removes the ground motion. Copied.
+ *  A step reads the record at its end only: its start keeps the load the previous step
+ *  ended with (or, after set_initial or a model setter, the record's value there). So a
+ *  caller who computes a_g step by step passes the two samples {a_g(t), a_g(t + dt)} with
+ *  t0 = t, dt_rec = dt before each step, and gets the run of the whole record.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if n is 1 or dt_rec <= 0;
  *  FRICREG_ENONFINITE; FRICREG_ENOMEM. */
 FRICREG_API int fricreg_structure_set_ground_accel(fricreg_structure *s, double t0,
@@ -119,7 +124,8 @@ FRICREG_API int fricreg_structure_set_ground_accel(fricreg_structure *s, double 
 /** Set the external load p(t) = p[ndof] g(t) (force units): a load pattern p times a time
  *  function g given as a record like fricreg_structure_set_ground_accel's (n >= 2 samples
  *  g[n] at t0 + k dt_rec, linear, zero outside), or g = 1 at all times when n = 0 (g may be
- *  NULL: a constant load; t0 and dt_rec are then ignored). Copied.
+ *  NULL: a constant load; t0 and dt_rec are then ignored). Copied. Read at step ends only,
+ *  like the ground motion.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_EINVAL if n is 1 or dt_rec <= 0
  *  with n >= 2; FRICREG_ENONFINITE; FRICREG_ENOMEM. */
 FRICREG_API int fricreg_structure_set_load(fricreg_structure *s, size_t ndof, const double p[],

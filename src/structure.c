@@ -345,10 +345,9 @@ int fricreg_structure_set_ground_accel(fricreg_structure *s, double t0, double d
 {
     if (s == NULL)
         return FRICREG_ENULL;
-    int status = set_record(s, "set_ground_accel", &s->ground, t0, dt_rec, n, ag);
-    if (status == FRICREG_OK)
-        s->ready = 0;
-    return status;
+    /* The step's start keeps the load it began with (a holds the equation there): the
+     * record is read at step ends only, so a caller may feed it step by step. */
+    return set_record(s, "set_ground_accel", &s->ground, t0, dt_rec, n, ag);
 }
 
 int fricreg_structure_set_load(fricreg_structure *s, size_t ndof, const double p[], double t0,
@@ -363,8 +362,7 @@ int fricreg_structure_set_load(fricreg_structure *s, size_t ndof, const double p
     if (status != FRICREG_OK)
         return status;
     memcpy(s->p->data, p, ndof * sizeof *p);
-    s->ready = 0;
-    return FRICREG_OK;
+    return FRICREG_OK; /* read at step ends only, as the ground motion */
 }
 
 int fricreg_structure_set_initial(fricreg_structure *s, size_t ndof, const double u0[],
@@ -511,9 +509,11 @@ double fr_record_at(const struct fr_record *rec, double t)
 {
     if (rec->n == 0)
         return 0.0;
-    double pos = (t - rec->t0) / rec->dt;
-    if (!(pos >= 0.0) || pos > (double)(rec->n - 1))
+    /* Step times carry rounding: one within 1e-9 of a sample interval of either end is on it. */
+    double pos = (t - rec->t0) / rec->dt, last = (double)(rec->n - 1);
+    if (!(pos >= -1e-9) || pos > last + 1e-9)
         return 0.0;
+    pos = fmin(fmax(pos, 0.0), last);
     size_t k = (size_t)pos;
     if (k >= rec->n - 1)
         return rec->x[rec->n - 1];
