@@ -98,8 +98,9 @@ FRICREG_API int fricreg_structure_set_bounds(fricreg_structure *s, size_t m,
 /** Select the friction law (enum fricreg_law) and eps > 0 (velocity units, e.g. m/s), as
  *  fricreg_ctx_set_law. The continuous laws (3), (4) and tanh give an implicit step with a
  *  solution that Newton finds; (1) and (2) jump at v = 0 and Karnopp at |v| = eps, where a
- *  step may have no root: such steps end on Newton's last iterate and count as failures. Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown law
- *  or eps <= 0; FRICREG_ENONFINITE. */
+ *  step may have no root: such steps end on Newton's last iterate and count as failures.
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown law or eps <= 0;
+ *  FRICREG_ENONFINITE. */
 FRICREG_API int fricreg_structure_set_law(fricreg_structure *s, int law, double eps);
 
 /** Set the influence vector r[ndof] (dimensionless): the ground acceleration a_g loads the
