@@ -2,8 +2,9 @@
  * fricreg.h — public C API of fricreg, a library for dry (Coulomb) friction with stick–slip.
  *
  * Implements the friction laws of D. D. Quinn, "A New Regularization of Coulomb Friction",
- * J. Vib. Acoust. 126 (2004) 391–397, equations (1)–(4), and the f_eq partition of its
- * Sec. 3.3 for coupled contacts. Equation numbers below are the paper's.
+ * J. Vib. Acoust. 126 (2004) 391–397, equations (1)–(4), and for coupled contacts the f_eq
+ * partition of its Sec. 3.3 and a consistent near-stick law beyond the paper (docs/coupled.md).
+ * Equation numbers below are the paper's.
  *
  * Conventions, for every function:
  *   - v (or zdot) is a contact's relative velocity; f is the friction force on the body whose
@@ -53,7 +54,8 @@ enum fricreg_status {
     FRICREG_ENOMEM = 5,      /**< memory allocation failed */
     FRICREG_ENOTSYM = 6,     /**< a coupling matrix is not symmetric */
     FRICREG_ENOTPSD = 7,     /**< a coupling matrix is not positive semidefinite */
-    FRICREG_ESINGULAR = 8,   /**< the near-stick block W_SS is singular: f_eq is not unique */
+    FRICREG_ESINGULAR = 8,   /**< the near-stick block W_SS (or the consistent law's W_FF) is
+                                  singular: the near-stick forces are not unique */
     FRICREG_ESTEP = 9,       /**< the step is too large for the stick-zone stiffness or the
                                   system's highest frequency (explicit fixed steps) */
     FRICREG_EDIVERGED = 10,  /**< the integrated state became NaN, infinite or beyond 1e100 */
@@ -80,7 +82,9 @@ enum fricreg_law {
     /** Smooth (paper refs. [13,14]): f = -mun tanh(v/eps). */
     FRICREG_LAW_TANH = 5,
     /** (4) Quinn: xi = (eps/2) sat(f_eq/mun); |v - xi| < eps/2: f = -(2 mun/eps)(v - xi);
-     *  else f = -mun sgn(v - xi). Continuous in (v, f_eq); equals (2) at v = 0. */
+     *  else f = -mun sgn(v - xi). Continuous in (v, f_eq); equals (2) at v = 0. With coupled
+     *  contacts the forces are continuous in (zdot, a_free) under the consistent partition
+     *  only (enum fricreg_partition). */
     FRICREG_LAW_QUINN = 6
 };
 
@@ -179,7 +183,8 @@ enum fricreg_partition {
 };
 
 /** Select the partition (enum fricreg_partition) used by fricreg_ctx_eval with a dense W.
- *  Cheap; discards the cached factor of W_SS.
+ *  Cheap; discards the cached factor, and (like every setter) the tangent of the last
+ *  evaluation.
  *  Returns FRICREG_OK; FRICREG_ENULL if ctx is NULL; FRICREG_EINVAL for an unknown partition. */
 FRICREG_API int fricreg_ctx_set_partition(fricreg_ctx *ctx, int partition);
 
@@ -194,7 +199,11 @@ FRICREG_API int fricreg_ctx_set_partition(fricreg_ctx *ctx, int partition);
  *  consistent partition, gives max_i W_ii s_i (its free contacts decouple); the paper's
  *  partition, (3) and tanh with a dense W give the largest eigenvalue of D^1/2 W D^1/2 (GSL's
  *  symmetric eigensolver, O(m^3), allocating O(m^2) for the call), which is larger by up to
- *  the coupling: 1.707x on the paper's two blocks with mu1 = 2 mu2.
+ *  the coupling: 1.707x on the paper's two blocks with mu1 = 2 mu2. Under the consistent law
+ *  contacts held at a velocity-dependent bound (breaking away, |f_eq,i| > mun_i) see the
+ *  Schur complement (W_AA - W_AF W_FF^-1 W_FA) D_A, which can be larger; it is left out: such
+ *  a contact accelerates out of that zone, which it crosses in about one step at this bound,
+ *  and the measured error stays O(eps) with no stability edge (docs/coupled.md).
  *
  *  lambda  out: the bound, >= 0. Written only on success.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ENOMEM. */
@@ -204,22 +213,37 @@ FRICREG_API int fricreg_ctx_stick_stiffness(fricreg_ctx *ctx, double *lambda);
  *
  *  The contacts obey zddot = a_free + W f. The near-stick set S is where the law needs f_eq:
  *  |zdot_i| < eps for (4) and Karnopp, zdot_i == 0 for (2), empty for (1), (3) and tanh.
- *  The slip set L gets f_L = -mun_L sgn(zdot_L) with no f_eq work. On S,
- *  W_SS f_eq,S = -(a_free,S + W_SL f_L) is solved (diagonal W: a division; dense W: pivoted
- *  Cholesky LDL^T of W_SS, kept and reused while S and W are unchanged), and f_S is the law at
- *  (zdot_S, f_eq,S).
+ *  The slip set L gets f_L = -mun_L sgn(zdot_L) with no f_eq work. On S:
+ *   - diagonal W (either partition): f_eq,i = -a_free,i / W_ii and the law, contact by contact;
+ *   - dense W, FRICREG_PARTITION_CONSISTENT (default): the consistent law. f_eq,i is the force
+ *     that zeroes contact i's acceleration given the others' actual forces, and f_S is the
+ *     unique solution of the box-constrained convex QP
+ *       min 1/2 f^T W_SS f + b^T f  on lo <= f <= hi,  b_i = a_free,i + W_ii c_i mun_i
+ *       + (W_SL f_L)_i,  lo_i = -mun_i (1 - max(-c_i, 0)),  hi_i = mun_i (1 - max(c_i, 0)),
+ *     with c_i = 2 zdot_i/eps for (4) and c = 0 for Karnopp and (2) (docs/coupled.md), solved
+ *     exactly by a primal active-set method warm-started from the previous call's active set;
+ *     f is continuous (Lipschitz) in (zdot, a_free, mun), across |zdot_j| = eps too, and each
+ *     f_i is the law at (zdot_i, f_eq,i);
+ *   - dense W, FRICREG_PARTITION_PAPER: W_SS f_eq,S = -(a_free,S + W_SL f_L), then the law at
+ *     (zdot_S, f_eq,S); f jumps when a coupled contact crosses |zdot_j| = eps.
+ *  Dense W solves with a pivoted Cholesky LDL^T (GSL) of W_SS or of W_FF on the QP's free set,
+ *  kept and reused while that set and W are unchanged (FRICREG_STAT_FACTORIZATIONS).
  *
  *  m          must equal the context's contact count.
  *  zdot[m]    relative contact velocities.
  *  a_free[m]  free relative accelerations (the relative accelerations with f = 0).
  *  f[m]       out: friction forces.
- *  f_eq[m]    out, optional (NULL to skip): f_eq,i for i in S; NaN for i not in S, where the
- *             law does not use f_eq and it is not computed.
+ *  f_eq[m]    out, optional (NULL to skip): f_eq,i for i in S (under the consistent law
+ *             -(a_free,i + sum_{j != i} W_ij f_j)/W_ii with the returned f); NaN for i not
+ *             in S, where the law does not use f_eq and it is not computed.
  *  No heap allocation. Outputs are written only on success.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE (NaN/Inf input);
- *  FRICREG_ESINGULAR if W_SS is singular (reciprocal condition number below 1e-12), which
- *  happens for redundant contacts: their f_eq is not unique. */
+ *  FRICREG_ESINGULAR if the block of W to be factorized (W_SS, or the consistent law's W_FF)
+ *  is singular: reciprocal condition number of the Jacobi-scaled block D^-1/2 W D^-1/2 below
+ *  1e-12, which happens for redundant contacts (their forces are not unique), whatever the
+ *  contacts' units; also (never seen, a safeguard) if the QP's active-set iterations exceed
+ *  100 + 10 |S|. */
 FRICREG_API int fricreg_ctx_eval(fricreg_ctx *ctx, size_t m, const double zdot[],
                                  const double a_free[], double f[], double f_eq[]);
 

@@ -260,6 +260,34 @@ START_TEST(errors)
 }
 END_TEST
 
+/* A failed factorization between eval and tangent: W = [[0.731, 1.462], [1.462, 2.924]] has
+ * rank 1. zdot = (0.0037, 0.153): contact 1 slides (f1 = -0.25), S = F = {0}: f_eq0 =
+ * -(0.213 + 1.462 (-0.25))/0.731, f0 = f_eq0 - 0.37 * 0.5 = 0.0236..., inside [-0.5, 0.315]:
+ * d f0/d zdot0 = -W00^-1 W00 0.5 * 100 = -50, d f0/d a_free0 = -1/0.731. Then both at rest:
+ * W_FF = W is singular (ESINGULAR), which overwrites the cached factor; the tangent is still
+ * the first evaluation's, at the price of one factorization. */
+START_TEST(tangent_survives_a_failed_factorization)
+{
+    const double Wr[4] = {0.731, 1.462, 1.462, 2.924};
+    fricreg_ctx *ctx = make_two_block(FRICREG_PARTITION_CONSISTENT);
+    ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, 2, Wr), FRICREG_OK);
+    const double z[2] = {0.0037, 0.153}, rest[2] = {0.0, 0.0}, a[2] = {0.213, -0.347};
+    double f[2], dz[4], da[4];
+    ck_assert_int_eq(fricreg_ctx_eval(ctx, 2, z, a, f, NULL), FRICREG_OK);
+    ck_assert_double_eq(f[1], -0.25);
+    ck_assert_int_eq(fricreg_ctx_eval(ctx, 2, rest, a, f, NULL), FRICREG_ESINGULAR);
+    int64_t before = -1, after = -1;
+    ck_assert_int_eq(fricreg_ctx_get_stat(ctx, FRICREG_STAT_FACTORIZATIONS, &before), 0);
+    ck_assert_int_eq(fricreg_ctx_tangent(ctx, 2, dz, da), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_get_stat(ctx, FRICREG_STAT_FACTORIZATIONS, &after), 0);
+    ck_assert_int_eq(after, before + 1);
+    const double want_dz[4] = {-50.0, 0.0, 0.0, 0.0}, want_da[4] = {-1.0 / 0.731, 0.0, 0.0, 0.0};
+    expect_matrix(dz, want_dz, 4, "df_dzdot");
+    expect_matrix(da, want_da, 4, "df_dafree");
+    fricreg_ctx_free(ctx);
+}
+END_TEST
+
 static Suite *tangent_suite(void)
 {
     Suite *s = suite_create("tangent");
@@ -271,6 +299,7 @@ static Suite *tangent_suite(void)
     tcase_add_test(tc, laws_without_feq);
     tcase_add_test(tc, central_differences);
     tcase_add_test(tc, errors);
+    tcase_add_test(tc, tangent_survives_a_failed_factorization);
     suite_add_tcase(s, tc);
     return s;
 }
