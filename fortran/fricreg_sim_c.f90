@@ -313,6 +313,13 @@ module fricreg_sim_c
       integer(c_int) :: fricreg_structure_set_hht
     end function
 
+    function fricreg_structure_set_central_difference(s) &
+        bind(C, name='fricreg_structure_set_central_difference')
+      import :: c_int, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int) :: fricreg_structure_set_central_difference
+    end function
+
     function fricreg_structure_set_newton(s, tol, max_iter) &
         bind(C, name='fricreg_structure_set_newton')
       import :: c_int, c_double, c_ptr

@@ -153,6 +153,21 @@ FRICREG_API int fricreg_structure_set_newmark(fricreg_structure *s, double beta,
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ENONFINITE; FRICREG_EINVAL. */
 FRICREG_API int fricreg_structure_set_hht(fricreg_structure *s, double alpha);
 
+/** Select the explicit central-difference method (Newmark beta = 0, gamma = 1/2):
+ *  u1 = u + dt v + dt^2 a/2, then the acceleration a1 from the equation of motion with the
+ *  damping and the friction at the explicit velocity v* = v + dt a (f = f(J v*, a_free)),
+ *  v1 = v + dt (a + a1)/2. No Newton iteration (the counters record 0); second order
+ *  undamped. Each step is refused (FRICREG_ESTEP, the state unchanged) beyond its stability
+ *  bounds: dt omega_max < 2, omega_max^2 the largest eigenvalue of M^-1 K (GSL's symmetric
+ *  eigensolver on L^-1 K L^-T, O(ndof^3) once per model change; the bound ignores C, which
+ *  lowers it to (sqrt(1 + zeta^2) - zeta) 2/omega for a damping ratio zeta), and
+ *  dt lambda < 1, lambda = fricreg_ctx_stick_stiffness (law (4): max_i W_ii 2 mun_i/eps), the
+ *  bound of the stick zone's velocity decay under this step (so the paper's eps = 2 dt with
+ *  W mun = 1 sits on the margin and is refused: take eps > 2 dt W_ii mun_i). set_newmark or
+ *  set_hht select an implicit scheme again.
+ *  Returns FRICREG_OK or FRICREG_ENULL. */
+FRICREG_API int fricreg_structure_set_central_difference(fricreg_structure *s);
+
 /** Newton's stopping rule: a step converges when the residual's largest entry is at most
  *  tol times the step's force scale: the largest entry of |M a| and |C v + K u - p~ - J^T f|
  *  at the step's start, |p~| at its end, and |J|^T mun. 0 < tol < 1; 1 <= max_iter <= 1000.
@@ -163,7 +178,8 @@ FRICREG_API int fricreg_structure_set_hht(fricreg_structure *s, double alpha);
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ENONFINITE; FRICREG_EINVAL. */
 FRICREG_API int fricreg_structure_set_newton(fricreg_structure *s, double tol, int max_iter);
 
-/** Advance one step of dt > 0 (time units) with the selected scheme.
+/** Advance one step of dt > 0 (time units) with the selected scheme (Newmark and HHT-alpha
+ *  below; central difference at fricreg_structure_set_central_difference).
  *
  *  Unknown: the acceleration a at t + dt, with u = u_pred + beta dt^2 a and
  *  v = v_pred + gamma dt a. Residual (HHT-alpha; Newmark: alpha = 0):
@@ -185,9 +201,9 @@ FRICREG_API int fricreg_structure_set_newton(fricreg_structure *s, double tol, i
  *  was never set; FRICREG_ENONFINITE if dt is not finite; FRICREG_ENOTSYM or
  *  FRICREG_ENOTPSD if the context refuses W (not expected: W is formed symmetric from a
  *  positive definite M and non-zero rows of J); FRICREG_ESINGULAR (redundant contacts
- *  sticking together: their forces are not unique); FRICREG_EDIVERGED if the
- *  residual or the state becomes non-finite or beyond 1e100. On failure the state is
- *  unchanged. */
+ *  sticking together: their forces are not unique); FRICREG_ESTEP (central
+ *  difference beyond its stability bounds); FRICREG_EDIVERGED if the residual or the state
+ *  becomes non-finite or beyond 1e100. On failure the state is unchanged. */
 FRICREG_API int fricreg_structure_step(fricreg_structure *s, double dt);
 
 /** Step from the current time to t_end with steps of dt, the last one shortened to land on

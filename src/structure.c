@@ -34,6 +34,10 @@ void fricreg_structure_free(fricreg_structure *s)
             gsl_vector_free(vecs[k]);
     if (s->perm)
         gsl_permutation_free(s->perm);
+    if (s->eigen_work)
+        gsl_eigen_symm_free(s->eigen_work);
+    if (s->eigenvalues)
+        gsl_vector_free(s->eigenvalues);
     fricreg_ctx_free(s->ctx);
     free(s->mun);
     free(s->ground.x);
@@ -66,9 +70,11 @@ static int allocate(fricreg_structure *s)
         if ((*mv[k] = gsl_vector_calloc(m)) == NULL)
             return 0;
     s->perm = gsl_permutation_alloc(n);
+    s->eigen_work = gsl_eigen_symm_alloc(n);
+    s->eigenvalues = gsl_vector_alloc(n);
     s->mun = malloc(m * sizeof *s->mun);
     s->energy.per_contact = calloc(m, sizeof *s->energy.per_contact);
-    return s->perm && s->mun && s->energy.per_contact
+    return s->perm && s->eigen_work && s->eigenvalues && s->mun && s->energy.per_contact
            && fricreg_ctx_create(m, &s->ctx) == FRICREG_OK;
 }
 
@@ -397,6 +403,7 @@ int fricreg_structure_set_newmark(fricreg_structure *s, double beta, double gamm
     if (!(beta > 0.0 && beta <= 0.5 && gamma >= 0.5 && gamma <= 1.0))
         return fr_sfail(s, FRICREG_EINVAL, "set_newmark: beta = %g must be in (0, 1/2] and "
                         "gamma = %g in [1/2, 1]", beta, gamma);
+    s->scheme = FR_SCHEME_NEWMARK;
     s->alpha = 0.0;
     s->beta = beta;
     s->gamma = gamma;
@@ -412,10 +419,19 @@ int fricreg_structure_set_hht(fricreg_structure *s, double alpha)
         return fr_sfail(s, FRICREG_ENONFINITE, "set_hht: alpha is not finite");
     if (!(alpha >= -1.0 / 3.0 && alpha <= 0.0))
         return fr_sfail(s, FRICREG_EINVAL, "set_hht: alpha = %g must be in [-1/3, 0]", alpha);
+    s->scheme = FR_SCHEME_NEWMARK;
     s->alpha = alpha;
     s->beta = (1.0 - alpha) * (1.0 - alpha) / 4.0;
     s->gamma = 0.5 - alpha;
     s->S_dt = 0.0;
+    return FRICREG_OK;
+}
+
+int fricreg_structure_set_central_difference(fricreg_structure *s)
+{
+    if (s == NULL)
+        return FRICREG_ENULL;
+    s->scheme = FR_SCHEME_CENTRAL;
     return FRICREG_OK;
 }
 
@@ -499,6 +515,7 @@ int fr_structure_prepare(fricreg_structure *s)
     if (status != FRICREG_OK)
         return status;
     s->S_dt = 0.0;
+    s->omega_valid = 0;
     s->prepared = 1;
     return FRICREG_OK;
 }

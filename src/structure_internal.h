@@ -6,6 +6,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include <gsl/gsl_eigen.h>
 #include <gsl/gsl_matrix.h>
 #include <gsl/gsl_permutation.h>
 #include <gsl/gsl_vector.h>
@@ -14,6 +15,8 @@
 #include "fricreg_structure.h"
 
 #define FR_NSSTATS 5
+
+enum { FR_SCHEME_NEWMARK = 0, FR_SCHEME_CENTRAL = 1 }; /* HHT-alpha is Newmark's */
 
 /* A sampled time function: n samples from t0 every dt, linear, zero outside (n = 0: none). */
 struct fr_record {
@@ -42,6 +45,7 @@ struct fricreg_structure {
     double *mun;           /* [m] the bounds, for the force scale */
 
     /* Integrator. */
+    int scheme;            /* FR_SCHEME_* */
     double alpha, beta, gamma;
     double newton_tol;
     int newton_max;
@@ -51,6 +55,12 @@ struct fricreg_structure {
     gsl_matrix *L;         /* n x n: Cholesky factor of M */
     gsl_matrix *G;         /* m x n: J M^-1 */
     gsl_vector *Mr;        /* M r */
+    int omega_valid;       /* central difference: omega_max is current (reset by prepare) */
+    double omega_max;
+    int stick_valid;       /* central difference: stick_rate is current (reset at equilibrium) */
+    double stick_rate;     /* fricreg_ctx_stick_stiffness */
+    gsl_eigen_symm_workspace *eigen_work;
+    gsl_vector *eigenvalues;
 
     /* State at time t; `ready` when a, f and p~ hold the equation of motion at t. */
     double t;
@@ -83,8 +93,21 @@ int fr_structure_prepare(fricreg_structure *s);
 double fr_record_at(const struct fr_record *rec, double t);
 void fr_structure_effective_load(const fricreg_structure *s, double t, gsl_vector *ptil);
 
-/* newmark.c */
+/* step.c */
+double fr_norm_inf(const gsl_vector *x);
 int fr_structure_equilibrium(fricreg_structure *s);
+/* a_free = G w, zdot = J v, f from the context, for the net non-friction force w. */
+int fr_structure_friction(fricreg_structure *s, const gsl_vector *w, const gsl_vector *v,
+                          gsl_vector *f);
+/* w = p~ - C v - K u */
+void fr_structure_net_force(const fricreg_structure *s, const gsl_vector *ptil,
+                            const gsl_vector *u, const gsl_vector *v, gsl_vector *w);
+
+/* newmark.c: u1, v1, x (= a1) and f1 of one Newmark / HHT-alpha step by Newton. */
+int fr_newmark_solve(fricreg_structure *s, double dt, int *converged, int *iters);
+
+/* central_difference.c: the same, explicit; FRICREG_ESTEP beyond its stability bounds. */
+int fr_central_solve(fricreg_structure *s, double dt);
 
 /* energy.c */
 void fr_energy_reset(fricreg_structure *s);

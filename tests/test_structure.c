@@ -330,6 +330,82 @@ START_TEST(oscillator_forced_dissipation_matches_exact)
 }
 END_TEST
 
+/* Central difference, SDOF as above: u_{n+1} - 2 u_n + u_{n-1} = -(w dt)^2 u_n with
+ * u_1 = u0 (1 - (w dt)^2/2), so u_n = u0 cos(wc t_n), cos(wc dt) = 1 - (w dt)^2/2. Stable
+ * for w dt < 2: dt = 1.001 * 2/w is refused, the state unchanged. */
+START_TEST(central_difference_sdof_and_bound)
+{
+    const double mass = 2.385, w = 1.7, u0 = 0.0371, dt = 0.137, k = mass * w * w, v0 = 0.0;
+    fricreg_structure *s = make(1, 1);
+    ok(s, fricreg_structure_set_mass(s, 1, &mass));
+    ok(s, fricreg_structure_set_stiffness(s, 1, &k));
+    frictionless(s, 1);
+    ok(s, fricreg_structure_set_central_difference(s));
+    ok(s, fricreg_structure_set_initial(s, 1, &u0, &v0));
+    double wc = acos(1.0 - (w * dt) * (w * dt) / 2.0) / dt;
+    for (int n = 1; n <= 400; n++) {
+        ok(s, fricreg_structure_step(s, dt));
+        double u;
+        ok(s, fricreg_structure_get_state(s, 1, &u, NULL, NULL));
+        ck_assert_double_eq_tol(u, u0 * cos(wc * n * dt), 1e-12 * u0);
+    }
+    ck_assert_int_eq(stat(s, FRICREG_SSTAT_NEWTON_ITERATIONS), 0);
+    double before[3], after[3];
+    ok(s, fricreg_structure_get_state(s, 1, before, before + 1, before + 2));
+    ck_assert_int_eq(fricreg_structure_step(s, 1.001 * 2.0 / w), FRICREG_ESTEP);
+    ck_assert_ptr_nonnull(strstr(fricreg_structure_errmsg(s), "omega_max"));
+    ok(s, fricreg_structure_get_state(s, 1, after, after + 1, after + 2));
+    ck_assert_mem_eq(before, after, sizeof before);
+    ck_assert_double_eq_tol(value(s, FRICREG_SVALUE_TIME), 400 * dt, 1e-12);
+    fricreg_structure_free(s);
+}
+END_TEST
+
+/* Central difference on the paper's oscillator: the stick zone's velocity decays only for
+ * dt 2 mun/eps < 1 (W = 1), so the paper's eps = 2 dt sits on the margin and is refused;
+ * eps = 4 dt holds the stick within eps^2/2 of -0.75 with no creep, and the 5th forced
+ * cycle's D converges at second order (measured -4.5e-6, -1.1e-6, -2.7e-7 at dt = 4e-3,
+ * 2e-3, 1e-3: ratio 4). */
+START_TEST(central_difference_oscillator)
+{
+    const double dt = 1e-3, x0 = 2.75, v0 = 0.0;
+    fricreg_structure *s = oscillator(dt, 0.0, 1.0, x0, 12.0);
+    ok(s, fricreg_structure_set_central_difference(s));
+    ck_assert_int_eq(fricreg_structure_step(s, dt), FRICREG_ESTEP);
+    ck_assert_ptr_nonnull(strstr(fricreg_structure_errmsg(s), "stick-zone"));
+    ok(s, fricreg_structure_set_law(s, FRICREG_LAW_QUINN, 4.0 * dt));
+    ok(s, fricreg_structure_set_initial(s, 1, &x0, &v0));
+    ok(s, fricreg_structure_run(s, dt, 8.0));
+    double u8, u;
+    ok(s, fricreg_structure_get_state(s, 1, &u8, NULL, NULL));
+    ok(s, fricreg_structure_run(s, dt, 12.0));
+    ok(s, fricreg_structure_get_state(s, 1, &u, NULL, NULL));
+    ck_assert_double_eq_tol(u, -0.75, 0.5 * (4.0 * dt) * (4.0 * dt));
+    ck_assert_double_eq(u, u8);
+    fricreg_structure_free(s);
+
+    const double a = 2.0, omega = 0.5, T = 2.0 * PI / omega;
+    fricreg_exact *ex = NULL;
+    ck_assert_int_eq(fricreg_exact_solve(a, omega, 1.0, 0.0, 0.0, 5.0 * T, &ex), FRICREG_OK);
+    double De[5], rel[2];
+    ck_assert_int_eq(fricreg_exact_dissipation(ex, 5, De), FRICREG_OK);
+    fricreg_exact_free(ex);
+    for (int i = 0; i < 2; i++) {
+        double h = 2e-3 / (double)(1 << i);
+        s = oscillator(h, a, omega, 0.0, 5.0 * T);
+        ok(s, fricreg_structure_set_central_difference(s));
+        ok(s, fricreg_structure_set_law(s, FRICREG_LAW_QUINN, 4.0 * h));
+        ok(s, fricreg_structure_run(s, h, 4.0 * T));
+        double before = value(s, FRICREG_SVALUE_FRICTION);
+        ok(s, fricreg_structure_run(s, h, 5.0 * T));
+        rel[i] = (value(s, FRICREG_SVALUE_FRICTION) - before) / De[4] - 1.0;
+        fricreg_structure_free(s);
+    }
+    ck_assert_double_lt(fabs(rel[0]), 2e-6);
+    ck_assert_double_eq_tol(rel[0] / rel[1], 4.0, 0.4);
+}
+END_TEST
+
 /* ---------------------------------------------------------------- coupled contacts */
 
 /* Two storeys, J = [[1, 0], [-1, 1]] (ground and inter-storey slip): W = J M^-1 J^T is dense.
@@ -688,6 +764,7 @@ static Suite *structure_suite(void)
     tcase_add_test(linear, newmark_sdof_period_and_energy);
     tcase_add_loop_test(linear, newmark_two_dof_modal, 0, 2);
     tcase_add_test(linear, hht_second_order_and_dissipative);
+    tcase_add_test(linear, central_difference_sdof_and_bound);
     suite_add_tcase(suite, linear);
     TCase *friction = tcase_create("friction");
     tcase_add_test(friction, oscillator_unforced_sticks_at_rest_position);
@@ -697,6 +774,7 @@ static Suite *structure_suite(void)
     tcase_add_loop_test(friction, every_law_on_coupled_contacts, FRICREG_LAW_COULOMB,
                         FRICREG_LAW_QUINN + 1);
     tcase_add_test(friction, ground_motion_step_by_step);
+    tcase_add_test(friction, central_difference_oscillator);
     suite_add_tcase(suite, friction);
     TCase *bld = tcase_create("building");
     tcase_add_loop_test(bld, building_newmark_and_hht, 0, 2);
