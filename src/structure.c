@@ -183,9 +183,11 @@ int fricreg_structure_set_mass(fricreg_structure *s, size_t ndof, const double M
     gsl_error_handler_t *old = fr_gsl_quiet();
     int gsl_status = gsl_linalg_cholesky_decomp1(s->L);
     fr_gsl_restore(old);
-    if (gsl_status != GSL_SUCCESS)
+    if (gsl_status != GSL_SUCCESS) {
+        s->prepared = 0; /* L held the kept M's factor: the next step refactors it */
         return fr_sfail(s, FRICREG_ENOTPSD, "set_mass: the mass matrix is not positive definite "
                         "(GSL's Cholesky decomposition fails)");
+    }
     copy_matrix(s->M, M);
     model_changed(s);
     return FRICREG_OK;
