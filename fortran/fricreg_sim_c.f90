@@ -343,6 +343,16 @@ module fricreg_sim_c
       integer(c_int) :: fricreg_structure_run
     end function
 
+    !> integrator: FRICREG_INT_*; rtol = atol = 0 for fixed steps.
+    function fricreg_structure_run_ode(s, integrator, dt, rtol, atol, t_end) &
+        bind(C, name='fricreg_structure_run_ode')
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: s
+      integer(c_int), value :: integrator
+      real(c_double), value :: dt, rtol, atol, t_end
+      integer(c_int) :: fricreg_structure_run_ode
+    end function
+
     !> Any of u, v, a may be absent (not all three); each written only on success.
     function fricreg_structure_get_state(s, ndof, u, v, a) &
         bind(C, name='fricreg_structure_get_state')

@@ -24,6 +24,7 @@
 #define FRICREG_STRUCTURE_H
 
 #include "fricreg.h"
+#include "fricreg_sim.h" /* enum fricreg_integrator, for fricreg_structure_run_ode */
 
 #ifdef __cplusplus
 extern "C" {
@@ -168,13 +169,14 @@ FRICREG_API int fricreg_structure_set_hht(fricreg_structure *s, double alpha);
  *  Returns FRICREG_OK or FRICREG_ENULL. */
 FRICREG_API int fricreg_structure_set_central_difference(fricreg_structure *s);
 
-/** Newton's stopping rule: a step converges when the residual's largest entry is at most
+/** Newton's stopping rule: a step converges after at least one iteration (none if the
+ *  first guess's residual is exactly zero) when the residual's largest entry is at most
  *  tol times the step's force scale: the largest entry of |M a| and |C v + K u - p~ - J^T f|
  *  at the step's start, |p~| at its end, and |J|^T mun. 0 < tol < 1; 1 <= max_iter <= 1000.
  *  Iterations grow as eps shrinks against dt times the contacts' accelerations (law (4) then
  *  approaches a jump): on the ten-storey building of issue 10 at dt = 0.01 s, mean (max)
- *  iterations per step were 1.05 (8) at eps = 0.01 m/s, 2.2 (19) at 1e-3, 5.6 (26) at 3e-4
- *  and 9.9 (42) at 1e-4; hence the default max_iter = 50.
+ *  iterations per step were 1.15 (8) at eps = 0.01 m/s, 2.2 (19) at 1e-3 and 9.95 (42) at
+ *  1e-4; hence the default max_iter = 50.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ENONFINITE; FRICREG_EINVAL. */
 FRICREG_API int fricreg_structure_set_newton(fricreg_structure *s, double tol, int max_iter);
 
@@ -212,6 +214,32 @@ FRICREG_API int fricreg_structure_step(fricreg_structure *s, double dt);
  *  current time or needs more than 2^31 steps. On failure the state is that of the last
  *  successful step. */
 FRICREG_API int fricreg_structure_run(fricreg_structure *s, double dt, double t_end);
+
+/** Integrate from the current time to t_end with one of GSL's steppers (enum
+ *  fricreg_integrator of fricreg_sim.h), as the reference systems' drivers do: the
+ *  first-order system u' = v, M v' = p~ - C v - K u + J^T f, with the input work, the viscous
+ *  and each contact's friction dissipation integrated by the same scheme as extra states
+ *  (so the balance's residual measures the scheme's energy error).
+ *
+ *  rtol = atol = 0: fixed steps dt > 0 (the last one shortened to end on t_end; RK4 is the
+ *  classical one, the paper's method). A fixed explicit step is refused (FRICREG_ESTEP) when
+ *  dt times the stick-zone stiffness (fricreg_ctx_stick_stiffness) exceeds the stepper's
+ *  stability bound on the negative real axis, or dt omega_max its bound on the imaginary
+ *  axis (omega_max^2 the largest eigenvalue of M^-1 K), as fricreg_sim_run refuses it.
+ *  Otherwise adaptive, GSL's standard control (|error| <= atol + rtol |y|), dt the first step.
+ *  Implicit steppers use a forward-difference Jacobian (2 ndof + 3 + m right-hand sides).
+ *  The load and ground records are read at every stage time (interpolated). Allocates the
+ *  GSL driver and O((2 ndof + m)^2) doubles for the run. Counts GSL steps in
+ *  FRICREG_SSTAT_STEPS (no Newton iterations). Afterwards fricreg_structure_step continues
+ *  from the state reached, its acceleration from the equation of motion.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown integrator, dt <= 0,
+ *  rtol < 0, atol < 0, t_end not after the current time, more than 2^31 fixed steps, or J
+ *  never set; FRICREG_ENONFINITE; FRICREG_ESTEP; FRICREG_ESINGULAR; FRICREG_EDIVERGED (the
+ *  state non-finite or beyond 1e100); FRICREG_EINTEGRATOR (GSL failed, e.g. the adaptive step
+ *  underflowed); FRICREG_ENOMEM. On failure the state is that of the last accepted step. */
+FRICREG_API int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt,
+                                          double rtol, double atol, double t_end);
 
 /** Copy the state at the current time: displacements u[ndof], velocities v[ndof],
  *  accelerations a[ndof]; any of them may be NULL (not all three).

@@ -29,13 +29,18 @@ static double largest_frequency_squared(fricreg_structure *s)
     return gsl_vector_max(s->eigenvalues);
 }
 
-static int check_step(fricreg_structure *s, double dt)
+double fr_structure_omega_max(fricreg_structure *s)
 {
     if (!s->omega_valid) {
         s->omega_max = sqrt(fmax(largest_frequency_squared(s), 0.0));
         s->omega_valid = 1;
     }
-    if (dt * s->omega_max >= 2.0)
+    return s->omega_max;
+}
+
+static int check_step(fricreg_structure *s, double dt)
+{
+    if (dt * fr_structure_omega_max(s) >= 2.0)
         return fr_sfail(s, FRICREG_ESTEP, "step: dt = %g is not below the central "
                         "difference's bound 2/omega_max = %g (omega_max = %g)", dt,
                         2.0 / s->omega_max, s->omega_max);

@@ -124,9 +124,12 @@ static int newton(fricreg_structure *s, double dt, int *converged, int *iters)
                         fricreg_ctx_errmsg(s->ctx));
     double tol = s->newton_tol * force_scale(s);
     double phi = gsl_blas_dnrm2(s->R);
+    /* At least one iteration unless the guess is exact: a guess accepted within the
+     * tolerance would leave a in error by up to tol, and a stick would creep by that
+     * times dt^2 every step. On a linear piece of the law one iteration is exact. */
     *iters = 0;
-    *converged = fr_norm_inf(s->R) <= tol;
-    while (!*converged && *iters < s->newton_max) {
+    double r = fr_norm_inf(s->R);
+    while (r != 0.0 && (*iters == 0 || r > tol) && *iters < s->newton_max) {
         if (!isfinite(phi))
             break;
         if (newton_direction(s, dt) != FRICREG_OK)
@@ -136,8 +139,9 @@ static int newton(fricreg_structure *s, double dt, int *converged, int *iters)
             residual(s, dt, s->x, s->R); /* back to x: the step's best point */
             break;
         }
-        *converged = fr_norm_inf(s->R) <= tol;
+        r = fr_norm_inf(s->R);
     }
+    *converged = r <= tol; /* also when the extra iteration stalls at the rounding floor */
     if (!isfinite(phi))
         return fr_sfail(s, FRICREG_EDIVERGED, "step: the residual at t = %g is not finite",
                         s->t + dt);

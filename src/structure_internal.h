@@ -108,6 +108,8 @@ int fr_newmark_solve(fricreg_structure *s, double dt, int *converged, int *iters
 
 /* central_difference.c: the same, explicit; FRICREG_ESTEP beyond its stability bounds. */
 int fr_central_solve(fricreg_structure *s, double dt);
+/* The largest natural frequency sqrt(max eig M^-1 K) (0 if K has none > 0), cached. */
+double fr_structure_omega_max(fricreg_structure *s);
 
 /* energy.c */
 void fr_energy_reset(fricreg_structure *s);
