@@ -1,7 +1,8 @@
 ! test_structure.f90 — the linear structure with friction (include/fricreg_structure.h) through
 ! the thin bind(C) layer, with C's numbers (tests/test_structure.c): two storeys hold a static
 ! load, J^T f = -p, so f = (-(p1 + p2), -p2) = (-0.319, 0.412) with no motion; and the paper's
-! unforced oscillator as a structure (M = K = J = 1) sticks at -0.75 within eps^2/2.
+! unforced oscillator as a structure (M = K = J = 1) sticks at -0.75 within eps^2/2, and at
+! the paper's -0.750090 through run_ode with RK4.
 ! J is m x ndof row-major in C: a Fortran caller with J(m, ndof) passes transpose(J).
 program test_structure
   use fricreg_c
@@ -63,6 +64,19 @@ program test_structure
   call check_status(fricreg_structure_get_value(s, FRICREG_SVALUE_FRICTION, value), FRICREG_OK, &
                     'get_value')
   call check_close(value, 3.5_c_double, 0.5_c_double * (2 * dt)**2, 'D = mun * 3.5')
+
+  ! The same through GSL's classical RK4 at the paper's dt = 0.01, eps = 0.02: -0.750090.
+  call check_status(fricreg_structure_set_law(s, FRICREG_LAW_QUINN, 0.02_c_double), FRICREG_OK, &
+                    'law, eps = 0.02')
+  call check_status(fricreg_structure_set_initial(s, 1_c_size_t, [2.75_c_double], zero), &
+                    FRICREG_OK, 'restart')
+  call check_status(fricreg_structure_run_ode(s, FRICREG_INT_RK4, 0.01_c_double, 0.0_c_double, &
+                    0.0_c_double, 20.0_c_double), FRICREG_OK, 'run_ode rk4')
+  call check_status(fricreg_structure_get_state(s, 1_c_size_t, u=x), FRICREG_OK, 'get_state')
+  call check_close(x(1), -0.750090_c_double, 5e-7_c_double, 'paper: -0.750090')
+  call check_status(fricreg_structure_set_central_difference(s), FRICREG_OK, 'central')
+  call check_status(fricreg_structure_step(s, 0.01_c_double), FRICREG_ESTEP, &
+                    'central difference refuses dt 2 mun/eps = 1')
   call fricreg_structure_free(s)
 
   call finish('structure')
