@@ -331,6 +331,43 @@ START_TEST(oscillator_forced_dissipation_matches_exact)
 }
 END_TEST
 
+/* General Newmark (beta = 0.3025, gamma = 0.6: damping of high frequencies) on an undamped
+ * SDOF, against the method's recurrence written out for M = 1, K = w^2:
+ * (1 + beta h^2) a1 = -w^2 (u + dt v + (1/2 - beta) dt^2 a), h = w dt,
+ * u1 = u + dt v + dt^2 ((1/2 - beta) a + beta a1), v1 = v + dt ((1 - gamma) a + gamma a1).
+ * set_newmark after set_hht is plain Newmark again (alpha = 0). The balance's residual is
+ * the energy the method removes: positive, and all of e0 - e. */
+START_TEST(newmark_general_beta_gamma)
+{
+    const double w = 2.3, k = w * w, beta = 0.3025, gamma = 0.6, dt = 0.0917;
+    double u = 0.41, v = -0.27, a = -k * u;
+    fricreg_structure *s = make(1, 1);
+    ok(s, fricreg_structure_set_stiffness(s, 1, &k));
+    frictionless(s, 1);
+    ok(s, fricreg_structure_set_hht(s, -0.2));
+    ok(s, fricreg_structure_set_newmark(s, beta, gamma));
+    ok(s, fricreg_structure_set_initial(s, 1, &u, &v));
+    for (int n = 1; n <= 200; n++) {
+        double h = w * dt;
+        double a1 = -k * (u + dt * v + (0.5 - beta) * dt * dt * a) / (1.0 + beta * h * h);
+        u = u + dt * v + dt * dt * ((0.5 - beta) * a + beta * a1);
+        v = v + dt * ((1.0 - gamma) * a + gamma * a1);
+        a = a1;
+        ok(s, fricreg_structure_step(s, dt));
+        double got[3];
+        ok(s, fricreg_structure_get_state(s, 1, got, got + 1, got + 2));
+        ck_assert_double_eq_tol(got[0], u, 1e-12);
+        ck_assert_double_eq_tol(got[1], v, 1e-12);
+        ck_assert_double_eq_tol(got[2], a, 1e-11);
+    }
+    double e0 = value(s, FRICREG_SVALUE_INITIAL);
+    double e = value(s, FRICREG_SVALUE_KINETIC) + value(s, FRICREG_SVALUE_STRAIN);
+    ck_assert_double_lt(e, 0.9 * e0);
+    ck_assert_double_eq_tol(value(s, FRICREG_SVALUE_RESIDUAL), e0 - e, 1e-12 * e0);
+    fricreg_structure_free(s);
+}
+END_TEST
+
 /* Central difference, SDOF as above: u_{n+1} - 2 u_n + u_{n-1} = -(w dt)^2 u_n with
  * u_1 = u0 (1 - (w dt)^2/2), so u_n = u0 cos(wc t_n), cos(wc dt) = 1 - (w dt)^2/2. Stable
  * for w dt < 2: dt = 1.001 * 2/w is refused, the state unchanged. */
@@ -904,6 +941,7 @@ static Suite *structure_suite(void)
     tcase_add_test(linear, newmark_sdof_period_and_energy);
     tcase_add_loop_test(linear, newmark_two_dof_modal, 0, 2);
     tcase_add_test(linear, hht_second_order_and_dissipative);
+    tcase_add_test(linear, newmark_general_beta_gamma);
     tcase_add_test(linear, central_difference_sdof_and_bound);
     suite_add_tcase(suite, linear);
     TCase *friction = tcase_create("friction");
