@@ -1,6 +1,7 @@
 /*
  * fricreg_structure.h — a linear structure with friction contacts, integrated by Newmark or
- * HHT-alpha with the friction implicit (Newton on the exact tangent).
+ * HHT-alpha with the friction implicit (Newton on the exact tangent), by explicit central
+ * difference, or by any of GSL's steppers (fricreg_structure_run_ode).
  *
  *     M u'' + C u' + K u = p(t) - M r a_g(t) + J^T f,      zdot = J u'
  *
@@ -114,7 +115,8 @@ FRICREG_API int fricreg_structure_set_influence(fricreg_structure *s, size_t ndo
  *  samples ag[n] at times t0 + k dt_rec, dt_rec > 0, interpolated linearly and zero outside
  *  [t0, t0 + (n-1) dt_rec] (a time within 1e-9 dt_rec of an end is on it: step times are
  *  rounded). n = 0 (ag may be NULL) removes the ground motion. Copied.
- *  A step reads the record at its end only: its start keeps the load the previous step
+ *  A step (Newmark, HHT, central difference) reads the record at its end only (run_ode
+ *  reads it at every stage time): its start keeps the load the previous step
  *  ended with (or, after set_initial or a model setter, the record's value there). So a
  *  caller who computes a_g step by step passes the two samples {a_g(t), a_g(t + dt)} with
  *  t0 = t, dt_rec = dt before each step, and gets the run of the whole record.
