@@ -1,6 +1,7 @@
 ! fricreg_sim_c.f90 — module fricreg_sim_c: thin bind(C) interfaces to every function of the
 ! public headers beside fricreg.h: fricreg_sim.h (the GSL ODE drivers of the paper's three
-! reference systems), fricreg_exact.h (the exact solution of the oscillator), and any header
+! reference systems), fricreg_exact.h (the exact solution of the oscillator),
+! fricreg_structure.h (a linear structure with friction), and any header
 ! added to the library's public list later.
 !
 ! As in module fricreg_c, the interfaces are generated from the C prototypes at build time

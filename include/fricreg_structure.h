@@ -1,0 +1,317 @@
+/*
+ * fricreg_structure.h — a linear structure with friction contacts, integrated by Newmark or
+ * HHT-alpha with the friction implicit (Newton on the exact tangent), by explicit central
+ * difference, or by any of GSL's steppers (fricreg_structure_run_ode).
+ *
+ *     M u'' + C u' + K u = p(t) - M r a_g(t) + J^T f,      zdot = J u'
+ *
+ * u[ndof] are the structure's displacements, M, C, K its dense mass, damping and stiffness
+ * matrices, p(t) an external load, r the influence vector of a ground acceleration a_g(t), J
+ * the m x ndof contact matrix and f[m] the friction forces, given by a fricreg context
+ * (fricreg.h) from the contact velocities zdot = J u' and the free contact accelerations
+ * a_free = J M^-1 (p - M r a_g - C u' - K u), with the Delassus matrix W = J M^-1 J^T. The
+ * object forms W and a_free itself (one GSL Cholesky factor of M); coupled contacts (dense W)
+ * use the consistent near-stick law (FRICREG_PARTITION_CONSISTENT).
+ *
+ * Units are the caller's, consistent and physical: e.g. kg, N/m, N s/m, m, s, N; eps of the
+ * friction law is a velocity (m/s). All matrices are dense and row-major (A[i*ncols + j]);
+ * M, C and K are symmetric, so Fortran may pass them as they are, while J (m x ndof) must be
+ * passed transposed from a Fortran J(m, ndof) array (or stored as Jt(ndof, m)).
+ *
+ * Conventions are those of fricreg.h: int results are fricreg_status codes, nothing is
+ * printed, a failed call leaves the caller's arrays untouched, one object per thread.
+ */
+#ifndef FRICREG_STRUCTURE_H
+#define FRICREG_STRUCTURE_H
+
+#include "fricreg.h"
+#include "fricreg_sim.h" /* enum fricreg_integrator, for fricreg_structure_run_ode */
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Opaque linear structure with friction contacts: model, excitation, integrator, state. */
+typedef struct fricreg_structure fricreg_structure;
+
+/** Create a structure of ndof >= 1 degrees of freedom and m >= 1 friction contacts.
+ *
+ *  Defaults: M = I, C = 0, K = 0, J unset (set_contacts before the first step), mun[i] = 1,
+ *  law (4) with eps = 1e-3, r = 0, no load and no ground motion, u = u' = 0 at t = 0,
+ *  average-acceleration Newmark (beta = 1/4, gamma = 1/2), Newton tolerance 1e-10 and at
+ *  most 50 iterations. All memory is allocated here (O(ndof^2 + m ndof + m^2) doubles), but
+ *  for the records of set_ground_accel and set_load: steps never allocate.
+ *
+ *  ndof  number of degrees of freedom, 1 <= ndof <= 2^15.
+ *  m     number of friction contacts, 1 <= m <= 2^15 (a structure without friction: one
+ *        contact with mun = 0, whose force is exactly 0).
+ *  out   out: the structure, released with fricreg_structure_free. Written only on success.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if out is NULL; FRICREG_EINVAL if ndof or m is 0 or too
+ *  large; FRICREG_ENOMEM. */
+FRICREG_API int fricreg_structure_create(size_t ndof, size_t m, fricreg_structure **out);
+
+/** Release a structure. fricreg_structure_free(NULL) does nothing. */
+FRICREG_API void fricreg_structure_free(fricreg_structure *s);
+
+/** Set the mass matrix M[ndof*ndof] (mass units, e.g. kg), symmetric (relative tolerance
+ *  1e-12) and positive definite (GSL's Cholesky decomposition succeeds). Copied.
+ *  Like every model setter, it takes effect at the next step, which recomputes the
+ *  acceleration at the current state from the equation of motion.
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if ndof is not the structure's;
+ *  FRICREG_ENONFINITE; FRICREG_ENOTSYM; FRICREG_ENOTPSD if M is not positive definite. */
+FRICREG_API int fricreg_structure_set_mass(fricreg_structure *s, size_t ndof, const double M[]);
+
+/** Set the stiffness matrix K[ndof*ndof] (force per length, e.g. N/m), symmetric (relative
+ *  tolerance 1e-12); it need not be definite (rigid-body modes are allowed). Copied.
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_ENOTSYM. */
+FRICREG_API int fricreg_structure_set_stiffness(fricreg_structure *s, size_t ndof,
+                                                const double K[]);
+
+/** Set the damping matrix C[ndof*ndof] (force per velocity, e.g. N s/m), symmetric (relative
+ *  tolerance 1e-12). Copied; replaces Rayleigh damping.
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_ENOTSYM. */
+FRICREG_API int fricreg_structure_set_damping(fricreg_structure *s, size_t ndof,
+                                              const double C[]);
+
+/** Rayleigh damping C = a0 M + a1 K (a0 in 1/s, a1 in s, both >= 0), formed from the M and
+ *  K in force at each step, so it follows later set_mass and set_stiffness calls. Mode k of
+ *  circular frequency w_k gets the damping ratio a0/(2 w_k) + a1 w_k/2.
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ENONFINITE; FRICREG_EINVAL if a0 or a1 < 0. */
+FRICREG_API int fricreg_structure_set_rayleigh(fricreg_structure *s, double a0, double a1);
+
+/** Set the contact matrix J[m*ndof], row-major (J[i*ndof + k] = d zdot_i / d u'_k,
+ *  dimensionless for displacement DOFs), so that zdot = J u' and contact i's friction force
+ *  f_i acts on the structure as J^T f. Copied. Each contact must move (a non-zero row):
+ *  W = J M^-1 J^T then has W_ii > 0; redundant contacts (dependent rows) make W singular,
+ *  which the friction evaluation reports as FRICREG_ESINGULAR when they stick together.
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if m or ndof is not the structure's;
+ *  FRICREG_ENONFINITE; FRICREG_EINVAL if a row is zero. */
+FRICREG_API int fricreg_structure_set_contacts(fricreg_structure *s, size_t m, size_t ndof,
+                                               const double J[]);
+
+/** Set the friction bounds mun[m] = mu_i N_i >= 0 (force units). May be called between any
+ *  two steps (normal forces vary); the next step starts from the equilibrium acceleration
+ *  with the new bounds. Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_EINVAL if
+ *  some mun[i] < 0; FRICREG_ENONFINITE. */
+FRICREG_API int fricreg_structure_set_bounds(fricreg_structure *s, size_t m,
+                                             const double mun[]);
+
+/** Select the friction law (enum fricreg_law) and eps > 0 (velocity units, e.g. m/s), as
+ *  fricreg_ctx_set_law. The continuous laws (3), (4) and tanh give an implicit step with a
+ *  solution that Newton finds; (1) and (2) jump at v = 0 and Karnopp at |v| = eps, where a
+ *  step may have no root: such steps end on Newton's last iterate and count as failures.
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown law or eps <= 0;
+ *  FRICREG_ENONFINITE. */
+FRICREG_API int fricreg_structure_set_law(fricreg_structure *s, int law, double eps);
+
+/** Set the influence vector r[ndof] (dimensionless): the ground acceleration a_g loads the
+ *  structure with -M r a_g (r_k = 1 for every DOF that translates with the ground).
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE. */
+FRICREG_API int fricreg_structure_set_influence(fricreg_structure *s, size_t ndof,
+                                                const double r[]);
+
+/** Set the ground acceleration a_g(t) (acceleration units, e.g. m/s^2) as a record of n >= 2
+ *  samples ag[n] at times t0 + k dt_rec, dt_rec > 0, interpolated linearly and zero outside
+ *  [t0, t0 + (n-1) dt_rec] (a time within 1e-9 dt_rec of an end is on it: step times are
+ *  rounded). n = 0 (ag may be NULL) removes the ground motion. Copied.
+ *  A step (Newmark, HHT, central difference) reads the record at its end only (run_ode
+ *  reads it at every stage time): its start keeps the load the previous step
+ *  ended with (or, after set_initial or a model setter, the record's value there). So a
+ *  caller who computes a_g step by step passes the two samples {a_g(t), a_g(t + dt)} with
+ *  t0 = t, dt_rec = dt before each step, and gets the run of the whole record.
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if n is 1 or dt_rec <= 0;
+ *  FRICREG_ENONFINITE; FRICREG_ENOMEM. */
+FRICREG_API int fricreg_structure_set_ground_accel(fricreg_structure *s, double t0,
+                                                   double dt_rec, size_t n, const double ag[]);
+
+/** Set the external load p(t) = p[ndof] g(t) (force units): a load pattern p times a time
+ *  function g given as a record like fricreg_structure_set_ground_accel's (n >= 2 samples
+ *  g[n] at t0 + k dt_rec, linear, zero outside), or g = 1 at all times when n = 0 (g may be
+ *  NULL: a constant load; t0 and dt_rec are then ignored). Copied. Read at step ends only,
+ *  like the ground motion.
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_EINVAL if n is 1 or dt_rec <= 0
+ *  with n >= 2; FRICREG_ENONFINITE; FRICREG_ENOMEM. */
+FRICREG_API int fricreg_structure_set_load(fricreg_structure *s, size_t ndof, const double p[],
+                                           double t0, double dt_rec, size_t n,
+                                           const double g[]);
+
+/** Restart at t = 0 from displacements u0[ndof] and velocities v0[ndof]: clears the energy
+ *  balance, the dissipation and the counters. The initial acceleration follows from the
+ *  equation of motion at the first step (friction from the law at zdot = J v0).
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE. */
+FRICREG_API int fricreg_structure_set_initial(fricreg_structure *s, size_t ndof,
+                                              const double u0[], const double v0[]);
+
+/** Select Newmark's method with parameters 0 < beta <= 1/2 and 1/2 <= gamma <= 1
+ *  (unconditionally stable for 2 beta >= gamma; average acceleration beta = 1/4, gamma = 1/2,
+ *  the default, conserves energy and is second order; gamma > 1/2 damps, first order).
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ENONFINITE; FRICREG_EINVAL. */
+FRICREG_API int fricreg_structure_set_newmark(fricreg_structure *s, double beta, double gamma);
+
+/** Select HHT-alpha (Hilber, Hughes and Taylor 1977) with -1/3 <= alpha <= 0: the equation
+ *  of motion is weighted (1 + alpha) at the step's end and -alpha at its start, with
+ *  beta = (1 - alpha)^2/4, gamma = 1/2 - alpha; second order, unconditionally stable, with
+ *  numerical damping of high frequencies growing with -alpha (alpha = 0: average acceleration).
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ENONFINITE; FRICREG_EINVAL. */
+FRICREG_API int fricreg_structure_set_hht(fricreg_structure *s, double alpha);
+
+/** Select the explicit central-difference method (Newmark beta = 0, gamma = 1/2):
+ *  u1 = u + dt v + dt^2 a/2, then the acceleration a1 from the equation of motion with the
+ *  damping and the friction at the explicit velocity v* = v + dt a (f = f(J v*, a_free)),
+ *  v1 = v + dt (a + a1)/2. No Newton iteration (the counters record 0); second order
+ *  undamped. Each step is refused (FRICREG_ESTEP, the state unchanged) beyond its stability
+ *  bounds: dt omega_max < 2, omega_max^2 the largest eigenvalue of M^-1 K (GSL's symmetric
+ *  eigensolver on L^-1 K L^-T, O(ndof^3) once per model change; the bound ignores C, which
+ *  lowers it to (sqrt(1 + zeta^2) - zeta) 2/omega for a damping ratio zeta), and
+ *  dt lambda < 1, lambda = fricreg_ctx_stick_stiffness (law (4): max_i W_ii 2 mun_i/eps), the
+ *  bound of the stick zone's velocity decay under this step (so the paper's eps = 2 dt with
+ *  W mun = 1 sits on the margin and is refused: take eps > 2 dt W_ii mun_i). set_newmark or
+ *  set_hht select an implicit scheme again.
+ *  Returns FRICREG_OK or FRICREG_ENULL. */
+FRICREG_API int fricreg_structure_set_central_difference(fricreg_structure *s);
+
+/** Newton's stopping rule: a step converges after at least one iteration (none if the
+ *  first guess's residual is exactly zero) when the residual's largest entry is at most
+ *  tol times the step's force scale: the largest entry of |M a| and |C v + K u - p~ - J^T f|
+ *  at the step's start, |p~| at its end, and |J|^T mun. 0 < tol < 1; 1 <= max_iter <= 1000.
+ *  Iterations grow as eps shrinks against dt times the contacts' accelerations (law (4) then
+ *  approaches a jump): on the ten-storey building of issue 10 at dt = 0.01 s, mean (max)
+ *  iterations per step were 1.15 (8) at eps = 0.01 m/s, 2.2 (19) at 1e-3 and 9.95 (42) at
+ *  1e-4; hence the default max_iter = 50.
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ENONFINITE; FRICREG_EINVAL. */
+FRICREG_API int fricreg_structure_set_newton(fricreg_structure *s, double tol, int max_iter);
+
+/** Advance one step of dt > 0 (time units) with the selected scheme (Newmark and HHT-alpha
+ *  below; central difference at fricreg_structure_set_central_difference).
+ *
+ *  Unknown: the acceleration a at t + dt, with u = u_pred + beta dt^2 a and
+ *  v = v_pred + gamma dt a. Residual (HHT-alpha; Newmark: alpha = 0):
+ *  R(a) = M a + (1 + alpha) (C v + K u - p~ - J^T f) - alpha (the same at t),
+ *  p~ = p - M r a_g, f = f(J v, a_free(u, v)) from the friction law. Newton on the exact
+ *  tangent dR/da = M + (1 + alpha) (S - J^T (gamma dt F_z J - F_a J M^-1 S)),
+ *  S = gamma dt C + beta dt^2 K, with F_z = df/dzdot and F_a = df/da_free from
+ *  fricreg_ctx_tangent, solved by GSL's LU; from the previous acceleration as the first
+ *  guess; each Newton direction is cut by halving until the residual's 2-norm decreases
+ *  (Armijo, 1e-4), at most 30 halvings. A step whose Newton does not converge within
+ *  max_iter iterations (or whose line search or LU fails) is still taken, from its last
+ *  iterate (the smallest residual), and counted in FRICREG_SSTAT_NEWTON_FAILURES.
+ *  The energy balance is updated (fricreg_structure_get_value). The first step after a model
+ *  setter forms G = J M^-1 and W (O(m ndof^2 + m^2 ndof)) and the equilibrium acceleration
+ *  at t; each Newton iteration costs one tangent, O(m^2 ndof + m ndof^2) to form the matrix
+ *  and an O(ndof^3) LU. No heap allocation.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if dt <= 0, t + dt rounds to t, or J
+ *  was never set; FRICREG_ENONFINITE if dt is not finite; FRICREG_ENOTSYM or
+ *  FRICREG_ENOTPSD if the context refuses W (not expected: W is formed symmetric from a
+ *  positive definite M and non-zero rows of J); FRICREG_ESINGULAR (redundant contacts
+ *  sticking together: their forces are not unique); FRICREG_ESTEP (central
+ *  difference beyond its stability bounds); FRICREG_EDIVERGED if the residual or the state
+ *  becomes non-finite or beyond 1e100. On failure the state is unchanged. */
+FRICREG_API int fricreg_structure_step(fricreg_structure *s, double dt);
+
+/** Step from the current time to t_end with steps of dt, the last one shortened to land on
+ *  t_end (step k ends at t_start + k dt exactly, no accumulated rounding).
+ *  Returns FRICREG_OK or the codes of fricreg_structure_step, and FRICREG_EINVAL if t_end is
+ *  not after the current time or needs more than 2^31 steps. On failure the state is that of
+ *  the last successful step. */
+FRICREG_API int fricreg_structure_run(fricreg_structure *s, double dt, double t_end);
+
+/** Integrate from the current time to t_end with one of GSL's steppers (enum
+ *  fricreg_integrator of fricreg_sim.h), as the reference systems' drivers do: the
+ *  first-order system u' = v, M v' = p~ - C v - K u + J^T f, with the input work, the viscous
+ *  and each contact's friction dissipation integrated by the same scheme as extra states
+ *  (so the balance's residual measures the scheme's energy error).
+ *
+ *  rtol = atol = 0: fixed steps dt > 0 (the last one shortened to end on t_end; RK4 is the
+ *  classical one, the paper's method). A fixed explicit step is refused (FRICREG_ESTEP) when
+ *  dt times the stick-zone stiffness (fricreg_ctx_stick_stiffness) exceeds the stepper's
+ *  stability bound on the negative real axis, or dt omega_max its bound on the imaginary
+ *  axis (omega_max^2 the largest eigenvalue of M^-1 K), as fricreg_sim_run refuses it.
+ *  Otherwise adaptive, GSL's standard control (|error| <= atol + rtol |y|), dt the first step.
+ *  Implicit steppers use a forward-difference Jacobian (2 ndof + 3 + m right-hand sides).
+ *  The load and ground records are read at every stage time (interpolated). Allocates the
+ *  GSL driver and O((2 ndof + m)^2) doubles for the run. Counts GSL steps in
+ *  FRICREG_SSTAT_STEPS (no Newton iterations). Afterwards fricreg_structure_step continues
+ *  from the state reached, its acceleration from the equation of motion.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown integrator, dt <= 0,
+ *  rtol < 0, atol < 0, t_end not after the current time, more than 2^31 fixed steps, or J
+ *  never set; FRICREG_ENONFINITE; FRICREG_ESTEP; FRICREG_ESINGULAR; FRICREG_EDIVERGED (the
+ *  state non-finite or beyond 1e100); FRICREG_EINTEGRATOR (GSL failed, e.g. the adaptive step
+ *  underflowed); FRICREG_ENOMEM. On failure the state is that of the last accepted step. */
+FRICREG_API int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt,
+                                          double rtol, double atol, double t_end);
+
+/** Copy the state at the current time: displacements u[ndof], velocities v[ndof],
+ *  accelerations a[ndof]; any of them may be NULL (not all three).
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if ndof is not the structure's. */
+FRICREG_API int fricreg_structure_get_state(const fricreg_structure *s, size_t ndof, double u[],
+                                            double v[], double a[]);
+
+/** Copy the friction forces f[m] (force units) of the current state (after the last step;
+ *  zero before the first). Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE. */
+FRICREG_API int fricreg_structure_get_forces(const fricreg_structure *s, size_t m, double f[]);
+
+/** Copy the energy dissipated by each contact since set_initial,
+ *  D_i = -sum over steps of (z_i(t+dt) - z_i(t)) (f_i(t) + f_i(t+dt))/2 (trapezoidal; energy
+ *  units), into D[m]. Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE. */
+FRICREG_API int fricreg_structure_get_dissipation(const fricreg_structure *s, size_t m,
+                                                  double D[]);
+
+/** Quantities of fricreg_structure_get_value. Values are fixed forever. The energies are
+ *  summed over steps with the trapezoidal rule on the displacement increments du:
+ *  input += du.(p~(t) + p~(t+dt))/2, viscous += du.C(v(t) + v(t+dt))/2, friction as in
+ *  get_dissipation; kinetic = v.M v/2 and strain = u.K u/2 now, initial = both at t = 0;
+ *  residual = initial + input - kinetic - strain - viscous - friction. Average-acceleration
+ *  Newmark makes the residual vanish to Newton's tolerance (its discrete balance is exact);
+ *  HHT-alpha's numerical damping shows in it. */
+enum fricreg_structure_value {
+    FRICREG_SVALUE_TIME = 0,     /**< time reached */
+    FRICREG_SVALUE_INPUT = 1,    /**< work of p - M r a_g since t = 0 */
+    FRICREG_SVALUE_KINETIC = 2,  /**< kinetic energy now */
+    FRICREG_SVALUE_STRAIN = 3,   /**< strain energy now */
+    FRICREG_SVALUE_VISCOUS = 4,  /**< energy dissipated by C since t = 0 */
+    FRICREG_SVALUE_FRICTION = 5, /**< energy dissipated by all contacts since t = 0 */
+    FRICREG_SVALUE_RESIDUAL = 6, /**< the balance's residual */
+    FRICREG_SVALUE_INITIAL = 7   /**< kinetic + strain energy at t = 0 */
+};
+
+/** Read one quantity (enum fricreg_structure_value) into *value.
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown quantity. */
+FRICREG_API int fricreg_structure_get_value(const fricreg_structure *s, int which,
+                                            double *value);
+
+/** Counters since creation or set_initial, for fricreg_structure_get_stat. Fixed forever. */
+enum fricreg_structure_stat {
+    FRICREG_SSTAT_STEPS = 0,             /**< steps taken */
+    FRICREG_SSTAT_NEWTON_ITERATIONS = 1, /**< Newton iterations (LU solves), all steps */
+    FRICREG_SSTAT_NEWTON_MAX = 2,        /**< most Newton iterations in one step */
+    FRICREG_SSTAT_NEWTON_FAILURES = 3,   /**< steps whose Newton did not converge */
+    FRICREG_SSTAT_LINE_SEARCH_CUTS = 4   /**< halvings of Newton directions, all steps */
+};
+
+/** Read one counter (enum fricreg_structure_stat) into *value.
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown counter. */
+FRICREG_API int fricreg_structure_get_stat(const fricreg_structure *s, int which,
+                                           int64_t *value);
+
+/** Status of the last failed call. Returns that code, or FRICREG_OK if none (or s NULL). The
+ *  getters, which take a const structure, return their status without recording it. */
+FRICREG_API int fricreg_structure_errcode(const fricreg_structure *s);
+
+/** Message of the last failed call: names the argument, entry, time or contact. "" if none;
+ *  "NULL structure" if s is NULL. Owned by s, valid until its next call. */
+FRICREG_API const char *fricreg_structure_errmsg(const fricreg_structure *s);
+
+/** Copy the last error message into buf[len], NUL-terminated and truncated to fit (for
+ *  Fortran). Returns the full message length, as snprintf does; 0 and nothing written if buf
+ *  is NULL or len is 0. */
+FRICREG_API size_t fricreg_structure_errmsg_copy(const fricreg_structure *s, char *buf,
+                                                 size_t len);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FRICREG_STRUCTURE_H */
