@@ -175,7 +175,9 @@ subroutine frerrm(h, code, msg, stat)
   integer, intent(out) :: code
   character(len=*), intent(out) :: msg
   integer, intent(out) :: stat
-  stat = fricreg_f77_last_error(h, fricreg_ctx_errcode, fricreg_ctx_errmsg, code, msg)
+  integer(c_int) :: last
+  stat = fricreg_f77_last_error(h, fricreg_ctx_errcode, fricreg_ctx_errmsg, last, msg)
+  code = last
 end subroutine frerrm
 
 !> FRPART(H, PART, STAT): the partition of coupled contacts, FRICREG_PARTITION_CONSISTENT or
