@@ -112,7 +112,7 @@ contains
     if (what == '') then
       what = part
     else
-      what = what // '; ' // part
+      what = what // '. ' // part
     end if
   end subroutine add
 
