@@ -20,7 +20,7 @@
 !> (link libfricreg_fortran_ilp64, or libfricreg_fortran), a DOUBLE PRECISION that is not the C
 !> double (KIND 16 from -fdefault-real-8 without -fdefault-double-8), or an IKIND that is
 !> neither 4 nor 8. RKIND is read only to name the flag in MSG: no entry point takes a REAL.
-!> MSG is blank-padded or truncated to its length (80 characters hold every message).
+!> MSG is blank-padded or truncated to its length (256 characters hold every message).
 subroutine frchk(ikind, rkind, dkind, msg, stat)
   use fricreg_c, only: c_int, c_double, FRICREG_OK, FRICREG_EINVAL
   use, intrinsic :: iso_fortran_env, only: int32, int64
@@ -87,13 +87,14 @@ contains
     integer(int64), intent(in) :: k
     character(len=:), allocatable :: s
     if (k == 8) then
-      s = 'INTEGER is KIND 8 (-fdefault-integer-8): link libfricreg_fortran_ilp64'
+      s = 'INTEGER is KIND 8 (-fdefault-integer-8): link libfricreg_fortran_ilp64, not ' // &
+          library_name()
     else if (k == 4) then
-      s = 'INTEGER is KIND 4, not -fdefault-integer-8: link libfricreg_fortran'
+      s = 'INTEGER is KIND 4, not -fdefault-integer-8: link libfricreg_fortran, not ' // &
+          library_name()
     else
       s = 'IKIND = ' // str(k) // ' is not KIND(0) of a supported build (4 or 8)'
     end if
-    s = s // ', not ' // library_name()
   end function integer_mismatch
 
   function double_mismatch(k, real_kind) result(s)

@@ -62,18 +62,18 @@ if [ "$fc" != "-" ]; then
         \$(pkg-config --cflags --libs fricreg-fortran) -o '$work/pc_f_consumer'"
     check "pkg-config Fortran consumer" "$work/pc_f_consumer"
     # 3c. Fixed-form F77 with an 8-byte INTEGER: fricreg-fortran-ilp64 gives the flag and the
-    #     ILP64 library; the example's FRCHK and its numbers pass.
+    #     ILP64 library; the consumer's FRCHK, statuses and numbers pass.
+    f77=$src/tests/consumer/fortran_ilp64
     if pkg-config --exists fricreg-fortran-ilp64; then
         check "pkg-config ILP64 F77 consumer build" sh -c "'$fc' -std=legacy \
-            '$src/examples/fortran/oscillator_f77.f' \$(pkg-config --cflags --libs \
-            fricreg-fortran-ilp64) -o '$work/pc_f77_ilp64'"
+            '$f77/consumer_f77.f' \$(pkg-config --cflags --libs fricreg-fortran-ilp64) \
+            -o '$work/pc_f77_ilp64'"
         check "pkg-config ILP64 F77 consumer" "$work/pc_f77_ilp64"
         # The same with find_package(fricreg COMPONENTS fortran_ilp64).
-        check "cmake ILP64 F77 configure" cmake -S "$src/tests/consumer/fortran_ilp64" \
-            -B "$work/cmake_f77" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_C_COMPILER="$cc" \
-            -DCMAKE_Fortran_COMPILER="$fc" -DEXAMPLE="$src/examples/fortran/oscillator_f77.f"
+        check "cmake ILP64 F77 configure" cmake -S "$f77" -B "$work/cmake_f77" \
+            -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_C_COMPILER="$cc" -DCMAKE_Fortran_COMPILER="$fc"
         check "cmake ILP64 F77 build" cmake --build "$work/cmake_f77"
-        check "cmake ILP64 F77 consumer" "$work/cmake_f77/oscillator_f77_ilp64"
+        check "cmake ILP64 F77 consumer" "$work/cmake_f77/consumer_f77"
     fi
 
     # 4. Fortran from the installed module sources, compiled in the order fortran/README.md

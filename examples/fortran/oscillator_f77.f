@@ -25,7 +25,7 @@ C                 build/fortran/libfricreg_fortran_ilp64.a -Lbuild -lfricreg
       INTEGER*8 IH, IS
       INTEGER IST, K, NSTEP, NDOF, M, ICODE
       DOUBLE PRECISION Y(2), DT, EPS, XC(1), VC(1), DIFF
-      CHARACTER*120 MSG
+      CHARACTER*256 MSG
       DT = 0.01D0
       EPS = 2.0D0 * DT
       NSTEP = 2000
