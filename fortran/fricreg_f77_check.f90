@@ -23,16 +23,17 @@
 !> MSG is blank-padded or truncated to its length (256 characters hold every message).
 subroutine frchk(ikind, rkind, dkind, msg, stat)
   use fricreg_c, only: c_int, c_double, FRICREG_OK, FRICREG_EINVAL
+  use, intrinsic :: iso_c_binding, only: c_loc, c_f_pointer
   use, intrinsic :: iso_fortran_env, only: int32, int64
   implicit none
   integer(int32), intent(in) :: ikind(*), rkind(*), dkind(*) ! the caller's INTEGERs, as words
   character(len=*), intent(out) :: msg
-  integer(int32), intent(inout) :: stat(*)                   ! the caller's INTEGER, as words
+  integer(int32), intent(inout), target :: stat(*)           ! the caller's INTEGER, as words
   integer, parameter :: lib_ikind = kind(0), lib_dkind = c_double
   integer :: width
   integer(int64) :: ik, rk, dk
   integer(c_int) :: status
-  integer(int32) :: words(2)
+  integer(int64), pointer :: stat8
   character(len=:), allocatable :: what
 
   width = caller_width(ikind)
@@ -51,9 +52,8 @@ subroutine frchk(ikind, rkind, dkind, msg, stat)
     msg = 'FRCHK: ' // what
   end if
   if (width == 8) then
-    words = transfer(int(status, int64), words)
-    stat(1) = words(1)
-    stat(2) = words(2)
+    call c_f_pointer(c_loc(stat(1)), stat8)
+    stat8 = status
   else
     stat(1) = status
   end if
