@@ -5,7 +5,9 @@
 ! FRICREG_E* code; INCLUDE 'fricreg.fi' for the names). Written in free form here but callable
 ! from fixed-form code compiled with -std=legacy: the compiler mangles these names as it does
 ! its own (frctxc_ for gfortran). Argument types:
-!   INTEGER            M, LAW, WHICH, CODE, STAT (default integer kind)
+!   INTEGER            M, LAW, WHICH, CODE, STAT (default integer kind: 4 bytes, or 8 in
+!                      libfricreg_fortran_ilp64, which compiles this file with
+!                      -fdefault-integer-8; FRCHK tells a caller which it needs)
 !   INTEGER*8          H, a handle holding the C pointer (0: none)
 !   DOUBLE PRECISION   every real scalar and array
 !   CHARACTER*(*)      MSG, TEXT: blank-padded, truncated to the caller's length
