@@ -109,39 +109,42 @@ contains
     end do
   end subroutine fricreg_transpose
 
-  ! ---- For the F77 entry points: handles as INTEGER*8, statuses as default INTEGER ----------
+  ! ---- For the F77 entry points: handles as INTEGER*8 -----------------------------------------
+  ! Statuses and codes are integer(c_int) here, never default INTEGER: the entry points are also
+  ! compiled with -fdefault-integer-8 (libfricreg_fortran_ilp64) against this one module, and
+  ! convert on assignment to their own STAT and CODE.
 
   !> After a create that returned status with the new object p: h takes p only on success.
-  !> Returns the status as a default integer, for STAT.
-  integer function fricreg_f77_created(status, p, h) result(stat)
+  !> Returns the status, for STAT.
+  integer(c_int) function fricreg_f77_created(status, p, h) result(stat)
     integer(c_int), intent(in) :: status
     type(c_ptr), intent(in) :: p
     integer(c_int64_t), intent(inout) :: h
-    stat = int(status)
+    stat = status
     if (status == FRICREG_OK) h = fricreg_ptr_to_handle(p)
   end function fricreg_f77_created
 
   !> Release the object of handle h with free (its C release; h = 0 does nothing) and set
   !> h = 0. Returns FRICREG_OK, for STAT.
-  integer function fricreg_f77_release(h, free) result(stat)
+  integer(c_int) function fricreg_f77_release(h, free) result(stat)
     integer(c_int64_t), intent(inout) :: h
     procedure(fricreg_free_fn) :: free
     call free(fricreg_handle_to_ptr(h))
     h = 0
-    stat = int(FRICREG_OK)
+    stat = FRICREG_OK
   end function fricreg_f77_release
 
   !> Code and message of the last failure of the object of handle h, read with its C errcode
   !> and errmsg; msg is blank-padded or truncated to its length. Returns FRICREG_OK, for STAT.
-  integer function fricreg_f77_last_error(h, errcode, errmsg, code, msg) result(stat)
+  integer(c_int) function fricreg_f77_last_error(h, errcode, errmsg, code, msg) result(stat)
     integer(c_int64_t), intent(in) :: h
     procedure(fricreg_errcode_fn) :: errcode
     procedure(fricreg_errmsg_fn) :: errmsg
-    integer, intent(out) :: code
+    integer(c_int), intent(out) :: code
     character(len=*), intent(out) :: msg
-    code = int(errcode(fricreg_handle_to_ptr(h)))
+    code = errcode(fricreg_handle_to_ptr(h))
     msg = fricreg_c_string(errmsg(fricreg_handle_to_ptr(h)))
-    stat = int(FRICREG_OK)
+    stat = FRICREG_OK
   end function fricreg_f77_last_error
 
 end module fricreg_c

@@ -5,7 +5,9 @@
 ! FRICREG_E* code; INCLUDE 'fricreg.fi' for the names). Written in free form here but callable
 ! from fixed-form code compiled with -std=legacy: the compiler mangles these names as it does
 ! its own (frctxc_ for gfortran). Argument types:
-!   INTEGER            M, LAW, WHICH, CODE, STAT (default integer kind)
+!   INTEGER            M, LAW, WHICH, CODE, STAT (default integer kind: 4 bytes, or 8 in
+!                      libfricreg_fortran_ilp64, which compiles this file with
+!                      -fdefault-integer-8; FRCHK tells a caller which it needs)
 !   INTEGER*8          H, a handle holding the C pointer (0: none)
 !   DOUBLE PRECISION   every real scalar and array
 !   CHARACTER*(*)      MSG, TEXT: blank-padded, truncated to the caller's length
@@ -175,7 +177,9 @@ subroutine frerrm(h, code, msg, stat)
   integer, intent(out) :: code
   character(len=*), intent(out) :: msg
   integer, intent(out) :: stat
-  stat = fricreg_f77_last_error(h, fricreg_ctx_errcode, fricreg_ctx_errmsg, code, msg)
+  integer(c_int) :: last
+  stat = fricreg_f77_last_error(h, fricreg_ctx_errcode, fricreg_ctx_errmsg, last, msg)
+  code = last
 end subroutine frerrm
 
 !> FRPART(H, PART, STAT): the partition of coupled contacts, FRICREG_PARTITION_CONSISTENT or

@@ -163,5 +163,7 @@ subroutine frsime(h, code, msg, stat)
   integer, intent(out) :: code
   character(len=*), intent(out) :: msg
   integer, intent(out) :: stat
-  stat = fricreg_f77_last_error(h, fricreg_sim_errcode, fricreg_sim_errmsg, code, msg)
+  integer(c_int) :: last
+  stat = fricreg_f77_last_error(h, fricreg_sim_errcode, fricreg_sim_errmsg, last, msg)
+  code = last
 end subroutine frsime

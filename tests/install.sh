@@ -1,8 +1,10 @@
 #!/bin/sh
-# Installs the build into a temporary prefix, then builds and runs four consumers against
-# the installed copy only: C with find_package(fricreg CONFIG), C with pkg-config, and
-# Fortran with the installed module and with the installed module sources (when the Fortran
-# interface was built).
+# Installs the build into a temporary prefix, then builds and runs consumers against the
+# installed copy only: C with find_package(fricreg CONFIG), C with pkg-config, and (when the
+# Fortran interface was built) Fortran with the installed module, with pkg-config
+# fricreg-fortran, fixed-form F77 with -fdefault-integer-8 through fricreg-fortran-ilp64, and
+# with the installed module sources. Runs the installed fricreg-sim (when the drivers were
+# built) from its prefix, and from the prefix moved elsewhere, with no LD_LIBRARY_PATH.
 # Usage: install.sh BUILD_DIR SOURCE_DIR C_COMPILER FORTRAN_COMPILER|-
 build=$1 src=$2 cc=$3 fc=$4
 work=$(mktemp -d "${TMPDIR:-/tmp}/fricreg-install.XXXXXX")
@@ -17,6 +19,18 @@ check() { # NAME COMMAND...: runs a step, counts it
 
 check "install" cmake --install "$build" --prefix "$prefix"
 libdir=$(dirname "$(find "$prefix" -name 'libfricreg.so.*' | head -n 1)")
+
+# 0. The installed fricreg-sim finds libfricreg by its RPATH ($ORIGIN/../lib), no
+#    LD_LIBRARY_PATH: the paper's oscillator rests at x(20) = -0.750090 (Sec. 3.1.1).
+sim_runs() { # PREFIX: runs its fricreg-sim, and checks it loaded that prefix's library
+    env -u LD_LIBRARY_PATH "$1/bin/fricreg-sim" --version | grep -q '^fricreg-sim ' &&
+    env -u LD_LIBRARY_PATH "$1/bin/fricreg-sim" oscillator --t-end 20 |
+        grep -q '"x": \[-0\.7500899' &&
+    env -u LD_LIBRARY_PATH ldd "$1/bin/fricreg-sim" | grep -q "=> $1/.*libfricreg\.so"
+}
+if [ -x "$prefix/bin/fricreg-sim" ]; then
+    check "installed fricreg-sim runs from its prefix" sim_runs "$prefix"
+fi
 export LD_LIBRARY_PATH="$libdir${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 
 # 1. CMake: find_package(fricreg CONFIG), shared and static.
@@ -44,13 +58,35 @@ if [ "$fc" != "-" ]; then
         -L"$libdir" -lfricreg_fortran -lfricreg -o "$work/f_consumer"
     check "Fortran consumer" "$work/f_consumer"
 
+    # 3b. pkg-config fricreg-fortran: the module folder and the libraries, none typed by hand.
+    check "pkg-config knows fricreg-fortran" pkg-config --exists fricreg-fortran
+    check "pkg-config Fortran consumer build" sh -c "'$fc' '$src/tests/consumer/consumer.f90' \
+        \$(pkg-config --cflags --libs fricreg-fortran) -o '$work/pc_f_consumer'"
+    check "pkg-config Fortran consumer" "$work/pc_f_consumer"
+    # 3c. Fixed-form F77 with an 8-byte INTEGER: fricreg-fortran-ilp64 gives the flag and the
+    #     ILP64 library; the consumer's FRCHK, statuses and numbers pass.
+    f77=$src/tests/consumer/fortran_ilp64
+    if pkg-config --exists fricreg-fortran-ilp64; then
+        check "pkg-config ILP64 F77 consumer build" sh -c "'$fc' -std=legacy \
+            '$f77/consumer_f77.f' \$(pkg-config --cflags --libs fricreg-fortran-ilp64) \
+            -o '$work/pc_f77_ilp64'"
+        check "pkg-config ILP64 F77 consumer" "$work/pc_f77_ilp64"
+        # The same with find_package(fricreg COMPONENTS fortran_ilp64).
+        check "cmake ILP64 F77 configure" cmake -S "$f77" -B "$work/cmake_f77" \
+            -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_C_COMPILER="$cc" -DCMAKE_Fortran_COMPILER="$fc"
+        check "cmake ILP64 F77 build" cmake --build "$work/cmake_f77"
+        check "cmake ILP64 F77 consumer" "$work/cmake_f77/consumer_f77"
+    fi
+
     # 4. Fortran from the installed module sources, compiled in the order fortran/README.md
     #    gives, as a compiler that cannot read the installed .mod files would.
     fsrc=$prefix/include/fricreg/src
-    order="fricreg_constants.f90 fricreg_c.f90 fricreg.F90 fricreg_f77.f90" sim=""
+    order="fricreg_constants.f90 fricreg_c.f90 fricreg.F90 fricreg_f77.f90"
+    order="$order fricreg_f77_check.f90" sim=""
     if [ -f "$fsrc/fricreg_sim_c.f90" ]; then
         order="fricreg_constants.f90 fricreg_c.f90 fricreg_sim_c.f90 fricreg.F90"
-        order="$order fricreg_f77.f90 fricreg_sim_f77.f90" sim=-DFRICREG_HAVE_SIM
+        order="$order fricreg_f77.f90 fricreg_f77_check.f90 fricreg_sim_f77.f90"
+        sim=-DFRICREG_HAVE_SIM
     fi
     mkdir -p "$work/fsrc"
     check "Fortran module sources compile" sh -c "cd '$work/fsrc' && for f in $order; do
@@ -58,6 +94,12 @@ if [ "$fc" != "-" ]; then
     check "Fortran consumer build from the sources" sh -c "cd '$work/fsrc' && '$fc' -I. \
         '$src/tests/consumer/consumer.f90' *.o -L'$libdir' -lfricreg -o '$work/f_src_consumer'"
     check "Fortran consumer from the sources" "$work/f_src_consumer"
+fi
+
+# 5. The prefix moved elsewhere: fricreg-sim still runs, on the moved library (relative RPATH).
+if [ -x "$prefix/bin/fricreg-sim" ]; then
+    check "move the prefix" mv "$prefix" "$work/moved"
+    check "installed fricreg-sim runs from a moved prefix" sim_runs "$work/moved"
 fi
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]

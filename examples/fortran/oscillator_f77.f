@@ -9,22 +9,35 @@ C     X = -0.75 FROM T = PI; THE PAPER REPORTS -0.750090 FOR LAW (4).
 C     THEN THE LIBRARY'S OWN DRIVER (FRICREG_SIM, RK4) AT THE SAME
 C     SETTINGS, AS ./BUILD/FRICREG-SIM OSCILLATOR --T-END 20 PRINTS IT.
 C     EXITS WITH STATUS 1 IF THE TWO REST POSITIONS DIFFER BY > 1E-6.
+C     IT FIRST ASKS FRCHK WHETHER IT WAS COMPILED FOR THE LIBRARY IT
+C     LINKS: WITH -FDEFAULT-INTEGER-8 IT MUST LINK FRICREG_FORTRAN_ILP64.
 C
 C     BUILD (SEE FORTRAN/README.MD):
 C        gfortran -std=legacy oscillator_f77.f -Ibuild/fortran/generated
 C                 build/fortran/libfricreg_fortran.a -Lbuild -lfricreg
+C     OR, FOR AN 8-BYTE DEFAULT INTEGER:
+C        gfortran -std=legacy -fdefault-integer-8 oscillator_f77.f
+C                 -Ibuild/fortran/generated
+C                 build/fortran/libfricreg_fortran_ilp64.a -Lbuild -lfricreg
       PROGRAM OSCF77
       IMPLICIT NONE
       INCLUDE 'fricreg.fi'
       INTEGER*8 IH, IS
       INTEGER IST, K, NSTEP, NDOF, M, ICODE
       DOUBLE PRECISION Y(2), DT, EPS, XC(1), VC(1), DIFF
-      CHARACTER*120 MSG
+      CHARACTER*256 MSG
       DT = 0.01D0
       EPS = 2.0D0 * DT
       NSTEP = 2000
       IH = 0
       IS = 0
+C
+C     THE KINDS THIS PROGRAM WAS COMPILED WITH, AGAINST THE LIBRARY'S.
+      CALL FRCHK(KIND(0), KIND(0.0), KIND(0.0D0), MSG, IST)
+      IF (IST .NE. FRICREG_OK) THEN
+         WRITE (*, '(A)') MSG
+         STOP 1
+      END IF
 C
 C     A CONTEXT OF ONE CONTACT: LAW (4), MU*N = 1 AND W = 1 (DEFAULTS).
       CALL FRCTXC(1, IH, IST)
@@ -37,7 +50,7 @@ C     A CONTEXT OF ONE CONTACT: LAW (4), MU*N = 1 AND W = 1 (DEFAULTS).
          CALL RK4STP(IH, Y, DT, IST)
          IF (IST .NE. FRICREG_OK) GO TO 900
    10 CONTINUE
-      WRITE (*, '(A, F10.6, A)')
+      WRITE (*, '(A, 1PE24.16, A)')
      &   'own RK4 loop:   rest position x(20) =', Y(1),
      &   '  (paper: -0.750090)'
       CALL FRCTXF(IH, IST)
@@ -54,12 +67,12 @@ C     THE LIBRARY'S DRIVER: OSCILLATOR, LAW (4), EPS = 2 DT, RK4.
       CALL FRSIMN(IS, NDOF, M, IST)
       CALL FRSIMX(IS, NDOF, XC, VC, IST)
       IF (IST .NE. FRICREG_OK) GO TO 910
-      WRITE (*, '(A, F10.6)') 'C driver (RK4): rest position x(20) =',
-     &   XC(1)
+      WRITE (*, '(A, 1PE24.16)')
+     &   'C driver (RK4): rest position x(20) =', XC(1)
       CALL FRSIMF(IS, IST)
       DIFF = Y(1) - XC(1)
-      WRITE (*, '(A, 1PE10.2)') 'difference:                         ',
-     &   DIFF
+      WRITE (*, '(A, 1PE24.16)')
+     &   'difference:                          ', DIFF
       IF (ABS(DIFF) .GT. 1.0D-6) THEN
          WRITE (*, '(A)') 'FAIL: the rest positions differ by > 1e-6'
          STOP 1
