@@ -69,6 +69,7 @@ struct bench_sim_point {
     const struct bench_problem *problem;
     int law, integrator;
     double dt, rtol, eps;
+    int partition; /* enum fricreg_partition; 0: the library's default (consistent) */
 };
 
 /** bench_fn for a struct bench_sim_point: runs problem->cycle cycles and reads D. */

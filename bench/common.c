@@ -63,6 +63,7 @@ static int sim_setup(fricreg_sim *sim, const struct bench_sim_point *pt)
         if (s == FRICREG_OK) s = fricreg_sim_set_param(sim, FRICREG_PARAM_OMEGA, p->omega);
     }
     if (s == FRICREG_OK) s = fricreg_sim_set_law(sim, pt->law, pt->eps);
+    if (s == FRICREG_OK && pt->partition) s = fricreg_sim_set_partition(sim, pt->partition);
     if (s == FRICREG_OK)
         s = fricreg_sim_set_integrator(sim, pt->integrator, pt->dt, pt->rtol, pt->rtol);
     return s;

@@ -31,21 +31,29 @@ struct method {
     const char *name; /* CSV and plot name */
     enum kind kind;
     int law, integrator, ed_method;
+    int partition; /* FRICREG_PARTITION_PAPER: coupled problems only; 0: the default */
 };
 
 static const struct method methods[] = {
-    {"rk4/quinn(4)", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0},
-    {"rk4/coulomb(1)", FIXED, FRICREG_LAW_COULOMB, FRICREG_INT_RK4, 0},
-    {"rk4/force-balance(2)", FIXED, FRICREG_LAW_FORCE_BALANCE, FRICREG_INT_RK4, 0},
-    {"rk4/karnopp", FIXED, FRICREG_LAW_KARNOPP, FRICREG_INT_RK4, 0},
-    {"rk4/velocity-limited(3)", FIXED, FRICREG_LAW_VELOCITY_LIMITED, FRICREG_INT_RK4, 0},
-    {"rk4/tanh", FIXED, FRICREG_LAW_TANH, FRICREG_INT_RK4, 0},
-    {"rkf45/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RKF45, 0},
-    {"rk8pd/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0},
-    {"msbdf/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_MSBDF, 0},
+    {"rk4/quinn(4)", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0, 0},
+    {"rk4/coulomb(1)", FIXED, FRICREG_LAW_COULOMB, FRICREG_INT_RK4, 0, 0},
+    {"rk4/force-balance(2)", FIXED, FRICREG_LAW_FORCE_BALANCE, FRICREG_INT_RK4, 0, 0},
+    {"rk4/karnopp", FIXED, FRICREG_LAW_KARNOPP, FRICREG_INT_RK4, 0, 0},
+    {"rk4/velocity-limited(3)", FIXED, FRICREG_LAW_VELOCITY_LIMITED, FRICREG_INT_RK4, 0, 0},
+    {"rk4/tanh", FIXED, FRICREG_LAW_TANH, FRICREG_INT_RK4, 0, 0},
+    {"rkf45/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RKF45, 0, 0},
+    {"rk8pd/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0},
+    {"msbdf/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_MSBDF, 0, 0},
+    /* The paper's partition of coupled contacts beside the default consistent law (the rows
+     * above), where they differ: the two blocks. */
+    {"rk4/quinn(4)/paper", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0, FRICREG_PARTITION_PAPER},
+    {"rkf45/quinn(4)/paper", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RKF45, 0,
+     FRICREG_PARTITION_PAPER},
+    {"msbdf/quinn(4)/paper", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_MSBDF, 0,
+     FRICREG_PARTITION_PAPER},
 #ifdef FRICREG_BENCH_CVODE
-    {"cvode-bdf/event-driven", EVENT, 0, 0, ED_BDF},
-    {"cvode-adams/event-driven", EVENT, 0, 0, ED_ADAMS},
+    {"cvode-bdf/event-driven", EVENT, 0, 0, ED_BDF, 0},
+    {"cvode-adams/event-driven", EVENT, 0, 0, ED_ADAMS, 0},
 #endif
 };
 enum { NMETHODS = sizeof methods / sizeof methods[0], NSWEEP = 10 };
@@ -84,6 +92,8 @@ static struct bench_reference refs[BENCH_NPROBLEMS];
 
 static int applies(const struct method *m, const struct bench_problem *p)
 {
+    if (m->partition && p->system != FRICREG_SYSTEM_TWOBLOCK)
+        return 0; /* uncoupled contacts: both partitions are law (4) */
     return m->kind != EVENT || p->event_driven;
 }
 
@@ -104,7 +114,7 @@ static void run_point(const struct bench_problem *p, const struct method *m, int
         struct bench_sim_point sp = {p, m->law, m->integrator,
                                      m->kind == FIXED ? dts[k] : ADAPTIVE_DT0,
                                      m->kind == FIXED ? 0.0 : tols[k],
-                                     m->kind == FIXED ? 0.0 : p->adaptive_eps};
+                                     m->kind == FIXED ? 0.0 : p->adaptive_eps, m->partition};
         t = bench_time_once(bench_sim_run, &sp, &run);
     }
     pt->t[pt->nt++] = t;
@@ -424,7 +434,7 @@ static double eps_order(int ip)
     printf("  law (4) error against eps at fixed dt = %g (RK4):", dt);
     for (int k = 0; k < 4; k++) {
         struct bench_sim_point sp = {&bench_problems[ip], FRICREG_LAW_QUINN, FRICREG_INT_RK4,
-                                     dt, 0.0, eps[k]};
+                                     dt, 0.0, eps[k], 0};
         struct bench_run run;
         if (bench_sim_run(&sp, &run) != FRICREG_OK) {
             printf(" eps %g failed: %s\n", eps[k], run.msg);
