@@ -72,6 +72,10 @@ struct bench_sim_point {
     int partition; /* enum fricreg_partition; 0: the library's default (consistent) */
 };
 
+/** The forcing period of a problem, as the library reports it (FRICREG_VALUE_PERIOD): the one
+ *  home of 2 pi / omega. NaN if the simulation cannot be made. */
+double bench_period(const struct bench_problem *p);
+
 /** bench_fn for a struct bench_sim_point: runs problem->cycle cycles and reads D. */
 int bench_sim_run(const void *point, struct bench_run *out);
 

@@ -69,6 +69,17 @@ static int sim_setup(fricreg_sim *sim, const struct bench_sim_point *pt)
     return s;
 }
 
+double bench_period(const struct bench_problem *p)
+{
+    struct bench_sim_point pt = {p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0.01, 0.0, 0.0, 0};
+    double period = NAN;
+    fricreg_sim *sim = NULL;
+    if (fricreg_sim_create(p->system, &sim) == FRICREG_OK && sim_setup(sim, &pt) == FRICREG_OK)
+        fricreg_sim_get_value(sim, FRICREG_VALUE_PERIOD, &period);
+    fricreg_sim_free(sim);
+    return period;
+}
+
 int bench_sim_run(const void *point, struct bench_run *out)
 {
     const struct bench_sim_point *pt = point;

@@ -38,7 +38,6 @@ typedef realtype ed_real;
 #define ED_COMM_NULL NULL
 #endif
 
-#define TWO_PI 6.283185307179586
 #define MAX_BURST 1000 /* events with no progress in time before a run is declared stuck */
 
 /* The system of one run: sizes, parameters, the contacts' modes, scratch. */
@@ -46,6 +45,7 @@ struct ed_sys {
     size_t n;      /* bodies = contacts */
     int chain;     /* 1 chain, 0 oscillator */
     double a, omega, weight;
+    double period; /* the forcing period, as the library reports it */
     int *mode;     /* +1 / -1 slipping with that direction, 0 stuck */
     double *a_free;
 };
@@ -153,7 +153,7 @@ static void add_counts(void *mem, int newton, struct bench_run *out)
 static int integrate(void *mem, N_Vector yv, struct ed_sys *s, int newton, int cycle,
                      int *found, struct bench_run *out)
 {
-    double *y = N_VGetArrayPointer(yv), T = TWO_PI / s->omega, D_start = 0.0;
+    double *y = N_VGetArrayPointer(yv), T = s->period, D_start = 0.0;
     double t_burst = 0.0; /* start of the current burst of events */
     long burst = 0;       /* events since t_burst */
     ed_real t = 0.0;
@@ -204,7 +204,7 @@ int ed_run(const void *point, struct bench_run *out)
         return out->status = FRICREG_EINVAL;
     int chain = p->system == FRICREG_SYSTEM_CHAIN, newton = pt->method == ED_BDF;
     struct ed_sys s = {chain ? p->n : 1, chain, p->a, p->omega, chain ? 1.0 / (double)p->n : 1.0,
-                       NULL, NULL};
+                       bench_period(p), NULL, NULL};
     sunindextype dim = (sunindextype)(2 * s.n + 1);
     SUNContext ctx = NULL;
     N_Vector y = NULL;
