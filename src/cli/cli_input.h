@@ -17,7 +17,7 @@ int cli_read_columns(const char *option, const char *path, size_t ncols, size_t 
 
 /* A ground-motion record: two columns t, a_g on a uniform grid (each time within 1e-6 steps of
  * t0 + k dt_rec, dt_rec from the first and last times), n >= 2 samples into ag[n]. */
-int cli_read_record(const char *option, const char *path, double *t0, double *dt_rec,
-                    size_t *n, double **ag);
+int cli_read_record(const char *option, const char *path, double *t0, double *dt_rec, size_t *n,
+                    double **ag);
 
 #endif

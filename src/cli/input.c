@@ -70,7 +70,8 @@ static int read_banner(const char *option, const char *path, const char *banner,
 {
     char object[32] = "", format[32] = "", field[32] = "", symmetry[32] = "";
     if (strncmp(banner, "%%MatrixMarket", 14) != 0)
-        return file_error(option, path, 1, "not a Matrix Market file (no %%%%MatrixMarket "
+        return file_error(option, path, 1,
+                          "not a Matrix Market file (no %%%%MatrixMarket "
                           "banner)");
     sscanf(banner + 14, "%31s %31s %31s %31s", object, format, field, symmetry);
     for (char *c = object; *c; c++) /* the banner's words are case-insensitive */
@@ -112,10 +113,12 @@ static int check_mtx(const char *option, const char *path, FILE *f, size_t *rows
             continue;
         char *p = buf, *end;
         if (seen == NULL) { /* the size line */
-            if (!read_index(p, &end, MAX_DIM, &nrows) || !read_index(end, &end, MAX_DIM, &ncols)
-                || (nentries = strtol(end, &end, 10)) < 0 || !blank(end))
-                return file_error(option, path, line, "expected the size line 'rows columns "
-                                  "entries' (1 to %d rows and columns)", MAX_DIM);
+            if (!read_index(p, &end, MAX_DIM, &nrows) || !read_index(end, &end, MAX_DIM, &ncols) ||
+                (nentries = strtol(end, &end, 10)) < 0 || !blank(end))
+                return file_error(option, path, line,
+                                  "expected the size line 'rows columns "
+                                  "entries' (1 to %d rows and columns)",
+                                  MAX_DIM);
             if (*symmetric && nrows != ncols)
                 return file_error(option, path, line, "symmetric storage of a %ld x %ld matrix",
                                   nrows, ncols);
@@ -128,15 +131,20 @@ static int check_mtx(const char *option, const char *path, FILE *f, size_t *rows
         double value;
         if (!read_index(p, &end, nrows, &i) || !read_index(end, &end, ncols, &j) ||
             !read_number(end + strspn(end, " \t"), &end, &value) || !blank(end))
-            status = file_error(option, path, line, "expected 'row column value' with a row "
+            status = file_error(option, path, line,
+                                "expected 'row column value' with a row "
                                 "from 1 to %ld, a column from 1 to %ld and a finite value",
                                 nrows, ncols);
         else if (seen_entries == nentries)
-            status = file_error(option, path, line, "more entries than the %ld of the size "
-                                "line", nentries);
+            status = file_error(option, path, line,
+                                "more entries than the %ld of the size "
+                                "line",
+                                nentries);
         else if (*symmetric && j > i)
-            status = file_error(option, path, line, "entry (%ld, %ld) above the diagonal in "
-                                "symmetric storage (give the lower triangle)", i, j);
+            status = file_error(option, path, line,
+                                "entry (%ld, %ld) above the diagonal in "
+                                "symmetric storage (give the lower triangle)",
+                                i, j);
         else if (seen[(i - 1) * ncols + (j - 1)]++)
             status = file_error(option, path, line, "entry (%ld, %ld) given twice", i, j);
         if (status != 0)
@@ -240,8 +248,8 @@ int cli_read_columns(const char *option, const char *path, size_t ncols, size_t 
     return 0;
 }
 
-int cli_read_record(const char *option, const char *path, double *t0, double *dt_rec,
-                    size_t *n, double **ag)
+int cli_read_record(const char *option, const char *path, double *t0, double *dt_rec, size_t *n,
+                    double **ag)
 {
     double *tv = NULL;
     size_t rows = 0;
@@ -261,9 +269,10 @@ int cli_read_record(const char *option, const char *path, double *t0, double *dt
     for (size_t k = 0; k < rows; k++) {
         double expected = start + (double)k * step;
         if (fabs(tv[2 * k] - expected) > 1e-6 * step) {
-            status = file_error(option, path, 0, "sample %zu: t = %.17g, the uniform grid from "
-                                "the first and last times needs %.17g (step %.17g)", k + 1,
-                                tv[2 * k], expected, step);
+            status = file_error(option, path, 0,
+                                "sample %zu: t = %.17g, the uniform grid from "
+                                "the first and last times needs %.17g (step %.17g)",
+                                k + 1, tv[2 * k], expected, step);
             free(tv);
             return status;
         }

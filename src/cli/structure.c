@@ -85,10 +85,10 @@ static int parse_integrator(const char *text, struct structure_options *o)
 /* A file option: its name and where it is kept. */
 static const char **file_option(struct structure_options *o, const char *option)
 {
-    static const char *const names[] = {"--mass", "--stiffness", "--damping", "--contacts",
-                                        "--mun", "--influence", "--ground-accel"};
-    const char **slots[] = {&o->mass, &o->stiffness, &o->damping, &o->contacts, &o->mun,
-                            &o->influence, &o->ground};
+    static const char *const names[] = {"--mass", "--stiffness", "--damping",     "--contacts",
+                                        "--mun",  "--influence", "--ground-accel"};
+    const char **slots[] = {&o->mass, &o->stiffness, &o->damping, &o->contacts,
+                            &o->mun,  &o->influence, &o->ground};
     for (size_t k = 0; k < sizeof names / sizeof names[0]; k++)
         if (strcmp(option, names[k]) == 0)
             return slots[k];
@@ -165,14 +165,14 @@ static int check_options(const struct structure_options *o)
     if (o->alpha_given && o->scheme != SCHEME_HHT)
         return usage_error("--alpha", "only --integrator hht has alpha");
     if ((o->rtol > 0.0 || o->atol > 0.0) && o->scheme != SCHEME_GSL)
-        return usage_error(o->rtol > 0.0 ? "--rtol" : "--atol",
-                           "only GSL's steppers are adaptive");
+        return usage_error(o->rtol > 0.0 ? "--rtol" : "--atol", "only GSL's steppers are adaptive");
     return 0;
 }
 
 static int parse_structure(int argc, char **argv, struct structure_options *o)
 {
-    *o = (struct structure_options){.law = FRICREG_LAW_QUINN, .alpha = -0.05,
+    *o = (struct structure_options){.law = FRICREG_LAW_QUINN,
+                                    .alpha = -0.05,
                                     .output = CLI_SUMMARY};
     for (int k = 0; k < argc; k++) {
         char *option = argv[k], *value = NULL;
@@ -215,9 +215,8 @@ static int read_sized(const char *option, const char *path, size_t rows, size_t 
     if (status != 0)
         return status;
     if ((rows && *got_rows != rows) || (cols && *got_cols != cols)) {
-        fprintf(stderr, "fricreg-sim: %s %s: the matrix is %zu x %zu, expected %zu x %zu\n",
-                option, path, *got_rows, *got_cols, rows ? rows : *got_rows,
-                cols ? cols : *got_cols);
+        fprintf(stderr, "fricreg-sim: %s %s: the matrix is %zu x %zu, expected %zu x %zu\n", option,
+                path, *got_rows, *got_cols, rows ? rows : *got_rows, cols ? cols : *got_cols);
         free(*A);
         *A = NULL;
         return CLI_EXIT_USAGE;
@@ -271,9 +270,10 @@ static void name_asymmetry(const char *option, const char *path, size_t n, const
                 bi = i;
                 bj = j;
             }
-    fprintf(stderr, "fricreg-sim: %s %s: not symmetric: entry (%zu, %zu) = %.17g but "
-            "(%zu, %zu) = %.17g\n", option, path, bi + 1, bj + 1, A[bi * n + bj], bj + 1, bi + 1,
-            A[bj * n + bi]);
+    fprintf(stderr,
+            "fricreg-sim: %s %s: not symmetric: entry (%zu, %zu) = %.17g but "
+            "(%zu, %zu) = %.17g\n",
+            option, path, bi + 1, bj + 1, A[bi * n + bj], bj + 1, bi + 1, A[bj * n + bi]);
 }
 
 /* A refused model file: one line naming it, exit 2. */
@@ -283,8 +283,10 @@ static int model_error(fricreg_structure *s, int status, const char *option, con
     if (status == FRICREG_ENOTSYM)
         name_asymmetry(option, path, n, A);
     else if (status == FRICREG_ENOTPSD)
-        fprintf(stderr, "fricreg-sim: %s %s: the mass matrix is singular or not positive "
-                "definite (GSL's Cholesky decomposition fails)\n", option, path);
+        fprintf(stderr,
+                "fricreg-sim: %s %s: the mass matrix is singular or not positive "
+                "definite (GSL's Cholesky decomposition fails)\n",
+                option, path);
     else
         fprintf(stderr, "fricreg-sim: %s %s: %s\n", option, path, fricreg_structure_errmsg(s));
     return CLI_EXIT_USAGE;
@@ -298,8 +300,10 @@ static int check_contacts(const char *path, const struct structure_input *in)
         for (size_t k = 0; k < in->n; k++)
             moves |= in->J[i * in->n + k] != 0.0;
         if (!moves) {
-            fprintf(stderr, "fricreg-sim: --contacts %s: row %zu is zero: contact %zu does not "
-                    "move\n", path, i + 1, i + 1);
+            fprintf(stderr,
+                    "fricreg-sim: --contacts %s: row %zu is zero: contact %zu does not "
+                    "move\n",
+                    path, i + 1, i + 1);
             return CLI_EXIT_USAGE;
         }
     }
@@ -359,8 +363,7 @@ static int setup(const struct structure_options *o, const struct structure_input
         return status;
     if ((status = fricreg_structure_set_bounds(s, in->m, in->mun)) != FRICREG_OK)
         return model_error(s, status, "--mun", o->mun, in->n, NULL);
-    if (in->r != NULL &&
-        (status = fricreg_structure_set_influence(s, in->n, in->r)) != FRICREG_OK)
+    if (in->r != NULL && (status = fricreg_structure_set_influence(s, in->n, in->r)) != FRICREG_OK)
         return model_error(s, status, "--influence", o->influence, in->n, NULL);
     if (in->r == NULL && in->ag != NULL) { /* every DOF translates with the ground */
         double *ones = malloc(in->n * sizeof *ones);
@@ -423,6 +426,13 @@ static void observe(const fricreg_structure *s, const struct structure_input *in
     fputc('\n', run->rows);
 }
 
+static double svalue(const fricreg_structure *s, int which)
+{
+    double v = 0.0;
+    fricreg_structure_get_value(s, which, &v);
+    return v;
+}
+
 /* Steps of dt to t_end, the last one shortened (as fricreg_structure_run counts them), the
  * state observed after each; GSL's steppers are run from sample to sample (adaptive ones
  * restart at each with dt as their first step). */
@@ -436,21 +446,17 @@ static int advance(fricreg_structure *s, const struct structure_options *o,
     observe(s, in, run);
     for (int64_t k = 1; k <= nsteps; k++) {
         double t1 = k == nsteps ? o->t_end : (double)k * o->dt;
+        /* One step of exactly t1 - t: k dt - (k - 1) dt may exceed dt by a rounding, which
+         * would make run() split it. */
+        double h = t1 - svalue(s, FRICREG_SVALUE_TIME);
         int status = o->scheme == SCHEME_GSL
-                         ? fricreg_structure_run_ode(s, o->integrator, o->dt, o->rtol, o->atol, t1)
-                         : fricreg_structure_run(s, o->dt, t1);
+                         ? fricreg_structure_run_ode(s, o->integrator, h, o->rtol, o->atol, t1)
+                         : fricreg_structure_run(s, h, t1);
         if (status != FRICREG_OK)
             return status;
         observe(s, in, run);
     }
     return FRICREG_OK;
-}
-
-static double svalue(const fricreg_structure *s, int which)
-{
-    double v = 0.0;
-    fricreg_structure_get_value(s, which, &v);
-    return v;
 }
 
 static int64_t sstat(const fricreg_structure *s, int which)
@@ -487,21 +493,25 @@ static void write_summary(FILE *out, const struct structure_options *o,
         fprintf(out, "\"alpha\": %.17g, ", o->alpha);
     fprintf(out, "\"adaptive\": %s, \"dt\": %.17g, \"rtol\": %.17g, \"atol\": %.17g, ",
             o->rtol > 0.0 || o->atol > 0.0 ? "true" : "false", o->dt, o->rtol, o->atol);
-    fprintf(out, "\"eps\": %.17g, \"steps\": %lld, \"t\": %.17g, \"ndof\": %zu, "
-            "\"ncontacts\": %zu", eps, (long long)steps, svalue(s, FRICREG_SVALUE_TIME), in->n,
-            in->m);
+    fprintf(out,
+            "\"eps\": %.17g, \"steps\": %lld, \"t\": %.17g, \"ndof\": %zu, "
+            "\"ncontacts\": %zu",
+            eps, (long long)steps, svalue(s, FRICREG_SVALUE_TIME), in->n, in->m);
     json_array(out, "x", in->n, run->u);
     json_array(out, "v", in->n, run->v);
     json_array(out, "peak_displacement", in->n, run->peak);
     json_array(out, "dissipation_per_contact", in->m, D);
-    fprintf(out, ", \"energy_balance\": {\"initial\": %.17g, \"input\": %.17g, "
+    fprintf(out,
+            ", \"energy_balance\": {\"initial\": %.17g, \"input\": %.17g, "
             "\"kinetic\": %.17g, \"strain\": %.17g, \"viscous\": %.17g, \"friction\": %.17g, "
-            "\"residual\": %.17g}", svalue(s, FRICREG_SVALUE_INITIAL),
-            svalue(s, FRICREG_SVALUE_INPUT), svalue(s, FRICREG_SVALUE_KINETIC),
-            svalue(s, FRICREG_SVALUE_STRAIN), svalue(s, FRICREG_SVALUE_VISCOUS),
-            svalue(s, FRICREG_SVALUE_FRICTION), svalue(s, FRICREG_SVALUE_RESIDUAL));
+            "\"residual\": %.17g}",
+            svalue(s, FRICREG_SVALUE_INITIAL), svalue(s, FRICREG_SVALUE_INPUT),
+            svalue(s, FRICREG_SVALUE_KINETIC), svalue(s, FRICREG_SVALUE_STRAIN),
+            svalue(s, FRICREG_SVALUE_VISCOUS), svalue(s, FRICREG_SVALUE_FRICTION),
+            svalue(s, FRICREG_SVALUE_RESIDUAL));
     int64_t iterations = sstat(s, FRICREG_SSTAT_NEWTON_ITERATIONS);
-    fprintf(out, ", \"newton_iterations\": {\"mean\": %.17g, \"max\": %lld}, "
+    fprintf(out,
+            ", \"newton_iterations\": {\"mean\": %.17g, \"max\": %lld}, "
             "\"newton_failures\": %lld, \"cpu_seconds\": %.6f}\n",
             steps > 0 ? (double)iterations / (double)steps : 0.0,
             (long long)sstat(s, FRICREG_SSTAT_NEWTON_MAX),
