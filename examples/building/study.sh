@@ -1,7 +1,8 @@
 #!/bin/sh
-# study.sh — the measurements of docs/structural.md on the building (about 1 min of CPU):
-# convergence in dt, accuracy against eps, Newton iterations, central difference's bound and
-# GSL's adaptive steppers against atol. Prints plain tables.
+# study.sh — the measurements of docs/structural.md on the building (about 15 s of CPU):
+# convergence in dt, accuracy against eps (also on the forced oscillator), Newton iterations,
+# central difference's bound and GSL's adaptive steppers against atol (also on the chain).
+# Prints plain tables.
 #   usage: study.sh PATH/TO/fricreg-sim PATH/TO/make_building DIR
 sim=$1; make_building=$2; dir=$3
 run() { sh "$(dirname "$0")/run.sh" "$sim" "$make_building" "$dir" "$@" | tail -n 1; }
@@ -21,16 +22,31 @@ for scheme in newmark hht; do
     done
 done
 
-echo "== accuracy against eps (Newmark, dt = 1e-3 s; reference eps = 1e-5 m/s)"
-set -- $(fields "$(run --dt 1e-3 --eps 1e-5)"); e_roof=$1; e_D=$2
-echo "1e-5 $*"
-for eps in 0.1 0.03 0.01 0.003 0.001 0.0003 0.0001; do
-    set -- $(fields "$(run --dt 1e-3 --eps $eps)")
-    echo "$eps roof $(rel $1 $e_roof) D $(rel $2 $e_D) Newton $3"
+for law in quinn tanh; do
+    echo "== accuracy against eps, law $law (Newmark, dt = 1e-3 s; reference eps = 1e-5 m/s)"
+    set -- $(fields "$(run --law $law --dt 1e-3 --eps 1e-5)"); e_roof=$1; e_D=$2
+    echo "1e-5 $*"
+    for eps in 0.1 0.03 0.01 0.003 0.001 0.0003 0.0001; do
+        set -- $(fields "$(run --law $law --dt 1e-3 --eps $eps)")
+        echo "$eps roof $(rel $1 $e_roof) D $(rel $2 $e_D) Newton $3"
+    done
+done
+# The last cycle's dissipation of a fricreg-sim summary.
+last_D() { sed -e 's/.*"dissipation_per_cycle": \[[^]]*, \([^],]*\)\].*/\1/'; }
+echo "== the forced oscillator (a = 2, omega = 0.5, x0 = 0): D of cycle 10 against eps, RK4"
+forced="--a 2 --omega 0.5 --x0 0 --cycles 10"
+exact=$("$sim" exact $forced | last_D)
+echo "exact $exact; peak velocity $("$sim" oscillator $forced --eps 1e-3 --dt 2e-4 \
+    --output trajectory | awk -F, 'NR > 1 { v = $3 < 0 ? -$3 : $3; if (v > V) V = v }
+    END { print V }')"
+for law in quinn tanh; do
+    for eps in 0.3 0.1 0.03 0.01 0.003; do
+        dt=$(awk -v e=$eps 'BEGIN { d = 0.2 * e; print (d > 0.01 ? 0.01 : d) }')
+        D=$("$sim" oscillator --law $law $forced --eps $eps --dt $dt | last_D)
+        echo "$law $eps: $(rel $D $exact)"
+    done
 done
 echo "== velocity scale: peak storey drift velocity (m/s) at eps = 1e-3, dt = 1e-3 s"
-sh "$(dirname "$0")/run.sh" "$sim" "$make_building" "$dir" --dt 1e-3 --eps 1e-3 \
-    --output trajectory >/dev/null 2>&1
 "$sim" structure --mass "$dir/M.mtx" --stiffness "$dir/K.mtx" \
     --rayleigh "$(cat "$dir/rayleigh.txt")" --contacts "$dir/J.mtx" --mun "$dir/mun.txt" \
     --ground-accel "$dir/ground.txt" --eps 1e-3 --integrator newmark --dt 1e-3 --t-end 15 \
@@ -65,5 +81,19 @@ for stepper in rkf45 rk8pd; do
     for tol in 1e-3 1e-4 1e-6 1e-8; do
         set -- $(fields "$(run --integrator $stepper --rtol $tol --atol $tol --dt 0.01)")
         echo "$stepper $tol: roof $(rel $1 $ref_roof) D $(rel $2 $ref_D) cpu $6"
+    done
+done
+echo "== rkf45 at eps = 0.001 m/s against Newmark, dt = 1e-3 s, the same eps"
+set -- $(fields "$(run --dt 1e-3 --eps 1e-3)"); e_D=$2
+for tol in 1e-4 1e-5 1e-6; do
+    set -- $(fields "$(run --integrator rkf45 --rtol $tol --atol $tol --eps 1e-3 --dt 0.01)")
+    echo "rkf45 $tol: D $(rel $2 $e_D) residual/input $5"
+done
+echo "== the chain: rkf45, D of cycle 4 against RK4 at dt = 1e-4"
+for eps in 1e-2 1e-3; do
+    ref=$("$sim" chain --eps $eps --dt 1e-4 | last_D)
+    for tol in 1e-3 1e-4 1e-5 1e-6 1e-7; do
+        D=$("$sim" chain --eps $eps --dt 1e-3 --integrator rkf45 --rtol $tol --atol $tol | last_D)
+        echo "eps $eps tol $tol: $(rel $D $ref)"
     done
 done
