@@ -132,6 +132,10 @@ expect_output '"x": \[-1\.95438123028[34][0-9]*\]' structure --mass $d/M1.mtx --
 expect_output '"x": \[-1\.95438123028[34][0-9]*\]' structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_const.txt --eps 0.01 --t-end 2.1 --integrator central --dt 0.002
 # Its energy balance: input m A |u| = 14.9308862850 J, kinetic m (0.886341 T)^2/2 = 5.49122494 J.
 expect_output '"input": 14\.930886285[0-9]*, "kinetic": 5\.4912249[0-9]*, "strain": 0, "viscous": 0, "friction": 9\.43966134[0-9]*, "residual": -?[0-9.]+e-1[3-9]\}, "newton_iterations": \{"mean": [0-9.]+, "max": 1\}, "newton_failures": 0' $block --integrator newmark --dt 0.01
+# Comment and blank lines anywhere, CRLF line ends and a trailing blank line (which GSL's own
+# reader refuses after the size line) read as the plain file does.
+printf '%%%%MatrixMarket matrix coordinate real symmetric\r\n%% mass\r\n\r\n1 1 1\r\n%% kg\r\n\r\n1 1 3.17\r\n\r\n' >"$d/M1crlf.mtx"
+expect_output '"x": \[-1\.95438123028[34][0-9]*\]' structure --mass $d/M1crlf.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_const.txt --eps 1e-6 --t-end 2.1 --integrator newmark --dt 0.01
 # The default eps is 1 % of the ground's peak velocity, here 2.41 m/s^2 * 5 s = 12.05 m/s (the
 # record's length), and 1e-3 without ground motion (docs/structural.md).
 expect_output '"eps": 0\.1205(0000+[0-9]*)?,' structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_const.txt --t-end 2.1 --integrator newmark --dt 0.01

@@ -1,6 +1,6 @@
-/* input.c — the input files of `fricreg-sim structure`: Matrix Market matrices (read by GSL,
- * checked here first so that a bad file is named with its line), and plain-text columns of
- * numbers. Every error is one line on stderr naming the option, the file and the line or entry;
+/* input.c — the input files of `fricreg-sim structure`: Matrix Market matrices (checked here
+ * line by line so that a bad file is named with its line, then read by GSL), and plain-text
+ * columns of numbers. Every error is one line on stderr naming the option, the file and the line or entry;
  * the readers return CLI_EXIT_USAGE then, and their outputs are left unset. */
 #include <errno.h>
 #include <math.h>
@@ -94,11 +94,13 @@ static int read_banner(const char *option, const char *path, const char *banner,
     return 0;
 }
 
-/* Checks the whole file as GSL will read it, naming the first bad line: the banner, the size
- * line "rows cols entries", then exactly that many entries "i j value" with 1-based indices in
- * range, each at most once, finite, and on or below the diagonal in symmetric storage. */
-static int check_mtx(const char *option, const char *path, FILE *f, size_t *rows, size_t *cols,
-                     int *symmetric)
+/* Checks the whole file, naming the first bad line: the banner, the size line "rows cols
+ * entries", then exactly that many entries "i j value" with 1-based indices in range, each at
+ * most once, finite, and on or below the diagonal in symmetric storage. Comment and blank lines
+ * are skipped anywhere; the lines checked are copied to clean, which GSL reads (GSL 2.7 stops
+ * at a comment or blank line after the size line, even a trailing one). */
+static int check_mtx(const char *option, const char *path, FILE *f, FILE *clean, size_t *rows,
+                     size_t *cols, int *symmetric)
 {
     char buf[512];
     long line = 0, nrows = 0, ncols = 0, nentries = 0, seen_entries = 0;
@@ -125,6 +127,8 @@ static int check_mtx(const char *option, const char *path, FILE *f, size_t *rows
             seen = calloc((size_t)nrows * (size_t)ncols, 1);
             if (seen == NULL)
                 return file_error(option, path, line, "out of memory");
+            fprintf(clean, "%%%%MatrixMarket matrix coordinate real general\n%ld %ld %ld\n", nrows,
+                    ncols, nentries);
             continue;
         }
         long i, j;
@@ -149,6 +153,7 @@ static int check_mtx(const char *option, const char *path, FILE *f, size_t *rows
             status = file_error(option, path, line, "entry (%ld, %ld) given twice", i, j);
         if (status != 0)
             break;
+        fprintf(clean, "%ld %ld %.17g\n", i, j, value);
         seen_entries++;
     }
     free(seen);
@@ -171,22 +176,28 @@ int cli_read_mtx(const char *option, const char *path, size_t *rows, size_t *col
     FILE *f = fopen(path, "r");
     if (f == NULL)
         return file_error(option, path, 0, "cannot open: %s", strerror(errno));
-    int symmetric = 0;
-    int status = check_mtx(option, path, f, rows, cols, &symmetric);
-    if (status != 0) {
+    FILE *clean = tmpfile();
+    if (clean == NULL) {
         fclose(f);
+        return file_error(option, path, 0, "cannot create a temporary file");
+    }
+    int symmetric = 0;
+    int status = check_mtx(option, path, f, clean, rows, cols, &symmetric);
+    fclose(f);
+    if (status != 0) {
+        fclose(clean);
         return status;
     }
-    rewind(f);
+    rewind(clean);
     gsl_error_handler_t *old = gsl_set_error_handler_off();
-    gsl_spmatrix *S = gsl_spmatrix_fscanf(f);
-    fclose(f);
+    gsl_spmatrix *S = gsl_spmatrix_fscanf(clean);
+    fclose(clean);
     double *dense = malloc(*rows * *cols * sizeof *dense);
     int gsl_status = S == NULL || dense == NULL ? GSL_ENOMEM : GSL_SUCCESS;
     if (gsl_status == GSL_SUCCESS) {
         gsl_matrix_view view = gsl_matrix_view_array(dense, *rows, *cols);
         gsl_status = gsl_spmatrix_sp2d(&view.matrix, S);
-        /* GSL 2.7 reads symmetric storage as its lower triangle only: mirror it. */
+        /* Symmetric storage holds the lower triangle only: mirror it. */
         for (size_t i = 0; symmetric && i < *rows; i++)
             for (size_t j = i + 1; j < *cols; j++)
                 dense[i * *cols + j] = dense[j * *cols + i];
