@@ -136,6 +136,7 @@ expect_output '"input": 14\.930886285[0-9]*, "kinetic": 5\.4912249[0-9]*, "strai
 # reader refuses after the size line) read as the plain file does.
 printf '%%%%MatrixMarket matrix coordinate real symmetric\r\n%% mass\r\n\r\n1 1 1\r\n%% kg\r\n\r\n1 1 3.17\r\n\r\n' >"$d/M1crlf.mtx"
 expect_output '"x": \[-1\.95438123028[34][0-9]*\]' structure --mass $d/M1crlf.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_const.txt --eps 1e-6 --t-end 2.1 --integrator newmark --dt 0.01
+expect_output '^       fricreg-sim structure --mass M\.mtx --stiffness K\.mtx' --help
 # The default eps is 1 % of the ground's peak velocity, here 2.41 m/s^2 * 5 s = 12.05 m/s (the
 # record's length), and 1e-3 without ground motion (docs/structural.md).
 expect_output '"eps": 0\.1205(0000+[0-9]*)?,' structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_const.txt --t-end 2.1 --integrator newmark --dt 0.01
