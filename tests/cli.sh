@@ -242,6 +242,7 @@ expect_usage_error "^fricreg-sim: --alpha: .*alpha = -0.5 must be in \[-1/3, 0\]
 expect_usage_error "--rtol" structure $good --rtol 1e-6
 expect_usage_error "--t-end" structure --mass $d/M3.mtx --stiffness $d/K3s.mtx --contacts $d/J3.mtx --mun $d/mun3.txt --integrator newmark --dt 0.01
 expect_usage_error "--eps" structure $good --eps 0
+expect_usage_error "^fricreg-sim: --dt: more than 2^31 steps" structure $good --dt 1e-12 --t-end 1
 
 echo "$((total - fails)) passed, $fails failed"
 [ $fails -eq 0 ]

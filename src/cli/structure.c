@@ -160,6 +160,8 @@ static int check_options(const struct structure_options *o)
         return usage_error("--dt", "missing");
     if (o->t_end == 0.0)
         return usage_error("--t-end", "missing");
+    if (o->t_end / o->dt > 2147483647.0)
+        return usage_error("--dt", "more than 2^31 steps to --t-end");
     if (o->damping != NULL && o->rayleigh_given)
         return usage_error("--rayleigh", "give --damping or --rayleigh, not both");
     if (o->alpha_given && o->scheme != SCHEME_HHT)
@@ -439,9 +441,7 @@ static double svalue(const fricreg_structure *s, int which)
 static int advance(fricreg_structure *s, const struct structure_options *o,
                    const struct structure_input *in, struct structure_run *run)
 {
-    double steps = ceil(o->t_end / o->dt * (1.0 - 1e-12));
-    if (steps > 2147483647.0)
-        return fricreg_structure_run(s, o->dt, o->t_end); /* refused, with its message */
+    double steps = ceil(o->t_end / o->dt * (1.0 - 1e-12)); /* <= 2^31: check_options */
     int64_t nsteps = steps < 1.0 ? 1 : (int64_t)steps;
     observe(s, in, run);
     for (int64_t k = 1; k <= nsteps; k++) {
