@@ -1,6 +1,7 @@
 /* step.c — stepping a fricreg_structure: the equilibrium acceleration at the start, one
  * step of the selected scheme (newmark.c, central_difference.c), the energy balance
  * (energy.c) and the counters; fricreg_structure_step and fricreg_structure_run. */
+#include <float.h>
 #include <math.h>
 
 #include <gsl/gsl_blas.h>
@@ -140,8 +141,10 @@ int fricreg_structure_run(fricreg_structure *s, double dt, double t_end)
     double t0 = s->t;
     if (!(t_end > t0))
         return fr_sfail(s, FRICREG_EINVAL, "run: t_end = %g must be after t = %g", t_end, t0);
-    /* Steps that end within 1e-12 dt of t_end land on it: no sliver of a last step. */
-    double steps = ceil((t_end - t0) / dt * (1.0 - 1e-12));
+    /* Steps that end within 1e-12 dt, or within rounding of the times (4 ulps of t), of t_end
+     * land on it: no sliver of a last step. */
+    double slack = 4.0 * DBL_EPSILON * fmax(fabs(t0), fabs(t_end)) / dt;
+    double steps = ceil((t_end - t0) / dt * (1.0 - 1e-12) - slack);
     if (steps > MAX_RUN_STEPS)
         return fr_sfail(s, FRICREG_EINVAL, "run: %g steps of dt = %g exceed 2^31", steps, dt);
     int64_t nsteps = steps < 1.0 ? 1 : (int64_t)steps;

@@ -104,5 +104,145 @@ expect_usage_error "--output" exact --output trajectory
 expect_usage_error "^fricreg-sim: --cycles: .*cycles = 2000000 must be from 1 to 10^6$" exact --cycles 2000000
 expect_usage_error "^fricreg-sim: --t-end: .*t_end = 1e+300 .*more than 10^6$" exact --t-end 1e300
 
+# ---- structure: a linear structure from Matrix Market files (tests write their own files).
+d=$tmp/structure
+mkdir -p "$d"
+mtx() { # mtx FILE SYMMETRY "rows cols entries" ENTRY-LINES...
+    f=$1; sym=$2; size=$3; shift 3
+    { echo "%%MatrixMarket matrix coordinate real $sym"; echo "% written by cli.sh"; echo "$size"
+      for e in "$@"; do echo "$e"; done; } >"$d/$f"
+}
+# A rigid block (K = 0: no entries) of m = 3.17 kg on a friction contact of mu N = 4.83 N,
+# its ground accelerating at A = 2.41 m/s^2 from t = 0: f_eq = m A = 7.64 N > mu N, so it slides
+# from the start at u'' = -(A - mu N/m) = -0.886341 m/s^2 relative to the ground (friction
+# opposes the relative velocity, law (4) outside its stick zone): at T = 2.1 s,
+# u = -0.886341 T^2/2 = -1.95438123028391 m and the contact dissipated mu N |u| = 9.43966134227
+# J. Newmark's average acceleration, RK4 and central difference are all exact for a constant
+# acceleration: 12 digits agree (eps = 1e-6 m/s only shifts the first step's force).
+mtx M1.mtx symmetric "1 1 1" "1 1 3.17"
+mtx K0.mtx symmetric "1 1 0"
+mtx J1.mtx general "1 1 1" "1 1 1"
+echo 4.83 >"$d/mun1.txt"
+printf '# t a_g\n0 2.41\n5 2.41\n' >"$d/ag_const.txt"
+block="structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_const.txt --eps 1e-6 --t-end 2.1"
+expect_output '"x": \[-1\.95438123028[34][0-9]*\]' $block --integrator newmark --dt 0.01
+expect_output '"dissipation_per_contact": \[9\.4396613422[67][0-9]*\]' $block --integrator newmark --dt 0.01
+expect_output '"peak_displacement": \[1\.95438123028[34][0-9]*\]' $block --integrator hht --alpha -0.1 --dt 0.01
+expect_output '"x": \[-1\.95438123028[34][0-9]*\]' structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_const.txt --eps 0.01 --t-end 2.1 --integrator rk4 --dt 0.005
+expect_output '"x": \[-1\.95438123028[34][0-9]*\]' structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_const.txt --eps 0.01 --t-end 2.1 --integrator central --dt 0.002
+# Its energy balance: input m A |u| = 14.9308862850 J, kinetic m (0.886341 T)^2/2 = 5.49122494 J.
+expect_output '"input": 14\.930886285[0-9]*, "kinetic": 5\.4912249[0-9]*, "strain": 0, "viscous": 0, "friction": 9\.43966134[0-9]*, "residual": -?[0-9.]+e-1[3-9]\}, "newton_iterations": \{"mean": [0-9.]+, "max": 1\}, "newton_failures": 0' $block --integrator newmark --dt 0.01
+# Comment and blank lines anywhere, CRLF line ends and a trailing blank line (which GSL's own
+# reader refuses after the size line) read as the plain file does.
+printf '%%%%MatrixMarket matrix coordinate real symmetric\r\n%% mass\r\n\r\n1 1 1\r\n%% kg\r\n\r\n1 1 3.17\r\n\r\n' >"$d/M1crlf.mtx"
+expect_output '"x": \[-1\.95438123028[34][0-9]*\]' structure --mass $d/M1crlf.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_const.txt --eps 1e-6 --t-end 2.1 --integrator newmark --dt 0.01
+expect_output '^       fricreg-sim structure --mass M\.mtx --stiffness K\.mtx' --help
+# The default eps is 1 % of the ground's peak velocity, here 2.41 m/s^2 * 5 s = 12.05 m/s (the
+# record's length), and 1e-3 without ground motion (docs/structural.md).
+expect_output '"eps": 0\.1205(0000+[0-9]*)?,' structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_const.txt --t-end 2.1 --integrator newmark --dt 0.01
+expect_output '"eps": 0\.001(0000+[0-9]*)?,' structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --t-end 2.1 --integrator newmark --dt 0.01
+# Central difference: dt times the stick-zone stiffness 2 mu N/(m eps) = 304.7/s must be < 1.
+expect_usage_error "^fricreg-sim: --dt: .*stick-zone stiffness" structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_const.txt --eps 0.01 --t-end 2.1 --integrator central --dt 0.005
+
+# An undamped oscillator, m = 2.385 kg, k = 417.3 N/m (w = 13.2277/s), no friction (mu N = 0),
+# under a constant ground acceleration A = 0.731 m/s^2: average-acceleration Newmark gives
+# u_n = -(A/w^2)(1 - cos(W n dt)) exactly, W = (2/dt) atan(w dt/2) = 13.20833/s at dt = 0.01
+# s: u(1.37 s) = -0.00113279590437900 m (the continuous solution's w would give -0.0010585).
+mtx M2.mtx symmetric "1 1 1" "1 1 2.385"
+mtx K2.mtx symmetric "1 1 1" "1 1 417.3"
+echo 0 >"$d/mun0.txt"
+printf '0 0.731\n10 0.731\n' >"$d/ag_osc.txt"
+expect_output '"x": \[-0\.00113279590437[89][0-9]*\]' structure --mass $d/M2.mtx --stiffness $d/K2.mtx --contacts $d/J1.mtx --mun $d/mun0.txt --ground-accel $d/ag_osc.txt --integrator newmark --dt 0.01 --t-end 1.37
+# ... its energy balance closes (input = kinetic + strain) to Newton's tolerance.
+expect_output '"residual": -?[0-9.]+e-(1[3-9]|[2-9][0-9])' structure --mass $d/M2.mtx --stiffness $d/K2.mtx --contacts $d/J1.mtx --mun $d/mun0.txt --ground-accel $d/ag_osc.txt --integrator newmark --dt 0.01 --t-end 1.37
+
+# Two storeys (m 1.7, 2.3 kg; k 311, 187 N/m), a damper on each drift, a shaken ground:
+# symmetric storage (lower triangle) and the full general matrix are the same model, and
+# Rayleigh damping given as a0,a1 the same as C = a0 M + a1 K given as a file.
+mtx M3.mtx symmetric "2 2 2" "1 1 1.7" "2 2 2.3"
+mtx K3s.mtx symmetric "2 2 3" "1 1 498" "2 1 -187" "2 2 187"
+mtx K3g.mtx general "2 2 4" "1 1 498" "1 2 -187" "2 1 -187" "2 2 187"
+mtx C3.mtx symmetric "2 2 3" "1 1 1.6958" "2 1 -0.5797" "2 2 0.8487"
+mtx J3.mtx general "2 2 3" "1 1 1" "2 1 -1" "2 2 1"
+mtx R3.mtx general "2 1 2" "1 1 1" "2 1 1"
+printf '0.93\n0.41\n' >"$d/mun3.txt"
+awk 'BEGIN { for (k = 0; k <= 400; k++) printf "%.2f %.17g\n", k * 0.01, 3.1 * sin(5.3 * k * 0.01) }' >"$d/ag3.txt"
+two="--mass $d/M3.mtx --contacts $d/J3.mtx --mun $d/mun3.txt --ground-accel $d/ag3.txt --influence $d/R3.mtx --eps 0.003 --integrator newmark --dt 0.004 --t-end 4"
+# a0 = 0.4, a1 = 0.0031: C = 0.4 M + 0.0031 K = [[1.6838, -0.5797], [-0.5797, 1.4997]]
+mtx C3.mtx symmetric "2 2 3" "1 1 2.2238" "2 1 -0.5797" "2 2 1.4997"
+"$sim" structure $two --stiffness "$d/K3s.mtx" --rayleigh 0.4,0.0031 >"$d/sym.json" 2>&1
+"$sim" structure $two --stiffness "$d/K3g.mtx" --rayleigh 0.4,0.0031 >"$d/gen.json" 2>&1
+"$sim" structure $two --stiffness "$d/K3s.mtx" --damping "$d/C3.mtx" >"$d/damp.json" 2>&1
+total=$((total + 2))
+field() { sed -e 's/.*"dissipation_per_contact": \[\([^]]*\)\].*/\1/' "$1"; }
+if [ -z "$(field "$d/sym.json")" ] || [ "$(field "$d/sym.json")" != "$(field "$d/gen.json")" ]; then
+    echo "FAIL: symmetric and general storage differ: $(cat "$d/sym.json" "$d/gen.json")"; fails=$((fails + 1))
+fi
+if ! awk -v a="$(field "$d/sym.json")" -v b="$(field "$d/damp.json")" 'BEGIN {
+        n = split(a, x, ", "); split(b, y, ", "); if (n != 2) exit 1
+        for (i = 1; i <= n; i++) { e = (x[i] - y[i]) / y[i]; if (e < -1e-9 || e > 1e-9 || y[i] <= 0) exit 1 } }'; then
+    echo "FAIL: --rayleigh and --damping differ: $(cat "$d/sym.json" "$d/damp.json")"; fails=$((fails + 1))
+fi
+# Trajectory: a header and a row per step plus t = 0 (4/0.004 = 1000 steps).
+total=$((total + 1))
+"$sim" structure $two --stiffness "$d/K3s.mtx" --output trajectory >"$d/traj.csv" 2>&1
+if [ "$(head -n 1 "$d/traj.csv")" != "t,u1,u2,v1,v2,f1,f2" ] || [ "$(wc -l <"$d/traj.csv")" -ne 1002 ]; then
+    echo "FAIL: structure trajectory: $(head -n 2 "$d/traj.csv"), $(wc -l <"$d/traj.csv") lines"; fails=$((fails + 1))
+fi
+
+# Bad files: one line naming the option, the file and the line or entry; exit 2, no stdout.
+ok="--stiffness $d/K3s.mtx --contacts $d/J3.mtx --mun $d/mun3.txt --integrator newmark --dt 0.01 --t-end 1"
+printf '2 2 1\n1 1 1\n' >"$d/nobanner.mtx"
+mtx array.mtx general "2 2" && sed -i 's/coordinate/array/' "$d/array.mtx"
+mtx complex.mtx general "1 1 1" "1 1 1 2" && sed -i 's/real/complex/' "$d/complex.mtx"
+mtx range.mtx symmetric "2 2 2" "1 1 1.7" "3 1 2.3"
+mtx nan.mtx symmetric "2 2 2" "1 1 1.7" "2 2 nan"
+mtx short.mtx symmetric "2 2 3" "1 1 1.7" "2 2 2.3"
+mtx twice.mtx symmetric "2 2 3" "1 1 1.7" "2 2 2.3" "1 1 1.7"
+mtx upper.mtx symmetric "2 2 3" "1 1 1.7" "1 2 0.1" "2 2 2.3"
+mtx singular.mtx symmetric "2 2 1" "1 1 1.7"
+mtx asym.mtx general "2 2 4" "1 1 498" "1 2 -187" "2 1 -186" "2 2 187"
+mtx K33.mtx symmetric "3 3 3" "1 1 1" "2 2 1" "3 3 1"
+mtx J13.mtx general "1 3 1" "1 1 1"
+mtx Jzero.mtx general "2 2 1" "1 1 1"
+expect_usage_error "^fricreg-sim: --mass $d/none.mtx: cannot open" structure --mass "$d/none.mtx" $ok
+expect_usage_error "^fricreg-sim: --mass $d/nobanner.mtx: line 1: not a Matrix Market file" structure --mass "$d/nobanner.mtx" $ok
+expect_usage_error "^fricreg-sim: --mass $d/array.mtx: line 1: 'matrix array'" structure --mass "$d/array.mtx" $ok
+expect_usage_error "^fricreg-sim: --mass $d/complex.mtx: line 1: field 'complex'" structure --mass "$d/complex.mtx" $ok
+expect_usage_error "^fricreg-sim: --mass $d/range.mtx: line 5: expected 'row column value' with a row from 1 to 2" structure --mass "$d/range.mtx" $ok
+expect_usage_error "^fricreg-sim: --mass $d/nan.mtx: line 5: .*finite value" structure --mass "$d/nan.mtx" $ok
+expect_usage_error "^fricreg-sim: --mass $d/short.mtx: 2 entries, the size line says 3" structure --mass "$d/short.mtx" $ok
+expect_usage_error "^fricreg-sim: --mass $d/twice.mtx: line 6: entry (1, 1) given twice" structure --mass "$d/twice.mtx" $ok
+expect_usage_error "^fricreg-sim: --mass $d/upper.mtx: line 5: entry (1, 2) above the diagonal" structure --mass "$d/upper.mtx" $ok
+expect_usage_error "^fricreg-sim: --mass $d/singular.mtx: the mass matrix is singular" structure --mass "$d/singular.mtx" $ok
+expect_usage_error "^fricreg-sim: --stiffness $d/asym.mtx: not symmetric: entry (2, 1) = -186 but (1, 2) = -187$" structure --mass "$d/M3.mtx" --stiffness "$d/asym.mtx" --contacts $d/J3.mtx --mun $d/mun3.txt --integrator newmark --dt 0.01 --t-end 1
+expect_usage_error "^fricreg-sim: --stiffness $d/K33.mtx: the matrix is 3 x 3, expected 2 x 2$" structure --mass "$d/M3.mtx" --stiffness "$d/K33.mtx" --contacts $d/J3.mtx --mun $d/mun3.txt --integrator newmark --dt 0.01 --t-end 1
+expect_usage_error "^fricreg-sim: --contacts $d/J13.mtx: the matrix is 1 x 3, expected 1 x 2$" structure --mass "$d/M3.mtx" --stiffness "$d/K3s.mtx" --contacts $d/J13.mtx --mun $d/mun3.txt --integrator newmark --dt 0.01 --t-end 1
+expect_usage_error "^fricreg-sim: --contacts $d/Jzero.mtx: row 2 is zero" structure --mass "$d/M3.mtx" --stiffness "$d/K3s.mtx" --contacts $d/Jzero.mtx --mun $d/mun3.txt --integrator newmark --dt 0.01 --t-end 1
+expect_usage_error "^fricreg-sim: --mun $d/mun1.txt: 1 bounds, $d/J3.mtx has 2 contacts" structure --mass "$d/M3.mtx" --stiffness "$d/K3s.mtx" --contacts $d/J3.mtx --mun $d/mun1.txt --integrator newmark --dt 0.01 --t-end 1
+printf '0.93\n-0.41\n' >"$d/munneg.txt"
+printf '0.93\n0.41 x\n' >"$d/munbad.txt"
+expect_usage_error "^fricreg-sim: --mun $d/munneg.txt: bound 2 = -0.41 must be >= 0" structure --mass "$d/M3.mtx" --stiffness "$d/K3s.mtx" --contacts $d/J3.mtx --mun $d/munneg.txt --integrator newmark --dt 0.01 --t-end 1
+expect_usage_error "^fricreg-sim: --mun $d/munbad.txt: line 2: " structure --mass "$d/M3.mtx" --stiffness "$d/K3s.mtx" --contacts $d/J3.mtx --mun $d/munbad.txt --integrator newmark --dt 0.01 --t-end 1
+printf '0 1\n0.01 2\n0.025 3\n0.03 4\n' >"$d/ag_uneven.txt"
+printf '0 1\n' >"$d/ag_one.txt"
+good="--mass $d/M3.mtx $ok"
+expect_usage_error "^fricreg-sim: --ground-accel $d/ag_uneven.txt: sample 3: t = 0.025" structure $good --ground-accel "$d/ag_uneven.txt"
+expect_usage_error "^fricreg-sim: --ground-accel $d/ag_one.txt: 1 samples" structure $good --ground-accel "$d/ag_one.txt"
+expect_usage_error "^fricreg-sim: --influence $d/R3.mtx: the matrix is 2 x 1, expected 1 x 1" structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --influence $d/R3.mtx --integrator newmark --dt 0.01 --t-end 1
+# Bad options.
+expect_usage_error "--mass" structure $ok
+expect_usage_error "--integrator" structure --mass $d/M3.mtx --stiffness $d/K3s.mtx --contacts $d/J3.mtx --mun $d/mun3.txt --dt 0.01 --t-end 1
+expect_usage_error "newmark, hht, central, rk2, rk4" structure $good --integrator verlet
+expect_usage_error "--rayleigh" structure $good --damping "$d/C3.mtx" --rayleigh 0.4,0.0031
+expect_usage_error "--rayleigh" structure $good --rayleigh 0.4
+expect_usage_error "--rayleigh" structure $good --rayleigh 0.4,-1
+expect_usage_error "--alpha" structure $good --alpha -0.1
+expect_usage_error "^fricreg-sim: --alpha: .*alpha = -0.5 must be in \[-1/3, 0\]" structure $good --integrator hht --alpha -0.5
+expect_usage_error "--rtol" structure $good --rtol 1e-6
+expect_usage_error "--t-end" structure --mass $d/M3.mtx --stiffness $d/K3s.mtx --contacts $d/J3.mtx --mun $d/mun3.txt --integrator newmark --dt 0.01
+expect_usage_error "--eps" structure $good --eps 0
+expect_usage_error "^fricreg-sim: --dt: more than 2^31 steps" structure $good --dt 1e-12 --t-end 1
+
 echo "$((total - fails)) passed, $fails failed"
 [ $fails -eq 0 ]

@@ -105,6 +105,26 @@ START_TEST(newmark_sdof_period_and_energy)
 }
 END_TEST
 
+/* A caller who runs to each sample time t_k = k dt in turn (as fricreg-sim structure does):
+ * late in a run t_k - t_(k-1) rounds up to dt + 1 ulp of t, more than 1e-12 dt when t/dt is
+ * beyond about 10^4. run() once split such a step into dt and a zero-length sliver and failed
+ * ("dt is lost against t") at t = 4.0002 with dt = 2e-4; each call must be one step. */
+START_TEST(run_to_each_sample_time_is_one_step)
+{
+    const double mass = 2.385, k = 417.3, u0 = 0.0371, v0 = 0.0, dt = 2e-4;
+    fricreg_structure *s = make(1, 1);
+    ok(s, fricreg_structure_set_mass(s, 1, &mass));
+    ok(s, fricreg_structure_set_stiffness(s, 1, &k));
+    frictionless(s, 1);
+    ok(s, fricreg_structure_set_initial(s, 1, &u0, &v0));
+    for (int n = 1; n <= 25000; n++)
+        ok(s, fricreg_structure_run(s, dt, n * dt));
+    ck_assert_int_eq(stat(s, FRICREG_SSTAT_STEPS), 25000);
+    ck_assert_double_eq_tol(value(s, FRICREG_SVALUE_TIME), 25000 * dt, 1e-12);
+    fricreg_structure_free(s);
+}
+END_TEST
+
 /* 2 DOF, M = diag(1.3, 0.7) kg, K = [[k1 + k2, -k2], [-k2, k2]], k1 = 40.5, k2 = 23.1 N/m,
  * u0 = (0.012, -0.027) m at rest; dt = 0.0731 s. Undamped (_i = 0): each M-orthonormal mode
  * phi_k carries q_k0 = phi_k.M u0 as q_k0 cos(wb_k t). Rayleigh (_i = 1, a0 = 0.31 1/s,
@@ -939,6 +959,7 @@ static Suite *structure_suite(void)
     Suite *suite = suite_create("structure");
     TCase *linear = tcase_create("linear");
     tcase_add_test(linear, newmark_sdof_period_and_energy);
+    tcase_add_test(linear, run_to_each_sample_time_is_one_step);
     tcase_add_loop_test(linear, newmark_two_dof_modal, 0, 2);
     tcase_add_test(linear, hht_second_order_and_dissipative);
     tcase_add_test(linear, newmark_general_beta_gamma);

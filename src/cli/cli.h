@@ -57,6 +57,10 @@ fricreg_sim *cli_make_sim(const struct cli_run *run);
 int cli_parse_exact(int argc, char **argv, struct cli_run *run);
 int cli_exact_summary(const struct cli_run *run, FILE *out);
 
+/* structure.c: `fricreg-sim structure`, a linear structure from Matrix Market files
+ * (fricreg_structure.h); argv after the subcommand. Returns the exit status. */
+int cli_structure(int argc, char **argv, FILE *out);
+
 /* reproduce.c: the paper's experiments into dir, and the comparison table on stdout. */
 int cli_reproduce(int argc, char **argv);
 

@@ -13,6 +13,11 @@ static void usage(FILE *out)
     fputs("usage: fricreg-sim oscillator|chain|twoblock [options]\n"
           "       fricreg-sim exact [--a --omega --mun --x0 --v0] [--t-end T | --cycles N]\n"
           "       fricreg-sim reproduce --out DIR\n"
+          "       fricreg-sim structure --mass M.mtx --stiffness K.mtx [--damping C.mtx |\n"
+          "           --rayleigh A0,A1] --contacts J.mtx --mun MUN.txt [--influence R.mtx]\n"
+          "           [--ground-accel FILE] [--law L] [--eps E] --integrator newmark|hht|\n"
+          "           central|<GSL stepper> [--alpha A] [--rtol R --atol A] --dt DT --t-end T\n"
+          "           [--output summary|trajectory]   (docs/structural.md)\n"
           "       fricreg-sim --help | --version\n"
           "\n"
           "Common options (defaults in brackets):\n", out);
@@ -60,6 +65,8 @@ int main(int argc, char **argv)
     }
     if (strcmp(argv[1], "reproduce") == 0)
         return cli_reproduce(argc - 2, argv + 2);
+    if (strcmp(argv[1], "structure") == 0)
+        return cli_structure(argc - 2, argv + 2, stdout);
     struct cli_run run;
     if (strcmp(argv[1], "exact") == 0) {
         int status = cli_parse_exact(argc - 2, argv + 2, &run);

@@ -1,0 +1,602 @@
+/* structure.c — `fricreg-sim structure`: a linear structure with friction contacts
+ * (fricreg_structure.h) from Matrix Market files, run with Newmark, HHT-alpha, central
+ * difference or one of GSL's steppers; a JSON summary or a CSV row per step on stdout.
+ * Every bad option or file is one line on stderr naming it, exit 2, nothing on stdout. */
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "cli_input.h"
+#include "fricreg_structure.h"
+
+enum scheme { SCHEME_NONE, SCHEME_NEWMARK, SCHEME_HHT, SCHEME_CENTRAL, SCHEME_GSL };
+
+struct structure_options {
+    const char *mass, *stiffness, *damping, *contacts, *mun, *influence, *ground;
+    int rayleigh_given, alpha_given, law, integrator;
+    enum scheme scheme;
+    double a0, a1, eps, alpha, dt, t_end, rtol, atol;
+    enum cli_output output;
+};
+
+/* The model as read from the files: M, K, C (NULL: Rayleigh or none) n x n, J m x n. */
+struct structure_input {
+    size_t n, m, nrec;
+    double *M, *K, *C, *J, *mun, *r, *ag;
+    double t0, dt_rec;
+};
+
+static int usage_error(const char *option, const char *what)
+{
+    fprintf(stderr, "fricreg-sim: %s: %s\n", option, what);
+    return CLI_EXIT_USAGE;
+}
+
+static int parse_number(const char *option, const char *text, double *value)
+{
+    char *end = NULL;
+    errno = 0;
+    *value = strtod(text, &end);
+    if (end == text || *end != '\0' || errno == ERANGE || !isfinite(*value))
+        return usage_error(option, "not a finite number");
+    return 0;
+}
+
+/* --rayleigh A0,A1: two numbers >= 0 (the library names the range too; checked here first so
+ * that the message names the option). */
+static int parse_rayleigh(const char *text, struct structure_options *o)
+{
+    char *end = NULL;
+    errno = 0;
+    o->a0 = strtod(text, &end);
+    if (end == text || *end != ',' || errno == ERANGE)
+        return usage_error("--rayleigh", "expected A0,A1 (two numbers, comma-separated)");
+    const char *second = end + 1;
+    o->a1 = strtod(second, &end);
+    if (end == second || *end != '\0' || errno == ERANGE || !isfinite(o->a0) || !isfinite(o->a1))
+        return usage_error("--rayleigh", "expected A0,A1 (two finite numbers)");
+    if (o->a0 < 0.0 || o->a1 < 0.0)
+        return usage_error("--rayleigh", "A0 and A1 must be >= 0");
+    o->rayleigh_given = 1;
+    return 0;
+}
+
+static int parse_integrator(const char *text, struct structure_options *o)
+{
+    if (strcmp(text, "newmark") == 0)
+        o->scheme = SCHEME_NEWMARK;
+    else if (strcmp(text, "hht") == 0)
+        o->scheme = SCHEME_HHT;
+    else if (strcmp(text, "central") == 0)
+        o->scheme = SCHEME_CENTRAL;
+    else if ((o->integrator = fricreg_integrator_from_name(text)) != 0)
+        o->scheme = SCHEME_GSL;
+    else {
+        char names[256], what[320];
+        snprintf(what, sizeof what, "unknown integrator (newmark, hht, central, %s)",
+                 cli_names(names, sizeof names, fricreg_integrator_name, ", "));
+        return usage_error("--integrator", what);
+    }
+    return 0;
+}
+
+/* A file option: its name and where it is kept. */
+static const char **file_option(struct structure_options *o, const char *option)
+{
+    static const char *const names[] = {"--mass", "--stiffness", "--damping",     "--contacts",
+                                        "--mun",  "--influence", "--ground-accel"};
+    const char **slots[] = {&o->mass, &o->stiffness, &o->damping, &o->contacts,
+                            &o->mun,  &o->influence, &o->ground};
+    for (size_t k = 0; k < sizeof names / sizeof names[0]; k++)
+        if (strcmp(option, names[k]) == 0)
+            return slots[k];
+    return NULL;
+}
+
+static int parse_option(const char *option, const char *text, struct structure_options *o)
+{
+    const char **file = file_option(o, option);
+    if (file != NULL) {
+        *file = text;
+        return 0;
+    }
+    int status;
+    if (strcmp(option, "--rayleigh") == 0)
+        return parse_rayleigh(text, o);
+    if (strcmp(option, "--integrator") == 0)
+        return parse_integrator(text, o);
+    if (strcmp(option, "--law") == 0) {
+        o->law = fricreg_law_from_name(text);
+        if (o->law != 0)
+            return 0;
+        char names[256], what[300];
+        snprintf(what, sizeof what, "unknown law (%s)",
+                 cli_names(names, sizeof names, fricreg_law_name, ", "));
+        return usage_error(option, what);
+    }
+    if (strcmp(option, "--output") == 0) {
+        if (strcmp(text, "summary") == 0)
+            o->output = CLI_SUMMARY;
+        else if (strcmp(text, "trajectory") == 0)
+            o->output = CLI_TRAJECTORY;
+        else
+            return usage_error(option, "expected summary or trajectory");
+        return 0;
+    }
+    static const char *const positive[] = {"--eps", "--dt", "--t-end"};
+    double *positive_slot[] = {&o->eps, &o->dt, &o->t_end};
+    for (size_t k = 0; k < 3; k++)
+        if (strcmp(option, positive[k]) == 0) {
+            if ((status = parse_number(option, text, positive_slot[k])) != 0)
+                return status;
+            return *positive_slot[k] > 0.0 ? 0 : usage_error(option, "must be > 0");
+        }
+    if (strcmp(option, "--rtol") == 0 || strcmp(option, "--atol") == 0) {
+        double *slot = option[2] == 'r' ? &o->rtol : &o->atol;
+        if ((status = parse_number(option, text, slot)) != 0)
+            return status;
+        return *slot >= 0.0 ? 0 : usage_error(option, "must be >= 0");
+    }
+    if (strcmp(option, "--alpha") == 0) {
+        o->alpha_given = 1;
+        return parse_number(option, text, &o->alpha);
+    }
+    return usage_error(option, "unknown option for structure (see fricreg-sim --help)");
+}
+
+/* Options that need others, or exclude them. */
+static int check_options(const struct structure_options *o)
+{
+    static const char *const required[] = {"--mass", "--stiffness", "--contacts", "--mun"};
+    const char *given[] = {o->mass, o->stiffness, o->contacts, o->mun};
+    for (size_t k = 0; k < 4; k++)
+        if (given[k] == NULL)
+            return usage_error(required[k], "missing (a file is required)");
+    if (o->scheme == SCHEME_NONE)
+        return usage_error("--integrator", "missing (newmark, hht, central or a GSL stepper)");
+    if (o->dt == 0.0)
+        return usage_error("--dt", "missing");
+    if (o->t_end == 0.0)
+        return usage_error("--t-end", "missing");
+    if (o->t_end / o->dt > 2147483647.0)
+        return usage_error("--dt", "more than 2^31 steps to --t-end");
+    if (o->damping != NULL && o->rayleigh_given)
+        return usage_error("--rayleigh", "give --damping or --rayleigh, not both");
+    if (o->alpha_given && o->scheme != SCHEME_HHT)
+        return usage_error("--alpha", "only --integrator hht has alpha");
+    if ((o->rtol > 0.0 || o->atol > 0.0) && o->scheme != SCHEME_GSL)
+        return usage_error(o->rtol > 0.0 ? "--rtol" : "--atol", "only GSL's steppers are adaptive");
+    return 0;
+}
+
+static int parse_structure(int argc, char **argv, struct structure_options *o)
+{
+    *o = (struct structure_options){.law = FRICREG_LAW_QUINN,
+                                    .alpha = -0.05,
+                                    .output = CLI_SUMMARY};
+    for (int k = 0; k < argc; k++) {
+        char *option = argv[k], *value = NULL;
+        if (strncmp(option, "--", 2) != 0)
+            return usage_error(option, "unexpected argument");
+        char *eq = strchr(option, '=');
+        if (eq != NULL) { /* --name=value */
+            *eq = '\0';
+            value = eq + 1;
+        } else if (k + 1 < argc) {
+            value = argv[++k];
+        } else {
+            return usage_error(option, "missing value");
+        }
+        int status = parse_option(option, value, o);
+        if (status != 0)
+            return status;
+    }
+    return check_options(o);
+}
+
+/* ---- Reading the model -------------------------------------------------------------------- */
+
+static void free_input(struct structure_input *in)
+{
+    free(in->M);
+    free(in->K);
+    free(in->C);
+    free(in->J);
+    free(in->mun);
+    free(in->r);
+    free(in->ag);
+}
+
+/* A matrix file that must be rows x cols (0: any). */
+static int read_sized(const char *option, const char *path, size_t rows, size_t cols,
+                      size_t *got_rows, size_t *got_cols, double **A)
+{
+    int status = cli_read_mtx(option, path, got_rows, got_cols, A);
+    if (status != 0)
+        return status;
+    if ((rows && *got_rows != rows) || (cols && *got_cols != cols)) {
+        fprintf(stderr, "fricreg-sim: %s %s: the matrix is %zu x %zu, expected %zu x %zu\n", option,
+                path, *got_rows, *got_cols, rows ? rows : *got_rows, cols ? cols : *got_cols);
+        free(*A);
+        *A = NULL;
+        return CLI_EXIT_USAGE;
+    }
+    return 0;
+}
+
+static int read_input(const struct structure_options *o, struct structure_input *in)
+{
+    size_t rows, cols;
+    int status = read_sized("--mass", o->mass, 0, 0, &in->n, &cols, &in->M);
+    if (status == 0 && cols != in->n) {
+        fprintf(stderr, "fricreg-sim: --mass %s: the matrix is %zu x %zu, not square\n", o->mass,
+                in->n, cols);
+        status = CLI_EXIT_USAGE;
+    }
+    if (status == 0)
+        status = read_sized("--stiffness", o->stiffness, in->n, in->n, &rows, &cols, &in->K);
+    if (status == 0 && o->damping != NULL)
+        status = read_sized("--damping", o->damping, in->n, in->n, &rows, &cols, &in->C);
+    if (status == 0)
+        status = read_sized("--contacts", o->contacts, 0, in->n, &in->m, &cols, &in->J);
+    if (status == 0 && o->influence != NULL)
+        status = read_sized("--influence", o->influence, in->n, 1, &rows, &cols, &in->r);
+    if (status == 0) {
+        status = cli_read_columns("--mun", o->mun, 1, &rows, &in->mun);
+        if (status == 0 && rows != in->m) {
+            fprintf(stderr, "fricreg-sim: --mun %s: %zu bounds, %s has %zu contacts (rows)\n",
+                    o->mun, rows, o->contacts, in->m);
+            status = CLI_EXIT_USAGE;
+        }
+    }
+    if (status == 0 && o->ground != NULL)
+        status = cli_read_record("--ground-accel", o->ground, &in->t0, &in->dt_rec, &in->nrec,
+                                 &in->ag);
+    return status;
+}
+
+/* ---- Setting up the structure ------------------------------------------------------------ */
+
+/* The library decides symmetry (its tolerance); the message names the most asymmetric entry
+ * as the file numbers it, from 1. */
+static void name_asymmetry(const char *option, const char *path, size_t n, const double A[])
+{
+    size_t bi = 1, bj = 0;
+    double worst = -1.0;
+    for (size_t i = 0; i < n; i++)
+        for (size_t j = 0; j < i; j++)
+            if (fabs(A[i * n + j] - A[j * n + i]) > worst) {
+                worst = fabs(A[i * n + j] - A[j * n + i]);
+                bi = i;
+                bj = j;
+            }
+    fprintf(stderr,
+            "fricreg-sim: %s %s: not symmetric: entry (%zu, %zu) = %.17g but "
+            "(%zu, %zu) = %.17g\n",
+            option, path, bi + 1, bj + 1, A[bi * n + bj], bj + 1, bi + 1, A[bj * n + bi]);
+}
+
+/* A refused model file: one line naming it, exit 2. */
+static int model_error(fricreg_structure *s, int status, const char *option, const char *path,
+                       size_t n, const double A[])
+{
+    if (status == FRICREG_ENOTSYM)
+        name_asymmetry(option, path, n, A);
+    else if (status == FRICREG_ENOTPSD)
+        fprintf(stderr,
+                "fricreg-sim: %s %s: the mass matrix is singular or not positive "
+                "definite (GSL's Cholesky decomposition fails)\n",
+                option, path);
+    else
+        fprintf(stderr, "fricreg-sim: %s %s: %s\n", option, path, fricreg_structure_errmsg(s));
+    return CLI_EXIT_USAGE;
+}
+
+/* Rows of J that are zero, named from 1 (the library refuses them too, numbered from 0). */
+static int check_contacts(const char *path, const struct structure_input *in)
+{
+    for (size_t i = 0; i < in->m; i++) {
+        int moves = 0;
+        for (size_t k = 0; k < in->n; k++)
+            moves |= in->J[i * in->n + k] != 0.0;
+        if (!moves) {
+            fprintf(stderr,
+                    "fricreg-sim: --contacts %s: row %zu is zero: contact %zu does not "
+                    "move\n",
+                    path, i + 1, i + 1);
+            return CLI_EXIT_USAGE;
+        }
+    }
+    return 0;
+}
+
+static int check_bounds(const char *path, const struct structure_input *in)
+{
+    for (size_t i = 0; i < in->m; i++)
+        if (in->mun[i] < 0.0) {
+            fprintf(stderr, "fricreg-sim: --mun %s: bound %zu = %g must be >= 0\n", path, i + 1,
+                    in->mun[i]);
+            return CLI_EXIT_USAGE;
+        }
+    return 0;
+}
+
+/* The default eps, 1 % of the ground's peak velocity |integral of a_g| (a velocity scale known
+ * before the run; docs/structural.md, "Choosing eps"), or the library's 1e-3 without motion. */
+static double default_eps(const struct structure_input *in)
+{
+    double v = 0.0, peak = 0.0;
+    for (size_t k = 1; k < in->nrec; k++) {
+        v += 0.5 * (in->ag[k - 1] + in->ag[k]) * in->dt_rec;
+        peak = fmax(peak, fabs(v));
+    }
+    return peak > 0.0 ? 0.01 * peak : 1e-3;
+}
+
+static int set_scheme(fricreg_structure *s, const struct structure_options *o)
+{
+    int status = FRICREG_OK;
+    if (o->scheme == SCHEME_HHT && (status = fricreg_structure_set_hht(s, o->alpha)) != 0)
+        return usage_error("--alpha", fricreg_structure_errmsg(s));
+    if (o->scheme == SCHEME_CENTRAL)
+        status = fricreg_structure_set_central_difference(s);
+    return status == FRICREG_OK ? 0 : usage_error("--integrator", fricreg_structure_errmsg(s));
+}
+
+static int setup(const struct structure_options *o, const struct structure_input *in,
+                 fricreg_structure *s, double *eps)
+{
+    int status = fricreg_structure_set_mass(s, in->n, in->M);
+    if (status != FRICREG_OK)
+        return model_error(s, status, "--mass", o->mass, in->n, in->M);
+    if ((status = fricreg_structure_set_stiffness(s, in->n, in->K)) != FRICREG_OK)
+        return model_error(s, status, "--stiffness", o->stiffness, in->n, in->K);
+    if (in->C != NULL && (status = fricreg_structure_set_damping(s, in->n, in->C)) != FRICREG_OK)
+        return model_error(s, status, "--damping", o->damping, in->n, in->C);
+    if (o->rayleigh_given && fricreg_structure_set_rayleigh(s, o->a0, o->a1) != FRICREG_OK)
+        return usage_error("--rayleigh", fricreg_structure_errmsg(s));
+    if ((status = check_contacts(o->contacts, in)) != 0)
+        return status;
+    if ((status = fricreg_structure_set_contacts(s, in->m, in->n, in->J)) != FRICREG_OK)
+        return model_error(s, status, "--contacts", o->contacts, in->n, NULL);
+    if ((status = check_bounds(o->mun, in)) != 0)
+        return status;
+    if ((status = fricreg_structure_set_bounds(s, in->m, in->mun)) != FRICREG_OK)
+        return model_error(s, status, "--mun", o->mun, in->n, NULL);
+    if (in->r != NULL && (status = fricreg_structure_set_influence(s, in->n, in->r)) != FRICREG_OK)
+        return model_error(s, status, "--influence", o->influence, in->n, NULL);
+    if (in->r == NULL && in->ag != NULL) { /* every DOF translates with the ground */
+        double *ones = malloc(in->n * sizeof *ones);
+        if (ones == NULL)
+            return usage_error("--ground-accel", "out of memory");
+        for (size_t k = 0; k < in->n; k++)
+            ones[k] = 1.0;
+        status = fricreg_structure_set_influence(s, in->n, ones);
+        free(ones);
+        if (status != FRICREG_OK)
+            return usage_error("--ground-accel", fricreg_structure_errmsg(s));
+    }
+    if (in->ag != NULL &&
+        fricreg_structure_set_ground_accel(s, in->t0, in->dt_rec, in->nrec, in->ag) != 0)
+        return model_error(s, FRICREG_EINVAL, "--ground-accel", o->ground, in->n, NULL);
+    *eps = o->eps > 0.0 ? o->eps : default_eps(in);
+    if (fricreg_structure_set_law(s, o->law, *eps) != FRICREG_OK)
+        return usage_error("--eps", fricreg_structure_errmsg(s));
+    return set_scheme(s, o);
+}
+
+/* ---- Running ------------------------------------------------------------------------------ */
+
+/* What a run collects beside the structure's own records. */
+struct structure_run {
+    double *u, *v, *f, *peak; /* [n], [n], [m], [n] */
+    FILE *rows;               /* CSV rows, or NULL */
+};
+
+static void csv_header(FILE *out, size_t n, size_t m)
+{
+    fputs("t", out);
+    for (size_t i = 0; i < n; i++)
+        fprintf(out, ",u%zu", i + 1);
+    for (size_t i = 0; i < n; i++)
+        fprintf(out, ",v%zu", i + 1);
+    for (size_t i = 0; i < m; i++)
+        fprintf(out, ",f%zu", i + 1);
+    fputc('\n', out);
+}
+
+static void observe(const fricreg_structure *s, const struct structure_input *in,
+                    struct structure_run *run)
+{
+    fricreg_structure_get_state(s, in->n, run->u, run->v, NULL);
+    for (size_t i = 0; i < in->n; i++)
+        run->peak[i] = fmax(run->peak[i], fabs(run->u[i]));
+    if (run->rows == NULL)
+        return;
+    double t = 0.0;
+    fricreg_structure_get_value(s, FRICREG_SVALUE_TIME, &t);
+    fricreg_structure_get_forces(s, in->m, run->f);
+    fprintf(run->rows, "%.17g", t);
+    for (size_t i = 0; i < in->n; i++)
+        fprintf(run->rows, ",%.17g", run->u[i]);
+    for (size_t i = 0; i < in->n; i++)
+        fprintf(run->rows, ",%.17g", run->v[i]);
+    for (size_t i = 0; i < in->m; i++)
+        fprintf(run->rows, ",%.17g", run->f[i]);
+    fputc('\n', run->rows);
+}
+
+static double svalue(const fricreg_structure *s, int which)
+{
+    double v = 0.0;
+    fricreg_structure_get_value(s, which, &v);
+    return v;
+}
+
+/* Steps of dt to t_end, the last one shortened (as fricreg_structure_run counts them), the
+ * state observed after each; GSL's steppers are run from sample to sample (adaptive ones
+ * restart at each with dt as their first step). */
+static int advance(fricreg_structure *s, const struct structure_options *o,
+                   const struct structure_input *in, struct structure_run *run)
+{
+    double steps = ceil(o->t_end / o->dt * (1.0 - 1e-12)); /* <= 2^31: check_options */
+    int64_t nsteps = steps < 1.0 ? 1 : (int64_t)steps;
+    observe(s, in, run);
+    for (int64_t k = 1; k <= nsteps; k++) {
+        double t1 = k == nsteps ? o->t_end : (double)k * o->dt;
+        /* One step of exactly t1 - t: k dt - (k - 1) dt may exceed dt by a rounding, which
+         * would make run() split it. */
+        double h = t1 - svalue(s, FRICREG_SVALUE_TIME);
+        int status = o->scheme == SCHEME_GSL
+                         ? fricreg_structure_run_ode(s, o->integrator, h, o->rtol, o->atol, t1)
+                         : fricreg_structure_run(s, h, t1);
+        if (status != FRICREG_OK)
+            return status;
+        observe(s, in, run);
+    }
+    return FRICREG_OK;
+}
+
+static int64_t sstat(const fricreg_structure *s, int which)
+{
+    int64_t v = 0;
+    fricreg_structure_get_stat(s, which, &v);
+    return v;
+}
+
+static void json_array(FILE *out, const char *name, size_t n, const double a[])
+{
+    fprintf(out, ", \"%s\": [", name);
+    for (size_t i = 0; i < n; i++)
+        fprintf(out, "%s%.17g", i ? ", " : "", a[i]);
+    fputc(']', out);
+}
+
+static const char *scheme_name(const struct structure_options *o)
+{
+    static const char *const names[] = {"", "newmark", "hht", "central"};
+    return o->scheme == SCHEME_GSL ? fricreg_integrator_name(o->integrator) : names[o->scheme];
+}
+
+static void write_summary(FILE *out, const struct structure_options *o,
+                          const struct structure_input *in, const fricreg_structure *s,
+                          const struct structure_run *run, double eps, double cpu_seconds)
+{
+    int64_t steps = sstat(s, FRICREG_SSTAT_STEPS);
+    double *D = run->f; /* the forces are not needed any more */
+    fricreg_structure_get_dissipation(s, in->m, D);
+    fprintf(out, "{\"system\": \"structure\", \"law\": \"%s\", \"integrator\": \"%s\", ",
+            fricreg_law_name(o->law), scheme_name(o));
+    if (o->scheme == SCHEME_HHT)
+        fprintf(out, "\"alpha\": %.17g, ", o->alpha);
+    fprintf(out, "\"adaptive\": %s, \"dt\": %.17g, \"rtol\": %.17g, \"atol\": %.17g, ",
+            o->rtol > 0.0 || o->atol > 0.0 ? "true" : "false", o->dt, o->rtol, o->atol);
+    fprintf(out,
+            "\"eps\": %.17g, \"steps\": %lld, \"t\": %.17g, \"ndof\": %zu, "
+            "\"ncontacts\": %zu",
+            eps, (long long)steps, svalue(s, FRICREG_SVALUE_TIME), in->n, in->m);
+    json_array(out, "x", in->n, run->u);
+    json_array(out, "v", in->n, run->v);
+    json_array(out, "peak_displacement", in->n, run->peak);
+    json_array(out, "dissipation_per_contact", in->m, D);
+    fprintf(out,
+            ", \"energy_balance\": {\"initial\": %.17g, \"input\": %.17g, "
+            "\"kinetic\": %.17g, \"strain\": %.17g, \"viscous\": %.17g, \"friction\": %.17g, "
+            "\"residual\": %.17g}",
+            svalue(s, FRICREG_SVALUE_INITIAL), svalue(s, FRICREG_SVALUE_INPUT),
+            svalue(s, FRICREG_SVALUE_KINETIC), svalue(s, FRICREG_SVALUE_STRAIN),
+            svalue(s, FRICREG_SVALUE_VISCOUS), svalue(s, FRICREG_SVALUE_FRICTION),
+            svalue(s, FRICREG_SVALUE_RESIDUAL));
+    int64_t iterations = sstat(s, FRICREG_SSTAT_NEWTON_ITERATIONS);
+    fprintf(out,
+            ", \"newton_iterations\": {\"mean\": %.17g, \"max\": %lld}, "
+            "\"newton_failures\": %lld, \"cpu_seconds\": %.6f}\n",
+            steps > 0 ? (double)iterations / (double)steps : 0.0,
+            (long long)sstat(s, FRICREG_SSTAT_NEWTON_MAX),
+            (long long)sstat(s, FRICREG_SSTAT_NEWTON_FAILURES), cpu_seconds);
+}
+
+/* A refused step size is a bad --dt (exit 2); any other failure of the run exits 1. */
+static int run_failed(const fricreg_structure *s, int status)
+{
+    double t = svalue(s, FRICREG_SVALUE_TIME);
+    if (status == FRICREG_ESTEP) {
+        fprintf(stderr, "fricreg-sim: --dt: %s\n", fricreg_structure_errmsg(s));
+        return CLI_EXIT_USAGE;
+    }
+    fprintf(stderr, "fricreg-sim: structure: the run failed after t = %g: %s\n", t,
+            fricreg_structure_errmsg(s));
+    return CLI_EXIT_RUN;
+}
+
+static void copy_stream(FILE *from, FILE *to)
+{
+    char chunk[1 << 16];
+    size_t got;
+    rewind(from);
+    while ((got = fread(chunk, 1, sizeof chunk, from)) > 0)
+        fwrite(chunk, 1, got, to);
+}
+
+/* Runs the set-up structure; the trajectory goes to a temporary file first, so that a failed
+ * run writes nothing to out. */
+static int run_structure(fricreg_structure *s, const struct structure_options *o,
+                         const struct structure_input *in, double eps, FILE *out)
+{
+    struct structure_run run = {0};
+    double *buf = calloc(3 * in->n + in->m, sizeof *buf);
+    if (buf == NULL)
+        return usage_error("structure", "out of memory");
+    run.u = buf;
+    run.v = buf + in->n;
+    run.peak = buf + 2 * in->n;
+    run.f = buf + 3 * in->n;
+    if (o->output == CLI_TRAJECTORY) {
+        if ((run.rows = tmpfile()) == NULL) {
+            free(buf);
+            fprintf(stderr, "fricreg-sim: cannot create a temporary file\n");
+            return CLI_EXIT_RUN;
+        }
+        csv_header(run.rows, in->n, in->m);
+    }
+    clock_t start = clock();
+    int status = advance(s, o, in, &run);
+    double cpu_seconds = (double)(clock() - start) / CLOCKS_PER_SEC;
+    if (status != FRICREG_OK)
+        status = run_failed(s, status);
+    else if (run.rows != NULL)
+        copy_stream(run.rows, out);
+    else
+        write_summary(out, o, in, s, &run, eps, cpu_seconds);
+    if (run.rows != NULL)
+        fclose(run.rows);
+    free(buf);
+    return status;
+}
+
+int cli_structure(int argc, char **argv, FILE *out)
+{
+    struct structure_options o;
+    int status = parse_structure(argc, argv, &o);
+    if (status != 0)
+        return status;
+    struct structure_input in = {0};
+    if ((status = read_input(&o, &in)) != 0) {
+        free_input(&in);
+        return status;
+    }
+    fricreg_structure *s = NULL;
+    if (fricreg_structure_create(in.n, in.m, &s) != FRICREG_OK) {
+        free_input(&in);
+        return usage_error("structure", "cannot create the structure (out of memory)");
+    }
+    double eps = 0.0;
+    status = setup(&o, &in, s, &eps);
+    if (status == 0)
+        status = run_structure(s, &o, &in, eps, out);
+    fricreg_structure_free(s);
+    free_input(&in);
+    return status;
+}
