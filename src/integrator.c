@@ -12,6 +12,16 @@
  * embedded 4(5) pairs are weakly unstable on that axis), rk8pd 3.71. Implicit steppers are
  * A-stable; the multistep ones report their own failure.
  *
+ * The step guard (src/sim.c) uses a third column, the stick-zone bound on dt*lambda. |R(-z)| <= 1
+ * is necessary but not sufficient there: the zone is linear only for |zdot - xi| < eps/2, and a
+ * stage that overshoots it meets the saturated (weaker) force, so the step is no longer the
+ * linear one. Measured with tests/test_guard.c's sweep (the three systems; (3), tanh and (4);
+ * both partitions; mun up to (10, 5)), the smallest dt*lambda that leaves a stick or puts
+ * energy in is 2.77 for rkf45 (oscillator, mun = 3, eps = 0.05, law (3); 2.88 for (4)), whose
+ * stages overshoot most (largest stage |Y_i/y0| at z = 2.78: rkf45 9.7, rkck 3.8, rk8pd 1.0);
+ * it gets 2.5. For the others the first failure lies beyond the real-axis bound (rk2 3.1,
+ * rk4 2.99, rkck 4.26, rk8pd 5.19: chain n = 8, eps = 0.002, law (3)), which is kept.
+ *
  * Fixed steps of rk4 are not GSL's (rk4_classic.c): GSL's rk4 grid (two classical steps per
  * call, `substeps` = 2) without the error estimate, 4 right-hand sides per step where GSL's
  * rk4 spends 6, for the same numbers to rounding. "rk4-gsl" keeps GSL's for comparison. */
@@ -21,7 +31,8 @@
 #include "fricreg_sim.h"
 #include "integrator.h"
 
-#define ROW(ID, NAME, REAL, IMAG, SUB, TOL) {ID, #NAME, gsl_type_##NAME, REAL, IMAG, SUB, TOL, NULL}
+#define ROW(ID, NAME, REAL, ZONE, IMAG, SUB, TOL) \
+    {ID, #NAME, gsl_type_##NAME, REAL, ZONE, IMAG, SUB, TOL, NULL}
 
 /* gsl_odeiv2_step_* are data symbols; functions returning them keep the table constant. */
 #define GSL_TYPE(NAME) \
@@ -39,20 +50,20 @@ GSL_TYPE(msadams)
 GSL_TYPE(msbdf)
 
 static const struct fr_integrator table[] = {
-    ROW(FRICREG_INT_RK2, rk2, 2.5, 1.73, 1, 1e-6),
+    ROW(FRICREG_INT_RK2, rk2, 2.5, 2.5, 1.73, 1, 1e-6),
     /* rk4: GSL's for adaptive steps, fricreg's classical RK4 for fixed ones (same numbers) */
-    {FRICREG_INT_RK4, "rk4", gsl_type_rk4, 2.78, 2.82, 2, 1e-6, fr_step_rk4_classic},
-    ROW(FRICREG_INT_RKF45, rkf45, 3.6, 0.7, 1, 1e-6),
-    ROW(FRICREG_INT_RKCK, rkck, 3.7, 0.88, 1, 1e-6),
-    ROW(FRICREG_INT_RK8PD, rk8pd, 5.1, 3.7, 1, 1e-6),
-    ROW(FRICREG_INT_RK1IMP, rk1imp, 0.0, 0.0, 1, 1e300),
-    ROW(FRICREG_INT_RK2IMP, rk2imp, 0.0, 0.0, 1, 1e300),
-    ROW(FRICREG_INT_RK4IMP, rk4imp, 0.0, 0.0, 1, 1e300),
-    ROW(FRICREG_INT_BSIMP, bsimp, 0.0, 0.0, 1, 1e-6),
-    ROW(FRICREG_INT_MSADAMS, msadams, 0.0, 0.0, 1, 1e-6),
-    ROW(FRICREG_INT_MSBDF, msbdf, 0.0, 0.0, 1, 1e-6),
+    {FRICREG_INT_RK4, "rk4", gsl_type_rk4, 2.78, 2.78, 2.82, 2, 1e-6, fr_step_rk4_classic},
+    ROW(FRICREG_INT_RKF45, rkf45, 3.6, 2.5, 0.7, 1, 1e-6),
+    ROW(FRICREG_INT_RKCK, rkck, 3.7, 3.7, 0.88, 1, 1e-6),
+    ROW(FRICREG_INT_RK8PD, rk8pd, 5.1, 5.1, 3.7, 1, 1e-6),
+    ROW(FRICREG_INT_RK1IMP, rk1imp, 0.0, 0.0, 0.0, 1, 1e300),
+    ROW(FRICREG_INT_RK2IMP, rk2imp, 0.0, 0.0, 0.0, 1, 1e300),
+    ROW(FRICREG_INT_RK4IMP, rk4imp, 0.0, 0.0, 0.0, 1, 1e300),
+    ROW(FRICREG_INT_BSIMP, bsimp, 0.0, 0.0, 0.0, 1, 1e-6),
+    ROW(FRICREG_INT_MSADAMS, msadams, 0.0, 0.0, 0.0, 1, 1e-6),
+    ROW(FRICREG_INT_MSBDF, msbdf, 0.0, 0.0, 0.0, 1, 1e-6),
     /* GSL's rk4 for fixed steps too, for comparison */
-    {FRICREG_INT_RK4_GSL, "rk4-gsl", gsl_type_rk4, 2.78, 2.82, 2, 1e-6, NULL},
+    {FRICREG_INT_RK4_GSL, "rk4-gsl", gsl_type_rk4, 2.78, 2.78, 2.82, 2, 1e-6, NULL},
 };
 
 const struct fr_integrator *fr_integrator_find(int id)

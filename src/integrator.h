@@ -11,6 +11,9 @@ struct fr_integrator {
     /* Largest stable dt*lambda on the negative real axis for a fixed step of this stepper
      * (0: not checked a priori, the stepper reports its own failure). */
     double real_axis_bound;
+    /* Largest dt*lambda, lambda = fricreg_ctx_stick_stiffness, that the step guard accepts:
+     * the real-axis bound, or less where the stick zone fails before it (integrator.c). */
+    double stick_zone_bound;
     /* Largest dt*omega on the imaginary axis (an undamped oscillation of frequency omega) at
      * which the amplification per fixed step stays below 1 + 1e-4 (0: not checked). */
     double imag_axis_bound;

@@ -15,6 +15,8 @@ struct fricreg_sim {
     int law;
     int partition; /* enum fricreg_partition, passed to the context */
     int running;   /* 1 while fricreg_sim_run steps: the observer may not change the run */
+    int unguarded; /* tests only (test_guard.c, static library): skip the step guard, to see
+                    * what a refused step would have done */
     double eps_set; /* 0: the paper's rule */
     int integrator;
     double dt, rtol, atol;

@@ -62,6 +62,13 @@ expect_usage_error "--t-end" oscillator --t-end 5 --cycles 2
 expect_usage_error "--output" oscillator --output xml
 expect_usage_error "--a" oscillator --a
 expect_usage_error "--rtol" oscillator --rtol -1e-6
+# strtod's underflow (ERANGE with a subnormal or zero) is the number written; its overflow
+# (ERANGE with HUGE_VAL) is refused. The stuck oscillator keeps a subnormal x0 as it is.
+expect_output '"x": \[9\.99999999999996[0-9]*e-311\]' oscillator --x0 1e-310 --t-end 5
+expect_output '"x": \[-9\.99999999999996[0-9]*e-311\]' oscillator --x0=-1e-310 --t-end 5
+expect_output '"x": \[0\]' oscillator --x0 1e-400 --t-end 5
+expect_usage_error "^fricreg-sim: --x0: out of the range of a double$" oscillator --x0 -1e999
+expect_usage_error "^fricreg-sim: --dt: must be > 0$" oscillator --dt 1e-400
 # A step too large for the stick zone of (4): dt * 2 mun/eps = 5 > 2.78 (RK4).
 expect_usage_error "--dt" oscillator --dt 0.05 --eps 0.02
 expect_usage_error "--out" reproduce

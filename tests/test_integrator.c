@@ -4,12 +4,14 @@
  * real axis (rk2 2.5, rk4 2.78 per classical step, rkf45 3.6, rkck 3.7, rk8pd 5.1), rounded
  * down from values "measured by applying each GSL stepper with a fixed step to y' = -y"
  * (2.51, 2.785, 3.67, 3.73, 5.16). fricreg_sim_run refuses a fixed step with dt*lambda above
- * the bound, lambda = 2 mun/eps for law (4). Checked here twice:
+ * the stick-zone bound (lambda = 2 mun/eps for law (4)): the real-axis bound, except rkf45's
+ * 2.5, where the nonlinear zone fails first (src/integrator.c; test_guard.c measures it).
+ * Checked here twice:
  *   - directly on GSL: one fixed step of y' = -y with h = z gives y = R(-z), the stepper's
  *     stability function; |R(-z)| <= 1 on (0, bound], and the bound is tight;
  *   - through the public API: the oscillator stuck in the linear zone of (4) is the decay
- *     v' = -lambda v exactly (see test_oscillator.c), so just below the bound the run succeeds
- *     and |v| decays, just above it the run is FRICREG_ESTEP.
+ *     v' = -lambda v exactly (see test_oscillator.c), so just below the guard's bound the run
+ *     succeeds and |v| decays, just above it the run is FRICREG_ESTEP.
  * GSL's rk4 step of h is two classical RK4 steps of h/2 (step doubling), so its R at h = 2z is
  * the classical R(-z) squared: fricreg's dt is the classical step. */
 #include <check.h>
@@ -27,14 +29,15 @@ struct explicit_row {
     double measured;        /* src/integrator.c's comment: the measured value */
     double gsl_steps_per_dt; /* GSL step length per fricreg dt: 2 for rk4 (step doubling) */
     double imag_bound;      /* src/integrator.c: dt*omega with amplification <= 1 + 1e-4 */
+    double guard_bound;     /* src/integrator.c: the stick-zone bound the guard applies */
 };
 
 static const struct explicit_row rows[] = {
-    {FRICREG_INT_RK2, 2.5, 2.51, 1.0, 1.73},
-    {FRICREG_INT_RK4, 2.78, 2.785, 2.0, 2.82},
-    {FRICREG_INT_RKF45, 3.6, 3.67, 1.0, 0.7},
-    {FRICREG_INT_RKCK, 3.7, 3.73, 1.0, 0.88},
-    {FRICREG_INT_RK8PD, 5.1, 5.16, 1.0, 3.7},
+    {FRICREG_INT_RK2, 2.5, 2.51, 1.0, 1.73, 2.5},
+    {FRICREG_INT_RK4, 2.78, 2.785, 2.0, 2.82, 2.78},
+    {FRICREG_INT_RKF45, 3.6, 3.67, 1.0, 0.7, 2.5},
+    {FRICREG_INT_RKCK, 3.7, 3.73, 1.0, 0.88, 3.7},
+    {FRICREG_INT_RK8PD, 5.1, 5.16, 1.0, 3.7, 5.1},
 };
 #define NROWS ((int)(sizeof rows / sizeof rows[0]))
 
@@ -196,7 +199,7 @@ static fricreg_sim *stuck_oscillator(int id, double z)
 START_TEST(test_step_just_below_bound_runs_and_decays)
 {
     const struct explicit_row *r = &rows[_i];
-    fricreg_sim *sim = stuck_oscillator(r->id, 0.999 * r->table_bound);
+    fricreg_sim *sim = stuck_oscillator(r->id, 0.999 * r->guard_bound);
     int status = fricreg_sim_run(sim, 20.0);
     ck_assert_msg(status == FRICREG_OK, "%s: status %d (%s)", fricreg_integrator_name(r->id),
                   status, fricreg_sim_errmsg(sim));
@@ -212,7 +215,7 @@ END_TEST
 START_TEST(test_step_just_above_bound_is_estep)
 {
     const struct explicit_row *r = &rows[_i];
-    fricreg_sim *sim = stuck_oscillator(r->id, 1.001 * r->table_bound);
+    fricreg_sim *sim = stuck_oscillator(r->id, 1.001 * r->guard_bound);
     ck_assert_int_eq(fricreg_sim_run(sim, 20.0), FRICREG_ESTEP);
     ck_assert_int_eq(fricreg_sim_errcode(sim), FRICREG_ESTEP);
     double steps = NAN;

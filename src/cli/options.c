@@ -77,14 +77,18 @@ static int usage_error(const char *option, const char *what)
     return CLI_EXIT_USAGE;
 }
 
-/* A finite double, the whole of text. */
+/* A finite double, the whole of text. strtod sets ERANGE on underflow too (1e-310, 1e-400),
+ * returning the subnormal or zero nearest the text: that is the number meant, so it is kept;
+ * only an overflow (±HUGE_VAL) is refused. */
 static int parse_double(const char *option, const char *text, double *value)
 {
     char *end = NULL;
     errno = 0;
     *value = strtod(text, &end);
-    if (end == text || *end != '\0' || errno == ERANGE)
+    if (end == text || *end != '\0')
         return usage_error(option, "not a number");
+    if (errno == ERANGE && fabs(*value) == HUGE_VAL)
+        return usage_error(option, "out of the range of a double");
     if (!isfinite(*value))
         return usage_error(option, "not a finite number");
     return 0;
