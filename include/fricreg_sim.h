@@ -125,8 +125,12 @@ FRICREG_API int fricreg_sim_set_partition(fricreg_sim *sim, int partition);
 /** Select the integrator (enum fricreg_integrator) and its step control.
  *  rtol = atol = 0: fixed step dt > 0 (each cycle's last step is shortened to end on the cycle
  *  boundary). Otherwise adaptive with GSL's standard control (|error| <= atol + rtol |y|),
- *  dt the initial step. Implicit steppers use a finite-difference Jacobian
- *  (gsl_multiroot_fdjacobian).
+ *  dt the initial step, and no step longer than 1/32 of the forcing period: while every
+ *  contact sticks the state is at rest and the error estimate is zero, so an uncapped step
+ *  could pass over a whole slip phase. Implicit steppers (rk1imp, rk2imp, rk4imp, bsimp,
+ *  msbdf) get the exact Jacobian of the state equations: the context's tangent
+ *  (fricreg_ctx_tangent) chained through the system's linear kinematics, one right-hand side
+ *  per Jacobian, exact wherever the forces are differentiable.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown integrator, dt <= 0,
  *  rtol < 0 or atol < 0; FRICREG_ENONFINITE. */
 FRICREG_API int fricreg_sim_set_integrator(fricreg_sim *sim, int integrator, double dt,
@@ -205,8 +209,8 @@ enum fricreg_sim_stat {
      *  (src/integrator.c), a cycle's shortened last step as a full one and a retried step
      *  once. Adaptive: steps accepted by GSL's control. */
     FRICREG_SIM_STAT_STEPS = 0,
-    /** Right-hand-side evaluations by the stepper, the Jacobian's differences included (the
-     *  observer's friction evaluations are not). */
+    /** Right-hand-side evaluations by the stepper, one per Jacobian of an implicit stepper
+     *  included (the observer's friction evaluations are not). */
     FRICREG_SIM_STAT_RHS_EVALS = 1,
     /** Whole forcing cycles completed: the length of fricreg_sim_get_dissipation's record. */
     FRICREG_SIM_STAT_CYCLES = 2,

@@ -34,6 +34,7 @@ struct fricreg_sim {
     double *stick_fraction; /* [m] result */
     double *D;              /* [cycles] dissipation per cycle */
     double *jac_work;       /* [3 (2 ndof + 1)] finite-difference Jacobian scratch */
+    struct fr_jacobian *jac; /* the analytic Jacobian's maps, made at its first use */
     size_t cycles;
     double t;
     int64_t steps, rhs_evals, rejected_steps; /* enum fricreg_sim_stat */
@@ -42,5 +43,21 @@ struct fricreg_sim {
 
     struct fr_error err;
 };
+
+/* sim.c: the right-hand side of the ODE y = (x, v, D) for gsl_odeiv2_system (params: the
+ * fricreg_sim). Leaves the contacts' zdot, a_free and f of (t, y) in the simulation and the
+ * context. GSL_EBADFUNC, with sim->rhs_status set, if the context refuses the state. */
+int fr_sim_rhs(double t, const double y[], double dydt[], void *params);
+
+/* sim_jacobian.c: the Jacobian dfdy [dim x dim, row-major] and dfdt [dim] of fr_sim_rhs, for
+ * gsl_odeiv2_system, dim = 2 ndof + 1. fr_sim_jacobian is analytic (the system's linear maps
+ * through fricreg_ctx_tangent), or fr_sim_jacobian_fd for a system without maps;
+ * fr_sim_jacobian_fd is by forward differences. Both leave the context at an evaluation of
+ * (t, y) or a nearby state, and fail as fr_sim_rhs does; fr_sim_jacobian also with
+ * GSL_ENOMEM (rhs_status FRICREG_ENOMEM) when it cannot allocate its maps. */
+struct fr_jacobian;
+int fr_sim_jacobian(double t, const double y[], double *dfdy, double dfdt[], void *params);
+int fr_sim_jacobian_fd(double t, const double y[], double *dfdy, double dfdt[], void *params);
+void fr_jacobian_free(struct fr_jacobian *J);
 
 #endif

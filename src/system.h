@@ -54,6 +54,22 @@ struct fr_system_type {
                      double zdot[], double a_free[]);
     void (*accelerations)(const struct fr_system *sys, double t, const double x[],
                           const double a_free[], const double f[], double acc[]);
+
+    /* The system is linear in x, v and f (all three are):
+     *   zdot = Zv v + zdot_0(t),  a_free = Ax x + a_0(t),  acc = Cx x + Cf f + c_0(t),
+     * with acc's dependence through a_free folded into Cx and c_0. The maps below give these
+     * pieces for the analytic Jacobian of the drivers' ODE (sim_jacobian.c); a system that
+     * leaves any of them NULL gets the forward-difference Jacobian instead. */
+    /* Constant maps, dense row-major, every entry written: Zv = dzdot/dv [m x n],
+     * Ax = da_free/dx [m x n]. */
+    void (*contact_maps)(const struct fr_system *sys, double dzdot_dv[], double dafree_dx[]);
+    /* Constant maps, dense row-major, every entry written: Cx = dacc/dx at fixed f [n x n],
+     * Cf = dacc/df [n x m]. */
+    void (*body_maps)(const struct fr_system *sys, double dacc_dx[], double dacc_df[]);
+    /* The forcing's rates at t, at fixed x, v and f: dzdot_0/dt [m], da_0/dt [m],
+     * dc_0/dt [n]. */
+    void (*time_rates)(const struct fr_system *sys, double t, double dzdot_dt[],
+                       double dafree_dt[], double dacc_dt[]);
 };
 
 /* One system with its parameter values. */

@@ -90,6 +90,49 @@ static void accelerations(const struct fr_system *sys, double t, const double u[
         acc[i] = a_free[i] + f[i];
 }
 
+/* Row-major n x n: value on the diagonal, zero elsewhere. */
+static void fill_diagonal(size_t n, double value, double M[])
+{
+    for (size_t k = 0; k < n * n; k++)
+        M[k] = 0.0;
+    for (size_t i = 0; i < n; i++)
+        M[i * n + i] = value;
+}
+
+/* -n^2 K into S[n x n], row-major: the springs of contacts() as a matrix. */
+static void spring_matrix(size_t n, double S[])
+{
+    double n2 = (double)n * (double)n;
+    fill_diagonal(n, -2.0 * n2, S);
+    S[0] = -n2; /* block 1's free end: one spring */
+    for (size_t i = 0; i + 1 < n; i++)
+        S[i * n + i + 1] = S[(i + 1) * n + i] = n2;
+}
+
+/* zdot = v, a_free = -n^2 K u + n G(t) e_1, acc = a_free + f. */
+static void contact_maps(const struct fr_system *sys, double dzdot_dv[], double dafree_dx[])
+{
+    fill_diagonal(blocks(sys), 1.0, dzdot_dv);
+    spring_matrix(blocks(sys), dafree_dx);
+}
+
+static void body_maps(const struct fr_system *sys, double dacc_dx[], double dacc_df[])
+{
+    spring_matrix(blocks(sys), dacc_dx);
+    fill_diagonal(blocks(sys), 1.0, dacc_df);
+}
+
+/* Only block 1 is driven: d(n G)/dt = n a omega cos(omega t). */
+static void time_rates(const struct fr_system *sys, double t, double dzdot_dt[],
+                       double dafree_dt[], double dacc_dt[])
+{
+    size_t n = blocks(sys);
+    for (size_t i = 0; i < n; i++)
+        dzdot_dt[i] = dafree_dt[i] = dacc_dt[i] = 0.0;
+    dafree_dt[0] = dacc_dt[0] =
+        (double)n * sys->p[A] * sys->p[OMEGA] * cos(sys->p[OMEGA] * t);
+}
+
 const struct fr_system_type fr_chain_type = {
     .id = FRICREG_SYSTEM_CHAIN,
     .name = "chain",
@@ -105,4 +148,7 @@ const struct fr_system_type fr_chain_type = {
     .initial = initial,
     .contacts = contacts,
     .accelerations = accelerations,
+    .contact_maps = contact_maps,
+    .body_maps = body_maps,
+    .time_rates = time_rates,
 };

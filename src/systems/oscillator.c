@@ -73,6 +73,29 @@ static void accelerations(const struct fr_system *sys, double t, const double x[
     acc[0] = a_free[0] + f[0];
 }
 
+/* zdot = v, a_free = -x + a sin(omega t), acc = a_free + f. */
+static void contact_maps(const struct fr_system *sys, double dzdot_dv[], double dafree_dx[])
+{
+    (void)sys;
+    dzdot_dv[0] = 1.0;
+    dafree_dx[0] = -1.0;
+}
+
+static void body_maps(const struct fr_system *sys, double dacc_dx[], double dacc_df[])
+{
+    (void)sys;
+    dacc_dx[0] = -1.0;
+    dacc_df[0] = 1.0;
+}
+
+static void time_rates(const struct fr_system *sys, double t, double dzdot_dt[],
+                       double dafree_dt[], double dacc_dt[])
+{
+    double forcing_rate = sys->p[A] * sys->p[OMEGA] * cos(sys->p[OMEGA] * t);
+    dzdot_dt[0] = 0.0;
+    dafree_dt[0] = dacc_dt[0] = forcing_rate;
+}
+
 const struct fr_system_type fr_oscillator_type = {
     .id = FRICREG_SYSTEM_OSCILLATOR,
     .name = "oscillator",
@@ -88,4 +111,7 @@ const struct fr_system_type fr_oscillator_type = {
     .initial = initial,
     .contacts = contacts,
     .accelerations = accelerations,
+    .contact_maps = contact_maps,
+    .body_maps = body_maps,
+    .time_rates = time_rates,
 };

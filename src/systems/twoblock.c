@@ -85,6 +85,38 @@ static void accelerations(const struct fr_system *sys, double t, const double x[
     acc[1] = -sys->p[K] * x[1] + f[1];
 }
 
+/* contacts() and accelerations() as matrices: z1 = x1 - u, z2 = x2 - x1. */
+static void contact_maps(const struct fr_system *sys, double dzdot_dv[], double dafree_dx[])
+{
+    const double Zv[4] = {1.0, 0.0, -1.0, 1.0};
+    const double Ax[4] = {-1.0, 0.0, 1.0, -sys->p[K]};
+    for (size_t k = 0; k < 4; k++) {
+        dzdot_dv[k] = Zv[k];
+        dafree_dx[k] = Ax[k];
+    }
+}
+
+static void body_maps(const struct fr_system *sys, double dacc_dx[], double dacc_df[])
+{
+    const double Cx[4] = {-1.0, 0.0, 0.0, -sys->p[K]};
+    const double Cf[4] = {1.0, -1.0, 0.0, 1.0}; /* (7a), (7b): Zv Cf = W */
+    for (size_t k = 0; k < 4; k++) {
+        dacc_dx[k] = Cx[k];
+        dacc_df[k] = Cf[k];
+    }
+}
+
+/* The belt u = b sin(omega t) enters zdot_1 through -u' and a_free,1 through -u''. */
+static void time_rates(const struct fr_system *sys, double t, double dzdot_dt[],
+                       double dafree_dt[], double dacc_dt[])
+{
+    double omega = sys->p[BELT_OMEGA], b = sys->p[BELT_AMP], wt = omega * t;
+    dzdot_dt[0] = b * omega * omega * sin(wt);         /* -u'' */
+    dafree_dt[0] = b * omega * omega * omega * cos(wt); /* -u''' */
+    dzdot_dt[1] = dafree_dt[1] = 0.0;
+    dacc_dt[0] = dacc_dt[1] = 0.0;
+}
+
 const struct fr_system_type fr_twoblock_type = {
     .id = FRICREG_SYSTEM_TWOBLOCK,
     .name = "two blocks",
@@ -100,4 +132,7 @@ const struct fr_system_type fr_twoblock_type = {
     .initial = initial,
     .contacts = contacts,
     .accelerations = accelerations,
+    .contact_maps = contact_maps,
+    .body_maps = body_maps,
+    .time_rates = time_rates,
 };
