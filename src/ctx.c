@@ -5,11 +5,8 @@
 #include <stdint.h>
 #include <string.h>
 
-#include <gsl/gsl_eigen.h>
-#include <gsl/gsl_matrix.h>
-
 #include "ctx_internal.h"
-#include "gsl_guard.h"
+#include "eigen.h"
 #include "law.h"
 
 #define SYMMETRY_RTOL 1e-12
@@ -156,22 +153,17 @@ int fricreg_ctx_set_coupling_diagonal(fricreg_ctx *ctx, size_t m, const double w
  * Scaled so that entries near DBL_MAX cannot overflow inside the solver into a NaN. */
 static int min_eigenvalue(const double W[], size_t m, double scale, double *lambda_min)
 {
-    gsl_matrix *A = gsl_matrix_alloc(m, m);
-    gsl_vector *eval = gsl_vector_alloc(m);
-    gsl_eigen_symm_workspace *work = gsl_eigen_symm_alloc(m);
-    int status = FRICREG_ENOMEM;
-    if (A && eval && work) {
-        for (size_t k = 0; k < m * m; k++) /* a fresh gsl_matrix has tda == m */
-            A->data[k] = W[k] / scale;
-        gsl_error_handler_t *previous = fr_gsl_quiet();
-        int gsl_status = gsl_eigen_symm(A, eval, work);
-        fr_gsl_restore(previous);
-        status = gsl_status ? FRICREG_ENOTPSD : FRICREG_OK;
-        *lambda_min = gsl_vector_min(eval);
-    }
-    gsl_eigen_symm_free(work);
-    gsl_vector_free(eval);
-    gsl_matrix_free(A);
+    struct fr_eigen e;
+    if (fr_eigen_alloc(&e, m) != FRICREG_OK)
+        return FRICREG_ENOMEM;
+    for (size_t k = 0; k < m * m; k++)
+        e.a[k] = W[k] / scale;
+    int status = fr_eigen_solve(&e) ? FRICREG_ENOTPSD : FRICREG_OK;
+    *lambda_min = e.eval[0];
+    for (size_t i = 1; i < m && !isnan(*lambda_min); i++) /* a NaN is kept, to be refused */
+        if (!(e.eval[i] >= *lambda_min))
+            *lambda_min = e.eval[i];
+    fr_eigen_free(&e);
     return status;
 }
 

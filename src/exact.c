@@ -268,7 +268,9 @@ int fricreg_exact_create(double a, double omega, double mun, double x0, double v
     if (ex == NULL)
         return FRICREG_ENOMEM;
     *ex = (fricreg_exact){.a = a, .omega = omega, .mun = mun, .x0 = x0, .v0 = v0};
+    gsl_error_handler_t *previous = fr_gsl_quiet(); /* GSL reports a failed malloc to it */
     ex->brent = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    fr_gsl_restore(previous);
     if (ex->brent == NULL) {
         free(ex);
         return FRICREG_ENOMEM;

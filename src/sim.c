@@ -16,6 +16,7 @@
 #include "gsl_guard.h"
 #include "integrator.h"
 #include "law.h"
+#include "ode_driver.h"
 #include "sim_internal.h"
 
 #define MAX_GSL_STEPS 2147483648.0 /* 2^31 fixed steps in one run */
@@ -551,8 +552,8 @@ int fricreg_sim_run(fricreg_sim *sim, double t_end)
     double tol_rel = adaptive(sim) ? sim->rtol : 0.0;
     gsl_error_handler_t *previous = fr_gsl_quiet();
     const gsl_odeiv2_step_type *stepper = fr_integrator_stepper(integ, adaptive(sim));
-    gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys, stepper, sim->dt * integ->substeps,
-                                                         tol_abs, tol_rel);
+    gsl_odeiv2_driver *d = fr_ode_driver_alloc(&sys, stepper, sim->dt * integ->substeps,
+                                               tol_abs, tol_rel);
     fr_gsl_restore(previous);
     if (d == NULL)
         return sim_fail(sim, FRICREG_ENOMEM, "run: GSL driver allocation failed");

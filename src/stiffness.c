@@ -16,11 +16,8 @@
 #include <math.h>
 #include <string.h>
 
-#include <gsl/gsl_eigen.h>
-#include <gsl/gsl_matrix.h>
-
 #include "ctx_internal.h"
-#include "gsl_guard.h"
+#include "eigen.h"
 
 /* The slope s of the law at v = 0, per unit of mun: f = -s mun v / mun near v = 0. */
 static double law_slope(int law, double mun, double eps)
@@ -45,27 +42,21 @@ static double diagonal_rate(const fricreg_ctx *ctx)
 static int coupled_rate(fricreg_ctx *ctx, double *lambda)
 {
     size_t m = ctx->m;
-    gsl_matrix *A = gsl_matrix_alloc(m, m);
-    gsl_vector *eval = gsl_vector_alloc(m);
-    gsl_eigen_symm_workspace *work = gsl_eigen_symm_alloc(m);
-    int status = FRICREG_ENOMEM;
-    if (A && eval && work) {
-        for (size_t i = 0; i < m; i++) {
-            double si = sqrt(law_slope(ctx->law, ctx->mun[i], ctx->eps));
-            for (size_t j = 0; j < m; j++) {
-                double sj = sqrt(law_slope(ctx->law, ctx->mun[j], ctx->eps));
-                gsl_matrix_set(A, i, j, si * ctx->W[i * m + j] * sj);
-            }
+    struct fr_eigen e;
+    if (fr_eigen_alloc(&e, m) != FRICREG_OK)
+        return FRICREG_ENOMEM;
+    for (size_t i = 0; i < m; i++) {
+        double si = sqrt(law_slope(ctx->law, ctx->mun[i], ctx->eps));
+        for (size_t j = 0; j < m; j++) {
+            double sj = sqrt(law_slope(ctx->law, ctx->mun[j], ctx->eps));
+            e.a[i * m + j] = si * ctx->W[i * m + j] * sj;
         }
-        gsl_error_handler_t *previous = fr_gsl_quiet();
-        int gsl_status = gsl_eigen_symm(A, eval, work);
-        fr_gsl_restore(previous);
-        status = gsl_status ? FRICREG_ENOMEM : FRICREG_OK; /* symm fails only on bad sizes */
-        *lambda = fmax(0.0, gsl_vector_max(eval));
     }
-    gsl_eigen_symm_free(work);
-    gsl_vector_free(eval);
-    gsl_matrix_free(A);
+    int status = fr_eigen_solve(&e) ? FRICREG_ENOMEM : FRICREG_OK; /* fails only on bad sizes */
+    *lambda = 0.0;
+    for (size_t i = 0; i < m; i++)
+        *lambda = fmax(*lambda, e.eval[i]);
+    fr_eigen_free(&e);
     return status;
 }
 

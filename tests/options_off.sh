@@ -1,7 +1,8 @@
 #!/bin/sh
 # The core alone builds and passes its tests with every optional part switched off: the GSL
 # drivers and CLI, the Fortran interface, the examples (and the benchmarks, off by default).
-# The checks of the source tree (label docs) run once, in the build that runs this.
+# The checks of the source tree (label docs) and the sanitizer and valgrind runs (labels
+# sanitize, valgrind) run once, in the build that runs this.
 # Usage: options_off.sh SOURCE_DIR C_COMPILER
 src=$1 cc=$2
 work=$(mktemp -d "${TMPDIR:-/tmp}/fricreg-core.XXXXXX")
@@ -9,7 +10,7 @@ trap 'rm -rf "$work"' EXIT
 cmake -S "$src" -B "$work" -DCMAKE_C_COMPILER="$cc" -DFRICREG_DRIVERS=OFF \
       -DFRICREG_FORTRAN=OFF -DFRICREG_EXAMPLES=OFF -DFRICREG_BENCH=OFF >"$work/log" 2>&1 &&
     cmake --build "$work" -j2 >>"$work/log" 2>&1 &&
-    (cd "$work" && ctest --output-on-failure -LE docs) >>"$work/log" 2>&1
+    (cd "$work" && ctest --output-on-failure -LE "docs|sanitize|valgrind") >>"$work/log" 2>&1
 status=$?
 grep -E "tests passed|Failed|Error" "$work/log" | tail -n 5
 [ $status -eq 0 ] || tail -n 30 "$work/log"

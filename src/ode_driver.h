@@ -1,0 +1,18 @@
+/* ode_driver.h — internal: a gsl_odeiv2_driver assembled from GSL's parts, all or nothing.
+ *
+ * gsl_odeiv2_driver_alloc_y_new cannot be used when memory may run out: its control,
+ * gsl_odeiv2_control_y_new, passes the NULL of a failed allocation straight on to
+ * gsl_odeiv2_control_init, which dereferences it (GSL 2.7, ode-initval2/cstd.c). */
+#ifndef FRICREG_ODE_DRIVER_H
+#define FRICREG_ODE_DRIVER_H
+
+#include <gsl/gsl_odeiv2.h>
+
+/* The driver gsl_odeiv2_driver_alloc_y_new(sys, T, hstart, epsabs, epsrel) would make (the
+ * standard control on y with a_y = 1, a_dydt = 0), or NULL if any allocation failed, with
+ * nothing left allocated. GSL's error handler is kept out. Free with gsl_odeiv2_driver_free. */
+gsl_odeiv2_driver *fr_ode_driver_alloc(const gsl_odeiv2_system *sys,
+                                       const gsl_odeiv2_step_type *T, double hstart,
+                                       double epsabs, double epsrel);
+
+#endif

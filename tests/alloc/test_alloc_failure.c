@@ -1,0 +1,429 @@
+/* test_alloc_failure.c — every allocation made on the way through the library, failed in turn.
+ *
+ * The program is linked with fricreg's objects and GSL's static archives under
+ * -Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc,--wrap=free, so every allocation of fricreg
+ * and of the GSL code it calls passes through the wrappers below (the C library's own do not).
+ * For each scenario (create, set_coupling_dense, a simulation of each system with one stepper
+ * of each family, the exact solver), the scenario is run once with no failure to count its
+ * allocations n, then again for every k = 1..n with the k-th allocation failing. Each case
+ * must return FRICREG_OK or FRICREG_ENOMEM (with ENOMEM recorded in the object's error state
+ * where there is an object), call GSL's error handler never (GSL's default one aborts), and
+ * leave no block allocated once its objects are freed. fricreg_ctx_eval must not allocate at
+ * all (fricreg.h). Run under valgrind or ASan, the same loops also check what the counting
+ * cannot: no invalid access on any failure path. */
+#include <check.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_odeiv2.h>
+
+#include "fricreg.h"
+#include "fricreg_exact.h"
+#include "fricreg_sim.h"
+
+/* ---- The allocator hook ------------------------------------------------------------------ */
+
+void *__real_malloc(size_t size);
+void *__real_calloc(size_t n, size_t size);
+void *__real_realloc(void *p, size_t size);
+void __real_free(void *p);
+
+static int armed;      /* count and fail only between hook_arm and hook_disarm */
+static long n_allocs;  /* allocation requests while armed */
+static long fail_at;   /* the request that fails (1-based); 0: none */
+static long n_failed;  /* requests failed on purpose */
+static long n_unchecked; /* requests made inside GSL's unchecked steppers (below), not failed */
+static long live;      /* blocks allocated through the hook and not freed */
+
+/* Check (linked statically on Debian) allocates too, in its assertions: the scenarios run
+ * between hook_arm and hook_disarm make none, and record what they find in `violation`. */
+static void hook_arm(long k)
+{
+    n_allocs = n_failed = n_unchecked = 0;
+    fail_at = k;
+    armed = 1;
+}
+
+static void hook_disarm(void)
+{
+    armed = 0;
+}
+
+/* GSL steppers that do not survive a failed malloc (GSL 2.7): bsimp_alloc checks none of its
+ * 16 allocations and dereferences the first; the implicit and multistep steppers factor their
+ * Newton matrix with gsl_linalg_LU_decomp, which allocates its pivots at every call, unchecked,
+ * and crashes in LU_decomp_L3 on a NULL; msbdf_alloc also leaks on one of its paths. No caller
+ * can repair that from outside (the states are private to GSL), so allocations inside these
+ * steppers' alloc and apply are made but never failed, and are counted apart. */
+static const char *const gsl_unchecked[] = {"bsimp", "rk1imp", "rk2imp", "rk4imp", "msbdf",
+                                            "msadams"};
+static int in_unchecked; /* inside such a stepper */
+
+static int unchecked(const gsl_odeiv2_step_type *T)
+{
+    for (size_t k = 0; k < sizeof gsl_unchecked / sizeof gsl_unchecked[0]; k++)
+        if (strcmp(T->name, gsl_unchecked[k]) == 0)
+            return 1;
+    return 0;
+}
+
+gsl_odeiv2_step *__real_gsl_odeiv2_step_alloc(const gsl_odeiv2_step_type *T, size_t dim);
+int __real_gsl_odeiv2_step_apply(gsl_odeiv2_step *s, double t, double h, double y[],
+                                 double yerr[], const double dydt_in[], double dydt_out[],
+                                 const gsl_odeiv2_system *sys);
+
+gsl_odeiv2_step *__wrap_gsl_odeiv2_step_alloc(const gsl_odeiv2_step_type *T, size_t dim)
+{
+    int skip = unchecked(T);
+    in_unchecked += skip;
+    gsl_odeiv2_step *s = __real_gsl_odeiv2_step_alloc(T, dim);
+    in_unchecked -= skip;
+    return s;
+}
+
+int __wrap_gsl_odeiv2_step_apply(gsl_odeiv2_step *s, double t, double h, double y[],
+                                 double yerr[], const double dydt_in[], double dydt_out[],
+                                 const gsl_odeiv2_system *sys)
+{
+    int skip = unchecked(s->type);
+    in_unchecked += skip;
+    int status = __real_gsl_odeiv2_step_apply(s, t, h, y, yerr, dydt_in, dydt_out, sys);
+    in_unchecked -= skip;
+    return status;
+}
+
+static int hook_fails(void)
+{
+    if (armed && in_unchecked)
+        n_unchecked++;
+    if (!armed || in_unchecked || ++n_allocs != fail_at)
+        return 0;
+    n_failed++;
+    return 1;
+}
+
+void *__wrap_malloc(size_t size)
+{
+    void *p = hook_fails() ? NULL : __real_malloc(size);
+    live += armed && p != NULL;
+    return p;
+}
+
+void *__wrap_calloc(size_t n, size_t size)
+{
+    void *p = hook_fails() ? NULL : __real_calloc(n, size);
+    live += armed && p != NULL;
+    return p;
+}
+
+void *__wrap_realloc(void *old, size_t size)
+{
+    if (hook_fails())
+        return NULL; /* old stays allocated, as with a real failure */
+    void *p = __real_realloc(old, size);
+    if (armed)
+        live += (old == NULL && p != NULL) - (old != NULL && size == 0 && p == NULL);
+    return p;
+}
+
+void __wrap_free(void *p)
+{
+    live -= armed && p != NULL;
+    __real_free(p);
+}
+
+static char violation[256]; /* the first broken promise of a scenario, or "" */
+
+#define NOTE(...) \
+    do { \
+        if (violation[0] == '\0') \
+            snprintf(violation, sizeof violation, __VA_ARGS__); \
+    } while (0)
+
+/* GSL's handler, replaced for the whole program: any call means the library let GSL report an
+ * error through the handler, which by default aborts the caller's program. */
+static long gsl_handler_calls;
+static char gsl_handler_reason[256];
+
+static void count_gsl_error(const char *reason, const char *file, int line, int gsl_errno)
+{
+    gsl_handler_calls++;
+    snprintf(gsl_handler_reason, sizeof gsl_handler_reason, "%s:%d: %s (GSL error %d)", file,
+             line, reason, gsl_errno);
+}
+
+/* ---- Scenarios: each runs its calls, frees what it made, returns the first failure ---------- */
+
+#define M_DENSE 5
+
+/* A symmetric positive definite 5 x 5 W with unequal entries: tridiagonal, diagonally
+ * dominant (Gershgorin: every eigenvalue >= 2.385 - 2 * 0.731 > 0). */
+static void dense_w(double W[M_DENSE * M_DENSE])
+{
+    for (size_t i = 0; i < M_DENSE; i++)
+        for (size_t j = 0; j < M_DENSE; j++)
+            W[i * M_DENSE + j] = i == j ? 2.385 + 0.25 * (double)i
+                                 : (i + 1 == j || j + 1 == i) ? -0.731 : 0.0;
+}
+
+static int ctx_create_free(void)
+{
+    fricreg_ctx *ctx = NULL;
+    int status = fricreg_ctx_create(M_DENSE, &ctx);
+    if ((status == FRICREG_OK) != (ctx != NULL))
+        NOTE("ctx_create: status %d with handle %p", status, (void *)ctx);
+    fricreg_ctx_free(ctx);
+    return status;
+}
+
+static int ctx_dense(void)
+{
+    double W[M_DENSE * M_DENSE];
+    dense_w(W);
+    fricreg_ctx *ctx = NULL;
+    int status = fricreg_ctx_create(M_DENSE, &ctx);
+    if (status == FRICREG_OK) {
+        status = fricreg_ctx_set_coupling_dense(ctx, M_DENSE, W);
+        if (status != FRICREG_OK && fricreg_ctx_errcode(ctx) != status)
+            NOTE("set_coupling_dense: status %d, errcode %d", status, fricreg_ctx_errcode(ctx));
+    }
+    fricreg_ctx_free(ctx);
+    return status;
+}
+
+struct sim_case {
+    int system, integrator;
+    double dt, rtol, t_end;
+};
+
+static const struct sim_case *current_sim;
+
+static int sim_run(void)
+{
+    const struct sim_case *c = current_sim;
+    fricreg_sim *sim = NULL;
+    int status = fricreg_sim_create(c->system, &sim);
+    if ((status == FRICREG_OK) != (sim != NULL))
+        NOTE("sim_create: status %d with handle %p", status, (void *)sim);
+    if (status == FRICREG_OK)
+        status = fricreg_sim_set_integrator(sim, c->integrator, c->dt, c->rtol, c->rtol);
+    if (status == FRICREG_OK) {
+        status = fricreg_sim_run(sim, c->t_end);
+        if (status != FRICREG_OK && fricreg_sim_errcode(sim) != status)
+            NOTE("sim_run: status %d, errcode %d", status, fricreg_sim_errcode(sim));
+    }
+    fricreg_sim_free(sim);
+    return status;
+}
+
+/* test_exact's long no-stick case: 64 switches by t = 200, so about 80 phases by t = 250, and
+ * the phase list outgrows its first 64 entries (a realloc that keeps the earlier ones). */
+static int exact_run(void)
+{
+    fricreg_exact *ex = NULL;
+    int status = fricreg_exact_create(0.3, 1.0, 0.1, 1.2, 0.0, &ex);
+    if ((status == FRICREG_OK) != (ex != NULL))
+        NOTE("exact_create: status %d with handle %p", status, (void *)ex);
+    if (status == FRICREG_OK) {
+        status = fricreg_exact_run(ex, 250.0);
+        if (status != FRICREG_OK && fricreg_exact_errcode(ex) != status)
+            NOTE("exact_run: status %d, errcode %d", status, fricreg_exact_errcode(ex));
+        if (status == FRICREG_OK && fricreg_exact_nswitches(ex) <= 64)
+            NOTE("exact_run: %zu switches, the list never grew", fricreg_exact_nswitches(ex));
+    }
+    fricreg_exact_free(ex);
+    return status;
+}
+
+static int exact_solve(void)
+{
+    fricreg_exact *ex = NULL;
+    int status = fricreg_exact_solve(2.385, 1.3125, 0.4125, -0.5, 0.125, 60.0, &ex);
+    fricreg_exact_free(ex);
+    return status;
+}
+
+/* ---- The loop ---------------------------------------------------------------------------- */
+
+struct tally {
+    long cases, enomem, ok;
+    long unreached, bad_status, unrecorded, aborts, leaks; /* each must stay 0 */
+    char first[512]; /* the first of those, described */
+};
+/* One run of scenario with the k-th allocation failing (none for k = 0): its status, and in
+ * *made the allocations it asked for, *failed those refused. */
+static int run_case(int (*scenario)(void), long k, long *made, long *failed)
+{
+    violation[0] = '\0';
+    gsl_handler_calls = 0;
+    hook_arm(k);
+    int status = scenario();
+    hook_disarm();
+    *made = n_allocs;
+    *failed = n_failed;
+    return status;
+}
+
+/* Counts a broken promise in *count and keeps the first description. */
+#define BROKEN(t, count, ...) \
+    do { \
+        (t).count++; \
+        if ((t).first[0] == '\0') \
+            snprintf((t).first, sizeof (t).first, __VA_ARGS__); \
+    } while (0)
+
+/* Runs scenario with no failure, then with the k-th allocation failing for every k; every
+ * case runs, and the test fails at the end with the counts and the first broken promise. */
+static struct tally fail_each_allocation(const char *name, int (*scenario)(void))
+{
+    struct tally t = {0};
+    gsl_set_error_handler(count_gsl_error);
+    long n = 0, made = 0, failed = 0, live_before = live;
+    int status = run_case(scenario, 0, &n, &failed);
+    ck_assert_msg(status == FRICREG_OK && violation[0] == '\0' && live == live_before,
+                  "%s: status %d with no failure injected %s", name, status, violation);
+    ck_assert_msg(n > 0, "%s: allocates nothing, so the loop tests nothing", name);
+    for (long k = 1; k <= n; k++) {
+        live_before = live;
+        status = run_case(scenario, k, &made, &failed);
+        t.cases++;
+        t.enomem += status == FRICREG_ENOMEM;
+        t.ok += status == FRICREG_OK;
+        if (failed != 1)
+            BROKEN(t, unreached, "allocation %ld of %ld not reached (%ld made)", k, n, made);
+        if (status != FRICREG_OK && status != FRICREG_ENOMEM)
+            BROKEN(t, bad_status, "allocation %ld of %ld failed: status %d (%s)", k, n, status,
+                   fricreg_strerror(status));
+        if (violation[0] != '\0')
+            BROKEN(t, unrecorded, "allocation %ld of %ld failed: %s", k, n, violation);
+        if (gsl_handler_calls != 0)
+            BROKEN(t, aborts, "allocation %ld of %ld failed: GSL's error handler was called "
+                   "(%s); GSL's default handler aborts", k, n, gsl_handler_reason);
+        if (live != live_before)
+            BROKEN(t, leaks, "allocation %ld of %ld failed: %ld block(s) leaked", k, n,
+                   live - live_before);
+    }
+    printf("%s: %ld allocations (+%ld in GSL's unchecked steppers), %ld cases: %ld ENOMEM, "
+           "%ld OK; %ld aborts, %ld leaks, %ld other status, %ld unrecorded, %ld unreached\n",
+           name, n, n_unchecked, t.cases, t.enomem, t.ok, t.aborts, t.leaks, t.bad_status,
+           t.unrecorded, t.unreached);
+    fflush(stdout); /* Check's child exits without flushing on a failed assertion */
+    ck_assert_msg(t.unreached + t.bad_status + t.unrecorded + t.aborts + t.leaks == 0, "%s: %s",
+                  name, t.first);
+    return t;
+}
+
+START_TEST(test_ctx_create)
+{
+    struct tally t = fail_each_allocation("ctx_create", ctx_create_free);
+    ck_assert_int_eq(t.enomem, t.cases); /* nothing to fall back on: each failure is reported */
+}
+END_TEST
+
+START_TEST(test_ctx_set_coupling_dense)
+{
+    struct tally t = fail_each_allocation("ctx_set_coupling_dense", ctx_dense);
+    ck_assert_int_eq(t.enomem, t.cases);
+}
+END_TEST
+
+/* fricreg.h: "fricreg_ctx_eval never allocates". With every allocation failing, evaluations
+ * under both partitions, in stick and in slip, with a dense W, still succeed. */
+START_TEST(test_eval_does_not_allocate)
+{
+    double W[M_DENSE * M_DENSE], f[M_DENSE], f_eq[M_DENSE];
+    dense_w(W);
+    const double mun[M_DENSE] = {0.4125, 1.25, 0.3175, 2.0625, 0.8125};
+    const double zdot[M_DENSE] = {1e-5, -0.375, 2.5e-4, 0.0, 1.875};
+    const double a_free[M_DENSE] = {0.9375, -3.25, 0.0625, 1.625, -0.4375};
+    fricreg_ctx *ctx = NULL;
+    ck_assert_int_eq(fricreg_ctx_create(M_DENSE, &ctx), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, M_DENSE, W), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, M_DENSE, mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, 0.02), FRICREG_OK);
+    for (int partition = 0; partition < 2; partition++) {
+        ck_assert_int_eq(fricreg_ctx_set_partition(ctx, partition ? FRICREG_PARTITION_PAPER
+                                                                  : FRICREG_PARTITION_CONSISTENT),
+                         FRICREG_OK);
+        int with_feq = FRICREG_ENOMEM, without = FRICREG_ENOMEM;
+        hook_arm(1); /* the first request would fail: none may be made */
+        with_feq = fricreg_ctx_eval(ctx, M_DENSE, zdot, a_free, f, f_eq);
+        without = fricreg_ctx_eval(ctx, M_DENSE, zdot, a_free, f, NULL);
+        hook_disarm();
+        ck_assert_int_eq(with_feq, FRICREG_OK);
+        ck_assert_int_eq(without, FRICREG_OK);
+        ck_assert_msg(n_allocs == 0, "partition %d: eval made %ld allocations", partition,
+                      n_allocs);
+    }
+    fricreg_ctx_free(ctx);
+    /* The hook sees the library's allocations: the same set-up under it makes some. */
+    long made = 0, failed = 0;
+    ck_assert_int_eq(run_case(ctx_dense, 0, &made, &failed), FRICREG_OK);
+    ck_assert_msg(made > 0, "set-up allocated nothing: the hook is not in place");
+}
+END_TEST
+
+/* One stepper of each family: fricreg's classical RK4 (fixed steps), GSL's embedded explicit
+ * rkf45 (adaptive), implicit Gaussian rk4imp, Bulirsch-Stoer bsimp, multistep msbdf. */
+static const int integrators[] = {FRICREG_INT_RK4, FRICREG_INT_RKF45, FRICREG_INT_RK4IMP,
+                                  FRICREG_INT_BSIMP, FRICREG_INT_MSBDF};
+#define N_INTEGRATORS (sizeof integrators / sizeof integrators[0])
+static const int systems[] = {FRICREG_SYSTEM_OSCILLATOR, FRICREG_SYSTEM_CHAIN,
+                              FRICREG_SYSTEM_TWOBLOCK};
+
+START_TEST(test_sim_run)
+{
+    int system = systems[_i / (int)N_INTEGRATORS], integrator = integrators[_i % (int)N_INTEGRATORS];
+    /* Fixed steps for rk4 and rk4imp (with the step guard's eigenvalue problem for rk4 on the
+     * coupled two-block W), adaptive ones for the rest; a few steps are enough, every
+     * allocation happens before the first. */
+    int fixed = integrator == FRICREG_INT_RK4 || integrator == FRICREG_INT_RK4IMP;
+    struct sim_case c = {system, integrator, 0.005, fixed ? 0.0 : 1e-6, 0.05};
+    char name[64];
+    snprintf(name, sizeof name, "sim %d %s", system, fricreg_integrator_name(integrator));
+    current_sim = &c;
+    fail_each_allocation(name, sim_run);
+}
+END_TEST
+
+START_TEST(test_exact_run)
+{
+    struct tally t = fail_each_allocation("exact_create+run", exact_run);
+    ck_assert_int_eq(t.enomem, t.cases);
+}
+END_TEST
+
+START_TEST(test_exact_solve)
+{
+    fail_each_allocation("exact_solve", exact_solve);
+}
+END_TEST
+
+static Suite *alloc_suite(void)
+{
+    Suite *s = suite_create("alloc_failure");
+    TCase *core = tcase_create("core");
+    tcase_add_test(core, test_ctx_create);
+    tcase_add_test(core, test_ctx_set_coupling_dense);
+    tcase_add_test(core, test_eval_does_not_allocate);
+    suite_add_tcase(s, core);
+    TCase *drivers = tcase_create("drivers");
+    tcase_add_loop_test(drivers, test_sim_run, 0, (int)(3 * N_INTEGRATORS));
+    tcase_add_test(drivers, test_exact_run);
+    tcase_add_test(drivers, test_exact_solve);
+    suite_add_tcase(s, drivers);
+    return s;
+}
+
+int main(void)
+{
+    SRunner *runner = srunner_create(alloc_suite());
+    srunner_run_all(runner, CK_NORMAL);
+    int failed = srunner_ntests_failed(runner);
+    srunner_free(runner);
+    return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}

@@ -1,0 +1,30 @@
+#!/bin/sh
+# valgrind memcheck over one C test program, in one process (CK_FORK=no, so that valgrind sees
+# every test and its leaks): any error or leak fails. With CASE names, only those Check cases
+# run, one valgrind run each, and each must run at least one check (a renamed case fails here
+# rather than testing nothing). Exits 77 (ctest: skipped) without valgrind.
+# Usage: valgrind.sh PROGRAM [CASE...]
+command -v valgrind >/dev/null 2>&1 || { echo "SKIP: valgrind not found"; exit 77; }
+program=$1
+shift
+# Programs that replace malloc themselves (test_exact fails its calloc on demand) keep theirs:
+# valgrind intercepts only the C library's (somalloc=nouserintercepts).
+run() {
+    CK_FORK=no valgrind -q --error-exitcode=1 --leak-check=full \
+        --soname-synonyms=somalloc=nouserintercepts "$program"
+}
+[ $# -eq 0 ] && { run; exit $?; }
+fails=0
+for case in "$@"; do
+    out=$(CK_RUN_CASE=$case run 2>&1)
+    status=$?
+    printf '%s\n' "$out"
+    if [ $status -ne 0 ]; then
+        fails=$((fails + 1))
+    elif ! printf '%s\n' "$out" | grep -q "Checks: [1-9]"; then
+        echo "FAIL: case $case ran no check"
+        fails=$((fails + 1))
+    fi
+done
+echo "$(($# - fails)) passed, $fails failed"
+[ $fails -eq 0 ]
