@@ -28,6 +28,18 @@ void minimal_quinn_diagonal(double eps, size_t m, const double v[], const double
         f[i] = quinn(k * v[i], -a_free[i] / w[i], mun[i]);
 }
 
+void minimal_quinn_diagonal_copies(double eps, size_t m, const double v[], const double a_free[],
+                                   const double w[], const double mun[], double f[],
+                                   double *restrict v_copy, double *restrict a_copy)
+{
+    double k = 2.0 / eps;
+    for (size_t i = 0; i < m; i++) {
+        v_copy[i] = v[i];
+        a_copy[i] = a_free[i];
+        f[i] = quinn(k * v[i], -a_free[i] / w[i], mun[i]);
+    }
+}
+
 void minimal_triad(size_t m, double a[], const double b[], const double c[], double s)
 {
     for (size_t i = 0; i < m; i++)

@@ -18,6 +18,12 @@ void minimal_quinn(double eps, size_t m, const double v[], const double f_eq[],
 void minimal_quinn_diagonal(double eps, size_t m, const double v[], const double a_free[],
                             const double w[], const double mun[], double f[]);
 
+/** minimal_quinn_diagonal, also copying v and a_free to v_copy and a_copy: the copies
+ *  fricreg_ctx_eval keeps for fricreg_ctx_tangent, priced alone. */
+void minimal_quinn_diagonal_copies(double eps, size_t m, const double v[], const double a_free[],
+                                   const double w[], const double mun[], double f[],
+                                   double *restrict v_copy, double *restrict a_copy);
+
 /** a[i] = b[i] + s c[i] (STREAM's triad): the memory bandwidth yardstick. */
 void minimal_triad(size_t m, double a[], const double b[], const double c[], double s);
 
