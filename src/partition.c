@@ -152,12 +152,10 @@ static void eval_diagonal(fricreg_ctx *ctx, const double zdot[], const double a_
     ctx->last_valid = 1;
 }
 
-/* A dense W (or a law without f_eq): split, then the near-stick forces by the partition. */
+/* A dense W and a law that reads f_eq: split, then the near-stick forces by the partition. */
 static int eval_dense(fricreg_ctx *ctx, const double zdot[], const double a_free[])
 {
     fr_split_contacts(ctx, zdot);
-    if (!fr_law_uses_feq(ctx->law))
-        return FRICREG_OK; /* S is empty */
     if (ctx->partition == FRICREG_PARTITION_CONSISTENT)
         return fr_eval_consistent(ctx, zdot, a_free);
     return ctx->n_stick > 0 ? fr_eval_paper(ctx, zdot, a_free) : FRICREG_OK;
@@ -180,6 +178,18 @@ static void write_feq(const fricreg_ctx *ctx, double f_eq[])
         f_eq[ctx->stick[a]] = ctx->f_eq[ctx->stick[a]];
 }
 
+/* Laws that never read f_eq ((1), (3), tanh): f is the law at zdot whatever W is, written
+ * straight into the caller's f; S is empty, f_eq out all NaN. */
+static void eval_without_feq(fricreg_ctx *ctx, const double zdot[], const double a_free[],
+                             double f[], double f_eq[])
+{
+    fr_law_batch(ctx->law, ctx->eps, ctx->m, zdot, NULL, ctx->mun, f);
+    for (size_t i = 0; f_eq != NULL && i < ctx->m; i++)
+        f_eq[i] = NAN;
+    ctx->n_stick = 0;
+    remember_inputs(ctx, zdot, a_free);
+}
+
 int fricreg_ctx_eval(fricreg_ctx *ctx, size_t m, const double zdot[], const double a_free[],
                      double f[], double f_eq[])
 {
@@ -188,7 +198,9 @@ int fricreg_ctx_eval(fricreg_ctx *ctx, size_t m, const double zdot[], const doub
     int status = check_inputs(ctx, m, zdot, a_free, f);
     if (status != FRICREG_OK)
         return status;
-    if (ctx->W == NULL && fr_law_uses_feq(ctx->law)) {
+    if (!fr_law_uses_feq(ctx->law)) {
+        eval_without_feq(ctx, zdot, a_free, f, f_eq);
+    } else if (ctx->W == NULL) {
         eval_diagonal(ctx, zdot, a_free, f, f_eq);
     } else {
         status = eval_dense(ctx, zdot, a_free);
