@@ -51,13 +51,13 @@ static int batch_plausible(size_t m, const double v[], const double f_eq[], cons
     size_t i = 0;
     if (f_eq)
         for (; i + FR_LANES <= m; i += FR_LANES)
-            for (int l = 0; l < FR_LANES; l++) {
+            for (size_t l = 0; l < FR_LANES; l++) {
                 double u = mun[i + l];
                 s[l] += v[i + l] + f_eq[i + l] + u + (u < 0.0 ? INFINITY : 0.0);
             }
     else
         for (; i + FR_LANES <= m; i += FR_LANES)
-            for (int l = 0; l < FR_LANES; l++) {
+            for (size_t l = 0; l < FR_LANES; l++) {
                 double u = mun[i + l];
                 s[l] += v[i + l] + u + (u < 0.0 ? INFINITY : 0.0);
             }

@@ -19,7 +19,7 @@ static int inputs_plausible(size_t m, const double zdot[], const double a_free[]
     double s[FR_LANES] = {0.0};
     size_t i = 0;
     for (; i + FR_LANES <= m; i += FR_LANES)
-        for (int l = 0; l < FR_LANES; l++)
+        for (size_t l = 0; l < FR_LANES; l++)
             s[l] += zdot[i + l] + a_free[i + l];
     for (; i < m; i++) /* the tail */
         s[0] += zdot[i] + a_free[i];
