@@ -1,8 +1,8 @@
 #!/bin/sh
 # bench/run.sh — the whole benchmark, from the top of a fresh clone:
-#   builds with -DFRICREG_BENCH=ON in build-bench/, runs the work-precision and the scaling
-#   benchmarks, writes every CSV, gnuplot script and PNG to bench-results/, prints the
-#   tables (the summary ends the work-precision part), and rewrites the dated results page
+#   builds with -DFRICREG_BENCH=ON in build-bench/, runs the work-precision, the scaling and
+#   the kernel benchmarks, writes every CSV, gnuplot script and PNG to bench-results/, prints
+#   the tables (the summary ends the work-precision part), and rewrites the dated results page
 #   docs/results.md from them (commit it to publish a run). Not run by ctest: it takes minutes.
 # The event-driven baseline is built when SUNDIALS CVODE is installed (Debian:
 # libsundials-dev); without it the rest runs and says so.
@@ -30,6 +30,8 @@ echo
 ./build-bench/bench/fricreg-bench-wp "$out" | tee "$out/workprecision.txt"
 echo
 ./build-bench/bench/fricreg-bench-scaling "$out" | tee "$out/scaling.txt"
+echo
+./build-bench/bench/fricreg-bench-kernels "$out" | tee "$out/kernels.txt"
 echo
 
 if command -v gnuplot >/dev/null 2>&1; then

@@ -7,48 +7,52 @@
 
 #include "fricreg.h"
 
-/* sat(y) = max(-1, min(1, y)), in the operand order of the maxsd/minsd instructions, so the
- * compiler emits them instead of branches (inputs are validated finite). */
-static inline double fr_sat(double y)
+/* clamp(x, lo, hi) = min(max(x, lo), hi) for lo <= hi, written in the operand order of the
+ * maxsd/minsd instructions and their packed forms, so the compiler emits selects, never
+ * branches, and vectorizes the loops around it. A NaN x gives a bound (see fr_quinn_band). */
+static inline double fr_clamp(double x, double lo, double hi)
 {
-    double lo = y > -1.0 ? y : -1.0;
-    return lo < 1.0 ? lo : 1.0;
+    double y = x > lo ? x : lo;
+    return y < hi ? y : hi;
 }
 
-/* sgn(y) with sgn(0) = 0, as the paper uses it in (1). */
-static inline double fr_sgn(double y)
+/* mun sat(f_eq/mun), the force of (2) at rest, division-free: clamp(f_eq, -mun, mun). Equal
+ * for mun > 0 up to the rounding of the division, and 0 for mun = 0 (f_eq finite). */
+static inline double fr_hold(double f_eq, double mun)
 {
-    return (double)(y > 0.0) - (double)(y < 0.0);
+    return fr_clamp(f_eq, -mun, mun);
 }
 
-/* f_eq/mun, saturated; a zero bound gives 0 (its force is 0 whatever f_eq is). */
-static inline double fr_sat_ratio(double f_eq, double mun)
-{
-    return mun > 0.0 ? fr_sat(f_eq / mun) : 0.0;
-}
-
-/* (1) f = -mun sgn(v). */
+/* (1) f = -mun sgn(v) with sgn(0) = 0, as the paper uses it: two selects, which the
+ * vectorizer takes (it gives up on a sgn formed from bool-to-double conversions). */
 static inline double fr_coulomb(double v, double mun)
 {
-    return -mun * fr_sgn(v);
+    double s = v < 0.0 ? mun : 0.0;
+    return v > 0.0 ? -mun : s;
 }
 
 /* (2) at v == 0: f = mun sat(f_eq/mun); else (1). */
 static inline double fr_force_balance(double v, double f_eq, double mun)
 {
-    return v == 0.0 ? mun * fr_sat_ratio(f_eq, mun) : fr_coulomb(v, mun);
+    double hold = fr_hold(f_eq, mun), slip = fr_coulomb(v, mun); /* both: see fr_karnopp */
+    return v == 0.0 ? hold : slip;
 }
 
-/* Karnopp's dead band |v| < eps: the force balance holds; outside it, (1). */
+/* Karnopp's dead band |v| < eps: the force balance holds; outside it, (1). Both forces are
+ * formed, then selected: the vectorizer will not hoist floating-point work out of one arm of
+ * a select itself (it might trap). */
 static inline double fr_karnopp(double v, double f_eq, double mun, double eps)
 {
-    return fabs(v) < eps ? mun * fr_sat_ratio(f_eq, mun) : fr_coulomb(v, mun);
+    double hold = fr_hold(f_eq, mun), slip = fr_coulomb(v, mun);
+    return fabs(v) < eps ? hold : slip;
 }
 
-/* (3) f = -(mun/eps) v in |v| < eps, else (1): the same as -mun sat(v/eps). */
+/* (3) f = -(mun/eps) v in |v| < eps, else (1): the same as -mun sat(v/eps), written as
+ * clamp(-mun (v/eps), -mun, mun), which rounds identically and which GCC vectorizes (the
+ * constant bounds of sat(y) it turns into branches). */
 static inline double fr_velocity_limited(double v, double mun, double eps)
 {
-    return -mun * fr_sat(v / eps);
+    return fr_clamp(-mun * (v / eps), -mun, mun);
 }
 
 static inline double fr_tanh(double v, double mun, double eps)
@@ -57,11 +61,33 @@ static inline double fr_tanh(double v, double mun, double eps)
 }
 
 /* (4): xi = (eps/2) sat(f_eq/mun) (4b); in |v - xi| < eps/2, f = -(2 mun/eps)(v - xi), else
- * -mun sgn(v - xi) (4a). Both branches are -mun sat(2(v - xi)/eps) = -mun sat(2v/eps - s)
- * with s = sat(f_eq/mun): one select-only formula, and at v = 0 exactly mun s, i.e. (2). */
+ * -mun sgn(v - xi) (4a). Both branches are -mun sat(2(v - xi)/eps) = -mun sat(c - s) with
+ * c = 2v/eps, s = sat(f_eq/mun). For mun > 0, mun s = clamp(f_eq, -mun, mun) =: g, and
+ * multiplying sat by -mun < 0 mirrors and scales its bounds: -mun sat(c - s) =
+ * clamp(-mun (c - s), -mun, mun) = clamp(g - c mun, -mun, mun). So, with no division,
+ *   f = clamp(clamp(f_eq, -mun, mun) - c mun, -mun, mun),
+ * equal to the sat form within a few roundings of mun (tests/test_law.c); at v = 0, exactly
+ * g, i.e. (2). For mun = 0 the sat form is 0; here c mun is 0 too, or NaN when c overflowed
+ * to +-inf (v/eps > DBL_MAX/2), and fr_clamp maps a NaN to a bound, here +-0: f = 0 either
+ * way. c = +-inf with mun > 0 gives -+mun, as the sat form. */
+static inline double fr_quinn_band(double c, double f_eq, double mun)
+{
+    return fr_clamp(fr_hold(f_eq, mun) - c * mun, -mun, mun);
+}
+
+/* The scale k of c = k v: 2/eps, rounded up by one ulp where eps (2/eps) rounds below 2, so
+ * that |v| >= eps always gives |c| >= 2 (rounding is monotone) and fr_quinn_band gives
+ * exactly (1) outside the band, with no test: |c| mun >= 2 mun, so the inner difference is
+ * past the bound. One ulp always suffices (tests/test_law.c); eps >= DBL_MIN keeps k finite. */
+static inline double fr_band_scale(double eps)
+{
+    double k = 2.0 / eps;
+    return eps * k >= 2.0 ? k : nextafter(k, INFINITY);
+}
+
 static inline double fr_quinn(double v, double f_eq, double mun, double eps)
 {
-    return -mun * fr_sat(v * (2.0 / eps) - fr_sat_ratio(f_eq, mun)); /* 2/eps: hoisted */
+    return fr_quinn_band(v * fr_band_scale(eps), f_eq, mun); /* the scale: hoisted from loops */
 }
 
 /* Law (4) on the band |c| < 2, c = 2 v/eps, written division-free (docs/coupled.md):
@@ -123,5 +149,21 @@ static inline double fr_law(int law, double v, double f_eq, double mun, double e
     default: return fr_quinn(v, f_eq, mun, eps);
     }
 }
+
+/* The validation passes (law.c, partition.c) add their inputs in FR_LANES explicit partial
+ * sums: a NaN or an infinity anywhere makes the total non-finite, and the vectorizer packs
+ * the lanes into vectors, where one floating-point sum it may not reorder, so would add
+ * serially. */
+enum { FR_LANES = 4 };
+
+static inline int fr_lanes_finite(const double s[FR_LANES])
+{
+    return fabs((s[0] + s[1]) + (s[2] + s[3])) <= DBL_MAX;
+}
+
+/* Law `law` (known) on m contacts whose inputs are validated: f[i] from v[i], f_eq[i] (NULL
+ * for the laws that do not read it) and mun[i] (law.c). */
+void fr_law_batch(int law, double eps, size_t m, const double v[], const double f_eq[],
+                  const double mun[], double f[]);
 
 #endif

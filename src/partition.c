@@ -5,22 +5,35 @@
  * partitions agree there); with a dense W the near-stick forces come from the consistent law's
  * QP (partition_consistent.c) or the paper's joint solve (partition_paper.c). */
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "law.h"
 #include "partition.h"
 
-/* The index of the first non-finite zdot[i] or a_free[i], or m. The scan itself is
- * branch-free (it runs on every evaluation); only a failure looks for the index. */
+/* Whether every zdot[i] and a_free[i] is finite, in one pass of one add per input: their sum
+ * is finite unless one is a NaN or an infinity (or, a false alarm, finite inputs overflow
+ * it: the exact search then finds nothing). */
+static int inputs_plausible(size_t m, const double zdot[], const double a_free[])
+{
+    double s[FR_LANES] = {0.0};
+    size_t i = 0;
+    for (; i + FR_LANES <= m; i += FR_LANES)
+        for (size_t l = 0; l < FR_LANES; l++)
+            s[l] += zdot[i + l] + a_free[i + l];
+    for (; i < m; i++) /* the tail */
+        s[0] += zdot[i] + a_free[i];
+    return fr_lanes_finite(s);
+}
+
+/* The index of the first non-finite zdot[i] or a_free[i], or m: run only when
+ * inputs_plausible fails, to name the culprit. */
 static size_t first_nonfinite(size_t m, const double zdot[], const double a_free[])
 {
-    int bad = 0;
-    for (size_t i = 0; i < m; i++)
-        bad |= !isfinite(zdot[i]) | !isfinite(a_free[i]);
     size_t i = 0;
-    while (bad && isfinite(zdot[i]) && isfinite(a_free[i]))
+    while (i < m && isfinite(zdot[i]) && isfinite(a_free[i]))
         i++;
-    return bad ? i : m;
+    return i;
 }
 
 static int check_inputs(fricreg_ctx *ctx, size_t m, const double zdot[], const double a_free[],
@@ -31,7 +44,7 @@ static int check_inputs(fricreg_ctx *ctx, size_t m, const double zdot[], const d
     if (zdot == NULL || a_free == NULL || f == NULL)
         return fr_fail(ctx, FRICREG_ENULL, "eval: %s is NULL",
                        zdot == NULL ? "zdot" : a_free == NULL ? "a_free" : "f");
-    size_t i = first_nonfinite(m, zdot, a_free);
+    size_t i = inputs_plausible(m, zdot, a_free) ? m : first_nonfinite(m, zdot, a_free);
     if (i < m)
         return fr_fail(ctx, FRICREG_ENONFINITE, "eval: %s[%zu] is not finite",
                        isfinite(zdot[i]) ? "a_free" : "zdot", i);
@@ -63,52 +76,86 @@ void fr_split_contacts(fricreg_ctx *ctx, const double zdot[])
     case FRICREG_LAW_FORCE_BALANCE:
         SPLIT_LOOP(v == 0.0, fr_coulomb(v, mun[i]))
         break;
-    default: /* (1), (3), tanh: f_eq is never needed */
-        SPLIT_LOOP(0, fr_law(ctx->law, v, 0.0, mun[i], eps))
+    default: /* (1), (3), tanh: f_eq is never needed, S is empty, no list to write */
+        fr_law_batch(ctx->law, eps, ctx->m, zdot, NULL, mun, ctx->f);
         break;
     }
     ctx->n_stick = n_stick;
 }
 
-/* Diagonal W: f_eq,i = -a_free,i / w_i needs no solve, so the split, f_eq and the law are
- * one pass of selects, written straight into the caller's f (nothing can fail here). The
- * division is formed for every contact, as a vectorized division costs less than a branch,
- * but only S reads it, and only S is counted and reported. */
-#define DIAGONAL_LOOP(NEAR, STICK_FORCE)                                  \
-    for (size_t i = 0; i < ctx->m; i++) {                                 \
-        double v = zdot[i], feq = -a_free[i] / w[i];                      \
-        int near = (NEAR);                                                \
-        ctx->stick[n_stick] = i;                                          \
-        n_stick += (size_t)near;                                          \
-        ctx->f_eq[i] = feq;                                               \
-        f[i] = near ? (STICK_FORCE) : fr_coulomb(v, mun[i]);              \
-    }
-
-static void eval_diagonal(fricreg_ctx *ctx, const double zdot[], const double a_free[],
-                          double f[])
+/* The bits of x: for x, y >= 0 (finite or not), x < y exactly when bits(x) < bits(y). */
+static inline uint64_t bits_of(double x)
 {
-    size_t n_stick = 0;
-    const double eps = ctx->eps, *mun = ctx->mun, *w = ctx->w_diag;
-    switch (ctx->law) {
+    uint64_t u;
+    memcpy(&u, &x, sizeof u);
+    return u;
+}
+
+/* Diagonal W: f_eq,i = -a_free,i / w_i needs no solve, so f_eq, the law, the count of S,
+ * f_eq out and the copies of the inputs the tangent reads are one pass of selects, straight
+ * into the caller's arrays (the inputs are validated: nothing can fail). S is counted, never
+ * listed: nothing reads a list here. Written for GCC's vectorizer, which is easily put off
+ * (check with -fopt-info-vec):
+ *   - the division is formed for every contact, as a vectorized division costs less than a
+ *     branch; law (4) needs no near-stick select at all: fr_quinn_band with fr_band_scale
+ *     is exactly (1) off the band;
+ *   - f_eq out selects on the near-stick test written out, not kept in an int, whose width
+ *     it cannot mix with doubles;
+ *   - |S| is counted in 64-bit integers, as |zdot_i| < band on the bits (see bits_of): the
+ *     borrow of bits(|zdot_i|) - bits(band) is the test, in SSE2's 64-bit subtract and shift
+ *     (a count from a double compare needs a 64-bit compare SSE2 lacks, and a double count is
+ *     added serially); band = eps, or the least subnormal for (2)'s zdot_i == 0;
+ *   - the copies are restrict: they are the context's own, and without it the runtime
+ *     overlap checks between seven arrays exceed what it will version for. */
+#define DIAGONAL_LOOP(FORCE, FEQ_OUT)                                     \
+    for (size_t i = 0; i < m; i++) {                                      \
+        double v = zdot[i], a = a_free[i], feq = -a / w[i];               \
+        last_zdot[i] = v;                                                 \
+        last_afree[i] = a;                                                \
+        f[i] = (FORCE);                                                   \
+        FEQ_OUT;                                                          \
+        n_near += (bits_of(fabs(v)) - band) >> 63;                        \
+    }
+#define DIAGONAL_CASE(NEAR, FORCE)                                        \
+    if (f_eq)                                                             \
+        DIAGONAL_LOOP(FORCE, f_eq[i] = (NEAR) ? feq : NAN)                \
+    else                                                                  \
+        DIAGONAL_LOOP(FORCE, (void)0)
+
+/* The pass for law (known, reading f_eq) on m contacts; returns |S|. */
+static size_t diagonal_pass(int law, double eps, size_t m, const double zdot[],
+                            const double a_free[], const double w[], const double mun[],
+                            double f[], double f_eq[], double *restrict last_zdot,
+                            double *restrict last_afree)
+{
+    uint64_t n_near = 0, band = bits_of(law == FRICREG_LAW_FORCE_BALANCE ? 0x1p-1074 : eps);
+    double k = fr_band_scale(eps);
+    switch (law) {
     case FRICREG_LAW_QUINN:
-        DIAGONAL_LOOP(fabs(v) < eps, fr_quinn(v, feq, mun[i], eps))
+        DIAGONAL_CASE(fabs(v) < eps, fr_quinn_band(v * k, feq, mun[i]))
         break;
     case FRICREG_LAW_KARNOPP:
-        DIAGONAL_LOOP(fabs(v) < eps, fr_karnopp(v, feq, mun[i], eps))
+        DIAGONAL_CASE(fabs(v) < eps, fr_karnopp(v, feq, mun[i], eps))
         break;
     default: /* the only other law that reads f_eq */
-        DIAGONAL_LOOP(v == 0.0, fr_force_balance(v, feq, mun[i]))
+        DIAGONAL_CASE(v == 0.0, fr_force_balance(v, feq, mun[i]))
         break;
     }
-    ctx->n_stick = n_stick;
+    return (size_t)n_near;
 }
 
-/* A dense W (or a law without f_eq): split, then the near-stick forces by the partition. */
+static void eval_diagonal(fricreg_ctx *ctx, const double zdot[], const double a_free[],
+                          double f[], double f_eq[])
+{
+    ctx->n_stick = diagonal_pass(ctx->law, ctx->eps, ctx->m, zdot, a_free, ctx->w_diag,
+                                 ctx->mun, f, f_eq, ctx->last_zdot, ctx->last_afree);
+    ctx->last_valid = 1;
+}
+
+/* A dense W and a law that reads f_eq: split, then the near-stick forces by the partition. */
 static int eval_dense(fricreg_ctx *ctx, const double zdot[], const double a_free[])
 {
     fr_split_contacts(ctx, zdot);
-    if (!fr_law_uses_feq(ctx->law))
-        return FRICREG_OK; /* S is empty */
     if (ctx->partition == FRICREG_PARTITION_CONSISTENT)
         return fr_eval_consistent(ctx, zdot, a_free);
     return ctx->n_stick > 0 ? fr_eval_paper(ctx, zdot, a_free) : FRICREG_OK;
@@ -131,6 +178,18 @@ static void write_feq(const fricreg_ctx *ctx, double f_eq[])
         f_eq[ctx->stick[a]] = ctx->f_eq[ctx->stick[a]];
 }
 
+/* Laws that never read f_eq ((1), (3), tanh): f is the law at zdot whatever W is, written
+ * straight into the caller's f; S is empty, f_eq out all NaN. */
+static void eval_without_feq(fricreg_ctx *ctx, const double zdot[], const double a_free[],
+                             double f[], double f_eq[])
+{
+    fr_law_batch(ctx->law, ctx->eps, ctx->m, zdot, NULL, ctx->mun, f);
+    for (size_t i = 0; f_eq != NULL && i < ctx->m; i++)
+        f_eq[i] = NAN;
+    ctx->n_stick = 0;
+    remember_inputs(ctx, zdot, a_free);
+}
+
 int fricreg_ctx_eval(fricreg_ctx *ctx, size_t m, const double zdot[], const double a_free[],
                      double f[], double f_eq[])
 {
@@ -139,17 +198,19 @@ int fricreg_ctx_eval(fricreg_ctx *ctx, size_t m, const double zdot[], const doub
     int status = check_inputs(ctx, m, zdot, a_free, f);
     if (status != FRICREG_OK)
         return status;
-    if (ctx->W == NULL && fr_law_uses_feq(ctx->law)) {
-        eval_diagonal(ctx, zdot, a_free, f);
+    if (!fr_law_uses_feq(ctx->law)) {
+        eval_without_feq(ctx, zdot, a_free, f, f_eq);
+    } else if (ctx->W == NULL) {
+        eval_diagonal(ctx, zdot, a_free, f, f_eq);
     } else {
         status = eval_dense(ctx, zdot, a_free);
         if (status != FRICREG_OK)
             return status;
         memcpy(f, ctx->f, m * sizeof *f);
+        if (f_eq != NULL)
+            write_feq(ctx, f_eq);
+        remember_inputs(ctx, zdot, a_free);
     }
-    if (f_eq != NULL)
-        write_feq(ctx, f_eq);
-    remember_inputs(ctx, zdot, a_free);
     ctx->stats[FRICREG_STAT_EVALS]++;
     ctx->stats[FRICREG_STAT_FEQ_CONTACTS] += (int64_t)ctx->n_stick;
     return FRICREG_OK;

@@ -8,6 +8,7 @@
 #include <check.h>
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -224,6 +225,112 @@ START_TEST(diagonal_coupling_divides)
     ck_assert_double_eq_tol(f[1], 0.034952120383036939, TOL);
     ck_assert_double_eq(f[2], 1.2);
     expect_stats(ctx, 1, 2, 0, 0);
+    fricreg_ctx_free(ctx);
+}
+END_TEST
+
+/* xorshift64*: the same inputs on every machine. */
+static uint64_t rng_state = 0x9E3779B97F4A7C15u;
+static double uniform01(void)
+{
+    rng_state ^= rng_state >> 12;
+    rng_state ^= rng_state << 25;
+    rng_state ^= rng_state >> 27;
+    return (double)((rng_state * 0x2545F4914F6CDD1Du) >> 11) * 0x1.0p-53;
+}
+
+static int same_bits(double a, double b)
+{
+    return memcmp(&a, &b, sizeof a) == 0;
+}
+
+/* A diagonal W takes one fused pass (partition.c): per contact it must give exactly the law at
+ * (zdot_i, f_eq,i = -a_free,i/w_i), f_eq out on S and NaN off it, and count |S| in
+ * FEQ_CONTACTS, for each law that reads f_eq. m = 1001 is not a multiple of the vector or lane
+ * widths; the contacts are 40% at rest, 20% near stick, 40% slipping, with a few exactly at
+ * |zdot| = eps (off S) and at the least subnormal (off S for (2) only). */
+START_TEST(diagonal_pass_is_the_law_contact_by_contact)
+{
+    enum { M = 1001 };
+    static double w[M], mun[M], zdot[M], a[M], f[M], feq[M];
+    const int laws[3] = {FRICREG_LAW_QUINN, FRICREG_LAW_KARNOPP, FRICREG_LAW_FORCE_BALANCE};
+    const double eps = 0.0731;
+    for (size_t i = 0; i < M; i++) {
+        double u = uniform01(), sign = uniform01() < 0.5 ? -1.0 : 1.0;
+        zdot[i] = u < 0.4 ? 0.0 : u < 0.6 ? sign * eps * uniform01() : sign * (eps + uniform01());
+        w[i] = 0.3 + 2.7 * uniform01();
+        mun[i] = 0.1 + 2.4 * uniform01();
+        a[i] = (4.0 * uniform01() - 2.0) * mun[i] * w[i];
+    }
+    zdot[17] = 0.0731, zdot[18] = -0.0731, zdot[999] = 0x1p-1074, zdot[1000] = -0.0;
+    fricreg_ctx *ctx = make_ctx(M);
+    ck_assert_int_eq(fricreg_ctx_set_coupling_diagonal(ctx, M, w), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, M, mun), FRICREG_OK);
+    int64_t counted = 0;
+    for (int l = 0; l < 3; l++) {
+        ck_assert_int_eq(fricreg_ctx_set_law(ctx, laws[l], eps), FRICREG_OK);
+        ck_assert_int_eq(fricreg_ctx_eval(ctx, M, zdot, a, f, feq), FRICREG_OK);
+        for (size_t i = 0; i < M; i++) {
+            double fe = -a[i] / w[i], expected;
+            int near = laws[l] == FRICREG_LAW_FORCE_BALANCE ? zdot[i] == 0.0
+                                                             : fabs(zdot[i]) < eps;
+            ck_assert_int_eq(fricreg_law_eval(laws[l], zdot[i], fe, mun[i], eps, &expected),
+                             FRICREG_OK);
+            ck_assert_msg(same_bits(f[i], expected), "law %d, contact %zu: f %.17g, law %.17g",
+                          laws[l], i, f[i], expected);
+            ck_assert_msg(near ? same_bits(feq[i], fe) : isnan(feq[i]),
+                          "law %d, contact %zu: f_eq %.17g", laws[l], i, feq[i]);
+            counted += near;
+        }
+        ck_assert_int_eq(counter(ctx, FRICREG_STAT_FEQ_CONTACTS), counted);
+    }
+    ck_assert_int_gt(counted, 3 * M / 2); /* S was not empty: ~60% for (4), Karnopp */
+    fricreg_ctx_free(ctx);
+}
+END_TEST
+
+/* The fast finiteness check is a sum (partition.c): a NaN or an infinity in any position,
+ * lane or tail, is found and named, nothing is written, and the tangent still describes the
+ * last successful evaluation (its copies of the inputs untouched). Finite inputs whose sum
+ * overflows are no failure. W = I, m = 11. */
+START_TEST(diagonal_eval_validation_every_position)
+{
+    enum { M = 11 };
+    double zdot[M], a[M], f[M], feq[M], before[M * M], after[M * M];
+    fricreg_ctx *ctx = make_ctx(M);
+    for (size_t i = 0; i < M; i++) {
+        zdot[i] = 0.0131 * (double)i - 0.0731;
+        a[i] = 0.41 * (double)i - 1.913;
+    }
+    ck_assert_int_eq(fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, 0.0731), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_eval(ctx, M, zdot, a, f, feq), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_tangent(ctx, M, before, NULL), FRICREG_OK);
+    for (size_t p = 0; p < M; p++)
+        for (int which = 0; which < 2; which++) {
+            double *arr = which == 0 ? zdot : a, keep = arr[p];
+            char name[32];
+            arr[p] = p % 2 ? NAN : -INFINITY;
+            fill(f, M, SENTINEL);
+            fill(feq, M, SENTINEL);
+            expect_failure_recorded(ctx, fricreg_ctx_eval(ctx, M, zdot, a, f, feq),
+                                    FRICREG_ENONFINITE, "non-finite input");
+            snprintf(name, sizeof name, "%s[%zu]", which == 0 ? "zdot" : "a_free", p);
+            ck_assert_msg(strstr(fricreg_ctx_errmsg(ctx), name) != NULL, "\"%s\" does not name %s",
+                          fricreg_ctx_errmsg(ctx), name);
+            expect_untouched(f, M);
+            expect_untouched(feq, M);
+            ck_assert_int_eq(fricreg_ctx_tangent(ctx, M, after, NULL), FRICREG_OK);
+            for (size_t k = 0; k < M * M; k++)
+                ck_assert_msg(same_bits(before[k], after[k]), "%s: tangent changed", name);
+            arr[p] = keep;
+        }
+    for (size_t i = 0; i < M; i++) {
+        zdot[i] = 1.5e308;
+        a[i] = 1.7e308;
+    }
+    ck_assert_int_eq(fricreg_ctx_eval(ctx, M, zdot, a, f, NULL), FRICREG_OK);
+    for (size_t i = 0; i < M; i++)
+        ck_assert_double_eq(f[i], -1.0); /* default bounds 1, slipping forward */
     fricreg_ctx_free(ctx);
 }
 END_TEST
@@ -1082,6 +1189,7 @@ static Suite *context_suite(void)
     tc = tcase_create("partition");
     tcase_add_test(tc, defaults_quinn_unit_bounds_identity);
     tcase_add_test(tc, diagonal_coupling_divides);
+    tcase_add_test(tc, diagonal_pass_is_the_law_contact_by_contact);
     tcase_add_test(tc, two_block_both_near_stick);
     tcase_add_test(tc, two_block_only_lower_near_stick);
     tcase_add_test(tc, two_block_only_upper_near_stick);
@@ -1112,6 +1220,7 @@ static Suite *context_suite(void)
     tcase_add_test(tc, set_coupling_diagonal_errors);
     tcase_add_test(tc, set_coupling_dense_errors);
     tcase_add_test(tc, eval_errors);
+    tcase_add_test(tc, diagonal_eval_validation_every_position);
     tcase_add_test(tc, overflow_is_refused);
     tcase_add_test(tc, eval_singular_stick_block);
     tcase_add_test(tc, eval_failed_factorization_leaves_no_stale_factor);

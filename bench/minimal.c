@@ -1,0 +1,47 @@
+/* minimal.c — the yardstick loops of bench/kernels.c (minimal.h). */
+#include "minimal.h"
+
+static double clamp(double x, double lo, double hi)
+{
+    double y = x > lo ? x : lo;
+    return y < hi ? y : hi;
+}
+
+static double quinn(double c, double f_eq, double mun)
+{
+    return clamp(clamp(f_eq, -mun, mun) - c * mun, -mun, mun);
+}
+
+void minimal_quinn(double eps, size_t m, const double v[], const double f_eq[],
+                   const double mun[], double f[])
+{
+    double k = 2.0 / eps;
+    for (size_t i = 0; i < m; i++)
+        f[i] = quinn(k * v[i], f_eq[i], mun[i]);
+}
+
+void minimal_quinn_diagonal(double eps, size_t m, const double v[], const double a_free[],
+                            const double w[], const double mun[], double f[])
+{
+    double k = 2.0 / eps;
+    for (size_t i = 0; i < m; i++)
+        f[i] = quinn(k * v[i], -a_free[i] / w[i], mun[i]);
+}
+
+void minimal_quinn_diagonal_copies(double eps, size_t m, const double v[], const double a_free[],
+                                   const double w[], const double mun[], double f[],
+                                   double *restrict v_copy, double *restrict a_copy)
+{
+    double k = 2.0 / eps;
+    for (size_t i = 0; i < m; i++) {
+        v_copy[i] = v[i];
+        a_copy[i] = a_free[i];
+        f[i] = quinn(k * v[i], -a_free[i] / w[i], mun[i]);
+    }
+}
+
+void minimal_triad(size_t m, double a[], const double b[], const double c[], double s)
+{
+    for (size_t i = 0; i < m; i++)
+        a[i] = b[i] + s * c[i];
+}
