@@ -212,7 +212,8 @@ FRICREG_API int fricreg_ctx_set_partition(fricreg_ctx *ctx, int partition);
  *  decay rates of the linearized near-stick dynamics d(zddot)/d(zdot), for the context's law,
  *  eps, bounds, coupling and partition, over every near-stick set. A fixed explicit step dt
  *  keeps the stick zone stable when dt * lambda is within the stepper's stability bound on the
- *  negative real axis (classical RK4: 2.785); fricreg's drivers check exactly that.
+ *  negative real axis (classical RK4: 2.785); fricreg's drivers check that, with a smaller
+ *  bound where a stepper's stages overshoot the zone first (rkf45: see fricreg_sim_run).
  *
  *  With s_i the slope of the law at v = 0 (2 mun_i/eps for (4), Sec. 3.1.1; mun_i/eps for (3)
  *  and tanh; 0 for (1), (2) and Karnopp) and D = diag(s): a diagonal W, or (4) under the

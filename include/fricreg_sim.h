@@ -111,6 +111,8 @@ FRICREG_API int fricreg_sim_get_param(const fricreg_sim *sim, int param, double 
 
 /** Select the friction law (enum fricreg_law) and eps > 0; eps = 0 selects the paper's rule,
  *  recomputed from dt: eps = 2 dt (oscillator, twoblock), eps = 10 omega dt (chain).
+ *  Under that rule a fixed explicit step may be refused at every dt (FRICREG_ESTEP from
+ *  fricreg_sim_run, whose message names the smallest eps that passes): set eps explicitly then.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown law or eps < 0;
  *  FRICREG_ENONFINITE. */
 FRICREG_API int fricreg_sim_set_law(fricreg_sim *sim, int law, double eps);
@@ -155,11 +157,26 @@ FRICREG_API int fricreg_sim_set_observer(fricreg_sim *sim, fricreg_sim_observer 
 /** Integrate from t = 0 and the initial conditions to t_end > 0 (replacing earlier results).
  *  D is recorded per forcing cycle of period 2 pi/omega (belt_omega for twoblock).
  *
- *  Before it starts, a fixed explicit step is checked against the stick-zone stiffness
- *  lambda of fricreg_ctx_stick_stiffness (W_ii * 2 mun_i/eps for (4) under the consistent
- *  partition; coupled contacts included): dt * lambda must not exceed the stepper's stability
- *  bound on the negative real axis (FRICREG_ESTEP), nor dt times the system's highest natural frequency (1; 2n for the chain;
- *  sqrt(max(1, k)) for the two blocks) its bound on the imaginary axis (FRICREG_ESTEP).
+ *  Before it starts, a fixed explicit step (rk2, rk4, rkf45, rkck, rk8pd, rk4-gsl) is checked,
+ *  omega being the system's highest natural frequency (1; 2n for the chain; sqrt(max(1, k))
+ *  for the two blocks); each limit beyond is FRICREG_ESTEP, refused before any step:
+ *   - the stick zone: dt * lambda must not exceed the stepper's stick-zone bound (rk2 2.5,
+ *     rk4 2.78, rkf45 2.2, rkck 3.7, rk8pd 5.1; the negative real axis's, but rkf45's, whose
+ *     stages overshoot the zone first), lambda the stiffness of fricreg_ctx_stick_stiffness
+ *     (W_ii * 2 mun_i/eps for (4) under the consistent partition; coupled contacts included).
+ *     For the laws that jump, (1), (2) and Karnopp, lambda is the chord of the jump across the
+ *     band eps, W_ii mun_i/eps (coupled as (3)), and dt * lambda must not exceed 1, so that one
+ *     step of chatter stays in the band |zdot| < eps;
+ *   - dt * omega within the stepper's imaginary-axis bound (rk2 1.73, rk4 2.82, rkf45 0.7,
+ *     rkck 0.88, rk8pd 3.7) and within 1/sqrt 2, beyond which a friction reversal inside one
+ *     step can put energy in (src/sim.c derives it).
+ *  Under the paper's rule for eps (eps set to 0), eps is proportional to dt and dt * lambda does
+ *  not depend on dt: a refusal by the stick zone then holds at every dt (e.g. the oscillator
+ *  with mun = 3: dt * lambda = 3 > 2.78 for rk4), and the message says so and names the
+ *  smallest eps to set instead; no eps is chosen silently, since eps changes the results.
+ *  tests/test_guard.c sweeps these limits over every stepper, law and system from 0.5x to 1.5x
+ *  the accepted dt: no accepted run leaves a stick or puts energy in beyond 1% of the run's
+ *  energy scale (Karnopp with the paper's eps over wide bands excepted: its band pushes).
  *  After every step the state is checked for finiteness and for |y| <= 1e100, which no
  *  motion of these systems approaches (FRICREG_EDIVERGED, naming the time and the first such
  *  body, or the contact whose kinematics overflowed within

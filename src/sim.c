@@ -18,6 +18,7 @@
 #include "law.h"
 #include "ode_driver.h"
 #include "sim_internal.h"
+#include "stiffness.h"
 
 #define MAX_GSL_STEPS 2147483648.0 /* 2^31 fixed steps in one run */
 #define MAX_CYCLES 1e9              /* forcing cycles recorded in one run */
@@ -320,62 +321,82 @@ static int alloc_run(fricreg_sim *sim, size_t cycles)
  * gives dt * lambda = 3 > 2.78 for RK4). That is said rather than an eps chosen silently: eps
  * is part of the model (the stick band, an O(eps) change of the results), and a default that
  * followed the stepper's bound would move the results whenever the bound table is corrected. */
-static int refuse_stick_zone(fricreg_sim *sim, const struct fr_integrator *integ, double lambda)
+static int refuse_stick_zone(fricreg_sim *sim, const char *what, double bound, double lambda)
 {
-    double z = sim->dt * lambda, bound = integ->stick_zone_bound;
+    double z = sim->dt * lambda;
     double eps_min = sim->eps * z / bound;
     if (sim->eps_set > 0.0)
         return sim_fail(sim, FRICREG_ESTEP,
                         "run: dt = %g too large for the stick zone: its stiffness %g gives "
-                        "dt*lambda = %g > %g, the stick-zone bound of %s; reduce dt to %.6g or "
-                        "raise eps to %.6g",
-                        sim->dt, lambda, z, bound, integ->name, bound / lambda, eps_min);
+                        "dt*lambda = %g > %g, %s; reduce dt to %.6g or raise eps to %.6g",
+                        sim->dt, lambda, z, bound, what, bound / lambda, eps_min);
     return sim_fail(sim, FRICREG_ESTEP,
-                    "run: eps by the paper's rule (eps = %g dt) makes dt*lambda = %g > %g, the "
-                    "stick-zone bound of %s, at every dt; set eps >= %.6g explicitly",
-                    sim->eps / sim->dt, z, bound, integ->name, eps_min);
+                    "run: eps by the paper's rule (eps = %g dt) makes dt*lambda = %g > %g, %s, "
+                    "at every dt; set eps >= %.6g explicitly",
+                    sim->eps / sim->dt, z, bound, what, eps_min);
 }
 
-/* Laws whose force jumps by 2 mun at zdot = 0 (or at the edge of Karnopp's band): (1), (2),
- * Karnopp. They have no stick-zone stiffness; their fixed explicit step is limited by energy.
- * A step across a reversal takes its friction impulse with the wrong sign for part of the step:
- * an error of at most 2 mun dt, while the velocity changes by at most dt a, a <= omega^2 A for
- * an amplitude A, so the step's energy error is at most 2 mun omega^2 A dt^2. The half cycle
- * that ends in the reversal dissipates at least 2 mun A (its last swing, from amplitude A to
- * rest), one reversal per half cycle: no energy is gained while dt * omega <= 1. */
-#define JUMP_LAW_STEP_BOUND 1.0
+/* Laws whose force jumps by 2 mun at zdot = 0 (or at Karnopp's band edge) have no linear
+ * zone: a fixed step chatters. Their stiffness is the chord of the jump across the band the
+ * run resolves, lambda = W_ii mun_i/eps (stiffness.h). One step from the band edge with the
+ * whole swing moves zdot_i by at most 2 dt W_ii mun_i = 2 eps dt lambda: it lands inside the
+ * band, of width 2 eps, for every stepper while dt * lambda <= 1. Measured: against the
+ * steppers' real-axis bounds instead (up to 5.1), the chain (n = 8, eps = 0.002) gained energy
+ * under (1) with rk8pd, and the two blocks with mun = (10, 5) by up to 300x their scale. */
+#define CHORD_STEP_BOUND 1.0
 static int law_jumps(int law)
 {
     return law == FRICREG_LAW_COULOMB || law == FRICREG_LAW_FORCE_BALANCE ||
            law == FRICREG_LAW_KARNOPP;
 }
 
+/* A reversal of the friction force within one step. A law that jumps ((1), (2), Karnopp) swings
+ * by 2 mun at zdot = 0; a regularized one does so across its band, within one step whenever
+ * eps <= dt |zddot| (the paper's rule eps = 2 dt: whenever |zddot| > 2). A step across the swing
+ * takes its friction impulse with the wrong sign for part of the step, an error J <= 2 mun dt
+ * (unit mass), while the velocity moves by at most v <= dt omega^2 A at amplitude A: an energy
+ * error of at most J v + J^2/2 <= 2 mun dt^2 (omega^2 A + mun). The swing that ends in the
+ * reversal dissipates at least 2 mun A, and a swing worth a reversal has A >= mun/omega^2, the
+ * friction's offset of its centre (a smaller one ends in the stick zone, the stick-zone
+ * bound's business): no energy is gained while 2 omega^2 dt^2 <= 1, dt * omega <= 1/sqrt 2.
+ * Measured without it: rk8pd at dt = 3.7 (its imaginary-axis bound) grew the unforced
+ * oscillator's energy 3.78 -> 104 under (1); the two blocks under (4) with the paper's eps gain
+ * energy from dt * omega = 0.9 with RK4, not at 0.75. */
+#define REVERSAL_STEP_BOUND M_SQRT1_2
+
 /* A fixed explicit step must keep dt * lambda within the stepper's stick-zone bound, lambda
  * the context's stick-zone stiffness (fricreg_ctx_stick_stiffness: coupled contacts
- * included), and dt * omega_max within its imaginary-axis bound, omega_max the system's
- * highest natural frequency (the chain's springs: 2n), and within 1 for a law that jumps. */
+ * included), and dt * omega_max within its imaginary-axis bound and within
+ * REVERSAL_STEP_BOUND, omega_max the system's highest natural frequency (the chain's
+ * springs: 2n). */
 static int check_step(fricreg_sim *sim, const struct fr_integrator *integ)
 {
     if (adaptive(sim) || sim->unguarded || integ->stick_zone_bound == 0.0)
         return FRICREG_OK; /* implicit and multistep steppers report their own failures */
     double lambda = 0.0;
-    if (fricreg_ctx_stick_stiffness(sim->ctx, &lambda) != FRICREG_OK)
+    int status = law_jumps(sim->law) ? fr_chord_stiffness(sim->ctx, &lambda)
+                                     : fricreg_ctx_stick_stiffness(sim->ctx, &lambda);
+    if (status != FRICREG_OK)
         return sim_fail(sim, FRICREG_ENOMEM, "run: %s", fricreg_ctx_errmsg(sim->ctx));
+    char what[64];
+    if (law_jumps(sim->law) && sim->dt * lambda > CHORD_STEP_BOUND)
+        return refuse_stick_zone(sim, "where a law that jumps chatters out of its band",
+                                 CHORD_STEP_BOUND, lambda);
+    snprintf(what, sizeof what, "the stick-zone bound of %s", integ->name);
     if (sim->dt * lambda > integ->stick_zone_bound)
-        return refuse_stick_zone(sim, integ, lambda);
-    double omega = sim->sys.type->max_frequency(&sim->sys);
-    if (sim->dt * omega > integ->imag_axis_bound)
+        return refuse_stick_zone(sim, what, integ->stick_zone_bound, lambda);
+    double omega = sim->sys.type->max_frequency(&sim->sys), z = sim->dt * omega;
+    if (z > integ->imag_axis_bound)
         return sim_fail(sim, FRICREG_ESTEP,
                         "run: dt = %g too large for the system's highest frequency %g: "
                         "dt*omega = %g > %g, the stability bound of %s; reduce dt",
-                        sim->dt, omega, sim->dt * omega, integ->imag_axis_bound, integ->name);
-    if (law_jumps(sim->law) && sim->dt * omega > JUMP_LAW_STEP_BOUND)
+                        sim->dt, omega, z, integ->imag_axis_bound, integ->name);
+    if (z > REVERSAL_STEP_BOUND)
         return sim_fail(sim, FRICREG_ESTEP,
-                        "run: dt = %g too large for a friction law that jumps: dt*omega = %g > "
-                        "%g at the system's highest frequency %g puts energy in at reversals; "
-                        "reduce dt to %.6g",
-                        sim->dt, sim->dt * omega, JUMP_LAW_STEP_BOUND, omega,
-                        JUMP_LAW_STEP_BOUND / omega);
+                        "run: dt = %g too large for the system's highest frequency %g: "
+                        "dt*omega = %g > %g lets a friction reversal within one step put "
+                        "energy in; reduce dt to %.6g",
+                        sim->dt, omega, z, REVERSAL_STEP_BOUND, REVERSAL_STEP_BOUND / omega);
     return FRICREG_OK;
 }
 

@@ -38,17 +38,18 @@ static double diagonal_rate(const fricreg_ctx *ctx)
     return lambda;
 }
 
-/* Largest eigenvalue of D^1/2 W D^1/2 (symmetric positive semidefinite), by GSL. */
-static int coupled_rate(fricreg_ctx *ctx, double *lambda)
+/* Largest eigenvalue of D^1/2 W D^1/2 (symmetric positive semidefinite), by GSL, with the
+ * slopes of `law`. */
+static int coupled_rate(fricreg_ctx *ctx, int law, double *lambda)
 {
     size_t m = ctx->m;
     struct fr_eigen e;
     if (fr_eigen_alloc(&e, m) != FRICREG_OK)
         return FRICREG_ENOMEM;
     for (size_t i = 0; i < m; i++) {
-        double si = sqrt(law_slope(ctx->law, ctx->mun[i], ctx->eps));
+        double si = sqrt(law_slope(law, ctx->mun[i], ctx->eps));
         for (size_t j = 0; j < m; j++) {
-            double sj = sqrt(law_slope(ctx->law, ctx->mun[j], ctx->eps));
+            double sj = sqrt(law_slope(law, ctx->mun[j], ctx->eps));
             e.a[i * m + j] = si * ctx->W[i * m + j] * sj;
         }
     }
@@ -72,9 +73,24 @@ int fricreg_ctx_stick_stiffness(fricreg_ctx *ctx, double *lambda)
         return FRICREG_OK;
     }
     double rate = 0.0;
-    if (coupled_rate(ctx, &rate) != FRICREG_OK)
+    if (coupled_rate(ctx, ctx->law, &rate) != FRICREG_OK)
         return fr_fail(ctx, FRICREG_ENOMEM, "stick_stiffness: out of memory for m = %zu",
                        ctx->m);
+    *lambda = rate;
+    return FRICREG_OK;
+}
+
+/* A law that jumps by 2 mun_i at zdot_i = 0 has no slope there; a fixed explicit step makes it
+ * chatter, zdot_i moving by up to dt W_ii mun_i per step. Against the band |zdot_i| < eps that
+ * the run resolves, the jump acts as its chord, law (3)'s slope mun_i/eps, coupled as (3) is. */
+int fr_chord_stiffness(fricreg_ctx *ctx, double *lambda)
+{
+    double rate = 0.0;
+    for (size_t i = 0; i < ctx->m; i++)
+        rate = fmax(rate, ctx->w_diag[i] * law_slope(FRICREG_LAW_VELOCITY_LIMITED, ctx->mun[i],
+                                                     ctx->eps));
+    if (ctx->W != NULL && coupled_rate(ctx, FRICREG_LAW_VELOCITY_LIMITED, &rate) != FRICREG_OK)
+        return fr_fail(ctx, FRICREG_ENOMEM, "chord_stiffness: out of memory for m = %zu", ctx->m);
     *lambda = rate;
     return FRICREG_OK;
 }

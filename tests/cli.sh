@@ -71,6 +71,13 @@ expect_usage_error "^fricreg-sim: --x0: out of the range of a double$" oscillato
 expect_usage_error "^fricreg-sim: --dt: must be > 0$" oscillator --dt 1e-400
 # A step too large for the stick zone of (4): dt * 2 mun/eps = 5 > 2.78 (RK4).
 expect_usage_error "--dt" oscillator --dt 0.05 --eps 0.02
+# Under the paper's rule (eps = 2 dt) dt * lambda = 2 mun dt/eps = mun does not depend on dt: mun = 3
+# gives 3 > 2.78 at every dt, so the option to change is --eps, and the message says which.
+expect_usage_error "^fricreg-sim: --eps: .*at every dt; set eps >= 0.0215827 explicitly$" oscillator --mun 3
+expect_usage_error "^fricreg-sim: --dt: .*reduce dt to 0.00926667 or raise eps to 0.0215827$" oscillator --mun 3 --eps 0.02
+# Coulomb with rk8pd at dt 3.7 (its imaginary-axis bound) grew the energy 3.78 -> 104: a
+# reversal within one step is refused beyond dt * omega = 1/sqrt 2 (src/sim.c).
+expect_usage_error "^fricreg-sim: --dt: .*> 0.707107 lets a friction reversal" oscillator --law coulomb --integrator rk8pd --dt 3.7
 expect_usage_error "--out" reproduce
 
 # Quinn (2004) Sec. 3.1.1: the unforced oscillator sticks at -0.750090.

@@ -311,10 +311,12 @@ START_TEST(test_estep_paper_partition_sees_the_coupling)
 END_TEST
 
 /* A spring mode too fast for the step: chain n = 32 under (3) (its stick-zone stiffness
- * mun/eps = 1/(5 dt) under the paper's rule eps = 10 omega dt: dt*lambda = 0.2), RK4 with
- * dt = 0.06. The highest spring mode is below 2n = 64 rad/s, and 64 * 0.06 = 3.84
- * exceeds RK4's imaginary-axis bound 2 sqrt(2) = 2.83 (2.82 in the table): refused before the
- * run, naming the frequency. (It used to run and overflow: FRICREG_EDIVERGED at t = 23.6.) */
+ * mun/eps = 1/(5 dt) under the paper's rule eps = 10 omega dt: dt*lambda = 0.2). The highest
+ * spring mode is below 2n = 64 rad/s. RKF45 with dt = 0.012: 64 * 0.012 = 0.768 exceeds its
+ * imaginary-axis bound 0.7; RK4 with dt = 0.06: 3.84 exceeds its 2.82 (2 sqrt 2 = 2.83). Both
+ * refused before the run, naming the frequency (RK4 used to run and overflow: FRICREG_EDIVERGED
+ * at t = 23.6). RK4 with dt = 0.02 (1.28) is within its bound but beyond dt*omega = 1/sqrt 2,
+ * where a friction reversal within one step can put energy in: refused, saying so. */
 START_TEST(test_spring_mode_too_fast_is_estep)
 {
     fricreg_sim *sim = make(FRICREG_SYSTEM_CHAIN);
@@ -323,8 +325,17 @@ START_TEST(test_spring_mode_too_fast_is_estep)
                      FRICREG_OK);
     expect_failure(sim, fricreg_sim_run_cycles(sim, 4), FRICREG_ESTEP);
     ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "frequency 64"));
-    /* just inside the bound, 2.82/64 = 0.04406: it runs */
-    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 0.044, 0.0, 0.0),
+    ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "> 2.82, the stability bound of rk4"));
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 0.02, 0.0, 0.0),
+                     FRICREG_OK);
+    expect_failure(sim, fricreg_sim_run_cycles(sim, 4), FRICREG_ESTEP);
+    ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "dt*omega = 1.28 > 0.707107 lets a friction"));
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RKF45, 0.012, 0.0, 0.0),
+                     FRICREG_OK);
+    expect_failure(sim, fricreg_sim_run_cycles(sim, 4), FRICREG_ESTEP);
+    ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "> 0.7, the stability bound of rkf45"));
+    /* just inside the bound, 0.7/64 = 0.01094: it runs */
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RKF45, 0.0109, 0.0, 0.0),
                      FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_run_cycles(sim, 1), FRICREG_OK);
     fricreg_sim_free(sim);

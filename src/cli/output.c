@@ -5,11 +5,29 @@
 
 #include "cli.h"
 
-static int run_failed(fricreg_sim *sim, int status)
+/* Whether a step refused with eps from the paper's rule is refused at every dt: the rule makes
+ * dt * lambda independent of dt, and then only --eps helps. Probed with dt/1000 for one step
+ * (the library checks the step before it takes any). */
+static int refused_at_every_dt(const struct cli_run *run)
 {
-    /* A step that is too large is a bad --dt: a usage error like any other bad value. */
-    fprintf(stderr, "fricreg-sim: %s%s\n", status == FRICREG_ESTEP ? "--dt: " : "",
-            fricreg_sim_errmsg(sim));
+    if (run->eps > 0.0)
+        return 0;
+    struct cli_run probe = *run;
+    probe.dt = run->dt * 1e-3;
+    fricreg_sim *sim = cli_make_sim(&probe);
+    int every = sim != NULL && fricreg_sim_run(sim, probe.dt) == FRICREG_ESTEP;
+    fricreg_sim_free(sim);
+    return every;
+}
+
+static int run_failed(fricreg_sim *sim, int status, const struct cli_run *run)
+{
+    /* A step that is too large is a bad --dt (or, under the paper's rule, a missing --eps): a
+     * usage error like any other bad value. */
+    const char *option = "";
+    if (status == FRICREG_ESTEP)
+        option = refused_at_every_dt(run) ? "--eps: " : "--dt: ";
+    fprintf(stderr, "fricreg-sim: %s%s\n", option, fricreg_sim_errmsg(sim));
     fricreg_sim_free(sim);
     return status == FRICREG_ESTEP ? CLI_EXIT_USAGE : CLI_EXIT_RUN;
 }
@@ -109,7 +127,7 @@ int cli_run_summary(const struct cli_run *run, FILE *out)
     int status = execute(sim, run);
     double cpu_seconds = (double)(clock() - start) / CLOCKS_PER_SEC;
     if (status != FRICREG_OK)
-        return run_failed(sim, status);
+        return run_failed(sim, status, run);
     write_summary(out, run, sim, cpu_seconds);
     fricreg_sim_free(sim);
     return 0;
@@ -162,7 +180,7 @@ int cli_run_trajectory(const struct cli_run *run, FILE *out)
     int status = execute(sim, run);
     if (status != FRICREG_OK) {
         fclose(tmp);
-        return run_failed(sim, status);
+        return run_failed(sim, status, run);
     }
     rewind(tmp);
     char chunk[1 << 16];
