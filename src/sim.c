@@ -220,7 +220,7 @@ static double eps_in_use(const fricreg_sim *sim)
     return sim->eps_set > 0.0 ? sim->eps_set : sim->sys.type->paper_eps(&sim->sys, sim->dt);
 }
 
-/* ---- Right-hand side for GSL (the Jacobian: sim_jacobian.c) ------------------------------------------------ */
+/* ---- Right-hand side for GSL (its Jacobian: sim_jacobian.c) ----------------------------- */
 
 /* Contact kinematics and friction at (t, x, v), into sim->zdot, a_free, f (and f_eq). */
 static int eval_friction(fricreg_sim *sim, double t, const double y[], int want_feq)

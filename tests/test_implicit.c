@@ -70,7 +70,7 @@ static void report(const char *what, double D, double ref)
     fflush(stdout); /* Check forks: the child may _exit before stdio flushes */
 }
 
-/* rtol 1e-8: msbdf measured within 2e-7, rk4imp within 1e-5 of the exact D; law (4)'s own
+/* rtol 1e-8: msbdf measured 1.3e-7, rk4imp 1.6e-8 from the exact D; law (4)'s own
  * error at eps = 1e-6 is O(eps^2) on the sticking oscillator (issue 12: -1.5e-5 at eps = 0.04),
  * so what is left is the integrators' tolerance. */
 START_TEST(oscillator_msbdf_and_rk4imp_reach_the_exact_solution)
@@ -82,20 +82,20 @@ START_TEST(oscillator_msbdf_and_rk4imp_reach_the_exact_solution)
     ck_assert_double_eq_tol(D, ref, 1e-6 * ref);
     D = last_cycle(sim, FRICREG_INT_RK4IMP, 1e-8);
     report("oscillator rk4imp", D, ref);
-    ck_assert_double_eq_tol(D, ref, 5e-5 * ref);
+    ck_assert_double_eq_tol(D, ref, 1e-6 * ref);
     fricreg_sim_free(sim);
 }
 END_TEST
 
 /* The chain's 32 contacts, most of them stuck for the whole cycle: msbdf at rtol 1e-8
- * measured 1.5e-6 from the reference. */
+ * measured 8.0e-7 from the reference (1.5e-6 before adaptive steps were capped). */
 START_TEST(chain_msbdf_reaches_the_reference)
 {
     fricreg_sim *sim = NULL;
     ck_assert_int_eq(fricreg_sim_create(FRICREG_SYSTEM_CHAIN, &sim), FRICREG_OK);
     double D = last_cycle(sim, FRICREG_INT_MSBDF, 1e-8);
     report("chain msbdf", D, CHAIN_D4);
-    ck_assert_double_eq_tol(D, CHAIN_D4, 1e-5 * CHAIN_D4);
+    ck_assert_double_eq_tol(D, CHAIN_D4, 5e-6 * CHAIN_D4);
     fricreg_sim_free(sim);
 }
 END_TEST
