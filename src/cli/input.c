@@ -131,8 +131,8 @@ static int check_mtx(const char *option, const char *path, FILE *f, FILE *clean,
                     ncols, nentries);
             continue;
         }
-        long i, j;
-        double value;
+        long i = 0, j = 0; /* set by the reads below; initialized for -Wmaybe-uninitialized */
+        double value = 0.0;
         if (!read_index(p, &end, nrows, &i) || !read_index(end, &end, ncols, &j) ||
             !read_number(end + strspn(end, " \t"), &end, &value) || !blank(end))
             status = file_error(option, path, line,
