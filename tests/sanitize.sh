@@ -32,9 +32,10 @@ if [ $built -eq 0 ]; then
     status=$?
 fi
 grep -E "tests passed|tests failed|Failed|\*\*\*" "$log" | tail -n 20
-if [ -n "$(ls -A "$reports")" ]; then
-    echo "FAIL: sanitizer reports:"
-    cat "$reports"/*
+count=$(ls "$reports" | wc -l)
+if [ "$count" -gt 0 ]; then
+    echo "FAIL: $count sanitizer report(s) in $reports; the first:"
+    cat "$reports/$(ls "$reports" | head -n 1)" | head -n 60
     status=1
 fi
 [ $built -eq 0 ] || tail -n 30 "$log"
