@@ -3,9 +3,10 @@
  * The program is linked with fricreg's objects and GSL's static archives under
  * -Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc,--wrap=free, so every allocation of fricreg
  * and of the GSL code it calls passes through the wrappers below (the C library's own do not).
- * For each scenario (create, set_coupling_dense, a simulation of each system with one stepper
- * of each family, the exact solver), the scenario is run once with no failure to count its
- * allocations n, then again for every k = 1..n with the k-th allocation failing. Each case
+ * For each scenario (create, set_coupling_dense, the step guard's stiffness, a simulation of
+ * each system with one stepper of each family, the exact solver), the scenario is run once
+ * with no failure to count its allocations n, then again for every k = 1..n with the k-th
+ * allocation failing. Each case
  * must return FRICREG_OK or FRICREG_ENOMEM (with ENOMEM recorded in the object's error state
  * where there is an object), call GSL's error handler never (GSL's default one aborts), and
  * leave no block allocated once its objects are freed. fricreg_ctx_eval must not allocate at
@@ -195,6 +196,30 @@ static int ctx_dense(void)
     return status;
 }
 
+/* The step guard's eigenvalue problem: the paper's partition with a dense W (stiffness.c). */
+static int ctx_stick_stiffness(void)
+{
+    double W[M_DENSE * M_DENSE], lambda = -2.385;
+    dense_w(W);
+    fricreg_ctx *ctx = NULL;
+    int status = fricreg_ctx_create(M_DENSE, &ctx);
+    if (status == FRICREG_OK)
+        status = fricreg_ctx_set_coupling_dense(ctx, M_DENSE, W);
+    if (status == FRICREG_OK)
+        status = fricreg_ctx_set_partition(ctx, FRICREG_PARTITION_PAPER);
+    if (status == FRICREG_OK) {
+        status = fricreg_ctx_stick_stiffness(ctx, &lambda);
+        if (status != FRICREG_OK && lambda != -2.385)
+            NOTE("stick_stiffness: status %d but lambda written", status);
+        if (status == FRICREG_OK && !(lambda > 0.0))
+            NOTE("stick_stiffness: lambda = %g", lambda);
+    }
+    if (ctx != NULL && status != FRICREG_OK && fricreg_ctx_errcode(ctx) != status)
+        NOTE("status %d, errcode %d", status, fricreg_ctx_errcode(ctx));
+    fricreg_ctx_free(ctx);
+    return status;
+}
+
 struct sim_case {
     int system, integrator;
     double dt, rtol, t_end;
@@ -331,6 +356,13 @@ START_TEST(test_ctx_set_coupling_dense)
 }
 END_TEST
 
+START_TEST(test_ctx_stick_stiffness)
+{
+    struct tally t = fail_each_allocation("ctx_stick_stiffness", ctx_stick_stiffness);
+    ck_assert_int_eq(t.enomem, t.cases);
+}
+END_TEST
+
 /* fricreg.h: "fricreg_ctx_eval never allocates". With every allocation failing, evaluations
  * under both partitions, in stick and in slip, with a dense W, still succeed. */
 START_TEST(test_eval_does_not_allocate)
@@ -409,6 +441,7 @@ static Suite *alloc_suite(void)
     TCase *core = tcase_create("core");
     tcase_add_test(core, test_ctx_create);
     tcase_add_test(core, test_ctx_set_coupling_dense);
+    tcase_add_test(core, test_ctx_stick_stiffness);
     tcase_add_test(core, test_eval_does_not_allocate);
     suite_add_tcase(s, core);
     TCase *drivers = tcase_create("drivers");
