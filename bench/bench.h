@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* bench.h — shared pieces of the benchmarks (bench/): the problems, one timed run, CPU time.
  *
  * Not part of the library: the benchmark programs include this header, the library never

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* common.c — the benchmark problems, CPU timing with repeats, and one fricreg_sim run. */
 #define _POSIX_C_SOURCE 199309L /* clock_gettime */
 #include <math.h>
@@ -16,8 +17,8 @@ const struct bench_problem bench_problems[BENCH_NPROBLEMS] = {
      FRICREG_SYSTEM_OSCILLATOR, 2.0, 0.5, 0, 50, 1e-3, 1},
     {"osc_slip", "oscillator a = 3, omega = 1.5 (no sticking), D on cycle 50",
      FRICREG_SYSTEM_OSCILLATOR, 3.0, 1.5, 0, 50, 1e-5, 1},
-    {"chain", "chain n = 32, a = 0.25, omega = 0.5, D on cycle 4",
-     FRICREG_SYSTEM_CHAIN, 0.25, 0.5, 32, 4, 1e-3, 1},
+    {"chain", "chain n = 32, a = 0.25, omega = 0.5, D on cycle 4", FRICREG_SYSTEM_CHAIN, 0.25, 0.5,
+     32, 4, 1e-3, 1},
     {"twoblock", "two blocks on a belt (K = 2, mu1 = 0.5, mu2 = 0.25), D on cycle 4",
      FRICREG_SYSTEM_TWOBLOCK, 0.0, 0.0, 0, 4, 1e-4, 0},
 };
@@ -54,16 +55,23 @@ static int sim_setup(fricreg_sim *sim, const struct bench_sim_point *pt)
     int s = FRICREG_OK;
     if (p->system == FRICREG_SYSTEM_OSCILLATOR) { /* from rest at the origin (spec, Eq. (5)) */
         s = fricreg_sim_set_param(sim, FRICREG_PARAM_A, p->a);
-        if (s == FRICREG_OK) s = fricreg_sim_set_param(sim, FRICREG_PARAM_OMEGA, p->omega);
-        if (s == FRICREG_OK) s = fricreg_sim_set_param(sim, FRICREG_PARAM_X0, 0.0);
-        if (s == FRICREG_OK) s = fricreg_sim_set_param(sim, FRICREG_PARAM_V0, 0.0);
+        if (s == FRICREG_OK)
+            s = fricreg_sim_set_param(sim, FRICREG_PARAM_OMEGA, p->omega);
+        if (s == FRICREG_OK)
+            s = fricreg_sim_set_param(sim, FRICREG_PARAM_X0, 0.0);
+        if (s == FRICREG_OK)
+            s = fricreg_sim_set_param(sim, FRICREG_PARAM_V0, 0.0);
     } else if (p->system == FRICREG_SYSTEM_CHAIN) {
         s = fricreg_sim_set_param(sim, FRICREG_PARAM_N, (double)p->n);
-        if (s == FRICREG_OK) s = fricreg_sim_set_param(sim, FRICREG_PARAM_A, p->a);
-        if (s == FRICREG_OK) s = fricreg_sim_set_param(sim, FRICREG_PARAM_OMEGA, p->omega);
+        if (s == FRICREG_OK)
+            s = fricreg_sim_set_param(sim, FRICREG_PARAM_A, p->a);
+        if (s == FRICREG_OK)
+            s = fricreg_sim_set_param(sim, FRICREG_PARAM_OMEGA, p->omega);
     }
-    if (s == FRICREG_OK) s = fricreg_sim_set_law(sim, pt->law, pt->eps);
-    if (s == FRICREG_OK && pt->partition) s = fricreg_sim_set_partition(sim, pt->partition);
+    if (s == FRICREG_OK)
+        s = fricreg_sim_set_law(sim, pt->law, pt->eps);
+    if (s == FRICREG_OK && pt->partition)
+        s = fricreg_sim_set_partition(sim, pt->partition);
     if (s == FRICREG_OK)
         s = fricreg_sim_set_integrator(sim, pt->integrator, pt->dt, pt->rtol, pt->rtol);
     return s;

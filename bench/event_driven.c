@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* event_driven.c — classical Coulomb friction, event-driven, on SUNDIALS CVODE: the baseline a
  * user picks instead of regularizing.
  *
@@ -42,8 +43,8 @@ typedef realtype ed_real;
 
 /* The system of one run: sizes, parameters, the contacts' modes, scratch. */
 struct ed_sys {
-    size_t n;      /* bodies = contacts */
-    int chain;     /* 1 chain, 0 oscillator */
+    size_t n;  /* bodies = contacts */
+    int chain; /* 1 chain, 0 oscillator */
     double a, omega, weight;
     double period; /* the forcing period, as the library reports it */
     int *mode;     /* +1 / -1 slipping with that direction, 0 stuck */
@@ -129,8 +130,7 @@ static int switch_modes(struct ed_sys *s, double t, double y[], const int found[
 /* CVODE's error messages would go to stderr; keep the last one for the report instead. */
 static char last_error[200];
 #if SUNDIALS_VERSION_MAJOR < 7
-static void quiet_handler(int code, const char *module, const char *function, char *msg,
-                          void *user)
+static void quiet_handler(int code, const char *module, const char *function, char *msg, void *user)
 {
     (void)user;
     snprintf(last_error, sizeof last_error, "%s %s (%d): %s", module, function, code, msg);
@@ -150,8 +150,8 @@ static void add_counts(void *mem, int newton, struct bench_run *out)
 }
 
 /* Integrates cycle by cycle to the end of cycle `cycle`, restarting at every event. */
-static int integrate(void *mem, N_Vector yv, struct ed_sys *s, int newton, int cycle,
-                     int *found, struct bench_run *out)
+static int integrate(void *mem, N_Vector yv, struct ed_sys *s, int newton, int cycle, int *found,
+                     struct bench_run *out)
 {
     double *y = N_VGetArrayPointer(yv), T = s->period, D_start = 0.0;
     double t_burst = 0.0; /* start of the current burst of events */
@@ -175,8 +175,8 @@ static int integrate(void *mem, N_Vector yv, struct ed_sys *s, int newton, int c
                 t_burst = burst ? t_burst : t;
                 if (burst > MAX_BURST) {
                     snprintf(out->msg, sizeof out->msg,
-                             "event cascade: %d mode switches within 1e-9 of t = %.17g",
-                             MAX_BURST, t_burst);
+                             "event cascade: %d mode switches within 1e-9 of t = %.17g", MAX_BURST,
+                             t_burst);
                     add_counts(mem, newton, out);
                     return FRICREG_EINTEGRATOR;
                 }
@@ -204,7 +204,7 @@ int ed_run(const void *point, struct bench_run *out)
         return out->status = FRICREG_EINVAL;
     int chain = p->system == FRICREG_SYSTEM_CHAIN, newton = pt->method == ED_BDF;
     struct ed_sys s = {chain ? p->n : 1, chain, p->a, p->omega, chain ? 1.0 / (double)p->n : 1.0,
-                       bench_period(p), NULL, NULL};
+                       bench_period(p),  NULL,  NULL};
     sunindextype dim = (sunindextype)(2 * s.n + 1);
     SUNContext ctx = NULL;
     N_Vector y = NULL;

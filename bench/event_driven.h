@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* event_driven.h — the baseline users pick instead of regularizing: classical Coulomb
  * friction (1) with force balance at rest (2), integrated by SUNDIALS CVODE between events
  * that its root finding locates on the stick/slip switching functions.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* kernels.c — fricreg-bench-kernels [OUTDIR]: the law kernels against the roofline.
  *
  * ns per contact of fricreg_law_eval_batch (law (4)) and fricreg_ctx_eval (W = I, law (4)),
@@ -22,11 +23,13 @@ static const size_t sizes[NSIZES] = {1000, 1000000};
 
 /* What each item is; the minimal loop it is compared with (-1: none). */
 enum item { TRIAD, MIN_BATCH, BATCH, MIN_CTX, MIN_CTX_COPIES, CTX, CTX_FEQ };
-static const char *const item_names[NITEMS] = {
-    "triad a = b + s c (per element)", "minimal loop, law (4)",
-    "fricreg_law_eval_batch, law (4)", "minimal loop, law (4), f_eq = -a/w",
-    "  the same + copies of v, a_free", "fricreg_ctx_eval, W = I, law (4)",
-    "fricreg_ctx_eval, the same, f_eq out"};
+static const char *const item_names[NITEMS] = {"triad a = b + s c (per element)",
+                                               "minimal loop, law (4)",
+                                               "fricreg_law_eval_batch, law (4)",
+                                               "minimal loop, law (4), f_eq = -a/w",
+                                               "  the same + copies of v, a_free",
+                                               "fricreg_ctx_eval, W = I, law (4)",
+                                               "fricreg_ctx_eval, the same, f_eq out"};
 static const int item_yardstick[NITEMS] = {-1, -1, MIN_BATCH, -1, MIN_CTX, MIN_CTX, MIN_CTX};
 
 struct arrays {
@@ -49,8 +52,9 @@ static void fill_inputs(struct arrays *a)
 {
     for (size_t i = 0; i < a->m; i++) {
         double u = uniform(), sign = uniform() < 0.5 ? -1.0 : 1.0;
-        a->v[i] = u < 0.4 ? 0.0 : u < 0.6 ? sign * KERNEL_EPS * uniform()
-                                          : sign * (KERNEL_EPS + (1.0 - KERNEL_EPS) * uniform());
+        a->v[i] = u < 0.4   ? 0.0
+                  : u < 0.6 ? sign * KERNEL_EPS * uniform()
+                            : sign * (KERNEL_EPS + (1.0 - KERNEL_EPS) * uniform());
         a->mun[i] = 0.5 + uniform();
         a->f_eq[i] = (4.0 * uniform() - 2.0) * a->mun[i];
         a->a_free[i] = -a->f_eq[i]; /* W = I: f_eq = -a_free */
@@ -60,8 +64,8 @@ static void fill_inputs(struct arrays *a)
 
 static int arrays_init(struct arrays *a, size_t m)
 {
-    double **p[] = {&a->v, &a->f_eq, &a->mun, &a->a_free, &a->w, &a->f, &a->f_eq_out,
-                    &a->v_copy, &a->a_copy};
+    double **p[] = {&a->v, &a->f_eq,     &a->mun,    &a->a_free, &a->w,
+                    &a->f, &a->f_eq_out, &a->v_copy, &a->a_copy};
     int ok = 1;
     a->m = m;
     a->ctx = NULL;
@@ -71,8 +75,10 @@ static int arrays_init(struct arrays *a, size_t m)
         return FRICREG_ENOMEM;
     fill_inputs(a);
     int status = fricreg_ctx_create(m, &a->ctx); /* W = I until set otherwise */
-    if (status == FRICREG_OK) status = fricreg_ctx_set_bounds(a->ctx, m, a->mun);
-    if (status == FRICREG_OK) status = fricreg_ctx_set_law(a->ctx, FRICREG_LAW_QUINN, KERNEL_EPS);
+    if (status == FRICREG_OK)
+        status = fricreg_ctx_set_bounds(a->ctx, m, a->mun);
+    if (status == FRICREG_OK)
+        status = fricreg_ctx_set_law(a->ctx, FRICREG_LAW_QUINN, KERNEL_EPS);
     return status;
 }
 
@@ -90,14 +96,15 @@ static int run_item(int it, struct arrays *a)
     switch (it) {
     case TRIAD: minimal_triad(m, a->f, a->v, a->mun, 1.0001); return FRICREG_OK;
     case MIN_BATCH: minimal_quinn(KERNEL_EPS, m, a->v, a->f_eq, a->mun, a->f); return FRICREG_OK;
-    case BATCH: return fricreg_law_eval_batch(FRICREG_LAW_QUINN, KERNEL_EPS, m, a->v, a->f_eq,
-                                              a->mun, a->f);
+    case BATCH:
+        return fricreg_law_eval_batch(FRICREG_LAW_QUINN, KERNEL_EPS, m, a->v, a->f_eq, a->mun,
+                                      a->f);
     case MIN_CTX:
         minimal_quinn_diagonal(KERNEL_EPS, m, a->v, a->a_free, a->w, a->mun, a->f);
         return FRICREG_OK;
     case MIN_CTX_COPIES:
-        minimal_quinn_diagonal_copies(KERNEL_EPS, m, a->v, a->a_free, a->w, a->mun, a->f,
-                                      a->v_copy, a->a_copy);
+        minimal_quinn_diagonal_copies(KERNEL_EPS, m, a->v, a->a_free, a->w, a->mun, a->f, a->v_copy,
+                                      a->a_copy);
         return FRICREG_OK;
     case CTX: return fricreg_ctx_eval(a->ctx, m, a->v, a->a_free, a->f, NULL);
     default: return fricreg_ctx_eval(a->ctx, m, a->v, a->a_free, a->f, a->f_eq_out);

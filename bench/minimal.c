@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* minimal.c — the yardstick loops of bench/kernels.c (minimal.h). */
 #include "minimal.h"
 
@@ -12,8 +13,8 @@ static double quinn(double c, double f_eq, double mun)
     return clamp(clamp(f_eq, -mun, mun) - c * mun, -mun, mun);
 }
 
-void minimal_quinn(double eps, size_t m, const double v[], const double f_eq[],
-                   const double mun[], double f[])
+void minimal_quinn(double eps, size_t m, const double v[], const double f_eq[], const double mun[],
+                   double f[])
 {
     double k = 2.0 / eps;
     for (size_t i = 0; i < m; i++)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* minimal.h — the least code that computes what the law kernels compute (bench/kernels.c).
  *
  * The yardsticks of the kernel benchmark: no validation, no statistics, no copies, the same
@@ -10,8 +11,8 @@
 
 /** f[i] = clamp(clamp(f_eq[i], +-mun[i]) - (2 v[i]/eps) mun[i], +-mun[i]): law (4) on m
  *  contacts, what fricreg_law_eval_batch(FRICREG_LAW_QUINN, ...) computes. */
-void minimal_quinn(double eps, size_t m, const double v[], const double f_eq[],
-                   const double mun[], double f[]);
+void minimal_quinn(double eps, size_t m, const double v[], const double f_eq[], const double mun[],
+                   double f[]);
 
 /** The same with f_eq[i] = -a_free[i] / w[i]: what fricreg_ctx_eval computes with a diagonal
  *  W = diag(w) under law (4). */

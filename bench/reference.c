@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* reference.c — the reference dissipations of the benchmark problems.
  *
  * The oscillators have an exact solution (fricreg_exact.h). The chain and the two blocks have
@@ -95,8 +96,8 @@ static int ladder_reference(const struct bench_problem *p, double dt0, int level
         ref->D = D[K];
         ref->uncertainty = fabs(d2);
         snprintf(ref->how, sizeof ref->how,
-                 "law (4) + RK4 at dt = %g (%.1f CPU s), not extrapolated (no clean order)",
-                 dt[K], cpu);
+                 "law (4) + RK4 at dt = %g (%.1f CPU s), not extrapolated (no clean order)", dt[K],
+                 cpu);
     }
     fprintf(log, "  extrapolated D = %.15f, uncertainty %.1e (%.1e relative)\n", ref->D,
             ref->uncertainty, ref->uncertainty / fabs(ref->D));
@@ -108,8 +109,10 @@ static int ladder_reference(const struct bench_problem *p, double dt0, int level
 static void event_driven_check(const struct bench_problem *p, const struct bench_reference *ref,
                                FILE *log)
 {
-    static const struct { int method; double rtol; } runs[] = {
-        {ED_BDF, 1e-10}, {ED_ADAMS, 1e-10}, {ED_ADAMS, 1e-12}};
+    static const struct {
+        int method;
+        double rtol;
+    } runs[] = {{ED_BDF, 1e-10}, {ED_ADAMS, 1e-10}, {ED_ADAMS, 1e-12}};
     for (size_t k = 0; k < sizeof runs / sizeof runs[0]; k++) {
         struct ed_point pt = {p, runs[k].method, runs[k].rtol};
         struct bench_run run;

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* reference.h — the reference dissipation each benchmark error is measured against. */
 #ifndef FRICREG_BENCH_REFERENCE_H
 #define FRICREG_BENCH_REFERENCE_H

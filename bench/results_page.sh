@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # bench/results_page.sh — writes the dated results page (docs/results.md) from the files the
 # benchmark leaves in its results folder: machine.txt, summary.csv, orders.csv, scaling.csv
 # and laws.csv. bench/run.sh calls it last; the numbers live in that page and nowhere else.

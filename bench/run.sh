@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # bench/run.sh — the whole benchmark, from the top of a fresh clone:
 #   builds with -DFRICREG_BENCH=ON in build-bench/, runs the work-precision, the scaling and
 #   the kernel benchmarks, writes every CSV, gnuplot script and PNG to bench-results/, prints

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* scaling.c — fricreg-bench-scaling OUTDIR: how the cost grows with the number of contacts.
  *
  * 1. The chain of Sec. 3.2 for n = 32 … 10^6 blocks, laws (4) and (1), fixed-step RK4 with
@@ -40,8 +41,10 @@ static double chain_run(size_t n, int law, double *steps)
     fricreg_sim *sim = NULL;
     double dt = 1.0 / (2.0 * (double)n), t = NAN;
     int status = fricreg_sim_create(FRICREG_SYSTEM_CHAIN, &sim);
-    if (status == FRICREG_OK) status = fricreg_sim_set_param(sim, FRICREG_PARAM_N, (double)n);
-    if (status == FRICREG_OK) status = fricreg_sim_set_law(sim, law, 0.0);
+    if (status == FRICREG_OK)
+        status = fricreg_sim_set_param(sim, FRICREG_PARAM_N, (double)n);
+    if (status == FRICREG_OK)
+        status = fricreg_sim_set_law(sim, law, 0.0);
     if (status == FRICREG_OK)
         status = fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, dt, 0.0, 0.0);
     if (status == FRICREG_OK) {
@@ -79,9 +82,10 @@ static void chain_scaling(void)
 enum { M = 1000000, LAW_REPEATS = 11, NLAWS = 6 };
 static const int all_laws[NLAWS] = {FRICREG_LAW_COULOMB, FRICREG_LAW_FORCE_BALANCE,
                                     FRICREG_LAW_KARNOPP, FRICREG_LAW_VELOCITY_LIMITED,
-                                    FRICREG_LAW_TANH, FRICREG_LAW_QUINN};
-static const char *const all_law_names[NLAWS] = {"coulomb(1)", "force-balance(2)", "karnopp",
-                                                 "velocity-limited(3)", "tanh", "quinn(4)"};
+                                    FRICREG_LAW_TANH,    FRICREG_LAW_QUINN};
+static const char *const all_law_names[NLAWS] = {"coulomb(1)", "force-balance(2)",
+                                                 "karnopp",    "velocity-limited(3)",
+                                                 "tanh",       "quinn(4)"};
 #define LAW_EPS 1e-3
 
 /* xorshift64*: the same inputs on every machine. */
@@ -100,8 +104,9 @@ static void law_inputs(double v[], double f_eq[], double mun[], double a_free[])
 {
     for (size_t i = 0; i < M; i++) {
         double u = uniform(), sign = uniform() < 0.5 ? -1.0 : 1.0;
-        v[i] = u < 0.4 ? 0.0 : u < 0.6 ? sign * LAW_EPS * uniform()
-                                       : sign * (LAW_EPS + (1.0 - LAW_EPS) * uniform());
+        v[i] = u < 0.4   ? 0.0
+               : u < 0.6 ? sign * LAW_EPS * uniform()
+                         : sign * (LAW_EPS + (1.0 - LAW_EPS) * uniform());
         mun[i] = 0.5 + uniform();
         f_eq[i] = (4.0 * uniform() - 2.0) * mun[i];
         a_free[i] = -f_eq[i]; /* W = I: f_eq = -a_free */
@@ -180,8 +185,8 @@ static int write_files(const char *dir)
         return 1;
     fprintf(csv, "n,steps,ns_per_step_block_quinn,ns_per_step_block_coulomb,ratio\n");
     for (int i = 0; i < NN; i++)
-        fprintf(csv, "%zu,%.0f,%.4f,%.4f,%.4f\n", chain_n[i], chain_steps_done[i],
-                chain_ns[0][i], chain_ns[1][i], chain_ns[0][i] / chain_ns[1][i]);
+        fprintf(csv, "%zu,%.0f,%.4f,%.4f,%.4f\n", chain_n[i], chain_steps_done[i], chain_ns[0][i],
+                chain_ns[1][i], chain_ns[0][i] / chain_ns[1][i]);
     fprintf(laws, "law,path,m,ns_per_contact\n");
     for (int z = 0; z < 2; z++) {
         for (int l = 0; l < NLAWS; l++)
@@ -239,7 +244,8 @@ int main(int argc, char **argv)
                chain_ns[l][NN - 1] / chain_ns[l][0], hi / lo);
     }
     printf("\n== Laws alone: ns per contact, eps = %g; contacts 40%% stuck, 20%% near stick, "
-           "40%% slipping ==\n", LAW_EPS);
+           "40%% slipping ==\n",
+           LAW_EPS);
     printf("%-24s %-20s %14s %14s\n", "", "law", "m = 10^6", "m = 4096");
     for (int l = 0; l < NLAWS; l++)
         printf("%-24s %-20s %14.2f %14.2f\n", "fricreg_law_eval_batch", all_law_names[l],
@@ -252,10 +258,12 @@ int main(int argc, char **argv)
     printf("%-45s %14.2f %14.2f\n", "ratio (4)/(1), context", ctx_ns[0][0] / ctx_ns[0][1],
            ctx_ns[1][0] / ctx_ns[1][1]);
     printf("(m = 10^6: 40 MB of arrays, memory traffic counts; m = 4096: in cache, swept %d "
-           "times per timing)\n", INNER);
+           "times per timing)\n",
+           INNER);
     if (write_files(argv[1]) != 0)
         return 1;
     printf("\nscaling benchmark: %.0f CPU seconds; files in %s: scaling.csv, laws.csv, "
-           "scaling.gp\n", bench_cpu_seconds() - t_start, argv[1]);
+           "scaling.gp\n",
+           bench_cpu_seconds() - t_start, argv[1]);
     return 0;
 }

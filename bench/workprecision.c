@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* workprecision.c — fricreg-bench-wp OUTDIR: work against precision of every method on the
  * four problems (bench.h), in one process.
  *
@@ -59,10 +60,8 @@ static const struct method methods[] = {
 enum { NMETHODS = sizeof methods / sizeof methods[0], NSWEEP = 10 };
 
 /* Fixed steps (eps by the paper's rule) and tolerances (rtol = atol), coarse to fine. */
-static const double dts[NSWEEP] = {0.1,   0.05,  0.02, 0.01, 0.005,
-                                   0.002, 0.001, 5e-4, 2e-4, 1e-4};
-static const double tols[NSWEEP] = {1e-2, 1e-3, 1e-4, 1e-5, 1e-6,
-                                    1e-7, 1e-8, 1e-9, 1e-10, 1e-11};
+static const double dts[NSWEEP] = {0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 5e-4, 2e-4, 1e-4};
+static const double tols[NSWEEP] = {1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11};
 #define ADAPTIVE_DT0 1e-4 /* first step of the adaptive steppers */
 
 /* The ranges for the observed order: the finest points, dt <= 1e-3 (asymptotic), and
@@ -76,14 +75,14 @@ enum { PASSES = 5, MIN_PASSES = 3 };
 #define SLOW_POINT 0.25 /* CPU seconds of a first run above which a point gets MIN_PASSES */
 
 struct point {
-    int ok;        /* the run succeeded */
-    double param;  /* dt or tolerance */
-    double eps;    /* eps used (fixed-step and adaptive law runs) */
-    double err;    /* relative error in D */
+    int ok;       /* the run succeeded */
+    double param; /* dt or tolerance */
+    double eps;   /* eps used (fixed-step and adaptive law runs) */
+    double err;   /* relative error in D */
     double t[PASSES];
-    int nt;        /* runs timed */
+    int nt;               /* runs timed */
     int nondeterministic; /* a repeat gave another D */
-    double cpu;    /* median of t */
+    double cpu;           /* median of t */
     struct bench_run run; /* the first run's results */
 };
 
@@ -111,10 +110,13 @@ static void run_point(const struct bench_problem *p, const struct method *m, int
         return;
 #endif
     } else {
-        struct bench_sim_point sp = {p, m->law, m->integrator,
+        struct bench_sim_point sp = {p,
+                                     m->law,
+                                     m->integrator,
                                      m->kind == FIXED ? dts[k] : ADAPTIVE_DT0,
                                      m->kind == FIXED ? 0.0 : tols[k],
-                                     m->kind == FIXED ? 0.0 : p->adaptive_eps, m->partition};
+                                     m->kind == FIXED ? 0.0 : p->adaptive_eps,
+                                     m->partition};
         t = bench_time_once(bench_sim_run, &sp, &run);
     }
     pt->t[pt->nt++] = t;
@@ -124,10 +126,10 @@ static void run_point(const struct bench_problem *p, const struct method *m, int
     }
     pt->run = run;
     pt->param = m->kind == FIXED ? dts[k] : tols[k];
-    pt->eps = m->kind == EVENT   ? 0.0
-              : m->kind == FIXED ? (p->system == FRICREG_SYSTEM_CHAIN ? 10.0 * p->omega * dts[k]
-                                                                      : 2.0 * dts[k])
-                                 : p->adaptive_eps;
+    pt->eps = m->kind == EVENT ? 0.0
+              : m->kind == FIXED
+                  ? (p->system == FRICREG_SYSTEM_CHAIN ? 10.0 * p->omega * dts[k] : 2.0 * dts[k])
+                  : p->adaptive_eps;
     pt->ok = run.status == FRICREG_OK;
     pt->err = pt->ok ? bench_rel_error(run.D, refs[p - bench_problems].D) : NAN;
 }
@@ -179,8 +181,7 @@ static double time_to_reach(const struct point pts[NSWEEP], double target, int *
 
 /* Least-squares slope of log(err) against log(dt) over the points k >= first whose error
  * is above the reference's floor; *used gets their number. */
-static double observed_order(const struct point pts[NSWEEP], int first, double floor_err,
-                             int *used)
+static double observed_order(const struct point pts[NSWEEP], int first, double floor_err, int *used)
 {
     double sx = 0, sy = 0, sxx = 0, sxy = 0;
     int n = 0;
@@ -222,11 +223,13 @@ static void write_csv(FILE *f)
                 double lo = INFINITY, hi = 0.0;
                 for (int j = 0; j < pt->nt; j++)
                     lo = fmin(lo, pt->t[j]), hi = fmax(hi, pt->t[j]);
-                fprintf(f, "%s,%s,%s,%s,%g,%g,%s,%.15g,%.15g,%.6e,%.6e,%.6e,%.6e,%d,%.0f,%.0f,"
-                           "%.0f,\"%s\"\n",
+                fprintf(f,
+                        "%s,%s,%s,%s,%g,%g,%s,%.15g,%.15g,%.6e,%.6e,%.6e,%.6e,%d,%.0f,%.0f,"
+                        "%.0f,\"%s\"\n",
                         bench_problems[ip].key, methods[im].name,
-                        methods[im].kind == FIXED ? "fixed" : methods[im].kind == ADAPTIVE
-                                                                  ? "adaptive" : "event",
+                        methods[im].kind == FIXED      ? "fixed"
+                        : methods[im].kind == ADAPTIVE ? "adaptive"
+                                                       : "event",
                         methods[im].kind == FIXED ? "dt" : "tol", pt->param, pt->eps,
                         status_word(pt), r->D, refs[ip].D, pt->err, pt->cpu, lo, hi, pt->nt,
                         r->steps, r->rhs_evals, r->events, pt->ok ? "" : r->msg);
@@ -249,8 +252,8 @@ static void write_dat(const char *dir, int ip)
         for (int k = 0; k < NSWEEP; k++) {
             const struct point *pt = &results[ip][im][k];
             if (pt->ok) /* an exact hit would be 0 on a log axis: floor it */
-                fprintf(f, "%g %.6e %.6e %.0f %.0f\n", pt->param, pt->cpu,
-                        fmax(pt->err, 1e-16), pt->run.steps, pt->run.rhs_evals);
+                fprintf(f, "%g %.6e %.6e %.0f %.0f\n", pt->param, pt->cpu, fmax(pt->err, 1e-16),
+                        pt->run.steps, pt->run.rhs_evals);
         }
         fprintf(f, "\n\n");
     }
@@ -269,8 +272,7 @@ static void write_gnuplot(const char *dir)
                "set format x '%%.0e'; set format y '%%.0e'\n");
     for (int ip = 0; ip < BENCH_NPROBLEMS; ip++) {
         const struct bench_problem *p = &bench_problems[ip];
-        fprintf(f, "set output 'wp_%s.png'\nset title \"work-precision\\n%s\"\n", p->key,
-                p->title);
+        fprintf(f, "set output 'wp_%s.png'\nset title \"work-precision\\n%s\"\n", p->key, p->title);
         fprintf(f, "set xlabel 'CPU seconds (median)'; set ylabel 'relative error in D'\n");
         fprintf(f, "plot ");
         int block = 0, first = 1;
@@ -283,8 +285,10 @@ static void write_gnuplot(const char *dir)
         }
         fprintf(f, ", 1e-2 with lines dt 2 lc 'gray' notitle, 1e-4 with lines dt 2 lc 'gray' "
                    "notitle\n");
-        fprintf(f, "set output 'conv_%s.png'\nset title \"convergence in dt (RK4, the paper's "
-                   "eps rules)\\n%s\"\n", p->key, p->title);
+        fprintf(f,
+                "set output 'conv_%s.png'\nset title \"convergence in dt (RK4, the paper's "
+                "eps rules)\\n%s\"\n",
+                p->key, p->title);
         fprintf(f, "set xlabel 'dt'; set ylabel 'relative error in D'\nplot ");
         first = 1;
         for (int im = 0; im < NMETHODS; im++) {
@@ -346,8 +350,8 @@ static void print_summary(FILE *csv)
             for (int k = 0; k < NSWEEP; k++)
                 if (results[ip][im][k].ok)
                     best = fmin(best, results[ip][im][k].err);
-            printf("%-26s %10s %8s %10s %8s %10.2e\n", methods[im].name, s[0], s[1], s[2],
-                   s[3], best);
+            printf("%-26s %10s %8s %10s %8s %10.2e\n", methods[im].name, s[0], s[1], s[2], s[3],
+                   best);
             fprintf(csv, "%s,%s,%s,%s,%s,%s,%.3e\n", p->key, methods[im].name, s[0], s[1], s[2],
                     s[3], best);
         }
@@ -417,9 +421,9 @@ static void print_failures(void)
                     continue;
                 if (!any++)
                     printf("\n== Points without a result ==\n");
-                printf("%-10s %-26s %s %-8g %-9s %s\n", bench_problems[ip].key,
-                       methods[im].name, methods[im].kind == FIXED ? "dt " : "tol", pt->param,
-                       status_word(pt), pt->run.msg);
+                printf("%-10s %-26s %s %-8g %-9s %s\n", bench_problems[ip].key, methods[im].name,
+                       methods[im].kind == FIXED ? "dt " : "tol", pt->param, status_word(pt),
+                       pt->run.msg);
             }
 }
 
@@ -433,8 +437,8 @@ static double eps_order(int ip)
     double sx = 0, sy = 0, sxx = 0, sxy = 0;
     printf("  law (4) error against eps at fixed dt = %g (RK4):", dt);
     for (int k = 0; k < 4; k++) {
-        struct bench_sim_point sp = {&bench_problems[ip], FRICREG_LAW_QUINN, FRICREG_INT_RK4,
-                                     dt, 0.0, eps[k], 0};
+        struct bench_sim_point sp = {
+            &bench_problems[ip], FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt, 0.0, eps[k], 0};
         struct bench_run run;
         if (bench_sim_run(&sp, &run) != FRICREG_OK) {
             printf(" eps %g failed: %s\n", eps[k], run.msg);
@@ -461,7 +465,8 @@ int main(int argc, char **argv)
     printf("fricreg %s work-precision benchmark\n", fricreg_version());
 #ifdef FRICREG_BENCH_CVODE
     printf("event-driven baseline: %s CVODE, classical Coulomb (1)+(2), root finding on the "
-           "stick/slip switching functions\n", ed_version());
+           "stick/slip switching functions\n",
+           ed_version());
 #else
     printf("event-driven baseline: not built (libsundials-dev not found, or "
            "FRICREG_BENCH_CVODE=OFF)\n");

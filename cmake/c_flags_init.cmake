@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Loaded by project() (CMAKE_USER_MAKE_RULES_OVERRIDE_C, set in CMakeLists.txt) after CMake's
 # own compiler defaults and before they become cache entries, so -DCMAKE_C_FLAGS_<CONFIG>=...
 # still wins. The default build type RelWithDebInfo gets -O3 where CMake gives -O2: at -O2

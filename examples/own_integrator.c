@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* own_integrator.c — fricreg inside the caller's own time stepper.
  *
  * The unforced oscillator of the paper's Eq. (5), x'' + x = f, mun = 1, from (2.75, 0), with a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* quickstart.c — a first complete program: one law, then two coupled contacts through a context.
  * Build: cc quickstart.c $(pkg-config --cflags --libs fricreg) or with CMake (fricreg::fricreg). */
 #include <stdio.h>
@@ -18,7 +19,7 @@ int main(void)
     /* Two coupled contacts, z'' = a_free + W f, with the paper's Sec. 3.3 Delassus matrix. */
     const double W[4] = {1.0, -1.0, -1.0, 2.0}; /* row-major 2 x 2 */
     const double mun[2] = {0.5, 0.25};
-    const double zdot[2] = {0.0, 0.0};          /* both contacts at rest: near-stick */
+    const double zdot[2] = {0.0, 0.0}; /* both contacts at rest: near-stick */
     const double a_free[2] = {-0.1, 0.05};
     double force[2], f_eq[2];
     fricreg_ctx *ctx = NULL;

@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
 ! fricreg.F90 — module fricreg: the Fortran interface of fricreg.
 !
 !   use fricreg

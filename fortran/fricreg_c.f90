@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
 ! fricreg_c.f90 — module fricreg_c: thin bind(C) interfaces to every function of fricreg.h.
 !
 ! The interfaces are generated from the C prototypes at build time (gen_interfaces.cmake writes

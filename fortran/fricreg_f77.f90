@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
 ! fricreg_f77.f90 — module-free entry points for Fortran 77 callers: laws and contexts.
 !
 ! Plain external subroutines (no module, no interface needed), every argument by reference,

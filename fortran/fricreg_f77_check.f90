@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
 ! fricreg_f77_check.f90 — FRCHK: was the caller compiled for this F77 library?
 !
 ! The entry points FR* read their arguments by reference with the kinds this library was

@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
 ! fricreg_sim_c.f90 — module fricreg_sim_c: thin bind(C) interfaces to every function of the
 ! public headers beside fricreg.h: fricreg_sim.h (the GSL ODE drivers of the paper's three
 ! reference systems), fricreg_exact.h (the exact solution of the oscillator),

@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
 ! fricreg_sim_f77.f90 — module-free entry points for Fortran 77 callers: the ODE drivers of
 ! the reference systems (fricreg_sim.h). Conventions as in fricreg_f77.f90: external
 ! subroutines, arguments by reference, INTEGER*8 handle H, INTEGER STAT last, DOUBLE PRECISION

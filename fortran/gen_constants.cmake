@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # gen_constants.cmake — the Fortran constants, generated from the C headers (cmake -P).
 #
 # Reads every `enum NAME { FRICREG_X = <integer>, ... };` of the headers given in HEADERS (a

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # gen_interfaces.cmake — the Fortran bind(C) interfaces, generated from C headers (cmake -P).
 #
 #   cmake "-DHEADERS=include/fricreg_sim.h|include/fricreg_exact.h" -DOUT=drivers.inc \

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * fricreg.h — public C API of fricreg, a library for dry (Coulomb) friction with stick–slip.
  *
@@ -47,9 +48,9 @@ FRICREG_API const char *fricreg_version(void);
 
 /** Status codes. Values are fixed forever: new codes are appended, none is renumbered. */
 enum fricreg_status {
-    FRICREG_OK = 0,          /**< success */
-    FRICREG_ENULL = 1,       /**< a required pointer argument is NULL */
-    FRICREG_EINVAL = 2,      /**< an argument is out of its valid range (unknown law, eps <= 0 …) */
+    FRICREG_OK = 0,     /**< success */
+    FRICREG_ENULL = 1,  /**< a required pointer argument is NULL */
+    FRICREG_EINVAL = 2, /**< an argument is out of its valid range (unknown law, eps <= 0 …) */
     FRICREG_ENONFINITE = 3,  /**< an input number is NaN or infinite */
     FRICREG_ESIZE = 4,       /**< an array length does not match the context's contact count */
     FRICREG_ENOMEM = 5,      /**< memory allocation failed */
@@ -121,8 +122,7 @@ FRICREG_API int fricreg_law_from_name(const char *name);
  *  or eps < DBL_MIN; FRICREG_ENONFINITE if v, f_eq, mun or eps is NaN or infinite.
  *  Implements (1), (2), (3), (4) and the Karnopp and tanh laws of the paper's Sec. 2.
  *  Pure function; thread safe. */
-FRICREG_API int fricreg_law_eval(int law, double v, double f_eq, double mun, double eps,
-                                 double *f);
+FRICREG_API int fricreg_law_eval(int law, double v, double f_eq, double mun, double eps, double *f);
 
 /** Evaluate one friction law over an array of m contacts (one eps for all).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * fricreg_exact.h — the semi-analytical ("exact") solution of the 1-dof oscillator, Eq. (5),
  * under classical Coulomb friction (1) with force balance at rest (2).
@@ -116,11 +117,11 @@ FRICREG_API int fricreg_exact_get_value(const fricreg_exact *ex, int which, doub
  *  Values are fixed forever. The scan step is h = 2 pi/max(1, omega)/1024, so a run costs
  *  about t_end/h scan points whatever the number of switches. */
 enum fricreg_exact_stat {
-    FRICREG_EXACT_STAT_SCAN_POINTS = 0,    /**< closed-form tests "the phase still holds" on the
+    FRICREG_EXACT_STAT_SCAN_POINTS = 0, /**< closed-form tests "the phase still holds" on the
                                                 scan grid, including the halved first steps */
-    FRICREG_EXACT_STAT_ROOTS = 1,          /**< phase ends bracketed and refined: one per
+    FRICREG_EXACT_STAT_ROOTS = 1,       /**< phase ends bracketed and refined: one per
                                                 switch, plus any phase of zero length */
-    FRICREG_EXACT_STAT_ROOT_ITERS = 2 /**< Brent iterations, summed over the roots */
+    FRICREG_EXACT_STAT_ROOT_ITERS = 2   /**< Brent iterations, summed over the roots */
 };
 
 /** Read one counter (enum fricreg_exact_stat) into *value.

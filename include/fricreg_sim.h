@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * fricreg_sim.h — GSL ODE drivers for the paper's three reference systems.
  *
@@ -54,20 +55,20 @@ enum fricreg_param {
 
 /** Integrators: our own numbering of GSL's gsl_odeiv2 steppers. Values are fixed forever. */
 enum fricreg_integrator {
-    FRICREG_INT_RK2 = 1,     /**< explicit embedded Runge–Kutta (2, 3) */
+    FRICREG_INT_RK2 = 1, /**< explicit embedded Runge–Kutta (2, 3) */
     /** explicit classical 4th-order Runge–Kutta (the paper's). Adaptive: GSL's rk4 (error by
      *  step doubling). Fixed steps: fricreg's own gsl_odeiv2 step type on GSL rk4's grid, the
      *  same numbers to rounding for 4 right-hand sides per step instead of 6. */
     FRICREG_INT_RK4 = 2,
-    FRICREG_INT_RKF45 = 3,   /**< explicit Runge–Kutta–Fehlberg (4, 5) */
-    FRICREG_INT_RKCK = 4,    /**< explicit Runge–Kutta Cash–Karp (4, 5) */
-    FRICREG_INT_RK8PD = 5,   /**< explicit Runge–Kutta Prince–Dormand (8, 9) */
-    FRICREG_INT_RK1IMP = 6,  /**< implicit Euler */
-    FRICREG_INT_RK2IMP = 7,  /**< implicit Gaussian 2nd order */
-    FRICREG_INT_RK4IMP = 8,  /**< implicit Gaussian 4th order */
-    FRICREG_INT_BSIMP = 9,   /**< implicit Bulirsch–Stoer (Bader–Deuflhard) */
+    FRICREG_INT_RKF45 = 3,    /**< explicit Runge–Kutta–Fehlberg (4, 5) */
+    FRICREG_INT_RKCK = 4,     /**< explicit Runge–Kutta Cash–Karp (4, 5) */
+    FRICREG_INT_RK8PD = 5,    /**< explicit Runge–Kutta Prince–Dormand (8, 9) */
+    FRICREG_INT_RK1IMP = 6,   /**< implicit Euler */
+    FRICREG_INT_RK2IMP = 7,   /**< implicit Gaussian 2nd order */
+    FRICREG_INT_RK4IMP = 8,   /**< implicit Gaussian 4th order */
+    FRICREG_INT_BSIMP = 9,    /**< implicit Bulirsch–Stoer (Bader–Deuflhard) */
     FRICREG_INT_MSADAMS = 10, /**< variable-order Adams, explicit-implicit */
-    FRICREG_INT_MSBDF = 11,  /**< variable-order BDF, for stiff problems */
+    FRICREG_INT_MSBDF = 11,   /**< variable-order BDF, for stiff problems */
     /** GSL's rk4 in fixed steps too (6 right-hand sides per step), to compare with
      *  FRICREG_INT_RK4. */
     FRICREG_INT_RK4_GSL = 12
@@ -135,8 +136,8 @@ FRICREG_API int fricreg_sim_set_partition(fricreg_sim *sim, int partition);
  *  per Jacobian, exact wherever the forces are differentiable.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown integrator, dt <= 0,
  *  rtol < 0 or atol < 0; FRICREG_ENONFINITE. */
-FRICREG_API int fricreg_sim_set_integrator(fricreg_sim *sim, int integrator, double dt,
-                                           double rtol, double atol);
+FRICREG_API int fricreg_sim_set_integrator(fricreg_sim *sim, int integrator, double dt, double rtol,
+                                           double atol);
 
 /** Called after every accepted step with the state at time t: the ndof body positions x and
  *  velocities v, and the m contact friction forces f and f_eq (NaN where not computed, as in
@@ -204,13 +205,13 @@ FRICREG_API size_t fricreg_sim_ncontacts(const fricreg_sim *sim);
  *  counts (STEPS, RHS_EVALS, CYCLES) are also integer counters of fricreg_sim_get_stat, the
  *  preferred form for them. */
 enum fricreg_sim_value {
-    FRICREG_VALUE_TIME = 0,      /**< time reached by the last run */
-    FRICREG_VALUE_EPS = 1,       /**< eps in use (after the paper's rule, if selected) */
-    FRICREG_VALUE_DT = 2,        /**< step size (fixed) or initial step (adaptive) */
-    FRICREG_VALUE_PERIOD = 3,    /**< forcing period 2 pi / omega */
-    FRICREG_VALUE_STEPS = 4,     /**< accepted steps of the last run */
-    FRICREG_VALUE_RHS_EVALS = 5, /**< right-hand-side evaluations of the last run */
-    FRICREG_VALUE_CYCLES = 6,    /**< whole forcing cycles completed by the last run */
+    FRICREG_VALUE_TIME = 0,       /**< time reached by the last run */
+    FRICREG_VALUE_EPS = 1,        /**< eps in use (after the paper's rule, if selected) */
+    FRICREG_VALUE_DT = 2,         /**< step size (fixed) or initial step (adaptive) */
+    FRICREG_VALUE_PERIOD = 3,     /**< forcing period 2 pi / omega */
+    FRICREG_VALUE_STEPS = 4,      /**< accepted steps of the last run */
+    FRICREG_VALUE_RHS_EVALS = 5,  /**< right-hand-side evaluations of the last run */
+    FRICREG_VALUE_CYCLES = 6,     /**< whole forcing cycles completed by the last run */
     FRICREG_VALUE_DISSIPATION = 7 /**< total dissipated energy D(t) of the last run */
 };
 
@@ -248,8 +249,7 @@ FRICREG_API int fricreg_sim_get_stat(const fricreg_sim *sim, int which, int64_t 
 /** Copy the state at the end of the last run: x[ndof] positions, v[ndof] velocities (body
  *  coordinates: x for the oscillator, u_i for the chain, x1, x2 for the two blocks).
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if ndof is not fricreg_sim_ndof. */
-FRICREG_API int fricreg_sim_get_state(const fricreg_sim *sim, size_t ndof, double x[],
-                                      double v[]);
+FRICREG_API int fricreg_sim_get_state(const fricreg_sim *sim, size_t ndof, double x[], double v[]);
 
 /** Copy the dissipation of each whole forcing cycle, D_k = -∫ sum_i w_i zdot_i f_i dt over
  *  cycle k (w_i = 1/n for the chain, else 1), into D[ncycles]; ncycles must equal

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /*
  * fricreg_structure.h — a linear structure with friction contacts, integrated by Newmark or
  * HHT-alpha with the friction implicit (Newton on the exact tangent), by explicit central
@@ -71,8 +72,7 @@ FRICREG_API int fricreg_structure_set_stiffness(fricreg_structure *s, size_t ndo
 /** Set the damping matrix C[ndof*ndof] (force per velocity, e.g. N s/m), symmetric (relative
  *  tolerance 1e-12). Copied; replaces Rayleigh damping.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_ENOTSYM. */
-FRICREG_API int fricreg_structure_set_damping(fricreg_structure *s, size_t ndof,
-                                              const double C[]);
+FRICREG_API int fricreg_structure_set_damping(fricreg_structure *s, size_t ndof, const double C[]);
 
 /** Rayleigh damping C = a0 M + a1 K (a0 in 1/s, a1 in s, both >= 0), formed from the M and
  *  K in force at each step, so it follows later set_mass and set_stiffness calls. Mode k of
@@ -94,8 +94,7 @@ FRICREG_API int fricreg_structure_set_contacts(fricreg_structure *s, size_t m, s
  *  two steps (normal forces vary); the next step starts from the equilibrium acceleration
  *  with the new bounds. Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_EINVAL if
  *  some mun[i] < 0; FRICREG_ENONFINITE. */
-FRICREG_API int fricreg_structure_set_bounds(fricreg_structure *s, size_t m,
-                                             const double mun[]);
+FRICREG_API int fricreg_structure_set_bounds(fricreg_structure *s, size_t m, const double mun[]);
 
 /** Select the friction law (enum fricreg_law) and eps > 0 (velocity units, e.g. m/s), as
  *  fricreg_ctx_set_law. The continuous laws (3), (4) and tanh give an implicit step with a
@@ -122,8 +121,8 @@ FRICREG_API int fricreg_structure_set_influence(fricreg_structure *s, size_t ndo
  *  t0 = t, dt_rec = dt before each step, and gets the run of the whole record.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if n is 1 or dt_rec <= 0;
  *  FRICREG_ENONFINITE; FRICREG_ENOMEM. */
-FRICREG_API int fricreg_structure_set_ground_accel(fricreg_structure *s, double t0,
-                                                   double dt_rec, size_t n, const double ag[]);
+FRICREG_API int fricreg_structure_set_ground_accel(fricreg_structure *s, double t0, double dt_rec,
+                                                   size_t n, const double ag[]);
 
 /** Set the external load p(t) = p[ndof] g(t) (force units): a load pattern p times a time
  *  function g given as a record like fricreg_structure_set_ground_accel's (n >= 2 samples
@@ -133,15 +132,14 @@ FRICREG_API int fricreg_structure_set_ground_accel(fricreg_structure *s, double 
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_EINVAL if n is 1 or dt_rec <= 0
  *  with n >= 2; FRICREG_ENONFINITE; FRICREG_ENOMEM. */
 FRICREG_API int fricreg_structure_set_load(fricreg_structure *s, size_t ndof, const double p[],
-                                           double t0, double dt_rec, size_t n,
-                                           const double g[]);
+                                           double t0, double dt_rec, size_t n, const double g[]);
 
 /** Restart at t = 0 from displacements u0[ndof] and velocities v0[ndof]: clears the energy
  *  balance, the dissipation and the counters. The initial acceleration follows from the
  *  equation of motion at the first step (friction from the law at zdot = J v0).
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE. */
-FRICREG_API int fricreg_structure_set_initial(fricreg_structure *s, size_t ndof,
-                                              const double u0[], const double v0[]);
+FRICREG_API int fricreg_structure_set_initial(fricreg_structure *s, size_t ndof, const double u0[],
+                                              const double v0[]);
 
 /** Select Newmark's method with parameters 0 < beta <= 1/2 and 1/2 <= gamma <= 1
  *  (unconditionally stable for 2 beta >= gamma; average acceleration beta = 1/4, gamma = 1/2,
@@ -256,8 +254,7 @@ FRICREG_API int fricreg_structure_get_forces(const fricreg_structure *s, size_t 
 /** Copy the energy dissipated by each contact since set_initial,
  *  D_i = -sum over steps of (z_i(t+dt) - z_i(t)) (f_i(t) + f_i(t+dt))/2 (trapezoidal; energy
  *  units), into D[m]. Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE. */
-FRICREG_API int fricreg_structure_get_dissipation(const fricreg_structure *s, size_t m,
-                                                  double D[]);
+FRICREG_API int fricreg_structure_get_dissipation(const fricreg_structure *s, size_t m, double D[]);
 
 /** Quantities of fricreg_structure_get_value. Values are fixed forever. The energies are
  *  summed over steps with the trapezoidal rule on the displacement increments du:
@@ -279,8 +276,7 @@ enum fricreg_structure_value {
 
 /** Read one quantity (enum fricreg_structure_value) into *value.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown quantity. */
-FRICREG_API int fricreg_structure_get_value(const fricreg_structure *s, int which,
-                                            double *value);
+FRICREG_API int fricreg_structure_get_value(const fricreg_structure *s, int which, double *value);
 
 /** Counters since creation or set_initial, for fricreg_structure_get_stat. Fixed forever. */
 enum fricreg_structure_stat {
@@ -293,8 +289,7 @@ enum fricreg_structure_stat {
 
 /** Read one counter (enum fricreg_structure_stat) into *value.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown counter. */
-FRICREG_API int fricreg_structure_get_stat(const fricreg_structure *s, int which,
-                                           int64_t *value);
+FRICREG_API int fricreg_structure_get_stat(const fricreg_structure *s, int which, int64_t *value);
 
 /** Status of the last failed call. Returns that code, or FRICREG_OK if none (or s NULL). The
  *  getters, which take a const structure, return their status without recording it. */
@@ -307,8 +302,7 @@ FRICREG_API const char *fricreg_structure_errmsg(const fricreg_structure *s);
 /** Copy the last error message into buf[len], NUL-terminated and truncated to fit (for
  *  Fortran). Returns the full message length, as snprintf does; 0 and nothing written if buf
  *  is NULL or len is 0. */
-FRICREG_API size_t fricreg_structure_errmsg_copy(const fricreg_structure *s, char *buf,
-                                                 size_t len);
+FRICREG_API size_t fricreg_structure_errmsg_copy(const fricreg_structure *s, char *buf, size_t len);
 
 #ifdef __cplusplus
 }

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* box_qp.c — min 1/2 x^T W_SS x + b^T x on lo <= x <= hi: the consistent near-stick law.
  *
  * Method: the primal active-set method of Nocedal & Wright, Numerical Optimization (2nd ed.),
@@ -71,8 +72,9 @@ static void start(struct fr_box_qp *qp, size_t s)
         if (qp->lo[k] == qp->hi[k])
             qp->side[k] = FR_LOWER;
         double inside = fmin(fmax(0.0, qp->lo[k]), qp->hi[k]);
-        qp->x[k] = qp->side[k] == FR_LOWER ? qp->lo[k]
-                   : qp->side[k] == FR_UPPER ? qp->hi[k] : inside;
+        qp->x[k] = qp->side[k] == FR_LOWER   ? qp->lo[k]
+                   : qp->side[k] == FR_UPPER ? qp->hi[k]
+                                             : inside;
     }
 }
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* box_qp.h — internal: the consistent near-stick law's box-constrained convex QP on S. */
 #ifndef FRICREG_BOX_QP_H
 #define FRICREG_BOX_QP_H

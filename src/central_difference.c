@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* central_difference.c — the explicit central-difference step of a fricreg_structure, and the
  * step bounds that keep it stable.
  *
@@ -41,9 +42,10 @@ double fr_structure_omega_max(fricreg_structure *s)
 static int check_step(fricreg_structure *s, double dt)
 {
     if (dt * fr_structure_omega_max(s) >= 2.0)
-        return fr_sfail(s, FRICREG_ESTEP, "step: dt = %g is not below the central "
-                        "difference's bound 2/omega_max = %g (omega_max = %g)", dt,
-                        2.0 / s->omega_max, s->omega_max);
+        return fr_sfail(s, FRICREG_ESTEP,
+                        "step: dt = %g is not below the central "
+                        "difference's bound 2/omega_max = %g (omega_max = %g)",
+                        dt, 2.0 / s->omega_max, s->omega_max);
     if (!s->stick_valid) {
         int status = fricreg_ctx_stick_stiffness(s->ctx, &s->stick_rate);
         if (status != FRICREG_OK)
@@ -52,9 +54,10 @@ static int check_step(fricreg_structure *s, double dt)
         s->stick_valid = 1;
     }
     if (dt * s->stick_rate >= 1.0)
-        return fr_sfail(s, FRICREG_ESTEP, "step: dt = %g times the stick-zone stiffness %g "
-                        "is not below 1 (central difference): take dt < %g or a larger eps", dt,
-                        s->stick_rate, 1.0 / s->stick_rate);
+        return fr_sfail(s, FRICREG_ESTEP,
+                        "step: dt = %g times the stick-zone stiffness %g "
+                        "is not below 1 (central difference): take dt < %g or a larger eps",
+                        dt, s->stick_rate, 1.0 / s->stick_rate);
     return FRICREG_OK;
 }
 

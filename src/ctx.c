@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* ctx.c — context life cycle, setters, error state and counters. Evaluation: partition.c. */
 #include <math.h>
 #include <stdio.h>
@@ -83,8 +84,10 @@ int fricreg_ctx_set_law(fricreg_ctx *ctx, int law, double eps)
     if (!isfinite(eps))
         return fr_fail(ctx, FRICREG_ENONFINITE, "set_law: eps is not finite");
     if (!fr_eps_valid(eps))
-        return fr_fail(ctx, FRICREG_EINVAL, "set_law: eps = %g must be >= DBL_MIN (a normal "
-                       "number > 0)", eps);
+        return fr_fail(ctx, FRICREG_EINVAL,
+                       "set_law: eps = %g must be >= DBL_MIN (a normal "
+                       "number > 0)",
+                       eps);
     ctx->law = law;
     ctx->eps = eps;
     ctx->last_valid = 0;
@@ -127,8 +130,7 @@ int fricreg_ctx_set_bounds(fricreg_ctx *ctx, size_t m, const double mun[])
         return status;
     for (size_t i = 0; i < m; i++)
         if (mun[i] < 0.0)
-            return fr_fail(ctx, FRICREG_EINVAL, "set_bounds: mun[%zu] = %g is negative", i,
-                           mun[i]);
+            return fr_fail(ctx, FRICREG_EINVAL, "set_bounds: mun[%zu] = %g is negative", i, mun[i]);
     memcpy(ctx->mun, mun, m * sizeof *mun);
     ctx->last_valid = 0;
     return FRICREG_OK;
@@ -141,8 +143,8 @@ int fricreg_ctx_set_coupling_diagonal(fricreg_ctx *ctx, size_t m, const double w
         return status;
     for (size_t i = 0; i < m; i++)
         if (!(w[i] > 0.0))
-            return fr_fail(ctx, FRICREG_EINVAL, "set_coupling_diagonal: w[%zu] = %g must be > 0",
-                           i, w[i]);
+            return fr_fail(ctx, FRICREG_EINVAL, "set_coupling_diagonal: w[%zu] = %g must be > 0", i,
+                           w[i]);
     free_dense(ctx);
     memcpy(ctx->w_diag, w, m * sizeof *w);
     ctx->last_valid = 0;

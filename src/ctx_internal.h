@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* ctx_internal.h — the context's layout, shared by ctx.c (set-up), the partitions (eval), the
  * QP, the factor cache and the tangent. */
 #ifndef FRICREG_CTX_INTERNAL_H
@@ -17,21 +18,21 @@
 struct fricreg_ctx {
     size_t m;
     int law;
-    int partition;  /* enum fricreg_partition: used with a dense W */
+    int partition; /* enum fricreg_partition: used with a dense W */
     double eps;
     double *mun;    /* [m] friction bounds */
     double *w_diag; /* [m] diagonal of W (the whole of W when W is diagonal) */
     double *W;      /* [m*m] row-major dense W, or NULL when W is diagonal */
 
     /* Scratch, allocated with the context or the coupling so that eval never allocates. */
-    double *f;          /* [m] friction forces being built */
-    double *f_eq;       /* [m] f_eq being built */
-    size_t *stick;      /* [m] indices of the near-stick set S */
+    double *f;     /* [m] friction forces being built */
+    double *f_eq;  /* [m] f_eq being built */
+    size_t *stick; /* [m] indices of the near-stick set S */
     size_t n_stick;
-    double *rhs;        /* [m] dense only: right-hand side of the paper's W_SS solve */
+    double *rhs;          /* [m] dense only: right-hand side of the paper's W_SS solve */
     struct fr_factor fac; /* dense only: cached factor of a principal block of W */
     struct fr_box_qp qp;  /* dense only: the consistent law's QP on S */
-    signed char *side;  /* [m] the QP's last working set per contact: its warm start */
+    signed char *side;    /* [m] the QP's last working set per contact: its warm start */
 
     /* The inputs of the last successful evaluation, for fricreg_ctx_tangent. */
     double *last_zdot;  /* [m] */

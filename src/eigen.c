@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* eigen.c — eigenvalues of a symmetric matrix by GSL on memory fricreg allocates (eigen.h). */
 #include <stdlib.h>
 #include <string.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* eigen.h — internal: eigenvalues of a small symmetric matrix by GSL, on fricreg's memory.
  *
  * GSL's own allocators are avoided here on purpose: gsl_matrix_alloc and gsl_eigen_symm_alloc

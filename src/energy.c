@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* energy.c — the structure's energy balance, summed step by step with the trapezoidal rule
  * on the displacement increments (Krenk, "Energy conservation in Newmark based time
  * integration algorithms", CMAME 195 (2006)): for average-acceleration Newmark
@@ -62,8 +63,8 @@ void fr_energy_step(fricreg_structure *s, const gsl_vector *u1, const gsl_vector
 
     gsl_blas_dgemv(CblasNoTrans, 1.0, s->J, du, 0.0, s->mwork); /* dz */
     for (size_t i = 0; i < s->m; i++) {
-        double d = -0.5 * gsl_vector_get(s->mwork, i)
-                   * (gsl_vector_get(s->f, i) + gsl_vector_get(f1, i));
+        double d = -0.5 * gsl_vector_get(s->mwork, i) *
+                   (gsl_vector_get(s->f, i) + gsl_vector_get(f1, i));
         s->energy.per_contact[i] += d;
         s->energy.friction += d;
     }

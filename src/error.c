@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* error.c — fr_error_set: the one place where a failure's message is formatted. */
 #include <stdarg.h>
 #include <stdio.h>

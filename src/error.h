@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* error.h — the last error of a context or a simulation: a status code and its message. */
 #ifndef FRICREG_ERROR_H
 #define FRICREG_ERROR_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* exact.c — the semi-analytical solution of Eq. (5) under Coulomb friction (1) with force
  * balance at rest (2): closed forms on each phase, switching times by GSL's Brent solver.
  *
@@ -20,7 +21,7 @@
 #define SCAN_PER_PERIOD 1024.0
 #define MAX_CYCLES 1e6
 #define BRENT_MAX_ITER 200
-#define START_REFINEMENTS 40 /* halvings of the first scan step at a phase start */
+#define START_REFINEMENTS 40                 /* halvings of the first scan step at a phase start */
 #define EMPTY_PHASE (64.0 * GSL_DBL_EPSILON) /* a phase this short (relative to t) has no length */
 #define N_STATS 3
 
@@ -34,8 +35,8 @@ struct fricreg_exact {
     double t_end;                 /* end of the solution held; 0 before the first run */
     struct phase *ph;             /* its phases; ph[0] starts at t = 0 */
     size_t n, cap;
-    int64_t stats[N_STATS];       /* enum fricreg_exact_stat, of the solution held */
-    gsl_root_fsolver *brent;      /* allocated at create: a run allocates only phases */
+    int64_t stats[N_STATS];  /* enum fricreg_exact_stat, of the solution held */
+    gsl_root_fsolver *brent; /* allocated at create: a run allocates only phases */
     struct fr_error err;
 };
 
@@ -124,7 +125,8 @@ static int refine(fricreg_exact *ex, struct phase_probe *pr, double lo, double h
         ex->stats[FRICREG_EXACT_STAT_ROOT_ITERS]++;
         lo = gsl_root_fsolver_x_lower(s);
         hi = gsl_root_fsolver_x_upper(s);
-        if (status == GSL_SUCCESS && gsl_root_test_interval(lo, hi, 0.0, 2.0 * GSL_DBL_EPSILON) == GSL_SUCCESS)
+        if (status == GSL_SUCCESS &&
+            gsl_root_test_interval(lo, hi, 0.0, 2.0 * GSL_DBL_EPSILON) == GSL_SUCCESS)
             break;
     }
     fr_gsl_restore(previous);
@@ -148,8 +150,7 @@ static int phase_end(fricreg_exact *ex, const struct phase *p, double *t_end, in
      * where it is positive, halving the step; none means the phase has no length. */
     double lo = p->t0 + h;
     int k = 0;
-    while (k < START_REFINEMENTS && lo > p->t0 &&
-           !(scan_point(ex, fmin(lo, ex->t_end), &pr) > 0.0))
+    while (k < START_REFINEMENTS && lo > p->t0 && !(scan_point(ex, fmin(lo, ex->t_end), &pr) > 0.0))
         lo = p->t0 + h * ldexp(1.0, -++k);
     *ends = 1;
     if (k == START_REFINEMENTS || !(lo > p->t0)) {
@@ -207,17 +208,21 @@ static struct phase from_rest(const fricreg_exact *ex, double t, double x)
 }
 
 /* Records why solve() stopped at phase p (a stick if p->s is 0) and returns status. */
-static int solve_failed(const fricreg_exact *ex, const struct phase *p, int status,
-                        int no_progress, struct fr_error *err)
+static int solve_failed(const fricreg_exact *ex, const struct phase *p, int status, int no_progress,
+                        struct fr_error *err)
 {
     if (status == FRICREG_ENOMEM)
-        return fr_error_set(err, status, "run: out of memory at phase %zu, t = %.17g",
-                            ex->n, p->t0);
+        return fr_error_set(err, status, "run: out of memory at phase %zu, t = %.17g", ex->n,
+                            p->t0);
     if (no_progress)
-        return fr_error_set(err, status, "run: no progress at t = %.17g: two phases of zero "
-                            "length in a row", p->t0);
-    return fr_error_set(err, status, "run: Brent's method failed on the end of the %s that "
-                        "starts at t = %.17g", p->s == 0 ? "stick" : "slip", p->t0);
+        return fr_error_set(err, status,
+                            "run: no progress at t = %.17g: two phases of zero "
+                            "length in a row",
+                            p->t0);
+    return fr_error_set(err, status,
+                        "run: Brent's method failed on the end of the %s that "
+                        "starts at t = %.17g",
+                        p->s == 0 ? "stick" : "slip", p->t0);
 }
 
 /* The phases from t = 0 to ex->t_end into ex->ph, which is empty. A phase of zero length (a
@@ -317,8 +322,10 @@ int fricreg_exact_run(fricreg_exact *ex, double t_end)
     if (!(t_end > 0.0))
         return fr_error_set(&ex->err, FRICREG_EINVAL, "run: t_end = %g must be > 0", t_end);
     if (t_end * ex->omega / FR_TWO_PI > MAX_CYCLES)
-        return fr_error_set(&ex->err, FRICREG_EINVAL, "run: t_end = %g spans %g forcing cycles "
-                            "of period %g, more than 10^6", t_end, t_end / period(ex), period(ex));
+        return fr_error_set(&ex->err, FRICREG_EINVAL,
+                            "run: t_end = %g spans %g forcing cycles "
+                            "of period %g, more than 10^6",
+                            t_end, t_end / period(ex), period(ex));
     return run_to(ex, t_end);
 }
 
@@ -447,8 +454,7 @@ size_t fricreg_exact_ncycles(const fricreg_exact *ex)
 }
 
 /* Phase k covers [t0_k, t0_{k+1}); the last one ends at t_end. Overlap with [ta, tb]. */
-static int overlap(const fricreg_exact *ex, size_t k, double ta, double tb, double *lo,
-                   double *hi)
+static int overlap(const fricreg_exact *ex, size_t k, double ta, double tb, double *lo, double *hi)
 {
     double end = k + 1 < ex->n ? ex->ph[k + 1].t0 : ex->t_end;
     *lo = fmax(ta, ex->ph[k].t0);
@@ -482,8 +488,7 @@ int fricreg_exact_dissipation(const fricreg_exact *ex, size_t ncycles, double D[
     return FRICREG_OK;
 }
 
-int fricreg_exact_stick_fraction(const fricreg_exact *ex, double t0, double t1,
-                                 double *fraction)
+int fricreg_exact_stick_fraction(const fricreg_exact *ex, double t0, double t1, double *fraction)
 {
     if (ex == NULL || fraction == NULL)
         return FRICREG_ENULL;

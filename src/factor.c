@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* factor.c — the cached, Jacobi-scaled pivoted Cholesky factor of a principal block of W. */
 #include <math.h>
 #include <stdlib.h>
@@ -44,8 +45,8 @@ static int holds(const struct fr_factor *fa, const size_t set[], size_t n)
 }
 
 /* ldlt = D^-1/2 W[set, set] D^-1/2: unit diagonal, so rcond measures redundancy, not units. */
-static void copy_scaled_block(struct fr_factor *fa, const double W[], size_t m,
-                              const size_t set[], size_t n)
+static void copy_scaled_block(struct fr_factor *fa, const double W[], size_t m, const size_t set[],
+                              size_t n)
 {
     for (size_t a = 0; a < n; a++)
         fa->scale[a] = 1.0 / sqrt(W[set[a] * m + set[a]]); /* W_ii > 0: set_coupling_dense */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* factor.h — internal: the cached factor of one principal block W[B, B] of a dense W.
  *
  * Both partitions solve with a principal block of W: the paper's with W_SS, the consistent
@@ -14,8 +15,8 @@
 struct fricreg_ctx;
 
 struct fr_factor {
-    size_t *set;   /* [m] contact indices of the factored block, ascending; valid if valid */
-    size_t n;      /* its size */
+    size_t *set; /* [m] contact indices of the factored block, ascending; valid if valid */
+    size_t n;    /* its size */
     int valid;
     double *ldlt;  /* [m*m] GSL pcholesky factor of the scaled block, packed n x n */
     size_t *perm;  /* [m] its pivot permutation */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* fr_math.h — internal: the constant 2 pi and the whole-cycles count, one home for the files
  * that need them (the exact solver, the systems' periods, the drivers' cycle bookkeeping). */
 #ifndef FRICREG_FR_MATH_H

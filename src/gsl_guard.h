@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* gsl_guard.h — keeps GSL's default error handler, which aborts, out of fricreg's calls.
  *
  * Every call into GSL that can report an error is bracketed by fr_gsl_quiet() and

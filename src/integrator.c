@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* integrator.c — the table of GSL steppers behind enum fricreg_integrator.
  *
  * GSL's "rk4" estimates its error by step doubling: one GSL step of size 2h returns two
@@ -32,12 +33,17 @@
 #include "fricreg_sim.h"
 #include "integrator.h"
 
-#define ROW(ID, NAME, REAL, ZONE, IMAG, SUB, TOL) \
-    {ID, #NAME, gsl_type_##NAME, REAL, ZONE, IMAG, SUB, TOL, NULL}
+#define ROW(ID, NAME, REAL, ZONE, IMAG, SUB, TOL)                    \
+    {                                                                \
+        ID, #NAME, gsl_type_##NAME, REAL, ZONE, IMAG, SUB, TOL, NULL \
+    }
 
 /* gsl_odeiv2_step_* are data symbols; functions returning them keep the table constant. */
-#define GSL_TYPE(NAME) \
-    static const gsl_odeiv2_step_type *gsl_type_##NAME(void) { return gsl_odeiv2_step_##NAME; }
+#define GSL_TYPE(NAME)                                       \
+    static const gsl_odeiv2_step_type *gsl_type_##NAME(void) \
+    {                                                        \
+        return gsl_odeiv2_step_##NAME;                       \
+    }
 GSL_TYPE(rk2)
 GSL_TYPE(rk4)
 GSL_TYPE(rkf45)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* integrator.h — internal: our integrator enum mapped onto GSL's gsl_odeiv2 steppers. */
 #ifndef FRICREG_INTEGRATOR_H
 #define FRICREG_INTEGRATOR_H
@@ -5,8 +6,8 @@
 #include <gsl/gsl_odeiv2.h>
 
 struct fr_integrator {
-    int id;                          /* enum fricreg_integrator */
-    const char *name;                /* GSL's name */
+    int id;           /* enum fricreg_integrator */
+    const char *name; /* GSL's name */
     const gsl_odeiv2_step_type *(*type)(void);
     /* Largest stable dt*lambda on the negative real axis for a fixed step of this stepper
      * (0: not checked a priori, the stepper reports its own failure). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* law.c — the public scalar and batched entry points of the friction laws (law.h). */
 #include <math.h>
 
@@ -73,22 +74,28 @@ void fr_law_batch(int law, double eps, size_t m, const double v[], const double 
 {
     switch (law) {
     case FRICREG_LAW_COULOMB:
-        for (size_t i = 0; i < m; i++) f[i] = fr_coulomb(v[i], mun[i]);
+        for (size_t i = 0; i < m; i++)
+            f[i] = fr_coulomb(v[i], mun[i]);
         break;
     case FRICREG_LAW_FORCE_BALANCE:
-        for (size_t i = 0; i < m; i++) f[i] = fr_force_balance(v[i], f_eq[i], mun[i]);
+        for (size_t i = 0; i < m; i++)
+            f[i] = fr_force_balance(v[i], f_eq[i], mun[i]);
         break;
     case FRICREG_LAW_KARNOPP:
-        for (size_t i = 0; i < m; i++) f[i] = fr_karnopp(v[i], f_eq[i], mun[i], eps);
+        for (size_t i = 0; i < m; i++)
+            f[i] = fr_karnopp(v[i], f_eq[i], mun[i], eps);
         break;
     case FRICREG_LAW_VELOCITY_LIMITED:
-        for (size_t i = 0; i < m; i++) f[i] = fr_velocity_limited(v[i], mun[i], eps);
+        for (size_t i = 0; i < m; i++)
+            f[i] = fr_velocity_limited(v[i], mun[i], eps);
         break;
     case FRICREG_LAW_TANH:
-        for (size_t i = 0; i < m; i++) f[i] = fr_tanh(v[i], mun[i], eps);
+        for (size_t i = 0; i < m; i++)
+            f[i] = fr_tanh(v[i], mun[i], eps);
         break;
     default:
-        for (size_t i = 0; i < m; i++) f[i] = fr_quinn(v[i], f_eq[i], mun[i], eps);
+        for (size_t i = 0; i < m; i++)
+            f[i] = fr_quinn(v[i], f_eq[i], mun[i], eps);
         break;
     }
 }

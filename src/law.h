@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* law.h — internal: the scalar friction laws, inlined into the batched and context loops. */
 #ifndef FRICREG_LAW_INTERNAL_H
 #define FRICREG_LAW_INTERNAL_H

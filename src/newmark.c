@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* newmark.c — Newmark and HHT-alpha steps of a fricreg_structure, the friction implicit:
  * Newton on the exact tangent (fricreg_ctx_tangent) with a backtracking line search.
  *

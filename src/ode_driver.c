@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* ode_driver.c — gsl_odeiv2_driver_alloc_y_new, with every allocation checked (ode_driver.h). */
 #include <stdlib.h>
 
@@ -21,9 +22,8 @@ static gsl_odeiv2_control *control_y_new(double epsabs, double epsrel)
     return c;
 }
 
-gsl_odeiv2_driver *fr_ode_driver_alloc(const gsl_odeiv2_system *sys,
-                                       const gsl_odeiv2_step_type *T, double hstart,
-                                       double epsabs, double epsrel)
+gsl_odeiv2_driver *fr_ode_driver_alloc(const gsl_odeiv2_system *sys, const gsl_odeiv2_step_type *T,
+                                       double hstart, double epsabs, double epsrel)
 {
     gsl_odeiv2_driver *d = calloc(1, sizeof *d);
     if (d == NULL)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* ode_driver.h — internal: a gsl_odeiv2_driver assembled from GSL's parts, all or nothing.
  *
  * gsl_odeiv2_driver_alloc_y_new cannot be used when memory may run out: its control,
@@ -11,8 +12,7 @@
 /* The driver gsl_odeiv2_driver_alloc_y_new(sys, T, hstart, epsabs, epsrel) would make (the
  * standard control on y with a_y = 1, a_dydt = 0), or NULL if any allocation failed, with
  * nothing left allocated. GSL's error handler is kept out. Free with gsl_odeiv2_driver_free. */
-gsl_odeiv2_driver *fr_ode_driver_alloc(const gsl_odeiv2_system *sys,
-                                       const gsl_odeiv2_step_type *T, double hstart,
-                                       double epsabs, double epsrel);
+gsl_odeiv2_driver *fr_ode_driver_alloc(const gsl_odeiv2_system *sys, const gsl_odeiv2_step_type *T,
+                                       double hstart, double epsabs, double epsrel);
 
 #endif

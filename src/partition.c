@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* partition.c — fricreg_ctx_eval: the slip / near-stick split of Sec. 3.3.
  *
  * Slip contacts get their sliding force with no f_eq work; only the near-stick set S needs f_eq.
@@ -43,7 +44,9 @@ static int check_inputs(fricreg_ctx *ctx, size_t m, const double zdot[], const d
         return fr_fail(ctx, FRICREG_ESIZE, "eval: m = %zu, context has %zu contacts", m, ctx->m);
     if (zdot == NULL || a_free == NULL || f == NULL)
         return fr_fail(ctx, FRICREG_ENULL, "eval: %s is NULL",
-                       zdot == NULL ? "zdot" : a_free == NULL ? "a_free" : "f");
+                       zdot == NULL     ? "zdot"
+                       : a_free == NULL ? "a_free"
+                                        : "f");
     size_t i = inputs_plausible(m, zdot, a_free) ? m : first_nonfinite(m, zdot, a_free);
     if (i < m)
         return fr_fail(ctx, FRICREG_ENONFINITE, "eval: %s[%zu] is not finite",
@@ -55,13 +58,13 @@ static int check_inputs(fricreg_ctx *ctx, size_t m, const double zdot[], const d
  * (and get f = 0 for now, which leaves them out of W_SL f_L). The law is fixed for the loop,
  * so the test and the force are written without branches: a select, and an index list that
  * always stores and advances only on a near-stick contact. */
-#define SPLIT_LOOP(NEAR, SLIP_FORCE)                                      \
-    for (size_t i = 0; i < ctx->m; i++) {                                 \
-        double v = zdot[i];                                               \
-        int near = (NEAR);                                                \
-        ctx->stick[n_stick] = i;                                          \
-        n_stick += (size_t)near;                                          \
-        ctx->f[i] = near ? 0.0 : (SLIP_FORCE);                            \
+#define SPLIT_LOOP(NEAR, SLIP_FORCE)           \
+    for (size_t i = 0; i < ctx->m; i++) {      \
+        double v = zdot[i];                    \
+        int near = (NEAR);                     \
+        ctx->stick[n_stick] = i;               \
+        n_stick += (size_t)near;               \
+        ctx->f[i] = near ? 0.0 : (SLIP_FORCE); \
     }
 
 void fr_split_contacts(fricreg_ctx *ctx, const double zdot[])
@@ -70,12 +73,8 @@ void fr_split_contacts(fricreg_ctx *ctx, const double zdot[])
     const double eps = ctx->eps, *mun = ctx->mun;
     switch (ctx->law) {
     case FRICREG_LAW_QUINN: /* outside |v| < eps both are (1), whatever f_eq is */
-    case FRICREG_LAW_KARNOPP:
-        SPLIT_LOOP(fabs(v) < eps, fr_coulomb(v, mun[i]))
-        break;
-    case FRICREG_LAW_FORCE_BALANCE:
-        SPLIT_LOOP(v == 0.0, fr_coulomb(v, mun[i]))
-        break;
+    case FRICREG_LAW_KARNOPP: SPLIT_LOOP(fabs(v) < eps, fr_coulomb(v, mun[i])) break;
+    case FRICREG_LAW_FORCE_BALANCE: SPLIT_LOOP(v == 0.0, fr_coulomb(v, mun[i])) break;
     default: /* (1), (3), tanh: f_eq is never needed, S is empty, no list to write */
         fr_law_batch(ctx->law, eps, ctx->m, zdot, NULL, mun, ctx->f);
         break;
@@ -107,36 +106,31 @@ static inline uint64_t bits_of(double x)
  *     added serially); band = eps, or the least subnormal for (2)'s zdot_i == 0;
  *   - the copies are restrict: they are the context's own, and without it the runtime
  *     overlap checks between seven arrays exceed what it will version for. */
-#define DIAGONAL_LOOP(FORCE, FEQ_OUT)                                     \
-    for (size_t i = 0; i < m; i++) {                                      \
-        double v = zdot[i], a = a_free[i], feq = -a / w[i];               \
-        last_zdot[i] = v;                                                 \
-        last_afree[i] = a;                                                \
-        f[i] = (FORCE);                                                   \
-        FEQ_OUT;                                                          \
-        n_near += (bits_of(fabs(v)) - band) >> 63;                        \
+#define DIAGONAL_LOOP(FORCE, FEQ_OUT)                       \
+    for (size_t i = 0; i < m; i++) {                        \
+        double v = zdot[i], a = a_free[i], feq = -a / w[i]; \
+        last_zdot[i] = v;                                   \
+        last_afree[i] = a;                                  \
+        f[i] = (FORCE);                                     \
+        FEQ_OUT;                                            \
+        n_near += (bits_of(fabs(v)) - band) >> 63;          \
     }
-#define DIAGONAL_CASE(NEAR, FORCE)                                        \
-    if (f_eq)                                                             \
-        DIAGONAL_LOOP(FORCE, f_eq[i] = (NEAR) ? feq : NAN)                \
-    else                                                                  \
+#define DIAGONAL_CASE(NEAR, FORCE)                         \
+    if (f_eq)                                              \
+        DIAGONAL_LOOP(FORCE, f_eq[i] = (NEAR) ? feq : NAN) \
+    else                                                   \
         DIAGONAL_LOOP(FORCE, (void)0)
 
 /* The pass for law (known, reading f_eq) on m contacts; returns |S|. */
 static size_t diagonal_pass(int law, double eps, size_t m, const double zdot[],
-                            const double a_free[], const double w[], const double mun[],
-                            double f[], double f_eq[], double *restrict last_zdot,
-                            double *restrict last_afree)
+                            const double a_free[], const double w[], const double mun[], double f[],
+                            double f_eq[], double *restrict last_zdot, double *restrict last_afree)
 {
     uint64_t n_near = 0, band = bits_of(law == FRICREG_LAW_FORCE_BALANCE ? 0x1p-1074 : eps);
     double k = fr_band_scale(eps);
     switch (law) {
-    case FRICREG_LAW_QUINN:
-        DIAGONAL_CASE(fabs(v) < eps, fr_quinn_band(v * k, feq, mun[i]))
-        break;
-    case FRICREG_LAW_KARNOPP:
-        DIAGONAL_CASE(fabs(v) < eps, fr_karnopp(v, feq, mun[i], eps))
-        break;
+    case FRICREG_LAW_QUINN: DIAGONAL_CASE(fabs(v) < eps, fr_quinn_band(v * k, feq, mun[i])) break;
+    case FRICREG_LAW_KARNOPP: DIAGONAL_CASE(fabs(v) < eps, fr_karnopp(v, feq, mun[i], eps)) break;
     default: /* the only other law that reads f_eq */
         DIAGONAL_CASE(v == 0.0, fr_force_balance(v, feq, mun[i]))
         break;
@@ -144,11 +138,11 @@ static size_t diagonal_pass(int law, double eps, size_t m, const double zdot[],
     return (size_t)n_near;
 }
 
-static void eval_diagonal(fricreg_ctx *ctx, const double zdot[], const double a_free[],
-                          double f[], double f_eq[])
+static void eval_diagonal(fricreg_ctx *ctx, const double zdot[], const double a_free[], double f[],
+                          double f_eq[])
 {
-    ctx->n_stick = diagonal_pass(ctx->law, ctx->eps, ctx->m, zdot, a_free, ctx->w_diag,
-                                 ctx->mun, f, f_eq, ctx->last_zdot, ctx->last_afree);
+    ctx->n_stick = diagonal_pass(ctx->law, ctx->eps, ctx->m, zdot, a_free, ctx->w_diag, ctx->mun, f,
+                                 f_eq, ctx->last_zdot, ctx->last_afree);
     ctx->last_valid = 1;
 }
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* partition.h — internal: the two ways of finding the near-stick forces with a dense W. */
 #ifndef FRICREG_PARTITION_H
 #define FRICREG_PARTITION_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* partition_consistent.c — the consistent near-stick law with a dense W (docs/coupled.md).
  *
  * f_eq,i is the force that zeroes contact i's acceleration given every other contact's actual

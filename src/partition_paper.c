@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* partition_paper.c — the paper's Sec. 3.3 partition with a dense W: every near-stick contact's
  * f_eq assumes all of S holds, W_SS f_eq,S = -(a_free,S + W_SL f_L), then the law on S. Kept to
  * reproduce the paper's Fig. 11; its force jumps when a coupled contact crosses |zdot| = eps. */
@@ -27,11 +28,11 @@ static int solve_feq(fricreg_ctx *ctx, const double a_free[])
 }
 
 /* f_S = the law at (zdot_S, f_eq,S); the switch on the law stays outside the loops. */
-#define STICK_LOOP(FORCE)                                                 \
-    for (size_t a = 0; a < ctx->n_stick; a++) {                           \
-        size_t i = ctx->stick[a];                                         \
-        double v = zdot[i], feq = ctx->f_eq[i];                           \
-        ctx->f[i] = (FORCE);                                              \
+#define STICK_LOOP(FORCE)                       \
+    for (size_t a = 0; a < ctx->n_stick; a++) { \
+        size_t i = ctx->stick[a];               \
+        double v = zdot[i], feq = ctx->f_eq[i]; \
+        ctx->f[i] = (FORCE);                    \
     }
 
 static void apply_law_on_stick_set(fricreg_ctx *ctx, const double zdot[])

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* rk4_classic.c — the classical fourth-order Runge–Kutta step as a gsl_odeiv2_step_type.
  *
  * GSL's own "rk4" estimates its error by step doubling: a call with step 2h returns two
@@ -121,8 +122,9 @@ static int rk4_set_driver(void *vstate, const gsl_odeiv2_driver *d)
     return GSL_SUCCESS;
 }
 
-static const gsl_odeiv2_step_type rk4_classic_type = {
-    "fricreg-rk4", 0, 0, rk4_alloc, rk4_apply, rk4_set_driver, rk4_reset, rk4_order, rk4_free};
+static const gsl_odeiv2_step_type rk4_classic_type = {"fricreg-rk4", 0,         0,
+                                                      rk4_alloc,     rk4_apply, rk4_set_driver,
+                                                      rk4_reset,     rk4_order, rk4_free};
 
 const gsl_odeiv2_step_type *fr_step_rk4_classic(void)
 {

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* sim.c — fricreg_sim: runs a reference system (system.h) on GSL's gsl_odeiv2 steppers.
  *
  * The state is y = (x, v, D): body positions, velocities and the dissipated energy, all
@@ -20,10 +21,10 @@
 #include "sim_internal.h"
 #include "stiffness.h"
 
-#define MAX_GSL_STEPS 2147483648.0 /* 2^31 fixed steps in one run */
-#define MAX_CYCLES 1e9              /* forcing cycles recorded in one run */
-#define STATE_LIMIT 1e100          /* |state| beyond this: diverged (first_diverged) */
-#define STOP_REQUESTED (-1)         /* the observer asked to stop: not an error */
+#define MAX_GSL_STEPS 2147483648.0     /* 2^31 fixed steps in one run */
+#define MAX_CYCLES 1e9                 /* forcing cycles recorded in one run */
+#define STATE_LIMIT 1e100              /* |state| beyond this: diverged (first_diverged) */
+#define STOP_REQUESTED (-1)            /* the observer asked to stop: not an error */
 #define MAX_STEP_PER_PERIOD (1.0 / 32) /* an adaptive step's cap, in forcing periods (advance) */
 
 #define sim_fail(sim, ...) fr_error_set(&(sim)->err, __VA_ARGS__)
@@ -83,8 +84,7 @@ int fricreg_sim_create(int system, fricreg_sim **out)
 
 /* Records why `param` = value was refused: not finite, not read by this system, or outside
  * the range of the system's table row `spec`. */
-static int reject_param(fricreg_sim *sim, int param, double value,
-                        const struct fr_param_spec *spec)
+static int reject_param(fricreg_sim *sim, int param, double value, const struct fr_param_spec *spec)
 {
     const char *name = fr_param_name(param);
     char label[32];
@@ -93,11 +93,10 @@ static int reject_param(fricreg_sim *sim, int param, double value,
     else
         snprintf(label, sizeof label, "%s", name);
     if (!isfinite(value))
-        return sim_fail(sim, FRICREG_ENONFINITE, "set_param: %s = %g is not finite", label,
-                        value);
+        return sim_fail(sim, FRICREG_ENONFINITE, "set_param: %s = %g is not finite", label, value);
     if (name == NULL)
-        return sim_fail(sim, FRICREG_EINVAL, "set_param: %s = %g is not a known parameter",
-                        label, value);
+        return sim_fail(sim, FRICREG_EINVAL, "set_param: %s = %g is not a known parameter", label,
+                        value);
     if (spec == NULL)
         return sim_fail(sim, FRICREG_EINVAL, "set_param: %s = %g is not a parameter of the %s",
                         label, value, sim->sys.type->name);
@@ -299,8 +298,8 @@ static int alloc_run(fricreg_sim *sim, size_t cycles)
     sim->stick_fraction = calloc(m, sizeof *sim->stick_fraction);
     sim->D = calloc(cycles + 1, sizeof *sim->D);
     sim->jac_work = malloc(3 * (2 * n + 1) * sizeof *sim->jac_work);
-    if (!sim->jac_work || !sim->y || !sim->zdot || !sim->a_free || !sim->f || !sim->f_eq || !sim->stick_time ||
-        !sim->stick_fraction || !sim->D)
+    if (!sim->jac_work || !sim->y || !sim->zdot || !sim->a_free || !sim->f || !sim->f_eq ||
+        !sim->stick_time || !sim->stick_fraction || !sim->D)
         return sim_fail(sim, FRICREG_ENOMEM, "run: out of memory for %zu bodies", n);
     int status = fricreg_ctx_create(m, &sim->ctx);
     if (status == FRICREG_OK)
@@ -421,8 +420,7 @@ static int after_step(fricreg_sim *sim, double t_before)
                         "run: state diverged at t = %.17g (%s): the step is unstable; reduce dt",
                         sim->t, state_part(sim, k, part, sizeof part));
     double h = sim->t - t_before;
-    sim->sys.type->contacts(&sim->sys, sim->t, sim->y, sim->y + sim->ndof, sim->zdot,
-                            sim->a_free);
+    sim->sys.type->contacts(&sim->sys, sim->t, sim->y, sim->y + sim->ndof, sim->zdot, sim->a_free);
     for (size_t i = 0; i < sim->m; i++)
         sim->stick_time[i] += fabs(sim->zdot[i]) < sim->eps ? h : 0.0;
     return sim->observer ? observe(sim) : FRICREG_OK;
@@ -546,7 +544,8 @@ int fricreg_sim_run(fricreg_sim *sim, double t_end)
     if (!(t_end > 0.0))
         return sim_fail(sim, FRICREG_EINVAL, "run: t_end = %g must be > 0", t_end);
     if (!adaptive(sim) && t_end / (sim->dt * integ->substeps) > MAX_GSL_STEPS)
-        return sim_fail(sim, FRICREG_EINVAL, "run: t_end/dt = %g steps is too many", t_end / sim->dt);
+        return sim_fail(sim, FRICREG_EINVAL, "run: t_end/dt = %g steps is too many",
+                        t_end / sim->dt);
     double whole_cycles = fr_whole_cycles(t_end, period(sim));
     if (whole_cycles > MAX_CYCLES)
         return sim_fail(sim, FRICREG_EINVAL, "run: t_end = %g spans more than 10^9 cycles", t_end);
@@ -573,8 +572,8 @@ int fricreg_sim_run(fricreg_sim *sim, double t_end)
     double tol_rel = adaptive(sim) ? sim->rtol : 0.0;
     gsl_error_handler_t *previous = fr_gsl_quiet();
     const gsl_odeiv2_step_type *stepper = fr_integrator_stepper(integ, adaptive(sim));
-    gsl_odeiv2_driver *d = fr_ode_driver_alloc(&sys, stepper, sim->dt * integ->substeps,
-                                               tol_abs, tol_rel);
+    gsl_odeiv2_driver *d = fr_ode_driver_alloc(&sys, stepper, sim->dt * integ->substeps, tol_abs,
+                                               tol_rel);
     fr_gsl_restore(previous);
     if (d == NULL)
         return sim_fail(sim, FRICREG_ENOMEM, "run: GSL driver allocation failed");

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* sim_jacobian.c — the Jacobian of the drivers' ODE, for GSL's implicit steppers.
  *
  * The state is y = (x, v, D) (sim.c) and each system is linear in x, v and f (system.h):
@@ -28,13 +29,13 @@
 
 struct fr_jacobian {
     size_t n, m;
-    double *Zv, *Ax;                 /* [m x n] the contacts' maps */
-    double *Cx, *Cf;                 /* [n x n], [n x m] the bodies' maps */
-    double *Tz, *Ta;                 /* [m x m] the context's tangent */
-    double *TaAx, *TzZv;             /* [m x n] products */
-    double *zdot_t, *afree_t, *g;    /* [m] forcing rates; g = Tz zdot_t + Ta afree_t */
-    double *acc_t;                   /* [n] */
-    double *dydt;                    /* [2n + 1] the right-hand side, discarded */
+    double *Zv, *Ax;              /* [m x n] the contacts' maps */
+    double *Cx, *Cf;              /* [n x n], [n x m] the bodies' maps */
+    double *Tz, *Ta;              /* [m x m] the context's tangent */
+    double *TaAx, *TzZv;          /* [m x n] products */
+    double *zdot_t, *afree_t, *g; /* [m] forcing rates; g = Tz zdot_t + Ta afree_t */
+    double *acc_t;                /* [n] */
+    double *dydt;                 /* [2n + 1] the right-hand side, discarded */
 };
 
 void fr_jacobian_free(struct fr_jacobian *J)
@@ -136,7 +137,7 @@ static void assemble_dfdy(const fricreg_sim *sim, struct fr_jacobian *J, double 
 
     multiply(m, m, n, J->Ta, J->Ax, J->TaAx, n);
     multiply(m, m, n, J->Tz, J->Zv, J->TzZv, n);
-    double *vx = dfdy + n * dim, *vv = vx + n;     /* rows n..2n-1, row stride dim */
+    double *vx = dfdy + n * dim, *vv = vx + n; /* rows n..2n-1, row stride dim */
     multiply(n, m, n, J->Cf, J->TaAx, vx, dim);
     multiply(n, m, n, J->Cf, J->TzZv, vv, dim);
     for (size_t i = 0; i < n; i++)

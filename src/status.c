@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* status.c — fixed text for each status code, and the library version. */
 #include "fricreg.h"
 

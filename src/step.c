@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* step.c — stepping a fricreg_structure: the equilibrium acceleration at the start, one
  * step of the selected scheme (newmark.c, central_difference.c), the energy balance
  * (energy.c) and the counters; fricreg_structure_step and fricreg_structure_run. */
@@ -35,8 +36,8 @@ int fr_structure_friction(fricreg_structure *s, const gsl_vector *w, const gsl_v
 }
 
 /* w = p~ - C v - K u */
-void fr_structure_net_force(const fricreg_structure *s, const gsl_vector *ptil,
-                            const gsl_vector *u, const gsl_vector *v, gsl_vector *w)
+void fr_structure_net_force(const fricreg_structure *s, const gsl_vector *ptil, const gsl_vector *u,
+                            const gsl_vector *v, gsl_vector *w)
 {
     gsl_vector_memcpy(w, ptil);
     gsl_blas_dgemv(CblasNoTrans, -1.0, s->C, v, 1.0, w);

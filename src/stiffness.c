@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* stiffness.c — fricreg_ctx_stick_stiffness: the decay rate that bounds a fixed explicit step.
  *
  * In the stick zone a law with slope s_i at v = 0 gives d(zddot)/d(zdot) = -W_SS D_S with
@@ -26,7 +27,7 @@ static double law_slope(int law, double mun, double eps)
     case FRICREG_LAW_QUINN: return 2.0 * mun / eps; /* (4a) */
     case FRICREG_LAW_VELOCITY_LIMITED:
     case FRICREG_LAW_TANH: return mun / eps; /* (3), tanh'(0) = 1 */
-    default: return 0.0; /* (1), (2), Karnopp: no velocity feedback at rest */
+    default: return 0.0;                     /* (1), (2), Karnopp: no velocity feedback at rest */
     }
 }
 
@@ -64,8 +65,7 @@ static int coupled_rate(fricreg_ctx *ctx, int law, double *lambda)
 int fricreg_ctx_stick_stiffness(fricreg_ctx *ctx, double *lambda)
 {
     if (ctx == NULL || lambda == NULL)
-        return ctx ? fr_fail(ctx, FRICREG_ENULL, "stick_stiffness: lambda is NULL")
-                   : FRICREG_ENULL;
+        return ctx ? fr_fail(ctx, FRICREG_ENULL, "stick_stiffness: lambda is NULL") : FRICREG_ENULL;
     int decoupled = ctx->W == NULL || (ctx->law == FRICREG_LAW_QUINN &&
                                        ctx->partition == FRICREG_PARTITION_CONSISTENT);
     if (decoupled) {
@@ -74,8 +74,7 @@ int fricreg_ctx_stick_stiffness(fricreg_ctx *ctx, double *lambda)
     }
     double rate = 0.0;
     if (coupled_rate(ctx, ctx->law, &rate) != FRICREG_OK)
-        return fr_fail(ctx, FRICREG_ENOMEM, "stick_stiffness: out of memory for m = %zu",
-                       ctx->m);
+        return fr_fail(ctx, FRICREG_ENOMEM, "stick_stiffness: out of memory for m = %zu", ctx->m);
     *lambda = rate;
     return FRICREG_OK;
 }
@@ -87,8 +86,8 @@ int fr_chord_stiffness(fricreg_ctx *ctx, double *lambda)
 {
     double rate = 0.0;
     for (size_t i = 0; i < ctx->m; i++)
-        rate = fmax(rate, ctx->w_diag[i] * law_slope(FRICREG_LAW_VELOCITY_LIMITED, ctx->mun[i],
-                                                     ctx->eps));
+        rate = fmax(rate, ctx->w_diag[i] *
+                              law_slope(FRICREG_LAW_VELOCITY_LIMITED, ctx->mun[i], ctx->eps));
     if (ctx->W != NULL && coupled_rate(ctx, FRICREG_LAW_VELOCITY_LIMITED, &rate) != FRICREG_OK)
         return fr_fail(ctx, FRICREG_ENOMEM, "chord_stiffness: out of memory for m = %zu", ctx->m);
     *lambda = rate;

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* stiffness.h — internal: the step guard's stiffness of a law that jumps (stiffness.c). */
 #ifndef FRICREG_STIFFNESS_H
 #define FRICREG_STIFFNESS_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* structure.c — fricreg_structure: life cycle, model setters, getters, and the set-up that
  * turns the model into a fricreg context (M's Cholesky factor, G = J M^-1, W = J M^-1 J^T).
  * The integrator is newmark.c, the energy balance energy.c. */
@@ -21,14 +22,15 @@ void fricreg_structure_free(fricreg_structure *s)
 {
     if (s == NULL)
         return;
-    gsl_matrix *mats[] = {s->M, s->K, s->C, s->J, s->L, s->G, s->S, s->GS, s->A, s->Fz, s->Fa,
-                          s->T1};
+    gsl_matrix *mats[] = {s->M, s->K,  s->C, s->J,  s->L,  s->G,
+                          s->S, s->GS, s->A, s->Fz, s->Fa, s->T1};
     for (size_t k = 0; k < sizeof mats / sizeof *mats; k++)
         if (mats[k])
             gsl_matrix_free(mats[k]);
-    gsl_vector *vecs[] = {s->r, s->p, s->Mr, s->u, s->v, s->a, s->ptil, s->f, s->x, s->dx, s->xt,
-                          s->u1, s->v1, s->q1, s->R, s->Rt, s->ptil1, s->hist, s->up, s->vp,
-                          s->work, s->f1, s->zdot, s->afree, s->mwork};
+    gsl_vector *vecs[] = {s->r,  s->p,    s->Mr,    s->u,    s->v,  s->a,  s->ptil,
+                          s->f,  s->x,    s->dx,    s->xt,   s->u1, s->v1, s->q1,
+                          s->R,  s->Rt,   s->ptil1, s->hist, s->up, s->vp, s->work,
+                          s->f1, s->zdot, s->afree, s->mwork};
     for (size_t k = 0; k < sizeof vecs / sizeof *vecs; k++)
         if (vecs[k])
             gsl_vector_free(vecs[k]);
@@ -59,9 +61,9 @@ static int allocate(fricreg_structure *s)
             return 0;
     if ((s->Fz = gsl_matrix_calloc(m, m)) == NULL || (s->Fa = gsl_matrix_calloc(m, m)) == NULL)
         return 0;
-    gsl_vector **nv[] = {&s->r, &s->p, &s->Mr, &s->u, &s->v, &s->a, &s->ptil, &s->x, &s->dx,
-                         &s->xt, &s->u1, &s->v1, &s->q1, &s->R, &s->Rt, &s->ptil1, &s->hist,
-                         &s->up, &s->vp, &s->work};
+    gsl_vector **nv[] = {&s->r,  &s->p,     &s->Mr,   &s->u,  &s->v,  &s->a,   &s->ptil,
+                         &s->x,  &s->dx,    &s->xt,   &s->u1, &s->v1, &s->q1,  &s->R,
+                         &s->Rt, &s->ptil1, &s->hist, &s->up, &s->vp, &s->work};
     for (size_t k = 0; k < sizeof nv / sizeof *nv; k++)
         if ((*nv[k] = gsl_vector_calloc(n)) == NULL)
             return 0;
@@ -74,8 +76,8 @@ static int allocate(fricreg_structure *s)
     s->eigenvalues = gsl_vector_alloc(n);
     s->mun = malloc(m * sizeof *s->mun);
     s->energy.per_contact = calloc(m, sizeof *s->energy.per_contact);
-    return s->perm && s->eigen_work && s->eigenvalues && s->mun && s->energy.per_contact
-           && fricreg_ctx_create(m, &s->ctx) == FRICREG_OK;
+    return s->perm && s->eigen_work && s->eigenvalues && s->mun && s->energy.per_contact &&
+           fricreg_ctx_create(m, &s->ctx) == FRICREG_OK;
 }
 
 int fricreg_structure_create(size_t ndof, size_t m, fricreg_structure **out)
@@ -147,12 +149,13 @@ static int check_square(fricreg_structure *s, const char *name, size_t ndof, con
         return fr_sfail(s, FRICREG_ESIZE, "%s: ndof = %zu, the structure has %zu", name, ndof,
                         s->n);
     if (!all_finite(A, ndof * ndof, &i))
-        return fr_sfail(s, FRICREG_ENONFINITE, "%s: entry (%zu, %zu) is not finite", name,
-                        i / ndof, i % ndof);
+        return fr_sfail(s, FRICREG_ENONFINITE, "%s: entry (%zu, %zu) is not finite", name, i / ndof,
+                        i % ndof);
     if (asymmetric(A, ndof, &i, &j))
-        return fr_sfail(s, FRICREG_ENOTSYM, "%s: entries (%zu, %zu) = %g and (%zu, %zu) = %g "
-                        "differ: the matrix is not symmetric", name, i, j, A[i * ndof + j], j, i,
-                        A[j * ndof + i]);
+        return fr_sfail(s, FRICREG_ENOTSYM,
+                        "%s: entries (%zu, %zu) = %g and (%zu, %zu) = %g "
+                        "differ: the matrix is not symmetric",
+                        name, i, j, A[i * ndof + j], j, i, A[j * ndof + i]);
     return FRICREG_OK;
 }
 
@@ -185,7 +188,8 @@ int fricreg_structure_set_mass(fricreg_structure *s, size_t ndof, const double M
     fr_gsl_restore(old);
     if (gsl_status != GSL_SUCCESS) {
         s->prepared = 0; /* L held the kept M's factor: the next step refactors it */
-        return fr_sfail(s, FRICREG_ENOTPSD, "set_mass: the mass matrix is not positive definite "
+        return fr_sfail(s, FRICREG_ENOTPSD,
+                        "set_mass: the mass matrix is not positive definite "
                         "(GSL's Cholesky decomposition fails)");
     }
     copy_matrix(s->M, M);
@@ -223,8 +227,8 @@ int fricreg_structure_set_rayleigh(fricreg_structure *s, double a0, double a1)
     if (s == NULL)
         return FRICREG_ENULL;
     if (!isfinite(a0) || !isfinite(a1))
-        return fr_sfail(s, FRICREG_ENONFINITE, "set_rayleigh: a0 = %g or a1 = %g is not finite",
-                        a0, a1);
+        return fr_sfail(s, FRICREG_ENONFINITE, "set_rayleigh: a0 = %g or a1 = %g is not finite", a0,
+                        a1);
     if (a0 < 0.0 || a1 < 0.0)
         return fr_sfail(s, FRICREG_EINVAL, "set_rayleigh: a0 = %g and a1 = %g must be >= 0", a0,
                         a1);
@@ -242,8 +246,10 @@ int fricreg_structure_set_contacts(fricreg_structure *s, size_t m, size_t ndof, 
     if (J == NULL)
         return fr_sfail(s, FRICREG_ENULL, "set_contacts: J is NULL");
     if (m != s->m || ndof != s->n)
-        return fr_sfail(s, FRICREG_ESIZE, "set_contacts: J is %zu x %zu, the structure needs "
-                        "%zu x %zu", m, ndof, s->m, s->n);
+        return fr_sfail(s, FRICREG_ESIZE,
+                        "set_contacts: J is %zu x %zu, the structure needs "
+                        "%zu x %zu",
+                        m, ndof, s->m, s->n);
     size_t k;
     if (!all_finite(J, m * ndof, &k))
         return fr_sfail(s, FRICREG_ENONFINITE, "set_contacts: entry (%zu, %zu) is not finite",
@@ -253,8 +259,10 @@ int fricreg_structure_set_contacts(fricreg_structure *s, size_t m, size_t ndof, 
         for (size_t j = 0; j < ndof; j++)
             moves |= J[i * ndof + j] != 0.0;
         if (!moves)
-            return fr_sfail(s, FRICREG_EINVAL, "set_contacts: row %zu of J is zero: contact %zu "
-                            "does not move", i, i);
+            return fr_sfail(s, FRICREG_EINVAL,
+                            "set_contacts: row %zu of J is zero: contact %zu "
+                            "does not move",
+                            i, i);
     }
     copy_matrix(s->J, J);
     s->contacts_set = 1;
@@ -333,8 +341,8 @@ static int set_record(fricreg_structure *s, const char *name, struct fr_record *
                         name);
     size_t k;
     if (!isfinite(t0) || !isfinite(dt))
-        return fr_sfail(s, FRICREG_ENONFINITE, "%s: t0 = %g or dt_rec = %g is not finite", name,
-                        t0, dt);
+        return fr_sfail(s, FRICREG_ENONFINITE, "%s: t0 = %g or dt_rec = %g is not finite", name, t0,
+                        dt);
     if (!(dt > 0.0))
         return fr_sfail(s, FRICREG_EINVAL, "%s: dt_rec = %g must be > 0", name, dt);
     if (!all_finite(x, n, &k))
@@ -400,11 +408,15 @@ int fricreg_structure_set_newmark(fricreg_structure *s, double beta, double gamm
     if (s == NULL)
         return FRICREG_ENULL;
     if (!isfinite(beta) || !isfinite(gamma))
-        return fr_sfail(s, FRICREG_ENONFINITE, "set_newmark: beta = %g or gamma = %g is not "
-                        "finite", beta, gamma);
+        return fr_sfail(s, FRICREG_ENONFINITE,
+                        "set_newmark: beta = %g or gamma = %g is not "
+                        "finite",
+                        beta, gamma);
     if (!(beta > 0.0 && beta <= 0.5 && gamma >= 0.5 && gamma <= 1.0))
-        return fr_sfail(s, FRICREG_EINVAL, "set_newmark: beta = %g must be in (0, 1/2] and "
-                        "gamma = %g in [1/2, 1]", beta, gamma);
+        return fr_sfail(s, FRICREG_EINVAL,
+                        "set_newmark: beta = %g must be in (0, 1/2] and "
+                        "gamma = %g in [1/2, 1]",
+                        beta, gamma);
     s->scheme = FR_SCHEME_NEWMARK;
     s->alpha = 0.0;
     s->beta = beta;
@@ -444,8 +456,10 @@ int fricreg_structure_set_newton(fricreg_structure *s, double tol, int max_iter)
     if (!isfinite(tol))
         return fr_sfail(s, FRICREG_ENONFINITE, "set_newton: tol is not finite");
     if (!(tol > 0.0 && tol < 1.0) || max_iter < 1 || max_iter > 1000)
-        return fr_sfail(s, FRICREG_EINVAL, "set_newton: tol = %g must be in (0, 1) and "
-                        "max_iter = %d in [1, 1000]", tol, max_iter);
+        return fr_sfail(s, FRICREG_EINVAL,
+                        "set_newton: tol = %g must be in (0, 1) and "
+                        "max_iter = %d in [1, 1000]",
+                        tol, max_iter);
     s->newton_tol = tol;
     s->newton_max = max_iter;
     return FRICREG_OK;
@@ -499,7 +513,8 @@ int fr_structure_prepare(fricreg_structure *s)
     if (s->prepared)
         return FRICREG_OK;
     if (!s->contacts_set)
-        return fr_sfail(s, FRICREG_EINVAL, "step: the contact matrix J was never set "
+        return fr_sfail(s, FRICREG_EINVAL,
+                        "step: the contact matrix J was never set "
                         "(fricreg_structure_set_contacts)");
     gsl_error_handler_t *old = fr_gsl_quiet();
     gsl_matrix_memcpy(s->L, s->M);

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* structure_internal.h — the structure's layout, shared by structure.c (model, set-up),
  * newmark.c (the integrator and Newton) and energy.c (the balance). */
 #ifndef FRICREG_STRUCTURE_INTERNAL_H
@@ -37,47 +38,47 @@ struct fricreg_structure {
     gsl_matrix *M, *K, *C; /* n x n; C is formed from a0, a1 when rayleigh */
     int rayleigh;
     double a0, a1;
-    gsl_matrix *J;         /* m x n */
+    gsl_matrix *J; /* m x n */
     int contacts_set;
-    gsl_vector *r, *p;     /* influence and load pattern */
+    gsl_vector *r, *p;             /* influence and load pattern */
     struct fr_record ground, load; /* load.n == 0: g = 1 */
-    fricreg_ctx *ctx;      /* law, eps, bounds; coupling set by fr_structure_prepare */
-    double *mun;           /* [m] the bounds, for the force scale */
+    fricreg_ctx *ctx;              /* law, eps, bounds; coupling set by fr_structure_prepare */
+    double *mun;                   /* [m] the bounds, for the force scale */
 
     /* Integrator. */
-    int scheme;            /* FR_SCHEME_* */
+    int scheme; /* FR_SCHEME_* */
     double alpha, beta, gamma;
     double newton_tol;
     int newton_max;
 
     /* Derived at the first step after a model change (fr_structure_prepare). */
-    int prepared;          /* M's factor, G, W and C are current */
-    gsl_matrix *L;         /* n x n: Cholesky factor of M */
-    gsl_matrix *G;         /* m x n: J M^-1 */
-    gsl_vector *Mr;        /* M r */
-    int omega_valid;       /* central difference: omega_max is current (reset by prepare) */
+    int prepared;    /* M's factor, G, W and C are current */
+    gsl_matrix *L;   /* n x n: Cholesky factor of M */
+    gsl_matrix *G;   /* m x n: J M^-1 */
+    gsl_vector *Mr;  /* M r */
+    int omega_valid; /* central difference: omega_max is current (reset by prepare) */
     double omega_max;
-    int stick_valid;       /* central difference: stick_rate is current (reset at equilibrium) */
-    double stick_rate;     /* fricreg_ctx_stick_stiffness */
+    int stick_valid;   /* central difference: stick_rate is current (reset at equilibrium) */
+    double stick_rate; /* fricreg_ctx_stick_stiffness */
     gsl_eigen_symm_workspace *eigen_work;
     gsl_vector *eigenvalues;
 
     /* State at time t; `ready` when a, f and p~ hold the equation of motion at t. */
     double t;
     gsl_vector *u, *v, *a;
-    gsl_vector *ptil;      /* p - M r a_g at t */
-    gsl_vector *f;         /* [m] friction at t */
+    gsl_vector *ptil; /* p - M r a_g at t */
+    gsl_vector *f;    /* [m] friction at t */
     int ready;
-    int fresh;             /* set_initial since the last step: the balance starts here */
+    int fresh; /* set_initial since the last step: the balance starts here */
 
     /* Newton scratch, allocated at create. */
-    gsl_matrix *S, *GS;    /* n x n: gamma dt C + beta dt^2 K; m x n: G S */
-    double S_dt;           /* the dt S was formed for (0: none) */
-    gsl_matrix *A;         /* n x n: the Newton matrix, then its LU */
+    gsl_matrix *S, *GS; /* n x n: gamma dt C + beta dt^2 K; m x n: G S */
+    double S_dt;        /* the dt S was formed for (0: none) */
+    gsl_matrix *A;      /* n x n: the Newton matrix, then its LU */
     gsl_permutation *perm;
-    gsl_matrix *Fz, *Fa;   /* m x m: df/dzdot, df/da_free */
-    gsl_matrix *T1;        /* m x n: gamma dt F_z J - F_a G S */
-    gsl_vector *x, *dx, *xt;        /* unknown a, direction, trial */
+    gsl_matrix *Fz, *Fa;     /* m x m: df/dzdot, df/da_free */
+    gsl_matrix *T1;          /* m x n: gamma dt F_z J - F_a G S */
+    gsl_vector *x, *dx, *xt; /* unknown a, direction, trial */
     gsl_vector *u1, *v1, *q1, *R, *Rt, *ptil1, *hist, *up, *vp, *work;
     gsl_vector *f1, *zdot, *afree, *mwork; /* [m] */
 
@@ -100,8 +101,8 @@ int fr_structure_equilibrium(fricreg_structure *s);
 int fr_structure_friction(fricreg_structure *s, const gsl_vector *w, const gsl_vector *v,
                           gsl_vector *f);
 /* w = p~ - C v - K u */
-void fr_structure_net_force(const fricreg_structure *s, const gsl_vector *ptil,
-                            const gsl_vector *u, const gsl_vector *v, gsl_vector *w);
+void fr_structure_net_force(const fricreg_structure *s, const gsl_vector *ptil, const gsl_vector *u,
+                            const gsl_vector *v, gsl_vector *w);
 
 /* newmark.c: u1, v1, x (= a1) and f1 of one Newmark / HHT-alpha step by Newton. */
 int fr_newmark_solve(fricreg_structure *s, double dt, int *converged, int *iters);

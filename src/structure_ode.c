@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* structure_ode.c — a fricreg_structure integrated by GSL's gsl_odeiv2 steppers (the table of
  * integrator.c, as the reference systems' drivers use it).
  *
@@ -90,16 +91,19 @@ static int check_fixed_step(fricreg_structure *s, const struct fr_integrator *in
         if (fricreg_ctx_stick_stiffness(s->ctx, &lambda) != FRICREG_OK)
             return fr_sfail(s, FRICREG_ENOMEM, "run_ode: %s", fricreg_ctx_errmsg(s->ctx));
         if (dt * lambda > integ->real_axis_bound)
-            return fr_sfail(s, FRICREG_ESTEP, "run_ode: dt = %g too large for the stick zone: "
+            return fr_sfail(s, FRICREG_ESTEP,
+                            "run_ode: dt = %g too large for the stick zone: "
                             "its stiffness %g gives dt*lambda = %g > %g, the stability bound "
-                            "of %s; reduce dt or raise eps", dt, lambda, dt * lambda,
-                            integ->real_axis_bound, integ->name);
+                            "of %s; reduce dt or raise eps",
+                            dt, lambda, dt * lambda, integ->real_axis_bound, integ->name);
     }
     double omega = fr_structure_omega_max(s);
     if (integ->imag_axis_bound > 0.0 && dt * omega > integ->imag_axis_bound)
-        return fr_sfail(s, FRICREG_ESTEP, "run_ode: dt = %g too large for the structure's "
+        return fr_sfail(s, FRICREG_ESTEP,
+                        "run_ode: dt = %g too large for the structure's "
                         "highest frequency %g: dt*omega = %g > %g, the stability bound of %s; "
-                        "reduce dt", dt, omega, dt * omega, integ->imag_axis_bound, integ->name);
+                        "reduce dt",
+                        dt, omega, dt * omega, integ->imag_axis_bound, integ->name);
     return FRICREG_OK;
 }
 
@@ -143,15 +147,20 @@ static int integrate(fricreg_structure *s, struct ode_run *run, gsl_odeiv2_drive
         }
         if (status != GSL_SUCCESS) {
             if (run->rhs_status != FRICREG_OK)
-                return fr_sfail(s, run->rhs_status == FRICREG_ENONFINITE ? FRICREG_EDIVERGED
-                                                                         : run->rhs_status,
+                return fr_sfail(s,
+                                run->rhs_status == FRICREG_ENONFINITE ? FRICREG_EDIVERGED
+                                                                      : run->rhs_status,
                                 "run_ode: t = %.17g: %s", t, fricreg_ctx_errmsg(s->ctx));
-            return fr_sfail(s, FRICREG_EINTEGRATOR, "run_ode: GSL stepper failed at t = %.17g:"
-                            " %s", t, gsl_strerror(status));
+            return fr_sfail(s, FRICREG_EINTEGRATOR,
+                            "run_ode: GSL stepper failed at t = %.17g:"
+                            " %s",
+                            t, gsl_strerror(status));
         }
         if (beyond(y, run->dim))
-            return fr_sfail(s, FRICREG_EDIVERGED, "run_ode: the state at t = %.17g is beyond "
-                            "1e100: the step is unstable; reduce dt", t);
+            return fr_sfail(s, FRICREG_EDIVERGED,
+                            "run_ode: the state at t = %.17g is beyond "
+                            "1e100: the step is unstable; reduce dt",
+                            t);
         /* accept: the structure's state follows the integration */
         memcpy(s->u->data, y, s->n * sizeof *y);
         memcpy(s->v->data, y + s->n, s->n * sizeof *y);
@@ -179,11 +188,12 @@ int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, d
     if (!isfinite(dt) || !isfinite(rtol) || !isfinite(atol) || !isfinite(t_end))
         return fr_sfail(s, FRICREG_ENONFINITE, "run_ode: dt, rtol, atol or t_end not finite");
     if (!(dt > 0.0) || rtol < 0.0 || atol < 0.0)
-        return fr_sfail(s, FRICREG_EINVAL, "run_ode: dt = %g must be > 0, rtol = %g and "
-                        "atol = %g >= 0", dt, rtol, atol);
+        return fr_sfail(s, FRICREG_EINVAL,
+                        "run_ode: dt = %g must be > 0, rtol = %g and "
+                        "atol = %g >= 0",
+                        dt, rtol, atol);
     if (!(t_end > s->t))
-        return fr_sfail(s, FRICREG_EINVAL, "run_ode: t_end = %g must be after t = %g", t_end,
-                        s->t);
+        return fr_sfail(s, FRICREG_EINVAL, "run_ode: t_end = %g must be after t = %g", t_end, s->t);
     int adaptive = rtol > 0.0 || atol > 0.0;
     if (!adaptive && (t_end - s->t) / (dt * integ->substeps) > MAX_GSL_STEPS)
         return fr_sfail(s, FRICREG_EINVAL, "run_ode: (t_end - t)/dt is too many steps");
@@ -214,9 +224,11 @@ int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, d
 
     gsl_odeiv2_system sys = {rhs, jacobian, run.dim, &run};
     old = fr_gsl_quiet();
-    gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(
-        &sys, fr_integrator_stepper(integ, adaptive), dt * integ->substeps,
-        adaptive ? atol : integ->fixed_tolerance, adaptive ? rtol : 0.0);
+    gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys,
+                                                         fr_integrator_stepper(integ, adaptive),
+                                                         dt * integ->substeps,
+                                                         adaptive ? atol : integ->fixed_tolerance,
+                                                         adaptive ? rtol : 0.0);
     if (d == NULL)
         status = fr_sfail(s, FRICREG_ENOMEM, "run_ode: GSL driver allocation failed");
     else

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* system.h — internal: a reference system as a table of function pointers, one file each.
  *
  * As GSL's ode-initval2 has one file per stepper behind gsl_odeiv2_step_type, each system of
@@ -68,8 +69,8 @@ struct fr_system_type {
     void (*body_maps)(const struct fr_system *sys, double dacc_dx[], double dacc_df[]);
     /* The forcing's rates at t, at fixed x, v and f: dzdot_0/dt [m], da_0/dt [m],
      * dc_0/dt [n]. */
-    void (*time_rates)(const struct fr_system *sys, double t, double dzdot_dt[],
-                       double dafree_dt[], double dacc_dt[]);
+    void (*time_rates)(const struct fr_system *sys, double t, double dzdot_dt[], double dafree_dt[],
+                       double dacc_dt[]);
 };
 
 /* One system with its parameter values. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* tangent.c — fricreg_ctx_tangent: the Jacobian of the forces of the last evaluation.
  *
  * Recomputed from that evaluation's inputs (kept by fricreg_ctx_eval) and, for the consistent
@@ -157,8 +158,7 @@ static void tangent_slip(const fricreg_ctx *ctx, double dz[])
 static int check_tangent_args(fricreg_ctx *ctx, size_t m, const double dz[], const double da[])
 {
     if (m != ctx->m)
-        return fr_fail(ctx, FRICREG_ESIZE, "tangent: m = %zu, context has %zu contacts", m,
-                       ctx->m);
+        return fr_fail(ctx, FRICREG_ESIZE, "tangent: m = %zu, context has %zu contacts", m, ctx->m);
     if (dz == NULL && da == NULL)
         return fr_fail(ctx, FRICREG_ENULL, "tangent: df_dzdot and df_dafree are both NULL");
     if (!ctx->last_valid)

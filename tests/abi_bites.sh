@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The ABI check must reject a broken library: runs tests/abi_check.sh on a probe library and
 # passes only if the check fails and names the symbol that was broken.
 # Usage: abi_bites.sh ABI_CHECK BASELINE PROBE_LIBRARY SYMBOL HEADER_DIR...

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # ABI check: compares a built libfricreg.so with the committed baseline (abi/fricreg.abi,
 # written by abidw) using libabigail's abidiff. Added functions pass (a compatible release
 # adds functions in a new version node); any other difference fails: a removed or renamed

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # fricreg-sim's command line: usage errors exit 2 with one line naming the option and write
 # nothing to stdout; runs print the paper's numbers. Usage: cli.sh PATH/TO/fricreg-sim
 sim=$1

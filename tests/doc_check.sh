@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Every public declaration in DIR/*.h has a doc comment: each FRICREG_API function, enum,
 # enumerator and typedef is preceded by a /** ... */ comment (blank lines and plain /* */
 # comments may not stand between them) or, for an enumerator, followed by /**< ... */ on its

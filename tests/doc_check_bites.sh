@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The doc-comment check can fail: on copies of the headers with one doc comment removed or
 # weakened, it must fail and name the declaration. Usage: doc_check_bites.sh CHECK INCLUDE_DIR
 check=$1 include=$2

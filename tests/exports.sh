@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The shared library exports exactly the functions the public headers declare with
 # FRICREG_API, each tagged with a FRICREG_<major>.<minor> version node, and its SONAME is
 # libfricreg.so.<SOVERSION>. Usage: exports.sh LIBRARY SOVERSION HEADER...

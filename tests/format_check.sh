@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The tracked C sources and headers are formatted as .clang-format says (clang-format
 # --dry-run -Werror). Exits 77, which ctest reports as skipped, when clang-format is absent.
 # To apply: git ls-files '*.c' '*.h' | xargs clang-format -i

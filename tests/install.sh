@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Installs the build into a temporary prefix, then builds and runs consumers against the
 # installed copy only: C with find_package(fricreg CONFIG), C with pkg-config, and (when the
 # Fortran interface was built) Fortran with the installed module, with pkg-config

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The core alone builds and passes its tests with every optional part switched off: the GSL
 # drivers and CLI, the Fortran interface, the examples (and the benchmarks, off by default).
 # The checks of the source tree (label docs) and the sanitizer and valgrind runs (labels

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The README's first two commands are exactly what .ci/run runs. Usage: readme_commands.sh ROOT
 root=$1
 commands=$(awk '/^```sh$/ {inside = 1; n++; next} /^```$/ {inside = 0} inside && n <= 2' "$root/README.md")

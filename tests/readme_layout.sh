@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The README's "Layout" table is true: every path it lists exists, and every top-level entry
 # of the repository (tracked files and folders) is listed. Usage: readme_layout.sh ROOT
 root=$1

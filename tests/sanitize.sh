@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # ASan + UBSan: a second tree of the library, its C tests and the Fortran interface, built with
 # -fsanitize=address,undefined -fno-sanitize-recover=all, and its ctest run (the packaging, ABI
 # and source-tree (docs) labels left out: they test files, not memory). Any sanitizer report fails the test, also

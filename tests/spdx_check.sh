@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Every tracked source file names its licence in an SPDX line: C (.c, .h), Fortran (.f90, .F90,
 # .f, .F), CMake (CMakeLists.txt, .cmake), shell scripts (.sh or a #! first line) and .in
 # templates, within their first 3 lines; a script on the line right after its shebang.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_chain.c — the n-dof chain of Sec. 3.2 (Fig. 8) driven through fricreg_sim.
  *
  * Paper defaults: n = 32 blocks, G(t) = a sin(omega t) with a = 0.25, omega = 0.5 (period 4 pi),

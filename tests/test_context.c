@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_context.c — Check suite for the context: life cycle, setters, error state, the f_eq
  * partition of Sec. 3.3 (fricreg_ctx_eval) and its counters.
  *
@@ -92,7 +93,8 @@ static void expect_failure_recorded(const fricreg_ctx *ctx, int status, int code
 /* Outputs of a failed eval must be untouched. */
 static void fill(double a[], size_t n, double value)
 {
-    for (size_t i = 0; i < n; i++) a[i] = value;
+    for (size_t i = 0; i < n; i++)
+        a[i] = value;
 }
 
 static void expect_untouched(const double a[], size_t n)
@@ -272,8 +274,7 @@ START_TEST(diagonal_pass_is_the_law_contact_by_contact)
         ck_assert_int_eq(fricreg_ctx_eval(ctx, M, zdot, a, f, feq), FRICREG_OK);
         for (size_t i = 0; i < M; i++) {
             double fe = -a[i] / w[i], expected;
-            int near = laws[l] == FRICREG_LAW_FORCE_BALANCE ? zdot[i] == 0.0
-                                                             : fabs(zdot[i]) < eps;
+            int near = laws[l] == FRICREG_LAW_FORCE_BALANCE ? zdot[i] == 0.0 : fabs(zdot[i]) < eps;
             ck_assert_int_eq(fricreg_law_eval(laws[l], zdot[i], fe, mun[i], eps, &expected),
                              FRICREG_OK);
             ck_assert_msg(same_bits(f[i], expected), "law %d, contact %zu: f %.17g, law %.17g",
@@ -766,10 +767,10 @@ START_TEST(set_coupling_dense_errors)
                             FRICREG_ENOTSYM, "asym 1e-10");
     expect_failure_recorded(ctx, fricreg_ctx_set_coupling_dense(ctx, 2, indefinite),
                             FRICREG_ENOTPSD, "indefinite");
-    expect_failure_recorded(ctx, fricreg_ctx_set_coupling_dense(ctx, 2, zero_diag),
-                            FRICREG_ENOTPSD, "W00 = 0");
-    expect_failure_recorded(ctx, fricreg_ctx_set_coupling_dense(ctx, 2, neg_diag),
-                            FRICREG_ENOTPSD, "W00 < 0");
+    expect_failure_recorded(ctx, fricreg_ctx_set_coupling_dense(ctx, 2, zero_diag), FRICREG_ENOTPSD,
+                            "W00 = 0");
+    expect_failure_recorded(ctx, fricreg_ctx_set_coupling_dense(ctx, 2, neg_diag), FRICREG_ENOTPSD,
+                            "W00 < 0");
     expect_failure_recorded(ctx, fricreg_ctx_set_coupling_dense(ctx, 2, zero_diag_last),
                             FRICREG_ENOTPSD, "W11 = 0");
     expect_two_block_state_intact(ctx);
@@ -799,7 +800,8 @@ START_TEST(overflow_is_refused)
                      FRICREG_EINVAL);
     ck_assert_double_eq(f, SENTINEL);
     ck_assert_int_eq(fricreg_law_eval(FRICREG_LAW_QUINN, 0.0, 0.3, 1.0, 2.2250738585072014e-308,
-                                      &f), FRICREG_OK);
+                                      &f),
+                     FRICREG_OK);
     ck_assert_double_eq_tol(f, 0.3, 1e-15);
     fricreg_ctx *ctx = make_ctx(2);
     expect_failure_recorded(ctx, fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, 1e-310),
@@ -907,8 +909,8 @@ START_TEST(eval_failed_factorization_leaves_no_stale_factor)
         ck_assert_double_eq_tol(feq[0], 0.20861833105335156, TOL);
         ck_assert_double_eq_tol(f[0], 0.023618331053351573, TOL);
         ck_assert_double_eq(f[1], -0.25);
-        expect_failure_recorded(ctx, fricreg_ctx_eval(ctx, 2, both, a, f, feq),
-                                FRICREG_ESINGULAR, "rank-1 W_SS");
+        expect_failure_recorded(ctx, fricreg_ctx_eval(ctx, 2, both, a, f, feq), FRICREG_ESINGULAR,
+                                "rank-1 W_SS");
     }
     ck_assert_int_eq(counter(ctx, FRICREG_STAT_EVALS), 2);
     ck_assert_int_eq(counter(ctx, FRICREG_STAT_SOLVES), 2);
@@ -948,7 +950,8 @@ static void make_spd5(double W[M5 * M5])
     for (int i = 0; i < M5; i++)
         for (int j = 0; j < M5; j++) {
             double s = (i == j) ? 0.1 : 0.0;
-            for (int k = 0; k < M5; k++) s += A5[i][k] * A5[j][k];
+            for (int k = 0; k < M5; k++)
+                s += A5[i][k] * A5[j][k];
             W[i * M5 + j] = s;
         }
 }
@@ -1039,7 +1042,8 @@ START_TEST(consistent_two_block_both_free)
     for (int i = 0; i < 2; i++) { /* law (4) at (zdot_i, f_eq,i): the consistent fixed point */
         double law = SENTINEL;
         ck_assert_int_eq(fricreg_law_eval(FRICREG_LAW_QUINN, zdot[i], feq[i], MUN2B[i], EPS2B,
-                                          &law), FRICREG_OK);
+                                          &law),
+                         FRICREG_OK);
         ck_assert_double_eq_tol(f[i], law, TOL);
     }
     expect_stats(ctx, 1, 2, 1, 1);
@@ -1073,10 +1077,8 @@ START_TEST(consistent_no_jump_at_band_edge)
             double inside[2] = {0.0, 0.0}, outside[2] = {0.0, 0.0}, fin[2], fout[2];
             inside[edge[k]] = EPS2B * (1.0 - 1e-9);
             outside[edge[k]] = EPS2B * (1.0 + 1e-9);
-            ck_assert_int_eq(fricreg_ctx_eval(ctx, 2, inside, a_cases[k], fin, NULL),
-                             FRICREG_OK);
-            ck_assert_int_eq(fricreg_ctx_eval(ctx, 2, outside, a_cases[k], fout, NULL),
-                             FRICREG_OK);
+            ck_assert_int_eq(fricreg_ctx_eval(ctx, 2, inside, a_cases[k], fin, NULL), FRICREG_OK);
+            ck_assert_int_eq(fricreg_ctx_eval(ctx, 2, outside, a_cases[k], fout, NULL), FRICREG_OK);
             int i = watch[k];
             ck_assert_double_eq_tol(fout[i], consistent[k], TOL);
             ck_assert_double_eq_tol(fin[i], paper ? paper_inside[k] : consistent[k], TOL);

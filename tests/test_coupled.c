@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_coupled.c — Check suite for the consistent near-stick law of coupled contacts (issue 9,
  * shared/spec/coupled.md), verified against a reference written independently of the library.
  *
@@ -24,8 +25,8 @@
 
 #include "fricreg.h"
 
-#define MMAX 8          /* largest contact count of the random cases: 3^8 assignments */
-#define KKT_TOL 1e-10   /* largest scaled KKT violation the reference accepts */
+#define MMAX 8        /* largest contact count of the random cases: 3^8 assignments */
+#define KKT_TOL 1e-10 /* largest scaled KKT violation the reference accepts */
 #define SENTINEL (-777.125)
 
 /* ---- Random numbers: splitmix64, so every run and platform sees the same cases ------------- */
@@ -220,8 +221,8 @@ static long brute_force(const box_qp *qp, double f_S[])
         if (violation <= KKT_TOL && n_accepted < 16)
             memcpy(accepted[n_accepted++], f, s * sizeof *f);
     }
-    ck_assert_msg(best <= KKT_TOL, "reference: no assignment meets KKT (best %.3g, s = %zu)",
-                  best, s);
+    ck_assert_msg(best <= KKT_TOL, "reference: no assignment meets KKT (best %.3g, s = %zu)", best,
+                  s);
     double fscale = fmax(fmax(max_of(qp->l, s), max_of(qp->u, s)), 1e-300);
     for (int k = 0; k < n_accepted; k++)
         for (size_t a = 0; a < s; a++)
@@ -248,8 +249,12 @@ static void reference_forces(const contact_case *c, int law, double f[])
  * mun = (0.5, 0.25), eps = 0.02. */
 static contact_case two_block(double z1, double z2, double a1, double a2)
 {
-    contact_case c = {.m = 2, .W = {1.0, -1.0, -1.0, 2.0}, .mun = {0.5, 0.25}, .eps = 0.02,
-                      .zdot = {z1, z2}, .a_free = {a1, a2}};
+    contact_case c = {.m = 2,
+                      .W = {1.0, -1.0, -1.0, 2.0},
+                      .mun = {0.5, 0.25},
+                      .eps = 0.02,
+                      .zdot = {z1, z2},
+                      .a_free = {a1, a2}};
     return c;
 }
 
@@ -394,7 +399,6 @@ START_TEST(reference_is_the_box_minimizer)
 }
 END_TEST
 
-
 /* ---- The library ------------------------------------------------------------------------- */
 
 static fricreg_ctx *make_ctx(const contact_case *c, int law, int partition)
@@ -408,8 +412,8 @@ static fricreg_ctx *make_ctx(const contact_case *c, int law, int partition)
     return ctx;
 }
 
-static void eval(fricreg_ctx *ctx, size_t m, const double zdot[], const double a_free[],
-                 double f[], double f_eq[])
+static void eval(fricreg_ctx *ctx, size_t m, const double zdot[], const double a_free[], double f[],
+                 double f_eq[])
 {
     int status = fricreg_ctx_eval(ctx, m, zdot, a_free, f, f_eq);
     ck_assert_msg(status == FRICREG_OK, "eval: %s", fricreg_ctx_errmsg(ctx));
@@ -451,9 +455,8 @@ START_TEST(consistent_law_matches_brute_force)
         for (size_t i = 0; i < c.m; i++) {
             double err = fabs(f[i] - f_ref[i]) / (scale > 0.0 ? scale : 1.0);
             worst = fmax(worst, err);
-            ck_assert_msg(err <= 1e-12,
-                          "case %d (law %d, m %zu): f[%zu] = %.17g, reference %.17g", n, law,
-                          c.m, i, f[i], f_ref[i]);
+            ck_assert_msg(err <= 1e-12, "case %d (law %d, m %zu): f[%zu] = %.17g, reference %.17g",
+                          n, law, c.m, i, f[i], f_ref[i]);
             if (!near_stick(law, c.zdot[i], c.eps)) {
                 ck_assert_msg(isnan(f_eq[i]), "case %d: f_eq[%zu] = %g off S", n, i, f_eq[i]);
                 continue;
@@ -489,15 +492,16 @@ START_TEST(warm_started_walk_matches_brute_force)
         for (int step = 0; step < 25; step++) {
             size_t j = uniform_size(0, c.m - 1);
             c.a_free[j] += uniform(-0.3, 0.3) * c.W[j * c.m + j] * (c.mun[j] + 0.1);
-            c.zdot[j] = fmax(-1.5 * c.eps, fmin(1.5 * c.eps, c.zdot[j] + uniform(-0.3, 0.3) * c.eps));
+            c.zdot[j] = fmax(-1.5 * c.eps,
+                             fmin(1.5 * c.eps, c.zdot[j] + uniform(-0.3, 0.3) * c.eps));
             double f_ref[MMAX], f[MMAX];
             reference_forces(&c, FRICREG_LAW_QUINN, f_ref);
             eval(ctx, c.m, c.zdot, c.a_free, f, NULL);
             double scale = fmax(max_of(c.mun, c.m), 1e-300);
             for (size_t i = 0; i < c.m; i++)
                 ck_assert_msg(fabs(f[i] - f_ref[i]) <= 1e-12 * scale,
-                              "walk %d step %d: f[%zu] = %.17g, reference %.17g", n, step, i,
-                              f[i], f_ref[i]);
+                              "walk %d step %d: f[%zu] = %.17g, reference %.17g", n, step, i, f[i],
+                              f_ref[i]);
         }
         fricreg_ctx_free(ctx);
     }
@@ -509,13 +513,12 @@ END_TEST
 START_TEST(two_block_issue_cases)
 {
     const double eps = 0.02, in = 1.0 - 1e-9, out = 1.0 + 1e-9;
-    struct { double z1, z2, a1, a2, f1, f2; } rows[] = {
-        {0.0, eps * in, 0.1, 0.1, -0.35, -0.25},
-        {0.0, eps * out, 0.1, 0.1, -0.35, -0.25},
-        {eps * in, 0.0, -0.3, 0.1, -0.5, -0.25},
-        {eps * out, 0.0, -0.3, 0.1, -0.5, -0.25},
-        {0.0, 0.0, 0.1, 0.1, -0.3, -0.2},
-        {0.0, 0.0, 0.4, -0.1, -0.5, -0.2},
+    struct {
+        double z1, z2, a1, a2, f1, f2;
+    } rows[] = {
+        {0.0, eps * in, 0.1, 0.1, -0.35, -0.25}, {0.0, eps * out, 0.1, 0.1, -0.35, -0.25},
+        {eps * in, 0.0, -0.3, 0.1, -0.5, -0.25}, {eps * out, 0.0, -0.3, 0.1, -0.5, -0.25},
+        {0.0, 0.0, 0.1, 0.1, -0.3, -0.2},        {0.0, 0.0, 0.4, -0.1, -0.5, -0.2},
         {0.006, -0.004, 0.1, 0.1, -0.5, -0.15},
     };
     for (size_t r = 0; r < sizeof rows / sizeof rows[0]; r++) {
@@ -524,8 +527,8 @@ START_TEST(two_block_issue_cases)
         double f[2];
         eval(ctx, 2, c.zdot, c.a_free, f, NULL);
         ck_assert_msg(fabs(f[0] - rows[r].f1) <= 1e-9 && fabs(f[1] - rows[r].f2) <= 1e-9,
-                      "row %zu: f = (%.17g, %.17g), expected (%g, %g)", r, f[0], f[1],
-                      rows[r].f1, rows[r].f2);
+                      "row %zu: f = (%.17g, %.17g), expected (%g, %g)", r, f[0], f[1], rows[r].f1,
+                      rows[r].f2);
         fricreg_ctx_free(ctx);
     }
 }
@@ -538,8 +541,8 @@ END_TEST
  * D(p, q) = f(q) - f(p), D(x-d, x+d) - (D(x+d, x+3d) + D(x-3d, x-d))/2 is zero to rounding on
  * each side's affine piece with one kink at x, and equals the jump if f jumps at x. Returns
  * max_i of its modulus. */
-static double jump_at(fricreg_ctx *ctx, const contact_case *c, int along_zdot, size_t j,
-                      double x, double d)
+static double jump_at(fricreg_ctx *ctx, const contact_case *c, int along_zdot, size_t j, double x,
+                      double d)
 {
     double zdot[MMAX], a[MMAX], f[4][MMAX], jump = 0.0;
     static const double at[4] = {-3.0, -1.0, 1.0, 3.0};
@@ -651,8 +654,8 @@ START_TEST(consistent_law_is_continuous_across_every_edge)
 END_TEST
 
 /* f and f_eq of case c with mun_j replaced by x (the context's bounds are set to it). */
-static void eval_with_bound(fricreg_ctx *ctx, const contact_case *c, size_t j, double x,
-                            double f[], double f_eq[])
+static void eval_with_bound(fricreg_ctx *ctx, const contact_case *c, size_t j, double x, double f[],
+                            double f_eq[])
 {
     double mun[MMAX];
     memcpy(mun, c->mun, c->m * sizeof *mun);
@@ -691,8 +694,8 @@ static double jump_along_bound(fricreg_ctx *ctx, const contact_case *c, size_t j
     for (int k = 0; k < 4; k++)
         eval_with_bound(ctx, c, j, x + at[k] * d, f[k], f_eq);
     for (size_t i = 0; i < c->m; i++)
-        jump = fmax(jump, fabs((f[2][i] - f[1][i]) -
-                               0.5 * ((f[3][i] - f[2][i]) + (f[1][i] - f[0][i]))));
+        jump = fmax(jump,
+                    fabs((f[2][i] - f[1][i]) - 0.5 * ((f[3][i] - f[2][i]) + (f[1][i] - f[0][i]))));
     return jump;
 }
 
@@ -821,8 +824,7 @@ static int check_tangent(fricreg_ctx *ctx, const contact_case *c, int law, doubl
         for (size_t j = 0; j < m; j++) {
             double zdot[MMAX], a[MMAX], fp[MMAX], fm[MMAX], fpp[MMAX], fmm[MMAX];
             double *x = which == 0 ? zdot : a;
-            double h = which == 0 ? 1e-6 * c->eps
-                                  : 1e-6 * (c->W[j * m + j] * c->mun[j] + 0.1);
+            double h = which == 0 ? 1e-6 * c->eps : 1e-6 * (c->W[j * m + j] * c->mun[j] + 0.1);
             memcpy(zdot, c->zdot, m * sizeof *zdot);
             memcpy(a, c->a_free, m * sizeof *a);
             double x0 = x[j];
@@ -870,9 +872,9 @@ static int check_tangent(fricreg_ctx *ctx, const contact_case *c, int law, doubl
  * matches central differences away from kinks, and most columns are away from kinks. */
 START_TEST(tangent_matches_central_differences)
 {
-    static const int laws[6] = {FRICREG_LAW_QUINN, FRICREG_LAW_KARNOPP, FRICREG_LAW_FORCE_BALANCE,
-                                FRICREG_LAW_COULOMB, FRICREG_LAW_VELOCITY_LIMITED,
-                                FRICREG_LAW_TANH};
+    static const int laws[6] = {
+        FRICREG_LAW_QUINN,   FRICREG_LAW_KARNOPP,          FRICREG_LAW_FORCE_BALANCE,
+        FRICREG_LAW_COULOMB, FRICREG_LAW_VELOCITY_LIMITED, FRICREG_LAW_TANH};
     static const int partitions[2] = {FRICREG_PARTITION_CONSISTENT, FRICREG_PARTITION_PAPER};
     rng_state = 0x5eed0006u;
     for (int l = 0; l < 6; l++)
@@ -931,8 +933,8 @@ START_TEST(tangent_closed_form_two_blocks)
 }
 END_TEST
 
-static void expect_tangent_failure(fricreg_ctx *ctx, size_t m, double Tz[], double Ta[],
-                                   int code, const char *what)
+static void expect_tangent_failure(fricreg_ctx *ctx, size_t m, double Tz[], double Ta[], int code,
+                                   const char *what)
 {
     double *outs[2] = {Tz, Ta};
     for (int k = 0; k < 2; k++)
@@ -977,7 +979,9 @@ START_TEST(tangent_errors)
         eval(ctx, 2, c.zdot, c.a_free, f, NULL);
         ck_assert_int_eq(fricreg_ctx_tangent(ctx, 2, Tz, Ta), FRICREG_OK);
         switch (setter) {
-        case 0: ck_assert_int_eq(fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, 0.02), FRICREG_OK); break;
+        case 0:
+            ck_assert_int_eq(fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, 0.02), FRICREG_OK);
+            break;
         case 1: ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, 2, c.mun), FRICREG_OK); break;
         case 2: ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, 2, c.W), FRICREG_OK); break;
         case 3: ck_assert_int_eq(fricreg_ctx_set_coupling_diagonal(ctx, 2, w), FRICREG_OK); break;
@@ -992,7 +996,6 @@ START_TEST(tangent_errors)
     fricreg_ctx_free(ctx);
 }
 END_TEST
-
 
 /* Column j of the one-sided difference (f(x + side h e_j) - f(x)) / (side h) along zdot
  * (which = 0) or a_free (which = 1). */
@@ -1013,8 +1016,8 @@ static void one_sided(fricreg_ctx *ctx, const contact_case *c, int which, size_t
  * side given for each column (+1 or -1), to 1e-6; the other side differs, so each case is a
  * real kink. The two blocks, all values dyadic, so the kinks are hit exactly. */
 static void expect_one_sided(const contact_case *c, const double want_dz[4],
-                             const double want_da[4], const int side_dz[2],
-                             const int side_da[2], const char *what)
+                             const double want_da[4], const int side_dz[2], const int side_da[2],
+                             const char *what)
 {
     fricreg_ctx *ctx = make_ctx(c, FRICREG_LAW_QUINN, FRICREG_PARTITION_CONSISTENT);
     double f[2], T[2][4];
@@ -1110,8 +1113,8 @@ START_TEST(tangent_on_a_bound_at_rest_is_one_adjacent_piece)
     int is_ahead = fabs(Tz[1] - ahead[0]) + fabs(Tz[3] - ahead[1]) <= 1e-5;
     int is_behind = fabs(Tz[1] - behind[0]) + fabs(Tz[3] - behind[1]) <= 1e-5;
     ck_assert_msg(is_ahead || is_behind,
-                  "column zdot_2 = (%g, %g); pieces (%g, %g) ahead, (%g, %g) behind", Tz[1],
-                  Tz[3], ahead[0], ahead[1], behind[0], behind[1]);
+                  "column zdot_2 = (%g, %g); pieces (%g, %g) ahead, (%g, %g) behind", Tz[1], Tz[3],
+                  ahead[0], ahead[1], behind[0], behind[1]);
     fricreg_ctx_free(ctx);
 }
 END_TEST

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_exact.c — the semi-analytical ("exact") solution of the oscillator, Eq. (5), under
  * classical Coulomb friction (1) with force balance at rest (2) (fricreg_exact.h).
  *
@@ -23,14 +24,13 @@
 
 /* ---------------------------------------------------------------- helpers */
 
-static fricreg_exact *solve(double a, double omega, double mun, double x0, double v0,
-                            double t_end)
+static fricreg_exact *solve(double a, double omega, double mun, double x0, double v0, double t_end)
 {
     fricreg_exact *ex = NULL;
     int status = fricreg_exact_solve(a, omega, mun, x0, v0, t_end, &ex);
     ck_assert_msg(status == FRICREG_OK && ex != NULL,
-                  "solve(a=%g, omega=%g, mun=%g, x0=%g, v0=%g, t_end=%g): status %d", a, omega,
-                  mun, x0, v0, t_end, status);
+                  "solve(a=%g, omega=%g, mun=%g, x0=%g, v0=%g, t_end=%g): status %d", a, omega, mun,
+                  x0, v0, t_end, status);
     return ex;
 }
 
@@ -144,8 +144,7 @@ static double energy(const fricreg_exact *ex, double t)
 /* Largest relative gap over all whole cycles between the solver's D_k and the energy balance
  * of (5): d/dt (x^2 + x'^2)/2 = x' (f + a sin(omega t)) and D = -∫ x' f dt give
  * D_k = W_k - (E((k+1)T) - E(kT)). W_k by forcing_work, split at the switches or not. */
-static double balance_gap(const fricreg_exact *ex, double a, double omega, int split,
-                          double tol)
+static double balance_gap(const fricreg_exact *ex, double a, double omega, int split, double tol)
 {
     struct forcing fo = {ex, a, omega};
     struct switches sw = get_switches(ex);
@@ -303,7 +302,9 @@ END_TEST
  * (it grows its phase list until memory runs out): hence this TCase's short timeout. */
 START_TEST(test_rest_on_the_friction_bound)
 {
-    static const double cases[][3] = {{1.0, 1.0, 0}, {0.731, -0.731, 0}, {0.0, 0.0, 0},
+    static const double cases[][3] = {{1.0, 1.0, 0},
+                                      {0.731, -0.731, 0},
+                                      {0.0, 0.0, 0},
                                       {1.0, 3.0, 1}};
     const double mun = cases[_i][0], x0 = cases[_i][1];
     const size_t switches = (size_t)cases[_i][2];
@@ -356,8 +357,8 @@ START_TEST(test_breakaway_at_start)
     fricreg_exact *ex = solve(2.0 * sign, 0.5, 1.0, -1.0 * sign, 0.0, 6.0);
     struct switches sw = get_switches(ex);
     ck_assert_uint_ge(sw.n, 1);
-    ck_assert_msg(sw.t[0] > 0.0, "a switch at t = %g (stick %d) before the first stop",
-                  sw.t[0], sw.stick[0]);
+    ck_assert_msg(sw.t[0] > 0.0, "a switch at t = %g (stick %d) before the first stop", sw.t[0],
+                  sw.stick[0]);
     ck_assert_double_eq_tol(sw.t[0], 4.0 * PI / 3.0, 1e-14);
     ck_assert_int_eq(sw.stick[0], 1);
     ck_assert_double_eq_tol(position(ex, sw.t[0]), sign * (2.0 * sqrt(3.0) - 1.0), 1e-14);
@@ -409,14 +410,15 @@ END_TEST
  * 40 cycles each. Measured gaps 2.5e-14, 5.5e-14, 9.0e-15, 1.0e-14; asserted below 1e-12. */
 START_TEST(test_energy_balance_other_regimes)
 {
-    static const double cases[][4] = {
-        {3.0, 1.5, 1.0, 0.0}, {1.2, 1.0, 1.0, 0.0}, {2.0, 1.0, 1.0, 0.0}, {2.0, 1.0, 1.0, -2.385}};
+    static const double cases[][4] = {{3.0, 1.5, 1.0, 0.0},
+                                      {1.2, 1.0, 1.0, 0.0},
+                                      {2.0, 1.0, 1.0, 0.0},
+                                      {2.0, 1.0, 1.0, -2.385}};
     const double a = cases[_i][0], omega = cases[_i][1], mun = cases[_i][2], x0 = cases[_i][3];
     fricreg_exact *ex = solve(a, omega, mun, x0, 0.0, 40.0 * 2.0 * PI / omega);
     ck_assert_uint_eq(fricreg_exact_ncycles(ex), 40);
     double gap = balance_gap(ex, a, omega, 1, 1e-12);
-    ck_assert_msg(gap < 1e-12, "a = %g, omega = %g, x0 = %g: relative gap %.3g", a, omega, x0,
-                  gap);
+    ck_assert_msg(gap < 1e-12, "a = %g, omega = %g, x0 = %g: relative gap %.3g", a, omega, x0, gap);
     fricreg_exact_free(ex);
 }
 END_TEST
@@ -545,15 +547,17 @@ START_TEST(test_switching_conditions)
         ck_assert_double_eq(v, 0.0);
         if (sw.stick[k]) {
             ck_assert_msg(!was_stick, "switch %zu at t = %.17g: two sticks in a row", k, t);
-            ck_assert_msg(fabs(v_before) < 1e-12, "switch %zu (stick) at t = %.17g: v = %g", k,
-                          t, v_before);
+            ck_assert_msg(fabs(v_before) < 1e-12, "switch %zu (stick) at t = %.17g: v = %g", k, t,
+                          v_before);
             ck_assert_double_le(fabs(feq), mun + 1e-12);
         } else if (was_stick) {
-            ck_assert_msg(fabs(fabs(feq) - mun) < 1e-12, "switch %zu (breakaway) at %.17g: "
-                          "|f_eq| - mun = %g", k, t, fabs(feq) - mun);
+            ck_assert_msg(fabs(fabs(feq) - mun) < 1e-12,
+                          "switch %zu (breakaway) at %.17g: "
+                          "|f_eq| - mun = %g",
+                          k, t, fabs(feq) - mun);
         } else {
-            ck_assert_msg(fabs(v_before) < 1e-12, "switch %zu (reversal) at t = %.17g: v = %g",
-                          k, t, v_before);
+            ck_assert_msg(fabs(v_before) < 1e-12, "switch %zu (reversal) at t = %.17g: v = %g", k,
+                          t, v_before);
             ck_assert_double_ge(fabs(feq), mun - 1e-12);
         }
         ck_assert_double_eq_tol(x, x_before, 1e-13 * (1.0 + fabs(x))); /* x is continuous */
@@ -589,7 +593,7 @@ END_TEST
  * of a switch are skipped. Includes resonance (secular form) and its neighbour 1 - 1e-3. */
 START_TEST(test_closed_form_satisfies_equation_5)
 {
-    static const double cases[][3] = {{2.0, 0.5, 1.0}, {3.0, 1.5, 1.0}, {2.0, 1.0, 1.0},
+    static const double cases[][3] = {{2.0, 0.5, 1.0}, {3.0, 1.5, 1.0},   {2.0, 1.0, 1.0},
                                       {1.2, 1.0, 1.0}, {1.2, 0.999, 1.0}, {2.385, 0.7318, 0.4137}};
     const double a = cases[_i][0], omega = cases[_i][1], mun = cases[_i][2], h = 1e-4;
     const double t_end = 5.0 * 2.0 * PI / omega;
@@ -744,15 +748,24 @@ START_TEST(test_solve_rejects_bad_input)
         double a, omega, mun, x0, v0, t_end;
         int status;
     } cases[] = {
-        {NAN, 1, 1, 0, 0, 10, NONFIN},      {1, NAN, 1, 0, 0, 10, NONFIN},
-        {1, 1, NAN, 0, 0, 10, NONFIN},      {1, 1, 1, NAN, 0, 10, NONFIN},
-        {1, 1, 1, 0, NAN, 10, NONFIN},      {1, 1, 1, 0, 0, NAN, NONFIN},
-        {INFINITY, 1, 1, 0, 0, 10, NONFIN}, {1, -INFINITY, 1, 0, 0, 10, NONFIN},
-        {1, 1, INFINITY, 0, 0, 10, NONFIN}, {1, 1, 1, -INFINITY, 0, 10, NONFIN},
-        {1, 1, 1, 0, INFINITY, 10, NONFIN}, {1, 1, 1, 0, 0, INFINITY, NONFIN},
-        {1, 0, 1, 0, 0, 10, INVAL},         {1, -0.5, 1, 0, 0, 10, INVAL},
-        {1, 1, -1e-300, 0, 0, 10, INVAL},   {1, 1, -1, 0, 0, 10, INVAL},
-        {1, 1, 1, 0, 0, 0, INVAL},          {1, 1, 1, 0, 0, -2.385, INVAL},
+        {NAN, 1, 1, 0, 0, 10, NONFIN},
+        {1, NAN, 1, 0, 0, 10, NONFIN},
+        {1, 1, NAN, 0, 0, 10, NONFIN},
+        {1, 1, 1, NAN, 0, 10, NONFIN},
+        {1, 1, 1, 0, NAN, 10, NONFIN},
+        {1, 1, 1, 0, 0, NAN, NONFIN},
+        {INFINITY, 1, 1, 0, 0, 10, NONFIN},
+        {1, -INFINITY, 1, 0, 0, 10, NONFIN},
+        {1, 1, INFINITY, 0, 0, 10, NONFIN},
+        {1, 1, 1, -INFINITY, 0, 10, NONFIN},
+        {1, 1, 1, 0, INFINITY, 10, NONFIN},
+        {1, 1, 1, 0, 0, INFINITY, NONFIN},
+        {1, 0, 1, 0, 0, 10, INVAL},
+        {1, -0.5, 1, 0, 0, 10, INVAL},
+        {1, 1, -1e-300, 0, 0, 10, INVAL},
+        {1, 1, -1, 0, 0, 10, INVAL},
+        {1, 1, 1, 0, 0, 0, INVAL},
+        {1, 1, 1, 0, 0, -2.385, INVAL},
         {1, 1, 1, 0, 0, 1e6 * 2 * PI * 1.000001, INVAL}, /* just over 10^6 cycles */
         {1, 0.25, 1, 0, 0, 1e6 * 8 * PI * 1.000001, INVAL},
         {1, 1, 1, 0, 0, 1e300, INVAL},
@@ -846,12 +859,13 @@ START_TEST(test_stick_fraction_rejects_bad_interval)
     double frac = -2.385;
     ck_assert_int_eq(fricreg_exact_stick_fraction(NULL, 0.0, 1.0, &frac), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_exact_stick_fraction(ex, 0.0, 1.0, NULL), FRICREG_ENULL);
-    static const double bad[][2] = {{-1e-300, 1.0}, {1.0, 1.0},  {2.0, 1.0},
-                                    {0.0, 30.000000000001}, {NAN, 1.0}, {0.0, NAN},
-                                    {-INFINITY, 1.0}, {0.0, INFINITY}};
+    static const double bad[][2] = {{-1e-300, 1.0},         {1.0, 1.0},     {2.0, 1.0},
+                                    {0.0, 30.000000000001}, {NAN, 1.0},     {0.0, NAN},
+                                    {-INFINITY, 1.0},       {0.0, INFINITY}};
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++)
         ck_assert_msg(fricreg_exact_stick_fraction(ex, bad[i][0], bad[i][1], &frac) ==
-                          FRICREG_EINVAL, "interval %zu", i);
+                          FRICREG_EINVAL,
+                      "interval %zu", i);
     ck_assert_double_eq(frac, -2.385);
     /* From rest at the origin the body sticks until 2 sin(t/2) = 1, t = pi/3 (closed form). */
     ck_assert_int_eq(fricreg_exact_stick_fraction(ex, 0.0, 2.0, &frac), FRICREG_OK);
@@ -940,8 +954,10 @@ static void assert_same_solution(const fricreg_exact *p, const fricreg_exact *q)
  * period: ncycles = k and the time reached is k T exactly. */
 START_TEST(test_create_run_equals_solve)
 {
-    static const double cases[][5] = {{2.0, 0.5, 1.0, 0.0, 0.0}, {3.0, 1.5, 1.0, 0.0, 0.0},
-                                      {1.2, 1.0, 1.0, -2.385, 0.0}, {0.0, 1.0, 0.731, 0.3, 1.7}};
+    static const double cases[][5] = {{2.0, 0.5, 1.0, 0.0, 0.0},
+                                      {3.0, 1.5, 1.0, 0.0, 0.0},
+                                      {1.2, 1.0, 1.0, -2.385, 0.0},
+                                      {0.0, 1.0, 0.731, 0.3, 1.7}};
     const double *c = cases[_i];
     const int cycles = 7;
     fricreg_exact *ex = create(c[0], c[1], c[2], c[3], c[4]);
@@ -1054,13 +1070,13 @@ START_TEST(test_create_rejects_bad_input)
         double a, omega, mun, x0, v0;
         int status;
     } cases[] = {
-        {NAN, 1, 1, 0, 0, FRICREG_ENONFINITE},  {1, NAN, 1, 0, 0, FRICREG_ENONFINITE},
-        {1, 1, NAN, 0, 0, FRICREG_ENONFINITE},  {1, 1, 1, NAN, 0, FRICREG_ENONFINITE},
-        {1, 1, 1, 0, NAN, FRICREG_ENONFINITE},  {-INFINITY, 1, 1, 0, 0, FRICREG_ENONFINITE},
+        {NAN, 1, 1, 0, 0, FRICREG_ENONFINITE},      {1, NAN, 1, 0, 0, FRICREG_ENONFINITE},
+        {1, 1, NAN, 0, 0, FRICREG_ENONFINITE},      {1, 1, 1, NAN, 0, FRICREG_ENONFINITE},
+        {1, 1, 1, 0, NAN, FRICREG_ENONFINITE},      {-INFINITY, 1, 1, 0, 0, FRICREG_ENONFINITE},
         {1, INFINITY, 1, 0, 0, FRICREG_ENONFINITE}, {1, 1, INFINITY, 0, 0, FRICREG_ENONFINITE},
         {1, 1, 1, INFINITY, 0, FRICREG_ENONFINITE}, {1, 1, 1, 0, -INFINITY, FRICREG_ENONFINITE},
-        {1, 0, -1, 0, NAN, FRICREG_ENONFINITE}, {1, 0, 1, 0, 0, FRICREG_EINVAL},
-        {1, -0.5, 1, 0, 0, FRICREG_EINVAL},     {1, 1, -1e-300, 0, 0, FRICREG_EINVAL},
+        {1, 0, -1, 0, NAN, FRICREG_ENONFINITE},     {1, 0, 1, 0, 0, FRICREG_EINVAL},
+        {1, -0.5, 1, 0, 0, FRICREG_EINVAL},         {1, 1, -1e-300, 0, 0, FRICREG_EINVAL},
         {1, 1, -2.385, 0, 0, FRICREG_EINVAL},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
@@ -1103,10 +1119,12 @@ START_TEST(test_run_messages)
     expect_run_failure(ex, FRICREG_ENONFINITE, 0, -INFINITY, "run: t_end = -inf is not finite");
     expect_run_failure(ex, FRICREG_EINVAL, 0, 0.0, "run: t_end = 0 must be > 0");
     expect_run_failure(ex, FRICREG_EINVAL, 0, -2.385, "run: t_end = -2.385 must be > 0");
-    expect_run_failure(ex, FRICREG_EINVAL, 0, 1e300, "run: t_end = 1e+300 spans 7.95775e+298 "
+    expect_run_failure(ex, FRICREG_EINVAL, 0, 1e300,
+                       "run: t_end = 1e+300 spans 7.95775e+298 "
                        "forcing cycles of period 12.5664, more than 10^6");
     /* just over 10^6 cycles: 4 pi 10^6 (1 + 1e-6) */
-    expect_run_failure(ex, FRICREG_EINVAL, 0, 12566383.3, "run: t_end = 1.25664e+07 spans "
+    expect_run_failure(ex, FRICREG_EINVAL, 0, 12566383.3,
+                       "run: t_end = 1.25664e+07 spans "
                        "1e+06 forcing cycles of period 12.5664, more than 10^6");
     expect_run_failure(ex, FRICREG_EINVAL, 1, 0, "run_cycles: cycles = 0 must be from 1 to 10^6");
     expect_run_failure(ex, FRICREG_EINVAL, 1, -3, "run_cycles: cycles = -3 must be from 1 to 10^6");

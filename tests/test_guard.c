@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_guard.c — the step guard's sweep: no accepted fixed step leaves a stick or puts energy in.
  *
  * Every explicit fixed-step stepper (rk2, rk4, rkf45, rkck, rk8pd, rk4-gsl) x every law x the
@@ -50,29 +51,71 @@ struct config {
 
 static const struct config configs[] = {
     {"oscillator eps 0.02", FRICREG_SYSTEM_OSCILLATOR, 1, 0.02, 0, {0}, {0}, 2},
-    {"oscillator mun 3, x0 7.3, eps 0.05", FRICREG_SYSTEM_OSCILLATOR, 1, 0.05, 2,
-     {FRICREG_PARAM_MUN, FRICREG_PARAM_X0}, {3.0, 7.3}, 2},
+    {"oscillator mun 3, x0 7.3, eps 0.05",
+     FRICREG_SYSTEM_OSCILLATOR,
+     1,
+     0.05,
+     2,
+     {FRICREG_PARAM_MUN, FRICREG_PARAM_X0},
+     {3.0, 7.3},
+     2},
     {"oscillator, paper's eps", FRICREG_SYSTEM_OSCILLATOR, 1, 0.0, 0, {0}, {0}, 2},
     {"chain n 8, eps 0.002", FRICREG_SYSTEM_CHAIN, 1, 0.002, 1, {FRICREG_PARAM_N}, {8.0}, 1},
-    {"two blocks consistent eps 0.02", FRICREG_SYSTEM_TWOBLOCK, FRICREG_PARTITION_CONSISTENT,
-     0.02, 0, {0}, {0}, 2},
-    {"two blocks paper eps 0.02", FRICREG_SYSTEM_TWOBLOCK, FRICREG_PARTITION_PAPER, 0.02, 0,
-     {0}, {0}, 2},
-    {"two blocks consistent mu (10, 5)", FRICREG_SYSTEM_TWOBLOCK, FRICREG_PARTITION_CONSISTENT,
-     0.02, 2, {FRICREG_PARAM_MU1, FRICREG_PARAM_MU2}, {10.0, 5.0}, 2},
-    {"two blocks paper mu (10, 5)", FRICREG_SYSTEM_TWOBLOCK, FRICREG_PARTITION_PAPER, 0.02, 2,
-     {FRICREG_PARAM_MU1, FRICREG_PARAM_MU2}, {10.0, 5.0}, 2},
-    {"two blocks consistent, paper's eps", FRICREG_SYSTEM_TWOBLOCK,
-     FRICREG_PARTITION_CONSISTENT, 0.0, 0, {0}, {0}, 2},
-    {"two blocks paper, paper's eps", FRICREG_SYSTEM_TWOBLOCK, FRICREG_PARTITION_PAPER, 0.0, 0,
-     {0}, {0}, 2},
+    {"two blocks consistent eps 0.02",
+     FRICREG_SYSTEM_TWOBLOCK,
+     FRICREG_PARTITION_CONSISTENT,
+     0.02,
+     0,
+     {0},
+     {0},
+     2},
+    {"two blocks paper eps 0.02",
+     FRICREG_SYSTEM_TWOBLOCK,
+     FRICREG_PARTITION_PAPER,
+     0.02,
+     0,
+     {0},
+     {0},
+     2},
+    {"two blocks consistent mu (10, 5)",
+     FRICREG_SYSTEM_TWOBLOCK,
+     FRICREG_PARTITION_CONSISTENT,
+     0.02,
+     2,
+     {FRICREG_PARAM_MU1, FRICREG_PARAM_MU2},
+     {10.0, 5.0},
+     2},
+    {"two blocks paper mu (10, 5)",
+     FRICREG_SYSTEM_TWOBLOCK,
+     FRICREG_PARTITION_PAPER,
+     0.02,
+     2,
+     {FRICREG_PARAM_MU1, FRICREG_PARAM_MU2},
+     {10.0, 5.0},
+     2},
+    {"two blocks consistent, paper's eps",
+     FRICREG_SYSTEM_TWOBLOCK,
+     FRICREG_PARTITION_CONSISTENT,
+     0.0,
+     0,
+     {0},
+     {0},
+     2},
+    {"two blocks paper, paper's eps",
+     FRICREG_SYSTEM_TWOBLOCK,
+     FRICREG_PARTITION_PAPER,
+     0.0,
+     0,
+     {0},
+     {0},
+     2},
     /* long mode only */
     {"chain n 32, eps 0.004", FRICREG_SYSTEM_CHAIN, 1, 0.004, 0, {0}, {0}, 2},
 };
 #define NSHORT 10
 
-static const int steppers[] = {FRICREG_INT_RK2,   FRICREG_INT_RK4,   FRICREG_INT_RKF45,
-                               FRICREG_INT_RKCK,  FRICREG_INT_RK8PD, FRICREG_INT_RK4_GSL};
+static const int steppers[] = {FRICREG_INT_RK2,  FRICREG_INT_RK4,   FRICREG_INT_RKF45,
+                               FRICREG_INT_RKCK, FRICREG_INT_RK8PD, FRICREG_INT_RK4_GSL};
 #define NSTEPPERS 6
 #define NLAWS 6
 
@@ -121,8 +164,8 @@ static double integrand(const struct watch *w, double t, const double x[], const
     return -w->a * om * cos(om * t) * x[0];
 }
 
-static int observer(void *user, double t, size_t ndof, const double x[], const double v[],
-                    size_t m, const double f[], const double f_eq[])
+static int observer(void *user, double t, size_t ndof, const double x[], const double v[], size_t m,
+                    const double f[], const double f_eq[])
 {
     (void)m, (void)f, (void)f_eq;
     struct watch *w = user;
@@ -261,7 +304,7 @@ static const char *judge(const struct config *c, int law, const struct outcome *
 }
 
 static const double short_multipliers[] = {0.5, 0.75, 0.9, 1.0, 1.1, 1.25, 1.5};
-static const double long_multipliers[] = {0.5, 0.6, 0.7, 0.8, 0.9, 0.95, 1.0,
+static const double long_multipliers[] = {0.5,  0.6, 0.7, 0.8, 0.9, 0.95, 1.0,
                                           1.05, 1.1, 1.2, 1.3, 1.4, 1.5};
 
 START_TEST(no_false_accept)

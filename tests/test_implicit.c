@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_implicit.c — GSL's implicit steppers on the reference systems at a tiny eps, where
  * the stick zone's slope 2 mun/eps = 2e6 makes the problem stiff and the drivers' Jacobian
  * (src/sim_jacobian.c: the context's exact tangent) decides whether Newton converges.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_integrator.c — the real-axis stability bounds behind FRICREG_ESTEP.
  *
  * src/integrator.c keeps, per explicit GSL stepper, the largest stable dt*lambda on the negative
@@ -24,19 +25,17 @@
 #include "fricreg_sim.h"
 
 struct explicit_row {
-    int id;                 /* enum fricreg_integrator */
-    double table_bound;     /* src/integrator.c, in fricreg's dt (classical step for rk4) */
-    double measured;        /* src/integrator.c's comment: the measured value */
+    int id;                  /* enum fricreg_integrator */
+    double table_bound;      /* src/integrator.c, in fricreg's dt (classical step for rk4) */
+    double measured;         /* src/integrator.c's comment: the measured value */
     double gsl_steps_per_dt; /* GSL step length per fricreg dt: 2 for rk4 (step doubling) */
-    double imag_bound;      /* src/integrator.c: dt*omega with amplification <= 1 + 1e-4 */
-    double guard_bound;     /* src/integrator.c: the stick-zone bound the guard applies */
+    double imag_bound;       /* src/integrator.c: dt*omega with amplification <= 1 + 1e-4 */
+    double guard_bound;      /* src/integrator.c: the stick-zone bound the guard applies */
 };
 
 static const struct explicit_row rows[] = {
-    {FRICREG_INT_RK2, 2.5, 2.51, 1.0, 1.73, 2.5},
-    {FRICREG_INT_RK4, 2.78, 2.785, 2.0, 2.82, 2.78},
-    {FRICREG_INT_RKF45, 3.6, 3.67, 1.0, 0.7, 2.2},
-    {FRICREG_INT_RKCK, 3.7, 3.73, 1.0, 0.88, 3.7},
+    {FRICREG_INT_RK2, 2.5, 2.51, 1.0, 1.73, 2.5},  {FRICREG_INT_RK4, 2.78, 2.785, 2.0, 2.82, 2.78},
+    {FRICREG_INT_RKF45, 3.6, 3.67, 1.0, 0.7, 2.2}, {FRICREG_INT_RKCK, 3.7, 3.73, 1.0, 0.88, 3.7},
     {FRICREG_INT_RK8PD, 5.1, 5.16, 1.0, 3.7, 5.1},
 };
 #define NROWS ((int)(sizeof rows / sizeof rows[0]))
@@ -134,8 +133,8 @@ START_TEST(test_table_bound_is_stable)
     for (int k = 1; k <= 400; k++) {
         double z = r->table_bound * k / 400.0;
         double R = stability_function(r->id, z, r->gsl_steps_per_dt);
-        ck_assert_msg(fabs(R) <= 1.0, "%s: |R(-%g)| = %.6g > 1", fricreg_integrator_name(r->id),
-                      z, fabs(R));
+        ck_assert_msg(fabs(R) <= 1.0, "%s: |R(-%g)| = %.6g > 1", fricreg_integrator_name(r->id), z,
+                      fabs(R));
     }
 }
 END_TEST
@@ -150,8 +149,7 @@ START_TEST(test_measured_bound_is_tight)
     double above = stability_function(r->id, r->measured + 0.01, r->gsl_steps_per_dt);
     double table_above = stability_function(r->id, 1.03 * r->table_bound, r->gsl_steps_per_dt);
     ck_assert_msg(fabs(at) <= 1.0, "%s: |R(-%g)| = %.6g", name, r->measured, fabs(at));
-    ck_assert_msg(fabs(above) > 1.0, "%s: |R(-%g)| = %.6g", name, r->measured + 0.01,
-                  fabs(above));
+    ck_assert_msg(fabs(above) > 1.0, "%s: |R(-%g)| = %.6g", name, r->measured + 0.01, fabs(above));
     ck_assert_msg(fabs(table_above) > 1.0, "%s: |R(-%g)| = %.6g", name, 1.03 * r->table_bound,
                   fabs(table_above));
 }
@@ -188,8 +186,7 @@ static fricreg_sim *stuck_oscillator(int id, double z)
     ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_X0, STUCK_X0), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_V0, STUCK_V0), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_QUINN, STUCK_EPS), FRICREG_OK);
-    ck_assert_int_eq(fricreg_sim_set_integrator(sim, id, z / STUCK_LAMBDA, 0.0, 0.0),
-                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, id, z / STUCK_LAMBDA, 0.0, 0.0), FRICREG_OK);
     return sim;
 }
 

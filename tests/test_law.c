@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_law.c — Check suite for the friction laws: fricreg_law_eval, fricreg_law_eval_batch,
  * fricreg_law_name, fricreg_law_from_name, fricreg_strerror and the version functions.
  *
@@ -29,8 +30,8 @@ static double law(int which, double v, double f_eq, double mun, double eps)
 {
     double f = SENTINEL;
     int status = fricreg_law_eval(which, v, f_eq, mun, eps, &f);
-    ck_assert_msg(status == FRICREG_OK, "law %d at v=%g f_eq=%g mun=%g eps=%g: status %d",
-                  which, v, f_eq, mun, eps, status);
+    ck_assert_msg(status == FRICREG_OK, "law %d at v=%g f_eq=%g mun=%g eps=%g: status %d", which, v,
+                  f_eq, mun, eps, status);
     return f;
 }
 
@@ -65,9 +66,9 @@ START_TEST(force_balance_branches)
     ck_assert_double_eq_tol(law(L, 0.0, 1.137, MUN, EPS), 1.137, TOL);   /* |f_eq| < mun */
     ck_assert_double_eq_tol(law(L, 0.0, -1.913, MUN, EPS), -1.913, TOL); /* |f_eq| < mun */
     ck_assert_double_eq(law(L, 0.0, 0.0, MUN, EPS), 0.0);
-    ck_assert_double_eq(law(L, 0.0, MUN, MUN, EPS), MUN);   /* |f_eq| = mun: sat(1) = 1 */
+    ck_assert_double_eq(law(L, 0.0, MUN, MUN, EPS), MUN); /* |f_eq| = mun: sat(1) = 1 */
     ck_assert_double_eq(law(L, 0.0, -MUN, MUN, EPS), -MUN);
-    ck_assert_double_eq(law(L, 0.0, 4.71, MUN, EPS), MUN);  /* |f_eq| > mun */
+    ck_assert_double_eq(law(L, 0.0, 4.71, MUN, EPS), MUN); /* |f_eq| > mun */
     ck_assert_double_eq(law(L, 0.0, -9.3, MUN, EPS), -MUN);
     ck_assert_double_eq(law(L, -0.0, 4.71, MUN, EPS), MUN); /* -0 is v == 0 */
     /* Off v = 0, (1) whatever f_eq is. */
@@ -191,8 +192,8 @@ END_TEST
 START_TEST(quinn_feq_at_bound_and_zone_edges)
 {
     const int L = FRICREG_LAW_QUINN;
-    ck_assert_double_eq(law(L, 0.0, MUN, MUN, EPS), MUN); /* lower edge, = (2) */
-    ck_assert_double_eq(law(L, EPS, MUN, MUN, EPS), -MUN); /* upper edge */
+    ck_assert_double_eq(law(L, 0.0, MUN, MUN, EPS), MUN);       /* lower edge, = (2) */
+    ck_assert_double_eq(law(L, EPS, MUN, MUN, EPS), -MUN);      /* upper edge */
     ck_assert_double_eq(law(L, 0.5 * EPS, MUN, MUN, EPS), 0.0); /* centre v = xi */
     ck_assert_double_eq_tol(law(L, 0.0137, MUN, MUN, EPS), 1.491032831737346, TOL);
     ck_assert_double_eq_tol(law(L, 0.0365, MUN, MUN, EPS), 0.0032626538987688097, TOL);
@@ -269,10 +270,9 @@ START_TEST(quinn_lipschitz_and_bounded)
             double f = law(L, v, feq, MUN, EPS);
             double fv = law(L, v + hv, feq, MUN, EPS);
             double ff = law(L, v, feq + hf, MUN, EPS);
-            ck_assert_msg(fabs(fv - f) <= lip_v * hv + 1e-13, "jump in v at v=%.17g f_eq=%.17g",
-                          v, feq);
-            ck_assert_msg(fabs(ff - f) <= hf + 1e-13, "jump in f_eq at v=%.17g f_eq=%.17g", v,
+            ck_assert_msg(fabs(fv - f) <= lip_v * hv + 1e-13, "jump in v at v=%.17g f_eq=%.17g", v,
                           feq);
+            ck_assert_msg(fabs(ff - f) <= hf + 1e-13, "jump in f_eq at v=%.17g f_eq=%.17g", v, feq);
             ck_assert_msg(fabs(f) <= MUN, "|f| > mun at v=%.17g f_eq=%.17g", v, feq);
         }
 }
@@ -324,8 +324,8 @@ END_TEST
  * and above the bound; mun = 0 included. */
 static void fill_grid(double v[], double feq[], double mun[])
 {
-    const double vs[NV] = {-0.3, -EPS, -0.0604, -0.0191, -1e-300, 0.0,
-                           0.0072, 0.0213, 0.0540, EPS, 0.412};
+    const double vs[NV] = {-0.3,   -EPS,   -0.0604, -0.0191, -1e-300, 0.0,
+                           0.0072, 0.0213, 0.0540,  EPS,     0.412};
     const double fs[NF] = {-9.3, -MUN, -1.913, 0.0, 1.137, MUN, 4.71};
     const double ms[NM] = {0.0, 0.731, MUN};
     size_t n = 0;
@@ -348,8 +348,9 @@ START_TEST(batch_equals_scalar_bitwise)
                          FRICREG_OK);
         for (size_t n = 0; n < NGRID; n++) {
             double s = law(all_laws[l], v[n], feq[n], mun[n], EPS);
-            ck_assert_msg(same_bits(f[n], s), "law %d v=%g f_eq=%g mun=%g: batch %.17g scalar %.17g",
-                          all_laws[l], v[n], feq[n], mun[n], f[n], s);
+            ck_assert_msg(same_bits(f[n], s),
+                          "law %d v=%g f_eq=%g mun=%g: batch %.17g scalar %.17g", all_laws[l], v[n],
+                          feq[n], mun[n], f[n], s);
         }
     }
 }
@@ -389,10 +390,12 @@ START_TEST(batch_null_feq)
     }
     const int reading[] = {FRICREG_LAW_FORCE_BALANCE, FRICREG_LAW_KARNOPP, FRICREG_LAW_QUINN};
     for (size_t l = 0; l < 3; l++) {
-        for (size_t n = 0; n < NGRID; n++) f[n] = SENTINEL;
+        for (size_t n = 0; n < NGRID; n++)
+            f[n] = SENTINEL;
         ck_assert_int_eq(fricreg_law_eval_batch(reading[l], EPS, NGRID, v, NULL, mun, f),
                          FRICREG_ENULL);
-        for (size_t n = 0; n < NGRID; n++) ck_assert_double_eq(f[n], SENTINEL);
+        for (size_t n = 0; n < NGRID; n++)
+            ck_assert_double_eq(f[n], SENTINEL);
     }
 }
 END_TEST
@@ -475,14 +478,15 @@ END_TEST
 
 /* Batch call that must fail with `code` and leave all of f[0..NB) alone. */
 #define NB 4
-static void expect_batch_fail(int code, int which, double eps, const double v[],
-                              const double feq[], const double mun[])
+static void expect_batch_fail(int code, int which, double eps, const double v[], const double feq[],
+                              const double mun[])
 {
     double f[NB];
-    for (size_t n = 0; n < NB; n++) f[n] = SENTINEL;
+    for (size_t n = 0; n < NB; n++)
+        f[n] = SENTINEL;
     int status = fricreg_law_eval_batch(which, eps, NB, v, feq, mun, f);
-    ck_assert_msg(status == code, "batch law %d eps=%g: status %d, expected %d", which, eps,
-                  status, code);
+    ck_assert_msg(status == code, "batch law %d eps=%g: status %d, expected %d", which, eps, status,
+                  code);
     for (size_t n = 0; n < NB; n++)
         ck_assert_msg(f[n] == SENTINEL, "batch law %d: f[%zu] written on failure", which, n);
 }
@@ -576,8 +580,8 @@ static double uniform01(void)
 static double quinn_error(double f, double v, double f_eq, double mun, double eps)
 {
     double g = f_eq > mun ? mun : f_eq < -mun ? -mun : f_eq;
-    double c = 2.0 * v / eps, c_lo = fma(-c, eps, 2.0 * v) / eps; /* 2v is exact */
-    double p = c * mun, p_lo = fma(c, mun, -p) + c_lo * mun;     /* p + p_lo = c mun */
+    double c = 2.0 * v / eps, c_lo = fma(-c, eps, 2.0 * v) / eps;           /* 2v is exact */
+    double p = c * mun, p_lo = fma(c, mun, -p) + c_lo * mun;                /* p + p_lo = c mun */
     double d = g - p, gb = d - g, d_lo = (g - (d - gb)) + (-p - gb) - p_lo; /* d + d_lo */
     if (d + d_lo >= mun)
         return fabs(f - mun);
@@ -632,7 +636,7 @@ START_TEST(quinn_is_coulomb_from_the_band_edge_on)
         fricreg_law_eval(FRICREG_LAW_QUINN, -eps, -mun, mun, eps, &mirrored);
         fricreg_law_eval(FRICREG_LAW_QUINN, nextafter(eps, 1.0), 1.7 * mun, mun, eps, &past_edge);
         if (at_edge != -mun || mirrored != mun || past_edge != -mun) /* counted, so that */
-            first_wrong_eps = wrong++ ? first_wrong_eps : eps; /* one assertion, not 3e5 */
+            first_wrong_eps = wrong++ ? first_wrong_eps : eps;       /* one assertion, not 3e5 */
     }
     ck_assert_msg(wrong == 0, "%d of 100000 eps not (1) at the band edge, the first %.17g", wrong,
                   first_wrong_eps);
@@ -743,8 +747,8 @@ END_TEST
 /* Header: the six names, exactly as fricreg-sim's --law has taken them since 1.0. */
 START_TEST(law_names_are_the_cli_names)
 {
-    static const char *const expected[] = {"coulomb", "force-balance", "karnopp",
-                                           "velocity-limited", "tanh", "quinn"};
+    static const char *const expected[] = {"coulomb",          "force-balance", "karnopp",
+                                           "velocity-limited", "tanh",          "quinn"};
     for (size_t l = 0; l < N_LAWS; l++)
         ck_assert_str_eq(fricreg_law_name(all_laws[l]), expected[l]);
 }
@@ -774,12 +778,21 @@ START_TEST(law_names_unknown)
     static const int bad_laws[] = {0, -1, 7, 1000, INT32_MIN, INT32_MAX};
     for (size_t i = 0; i < sizeof bad_laws / sizeof bad_laws[0]; i++)
         ck_assert_ptr_null(fricreg_law_name(bad_laws[i]));
-    static const char *const bad_names[] = {"", "Quinn", "QUINN", "quinn ", " quinn", "quin",
-                                            "quinnn", "force_balance", "velocity limited",
-                                            "coulomb+force-balance", "rk4", "1", "6"};
+    static const char *const bad_names[] = {"",
+                                            "Quinn",
+                                            "QUINN",
+                                            "quinn ",
+                                            " quinn",
+                                            "quin",
+                                            "quinnn",
+                                            "force_balance",
+                                            "velocity limited",
+                                            "coulomb+force-balance",
+                                            "rk4",
+                                            "1",
+                                            "6"};
     for (size_t i = 0; i < sizeof bad_names / sizeof bad_names[0]; i++)
-        ck_assert_msg(fricreg_law_from_name(bad_names[i]) == 0, "\"%s\" named a law",
-                      bad_names[i]);
+        ck_assert_msg(fricreg_law_from_name(bad_names[i]) == 0, "\"%s\" named a law", bad_names[i]);
     ck_assert_int_eq(fricreg_law_from_name(NULL), 0);
 }
 END_TEST

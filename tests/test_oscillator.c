@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_oscillator.c — the 1-dof oscillator of Eq. (5) driven through fricreg_sim.
  *
  * x'' + x = f + a sin(omega t), mun = 1 unless noted, fixed-step classical RK4 and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_rk4_classic.c — fixed steps of FRICREG_INT_RK4: fricreg's own classical RK4 step type
  * (src/rk4_classic.c), against GSL's rk4 (FRICREG_INT_RK4_GSL).
  *
@@ -34,8 +35,7 @@ static fricreg_sim *stuck_oscillator(double dt)
     ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_X0, STUCK_X0), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_V0, STUCK_V0), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_QUINN, STUCK_EPS), FRICREG_OK);
-    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, dt, 0.0, 0.0),
-                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, dt, 0.0, 0.0), FRICREG_OK);
     return sim;
 }
 
@@ -108,8 +108,7 @@ static Suite *rk4_classic_suite(void)
 {
     Suite *s = suite_create("rk4_classic");
     TCase *tc = tcase_create("rk4_classic");
-    tcase_add_loop_test(tc, one_step_is_the_classical_polynomial, 0,
-                        (int)(sizeof Z / sizeof Z[0]));
+    tcase_add_loop_test(tc, one_step_is_the_classical_polynomial, 0, (int)(sizeof Z / sizeof Z[0]));
     tcase_add_test(tc, guard_uses_the_classical_bound);
     tcase_add_test(tc, names);
     tcase_add_test(tc, chain_matches_gsl_rk4_for_two_thirds_of_the_work);

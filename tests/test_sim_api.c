@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_sim_api.c — the contract of fricreg_sim.h: every error path, the step checks, the
  * observer, integrator names, and every GSL stepper on the paper's oscillator case.
  *
@@ -90,8 +91,8 @@ struct bad_param {
 
 /* Header, enum fricreg_param: which system reads which parameter and its valid range. */
 static const struct bad_param bad_params[] = {
-    {FRICREG_SYSTEM_OSCILLATOR, 99, 1.0, FRICREG_EINVAL},     /* unknown parameter */
-    {FRICREG_SYSTEM_OSCILLATOR, 0, 1.0, FRICREG_EINVAL},      /* unknown parameter */
+    {FRICREG_SYSTEM_OSCILLATOR, 99, 1.0, FRICREG_EINVAL},                /* unknown parameter */
+    {FRICREG_SYSTEM_OSCILLATOR, 0, 1.0, FRICREG_EINVAL},                 /* unknown parameter */
     {FRICREG_SYSTEM_CHAIN, FRICREG_PARAM_K, 2.385, FRICREG_EINVAL},      /* twoblock's */
     {FRICREG_SYSTEM_CHAIN, FRICREG_PARAM_MUN, 1.5, FRICREG_EINVAL},      /* oscillator's */
     {FRICREG_SYSTEM_OSCILLATOR, FRICREG_PARAM_N, 8.0, FRICREG_EINVAL},   /* chain's */
@@ -103,8 +104,8 @@ static const struct bad_param bad_params[] = {
     {FRICREG_SYSTEM_TWOBLOCK, FRICREG_PARAM_K, -2.0, FRICREG_EINVAL},
     {FRICREG_SYSTEM_OSCILLATOR, FRICREG_PARAM_MUN, -0.1, FRICREG_EINVAL},
     {FRICREG_SYSTEM_TWOBLOCK, FRICREG_PARAM_MU1, -0.1, FRICREG_EINVAL},
-    {FRICREG_SYSTEM_CHAIN, FRICREG_PARAM_N, 1.0, FRICREG_EINVAL},  /* n >= 2 */
-    {FRICREG_SYSTEM_CHAIN, FRICREG_PARAM_N, 2.5, FRICREG_EINVAL},  /* an integer */
+    {FRICREG_SYSTEM_CHAIN, FRICREG_PARAM_N, 1.0, FRICREG_EINVAL},       /* n >= 2 */
+    {FRICREG_SYSTEM_CHAIN, FRICREG_PARAM_N, 2.5, FRICREG_EINVAL},       /* an integer */
     {FRICREG_SYSTEM_CHAIN, FRICREG_PARAM_N, 1e7 + 1.0, FRICREG_EINVAL}, /* n <= 10^7 */
     {FRICREG_SYSTEM_OSCILLATOR, FRICREG_PARAM_A, NAN, FRICREG_ENONFINITE},
     {FRICREG_SYSTEM_OSCILLATOR, FRICREG_PARAM_X0, INFINITY, FRICREG_ENONFINITE},
@@ -125,7 +126,11 @@ END_TEST
  * system that does not read it (the CLI shows the part after "= "). */
 START_TEST(test_set_param_message_names_parameter_and_rule)
 {
-    static const struct { int system, param; double value; const char *msg; } cases[] = {
+    static const struct {
+        int system, param;
+        double value;
+        const char *msg;
+    } cases[] = {
         {FRICREG_SYSTEM_CHAIN, FRICREG_PARAM_OMEGA, -0.5, "set_param: omega = -0.5 must be > 0"},
         {FRICREG_SYSTEM_CHAIN, FRICREG_PARAM_N, 2.5,
          "set_param: n = 2.5 must be an integer from 2 to 10^7"},
@@ -169,7 +174,11 @@ END_TEST
  * rejected call keeps eps at the paper's rule, 2 dt = 0.02. */
 START_TEST(test_set_law_rejects_bad_law_and_eps)
 {
-    static const struct { int law; double eps; int code; } bad[] = {
+    static const struct {
+        int law;
+        double eps;
+        int code;
+    } bad[] = {
         {0, 0.0, FRICREG_EINVAL},
         {7, 0.0, FRICREG_EINVAL},
         {FRICREG_LAW_QUINN, -0.01, FRICREG_EINVAL},
@@ -189,7 +198,11 @@ END_TEST
  * atol < 0; FRICREG_ENONFINITE. A rejected call keeps dt = 0.01. */
 START_TEST(test_set_integrator_rejects_bad_settings)
 {
-    static const struct { int integ; double dt, rtol, atol; int code; } bad[] = {
+    static const struct {
+        int integ;
+        double dt, rtol, atol;
+        int code;
+    } bad[] = {
         {0, 0.01, 0.0, 0.0, FRICREG_EINVAL},
         {13, 0.01, 0.0, 0.0, FRICREG_EINVAL},
         {FRICREG_INT_RK4, 0.0, 0.0, 0.0, FRICREG_EINVAL},
@@ -219,7 +232,10 @@ END_TEST
  * of 2 dt.) */
 START_TEST(test_run_rejects_bad_end_time)
 {
-    static const struct { double t_end; int code; } bad[] = {
+    static const struct {
+        double t_end;
+        int code;
+    } bad[] = {
         {0.0, FRICREG_EINVAL},
         {-2.385, FRICREG_EINVAL},
         {NAN, FRICREG_ENONFINITE},
@@ -231,8 +247,7 @@ START_TEST(test_run_rejects_bad_end_time)
         fricreg_sim_free(sim);
     }
     fricreg_sim *sim = make(FRICREG_SYSTEM_OSCILLATOR);
-    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 1e-9, 0.0, 0.0),
-                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 1e-9, 0.0, 0.0), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_COULOMB, 0.0), FRICREG_OK);
     expect_failure(sim, fricreg_sim_run(sim, 10.0), FRICREG_EINVAL);
     /* Adaptive steps have no step count to bound, but 1e300 spans more than 10^9 cycles. */
@@ -261,8 +276,7 @@ START_TEST(test_too_large_step_is_estep_naming_the_stick_zone)
 {
     fricreg_sim *sim = make(FRICREG_SYSTEM_OSCILLATOR);
     ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_QUINN, 0.02), FRICREG_OK);
-    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 0.05, 0.0, 0.0),
-                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 0.05, 0.0, 0.0), FRICREG_OK);
     expect_failure(sim, fricreg_sim_run(sim, 20.0), FRICREG_ESTEP);
     ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "stick zone"));
     ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "stiffness 100 "));
@@ -279,8 +293,7 @@ START_TEST(test_estep_uses_the_coupling_diagonal)
     fricreg_sim *sim = make(FRICREG_SYSTEM_TWOBLOCK);
     ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_MU2, 0.6), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_QUINN, 0.02), FRICREG_OK);
-    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 0.03, 0.0, 0.0),
-                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 0.03, 0.0, 0.0), FRICREG_OK);
     expect_failure(sim, fricreg_sim_run_cycles(sim, 1), FRICREG_ESTEP);
     ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "stiffness 120 "));
     fricreg_sim_free(sim);
@@ -321,15 +334,14 @@ START_TEST(test_spring_mode_too_fast_is_estep)
 {
     fricreg_sim *sim = make(FRICREG_SYSTEM_CHAIN);
     ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_VELOCITY_LIMITED, 0.0), FRICREG_OK);
-    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 0.06, 0.0, 0.0),
-                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 0.06, 0.0, 0.0), FRICREG_OK);
     expect_failure(sim, fricreg_sim_run_cycles(sim, 4), FRICREG_ESTEP);
     ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "frequency 64"));
     ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "> 2.82, the stability bound of rk4"));
-    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 0.02, 0.0, 0.0),
-                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 0.02, 0.0, 0.0), FRICREG_OK);
     expect_failure(sim, fricreg_sim_run_cycles(sim, 4), FRICREG_ESTEP);
-    ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "dt*omega = 1.28 > 0.707107 lets a friction"));
+    ck_assert_ptr_nonnull(
+        strstr(fricreg_sim_errmsg(sim), "dt*omega = 1.28 > 0.707107 lets a friction"));
     ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RKF45, 0.012, 0.0, 0.0),
                      FRICREG_OK);
     expect_failure(sim, fricreg_sim_run_cycles(sim, 4), FRICREG_ESTEP);
@@ -466,8 +478,8 @@ struct meddler {
     int calls, status[6];
 };
 
-static int meddle(void *user, double t, size_t ndof, const double x[], const double v[],
-                  size_t m, const double f[], const double f_eq[])
+static int meddle(void *user, double t, size_t ndof, const double x[], const double v[], size_t m,
+                  const double f[], const double f_eq[])
 {
     (void)t, (void)ndof, (void)x, (void)v, (void)m, (void)f, (void)f_eq;
     struct meddler *md = user;
@@ -515,8 +527,7 @@ START_TEST(test_refused_run_leaves_the_initial_state)
     ck_assert_int_eq(fricreg_sim_run_cycles(sim, 1), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_X0, 2.385), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_QUINN, 0.02), FRICREG_OK);
-    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 0.05, 0.0, 0.0),
-                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 0.05, 0.0, 0.0), FRICREG_OK);
     expect_failure(sim, fricreg_sim_run(sim, 20.0), FRICREG_ESTEP);
     double x = NAN, v = NAN, frac = NAN;
     ck_assert_int_eq(fricreg_sim_get_state(sim, 1, &x, &v), FRICREG_OK);
@@ -549,7 +560,7 @@ END_TEST
 
 START_TEST(test_integrator_names_round_trip)
 {
-    static const char *gsl_names[] = {"rk2", "rk4", "rkf45", "rkck", "rk8pd", "rk1imp",
+    static const char *gsl_names[] = {"rk2",    "rk4",    "rkf45", "rkck",    "rk8pd", "rk1imp",
                                       "rk2imp", "rk4imp", "bsimp", "msadams", "msbdf"};
     for (int id = 1; id <= 11; id++) {
         const char *name = fricreg_integrator_name(id);
@@ -599,9 +610,9 @@ END_TEST
 START_TEST(test_fixed_step_stepper_holds_the_stick)
 {
     /* All but rk1imp, implicit Euler, whose first-order error at this step is 7e-3. */
-    static const int integ[] = {FRICREG_INT_RK2,    FRICREG_INT_RK4,     FRICREG_INT_RKF45,
-                                FRICREG_INT_RKCK,   FRICREG_INT_RK8PD,   FRICREG_INT_RK2IMP,
-                                FRICREG_INT_RK4IMP, FRICREG_INT_BSIMP,   FRICREG_INT_MSADAMS,
+    static const int integ[] = {FRICREG_INT_RK2,    FRICREG_INT_RK4,   FRICREG_INT_RKF45,
+                                FRICREG_INT_RKCK,   FRICREG_INT_RK8PD, FRICREG_INT_RK2IMP,
+                                FRICREG_INT_RK4IMP, FRICREG_INT_BSIMP, FRICREG_INT_MSADAMS,
                                 FRICREG_INT_MSBDF};
     double x = oscillator_final_x(integ[_i], 0.005, 0.0, 0.0);
     ck_assert_msg(fabs(x + 0.75) < 1e-3, "%s: x_final = %.9g", fricreg_integrator_name(integ[_i]),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_sim_jacobian.c — white box: the analytic Jacobian of the drivers' ODE
  * (src/sim_jacobian.c) against central differences of its right-hand side.
  *
@@ -22,9 +23,9 @@
 
 #include "sim_internal.h"
 
-#define STEP 1e-6           /* central-difference step, times max(|y_j|, 1) */
-#define TOL 1e-6            /* relative to the Jacobian's largest entry (issue 9) */
-#define SAME_PIECE 1e-12    /* Jacobians this close (relative) lie on one piece */
+#define STEP 1e-6        /* central-difference step, times max(|y_j|, 1) */
+#define TOL 1e-6         /* relative to the Jacobian's largest entry (issue 9) */
+#define SAME_PIECE 1e-12 /* Jacobians this close (relative) lie on one piece */
 #define SAMPLES 40
 
 /* A reproducible uniform in [lo, hi): 64-bit LCG (Knuth's MMIX constants). */
@@ -81,8 +82,7 @@ static fricreg_sim *make_sim(const struct case_ *c)
     ck_assert_int_eq(fricreg_sim_set_law(sim, c->law, c->eps), FRICREG_OK);
     if (c->system == FRICREG_SYSTEM_TWOBLOCK)
         ck_assert_int_eq(fricreg_sim_set_partition(sim, c->partition), FRICREG_OK);
-    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 1e-3, 0.0, 0.0),
-                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 1e-3, 0.0, 0.0), FRICREG_OK);
     int status = fricreg_sim_run(sim, 1e-3);
     ck_assert_msg(status == FRICREG_OK, "%s", fricreg_sim_errmsg(sim));
     return sim;
@@ -105,9 +105,8 @@ static void random_state(fricreg_sim *sim, double t, unsigned long long *seed, d
     sim->sys.type->contacts(&sim->sys, t, y, zero, zdot0, a_free);
     double *v = y + n;
     for (size_t i = 0; i < n; i++)
-        v[i] = zdot_target[i] - zdot0[i] + (sim->sys.type->id == FRICREG_SYSTEM_TWOBLOCK && i > 0
-                                                 ? v[i - 1]
-                                                 : 0.0);
+        v[i] = zdot_target[i] - zdot0[i] +
+               (sim->sys.type->id == FRICREG_SYSTEM_TWOBLOCK && i > 0 ? v[i - 1] : 0.0);
     y[2 * n] = uniform(seed, -3.0, 3.0);
 }
 
@@ -144,8 +143,8 @@ struct tally {
 
 /* Column j (j = dim: the t column) of the analytic Jacobian against central differences,
  * and against the forward-difference Jacobian kept in the library. */
-static void check_column(fricreg_sim *sim, struct scratch *w, double t, const double y[],
-                         size_t j, double scale, int smooth, struct tally *tl)
+static void check_column(fricreg_sim *sim, struct scratch *w, double t, const double y[], size_t j,
+                         double scale, int smooth, struct tally *tl)
 {
     size_t dim = w->dim;
     int is_t = j == dim;
@@ -225,8 +224,8 @@ static void check_case(const struct case_ *c, unsigned long long seed)
 
 START_TEST(oscillator_matches_central_differences)
 {
-    struct case_ c = {FRICREG_SYSTEM_OSCILLATOR, FRICREG_LAW_QUINN, 0, 0.0713, FRICREG_PARAM_A,
-                      2.385};
+    struct case_ c = {
+        FRICREG_SYSTEM_OSCILLATOR, FRICREG_LAW_QUINN, 0, 0.0713, FRICREG_PARAM_A, 2.385};
     check_case(&c, 11);
 }
 END_TEST
@@ -240,16 +239,21 @@ END_TEST
 
 START_TEST(twoblock_consistent_matches_central_differences)
 {
-    struct case_ c = {FRICREG_SYSTEM_TWOBLOCK, FRICREG_LAW_QUINN, FRICREG_PARTITION_CONSISTENT,
-                      0.0713, FRICREG_PARAM_K, 2.385};
+    struct case_ c = {FRICREG_SYSTEM_TWOBLOCK,
+                      FRICREG_LAW_QUINN,
+                      FRICREG_PARTITION_CONSISTENT,
+                      0.0713,
+                      FRICREG_PARAM_K,
+                      2.385};
     check_case(&c, 13);
 }
 END_TEST
 
 START_TEST(twoblock_paper_matches_central_differences)
 {
-    struct case_ c = {FRICREG_SYSTEM_TWOBLOCK, FRICREG_LAW_QUINN, FRICREG_PARTITION_PAPER,
-                      0.0713, FRICREG_PARAM_K, 2.385};
+    struct case_ c = {FRICREG_SYSTEM_TWOBLOCK, FRICREG_LAW_QUINN,
+                      FRICREG_PARTITION_PAPER, 0.0713,
+                      FRICREG_PARAM_K,         2.385};
     check_case(&c, 14);
 }
 END_TEST
@@ -257,10 +261,16 @@ END_TEST
 /* The smooth law and the velocity-limited one: the tangent's slip slopes. */
 START_TEST(twoblock_other_laws_match_central_differences)
 {
-    struct case_ tanh_law = {FRICREG_SYSTEM_TWOBLOCK, FRICREG_LAW_TANH,
-                             FRICREG_PARTITION_CONSISTENT, 0.0713, FRICREG_PARAM_BELT_AMP, 1.37, 1};
-    struct case_ limited = {FRICREG_SYSTEM_TWOBLOCK, FRICREG_LAW_VELOCITY_LIMITED,
-                            FRICREG_PARTITION_CONSISTENT, 0.0713, FRICREG_PARAM_BELT_AMP, 1.37};
+    struct case_ tanh_law = {FRICREG_SYSTEM_TWOBLOCK,
+                             FRICREG_LAW_TANH,
+                             FRICREG_PARTITION_CONSISTENT,
+                             0.0713,
+                             FRICREG_PARAM_BELT_AMP,
+                             1.37,
+                             1};
+    struct case_ limited = {FRICREG_SYSTEM_TWOBLOCK,      FRICREG_LAW_VELOCITY_LIMITED,
+                            FRICREG_PARTITION_CONSISTENT, 0.0713,
+                            FRICREG_PARAM_BELT_AMP,       1.37};
     check_case(&tanh_law, 15);
     check_case(&limited, 16);
 }

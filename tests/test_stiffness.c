@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_stiffness.c — Check suite for fricreg_ctx_stick_stiffness and the partition setter.
  *
  * Expected values in closed form. Two blocks (paper's Eqs. (7)): W = [[1, -1], [-1, 2]], with

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_structure.c — Check suite for fricreg_structure (fricreg_structure.h): a linear
  * structure with friction, Newmark / HHT-alpha with Newton on the exact tangent.
  *
@@ -159,7 +160,7 @@ START_TEST(newmark_two_dof_modal)
         gsl_matrix_set(phi, 0, k, pk0 / norm);
         gsl_matrix_set(phi, 1, k, pk1 / norm);
     }
-    double q[2][2]; /* per mode: (q, q') */
+    double q[2][2];    /* per mode: (q, q') */
     double P[2][2][2]; /* per mode: the trapezoidal map */
     for (int k = 0; k < 2; k++) {
         double pk0 = gsl_matrix_get(phi, 0, k), pk1 = gsl_matrix_get(phi, 1, k);
@@ -191,8 +192,8 @@ START_TEST(newmark_two_dof_modal)
                 for (int k = 0; k < 2; k++) {
                     double pk0 = gsl_matrix_get(phi, 0, k), pk1 = gsl_matrix_get(phi, 1, k);
                     double wb = trapezoidal_frequency(sqrt(gsl_vector_get(w2, k)), dt);
-                    closed += gsl_matrix_get(phi, i, k) * (pk0 * m1 * u0[0] + pk1 * m2 * u0[1])
-                              * cos(wb * n * dt);
+                    closed += gsl_matrix_get(phi, i, k) * (pk0 * m1 * u0[0] + pk1 * m2 * u0[1]) *
+                              cos(wb * n * dt);
                 }
                 ck_assert_double_eq_tol(expected[i], closed, 1e-12 * 0.027);
             }
@@ -202,8 +203,8 @@ START_TEST(newmark_two_dof_modal)
         ck_assert_double_eq_tol(u[1], expected[1], 1e-11 * 0.027);
     }
     double e0 = value(s, FRICREG_SVALUE_INITIAL);
-    ck_assert_double_eq_tol(e0, 0.5 * (K[0] * u0[0] * u0[0] + 2 * K[1] * u0[0] * u0[1]
-                                       + K[3] * u0[1] * u0[1]), 1e-15);
+    ck_assert_double_eq_tol(
+        e0, 0.5 * (K[0] * u0[0] * u0[0] + 2 * K[1] * u0[0] * u0[1] + K[3] * u0[1] * u0[1]), 1e-15);
     ck_assert_double_eq_tol(value(s, FRICREG_SVALUE_RESIDUAL), 0.0, 1e-12 * e0);
     if (damped) /* 300 steps = 21.9 s of a mode-1 damping ratio 0.027: most of e0 is gone */
         ck_assert_double_gt(value(s, FRICREG_SVALUE_VISCOUS), 0.5 * e0);
@@ -236,8 +237,8 @@ START_TEST(hht_second_order_and_dissipative)
         double u;
         ok(s, fricreg_structure_get_state(s, 1, &u, NULL, NULL));
         err[level] = fabs(u - u0 * cos(w * t_end));
-        double e0 = 0.5 * k * u0 * u0, e = value(s, FRICREG_SVALUE_STRAIN)
-                                           + value(s, FRICREG_SVALUE_KINETIC);
+        double e0 = 0.5 * k * u0 * u0,
+               e = value(s, FRICREG_SVALUE_STRAIN) + value(s, FRICREG_SVALUE_KINETIC);
         ck_assert_double_lt(e, e0);
         ck_assert_double_eq_tol(value(s, FRICREG_SVALUE_RESIDUAL), e0 - e, 1e-12 * e0);
         fricreg_structure_free(s);
@@ -743,8 +744,8 @@ static double building(double dt, double alpha, double *peak_roof, fricreg_struc
     fricreg_structure *s = make(STOREYS, STOREYS);
     ok(s, fricreg_structure_set_mass(s, STOREYS, M));
     ok(s, fricreg_structure_set_stiffness(s, STOREYS, K));
-    ok(s, fricreg_structure_set_rayleigh(s, 2.0 * zeta * w1 * w2 / (w1 + w2),
-                                         2.0 * zeta / (w1 + w2)));
+    ok(s,
+       fricreg_structure_set_rayleigh(s, 2.0 * zeta * w1 * w2 / (w1 + w2), 2.0 * zeta / (w1 + w2)));
     ok(s, fricreg_structure_set_contacts(s, STOREYS, STOREYS, J));
     ok(s, fricreg_structure_set_bounds(s, STOREYS, mun));
     ok(s, fricreg_structure_set_law(s, FRICREG_LAW_QUINN, 0.01));

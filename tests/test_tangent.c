@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_tangent.c — Check suite for fricreg_ctx_tangent, the Jacobian of the forces.
  *
  * Expected values in closed form on the two blocks of spec/paper.md ("Reference system 3"):
@@ -169,13 +170,14 @@ END_TEST
  * rounding ~1e-16 * 100 / 1e-7 = 1e-7 relative. */
 START_TEST(central_differences)
 {
-    const double A[16] = {0.731, -0.412, 1.137, 0.213, 0.318, 1.913, -0.627, 0.044,
-                          -1.205, 0.097, 0.388, 1.472, 0.659, -0.733, 0.142, -0.318};
+    const double A[16] = {0.731,  -0.412, 1.137, 0.213, 0.318, 1.913,  -0.627, 0.044,
+                          -1.205, 0.097,  0.388, 1.472, 0.659, -0.733, 0.142,  -0.318};
     double W[16];
     for (int i = 0; i < 4; i++)
         for (int j = 0; j < 4; j++) {
             double s = i == j ? 0.3 : 0.0;
-            for (int k = 0; k < 4; k++) s += A[i * 4 + k] * A[j * 4 + k];
+            for (int k = 0; k < 4; k++)
+                s += A[i * 4 + k] * A[j * 4 + k];
             W[i * 4 + j] = s;
         }
     const double mun[4] = {0.9, 0.35, 1.2, 2.385}, eps = 0.0731, h = 1e-7;
@@ -191,14 +193,17 @@ START_TEST(central_differences)
         ck_assert_int_eq(fricreg_ctx_eval(ctx, 4, z, a, f, NULL), FRICREG_OK);
         ck_assert_int_eq(fricreg_ctx_tangent(ctx, 4, dz, da), FRICREG_OK);
         double scale = 0.0;
-        for (int k = 0; k < 16; k++) scale = fmax(scale, fabs(dz[k]));
+        for (int k = 0; k < 16; k++)
+            scale = fmax(scale, fabs(dz[k]));
         for (int j = 0; j < 4; j++) {
             for (int which = 0; which < 2; which++) {
                 double zp[4], zm[4], ap[4], am[4];
                 memcpy(zp, z, sizeof zp), memcpy(zm, z, sizeof zm);
                 memcpy(ap, a, sizeof ap), memcpy(am, a, sizeof am);
-                if (which == 0) zp[j] += h, zm[j] -= h;
-                else ap[j] += h, am[j] -= h;
+                if (which == 0)
+                    zp[j] += h, zm[j] -= h;
+                else
+                    ap[j] += h, am[j] -= h;
                 ck_assert_int_eq(fricreg_ctx_eval(ctx, 4, zp, ap, fp, NULL), FRICREG_OK);
                 ck_assert_int_eq(fricreg_ctx_eval(ctx, 4, zm, am, fm, NULL), FRICREG_OK);
                 for (int i = 0; i < 4; i++) {
@@ -223,7 +228,8 @@ START_TEST(errors)
 {
     fricreg_ctx *ctx = make_two_block(FRICREG_PARTITION_CONSISTENT);
     double dz[9], da[4];
-    for (int k = 0; k < 9; k++) dz[k] = SENTINEL;
+    for (int k = 0; k < 9; k++)
+        dz[k] = SENTINEL;
     ck_assert_int_eq(fricreg_ctx_tangent(NULL, 2, dz, da), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_ctx_tangent(ctx, 2, dz, da), FRICREG_EINVAL); /* no eval yet */
     ck_assert_ptr_nonnull(strstr(fricreg_ctx_errmsg(ctx), "tangent"));
@@ -234,7 +240,8 @@ START_TEST(errors)
     ck_assert_int_eq(fricreg_ctx_errcode(ctx), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_ctx_tangent(ctx, 3, dz, NULL), FRICREG_ESIZE);
     ck_assert_int_eq(fricreg_ctx_errcode(ctx), FRICREG_ESIZE);
-    for (int k = 0; k < 9; k++) ck_assert_double_eq(dz[k], SENTINEL);
+    for (int k = 0; k < 9; k++)
+        ck_assert_double_eq(dz[k], SENTINEL);
 
     /* a failed eval (NaN) does not disturb it */
     const double bad[2] = {NAN, 0.0};
@@ -252,9 +259,11 @@ START_TEST(errors)
         case 3: ck_assert_int_eq(fricreg_ctx_set_partition(ctx, 1), 0); break;
         default: ck_assert_int_eq(fricreg_ctx_set_coupling_diagonal(ctx, 2, MUN2B), 0); break;
         }
-        for (int k = 0; k < 4; k++) da[k] = SENTINEL;
+        for (int k = 0; k < 4; k++)
+            da[k] = SENTINEL;
         ck_assert_int_eq(fricreg_ctx_tangent(ctx, 2, NULL, da), FRICREG_EINVAL);
-        for (int k = 0; k < 4; k++) ck_assert_double_eq(da[k], SENTINEL);
+        for (int k = 0; k < 4; k++)
+            ck_assert_double_eq(da[k], SENTINEL);
     }
     fricreg_ctx_free(ctx);
 }

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_twoblock.c — the two blocks on a belt, Eqs. (7) (Sec. 3.3), driven through fricreg_sim.
  *
  * Paper defaults: K = 2, mu1 = 0.5, mu2 = 0.25, belt u(t) = sin(0.5 t), start at rest at the
@@ -17,9 +18,18 @@
 #define DT 0.01
 #define EPS (2.0 * DT)
 
-static double belt_v(double t) { return 0.5 * cos(0.5 * t); }
-static double belt_a(double t) { return -0.25 * sin(0.5 * t); }
-static double sgn(double y) { return (double)(y > 0.0) - (double)(y < 0.0); }
+static double belt_v(double t)
+{
+    return 0.5 * cos(0.5 * t);
+}
+static double belt_a(double t)
+{
+    return -0.25 * sin(0.5 * t);
+}
+static double sgn(double y)
+{
+    return (double)(y > 0.0) - (double)(y < 0.0);
+}
 
 struct record {
     long calls;
@@ -37,8 +47,8 @@ struct record {
     double x[2], v[2];
 };
 
-static int observe(void *user, double t, size_t ndof, const double x[], const double v[],
-                   size_t m, const double f[], const double f_eq[])
+static int observe(void *user, double t, size_t ndof, const double x[], const double v[], size_t m,
+                   const double f[], const double f_eq[])
 {
     struct record *r = user;
     ck_assert_uint_eq(ndof, 2);

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_twoblock_adaptive.c — the two blocks on a belt (paper defaults, Eqs. (7)) with GSL's
  * adaptive BDF at eps = 1e-6, where the paper's partition made adaptive integrators return
  * wrong answers silently (issue 9: D 12x too large, no stick at rtol 1e-6).

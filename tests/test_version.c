@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_version.c — the version has one source, project(VERSION) in CMakeLists.txt: the
  * header's macros, the library's functions and CMake's numbers (passed in by the build) agree. */
 #include <check.h>

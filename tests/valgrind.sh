@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # valgrind memcheck over one C test program, in one process (CK_FORK=no, so that valgrind sees
 # every test and its leaks): any error or leak fails. With CASE names, only those Check cases
 # run, one valgrind run each, and each must run at least one check (a renamed case fails here

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* make_building.c — writes the ten-storey shear building of issue 10 as fricreg-sim structure
  * reads it, into the folder given (default "."):
  *

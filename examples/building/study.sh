@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # study.sh — the measurements of docs/structural.md on the building (about 15 s of CPU):
 # convergence in dt, accuracy against eps (also on the forced oscillator), Newton iterations,
 # central difference's bound and GSL's adaptive steppers against atol (also on the chain).

@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
 ! chain_central_difference.f90 — the paper's n-dof chain (Quinn 2004, Sec. 3.2, Fig. 8)
 ! integrated with the explicit central-difference scheme of explicit structural codes, with
 ! friction from fricreg: one context of n contacts, one call per step for all blocks.

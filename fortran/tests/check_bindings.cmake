@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # check_bindings.cmake — every function the library exports has a Fortran bind(C) interface
 # (cmake -P; -DHEADERS=a.h|b.h -DSOURCES=a.f90|b.inc).
 #

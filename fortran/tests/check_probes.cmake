@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # check_probes.cmake — the generated interfaces can catch drift, proved on probes (cmake -P).
 #   -DFC=<Fortran compiler> -DMODDIR=<fricreg's .mod folder> -DGENERATOR=gen_interfaces.cmake
 #   -DPROBES=<fortran/tests/probes> -DWORK=<scratch folder>

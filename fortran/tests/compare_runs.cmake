@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # compare_runs.cmake — run two programs and require the same output, byte for byte (cmake -P).
 #
 # -DA=program -DB=program: both must exit 0 and print the same stdout. The F77 tests print

@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
 ! ftest.f90 — the few checks the Fortran tests share. A test program calls check* for each
 ! expectation and finish at the end, which exits with status 1 if any failed.
 module ftest

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* law_reference.c — test helper: the laws evaluated from C, one fricreg_law_eval call per
  * point, for test_laws.f90 to compare with what module fricreg returns. */
 #include <stddef.h>

@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
 ! test_constants.f90 — the Fortran constants are the C headers' values.
 !
 ! They are generated from the headers at build time (fortran/gen_constants.cmake), which stops

@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
 ! test_context.f90 — the context round trip through type fricreg_context: create, set, eval,
 ! destroy, against answers solved by hand.
 !

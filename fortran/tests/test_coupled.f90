@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
 ! test_coupled.f90 — the 1.1 context additions through both Fortran layers: partition,
 ! stick-zone stiffness, the tangent (and its Fortran layout), and the law names.
 !

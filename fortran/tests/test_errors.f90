@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
 ! test_errors.f90 — sizes that do not match the context, and bad values, return the error
 ! codes of include/fricreg.h, leave the outputs alone, and leave a message naming the argument.
 ! Size checks are made in Fortran before C is called, so a wrong size never reaches memory.

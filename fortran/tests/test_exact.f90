@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
 ! test_exact.f90 — the exact solution of the oscillator, Eq. (5) under (1)+(2), through type
 ! fricreg_exact_solution and the bind(C) layer (include/fricreg_exact.h), against closed forms:
 ! - unforced from (2.75, 0), mun = 1 (the paper's case, Sec. 3.1.1): x = 1 + 1.75 cos t while

@@ -1,3 +1,4 @@
+C     SPDX-License-Identifier: GPL-3.0-or-later
 C     TEST_F77_SIM.F -- THE DRIVER ENTRY POINTS (FRSIM*) FROM FIXED-FORM
 C     F77: THE CHAIN OF QUINN (2004), SEC. 3.2, N = 32, A = 0.25,
 C     OMEGA = 0.5, LAW (4), RK4 DT = 0.01: D PER CYCLE -> 0.0105 (FIG.

@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
 ! test_laws.f90 — every law through module fricreg equals the C library's result, bit for bit.
 !
 ! The C result is computed by C (law_reference.c: fricreg_law_eval called from C, point by

@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
 ! test_sim.f90 — the ODE drivers through type fricreg_simulation (include/fricreg_sim.h), with
 ! the paper's numbers (shared/spec/paper.md): the unforced oscillator settles at -0.750090
 ! (Sec. 3.1.1; RK4, dt = 0.01, eps = 2 dt), and the chain dissipates D = 0.0105 per cycle

@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
 ! test_structure.f90 — the linear structure with friction (include/fricreg_structure.h) through
 ! the thin bind(C) layer, with C's numbers (tests/test_structure.c): two storeys hold a static
 ! load, J^T f = -p, so f = (-(p1 + p2), -p2) = (-0.319, 0.412) with no motion; and the paper's

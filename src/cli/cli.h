@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* cli.h — fricreg-sim, the command-line tool: shared declarations of its parts. */
 #ifndef FRICREG_CLI_H
 #define FRICREG_CLI_H
@@ -21,7 +22,10 @@ struct cli_run {
     int cycles;
     enum cli_output output;
     int partition; /* enum fricreg_partition; only twoblock's differs from the default */
-    struct { int param; double value; } params[16];
+    struct {
+        int param;
+        double value;
+    } params[16];
     int nparams;
 };
 
@@ -41,9 +45,9 @@ struct cli_summary {
     int adaptive;
     double dt, rtol, atol, eps, steps, rhs_evals, t, period, cpu_seconds;
     size_t ndof, ncontacts, cycles;
-    const double *x, *v;   /* [ndof] */
-    const double *D;       /* [cycles] dissipation per cycle */
-    const double *stick;   /* [ncontacts] stick fraction of the last whole cycle */
+    const double *x, *v; /* [ndof] */
+    const double *D;     /* [cycles] dissipation per cycle */
+    const double *stick; /* [ncontacts] stick fraction of the last whole cycle */
 };
 
 /* output.c */

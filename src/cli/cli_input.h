@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* cli_input.h — the input files of `fricreg-sim structure` (input.c). Each reader prints one
  * line naming option, file and line or entry to stderr and returns CLI_EXIT_USAGE on a bad
  * file; on success it returns 0 and the caller frees the array it wrote. */

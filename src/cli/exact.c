@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* exact.c — `fricreg-sim exact`: the closed-form oscillator, with the summary fields of a
  * simulated run (integrator "exact"; steps counts the switches). The period, the run length
  * in cycles, the law names and every message come from the library. */
@@ -74,11 +75,20 @@ int cli_exact_summary(const struct cli_run *run, FILE *out)
     char law[64];
     snprintf(law, sizeof law, "%s+%s", fricreg_law_name(FRICREG_LAW_COULOMB),
              fricreg_law_name(FRICREG_LAW_FORCE_BALANCE));
-    struct cli_summary s = {
-        .system = "oscillator", .law = law, .integrator = "exact",
-        .steps = (double)fricreg_exact_nswitches(ex), .t = t_end, .period = period,
-        .cpu_seconds = cpu_seconds, .ndof = 1, .ncontacts = 1, .cycles = cycles,
-        .x = &x, .v = &v, .D = D, .stick = &stick};
+    struct cli_summary s = {.system = "oscillator",
+                            .law = law,
+                            .integrator = "exact",
+                            .steps = (double)fricreg_exact_nswitches(ex),
+                            .t = t_end,
+                            .period = period,
+                            .cpu_seconds = cpu_seconds,
+                            .ndof = 1,
+                            .ncontacts = 1,
+                            .cycles = cycles,
+                            .x = &x,
+                            .v = &v,
+                            .D = D,
+                            .stick = &stick};
     cli_write_summary(out, &s);
     free(D);
     fricreg_exact_free(ex);

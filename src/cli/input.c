@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* input.c — the input files of `fricreg-sim structure`: Matrix Market matrices (checked here
  * line by line so that a bad file is named with its line, then read by GSL), and plain-text
  * columns of numbers. Every error is one line on stderr naming the option, the file and the line or entry;

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* main.c — fricreg-sim: runs the paper's reference systems from the command line. */
 #include <string.h>
 
@@ -20,7 +21,8 @@ static void usage(FILE *out)
           "           [--output summary|trajectory]   (docs/structural.md)\n"
           "       fricreg-sim --help | --version\n"
           "\n"
-          "Common options (defaults in brackets):\n", out);
+          "Common options (defaults in brackets):\n",
+          out);
     fprintf(out, "  --law %s   [%s]\n", cli_names(names, sizeof names, fricreg_law_name, "|"),
             fricreg_law_name(defaults.law));
     fprintf(out, "  --integrator %s [%s]\n",
@@ -34,7 +36,8 @@ static void usage(FILE *out)
           out);
     cli_print_param_defaults(out);
     fputs("            --partition paper|consistent  coupled contacts' near-stick law "
-          "[consistent]\n", out);
+          "[consistent]\n",
+          out);
     fputs("Exit status: 0 success, 1 the simulation failed, 2 bad option or value.\n", out);
 }
 

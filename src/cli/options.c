@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* options.c — parsing and validation of fricreg-sim's options. Every error is one line on
  * stderr that names the option, and exit status 2; nothing is run or written. */
 #include <errno.h>
@@ -212,9 +213,13 @@ static int parse_common(const char *option, const char *text, struct cli_run *ru
 
 int cli_parse_run(int system, int argc, char **argv, struct cli_run *run)
 {
-    *run = (struct cli_run){.system = system, .law = FRICREG_LAW_QUINN,
-                            .integrator = FRICREG_INT_RK4, .dt = 0.01, .cycles = 4,
-                            .output = CLI_SUMMARY, .partition = FRICREG_PARTITION_CONSISTENT};
+    *run = (struct cli_run){.system = system,
+                            .law = FRICREG_LAW_QUINN,
+                            .integrator = FRICREG_INT_RK4,
+                            .dt = 0.01,
+                            .cycles = 4,
+                            .output = CLI_SUMMARY,
+                            .partition = FRICREG_PARTITION_CONSISTENT};
     int cycles_given = 0;
     for (int k = 0; k < argc; k++) {
         char *option = argv[k], *value = NULL;
@@ -231,7 +236,7 @@ int cli_parse_run(int system, int argc, char **argv, struct cli_run *run)
         }
         cycles_given |= strcmp(option, "--cycles") == 0;
         int status = strcmp(option, "--partition") == 0 ? parse_partition(system, value, run)
-                                                         : parse_common(option, value, run);
+                                                        : parse_common(option, value, run);
         if (status < 0)
             status = parse_param(system, option, value, run);
         if (status != 0)
@@ -246,8 +251,8 @@ int cli_parse_run(int system, int argc, char **argv, struct cli_run *run)
  * no meaning for it and are refused by name. */
 int cli_parse_exact(int argc, char **argv, struct cli_run *run)
 {
-    static const char *const refused[] = {"--law", "--integrator", "--dt", "--rtol", "--atol",
-                                          "--eps"};
+    static const char *const refused[] = {"--law",  "--integrator", "--dt",
+                                          "--rtol", "--atol",       "--eps"};
     for (int k = 0; k < argc; k++)
         for (size_t r = 0; r < sizeof refused / sizeof refused[0]; r++) {
             size_t len = strlen(refused[r]);

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* output.c — runs one simulation and writes its JSON summary or its CSV trajectory. */
 #include <math.h>
 #include <stdlib.h>
@@ -74,8 +75,8 @@ void cli_write_summary(FILE *out, const struct cli_summary *s)
             s->law, s->integrator);
     fprintf(out, "\"adaptive\": %s, \"dt\": %.17g, \"rtol\": %.17g, \"atol\": %.17g, ",
             s->adaptive ? "true" : "false", s->dt, s->rtol, s->atol);
-    fprintf(out, "\"eps\": %.17g, \"steps\": %.0f, \"rhs_evals\": %.0f, \"t\": %.17g, ",
-            s->eps, s->steps, s->rhs_evals, s->t);
+    fprintf(out, "\"eps\": %.17g, \"steps\": %.0f, \"rhs_evals\": %.0f, \"t\": %.17g, ", s->eps,
+            s->steps, s->rhs_evals, s->t);
     fprintf(out, "\"period\": %.17g", s->period);
     json_array(out, "x", s->ndof, s->x);
     json_array(out, "v", s->ndof, s->v);
@@ -105,15 +106,26 @@ static void write_summary(FILE *out, const struct cli_run *run, const fricreg_si
     fricreg_sim_get_state(sim, n, x, v);
     fricreg_sim_get_stick_fraction(sim, m, stick);
     fricreg_sim_get_dissipation(sim, cycles, D);
-    struct cli_summary s = {
-        .system = cli_system_name(run->system), .law = fricreg_law_name(run->law),
-        .integrator = fricreg_integrator_name(run->integrator),
-        .adaptive = run->rtol > 0.0 || run->atol > 0.0,
-        .dt = run->dt, .rtol = run->rtol, .atol = run->atol, .eps = value(sim, FRICREG_VALUE_EPS),
-        .steps = value(sim, FRICREG_VALUE_STEPS), .rhs_evals = value(sim, FRICREG_VALUE_RHS_EVALS),
-        .t = value(sim, FRICREG_VALUE_TIME), .period = value(sim, FRICREG_VALUE_PERIOD),
-        .cpu_seconds = cpu_seconds, .ndof = n, .ncontacts = m, .cycles = cycles,
-        .x = x, .v = v, .D = D, .stick = stick};
+    struct cli_summary s = {.system = cli_system_name(run->system),
+                            .law = fricreg_law_name(run->law),
+                            .integrator = fricreg_integrator_name(run->integrator),
+                            .adaptive = run->rtol > 0.0 || run->atol > 0.0,
+                            .dt = run->dt,
+                            .rtol = run->rtol,
+                            .atol = run->atol,
+                            .eps = value(sim, FRICREG_VALUE_EPS),
+                            .steps = value(sim, FRICREG_VALUE_STEPS),
+                            .rhs_evals = value(sim, FRICREG_VALUE_RHS_EVALS),
+                            .t = value(sim, FRICREG_VALUE_TIME),
+                            .period = value(sim, FRICREG_VALUE_PERIOD),
+                            .cpu_seconds = cpu_seconds,
+                            .ndof = n,
+                            .ncontacts = m,
+                            .cycles = cycles,
+                            .x = x,
+                            .v = v,
+                            .D = D,
+                            .stick = stick};
     cli_write_summary(out, &s);
     free(buf);
 }
@@ -134,8 +146,8 @@ int cli_run_summary(const struct cli_run *run, FILE *out)
 }
 
 /* CSV row per step; f_eq is an empty field where it was not computed (slipping contact). */
-static int csv_row(void *user, double t, size_t ndof, const double x[], const double v[],
-                   size_t m, const double f[], const double f_eq[])
+static int csv_row(void *user, double t, size_t ndof, const double x[], const double v[], size_t m,
+                   const double f[], const double f_eq[])
 {
     FILE *out = user;
     fprintf(out, "%.17g", t);

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* reproduce.c — `fricreg-sim reproduce --out DIR`: the paper's experiments (Figs. 5, 6, 9
  * and 11 of Quinn 2004), one CSV per figure, a PNG per figure when gnuplot is installed, and a
  * table of each paper number beside ours on stdout. */
@@ -81,8 +82,8 @@ static fricreg_sim *run_partition(int system, int law, int partition, double dt,
     if (status == FRICREG_OK)
         status = t_end > 0.0 ? fricreg_sim_run(sim, t_end) : fricreg_sim_run_cycles(sim, cycles);
     if (status != FRICREG_OK) {
-        fprintf(stderr, "fricreg-sim: reproduce: %s, law %s, dt %g: %s\n",
-                cli_system_name(system), fricreg_law_name(law), dt, fricreg_sim_errmsg(sim));
+        fprintf(stderr, "fricreg-sim: reproduce: %s, law %s, dt %g: %s\n", cli_system_name(system),
+                fricreg_law_name(law), dt, fricreg_sim_errmsg(sim));
         fricreg_sim_free(sim);
         return NULL;
     }
@@ -143,15 +144,15 @@ static int figure5(const char *dir)
 {
     static const int laws[4] = {FRICREG_LAW_COULOMB, FRICREG_LAW_FORCE_BALANCE,
                                 FRICREG_LAW_VELOCITY_LIMITED, FRICREG_LAW_QUINN};
-    static const char *const label[4] = {"(1) Coulomb", "(2) force balance",
-                                         "(3) velocity-limited", "(4) Quinn"};
+    static const char *const label[4] = {"(1) Coulomb", "(2) force balance", "(3) velocity-limited",
+                                         "(4) Quinn"};
     struct series s[4];
     double x_final[4];
     int ok = 1;
     for (int k = 0; k < 4 && ok; k++) {
         s[k] = (struct series){.width = 3, .columns = cols_x_f};
-        fricreg_sim *sim = run_paper(FRICREG_SYSTEM_OSCILLATOR, laws[k], 0.01, UNFORCED_T_END,
-                                     0, &s[k]);
+        fricreg_sim *sim = run_paper(FRICREG_SYSTEM_OSCILLATOR, laws[k], 0.01, UNFORCED_T_END, 0,
+                                     &s[k]);
         ok = sim != NULL && s[k].n == s[0].n;
         x_final[k] = ok ? final_position(sim) : NAN;
         fricreg_sim_free(sim);
@@ -216,8 +217,8 @@ static int figure6(const char *dir)
         const double *last = s.rows + 4 * (s.n - 1);
         table_row("Fig. 6", "f: total variation / net change, (4)", "1 (no chatter)",
                   variation_ratio(&s, 2.5), "");
-        table_row_vs("Fig. 6", "f - f_eq at t = 3.5, (4) (force balance)", 0.0,
-                     last[2] - last[3], 0);
+        table_row_vs("Fig. 6", "f - f_eq at t = 3.5, (4) (force balance)", 0.0, last[2] - last[3],
+                     0);
     }
     free(s.rows);
     return out == NULL;
@@ -240,8 +241,8 @@ static int chain_dissipation(int law, double dt, double *D)
         status = fricreg_sim_run_cycles(sim, CHAIN_CYCLES);
     *D = status == FRICREG_OK ? last_cycle_dissipation(sim) : NAN;
     if (status != FRICREG_OK && status != FRICREG_ESTEP)
-        fprintf(stderr, "fricreg-sim: reproduce: chain, law %s, dt %g: %s\n",
-                fricreg_law_name(law), dt, fricreg_sim_errmsg(sim));
+        fprintf(stderr, "fricreg-sim: reproduce: chain, law %s, dt %g: %s\n", fricreg_law_name(law),
+                dt, fricreg_sim_errmsg(sim));
     fricreg_sim_free(sim);
     return status != FRICREG_OK && status != FRICREG_ESTEP;
 }
@@ -268,8 +269,8 @@ static int figure9(const char *dir)
     const int at_001 = 6;
     table_row_vs("Fig. 9", "D, 4th cycle, (4) Quinn, dt 0.01", PAPER_D_CHAIN, D[at_001][2], 1);
     table_row_vs("Fig. 9", "D, 4th cycle, (1) Coulomb, dt 0.01", PAPER_D_CHAIN, D[at_001][0], 1);
-    table_row_vs("Fig. 9", "D, 4th cycle, (3) vel.-limited, dt 0.01", PAPER_D_CHAIN,
-                 D[at_001][1], 1);
+    table_row_vs("Fig. 9", "D, 4th cycle, (3) vel.-limited, dt 0.01", PAPER_D_CHAIN, D[at_001][1],
+                 1);
     table_row_vs("Fig. 9", "D, 4th cycle, (4) Quinn, dt 1e-4", PAPER_D_CHAIN, D[0][2], 1);
     table_row_vs("Fig. 9", "D, 4th cycle, (1) Coulomb, dt 1e-4", PAPER_D_CHAIN, D[0][0], 1);
     table_row_vs("Fig. 9", "D, 4th cycle, (3) vel.-limited, dt 1e-4", PAPER_D_CHAIN, D[0][1], 1);
@@ -303,10 +304,8 @@ static int figure11(const char *dir)
     }
     fclose(out);
     free(s.rows);
-    table_row("Fig. 11", "stick fraction, lower interface, 4th cycle", "long sticks", stick[0],
-              "");
-    table_row("Fig. 11", "stick fraction, upper interface, 4th cycle", "long sticks", stick[1],
-              "");
+    table_row("Fig. 11", "stick fraction, lower interface, 4th cycle", "long sticks", stick[0], "");
+    table_row("Fig. 11", "stick fraction, upper interface, 4th cycle", "long sticks", stick[1], "");
     /* The same run under the consistent near-stick law (beyond the paper), beside it. */
     sim = run_partition(FRICREG_SYSTEM_TWOBLOCK, FRICREG_LAW_QUINN, FRICREG_PARTITION_CONSISTENT,
                         0.01, 0.0, CHAIN_CYCLES, NULL);
@@ -369,8 +368,7 @@ int cli_reproduce(int argc, char **argv)
         else if (strncmp(argv[k], "--out=", 6) == 0)
             dir = argv[k] + 6;
         else {
-            fprintf(stderr, "fricreg-sim: %s: unknown option for reproduce (--out DIR)\n",
-                    argv[k]);
+            fprintf(stderr, "fricreg-sim: %s: unknown option for reproduce (--out DIR)\n", argv[k]);
             return CLI_EXIT_USAGE;
         }
     }

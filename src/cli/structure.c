@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* structure.c — `fricreg-sim structure`: a linear structure with friction contacts
  * (fricreg_structure.h) from Matrix Market files, run with Newmark, HHT-alpha, central
  * difference or one of GSL's steppers; a JSON summary or a CSV row per step on stdout.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* chain.c — the chain of Sec. 3.2: n blocks of mass 1/n joined by springs of stiffness n,
  * block n tied to a wall, block 1 driven by a sin(omega t), every block on its own contact
  * with mun = 1 and W = I. In the paper's scaling u_i'' = a_free_i + f_i with
@@ -123,14 +124,13 @@ static void body_maps(const struct fr_system *sys, double dacc_dx[], double dacc
 }
 
 /* Only block 1 is driven: d(n G)/dt = n a omega cos(omega t). */
-static void time_rates(const struct fr_system *sys, double t, double dzdot_dt[],
-                       double dafree_dt[], double dacc_dt[])
+static void time_rates(const struct fr_system *sys, double t, double dzdot_dt[], double dafree_dt[],
+                       double dacc_dt[])
 {
     size_t n = blocks(sys);
     for (size_t i = 0; i < n; i++)
         dzdot_dt[i] = dafree_dt[i] = dacc_dt[i] = 0.0;
-    dafree_dt[0] = dacc_dt[0] =
-        (double)n * sys->p[A] * sys->p[OMEGA] * cos(sys->p[OMEGA] * t);
+    dafree_dt[0] = dacc_dt[0] = (double)n * sys->p[A] * sys->p[OMEGA] * cos(sys->p[OMEGA] * t);
 }
 
 const struct fr_system_type fr_chain_type = {

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* oscillator.c — the 1-dof oscillator of Eq. (5): x'' + x = f + a sin(omega t), one contact
  * at the body with bound mun, so W = 1 and f_eq = x - a sin(omega t) = -a_free. */
 #include <math.h>
@@ -88,8 +89,8 @@ static void body_maps(const struct fr_system *sys, double dacc_dx[], double dacc
     dacc_df[0] = 1.0;
 }
 
-static void time_rates(const struct fr_system *sys, double t, double dzdot_dt[],
-                       double dafree_dt[], double dacc_dt[])
+static void time_rates(const struct fr_system *sys, double t, double dzdot_dt[], double dafree_dt[],
+                       double dacc_dt[])
 {
     double forcing_rate = sys->p[A] * sys->p[OMEGA] * cos(sys->p[OMEGA] * t);
     dzdot_dt[0] = 0.0;

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* twoblock.c — the two blocks of Eqs. (7): the lower block x1 on a belt
  * u(t) = belt_amp sin(belt_omega t), the upper block x2 on it, unit masses, springs 1 and k to
  * the ground. Contacts z1 = x1 - u (bound mu1) and z2 = x2 - x1 (bound mu2) couple through
@@ -16,8 +17,7 @@ static const struct fr_param_spec params[NPARAMS] = {
     [MU1] = {FRICREG_PARAM_MU1, "mu1", 0.5, fr_param_nonnegative, "must be >= 0"},
     [MU2] = {FRICREG_PARAM_MU2, "mu2", 0.25, fr_param_nonnegative, "must be >= 0"},
     [BELT_AMP] = {FRICREG_PARAM_BELT_AMP, "belt_amp", 1.0, NULL, NULL},
-    [BELT_OMEGA] = {FRICREG_PARAM_BELT_OMEGA, "belt_omega", 0.5, fr_param_positive,
-                    "must be > 0"},
+    [BELT_OMEGA] = {FRICREG_PARAM_BELT_OMEGA, "belt_omega", 0.5, fr_param_positive, "must be > 0"},
 };
 
 static size_t two(const struct fr_system *sys)
@@ -107,11 +107,11 @@ static void body_maps(const struct fr_system *sys, double dacc_dx[], double dacc
 }
 
 /* The belt u = b sin(omega t) enters zdot_1 through -u' and a_free,1 through -u''. */
-static void time_rates(const struct fr_system *sys, double t, double dzdot_dt[],
-                       double dafree_dt[], double dacc_dt[])
+static void time_rates(const struct fr_system *sys, double t, double dzdot_dt[], double dafree_dt[],
+                       double dacc_dt[])
 {
     double omega = sys->p[BELT_OMEGA], b = sys->p[BELT_AMP], wt = omega * t;
-    dzdot_dt[0] = b * omega * omega * sin(wt);         /* -u'' */
+    dzdot_dt[0] = b * omega * omega * sin(wt);          /* -u'' */
     dafree_dt[0] = b * omega * omega * omega * cos(wt); /* -u''' */
     dzdot_dt[1] = dafree_dt[1] = 0.0;
     dacc_dt[0] = dacc_dt[1] = 0.0;

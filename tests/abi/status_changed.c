@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* status_changed.c — a deliberately incompatible src/status.c for the ABI check's own test:
  * fricreg_version_number returns a long instead of an int. (A function no other file calls,
  * so this definition is the only debug information that describes it.) Linked with the other

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_alloc_failure.c — every allocation made on the way through the library, failed in turn.
  *
  * The program is linked with fricreg's objects and GSL's static archives under
@@ -33,12 +34,12 @@ void *__real_calloc(size_t n, size_t size);
 void *__real_realloc(void *p, size_t size);
 void __real_free(void *p);
 
-static int armed;      /* count and fail only between hook_arm and hook_disarm */
-static long n_allocs;  /* allocation requests while armed */
-static long fail_at;   /* the request that fails (1-based); 0: none */
-static long n_failed;  /* requests failed on purpose */
+static int armed;        /* count and fail only between hook_arm and hook_disarm */
+static long n_allocs;    /* allocation requests while armed */
+static long fail_at;     /* the request that fails (1-based); 0: none */
+static long n_failed;    /* requests failed on purpose */
 static long n_unchecked; /* requests made inside GSL's unchecked steppers (below), not failed */
-static long live;      /* blocks allocated through the hook and not freed */
+static long live;        /* blocks allocated through the hook and not freed */
 
 /* Check (linked statically on Debian) allocates too, in its assertions: the scenarios run
  * between hook_arm and hook_disarm make none, and record what they find in `violation`. */
@@ -60,8 +61,8 @@ static void hook_disarm(void)
  * and crashes in LU_decomp_L3 on a NULL; msbdf_alloc also leaks on one of its paths. No caller
  * can repair that from outside (the states are private to GSL), so allocations inside these
  * steppers' alloc and apply are made but never failed, and are counted apart. */
-static const char *const gsl_unchecked[] = {"bsimp", "rk1imp", "rk2imp", "rk4imp", "msbdf",
-                                            "msadams"};
+static const char *const gsl_unchecked[] = {"bsimp",  "rk1imp", "rk2imp",
+                                            "rk4imp", "msbdf",  "msadams"};
 static int in_unchecked; /* inside such a stepper */
 
 static int unchecked(const gsl_odeiv2_step_type *T)
@@ -73,8 +74,8 @@ static int unchecked(const gsl_odeiv2_step_type *T)
 }
 
 gsl_odeiv2_step *__real_gsl_odeiv2_step_alloc(const gsl_odeiv2_step_type *T, size_t dim);
-int __real_gsl_odeiv2_step_apply(gsl_odeiv2_step *s, double t, double h, double y[],
-                                 double yerr[], const double dydt_in[], double dydt_out[],
+int __real_gsl_odeiv2_step_apply(gsl_odeiv2_step *s, double t, double h, double y[], double yerr[],
+                                 const double dydt_in[], double dydt_out[],
                                  const gsl_odeiv2_system *sys);
 
 gsl_odeiv2_step *__wrap_gsl_odeiv2_step_alloc(const gsl_odeiv2_step_type *T, size_t dim)
@@ -86,8 +87,8 @@ gsl_odeiv2_step *__wrap_gsl_odeiv2_step_alloc(const gsl_odeiv2_step_type *T, siz
     return s;
 }
 
-int __wrap_gsl_odeiv2_step_apply(gsl_odeiv2_step *s, double t, double h, double y[],
-                                 double yerr[], const double dydt_in[], double dydt_out[],
+int __wrap_gsl_odeiv2_step_apply(gsl_odeiv2_step *s, double t, double h, double y[], double yerr[],
+                                 const double dydt_in[], double dydt_out[],
                                  const gsl_odeiv2_system *sys)
 {
     int skip = unchecked(s->type);
@@ -139,9 +140,9 @@ void __wrap_free(void *p)
 
 static char violation[256]; /* the first broken promise of a scenario, or "" */
 
-#define NOTE(...) \
-    do { \
-        if (violation[0] == '\0') \
+#define NOTE(...)                                               \
+    do {                                                        \
+        if (violation[0] == '\0')                               \
             snprintf(violation, sizeof violation, __VA_ARGS__); \
     } while (0)
 
@@ -153,8 +154,8 @@ static char gsl_handler_reason[256];
 static void count_gsl_error(const char *reason, const char *file, int line, int gsl_errno)
 {
     gsl_handler_calls++;
-    snprintf(gsl_handler_reason, sizeof gsl_handler_reason, "%s:%d: %s (GSL error %d)", file,
-             line, reason, gsl_errno);
+    snprintf(gsl_handler_reason, sizeof gsl_handler_reason, "%s:%d: %s (GSL error %d)", file, line,
+             reason, gsl_errno);
 }
 
 /* ---- Scenarios: each runs its calls, frees what it made, returns the first failure ---------- */
@@ -167,8 +168,9 @@ static void dense_w(double W[M_DENSE * M_DENSE])
 {
     for (size_t i = 0; i < M_DENSE; i++)
         for (size_t j = 0; j < M_DENSE; j++)
-            W[i * M_DENSE + j] = i == j ? 2.385 + 0.25 * (double)i
-                                 : (i + 1 == j || j + 1 == i) ? -0.731 : 0.0;
+            W[i * M_DENSE + j] = i == j                       ? 2.385 + 0.25 * (double)i
+                                 : (i + 1 == j || j + 1 == i) ? -0.731
+                                                              : 0.0;
 }
 
 static int ctx_create_free(void)
@@ -277,7 +279,7 @@ static int exact_solve(void)
 struct tally {
     long cases, enomem, ok;
     long unreached, bad_status, unrecorded, aborts, leaks; /* each must stay 0 */
-    char first[512]; /* the first of those, described */
+    char first[512];                                       /* the first of those, described */
 };
 /* One run of scenario with the k-th allocation failing (none for k = 0): its status, and in
  * *made the allocations it asked for, *failed those refused. */
@@ -294,11 +296,11 @@ static int run_case(int (*scenario)(void), long k, long *made, long *failed)
 }
 
 /* Counts a broken promise in *count and keeps the first description. */
-#define BROKEN(t, count, ...) \
-    do { \
-        (t).count++; \
-        if ((t).first[0] == '\0') \
-            snprintf((t).first, sizeof (t).first, __VA_ARGS__); \
+#define BROKEN(t, count, ...)                                  \
+    do {                                                       \
+        (t).count++;                                           \
+        if ((t).first[0] == '\0')                              \
+            snprintf((t).first, sizeof(t).first, __VA_ARGS__); \
     } while (0)
 
 /* Runs scenario with no failure, then with the k-th allocation failing for every k; every
@@ -326,8 +328,10 @@ static struct tally fail_each_allocation(const char *name, int (*scenario)(void)
         if (violation[0] != '\0')
             BROKEN(t, unrecorded, "allocation %ld of %ld failed: %s", k, n, violation);
         if (gsl_handler_calls != 0)
-            BROKEN(t, aborts, "allocation %ld of %ld failed: GSL's error handler was called "
-                   "(%s); GSL's default handler aborts", k, n, gsl_handler_reason);
+            BROKEN(t, aborts,
+                   "allocation %ld of %ld failed: GSL's error handler was called "
+                   "(%s); GSL's default handler aborts",
+                   k, n, gsl_handler_reason);
         if (live != live_before)
             BROKEN(t, leaks, "allocation %ld of %ld failed: %ld block(s) leaked", k, n,
                    live - live_before);
@@ -409,7 +413,8 @@ static const int systems[] = {FRICREG_SYSTEM_OSCILLATOR, FRICREG_SYSTEM_CHAIN,
 
 START_TEST(test_sim_run)
 {
-    int system = systems[_i / (int)N_INTEGRATORS], integrator = integrators[_i % (int)N_INTEGRATORS];
+    int system = systems[_i / (int)N_INTEGRATORS],
+        integrator = integrators[_i % (int)N_INTEGRATORS];
     /* Fixed steps for rk4 and rk4imp (with the step guard's eigenvalue problem for rk4 on the
      * coupled two-block W), adaptive ones for the rest; a few steps are enough, every
      * allocation happens before the first. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* consumer.c — a user's program built against an installed fricreg only (tests/install.sh).
  * Exits 0 if the installed headers and library agree and give law (4)'s force balance. */
 #include <stdio.h>

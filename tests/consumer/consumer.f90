@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
 ! consumer.f90 — a user's Fortran program built against an installed fricreg only
 ! (tests/install.sh): module fricreg from the compiler-tagged include folder.
 program consumer

@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
 ! probe_arity.f90 — one argument too many for fricreg_ctx_set_law: must not compile.
 program probe_arity
   use fricreg_c

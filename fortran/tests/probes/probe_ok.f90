@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
 ! probe_ok.f90 — calls of the generated interfaces that are right: must compile. The probes
 ! probe_arity.f90 and probe_type.f90 differ from it in one argument each and must not.
 program probe_ok

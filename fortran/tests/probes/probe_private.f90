@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
 ! probe_private.f90 — error_record is module fricreg's internal plumbing, private by default:
 ! `use fricreg, only: error_record` must not compile.
 program probe_private

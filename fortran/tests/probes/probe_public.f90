@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
 ! probe_public.f90 — what fortran/README.md says `use fricreg` gives, by name (the core part,
 ! which every build has): must compile. probe_private.f90 names an internal helper and must not.
 program probe_public

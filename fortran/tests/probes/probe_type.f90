@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
 ! probe_type.f90 — m of fricreg_ctx_create (size_t) passed as a default integer: must not
 ! compile (a 4-byte value where C reads 8 bytes is the drift the generated interfaces prevent).
 program probe_type
