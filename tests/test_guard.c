@@ -16,7 +16,10 @@
  *       oscillator, chain: W_in = ∫ G v_1 dt = G x_1 |_0^t - ∫ G' x_1 dt, G = a sin(omega t);
  *       two blocks: W_in = ∫ f_1 udot dt with f_1 = (v1 + v2)' + x1 + k x2 (momentum), so
  *       W_in = udot (v1 + v2) |_0^t + ∫ (udot (x1 + k x2) - uddot (v1 + v2)) dt.
- *     tol = 1% of the scale E(0) + max E + D of a fine reference run.
+ *     tol = 1% of the scale E(0) + max E + D of a fine reference run. A Karnopp run over it is
+ *     judged against the same stepper, system and eps at dt/20 instead (karnopp_fine): its
+ *     E - E0 - W_in at most the fine run's + tol, since that law pushes inside its band and
+ *     its D jumps at the band edge.
  *   stick: the stick the reference holds is held. Per contact, the near-stick time fraction of
  *     the last cycle is at most 0.05 below the reference's (rk4, dt = 0.0005 or less, the same
  *     eps); for the unforced oscillator (x0 = 2.75, at rest from t = pi in |x| <= mun) in
@@ -205,21 +208,23 @@ static double param_or(fricreg_sim *sim, int param, double fallback)
     return value;
 }
 
-static fricreg_sim *make(const struct config *c, int law, int stepper, double dt)
+static fricreg_sim *make(const struct config *c, int law, int stepper, double dt, double eps)
 {
     fricreg_sim *sim = NULL;
     ck_assert_int_eq(fricreg_sim_create(c->system, &sim), FRICREG_OK);
     for (int k = 0; k < c->nparams; k++)
         ck_assert_int_eq(fricreg_sim_set_param(sim, c->param[k], c->value[k]), FRICREG_OK);
-    ck_assert_int_eq(fricreg_sim_set_law(sim, law, c->eps), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_law(sim, law, eps), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_set_partition(sim, c->partition), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_set_integrator(sim, stepper, dt, 0.0, 0.0), FRICREG_OK);
     return sim;
 }
 
-static struct outcome run(const struct config *c, int law, int stepper, double dt, int guarded)
+/* eps < 0: the config's */
+static struct outcome run_eps(const struct config *c, int law, int stepper, double dt, double eps,
+                              int guarded)
 {
-    fricreg_sim *sim = make(c, law, stepper, dt);
+    fricreg_sim *sim = make(c, law, stepper, dt, eps < 0.0 ? c->eps : eps);
     double T = 0.0;
     fricreg_sim_get_value(sim, FRICREG_VALUE_PERIOD, &T);
     struct watch w = {.c = c, .sim = sim};
@@ -249,6 +254,11 @@ static struct outcome run(const struct config *c, int law, int stepper, double d
     return o;
 }
 
+static struct outcome run(const struct config *c, int law, int stepper, double dt, int guarded)
+{
+    return run_eps(c, law, stepper, dt, -1.0, guarded);
+}
+
 /* The largest dt the guard accepts, to 1e-9 relative (0: none; the check runs before any step,
  * so a refused probe costs nothing and an accepted one runs a single step). */
 static double guard_bound(const struct config *c, int law, int stepper)
@@ -256,7 +266,7 @@ static double guard_bound(const struct config *c, int law, int stepper)
     double lo = 1e-7, hi = 100.0;
     for (int it = 0; it < 80 && hi > lo * (1.0 + 1e-9); it++) {
         double mid = sqrt(lo * hi);
-        fricreg_sim *sim = make(c, law, stepper, mid);
+        fricreg_sim *sim = make(c, law, stepper, mid, c->eps);
         int status = fricreg_sim_run(sim, 0.5 * mid);
         fricreg_sim_free(sim);
         if (status == FRICREG_ESTEP)
@@ -285,15 +295,23 @@ static int energy_by_balance(int law)
     return law != FRICREG_LAW_COULOMB && law != FRICREG_LAW_FORCE_BALANCE;
 }
 
-/* Why a run fails the checks against its reference, or NULL if it passes. */
+/* Why a run fails the checks against its reference, or NULL if it passes. `fine`, for Karnopp
+ * only: the same system, stepper and eps at dt/20 (see karnopp_fine); the energy check is then
+ * E - E0 - W_in against the fine run's own. */
 static const char *judge(const struct config *c, int law, const struct outcome *o,
-                         const struct outcome *ref)
+                         const struct outcome *ref, const struct outcome *fine)
 {
     if (o->status != FRICREG_OK)
         return "the run failed";
     double tol = 0.01 * (ref->E0 + ref->E_max + fabs(ref->D_total));
-    if ((energy_by_balance(law) ? o->balance : o->gain) > tol)
+    if (fine != NULL) {
+        if (fine->status != FRICREG_OK)
+            return "the fine run failed";
+        if (o->gain > fine->gain + tol)
+            return ENERGY_GAINED;
+    } else if ((energy_by_balance(law) ? o->balance : o->gain) > tol) {
         return ENERGY_GAINED;
+    }
     if (c->system == FRICREG_SYSTEM_OSCILLATOR && o->x_max_late > o->mun + o->eps + 1e-3)
         return "left the oscillator's rest zone";
     if (!law_jumps(law) && c->eps > 0.0)
@@ -301,6 +319,21 @@ static const char *judge(const struct config *c, int law, const struct outcome *
             if (o->frac[i] < ref->frac[i] - 0.05)
                 return "left a stick";
     return NULL;
+}
+
+/* Karnopp over the balance tolerance: judged against the law itself at the same eps. Inside its
+ * band Karnopp sets f = mun sat(f_eq/mun) and can push (f v > 0), so E - E0 - W_in > 0 is the
+ * law's own (the fine run's, 0.45 of scale 3.4 on the two blocks under the paper's eps); and its
+ * power jumps at the band edge, so D, like (1)'s and (2)'s, is a first-order quadrature and
+ * overcounts at a coarse step (the oscillator, paper's eps = 1.41, rk8pd: D = 3.50 at dt = 0.71,
+ * 1.72 at dt/20). So the balance excess of such a run (up to 0.42, 10x its tol) is bookkeeping:
+ * at dt/20 it is below 0.006 in all 15 runs the guard accepts, and it falls with dt. What
+ * measures the step is the physical gain against the fine run's: E - E0 - W_in <= the fine
+ * run's + tol (all 15 are at or below the fine run's). */
+static struct outcome karnopp_fine(const struct config *c, int stepper, double dt,
+                                   const struct outcome *o)
+{
+    return run_eps(c, FRICREG_LAW_KARNOPP, stepper, dt / 20.0, o->eps, 0);
 }
 
 static const double short_multipliers[] = {0.5, 0.75, 0.9, 1.0, 1.1, 1.25, 1.5};
@@ -314,7 +347,8 @@ START_TEST(no_false_accept)
     const double *mult = long_mode ? long_multipliers : short_multipliers;
     size_t nmult = long_mode ? sizeof long_multipliers / sizeof long_multipliers[0]
                              : sizeof short_multipliers / sizeof short_multipliers[0];
-    int accepted = 0, refused = 0, false_accepts = 0, false_rejects = 0, karnopp_open = 0;
+    int accepted = 0, refused = 0, false_accepts = 0, false_rejects = 0, karnopp_fine_runs = 0;
+    int verbose = getenv("FRICREG_GUARD_VERBOSE") != NULL;
     for (size_t ci = 0; ci < nconfigs; ci++) {
         const struct config *c = &configs[ci];
         for (int law = 1; law <= NLAWS; law++) {
@@ -334,15 +368,20 @@ START_TEST(no_false_accept)
                     double dt = mult[k] * bound;
                     int guarded = mult[k] <= 1.0;
                     struct outcome o = run(c, law, stepper, dt, 0);
-                    const char *why = judge(c, law, &o, &ref);
-                    /* Karnopp's band pushes (f = f_eq inside it) and its D jumps at the band
-                     * edge, so neither energy check holds for it exactly: reported, open. */
-                    int open = law == FRICREG_LAW_KARNOPP && why != NULL &&
-                               !strcmp(why, ENERGY_GAINED);
-                    if (guarded && open) {
-                        accepted++;
-                        karnopp_open++;
-                    } else if (guarded) {
+                    const char *why = judge(c, law, &o, &ref, NULL);
+                    if (law == FRICREG_LAW_KARNOPP && why != NULL && !strcmp(why, ENERGY_GAINED)) {
+                        struct outcome fine = karnopp_fine(c, stepper, dt, &o);
+                        why = judge(c, law, &o, &ref, &fine);
+                        karnopp_fine_runs++;
+                        if (verbose)
+                            fprintf(stderr,
+                                    "karnopp: %s, %s, dt = %.4g (%.2fx), eps = %.4g: balance "
+                                    "%.3g (fine %.3g), gain %.3g (fine %.3g)%s%s\n",
+                                    c->name, fricreg_integrator_name(stepper), dt, mult[k], o.eps,
+                                    o.balance, fine.balance, o.gain, fine.gain,
+                                    guarded ? "" : ", refused", why ? ": fails" : "");
+                    }
+                    if (guarded) {
                         accepted++;
                         if (why != NULL) {
                             false_accepts++;
@@ -361,9 +400,9 @@ START_TEST(no_false_accept)
             }
         }
     }
-    printf("guard sweep: %d accepted runs, %d false accepts (and %d Karnopp runs over the energy "
-           "tolerance, open); %d refused runs, %d false rejects\n",
-           accepted, false_accepts, karnopp_open, refused, false_rejects);
+    printf("guard sweep: %d accepted runs, %d false accepts; %d refused runs, %d false rejects (%d "
+           "Karnopp runs over the balance tolerance judged against dt/20)\n",
+           accepted, false_accepts, refused, false_rejects, karnopp_fine_runs);
     ck_assert_int_eq(false_accepts, 0);
     ck_assert_int_gt(accepted, 0);
 }
@@ -376,7 +415,10 @@ END_TEST
  *   - the issue's rk8pd with Coulomb at dt = 3.7 (its imaginary-axis bound), the paper's eps:
  *     the oscillator's energy grows past its initial 3.78;
  *   - the issue's two blocks, mun = (10, 5), eps = 0.02, the paper's partition, RK4 at
- *     dt = 0.0025: energy put in as the upper interface leaves its stick (D = 1.17 for 0). */
+ *     dt = 0.0025: energy put in as the upper interface leaves its stick (D = 1.17 for 0).
+ * And Karnopp's check against its fine run (karnopp_fine) still sees an unstable step: the
+ * oscillator, paper's eps, rk2 at 2x its bound (dt = 1.414, eps = 2.83): E - E0 - W_in = 1.29
+ * (the fine run's 0), where the balance shows nothing (its D overcounts as much). */
 START_TEST(checks_catch_the_old_false_accepts)
 {
     static const struct {
@@ -393,12 +435,21 @@ START_TEST(checks_catch_the_old_false_accepts)
         struct outcome ref = run(c, cases[k].law, FRICREG_INT_RK4, 0.0002, 1);
         ck_assert_int_eq(ref.status, FRICREG_OK);
         struct outcome o = run(c, cases[k].law, cases[k].stepper, cases[k].dt, 0);
-        const char *why = judge(c, cases[k].law, &o, &ref);
+        const char *why = judge(c, cases[k].law, &o, &ref, NULL);
         ck_assert_msg(why != NULL, "case %zu passes the checks", k);
         ck_assert_msg(!strcmp(why, cases[k].why), "case %zu: %s", k, why);
         ck_assert_int_eq(run(c, cases[k].law, cases[k].stepper, cases[k].dt, 1).status,
                          FRICREG_ESTEP);
     }
+    const struct config *c = &configs[2];
+    double dt = 2.0 * 0.70710678;
+    struct outcome ref = run(c, FRICREG_LAW_KARNOPP, FRICREG_INT_RK4, 0.0002, 1);
+    struct outcome o = run(c, FRICREG_LAW_KARNOPP, FRICREG_INT_RK2, dt, 0);
+    struct outcome fine = karnopp_fine(c, FRICREG_INT_RK2, dt, &o);
+    const char *why = judge(c, FRICREG_LAW_KARNOPP, &o, &ref, &fine);
+    ck_assert_msg(why != NULL && !strcmp(why, ENERGY_GAINED), "Karnopp, rk2 at 2x: %s",
+                  why ? why : "passes");
+    ck_assert_int_eq(run(c, FRICREG_LAW_KARNOPP, FRICREG_INT_RK2, dt, 1).status, FRICREG_ESTEP);
 }
 END_TEST
 
