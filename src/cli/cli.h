@@ -32,6 +32,11 @@ struct cli_run {
 /* options.c: parses argv (after the subcommand) into run; on error prints one line naming the
  * option to stderr and returns CLI_EXIT_USAGE. */
 int cli_parse_run(int system, int argc, char **argv, struct cli_run *run);
+/* Prints "fricreg-sim: OPTION: WHAT" on stderr and returns CLI_EXIT_USAGE. */
+int cli_usage_error(const char *option, const char *what);
+/* The option at argv[*k] and its value ("--name=value", or the next argument, advancing *k).
+ * Returns 0, or CLI_EXIT_USAGE (message printed) for a non-option or a missing value. */
+int cli_next_option(int argc, char **argv, int *k, char **option, char **value);
 const char *cli_system_name(int system);
 /* Each system's parameter options with the library's defaults, one line per system. */
 void cli_print_param_defaults(FILE *out);

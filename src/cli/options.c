@@ -72,10 +72,27 @@ void cli_print_param_defaults(FILE *out)
     fricreg_sim_free(sim);
 }
 
-static int usage_error(const char *option, const char *what)
+int cli_usage_error(const char *option, const char *what)
 {
     fprintf(stderr, "fricreg-sim: %s: %s\n", option, what);
     return CLI_EXIT_USAGE;
+}
+
+int cli_next_option(int argc, char **argv, int *k, char **option, char **value)
+{
+    *option = argv[*k];
+    if (strncmp(*option, "--", 2) != 0)
+        return cli_usage_error(*option, "unexpected argument");
+    char *eq = strchr(*option, '=');
+    if (eq != NULL) { /* --name=value */
+        *eq = '\0';
+        *value = eq + 1;
+    } else if (*k + 1 < argc) {
+        *value = argv[++*k];
+    } else {
+        return cli_usage_error(*option, "missing value");
+    }
+    return 0;
 }
 
 /* A finite double, the whole of text. strtod sets ERANGE on underflow too (1e-310, 1e-400),
@@ -87,11 +104,11 @@ static int parse_double(const char *option, const char *text, double *value)
     errno = 0;
     *value = strtod(text, &end);
     if (end == text || *end != '\0')
-        return usage_error(option, "not a number");
+        return cli_usage_error(option, "not a number");
     if (errno == ERANGE && fabs(*value) == HUGE_VAL)
-        return usage_error(option, "out of the range of a double");
+        return cli_usage_error(option, "out of the range of a double");
     if (!isfinite(*value))
-        return usage_error(option, "not a finite number");
+        return cli_usage_error(option, "not a finite number");
     return 0;
 }
 
@@ -99,7 +116,7 @@ static int parse_positive(const char *option, const char *text, double *value)
 {
     int status = parse_double(option, text, value);
     if (status == 0 && !(*value > 0.0))
-        return usage_error(option, "must be > 0");
+        return cli_usage_error(option, "must be > 0");
     return status;
 }
 
@@ -107,7 +124,7 @@ static int parse_nonnegative(const char *option, const char *text, double *value
 {
     int status = parse_double(option, text, value);
     if (status == 0 && !(*value >= 0.0))
-        return usage_error(option, "must be >= 0");
+        return cli_usage_error(option, "must be >= 0");
     return status;
 }
 
@@ -119,7 +136,7 @@ static int parse_law(const char *text, int *law)
     char names[256], what[300];
     snprintf(what, sizeof what, "unknown law (%s)",
              cli_names(names, sizeof names, fricreg_law_name, ", "));
-    return usage_error("--law", what);
+    return cli_usage_error("--law", what);
 }
 
 static int parse_param(int system, const char *option, const char *text, struct cli_run *run)
@@ -135,21 +152,21 @@ static int parse_param(int system, const char *option, const char *text, struct 
         /* The library's own check gives the range (e.g. omega > 0, n integer >= 2). */
         fricreg_sim *probe = NULL;
         if (fricreg_sim_create(system, &probe) != FRICREG_OK)
-            return usage_error(option, "out of memory");
+            return cli_usage_error(option, "out of memory");
         status = fricreg_sim_set_param(probe, p->param, value);
         if (status != FRICREG_OK) {
-            status = usage_error(option, fricreg_sim_errmsg(probe));
+            status = cli_usage_error(option, fricreg_sim_errmsg(probe));
             fricreg_sim_free(probe);
             return status;
         }
         fricreg_sim_free(probe);
         if (run->nparams == (int)(sizeof run->params / sizeof run->params[0]))
-            return usage_error(option, "too many parameters");
+            return cli_usage_error(option, "too many parameters");
         run->params[run->nparams].param = p->param;
         run->params[run->nparams++].value = value;
         return 0;
     }
-    return usage_error(option, "unknown option for this system (see fricreg-sim --help)");
+    return cli_usage_error(option, "unknown option for this system (see fricreg-sim --help)");
 }
 
 /* --partition paper|consistent (the two blocks only: the other systems have no coupled
@@ -157,13 +174,13 @@ static int parse_param(int system, const char *option, const char *text, struct 
 static int parse_partition(int system, const char *text, struct cli_run *run)
 {
     if (system != FRICREG_SYSTEM_TWOBLOCK)
-        return usage_error("--partition", "only twoblock has coupled contacts");
+        return cli_usage_error("--partition", "only twoblock has coupled contacts");
     if (strcmp(text, "consistent") == 0)
         run->partition = FRICREG_PARTITION_CONSISTENT;
     else if (strcmp(text, "paper") == 0)
         run->partition = FRICREG_PARTITION_PAPER;
     else
-        return usage_error("--partition", "expected paper or consistent");
+        return cli_usage_error("--partition", "expected paper or consistent");
     return 0;
 }
 
@@ -179,7 +196,7 @@ static int parse_common(const char *option, const char *text, struct cli_run *ru
         char names[256], what[300];
         snprintf(what, sizeof what, "unknown integrator (%s)",
                  cli_names(names, sizeof names, fricreg_integrator_name, ", "));
-        return usage_error(option, what);
+        return cli_usage_error(option, what);
     }
     if (strcmp(option, "--dt") == 0)
         return parse_positive(option, text, &run->dt);
@@ -195,7 +212,7 @@ static int parse_common(const char *option, const char *text, struct cli_run *ru
         double cycles;
         int status = parse_positive(option, text, &cycles);
         if (status == 0 && (cycles != floor(cycles) || cycles > 1e7))
-            return usage_error(option, "must be a whole number from 1 to 10^7");
+            return cli_usage_error(option, "must be a whole number from 1 to 10^7");
         run->cycles = (int)cycles;
         return status;
     }
@@ -205,7 +222,7 @@ static int parse_common(const char *option, const char *text, struct cli_run *ru
         else if (strcmp(text, "trajectory") == 0)
             run->output = CLI_TRAJECTORY;
         else
-            return usage_error(option, "expected summary or trajectory");
+            return cli_usage_error(option, "expected summary or trajectory");
         return 0;
     }
     return -1;
@@ -222,18 +239,10 @@ int cli_parse_run(int system, int argc, char **argv, struct cli_run *run)
                             .partition = FRICREG_PARTITION_CONSISTENT};
     int cycles_given = 0;
     for (int k = 0; k < argc; k++) {
-        char *option = argv[k], *value = NULL;
-        if (strncmp(option, "--", 2) != 0)
-            return usage_error(option, "unexpected argument");
-        char *eq = strchr(option, '=');
-        if (eq != NULL) { /* --name=value */
-            *eq = '\0';
-            value = eq + 1;
-        } else if (k + 1 < argc) {
-            value = argv[++k];
-        } else {
-            return usage_error(option, "missing value");
-        }
+        char *option = NULL, *value = NULL;
+        int split = cli_next_option(argc, argv, &k, &option, &value);
+        if (split != 0)
+            return split;
         cycles_given |= strcmp(option, "--cycles") == 0;
         int status = strcmp(option, "--partition") == 0 ? parse_partition(system, value, run)
                                                         : parse_common(option, value, run);
@@ -243,7 +252,7 @@ int cli_parse_run(int system, int argc, char **argv, struct cli_run *run)
             return status;
     }
     if (run->t_end > 0.0 && cycles_given)
-        return usage_error("--t-end", "give --t-end or --cycles, not both");
+        return cli_usage_error("--t-end", "give --t-end or --cycles, not both");
     return 0;
 }
 
@@ -258,10 +267,10 @@ int cli_parse_exact(int argc, char **argv, struct cli_run *run)
             size_t len = strlen(refused[r]);
             if (strncmp(argv[k], refused[r], len) == 0 &&
                 (argv[k][len] == '\0' || argv[k][len] == '='))
-                return usage_error(refused[r], "not an option of exact (closed-form solution)");
+                return cli_usage_error(refused[r], "not an option of exact (closed-form solution)");
         }
     int status = cli_parse_run(FRICREG_SYSTEM_OSCILLATOR, argc, argv, run);
     if (status == 0 && run->output != CLI_SUMMARY)
-        return usage_error("--output", "exact writes a summary only");
+        return cli_usage_error("--output", "exact writes a summary only");
     return status;
 }

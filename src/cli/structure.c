@@ -29,19 +29,13 @@ struct structure_input {
     double t0, dt_rec;
 };
 
-static int usage_error(const char *option, const char *what)
-{
-    fprintf(stderr, "fricreg-sim: %s: %s\n", option, what);
-    return CLI_EXIT_USAGE;
-}
-
 static int parse_number(const char *option, const char *text, double *value)
 {
     char *end = NULL;
     errno = 0;
     *value = strtod(text, &end);
     if (end == text || *end != '\0' || errno == ERANGE || !isfinite(*value))
-        return usage_error(option, "not a finite number");
+        return cli_usage_error(option, "not a finite number");
     return 0;
 }
 
@@ -53,13 +47,13 @@ static int parse_rayleigh(const char *text, struct structure_options *o)
     errno = 0;
     o->a0 = strtod(text, &end);
     if (end == text || *end != ',' || errno == ERANGE)
-        return usage_error("--rayleigh", "expected A0,A1 (two numbers, comma-separated)");
+        return cli_usage_error("--rayleigh", "expected A0,A1 (two numbers, comma-separated)");
     const char *second = end + 1;
     o->a1 = strtod(second, &end);
     if (end == second || *end != '\0' || errno == ERANGE || !isfinite(o->a0) || !isfinite(o->a1))
-        return usage_error("--rayleigh", "expected A0,A1 (two finite numbers)");
+        return cli_usage_error("--rayleigh", "expected A0,A1 (two finite numbers)");
     if (o->a0 < 0.0 || o->a1 < 0.0)
-        return usage_error("--rayleigh", "A0 and A1 must be >= 0");
+        return cli_usage_error("--rayleigh", "A0 and A1 must be >= 0");
     o->rayleigh_given = 1;
     return 0;
 }
@@ -78,7 +72,7 @@ static int parse_integrator(const char *text, struct structure_options *o)
         char names[256], what[320];
         snprintf(what, sizeof what, "unknown integrator (newmark, hht, central, %s)",
                  cli_names(names, sizeof names, fricreg_integrator_name, ", "));
-        return usage_error("--integrator", what);
+        return cli_usage_error("--integrator", what);
     }
     return 0;
 }
@@ -115,7 +109,7 @@ static int parse_option(const char *option, const char *text, struct structure_o
         char names[256], what[300];
         snprintf(what, sizeof what, "unknown law (%s)",
                  cli_names(names, sizeof names, fricreg_law_name, ", "));
-        return usage_error(option, what);
+        return cli_usage_error(option, what);
     }
     if (strcmp(option, "--output") == 0) {
         if (strcmp(text, "summary") == 0)
@@ -123,7 +117,7 @@ static int parse_option(const char *option, const char *text, struct structure_o
         else if (strcmp(text, "trajectory") == 0)
             o->output = CLI_TRAJECTORY;
         else
-            return usage_error(option, "expected summary or trajectory");
+            return cli_usage_error(option, "expected summary or trajectory");
         return 0;
     }
     static const char *const positive[] = {"--eps", "--dt", "--t-end"};
@@ -132,19 +126,19 @@ static int parse_option(const char *option, const char *text, struct structure_o
         if (strcmp(option, positive[k]) == 0) {
             if ((status = parse_number(option, text, positive_slot[k])) != 0)
                 return status;
-            return *positive_slot[k] > 0.0 ? 0 : usage_error(option, "must be > 0");
+            return *positive_slot[k] > 0.0 ? 0 : cli_usage_error(option, "must be > 0");
         }
     if (strcmp(option, "--rtol") == 0 || strcmp(option, "--atol") == 0) {
         double *slot = option[2] == 'r' ? &o->rtol : &o->atol;
         if ((status = parse_number(option, text, slot)) != 0)
             return status;
-        return *slot >= 0.0 ? 0 : usage_error(option, "must be >= 0");
+        return *slot >= 0.0 ? 0 : cli_usage_error(option, "must be >= 0");
     }
     if (strcmp(option, "--alpha") == 0) {
         o->alpha_given = 1;
         return parse_number(option, text, &o->alpha);
     }
-    return usage_error(option, "unknown option for structure (see fricreg-sim --help)");
+    return cli_usage_error(option, "unknown option for structure (see fricreg-sim --help)");
 }
 
 /* Options that need others, or exclude them. */
@@ -154,21 +148,22 @@ static int check_options(const struct structure_options *o)
     const char *given[] = {o->mass, o->stiffness, o->contacts, o->mun};
     for (size_t k = 0; k < 4; k++)
         if (given[k] == NULL)
-            return usage_error(required[k], "missing (a file is required)");
+            return cli_usage_error(required[k], "missing (a file is required)");
     if (o->scheme == SCHEME_NONE)
-        return usage_error("--integrator", "missing (newmark, hht, central or a GSL stepper)");
+        return cli_usage_error("--integrator", "missing (newmark, hht, central or a GSL stepper)");
     if (o->dt == 0.0)
-        return usage_error("--dt", "missing");
+        return cli_usage_error("--dt", "missing");
     if (o->t_end == 0.0)
-        return usage_error("--t-end", "missing");
+        return cli_usage_error("--t-end", "missing");
     if (o->t_end / o->dt > 2147483647.0)
-        return usage_error("--dt", "more than 2^31 steps to --t-end");
+        return cli_usage_error("--dt", "more than 2^31 steps to --t-end");
     if (o->damping != NULL && o->rayleigh_given)
-        return usage_error("--rayleigh", "give --damping or --rayleigh, not both");
+        return cli_usage_error("--rayleigh", "give --damping or --rayleigh, not both");
     if (o->alpha_given && o->scheme != SCHEME_HHT)
-        return usage_error("--alpha", "only --integrator hht has alpha");
+        return cli_usage_error("--alpha", "only --integrator hht has alpha");
     if ((o->rtol > 0.0 || o->atol > 0.0) && o->scheme != SCHEME_GSL)
-        return usage_error(o->rtol > 0.0 ? "--rtol" : "--atol", "only GSL's steppers are adaptive");
+        return cli_usage_error(o->rtol > 0.0 ? "--rtol" : "--atol",
+                               "only GSL's steppers are adaptive");
     return 0;
 }
 
@@ -178,19 +173,10 @@ static int parse_structure(int argc, char **argv, struct structure_options *o)
                                     .alpha = -0.05,
                                     .output = CLI_SUMMARY};
     for (int k = 0; k < argc; k++) {
-        char *option = argv[k], *value = NULL;
-        if (strncmp(option, "--", 2) != 0)
-            return usage_error(option, "unexpected argument");
-        char *eq = strchr(option, '=');
-        if (eq != NULL) { /* --name=value */
-            *eq = '\0';
-            value = eq + 1;
-        } else if (k + 1 < argc) {
-            value = argv[++k];
-        } else {
-            return usage_error(option, "missing value");
-        }
-        int status = parse_option(option, value, o);
+        char *option = NULL, *value = NULL;
+        int status = cli_next_option(argc, argv, &k, &option, &value);
+        if (status == 0)
+            status = parse_option(option, value, o);
         if (status != 0)
             return status;
     }
@@ -340,10 +326,10 @@ static int set_scheme(fricreg_structure *s, const struct structure_options *o)
 {
     int status = FRICREG_OK;
     if (o->scheme == SCHEME_HHT && (status = fricreg_structure_set_hht(s, o->alpha)) != 0)
-        return usage_error("--alpha", fricreg_structure_errmsg(s));
+        return cli_usage_error("--alpha", fricreg_structure_errmsg(s));
     if (o->scheme == SCHEME_CENTRAL)
         status = fricreg_structure_set_central_difference(s);
-    return status == FRICREG_OK ? 0 : usage_error("--integrator", fricreg_structure_errmsg(s));
+    return status == FRICREG_OK ? 0 : cli_usage_error("--integrator", fricreg_structure_errmsg(s));
 }
 
 static int setup(const struct structure_options *o, const struct structure_input *in,
@@ -357,7 +343,7 @@ static int setup(const struct structure_options *o, const struct structure_input
     if (in->C != NULL && (status = fricreg_structure_set_damping(s, in->n, in->C)) != FRICREG_OK)
         return model_error(s, status, "--damping", o->damping, in->n, in->C);
     if (o->rayleigh_given && fricreg_structure_set_rayleigh(s, o->a0, o->a1) != FRICREG_OK)
-        return usage_error("--rayleigh", fricreg_structure_errmsg(s));
+        return cli_usage_error("--rayleigh", fricreg_structure_errmsg(s));
     if ((status = check_contacts(o->contacts, in)) != 0)
         return status;
     if ((status = fricreg_structure_set_contacts(s, in->m, in->n, in->J)) != FRICREG_OK)
@@ -371,20 +357,20 @@ static int setup(const struct structure_options *o, const struct structure_input
     if (in->r == NULL && in->ag != NULL) { /* every DOF translates with the ground */
         double *ones = malloc(in->n * sizeof *ones);
         if (ones == NULL)
-            return usage_error("--ground-accel", "out of memory");
+            return cli_usage_error("--ground-accel", "out of memory");
         for (size_t k = 0; k < in->n; k++)
             ones[k] = 1.0;
         status = fricreg_structure_set_influence(s, in->n, ones);
         free(ones);
         if (status != FRICREG_OK)
-            return usage_error("--ground-accel", fricreg_structure_errmsg(s));
+            return cli_usage_error("--ground-accel", fricreg_structure_errmsg(s));
     }
     if (in->ag != NULL &&
         fricreg_structure_set_ground_accel(s, in->t0, in->dt_rec, in->nrec, in->ag) != 0)
         return model_error(s, FRICREG_EINVAL, "--ground-accel", o->ground, in->n, NULL);
     *eps = o->eps > 0.0 ? o->eps : default_eps(in);
     if (fricreg_structure_set_law(s, o->law, *eps) != FRICREG_OK)
-        return usage_error("--eps", fricreg_structure_errmsg(s));
+        return cli_usage_error("--eps", fricreg_structure_errmsg(s));
     return set_scheme(s, o);
 }
 
@@ -549,7 +535,7 @@ static int run_structure(fricreg_structure *s, const struct structure_options *o
     struct structure_run run = {0};
     double *buf = calloc(3 * in->n + in->m, sizeof *buf);
     if (buf == NULL)
-        return usage_error("structure", "out of memory");
+        return cli_usage_error("structure", "out of memory");
     run.u = buf;
     run.v = buf + in->n;
     run.peak = buf + 2 * in->n;
@@ -591,7 +577,7 @@ int cli_structure(int argc, char **argv, FILE *out)
     fricreg_structure *s = NULL;
     if (fricreg_structure_create(in.n, in.m, &s) != FRICREG_OK) {
         free_input(&in);
-        return usage_error("structure", "cannot create the structure (out of memory)");
+        return cli_usage_error("structure", "cannot create the structure (out of memory)");
     }
     double eps = 0.0;
     status = setup(&o, &in, s, &eps);
