@@ -25,6 +25,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_math.h>
 
+#include "fd_jacobian.h"
 #include "sim_internal.h"
 
 struct fr_jacobian {
@@ -196,30 +197,10 @@ int fr_sim_jacobian(double t, const double y[], double *dfdy, double dfdt[], voi
     return GSL_SUCCESS;
 }
 
-/* Jacobian by forward differences with the step sqrt(DBL_EPSILON) max(|y_j|, 1), kept for
- * systems without linear maps and for comparison. GSL's gsl_multiroot_fdjacobian is not used:
- * its step is relative to |y_j| alone, and at a stick the velocity sits at ~1e-18, where that
- * step is lost in rounding and the Jacobian becomes noise. One column costs one right-hand
- * side; the D column is zero, as nothing depends on D. */
+/* Jacobian by forward differences (fd_jacobian.h), kept for systems without linear maps and
+ * for comparison; the D column is zero, as nothing depends on D. */
 int fr_sim_jacobian_fd(double t, const double y[], double *dfdy, double dfdt[], void *params)
 {
     fricreg_sim *sim = params;
-    size_t dim = 2 * sim->ndof + 1;
-    double *f0 = sim->jac_work, *f1 = f0 + dim, *y1 = f1 + dim;
-    int status = fr_sim_rhs(t, y, f0, sim);
-    memcpy(y1, y, dim * sizeof *y);
-    for (size_t j = 0; status == GSL_SUCCESS && j < dim; j++) {
-        double h = GSL_SQRT_DBL_EPSILON * fmax(fabs(y[j]), 1.0);
-        y1[j] = y[j] + h;
-        status = fr_sim_rhs(t, y1, f1, sim);
-        y1[j] = y[j];
-        for (size_t i = 0; i < dim; i++)
-            dfdy[i * dim + j] = (f1[i] - f0[i]) / h;
-    }
-    double ht = GSL_SQRT_DBL_EPSILON * fmax(fabs(t), 1.0);
-    if (status == GSL_SUCCESS)
-        status = fr_sim_rhs(t + ht, y, f1, sim);
-    for (size_t i = 0; status == GSL_SUCCESS && i < dim; i++)
-        dfdt[i] = (f1[i] - f0[i]) / ht;
-    return status;
+    return fr_fd_jacobian(fr_sim_rhs, sim, 2 * sim->ndof + 1, sim->jac_work, t, y, dfdy, dfdt);
 }

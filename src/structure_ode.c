@@ -16,6 +16,7 @@
 #include <gsl/gsl_linalg.h>
 #include <gsl/gsl_odeiv2.h>
 
+#include "fd_jacobian.h"
 #include "gsl_guard.h"
 #include "integrator.h"
 #include "structure_internal.h"
@@ -59,29 +60,11 @@ static int rhs(double t, const double y[], double dydt[], void *params)
     return GSL_SUCCESS;
 }
 
-/* For the implicit steppers: forward differences with the step sqrt(DBL_EPSILON)
- * max(|y_j|, 1), as the drivers do (a step relative to |y_j| alone is lost at a stick). */
+/* For the implicit steppers: forward differences, as the drivers' (fd_jacobian.h). */
 static int jacobian(double t, const double y[], double *dfdy, double dfdt[], void *params)
 {
     struct ode_run *run = params;
-    size_t dim = run->dim;
-    double *f0 = run->jac_work, *f1 = f0 + dim, *y1 = f1 + dim;
-    int status = rhs(t, y, f0, run);
-    memcpy(y1, y, dim * sizeof *y);
-    for (size_t j = 0; status == GSL_SUCCESS && j < dim; j++) {
-        double h = GSL_SQRT_DBL_EPSILON * fmax(fabs(y[j]), 1.0);
-        y1[j] = y[j] + h;
-        status = rhs(t, y1, f1, run);
-        y1[j] = y[j];
-        for (size_t i = 0; i < dim; i++)
-            dfdy[i * dim + j] = (f1[i] - f0[i]) / h;
-    }
-    double ht = GSL_SQRT_DBL_EPSILON * fmax(fabs(t), 1.0);
-    if (status == GSL_SUCCESS)
-        status = rhs(t + ht, y, f1, run);
-    for (size_t i = 0; status == GSL_SUCCESS && i < dim; i++)
-        dfdt[i] = (f1[i] - f0[i]) / ht;
-    return status;
+    return fr_fd_jacobian(rhs, run, run->dim, run->jac_work, t, y, dfdy, dfdt);
 }
 
 static int check_fixed_step(fricreg_structure *s, const struct fr_integrator *integ, double dt)
