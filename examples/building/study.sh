@@ -42,7 +42,7 @@ echo "exact $exact; peak velocity $("$sim" oscillator $forced --eps 1e-3 --dt 2e
     END { print V }')"
 for law in quinn tanh; do
     for eps in 0.3 0.1 0.03 0.01 0.003; do
-        dt=$(awk -v e=$eps 'BEGIN { d = 0.2 * e; print (d > 0.01 ? 0.01 : d) }')
+        dt=$(awk -v e=$eps 'BEGIN { d = 0.2 * e; if (d > 0.01) d = 0.01; print d }')
         D=$("$sim" oscillator --law $law $forced --eps $eps --dt $dt | last_D)
         echo "$law $eps: $(rel $D $exact)"
     done
