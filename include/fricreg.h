@@ -247,8 +247,10 @@ FRICREG_API int fricreg_ctx_stick_stiffness(fricreg_ctx *ctx, double *lambda);
  *     f_i is the law at (zdot_i, f_eq,i);
  *   - dense W, FRICREG_PARTITION_PAPER: W_SS f_eq,S = -(a_free,S + W_SL f_L), then the law at
  *     (zdot_S, f_eq,S); f jumps when a coupled contact crosses |zdot_j| = eps.
- *  Dense W solves with a pivoted Cholesky LDL^T (GSL) of W_SS or of W_FF on the QP's free set,
- *  kept and reused while that set and W are unchanged (FRICREG_STAT_FACTORIZATIONS).
+ *  Dense W solves with an LDL^T factor of W_SS or of W_FF on the QP's free set, kept while that
+ *  set and W are unchanged; when at most 2 + |set|/8 contacts enter or leave the set it is
+ *  updated, O(|set|^2) per contact (FRICREG_STAT_FACTOR_UPDATES), else, and at least once every
+ *  1000 updates, factored afresh, O(|set|^3) (FRICREG_STAT_FACTORIZATIONS).
  *
  *  m          must equal the context's contact count.
  *  zdot[m]    relative contact velocities.
@@ -261,9 +263,11 @@ FRICREG_API int fricreg_ctx_stick_stiffness(fricreg_ctx *ctx, double *lambda);
  *
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE (NaN/Inf input);
  *  FRICREG_ESINGULAR if the block of W to be factorized (W_SS, or the consistent law's W_FF)
- *  is singular: reciprocal condition number of the Jacobi-scaled block D^-1/2 W D^-1/2 below
- *  1e-12, which happens for redundant contacts (their forces are not unique), whatever the
- *  contacts' units; also (never seen, a safeguard) if the QP's active-set iterations exceed
+ *  is singular: a pivot of its LDL^T factorization (contacts in ascending order) below 1e-12
+ *  times its diagonal entry, d_k < 1e-12 W_kk (for a pair, d_2 / W_22 = 1 - rho^2 with
+ *  rho = W_12 / sqrt(W_11 W_22)), which happens for redundant contacts (their forces are not
+ *  unique), whatever the contacts' units (the ratio does not change when W is scaled by a
+ *  diagonal: diag(1, 1e-14) is regular); also (never seen, a safeguard) if the QP's active-set iterations exceed
  *  100 + 10 |S|. */
 FRICREG_API int fricreg_ctx_eval(fricreg_ctx *ctx, size_t m, const double zdot[],
                                  const double a_free[], double f[], double f_eq[]);
@@ -319,9 +323,12 @@ enum fricreg_stat {
     FRICREG_STAT_FACTORIZATIONS = 2, /**< factorizations of a block of W (W_SS, or W_FF of the
                                           consistent law's free set), by eval or tangent */
     FRICREG_STAT_SOLVES = 3,         /**< triangular solves with such a factor */
-    FRICREG_STAT_QP_ITERATIONS = 4   /**< active-set iterations of the consistent law's QP,
+    FRICREG_STAT_QP_ITERATIONS = 4,  /**< active-set iterations of the consistent law's QP,
                                           summed over evaluations: 1 per evaluation with a
                                           near-stick set when the warm start is right */
+    FRICREG_STAT_FACTOR_UPDATES = 5  /**< contacts added to or removed from a held factor
+                                          (O(|B|^2) each) instead of a new factorization, when
+                                          the block changes by a few contacts (since 1.2) */
 };
 
 /** Read one counter (enum fricreg_stat) into *value.

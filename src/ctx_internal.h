@@ -12,7 +12,7 @@
 #include "factor.h"
 #include "fricreg.h"
 
-#define FR_NSTATS 5
+#define FR_NSTATS 6
 #define FR_MAX_CONTACTS ((size_t)1 << 26)
 
 struct fricreg_ctx {

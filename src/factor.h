@@ -1,12 +1,16 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* factor.h — internal: the cached factor of one principal block W[B, B] of a dense W.
+/* factor.h — internal: the cached factor of one principal block W[B, B] of a dense W, updated
+ * when contacts enter or leave B.
  *
  * Both partitions solve with a principal block of W: the paper's with W_SS, the consistent
- * law's QP with W_FF of its free set. The block is Jacobi-scaled, D^-1/2 W_BB D^-1/2 with
- * D = diag(W_BB), before GSL's pivoted Cholesky LDL^T, so the singularity test on its
- * reciprocal condition number does not depend on the contacts' units (diag(1, 1e-14) is
- * regular; a redundant pair is not). The factor is kept, keyed by the block's contact list,
- * and reused while the list and W hold. */
+ * law's QP with W_FF of its free set. The block is factored W_BB = U^T diag(d) U (LDL^T with
+ * L = U^T unit lower triangular), unpivoted, in the order the contacts entered it (factor.c
+ * says why). A contact that enters is a new last row and column, O(|B|^2); one that leaves is
+ * a rank-one update of the trailing factor, O(|B|^2); when more than a few change, or an
+ * update may have lost accuracy, the block is factored afresh. Singularity test: the smallest
+ * pivot ratio d_k / W_kk of a fresh factorization below FR_PIVOT_MIN. The ratio does not
+ * depend on the contacts' units (it is unchanged by a diagonal scaling of W, so
+ * diag(1, 1e-14) is regular), and a redundant pair's second pivot is 0 to rounding. */
 #ifndef FRICREG_FACTOR_H
 #define FRICREG_FACTOR_H
 
@@ -14,30 +18,41 @@
 
 struct fricreg_ctx;
 
+/* A block with a pivot ratio d_k / W_kk below this (in a fresh factorization, contacts in the
+ * callers' ascending order) is singular. For two contacts the ratio is 1 - rho^2, rho their
+ * correlation W_ij / sqrt(W_ii W_jj). */
+#define FR_PIVOT_MIN 1e-12
+
 struct fr_factor {
-    size_t *set; /* [m] contact indices of the factored block, ascending; valid if valid */
-    size_t n;    /* its size */
-    int valid;
-    double *ldlt;  /* [m*m] GSL pcholesky factor of the scaled block, packed n x n */
-    size_t *perm;  /* [m] its pivot permutation */
-    double *scale; /* [m] 1/sqrt(W_ii) of the block's contacts */
-    double *work;  /* [3m] workspace of GSL's condition estimate */
+    size_t *set;        /* [m] contact index of each factor position 0..n-1, in order of entry */
+    size_t n;           /* the block's size */
+    int valid;          /* 0: U, d are stale (W or the partition changed); set, pos still agree */
+    double *U;          /* [m*m] W_BB = U^T diag(d) U, U unit upper, row-major, row stride m */
+    double *d;          /* [m] the pivots, > 0 */
+    size_t *pos;        /* [m] factor position of each contact of W, FR_NOT_HELD if none */
+    size_t *order;      /* [m] factor position of the a-th contact of the last ensure's set */
+    double *work;       /* [m] scratch of solves and updates */
+    unsigned char *hit; /* [m] scratch: factor positions the next block keeps */
+    size_t updates;     /* contacts added or removed since the last fresh factorization */
 };
 
-/* Allocates the factor storage for m contacts; FRICREG_OK or FRICREG_ENOMEM (then nothing is
- * held). fr_factor_free releases it and is safe on a zeroed or freed struct. */
+/* Allocates the factor storage for m contacts (nothing held); FRICREG_OK or FRICREG_ENOMEM
+ * (then nothing is allocated). fr_factor_free releases it and is safe on a zeroed or freed
+ * struct. */
 int fr_factor_alloc(struct fr_factor *fa, size_t m);
 void fr_factor_free(struct fr_factor *fa);
 
-/* Makes ctx->fac hold the factor of W[set, set] (set: n ascending contact indices), reusing
- * the held one when set is the same. A new factorization is counted in
- * FRICREG_STAT_FACTORIZATIONS. Returns FRICREG_OK, or FRICREG_ESINGULAR (recorded in ctx with
- * `who` leading the message) when the scaled block's reciprocal condition number is below
- * 1e-12; the cache is then empty. */
+/* Makes ctx->fac hold the factor of W[set, set] (set: n distinct contact indices), from the
+ * held one: nothing to do when the set is the same, contacts added and removed when a few
+ * changed (counted in FRICREG_STAT_FACTOR_UPDATES, one per contact), else a fresh
+ * factorization (FRICREG_STAT_FACTORIZATIONS). Returns FRICREG_OK, or FRICREG_ESINGULAR
+ * (recorded in ctx with `who` leading the message) when a fresh factorization has a pivot
+ * ratio below FR_PIVOT_MIN; the cache is then empty. Reads set, never writes it. */
 int fr_factor_ensure(struct fricreg_ctx *ctx, const size_t set[], size_t n, const char *who);
 
-/* Solves W[set, set] x = r in place with the held factor (r[n] in, x out), counted in
- * FRICREG_STAT_SOLVES. Returns FRICREG_OK or FRICREG_ESINGULAR (recorded). */
+/* Solves W[set, set] x = r in place with the held factor, r[n] in the order of the set given
+ * to the last fr_factor_ensure, counted in FRICREG_STAT_SOLVES. Cannot fail: Returns
+ * FRICREG_OK. */
 int fr_factor_solve(struct fricreg_ctx *ctx, double r[], const char *who);
 
 #endif

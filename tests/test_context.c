@@ -67,6 +67,12 @@ static void expect_stats(const fricreg_ctx *ctx, int64_t evals, int64_t feq, int
     ck_assert_int_eq(counter(ctx, FRICREG_STAT_SOLVES), solves);
 }
 
+/* Contacts added to or removed from a held factor instead of a new factorization. */
+static void expect_updates(const fricreg_ctx *ctx, int64_t updates)
+{
+    ck_assert_int_eq(counter(ctx, FRICREG_STAT_FACTOR_UPDATES), updates);
+}
+
 /* A call on ctx just failed with `code`: the context records it, with a non-empty message that
  * errmsg_copy truncates into a small buffer while returning the full length. */
 static void expect_failure_recorded(const fricreg_ctx *ctx, int status, int code, const char *what)
@@ -449,7 +455,8 @@ START_TEST(force_balance_and_karnopp_stick_sets)
     ck_assert_int_eq(fricreg_ctx_eval(ctx, 2, z_none, a, f, feq), FRICREG_OK);
     ck_assert_double_eq(f[0], -0.5);
     ck_assert_double_eq(f[1], 0.25);
-    expect_stats(ctx, 3, 3, 2, 2);
+    expect_stats(ctx, 3, 3, 1, 2); /* {0} factored, then contact 1 added: an update */
+    expect_updates(ctx, 1);
 
     ck_assert_int_eq(fricreg_ctx_set_law(ctx, FRICREG_LAW_KARNOPP, EPS2B), FRICREG_OK);
     const double z_k[2] = {0.0037, -0.0031};
@@ -493,8 +500,10 @@ START_TEST(stats_no_factorization_without_stick_set_or_dense_w)
 END_TEST
 
 /* Dense W2B. The factor of W_SS is kept while S holds (new zdot inside eps and new a_free only
- * re-solve) and rebuilt when S changes, including to another set of the same size ({0} -> {1}:
- * W00 = 1 but W11 = 2, so a stale factor would give f_eq1 = 0.847 instead of 0.4235).
+ * re-solve) and updated when S changes, one FACTOR_UPDATES per contact added or removed,
+ * including to another set of the same size ({0} -> {1}: W00 = 1 but W11 = 2, so a stale
+ * factor would give f_eq1 = 0.847 instead of 0.4235). Two contacts are "a few": no
+ * factorization after the first.
  * Step values (hand-solved above and in two_block_*): a' = (-0.0829, 0.1411) gives
  * f_eq = -W^-1 a' = (0.0247, -0.0582), xi = (0.000494, -0.002328),
  * f = (-50(-0.0052 - 0.000494), -25(0.0061 + 0.002328)) = (0.2847, -0.2107). */
@@ -517,25 +526,31 @@ START_TEST(stats_factor_reused_while_stick_set_holds)
     ck_assert_double_eq_tol(f[1], -0.2107, TOL);
     expect_stats(ctx, 2, 4, 1, 2);
 
-    const double z3[2] = {-0.0041, 0.153}; /* S = {0}: refactorize */
+    expect_updates(ctx, 0);
+
+    const double z3[2] = {-0.0041, 0.153}; /* S = {0}: contact 1 removed */
     ck_assert_int_eq(fricreg_ctx_eval(ctx, 2, z3, a, f, feq), FRICREG_OK);
     ck_assert_double_eq_tol(feq[0], -0.463, TOL);
     ck_assert_double_eq_tol(f[0], -0.258, TOL);
-    expect_stats(ctx, 3, 5, 2, 3);
+    expect_stats(ctx, 3, 5, 1, 3);
+    expect_updates(ctx, 1);
 
-    const double z4[2] = {-0.287, 0.0029}; /* S = {1}: same size, other contact: refactorize */
+    const double z4[2] = {-0.287, 0.0029}; /* S = {1}: 0 removed, 1 added */
     ck_assert_int_eq(fricreg_ctx_eval(ctx, 2, z4, a, f, feq), FRICREG_OK);
     ck_assert_double_eq_tol(feq[1], 0.4235, TOL);
     ck_assert_double_eq_tol(f[1], 0.1775, TOL);
-    expect_stats(ctx, 4, 6, 3, 4);
+    expect_stats(ctx, 4, 6, 1, 4);
+    expect_updates(ctx, 3);
 
     ck_assert_int_eq(fricreg_ctx_eval(ctx, 2, z4, a, f, feq), FRICREG_OK); /* S = {1} again */
-    expect_stats(ctx, 5, 7, 3, 5);
+    expect_stats(ctx, 5, 7, 1, 5);
+    expect_updates(ctx, 3);
 
     ck_assert_int_eq(fricreg_ctx_eval(ctx, 2, z1, a, f, feq), FRICREG_OK); /* back to {0, 1} */
     ck_assert_double_eq_tol(feq[0], -0.079, TOL);
     ck_assert_double_eq_tol(feq[1], 0.134, TOL);
-    expect_stats(ctx, 6, 9, 4, 6);
+    expect_stats(ctx, 6, 9, 1, 6);
+    expect_updates(ctx, 4);
     fricreg_ctx_free(ctx);
 }
 END_TEST
@@ -606,14 +621,14 @@ START_TEST(get_stat_errors)
 {
     fricreg_ctx *ctx = make_ctx(2);
     int64_t value = -4242;
-    ck_assert_int_eq(fricreg_ctx_get_stat(ctx, 5, &value), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_ctx_get_stat(ctx, 6, &value), FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_ctx_get_stat(ctx, -1, &value), FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_ctx_get_stat(ctx, 99, &value), FRICREG_EINVAL);
     ck_assert_int_eq(value, -4242);
     ck_assert_int_eq(fricreg_ctx_get_stat(NULL, FRICREG_STAT_EVALS, &value), FRICREG_ENULL);
     ck_assert_int_eq(value, -4242);
     ck_assert_int_eq(fricreg_ctx_get_stat(ctx, FRICREG_STAT_EVALS, NULL), FRICREG_ENULL);
-    for (int k = FRICREG_STAT_EVALS; k <= FRICREG_STAT_QP_ITERATIONS; k++) {
+    for (int k = FRICREG_STAT_EVALS; k <= FRICREG_STAT_FACTOR_UPDATES; k++) {
         value = -4242;
         ck_assert_int_eq(fricreg_ctx_get_stat(ctx, k, &value), FRICREG_OK);
         ck_assert_int_eq(value, 0);
@@ -1015,7 +1030,8 @@ START_TEST(dense_five_contacts_residual)
                          FRICREG_OK);
         ck_assert_double_eq_tol(f[i], expect, 1e-15);
     }
-    expect_stats(ctx, 2, 8, 2, 2);
+    expect_stats(ctx, 2, 8, 1, 2); /* contacts 1 and 4 removed from the factor of all five */
+    expect_updates(ctx, 2);
     fricreg_ctx_free(ctx);
 }
 END_TEST

@@ -48,7 +48,8 @@ program test_context
   call check_close(f(2), 0.1468_c_double, tol, 'f(2) at rest')
   call expect_stats(2_c_int64_t, 4_c_int64_t, 1_c_int64_t, 2_c_int64_t, 'factor reused')
 
-  ! Contact 2 slips (zdot2 = 0.5 > eps): f2 = -0.25, and contact 1 alone is near-stick:
+  ! Contact 2 slips (zdot2 = 0.5 > eps): f2 = -0.25, and contact 1 alone is near-stick (its
+  ! factor is the held one with contact 2 removed, no new factorization):
   ! f_eq1 = -(a1 + W12 f2)/W11 = -(-0.2385 + 0.25) = -0.0115 = f1. f_eq2 is not computed (NaN).
   zdot = [0.0_c_double, 0.5_c_double]
   call check_status(ctx%eval(zdot, a_free, f, f_eq), FRICREG_OK, 'eval, contact 2 slipping')
@@ -56,7 +57,10 @@ program test_context
   call check_close(f_eq(1), -0.0115_c_double, tol, 'f_eq(1) with contact 2 slipping')
   call check_close(f(1), -0.0115_c_double, tol, 'f(1) = f_eq(1)')
   call check(f_eq(2) /= f_eq(2), 'f_eq(2) is NaN outside the near-stick set')
-  call expect_stats(3_c_int64_t, 5_c_int64_t, 2_c_int64_t, 3_c_int64_t, 'new S, new factor')
+  call expect_stats(3_c_int64_t, 5_c_int64_t, 1_c_int64_t, 3_c_int64_t, 'new S, factor updated')
+  call check_status(ctx%get_stat(FRICREG_STAT_FACTOR_UPDATES, value), FRICREG_OK, &
+                    'get_stat(FACTOR_UPDATES)')
+  call check(value == 1_c_int64_t, 'one contact removed from the factor')
   call ctx%reset_stats()
   call expect_stats(0_c_int64_t, 0_c_int64_t, 0_c_int64_t, 0_c_int64_t, 'after reset_stats')
 

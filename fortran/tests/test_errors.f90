@@ -73,7 +73,7 @@ program test_errors
   call check(index(ctx%errmsg(), 'a_free[1]') > 0, 'message names a_free[1]: ' // ctx%errmsg())
   call check(all(f == sentinel), 'f untouched on ENONFINITE')
   value = -5
-  call check_status(ctx%get_stat(5_c_int, value), FRICREG_EINVAL, 'get_stat, counter 5')
+  call check_status(ctx%get_stat(6_c_int, value), FRICREG_EINVAL, 'get_stat, counter 6')
   call check(value == -5, 'value untouched')
 
   ! A size mismatch after a C failure is the newer message, and the reverse.
