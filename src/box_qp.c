@@ -24,6 +24,7 @@
 #include "box_qp.h"
 #include "ctx_internal.h"
 #include "factor.h"
+#include "law.h"
 
 #define NONE SIZE_MAX
 /* A held bound is released only if its multiplier is below -MULT_RTOL times the size of the
@@ -44,8 +45,9 @@ int fr_box_qp_alloc(struct fr_box_qp *qp, size_t m)
     qp->side = malloc(m * sizeof *qp->side);
     qp->free_pos = malloc(m * sizeof *qp->free_pos);
     qp->free_set = malloc(m * sizeof *qp->free_set);
+    qp->held_pos = malloc(m * sizeof *qp->held_pos);
     if (!qp->lo || !qp->hi || !qp->b || !qp->x || !qp->y || !qp->side || !qp->free_pos ||
-        !qp->free_set) {
+        !qp->free_set || !qp->held_pos) {
         fr_box_qp_free(qp);
         return FRICREG_ENOMEM;
     }
@@ -62,6 +64,7 @@ void fr_box_qp_free(struct fr_box_qp *qp)
     free(qp->side);
     free(qp->free_pos);
     free(qp->free_set);
+    free(qp->held_pos);
     memset(qp, 0, sizeof *qp);
 }
 
@@ -78,30 +81,58 @@ static void start(struct fr_box_qp *qp, size_t s)
     }
 }
 
+/* Lists the free variables (returns their count) and the held ones (qp->n_held). */
 static size_t list_free(struct fr_box_qp *qp, const size_t set[], size_t s)
 {
     size_t n = 0;
+    qp->n_held = 0;
     for (size_t k = 0; k < s; k++)
         if (qp->side[k] == FR_FREE) {
             qp->free_pos[n] = k;
             qp->free_set[n++] = set[k];
+        } else {
+            qp->held_pos[qp->n_held++] = k;
         }
     return n;
 }
 
-/* y_F = -W_FF^-1 (b_F + W_FA x_A), with the cached factor of W_FF. */
-static int subspace_minimizer(fricreg_ctx *ctx, const size_t set[], size_t s, size_t nf)
+/* sum_h row[set[pos[h]]] x[pos[h]] over h < n (pos NULL: the positions 0..n-1), and the sum
+ * of the terms' magnitudes into *size, each in FR_LANES partial sums: independent chains
+ * instead of one serial sum, which would wait on every addition. */
+static double row_times_x(const double row[], const size_t set[], const size_t pos[],
+                          const double x[], size_t n, double *size)
+{
+    double sum[FR_LANES] = {0.0}, mag[FR_LANES] = {0.0};
+    size_t h = 0;
+    for (; h + FR_LANES <= n; h += FR_LANES)
+        for (size_t l = 0; l < FR_LANES; l++) {
+            size_t k = pos ? pos[h + l] : h + l;
+            double term = row[set[k]] * x[k];
+            sum[l] += term;
+            mag[l] += fabs(term);
+        }
+    for (; h < n; h++) {
+        size_t k = pos ? pos[h] : h;
+        double term = row[set[k]] * x[k];
+        sum[0] += term;
+        mag[0] += fabs(term);
+    }
+    *size = (mag[0] + mag[1]) + (mag[2] + mag[3]);
+    return (sum[0] + sum[1]) + (sum[2] + sum[3]);
+}
+
+/* y_F = -W_FF^-1 (b_F + W_FA x_A), with the cached factor of W_FF (updated by factor.c when
+ * F differs from the last iteration's by a contact or two). W_FA x_A over the held list: it is
+ * usually short, and this runs once per iteration. */
+static int subspace_minimizer(fricreg_ctx *ctx, const size_t set[], size_t nf)
 {
     struct fr_box_qp *qp = &ctx->qp;
     size_t m = ctx->m;
     for (size_t a = 0; a < nf; a++) {
         size_t k = qp->free_pos[a];
-        const double *row = ctx->W + set[k] * m;
-        double r = qp->b[k];
-        for (size_t j = 0; j < s; j++)
-            if (qp->side[j] != FR_FREE)
-                r += row[set[j]] * qp->x[j];
-        qp->y[a] = -r;
+        double size;
+        qp->y[a] = -(qp->b[k] +
+                     row_times_x(ctx->W + set[k] * m, set, qp->held_pos, qp->x, qp->n_held, &size));
     }
     int status = fr_factor_ensure(ctx, qp->free_set, nf, "eval");
     return status == FRICREG_OK ? fr_factor_solve(ctx, qp->y, "eval") : status;
@@ -166,13 +197,9 @@ static size_t most_negative_multiplier(const fricreg_ctx *ctx, const size_t set[
     for (size_t k = 0; k < s; k++) {
         if (qp->side[k] == FR_FREE || qp->lo[k] == qp->hi[k])
             continue;
-        const double *row = ctx->W + set[k] * ctx->m;
-        double g = qp->b[k], size = fabs(qp->b[k]);
-        for (size_t j = 0; j < s; j++) {
-            double term = row[set[j]] * qp->x[j];
-            g += term;
-            size += fabs(term);
-        }
+        double size,
+            g = qp->b[k] + row_times_x(ctx->W + set[k] * ctx->m, set, NULL, qp->x, s, &size);
+        size += fabs(qp->b[k]);
         double lambda = qp->side[k] == FR_LOWER ? g : -g;
         if (lambda < -MULT_RTOL * size && lambda < most) {
             most = lambda;
@@ -194,7 +221,7 @@ int fr_box_qp_solve(fricreg_ctx *ctx, const size_t set[], size_t s)
         signed char block_side = FR_FREE;
         double alpha = 1.0;
         if (nf > 0) {
-            int status = subspace_minimizer(ctx, set, s, nf);
+            int status = subspace_minimizer(ctx, set, nf);
             if (status != FRICREG_OK)
                 return status;
             alpha = step_length(qp, nf, released, released_side, &block, &block_side);

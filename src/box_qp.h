@@ -18,6 +18,8 @@ struct fr_box_qp {
     double *y;           /* [m] scratch: the subspace minimizer on the free set */
     size_t *free_pos;    /* [m] scratch: positions of the free variables */
     size_t *free_set;    /* [m] scratch: their contact indices, the factor's key */
+    size_t *held_pos;    /* [m] scratch: positions of the variables held at a bound */
+    size_t n_held;       /* their count */
 };
 
 int fr_box_qp_alloc(struct fr_box_qp *qp, size_t m); /* FRICREG_OK or FRICREG_ENOMEM */
