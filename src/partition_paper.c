@@ -6,16 +6,44 @@
 #include "law.h"
 #include "partition.h"
 
-/* f_eq,S from W_SS f_eq,S = -(a_free,S + W_SL f_L). f holds f_L, and 0 on S. */
+/* Lists the slipping contacts L (the complement of the ascending S) and their forces, packed:
+ * W_SL f_L then reads only L's columns. The QP's scratch is free under this partition. */
+static size_t list_slipping(fricreg_ctx *ctx)
+{
+    size_t *slip = ctx->qp.free_pos, n = 0, a = 0;
+    double *f_slip = ctx->qp.y;
+    for (size_t j = 0; j < ctx->m; j++) {
+        if (a < ctx->n_stick && ctx->stick[a] == j) {
+            a++;
+            continue;
+        }
+        slip[n] = j;
+        f_slip[n++] = ctx->f[j];
+    }
+    return n;
+}
+
+/* (W_SL f_L)_i for row i of W, in FR_LANES partial sums: independent chains, not one serial
+ * sum. */
+static double coupling(const double row[], const size_t slip[], const double f_slip[], size_t n)
+{
+    double sum[FR_LANES] = {0.0};
+    size_t l = 0;
+    for (; l + FR_LANES <= n; l += FR_LANES)
+        for (size_t k = 0; k < FR_LANES; k++)
+            sum[k] += row[slip[l + k]] * f_slip[l + k];
+    for (; l < n; l++)
+        sum[0] += row[slip[l]] * f_slip[l];
+    return (sum[0] + sum[1]) + (sum[2] + sum[3]);
+}
+
+/* f_eq,S from W_SS f_eq,S = -(a_free,S + W_SL f_L). */
 static int solve_feq(fricreg_ctx *ctx, const double a_free[])
 {
-    size_t s = ctx->n_stick, m = ctx->m;
+    size_t s = ctx->n_stick, m = ctx->m, n_slip = list_slipping(ctx);
     for (size_t a = 0; a < s; a++) {
         const double *row = ctx->W + ctx->stick[a] * m;
-        double coupling = 0.0;
-        for (size_t j = 0; j < m; j++)
-            coupling += row[j] * ctx->f[j];
-        ctx->rhs[a] = -(a_free[ctx->stick[a]] + coupling);
+        ctx->rhs[a] = -(a_free[ctx->stick[a]] + coupling(row, ctx->qp.free_pos, ctx->qp.y, n_slip));
     }
     int status = fr_factor_ensure(ctx, ctx->stick, s, "eval");
     if (status == FRICREG_OK)
