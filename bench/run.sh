@@ -34,6 +34,8 @@ echo
 echo
 ./build-bench/bench/fricreg-bench-kernels "$out" | tee "$out/kernels.txt"
 echo
+./build-bench/bench/fricreg-bench-dense "$out" | tee "$out/dense.txt"
+echo
 
 if command -v gnuplot >/dev/null 2>&1; then
     (cd "$out" && gnuplot workprecision.gp && gnuplot scaling.gp)
