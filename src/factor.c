@@ -18,14 +18,16 @@
  *     the rank-one update d_p x x^T, x the rest of row p of U, O((|B| - p)^2); positive, so
  *     no pivot falls;
  *   - a fresh factorization is the first case repeated from the empty block (bordered
- *     LDL^T, |B|^3/3 flops), in the callers' ascending contact order, so its verdict does not
- *     depend on the history. Only a fresh factorization declares a block singular: an
- *     update whose new pivot ratio is below UPDATE_PIVOT_MIN, where rounding in the held
- *     factor would be amplified, hands over to one.
+ *     LDL^T, |B|^3/3 flops), in the callers' ascending contact order. Only a fresh
+ *     factorization declares a block singular: an update whose new pivot ratio is below
+ *     UPDATE_PIVOT_MIN, where rounding in the held factor would be amplified, hands over to
+ *     one. So a redundant set is refused whatever the history (its last redundant contact to
+ *     enter has pivot 0); only a nearly singular one, whose pivot ratios straddle 1e-12 and
+ *     1e-8 depending on the order, can be accepted after updates and refused fresh.
  * Updates are used when at most few_changes(|B|) contacts change. A fresh factorization also
  * follows MAX_UPDATES updates, or a drift of the diagonal of U^T D U from W_BB's beyond
  * DRIFT_MAX (checked after each deletion, O(|B|^2) like the deletion): both bound the rounding
- * a long series of updates accumulates. All dense-W products are in W's own units. */
+ * a long series of updates accumulates. */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
