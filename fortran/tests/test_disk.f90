@@ -65,7 +65,8 @@ program test_disk
                                  0.2_c_double, 2.0_c_double, 0.05_c_double, fs1)
   call check_status(status, FRICREG_EINVAL, 'stribeck: fk > fs refused')
   status = fricreg_stribeck_disk_eval([0.0_c_double, 0.24_c_double], &
-                                      [4.0_c_double, 1.0_c_double], 2.5_c_double, 1.5_c_double, 0.2_c_double, 2.0_c_double, &
+                                      [4.0_c_double, 1.0_c_double], 2.5_c_double, 1.5_c_double, &
+                                      0.2_c_double, 2.0_c_double, &
                                       0.05_c_double, f)
   call check_status(status, FRICREG_OK, 'stribeck disk')
   call check(f(1) == 0.0_c_double, 'stribeck disk: opposes v, x')
