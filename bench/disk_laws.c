@@ -19,7 +19,7 @@
 #include "fricreg_disk.h"
 
 enum { TURNS_TRANSIENT = 3, CYCLES_PER_TURN = 7 };
-static const double A = 2.0, OMEGA = 0.5;
+static const double A = 2.0, OMEGA = 0.5, PI = 3.14159265358979323846;
 
 struct run {
     double dissipation; /* per forcing cycle, over the measured turn */
@@ -51,7 +51,7 @@ static void rhs(int law, double eps, double t, const double y[4], double dy[4], 
 
 static struct run simulate(int law, double dt, double eps)
 {
-    double turn = 2.0 * M_PI * CYCLES_PER_TURN / OMEGA;
+    double turn = 2.0 * PI * CYCLES_PER_TURN / OMEGA;
     long n_transient = lround(TURNS_TRANSIENT * turn / dt), n_measured = lround(turn / dt);
     double y[4] = {0.0, 0.0, 0.0, 0.0}, k[4][4], p[4], tmp[4], energy = 0.0;
     long in_band = 0;
