@@ -9,7 +9,7 @@
  * which falls from fs at s = 0 to fk (fs = fk: constant Coulomb friction). The regularized law
  * here (docs/laws2d.md):
  *   |v| >= eps:  f = -k(|v|) sgn(v)  (2-D: -k(|v|) v/|v|), the kinetic curve itself;
- *   |v| <  eps:  law (4) (2-D: the lens law FRICREG_DISK_QUINN) with the bound
+ *   |v| <  eps:  law (4) (2-D: the default disk law FRICREG_DISK_QUINN) with the bound
  *                B = fs + (k(eps) - fs) |v|/eps in place of mu N,
  * so that at v = 0 it is the force balance with fs, f = fs sat(f_eq/fs) (2-D: fs P_D(f_eq/fs)):
  * exact stick while |f_eq| <= fs, break-away at |f_eq| = fs exactly; at |v| -> eps it is
@@ -65,7 +65,7 @@ FRICREG_API int fricreg_stribeck_eval_batch(double eps, size_t m, const double v
                                             const double fk[], const double vs[],
                                             const double delta[], double f[]);
 
-/** Evaluate the 2-D Stribeck law at one contact (see the top of this header): the lens law of
+/** Evaluate the 2-D Stribeck law at one contact (see the top of this header): the default law of
  *  FRICREG_DISK_QUINN with the bound B in the band, the kinetic curve -k(|v|) v/|v| outside.
  *
  *  v      in: v[2], the tangential velocity.  f_eq  in: f_eq[2], the equilibrium force.
