@@ -1,5 +1,6 @@
 ! SPDX-License-Identifier: GPL-3.0-or-later
-! fricreg_c.f90 — module fricreg_c: thin bind(C) interfaces to every function of fricreg.h.
+! fricreg_c.f90 — module fricreg_c: thin bind(C) interfaces to every function of fricreg.h and
+! of the core headers beside it (fricreg_disk.h, fricreg_stribeck.h).
 !
 ! The interfaces are generated from the C prototypes at build time (gen_interfaces.cmake writes
 ! fricreg_h.inc, included below), so they cannot drift from the header: argument for argument,

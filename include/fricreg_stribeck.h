@@ -1,0 +1,103 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/*
+ * fricreg_stribeck.h — static friction above kinetic (Stribeck), with exact stick, for 1-D
+ * and 2-D contacts, beyond the paper.
+ *
+ * The set-valued law: at v = 0 the contact holds any force |f| <= fs = mu_s N; sliding, the
+ * force opposes v with the kinetic curve
+ *     k(s) = fk + (fs - fk) exp(-(s/vs)^delta),   s = |v|,   fk = mu_k N <= fs,
+ * which falls from fs at s = 0 to fk (fs = fk: constant Coulomb friction). The regularized law
+ * here (docs/laws2d.md):
+ *   |v| >= eps:  f = -k(|v|) sgn(v)  (2-D: -k(|v|) v/|v|), the kinetic curve itself;
+ *   |v| <  eps:  law (4) (2-D: the default disk law FRICREG_DISK_QUINN) with the bound
+ *                B = fs + (k(eps) - fs) |v|/eps in place of mu N,
+ * so that at v = 0 it is the force balance with fs, f = fs sat(f_eq/fs) (2-D: fs P_D(f_eq/fs)):
+ * exact stick while |f_eq| <= fs, break-away at |f_eq| = fs exactly; at |v| -> eps it is
+ * -k(eps) sgn(v), so f is continuous (Lipschitz, for every delta > 0) in (v, f_eq); and as
+ * eps -> 0 it converges pointwise to the set-valued law. With fs = fk it is law (4) (2-D:
+ * FRICREG_DISK_QUINN) with mun = fk, bit for bit.
+ *
+ * Conventions are fricreg.h's, and for 2-D fricreg_disk.h's (vectors of two doubles, arrays of
+ * m vectors interleaved: contact i is (v[2*i], v[2*i + 1]); numbers at most 1e250). Since 1.2
+ * (FRICREG_1.2).
+ */
+#ifndef FRICREG_STRIBECK_H
+#define FRICREG_STRIBECK_H
+
+#include "fricreg.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Evaluate the Stribeck law at one 1-D contact (see the top of this header).
+ *
+ *  v      relative contact velocity (velocity units).
+ *  f_eq   equilibrium force (force units), as for fricreg_law_eval.
+ *  fs     static bound mu_s N, the holding force (force units), fs >= fk.
+ *  fk     kinetic force mu_k N >= 0, the limit of k(|v|) for |v| -> infinity; fk <= fs.
+ *  vs     Stribeck velocity > 0 (velocity units): k(vs) = fk + (fs - fk)/e.
+ *  delta  Stribeck exponent > 0 (1: exponential, 2: Gaussian decay).
+ *  eps    regularization parameter >= DBL_MIN (velocity units), the band |v| < eps.
+ *  f      out: the friction force; |f| <= fs. Written only on success.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if f is NULL; FRICREG_ENONFINITE if a number is NaN or
+ *  infinite; FRICREG_EINVAL if fk < 0, fk > fs (kinetic above static), vs <= 0, delta <= 0 or
+ *  eps < DBL_MIN. Pure function; thread safe. */
+FRICREG_API int fricreg_stribeck_eval(double v, double f_eq, double fs, double fk, double vs,
+                                      double delta, double eps, double *f);
+
+/** Evaluate the Stribeck law over m 1-D contacts, each with its own parameters (one eps).
+ *
+ *  eps       as for fricreg_stribeck_eval.
+ *  m         number of contacts; m = 0 is valid and does nothing.
+ *  v[m], f_eq[m]                in: velocities and equilibrium forces.
+ *  fs[m], fk[m], vs[m], delta[m]  in: each contact's parameters, as for fricreg_stribeck_eval.
+ *  f[m]      out: the forces; may be the same array as v or f_eq. Inputs are validated before
+ *            any output is written.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if an array is NULL (when m > 0); FRICREG_ENONFINITE if a
+ *  number is NaN or infinite (anywhere, checked first); FRICREG_EINVAL if eps < DBL_MIN or
+ *  some contact has fk < 0, fk > fs, vs <= 0 or delta <= 0. The same numbers as
+ *  fricreg_stribeck_eval contact by contact. Thread safe. */
+FRICREG_API int fricreg_stribeck_eval_batch(double eps, size_t m, const double v[],
+                                            const double f_eq[], const double fs[],
+                                            const double fk[], const double vs[],
+                                            const double delta[], double f[]);
+
+/** Evaluate the 2-D Stribeck law at one contact (see the top of this header): the default law of
+ *  FRICREG_DISK_QUINN with the bound B in the band, the kinetic curve -k(|v|) v/|v| outside.
+ *
+ *  v      in: v[2], the tangential velocity.  f_eq  in: f_eq[2], the equilibrium force.
+ *  fs, fk, vs, delta, eps  as for fricreg_stribeck_eval (fs and fk at most 1e250).
+ *  f      out: f[2], the force, |f| <= fs; may be the same array as v or f_eq. Written only on
+ *         success.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if v, f_eq or f is NULL; FRICREG_ENONFINITE if a number
+ *  is NaN or infinite; FRICREG_EINVAL if fk < 0, fk > fs, vs <= 0, delta <= 0, eps < DBL_MIN or
+ *  a component of v or f_eq, or fs, exceeds 1e250 in magnitude. Pure function; thread safe. */
+FRICREG_API int fricreg_stribeck_disk_eval(const double v[], const double f_eq[], double fs,
+                                           double fk, double vs, double delta, double eps,
+                                           double f[]);
+
+/** Evaluate the 2-D Stribeck law over m contacts, each with its own parameters (one eps).
+ *
+ *  v[2*m], f_eq[2*m]  in: interleaved vectors (contact i: v[2*i], v[2*i + 1]).
+ *  fs[m], fk[m], vs[m], delta[m]  in: each contact's parameters.
+ *  f[2*m]  out: interleaved forces; may be the same array as v or f_eq. Inputs are validated
+ *          before any output is written. m = 0 is valid and does nothing.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if an array is NULL (when m > 0); FRICREG_ENONFINITE if a
+ *  number is NaN or infinite (anywhere, checked first); FRICREG_EINVAL if eps < DBL_MIN or some
+ *  contact's numbers are out of range as for fricreg_stribeck_disk_eval. The same numbers as
+ *  fricreg_stribeck_disk_eval contact by contact. Thread safe. */
+FRICREG_API int fricreg_stribeck_disk_eval_batch(double eps, size_t m, const double v[],
+                                                 const double f_eq[], const double fs[],
+                                                 const double fk[], const double vs[],
+                                                 const double delta[], double f[]);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FRICREG_STRIBECK_H */

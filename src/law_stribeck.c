@@ -1,0 +1,153 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* law_stribeck.c — static > kinetic friction with exact stick, 1-D and 2-D (fricreg_stribeck.h,
+ * docs/laws2d.md): law (4), or the default 2-D law (the inscribed disk), with a bound that falls linearly from fs at v = 0
+ * to k(eps) at |v| = eps, and the kinetic curve k(|v|) outside. */
+#include <math.h>
+
+#include "fricreg_stribeck.h"
+#include "law.h"
+#include "law_disk.h"
+
+/* One contact's parameters. */
+struct stribeck {
+    double fs, fk, vs, delta;
+};
+
+/* The kinetic curve k(s) = fk + (fs - fk) exp(-(s/vs)^delta), s >= 0. With fs == fk the
+ * difference is 0 and k is fk exactly. */
+static double kinetic(const struct stribeck *p, double s)
+{
+    return p->fk + (p->fs - p->fk) * exp(-pow(s / p->vs, p->delta));
+}
+
+/* The band's bound at rho = |v|/eps in [0, 1]: fs at rho = 0 (exactly: the product is 0),
+ * k(eps) at rho = 1. Linear, not k(|v|) itself: k has an infinite slope at 0 for delta < 1,
+ * which would make the force non-Lipschitz where it saturates; the line's slope is bounded,
+ * (fs - k(eps))/eps, for every delta. */
+static double band_bound(const struct stribeck *p, double eps, double rho)
+{
+    return p->fs + (kinetic(p, eps) - p->fs) * rho;
+}
+
+static double stribeck_1d(const struct stribeck *p, double v, double g, double eps)
+{
+    double s = fabs(v);
+    if (s >= eps)
+        return v > 0.0 ? -kinetic(p, s) : kinetic(p, s);
+    /* the scale and the band of law (4) (law.h), so that fs == fk gives its bits */
+    return fr_quinn_band(v * fr_band_scale(eps), g, band_bound(p, eps, s / eps));
+}
+
+static void stribeck_2d(const struct stribeck *p, const double v[2], const double g[2], double eps,
+                        double f[2])
+{
+    double r = hypot(v[0], v[1]);
+    if (r == 0.0)
+        fr_disk_hold(g, p->fs, f);
+    else if (r >= eps)
+        fr_disk_slide(v, kinetic(p, r), f);
+    else
+        fr_disk_inscribed(v, g, band_bound(p, eps, r / eps), r / eps, f);
+}
+
+/* Status of one contact's numbers (v and g: n components each): non-finite first, then out
+ * of range; `cap` also bounds the magnitudes (the 2-D kernels' FR_DISK_MAX). */
+static int stribeck_status(const struct stribeck *p, const double v[], const double g[], int n,
+                           double cap)
+{
+    int finite = isfinite(p->fs) && isfinite(p->fk) && isfinite(p->vs) && isfinite(p->delta);
+    int capped = fabs(p->fs) <= cap;
+    for (int j = 0; j < n; j++) {
+        finite = finite && isfinite(v[j]) && isfinite(g[j]);
+        capped = capped && fabs(v[j]) <= cap && fabs(g[j]) <= cap;
+    }
+    if (!finite)
+        return FRICREG_ENONFINITE;
+    if (!(p->fk >= 0.0 && p->fk <= p->fs && p->vs > 0.0 && p->delta > 0.0) || !capped)
+        return FRICREG_EINVAL;
+    return FRICREG_OK;
+}
+
+static int eps_status(double eps)
+{
+    if (!isfinite(eps))
+        return FRICREG_ENONFINITE;
+    return fr_eps_valid(eps) ? FRICREG_OK : FRICREG_EINVAL;
+}
+
+int fricreg_stribeck_eval(double v, double f_eq, double fs, double fk, double vs, double delta,
+                          double eps, double *f)
+{
+    if (f == NULL)
+        return FRICREG_ENULL;
+    struct stribeck p = {fs, fk, vs, delta};
+    int status = eps_status(eps);
+    if (status == FRICREG_OK)
+        status = stribeck_status(&p, &v, &f_eq, 1, INFINITY);
+    if (status != FRICREG_OK)
+        return status;
+    *f = stribeck_1d(&p, v, f_eq, eps);
+    return FRICREG_OK;
+}
+
+int fricreg_stribeck_disk_eval(const double v[], const double f_eq[], double fs, double fk,
+                               double vs, double delta, double eps, double f[])
+{
+    if (v == NULL || f_eq == NULL || f == NULL)
+        return FRICREG_ENULL;
+    struct stribeck p = {fs, fk, vs, delta};
+    int status = eps_status(eps);
+    if (status == FRICREG_OK)
+        status = stribeck_status(&p, v, f_eq, 2, FR_DISK_MAX);
+    if (status != FRICREG_OK)
+        return status;
+    double out[2];
+    stribeck_2d(&p, v, f_eq, eps, out);
+    f[0] = out[0];
+    f[1] = out[1];
+    return FRICREG_OK;
+}
+
+/* A batch of n-component contacts: validated in full (a non-finite number anywhere decides
+ * first), then evaluated; the outputs go through a local, so f may alias v or f_eq. */
+static int stribeck_batch(int n, double eps, size_t m, const double v[], const double f_eq[],
+                          const double fs[], const double fk[], const double vs[],
+                          const double delta[], double f[])
+{
+    int status = eps_status(eps);
+    if (status != FRICREG_OK || m == 0)
+        return status;
+    if (!v || !f_eq || !fs || !fk || !vs || !delta || !f)
+        return FRICREG_ENULL;
+    double cap = n == 2 ? FR_DISK_MAX : INFINITY;
+    for (size_t i = 0; i < m && status != FRICREG_ENONFINITE; i++) {
+        struct stribeck p = {fs[i], fk[i], vs[i], delta[i]};
+        int s = stribeck_status(&p, v + n * i, f_eq + n * i, n, cap);
+        if (s == FRICREG_ENONFINITE || status == FRICREG_OK)
+            status = s;
+    }
+    if (status != FRICREG_OK)
+        return status;
+    for (size_t i = 0; i < m; i++) {
+        struct stribeck p = {fs[i], fk[i], vs[i], delta[i]};
+        if (n == 1)
+            f[i] = stribeck_1d(&p, v[i], f_eq[i], eps);
+        else
+            stribeck_2d(&p, v + 2 * i, f_eq + 2 * i, eps, f + 2 * i);
+    }
+    return FRICREG_OK;
+}
+
+int fricreg_stribeck_eval_batch(double eps, size_t m, const double v[], const double f_eq[],
+                                const double fs[], const double fk[], const double vs[],
+                                const double delta[], double f[])
+{
+    return stribeck_batch(1, eps, m, v, f_eq, fs, fk, vs, delta, f);
+}
+
+int fricreg_stribeck_disk_eval_batch(double eps, size_t m, const double v[], const double f_eq[],
+                                     const double fs[], const double fk[], const double vs[],
+                                     const double delta[], double f[])
+{
+    return stribeck_batch(2, eps, m, v, f_eq, fs, fk, vs, delta, f);
+}
