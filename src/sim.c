@@ -35,7 +35,7 @@ static void free_run(fricreg_sim *sim)
 {
     fricreg_ctx_free(sim->ctx);
     free(sim->y);
-    free(sim->zdot);
+    free(sim->zdot_buf);
     free(sim->a_free);
     free(sim->f);
     free(sim->f_eq);
@@ -47,7 +47,8 @@ static void free_run(fricreg_sim *sim)
     sim->jac_work = NULL;
     sim->jac = NULL;
     sim->ctx = NULL;
-    sim->y = sim->zdot = sim->a_free = sim->f = sim->f_eq = NULL;
+    sim->y = sim->zdot_buf = sim->a_free = sim->f = sim->f_eq = NULL;
+    sim->zdot = NULL;
     sim->stick_time = sim->stick_fraction = sim->D = NULL;
     sim->ndof = sim->m = sim->cycles = 0;
     sim->t = 0.0;
@@ -225,7 +226,7 @@ static double eps_in_use(const fricreg_sim *sim)
 static int eval_friction(fricreg_sim *sim, double t, const double y[], int want_feq)
 {
     const double *x = y, *v = y + sim->ndof;
-    sim->sys.type->contacts(&sim->sys, t, x, v, sim->zdot, sim->a_free);
+    sim->zdot = sim->sys.type->contacts(&sim->sys, t, x, v, sim->zdot_buf, sim->a_free);
     return fricreg_ctx_eval(sim->ctx, sim->m, sim->zdot, sim->a_free, sim->f,
                             want_feq ? sim->f_eq : NULL);
 }
@@ -261,7 +262,8 @@ static const char *state_part(const fricreg_sim *sim, size_t k, char *buf, size_
     return buf;
 }
 
-/* The ODE's right-hand side for GSL (sim_internal.h). */
+/* The ODE's right-hand side for GSL (sim_internal.h): the contacts, the friction through the
+ * context, and the system's bodies pass, which also gives the power for D'. */
 int fr_sim_rhs(double t, const double y[], double dydt[], void *params)
 {
     fricreg_sim *sim = params;
@@ -273,11 +275,8 @@ int fr_sim_rhs(double t, const double y[], double dydt[], void *params)
         sim->bad_contact = first_nonfinite_contact(sim);
         return GSL_EBADFUNC; /* GSL stops the step at once */
     }
-    memcpy(dydt, y + n, n * sizeof *dydt);
-    sim->sys.type->accelerations(&sim->sys, t, y, sim->a_free, sim->f, dydt + n);
-    double power = 0.0;
-    for (size_t i = 0; i < sim->m; i++)
-        power += sim->zdot[i] * sim->f[i];
+    double power = sim->sys.type->bodies(&sim->sys, t, y, y + n, sim->zdot, sim->a_free, sim->f,
+                                         dydt);
     dydt[2 * n] = -sim->sys.type->dissipation_weight(&sim->sys) * power;
     return GSL_SUCCESS;
 }
@@ -290,7 +289,7 @@ static int alloc_run(fricreg_sim *sim, size_t cycles)
     sim->ndof = n;
     sim->m = m;
     sim->y = malloc((2 * n + 1) * sizeof *sim->y);
-    sim->zdot = malloc(m * sizeof *sim->zdot);
+    sim->zdot_buf = malloc(m * sizeof *sim->zdot_buf);
     sim->a_free = malloc(m * sizeof *sim->a_free);
     sim->f = malloc(m * sizeof *sim->f);
     sim->f_eq = malloc(m * sizeof *sim->f_eq);
@@ -298,7 +297,7 @@ static int alloc_run(fricreg_sim *sim, size_t cycles)
     sim->stick_fraction = calloc(m, sizeof *sim->stick_fraction);
     sim->D = calloc(cycles + 1, sizeof *sim->D);
     sim->jac_work = malloc(3 * (2 * n + 1) * sizeof *sim->jac_work);
-    if (!sim->jac_work || !sim->y || !sim->zdot || !sim->a_free || !sim->f || !sim->f_eq ||
+    if (!sim->jac_work || !sim->y || !sim->zdot_buf || !sim->a_free || !sim->f || !sim->f_eq ||
         !sim->stick_time || !sim->stick_fraction || !sim->D)
         return sim_fail(sim, FRICREG_ENOMEM, "run: out of memory for %zu bodies", n);
     int status = fricreg_ctx_create(m, &sim->ctx);
@@ -420,9 +419,10 @@ static int after_step(fricreg_sim *sim, double t_before)
                         "run: state diverged at t = %.17g (%s): the step is unstable; reduce dt",
                         sim->t, state_part(sim, k, part, sizeof part));
     double h = sim->t - t_before;
-    sim->sys.type->contacts(&sim->sys, sim->t, sim->y, sim->y + sim->ndof, sim->zdot, sim->a_free);
+    const double *zdot = sim->sys.type->contacts(&sim->sys, sim->t, sim->y, sim->y + sim->ndof,
+                                                 sim->zdot_buf, NULL);
     for (size_t i = 0; i < sim->m; i++)
-        sim->stick_time[i] += fabs(sim->zdot[i]) < sim->eps ? h : 0.0;
+        sim->stick_time[i] += fabs(zdot[i]) < sim->eps ? h : 0.0;
     return sim->observer ? observe(sim) : FRICREG_OK;
 }
 

@@ -93,7 +93,7 @@ static fricreg_sim *make_sim(const struct case_ *c)
 static void random_state(fricreg_sim *sim, double t, unsigned long long *seed, double y[])
 {
     size_t n = sim->ndof, m = sim->m;
-    double zdot_target[64], zdot0[64], a_free[64], zero[64] = {0};
+    double zdot_target[64], zdot_buf[64], a_free[64], zero[64] = {0};
     ck_assert_uint_le(m, 64);
     for (size_t i = 0; i < n; i++)
         y[i] = uniform(seed, -0.8, 0.8) / (double)n;
@@ -102,7 +102,7 @@ static void random_state(fricreg_sim *sim, double t, unsigned long long *seed, d
                                                         : uniform(seed, -0.9, 0.9);
     /* zdot = Zv v + zdot_0(t): zdot_0 from v = 0, then Zv v = target - zdot_0 solved by the
      * systems' own structure (Zv = 1, I, or unit lower bidiagonal for the two blocks). */
-    sim->sys.type->contacts(&sim->sys, t, y, zero, zdot0, a_free);
+    const double *zdot0 = sim->sys.type->contacts(&sim->sys, t, y, zero, zdot_buf, a_free);
     double *v = y + n;
     for (size_t i = 0; i < n; i++)
         v[i] = zdot_target[i] - zdot0[i] +
