@@ -307,6 +307,8 @@ static int alloc_run(fricreg_sim *sim, size_t cycles)
         status = fricreg_ctx_set_partition(sim->ctx, sim->partition);
     if (status == FRICREG_OK)
         status = sim->sys.type->configure(&sim->sys, sim->ctx);
+    if (status == FRICREG_OK) /* until a Jacobian is asked for (fr_sim_jacobian) */
+        status = fricreg_ctx_set_keep_tangent(sim->ctx, 0);
     if (status != FRICREG_OK)
         return sim_fail(sim, status, "run: %s",
                         sim->ctx ? fricreg_ctx_errmsg(sim->ctx) : fricreg_strerror(status));
