@@ -233,13 +233,24 @@ static int eval_friction(fricreg_sim *sim, double t, const double y[], int want_
 
 /* The first component of y that has diverged: not finite or beyond STATE_LIMIT, which no
  * motion of these systems comes near, so an unstable step on its way to overflow. dim if
- * none has. */
+ * none has. Counted first in one vectorized pass, in DIVERGED_LANES partial counts (an early
+ * exit is a branch per component, and one count a serial add), then searched for only when
+ * the count is not 0. */
+enum { DIVERGED_LANES = 8 };
 static size_t first_diverged(const double y[], size_t dim)
 {
+    double count[DIVERGED_LANES] = {0.0}, diverged = 0.0;
     size_t k = 0;
-    while (k < dim && fabs(y[k]) <= STATE_LIMIT)
-        k++;
-    return k;
+    for (; k + DIVERGED_LANES <= dim; k += DIVERGED_LANES)
+        for (size_t l = 0; l < DIVERGED_LANES; l++)
+            count[l] += fabs(y[k + l]) <= STATE_LIMIT ? 0.0 : 1.0;
+    for (; k < dim; k++) /* the tail */
+        count[0] += fabs(y[k]) <= STATE_LIMIT ? 0.0 : 1.0;
+    for (size_t l = 0; l < DIVERGED_LANES; l++)
+        diverged += count[l];
+    for (k = 0; diverged > 0.0 && k < dim && fabs(y[k]) <= STATE_LIMIT; k++)
+        continue;
+    return diverged > 0.0 ? k : dim;
 }
 
 /* The first contact whose kinematics overflowed: a stage of an unstable step. */
