@@ -314,13 +314,13 @@ FRICREG_API int fricreg_ctx_tangent(fricreg_ctx *ctx, size_t m, double df_dzdot[
                                     double df_dafree[]);
 
 /** Whether fricreg_ctx_eval keeps what fricreg_ctx_tangent needs: copies of its zdot and
- *  a_free, two stores per contact (with a diagonal W and a law that reads f_eq, about a third
- *  of the evaluation's time in cache and a fifth of its memory traffic). On by default; a
- *  caller that never asks for the tangent (an explicit integrator: fricreg's drivers turn it
- *  off until an implicit stepper asks for a Jacobian) may turn it off. Cheap. Like every
- *  setter it discards the tangent of the last evaluation; while off, fricreg_ctx_tangent
- *  returns FRICREG_EINVAL, and after turning it back on it works from the next successful
- *  evaluation. f and f_eq are the same to the bit either way.
+ *  a_free, two stores per contact (with a diagonal W and a law that reads f_eq, about a
+ *  quarter of the evaluation's memory traffic: out of cache, a quarter of its time). On by
+ *  default; a caller that never asks for the tangent (an explicit integrator: fricreg's
+ *  drivers turn it off until an implicit stepper asks for a Jacobian) may turn it off.
+ *  Cheap. Like every setter it discards the tangent of the last evaluation; while off,
+ *  fricreg_ctx_tangent returns FRICREG_EINVAL, and after turning it back on it works from the
+ *  next successful evaluation. f and f_eq are the same to the bit either way.
  *
  *  keep          in: 1 to keep the tangent's inputs (default), 0 not to.
  *
