@@ -6,8 +6,10 @@
  * STREAM's triad a = b + s c, at m = 10^3 contacts (in cache, swept many times per timing)
  * and m = 10^6 (40 MB of arrays: memory traffic counts). Inputs as bench/scaling.c: 40 %
  * stuck (v = 0), 20 % near stick (|v| < eps), 40 % slipping, in random order, fixed seed.
- * Every figure is the median of REPEATS interleaved timings. Prints the table and the ratios
- * to the minimal loops; with OUTDIR, also writes kernels.csv there. */
+ * fricreg_ctx_eval runs as created, and with fricreg_ctx_set_keep_tangent(0) (no copies of
+ * zdot and a_free for the tangent). Every figure is the median of REPEATS interleaved timings.
+ * Prints the table and the ratios to the minimal loops; with OUTDIR, also writes kernels.csv
+ * there. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -16,26 +18,25 @@
 #include "bench.h"
 #include "minimal.h"
 
-enum { NSIZES = 2, REPEATS = 21, NITEMS = 7 };
+enum { NSIZES = 2, REPEATS = 21, NITEMS = 8 };
 static const size_t sizes[NSIZES] = {1000, 1000000};
 #define KERNEL_EPS 1e-3
 #define CONTACTS_PER_TIMING 4e6 /* small sizes are swept until a timing covers this many */
 
 /* What each item is; the minimal loop it is compared with (-1: none). */
-enum item { TRIAD, MIN_BATCH, BATCH, MIN_CTX, MIN_CTX_COPIES, CTX, CTX_FEQ };
-static const char *const item_names[NITEMS] = {"triad a = b + s c (per element)",
-                                               "minimal loop, law (4)",
-                                               "fricreg_law_eval_batch, law (4)",
-                                               "minimal loop, law (4), f_eq = -a/w",
-                                               "  the same + copies of v, a_free",
-                                               "fricreg_ctx_eval, W = I, law (4)",
-                                               "fricreg_ctx_eval, the same, f_eq out"};
-static const int item_yardstick[NITEMS] = {-1, -1, MIN_BATCH, -1, MIN_CTX, MIN_CTX, MIN_CTX};
+enum item { TRIAD, MIN_BATCH, BATCH, MIN_CTX, MIN_CTX_COPIES, CTX, CTX_FEQ, CTX_NO_TANGENT };
+static const char *const item_names[NITEMS] = {
+    "triad a = b + s c (per element)",      "minimal loop, law (4)",
+    "fricreg_law_eval_batch, law (4)",      "minimal loop, law (4), f_eq = -a/w",
+    "  the same + copies of v, a_free",     "fricreg_ctx_eval, W = I, law (4)",
+    "fricreg_ctx_eval, the same, f_eq out", "fricreg_ctx_eval, no tangent inputs"};
+static const int item_yardstick[NITEMS] = {-1,      -1,      MIN_BATCH, -1,
+                                           MIN_CTX, MIN_CTX, MIN_CTX,   MIN_CTX};
 
 struct arrays {
     size_t m;
     double *v, *f_eq, *mun, *a_free, *w, *f, *f_eq_out, *v_copy, *a_copy;
-    fricreg_ctx *ctx;
+    fricreg_ctx *ctx, *ctx_no_tangent; /* the second: fricreg_ctx_set_keep_tangent(0) */
 };
 
 /* xorshift64*: the same inputs on every machine. */
@@ -68,17 +69,23 @@ static int arrays_init(struct arrays *a, size_t m)
                     &a->f, &a->f_eq_out, &a->v_copy, &a->a_copy};
     int ok = 1;
     a->m = m;
-    a->ctx = NULL;
+    a->ctx = a->ctx_no_tangent = NULL;
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++)
         ok &= (*p[k] = malloc(m * sizeof **p[k])) != NULL;
     if (!ok)
         return FRICREG_ENOMEM;
     fill_inputs(a);
-    int status = fricreg_ctx_create(m, &a->ctx); /* W = I until set otherwise */
+    int status = FRICREG_OK;
+    fricreg_ctx **ctx[2] = {&a->ctx, &a->ctx_no_tangent};
+    for (int c = 0; c < 2 && status == FRICREG_OK; c++) {
+        status = fricreg_ctx_create(m, ctx[c]); /* W = I until set otherwise */
+        if (status == FRICREG_OK)
+            status = fricreg_ctx_set_bounds(*ctx[c], m, a->mun);
+        if (status == FRICREG_OK)
+            status = fricreg_ctx_set_law(*ctx[c], FRICREG_LAW_QUINN, KERNEL_EPS);
+    }
     if (status == FRICREG_OK)
-        status = fricreg_ctx_set_bounds(a->ctx, m, a->mun);
-    if (status == FRICREG_OK)
-        status = fricreg_ctx_set_law(a->ctx, FRICREG_LAW_QUINN, KERNEL_EPS);
+        status = fricreg_ctx_set_keep_tangent(a->ctx_no_tangent, 0);
     return status;
 }
 
@@ -87,6 +94,7 @@ static void arrays_free(struct arrays *a)
     free(a->v), free(a->f_eq), free(a->mun), free(a->a_free), free(a->w), free(a->f);
     free(a->f_eq_out), free(a->v_copy), free(a->a_copy);
     fricreg_ctx_free(a->ctx);
+    fricreg_ctx_free(a->ctx_no_tangent);
 }
 
 /* One pass of item it over the arrays; returns a fricreg status. */
@@ -107,6 +115,7 @@ static int run_item(int it, struct arrays *a)
                                       a->a_copy);
         return FRICREG_OK;
     case CTX: return fricreg_ctx_eval(a->ctx, m, a->v, a->a_free, a->f, NULL);
+    case CTX_NO_TANGENT: return fricreg_ctx_eval(a->ctx_no_tangent, m, a->v, a->a_free, a->f, NULL);
     default: return fricreg_ctx_eval(a->ctx, m, a->v, a->a_free, a->f, a->f_eq_out);
     }
 }
@@ -150,7 +159,7 @@ static int measure(void)
 /* Bytes each item moves per contact, counted as STREAM counts (reads + writes, no
  * write-allocate): the bandwidth bound is bytes / (triad's bytes per ns). fricreg_ctx_eval
  * also keeps copies of zdot and a_free for fricreg_ctx_tangent. */
-static const double item_bytes[NITEMS] = {24, 32, 32, 40, 56, 56, 64};
+static const double item_bytes[NITEMS] = {24, 32, 32, 40, 56, 56, 64, 40};
 
 static void print_table(void)
 {

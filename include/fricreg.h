@@ -311,10 +311,26 @@ FRICREG_API int fricreg_ctx_eval(fricreg_ctx *ctx, size_t m, const double zdot[]
  *  Returns FRICREG_OK; FRICREG_ENULL if ctx is NULL or both outputs are NULL; FRICREG_ESIZE
  *  if m differs from the context's; FRICREG_EINVAL if no evaluation has succeeded since the
  *  context was created or since the last setter call (set_law, set_bounds, set_coupling_*,
- *  set_partition); FRICREG_ESINGULAR only if the block it must refactorize has become
+ *  set_partition, set_keep_tangent), or if fricreg_ctx_set_keep_tangent turned the tangent's
+ *  inputs off; FRICREG_ESINGULAR only if the block it must refactorize has become
  *  singular, which cannot happen with the same W. */
 FRICREG_API int fricreg_ctx_tangent(fricreg_ctx *ctx, size_t m, double df_dzdot[],
                                     double df_dafree[]);
+
+/** Whether fricreg_ctx_eval keeps what fricreg_ctx_tangent needs: copies of its zdot and
+ *  a_free, two stores per contact (with a diagonal W and a law that reads f_eq, about a
+ *  quarter of the evaluation's memory traffic: out of cache, a quarter of its time). On by
+ *  default; a caller that never asks for the tangent (an explicit integrator: fricreg's
+ *  drivers turn it off until an implicit stepper asks for a Jacobian) may turn it off.
+ *  Cheap. Like every setter it discards the tangent of the last evaluation; while off,
+ *  fricreg_ctx_tangent returns FRICREG_EINVAL, and after turning it back on it works from the
+ *  next successful evaluation. f and f_eq are the same to the bit either way.
+ *
+ *  keep          in: 1 to keep the tangent's inputs (default), 0 not to.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if ctx is NULL; FRICREG_EINVAL if keep is neither 0
+ *  nor 1. */
+FRICREG_API int fricreg_ctx_set_keep_tangent(fricreg_ctx *ctx, int keep);
 
 /** Counters kept by a context since creation or the last fricreg_ctx_reset_stats. */
 enum fricreg_stat {

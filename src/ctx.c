@@ -66,6 +66,8 @@ int fricreg_ctx_create(size_t m, fricreg_ctx **out)
     }
     for (size_t i = 0; i < m; i++)
         ctx->mun[i] = ctx->w_diag[i] = 1.0;
+    ctx->w_unit = 1;
+    ctx->keep_tangent = 1;
     *out = ctx;
     return FRICREG_OK;
 }
@@ -147,6 +149,9 @@ int fricreg_ctx_set_coupling_diagonal(fricreg_ctx *ctx, size_t m, const double w
                            w[i]);
     free_dense(ctx);
     memcpy(ctx->w_diag, w, m * sizeof *w);
+    ctx->w_unit = 1;
+    for (size_t i = 0; i < m; i++)
+        ctx->w_unit &= w[i] == 1.0;
     ctx->last_valid = 0;
     return FRICREG_OK;
 }
@@ -222,6 +227,17 @@ int fricreg_ctx_set_coupling_dense(fricreg_ctx *ctx, size_t m, const double W[])
     ctx->rhs = rhs;
     ctx->fac = fac; /* not valid: nothing factored yet */
     ctx->qp = qp;
+    ctx->last_valid = 0;
+    return FRICREG_OK;
+}
+
+int fricreg_ctx_set_keep_tangent(fricreg_ctx *ctx, int keep)
+{
+    if (ctx == NULL)
+        return FRICREG_ENULL;
+    if (keep != 0 && keep != 1)
+        return fr_fail(ctx, FRICREG_EINVAL, "set_keep_tangent: keep = %d must be 0 or 1", keep);
+    ctx->keep_tangent = keep;
     ctx->last_valid = 0;
     return FRICREG_OK;
 }

@@ -22,6 +22,7 @@ struct fricreg_ctx {
     double eps;
     double *mun;    /* [m] friction bounds */
     double *w_diag; /* [m] diagonal of W (the whole of W when W is diagonal) */
+    int w_unit;     /* W = I: f_eq = -a_free needs no division */
     double *W;      /* [m*m] row-major dense W, or NULL when W is diagonal */
 
     /* Scratch, allocated with the context or the coupling so that eval never allocates. */
@@ -38,6 +39,7 @@ struct fricreg_ctx {
     double *last_zdot;  /* [m] */
     double *last_afree; /* [m] */
     int last_valid;     /* an evaluation succeeded since the last setter call */
+    int keep_tangent;   /* eval keeps last_zdot, last_afree (fricreg_ctx_set_keep_tangent) */
 
     int64_t stats[FR_NSTATS];
     struct fr_error err;

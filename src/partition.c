@@ -105,29 +105,44 @@ static inline uint64_t bits_of(double x)
  *     (a count from a double compare needs a 64-bit compare SSE2 lacks, and a double count is
  *     added serially); band = eps, or the least subnormal for (2)'s zdot_i == 0;
  *   - the copies are restrict: they are the context's own, and without it the runtime
- *     overlap checks between seven arrays exceed what it will version for. */
-#define DIAGONAL_LOOP(FORCE, FEQ_OUT)                       \
-    for (size_t i = 0; i < m; i++) {                        \
-        double v = zdot[i], a = a_free[i], feq = -a / w[i]; \
-        last_zdot[i] = v;                                   \
-        last_afree[i] = a;                                  \
-        f[i] = (FORCE);                                     \
-        FEQ_OUT;                                            \
-        n_near += (bits_of(fabs(v)) - band) >> 63;          \
+ *     overlap checks between seven arrays exceed what it will version for;
+ *   - each choice (W = I or not, the tangent's copies or not, f_eq out or not) is its own
+ *     loop: a store or a division under a flag inside the loop is a branch. */
+#define DIAGONAL_LOOP(FEQ, FORCE, FEQ_OUT, KEEP)        \
+    for (size_t i = 0; i < m; i++) {                    \
+        double v = zdot[i], a = a_free[i], feq = (FEQ); \
+        KEEP;                                           \
+        f[i] = (FORCE);                                 \
+        FEQ_OUT;                                        \
+        n_near += (bits_of(fabs(v)) - band) >> 63;      \
     }
-#define DIAGONAL_CASE(NEAR, FORCE)                         \
-    if (f_eq)                                              \
-        DIAGONAL_LOOP(FORCE, f_eq[i] = (NEAR) ? feq : NAN) \
-    else                                                   \
-        DIAGONAL_LOOP(FORCE, (void)0)
+#define KEEP_INPUTS (last_zdot[i] = v, last_afree[i] = a)
+#define DIAGONAL_OUT(FEQ, NEAR, FORCE, KEEP)                          \
+    if (f_eq)                                                         \
+        DIAGONAL_LOOP(FEQ, FORCE, f_eq[i] = (NEAR) ? feq : NAN, KEEP) \
+    else                                                              \
+        DIAGONAL_LOOP(FEQ, FORCE, (void)0, KEEP)
+/* W = I needs no division: -a_free,i / 1 is -a_free,i exactly. */
+#define DIAGONAL_CASE(NEAR, FORCE)                    \
+    if (w_unit && !keep)                              \
+        DIAGONAL_OUT(-a, NEAR, FORCE, (void)0)        \
+    else if (w_unit)                                  \
+        DIAGONAL_OUT(-a, NEAR, FORCE, KEEP_INPUTS)    \
+    else if (!keep)                                   \
+        DIAGONAL_OUT(-a / w[i], NEAR, FORCE, (void)0) \
+    else                                              \
+        DIAGONAL_OUT(-a / w[i], NEAR, FORCE, KEEP_INPUTS)
 
-/* The pass for law (known, reading f_eq) on m contacts; returns |S|. */
+/* The pass for law (known, reading f_eq) on m contacts; returns |S|. With last_zdot NULL the
+ * tangent's inputs are not kept (fricreg_ctx_set_keep_tangent); w_unit: W = I. */
 static size_t diagonal_pass(int law, double eps, size_t m, const double zdot[],
-                            const double a_free[], const double w[], const double mun[], double f[],
-                            double f_eq[], double *restrict last_zdot, double *restrict last_afree)
+                            const double a_free[], const double w[], int w_unit, const double mun[],
+                            double f[], double f_eq[], double *restrict last_zdot,
+                            double *restrict last_afree)
 {
     uint64_t n_near = 0, band = bits_of(law == FRICREG_LAW_FORCE_BALANCE ? 0x1p-1074 : eps);
     double k = fr_band_scale(eps);
+    int keep = last_zdot != NULL;
     switch (law) {
     case FRICREG_LAW_QUINN: DIAGONAL_CASE(fabs(v) < eps, fr_quinn_band(v * k, feq, mun[i])) break;
     case FRICREG_LAW_KARNOPP: DIAGONAL_CASE(fabs(v) < eps, fr_karnopp(v, feq, mun[i], eps)) break;
@@ -141,9 +156,11 @@ static size_t diagonal_pass(int law, double eps, size_t m, const double zdot[],
 static void eval_diagonal(fricreg_ctx *ctx, const double zdot[], const double a_free[], double f[],
                           double f_eq[])
 {
-    ctx->n_stick = diagonal_pass(ctx->law, ctx->eps, ctx->m, zdot, a_free, ctx->w_diag, ctx->mun, f,
-                                 f_eq, ctx->last_zdot, ctx->last_afree);
-    ctx->last_valid = 1;
+    int keep = ctx->keep_tangent;
+    ctx->n_stick = diagonal_pass(ctx->law, ctx->eps, ctx->m, zdot, a_free, ctx->w_diag, ctx->w_unit,
+                                 ctx->mun, f, f_eq, keep ? ctx->last_zdot : NULL,
+                                 keep ? ctx->last_afree : NULL);
+    ctx->last_valid = keep;
 }
 
 /* A dense W and a law that reads f_eq: split, then the near-stick forces by the partition. */
@@ -155,12 +172,15 @@ static int eval_dense(fricreg_ctx *ctx, const double zdot[], const double a_free
     return ctx->n_stick > 0 ? fr_eval_paper(ctx, zdot, a_free) : FRICREG_OK;
 }
 
-/* The tangent (tangent.c) is of the last successful evaluation: keep its inputs. */
+/* The tangent (tangent.c) is of the last successful evaluation: keep its inputs, unless the
+ * caller does not want the tangent. */
 static void remember_inputs(fricreg_ctx *ctx, const double zdot[], const double a_free[])
 {
+    ctx->last_valid = ctx->keep_tangent;
+    if (!ctx->keep_tangent)
+        return;
     memcpy(ctx->last_zdot, zdot, ctx->m * sizeof *zdot);
     memcpy(ctx->last_afree, a_free, ctx->m * sizeof *a_free);
-    ctx->last_valid = 1;
 }
 
 /* f_eq out: the solved values on S, NaN elsewhere (not computed: the law does not read it). */

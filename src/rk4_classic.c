@@ -17,10 +17,9 @@
 #include "integrator.h"
 
 struct rk4_state {
-    double *y0;  /* [dim] the state at the start of the current classical step */
-    double *k;   /* [dim] the current stage derivative */
-    double *sum; /* [dim] k1 + 2 k2 + 2 k3 + k4, accumulated */
-    double *y1;  /* [dim] the stage argument */
+    double *mid;  /* [dim] the state after the first of the two classical steps */
+    double *k[4]; /* [dim] each: the stage derivatives k1 ... k4 of the current step */
+    double *arg;  /* [dim] the stage argument */
 };
 
 static void rk4_free(void *vstate)
@@ -28,10 +27,10 @@ static void rk4_free(void *vstate)
     struct rk4_state *s = vstate;
     if (s == NULL)
         return;
-    free(s->y0);
-    free(s->k);
-    free(s->sum);
-    free(s->y1);
+    free(s->mid);
+    for (int j = 0; j < 4; j++)
+        free(s->k[j]);
+    free(s->arg);
     free(s);
 }
 
@@ -40,52 +39,62 @@ static void *rk4_alloc(size_t dim)
     struct rk4_state *s = calloc(1, sizeof *s);
     if (s == NULL)
         return NULL;
-    s->y0 = malloc(dim * sizeof *s->y0);
-    s->k = malloc(dim * sizeof *s->k);
-    s->sum = malloc(dim * sizeof *s->sum);
-    s->y1 = malloc(dim * sizeof *s->y1);
-    if (!s->y0 || !s->k || !s->sum || !s->y1) {
+    int ok = (s->mid = malloc(dim * sizeof *s->mid)) != NULL;
+    ok &= (s->arg = malloc(dim * sizeof *s->arg)) != NULL;
+    for (int j = 0; j < 4; j++)
+        ok &= (s->k[j] = malloc(dim * sizeof *s->k[j])) != NULL;
+    if (!ok) {
         rk4_free(s);
         return NULL;
     }
     return s;
 }
 
-/* y1 = y0 + c k, and sum += w k. */
-static void stage_update(struct rk4_state *s, size_t dim, double c, double w)
+/* The stage argument arg = y0 + c k. */
+static void stage_argument(size_t dim, const double *restrict y0, double c,
+                           const double *restrict k, double *restrict arg)
 {
-    for (size_t i = 0; i < dim; i++) {
-        s->y1[i] = s->y0[i] + c * s->k[i];
-        s->sum[i] += w * s->k[i];
-    }
+    for (size_t i = 0; i < dim; i++)
+        arg[i] = y0[i] + c * k[i];
 }
 
-/* One classical RK4 step of size h from s->y0 into y. */
-static int classical_step(struct rk4_state *s, size_t dim, double t, double h, double y[],
-                          const gsl_odeiv2_system *sys)
+/* y1 = y0 + h/6 (k1 + 2 k2 + 2 k3 + k4), the sum formed left to right. Each stage keeps its
+ * own k, so a stage costs one store per component (the argument), not two (the argument and
+ * a running sum), and the running sum's order is kept, so the result is the same to the
+ * bit. y1 may be y0. */
+static void combine(size_t dim, const double y0[], double h, double *const k[4], double y1[])
 {
-    memset(s->sum, 0, dim * sizeof *s->sum);
-    int status = GSL_ODEIV_FN_EVAL(sys, t, s->y0, s->k); /* k1 */
+    const double *restrict k1 = k[0], *restrict k2 = k[1], *restrict k3 = k[2];
+    const double *restrict k4 = k[3];
+    for (size_t i = 0; i < dim; i++)
+        y1[i] = y0[i] + h / 6.0 * (((k1[i] + 2.0 * k2[i]) + 2.0 * k3[i]) + k4[i]);
+}
+
+/* One classical RK4 step of size h from y0 into y1 (y1 may be y0); y1 is written only when
+ * every stage succeeded. */
+static int classical_step(struct rk4_state *s, size_t dim, double t, double h, const double y0[],
+                          double y1[], const gsl_odeiv2_system *sys)
+{
+    int status = GSL_ODEIV_FN_EVAL(sys, t, y0, s->k[0]);
     if (status == GSL_SUCCESS) {
-        stage_update(s, dim, 0.5 * h, 1.0);
-        status = GSL_ODEIV_FN_EVAL(sys, t + 0.5 * h, s->y1, s->k); /* k2 */
+        stage_argument(dim, y0, 0.5 * h, s->k[0], s->arg);
+        status = GSL_ODEIV_FN_EVAL(sys, t + 0.5 * h, s->arg, s->k[1]);
     }
     if (status == GSL_SUCCESS) {
-        stage_update(s, dim, 0.5 * h, 2.0);
-        status = GSL_ODEIV_FN_EVAL(sys, t + 0.5 * h, s->y1, s->k); /* k3 */
+        stage_argument(dim, y0, 0.5 * h, s->k[1], s->arg);
+        status = GSL_ODEIV_FN_EVAL(sys, t + 0.5 * h, s->arg, s->k[2]);
     }
     if (status == GSL_SUCCESS) {
-        stage_update(s, dim, h, 2.0);
-        status = GSL_ODEIV_FN_EVAL(sys, t + h, s->y1, s->k); /* k4 */
+        stage_argument(dim, y0, h, s->k[2], s->arg);
+        status = GSL_ODEIV_FN_EVAL(sys, t + h, s->arg, s->k[3]);
     }
     if (status != GSL_SUCCESS)
         return status;
-    for (size_t i = 0; i < dim; i++)
-        y[i] = s->y0[i] + h / 6.0 * (s->sum[i] + s->k[i]);
+    combine(dim, y0, h, s->k, y1);
     return GSL_SUCCESS;
 }
 
-/* Two classical steps of h/2. On failure y is left as it was: GSL's evolve restores it. */
+/* Two classical steps of h/2, through s->mid. On failure y is left as it was. */
 static int rk4_apply(void *vstate, size_t dim, double t, double h, double y[], double yerr[],
                      const double dydt_in[], double dydt_out[], const gsl_odeiv2_system *sys)
 {
@@ -94,10 +103,9 @@ static int rk4_apply(void *vstate, size_t dim, double t, double h, double y[], d
      * f at the end of the step would cost one more right-hand side per call. */
     (void)dydt_in, (void)dydt_out;
     struct rk4_state *s = vstate;
-    memcpy(s->y0, y, dim * sizeof *y);
-    int status = classical_step(s, dim, t, 0.5 * h, s->y0, sys);
+    int status = classical_step(s, dim, t, 0.5 * h, y, s->mid, sys);
     if (status == GSL_SUCCESS)
-        status = classical_step(s, dim, t + 0.5 * h, 0.5 * h, y, sys);
+        status = classical_step(s, dim, t + 0.5 * h, 0.5 * h, s->mid, y, sys);
     if (status != GSL_SUCCESS)
         return status;
     memset(yerr, 0, dim * sizeof *yerr);

@@ -35,7 +35,7 @@ static void free_run(fricreg_sim *sim)
 {
     fricreg_ctx_free(sim->ctx);
     free(sim->y);
-    free(sim->zdot);
+    free(sim->zdot_buf);
     free(sim->a_free);
     free(sim->f);
     free(sim->f_eq);
@@ -47,7 +47,8 @@ static void free_run(fricreg_sim *sim)
     sim->jac_work = NULL;
     sim->jac = NULL;
     sim->ctx = NULL;
-    sim->y = sim->zdot = sim->a_free = sim->f = sim->f_eq = NULL;
+    sim->y = sim->zdot_buf = sim->a_free = sim->f = sim->f_eq = NULL;
+    sim->zdot = NULL;
     sim->stick_time = sim->stick_fraction = sim->D = NULL;
     sim->ndof = sim->m = sim->cycles = 0;
     sim->t = 0.0;
@@ -225,20 +226,31 @@ static double eps_in_use(const fricreg_sim *sim)
 static int eval_friction(fricreg_sim *sim, double t, const double y[], int want_feq)
 {
     const double *x = y, *v = y + sim->ndof;
-    sim->sys.type->contacts(&sim->sys, t, x, v, sim->zdot, sim->a_free);
+    sim->zdot = sim->sys.type->contacts(&sim->sys, t, x, v, sim->zdot_buf, sim->a_free);
     return fricreg_ctx_eval(sim->ctx, sim->m, sim->zdot, sim->a_free, sim->f,
                             want_feq ? sim->f_eq : NULL);
 }
 
 /* The first component of y that has diverged: not finite or beyond STATE_LIMIT, which no
  * motion of these systems comes near, so an unstable step on its way to overflow. dim if
- * none has. */
+ * none has. Counted first in one vectorized pass, in DIVERGED_LANES partial counts (an early
+ * exit is a branch per component, and one count a serial add), then searched for only when
+ * the count is not 0. */
+enum { DIVERGED_LANES = 8 };
 static size_t first_diverged(const double y[], size_t dim)
 {
+    double count[DIVERGED_LANES] = {0.0}, diverged = 0.0;
     size_t k = 0;
-    while (k < dim && fabs(y[k]) <= STATE_LIMIT)
-        k++;
-    return k;
+    for (; k + DIVERGED_LANES <= dim; k += DIVERGED_LANES)
+        for (size_t l = 0; l < DIVERGED_LANES; l++)
+            count[l] += fabs(y[k + l]) <= STATE_LIMIT ? 0.0 : 1.0;
+    for (; k < dim; k++) /* the tail */
+        count[0] += fabs(y[k]) <= STATE_LIMIT ? 0.0 : 1.0;
+    for (size_t l = 0; l < DIVERGED_LANES; l++)
+        diverged += count[l];
+    for (k = 0; diverged > 0.0 && k < dim && fabs(y[k]) <= STATE_LIMIT; k++)
+        continue;
+    return diverged > 0.0 ? k : dim;
 }
 
 /* The first contact whose kinematics overflowed: a stage of an unstable step. */
@@ -261,7 +273,8 @@ static const char *state_part(const fricreg_sim *sim, size_t k, char *buf, size_
     return buf;
 }
 
-/* The ODE's right-hand side for GSL (sim_internal.h). */
+/* The ODE's right-hand side for GSL (sim_internal.h): the contacts, the friction through the
+ * context, and the system's bodies pass, which also gives the power for D'. */
 int fr_sim_rhs(double t, const double y[], double dydt[], void *params)
 {
     fricreg_sim *sim = params;
@@ -273,11 +286,8 @@ int fr_sim_rhs(double t, const double y[], double dydt[], void *params)
         sim->bad_contact = first_nonfinite_contact(sim);
         return GSL_EBADFUNC; /* GSL stops the step at once */
     }
-    memcpy(dydt, y + n, n * sizeof *dydt);
-    sim->sys.type->accelerations(&sim->sys, t, y, sim->a_free, sim->f, dydt + n);
-    double power = 0.0;
-    for (size_t i = 0; i < sim->m; i++)
-        power += sim->zdot[i] * sim->f[i];
+    double power = sim->sys.type->bodies(&sim->sys, t, y, y + n, sim->zdot, sim->a_free, sim->f,
+                                         dydt);
     dydt[2 * n] = -sim->sys.type->dissipation_weight(&sim->sys) * power;
     return GSL_SUCCESS;
 }
@@ -290,7 +300,7 @@ static int alloc_run(fricreg_sim *sim, size_t cycles)
     sim->ndof = n;
     sim->m = m;
     sim->y = malloc((2 * n + 1) * sizeof *sim->y);
-    sim->zdot = malloc(m * sizeof *sim->zdot);
+    sim->zdot_buf = malloc(m * sizeof *sim->zdot_buf);
     sim->a_free = malloc(m * sizeof *sim->a_free);
     sim->f = malloc(m * sizeof *sim->f);
     sim->f_eq = malloc(m * sizeof *sim->f_eq);
@@ -298,7 +308,7 @@ static int alloc_run(fricreg_sim *sim, size_t cycles)
     sim->stick_fraction = calloc(m, sizeof *sim->stick_fraction);
     sim->D = calloc(cycles + 1, sizeof *sim->D);
     sim->jac_work = malloc(3 * (2 * n + 1) * sizeof *sim->jac_work);
-    if (!sim->jac_work || !sim->y || !sim->zdot || !sim->a_free || !sim->f || !sim->f_eq ||
+    if (!sim->jac_work || !sim->y || !sim->zdot_buf || !sim->a_free || !sim->f || !sim->f_eq ||
         !sim->stick_time || !sim->stick_fraction || !sim->D)
         return sim_fail(sim, FRICREG_ENOMEM, "run: out of memory for %zu bodies", n);
     int status = fricreg_ctx_create(m, &sim->ctx);
@@ -308,6 +318,8 @@ static int alloc_run(fricreg_sim *sim, size_t cycles)
         status = fricreg_ctx_set_partition(sim->ctx, sim->partition);
     if (status == FRICREG_OK)
         status = sim->sys.type->configure(&sim->sys, sim->ctx);
+    if (status == FRICREG_OK) /* until a Jacobian is asked for (fr_sim_jacobian) */
+        status = fricreg_ctx_set_keep_tangent(sim->ctx, 0);
     if (status != FRICREG_OK)
         return sim_fail(sim, status, "run: %s",
                         sim->ctx ? fricreg_ctx_errmsg(sim->ctx) : fricreg_strerror(status));
@@ -420,9 +432,10 @@ static int after_step(fricreg_sim *sim, double t_before)
                         "run: state diverged at t = %.17g (%s): the step is unstable; reduce dt",
                         sim->t, state_part(sim, k, part, sizeof part));
     double h = sim->t - t_before;
-    sim->sys.type->contacts(&sim->sys, sim->t, sim->y, sim->y + sim->ndof, sim->zdot, sim->a_free);
+    const double *zdot = sim->sys.type->contacts(&sim->sys, sim->t, sim->y, sim->y + sim->ndof,
+                                                 sim->zdot_buf, NULL);
     for (size_t i = 0; i < sim->m; i++)
-        sim->stick_time[i] += fabs(sim->zdot[i]) < sim->eps ? h : 0.0;
+        sim->stick_time[i] += fabs(zdot[i]) < sim->eps ? h : 0.0;
     return sim->observer ? observe(sim) : FRICREG_OK;
 }
 

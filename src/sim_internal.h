@@ -29,7 +29,9 @@ struct fricreg_sim {
     double eps;
     fricreg_ctx *ctx;
     double *y;               /* [2 ndof + 1]: x, v, D */
-    double *zdot, *a_free;   /* [m] contact kinematics */
+    double *zdot_buf;        /* [m] contact velocities, for systems that do not pass v */
+    const double *zdot;      /* [m] the last evaluation's contact velocities: zdot_buf or v */
+    double *a_free;          /* [m] free accelerations */
     double *f, *f_eq;        /* [m] friction */
     double *stick_time;      /* [m] near-stick time in the current cycle */
     double *stick_fraction;  /* [m] result */

@@ -183,6 +183,9 @@ int fr_sim_jacobian(double t, const double y[], double *dfdy, double dfdt[], voi
         return GSL_ENOMEM;
     }
     struct fr_jacobian *J = sim->jac;
+    /* Off for the run's explicit steppers (sim.c), on once a Jacobian is asked for; cheap, and
+     * it cannot fail with a valid context and 1. */
+    fricreg_ctx_set_keep_tangent(sim->ctx, 1);
     int status = fr_sim_rhs(t, y, J->dydt, sim); /* the tangent is that of the last eval */
     if (status != GSL_SUCCESS)
         return status;

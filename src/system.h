@@ -51,10 +51,17 @@ struct fr_system_type {
     /* Bounds and coupling W into a context of ncontacts(sys) contacts; a fricreg status. */
     int (*configure)(const struct fr_system *sys, fricreg_ctx *ctx);
     void (*initial)(const struct fr_system *sys, double x[], double v[]);
-    void (*contacts)(const struct fr_system *sys, double t, const double x[], const double v[],
-                     double zdot[], double a_free[]);
-    void (*accelerations)(const struct fr_system *sys, double t, const double x[],
-                          const double a_free[], const double f[], double acc[]);
+    /* The contacts' kinematics at (t, x, v): a_free [m] into a_free unless it is NULL (the
+     * drivers' after-step check reads zdot only), and the contact velocities zdot [m] as the
+     * return value: written into zdot_buf, or v itself where the contacts move with the bodies
+     * (oscillator, chain), which saves a copy per right-hand side. */
+    const double *(*contacts)(const struct fr_system *sys, double t, const double x[],
+                              const double v[], double zdot_buf[], double a_free[]);
+    /* The rest of the right-hand side once the friction forces f are known, in one pass
+     * where the system allows: x' = v into dydt[0, ndof), the body accelerations into
+     * dydt[ndof, 2 ndof), and the friction power sum_i zdot_i f_i as the return value. */
+    double (*bodies)(const struct fr_system *sys, double t, const double x[], const double v[],
+                     const double zdot[], const double a_free[], const double f[], double dydt[]);
 
     /* The system is linear in x, v and f (all three are):
      *   zdot = Zv v + zdot_0(t),  a_free = Ax x + a_0(t),  acc = Cx x + Cf f + c_0(t),

@@ -161,6 +161,9 @@ static int check_tangent_args(fricreg_ctx *ctx, size_t m, const double dz[], con
         return fr_fail(ctx, FRICREG_ESIZE, "tangent: m = %zu, context has %zu contacts", m, ctx->m);
     if (dz == NULL && da == NULL)
         return fr_fail(ctx, FRICREG_ENULL, "tangent: df_dzdot and df_dafree are both NULL");
+    if (!ctx->keep_tangent)
+        return fr_fail(ctx, FRICREG_EINVAL,
+                       "tangent: the evaluation's inputs are not kept (set_keep_tangent 0)");
     if (!ctx->last_valid)
         return fr_fail(ctx, FRICREG_EINVAL,
                        "tangent: no successful evaluation since the context was created or"

@@ -297,6 +297,76 @@ START_TEST(tangent_survives_a_failed_factorization)
 }
 END_TEST
 
+/* fricreg_ctx_set_keep_tangent: ENULL, EINVAL for keep outside {0, 1} (with a message); with
+ * the inputs off, f and f_eq are the same to the bit for every law on W = I (no division), a
+ * non-unit diagonal W and a dense W, and the tangent is refused (outputs untouched); turned
+ * back on, it is refused until the next evaluation, then equals a context that kept them all
+ * along, to the bit. 64 random contacts (5 with the dense W): a third at rest, a third in the
+ * band, a third sliding; f_eq within +-2 mun. */
+START_TEST(keep_tangent_off_changes_no_force)
+{
+    enum { M = 64, MD = 5 };
+    ck_assert_int_eq(fricreg_ctx_set_keep_tangent(NULL, 0), FRICREG_ENULL);
+    static double z[M], a[M], mun[M], w[M], f_on[M], f_off[M], feq_on[M], feq_off[M];
+    static double dz_on[M * M], dz_off[M * M], da_on[M * M], da_off[M * M];
+    uint64_t s = 0x2385u;
+    const double eps = 0.0137;
+    for (size_t i = 0; i < M; i++) {
+        double r[4];
+        for (int k = 0; k < 4; k++) {
+            s = s * 6364136223846793005ULL + 1442695040888963407ULL;
+            r[k] = (double)(s >> 11) * 0x1.0p-53;
+        }
+        z[i] = r[0] < 0.33 ? 0.0 : r[0] < 0.67 ? (2.0 * r[1] - 1.0) * eps : (2.0 * r[1] - 1.0);
+        mun[i] = 0.25 + r[2];
+        w[i] = 0.5 + r[3];
+        a[i] = (4.0 * r[1] - 2.0) * mun[i] * w[i];
+    }
+    const double Wd[MD * MD] = {2.1, 0.3, -0.2, 0.1, 0.0, 0.3, 1.7,  0.4, 0.0, 0.2, -0.2, 0.4,  1.9,
+                                0.5, 0.1, 0.1,  0.0, 0.5, 2.3, -0.3, 0.0, 0.2, 0.1, -0.3, 1.385};
+    for (int coupling = 0; coupling < 3; coupling++)
+        for (int law = FRICREG_LAW_COULOMB; law <= FRICREG_LAW_QUINN; law++) {
+            size_t m = coupling == 2 ? MD : M;
+            fricreg_ctx *on = NULL, *off = NULL;
+            fricreg_ctx *both[2];
+            ck_assert_int_eq(fricreg_ctx_create(m, &on), FRICREG_OK);
+            ck_assert_int_eq(fricreg_ctx_create(m, &off), FRICREG_OK);
+            both[0] = on, both[1] = off;
+            for (int c = 0; c < 2; c++) {
+                ck_assert_int_eq(fricreg_ctx_set_bounds(both[c], m, mun), FRICREG_OK);
+                ck_assert_int_eq(fricreg_ctx_set_law(both[c], law, eps), FRICREG_OK);
+                if (coupling == 1)
+                    ck_assert_int_eq(fricreg_ctx_set_coupling_diagonal(both[c], m, w), 0);
+                if (coupling == 2)
+                    ck_assert_int_eq(fricreg_ctx_set_coupling_dense(both[c], m, Wd), 0);
+            }
+            ck_assert_int_eq(fricreg_ctx_set_keep_tangent(off, 2), FRICREG_EINVAL);
+            ck_assert_ptr_nonnull(strstr(fricreg_ctx_errmsg(off), "keep"));
+            ck_assert_int_eq(fricreg_ctx_set_keep_tangent(off, 0), FRICREG_OK);
+            ck_assert_int_eq(fricreg_ctx_eval(on, m, z, a, f_on, feq_on), FRICREG_OK);
+            ck_assert_int_eq(fricreg_ctx_eval(off, m, z, a, f_off, feq_off), FRICREG_OK);
+            for (size_t i = 0; i < m; i++) {
+                ck_assert_mem_eq(&f_on[i], &f_off[i], sizeof f_on[i]);
+                ck_assert_mem_eq(&feq_on[i], &feq_off[i], sizeof feq_on[i]);
+            }
+            for (size_t k = 0; k < m * m; k++)
+                dz_off[k] = SENTINEL;
+            ck_assert_int_eq(fricreg_ctx_tangent(off, m, dz_off, NULL), FRICREG_EINVAL);
+            ck_assert_ptr_nonnull(strstr(fricreg_ctx_errmsg(off), "set_keep_tangent"));
+            ck_assert_double_eq(dz_off[0], SENTINEL);
+            ck_assert_int_eq(fricreg_ctx_set_keep_tangent(off, 1), FRICREG_OK);
+            ck_assert_int_eq(fricreg_ctx_tangent(off, m, dz_off, NULL), FRICREG_EINVAL);
+            ck_assert_int_eq(fricreg_ctx_eval(off, m, z, a, f_off, NULL), FRICREG_OK);
+            ck_assert_int_eq(fricreg_ctx_tangent(on, m, dz_on, da_on), FRICREG_OK);
+            ck_assert_int_eq(fricreg_ctx_tangent(off, m, dz_off, da_off), FRICREG_OK);
+            ck_assert_mem_eq(dz_on, dz_off, m * m * sizeof dz_on[0]);
+            ck_assert_mem_eq(da_on, da_off, m * m * sizeof da_on[0]);
+            fricreg_ctx_free(on);
+            fricreg_ctx_free(off);
+        }
+}
+END_TEST
+
 static Suite *tangent_suite(void)
 {
     Suite *s = suite_create("tangent");
@@ -309,6 +379,7 @@ static Suite *tangent_suite(void)
     tcase_add_test(tc, central_differences);
     tcase_add_test(tc, errors);
     tcase_add_test(tc, tangent_survives_a_failed_factorization);
+    tcase_add_test(tc, keep_tangent_off_changes_no_force);
     suite_add_tcase(s, tc);
     return s;
 }

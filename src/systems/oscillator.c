@@ -60,18 +60,24 @@ static void initial(const struct fr_system *sys, double x[], double v[])
     v[0] = sys->p[V0];
 }
 
-static void contacts(const struct fr_system *sys, double t, const double x[], const double v[],
-                     double zdot[], double a_free[])
+/* The contact is the body: zdot = v. */
+static const double *contacts(const struct fr_system *sys, double t, const double x[],
+                              const double v[], double zdot_buf[], double a_free[])
 {
-    zdot[0] = v[0];
-    a_free[0] = -x[0] + sys->p[A] * sin(sys->p[OMEGA] * t);
+    (void)zdot_buf;
+    if (a_free != NULL)
+        a_free[0] = -x[0] + sys->p[A] * sin(sys->p[OMEGA] * t);
+    return v;
 }
 
-static void accelerations(const struct fr_system *sys, double t, const double x[],
-                          const double a_free[], const double f[], double acc[])
+/* x' = v, x'' = a_free + f; the power v f. */
+static double bodies(const struct fr_system *sys, double t, const double x[], const double v[],
+                     const double zdot[], const double a_free[], const double f[], double dydt[])
 {
     (void)sys, (void)t, (void)x;
-    acc[0] = a_free[0] + f[0];
+    dydt[0] = v[0];
+    dydt[1] = a_free[0] + f[0];
+    return zdot[0] * f[0];
 }
 
 /* zdot = v, a_free = -x + a sin(omega t), acc = a_free + f. */
@@ -111,7 +117,7 @@ const struct fr_system_type fr_oscillator_type = {
     .configure = configure,
     .initial = initial,
     .contacts = contacts,
-    .accelerations = accelerations,
+    .bodies = bodies,
     .contact_maps = contact_maps,
     .body_maps = body_maps,
     .time_rates = time_rates,

@@ -64,28 +64,34 @@ static void initial(const struct fr_system *sys, double x[], double v[])
     x[0] = x[1] = v[0] = v[1] = 0.0;
 }
 
-static void contacts(const struct fr_system *sys, double t, const double x[], const double v[],
-                     double zdot[], double a_free[])
+static const double *contacts(const struct fr_system *sys, double t, const double x[],
+                              const double v[], double zdot[], double a_free[])
 {
     double omega = sys->p[BELT_OMEGA], wt = omega * t;
     double belt_v = sys->p[BELT_AMP] * omega * cos(wt);
-    double belt_a = -sys->p[BELT_AMP] * omega * omega * sin(wt);
     zdot[0] = v[0] - belt_v;
     zdot[1] = v[1] - v[0];
-    a_free[0] = -belt_a - x[0];
-    a_free[1] = x[0] - sys->p[K] * x[1];
+    if (a_free != NULL) {
+        double belt_a = -sys->p[BELT_AMP] * omega * omega * sin(wt);
+        a_free[0] = -belt_a - x[0];
+        a_free[1] = x[0] - sys->p[K] * x[1];
+    }
+    return zdot;
 }
 
-/* (7a), (7b). */
-static void accelerations(const struct fr_system *sys, double t, const double x[],
-                          const double a_free[], const double f[], double acc[])
+/* x' = v and (7a), (7b); the power zdot . f. */
+static double bodies(const struct fr_system *sys, double t, const double x[], const double v[],
+                     const double zdot[], const double a_free[], const double f[], double dydt[])
 {
     (void)t, (void)a_free;
-    acc[0] = -x[0] + f[0] - f[1];
-    acc[1] = -sys->p[K] * x[1] + f[1];
+    dydt[0] = v[0];
+    dydt[1] = v[1];
+    dydt[2] = -x[0] + f[0] - f[1];
+    dydt[3] = -sys->p[K] * x[1] + f[1];
+    return zdot[0] * f[0] + zdot[1] * f[1];
 }
 
-/* contacts() and accelerations() as matrices: z1 = x1 - u, z2 = x2 - x1. */
+/* contacts() and bodies() as matrices: z1 = x1 - u, z2 = x2 - x1. */
 static void contact_maps(const struct fr_system *sys, double dzdot_dv[], double dafree_dx[])
 {
     const double Zv[4] = {1.0, 0.0, -1.0, 1.0};
@@ -131,7 +137,7 @@ const struct fr_system_type fr_twoblock_type = {
     .configure = configure,
     .initial = initial,
     .contacts = contacts,
-    .accelerations = accelerations,
+    .bodies = bodies,
     .contact_maps = contact_maps,
     .body_maps = body_maps,
     .time_rates = time_rates,
