@@ -21,6 +21,7 @@ struct stress_mode {
     int exact_vs_sim_cases; /* of them, also run by the RK4 driver at a small step */
     double chain_max_n;     /* largest chain of the extreme group */
     int cond_samples;       /* random W per (m, condition number) */
+    int qp_cases;           /* random coupled evaluations with mixed near-stick sets */
     uint64_t seed;
 };
 

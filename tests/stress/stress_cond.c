@@ -29,6 +29,7 @@ typedef long double wide;
 #endif
 
 #define MAX_M 3
+#define QP_MAX_M 8
 #define MUN 1e3
 #define EPS 1e-3
 #define UNIT_ROUNDOFF (DBL_EPSILON / 2)
@@ -236,6 +237,96 @@ static void redundant(struct stress_tally *tally)
     }
 }
 
+/* ---- the consistent law at random near-stick sets ---------------------------------------- */
+
+/* W = S Q diag(s) Q^T S, m = 2 ... 8, kappa(Q diag Q^T) up to 1e12, S = diag(10^[-3, 3]);
+ * half the contacts at rest, the others anywhere in and just beyond the band, and a_free up
+ * to 5 W_ii mun_i, so that many contacts are held at their bounds. The header's promise is
+ * checked: each near-stick f_i is law (4) at (zdot_i, f_eq,i), f_eq as eval returns it, and
+ * |f_i| <= mun_i; status OK, or ESINGULAR, which a W of condition below 1e8 must not get. */
+struct qp_figures {
+    int ok, singular, other, early_singular;
+    double worst_law, worst_bound;
+};
+
+static void qp_case(uint64_t *rng, struct qp_figures *q)
+{
+    size_t m = 2 + (size_t)stress_uniform(rng, 0.0, QP_MAX_M - 1);
+    double kappa = stress_log_uniform(rng, 1.0, 1e12);
+    double Q[QP_MAX_M * QP_MAX_M], C[QP_MAX_M * QP_MAX_M], W[QP_MAX_M * QP_MAX_M];
+    double s[QP_MAX_M], d[QP_MAX_M], zdot[QP_MAX_M], a[QP_MAX_M], mun[QP_MAX_M];
+    double f[QP_MAX_M], f_eq[QP_MAX_M], eps = stress_log_uniform(rng, 1e-3, 1.0);
+    if (random_orthogonal(m, rng, Q) != GSL_SUCCESS) {
+        q->other++;
+        return;
+    }
+    for (size_t i = 0; i < m; i++) {
+        s[i] = i == 0 ? 1.0 : i == m - 1 ? 1.0 / kappa : pow(kappa, -stress_uniform(rng, 0, 1));
+        d[i] = stress_log_uniform(rng, 1e-3, 1e3);
+    }
+    spectral_matrix(m, Q, s, C);
+    for (size_t i = 0; i < m; i++)
+        for (size_t j = 0; j < m; j++)
+            W[i * m + j] = d[i] * C[i * m + j] * d[j];
+    for (size_t i = 0; i < m; i++) {
+        mun[i] = stress_uniform(rng, 0.1, 3.0);
+        zdot[i] = stress_uniform(rng, 0.0, 1.0) < 0.5 ? 0.0 : stress_uniform(rng, -1.2, 1.2) * eps;
+        a[i] = stress_uniform(rng, -5.0, 5.0) * W[i * m + i] * mun[i];
+    }
+    fricreg_ctx *ctx = NULL;
+    int status = fricreg_ctx_create(m, &ctx);
+    if (status == FRICREG_OK)
+        status = fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, eps);
+    if (status == FRICREG_OK)
+        status = fricreg_ctx_set_bounds(ctx, m, mun);
+    if (status == FRICREG_OK)
+        status = fricreg_ctx_set_coupling_dense(ctx, m, W);
+    if (status == FRICREG_OK)
+        status = fricreg_ctx_eval(ctx, m, zdot, a, f, f_eq);
+    fricreg_ctx_free(ctx);
+    if (status == FRICREG_ESINGULAR) {
+        q->singular++;
+        q->early_singular += kappa < 1e8;
+        return;
+    }
+    if (status != FRICREG_OK) {
+        q->other++;
+        return;
+    }
+    q->ok++;
+    for (size_t i = 0; i < m; i++) {
+        q->worst_bound = fmax(q->worst_bound, fabs(f[i]) / mun[i]);
+        double law = NAN;
+        if (fabs(zdot[i]) < eps &&
+            fricreg_law_eval(FRICREG_LAW_QUINN, zdot[i], f_eq[i], mun[i], eps, &law) == FRICREG_OK)
+            q->worst_law = fmax(q->worst_law, fabs(law - f[i]) / mun[i]);
+        else if (fabs(zdot[i]) < eps)
+            q->worst_law = INFINITY;
+    }
+}
+
+static void qp_consistency(const struct stress_mode *mode, struct stress_tally *tally,
+                           uint64_t *rng)
+{
+    struct qp_figures q = {0, 0, 0, 0, 0.0, 0.0};
+    for (int k = 0; k < mode->qp_cases; k++)
+        qp_case(rng, &q);
+    printf("consistent law at random near-stick sets (m = 2..%d, kappa <= 1e12, rows scaled "
+           "by 1e-3..1e3): %d cases, %d OK, %d ESINGULAR (%d below kappa 1e8), %d other; "
+           "worst |f - law(zdot, f_eq)|/mun %.3g, worst |f|/mun %.17g\n",
+           QP_MAX_M, mode->qp_cases, q.ok, q.singular, q.early_singular, q.other, q.worst_law,
+           q.worst_bound);
+    stress_check(tally, q.other == 0 && q.early_singular == 0,
+                 "random near-stick sets: %d other statuses, %d ESINGULAR below kappa 1e8", q.other,
+                 q.early_singular);
+    /* f_eq is formed from the returned f: -(a_i + sum_j W_ij f_j)/W_ii, whose terms reach
+     * 1e6 mun with rows scaled by 1e-3..1e3 (W_ij/W_ii ~ d_j/d_i), so its roundings are up to
+     * ~1e6 m u mun ~ 1e-9 mun (measured 2.5e-15: the terms are rarely that large) */
+    stress_check(tally, q.worst_law <= 1e-9 && q.worst_bound <= 1.0 + 4 * DBL_EPSILON,
+                 "random near-stick sets: f off the law by %g mun, |f|/mun up to %.17g",
+                 q.worst_law, q.worst_bound);
+}
+
 int stress_conditioning(const struct stress_mode *mode)
 {
     struct stress_tally tally = {0, 0};
@@ -284,6 +375,7 @@ int stress_conditioning(const struct stress_mode *mode)
     }
     badly_scaled(&tally, &rng, &worst_scaled);
     redundant(&tally);
+    qp_consistency(mode, &tally, &rng);
     printf("ESINGULAR first at kappa %.0e; all regular up to kappa %.0e, worst error there %.3g; "
            "badly scaled regular W (diag(1, 1e-14 .. 1e-300), S C S): worst error %.3g\n\n",
            first_singular, last_all_ok, worst_before, worst_scaled);

@@ -15,8 +15,8 @@
 
 #include "stress.h"
 
-static const struct stress_mode short_mode = {0, 1000000, 300, 8, 20, 1e4, 8, 20261121};
-static const struct stress_mode full_mode = {1, 10000000, 2000, 40, 100, 1e6, 40, 20261121};
+static const struct stress_mode short_mode = {0, 1000000, 300, 8, 20, 1e4, 8, 2000, 20261121};
+static const struct stress_mode full_mode = {1, 10000000, 2000, 40, 100, 1e6, 40, 40000, 20261121};
 
 struct group {
     const char *name;
