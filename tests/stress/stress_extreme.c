@@ -171,6 +171,72 @@ static void huge_bound(struct stress_tally *tally)
     fricreg_sim_free(sim);
 }
 
+/* Bounds near DBL_MAX on coupled contacts: mun/eps overflows. The stick-zone stiffness must
+ * then be +inf, not the 0 that 1.1 returned for a dense W (NaN eigenvalues dropped by fmax),
+ * which let the step guard pass a run that diverged at its second step. With mun = 1e300 and
+ * eps = 1 it is finite, and for (3) and the two blocks' W = [[1, -1], [-1, 2]] (equal bounds)
+ * it is (mun/eps) lambda_max(W) = 1e300 (3 + sqrt 5)/2. */
+static double stiffness_of(int law, int partition, double mun, double eps)
+{
+    const double W[4] = {1.0, -1.0, -1.0, 2.0}, bounds[2] = {mun, mun};
+    fricreg_ctx *ctx = NULL;
+    double lambda = NAN;
+    if (fricreg_ctx_create(2, &ctx) == FRICREG_OK && fricreg_ctx_set_law(ctx, law, eps) == 0 &&
+        fricreg_ctx_set_partition(ctx, partition) == 0 &&
+        fricreg_ctx_set_coupling_dense(ctx, 2, W) == 0 &&
+        fricreg_ctx_set_bounds(ctx, 2, bounds) == 0)
+        fricreg_ctx_stick_stiffness(ctx, &lambda);
+    fricreg_ctx_free(ctx);
+    return lambda;
+}
+
+static void overflowing_stiffness(struct stress_tally *tally)
+{
+    static const int laws[] = {FRICREG_LAW_VELOCITY_LIMITED, FRICREG_LAW_TANH, FRICREG_LAW_QUINN};
+    int all_inf = 1;
+    for (int partition = FRICREG_PARTITION_CONSISTENT; partition <= FRICREG_PARTITION_PAPER;
+         partition++)
+        for (size_t k = 0; k < 3; k++)
+            all_inf = all_inf && stiffness_of(laws[k], partition, 1e300, 1e-10) == INFINITY;
+    row(tally, "stick stiffness, coupled, mun = 1e300, eps = 1e-10", all_inf,
+        "+inf for (3), tanh, (4), both partitions", "lambda", all_inf ? INFINITY : 0.0);
+    double expected = 1e300 * (3.0 + sqrt(5.0)) / 2.0;
+    double got = stiffness_of(FRICREG_LAW_VELOCITY_LIMITED, FRICREG_PARTITION_CONSISTENT, 1e300,
+                              1.0);
+    double err = fabs(got - expected) / expected;
+    row(tally, "stick stiffness, coupled, mun = 1e300, eps = 1", err <= 1e-14,
+        "(mun/eps) lambda_max(W), law (3)", "rel err", err);
+
+    /* the run: refused before any step, and the eps the message names then runs */
+    static const int sim_laws[] = {FRICREG_LAW_QUINN, FRICREG_LAW_VELOCITY_LIMITED,
+                                   FRICREG_LAW_KARNOPP};
+    for (size_t k = 0; k < 3; k++) {
+        const struct setting s[] = {{FRICREG_PARAM_MU1, 1e300}, {FRICREG_PARAM_MU2, 1e300}, {0, 0}};
+        fricreg_sim *sim = NULL;
+        int status = fricreg_sim_create(FRICREG_SYSTEM_TWOBLOCK, &sim);
+        for (size_t i = 0; status == FRICREG_OK && s[i].param != 0; i++)
+            status = fricreg_sim_set_param(sim, s[i].param, s[i].value);
+        if (status == FRICREG_OK)
+            status = fricreg_sim_set_law(sim, sim_laws[k], 1e-10);
+        if (status == FRICREG_OK)
+            status = fricreg_sim_run(sim, 1.0);
+        const char *msg = fricreg_sim_errmsg(sim);
+        const char *named = strstr(msg, "raise eps to ");
+        double eps = named ? strtod(named + strlen("raise eps to "), NULL) : NAN;
+        char name[64];
+        snprintf(name, sizeof name, "two blocks, mu = 1e300, eps = 1e-10, law %d", sim_laws[k]);
+        refusal_row(tally, name, status, FRICREG_ESTEP, msg, "raise eps to");
+        int64_t steps = -1;
+        fricreg_sim_get_stat(sim, FRICREG_SIM_STAT_STEPS, &steps);
+        if (isfinite(eps) && fricreg_sim_set_law(sim, sim_laws[k], eps * (1 + 1e-5)) == FRICREG_OK)
+            status = fricreg_sim_run(sim, 1.0);
+        snprintf(name, sizeof name, "  the same at the eps it names, %.3g", eps);
+        row(tally, name, steps == 0 && isfinite(eps) && status == FRICREG_OK, "runs", "status",
+            status);
+        fricreg_sim_free(sim);
+    }
+}
+
 /* mun = 1e-12: a free oscillation; D per cycle is mun times the distance slid, 4 x0 per cycle
  * to O(mun) (the exact solver's, which is exact). */
 static void tiny_bound(struct stress_tally *tally)
@@ -442,6 +508,7 @@ int stress_extreme(const struct stress_mode *mode)
     printf("%-44s %-4s %-34s %s\n", "case", "", "outcome", "figure");
     scaling_law(&tally, &worst_balance, &worst_scaling);
     huge_bound(&tally);
+    overflowing_stiffness(&tally);
     tiny_bound(&tally);
     eps_sweep(&tally, &worst_balance);
     forcing(&tally, &worst_balance);
