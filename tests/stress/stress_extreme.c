@@ -173,7 +173,8 @@ static void huge_bound(struct stress_tally *tally)
 
 /* Bounds near DBL_MAX on coupled contacts: mun/eps overflows. The stick-zone stiffness must
  * then be +inf, not the 0 that 1.1 returned for a dense W (NaN eigenvalues dropped by fmax),
- * which let the step guard pass a run that diverged at its second step. With mun = 1e300 and
+ * which let the step guard pass a run that diverged at its second step (the two blocks at
+ * mu = 1e300, eps = 1e-10, or mu = 1e3, eps = 1e-306). With mun = 1e300 and
  * eps = 1 it is finite, and for (3) and the two blocks' W = [[1, -1], [-1, 2]] (equal bounds)
  * it is (mun/eps) lambda_max(W) = 1e300 (3 + sqrt 5)/2. */
 static double stiffness_of(int law, int partition, double mun, double eps)
@@ -207,24 +208,26 @@ static void overflowing_stiffness(struct stress_tally *tally)
     row(tally, "stick stiffness, coupled, mun = 1e300, eps = 1", err <= 1e-14,
         "(mun/eps) lambda_max(W), law (3)", "rel err", err);
 
-    /* the run: refused before any step, and the eps the message names then runs */
+    /* The run: refused before any step, and the eps the message names then runs. mun/eps
+     * overflows with modest bounds too, eps near DBL_MIN: mu = 1e3, eps = 1e-306 (bounds near
+     * DBL_MAX would stop the first evaluation, f_eq being out of range). */
     static const int sim_laws[] = {FRICREG_LAW_QUINN, FRICREG_LAW_VELOCITY_LIMITED,
                                    FRICREG_LAW_KARNOPP};
     for (size_t k = 0; k < 3; k++) {
-        const struct setting s[] = {{FRICREG_PARAM_MU1, 1e300}, {FRICREG_PARAM_MU2, 1e300}, {0, 0}};
+        const struct setting s[] = {{FRICREG_PARAM_MU1, 1e3}, {FRICREG_PARAM_MU2, 1e3}, {0, 0}};
         fricreg_sim *sim = NULL;
         int status = fricreg_sim_create(FRICREG_SYSTEM_TWOBLOCK, &sim);
         for (size_t i = 0; status == FRICREG_OK && s[i].param != 0; i++)
             status = fricreg_sim_set_param(sim, s[i].param, s[i].value);
         if (status == FRICREG_OK)
-            status = fricreg_sim_set_law(sim, sim_laws[k], 1e-10);
+            status = fricreg_sim_set_law(sim, sim_laws[k], 1e-306);
         if (status == FRICREG_OK)
             status = fricreg_sim_run(sim, 1.0);
         const char *msg = fricreg_sim_errmsg(sim);
         const char *named = strstr(msg, "raise eps to ");
         double eps = named ? strtod(named + strlen("raise eps to "), NULL) : NAN;
         char name[64];
-        snprintf(name, sizeof name, "two blocks, mu = 1e300, eps = 1e-10, law %d", sim_laws[k]);
+        snprintf(name, sizeof name, "two blocks, mu = 1e3, eps = 1e-306, law %d", sim_laws[k]);
         refusal_row(tally, name, status, FRICREG_ESTEP, msg, "raise eps to");
         int64_t steps = -1;
         fricreg_sim_get_stat(sim, FRICREG_SIM_STAT_STEPS, &steps);
