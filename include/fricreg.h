@@ -226,7 +226,8 @@ FRICREG_API int fricreg_ctx_set_partition(fricreg_ctx *ctx, int partition);
  *  a contact accelerates out of that zone, which it crosses in about one step at this bound,
  *  and the measured error stays O(eps) with no stability edge (docs/coupled.md).
  *
- *  lambda  out: the bound, >= 0. Written only on success.
+ *  lambda  out: the bound, >= 0; +inf when it overflows (mun_i/eps near DBL_MAX), so that no
+ *          fixed step passes. Written only on success.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ENOMEM. */
 FRICREG_API int fricreg_ctx_stick_stiffness(fricreg_ctx *ctx, double *lambda);
 

@@ -332,15 +332,15 @@ static int alloc_run(fricreg_sim *sim, size_t cycles)
  * gives dt * lambda = 3 > 2.78 for RK4). That is said rather than an eps chosen silently: eps
  * is part of the model (the stick band, an O(eps) change of the results), and a default that
  * followed the stepper's bound would move the results whenever the bound table is corrected. */
-static int refuse_stick_zone(fricreg_sim *sim, const char *what, double bound, double lambda)
+static int refuse_stick_zone(fricreg_sim *sim, const char *what, double bound, double rate)
 {
-    double z = sim->dt * lambda;
-    double eps_min = sim->eps * z / bound;
+    double lambda = rate / sim->eps, z = sim->dt * lambda;
+    double eps_min = sim->dt * rate / bound; /* = eps z/bound, finite where lambda overflows */
     if (sim->eps_set > 0.0)
         return sim_fail(sim, FRICREG_ESTEP,
                         "run: dt = %g too large for the stick zone: its stiffness %g gives "
                         "dt*lambda = %g > %g, %s; reduce dt to %.6g or raise eps to %.6g",
-                        sim->dt, lambda, z, bound, what, bound / lambda, eps_min);
+                        sim->dt, lambda, z, bound, what, bound * sim->eps / rate, eps_min);
     return sim_fail(sim, FRICREG_ESTEP,
                     "run: eps by the paper's rule (eps = %g dt) makes dt*lambda = %g > %g, %s, "
                     "at every dt; set eps >= %.6g explicitly",
@@ -384,18 +384,18 @@ static int check_step(fricreg_sim *sim, const struct fr_integrator *integ)
 {
     if (adaptive(sim) || sim->unguarded || integ->stick_zone_bound == 0.0)
         return FRICREG_OK; /* implicit and multistep steppers report their own failures */
-    double lambda = 0.0;
-    int status = law_jumps(sim->law) ? fr_chord_stiffness(sim->ctx, &lambda)
-                                     : fricreg_ctx_stick_stiffness(sim->ctx, &lambda);
+    double rate = 0.0;     /* lambda * eps (stiffness.h) */
+    int status = fr_stiffness_times_eps(sim->ctx, law_jumps(sim->law), &rate);
     if (status != FRICREG_OK)
         return sim_fail(sim, FRICREG_ENOMEM, "run: %s", fricreg_ctx_errmsg(sim->ctx));
+    double lambda = rate / sim->eps; /* +inf when mun/eps overflows: refused below */
     char what[64];
     if (law_jumps(sim->law) && sim->dt * lambda > CHORD_STEP_BOUND)
         return refuse_stick_zone(sim, "where a law that jumps chatters out of its band",
-                                 CHORD_STEP_BOUND, lambda);
+                                 CHORD_STEP_BOUND, rate);
     snprintf(what, sizeof what, "the stick-zone bound of %s", integ->name);
     if (sim->dt * lambda > integ->stick_zone_bound)
-        return refuse_stick_zone(sim, what, integ->stick_zone_bound, lambda);
+        return refuse_stick_zone(sim, what, integ->stick_zone_bound, rate);
     double omega = sim->sys.type->max_frequency(&sim->sys), z = sim->dt * omega;
     if (z > integ->imag_axis_bound)
         return sim_fail(sim, FRICREG_ESTEP,

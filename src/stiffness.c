@@ -20,76 +20,86 @@
 #include "ctx_internal.h"
 #include "eigen.h"
 
-/* The slope s of the law at v = 0, per unit of mun: f = -s mun v / mun near v = 0. */
-static double law_slope(int law, double mun, double eps)
+/* The slope of the law at v = 0 times eps (so finite whatever eps): s_i eps, with s_i the
+ * slope of f_i = -s_i v near v = 0. */
+static double law_slope_times_eps(int law, double mun)
 {
     switch (law) {
-    case FRICREG_LAW_QUINN: return 2.0 * mun / eps; /* (4a) */
+    case FRICREG_LAW_QUINN: return 2.0 * mun; /* (4a): 2 mun/eps */
     case FRICREG_LAW_VELOCITY_LIMITED:
-    case FRICREG_LAW_TANH: return mun / eps; /* (3), tanh'(0) = 1 */
-    default: return 0.0;                     /* (1), (2), Karnopp: no velocity feedback at rest */
+    case FRICREG_LAW_TANH: return mun; /* (3), tanh'(0) = 1: mun/eps */
+    default: return 0.0;               /* (1), (2), Karnopp: no velocity feedback at rest */
     }
 }
 
-static double diagonal_rate(const fricreg_ctx *ctx)
+static double diagonal_rate(const fricreg_ctx *ctx, int law)
 {
-    double lambda = 0.0;
+    double rate = 0.0;
     for (size_t i = 0; i < ctx->m; i++)
-        lambda = fmax(lambda, ctx->w_diag[i] * law_slope(ctx->law, ctx->mun[i], ctx->eps));
-    return lambda;
+        rate = fmax(rate, ctx->w_diag[i] * law_slope_times_eps(law, ctx->mun[i]));
+    return rate;
 }
 
-/* Largest eigenvalue of D^1/2 W D^1/2 (symmetric positive semidefinite), by GSL, with the
- * slopes of `law`. */
-static int coupled_rate(fricreg_ctx *ctx, int law, double *lambda)
+/* Largest eigenvalue of D^1/2 W D^1/2 (symmetric positive semidefinite) times eps, by GSL,
+ * D = diag(s) the slopes of `law`. The solver sees D/s_max and W/w_max, entries in [-1, 1],
+ * and the scales multiply its result: slopes or couplings near DBL_MAX would otherwise reach
+ * it as inf, come out as NaN eigenvalues, and fmax would drop them, reporting 0 — a step guard
+ * that passes every step (found by tests/stress: the two blocks with mu = 1e300, eps = 1e-10).
+ * A product that overflows is +inf here, which refuses every step, as it should. */
+static int coupled_rate(fricreg_ctx *ctx, int law, double *rate)
 {
     size_t m = ctx->m;
+    double s_max = 0.0, w_max = 0.0;
+    for (size_t i = 0; i < m; i++)
+        s_max = fmax(s_max, law_slope_times_eps(law, ctx->mun[i]));
+    for (size_t k = 0; k < m * m; k++)
+        w_max = fmax(w_max, fabs(ctx->W[k]));
+    *rate = 0.0;
+    if (s_max == 0.0)
+        return FRICREG_OK; /* no slope anywhere (or every mun = 0) */
     struct fr_eigen e;
     if (fr_eigen_alloc(&e, m) != FRICREG_OK)
         return FRICREG_ENOMEM;
     for (size_t i = 0; i < m; i++) {
-        double si = sqrt(law_slope(law, ctx->mun[i], ctx->eps));
+        double si = sqrt(law_slope_times_eps(law, ctx->mun[i]) / s_max);
         for (size_t j = 0; j < m; j++) {
-            double sj = sqrt(law_slope(law, ctx->mun[j], ctx->eps));
-            e.a[i * m + j] = si * ctx->W[i * m + j] * sj;
+            double sj = sqrt(law_slope_times_eps(law, ctx->mun[j]) / s_max);
+            e.a[i * m + j] = si * (ctx->W[i * m + j] / w_max) * sj;
         }
     }
     int status = fr_eigen_solve(&e) ? FRICREG_ENOMEM : FRICREG_OK; /* fails only on bad sizes */
-    *lambda = 0.0;
+    double scaled = 0.0;
     for (size_t i = 0; i < m; i++)
-        *lambda = fmax(*lambda, e.eval[i]);
+        scaled = isnan(e.eval[i]) ? INFINITY : fmax(scaled, e.eval[i]); /* NaN: refuse */
+    *rate = scaled * w_max * s_max;
     fr_eigen_free(&e);
     return status;
+}
+
+int fr_stiffness_times_eps(fricreg_ctx *ctx, int chord, double *rate)
+{
+    int law = chord ? FRICREG_LAW_VELOCITY_LIMITED : ctx->law;
+    int decoupled = ctx->W == NULL || (!chord && ctx->law == FRICREG_LAW_QUINN &&
+                                       ctx->partition == FRICREG_PARTITION_CONSISTENT);
+    if (decoupled) {
+        *rate = diagonal_rate(ctx, law);
+        return FRICREG_OK;
+    }
+    double value = 0.0;
+    if (coupled_rate(ctx, law, &value) != FRICREG_OK)
+        return fr_fail(ctx, FRICREG_ENOMEM, "%s: out of memory for m = %zu",
+                       chord ? "chord_stiffness" : "stick_stiffness", ctx->m);
+    *rate = value;
+    return FRICREG_OK;
 }
 
 int fricreg_ctx_stick_stiffness(fricreg_ctx *ctx, double *lambda)
 {
     if (ctx == NULL || lambda == NULL)
         return ctx ? fr_fail(ctx, FRICREG_ENULL, "stick_stiffness: lambda is NULL") : FRICREG_ENULL;
-    int decoupled = ctx->W == NULL || (ctx->law == FRICREG_LAW_QUINN &&
-                                       ctx->partition == FRICREG_PARTITION_CONSISTENT);
-    if (decoupled) {
-        *lambda = diagonal_rate(ctx);
-        return FRICREG_OK;
-    }
     double rate = 0.0;
-    if (coupled_rate(ctx, ctx->law, &rate) != FRICREG_OK)
-        return fr_fail(ctx, FRICREG_ENOMEM, "stick_stiffness: out of memory for m = %zu", ctx->m);
-    *lambda = rate;
-    return FRICREG_OK;
-}
-
-/* A law that jumps by 2 mun_i at zdot_i = 0 has no slope there; a fixed explicit step makes it
- * chatter, zdot_i moving by up to dt W_ii mun_i per step. Against the band |zdot_i| < eps that
- * the run resolves, the jump acts as its chord, law (3)'s slope mun_i/eps, coupled as (3) is. */
-int fr_chord_stiffness(fricreg_ctx *ctx, double *lambda)
-{
-    double rate = 0.0;
-    for (size_t i = 0; i < ctx->m; i++)
-        rate = fmax(rate, ctx->w_diag[i] *
-                              law_slope(FRICREG_LAW_VELOCITY_LIMITED, ctx->mun[i], ctx->eps));
-    if (ctx->W != NULL && coupled_rate(ctx, FRICREG_LAW_VELOCITY_LIMITED, &rate) != FRICREG_OK)
-        return fr_fail(ctx, FRICREG_ENOMEM, "chord_stiffness: out of memory for m = %zu", ctx->m);
-    *lambda = rate;
-    return FRICREG_OK;
+    int status = fr_stiffness_times_eps(ctx, 0, &rate);
+    if (status == FRICREG_OK)
+        *lambda = rate / ctx->eps; /* +inf when it overflows: no fixed step is stable */
+    return status;
 }
