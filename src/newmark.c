@@ -122,12 +122,12 @@ static double first_trial(fricreg_structure *s, double dt)
 }
 
 /* Backtracking on ||R||_2 along dx from x, from the first trial (stop_slips) or from the full
- * step, at most max_cuts halvings; on success x, R and the context's last evaluation are at
- * the accepted point. Returns 0 if no trial decreased the residual. */
-static int line_search(fricreg_structure *s, double dt, int stop_slips, int max_cuts, double *phi)
+ * step; on success x, R and the context's last evaluation are at the accepted point. Returns
+ * 0 if no cut decreased the residual. */
+static int line_search(fricreg_structure *s, double dt, int stop_slips, double *phi)
 {
     double lambda = stop_slips ? first_trial(s, dt) : 1.0;
-    for (int cut = 0; cut <= max_cuts; cut++) {
+    for (int cut = 0; cut <= MAX_CUTS; cut++) {
         gsl_vector_memcpy(s->xt, s->x);
         gsl_blas_daxpy(lambda, s->dx, s->xt);
         if (residual(s, dt, s->xt, s->Rt) == FRICREG_OK) {
@@ -162,9 +162,7 @@ static double iterate(fricreg_structure *s, double dt, double tol, int stop_slip
             break;
         ++*iters;
         ++done;
-        /* An iteration from a point already within tol only tries the full step: where it
-         * does not decrease the residual, x is at the rounding floor (cuts would not help). */
-        if (!line_search(s, dt, stop_slips, r <= tol ? 0 : MAX_CUTS, phi)) {
+        if (!line_search(s, dt, stop_slips, phi)) {
             residual(s, dt, s->x, s->R); /* back to x: the best point */
             break;
         }
@@ -185,20 +183,28 @@ static int start_at(fricreg_structure *s, double dt, const gsl_vector *guess, do
     return FRICREG_OK;
 }
 
-/* Newton from the stick predictor's guess: returns a status, and *converged and *iters. On
- * return the context's last evaluation, u1, v1 and f1 are at x. Slipping contacts are stopped
- * at zdot = 0 (first_trial). Where a stop ends on a kink of the law (zdot = 0 is the band's
- * edge when |f_eq| >= mun) the line search can stall there: Newton then starts again from
- * the plain guess x = a, without stops, with the iterations left. */
+/* Newton from the previous acceleration a or, where a is not within tol, the stick
+ * predictor's guess if its residual is smaller: returns a status, and *converged and *iters.
+ * On return the context's last evaluation, u1, v1 and f1 are at x. Slipping contacts are
+ * stopped at zdot = 0 (first_trial). Where a stop ends on a kink of the law (zdot = 0 is the
+ * band's edge when |f_eq| >= mun) the line search can stall there: Newton then starts again
+ * from a, without stops, with the iterations left. */
 static int newton(fricreg_structure *s, double dt, int *converged, int *iters)
 {
-    double phi;
-    fr_stick_predictor(s);
-    memset(s->stopped, 0, s->m * sizeof *s->stopped);
-    int status = start_at(s, dt, s->guess, &phi);
+    double phi = 0.0;
+    int status = start_at(s, dt, s->a, &phi);
     if (status != FRICREG_OK)
         return status;
     double tol = s->newton_tol * force_scale(s);
+    if (fr_norm_inf(s->R) > tol && fr_stick_predictor(s, fr_stick_mark(s))) {
+        double phi_a = phi;
+        status = start_at(s, dt, s->guess, &phi);
+        if (status == FRICREG_OK && !(phi < phi_a))
+            status = start_at(s, dt, s->a, &phi);
+        if (status != FRICREG_OK)
+            return status;
+    }
+    memset(s->stopped, 0, s->m * sizeof *s->stopped);
     *iters = 0;
     double r = iterate(s, dt, tol, 1, &phi, iters);
     if (r > tol && isfinite(phi) && *iters < s->newton_max) {

@@ -11,12 +11,15 @@
  * of free vibration, all ten dampers sticking.
  *
  * The guess x = a + dx keeps J_S zdot over the step for the set S of contacts with
- * df_i/dzdot_i != 0 and |f_i| < mun_i at t (in the band: fricreg_ctx_tangent at the state t),
- * with the
- * smallest such correction in M's norm. z1 = z + dt J((1 - gamma) a + gamma x) = z on S gives
- * J_S dx = -J_S a/gamma, so dx = M^-1 J_S^T y = G_S^T y with W_SS y = -J_S a/gamma (GSL's
- * Cholesky). W_SS is positive definite unless rows of J_S are dependent; then, or when the
- * context has no evaluation at t (a setter since), the guess stays a. Cost: O(m n + |S|^3). */
+ * |f_i| < mun_i at t, with the smallest such correction in M's norm. For law (4), and (3),
+ * that set is exactly the band (outside it, and on its edge, |f| = mun), found in O(m) where
+ * the law's tangent at t would cost a context evaluation. z1 = z + dt J((1 - gamma) a +
+ * gamma x) = z on S gives J_S dx = -J_S a/gamma, so dx = M^-1 J_S^T y = G_S^T y with
+ * W_SS y = -J_S a/gamma (GSL's Cholesky). W_SS is positive definite unless rows of J_S are
+ * dependent; then the guess stays a. Cost: O(m n + |S|^3), paid only where a is not already
+ * within Newton's tolerance. Newton starts from whichever of a and this guess has the smaller
+ * residual: for a smooth law (tanh) every contact is "in the band", and keeping velocities is
+ * not always the better guess. */
 #include <math.h>
 
 #include <gsl/gsl_blas.h>
@@ -24,30 +27,21 @@
 
 #include "structure_internal.h"
 
-/* The contacts in the band at t, marked in s->stopped (Newton clears it before use); their
- * number. In the band the law's force depends on zdot and is below the bound; on its edge
- * (|f| = mun: a contact at rest whose load exceeds the bound) the one-sided derivative may
- * be the band's, but the contact is about to slip. 0 if the context cannot differentiate its
- * last evaluation. */
-static size_t mark_band(fricreg_structure *s)
+size_t fr_stick_mark(fricreg_structure *s)
 {
     size_t k = 0;
-    if (fricreg_ctx_tangent(s->ctx, s->m, s->Fz->data, s->Fa->data) != FRICREG_OK)
-        return 0;
     for (size_t i = 0; i < s->m; i++) {
-        s->stopped[i] = gsl_matrix_get(s->Fz, i, i) != 0.0 &&
-                        fabs(gsl_vector_get(s->f, i)) < s->mun[i];
+        s->stopped[i] = fabs(gsl_vector_get(s->f, i)) < s->mun[i];
         k += s->stopped[i];
     }
     return k;
 }
 
-void fr_stick_predictor(fricreg_structure *s)
+int fr_stick_predictor(fricreg_structure *s, size_t k)
 {
     gsl_vector_memcpy(s->guess, s->a);
-    size_t k = mark_band(s);
     if (k == 0)
-        return;
+        return 0;
     /* W_SS packed into s->Fa's storage, -J_S a/gamma into s->afree's (both scratch here). */
     gsl_matrix_view Wss = gsl_matrix_view_array(s->Fa->data, k, k);
     gsl_vector_view y = gsl_vector_subvector(s->afree, 0, k);
@@ -63,10 +57,11 @@ void fr_stick_predictor(fricreg_structure *s)
     }
     if (gsl_linalg_cholesky_decomp1(&Wss.matrix) != GSL_SUCCESS ||
         gsl_linalg_cholesky_svx(&Wss.matrix, &y.vector) != GSL_SUCCESS)
-        return;
+        return 0;
     for (size_t i = 0, p = 0; i < s->m; i++)
         if (s->stopped[i]) {
             gsl_vector_const_view g = gsl_matrix_const_row(s->G, i);
             gsl_blas_daxpy(gsl_vector_get(&y.vector, p++), &g.vector, s->guess);
         }
+    return 1;
 }

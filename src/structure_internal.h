@@ -109,8 +109,12 @@ void fr_structure_net_force(const fricreg_structure *s, const gsl_vector *ptil, 
 /* newmark.c: u1, v1, x (= a1) and f1 of one Newmark / HHT-alpha step by Newton. */
 int fr_newmark_solve(fricreg_structure *s, double dt, int *converged, int *iters);
 
-/* stick_predictor.c: Newton's first guess for a Newmark / HHT-alpha step into s->guess. */
-void fr_stick_predictor(fricreg_structure *s);
+/* stick_predictor.c: the contacts whose force at t is below their bound (law (4): in its
+ * band), marked in s->stopped; their number. */
+size_t fr_stick_mark(fricreg_structure *s);
+/* A first guess for a Newmark / HHT-alpha step's Newton, from the k marked contacts, into
+ * s->guess; 0 if there is none (k = 0, or W_SS singular). Uses s->Fa, s->afree, s->mwork. */
+int fr_stick_predictor(fricreg_structure *s, size_t k);
 
 /* central_difference.c: the same, explicit; FRICREG_ESTEP beyond its stability bounds. */
 int fr_central_solve(fricreg_structure *s, double dt);
