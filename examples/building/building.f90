@@ -64,6 +64,7 @@ program building
   call run(peak_roof)
   call report(peak_roof)
   call st%destroy()
+  deallocate (dir) ! the end of a program frees nothing: a leak checker would report it
 
 contains
 
