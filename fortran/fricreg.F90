@@ -21,10 +21,10 @@
 !   - the iso_c_binding names used with them: c_int, c_double, c_size_t, c_int64_t,
 !     c_intptr_t, c_ptr, c_funptr, c_char, c_null_ptr, c_null_funptr, c_null_char,
 !     c_associated, c_f_pointer, c_loc, c_funloc;
-!   - the idiomatic layer below: the types fricreg_context, fricreg_simulation and
-!     fricreg_exact_solution (the last two with the drivers), their common parent
-!     fricreg_object, the generic law_eval, and fricreg_error_string, fricreg_version_string,
-!     fricreg_integrator_string, fricreg_integrator_id.
+!   - the idiomatic layer below: the types fricreg_context, fricreg_simulation,
+!     fricreg_exact_solution and fricreg_structure (the last three with the drivers), their
+!     common parent fricreg_object, the generic law_eval, and fricreg_error_string,
+!     fricreg_version_string, fricreg_integrator_string, fricreg_integrator_id.
 !
 ! Conventions of the idiomatic layer:
 !   - Every procedure that can fail is a function returning a status, integer(c_int):
@@ -67,8 +67,8 @@ module fricreg
 #ifdef FRICREG_HAVE_SIM
   include 'fricreg_drivers_h_public.inc'
   public :: fricreg_sim_observer
-  public :: fricreg_simulation, fricreg_exact_solution, fricreg_integrator_string, &
-            fricreg_integrator_id
+  public :: fricreg_simulation, fricreg_exact_solution, fricreg_structure, &
+            fricreg_integrator_string, fricreg_integrator_id
 #endif
 
   !> A failure detected in Fortran (a size mismatch, an object not created, or a C failure the
@@ -167,6 +167,45 @@ module fricreg
     procedure :: dissipation => exact_dissipation
     procedure :: stick_fraction => exact_stick_fraction
     final :: exact_final
+  end type
+
+  !> A linear structure with friction contacts (include/fricreg_structure.h):
+  !>   M u'' + C u' + K u = p(t) - M r a_g(t) + J^T f,   zdot = J u',
+  !> integrated by Newmark, HHT-alpha (Newton on the exact tangent), central difference or a
+  !> GSL stepper. Every matrix is a Fortran array in its natural shape: M, K, C (ndof, ndof);
+  !> J (m, ndof) with J(i, k) = d zdot_i / d u'_k (transposed for C here). Units are the
+  !> caller's, consistent (kg, N/m, N s/m, m, s, N); eps is a velocity.
+  type, extends(fricreg_object) :: fricreg_structure
+    private
+    integer(c_size_t) :: n = 0, m = 0 ! C has no size getters: kept from create
+  contains
+    procedure :: create => struct_create
+    procedure :: ndof => struct_ndof
+    procedure :: ncontacts => struct_ncontacts
+    procedure :: set_mass => struct_set_mass
+    procedure :: set_stiffness => struct_set_stiffness
+    procedure :: set_damping => struct_set_damping
+    procedure :: set_rayleigh => struct_set_rayleigh
+    procedure :: set_contacts => struct_set_contacts
+    procedure :: set_bounds => struct_set_bounds
+    procedure :: set_law => struct_set_law
+    procedure :: set_influence => struct_set_influence
+    procedure :: set_ground_accel => struct_set_ground_accel
+    procedure :: set_load => struct_set_load
+    procedure :: set_initial => struct_set_initial
+    procedure :: set_newmark => struct_set_newmark
+    procedure :: set_hht => struct_set_hht
+    procedure :: set_central_difference => struct_set_central_difference
+    procedure :: set_newton => struct_set_newton
+    procedure :: step => struct_step
+    procedure :: run => struct_run
+    procedure :: run_ode => struct_run_ode
+    procedure :: get_state => struct_get_state
+    procedure :: get_forces => struct_get_forces
+    procedure :: get_dissipation => struct_get_dissipation
+    procedure :: get_value => struct_get_value
+    procedure :: get_stat => struct_get_stat
+    final :: struct_final
   end type
 #endif
 
@@ -891,6 +930,393 @@ contains
     if (status == FRICREG_OK) status = self%unrecorded('stick_fraction', &
                                        fricreg_exact_stick_fraction(self%ptr, t0, t1, fraction))
   end function exact_stick_fraction
+
+  ! ---- Linear structure with friction contacts (fricreg_structure.h) ----------------------
+  ! Setters and runs record their failures in the C object (errmsg names the argument, entry,
+  ! time or contact, counting from 0); the getters, const in C, are recorded here.
+
+  !> A structure of ndof >= 1 degrees of freedom and m >= 1 contacts, with C's defaults
+  !> (M = I, C = K = 0, J unset, mun = 1, law (4) with eps = 1e-3, average-acceleration
+  !> Newmark). Replaces (and releases) any structure self held; on failure keeps it.
+  !> FRICREG_EINVAL for ndof or m < 1 or above 2**15; FRICREG_ENOMEM.
+  function struct_create(self, ndof, m) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    integer, intent(in) :: ndof, m
+    integer(c_int) :: status
+    type(c_ptr) :: p
+    character(len=64) :: buf
+    write (buf, '(a, i0, a, i0)') 'create: ndof = ', ndof, ', m = ', m
+    if (ndof < 1 .or. m < 1) then
+      status = self%fail(FRICREG_EINVAL, trim(buf) // ': both must be >= 1')
+      return
+    end if
+    p = c_null_ptr
+    status = fricreg_structure_create(as_size(ndof), as_size(m), p)
+    if (status /= FRICREG_OK) then
+      status = self%fail(status, trim(buf) // ': ' // fricreg_error_string(status))
+      return
+    end if
+    call self%adopt(p, fricreg_structure_free, fricreg_structure_errcode, &
+                    fricreg_structure_errmsg)
+    self%n = as_size(ndof)
+    self%m = as_size(m)
+  end function struct_create
+
+  subroutine struct_final(self)
+    type(fricreg_structure), intent(inout) :: self
+    call self%destroy()
+  end subroutine struct_final
+
+  !> Degrees of freedom (0 if not created).
+  integer function struct_ndof(self)
+    class(fricreg_structure), intent(in) :: self
+    struct_ndof = 0
+    if (c_associated(self%ptr)) struct_ndof = int(self%n)
+  end function struct_ndof
+
+  !> Friction contacts (0 if not created).
+  integer function struct_ncontacts(self)
+    class(fricreg_structure), intent(in) :: self
+    struct_ncontacts = 0
+    if (c_associated(self%ptr)) struct_ncontacts = int(self%m)
+  end function struct_ncontacts
+
+  !> FRICREG_OK if self is created and the square matrix A is ndof x ndof.
+  function struct_square(self, what, name, A) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    character(len=*), intent(in) :: what, name
+    real(c_double), intent(in) :: A(:, :)
+    integer(c_int) :: status
+    status = self%ready(what, 'structure')
+    if (status == FRICREG_OK) status = self%check_square(what, name, shape(A), self%n)
+  end function struct_square
+
+  !> FRICREG_OK if self is created and the vector x has n entries.
+  function struct_vector(self, what, name, x, n) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    character(len=*), intent(in) :: what, name
+    real(c_double), intent(in) :: x(:)
+    integer(c_size_t), intent(in) :: n
+    integer(c_int) :: status
+    status = self%ready(what, 'structure')
+    if (status == FRICREG_OK) status = self%check_size(what, name, size(x), n)
+  end function struct_vector
+
+  !> Mass matrix M(ndof, ndof), symmetric positive definite (C reads it row-major: for a
+  !> symmetric matrix the same numbers; a non-symmetric one is FRICREG_ENOTSYM, never
+  !> transposed). FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_ENOTSYM; FRICREG_ENOTPSD.
+  function struct_set_mass(self, M) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(in), contiguous :: M(:, :)
+    integer(c_int) :: status
+    status = struct_square(self, 'set_mass', 'M', M)
+    if (status == FRICREG_OK) status = self%record(fricreg_structure_set_mass(self%ptr, self%n, M))
+  end function struct_set_mass
+
+  !> Stiffness matrix K(ndof, ndof), symmetric (may be singular). FRICREG_ESIZE;
+  !> FRICREG_ENONFINITE; FRICREG_ENOTSYM.
+  function struct_set_stiffness(self, K) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(in), contiguous :: K(:, :)
+    integer(c_int) :: status
+    status = struct_square(self, 'set_stiffness', 'K', K)
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_structure_set_stiffness(self%ptr, self%n, K))
+  end function struct_set_stiffness
+
+  !> Damping matrix C(ndof, ndof), symmetric; replaces Rayleigh damping. FRICREG_ESIZE;
+  !> FRICREG_ENONFINITE; FRICREG_ENOTSYM.
+  function struct_set_damping(self, C) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(in), contiguous :: C(:, :)
+    integer(c_int) :: status
+    status = struct_square(self, 'set_damping', 'C', C)
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_structure_set_damping(self%ptr, self%n, C))
+  end function struct_set_damping
+
+  !> Rayleigh damping C = a0 M + a1 K (a0 in 1/s, a1 in s, both >= 0). FRICREG_EINVAL;
+  !> FRICREG_ENONFINITE.
+  function struct_set_rayleigh(self, a0, a1) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(in) :: a0, a1
+    integer(c_int) :: status
+    status = self%ready('set_rayleigh', 'structure')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_structure_set_rayleigh(self%ptr, a0, a1))
+  end function struct_set_rayleigh
+
+  !> Contact matrix J(m, ndof) in Fortran's order, J(i, k) = d zdot_i / d u'_k (passed
+  !> transposed to C, which reads J row-major). FRICREG_ESIZE unless J is m x ndof;
+  !> FRICREG_ENONFINITE; FRICREG_EINVAL if a row is zero (C's message counts from 0).
+  function struct_set_contacts(self, J) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(in) :: J(:, :)
+    integer(c_int) :: status
+    status = self%ready('set_contacts', 'structure')
+    if (status == FRICREG_OK) status = self%check_size('set_contacts', 'J, 1', size(J, 1), self%m)
+    if (status == FRICREG_OK) status = self%check_size('set_contacts', 'J, 2', size(J, 2), self%n)
+    if (status == FRICREG_OK) status = self%record( &
+                                       fricreg_structure_set_contacts(self%ptr, self%m, self%n, &
+                                                                      transpose(J)))
+  end function struct_set_contacts
+
+  !> Friction bounds mun(m) = mu_i N_i >= 0 (force units); may change between steps.
+  !> FRICREG_ESIZE; FRICREG_EINVAL if one is negative; FRICREG_ENONFINITE.
+  function struct_set_bounds(self, mun) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(in), contiguous :: mun(:)
+    integer(c_int) :: status
+    status = struct_vector(self, 'set_bounds', 'mun', mun, self%m)
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_structure_set_bounds(self%ptr, self%m, mun))
+  end function struct_set_bounds
+
+  !> Law (FRICREG_LAW_*) and eps > 0 (velocity units). FRICREG_EINVAL; FRICREG_ENONFINITE.
+  function struct_set_law(self, law, eps) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    integer(c_int), intent(in) :: law
+    real(c_double), intent(in) :: eps
+    integer(c_int) :: status
+    status = self%ready('set_law', 'structure')
+    if (status == FRICREG_OK) status = self%record(fricreg_structure_set_law(self%ptr, law, eps))
+  end function struct_set_law
+
+  !> Influence vector r(ndof) of the ground acceleration (load -M r a_g). FRICREG_ESIZE;
+  !> FRICREG_ENONFINITE.
+  function struct_set_influence(self, r) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(in), contiguous :: r(:)
+    integer(c_int) :: status
+    status = struct_vector(self, 'set_influence', 'r', r, self%n)
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_structure_set_influence(self%ptr, self%n, r))
+  end function struct_set_influence
+
+  !> Ground acceleration record ag(:) (e.g. m/s**2) at times t0 + (k - 1) dt_rec, k = 1, ...,
+  !> size(ag) >= 2, linear between samples and zero outside; t0 defaults to 0. An empty ag
+  !> removes the ground motion. Read at step ends (see C's fricreg_structure_set_ground_accel).
+  !> FRICREG_EINVAL if size(ag) is 1 or dt_rec <= 0; FRICREG_ENONFINITE; FRICREG_ENOMEM.
+  function struct_set_ground_accel(self, ag, dt_rec, t0) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(in), contiguous :: ag(:)
+    real(c_double), intent(in) :: dt_rec
+    real(c_double), intent(in), optional :: t0
+    integer(c_int) :: status
+    real(c_double) :: start
+    start = 0.0_c_double
+    if (present(t0)) start = t0
+    status = self%ready('set_ground_accel', 'structure')
+    if (status == FRICREG_OK) status = self%record(fricreg_structure_set_ground_accel( &
+                                       self%ptr, start, dt_rec, as_size(size(ag)), ag))
+  end function struct_set_ground_accel
+
+  !> External load p(t) = p(ndof) g(t) (force units). Without g, a constant load (g = 1);
+  !> with g, a record like set_ground_accel's at t0 + (k - 1) dt_rec (dt_rec then required,
+  !> t0 default 0). FRICREG_ESIZE; FRICREG_EINVAL (size(g) = 1, dt_rec <= 0 or absent with g);
+  !> FRICREG_ENONFINITE; FRICREG_ENOMEM.
+  function struct_set_load(self, p, g, dt_rec, t0) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(in), contiguous :: p(:)
+    real(c_double), intent(in), contiguous, optional :: g(:)
+    real(c_double), intent(in), optional :: dt_rec, t0
+    integer(c_int) :: status
+    real(c_double) :: start, step
+    start = 0.0_c_double
+    step = 0.0_c_double
+    if (present(t0)) start = t0
+    if (present(dt_rec)) step = dt_rec
+    status = struct_vector(self, 'set_load', 'p', p, self%n)
+    if (status /= FRICREG_OK) return
+    if (.not. present(g)) then
+      status = self%record(fricreg_structure_set_load(self%ptr, self%n, p, start, step, &
+                                                      0_c_size_t))
+    else if (.not. present(dt_rec)) then
+      status = self%fail(FRICREG_EINVAL, 'set_load: g given without dt_rec')
+    else
+      status = self%record(fricreg_structure_set_load(self%ptr, self%n, p, start, step, &
+                                                      as_size(size(g)), g))
+    end if
+  end function struct_set_load
+
+  !> Restart at t = 0 from u0(ndof) and v0(ndof), each zero if absent; clears the energy
+  !> balance, the dissipation and the counters. FRICREG_ESIZE; FRICREG_ENONFINITE.
+  function struct_set_initial(self, u0, v0) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(in), contiguous, optional :: u0(:), v0(:)
+    integer(c_int) :: status
+    real(c_double), allocatable :: u(:), v(:)
+    status = self%ready('set_initial', 'structure')
+    if (status /= FRICREG_OK) return
+    allocate (u(self%n), v(self%n))
+    u = 0.0_c_double
+    v = 0.0_c_double
+    if (present(u0)) then
+      status = self%check_size('set_initial', 'u0', size(u0), self%n)
+      if (status /= FRICREG_OK) return
+      u = u0
+    end if
+    if (present(v0)) then
+      status = self%check_size('set_initial', 'v0', size(v0), self%n)
+      if (status /= FRICREG_OK) return
+      v = v0
+    end if
+    status = self%record(fricreg_structure_set_initial(self%ptr, self%n, u, v))
+  end function struct_set_initial
+
+  !> Newmark's method, beta in (0, 1/2] (default 1/4), gamma in [1/2, 1] (default 1/2):
+  !> average acceleration if both are absent. FRICREG_EINVAL; FRICREG_ENONFINITE.
+  function struct_set_newmark(self, beta, gamma) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(in), optional :: beta, gamma
+    integer(c_int) :: status
+    real(c_double) :: b, g
+    b = 0.25_c_double
+    g = 0.5_c_double
+    if (present(beta)) b = beta
+    if (present(gamma)) g = gamma
+    status = self%ready('set_newmark', 'structure')
+    if (status == FRICREG_OK) status = self%record(fricreg_structure_set_newmark(self%ptr, b, g))
+  end function struct_set_newmark
+
+  !> HHT-alpha with -1/3 <= alpha <= 0. FRICREG_EINVAL; FRICREG_ENONFINITE.
+  function struct_set_hht(self, alpha) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(in) :: alpha
+    integer(c_int) :: status
+    status = self%ready('set_hht', 'structure')
+    if (status == FRICREG_OK) status = self%record(fricreg_structure_set_hht(self%ptr, alpha))
+  end function struct_set_hht
+
+  !> Explicit central difference (each step refused with FRICREG_ESTEP beyond its bounds).
+  function struct_set_central_difference(self) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    integer(c_int) :: status
+    status = self%ready('set_central_difference', 'structure')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_structure_set_central_difference(self%ptr))
+  end function struct_set_central_difference
+
+  !> Newton's tolerance 0 < tol < 1 (default 1e-10) and 1 <= max_iter <= 1000 (default 50);
+  !> an absent one is set to its default. FRICREG_EINVAL; FRICREG_ENONFINITE.
+  function struct_set_newton(self, tol, max_iter) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(in), optional :: tol
+    integer, intent(in), optional :: max_iter
+    integer(c_int) :: status
+    real(c_double) :: t
+    integer(c_int) :: n
+    t = 1e-10_c_double
+    n = 50
+    if (present(tol)) t = tol
+    if (present(max_iter)) n = int(max_iter, c_int)
+    status = self%ready('set_newton', 'structure')
+    if (status == FRICREG_OK) status = self%record(fricreg_structure_set_newton(self%ptr, t, n))
+  end function struct_set_newton
+
+  !> One step of dt > 0 with the selected scheme. FRICREG_EINVAL (dt, J never set);
+  !> FRICREG_ENONFINITE; FRICREG_ESINGULAR; FRICREG_ESTEP; FRICREG_EDIVERGED. On failure the
+  !> state is unchanged.
+  function struct_step(self, dt) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(in) :: dt
+    integer(c_int) :: status
+    status = self%ready('step', 'structure')
+    if (status == FRICREG_OK) status = self%record(fricreg_structure_step(self%ptr, dt))
+  end function struct_step
+
+  !> Steps of dt from the current time to t_end, the last one shortened to land on it. The
+  !> codes of step, and FRICREG_EINVAL if t_end is not ahead; on failure the state is that of
+  !> the last successful step.
+  function struct_run(self, dt, t_end) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(in) :: dt, t_end
+    integer(c_int) :: status
+    status = self%ready('run', 'structure')
+    if (status == FRICREG_OK) status = self%record(fricreg_structure_run(self%ptr, dt, t_end))
+  end function struct_run
+
+  !> Integrate to t_end with a GSL stepper (FRICREG_INT_*): fixed steps dt when rtol and atol
+  !> are absent or 0, else adaptive with dt the first step (see C's fricreg_structure_run_ode).
+  !> FRICREG_EINVAL; FRICREG_ENONFINITE; FRICREG_ESTEP; FRICREG_ESINGULAR; FRICREG_EDIVERGED;
+  !> FRICREG_EINTEGRATOR; FRICREG_ENOMEM.
+  function struct_run_ode(self, integrator, dt, t_end, rtol, atol) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    integer(c_int), intent(in) :: integrator
+    real(c_double), intent(in) :: dt, t_end
+    real(c_double), intent(in), optional :: rtol, atol
+    integer(c_int) :: status
+    real(c_double) :: r, a
+    r = 0.0_c_double
+    a = 0.0_c_double
+    if (present(rtol)) r = rtol
+    if (present(atol)) a = atol
+    status = self%ready('run_ode', 'structure')
+    if (status == FRICREG_OK) status = self%record( &
+                                       fricreg_structure_run_ode(self%ptr, integrator, dt, r, a, &
+                                                                 t_end))
+  end function struct_run_ode
+
+  !> The state now: u(ndof), v(ndof), a(ndof), each optional (at least one). Written only on
+  !> success. FRICREG_ESIZE; FRICREG_ENULL if all three are absent.
+  function struct_get_state(self, u, v, a) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(inout), contiguous, optional :: u(:), v(:), a(:)
+    integer(c_int) :: status
+    status = self%ready('get_state', 'structure')
+    if (status == FRICREG_OK .and. present(u)) &
+      status = self%check_size('get_state', 'u', size(u), self%n)
+    if (status == FRICREG_OK .and. present(v)) &
+      status = self%check_size('get_state', 'v', size(v), self%n)
+    if (status == FRICREG_OK .and. present(a)) &
+      status = self%check_size('get_state', 'a', size(a), self%n)
+    if (status == FRICREG_OK) &
+      status = self%unrecorded('get_state', fricreg_structure_get_state(self%ptr, self%n, u, v, a))
+  end function struct_get_state
+
+  !> Friction forces f(m) of the current state (force units). FRICREG_ESIZE.
+  function struct_get_forces(self, f) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(inout), contiguous :: f(:)
+    integer(c_int) :: status
+    status = struct_vector(self, 'get_forces', 'f', f, self%m)
+    if (status == FRICREG_OK) &
+      status = self%unrecorded('get_forces', fricreg_structure_get_forces(self%ptr, self%m, f))
+  end function struct_get_forces
+
+  !> Energy dissipated by each contact since set_initial, D(m) (energy units). FRICREG_ESIZE.
+  function struct_get_dissipation(self, D) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(inout), contiguous :: D(:)
+    integer(c_int) :: status
+    status = struct_vector(self, 'get_dissipation', 'D', D, self%m)
+    if (status == FRICREG_OK) status = self%unrecorded('get_dissipation', &
+                                       fricreg_structure_get_dissipation(self%ptr, self%m, D))
+  end function struct_get_dissipation
+
+  !> One quantity (FRICREG_SVALUE_*: time, energies, the balance's residual) into value.
+  !> FRICREG_EINVAL for an unknown one.
+  function struct_get_value(self, which, value) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    integer(c_int), intent(in) :: which
+    real(c_double), intent(inout) :: value
+    integer(c_int) :: status
+    status = self%ready('get_value', 'structure')
+    if (status == FRICREG_OK) status = self%unrecorded('get_value', &
+                                       fricreg_structure_get_value(self%ptr, which, value))
+  end function struct_get_value
+
+  !> One counter (FRICREG_SSTAT_*: steps, Newton iterations, max, failures, line-search cuts)
+  !> into value. FRICREG_EINVAL for an unknown one.
+  function struct_get_stat(self, which, value) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    integer(c_int), intent(in) :: which
+    integer(c_int64_t), intent(inout) :: value
+    integer(c_int) :: status
+    status = self%ready('get_stat', 'structure')
+    if (status == FRICREG_OK) status = self%unrecorded('get_stat', &
+                                       fricreg_structure_get_stat(self%ptr, which, value))
+  end function struct_get_stat
 #endif
 
 end module fricreg

@@ -173,10 +173,10 @@ FRICREG_API int fricreg_structure_set_central_difference(fricreg_structure *s);
  *  first guess's residual is exactly zero) when the residual's largest entry is at most
  *  tol times the step's force scale: the largest entry of |M a| and |C v + K u - p~ - J^T f|
  *  at the step's start, |p~| at its end, and |J|^T mun. 0 < tol < 1; 1 <= max_iter <= 1000.
- *  Iterations grow as eps shrinks against dt times the contacts' accelerations (law (4) then
- *  approaches a jump): on the ten-storey building of issue 10 at dt = 0.01 s, mean (max)
- *  iterations per step were 1.15 (8) at eps = 0.01 m/s, 2.2 (19) at 1e-3 and 9.95 (42) at
- *  1e-4; hence the default max_iter = 50.
+ *  Iterations grow slowly as eps shrinks against dt times the contacts' accelerations (law
+ *  (4) then approaches a jump): on the ten-storey building of issue 10 at dt = 0.01 s, mean
+ *  (max) iterations per step were 1.09 (6) at eps = 0.01 m/s, 1.23 (11) at 1e-3 and 1.29 (19)
+ *  at 1e-4; the default max_iter = 50 leaves room.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ENONFINITE; FRICREG_EINVAL. */
 FRICREG_API int fricreg_structure_set_newton(fricreg_structure *s, double tol, int max_iter);
 
@@ -189,15 +189,21 @@ FRICREG_API int fricreg_structure_set_newton(fricreg_structure *s, double tol, i
  *  p~ = p - M r a_g, f = f(J v, a_free(u, v)) from the friction law. Newton on the exact
  *  tangent dR/da = M + (1 + alpha) (S - J^T (gamma dt F_z J - F_a J M^-1 S)),
  *  S = gamma dt C + beta dt^2 K, with F_z = df/dzdot and F_a = df/da_free from
- *  fricreg_ctx_tangent, solved by GSL's LU; from the previous acceleration as the first
- *  guess; each Newton direction is cut by halving until the residual's 2-norm decreases
- *  (Armijo, 1e-4), at most 30 halvings. A step whose Newton does not converge within
- *  max_iter iterations (or whose line search or LU fails) is still taken, from its last
- *  iterate (the smallest residual), and counted in FRICREG_SSTAT_NEWTON_FAILURES.
+ *  fricreg_ctx_tangent, solved by GSL's LU. First guess: the previous acceleration or, if
+ *  its residual is larger than the tolerance and than this one's, the same corrected so that
+ *  the contacts whose force is below the bound (law (4): in its band, sticking) keep their
+ *  velocities over the step (the smallest such correction in M's norm). Each
+ *  Newton direction is first cut where it would carry a slipping contact across the whole
+ *  band (to zdot_i = 0, once per contact and step), then halved until the residual's 2-norm
+ *  decreases (Armijo, 1e-4), at most 30 halvings; should that stall, Newton starts again
+ *  from the previous acceleration without the cuts. A step whose Newton does not converge
+ *  within max_iter iterations in all (or whose line search or LU fails) is still taken, from
+ *  its last iterate, and counted in FRICREG_SSTAT_NEWTON_FAILURES.
  *  The energy balance is updated (fricreg_structure_get_value). The first step after a model
  *  setter forms G = J M^-1 and W (O(m ndof^2 + m^2 ndof)) and the equilibrium acceleration
  *  at t; each Newton iteration costs one tangent, O(m^2 ndof + m ndof^2) to form the matrix
- *  and an O(ndof^3) LU. No heap allocation.
+ *  and an O(ndof^3) LU; the corrected guess O(m ndof + m^3) and a residual. No heap
+ *  allocation.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if dt <= 0, t + dt rounds to t, or J
  *  was never set; FRICREG_ENONFINITE if dt is not finite; FRICREG_ENOTSYM or

@@ -9,10 +9,12 @@
  * a_free: dR/dx = M + (1 + alpha)(S - J^T (gamma dt F_z J - F_a G S)), S = gamma dt C +
  * beta dt^2 K. */
 #include <math.h>
+#include <string.h>
 
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_linalg.h>
 
+#include "ctx_internal.h"
 #include "structure_internal.h"
 
 #define ARMIJO 1e-4 /* sufficient decrease of the residual's 2-norm */
@@ -91,11 +93,40 @@ static double force_scale(fricreg_structure *s)
     return scale > 0.0 ? scale : 1e-300;
 }
 
-/* Backtracking on ||R||_2 along dx from x; on success x, R and the context's last
- * evaluation are at the accepted point. Returns 0 if no cut decreased the residual. */
-static int line_search(fricreg_structure *s, double dt, double *phi)
+/* The first trial step along dx: the largest fraction in (0, 1] that stops a slipping
+ * contact (mun_i > 0 and df_i/dzdot_i = 0 at x: outside the law's band) at zdot_i = 0 where
+ * the full step would take it across the whole band (from one side of zdot = 0 to beyond eps
+ * on the other), each contact once a step. A Newton step from a slip piece is the root of
+ * that piece's linearization; when the contact must stop, that root lies beyond the band,
+ * which is only eps/(gamma dt) wide in the acceleration, so the full step jumps across it to
+ * the other slip piece, and halving finds the band only after many cuts. Stopped at zdot_i =
+ * 0, the contact is where the law holds it (f = the sticking force), and the next iteration
+ * works on the band's own linearization; once a step, so that a contact that must reverse is
+ * stopped only once. */
+static double first_trial(fricreg_structure *s, double dt)
 {
-    double lambda = 1.0;
+    gsl_blas_dgemv(CblasNoTrans, s->gamma * dt, s->J, s->dx, 0.0, s->mwork); /* dzdot/dlambda */
+    double lambda = 1.0, eps = s->ctx->eps;
+    size_t first = s->m;
+    for (size_t i = 0; i < s->m; i++) {
+        double z = gsl_vector_get(s->zdot, i), z1 = z + gsl_vector_get(s->mwork, i);
+        if (!s->stopped[i] && s->mun[i] > 0.0 && gsl_matrix_get(s->Fz, i, i) == 0.0 &&
+            z * z1 < 0.0 && fabs(z1) >= eps && z / (z - z1) < lambda) {
+            lambda = z / (z - z1);
+            first = i;
+        }
+    }
+    if (first < s->m)
+        s->stopped[first] = 1;
+    return lambda;
+}
+
+/* Backtracking on ||R||_2 along dx from x, from the first trial (stop_slips) or from the full
+ * step; on success x, R and the context's last evaluation are at the accepted point. Returns
+ * 0 if no cut decreased the residual. */
+static int line_search(fricreg_structure *s, double dt, int stop_slips, double *phi)
+{
+    double lambda = stop_slips ? first_trial(s, dt) : 1.0;
     for (int cut = 0; cut <= MAX_CUTS; cut++) {
         gsl_vector_memcpy(s->xt, s->x);
         gsl_blas_daxpy(lambda, s->dx, s->xt);
@@ -114,33 +145,72 @@ static int line_search(fricreg_structure *s, double dt, double *phi)
     return 0;
 }
 
-/* Newton from x = a: returns a status, and *converged and *iters. On return the context's
- * last evaluation, u1, v1 and f1 are at x. */
-static int newton(fricreg_structure *s, double dt, int *converged, int *iters)
+/* Newton iterations from x (its residual R evaluated, phi = ||R||_2) until the residual is
+ * within tol, the step's iterations (*iters, counted on) run out, or the line search stalls.
+ * At least one iteration unless R is exactly zero: a guess accepted within the tolerance
+ * would leave a in error by up to tol, and a stick would creep by that times dt^2 every
+ * step. On a linear piece of the law one iteration is exact. Returns ||R||_inf at x. */
+static double iterate(fricreg_structure *s, double dt, double tol, int stop_slips, double *phi,
+                      int *iters)
 {
-    gsl_vector_memcpy(s->x, s->a);
-    int status = residual(s, dt, s->x, s->R);
-    if (status != FRICREG_OK)
-        return fr_sfail(s, status, "step: friction at t = %g: %s", s->t + dt,
-                        fricreg_ctx_errmsg(s->ctx));
-    double tol = s->newton_tol * force_scale(s);
-    double phi = gsl_blas_dnrm2(s->R);
-    /* At least one iteration unless the guess is exact: a guess accepted within the
-     * tolerance would leave a in error by up to tol, and a stick would creep by that
-     * times dt^2 every step. On a linear piece of the law one iteration is exact. */
-    *iters = 0;
+    int done = 0;
     double r = fr_norm_inf(s->R);
-    while (r != 0.0 && (*iters == 0 || r > tol) && *iters < s->newton_max) {
-        if (!isfinite(phi))
+    while (r != 0.0 && (done == 0 || r > tol) && *iters < s->newton_max) {
+        if (!isfinite(*phi))
             break;
         if (newton_direction(s, dt) != FRICREG_OK)
             break;
         ++*iters;
-        if (!line_search(s, dt, &phi)) {
-            residual(s, dt, s->x, s->R); /* back to x: the step's best point */
+        ++done;
+        if (!line_search(s, dt, stop_slips, phi)) {
+            residual(s, dt, s->x, s->R); /* back to x: the best point */
             break;
         }
         r = fr_norm_inf(s->R);
+    }
+    return r;
+}
+
+/* x = the first guess (s->guess or s->a), its residual R and phi = ||R||_2. */
+static int start_at(fricreg_structure *s, double dt, const gsl_vector *guess, double *phi)
+{
+    gsl_vector_memcpy(s->x, guess);
+    int status = residual(s, dt, s->x, s->R);
+    if (status != FRICREG_OK)
+        return fr_sfail(s, status, "step: friction at t = %g: %s", s->t + dt,
+                        fricreg_ctx_errmsg(s->ctx));
+    *phi = gsl_blas_dnrm2(s->R);
+    return FRICREG_OK;
+}
+
+/* Newton from the previous acceleration a or, where a is not within tol, the stick
+ * predictor's guess if its residual is smaller: returns a status, and *converged and *iters.
+ * On return the context's last evaluation, u1, v1 and f1 are at x. Slipping contacts are
+ * stopped at zdot = 0 (first_trial). Where a stop ends on a kink of the law (zdot = 0 is the
+ * band's edge when |f_eq| >= mun) the line search can stall there: Newton then starts again
+ * from a, without stops, with the iterations left. */
+static int newton(fricreg_structure *s, double dt, int *converged, int *iters)
+{
+    double phi = 0.0;
+    int status = start_at(s, dt, s->a, &phi);
+    if (status != FRICREG_OK)
+        return status;
+    double tol = s->newton_tol * force_scale(s);
+    if (fr_norm_inf(s->R) > tol && fr_stick_predictor(s, fr_stick_mark(s))) {
+        double phi_a = phi;
+        status = start_at(s, dt, s->guess, &phi);
+        if (status == FRICREG_OK && !(phi < phi_a))
+            status = start_at(s, dt, s->a, &phi);
+        if (status != FRICREG_OK)
+            return status;
+    }
+    memset(s->stopped, 0, s->m * sizeof *s->stopped);
+    *iters = 0;
+    double r = iterate(s, dt, tol, 1, &phi, iters);
+    if (r > tol && isfinite(phi) && *iters < s->newton_max) {
+        if ((status = start_at(s, dt, s->a, &phi)) != FRICREG_OK)
+            return status;
+        r = iterate(s, dt, tol, 0, &phi, iters);
     }
     *converged = r <= tol; /* also when the extra iteration stalls at the rounding floor */
     if (!isfinite(phi))

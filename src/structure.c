@@ -22,13 +22,13 @@ void fricreg_structure_free(fricreg_structure *s)
 {
     if (s == NULL)
         return;
-    gsl_matrix *mats[] = {s->M, s->K,  s->C, s->J,  s->L,  s->G,
+    gsl_matrix *mats[] = {s->M, s->K,  s->C, s->J,  s->L,  s->G, s->W,
                           s->S, s->GS, s->A, s->Fz, s->Fa, s->T1};
     for (size_t k = 0; k < sizeof mats / sizeof *mats; k++)
         if (mats[k])
             gsl_matrix_free(mats[k]);
     gsl_vector *vecs[] = {s->r,  s->p,    s->Mr,    s->u,    s->v,  s->a,  s->ptil,
-                          s->f,  s->x,    s->dx,    s->xt,   s->u1, s->v1, s->q1,
+                          s->f,  s->x,    s->dx,    s->xt,   s->u1, s->v1, s->guess,
                           s->R,  s->Rt,   s->ptil1, s->hist, s->up, s->vp, s->work,
                           s->f1, s->zdot, s->afree, s->mwork};
     for (size_t k = 0; k < sizeof vecs / sizeof *vecs; k++)
@@ -42,6 +42,7 @@ void fricreg_structure_free(fricreg_structure *s)
         gsl_vector_free(s->eigenvalues);
     fricreg_ctx_free(s->ctx);
     free(s->mun);
+    free(s->stopped);
     free(s->ground.x);
     free(s->load.x);
     free(s->energy.per_contact);
@@ -59,10 +60,12 @@ static int allocate(fricreg_structure *s)
     for (size_t k = 0; k < sizeof mn / sizeof *mn; k++)
         if ((*mn[k] = gsl_matrix_calloc(m, n)) == NULL)
             return 0;
-    if ((s->Fz = gsl_matrix_calloc(m, m)) == NULL || (s->Fa = gsl_matrix_calloc(m, m)) == NULL)
-        return 0;
-    gsl_vector **nv[] = {&s->r,  &s->p,     &s->Mr,   &s->u,  &s->v,  &s->a,   &s->ptil,
-                         &s->x,  &s->dx,    &s->xt,   &s->u1, &s->v1, &s->q1,  &s->R,
+    gsl_matrix **mm[] = {&s->W, &s->Fz, &s->Fa};
+    for (size_t k = 0; k < sizeof mm / sizeof *mm; k++)
+        if ((*mm[k] = gsl_matrix_calloc(m, m)) == NULL)
+            return 0;
+    gsl_vector **nv[] = {&s->r,  &s->p,     &s->Mr,   &s->u,  &s->v,  &s->a,     &s->ptil,
+                         &s->x,  &s->dx,    &s->xt,   &s->u1, &s->v1, &s->guess, &s->R,
                          &s->Rt, &s->ptil1, &s->hist, &s->up, &s->vp, &s->work};
     for (size_t k = 0; k < sizeof nv / sizeof *nv; k++)
         if ((*nv[k] = gsl_vector_calloc(n)) == NULL)
@@ -75,9 +78,10 @@ static int allocate(fricreg_structure *s)
     s->eigen_work = gsl_eigen_symm_alloc(n);
     s->eigenvalues = gsl_vector_alloc(n);
     s->mun = malloc(m * sizeof *s->mun);
+    s->stopped = calloc(m, sizeof *s->stopped);
     s->energy.per_contact = calloc(m, sizeof *s->energy.per_contact);
-    return s->perm && s->eigen_work && s->eigenvalues && s->mun && s->energy.per_contact &&
-           fricreg_ctx_create(m, &s->ctx) == FRICREG_OK;
+    return s->perm && s->eigen_work && s->eigenvalues && s->mun && s->stopped &&
+           s->energy.per_contact && fricreg_ctx_create(m, &s->ctx) == FRICREG_OK;
 }
 
 int fricreg_structure_create(size_t ndof, size_t m, fricreg_structure **out)
@@ -477,10 +481,10 @@ static int diagonal(const gsl_matrix *W)
     return 1;
 }
 
-/* W into the context: diagonal or dense. Uses s->Fz (m x m) and s->mwork as scratch. */
+/* G and W, and W into the context: diagonal or dense. Uses s->mwork as scratch. */
 static int couple(fricreg_structure *s)
 {
-    gsl_matrix *W = s->Fz;
+    gsl_matrix *W = s->W;
     /* G = J M^-1: solve M G^T = J^T column by column with the Cholesky factor. */
     for (size_t i = 0; i < s->m; i++) {
         gsl_vector_const_view jrow = gsl_matrix_const_row(s->J, i);

@@ -55,6 +55,7 @@ struct fricreg_structure {
     int prepared;    /* M's factor, G, W and C are current */
     gsl_matrix *L;   /* n x n: Cholesky factor of M */
     gsl_matrix *G;   /* m x n: J M^-1 */
+    gsl_matrix *W;   /* m x m: J M^-1 J^T */
     gsl_vector *Mr;  /* M r */
     int omega_valid; /* central difference: omega_max is current (reset by prepare) */
     double omega_max;
@@ -79,8 +80,9 @@ struct fricreg_structure {
     gsl_matrix *Fz, *Fa;     /* m x m: df/dzdot, df/da_free */
     gsl_matrix *T1;          /* m x n: gamma dt F_z J - F_a G S */
     gsl_vector *x, *dx, *xt; /* unknown a, direction, trial */
-    gsl_vector *u1, *v1, *q1, *R, *Rt, *ptil1, *hist, *up, *vp, *work;
+    gsl_vector *u1, *v1, *guess, *R, *Rt, *ptil1, *hist, *up, *vp, *work;
     gsl_vector *f1, *zdot, *afree, *mwork; /* [m] */
+    unsigned char *stopped;                /* [m] Newton: stopped at zdot_i = 0 this step */
 
     struct fr_energy energy;
     int64_t stats[FR_NSSTATS];
@@ -106,6 +108,13 @@ void fr_structure_net_force(const fricreg_structure *s, const gsl_vector *ptil, 
 
 /* newmark.c: u1, v1, x (= a1) and f1 of one Newmark / HHT-alpha step by Newton. */
 int fr_newmark_solve(fricreg_structure *s, double dt, int *converged, int *iters);
+
+/* stick_predictor.c: the contacts whose force at t is below their bound (law (4): in its
+ * band), marked in s->stopped; their number. */
+size_t fr_stick_mark(fricreg_structure *s);
+/* A first guess for a Newmark / HHT-alpha step's Newton, from the k marked contacts, into
+ * s->guess; 0 if there is none (k = 0, or W_SS singular). Uses s->Fa, s->afree, s->mwork. */
+int fr_stick_predictor(fricreg_structure *s, size_t k);
 
 /* central_difference.c: the same, explicit; FRICREG_ESTEP beyond its stability bounds. */
 int fr_central_solve(fricreg_structure *s, double dt);

@@ -10,16 +10,12 @@
  *               ends there: the last 5 s of a 15 s run are free vibration)
  *   rayleigh.txt  a0,a1 of 5 % Rayleigh damping in modes 1 and 2 (1/s, s)
  *
- * The shear building's circular frequencies are w_j = 2 sqrt(k/m) sin((2j - 1) pi/(2(2N + 1)))
- * (fixed base, free top); Rayleigh damping zeta in modes 1 and 2 takes a0 = 2 zeta w1 w2/(w1 +
- * w2), a1 = 2 zeta/(w1 + w2). Exit status 0, or 1 if a file cannot be written. */
-#include <math.h>
+ * The model itself is in building_model.h, shared with building.c, which builds it in code.
+ * Every number is written with 17 digits, so the files hold the model's doubles exactly.
+ * Exit status 0, or 1 if a file cannot be written. */
 #include <stdio.h>
 
-#define STOREYS 10
-
-static const double mass = 1e5, stiffness = 1e8, g = 9.81, zeta = 0.05;
-static const double pi = 3.14159265358979323846;
+#include "building_model.h"
 
 static FILE *open_in(const char *dir, const char *name)
 {
@@ -36,24 +32,22 @@ static int write_mass(FILE *f)
     fprintf(f,
             "%%%%MatrixMarket matrix coordinate real symmetric\n"
             "%% storey masses (kg)\n%d %d %d\n",
-            STOREYS, STOREYS, STOREYS);
-    for (int i = 1; i <= STOREYS; i++)
-        fprintf(f, "%d %d %.17g\n", i, i, mass);
+            BUILDING_STOREYS, BUILDING_STOREYS, BUILDING_STOREYS);
+    for (int i = 1; i <= BUILDING_STOREYS; i++)
+        fprintf(f, "%d %d %.17g\n", i, i, building_mass);
     return 0;
 }
 
-/* Storey i's spring joins floors i - 1 and i (floor 0 the ground): the top floor has one. */
+/* The lower triangle of K (symmetric storage). */
 static int write_stiffness(FILE *f)
 {
     fprintf(f,
             "%%%%MatrixMarket matrix coordinate real symmetric\n"
             "%% storey stiffness (N/m)\n%d %d %d\n",
-            STOREYS, STOREYS, 2 * STOREYS - 1);
-    for (int i = 1; i <= STOREYS; i++) {
-        fprintf(f, "%d %d %.17g\n", i, i, i < STOREYS ? 2.0 * stiffness : stiffness);
-        if (i > 1)
-            fprintf(f, "%d %d %.17g\n", i, i - 1, -stiffness);
-    }
+            BUILDING_STOREYS, BUILDING_STOREYS, 2 * BUILDING_STOREYS - 1);
+    for (int i = 0; i < BUILDING_STOREYS; i++)
+        for (int j = i > 0 ? i - 1 : 0; j <= i; j++)
+            fprintf(f, "%d %d %.17g\n", i + 1, j + 1, building_K(i, j));
     return 0;
 }
 
@@ -62,39 +56,34 @@ static int write_contacts(FILE *f)
     fprintf(f,
             "%%%%MatrixMarket matrix coordinate real general\n"
             "%% damper i slides with the drift of storey i\n%d %d %d\n",
-            STOREYS, STOREYS, 2 * STOREYS - 1);
-    for (int i = 1; i <= STOREYS; i++) {
-        fprintf(f, "%d %d 1\n", i, i);
-        if (i > 1)
-            fprintf(f, "%d %d -1\n", i, i - 1);
-    }
+            BUILDING_STOREYS, BUILDING_STOREYS, 2 * BUILDING_STOREYS - 1);
+    for (int i = 0; i < BUILDING_STOREYS; i++)
+        for (int k = i > 0 ? i - 1 : 0; k <= i; k++)
+            fprintf(f, "%d %d %.17g\n", i + 1, k + 1, building_J(i, k));
     return 0;
 }
 
 static int write_bounds(FILE *f)
 {
     fprintf(f, "# slip load of each storey's damper (N): 5 %% of the weight above\n");
-    for (int i = 0; i < STOREYS; i++)
-        fprintf(f, "%.17g\n", 0.05 * g * mass * (STOREYS - i));
+    for (int i = 0; i < BUILDING_STOREYS; i++)
+        fprintf(f, "%.17g\n", building_mun(i));
     return 0;
 }
 
 static int write_ground(FILE *f)
 {
     fprintf(f, "# t (s), a_g (m/s^2): 0.3 g sin(pi t/10) sin(2 pi t)\n");
-    for (int k = 0; k <= 10000; k++) {
-        double t = 1e-3 * k;
-        fprintf(f, "%.3f %.17g\n", t, 0.3 * g * sin(pi * t / 10.0) * sin(2.0 * pi * t));
-    }
+    for (int k = 0; k <= BUILDING_RECORD_STEPS; k++)
+        fprintf(f, "%.3f %.17g\n", building_record_dt * k, building_ground(k));
     return 0;
 }
 
 static int write_rayleigh(FILE *f)
 {
-    double n = STOREYS, w0 = 2.0 * sqrt(stiffness / mass);
-    double w1 = w0 * sin(pi / (2.0 * (2.0 * n + 1.0)));
-    double w2 = w0 * sin(3.0 * pi / (2.0 * (2.0 * n + 1.0)));
-    fprintf(f, "%.17g,%.17g\n", 2.0 * zeta * w1 * w2 / (w1 + w2), 2.0 * zeta / (w1 + w2));
+    double a0, a1;
+    building_rayleigh(&a0, &a1);
+    fprintf(f, "%.17g,%.17g\n", a0, a1);
     return 0;
 }
 

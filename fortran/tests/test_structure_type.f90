@@ -1,0 +1,183 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
+! test_structure_type.f90 — type(fricreg_structure), the idiomatic layer over
+! include/fricreg_structure.h:
+!   - J in Fortran's order J(m, ndof): the two storeys of test_structure.f90 under a static
+!     load stick with J^T f = -p, f = (-(p1 + p2), -p2) = (-0.319, 0.412), which a J passed
+!     untransposed would not give;
+!   - a three-DOF frame with two contacts (J 2 x 3), Rayleigh damping, ground motion and a
+!     load record, run by HHT-alpha and by GSL's RK4 through the type and through the C API
+!     (the thin layer): every number equal bit for bit, the same calls reaching the same C;
+!   - its failures: sizes checked in Fortran (FRICREG_ESIZE naming the array, nothing
+!     written), an object not created (FRICREG_ENULL), C's own refusals with C's message.
+program test_structure_type
+  use fricreg
+  use ftest
+  implicit none
+  type(fricreg_structure) :: st
+  real(c_double) :: M2(2, 2), K2(2, 2), J2(2, 2), f2(2), u2(2), v2(2)
+  real(c_double) :: M(3, 3), K(3, 3), J(2, 3), mun(2), p(3), ag(200), g(50), u(3), v(3)
+  real(c_double), parameter :: a0 = 0.0731_c_double, a1 = 0.00213_c_double
+  real(c_double), parameter :: dt = 0.0137_c_double, t_end = 2.385_c_double
+  integer(c_int64_t) :: count
+  integer :: i
+
+  ! ---- The static load: J(i, k) = d zdot_i / d u'_k, ground slip and inter-storey slip ----
+  M2 = reshape([1.7_c_double, 0.0_c_double, 0.0_c_double, 0.9_c_double], [2, 2])
+  K2 = reshape([30.2_c_double, -12.1_c_double, -12.1_c_double, 12.1_c_double], [2, 2])
+  J2 = reshape([1.0_c_double, -1.0_c_double, 0.0_c_double, 1.0_c_double], [2, 2])
+  call check_status(st%create(2, 2), FRICREG_OK, 'create 2, 2')
+  call check(st%ndof() == 2 .and. st%ncontacts() == 2, 'ndof, ncontacts')
+  call check_status(st%set_mass(M2), FRICREG_OK, 'set_mass')
+  call check_status(st%set_stiffness(K2), FRICREG_OK, 'set_stiffness')
+  call check_status(st%set_contacts(J2), FRICREG_OK, 'set_contacts(J)')
+  call check_status(st%set_bounds([0.5_c_double, 0.6_c_double]), FRICREG_OK, 'set_bounds')
+  call check_status(st%set_law(FRICREG_LAW_QUINN, 0.013_c_double), FRICREG_OK, 'set_law')
+  call check_status(st%set_load([0.731_c_double, -0.412_c_double]), FRICREG_OK, 'constant load')
+  call check_status(st%run(0.01_c_double, 1.0_c_double), FRICREG_OK, 'run')
+  call check_status(st%get_state(u=u2, v=v2), FRICREG_OK, 'get_state u, v')
+  call check(all(abs(u2) <= 1e-15_c_double) .and. all(abs(v2) <= 1e-15_c_double), 'no motion')
+  call check_status(st%get_forces(f2), FRICREG_OK, 'get_forces')
+  call check_close(f2(1), -0.319_c_double, 1e-13_c_double, 'f1 = -(p1 + p2)')
+  call check_close(f2(2), 0.412_c_double, 1e-13_c_double, 'f2 = -p2')
+  call check_status(st%get_stat(FRICREG_SSTAT_STEPS, count), FRICREG_OK, 'get_stat')
+  call check(count == 100, '100 steps')
+
+  ! ---- A frame of three DOFs and two contacts, against the C API ----------------------------
+  M = reshape([2.31_c_double, 0.17_c_double, 0.0_c_double, 0.17_c_double, 1.43_c_double, &
+               -0.08_c_double, 0.0_c_double, -0.08_c_double, 0.87_c_double], [3, 3])
+  K = reshape([41.3_c_double, -17.9_c_double, 0.0_c_double, -17.9_c_double, 29.6_c_double, &
+               -11.7_c_double, 0.0_c_double, -11.7_c_double, 11.7_c_double], [3, 3])
+  ! contact 1: DOF 1 on the ground; contact 2: DOF 3 against DOF 1 (J is 2 x 3, not square)
+  J = reshape([1.0_c_double, -1.0_c_double, 0.0_c_double, 0.0_c_double, 0.0_c_double, &
+               1.0_c_double], [2, 3])
+  mun = [0.437_c_double, 0.291_c_double]
+  p = [0.12_c_double, -0.07_c_double, 0.05_c_double]
+  ag = [(3.1_c_double * sin(0.0617_c_double * i) * sin(0.0047_c_double * i), i = 1, 200)]
+  g = [(cos(0.21_c_double * i), i = 1, 50)]
+  call check_status(st%create(3, 2), FRICREG_OK, 'create 3, 2 (replaces the first)')
+  call check(st%ndof() == 3 .and. st%ncontacts() == 2, 'ndof 3, ncontacts 2')
+  call check_status(st%set_mass(M), FRICREG_OK, 'set_mass 3')
+  call check_status(st%set_stiffness(K), FRICREG_OK, 'set_stiffness 3')
+  call check_status(st%set_rayleigh(a0, a1), FRICREG_OK, 'set_rayleigh')
+  call check_status(st%set_contacts(J), FRICREG_OK, 'set_contacts 2 x 3')
+  call check_status(st%set_bounds(mun), FRICREG_OK, 'set_bounds 2')
+  call check_status(st%set_law(FRICREG_LAW_QUINN, 0.0213_c_double), FRICREG_OK, 'set_law')
+  call check_status(st%set_influence([1.0_c_double, 1.0_c_double, 0.5_c_double]), FRICREG_OK, &
+                    'set_influence')
+  call check_status(st%set_ground_accel(ag, 0.0123_c_double), FRICREG_OK, 'ground, t0 = 0')
+  call check_status(st%set_load(p, g, 0.05_c_double, 0.1_c_double), FRICREG_OK, 'load record')
+  call check_status(st%set_initial(v0=[0.0_c_double, 0.31_c_double, -0.17_c_double]), &
+                    FRICREG_OK, 'set_initial, u0 absent')
+  call check_status(st%set_hht(-0.07_c_double), FRICREG_OK, 'set_hht')
+  call check_status(st%set_newton(tol=1e-11_c_double), FRICREG_OK, 'set_newton, tol only')
+  call check_status(st%run(dt, t_end), FRICREG_OK, 'run HHT')
+  call compare_with_c(.false.)
+  call check_status(st%set_newmark(), FRICREG_OK, 'set_newmark, defaults')
+  call check_status(st%set_initial(), FRICREG_OK, 'set_initial, at rest')
+  call check_status(st%run_ode(FRICREG_INT_RK4, 0.002_c_double, 1.5_c_double), FRICREG_OK, &
+                    'run_ode rk4')
+  call compare_with_c(.true.)
+
+  ! ---- Failures ----------------------------------------------------------------------------
+  u = [1.5_c_double, 2.5_c_double, 3.5_c_double]
+  call check_status(st%set_mass(M2), FRICREG_ESIZE, 'set_mass 2 x 2 for 3 DOFs')
+  call check(st%errmsg() == 'set_mass: size(M, 1) = 2, expected 3', 'message: ' // st%errmsg())
+  call check(st%errcode() == FRICREG_ESIZE, 'errcode ESIZE')
+  call check_status(st%set_contacts(transpose(J)), FRICREG_ESIZE, 'J given as 3 x 2')
+  call check(st%errmsg() == 'set_contacts: size(J, 1) = 3, expected 2', 'message: ' // st%errmsg())
+  call check_status(st%get_state(u=u, v=v2), FRICREG_ESIZE, 'get_state, v of 2')
+  call check(all(u == [1.5_c_double, 2.5_c_double, 3.5_c_double]), 'u untouched on failure')
+  call check_status(st%get_state(), FRICREG_ENULL, 'get_state, nothing asked')
+  call check_status(st%set_hht(-0.5_c_double), FRICREG_EINVAL, 'alpha < -1/3')
+  call check(st%errcode() == FRICREG_EINVAL, 'errcode EINVAL')
+  call check(index(st%errmsg(), 'alpha') > 0, 'C message names alpha: ' // st%errmsg())
+  call check_status(st%set_load(p, g), FRICREG_EINVAL, 'load record without dt_rec')
+  call check(st%errmsg() == 'set_load: g given without dt_rec', 'message: ' // st%errmsg())
+  call check_status(st%set_ground_accel(ag(1:1), 0.01_c_double), FRICREG_EINVAL, 'one sample')
+  call check_status(st%set_ground_accel(ag(1:0), 0.01_c_double), FRICREG_OK, 'no ground motion')
+  call check_status(st%get_value(99_c_int, u(1)), FRICREG_EINVAL, 'unknown value')
+  call check(u(1) == 1.5_c_double, 'value untouched on failure')
+  call st%destroy()
+  call st%destroy()
+  call check(.not. st%is_created() .and. st%ndof() == 0, 'destroyed twice, empty')
+  call check_status(st%run(dt, t_end), FRICREG_ENULL, 'run after destroy')
+  call check(st%errmsg() == 'run: the structure is not created (call create)', &
+             'message: ' // st%errmsg())
+  call check_status(st%create(0, 2), FRICREG_EINVAL, 'create 0 DOFs')
+  call check(st%errmsg() == 'create: ndof = 0, m = 2: both must be >= 1', 'message: ' // st%errmsg())
+
+  call finish('structure_type')
+
+contains
+
+  !> The frame's run repeated through the C API with the same calls: every number the same.
+  subroutine compare_with_c(gsl)
+    logical, intent(in) :: gsl
+    type(c_ptr) :: s
+    real(c_double) :: uf(3), vf(3), af(3), uc(3), vc(3), ac(3), ff(2), fc(2), Df(2), Dc(2)
+    real(c_double) :: wf, wc
+    integer(c_int64_t) :: nf, nc
+    integer(c_int) :: which
+    character(len=8) :: tag
+    tag = merge('rk4     ', 'hht     ', gsl)
+    call check_status(fricreg_structure_create(3_c_size_t, 2_c_size_t, s), FRICREG_OK, 'C create')
+    call check_status(fricreg_structure_set_mass(s, 3_c_size_t, M), FRICREG_OK, 'C mass')
+    call check_status(fricreg_structure_set_stiffness(s, 3_c_size_t, K), FRICREG_OK, 'C K')
+    call check_status(fricreg_structure_set_rayleigh(s, a0, a1), FRICREG_OK, 'C rayleigh')
+    call check_status(fricreg_structure_set_contacts(s, 2_c_size_t, 3_c_size_t, transpose(J)), &
+                      FRICREG_OK, 'C contacts')
+    call check_status(fricreg_structure_set_bounds(s, 2_c_size_t, mun), FRICREG_OK, 'C bounds')
+    call check_status(fricreg_structure_set_law(s, FRICREG_LAW_QUINN, 0.0213_c_double), &
+                      FRICREG_OK, 'C law')
+    call check_status(fricreg_structure_set_influence(s, 3_c_size_t, [1.0_c_double, &
+                      1.0_c_double, 0.5_c_double]), FRICREG_OK, 'C influence')
+    call check_status(fricreg_structure_set_ground_accel(s, 0.0_c_double, 0.0123_c_double, &
+                      200_c_size_t, ag), FRICREG_OK, 'C ground')
+    call check_status(fricreg_structure_set_load(s, 3_c_size_t, p, 0.1_c_double, 0.05_c_double, &
+                      50_c_size_t, g), FRICREG_OK, 'C load')
+    if (gsl) then
+      call check_status(fricreg_structure_set_initial(s, 3_c_size_t, [0.0_c_double, &
+                        0.0_c_double, 0.0_c_double], [0.0_c_double, 0.0_c_double, &
+                        0.0_c_double]), FRICREG_OK, 'C initial')
+      call check_status(fricreg_structure_run_ode(s, FRICREG_INT_RK4, 0.002_c_double, &
+                        0.0_c_double, 0.0_c_double, 1.5_c_double), FRICREG_OK, 'C run_ode')
+    else
+      call check_status(fricreg_structure_set_initial(s, 3_c_size_t, [0.0_c_double, &
+                        0.0_c_double, 0.0_c_double], [0.0_c_double, 0.31_c_double, &
+                        -0.17_c_double]), FRICREG_OK, 'C initial')
+      call check_status(fricreg_structure_set_hht(s, -0.07_c_double), FRICREG_OK, 'C hht')
+      call check_status(fricreg_structure_set_newton(s, 1e-11_c_double, 50_c_int), FRICREG_OK, &
+                        'C newton')
+      call check_status(fricreg_structure_run(s, dt, t_end), FRICREG_OK, 'C run')
+    end if
+    call check_status(st%get_state(uf, vf, af), FRICREG_OK, 'get_state ' // tag)
+    call check_status(fricreg_structure_get_state(s, 3_c_size_t, uc, vc, ac), FRICREG_OK, &
+                      'C get_state')
+    call check_status(st%get_forces(ff), FRICREG_OK, 'get_forces ' // tag)
+    call check_status(fricreg_structure_get_forces(s, 2_c_size_t, fc), FRICREG_OK, 'C forces')
+    call check_status(st%get_dissipation(Df), FRICREG_OK, 'get_dissipation ' // tag)
+    call check_status(fricreg_structure_get_dissipation(s, 2_c_size_t, Dc), FRICREG_OK, 'C D')
+    call check(all(Df > 0.0_c_double), trim(tag) // ': both contacts slid')
+    do i = 1, 3
+      call check_bits(uf(i), uc(i), trim(tag) // ': u')
+      call check_bits(vf(i), vc(i), trim(tag) // ': v')
+      call check_bits(af(i), ac(i), trim(tag) // ': a')
+    end do
+    do i = 1, 2
+      call check_bits(ff(i), fc(i), trim(tag) // ': f')
+      call check_bits(Df(i), Dc(i), trim(tag) // ': D')
+    end do
+    do which = FRICREG_SVALUE_TIME, FRICREG_SVALUE_INITIAL
+      call check_status(st%get_value(which, wf), FRICREG_OK, 'get_value')
+      call check_status(fricreg_structure_get_value(s, which, wc), FRICREG_OK, 'C get_value')
+      call check_bits(wf, wc, trim(tag) // ': an energy-balance value')
+    end do
+    do which = FRICREG_SSTAT_STEPS, FRICREG_SSTAT_LINE_SEARCH_CUTS
+      call check_status(st%get_stat(which, nf), FRICREG_OK, 'get_stat')
+      call check_status(fricreg_structure_get_stat(s, which, nc), FRICREG_OK, 'C get_stat')
+      call check(nf == nc, trim(tag) // ': a counter')
+    end do
+    call fricreg_structure_free(s)
+  end subroutine compare_with_c
+
+end program test_structure_type
