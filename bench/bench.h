@@ -71,6 +71,8 @@ struct bench_sim_point {
     int law, integrator;
     double dt, rtol, eps;
     int partition; /* enum fricreg_partition; 0: the library's default (consistent) */
+    int levels;    /* >= 2: fricreg_sim_run_extrapolated with that many levels (eps, eps/2, …),
+                    * D its extrapolation and rhs_evals those of every level; else a plain run */
 };
 
 /** The forcing period of a problem, as the library reports it (FRICREG_VALUE_PERIOD): the one
