@@ -143,8 +143,9 @@ static double extrap_value(const fricreg_sim *sim, int which)
     return v;
 }
 
-/* D of cycle `cycle` of the exact solution, from rest at the origin. */
-static double exact_D(double a, double omega, int cycle)
+/* D of cycle `cycle` of the exact solution, from rest at the origin; *total gets the sum
+ * over cycles 1 … cycle (the total D at the end of the last one). */
+static double exact_D_total(double a, double omega, int cycle, double *total)
 {
     fricreg_exact *ex = NULL;
     double D[8];
@@ -153,13 +154,23 @@ static double exact_D(double a, double omega, int cycle)
     ck_assert_int_eq(fricreg_exact_run_cycles(ex, cycle), FRICREG_OK);
     ck_assert_int_eq(fricreg_exact_dissipation(ex, (size_t)cycle, D), FRICREG_OK);
     fricreg_exact_free(ex);
+    *total = 0.0;
+    for (int k = 0; k < cycle; k++)
+        *total += D[k];
     return D[cycle - 1];
+}
+
+static double exact_D(double a, double omega, int cycle)
+{
+    double total;
+    return exact_D_total(a, omega, cycle, &total);
 }
 
 /* The last cycle of a run of `levels` at eps, eps/2, …: the raw D at eps, the raw D at the
  * finest eps (a plain run of its own), the extrapolated D and its estimate. */
 struct outcome {
     double raw, finest, value, estimate, order, observed;
+    double total, total_estimate; /* the total D(t_end) extrapolated, and its estimate */
 };
 
 static struct outcome run_oscillator(double a, double omega, double eps, int levels, int order)
@@ -178,6 +189,8 @@ static struct outcome run_oscillator(double a, double omega, double eps, int lev
     o.estimate = err[CYCLES - 1];
     o.order = extrap_value(sim, FRICREG_EXTRAP_ORDER);
     o.observed = extrap_value(sim, FRICREG_EXTRAP_OBSERVED_ORDER);
+    o.total = extrap_value(sim, FRICREG_EXTRAP_DISSIPATION);
+    o.total_estimate = extrap_value(sim, FRICREG_EXTRAP_DISSIPATION_ERR);
     ck_assert_double_eq(extrap_value(sim, FRICREG_EXTRAP_LEVELS), levels);
     ck_assert_double_eq(extrap_value(sim, FRICREG_EXTRAP_EPS_FINEST), ldexp(eps, 1 - levels));
     fricreg_sim_free(sim);
@@ -195,7 +208,8 @@ static struct outcome run_oscillator(double a, double omega, double eps, int lev
  * (measured 2.6e-10 against 8.7e-7), and the estimate is above the true error. */
 START_TEST(test_sticking_oscillator_second_order)
 {
-    const double ref = exact_D(2.0, 0.5, 6);
+    double total = NAN;
+    const double ref = exact_D_total(2.0, 0.5, 6, &total);
     struct outcome o = run_oscillator(2.0, 0.5, 0.0385, 3, 0);
     double e_raw = o.raw - ref, e_fine = o.finest - ref, e = o.value - ref;
     ck_assert_double_eq(o.order, 2.0);
@@ -204,6 +218,9 @@ START_TEST(test_sticking_oscillator_second_order)
     ck_assert(fabs(e) < 1e-3 * fabs(e_fine));
     ck_assert(o.estimate >= fabs(e));
     ck_assert(o.estimate < fabs(e_fine)); /* and tighter than the finest raw error */
+    /* the total D over the six cycles, extrapolated on its own, within its estimate */
+    ck_assert(fabs(o.total - total) <= o.total_estimate);
+    ck_assert(o.total_estimate < 1e-8 * total);
 }
 END_TEST
 
