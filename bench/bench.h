@@ -44,6 +44,8 @@ struct bench_run {
     double steps;     /* accepted steps */
     double rhs_evals; /* right-hand-side evaluations (Jacobian columns included) */
     double events;    /* mode switches (event-driven only), else 0 */
+    double D_error;   /* extrapolated runs: the estimate of D's error (absolute), else 0 */
+    int flagged;      /* extrapolated runs: D's levels showed no clean order */
     char msg[256];    /* why it failed, if it did */
 };
 

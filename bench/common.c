@@ -95,8 +95,10 @@ static int run_plain(fricreg_sim *sim, const struct bench_sim_point *pt, double 
                                 : status;
 }
 
-/* D per cycle extrapolated in eps; the estimates go to scratch (not reported per point). */
-static int run_extrapolated(fricreg_sim *sim, const struct bench_sim_point *pt, double D[])
+/* D per cycle extrapolated in eps; the last cycle's estimate into out->D_error, whether
+ * any cycle was flagged into out->flagged. */
+static int run_extrapolated(fricreg_sim *sim, const struct bench_sim_point *pt, double D[],
+                            struct bench_run *out)
 {
     size_t cycles = (size_t)pt->problem->cycle;
     double T = NAN, *err = malloc(cycles * sizeof *err);
@@ -105,6 +107,12 @@ static int run_extrapolated(fricreg_sim *sim, const struct bench_sim_point *pt, 
         status = fricreg_sim_run_extrapolated(sim, (double)cycles * T, pt->levels, 0);
     if (status == FRICREG_OK)
         status = fricreg_sim_get_extrapolated_dissipation(sim, cycles, D, err);
+    if (status == FRICREG_OK) {
+        double flagged = 0.0;
+        fricreg_sim_get_extrapolation(sim, FRICREG_EXTRAP_FLAGGED_CYCLES, &flagged);
+        out->D_error = err[cycles - 1];
+        out->flagged = flagged > 0.0;
+    }
     free(err);
     return status;
 }
@@ -120,7 +128,7 @@ int bench_sim_run(const void *point, struct bench_run *out)
     if (out->status == FRICREG_OK)
         out->status = sim_setup(sim, pt);
     if (out->status == FRICREG_OK)
-        out->status = pt->levels >= 2 ? run_extrapolated(sim, pt, D) : run_plain(sim, pt, D);
+        out->status = pt->levels >= 2 ? run_extrapolated(sim, pt, D, out) : run_plain(sim, pt, D);
     if (out->status == FRICREG_OK) {
         out->D = D[cycle - 1];
         fricreg_sim_get_value(sim, FRICREG_VALUE_STEPS, &out->steps);
