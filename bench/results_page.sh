@@ -117,7 +117,7 @@ pivot() { # CSV HEADER_CELL PROBLEM_HEADER_SUFFIXES AWK_CELL_EXPRESSION
     echo
     pivot "$dir/orders.csv" method "" 'sprintf("%.2f \\| %.2f", $3, $5)'
     echo
-    echo "## Scaling: the chain, RK4, Δt = 1/(2n), from rest"
+    echo "## Scaling: the chain, RK4, Δt = 0.35/n, from rest"
     echo
     echo "| n | steps | ns per step per block, (4) | (1) | (4)/(1) |"
     echo "|---|---|---|---|---|"

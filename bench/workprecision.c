@@ -503,7 +503,7 @@ static void print_orders(FILE *csv, const double eps_orders[])
     fprintf(csv, "problem,method,order_asymptotic,points,order_whole,points_whole,"
                  "err_dt_1e-3,err_dt_1e-4\n");
     for (int im = 0; im < NMETHODS; im++) {
-        if (methods[im].kind != FIXED)
+        if (methods[im].kind != FIXED || methods[im].levels >= 2) /* order of dt alone */
             continue;
         printf("%-26s", methods[im].name);
         for (int ip = 0; ip < BENCH_NPROBLEMS; ip++) {
@@ -526,7 +526,7 @@ static void print_orders(FILE *csv, const double eps_orders[])
     printf("\n(the last row: law (4) at fixed dt = 1e-4, eps = 3.2e-3 … 4e-4)\n"
            "Relative errors at dt = 1e-3 and 1e-4:\n");
     for (int im = 0; im < NMETHODS; im++) {
-        if (methods[im].kind != FIXED)
+        if (methods[im].kind != FIXED || methods[im].levels >= 2)
             continue;
         printf("%-26s", methods[im].name);
         for (int ip = 0; ip < BENCH_NPROBLEMS; ip++)
