@@ -44,6 +44,8 @@ struct bench_run {
     double steps;     /* accepted steps */
     double rhs_evals; /* right-hand-side evaluations (Jacobian columns included) */
     double events;    /* mode switches (event-driven only), else 0 */
+    double D_error;   /* extrapolated runs: the estimate of D's error (absolute), else 0 */
+    int flagged;      /* extrapolated runs: D's levels showed no clean order */
     char msg[256];    /* why it failed, if it did */
 };
 
@@ -71,6 +73,8 @@ struct bench_sim_point {
     int law, integrator;
     double dt, rtol, eps;
     int partition; /* enum fricreg_partition; 0: the library's default (consistent) */
+    int levels;    /* >= 2: fricreg_sim_run_extrapolated with that many levels (eps, eps/2, …),
+                    * D its extrapolation and rhs_evals those of every level; else a plain run */
 };
 
 /** The forcing period of a problem, as the library reports it (FRICREG_VALUE_PERIOD): the one

@@ -79,13 +79,42 @@ static int sim_setup(fricreg_sim *sim, const struct bench_sim_point *pt)
 
 double bench_period(const struct bench_problem *p)
 {
-    struct bench_sim_point pt = {p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0.01, 0.0, 0.0, 0};
+    struct bench_sim_point pt = {p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0.01, 0.0, 0.0, 0, 0};
     double period = NAN;
     fricreg_sim *sim = NULL;
     if (fricreg_sim_create(p->system, &sim) == FRICREG_OK && sim_setup(sim, &pt) == FRICREG_OK)
         fricreg_sim_get_value(sim, FRICREG_VALUE_PERIOD, &period);
     fricreg_sim_free(sim);
     return period;
+}
+
+static int run_plain(fricreg_sim *sim, const struct bench_sim_point *pt, double D[])
+{
+    int status = fricreg_sim_run_cycles(sim, pt->problem->cycle);
+    return status == FRICREG_OK ? fricreg_sim_get_dissipation(sim, (size_t)pt->problem->cycle, D)
+                                : status;
+}
+
+/* D per cycle extrapolated in eps; the last cycle's estimate into out->D_error, whether
+ * any cycle was flagged into out->flagged. */
+static int run_extrapolated(fricreg_sim *sim, const struct bench_sim_point *pt, double D[],
+                            struct bench_run *out)
+{
+    size_t cycles = (size_t)pt->problem->cycle;
+    double T = NAN, *err = malloc(cycles * sizeof *err);
+    int status = err ? fricreg_sim_get_value(sim, FRICREG_VALUE_PERIOD, &T) : FRICREG_ENOMEM;
+    if (status == FRICREG_OK)
+        status = fricreg_sim_run_extrapolated(sim, (double)cycles * T, pt->levels, 0);
+    if (status == FRICREG_OK)
+        status = fricreg_sim_get_extrapolated_dissipation(sim, cycles, D, err);
+    if (status == FRICREG_OK) {
+        double flagged = 0.0;
+        fricreg_sim_get_extrapolation(sim, FRICREG_EXTRAP_FLAGGED_CYCLES, &flagged);
+        out->D_error = err[cycles - 1];
+        out->flagged = flagged > 0.0;
+    }
+    free(err);
+    return status;
 }
 
 int bench_sim_run(const void *point, struct bench_run *out)
@@ -99,13 +128,14 @@ int bench_sim_run(const void *point, struct bench_run *out)
     if (out->status == FRICREG_OK)
         out->status = sim_setup(sim, pt);
     if (out->status == FRICREG_OK)
-        out->status = fricreg_sim_run_cycles(sim, cycle);
-    if (out->status == FRICREG_OK)
-        out->status = fricreg_sim_get_dissipation(sim, (size_t)cycle, D);
+        out->status = pt->levels >= 2 ? run_extrapolated(sim, pt, D, out) : run_plain(sim, pt, D);
     if (out->status == FRICREG_OK) {
         out->D = D[cycle - 1];
         fricreg_sim_get_value(sim, FRICREG_VALUE_STEPS, &out->steps);
-        fricreg_sim_get_value(sim, FRICREG_VALUE_RHS_EVALS, &out->rhs_evals);
+        if (pt->levels >= 2)
+            fricreg_sim_get_extrapolation(sim, FRICREG_EXTRAP_RHS_EVALS, &out->rhs_evals);
+        else
+            fricreg_sim_get_value(sim, FRICREG_VALUE_RHS_EVALS, &out->rhs_evals);
     } else {
         snprintf(out->msg, sizeof out->msg, "%s",
                  sim ? fricreg_sim_errmsg(sim) : fricreg_strerror(out->status));

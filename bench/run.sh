@@ -36,6 +36,11 @@ echo
 echo
 ./build-bench/bench/fricreg-bench-dense "$out" | tee "$out/dense.txt"
 echo
+# The chain at n = 1000 against CVODE: a minute or more of CPU, so only when asked.
+if [ "${FRICREG_BENCH_BIG:-0}" = 1 ]; then
+    ./build-bench/bench/fricreg-bench-bigchain "$out" | tee "$out/bigchain.txt"
+    echo
+fi
 
 if command -v gnuplot >/dev/null 2>&1; then
     (cd "$out" && gnuplot workprecision.gp && gnuplot scaling.gp)

@@ -2,7 +2,8 @@
 /* scaling.c — fricreg-bench-scaling OUTDIR: how the cost grows with the number of contacts.
  *
  * 1. The chain of Sec. 3.2 for n = 32 … 10^6 blocks, laws (4) and (1), fixed-step RK4 with
- *    dt = 0.35/n (the highest spring mode has frequency 2n; the drivers refuse dt 2n > 1/sqrt 2)
+ *    dt = 0.35/n (the highest spring mode has frequency 2n; the step guard asks for
+ *    dt * 2n <= 1/sqrt(2), beyond which a friction reversal within one step can put energy in)
  *    and eps by the paper's rule, over 10 to 20000 steps from rest: CPU time per step per
  *    block. Linear cost means a flat line. From rest most blocks are near stick, so (4)
  *    computes f_eq for most contacts: its worst case.

@@ -11,6 +11,8 @@
  *   workprecision.csv    one row per point
  *   orders.csv           observed convergence order of each law (fixed-step RK4)
  *   summary.csv          CPU time each method needs to reach 1% and 0.01% error
+ *   best.csv             per problem and target 1e-2 … 1e-8: fricreg's cheapest method and the
+ *                        CPU ratio of event-driven CVODE (Adams, BDF) to it
  *   wp_<problem>.dat     the points, one block per method, for gnuplot
  *   workprecision.gp     the gnuplot script: wp_<problem>.png and conv_<problem>.png
  * and prints the references, the tables and the summary. */
@@ -28,33 +30,50 @@
 
 enum kind { FIXED, ADAPTIVE, EVENT };
 
+/* The event-driven methods' ids without CVODE built (no EVENT method is then listed). */
+#ifdef FRICREG_BENCH_CVODE
+#define ED_ADAMS_ID ED_ADAMS
+#define ED_BDF_ID ED_BDF
+#else
+#define ED_ADAMS_ID 2
+#define ED_BDF_ID 1
+#endif
+
 struct method {
     const char *name; /* CSV and plot name */
     enum kind kind;
     int law, integrator, ed_method;
     int partition; /* FRICREG_PARTITION_PAPER: coupled problems only; 0: the default */
+    int levels;    /* >= 2: extrapolated in eps over that many levels (fricreg_sim.h) */
 };
 
 static const struct method methods[] = {
-    {"rk4/quinn(4)", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0, 0},
-    {"rk4/coulomb(1)", FIXED, FRICREG_LAW_COULOMB, FRICREG_INT_RK4, 0, 0},
-    {"rk4/force-balance(2)", FIXED, FRICREG_LAW_FORCE_BALANCE, FRICREG_INT_RK4, 0, 0},
-    {"rk4/karnopp", FIXED, FRICREG_LAW_KARNOPP, FRICREG_INT_RK4, 0, 0},
-    {"rk4/velocity-limited(3)", FIXED, FRICREG_LAW_VELOCITY_LIMITED, FRICREG_INT_RK4, 0, 0},
-    {"rk4/tanh", FIXED, FRICREG_LAW_TANH, FRICREG_INT_RK4, 0, 0},
-    {"rkf45/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RKF45, 0, 0},
-    {"rk8pd/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0},
-    {"msbdf/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_MSBDF, 0, 0},
+    {"rk4/quinn(4)", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0, 0, 0},
+    {"rk4/coulomb(1)", FIXED, FRICREG_LAW_COULOMB, FRICREG_INT_RK4, 0, 0, 0},
+    {"rk4/force-balance(2)", FIXED, FRICREG_LAW_FORCE_BALANCE, FRICREG_INT_RK4, 0, 0, 0},
+    {"rk4/karnopp", FIXED, FRICREG_LAW_KARNOPP, FRICREG_INT_RK4, 0, 0, 0},
+    {"rk4/velocity-limited(3)", FIXED, FRICREG_LAW_VELOCITY_LIMITED, FRICREG_INT_RK4, 0, 0, 0},
+    {"rk4/tanh", FIXED, FRICREG_LAW_TANH, FRICREG_INT_RK4, 0, 0, 0},
+    {"rkf45/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RKF45, 0, 0, 0},
+    {"rk8pd/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 0},
+    {"msbdf/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_MSBDF, 0, 0, 0},
     /* The paper's partition of coupled contacts beside the default consistent law (the rows
      * above), where they differ: the two blocks. */
-    {"rk4/quinn(4)/paper", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0, FRICREG_PARTITION_PAPER},
+    {"rk4/quinn(4)/paper", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0, FRICREG_PARTITION_PAPER,
+     0},
     {"rkf45/quinn(4)/paper", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RKF45, 0,
-     FRICREG_PARTITION_PAPER},
+     FRICREG_PARTITION_PAPER, 0},
     {"msbdf/quinn(4)/paper", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_MSBDF, 0,
-     FRICREG_PARTITION_PAPER},
+     FRICREG_PARTITION_PAPER, 0},
+    /* Extrapolation in eps (fricreg_sim_run_extrapolated): fixed RK4 under the paper's rule
+     * (dt halves with eps), and adaptive steppers from extrap_eps (below) down. */
+    {"rk4/quinn(4)/extrap3", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0, 0, 3},
+    {"rk8pd/quinn(4)/extrap3", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 3},
+    {"rk8pd/quinn(4)/extrap4", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 4},
+    {"msbdf/quinn(4)/extrap3", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_MSBDF, 0, 0, 3},
 #ifdef FRICREG_BENCH_CVODE
-    {"cvode-bdf/event-driven", EVENT, 0, 0, ED_BDF, 0},
-    {"cvode-adams/event-driven", EVENT, 0, 0, ED_ADAMS, 0},
+    {"cvode-bdf/event-driven", EVENT, 0, 0, ED_BDF, 0, 0},
+    {"cvode-adams/event-driven", EVENT, 0, 0, ED_ADAMS, 0, 0},
 #endif
 };
 enum { NMETHODS = sizeof methods / sizeof methods[0], NSWEEP = 10 };
@@ -69,7 +88,15 @@ static const double tols[NSWEEP] = {1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e
 #define ORDER_FIRST 6
 #define ORDER_WHOLE 2
 
-static const double targets[2] = {1e-2, 1e-4}; /* 1% and 0.01% */
+/* Target relative errors: 1e-2 … 1e-8 for the table against CVODE (print_best); summary.csv
+ * keeps 1% and 0.01% (TARGET_1PCT, TARGET_001PCT). */
+enum { NTARGETS = 7, TARGET_1PCT = 0, TARGET_001PCT = 2 };
+static const double targets[NTARGETS] = {1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8};
+
+/* The first eps of the adaptive extrapolated runs, per problem (bench_problems order): in the
+ * asymptotic range of each, where the ratios of differences give a clean order (the chain is
+ * not there at eps = 0.02: its levels then are flagged). */
+static const double extrap_eps[BENCH_NPROBLEMS] = {0.04, 0.04, 0.005, 0.004};
 
 enum { PASSES = 5, MIN_PASSES = 3 };
 #define SLOW_POINT 0.25 /* CPU seconds of a first run above which a point gets MIN_PASSES */
@@ -96,6 +123,15 @@ static int applies(const struct method *m, const struct bench_problem *p)
     return m->kind != EVENT || p->event_driven;
 }
 
+/* The eps a law run of method m sets at sweep point k (0: the paper's rule, fixed steps). */
+static double method_eps(const struct method *m, const struct bench_problem *p, int k)
+{
+    (void)k;
+    if (m->kind == FIXED)
+        return 0.0;
+    return m->levels >= 2 ? extrap_eps[p - bench_problems] : p->adaptive_eps;
+}
+
 /* Runs one point of one method on one problem once, in pass `pass`. */
 static void run_point(const struct bench_problem *p, const struct method *m, int k,
                       struct point *pt, int pass)
@@ -115,8 +151,9 @@ static void run_point(const struct bench_problem *p, const struct method *m, int
                                      m->integrator,
                                      m->kind == FIXED ? dts[k] : ADAPTIVE_DT0,
                                      m->kind == FIXED ? 0.0 : tols[k],
-                                     m->kind == FIXED ? 0.0 : p->adaptive_eps,
-                                     m->partition};
+                                     method_eps(m, p, k),
+                                     m->partition,
+                                     m->levels};
         t = bench_time_once(bench_sim_run, &sp, &run);
     }
     pt->t[pt->nt++] = t;
@@ -129,7 +166,7 @@ static void run_point(const struct bench_problem *p, const struct method *m, int
     pt->eps = m->kind == EVENT ? 0.0
               : m->kind == FIXED
                   ? (p->system == FRICREG_SYSTEM_CHAIN ? 10.0 * p->omega * dts[k] : 2.0 * dts[k])
-                  : p->adaptive_eps;
+                  : method_eps(m, p, k);
     pt->ok = run.status == FRICREG_OK;
     pt->err = pt->ok ? bench_rel_error(run.D, refs[p - bench_problems].D) : NAN;
 }
@@ -291,11 +328,16 @@ static void write_gnuplot(const char *dir)
                 p->key, p->title);
         fprintf(f, "set xlabel 'dt'; set ylabel 'relative error in D'\nplot ");
         first = 1;
+        block = 0; /* the data file holds a block per applicable method only */
         for (int im = 0; im < NMETHODS; im++) {
-            if (methods[im].kind != FIXED)
+            if (!applies(&methods[im], p))
                 continue;
+            if (methods[im].kind != FIXED) {
+                block++;
+                continue;
+            }
             fprintf(f, "%s'wp_%s.dat' index %d using 1:3 with linespoints title '%s'",
-                    first ? "" : ", \\\n     ", p->key, im, methods[im].name);
+                    first ? "" : ", \\\n     ", p->key, block++, methods[im].name);
             first = 0;
         }
         fprintf(f, ", 0.5*x with lines dt 3 lc 'black' title 'slope 1', "
@@ -330,10 +372,11 @@ static void print_summary(FILE *csv)
     fprintf(csv, "problem,method,cpu_1pct,ratio_1pct,cpu_001pct,ratio_001pct,best_error\n");
     for (int ip = 0; ip < BENCH_NPROBLEMS; ip++) {
         const struct bench_problem *p = &bench_problems[ip];
+        static const int shown[2] = {TARGET_1PCT, TARGET_001PCT};
         double q[2];
         int q_bound[2];
         for (int j = 0; j < 2; j++)
-            q[j] = time_to_reach(results[ip][0], targets[j], &q_bound[j]);
+            q[j] = time_to_reach(results[ip][0], targets[shown[j]], &q_bound[j]);
         printf("\n%s\n%-26s %10s %8s %10s %8s %10s\n", p->title, "method", "t(1%)", "ratio",
                "t(0.01%)", "ratio", "best err");
         for (int im = 0; im < NMETHODS; im++) {
@@ -343,7 +386,7 @@ static void print_summary(FILE *csv)
             int bound[2];
             char s[4][32];
             for (int j = 0; j < 2; j++) {
-                t[j] = time_to_reach(results[ip][im], targets[j], &bound[j]);
+                t[j] = time_to_reach(results[ip][im], targets[shown[j]], &bound[j]);
                 fmt_time(s[2 * j], sizeof s[0], t[j], bound[j]);
                 fmt_ratio(s[2 * j + 1], sizeof s[0], t[j], bound[j], q[j], q_bound[j]);
             }
@@ -358,6 +401,90 @@ static void print_summary(FILE *csv)
         if (!p->event_driven)
             printf("(event-driven baseline: not run here; the contacts are coupled, so a mode "
                    "switch needs a complementarity solve)\n");
+    }
+}
+
+/* The cheapest fricreg method (any law-(4) method: fixed, adaptive, extrapolated) to reach
+ * `target` on problem ip; *best gets its index (-1 if none reaches it), *bound whether the
+ * time is a bound (time_to_reach). */
+static double best_fricreg(int ip, double target, int *best, int *bound)
+{
+    double t_best = NAN;
+    *best = -1;
+    *bound = 0;
+    for (int im = 0; im < NMETHODS; im++) {
+        const struct method *m = &methods[im];
+        int b = 0;
+        if (m->kind == EVENT || m->law != FRICREG_LAW_QUINN || m->partition ||
+            !applies(m, &bench_problems[ip]))
+            continue; /* the paper's partition is another model than the reference's */
+        double t = time_to_reach(results[ip][im], target, &b);
+        if (!isnan(t) && (isnan(t_best) || t < t_best))
+            t_best = t, *best = im, *bound = b;
+    }
+    return t_best;
+}
+
+/* One CVODE cell: "time" and "ratio" (CVODE time / fricreg time: above 1, fricreg ahead). */
+static void cvode_cell(int ip, int ed_method, double target, double t_best, int best_bound,
+                       char *time, char *ratio, size_t len)
+{
+    snprintf(time, len, "n/a");
+    snprintf(ratio, len, "n/a");
+    for (int im = 0; im < NMETHODS; im++) {
+        if (methods[im].kind != EVENT || methods[im].ed_method != ed_method ||
+            !applies(&methods[im], &bench_problems[ip]))
+            continue;
+        int b = 0;
+        double t = time_to_reach(results[ip][im], target, &b);
+        fmt_time(time, len, t, b);
+        if (isnan(t_best))
+            snprintf(ratio, len, "-");
+        else if (isnan(t))
+            snprintf(ratio, len, "never");
+        else
+            snprintf(ratio, len, "%s%.3g", b || best_bound ? "~" : "", t / t_best);
+    }
+}
+
+/* The work-precision table against the event-driven baseline: per problem and target error
+ * 1e-2 … 1e-8, fricreg's cheapest method and the CPU ratio of CVODE Adams and BDF to it
+ * (above 1: fricreg ahead). A target finer than 3x the reference's relative uncertainty is
+ * not judged. Writes best.csv. (The time of each method is time_to_reach's, so a method whose
+ * error is not yet monotone in its sweep parameter is taken from where it stays below.) */
+static void print_best(FILE *csv)
+{
+    printf("\n== Against event-driven CVODE: fricreg's cheapest method per target ==\n"
+           "(CPU seconds to reach the target and stay below it over the sweep; ratio = CVODE's\n"
+           "time / fricreg's: above 1, fricreg is ahead; 'never': CVODE does not reach it in\n"
+           "its sweep; '~': a time is a '<=' bound)\n");
+    printf("%-10s %7s %-26s %10s %10s %8s %10s %8s\n", "problem", "target", "fricreg best", "cpu",
+           "adams", "ratio", "bdf", "ratio");
+    fprintf(csv, "problem,target,best_method,best_cpu,adams_cpu,adams_ratio,bdf_cpu,bdf_ratio\n");
+    for (int ip = 0; ip < BENCH_NPROBLEMS; ip++) {
+        double rel_unc = refs[ip].uncertainty / fabs(refs[ip].D);
+        for (int j = 0; j < NTARGETS; j++) {
+            char tb[32], ta[32], ra[32], td[32], rd[32];
+            const char *name = "-";
+            if (targets[j] < 3.0 * rel_unc) {
+                printf("%-10s %7.0e (not judged: the reference is uncertain to %.1e)\n",
+                       bench_problems[ip].key, targets[j], rel_unc);
+                fprintf(csv, "%s,%.0e,not judged (reference %.1e),,,,,\n", bench_problems[ip].key,
+                        targets[j], rel_unc);
+                continue;
+            }
+            int best, bound;
+            double t = best_fricreg(ip, targets[j], &best, &bound);
+            fmt_time(tb, sizeof tb, t, bound);
+            if (best >= 0)
+                name = methods[best].name;
+            cvode_cell(ip, ED_ADAMS_ID, targets[j], t, bound, ta, ra, sizeof ta);
+            cvode_cell(ip, ED_BDF_ID, targets[j], t, bound, td, rd, sizeof td);
+            printf("%-10s %7.0e %-26s %10s %10s %8s %10s %8s\n", bench_problems[ip].key, targets[j],
+                   name, tb, ta, ra, td, rd);
+            fprintf(csv, "%s,%.0e,%s,%s,%s,%s,%s,%s\n", bench_problems[ip].key, targets[j], name,
+                    tb, ta, ra, td, rd);
+        }
     }
 }
 
@@ -376,7 +503,7 @@ static void print_orders(FILE *csv, const double eps_orders[])
     fprintf(csv, "problem,method,order_asymptotic,points,order_whole,points_whole,"
                  "err_dt_1e-3,err_dt_1e-4\n");
     for (int im = 0; im < NMETHODS; im++) {
-        if (methods[im].kind != FIXED)
+        if (methods[im].kind != FIXED || methods[im].levels >= 2) /* order of dt alone */
             continue;
         printf("%-26s", methods[im].name);
         for (int ip = 0; ip < BENCH_NPROBLEMS; ip++) {
@@ -399,7 +526,7 @@ static void print_orders(FILE *csv, const double eps_orders[])
     printf("\n(the last row: law (4) at fixed dt = 1e-4, eps = 3.2e-3 … 4e-4)\n"
            "Relative errors at dt = 1e-3 and 1e-4:\n");
     for (int im = 0; im < NMETHODS; im++) {
-        if (methods[im].kind != FIXED)
+        if (methods[im].kind != FIXED || methods[im].levels >= 2)
             continue;
         printf("%-26s", methods[im].name);
         for (int ip = 0; ip < BENCH_NPROBLEMS; ip++)
@@ -438,7 +565,7 @@ static double eps_order(int ip)
     printf("  law (4) error against eps at fixed dt = %g (RK4):", dt);
     for (int k = 0; k < 4; k++) {
         struct bench_sim_point sp = {
-            &bench_problems[ip], FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt, 0.0, eps[k], 0};
+            &bench_problems[ip], FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt, 0.0, eps[k], 0, 0};
         struct bench_run run;
         if (bench_sim_run(&sp, &run) != FRICREG_OK) {
             printf(" eps %g failed: %s\n", eps[k], run.msg);
@@ -512,7 +639,8 @@ int main(int argc, char **argv)
     FILE *csv = open_out(dir, "workprecision.csv");
     FILE *orders = open_out(dir, "orders.csv");
     FILE *summary = open_out(dir, "summary.csv");
-    if (!csv || !orders || !summary)
+    FILE *best = open_out(dir, "best.csv");
+    if (!csv || !orders || !summary || !best)
         return 1;
     write_csv(csv);
     fclose(csv);
@@ -522,10 +650,12 @@ int main(int argc, char **argv)
     print_failures();
     print_orders(orders, eps_orders);
     print_summary(summary);
+    print_best(best);
     fclose(orders);
     fclose(summary);
+    fclose(best);
     printf("\nwork-precision benchmark: %.0f CPU seconds; files in %s: workprecision.csv, "
-           "orders.csv, summary.csv, wp_*.dat, workprecision.gp\n",
+           "orders.csv, summary.csv, best.csv, wp_*.dat, workprecision.gp\n",
            bench_cpu_seconds() - t_start, dir);
     return 0;
 }

@@ -152,6 +152,9 @@ module fricreg
     procedure :: get_state => sim_get_state
     procedure :: get_dissipation => sim_get_dissipation
     procedure :: get_stick_fraction => sim_get_stick_fraction
+    procedure :: run_extrapolated => sim_run_extrapolated
+    procedure :: get_extrapolation => sim_get_extrapolation
+    procedure :: get_extrapolated_dissipation => sim_get_extrapolated_dissipation
     final :: sim_final
   end type
 
@@ -828,6 +831,58 @@ contains
     if (status == FRICREG_OK) status = self%unrecorded('get_stick_fraction', &
                                            fricreg_sim_get_stick_fraction(self%ptr, m, frac))
   end function sim_get_stick_fraction
+
+  !> Run at eps, eps/2, …, eps/2^(levels-1) and extrapolate D to eps -> 0 with an error
+  !> estimate (fricreg_sim_run_extrapolated: levels 2 … 8; order 0 … 4, the declared leading
+  !> order used where none is observed, 0 meaning 1; optional, default 0).
+  function sim_run_extrapolated(self, t_end, levels, order) result(status)
+    class(fricreg_simulation), intent(inout) :: self
+    real(c_double), intent(in) :: t_end
+    integer, intent(in) :: levels
+    integer, intent(in), optional :: order
+    integer(c_int) :: status, declared
+    declared = 0
+    if (present(order)) declared = int(order, c_int)
+    status = self%ready('run_extrapolated', 'simulation')
+    if (status == FRICREG_OK) status = self%record(fricreg_sim_run_extrapolated(self%ptr, t_end, &
+                                                    int(levels, c_int), declared))
+  end function sim_run_extrapolated
+
+  !> One quantity of the last extrapolated run (FRICREG_EXTRAP_*) into value. FRICREG_EINVAL
+  !> for an unknown one or when none is held.
+  function sim_get_extrapolation(self, which, value) result(status)
+    class(fricreg_simulation), intent(inout) :: self
+    integer(c_int), intent(in) :: which
+    real(c_double), intent(inout) :: value
+    integer(c_int) :: status
+    status = self%ready('get_extrapolation', 'simulation')
+    if (status == FRICREG_OK) status = self%unrecorded('get_extrapolation', &
+                                           fricreg_sim_get_extrapolation(self%ptr, which, value))
+  end function sim_get_extrapolation
+
+  !> The extrapolated D per whole cycle and its error estimate: D and err are (re)allocated
+  !> to the number of cycles completed. FRICREG_EINVAL when no extrapolation is held.
+  function sim_get_extrapolated_dissipation(self, D, err) result(status)
+    class(fricreg_simulation), intent(inout) :: self
+    real(c_double), allocatable, intent(inout) :: D(:), err(:)
+    integer(c_int) :: status
+    real(c_double) :: cycles
+    real(c_double), allocatable :: tmp(:), tmp_err(:)
+    cycles = 0.0_c_double
+    status = self%ready('get_extrapolated_dissipation', 'simulation')
+    if (status /= FRICREG_OK) return
+    status = fricreg_sim_get_value(self%ptr, FRICREG_VALUE_CYCLES, cycles)
+    if (status == FRICREG_OK) then
+      allocate (tmp(max(1, int(cycles))), tmp_err(max(1, int(cycles))))
+      status = fricreg_sim_get_extrapolated_dissipation(self%ptr, int(cycles, c_size_t), tmp, &
+                                                        tmp_err)
+    end if
+    status = self%unrecorded('get_extrapolated_dissipation', status)
+    if (status == FRICREG_OK) then
+      D = tmp(1:int(cycles))
+      err = tmp_err(1:int(cycles))
+    end if
+  end function sim_get_extrapolated_dissipation
 
   ! ---- Exact solution of the oscillator (fricreg_exact.h) ----------------------------------
   ! Failures of solve carry the C solver's message; its getters record none (const in C).

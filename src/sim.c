@@ -44,6 +44,8 @@ static void free_run(fricreg_sim *sim)
     free(sim->D);
     free(sim->jac_work);
     fr_jacobian_free(sim->jac);
+    fr_extrap_free(sim->extrap);
+    sim->extrap = NULL;
     sim->jac_work = NULL;
     sim->jac = NULL;
     sim->ctx = NULL;

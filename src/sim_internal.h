@@ -42,7 +42,8 @@ struct fricreg_sim {
     double t;
     int64_t steps, rhs_evals, rejected_steps; /* enum fricreg_sim_stat */
     int rhs_status;                           /* fricreg status raised inside the right-hand side */
-    size_t bad_contact; /* with FRICREG_ENONFINITE: the first contact that overflowed */
+    size_t bad_contact;       /* with FRICREG_ENONFINITE: the first contact that overflowed */
+    struct fr_extrap *extrap; /* extrapolate.c: the last fricreg_sim_run_extrapolated */
 
     struct fr_error err;
 };
@@ -62,5 +63,9 @@ struct fr_jacobian;
 int fr_sim_jacobian(double t, const double y[], double *dfdy, double dfdt[], void *params);
 int fr_sim_jacobian_fd(double t, const double y[], double *dfdy, double dfdt[], void *params);
 void fr_jacobian_free(struct fr_jacobian *J);
+
+/* extrapolate.c: releases an extrapolation (NULL: nothing), as free_run discards it. */
+struct fr_extrap;
+void fr_extrap_free(struct fr_extrap *x);
 
 #endif

@@ -38,6 +38,15 @@ expect_usage_error "--dt" oscillator --dt 0
 expect_usage_error "--dt" oscillator --dt nan
 expect_usage_error "--dt" oscillator --dt inf
 expect_usage_error "--dt" oscillator --dt 1e999
+# --extrapolate LEVELS (fricreg_sim_run_extrapolated): the sticking oscillator observes
+# order 2 (tests/test_extrapolate.c measures it against the exact solution).
+expect_usage_error "--extrapolate" oscillator --extrapolate 1
+expect_usage_error "--extrapolate" oscillator --extrapolate 9
+expect_usage_error "--extrapolate" oscillator --extrapolate 2.5
+expect_usage_error "--extrapolate" chain --extrapolate 3 --output trajectory
+expect_usage_error "--extrapolate" exact --extrapolate 3
+expect_output '"extrapolation": \{"levels": 3, "order": 2, "observed_order": 2\.0[0-4][0-9]*, "flagged_cycles": 0, "eps_finest": 0\.01,' \
+    oscillator --a 2 --omega 0.5 --x0 0 --integrator rk8pd --rtol 1e-11 --atol 1e-11 --eps 0.04 --cycles 3 --extrapolate 3
 expect_usage_error "--dt" oscillator --dt 0.01x
 expect_usage_error "--eps" oscillator --eps -0.1
 expect_usage_error "--law" oscillator --law sticky

@@ -43,7 +43,7 @@ program test_sim
   use step_counter
   implicit none
   type(fricreg_simulation) :: sim
-  real(c_double), allocatable :: D(:)
+  real(c_double), allocatable :: D(:), Derr(:)
   real(c_double) :: x(1), v(1), x2(2), value, frac(32)
   integer(c_int), target :: calls
   integer(c_int64_t) :: count
@@ -122,6 +122,29 @@ program test_sim
   call check_status(sim%errcode(), FRICREG_ESTEP, 'errcode ESTEP')
   call check(index(sim%errmsg(), 'stick zone') > 0, 'message names the stick zone: ' // sim%errmsg())
 
+  ! Extrapolation in eps on the sticking oscillator (a = 2, omega = 0.5, from rest at the
+  ! origin): order 2 observed; D on cycle 3 within its estimate of the exact solution's
+  ! 10.410028667845459 (fricreg-sim exact --a 2 --omega 0.5 --x0 0 --cycles 3).
+  call check_status(sim%set_param(FRICREG_PARAM_A, 2.0_c_double), FRICREG_OK, 'a = 2')
+  call check_status(sim%set_param(FRICREG_PARAM_OMEGA, 0.5_c_double), FRICREG_OK, 'omega = 0.5')
+  call check_status(sim%set_param(FRICREG_PARAM_X0, 0.0_c_double), FRICREG_OK, 'x0 = 0')
+  call check_status(sim%set_law(FRICREG_LAW_QUINN, 0.04_c_double), FRICREG_OK, 'eps = 0.04')
+  call check_status(sim%set_integrator(FRICREG_INT_RK8PD, 1e-3_c_double, 1e-11_c_double, &
+                                       1e-11_c_double), FRICREG_OK, 'rk8pd, 1e-11')
+  call check_status(sim%get_extrapolated_dissipation(D, Derr), FRICREG_EINVAL, &
+                    'no extrapolation before a run')
+  call check_status(sim%run_extrapolated(3 * 4 * acos(-1.0_c_double), 3), FRICREG_OK, &
+                    'run_extrapolated, 3 cycles, 3 levels')
+  call check_status(sim%get_extrapolation(FRICREG_EXTRAP_ORDER, value), FRICREG_OK, 'ORDER')
+  call check_close(value, 2.0_c_double, 0.0_c_double, 'order 2 observed')
+  call check_status(sim%get_extrapolated_dissipation(D, Derr), FRICREG_OK, &
+                    'get_extrapolated_dissipation')
+  call check(size(D) == 3 .and. size(Derr) == 3, 'three cycles extrapolated')
+  call check(abs(D(3) - 10.410028667845459_c_double) <= Derr(3), 'within its estimate')
+  call check(Derr(3) < 1e-7_c_double, 'estimate below 1e-7')
+  call check_status(sim%run_extrapolated(1.0_c_double, 9), FRICREG_EINVAL, 'levels 9')
+  call check(index(sim%errmsg(), 'levels') > 0, 'message: ' // sim%errmsg())
+
   ! The chain of Sec. 3.2, the paper's defaults: D per cycle converges to 0.0105.
   call check_status(sim%create(FRICREG_SYSTEM_CHAIN), FRICREG_OK, 'create chain (replaces)')
   call check(sim%ndof() == 32, 'n = 32 blocks')
@@ -138,7 +161,7 @@ program test_sim
   call sim%destroy()
   call check_status(sim%run(1.0_c_double), FRICREG_ENULL, 'run after destroy')
   call check(sim%ndof() == 0, 'ndof 0 after destroy')
-  deallocate (D) ! the main program's arrays are never freed: LeakSanitizer would report it
+  deallocate (D, Derr) ! the main program's arrays are never freed: LeakSanitizer would report it
   call finish('test_sim')
 
 end program test_sim

@@ -21,7 +21,8 @@ struct cli_run {
     double t_end;               /* 0: use cycles */
     int cycles;
     enum cli_output output;
-    int partition; /* enum fricreg_partition; only twoblock's differs from the default */
+    int partition;   /* enum fricreg_partition; only twoblock's differs from the default */
+    int extrapolate; /* --extrapolate LEVELS (fricreg_sim_run_extrapolated); 0: off */
     struct {
         int param;
         double value;
@@ -44,15 +45,23 @@ void cli_print_param_defaults(FILE *out);
  * fricreg_integrator_name), joined by sep into buf[len] (truncated to fit); returns buf. */
 const char *cli_names(char *buf, size_t len, const char *(*name_of)(int), const char *sep);
 
+/* The extrapolation in eps of a run (fricreg_sim_run_extrapolated), for its summary. */
+struct cli_extrapolation {
+    int levels, order;
+    double observed_order, flagged_cycles, eps_finest, rhs_evals, dissipation, dissipation_error;
+    const double *D, *err; /* [cycles] per cycle: extrapolated D and its error estimate */
+};
+
 /* One run's summary, as `--output summary` prints it (one JSON object). */
 struct cli_summary {
     const char *system, *law, *integrator;
     int adaptive;
     double dt, rtol, atol, eps, steps, rhs_evals, t, period, cpu_seconds;
     size_t ndof, ncontacts, cycles;
-    const double *x, *v; /* [ndof] */
-    const double *D;     /* [cycles] dissipation per cycle */
-    const double *stick; /* [ncontacts] stick fraction of the last whole cycle */
+    const double *x, *v;                    /* [ndof] */
+    const double *D;                        /* [cycles] dissipation per cycle */
+    const double *stick;                    /* [ncontacts] stick fraction of the last whole cycle */
+    const struct cli_extrapolation *extrap; /* NULL: not extrapolated */
 };
 
 /* output.c */

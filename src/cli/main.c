@@ -32,7 +32,9 @@ static void usage(FILE *out)
           "  --rtol R --atol A  adaptive step control (both 0: fixed step)         [0 0]\n"
           "  --eps EPS        regularization; default 2dt, or 10*omega*dt for chain\n"
           "  --t-end T | --cycles N   run length in time or forcing cycles         [--cycles 4]\n"
-          "  --output summary|trajectory   JSON summary, or CSV row per step       [summary]\n",
+          "  --output summary|trajectory   JSON summary, or CSV row per step       [summary]\n"
+          "  --extrapolate LEVELS   also run at eps/2 … eps/2^(LEVELS-1) and add D extrapolated\n"
+          "                   to eps -> 0, with its error estimate, to the summary (2 … 8)\n",
           out);
     cli_print_param_defaults(out);
     fputs("            --partition paper|consistent  coupled contacts' near-stick law "

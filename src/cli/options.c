@@ -216,6 +216,14 @@ static int parse_common(const char *option, const char *text, struct cli_run *ru
         run->cycles = (int)cycles;
         return status;
     }
+    if (strcmp(option, "--extrapolate") == 0) {
+        double levels;
+        int status = parse_positive(option, text, &levels);
+        if (status == 0 && (levels != floor(levels) || levels < 2 || levels > 8))
+            return cli_usage_error(option, "must be a whole number of levels from 2 to 8");
+        run->extrapolate = (int)levels;
+        return status;
+    }
     if (strcmp(option, "--output") == 0) {
         if (strcmp(text, "summary") == 0)
             run->output = CLI_SUMMARY;
@@ -253,6 +261,9 @@ int cli_parse_run(int system, int argc, char **argv, struct cli_run *run)
     }
     if (run->t_end > 0.0 && cycles_given)
         return cli_usage_error("--t-end", "give --t-end or --cycles, not both");
+    if (run->extrapolate && run->output == CLI_TRAJECTORY)
+        return cli_usage_error("--extrapolate",
+                               "adds to the summary; not with --output trajectory");
     return 0;
 }
 
@@ -260,8 +271,8 @@ int cli_parse_run(int system, int argc, char **argv, struct cli_run *run)
  * no meaning for it and are refused by name. */
 int cli_parse_exact(int argc, char **argv, struct cli_run *run)
 {
-    static const char *const refused[] = {"--law",  "--integrator", "--dt",
-                                          "--rtol", "--atol",       "--eps"};
+    static const char *const refused[] = {"--law",  "--integrator", "--dt",         "--rtol",
+                                          "--atol", "--eps",        "--extrapolate"};
     for (int k = 0; k < argc; k++)
         for (size_t r = 0; r < sizeof refused / sizeof refused[0]; r++) {
             size_t len = strlen(refused[r]);

@@ -55,8 +55,21 @@ fricreg_sim *cli_make_sim(const struct cli_run *run)
     return sim;
 }
 
+static double value(const fricreg_sim *sim, int which)
+{
+    double v = 0.0;
+    fricreg_sim_get_value(sim, which, &v);
+    return v;
+}
+
 static int execute(fricreg_sim *sim, const struct cli_run *run)
 {
+    if (run->extrapolate) /* the leading order observed, else 1 (fricreg_sim.h) */
+        return fricreg_sim_run_extrapolated(sim,
+                                            run->t_end > 0.0
+                                                ? run->t_end
+                                                : run->cycles * value(sim, FRICREG_VALUE_PERIOD),
+                                            run->extrapolate, 0);
     return run->t_end > 0.0 ? fricreg_sim_run(sim, run->t_end)
                             : fricreg_sim_run_cycles(sim, run->cycles);
 }
@@ -67,6 +80,22 @@ static void json_array(FILE *out, const char *name, size_t n, const double a[])
     for (size_t i = 0; i < n; i++)
         fprintf(out, "%s%.17g", i ? ", " : "", a[i]);
     fprintf(out, "]");
+}
+
+/* "extrapolation": {…}; an observed order that could not be measured (NaN) is null. */
+static void write_extrapolation(FILE *out, const struct cli_extrapolation *x, size_t cycles)
+{
+    fprintf(out,
+            ", \"extrapolation\": {\"levels\": %d, \"order\": %d, \"observed_order\": ", x->levels,
+            x->order);
+    isfinite(x->observed_order) ? fprintf(out, "%.17g", x->observed_order) : fprintf(out, "null");
+    fprintf(out, ", \"flagged_cycles\": %.0f, \"eps_finest\": %.17g, \"rhs_evals\": %.0f",
+            x->flagged_cycles, x->eps_finest, x->rhs_evals);
+    fprintf(out, ", \"dissipation\": %.17g, \"dissipation_error\": %.17g", x->dissipation,
+            x->dissipation_error);
+    json_array(out, "dissipation_per_cycle", cycles, x->D);
+    json_array(out, "error_per_cycle", cycles, x->err);
+    fprintf(out, "}");
 }
 
 void cli_write_summary(FILE *out, const struct cli_summary *s)
@@ -82,14 +111,34 @@ void cli_write_summary(FILE *out, const struct cli_summary *s)
     json_array(out, "v", s->ndof, s->v);
     json_array(out, "dissipation_per_cycle", s->cycles, s->D);
     json_array(out, "stick_fraction", s->ncontacts, s->stick);
+    if (s->extrap != NULL)
+        write_extrapolation(out, s->extrap, s->cycles);
     fprintf(out, ", \"cpu_seconds\": %.6f}\n", s->cpu_seconds);
 }
 
-static double value(const fricreg_sim *sim, int which)
+static double extrap_value(const fricreg_sim *sim, int which)
 {
-    double v = 0.0;
-    fricreg_sim_get_value(sim, which, &v);
+    double v = NAN;
+    fricreg_sim_get_extrapolation(sim, which, &v);
     return v;
+}
+
+/* The extrapolation of a run; its per-cycle arrays in buf[2 cycles]. */
+static void read_extrapolation(const fricreg_sim *sim, size_t cycles, double buf[],
+                               struct cli_extrapolation *x)
+{
+    fricreg_sim_get_extrapolated_dissipation(sim, cycles, buf, buf + cycles);
+    *x = (struct cli_extrapolation){
+        .levels = (int)extrap_value(sim, FRICREG_EXTRAP_LEVELS),
+        .order = (int)extrap_value(sim, FRICREG_EXTRAP_ORDER),
+        .observed_order = extrap_value(sim, FRICREG_EXTRAP_OBSERVED_ORDER),
+        .flagged_cycles = extrap_value(sim, FRICREG_EXTRAP_FLAGGED_CYCLES),
+        .eps_finest = extrap_value(sim, FRICREG_EXTRAP_EPS_FINEST),
+        .rhs_evals = extrap_value(sim, FRICREG_EXTRAP_RHS_EVALS),
+        .dissipation = extrap_value(sim, FRICREG_EXTRAP_DISSIPATION),
+        .dissipation_error = extrap_value(sim, FRICREG_EXTRAP_DISSIPATION_ERR),
+        .D = buf,
+        .err = buf + cycles};
 }
 
 static void write_summary(FILE *out, const struct cli_run *run, const fricreg_sim *sim,
@@ -97,7 +146,7 @@ static void write_summary(FILE *out, const struct cli_run *run, const fricreg_si
 {
     size_t n = fricreg_sim_ndof(sim), m = fricreg_sim_ncontacts(sim);
     size_t cycles = (size_t)value(sim, FRICREG_VALUE_CYCLES);
-    double *buf = malloc((2 * n + m + cycles + 1) * sizeof *buf);
+    double *buf = malloc((2 * n + m + 3 * cycles + 1) * sizeof *buf);
     if (buf == NULL) {
         fprintf(stderr, "fricreg-sim: out of memory\n");
         return;
@@ -106,6 +155,9 @@ static void write_summary(FILE *out, const struct cli_run *run, const fricreg_si
     fricreg_sim_get_state(sim, n, x, v);
     fricreg_sim_get_stick_fraction(sim, m, stick);
     fricreg_sim_get_dissipation(sim, cycles, D);
+    struct cli_extrapolation extrap;
+    if (run->extrapolate)
+        read_extrapolation(sim, cycles, D + cycles, &extrap);
     struct cli_summary s = {.system = cli_system_name(run->system),
                             .law = fricreg_law_name(run->law),
                             .integrator = fricreg_integrator_name(run->integrator),
@@ -125,7 +177,8 @@ static void write_summary(FILE *out, const struct cli_run *run, const fricreg_si
                             .x = x,
                             .v = v,
                             .D = D,
-                            .stick = stick};
+                            .stick = stick,
+                            .extrap = run->extrapolate ? &extrap : NULL};
     cli_write_summary(out, &s);
     free(buf);
 }

@@ -247,6 +247,29 @@ static int sim_run(void)
     return status;
 }
 
+/* fricreg_sim_run_extrapolated: level 0, two internal copies and the table (extrapolate.c).
+ * A failure must leave no extrapolation behind. */
+static int sim_run_extrapolated(void)
+{
+    fricreg_sim *sim = NULL;
+    double T = 0.0, D[2], err[2];
+    int status = fricreg_sim_create(FRICREG_SYSTEM_OSCILLATOR, &sim);
+    if (status == FRICREG_OK)
+        status = fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 0.05, 0.0, 0.0);
+    if (status == FRICREG_OK)
+        status = fricreg_sim_get_value(sim, FRICREG_VALUE_PERIOD, &T);
+    if (status == FRICREG_OK) {
+        status = fricreg_sim_run_extrapolated(sim, 2.0 * T, 3, 0);
+        if (status != FRICREG_OK && fricreg_sim_errcode(sim) != status)
+            NOTE("run_extrapolated: status %d, errcode %d", status, fricreg_sim_errcode(sim));
+        if (status != FRICREG_OK &&
+            fricreg_sim_get_extrapolated_dissipation(sim, 2, D, err) != FRICREG_EINVAL)
+            NOTE("run_extrapolated: status %d, but an extrapolation is held", status);
+    }
+    fricreg_sim_free(sim);
+    return status;
+}
+
 /* test_exact's long no-stick case: 64 switches by t = 200, so about 80 phases by t = 250, and
  * the phase list outgrows its first 64 entries (a realloc that keeps the earlier ones). */
 static int exact_run(void)
@@ -427,6 +450,13 @@ START_TEST(test_sim_run)
 }
 END_TEST
 
+START_TEST(test_sim_run_extrapolated)
+{
+    struct tally t = fail_each_allocation("sim_run_extrapolated", sim_run_extrapolated);
+    ck_assert_int_eq(t.enomem, t.cases);
+}
+END_TEST
+
 START_TEST(test_exact_run)
 {
     struct tally t = fail_each_allocation("exact_create+run", exact_run);
@@ -451,6 +481,7 @@ static Suite *alloc_suite(void)
     suite_add_tcase(s, core);
     TCase *drivers = tcase_create("drivers");
     tcase_add_loop_test(drivers, test_sim_run, 0, (int)(3 * N_INTEGRATORS));
+    tcase_add_test(drivers, test_sim_run_extrapolated);
     tcase_add_test(drivers, test_exact_run);
     tcase_add_test(drivers, test_exact_solve);
     suite_add_tcase(s, drivers);

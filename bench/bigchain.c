@@ -1,0 +1,108 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* bigchain.c — fricreg-bench-bigchain OUTDIR [N …]: the chain of Sec. 3.2 with n = 1000 (or
+ * the N given) blocks against event-driven CVODE Adams, D on the first forcing cycle.
+ *
+ * No independent reference exists at this size: it is law (4) + RK4 extrapolated in eps over
+ * three levels (fricreg_sim_run_extrapolated, dt halving with eps under the paper's rule,
+ * from the largest step the guard accepts, dt = 0.35/n), with its own error estimate. Then
+ * each method's error and CPU seconds (one run each: these take seconds to minutes): fricreg
+ * RK4 at dt = 0.35/n and 0.175/n, and CVODE Adams at rtol 1e-4, 1e-6, 1e-8 (BDF's dense
+ * Newton on 2n + 1 unknowns is left out: O(n^3) per Jacobian). Writes bigchain.csv. Not in
+ * bench/run.sh by default (FRICREG_BENCH_BIG=1 runs it): n = 1000 takes about a minute of
+ * CPU, n = 10^4 hours. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "bench.h"
+#ifdef FRICREG_BENCH_CVODE
+#include "event_driven.h"
+#endif
+
+struct row {
+    const char *method;
+    double param, cpu, D, err;
+    int status;
+    char msg[256];
+};
+
+static void record(struct row *r, const char *method, double param, double t0,
+                   const struct bench_run *run, double ref)
+{
+    r->method = method;
+    r->param = param;
+    r->cpu = bench_cpu_seconds() - t0;
+    r->status = run->status;
+    r->D = run->D;
+    r->err = run->status == FRICREG_OK ? bench_rel_error(run->D, ref) : NAN;
+    snprintf(r->msg, sizeof r->msg, "%s", run->status == FRICREG_OK ? "" : run->msg);
+}
+
+static int one_n(size_t n, FILE *csv)
+{
+    struct bench_problem p = {"chain_big", "chain", FRICREG_SYSTEM_CHAIN, 0.25, 0.5, n, 1, 1e-3, 1};
+    double dt = 0.35 / (double)n; /* dt * 2n = 0.7 <= 1/sqrt(2): the guard's bound */
+    struct bench_run run;
+    struct row rows[8];
+    int nr = 0;
+
+    struct bench_sim_point ref_pt = {&p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt, 0.0, 0.0, 0, 3};
+    double t0 = bench_cpu_seconds();
+    if (bench_sim_run(&ref_pt, &run) != FRICREG_OK) {
+        fprintf(stderr, "fricreg-bench-bigchain: n = %zu: the reference failed: %s\n", n, run.msg);
+        return 1;
+    }
+    double ref = run.D;
+    printf("\nchain n = %zu, a = 0.25, omega = 0.5, D on cycle 1\n"
+           "reference: law (4) + RK4, dt = %g, %g, %g (eps = 10 omega dt), extrapolated: "
+           "D = %.15g, estimate %.1e relative%s (%.1f CPU s)\n",
+           n, dt, dt / 2, dt / 4, ref, run.D_error / fabs(ref),
+           run.flagged ? ", flagged: no clean order" : "", bench_cpu_seconds() - t0);
+    record(&rows[nr++], "rk4/quinn(4)/extrap3", dt, t0, &run, ref);
+    rows[0].err = run.D_error / fabs(ref); /* the reference's row: its own estimate */
+    snprintf(rows[0].msg, sizeof rows[0].msg, "the reference; error: its estimate%s",
+             run.flagged ? " (flagged: no clean order)" : "");
+    for (int k = 0; k < 2; k++) {
+        struct bench_sim_point pt = {
+            &p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt / (1 << k), 0.0, 0.0, 0, 0};
+        t0 = bench_cpu_seconds();
+        bench_sim_run(&pt, &run);
+        record(&rows[nr++], "rk4/quinn(4)", dt / (1 << k), t0, &run, ref);
+    }
+#ifdef FRICREG_BENCH_CVODE
+    static const double rtols[3] = {1e-4, 1e-6, 1e-8};
+    for (int k = 0; k < 3; k++) {
+        struct ed_point ep = {&p, ED_ADAMS, rtols[k]};
+        t0 = bench_cpu_seconds();
+        ed_run(&ep, &run);
+        record(&rows[nr++], "cvode-adams/event-driven", rtols[k], t0, &run, ref);
+    }
+#endif
+    printf("%-26s %10s %10s %12s %s\n", "method", "dt|rtol", "cpu s", "rel error", "");
+    for (int k = 0; k < nr; k++) {
+        const struct row *r = &rows[k];
+        printf("%-26s %10.3g %10.3g %12.3e %s\n", r->method, r->param, r->cpu, r->err, r->msg);
+        fprintf(csv, "%zu,%s,%g,%.6e,%.15g,%.6e,%d,\"%s\"\n", n, r->method, r->param, r->cpu, r->D,
+                r->err, r->status, r->msg);
+    }
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        fprintf(stderr, "usage: fricreg-bench-bigchain OUTDIR [N …]\n");
+        return 2;
+    }
+    FILE *csv = bench_open_out("fricreg-bench-bigchain", argv[1], "bigchain.csv");
+    if (csv == NULL)
+        return 1;
+    fprintf(csv, "n,method,param,cpu_s,D,rel_error,status,message\n");
+    int status = 0;
+    if (argc == 2)
+        status = one_n(1000, csv);
+    for (int k = 2; k < argc; k++)
+        status |= one_n((size_t)strtoul(argv[k], NULL, 10), csv);
+    fclose(csv);
+    return status;
+}
