@@ -10,6 +10,13 @@ for f in machine.txt best.csv summary.csv orders.csv scaling.csv laws.csv; do
     [ -f "$dir/$f" ] || { echo "results_page.sh: $dir/$f is missing" >&2; exit 1; }
 done
 field() { sed -n "s/^$1: //p" "$dir/machine.txt"; }
+# verbatim TITLE FILE: a section holding a benchmark's printed output as it stands, if it ran.
+verbatim() {
+    [ -f "$dir/$2" ] || return 0
+    printf '\n## %s\n\n`%s` as printed:\n\n```\n' "$1" "$2"
+    cat "$dir/$2"
+    printf '```\n'
+}
 
 # Rows in order of first appearance, columns by problem; one cell per (row, problem).
 pivot() { # CSV HEADER_CELL PROBLEM_HEADER_SUFFIXES AWK_CELL_EXPRESSION
@@ -130,5 +137,7 @@ pivot() { # CSV HEADER_CELL PROBLEM_HEADER_SUFFIXES AWK_CELL_EXPRESSION
     echo "| law | path | m | ns per contact |"
     echo "|---|---|---|---|"
     awk -F, 'NR > 1 { printf "| %s | `%s` | %s | %.2f |\n", $1, $2, $3, $4 }' "$dir/laws.csv"
+    verbatim "The kernels against the minimal loop and the triad bandwidth" kernels.txt
+    verbatim "Dense W, m = 500: a changing near-stick set against an unchanged one" dense.txt
 } >"$out"
 echo "results page: $out"
