@@ -4,12 +4,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <gsl/gsl_errno.h>
 #include <gsl/gsl_linalg.h>
 #include <gsl/gsl_permutation.h>
 
 #include "ctx_internal.h"
 #include "factor.h"
-#include "gsl_guard.h"
 
 /* Below this reciprocal condition number of the scaled block, W_BB is treated as singular. */
 #define RCOND_MIN 1e-12
@@ -66,11 +66,9 @@ int fr_factor_ensure(fricreg_ctx *ctx, const size_t set[], size_t n, const char 
     gsl_permutation p = {n, fa->perm};
     gsl_vector_view work = gsl_vector_view_array(fa->work, 3 * n);
     double rcond = 0.0;
-    gsl_error_handler_t *previous = fr_gsl_quiet();
     int status = gsl_linalg_pcholesky_decomp(&A.matrix, &p);
     if (status == GSL_SUCCESS)
         status = gsl_linalg_pcholesky_rcond(&A.matrix, &p, &rcond, &work.vector);
-    fr_gsl_restore(previous);
     ctx->stats[FRICREG_STAT_FACTORIZATIONS]++;
     if (status != GSL_SUCCESS || !(rcond >= RCOND_MIN))
         return fr_fail(ctx, FRICREG_ESINGULAR,
@@ -92,9 +90,7 @@ int fr_factor_solve(fricreg_ctx *ctx, double r[], const char *who)
     gsl_matrix_const_view A = gsl_matrix_const_view_array(fa->ldlt, n, n);
     gsl_permutation p = {n, fa->perm};
     gsl_vector_view x = gsl_vector_view_array(r, n);
-    gsl_error_handler_t *previous = fr_gsl_quiet();
     int status = gsl_linalg_pcholesky_svx(&A.matrix, &p, &x.vector);
-    fr_gsl_restore(previous);
     ctx->stats[FRICREG_STAT_SOLVES]++;
     if (status != GSL_SUCCESS)
         return fr_fail(ctx, FRICREG_ESINGULAR, "%s: solve with W failed (GSL status %d)", who,
