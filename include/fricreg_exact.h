@@ -15,7 +15,7 @@
  * below 1/1024 of the shortest period involved, so its work follows the number of switches.
  * Work limits of one run: at most 4194303 switches and 2^27 scan points, and a scan step above
  * 2^-32 t (beyond, the closed forms lose the time resolution); a run over them is refused
- * with FRICREG_EINVAL (about 5 s of work at most).
+ * with FRICREG_EINVAL (a few seconds of work at most).
  * The dissipation per cycle is mun times the distance slid in that cycle, exactly.
  *
  * Conventions are those of fricreg.h: int results are fricreg_status codes, nothing is

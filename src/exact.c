@@ -27,7 +27,7 @@
 #define START_REFINEMENTS 40                 /* halvings of the first scan step at a phase start */
 #define EMPTY_PHASE (64.0 * GSL_DBL_EPSILON) /* a phase this short (relative to t) has no length */
 #define N_STATS 3
-/* Work limits of one run (documented in fricreg_exact.h): ~2 s and 128 MiB at most. */
+/* Work limits of one run (documented in fricreg_exact.h): seconds and 128 MiB at most. */
 #define MAX_PHASES (1L << 22)
 #define MAX_SCAN_POINTS (1LL << 27)
 /* A scan step below this many ulps of t has lost the time resolution the closed forms need. */
