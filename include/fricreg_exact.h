@@ -9,8 +9,13 @@
  * x = c + x_p(t) + A cos(t - t0) + B sin(t - t0) with c = -s mun and the forced response x_p
  * (a sin(wt)/(1 - w^2), or -(a/2) t cos t at resonance w = 1); at rest, x is constant while
  * |f_eq| <= mun. The switching times — slip to rest (x' = 0) and rest to slip (|f_eq| = mun) —
- * are roots of these closed forms, bracketed on a fine scan and refined with GSL's Brent
- * solver to the last bits (Quinn 2004, Sec. 3.1: "convergent to the 12th significant digit").
+ * are roots of these closed forms, bracketed on a scan and refined with GSL's Brent solver to
+ * the last bits (Quinn 2004, Sec. 3.1: "convergent to the 12th significant digit"). The scan
+ * steps by what a bound on the second derivative allows (no root can lie within a step), never
+ * below 1/1024 of the shortest period involved, so its work follows the number of switches.
+ * Work limits of one run: at most 4194303 switches and 2^27 scan points, and a scan step above
+ * 2^-32 t (beyond, the closed forms lose the time resolution); a run over them is refused
+ * with FRICREG_EINVAL (a few seconds of work at most).
  * The dissipation per cycle is mun times the distance slid in that cycle, exactly.
  *
  * Conventions are those of fricreg.h: int results are fricreg_status codes, nothing is
@@ -45,7 +50,8 @@ typedef struct fricreg_exact fricreg_exact;
  *  out    out: the solution, released with fricreg_exact_free. Written only on success.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ENONFINITE; FRICREG_EINVAL (omega <= 0,
- *  mun < 0, t_end <= 0 or too long); FRICREG_ENOMEM; FRICREG_EINTEGRATOR if a switching
+ *  mun < 0, t_end <= 0 or too long, or over the work limits at the top of this header);
+ *  FRICREG_EDIVERGED if the closed form overflows; FRICREG_ENOMEM; FRICREG_EINTEGRATOR if a switching
  *  time cannot be bracketed (never seen; it would mean two switches closer than 1e-3).
  *  The same as fricreg_exact_create then fricreg_exact_run, keeping the object only if both
  *  succeed: with no object on failure there is no message; use those two to get one. */
@@ -75,7 +81,10 @@ FRICREG_API int fricreg_exact_create(double a, double omega, double mun, double 
  *  t_end  end time > 0 (finite), at most 10^6 forcing cycles (t_end omega/(2 pi) <= 10^6).
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if ex is NULL; FRICREG_ENONFINITE if t_end is NaN or
- *  infinite; FRICREG_EINVAL if t_end <= 0 or too long; FRICREG_ENOMEM; FRICREG_EINTEGRATOR if
+ *  infinite; FRICREG_EINVAL if t_end <= 0 or too long, or if the solution needs more work than
+ *  the limits at the top of this header (the message says which limit, and the time reached);
+ *  FRICREG_EDIVERGED if the closed form overflows (values near 1e308); FRICREG_ENOMEM;
+ *  FRICREG_EINTEGRATOR if
  *  a switching time cannot be found (never seen; it would mean two switches closer than 1e-3).
  *  On failure fricreg_exact_errmsg names the value, or the time where the solution stopped,
  *  and the solution held before the call is kept unchanged. Since 1.1. */
@@ -114,8 +123,9 @@ enum fricreg_exact_value {
 FRICREG_API int fricreg_exact_get_value(const fricreg_exact *ex, int which, double *value);
 
 /** Work counters of the solution held (zero before a run), for fricreg_exact_get_stat.
- *  Values are fixed forever. The scan step is h = 2 pi/max(1, omega)/1024, so a run costs
- *  about t_end/h scan points whatever the number of switches. */
+ *  Values are fixed forever. The scan steps at least 1/1024 of the shortest period and mostly
+ *  far more, so a run costs at most t_end/h scan points with h = 2 pi/max(1, omega)/1024, and
+ *  typically 5 to 16 per phase (a stick that cannot end, |x| + |a| <= mun, costs none). */
 enum fricreg_exact_stat {
     FRICREG_EXACT_STAT_SCAN_POINTS = 0, /**< closed-form tests "the phase still holds" on the
                                                 scan grid, including the halved first steps */

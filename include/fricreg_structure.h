@@ -60,7 +60,9 @@ FRICREG_API void fricreg_structure_free(fricreg_structure *s);
  *  Like every model setter, it takes effect at the next step, which recomputes the
  *  acceleration at the current state from the equation of motion.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if ndof is not the structure's;
- *  FRICREG_ENONFINITE; FRICREG_ENOTSYM; FRICREG_ENOTPSD if M is not positive definite. */
+ *  FRICREG_ENONFINITE; FRICREG_ENOTSYM; FRICREG_ENOTPSD if M is not positive definite, or so
+ *  nearly singular that GSL's Cholesky factor could fail: D^-1/2 M D^-1/2 (D the diagonal of
+ *  M) needs its smallest eigenvalue above 2 n (n + 1) 2.2e-16 (Demmel's condition). */
 FRICREG_API int fricreg_structure_set_mass(fricreg_structure *s, size_t ndof, const double M[]);
 
 /** Set the stiffness matrix K[ndof*ndof] (force per length, e.g. N/m), symmetric (relative

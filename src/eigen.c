@@ -8,7 +8,6 @@
 
 #include "eigen.h"
 #include "fricreg.h"
-#include "gsl_guard.h"
 
 int fr_eigen_alloc(struct fr_eigen *e, size_t m)
 {
@@ -39,8 +38,6 @@ int fr_eigen_solve(struct fr_eigen *e)
     gsl_matrix_view A = gsl_matrix_view_array(e->a, e->m, e->m);
     gsl_vector_view eval = gsl_vector_view_array(e->eval, e->m);
     gsl_eigen_symm_workspace work = {e->m, e->d, e->sd};
-    gsl_error_handler_t *previous = fr_gsl_quiet();
     int status = gsl_eigen_symm(&A.matrix, &eval.vector, &work);
-    fr_gsl_restore(previous);
     return status;
 }

@@ -1,25 +1,51 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* ode_driver.c — gsl_odeiv2_driver_alloc_y_new, with every allocation checked (ode_driver.h). */
+/* ode_driver.c — gsl_odeiv2_driver_alloc_y_new, with every allocation checked (ode_driver.h):
+ * fricreg's own, except the stepper's private state, which only GSL can allocate. */
 #include <stdlib.h>
 
 #include <gsl/gsl_machine.h>
 
-#include "gsl_guard.h"
 #include "ode_driver.h"
 
 /* The type behind gsl_odeiv2_control_y_new: a data symbol libgsl exports (since GSL 1.14) but
- * gsl_odeiv2.h does not declare. With it the control is allocated by the checked
- * gsl_odeiv2_control_alloc and initialized only once it exists. */
+ * gsl_odeiv2.h does not declare. */
 extern const gsl_odeiv2_control_type *gsl_odeiv2_control_standard;
+
+/* The standard control's private state (ode-initval2/cstd.c, GSL 1.14 to 2.7): eps_abs,
+ * eps_rel, a_y, a_dydt. Allocated here with room to spare, so that only the stepper's own
+ * state is left to GSL's allocator. */
+#define CONTROL_STATE_DOUBLES 16
 
 static gsl_odeiv2_control *control_y_new(double epsabs, double epsrel)
 {
-    gsl_odeiv2_control *c = gsl_odeiv2_control_alloc(gsl_odeiv2_control_standard);
-    if (c != NULL && gsl_odeiv2_control_init(c, epsabs, epsrel, 1.0, 0.0) != GSL_SUCCESS) {
-        gsl_odeiv2_control_free(c);
-        c = NULL;
+    gsl_odeiv2_control *c = malloc(sizeof *c);
+    void *state = calloc(CONTROL_STATE_DOUBLES, sizeof(double));
+    if (c == NULL || state == NULL) {
+        free(c);
+        free(state);
+        return NULL;
     }
+    *c = (gsl_odeiv2_control){.type = gsl_odeiv2_control_standard, .state = state};
+    gsl_odeiv2_control_init(c, epsabs, epsrel, 1.0, 0.0); /* the caller checked both >= 0 */
     return c;
+}
+
+/* gsl_odeiv2_evolve_alloc's five allocations, checked; gsl_odeiv2_evolve_free frees them. */
+static gsl_odeiv2_evolve *evolve_new(size_t dim)
+{
+    gsl_odeiv2_evolve *e = calloc(1, sizeof *e);
+    if (e == NULL)
+        return NULL;
+    e->dimension = dim;
+    e->y0 = malloc(dim * sizeof(double));
+    e->yerr = malloc(dim * sizeof(double));
+    e->dydt_in = malloc(dim * sizeof(double));
+    e->dydt_out = malloc(dim * sizeof(double));
+    if (!e->y0 || !e->yerr || !e->dydt_in || !e->dydt_out) {
+        gsl_odeiv2_evolve_free(e);
+        return NULL;
+    }
+    return e;
 }
 
 gsl_odeiv2_driver *fr_ode_driver_alloc(const gsl_odeiv2_system *sys, const gsl_odeiv2_step_type *T,
@@ -28,10 +54,9 @@ gsl_odeiv2_driver *fr_ode_driver_alloc(const gsl_odeiv2_system *sys, const gsl_o
     gsl_odeiv2_driver *d = calloc(1, sizeof *d);
     if (d == NULL)
         return NULL;
-    gsl_error_handler_t *previous = fr_gsl_quiet();
     d->sys = sys;
     d->s = gsl_odeiv2_step_alloc(T, sys->dimension);
-    d->e = d->s ? gsl_odeiv2_evolve_alloc(sys->dimension) : NULL;
+    d->e = d->s ? evolve_new(sys->dimension) : NULL;
     d->c = d->e ? control_y_new(epsabs, epsrel) : NULL;
     if (d->c != NULL) {
         d->h = hstart;
@@ -41,7 +66,6 @@ gsl_odeiv2_driver *fr_ode_driver_alloc(const gsl_odeiv2_system *sys, const gsl_o
         gsl_odeiv2_evolve_set_driver(d->e, d);
         gsl_odeiv2_control_set_driver(d->c, d);
     }
-    fr_gsl_restore(previous);
     if (d->c == NULL) {
         gsl_odeiv2_driver_free(d); /* frees the parts that exist */
         return NULL;

@@ -11,7 +11,8 @@
 
 /* The driver gsl_odeiv2_driver_alloc_y_new(sys, T, hstart, epsabs, epsrel) would make (the
  * standard control on y with a_y = 1, a_dydt = 0), or NULL if any allocation failed, with
- * nothing left allocated. GSL's error handler is kept out. Free with gsl_odeiv2_driver_free. */
+ * nothing left allocated. epsabs, epsrel >= 0. Only gsl_odeiv2_step_alloc's failure reaches
+ * GSL's error handler (docs/reliability.md). Free with gsl_odeiv2_driver_free. */
 gsl_odeiv2_driver *fr_ode_driver_alloc(const gsl_odeiv2_system *sys, const gsl_odeiv2_step_type *T,
                                        double hstart, double epsabs, double epsrel);
 

@@ -10,11 +10,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <gsl/gsl_errno.h>
 #include <gsl/gsl_math.h>
 #include <gsl/gsl_odeiv2.h>
 
 #include "fr_math.h"
-#include "gsl_guard.h"
 #include "integrator.h"
 #include "law.h"
 #include "ode_driver.h"
@@ -494,7 +494,6 @@ static int advance(fricreg_sim *sim, gsl_odeiv2_driver *d, const struct fr_integ
     while (sim->t < t_target) {
         double t_before = sim->t;
         int gsl_status;
-        gsl_error_handler_t *previous = fr_gsl_quiet();
         if (adaptive(sim)) {
             double t_stop = fmin(t_target, sim->t + MAX_STEP_PER_PERIOD * period(sim));
             gsl_status = gsl_odeiv2_evolve_apply(d->e, d->c, d->s, d->sys, &sim->t, t_stop, h,
@@ -507,7 +506,6 @@ static int advance(fricreg_sim *sim, gsl_odeiv2_driver *d, const struct fr_integ
             if (last && gsl_status == GSL_SUCCESS)
                 sim->t = t_target;
         }
-        fr_gsl_restore(previous);
         if (gsl_status != GSL_SUCCESS)
             return step_failure(sim, gsl_status);
         sim->steps += adaptive(sim) ? 1 : integ->substeps;
@@ -585,11 +583,9 @@ int fricreg_sim_run(fricreg_sim *sim, double t_end)
      * ones for their Newton iteration (integrator.h, fixed_tolerance). */
     double tol_abs = adaptive(sim) ? sim->atol : integ->fixed_tolerance;
     double tol_rel = adaptive(sim) ? sim->rtol : 0.0;
-    gsl_error_handler_t *previous = fr_gsl_quiet();
     const gsl_odeiv2_step_type *stepper = fr_integrator_stepper(integ, adaptive(sim));
     gsl_odeiv2_driver *d = fr_ode_driver_alloc(&sys, stepper, sim->dt * integ->substeps, tol_abs,
                                                tol_rel);
-    fr_gsl_restore(previous);
     if (d == NULL)
         return sim_fail(sim, FRICREG_ENOMEM, "run: GSL driver allocation failed");
     sim->running = 1;

@@ -8,7 +8,6 @@
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_linalg.h>
 
-#include "gsl_guard.h"
 #include "structure_internal.h"
 
 #define STATE_LIMIT 1e100 /* |state| beyond this: diverged */
@@ -69,14 +68,11 @@ static int beyond_limit(const gsl_vector *x)
 static int step_to(fricreg_structure *s, double t1)
 {
     double dt = t1 - s->t;
-    gsl_error_handler_t *old = fr_gsl_quiet();
     int status = fr_structure_prepare(s);
     if (status == FRICREG_OK && !s->ready)
         status = fr_structure_equilibrium(s);
-    if (status != FRICREG_OK) {
-        fr_gsl_restore(old);
+    if (status != FRICREG_OK)
         return status;
-    }
     if (s->fresh)
         fr_energy_start(s);
     fr_structure_effective_load(s, t1, s->ptil1);
@@ -85,7 +81,6 @@ static int step_to(fricreg_structure *s, double t1)
         status = fr_central_solve(s, dt);
     else
         status = fr_newmark_solve(s, dt, &converged, &iters);
-    fr_gsl_restore(old);
     if (status != FRICREG_OK)
         return status;
     if (beyond_limit(s->u1) || beyond_limit(s->v1) || beyond_limit(s->x))

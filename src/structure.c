@@ -7,9 +7,10 @@
 #include <string.h>
 
 #include <gsl/gsl_blas.h>
+#include <gsl/gsl_machine.h>
 #include <gsl/gsl_linalg.h>
 
-#include "gsl_guard.h"
+#include "gsl_mem.h"
 #include "law.h"
 #include "structure_internal.h"
 
@@ -22,24 +23,14 @@ void fricreg_structure_free(fricreg_structure *s)
 {
     if (s == NULL)
         return;
-    gsl_matrix *mats[] = {s->M, s->K,  s->C, s->J,  s->L,  s->G, s->W,
-                          s->S, s->GS, s->A, s->Fz, s->Fa, s->T1};
-    for (size_t k = 0; k < sizeof mats / sizeof *mats; k++)
-        if (mats[k])
-            gsl_matrix_free(mats[k]);
-    gsl_vector *vecs[] = {s->r,  s->p,    s->Mr,    s->u,    s->v,  s->a,  s->ptil,
-                          s->f,  s->x,    s->dx,    s->xt,   s->u1, s->v1, s->guess,
-                          s->R,  s->Rt,   s->ptil1, s->hist, s->up, s->vp, s->work,
-                          s->f1, s->zdot, s->afree, s->mwork};
-    for (size_t k = 0; k < sizeof vecs / sizeof *vecs; k++)
-        if (vecs[k])
-            gsl_vector_free(vecs[k]);
-    if (s->perm)
-        gsl_permutation_free(s->perm);
-    if (s->eigen_work)
-        gsl_eigen_symm_free(s->eigen_work);
-    if (s->eigenvalues)
-        gsl_vector_free(s->eigenvalues);
+    void *blocks[] = {s->M,    s->K,     s->C,     s->J,    s->L,          s->G,          s->W,
+                      s->S,    s->GS,    s->A,     s->Fz,   s->Fa,         s->T1,         s->r,
+                      s->p,    s->Mr,    s->u,     s->v,    s->a,          s->ptil,       s->f,
+                      s->x,    s->dx,    s->xt,    s->u1,   s->v1,         s->guess,      s->R,
+                      s->Rt,   s->ptil1, s->hist,  s->up,   s->vp,         s->work,       s->f1,
+                      s->zdot, s->afree, s->mwork, s->perm, s->eigen_work, s->eigenvalues};
+    for (size_t k = 0; k < sizeof blocks / sizeof *blocks; k++)
+        free(blocks[k]); /* gsl_mem.h: one block each */
     fricreg_ctx_free(s->ctx);
     free(s->mun);
     free(s->stopped);
@@ -49,34 +40,36 @@ void fricreg_structure_free(fricreg_structure *s)
     free(s);
 }
 
+/* Every GSL object on fricreg's own memory (gsl_mem.h): none of GSL's allocators, which report
+ * a failed malloc to GSL's error handler. */
 static int allocate(fricreg_structure *s)
 {
     size_t n = s->n, m = s->m;
     gsl_matrix **nn[] = {&s->M, &s->K, &s->C, &s->L, &s->S, &s->A};
     for (size_t k = 0; k < sizeof nn / sizeof *nn; k++)
-        if ((*nn[k] = gsl_matrix_calloc(n, n)) == NULL)
+        if ((*nn[k] = fr_gsl_matrix_new(n, n)) == NULL)
             return 0;
     gsl_matrix **mn[] = {&s->J, &s->G, &s->GS, &s->T1};
     for (size_t k = 0; k < sizeof mn / sizeof *mn; k++)
-        if ((*mn[k] = gsl_matrix_calloc(m, n)) == NULL)
+        if ((*mn[k] = fr_gsl_matrix_new(m, n)) == NULL)
             return 0;
     gsl_matrix **mm[] = {&s->W, &s->Fz, &s->Fa};
     for (size_t k = 0; k < sizeof mm / sizeof *mm; k++)
-        if ((*mm[k] = gsl_matrix_calloc(m, m)) == NULL)
+        if ((*mm[k] = fr_gsl_matrix_new(m, m)) == NULL)
             return 0;
     gsl_vector **nv[] = {&s->r,  &s->p,     &s->Mr,   &s->u,  &s->v,  &s->a,     &s->ptil,
                          &s->x,  &s->dx,    &s->xt,   &s->u1, &s->v1, &s->guess, &s->R,
                          &s->Rt, &s->ptil1, &s->hist, &s->up, &s->vp, &s->work};
     for (size_t k = 0; k < sizeof nv / sizeof *nv; k++)
-        if ((*nv[k] = gsl_vector_calloc(n)) == NULL)
+        if ((*nv[k] = fr_gsl_vector_new(n)) == NULL)
             return 0;
     gsl_vector **mv[] = {&s->f, &s->f1, &s->zdot, &s->afree, &s->mwork};
     for (size_t k = 0; k < sizeof mv / sizeof *mv; k++)
-        if ((*mv[k] = gsl_vector_calloc(m)) == NULL)
+        if ((*mv[k] = fr_gsl_vector_new(m)) == NULL)
             return 0;
-    s->perm = gsl_permutation_alloc(n);
-    s->eigen_work = gsl_eigen_symm_alloc(n);
-    s->eigenvalues = gsl_vector_alloc(n);
+    s->perm = fr_gsl_permutation_new(n);
+    s->eigen_work = fr_gsl_eigen_symm_new(n);
+    s->eigenvalues = fr_gsl_vector_new(n);
     s->mun = malloc(m * sizeof *s->mun);
     s->stopped = calloc(m, sizeof *s->stopped);
     s->energy.per_contact = calloc(m, sizeof *s->energy.per_contact);
@@ -95,9 +88,7 @@ int fricreg_structure_create(size_t ndof, size_t m, fricreg_structure **out)
         return FRICREG_ENOMEM;
     s->n = ndof;
     s->m = m;
-    gsl_error_handler_t *old = fr_gsl_quiet();
     int ok = allocate(s);
-    fr_gsl_restore(old);
     if (!ok) {
         fricreg_structure_free(s);
         return FRICREG_ENOMEM;
@@ -178,6 +169,28 @@ static void model_changed(fricreg_structure *s)
 
 /* ---- Model setters ------------------------------------------------------------------------ */
 
+/* Whether the symmetric M (row-major n x n) is positive definite with room for GSL's Cholesky
+ * to succeed in floating point: a positive diagonal D and lambda_min(D^-1/2 M D^-1/2) above
+ * 2 n (n + 1) eps (Demmel's sufficient condition, Higham, Accuracy and Stability of Numerical
+ * Algorithms, 2nd ed., Thm. 10.14). Checked first because a failing gsl_linalg_cholesky_decomp1
+ * reports to GSL's process-wide error handler, whose default aborts. Uses L and the eigenvalue
+ * workspace as scratch; *lambda_min gets the scaled smallest eigenvalue (NaN: a diagonal
+ * entry is not positive). */
+static int cholesky_safe(fricreg_structure *s, const double M[], double *lambda_min)
+{
+    size_t n = s->n;
+    *lambda_min = NAN;
+    for (size_t i = 0; i < n; i++)
+        if (!(M[i * n + i] > 0.0))
+            return 0;
+    for (size_t i = 0; i < n; i++)
+        for (size_t j = 0; j < n; j++)
+            gsl_matrix_set(s->L, i, j, M[i * n + j] / sqrt(M[i * n + i]) / sqrt(M[j * n + j]));
+    gsl_eigen_symm(s->L, s->eigenvalues, s->eigen_work);
+    *lambda_min = gsl_vector_min(s->eigenvalues);
+    return *lambda_min > 2.0 * (double)n * (double)(n + 1) * GSL_DBL_EPSILON;
+}
+
 int fricreg_structure_set_mass(fricreg_structure *s, size_t ndof, const double M[])
 {
     if (s == NULL)
@@ -185,17 +198,18 @@ int fricreg_structure_set_mass(fricreg_structure *s, size_t ndof, const double M
     int status = check_square(s, "set_mass", ndof, M);
     if (status != FRICREG_OK)
         return status;
-    /* Positive definite: GSL's Cholesky succeeds (on a copy: M is kept as given). */
-    copy_matrix(s->L, M);
-    gsl_error_handler_t *old = fr_gsl_quiet();
-    int gsl_status = gsl_linalg_cholesky_decomp1(s->L);
-    fr_gsl_restore(old);
-    if (gsl_status != GSL_SUCCESS) {
-        s->prepared = 0; /* L held the kept M's factor: the next step refactors it */
+    /* Positive definite: GSL's Cholesky then succeeds (on a copy: M is kept as given). */
+    double lambda_min;
+    int safe = cholesky_safe(s, M, &lambda_min);
+    s->prepared = 0; /* L held the kept M's factor: the next step refactors it */
+    if (!safe)
         return fr_sfail(s, FRICREG_ENOTPSD,
-                        "set_mass: the mass matrix is not positive definite "
-                        "(GSL's Cholesky decomposition fails)");
-    }
+                        "set_mass: the mass matrix is not positive definite, or too close to "
+                        "singular for a Cholesky factor (smallest eigenvalue %.3g of D^-1/2 M "
+                        "D^-1/2, D its diagonal; needs > %.3g)",
+                        lambda_min, 2.0 * (double)ndof * (double)(ndof + 1) * GSL_DBL_EPSILON);
+    copy_matrix(s->L, M);
+    gsl_linalg_cholesky_decomp1(s->L); /* cannot fail: cholesky_safe */
     copy_matrix(s->M, M);
     model_changed(s);
     return FRICREG_OK;
@@ -520,7 +534,6 @@ int fr_structure_prepare(fricreg_structure *s)
         return fr_sfail(s, FRICREG_EINVAL,
                         "step: the contact matrix J was never set "
                         "(fricreg_structure_set_contacts)");
-    gsl_error_handler_t *old = fr_gsl_quiet();
     gsl_matrix_memcpy(s->L, s->M);
     gsl_linalg_cholesky_decomp1(s->L); /* checked positive definite by set_mass */
     if (s->rayleigh) {
@@ -532,7 +545,6 @@ int fr_structure_prepare(fricreg_structure *s)
     }
     gsl_blas_dgemv(CblasNoTrans, 1.0, s->M, s->r, 0.0, s->Mr);
     int status = couple(s);
-    fr_gsl_restore(old);
     if (status != FRICREG_OK)
         return status;
     s->S_dt = 0.0;

@@ -9,7 +9,6 @@
 #include <gsl/gsl_errno.h>
 
 #include "fricreg_structure_gsl.h"
-#include "gsl_guard.h"
 #include "structure_internal.h"
 
 /* The dense setter's message "name: ..." as "name_sparse: ...". */
@@ -32,12 +31,14 @@ static int set_sparse(fricreg_structure *s, const char *name, const gsl_spmatrix
         return fr_sfail(s, FRICREG_ESIZE,
                         "%s_sparse: the matrix is %zu x %zu, the structure needs %zu x %zu", name,
                         S->size1, S->size2, A->size1, A->size2);
-    gsl_error_handler_t *old = fr_gsl_quiet();
-    int gsl_status = gsl_spmatrix_sp2d(A, S);
-    fr_gsl_restore(old);
-    if (gsl_status != GSL_SUCCESS)
-        return fr_sfail(s, FRICREG_EINVAL, "%s_sparse: GSL cannot read the matrix (%s)", name,
-                        gsl_strerror(gsl_status));
+    /* gsl_spmatrix_sp2d reports (through GSL's process-wide handler) only a size mismatch and
+     * an unknown storage type: both are refused here first, so it cannot fail. */
+    if (S->sptype != GSL_SPMATRIX_COO && S->sptype != GSL_SPMATRIX_CSC &&
+        S->sptype != GSL_SPMATRIX_CSR)
+        return fr_sfail(s, FRICREG_EINVAL,
+                        "%s_sparse: unknown storage type %d (GSL has COO, CSC and CSR)", name,
+                        S->sptype);
+    gsl_spmatrix_sp2d(A, S);
     int status = set(s, A);
     return status == FRICREG_OK ? status : renamed(s, status, name);
 }

@@ -12,13 +12,14 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <gsl/gsl_errno.h>
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_linalg.h>
 #include <gsl/gsl_odeiv2.h>
 
 #include "fd_jacobian.h"
-#include "gsl_guard.h"
 #include "integrator.h"
+#include "ode_driver.h"
 #include "structure_internal.h"
 
 #define MAX_GSL_STEPS 2147483648.0
@@ -181,11 +182,9 @@ int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, d
     if (!adaptive && (t_end - s->t) / (dt * integ->substeps) > MAX_GSL_STEPS)
         return fr_sfail(s, FRICREG_EINVAL, "run_ode: (t_end - t)/dt is too many steps");
 
-    gsl_error_handler_t *old = fr_gsl_quiet();
     int status = fr_structure_prepare(s);
     if (status == FRICREG_OK && !adaptive)
         status = check_fixed_step(s, integ, dt);
-    fr_gsl_restore(old);
     if (status != FRICREG_OK)
         return status;
     if (s->fresh)
@@ -206,17 +205,14 @@ int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, d
     memcpy(y + 2 * s->n + 2, s->energy.per_contact, s->m * sizeof *y);
 
     gsl_odeiv2_system sys = {rhs, jacobian, run.dim, &run};
-    old = fr_gsl_quiet();
-    gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys,
-                                                         fr_integrator_stepper(integ, adaptive),
-                                                         dt * integ->substeps,
-                                                         adaptive ? atol : integ->fixed_tolerance,
-                                                         adaptive ? rtol : 0.0);
+    gsl_odeiv2_driver *d = fr_ode_driver_alloc(&sys, fr_integrator_stepper(integ, adaptive),
+                                               dt * integ->substeps,
+                                               adaptive ? atol : integ->fixed_tolerance,
+                                               adaptive ? rtol : 0.0);
     if (d == NULL)
         status = fr_sfail(s, FRICREG_ENOMEM, "run_ode: GSL driver allocation failed");
     else
         status = integrate(s, &run, d, integ, adaptive, dt, t_end, y);
-    fr_gsl_restore(old);
     if (d)
         gsl_odeiv2_driver_free(d);
     free(y);
@@ -224,9 +220,7 @@ int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, d
     s->fresh = 0;
     s->ready = 0; /* the next step takes its acceleration from the equation of motion */
     if (status == FRICREG_OK) {
-        old = fr_gsl_quiet();
         status = fr_structure_equilibrium(s);
-        fr_gsl_restore(old);
     }
     return status;
 }

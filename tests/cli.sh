@@ -268,5 +268,59 @@ expect_usage_error "--t-end" structure --mass $d/M3.mtx --stiffness $d/K3s.mtx -
 expect_usage_error "--eps" structure $good --eps 0
 expect_usage_error "^fricreg-sim: --dt: more than 2^31 steps" structure $good --dt 1e-12 --t-end 1
 
+# ---- Issue 11: no hang, exit codes as the usage says, no data lost ---------------------------
+# expect NAME COMMAND...: a check that passes when COMMAND (a shell snippet) succeeds.
+expect() {
+    total=$((total + 1))
+    name=$1; shift
+    if ! eval "$*"; then
+        echo "FAIL: $name: $(cat "$tmp/err" 2>/dev/null)"
+        fails=$((fails + 1))
+    fi
+}
+# --cycles nan was converted to int before the check (undefined behaviour; UBSan in the
+# sanitize tree); 1e13 is beyond 10^7.
+expect_usage_error "^fricreg-sim: --cycles: not a finite number$" oscillator --cycles nan
+expect_usage_error "^fricreg-sim: --cycles: must be a whole number" oscillator --cycles 1e13
+# A run length the library refuses is a bad value (exit 2), like the exact solver's.
+expect_usage_error "^fricreg-sim: --cycles: run: .* steps is too many" oscillator --cycles 10000000 --dt 1e-4
+expect_usage_error "^fricreg-sim: --t-end: run: .* steps is too many" chain --t-end 1e9 --dt 1e-3
+# omega = 1e-300 ran for ever: refused at once (the scan step is lost in the rounding of t).
+expect_usage_error "^fricreg-sim: --cycles: run: refused at t = .*lost in the rounding of t" exact --omega 1e-300 --a 2 --mun 1 --cycles 1
+# An implicit GSL stepper with --atol 0 failed at t = 0 ("GSL stepper failed ... failure").
+for i in rk1imp rk2imp rk4imp msadams msbdf; do
+    expect_usage_error "^fricreg-sim: --atol: must be > 0 for an implicit GSL stepper" oscillator --integrator $i --rtol 1e-6 --atol 0
+done
+expect_output '"integrator": "bsimp"' oscillator --integrator bsimp --rtol 1e-6 --atol 0 --cycles 1
+# Output that cannot be written: exit 1 with the file named, never 0.
+expect "stdout to /dev/full exits 1 naming it" \
+    '"$sim" oscillator >/dev/full 2>"$tmp/err"; [ $? -eq 1 ] && grep -q "standard output: No space left" "$tmp/err"'
+expect "a trajectory to /dev/full exits 1" \
+    '"$sim" oscillator --output trajectory >/dev/full 2>"$tmp/err"; [ $? -eq 1 ] && [ -s "$tmp/err" ]'
+# reproduce --out: a file is not a directory (exit 2, as the usage says for a bad --out).
+: >"$tmp/plain"
+expect_usage_error "^fricreg-sim: --out: .*plain is not a directory$" reproduce --out "$tmp/plain"
+# A user's file, or a symlink, with an output's name is never overwritten: refused before
+# anything is written, naming it; a rerun into fricreg-sim's own directory replaces its files.
+mkdir -p "$tmp/mine" "$tmp/link"
+echo "my data" >"$tmp/mine/fig9_chain.csv"
+expect_usage_error "^fricreg-sim: --out: .*mine/fig9_chain.csv exists and fricreg-sim did not write it" reproduce --out "$tmp/mine"
+expect "the user's file is intact and nothing was written" \
+    '[ "$(cat "$tmp/mine/fig9_chain.csv")" = "my data" ] && [ "$(ls -A "$tmp/mine" | wc -l)" -eq 1 ]'
+echo "target" >"$tmp/target"
+ln -s "$tmp/target" "$tmp/link/fig5_unforced.csv"
+expect_usage_error "^fricreg-sim: --out: .*link/fig5_unforced.csv exists .*not a regular file" reproduce --out "$tmp/link"
+expect "the symlink's target is intact" '[ "$(cat "$tmp/target")" = "target" ]'
+# A file-size limit (16 blocks) truncated every CSV and exited 0: now exit 1 naming the file.
+expect "a file-size limit exits 1 naming the file" \
+    '(ulimit -f 16 && "$sim" reproduce --out "$tmp/small" >/dev/null 2>"$tmp/err"); [ $? -eq 1 ] && grep -q "small/fig5_unforced.csv: File too large" "$tmp/err" && [ ! -e "$tmp/small/fig5_unforced.csv" ]'
+# --out -x: a name like an option made gnuplot's "cd" fail and exited 0 without PNGs. A rerun
+# into fricreg-sim's own directory replaces its files (two full runs: the slowest checks).
+expect "reproduce --out -x, twice" \
+    '(cd "$tmp" && "$sim" reproduce --out -x >/dev/null 2>"$tmp/err" && "$sim" reproduce --out -x >/dev/null 2>"$tmp/err") && [ -s "$tmp/-x/fig9_chain.csv" ]'
+if command -v gnuplot >/dev/null 2>&1; then
+    expect "--out -x gets its PNGs" '[ -s "$tmp/-x/fig5_unforced.png" ] && [ -s "$tmp/-x/fig11_twoblock.png" ]'
+fi
+
 echo "$((total - fails)) passed, $fails failed"
 [ $fails -eq 0 ]

@@ -33,6 +33,9 @@ struct cli_run {
 /* options.c: parses argv (after the subcommand) into run; on error prints one line naming the
  * option to stderr and returns CLI_EXIT_USAGE. */
 int cli_parse_run(int system, int argc, char **argv, struct cli_run *run);
+/* 0, or CLI_EXIT_USAGE (message printed) for atol = 0 with rtol > 0 on a stepper whose Newton
+ * iteration needs atol > 0 (rk1imp, rk2imp, rk4imp, msadams, msbdf). */
+int cli_check_tolerances(int integrator, double rtol, double atol);
 /* Prints "fricreg-sim: OPTION: WHAT" on stderr and returns CLI_EXIT_USAGE. */
 int cli_usage_error(const char *option, const char *what);
 /* The option at argv[*k] and its value ("--name=value", or the next argument, advancing *k).

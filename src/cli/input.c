@@ -190,7 +190,6 @@ int cli_read_mtx(const char *option, const char *path, size_t *rows, size_t *col
         return status;
     }
     rewind(clean);
-    gsl_error_handler_t *old = gsl_set_error_handler_off();
     gsl_spmatrix *S = gsl_spmatrix_fscanf(clean);
     fclose(clean);
     double *dense = malloc(*rows * *cols * sizeof *dense);
@@ -203,7 +202,6 @@ int cli_read_mtx(const char *option, const char *path, size_t *rows, size_t *col
             for (size_t j = i + 1; j < *cols; j++)
                 dense[i * *cols + j] = dense[j * *cols + i];
     }
-    gsl_set_error_handler(old);
     gsl_spmatrix_free(S);
     if (gsl_status != GSL_SUCCESS) {
         free(dense);

@@ -211,10 +211,12 @@ static int parse_common(const char *option, const char *text, struct cli_run *ru
     if (strcmp(option, "--cycles") == 0) {
         double cycles;
         int status = parse_positive(option, text, &cycles);
-        if (status == 0 && (cycles != floor(cycles) || cycles > 1e7))
+        if (status != 0)
+            return status; /* NaN, Inf, <= 0: never converted to int */
+        if (cycles != floor(cycles) || cycles > 1e7)
             return cli_usage_error(option, "must be a whole number from 1 to 10^7");
         run->cycles = (int)cycles;
-        return status;
+        return 0;
     }
     if (strcmp(option, "--extrapolate") == 0) {
         double levels;
@@ -264,6 +266,25 @@ int cli_parse_run(int system, int argc, char **argv, struct cli_run *run)
     if (run->extrapolate && run->output == CLI_TRAJECTORY)
         return cli_usage_error("--extrapolate",
                                "adds to the summary; not with --output trajectory");
+    return cli_check_tolerances(run->integrator, run->rtol, run->atol);
+}
+
+/* GSL's implicit and multistep steppers end their Newton iterations when the correction is
+ * below atol + rtol |y| per component, which is 0 where a component is 0 — every start from
+ * rest at the origin — so with atol = 0 they fail at t = 0 ("GSL stepper failed"). Refused
+ * here with the reason, rather than run with an atol the user did not choose. */
+int cli_check_tolerances(int integrator, double rtol, double atol)
+{
+    static const int newton[] = {FRICREG_INT_RK1IMP, FRICREG_INT_RK2IMP, FRICREG_INT_RK4IMP,
+                                 FRICREG_INT_MSADAMS, FRICREG_INT_MSBDF};
+    if (!(rtol > 0.0 && atol == 0.0))
+        return 0;
+    for (size_t k = 0; k < sizeof newton / sizeof newton[0]; k++)
+        if (integrator == newton[k])
+            return cli_usage_error("--atol",
+                                   "must be > 0 for an implicit GSL stepper: its Newton "
+                                   "iteration converges to atol + rtol |y|, which is 0 where "
+                                   "a state component is 0 (a start at rest)");
     return 0;
 }
 

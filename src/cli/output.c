@@ -1,7 +1,9 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* output.c — runs one simulation and writes its JSON summary or its CSV trajectory. */
+#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 
 #include "cli.h"
@@ -23,14 +25,17 @@ static int refused_at_every_dt(const struct cli_run *run)
 
 static int run_failed(fricreg_sim *sim, int status, const struct cli_run *run)
 {
-    /* A step that is too large is a bad --dt (or, under the paper's rule, a missing --eps): a
-     * usage error like any other bad value. */
+    /* A step that is too large is a bad --dt (or, under the paper's rule, a missing --eps), and
+     * a run length the library refuses (EINVAL from the run: too many steps) a bad --t-end or
+     * --cycles: usage errors like any other bad value. */
     const char *option = "";
     if (status == FRICREG_ESTEP)
         option = refused_at_every_dt(run) ? "--eps: " : "--dt: ";
+    else if (status == FRICREG_EINVAL)
+        option = run->t_end > 0.0 ? "--t-end: " : "--cycles: ";
     fprintf(stderr, "fricreg-sim: %s%s\n", option, fricreg_sim_errmsg(sim));
     fricreg_sim_free(sim);
-    return status == FRICREG_ESTEP ? CLI_EXIT_USAGE : CLI_EXIT_RUN;
+    return status == FRICREG_ESTEP || status == FRICREG_EINVAL ? CLI_EXIT_USAGE : CLI_EXIT_RUN;
 }
 
 fricreg_sim *cli_make_sim(const struct cli_run *run)
@@ -247,12 +252,18 @@ int cli_run_trajectory(const struct cli_run *run, FILE *out)
         fclose(tmp);
         return run_failed(sim, status, run);
     }
+    fricreg_sim_free(sim);
+    int failed = fflush(tmp) != 0 || ferror(tmp);
     rewind(tmp);
     char chunk[1 << 16];
     size_t got;
-    while ((got = fread(chunk, 1, sizeof chunk, tmp)) > 0)
-        fwrite(chunk, 1, got, out);
+    while (!failed && (got = fread(chunk, 1, sizeof chunk, tmp)) > 0)
+        failed = fwrite(chunk, 1, got, out) != got;
+    failed |= ferror(tmp);
     fclose(tmp);
-    fricreg_sim_free(sim);
+    if (failed) {
+        fprintf(stderr, "fricreg-sim: writing the trajectory: %s\n", strerror(errno));
+        return CLI_EXIT_RUN;
+    }
     return 0;
 }

@@ -8,6 +8,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
+
+#include "out_file.h"
 
 #include "cli.h"
 
@@ -111,13 +114,17 @@ static double last_cycle_dissipation(const fricreg_sim *sim)
     return D[CHAIN_CYCLES - 1];
 }
 
-static FILE *open_in(const char *dir, const char *name, char *path, size_t len)
+/* Every file reproduce writes into --out (out_file.h), the manifest last. */
+static const char *const outputs[] = {"fig5_unforced.csv",  "fig6_force.csv", "fig9_chain.csv",
+                                      "fig11_twoblock.csv", "plots.gp",       "fig5_unforced.png",
+                                      "fig6_force.png",     "fig9_chain.png", "fig11_twoblock.png"};
+#define N_CSV 5 /* the CSVs and plots.gp come first in outputs[] */
+#define N_OUTPUTS (sizeof outputs / sizeof outputs[0])
+
+/* Opens dir/name for writing (a temporary file until cli_out_commit): o->f, or NULL. */
+static FILE *open_in(const char *dir, const char *name, struct cli_out *o)
 {
-    snprintf(path, len, "%s/%s", dir, name);
-    FILE *f = fopen(path, "w");
-    if (f == NULL)
-        fprintf(stderr, "fricreg-sim: reproduce: cannot write %s: %s\n", path, strerror(errno));
-    return f;
+    return cli_out_open(o, dir, name) == 0 ? o->f : NULL;
 }
 
 static void table_row(const char *figure, const char *quantity, const char *paper, double ours,
@@ -157,8 +164,8 @@ static int figure5(const char *dir)
         x_final[k] = ok ? final_position(sim) : NAN;
         fricreg_sim_free(sim);
     }
-    char path[4096];
-    FILE *out = ok ? open_in(dir, "fig5_unforced.csv", path, sizeof path) : NULL;
+    struct cli_out o;
+    FILE *out = ok ? open_in(dir, "fig5_unforced.csv", &o) : NULL;
     if (out != NULL) {
         fprintf(out, "t,x_coulomb,x_force_balance,x_velocity_limited,x_quinn\n");
         for (size_t i = 0; i < s[0].n; i++) {
@@ -167,11 +174,10 @@ static int figure5(const char *dir)
                 fprintf(out, ",%.10g", s[k].rows[4 * i + 1]);
             fputc('\n', out);
         }
-        fclose(out);
     }
     for (int k = 0; k < 4; k++)
         free(ok ? s[k].rows : NULL);
-    if (out == NULL)
+    if (out == NULL || cli_out_commit(&o) != 0)
         return 1;
     char q[64];
     for (int k = 0; k < 3; k++) {
@@ -204,8 +210,9 @@ static int figure6(const char *dir)
     struct series s = {.width = 3, .columns = cols_x_f};
     fricreg_sim *sim = run_paper(FRICREG_SYSTEM_OSCILLATOR, FRICREG_LAW_QUINN, 0.01, 3.5, 0, &s);
     fricreg_sim_free(sim);
-    char path[4096];
-    FILE *out = sim ? open_in(dir, "fig6_force.csv", path, sizeof path) : NULL;
+    struct cli_out o;
+    FILE *out = sim ? open_in(dir, "fig6_force.csv", &o) : NULL;
+    int failed = out == NULL;
     if (out != NULL) {
         fprintf(out, "t,x,f,f_eq\n");
         for (size_t i = 0; i < s.n; i++) {
@@ -213,7 +220,7 @@ static int figure6(const char *dir)
             if (r[0] >= 2.5 - 1e-9)
                 fprintf(out, "%.10g,%.10g,%.10g,%.10g\n", r[0], r[1], r[2], r[3]);
         }
-        fclose(out);
+        failed = cli_out_commit(&o) != 0;
         const double *last = s.rows + 4 * (s.n - 1);
         table_row("Fig. 6", "f: total variation / net change, (4)", "1 (no chatter)",
                   variation_ratio(&s, 2.5), "");
@@ -221,7 +228,7 @@ static int figure6(const char *dir)
                      0);
     }
     free(s.rows);
-    return out == NULL;
+    return failed;
 }
 
 /* ---- Figure 9: the chain's dissipation against the step -------------------------------- */
@@ -258,14 +265,15 @@ static int figure9(const char *dir)
         for (int k = 0; k < 3; k++)
             if (chain_dissipation(laws[k], dts[i], &D[i][k]) != 0)
                 return 1;
-    char path[4096];
-    FILE *out = open_in(dir, "fig9_chain.csv", path, sizeof path);
+    struct cli_out o;
+    FILE *out = open_in(dir, "fig9_chain.csv", &o);
     if (out == NULL)
         return 1;
     fprintf(out, "dt,D_coulomb,D_velocity_limited,D_quinn\n");
     for (int i = 0; i < NDT; i++)
         fprintf(out, "%g,%.10g,%.10g,%.10g\n", dts[i], D[i][0], D[i][1], D[i][2]);
-    fclose(out);
+    if (cli_out_commit(&o) != 0)
+        return 1;
     const int at_001 = 6;
     table_row_vs("Fig. 9", "D, 4th cycle, (4) Quinn, dt 0.01", PAPER_D_CHAIN, D[at_001][2], 1);
     table_row_vs("Fig. 9", "D, 4th cycle, (1) Coulomb, dt 0.01", PAPER_D_CHAIN, D[at_001][0], 1);
@@ -289,8 +297,8 @@ static int figure11(const char *dir)
     double stick[2] = {0, 0};
     if (sim != NULL)
         fricreg_sim_get_stick_fraction(sim, 2, stick);
-    char path[4096];
-    FILE *out = sim ? open_in(dir, "fig11_twoblock.csv", path, sizeof path) : NULL;
+    struct cli_out o;
+    FILE *out = sim ? open_in(dir, "fig11_twoblock.csv", &o) : NULL;
     fricreg_sim_free(sim);
     if (out == NULL) {
         free(s.rows);
@@ -302,8 +310,9 @@ static int figure11(const char *dir)
         fprintf(out, "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g\n", r[0], r[1], r[2], r[3], r[4],
                 r[5], r[6]);
     }
-    fclose(out);
     free(s.rows);
+    if (cli_out_commit(&o) != 0)
+        return 1;
     table_row("Fig. 11", "stick fraction, lower interface, 4th cycle", "long sticks", stick[0], "");
     table_row("Fig. 11", "stick fraction, upper interface, 4th cycle", "long sticks", stick[1], "");
     /* The same run under the consistent near-stick law (beyond the paper), beside it. */
@@ -320,43 +329,99 @@ static int figure11(const char *dir)
 
 /* ---- Plots ----------------------------------------------------------------------------- */
 
+/* The PNGs go to outdir (a variable the command line sets; '' when a user runs the script in
+ * DIR), so that gnuplot never writes over a file of the user's. */
 static const char plot_script[] =
+    "if (!exists('outdir')) outdir = ''\n"
     "set terminal pngcairo noenhanced size 900,560\n"
     "set datafile separator ','\n"
     "set key autotitle columnhead\n"
-    "set output 'fig5_unforced.png'\n"
+    "set output outdir.'fig5_unforced.png'\n"
     "set title 'Fig. 5: unforced oscillator, dt = 0.01'\n"
     "set xlabel 't'; set ylabel 'x'\n"
     "plot for [c=2:5] 'fig5_unforced.csv' using 1:c with lines\n"
-    "set output 'fig6_force.png'\n"
+    "set output outdir.'fig6_force.png'\n"
     "set title 'Fig. 6: force near stick, law (4)'\n"
     "plot 'fig6_force.csv' using 1:2 with lines, '' using 1:3 with lines\n"
-    "set output 'fig9_chain.png'\n"
+    "set output outdir.'fig9_chain.png'\n"
     "set title 'Fig. 9: chain, D on the 4th cycle'\n"
     "set logscale x; set xlabel 'dt'; set ylabel 'D'\n"
     "plot for [c=2:4] 'fig9_chain.csv' using 1:c with linespoints\n"
     "unset logscale x\n"
-    "set output 'fig11_twoblock.png'\n"
+    "set output outdir.'fig11_twoblock.png'\n"
     "set title 'Fig. 11: two blocks on a belt, law (4), paper partition'\n"
     "set xlabel 't'; set ylabel 'relative velocity'\n"
     "plot 'fig11_twoblock.csv' using 1:4 with lines, '' using 1:5 with lines\n";
 
-/* PNGs through gnuplot, when it is installed; the CSVs stand on their own without it. */
-static void plot(const char *dir)
+/* Moves the PNGs gnuplot made in the temporary directory tmp (inside dir) to dir, and removes
+ * tmp with whatever is left in it. Returns 0 or 1 (message printed). */
+static int install_plots(const char *dir, const char *tmp, int made)
 {
-    char path[4096], command[8400];
-    FILE *gp = open_in(dir, "plots.gp", path, sizeof path);
-    if (gp == NULL)
-        return;
-    fputs(plot_script, gp);
-    fclose(gp);
-    if (system("command -v gnuplot >/dev/null 2>&1") != 0) {
-        printf("gnuplot not found: CSVs and %s written, no PNGs\n", path);
-        return;
+    int failed = 0;
+    for (size_t k = N_CSV; k < N_OUTPUTS; k++) {
+        char from[2 * CLI_OUT_PATH];
+        snprintf(from, sizeof from, "%s/%s", tmp, outputs[k]);
+        if (made && !failed)
+            failed = cli_out_install(from, dir, outputs[k]) != 0;
+        else
+            unlink(from);
     }
-    snprintf(command, sizeof command, "cd '%s' && gnuplot plots.gp", dir);
-    if (system(command) != 0)
-        fprintf(stderr, "fricreg-sim: reproduce: gnuplot failed on %s\n", path);
+    rmdir(tmp);
+    return failed;
+}
+
+/* PNGs through gnuplot, when it is installed; the CSVs stand on their own without it.
+ * Returns 0, or -1 on failure (message printed). */
+static int plot(const char *dir)
+{
+    struct cli_out o;
+    FILE *gp = open_in(dir, "plots.gp", &o);
+    if (gp == NULL)
+        return -1;
+    fputs(plot_script, gp);
+    if (cli_out_commit(&o) != 0)
+        return -1;
+    if (system("command -v gnuplot >/dev/null 2>&1") != 0) {
+        printf("gnuplot not found: CSVs and %s written, no PNGs\n", o.path);
+        return 0;
+    }
+    char tmp[CLI_OUT_PATH], command[3 * CLI_OUT_PATH];
+    snprintf(tmp, sizeof tmp, "%s/.fricreg-plots.XXXXXX", dir);
+    if (mkdtemp(tmp) == NULL) {
+        fprintf(stderr, "fricreg-sim: reproduce: cannot create %s: %s\n", tmp, strerror(errno));
+        return -1;
+    }
+    /* "--" and the quotes: a directory named like an option or with spaces is still one. */
+    snprintf(command, sizeof command, "cd -- '%s' && gnuplot -e \"outdir='%s/'\" plots.gp", dir,
+             strrchr(tmp, '/') + 1);
+    int made = system(command) == 0;
+    if (!made)
+        fprintf(stderr, "fricreg-sim: reproduce: gnuplot failed on %s: no PNGs\n", o.path);
+    int failed = install_plots(dir, tmp, made);
+    return made && !failed ? 0 : -1;
+}
+
+/* --out: a directory, created if absent, where no file reproduce writes belongs to the user
+ * (out_file.h). Returns 0 or CLI_EXIT_USAGE (message printed). */
+static int check_out_dir(const char *dir)
+{
+    struct stat st;
+    if (dir == NULL || *dir == '\0' || strchr(dir, '\'') != NULL || strchr(dir, '"') != NULL) {
+        fprintf(stderr, "fricreg-sim: --out: a directory name is required (no quotes)\n");
+        return CLI_EXIT_USAGE;
+    }
+    if (mkdir(dir, 0777) != 0 && errno != EEXIST) {
+        fprintf(stderr, "fricreg-sim: --out: cannot create %s: %s\n", dir, strerror(errno));
+        return CLI_EXIT_USAGE;
+    }
+    if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
+        fprintf(stderr, "fricreg-sim: --out: %s is not a directory\n", dir);
+        return CLI_EXIT_USAGE;
+    }
+    for (size_t k = 0; k < N_OUTPUTS; k++)
+        if (!cli_out_may_replace(dir, outputs[k]))
+            return CLI_EXIT_USAGE;
+    return cli_out_may_replace(dir, CLI_OUT_MANIFEST) ? 0 : CLI_EXIT_USAGE;
 }
 
 int cli_reproduce(int argc, char **argv)
@@ -372,14 +437,9 @@ int cli_reproduce(int argc, char **argv)
             return CLI_EXIT_USAGE;
         }
     }
-    if (dir == NULL || *dir == '\0' || strchr(dir, '\'') != NULL) {
-        fprintf(stderr, "fricreg-sim: --out: a directory name is required (no quotes)\n");
-        return CLI_EXIT_USAGE;
-    }
-    if (mkdir(dir, 0777) != 0 && errno != EEXIST) {
-        fprintf(stderr, "fricreg-sim: --out: cannot create %s: %s\n", dir, strerror(errno));
-        return CLI_EXIT_USAGE;
-    }
+    int status = check_out_dir(dir);
+    if (status != 0)
+        return status;
     printf("fricreg %s: reproduction of Quinn (2004), RK4, paper's eps rules; files in %s\n\n",
            fricreg_version(), dir);
     printf("%-7s %-44s %-16s %-12s %s\n", "figure", "quantity", "paper", "ours", "difference");
@@ -387,6 +447,19 @@ int cli_reproduce(int argc, char **argv)
     if (failed)
         return CLI_EXIT_RUN;
     putchar('\n');
-    plot(dir);
-    return 0;
+    int plotted = plot(dir);
+    /* The manifest lists the outputs now in dir, so that a rerun may replace exactly those:
+     * each was written by this run, or listed before (check_out_dir refused any other). */
+    const char *present[N_OUTPUTS];
+    size_t n = 0;
+    for (size_t k = 0; k < N_OUTPUTS; k++) {
+        char path[CLI_OUT_PATH];
+        struct stat st;
+        snprintf(path, sizeof path, "%s/%s", dir, outputs[k]);
+        if (lstat(path, &st) == 0 && S_ISREG(st.st_mode))
+            present[n++] = outputs[k];
+    }
+    if (cli_out_write_manifest(dir, present, n) != 0)
+        return CLI_EXIT_RUN;
+    return plotted == 0 ? 0 : CLI_EXIT_RUN;
 }

@@ -164,7 +164,7 @@ static int check_options(const struct structure_options *o)
     if ((o->rtol > 0.0 || o->atol > 0.0) && o->scheme != SCHEME_GSL)
         return cli_usage_error(o->rtol > 0.0 ? "--rtol" : "--atol",
                                "only GSL's steppers are adaptive");
-    return 0;
+    return o->scheme == SCHEME_GSL ? cli_check_tolerances(o->integrator, o->rtol, o->atol) : 0;
 }
 
 static int parse_structure(int argc, char **argv, struct structure_options *o)

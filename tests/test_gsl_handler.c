@@ -1,0 +1,250 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* test_gsl_handler.c — fricreg leaves GSL's process-wide error handler alone (issue 11).
+ *
+ * The program installs its own GSL handler once, which counts its calls, then runs every
+ * entry-point family — laws, a context with dense W (positive definite, singular, indefinite,
+ * near 1e308), the tangent and stick stiffness, simulations of each system with explicit and
+ * implicit GSL steppers (and a run the step guard refuses), the exact solver (solved, refused, near overflow), a
+ * structure (indefinite and singular mass, Newmark, central difference, a GSL stepper) — and
+ * after each call checks that the handler in place is still the program's
+ * (gsl_set_error_handler returns the one it replaces) and that it was never called: fricreg's
+ * own failures come back as status codes, not through GSL's handler. It also counts every
+ * call fricreg makes to gsl_set_error_handler and gsl_set_error_handler_off: this program
+ * defines both (exported with -rdynamic, so they interpose on libgsl's for libfricreg too) and
+ * passes them on. The previous code swapped the handler around every call and put it back,
+ * which only a second thread could see; here the count catches it in one. */
+#define _GNU_SOURCE
+#include <check.h>
+#include <dlfcn.h>
+#include <math.h>
+#include <stdlib.h>
+
+#include <gsl/gsl_errno.h>
+
+#include "fricreg_exact.h"
+#include "fricreg_sim.h"
+#include "fricreg_structure.h"
+
+static int handler_calls, handler_swaps;
+
+typedef gsl_error_handler_t *set_handler_fn(gsl_error_handler_t *);
+typedef gsl_error_handler_t *set_handler_off_fn(void);
+
+/* libgsl's gsl_set_error_handler, for this program's own calls (not counted). */
+static gsl_error_handler_t *real_set_handler(gsl_error_handler_t *handler)
+{
+    set_handler_fn *real = (set_handler_fn *)dlsym(RTLD_NEXT, "gsl_set_error_handler");
+    ck_assert_ptr_nonnull(real);
+    return real(handler);
+}
+
+/* The interposed pair: anyone else's call (fricreg's) is counted, then passed on. */
+gsl_error_handler_t *gsl_set_error_handler(gsl_error_handler_t *handler)
+{
+    handler_swaps++;
+    return real_set_handler(handler);
+}
+
+gsl_error_handler_t *gsl_set_error_handler_off(void)
+{
+    handler_swaps++;
+    set_handler_off_fn *real = (set_handler_off_fn *)dlsym(RTLD_NEXT, "gsl_set_error_handler_off");
+    ck_assert_ptr_nonnull(real);
+    return real();
+}
+
+static void users_handler(const char *reason, const char *file, int line, int gsl_errno)
+{
+    (void)reason, (void)file, (void)line, (void)gsl_errno;
+    handler_calls++;
+}
+
+/* The handler is still the program's, fricreg never set it, and never reported to it. */
+#define assert_handler_intact(what)                                                       \
+    do {                                                                                  \
+        gsl_error_handler_t *now = real_set_handler(users_handler);                       \
+        ck_assert_msg(now == users_handler, "%s: GSL's handler was replaced", what);      \
+        ck_assert_msg(handler_swaps == 0, "%s: fricreg set GSL's handler %d times", what, \
+                      handler_swaps);                                                     \
+        ck_assert_msg(handler_calls == 0, "%s: GSL's handler was called %d times", what,  \
+                      handler_calls);                                                     \
+    } while (0)
+
+static void setup(void)
+{
+    real_set_handler(users_handler);
+    handler_calls = handler_swaps = 0;
+}
+
+START_TEST(laws)
+{
+    double f = 0.0;
+    for (int law = FRICREG_LAW_COULOMB; law <= FRICREG_LAW_QUINN; law++) {
+        ck_assert_int_eq(fricreg_law_eval(law, 0.2385, 0.7, 1.3, 0.01, &f), FRICREG_OK);
+        ck_assert_int_ne(fricreg_law_eval(law, NAN, 0.7, 1.3, 0.01, &f), FRICREG_OK);
+        ck_assert_int_ne(fricreg_law_eval(law, 0.0, 0.7, -1.0, 0.01, &f), FRICREG_OK);
+        assert_handler_intact("fricreg_law_eval");
+    }
+}
+END_TEST
+
+/* A 3-contact context with W, evaluated at rest (near-stick block = all of W). */
+static int ctx_with_W(const double W[9], int partition, int *eval_status)
+{
+    fricreg_ctx *ctx = NULL;
+    ck_assert_int_eq(fricreg_ctx_create(3, &ctx), FRICREG_OK);
+    const double mun[3] = {1.3, 0.7, 2.385}, zdot[3] = {0.0, 0.0, 0.0};
+    const double a_free[3] = {0.5, -0.25, 3.0};
+    double f[3], f_eq[3], Fz[9], Fa[9], lambda;
+    fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, 0.02);
+    fricreg_ctx_set_bounds(ctx, 3, mun);
+    fricreg_ctx_set_partition(ctx, partition);
+    int status = fricreg_ctx_set_coupling_dense(ctx, 3, W);
+    assert_handler_intact("fricreg_ctx_set_coupling_dense");
+    *eval_status = fricreg_ctx_eval(ctx, 3, zdot, a_free, f, f_eq);
+    assert_handler_intact("fricreg_ctx_eval");
+    fricreg_ctx_tangent(ctx, 3, Fz, Fa);
+    assert_handler_intact("fricreg_ctx_tangent");
+    fricreg_ctx_stick_stiffness(ctx, &lambda);
+    assert_handler_intact("fricreg_ctx_stick_stiffness");
+    fricreg_ctx_free(ctx);
+    return status;
+}
+
+START_TEST(contexts)
+{
+    static const double spd[9] = {2.0, 0.5, 0.1, 0.5, 1.5, 0.3, 0.1, 0.3, 1.2};
+    static const double singular[9] = {1.0, 1.0, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0, 2.385};
+    static const double indefinite[9] = {1.0, 2.0, 0.0, 2.0, 1.0, 0.0, 0.0, 0.0, 1.0};
+    static const double huge[9] = {1e307, 1e308, 0.0, 1e308, 1e307, 0.0, 0.0, 0.0, 1e308};
+    static const double nonsym[9] = {2.0, 0.5, 0.1, 0.4, 1.5, 0.3, 0.1, 0.3, 1.2};
+    int eval;
+    for (int partition = FRICREG_PARTITION_CONSISTENT; partition <= FRICREG_PARTITION_PAPER;
+         partition++) {
+        ck_assert_int_eq(ctx_with_W(spd, partition, &eval), FRICREG_OK);
+        ck_assert_int_eq(eval, FRICREG_OK);
+        ck_assert_int_eq(ctx_with_W(singular, partition, &eval), FRICREG_OK);
+        ck_assert_int_eq(eval, FRICREG_ESINGULAR); /* redundant contacts 1 and 2 */
+        ck_assert_int_eq(ctx_with_W(indefinite, partition, &eval), FRICREG_ENOTPSD);
+        ck_assert_int_eq(ctx_with_W(huge, partition, &eval), FRICREG_ENOTPSD);
+        ck_assert_int_eq(ctx_with_W(nonsym, partition, &eval), FRICREG_ENOTSYM);
+    }
+}
+END_TEST
+
+/* Each system with each stepper family: GSL's explicit rk4 (fixed), rkf45 (adaptive), the
+ * implicit rk4imp and bsimp, the multistep msadams and msbdf; and runs that fail (a step too
+ * large for the guard). */
+START_TEST(simulations)
+{
+    static const int integrators[][2] = {{FRICREG_INT_RK4_GSL, 0}, {FRICREG_INT_RKF45, 1},
+                                         {FRICREG_INT_RK4IMP, 0},  {FRICREG_INT_BSIMP, 1},
+                                         {FRICREG_INT_MSADAMS, 1}, {FRICREG_INT_MSBDF, 1},
+                                         {FRICREG_INT_RK4, 0}};
+    const int system = FRICREG_SYSTEM_OSCILLATOR + _i;
+    for (size_t k = 0; k < sizeof integrators / sizeof integrators[0]; k++) {
+        fricreg_sim *sim = NULL;
+        ck_assert_int_eq(fricreg_sim_create(system, &sim), FRICREG_OK);
+        double rtol = integrators[k][1] ? 1e-6 : 0.0, atol = integrators[k][1] ? 1e-9 : 0.0;
+        ck_assert_int_eq(fricreg_sim_set_integrator(sim, integrators[k][0], 0.005, rtol, atol),
+                         FRICREG_OK);
+        int status = fricreg_sim_run(sim, 2.385);
+        ck_assert_msg(status == FRICREG_OK, "system %d, integrator %d: %s", system,
+                      integrators[k][0], fricreg_sim_errmsg(sim));
+        assert_handler_intact("fricreg_sim_run");
+        fricreg_sim_free(sim);
+    }
+    fricreg_sim *sim = NULL;
+    ck_assert_int_eq(fricreg_sim_create(system, &sim), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4_GSL, 2.0, 0.0, 0.0),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run(sim, 20.0), FRICREG_ESTEP); /* beyond the step guard */
+    assert_handler_intact("fricreg_sim_run, refused step");
+    fricreg_sim_free(sim);
+}
+END_TEST
+
+START_TEST(exact_solver)
+{
+    fricreg_exact *ex = NULL;
+    ck_assert_int_eq(fricreg_exact_create(2.0, 0.5, 1.0, 0.0, 0.0, &ex), FRICREG_OK);
+    ck_assert_int_eq(fricreg_exact_run_cycles(ex, 20), FRICREG_OK);
+    assert_handler_intact("fricreg_exact_run");
+    fricreg_exact_free(ex);
+    ck_assert_int_eq(fricreg_exact_create(2.0, 1e-300, 1.0, 0.0, 0.0, &ex), FRICREG_OK);
+    ck_assert_int_eq(fricreg_exact_run_cycles(ex, 1), FRICREG_EINVAL);
+    assert_handler_intact("fricreg_exact_run, refused");
+    fricreg_exact_free(ex);
+    if (fricreg_exact_solve(1e308, 1e6, 0.0, -1e308, 1e308, 1.0, &ex) == FRICREG_OK)
+        fricreg_exact_free(ex);
+    assert_handler_intact("fricreg_exact_solve, near overflow");
+}
+END_TEST
+
+/* Two masses on springs, one contact on the first: M, K, J. */
+static fricreg_structure *structure(void)
+{
+    static const double M[4] = {2.0, 0.0, 0.0, 1.0}, K[4] = {30.0, -10.0, -10.0, 10.0};
+    static const double J[2] = {1.0, 0.0}, mun[1] = {0.3}, p[2] = {0.0, 1.0};
+    static const double load[3] = {0.0, 2.385, 0.0};
+    fricreg_structure *s = NULL;
+    ck_assert_int_eq(fricreg_structure_create(2, 1, &s), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_mass(s, 2, M), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_stiffness(s, 2, K), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_contacts(s, 1, 2, J), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_bounds(s, 1, mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_load(s, 2, p, 0.0, 0.5, 3, load), FRICREG_OK);
+    return s;
+}
+
+START_TEST(structures)
+{
+    static const double indefinite[4] = {1.0, 2.0, 2.0, 1.0}, singular[4] = {1.0, 1.0, 1.0, 1.0};
+    static const double negative[4] = {-1.0, 0.0, 0.0, 1.0};
+    fricreg_structure *s = structure();
+    ck_assert_int_eq(fricreg_structure_set_mass(s, 2, indefinite), FRICREG_ENOTPSD);
+    assert_handler_intact("fricreg_structure_set_mass, indefinite");
+    ck_assert_int_eq(fricreg_structure_set_mass(s, 2, singular), FRICREG_ENOTPSD);
+    assert_handler_intact("fricreg_structure_set_mass, singular");
+    ck_assert_int_eq(fricreg_structure_set_mass(s, 2, negative), FRICREG_ENOTPSD);
+    assert_handler_intact("fricreg_structure_set_mass, negative");
+    ck_assert_int_eq(fricreg_structure_run(s, 0.01, 1.0), FRICREG_OK);
+    assert_handler_intact("fricreg_structure_run, Newmark");
+    ck_assert_int_eq(fricreg_structure_set_central_difference(s), FRICREG_OK);
+    int status = fricreg_structure_run(s, 0.01, 2.0);
+    ck_assert_msg(status == FRICREG_OK || status == FRICREG_ESTEP, "%s",
+                  fricreg_structure_errmsg(s));
+    assert_handler_intact("fricreg_structure_run, central difference");
+    ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_MSBDF, 0.01, 1e-6, 1e-9, 3.0),
+                     FRICREG_OK);
+    assert_handler_intact("fricreg_structure_run_ode, msbdf");
+    ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_RK4IMP, 0.01, 0.0, 0.0, 4.0),
+                     FRICREG_OK);
+    assert_handler_intact("fricreg_structure_run_ode, rk4imp");
+    fricreg_structure_free(s);
+}
+END_TEST
+
+static Suite *handler_suite(void)
+{
+    Suite *s = suite_create("gsl_handler");
+    TCase *tc = tcase_create("families");
+    tcase_add_checked_fixture(tc, setup, NULL);
+    tcase_set_timeout(tc, 120.0);
+    tcase_add_test(tc, laws);
+    tcase_add_test(tc, contexts);
+    tcase_add_loop_test(tc, simulations, 0, 3);
+    tcase_add_test(tc, exact_solver);
+    tcase_add_test(tc, structures);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+int main(void)
+{
+    SRunner *sr = srunner_create(handler_suite());
+    srunner_run_all(sr, CK_NORMAL);
+    int failed = srunner_ntests_failed(sr);
+    srunner_free(sr);
+    return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
