@@ -23,8 +23,10 @@
 !     c_associated, c_f_pointer, c_loc, c_funloc;
 !   - the idiomatic layer below: the types fricreg_context, fricreg_simulation,
 !     fricreg_exact_solution and fricreg_structure (the last three with the drivers), their
-!     common parent fricreg_object, the generic law_eval, and fricreg_error_string,
-!     fricreg_version_string, fricreg_integrator_string, fricreg_integrator_id.
+!     common parent fricreg_object, the generics law_eval, disk_eval, stribeck_eval and
+!     stribeck_disk_eval, and fricreg_error_string, fricreg_version_string,
+!     fricreg_law_string, fricreg_law_id, fricreg_disk_law_string, fricreg_disk_law_id,
+!     fricreg_integrator_string, fricreg_integrator_id.
 !
 ! Conventions of the idiomatic layer:
 !   - Every procedure that can fail is a function returning a status, integer(c_int):
@@ -64,6 +66,8 @@ module fricreg
   ! ---- Public: the idiomatic layer ------------------------------------------------------------
   public :: fricreg_object, fricreg_context, law_eval, fricreg_error_string, &
             fricreg_version_string, fricreg_law_string, fricreg_law_id
+  public :: disk_eval, stribeck_eval, stribeck_disk_eval, fricreg_disk_law_string, &
+            fricreg_disk_law_id
 #ifdef FRICREG_HAVE_SIM
   include 'fricreg_drivers_h_public.inc'
   public :: fricreg_sim_observer
@@ -114,6 +118,7 @@ module fricreg
     procedure :: set_coupling_diagonal => ctx_set_coupling_diagonal
     procedure :: set_coupling_dense => ctx_set_coupling_dense
     procedure :: set_partition => ctx_set_partition
+    procedure :: set_keep_tangent => ctx_set_keep_tangent
     procedure :: eval => ctx_eval
     procedure :: tangent => ctx_tangent
     procedure :: stick_stiffness => ctx_stick_stiffness
@@ -130,6 +135,37 @@ module fricreg
   !> is FRICREG_ENULL. f is written only on success.
   interface law_eval
     module procedure law_eval_scalar, law_eval_array
+  end interface
+
+  !> One 2-D friction law (FRICREG_DISK_*, include/fricreg_disk.h), C's fricreg_disk_eval /
+  !> fricreg_disk_eval_batch, in the order of the batch function:
+  !>   status = disk_eval(law, eps, v, f_eq, mun, f)
+  !> one contact: v(2), f_eq(2), f(2) and a scalar mun; m contacts: v(2, m), f_eq(2, m),
+  !> f(2, m) (column i is contact i: a (2, m) Fortran array is C's interleaved layout, passed
+  !> with no copy) and mun(m). Any other shape is FRICREG_ESIZE. f_eq may be omitted (then
+  !> pass mun= and f= by keyword) for FRICREG_DISK_COULOMB, which does not read it; for the
+  !> others its absence is FRICREG_ENULL. f is written only on success.
+  interface disk_eval
+    module procedure disk_eval_one, disk_eval_batch
+  end interface
+
+  !> The Stribeck law at 1-D contacts (include/fricreg_stribeck.h), C's fricreg_stribeck_eval /
+  !> fricreg_stribeck_eval_batch, in the order of the batch function:
+  !>   status = stribeck_eval(eps, v, f_eq, fs, fk, vs, delta, f)
+  !> with v, f_eq, fs, fk, vs, delta, f all scalars or all rank-1 arrays of one size m (else
+  !> FRICREG_ESIZE): static bound fs >= kinetic force fk >= 0, Stribeck velocity vs > 0,
+  !> exponent delta > 0, each contact its own. f is written only on success.
+  interface stribeck_eval
+    module procedure stribeck_eval_scalar, stribeck_eval_array
+  end interface
+
+  !> The 2-D Stribeck law, C's fricreg_stribeck_disk_eval / fricreg_stribeck_disk_eval_batch:
+  !>   status = stribeck_disk_eval(eps, v, f_eq, fs, fk, vs, delta, f)
+  !> one contact: v(2), f_eq(2), f(2) and scalar parameters; m contacts: v(2, m), f_eq(2, m),
+  !> f(2, m) (column i is contact i, no copy) and fs(m), fk(m), vs(m), delta(m). Any other
+  !> shape is FRICREG_ESIZE. f is written only on success.
+  interface stribeck_disk_eval
+    module procedure stribeck_disk_eval_one, stribeck_disk_eval_batch
   end interface
 
 #ifdef FRICREG_HAVE_SIM
@@ -242,6 +278,20 @@ contains
     character(len=*), intent(in) :: name
     fricreg_law_id = fricreg_law_from_name(trim(name) // c_null_char)
   end function fricreg_law_id
+
+  !> The name of a 2-D law (FRICREG_DISK_*: 'coulomb', ..., 'quinn-nested'; C's
+  !> fricreg_disk_law_name), '' if unknown.
+  function fricreg_disk_law_string(law) result(name)
+    integer(c_int), intent(in) :: law
+    character(len=:), allocatable :: name
+    name = fricreg_c_string(fricreg_disk_law_name(law))
+  end function fricreg_disk_law_string
+
+  !> The 2-D law (FRICREG_DISK_*) named name (trailing blanks ignored), 0 if there is none.
+  integer(c_int) function fricreg_disk_law_id(name)
+    character(len=*), intent(in) :: name
+    fricreg_disk_law_id = fricreg_disk_law_from_name(trim(name) // c_null_char)
+  end function fricreg_disk_law_id
 
   pure function as_size(n) result(m)
     integer, intent(in) :: n
@@ -438,6 +488,89 @@ contains
     status = fricreg_law_eval_batch(law, eps, as_size(n), v, f_eq, mun, f)
   end function law_eval_array
 
+  !> Whether a holds m 2-D vectors, as (2, m).
+  pure logical function is_pairs(a, m)
+    real(c_double), intent(in) :: a(:, :)
+    integer, intent(in) :: m
+    is_pairs = size(a, 1) == 2 .and. size(a, 2) == m
+  end function is_pairs
+
+  function disk_eval_one(law, eps, v, f_eq, mun, f) result(status)
+    integer(c_int), intent(in) :: law
+    real(c_double), intent(in) :: eps, mun
+    real(c_double), intent(in), contiguous :: v(:)
+    real(c_double), intent(in), contiguous, optional :: f_eq(:)
+    real(c_double), intent(inout), contiguous :: f(:)
+    integer(c_int) :: status
+    status = FRICREG_ESIZE
+    if (size(v) /= 2 .or. size(f) /= 2) return
+    if (present(f_eq)) then
+      if (size(f_eq) /= 2) return
+    end if
+    status = fricreg_disk_eval(law, v, f_eq, mun, eps, f)
+  end function disk_eval_one
+
+  function disk_eval_batch(law, eps, v, f_eq, mun, f) result(status)
+    integer(c_int), intent(in) :: law
+    real(c_double), intent(in) :: eps
+    real(c_double), intent(in), contiguous :: v(:, :), mun(:)
+    real(c_double), intent(in), contiguous, optional :: f_eq(:, :)
+    real(c_double), intent(inout), contiguous :: f(:, :)
+    integer(c_int) :: status
+    integer :: m
+    m = size(mun)
+    status = FRICREG_ESIZE
+    if (.not. (is_pairs(v, m) .and. is_pairs(f, m))) return
+    if (present(f_eq)) then
+      if (.not. is_pairs(f_eq, m)) return
+    end if
+    status = fricreg_disk_eval_batch(law, eps, as_size(m), v, f_eq, mun, f)
+  end function disk_eval_batch
+
+  function stribeck_eval_scalar(eps, v, f_eq, fs, fk, vs, delta, f) result(status)
+    real(c_double), intent(in) :: eps, v, f_eq, fs, fk, vs, delta
+    real(c_double), intent(inout) :: f
+    integer(c_int) :: status
+    status = fricreg_stribeck_eval(v, f_eq, fs, fk, vs, delta, eps, f)
+  end function stribeck_eval_scalar
+
+  function stribeck_eval_array(eps, v, f_eq, fs, fk, vs, delta, f) result(status)
+    real(c_double), intent(in) :: eps
+    real(c_double), intent(in), contiguous :: v(:), f_eq(:), fs(:), fk(:), vs(:), delta(:)
+    real(c_double), intent(inout), contiguous :: f(:)
+    integer(c_int) :: status
+    integer :: m
+    m = size(v)
+    status = FRICREG_ESIZE
+    if (size(f_eq) /= m .or. size(fs) /= m .or. size(fk) /= m .or. size(vs) /= m .or. &
+        size(delta) /= m .or. size(f) /= m) return
+    status = fricreg_stribeck_eval_batch(eps, as_size(m), v, f_eq, fs, fk, vs, delta, f)
+  end function stribeck_eval_array
+
+  function stribeck_disk_eval_one(eps, v, f_eq, fs, fk, vs, delta, f) result(status)
+    real(c_double), intent(in) :: eps, fs, fk, vs, delta
+    real(c_double), intent(in), contiguous :: v(:), f_eq(:)
+    real(c_double), intent(inout), contiguous :: f(:)
+    integer(c_int) :: status
+    status = FRICREG_ESIZE
+    if (size(v) /= 2 .or. size(f_eq) /= 2 .or. size(f) /= 2) return
+    status = fricreg_stribeck_disk_eval(v, f_eq, fs, fk, vs, delta, eps, f)
+  end function stribeck_disk_eval_one
+
+  function stribeck_disk_eval_batch(eps, v, f_eq, fs, fk, vs, delta, f) result(status)
+    real(c_double), intent(in) :: eps
+    real(c_double), intent(in), contiguous :: v(:, :), f_eq(:, :), fs(:), fk(:), vs(:), delta(:)
+    real(c_double), intent(inout), contiguous :: f(:, :)
+    integer(c_int) :: status
+    integer :: m
+    m = size(fs)
+    status = FRICREG_ESIZE
+    if (size(fk) /= m .or. size(vs) /= m .or. size(delta) /= m) return
+    if (.not. (is_pairs(v, m) .and. is_pairs(f_eq, m) .and. &
+               is_pairs(f, m))) return
+    status = fricreg_stribeck_disk_eval_batch(eps, as_size(m), v, f_eq, fs, fk, vs, delta, f)
+  end function stribeck_disk_eval_batch
+
   ! ---- Context -----------------------------------------------------------------------------
 
   !> Create the C context for m >= 1 contacts, with its defaults: law (4) Quinn, eps = 1e-3,
@@ -536,6 +669,20 @@ contains
     status = self%ready('set_partition', 'context')
     if (status == FRICREG_OK) status = self%record(fricreg_ctx_set_partition(self%ptr, partition))
   end function ctx_set_partition
+
+  !> Whether eval keeps what tangent needs (C's fricreg_ctx_set_keep_tangent): .true. (the
+  !> default), or .false. for a caller that never asks for the tangent (an explicit
+  !> integrator), which spares eval two stores per contact. While off, tangent returns
+  !> FRICREG_EINVAL; after turning it back on, tangent works from the next successful eval.
+  !> f and f_eq are the same to the bit either way. Discards the last eval's tangent.
+  function ctx_set_keep_tangent(self, keep) result(status)
+    class(fricreg_context), intent(inout) :: self
+    logical, intent(in) :: keep
+    integer(c_int) :: status
+    status = self%ready('set_keep_tangent', 'context')
+    if (status == FRICREG_OK) status = &
+      self%record(fricreg_ctx_set_keep_tangent(self%ptr, merge(1_c_int, 0_c_int, keep)))
+  end function ctx_set_keep_tangent
 
   !> The stick zone's stiffness lambda (1/time): a fixed explicit step dt is stable there when
   !> dt*lambda is within the stepper's real-axis bound (C's fricreg_ctx_stick_stiffness).

@@ -1,5 +1,6 @@
 ! SPDX-License-Identifier: GPL-3.0-or-later
-! fricreg_f77.f90 — module-free entry points for Fortran 77 callers: laws and contexts.
+! fricreg_f77.f90 — module-free entry points for Fortran 77 callers: laws (1-D, 2-D, Stribeck)
+! and contexts.
 !
 ! Plain external subroutines (no module, no interface needed), every argument by reference,
 ! names of at most six characters, and an INTEGER status STAT last (FRICREG_OK = 0 or a
@@ -64,6 +65,59 @@ subroutine frlawb(law, eps, m, v, feq, mun, f, stat)
   end if
   stat = int(fricreg_law_eval_batch(int(law, c_int), eps, int(m, c_size_t), v, feq, mun, f))
 end subroutine frlawb
+
+!> FRDISK(LAW, EPS, M, V, FEQ, MUN, F, STAT): one 2-D law (FRICREG_DISK_*) over M contacts
+!> (fricreg_disk_eval_batch): V(2, M), FEQ(2, M) and F(2, M), column I contact I (C's
+!> interleaved layout), MUN(M). FEQ is always read and validated, even by
+!> FRICREG_DISK_COULOMB, which does not use it: pass zeros there.
+subroutine frdisk(law, eps, m, v, feq, mun, f, stat)
+  use fricreg_c
+  implicit none
+  integer, intent(in) :: law, m
+  double precision, intent(in) :: eps, v(*), feq(*), mun(*)
+  double precision, intent(inout) :: f(*)
+  integer, intent(out) :: stat
+  if (m < 0) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  stat = int(fricreg_disk_eval_batch(int(law, c_int), eps, int(m, c_size_t), v, feq, mun, f))
+end subroutine frdisk
+
+!> FRSTRB(EPS, M, V, FEQ, FS, FK, VS, DELTA, F, STAT): the Stribeck law over M 1-D contacts
+!> (fricreg_stribeck_eval_batch), every array of length M, each contact its own static bound
+!> FS, kinetic force FK <= FS, Stribeck velocity VS > 0 and exponent DELTA > 0.
+subroutine frstrb(eps, m, v, feq, fs, fk, vs, delta, f, stat)
+  use fricreg_c
+  implicit none
+  integer, intent(in) :: m
+  double precision, intent(in) :: eps, v(*), feq(*), fs(*), fk(*), vs(*), delta(*)
+  double precision, intent(inout) :: f(*)
+  integer, intent(out) :: stat
+  if (m < 0) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  stat = int(fricreg_stribeck_eval_batch(eps, int(m, c_size_t), v, feq, fs, fk, vs, delta, f))
+end subroutine frstrb
+
+!> FRSTRD(EPS, M, V, FEQ, FS, FK, VS, DELTA, F, STAT): the 2-D Stribeck law over M contacts
+!> (fricreg_stribeck_disk_eval_batch): V(2, M), FEQ(2, M), F(2, M) as for FRDISK; FS, FK,
+!> VS, DELTA of length M as for FRSTRB.
+subroutine frstrd(eps, m, v, feq, fs, fk, vs, delta, f, stat)
+  use fricreg_c
+  implicit none
+  integer, intent(in) :: m
+  double precision, intent(in) :: eps, v(*), feq(*), fs(*), fk(*), vs(*), delta(*)
+  double precision, intent(inout) :: f(*)
+  integer, intent(out) :: stat
+  if (m < 0) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  stat = int(fricreg_stribeck_disk_eval_batch(eps, int(m, c_size_t), v, feq, fs, fk, vs, &
+                                              delta, f))
+end subroutine frstrd
 
 !> FRCTXC(M, H, STAT): create a context of M contacts into handle H (fricreg_ctx_create).
 subroutine frctxc(m, h, stat)
