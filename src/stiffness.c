@@ -40,25 +40,36 @@ static double diagonal_rate(const fricreg_ctx *ctx)
 }
 
 /* Largest eigenvalue of D^1/2 W D^1/2 (symmetric positive semidefinite), by GSL, with the
- * slopes of `law`. */
+ * slopes of `law`. Every slope is k mun_i/eps with one k for the law, so the matrix is
+ * (k/eps) (mun_max W_max) A with a_ij = sqrt(mun_i/mun_max) (W_ij/W_max) sqrt(mun_j/mun_max),
+ * |a_ij| <= 1: formed directly, mun near DBL_MAX or eps near DBL_MIN made Inf and NaN entries,
+ * on which GSL's eigensolver never returned (found by tests/fuzz/fuzz_ctx.c). The scale is
+ * applied to the eigenvalue last, where it may round to +Inf: an honest "too stiff". */
 static int coupled_rate(fricreg_ctx *ctx, int law, double *lambda)
 {
     size_t m = ctx->m;
+    double k = law_slope(law, 1.0, 1.0), mun_max = 0.0, w_max = 0.0;
+    for (size_t i = 0; i < m; i++)
+        mun_max = fmax(mun_max, ctx->mun[i]);
+    for (size_t i = 0; i < m * m; i++)
+        w_max = fmax(w_max, fabs(ctx->W[i]));
+    *lambda = 0.0;
+    if (k == 0.0 || mun_max == 0.0) /* no slope at rest: no decay rate */
+        return FRICREG_OK;
     struct fr_eigen e;
     if (fr_eigen_alloc(&e, m) != FRICREG_OK)
         return FRICREG_ENOMEM;
     for (size_t i = 0; i < m; i++) {
-        double si = sqrt(law_slope(law, ctx->mun[i], ctx->eps));
-        for (size_t j = 0; j < m; j++) {
-            double sj = sqrt(law_slope(law, ctx->mun[j], ctx->eps));
-            e.a[i * m + j] = si * ctx->W[i * m + j] * sj;
-        }
+        double si = sqrt(ctx->mun[i] / mun_max);
+        for (size_t j = 0; j < m; j++)
+            e.a[i * m + j] = si * (ctx->W[i * m + j] / w_max) * sqrt(ctx->mun[j] / mun_max);
     }
     int status = fr_eigen_solve(&e) ? FRICREG_ENOMEM : FRICREG_OK; /* fails only on bad sizes */
-    *lambda = 0.0;
+    double largest = 0.0;
     for (size_t i = 0; i < m; i++)
-        *lambda = fmax(*lambda, e.eval[i]);
+        largest = fmax(largest, e.eval[i]);
     fr_eigen_free(&e);
+    *lambda = largest * w_max * mun_max * (k / ctx->eps);
     return status;
 }
 

@@ -1051,6 +1051,34 @@ START_TEST(dense_feq_overflow_is_refused)
 }
 END_TEST
 
+/* The stick stiffness with slopes mun/eps that overflow: mun = 1e10, eps = 1e-300 gives
+ * s = 1e310 = Inf, and D^1/2 W D^1/2 with W_01 = 0 had Inf and NaN (Inf * 0) entries, on which
+ * GSL's eigensolver never returned (fuzz_ctx; the call hung). Now the matrix is scaled first:
+ * lambda = 2 (W_11 s_1, the largest) * 1e10 / 1e-300 rounds to +Inf, an honest "too stiff",
+ * and with a finite slope the scaling is exact: W = [[1, -1], [-1, 2]], mun = (0.5, 0.25),
+ * eps = 0.02, law (3): D = diag(25, 12.5), eigenvalues 25 +- sqrt(312.5) = 25 +- 17.67767. */
+START_TEST(stick_stiffness_with_overflowing_slopes)
+{
+    fricreg_ctx *ctx = NULL;
+    ck_assert_int_eq(fricreg_ctx_create(2, &ctx), FRICREG_OK);
+    const double W[4] = {1.0, 0.0, 0.0, 2.0}, mun[2] = {1e10, 1e10};
+    ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, 2, W), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, 2, mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_law(ctx, FRICREG_LAW_VELOCITY_LIMITED, 1e-300), FRICREG_OK);
+    double lambda = 0.0;
+    ck_assert_int_eq(fricreg_ctx_stick_stiffness(ctx, &lambda), FRICREG_OK);
+    ck_assert(isinf(lambda) && lambda > 0.0);
+
+    const double W2[4] = {1.0, -1.0, -1.0, 2.0}, mun2[2] = {0.5, 0.25};
+    ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, 2, W2), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, 2, mun2), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_law(ctx, FRICREG_LAW_VELOCITY_LIMITED, 0.02), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_stick_stiffness(ctx, &lambda), FRICREG_OK);
+    ck_assert_double_eq_tol(lambda, 25.0 + sqrt(312.5), 1e-12);
+    fricreg_ctx_free(ctx);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("bad_input");
@@ -1059,6 +1087,7 @@ int main(void)
     tcase_add_test(tc, non_status_functions);
     tcase_add_test(tc, indefinite_w_with_tiny_diagonal);
     tcase_add_test(tc, dense_feq_overflow_is_refused);
+    tcase_add_test(tc, stick_stiffness_with_overflowing_slopes);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);
     srunner_run_all(sr, CK_NORMAL);

@@ -3,7 +3,8 @@
  * arbitrary parameters and run lengths, held to the header: statuses in the documented sets,
  * the solution held kept (end time, switches) when a run fails, caller arrays untouched on
  * failure; on success the end time and period as asked, increasing switching times in
- * (0, t_end] with no stick following a stick, the initial state at t = 0, the force balance
+ * (0, t_end] (a stick may follow a stick: a slip phase of zero length between them, where
+ * |f_eq| touches mun, is not listed), the initial state at t = 0, the force balance
  * at rest (|x - a sin(omega t)| <= mun in every stick phase, where x' = 0), dissipation per
  * cycle >= 0, stick fraction in [0, 1].
  *
@@ -74,7 +75,6 @@ static void check_solution(fricreg_exact *ex, double a, double omega, double mun
         FUZZ_REQUIRE(times[k] > 0.0 && times[k] <= t_end && (k == 0 || times[k] > times[k - 1]),
                      "switch %zu at %.17g (t_end %g)", k, times[k], t_end);
         FUZZ_REQUIRE(sticks[k] == 0 || sticks[k] == 1, "sticks[%zu] = %d", k, sticks[k]);
-        FUZZ_REQUIRE(k == 0 || !(sticks[k] && sticks[k - 1]), "two sticks in a row at %zu", k);
     }
     /* the force balance in the middle of every stick phase */
     for (size_t k = 0; k < n; k++) {
