@@ -69,8 +69,12 @@ static void scatter_solution(fricreg_ctx *ctx, const size_t set[], size_t n, dou
 {
     size_t m = ctx->m;
     fr_factor_solve(ctx, ctx->rhs, "tangent"); /* cannot fail: the factor is held */
-    for (size_t a = 0; a < n; a++)
-        out[set[a] * m + col] = -ctx->rhs[a] * (row_scale ? row_scale[a] : 1.0);
+    for (size_t a = 0; a < n; a++) {
+        /* A row scaled by 0 (a saturated contact) does not move, even where W_BB^-1 is
+         * beyond DBL_MAX (subnormal W: Inf * 0 gave NaN, found by fuzz_ctx). */
+        double scale = row_scale ? row_scale[a] : 1.0;
+        out[set[a] * m + col] = scale == 0.0 ? 0.0 : -ctx->rhs[a] * scale;
+    }
 }
 
 /* The paper's partition: f_eq,S = -W_SS^-1 (a_free,S + W_SL f_L), then the law on S, with

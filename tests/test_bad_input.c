@@ -1079,6 +1079,31 @@ START_TEST(stick_stiffness_with_overflowing_slopes)
 }
 END_TEST
 
+/* The tangent with a subnormal W: W = 3.46e-323 [[1, 1], [1, 1]] (PSD, rank 1), the paper's
+ * partition, contact 0 at rest with f_eq,0 = -(2.2e-308 + W_01 f_1)/W_00 ~ -6.4e14, saturated
+ * at f_0 = -1, contact 1 sliding (f_1 = +1). d f_0/d a_free is 0 there (saturated), but
+ * W_00^-1 = 2.9e322 is beyond DBL_MAX and Inf * 0 gave NaN (fuzz_ctx). */
+START_TEST(tangent_with_subnormal_w)
+{
+    fricreg_ctx *ctx = NULL;
+    ck_assert_int_eq(fricreg_ctx_create(2, &ctx), FRICREG_OK);
+    const double w = 3.4584595208887258e-323, W[4] = {w, w, w, w};
+    ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, 2, W), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_partition(ctx, FRICREG_PARTITION_PAPER), FRICREG_OK);
+    const double zdot[2] = {0.0, -6705.9326171875}, a[2] = {2.2250738585072014e-308, -6.7e-4};
+    double f[2], dz[4], da[4];
+    ck_assert_int_eq(fricreg_ctx_eval(ctx, 2, zdot, a, f, NULL), FRICREG_OK);
+    ck_assert_double_eq(f[0], -1.0);
+    ck_assert_double_eq(f[1], 1.0);
+    ck_assert_int_eq(fricreg_ctx_tangent(ctx, 2, dz, da), FRICREG_OK);
+    for (int k = 0; k < 4; k++) {
+        ck_assert_msg(!isnan(dz[k]) && !isnan(da[k]), "entry %d: %g %g", k, dz[k], da[k]);
+        ck_assert_double_eq(da[k], 0.0); /* saturated and sliding: a_free moves nothing */
+    }
+    fricreg_ctx_free(ctx);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("bad_input");
@@ -1088,6 +1113,7 @@ int main(void)
     tcase_add_test(tc, indefinite_w_with_tiny_diagonal);
     tcase_add_test(tc, dense_feq_overflow_is_refused);
     tcase_add_test(tc, stick_stiffness_with_overflowing_slopes);
+    tcase_add_test(tc, tangent_with_subnormal_w);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);
     srunner_run_all(sr, CK_NORMAL);
