@@ -182,7 +182,8 @@ FRICREG_API int fricreg_ctx_set_coupling_diagonal(fricreg_ctx *ctx, size_t m, co
  *  J M^-1 J^T), m x m, row-major (W[i*m + j] = W_ij; being symmetric it reads the same
  *  column-major, so Fortran may pass its array directly). Copied; the caller keeps W.
  *  Symmetry is checked to a relative tolerance 1e-12 and semidefiniteness by the smallest
- *  eigenvalue (GSL gsl_eigen_symm, O(m^3) once here), with relative tolerance 1e-12.
+ *  eigenvalue (GSL gsl_eigen_symm, O(m^3) once here) of the Jacobi-scaled D^-1/2 W D^-1/2
+ *  (D = diag W, unit diagonal), with tolerance 1e-12 m: whatever each contact's units.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_ENOTSYM;
  *  FRICREG_ENOTPSD (also if some W_ii <= 0: a contact with no mobility); FRICREG_ENOMEM. */
 FRICREG_API int fricreg_ctx_set_coupling_dense(fricreg_ctx *ctx, size_t m, const double W[]);
@@ -262,7 +263,9 @@ FRICREG_API int fricreg_ctx_stick_stiffness(fricreg_ctx *ctx, double *lambda);
  *             in S, where the law does not use f_eq and it is not computed.
  *  No heap allocation. Outputs are written only on success.
  *
- *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE (NaN/Inf input);
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE (NaN/Inf input;
+ *  with a dense W also an f_eq,i on S beyond the solve's range, (|a_free,i| + |W_iL f_L|)/W_ii
+ *  > 1e280, where the near-stick forces cannot be found in double precision);
  *  FRICREG_ESINGULAR if the block of W to be factorized (W_SS, or the consistent law's W_FF)
  *  is singular: a pivot of its LDL^T factorization (contacts in ascending order) below 1e-12
  *  times its diagonal entry, d_k < 1e-12 W_kk (for a pair, d_2 / W_22 = 1 - rho^2 with

@@ -156,15 +156,17 @@ int fricreg_ctx_set_coupling_diagonal(fricreg_ctx *ctx, size_t m, const double w
     return FRICREG_OK;
 }
 
-/* Smallest eigenvalue of the symmetric m x m matrix W / scale (GSL's symmetric eigensolver).
- * Scaled so that entries near DBL_MAX cannot overflow inside the solver into a NaN. */
-static int min_eigenvalue(const double W[], size_t m, double scale, double *lambda_min)
+/* Smallest eigenvalue of the Jacobi-scaled A = D^-1/2 W D^-1/2, a_ij = W_ij d_i d_j with
+ * d_i = 1/sqrt(W_ii) (GSL's symmetric eigensolver). Unit diagonal and, checked before, entries
+ * |a_ij| <= 1 (+ tolerance): nothing can overflow inside the solver. */
+static int min_eigenvalue(const double W[], size_t m, const double d[], double *lambda_min)
 {
     struct fr_eigen e;
     if (fr_eigen_alloc(&e, m) != FRICREG_OK)
         return FRICREG_ENOMEM;
-    for (size_t k = 0; k < m * m; k++)
-        e.a[k] = W[k] / scale;
+    for (size_t i = 0; i < m; i++)
+        for (size_t j = 0; j < m; j++)
+            e.a[i * m + j] = W[i * m + j] * d[i] * d[j];
     int status = fr_eigen_solve(&e) ? FRICREG_ENOTPSD : FRICREG_OK;
     *lambda_min = e.eval[0];
     for (size_t i = 1; i < m && !isnan(*lambda_min); i++) /* a NaN is kept, to be refused */
@@ -174,6 +176,12 @@ static int min_eigenvalue(const double W[], size_t m, double scale, double *lamb
     return status;
 }
 
+/* W is a Delassus matrix: positive diagonal, symmetric, positive semidefinite. Semidefiniteness
+ * is judged on the Jacobi-scaled A = D^-1/2 W D^-1/2 (unit diagonal), as eval judges
+ * singularity: whatever each contact's units. A tolerance relative to max|W| instead let a
+ * contact whose W_ii is tiny next to the others pass with a strongly indefinite coupling
+ * (W = [[2.385, -1e-12], [-1e-12, 1e-270]]: found by tests/fuzz/fuzz_ctx.c), and eval then
+ * returned forces that are not the law. */
 static int check_delassus(fricreg_ctx *ctx, size_t m, const double W[])
 {
     const char *who = "set_coupling_dense";
@@ -189,13 +197,31 @@ static int check_delassus(fricreg_ctx *ctx, size_t m, const double W[])
                 return fr_fail(ctx, FRICREG_ENOTSYM, "%s: W[%zu][%zu] = %g but W[%zu][%zu] = %g",
                                who, i, j, W[i * m + j], j, i, W[j * m + i]);
     }
-    double lambda_min = 0.0; /* of W / scale: NaN-safe test, a NaN is refused */
-    int status = min_eigenvalue(W, m, scale, &lambda_min);
+    double *d = malloc(m * sizeof *d);
+    if (d == NULL)
+        return fr_fail(ctx, FRICREG_ENOMEM, "%s: out of memory", who);
+    for (size_t i = 0; i < m; i++)
+        d[i] = 1.0 / sqrt(W[i * m + i]); /* finite: W_ii >= 4.9e-324 gives d_i <= 4.5e161 */
+    /* |a_ij| > 1 is a negative 2x2 minor W_ii W_jj - W_ij^2; checked first because such an
+     * a_ij may be too large for the eigensolver (infinite, even). */
+    double tol = PSD_RTOL * (double)m;
+    for (size_t i = 0; i < m; i++)
+        for (size_t j = 0; j < m; j++)
+            if (!(fabs(W[i * m + j] * d[i] * d[j]) <= 1.0 + tol)) {
+                free(d);
+                return fr_fail(ctx, FRICREG_ENOTPSD,
+                               "%s: W[%zu][%zu]^2 > W[%zu][%zu] W[%zu][%zu]: not semidefinite", who,
+                               i, j, i, i, j, j);
+            }
+    double lambda_min = 0.0; /* of the scaled A: NaN-safe test, a NaN is refused */
+    int status = min_eigenvalue(W, m, d, &lambda_min);
+    free(d);
     if (status == FRICREG_ENOMEM)
         return fr_fail(ctx, status, "%s: out of memory", who);
-    if (status != FRICREG_OK || !(lambda_min >= -PSD_RTOL * (double)m))
-        return fr_fail(ctx, FRICREG_ENOTPSD, "%s: smallest eigenvalue %g is negative", who,
-                       lambda_min * scale);
+    if (status != FRICREG_OK || !(lambda_min >= -tol))
+        return fr_fail(ctx, FRICREG_ENOTPSD,
+                       "%s: smallest eigenvalue %g of D^-1/2 W D^-1/2 (D = diag W) is negative",
+                       who, lambda_min);
     return FRICREG_OK;
 }
 

@@ -163,13 +163,56 @@ static void eval_diagonal(fricreg_ctx *ctx, const double zdot[], const double a_
     ctx->last_valid = keep;
 }
 
+/* The largest |f_eq,i| a dense solve is given: beyond it the solve's amplification (up to the
+ * 1e12 condition eval accepts) could overflow to Inf or NaN, and a NaN f_eq would be clamped
+ * to a bound, a force passed off as the law's. */
+#define FEQ_RANGE 1e280
+
+/* Before the solve: each near-stick contact's f_eq with the others at rest,
+ * (|a_free,i| + |W_iL f_L|)/W_ii + 2 mun_i (the band's shift), within FEQ_RANGE. */
+static int check_feq_range(fricreg_ctx *ctx, const double a_free[])
+{
+    size_t m = ctx->m;
+    for (size_t k = 0; k < ctx->n_stick; k++) {
+        size_t i = ctx->stick[k];
+        const double *row = ctx->W + i * m;
+        double load = fabs(a_free[i]);
+        for (size_t j = 0; j < m; j++)
+            load += fabs(row[j] * ctx->f[j]); /* f holds f_L, and 0 on S */
+        double reach = load / row[i] + 2.0 * ctx->mun[i];
+        if (!(reach <= FEQ_RANGE))
+            return fr_fail(ctx, FRICREG_ENONFINITE,
+                           "eval: contact %zu: f_eq ~ (a_free + W f_L)/W_ii = %g is beyond the "
+                           "range of the near-stick solve (%g)",
+                           i, reach, FEQ_RANGE);
+    }
+    return FRICREG_OK;
+}
+
+/* After the solve, a safeguard: finite forces, and a finite f_eq on S. */
+static int check_solution(fricreg_ctx *ctx)
+{
+    for (size_t i = 0; i < ctx->m; i++)
+        if (!isfinite(ctx->f[i]))
+            return fr_fail(ctx, FRICREG_ENONFINITE, "eval: f[%zu] overflowed", i);
+    for (size_t k = 0; k < ctx->n_stick; k++)
+        if (!isfinite(ctx->f_eq[ctx->stick[k]]))
+            return fr_fail(ctx, FRICREG_ENONFINITE, "eval: f_eq[%zu] overflowed", ctx->stick[k]);
+    return FRICREG_OK;
+}
+
 /* A dense W and a law that reads f_eq: split, then the near-stick forces by the partition. */
 static int eval_dense(fricreg_ctx *ctx, const double zdot[], const double a_free[])
 {
     fr_split_contacts(ctx, zdot);
+    int status = check_feq_range(ctx, a_free);
+    if (status != FRICREG_OK)
+        return status;
     if (ctx->partition == FRICREG_PARTITION_CONSISTENT)
-        return fr_eval_consistent(ctx, zdot, a_free);
-    return ctx->n_stick > 0 ? fr_eval_paper(ctx, zdot, a_free) : FRICREG_OK;
+        status = fr_eval_consistent(ctx, zdot, a_free); /* also with S empty: the warm start */
+    else if (ctx->n_stick > 0)
+        status = fr_eval_paper(ctx, zdot, a_free);
+    return status == FRICREG_OK ? check_solution(ctx) : status;
 }
 
 /* The tangent (tangent.c) is of the last successful evaluation: keep its inputs, unless the

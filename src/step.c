@@ -31,7 +31,11 @@ int fr_structure_friction(fricreg_structure *s, const gsl_vector *w, const gsl_v
 {
     gsl_blas_dgemv(CblasNoTrans, 1.0, s->G, w, 0.0, s->afree);
     gsl_blas_dgemv(CblasNoTrans, 1.0, s->J, v, 0.0, s->zdot);
-    return fricreg_ctx_eval(s->ctx, s->m, s->zdot->data, s->afree->data, f->data, NULL);
+    int status = fricreg_ctx_eval(s->ctx, s->m, s->zdot->data, s->afree->data, f->data, NULL);
+    /* The context's inputs are the structure's own state, from validated data: one that is
+     * not finite (or an f_eq beyond range) means the state overflowed, e.g. a finite dt of
+     * 1e200 (tests/test_bad_input.c), which the headers call FRICREG_EDIVERGED. */
+    return status == FRICREG_ENONFINITE ? FRICREG_EDIVERGED : status;
 }
 
 /* w = p~ - C v - K u */

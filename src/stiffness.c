@@ -41,38 +41,38 @@ static double diagonal_rate(const fricreg_ctx *ctx, int law)
 }
 
 /* Largest eigenvalue of D^1/2 W D^1/2 (symmetric positive semidefinite) times eps, by GSL,
- * D = diag(s) the slopes of `law`. The solver sees D/s_max and W/w_max, entries in [-1, 1],
- * and the scales multiply its result: slopes or couplings near DBL_MAX would otherwise reach
- * it as inf, come out as NaN eigenvalues, and fmax would drop them, reporting 0 — a step guard
- * that passes every step (found by tests/stress: the two blocks with mu = 1e300, eps = 1e-10).
- * A product that overflows is +inf here, which refuses every step, as it should. */
+ * D = diag(s) the slopes of `law`. Every slope times eps is k mun_i with one k for the law, so
+ * the solver sees a_ij = sqrt(mun_i/mun_max) (W_ij/W_max) sqrt(mun_j/mun_max), |a_ij| <= 1,
+ * and the scales multiply its result. Formed directly, mun or W near DBL_MAX made Inf and NaN
+ * entries: GSL's eigensolver then never returned (tests/fuzz/fuzz_ctx.c), or its NaN
+ * eigenvalues were dropped by fmax and reported 0, a step guard that passes every step
+ * (tests/stress: the two blocks with mu = 1e300, eps = 1e-10). A product that overflows is
+ * +inf here, which refuses every step, as it should. */
 static int coupled_rate(fricreg_ctx *ctx, int law, double *rate)
 {
     size_t m = ctx->m;
-    double s_max = 0.0, w_max = 0.0;
+    double k = law_slope_times_eps(law, 1.0), mun_max = 0.0, w_max = 0.0;
     for (size_t i = 0; i < m; i++)
-        s_max = fmax(s_max, law_slope_times_eps(law, ctx->mun[i]));
-    for (size_t k = 0; k < m * m; k++)
-        w_max = fmax(w_max, fabs(ctx->W[k]));
+        mun_max = fmax(mun_max, ctx->mun[i]);
+    for (size_t i = 0; i < m * m; i++)
+        w_max = fmax(w_max, fabs(ctx->W[i]));
     *rate = 0.0;
-    if (s_max == 0.0)
-        return FRICREG_OK; /* no slope anywhere (or every mun = 0) */
+    if (k == 0.0 || mun_max == 0.0 || w_max == 0.0) /* no slope at rest, or no coupling */
+        return FRICREG_OK;
     struct fr_eigen e;
     if (fr_eigen_alloc(&e, m) != FRICREG_OK)
         return FRICREG_ENOMEM;
     for (size_t i = 0; i < m; i++) {
-        double si = sqrt(law_slope_times_eps(law, ctx->mun[i]) / s_max);
-        for (size_t j = 0; j < m; j++) {
-            double sj = sqrt(law_slope_times_eps(law, ctx->mun[j]) / s_max);
-            e.a[i * m + j] = si * (ctx->W[i * m + j] / w_max) * sj;
-        }
+        double si = sqrt(ctx->mun[i] / mun_max);
+        for (size_t j = 0; j < m; j++)
+            e.a[i * m + j] = si * (ctx->W[i * m + j] / w_max) * sqrt(ctx->mun[j] / mun_max);
     }
-    int status = fr_eigen_solve(&e) ? FRICREG_ENOMEM : FRICREG_OK; /* fails only on bad sizes */
+    int status = fr_eigen_solve(&e) ? FRICREG_ENOMEM : FRICREG_OK; /* entries are finite */
     double scaled = 0.0;
     for (size_t i = 0; i < m; i++)
         scaled = isnan(e.eval[i]) ? INFINITY : fmax(scaled, e.eval[i]); /* NaN: refuse */
-    *rate = scaled * w_max * s_max;
     fr_eigen_free(&e);
+    *rate = scaled * w_max * mun_max * k;
     return status;
 }
 

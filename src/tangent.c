@@ -63,14 +63,18 @@ static void tangent_diagonal(const fricreg_ctx *ctx, double dz[], double da[])
 }
 
 /* Column k of -W_BB^-1 into rhs[0..n) (B the held factor's set), then scattered into row
- * set[a] of out, column col, scaled by row_scale[a] (NULL: 1). */
+ * set[a] of out, column col, scaled by row_scale[a] (NULL: 1) and col_scale. */
 static void scatter_solution(fricreg_ctx *ctx, const size_t set[], size_t n, double out[],
-                             size_t col, const double row_scale[])
+                             size_t col, const double row_scale[], double col_scale)
 {
     size_t m = ctx->m;
     fr_factor_solve(ctx, ctx->rhs, "tangent"); /* cannot fail: the factor is held */
-    for (size_t a = 0; a < n; a++)
-        out[set[a] * m + col] = -ctx->rhs[a] * (row_scale ? row_scale[a] : 1.0);
+    for (size_t a = 0; a < n; a++) {
+        /* A row scaled by 0 (a saturated contact) does not move, even where W_BB^-1 is
+         * beyond DBL_MAX (subnormal W: Inf * 0 gave NaN, found by fuzz_ctx). */
+        double scale = row_scale ? row_scale[a] : 1.0;
+        out[set[a] * m + col] = scale == 0.0 ? 0.0 : -ctx->rhs[a] * scale * col_scale;
+    }
 }
 
 /* The paper's partition: f_eq,S = -W_SS^-1 (a_free,S + W_SL f_L), then the law on S, with
@@ -98,7 +102,7 @@ static void tangent_paper(fricreg_ctx *ctx, double dz[], double da[])
     for (size_t b = 0; da && b < s; b++) { /* d f_eq,S/d a_free,k = -(W_SS^-1) e_k */
         memset(ctx->rhs, 0, s * sizeof *ctx->rhs);
         ctx->rhs[b] = 1.0;
-        scatter_solution(ctx, S, s, da, S[b], dfeq);
+        scatter_solution(ctx, S, s, da, S[b], dfeq, 1.0);
     }
 }
 
@@ -133,16 +137,20 @@ static void tangent_consistent(fricreg_ctx *ctx, size_t nf, double dz[], double 
         double dk = held ? held_slope(ctx, k) : 0.0;
         if (held)
             dz[k * m + k] = dk;
-        for (size_t a = 0; a < nf; a++) /* d b_F/d zdot_k + W_F,k d f_k/d zdot_k */
-            ctx->rhs[a] = held ? ctx->W[F[a] * m + k] * dk
-                               : (F[a] == k ? ctx->W[k * m + k] * ctx->mun[k] * dc : 0.0);
-        if (nf > 0)
-            scatter_solution(ctx, F, nf, dz, k, NULL);
+        /* d b_F/d zdot_k + W_F,k d f_k/d zdot_k = (W_F,k or W_kk e_k) times a slope, solved
+         * for the matrix part and scaled by the slope after: the product W mun/eps can
+         * overflow where the solution (of the size of the slope) does not (found by
+         * fuzz_ctx: W ~ 1e164, mun ~ 1e151 gave Inf - Inf = NaN). */
+        double slope = held ? dk : ctx->mun[k] * dc;
+        for (size_t a = 0; a < nf; a++)
+            ctx->rhs[a] = held ? ctx->W[F[a] * m + k] : (F[a] == k ? ctx->W[k * m + k] : 0.0);
+        if (nf > 0 && slope != 0.0)
+            scatter_solution(ctx, F, nf, dz, k, NULL, slope);
     }
     for (size_t b = 0; da && b < nf; b++) { /* d b_F/d a_free,k = e_k for k in F */
         memset(ctx->rhs, 0, nf * sizeof *ctx->rhs);
         ctx->rhs[b] = 1.0;
-        scatter_solution(ctx, F, nf, da, F[b], NULL);
+        scatter_solution(ctx, F, nf, da, F[b], NULL, 1.0);
     }
 }
 

@@ -1,0 +1,1123 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* test_bad_input.c — the bad-input matrix (issue 11): every public function of every header,
+ * each argument in turn replaced by the hostile values its type allows, the others valid.
+ *
+ *   pointer           NULL
+ *   double            NaN, +Inf, -Inf, -2.385, 0, the least subnormal 4.9e-324, 1e308
+ *   size (= object's) 0, SIZE_MAX, SIZE_MAX/2 + 1 (m*m overflows), one more than the object's
+ *   record length n   0, 1 (SIZE_MAX and SIZE_MAX/8 + 1 are lies about ag[n] a caller
+ *                     can tell; the library reads n samples to check them: not tried)
+ *   int (enum, count) -1, 0, INT_MAX, INT_MIN
+ *   array element     element 0 set to NaN, Inf, -2.385, 0, 4.9e-324, 1e308
+ *   square matrix     indefinite, singular (rank 1), non-symmetric, scaled by 4.9e-324,
+ *                     scaled by 1e300
+ *
+ * Each row of the table below is one function: a wrapper that makes the call on a fresh
+ * fixture with the row's valid defaults, and per argument a string giving, class by class,
+ * the status its docstring promises: 'o' FRICREG_OK, '0' ENULL, 'i' EINVAL, 'n' ENONFINITE,
+ * 's' ESIZE, 'y' ENOTSYM, 'p' ENOTPSD, 'f' a documented failure (the docstring names more
+ * than one cause, e.g. -Inf for an argument that must be finite and >= 0), '*' any documented
+ * status (the docstring does not decide), 'x' not tried (a length the caller's array must
+ * have: a lie no library can detect). Every case must also return a status of the function's
+ * documented set, leave every output untouched on failure (sentinels) and, for a call on an
+ * object, record the failure there with a message; none may crash (the test runs under ASan,
+ * UBSan and valgrind). The count of cases and every disagreement are printed; any
+ * disagreement fails the test. */
+#include <check.h>
+#include <float.h>
+#include <limits.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fricreg.h"
+#include "fricreg_exact.h"
+#include "fricreg_sim.h"
+#include "fricreg_structure.h"
+
+/* ---- Value classes --------------------------------------------------------------------- */
+
+enum kind { K_PTR, K_DBL, K_SIZE, K_COUNT, K_INT, K_ARR, K_MAT, K_NKINDS };
+
+static const double dbl_class[] = {NAN, INFINITY, -INFINITY, -2.385, 0.0, 4.9e-324, 1e308};
+static const double arr_class[] = {NAN, INFINITY, -2.385, 0.0, 4.9e-324, 1e308};
+static const int int_class[] = {-1, 0, INT_MAX, INT_MIN};
+static const size_t count_class[] = {0, 1, SIZE_MAX, SIZE_MAX / 8 + 1};
+static const char *const mat_class_name[] = {"indefinite", "singular", "non-symmetric",
+                                             "scaled 4.9e-324", "scaled 1e300"};
+static const int nclasses[K_NKINDS] = {1, 7, 4, 4, 4, 6, 5};
+
+/* The perturbation of one case: which argument slot of which kind, and which class. */
+struct perturb {
+    enum kind kind;
+    int slot, cls;
+};
+
+/* ---- Fixture: one valid object of each kind, and sentinel-filled outputs ---------------- */
+
+#define SENTINEL_BYTE 0x5a
+#define NOUT 6
+#define OUTLEN 64
+
+/* A fixture's matrices are 2 x 2; each kind of square-matrix perturbation replaces one. */
+static const double W2B[4] = {1.0, -1.0, -1.0, 2.0}; /* the two blocks' Delassus matrix */
+static const double M2[4] = {1.3, 0.2, 0.2, 0.7};
+static const double K2[4] = {2.4, -1.1, -1.1, 1.1};
+
+struct fixture {
+    fricreg_ctx *ctx;
+    fricreg_exact *ex;
+    fricreg_sim *sim;
+    fricreg_structure *st;
+    double out[NOUT][OUTLEN]; /* outputs, all sentinel before the call */
+    void *handle_out;         /* a create's out, sentinel before the call */
+    double arr[8][OUTLEN];    /* input arrays of the call (perturbed copies) */
+    size_t n_switches, n_cycles;
+};
+
+static void fixture_make(struct fixture *fx)
+{
+    memset(fx, 0, sizeof *fx);
+    const double mun2[2] = {0.5, 0.25}, zdot[2] = {0.0004, -0.0002}, a[2] = {0.213, -0.347};
+    double f[2];
+    ck_assert_int_eq(fricreg_ctx_create(2, &fx->ctx), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_coupling_dense(fx->ctx, 2, W2B), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_bounds(fx->ctx, 2, mun2), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_eval(fx->ctx, 2, zdot, a, f, NULL), FRICREG_OK);
+
+    ck_assert_int_eq(fricreg_exact_create(0.3, 0.8, 0.4, 2.75, 0.1, &fx->ex), FRICREG_OK);
+    ck_assert_int_eq(fricreg_exact_run(fx->ex, 20.0), FRICREG_OK);
+    fx->n_switches = fricreg_exact_nswitches(fx->ex);
+    fx->n_cycles = fricreg_exact_ncycles(fx->ex);
+    ck_assert_uint_gt(fx->n_switches, 0);
+    ck_assert_uint_gt(fx->n_cycles, 0);
+
+    ck_assert_int_eq(fricreg_sim_create(FRICREG_SYSTEM_OSCILLATOR, &fx->sim), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run_cycles(fx->sim, 1), FRICREG_OK);
+
+    const double J[2] = {0.8, 0.0}, mun1[1] = {0.3};
+    ck_assert_int_eq(fricreg_structure_create(2, 1, &fx->st), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_mass(fx->st, 2, M2), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_stiffness(fx->st, 2, K2), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_contacts(fx->st, 1, 2, J), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_bounds(fx->st, 1, mun1), FRICREG_OK);
+
+    memset(fx->out, SENTINEL_BYTE, sizeof fx->out);
+    memset(&fx->handle_out, SENTINEL_BYTE, sizeof fx->handle_out);
+}
+
+static void fixture_free(struct fixture *fx)
+{
+    fricreg_ctx_free(fx->ctx);
+    fricreg_exact_free(fx->ex);
+    fricreg_sim_free(fx->sim);
+    fricreg_structure_free(fx->st);
+}
+
+static int untouched(const void *p, size_t bytes)
+{
+    const unsigned char *c = p;
+    for (size_t k = 0; k < bytes; k++)
+        if (c[k] != SENTINEL_BYTE)
+            return 0;
+    return 1;
+}
+
+/* ---- Argument accessors: the default, or the case's hostile value ----------------------- */
+
+static const struct perturb *P_; /* the case being run (one at a time) */
+static struct fixture *FX_;
+
+static int is(enum kind kind, int slot)
+{
+    return P_->kind == kind && P_->slot == slot;
+}
+
+static double D(int slot, double value)
+{
+    return is(K_DBL, slot) ? dbl_class[P_->cls] : value;
+}
+
+static int N(int slot, int value)
+{
+    return is(K_INT, slot) ? int_class[P_->cls] : value;
+}
+
+/* A size that must equal the object's (here `value`). */
+static size_t Z(int slot, size_t value)
+{
+    if (!is(K_SIZE, slot))
+        return value;
+    const size_t sizes[4] = {0, SIZE_MAX, SIZE_MAX / 2 + 1, value + 1};
+    return sizes[P_->cls];
+}
+
+static size_t C(int slot, size_t value)
+{
+    return is(K_COUNT, slot) ? count_class[P_->cls] : value;
+}
+
+/* An output buffer, or NULL. */
+static void *O(int slot)
+{
+    return is(K_PTR, slot) ? NULL : FX_->out[slot];
+}
+
+/* An input array: a copy of base[n] in the fixture, element 0 or the whole matrix perturbed,
+ * or NULL. */
+static const double *A(int slot, const double *base, size_t n)
+{
+    if (is(K_PTR, slot))
+        return NULL;
+    double *a = FX_->arr[slot];
+    memcpy(a, base, n * sizeof *a);
+    for (size_t k = n; k < OUTLEN; k++)
+        a[k] = 0.0; /* a size one too large reads zeros, inside the buffer */
+    if (is(K_ARR, slot))
+        a[0] = arr_class[P_->cls];
+    if (is(K_MAT, slot) && n == 4) {
+        static const double mats[3][4] = {{1.0, 2.0, 2.0, 1.0},   /* eigenvalues 3, -1 */
+                                          {1.0, 0.5, 0.5, 0.25},  /* rank 1 */
+                                          {1.0, -0.5, 0.5, 2.0}}; /* W01 != W10 */
+        if (P_->cls < 3)
+            memcpy(a, mats[P_->cls], sizeof mats[0]);
+        else
+            for (int k = 0; k < 4; k++)
+                a[k] *= P_->cls == 3 ? 4.9e-324 : 1e300;
+    }
+    return a;
+}
+
+/* ---- The wrappers: one call each, defaults valid for the fixture ------------------------ */
+
+#define OUTD(slot) ((double *)O(slot))
+static const double TWO[2] = {0.0123, -0.0231}, MUN2[2] = {0.5, 0.25};
+
+static int w_law_eval(void)
+{
+    return fricreg_law_eval(N(0, FRICREG_LAW_QUINN), D(0, 0.0004), D(1, 0.3), D(2, 1.0), D(3, 1e-3),
+                            OUTD(0));
+}
+static int w_law_eval_batch(void)
+{
+    return fricreg_law_eval_batch(N(0, FRICREG_LAW_QUINN), D(0, 1e-3), Z(0, 2), A(1, TWO, 2),
+                                  A(2, TWO, 2), A(3, MUN2, 2), OUTD(4));
+}
+static int w_ctx_create(void)
+{
+    fricreg_ctx **out = is(K_PTR, 0) ? NULL : (fricreg_ctx **)&FX_->handle_out;
+    int status = fricreg_ctx_create(Z(0, 2), out);
+    if (status == FRICREG_OK)
+        fricreg_ctx_free(*out);
+    return status;
+}
+static fricreg_ctx *CTX(void)
+{
+    return is(K_PTR, 9) ? NULL : FX_->ctx;
+}
+static int w_ctx_set_law(void)
+{
+    return fricreg_ctx_set_law(CTX(), N(0, FRICREG_LAW_QUINN), D(0, 0.02));
+}
+static int w_ctx_set_bounds(void)
+{
+    return fricreg_ctx_set_bounds(CTX(), Z(0, 2), A(1, MUN2, 2));
+}
+static int w_ctx_set_diagonal(void)
+{
+    const double w[2] = {1.0, 2.0};
+    return fricreg_ctx_set_coupling_diagonal(CTX(), Z(0, 2), A(1, w, 2));
+}
+static int w_ctx_set_dense(void)
+{
+    return fricreg_ctx_set_coupling_dense(CTX(), Z(0, 2), A(1, W2B, 4));
+}
+static int w_ctx_set_partition(void)
+{
+    return fricreg_ctx_set_partition(CTX(), N(0, FRICREG_PARTITION_PAPER));
+}
+static int w_ctx_stick_stiffness(void)
+{
+    return fricreg_ctx_stick_stiffness(CTX(), OUTD(1));
+}
+static int w_ctx_eval(void)
+{
+    const double zdot[2] = {0.0004, -0.0002}, a[2] = {0.213, -0.347};
+    return fricreg_ctx_eval(CTX(), Z(0, 2), A(1, zdot, 2), A(2, a, 2), OUTD(3), OUTD(4));
+}
+static int w_ctx_tangent(void)
+{
+    return fricreg_ctx_tangent(CTX(), Z(0, 2), OUTD(1), OUTD(2));
+}
+static int w_ctx_tangent_no_output(void)
+{
+    return fricreg_ctx_tangent(CTX(), 2, NULL, NULL);
+}
+static int w_ctx_get_stat(void)
+{
+    return fricreg_ctx_get_stat(CTX(), N(0, FRICREG_STAT_EVALS), (int64_t *)O(1));
+}
+
+/* exact */
+static int w_exact_solve(void)
+{
+    fricreg_exact **out = is(K_PTR, 0) ? NULL : (fricreg_exact **)&FX_->handle_out;
+    int status = fricreg_exact_solve(D(0, 0.3), D(1, 0.8), D(2, 0.4), D(3, 2.75), D(4, 0.1),
+                                     D(5, 20.0), out);
+    if (status == FRICREG_OK)
+        fricreg_exact_free(*out);
+    return status;
+}
+static int w_exact_create(void)
+{
+    fricreg_exact **out = is(K_PTR, 0) ? NULL : (fricreg_exact **)&FX_->handle_out;
+    int status = fricreg_exact_create(D(0, 0.3), D(1, 0.8), D(2, 0.4), D(3, 2.75), D(4, 0.1), out);
+    if (status == FRICREG_OK)
+        fricreg_exact_free(*out);
+    return status;
+}
+static fricreg_exact *EX(void)
+{
+    return is(K_PTR, 9) ? NULL : FX_->ex;
+}
+static int w_exact_run(void)
+{
+    return fricreg_exact_run(EX(), D(0, 12.5));
+}
+static int w_exact_run_cycles(void)
+{
+    return fricreg_exact_run_cycles(EX(), N(0, 3));
+}
+static int w_exact_get_value(void)
+{
+    return fricreg_exact_get_value(EX(), N(0, FRICREG_EXACT_VALUE_TIME), OUTD(1));
+}
+static int w_exact_get_stat(void)
+{
+    return fricreg_exact_get_stat(EX(), N(0, FRICREG_EXACT_STAT_ROOTS), (int64_t *)O(1));
+}
+static int w_exact_state(void)
+{
+    return fricreg_exact_state(EX(), D(0, 5.0), OUTD(1), OUTD(2));
+}
+static int w_exact_switches(void)
+{
+    return fricreg_exact_switches(EX(), Z(0, FX_->n_switches), OUTD(1), (int *)O(2));
+}
+static int w_exact_dissipation(void)
+{
+    return fricreg_exact_dissipation(EX(), Z(0, FX_->n_cycles), OUTD(1));
+}
+static int w_exact_stick_fraction(void)
+{
+    return fricreg_exact_stick_fraction(EX(), D(0, 0.0), D(1, 10.0), OUTD(1));
+}
+
+/* sim */
+static int w_sim_create(void)
+{
+    fricreg_sim **out = is(K_PTR, 0) ? NULL : (fricreg_sim **)&FX_->handle_out;
+    int status = fricreg_sim_create(N(0, FRICREG_SYSTEM_TWOBLOCK), out);
+    if (status == FRICREG_OK)
+        fricreg_sim_free(*out);
+    return status;
+}
+static fricreg_sim *SIM(void)
+{
+    return is(K_PTR, 9) ? NULL : FX_->sim;
+}
+static int w_sim_set_param_a(void)
+{
+    return fricreg_sim_set_param(SIM(), N(0, FRICREG_PARAM_A), D(0, 0.3));
+}
+static int w_sim_set_param_omega(void)
+{
+    return fricreg_sim_set_param(SIM(), FRICREG_PARAM_OMEGA, D(0, 0.8));
+}
+static int w_sim_set_param_mun(void)
+{
+    return fricreg_sim_set_param(SIM(), FRICREG_PARAM_MUN, D(0, 0.4));
+}
+static int w_sim_get_param(void)
+{
+    return fricreg_sim_get_param(SIM(), N(0, FRICREG_PARAM_OMEGA), OUTD(1));
+}
+static int w_sim_set_law(void)
+{
+    return fricreg_sim_set_law(SIM(), N(0, FRICREG_LAW_QUINN), D(0, 0.02));
+}
+static int w_sim_set_partition(void)
+{
+    return fricreg_sim_set_partition(SIM(), N(0, FRICREG_PARTITION_PAPER));
+}
+static int w_sim_set_integrator(void)
+{
+    return fricreg_sim_set_integrator(SIM(), N(0, FRICREG_INT_RKF45), D(0, 0.01), D(1, 1e-6),
+                                      D(2, 1e-9));
+}
+static int w_sim_set_observer(void)
+{
+    return fricreg_sim_set_observer(SIM(), NULL, NULL);
+}
+static int w_sim_run(void)
+{
+    return fricreg_sim_run(SIM(), D(0, 1.0));
+}
+static int w_sim_run_cycles(void)
+{
+    return fricreg_sim_run_cycles(SIM(), N(0, 1));
+}
+static int w_sim_get_value(void)
+{
+    return fricreg_sim_get_value(SIM(), N(0, FRICREG_VALUE_TIME), OUTD(1));
+}
+static int w_sim_get_stat(void)
+{
+    return fricreg_sim_get_stat(SIM(), N(0, FRICREG_SIM_STAT_STEPS), (int64_t *)O(1));
+}
+static int w_sim_get_state(void)
+{
+    return fricreg_sim_get_state(SIM(), Z(0, 1), OUTD(1), OUTD(2));
+}
+static int w_sim_get_dissipation(void)
+{
+    return fricreg_sim_get_dissipation(SIM(), Z(0, 1), OUTD(1));
+}
+static int w_sim_get_stick_fraction(void)
+{
+    return fricreg_sim_get_stick_fraction(SIM(), Z(0, 1), OUTD(1));
+}
+
+/* structure */
+static int w_st_create(void)
+{
+    fricreg_structure **out = is(K_PTR, 0) ? NULL : (fricreg_structure **)&FX_->handle_out;
+    int status = fricreg_structure_create(Z(0, 2), Z(1, 1), out);
+    if (status == FRICREG_OK)
+        fricreg_structure_free(*out);
+    return status;
+}
+static fricreg_structure *ST(void)
+{
+    return is(K_PTR, 9) ? NULL : FX_->st;
+}
+static int w_st_set_mass(void)
+{
+    return fricreg_structure_set_mass(ST(), Z(0, 2), A(1, M2, 4));
+}
+static int w_st_set_stiffness(void)
+{
+    return fricreg_structure_set_stiffness(ST(), Z(0, 2), A(1, K2, 4));
+}
+static int w_st_set_damping(void)
+{
+    const double C2[4] = {0.05, -0.01, -0.01, 0.03};
+    return fricreg_structure_set_damping(ST(), Z(0, 2), A(1, C2, 4));
+}
+static int w_st_set_rayleigh(void)
+{
+    return fricreg_structure_set_rayleigh(ST(), D(0, 0.01), D(1, 0.002));
+}
+static int w_st_set_contacts(void)
+{
+    const double J[2] = {0.8, 0.0};
+    return fricreg_structure_set_contacts(ST(), Z(0, 1), Z(1, 2), A(1, J, 2));
+}
+static int w_st_set_bounds(void)
+{
+    const double mun[1] = {0.3};
+    return fricreg_structure_set_bounds(ST(), Z(0, 1), A(1, mun, 1));
+}
+static int w_st_set_law(void)
+{
+    return fricreg_structure_set_law(ST(), N(0, FRICREG_LAW_QUINN), D(0, 1e-3));
+}
+static int w_st_set_influence(void)
+{
+    const double r[2] = {1.0, 1.0};
+    return fricreg_structure_set_influence(ST(), Z(0, 2), A(1, r, 2));
+}
+static int w_st_set_ground_accel(void)
+{
+    const double ag[3] = {0.1, -0.2, 0.15};
+    return fricreg_structure_set_ground_accel(ST(), D(0, 0.0), D(1, 0.01), C(0, 3), A(1, ag, 3));
+}
+static int w_st_set_load(void)
+{
+    const double p[2] = {1.0, -0.5}, g[3] = {0.0, 1.0, 0.5};
+    return fricreg_structure_set_load(ST(), Z(0, 2), A(1, p, 2), D(0, 0.0), D(1, 0.01), C(0, 3),
+                                      A(2, g, 3));
+}
+static int w_st_set_initial(void)
+{
+    const double u0[2] = {0.01, -0.02}, v0[2] = {0.0, 0.1};
+    return fricreg_structure_set_initial(ST(), Z(0, 2), A(1, u0, 2), A(2, v0, 2));
+}
+static int w_st_set_newmark(void)
+{
+    return fricreg_structure_set_newmark(ST(), D(0, 0.25), D(1, 0.5));
+}
+static int w_st_set_hht(void)
+{
+    return fricreg_structure_set_hht(ST(), D(0, -0.1));
+}
+static int w_st_set_central_difference(void)
+{
+    return fricreg_structure_set_central_difference(ST());
+}
+static int w_st_set_newton(void)
+{
+    return fricreg_structure_set_newton(ST(), D(0, 1e-10), N(0, 50));
+}
+static int w_st_step(void)
+{
+    return fricreg_structure_step(ST(), D(0, 0.01));
+}
+static int w_st_run(void)
+{
+    return fricreg_structure_run(ST(), D(0, 0.01), D(1, 0.05));
+}
+static int w_st_run_ode(void)
+{
+    return fricreg_structure_run_ode(ST(), N(0, FRICREG_INT_RKF45), D(0, 0.001), D(1, 1e-6),
+                                     D(2, 1e-9), D(3, 0.05));
+}
+static int w_st_get_state(void)
+{
+    return fricreg_structure_get_state(ST(), Z(0, 2), OUTD(1), OUTD(2), OUTD(3));
+}
+static int w_st_get_state_no_output(void)
+{
+    return fricreg_structure_get_state(ST(), 2, NULL, NULL, NULL);
+}
+static int w_st_get_forces(void)
+{
+    return fricreg_structure_get_forces(ST(), Z(0, 1), OUTD(1));
+}
+static int w_st_get_dissipation(void)
+{
+    return fricreg_structure_get_dissipation(ST(), Z(0, 1), OUTD(1));
+}
+static int w_st_get_value(void)
+{
+    return fricreg_structure_get_value(ST(), N(0, FRICREG_SVALUE_TIME), OUTD(1));
+}
+static int w_st_get_stat(void)
+{
+    return fricreg_structure_get_stat(ST(), N(0, FRICREG_SSTAT_STEPS), (int64_t *)O(1));
+}
+
+/* ---- The table ---------------------------------------------------------------------------- */
+
+/* The object a call records its failures in (a const getter records none). */
+enum owner { NONE, CTX_REC, EX_REC, SIM_REC, ST_REC };
+
+#define MAXARGS 8
+struct arg {
+    enum kind kind;
+    int slot;
+    const char *expect; /* one status letter per class of the kind */
+};
+struct row {
+    const char *name;
+    int (*call)(void);
+    const char *documented; /* status letters of the docstring's Returns */
+    enum owner owner;
+    struct arg args[MAXARGS];
+};
+
+/* The handle of an object call is pointer slot 9. */
+#define HANDLE        \
+    {                 \
+        K_PTR, 9, "0" \
+    }
+#define DBL(slot, e)   \
+    {                  \
+        K_DBL, slot, e \
+    }
+#define INT(slot, e)   \
+    {                  \
+        K_INT, slot, e \
+    }
+#define SIZE(slot, e)   \
+    {                   \
+        K_SIZE, slot, e \
+    }
+#define COUNT(slot, e)   \
+    {                    \
+        K_COUNT, slot, e \
+    }
+#define PTR(slot, e)   \
+    {                  \
+        K_PTR, slot, e \
+    }
+#define ARR(slot, e)   \
+    {                  \
+        K_ARR, slot, e \
+    }
+#define MAT(slot, e)   \
+    {                  \
+        K_MAT, slot, e \
+    }
+
+/* Status letters: o OK, 0 ENULL, i EINVAL, n ENONFINITE, s ESIZE, m ENOMEM, y ENOTSYM,
+ * p ENOTPSD, g ESINGULAR, e ESTEP, d EDIVERGED, t EINTEGRATOR. */
+static const struct row rows[] = {
+    /* fricreg.h */
+    {"fricreg_law_eval",
+     w_law_eval,
+     "0in",
+     NONE,
+     {INT(0, "iiii"), DBL(0, "nnnoooo"), DBL(1, "nnnoooo"), DBL(2, "nnfiooo"), DBL(3, "nnfiiio"),
+      PTR(0, "0")}},
+    {"fricreg_law_eval_batch",
+     w_law_eval_batch,
+     "0in",
+     NONE,
+     {INT(0, "iiii"), DBL(0, "nnfiiio"), SIZE(0, "oxxx"), PTR(1, "0"), ARR(1, "nnoooo"),
+      PTR(2, "0"), ARR(2, "nnoooo"), PTR(3, "0")}},
+    {"fricreg_law_eval_batch (mun, f)",
+     w_law_eval_batch,
+     "0in",
+     NONE,
+     {ARR(3, "nniooo"), PTR(4, "0")}},
+    {"fricreg_ctx_create", w_ctx_create, "0im", NONE, {SIZE(0, "iiio"), PTR(0, "0")}},
+    {"fricreg_ctx_set_law",
+     w_ctx_set_law,
+     "0in",
+     CTX_REC,
+     {HANDLE, INT(0, "iiii"), DBL(0, "nnfiiio")}},
+    {"fricreg_ctx_set_bounds",
+     w_ctx_set_bounds,
+     "0sin",
+     CTX_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nniooo")}},
+    {"fricreg_ctx_set_coupling_diagonal",
+     w_ctx_set_diagonal,
+     "0sin",
+     CTX_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nniioo")}},
+    {"fricreg_ctx_set_coupling_dense",
+     w_ctx_set_dense,
+     "0snypm",
+     CTX_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnpppo"), MAT(1, "poyoo")}},
+    {"fricreg_ctx_set_partition", w_ctx_set_partition, "0i", CTX_REC, {HANDLE, INT(0, "iiii")}},
+    {"fricreg_ctx_stick_stiffness", w_ctx_stick_stiffness, "0m", CTX_REC, {HANDLE, PTR(1, "0")}},
+    {"fricreg_ctx_eval",
+     w_ctx_eval,
+     "0sng",
+     CTX_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnoooo"), PTR(2, "0"), ARR(2, "nnooon"),
+      PTR(3, "0"), PTR(4, "o")}},
+    {"fricreg_ctx_tangent",
+     w_ctx_tangent,
+     "0sig",
+     CTX_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "o"), PTR(2, "o")}},
+    {"fricreg_ctx_tangent (both outputs NULL)",
+     w_ctx_tangent_no_output,
+     "0sig",
+     CTX_REC,
+     {PTR(8, "0")}},
+    {"fricreg_ctx_get_stat", w_ctx_get_stat, "0i", NONE, {HANDLE, INT(0, "ioii"), PTR(1, "0")}},
+    /* fricreg_exact.h */
+    {"fricreg_exact_solve",
+     w_exact_solve,
+     "0nimt",
+     NONE,
+     {DBL(0, "nnnooo*"), DBL(1, "nnfii*i"), DBL(2, "nnfiooo"), DBL(3, "nnnooo*"), DBL(4, "nnnooo*"),
+      DBL(5, "nnniioi"), PTR(0, "0")}},
+    {"fricreg_exact_create",
+     w_exact_create,
+     "0nim",
+     NONE,
+     {DBL(0, "nnnoooo"), DBL(1, "nnfiioo"), DBL(2, "nnfiooo"), DBL(3, "nnnoooo"), DBL(4, "nnnoooo"),
+      PTR(0, "0")}},
+    {"fricreg_exact_run", w_exact_run, "0nimt", EX_REC, {HANDLE, DBL(0, "nnniioi")}},
+    {"fricreg_exact_run_cycles", w_exact_run_cycles, "0nimt", EX_REC, {HANDLE, INT(0, "iiii")}},
+    {"fricreg_exact_get_value",
+     w_exact_get_value,
+     "0i",
+     NONE,
+     {HANDLE, INT(0, "ioii"), PTR(1, "0")}},
+    {"fricreg_exact_get_stat", w_exact_get_stat, "0i", NONE, {HANDLE, INT(0, "ioii"), PTR(1, "0")}},
+    {"fricreg_exact_state",
+     w_exact_state,
+     "0i",
+     NONE,
+     {HANDLE, DBL(0, "iiiiooi"), PTR(1, "0"), PTR(2, "0")}},
+    {"fricreg_exact_switches",
+     w_exact_switches,
+     "0s",
+     NONE,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), PTR(2, "o")}},
+    {"fricreg_exact_dissipation",
+     w_exact_dissipation,
+     "0s",
+     NONE,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0")}},
+    {"fricreg_exact_stick_fraction",
+     w_exact_stick_fraction,
+     "0i",
+     NONE,
+     {HANDLE, DBL(0, "iiiiooi"), DBL(1, "iiiiioi"), PTR(1, "0")}},
+    /* fricreg_sim.h */
+    {"fricreg_sim_create", w_sim_create, "0im", NONE, {INT(0, "iiii"), PTR(0, "0")}},
+    {"fricreg_sim_set_param (a)",
+     w_sim_set_param_a,
+     "0in",
+     SIM_REC,
+     {HANDLE, INT(0, "iiii"), DBL(0, "nnnoooo")}},
+    {"fricreg_sim_set_param (omega)", w_sim_set_param_omega, "0in", SIM_REC, {DBL(0, "nnfii**")}},
+    {"fricreg_sim_set_param (mun)", w_sim_set_param_mun, "0in", SIM_REC, {DBL(0, "nnfiooo")}},
+    {"fricreg_sim_get_param", w_sim_get_param, "0i", NONE, {HANDLE, INT(0, "iiii"), PTR(1, "0")}},
+    {"fricreg_sim_set_law",
+     w_sim_set_law,
+     "0in",
+     SIM_REC,
+     {HANDLE, INT(0, "iiii"), DBL(0, "nnfiooo")}},
+    {"fricreg_sim_set_partition", w_sim_set_partition, "0i", SIM_REC, {HANDLE, INT(0, "iiii")}},
+    {"fricreg_sim_set_integrator",
+     w_sim_set_integrator,
+     "0in",
+     SIM_REC,
+     {HANDLE, INT(0, "iiii"), DBL(0, "nnfiioo"), DBL(1, "nnfiooo"), DBL(2, "nnfiooo")}},
+    {"fricreg_sim_set_observer", w_sim_set_observer, "0i", SIM_REC, {HANDLE}},
+    {"fricreg_sim_run", w_sim_run, "0inedtgm", SIM_REC, {HANDLE, DBL(0, "nnfiioi")}},
+    {"fricreg_sim_run_cycles", w_sim_run_cycles, "0inedtgm", SIM_REC, {HANDLE, INT(0, "iiii")}},
+    {"fricreg_sim_get_value", w_sim_get_value, "0i", NONE, {HANDLE, INT(0, "ioii"), PTR(1, "0")}},
+    {"fricreg_sim_get_stat", w_sim_get_stat, "0i", NONE, {HANDLE, INT(0, "ioii"), PTR(1, "0")}},
+    {"fricreg_sim_get_state",
+     w_sim_get_state,
+     "0s",
+     NONE,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), PTR(2, "0")}},
+    {"fricreg_sim_get_dissipation",
+     w_sim_get_dissipation,
+     "0s",
+     NONE,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0")}},
+    {"fricreg_sim_get_stick_fraction",
+     w_sim_get_stick_fraction,
+     "0s",
+     NONE,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0")}},
+    /* fricreg_structure.h */
+    {"fricreg_structure_create",
+     w_st_create,
+     "0im",
+     NONE,
+     {SIZE(0, "iiio"), SIZE(1, "iiio"), PTR(0, "0")}},
+    {"fricreg_structure_set_mass",
+     w_st_set_mass,
+     "0snyp",
+     ST_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnpp**"), MAT(1, "ppy**")}},
+    {"fricreg_structure_set_stiffness",
+     w_st_set_stiffness,
+     "0sny",
+     ST_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnoooo"), MAT(1, "ooyoo")}},
+    {"fricreg_structure_set_damping",
+     w_st_set_damping,
+     "0sny",
+     ST_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnoooo"), MAT(1, "ooyoo")}},
+    {"fricreg_structure_set_rayleigh",
+     w_st_set_rayleigh,
+     "0ni",
+     ST_REC,
+     {HANDLE, DBL(0, "nnfiooo"), DBL(1, "nnfiooo")}},
+    {"fricreg_structure_set_contacts",
+     w_st_set_contacts,
+     "0sni",
+     ST_REC,
+     {HANDLE, SIZE(0, "ssss"), SIZE(1, "ssss"), PTR(1, "0"), ARR(1, "nnoioo")}},
+    {"fricreg_structure_set_bounds",
+     w_st_set_bounds,
+     "0sin",
+     ST_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nniooo")}},
+    {"fricreg_structure_set_law",
+     w_st_set_law,
+     "0in",
+     ST_REC,
+     {HANDLE, INT(0, "iiii"), DBL(0, "nnfii*o")}},
+    {"fricreg_structure_set_influence",
+     w_st_set_influence,
+     "0sn",
+     ST_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnoooo")}},
+    {"fricreg_structure_set_ground_accel",
+     w_st_set_ground_accel,
+     "0inm",
+     ST_REC,
+     {HANDLE, DBL(0, "nnnoooo"), DBL(1, "nnfiioo"), COUNT(0, "oixx"), PTR(1, "0"),
+      ARR(1, "nnoooo")}},
+    {"fricreg_structure_set_load",
+     w_st_set_load,
+     "0sinm",
+     ST_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnoooo"), DBL(0, "nnnoooo"), DBL(1, "nnfiioo"),
+      COUNT(0, "oixx"), ARR(2, "nnoooo")}},
+    {"fricreg_structure_set_load (g NULL)", w_st_set_load, "0sinm", ST_REC, {PTR(2, "0")}},
+    {"fricreg_structure_set_initial",
+     w_st_set_initial,
+     "0sn",
+     ST_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnoooo"), PTR(2, "0"), ARR(2, "nnoooo")}},
+    {"fricreg_structure_set_newmark",
+     w_st_set_newmark,
+     "0ni",
+     ST_REC,
+     {HANDLE, DBL(0, "nnfiioi"), DBL(1, "nnfiiii")}},
+    {"fricreg_structure_set_hht", w_st_set_hht, "0ni", ST_REC, {HANDLE, DBL(0, "nnfioii")}},
+    {"fricreg_structure_set_central_difference",
+     w_st_set_central_difference,
+     "0",
+     ST_REC,
+     {HANDLE}},
+    {"fricreg_structure_set_newton",
+     w_st_set_newton,
+     "0ni",
+     ST_REC,
+     {HANDLE, DBL(0, "nnfiioi"), INT(0, "iiii")}},
+    {"fricreg_structure_step", w_st_step, "0inypged", ST_REC, {HANDLE, DBL(0, "nnniiod")}},
+    {"fricreg_structure_run",
+     w_st_run,
+     "0inypged",
+     ST_REC,
+     {HANDLE, DBL(0, "nnniiio"), DBL(1, "nnfii*i")}},
+    {"fricreg_structure_run_ode",
+     w_st_run_ode,
+     "0inegdtm",
+     ST_REC,
+     {HANDLE, INT(0, "iiii"), DBL(0, "nnfii**"), DBL(1, "nnfio**"), DBL(2, "nnfio**"),
+      DBL(3, "nnfii**")}},
+    {"fricreg_structure_get_state",
+     w_st_get_state,
+     "0s",
+     NONE,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "o"), PTR(2, "o"), PTR(3, "o")}},
+    {"fricreg_structure_get_state (all outputs NULL)",
+     w_st_get_state_no_output,
+     "0s",
+     NONE,
+     {PTR(8, "0")}},
+    {"fricreg_structure_get_forces",
+     w_st_get_forces,
+     "0s",
+     NONE,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0")}},
+    {"fricreg_structure_get_dissipation",
+     w_st_get_dissipation,
+     "0s",
+     NONE,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0")}},
+    {"fricreg_structure_get_value",
+     w_st_get_value,
+     "0i",
+     NONE,
+     {HANDLE, INT(0, "ioii"), PTR(1, "0")}},
+    {"fricreg_structure_get_stat",
+     w_st_get_stat,
+     "0i",
+     NONE,
+     {HANDLE, INT(0, "ioii"), PTR(1, "0")}},
+};
+
+/* ---- Running the table -------------------------------------------------------------------- */
+
+static int code_of(char letter)
+{
+    static const char letters[] = "o0insmypgedt";
+    static const int codes[] = {FRICREG_OK,         FRICREG_ENULL,     FRICREG_EINVAL,
+                                FRICREG_ENONFINITE, FRICREG_ESIZE,     FRICREG_ENOMEM,
+                                FRICREG_ENOTSYM,    FRICREG_ENOTPSD,   FRICREG_ESINGULAR,
+                                FRICREG_ESTEP,      FRICREG_EDIVERGED, FRICREG_EINTEGRATOR};
+    const char *at = strchr(letters, letter);
+    return at != NULL && letter != '\0' ? codes[at - letters] : -1;
+}
+
+static int documented(const struct row *r, int status)
+{
+    if (status == FRICREG_OK)
+        return 1;
+    for (const char *c = r->documented; *c; c++)
+        if (code_of(*c) == status)
+            return 1;
+    return 0;
+}
+
+static int recorded(enum owner owner, const struct fixture *fx)
+{
+    switch (owner) {
+    case CTX_REC: return fricreg_ctx_errcode(fx->ctx);
+    case EX_REC: return fricreg_exact_errcode(fx->ex);
+    case SIM_REC: return fricreg_sim_errcode(fx->sim);
+    case ST_REC: return fricreg_structure_errcode(fx->st);
+    default: return -1;
+    }
+}
+
+static const char *message(enum owner owner, const struct fixture *fx)
+{
+    switch (owner) {
+    case CTX_REC: return fricreg_ctx_errmsg(fx->ctx);
+    case EX_REC: return fricreg_exact_errmsg(fx->ex);
+    case SIM_REC: return fricreg_sim_errmsg(fx->sim);
+    default: return fricreg_structure_errmsg(fx->st);
+    }
+}
+
+static void class_name(const struct perturb *p, char *buf, size_t len)
+{
+    switch (p->kind) {
+    case K_PTR: snprintf(buf, len, "pointer %d NULL", p->slot); break;
+    case K_DBL: snprintf(buf, len, "double %d = %g", p->slot, dbl_class[p->cls]); break;
+    case K_SIZE:
+        snprintf(buf, len, "size %d = %s", p->slot,
+                 (const char *[]){"0", "SIZE_MAX", "SIZE_MAX/2+1", "one more"}[p->cls]);
+        break;
+    case K_COUNT: snprintf(buf, len, "count %d = %zu", p->slot, count_class[p->cls]); break;
+    case K_INT: snprintf(buf, len, "int %d = %d", p->slot, int_class[p->cls]); break;
+    case K_ARR: snprintf(buf, len, "array %d [0] = %g", p->slot, arr_class[p->cls]); break;
+    default: snprintf(buf, len, "matrix %d %s", p->slot, mat_class_name[p->cls]);
+    }
+}
+
+/* One case; returns 1 if it disagrees with the docstring (printed). */
+static int run_case(const struct row *r, const struct perturb *p, char expect)
+{
+    struct fixture fx;
+    fixture_make(&fx);
+    P_ = p;
+    FX_ = &fx;
+    int status = r->call();
+    char what[96], why[160] = "";
+    class_name(p, what, sizeof what);
+    int want = code_of(expect);
+    if (!documented(r, status))
+        snprintf(why, sizeof why, "status %d (%s) is not in its docstring", status,
+                 fricreg_strerror(status));
+    else if (expect == 'f' && status == FRICREG_OK)
+        snprintf(why, sizeof why, "accepted, docstring refuses it");
+    else if (want >= 0 && status != want)
+        snprintf(why, sizeof why, "status %d (%s), docstring says %d (%s)", status,
+                 fricreg_strerror(status), want, fricreg_strerror(want));
+    else if (status != FRICREG_OK &&
+             !(untouched(fx.out, sizeof fx.out) && untouched(&fx.handle_out, sizeof(void *))))
+        snprintf(why, sizeof why, "failed (%d) but wrote an output", status);
+    else if (status != FRICREG_OK && r->owner != NONE && !is(K_PTR, 9) &&
+             (recorded(r->owner, &fx) != status || message(r->owner, &fx)[0] == '\0'))
+        snprintf(why, sizeof why, "failed (%d) but recorded %d, message '%s'", status,
+                 recorded(r->owner, &fx), message(r->owner, &fx));
+    fixture_free(&fx);
+    if (expect == '*' && getenv("BAD_INPUT_VERBOSE") != NULL) /* what the docstring left open */
+        printf("open: %s, %s: %s\n", r->name, what, fricreg_strerror(status));
+    if (why[0] != '\0')
+        printf("DISAGREES: %s, %s: %s\n", r->name, what, why);
+    return why[0] != '\0';
+}
+
+START_TEST(matrix)
+{
+    int cases = 0, disagreements = 0;
+    for (size_t k = 0; k < sizeof rows / sizeof rows[0]; k++) {
+        const struct row *r = &rows[k];
+        /* The defaults first: valid, so that every other case differs from a success in one
+         * argument (but in the rows whose call is itself the bad input, marked by slot 8). */
+        struct perturb none = {K_PTR, -1, 0};
+        disagreements += run_case(r, &none, r->args[0].slot == 8 ? r->args[0].expect[0] : 'o');
+        cases++;
+        for (int a = 0; a < MAXARGS && r->args[a].expect != NULL; a++) {
+            const struct arg *arg = &r->args[a];
+            ck_assert_msg((int)strlen(arg->expect) == nclasses[arg->kind],
+                          "%s: argument %d has %zu letters for %d classes", r->name, a,
+                          strlen(arg->expect), nclasses[arg->kind]);
+            for (int cls = 0; cls < nclasses[arg->kind]; cls++) {
+                if (arg->expect[cls] == 'x')
+                    continue;
+                struct perturb p = {arg->kind, arg->slot, cls};
+                disagreements += run_case(r, &p, arg->expect[cls]);
+                cases++;
+            }
+        }
+    }
+    printf("bad-input matrix: %d cases over %zu rows, %d disagreements\n", cases,
+           sizeof rows / sizeof rows[0], disagreements);
+    ck_assert_int_eq(disagreements, 0);
+    ck_assert_int_ge(cases, 400);
+}
+END_TEST
+
+/* The functions that return no status: their NULL and out-of-range arguments. */
+START_TEST(non_status_functions)
+{
+    char buf[8];
+    ck_assert_int_eq(fricreg_version_number(), FRICREG_VERSION_NUMBER);
+    ck_assert_ptr_nonnull(fricreg_version());
+    ck_assert_str_eq(fricreg_strerror(-1), "unknown fricreg status code");
+    ck_assert_str_eq(fricreg_strerror(INT_MAX), "unknown fricreg status code");
+    ck_assert_str_eq(fricreg_strerror(INT_MIN), "unknown fricreg status code");
+    for (int bad = 0; bad < 4; bad++) {
+        ck_assert_ptr_null(fricreg_law_name(int_class[bad]));
+        ck_assert_ptr_null(fricreg_integrator_name(int_class[bad]));
+    }
+    ck_assert_int_eq(fricreg_law_from_name(NULL), 0);
+    ck_assert_int_eq(fricreg_law_from_name(""), 0);
+    ck_assert_int_eq(fricreg_law_from_name("QUINN"), 0);
+    ck_assert_int_eq(fricreg_integrator_from_name(NULL), 0);
+    ck_assert_int_eq(fricreg_integrator_from_name("rk4 "), 0);
+
+    ck_assert_uint_eq(fricreg_ctx_size(NULL), 0);
+    ck_assert_int_eq(fricreg_ctx_errcode(NULL), FRICREG_OK);
+    ck_assert_str_eq(fricreg_ctx_errmsg(NULL), "NULL context");
+    fricreg_ctx_free(NULL);
+    fricreg_ctx_reset_stats(NULL);
+    ck_assert_int_eq(fricreg_exact_errcode(NULL), FRICREG_OK);
+    ck_assert_str_eq(fricreg_exact_errmsg(NULL), "NULL exact solution");
+    ck_assert_uint_eq(fricreg_exact_nswitches(NULL), 0);
+    ck_assert_uint_eq(fricreg_exact_ncycles(NULL), 0);
+    fricreg_exact_free(NULL);
+    ck_assert_int_eq(fricreg_sim_errcode(NULL), FRICREG_OK);
+    ck_assert_str_eq(fricreg_sim_errmsg(NULL), "NULL simulation");
+    ck_assert_uint_eq(fricreg_sim_ndof(NULL), 0);
+    ck_assert_uint_eq(fricreg_sim_ncontacts(NULL), 0);
+    fricreg_sim_free(NULL);
+    ck_assert_int_eq(fricreg_structure_errcode(NULL), FRICREG_OK);
+    ck_assert_str_eq(fricreg_structure_errmsg(NULL), "NULL structure");
+    fricreg_structure_free(NULL);
+
+    /* errmsg_copy: buf NULL or len 0 gives 0 and writes nothing; a short buffer is truncated
+     * and NUL-terminated; the full length is returned ("NULL context" is 12 characters). */
+    size_t (*const copy[4])(const void *, char *, size_t) = {
+        (size_t(*)(const void *, char *, size_t))fricreg_ctx_errmsg_copy,
+        (size_t(*)(const void *, char *, size_t))fricreg_exact_errmsg_copy,
+        (size_t(*)(const void *, char *, size_t))fricreg_sim_errmsg_copy,
+        (size_t(*)(const void *, char *, size_t))fricreg_structure_errmsg_copy};
+    const size_t full[4] = {strlen("NULL context"), strlen("NULL exact solution"),
+                            strlen("NULL simulation"), strlen("NULL structure")};
+    for (int k = 0; k < 4; k++) {
+        memset(buf, SENTINEL_BYTE, sizeof buf);
+        ck_assert_uint_eq(copy[k](NULL, NULL, sizeof buf), 0);
+        ck_assert_uint_eq(copy[k](NULL, buf, 0), 0);
+        ck_assert(untouched(buf, sizeof buf));
+        ck_assert_uint_eq(copy[k](NULL, buf, 5), full[k]);
+        ck_assert_uint_eq(strlen(buf), 4);
+        ck_assert(untouched(buf + 5, sizeof buf - 5));
+    }
+}
+END_TEST
+
+/* W = [[2.385, -1e-12], [-1e-12, 1e-270]] is indefinite (det < 0) but its smallest eigenvalue
+ * relative to max|W| is -4e-25, within any tolerance on that scale; on the Jacobi-scaled
+ * matrix its off-diagonal is 1e-12/sqrt(2.385e-270) = 6.5e122 > 1. Accepted before issue 11's
+ * fuzzing (fuzz_ctx), and eval then returned forces that are not the law. */
+START_TEST(indefinite_w_with_tiny_diagonal)
+{
+    fricreg_ctx *ctx = NULL;
+    ck_assert_int_eq(fricreg_ctx_create(2, &ctx), FRICREG_OK);
+    const double W[4] = {2.385, -1e-12, -1e-12, 1e-270};
+    ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, 2, W), FRICREG_ENOTPSD);
+    const double W_psd[4] = {2.385, -1e-136, -1e-136, 1e-270}; /* det = 2.385e-270 - 1e-272 */
+    ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, 2, W_psd), FRICREG_OK);
+    fricreg_ctx_free(ctx);
+}
+END_TEST
+
+/* a_free = -7.3e289 against W ~ 6e-255: f_eq,0 ~ 1.2e544 overflows; the QP's solve produced a
+ * NaN that was clamped to a bound and returned as success (fuzz_ctx). Refused now. */
+START_TEST(dense_feq_overflow_is_refused)
+{
+    fricreg_ctx *ctx = NULL;
+    ck_assert_int_eq(fricreg_ctx_create(2, &ctx), FRICREG_OK);
+    const double W[4] = {6.1e-255, 6.1e-255, 6.1e-255, 1.22e-254};
+    ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, 2, W), FRICREG_OK);
+    const double zdot[2] = {0.0, 0.0}, a[2] = {-7.3e289, 0.0};
+    double f[2] = {-777.0, -777.0};
+    ck_assert_int_eq(fricreg_ctx_eval(ctx, 2, zdot, a, f, NULL), FRICREG_ENONFINITE);
+    ck_assert_double_eq(f[0], -777.0);
+    ck_assert_double_eq(f[1], -777.0);
+    ck_assert_ptr_nonnull(strstr(fricreg_ctx_errmsg(ctx), "contact 0"));
+    /* within range, the same W is solved: f_eq,0 = 7.3e-255/6.1e-255 saturates at +1 */
+    const double a_ok[2] = {-7.3e-255, 0.0};
+    ck_assert_int_eq(fricreg_ctx_eval(ctx, 2, zdot, a_ok, f, NULL), FRICREG_OK);
+    ck_assert_double_eq(f[0], 1.0);
+    fricreg_ctx_free(ctx);
+}
+END_TEST
+
+/* The stick stiffness with slopes mun/eps that overflow: mun = 1e10, eps = 1e-300 gives
+ * s = 1e310 = Inf, and D^1/2 W D^1/2 with W_01 = 0 had Inf and NaN (Inf * 0) entries, on which
+ * GSL's eigensolver never returned (fuzz_ctx; the call hung). Now the matrix is scaled first:
+ * lambda = 2 (W_11 s_1, the largest) * 1e10 / 1e-300 rounds to +Inf, an honest "too stiff",
+ * and with a finite slope the scaling is exact: W = [[1, -1], [-1, 2]], mun = (0.5, 0.25),
+ * eps = 0.02, law (3): D = diag(25, 12.5), eigenvalues 25 +- sqrt(312.5) = 25 +- 17.67767. */
+START_TEST(stick_stiffness_with_overflowing_slopes)
+{
+    fricreg_ctx *ctx = NULL;
+    ck_assert_int_eq(fricreg_ctx_create(2, &ctx), FRICREG_OK);
+    const double W[4] = {1.0, 0.0, 0.0, 2.0}, mun[2] = {1e10, 1e10};
+    ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, 2, W), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, 2, mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_law(ctx, FRICREG_LAW_VELOCITY_LIMITED, 1e-300), FRICREG_OK);
+    double lambda = 0.0;
+    ck_assert_int_eq(fricreg_ctx_stick_stiffness(ctx, &lambda), FRICREG_OK);
+    ck_assert(isinf(lambda) && lambda > 0.0);
+
+    const double W2[4] = {1.0, -1.0, -1.0, 2.0}, mun2[2] = {0.5, 0.25};
+    ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, 2, W2), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, 2, mun2), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_law(ctx, FRICREG_LAW_VELOCITY_LIMITED, 0.02), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_stick_stiffness(ctx, &lambda), FRICREG_OK);
+    ck_assert_double_eq_tol(lambda, 25.0 + sqrt(312.5), 1e-12);
+    fricreg_ctx_free(ctx);
+}
+END_TEST
+
+/* The tangent with a subnormal W: W = 3.46e-323 [[1, 1], [1, 1]] (PSD, rank 1), the paper's
+ * partition, contact 0 at rest with f_eq,0 = -(2.2e-308 + W_01 f_1)/W_00 ~ -6.4e14, saturated
+ * at f_0 = -1, contact 1 sliding (f_1 = +1). d f_0/d a_free is 0 there (saturated), but
+ * W_00^-1 = 2.9e322 is beyond DBL_MAX and Inf * 0 gave NaN (fuzz_ctx). */
+START_TEST(tangent_with_subnormal_w)
+{
+    fricreg_ctx *ctx = NULL;
+    ck_assert_int_eq(fricreg_ctx_create(2, &ctx), FRICREG_OK);
+    const double w = 3.4584595208887258e-323, W[4] = {w, w, w, w};
+    ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, 2, W), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_partition(ctx, FRICREG_PARTITION_PAPER), FRICREG_OK);
+    const double zdot[2] = {0.0, -6705.9326171875}, a[2] = {2.2250738585072014e-308, -6.7e-4};
+    double f[2], dz[4], da[4];
+    ck_assert_int_eq(fricreg_ctx_eval(ctx, 2, zdot, a, f, NULL), FRICREG_OK);
+    ck_assert_double_eq(f[0], -1.0);
+    ck_assert_double_eq(f[1], 1.0);
+    ck_assert_int_eq(fricreg_ctx_tangent(ctx, 2, dz, da), FRICREG_OK);
+    for (int k = 0; k < 4; k++) {
+        ck_assert_msg(!isnan(dz[k]) && !isnan(da[k]), "entry %d: %g %g", k, dz[k], da[k]);
+        ck_assert_double_eq(da[k], 0.0); /* saturated and sliding: a_free moves nothing */
+    }
+    fricreg_ctx_free(ctx);
+}
+END_TEST
+
+int main(void)
+{
+    Suite *s = suite_create("bad_input");
+    TCase *tc = tcase_create("bad_input");
+    tcase_add_test(tc, matrix);
+    tcase_add_test(tc, non_status_functions);
+    tcase_add_test(tc, indefinite_w_with_tiny_diagonal);
+    tcase_add_test(tc, dense_feq_overflow_is_refused);
+    tcase_add_test(tc, stick_stiffness_with_overflowing_slopes);
+    tcase_add_test(tc, tangent_with_subnormal_w);
+    suite_add_tcase(s, tc);
+    SRunner *sr = srunner_create(s);
+    srunner_run_all(sr, CK_NORMAL);
+    int failed = srunner_ntests_failed(sr);
+    srunner_free(sr);
+    return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
