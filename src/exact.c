@@ -582,8 +582,10 @@ int fricreg_exact_dissipation(const fricreg_exact *ex, size_t ncycles, double D[
     if (ncycles != fricreg_exact_ncycles(ex))
         return FRICREG_ESIZE;
     double T = period(ex);
-    for (size_t k = 0; k < ncycles; k++) /* -∫ x' f dt = mun ∫ |x'| dt on a slip */
-        D[k] = ex->mun * slid(ex, (double)k * T, (double)(k + 1) * T);
+    /* -∫ x' f dt = mun ∫ |x'| dt on a slip; without friction nothing is dissipated, even where
+     * the distance slid overflows (x0 near DBL_MAX: 0 * inf; tests/fuzz/regressions/exact/). */
+    for (size_t k = 0; k < ncycles; k++)
+        D[k] = ex->mun == 0.0 ? 0.0 : ex->mun * slid(ex, (double)k * T, (double)(k + 1) * T);
     return FRICREG_OK;
 }
 

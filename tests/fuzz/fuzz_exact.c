@@ -10,9 +10,8 @@
  *
  * The run length is capped: a run is made only when the header says it is refused before any
  * work (t_end NaN, Inf, <= 0 or over 10^6 cycles), or when its scan is short, t_end max(1,
- * omega) <= 16 (about 2600 scan points), at most 4 runs per input. Longer runs are the subject
- * of issue 11's first item (the solver's unbounded work, being bounded in src/exact.c); this
- * target must not hang on today's code. */
+ * omega) <= 16 (about 2600 scan points), at most 4 runs per input: the solver's work is bounded
+ * (the limits of fricreg_exact.h), but a long run is slow, and fuzzing wants many short ones. */
 #include "fuzz_input.h"
 
 #include "fricreg_exact.h"
@@ -177,7 +176,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         }
         require(status,
                 CODE(FRICREG_ENONFINITE) | CODE(FRICREG_EINVAL) | CODE(FRICREG_ENOMEM) |
-                    CODE(FRICREG_EINTEGRATOR),
+                    CODE(FRICREG_EINTEGRATOR) | CODE(FRICREG_EDIVERGED),
                 "run");
         if (status != FRICREG_OK) {
             double kept = NAN;
@@ -190,12 +189,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             continue;
         }
         fricreg_exact_get_value(ex, FRICREG_EXACT_VALUE_TIME, &held);
-        /* KNOWN, reported for src/exact.c (issue 11): with a parameter near DBL_MAX the closed
-         * forms overflow and the run returns OK with a NaN state (v0 = DBL_MAX: x(0) NaN) or
-         * a NaN dissipation (x0 = DBL_MAX, mun = 0: D = 0 * Inf). Checked below 1e150 only,
-         * until the solver refuses or scales such runs (tests/fuzz/known/exact/). */
-        if (fmax(fmax(fabs(a), fabs(x0)), fmax(fabs(v0), mun)) <= 1e150)
-            check_solution(ex, a, omega, mun, x0, v0, held);
+        check_solution(ex, a, omega, mun, x0, v0, held);
     }
     fricreg_exact_free(ex);
     return 0;
