@@ -349,8 +349,8 @@ static void op_misc(struct fuzz_input *in, fricreg_ctx *ctx)
     int64_t value;
     fuzz_fill(&value, sizeof value);
     int status = fricreg_ctx_get_stat(ctx, which, &value);
-    FUZZ_REQUIRE(status == (which >= 0 && which <= FRICREG_STAT_QP_ITERATIONS ? FRICREG_OK
-                                                                              : FRICREG_EINVAL),
+    FUZZ_REQUIRE(status == (which >= 0 && which <= FRICREG_STAT_FACTOR_UPDATES ? FRICREG_OK
+                                                                               : FRICREG_EINVAL),
                  "get_stat(%d): %d", which, status);
     FUZZ_REQUIRE(status == FRICREG_OK ? value >= 0 : fuzz_untouched(&value, sizeof value),
                  "get_stat(%d) value", which);
