@@ -168,8 +168,11 @@ static void eval_diagonal(fricreg_ctx *ctx, const double zdot[], const double a_
  * to a bound, a force passed off as the law's. */
 #define FEQ_RANGE 1e280
 
-/* Before the solve: each near-stick contact's f_eq with the others at rest,
- * (|a_free,i| + |W_iL f_L|)/W_ii + 2 mun_i (the band's shift), within FEQ_RANGE. */
+/* Before the solve: a bound on each near-stick contact's f_eq whatever the forces,
+ * (|a_free,i| + sum_j |W_ij| mun_j)/W_ii + 2 mun_i (the band's shift, and |f_j| <= mun_j),
+ * within FEQ_RANGE. Bounding with the slipping forces only let the consistent law's QP
+ * form W f with near-stick forces at their bounds, which overflowed for W near DBL_MAX and
+ * returned forces that are not the law (tests/fuzz/regressions/ctx/). */
 static int check_feq_range(fricreg_ctx *ctx, const double a_free[])
 {
     size_t m = ctx->m;
@@ -178,12 +181,12 @@ static int check_feq_range(fricreg_ctx *ctx, const double a_free[])
         const double *row = ctx->W + i * m;
         double load = fabs(a_free[i]);
         for (size_t j = 0; j < m; j++)
-            load += fabs(row[j] * ctx->f[j]); /* f holds f_L, and 0 on S */
+            load += fabs(row[j]) * ctx->mun[j];
         double reach = load / row[i] + 2.0 * ctx->mun[i];
         if (!(reach <= FEQ_RANGE))
             return fr_fail(ctx, FRICREG_ENONFINITE,
-                           "eval: contact %zu: f_eq ~ (a_free + W f_L)/W_ii = %g is beyond the "
-                           "range of the near-stick solve (%g)",
+                           "eval: contact %zu: f_eq up to (|a_free| + |W| mun)/W_ii = %g is beyond "
+                           "the range of the near-stick solve (%g)",
                            i, reach, FEQ_RANGE);
     }
     return FRICREG_OK;
