@@ -221,10 +221,12 @@ static int parse_common(const char *option, const char *text, struct cli_run *ru
     if (strcmp(option, "--extrapolate") == 0) {
         double levels;
         int status = parse_positive(option, text, &levels);
-        if (status == 0 && (levels != floor(levels) || levels < 2 || levels > 8))
+        if (status != 0)
+            return status; /* not a number: never converted to int */
+        if (levels != floor(levels) || levels < 2 || levels > 8)
             return cli_usage_error(option, "must be a whole number of levels from 2 to 8");
         run->extrapolate = (int)levels;
-        return status;
+        return 0;
     }
     if (strcmp(option, "--output") == 0) {
         if (strcmp(text, "summary") == 0)

@@ -251,13 +251,14 @@ static void check_forces(const struct model *md, const double zdot[], const doub
         }
         /* Dense: f_i is the law at (zdot_i, f_eq,i) to the rounding of the sums forming f_eq
          * (relative 1e-6 of their magnitude, generous for the conditioning eval accepts; and
-         * 1e-300 absolute: forces near DBL_MIN lose their digits to underflow). */
+         * DBL_MIN/DBL_EPSILON ~ 1e-292 absolute: below it a double has fewer than 53 bits, and
+         * forces lose their digits to underflow). */
         double scale = fabs(a_free[i]);
         for (size_t j = 0; j < m; j++)
             scale += fabs(md->W[i * m + j] * f[j]);
         scale = scale / md->W[i * m + i] + md->mun[i];
         double expected = law_at(md, i, zdot[i], feq);
-        FUZZ_REQUIRE(fabs(f[i] - expected) <= 1e-6 * scale + 1e-300, /* + underflow */
+        FUZZ_REQUIRE(fabs(f[i] - expected) <= 1e-6 * scale + DBL_MIN / DBL_EPSILON,
                      "eval dense: f[%zu] %.17g, law at f_eq %.17g gives %.17g (scale %g)", i, f[i],
                      f_eq[i], expected, scale);
     }
