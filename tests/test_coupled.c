@@ -744,6 +744,37 @@ START_TEST(paper_partition_jumps_as_the_issue_measured)
 }
 END_TEST
 
+/* The accuracy promise of fricreg_ctx_eval in acceleration units (a fuzz finding,
+ * tests/fuzz/regressions/ctx/consistent_subnormal_w_underflow): with a 1x1 dense W the QP is
+ * law (4) at f_eq = -a_free/W, to rounding while W mun is a normal double far above 1e-292
+ * (W = 1e-280 here: 8 ulp of mun, as in the diagonal test below); at W = 5e-324 (the smallest
+ * subnormal) W c mun underflows and the force may be anything in the box, but it must still be
+ * finite, in the box, and move the contact by less than 1e-292, as the header says. */
+START_TEST(tiny_mobility_keeps_its_acceleration_to_1e_292)
+{
+    static const double mobilities[2] = {1e-280, 4.9406564584124654e-324};
+    const double mun = 1.0, eps = 0.001, zdot = 3.90625e-5, a_free = 0.0;
+    double law4;
+    ck_assert_int_eq(fricreg_law_eval(FRICREG_LAW_QUINN, zdot, 0.0, mun, eps, &law4), FRICREG_OK);
+    ck_assert_double_eq_tol(law4, -0.078125, 1e-15); /* -c mun, c = 2 zdot/eps */
+    for (int k = 0; k < 2; k++) {
+        fricreg_ctx *ctx = NULL;
+        double f = NAN;
+        ck_assert_int_eq(fricreg_ctx_create(1, &ctx), FRICREG_OK);
+        ck_assert_int_eq(fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, eps), FRICREG_OK);
+        ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, 1, &mun), FRICREG_OK);
+        ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, 1, &mobilities[k]), FRICREG_OK);
+        ck_assert_int_eq(fricreg_ctx_eval(ctx, 1, &zdot, &a_free, &f, NULL), FRICREG_OK);
+        ck_assert(isfinite(f) && fabs(f) <= mun);
+        if (k == 0)
+            ck_assert_double_eq_tol(f, law4, 8 * DBL_EPSILON * mun);
+        else
+            ck_assert(fabs(mobilities[k] * (f - law4)) < DBL_MIN / DBL_EPSILON);
+        fricreg_ctx_free(ctx);
+    }
+}
+END_TEST
+
 /* ---- 3. Diagonal W: law (4) contact by contact -------------------------------------------- */
 
 /* With W = diag(w) the QP separates, so the consistent law is law (4) at f_eq,i = -a_free,i/w_i:
@@ -1144,6 +1175,7 @@ static Suite *coupled_suite(void)
     tcase_add_test(tc, consistent_law_is_continuous_in_the_bounds);
     tcase_add_test(tc, paper_partition_jumps_as_the_issue_measured);
     tcase_add_test(tc, diagonal_w_is_law_4_contact_by_contact);
+    tcase_add_test(tc, tiny_mobility_keeps_its_acceleration_to_1e_292);
     suite_add_tcase(s, tc);
 
     tc = tcase_create("tangent");

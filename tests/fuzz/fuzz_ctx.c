@@ -250,15 +250,18 @@ static void check_forces(const struct model *md, const double zdot[], const doub
             continue;
         }
         /* Dense: f_i is the law at (zdot_i, f_eq,i) to the rounding of the sums forming f_eq
-         * (relative 1e-6 of their magnitude, generous for the conditioning eval accepts; and
-         * DBL_MIN/DBL_EPSILON ~ 1e-292 absolute: below it a double has fewer than 53 bits, and
-         * forces lose their digits to underflow). */
-        double scale = fabs(a_free[i]);
+         * (relative 1e-6 of their magnitude, generous for the conditioning eval accepts). Those
+         * sums are accelerations: below DBL_MIN they lose bits to underflow, and with the
+         * solve's amplification of such absolute errors, fricreg_ctx_eval promises no digits
+         * below DBL_MIN/DBL_EPSILON ~ 1e-292 in acceleration units, 1e-292/W_ii in force units
+         * (and 1e-292 in force units: forces underflow too). */
+        double scale = fabs(a_free[i]), w_ii = md->W[i * m + i];
         for (size_t j = 0; j < m; j++)
             scale += fabs(md->W[i * m + j] * f[j]);
-        scale = scale / md->W[i * m + i] + md->mun[i];
+        scale = scale / w_ii + md->mun[i];
+        double underflow = DBL_MIN / DBL_EPSILON * fmax(1.0, 1.0 / w_ii);
         double expected = law_at(md, i, zdot[i], feq);
-        FUZZ_REQUIRE(fabs(f[i] - expected) <= 1e-6 * scale + DBL_MIN / DBL_EPSILON,
+        FUZZ_REQUIRE(fabs(f[i] - expected) <= 1e-6 * scale + underflow,
                      "eval dense: f[%zu] %.17g, law at f_eq %.17g gives %.17g (scale %g)", i, f[i],
                      f_eq[i], expected, scale);
     }
