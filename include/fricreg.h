@@ -181,9 +181,10 @@ FRICREG_API int fricreg_ctx_set_coupling_diagonal(fricreg_ctx *ctx, size_t m, co
 /** Coupled contacts: dense symmetric positive semidefinite Delassus matrix W (the paper's R,
  *  J M^-1 J^T), m x m, row-major (W[i*m + j] = W_ij; being symmetric it reads the same
  *  column-major, so Fortran may pass its array directly). Copied; the caller keeps W.
- *  Symmetry is checked to a relative tolerance 1e-12 and semidefiniteness by the smallest
- *  eigenvalue (GSL gsl_eigen_symm, O(m^3) once here) of the Jacobi-scaled D^-1/2 W D^-1/2
- *  (D = diag W, unit diagonal), with tolerance 1e-12 m: whatever each contact's units.
+ *  Both are judged on the Jacobi-scaled A = D^-1/2 W D^-1/2 (D = diag W, unit diagonal),
+ *  whatever each contact's units: symmetry as |W_ij - W_ji| <= 1e-12 sqrt(W_ii W_jj), and
+ *  semidefiniteness by the smallest eigenvalue of A (GSL gsl_eigen_symm, O(m^3) once here),
+ *  with tolerance 1e-12 m.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_ENOTSYM;
  *  FRICREG_ENOTPSD (also if some W_ii <= 0: a contact with no mobility); FRICREG_ENOMEM. */
 FRICREG_API int fricreg_ctx_set_coupling_dense(fricreg_ctx *ctx, size_t m, const double W[]);

@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* eigen.c — eigenvalues of a symmetric matrix by GSL on memory fricreg allocates (eigen.h). */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -35,6 +36,29 @@ void fr_eigen_free(struct fr_eigen *e)
     memset(e, 0, sizeof *e);
 }
 
+/* GSL's implicit QR iteration (gsl_eigen_symm) has no iteration cap, and among entries that
+ * underflow it can stop converging: a fuzz input whose stick-stiffness matrix held entries
+ * from 1 down to 1e-317 never returned (tests/fuzz/regressions/ctx/stiffness_underflow_hangs).
+ * So the matrix is scaled by a power of two (exactly) to a largest entry in [0.5, 1), and
+ * entries below DBL_EPSILON^2 of that are set to zero: a symmetric change of 2-norm at most
+ * m DBL_EPSILON^2 max|a|, far below the eigenvalues' own rounding, about m DBL_EPSILON max|a|
+ * (Weyl's inequality). No entry is then within 1e-250 of the subnormal range. Returns the
+ * power of two the eigenvalues must be scaled back by. */
+static int normalize(double a[], size_t n)
+{
+    double largest = 0.0;
+    for (size_t k = 0; k < n; k++)
+        largest = fmax(largest, fabs(a[k]));
+    if (largest == 0.0)
+        return 0;
+    int exponent;
+    frexp(largest, &exponent);
+    double cut = ldexp(DBL_EPSILON * DBL_EPSILON, exponent);
+    for (size_t k = 0; k < n; k++)
+        a[k] = fabs(a[k]) < cut ? 0.0 : ldexp(a[k], -exponent);
+    return exponent;
+}
+
 int fr_eigen_solve(struct fr_eigen *e)
 {
     /* GSL's QR iteration never ends on a NaN or an Inf entry: refuse them here. */
@@ -44,9 +68,12 @@ int fr_eigen_solve(struct fr_eigen *e)
                 e->eval[i] = NAN; /* callers that read them see no number */
             return GSL_EDOM;
         }
+    int exponent = normalize(e->a, e->m * e->m);
     gsl_matrix_view A = gsl_matrix_view_array(e->a, e->m, e->m);
     gsl_vector_view eval = gsl_vector_view_array(e->eval, e->m);
     gsl_eigen_symm_workspace work = {e->m, e->d, e->sd};
     int status = gsl_eigen_symm(&A.matrix, &eval.vector, &work);
+    for (size_t i = 0; i < e->m; i++)
+        e->eval[i] = ldexp(e->eval[i], exponent);
     return status;
 }

@@ -751,7 +751,8 @@ START_TEST(set_coupling_diagonal_errors)
 END_TEST
 
 /* set_coupling_dense: ENULL, ESIZE (also m*m overflowing), ENONFINITE, ENOTSYM (beyond the
- * 1e-12 relative tolerance; within it accepted), ENOTPSD ([[1,2],[2,1]] has eigenvalues 3 and
+ * 1e-12 tolerance relative to sqrt(W_ii W_jj); within it accepted; asym_scaled passed the
+ * former tolerance relative to max|W|, as a fuzz finding did), ENOTPSD ([[1,2],[2,1]] has eigenvalues 3 and
  * -1; zero or negative diagonal). The old W2B stays in effect after each failure. */
 START_TEST(set_coupling_dense_errors)
 {
@@ -759,7 +760,8 @@ START_TEST(set_coupling_dense_errors)
     const double W3[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
     const double nan_[4] = {1.0, NAN, -1.0, 2.0}, inf_[4] = {1.0, -1.0, -1.0, INFINITY};
     const double asym[4] = {1.0, -1.0, -0.9, 2.0};
-    const double asym_small[4] = {2.385, -1.0, -1.0 + 1e-10, 2.0}; /* 1e-10 > 1e-12 * 2.385 */
+    const double asym_small[4] = {2.385, -1.0, -1.0 + 1e-10, 2.0}; /* 1e-10 > 1e-12 * 2.18 */
+    const double asym_scaled[4] = {1e200, 1e90, -1e90, 1.0};       /* 2e90 < 1e-12 * 1e200 */
     const double indefinite[4] = {1.0, 2.0, 2.0, 1.0};
     const double zero_diag[4] = {0.0, 0.0, 0.0, 1.3}; /* PSD, but contact 0 cannot move */
     const double neg_diag[4] = {-1.0, 0.0, 0.0, 2.0};
@@ -780,6 +782,8 @@ START_TEST(set_coupling_dense_errors)
                             "asym");
     expect_failure_recorded(ctx, fricreg_ctx_set_coupling_dense(ctx, 2, asym_small),
                             FRICREG_ENOTSYM, "asym 1e-10");
+    expect_failure_recorded(ctx, fricreg_ctx_set_coupling_dense(ctx, 2, asym_scaled),
+                            FRICREG_ENOTSYM, "asym beside a large W_00");
     expect_failure_recorded(ctx, fricreg_ctx_set_coupling_dense(ctx, 2, indefinite),
                             FRICREG_ENOTPSD, "indefinite");
     expect_failure_recorded(ctx, fricreg_ctx_set_coupling_dense(ctx, 2, zero_diag), FRICREG_ENOTPSD,
@@ -793,7 +797,7 @@ START_TEST(set_coupling_dense_errors)
     expect_two_block_state_intact(ctx);
     expect_stats(ctx, 2, 4, 1, 2);
 
-    /* Asymmetry below the tolerance, 1e-13 < 1e-12 * 2.385, is accepted. */
+    /* Asymmetry below the tolerance, 1e-13 < 1e-12 * sqrt(2.385 * 2), is accepted. */
     const double asym_tiny[4] = {2.385, -1.0, -1.0 + 1e-13, 2.0};
     ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, 2, asym_tiny), FRICREG_OK);
     fricreg_ctx_free(ctx);
