@@ -250,13 +250,17 @@ FRICREG_API int fricreg_ctx_stick_stiffness(fricreg_ctx *ctx, double *lambda);
  *     f_i is the law at (zdot_i, f_eq,i);
  *   - dense W, FRICREG_PARTITION_PAPER: W_SS f_eq,S = -(a_free,S + W_SL f_L), then the law at
  *     (zdot_S, f_eq,S); f jumps when a coupled contact crosses |zdot_j| = eps.
- *  Accuracy with a dense W: the near-stick forces are exact to the rounding of the sums they
- *  balance, a_free,i + sum_j W_ij f_j, which are accelerations. Below DBL_MIN ~ 2.2e-308 an
- *  acceleration loses bits to underflow, so a contact whose W_ii mun_i is below about 1e-292
- *  (a mobility W_ii near 1e-300) keeps no digits of its near-stick force: f_i is then a force
- *  in its box whose acceleration W_ii f_i differs from the exact one's by less than 1e-292
- *  (for W = [5e-324] with zdot in the band: 0 where law (4) says -0.08 mun; neither moves the
- *  contact by a representable amount).
+ *  Accuracy with a dense W: the LDL^T solves are backward stable in the Jacobi-scaled norm
+ *  (units in which every W_ii is 1, forces sqrt(W_ii) f_i), so f_i is the law at f_eq,i to
+ *  the rounding of the sums forming f_eq,i, a_free,i + sum_j W_ij f_j, times the scaled
+ *  condition number, or of the largest scaled force max_j sqrt(W_jj) |f_j| over sqrt(W_ii),
+ *  whichever is larger: a contact whose scaled force is tiny beside another's (scaled
+ *  forces 1e50 apart, W_ii spanning 100 orders of magnitude) can lose its digits once its
+ *  factor has been updated. The sums are accelerations: below DBL_MIN ~ 2.2e-308 they lose
+ *  bits to underflow, so a contact whose W_ii mun_i is below about 1e-292 keeps no digits of
+ *  its near-stick force, which is then a force in its box whose acceleration W_ii f_i differs
+ *  from the exact one's by less than 1e-292 (for W = [5e-324] with zdot in the band: 0 where
+ *  law (4) says -0.08 mun; neither moves the contact by a representable amount).
  *  Dense W solves with an LDL^T factor of W_SS or of W_FF on the QP's free set, kept while that
  *  set and W are unchanged; when at most 2 + |set|/8 contacts enter or leave the set it is
  *  updated, O(|set|^2) per contact (FRICREG_STAT_FACTOR_UPDATES), else, and at least once every

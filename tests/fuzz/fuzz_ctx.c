@@ -228,6 +228,9 @@ static void check_forces(const struct model *md, const double zdot[], const doub
                          const double f[], const double f_eq[])
 {
     size_t m = md->m;
+    double largest_scaled = 0.0; /* max_j sqrt(W_jj) |f_j|, the forces in Jacobi-scaled units */
+    for (size_t j = 0; md->dense && j < m; j++)
+        largest_scaled = fmax(largest_scaled, sqrt(md->W[j * m + j]) * fabs(f[j]));
     for (size_t i = 0; i < m; i++) {
         FUZZ_REQUIRE(isfinite(f[i]) && fabs(f[i]) <= md->mun[i],
                      "eval: f[%zu] = %g, mun %g (law %d eps %g dense %d)", i, f[i], md->mun[i],
@@ -249,16 +252,17 @@ static void check_forces(const struct model *md, const double zdot[], const doub
                          f[i], law_at(md, i, zdot[i], feq));
             continue;
         }
-        /* Dense: f_i is the law at (zdot_i, f_eq,i) to the rounding of the sums forming f_eq
-         * (relative 1e-6 of their magnitude, generous for the conditioning eval accepts). Those
-         * sums are accelerations: below DBL_MIN they lose bits to underflow, and with the
-         * solve's amplification of such absolute errors, fricreg_ctx_eval promises no digits
-         * below DBL_MIN/DBL_EPSILON ~ 1e-292 in acceleration units, 1e-292/W_ii in force units
-         * (and 1e-292 in force units: forces underflow too). */
+        /* Dense: f_i is the law at (zdot_i, f_eq,i) to what fricreg_ctx_eval promises: the
+         * rounding of the sums forming f_eq (relative 1e-6 of their magnitude, generous for
+         * the conditioning eval accepts), or, the solve being backward stable in the
+         * Jacobi-scaled norm, 1e-6 of the largest scaled force max_j sqrt(W_jj) |f_j| over
+         * sqrt(W_ii) (a contact beside one whose scaled force is 1e52 times its own lost its
+         * digits to an updated factor: fuzz finding); and the underflow floor, 1e-292 in
+         * acceleration units, 1e-292/W_ii in force units (and 1e-292 in force units). */
         double scale = fabs(a_free[i]), w_ii = md->W[i * m + i];
         for (size_t j = 0; j < m; j++)
             scale += fabs(md->W[i * m + j] * f[j]);
-        scale = scale / w_ii + md->mun[i];
+        scale = scale / w_ii + md->mun[i] + largest_scaled / sqrt(w_ii);
         double underflow = DBL_MIN / DBL_EPSILON * fmax(1.0, 1.0 / w_ii);
         double expected = law_at(md, i, zdot[i], feq);
         FUZZ_REQUIRE(fabs(f[i] - expected) <= 1e-6 * scale + underflow,
