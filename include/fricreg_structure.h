@@ -41,7 +41,10 @@ typedef struct fricreg_structure fricreg_structure;
  *  law (4) with eps = 1e-3, r = 0, no load and no ground motion, u = u' = 0 at t = 0,
  *  average-acceleration Newmark (beta = 1/4, gamma = 1/2), Newton tolerance 1e-10 and at
  *  most 50 iterations. All memory is allocated here (O(ndof^2 + m ndof + m^2) doubles), but
- *  for the records of set_ground_accel and set_load: steps never allocate.
+ *  for the records of set_ground_accel and set_load and for W: the first step after a model
+ *  setter hands the new W to the contacts (fricreg_ctx_set_coupling_dense, which allocates
+ *  its copy and its checks' scratch, O(m^2), and frees the old); the other steps never
+ *  allocate.
  *
  *  ndof  number of degrees of freedom, 1 <= ndof <= 2^15.
  *  m     number of friction contacts, 1 <= m <= 2^15 (a structure without friction: one
@@ -191,7 +194,7 @@ FRICREG_API int fricreg_structure_set_newton(fricreg_structure *s, double tol, i
  *  p~ = p - M r a_g, f = f(J v, a_free(u, v)) from the friction law. Newton on the exact
  *  tangent dR/da = M + (1 + alpha) (S - J^T (gamma dt F_z J - F_a J M^-1 S)),
  *  S = gamma dt C + beta dt^2 K, with F_z = df/dzdot and F_a = df/da_free from
- *  fricreg_ctx_tangent, solved by GSL's LU. First guess: the previous acceleration or, if
+ *  fricreg_ctx_tangent, solved by GSL's QR with column pivoting. First guess: the previous acceleration or, if
  *  its residual is larger than the tolerance and than this one's, the same corrected so that
  *  the contacts whose force is below the bound (law (4): in its band, sticking) keep their
  *  velocities over the step (the smallest such correction in M's norm). Each
@@ -199,12 +202,13 @@ FRICREG_API int fricreg_structure_set_newton(fricreg_structure *s, double tol, i
  *  band (to zdot_i = 0, once per contact and step), then halved until the residual's 2-norm
  *  decreases (Armijo, 1e-4), at most 30 halvings; should that stall, Newton starts again
  *  from the previous acceleration without the cuts. A step whose Newton does not converge
- *  within max_iter iterations in all (or whose line search or LU fails) is still taken, from
+ *  within max_iter iterations in all (or whose line search or linear solve fails) is still taken, from
  *  its last iterate, and counted in FRICREG_SSTAT_NEWTON_FAILURES.
  *  The energy balance is updated (fricreg_structure_get_value). The first step after a model
  *  setter forms G = J M^-1 and W (O(m ndof^2 + m^2 ndof)) and the equilibrium acceleration
- *  at t; each Newton iteration costs one tangent, O(m^2 ndof + m ndof^2) to form the matrix
- *  and an O(ndof^3) LU; the corrected guess O(m ndof + m^3) and a residual. No heap
+ *  at t (and allocates W, see fricreg_structure_create); each Newton iteration costs one
+ *  tangent, O(m^2 ndof + m ndof^2) to form the matrix and an O(ndof^3) QR with column
+ *  pivoting; the corrected guess O(m ndof + m^3) and a residual. Other steps make no heap
  *  allocation.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if dt <= 0, t + dt rounds to t, or J
@@ -289,7 +293,7 @@ FRICREG_API int fricreg_structure_get_value(const fricreg_structure *s, int whic
 /** Counters since creation or set_initial, for fricreg_structure_get_stat. Fixed forever. */
 enum fricreg_structure_stat {
     FRICREG_SSTAT_STEPS = 0,             /**< steps taken */
-    FRICREG_SSTAT_NEWTON_ITERATIONS = 1, /**< Newton iterations (LU solves), all steps */
+    FRICREG_SSTAT_NEWTON_ITERATIONS = 1, /**< Newton iterations (linear solves), all steps */
     FRICREG_SSTAT_NEWTON_MAX = 2,        /**< most Newton iterations in one step */
     FRICREG_SSTAT_NEWTON_FAILURES = 3,   /**< steps whose Newton did not converge */
     FRICREG_SSTAT_LINE_SEARCH_CUTS = 4   /**< halvings of Newton directions, all steps */

@@ -53,7 +53,11 @@ static void form_S(fricreg_structure *s, double dt)
     s->S_dt = dt;
 }
 
-/* The Newton direction dx = -(dR/dx)^-1 R at the last evaluated point, by GSL's LU. */
+/* The Newton direction dx = -(dR/dx)^-1 R at the last evaluated point, by GSL's QR with
+ * column pivoting on workspaces allocated at create: GSL 2.7's gsl_linalg_LU_decomp allocates
+ * its pivot array on every call and uses it unchecked, so a failed malloc there crashed a
+ * step (found by tests/alloc/test_alloc_failure.c); QRPT with a caller's norm vector
+ * allocates nothing, at twice LU's flops. A zero on R's diagonal is a singular matrix. */
 static int newton_direction(fricreg_structure *s, double dt)
 {
     int status = fricreg_ctx_tangent(s->ctx, s->m, s->Fz->data, s->Fa->data);
@@ -66,12 +70,12 @@ static int newton_direction(fricreg_structure *s, double dt)
     gsl_blas_dgemm(CblasTrans, CblasNoTrans, -w, s->J, s->T1, w, s->A);
     gsl_matrix_add(s->A, s->M);
     int signum;
-    if (gsl_linalg_LU_decomp(s->A, s->perm, &signum) != GSL_SUCCESS)
+    if (gsl_linalg_QRPT_decomp(s->A, s->tau, s->perm, &signum, s->norm) != GSL_SUCCESS)
         return FRICREG_ESINGULAR;
     for (size_t k = 0; k < s->n; k++)
         if (gsl_matrix_get(s->A, k, k) == 0.0)
             return FRICREG_ESINGULAR;
-    if (gsl_linalg_LU_solve(s->A, s->perm, s->R, s->dx) != GSL_SUCCESS)
+    if (gsl_linalg_QRPT_solve(s->A, s->tau, s->perm, s->R, s->dx) != GSL_SUCCESS)
         return FRICREG_ESINGULAR;
     gsl_vector_scale(s->dx, -1.0);
     return FRICREG_OK;

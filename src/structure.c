@@ -23,12 +23,13 @@ void fricreg_structure_free(fricreg_structure *s)
 {
     if (s == NULL)
         return;
-    void *blocks[] = {s->M,    s->K,     s->C,     s->J,    s->L,          s->G,          s->W,
-                      s->S,    s->GS,    s->A,     s->Fz,   s->Fa,         s->T1,         s->r,
-                      s->p,    s->Mr,    s->u,     s->v,    s->a,          s->ptil,       s->f,
-                      s->x,    s->dx,    s->xt,    s->u1,   s->v1,         s->guess,      s->R,
-                      s->Rt,   s->ptil1, s->hist,  s->up,   s->vp,         s->work,       s->f1,
-                      s->zdot, s->afree, s->mwork, s->perm, s->eigen_work, s->eigenvalues};
+    void *blocks[] = {s->M,    s->K,     s->C,     s->J,    s->L,          s->G,           s->W,
+                      s->S,    s->GS,    s->A,     s->Fz,   s->Fa,         s->T1,          s->r,
+                      s->p,    s->Mr,    s->u,     s->v,    s->a,          s->ptil,        s->f,
+                      s->x,    s->dx,    s->xt,    s->u1,   s->v1,         s->guess,       s->R,
+                      s->Rt,   s->ptil1, s->hist,  s->up,   s->vp,         s->work,        s->f1,
+                      s->zdot, s->afree, s->mwork, s->perm, s->eigen_work, s->eigenvalues, s->tau,
+                      s->norm};
     for (size_t k = 0; k < sizeof blocks / sizeof *blocks; k++)
         free(blocks[k]); /* gsl_mem.h: one block each */
     fricreg_ctx_free(s->ctx);
@@ -57,9 +58,10 @@ static int allocate(fricreg_structure *s)
     for (size_t k = 0; k < sizeof mm / sizeof *mm; k++)
         if ((*mm[k] = fr_gsl_matrix_new(m, m)) == NULL)
             return 0;
-    gsl_vector **nv[] = {&s->r,  &s->p,     &s->Mr,   &s->u,  &s->v,  &s->a,     &s->ptil,
-                         &s->x,  &s->dx,    &s->xt,   &s->u1, &s->v1, &s->guess, &s->R,
-                         &s->Rt, &s->ptil1, &s->hist, &s->up, &s->vp, &s->work};
+    gsl_vector **nv[] = {&s->r,     &s->p,    &s->Mr,  &s->u,     &s->v,    &s->a,
+                         &s->ptil,  &s->x,    &s->dx,  &s->xt,    &s->u1,   &s->v1,
+                         &s->guess, &s->R,    &s->Rt,  &s->ptil1, &s->hist, &s->up,
+                         &s->vp,    &s->work, &s->tau, &s->norm};
     for (size_t k = 0; k < sizeof nv / sizeof *nv; k++)
         if ((*nv[k] = fr_gsl_vector_new(n)) == NULL)
             return 0;

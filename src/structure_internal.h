@@ -75,8 +75,9 @@ struct fricreg_structure {
     /* Newton scratch, allocated at create. */
     gsl_matrix *S, *GS; /* n x n: gamma dt C + beta dt^2 K; m x n: G S */
     double S_dt;        /* the dt S was formed for (0: none) */
-    gsl_matrix *A;      /* n x n: the Newton matrix, then its LU */
+    gsl_matrix *A;      /* n x n: the Newton matrix, then its QR with column pivoting */
     gsl_permutation *perm;
+    gsl_vector *tau, *norm;  /* [n] the QR's Householder coefficients, column norms */
     gsl_matrix *Fz, *Fa;     /* m x m: df/dzdot, df/da_free */
     gsl_matrix *T1;          /* m x n: gamma dt F_z J - F_a G S */
     gsl_vector *x, *dx, *xt; /* unknown a, direction, trial */

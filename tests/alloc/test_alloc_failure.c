@@ -5,7 +5,8 @@
  * -Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc,--wrap=free, so every allocation of fricreg
  * and of the GSL code it calls passes through the wrappers below (the C library's own do not).
  * For each scenario (create, set_coupling_dense, the step guard's stiffness, a simulation of
- * each system with one stepper of each family, the exact solver), the scenario is run once
+ * each system with one stepper of each family, the exact solver, a structure with each
+ * scheme), the scenario is run once
  * with no failure to count its allocations n, then again for every k = 1..n with the k-th
  * allocation failing. Each case
  * must return FRICREG_OK or FRICREG_ENOMEM (with ENOMEM recorded in the object's error state
@@ -31,6 +32,7 @@
 #include "fricreg.h"
 #include "fricreg_exact.h"
 #include "fricreg_sim.h"
+#include "fricreg_structure.h"
 
 /* ---- The allocator hook ------------------------------------------------------------------ */
 
@@ -311,6 +313,58 @@ static int exact_solve(void)
     return status;
 }
 
+/* A structure: a 3-storey shear frame (storey masses 2, 2, 1; storey stiffnesses 200) with
+ * friction dampers across storeys 1 and 2 (J couples them: W dense), Rayleigh damping, a roof
+ * load ramp; stepped by one scheme of each family (Newmark, HHT-alpha, central difference)
+ * and by a GSL stepper (fricreg_structure_run_ode), each alloc made by create, the setters
+ * and the run failed in turn. */
+static const double FRAME_M[9] = {2, 0, 0, 0, 2, 0, 0, 0, 1};
+static const double FRAME_K[9] = {400, -200, 0, -200, 400, -200, 0, -200, 200};
+static const double FRAME_J[6] = {1, 0, 0, -1, 1, 0}, FRAME_MUN[2] = {5, 3};
+static const double FRAME_P[3] = {0, 0, 1}, FRAME_G[3] = {0, 40, 0};
+enum { SCHEME_NEWMARK, SCHEME_HHT, SCHEME_CENTRAL, SCHEME_ODE, N_SCHEMES };
+static int current_scheme;
+
+static int structure_model(fricreg_structure *s)
+{
+    int status = fricreg_structure_set_mass(s, 3, FRAME_M);
+    if (status == FRICREG_OK)
+        status = fricreg_structure_set_stiffness(s, 3, FRAME_K);
+    if (status == FRICREG_OK)
+        status = fricreg_structure_set_rayleigh(s, 0.1, 0.001);
+    if (status == FRICREG_OK)
+        status = fricreg_structure_set_contacts(s, 2, 3, FRAME_J);
+    if (status == FRICREG_OK)
+        status = fricreg_structure_set_bounds(s, 2, FRAME_MUN);
+    if (status == FRICREG_OK)
+        status = fricreg_structure_set_load(s, 3, FRAME_P, 0.0, 0.5, 3, FRAME_G);
+    if (status == FRICREG_OK) /* a band wide enough for central differences at dt = 0.001 */
+        status = fricreg_structure_set_law(s, FRICREG_LAW_QUINN, 0.5);
+    return status;
+}
+
+static int structure_run(void)
+{
+    fricreg_structure *s = NULL;
+    int status = fricreg_structure_create(3, 2, &s);
+    if ((status == FRICREG_OK) != (s != NULL))
+        NOTE("structure_create: status %d with handle %p", status, (void *)s);
+    if (status == FRICREG_OK)
+        status = structure_model(s);
+    if (status == FRICREG_OK && current_scheme == SCHEME_HHT)
+        status = fricreg_structure_set_hht(s, -0.1);
+    if (status == FRICREG_OK && current_scheme == SCHEME_CENTRAL)
+        status = fricreg_structure_set_central_difference(s);
+    if (status == FRICREG_OK)
+        status = current_scheme == SCHEME_ODE
+                     ? fricreg_structure_run_ode(s, FRICREG_INT_RKF45, 0.001, 1e-6, 1e-8, 1.0)
+                     : fricreg_structure_run(s, 0.001, 1.0);
+    if (s != NULL && status != FRICREG_OK && fricreg_structure_errcode(s) != status)
+        NOTE("structure: status %d, errcode %d", status, fricreg_structure_errcode(s));
+    fricreg_structure_free(s);
+    return status;
+}
+
 /* ---- The loop ---------------------------------------------------------------------------- */
 
 struct tally {
@@ -486,6 +540,45 @@ START_TEST(test_exact_solve)
 }
 END_TEST
 
+START_TEST(test_structure_run)
+{
+    static const char *const names[N_SCHEMES] = {"structure newmark", "structure hht",
+                                                 "structure central difference",
+                                                 "structure run_ode rkf45"};
+    current_scheme = _i;
+    fail_each_allocation(names[_i], structure_run);
+}
+END_TEST
+
+/* fricreg_structure.h: steps never allocate once the first step after the model's setters
+ * has handed W to the contacts, for every scheme (GSL 2.7's gsl_linalg_LU_decomp allocated in
+ * each Newton iteration until 1.3). */
+START_TEST(test_structure_steps_do_not_allocate)
+{
+    for (int scheme = SCHEME_NEWMARK; scheme <= SCHEME_CENTRAL; scheme++) {
+        fricreg_structure *s = NULL;
+        ck_assert_int_eq(fricreg_structure_create(3, 2, &s), FRICREG_OK);
+        ck_assert_int_eq(structure_model(s), FRICREG_OK);
+        if (scheme == SCHEME_HHT)
+            ck_assert_int_eq(fricreg_structure_set_hht(s, -0.1), FRICREG_OK);
+        if (scheme == SCHEME_CENTRAL)
+            ck_assert_int_eq(fricreg_structure_set_central_difference(s), FRICREG_OK);
+        ck_assert_int_eq(fricreg_structure_step(s, 0.001), FRICREG_OK); /* forms W */
+        hook_arm(1); /* the first request would fail: none may be made */
+        int status = fricreg_structure_run(s, 0.001, 0.5);
+        hook_disarm();
+        ck_assert_int_eq(status, FRICREG_OK);
+        ck_assert_msg(n_allocs == 0, "scheme %d: 499 steps made %ld allocations", scheme, n_allocs);
+        int64_t iterations = 0;
+        ck_assert_int_eq(fricreg_structure_get_stat(s, FRICREG_SSTAT_NEWTON_ITERATIONS,
+                                                    &iterations),
+                         FRICREG_OK);
+        ck_assert(scheme == SCHEME_CENTRAL || iterations >= 499); /* Newton ran in each step */
+        fricreg_structure_free(s);
+    }
+}
+END_TEST
+
 static Suite *alloc_suite(void)
 {
     Suite *s = suite_create("alloc_failure");
@@ -494,12 +587,14 @@ static Suite *alloc_suite(void)
     tcase_add_test(core, test_ctx_set_coupling_dense);
     tcase_add_test(core, test_ctx_stick_stiffness);
     tcase_add_test(core, test_eval_does_not_allocate);
+    tcase_add_test(core, test_structure_steps_do_not_allocate);
     suite_add_tcase(s, core);
     TCase *drivers = tcase_create("drivers");
     tcase_add_loop_test(drivers, test_sim_run, 0, (int)(3 * N_INTEGRATORS));
     tcase_add_test(drivers, test_sim_run_extrapolated);
     tcase_add_test(drivers, test_exact_run);
     tcase_add_test(drivers, test_exact_solve);
+    tcase_add_loop_test(drivers, test_structure_run, 0, N_SCHEMES);
     suite_add_tcase(s, drivers);
     return s;
 }
