@@ -186,7 +186,8 @@ FRICREG_API int fricreg_ctx_set_coupling_diagonal(fricreg_ctx *ctx, size_t m, co
  *  semidefiniteness by the smallest eigenvalue of A (GSL gsl_eigen_symm, O(m^3) once here),
  *  with tolerance 1e-12 m.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_ENOTSYM;
- *  FRICREG_ENOTPSD (also if some W_ii <= 0: a contact with no mobility); FRICREG_ENOMEM. */
+ *  FRICREG_ENOTPSD (also if some W_ii < DBL_MIN ~ 2.2e-308: a contact with no mobility, or
+ *  one whose inverse, the scale of its tangent, overflows); FRICREG_ENOMEM. */
 FRICREG_API int fricreg_ctx_set_coupling_dense(fricreg_ctx *ctx, size_t m, const double W[]);
 
 /** How the near-stick forces of coupled contacts (dense W) are found. Values are fixed forever.
@@ -259,8 +260,8 @@ FRICREG_API int fricreg_ctx_stick_stiffness(fricreg_ctx *ctx, double *lambda);
  *  factor has been updated. The sums are accelerations: below DBL_MIN ~ 2.2e-308 they lose
  *  bits to underflow, so a contact whose W_ii mun_i is below about 1e-292 keeps no digits of
  *  its near-stick force, which is then a force in its box whose acceleration W_ii f_i differs
- *  from the exact one's by less than 1e-292 (for W = [5e-324] with zdot in the band: 0 where
- *  law (4) says -0.08 mun; neither moves the contact by a representable amount).
+ *  from the exact one's by less than 1e-292 (neither moves the contact by a representable
+ *  amount).
  *  Dense W solves with an LDL^T factor of W_SS or of W_FF on the QP's free set, kept while that
  *  set and W are unchanged; when at most 2 + |set|/8 contacts enter or leave the set it is
  *  updated, O(|set|^2) per contact (FRICREG_STAT_FACTOR_UPDATES), else, and at least once every
@@ -284,7 +285,8 @@ FRICREG_API int fricreg_ctx_stick_stiffness(fricreg_ctx *ctx, double *lambda);
  *  times its diagonal entry, d_k < 1e-12 W_kk (for a pair, d_2 / W_22 = 1 - rho^2 with
  *  rho = W_12 / sqrt(W_11 W_22)), which happens for redundant contacts (their forces are not
  *  unique), whatever the contacts' units (the ratio does not change when W is scaled by a
- *  diagonal: diag(1, 1e-14) is regular); also (never seen, a safeguard) if the QP's active-set iterations exceed
+ *  diagonal: diag(1, 1e-14) is regular), or below DBL_MIN (its inverse would overflow); also
+ *  (never seen, a safeguard) if the QP's active-set iterations exceed
  *  100 + 10 |S|. */
 FRICREG_API int fricreg_ctx_eval(fricreg_ctx *ctx, size_t m, const double zdot[],
                                  const double a_free[], double f[], double f_eq[]);

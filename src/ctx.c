@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* ctx.c — context life cycle, setters, error state and counters. Evaluation: partition.c. */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -185,15 +186,17 @@ static int min_eigenvalue(const double W[], size_t m, const double d[], double *
 static int check_delassus(fricreg_ctx *ctx, size_t m, const double W[])
 {
     const char *who = "set_coupling_dense";
+    /* A mobility must be a normal double: 1/W_ii beyond DBL_MAX made the tangent's -W_FF^-1
+     * Inf, and 0 * Inf NaN (W = diag(2.385, 4.9e-324): fuzz finding). */
     for (size_t i = 0; i < m; i++)
-        if (!(W[i * m + i] > 0.0))
-            return fr_fail(ctx, FRICREG_ENOTPSD, "%s: W[%zu][%zu] = %g must be > 0", who, i, i,
-                           W[i * m + i]);
+        if (!(W[i * m + i] >= DBL_MIN))
+            return fr_fail(ctx, FRICREG_ENOTPSD, "%s: W[%zu][%zu] = %g must be >= %g", who, i, i,
+                           W[i * m + i], DBL_MIN);
     double *d = malloc(m * sizeof *d);
     if (d == NULL)
         return fr_fail(ctx, FRICREG_ENOMEM, "%s: out of memory", who);
     for (size_t i = 0; i < m; i++)
-        d[i] = 1.0 / sqrt(W[i * m + i]); /* finite: W_ii >= 4.9e-324 gives d_i <= 4.5e161 */
+        d[i] = 1.0 / sqrt(W[i * m + i]); /* W_ii >= DBL_MIN gives d_i <= 6.7e153 */
     /* Symmetry on the scaled A too: relative to max|W| it let W_01 = 3.6e5, W_10 = -2.4e5
      * pass beside W_22 = 2.9e197 (tests/fuzz/fuzz_ctx.c), and eval, which reads one triangle
      * in its factor and whole rows elsewhere, returned forces that are not the law. */

@@ -28,6 +28,7 @@
  * follows MAX_UPDATES updates, or a drift of the diagonal of U^T D U from W_BB's beyond
  * DRIFT_MAX (checked after each deletion, O(|B|^2) like the deletion): both bound the rounding
  * a long series of updates accumulates. */
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -112,8 +113,10 @@ static double append(struct fr_factor *fa, const double W[], size_t m, size_t c,
         fa->U[p * m + n] = l; /* written past the held block: harmless if c is refused */
         d -= z[p] * l;
     }
-    double ratio = d / W[c * m + c]; /* W_cc > 0: set_coupling_dense */
-    if (!(ratio >= pivot_min))       /* NaN too */
+    /* W_cc >= DBL_MIN (set_coupling_dense); a pivot below DBL_MIN counts as ratio 0: its
+     * inverse would overflow, and the solves would turn 0 * Inf into NaN. */
+    double ratio = d >= DBL_MIN ? d / W[c * m + c] : 0.0;
+    if (!(ratio >= pivot_min)) /* NaN too */
         return ratio;
     fa->U[n * m + n] = 1.0;
     fa->d[n] = d;

@@ -603,7 +603,7 @@ static const struct row rows[] = {
      w_ctx_set_dense,
      "0snypm",
      CTX_REC,
-     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnpppo"), MAT(1, "poyoo")}},
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnpppo"), MAT(1, "poypo")}},
     {"fricreg_ctx_set_partition", w_ctx_set_partition, "0i", CTX_REC, {HANDLE, INT(0, "iiii")}},
     {"fricreg_ctx_stick_stiffness", w_ctx_stick_stiffness, "0m", CTX_REC, {HANDLE, PTR(1, "0")}},
     {"fricreg_ctx_eval",
@@ -1079,18 +1079,22 @@ START_TEST(stick_stiffness_with_overflowing_slopes)
 }
 END_TEST
 
-/* The tangent with a subnormal W: W = 3.46e-323 [[1, 1], [1, 1]] (PSD, rank 1), the paper's
- * partition, contact 0 at rest with f_eq,0 = -(2.2e-308 + W_01 f_1)/W_00 ~ -6.4e14, saturated
- * at f_0 = -1, contact 1 sliding (f_1 = +1). d f_0/d a_free is 0 there (saturated), but
- * W_00^-1 = 2.9e322 is beyond DBL_MAX and Inf * 0 gave NaN (fuzz_ctx). */
-START_TEST(tangent_with_subnormal_w)
+/* The tangent with the smallest W set_coupling_dense takes: W = w [[1, 1], [1, 1]] (PSD,
+ * rank 1), the paper's partition, contact 0 at rest with f_eq,0 = -(a_0 + W_01 f_1)/W_00
+ * far beyond mun, saturated at f_0 = -1, contact 1 sliding (f_1 = +1). d f_0/d a_free is 0
+ * there (saturated). With w = 3.46e-323 (subnormal) W_00^-1 was beyond DBL_MAX and Inf * 0
+ * gave NaN (fuzz_ctx); such a W is refused now (ENOTPSD), and at w = DBL_MIN the inverse,
+ * 4.5e307, is finite: no NaN. */
+START_TEST(tangent_with_tiny_w)
 {
     fricreg_ctx *ctx = NULL;
     ck_assert_int_eq(fricreg_ctx_create(2, &ctx), FRICREG_OK);
-    const double w = 3.4584595208887258e-323, W[4] = {w, w, w, w};
+    const double sub = 3.4584595208887258e-323, W_sub[4] = {sub, sub, sub, sub};
+    ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, 2, W_sub), FRICREG_ENOTPSD);
+    const double w = DBL_MIN, W[4] = {w, w, w, w};
     ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, 2, W), FRICREG_OK);
     ck_assert_int_eq(fricreg_ctx_set_partition(ctx, FRICREG_PARTITION_PAPER), FRICREG_OK);
-    const double zdot[2] = {0.0, -6705.9326171875}, a[2] = {2.2250738585072014e-308, -6.7e-4};
+    const double zdot[2] = {0.0, -6705.9326171875}, a[2] = {1e-290, -6.7e-4};
     double f[2], dz[4], da[4];
     ck_assert_int_eq(fricreg_ctx_eval(ctx, 2, zdot, a, f, NULL), FRICREG_OK);
     ck_assert_double_eq(f[0], -1.0);
@@ -1113,7 +1117,7 @@ int main(void)
     tcase_add_test(tc, indefinite_w_with_tiny_diagonal);
     tcase_add_test(tc, dense_feq_overflow_is_refused);
     tcase_add_test(tc, stick_stiffness_with_overflowing_slopes);
-    tcase_add_test(tc, tangent_with_subnormal_w);
+    tcase_add_test(tc, tangent_with_tiny_w);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);
     srunner_run_all(sr, CK_NORMAL);

@@ -745,29 +745,32 @@ START_TEST(paper_partition_jumps_as_the_issue_measured)
 END_TEST
 
 /* The accuracy promise of fricreg_ctx_eval in acceleration units (a fuzz finding,
- * tests/fuzz/regressions/ctx/consistent_subnormal_w_underflow): with a 1x1 dense W the QP is
- * law (4) at f_eq = -a_free/W, to rounding while W mun is a normal double far above 1e-292
- * (W = 1e-280 here: 8 ulp of mun, as in the diagonal test below); at W = 5e-324 (the smallest
- * subnormal) W c mun underflows and the force may be anything in the box, but it must still be
- * finite, in the box, and move the contact by less than 1e-292, as the header says. */
+ * tests/fuzz/regressions/ctx/consistent_subnormal_w_underflow, had W = [5e-324], which
+ * set_coupling_dense now refuses: below DBL_MIN): with a 1x1 dense W the QP is law (4) at
+ * f_eq = -a_free/W, to rounding while W c mun is a normal double far above 1e-292 (W = 1e-280,
+ * mun = 1: 8 ulp of mun, as in the diagonal test below); at W = 1e-300, mun = 1e-20, the term
+ * W c mun = 7.8e-322 is subnormal (a few bits) and the force may be anything in the box, but it
+ * must still be finite, in the box, and move the contact by less than 1e-292, as the header
+ * says. */
 START_TEST(tiny_mobility_keeps_its_acceleration_to_1e_292)
 {
-    static const double mobilities[2] = {1e-280, 4.9406564584124654e-324};
-    const double mun = 1.0, eps = 0.001, zdot = 3.90625e-5, a_free = 0.0;
-    double law4;
-    ck_assert_int_eq(fricreg_law_eval(FRICREG_LAW_QUINN, zdot, 0.0, mun, eps, &law4), FRICREG_OK);
-    ck_assert_double_eq_tol(law4, -0.078125, 1e-15); /* -c mun, c = 2 zdot/eps */
+    static const double mobilities[2] = {1e-280, 1e-300}, bounds[2] = {1.0, 1e-20};
+    const double eps = 0.001, zdot = 3.90625e-5, a_free = 0.0, subnormal = 4.9406564584124654e-324;
     for (int k = 0; k < 2; k++) {
         fricreg_ctx *ctx = NULL;
-        double f = NAN;
+        double f = NAN, law4 = NAN;
+        ck_assert_int_eq(fricreg_law_eval(FRICREG_LAW_QUINN, zdot, 0.0, bounds[k], eps, &law4),
+                         FRICREG_OK);
+        ck_assert_double_eq_tol(law4, -0.078125 * bounds[k], 1e-15 * bounds[k]); /* -c mun */
         ck_assert_int_eq(fricreg_ctx_create(1, &ctx), FRICREG_OK);
         ck_assert_int_eq(fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, eps), FRICREG_OK);
-        ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, 1, &mun), FRICREG_OK);
+        ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, 1, &bounds[k]), FRICREG_OK);
+        ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, 1, &subnormal), FRICREG_ENOTPSD);
         ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, 1, &mobilities[k]), FRICREG_OK);
         ck_assert_int_eq(fricreg_ctx_eval(ctx, 1, &zdot, &a_free, &f, NULL), FRICREG_OK);
-        ck_assert(isfinite(f) && fabs(f) <= mun);
+        ck_assert(isfinite(f) && fabs(f) <= bounds[k]);
         if (k == 0)
-            ck_assert_double_eq_tol(f, law4, 8 * DBL_EPSILON * mun);
+            ck_assert_double_eq_tol(f, law4, 8 * DBL_EPSILON);
         else
             ck_assert(fabs(mobilities[k] * (f - law4)) < DBL_MIN / DBL_EPSILON);
         fricreg_ctx_free(ctx);
