@@ -25,8 +25,10 @@ static double slip_slope(int law, double v, double mun, double eps)
     switch (law) {
     case FRICREG_LAW_VELOCITY_LIMITED: return fabs(v) < eps ? -mun / eps : 0.0;
     case FRICREG_LAW_TANH: {
-        double t = tanh(v / eps);
-        return -(mun / eps) * (1.0 - t * t);
+        /* sech^2 is 0 far out, where mun/eps may overflow: Inf * 0 gave NaN (mun = 1.8e308,
+         * eps = 2.2e-236: fuzz finding); a zero slope stays 0. */
+        double t = tanh(v / eps), sech2 = 1.0 - t * t;
+        return sech2 == 0.0 ? 0.0 : -(mun / eps) * sech2;
     }
     default: return 0.0; /* (1), and (2), (4), Karnopp outside their bands */
     }
