@@ -21,11 +21,17 @@ static inline double fr_stribeck_kinetic(const struct fr_stribeck *p, double s)
 }
 
 /* k'(s) = -(fs - fk) (delta/vs) (s/vs)^(delta-1) exp(-(s/vs)^delta), for s > 0 (the kinetic
- * curve's slope, <= 0; used outside the band, s >= eps > 0, where it is finite). */
+ * curve's slope, <= 0; used outside the band, s >= eps > 0, where it is finite). Written as
+ * -(fs - fk) (delta/s) y exp(-y), y = (s/vs)^delta, whose last factor is at most 1/e: the
+ * direct form overflows to Inf * 0 = NaN for tiny vs (delta/vs, (s/vs)^(delta-1) beyond
+ * DBL_MAX where exp(-y) is 0). 0 where exp(-y) underflows, and for fs == fk. */
 static inline double fr_stribeck_kinetic_slope(const struct fr_stribeck *p, double s)
 {
-    double x = s / p->vs;
-    return -(p->fs - p->fk) * (p->delta / p->vs) * pow(x, p->delta - 1.0) * exp(-pow(x, p->delta));
+    double y = pow(s / p->vs, p->delta);
+    double y_exp = y < 746.0 ? y * exp(-y) : 0.0; /* exp(-746) is 0 in double */
+    if (y_exp == 0.0 || p->fs == p->fk)
+        return 0.0;
+    return -(p->fs - p->fk) * (p->delta / s) * y_exp;
 }
 
 /* The band's bound at rho = |v|/eps in [0, 1], given k_eps = k(eps): fs at rho = 0 (exactly:
