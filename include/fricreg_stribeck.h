@@ -108,13 +108,15 @@ FRICREG_API int fricreg_stribeck_disk_eval_batch(double eps, size_t m, const dou
  *  consistent law's box QP (docs/coupled.md) has the bounds lo_i = -B_i (1 - max(-c_i, 0)),
  *  hi_i = B_i (1 - max(c_i, 0)), c_i = 2 zdot_i/eps, and b_i = a_free,i + W_ii c_i B_i
  *  + (W_SL f_L)_i; the paper's partition applies the law at (zdot_i, f_eq,i). So at rest
- *  (zdot_S = 0) the contacts stick exactly while the stick problem with bounds fs holds
- *  (|f_eq,i| <= fs_i: zdot_i's acceleration is 0), and break away at |f_eq,i| = fs_i; under the
- *  consistent law f is continuous in (zdot, a_free), across |zdot_j| = eps too. With fs = fk
- *  the numbers are those of fricreg_ctx_set_bounds with mun = fk, bit for bit.
- *  fricreg_ctx_tangent includes the bound's motion with |zdot_i|: (k(eps) - fs)/eps sgn(zdot_i)
- *  in the band, and the slip slope -k'(|zdot_i|) outside it; fricreg_ctx_stick_stiffness uses
- *  fs (the bound's largest slope at rest is 2 fs/eps).
+ *  (zdot_S = 0) the consistent law is Coulomb's stick problem with the static bounds fs: a
+ *  contact whose f_eq,i stays within fs_i holds, at zero acceleration (to rounding), and it
+ *  breaks away when |f_eq,i| reaches fs_i; f is continuous in (zdot, a_free), across
+ *  |zdot_j| = eps too. With fs = fk the numbers (f, f_eq, tangent) are those of
+ *  fricreg_ctx_set_bounds with mun = fk, bit for bit. fricreg_ctx_tangent includes the bound's
+ *  motion with |zdot_i|, (k(eps) - fs)/eps sgn(zdot_i) in the band, the slip slope
+ *  -k'(|zdot_i|) outside it, and through W_SL f_L the near-stick forces' dependence on a
+ *  sliding contact's zdot; fricreg_ctx_stick_stiffness uses fs (the band's largest slope at
+ *  rest is 2 fs/eps). Each evaluation costs one pow and exp more per sliding contact.
  *
  *  How it combines with the other setters (each discards the tangent, as every setter does):
  *   - this call selects law (4) (FRICREG_LAW_QUINN) and keeps the context's eps;
