@@ -115,6 +115,7 @@ module fricreg
     procedure :: size => ctx_size
     procedure :: set_law => ctx_set_law
     procedure :: set_bounds => ctx_set_bounds
+    procedure :: set_stribeck => ctx_set_stribeck
     procedure :: set_coupling_diagonal => ctx_set_coupling_diagonal
     procedure :: set_coupling_dense => ctx_set_coupling_dense
     procedure :: set_partition => ctx_set_partition
@@ -630,6 +631,36 @@ contains
     if (status == FRICREG_OK) status = self%check_size('set_bounds', 'mun', size(mun), m)
     if (status == FRICREG_OK) status = self%record(fricreg_ctx_set_bounds(self%ptr, m, mun))
   end function ctx_set_bounds
+
+  !> Static > kinetic (Stribeck) friction, C's fricreg_ctx_set_stribeck (fricreg_stribeck.h):
+  !> fs(m) static bounds mu_s N, fk(m) kinetic mu_k N in [0, fs], vs(m) > 0 Stribeck
+  !> velocities, delta(m) > 0 exponents; selects law (4) with the context's eps. With all four
+  !> omitted it switches Stribeck friction off (C's m = 0): law (4) with the bounds of
+  !> set_bounds. set_bounds, or set_law with another law, also switch it off.
+  !> FRICREG_ESIZE if a given array's size is not m; FRICREG_ENULL if some, not all, are
+  !> omitted; FRICREG_EINVAL (fk > fs, fk < 0, vs <= 0, delta <= 0); FRICREG_ENONFINITE.
+  function ctx_set_stribeck(self, fs, fk, vs, delta) result(status)
+    class(fricreg_context), intent(inout) :: self
+    real(c_double), intent(in), contiguous, optional :: fs(:), fk(:), vs(:), delta(:)
+    integer(c_int) :: status
+    integer(c_size_t) :: m
+    m = fricreg_ctx_size(self%ptr)
+    status = self%ready('set_stribeck', 'context')
+    if (status /= FRICREG_OK) return
+    if (.not. (present(fs) .or. present(fk) .or. present(vs) .or. present(delta))) then
+      status = self%record(fricreg_ctx_set_stribeck(self%ptr, 0_c_size_t))
+      return
+    end if
+    if (present(fs)) status = self%check_size('set_stribeck', 'fs', size(fs), m)
+    if (status == FRICREG_OK .and. present(fk)) &
+      status = self%check_size('set_stribeck', 'fk', size(fk), m)
+    if (status == FRICREG_OK .and. present(vs)) &
+      status = self%check_size('set_stribeck', 'vs', size(vs), m)
+    if (status == FRICREG_OK .and. present(delta)) &
+      status = self%check_size('set_stribeck', 'delta', size(delta), m)
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_ctx_set_stribeck(self%ptr, m, fs, fk, vs, delta))
+  end function ctx_set_stribeck
 
   !> Uncoupled contacts, W = diag(w), w(m) > 0 (inverse effective masses).
   function ctx_set_coupling_diagonal(self, w) result(status)

@@ -166,6 +166,20 @@ subroutine frbnd(h, m, mun, stat)
   stat = int(fricreg_ctx_set_bounds(fricreg_handle_to_ptr(h), int(m, c_size_t), mun))
 end subroutine frbnd
 
+!> FRSTRC(H, M, FS, FK, VS, DELTA, STAT): Stribeck friction in the context, each of FS, FK, VS,
+!> DELTA of length M (fricreg_ctx_set_stribeck); M = 0 switches it off (the arrays are not
+!> read: pass any).
+subroutine frstrc(h, m, fs, fk, vs, delta, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m
+  double precision, intent(in) :: fs(*), fk(*), vs(*), delta(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_ctx_set_stribeck(fricreg_handle_to_ptr(h), int(m, c_size_t), fs, fk, vs, &
+                                      delta))
+end subroutine frstrc
+
 !> FRCPLG(H, M, W, STAT): diagonal coupling W(M) (fricreg_ctx_set_coupling_diagonal).
 subroutine frcplg(h, m, w, stat)
   use fricreg_c

@@ -162,12 +162,15 @@ FRICREG_API size_t fricreg_ctx_size(const fricreg_ctx *ctx);
 
 /** Select the friction law and its regularization parameter eps >= DBL_MIN (velocity units; for
  *  FRICREG_LAW_KARNOPP the dead band; ignored by (1) and (2) but still validated).
+ *  A law other than FRICREG_LAW_QUINN switches Stribeck friction (fricreg_ctx_set_stribeck,
+ *  fricreg_stribeck.h) off; FRICREG_LAW_QUINN keeps it, with the new eps.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown law or eps < DBL_MIN;
  *  FRICREG_ENONFINITE if eps is NaN or infinite. */
 FRICREG_API int fricreg_ctx_set_law(fricreg_ctx *ctx, int law, double eps);
 
 /** Set the friction bounds mun[m] = mu_i N_i >= 0 (force units). May be called before every
- *  evaluation: normal forces vary. Cheap: O(m), no refactorization.
+ *  evaluation: normal forces vary. Cheap: O(m), no refactorization. Switches Stribeck friction
+ *  (fricreg_ctx_set_stribeck, fricreg_stribeck.h) off: these bounds replace it.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if m differs from the context's;
  *  FRICREG_EINVAL if some mun[i] < 0; FRICREG_ENONFINITE. */
 FRICREG_API int fricreg_ctx_set_bounds(fricreg_ctx *ctx, size_t m, const double mun[]);
@@ -309,7 +312,8 @@ FRICREG_API int fricreg_ctx_eval(fricreg_ctx *ctx, size_t m, const double zdot[]
  *     -(mun/eps) sech^2(v/eps) for tanh), and nothing in a_free;
  *   - near-stick contacts with a diagonal W, or under FRICREG_PARTITION_PAPER: law (4)
  *     (Karnopp, (2)) differentiated at (zdot_i, f_eq,i), with d f_eq,S/d a_free,S = -W_SS^-1
- *     (f_L does not move with zdot or a_free);
+ *     (f_L does not move with a_free, nor with zdot except under Stribeck friction,
+ *     fricreg_ctx_set_stribeck, where d f_L/d zdot_L = -k'(|zdot_L|) carries through W_SL);
  *   - near-stick contacts of a dense W under FRICREG_PARTITION_CONSISTENT: from the QP's final
  *     active set A (contacts held at a bound) and free set F, d f_A from the bounds
  *     (0 or -2 mun_i/eps in zdot_i) and d f_F = -W_FF^-1 (d b_F + W_FA d f_A), with

@@ -96,6 +96,55 @@ FRICREG_API int fricreg_stribeck_disk_eval_batch(double eps, size_t m, const dou
                                                  const double fk[], const double vs[],
                                                  const double delta[], double f[]);
 
+/** Static > kinetic (Stribeck) friction for the m contacts of a 1-D context (fricreg.h,
+ *  fricreg_ctx_eval), each with its own parameters: the law at the top of this header, with the
+ *  context's eps, under every coupling and partition the context offers. Since 1.3
+ *  (FRICREG_1.3).
+ *
+ *  What fricreg_ctx_eval then computes: law (4) with a bound that depends on the contact's own
+ *  |zdot_i|, B_i = fs_i + (k_i(eps) - fs_i) |zdot_i|/eps in the band |zdot_i| < eps, and the
+ *  slip force -k_i(|zdot_i|) sgn(zdot_i) outside it. With a diagonal W that is
+ *  fricreg_stribeck_eval at (zdot_i, f_eq,i = -a_free,i/W_ii), bit for bit; with a dense W the
+ *  consistent law's box QP (docs/coupled.md) has the bounds lo_i = -B_i (1 - max(-c_i, 0)),
+ *  hi_i = B_i (1 - max(c_i, 0)), c_i = 2 zdot_i/eps, and b_i = a_free,i + W_ii c_i B_i
+ *  + (W_SL f_L)_i; the paper's partition applies the law at (zdot_i, f_eq,i). So at rest
+ *  (zdot_S = 0) the consistent law is Coulomb's stick problem with the static bounds fs: a
+ *  contact whose f_eq,i stays within fs_i holds, at zero acceleration (to rounding), and it
+ *  breaks away when |f_eq,i| reaches fs_i; f is continuous in (zdot, a_free), across
+ *  |zdot_j| = eps too. With fs = fk the numbers (f, f_eq, tangent) are those of
+ *  fricreg_ctx_set_bounds with mun = fk, bit for bit. fricreg_ctx_tangent includes the bound's
+ *  motion with |zdot_i|, (k(eps) - fs)/eps sgn(zdot_i) in the band, the slip slope
+ *  -k'(|zdot_i|) outside it, and through W_SL f_L the near-stick forces' dependence on a
+ *  sliding contact's zdot; fricreg_ctx_stick_stiffness uses fs (the band's largest slope at
+ *  rest is 2 fs/eps). Each evaluation costs one pow and exp more per sliding contact.
+ *
+ *  How it combines with the other setters (each discards the tangent, as every setter does):
+ *   - this call selects law (4) (FRICREG_LAW_QUINN) and keeps the context's eps;
+ *   - fricreg_ctx_set_law with FRICREG_LAW_QUINN changes eps and keeps Stribeck friction;
+ *     with any other law it switches Stribeck friction off;
+ *   - fricreg_ctx_set_bounds switches it off: the last of set_bounds and set_stribeck decides
+ *     the bounds. The bounds mun are kept, not changed, while Stribeck friction is on;
+ *   - m = 0 switches it off (the arrays are not read and may be NULL): law (4) with the
+ *     bounds mun of the last fricreg_ctx_set_bounds (or the defaults, 1).
+ *  It may be called before every evaluation (normal forces vary): O(m), plus m exp and pow
+ *  calls; the first call allocates 6 m doubles, kept until fricreg_ctx_free.
+ *
+ *  ctx       the context.
+ *  m         the context's contact count, or 0 to switch Stribeck friction off.
+ *  fs[m]     static bounds mu_s,i N_i (force units), the holding forces; fs[i] >= fk[i].
+ *  fk[m]     kinetic forces mu_k,i N_i >= 0 (force units), the limits of k_i for |v| -> inf.
+ *  vs[m]     Stribeck velocities > 0 (velocity units).
+ *  delta[m]  Stribeck exponents > 0 (1: exponential, 2: Gaussian decay).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if ctx is NULL or (m > 0) an array is NULL; FRICREG_ESIZE
+ *  if m is neither 0 nor the context's count; FRICREG_ENONFINITE if a number is NaN or
+ *  infinite (anywhere, checked first); FRICREG_EINVAL if some contact has fk < 0, fk > fs
+ *  (kinetic above static), vs <= 0 or delta <= 0; FRICREG_ENOMEM. On failure the context is
+ *  unchanged (its law, eps, bounds and Stribeck parameters), and the error is recorded in it. */
+FRICREG_API int fricreg_ctx_set_stribeck(fricreg_ctx *ctx, size_t m, const double fs[],
+                                         const double fk[], const double vs[],
+                                         const double delta[]);
+
 #ifdef __cplusplus
 }
 #endif

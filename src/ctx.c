@@ -36,6 +36,9 @@ void fricreg_ctx_free(fricreg_ctx *ctx)
     free(ctx->side);
     free(ctx->last_zdot);
     free(ctx->last_afree);
+    free(ctx->strib);
+    free(ctx->strib_keps);
+    free(ctx->strib_bound);
     free(ctx);
 }
 
@@ -68,6 +71,7 @@ int fricreg_ctx_create(size_t m, fricreg_ctx **out)
     for (size_t i = 0; i < m; i++)
         ctx->mun[i] = ctx->w_diag[i] = 1.0;
     ctx->w_unit = 1;
+    ctx->bound = ctx->mun;
     ctx->keep_tangent = 1;
     *out = ctx;
     return FRICREG_OK;
@@ -93,6 +97,9 @@ int fricreg_ctx_set_law(fricreg_ctx *ctx, int law, double eps)
                        eps);
     ctx->law = law;
     ctx->eps = eps;
+    if (law != FRICREG_LAW_QUINN) /* Stribeck friction is (4) with its own bound */
+        fr_stribeck_off(ctx);
+    fr_stribeck_refresh(ctx); /* k(eps) for the new eps */
     ctx->last_valid = 0;
     return FRICREG_OK;
 }
@@ -135,6 +142,7 @@ int fricreg_ctx_set_bounds(fricreg_ctx *ctx, size_t m, const double mun[])
         if (mun[i] < 0.0)
             return fr_fail(ctx, FRICREG_EINVAL, "set_bounds: mun[%zu] = %g is negative", i, mun[i]);
     memcpy(ctx->mun, mun, m * sizeof *mun);
+    fr_stribeck_off(ctx); /* the bounds mun replace Stribeck friction's */
     ctx->last_valid = 0;
     return FRICREG_OK;
 }

@@ -11,6 +11,7 @@
 #include "error.h"
 #include "factor.h"
 #include "fricreg.h"
+#include "law_stribeck.h"
 
 #define FR_NSTATS 6
 #define FR_MAX_CONTACTS ((size_t)1 << 26)
@@ -20,7 +21,11 @@ struct fricreg_ctx {
     int law;
     int partition; /* enum fricreg_partition: used with a dense W */
     double eps;
-    double *mun;    /* [m] friction bounds */
+    double *mun; /* [m] friction bounds */
+    /* [m] the bounds law (4) reads in an evaluation: mun, or with Stribeck friction the
+     * velocity-dependent bound of ctx_stribeck.c. The hot loops read this pointer, never a
+     * flag: the default law pays nothing for Stribeck. */
+    const double *bound;
     double *w_diag; /* [m] diagonal of W (the whole of W when W is diagonal) */
     int w_unit;     /* W = I: f_eq = -a_free needs no division */
     double *W;      /* [m*m] row-major dense W, or NULL when W is diagonal */
@@ -41,9 +46,31 @@ struct fricreg_ctx {
     int last_valid;     /* an evaluation succeeded since the last setter call */
     int keep_tangent;   /* eval keeps last_zdot, last_afree (fricreg_ctx_set_keep_tangent) */
 
+    /* Stribeck friction (fricreg_ctx_set_stribeck, ctx_stribeck.c): allocated at the first
+     * set-up, kept when cleared. */
+    int stribeck;              /* on: law (4) with the Stribeck bound (then law is (4)) */
+    struct fr_stribeck *strib; /* [m] each contact's fs, fk, vs, delta */
+    double *strib_keps;        /* [m] k(eps), refreshed when eps changes */
+    double *strib_bound;       /* [m] the bound at the last zdot: B(|zdot|) or k(|zdot|) */
+
     int64_t stats[FR_NSTATS];
     struct fr_error err;
 };
+
+/* The bound of contact i at rest: its static bound fs with Stribeck friction, else mun. It
+ * bounds |f_i| at every velocity, and (4)'s slope at rest is 2/eps times it. */
+static inline double fr_rest_bound(const fricreg_ctx *ctx, size_t i)
+{
+    return ctx->stribeck ? ctx->strib[i].fs : ctx->mun[i];
+}
+
+/* ctx_stribeck.c: the bounds of Stribeck friction at velocities zdot[m] into
+ * ctx->strib_bound (ctx->stribeck on); the slope d bound_i/d zdot_i at v (at v = 0 that of
+ * v > 0, the tangent's convention); k(eps) after eps changed; switching Stribeck off. */
+void fr_stribeck_bounds(fricreg_ctx *ctx, const double zdot[]);
+double fr_stribeck_bound_slope(const fricreg_ctx *ctx, size_t i, double v);
+void fr_stribeck_refresh(fricreg_ctx *ctx);
+void fr_stribeck_off(fricreg_ctx *ctx);
 
 /* Records a failure (code and printf-style message) in the context and returns the code. */
 #define fr_fail(ctx, ...) fr_error_set(&(ctx)->err, __VA_ARGS__)

@@ -7,52 +7,38 @@
 #include "fricreg_stribeck.h"
 #include "law.h"
 #include "law_disk.h"
+#include "law_stribeck.h"
 
-/* One contact's parameters. */
-struct stribeck {
-    double fs, fk, vs, delta;
-};
-
-/* The kinetic curve k(s) = fk + (fs - fk) exp(-(s/vs)^delta), s >= 0. With fs == fk the
- * difference is 0 and k is fk exactly. */
-static double kinetic(const struct stribeck *p, double s)
+/* The band's bound at rho = |v|/eps (law_stribeck.h). */
+static double band_bound(const struct fr_stribeck *p, double eps, double rho)
 {
-    return p->fk + (p->fs - p->fk) * exp(-pow(s / p->vs, p->delta));
+    return fr_stribeck_band_bound(p, fr_stribeck_kinetic(p, eps), rho);
 }
 
-/* The band's bound at rho = |v|/eps in [0, 1]: fs at rho = 0 (exactly: the product is 0),
- * k(eps) at rho = 1. Linear, not k(|v|) itself: k has an infinite slope at 0 for delta < 1,
- * which would make the force non-Lipschitz where it saturates; the line's slope is bounded,
- * (fs - k(eps))/eps, for every delta. */
-static double band_bound(const struct stribeck *p, double eps, double rho)
-{
-    return p->fs + (kinetic(p, eps) - p->fs) * rho;
-}
-
-static double stribeck_1d(const struct stribeck *p, double v, double g, double eps)
+static double stribeck_1d(const struct fr_stribeck *p, double v, double g, double eps)
 {
     double s = fabs(v);
     if (s >= eps)
-        return v > 0.0 ? -kinetic(p, s) : kinetic(p, s);
+        return v > 0.0 ? -fr_stribeck_kinetic(p, s) : fr_stribeck_kinetic(p, s);
     /* the scale and the band of law (4) (law.h), so that fs == fk gives its bits */
     return fr_quinn_band(v * fr_band_scale(eps), g, band_bound(p, eps, s / eps));
 }
 
-static void stribeck_2d(const struct stribeck *p, const double v[2], const double g[2], double eps,
-                        double f[2])
+static void stribeck_2d(const struct fr_stribeck *p, const double v[2], const double g[2],
+                        double eps, double f[2])
 {
     double r = hypot(v[0], v[1]);
     if (r == 0.0)
         fr_disk_hold(g, p->fs, f);
     else if (r >= eps)
-        fr_disk_slide(v, kinetic(p, r), f);
+        fr_disk_slide(v, fr_stribeck_kinetic(p, r), f);
     else
         fr_disk_inscribed(v, g, band_bound(p, eps, r / eps), r / eps, f);
 }
 
 /* Status of one contact's numbers (v and g: n components each): non-finite first, then out
  * of range; `cap` also bounds the magnitudes (the 2-D kernels' FR_DISK_MAX). */
-static int stribeck_status(const struct stribeck *p, const double v[], const double g[], int n,
+static int stribeck_status(const struct fr_stribeck *p, const double v[], const double g[], int n,
                            double cap)
 {
     int finite = isfinite(p->fs) && isfinite(p->fk) && isfinite(p->vs) && isfinite(p->delta);
@@ -80,7 +66,7 @@ int fricreg_stribeck_eval(double v, double f_eq, double fs, double fk, double vs
 {
     if (f == NULL)
         return FRICREG_ENULL;
-    struct stribeck p = {fs, fk, vs, delta};
+    struct fr_stribeck p = {fs, fk, vs, delta};
     int status = eps_status(eps);
     if (status == FRICREG_OK)
         status = stribeck_status(&p, &v, &f_eq, 1, INFINITY);
@@ -95,7 +81,7 @@ int fricreg_stribeck_disk_eval(const double v[], const double f_eq[], double fs,
 {
     if (v == NULL || f_eq == NULL || f == NULL)
         return FRICREG_ENULL;
-    struct stribeck p = {fs, fk, vs, delta};
+    struct fr_stribeck p = {fs, fk, vs, delta};
     int status = eps_status(eps);
     if (status == FRICREG_OK)
         status = stribeck_status(&p, v, f_eq, 2, FR_DISK_MAX);
@@ -121,7 +107,7 @@ static int stribeck_batch(int n, double eps, size_t m, const double v[], const d
         return FRICREG_ENULL;
     double cap = n == 2 ? FR_DISK_MAX : INFINITY;
     for (size_t i = 0; i < m && status != FRICREG_ENONFINITE; i++) {
-        struct stribeck p = {fs[i], fk[i], vs[i], delta[i]};
+        struct fr_stribeck p = {fs[i], fk[i], vs[i], delta[i]};
         int s = stribeck_status(&p, v + n * i, f_eq + n * i, n, cap);
         if (s == FRICREG_ENONFINITE || status == FRICREG_OK)
             status = s;
@@ -129,7 +115,7 @@ static int stribeck_batch(int n, double eps, size_t m, const double v[], const d
     if (status != FRICREG_OK)
         return status;
     for (size_t i = 0; i < m; i++) {
-        struct stribeck p = {fs[i], fk[i], vs[i], delta[i]};
+        struct fr_stribeck p = {fs[i], fk[i], vs[i], delta[i]};
         if (n == 1)
             f[i] = stribeck_1d(&p, v[i], f_eq[i], eps);
         else

@@ -70,7 +70,7 @@ static int check_inputs(fricreg_ctx *ctx, size_t m, const double zdot[], const d
 void fr_split_contacts(fricreg_ctx *ctx, const double zdot[])
 {
     size_t n_stick = 0;
-    const double eps = ctx->eps, *mun = ctx->mun;
+    const double eps = ctx->eps, *mun = ctx->bound;
     switch (ctx->law) {
     case FRICREG_LAW_QUINN: /* outside |v| < eps both are (1), whatever f_eq is */
     case FRICREG_LAW_KARNOPP: SPLIT_LOOP(fabs(v) < eps, fr_coulomb(v, mun[i])) break;
@@ -158,7 +158,7 @@ static void eval_diagonal(fricreg_ctx *ctx, const double zdot[], const double a_
 {
     int keep = ctx->keep_tangent;
     ctx->n_stick = diagonal_pass(ctx->law, ctx->eps, ctx->m, zdot, a_free, ctx->w_diag, ctx->w_unit,
-                                 ctx->mun, f, f_eq, keep ? ctx->last_zdot : NULL,
+                                 ctx->bound, f, f_eq, keep ? ctx->last_zdot : NULL,
                                  keep ? ctx->last_afree : NULL);
     ctx->last_valid = keep;
 }
@@ -181,8 +181,8 @@ static int check_feq_range(fricreg_ctx *ctx, const double a_free[])
         const double *row = ctx->W + i * m;
         double load = fabs(a_free[i]);
         for (size_t j = 0; j < m; j++)
-            load += fabs(row[j]) * ctx->mun[j];
-        double reach = load / row[i] + 2.0 * ctx->mun[i];
+            load += fabs(row[j]) * ctx->bound[j];
+        double reach = load / row[i] + 2.0 * ctx->bound[i];
         if (!(reach <= FEQ_RANGE))
             return fr_fail(ctx, FRICREG_ENONFINITE,
                            "eval: contact %zu: f_eq up to (|a_free| + |W| mun)/W_ii = %g is beyond "
@@ -258,6 +258,8 @@ int fricreg_ctx_eval(fricreg_ctx *ctx, size_t m, const double zdot[], const doub
     int status = check_inputs(ctx, m, zdot, a_free, f);
     if (status != FRICREG_OK)
         return status;
+    if (ctx->stribeck) /* the bounds at these velocities (ctx_stribeck.c): one test per call */
+        fr_stribeck_bounds(ctx, zdot);
     if (!fr_law_uses_feq(ctx->law)) {
         eval_without_feq(ctx, zdot, a_free, f, f_eq);
     } else if (ctx->W == NULL) {

@@ -32,8 +32,8 @@ static void build_problem(fricreg_ctx *ctx, const signed char side[], const doub
         const double *row = ctx->W + i * m;
         for (size_t j = 0; j < m; j++)
             coupling += row[j] * ctx->f[j];
-        fr_box(c, ctx->mun[i], &qp->lo[k], &qp->hi[k]);
-        qp->b[k] = a_free[i] + row[i] * c * ctx->mun[i] + coupling;
+        fr_box(c, ctx->bound[i], &qp->lo[k], &qp->hi[k]);
+        qp->b[k] = a_free[i] + row[i] * c * ctx->bound[i] + coupling;
         qp->side[k] = side[i];
     }
 }

@@ -65,7 +65,7 @@ static int solve_feq(fricreg_ctx *ctx, const double a_free[])
 
 static void apply_law_on_stick_set(fricreg_ctx *ctx, const double zdot[])
 {
-    const double eps = ctx->eps, *mun = ctx->mun;
+    const double eps = ctx->eps, *mun = ctx->bound;
     switch (ctx->law) {
     case FRICREG_LAW_QUINN: STICK_LOOP(fr_quinn(v, feq, mun[i], eps)) break;
     case FRICREG_LAW_KARNOPP: STICK_LOOP(fr_karnopp(v, feq, mun[i], eps)) break;

@@ -36,7 +36,7 @@ static double diagonal_rate(const fricreg_ctx *ctx, int law)
 {
     double rate = 0.0;
     for (size_t i = 0; i < ctx->m; i++)
-        rate = fmax(rate, ctx->w_diag[i] * law_slope_times_eps(law, ctx->mun[i]));
+        rate = fmax(rate, ctx->w_diag[i] * law_slope_times_eps(law, fr_rest_bound(ctx, i)));
     return rate;
 }
 
@@ -53,7 +53,7 @@ static int coupled_rate(fricreg_ctx *ctx, int law, double *rate)
     size_t m = ctx->m;
     double k = law_slope_times_eps(law, 1.0), mun_max = 0.0, w_max = 0.0;
     for (size_t i = 0; i < m; i++)
-        mun_max = fmax(mun_max, ctx->mun[i]);
+        mun_max = fmax(mun_max, fr_rest_bound(ctx, i));
     for (size_t i = 0; i < m * m; i++)
         w_max = fmax(w_max, fabs(ctx->W[i]));
     *rate = 0.0;
@@ -63,9 +63,10 @@ static int coupled_rate(fricreg_ctx *ctx, int law, double *rate)
     if (fr_eigen_alloc(&e, m) != FRICREG_OK)
         return FRICREG_ENOMEM;
     for (size_t i = 0; i < m; i++) {
-        double si = sqrt(ctx->mun[i] / mun_max);
+        double si = sqrt(fr_rest_bound(ctx, i) / mun_max);
         for (size_t j = 0; j < m; j++)
-            e.a[i * m + j] = si * (ctx->W[i * m + j] / w_max) * sqrt(ctx->mun[j] / mun_max);
+            e.a[i * m + j] = si * (ctx->W[i * m + j] / w_max) *
+                             sqrt(fr_rest_bound(ctx, j) / mun_max);
     }
     int status = fr_eigen_solve(&e) ? FRICREG_ENOMEM : FRICREG_OK; /* entries are finite */
     double scaled = 0.0;

@@ -10,6 +10,9 @@
  *     differentiated on its piece, times d f_eq/d a_free = -W_SS^-1.
  *   Consistent law (docs/coupled.md): from the final active set A and free set F,
  *     d f_A from the bounds, d f_F = -W_FF^-1 (d b_F + W_FA d f_A), with the eval's factor.
+ * Stribeck friction (ctx_stribeck.c): the bound moves with the contact's own |zdot|, which
+ *   adds d f/d mun times d mun/d zdot to the slopes above, and the slip forces
+ *   -k(|zdot|) sgn(zdot) move the near-stick forces through W_SL f_L.
  * Kinks: a contact exactly on a bound counts as held there; at zdot_i = 0 the bounds' slopes
  * are those of zdot_i > 0; at |zdot_i| = eps the contact slides. */
 #include <math.h>
@@ -34,17 +37,40 @@ static double slip_slope(int law, double v, double mun, double eps)
     }
 }
 
-/* d f/d zdot and d f/d f_eq of a near-stick contact at (v, f_eq) with f_eq held fixed. */
-static void near_slopes(const fricreg_ctx *ctx, double v, double feq, double mun, double *dv,
-                        double *dfeq)
+/* d bound_i/d zdot_i at v: 0, but for Stribeck friction (ctx_stribeck.c), whose bound moves
+ * with |zdot_i|. */
+static double bound_slope(const fricreg_ctx *ctx, size_t i, double v)
+{
+    return ctx->stribeck ? fr_stribeck_bound_slope(ctx, i, v) : 0.0;
+}
+
+/* d f/d mun of clamp(f_eq - c mun, lo, hi) (law.h, fr_box) at fixed c, on the piece where f
+ * is held at hi (at_hi), at lo (at_lo) or free: 1 - max(c, 0), -(1 - max(-c, 0)) or -c. */
+static double box_bound_weight(int at_hi, int at_lo, double c)
+{
+    return at_hi ? 1.0 - fmax(c, 0.0) : at_lo ? -(1.0 - fmax(-c, 0.0)) : -c;
+}
+
+/* d f/d zdot and d f/d f_eq of a near-stick contact at (v, f_eq) with f_eq held fixed; the
+ * bound mun moves with v at the rate dmun (Stribeck friction; else 0). */
+static void near_slopes(const fricreg_ctx *ctx, double v, double feq, double mun, double dmun,
+                        double *dv, double *dfeq)
 {
     double dc = ctx->law == FRICREG_LAW_QUINN ? 2.0 / ctx->eps : 0.0, c = v * dc;
     double lo, hi, dlo, dhi;
     fr_box(c, mun, &lo, &hi);
     fr_box_slopes(c, mun, &dlo, &dhi);
     double y = feq - c * mun;
-    *dfeq = y >= hi || y <= lo ? 0.0 : 1.0;
-    *dv = (y >= hi ? dhi : y <= lo ? dlo : -mun) * dc;
+    int at_hi = y >= hi, at_lo = !at_hi && y <= lo;
+    *dfeq = at_hi || at_lo ? 0.0 : 1.0;
+    *dv = (at_hi ? dhi : at_lo ? dlo : -mun) * dc + dmun * box_bound_weight(at_hi, at_lo, c);
+}
+
+/* d f/d zdot of a contact off the band (no f_eq): the law's slope at fixed bound, and
+ * d(-mun sgn v)/d mun = -sgn v times the bound's own slope (Stribeck: -k'(|v|)). */
+static double off_band_slope(const fricreg_ctx *ctx, size_t i, double v)
+{
+    return slip_slope(ctx->law, v, ctx->bound[i], ctx->eps) + fr_coulomb(v, bound_slope(ctx, i, v));
 }
 
 /* Laws without f_eq, or a diagonal W: one contact at a time, the diagonals only. */
@@ -52,11 +78,12 @@ static void tangent_diagonal(const fricreg_ctx *ctx, double dz[], double da[])
 {
     size_t m = ctx->m;
     for (size_t i = 0; i < m; i++) {
-        double v = ctx->last_zdot[i], mun = ctx->mun[i], dv, dfeq = 0.0;
+        double v = ctx->last_zdot[i], dv, dfeq = 0.0;
         if (fr_needs_feq(ctx->law, v, ctx->eps))
-            near_slopes(ctx, v, -ctx->last_afree[i] / ctx->w_diag[i], mun, &dv, &dfeq);
+            near_slopes(ctx, v, -ctx->last_afree[i] / ctx->w_diag[i], ctx->bound[i],
+                        bound_slope(ctx, i, v), &dv, &dfeq);
         else
-            dv = slip_slope(ctx->law, v, mun, ctx->eps);
+            dv = off_band_slope(ctx, i, v);
         if (dz)
             dz[i * m + i] = dv;
         if (da)
@@ -79,6 +106,25 @@ static void scatter_solution(fricreg_ctx *ctx, const size_t set[], size_t n, dou
     }
 }
 
+/* Columns k of the slip contacts L: with Stribeck friction f_k = -k(|zdot_k|) sgn(zdot_k) moves
+ * with zdot_k (slope dz[k][k], written by tangent_slip), and the near-stick forces of
+ * B = set[n] with it, through W_BL f_L: d f_B/d zdot_k = -W_BB^-1 W_B,k dz[k][k], rows scaled
+ * by row_scale (the paper's d f/d f_eq; NULL: 1), with the held factor of W_BB. Nothing to do
+ * under law (4)'s constant bounds: the slip forces do not move. */
+static void tangent_slip_columns(fricreg_ctx *ctx, const size_t set[], size_t n, double dz[],
+                                 const double row_scale[])
+{
+    size_t m = ctx->m;
+    for (size_t k = 0; ctx->stribeck && dz && n > 0 && k < m; k++) {
+        double slope = dz[k * m + k];
+        if (fr_needs_feq(ctx->law, ctx->last_zdot[k], ctx->eps) || slope == 0.0)
+            continue;
+        for (size_t a = 0; a < n; a++)
+            ctx->rhs[a] = ctx->W[set[a] * m + k];
+        scatter_solution(ctx, set, n, dz, k, row_scale, slope);
+    }
+}
+
 /* The paper's partition: f_eq,S = -W_SS^-1 (a_free,S + W_SL f_L), then the law on S, with
  * the held factor of W_SS. */
 static void tangent_paper(fricreg_ctx *ctx, double dz[], double da[])
@@ -97,10 +143,12 @@ static void tangent_paper(fricreg_ctx *ctx, double dz[], double da[])
     for (size_t a = 0; a < s; a++) {
         size_t i = S[a];
         double dv;
-        near_slopes(ctx, ctx->last_zdot[i], ctx->rhs[a], ctx->mun[i], &dv, &dfeq[a]);
+        double v = ctx->last_zdot[i];
+        near_slopes(ctx, v, ctx->rhs[a], ctx->bound[i], bound_slope(ctx, i, v), &dv, &dfeq[a]);
         if (dz)
             dz[i * m + i] = dv;
     }
+    tangent_slip_columns(ctx, S, s, dz, dfeq);
     for (size_t b = 0; da && b < s; b++) { /* d f_eq,S/d a_free,k = -(W_SS^-1) e_k */
         memset(ctx->rhs, 0, s * sizeof *ctx->rhs);
         ctx->rhs[b] = 1.0;
@@ -108,12 +156,15 @@ static void tangent_paper(fricreg_ctx *ctx, double dz[], double da[])
     }
 }
 
-/* d(bound)/d zdot of a held contact i of S. */
+/* d(bound)/d zdot of a held contact i of S: through c, and through the bound itself when it
+ * moves with zdot_i (Stribeck friction). */
 static double held_slope(const fricreg_ctx *ctx, size_t i)
 {
     double dc = ctx->law == FRICREG_LAW_QUINN ? 2.0 / ctx->eps : 0.0, dlo, dhi;
-    fr_box_slopes(ctx->last_zdot[i] * dc, ctx->mun[i], &dlo, &dhi);
-    return (ctx->side[i] == FR_UPPER ? dhi : dlo) * dc;
+    double v = ctx->last_zdot[i], c = v * dc;
+    int upper = ctx->side[i] == FR_UPPER;
+    fr_box_slopes(c, ctx->bound[i], &dlo, &dhi);
+    return (upper ? dhi : dlo) * dc + bound_slope(ctx, i, v) * box_bound_weight(upper, !upper, c);
 }
 
 /* The consistent law's free set F (in ctx->qp.free_set), from the final working set. */
@@ -143,12 +194,14 @@ static void tangent_consistent(fricreg_ctx *ctx, size_t nf, double dz[], double 
          * for the matrix part and scaled by the slope after: the product W mun/eps can
          * overflow where the solution (of the size of the slope) does not (found by
          * fuzz_ctx: W ~ 1e164, mun ~ 1e151 gave Inf - Inf = NaN). */
-        double slope = held ? dk : ctx->mun[k] * dc;
+        double v = ctx->last_zdot[k]; /* d(c_k bound_k)/d zdot_k: d b_k = W_kk times it */
+        double slope = held ? dk : ctx->bound[k] * dc + v * dc * bound_slope(ctx, k, v);
         for (size_t a = 0; a < nf; a++)
             ctx->rhs[a] = held ? ctx->W[F[a] * m + k] : (F[a] == k ? ctx->W[k * m + k] : 0.0);
         if (nf > 0 && slope != 0.0)
             scatter_solution(ctx, F, nf, dz, k, NULL, slope);
     }
+    tangent_slip_columns(ctx, F, nf, dz, NULL);
     for (size_t b = 0; da && b < nf; b++) { /* d b_F/d a_free,k = e_k for k in F */
         memset(ctx->rhs, 0, nf * sizeof *ctx->rhs);
         ctx->rhs[b] = 1.0;
@@ -162,7 +215,7 @@ static void tangent_slip(const fricreg_ctx *ctx, double dz[])
     size_t m = ctx->m;
     for (size_t i = 0; dz && i < m; i++)
         if (!fr_needs_feq(ctx->law, ctx->last_zdot[i], ctx->eps))
-            dz[i * m + i] = slip_slope(ctx->law, ctx->last_zdot[i], ctx->mun[i], ctx->eps);
+            dz[i * m + i] = off_band_slope(ctx, i, ctx->last_zdot[i]);
 }
 
 static int check_tangent_args(fricreg_ctx *ctx, size_t m, const double dz[], const double da[])
@@ -203,6 +256,8 @@ int fricreg_ctx_tangent(fricreg_ctx *ctx, size_t m, double df_dzdot[], double df
     int status = check_tangent_args(ctx, m, df_dzdot, df_dafree);
     if (status != FRICREG_OK)
         return status;
+    if (ctx->stribeck) /* the bounds of the evaluation's velocities (a failed eval since may */
+        fr_stribeck_bounds(ctx, ctx->last_zdot); /* have left others) */
     int dense = ctx->W != NULL && fr_law_uses_feq(ctx->law);
     size_t nf = 0;
     if (dense && (status = prepare_dense(ctx, &nf)) != FRICREG_OK)
