@@ -38,7 +38,8 @@ struct fricreg_ctx {
     double *rhs;          /* [m] dense only: right-hand side of the paper's W_SS solve */
     struct fr_factor fac; /* dense only: cached factor of a principal block of W */
     struct fr_box_qp qp;  /* dense only: the consistent law's QP on S */
-    signed char *side;    /* [m] the QP's last working set per contact: its warm start */
+    signed char *side;    /* [m] the QP's last working set per contact, its warm start (a mark
+                           * outside S: partition_consistent.c) */
 
     /* The inputs of the last successful evaluation, for fricreg_ctx_tangent. */
     double *last_zdot;  /* [m] */

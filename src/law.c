@@ -3,6 +3,7 @@
 #include <math.h>
 
 #include "law.h"
+#include "plausible.h"
 
 static int bad_law_params(int law, double eps)
 {
@@ -40,31 +41,6 @@ static int bad_batch_inputs(size_t m, const double v[], const double f_eq[], con
     if (nonfinite)
         return FRICREG_ENONFINITE;
     return negative ? FRICREG_EINVAL : FRICREG_OK;
-}
-
-/* Whether the batch is valid, in one pass with two or three adds per contact: the sum of all
- * v[i] + f_eq[i] + mun[i], plus an infinity for each mun[i] < 0, is finite unless an input is
- * a NaN or an infinity or some mun[i] < 0 (or, a false alarm, finite inputs overflow it: the
- * exact check then runs and passes). */
-static int batch_plausible(size_t m, const double v[], const double f_eq[], const double mun[])
-{
-    double s[FR_LANES] = {0.0};
-    size_t i = 0;
-    if (f_eq)
-        for (; i + FR_LANES <= m; i += FR_LANES)
-            for (size_t l = 0; l < FR_LANES; l++) {
-                double u = mun[i + l];
-                s[l] += v[i + l] + f_eq[i + l] + u + (u < 0.0 ? INFINITY : 0.0);
-            }
-    else
-        for (; i + FR_LANES <= m; i += FR_LANES)
-            for (size_t l = 0; l < FR_LANES; l++) {
-                double u = mun[i + l];
-                s[l] += v[i + l] + u + (u < 0.0 ? INFINITY : 0.0);
-            }
-    for (; i < m; i++) /* the tail */
-        s[0] += v[i] + (f_eq ? f_eq[i] : 0.0) + mun[i] + (mun[i] < 0.0 ? INFINITY : 0.0);
-    return fr_lanes_finite(s);
 }
 
 /* One loop per law: the switch stays outside, so each loop is a straight-line kernel of
@@ -110,7 +86,7 @@ int fricreg_law_eval_batch(int law, double eps, size_t m, const double v[], cons
         return FRICREG_ENULL;
     /* Validated before anything is written, f_eq whenever given; the exact check runs only
      * to name the failure. */
-    if (!batch_plausible(m, v, f_eq, mun)) {
+    if (!fr_plausible(m, v, f_eq, mun)) {
         status = bad_batch_inputs(m, v, f_eq, mun);
         if (status != FRICREG_OK)
             return status;

@@ -151,16 +151,10 @@ static inline double fr_law(int law, double v, double f_eq, double mun, double e
     }
 }
 
-/* The validation passes (law.c, partition.c) add their inputs in FR_LANES explicit partial
- * sums: a NaN or an infinity anywhere makes the total non-finite, and the vectorizer packs
- * the lanes into vectors, where one floating-point sum it may not reorder, so would add
- * serially. */
+/* Sums over many terms (box_qp.c, partition_paper.c) are added in FR_LANES explicit partial
+ * sums: the vectorizer packs the lanes into vectors, where one floating-point sum it may not
+ * reorder, so would add serially. */
 enum { FR_LANES = 4 };
-
-static inline int fr_lanes_finite(const double s[FR_LANES])
-{
-    return fabs((s[0] + s[1]) + (s[2] + s[3])) <= DBL_MAX;
-}
 
 /* Law `law` (known) on m contacts whose inputs are validated: f[i] from v[i], f_eq[i] (NULL
  * for the laws that do not read it) and mun[i] (law.c). */

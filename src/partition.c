@@ -11,24 +11,10 @@
 
 #include "law.h"
 #include "partition.h"
-
-/* Whether every zdot[i] and a_free[i] is finite, in one pass of one add per input: their sum
- * is finite unless one is a NaN or an infinity (or, a false alarm, finite inputs overflow
- * it: the exact search then finds nothing). */
-static int inputs_plausible(size_t m, const double zdot[], const double a_free[])
-{
-    double s[FR_LANES] = {0.0};
-    size_t i = 0;
-    for (; i + FR_LANES <= m; i += FR_LANES)
-        for (size_t l = 0; l < FR_LANES; l++)
-            s[l] += zdot[i + l] + a_free[i + l];
-    for (; i < m; i++) /* the tail */
-        s[0] += zdot[i] + a_free[i];
-    return fr_lanes_finite(s);
-}
+#include "plausible.h"
 
 /* The index of the first non-finite zdot[i] or a_free[i], or m: run only when
- * inputs_plausible fails, to name the culprit. */
+ * fr_plausible fails, to name the culprit. */
 static size_t first_nonfinite(size_t m, const double zdot[], const double a_free[])
 {
     size_t i = 0;
@@ -47,7 +33,7 @@ static int check_inputs(fricreg_ctx *ctx, size_t m, const double zdot[], const d
                        zdot == NULL     ? "zdot"
                        : a_free == NULL ? "a_free"
                                         : "f");
-    size_t i = inputs_plausible(m, zdot, a_free) ? m : first_nonfinite(m, zdot, a_free);
+    size_t i = fr_plausible(m, zdot, a_free, NULL) ? m : first_nonfinite(m, zdot, a_free);
     if (i < m)
         return fr_fail(ctx, FRICREG_ENONFINITE, "eval: %s[%zu] is not finite",
                        isfinite(zdot[i]) ? "a_free" : "zdot", i);

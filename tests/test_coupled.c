@@ -778,6 +778,35 @@ START_TEST(tiny_mobility_keeps_its_acceleration_to_1e_292)
 }
 END_TEST
 
+/* A contact that enters S from slipping, deep in the band, is warm-started on the side of its
+ * own row's minimizer, here inside its box: the QP takes one iteration, where the bound of its
+ * slip side took two (hold, then release: box_qp.c). W = [[1, 0.1], [0.1, 1]], mun = (1, 1),
+ * eps = 0.02, a_free = (0.1, 0); both slipping at zdot = (0.5, 0.5), then zdot_0 = 0.001
+ * (c_0 = 2 zdot_0/eps = 0.1, box [-1, 0.9]) with contact 1 still sliding, f_1 = -1:
+ * b_0 = a_free_0 + W_00 c_0 mun_0 + W_01 f_1 = 0.1, so f_0 = -b_0/W_00 = -0.1, free. */
+START_TEST(entering_contact_warm_starts_inside_its_box)
+{
+    static const double W[4] = {1.0, 0.1, 0.1, 1.0}, mun[2] = {1.0, 1.0};
+    const double a_free[2] = {0.1, 0.0}, slipping[2] = {0.5, 0.5}, entering[2] = {0.001, 0.5};
+    fricreg_ctx *ctx = NULL;
+    double f[2];
+    int64_t iterations = -1;
+    ck_assert_int_eq(fricreg_ctx_create(2, &ctx), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, 2, W), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, 2, mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, 0.02), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_eval(ctx, 2, slipping, a_free, f, NULL), FRICREG_OK);
+    fricreg_ctx_reset_stats(ctx);
+    ck_assert_int_eq(fricreg_ctx_eval(ctx, 2, entering, a_free, f, NULL), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_get_stat(ctx, FRICREG_STAT_QP_ITERATIONS, &iterations),
+                     FRICREG_OK);
+    ck_assert_int_eq(iterations, 1);
+    ck_assert_double_eq_tol(f[0], -0.1, 1e-15);
+    ck_assert_double_eq(f[1], -1.0);
+    fricreg_ctx_free(ctx);
+}
+END_TEST
+
 /* ---- 3. Diagonal W: law (4) contact by contact -------------------------------------------- */
 
 /* With W = diag(w) the QP separates, so the consistent law is law (4) at f_eq,i = -a_free,i/w_i:
@@ -1177,6 +1206,7 @@ static Suite *coupled_suite(void)
     tcase_add_test(tc, consistent_law_is_continuous_across_every_edge);
     tcase_add_test(tc, consistent_law_is_continuous_in_the_bounds);
     tcase_add_test(tc, paper_partition_jumps_as_the_issue_measured);
+    tcase_add_test(tc, entering_contact_warm_starts_inside_its_box);
     tcase_add_test(tc, diagonal_w_is_law_4_contact_by_contact);
     tcase_add_test(tc, tiny_mobility_keeps_its_acceleration_to_1e_292);
     suite_add_tcase(s, tc);
