@@ -7,10 +7,12 @@
 #include <string.h>
 
 #include "disk_ctx_internal.h"
+#include "disk_polish.h"
 #include "law_disk.h"
 
 #define GS_TOL 1e-14 /* a sweep moves no force by more than this times its bound: converged */
 #define GS_MAX_SWEEPS 20000
+#define POLISH_FIRST 8 /* Newton after sweep 8, 16, 32, ... while not converged */
 
 /* Sorts contact i: fixed (its force written to ctx->f) or near stick (centre -p, radius). */
 static void classify(fricreg_disk_ctx *ctx, size_t i, const double v[2])
@@ -63,6 +65,21 @@ static double solve_contact(fricreg_disk_ctx *ctx, size_t i, const double g[2])
     return hypot(f[0] - old0, f[1] - old1) / ctx->mun[i];
 }
 
+/* One sweep over the near-stick contacts; *moved gets the largest change over its bound. */
+static int sweep_once(fricreg_disk_ctx *ctx, double *moved)
+{
+    for (size_t k = 0; k < ctx->n_near; k++) {
+        size_t i = ctx->near[k];
+        double g[2] = {ctx->g[2 * i], ctx->g[2 * i + 1]};
+        add_coupling(ctx, i, 0, g);
+        if (!isfinite(g[0]) || !isfinite(g[1]))
+            return fr_disk_fail(ctx, FRICREG_ENONFINITE,
+                                "eval: contact %zu's acceleration overflows", i);
+        *moved = fmax(*moved, solve_contact(ctx, i, g));
+    }
+    return FRICREG_OK;
+}
+
 /* Block Gauss-Seidel over the near-stick contacts of a dense W: each sweep solves every
  * contact's subproblem exactly given the others' latest forces, a descent step on the strictly
  * convex QP, so the sweeps converge to its solution (linearly). */
@@ -75,19 +92,24 @@ static int gauss_seidel(fricreg_disk_ctx *ctx)
             return fr_disk_fail(ctx, FRICREG_ENONFINITE,
                                 "eval: contact %zu's acceleration overflows", i);
     }
-    for (int sweep = 0; sweep < GS_MAX_SWEEPS; sweep++) {
+    int next_polish = POLISH_FIRST;
+    for (int sweep = 1; sweep <= GS_MAX_SWEEPS; sweep++) {
         double moved = 0.0;
-        for (size_t k = 0; k < ctx->n_near; k++) {
-            size_t i = ctx->near[k];
-            double g[2] = {ctx->g[2 * i], ctx->g[2 * i + 1]};
-            add_coupling(ctx, i, 0, g);
-            if (!isfinite(g[0]) || !isfinite(g[1]))
-                return fr_disk_fail(ctx, FRICREG_ENONFINITE,
-                                    "eval: contact %zu's acceleration overflows", i);
-            moved = fmax(moved, solve_contact(ctx, i, g));
-        }
+        int status = sweep_once(ctx, &moved);
+        if (status != FRICREG_OK)
+            return status;
         if (moved <= GS_TOL)
             return FRICREG_OK;
+        if (sweep == next_polish) { /* slow: Newton on this sweep's active set */
+            next_polish *= 2;
+            if (fr_disk_polish(ctx)) {
+                status = sweep_once(ctx, &moved); /* verifies, and cleans to exact blocks */
+                if (status != FRICREG_OK)
+                    return status;
+                if (moved <= GS_TOL)
+                    return FRICREG_OK;
+            }
+        }
     }
     return fr_disk_fail(ctx, FRICREG_ESINGULAR,
                         "eval: block Gauss-Seidel did not converge in %d sweeps (W on the "
