@@ -2,9 +2,10 @@
 /* disk_tangent.c — fricreg_disk_ctx_tangent: implicit differentiation of the coupled 2-D law's
  * KKT conditions at the last evaluation's solution (fricreg_disk_ctx.h; docs/laws2d.md).
  *
- * Unknowns: the near-stick forces f_i (two rows each) and, for a contact on its circle, the
- * multiplier mu_i = lam_i radius_i of the unit normal n_i = (f_i + p_i)/radius_i. Rows:
- *   stationarity  (W f)_i + a_free,i + 2 W_ii p_i + mu_i n_i = 0,
+ * Unknowns: the derivatives of the near-stick forces f_i (two rows each) and, for a contact
+ * on its circle, of its multiplier lam_i, scaled by radius_i (so that its column is the unit
+ * normal n_i = (f_i + p_i)/radius_i and both blocks are of one scale). Rows:
+ *   stationarity  (W f)_i + a_free,i + 2 W_ii p_i + lam_i (f_i + p_i) = 0,
  *   circle        n_i^T (f_i + p_i) - radius_i = 0 (linearized: n_i^T df_i = d radius_i -
  *                 n_i^T dp_i),
  * with p_i = mun_i zdot_i/eps (FRICREG_DISK_QUINN; 0 for the force balance), radius_i =
