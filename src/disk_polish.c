@@ -19,6 +19,9 @@
 #define NEWTON_TOL 1e-15   /* a step below this times the bound: converged */
 #define NEWTON_STALL 1e-10 /* below this, a step that stops shrinking is rounding */
 #define PIVOT_RTOL 1e-13
+/* Beyond this many near-stick contacts a dense QR of order up to 3x it (O(n^3) a step) costs
+ * more than the sweeps it saves: Gauss-Seidel alone. */
+#define POLISH_MAX_NEAR 200
 
 /* Rows: two per near-stick contact, then one per circle contact; returns the order. */
 static size_t number_rows(fricreg_disk_ctx *ctx)
@@ -113,7 +116,7 @@ static int consistent(const fricreg_disk_ctx *ctx)
 
 int fr_disk_polish(fricreg_disk_ctx *ctx)
 {
-    if (ctx->n_near == 0 || 3 * ctx->n_near > ctx->kkt_max)
+    if (ctx->n_near == 0 || ctx->n_near > POLISH_MAX_NEAR || 3 * ctx->n_near > ctx->kkt_max)
         return 0;
     size_t n = number_rows(ctx);
     memcpy(ctx->f_last, ctx->f, 2 * ctx->m * sizeof *ctx->f); /* to restore on failure */
