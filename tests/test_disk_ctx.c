@@ -554,6 +554,48 @@ START_TEST(test_tangent_blocks)
 }
 END_TEST
 
+/* The kink rule at rest (fricreg_disk_ctx.h): a saturated contact at rest is differentiated
+ * along the direction it will slide, -f/|f|; one-sided differences along that direction agree
+ * (coupled contacts, so the others' forces move too). */
+START_TEST(test_tangent_at_rest_one_sided)
+{
+    const size_t m = 3, n = 6;
+    const double eps = 0.05;
+    int checked = 0;
+    for (int trial = 0; trial < 40; trial++) {
+        double W[36], mun[3] = {1.0, 1.0, 1.0}, zdot[6], afree[6], f[6], T[36], z[6], fh[6];
+        random_spd(n, 0.5, W);
+        for (size_t k = 0; k < n; k++) {
+            afree[k] = uniform(-3.0, 3.0);
+            zdot[k] = uniform(-0.5, 0.5) * eps;
+        }
+        zdot[0] = zdot[1] = 0.0; /* contact 0 at rest */
+        fricreg_disk_ctx *ctx = make_ctx(m, FRICREG_DISK_QUINN, eps, mun, W);
+        eval_ok(ctx, m, zdot, afree, f);
+        ck_assert_int_eq(fricreg_disk_ctx_tangent(ctx, m, T, NULL), FRICREG_OK);
+        double nf = hypot(f[0], f[1]);
+        if (nf < 1.0 - 1e-12) { /* stuck inside: not this kink */
+            fricreg_disk_ctx_free(ctx);
+            continue;
+        }
+        double d[2] = {-f[0] / nf, -f[1] / nf}, h = 1e-7 * eps, err = 0.0, scale = 1e-3;
+        memcpy(z, zdot, sizeof z);
+        z[0] = h * d[0], z[1] = h * d[1];
+        eval_ok(ctx, m, z, afree, fh);
+        for (size_t r = 0; r < n; r++) {
+            double fd = (fh[r] - f[r]) / h, t = T[r * n] * d[0] + T[r * n + 1] * d[1];
+            err = fmax(err, fabs(fd - t));
+            scale = fmax(scale, fabs(t));
+        }
+        ck_assert_msg(err <= 1e-5 * scale, "trial %d: one-sided difference off by %g of %g", trial,
+                      err, scale);
+        checked++;
+        fricreg_disk_ctx_free(ctx);
+    }
+    ck_assert_int_ge(checked, 10);
+}
+END_TEST
+
 /* ---- Bad input ---------------------------------------------------------------------------- */
 
 static void expect_fail(fricreg_disk_ctx *ctx, int got, int want)
@@ -684,6 +726,7 @@ static Suite *disk_ctx_suite(void)
     tcase_add_test(tc, test_continuity);
     tcase_add_test(tc, test_tangent_dense);
     tcase_add_test(tc, test_tangent_blocks);
+    tcase_add_test(tc, test_tangent_at_rest_one_sided);
     tcase_add_test(tc, test_bad_input);
     tcase_add_test(tc, test_singular_dense);
     suite_add_tcase(s, tc);
