@@ -68,6 +68,7 @@ module fricreg
             fricreg_version_string, fricreg_law_string, fricreg_law_id
   public :: disk_eval, stribeck_eval, stribeck_disk_eval, fricreg_disk_law_string, &
             fricreg_disk_law_id
+  public :: fricreg_disk_context
 #ifdef FRICREG_HAVE_SIM
   include 'fricreg_drivers_h_public.inc'
   public :: fricreg_sim_observer
@@ -126,6 +127,22 @@ module fricreg
     procedure :: get_stat => ctx_get_stat
     procedure :: reset_stats => ctx_reset_stats
     final :: ctx_final
+  end type
+
+  !> m coupled 2-D contacts z'' = a_free + W f, W of order 2m with 2x2 blocks per contact
+  !> (fricreg_disk_ctx.h): law (FRICREG_DISK_QUINN or FRICREG_DISK_FORCE_BALANCE), eps,
+  !> bounds, coupling. Vectors are (2, m) arrays, column i contact i (C's interleaved layout).
+  type, extends(fricreg_object) :: fricreg_disk_context
+  contains
+    procedure :: create => dctx_create
+    procedure :: size => dctx_size
+    procedure :: set_law => dctx_set_law
+    procedure :: set_bounds => dctx_set_bounds
+    procedure :: set_coupling_blocks => dctx_set_coupling_blocks
+    procedure :: set_coupling_dense => dctx_set_coupling_dense
+    procedure :: eval => dctx_eval
+    procedure :: tangent => dctx_tangent
+    final :: dctx_final
   end type
 
   !> One friction law, C's fricreg_law_eval / fricreg_law_eval_batch:
@@ -787,6 +804,140 @@ contains
     class(fricreg_context), intent(inout) :: self
     call fricreg_ctx_reset_stats(self%ptr) ! does nothing on NULL
   end subroutine ctx_reset_stats
+
+  ! ---- 2-D contexts (fricreg_disk_ctx.h) ----------------------------------------------------
+
+  !> Create the C context for m >= 1 two-dimensional contacts, with its defaults (law
+  !> FRICREG_DISK_QUINN, eps = 1e-3, mun = 1, W = I). An object that held one gets the new one
+  !> and releases the old (on failure it keeps the old). FRICREG_EINVAL for m < 1 or too large;
+  !> FRICREG_ENOMEM.
+  function dctx_create(self, m) result(status)
+    class(fricreg_disk_context), intent(inout) :: self
+    integer, intent(in) :: m
+    integer(c_int) :: status
+    type(c_ptr) :: p
+    character(len=32) :: buf
+    write (buf, '(i0)') m
+    if (m < 1) then
+      status = self%fail(FRICREG_EINVAL, 'create: m = ' // trim(buf) // ' must be >= 1')
+      return
+    end if
+    p = c_null_ptr
+    status = fricreg_disk_ctx_create(as_size(m), p)
+    if (status /= FRICREG_OK) then
+      status = self%fail(status, 'create: m = ' // trim(buf) // ': ' // &
+                         fricreg_error_string(status))
+      return
+    end if
+    call self%adopt(p, fricreg_disk_ctx_free, fricreg_disk_ctx_errcode, fricreg_disk_ctx_errmsg)
+  end function dctx_create
+
+  subroutine dctx_final(self)
+    type(fricreg_disk_context), intent(inout) :: self
+    call self%destroy()
+  end subroutine dctx_final
+
+  !> Number of contacts m (0 if not created).
+  integer function dctx_size(self)
+    class(fricreg_disk_context), intent(in) :: self
+    dctx_size = int(fricreg_disk_ctx_size(self%ptr))
+  end function dctx_size
+
+  !> Law (FRICREG_DISK_QUINN or FRICREG_DISK_FORCE_BALANCE) and eps (velocity units).
+  !> FRICREG_EINVAL for another law or eps out of [DBL_MIN, 1e250]; FRICREG_ENONFINITE.
+  function dctx_set_law(self, law, eps) result(status)
+    class(fricreg_disk_context), intent(inout) :: self
+    integer(c_int), intent(in) :: law
+    real(c_double), intent(in) :: eps
+    integer(c_int) :: status
+    status = self%ready('set_law', 'context')
+    if (status == FRICREG_OK) status = self%record(fricreg_disk_ctx_set_law(self%ptr, law, eps))
+  end function dctx_set_law
+
+  !> Friction bounds mun(m). FRICREG_ESIZE; FRICREG_EINVAL; FRICREG_ENONFINITE.
+  function dctx_set_bounds(self, mun) result(status)
+    class(fricreg_disk_context), intent(inout) :: self
+    real(c_double), intent(in), contiguous :: mun(:)
+    integer(c_int) :: status
+    integer(c_size_t) :: m
+    m = fricreg_disk_ctx_size(self%ptr)
+    status = self%ready('set_bounds', 'context')
+    if (status == FRICREG_OK) status = self%check_size('set_bounds', 'mun', size(mun), m)
+    if (status == FRICREG_OK) status = self%record(fricreg_disk_ctx_set_bounds(self%ptr, m, mun))
+  end function dctx_set_bounds
+
+  !> Block diagonal W: w(2, 2, m), w(:, :, i) contact i's symmetric positive definite block
+  !> (symmetric, so Fortran's order is C's; a block that is not is FRICREG_ENOTSYM).
+  !> FRICREG_ESIZE unless w is (2, 2, m); FRICREG_ENOTPSD; FRICREG_ENONFINITE.
+  function dctx_set_coupling_blocks(self, w) result(status)
+    class(fricreg_disk_context), intent(inout) :: self
+    real(c_double), intent(in), contiguous :: w(:, :, :)
+    integer(c_int) :: status
+    integer(c_size_t) :: m
+    m = fricreg_disk_ctx_size(self%ptr)
+    status = self%ready('set_coupling_blocks', 'context')
+    if (status == FRICREG_OK .and. (size(w, 1) /= 2 .or. size(w, 2) /= 2)) &
+      status = self%fail(FRICREG_ESIZE, 'set_coupling_blocks: w must be (2, 2, m)')
+    if (status == FRICREG_OK) status = self%check_size('set_coupling_blocks', 'w, 3', &
+                                                        size(w, 3), m)
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_disk_ctx_set_coupling_blocks(self%ptr, m, w))
+  end function dctx_set_coupling_blocks
+
+  !> Coupled contacts: W(2m, 2m), symmetric positive semidefinite with positive definite 2x2
+  !> diagonal blocks, contact i at rows and columns 2i-1, 2i (symmetric: passed as it is).
+  !> FRICREG_ESIZE unless 2m x 2m; FRICREG_ENOTSYM; FRICREG_ENOTPSD; FRICREG_ENONFINITE.
+  function dctx_set_coupling_dense(self, W) result(status)
+    class(fricreg_disk_context), intent(inout) :: self
+    real(c_double), intent(in), contiguous :: W(:, :)
+    integer(c_int) :: status
+    integer(c_size_t) :: m
+    m = fricreg_disk_ctx_size(self%ptr)
+    status = self%ready('set_coupling_dense', 'context')
+    if (status == FRICREG_OK) status = self%check_square('set_coupling_dense', 'W', shape(W), 2 * m)
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_disk_ctx_set_coupling_dense(self%ptr, m, W))
+  end function dctx_set_coupling_dense
+
+  !> Friction forces f(2, m) from zdot(2, m) and a_free(2, m) (C's fricreg_disk_ctx_eval).
+  !> f is written only on success. FRICREG_ESIZE unless each is (2, m); FRICREG_ENONFINITE;
+  !> FRICREG_EINVAL; FRICREG_ESINGULAR.
+  function dctx_eval(self, zdot, a_free, f) result(status)
+    class(fricreg_disk_context), intent(inout) :: self
+    real(c_double), intent(in), contiguous :: zdot(:, :), a_free(:, :)
+    real(c_double), intent(inout), contiguous :: f(:, :)
+    integer(c_int) :: status
+    integer(c_size_t) :: m
+    m = fricreg_disk_ctx_size(self%ptr)
+    status = self%ready('eval', 'context')
+    if (status == FRICREG_OK .and. .not. (is_pairs(zdot, int(m)) .and. &
+        is_pairs(a_free, int(m)) .and. is_pairs(f, int(m)))) &
+      status = self%fail(FRICREG_ESIZE, 'eval: zdot, a_free and f must be (2, m)')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_disk_ctx_eval(self%ptr, m, zdot, a_free, f))
+  end function dctx_eval
+
+  !> The Jacobian of the last successful eval's forces in Fortran's order, (2m, 2m) each and
+  !> optional: df_dzdot(2i-1+a, 2j-1+b) = d f(1+a, i) / d zdot(1+b, j), likewise df_dafree.
+  !> Written only on success. FRICREG_ESIZE; FRICREG_EINVAL (no evaluation to differentiate);
+  !> FRICREG_ESINGULAR; FRICREG_ENONFINITE.
+  function dctx_tangent(self, df_dzdot, df_dafree) result(status)
+    class(fricreg_disk_context), intent(inout) :: self
+    real(c_double), intent(inout), contiguous, optional :: df_dzdot(:, :), df_dafree(:, :)
+    integer(c_int) :: status
+    integer(c_size_t) :: m
+    m = fricreg_disk_ctx_size(self%ptr)
+    status = self%ready('tangent', 'context')
+    if (status == FRICREG_OK .and. present(df_dzdot)) &
+      status = self%check_square('tangent', 'df_dzdot', shape(df_dzdot), 2 * m)
+    if (status == FRICREG_OK .and. present(df_dafree)) &
+      status = self%check_square('tangent', 'df_dafree', shape(df_dafree), 2 * m)
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_disk_ctx_tangent(self%ptr, m, df_dzdot, df_dafree))
+    if (status /= FRICREG_OK) return
+    if (present(df_dzdot)) call fricreg_transpose(df_dzdot, 2 * m)
+    if (present(df_dafree)) call fricreg_transpose(df_dafree, 2 * m)
+  end function dctx_tangent
 
 #ifdef FRICREG_HAVE_SIM
   ! ---- Simulations (fricreg_sim.h) ---------------------------------------------------------

@@ -290,3 +290,123 @@ subroutine frtang(h, m, dfdz, dfda, stat)
   call fricreg_transpose(dfdz, n)
   call fricreg_transpose(dfda, n)
 end subroutine frtang
+
+! ---- 2-D contexts (fricreg_disk_ctx.h): handles of their own, never mixed with FRCTXC's ------
+
+!> FRDCC(M, H, STAT): create a context of M two-dimensional contacts into handle H
+!> (fricreg_disk_ctx_create).
+subroutine frdcc(m, h, stat)
+  use fricreg_c
+  implicit none
+  integer, intent(in) :: m
+  integer(c_int64_t), intent(inout) :: h
+  integer, intent(out) :: stat
+  type(c_ptr) :: p
+  if (m < 1) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  p = c_null_ptr
+  stat = fricreg_f77_created(fricreg_disk_ctx_create(int(m, c_size_t), p), p, h)
+end subroutine frdcc
+
+!> FRDCF(H, STAT): release the 2-D context H and set H = 0; H = 0 does nothing.
+subroutine frdcf(h, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(inout) :: h
+  integer, intent(out) :: stat
+  stat = fricreg_f77_release(h, fricreg_disk_ctx_free)
+end subroutine frdcf
+
+!> FRDLAW(H, LAW, EPS, STAT): the 2-D law (FRICREG_DISK_QUINN or FRICREG_DISK_FORCE_BALANCE)
+!> and eps (fricreg_disk_ctx_set_law).
+subroutine frdlaw(h, law, eps, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: law
+  double precision, intent(in) :: eps
+  integer, intent(out) :: stat
+  stat = int(fricreg_disk_ctx_set_law(fricreg_handle_to_ptr(h), int(law, c_int), eps))
+end subroutine frdlaw
+
+!> FRDBND(H, M, MUN, STAT): friction bounds MUN(M) (fricreg_disk_ctx_set_bounds).
+subroutine frdbnd(h, m, mun, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m
+  double precision, intent(in) :: mun(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_disk_ctx_set_bounds(fricreg_handle_to_ptr(h), int(m, c_size_t), mun))
+end subroutine frdbnd
+
+!> FRDCPB(H, M, W, STAT): block diagonal coupling W(2, 2, M), W(:, :, I) contact I's symmetric
+!> positive definite block (fricreg_disk_ctx_set_coupling_blocks).
+subroutine frdcpb(h, m, w, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m
+  double precision, intent(in) :: w(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_disk_ctx_set_coupling_blocks(fricreg_handle_to_ptr(h), int(m, c_size_t), w))
+end subroutine frdcpb
+
+!> FRDCPD(H, M, W, STAT): dense symmetric coupling W(2M, 2M), leading dimension 2M
+!> (fricreg_disk_ctx_set_coupling_dense).
+subroutine frdcpd(h, m, w, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m
+  double precision, intent(in) :: w(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_disk_ctx_set_coupling_dense(fricreg_handle_to_ptr(h), int(m, c_size_t), w))
+end subroutine frdcpd
+
+!> FRDEVL(H, M, ZDOT, AFREE, F, STAT): friction forces F(2, M) from velocities ZDOT(2, M) and
+!> free accelerations AFREE(2, M), column I contact I (fricreg_disk_ctx_eval).
+subroutine frdevl(h, m, zdot, afree, f, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m
+  double precision, intent(in) :: zdot(*), afree(*)
+  double precision, intent(inout) :: f(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_disk_ctx_eval(fricreg_handle_to_ptr(h), int(m, c_size_t), zdot, afree, f))
+end subroutine frdevl
+
+!> FRDTNG(H, M, DFDZ, DFDA, STAT): the Jacobian of the last FRDEVL's forces, column-major
+!> (2M, 2M) each, DFDZ(2I-1+A, 2J-1+B) = dF(1+A, I)/dZDOT(1+B, J), likewise DFDA
+!> (fricreg_disk_ctx_tangent, transposed from C's row order). Written only on success.
+subroutine frdtng(h, m, dfdz, dfda, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m
+  double precision, intent(inout) :: dfdz(*), dfda(*)
+  integer, intent(out) :: stat
+  integer(c_size_t) :: n
+  n = 2 * int(max(m, 0), c_size_t)
+  stat = int(fricreg_disk_ctx_tangent(fricreg_handle_to_ptr(h), int(m, c_size_t), dfdz, dfda))
+  if (stat /= FRICREG_OK) return
+  call fricreg_transpose(dfdz, n)
+  call fricreg_transpose(dfda, n)
+end subroutine frdtng
+
+!> FRDERR(H, CODE, MSG, STAT): status CODE and message MSG of the 2-D context's last failed
+!> call (FRICREG_OK and blanks if none; 'NULL context' for H = 0).
+subroutine frderr(h, code, msg, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(out) :: code
+  character(len=*), intent(out) :: msg
+  integer, intent(out) :: stat
+  integer(c_int) :: last
+  stat = fricreg_f77_last_error(h, fricreg_disk_ctx_errcode, fricreg_disk_ctx_errmsg, last, msg)
+  code = last
+end subroutine frderr

@@ -33,6 +33,7 @@
 #include <string.h>
 
 #include "fricreg.h"
+#include "fricreg_disk_ctx.h"
 #include "fricreg_exact.h"
 #include "fricreg_sim.h"
 #include "fricreg_structure.h"
@@ -68,6 +69,7 @@ static const double K2[4] = {2.4, -1.1, -1.1, 1.1};
 
 struct fixture {
     fricreg_ctx *ctx;
+    fricreg_disk_ctx *dctx; /* one 2-D contact: its blocks and dense W are 2 x 2 too */
     fricreg_exact *ex;
     fricreg_sim *sim;
     fricreg_structure *st;
@@ -86,6 +88,14 @@ static void fixture_make(struct fixture *fx)
     ck_assert_int_eq(fricreg_ctx_set_coupling_dense(fx->ctx, 2, W2B), FRICREG_OK);
     ck_assert_int_eq(fricreg_ctx_set_bounds(fx->ctx, 2, mun2), FRICREG_OK);
     ck_assert_int_eq(fricreg_ctx_eval(fx->ctx, 2, zdot, a, f, NULL), FRICREG_OK);
+
+    const double dz[2] = {0.004, -0.002}, da[2] = {0.213, -0.347}, mund[1] = {0.5};
+    double df[2];
+    ck_assert_int_eq(fricreg_disk_ctx_create(1, &fx->dctx), FRICREG_OK);
+    ck_assert_int_eq(fricreg_disk_ctx_set_law(fx->dctx, FRICREG_DISK_QUINN, 0.02), FRICREG_OK);
+    ck_assert_int_eq(fricreg_disk_ctx_set_coupling_dense(fx->dctx, 1, W2B), FRICREG_OK);
+    ck_assert_int_eq(fricreg_disk_ctx_set_bounds(fx->dctx, 1, mund), FRICREG_OK);
+    ck_assert_int_eq(fricreg_disk_ctx_eval(fx->dctx, 1, dz, da, df), FRICREG_OK);
 
     ck_assert_int_eq(fricreg_exact_create(0.3, 0.8, 0.4, 2.75, 0.1, &fx->ex), FRICREG_OK);
     ck_assert_int_eq(fricreg_exact_run(fx->ex, 20.0), FRICREG_OK);
@@ -111,6 +121,7 @@ static void fixture_make(struct fixture *fx)
 static void fixture_free(struct fixture *fx)
 {
     fricreg_ctx_free(fx->ctx);
+    fricreg_disk_ctx_free(fx->dctx);
     fricreg_exact_free(fx->ex);
     fricreg_sim_free(fx->sim);
     fricreg_structure_free(fx->st);
@@ -258,6 +269,50 @@ static int w_ctx_tangent_no_output(void)
 static int w_ctx_get_stat(void)
 {
     return fricreg_ctx_get_stat(CTX(), N(0, FRICREG_STAT_EVALS), (int64_t *)O(1));
+}
+
+/* fricreg_disk_ctx.h: one 2-D contact */
+static int w_dctx_create(void)
+{
+    fricreg_disk_ctx **out = is(K_PTR, 0) ? NULL : (fricreg_disk_ctx **)&FX_->handle_out;
+    int status = fricreg_disk_ctx_create(Z(0, 1), out);
+    if (status == FRICREG_OK)
+        fricreg_disk_ctx_free(*out);
+    return status;
+}
+static fricreg_disk_ctx *DCTX(void)
+{
+    return is(K_PTR, 9) ? NULL : FX_->dctx;
+}
+static int w_dctx_set_law(void)
+{
+    return fricreg_disk_ctx_set_law(DCTX(), N(0, FRICREG_DISK_QUINN), D(0, 0.02));
+}
+static int w_dctx_set_bounds(void)
+{
+    const double mun[1] = {0.5};
+    return fricreg_disk_ctx_set_bounds(DCTX(), Z(0, 1), A(1, mun, 1));
+}
+static int w_dctx_set_blocks(void)
+{
+    return fricreg_disk_ctx_set_coupling_blocks(DCTX(), Z(0, 1), A(1, W2B, 4));
+}
+static int w_dctx_set_dense(void)
+{
+    return fricreg_disk_ctx_set_coupling_dense(DCTX(), Z(0, 1), A(1, W2B, 4));
+}
+static int w_dctx_eval(void)
+{
+    const double zdot[2] = {0.004, -0.002}, a[2] = {0.213, -0.347};
+    return fricreg_disk_ctx_eval(DCTX(), Z(0, 1), A(1, zdot, 2), A(2, a, 2), OUTD(3));
+}
+static int w_dctx_tangent(void)
+{
+    return fricreg_disk_ctx_tangent(DCTX(), Z(0, 1), OUTD(1), OUTD(2));
+}
+static int w_dctx_tangent_no_output(void)
+{
+    return fricreg_disk_ctx_tangent(DCTX(), 1, NULL, NULL);
 }
 
 /* exact */
@@ -512,7 +567,7 @@ static int w_st_get_stat(void)
 /* ---- The table ---------------------------------------------------------------------------- */
 
 /* The object a call records its failures in (a const getter records none). */
-enum owner { NONE, CTX_REC, EX_REC, SIM_REC, ST_REC };
+enum owner { NONE, CTX_REC, EX_REC, SIM_REC, ST_REC, DCTX_REC };
 
 #define MAXARGS 8
 struct arg {
@@ -623,6 +678,44 @@ static const struct row rows[] = {
      CTX_REC,
      {PTR(8, "0")}},
     {"fricreg_ctx_get_stat", w_ctx_get_stat, "0i", NONE, {HANDLE, INT(0, "ioii"), PTR(1, "0")}},
+    /* fricreg_disk_ctx.h */
+    {"fricreg_disk_ctx_create", w_dctx_create, "0im", NONE, {SIZE(0, "iiio"), PTR(0, "0")}},
+    {"fricreg_disk_ctx_set_law",
+     w_dctx_set_law,
+     "0in",
+     DCTX_REC,
+     {HANDLE, INT(0, "iiii"), DBL(0, "nnniiii")}},
+    {"fricreg_disk_ctx_set_bounds",
+     w_dctx_set_bounds,
+     "0sni",
+     DCTX_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nniooi")}},
+    {"fricreg_disk_ctx_set_coupling_blocks",
+     w_dctx_set_blocks,
+     "0snypm",
+     DCTX_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnpppp"), MAT(1, "ppyoo")}},
+    {"fricreg_disk_ctx_set_coupling_dense",
+     w_dctx_set_dense,
+     "0snypm",
+     DCTX_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnpppp"), MAT(1, "ppyoo")}},
+    {"fricreg_disk_ctx_eval",
+     w_dctx_eval,
+     "0snig",
+     DCTX_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnoooi"), PTR(2, "0"), ARR(2, "nnoooi"),
+      PTR(3, "0")}},
+    {"fricreg_disk_ctx_tangent",
+     w_dctx_tangent,
+     "0sign",
+     DCTX_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "o"), PTR(2, "o")}},
+    {"fricreg_disk_ctx_tangent (both outputs NULL)",
+     w_dctx_tangent_no_output,
+     "0sign",
+     DCTX_REC,
+     {PTR(8, "0")}},
     /* fricreg_exact.h */
     {"fricreg_exact_solve",
      w_exact_solve,
@@ -859,6 +952,7 @@ static int recorded(enum owner owner, const struct fixture *fx)
     case EX_REC: return fricreg_exact_errcode(fx->ex);
     case SIM_REC: return fricreg_sim_errcode(fx->sim);
     case ST_REC: return fricreg_structure_errcode(fx->st);
+    case DCTX_REC: return fricreg_disk_ctx_errcode(fx->dctx);
     default: return -1;
     }
 }
@@ -869,6 +963,7 @@ static const char *message(enum owner owner, const struct fixture *fx)
     case CTX_REC: return fricreg_ctx_errmsg(fx->ctx);
     case EX_REC: return fricreg_exact_errmsg(fx->ex);
     case SIM_REC: return fricreg_sim_errmsg(fx->sim);
+    case DCTX_REC: return fricreg_disk_ctx_errmsg(fx->dctx);
     default: return fricreg_structure_errmsg(fx->st);
     }
 }
@@ -978,6 +1073,10 @@ START_TEST(non_status_functions)
     ck_assert_str_eq(fricreg_ctx_errmsg(NULL), "NULL context");
     fricreg_ctx_free(NULL);
     fricreg_ctx_reset_stats(NULL);
+    ck_assert_uint_eq(fricreg_disk_ctx_size(NULL), 0);
+    ck_assert_int_eq(fricreg_disk_ctx_errcode(NULL), FRICREG_OK);
+    ck_assert_str_eq(fricreg_disk_ctx_errmsg(NULL), "NULL context");
+    fricreg_disk_ctx_free(NULL);
     ck_assert_int_eq(fricreg_exact_errcode(NULL), FRICREG_OK);
     ck_assert_str_eq(fricreg_exact_errmsg(NULL), "NULL exact solution");
     ck_assert_uint_eq(fricreg_exact_nswitches(NULL), 0);

@@ -30,6 +30,7 @@
 #include <gsl/gsl_odeiv2.h>
 
 #include "fricreg.h"
+#include "fricreg_disk_ctx.h"
 #include "fricreg_exact.h"
 #include "fricreg_sim.h"
 #include "fricreg_structure.h"
@@ -211,6 +212,33 @@ static int ctx_dense(void)
             NOTE("set_coupling_dense: status %d, errcode %d", status, fricreg_ctx_errcode(ctx));
     }
     fricreg_ctx_free(ctx);
+    return status;
+}
+
+/* A 2-D context (fricreg_disk_ctx.h) with a dense W of order 2m: W = I + 0.1 (coupling). */
+static void disk_dense_w(double W[])
+{
+    for (size_t i = 0; i < 2 * M_DENSE; i++)
+        for (size_t j = 0; j < 2 * M_DENSE; j++)
+            W[i * 2 * M_DENSE + j] = i == j ? 1.0 + 0.125 * (double)i
+                                            : 0.1 / (1.0 + (double)(i > j ? i - j : j - i));
+}
+
+static int disk_ctx_dense(void)
+{
+    double W[4 * M_DENSE * M_DENSE];
+    disk_dense_w(W);
+    fricreg_disk_ctx *ctx = NULL;
+    int status = fricreg_disk_ctx_create(M_DENSE, &ctx);
+    if ((status == FRICREG_OK) != (ctx != NULL))
+        NOTE("disk_ctx_create: status %d with handle %p", status, (void *)ctx);
+    if (status == FRICREG_OK) {
+        status = fricreg_disk_ctx_set_coupling_dense(ctx, M_DENSE, W);
+        if (status != FRICREG_OK && fricreg_disk_ctx_errcode(ctx) != status)
+            NOTE("disk set_coupling_dense: status %d, errcode %d", status,
+                 fricreg_disk_ctx_errcode(ctx));
+    }
+    fricreg_disk_ctx_free(ctx);
     return status;
 }
 
@@ -496,6 +524,39 @@ START_TEST(test_eval_does_not_allocate)
 }
 END_TEST
 
+START_TEST(test_disk_ctx_set_coupling_dense)
+{
+    struct tally t = fail_each_allocation("disk_ctx_set_coupling_dense", disk_ctx_dense);
+    ck_assert_int_eq(t.enomem, t.cases);
+}
+END_TEST
+
+/* fricreg_disk_ctx.h: eval never allocates; neither does the tangent (Brent's solver and the
+ * KKT storage are the context's). Contacts at rest, in the band and sliding, dense W. */
+START_TEST(test_disk_eval_does_not_allocate)
+{
+    double W[4 * M_DENSE * M_DENSE], f[2 * M_DENSE], T[4 * M_DENSE * M_DENSE];
+    disk_dense_w(W);
+    const double mun[M_DENSE] = {0.4125, 1.25, 0.3175, 2.0625, 0.8125};
+    const double zdot[2 * M_DENSE] = {1e-5, 2e-3, -0.375, 0.0, 0.0, 0.0, 0.0, 1e-3, 1.875, 0.5};
+    const double a_free[2 * M_DENSE] = {0.9375, -3.25, 0.0625, 1.625, -0.4375,
+                                        0.25,   2.0,   -1.0,   0.5,   0.125};
+    fricreg_disk_ctx *ctx = NULL;
+    ck_assert_int_eq(fricreg_disk_ctx_create(M_DENSE, &ctx), FRICREG_OK);
+    ck_assert_int_eq(fricreg_disk_ctx_set_coupling_dense(ctx, M_DENSE, W), FRICREG_OK);
+    ck_assert_int_eq(fricreg_disk_ctx_set_bounds(ctx, M_DENSE, mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_disk_ctx_set_law(ctx, FRICREG_DISK_QUINN, 0.02), FRICREG_OK);
+    hook_arm(1); /* the first request would fail: none may be made */
+    int status = fricreg_disk_ctx_eval(ctx, M_DENSE, zdot, a_free, f);
+    int tangent = fricreg_disk_ctx_tangent(ctx, M_DENSE, T, T);
+    hook_disarm();
+    ck_assert_int_eq(status, FRICREG_OK);
+    ck_assert_int_eq(tangent, FRICREG_OK);
+    ck_assert_msg(n_allocs == 0, "disk eval and tangent made %ld allocations", n_allocs);
+    fricreg_disk_ctx_free(ctx);
+}
+END_TEST
+
 /* One stepper of each family: fricreg's classical RK4 (fixed steps), GSL's embedded explicit
  * rkf45 (adaptive), implicit Gaussian rk4imp, Bulirsch-Stoer bsimp, multistep msbdf. */
 static const int integrators[] = {FRICREG_INT_RK4, FRICREG_INT_RKF45, FRICREG_INT_RK4IMP,
@@ -588,6 +649,8 @@ static Suite *alloc_suite(void)
     tcase_add_test(core, test_ctx_stick_stiffness);
     tcase_add_test(core, test_eval_does_not_allocate);
     tcase_add_test(core, test_structure_steps_do_not_allocate);
+    tcase_add_test(core, test_disk_ctx_set_coupling_dense);
+    tcase_add_test(core, test_disk_eval_does_not_allocate);
     suite_add_tcase(s, core);
     TCase *drivers = tcase_create("drivers");
     tcase_add_loop_test(drivers, test_sim_run, 0, (int)(3 * N_INTEGRATORS));

@@ -1,0 +1,69 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* disk_ctx_internal.h — the 2-D context's layout, shared by disk_ctx.c (set-up), disk_qp.c
+ * (eval) and disk_tangent.c (fricreg_disk_ctx.h). */
+#ifndef FRICREG_DISK_CTX_INTERNAL_H
+#define FRICREG_DISK_CTX_INTERNAL_H
+
+#include <stddef.h>
+
+#include <gsl/gsl_roots.h>
+
+#include "disk_block.h"
+#include "error.h"
+#include "fricreg_disk_ctx.h"
+
+#define FR_DISK_CTX_MAX ((size_t)1 << 24)
+
+/* What eval decided for a contact (kept for the tangent). */
+enum fr_disk_kind {
+    FR_DISK_FIXED = 0, /* sliding, mun = 0 or a radius 0: f_i does not depend on the others */
+    FR_DISK_FREE = 1,  /* near stick, inside K_i */
+    FR_DISK_CIRCLE = 2 /* near stick, on the circle of K_i */
+};
+
+struct fricreg_disk_ctx {
+    size_t m;
+    int law;
+    double eps;
+    double *mun;             /* [m] */
+    struct fr_disk_eig *eig; /* [m] eigen-decomposition of each diagonal block W_ii */
+    double *blk;             /* [4m] the diagonal blocks W_ii, row-major */
+    double *W;               /* [(2m)^2] dense W, or NULL for block diagonal */
+
+    /* The state of the last evaluation (the tangent's inputs), scratch during one. */
+    double *f;         /* [2m] forces being built */
+    double *f_last;    /* [2m] last successful forces: the warm start */
+    double *g;         /* [2m] a_free + couplings to the fixed contacts (dense W) */
+    double *p;         /* [2m] a_i u_i: K_i's centre is -p_i, c_i mun_i = 2 p_i */
+    double *u;         /* [2m] zdot_i/|zdot_i|, 0 at rest */
+    double *r;         /* [m] |zdot_i| */
+    double *radius;    /* [m] mun_i - a_i */
+    double *lam;       /* [m] the circle's multiplier (stationarity W_ii(f-h) + lam (f+p) = 0) */
+    signed char *kind; /* [m] enum fr_disk_kind */
+    size_t *near;      /* [m] indices of the near-stick contacts */
+    size_t n_near;
+    int last_valid; /* an evaluation succeeded since the last setter call */
+
+    /* The tangent's KKT system, order at most 3m (dense W) or 3 (blocks). */
+    size_t kkt_max;
+    double *kkt;  /* [kkt_max^2] */
+    double *tau;  /* [kkt_max] Householder coefficients */
+    double *col;  /* [kkt_max] one right-hand side */
+    size_t *row;  /* [m] first KKT row of each near-stick contact; its multiplier's row */
+    size_t *mrow; /* [m] */
+
+    gsl_root_fsolver *brent; /* on fricreg's memory (disk_ctx.c): no GSL allocator */
+    struct fr_error err;
+};
+
+#define fr_disk_fail(ctx, ...) fr_error_set(&(ctx)->err, __VA_ARGS__)
+
+/* Entry (2i+a, 2j+b) of W: the dense entry, or the block's (0 between contacts). */
+static inline double fr_disk_w(const fricreg_disk_ctx *ctx, size_t i, int a, size_t j, int b)
+{
+    if (ctx->W != NULL)
+        return ctx->W[(2 * i + (size_t)a) * 2 * ctx->m + 2 * j + (size_t)b];
+    return i == j ? ctx->blk[4 * i + 2 * (size_t)a + (size_t)b] : 0.0;
+}
+
+#endif

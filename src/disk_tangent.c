@@ -1,0 +1,283 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* disk_tangent.c — fricreg_disk_ctx_tangent: implicit differentiation of the coupled 2-D law's
+ * KKT conditions at the last evaluation's solution (fricreg_disk_ctx.h; docs/laws2d.md).
+ *
+ * Unknowns: the derivatives of the near-stick forces f_i (two rows each) and, for a contact
+ * on its circle, of its multiplier lam_i, scaled by radius_i (so that its column is the unit
+ * normal n_i = (f_i + p_i)/radius_i and both blocks are of one scale). Rows:
+ *   stationarity  (W f)_i + a_free,i + 2 W_ii p_i + lam_i (f_i + p_i) = 0,
+ *   circle        n_i^T (f_i + p_i) - radius_i = 0 (linearized: n_i^T df_i = d radius_i -
+ *                 n_i^T dp_i),
+ * with p_i = mun_i zdot_i/eps (FRICREG_DISK_QUINN; 0 for the force balance), radius_i =
+ * mun_i - mun_i |zdot_i|/eps, and the fixed contacts' forces entering through W. The matrix
+ *   [ W_SS + diag(lam_i I)   N ]
+ *   [ N^T                    0 ]
+ * (N the normals of the circle contacts) is factored once by GSL's Householder QR (no
+ * allocation, no GSL error path) and solved for each of the 4m parameter columns. */
+#include <math.h>
+#include <string.h>
+
+#include <gsl/gsl_linalg.h>
+
+#include "disk_ctx_internal.h"
+
+#define PIVOT_RTOL 1e-13
+
+/* d p_i / d zdot_i = slope I (p = mun zdot/eps inside the band and at rest). */
+static double slope(const fricreg_disk_ctx *ctx, size_t i)
+{
+    return ctx->law == FRICREG_DISK_QUINN ? ctx->mun[i] / ctx->eps : 0.0;
+}
+
+/* df_i/dzdot_i of a fixed contact: -(mun/|v|)(I - u u^T) sliding, -slope I on a point K_i,
+ * 0 for mun = 0. */
+static void fixed_jacobian(const fricreg_disk_ctx *ctx, size_t i, double D[4])
+{
+    double mun = ctx->mun[i], r = ctx->r[i];
+    const double *u = ctx->u + 2 * i;
+    int slides = ctx->law == FRICREG_DISK_QUINN ? r >= ctx->eps : r > 0.0;
+    if (mun == 0.0) {
+        D[0] = D[1] = D[2] = D[3] = 0.0;
+    } else if (slides) {
+        double k = -mun / r;
+        D[0] = k * (1.0 - u[0] * u[0]), D[1] = -k * u[0] * u[1];
+        D[2] = D[1], D[3] = k * (1.0 - u[1] * u[1]);
+    } else {
+        D[0] = D[3] = -slope(ctx, i), D[1] = D[2] = 0.0;
+    }
+}
+
+/* The unit normal of a circle contact; at rest (u = 0) the direction it will slide is -n. */
+static void normal(const fricreg_disk_ctx *ctx, size_t i, double n[2])
+{
+    const double *f = ctx->f + 2 * i, *p = ctx->p + 2 * i;
+    double y0 = f[0] + p[0], y1 = f[1] + p[1], ny = hypot(y0, y1);
+    n[0] = y0 / ny;
+    n[1] = y1 / ny;
+}
+
+/* Rows of the KKT system: each near-stick contact's first row, each circle's multiplier row;
+ * returns the order. */
+static size_t number_rows(fricreg_disk_ctx *ctx)
+{
+    size_t n = 2 * ctx->n_near;
+    for (size_t k = 0; k < ctx->n_near; k++) {
+        size_t i = ctx->near[k];
+        ctx->row[i] = 2 * k;
+        if (ctx->kind[i] == FR_DISK_CIRCLE)
+            ctx->mrow[i] = n++;
+    }
+    return n;
+}
+
+static void assemble(fricreg_disk_ctx *ctx, size_t n)
+{
+    double *J = ctx->kkt;
+    memset(J, 0, n * n * sizeof *J);
+    for (size_t k = 0; k < ctx->n_near; k++) {
+        size_t i = ctx->near[k], ri = ctx->row[i];
+        for (size_t l = 0; l < ctx->n_near; l++) {
+            size_t j = ctx->near[l], rj = ctx->row[j];
+            for (int a = 0; a < 2; a++)
+                for (int b = 0; b < 2; b++)
+                    J[(ri + a) * n + rj + b] = fr_disk_w(ctx, i, a, j, b);
+        }
+        if (ctx->kind[i] != FR_DISK_CIRCLE)
+            continue;
+        double nv[2];
+        normal(ctx, i, nv);
+        size_t mr = ctx->mrow[i];
+        for (int a = 0; a < 2; a++) {
+            J[(ri + a) * n + ri + a] += ctx->lam[i];
+            J[(ri + a) * n + mr] = nv[a];
+            J[mr * n + ri + a] = nv[a];
+        }
+    }
+}
+
+/* Factors the KKT matrix (order n > 0) in place; ESINGULAR for a tiny pivot of R. */
+static int factor(fricreg_disk_ctx *ctx, size_t n)
+{
+    gsl_matrix_view A = gsl_matrix_view_array(ctx->kkt, n, n);
+    gsl_vector_view tau = gsl_vector_view_array(ctx->tau, n);
+    gsl_linalg_QR_decomp(&A.matrix, &tau.vector);
+    double big = 0.0;
+    for (size_t k = 0; k < n; k++)
+        big = fmax(big, fabs(ctx->kkt[k * n + k]));
+    for (size_t k = 0; k < n; k++)
+        if (!(fabs(ctx->kkt[k * n + k]) > PIVOT_RTOL * big))
+            return fr_disk_fail(ctx, FRICREG_ESINGULAR,
+                                "tangent: the KKT matrix of the near-stick contacts is "
+                                "singular (pivot %zu of its R factor)",
+                                k);
+    return FRICREG_OK;
+}
+
+/* The right-hand side -dR/d(param) of one parameter: zdot_{j,b} (afree = 0) or a_free_{j,b}
+ * (afree = 1), into ctx->col; also the fixed contact's own derivative Dj. */
+static void parameter_column(fricreg_disk_ctx *ctx, size_t n, size_t j, int b, int afree,
+                             const double Dj[4])
+{
+    double *c = ctx->col;
+    memset(c, 0, n * sizeof *c);
+    if (ctx->kind[j] == FR_DISK_FIXED) {
+        if (afree)
+            return; /* a fixed force does not see a_free */
+        for (size_t k = 0; k < ctx->n_near; k++) {
+            size_t i = ctx->near[k];
+            for (int a = 0; a < 2; a++)
+                c[ctx->row[i] + a] = -(fr_disk_w(ctx, i, a, j, 0) * Dj[b] +
+                                       fr_disk_w(ctx, i, a, j, 1) * Dj[2 + b]);
+        }
+        return;
+    }
+    size_t rj = ctx->row[j];
+    if (afree) {
+        c[rj + b] = -1.0;
+        return;
+    }
+    double s = slope(ctx, j);
+    for (int a = 0; a < 2; a++) /* d/dp of 2 W_jj p_j + lam (f_j + p_j) */
+        c[rj + a] = -s * (2.0 * ctx->blk[4 * j + 2 * a + b] + (a == b ? ctx->lam[j] : 0.0));
+    if (ctx->kind[j] == FR_DISK_CIRCLE) {
+        /* n^T df = d radius - n^T dp = -s (u + n)^T dzdot; at rest u := -n, so 0. */
+        double nv[2];
+        normal(ctx, j, nv);
+        double ub = ctx->r[j] > 0.0 ? ctx->u[2 * j + b] : -nv[b];
+        c[ctx->mrow[j]] = -s * (ub + nv[b]);
+    }
+}
+
+/* Writes column (j, b) of one output (zeroed before) from the solved column and Dj. */
+static void scatter(fricreg_disk_ctx *ctx, size_t j, int b, int afree, const double Dj[4],
+                    double *out)
+{
+    size_t m2 = 2 * ctx->m, col = 2 * j + (size_t)b;
+    for (size_t k = 0; k < ctx->n_near; k++) {
+        size_t i = ctx->near[k];
+        out[2 * i * m2 + col] = ctx->col[ctx->row[i]];
+        out[(2 * i + 1) * m2 + col] = ctx->col[ctx->row[i] + 1];
+    }
+    if (ctx->kind[j] == FR_DISK_FIXED && !afree) {
+        out[2 * j * m2 + col] = Dj[b];
+        out[(2 * j + 1) * m2 + col] = Dj[2 + b];
+    }
+}
+
+/* Columns (j, 0), (j, 1) of one output (df_dzdot or df_dafree) for the factored system of
+ * order n of the near-stick set ctx->near. */
+static void fill_columns(fricreg_disk_ctx *ctx, size_t n, size_t j, int afree, double *out)
+{
+    gsl_matrix_const_view A = gsl_matrix_const_view_array(ctx->kkt, n, n);
+    gsl_vector_const_view tau = gsl_vector_const_view_array(ctx->tau, n);
+    double Dj[4] = {0.0, 0.0, 0.0, 0.0};
+    if (ctx->kind[j] == FR_DISK_FIXED)
+        fixed_jacobian(ctx, j, Dj);
+    for (int b = 0; b < 2; b++) {
+        parameter_column(ctx, n, j, b, afree, Dj);
+        if (n > 0) {
+            gsl_vector_view x = gsl_vector_view_array(ctx->col, n);
+            gsl_linalg_QR_svx(&A.matrix, &tau.vector, &x.vector);
+        }
+        scatter(ctx, j, b, afree, Dj, out);
+    }
+}
+
+/* Numbers the rows of the near-stick set ctx->near, assembles and factors its KKT matrix;
+ * *order gets its order. */
+static int prepare(fricreg_disk_ctx *ctx, size_t *order)
+{
+    size_t n = number_rows(ctx);
+    *order = n;
+    if (n == 0)
+        return FRICREG_OK;
+    assemble(ctx, n);
+    return factor(ctx, n);
+}
+
+/* Dense W: one system for all near-stick contacts, every column. */
+static void tangent_dense(fricreg_disk_ctx *ctx, size_t n, double *dz, double *da)
+{
+    for (size_t j = 0; j < ctx->m; j++) {
+        if (dz != NULL)
+            fill_columns(ctx, n, j, 0, dz);
+        if (da != NULL)
+            fill_columns(ctx, n, j, 1, da);
+    }
+}
+
+/* Block diagonal W: every near-stick contact's factor is checked before anything is written. */
+static int check_blocks(fricreg_disk_ctx *ctx)
+{
+    size_t *all = ctx->near, n_all = ctx->n_near, n;
+    int status = FRICREG_OK;
+    for (size_t k = 0; k < n_all && status == FRICREG_OK; k++) {
+        ctx->near = all + k, ctx->n_near = 1;
+        status = prepare(ctx, &n);
+    }
+    ctx->near = all, ctx->n_near = n_all;
+    return status;
+}
+
+/* Block diagonal W: each near-stick contact alone (order <= 3), its own columns only; the
+ * fixed contacts' diagonal blocks. */
+static void tangent_blocks(fricreg_disk_ctx *ctx, double *dz, double *da)
+{
+    size_t *all = ctx->near, n_all = ctx->n_near, n;
+    for (size_t j = 0; j < ctx->m; j++) {
+        if (ctx->kind[j] != FR_DISK_FIXED) {
+            ctx->near = &j, ctx->n_near = 1;
+            prepare(ctx, &n);
+        } else {
+            ctx->n_near = 0, n = 0;
+        }
+        if (dz != NULL)
+            fill_columns(ctx, n, j, 0, dz);
+        if (da != NULL)
+            fill_columns(ctx, n, j, 1, da);
+    }
+    ctx->near = all, ctx->n_near = n_all;
+}
+
+/* The slopes the tangent divides by must be finite: checked before anything is written. */
+static int check_slopes(fricreg_disk_ctx *ctx)
+{
+    for (size_t i = 0; i < ctx->m; i++) {
+        double D[4];
+        fixed_jacobian(ctx, i, D);
+        if (!isfinite(slope(ctx, i)) || !isfinite(D[0]) || !isfinite(D[1]) || !isfinite(D[3]))
+            return fr_disk_fail(ctx, FRICREG_ENONFINITE,
+                                "tangent: contact %zu's slope mun/eps or mun/|zdot| overflows", i);
+    }
+    return FRICREG_OK;
+}
+
+int fricreg_disk_ctx_tangent(fricreg_disk_ctx *ctx, size_t m, double df_dzdot[], double df_dafree[])
+{
+    if (ctx == NULL)
+        return FRICREG_ENULL;
+    if (df_dzdot == NULL && df_dafree == NULL)
+        return fr_disk_fail(ctx, FRICREG_ENULL, "tangent: both outputs are NULL");
+    if (m != ctx->m)
+        return fr_disk_fail(ctx, FRICREG_ESIZE, "tangent: m = %zu, context has %zu contacts", m,
+                            ctx->m);
+    if (!ctx->last_valid)
+        return fr_disk_fail(ctx, FRICREG_EINVAL,
+                            "tangent: no successful evaluation since the last setter call");
+    size_t n = 0; /* factored first: a singular system writes nothing */
+    int status = check_slopes(ctx);
+    if (status == FRICREG_OK)
+        status = ctx->W != NULL ? prepare(ctx, &n) : check_blocks(ctx);
+    if (status != FRICREG_OK)
+        return status;
+    size_t n2 = 4 * m * m;
+    if (df_dzdot != NULL)
+        memset(df_dzdot, 0, n2 * sizeof *df_dzdot);
+    if (df_dafree != NULL)
+        memset(df_dafree, 0, n2 * sizeof *df_dafree);
+    if (ctx->W != NULL)
+        tangent_dense(ctx, n, df_dzdot, df_dafree);
+    else
+        tangent_blocks(ctx, df_dzdot, df_dafree);
+    return FRICREG_OK;
+}
