@@ -82,6 +82,11 @@ int cli_exact_summary(const struct cli_run *run, FILE *out);
  * (fricreg_structure.h); argv after the subcommand. Returns the exit status. */
 int cli_structure(int argc, char **argv, FILE *out);
 
+/* problems.c: `fricreg-sim hold|belt|disk`, the reference problems beyond the paper
+ * (src/problems/); argv after the subcommand. Returns the exit status, or -1 if command is
+ * none of them. */
+int cli_problem(const char *command, int argc, char **argv, FILE *out);
+
 /* reproduce.c: the paper's experiments into dir, and the comparison table on stdout. */
 int cli_reproduce(int argc, char **argv);
 
