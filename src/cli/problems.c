@@ -195,8 +195,9 @@ static int parse_hold(int argc, char **argv, struct prob_hold *p, enum cli_outpu
         v[H_THETA] = (v[H_RATE] > 0.0 ? 0.9 * atan(v[H_MU]) : atan(0.8 * v[H_MU])) / DEG;
     if (v[H_THETA] >= 90.0)
         return cli_usage_error("--theta-deg", "must be below 90");
-    if (!given[H_STEPS] && v[H_RATE] > 0.0) /* to 90 degrees, and a second of sliding */
-        v[H_STEPS] = 2.0 * ceil(((90.0 - v[H_THETA]) / v[H_RATE] + 1.0) / (2.0 * v[H_DT]));
+    if (!given[H_STEPS] && v[H_RATE] > 0.0) /* to 90 degrees and a second more, at most 1e9 */
+        v[H_STEPS] = fmin(1e9,
+                          2.0 * ceil(((90.0 - v[H_THETA]) / v[H_RATE] + 1.0) / (2.0 * v[H_DT])));
     if ((status = whole("--steps", v[H_STEPS], 2, 1e10)) != 0)
         return status;
     if (fmod(v[H_STEPS], 2.0) != 0.0)
@@ -225,8 +226,10 @@ static void hold_summary(FILE *out, const struct prob_hold *p, const struct prob
     fprintf(out, "\"mu\": %.17g, \"mass\": %.17g, \"g\": %.17g, ", p->mu, p->mass, p->g);
     fprintf(out, "\"theta_deg\": %.17g, \"phi_deg\": %.17g, \"tilt_rate_deg\": %.17g, ",
             p->theta0 / DEG, p->phi / DEG, p->kappa / DEG);
-    fprintf(out, "\"creep\": %.17g, \"displacement\": %.17g, \"slides\": %s", r->creep,
-            r->displacement, r->broke_away ? "true" : "false");
+    if (p->kappa == 0.0) /* tilting, the first speed above 0 is the break-away itself */
+        fprintf(out, "\"creep\": %.17g, ", r->creep);
+    fprintf(out, "\"displacement\": %.17g, \"slides\": %s", r->displacement,
+            r->broke_away ? "true" : "false");
     if (p->kappa > 0.0) {
         double exact = atan(p->mu), mid = 0.5 * (r->theta_rest + r->theta_moving);
         fprintf(out, ", \"breakaway_deg\": %.17g, \"bracket_deg\": [%.17g, %.17g]", mid / DEG,

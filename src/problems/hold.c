@@ -71,18 +71,16 @@ int prob_hold_run(const struct prob_hold *p, prob_observer observe, void *user,
         double row[PROB_HOLD_COLUMNS] = {tilt(p, t + h), y[0], y[1], y[2], y[3]};
         if (observe != NULL && observe(user, t + h, row, PROB_HOLD_COLUMNS) != 0)
             status = FRICREG_ENOMEM;
-        if (r->broke_away)
-            continue;
-        if (p->kappa > 0.0 && (y[2] != 0.0 || y[3] != 0.0)) {
+        int moving = y[2] != 0.0 || y[3] != 0.0;
+        if (p->kappa == 0.0) { /* a fixed tilt: the creep over the whole run */
+            r->creep = fmax(r->creep, hypot(y[2], y[3]));
+            r->broke_away |= moving;
+        } else if (moving && !r->broke_away) {
             r->broke_away = 1; /* this step left rest: its tilts bracket atan(mu) */
             r->theta_rest = tilt(p, t);
             r->theta_moving = tilt(p, t + h);
             stop = fmin(n, k + 1.0 + floor(1.0 / h)); /* one second of sliding for the plot */
-            continue;
         }
-        r->creep = fmax(r->creep, hypot(y[2], y[3]));
-        if (p->kappa == 0.0 && r->creep > 0.0)
-            r->broke_away = 1; /* a fixed tilt outside the disk: it slides */
     }
     prob_rk4_free(&rk);
     if (status != FRICREG_OK)

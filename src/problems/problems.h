@@ -63,9 +63,9 @@ struct prob_hold {
 };
 #define PROB_HOLD_COLUMNS 5 /* theta (rad), x1, x2, v1, v2 */
 struct prob_hold_result {
-    double creep;        /* the largest |v| after a step, m/s, before any break-away */
+    double creep;        /* kappa = 0: the largest |v| after a step over the run, m/s */
     double displacement; /* |x| at the end, m */
-    int broke_away;      /* the block left rest (kappa > 0: the run stops there) */
+    int broke_away;      /* the block left rest (kappa > 0: the run stops a second later) */
     double theta_rest;   /* the tilt at the start of the GSL step that left rest, rad */
     double theta_moving; /* the tilt at its end (theta_rest + 2 kappa dt), rad */
     double steps, t;
