@@ -346,6 +346,10 @@ expect_usage_error "--a" disk --a 0
 expect_usage_error "--ref-eps" disk --ref-eps -1
 expect_usage_error "--ref-eps" disk --ref-eps 1e-9
 expect_usage_error "--mu" disk --mu 1
+# --help gives each problem's defaults, from the values the parsers use.
+expect_output '^hold: +--mu \[0\.5385\] --mass \[2\.385\]' --help
+expect_output '^belt: +--fs \[1\] --fk \[0\.5\] --vs \[0\.05\]' --help
+expect_output '^disk: +--law \[quinn\] --a \[2\] --omega \[0\.5\]' --help
 
 # ---- Issue 11: no hang, exit codes as the usage says, no data lost ---------------------------
 # expect NAME COMMAND...: a check that passes when COMMAND (a shell snippet) succeeds.

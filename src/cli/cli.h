@@ -86,6 +86,8 @@ int cli_structure(int argc, char **argv, FILE *out);
  * (src/problems/); argv after the subcommand. Returns the exit status, or -1 if command is
  * none of them. */
 int cli_problem(const char *command, int argc, char **argv, FILE *out);
+/* Their options' defaults, for the usage text. */
+void cli_print_problem_defaults(FILE *out);
 
 /* reproduce.c: the paper's experiments into dir, and the comparison table on stdout. */
 int cli_reproduce(int argc, char **argv);

@@ -51,6 +51,7 @@ static void usage(FILE *out)
     fputs("            --partition paper|consistent  coupled contacts' near-stick law "
           "[consistent]\n",
           out);
+    cli_print_problem_defaults(out);
     fputs("Exit status: 0 success, 1 the simulation failed or its output could not be written\n"
           "(the message names the file), 2 bad option or value (run lengths and --out included).\n",
           out);

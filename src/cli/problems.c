@@ -177,10 +177,14 @@ static double cpu_since(clock_t start)
 /* ---- hold ------------------------------------------------------------------------------- */
 
 enum { H_MU, H_MASS, H_G, H_THETA, H_PHI, H_RATE, H_STEPS, H_DT, H_EPS, H_N };
+/* tests/test_hold.c's block; theta and eps 0: derived (parse_hold) */
+static const double hold_defaults[H_N] = {0.5385, 2.385, 9.81, 0.0, 35.4, 0.0, 1e7, 1e-4, 0.0};
+#define DISK_REF_EPS 2e-4
 
 static int parse_hold(int argc, char **argv, struct prob_hold *p, enum cli_output *output)
 {
-    double v[H_N] = {0.5385, 2.385, 9.81, 0.0, 35.4, 0.0, 1e7, 1e-4, 0.0};
+    double v[H_N];
+    memcpy(v, hold_defaults, sizeof v);
     const struct number_option opts[H_N] = {
         {"--mu", &v[H_MU], POSITIVE},       {"--mass", &v[H_MASS], POSITIVE},
         {"--g", &v[H_G], POSITIVE},         {"--theta-deg", &v[H_THETA], NONNEGATIVE},
@@ -354,7 +358,7 @@ static int parse_disk(int argc, char **argv, struct prob_disk *p, double *ref_ep
                       enum cli_output *output)
 {
     const struct prob_disk d = PROB_DISK_DEFAULTS;
-    double v[D_N] = {d.a, d.omega, d.dt, 0.0, 2e-4};
+    double v[D_N] = {d.a, d.omega, d.dt, 0.0, DISK_REF_EPS};
     const struct number_option opts[D_N] = {{"--a", &v[D_A], POSITIVE},
                                             {"--omega", &v[D_OMEGA], POSITIVE},
                                             {"--dt", &v[D_DT], POSITIVE},
@@ -428,6 +432,25 @@ static int cli_disk(int argc, char **argv, FILE *out)
     if (status == 0)
         disk_summary(out, &p, &r, ref_eps, &ref, cpu_since(start));
     return status;
+}
+
+void cli_print_problem_defaults(FILE *out)
+{
+    const double *h = hold_defaults;
+    const struct prob_belt b = PROB_BELT_DEFAULTS;
+    const struct prob_disk d = PROB_DISK_DEFAULTS;
+    fprintf(out,
+            "hold:       --mu [%g] --mass [%g] --g [%g] --phi-deg [%g] --dt [%g] --eps [20 dt]\n"
+            "            --theta-deg [atan(0.8 mu); with --tilt-rate 0.9 atan(mu)]\n"
+            "            --steps [%g; with --tilt-rate to 90 deg] --tilt-rate [0 deg/s: fixed]\n",
+            h[H_MU], h[H_MASS], h[H_G], h[H_PHI], h[H_DT], h[H_STEPS]);
+    fprintf(out,
+            "belt:       --fs [%g] --fk [%g] --vs [%g] --delta [%g] --v-belt [%g] --dt [%g]\n"
+            "            --eps [2 dt] --cycles [%d] --ref-dt [%g]\n",
+            b.fs, b.fk, b.vs, b.delta, b.v_belt, b.dt, b.cycles, b.ref_dt);
+    fprintf(out,
+            "disk:       --law [%s] --a [%g] --omega [%g] --dt [%g] --eps [2 dt] --ref-eps [%g]\n",
+            fricreg_disk_law_name(d.law), d.a, d.omega, d.dt, DISK_REF_EPS);
 }
 
 int cli_problem(const char *command, int argc, char **argv, FILE *out)
