@@ -311,6 +311,7 @@ expect_usage_error "--theta-deg" hold --theta-deg 95
 expect_usage_error "--steps" hold --steps 3
 expect_usage_error "--steps" hold --steps 1e11
 expect_usage_error "--tilt-rate" hold --tilt-rate nan
+expect_usage_error "--tilt-rate" hold --tilt-rate 1e-300
 expect_usage_error "--dt" hold --dt 0.01 --eps 0.002
 expect_usage_error "--fs" hold --fs 1
 # belt: the event-driven reference's limit cycle (period 9.415410941, amplitude 0.5919801876 in
@@ -333,6 +334,9 @@ expect_usage_error "--cycles" belt --cycles 1.5
 expect_usage_error "--vs" belt --vs 0
 expect_usage_error "--dt" belt --dt 0.05 --eps 0.01
 expect_usage_error "--law" belt --law quinn
+expect_usage_error "--dt" belt --dt 1e-9 --eps 0.01
+expect_usage_error "--ref-dt" belt --ref-dt 1e-12
+expect_usage_error "--dt" belt --v-belt 1e-300
 # disk: D per forcing cycle of the 2-D oscillator with rotating forcing against the same
 # problem at eps = 2e-4 (docs/laws2d.md's comparison: the default law within 1e-4 at dt 0.005).
 "$sim" disk --dt 0.005 >"$tmp/disk.json" 2>"$tmp/err"

@@ -199,10 +199,12 @@ static int parse_hold(int argc, char **argv, struct prob_hold *p, enum cli_outpu
         v[H_THETA] = (v[H_RATE] > 0.0 ? 0.9 * atan(v[H_MU]) : atan(0.8 * v[H_MU])) / DEG;
     if (v[H_THETA] >= 90.0)
         return cli_usage_error("--theta-deg", "must be below 90");
-    if (!given[H_STEPS] && v[H_RATE] > 0.0) /* to 90 degrees and a second more, at most 1e9 */
-        v[H_STEPS] = fmin(1e9,
-                          2.0 * ceil(((90.0 - v[H_THETA]) / v[H_RATE] + 1.0) / (2.0 * v[H_DT])));
-    if ((status = whole("--steps", v[H_STEPS], 2, 1e10)) != 0)
+    if (!given[H_STEPS] && v[H_RATE] > 0.0) { /* to 90 degrees and a second more */
+        v[H_STEPS] = 2.0 * ceil(((90.0 - v[H_THETA]) / v[H_RATE] + 1.0) / (2.0 * v[H_DT]));
+        if (v[H_STEPS] > 1e9)
+            return cli_usage_error("--tilt-rate", "more than 10^9 steps to 90 deg: give --steps");
+    }
+    if ((status = whole("--steps", v[H_STEPS], 2, 1e9)) != 0)
         return status;
     if (fmod(v[H_STEPS], 2.0) != 0.0)
         return cli_usage_error("--steps", "must be even (GSL's rk4 takes two classical steps)");
@@ -297,6 +299,13 @@ static int parse_belt(int argc, char **argv, struct prob_belt *p, enum cli_outpu
                             v[B_DT], v[B_EPS], (int)v[B_CYCLES], v[B_REF_DT]};
     if (!given[B_EPS])
         p->eps = 2.0 * p->dt; /* the paper's rule */
+    /* a cycle is at most a stick of 2 fs/V and about a natural period of slip: a run of more
+     * than 1e9 steps is refused rather than left to run for hours */
+    double length = (p->cycles + 1) * (2.0 * PI + 2.0 * p->fs / p->v_belt);
+    if (length / p->dt > 1e9)
+        return cli_usage_error("--dt", "more than 10^9 steps over the cycles");
+    if (length / p->ref_dt > 1e9)
+        return cli_usage_error("--ref-dt", "more than 10^9 steps over the cycles");
     return stable_step(p->fs, p->dt, p->eps);
 }
 
