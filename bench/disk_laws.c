@@ -23,7 +23,7 @@
 
 static struct prob_disk_result simulate(int law, double dt, double eps)
 {
-    struct prob_disk p = PROB_DISK_DEFAULTS;
+    struct prob_disk p = prob_disk_defaults();
     struct prob_disk_result r;
     p.law = law, p.dt = dt, p.eps = eps;
     int status = prob_disk_run(&p, NULL, NULL, &r);

@@ -25,7 +25,7 @@ static void check(int status, const char *what)
 
 int main(void)
 {
-    struct prob_belt p = PROB_BELT_DEFAULTS;
+    struct prob_belt p = prob_belt_defaults();
     struct prob_belt_cycle ref, c;
     check(prob_belt_reference(&p, NULL, NULL, &ref), "reference");
     printf("reference (event-driven): period %.12f amplitude %.12f\n", ref.period, ref.amplitude);

@@ -60,7 +60,7 @@ END_TEST
  * (an unknown 2-D law) returns the law's status, not FRICREG_EINTEGRATOR. */
 START_TEST(bad_parameters_and_law_failures)
 {
-    struct prob_disk d = PROB_DISK_DEFAULTS;
+    struct prob_disk d = prob_disk_defaults();
     struct prob_disk_result dr;
     d.a = 0.0;
     ck_assert_int_eq(prob_disk_run(&d, NULL, NULL, &dr), FRICREG_EINVAL);
@@ -68,7 +68,7 @@ START_TEST(bad_parameters_and_law_failures)
     ck_assert_int_eq(prob_disk_run(&d, NULL, NULL, &dr), FRICREG_EINVAL);
     d.law = FRICREG_DISK_QUINN, d.dt = NAN;
     ck_assert_int_eq(prob_disk_run(&d, NULL, NULL, &dr), FRICREG_EINVAL);
-    struct prob_belt b = PROB_BELT_DEFAULTS;
+    struct prob_belt b = prob_belt_defaults();
     struct prob_belt_cycle c;
     b.fk = 1.5; /* kinetic above static */
     ck_assert_int_eq(prob_belt_reference(&b, NULL, NULL, &c), FRICREG_EINVAL);

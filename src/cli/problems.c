@@ -279,7 +279,7 @@ enum { B_FS, B_FK, B_VS, B_DELTA, B_V, B_DT, B_EPS, B_CYCLES, B_REF_DT, B_N };
 
 static int parse_belt(int argc, char **argv, struct prob_belt *p, enum cli_output *output)
 {
-    const struct prob_belt d = PROB_BELT_DEFAULTS;
+    const struct prob_belt d = prob_belt_defaults();
     double v[B_N] = {d.fs, d.fk, d.vs, d.delta, d.v_belt, d.dt, 0.0, d.cycles, d.ref_dt};
     const struct number_option opts[B_N] = {
         {"--fs", &v[B_FS], POSITIVE},        {"--fk", &v[B_FK], NONNEGATIVE},
@@ -366,7 +366,7 @@ enum { D_A, D_OMEGA, D_DT, D_EPS, D_REF_EPS, D_N };
 static int parse_disk(int argc, char **argv, struct prob_disk *p, double *ref_eps,
                       enum cli_output *output)
 {
-    const struct prob_disk d = PROB_DISK_DEFAULTS;
+    const struct prob_disk d = prob_disk_defaults();
     double v[D_N] = {d.a, d.omega, d.dt, 0.0, DISK_REF_EPS};
     const struct number_option opts[D_N] = {{"--a", &v[D_A], POSITIVE},
                                             {"--omega", &v[D_OMEGA], POSITIVE},
@@ -446,8 +446,8 @@ static int cli_disk(int argc, char **argv, FILE *out)
 void cli_print_problem_defaults(FILE *out)
 {
     const double *h = hold_defaults;
-    const struct prob_belt b = PROB_BELT_DEFAULTS;
-    const struct prob_disk d = PROB_DISK_DEFAULTS;
+    const struct prob_belt b = prob_belt_defaults();
+    const struct prob_disk d = prob_disk_defaults();
     fprintf(out,
             "hold:       --mu [%g] --mass [%g] --g [%g] --phi-deg [%g] --dt [%g] --eps [20 dt]\n"
             "            --theta-deg [atan(0.8 mu); with --tilt-rate 0.9 atan(mu)]\n"

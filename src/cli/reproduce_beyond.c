@@ -129,7 +129,7 @@ static int hold(const char *dir)
  * plane beside the event-driven reference's. */
 static int belt(const char *dir)
 {
-    struct prob_belt p = PROB_BELT_DEFAULTS;
+    struct prob_belt p = prob_belt_defaults();
     struct prob_belt_cycle ref, c;
     struct rows reg = {.every = 1, .curve = 0}, exact = {.every = 50, .curve = 1};
     p.dt = 0.0025, p.eps = 0.005;
@@ -158,7 +158,7 @@ static int belt(const char *dir)
  * force in the plane over the measured turn. */
 static int disk(const char *dir)
 {
-    struct prob_disk p = PROB_DISK_DEFAULTS;
+    struct prob_disk p = prob_disk_defaults();
     struct prob_disk_result r;
     struct rows rows = {.every = 2, .curve = -1};
     int status = prob_disk_run(&p, disk_row, &rows, &r);

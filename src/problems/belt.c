@@ -7,6 +7,19 @@
 #include "fricreg_stribeck.h"
 #include "prob_internal.h"
 
+struct prob_belt prob_belt_defaults(void)
+{
+    return (struct prob_belt){.fs = 1.0,
+                              .fk = 0.5,
+                              .vs = 0.05,
+                              .delta = 1.0,
+                              .v_belt = 0.2,
+                              .dt = 0.01,
+                              .eps = 0.02,
+                              .cycles = 12,
+                              .ref_dt = 1e-5};
+}
+
 static int valid(const struct prob_belt *p)
 {
     const double finite[8] = {p->fs, p->fk, p->vs, p->delta, p->v_belt, p->dt, p->eps, p->ref_dt};

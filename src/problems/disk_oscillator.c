@@ -12,6 +12,17 @@
 
 #define PI 3.14159265358979323846
 
+struct prob_disk prob_disk_defaults(void)
+{
+    return (struct prob_disk){.law = FRICREG_DISK_QUINN,
+                              .a = 2.0,
+                              .omega = 0.5,
+                              .cycles_per_turn = 7,
+                              .turns_transient = 3,
+                              .dt = 0.01,
+                              .eps = 0.02};
+}
+
 struct disk_rhs {
     const struct prob_disk *p;
     int status; /* the law's status when it failed */

@@ -30,14 +30,13 @@ typedef int (*prob_observer)(void *user, double t, const double row[], size_t n)
 struct prob_disk {
     int law;             /* enum fricreg_disk_law */
     double a, omega;     /* forcing amplitude and frequency (> 0) */
-    int cycles_per_turn; /* forcing cycles per turn of the direction (>= 1) [7] */
-    int turns_transient; /* turns before the measured one (>= 0) [3] */
+    int cycles_per_turn; /* forcing cycles per turn of the direction (>= 1) */
+    int turns_transient; /* turns before the measured one (>= 0) */
     double dt, eps;      /* classical RK4 step, the law's eps (> 0) */
 };
-#define PROB_DISK_DEFAULTS            \
-    {                                 \
-        3, 2.0, 0.5, 7, 3, 0.01, 0.02 \
-    }
+/* The problem of docs/laws2d.md: law quinn, a = 2, omega = 0.5, 7 cycles a turn, 3 turns of
+ * transient, dt = 0.01, eps = 2 dt. */
+struct prob_disk prob_disk_defaults(void);
 #define PROB_DISK_COLUMNS 6 /* x1, x2, v1, v2, f1, f2 */
 struct prob_disk_result {
     double dissipation; /* D per forcing cycle over the measured turn */
@@ -85,10 +84,9 @@ struct prob_belt {
     int cycles;     /* the cycle measured (>= 2) [12] */
     double ref_dt;  /* the reference's slip phases: classical RK4 step [1e-5] */
 };
-#define PROB_BELT_DEFAULTS                             \
-    {                                                  \
-        1.0, 0.5, 0.05, 1.0, 0.2, 0.01, 0.02, 12, 1e-5 \
-    }
+/* fs = 1, fk = 0.5, vs = 0.05, delta = 1, V = 0.2; dt = 0.01, eps = 2 dt; the 12th cycle; the
+ * reference at 1e-5. */
+struct prob_belt prob_belt_defaults(void);
 #define PROB_BELT_COLUMNS 3 /* x, x', f (the reference: f = NaN) */
 struct prob_belt_cycle {
     double period, amplitude;
