@@ -268,6 +268,93 @@ expect_usage_error "--t-end" structure --mass $d/M3.mtx --stiffness $d/K3s.mtx -
 expect_usage_error "--eps" structure $good --eps 0
 expect_usage_error "^fricreg-sim: --dt: more than 2^31 steps" structure $good --dt 1e-12 --t-end 1
 
+# ---- hold, belt, disk: the reference problems beyond the paper (src/problems/, the code the
+# benchmarks run; docs/laws2d.md). Values against the bench and tests/test_hold.c.
+# num FIELD FILE: the number after "FIELD": in a JSON summary.
+num() { sed -n -e "s/.*\"$1\": \(-\{0,1\}[0-9.e+-]*\).*/\1/p" "$2"; }
+# within NAME FILE EXPR: awk's EXPR over the summary's fields (given as variables) is true.
+within() {
+    total=$((total + 1))
+    name=$1 file=$2 expr=$3
+    vars=$(sed -e 's/[{}]//g' -e 's/\[[^]]*\]//g' "$file" | tr ',' '\n' |
+           sed -n -e 's/^ *"\([a-z_]*\)": \(-\{0,1\}[0-9][0-9.e+-]*\)$/-v \1=\2/p' | tr '\n' ' ')
+    # shellcheck disable=SC2086
+    if ! awk $vars "BEGIN { exit !($expr) }"; then
+        echo "FAIL: $name: $expr with $(cat "$file")"; fails=$((fails + 1))
+    fi
+}
+# hold: from rest inside the friction disk (tan theta = 0.8 mu), 10^7 steps: creep exactly 0 m/s
+# and no displacement at all (the law returns f_eq itself at v = 0).
+expect_output '"steps": 10000000, .*"creep": 0, "displacement": 0, "slides": false' hold
+# ... in another direction, just inside the bound (theta 1.8e-6 deg below atan(mu): |F| =
+# (1 - 7.5e-8) mu N): still exactly 0.
+expect_output '"creep": 0, "displacement": 0, "slides": false' hold --phi-deg 217.3 --theta-deg 28.3024623 --steps 100000
+# ... and outside it (29 deg) the block slides at g (sin theta - mu cos theta) = 0.135641967
+# m/s^2 from the first step (in the band too the law gives -mu N u when f_eq is beyond the
+# disk along -u), which RK4 integrates exactly: 0.0271283934013776 m/s after 0.2 s.
+"$sim" hold --theta-deg 29 --steps 2000 >"$tmp/hold.json" 2>"$tmp/err"
+within "hold slides at the closed-form rate" "$tmp/hold.json" \
+    'creep > 0.02712839340137 && creep < 0.02712839340138'
+expect_output '"slides": true' hold --theta-deg 29 --steps 2000
+# Tilting at 0.02 rad/s (1.1459156 deg/s) from 0.9 atan(mu): the block leaves rest in the step
+# whose tilts bracket atan(mu) = 28.3024640990 deg; the bracket's midpoint is within kappa dt of
+# it, in any direction.
+"$sim" hold --tilt-rate 1.1459156 >"$tmp/hold.json" 2>"$tmp/err"
+within "hold break-away within kappa dt" "$tmp/hold.json" \
+    'error_deg <= bound_deg && -error_deg <= bound_deg && bound_deg < 1.2e-4 && exact_deg > 28.30246409 && exact_deg < 28.30246410'
+"$sim" hold --tilt-rate 0.3 --phi-deg 123 --dt 1e-3 >"$tmp/hold.json" 2>"$tmp/err"
+within "hold break-away within kappa dt (dt 1e-3)" "$tmp/hold.json" \
+    'error_deg <= bound_deg && -error_deg <= bound_deg && bound_deg > 2.9e-4 && bound_deg < 3.1e-4'
+expect_output '^t,theta,x1,x2,v1,v2$' hold --tilt-rate 5 --output trajectory
+expect_usage_error "--mu" hold --mu -1
+expect_usage_error "--theta-deg" hold --theta-deg 95
+expect_usage_error "--steps" hold --steps 3
+expect_usage_error "--steps" hold --steps 1e11
+expect_usage_error "--tilt-rate" hold --tilt-rate nan
+expect_usage_error "--tilt-rate" hold --tilt-rate 1e-300
+expect_usage_error "--dt" hold --dt 0.01 --eps 0.002
+expect_usage_error "--fs" hold --fs 1
+# belt: the event-driven reference's limit cycle (period 9.415410941, amplitude 0.5919801876 in
+# bench/stribeck_belt.c), and the regularized law at dt 0.0025, eps 0.005 within 1e-3 of both.
+"$sim" belt --dt 0.0025 --eps 0.005 >"$tmp/belt.json" 2>"$tmp/err"
+expect_output '"reference": \{"method": "event-driven", "dt": 1(\.0+1)?e-05, "period": 9\.41541094[0-9]*, "amplitude": 0\.59198018[0-9]*,' belt --dt 0.0025
+within "belt within 1e-3 of the reference" "$tmp/belt.json" \
+    'period_error < 1e-3 && amplitude_error < 1e-3 && period > 9.41 && period < 9.42'
+# ... second order in dt = eps/2: halving dt divides both errors by more than 3.
+"$sim" belt --dt 0.00125 >"$tmp/belt2.json" 2>"$tmp/err"
+total=$((total + 1))
+if ! awk -v a="$(num period_error "$tmp/belt.json")" -v b="$(num period_error "$tmp/belt2.json")" \
+        -v c="$(num amplitude_error "$tmp/belt.json")" -v d="$(num amplitude_error "$tmp/belt2.json")" \
+        'BEGIN { exit !(b > 0 && d > 0 && a / b > 3 && c / d > 3) }'; then
+    echo "FAIL: belt errors not second order: $(cat "$tmp/belt.json" "$tmp/belt2.json")"; fails=$((fails + 1))
+fi
+expect_output '^t,x,v,f$' belt --output trajectory
+expect_usage_error "--fk" belt --fk 2
+expect_usage_error "--cycles" belt --cycles 1.5
+expect_usage_error "--vs" belt --vs 0
+expect_usage_error "--dt" belt --dt 0.05 --eps 0.01
+expect_usage_error "--law" belt --law quinn
+expect_usage_error "--dt" belt --dt 1e-9 --eps 0.01
+expect_usage_error "--ref-dt" belt --ref-dt 1e-12
+expect_usage_error "--dt" belt --v-belt 1e-300
+# disk: D per forcing cycle of the 2-D oscillator with rotating forcing against the same
+# problem at eps = 2e-4 (docs/laws2d.md's comparison: the default law within 1e-4 at dt 0.005).
+"$sim" disk --dt 0.005 >"$tmp/disk.json" 2>"$tmp/err"
+within "disk D against its reference" "$tmp/disk.json" \
+    'relative_error < 1e-4 && dissipation_per_cycle > 10.01 && dissipation_per_cycle < 10.02'
+expect_output '"law": "quinn-nested"' disk --law quinn-nested --ref-eps 0
+expect_output '"reference": null' disk --ref-eps 0
+expect_output '^t,x1,x2,v1,v2,f1,f2$' disk --output trajectory
+expect_usage_error "coulomb, force-balance, quinn, quinn-lens, quinn-nested" disk --law lens
+expect_usage_error "--a" disk --a 0
+expect_usage_error "--ref-eps" disk --ref-eps -1
+expect_usage_error "--ref-eps" disk --ref-eps 1e-9
+expect_usage_error "--mu" disk --mu 1
+# --help gives each problem's defaults, from the values the parsers use.
+expect_output '^hold: +--mu \[0\.5385\] --mass \[2\.385\]' --help
+expect_output '^belt: +--fs \[1\] --fk \[0\.5\] --vs \[0\.05\]' --help
+expect_output '^disk: +--law \[quinn\] --a \[2\] --omega \[0\.5\]' --help
+
 # ---- Issue 11: no hang, exit codes as the usage says, no data lost ---------------------------
 # expect NAME COMMAND...: a check that passes when COMMAND (a shell snippet) succeeds.
 expect() {

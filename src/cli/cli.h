@@ -82,7 +82,21 @@ int cli_exact_summary(const struct cli_run *run, FILE *out);
  * (fricreg_structure.h); argv after the subcommand. Returns the exit status. */
 int cli_structure(int argc, char **argv, FILE *out);
 
+/* problems.c: `fricreg-sim hold|belt|disk`, the reference problems beyond the paper
+ * (src/problems/); argv after the subcommand. Returns the exit status, or -1 if command is
+ * none of them. */
+int cli_problem(const char *command, int argc, char **argv, FILE *out);
+/* Their options' defaults, for the usage text. */
+void cli_print_problem_defaults(FILE *out);
+
 /* reproduce.c: the paper's experiments into dir, and the comparison table on stdout. */
 int cli_reproduce(int argc, char **argv);
+/* One row of that table: figure, quantity, the paper's (or reference) value as text, ours,
+ * and the difference as text. */
+void cli_table_row(const char *figure, const char *quantity, const char *paper, double ours,
+                   const char *difference);
+/* reproduce_beyond.c: the problems beyond the paper (hold, belt, 2-D oscillator), a CSV each in
+ * dir and their table rows. Returns 0, or 1 (message printed). */
+int cli_reproduce_beyond(const char *dir);
 
 #endif

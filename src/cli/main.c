@@ -23,6 +23,13 @@ static void usage(FILE *out)
           "           [--ground-accel FILE] [--law L] [--eps E] --integrator newmark|hht|\n"
           "           central|<GSL stepper> [--alpha A] [--rtol R --atol A] --dt DT --t-end T\n"
           "           [--output summary|trajectory]   (docs/structural.md)\n"
+          "       fricreg-sim hold [--mu --mass --g --theta-deg --phi-deg --dt --eps --steps]\n"
+          "           [--tilt-rate DEG_PER_S]   block on an incline: creep (m/s), break-away\n"
+          "       fricreg-sim belt [--fs --fk --vs --delta --v-belt --dt --eps --cycles --ref-dt]\n"
+          "           Stribeck belt oscillator: limit-cycle period, amplitude vs event-driven\n"
+          "       fricreg-sim disk [--law quinn|quinn-lens|quinn-nested|coulomb|force-balance]\n"
+          "           [--a --omega --dt --eps --ref-eps]   2-D oscillator, D per forcing cycle\n"
+          "           (these three: --output summary|trajectory; docs/laws2d.md)\n"
           "       fricreg-sim --help | --version\n"
           "\n"
           "Common options (defaults in brackets):\n",
@@ -44,6 +51,7 @@ static void usage(FILE *out)
     fputs("            --partition paper|consistent  coupled contacts' near-stick law "
           "[consistent]\n",
           out);
+    cli_print_problem_defaults(out);
     fputs("Exit status: 0 success, 1 the simulation failed or its output could not be written\n"
           "(the message names the file), 2 bad option or value (run lengths and --out included).\n",
           out);
@@ -102,6 +110,9 @@ static int dispatch(int argc, char **argv)
         return cli_reproduce(argc - 2, argv + 2);
     if (strcmp(argv[1], "structure") == 0)
         return cli_structure(argc - 2, argv + 2, stdout);
+    int problem = cli_problem(argv[1], argc - 2, argv + 2, stdout);
+    if (problem >= 0)
+        return problem;
     struct cli_run run;
     if (strcmp(argv[1], "exact") == 0) {
         int status = cli_parse_exact(argc - 2, argv + 2, &run);

@@ -115,10 +115,12 @@ static double last_cycle_dissipation(const fricreg_sim *sim)
 }
 
 /* Every file reproduce writes into --out (out_file.h), the manifest last. */
-static const char *const outputs[] = {"fig5_unforced.csv",  "fig6_force.csv", "fig9_chain.csv",
-                                      "fig11_twoblock.csv", "plots.gp",       "fig5_unforced.png",
-                                      "fig6_force.png",     "fig9_chain.png", "fig11_twoblock.png"};
-#define N_CSV 5 /* the CSVs and plots.gp come first in outputs[] */
+static const char *const outputs[] = {
+    "fig5_unforced.csv",  "fig6_force.csv",       "fig9_chain.csv",      "fig11_twoblock.csv",
+    "hold_breakaway.csv", "belt_limit_cycle.csv", "disk_oscillator.csv", "plots.gp",
+    "fig5_unforced.png",  "fig6_force.png",       "fig9_chain.png",      "fig11_twoblock.png",
+    "hold_breakaway.png", "belt_limit_cycle.png", "disk_oscillator.png"};
+#define N_CSV 8 /* the CSVs and plots.gp come first in outputs[] */
 #define N_OUTPUTS (sizeof outputs / sizeof outputs[0])
 
 /* Opens dir/name for writing (a temporary file until cli_out_commit): o->f, or NULL. */
@@ -127,8 +129,8 @@ static FILE *open_in(const char *dir, const char *name, struct cli_out *o)
     return cli_out_open(o, dir, name) == 0 ? o->f : NULL;
 }
 
-static void table_row(const char *figure, const char *quantity, const char *paper, double ours,
-                      const char *difference)
+void cli_table_row(const char *figure, const char *quantity, const char *paper, double ours,
+                   const char *difference)
 {
     printf("%-7s %-44s %-16s %-12.6f %s\n", figure, quantity, paper, ours, difference);
 }
@@ -142,7 +144,7 @@ static void table_row_vs(const char *figure, const char *quantity, double paper,
         snprintf(d, sizeof d, "%+.2f%%", 100.0 * (ours - paper) / fabs(paper));
     else
         snprintf(d, sizeof d, "%+.1e", ours - paper);
-    table_row(figure, quantity, p, ours, d);
+    cli_table_row(figure, quantity, p, ours, d);
 }
 
 /* ---- Figure 5 and 6: the unforced oscillator -------------------------------------------- */
@@ -182,7 +184,7 @@ static int figure5(const char *dir)
     char q[64];
     for (int k = 0; k < 3; k++) {
         snprintf(q, sizeof q, "x(t=20), %s", label[k]);
-        table_row("Fig. 5", q, "drifts to 0", x_final[k], "(no stick at -0.75)");
+        cli_table_row("Fig. 5", q, "drifts to 0", x_final[k], "(no stick at -0.75)");
     }
     table_row_vs("Fig. 5", "x(t=20), (4) Quinn, dt 0.01, eps 2dt", PAPER_X_REST, x_final[3], 0);
     table_row_vs("Fig. 5", "x(t=20), (4) Quinn, vs exact rest -0.75", -0.75, x_final[3], 0);
@@ -222,8 +224,8 @@ static int figure6(const char *dir)
         }
         failed = cli_out_commit(&o) != 0;
         const double *last = s.rows + 4 * (s.n - 1);
-        table_row("Fig. 6", "f: total variation / net change, (4)", "1 (no chatter)",
-                  variation_ratio(&s, 2.5), "");
+        cli_table_row("Fig. 6", "f: total variation / net change, (4)", "1 (no chatter)",
+                      variation_ratio(&s, 2.5), "");
         table_row_vs("Fig. 6", "f - f_eq at t = 3.5, (4) (force balance)", 0.0, last[2] - last[3],
                      0);
     }
@@ -313,8 +315,10 @@ static int figure11(const char *dir)
     free(s.rows);
     if (cli_out_commit(&o) != 0)
         return 1;
-    table_row("Fig. 11", "stick fraction, lower interface, 4th cycle", "long sticks", stick[0], "");
-    table_row("Fig. 11", "stick fraction, upper interface, 4th cycle", "long sticks", stick[1], "");
+    cli_table_row("Fig. 11", "stick fraction, lower interface, 4th cycle", "long sticks", stick[0],
+                  "");
+    cli_table_row("Fig. 11", "stick fraction, upper interface, 4th cycle", "long sticks", stick[1],
+                  "");
     /* The same run under the consistent near-stick law (beyond the paper), beside it. */
     sim = run_partition(FRICREG_SYSTEM_TWOBLOCK, FRICREG_LAW_QUINN, FRICREG_PARTITION_CONSISTENT,
                         0.01, 0.0, CHAIN_CYCLES, NULL);
@@ -322,8 +326,8 @@ static int figure11(const char *dir)
         return 1;
     fricreg_sim_get_stick_fraction(sim, 2, stick);
     fricreg_sim_free(sim);
-    table_row("Fig. 11", "  the same, lower, consistent law", "(beyond paper)", stick[0], "");
-    table_row("Fig. 11", "  the same, upper, consistent law", "(beyond paper)", stick[1], "");
+    cli_table_row("Fig. 11", "  the same, lower, consistent law", "(beyond paper)", stick[0], "");
+    cli_table_row("Fig. 11", "  the same, upper, consistent law", "(beyond paper)", stick[1], "");
     return 0;
 }
 
@@ -351,7 +355,30 @@ static const char plot_script[] =
     "set output outdir.'fig11_twoblock.png'\n"
     "set title 'Fig. 11: two blocks on a belt, law (4), paper partition'\n"
     "set xlabel 't'; set ylabel 'relative velocity'\n"
-    "plot 'fig11_twoblock.csv' using 1:4 with lines, '' using 1:5 with lines\n";
+    "plot 'fig11_twoblock.csv' using 1:4 with lines, '' using 1:5 with lines\n"
+    /* beyond the paper (reproduce_beyond.c, docs/laws2d.md) */
+    "set output outdir.'hold_breakaway.png'\n"
+    "set title 'Hold: block on an incline tilted at 0.02 rad/s, 2-D law quinn, dt 1e-4'\n"
+    "set xlabel 'tilt (degrees)'; set ylabel 'speed |v| (m/s)'\n"
+    "set key top left\n"
+    "set arrow 1 from 28.3024641, graph 0 to 28.3024641, graph 1 nohead dashtype 2 lc 'black'\n"
+    "plot 'hold_breakaway.csv' using 2:3 with lines lw 2 title 'speed (exactly 0 until "
+    "break-away)', NaN with lines dashtype 2 lc 'black' title 'atan(mu) = 28.3025 deg'\n"
+    "unset arrow 1\n"
+    "set output outdir.'belt_limit_cycle.png'\n"
+    "set title 'Belt-driven Stribeck oscillator: 12th cycle, RK4 dt 0.0025, eps 0.005'\n"
+    "set xlabel 'x'; set ylabel 'dx/dt'\n"
+    "set key center\n"
+    "plot 'belt_limit_cycle.csv' using ($1 == 1 ? $3 : NaN):4 with lines lw 3 "
+    "title 'event-driven reference', '' using ($1 == 0 ? $3 : NaN):4 every 15 with points "
+    "pt 6 ps 1 title 'Stribeck law, regularized (every 15th step)'\n"
+    "set output outdir.'disk_oscillator.png'\n"
+    "set title '2-D oscillator, forcing along a rotating direction: one turn, law quinn, dt 0.01'\n"
+    "set key top right\n"
+    "set xlabel 'x1 (and f1)'; set ylabel 'x2 (and f2)'; set size ratio -1\n"
+    "plot 'disk_oscillator.csv' using 2:3 with lines title 'position x', '' using 4:5 with "
+    "lines title 'friction force f (|f| <= mu N = 1)'\n"
+    "set size noratio\n";
 
 /* Moves the PNGs gnuplot made in the temporary directory tmp (inside dir) to dir, and removes
  * tmp with whatever is left in it. Returns 0 or 1 (message printed). */
@@ -443,7 +470,8 @@ int cli_reproduce(int argc, char **argv)
     printf("fricreg %s: reproduction of Quinn (2004), RK4, paper's eps rules; files in %s\n\n",
            fricreg_version(), dir);
     printf("%-7s %-44s %-16s %-12s %s\n", "figure", "quantity", "paper", "ours", "difference");
-    int failed = figure5(dir) || figure6(dir) || figure9(dir) || figure11(dir);
+    int failed = figure5(dir) || figure6(dir) || figure9(dir) || figure11(dir) ||
+                 cli_reproduce_beyond(dir);
     if (failed)
         return CLI_EXIT_RUN;
     putchar('\n');

@@ -1,0 +1,474 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* problems.c — `fricreg-sim hold|belt|disk`: the reference problems of issue 13 beyond the
+ * paper (src/problems/, the same code the benchmarks run; docs/laws2d.md), each with a JSON
+ * summary of what it measures against its reference, or a CSV row per GSL step (2 dt).
+ * Every bad option is one line on stderr naming it, exit 2, nothing on stdout; a run that
+ * fails (or does not reach what it measures) exits 1. */
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "cli.h"
+#include "fricreg_disk.h"
+#include "problems.h"
+
+#define PI 3.14159265358979323846
+#define DEG (PI / 180.0)
+#define RK4_STABLE 2.78 /* RK4's real-axis stability bound, dt * lambda (src/integrator.c) */
+
+/* A numeric option: its name, where it goes, and its range. */
+enum range { ANY, POSITIVE, NONNEGATIVE };
+struct number_option {
+    const char *name;
+    double *slot;
+    enum range range;
+};
+
+static int parse_number(const struct number_option *o, const char *text)
+{
+    char *end = NULL;
+    errno = 0;
+    double value = strtod(text, &end);
+    if (end == text || *end != '\0')
+        return cli_usage_error(o->name, "not a number");
+    if (!isfinite(value) || (errno == ERANGE && fabs(value) == HUGE_VAL))
+        return cli_usage_error(o->name, "not a finite number");
+    if (o->range == POSITIVE && !(value > 0.0))
+        return cli_usage_error(o->name, "must be > 0");
+    if (o->range == NONNEGATIVE && !(value >= 0.0))
+        return cli_usage_error(o->name, "must be >= 0");
+    *o->slot = value;
+    return 0;
+}
+
+static int parse_output(const char *text, enum cli_output *output)
+{
+    if (strcmp(text, "summary") == 0)
+        *output = CLI_SUMMARY;
+    else if (strcmp(text, "trajectory") == 0)
+        *output = CLI_TRAJECTORY;
+    else
+        return cli_usage_error("--output", "expected summary or trajectory");
+    return 0;
+}
+
+/* Parses argv into the numeric options (each marked in given[] when set), --output and, when
+ * law != NULL, --law (a 2-D law's name). */
+static int parse_options(int argc, char **argv, const struct number_option opts[], size_t n,
+                         int given[], int *law, enum cli_output *output, const char *command)
+{
+    for (int k = 0; k < argc; k++) {
+        char *option = NULL, *value = NULL;
+        int status = cli_next_option(argc, argv, &k, &option, &value);
+        if (status != 0)
+            return status;
+        if (strcmp(option, "--output") == 0) {
+            status = parse_output(value, output);
+        } else if (law != NULL && strcmp(option, "--law") == 0) {
+            *law = fricreg_disk_law_from_name(value);
+            char names[256], what[300];
+            snprintf(what, sizeof what, "unknown 2-D law (%s)",
+                     cli_names(names, sizeof names, fricreg_disk_law_name, ", "));
+            status = *law != 0 ? 0 : cli_usage_error(option, what);
+        } else {
+            size_t j = 0;
+            while (j < n && strcmp(opts[j].name, option) != 0)
+                j++;
+            if (j == n) {
+                char what[96];
+                snprintf(what, sizeof what, "unknown option for %s (see fricreg-sim --help)",
+                         command);
+                return cli_usage_error(option, what);
+            }
+            status = parse_number(&opts[j], value);
+            given[j] = 1;
+        }
+        if (status != 0)
+            return status;
+    }
+    return 0;
+}
+
+/* A whole number of steps or cycles from lo to hi, given as a double option. */
+static int whole(const char *option, double value, double lo, double hi)
+{
+    if (value != floor(value) || value < lo || value > hi) {
+        char what[96];
+        snprintf(what, sizeof what, "must be a whole number from %g to %g", lo, hi);
+        return cli_usage_error(option, what);
+    }
+    return 0;
+}
+
+/* The stick zone's rate times dt must be inside RK4's stability interval (the library's own
+ * step guard, src/sim.c, for the 1-D law): 2 bound/(mass eps) dt <= 2.78. */
+static int stable_step(double bound_per_mass, double dt, double eps)
+{
+    double rate = 2.0 * bound_per_mass / eps * dt;
+    if (rate <= RK4_STABLE)
+        return 0;
+    char what[200];
+    snprintf(what, sizeof what,
+             "dt * 2 mun/(m eps) = %g exceeds RK4's %g: the stick zone is unstable; reduce dt "
+             "to %g or raise eps to %g",
+             rate, RK4_STABLE, dt * RK4_STABLE / rate, eps * rate / RK4_STABLE);
+    return cli_usage_error("--dt", what);
+}
+
+/* A failed run: exit 1 with the reason. */
+static int run_failed(const char *command, const char *what, int status)
+{
+    fprintf(stderr, "fricreg-sim: %s: %s: %s\n", command, what, fricreg_strerror(status));
+    return CLI_EXIT_RUN;
+}
+
+/* ---- Trajectories: rows to a temporary file, copied to out only when the run succeeded -- */
+
+struct csv {
+    FILE *f;
+};
+
+static int csv_row(void *user, double t, const double row[], size_t n)
+{
+    struct csv *c = user;
+    fprintf(c->f, "%.17g", t);
+    for (size_t i = 0; i < n; i++)
+        isnan(row[i]) ? fputc(',', c->f) : fprintf(c->f, ",%.17g", row[i]);
+    fputc('\n', c->f);
+    return ferror(c->f) != 0;
+}
+
+static int csv_open(struct csv *c, const char *header)
+{
+    c->f = tmpfile();
+    if (c->f == NULL) {
+        fprintf(stderr, "fricreg-sim: cannot create a temporary file\n");
+        return CLI_EXIT_RUN;
+    }
+    fprintf(c->f, "%s\n", header);
+    return 0;
+}
+
+/* Copies the rows to out and closes the temporary file; discards them if status != 0. */
+static int csv_close(struct csv *c, int status, FILE *out)
+{
+    int failed = status != 0 || fflush(c->f) != 0 || ferror(c->f);
+    rewind(c->f);
+    char chunk[1 << 16];
+    size_t got;
+    while (status == 0 && !failed && (got = fread(chunk, 1, sizeof chunk, c->f)) > 0)
+        failed = fwrite(chunk, 1, got, out) != got;
+    failed |= ferror(c->f);
+    fclose(c->f);
+    if (failed && status == 0) {
+        fprintf(stderr, "fricreg-sim: writing the trajectory: %s\n", strerror(errno));
+        return CLI_EXIT_RUN;
+    }
+    return status;
+}
+
+static double cpu_since(clock_t start)
+{
+    return (double)(clock() - start) / CLOCKS_PER_SEC;
+}
+
+/* ---- hold ------------------------------------------------------------------------------- */
+
+enum { H_MU, H_MASS, H_G, H_THETA, H_PHI, H_RATE, H_STEPS, H_DT, H_EPS, H_N };
+/* tests/test_hold.c's block; theta and eps 0: derived (parse_hold) */
+static const double hold_defaults[H_N] = {0.5385, 2.385, 9.81, 0.0, 35.4, 0.0, 1e7, 1e-4, 0.0};
+#define DISK_REF_EPS 2e-4
+
+static int parse_hold(int argc, char **argv, struct prob_hold *p, enum cli_output *output)
+{
+    double v[H_N];
+    memcpy(v, hold_defaults, sizeof v);
+    const struct number_option opts[H_N] = {
+        {"--mu", &v[H_MU], POSITIVE},       {"--mass", &v[H_MASS], POSITIVE},
+        {"--g", &v[H_G], POSITIVE},         {"--theta-deg", &v[H_THETA], NONNEGATIVE},
+        {"--phi-deg", &v[H_PHI], ANY},      {"--tilt-rate", &v[H_RATE], NONNEGATIVE},
+        {"--steps", &v[H_STEPS], POSITIVE}, {"--dt", &v[H_DT], POSITIVE},
+        {"--eps", &v[H_EPS], POSITIVE}};
+    int given[H_N] = {0};
+    int status = parse_options(argc, argv, opts, H_N, given, NULL, output, "hold");
+    if (status != 0)
+        return status;
+    if (!given[H_THETA]) /* inside the disk: tan(theta) = 0.8 mu, or 0.9 atan(mu) to tilt from */
+        v[H_THETA] = (v[H_RATE] > 0.0 ? 0.9 * atan(v[H_MU]) : atan(0.8 * v[H_MU])) / DEG;
+    if (v[H_THETA] >= 90.0)
+        return cli_usage_error("--theta-deg", "must be below 90");
+    if (!given[H_STEPS] && v[H_RATE] > 0.0) { /* to 90 degrees and a second more */
+        v[H_STEPS] = 2.0 * ceil(((90.0 - v[H_THETA]) / v[H_RATE] + 1.0) / (2.0 * v[H_DT]));
+        if (v[H_STEPS] > 1e9)
+            return cli_usage_error("--tilt-rate", "more than 10^9 steps to 90 deg: give --steps");
+    }
+    if ((status = whole("--steps", v[H_STEPS], 2, 1e9)) != 0)
+        return status;
+    if (fmod(v[H_STEPS], 2.0) != 0.0)
+        return cli_usage_error("--steps", "must be even (GSL's rk4 takes two classical steps)");
+    if (!given[H_EPS])
+        v[H_EPS] = 20.0 * v[H_DT]; /* tests/test_hold.c: the stick zone's rate 0.49 / step */
+    *p = (struct prob_hold){.mass = v[H_MASS],
+                            .g = v[H_G],
+                            .mu = v[H_MU],
+                            .theta0 = v[H_THETA] * DEG,
+                            .phi = v[H_PHI] * DEG,
+                            .kappa = v[H_RATE] * DEG,
+                            .dt = v[H_DT],
+                            .eps = v[H_EPS],
+                            .steps = v[H_STEPS]};
+    return stable_step(p->mu * p->g, p->dt, p->eps);
+}
+
+static void hold_summary(FILE *out, const struct prob_hold *p, const struct prob_hold_result *r,
+                         double cpu)
+{
+    fprintf(out, "{\"system\": \"hold\", \"law\": \"%s\", \"integrator\": \"rk4\", ",
+            fricreg_disk_law_name(FRICREG_DISK_QUINN));
+    fprintf(out, "\"dt\": %.17g, \"eps\": %.17g, \"steps\": %.0f, \"t\": %.17g, ", p->dt, p->eps,
+            r->steps, r->t);
+    fprintf(out, "\"mu\": %.17g, \"mass\": %.17g, \"g\": %.17g, ", p->mu, p->mass, p->g);
+    fprintf(out, "\"theta_deg\": %.17g, \"phi_deg\": %.17g, \"tilt_rate_deg\": %.17g, ",
+            p->theta0 / DEG, p->phi / DEG, p->kappa / DEG);
+    if (p->kappa == 0.0) /* tilting, the first speed above 0 is the break-away itself */
+        fprintf(out, "\"creep\": %.17g, ", r->creep);
+    fprintf(out, "\"displacement\": %.17g, \"slides\": %s", r->displacement,
+            r->broke_away ? "true" : "false");
+    if (p->kappa > 0.0) {
+        double exact = atan(p->mu), mid = 0.5 * (r->theta_rest + r->theta_moving);
+        fprintf(out, ", \"breakaway_deg\": %.17g, \"bracket_deg\": [%.17g, %.17g]", mid / DEG,
+                r->theta_rest / DEG, r->theta_moving / DEG);
+        fprintf(out, ", \"exact_deg\": %.17g, \"error_deg\": %.17g, \"bound_deg\": %.17g",
+                exact / DEG, (mid - exact) / DEG, p->kappa * p->dt / DEG);
+    }
+    fprintf(out, ", \"cpu_seconds\": %.6f}\n", cpu);
+}
+
+static int cli_hold(int argc, char **argv, FILE *out)
+{
+    struct prob_hold p;
+    struct prob_hold_result r;
+    enum cli_output output = CLI_SUMMARY;
+    int status = parse_hold(argc, argv, &p, &output);
+    if (status != 0)
+        return status;
+    struct csv c;
+    if (output == CLI_TRAJECTORY && (status = csv_open(&c, "t,theta,x1,x2,v1,v2")) != 0)
+        return status;
+    clock_t start = clock();
+    int run = prob_hold_run(&p, output == CLI_TRAJECTORY ? csv_row : NULL, &c, &r);
+    double cpu = cpu_since(start);
+    if (run == FRICREG_EDIVERGED) {
+        fprintf(stderr, "fricreg-sim: hold: no break-away within %.0f steps\n", p.steps);
+        status = CLI_EXIT_RUN;
+    } else if (run != FRICREG_OK) {
+        status = run_failed("hold", "the run", run);
+    }
+    if (output == CLI_TRAJECTORY)
+        return csv_close(&c, status, out);
+    if (status == 0)
+        hold_summary(out, &p, &r, cpu);
+    return status;
+}
+
+/* ---- belt ------------------------------------------------------------------------------- */
+
+enum { B_FS, B_FK, B_VS, B_DELTA, B_V, B_DT, B_EPS, B_CYCLES, B_REF_DT, B_N };
+
+static int parse_belt(int argc, char **argv, struct prob_belt *p, enum cli_output *output)
+{
+    const struct prob_belt d = prob_belt_defaults();
+    double v[B_N] = {d.fs, d.fk, d.vs, d.delta, d.v_belt, d.dt, 0.0, d.cycles, d.ref_dt};
+    const struct number_option opts[B_N] = {
+        {"--fs", &v[B_FS], POSITIVE},        {"--fk", &v[B_FK], NONNEGATIVE},
+        {"--vs", &v[B_VS], POSITIVE},        {"--delta", &v[B_DELTA], POSITIVE},
+        {"--v-belt", &v[B_V], POSITIVE},     {"--dt", &v[B_DT], POSITIVE},
+        {"--eps", &v[B_EPS], POSITIVE},      {"--cycles", &v[B_CYCLES], POSITIVE},
+        {"--ref-dt", &v[B_REF_DT], POSITIVE}};
+    int given[B_N] = {0};
+    int status = parse_options(argc, argv, opts, B_N, given, NULL, output, "belt");
+    if (status != 0)
+        return status;
+    if (v[B_FK] > v[B_FS])
+        return cli_usage_error("--fk", "kinetic above static: must be <= --fs");
+    if ((status = whole("--cycles", v[B_CYCLES], 2, 1000)) != 0)
+        return status;
+    *p = (struct prob_belt){v[B_FS], v[B_FK],  v[B_VS],          v[B_DELTA], v[B_V],
+                            v[B_DT], v[B_EPS], (int)v[B_CYCLES], v[B_REF_DT]};
+    if (!given[B_EPS])
+        p->eps = 2.0 * p->dt; /* the paper's rule */
+    /* a cycle is at most a stick of 2 fs/V and about a natural period of slip: a run of more
+     * than 1e9 steps is refused rather than left to run for hours */
+    double length = (p->cycles + 1) * (2.0 * PI + 2.0 * p->fs / p->v_belt);
+    if (length / p->dt > 1e9)
+        return cli_usage_error("--dt", "more than 10^9 steps over the cycles");
+    if (length / p->ref_dt > 1e9)
+        return cli_usage_error("--ref-dt", "more than 10^9 steps over the cycles");
+    return stable_step(p->fs, p->dt, p->eps);
+}
+
+static void cycle_fields(FILE *out, const struct prob_belt_cycle *c)
+{
+    fprintf(out, "\"period\": %.17g, \"amplitude\": %.17g, \"x_min\": %.17g, \"x_max\": %.17g",
+            c->period, c->amplitude, c->x_min, c->x_max);
+}
+
+static void belt_summary(FILE *out, const struct prob_belt *p, const struct prob_belt_cycle *c,
+                         const struct prob_belt_cycle *ref, double cpu)
+{
+    fprintf(out, "{\"system\": \"belt\", \"law\": \"stribeck\", \"integrator\": \"rk4\", ");
+    fprintf(out, "\"dt\": %.17g, \"eps\": %.17g, \"steps\": %.0f, \"t\": %.17g, ", p->dt, p->eps,
+            c->steps, c->t);
+    fprintf(out, "\"fs\": %.17g, \"fk\": %.17g, \"vs\": %.17g, \"delta\": %.17g, ", p->fs, p->fk,
+            p->vs, p->delta);
+    fprintf(out, "\"v_belt\": %.17g, \"cycle\": %d, ", p->v_belt, p->cycles);
+    cycle_fields(out, c);
+    fprintf(out, ", \"reference\": {\"method\": \"event-driven\", \"dt\": %.17g, ", p->ref_dt);
+    cycle_fields(out, ref);
+    fprintf(out, "}, \"period_error\": %.17g, \"amplitude_error\": %.17g",
+            fabs(c->period / ref->period - 1.0), fabs(c->amplitude / ref->amplitude - 1.0));
+    fprintf(out, ", \"cpu_seconds\": %.6f}\n", cpu);
+}
+
+static int cli_belt(int argc, char **argv, FILE *out)
+{
+    struct prob_belt p;
+    struct prob_belt_cycle ref, c;
+    enum cli_output output = CLI_SUMMARY;
+    int status = parse_belt(argc, argv, &p, &output);
+    if (status != 0)
+        return status;
+    clock_t start = clock();
+    int run = prob_belt_reference(&p, NULL, NULL, &ref);
+    if (run != FRICREG_OK)
+        return run_failed("belt", "the event-driven reference found no stick-slip cycle", run);
+    struct csv csv;
+    if (output == CLI_TRAJECTORY && (status = csv_open(&csv, "t,x,v,f")) != 0)
+        return status;
+    run = prob_belt_regularized(&p, 0.5 * (ref.x_min + ref.x_max),
+                                output == CLI_TRAJECTORY ? csv_row : NULL, &csv, &c);
+    double cpu = cpu_since(start);
+    if (run != FRICREG_OK)
+        status = run_failed("belt", "the regularized run found no limit cycle", run);
+    if (output == CLI_TRAJECTORY)
+        return csv_close(&csv, status, out);
+    if (status == 0)
+        belt_summary(out, &p, &c, &ref, cpu);
+    return status;
+}
+
+/* ---- disk ------------------------------------------------------------------------------- */
+
+enum { D_A, D_OMEGA, D_DT, D_EPS, D_REF_EPS, D_N };
+
+static int parse_disk(int argc, char **argv, struct prob_disk *p, double *ref_eps,
+                      enum cli_output *output)
+{
+    const struct prob_disk d = prob_disk_defaults();
+    double v[D_N] = {d.a, d.omega, d.dt, 0.0, DISK_REF_EPS};
+    const struct number_option opts[D_N] = {{"--a", &v[D_A], POSITIVE},
+                                            {"--omega", &v[D_OMEGA], POSITIVE},
+                                            {"--dt", &v[D_DT], POSITIVE},
+                                            {"--eps", &v[D_EPS], POSITIVE},
+                                            {"--ref-eps", &v[D_REF_EPS], NONNEGATIVE}};
+    int given[D_N] = {0}, law = d.law;
+    int status = parse_options(argc, argv, opts, D_N, given, &law, output, "disk");
+    if (status != 0)
+        return status;
+    *p = d;
+    p->law = law, p->a = v[D_A], p->omega = v[D_OMEGA], p->dt = v[D_DT];
+    p->eps = given[D_EPS] ? v[D_EPS] : 2.0 * p->dt; /* the paper's rule */
+    *ref_eps = v[D_REF_EPS];
+    double turns = (p->turns_transient + 1) * 2.0 * PI * p->cycles_per_turn / p->omega;
+    if (turns / p->dt > 1e9)
+        return cli_usage_error("--dt", "more than 10^9 steps over the four turns");
+    if (*ref_eps > 0.0 && turns / (0.5 * *ref_eps) > 1e9)
+        return cli_usage_error("--ref-eps", "more than 10^9 steps over the four turns");
+    return stable_step(1.0, p->dt, p->eps);
+}
+
+static void disk_summary(FILE *out, const struct prob_disk *p, const struct prob_disk_result *r,
+                         double ref_eps, const struct prob_disk_result *ref, double cpu)
+{
+    fprintf(out, "{\"system\": \"disk\", \"law\": \"%s\", \"integrator\": \"rk4\", ",
+            fricreg_disk_law_name(p->law));
+    fprintf(out, "\"dt\": %.17g, \"eps\": %.17g, \"steps\": %.0f, \"t\": %.17g, ", p->dt, p->eps,
+            r->steps, r->t);
+    fprintf(out, "\"a\": %.17g, \"omega\": %.17g, \"mun\": 1, \"period\": %.17g, ", p->a, p->omega,
+            2.0 * PI / p->omega);
+    fprintf(out, "\"cycles_per_turn\": %d, \"turns_transient\": %d, ", p->cycles_per_turn,
+            p->turns_transient);
+    fprintf(out, "\"dissipation_per_cycle\": %.17g, \"band_fraction\": %.17g, \"reference\": ",
+            r->dissipation, r->band);
+    if (ref_eps > 0.0) {
+        fprintf(out, "{\"eps\": %.17g, \"dt\": %.17g, \"dissipation_per_cycle\": %.17g", ref_eps,
+                0.5 * ref_eps, ref->dissipation);
+        fprintf(out, ", \"band_fraction\": %.17g}, \"relative_error\": %.17g", ref->band,
+                fabs(r->dissipation / ref->dissipation - 1.0));
+    } else {
+        fprintf(out, "null, \"relative_error\": null");
+    }
+    fprintf(out, ", \"cpu_seconds\": %.6f}\n", cpu);
+}
+
+static int cli_disk(int argc, char **argv, FILE *out)
+{
+    struct prob_disk p;
+    struct prob_disk_result r, ref = {0};
+    double ref_eps;
+    enum cli_output output = CLI_SUMMARY;
+    int status = parse_disk(argc, argv, &p, &ref_eps, &output);
+    if (status != 0)
+        return status;
+    struct csv c;
+    if (output == CLI_TRAJECTORY && (status = csv_open(&c, "t,x1,x2,v1,v2,f1,f2")) != 0)
+        return status;
+    clock_t start = clock();
+    int run = prob_disk_run(&p, output == CLI_TRAJECTORY ? csv_row : NULL, &c, &r);
+    if (run != FRICREG_OK)
+        status = run_failed("disk", "the run", run);
+    if (output == CLI_TRAJECTORY)
+        return csv_close(&c, status, out);
+    if (status == 0 && ref_eps > 0.0) { /* the same problem at a tiny eps, dt = eps/2 */
+        struct prob_disk q = p;
+        q.eps = ref_eps, q.dt = 0.5 * ref_eps;
+        run = prob_disk_run(&q, NULL, NULL, &ref);
+        if (run != FRICREG_OK)
+            status = run_failed("disk", "the reference run", run);
+    }
+    if (status == 0)
+        disk_summary(out, &p, &r, ref_eps, &ref, cpu_since(start));
+    return status;
+}
+
+void cli_print_problem_defaults(FILE *out)
+{
+    const double *h = hold_defaults;
+    const struct prob_belt b = prob_belt_defaults();
+    const struct prob_disk d = prob_disk_defaults();
+    fprintf(out,
+            "hold:       --mu [%g] --mass [%g] --g [%g] --phi-deg [%g] --dt [%g] --eps [20 dt]\n"
+            "            --theta-deg [atan(0.8 mu); with --tilt-rate 0.9 atan(mu)]\n"
+            "            --steps [%g; with --tilt-rate to 90 deg] --tilt-rate [0 deg/s: fixed]\n",
+            h[H_MU], h[H_MASS], h[H_G], h[H_PHI], h[H_DT], h[H_STEPS]);
+    fprintf(out,
+            "belt:       --fs [%g] --fk [%g] --vs [%g] --delta [%g] --v-belt [%g] --dt [%g]\n"
+            "            --eps [2 dt] --cycles [%d] --ref-dt [%g]\n",
+            b.fs, b.fk, b.vs, b.delta, b.v_belt, b.dt, b.cycles, b.ref_dt);
+    fprintf(out,
+            "disk:       --law [%s] --a [%g] --omega [%g] --dt [%g] --eps [2 dt] --ref-eps [%g]\n",
+            fricreg_disk_law_name(d.law), d.a, d.omega, d.dt, DISK_REF_EPS);
+}
+
+int cli_problem(const char *command, int argc, char **argv, FILE *out)
+{
+    if (strcmp(command, "hold") == 0)
+        return cli_hold(argc, argv, out);
+    if (strcmp(command, "belt") == 0)
+        return cli_belt(argc, argv, out);
+    if (strcmp(command, "disk") == 0)
+        return cli_disk(argc, argv, out);
+    return -1;
+}

@@ -1,0 +1,182 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* reproduce_beyond.c — the part of `fricreg-sim reproduce` beyond the paper: the reference
+ * problems of issue 13 (src/problems/, docs/laws2d.md), one CSV each beside the paper's
+ * figures, and their rows in the table. Small runs: a few seconds in all. */
+#include <math.h>
+#include <stdlib.h>
+
+#include "out_file.h"
+
+#include "cli.h"
+#include "problems.h"
+
+#define PI 3.14159265358979323846
+#define DEG (PI / 180.0)
+/* D per forcing cycle of the 2-D oscillator, law quinn at eps = 2e-5, dt = 1e-5
+ * (fricreg-bench-disk; docs/laws2d.md). */
+#define DISK_D_REFERENCE 10.016060881132
+
+/* Rows of a curve number and up to 5 columns, every `every`-th observation kept. */
+struct rows {
+    size_t n, cap, seen, every;
+    int curve; /* column 0 of each row */
+    double (*data)[6];
+};
+
+static int keep(struct rows *r, const double v[5])
+{
+    if (r->seen++ % r->every != 0)
+        return 0;
+    if (r->n == r->cap) {
+        size_t cap = r->cap ? 2 * r->cap : 1024;
+        double(*data)[6] = realloc(r->data, cap * sizeof *data);
+        if (data == NULL)
+            return 1;
+        r->data = data, r->cap = cap;
+    }
+    r->data[r->n][0] = r->curve;
+    for (int k = 0; k < 5; k++)
+        r->data[r->n][k + 1] = v[k];
+    r->n++;
+    return 0;
+}
+
+/* hold: t, the tilt in degrees and the speed |v|. */
+static int hold_row(void *user, double t, const double row[], size_t n)
+{
+    (void)n;
+    const double v[5] = {t, row[0] / DEG, hypot(row[3], row[4]), 0.0, 0.0};
+    return keep(user, v);
+}
+
+/* belt: t, x, x'. */
+static int belt_row(void *user, double t, const double row[], size_t n)
+{
+    (void)n;
+    const double v[5] = {t, row[0], row[1], 0.0, 0.0};
+    return keep(user, v);
+}
+
+/* disk: t, x1, x2, f1, f2. */
+static int disk_row(void *user, double t, const double row[], size_t n)
+{
+    (void)n;
+    const double v[5] = {t, row[0], row[1], row[4], row[5]};
+    return keep(user, v);
+}
+
+/* Writes rows (columns first..last of each) under header into dir/name. Returns 0 or 1. */
+static int write_rows(const char *dir, const char *name, const char *header,
+                      const struct rows *const sets[], int nsets, int first, int last)
+{
+    struct cli_out o;
+    if (cli_out_open(&o, dir, name) != 0)
+        return 1;
+    fprintf(o.f, "%s\n", header);
+    for (int s = 0; s < nsets; s++)
+        for (size_t i = 0; i < sets[s]->n; i++) {
+            for (int k = first; k <= last; k++)
+                fprintf(o.f, k == first ? "%.10g" : ",%.10g", sets[s]->data[i][k]);
+            fputc('\n', o.f);
+        }
+    return cli_out_commit(&o);
+}
+
+static int failed(const char *what, int status)
+{
+    fprintf(stderr, "fricreg-sim: reproduce: %s: %s\n", what, fricreg_strerror(status));
+    return 1;
+}
+
+/* The block on the incline (tests/test_hold.c's): creep from rest inside the disk, then the
+ * incline tilted at 0.02 rad/s from 0.9 atan(mu) through the break-away. */
+static int hold(const char *dir)
+{
+    struct prob_hold p = {.mass = 2.385,
+                          .g = 9.81,
+                          .mu = 0.5385,
+                          .phi = 0.6180339887,
+                          .dt = 1e-4,
+                          .eps = 2e-3,
+                          .steps = 100000};
+    struct prob_hold_result r;
+    p.theta0 = atan(0.8 * p.mu);
+    int status = prob_hold_run(&p, NULL, NULL, &r);
+    if (status != FRICREG_OK)
+        return failed("hold", status);
+    double creep = r.creep;
+    p.theta0 = 0.9 * atan(p.mu), p.kappa = 0.02, p.steps = 1e6;
+    struct rows rows = {.every = 5, .curve = -1};
+    status = prob_hold_run(&p, hold_row, &rows, &r);
+    const struct rows *sets[1] = {&rows};
+    int bad = status != FRICREG_OK
+                  ? failed("hold", status)
+                  : write_rows(dir, "hold_breakaway.csv", "t,theta_deg,speed", sets, 1, 1, 3);
+    free(rows.data);
+    if (bad)
+        return 1;
+    double angle = 0.5 * (r.theta_rest + r.theta_moving) / DEG, exact = atan(p.mu) / DEG;
+    char paper[32], d[48];
+    snprintf(paper, sizeof paper, "%.6f atan mu", exact);
+    snprintf(d, sizeof d, "%+.1e (<= kappa dt %.1e)", angle - exact, p.kappa * p.dt / DEG);
+    cli_table_row("hold", "creep (m/s), tan(theta) = 0.8 mu, 1e5 steps", "0 (exact stick)", creep,
+                  "");
+    cli_table_row("hold", "break-away tilt (deg), 0.02 rad/s", paper, angle, d);
+    return 0;
+}
+
+/* The belt-driven Stribeck oscillator at dt 0.0025, eps 0.005: its 12th cycle in the phase
+ * plane beside the event-driven reference's. */
+static int belt(const char *dir)
+{
+    struct prob_belt p = prob_belt_defaults();
+    struct prob_belt_cycle ref, c;
+    struct rows reg = {.every = 1, .curve = 0}, exact = {.every = 50, .curve = 1};
+    p.dt = 0.0025, p.eps = 0.005;
+    int status = prob_belt_reference(&p, belt_row, &exact, &ref);
+    if (status == FRICREG_OK)
+        status = prob_belt_regularized(&p, 0.5 * (ref.x_min + ref.x_max), belt_row, &reg, &c);
+    const struct rows *sets[2] = {&exact, &reg};
+    int bad = status != FRICREG_OK
+                  ? failed("belt", status)
+                  : write_rows(dir, "belt_limit_cycle.csv", "curve,t,x,v", sets, 2, 0, 3);
+    free(reg.data);
+    free(exact.data);
+    if (bad)
+        return 1;
+    char p_ref[32], a_ref[32], dp[32], da[32];
+    snprintf(p_ref, sizeof p_ref, "%.6f (ref.)", ref.period);
+    snprintf(a_ref, sizeof a_ref, "%.6f (ref.)", ref.amplitude);
+    snprintf(dp, sizeof dp, "%+.1e rel.", c.period / ref.period - 1.0);
+    snprintf(da, sizeof da, "%+.1e rel.", c.amplitude / ref.amplitude - 1.0);
+    cli_table_row("belt", "Stribeck limit cycle: period, dt 0.0025", p_ref, c.period, dp);
+    cli_table_row("belt", "Stribeck limit cycle: amplitude, dt 0.0025", a_ref, c.amplitude, da);
+    return 0;
+}
+
+/* The 2-D oscillator with rotating forcing, law quinn at dt 0.01: its path and its friction
+ * force in the plane over the measured turn. */
+static int disk(const char *dir)
+{
+    struct prob_disk p = prob_disk_defaults();
+    struct prob_disk_result r;
+    struct rows rows = {.every = 2, .curve = -1};
+    int status = prob_disk_run(&p, disk_row, &rows, &r);
+    const struct rows *sets[1] = {&rows};
+    int bad = status != FRICREG_OK
+                  ? failed("disk", status)
+                  : write_rows(dir, "disk_oscillator.csv", "t,x1,x2,f1,f2", sets, 1, 1, 5);
+    free(rows.data);
+    if (bad)
+        return 1;
+    char ref[32], d[32];
+    snprintf(ref, sizeof ref, "%.6f (ref.)", DISK_D_REFERENCE);
+    snprintf(d, sizeof d, "%+.1e rel.", r.dissipation / DISK_D_REFERENCE - 1.0);
+    cli_table_row("2-D", "D/cycle, rotating forcing, quinn, dt 0.01", ref, r.dissipation, d);
+    return 0;
+}
+
+int cli_reproduce_beyond(const char *dir)
+{
+    return hold(dir) || belt(dir) || disk(dir);
+}
