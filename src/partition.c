@@ -158,7 +158,10 @@ static void eval_diagonal(fricreg_ctx *ctx, const double zdot[], const double a_
  * (|a_free,i| + sum_j |W_ij| mun_j)/W_ii + 2 mun_i (the band's shift, and |f_j| <= mun_j),
  * within FEQ_RANGE. Bounding with the slipping forces only let the consistent law's QP
  * form W f with near-stick forces at their bounds, which overflowed for W near DBL_MAX and
- * returned forces that are not the law (tests/fuzz/regressions/ctx/). */
+ * returned forces that are not the law (tests/fuzz/regressions/ctx/). The same sums in
+ * acceleration units, with the QP's shift W_ii c_i mun_i (|c_i| < 2), are bounded by
+ * FEQ_RANGE too: within the force range, W = [DBL_MAX] made b_i = W_ii c_i mun_i Inf and the
+ * force wrong (fuzz finding). */
 static int check_feq_range(fricreg_ctx *ctx, const double a_free[])
 {
     size_t m = ctx->m;
@@ -169,11 +172,13 @@ static int check_feq_range(fricreg_ctx *ctx, const double a_free[])
         for (size_t j = 0; j < m; j++)
             load += fabs(row[j]) * ctx->bound[j];
         double reach = load / row[i] + 2.0 * ctx->bound[i];
-        if (!(reach <= FEQ_RANGE))
+        double acceleration = load + 2.0 * row[i] * ctx->bound[i];
+        if (!(reach <= FEQ_RANGE && acceleration <= FEQ_RANGE))
             return fr_fail(ctx, FRICREG_ENONFINITE,
-                           "eval: contact %zu: f_eq up to (|a_free| + |W| mun)/W_ii = %g is beyond "
-                           "the range of the near-stick solve (%g)",
-                           i, reach, FEQ_RANGE);
+                           "eval: contact %zu: f_eq up to (|a_free| + |W| mun)/W_ii = %g, or the"
+                           " accelerations up to |a_free| + |W| mun + 2 W_ii mun = %g, beyond the"
+                           " range of the near-stick solve (%g)",
+                           i, reach, acceleration, FEQ_RANGE);
     }
     return FRICREG_OK;
 }
