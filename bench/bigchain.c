@@ -46,7 +46,7 @@ static int one_n(size_t n, FILE *csv)
     struct row rows[8];
     int nr = 0;
 
-    struct bench_sim_point ref_pt = {&p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt, 0.0, 0.0, 0, 3};
+    struct bench_sim_point ref_pt = {&p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt, 0.0, 0.0, 0, 3, 0};
     double t0 = bench_cpu_seconds();
     if (bench_sim_run(&ref_pt, &run) != FRICREG_OK) {
         fprintf(stderr, "fricreg-bench-bigchain: n = %zu: the reference failed: %s\n", n, run.msg);
@@ -64,7 +64,7 @@ static int one_n(size_t n, FILE *csv)
              run.flagged ? " (flagged: no clean order)" : "");
     for (int k = 0; k < 2; k++) {
         struct bench_sim_point pt = {
-            &p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt / (1 << k), 0.0, 0.0, 0, 0};
+            &p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt / (1 << k), 0.0, 0.0, 0, 0, 0};
         t0 = bench_cpu_seconds();
         bench_sim_run(&pt, &run);
         record(&rows[nr++], "rk4/quinn(4)", dt / (1 << k), t0, &run, ref);
