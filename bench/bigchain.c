@@ -6,18 +6,23 @@
  * three levels (fricreg_sim_run_extrapolated, dt halving with eps under the paper's rule,
  * from the largest step the guard accepts, dt = 0.35/n), with its own error estimate. Then
  * each method's error and CPU seconds (one run each: these take seconds to minutes): fricreg
- * RK4 at dt = 0.35/n and 0.175/n, and CVODE Adams at rtol 1e-4, 1e-6, 1e-8 (BDF's dense
- * Newton on 2n + 1 unknowns is left out: O(n^3) per Jacobian). Writes bigchain.csv. Not in
- * bench/run.sh by default (FRICREG_BENCH_BIG=1 runs it): n = 1000 takes about a minute of
- * CPU, n = 10^4 hours. */
+ * RK4 at dt = 0.35/n and 0.175/n; the implicit prototype of chain_implicit.c (Newmark, Newton
+ * on a tridiagonal matrix, law (4) at eps = 1e-4) at dt = 1e-3 and 2.5e-4; and CVODE Adams at
+ * rtol 1e-4, 1e-6, 1e-8 (only 1e-6 above n = 1000), each stopped at a CPU cap of CVODE_CAP
+ * seconds (the message says how far it got). BDF's dense Newton on 2n + 1 unknowns is left
+ * out: O(n^3) per Jacobian. Writes bigchain.csv. Not in bench/run.sh by default
+ * (FRICREG_BENCH_BIG=1 runs it): n = 1000 takes about a minute of CPU, n = 10^4 half an hour. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
 #include "bench.h"
+#include "chain_implicit.h"
 #ifdef FRICREG_BENCH_CVODE
 #include "event_driven.h"
 #endif
+
+#define CVODE_CAP 600.0 /* CPU seconds per CVODE run */
 
 struct row {
     const char *method;
@@ -43,7 +48,7 @@ static int one_n(size_t n, FILE *csv)
     struct bench_problem p = {"chain_big", "chain", FRICREG_SYSTEM_CHAIN, 0.25, 0.5, n, 1, 1e-3, 1};
     double dt = 0.35 / (double)n; /* dt * 2n = 0.7 <= 1/sqrt(2): the guard's bound */
     struct bench_run run;
-    struct row rows[8];
+    struct row rows[12];
     int nr = 0;
 
     struct bench_sim_point ref_pt = {&p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt, 0.0, 0.0, 0, 3, 0};
@@ -69,10 +74,23 @@ static int one_n(size_t n, FILE *csv)
         bench_sim_run(&pt, &run);
         record(&rows[nr++], "rk4/quinn(4)", dt / (1 << k), t0, &run, ref);
     }
+    static const double implicit_dts[2] = {1e-3, 2.5e-4};
+    for (int k = 0; k < 2; k++) {
+        struct chain_implicit_opts o = {n, p.a, p.omega, 1e-4, implicit_dts[k], 0.0, 1e-12};
+        t0 = bench_cpu_seconds();
+        chain_implicit_run(&o, &run);
+        record(&rows[nr++], "newmark-tridiag/quinn(4)", implicit_dts[k], t0, &run, ref);
+        snprintf(
+            rows[nr - 1].msg, sizeof rows[nr - 1].msg,
+            "prototype (bench/chain_implicit.c), eps = 1e-4, %.2f Newton iterations a step%s%.100s",
+            run.rhs_evals / run.steps, run.status == FRICREG_OK ? "" : ": ", run.msg);
+    }
 #ifdef FRICREG_BENCH_CVODE
     static const double rtols[3] = {1e-4, 1e-6, 1e-8};
     for (int k = 0; k < 3; k++) {
-        struct ed_point ep = {&p, ED_ADAMS, rtols[k]};
+        if (n > 1000 && rtols[k] != 1e-6)
+            continue;
+        struct ed_point ep = {&p, ED_ADAMS, rtols[k], CVODE_CAP};
         t0 = bench_cpu_seconds();
         ed_run(&ep, &run);
         record(&rows[nr++], "cvode-adams/event-driven", rtols[k], t0, &run, ref);

@@ -115,7 +115,7 @@ static void event_driven_check(const struct bench_problem *p, const struct bench
         double rtol;
     } runs[] = {{ED_BDF, 1e-10}, {ED_ADAMS, 1e-10}, {ED_ADAMS, 1e-12}};
     for (size_t k = 0; k < sizeof runs / sizeof runs[0]; k++) {
-        struct ed_point pt = {p, runs[k].method, runs[k].rtol};
+        struct ed_point pt = {p, runs[k].method, runs[k].rtol, 0.0};
         struct bench_run run;
         double t0 = bench_cpu_seconds();
         if (ed_run(&pt, &run) != FRICREG_OK) {

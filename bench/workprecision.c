@@ -181,7 +181,7 @@ static void run_point(const struct bench_problem *p, const struct method *m, int
     double t;
     if (m->kind == EVENT) {
 #ifdef FRICREG_BENCH_CVODE
-        struct ed_point ep = {p, m->ed_method, tols[k]};
+        struct ed_point ep = {p, m->ed_method, tols[k], 0.0};
         t = bench_time_once(ed_run, &ep, &run);
 #else
         return;
