@@ -82,7 +82,7 @@ static int one_n(size_t n, FILE *csv)
         record(&rows[nr++], "newmark-tridiag/quinn(4)", implicit_dts[k], t0, &run, ref);
         snprintf(
             rows[nr - 1].msg, sizeof rows[nr - 1].msg,
-            "prototype (bench/chain_implicit.c), eps = 1e-4, %.2f Newton iterations a step%s%.100s",
+            "prototype (bench/chain_implicit.c); eps = 1e-4; %.2f Newton iterations a step%s%.100s",
             run.rhs_evals / run.steps, run.status == FRICREG_OK ? "" : ": ", run.msg);
     }
 #ifdef FRICREG_BENCH_CVODE

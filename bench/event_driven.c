@@ -163,7 +163,7 @@ static int integrate(void *mem, N_Vector yv, struct ed_sys *s, int newton, int c
         while (t < boundary) {
             if (cpu_cap > 0.0 && bench_cpu_seconds() - cpu_start > cpu_cap) {
                 snprintf(out->msg, sizeof out->msg,
-                         "stopped at the CPU cap of %g s, at t = %.4g of %.4g (%g events)", cpu_cap,
+                         "stopped at the CPU cap of %g s at t = %.4g of %.4g (%g events)", cpu_cap,
                          (double)t, cycle * T, out->events);
                 add_counts(mem, newton, out);
                 return FRICREG_EINTEGRATOR;
