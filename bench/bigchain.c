@@ -7,7 +7,8 @@
  * from the largest step the guard accepts, dt = 0.35/n), with its own error estimate. Then
  * each method's error and CPU seconds (one run each: these take seconds to minutes): fricreg
  * RK4 at dt = 0.35/n and 0.175/n; the implicit prototype of chain_implicit.c (Newmark, Newton
- * on a tridiagonal matrix, law (4) at eps = 1e-4) at dt = 1e-3 and 2.5e-4; and CVODE Adams at
+ * on a tridiagonal matrix, law (4) at eps = 1e-4) at dt = 1e-3 and 2.5e-4; the explicit
+ * central differences of chain_explicit.c at dt = 0.35/n and 0.9/n; and CVODE Adams at
  * rtol 1e-4, 1e-6, 1e-8 (only 1e-6 above n = 1000), each stopped at a CPU cap of CVODE_CAP
  * seconds (the message says how far it got). BDF's dense Newton on 2n + 1 unknowns is left
  * out: O(n^3) per Jacobian. Writes bigchain.csv. Not in bench/run.sh by default
@@ -17,6 +18,7 @@
 #include <stdlib.h>
 
 #include "bench.h"
+#include "chain_explicit.h"
 #include "chain_implicit.h"
 #ifdef FRICREG_BENCH_CVODE
 #include "event_driven.h"
@@ -48,7 +50,7 @@ static int one_n(size_t n, FILE *csv)
     struct bench_problem p = {"chain_big", "chain", FRICREG_SYSTEM_CHAIN, 0.25, 0.5, n, 1, 1e-3, 1};
     double dt = 0.35 / (double)n; /* dt * 2n = 0.7 <= 1/sqrt(2): the guard's bound */
     struct bench_run run;
-    struct row rows[12];
+    struct row rows[16];
     int nr = 0;
 
     struct bench_sim_point ref_pt = {&p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt, 0.0, 0.0, 0, 3, 0};
@@ -84,6 +86,19 @@ static int one_n(size_t n, FILE *csv)
             rows[nr - 1].msg, sizeof rows[nr - 1].msg,
             "prototype (bench/chain_implicit.c); eps = 1e-4; %.2f Newton iterations a step%s%.100s",
             run.rhs_evals / run.steps, run.status == FRICREG_OK ? "" : ": ", run.msg);
+    }
+    /* Central differences at the guard's step (dt * 2n = 0.7) and beyond it, within their
+     * own stability (dt * 2n < 2), eps = 2.5 dt (stick zone: dt * 2/eps = 0.8 < 1). */
+    static const double cd_dts[2] = {0.35, 0.9};
+    for (int k = 0; k < 2; k++) {
+        double h = cd_dts[k] / (double)n;
+        struct chain_explicit_opts o = {n, p.a, p.omega, bench_period(&p), 2.5 * h, h};
+        t0 = bench_cpu_seconds();
+        chain_explicit_run(&o, &run);
+        record(&rows[nr++], "central-diff/quinn(4)", h, t0, &run, ref);
+        snprintf(rows[nr - 1].msg, sizeof rows[nr - 1].msg,
+                 "prototype (bench/chain_explicit.c); eps = 2.5 dt%s",
+                 k == 0 ? "" : "; beyond the step guard's dt*2n <= 1/sqrt 2");
     }
 #ifdef FRICREG_BENCH_CVODE
     static const double rtols[3] = {1e-4, 1e-6, 1e-8};
