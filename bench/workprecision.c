@@ -85,7 +85,8 @@ static const struct method methods[] = {
     {"msbdf/quinn(4)/extrap3", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_MSBDF, 0, 0, 3,
      EPS_PROBLEM},
     /* Two levels, the leading order declared from the motion (leading_order), and law (4) at
-     * a tiny eps where the motion never sticks (tiny_eps): the cheap ways to 1e-7 and 1e-8. */
+     * a tiny eps where the motion never sticks (tiny_eps): the cheap ways to 1e-5 … 1e-8. */
+    {"rk4/quinn(4)/extrap2", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0, 0, 2, EPS_DECLARED},
     {"rk8pd/quinn(4)/extrap2", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 2,
      EPS_DECLARED},
     {"rk8pd/quinn(4)/tiny-eps", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 0, EPS_TINY},
@@ -116,8 +117,8 @@ static const double targets[NTARGETS] = {1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-
  * not there at eps = 0.02: its levels then are flagged). */
 static const double extrap_eps[BENCH_NPROBLEMS] = {0.04, 0.04, 0.005, 0.004};
 
-/* Two levels cannot show the leading order p of law (4)'s error in eps, so extrap2 declares
- * it from the motion (fricreg_sim.h, docs/benchmark.md): 2 where every switch is a stick
+/* Two levels cannot show the leading order p of law (4)'s error in eps, so extrap2 (fixed RK4
+ * under the paper's rule from dts[k], or rk8pd from extrap2_eps) declares it from the motion (fricreg_sim.h, docs/benchmark.md): 2 where every switch is a stick
  * (osc_stick, chain), 1 where velocities reverse without one (osc_slip, twoblock). With the
  * order right, two levels remove the eps^p term and leave O(eps^(p+1)): on osc_stick,
  * -0.0093 eps^2 (relative) leaves about 2e-9 from eps = 0.025, 0.0125, where three levels
