@@ -75,6 +75,8 @@ struct bench_sim_point {
     int partition; /* enum fricreg_partition; 0: the library's default (consistent) */
     int levels;    /* >= 2: fricreg_sim_run_extrapolated with that many levels (eps, eps/2, …),
                     * D its extrapolation and rhs_evals those of every level; else a plain run */
+    int order;     /* extrapolated runs: the declared leading order in eps (0: 1), used where
+                    * the levels cannot show one (2 levels) */
 };
 
 /** The forcing period of a problem, as the library reports it (FRICREG_VALUE_PERIOD): the one

@@ -6,18 +6,28 @@
  * three levels (fricreg_sim_run_extrapolated, dt halving with eps under the paper's rule,
  * from the largest step the guard accepts, dt = 0.35/n), with its own error estimate. Then
  * each method's error and CPU seconds (one run each: these take seconds to minutes): fricreg
- * RK4 at dt = 0.35/n and 0.175/n, and CVODE Adams at rtol 1e-4, 1e-6, 1e-8 (BDF's dense
- * Newton on 2n + 1 unknowns is left out: O(n^3) per Jacobian). Writes bigchain.csv. Not in
- * bench/run.sh by default (FRICREG_BENCH_BIG=1 runs it): n = 1000 takes about a minute of
- * CPU, n = 10^4 hours. */
+ * RK4 at dt = 0.35/n and 0.175/n; the implicit prototype of chain_implicit.c (Newmark, Newton
+ * on a tridiagonal matrix, law (4) at eps = 1e-4) at dt = 1e-3 and 2.5e-4; the explicit
+ * central differences of chain_explicit.c at dt = 0.35/n and 0.9/n; and CVODE Adams at
+ * rtol 1e-4, 1e-6, 1e-8, each stopped at a CPU cap of CVODE_CAP seconds (the message says how
+ * far it got). Above n = 2000 (10^4) only what fits in minutes: the reference is RK4 at
+ * 0.35/n itself, the implicit prototype runs at 1e-3 only, CVODE at 1e-6 only, capped at
+ * CVODE_CAP_BIG seconds. BDF's dense Newton on 2n + 1 unknowns is left
+ * out: O(n^3) per Jacobian. Writes bigchain.csv. Not in bench/run.sh by default
+ * (FRICREG_BENCH_BIG=1 runs it): n = 1000 takes about a minute of CPU, n = 10^4 three. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
 #include "bench.h"
+#include "chain_explicit.h"
+#include "chain_implicit.h"
 #ifdef FRICREG_BENCH_CVODE
 #include "event_driven.h"
 #endif
+
+#define CVODE_CAP 600.0    /* CPU seconds per CVODE run */
+#define CVODE_CAP_BIG 60.0 /* the same above n = 2000 */
 
 struct row {
     const char *method;
@@ -43,36 +53,76 @@ static int one_n(size_t n, FILE *csv)
     struct bench_problem p = {"chain_big", "chain", FRICREG_SYSTEM_CHAIN, 0.25, 0.5, n, 1, 1e-3, 1};
     double dt = 0.35 / (double)n; /* dt * 2n = 0.7 <= 1/sqrt(2): the guard's bound */
     struct bench_run run;
-    struct row rows[8];
+    struct row rows[16];
     int nr = 0;
 
-    struct bench_sim_point ref_pt = {&p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt, 0.0, 0.0, 0, 3};
+    /* Above n = 2000 (10^4: RK4 alone takes about 100x the n = 1000 work) the reference is
+     * RK4 at the guard's step, not extrapolated, and CVODE gets a shorter cap. */
+    int big = n > 2000;
+    struct bench_sim_point ref_pt = {
+        &p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt, 0.0, 0.0, 0, big ? 0 : 3, 0};
     double t0 = bench_cpu_seconds();
     if (bench_sim_run(&ref_pt, &run) != FRICREG_OK) {
         fprintf(stderr, "fricreg-bench-bigchain: n = %zu: the reference failed: %s\n", n, run.msg);
         return 1;
     }
     double ref = run.D;
-    printf("\nchain n = %zu, a = 0.25, omega = 0.5, D on cycle 1\n"
-           "reference: law (4) + RK4, dt = %g, %g, %g (eps = 10 omega dt), extrapolated: "
-           "D = %.15g, estimate %.1e relative%s (%.1f CPU s)\n",
-           n, dt, dt / 2, dt / 4, ref, run.D_error / fabs(ref),
-           run.flagged ? ", flagged: no clean order" : "", bench_cpu_seconds() - t0);
-    record(&rows[nr++], "rk4/quinn(4)/extrap3", dt, t0, &run, ref);
-    rows[0].err = run.D_error / fabs(ref); /* the reference's row: its own estimate */
-    snprintf(rows[0].msg, sizeof rows[0].msg, "the reference; error: its estimate%s",
-             run.flagged ? " (flagged: no clean order)" : "");
-    for (int k = 0; k < 2; k++) {
+    printf("\nchain n = %zu, a = 0.25, omega = 0.5, D on cycle 1\n", n);
+    if (big) {
+        printf("reference: law (4) + RK4, dt = %g (eps = 10 omega dt), not extrapolated: "
+               "D = %.15g (%.1f CPU s)\n",
+               dt, ref, bench_cpu_seconds() - t0);
+        record(&rows[nr++], "rk4/quinn(4)", dt, t0, &run, ref);
+        rows[0].err = NAN;
+        snprintf(rows[0].msg, sizeof rows[0].msg,
+                 "the reference (not extrapolated; at n = 1000 this step's error is 4e-6)");
+    } else {
+        printf("reference: law (4) + RK4, dt = %g, %g, %g (eps = 10 omega dt), extrapolated: "
+               "D = %.15g, estimate %.1e relative%s (%.1f CPU s)\n",
+               dt, dt / 2, dt / 4, ref, run.D_error / fabs(ref),
+               run.flagged ? ", flagged: no clean order" : "", bench_cpu_seconds() - t0);
+        record(&rows[nr++], "rk4/quinn(4)/extrap3", dt, t0, &run, ref);
+        rows[0].err = run.D_error / fabs(ref); /* the reference's row: its own estimate */
+        snprintf(rows[0].msg, sizeof rows[0].msg, "the reference; error: its estimate%s",
+                 run.flagged ? " (flagged: no clean order)" : "");
+    }
+    for (int k = 0; !big && k < 2; k++) {
         struct bench_sim_point pt = {
-            &p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt / (1 << k), 0.0, 0.0, 0, 0};
+            &p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt / (1 << k), 0.0, 0.0, 0, 0, 0};
         t0 = bench_cpu_seconds();
         bench_sim_run(&pt, &run);
         record(&rows[nr++], "rk4/quinn(4)", dt / (1 << k), t0, &run, ref);
     }
+    static const double implicit_dts[2] = {1e-3, 2.5e-4};
+    for (int k = 0; k < (big ? 1 : 2); k++) {
+        struct chain_implicit_opts o = {n, p.a, p.omega, 1e-4, implicit_dts[k], 0.0, 1e-12};
+        t0 = bench_cpu_seconds();
+        chain_implicit_run(&o, &run);
+        record(&rows[nr++], "newmark-tridiag/quinn(4)", implicit_dts[k], t0, &run, ref);
+        snprintf(
+            rows[nr - 1].msg, sizeof rows[nr - 1].msg,
+            "prototype (bench/chain_implicit.c); eps = 1e-4; %.2f Newton iterations a step%s%.100s",
+            run.rhs_evals / run.steps, run.status == FRICREG_OK ? "" : ": ", run.msg);
+    }
+    /* Central differences at the guard's step (dt * 2n = 0.7) and beyond it, within their
+     * own stability (dt * 2n < 2), eps = 2.5 dt (stick zone: dt * 2/eps = 0.8 < 1). */
+    static const double cd_dts[2] = {0.35, 0.9};
+    for (int k = 0; k < 2; k++) {
+        double h = cd_dts[k] / (double)n;
+        struct chain_explicit_opts o = {n, p.a, p.omega, bench_period(&p), 2.5 * h, h};
+        t0 = bench_cpu_seconds();
+        chain_explicit_run(&o, &run);
+        record(&rows[nr++], "central-diff/quinn(4)", h, t0, &run, ref);
+        snprintf(rows[nr - 1].msg, sizeof rows[nr - 1].msg,
+                 "prototype (bench/chain_explicit.c); eps = 2.5 dt%s",
+                 k == 0 ? "" : "; beyond the step guard's dt*2n <= 1/sqrt 2");
+    }
 #ifdef FRICREG_BENCH_CVODE
     static const double rtols[3] = {1e-4, 1e-6, 1e-8};
     for (int k = 0; k < 3; k++) {
-        struct ed_point ep = {&p, ED_ADAMS, rtols[k]};
+        if (big && rtols[k] != 1e-6)
+            continue;
+        struct ed_point ep = {&p, ED_ADAMS, rtols[k], big ? CVODE_CAP_BIG : CVODE_CAP};
         t0 = bench_cpu_seconds();
         ed_run(&ep, &run);
         record(&rows[nr++], "cvode-adams/event-driven", rtols[k], t0, &run, ref);

@@ -151,8 +151,9 @@ static void add_counts(void *mem, int newton, struct bench_run *out)
 
 /* Integrates cycle by cycle to the end of cycle `cycle`, restarting at every event. */
 static int integrate(void *mem, N_Vector yv, struct ed_sys *s, int newton, int cycle, int *found,
-                     struct bench_run *out)
+                     double cpu_cap, struct bench_run *out)
 {
+    double cpu_start = bench_cpu_seconds();
     double *y = N_VGetArrayPointer(yv), T = s->period, D_start = 0.0;
     double t_burst = 0.0; /* start of the current burst of events */
     long burst = 0;       /* events since t_burst */
@@ -160,6 +161,13 @@ static int integrate(void *mem, N_Vector yv, struct ed_sys *s, int newton, int c
     for (int k = 1; k <= cycle; k++) {
         double boundary = k * T;
         while (t < boundary) {
+            if (cpu_cap > 0.0 && bench_cpu_seconds() - cpu_start > cpu_cap) {
+                snprintf(out->msg, sizeof out->msg,
+                         "stopped at the CPU cap of %g s at t = %.4g of %.4g (%g events)", cpu_cap,
+                         (double)t, cycle * T, out->events);
+                add_counts(mem, newton, out);
+                return FRICREG_EINTEGRATOR;
+            }
             CVodeSetStopTime(mem, boundary);
             int flag = CVode(mem, boundary, yv, &t, CV_NORMAL);
             if (flag < 0) {
@@ -251,7 +259,7 @@ int ed_run(const void *point, struct bench_run *out)
         }
     }
     if (status == FRICREG_OK)
-        status = integrate(mem, y, &s, newton, p->cycle, found, out);
+        status = integrate(mem, y, &s, newton, p->cycle, found, pt->cpu_cap, out);
     CVodeFree(&mem);
     SUNNonlinSolFree(NLS);
     SUNLinSolFree(LS);

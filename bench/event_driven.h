@@ -19,11 +19,14 @@ struct ed_point {
     const struct bench_problem *problem; /* problem->event_driven must be 1 */
     int method;                          /* enum ed_method */
     double rtol;                         /* CVODE reltol; abstol = rtol */
+    double cpu_cap; /* CPU seconds after which the run stops and fails, saying how far it
+                     * got (checked at every event and cycle boundary); 0: no cap */
 };
 
 /** bench_fn for a struct ed_point: D on problem->cycle, CVODE's steps, right-hand-side
  *  evaluations (its difference-quotient Jacobian's included) and the number of mode
- *  switches. Returns FRICREG_OK, FRICREG_EINTEGRATOR if CVODE fails (out->msg says why),
+ *  switches. Returns FRICREG_OK, FRICREG_EINTEGRATOR if CVODE fails or the CPU cap is reached
+ *  (out->msg says why, and how far it got),
  *  FRICREG_EINVAL for a problem it does not handle, FRICREG_ENOMEM. */
 int ed_run(const void *point, struct bench_run *out);
 

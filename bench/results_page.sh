@@ -90,13 +90,17 @@ pivot() { # CSV HEADER_CELL PROBLEM_HEADER_SUFFIXES AWK_CELL_EXPRESSION
         else print "**Cells still below 1** (or not reached by fricreg: `-`): " below "."
     }' "$dir/best.csv"
     echo
-    echo "## The chain at n = 1000 against CVODE Adams"
+    echo "## The chain at n = 1000 (and 10⁴) against CVODE Adams"
     echo
     if [ -f "$dir/bigchain.csv" ]; then
         echo "D on cycle 1 (\`fricreg-bench-bigchain\`, one run each). No independent reference exists"
-        echo "at this size: the errors are against law (4) + RK4 extrapolated in ε over three levels"
-        echo "(the first row, itself flagged or not as its ratios say), which CVODE at rtol 1e-6 agrees"
-        echo "with to the error shown. BDF (dense Newton on 2n + 1 unknowns) is not run."
+        echo "at this size: the errors are against the first row of each n, law (4) + RK4 extrapolated"
+        echo "in ε over three levels (itself flagged or not as its ratios say), and above n = 2000"
+        echo "RK4 at the guard's step alone. Two prototypes in bench/, not the library, each O(n) a"
+        echo "step: \`newmark-tridiag\` (Newmark, Newton on the chain's tridiagonal matrix) and"
+        echo "\`central-diff\` (explicit central differences, one friction evaluation a step). CVODE"
+        echo "runs stop at a CPU cap (the note says how far they got). BDF (dense Newton on 2n + 1"
+        echo "unknowns) is not run."
         echo
         echo "| n | method | Δt or rtol | CPU s | relative error | note |"
         echo "|---|---|---|---|---|---|"

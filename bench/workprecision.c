@@ -39,41 +39,60 @@ enum kind { FIXED, ADAPTIVE, EVENT };
 #define ED_BDF_ID 1
 #endif
 
+/* Where an adaptive law run takes its eps from (method_eps). */
+enum eps_choice {
+    EPS_PROBLEM,  /* the problem's adaptive_eps, or extrap_eps when extrapolated */
+    EPS_TINY,     /* tiny_eps: problems whose motion never sticks */
+    EPS_DECLARED, /* extrap2_eps, extrapolated with the leading order declared */
+};
+
 struct method {
     const char *name; /* CSV and plot name */
     enum kind kind;
     int law, integrator, ed_method;
     int partition; /* FRICREG_PARTITION_PAPER: coupled problems only; 0: the default */
     int levels;    /* >= 2: extrapolated in eps over that many levels (fricreg_sim.h) */
+    enum eps_choice eps_choice;
 };
 
 static const struct method methods[] = {
-    {"rk4/quinn(4)", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0, 0, 0},
-    {"rk4/coulomb(1)", FIXED, FRICREG_LAW_COULOMB, FRICREG_INT_RK4, 0, 0, 0},
-    {"rk4/force-balance(2)", FIXED, FRICREG_LAW_FORCE_BALANCE, FRICREG_INT_RK4, 0, 0, 0},
-    {"rk4/karnopp", FIXED, FRICREG_LAW_KARNOPP, FRICREG_INT_RK4, 0, 0, 0},
-    {"rk4/velocity-limited(3)", FIXED, FRICREG_LAW_VELOCITY_LIMITED, FRICREG_INT_RK4, 0, 0, 0},
-    {"rk4/tanh", FIXED, FRICREG_LAW_TANH, FRICREG_INT_RK4, 0, 0, 0},
-    {"rkf45/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RKF45, 0, 0, 0},
-    {"rk8pd/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 0},
-    {"msbdf/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_MSBDF, 0, 0, 0},
+    {"rk4/quinn(4)", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0, 0, 0, EPS_PROBLEM},
+    {"rk4/coulomb(1)", FIXED, FRICREG_LAW_COULOMB, FRICREG_INT_RK4, 0, 0, 0, EPS_PROBLEM},
+    {"rk4/force-balance(2)", FIXED, FRICREG_LAW_FORCE_BALANCE, FRICREG_INT_RK4, 0, 0, 0,
+     EPS_PROBLEM},
+    {"rk4/karnopp", FIXED, FRICREG_LAW_KARNOPP, FRICREG_INT_RK4, 0, 0, 0, EPS_PROBLEM},
+    {"rk4/velocity-limited(3)", FIXED, FRICREG_LAW_VELOCITY_LIMITED, FRICREG_INT_RK4, 0, 0, 0,
+     EPS_PROBLEM},
+    {"rk4/tanh", FIXED, FRICREG_LAW_TANH, FRICREG_INT_RK4, 0, 0, 0, EPS_PROBLEM},
+    {"rkf45/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RKF45, 0, 0, 0, EPS_PROBLEM},
+    {"rk8pd/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 0, EPS_PROBLEM},
+    {"msbdf/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_MSBDF, 0, 0, 0, EPS_PROBLEM},
     /* The paper's partition of coupled contacts beside the default consistent law (the rows
      * above), where they differ: the two blocks. */
-    {"rk4/quinn(4)/paper", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0, FRICREG_PARTITION_PAPER,
-     0},
+    {"rk4/quinn(4)/paper", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0, FRICREG_PARTITION_PAPER, 0,
+     EPS_PROBLEM},
     {"rkf45/quinn(4)/paper", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RKF45, 0,
-     FRICREG_PARTITION_PAPER, 0},
+     FRICREG_PARTITION_PAPER, 0, EPS_PROBLEM},
     {"msbdf/quinn(4)/paper", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_MSBDF, 0,
-     FRICREG_PARTITION_PAPER, 0},
+     FRICREG_PARTITION_PAPER, 0, EPS_PROBLEM},
     /* Extrapolation in eps (fricreg_sim_run_extrapolated): fixed RK4 under the paper's rule
      * (dt halves with eps), and adaptive steppers from extrap_eps (below) down. */
-    {"rk4/quinn(4)/extrap3", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0, 0, 3},
-    {"rk8pd/quinn(4)/extrap3", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 3},
-    {"rk8pd/quinn(4)/extrap4", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 4},
-    {"msbdf/quinn(4)/extrap3", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_MSBDF, 0, 0, 3},
+    {"rk4/quinn(4)/extrap3", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0, 0, 3, EPS_PROBLEM},
+    {"rk8pd/quinn(4)/extrap3", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 3,
+     EPS_PROBLEM},
+    {"rk8pd/quinn(4)/extrap4", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 4,
+     EPS_PROBLEM},
+    {"msbdf/quinn(4)/extrap3", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_MSBDF, 0, 0, 3,
+     EPS_PROBLEM},
+    /* Two levels, the leading order declared from the motion (leading_order), and law (4) at
+     * a tiny eps where the motion never sticks (tiny_eps): the cheap ways to 1e-5 … 1e-8. */
+    {"rk4/quinn(4)/extrap2", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0, 0, 2, EPS_DECLARED},
+    {"rk8pd/quinn(4)/extrap2", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 2,
+     EPS_DECLARED},
+    {"rk8pd/quinn(4)/tiny-eps", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 0, EPS_TINY},
 #ifdef FRICREG_BENCH_CVODE
-    {"cvode-bdf/event-driven", EVENT, 0, 0, ED_BDF, 0, 0},
-    {"cvode-adams/event-driven", EVENT, 0, 0, ED_ADAMS, 0, 0},
+    {"cvode-bdf/event-driven", EVENT, 0, 0, ED_BDF, 0, 0, EPS_PROBLEM},
+    {"cvode-adams/event-driven", EVENT, 0, 0, ED_ADAMS, 0, 0, EPS_PROBLEM},
 #endif
 };
 enum { NMETHODS = sizeof methods / sizeof methods[0], NSWEEP = 10 };
@@ -98,6 +117,23 @@ static const double targets[NTARGETS] = {1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-
  * not there at eps = 0.02: its levels then are flagged). */
 static const double extrap_eps[BENCH_NPROBLEMS] = {0.04, 0.04, 0.005, 0.004};
 
+/* Two levels cannot show the leading order p of law (4)'s error in eps, so extrap2 (fixed RK4
+ * under the paper's rule from dts[k], or rk8pd from extrap2_eps) declares it from the motion (fricreg_sim.h, docs/benchmark.md): 2 where every switch is a stick
+ * (osc_stick, chain), 1 where velocities reverse without one (osc_slip, twoblock). With the
+ * order right, two levels remove the eps^p term and leave O(eps^(p+1)): on osc_stick,
+ * -0.0093 eps^2 (relative) leaves about 2e-9 from eps = 0.025, 0.0125, where three levels
+ * from 0.04 need a third run at eps = 0.01, the costliest, since an explicit stepper's steps
+ * in a stick are bounded by the band's stiffness 2 mun/eps. */
+static const int leading_order[BENCH_NPROBLEMS] = {2, 1, 2, 1};
+static const double extrap2_eps[BENCH_NPROBLEMS] = {0.025, 0.04, 0.005, 0.004};
+
+/* eps of the tiny-eps runs, only where the motion never sticks (0: not run). There law (4)'s
+ * band is only crossed, in a time of order eps, so the cost hardly depends on eps (osc_slip,
+ * rk8pd at rtol 1e-9: about 1e5 right-hand sides from eps = 1e-2 to 1e-8) while the error,
+ * first order (0.075 eps relative), drops below every target: no extrapolation needed. Where
+ * it sticks, the stick's stiffness 2 mun/eps makes the cost grow as 1/eps. */
+static const double tiny_eps[BENCH_NPROBLEMS] = {0.0, 1e-8, 0.0, 0.0};
+
 enum { PASSES = 5, MIN_PASSES = 3 };
 #define SLOW_POINT 0.25 /* CPU seconds of a first run above which a point gets MIN_PASSES */
 
@@ -120,6 +156,8 @@ static int applies(const struct method *m, const struct bench_problem *p)
 {
     if (m->partition && p->system != FRICREG_SYSTEM_TWOBLOCK)
         return 0; /* uncoupled contacts: both partitions are law (4) */
+    if (m->eps_choice == EPS_TINY && tiny_eps[p - bench_problems] == 0.0)
+        return 0;
     return m->kind != EVENT || p->event_driven;
 }
 
@@ -129,7 +167,11 @@ static double method_eps(const struct method *m, const struct bench_problem *p, 
     (void)k;
     if (m->kind == FIXED)
         return 0.0;
-    return m->levels >= 2 ? extrap_eps[p - bench_problems] : p->adaptive_eps;
+    switch (m->eps_choice) {
+    case EPS_TINY: return tiny_eps[p - bench_problems];
+    case EPS_DECLARED: return extrap2_eps[p - bench_problems];
+    default: return m->levels >= 2 ? extrap_eps[p - bench_problems] : p->adaptive_eps;
+    }
 }
 
 /* Runs one point of one method on one problem once, in pass `pass`. */
@@ -140,7 +182,7 @@ static void run_point(const struct bench_problem *p, const struct method *m, int
     double t;
     if (m->kind == EVENT) {
 #ifdef FRICREG_BENCH_CVODE
-        struct ed_point ep = {p, m->ed_method, tols[k]};
+        struct ed_point ep = {p, m->ed_method, tols[k], 0.0};
         t = bench_time_once(ed_run, &ep, &run);
 #else
         return;
@@ -153,7 +195,10 @@ static void run_point(const struct bench_problem *p, const struct method *m, int
                                      m->kind == FIXED ? 0.0 : tols[k],
                                      method_eps(m, p, k),
                                      m->partition,
-                                     m->levels};
+                                     m->levels,
+                                     m->eps_choice == EPS_DECLARED
+                                         ? leading_order[p - bench_problems]
+                                         : 0};
         t = bench_time_once(bench_sim_run, &sp, &run);
     }
     pt->t[pt->nt++] = t;
@@ -565,7 +610,7 @@ static double eps_order(int ip)
     printf("  law (4) error against eps at fixed dt = %g (RK4):", dt);
     for (int k = 0; k < 4; k++) {
         struct bench_sim_point sp = {
-            &bench_problems[ip], FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt, 0.0, eps[k], 0, 0};
+            &bench_problems[ip], FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt, 0.0, eps[k], 0, 0, 0};
         struct bench_run run;
         if (bench_sim_run(&sp, &run) != FRICREG_OK) {
             printf(" eps %g failed: %s\n", eps[k], run.msg);
