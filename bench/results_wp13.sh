@@ -19,7 +19,10 @@ if [ -f "$dir/machine.txt" ]; then
     echo "This section's run: $(sed -n 's/^date: //p' "$dir/machine.txt"), commit"
     echo "$(sed -n 's/^commit: //p' "$dir/machine.txt"); $(sed -n 's/^machine: //p' "$dir/machine.txt")."
 fi
-if [ -f "$dir/wp13_best.csv" ]; then
+if [ ! -f "$dir/wp13_best.csv" ]; then
+    echo
+    echo "The belt and the 2-D oscillator were not run: their references need SUNDIALS CVODE."
+else
     echo
     echo "CPU seconds to reach each target: the cheapest point of a method's sweep from which every"
     echo "finer point stays below the target (\`<=\`: already at the coarsest point, \`-\`: never"

@@ -39,13 +39,6 @@ enum { PASSES = 3, MAXPTS = 12, NTARGETS = 7, BELT_CYCLES = 6 };
 #define HOLD_DT 1e-4
 #define HOLD_STEPS 1000000L
 
-/* The earlier references, as their programs print them (fricreg-bench-stribeck-belt: RK4 at
- * 1e-5 with bisection on the Hermite interpolant; fricreg-bench-disk: the same problem at
- * eps = 2e-5, dt = 1e-5, each law; commit f10cc6c): the CVODE references are compared with
- * them. */
-static const double OLD_BELT_PERIOD = 9.415410941880, OLD_BELT_AMPLITUDE = 0.591980187646;
-static const double OLD_DISK_D_QUINN = 10.016060294645;
-
 static FILE *open_out(const char *dir, const char *name)
 {
     return bench_open_out("fricreg-bench-wp13", dir, name);
@@ -84,6 +77,13 @@ static void print_hold(const char *dir)
 }
 
 #ifdef FRICREG_BENCH_CVODE
+
+/* The earlier references, as their programs print them (fricreg-bench-stribeck-belt: RK4 at
+ * 1e-5 with bisection on the Hermite interpolant; fricreg-bench-disk: the same problem at
+ * eps = 2e-5, dt = 1e-5, each law; commit f10cc6c): the CVODE references are compared with
+ * them. */
+static const double OLD_BELT_PERIOD = 9.415410941880, OLD_BELT_AMPLITUDE = 0.591980187646;
+static const double OLD_DISK_D_QUINN = 10.016060294645;
 
 /* ---- Series of points ---------------------------------------------------------------------- */
 
