@@ -17,7 +17,9 @@ echo "seconds are medians of 3 interleaved passes; errors are relative, against 
 echo "Adams at rtol 1e-12."
 if [ -f "$dir/machine.txt" ]; then
     echo "This section's run: $(sed -n 's/^date: //p' "$dir/machine.txt"), commit"
-    echo "$(sed -n 's/^commit: //p' "$dir/machine.txt"); $(sed -n 's/^machine: //p' "$dir/machine.txt")."
+    echo "$(sed -n 's/^commit: //p' "$dir/machine.txt"); $(sed -n 's/^machine: //p' "$dir/machine.txt")"
+    echo "(a load average above the number of CPUs: a shared, loaded machine; read the ratios, not"
+    echo "the seconds)."
 fi
 if [ ! -f "$dir/wp13_best.csv" ]; then
     echo
