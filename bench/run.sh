@@ -36,6 +36,9 @@ echo
 echo
 ./build-bench/bench/fricreg-bench-dense "$out" | tee "$out/dense.txt"
 echo
+# Issue 13's belt, 2-D oscillator and hold (the first two need the CVODE references).
+./build-bench/bench/fricreg-bench-wp13 "$out" | tee "$out/wp13.txt"
+echo
 # The chain at n = 1000 and 10^4 against CVODE: minutes of CPU, so only when asked.
 if [ "${FRICREG_BENCH_BIG:-0}" = 1 ]; then
     ./build-bench/bench/fricreg-bench-bigchain "$out" 1000 10000 | tee "$out/bigchain.txt"
@@ -44,6 +47,7 @@ fi
 
 if command -v gnuplot >/dev/null 2>&1; then
     (cd "$out" && gnuplot workprecision.gp && gnuplot scaling.gp)
+    if [ -f "$out/wp13.gp" ]; then (cd "$out" && gnuplot wp13.gp); fi
     echo "plots: $(cd "$out" && ls ./*.png | sed 's|^\./||' | tr '\n' ' ')"
 else
     echo "gnuplot not found: no PNGs (the .gp scripts and the data are in $out/)"
