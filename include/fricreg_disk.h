@@ -40,10 +40,11 @@ enum fricreg_disk_law {
      *  isotropic stick: no creep, no anisotropy). K shrinks linearly from the bound's disk at
      *  v = 0 to the point -mun u at |v| = eps, so f is Lipschitz in (v, f_eq) (constants 1 in
      *  f_eq, 5 mun/eps in v) and the sliding law holds exactly outside the band; on a line it
-     *  is law (4). Chosen over the spec's two candidates (docs/laws2d.md): the lens has the
-     *  same error per cycle but corners that move as sqrt(eps - |v|) near the band's edge (not
-     *  Lipschitz there); the nested form is not the sliding law outside the band and its error
-     *  per cycle is 12 to 200 times larger on the rotating-forcing oscillator. */
+     *  is law (4). Chosen over the spec's two candidates (docs/laws2d.md): the lens has an
+     *  error per cycle 1.3 to 1.9 times larger and corners that move as sqrt(eps - |v|) near
+     *  the band's edge (not Lipschitz there); the nested form is not the sliding law outside
+     *  the band and its error per cycle is 35 to 1700 times larger on the rotating-forcing
+     *  oscillator. */
     FRICREG_DISK_QUINN = 3,
     /** The spec's lens: for |v| < eps, f = P_K(f_eq - c mun) onto K = mun (D ∩ (D - c)), the
      *  intersection of the bound's disk with it shifted by -c mun; -mun v/|v| for |v| >= eps;
