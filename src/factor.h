@@ -34,6 +34,8 @@ struct fr_factor {
     double *work;       /* [m] scratch of solves and updates */
     unsigned char *hit; /* [m] scratch: factor positions the next block keeps */
     size_t updates;     /* contacts added or removed since the last fresh factorization */
+    int fragile;        /* a pivot ratio of the held factor is below UPDATE_PIVOT_MIN: no
+                           updates from it (factor.c) */
 };
 
 /* Allocates the factor storage for m contacts (nothing held); FRICREG_OK or FRICREG_ENOMEM
