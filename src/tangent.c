@@ -100,9 +100,13 @@ static void scatter_solution(fricreg_ctx *ctx, const size_t set[], size_t n, dou
     fr_factor_solve(ctx, ctx->rhs, "tangent"); /* cannot fail: the factor is held */
     for (size_t a = 0; a < n; a++) {
         /* A row scaled by 0 (a saturated contact) does not move, even where W_BB^-1 is
-         * beyond DBL_MAX (subnormal W: Inf * 0 gave NaN, found by fuzz_ctx). */
+         * beyond DBL_MAX (subnormal W: Inf * 0 gave NaN, found by fuzz_ctx); nor does a zero
+         * of the solution where the slope overflowed (eps = DBL_MIN: 2 mun/eps = Inf, and
+         * 0 * Inf NaN, fuzz finding). */
         double scale = row_scale ? row_scale[a] : 1.0;
-        out[set[a] * m + col] = scale == 0.0 ? 0.0 : -ctx->rhs[a] * scale * col_scale;
+        out[set[a] * m + col] = scale == 0.0 || ctx->rhs[a] == 0.0
+                                    ? 0.0
+                                    : -ctx->rhs[a] * scale * col_scale;
     }
 }
 
