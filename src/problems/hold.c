@@ -3,7 +3,8 @@
  * a load inside the friction disk must not creep at all, and, tilted at a constant rate, must
  * leave rest at the exact angle atan(mu). Both follow from the law's exact stick: at v = 0,
  * FRICREG_DISK_QUINN returns f_eq itself, so F + f == 0 in floating point and every RK4 stage
- * from rest stays at rest until a stage's tilt is past atan(mu). */
+ * from rest stays at rest until a stage's tilt is past atan(mu). The default law is that one;
+ * the benchmark (bench/wp13.c) runs the other 2-D laws too, for their creep. */
 #include <math.h>
 
 #include "fricreg_disk.h"
@@ -27,7 +28,8 @@ static int rhs(double t, const double y[], double dy[], void *params)
     double theta = tilt(p, t), along = p->mass * p->g * sin(theta);
     double F[2] = {along * cos(p->phi), along * sin(p->phi)}, feq[2] = {-F[0], -F[1]}, f[2];
     double mun = p->mu * p->mass * p->g * cos(theta);
-    int status = fricreg_disk_eval(FRICREG_DISK_QUINN, y + 2, feq, mun, p->eps, f);
+    int law = p->law != 0 ? p->law : FRICREG_DISK_QUINN;
+    int status = fricreg_disk_eval(law, y + 2, feq, mun, p->eps, f);
     if (status != FRICREG_OK) {
         r->status = status;
         return GSL_EBADFUNC;

@@ -37,6 +37,10 @@ struct prob_disk {
 /* The problem of docs/laws2d.md: law quinn, a = 2, omega = 0.5, 7 cycles a turn, 3 turns of
  * transient, dt = 0.01, eps = 2 dt. */
 struct prob_disk prob_disk_defaults(void);
+/* The length of one turn of the forcing direction, 2 pi cycles_per_turn / omega (time units). */
+double prob_disk_turn(const struct prob_disk *p);
+/* The forcing at time t: F[2] = a sin(omega t) (cos(Omega t), sin(Omega t)). */
+void prob_disk_forcing(const struct prob_disk *p, double t, double F[2]);
 #define PROB_DISK_COLUMNS 6 /* x1, x2, v1, v2, f1, f2 */
 struct prob_disk_result {
     double dissipation; /* D per forcing cycle over the measured turn */
@@ -52,8 +56,10 @@ int prob_disk_run(const struct prob_disk *p, prob_observer observe, void *user,
  * A block of mass M on an incline tilted by theta(t) = theta0 + kappa t, loaded by gravity
  * along the direction phi of the incline's plane:
  *     M v' = F + f,  F = M g sin(theta) (cos phi, sin phi),  mun = mu M g cos(theta),
- *     f_eq = -F, law FRICREG_DISK_QUINN (exact stick at v = 0), from rest at x = 0. */
+ *     f_eq = -F, a 2-D law (FRICREG_DISK_QUINN unless `law` says: its exact stick at v = 0
+ *     holds the block), from rest at x = 0. */
 struct prob_hold {
+    int law;            /* enum fricreg_disk_law; 0: FRICREG_DISK_QUINN */
     double mass, g, mu; /* kg, m/s^2, friction coefficient (> 0) */
     double theta0, phi; /* rad: the tilt at t = 0 (in [0, pi/2)) and the load's direction */
     double kappa;       /* tilt rate, rad/s (>= 0); 0: a fixed tilt */
@@ -87,6 +93,9 @@ struct prob_belt {
 /* fs = 1, fk = 0.5, vs = 0.05, delta = 1, V = 0.2; dt = 0.01, eps = 2 dt; the 12th cycle; the
  * reference at 1e-5. */
 struct prob_belt prob_belt_defaults(void);
+/* The kinetic curve k(speed) = fk + (fs - fk) exp(-(speed/vs)^delta), speed >= 0
+ * (fricreg_stribeck.h): the friction force's magnitude in slip. */
+double prob_belt_kinetic(const struct prob_belt *p, double speed);
 #define PROB_BELT_COLUMNS 3 /* x, x', f (the reference: f = NaN) */
 struct prob_belt_cycle {
     double period, amplitude;
