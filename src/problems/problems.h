@@ -6,7 +6,8 @@
  *
  * Stepping: the paper's method, classical RK4 at a fixed step dt, is GSL's rk4 at 2 dt
  * (gsl_odeiv2_step_rk4 estimates its error by step doubling, so one of its steps of 2 dt is two
- * classical steps of dt), through gsl_odeiv2_evolve_apply_fixed_step with no step control.
+ * classical steps of dt), through gsl_odeiv2_step_apply with no step control: 11 right-hand
+ * sides a step of 2 dt.
  * Every run counts classical steps; observers see the state after each GSL step (every 2 dt).
  *
  * Every function returns FRICREG_OK or a fricreg status: FRICREG_EINVAL for a parameter out of
