@@ -115,15 +115,9 @@ END_TEST
 START_TEST(hold_runs_the_law_it_is_given)
 {
     const int laws[3] = {0, FRICREG_DISK_QUINN, FRICREG_DISK_FORCE_BALANCE};
-    struct prob_hold h = {.mass = 2.385,
-                          .g = 9.81,
-                          .mu = 0.5385,
-                          .phi = 0.6180339887,
-                          .dt = 5e-5,
-                          .eps = 2e-3,
-                          .steps = 2000};
+    struct prob_hold h = prob_hold_defaults(); /* tan theta0 = 0.8 mu */
     struct prob_hold_result r;
-    h.theta0 = atan(0.8 * h.mu);
+    h.steps = 2000;
     for (int k = 0; k < 3; k++) {
         h.law = laws[k];
         ck_assert_int_eq(prob_hold_run(&h, NULL, NULL, &r), FRICREG_OK);
