@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* belt_cvode.c — the event-driven CVODE reference of the belt-driven stick-slip oscillator with
- * Stribeck friction (issue13.h), classical set-valued friction with static bound fs:
+ * Stribeck friction (issue13.h; the problem p of src/problems/problems.h), classical set-valued
+ * friction with static bound fs:
  *   - stick (x' = V, |f_eq| = |x| <= fs): exact, x = x0 + V (t - t0), until x = fs, the
  *     break-away (x only grows while stuck, so the bound is reached at +fs);
  *   - slip with direction s = sgn(u), u = x' - V the relative velocity: CVODE integrates
@@ -22,13 +23,9 @@
 #include "issue13.h"
 
 struct belt_sys {
+    const struct prob_belt *p;
     double s; /* slip direction, sgn(x' - V) */
 };
-
-static double kinetic(double speed)
-{
-    return BELT_FK + (BELT_FS - BELT_FK) * exp(-pow(speed / BELT_VS, BELT_DELTA));
-}
 
 /* y = (x, u): the slip dynamics with the direction held. */
 static int slip_rhs(cv_real t, N_Vector yv, N_Vector dyv, void *user)
@@ -37,17 +34,18 @@ static int slip_rhs(cv_real t, N_Vector yv, N_Vector dyv, void *user)
     const double *y = N_VGetArrayPointer(yv);
     double *dy = N_VGetArrayPointer(dyv);
     (void)t;
-    dy[0] = y[1] + BELT_V;
-    dy[1] = -y[0] - b->s * kinetic(fabs(y[1]));
+    dy[0] = y[1] + b->p->v_belt;
+    dy[1] = -y[0] - b->s * prob_belt_kinetic(b->p, fabs(y[1]));
     return 0;
 }
 
 static int slip_roots(cv_real t, N_Vector yv, cv_real *g, void *user)
 {
+    const struct belt_sys *b = user;
     const double *y = N_VGetArrayPointer(yv);
-    (void)t, (void)user;
-    g[0] = y[1];          /* end of slip: u = 0 */
-    g[1] = y[1] + BELT_V; /* x' = 0: an extremum of x */
+    (void)t;
+    g[0] = y[1];                /* end of slip: u = 0 */
+    g[1] = y[1] + b->p->v_belt; /* x' = 0: an extremum of x */
     return 0;
 }
 
@@ -83,10 +81,10 @@ static int slip(struct cv_handle *h, double *t, double *x, double *xmax, double 
     }
 }
 
-int belt_cvode_run(int method, double rtol, int cycles, struct belt_cycle *out, char *msg,
-                   size_t msg_len)
+int belt_cvode_run(const struct prob_belt *p, int method, double rtol, struct belt_cycle *out,
+                   char *msg, size_t msg_len)
 {
-    struct belt_sys b = {-1.0};
+    struct belt_sys b = {p, -1.0};
     struct cv_handle h;
     *out = (struct belt_cycle){NAN, NAN, 0.0, 0.0};
     if (cv_open(&h, method, 2, slip_rhs, 2, slip_roots, &b, rtol) != 0) {
@@ -95,9 +93,9 @@ int belt_cvode_run(int method, double rtol, int cycles, struct belt_cycle *out, 
     }
     double t = 0.0, x = 0.0, last_break = NAN;
     int status = FRICREG_OK;
-    for (int c = 0; c < cycles && status == FRICREG_OK; c++) {
-        t += (BELT_FS - x) / BELT_V; /* stick until x = fs, exactly */
-        x = BELT_FS;
+    for (int c = 0; c < p->cycles && status == FRICREG_OK; c++) {
+        t += (p->fs - x) / p->v_belt; /* stick until x = fs, exactly */
+        x = p->fs;
         out->period = t - last_break;
         last_break = t;
         double xmax = x, xmin = x;
@@ -105,7 +103,7 @@ int belt_cvode_run(int method, double rtol, int cycles, struct belt_cycle *out, 
         for (;;) {
             status = slip(&h, &t, &x, &xmax, &xmin, out, msg, msg_len);
             out->events += 1.0;
-            if (status != FRICREG_OK || fabs(x) <= BELT_FS)
+            if (status != FRICREG_OK || fabs(x) <= p->fs)
                 break;                  /* the stick test */
             b.s = x > 0.0 ? -1.0 : 1.0; /* slips on the other way */
         }

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* disk_cvode.c — the event-driven CVODE reference of the 2-D oscillator with rotating forcing
- * (issue13.h), classical isotropic Coulomb friction with mun = 1 (the disk |f| <= 1):
+ * (issue13.h; the problem p of src/problems/problems.h), classical isotropic Coulomb friction
+ * with mun = 1 (the disk |f| <= 1):
  *     x'' = -x + F(t) + f,   F(t) = a sin(omega t) (cos(Omega t), sin(Omega t)),
  *     f_eq(t) = x - F(t),    y = (x[2], v[2], E), E' = -f . v = |v| (the dissipated energy).
  * Two modes:
@@ -25,8 +26,9 @@
  *     count of events is the same (111) at every rtol from 1e-4 to 1e-12, and Adams and BDF
  *     agree to 2e-11 at 1e-12.
  *     At the stop: v := 0, stick if |f_eq| <= 1, else slip again in direction -f_eq/|f_eq|.
- * Every event restarts CVODE (CVodeReInit). D per forcing cycle = (E(4 turns) - E(3 turns))/7,
- * with the turn boundaries hit exactly (CVODE's stop time). */
+ * Every event restarts CVODE (CVodeReInit). D per forcing cycle = the change of E over the turn
+ * after turns_transient turns, divided by cycles_per_turn, with the turn boundaries hit exactly
+ * (CVODE's stop time). */
 #include <math.h>
 #include <stdio.h>
 
@@ -39,24 +41,18 @@
 #define MAX_BURST 1000 /* events without progress in time before a run is declared stuck */
 
 struct disk_sys {
+    const struct prob_disk *p;
     int slipping;
     double e_ref[2]; /* slip: the direction at the last accepted step with |v| > v_small */
     double v_small;  /* rtol^(2/3): the slow-manifold band about v = 0 (see direction) */
     int launched;    /* slip: an accepted step has had |v| > v_small since the break-away */
 };
 
-static void forcing(double t, double F[2])
-{
-    double s = DISK_A * sin(DISK_OMEGA * t), phi = DISK_OMEGA / DISK_CYCLES_PER_TURN * t;
-    F[0] = s * cos(phi);
-    F[1] = s * sin(phi);
-}
-
 /* |f_eq(t)| at position x. */
-static double feq_norm(double t, const double x[2], double feq[2])
+static double feq_norm(const struct prob_disk *p, double t, const double x[2], double feq[2])
 {
     double F[2];
-    forcing(t, F);
+    prob_disk_forcing(p, t, F);
     feq[0] = x[0] - F[0];
     feq[1] = x[1] - F[1];
     return hypot(feq[0], feq[1]);
@@ -72,7 +68,7 @@ static double feq_norm(double t, const double x[2], double feq[2])
  *   - otherwise e = v/|v|. */
 static void direction(const struct disk_sys *d, double t, const double y[5], double e[2])
 {
-    double feq[2], n = feq_norm(t, y, feq), speed = hypot(y[2], y[3]);
+    double feq[2], n = feq_norm(d->p, t, y, feq), speed = hypot(y[2], y[3]);
     double along = y[2] * d->e_ref[0] + y[3] * d->e_ref[1];
     if (d->launched && along <= 0.0)
         e[0] = d->e_ref[0], e[1] = d->e_ref[1];
@@ -92,7 +88,7 @@ static int rhs(cv_real t, N_Vector yv, N_Vector dyv, void *user)
     if (!d->slipping)
         return 0;
     double F[2], e[2];
-    forcing(t, F);
+    prob_disk_forcing(d->p, t, F);
     direction(d, t, y, e);
     dy[0] = y[2];
     dy[1] = y[3];
@@ -110,7 +106,7 @@ static int roots(cv_real t, N_Vector yv, cv_real *g, void *user)
 {
     const struct disk_sys *d = user;
     const double *y = N_VGetArrayPointer(yv);
-    double feq[2], n = feq_norm(t, y, feq), e[2];
+    double feq[2], n = feq_norm(d->p, t, y, feq), e[2];
     if (!d->slipping)
         g[0] = 1.0 - n;
     else if (d->launched)
@@ -126,7 +122,7 @@ static int roots(cv_real t, N_Vector yv, cv_real *g, void *user)
  * |f_eq| = 1, to the root's tolerance), else slipping along -f_eq/|f_eq|. */
 static void set_mode_at_rest(struct disk_sys *d, double t, double y[5], int break_away)
 {
-    double feq[2], n = feq_norm(t, y, feq);
+    double feq[2], n = feq_norm(d->p, t, y, feq);
     y[2] = y[3] = 0.0;
     d->launched = 0;
     d->slipping = break_away || n > 1.0;
@@ -141,24 +137,24 @@ static void restart(struct cv_handle *h, const struct disk_sys *d, double t)
     CVodeSetMaxStep(h->mem, d->slipping ? 0.0 : 0.5);
 }
 
-int disk_cvode_run(int method, double rtol, struct disk_result *out, char *msg, size_t msg_len)
+int disk_cvode_run(const struct prob_disk *p, int method, double rtol, struct disk_result *out,
+                   char *msg, size_t msg_len)
 {
-    struct disk_sys d = {0, {1.0, 0.0}, pow(rtol, 2.0 / 3.0), 0};
+    struct disk_sys d = {p, 0, {1.0, 0.0}, pow(rtol, 2.0 / 3.0), 0};
     struct cv_handle h;
     *out = (struct disk_result){NAN, 0.0, 0.0};
     if (cv_open(&h, method, 5, rhs, 1, roots, &d, rtol) != 0) {
         snprintf(msg, msg_len, "disk: CVODE set-up failed");
         return FRICREG_ENOMEM;
     }
-    double *y = N_VGetArrayPointer(h.y),
-           turn = 2.0 * ISSUE13_PI * DISK_CYCLES_PER_TURN / DISK_OMEGA;
+    double *y = N_VGetArrayPointer(h.y), turn = prob_disk_turn(p);
     double E_start = 0.0, t_burst = 0.0;
     long burst = 0;
     cv_real t = 0.0;
     int status = FRICREG_OK;
     set_mode_at_rest(&d, 0.0, y, 0); /* from rest at the origin */
     restart(&h, &d, 0.0);
-    for (int k = 1; k <= DISK_TURNS_TRANSIENT + 1 && status == FRICREG_OK; k++) {
+    for (int k = 1; k <= p->turns_transient + 1 && status == FRICREG_OK; k++) {
         double boundary = k * turn;
         CVodeSetStopTime(h.mem, boundary);
         while (t < boundary) {
@@ -190,12 +186,12 @@ int disk_cvode_run(int method, double rtol, struct disk_result *out, char *msg, 
                 }
             }
         }
-        if (k == DISK_TURNS_TRANSIENT)
+        if (k == p->turns_transient)
             E_start = y[4];
     }
     out->steps += cv_steps(h.mem);
     if (status == FRICREG_OK)
-        out->dissipation = (y[4] - E_start) / DISK_CYCLES_PER_TURN;
+        out->dissipation = (y[4] - E_start) / p->cycles_per_turn;
     cv_close(&h);
     return status;
 }

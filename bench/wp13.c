@@ -1,18 +1,20 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* wp13.c — fricreg-bench-wp13 OUTDIR: work-precision on the three problems of issue 13
- * (issue13.h), in one process.
+ * (src/problems/problems.h), in one process.
  *
  *   belt  the belt-driven Stribeck oscillator: the limit cycle's period and amplitude; error =
  *         the larger of their two relative errors;
  *   disk  the 2-D oscillator with rotating forcing: D per forcing cycle, relative error;
  *   hold  a block on an incline, load inside the friction disk: creep over 1e6 steps and the
  *         CPU seconds per 1e6 steps (no error to trade: the exact answer is 0).
- * Methods: fricreg's laws under GSL's fixed-step RK4 over a sweep of dt (regularized13.c: eps =
- * 2 dt, the paper's rule), the 2-D classical sliding law FRICREG_DISK_COULOMB the same way, and
- * the event-driven CVODE references (belt_cvode.c, disk_cvode.c; Adams and BDF) over rtol =
- * 1e-3 … 1e-11. The reference of each problem is CVODE Adams at rtol REF_RTOL; its convergence
- * (rtol 1e-6 … 1e-12, both methods) and its distance to the earlier references of
- * bench/stribeck_belt.c and bench/disk_laws.c are printed first. Every point's CPU time is the
+ * Methods: fricreg's laws under GSL's fixed-step RK4 over a sweep of dt, run by the problems'
+ * own code (prob_belt_regularized, prob_disk_run, prob_hold_run): dt here is GSL's rk4 step,
+ * two classical steps of dt/2, and eps = 2 dt, the paper's rule (the hold: 20 dt); the 2-D
+ * classical sliding law FRICREG_DISK_COULOMB the same way; and the event-driven CVODE
+ * references (belt_cvode.c, disk_cvode.c; Adams and BDF) over rtol = 1e-3 … 1e-11. The
+ * reference of each problem is CVODE Adams at rtol REF_RTOL; its convergence (rtol 1e-6 …
+ * 1e-12, both methods) and its distance to the earlier references, computed here as
+ * fricreg-bench-stribeck-belt and fricreg-bench-disk compute them, are printed first. Every point's CPU time is the
  * median of PASSES interleaved passes over the whole sweep (a burst of load spoils one repeat
  * of many points, not every repeat of one). Writes to OUTDIR:
  *   wp13.csv          one row per point          wp13_refs.csv  the references' convergence
@@ -29,9 +31,10 @@
 #include "fricreg_disk.h"
 
 #include "bench.h"
-#include "issue13.h"
+#include "problems.h"
 #ifdef FRICREG_BENCH_CVODE
 #include "event_driven.h"
+#include "issue13.h"
 #endif
 
 enum { PASSES = 3, MAXPTS = 12, NTARGETS = 7, BELT_CYCLES = 6 };
@@ -42,6 +45,20 @@ enum { PASSES = 3, MAXPTS = 12, NTARGETS = 7, BELT_CYCLES = 6 };
 static FILE *open_out(const char *dir, const char *name)
 {
     return bench_open_out("fricreg-bench-wp13", dir, name);
+}
+
+/* The hold of problems.h at its fixed tilt (tan theta = 0.8 mu) under `law`, HOLD_STEPS GSL
+ * steps of HOLD_DT (classical steps of HOLD_DT/2), eps = 20 HOLD_DT: *creep = |x(T) - x(0)|/T,
+ * *largest_speed = max |v| after a step. */
+static int hold_run(int law, double *creep, double *largest_speed)
+{
+    struct prob_hold p = prob_hold_defaults();
+    struct prob_hold_result r;
+    p.law = law, p.dt = 0.5 * HOLD_DT, p.eps = 20.0 * HOLD_DT, p.steps = 2.0 * HOLD_STEPS;
+    int status = prob_hold_run(&p, NULL, NULL, &r);
+    *creep = status == FRICREG_OK ? r.displacement / r.t : NAN;
+    *largest_speed = status == FRICREG_OK ? r.creep : NAN;
+    return status;
 }
 
 static void print_hold(const char *dir)
@@ -55,7 +72,7 @@ static void print_hold(const char *dir)
     for (int pass = 0; pass < PASSES; pass++)
         for (int l = 0; l < NL; l++) {
             double t0 = bench_cpu_seconds();
-            status[l] = hold_rk4_run(laws[l], HOLD_DT, HOLD_STEPS, &creep[l], &vmax[l]);
+            status[l] = hold_run(laws[l], &creep[l], &vmax[l]);
             cpu[l][pass] = bench_cpu_seconds() - t0;
         }
     printf("== The hold: a block on an incline, tan(theta) = 0.8 mu, from rest, %ld RK4 steps of "
@@ -78,16 +95,20 @@ static void print_hold(const char *dir)
 
 #ifdef FRICREG_BENCH_CVODE
 
-/* The earlier references, as their programs print them (fricreg-bench-stribeck-belt: RK4 at
- * 1e-5 with bisection on the Hermite interpolant; fricreg-bench-disk: the same problem at
- * eps = 2e-5, dt = 1e-5, each law; commit f10cc6c): the CVODE references are compared with
- * them. */
-static const double OLD_BELT_PERIOD = 9.415410941880, OLD_BELT_AMPLITUDE = 0.591980187646;
-static const double OLD_DISK_D_QUINN = 10.016060294645;
-
 /* ---- Series of points ---------------------------------------------------------------------- */
 
 enum problem { P_BELT, P_DISK, NPROBLEMS };
+/* The problems as src/problems defines them; the belt's cycle measured is the BELT_CYCLES-th
+ * (every event-driven cycle after the first is the limit cycle). */
+static struct prob_belt belt_problem;
+static struct prob_disk disk_problem;
+
+static void set_problems(void)
+{
+    belt_problem = prob_belt_defaults();
+    belt_problem.cycles = BELT_CYCLES;
+    disk_problem = prob_disk_defaults();
+}
 static const char *const problem_key[NPROBLEMS] = {"belt", "disk"};
 static const char *const problem_title[NPROBLEMS] = {
     "belt-driven Stribeck oscillator: period and amplitude of the limit cycle",
@@ -110,68 +131,17 @@ struct series {
     char msg[MAXPTS][160];
 };
 
+/* The series; the rest of each row is filled by set_sweeps and the runs. */
 static struct series series[] = {
-    {"rk4/stribeck", P_BELT, RK4, 0, 0, 0, {0}, {{0}}, {0}, {{0}}, {0}, {0}, {0}, {{0}}},
-    {"cvode-adams", P_BELT, CVODE, 0, ED_ADAMS, 0, {0}, {{0}}, {0}, {{0}}, {0}, {0}, {0}, {{0}}},
-    {"cvode-bdf", P_BELT, CVODE, 0, ED_BDF, 0, {0}, {{0}}, {0}, {{0}}, {0}, {0}, {0}, {{0}}},
-    {"rk4/quinn",
-     P_DISK,
-     RK4,
-     FRICREG_DISK_QUINN,
-     0,
-     0,
-     {0},
-     {{0}},
-     {0},
-     {{0}},
-     {0},
-     {0},
-     {0},
-     {{0}}},
-    {"rk4/quinn-lens",
-     P_DISK,
-     RK4,
-     FRICREG_DISK_QUINN_LENS,
-     0,
-     0,
-     {0},
-     {{0}},
-     {0},
-     {{0}},
-     {0},
-     {0},
-     {0},
-     {{0}}},
-    {"rk4/quinn-nested",
-     P_DISK,
-     RK4,
-     FRICREG_DISK_QUINN_NESTED,
-     0,
-     0,
-     {0},
-     {{0}},
-     {0},
-     {{0}},
-     {0},
-     {0},
-     {0},
-     {{0}}},
-    {"rk4/coulomb",
-     P_DISK,
-     RK4,
-     FRICREG_DISK_COULOMB,
-     0,
-     0,
-     {0},
-     {{0}},
-     {0},
-     {{0}},
-     {0},
-     {0},
-     {0},
-     {{0}}},
-    {"cvode-adams", P_DISK, CVODE, 0, ED_ADAMS, 0, {0}, {{0}}, {0}, {{0}}, {0}, {0}, {0}, {{0}}},
-    {"cvode-bdf", P_DISK, CVODE, 0, ED_BDF, 0, {0}, {{0}}, {0}, {{0}}, {0}, {0}, {0}, {{0}}},
+    {.name = "rk4/stribeck", .problem = P_BELT, .kind = RK4},
+    {.name = "cvode-adams", .problem = P_BELT, .kind = CVODE, .method = ED_ADAMS},
+    {.name = "cvode-bdf", .problem = P_BELT, .kind = CVODE, .method = ED_BDF},
+    {.name = "rk4/quinn", .problem = P_DISK, .kind = RK4, .law = FRICREG_DISK_QUINN},
+    {.name = "rk4/quinn-lens", .problem = P_DISK, .kind = RK4, .law = FRICREG_DISK_QUINN_LENS},
+    {.name = "rk4/quinn-nested", .problem = P_DISK, .kind = RK4, .law = FRICREG_DISK_QUINN_NESTED},
+    {.name = "rk4/coulomb", .problem = P_DISK, .kind = RK4, .law = FRICREG_DISK_COULOMB},
+    {.name = "cvode-adams", .problem = P_DISK, .kind = CVODE, .method = ED_ADAMS},
+    {.name = "cvode-bdf", .problem = P_DISK, .kind = CVODE, .method = ED_BDF},
 };
 enum { NSERIES = sizeof series / sizeof series[0] };
 
@@ -181,7 +151,7 @@ enum { NSERIES = sizeof series / sizeof series[0] };
 /* The sweeps: RK4 dt halving from 0.02 (belt) or 0.08 (disk); CVODE rtol 1e-3 … 1e-11. */
 static void set_sweeps(void)
 {
-    double turn = 2.0 * ISSUE13_PI * DISK_CYCLES_PER_TURN / DISK_OMEGA;
+    double turn = prob_disk_turn(&disk_problem);
     for (int is = 0; is < NSERIES; is++) {
         struct series *s = &series[is];
         if (s->kind == CVODE) {
@@ -200,20 +170,47 @@ static void set_sweeps(void)
     }
 }
 
+/* The belt under fricreg_stribeck_eval, GSL steps of dt, eps = 2 dt: the period between the
+ * last two downward crossings of x = 0 and the amplitude over that cycle (prob_belt_regularized
+ * at the level 0); *steps counts GSL steps. */
+static int belt_rk4_run(double dt, double *value, double *steps)
+{
+    struct prob_belt p = belt_problem;
+    struct prob_belt_cycle c = {NAN, NAN, NAN, NAN, 0.0, 0.0};
+    p.dt = 0.5 * dt, p.eps = 2.0 * dt;
+    int status = prob_belt_regularized(&p, 0.0, NULL, NULL, &c);
+    value[0] = c.period, value[1] = c.amplitude, *steps = 0.5 * c.steps;
+    return status;
+}
+
+/* The 2-D oscillator under fricreg_disk_eval(law), GSL steps of dt = one turn / n (so the turns'
+ * boundaries are step ends), eps = 2 dt: D per forcing cycle (prob_disk_run). */
+static int disk_rk4_run(int law, double dt, double *value, double *steps)
+{
+    struct prob_disk p = disk_problem;
+    struct prob_disk_result r = {NAN, NAN, 0.0, 0.0};
+    p.law = law, p.dt = 0.5 * dt, p.eps = 2.0 * dt;
+    int status = prob_disk_run(&p, NULL, NULL, &r);
+    value[0] = r.dissipation, value[1] = NAN, *steps = 0.5 * r.steps;
+    return status;
+}
+
 /* One run of point k of series s; fills value, steps, status, msg. */
 static void run_point(struct series *s, int k)
 {
-    if (s->problem == P_BELT) {
+    if (s->kind == RK4) {
+        s->status[k] = s->problem == P_BELT
+                           ? belt_rk4_run(s->param[k], s->value[k], &s->steps[k])
+                           : disk_rk4_run(s->law, s->param[k], s->value[k], &s->steps[k]);
+    } else if (s->problem == P_BELT) {
         struct belt_cycle c;
-        s->status[k] = s->kind == RK4 ? belt_rk4_run(s->param[k], BELT_CYCLES, &c)
-                                      : belt_cvode_run(s->method, s->param[k], BELT_CYCLES, &c,
-                                                       s->msg[k], sizeof s->msg[k]);
+        s->status[k] = belt_cvode_run(&belt_problem, s->method, s->param[k], &c, s->msg[k],
+                                      sizeof s->msg[k]);
         s->value[k][0] = c.period, s->value[k][1] = c.amplitude, s->steps[k] = c.steps;
     } else {
         struct disk_result d;
-        s->status[k] = s->kind == RK4 ? disk_rk4_run(s->law, DISK_N0 << k, &d)
-                                      : disk_cvode_run(s->method, s->param[k], &d, s->msg[k],
-                                                       sizeof s->msg[k]);
+        s->status[k] = disk_cvode_run(&disk_problem, s->method, s->param[k], &d, s->msg[k],
+                                      sizeof s->msg[k]);
         s->value[k][0] = d.dissipation, s->value[k][1] = NAN, s->steps[k] = d.steps;
     }
 }
@@ -227,6 +224,32 @@ static double rel(double x, double ref)
     return fabs(x - ref) / fabs(ref);
 }
 
+/* The earlier references, computed as their programs compute them (src/problems' defaults):
+ * fricreg-bench-stribeck-belt's event-driven RK4 reference (slips at 1e-5, their ends on the
+ * Hermite interpolant; the 12th cycle) and fricreg-bench-disk's tiny-eps run (quinn, classical
+ * dt = 1e-5, eps = 2e-5), and the CVODE references' distance to them. */
+static void print_earlier_references(const struct belt_cycle *bref, const struct disk_result *dref)
+{
+    struct prob_belt belt = prob_belt_defaults();
+    struct prob_belt_cycle c;
+    if (prob_belt_reference(&belt, NULL, NULL, &c) == FRICREG_OK)
+        printf("belt: against the event-driven RK4 reference of fricreg-bench-stribeck-belt "
+               "(%.12f, %.12f): period %.2e, amplitude %.2e\n",
+               c.period, c.amplitude, rel(bref->period, c.period),
+               rel(bref->amplitude, c.amplitude));
+    else
+        printf("belt: the event-driven RK4 reference failed\n");
+    struct prob_disk disk = prob_disk_defaults();
+    struct prob_disk_result r;
+    disk.law = FRICREG_DISK_QUINN, disk.dt = 1e-5, disk.eps = 2e-5;
+    if (prob_disk_run(&disk, NULL, NULL, &r) == FRICREG_OK)
+        printf("disk: against the tiny-eps reference of fricreg-bench-disk (quinn, dt = 1e-5, "
+               "eps = 2e-5: %.12f): %.2e\n",
+               r.dissipation, rel(dref->dissipation, r.dissipation));
+    else
+        printf("disk: the tiny-eps reference failed\n");
+}
+
 /* CVODE at rtol 1e-6 … 1e-12, both methods: the convergence of the references. */
 static int print_references(const char *dir)
 {
@@ -236,8 +259,8 @@ static int print_references(const char *dir)
     struct belt_cycle bref;
     struct disk_result dref;
     char msg[200] = "";
-    if (belt_cvode_run(ED_ADAMS, REF_RTOL, BELT_CYCLES, &bref, msg, sizeof msg) != FRICREG_OK ||
-        disk_cvode_run(ED_ADAMS, REF_RTOL, &dref, msg, sizeof msg) != FRICREG_OK) {
+    if (belt_cvode_run(&belt_problem, ED_ADAMS, REF_RTOL, &bref, msg, sizeof msg) != FRICREG_OK ||
+        disk_cvode_run(&disk_problem, ED_ADAMS, REF_RTOL, &dref, msg, sizeof msg) != FRICREG_OK) {
         fprintf(stderr, "fricreg-bench-wp13: the reference failed: %s\n", msg);
         return 1;
     }
@@ -254,11 +277,11 @@ static int print_references(const char *dir)
                 int st;
                 if (ip == P_BELT) {
                     struct belt_cycle c;
-                    st = belt_cvode_run(m, rtol, BELT_CYCLES, &c, msg, sizeof msg);
+                    st = belt_cvode_run(&belt_problem, m, rtol, &c, msg, sizeof msg);
                     v[0] = c.period, v[1] = c.amplitude, steps = c.steps, events = c.events;
                 } else {
                     struct disk_result d;
-                    st = disk_cvode_run(m, rtol, &d, msg, sizeof msg);
+                    st = disk_cvode_run(&disk_problem, m, rtol, &d, msg, sizeof msg);
                     v[0] = d.dissipation, steps = d.steps, events = d.events;
                 }
                 double diff = rel(v[0], ref_value[ip][0]);
@@ -274,13 +297,7 @@ static int print_references(const char *dir)
                     fprintf(f, "%s,%s,%g,%.15g,%.15g,%.0f,%.0f,%.3e\n", problem_key[ip],
                             m == ED_BDF ? "bdf" : "adams", rtol, v[0], v[1], steps, events, diff);
             }
-    printf("belt: against the RK4 + bisection reference of fricreg-bench-stribeck-belt "
-           "(%.12f, %.12f): period %.2e, amplitude %.2e\n",
-           OLD_BELT_PERIOD, OLD_BELT_AMPLITUDE, rel(bref.period, OLD_BELT_PERIOD),
-           rel(bref.amplitude, OLD_BELT_AMPLITUDE));
-    printf("disk: against the tiny-eps reference of fricreg-bench-disk (quinn, dt = 1e-5, "
-           "eps = 2e-5: %.12f): %.2e\n",
-           OLD_DISK_D_QUINN, rel(dref.dissipation, OLD_DISK_D_QUINN));
+    print_earlier_references(&bref, &dref);
     if (f)
         fclose(f);
     return 0;
@@ -460,6 +477,7 @@ int main(int argc, char **argv)
     gsl_set_error_handler_off(); /* a failed step is reported by its status, never aborts */
     print_hold(dir);
 #ifdef FRICREG_BENCH_CVODE
+    set_problems();
     if (print_references(dir) != 0)
         return 1;
     set_sweeps();

@@ -107,6 +107,48 @@ START_TEST(breakaway_bracket_holds_the_exact_angle)
 }
 END_TEST
 
+/* The hold under each 2-D law at a fixed tilt inside the disk (tan theta = 0.8 mu), 2000
+ * steps: the laws with the force balance at v = 0 (quinn, the default; force-balance) return
+ * f_eq itself there, so the block never moves (0, exactly); the sliding law alone
+ * (FRICREG_DISK_COULOMB, f = 0 at v = 0) lets the load start it, so it creeps. An unknown law
+ * comes back as the law's FRICREG_EINVAL. */
+START_TEST(hold_runs_the_law_it_is_given)
+{
+    const int laws[3] = {0, FRICREG_DISK_QUINN, FRICREG_DISK_FORCE_BALANCE};
+    struct prob_hold h = prob_hold_defaults(); /* tan theta0 = 0.8 mu */
+    struct prob_hold_result r;
+    h.steps = 2000;
+    for (int k = 0; k < 3; k++) {
+        h.law = laws[k];
+        ck_assert_int_eq(prob_hold_run(&h, NULL, NULL, &r), FRICREG_OK);
+        ck_assert(r.creep == 0.0 && r.displacement == 0.0 && !r.broke_away);
+    }
+    h.law = FRICREG_DISK_COULOMB;
+    ck_assert_int_eq(prob_hold_run(&h, NULL, NULL, &r), FRICREG_OK);
+    ck_assert(r.creep > 0.0 && r.broke_away);
+    h.law = 99;
+    ck_assert_int_eq(prob_hold_run(&h, NULL, NULL, &r), FRICREG_EINVAL);
+}
+END_TEST
+
+/* The shared definitions the event-driven references use: one turn of the default forcing's
+ * direction is 2 pi 7 / 0.5 = 28 pi; the forcing at t = pi/2 (omega t = pi/4, Omega t = pi/28)
+ * is 2 sin(pi/4) (cos(pi/28), sin(pi/28)); the kinetic curve is fs at rest and
+ * fk + (fs - fk)/e at vs (delta = 1). */
+START_TEST(shared_definitions)
+{
+    struct prob_disk d = prob_disk_defaults();
+    double F[2];
+    ck_assert(fabs(prob_disk_turn(&d) - 28.0 * PI) < 1e-13);
+    prob_disk_forcing(&d, PI / 2, F);
+    ck_assert(fabs(F[0] - sqrt(2.0) * cos(PI / 28)) < 1e-15);
+    ck_assert(fabs(F[1] - sqrt(2.0) * sin(PI / 28)) < 1e-15);
+    struct prob_belt b = prob_belt_defaults();
+    ck_assert(prob_belt_kinetic(&b, 0.0) == b.fs);
+    ck_assert(fabs(prob_belt_kinetic(&b, b.vs) - (0.5 + 0.5 / exp(1.0))) < 1e-15);
+}
+END_TEST
+
 static Suite *problems_suite(void)
 {
     Suite *s = suite_create("problems");
@@ -115,6 +157,8 @@ static Suite *problems_suite(void)
     tcase_add_test(tc, extremes_are_located);
     tcase_add_test(tc, bad_parameters_and_law_failures);
     tcase_add_test(tc, breakaway_bracket_holds_the_exact_angle);
+    tcase_add_test(tc, hold_runs_the_law_it_is_given);
+    tcase_add_test(tc, shared_definitions);
     suite_add_tcase(s, tc);
     return s;
 }

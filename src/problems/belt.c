@@ -45,7 +45,7 @@ struct slip {
     double s; /* the slip's direction, sgn(x' - V), held over the phase */
 };
 
-static double kinetic(const struct prob_belt *p, double speed)
+double prob_belt_kinetic(const struct prob_belt *p, double speed)
 {
     return p->fk + (p->fs - p->fk) * exp(-pow(speed / p->vs, p->delta));
 }
@@ -56,7 +56,7 @@ static int slip_rhs(double t, const double y[], double dy[], void *params)
     (void)t;
     const struct slip *sl = params;
     dy[0] = y[1];
-    dy[1] = -y[0] - sl->s * kinetic(sl->p, fabs(y[1] - sl->p->v_belt));
+    dy[1] = -y[0] - sl->s * prob_belt_kinetic(sl->p, fabs(y[1] - sl->p->v_belt));
     return GSL_SUCCESS;
 }
 

@@ -28,7 +28,12 @@ struct disk_rhs {
     int status; /* the law's status when it failed */
 };
 
-static void forcing(const struct prob_disk *p, double t, double F[2])
+double prob_disk_turn(const struct prob_disk *p)
+{
+    return 2.0 * PI * p->cycles_per_turn / p->omega;
+}
+
+void prob_disk_forcing(const struct prob_disk *p, double t, double F[2])
 {
     double s = p->a * sin(p->omega * t), phi = p->omega / p->cycles_per_turn * t;
     F[0] = s * cos(phi);
@@ -39,7 +44,7 @@ static void forcing(const struct prob_disk *p, double t, double F[2])
  * and f_eq = x - F(t), the force that makes the acceleration zero. */
 static int friction(const struct prob_disk *p, double t, const double y[], double F[2], double f[2])
 {
-    forcing(p, t, F);
+    prob_disk_forcing(p, t, F);
     double feq[2] = {y[0] - F[0], y[1] - F[1]};
     return fricreg_disk_eval(p->law, y + 2, feq, 1.0, p->eps, f);
 }
@@ -96,7 +101,7 @@ int prob_disk_run(const struct prob_disk *p, prob_observer observe, void *user,
 {
     if (!valid(p))
         return FRICREG_EINVAL;
-    const double turn = 2.0 * PI * p->cycles_per_turn / p->omega, h = 2.0 * p->dt;
+    const double turn = prob_disk_turn(p), h = 2.0 * p->dt;
     const double t_from = p->turns_transient * turn, t_to = t_from + turn;
     const double n = ceil(t_to / h);
     if (turn < h || n > 1e10)

@@ -3,14 +3,32 @@
  * a load inside the friction disk must not creep at all, and, tilted at a constant rate, must
  * leave rest at the exact angle atan(mu). Both follow from the law's exact stick: at v = 0,
  * FRICREG_DISK_QUINN returns f_eq itself, so F + f == 0 in floating point and every RK4 stage
- * from rest stays at rest until a stage's tilt is past atan(mu). */
+ * from rest stays at rest until a stage's tilt is past atan(mu). The default law is that one;
+ * the benchmark (bench/wp13.c) runs the other 2-D laws too, for their creep. */
 #include <math.h>
 
 #include "fricreg_disk.h"
 #include "prob_internal.h"
 
+struct prob_hold prob_hold_defaults(void)
+{
+    const double mu = 0.5385;
+    return (struct prob_hold){.law = FRICREG_DISK_QUINN,
+                              .mass = 2.385,
+                              .g = 9.81,
+                              .mu = mu,
+                              .theta0 = atan(0.8 * mu),
+                              .phi = 0.6180339887,
+                              .kappa = 0.0,
+                              .dt = 1e-4,
+                              .eps = 2e-3,
+                              .steps = 1e5};
+}
+
 struct hold_rhs {
     const struct prob_hold *p;
+    int law;
+    double F[2], mun; /* at a fixed tilt (kappa = 0): the load and the bound, computed once */
     int status;
 };
 
@@ -19,15 +37,25 @@ static double tilt(const struct prob_hold *p, double t)
     return p->theta0 + p->kappa * t;
 }
 
+/* The load F = M g sin(theta) (cos phi, sin phi) and the bound mun = mu M g cos(theta) at t. */
+static void load(const struct prob_hold *p, double t, double F[2], double *mun)
+{
+    double theta = tilt(p, t), along = p->mass * p->g * sin(theta);
+    F[0] = along * cos(p->phi);
+    F[1] = along * sin(p->phi);
+    *mun = p->mu * p->mass * p->g * cos(theta);
+}
+
 /* y = (x1, x2, v1, v2): x' = v, M v' = F + f with f_eq = -F. */
 static int rhs(double t, const double y[], double dy[], void *params)
 {
     struct hold_rhs *r = params;
     const struct prob_hold *p = r->p;
-    double theta = tilt(p, t), along = p->mass * p->g * sin(theta);
-    double F[2] = {along * cos(p->phi), along * sin(p->phi)}, feq[2] = {-F[0], -F[1]}, f[2];
-    double mun = p->mu * p->mass * p->g * cos(theta);
-    int status = fricreg_disk_eval(FRICREG_DISK_QUINN, y + 2, feq, mun, p->eps, f);
+    double F[2] = {r->F[0], r->F[1]}, mun = r->mun, f[2];
+    if (p->kappa != 0.0)
+        load(p, t, F, &mun);
+    double feq[2] = {-F[0], -F[1]};
+    int status = fricreg_disk_eval(r->law, y + 2, feq, mun, p->eps, f);
     if (status != FRICREG_OK) {
         r->status = status;
         return GSL_EBADFUNC;
@@ -55,7 +83,9 @@ int prob_hold_run(const struct prob_hold *p, prob_observer observe, void *user,
 {
     if (!valid(p))
         return FRICREG_EINVAL;
-    struct hold_rhs params = {p, FRICREG_OK};
+    struct hold_rhs params = {
+        p, p->law != 0 ? p->law : FRICREG_DISK_QUINN, {0.0, 0.0}, 0.0, FRICREG_OK};
+    load(p, 0.0, params.F, &params.mun);
     struct prob_rk4 rk;
     int status = prob_rk4_init(&rk, rhs, 4, &params, p->dt);
     if (status != FRICREG_OK)

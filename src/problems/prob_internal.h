@@ -14,7 +14,7 @@
 struct prob_rk4 {
     gsl_odeiv2_system sys;
     gsl_odeiv2_step *step;
-    gsl_odeiv2_evolve *evolve;
+    double *yerr; /* GSL's error estimate, unused (the step is fixed) */
     double dt;
 };
 

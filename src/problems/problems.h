@@ -6,7 +6,8 @@
  *
  * Stepping: the paper's method, classical RK4 at a fixed step dt, is GSL's rk4 at 2 dt
  * (gsl_odeiv2_step_rk4 estimates its error by step doubling, so one of its steps of 2 dt is two
- * classical steps of dt), through gsl_odeiv2_evolve_apply_fixed_step with no step control.
+ * classical steps of dt), through gsl_odeiv2_step_apply with no step control: 11 right-hand
+ * sides a step of 2 dt.
  * Every run counts classical steps; observers see the state after each GSL step (every 2 dt).
  *
  * Every function returns FRICREG_OK or a fricreg status: FRICREG_EINVAL for a parameter out of
@@ -37,6 +38,10 @@ struct prob_disk {
 /* The problem of docs/laws2d.md: law quinn, a = 2, omega = 0.5, 7 cycles a turn, 3 turns of
  * transient, dt = 0.01, eps = 2 dt. */
 struct prob_disk prob_disk_defaults(void);
+/* The length of one turn of the forcing direction, 2 pi cycles_per_turn / omega (time units). */
+double prob_disk_turn(const struct prob_disk *p);
+/* The forcing at time t: F[2] = a sin(omega t) (cos(Omega t), sin(Omega t)). */
+void prob_disk_forcing(const struct prob_disk *p, double t, double F[2]);
 #define PROB_DISK_COLUMNS 6 /* x1, x2, v1, v2, f1, f2 */
 struct prob_disk_result {
     double dissipation; /* D per forcing cycle over the measured turn */
@@ -52,14 +57,20 @@ int prob_disk_run(const struct prob_disk *p, prob_observer observe, void *user,
  * A block of mass M on an incline tilted by theta(t) = theta0 + kappa t, loaded by gravity
  * along the direction phi of the incline's plane:
  *     M v' = F + f,  F = M g sin(theta) (cos phi, sin phi),  mun = mu M g cos(theta),
- *     f_eq = -F, law FRICREG_DISK_QUINN (exact stick at v = 0), from rest at x = 0. */
+ *     f_eq = -F, a 2-D law (FRICREG_DISK_QUINN unless `law` says: its exact stick at v = 0
+ *     holds the block), from rest at x = 0. */
 struct prob_hold {
+    int law;            /* enum fricreg_disk_law; 0: FRICREG_DISK_QUINN */
     double mass, g, mu; /* kg, m/s^2, friction coefficient (> 0) */
     double theta0, phi; /* rad: the tilt at t = 0 (in [0, pi/2)) and the load's direction */
     double kappa;       /* tilt rate, rad/s (>= 0); 0: a fixed tilt */
     double dt, eps;     /* s, m/s (> 0) */
     double steps;       /* classical steps at most (even, >= 2) */
 };
+/* The block of tests/test_hold.c: M = 2.385 kg, g = 9.81, mu = 0.5385, phi = 0.6180339887,
+ * tan(theta0) = 0.8 mu (the load at 0.8 of the bound), kappa = 0, law quinn, dt = 1e-4,
+ * eps = 2e-3, 1e5 steps. */
+struct prob_hold prob_hold_defaults(void);
 #define PROB_HOLD_COLUMNS 5 /* theta (rad), x1, x2, v1, v2 */
 struct prob_hold_result {
     double creep;        /* kappa = 0: the largest |v| after a step over the run, m/s */
@@ -87,6 +98,9 @@ struct prob_belt {
 /* fs = 1, fk = 0.5, vs = 0.05, delta = 1, V = 0.2; dt = 0.01, eps = 2 dt; the 12th cycle; the
  * reference at 1e-5. */
 struct prob_belt prob_belt_defaults(void);
+/* The kinetic curve k(speed) = fk + (fs - fk) exp(-(speed/vs)^delta), speed >= 0
+ * (fricreg_stribeck.h): the friction force's magnitude in slip. */
+double prob_belt_kinetic(const struct prob_belt *p, double speed);
 #define PROB_BELT_COLUMNS 3 /* x, x', f (the reference: f = NaN) */
 struct prob_belt_cycle {
     double period, amplitude;
