@@ -138,6 +138,7 @@ module fricreg
     procedure :: size => dctx_size
     procedure :: set_law => dctx_set_law
     procedure :: set_bounds => dctx_set_bounds
+    procedure :: set_stribeck => dctx_set_stribeck
     procedure :: set_coupling_blocks => dctx_set_coupling_blocks
     procedure :: set_coupling_dense => dctx_set_coupling_dense
     procedure :: eval => dctx_eval
@@ -865,6 +866,36 @@ contains
     if (status == FRICREG_OK) status = self%check_size('set_bounds', 'mun', size(mun), m)
     if (status == FRICREG_OK) status = self%record(fricreg_disk_ctx_set_bounds(self%ptr, m, mun))
   end function dctx_set_bounds
+
+  !> Static > kinetic (Stribeck) friction, C's fricreg_disk_ctx_set_stribeck
+  !> (fricreg_stribeck.h): fs(m) static bounds mu_s N (at most 1e250), fk(m) kinetic mu_k N in
+  !> [0, fs], vs(m) > 0 Stribeck velocities, delta(m) > 0 exponents; selects FRICREG_DISK_QUINN
+  !> with the context's eps. With all four omitted it switches Stribeck friction off (C's
+  !> m = 0): the bounds of set_bounds. set_bounds, or set_law with the force balance, also
+  !> switch it off. FRICREG_ESIZE if a given array's size is not m; FRICREG_ENULL if some, not
+  !> all, are omitted; FRICREG_EINVAL; FRICREG_ENONFINITE.
+  function dctx_set_stribeck(self, fs, fk, vs, delta) result(status)
+    class(fricreg_disk_context), intent(inout) :: self
+    real(c_double), intent(in), contiguous, optional :: fs(:), fk(:), vs(:), delta(:)
+    integer(c_int) :: status
+    integer(c_size_t) :: m
+    m = fricreg_disk_ctx_size(self%ptr)
+    status = self%ready('set_stribeck', 'context')
+    if (status /= FRICREG_OK) return
+    if (.not. (present(fs) .or. present(fk) .or. present(vs) .or. present(delta))) then
+      status = self%record(fricreg_disk_ctx_set_stribeck(self%ptr, 0_c_size_t))
+      return
+    end if
+    if (present(fs)) status = self%check_size('set_stribeck', 'fs', size(fs), m)
+    if (status == FRICREG_OK .and. present(fk)) &
+      status = self%check_size('set_stribeck', 'fk', size(fk), m)
+    if (status == FRICREG_OK .and. present(vs)) &
+      status = self%check_size('set_stribeck', 'vs', size(vs), m)
+    if (status == FRICREG_OK .and. present(delta)) &
+      status = self%check_size('set_stribeck', 'delta', size(delta), m)
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_disk_ctx_set_stribeck(self%ptr, m, fs, fk, vs, delta))
+  end function dctx_set_stribeck
 
   !> Block diagonal W: w(2, 2, m), w(:, :, i) contact i's symmetric positive definite block
   !> (symmetric, so Fortran's order is C's; a block that is not is FRICREG_ENOTSYM).

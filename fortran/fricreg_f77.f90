@@ -342,6 +342,20 @@ subroutine frdbnd(h, m, mun, stat)
   stat = int(fricreg_disk_ctx_set_bounds(fricreg_handle_to_ptr(h), int(m, c_size_t), mun))
 end subroutine frdbnd
 
+!> FRDSTR(H, M, FS, FK, VS, DELTA, STAT): Stribeck friction in the 2-D context H, each of FS,
+!> FK, VS, DELTA of length M (fricreg_disk_ctx_set_stribeck); M = 0 switches it off (the arrays
+!> are not read: pass any).
+subroutine frdstr(h, m, fs, fk, vs, delta, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m
+  double precision, intent(in) :: fs(*), fk(*), vs(*), delta(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_disk_ctx_set_stribeck(fricreg_handle_to_ptr(h), int(m, c_size_t), fs, fk, &
+                                           vs, delta))
+end subroutine frdstr
+
 !> FRDCPB(H, M, W, STAT): block diagonal coupling W(2, 2, M), W(:, :, I) contact I's symmetric
 !> positive definite block (fricreg_disk_ctx_set_coupling_blocks).
 subroutine frdcpb(h, m, w, stat)

@@ -68,11 +68,16 @@ FRICREG_API size_t fricreg_disk_ctx_size(const fricreg_disk_ctx *ctx);
  *  nested laws have no coupled form here (the lens is not Lipschitz; the nested law is not a
  *  projection onto a set) and Coulomb needs no context: they are refused.
  *
+ *  FRICREG_DISK_FORCE_BALANCE switches Stribeck friction (fricreg_disk_ctx_set_stribeck,
+ *  fricreg_stribeck.h) off; FRICREG_DISK_QUINN keeps it, with the new eps.
+ *
  *  Returns FRICREG_OK; FRICREG_ENULL if ctx is NULL; FRICREG_EINVAL for another law, or eps
  *  below DBL_MIN or above 1e250; FRICREG_ENONFINITE if eps is NaN or infinite. */
 FRICREG_API int fricreg_disk_ctx_set_law(fricreg_disk_ctx *ctx, int law, double eps);
 
-/** Set the friction bounds mun[m] = mu_i N_i (force units), 0 <= mun_i <= 1e250.
+/** Set the friction bounds mun[m] = mu_i N_i (force units), 0 <= mun_i <= 1e250. Switches
+ *  Stribeck friction (fricreg_disk_ctx_set_stribeck, fricreg_stribeck.h) off: these bounds
+ *  replace it.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if m differs from the context's;
  *  FRICREG_ENONFINITE; FRICREG_EINVAL if some mun[i] < 0 or > 1e250. */

@@ -25,6 +25,7 @@
 #define FRICREG_STRIBECK_H
 
 #include "fricreg.h"
+#include "fricreg_disk_ctx.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -144,6 +145,58 @@ FRICREG_API int fricreg_stribeck_disk_eval_batch(double eps, size_t m, const dou
 FRICREG_API int fricreg_ctx_set_stribeck(fricreg_ctx *ctx, size_t m, const double fs[],
                                          const double fk[], const double vs[],
                                          const double delta[]);
+
+/** Static > kinetic (Stribeck) friction for the m contacts of a 2-D context
+ *  (fricreg_disk_ctx.h, fricreg_disk_ctx_eval), each with its own parameters: the 2-D law at
+ *  the top of this header, with the context's eps, under its coupling. Since 1.3
+ *  (FRICREG_1.3). Declared here with the other Stribeck entry points, so that this header is
+ *  where Stribeck friction is defined and offered; fricreg_disk_ctx.h keeps the Coulomb bounds.
+ *
+ *  What fricreg_disk_ctx_eval then computes: the law of fricreg_disk_ctx.h (FRICREG_DISK_QUINN)
+ *  with a bound that depends on the contact's own r_i = |zdot_i|, B_i = fs_i + (k_i(eps) -
+ *  fs_i) r_i/eps in the band r_i < eps, in place of mun_i: K_i is the disk of centre -a_i u_i
+ *  and radius B_i - a_i, a_i = B_i r_i/eps, b_i = a_free,i + W_ii c_i B_i (c_i = 2 zdot_i/eps),
+ *  the whole disk fs_i D at rest; outside the band the slip force -k_i(r_i) u_i, entering the
+ *  others' b through W. With isotropic blocks W_ii = w_i I (block-diagonal W) that is
+ *  fricreg_stribeck_disk_eval at (zdot_i, f_eq,i = -a_free,i/w_i) contact by contact, to
+ *  rounding; with a dense W the coupled QP on these disks (fricreg_disk_ctx.h), whose bounds
+ *  do not depend on f. So at rest (zdot = 0) it is Coulomb's coupled stick problem with the
+ *  static bounds fs: a contact whose f_eq,i stays within fs_i holds, at zero acceleration (to
+ *  the solver's tolerance), and breaks away when |f_eq,i| passes fs_i; f is continuous in
+ *  (zdot, a_free), across |zdot_j| = eps too. With fs = fk the numbers (f and tangent) are those
+ *  of fricreg_disk_ctx_set_bounds with mun = fk, bit for bit. fricreg_disk_ctx_tangent
+ *  includes the bound's motion with r_i: dB/dr = (k(eps) - fs)/eps in the band (at rest taken
+ *  along the direction the contact will slide, -f_i/|f_i|, as for the radius), the slip slope
+ *  -k'(r_i) u_i u_i^T outside it, and through W the near-stick forces' dependence on a sliding
+ *  contact's zdot. Each evaluation costs one pow and exp more per sliding contact.
+ *
+ *  How it combines with the other setters (each discards the tangent, as every setter does):
+ *   - this call selects FRICREG_DISK_QUINN and keeps the context's eps;
+ *   - fricreg_disk_ctx_set_law with FRICREG_DISK_QUINN changes eps and keeps Stribeck
+ *     friction; with FRICREG_DISK_FORCE_BALANCE it switches Stribeck friction off;
+ *   - fricreg_disk_ctx_set_bounds switches it off: the last of set_bounds and set_stribeck
+ *     decides the bounds. The bounds mun are kept, not changed, while Stribeck friction is on;
+ *   - m = 0 switches it off (the arrays are not read and may be NULL): the bounds mun of the
+ *     last fricreg_disk_ctx_set_bounds (or the defaults, 1).
+ *  It may be called before every evaluation (normal forces vary): O(m), plus m exp and pow
+ *  calls; the first call allocates 5 m doubles, kept until fricreg_disk_ctx_free.
+ *
+ *  ctx       the 2-D context.
+ *  m         the context's contact count, or 0 to switch Stribeck friction off.
+ *  fs[m]     static bounds mu_s,i N_i (force units), the holding forces; fk[i] <= fs[i] <= 1e250.
+ *  fk[m]     kinetic forces mu_k,i N_i >= 0 (force units), the limits of k_i for |v| -> inf.
+ *  vs[m]     Stribeck velocities > 0 (velocity units).
+ *  delta[m]  Stribeck exponents > 0 (1: exponential, 2: Gaussian decay).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if ctx is NULL or (m > 0) an array is NULL; FRICREG_ESIZE
+ *  if m is neither 0 nor the context's count; FRICREG_ENONFINITE if a number is NaN or
+ *  infinite (anywhere, checked first); FRICREG_EINVAL if some contact has fk < 0, fk > fs
+ *  (kinetic above static), fs > 1e250, vs <= 0 or delta <= 0; FRICREG_ENOMEM. On failure the
+ *  context is unchanged (its law, eps, bounds and Stribeck parameters), and the error is
+ *  recorded in it. */
+FRICREG_API int fricreg_disk_ctx_set_stribeck(fricreg_disk_ctx *ctx, size_t m, const double fs[],
+                                              const double fk[], const double vs[],
+                                              const double delta[]);
 
 #ifdef __cplusplus
 }

@@ -74,6 +74,7 @@ void fricreg_disk_ctx_free(fricreg_disk_ctx *ctx)
     free(ctx->mun), free(ctx->eig), free(ctx->blk), free(ctx->W);
     free(ctx->f), free(ctx->f_last), free(ctx->g), free(ctx->p), free(ctx->u);
     free(ctx->r), free(ctx->radius), free(ctx->lam), free(ctx->kind), free(ctx->near);
+    free(ctx->bound), free(ctx->strib), free(ctx->strib_keps);
     free(ctx->row), free(ctx->mrow);
     brent_free(ctx->brent);
     free(ctx);
@@ -102,14 +103,15 @@ int fricreg_disk_ctx_create(size_t m, fricreg_disk_ctx **out)
     ctx->r = malloc(m * sizeof *ctx->r);
     ctx->radius = malloc(m * sizeof *ctx->radius);
     ctx->lam = malloc(m * sizeof *ctx->lam);
+    ctx->bound = malloc(m * sizeof *ctx->bound);
     ctx->kind = malloc(m * sizeof *ctx->kind);
     ctx->near = malloc(m * sizeof *ctx->near);
     ctx->row = malloc(m * sizeof *ctx->row);
     ctx->mrow = malloc(m * sizeof *ctx->mrow);
     ctx->brent = brent_new();
     if (!ctx->mun || !ctx->eig || !ctx->blk || !ctx->f || !ctx->f_last || !ctx->g || !ctx->p ||
-        !ctx->u || !ctx->r || !ctx->radius || !ctx->lam || !ctx->kind || !ctx->near || !ctx->row ||
-        !ctx->mrow || !ctx->brent || alloc_kkt(ctx, 3) != FRICREG_OK) {
+        !ctx->u || !ctx->r || !ctx->radius || !ctx->lam || !ctx->bound || !ctx->kind ||
+        !ctx->near || !ctx->row || !ctx->mrow || !ctx->brent || alloc_kkt(ctx, 3) != FRICREG_OK) {
         fricreg_disk_ctx_free(ctx);
         return FRICREG_ENOMEM;
     }
@@ -142,6 +144,9 @@ int fricreg_disk_ctx_set_law(fricreg_disk_ctx *ctx, int law, double eps)
                             eps);
     ctx->law = law;
     ctx->eps = eps;
+    if (law != FRICREG_DISK_QUINN) /* Stribeck friction is FRICREG_DISK_QUINN's, with its bound */
+        ctx->stribeck = 0;
+    fr_disk_stribeck_refresh(ctx); /* k(eps) for the new eps */
     ctx->last_valid = 0;
     return FRICREG_OK;
 }
@@ -173,6 +178,7 @@ int fricreg_disk_ctx_set_bounds(fricreg_disk_ctx *ctx, size_t m, const double mu
             return fr_disk_fail(ctx, FRICREG_EINVAL, "set_bounds: mun[%zu] = %g not in [0, 1e250]",
                                 i, mun[i]);
     memcpy(ctx->mun, mun, m * sizeof *mun);
+    ctx->stribeck = 0; /* the bounds mun replace Stribeck friction's */
     ctx->last_valid = 0;
     return FRICREG_OK;
 }

@@ -11,6 +11,7 @@
 #include "disk_block.h"
 #include "error.h"
 #include "fricreg_disk_ctx.h"
+#include "law_stribeck.h"
 
 #define FR_DISK_CTX_MAX ((size_t)1 << 24)
 
@@ -39,6 +40,7 @@ struct fricreg_disk_ctx {
     double *r;         /* [m] |zdot_i| */
     double *radius;    /* [m] mun_i - a_i */
     double *lam;       /* [m] the circle's multiplier (stationarity W_ii(f-h) + lam (f+p) = 0) */
+    double *bound;     /* [m] the bound the law used: mun_i, or the Stribeck bound at |zdot_i| */
     signed char *kind; /* [m] enum fr_disk_kind */
     size_t *near;      /* [m] indices of the near-stick contacts */
     size_t n_near;
@@ -52,9 +54,21 @@ struct fricreg_disk_ctx {
     size_t *row;  /* [m] first KKT row of each near-stick contact; its multiplier's row */
     size_t *mrow; /* [m] */
 
+    /* Stribeck friction (fricreg_disk_ctx_set_stribeck, disk_stribeck.c): allocated at the
+     * first set-up, kept until free. */
+    int stribeck;              /* on: FRICREG_DISK_QUINN with the Stribeck bound */
+    struct fr_stribeck *strib; /* [m] each contact's fs, fk, vs, delta */
+    double *strib_keps;        /* [m] k(eps), refreshed when eps changes */
+
     gsl_root_fsolver *brent; /* on fricreg's memory (disk_ctx.c): no GSL allocator */
     struct fr_error err;
 };
+
+/* disk_stribeck.c: contact i's bound at speed r = |zdot_i| (mun_i without Stribeck friction);
+ * its slope d bound/d r (0 without); k(eps) after eps changed; Stribeck friction off. */
+double fr_disk_bound(const fricreg_disk_ctx *ctx, size_t i, double r);
+double fr_disk_bound_slope(const fricreg_disk_ctx *ctx, size_t i, double r);
+void fr_disk_stribeck_refresh(fricreg_disk_ctx *ctx);
 
 #define fr_disk_fail(ctx, ...) fr_error_set(&(ctx)->err, __VA_ARGS__)
 

@@ -93,7 +93,7 @@ static double newton_step(fricreg_disk_ctx *ctx, size_t n)
         size_t i = ctx->near[k], ri = ctx->row[i];
         ctx->f[2 * i] += ctx->col[ri];
         ctx->f[2 * i + 1] += ctx->col[ri + 1];
-        moved = fmax(moved, hypot(ctx->col[ri], ctx->col[ri + 1]) / ctx->mun[i]);
+        moved = fmax(moved, hypot(ctx->col[ri], ctx->col[ri + 1]) / ctx->bound[i]);
         if (ctx->kind[i] == FR_DISK_CIRCLE)
             ctx->lam[i] += ctx->col[ctx->mrow[i]];
     }

@@ -17,9 +17,10 @@
 /* Sorts contact i: fixed (its force written to ctx->f) or near stick (centre -p, radius). */
 static void classify(fricreg_disk_ctx *ctx, size_t i, const double v[2])
 {
-    double mun = ctx->mun[i], r = hypot(v[0], v[1]);
+    double r = hypot(v[0], v[1]), mun = fr_disk_bound(ctx, i, r); /* Stribeck: B_i(r) */
     double *p = ctx->p + 2 * i, *u = ctx->u + 2 * i, *f = ctx->f + 2 * i;
     ctx->r[i] = r;
+    ctx->bound[i] = mun;
     u[0] = r > 0.0 ? v[0] / r : 0.0;
     u[1] = r > 0.0 ? v[1] / r : 0.0;
     p[0] = p[1] = 0.0;
@@ -62,7 +63,7 @@ static double solve_contact(fricreg_disk_ctx *ctx, size_t i, const double g[2])
     int on = fr_disk_block_solve(&ctx->eig[i], g, ctx->p + 2 * i, ctx->radius[i], ctx->brent, f,
                                  &ctx->lam[i]);
     ctx->kind[i] = on ? FR_DISK_CIRCLE : FR_DISK_FREE;
-    return hypot(f[0] - old0, f[1] - old1) / ctx->mun[i];
+    return hypot(f[0] - old0, f[1] - old1) / ctx->bound[i];
 }
 
 /* One sweep over the near-stick contacts; *moved gets the largest change over its bound. */

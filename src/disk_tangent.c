@@ -23,27 +23,38 @@
 
 #define PIVOT_RTOL 1e-13
 
-/* d p_i / d zdot_i = slope I (p = mun zdot/eps inside the band and at rest). */
-static double slope(const fricreg_disk_ctx *ctx, size_t i)
+/* d p_i / d zdot_i, row-major 2x2: p = B zdot/eps (FRICREG_DISK_QUINN in the band and at
+ * rest; 0 for the force balance) with the bound B = mun, or the Stribeck bound B(|zdot|),
+ * whose slope B' adds (|zdot|/eps) B' u u^T (0 at rest). */
+static void centre_jacobian(const fricreg_disk_ctx *ctx, size_t i, double P[4])
 {
-    return ctx->law == FRICREG_DISK_QUINN ? ctx->mun[i] / ctx->eps : 0.0;
+    double s = ctx->law == FRICREG_DISK_QUINN ? ctx->bound[i] / ctx->eps : 0.0;
+    double q = ctx->law == FRICREG_DISK_QUINN && ctx->r[i] > 0.0
+                   ? (ctx->r[i] / ctx->eps) * fr_disk_bound_slope(ctx, i, ctx->r[i])
+                   : 0.0;
+    const double *u = ctx->u + 2 * i;
+    P[0] = s + q * u[0] * u[0], P[1] = q * u[0] * u[1];
+    P[2] = P[1], P[3] = s + q * u[1] * u[1];
 }
 
-/* df_i/dzdot_i of a fixed contact: -(mun/|v|)(I - u u^T) sliding, -slope I on a point K_i,
- * 0 for mun = 0. */
+/* df_i/dzdot_i of a fixed contact: sliding, d(-B u) = -(B/|v|)(I - u u^T) - B'(|v|) u u^T
+ * (B' = k' for Stribeck friction, else 0); -dp/dzdot on a point K_i; 0 for a bound 0. */
 static void fixed_jacobian(const fricreg_disk_ctx *ctx, size_t i, double D[4])
 {
-    double mun = ctx->mun[i], r = ctx->r[i];
+    double mun = ctx->bound[i], r = ctx->r[i];
     const double *u = ctx->u + 2 * i;
     int slides = ctx->law == FRICREG_DISK_QUINN ? r >= ctx->eps : r > 0.0;
     if (mun == 0.0) {
         D[0] = D[1] = D[2] = D[3] = 0.0;
     } else if (slides) {
-        double k = -mun / r;
-        D[0] = k * (1.0 - u[0] * u[0]), D[1] = -k * u[0] * u[1];
-        D[2] = D[1], D[3] = k * (1.0 - u[1] * u[1]);
+        double k = -mun / r, kr = -fr_disk_bound_slope(ctx, i, r);
+        D[0] = k * (1.0 - u[0] * u[0]) + kr * u[0] * u[0];
+        D[1] = -k * u[0] * u[1] + kr * u[0] * u[1];
+        D[2] = D[1], D[3] = k * (1.0 - u[1] * u[1]) + kr * u[1] * u[1];
     } else {
-        D[0] = D[3] = -slope(ctx, i), D[1] = D[2] = 0.0;
+        double P[4];
+        centre_jacobian(ctx, i, P);
+        D[0] = -P[0], D[1] = -P[1], D[2] = -P[2], D[3] = -P[3];
     }
 }
 
@@ -136,15 +147,26 @@ static void parameter_column(fricreg_disk_ctx *ctx, size_t n, size_t j, int b, i
         c[rj + b] = -1.0;
         return;
     }
-    double s = slope(ctx, j);
-    for (int a = 0; a < 2; a++) /* d/dp of 2 W_jj p_j + lam (f_j + p_j) */
-        c[rj + a] = -s * (2.0 * ctx->blk[4 * j + 2 * a + b] + (a == b ? ctx->lam[j] : 0.0));
+    double P[4];
+    centre_jacobian(ctx, j, P);
+    for (int a = 0; a < 2; a++) { /* d/dp of 2 W_jj p_j + lam (f_j + p_j), times dp/dzdot */
+        double w = 0.0;
+        for (int e = 0; e < 2; e++)
+            w += (2.0 * ctx->blk[4 * j + 2 * a + e] + (a == e ? ctx->lam[j] : 0.0)) * P[2 * e + b];
+        c[rj + a] = -w;
+    }
     if (ctx->kind[j] == FR_DISK_CIRCLE) {
-        /* n^T df = d radius - n^T dp = -s (u + n)^T dzdot; at rest u := -n, so 0. */
+        /* n^T df = d radius - n^T dp, radius = B (1 - r/eps), r = |zdot_j|:
+         * d radius = (B' (1 - r/eps) - B/eps) u^T dzdot; at rest u := -n (the direction the
+         * contact will slide), where the constant bound's terms cancel. */
         double nv[2];
         normal(ctx, j, nv);
-        double ub = ctx->r[j] > 0.0 ? ctx->u[2 * j + b] : -nv[b];
-        c[ctx->mrow[j]] = -s * (ub + nv[b]);
+        double r = ctx->r[j], rho = ctx->law == FRICREG_DISK_QUINN ? r / ctx->eps : 0.0;
+        double ub = r > 0.0 ? ctx->u[2 * j + b] : -nv[b];
+        double s = ctx->law == FRICREG_DISK_QUINN ? ctx->bound[j] / ctx->eps : 0.0;
+        double dB = ctx->law == FRICREG_DISK_QUINN ? fr_disk_bound_slope(ctx, j, r) : 0.0;
+        double d_radius = (dB * (1.0 - rho) - s) * ub;
+        c[ctx->mrow[j]] = d_radius - (nv[0] * P[b] + nv[1] * P[2 + b]);
     }
 }
 
@@ -243,11 +265,16 @@ static void tangent_blocks(fricreg_disk_ctx *ctx, double *dz, double *da)
 static int check_slopes(fricreg_disk_ctx *ctx)
 {
     for (size_t i = 0; i < ctx->m; i++) {
-        double D[4];
+        double D[4], P[4];
         fixed_jacobian(ctx, i, D);
-        if (!isfinite(slope(ctx, i)) || !isfinite(D[0]) || !isfinite(D[1]) || !isfinite(D[3]))
+        centre_jacobian(ctx, i, P);
+        double dB = fr_disk_bound_slope(ctx, i, ctx->r[i]);
+        if (!isfinite(P[0]) || !isfinite(P[1]) || !isfinite(P[3]) || !isfinite(dB) ||
+            !isfinite(D[0]) || !isfinite(D[1]) || !isfinite(D[3]))
             return fr_disk_fail(ctx, FRICREG_ENONFINITE,
-                                "tangent: contact %zu's slope mun/eps or mun/|zdot| overflows", i);
+                                "tangent: contact %zu's slope mun/eps, mun/|zdot| or the "
+                                "Stribeck bound's overflows",
+                                i);
     }
     return FRICREG_OK;
 }

@@ -34,6 +34,7 @@
 
 #include "fricreg.h"
 #include "fricreg_disk_ctx.h"
+#include "fricreg_stribeck.h"
 #include "fricreg_exact.h"
 #include "fricreg_sim.h"
 #include "fricreg_structure.h"
@@ -313,6 +314,13 @@ static int w_dctx_tangent(void)
 static int w_dctx_tangent_no_output(void)
 {
     return fricreg_disk_ctx_tangent(DCTX(), 1, NULL, NULL);
+}
+
+static int w_dctx_set_stribeck(void)
+{
+    const double fs[1] = {0.5}, fk[1] = {0.3}, vs[1] = {0.01}, delta[1] = {1.0};
+    return fricreg_disk_ctx_set_stribeck(DCTX(), Z(0, 1), A(1, fs, 1), A(2, fk, 1), A(3, vs, 1),
+                                         A(4, delta, 1));
 }
 
 /* exact */
@@ -716,6 +724,17 @@ static const struct row rows[] = {
      "0sign",
      DCTX_REC,
      {PTR(8, "0")}},
+    /* fricreg_stribeck.h: the 2-D context's Stribeck friction (m = 0 switches it off) */
+    {"fricreg_disk_ctx_set_stribeck",
+     w_dctx_set_stribeck,
+     "0snim",
+     DCTX_REC,
+     {HANDLE, SIZE(0, "osss"), PTR(1, "0"), ARR(1, "nniiii"), PTR(2, "0"), ARR(2, "nniooi")}},
+    {"fricreg_disk_ctx_set_stribeck (vs, delta)",
+     w_dctx_set_stribeck,
+     "0snim",
+     DCTX_REC,
+     {PTR(3, "0"), ARR(3, "nniioo"), PTR(4, "0"), ARR(4, "nniioo")}},
     /* fricreg_exact.h */
     {"fricreg_exact_solve",
      w_exact_solve,

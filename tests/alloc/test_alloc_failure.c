@@ -33,6 +33,7 @@
 #include "fricreg_disk_ctx.h"
 #include "fricreg_exact.h"
 #include "fricreg_sim.h"
+#include "fricreg_stribeck.h"
 #include "fricreg_structure.h"
 
 /* ---- The allocator hook ------------------------------------------------------------------ */
@@ -237,6 +238,27 @@ static int disk_ctx_dense(void)
         if (status != FRICREG_OK && fricreg_disk_ctx_errcode(ctx) != status)
             NOTE("disk set_coupling_dense: status %d, errcode %d", status,
                  fricreg_disk_ctx_errcode(ctx));
+    }
+    fricreg_disk_ctx_free(ctx);
+    return status;
+}
+
+/* Stribeck friction in a 2-D context (fricreg_disk_ctx_set_stribeck allocates at its first
+ * call); a failure must leave the context as it was, recorded. */
+static const double strib_fs[M_DENSE] = {0.5, 1.25, 0.75, 2.0, 0.875};
+static const double strib_fk[M_DENSE] = {0.25, 1.0, 0.75, 0.5, 0.5};
+static const double strib_vs[M_DENSE] = {0.01, 0.02, 0.005, 0.04, 0.01};
+static const double strib_delta[M_DENSE] = {1.0, 2.0, 0.5, 1.0, 1.5};
+
+static int disk_ctx_stribeck(void)
+{
+    fricreg_disk_ctx *ctx = NULL;
+    int status = fricreg_disk_ctx_create(M_DENSE, &ctx);
+    if (status == FRICREG_OK) {
+        status = fricreg_disk_ctx_set_stribeck(ctx, M_DENSE, strib_fs, strib_fk, strib_vs,
+                                               strib_delta);
+        if (status != FRICREG_OK && fricreg_disk_ctx_errcode(ctx) != status)
+            NOTE("disk set_stribeck: status %d, errcode %d", status, fricreg_disk_ctx_errcode(ctx));
     }
     fricreg_disk_ctx_free(ctx);
     return status;
@@ -557,6 +579,40 @@ START_TEST(test_disk_eval_does_not_allocate)
 }
 END_TEST
 
+START_TEST(test_disk_ctx_set_stribeck)
+{
+    struct tally t = fail_each_allocation("disk_ctx_set_stribeck", disk_ctx_stribeck);
+    ck_assert_int_eq(t.enomem, t.cases);
+}
+END_TEST
+
+/* With Stribeck friction too, eval and tangent allocate nothing (contacts at rest, in the band
+ * and sliding, dense W). */
+START_TEST(test_disk_stribeck_eval_does_not_allocate)
+{
+    double W[4 * M_DENSE * M_DENSE], f[2 * M_DENSE], T[4 * M_DENSE * M_DENSE];
+    disk_dense_w(W);
+    const double zdot[2 * M_DENSE] = {1e-5, 2e-3, -0.375, 0.0, 0.0, 0.0, 0.0, 1e-3, 1.875, 0.5};
+    const double a_free[2 * M_DENSE] = {0.9375, -3.25, 0.0625, 1.625, -0.4375,
+                                        0.25,   2.0,   -1.0,   0.5,   0.125};
+    fricreg_disk_ctx *ctx = NULL;
+    ck_assert_int_eq(fricreg_disk_ctx_create(M_DENSE, &ctx), FRICREG_OK);
+    ck_assert_int_eq(fricreg_disk_ctx_set_coupling_dense(ctx, M_DENSE, W), FRICREG_OK);
+    ck_assert_int_eq(fricreg_disk_ctx_set_law(ctx, FRICREG_DISK_QUINN, 0.02), FRICREG_OK);
+    ck_assert_int_eq(fricreg_disk_ctx_set_stribeck(ctx, M_DENSE, strib_fs, strib_fk, strib_vs,
+                                                   strib_delta),
+                     FRICREG_OK);
+    hook_arm(1); /* the first request would fail: none may be made */
+    int status = fricreg_disk_ctx_eval(ctx, M_DENSE, zdot, a_free, f);
+    int tangent = fricreg_disk_ctx_tangent(ctx, M_DENSE, T, T);
+    hook_disarm();
+    ck_assert_int_eq(status, FRICREG_OK);
+    ck_assert_int_eq(tangent, FRICREG_OK);
+    ck_assert_msg(n_allocs == 0, "disk Stribeck eval and tangent made %ld allocations", n_allocs);
+    fricreg_disk_ctx_free(ctx);
+}
+END_TEST
+
 /* One stepper of each family: fricreg's classical RK4 (fixed steps), GSL's embedded explicit
  * rkf45 (adaptive), implicit Gaussian rk4imp, Bulirsch-Stoer bsimp, multistep msbdf. */
 static const int integrators[] = {FRICREG_INT_RK4, FRICREG_INT_RKF45, FRICREG_INT_RK4IMP,
@@ -651,6 +707,8 @@ static Suite *alloc_suite(void)
     tcase_add_test(core, test_structure_steps_do_not_allocate);
     tcase_add_test(core, test_disk_ctx_set_coupling_dense);
     tcase_add_test(core, test_disk_eval_does_not_allocate);
+    tcase_add_test(core, test_disk_ctx_set_stribeck);
+    tcase_add_test(core, test_disk_stribeck_eval_does_not_allocate);
     suite_add_tcase(s, core);
     TCase *drivers = tcase_create("drivers");
     tcase_add_loop_test(drivers, test_sim_run, 0, (int)(3 * N_INTEGRATORS));
