@@ -316,6 +316,14 @@ static int w_dctx_tangent_no_output(void)
     return fricreg_disk_ctx_tangent(DCTX(), 1, NULL, NULL);
 }
 
+static int w_ctx_set_stribeck(void)
+{
+    const double fs[2] = {0.5, 0.25}, fk[2] = {0.3, 0.2}, vs[2] = {0.01, 0.02},
+                 delta[2] = {1.0, 2.0};
+    return fricreg_ctx_set_stribeck(CTX(), Z(0, 2), A(1, fs, 2), A(2, fk, 2), A(3, vs, 2),
+                                    A(4, delta, 2));
+}
+
 static int w_dctx_set_stribeck(void)
 {
     const double fs[1] = {0.5}, fk[1] = {0.3}, vs[1] = {0.01}, delta[1] = {1.0};
@@ -724,6 +732,17 @@ static const struct row rows[] = {
      "0sign",
      DCTX_REC,
      {PTR(8, "0")}},
+    /* fricreg_stribeck.h: the 1-D context's Stribeck friction (m = 0 switches it off) */
+    {"fricreg_ctx_set_stribeck",
+     w_ctx_set_stribeck,
+     "0snim",
+     CTX_REC,
+     {HANDLE, SIZE(0, "osss"), PTR(1, "0"), ARR(1, "nniiio"), PTR(2, "0"), ARR(2, "nniooi")}},
+    {"fricreg_ctx_set_stribeck (vs, delta)",
+     w_ctx_set_stribeck,
+     "0snim",
+     CTX_REC,
+     {PTR(3, "0"), ARR(3, "nniioo"), PTR(4, "0"), ARR(4, "nniioo")}},
     /* fricreg_stribeck.h: the 2-D context's Stribeck friction (m = 0 switches it off) */
     {"fricreg_disk_ctx_set_stribeck",
      w_dctx_set_stribeck,

@@ -264,6 +264,28 @@ static int disk_ctx_stribeck(void)
     return status;
 }
 
+/* Stribeck friction in a 1-D context with a dense W (fricreg_ctx_set_stribeck allocates at
+ * its first call), then one evaluation, which must allocate nothing more. */
+static int ctx_stribeck(void)
+{
+    double W[M_DENSE * M_DENSE], f[M_DENSE];
+    const double zdot[M_DENSE] = {0.0, 1e-3, -0.5, 0.0, 2e-4}, a_free[M_DENSE] = {0.1, -0.2};
+    dense_w(W);
+    fricreg_ctx *ctx = NULL;
+    int status = fricreg_ctx_create(M_DENSE, &ctx);
+    if (status == FRICREG_OK)
+        status = fricreg_ctx_set_coupling_dense(ctx, M_DENSE, W);
+    if (status == FRICREG_OK) {
+        status = fricreg_ctx_set_stribeck(ctx, M_DENSE, strib_fs, strib_fk, strib_vs, strib_delta);
+        if (status != FRICREG_OK && fricreg_ctx_errcode(ctx) != status)
+            NOTE("set_stribeck: status %d, errcode %d", status, fricreg_ctx_errcode(ctx));
+    }
+    if (status == FRICREG_OK)
+        status = fricreg_ctx_eval(ctx, M_DENSE, zdot, a_free, f, NULL);
+    fricreg_ctx_free(ctx);
+    return status;
+}
+
 /* The step guard's eigenvalue problem: the paper's partition with a dense W (stiffness.c). */
 static int ctx_stick_stiffness(void)
 {
@@ -579,6 +601,13 @@ START_TEST(test_disk_eval_does_not_allocate)
 }
 END_TEST
 
+START_TEST(test_ctx_set_stribeck)
+{
+    struct tally t = fail_each_allocation("ctx_set_stribeck", ctx_stribeck);
+    ck_assert_int_eq(t.enomem, t.cases);
+}
+END_TEST
+
 START_TEST(test_disk_ctx_set_stribeck)
 {
     struct tally t = fail_each_allocation("disk_ctx_set_stribeck", disk_ctx_stribeck);
@@ -707,6 +736,7 @@ static Suite *alloc_suite(void)
     tcase_add_test(core, test_structure_steps_do_not_allocate);
     tcase_add_test(core, test_disk_ctx_set_coupling_dense);
     tcase_add_test(core, test_disk_eval_does_not_allocate);
+    tcase_add_test(core, test_ctx_set_stribeck);
     tcase_add_test(core, test_disk_ctx_set_stribeck);
     tcase_add_test(core, test_disk_stribeck_eval_does_not_allocate);
     suite_add_tcase(s, core);
