@@ -54,23 +54,17 @@ static int check_parameters(fricreg_disk_ctx *ctx, size_t m, const double fs[], 
     if (m != ctx->m)
         return fr_disk_fail(ctx, FRICREG_ESIZE, "%s: m = %zu, context has %zu contacts", who, m,
                             ctx->m);
-    if (!fs || !fk || !vs || !delta)
-        return fr_disk_fail(ctx, FRICREG_ENULL, "%s: %s is NULL", who,
-                            !fs   ? "fs"
-                            : !fk ? "fk"
-                            : !vs ? "vs"
-                                  : "delta");
-    for (size_t i = 0; i < m; i++)
-        if (!isfinite(fs[i]) || !isfinite(fk[i]) || !isfinite(vs[i]) || !isfinite(delta[i]))
-            return fr_disk_fail(ctx, FRICREG_ENONFINITE,
-                                "%s: contact %zu: a parameter is not finite", who, i);
-    for (size_t i = 0; i < m; i++)
-        if (!(fk[i] >= 0.0 && fk[i] <= fs[i] && fs[i] <= FR_DISK_MAX && vs[i] > 0.0 &&
-              delta[i] > 0.0))
-            return fr_disk_fail(ctx, FRICREG_EINVAL,
-                                "%s: contact %zu: fs = %g, fk = %g, vs = %g, delta = %g: need "
-                                "0 <= fk <= fs <= 1e250, vs > 0, delta > 0",
-                                who, i, fs[i], fk[i], vs[i], delta[i]);
+    size_t i = 0;
+    int status = fr_stribeck_check(m, fs, fk, vs, delta, FR_DISK_MAX, &i);
+    if (status == FRICREG_ENULL)
+        return fr_disk_fail(ctx, status, "%s: %s is NULL", who, fr_stribeck_names[i]);
+    if (status == FRICREG_ENONFINITE)
+        return fr_disk_fail(ctx, status, "%s: contact %zu: a parameter is not finite", who, i);
+    if (status == FRICREG_EINVAL)
+        return fr_disk_fail(ctx, status,
+                            "%s: contact %zu: fs = %g, fk = %g, vs = %g, delta = %g: need "
+                            "0 <= fk <= fs <= 1e250, vs > 0, delta > 0",
+                            who, i, fs[i], fk[i], vs[i], delta[i]);
     return FRICREG_OK;
 }
 

@@ -137,3 +137,27 @@ int fricreg_stribeck_disk_eval_batch(double eps, size_t m, const double v[], con
 {
     return stribeck_batch(2, eps, m, v, f_eq, fs, fk, vs, delta, f);
 }
+
+const char *const fr_stribeck_names[4] = {"fs", "fk", "vs", "delta"};
+
+int fr_stribeck_check(size_t m, const double fs[], const double fk[], const double vs[],
+                      const double delta[], double fs_max, size_t *bad)
+{
+    const double *arrays[4] = {fs, fk, vs, delta};
+    for (size_t k = 0; k < 4; k++)
+        if (arrays[k] == NULL) {
+            *bad = k;
+            return FRICREG_ENULL;
+        }
+    for (size_t i = 0; i < m; i++)
+        if (!isfinite(fs[i]) || !isfinite(fk[i]) || !isfinite(vs[i]) || !isfinite(delta[i])) {
+            *bad = i;
+            return FRICREG_ENONFINITE;
+        }
+    for (size_t i = 0; i < m; i++)
+        if (!(fk[i] >= 0.0 && fk[i] <= fs[i] && fs[i] <= fs_max && vs[i] > 0.0 && delta[i] > 0.0)) {
+            *bad = i;
+            return FRICREG_EINVAL;
+        }
+    return FRICREG_OK;
+}

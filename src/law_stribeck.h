@@ -6,6 +6,7 @@
 #define FRICREG_LAW_STRIBECK_INTERNAL_H
 
 #include <math.h>
+#include <stddef.h>
 
 /* One contact's parameters: static bound fs, kinetic fk <= fs, Stribeck velocity vs > 0,
  * exponent delta > 0. */
@@ -42,5 +43,16 @@ static inline double fr_stribeck_band_bound(const struct fr_stribeck *p, double 
 {
     return p->fs + (k_eps - p->fs) * rho;
 }
+
+/* The contexts' check of per-contact parameters (fricreg_ctx_set_stribeck,
+ * fricreg_disk_ctx_set_stribeck), in fricreg_stribeck_eval's order: FRICREG_ENULL if an array
+ * is NULL (*bad: which, 0 = fs … 3 = delta), then FRICREG_ENONFINITE if any number is NaN or
+ * infinite, then FRICREG_EINVAL for the first contact outside 0 <= fk <= fs <= fs_max,
+ * vs > 0, delta > 0 (*bad: that contact in both); FRICREG_OK otherwise. */
+int fr_stribeck_check(size_t m, const double fs[], const double fk[], const double vs[],
+                      const double delta[], double fs_max, size_t *bad);
+
+/* The names of the arrays, by fr_stribeck_check's *bad for FRICREG_ENULL. */
+extern const char *const fr_stribeck_names[4];
 
 #endif
