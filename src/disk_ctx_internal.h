@@ -80,4 +80,19 @@ static inline double fr_disk_w(const fricreg_disk_ctx *ctx, size_t i, int a, siz
     return i == j ? ctx->blk[4 * i + 2 * (size_t)a + (size_t)b] : 0.0;
 }
 
+/* Rows of the KKT system of the near-stick contacts (the polish's Newton and the tangent):
+ * two per near-stick contact (ctx->row), then one multiplier row per contact on its circle
+ * (ctx->mrow); returns the order. */
+static inline size_t fr_disk_number_rows(fricreg_disk_ctx *ctx)
+{
+    size_t n = 2 * ctx->n_near;
+    for (size_t k = 0; k < ctx->n_near; k++) {
+        size_t i = ctx->near[k];
+        ctx->row[i] = 2 * k;
+        if (ctx->kind[i] == FR_DISK_CIRCLE)
+            ctx->mrow[i] = n++;
+    }
+    return n;
+}
+
 #endif

@@ -23,19 +23,6 @@
  * more than the sweeps it saves: Gauss-Seidel alone. */
 #define POLISH_MAX_NEAR 200
 
-/* Rows: two per near-stick contact, then one per circle contact; returns the order. */
-static size_t number_rows(fricreg_disk_ctx *ctx)
-{
-    size_t n = 2 * ctx->n_near;
-    for (size_t k = 0; k < ctx->n_near; k++) {
-        size_t i = ctx->near[k];
-        ctx->row[i] = 2 * k;
-        if (ctx->kind[i] == FR_DISK_CIRCLE)
-            ctx->mrow[i] = n++;
-    }
-    return n;
-}
-
 /* The KKT residual into ctx->col (negated: the Newton right-hand side) and the Jacobian
  * [[W_SS + diag(lam_i I), Y], [Y^T, 0]], Y the columns f_i + p_i, into ctx->kkt. */
 static void linearize(fricreg_disk_ctx *ctx, size_t n)
@@ -118,7 +105,7 @@ int fr_disk_polish(fricreg_disk_ctx *ctx)
 {
     if (ctx->n_near == 0 || ctx->n_near > POLISH_MAX_NEAR || 3 * ctx->n_near > ctx->kkt_max)
         return 0;
-    size_t n = number_rows(ctx);
+    size_t n = fr_disk_number_rows(ctx);
     memcpy(ctx->f_last, ctx->f, 2 * ctx->m * sizeof *ctx->f); /* to restore on failure */
     int ok = 0;
     double before = INFINITY;

@@ -67,20 +67,6 @@ static void normal(const fricreg_disk_ctx *ctx, size_t i, double n[2])
     n[1] = y1 / ny;
 }
 
-/* Rows of the KKT system: each near-stick contact's first row, each circle's multiplier row;
- * returns the order. */
-static size_t number_rows(fricreg_disk_ctx *ctx)
-{
-    size_t n = 2 * ctx->n_near;
-    for (size_t k = 0; k < ctx->n_near; k++) {
-        size_t i = ctx->near[k];
-        ctx->row[i] = 2 * k;
-        if (ctx->kind[i] == FR_DISK_CIRCLE)
-            ctx->mrow[i] = n++;
-    }
-    return n;
-}
-
 static void assemble(fricreg_disk_ctx *ctx, size_t n)
 {
     double *J = ctx->kkt;
@@ -209,7 +195,7 @@ static void fill_columns(fricreg_disk_ctx *ctx, size_t n, size_t j, int afree, d
  * *order gets its order. */
 static int prepare(fricreg_disk_ctx *ctx, size_t *order)
 {
-    size_t n = number_rows(ctx);
+    size_t n = fr_disk_number_rows(ctx);
     *order = n;
     if (n == 0)
         return FRICREG_OK;
