@@ -71,11 +71,18 @@ enum fricreg_integrator {
     FRICREG_INT_MSBDF = 11,   /**< variable-order BDF, for stiff problems */
     /** GSL's rk4 in fixed steps too (6 right-hand sides per step), to compare with
      *  FRICREG_INT_RK4. */
-    FRICREG_INT_RK4_GSL = 12
+    FRICREG_INT_RK4_GSL = 12,
+    /** explicit central differences (Newmark beta = 0, gamma = 1/2), fricreg's own, fixed steps
+     *  only: x1 = x + dt v + dt^2/2 a, a1 = a(x1, v*) with the velocity predictor
+     *  v* = v + dt a seen by the friction, v1 = v + dt (a + a1)/2; one right-hand side per
+     *  step, second order (src/central_step.c). Stable for (dt omega/2)^2 + dt lambda < 1
+     *  (fricreg_sim_run). Not for fricreg_structure_run_ode (the structure has its own
+     *  central difference). Since 1.3.0. */
+    FRICREG_INT_CENTRAL = 13
 };
 
-/** The name of an integrator: GSL's ("rk4", "msbdf", …), and "rk4-gsl" for
- *  FRICREG_INT_RK4_GSL; NULL if unknown. Static storage. */
+/** The name of an integrator: GSL's ("rk4", "msbdf", …), "rk4-gsl" for FRICREG_INT_RK4_GSL
+ *  and "central" for FRICREG_INT_CENTRAL; NULL if unknown. Static storage. */
 FRICREG_API const char *fricreg_integrator_name(int integrator);
 
 /** The integrator named `name` (as above). Returns its enum value, not a status: 0 if there
