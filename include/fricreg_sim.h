@@ -75,8 +75,8 @@ enum fricreg_integrator {
     /** explicit central differences (Newmark beta = 0, gamma = 1/2), fricreg's own, fixed steps
      *  only: x1 = x + dt v + dt^2/2 a, a1 = a(x1, v*) with the velocity predictor
      *  v* = v + dt a seen by the friction, v1 = v + dt (a + a1)/2; one right-hand side per
-     *  step, second order (src/central_step.c). Stable for (dt omega/2)^2 + dt lambda < 1
-     *  (fricreg_sim_run). Not for fricreg_structure_run_ode (the structure has its own
+     *  step, second order (src/central_step.c). Stable for (dt omega/2)^2 + dt lambda < 1;
+     *  the guard takes 0.9 (fricreg_sim_run). Not for fricreg_structure_run_ode (the structure has its own
      *  central difference). Since 1.3.0. */
     FRICREG_INT_CENTRAL = 13
 };
@@ -165,7 +165,7 @@ FRICREG_API int fricreg_sim_set_observer(fricreg_sim *sim, fricreg_sim_observer 
 /** Integrate from t = 0 and the initial conditions to t_end > 0 (replacing earlier results).
  *  D is recorded per forcing cycle of period 2 pi/omega (belt_omega for twoblock).
  *
- *  Before it starts, a fixed explicit step (rk2, rk4, rkf45, rkck, rk8pd, rk4-gsl) is checked,
+ *  Before it starts, a fixed explicit step (rk2, rk4, rkf45, rkck, rk8pd, rk4-gsl, central) is checked,
  *  omega being the system's highest natural frequency (1; 2n for the chain; sqrt(max(1, k))
  *  for the two blocks); each limit beyond is FRICREG_ESTEP, refused before any step:
  *   - the stick zone: dt * lambda must not exceed the stepper's stick-zone bound (rk2 2.5,
@@ -178,6 +178,11 @@ FRICREG_API int fricreg_sim_set_observer(fricreg_sim *sim, fricreg_sim_observer 
  *   - dt * omega within the stepper's imaginary-axis bound (rk2 1.73, rk4 2.82, rkf45 0.7,
  *     rkck 0.88, rk8pd 3.7) and within 1/sqrt 2, beyond which a friction reversal inside one
  *     step can put energy in (src/sim.c derives it).
+ *  Central differences (FRICREG_INT_CENTRAL) instead need (dt omega/2)^2 + dt lambda < 0.9,
+ *  the linear stability bound 1 of x'' = -omega^2 x - lambda x' (src/sim.c derives it) with a
+ *  margin for each cycle's shortened last step, and for the laws that jump also dt * lambda
+ *  <= 1 and dt * omega <= 1/sqrt 2, as above. For (4) this is dt * lambda < 0.9: the paper's
+ *  eps = 2 dt, dt * lambda = 2 mun W_ii / 2, is refused at every dt where mun W_ii >= 0.9.
  *  Under the paper's rule for eps (eps set to 0), eps is proportional to dt and dt * lambda does
  *  not depend on dt: a refusal by the stick zone then holds at every dt (e.g. the oscillator
  *  with mun = 3: dt * lambda = 3 > 2.78 for rk4), and the message says so and names the

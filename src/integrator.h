@@ -29,7 +29,7 @@ struct fr_integrator {
      * RK4 for rk4, which gives GSL rk4's numbers without its error estimate. */
     const gsl_odeiv2_step_type *(*fixed_type)(void);
     /* 1 for central differences (central_step.c): fixed steps only, on fricreg_sim's state
-     * layout (x, v, D), and one combined step bound (dt omega/2)^2 + dt lambda < 1 in place
+     * layout (x, v, D), and one combined step bound (dt omega/2)^2 + dt lambda < 0.9 in place
      * of the three columns above (src/sim.c, check_central_step). */
     int central;
 };
