@@ -123,15 +123,23 @@ static const double *contact_velocities(fricreg_sim *sim, double t, const double
 
 /* D's increment over the step (the file's comment), from the carried f and zdot and the new
  * f1 = sim->f and zdot1; then f1 and zdot1 are carried on. */
+enum { WORK_LANES = 4 }; /* partial sums: one running sum is a serial add per contact */
 static double dissipation_step(fricreg_sim *sim, struct central_state *s, double h,
-                               const double zdot1[])
+                               const double *restrict zdot1)
 {
-    double work = 0.0;
-    for (size_t i = 0; i < sim->m; i++) {
-        work += (s->f[i] + sim->f[i]) * (s->zdot[i] + zdot1[i]);
-        s->f[i] = sim->f[i];
-        s->zdot[i] = zdot1[i];
-    }
+    double *restrict f0 = s->f, *restrict zdot0 = s->zdot;
+    const double *restrict f1 = sim->f;
+    double lane[WORK_LANES] = {0.0}, work = 0.0;
+    size_t m = sim->m, i = 0;
+    for (; i + WORK_LANES <= m; i += WORK_LANES)
+        for (size_t l = 0; l < WORK_LANES; l++)
+            lane[l] += (f0[i + l] + f1[i + l]) * (zdot0[i + l] + zdot1[i + l]);
+    for (; i < m; i++)
+        lane[0] += (f0[i] + f1[i]) * (zdot0[i] + zdot1[i]);
+    for (size_t l = 0; l < WORK_LANES; l++)
+        work += lane[l];
+    memcpy(f0, f1, m * sizeof *f0);
+    memcpy(zdot0, zdot1, m * sizeof *zdot0);
     return -0.25 * h * sim->sys.type->dissipation_weight(&sim->sys) * work;
 }
 
