@@ -142,7 +142,8 @@ FRICREG_API int fricreg_sim_set_partition(fricreg_sim *sim, int partition);
  *  (fricreg_ctx_tangent) chained through the system's linear kinematics, one right-hand side
  *  per Jacobian, exact wherever the forces are differentiable.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown integrator, dt <= 0,
- *  rtol < 0 or atol < 0; FRICREG_ENONFINITE. */
+ *  rtol < 0 or atol < 0, or rtol or atol > 0 with FRICREG_INT_CENTRAL (fixed steps only);
+ *  FRICREG_ENONFINITE. */
 FRICREG_API int fricreg_sim_set_integrator(fricreg_sim *sim, int integrator, double dt, double rtol,
                                            double atol);
 

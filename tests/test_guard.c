@@ -6,7 +6,8 @@
  * 0.5x to 1.5x the largest dt the guard accepts (found by bisection on FRICREG_ESTEP, which is
  * refused before any step). Each run is judged by two checks:
  *
- *   energy: no step creates energy. With E the bodies' kinetic plus potential energy, W_in the
+ *   energy: no step creates energy. With E the bodies' kinetic plus potential energy (for
+ *     central differences the scheme's discrete invariant of its springs, see energy()), W_in the
  *     work put in by the forcing and D the dissipation the run integrates (its law's own power,
  *     which may be negative: Karnopp and (4) can push near a stick): E(t) + D(t) <= E(0) +
  *     W_in(t) + tol at every step, the balance that holds exactly in continuous time; for (1)
