@@ -166,9 +166,10 @@ FRICREG_API int fricreg_sim_set_observer(fricreg_sim *sim, fricreg_sim_observer 
 /** Integrate from t = 0 and the initial conditions to t_end > 0 (replacing earlier results).
  *  D is recorded per forcing cycle of period 2 pi/omega (belt_omega for twoblock).
  *
- *  Before it starts, a fixed explicit step (rk2, rk4, rkf45, rkck, rk8pd, rk4-gsl, central) is checked,
- *  omega being the system's highest natural frequency (1; 2n for the chain; sqrt(max(1, k))
- *  for the two blocks); each limit beyond is FRICREG_ESTEP, refused before any step:
+ *  Before it starts, a fixed explicit step (rk2, rk4, rkf45, rkck, rk8pd, rk4-gsl, central) is
+ *  checked, omega being the system's highest natural frequency (1; 2n for the chain;
+ *  sqrt(max(1, k)) for the two blocks); each limit beyond is FRICREG_ESTEP, refused before any
+ *  step:
  *   - the stick zone: dt * lambda must not exceed the stepper's stick-zone bound (rk2 2.5,
  *     rk4 2.78, rkf45 2.2, rkck 3.7, rk8pd 5.1; the negative real axis's, but rkf45's, whose
  *     stages overshoot the zone first), lambda the stiffness of fricreg_ctx_stick_stiffness
