@@ -41,9 +41,12 @@ enum kind { FIXED, ADAPTIVE, EVENT };
 
 /* Where an adaptive law run takes its eps from (method_eps). */
 enum eps_choice {
-    EPS_PROBLEM,  /* the problem's adaptive_eps, or extrap_eps when extrapolated */
-    EPS_TINY,     /* tiny_eps: problems whose motion never sticks */
-    EPS_DECLARED, /* extrap2_eps, extrapolated with the leading order declared */
+    EPS_PROBLEM,     /* the problem's adaptive_eps, or extrap_eps when extrapolated */
+    EPS_TINY,        /* tiny_eps: problems whose motion never sticks */
+    EPS_DECLARED,    /* extrap2_eps, extrapolated with the leading order declared */
+    EPS_TWICE_PAPER, /* fixed steps: twice the paper's rule (4 dt; the chain 20 omega dt), since
+                      * central differences' stick-zone bound dt*lambda < 0.9 refuses eps = 2 dt
+                      * wherever mun W_ii >= 0.9 (fricreg_sim.h) */
 };
 
 struct method {
@@ -90,6 +93,8 @@ static const struct method methods[] = {
     {"rk8pd/quinn(4)/extrap2", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 2,
      EPS_DECLARED},
     {"rk8pd/quinn(4)/tiny-eps", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 0, EPS_TINY},
+    /* explicit central differences, one friction evaluation per step (FRICREG_INT_CENTRAL) */
+    {"central/quinn(4)", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_CENTRAL, 0, 0, 0, EPS_TWICE_PAPER},
 #ifdef FRICREG_BENCH_CVODE
     {"cvode-bdf/event-driven", EVENT, 0, 0, ED_BDF, 0, 0, EPS_PROBLEM},
     {"cvode-adams/event-driven", EVENT, 0, 0, ED_ADAMS, 0, 0, EPS_PROBLEM},
@@ -162,11 +167,15 @@ static int applies(const struct method *m, const struct bench_problem *p)
 }
 
 /* The eps a law run of method m sets at sweep point k (0: the paper's rule, fixed steps). */
+static double paper_eps(const struct bench_problem *p, double dt)
+{
+    return p->system == FRICREG_SYSTEM_CHAIN ? 10.0 * p->omega * dt : 2.0 * dt;
+}
+
 static double method_eps(const struct method *m, const struct bench_problem *p, int k)
 {
-    (void)k;
     if (m->kind == FIXED)
-        return 0.0;
+        return m->eps_choice == EPS_TWICE_PAPER ? 2.0 * paper_eps(p, dts[k]) : 0.0;
     switch (m->eps_choice) {
     case EPS_TINY: return tiny_eps[p - bench_problems];
     case EPS_DECLARED: return extrap2_eps[p - bench_problems];
@@ -210,7 +219,7 @@ static void run_point(const struct bench_problem *p, const struct method *m, int
     pt->param = m->kind == FIXED ? dts[k] : tols[k];
     pt->eps = m->kind == EVENT ? 0.0
               : m->kind == FIXED
-                  ? (p->system == FRICREG_SYSTEM_CHAIN ? 10.0 * p->omega * dts[k] : 2.0 * dts[k])
+                  ? (method_eps(m, p, k) > 0.0 ? method_eps(m, p, k) : paper_eps(p, dts[k]))
                   : method_eps(m, p, k);
     pt->ok = run.status == FRICREG_OK;
     pt->err = pt->ok ? bench_rel_error(run.D, refs[p - bench_problems].D) : NAN;

@@ -71,11 +71,18 @@ enum fricreg_integrator {
     FRICREG_INT_MSBDF = 11,   /**< variable-order BDF, for stiff problems */
     /** GSL's rk4 in fixed steps too (6 right-hand sides per step), to compare with
      *  FRICREG_INT_RK4. */
-    FRICREG_INT_RK4_GSL = 12
+    FRICREG_INT_RK4_GSL = 12,
+    /** explicit central differences (Newmark beta = 0, gamma = 1/2), fricreg's own, fixed steps
+     *  only: x1 = x + dt v + dt^2/2 a, a1 = a(x1, v*) with the velocity predictor
+     *  v* = v + dt a seen by the friction, v1 = v + dt (a + a1)/2; one right-hand side per
+     *  step, second order (src/central_step.c). Stable for (dt omega/2)^2 + dt lambda < 1;
+     *  the guard takes 0.9 (fricreg_sim_run). Not for fricreg_structure_run_ode (the structure has its own
+     *  central difference). Since 1.3.0. */
+    FRICREG_INT_CENTRAL = 13
 };
 
-/** The name of an integrator: GSL's ("rk4", "msbdf", …), and "rk4-gsl" for
- *  FRICREG_INT_RK4_GSL; NULL if unknown. Static storage. */
+/** The name of an integrator: GSL's ("rk4", "msbdf", …), "rk4-gsl" for FRICREG_INT_RK4_GSL
+ *  and "central" for FRICREG_INT_CENTRAL; NULL if unknown. Static storage. */
 FRICREG_API const char *fricreg_integrator_name(int integrator);
 
 /** The integrator named `name` (as above). Returns its enum value, not a status: 0 if there
@@ -135,7 +142,8 @@ FRICREG_API int fricreg_sim_set_partition(fricreg_sim *sim, int partition);
  *  (fricreg_ctx_tangent) chained through the system's linear kinematics, one right-hand side
  *  per Jacobian, exact wherever the forces are differentiable.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown integrator, dt <= 0,
- *  rtol < 0 or atol < 0; FRICREG_ENONFINITE. */
+ *  rtol < 0 or atol < 0, or rtol or atol > 0 with FRICREG_INT_CENTRAL (fixed steps only);
+ *  FRICREG_ENONFINITE. */
 FRICREG_API int fricreg_sim_set_integrator(fricreg_sim *sim, int integrator, double dt, double rtol,
                                            double atol);
 
@@ -158,9 +166,10 @@ FRICREG_API int fricreg_sim_set_observer(fricreg_sim *sim, fricreg_sim_observer 
 /** Integrate from t = 0 and the initial conditions to t_end > 0 (replacing earlier results).
  *  D is recorded per forcing cycle of period 2 pi/omega (belt_omega for twoblock).
  *
- *  Before it starts, a fixed explicit step (rk2, rk4, rkf45, rkck, rk8pd, rk4-gsl) is checked,
- *  omega being the system's highest natural frequency (1; 2n for the chain; sqrt(max(1, k))
- *  for the two blocks); each limit beyond is FRICREG_ESTEP, refused before any step:
+ *  Before it starts, a fixed explicit step (rk2, rk4, rkf45, rkck, rk8pd, rk4-gsl, central) is
+ *  checked, omega being the system's highest natural frequency (1; 2n for the chain;
+ *  sqrt(max(1, k)) for the two blocks); each limit beyond is FRICREG_ESTEP, refused before any
+ *  step:
  *   - the stick zone: dt * lambda must not exceed the stepper's stick-zone bound (rk2 2.5,
  *     rk4 2.78, rkf45 2.2, rkck 3.7, rk8pd 5.1; the negative real axis's, but rkf45's, whose
  *     stages overshoot the zone first), lambda the stiffness of fricreg_ctx_stick_stiffness
@@ -171,6 +180,11 @@ FRICREG_API int fricreg_sim_set_observer(fricreg_sim *sim, fricreg_sim_observer 
  *   - dt * omega within the stepper's imaginary-axis bound (rk2 1.73, rk4 2.82, rkf45 0.7,
  *     rkck 0.88, rk8pd 3.7) and within 1/sqrt 2, beyond which a friction reversal inside one
  *     step can put energy in (src/sim.c derives it).
+ *  Central differences (FRICREG_INT_CENTRAL) instead need (dt omega/2)^2 + dt lambda < 0.9,
+ *  the linear stability bound 1 of x'' = -omega^2 x - lambda x' (src/sim.c derives it) with a
+ *  margin for each cycle's shortened last step, and for the laws that jump also dt * lambda
+ *  <= 1 and dt * omega <= 1/sqrt 2, as above. For (4) this is dt * lambda < 0.9: the paper's
+ *  eps = 2 dt, dt * lambda = 2 mun W_ii / 2, is refused at every dt where mun W_ii >= 0.9.
  *  Under the paper's rule for eps (eps set to 0), eps is proportional to dt and dt * lambda does
  *  not depend on dt: a refusal by the stick zone then holds at every dt (e.g. the oscillator
  *  with mun = 3: dt * lambda = 3 > 2.78 for rk4), and the message says so and names the

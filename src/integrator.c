@@ -26,16 +26,20 @@
  *
  * Fixed steps of rk4 are not GSL's (rk4_classic.c): GSL's rk4 grid (two classical steps per
  * call, `substeps` = 2) without the error estimate, 4 right-hand sides per step where GSL's
- * rk4 spends 6, for the same numbers to rounding. "rk4-gsl" keeps GSL's for comparison. */
+ * rk4 spends 6, for the same numbers to rounding. "rk4-gsl" keeps GSL's for comparison.
+ *
+ * "central" is not GSL's: explicit central differences (central_step.c), one right-hand side
+ * per step, for fixed steps of fricreg_sim only (no error estimate, and the stepper needs the
+ * state layout (x, v, D)). */
 #include <stddef.h>
 #include <string.h>
 
 #include "fricreg_sim.h"
 #include "integrator.h"
 
-#define ROW(ID, NAME, REAL, ZONE, IMAG, SUB, TOL)                    \
-    {                                                                \
-        ID, #NAME, gsl_type_##NAME, REAL, ZONE, IMAG, SUB, TOL, NULL \
+#define ROW(ID, NAME, REAL, ZONE, IMAG, SUB, TOL)                       \
+    {                                                                   \
+        ID, #NAME, gsl_type_##NAME, REAL, ZONE, IMAG, SUB, TOL, NULL, 0 \
     }
 
 /* gsl_odeiv2_step_* are data symbols; functions returning them keep the table constant. */
@@ -59,7 +63,7 @@ GSL_TYPE(msbdf)
 static const struct fr_integrator table[] = {
     ROW(FRICREG_INT_RK2, rk2, 2.5, 2.5, 1.73, 1, 1e-6),
     /* rk4: GSL's for adaptive steps, fricreg's classical RK4 for fixed ones (same numbers) */
-    {FRICREG_INT_RK4, "rk4", gsl_type_rk4, 2.78, 2.78, 2.82, 2, 1e-6, fr_step_rk4_classic},
+    {FRICREG_INT_RK4, "rk4", gsl_type_rk4, 2.78, 2.78, 2.82, 2, 1e-6, fr_step_rk4_classic, 0},
     ROW(FRICREG_INT_RKF45, rkf45, 3.6, 2.2, 0.7, 1, 1e-6),
     ROW(FRICREG_INT_RKCK, rkck, 3.7, 3.7, 0.88, 1, 1e-6),
     ROW(FRICREG_INT_RK8PD, rk8pd, 5.1, 5.1, 3.7, 1, 1e-6),
@@ -70,7 +74,10 @@ static const struct fr_integrator table[] = {
     ROW(FRICREG_INT_MSADAMS, msadams, 0.0, 0.0, 0.0, 1, 1e-6),
     ROW(FRICREG_INT_MSBDF, msbdf, 0.0, 0.0, 0.0, 1, 1e-6),
     /* GSL's rk4 for fixed steps too, for comparison */
-    {FRICREG_INT_RK4_GSL, "rk4-gsl", gsl_type_rk4, 2.78, 2.78, 2.82, 2, 1e-6, NULL},
+    {FRICREG_INT_RK4_GSL, "rk4-gsl", gsl_type_rk4, 2.78, 2.78, 2.82, 2, 1e-6, NULL, 0},
+    /* central differences, fixed steps only: real axis (dt lambda) 1, imaginary axis
+     * (dt omega) 2, jointly (dt omega/2)^2 + dt lambda < 1; the guard takes 0.9 (src/sim.c) */
+    {FRICREG_INT_CENTRAL, "central", fr_step_central, 1.0, 0.9, 2.0, 1, 1e-6, NULL, 1},
 };
 
 const struct fr_integrator *fr_integrator_find(int id)

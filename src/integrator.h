@@ -28,10 +28,18 @@ struct fr_integrator {
     /* The stepper used for fixed steps, or NULL for `type` itself: fricreg's own classical
      * RK4 for rk4, which gives GSL rk4's numbers without its error estimate. */
     const gsl_odeiv2_step_type *(*fixed_type)(void);
+    /* 1 for central differences (central_step.c): fixed steps only, on fricreg_sim's state
+     * layout (x, v, D), and one combined step bound (dt omega/2)^2 + dt lambda < 0.9 in place
+     * of the three columns above (src/sim.c, check_central_step). */
+    int central;
 };
 
 /* rk4_classic.c: two classical RK4 steps per call, as GSL's rk4, with no error estimate. */
 const gsl_odeiv2_step_type *fr_step_rk4_classic(void);
+
+/* central_step.c: explicit central differences (Newmark beta = 0, gamma = 1/2) on the state
+ * (x[n], v[n], D) of dimension 2n + 1, one right-hand side per step; no error estimate. */
+const gsl_odeiv2_step_type *fr_step_central(void);
 
 /* The table row of an integrator id, or NULL if unknown. */
 const struct fr_integrator *fr_integrator_find(int id);

@@ -187,6 +187,11 @@ int fricreg_sim_set_integrator(fricreg_sim *sim, int integrator, double dt, doub
     if (rtol < 0.0 || atol < 0.0)
         return sim_fail(sim, FRICREG_EINVAL, "set_integrator: rtol = %g, atol = %g must be >= 0",
                         rtol, atol);
+    if (fr_integrator_find(integrator)->central && (rtol > 0.0 || atol > 0.0))
+        return sim_fail(sim, FRICREG_EINVAL,
+                        "set_integrator: central differences have no error estimate: fixed "
+                        "steps only (rtol = atol = 0), got rtol = %g, atol = %g",
+                        rtol, atol);
     free_run(sim);
     sim->integrator = integrator;
     sim->dt = dt;
@@ -377,6 +382,54 @@ static int law_jumps(int law)
  * energy from dt * omega = 0.9 with RK4, not at 0.75. */
 #define REVERSAL_STEP_BOUND M_SQRT1_2
 
+/* Central differences (central_step.c) on x'' = -omega^2 x - c x', the linear model of a
+ * contact near stick: c is the stick zone's damping-like rate, at most lambda (the spring is
+ * screened by f_eq where the law is linear, c = lambda, omega = 0; where the band saturates the
+ * spring acts and c < lambda). With p = dt omega, h = dt c, on (x, dt v, dt^2 a) the step's
+ * characteristic polynomial is
+ *   P(mu) = mu^3 - (2 - p^2 - 3h/2) mu^2 + (1 - 2h) mu + h/2,
+ * P(1) = p^2 >= 0 and P(-1) = p^2 + 4h - 4: a root leaves the unit disc through -1 at
+ * p^2/4 + h = 1, and nowhere before (scanned over 0 <= h <= 1, p <= 2.2 in steps of 1e-3).
+ * So the step is stable for (dt omega/2)^2 + dt lambda < 1: dt omega < 2 undamped (the
+ * three-term recurrence), dt lambda < 1 in the linear stick zone (src/central_difference.c),
+ * and dt < 2/(lambda + sqrt(lambda^2 + omega^2)) in between. The friction-reversal bound
+ * (REVERSAL_STEP_BOUND) is kept for the laws that jump only: tests/test_guard.c's sweep finds
+ * no energy put in by (3), tanh or (4) up to the linear bound (dt omega up to 2 sqrt(1 - h)),
+ * while (1) and (2) put it in from dt omega = 1.36 (two blocks, the paper's eps: 0.12 of an
+ * energy scale 3.4; the oscillator from 1.41), a reversal's whole swing within one step. */
+/* Kept 10% inside the linear bound: each cycle's last step is shortened to end on the cycle's
+ * boundary, which breaks the constant-step recurrence once a cycle. Measured on the unforced,
+ * frictionless oscillator over 64 cycles of 2 pi: bounded up to dt omega = 1.9, grown to 8e26
+ * at 1.98. With 0.9 the frictionless limit is dt omega < 1.897. */
+#define CENTRAL_STEP_BOUND 0.9
+static int check_central_step(fricreg_sim *sim, double rate)
+{
+    double lambda = rate / sim->eps, omega = sim->sys.type->max_frequency(&sim->sys);
+    double h = sim->dt * lambda, half_p = 0.5 * sim->dt * omega;
+    if (!(h < CENTRAL_STEP_BOUND)) /* no dt passes under the paper's rule */
+        return refuse_stick_zone(sim, "the stick-zone bound of central differences",
+                                 CENTRAL_STEP_BOUND, rate);
+    if (law_jumps(sim->law) && sim->dt * omega > REVERSAL_STEP_BOUND)
+        return sim_fail(sim, FRICREG_ESTEP,
+                        "run: dt = %g too large for the system's highest frequency %g: "
+                        "dt*omega = %g > %g lets a friction reversal of a law that jumps put "
+                        "energy in within one step; reduce dt to %.6g",
+                        sim->dt, omega, sim->dt * omega, REVERSAL_STEP_BOUND,
+                        REVERSAL_STEP_BOUND / omega);
+    double sum = half_p * half_p + h;
+    if (sum < CENTRAL_STEP_BOUND)
+        return FRICREG_OK;
+    const double B = CENTRAL_STEP_BOUND; /* dt_max solves (omega dt/2)^2 + lambda dt = B */
+    double dt_max = sim->eps_set > 0.0
+                        ? 2.0 * B / (lambda + sqrt(lambda * lambda + B * omega * omega))
+                        : 2.0 * sqrt(B - h) / omega;
+    return sim_fail(sim, FRICREG_ESTEP,
+                    "run: dt = %g too large for central differences: (dt*omega/2)^2 + "
+                    "dt*lambda = %g >= %g (omega = %g the highest frequency, lambda = %g the "
+                    "stick-zone stiffness); reduce dt below %.6g",
+                    sim->dt, sum, CENTRAL_STEP_BOUND, omega, lambda, dt_max);
+}
+
 /* A fixed explicit step must keep dt * lambda within the stepper's stick-zone bound, lambda
  * the context's stick-zone stiffness (fricreg_ctx_stick_stiffness: coupled contacts
  * included), and dt * omega_max within its imaginary-axis bound and within
@@ -395,6 +448,8 @@ static int check_step(fricreg_sim *sim, const struct fr_integrator *integ)
     if (law_jumps(sim->law) && sim->dt * lambda > CHORD_STEP_BOUND)
         return refuse_stick_zone(sim, "where a law that jumps chatters out of its band",
                                  CHORD_STEP_BOUND, rate);
+    if (integ->central)
+        return check_central_step(sim, rate);
     snprintf(what, sizeof what, "the stick-zone bound of %s", integ->name);
     if (sim->dt * lambda > integ->stick_zone_bound)
         return refuse_stick_zone(sim, what, integ->stick_zone_bound, rate);

@@ -326,6 +326,8 @@ static int sim_run(void)
         NOTE("sim_create: status %d with handle %p", status, (void *)sim);
     if (status == FRICREG_OK)
         status = fricreg_sim_set_integrator(sim, c->integrator, c->dt, c->rtol, c->rtol);
+    if (status == FRICREG_OK && c->integrator == FRICREG_INT_CENTRAL) /* eps = 2 dt: ESTEP */
+        status = fricreg_sim_set_law(sim, FRICREG_LAW_QUINN, 4.0 * c->dt);
     if (status == FRICREG_OK) {
         status = fricreg_sim_run(sim, c->t_end);
         if (status != FRICREG_OK && fricreg_sim_errcode(sim) != status)
@@ -643,9 +645,10 @@ START_TEST(test_disk_stribeck_eval_does_not_allocate)
 END_TEST
 
 /* One stepper of each family: fricreg's classical RK4 (fixed steps), GSL's embedded explicit
- * rkf45 (adaptive), implicit Gaussian rk4imp, Bulirsch-Stoer bsimp, multistep msbdf. */
-static const int integrators[] = {FRICREG_INT_RK4, FRICREG_INT_RKF45, FRICREG_INT_RK4IMP,
-                                  FRICREG_INT_BSIMP, FRICREG_INT_MSBDF};
+ * rkf45 (adaptive), implicit Gaussian rk4imp, Bulirsch-Stoer bsimp, multistep msbdf, and
+ * fricreg's central differences (fixed steps). */
+static const int integrators[] = {FRICREG_INT_RK4,   FRICREG_INT_RKF45, FRICREG_INT_RK4IMP,
+                                  FRICREG_INT_BSIMP, FRICREG_INT_MSBDF, FRICREG_INT_CENTRAL};
 #define N_INTEGRATORS (sizeof integrators / sizeof integrators[0])
 static const int systems[] = {FRICREG_SYSTEM_OSCILLATOR, FRICREG_SYSTEM_CHAIN,
                               FRICREG_SYSTEM_TWOBLOCK};
@@ -657,7 +660,8 @@ START_TEST(test_sim_run)
     /* Fixed steps for rk4 and rk4imp (with the step guard's eigenvalue problem for rk4 on the
      * coupled two-block W), adaptive ones for the rest; a few steps are enough, every
      * allocation happens before the first. */
-    int fixed = integrator == FRICREG_INT_RK4 || integrator == FRICREG_INT_RK4IMP;
+    int fixed = integrator == FRICREG_INT_RK4 || integrator == FRICREG_INT_RK4IMP ||
+                integrator == FRICREG_INT_CENTRAL;
     struct sim_case c = {system, integrator, 0.005, fixed ? 0.0 : 1e-6, 0.05};
     char name[64];
     snprintf(name, sizeof name, "sim %d %s", system, fricreg_integrator_name(integrator));

@@ -1,0 +1,205 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* central_step.c — explicit central differences (Newmark beta = 0, gamma = 1/2) as a
+ * gsl_odeiv2_step_type, for fricreg_sim's fixed steps (FRICREG_INT_CENTRAL).
+ *
+ * The state is fricreg_sim's (src/sim.c): y = (x[n], v[n], D), dim = 2n + 1, and the
+ * right-hand side returns (v, a, D'). One step of size h, with a = a(t, x, v) carried over from
+ * the end of the previous step:
+ *
+ *   x1 = x + h v + h^2/2 a,   v* = v + h a,   a1 = a(t + h, x1, v*),   v1 = v + h (a + a1)/2,
+ *   D1 = D - w h/2 sum_i (f_i + f1_i)/2 (zdot_i + zdot1_i)/2   (w: the system's weight),
+ *
+ * f, f1 the friction forces of the two evaluations and zdot, zdot1 the contact velocities of
+ * the state's v and v1 (not v*).
+ *
+ * This is Newmark's average-acceleration family with beta = 0, gamma = 1/2 (N. M. Newmark,
+ * J. Eng. Mech. Div. ASCE 85 (1959); T. J. R. Hughes, The Finite Element Method (1987),
+ * Sec. 9.1), the structure integrator's form (src/central_difference.c). Undamped, x1 is the
+ * classical three-term recurrence x_{n+1} - 2 x_n + x_{n-1} = h^2 a_n.
+ *
+ * Friction depends on the contact velocity at the new time, which the scheme does not have
+ * before a1: it sees the explicit predictor v* = v + h a (Euler's), so one right-hand side per
+ * step and nothing to solve. v* is off by O(h^2) from v(t + h), so v1 is Heun's (trapezoid
+ * with an Euler predictor) and the step is second order in the velocity-dependent force too.
+ * The half-step velocity v + h a/2 would lag by h/2, an O(h) error in the friction, and make
+ * the scheme first order wherever friction depends on velocity (the near-stick band); it would
+ * double the stick-zone bound (dt lambda < 2 instead of 1), which is not worth an order.
+ * The stability bound of this form, (dt omega/2)^2 + dt lambda < 1, is derived in src/sim.c
+ * (check_central_step).
+ *
+ * D is the work of the step's mean friction impulse on its mean velocity: since v1 - v is h
+ * times the mean acceleration, this is exactly the friction's share of the scheme's own change
+ * of kinetic energy, so E + D balances the forcing's work to the scheme's spring-energy error.
+ * The trapezoid of D' = -w zdot.f that the right-hand side returns would see v*, which in the
+ * stick zone overshoots: at the paper's eps = 2 dt it overcounted D by 1.1 of an energy scale
+ * of 3.8 on the unforced oscillator (law (3), dt = 0.71; tests/test_guard.c's balance).
+ * So the stepper reads the friction the right-hand side leaves in the simulation
+ * (sim_internal.h): it serves fricreg_sim only.
+ *
+ * The error estimate is zero: fixed steps only (fricreg_sim_set_integrator refuses tolerances). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gsl/gsl_errno.h>
+
+#include "integrator.h"
+#include "sim_internal.h"
+
+struct central_state {
+    double *dydt;  /* [dim] (v, a, D') at the start of the step: the last step's end */
+    double *next;  /* [dim] the same at the step's end */
+    double *arg;   /* [dim] (x1, v*, D) where the right-hand side is evaluated */
+    double *f;     /* [m <= dim] friction forces of dydt's evaluation */
+    double *zdot;  /* [m] contact velocities of the state at the step's start */
+    double t_dydt; /* the time dydt belongs to */
+    int have_dydt; /* 0 after alloc and reset: dydt is evaluated at the next step's start */
+};
+
+static void central_free(void *vstate)
+{
+    struct central_state *s = vstate;
+    if (s == NULL)
+        return;
+    free(s->dydt);
+    free(s->next);
+    free(s->arg);
+    free(s->f);
+    free(s->zdot);
+    free(s);
+}
+
+static void *central_alloc(size_t dim)
+{
+    struct central_state *s = calloc(1, sizeof *s);
+    if (s == NULL)
+        return NULL;
+    s->dydt = malloc(dim * sizeof *s->dydt);
+    s->next = malloc(dim * sizeof *s->next);
+    s->arg = malloc(dim * sizeof *s->arg);
+    s->f = malloc(dim * sizeof *s->f); /* m <= ndof < dim for every reference system */
+    s->zdot = malloc(dim * sizeof *s->zdot);
+    if (!s->dydt || !s->next || !s->arg || !s->f || !s->zdot) {
+        central_free(s);
+        return NULL;
+    }
+    return s;
+}
+
+/* The carried acceleration belongs to this step's start: the same run, the time the last step
+ * ended (fricreg_sim sets a cycle's end time exactly, within rounding of t + h). */
+static int carried_dydt_valid(const struct central_state *s, double t, double h)
+{
+    return s->have_dydt && fabs(t - s->t_dydt) <= 1e-9 * fabs(h);
+}
+
+/* The evaluation point (x1, v*, D) of the step from y with derivative d = (v_used, a, D'). */
+static void predictor(size_t n, double h, const double *restrict y, const double *restrict d,
+                      double *restrict arg)
+{
+    const double *x = y, *v = y + n, *a = d + n;
+    for (size_t i = 0; i < n; i++) {
+        arg[i] = x[i] + h * v[i] + 0.5 * h * h * a[i];
+        arg[n + i] = v[i] + h * a[i];
+    }
+    arg[2 * n] = y[2 * n]; /* D: the right-hand side does not read it */
+}
+
+/* x = x1 and v by the trapezoid on the carried and the new acceleration. */
+static void corrector(size_t n, double h, const double *restrict arg, const double *restrict d0,
+                      const double *restrict d1, double *restrict y)
+{
+    for (size_t i = 0; i < n; i++) {
+        y[i] = arg[i];
+        y[n + i] += 0.5 * h * (d0[n + i] + d1[n + i]);
+    }
+}
+
+/* The contact velocities of the state y at t (the simulation's buffer or y's v). */
+static const double *contact_velocities(fricreg_sim *sim, double t, const double y[])
+{
+    return sim->sys.type->contacts(&sim->sys, t, y, y + sim->ndof, sim->zdot_buf, NULL);
+}
+
+/* D's increment over the step (the file's comment), from the carried f and zdot and the new
+ * f1 = sim->f and zdot1; then f1 and zdot1 are carried on. */
+enum { WORK_LANES = 4 }; /* partial sums: one running sum is a serial add per contact */
+static double dissipation_step(fricreg_sim *sim, struct central_state *s, double h,
+                               const double *restrict zdot1)
+{
+    double *restrict f0 = s->f, *restrict zdot0 = s->zdot;
+    const double *restrict f1 = sim->f;
+    double lane[WORK_LANES] = {0.0}, work = 0.0;
+    size_t m = sim->m, i = 0;
+    for (; i + WORK_LANES <= m; i += WORK_LANES)
+        for (size_t l = 0; l < WORK_LANES; l++)
+            lane[l] += (f0[i + l] + f1[i + l]) * (zdot0[i + l] + zdot1[i + l]);
+    for (; i < m; i++)
+        lane[0] += (f0[i] + f1[i]) * (zdot0[i] + zdot1[i]);
+    for (size_t l = 0; l < WORK_LANES; l++)
+        work += lane[l];
+    memcpy(f0, f1, m * sizeof *f0);
+    memcpy(zdot0, zdot1, m * sizeof *zdot0);
+    return -0.25 * h * sim->sys.type->dissipation_weight(&sim->sys) * work;
+}
+
+/* One step; on failure y is left as it was. */
+static int central_apply(void *vstate, size_t dim, double t, double h, double y[], double yerr[],
+                         const double dydt_in[], double dydt_out[], const gsl_odeiv2_system *sys)
+{
+    (void)dydt_in, (void)dydt_out; /* can_use_dydt_in = gives_exact_dydt_out = 0 */
+    struct central_state *s = vstate;
+    fricreg_sim *sim = sys->params;
+    if (dim != 2 * sim->ndof + 1 || sim->m > dim)
+        return GSL_EBADLEN; /* not fricreg_sim's layout (x, v, D) */
+    size_t n = sim->ndof;
+    if (!carried_dydt_valid(s, t, h)) {
+        int status = GSL_ODEIV_FN_EVAL(sys, t, y, s->dydt);
+        if (status != GSL_SUCCESS)
+            return status;
+        memcpy(s->f, sim->f, sim->m * sizeof *s->f);
+        memcpy(s->zdot, sim->zdot, sim->m * sizeof *s->zdot); /* of (t, y) itself */
+        s->have_dydt = 1;
+        s->t_dydt = t;
+    }
+    predictor(n, h, y, s->dydt, s->arg);
+    int status = GSL_ODEIV_FN_EVAL(sys, t + h, s->arg, s->next);
+    if (status != GSL_SUCCESS)
+        return status;
+    corrector(n, h, s->arg, s->dydt, s->next, y);
+    y[2 * n] += dissipation_step(sim, s, h, contact_velocities(sim, t + h, y));
+    double *swap = s->dydt; /* a1 is the next step's a */
+    s->dydt = s->next;
+    s->next = swap;
+    s->t_dydt = t + h;
+    memset(yerr, 0, dim * sizeof *yerr);
+    return GSL_SUCCESS;
+}
+
+static int central_reset(void *vstate, size_t dim)
+{
+    (void)dim;
+    ((struct central_state *)vstate)->have_dydt = 0;
+    return GSL_SUCCESS;
+}
+
+static unsigned int central_order(void *vstate)
+{
+    (void)vstate;
+    return 2;
+}
+
+static int central_set_driver(void *vstate, const gsl_odeiv2_driver *d)
+{
+    (void)vstate, (void)d;
+    return GSL_SUCCESS;
+}
+
+static const gsl_odeiv2_step_type central_type = {
+    "central",     0,           0, central_alloc, central_apply, central_set_driver, central_reset,
+    central_order, central_free};
+
+const gsl_odeiv2_step_type *fr_step_central(void)
+{
+    return &central_type;
+}
