@@ -305,7 +305,9 @@ FRICREG_API int fricreg_ctx_eval(fricreg_ctx *ctx, size_t m, const double zdot[]
  *                d f_i / d a_free_j, in force per acceleration (a mass, when f is a force and
  *                a_free an acceleration). A Fortran caller passing an (m, m) array receives
  *                the transpose: a(j, i) = d f_i / d zdot_j.
- *  Written only on success, both in full (zeros included).
+ *  Written only on success, both in full (zeros included). Never NaN; an entry whose value
+ *  is beyond the range of a double (tiny mobilities, W ~ 1e-300, or eps near DBL_MIN) is
+ *  +-Inf.
  *
  *  What it is, by law and partition (docs/coupled.md):
  *   - slip contacts, and every contact of (1), (3) and tanh: the law's own slope in v on the

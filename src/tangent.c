@@ -129,6 +129,18 @@ static void tangent_slip_columns(fricreg_ctx *ctx, const size_t set[], size_t n,
     }
 }
 
+/* The column k of -W_BB^-1 is solved for the right-hand side s e_k and scaled by 1/s after,
+ * s the power of two nearest sqrt(W_kk) (exact, so the bits are those of e_k): the solve then
+ * runs in Jacobi-scaled magnitudes, and only the final scaling can overflow, to +-Inf. With e_k
+ * itself, W ~ 1e-300 overflowed inside the triangular solves and Inf - Inf gave NaN (fuzz
+ * finding). */
+static double column_scale(const fricreg_ctx *ctx, size_t k)
+{
+    int exponent;
+    frexp(sqrt(ctx->W[k * ctx->m + k]), &exponent);
+    return ldexp(1.0, exponent);
+}
+
 /* The paper's partition: f_eq,S = -W_SS^-1 (a_free,S + W_SL f_L), then the law on S, with
  * the held factor of W_SS. */
 static void tangent_paper(fricreg_ctx *ctx, double dz[], double da[])
@@ -154,9 +166,10 @@ static void tangent_paper(fricreg_ctx *ctx, double dz[], double da[])
     }
     tangent_slip_columns(ctx, S, s, dz, dfeq);
     for (size_t b = 0; da && b < s; b++) { /* d f_eq,S/d a_free,k = -(W_SS^-1) e_k */
+        double scale = column_scale(ctx, S[b]);
         memset(ctx->rhs, 0, s * sizeof *ctx->rhs);
-        ctx->rhs[b] = 1.0;
-        scatter_solution(ctx, S, s, da, S[b], dfeq, 1.0);
+        ctx->rhs[b] = scale;
+        scatter_solution(ctx, S, s, da, S[b], dfeq, 1.0 / scale);
     }
 }
 
@@ -207,9 +220,10 @@ static void tangent_consistent(fricreg_ctx *ctx, size_t nf, double dz[], double 
     }
     tangent_slip_columns(ctx, F, nf, dz, NULL);
     for (size_t b = 0; da && b < nf; b++) { /* d b_F/d a_free,k = e_k for k in F */
+        double scale = column_scale(ctx, F[b]);
         memset(ctx->rhs, 0, nf * sizeof *ctx->rhs);
-        ctx->rhs[b] = 1.0;
-        scatter_solution(ctx, F, nf, da, F[b], NULL, 1.0);
+        ctx->rhs[b] = scale;
+        scatter_solution(ctx, F, nf, da, F[b], NULL, 1.0 / scale);
     }
 }
 
