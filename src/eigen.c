@@ -42,7 +42,7 @@ void fr_eigen_free(struct fr_eigen *e)
  * So the matrix is scaled by a power of two (exactly) to a largest entry in [0.5, 1), and
  * entries below DBL_EPSILON^2 of that are set to zero: a symmetric change of 2-norm at most
  * m DBL_EPSILON^2 max|a|, far below the eigenvalues' own rounding, about m DBL_EPSILON max|a|
- * (Weyl's inequality). No entry is then within 1e-250 of the subnormal range. Returns the
+ * (Weyl's inequality). No nonzero entry is then below 1e-32, far from the subnormals. Returns the
  * power of two the eigenvalues must be scaled back by. */
 static int normalize(double a[], size_t n)
 {

@@ -9,6 +9,9 @@
  * on success f finite with |f_i| <= mun_i, each f_i the law at (zdot_i, f_eq,i) on the
  * near-stick set (the force balance f = clamp(f_eq, ±mun) at zdot_i = 0), the slip contacts
  * at the law with no f_eq, and f_eq = -a_free/w exactly for a diagonal W. */
+#include <gsl/gsl_eigen.h>
+#include <gsl/gsl_matrix.h>
+
 #include "fuzz_input.h"
 
 #include "fricreg.h"
@@ -224,6 +227,35 @@ static double law_at(const struct model *md, size_t i, double zdot, double f_eq)
     return f;
 }
 
+/* The condition number of the Jacobi-scaled W_SS (unit diagonal), S the contacts in_s marks:
+ * fricreg_ctx_eval's forces are accurate to the rounding of their sums times it (fricreg.h).
+ * GSL's symmetric eigensolver on a copy; +Inf if W_SS is singular to it. */
+static double scaled_condition(const struct model *md, const int in_s[])
+{
+    size_t m = md->m, s = 0, pos[MAX_M];
+    for (size_t i = 0; i < m; i++)
+        if (in_s[i])
+            pos[s++] = i;
+    if (s == 0)
+        return 1.0;
+    gsl_matrix *A = gsl_matrix_alloc(s, s);
+    gsl_vector *eval = gsl_vector_alloc(s);
+    gsl_eigen_symm_workspace *work = gsl_eigen_symm_alloc(s);
+    FUZZ_REQUIRE(A && eval && work, "harness: out of memory");
+    for (size_t a = 0; a < s; a++)
+        for (size_t b = 0; b < s; b++) {
+            size_t i = pos[a], j = pos[b];
+            double scaled = md->W[i * m + j] / sqrt(md->W[i * m + i]) / sqrt(md->W[j * m + j]);
+            gsl_matrix_set(A, a, b, scaled);
+        }
+    gsl_eigen_symm(A, eval, work);
+    double lo = gsl_vector_min(eval), hi = gsl_vector_max(eval);
+    gsl_eigen_symm_free(work);
+    gsl_vector_free(eval);
+    gsl_matrix_free(A);
+    return lo > 0.0 ? hi / lo : INFINITY;
+}
+
 static void check_forces(const struct model *md, const double zdot[], const double a_free[],
                          const double f[], const double f_eq[])
 {
@@ -231,6 +263,13 @@ static void check_forces(const struct model *md, const double zdot[], const doub
     double largest_scaled = 0.0; /* max_j sqrt(W_jj) |f_j|, the forces in Jacobi-scaled units */
     for (size_t j = 0; md->dense && j < m; j++)
         largest_scaled = fmax(largest_scaled, sqrt(md->W[j * m + j]) * fabs(f[j]));
+    int near[MAX_M];
+    for (size_t j = 0; j < m; j++)
+        near[j] = near_stick(md, zdot[j]) && law_uses_feq(md->law);
+    /* relative accuracy of a dense solve: 1e-6, or 64 m eps times the scaled condition */
+    double rtol = md->dense
+                      ? fmax(1e-6, 64.0 * (double)m * DBL_EPSILON * scaled_condition(md, near))
+                      : 0.0;
     for (size_t i = 0; i < m; i++) {
         FUZZ_REQUIRE(isfinite(f[i]) && fabs(f[i]) <= md->mun[i],
                      "eval: f[%zu] = %g, mun %g (law %d eps %g dense %d)", i, f[i], md->mun[i],
@@ -253,8 +292,8 @@ static void check_forces(const struct model *md, const double zdot[], const doub
             continue;
         }
         /* Dense: f_i is the law at (zdot_i, f_eq,i) to what fricreg_ctx_eval promises: the
-         * rounding of the sums forming f_eq (relative 1e-6 of their magnitude, generous for
-         * the conditioning eval accepts), or, the solve being backward stable in the
+         * rounding of the sums forming f_eq times the scaled condition number of W_SS (rtol:
+         * 64 m eps cond, at least 1e-6), or, the solve being backward stable in the
          * Jacobi-scaled norm, 1e-6 of the largest scaled force max_j sqrt(W_jj) |f_j| over
          * sqrt(W_ii) (a contact beside one whose scaled force is 1e52 times its own lost its
          * digits to an updated factor: fuzz finding); and the underflow floor, 1e-292 in
@@ -265,7 +304,7 @@ static void check_forces(const struct model *md, const double zdot[], const doub
         scale = scale / w_ii + md->mun[i] + largest_scaled / sqrt(w_ii);
         double underflow = DBL_MIN / DBL_EPSILON * fmax(1.0, 1.0 / w_ii);
         double expected = law_at(md, i, zdot[i], feq);
-        FUZZ_REQUIRE(fabs(f[i] - expected) <= 1e-6 * scale + underflow,
+        FUZZ_REQUIRE(fabs(f[i] - expected) <= rtol * scale + underflow,
                      "eval dense: f[%zu] %.17g, law at f_eq %.17g gives %.17g (scale %g)", i, f[i],
                      f_eq[i], expected, scale);
     }
