@@ -283,7 +283,7 @@ FRICREG_API int fricreg_ctx_stick_stiffness(fricreg_ctx *ctx, double *lambda);
  *  with a dense W also a contact on S whose f_eq or acceleration terms can reach beyond the
  *  solve's range, (|a_free,i| + sum_j |W_ij| mun_j)/W_ii + 2 mun_i > 1e280 or
  *  |a_free,i| + sum_j |W_ij| mun_j + 2 W_ii mun_i > 1e280, where the near-stick forces cannot
- *  be found in double precision);
+ *  be found in double precision, or whose near-stick solve overflows all the same);
  *  FRICREG_ESINGULAR if the block of W to be factorized (W_SS, or the consistent law's W_FF)
  *  is singular: a pivot of its LDL^T factorization (contacts in ascending order) below 1e-12
  *  times its diagonal entry, d_k < 1e-12 W_kk (for a pair, d_2 / W_22 = 1 - rho^2 with

@@ -135,7 +135,17 @@ static int subspace_minimizer(fricreg_ctx *ctx, const size_t set[], size_t nf)
                      row_times_x(ctx->W + set[k] * m, set, qp->held_pos, qp->x, qp->n_held, &size));
     }
     int status = fr_factor_ensure(ctx, qp->free_set, nf, "eval");
-    return status == FRICREG_OK ? fr_factor_solve(ctx, qp->y, "eval") : status;
+    if (status == FRICREG_OK)
+        status = fr_factor_solve(ctx, qp->y, "eval");
+    /* A y that overflowed would be clamped into the box by take_step (fmax drops a NaN) and
+     * returned as a force (a_free ~ 5e279 beside W_33 ~ 6e113: fuzz finding): refuse it. */
+    for (size_t a = 0; status == FRICREG_OK && a < nf; a++)
+        if (!isfinite(qp->y[a]))
+            status = fr_fail(ctx, FRICREG_ENONFINITE,
+                             "eval: the near-stick solve of %zu contacts overflowed (contact %zu):"
+                             " beyond the range of double precision",
+                             nf, qp->free_set[a]);
+    return status;
 }
 
 /* The longest step alpha <= 1 from x towards y that stays in the box, and the bound that
