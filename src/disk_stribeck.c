@@ -50,22 +50,12 @@ void fr_disk_stribeck_refresh(fricreg_disk_ctx *ctx)
 static int check_parameters(fricreg_disk_ctx *ctx, size_t m, const double fs[], const double fk[],
                             const double vs[], const double delta[])
 {
-    const char *who = "set_stribeck";
     if (m != ctx->m)
-        return fr_disk_fail(ctx, FRICREG_ESIZE, "%s: m = %zu, context has %zu contacts", who, m,
-                            ctx->m);
-    size_t i = 0;
-    int status = fr_stribeck_check(m, fs, fk, vs, delta, FR_DISK_MAX, &i);
-    if (status == FRICREG_ENULL)
-        return fr_disk_fail(ctx, status, "%s: %s is NULL", who, fr_stribeck_names[i]);
-    if (status == FRICREG_ENONFINITE)
-        return fr_disk_fail(ctx, status, "%s: contact %zu: a parameter is not finite", who, i);
-    if (status == FRICREG_EINVAL)
-        return fr_disk_fail(ctx, status,
-                            "%s: contact %zu: fs = %g, fk = %g, vs = %g, delta = %g: need "
-                            "0 <= fk <= fs <= 1e250, vs > 0, delta > 0",
-                            who, i, fs[i], fk[i], vs[i], delta[i]);
-    return FRICREG_OK;
+        return fr_disk_fail(ctx, FRICREG_ESIZE, "set_stribeck: m = %zu, context has %zu contacts",
+                            m, ctx->m);
+    char why[160];
+    int status = fr_stribeck_check(m, fs, fk, vs, delta, FR_DISK_MAX, why, sizeof why);
+    return status == FRICREG_OK ? status : fr_disk_fail(ctx, status, "set_stribeck: %s", why);
 }
 
 /* The two arrays, at the first set-up only; the context is unchanged if one fails. */

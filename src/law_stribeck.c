@@ -3,6 +3,7 @@
  * docs/laws2d.md): law (4), or the default 2-D law (the inscribed disk), with a bound that falls linearly from fs at v = 0
  * to k(eps) at |v| = eps, and the kinetic curve k(|v|) outside. */
 #include <math.h>
+#include <stdio.h>
 
 #include "fricreg_stribeck.h"
 #include "law.h"
@@ -138,25 +139,27 @@ int fricreg_stribeck_disk_eval_batch(double eps, size_t m, const double v[], con
     return stribeck_batch(2, eps, m, v, f_eq, fs, fk, vs, delta, f);
 }
 
-const char *const fr_stribeck_names[4] = {"fs", "fk", "vs", "delta"};
-
 int fr_stribeck_check(size_t m, const double fs[], const double fk[], const double vs[],
-                      const double delta[], double fs_max, size_t *bad)
+                      const double delta[], double fs_max, char why[], size_t len)
 {
+    static const char *const names[4] = {"fs", "fk", "vs", "delta"};
     const double *arrays[4] = {fs, fk, vs, delta};
     for (size_t k = 0; k < 4; k++)
         if (arrays[k] == NULL) {
-            *bad = k;
+            snprintf(why, len, "%s is NULL", names[k]);
             return FRICREG_ENULL;
         }
     for (size_t i = 0; i < m; i++)
         if (!isfinite(fs[i]) || !isfinite(fk[i]) || !isfinite(vs[i]) || !isfinite(delta[i])) {
-            *bad = i;
+            snprintf(why, len, "contact %zu: a parameter is not finite", i);
             return FRICREG_ENONFINITE;
         }
     for (size_t i = 0; i < m; i++)
         if (!(fk[i] >= 0.0 && fk[i] <= fs[i] && fs[i] <= fs_max && vs[i] > 0.0 && delta[i] > 0.0)) {
-            *bad = i;
+            snprintf(why, len,
+                     "contact %zu: fs = %g, fk = %g, vs = %g, delta = %g: need 0 <= fk <= fs "
+                     "<= %g, vs > 0, delta > 0",
+                     i, fs[i], fk[i], vs[i], delta[i], fs_max);
             return FRICREG_EINVAL;
         }
     return FRICREG_OK;

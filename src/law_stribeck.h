@@ -46,13 +46,10 @@ static inline double fr_stribeck_band_bound(const struct fr_stribeck *p, double 
 
 /* The contexts' check of per-contact parameters (fricreg_ctx_set_stribeck,
  * fricreg_disk_ctx_set_stribeck), in fricreg_stribeck_eval's order: FRICREG_ENULL if an array
- * is NULL (*bad: which, 0 = fs … 3 = delta), then FRICREG_ENONFINITE if any number is NaN or
- * infinite, then FRICREG_EINVAL for the first contact outside 0 <= fk <= fs <= fs_max,
- * vs > 0, delta > 0 (*bad: that contact in both); FRICREG_OK otherwise. */
+ * is NULL, then FRICREG_ENONFINITE if any number is NaN or infinite, then FRICREG_EINVAL for
+ * the first contact outside 0 <= fk <= fs <= fs_max, vs > 0, delta > 0; FRICREG_OK otherwise.
+ * On failure why[len] says which array or contact, for the context's message. */
 int fr_stribeck_check(size_t m, const double fs[], const double fk[], const double vs[],
-                      const double delta[], double fs_max, size_t *bad);
-
-/* The names of the arrays, by fr_stribeck_check's *bad for FRICREG_ENULL. */
-extern const char *const fr_stribeck_names[4];
+                      const double delta[], double fs_max, char why[], size_t len);
 
 #endif
