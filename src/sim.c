@@ -23,7 +23,6 @@
 
 #define MAX_GSL_STEPS 2147483648.0     /* 2^31 fixed steps in one run */
 #define MAX_CYCLES 1e9                 /* forcing cycles recorded in one run */
-#define STATE_LIMIT 1e100              /* |state| beyond this: diverged (first_diverged) */
 #define STOP_REQUESTED (-1)            /* the observer asked to stop: not an error */
 #define MAX_STEP_PER_PERIOD (1.0 / 32) /* an adaptive step's cap, in forcing periods (advance) */
 
@@ -238,7 +237,7 @@ static int eval_friction(fricreg_sim *sim, double t, const double y[], int want_
                             want_feq ? sim->f_eq : NULL);
 }
 
-/* The first component of y that has diverged: not finite or beyond STATE_LIMIT, which no
+/* The first component of y that has diverged: not finite or beyond FR_SIM_STATE_LIMIT, which no
  * motion of these systems comes near, so an unstable step on its way to overflow. dim if
  * none has. Counted first in one vectorized pass, in DIVERGED_LANES partial counts (an early
  * exit is a branch per component, and one count a serial add), then searched for only when
@@ -250,12 +249,12 @@ static size_t first_diverged(const double y[], size_t dim)
     size_t k = 0;
     for (; k + DIVERGED_LANES <= dim; k += DIVERGED_LANES)
         for (size_t l = 0; l < DIVERGED_LANES; l++)
-            count[l] += fabs(y[k + l]) <= STATE_LIMIT ? 0.0 : 1.0;
+            count[l] += fabs(y[k + l]) <= FR_SIM_STATE_LIMIT ? 0.0 : 1.0;
     for (; k < dim; k++) /* the tail */
-        count[0] += fabs(y[k]) <= STATE_LIMIT ? 0.0 : 1.0;
+        count[0] += fabs(y[k]) <= FR_SIM_STATE_LIMIT ? 0.0 : 1.0;
     for (size_t l = 0; l < DIVERGED_LANES; l++)
         diverged += count[l];
-    for (k = 0; diverged > 0.0 && k < dim && fabs(y[k]) <= STATE_LIMIT; k++)
+    for (k = 0; diverged > 0.0 && k < dim && fabs(y[k]) <= FR_SIM_STATE_LIMIT; k++)
         continue;
     return diverged > 0.0 ? k : dim;
 }
@@ -479,20 +478,29 @@ static int observe(fricreg_sim *sim)
     return stop ? STOP_REQUESTED : FRICREG_OK;
 }
 
-/* After a step from t_before: finiteness, near-stick time, the observer. */
-static int after_step(fricreg_sim *sim, double t_before)
+/* The step's h to the near-stick time of each contact within the band |zdot| < eps. */
+static void add_stick_time(fricreg_sim *sim, double h)
 {
-    size_t k = first_diverged(sim->y, 2 * sim->ndof + 1);
-    char part[64];
-    if (k <= 2 * sim->ndof)
-        return sim_fail(sim, FRICREG_EDIVERGED,
-                        "run: state diverged at t = %.17g (%s): the step is unstable; reduce dt",
-                        sim->t, state_part(sim, k, part, sizeof part));
-    double h = sim->t - t_before;
     const double *zdot = sim->sys.type->contacts(&sim->sys, sim->t, sim->y, sim->y + sim->ndof,
                                                  sim->zdot_buf, NULL);
     for (size_t i = 0; i < sim->m; i++)
         sim->stick_time[i] += fabs(zdot[i]) < sim->eps ? h : 0.0;
+}
+
+/* After a step from t_before: finiteness, near-stick time, the observer. */
+static int after_step(fricreg_sim *sim, double t_before)
+{
+    size_t dim = 2 * sim->ndof + 1;
+    int checked = sim->step_checked; /* by the step's own last pass: no pass here */
+    sim->step_checked = 0;
+    size_t k = checked && sim->step_diverged == 0 ? dim : first_diverged(sim->y, dim);
+    char part[64];
+    if (k < dim)
+        return sim_fail(sim, FRICREG_EDIVERGED,
+                        "run: state diverged at t = %.17g (%s): the step is unstable; reduce dt",
+                        sim->t, state_part(sim, k, part, sizeof part));
+    if (!checked)
+        add_stick_time(sim, sim->t - t_before);
     return sim->observer ? observe(sim) : FRICREG_OK;
 }
 
@@ -520,10 +528,23 @@ static int step_failure(fricreg_sim *sim, int gsl_status)
  * Each retried step counts as rejected (FRICREG_SIM_STAT_REJECTED_STEPS), as GSL counts the
  * adaptive control's retries. */
 #define MAX_HALVINGS 10
+
+/* A step of central differences (central_step.c) straight through the stepper: GSL's
+ * evolve would copy the state to restore it on failure, which the stepper itself never
+ * writes before it succeeds. */
+static int central_step(fricreg_sim *sim, gsl_odeiv2_driver *d, double h)
+{
+    int status = gsl_odeiv2_step_apply(d->s, sim->t, h, sim->y, NULL, NULL, NULL, d->sys);
+    if (status == GSL_SUCCESS)
+        sim->t += h;
+    return status;
+}
 static int apply_fixed_step(fricreg_sim *sim, gsl_odeiv2_driver *d,
                             const struct fr_integrator *integ, double h, int depth)
 {
     double t0 = sim->t, *y = sim->y;
+    if (integ->central) /* leaves y as it was on failure: no copy of it, no error estimate */
+        return central_step(sim, d, h);
     int status = gsl_odeiv2_evolve_apply_fixed_step(d->e, NULL, d->s, d->sys, &sim->t, h, y);
     if (status != GSL_FAILURE || depth == MAX_HALVINGS || sim->rhs_status != FRICREG_OK)
         return status;
@@ -630,6 +651,7 @@ int fricreg_sim_run(fricreg_sim *sim, double t_end)
     sim->sys.type->initial(&sim->sys, sim->y, sim->y + sim->ndof);
     sim->y[2 * sim->ndof] = 0.0;
     sim->rhs_status = FRICREG_OK;
+    sim->step_checked = 0;
 
     size_t dim = 2 * sim->ndof + 1;
     gsl_odeiv2_system sys = {fr_sim_rhs, fr_sim_jacobian, dim, sim};

@@ -11,6 +11,10 @@
 #include "fricreg_sim.h"
 #include "system.h"
 
+/* |state| beyond this: diverged, an unstable step on its way to overflow (sim.c's after-step
+ * check; central_step.c's fused pass). */
+#define FR_SIM_STATE_LIMIT 1e100
+
 struct fricreg_sim {
     struct fr_system sys; /* the system and its parameters */
     int law;
@@ -44,6 +48,11 @@ struct fricreg_sim {
     int rhs_status;                           /* fricreg status raised inside the right-hand side */
     size_t bad_contact;       /* with FRICREG_ENONFINITE: the first contact that overflowed */
     struct fr_extrap *extrap; /* extrapolate.c: the last fricreg_sim_run_extrapolated */
+    /* Set by a step that made the after-step checks in its own last pass (central_step.c):
+     * it counted the diverged components into step_diverged and added the step to
+     * stick_time, so after_step skips its two passes over the state. */
+    int step_checked;
+    size_t step_diverged;
 
     struct fr_error err;
 };

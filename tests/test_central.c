@@ -14,6 +14,9 @@
  *   - the two blocks (eps = 0.01): D per cycle within 1e-6 relative of RK4's at dt = 0.00025
  *     at dt = 0.0005 (measured 1.3e-7);
  *   - one right-hand side per step, plus one at t = 0;
+ *   - the near-stick fractions, which the step itself accumulates where the contacts are the
+ *     bodies (central_step.c's fused last pass), equal to 1e-12 those an observer sums from
+ *     the states after each step (|v_i| < eps times the step), on the chain over one cycle;
  *   - the guard (dt omega/2)^2 + dt lambda < 0.9 (the linear bound 1 with a margin), omega
  *     the highest frequency and lambda the stick-zone stiffness, which gives
  *     dt_max = 1.8/(lambda + sqrt(lambda^2 + 0.9 omega^2)) for a set eps: accepted at
@@ -133,6 +136,39 @@ START_TEST(chain_equals_rk4_at_a_fine_step)
 }
 END_TEST
 
+/* Near-stick time per contact summed from the states the observer sees after each step. */
+struct stick_watch {
+    double eps, t_last, time[32];
+};
+
+static int watch_stick(void *user, double t, size_t ndof, const double x[], const double v[],
+                       size_t m, const double f[], const double f_eq[])
+{
+    (void)ndof, (void)x, (void)f, (void)f_eq;
+    struct stick_watch *w = user;
+    for (size_t i = 0; i < m && i < 32; i++)
+        w->time[i] += fabs(v[i]) < w->eps ? t - w->t_last : 0.0;
+    w->t_last = t;
+    return 0;
+}
+
+START_TEST(chain_stick_fraction_equals_the_observers)
+{
+    struct stick_watch w = {.eps = 0.01};
+    fricreg_sim *sim = make(FRICREG_SYSTEM_CHAIN, FRICREG_INT_CENTRAL, 0.001, w.eps);
+    ck_assert_int_eq(fricreg_sim_set_observer(sim, watch_stick, &w), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run_cycles(sim, 1), FRICREG_OK);
+    double frac[32], T = 4.0 * 3.14159265358979323846, sticking = 0.0; /* omega = 0.5 */
+    ck_assert_int_eq(fricreg_sim_get_stick_fraction(sim, 32, frac), FRICREG_OK);
+    for (size_t i = 0; i < 32; i++) {
+        ck_assert_double_eq_tol(frac[i], w.time[i] / T, 1e-12);
+        sticking += frac[i];
+    }
+    ck_assert_double_gt(sticking, 1.0); /* the blocks do stick: the check is not 0 = 0 */
+    fricreg_sim_free(sim);
+}
+END_TEST
+
 /* dt_max of the guard for a set eps: (omega dt/2)^2 + lambda dt = 0.9. */
 static double dt_max(double lambda, double omega)
 {
@@ -246,6 +282,7 @@ int main(void)
     TCase *tc = tcase_create("central");
     tcase_add_test(tc, oscillator_second_order_against_exact);
     tcase_add_test(tc, chain_equals_rk4_at_a_fine_step);
+    tcase_add_test(tc, chain_stick_fraction_equals_the_observers);
     tcase_add_test(tc, guard_at_and_beyond_the_bound);
     tcase_add_test(tc, adaptive_tolerances_refused);
     suite_add_tcase(suite, tc);
