@@ -529,22 +529,24 @@ static int step_failure(fricreg_sim *sim, int gsl_status)
  * adaptive control's retries. */
 #define MAX_HALVINGS 10
 
-/* A step of central differences (central_step.c) straight through the stepper: GSL's
- * evolve would copy the state to restore it on failure, which the stepper itself never
- * writes before it succeeds. */
-static int central_step(fricreg_sim *sim, gsl_odeiv2_driver *d, double h)
+/* A step of fricreg's own fixed-step steppers (rk4_classic.c, central_step.c) straight
+ * through the stepper: GSL's evolve would copy the state to restore it on failure, which
+ * these steppers never write before they succeed, and have them clear an error estimate
+ * they do not make. */
+static int own_step(fricreg_sim *sim, gsl_odeiv2_driver *d, double h)
 {
     int status = gsl_odeiv2_step_apply(d->s, sim->t, h, sim->y, NULL, NULL, NULL, d->sys);
     if (status == GSL_SUCCESS)
         sim->t += h;
     return status;
 }
+
 static int apply_fixed_step(fricreg_sim *sim, gsl_odeiv2_driver *d,
                             const struct fr_integrator *integ, double h, int depth)
 {
     double t0 = sim->t, *y = sim->y;
-    if (integ->central) /* leaves y as it was on failure: no copy of it, no error estimate */
-        return central_step(sim, d, h);
+    if (integ->central || integ->fixed_type != NULL) /* explicit: they never fail a step */
+        return own_step(sim, d, h);
     int status = gsl_odeiv2_evolve_apply_fixed_step(d->e, NULL, d->s, d->sys, &sim->t, h, y);
     if (status != GSL_FAILURE || depth == MAX_HALVINGS || sim->rhs_status != FRICREG_OK)
         return status;
