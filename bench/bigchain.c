@@ -9,7 +9,7 @@
  * RK4 at dt = 0.35/n and 0.175/n; the implicit prototype of chain_implicit.c (Newmark, Newton
  * on a tridiagonal matrix, law (4) at eps = 1e-4) at dt = 1e-3 and 2.5e-4; the explicit
  * central differences of chain_explicit.c at dt = 0.35/n and 0.9/n; the library's
- * (FRICREG_INT_CENTRAL) at 0.3/n, 0.7/n and 0.8/n; and CVODE Adams at
+ * (FRICREG_INT_CENTRAL) at 0.5/n … 0.8/n on its guard's bound; and CVODE Adams at
  * rtol 1e-4, 1e-6, 1e-8, each stopped at a CPU cap of CVODE_CAP seconds (the message says how
  * far it got). Above n = 2000 (10^4) only what fits in minutes: the reference is RK4 at
  * 0.35/n itself, the implicit prototype runs at 1e-3 only, CVODE at 1e-6 only, capped at
@@ -118,22 +118,20 @@ static int one_n(size_t n, FILE *csv)
                  "prototype (bench/chain_explicit.c); eps = 2.5 dt%s",
                  k == 0 ? "" : "; beyond the step guard's dt*2n <= 1/sqrt 2");
     }
-    /* The library's central differences (FRICREG_INT_CENTRAL), each near its guard's bound
-     * (dt*2n/2)^2 + dt*lambda < 0.9, lambda = 2/eps: eps = 2.5 dt (the prototype's) at
-     * dt = 0.3/n, the paper's eps = 5 dt at 0.7/n, and eps = 10 dt at 0.8/n. */
-    static const struct {
-        double dt_n, eps_dt;
-    } cd_lib[3] = {{0.3, 2.5}, {0.7, 0.0}, {0.8, 10.0}};
-    for (int k = 0; k < 3; k++) {
-        double h = cd_lib[k].dt_n / (double)n;
+    /* The library's central differences (FRICREG_INT_CENTRAL) along its guard's bound
+     * (dt*2n/2)^2 + dt*lambda < 0.9, lambda = 2/eps: at dt*n = x, the smallest eps it
+     * accepts, with a margin, eps = 2 dt/(0.88 - x^2). The error is mostly law (4)'s, O(eps),
+     * so a larger step costs accuracy through the larger eps it needs. */
+    static const double cd_lib[4] = {0.5, 0.6, 0.7, 0.8};
+    for (int k = 0; k < 4; k++) {
+        double h = cd_lib[k] / (double)n, eps_dt = 2.0 / (0.88 - cd_lib[k] * cd_lib[k]);
         struct bench_sim_point pt = {
-            &p, FRICREG_LAW_QUINN, FRICREG_INT_CENTRAL, h, 0.0, cd_lib[k].eps_dt * h, 0, 0, 0};
+            &p, FRICREG_LAW_QUINN, FRICREG_INT_CENTRAL, h, 0.0, eps_dt * h, 0, 0, 0};
         t0 = bench_cpu_seconds();
         bench_sim_run(&pt, &run);
         record(&rows[nr++], "central/quinn(4)", h, t0, &run, ref);
-        snprintf(rows[nr - 1].msg, sizeof rows[nr - 1].msg, "fricreg_sim; eps = %g dt%s%.100s",
-                 cd_lib[k].eps_dt > 0.0 ? cd_lib[k].eps_dt : 5.0,
-                 run.status == FRICREG_OK ? "" : ": ", run.msg);
+        snprintf(rows[nr - 1].msg, sizeof rows[nr - 1].msg, "fricreg_sim; eps = %.3g dt%s%.100s",
+                 eps_dt, run.status == FRICREG_OK ? "" : ": ", run.msg);
     }
 #ifdef FRICREG_BENCH_CVODE
     static const double rtols[3] = {1e-4, 1e-6, 1e-8};
