@@ -58,8 +58,10 @@ FRICREG_API int fricreg_structure_create(size_t ndof, size_t m, fricreg_structur
 /** Release a structure. fricreg_structure_free(NULL) does nothing. */
 FRICREG_API void fricreg_structure_free(fricreg_structure *s);
 
-/** Set the mass matrix M[ndof*ndof] (mass units, e.g. kg), symmetric (relative tolerance
- *  1e-12) and positive definite (GSL's Cholesky decomposition succeeds). Copied.
+/** Set the mass matrix M[ndof*ndof] (mass units, e.g. kg), symmetric to 1e-12 of the rows'
+ *  scales (|M_ij - M_ji| <= 1e-12 sqrt(r_i r_j), r_i = max_k |M_ik|, so that a change of
+ *  units of a degree of freedom does not change the verdict) and positive definite (GSL's
+ *  Cholesky decomposition succeeds). Copied.
  *  Like every model setter, it takes effect at the next step, which recomputes the
  *  acceleration at the current state from the equation of motion.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if ndof is not the structure's;
@@ -68,14 +70,14 @@ FRICREG_API void fricreg_structure_free(fricreg_structure *s);
  *  M) needs its smallest eigenvalue above 2 n (n + 1) 2.2e-16 (Demmel's condition). */
 FRICREG_API int fricreg_structure_set_mass(fricreg_structure *s, size_t ndof, const double M[]);
 
-/** Set the stiffness matrix K[ndof*ndof] (force per length, e.g. N/m), symmetric (relative
- *  tolerance 1e-12); it need not be definite (rigid-body modes are allowed). Copied.
+/** Set the stiffness matrix K[ndof*ndof] (force per length, e.g. N/m), symmetric (to 1e-12 of
+ *  the rows' scales, as M); it need not be definite (rigid-body modes are allowed). Copied.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_ENOTSYM. */
 FRICREG_API int fricreg_structure_set_stiffness(fricreg_structure *s, size_t ndof,
                                                 const double K[]);
 
-/** Set the damping matrix C[ndof*ndof] (force per velocity, e.g. N s/m), symmetric (relative
- *  tolerance 1e-12). Copied; replaces Rayleigh damping.
+/** Set the damping matrix C[ndof*ndof] (force per velocity, e.g. N s/m), symmetric (to 1e-12 of
+ *  the rows' scales, as M). Copied; replaces Rayleigh damping.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_ENOTSYM. */
 FRICREG_API int fricreg_structure_set_damping(fricreg_structure *s, size_t ndof, const double C[]);
 

@@ -120,15 +120,24 @@ static int all_finite(const double x[], size_t len, size_t *bad)
     return 1;
 }
 
-/* The first (i, j) with |A_ij - A_ji| > SYMMETRY_RTOL max|A|, or 0 if A is symmetric. */
-static int asymmetric(const double A[], size_t n, size_t *bi, size_t *bj)
+/* The first (i, j) with |A_ij - A_ji| > SYMMETRY_RTOL sqrt(r_i r_j), r_i = max_k |A_ik| the
+ * scale of row i (into scale[n], scratch), or 0 if A is symmetric. Against the rows' own
+ * scales, not max|A|: a model mixing stiff and soft (or translational and rotational)
+ * degrees of freedom has entries 1e12 apart, and max|A| let the soft block be asymmetric in
+ * its first digit. sqrt(r_i r_j) is the scale of entry (i, j) under a diagonal change of
+ * units D A D, as the context's sqrt(W_ii W_jj) is, and stays positive where a diagonal
+ * entry is 0 (K with a rigid-body mode). */
+static int asymmetric(const double A[], size_t n, double scale[], size_t *bi, size_t *bj)
 {
-    double amax = 0.0;
-    for (size_t k = 0; k < n * n; k++)
-        amax = fmax(amax, fabs(A[k]));
+    for (size_t i = 0; i < n; i++) {
+        double r = 0.0;
+        for (size_t k = 0; k < n; k++)
+            r = fmax(r, fabs(A[i * n + k]));
+        scale[i] = sqrt(r); /* sqrt(r_i) sqrt(r_j): no overflow of r_i r_j */
+    }
     for (size_t i = 0; i < n; i++)
         for (size_t j = i + 1; j < n; j++)
-            if (fabs(A[i * n + j] - A[j * n + i]) > SYMMETRY_RTOL * amax) {
+            if (fabs(A[i * n + j] - A[j * n + i]) > SYMMETRY_RTOL * scale[i] * scale[j]) {
                 *bi = i;
                 *bj = j;
                 return 1;
@@ -148,7 +157,7 @@ static int check_square(fricreg_structure *s, const char *name, size_t ndof, con
     if (!all_finite(A, ndof * ndof, &i))
         return fr_sfail(s, FRICREG_ENONFINITE, "%s: entry (%zu, %zu) is not finite", name, i / ndof,
                         i % ndof);
-    if (asymmetric(A, ndof, &i, &j))
+    if (asymmetric(A, ndof, s->work->data, &i, &j)) /* work: scratch between steps */
         return fr_sfail(s, FRICREG_ENOTSYM,
                         "%s: entries (%zu, %zu) = %g and (%zu, %zu) = %g "
                         "differ: the matrix is not symmetric",

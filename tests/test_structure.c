@@ -79,6 +79,16 @@ static double trapezoidal_frequency(double w, double dt)
 
 /* SDOF m = 2.385 kg, k = m w^2 with w = 1.7 rad/s, u0 = 0.0371 m, dt = 0.137 s (w dt = 0.23):
  * u_n = u0 cos(wb t_n) to rounding, energy m w^2 u0^2/2 constant. */
+/* set_stiffness of a fresh n-dof, 1-contact structure; its status. */
+static int make_sized_and_set(size_t n, const double K[])
+{
+    fricreg_structure *s = NULL;
+    ck_assert_int_eq(fricreg_structure_create(n, 1, &s), FRICREG_OK);
+    int status = fricreg_structure_set_stiffness(s, n, K);
+    fricreg_structure_free(s);
+    return status;
+}
+
 START_TEST(newmark_sdof_period_and_energy)
 {
     const double mass = 2.385, w = 1.7, u0 = 0.0371, dt = 0.137, k = mass * w * w;
@@ -957,6 +967,19 @@ START_TEST(every_error_code)
     ck_assert_int_eq(fricreg_structure_set_mass(s, 2, indef), FRICREG_ENOTPSD);
     ck_assert_ptr_nonnull(strstr(fricreg_structure_errmsg(s), "positive definite"));
     ck_assert_int_eq(fricreg_structure_set_stiffness(s, 2, asym), FRICREG_ENOTSYM);
+    /* symmetry against the rows' scales: a stiff degree of freedom (1e15) beside a soft
+     * block (~1) whose coupling is 30% asymmetric, which 1e-12 max|K| = 1e3 let pass */
+    const double stiff_soft[9] = {1e15, 0.0, 0.0, 0.0, 3.0, 1.0, 0.0, 1.3, 2.0};
+    ck_assert_int_eq(make_sized_and_set(3, stiff_soft), FRICREG_ENOTSYM);
+    /* the same units change D K D of a symmetric K (D = 1e-9, 1, 1e9) passes, and so does a
+     * K with a rigid-body mode's zero row, and entries that differ by 0.5e-12 of their rows */
+    const double scaled[9] = {1e-18 * 4.0, 1e-9 * 1.0, 0.0,       1e-9 * 1.0, 3.0,
+                              1e9 * 1.0,   0.0,        1e9 * 1.0, 1e18 * 2.0};
+    ck_assert_int_eq(make_sized_and_set(3, scaled), FRICREG_OK);
+    const double zero_row[9] = {0.0, 0.0, 0.0, 0.0, 2.0, -1.0, 0.0, -1.0, 2.0};
+    ck_assert_int_eq(make_sized_and_set(3, zero_row), FRICREG_OK);
+    const double rounding[9] = {2.0, 1.0, 0.0, 1.0 + 1e-12, 2.0, 0.0, 0.0, 0.0, 2.0};
+    ck_assert_int_eq(make_sized_and_set(3, rounding), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_set_damping(s, 1, good), FRICREG_ESIZE);
     ck_assert_int_eq(fricreg_structure_set_rayleigh(s, -0.1, 0.0), FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_structure_set_rayleigh(s, INFINITY, 0.0), FRICREG_ENONFINITE);
