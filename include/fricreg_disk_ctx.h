@@ -155,7 +155,10 @@ FRICREG_API int fricreg_disk_ctx_eval(fricreg_disk_ctx *ctx, size_t m, const dou
  *  follow fixed rules: a contact exactly on its circle (multiplier 0) is held on it; at
  *  zdot_i = 0 the circle's radius mun - mun|v|/eps has no derivative, and the one taken is that
  *  along the direction the contact will slide, -f_i/|f_i| (the radius then does not move to
- *  first order); at |zdot_i| = eps the contact slides, as eval decides.
+ *  first order); at |zdot_i| = eps the contact slides, as eval decides. A failed evaluation
+ *  since (FRICREG_ESINGULAR, FRICREG_ENONFINITE) does not change it: its state is rebuilt from
+ *  the last successful evaluation's inputs, warm-started at its forces (one sweep, no
+ *  allocation).
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if ctx is NULL or both outputs are NULL; FRICREG_ESIZE;
  *  FRICREG_EINVAL if no evaluation succeeded since creation or the last setter call;

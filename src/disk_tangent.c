@@ -277,8 +277,11 @@ int fricreg_disk_ctx_tangent(fricreg_disk_ctx *ctx, size_t m, double df_dzdot[],
     if (!ctx->last_valid)
         return fr_disk_fail(ctx, FRICREG_EINVAL,
                             "tangent: no successful evaluation since the last setter call");
+    int status = fr_disk_restore_state(ctx); /* a failed eval since overwrote it */
+    if (status != FRICREG_OK)
+        return status;
     size_t n = 0; /* factored first: a singular system writes nothing */
-    int status = check_slopes(ctx);
+    status = check_slopes(ctx);
     if (status == FRICREG_OK)
         status = ctx->W != NULL ? prepare(ctx, &n) : check_blocks(ctx);
     if (status != FRICREG_OK)

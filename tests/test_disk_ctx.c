@@ -711,6 +711,38 @@ START_TEST(test_singular_dense)
 }
 END_TEST
 
+/* A failed evaluation keeps the tangent of the last successful one (fricreg_disk_ctx.h): the
+ * fuzz target found it refused (FRICREG_EINVAL) after an ESINGULAR. Both contacts at rest and
+ * inside their disks: f = -W^-1 a_free, so d f/d a_free = -W^-1, W = s [[1, 1/2], [1/2, 1]] (x)
+ * I, W^-1 = (1/(0.75 s)) [[1, -1/2], [-1/2, 1]] (x) I. Then contact 1 slides with its bound
+ * 1e250, W_01 f_1 ~ 5e349 overflows: ENONFINITE. */
+START_TEST(test_tangent_kept_after_failed_eval)
+{
+    const double s = 1e100, h = 0.5 * s;
+    double W[16] = {s, 0, h, 0, 0, s, 0, h, h, 0, s, 0, 0, h, 0, s};
+    double mun[2] = {1.0, 1e250}, zdot[4] = {0}, slide[4] = {0, 0, 1.0, 0};
+    double afree[4] = {0.3 * s, -0.2 * s, 0.1 * s, 0.4 * s}, f[4], T[16];
+    fricreg_disk_ctx *ctx = make_ctx(2, FRICREG_DISK_QUINN, 0.1, mun, W);
+    eval_ok(ctx, 2, zdot, afree, f);
+    ck_assert_double_eq_tol(hypot(f[0], f[1]), hypot(0.25, 0.4) / 0.75, 1e-15); /* inside */
+    for (int k = 0; k < 4; k++)
+        f[k] = SENTINEL;
+    expect_fail(ctx, fricreg_disk_ctx_eval(ctx, 2, slide, afree, f), FRICREG_ENONFINITE);
+    for (int k = 0; k < 4; k++)
+        ck_assert_double_eq(f[k], SENTINEL);
+    int status = fricreg_disk_ctx_tangent(ctx, 2, NULL, T);
+    ck_assert_msg(status == FRICREG_OK, "tangent after a failed eval: %d %s", status,
+                  fricreg_disk_ctx_errmsg(ctx));
+    for (int r = 0; r < 4; r++)
+        for (int c = 0; c < 4; c++) {
+            double inv = r % 2 != c % 2 ? 0.0 : (r / 2 == c / 2 ? 1.0 : -0.5) / (0.75 * s);
+            ck_assert_msg(fabs(T[4 * r + c] + inv) <= 1e-15 / s, "d f/d a_free [%d][%d] = %g", r, c,
+                          T[4 * r + c]);
+        }
+    fricreg_disk_ctx_free(ctx);
+}
+END_TEST
+
 static Suite *disk_ctx_suite(void)
 {
     Suite *s = suite_create("disk_ctx");
@@ -729,6 +761,7 @@ static Suite *disk_ctx_suite(void)
     tcase_add_test(tc, test_tangent_at_rest_one_sided);
     tcase_add_test(tc, test_bad_input);
     tcase_add_test(tc, test_singular_dense);
+    tcase_add_test(tc, test_tangent_kept_after_failed_eval);
     suite_add_tcase(s, tc);
     return s;
 }
