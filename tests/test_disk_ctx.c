@@ -743,6 +743,24 @@ START_TEST(test_tangent_kept_after_failed_eval)
 }
 END_TEST
 
+/* A disk far smaller than the point it projects (mun = 1e-303 beside f_eq ~ 1e12): over a
+ * disk that small the W_ii-metric projection is f = -mun g/|g| (g = a_free at rest, the
+ * gradient at f = 0), whatever the block's anisotropy. The multiplier |D t|/mun overflows a
+ * double; the fuzz target found the Euclidean projection's direction, A^-1 g, used instead:
+ * (-1e-6, -1) mun/|.| here, not (-1, -1)/sqrt 2. */
+START_TEST(test_tiny_disk_anisotropic_block)
+{
+    double w[4] = {1e6, 0.0, 0.0, 1.0}, mun = 1e-303, zdot[2] = {0.0, 0.0};
+    double afree[2] = {1e12, 1e12}, f[2];
+    fricreg_disk_ctx *ctx = make_ctx(1, FRICREG_DISK_QUINN, 1e-3, &mun, NULL);
+    ck_assert_int_eq(fricreg_disk_ctx_set_coupling_blocks(ctx, 1, w), FRICREG_OK);
+    eval_ok(ctx, 1, zdot, afree, f);
+    for (int k = 0; k < 2; k++)
+        ck_assert_msg(fabs(f[k] + mun / sqrt(2.0)) <= 1e-15 * mun, "f = (%g, %g)", f[0], f[1]);
+    fricreg_disk_ctx_free(ctx);
+}
+END_TEST
+
 static Suite *disk_ctx_suite(void)
 {
     Suite *s = suite_create("disk_ctx");
@@ -762,6 +780,7 @@ static Suite *disk_ctx_suite(void)
     tcase_add_test(tc, test_bad_input);
     tcase_add_test(tc, test_singular_dense);
     tcase_add_test(tc, test_tangent_kept_after_failed_eval);
+    tcase_add_test(tc, test_tiny_disk_anisotropic_block);
     suite_add_tcase(s, tc);
     return s;
 }

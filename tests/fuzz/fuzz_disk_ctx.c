@@ -383,12 +383,14 @@ static void check_optimality(const struct model *md, size_t i, const double zdot
                      gtol);
         return;
     }
-    /* on the circle: g = -lambda d, lambda >= 0 */
-    double lambda = -(g[0] * d[0] + g[1] * d[1]) / (dist * dist);
-    double res[2] = {g[0] + lambda * d[0], g[1] + lambda * d[1]};
-    FUZZ_REQUIRE(lambda * dist >= -gtol && norm2(res) <= gtol,
-                 "eval: f_%zu on its circle, g = (%g, %g): lambda %g, residual %g, tolerance %g", i,
-                 g[0], g[1], lambda, norm2(res), gtol);
+    /* on the circle: g = -lambda d, lambda >= 0; with d's direction e (no squares: a bound
+     * near 1e-303 would underflow them), t = lambda |d| = -g.e and g + t e = 0 */
+    double e[2] = {d[0] / dist, d[1] / dist}, t = -(g[0] * e[0] + g[1] * e[1]);
+    double res[2] = {g[0] + t * e[0], g[1] + t * e[1]};
+    FUZZ_REQUIRE(
+        t >= -gtol && norm2(res) <= gtol,
+        "eval: f_%zu on its circle, g = (%g, %g): lambda |d| %g, residual %g, tolerance %g", i,
+        g[0], g[1], t, norm2(res), gtol);
 }
 
 /* Whether contact i's block is w I: then the W_ii-metric projection is the Euclidean one. */
