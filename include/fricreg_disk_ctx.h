@@ -86,7 +86,9 @@ FRICREG_API int fricreg_disk_ctx_set_bounds(fricreg_disk_ctx *ctx, size_t m, con
 /** Uncoupled contacts: W block diagonal, w[4m] holding contact i's 2x2 block W_ii row-major at
  *  w[4i .. 4i+3] (inverse effective masses of the tangent plane). Each block must be symmetric
  *  (to 1e-12 relative) and positive definite: its smallest eigenvalue above 1e-12 times its
- *  largest. Each contact is then solved exactly, once, with no iteration.
+ *  largest, and at least DBL_MIN ~ 2.2e-308 (a smaller one is a contact with no mobility,
+ *  whose inverse, the scale of its tangent, overflows; as fricreg_ctx_set_coupling_dense's
+ *  W_ii). Each contact is then solved exactly, once, with no iteration.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_ENOTSYM;
  *  FRICREG_ENOTPSD (a block not positive definite); FRICREG_ENOMEM. */

@@ -212,6 +212,11 @@ static int check_block(fricreg_disk_ctx *ctx, const char *who, size_t i, double 
                             "%s: block of contact %zu is not positive "
                             "definite (eigenvalues %g, %g of the block over %g)",
                             who, i, lo, hi, s);
+    if (!(lo * s >= DBL_MIN)) /* as fricreg_ctx_set_coupling_dense's W_ii >= DBL_MIN */
+        return fr_disk_fail(ctx, FRICREG_ENOTPSD,
+                            "%s: block of contact %zu has the eigenvalue %g < DBL_MIN: no "
+                            "mobility (its inverse, the tangent's scale, overflows)",
+                            who, i, lo * s);
     e->d1 *= s;
     e->d2 *= s;
     return FRICREG_OK;

@@ -645,6 +645,12 @@ START_TEST(test_bad_input)
     expect_fail(ctx, fricreg_disk_ctx_set_coupling_blocks(ctx, 2, nonsym), FRICREG_ENOTSYM);
     expect_fail(ctx, fricreg_disk_ctx_set_coupling_blocks(ctx, 2, indef), FRICREG_ENOTPSD);
     expect_fail(ctx, fricreg_disk_ctx_set_coupling_blocks(ctx, 2, negdiag), FRICREG_ENOTPSD);
+    /* a block below DBL_MIN: no mobility, its inverse overflows (the fuzz target's tangent
+     * was -Inf for W_ii = 2.7e-312 I) */
+    double tiny[8] = {1e-310, 0, 0, 1e-310, 1, 0, 0, 1};
+    double Wtiny[16] = {1e-310, 0, 0, 0, 0, 1e-310, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    expect_fail(ctx, fricreg_disk_ctx_set_coupling_blocks(ctx, 2, tiny), FRICREG_ENOTPSD);
+    expect_fail(ctx, fricreg_disk_ctx_set_coupling_dense(ctx, 2, Wtiny), FRICREG_ENOTPSD);
     expect_fail(ctx, fricreg_disk_ctx_set_coupling_blocks(ctx, 1, nonsym), FRICREG_ESIZE);
     expect_fail(ctx, fricreg_disk_ctx_set_coupling_blocks(ctx, 2, NULL), FRICREG_ENULL);
     /* dense: not symmetric, indefinite (PD blocks, coupling too strong), singular block */
