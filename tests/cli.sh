@@ -356,6 +356,11 @@ expect_usage_error "--a" disk --a 0
 expect_usage_error "--ref-eps" disk --ref-eps -1
 expect_usage_error "--ref-eps" disk --ref-eps 1e-9
 expect_usage_error "--mu" disk --mu 1
+# eps beyond the 2-D laws' 1e250 (given, or 2 dt) is named here, not refused by the run with
+# exit 1 (fuzz finding of tests/fuzz/fuzz_cli_problems.c).
+expect_usage_error "^fricreg-sim: --ref-eps: eps = 1e+308 is outside" disk --ref-eps 1e308
+expect_usage_error "^fricreg-sim: --dt: eps = 2e+300 is outside" disk --dt 1e300
+expect_usage_error "^fricreg-sim: --eps: eps = 1e+251 is outside" hold --eps 1e251
 # --help gives each problem's defaults, from the values the parsers use.
 expect_output '^hold: +--mu \[0\.5385\] --mass \[2\.385\]' --help
 expect_output '^belt: +--fs \[1\] --fk \[0\.5\] --vs \[0\.05\]' --help

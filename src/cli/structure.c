@@ -10,17 +10,8 @@
 #include <time.h>
 
 #include "cli_input.h"
+#include "cli_structure.h"
 #include "fricreg_structure.h"
-
-enum scheme { SCHEME_NONE, SCHEME_NEWMARK, SCHEME_HHT, SCHEME_CENTRAL, SCHEME_GSL };
-
-struct structure_options {
-    const char *mass, *stiffness, *damping, *contacts, *mun, *influence, *ground;
-    int rayleigh_given, alpha_given, law, integrator;
-    enum scheme scheme;
-    double a0, a1, eps, alpha, dt, t_end, rtol, atol;
-    enum cli_output output;
-};
 
 /* The model as read from the files: M, K, C (NULL: Rayleigh or none) n x n, J m x n. */
 struct structure_input {
@@ -180,7 +171,7 @@ static int check_options(const struct structure_options *o)
     return o->scheme == SCHEME_GSL ? cli_check_tolerances(o->integrator, o->rtol, o->atol) : 0;
 }
 
-static int parse_structure(int argc, char **argv, struct structure_options *o)
+int cli_parse_structure(int argc, char **argv, struct structure_options *o)
 {
     *o = (struct structure_options){.law = FRICREG_LAW_QUINN,
                                     .alpha = -0.05,
@@ -579,7 +570,7 @@ static int run_structure(fricreg_structure *s, const struct structure_options *o
 int cli_structure(int argc, char **argv, FILE *out)
 {
     struct structure_options o;
-    int status = parse_structure(argc, argv, &o);
+    int status = cli_parse_structure(argc, argv, &o);
     if (status != 0)
         return status;
     struct structure_input in = {0};
