@@ -166,7 +166,9 @@ FRICREG_API int fricreg_disk_ctx_eval(fricreg_disk_ctx *ctx, size_t m, const dou
  *  FRICREG_EINVAL if no evaluation succeeded since creation or the last setter call;
  *  FRICREG_ESINGULAR if the KKT matrix is singular (a pivot of its R factor below 1e-13 times
  *  the largest: redundant contacts); FRICREG_ENONFINITE if an entry overflows (mun/eps or
- *  mun/|zdot| beyond the double range). */
+ *  mun/|zdot| beyond or near the double range, or W^-1: when a slope, a multiplier, an entry
+ *  of W or the inverse of a diagonal block's eigenvalue exceeds 1e100, the columns are solved
+ *  once without writing to check, before anything is written). */
 FRICREG_API int fricreg_disk_ctx_tangent(fricreg_disk_ctx *ctx, size_t m, double df_dzdot[],
                                          double df_dafree[]);
 

@@ -767,6 +767,31 @@ START_TEST(test_tiny_disk_anisotropic_block)
 }
 END_TEST
 
+/* Slopes near the double range: mun/eps = 4.5e307 (eps = DBL_MIN), a contact at rest on its
+ * circle. The fuzz target found NaN in df_dzdot with FRICREG_OK; now FRICREG_ENONFINITE with
+ * nothing written, while eps = 1e-300 (slopes ~ 1e300, checked by the same dry run) gives a
+ * finite tangent; with W = I the force is f_eq/|f_eq| (f_eq = -a_free), so df/da_free =
+ * -(I - n n^T)/|f_eq|, entries within [-1, 1]. */
+START_TEST(test_tangent_overflow_refused)
+{
+    double mun = 1.0, zdot[2] = {0.0, 0.0}, afree[2] = {0.5, -1.0}, f[2], T[4], A[4];
+    fricreg_disk_ctx *ctx = make_ctx(1, FRICREG_DISK_QUINN, DBL_MIN, &mun, NULL);
+    eval_ok(ctx, 1, zdot, afree, f);
+    ck_assert_double_eq_tol(hypot(f[0], f[1]), 1.0, 1e-15); /* on the circle */
+    for (int k = 0; k < 4; k++)
+        T[k] = SENTINEL;
+    expect_fail(ctx, fricreg_disk_ctx_tangent(ctx, 1, T, NULL), FRICREG_ENONFINITE);
+    for (int k = 0; k < 4; k++)
+        ck_assert_double_eq(T[k], SENTINEL);
+    ck_assert_int_eq(fricreg_disk_ctx_set_law(ctx, FRICREG_DISK_QUINN, 1e-300), FRICREG_OK);
+    eval_ok(ctx, 1, zdot, afree, f);
+    ck_assert_int_eq(fricreg_disk_ctx_tangent(ctx, 1, T, A), FRICREG_OK);
+    for (int k = 0; k < 4; k++)
+        ck_assert_msg(isfinite(T[k]) && fabs(A[k]) <= 1.0, "T %g A %g", T[k], A[k]);
+    fricreg_disk_ctx_free(ctx);
+}
+END_TEST
+
 static Suite *disk_ctx_suite(void)
 {
     Suite *s = suite_create("disk_ctx");
@@ -787,6 +812,7 @@ static Suite *disk_ctx_suite(void)
     tcase_add_test(tc, test_singular_dense);
     tcase_add_test(tc, test_tangent_kept_after_failed_eval);
     tcase_add_test(tc, test_tiny_disk_anisotropic_block);
+    tcase_add_test(tc, test_tangent_overflow_refused);
     suite_add_tcase(s, tc);
     return s;
 }
