@@ -85,17 +85,17 @@ int fr_disk_block_solve(const struct fr_disk_eig *e, const double g[2], const do
     } else if (on_circle) {
         struct secular q = {e->d1 / dmax, e->d2 / dmax, t1, t2, radius};
         double root = e->d1 == e->d2 ? -1.0 : secular_root(&q, brent);
-        if (root < 0.0) { /* isotropic: the Euclidean projection, as fricreg_disk_eval */
-            double scale = radius / nt;
-            y1 = t1 * scale;
-            y2 = t2 * scale;
+        if (root < 0.0) { /* isotropic: the Euclidean projection, as fricreg_disk_eval; t/|t|
+                           * first: radius/|t| may underflow */
+            y1 = radius * (t1 / nt);
+            y2 = radius * (t2 / nt);
             l = e->d1 == e->d2 ? e->d1 * (nt / radius - 1.0) : fmax(e->d1, e->d2) * (nt / radius);
         } else {
             y1 = q.d1 * t1 / (q.d1 + root);
             y2 = q.d2 * t2 / (q.d2 + root);
-            double scale = radius / hypot(y1, y2); /* onto the circle to the last bit */
-            y1 *= scale;
-            y2 *= scale;
+            double ny = hypot(y1, y2); /* onto the circle to the last bit */
+            y1 = radius * (y1 / ny);
+            y2 = radius * (y2 / ny);
             l = root * dmax;
         }
     }

@@ -792,6 +792,18 @@ START_TEST(test_tangent_overflow_refused)
 }
 END_TEST
 
+/* An isotropic block with a bound far below |f_eq| (mun/|f_eq| underflows): f = mun f_eq/|f_eq|,
+ * not 0 (fuzz finding: W = 2.1e-307 I, mun = 4.9e-324 gave f = 0). */
+START_TEST(test_tiny_bound_isotropic)
+{
+    double mun = 1e-100, zdot[2] = {0.0, 0.0}, afree[2] = {-1e250, 0.0}, f[2];
+    fricreg_disk_ctx *ctx = make_ctx(1, FRICREG_DISK_QUINN, 1e-3, &mun, NULL);
+    eval_ok(ctx, 1, zdot, afree, f);
+    ck_assert_msg(fabs(f[0] - mun) <= 1e-15 * mun && f[1] == 0.0, "f = (%g, %g)", f[0], f[1]);
+    fricreg_disk_ctx_free(ctx);
+}
+END_TEST
+
 static Suite *disk_ctx_suite(void)
 {
     Suite *s = suite_create("disk_ctx");
@@ -813,6 +825,7 @@ static Suite *disk_ctx_suite(void)
     tcase_add_test(tc, test_tangent_kept_after_failed_eval);
     tcase_add_test(tc, test_tiny_disk_anisotropic_block);
     tcase_add_test(tc, test_tangent_overflow_refused);
+    tcase_add_test(tc, test_tiny_bound_isotropic);
     suite_add_tcase(s, tc);
     return s;
 }
