@@ -86,7 +86,9 @@ FRICREG_API int fricreg_disk_ctx_set_bounds(fricreg_disk_ctx *ctx, size_t m, con
 /** Uncoupled contacts: W block diagonal, w[4m] holding contact i's 2x2 block W_ii row-major at
  *  w[4i .. 4i+3] (inverse effective masses of the tangent plane). Each block must be symmetric
  *  (to 1e-12 relative) and positive definite: its smallest eigenvalue above 1e-12 times its
- *  largest. Each contact is then solved exactly, once, with no iteration.
+ *  largest, and at least DBL_MIN ~ 2.2e-308 (a smaller one is a contact with no mobility,
+ *  whose inverse, the scale of its tangent, overflows; as fricreg_ctx_set_coupling_dense's
+ *  W_ii). Each contact is then solved exactly, once, with no iteration.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_ENOTSYM;
  *  FRICREG_ENOTPSD (a block not positive definite); FRICREG_ENOMEM. */
@@ -155,13 +157,18 @@ FRICREG_API int fricreg_disk_ctx_eval(fricreg_disk_ctx *ctx, size_t m, const dou
  *  follow fixed rules: a contact exactly on its circle (multiplier 0) is held on it; at
  *  zdot_i = 0 the circle's radius mun - mun|v|/eps has no derivative, and the one taken is that
  *  along the direction the contact will slide, -f_i/|f_i| (the radius then does not move to
- *  first order); at |zdot_i| = eps the contact slides, as eval decides.
+ *  first order); at |zdot_i| = eps the contact slides, as eval decides. A failed evaluation
+ *  since (FRICREG_ESINGULAR, FRICREG_ENONFINITE) does not change it: its state is rebuilt from
+ *  the last successful evaluation's inputs, warm-started at its forces (one sweep, no
+ *  allocation).
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if ctx is NULL or both outputs are NULL; FRICREG_ESIZE;
  *  FRICREG_EINVAL if no evaluation succeeded since creation or the last setter call;
  *  FRICREG_ESINGULAR if the KKT matrix is singular (a pivot of its R factor below 1e-13 times
  *  the largest: redundant contacts); FRICREG_ENONFINITE if an entry overflows (mun/eps or
- *  mun/|zdot| beyond the double range). */
+ *  mun/|zdot| beyond or near the double range, or W^-1: when a slope, a multiplier, an entry
+ *  of W or the inverse of a diagonal block's eigenvalue exceeds 1e100, the columns are solved
+ *  once without writing to check, before anything is written). */
 FRICREG_API int fricreg_disk_ctx_tangent(fricreg_disk_ctx *ctx, size_t m, double df_dzdot[],
                                          double df_dafree[]);
 

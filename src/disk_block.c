@@ -37,14 +37,15 @@ static double secular_eval(double lam, void *params)
     return hypot(q->d1 * q->t1 / (q->d1 + lam), q->d2 * q->t2 / (q->d2 + lam)) - q->radius;
 }
 
-/* lam of the anisotropic circle case; -1 when the bracket does not hold (rounding at the
- * circle's edge, or an overflowing bound), where the caller falls back to the Euclidean
- * projection, which then differs from the answer by rounding or by O(radius). */
+/* lam of the anisotropic circle case, for d1, d2 scaled to max(d1, d2) = 1 (y is unchanged
+ * when d and lam scale together); -1 when the bracket does not hold (rounding at the circle's
+ * edge), where the caller falls back to the Euclidean projection, which then differs from the
+ * answer by rounding. */
 static double secular_root(struct secular *q, gsl_root_fsolver *brent)
 {
     double nt = hypot(q->t1, q->t2);
-    double hi = 2.0 * fmax(q->d1, q->d2) * (nt / q->radius);
-    if (!isfinite(hi) || !(secular_eval(0.0, q) > 0.0) || !(secular_eval(hi, q) < 0.0))
+    double hi = 2.0 * (nt / q->radius); /* finite: the caller checked nt/radius */
+    if (!(secular_eval(0.0, q) > 0.0) || !(secular_eval(hi, q) < 0.0))
         return -1.0;
     gsl_function F = {secular_eval, q};
     gsl_root_fsolver_set(brent, &F, 0.0, hi); /* signs checked above: no GSL error */
@@ -71,21 +72,31 @@ int fr_disk_block_solve(const struct fr_disk_eig *e, const double g[2], const do
     double nt = hypot(t1, t2);
     double y1 = t1, y2 = t2, l = 0.0;
     int on_circle = nt > radius;
-    if (on_circle) {
-        struct secular q = {e->d1, e->d2, t1, t2, radius};
+    double dmax = fmax(e->d1, e->d2), ratio = nt / radius;
+    if (on_circle && e->d1 != e->d2 && !isfinite(ratio)) {
+        /* A disk too small beside t for lam = |D t|/radius (about) to be a double: the limit
+         * lam -> inf, y along D t (the direction of -g at rest), exact to rounding since
+         * d/lam < 1e-296 (fuzz finding: the Euclidean projection's direction t was off by the
+         * block's anisotropy). */
+        double u1 = e->d1 / dmax * t1, u2 = e->d2 / dmax * t2, nu = hypot(u1, u2);
+        y1 = radius * (u1 / nu);
+        y2 = radius * (u2 / nu);
+        l = dmax * ratio;
+    } else if (on_circle) {
+        struct secular q = {e->d1 / dmax, e->d2 / dmax, t1, t2, radius};
         double root = e->d1 == e->d2 ? -1.0 : secular_root(&q, brent);
-        if (root < 0.0) { /* isotropic: the Euclidean projection, as fricreg_disk_eval */
-            double scale = radius / nt;
-            y1 = t1 * scale;
-            y2 = t2 * scale;
+        if (root < 0.0) { /* isotropic: the Euclidean projection, as fricreg_disk_eval; t/|t|
+                           * first: radius/|t| may underflow */
+            y1 = radius * (t1 / nt);
+            y2 = radius * (t2 / nt);
             l = e->d1 == e->d2 ? e->d1 * (nt / radius - 1.0) : fmax(e->d1, e->d2) * (nt / radius);
         } else {
-            y1 = e->d1 * t1 / (e->d1 + root);
-            y2 = e->d2 * t2 / (e->d2 + root);
-            double scale = radius / hypot(y1, y2); /* onto the circle to the last bit */
-            y1 *= scale;
-            y2 *= scale;
-            l = root;
+            y1 = q.d1 * t1 / (q.d1 + root);
+            y2 = q.d2 * t2 / (q.d2 + root);
+            double ny = hypot(y1, y2); /* onto the circle to the last bit */
+            y1 = radius * (y1 / ny);
+            y2 = radius * (y2 / ny);
+            l = root * dmax;
         }
     }
     /* back: f = Q y - p */

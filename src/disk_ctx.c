@@ -75,6 +75,7 @@ void fricreg_disk_ctx_free(fricreg_disk_ctx *ctx)
     free(ctx->f), free(ctx->f_last), free(ctx->g), free(ctx->p), free(ctx->u);
     free(ctx->r), free(ctx->radius), free(ctx->lam), free(ctx->kind), free(ctx->near);
     free(ctx->bound), free(ctx->strib), free(ctx->strib_keps);
+    free(ctx->last_zdot), free(ctx->last_afree);
     free(ctx->row), free(ctx->mrow);
     brent_free(ctx->brent);
     free(ctx);
@@ -108,10 +109,13 @@ int fricreg_disk_ctx_create(size_t m, fricreg_disk_ctx **out)
     ctx->near = malloc(m * sizeof *ctx->near);
     ctx->row = malloc(m * sizeof *ctx->row);
     ctx->mrow = malloc(m * sizeof *ctx->mrow);
+    ctx->last_zdot = malloc(2 * m * sizeof *ctx->last_zdot);
+    ctx->last_afree = malloc(2 * m * sizeof *ctx->last_afree);
     ctx->brent = brent_new();
     if (!ctx->mun || !ctx->eig || !ctx->blk || !ctx->f || !ctx->f_last || !ctx->g || !ctx->p ||
         !ctx->u || !ctx->r || !ctx->radius || !ctx->lam || !ctx->bound || !ctx->kind ||
-        !ctx->near || !ctx->row || !ctx->mrow || !ctx->brent || alloc_kkt(ctx, 3) != FRICREG_OK) {
+        !ctx->near || !ctx->row || !ctx->mrow || !ctx->last_zdot || !ctx->last_afree ||
+        !ctx->brent || alloc_kkt(ctx, 3) != FRICREG_OK) {
         fricreg_disk_ctx_free(ctx);
         return FRICREG_ENOMEM;
     }
@@ -208,6 +212,11 @@ static int check_block(fricreg_disk_ctx *ctx, const char *who, size_t i, double 
                             "%s: block of contact %zu is not positive "
                             "definite (eigenvalues %g, %g of the block over %g)",
                             who, i, lo, hi, s);
+    if (!(lo * s >= DBL_MIN)) /* as fricreg_ctx_set_coupling_dense's W_ii >= DBL_MIN */
+        return fr_disk_fail(ctx, FRICREG_ENOTPSD,
+                            "%s: block of contact %zu has the eigenvalue %g < DBL_MIN: no "
+                            "mobility (its inverse, the tangent's scale, overflows)",
+                            who, i, lo * s);
     e->d1 *= s;
     e->d2 *= s;
     return FRICREG_OK;

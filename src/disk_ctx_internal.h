@@ -45,6 +45,11 @@ struct fricreg_disk_ctx {
     size_t *near;      /* [m] indices of the near-stick contacts */
     size_t n_near;
     int last_valid; /* an evaluation succeeded since the last setter call */
+    /* The last successful evaluation's inputs: a failed one since overwrote the state above,
+     * which the tangent then rebuilds from them (fr_disk_restore_state). */
+    double *last_zdot;  /* [2m] */
+    double *last_afree; /* [2m] */
+    int state_current;  /* the state above is that of the last successful evaluation */
 
     /* The tangent's KKT system, order at most 3m (dense W) or 3 (blocks). */
     size_t kkt_max;
@@ -69,6 +74,10 @@ struct fricreg_disk_ctx {
 double fr_disk_bound(const fricreg_disk_ctx *ctx, size_t i, double r);
 double fr_disk_bound_slope(const fricreg_disk_ctx *ctx, size_t i, double r);
 void fr_disk_stribeck_refresh(fricreg_disk_ctx *ctx);
+
+/* disk_qp.c: the state of the last successful evaluation, rebuilt from its inputs if a failed
+ * evaluation overwrote it (warm-started at its forces). Returns FRICREG_OK or eval's status. */
+int fr_disk_restore_state(fricreg_disk_ctx *ctx);
 
 #define fr_disk_fail(ctx, ...) fr_error_set(&(ctx)->err, __VA_ARGS__)
 

@@ -141,16 +141,12 @@ static int check_inputs(fricreg_disk_ctx *ctx, size_t m, const double zdot[], co
     return FRICREG_OK;
 }
 
-int fricreg_disk_ctx_eval(fricreg_disk_ctx *ctx, size_t m, const double zdot[],
-                          const double a_free[], double f[])
+/* Classifies the contacts and solves the near-stick ones' QP into ctx->f; the state the
+ * tangent reads. warm: start from the last successful forces. */
+static int evaluate(fricreg_disk_ctx *ctx, const double zdot[], const double a_free[], int warm)
 {
-    if (ctx == NULL)
-        return FRICREG_ENULL;
-    int status = check_inputs(ctx, m, zdot, a_free, f);
-    if (status != FRICREG_OK)
-        return status;
-    int warm = ctx->last_valid;
-    ctx->last_valid = 0;
+    size_t m = ctx->m;
+    int status = FRICREG_OK;
     ctx->n_near = 0;
     for (size_t i = 0; i < m; i++)
         classify(ctx, i, zdot + 2 * i);
@@ -170,8 +166,36 @@ int fricreg_disk_ctx_eval(fricreg_disk_ctx *ctx, size_t m, const double zdot[],
     for (size_t k = 0; k < 2 * m; k++)
         if (!isfinite(ctx->f[k]))
             return fr_disk_fail(ctx, FRICREG_ENONFINITE, "eval: force %zu overflows", k);
+    return FRICREG_OK;
+}
+
+int fricreg_disk_ctx_eval(fricreg_disk_ctx *ctx, size_t m, const double zdot[],
+                          const double a_free[], double f[])
+{
+    if (ctx == NULL)
+        return FRICREG_ENULL;
+    int status = check_inputs(ctx, m, zdot, a_free, f);
+    if (status != FRICREG_OK)
+        return status;
+    int warm = ctx->last_valid && ctx->state_current;
+    ctx->state_current = 0; /* a failure keeps last_valid: the tangent rebuilds the state */
+    if ((status = evaluate(ctx, zdot, a_free, warm)) != FRICREG_OK)
+        return status;
     memcpy(ctx->f_last, ctx->f, 2 * m * sizeof *f);
+    memcpy(ctx->last_zdot, zdot, 2 * m * sizeof *zdot);
+    memcpy(ctx->last_afree, a_free, 2 * m * sizeof *a_free);
     memcpy(f, ctx->f, 2 * m * sizeof *f);
     ctx->last_valid = 1;
+    ctx->state_current = 1;
     return FRICREG_OK;
+}
+
+int fr_disk_restore_state(fricreg_disk_ctx *ctx)
+{
+    if (ctx->state_current)
+        return FRICREG_OK;
+    /* The same inputs from their own solution: the sweeps start converged. */
+    int status = evaluate(ctx, ctx->last_zdot, ctx->last_afree, 1);
+    ctx->state_current = status == FRICREG_OK;
+    return status;
 }

@@ -172,9 +172,21 @@ static void scatter(fricreg_disk_ctx *ctx, size_t j, int b, int afree, const dou
     }
 }
 
+/* Whether the solved column (order n) and the fixed contact's own derivative are finite. */
+static int column_finite(const fricreg_disk_ctx *ctx, size_t n, size_t j, int afree,
+                         const double Dj[4])
+{
+    for (size_t k = 0; k < n; k++)
+        if (!isfinite(ctx->col[k]))
+            return 0;
+    return afree || ctx->kind[j] != FR_DISK_FIXED ||
+           (isfinite(Dj[0]) && isfinite(Dj[1]) && isfinite(Dj[2]) && isfinite(Dj[3]));
+}
+
 /* Columns (j, 0), (j, 1) of one output (df_dzdot or df_dafree) for the factored system of
- * order n of the near-stick set ctx->near. */
-static void fill_columns(fricreg_disk_ctx *ctx, size_t n, size_t j, int afree, double *out)
+ * order n of the near-stick set ctx->near. A dry run (out NULL) writes nothing and returns
+ * whether every entry would be finite; otherwise returns 1. */
+static int fill_columns(fricreg_disk_ctx *ctx, size_t n, size_t j, int afree, double *out)
 {
     gsl_matrix_const_view A = gsl_matrix_const_view_array(ctx->kkt, n, n);
     gsl_vector_const_view tau = gsl_vector_const_view_array(ctx->tau, n);
@@ -187,8 +199,12 @@ static void fill_columns(fricreg_disk_ctx *ctx, size_t n, size_t j, int afree, d
             gsl_vector_view x = gsl_vector_view_array(ctx->col, n);
             gsl_linalg_QR_svx(&A.matrix, &tau.vector, &x.vector);
         }
-        scatter(ctx, j, b, afree, Dj, out);
+        if (out == NULL && !column_finite(ctx, n, j, afree, Dj))
+            return 0;
+        if (out != NULL)
+            scatter(ctx, j, b, afree, Dj, out);
     }
+    return 1;
 }
 
 /* Numbers the rows of the near-stick set ctx->near, assembles and factors its KKT matrix;
@@ -203,15 +219,18 @@ static int prepare(fricreg_disk_ctx *ctx, size_t *order)
     return factor(ctx, n);
 }
 
-/* Dense W: one system for all near-stick contacts, every column. */
-static void tangent_dense(fricreg_disk_ctx *ctx, size_t n, double *dz, double *da)
+/* Dense W: one system for all near-stick contacts, every column of the outputs wanted (dry:
+ * none written; returns whether all would be finite). */
+static int tangent_dense(fricreg_disk_ctx *ctx, size_t n, double *dz, double *da, int dry)
 {
-    for (size_t j = 0; j < ctx->m; j++) {
+    int finite = 1;
+    for (size_t j = 0; j < ctx->m && finite; j++) {
         if (dz != NULL)
-            fill_columns(ctx, n, j, 0, dz);
-        if (da != NULL)
-            fill_columns(ctx, n, j, 1, da);
+            finite = fill_columns(ctx, n, j, 0, dry ? NULL : dz);
+        if (da != NULL && finite)
+            finite = fill_columns(ctx, n, j, 1, dry ? NULL : da);
     }
+    return finite;
 }
 
 /* Block diagonal W: every near-stick contact's factor is checked before anything is written. */
@@ -229,10 +248,11 @@ static int check_blocks(fricreg_disk_ctx *ctx)
 
 /* Block diagonal W: each near-stick contact alone (order <= 3), its own columns only; the
  * fixed contacts' diagonal blocks. */
-static void tangent_blocks(fricreg_disk_ctx *ctx, double *dz, double *da)
+static int tangent_blocks(fricreg_disk_ctx *ctx, double *dz, double *da, int dry)
 {
     size_t *all = ctx->near, n_all = ctx->n_near, n;
-    for (size_t j = 0; j < ctx->m; j++) {
+    int finite = 1;
+    for (size_t j = 0; j < ctx->m && finite; j++) {
         if (ctx->kind[j] != FR_DISK_FIXED) {
             ctx->near = &j, ctx->n_near = 1;
             prepare(ctx, &n);
@@ -240,11 +260,35 @@ static void tangent_blocks(fricreg_disk_ctx *ctx, double *dz, double *da)
             ctx->n_near = 0, n = 0;
         }
         if (dz != NULL)
-            fill_columns(ctx, n, j, 0, dz);
-        if (da != NULL)
-            fill_columns(ctx, n, j, 1, da);
+            finite = fill_columns(ctx, n, j, 0, dry ? NULL : dz);
+        if (da != NULL && finite)
+            finite = fill_columns(ctx, n, j, 1, dry ? NULL : da);
     }
     ctx->near = all, ctx->n_near = n_all;
+    return finite;
+}
+
+/* Whether some scale the tangent multiplies or divides by is beyond 1e100 (a slope mun/eps or
+ * mun/|zdot|, a multiplier, an entry of W or the inverse of a block's eigenvalue): only then
+ * can an entry overflow, the KKT matrix's pivots being within 1e13 of each other. */
+static int extreme_scales(const fricreg_disk_ctx *ctx)
+{
+    const double big = 1e100;
+    for (size_t i = 0; i < ctx->m; i++) {
+        double D[4], P[4];
+        fixed_jacobian(ctx, i, D);
+        centre_jacobian(ctx, i, P);
+        double dmin = fmin(ctx->eig[i].d1, ctx->eig[i].d2);
+        if (fmax(fmax(fabs(D[0]), fabs(D[3])), fmax(fabs(P[0]), fabs(P[3]))) > big ||
+            fabs(D[1]) > big || fabs(P[1]) > big || ctx->lam[i] > big || dmin < 1.0 / big ||
+            fmax(ctx->eig[i].d1, ctx->eig[i].d2) > big)
+            return 1;
+    }
+    size_t n = 2 * ctx->m;
+    for (size_t k = 0; ctx->W != NULL && k < n * n; k++)
+        if (fabs(ctx->W[k]) > big)
+            return 1;
+    return 0;
 }
 
 /* The slopes the tangent divides by must be finite: checked before anything is written. */
@@ -277,20 +321,30 @@ int fricreg_disk_ctx_tangent(fricreg_disk_ctx *ctx, size_t m, double df_dzdot[],
     if (!ctx->last_valid)
         return fr_disk_fail(ctx, FRICREG_EINVAL,
                             "tangent: no successful evaluation since the last setter call");
+    int status = fr_disk_restore_state(ctx); /* a failed eval since overwrote it */
+    if (status != FRICREG_OK)
+        return status;
     size_t n = 0; /* factored first: a singular system writes nothing */
-    int status = check_slopes(ctx);
+    status = check_slopes(ctx);
     if (status == FRICREG_OK)
         status = ctx->W != NULL ? prepare(ctx, &n) : check_blocks(ctx);
     if (status != FRICREG_OK)
         return status;
+    /* Near the double range, a dry run first: nothing is written unless every entry is
+     * finite (fuzz finding: mun/eps = 4.5e307 gave NaN with FRICREG_OK). */
+    if (extreme_scales(ctx) && !(ctx->W != NULL ? tangent_dense(ctx, n, df_dzdot, df_dafree, 1)
+                                                : tangent_blocks(ctx, df_dzdot, df_dafree, 1)))
+        return fr_disk_fail(ctx, FRICREG_ENONFINITE,
+                            "tangent: an entry overflows the double range (slopes mun/eps, "
+                            "mun/|zdot| or W^-1 near it)");
     size_t n2 = 4 * m * m;
     if (df_dzdot != NULL)
         memset(df_dzdot, 0, n2 * sizeof *df_dzdot);
     if (df_dafree != NULL)
         memset(df_dafree, 0, n2 * sizeof *df_dafree);
     if (ctx->W != NULL)
-        tangent_dense(ctx, n, df_dzdot, df_dafree);
+        tangent_dense(ctx, n, df_dzdot, df_dafree, 0);
     else
-        tangent_blocks(ctx, df_dzdot, df_dafree);
+        tangent_blocks(ctx, df_dzdot, df_dafree, 0);
     return FRICREG_OK;
 }

@@ -33,8 +33,8 @@ static inline int fr_disk_law_uses_feq(int law)
 static inline void fr_disk_hold(const double g[2], double m, double f[2])
 {
     double r = hypot(g[0], g[1]);
-    double s = r > m ? m / r : 1.0;
-    double f0 = g[0] * s, f1 = g[1] * s;
+    /* g/|g| first: m/|g| may underflow (m = 1e-100 beside |g| = 1e250 gave f = 0) */
+    double f0 = r > m ? m * (g[0] / r) : g[0], f1 = r > m ? m * (g[1] / r) : g[1];
     f[0] = f0;
     f[1] = f1;
 }
@@ -107,8 +107,9 @@ static inline void fr_disk_inscribed(const double v[2], const double g[2], doubl
     double a = m * rho, radius = m * (1.0 - rho);
     double d0 = g[0] - a * u0, d1 = g[1] - a * u1; /* g - w relative to the centre -a u */
     double d = hypot(d0, d1);
-    double s = d > radius ? radius / d : 1.0;
-    double f0 = s * d0 - a * u0, f1 = s * d1 - a * u1;
+    int out = d > radius; /* d/|d| first, as fr_disk_hold */
+    double f0 = (out ? radius * (d0 / d) : d0) - a * u0,
+           f1 = (out ? radius * (d1 / d) : d1) - a * u1;
     f[0] = f0;
     f[1] = f1;
 }

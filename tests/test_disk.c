@@ -58,7 +58,8 @@ static void rotate(double theta, const double x[2], double y[2])
 /* ---- v = 0: the force balance, exactly ---------------------------------------------------- */
 
 /* At v = 0 every law but (1) is the 2-D (2): f = g if |g| <= mun, else mun g/|g| (computed as
- * g (mun/|g|) with |g| = hypot), bit for bit, also for v = (-0, 0) and (0, -0). */
+ * mun (g/|g|) with |g| = hypot: g/|g| first, so that mun/|g| cannot underflow), bit for bit,
+ * also for v = (-0, 0) and (0, -0). */
 START_TEST(zero_velocity_is_force_balance)
 {
     const double zeros[3][2] = {{0.0, 0.0}, {-0.0, 0.0}, {0.0, -0.0}};
@@ -67,8 +68,8 @@ START_TEST(zero_velocity_is_force_balance)
         double rho = k % 3 == 0 ? uniform(0.0, 1.0) : uniform(0.5, 3.0), th = uniform(-4, 4);
         double g[2] = {rho * mun * cos(th), rho * mun * sin(th)}, want[2], f[2];
         double r = hypot(g[0], g[1]);
-        want[0] = r <= mun ? g[0] : g[0] * (mun / r);
-        want[1] = r <= mun ? g[1] : g[1] * (mun / r);
+        want[0] = r <= mun ? g[0] : mun * (g[0] / r);
+        want[1] = r <= mun ? g[1] : mun * (g[1] / r);
         for (int z = 0; z < 3; z++) {
             eval(FRICREG_DISK_FORCE_BALANCE, zeros[z], g, mun, eps, f);
             ck_assert_msg(same_bits(f, want), "force balance at g = (%.17g, %.17g)", g[0], g[1]);
@@ -473,6 +474,28 @@ END_TEST
 
 /* ---- names ---------------------------------------------------------------------------------- */
 
+/* A bound far below |f_eq| (mun/|f_eq| underflows: 1e-100 beside 1e250): the force is mun in
+ * f_eq's direction (the 2-D (2); law (4) at rest and in the band), not 0 (fuzz finding of the
+ * 2-D context, whose isotropic blocks use the same projection). */
+START_TEST(tiny_bound_beside_huge_feq)
+{
+    const double v0[2] = {0.0, 0.0}, band[2] = {1e-103, 0.0}, feq[2] = {1e250, -1e250};
+    const double mun = 1e-100, eps = 1e-3;
+    const int laws[2] = {FRICREG_DISK_FORCE_BALANCE, FRICREG_DISK_QUINN};
+    for (int k = 0; k < 2; k++)
+        for (int at_rest = 0; at_rest < 2; at_rest++) {
+            double f[2];
+            ck_assert_int_eq(fricreg_disk_eval(laws[k], at_rest ? v0 : band, feq, mun, eps, f),
+                             FRICREG_OK);
+            if (!at_rest && laws[k] == FRICREG_DISK_FORCE_BALANCE)
+                continue; /* sliding: -mun v/|v| */
+            ck_assert_msg(fabs(f[0] - mun / sqrt(2.0)) <= 1e-3 * mun &&
+                              fabs(f[1] + mun / sqrt(2.0)) <= 1e-3 * mun,
+                          "law %d rest %d: f = (%g, %g)", laws[k], at_rest, f[0], f[1]);
+        }
+}
+END_TEST
+
 START_TEST(names_round_trip)
 {
     const char *want[] = {NULL, "coulomb", "force-balance", "quinn", "quinn-lens", "quinn-nested"};
@@ -508,6 +531,7 @@ static Suite *disk_suite(void)
     tcase_add_test(cases, scalar_bad_input);
     tcase_add_test(cases, batch_bad_input);
     tcase_add_test(cases, names_round_trip);
+    tcase_add_test(cases, tiny_bound_beside_huge_feq);
     suite_add_tcase(s, sweeps);
     suite_add_tcase(s, cases);
     return s;

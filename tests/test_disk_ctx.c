@@ -645,6 +645,12 @@ START_TEST(test_bad_input)
     expect_fail(ctx, fricreg_disk_ctx_set_coupling_blocks(ctx, 2, nonsym), FRICREG_ENOTSYM);
     expect_fail(ctx, fricreg_disk_ctx_set_coupling_blocks(ctx, 2, indef), FRICREG_ENOTPSD);
     expect_fail(ctx, fricreg_disk_ctx_set_coupling_blocks(ctx, 2, negdiag), FRICREG_ENOTPSD);
+    /* a block below DBL_MIN: no mobility, its inverse overflows (the fuzz target's tangent
+     * was -Inf for W_ii = 2.7e-312 I) */
+    double tiny[8] = {1e-310, 0, 0, 1e-310, 1, 0, 0, 1};
+    double Wtiny[16] = {1e-310, 0, 0, 0, 0, 1e-310, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    expect_fail(ctx, fricreg_disk_ctx_set_coupling_blocks(ctx, 2, tiny), FRICREG_ENOTPSD);
+    expect_fail(ctx, fricreg_disk_ctx_set_coupling_dense(ctx, 2, Wtiny), FRICREG_ENOTPSD);
     expect_fail(ctx, fricreg_disk_ctx_set_coupling_blocks(ctx, 1, nonsym), FRICREG_ESIZE);
     expect_fail(ctx, fricreg_disk_ctx_set_coupling_blocks(ctx, 2, NULL), FRICREG_ENULL);
     /* dense: not symmetric, indefinite (PD blocks, coupling too strong), singular block */
@@ -711,6 +717,93 @@ START_TEST(test_singular_dense)
 }
 END_TEST
 
+/* A failed evaluation keeps the tangent of the last successful one (fricreg_disk_ctx.h): the
+ * fuzz target found it refused (FRICREG_EINVAL) after an ESINGULAR. Both contacts at rest and
+ * inside their disks: f = -W^-1 a_free, so d f/d a_free = -W^-1, W = s [[1, 1/2], [1/2, 1]] (x)
+ * I, W^-1 = (1/(0.75 s)) [[1, -1/2], [-1/2, 1]] (x) I. Then contact 1 slides with its bound
+ * 1e250, W_01 f_1 ~ 5e349 overflows: ENONFINITE. */
+START_TEST(test_tangent_kept_after_failed_eval)
+{
+    const double s = 1e100, h = 0.5 * s;
+    double W[16] = {s, 0, h, 0, 0, s, 0, h, h, 0, s, 0, 0, h, 0, s};
+    double mun[2] = {1.0, 1e250}, zdot[4] = {0}, slide[4] = {0, 0, 1.0, 0};
+    double afree[4] = {0.3 * s, -0.2 * s, 0.1 * s, 0.4 * s}, f[4], T[16];
+    fricreg_disk_ctx *ctx = make_ctx(2, FRICREG_DISK_QUINN, 0.1, mun, W);
+    eval_ok(ctx, 2, zdot, afree, f);
+    ck_assert_double_eq_tol(hypot(f[0], f[1]), hypot(0.25, 0.4) / 0.75, 1e-15); /* inside */
+    for (int k = 0; k < 4; k++)
+        f[k] = SENTINEL;
+    expect_fail(ctx, fricreg_disk_ctx_eval(ctx, 2, slide, afree, f), FRICREG_ENONFINITE);
+    for (int k = 0; k < 4; k++)
+        ck_assert_double_eq(f[k], SENTINEL);
+    int status = fricreg_disk_ctx_tangent(ctx, 2, NULL, T);
+    ck_assert_msg(status == FRICREG_OK, "tangent after a failed eval: %d %s", status,
+                  fricreg_disk_ctx_errmsg(ctx));
+    for (int r = 0; r < 4; r++)
+        for (int c = 0; c < 4; c++) {
+            double inv = r % 2 != c % 2 ? 0.0 : (r / 2 == c / 2 ? 1.0 : -0.5) / (0.75 * s);
+            ck_assert_msg(fabs(T[4 * r + c] + inv) <= 1e-15 / s, "d f/d a_free [%d][%d] = %g", r, c,
+                          T[4 * r + c]);
+        }
+    fricreg_disk_ctx_free(ctx);
+}
+END_TEST
+
+/* A disk far smaller than the point it projects (mun = 1e-303 beside f_eq ~ 1e12): over a
+ * disk that small the W_ii-metric projection is f = -mun g/|g| (g = a_free at rest, the
+ * gradient at f = 0), whatever the block's anisotropy. The multiplier |D t|/mun overflows a
+ * double; the fuzz target found the Euclidean projection's direction, A^-1 g, used instead:
+ * (-1e-6, -1) mun/|.| here, not (-1, -1)/sqrt 2. */
+START_TEST(test_tiny_disk_anisotropic_block)
+{
+    double w[4] = {1e6, 0.0, 0.0, 1.0}, mun = 1e-303, zdot[2] = {0.0, 0.0};
+    double afree[2] = {1e12, 1e12}, f[2];
+    fricreg_disk_ctx *ctx = make_ctx(1, FRICREG_DISK_QUINN, 1e-3, &mun, NULL);
+    ck_assert_int_eq(fricreg_disk_ctx_set_coupling_blocks(ctx, 1, w), FRICREG_OK);
+    eval_ok(ctx, 1, zdot, afree, f);
+    for (int k = 0; k < 2; k++)
+        ck_assert_msg(fabs(f[k] + mun / sqrt(2.0)) <= 1e-15 * mun, "f = (%g, %g)", f[0], f[1]);
+    fricreg_disk_ctx_free(ctx);
+}
+END_TEST
+
+/* Slopes near the double range: mun/eps = 4.5e307 (eps = DBL_MIN), a contact at rest on its
+ * circle. The fuzz target found NaN in df_dzdot with FRICREG_OK; now FRICREG_ENONFINITE with
+ * nothing written, while eps = 1e-300 (slopes ~ 1e300, checked by the same dry run) gives a
+ * finite tangent; with W = I the force is f_eq/|f_eq| (f_eq = -a_free), so df/da_free =
+ * -(I - n n^T)/|f_eq|, entries within [-1, 1]. */
+START_TEST(test_tangent_overflow_refused)
+{
+    double mun = 1.0, zdot[2] = {0.0, 0.0}, afree[2] = {0.5, -1.0}, f[2], T[4], A[4];
+    fricreg_disk_ctx *ctx = make_ctx(1, FRICREG_DISK_QUINN, DBL_MIN, &mun, NULL);
+    eval_ok(ctx, 1, zdot, afree, f);
+    ck_assert_double_eq_tol(hypot(f[0], f[1]), 1.0, 1e-15); /* on the circle */
+    for (int k = 0; k < 4; k++)
+        T[k] = SENTINEL;
+    expect_fail(ctx, fricreg_disk_ctx_tangent(ctx, 1, T, NULL), FRICREG_ENONFINITE);
+    for (int k = 0; k < 4; k++)
+        ck_assert_double_eq(T[k], SENTINEL);
+    ck_assert_int_eq(fricreg_disk_ctx_set_law(ctx, FRICREG_DISK_QUINN, 1e-300), FRICREG_OK);
+    eval_ok(ctx, 1, zdot, afree, f);
+    ck_assert_int_eq(fricreg_disk_ctx_tangent(ctx, 1, T, A), FRICREG_OK);
+    for (int k = 0; k < 4; k++)
+        ck_assert_msg(isfinite(T[k]) && fabs(A[k]) <= 1.0, "T %g A %g", T[k], A[k]);
+    fricreg_disk_ctx_free(ctx);
+}
+END_TEST
+
+/* An isotropic block with a bound far below |f_eq| (mun/|f_eq| underflows): f = mun f_eq/|f_eq|,
+ * not 0 (fuzz finding: W = 2.1e-307 I, mun = 4.9e-324 gave f = 0). */
+START_TEST(test_tiny_bound_isotropic)
+{
+    double mun = 1e-100, zdot[2] = {0.0, 0.0}, afree[2] = {-1e250, 0.0}, f[2];
+    fricreg_disk_ctx *ctx = make_ctx(1, FRICREG_DISK_QUINN, 1e-3, &mun, NULL);
+    eval_ok(ctx, 1, zdot, afree, f);
+    ck_assert_msg(fabs(f[0] - mun) <= 1e-15 * mun && f[1] == 0.0, "f = (%g, %g)", f[0], f[1]);
+    fricreg_disk_ctx_free(ctx);
+}
+END_TEST
+
 static Suite *disk_ctx_suite(void)
 {
     Suite *s = suite_create("disk_ctx");
@@ -729,6 +822,10 @@ static Suite *disk_ctx_suite(void)
     tcase_add_test(tc, test_tangent_at_rest_one_sided);
     tcase_add_test(tc, test_bad_input);
     tcase_add_test(tc, test_singular_dense);
+    tcase_add_test(tc, test_tangent_kept_after_failed_eval);
+    tcase_add_test(tc, test_tiny_disk_anisotropic_block);
+    tcase_add_test(tc, test_tangent_overflow_refused);
+    tcase_add_test(tc, test_tiny_bound_isotropic);
     suite_add_tcase(s, tc);
     return s;
 }

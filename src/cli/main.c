@@ -70,6 +70,16 @@ static int system_of(const char *name)
 
 static int dispatch(int argc, char **argv);
 
+/* --help or -h anywhere after a subcommand asks for the usage text, as it does before one
+ * (no number, name or sensible file name is spelled so; before, it was a "missing value"). */
+static int wants_help(int argc, char **argv)
+{
+    for (int k = 2; k < argc; k++)
+        if (strcmp(argv[k], "--help") == 0 || strcmp(argv[k], "-h") == 0)
+            return 1;
+    return 0;
+}
+
 /* Every byte written reaches its file, or the exit status says it did not: stdout's last
  * buffer is flushed and closed here, and a file-size limit fails a write (EFBIG) instead of
  * killing the program with SIGXFSZ. */
@@ -98,7 +108,7 @@ static int dispatch(int argc, char **argv)
         usage(stderr);
         return CLI_EXIT_USAGE;
     }
-    if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
+    if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 || wants_help(argc, argv)) {
         usage(stdout);
         return 0;
     }

@@ -5,18 +5,19 @@
  * Every bad option is one line on stderr naming it, exit 2, nothing on stdout; a run that
  * fails (or does not reach what it measures) exits 1. */
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
-#include "cli.h"
+#include "cli_problems.h"
 #include "fricreg_disk.h"
-#include "problems.h"
 
 #define PI 3.14159265358979323846
 #define DEG (PI / 180.0)
 #define RK4_STABLE 2.78 /* RK4's real-axis stability bound, dt * lambda (src/integrator.c) */
+#define DISK_MAX 1e250  /* the 2-D laws' largest number (fricreg_disk.h) */
 
 /* A numeric option: its name, where it goes, and its range. */
 enum range { ANY, POSITIVE, NONNEGATIVE };
@@ -117,6 +118,19 @@ static int stable_step(double bound_per_mass, double dt, double eps)
     return cli_usage_error("--dt", what);
 }
 
+/* eps as the laws take it (fricreg_disk.h, fricreg_stribeck.h): at least DBL_MIN, at most
+ * `upper` (1e250 for the 2-D laws), named as the option it came from (--dt when eps is derived
+ * from dt) rather than refused by the run (exit 1, no option named: fuzz finding). */
+static int law_eps(const char *option, double eps, double upper)
+{
+    if (eps >= DBL_MIN && eps <= upper)
+        return 0;
+    char what[160];
+    snprintf(what, sizeof what, "eps = %g is outside [%g, %g], the law's range", eps, DBL_MIN,
+             upper);
+    return cli_usage_error(option, what);
+}
+
 /* A failed run: exit 1 with the reason. */
 static int run_failed(const char *command, const char *what, int status)
 {
@@ -177,11 +191,11 @@ static double cpu_since(clock_t start)
 /* ---- hold ------------------------------------------------------------------------------- */
 
 enum { H_MU, H_MASS, H_G, H_THETA, H_PHI, H_RATE, H_STEPS, H_DT, H_EPS, H_N };
-/* tests/test_hold.c's block; theta and eps 0: derived (parse_hold) */
+/* tests/test_hold.c's block; theta and eps 0: derived (cli_parse_hold) */
 static const double hold_defaults[H_N] = {0.5385, 2.385, 9.81, 0.0, 35.4, 0.0, 1e7, 1e-4, 0.0};
 #define DISK_REF_EPS 2e-4
 
-static int parse_hold(int argc, char **argv, struct prob_hold *p, enum cli_output *output)
+int cli_parse_hold(int argc, char **argv, struct prob_hold *p, enum cli_output *output)
 {
     double v[H_N];
     memcpy(v, hold_defaults, sizeof v);
@@ -210,6 +224,8 @@ static int parse_hold(int argc, char **argv, struct prob_hold *p, enum cli_outpu
         return cli_usage_error("--steps", "must be even (GSL's rk4 takes two classical steps)");
     if (!given[H_EPS])
         v[H_EPS] = 20.0 * v[H_DT]; /* tests/test_hold.c: the stick zone's rate 0.49 / step */
+    if ((status = law_eps(given[H_EPS] ? "--eps" : "--dt", v[H_EPS], DISK_MAX)) != 0)
+        return status;
     *p = (struct prob_hold){.mass = v[H_MASS],
                             .g = v[H_G],
                             .mu = v[H_MU],
@@ -251,7 +267,7 @@ static int cli_hold(int argc, char **argv, FILE *out)
     struct prob_hold p;
     struct prob_hold_result r;
     enum cli_output output = CLI_SUMMARY;
-    int status = parse_hold(argc, argv, &p, &output);
+    int status = cli_parse_hold(argc, argv, &p, &output);
     if (status != 0)
         return status;
     struct csv c;
@@ -277,7 +293,7 @@ static int cli_hold(int argc, char **argv, FILE *out)
 
 enum { B_FS, B_FK, B_VS, B_DELTA, B_V, B_DT, B_EPS, B_CYCLES, B_REF_DT, B_N };
 
-static int parse_belt(int argc, char **argv, struct prob_belt *p, enum cli_output *output)
+int cli_parse_belt(int argc, char **argv, struct prob_belt *p, enum cli_output *output)
 {
     const struct prob_belt d = prob_belt_defaults();
     double v[B_N] = {d.fs, d.fk, d.vs, d.delta, d.v_belt, d.dt, 0.0, d.cycles, d.ref_dt};
@@ -299,6 +315,8 @@ static int parse_belt(int argc, char **argv, struct prob_belt *p, enum cli_outpu
                             v[B_DT], v[B_EPS], (int)v[B_CYCLES], v[B_REF_DT]};
     if (!given[B_EPS])
         p->eps = 2.0 * p->dt; /* the paper's rule */
+    if ((status = law_eps(given[B_EPS] ? "--eps" : "--dt", p->eps, DBL_MAX)) != 0)
+        return status;
     /* a cycle is at most a stick of 2 fs/V and about a natural period of slip: a run of more
      * than 1e9 steps is refused rather than left to run for hours */
     double length = (p->cycles + 1) * (2.0 * PI + 2.0 * p->fs / p->v_belt);
@@ -337,7 +355,7 @@ static int cli_belt(int argc, char **argv, FILE *out)
     struct prob_belt p;
     struct prob_belt_cycle ref, c;
     enum cli_output output = CLI_SUMMARY;
-    int status = parse_belt(argc, argv, &p, &output);
+    int status = cli_parse_belt(argc, argv, &p, &output);
     if (status != 0)
         return status;
     clock_t start = clock();
@@ -363,8 +381,8 @@ static int cli_belt(int argc, char **argv, FILE *out)
 
 enum { D_A, D_OMEGA, D_DT, D_EPS, D_REF_EPS, D_N };
 
-static int parse_disk(int argc, char **argv, struct prob_disk *p, double *ref_eps,
-                      enum cli_output *output)
+int cli_parse_disk(int argc, char **argv, struct prob_disk *p, double *ref_eps,
+                   enum cli_output *output)
 {
     const struct prob_disk d = prob_disk_defaults();
     double v[D_N] = {d.a, d.omega, d.dt, 0.0, DISK_REF_EPS};
@@ -381,6 +399,9 @@ static int parse_disk(int argc, char **argv, struct prob_disk *p, double *ref_ep
     p->law = law, p->a = v[D_A], p->omega = v[D_OMEGA], p->dt = v[D_DT];
     p->eps = given[D_EPS] ? v[D_EPS] : 2.0 * p->dt; /* the paper's rule */
     *ref_eps = v[D_REF_EPS];
+    if ((status = law_eps(given[D_EPS] ? "--eps" : "--dt", p->eps, DISK_MAX)) != 0 ||
+        (*ref_eps > 0.0 && (status = law_eps("--ref-eps", *ref_eps, DISK_MAX)) != 0))
+        return status;
     double turns = (p->turns_transient + 1) * 2.0 * PI * p->cycles_per_turn / p->omega;
     if (turns / p->dt > 1e9)
         return cli_usage_error("--dt", "more than 10^9 steps over the four turns");
@@ -419,7 +440,7 @@ static int cli_disk(int argc, char **argv, FILE *out)
     struct prob_disk_result r, ref = {0};
     double ref_eps;
     enum cli_output output = CLI_SUMMARY;
-    int status = parse_disk(argc, argv, &p, &ref_eps, &output);
+    int status = cli_parse_disk(argc, argv, &p, &ref_eps, &output);
     if (status != 0)
         return status;
     struct csv c;

@@ -10,17 +10,8 @@
 #include <time.h>
 
 #include "cli_input.h"
+#include "cli_structure.h"
 #include "fricreg_structure.h"
-
-enum scheme { SCHEME_NONE, SCHEME_NEWMARK, SCHEME_HHT, SCHEME_CENTRAL, SCHEME_GSL };
-
-struct structure_options {
-    const char *mass, *stiffness, *damping, *contacts, *mun, *influence, *ground;
-    int rayleigh_given, alpha_given, law, integrator;
-    enum scheme scheme;
-    double a0, a1, eps, alpha, dt, t_end, rtol, atol;
-    enum cli_output output;
-};
 
 /* The model as read from the files: M, K, C (NULL: Rayleigh or none) n x n, J m x n. */
 struct structure_input {
@@ -58,6 +49,19 @@ static int parse_rayleigh(const char *text, struct structure_options *o)
     return 0;
 }
 
+/* The library's integrators that --integrator runs through fricreg_structure_run_ode, each
+ * after ", ", into buf[len]: all but "central", which names the structure's own central
+ * differences here (listed once, with newmark and hht, not again as a stepper). */
+static const char *gsl_stepper_names(char *buf, size_t len)
+{
+    size_t used = 0;
+    buf[0] = '\0';
+    for (int k = 1; fricreg_integrator_name(k) != NULL && used < len; k++)
+        if (strcmp(fricreg_integrator_name(k), "central") != 0)
+            used += (size_t)snprintf(buf + used, len - used, ", %s", fricreg_integrator_name(k));
+    return buf;
+}
+
 static int parse_integrator(const char *text, struct structure_options *o)
 {
     if (strcmp(text, "newmark") == 0)
@@ -70,8 +74,8 @@ static int parse_integrator(const char *text, struct structure_options *o)
         o->scheme = SCHEME_GSL;
     else {
         char names[256], what[320];
-        snprintf(what, sizeof what, "unknown integrator (newmark, hht, central, %s)",
-                 cli_names(names, sizeof names, fricreg_integrator_name, ", "));
+        snprintf(what, sizeof what, "unknown integrator (newmark, hht, central%s)",
+                 gsl_stepper_names(names, sizeof names));
         return cli_usage_error("--integrator", what);
     }
     return 0;
@@ -167,7 +171,7 @@ static int check_options(const struct structure_options *o)
     return o->scheme == SCHEME_GSL ? cli_check_tolerances(o->integrator, o->rtol, o->atol) : 0;
 }
 
-static int parse_structure(int argc, char **argv, struct structure_options *o)
+int cli_parse_structure(int argc, char **argv, struct structure_options *o)
 {
     *o = (struct structure_options){.law = FRICREG_LAW_QUINN,
                                     .alpha = -0.05,
@@ -566,7 +570,7 @@ static int run_structure(fricreg_structure *s, const struct structure_options *o
 int cli_structure(int argc, char **argv, FILE *out)
 {
     struct structure_options o;
-    int status = parse_structure(argc, argv, &o);
+    int status = cli_parse_structure(argc, argv, &o);
     if (status != 0)
         return status;
     struct structure_input in = {0};

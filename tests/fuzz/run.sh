@@ -16,10 +16,10 @@ mkdir -p "$work" "$corpus"
 dict=
 [ -f "$here/$target.dict" ] && dict=-dict=$here/$target.dict
 cd "$build/tests/fuzz" || exit 1
-# The CLI parser's usage messages would flood the log: its stderr is closed (a finding's
+# The CLI parsers' usage messages would flood the log: its stderr is closed (a finding's
 # message then shows when its input is replayed: fuzz_replay_cli_options FILE).
 quiet=
-[ "$target" = cli_options ] && quiet=-close_fd_mask=2
+case $target in cli_*) quiet=-close_fd_mask=2 ;; esac
 # shellcheck disable=SC2086 # $dict and $quiet are one word or none
 "$bin" "$work" "$corpus" $dict $quiet -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
     -max_len=512 -print_final_stats=1 "$@" >"$target.log" 2>&1

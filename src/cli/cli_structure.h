@@ -1,0 +1,24 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* cli_structure.h — the options of `fricreg-sim structure` (structure.c) and their parser,
+ * apart from the run so that tests/fuzz/fuzz_cli_structure.c can drive it. */
+#ifndef FRICREG_CLI_STRUCTURE_H
+#define FRICREG_CLI_STRUCTURE_H
+
+#include "cli.h"
+
+enum scheme { SCHEME_NONE, SCHEME_NEWMARK, SCHEME_HHT, SCHEME_CENTRAL, SCHEME_GSL };
+
+struct structure_options {
+    const char *mass, *stiffness, *damping, *contacts, *mun, *influence, *ground;
+    int rayleigh_given, alpha_given, law, integrator;
+    enum scheme scheme;
+    double a0, a1, eps, alpha, dt, t_end, rtol, atol;
+    enum cli_output output;
+};
+
+/* Parses argv (after the subcommand) into o, the file options as pointers into argv; checks
+ * the options that need or exclude others. On error prints one line naming the option to
+ * stderr and returns CLI_EXIT_USAGE, else 0. Reads no file. */
+int cli_parse_structure(int argc, char **argv, struct structure_options *o);
+
+#endif
