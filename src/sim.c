@@ -342,6 +342,11 @@ static int refuse_stick_zone(fricreg_sim *sim, const char *what, double bound, d
 {
     double lambda = rate / sim->eps, z = sim->dt * lambda;
     double eps_min = sim->dt * rate / bound; /* = eps z/bound, finite where lambda overflows */
+    if (!isfinite(eps_min) || !(bound * sim->eps / rate > 0.0)) /* no step or eps would do */
+        return sim_fail(sim, FRICREG_ESTEP,
+                        "run: the stick zone's stiffness, of order mun/eps, is beyond the "
+                        "double range for eps = %g: lower the bounds mun or raise eps",
+                        sim->eps);
     if (sim->eps_set > 0.0)
         return sim_fail(sim, FRICREG_ESTEP,
                         "run: dt = %g too large for the stick zone: its stiffness %g gives "

@@ -286,6 +286,23 @@ START_TEST(test_too_large_step_is_estep_naming_the_stick_zone)
 }
 END_TEST
 
+/* A stick-zone stiffness beyond the double range (mun = 1e300, eps = 1e-300: lambda = 2e600)
+ * has no step and no eps to name ("reduce dt to 0 or raise eps to inf" before): the message
+ * says to lower the bounds or raise eps. */
+START_TEST(test_overflowing_stick_zone_names_bounds_and_eps)
+{
+    fricreg_sim *sim = make(FRICREG_SYSTEM_OSCILLATOR);
+    ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_MUN, 1e300), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_QUINN, 1e-300), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 0.01, 0.0, 0.0), FRICREG_OK);
+    expect_failure(sim, fricreg_sim_run(sim, 1.0), FRICREG_ESTEP);
+    ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "beyond the double range"));
+    ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "raise eps"));
+    ck_assert_ptr_null(strstr(fricreg_sim_errmsg(sim), "inf"));
+    fricreg_sim_free(sim);
+}
+END_TEST
+
 /* The same check with coupled contacts under the consistent law uses W_ii: two blocks,
  * eps = 0.02, dt = 0.03, mu2 = 0.6: contact 0 has lambda = 1 * 2 * 0.5/0.02 = 50
  * (dt lambda = 1.5), contact 1 has lambda = 2 * 2 * 0.6/0.02 = 120 (dt lambda = 3.6 > 2.78). */
@@ -828,6 +845,7 @@ static Suite *sim_api_suite(void)
 
     TCase *run = tcase_create("run_checks");
     tcase_add_test(run, test_too_large_step_is_estep_naming_the_stick_zone);
+    tcase_add_test(run, test_overflowing_stick_zone_names_bounds_and_eps);
     tcase_add_test(run, test_estep_uses_the_coupling_diagonal);
     tcase_add_test(run, test_estep_paper_partition_sees_the_coupling);
     tcase_add_test(run, test_refused_run_leaves_the_initial_state);
