@@ -2,8 +2,10 @@
 /* law.c — the public scalar and batched entry points of the friction laws (law.h). */
 #include <math.h>
 
+#include "dispatch.h"
 #include "law.h"
 #include "plausible.h"
+#include "stream.h"
 
 static int bad_law_params(int law, double eps)
 {
@@ -45,8 +47,8 @@ static int bad_batch_inputs(size_t m, const double v[], const double f_eq[], con
 
 /* One loop per law: the switch stays outside, so each loop is a straight-line kernel of
  * selects that the vectorizer takes. */
-void fr_law_batch(int law, double eps, size_t m, const double v[], const double f_eq[],
-                  const double mun[], double f[])
+FR_KERNEL_BODY void law_batch_loops(int law, double eps, size_t m, const double v[],
+                                    const double f_eq[], const double mun[], double f[])
 {
     switch (law) {
     case FRICREG_LAW_COULOMB:
@@ -76,6 +78,41 @@ void fr_law_batch(int law, double eps, size_t m, const double v[], const double 
     }
 }
 
+/* A large batch: the law block by block into a buffer in L1, streamed out to f (stream.h).
+ * Each block's inputs are read before its outputs are written, so f may be v or f_eq. */
+static void law_batch_streamed(int law, double eps, size_t m, const double v[], const double f_eq[],
+                               const double mun[], double f[])
+{
+    double block[FR_STREAM_BLOCK];
+    for (size_t i = 0; i < m; i += FR_STREAM_BLOCK) {
+        size_t n = m - i < FR_STREAM_BLOCK ? m - i : FR_STREAM_BLOCK;
+        fr_law_batch(law, eps, n, v + i, f_eq ? f_eq + i : NULL, mun + i, block);
+        fr_stream_copy(f + i, block, n);
+    }
+    fr_stream_fence();
+}
+
+#ifdef FRICREG_AVX2_DISPATCH
+FR_AVX2 static void law_batch_avx2(int law, double eps, size_t m, const double v[],
+                                   const double f_eq[], const double mun[], double f[])
+{
+    law_batch_loops(law, eps, m, v, f_eq, mun, f);
+}
+#endif
+
+/* The loops in AVX2 where the CPU has it (dispatch.h). */
+void fr_law_batch(int law, double eps, size_t m, const double v[], const double f_eq[],
+                  const double mun[], double f[])
+{
+#ifdef FRICREG_AVX2_DISPATCH
+    if (fr_have_avx2()) {
+        law_batch_avx2(law, eps, m, v, f_eq, mun, f);
+        return;
+    }
+#endif
+    law_batch_loops(law, eps, m, v, f_eq, mun, f);
+}
+
 int fricreg_law_eval_batch(int law, double eps, size_t m, const double v[], const double f_eq[],
                            const double mun[], double f[])
 {
@@ -91,6 +128,9 @@ int fricreg_law_eval_batch(int law, double eps, size_t m, const double v[], cons
         if (status != FRICREG_OK)
             return status;
     }
-    fr_law_batch(law, eps, m, v, f_eq, mun, f);
+    if (m >= FR_STREAM_MIN_CONTACTS)
+        law_batch_streamed(law, eps, m, v, f_eq, mun, f);
+    else
+        fr_law_batch(law, eps, m, v, f_eq, mun, f);
     return FRICREG_OK;
 }

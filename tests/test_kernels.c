@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_kernels.c — Check suite for the batch kernels' validation pass (src/plausible.c: SSE2
- * groups of 8 contacts, then a plain-C tail in 4 lanes), behind fricreg_law_eval_batch and
- * fricreg_ctx_eval.
+ * groups of 8 contacts, or AVX2 groups of 16, then a plain-C tail in 4 lanes), behind
+ * fricreg_law_eval_batch and fricreg_ctx_eval, and for their vector loops (AVX2 where the CPU
+ * has it, src/dispatch.h) and streamed large batches (src/stream.h).
  *
  * Expected values: the promise of include/fricreg.h that bad input gets its code and a failing
  * call writes nothing (every bad element is put at every position of the groups and the tail,
@@ -179,6 +180,160 @@ START_TEST(context_rejects_every_position)
 }
 END_TEST
 
+/* ---- The AVX2 loops (src/dispatch.h) and the streamed path of large batches (src/stream.h) */
+
+/* Above the streaming threshold, FR_STREAM_MIN_CONTACTS = 2^18: odd and not a multiple of the
+ * 512-contact blocks, so that the last block and the last pair are partial. */
+#define M_BIG (((size_t)1 << 18) + 1001)
+
+/* f[i] equals the scalar law at (v[i], f_eq[i], mun[i]) bit for bit, i < m. */
+static void expect_scalar_law(int law, size_t m, const double v[], const double f_eq[],
+                              const double mun[], const double f[])
+{
+    for (size_t i = 0; i < m; i++) {
+        double ref;
+        ck_assert_int_eq(fricreg_law_eval(law, v[i], f_eq ? f_eq[i] : 0.0, mun[i], EPS, &ref),
+                         FRICREG_OK);
+        ck_assert_msg(memcmp(&f[i], &ref, sizeof ref) == 0, "law %d, m %zu, i %zu: %.17g vs %.17g",
+                      law, m, i, f[i], ref);
+    }
+}
+
+/* Every law, in cache (the vector loops, in AVX2 where the CPU has it), to an aligned f and to
+ * an f one element off 16-byte alignment: the scalar law, bit for bit. */
+START_TEST(batch_equals_scalar_law)
+{
+    enum { M = 1003 };
+    double v[M], f_eq[M], mun[M], out[M + 1];
+    for (size_t l = 0; l < N_LAWS; l++)
+        for (size_t offset = 0; offset < 2; offset++) {
+            fill(M, v, f_eq, mun);
+            ck_assert_int_eq(fricreg_law_eval_batch(all_laws[l], EPS, M, v, f_eq, mun,
+                                                    out + offset),
+                             FRICREG_OK);
+            expect_scalar_law(all_laws[l], M, v, f_eq, mun, out + offset);
+        }
+}
+END_TEST
+
+/* Above the threshold (streamed): law (4), to an aligned f and to one whose first element is
+ * stored plainly to align the rest, and (1) without f_eq: the scalar law, bit for bit. */
+START_TEST(batch_streamed_equals_scalar_law)
+{
+    double *v = array(M_BIG), *f_eq = array(M_BIG), *mun = array(M_BIG), *out = array(M_BIG + 1);
+    for (int c = 0; c < 3; c++) {
+        int law = c < 2 ? FRICREG_LAW_QUINN : FRICREG_LAW_COULOMB;
+        double *f = out + (c == 1), *feq = c < 2 ? f_eq : NULL;
+        fill(M_BIG, v, f_eq, mun);
+        ck_assert_int_eq(fricreg_law_eval_batch(law, EPS, M_BIG, v, feq, mun, f), FRICREG_OK);
+        expect_scalar_law(law, M_BIG, v, feq, mun, f);
+    }
+    free(v), free(f_eq), free(mun), free(out);
+}
+END_TEST
+
+/* f may be v or f_eq (include/fricreg.h): a streamed batch written over its own input gives
+ * what it gives into a separate array. */
+START_TEST(batch_streamed_in_place)
+{
+    double *v = array(M_BIG), *f_eq = array(M_BIG), *mun = array(M_BIG), *f = array(M_BIG);
+    double *inout = array(M_BIG);
+    for (int over = 0; over < 2; over++) {
+        fill(M_BIG, v, f_eq, mun);
+        ck_assert_int_eq(fricreg_law_eval_batch(FRICREG_LAW_QUINN, EPS, M_BIG, v, f_eq, mun, f),
+                         FRICREG_OK);
+        memcpy(inout, over ? f_eq : v, M_BIG * sizeof *inout);
+        ck_assert_int_eq(fricreg_law_eval_batch(FRICREG_LAW_QUINN, EPS, M_BIG, over ? v : inout,
+                                                over ? inout : f_eq, mun, inout),
+                         FRICREG_OK);
+        ck_assert_msg(memcmp(inout, f, M_BIG * sizeof *f) == 0, "f over %s differs",
+                      over ? "f_eq" : "v");
+    }
+    free(v), free(f_eq), free(mun), free(f), free(inout);
+}
+END_TEST
+
+/* A bad last (or first) element of a streamed batch: refused, f untouched. */
+START_TEST(batch_streamed_rejects_ends)
+{
+    double *v = array(M_BIG), *f_eq = array(M_BIG), *mun = array(M_BIG), *f = array(M_BIG);
+    const size_t positions[] = {M_BIG - 1, 0, M_BIG / 2};
+    for (size_t p = 0; p < 3; p++)
+        for (size_t c = 0; c < N_BAD; c++)
+            expect_refused(FRICREG_LAW_QUINN, M_BIG, positions[p], c, 1, v, f_eq, mun, f);
+    free(v), free(f_eq), free(mun), free(f);
+}
+END_TEST
+
+/* fricreg_ctx_eval with a diagonal W (W = I, and a general diagonal), m in cache and above the
+ * threshold, tangent inputs kept or not: f is the scalar law (4) at f_eq = -a_free/w (Sec. 3.3
+ * of shared/spec/paper.md: a diagonal W decouples the contacts), bit for bit; f_eq out is that
+ * f_eq on |zdot| < eps and NaN elsewhere; FRICREG_STAT_FEQ_CONTACTS counts |zdot| < eps. */
+static void expect_context_law(size_t m, int unit_w, int keep, double v[], double a_free[],
+                               double mun[], double w[], double feq_ref[], double f[],
+                               double f_eq[])
+{
+    fricreg_ctx *ctx = NULL;
+    ck_assert_int_eq(fricreg_ctx_create(m, &ctx), FRICREG_OK);
+    fill(m, v, a_free, mun);
+    for (size_t i = 0; i < m; i++)
+        w[i] = unit_w ? 1.0 : 0.5 + uniform();
+    ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, m, mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, EPS), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_coupling_diagonal(ctx, m, w), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_keep_tangent(ctx, keep), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_eval(ctx, m, v, a_free, f, f_eq), FRICREG_OK);
+    int64_t near = 0, counted = 0;
+    for (size_t i = 0; i < m; i++) {
+        feq_ref[i] = -a_free[i] / w[i];
+        near += fabs(v[i]) < EPS;
+        int same = fabs(v[i]) < EPS ? memcmp(&f_eq[i], &feq_ref[i], sizeof *f_eq) == 0
+                                    : isnan(f_eq[i]);
+        ck_assert_msg(same, "m %zu, i %zu: f_eq out %g, -a/w %g", m, i, f_eq[i], feq_ref[i]);
+    }
+    expect_scalar_law(FRICREG_LAW_QUINN, m, v, feq_ref, mun, f);
+    ck_assert_int_eq(fricreg_ctx_get_stat(ctx, FRICREG_STAT_FEQ_CONTACTS, &counted), FRICREG_OK);
+    ck_assert_int_eq(counted, near);
+    fricreg_ctx_free(ctx);
+}
+
+START_TEST(context_diagonal_equals_scalar_law)
+{
+    double *v = array(M_BIG), *a_free = array(M_BIG), *mun = array(M_BIG), *w = array(M_BIG);
+    double *feq_ref = array(M_BIG), *f = array(M_BIG), *f_eq = array(M_BIG);
+    const size_t ms[] = {1003, M_BIG};
+    for (size_t z = 0; z < 2; z++)
+        for (int unit_w = 0; unit_w < 2; unit_w++)
+            for (int keep = 0; keep < 2; keep++)
+                expect_context_law(ms[z], unit_w, keep, v, a_free, mun, w, feq_ref, f, f_eq);
+    free(v), free(a_free), free(mun), free(w), free(feq_ref), free(f), free(f_eq);
+}
+END_TEST
+
+/* A non-finite last (or first) zdot or a_free of a streamed evaluation: refused, f and f_eq
+ * out untouched. */
+START_TEST(context_streamed_rejects_ends)
+{
+    double *v = array(M_BIG), *a_free = array(M_BIG), *mun = array(M_BIG), *f = array(M_BIG);
+    double *f_eq = array(M_BIG);
+    fricreg_ctx *ctx = NULL;
+    ck_assert_int_eq(fricreg_ctx_create(M_BIG, &ctx), FRICREG_OK);
+    const size_t positions[] = {M_BIG - 1, 0};
+    for (size_t p = 0; p < 2; p++)
+        for (int which = 0; which < 4; which++) {
+            fill(M_BIG, v, a_free, mun);
+            (which < 2 ? v : a_free)[positions[p]] = which % 2 ? NAN : INFINITY;
+            for (size_t i = 0; i < M_BIG; i++)
+                f[i] = f_eq[i] = SENTINEL;
+            ck_assert_int_eq(fricreg_ctx_eval(ctx, M_BIG, v, a_free, f, f_eq), FRICREG_ENONFINITE);
+            ck_assert_msg(all_sentinel(f, M_BIG) && all_sentinel(f_eq, M_BIG),
+                          "bad at %zu: output written", positions[p]);
+        }
+    fricreg_ctx_free(ctx);
+    free(v), free(a_free), free(mun), free(f), free(f_eq);
+}
+END_TEST
+
 static Suite *kernels_suite(void)
 {
     Suite *s = suite_create("kernels");
@@ -187,6 +342,14 @@ static Suite *kernels_suite(void)
     tcase_add_test(validation, batch_false_alarms_pass);
     tcase_add_test(validation, context_rejects_every_position);
     suite_add_tcase(s, validation);
+    TCase *paths = tcase_create("vector_and_streamed_paths");
+    tcase_add_test(paths, batch_equals_scalar_law);
+    tcase_add_test(paths, batch_streamed_equals_scalar_law);
+    tcase_add_test(paths, batch_streamed_in_place);
+    tcase_add_test(paths, batch_streamed_rejects_ends);
+    tcase_add_test(paths, context_diagonal_equals_scalar_law);
+    tcase_add_test(paths, context_streamed_rejects_ends);
+    suite_add_tcase(s, paths);
     return s;
 }
 
