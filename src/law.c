@@ -5,7 +5,6 @@
 #include "dispatch.h"
 #include "law.h"
 #include "plausible.h"
-#include "stream.h"
 
 static int bad_law_params(int law, double eps)
 {
@@ -78,20 +77,6 @@ FR_KERNEL_BODY void law_batch_loops(int law, double eps, size_t m, const double 
     }
 }
 
-/* A large batch: the law block by block into a buffer in L1, streamed out to f (stream.h).
- * Each block's inputs are read before its outputs are written, so f may be v or f_eq. */
-static void law_batch_streamed(int law, double eps, size_t m, const double v[], const double f_eq[],
-                               const double mun[], double f[])
-{
-    double block[FR_STREAM_BLOCK];
-    for (size_t i = 0; i < m; i += FR_STREAM_BLOCK) {
-        size_t n = m - i < FR_STREAM_BLOCK ? m - i : FR_STREAM_BLOCK;
-        fr_law_batch(law, eps, n, v + i, f_eq ? f_eq + i : NULL, mun + i, block);
-        fr_stream_copy(f + i, block, n);
-    }
-    fr_stream_fence();
-}
-
 #ifdef FRICREG_AVX2_DISPATCH
 FR_AVX2 static void law_batch_avx2(int law, double eps, size_t m, const double v[],
                                    const double f_eq[], const double mun[], double f[])
@@ -128,9 +113,6 @@ int fricreg_law_eval_batch(int law, double eps, size_t m, const double v[], cons
         if (status != FRICREG_OK)
             return status;
     }
-    if (m >= FR_STREAM_MIN_CONTACTS)
-        law_batch_streamed(law, eps, m, v, f_eq, mun, f);
-    else
-        fr_law_batch(law, eps, m, v, f_eq, mun, f);
+    fr_law_batch(law, eps, m, v, f_eq, mun, f);
     return FRICREG_OK;
 }

@@ -13,7 +13,6 @@
 #include "law.h"
 #include "partition.h"
 #include "plausible.h"
-#include "stream.h"
 
 /* The index of the first non-finite zdot[i] or a_free[i], or m: run only when
  * fr_plausible fails, to name the culprit. */
@@ -167,36 +166,9 @@ static size_t diagonal_pass(int law, double eps, size_t m, const double zdot[],
                           last_afree);
 }
 
-/* A large batch (stream.h): the pass block by block, its forces into a buffer in L1, then
- * streamed out. The tangent's copies are stored plainly by the pass: streamed as well (three
- * streams of stores at once) they made the evaluation slower, not faster (docs/benchmark.md).
- * A block's inputs are read before its forces are written, so f may be zdot or a_free. */
-static void eval_diagonal_streamed(fricreg_ctx *ctx, const double zdot[], const double a_free[],
-                                   double f[], double f_eq[])
-{
-    double block[FR_STREAM_BLOCK];
-    size_t m = ctx->m, n_near = 0;
-    int keep = ctx->keep_tangent;
-    for (size_t i = 0; i < m; i += FR_STREAM_BLOCK) {
-        size_t n = m - i < FR_STREAM_BLOCK ? m - i : FR_STREAM_BLOCK;
-        n_near += diagonal_pass(ctx->law, ctx->eps, n, zdot + i, a_free + i, ctx->w_diag + i,
-                                ctx->w_unit, ctx->bound + i, block, f_eq ? f_eq + i : NULL,
-                                keep ? ctx->last_zdot + i : NULL,
-                                keep ? ctx->last_afree + i : NULL);
-        fr_stream_copy(f + i, block, n);
-    }
-    fr_stream_fence();
-    ctx->n_stick = n_near;
-    ctx->last_valid = ctx->keep_tangent;
-}
-
 static void eval_diagonal(fricreg_ctx *ctx, const double zdot[], const double a_free[], double f[],
                           double f_eq[])
 {
-    if (ctx->m >= FR_STREAM_MIN_CONTACTS) {
-        eval_diagonal_streamed(ctx, zdot, a_free, f, f_eq);
-        return;
-    }
     int keep = ctx->keep_tangent;
     ctx->n_stick = diagonal_pass(ctx->law, ctx->eps, ctx->m, zdot, a_free, ctx->w_diag, ctx->w_unit,
                                  ctx->bound, f, f_eq, keep ? ctx->last_zdot : NULL,

@@ -2,7 +2,7 @@
 /* test_kernels.c — Check suite for the batch kernels' validation pass (src/plausible.c: SSE2
  * groups of 8 contacts, or AVX2 groups of 16, then a plain-C tail in 4 lanes), behind
  * fricreg_law_eval_batch and fricreg_ctx_eval, and for their vector loops (AVX2 where the CPU
- * has it, src/dispatch.h) and streamed large batches (src/stream.h).
+ * has it, src/dispatch.h).
  *
  * Expected values: the promise of include/fricreg.h that bad input gets its code and a failing
  * call writes nothing (every bad element is put at every position of the groups and the tail,
@@ -180,15 +180,14 @@ START_TEST(context_rejects_every_position)
 }
 END_TEST
 
-/* ---- The AVX2 loops (src/dispatch.h) and the streamed path of large batches (src/stream.h) */
+/* ---- The vector loops: in AVX2 where the CPU has it (src/dispatch.h), else SSE2 */
 
-/* Above the streaming threshold, FR_STREAM_MIN_CONTACTS = 2^18: odd and not a multiple of the
- * 512-contact blocks, so that the last block and the last pair are partial. */
-#define M_BIG (((size_t)1 << 18) + 1001)
+/* Contacts: odd, so that every vector loop has a remainder. */
+#define M_PATH 1003
 
 /* f[i] equals the scalar law at (v[i], f_eq[i], mun[i]) bit for bit, i < m. One assertion
- * for the whole batch: Check records each assertion it passes, which at 2^18 contacts took
- * most of the test's time (under valgrind, minutes). */
+ * for the whole batch: Check records each assertion it passes (at 2^18 contacts that took
+ * minutes under valgrind). */
 static void expect_scalar_law(int law, size_t m, const double v[], const double f_eq[],
                               const double mun[], const double f[])
 {
@@ -203,86 +202,44 @@ static void expect_scalar_law(int law, size_t m, const double v[], const double 
                   bad < m ? f[bad] : 0.0, ref);
 }
 
-/* Every law, in cache (the vector loops, in AVX2 where the CPU has it), to an aligned f and to
- * an f one element off 16-byte alignment: the scalar law, bit for bit. */
+/* Every law, to an aligned f and to an f one element off 16-byte alignment, with f_eq and
+ * (where the law does not read it) without: the scalar law, bit for bit. */
 START_TEST(batch_equals_scalar_law)
 {
-    enum { M = 1003 };
-    double v[M], f_eq[M], mun[M], out[M + 1];
+    double v[M_PATH], f_eq[M_PATH], mun[M_PATH], out[M_PATH + 1];
     for (size_t l = 0; l < N_LAWS; l++)
-        for (size_t offset = 0; offset < 2; offset++) {
-            fill(M, v, f_eq, mun);
-            ck_assert_int_eq(fricreg_law_eval_batch(all_laws[l], EPS, M, v, f_eq, mun,
-                                                    out + offset),
+        for (int c = 0; c < 4; c++) {
+            double *f = out + c % 2, *feq = c < 2 ? f_eq : NULL;
+            if (!feq && reads_feq(all_laws[l]))
+                continue;
+            fill(M_PATH, v, f_eq, mun);
+            ck_assert_int_eq(fricreg_law_eval_batch(all_laws[l], EPS, M_PATH, v, feq, mun, f),
                              FRICREG_OK);
-            expect_scalar_law(all_laws[l], M, v, f_eq, mun, out + offset);
+            expect_scalar_law(all_laws[l], M_PATH, v, feq, mun, f);
         }
 }
 END_TEST
 
-/* Above the threshold (streamed): law (4), to an aligned f and to one whose first element is
- * stored plainly to align the rest, and (1) without f_eq: the scalar law, bit for bit. */
-START_TEST(batch_streamed_equals_scalar_law)
+/* f may be v or f_eq (include/fricreg.h): a batch written over its own input gives what it
+ * gives into a separate array. */
+START_TEST(batch_in_place)
 {
-    double *v = array(M_BIG), *f_eq = array(M_BIG), *mun = array(M_BIG), *out = array(M_BIG + 1);
-    for (int c = 0; c < 3; c++) {
-        int law = c < 2 ? FRICREG_LAW_QUINN : FRICREG_LAW_COULOMB;
-        double *f = out + (c == 1), *feq = c < 2 ? f_eq : NULL;
-        fill(M_BIG, v, f_eq, mun);
-        ck_assert_int_eq(fricreg_law_eval_batch(law, EPS, M_BIG, v, feq, mun, f), FRICREG_OK);
-        expect_scalar_law(law, M_BIG, v, feq, mun, f);
-    }
-    free(v), free(f_eq), free(mun), free(out);
-}
-END_TEST
-
-/* f may be v or f_eq (include/fricreg.h): a streamed batch written over its own input gives
- * what it gives into a separate array. */
-START_TEST(batch_streamed_in_place)
-{
-    double *v = array(M_BIG), *f_eq = array(M_BIG), *mun = array(M_BIG), *f = array(M_BIG);
-    double *inout = array(M_BIG);
+    double v[M_PATH], f_eq[M_PATH], mun[M_PATH], f[M_PATH], inout[M_PATH];
     for (int over = 0; over < 2; over++) {
-        fill(M_BIG, v, f_eq, mun);
-        ck_assert_int_eq(fricreg_law_eval_batch(FRICREG_LAW_QUINN, EPS, M_BIG, v, f_eq, mun, f),
+        fill(M_PATH, v, f_eq, mun);
+        ck_assert_int_eq(fricreg_law_eval_batch(FRICREG_LAW_QUINN, EPS, M_PATH, v, f_eq, mun, f),
                          FRICREG_OK);
-        memcpy(inout, over ? f_eq : v, M_BIG * sizeof *inout);
-        ck_assert_int_eq(fricreg_law_eval_batch(FRICREG_LAW_QUINN, EPS, M_BIG, over ? v : inout,
+        memcpy(inout, over ? f_eq : v, sizeof inout);
+        ck_assert_int_eq(fricreg_law_eval_batch(FRICREG_LAW_QUINN, EPS, M_PATH, over ? v : inout,
                                                 over ? inout : f_eq, mun, inout),
                          FRICREG_OK);
-        ck_assert_msg(memcmp(inout, f, M_BIG * sizeof *f) == 0, "f over %s differs",
-                      over ? "f_eq" : "v");
+        ck_assert_msg(memcmp(inout, f, sizeof f) == 0, "f over %s differs", over ? "f_eq" : "v");
     }
-    free(v), free(f_eq), free(mun), free(f), free(inout);
 }
 END_TEST
 
-/* A bad last (or first) element of a streamed batch, each bad case in turn on the same
- * inputs: refused, f untouched. */
-START_TEST(batch_streamed_rejects_ends)
-{
-    double *v = array(M_BIG), *f_eq = array(M_BIG), *mun = array(M_BIG), *f = array(M_BIG);
-    const size_t positions[] = {M_BIG - 1, 0};
-    fill(M_BIG, v, f_eq, mun);
-    for (size_t i = 0; i < M_BIG; i++)
-        f[i] = SENTINEL;
-    for (size_t p = 0; p < 2; p++)
-        for (size_t c = 0; c < N_BAD; c++) {
-            double *target = bad_cases[c].array == 0 ? v : bad_cases[c].array == 1 ? f_eq : mun;
-            double good = target[positions[p]];
-            target[positions[p]] = bad_cases[c].value;
-            ck_assert_int_eq(fricreg_law_eval_batch(FRICREG_LAW_QUINN, EPS, M_BIG, v, f_eq, mun, f),
-                             bad_cases[c].code);
-            ck_assert_msg(all_sentinel(f, M_BIG), "bad case %zu at %zu: f written", c,
-                          positions[p]);
-            target[positions[p]] = good;
-        }
-    free(v), free(f_eq), free(mun), free(f);
-}
-END_TEST
-
-/* fricreg_ctx_eval with a diagonal W (W = I, and a general diagonal), m in cache and above the
- * threshold, tangent inputs kept or not: f is the scalar law (4) at f_eq = -a_free/w (Sec. 3.3
+/* fricreg_ctx_eval with a diagonal W (W = I, and a general diagonal), tangent inputs kept or
+ * not: f is the scalar law (4) at f_eq = -a_free/w (Sec. 3.3
  * of shared/spec/paper.md: a diagonal W decouples the contacts), bit for bit; f_eq out is that
  * f_eq on |zdot| < eps and NaN elsewhere; FRICREG_STAT_FEQ_CONTACTS counts |zdot| < eps. */
 static void expect_context_law(size_t m, int unit_w, int keep, double v[], double a_free[],
@@ -319,40 +276,11 @@ static void expect_context_law(size_t m, int unit_w, int keep, double v[], doubl
 
 START_TEST(context_diagonal_equals_scalar_law)
 {
-    double *v = array(M_BIG), *a_free = array(M_BIG), *mun = array(M_BIG), *w = array(M_BIG);
-    double *feq_ref = array(M_BIG), *f = array(M_BIG), *f_eq = array(M_BIG);
-    const size_t ms[] = {1003, M_BIG};
-    for (size_t z = 0; z < 2; z++)
-        for (int unit_w = 0; unit_w < 2; unit_w++)
-            for (int keep = 0; keep < 2; keep++)
-                expect_context_law(ms[z], unit_w, keep, v, a_free, mun, w, feq_ref, f, f_eq);
-    free(v), free(a_free), free(mun), free(w), free(feq_ref), free(f), free(f_eq);
-}
-END_TEST
-
-/* A non-finite last (or first) zdot or a_free of a streamed evaluation: refused, f and f_eq
- * out untouched. */
-START_TEST(context_streamed_rejects_ends)
-{
-    double *v = array(M_BIG), *a_free = array(M_BIG), *mun = array(M_BIG), *f = array(M_BIG);
-    double *f_eq = array(M_BIG);
-    fricreg_ctx *ctx = NULL;
-    ck_assert_int_eq(fricreg_ctx_create(M_BIG, &ctx), FRICREG_OK);
-    const size_t positions[] = {M_BIG - 1, 0};
-    fill(M_BIG, v, a_free, mun);
-    for (size_t i = 0; i < M_BIG; i++)
-        f[i] = f_eq[i] = SENTINEL;
-    for (size_t p = 0; p < 2; p++)
-        for (int which = 0; which < 4; which++) {
-            double *target = which < 2 ? v : a_free, good = target[positions[p]];
-            target[positions[p]] = which % 2 ? NAN : INFINITY;
-            ck_assert_int_eq(fricreg_ctx_eval(ctx, M_BIG, v, a_free, f, f_eq), FRICREG_ENONFINITE);
-            ck_assert_msg(all_sentinel(f, M_BIG) && all_sentinel(f_eq, M_BIG),
-                          "bad at %zu: output written", positions[p]);
-            target[positions[p]] = good;
-        }
-    fricreg_ctx_free(ctx);
-    free(v), free(a_free), free(mun), free(f), free(f_eq);
+    double v[M_PATH], a_free[M_PATH], mun[M_PATH], w[M_PATH], feq_ref[M_PATH], f[M_PATH];
+    double f_eq[M_PATH];
+    for (int unit_w = 0; unit_w < 2; unit_w++)
+        for (int keep = 0; keep < 2; keep++)
+            expect_context_law(M_PATH, unit_w, keep, v, a_free, mun, w, feq_ref, f, f_eq);
 }
 END_TEST
 
@@ -364,13 +292,10 @@ static Suite *kernels_suite(void)
     tcase_add_test(validation, batch_false_alarms_pass);
     tcase_add_test(validation, context_rejects_every_position);
     suite_add_tcase(s, validation);
-    TCase *paths = tcase_create("vector_and_streamed_paths");
+    TCase *paths = tcase_create("vector_loops");
     tcase_add_test(paths, batch_equals_scalar_law);
-    tcase_add_test(paths, batch_streamed_equals_scalar_law);
-    tcase_add_test(paths, batch_streamed_in_place);
-    tcase_add_test(paths, batch_streamed_rejects_ends);
+    tcase_add_test(paths, batch_in_place);
     tcase_add_test(paths, context_diagonal_equals_scalar_law);
-    tcase_add_test(paths, context_streamed_rejects_ends);
     suite_add_tcase(s, paths);
     return s;
 }
