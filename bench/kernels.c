@@ -7,7 +7,9 @@
  * and m = 10^6 (40 MB of arrays: memory traffic counts). Inputs as bench/scaling.c: 40 %
  * stuck (v = 0), 20 % near stick (|v| < eps), 40 % slipping, in random order, fixed seed.
  * fricreg_ctx_eval runs as created, and with fricreg_ctx_set_keep_tangent(0) (no copies of
- * zdot and a_free for the tangent). Every figure is the median of REPEATS interleaved timings.
+ * zdot and a_free for the tangent). Where the library runs AVX2 kernels (src/dispatch.h), the
+ * minimal loops compiled for AVX2 too. Every figure is the median of REPEATS interleaved
+ * timings.
  * Prints the table and the ratios to the minimal loops; with OUTDIR, also writes kernels.csv
  * there. */
 #include <math.h>
@@ -18,20 +20,32 @@
 #include "bench.h"
 #include "minimal.h"
 
-enum { NSIZES = 2, REPEATS = 21, NITEMS = 8 };
+enum { NSIZES = 2, REPEATS = 21, NITEMS = 10 };
 static const size_t sizes[NSIZES] = {1000, 1000000};
 #define KERNEL_EPS 1e-3
 #define CONTACTS_PER_TIMING 4e6 /* small sizes are swept until a timing covers this many */
 
 /* What each item is; the minimal loop it is compared with (-1: none). */
-enum item { TRIAD, MIN_BATCH, BATCH, MIN_CTX, MIN_CTX_COPIES, CTX, CTX_FEQ, CTX_NO_TANGENT };
+enum item {
+    TRIAD,
+    MIN_BATCH,
+    BATCH,
+    MIN_CTX,
+    MIN_CTX_COPIES,
+    CTX,
+    CTX_FEQ,
+    CTX_NO_TANGENT,
+    MIN_BATCH_AVX2,
+    MIN_CTX_AVX2
+};
 static const char *const item_names[NITEMS] = {
     "triad a = b + s c (per element)",      "minimal loop, law (4)",
     "fricreg_law_eval_batch, law (4)",      "minimal loop, law (4), f_eq = -a/w",
     "  the same + copies of v, a_free",     "fricreg_ctx_eval, W = I, law (4)",
-    "fricreg_ctx_eval, the same, f_eq out", "fricreg_ctx_eval, no tangent inputs"};
-static const int item_yardstick[NITEMS] = {-1,      -1,      MIN_BATCH, -1,
-                                           MIN_CTX, MIN_CTX, MIN_CTX,   MIN_CTX};
+    "fricreg_ctx_eval, the same, f_eq out", "fricreg_ctx_eval, no tangent inputs",
+    "minimal loop, law (4), AVX2",          "minimal loop, f_eq = -a/w, AVX2"};
+static const int item_yardstick[NITEMS] = {-1,      -1,      MIN_BATCH, -1, MIN_CTX,
+                                           MIN_CTX, MIN_CTX, MIN_CTX,   -1, -1};
 
 struct arrays {
     size_t m;
@@ -114,6 +128,18 @@ static int run_item(int it, struct arrays *a)
         minimal_quinn_diagonal_copies(KERNEL_EPS, m, a->v, a->a_free, a->w, a->mun, a->f, a->v_copy,
                                       a->a_copy);
         return FRICREG_OK;
+    case MIN_BATCH_AVX2: /* the portable loop where AVX2 is not there (the table says n/a) */
+        if (minimal_have_avx2())
+            minimal_quinn_avx2(KERNEL_EPS, m, a->v, a->f_eq, a->mun, a->f);
+        else
+            minimal_quinn(KERNEL_EPS, m, a->v, a->f_eq, a->mun, a->f);
+        return FRICREG_OK;
+    case MIN_CTX_AVX2:
+        if (minimal_have_avx2())
+            minimal_quinn_diagonal_avx2(KERNEL_EPS, m, a->v, a->a_free, a->w, a->mun, a->f);
+        else
+            minimal_quinn_diagonal(KERNEL_EPS, m, a->v, a->a_free, a->w, a->mun, a->f);
+        return FRICREG_OK;
     case CTX: return fricreg_ctx_eval(a->ctx, m, a->v, a->a_free, a->f, NULL);
     case CTX_NO_TANGENT: return fricreg_ctx_eval(a->ctx_no_tangent, m, a->v, a->a_free, a->f, NULL);
     default: return fricreg_ctx_eval(a->ctx, m, a->v, a->a_free, a->f, a->f_eq_out);
@@ -159,7 +185,7 @@ static int measure(void)
 /* Bytes each item moves per contact, counted as STREAM counts (reads + writes, no
  * write-allocate): the bandwidth bound is bytes / (triad's bytes per ns). fricreg_ctx_eval
  * also keeps copies of zdot and a_free for fricreg_ctx_tangent. */
-static const double item_bytes[NITEMS] = {24, 32, 32, 40, 56, 56, 64, 40};
+static const double item_bytes[NITEMS] = {24, 32, 32, 40, 56, 56, 64, 40, 32, 40};
 
 static void print_table(void)
 {
@@ -182,6 +208,16 @@ static void print_table(void)
     printf("\nratio: to the minimal loop of the same math, the first above it (target <= 1.5);"
            "\nfricreg_ctx_eval / (minimal + copies): m = 10^3 %.2f, m = 10^6 %.2f\n",
            ns[0][CTX] / ns[0][MIN_CTX_COPIES], ns[1][CTX] / ns[1][MIN_CTX_COPIES]);
+    if (minimal_have_avx2()) /* the library runs its AVX2 kernels here: the ratios to those */
+        printf("to the minimal loops in AVX2 (the code the library dispatches to here): batch "
+               "%.2f / %.2f, ctx_eval %.2f / %.2f, no tangent inputs %.2f / %.2f\n",
+               ns[0][BATCH] / ns[0][MIN_BATCH_AVX2], ns[1][BATCH] / ns[1][MIN_BATCH_AVX2],
+               ns[0][CTX] / ns[0][MIN_CTX_AVX2], ns[1][CTX] / ns[1][MIN_CTX_AVX2],
+               ns[0][CTX_NO_TANGENT] / ns[0][MIN_CTX_AVX2],
+               ns[1][CTX_NO_TANGENT] / ns[1][MIN_CTX_AVX2]);
+    else
+        printf("minimal loops in AVX2: n/a (not built with FRICREG_AVX2_DISPATCH, or no AVX2 "
+               "here; those rows ran the portable loops)\n");
     for (int z = 0; z < NSIZES; z++) {
         double bw = item_bytes[TRIAD] / ns[z][TRIAD];
         printf("m = %-8zu triad %.1f GB/s; bandwidth bound (STREAM bytes / triad rate): batch "

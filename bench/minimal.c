@@ -46,3 +46,36 @@ void minimal_triad(size_t m, double a[], const double b[], const double c[], dou
     for (size_t i = 0; i < m; i++)
         a[i] = b[i] + s * c[i];
 }
+
+/* The same two loops compiled for AVX2 (no FMA: it would change the rounding), the code the
+ * library's kernels run on a CPU with AVX2 (src/dispatch.h), so that the benchmark shows the
+ * kernels' ratios to both. Where the compiler cannot dispatch, the portable loops. */
+#ifdef FRICREG_AVX2_DISPATCH
+#define AVX2 __attribute__((target("avx2")))
+int minimal_have_avx2(void)
+{
+    return __builtin_cpu_supports("avx2");
+}
+#else
+#define AVX2
+int minimal_have_avx2(void)
+{
+    return 0;
+}
+#endif
+
+AVX2 void minimal_quinn_avx2(double eps, size_t m, const double v[], const double f_eq[],
+                             const double mun[], double f[])
+{
+    double k = 2.0 / eps;
+    for (size_t i = 0; i < m; i++)
+        f[i] = quinn(k * v[i], f_eq[i], mun[i]);
+}
+
+AVX2 void minimal_quinn_diagonal_avx2(double eps, size_t m, const double v[], const double a_free[],
+                                      const double w[], const double mun[], double f[])
+{
+    double k = 2.0 / eps;
+    for (size_t i = 0; i < m; i++)
+        f[i] = quinn(k * v[i], -a_free[i] / w[i], mun[i]);
+}

@@ -25,6 +25,14 @@ void minimal_quinn_diagonal_copies(double eps, size_t m, const double v[], const
                                    const double w[], const double mun[], double f[],
                                    double *restrict v_copy, double *restrict a_copy);
 
+/** minimal_quinn and minimal_quinn_diagonal compiled for AVX2 (no FMA), to run only where
+ *  minimal_have_avx2() (1: built with FRICREG_AVX2_DISPATCH and the CPU has AVX2). */
+int minimal_have_avx2(void);
+void minimal_quinn_avx2(double eps, size_t m, const double v[], const double f_eq[],
+                        const double mun[], double f[]);
+void minimal_quinn_diagonal_avx2(double eps, size_t m, const double v[], const double a_free[],
+                                 const double w[], const double mun[], double f[]);
+
 /** a[i] = b[i] + s c[i] (STREAM's triad): the memory bandwidth yardstick. */
 void minimal_triad(size_t m, double a[], const double b[], const double c[], double s);
 

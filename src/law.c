@@ -2,6 +2,7 @@
 /* law.c — the public scalar and batched entry points of the friction laws (law.h). */
 #include <math.h>
 
+#include "dispatch.h"
 #include "law.h"
 #include "plausible.h"
 
@@ -45,8 +46,8 @@ static int bad_batch_inputs(size_t m, const double v[], const double f_eq[], con
 
 /* One loop per law: the switch stays outside, so each loop is a straight-line kernel of
  * selects that the vectorizer takes. */
-void fr_law_batch(int law, double eps, size_t m, const double v[], const double f_eq[],
-                  const double mun[], double f[])
+FR_KERNEL_BODY void law_batch_loops(int law, double eps, size_t m, const double v[],
+                                    const double f_eq[], const double mun[], double f[])
 {
     switch (law) {
     case FRICREG_LAW_COULOMB:
@@ -74,6 +75,27 @@ void fr_law_batch(int law, double eps, size_t m, const double v[], const double 
             f[i] = fr_quinn(v[i], f_eq[i], mun[i], eps);
         break;
     }
+}
+
+#ifdef FRICREG_AVX2_DISPATCH
+FR_AVX2 static void law_batch_avx2(int law, double eps, size_t m, const double v[],
+                                   const double f_eq[], const double mun[], double f[])
+{
+    law_batch_loops(law, eps, m, v, f_eq, mun, f);
+}
+#endif
+
+/* The loops in AVX2 where the CPU has it (dispatch.h). */
+void fr_law_batch(int law, double eps, size_t m, const double v[], const double f_eq[],
+                  const double mun[], double f[])
+{
+#ifdef FRICREG_AVX2_DISPATCH
+    if (fr_have_avx2()) {
+        law_batch_avx2(law, eps, m, v, f_eq, mun, f);
+        return;
+    }
+#endif
+    law_batch_loops(law, eps, m, v, f_eq, mun, f);
 }
 
 int fricreg_law_eval_batch(int law, double eps, size_t m, const double v[], const double f_eq[],

@@ -9,6 +9,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "dispatch.h"
 #include "law.h"
 #include "partition.h"
 #include "plausible.h"
@@ -121,10 +122,10 @@ static inline uint64_t bits_of(double x)
 
 /* The pass for law (known, reading f_eq) on m contacts; returns |S|. With last_zdot NULL the
  * tangent's inputs are not kept (fricreg_ctx_set_keep_tangent); w_unit: W = I. */
-static size_t diagonal_pass(int law, double eps, size_t m, const double zdot[],
-                            const double a_free[], const double w[], int w_unit, const double mun[],
-                            double f[], double f_eq[], double *restrict last_zdot,
-                            double *restrict last_afree)
+FR_KERNEL_BODY size_t diagonal_loops(int law, double eps, size_t m, const double zdot[],
+                                     const double a_free[], const double w[], int w_unit,
+                                     const double mun[], double f[], double f_eq[],
+                                     double *restrict last_zdot, double *restrict last_afree)
 {
     uint64_t n_near = 0, band = bits_of(law == FRICREG_LAW_FORCE_BALANCE ? 0x1p-1074 : eps);
     double k = fr_band_scale(eps);
@@ -137,6 +138,32 @@ static size_t diagonal_pass(int law, double eps, size_t m, const double zdot[],
         break;
     }
     return (size_t)n_near;
+}
+
+#ifdef FRICREG_AVX2_DISPATCH
+FR_AVX2 static size_t diagonal_avx2(int law, double eps, size_t m, const double zdot[],
+                                    const double a_free[], const double w[], int w_unit,
+                                    const double mun[], double f[], double f_eq[],
+                                    double *restrict last_zdot, double *restrict last_afree)
+{
+    return diagonal_loops(law, eps, m, zdot, a_free, w, w_unit, mun, f, f_eq, last_zdot,
+                          last_afree);
+}
+#endif
+
+/* diagonal_loops, in AVX2 where the CPU has it (dispatch.h). */
+static size_t diagonal_pass(int law, double eps, size_t m, const double zdot[],
+                            const double a_free[], const double w[], int w_unit, const double mun[],
+                            double f[], double f_eq[], double *restrict last_zdot,
+                            double *restrict last_afree)
+{
+#ifdef FRICREG_AVX2_DISPATCH
+    if (fr_have_avx2())
+        return diagonal_avx2(law, eps, m, zdot, a_free, w, w_unit, mun, f, f_eq, last_zdot,
+                             last_afree);
+#endif
+    return diagonal_loops(law, eps, m, zdot, a_free, w, w_unit, mun, f, f_eq, last_zdot,
+                          last_afree);
 }
 
 static void eval_diagonal(fricreg_ctx *ctx, const double zdot[], const double a_free[], double f[],

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_kernels.c — Check suite for the batch kernels' validation pass (src/plausible.c: SSE2
- * groups of 8 contacts, then a plain-C tail in 4 lanes), behind fricreg_law_eval_batch and
- * fricreg_ctx_eval.
+ * groups of 8 contacts, or AVX2 groups of 16, then a plain-C tail in 4 lanes), behind
+ * fricreg_law_eval_batch and fricreg_ctx_eval, and for their vector loops (AVX2 where the CPU
+ * has it, src/dispatch.h).
  *
  * Expected values: the promise of include/fricreg.h that bad input gets its code and a failing
  * call writes nothing (every bad element is put at every position of the groups and the tail,
@@ -179,6 +180,110 @@ START_TEST(context_rejects_every_position)
 }
 END_TEST
 
+/* ---- The vector loops: in AVX2 where the CPU has it (src/dispatch.h), else SSE2 */
+
+/* Contacts: odd, so that every vector loop has a remainder. */
+#define M_PATH 1003
+
+/* f[i] equals the scalar law at (v[i], f_eq[i], mun[i]) bit for bit, i < m. One assertion
+ * for the whole batch: Check records each assertion it passes (at 2^18 contacts that took
+ * minutes under valgrind). */
+static void expect_scalar_law(int law, size_t m, const double v[], const double f_eq[],
+                              const double mun[], const double f[])
+{
+    size_t bad = m;
+    double ref = 0.0;
+    for (size_t i = 0; i < m && bad == m; i++) {
+        int status = fricreg_law_eval(law, v[i], f_eq ? f_eq[i] : 0.0, mun[i], EPS, &ref);
+        if (status != FRICREG_OK || memcmp(&f[i], &ref, sizeof ref) != 0)
+            bad = i;
+    }
+    ck_assert_msg(bad == m, "law %d, m %zu, i %zu: %.17g vs the scalar law's %.17g", law, m, bad,
+                  bad < m ? f[bad] : 0.0, ref);
+}
+
+/* Every law, to an aligned f and to an f one element off 16-byte alignment, with f_eq and
+ * (where the law does not read it) without: the scalar law, bit for bit. */
+START_TEST(batch_equals_scalar_law)
+{
+    double v[M_PATH], f_eq[M_PATH], mun[M_PATH], out[M_PATH + 1];
+    for (size_t l = 0; l < N_LAWS; l++)
+        for (int c = 0; c < 4; c++) {
+            double *f = out + c % 2, *feq = c < 2 ? f_eq : NULL;
+            if (!feq && reads_feq(all_laws[l]))
+                continue;
+            fill(M_PATH, v, f_eq, mun);
+            ck_assert_int_eq(fricreg_law_eval_batch(all_laws[l], EPS, M_PATH, v, feq, mun, f),
+                             FRICREG_OK);
+            expect_scalar_law(all_laws[l], M_PATH, v, feq, mun, f);
+        }
+}
+END_TEST
+
+/* f may be v or f_eq (include/fricreg.h): a batch written over its own input gives what it
+ * gives into a separate array. */
+START_TEST(batch_in_place)
+{
+    double v[M_PATH], f_eq[M_PATH], mun[M_PATH], f[M_PATH], inout[M_PATH];
+    for (int over = 0; over < 2; over++) {
+        fill(M_PATH, v, f_eq, mun);
+        ck_assert_int_eq(fricreg_law_eval_batch(FRICREG_LAW_QUINN, EPS, M_PATH, v, f_eq, mun, f),
+                         FRICREG_OK);
+        memcpy(inout, over ? f_eq : v, sizeof inout);
+        ck_assert_int_eq(fricreg_law_eval_batch(FRICREG_LAW_QUINN, EPS, M_PATH, over ? v : inout,
+                                                over ? inout : f_eq, mun, inout),
+                         FRICREG_OK);
+        ck_assert_msg(memcmp(inout, f, sizeof f) == 0, "f over %s differs", over ? "f_eq" : "v");
+    }
+}
+END_TEST
+
+/* fricreg_ctx_eval with a diagonal W (W = I, and a general diagonal), tangent inputs kept or
+ * not: f is the scalar law (4) at f_eq = -a_free/w (Sec. 3.3
+ * of shared/spec/paper.md: a diagonal W decouples the contacts), bit for bit; f_eq out is that
+ * f_eq on |zdot| < eps and NaN elsewhere; FRICREG_STAT_FEQ_CONTACTS counts |zdot| < eps. */
+static void expect_context_law(size_t m, int unit_w, int keep, double v[], double a_free[],
+                               double mun[], double w[], double feq_ref[], double f[],
+                               double f_eq[])
+{
+    fricreg_ctx *ctx = NULL;
+    ck_assert_int_eq(fricreg_ctx_create(m, &ctx), FRICREG_OK);
+    fill(m, v, a_free, mun);
+    for (size_t i = 0; i < m; i++)
+        w[i] = unit_w ? 1.0 : 0.5 + uniform();
+    ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, m, mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, EPS), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_coupling_diagonal(ctx, m, w), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_keep_tangent(ctx, keep), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_eval(ctx, m, v, a_free, f, f_eq), FRICREG_OK);
+    int64_t near = 0, counted = 0;
+    size_t bad = m;
+    for (size_t i = 0; i < m; i++) {
+        feq_ref[i] = -a_free[i] / w[i];
+        near += fabs(v[i]) < EPS;
+        int same = fabs(v[i]) < EPS ? memcmp(&f_eq[i], &feq_ref[i], sizeof *f_eq) == 0
+                                    : isnan(f_eq[i]);
+        if (!same && bad == m)
+            bad = i;
+    }
+    ck_assert_msg(bad == m, "m %zu, i %zu: f_eq out %g, -a/w %g", m, bad, bad < m ? f_eq[bad] : 0.0,
+                  bad < m ? feq_ref[bad] : 0.0);
+    expect_scalar_law(FRICREG_LAW_QUINN, m, v, feq_ref, mun, f);
+    ck_assert_int_eq(fricreg_ctx_get_stat(ctx, FRICREG_STAT_FEQ_CONTACTS, &counted), FRICREG_OK);
+    ck_assert_int_eq(counted, near);
+    fricreg_ctx_free(ctx);
+}
+
+START_TEST(context_diagonal_equals_scalar_law)
+{
+    double v[M_PATH], a_free[M_PATH], mun[M_PATH], w[M_PATH], feq_ref[M_PATH], f[M_PATH];
+    double f_eq[M_PATH];
+    for (int unit_w = 0; unit_w < 2; unit_w++)
+        for (int keep = 0; keep < 2; keep++)
+            expect_context_law(M_PATH, unit_w, keep, v, a_free, mun, w, feq_ref, f, f_eq);
+}
+END_TEST
+
 static Suite *kernels_suite(void)
 {
     Suite *s = suite_create("kernels");
@@ -187,6 +292,11 @@ static Suite *kernels_suite(void)
     tcase_add_test(validation, batch_false_alarms_pass);
     tcase_add_test(validation, context_rejects_every_position);
     suite_add_tcase(s, validation);
+    TCase *paths = tcase_create("vector_loops");
+    tcase_add_test(paths, batch_equals_scalar_law);
+    tcase_add_test(paths, batch_in_place);
+    tcase_add_test(paths, context_diagonal_equals_scalar_law);
+    suite_add_tcase(s, paths);
     return s;
 }
 
