@@ -146,10 +146,11 @@ static const double extrap2_eps[BENCH_NPROBLEMS] = {0.025, 0.04, 0.005, 0.004};
 static const double tiny_eps[BENCH_NPROBLEMS] = {0.0, 1e-8, 0.0, 0.0};
 
 /* The window of the extrap2-window runs, in forcing cycles (0: not run). On osc_stick a finer
- * level started from level 0's state forgets the difference about 5x a cycle (a relative
- * 5.7e-6 in D after two cycles, 4e-8 after five), so in 10 cycles it is below 1e-11 and D on
- * cycle 50 costs the finer level 10/50 of its whole run. osc_slip forgets too slowly (10
- * cycles: D moved by 2.4e-5); the chain and the two blocks measure cycle 4. */
+ * level started from level 0's state forgets the difference 4.9x a cycle (extrap2's D on
+ * cycle 50 against the full levels: 1.2e-6 relative with a window of 2 cycles, 1.1e-8 with
+ * 5, 2e-11 with 10), so D on cycle 50 costs the finer level 10/50 of its whole run. osc_slip
+ * forgets too slowly (10 cycles: D moved by 2.4e-5); the chain and the two blocks measure
+ * cycle 4. */
 static const int window_cycles[BENCH_NPROBLEMS] = {10, 0, 0, 0};
 
 enum { PASSES = 5, MIN_PASSES = 3 };
