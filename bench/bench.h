@@ -77,6 +77,8 @@ struct bench_sim_point {
                     * D its extrapolation and rhs_evals those of every level; else a plain run */
     int order;     /* extrapolated runs: the declared leading order in eps (0: 1), used where
                     * the levels cannot show one (2 levels) */
+    int window;    /* extrapolated runs: > 0: the finer levels run only the last `window`
+                    * cycles from level 0's state (fricreg_sim_run_extrapolated_window) */
 };
 
 /** The forcing period of a problem, as the library reports it (FRICREG_VALUE_PERIOD): the one

@@ -61,7 +61,7 @@ static int one_n(size_t n, FILE *csv)
      * RK4 at the guard's step, not extrapolated, and CVODE gets a shorter cap. */
     int big = n > 2000;
     struct bench_sim_point ref_pt = {
-        &p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt, 0.0, 0.0, 0, big ? 0 : 3, 0};
+        &p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt, 0.0, 0.0, 0, big ? 0 : 3, 0, 0};
     double t0 = bench_cpu_seconds();
     if (bench_sim_run(&ref_pt, &run) != FRICREG_OK) {
         fprintf(stderr, "fricreg-bench-bigchain: n = %zu: the reference failed: %s\n", n, run.msg);
@@ -89,7 +89,7 @@ static int one_n(size_t n, FILE *csv)
     }
     for (int k = 0; !big && k < 2; k++) {
         struct bench_sim_point pt = {
-            &p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt / (1 << k), 0.0, 0.0, 0, 0, 0};
+            &p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt / (1 << k), 0.0, 0.0, 0, 0, 0, 0};
         t0 = bench_cpu_seconds();
         bench_sim_run(&pt, &run);
         record(&rows[nr++], "rk4/quinn(4)", dt / (1 << k), t0, &run, ref);
@@ -126,7 +126,7 @@ static int one_n(size_t n, FILE *csv)
     for (int k = 0; k < 4; k++) {
         double h = cd_lib[k] / (double)n, eps_dt = 2.0 / (0.88 - cd_lib[k] * cd_lib[k]);
         struct bench_sim_point pt = {
-            &p, FRICREG_LAW_QUINN, FRICREG_INT_CENTRAL, h, 0.0, eps_dt * h, 0, 0, 0};
+            &p, FRICREG_LAW_QUINN, FRICREG_INT_CENTRAL, h, 0.0, eps_dt * h, 0, 0, 0, 0};
         t0 = bench_cpu_seconds();
         bench_sim_run(&pt, &run);
         record(&rows[nr++], "central/quinn(4)", h, t0, &run, ref);

@@ -79,7 +79,7 @@ static int sim_setup(fricreg_sim *sim, const struct bench_sim_point *pt)
 
 double bench_period(const struct bench_problem *p)
 {
-    struct bench_sim_point pt = {p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0.01, 0.0, 0.0, 0, 0, 0};
+    struct bench_sim_point pt = {p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0.01, 0.0, 0.0, 0, 0, 0, 0};
     double period = NAN;
     fricreg_sim *sim = NULL;
     if (fricreg_sim_create(p->system, &sim) == FRICREG_OK && sim_setup(sim, &pt) == FRICREG_OK)
@@ -104,7 +104,8 @@ static int run_extrapolated(fricreg_sim *sim, const struct bench_sim_point *pt, 
     double T = NAN, *err = malloc(cycles * sizeof *err);
     int status = err ? fricreg_sim_get_value(sim, FRICREG_VALUE_PERIOD, &T) : FRICREG_ENOMEM;
     if (status == FRICREG_OK)
-        status = fricreg_sim_run_extrapolated(sim, (double)cycles * T, pt->levels, pt->order);
+        status = fricreg_sim_run_extrapolated_window(sim, (double)cycles * T, pt->levels, pt->order,
+                                                     pt->window);
     if (status == FRICREG_OK)
         status = fricreg_sim_get_extrapolated_dissipation(sim, cycles, D, err);
     if (status == FRICREG_OK) {

@@ -61,8 +61,8 @@ static int ladder_reference(const struct bench_problem *p, double dt0, int level
             "ratio of differences (2 = 1st order, 4 = 2nd)");
     for (int k = 0; k < levels && k < MAX_LEVELS; k++) {
         dt[k] = dt0 / (double)(1 << k);
-        struct bench_sim_point pt = {p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt[k], 0.0, 0.0, 0, 0,
-                                     0};
+        struct bench_sim_point pt = {
+            p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt[k], 0.0, 0.0, 0, 0, 0, 0};
         double t0 = bench_cpu_seconds();
         if (bench_sim_run(&pt, &run) != FRICREG_OK) {
             fprintf(log, "  dt = %g failed: %s\n", dt[k], run.msg);

@@ -1194,18 +1194,23 @@ contains
 
   !> Run at eps, eps/2, …, eps/2^(levels-1) and extrapolate D to eps -> 0 with an error
   !> estimate (fricreg_sim_run_extrapolated: levels 2 … 8; order 0 … 4, the declared leading
-  !> order used where none is observed, 0 meaning 1; optional, default 0).
-  function sim_run_extrapolated(self, t_end, levels, order) result(status)
+  !> order used where none is observed, 0 meaning 1; optional, default 0). window (optional,
+  !> default 0: the whole run): the finer levels over the last `window` cycles only, from
+  !> level 0's state there (fricreg_sim_run_extrapolated_window; the estimates it cannot give
+  !> are +infinity).
+  function sim_run_extrapolated(self, t_end, levels, order, window) result(status)
     class(fricreg_simulation), intent(inout) :: self
     real(c_double), intent(in) :: t_end
     integer, intent(in) :: levels
-    integer, intent(in), optional :: order
-    integer(c_int) :: status, declared
+    integer, intent(in), optional :: order, window
+    integer(c_int) :: status, declared, last
     declared = 0
+    last = 0
     if (present(order)) declared = int(order, c_int)
+    if (present(window)) last = int(window, c_int)
     status = self%ready('run_extrapolated', 'simulation')
-    if (status == FRICREG_OK) status = self%record(fricreg_sim_run_extrapolated(self%ptr, t_end, &
-                                                    int(levels, c_int), declared))
+    if (status == FRICREG_OK) status = self%record(fricreg_sim_run_extrapolated_window(self%ptr, &
+                                                    t_end, int(levels, c_int), declared, last))
   end function sim_run_extrapolated
 
   !> One quantity of the last extrapolated run (FRICREG_EXTRAP_*) into value. FRICREG_EINVAL

@@ -603,6 +603,8 @@ static void close_cycle(fricreg_sim *sim, double period, double *D_start)
 {
     double D_now = sim->y[2 * sim->ndof];
     sim->D[sim->cycles++] = D_now - *D_start;
+    if (sim->capture_y != NULL && sim->cycles == sim->capture_cycle)
+        memcpy(sim->capture_y, sim->y, (2 * sim->ndof + 1) * sizeof *sim->y);
     *D_start = D_now;
     for (size_t i = 0; i < sim->m; i++) {
         sim->stick_fraction[i] = sim->stick_time[i] / period;
@@ -610,14 +612,15 @@ static void close_cycle(fricreg_sim *sim, double period, double *D_start)
     }
 }
 
-/* Integrates the `cycles` whole forcing cycles within t_end, then the rest of the way. */
+/* Integrates the `cycles` whole forcing cycles within t_end (after the start_cycle ones a
+ * window's run skips), then the rest of the way. */
 static int integrate(fricreg_sim *sim, gsl_odeiv2_driver *d, const struct fr_integrator *integ,
                      double t_end, size_t cycles)
 {
     double T = period(sim), D_start = 0.0, h = sim->dt;
     int status = sim->observer ? observe(sim) : FRICREG_OK;
-    for (size_t k = 1; status == FRICREG_OK && sim->t < t_end; k++) {
-        int whole = k <= cycles;
+    for (size_t k = sim->start_cycle + 1; status == FRICREG_OK && sim->t < t_end; k++) {
+        int whole = k <= sim->start_cycle + cycles;
         status = advance(sim, d, integ, whole ? (double)k * T : t_end, &h);
         if (status == FRICREG_OK && whole)
             close_cycle(sim, T, &D_start);
@@ -645,9 +648,12 @@ int fricreg_sim_run(fricreg_sim *sim, double t_end)
     double whole_cycles = fr_whole_cycles(t_end, period(sim));
     if (whole_cycles > MAX_CYCLES)
         return sim_fail(sim, FRICREG_EINVAL, "run: t_end = %g spans more than 10^9 cycles", t_end);
+    if (sim->start_cycle > 0 && (double)sim->start_cycle >= whole_cycles) /* extrapolate.c */
+        return sim_fail(sim, FRICREG_EINVAL, "run: a window from cycle %zu of %g", sim->start_cycle,
+                        whole_cycles);
     free_run(sim);
     sim->eps = eps_in_use(sim);
-    size_t cycles = (size_t)whole_cycles;
+    size_t cycles = (size_t)whole_cycles - sim->start_cycle;
     int status = alloc_run(sim, cycles);
     if (status == FRICREG_OK)
         status = check_step(sim, integ);
@@ -656,6 +662,10 @@ int fricreg_sim_run(fricreg_sim *sim, double t_end)
         return status;
     }
     sim->sys.type->initial(&sim->sys, sim->y, sim->y + sim->ndof);
+    if (sim->start_y != NULL) { /* a window's level: level 0's state where the window starts */
+        memcpy(sim->y, sim->start_y, 2 * sim->ndof * sizeof *sim->y);
+        sim->t = (double)sim->start_cycle * period(sim);
+    }
     sim->y[2 * sim->ndof] = 0.0;
     sim->rhs_status = FRICREG_OK;
     sim->step_checked = 0;

@@ -54,6 +54,14 @@ struct fricreg_sim {
     int step_checked;
     size_t step_diverged;
 
+    /* extrapolate.c's window (fricreg_sim_run_extrapolated_window), kept across free_run: a
+     * run that starts at the end of cycle start_cycle from the state start_y (x, v; D starts
+     * at 0) and records only the cycles after it; a run that copies its state (x, v, D) at
+     * the end of cycle capture_cycle into capture_y. 0 and NULL: neither. */
+    size_t start_cycle, capture_cycle;
+    const double *start_y; /* [2 ndof] */
+    double *capture_y;     /* [2 ndof + 1] */
+
     struct fr_error err;
 };
 

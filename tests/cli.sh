@@ -47,6 +47,17 @@ expect_usage_error "--extrapolate" chain --extrapolate 3 --output trajectory
 expect_usage_error "--extrapolate" exact --extrapolate 3
 expect_output '"extrapolation": \{"levels": 3, "order": 2, "observed_order": 2\.0[0-4][0-9]*, "flagged_cycles": 0, "eps_finest": 0\.01,' \
     oscillator --a 2 --omega 0.5 --x0 0 --integrator rk8pd --rtol 1e-11 --atol 1e-11 --eps 0.04 --cycles 3 --extrapolate 3
+# --extrapolate-order P, --extrapolate-window W (fricreg_sim_run_extrapolated_window): over 12
+# cycles with a window of 4, the first 8 cycles and the window's first are not extrapolated
+# (estimate +infinity: null in JSON), the last three are (tests/test_extrapolate_window.c).
+expect_usage_error "--extrapolate-window" oscillator --extrapolate-window 3
+expect_usage_error "--extrapolate-order" oscillator --extrapolate-order 2
+expect_usage_error "--extrapolate-order" oscillator --extrapolate 2 --extrapolate-order 5
+expect_usage_error "--extrapolate-window" oscillator --extrapolate 2 --extrapolate-window -1
+expect_usage_error "--extrapolate-window" oscillator --extrapolate 2 --extrapolate-window 1.5
+expect_usage_error "--extrapolate-window" exact --extrapolate-window 3
+expect_output '"levels": 2, "order": 2, .*"dissipation_error": null, .*"error_per_cycle": \[null, null, null, null, null, null, null, null, null, [0-9.e-]+, [0-9.e-]+, [0-9.e-]+\]' \
+    oscillator --a 2 --omega 0.5 --x0 0 --integrator rk8pd --rtol 1e-10 --atol 1e-10 --eps 0.025 --cycles 12 --extrapolate 2 --extrapolate-order 2 --extrapolate-window 4
 expect_usage_error "--dt" oscillator --dt 0.01x
 expect_usage_error "--eps" oscillator --eps -0.1
 expect_usage_error "--law" oscillator --law sticky

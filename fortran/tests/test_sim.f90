@@ -144,6 +144,15 @@ program test_sim
   call check(Derr(3) < 1e-7_c_double, 'estimate below 1e-7')
   call check_status(sim%run_extrapolated(1.0_c_double, 9), FRICREG_EINVAL, 'levels 9')
   call check(index(sim%errmsg(), 'levels') > 0, 'message: ' // sim%errmsg())
+  ! A window of the last 2 of 3 cycles: cycle 1 is level 0's (estimate +infinity), so is the
+  ! window's first; cycle 3 is extrapolated (tests/test_extrapolate_window.c measures it).
+  call check_status(sim%run_extrapolated(3 * 4 * acos(-1.0_c_double), 3, window=2), FRICREG_OK, &
+                    'run_extrapolated, window 2')
+  call check_status(sim%get_extrapolated_dissipation(D, Derr), FRICREG_OK, 'window: dissipation')
+  call check(Derr(1) > huge(Derr(1)) .and. Derr(2) > huge(Derr(2)), 'not extrapolated: +infinity')
+  call check(Derr(3) <= huge(Derr(3)), 'cycle 3 extrapolated, a finite estimate')
+  call check_status(sim%run_extrapolated(1.0_c_double, 2, window=-1), FRICREG_EINVAL, 'window -1')
+  call check(index(sim%errmsg(), 'window') > 0, 'message: ' // sim%errmsg())
 
   ! The chain of Sec. 3.2, the paper's defaults: D per cycle converges to 0.0105.
   call check_status(sim%create(FRICREG_SYSTEM_CHAIN), FRICREG_OK, 'create chain (replaces)')

@@ -21,8 +21,10 @@ struct cli_run {
     double t_end;               /* 0: use cycles */
     int cycles;
     enum cli_output output;
-    int partition;   /* enum fricreg_partition; only twoblock's differs from the default */
-    int extrapolate; /* --extrapolate LEVELS (fricreg_sim_run_extrapolated); 0: off */
+    int partition;          /* enum fricreg_partition; only twoblock's differs from the default */
+    int extrapolate;        /* --extrapolate LEVELS (fricreg_sim_run_extrapolated); 0: off */
+    int extrapolate_order;  /* --extrapolate-order P: the declared leading order (0: 1) */
+    int extrapolate_window; /* --extrapolate-window W (fricreg_sim_run_extrapolated_window) */
     struct {
         int param;
         double value;

@@ -45,7 +45,11 @@ static void usage(FILE *out)
           "  --t-end T | --cycles N   run length in time or forcing cycles         [--cycles 4]\n"
           "  --output summary|trajectory   JSON summary, or CSV row per step       [summary]\n"
           "  --extrapolate LEVELS   also run at eps/2 … eps/2^(LEVELS-1) and add D extrapolated\n"
-          "                   to eps -> 0, with its error estimate, to the summary (2 … 8)\n",
+          "                   to eps -> 0, with its error estimate, to the summary (2 … 8)\n"
+          "  --extrapolate-order P   the leading order in eps where the levels show none\n"
+          "                   (2 levels), 0 … 4                                     [0: 1]\n"
+          "  --extrapolate-window W  the finer levels over the last W cycles only, from\n"
+          "                   the state of the first level there (0: the whole run)  [0]\n",
           out);
     cli_print_param_defaults(out);
     fputs("            --partition paper|consistent  coupled contacts' near-stick law "

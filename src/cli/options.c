@@ -185,6 +185,20 @@ static int parse_partition(int system, const char *text, struct cli_run *run)
 }
 
 /* Options that every system has. Returns -1 if option is not one of them. */
+/* A whole number from lo to hi (the extrapolation's order and window). */
+static int parse_whole(const char *option, const char *text, double lo, double hi, int *out)
+{
+    char *end = NULL;
+    double x = strtod(text, &end);
+    if (end == text || *end != '\0' || !(x >= lo && x <= hi) || x != floor(x)) {
+        char what[96];
+        snprintf(what, sizeof what, "must be a whole number from %g to %g", lo, hi);
+        return cli_usage_error(option, what);
+    }
+    *out = (int)x;
+    return 0;
+}
+
 static int parse_common(const char *option, const char *text, struct cli_run *run)
 {
     if (strcmp(option, "--law") == 0)
@@ -228,6 +242,10 @@ static int parse_common(const char *option, const char *text, struct cli_run *ru
         run->extrapolate = (int)levels;
         return 0;
     }
+    if (strcmp(option, "--extrapolate-order") == 0)
+        return parse_whole(option, text, 0, 4, &run->extrapolate_order);
+    if (strcmp(option, "--extrapolate-window") == 0)
+        return parse_whole(option, text, 0, 1e7, &run->extrapolate_window);
     if (strcmp(option, "--output") == 0) {
         if (strcmp(text, "summary") == 0)
             run->output = CLI_SUMMARY;
@@ -265,6 +283,10 @@ int cli_parse_run(int system, int argc, char **argv, struct cli_run *run)
     }
     if (run->t_end > 0.0 && cycles_given)
         return cli_usage_error("--t-end", "give --t-end or --cycles, not both");
+    if (!run->extrapolate && (run->extrapolate_order || run->extrapolate_window))
+        return cli_usage_error(run->extrapolate_order ? "--extrapolate-order"
+                                                      : "--extrapolate-window",
+                               "needs --extrapolate LEVELS");
     if (run->extrapolate && run->output == CLI_TRAJECTORY)
         return cli_usage_error("--extrapolate",
                                "adds to the summary; not with --output trajectory");
@@ -294,8 +316,15 @@ int cli_check_tolerances(int integrator, double rtol, double atol)
  * no meaning for it and are refused by name. */
 int cli_parse_exact(int argc, char **argv, struct cli_run *run)
 {
-    static const char *const refused[] = {"--law",  "--integrator", "--dt",         "--rtol",
-                                          "--atol", "--eps",        "--extrapolate"};
+    static const char *const refused[] = {"--law",
+                                          "--integrator",
+                                          "--dt",
+                                          "--rtol",
+                                          "--atol",
+                                          "--eps",
+                                          "--extrapolate",
+                                          "--extrapolate-order",
+                                          "--extrapolate-window"};
     for (int k = 0; k < argc; k++)
         for (size_t r = 0; r < sizeof refused / sizeof refused[0]; r++) {
             size_t len = strlen(refused[r]);

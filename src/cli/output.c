@@ -69,21 +69,28 @@ static double value(const fricreg_sim *sim, int which)
 
 static int execute(fricreg_sim *sim, const struct cli_run *run)
 {
-    if (run->extrapolate) /* the leading order observed, else 1 (fricreg_sim.h) */
-        return fricreg_sim_run_extrapolated(sim,
-                                            run->t_end > 0.0
-                                                ? run->t_end
-                                                : run->cycles * value(sim, FRICREG_VALUE_PERIOD),
-                                            run->extrapolate, 0);
+    if (run->extrapolate) /* the leading order observed, else the declared (fricreg_sim.h) */
+        return fricreg_sim_run_extrapolated_window(
+            sim, run->t_end > 0.0 ? run->t_end : run->cycles * value(sim, FRICREG_VALUE_PERIOD),
+            run->extrapolate, run->extrapolate_order, run->extrapolate_window);
     return run->t_end > 0.0 ? fricreg_sim_run(sim, run->t_end)
                             : fricreg_sim_run_cycles(sim, run->cycles);
+}
+
+/* A number, or null where it is not finite (JSON has no infinity: the estimate of a cycle an
+ * extrapolation over a window did not extrapolate). */
+static void json_number(FILE *out, double x)
+{
+    isfinite(x) ? fprintf(out, "%.17g", x) : fprintf(out, "null");
 }
 
 static void json_array(FILE *out, const char *name, size_t n, const double a[])
 {
     fprintf(out, ", \"%s\": [", name);
-    for (size_t i = 0; i < n; i++)
-        fprintf(out, "%s%.17g", i ? ", " : "", a[i]);
+    for (size_t i = 0; i < n; i++) {
+        fprintf(out, "%s", i ? ", " : "");
+        json_number(out, a[i]);
+    }
     fprintf(out, "]");
 }
 
@@ -96,8 +103,8 @@ static void write_extrapolation(FILE *out, const struct cli_extrapolation *x, si
     isfinite(x->observed_order) ? fprintf(out, "%.17g", x->observed_order) : fprintf(out, "null");
     fprintf(out, ", \"flagged_cycles\": %.0f, \"eps_finest\": %.17g, \"rhs_evals\": %.0f",
             x->flagged_cycles, x->eps_finest, x->rhs_evals);
-    fprintf(out, ", \"dissipation\": %.17g, \"dissipation_error\": %.17g", x->dissipation,
-            x->dissipation_error);
+    fprintf(out, ", \"dissipation\": %.17g, \"dissipation_error\": ", x->dissipation);
+    json_number(out, x->dissipation_error);
     json_array(out, "dissipation_per_cycle", cycles, x->D);
     json_array(out, "error_per_cycle", cycles, x->err);
     fprintf(out, "}");
