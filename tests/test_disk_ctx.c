@@ -26,6 +26,7 @@
 
 #include "fricreg_disk.h"
 #include "fricreg_disk_ctx.h"
+#include "random.h"
 
 #define MAXM 6
 #define N2 (2 * MAXM)
@@ -34,26 +35,14 @@
 static uint64_t rng_state = 0x2545f4914f6cdd1du;
 static double uniform(double lo, double hi)
 {
-    rng_state ^= rng_state >> 12;
-    rng_state ^= rng_state << 25;
-    rng_state ^= rng_state >> 27;
-    uint64_t x = rng_state * 0x2545f4914f6cdd1du;
-    return lo + (hi - lo) * ((double)(x >> 11) * 0x1p-53);
+    return xorshift64star_uniform(&rng_state, lo, hi);
 }
 
 /* A random symmetric positive definite W of order n: B B^T/n + shift I. */
 static void random_spd(size_t n, double shift, double W[])
 {
-    double B[N2 * N2];
-    for (size_t k = 0; k < n * n; k++)
-        B[k] = uniform(-1.0, 1.0);
-    for (size_t i = 0; i < n; i++)
-        for (size_t j = 0; j < n; j++) {
-            double s = 0.0;
-            for (size_t k = 0; k < n; k++)
-                s += B[i * n + k] * B[j * n + k];
-            W[i * n + j] = s / (double)n + (i == j ? shift : 0.0);
-        }
+    double work[N2 * N2];
+    random_gram_spd(xorshift64star_uniform, &rng_state, n, shift, work, W);
 }
 
 static fricreg_disk_ctx *make_ctx(size_t m, int law, double eps, const double mun[],

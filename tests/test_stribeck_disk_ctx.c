@@ -26,6 +26,7 @@
 
 #include "fricreg_disk_ctx.h"
 #include "fricreg_stribeck.h"
+#include "random.h"
 
 #define MAXM 4
 #define N2 (2 * MAXM)
@@ -33,11 +34,7 @@
 static uint64_t rng_state = 0x9e3779b97f4a7c15u;
 static double uniform(double lo, double hi)
 {
-    rng_state ^= rng_state >> 12;
-    rng_state ^= rng_state << 25;
-    rng_state ^= rng_state >> 27;
-    uint64_t x = rng_state * 0x2545f4914f6cdd1du;
-    return lo + (hi - lo) * ((double)(x >> 11) * 0x1p-53);
+    return xorshift64star_uniform(&rng_state, lo, hi);
 }
 
 /* A random SPD W of order 2m whose diagonal blocks are isotropic: B B^T/n + shift I, each
@@ -45,16 +42,8 @@ static double uniform(double lo, double hi)
 static void isotropic_spd(size_t m, double shift, double W[])
 {
     size_t n = 2 * m;
-    double B[N2 * N2];
-    for (size_t k = 0; k < n * n; k++)
-        B[k] = uniform(-1.0, 1.0);
-    for (size_t i = 0; i < n; i++)
-        for (size_t j = 0; j < n; j++) {
-            double s = 0.0;
-            for (size_t k = 0; k < n; k++)
-                s += B[i * n + k] * B[j * n + k];
-            W[i * n + j] = s / (double)n + (i == j ? shift : 0.0);
-        }
+    double work[N2 * N2];
+    random_gram_spd(xorshift64star_uniform, &rng_state, n, shift, work, W);
     for (size_t i = 0; i < m; i++) {
         double *b = W + 2 * i * n + 2 * i, a = b[0], c = b[1], d = b[n + 1];
         double top = 0.5 * (a + d) + hypot(0.5 * (a - d), c);
