@@ -26,6 +26,7 @@
 
 #include "fricreg_disk.h"
 #include "fricreg_disk_ctx.h"
+#include "disk_ctx_checks.h"
 #include "random.h"
 
 #define MAXM 6
@@ -56,13 +57,6 @@ static fricreg_disk_ctx *make_ctx(size_t m, int law, double eps, const double mu
         ck_assert_msg(fricreg_disk_ctx_set_coupling_dense(ctx, m, W) == FRICREG_OK, "%s",
                       fricreg_disk_ctx_errmsg(ctx));
     return ctx;
-}
-
-static void eval_ok(fricreg_disk_ctx *ctx, size_t m, const double zdot[], const double a_free[],
-                    double f[])
-{
-    int status = fricreg_disk_ctx_eval(ctx, m, zdot, a_free, f);
-    ck_assert_msg(status == FRICREG_OK, "eval: %d %s", status, fricreg_disk_ctx_errmsg(ctx));
 }
 
 /* ---- The independent reference: FISTA on the QP ------------------------------------------- */
@@ -176,10 +170,10 @@ START_TEST(test_isotropic_blocks_are_the_scalar_law)
         }
         fricreg_disk_ctx *ctx = make_ctx(m, FRICREG_DISK_QUINN, eps, mun, NULL);
         ck_assert_int_eq(fricreg_disk_ctx_set_coupling_blocks(ctx, m, w), FRICREG_OK);
-        eval_ok(ctx, m, zdot, afree, f);
+        disk_ctx_eval_ok(ctx, m, zdot, afree, f);
         double fd[N2];
         ck_assert_int_eq(fricreg_disk_ctx_set_coupling_dense(ctx, m, Wd), FRICREG_OK);
-        eval_ok(ctx, m, zdot, afree, fd);
+        disk_ctx_eval_ok(ctx, m, zdot, afree, fd);
         for (size_t i = 0; i < m; i++) {
             double feq[2] = {-afree[2 * i] / w[4 * i], -afree[2 * i + 1] / w[4 * i]}, ref[2];
             ck_assert_int_eq(fricreg_disk_eval(FRICREG_DISK_QUINN, zdot + 2 * i, feq, mun[i], eps,
@@ -207,7 +201,7 @@ START_TEST(test_force_balance_blocks)
         w[4 * i] = w[4 * i + 3] = 1.0 + (double)i, w[4 * i + 1] = w[4 * i + 2] = 0.0;
     fricreg_disk_ctx *ctx = make_ctx(m, FRICREG_DISK_FORCE_BALANCE, 1.0, mun, NULL);
     ck_assert_int_eq(fricreg_disk_ctx_set_coupling_blocks(ctx, m, w), FRICREG_OK);
-    eval_ok(ctx, m, zdot, afree, f);
+    disk_ctx_eval_ok(ctx, m, zdot, afree, f);
     for (size_t i = 0; i < m; i++) {
         double feq[2] = {-afree[2 * i] / w[4 * i], -afree[2 * i + 1] / w[4 * i]}, ref[2];
         fricreg_disk_eval(FRICREG_DISK_FORCE_BALANCE, zdot + 2 * i, feq, mun[i], 1.0, ref);
@@ -237,7 +231,7 @@ START_TEST(test_rest_stick_exact)
                 afree[k] -= W[k * n + l] * target[l];
         }
         fricreg_disk_ctx *ctx = make_ctx(m, FRICREG_DISK_QUINN, 0.01, mun, W);
-        eval_ok(ctx, m, zdot, afree, f);
+        disk_ctx_eval_ok(ctx, m, zdot, afree, f);
         for (size_t k = 0; k < n; k++) {
             double acc = afree[k];
             for (size_t l = 0; l < n; l++)
@@ -272,7 +266,7 @@ START_TEST(test_rest_stick_strongly_coupled)
                 afree[k] -= W[k * n + l] * target[l];
         }
         fricreg_disk_ctx *ctx = make_ctx(m, FRICREG_DISK_QUINN, 0.01, mun, W);
-        eval_ok(ctx, m, zdot, afree, f);
+        disk_ctx_eval_ok(ctx, m, zdot, afree, f);
         for (size_t k = 0; k < n; k++)
             worst = fmax(worst, fabs(f[k] - target[k]));
         fricreg_disk_ctx_free(ctx);
@@ -295,7 +289,7 @@ START_TEST(test_rest_saturated_dissipates_most)
         for (size_t k = 0; k < n; k++)
             afree[k] = scale * uniform(-1.0, 1.0);
         fricreg_disk_ctx *ctx = make_ctx(m, FRICREG_DISK_QUINN, 0.01, mun, W);
-        eval_ok(ctx, m, zdot, afree, f);
+        disk_ctx_eval_ok(ctx, m, zdot, afree, f);
         reference(m, W, mun, 0.01, zdot, afree, ref);
         for (size_t i = 0; i < m; i++) {
             double acc[2];
@@ -335,7 +329,7 @@ START_TEST(test_anisotropic_block_metric)
         double afree[2] = {uniform(-8.0, 8.0), uniform(-8.0, 8.0)}, f[2], ref[2];
         fricreg_disk_ctx *ctx = make_ctx(1, FRICREG_DISK_QUINN, eps, &mun, NULL);
         ck_assert_int_eq(fricreg_disk_ctx_set_coupling_blocks(ctx, 1, A), FRICREG_OK);
-        eval_ok(ctx, 1, zdot, afree, f);
+        disk_ctx_eval_ok(ctx, 1, zdot, afree, f);
         reference(1, A, &mun, eps, zdot, afree, ref);
         ck_assert_double_eq_tol(f[0], ref[0], 1e-9);
         ck_assert_double_eq_tol(f[1], ref[1], 1e-9);
@@ -382,7 +376,7 @@ START_TEST(test_random_against_fista)
         double W[64], mun[4], zdot[8], afree[8], f[8], ref[8];
         random_case(m, eps, W, mun, zdot, afree);
         fricreg_disk_ctx *ctx = make_ctx(m, FRICREG_DISK_QUINN, eps, mun, W);
-        eval_ok(ctx, m, zdot, afree, f);
+        disk_ctx_eval_ok(ctx, m, zdot, afree, f);
         reference(m, W, mun, eps, zdot, afree, ref);
         double mmax = 0.0;
         for (size_t i = 0; i < m; i++)
@@ -400,22 +394,6 @@ END_TEST
 
 /* ---- Continuity across the band's edge and through rest ----------------------------------- */
 
-static double sweep(fricreg_disk_ctx *ctx, size_t m, double zdot[], const double afree[],
-                    const double dir[2], double s0, double h, int steps)
-{
-    double f[N2], prev[N2], jump = 0.0;
-    for (int k = -steps; k <= steps; k++) {
-        zdot[0] = (s0 + k * h) * dir[0];
-        zdot[1] = (s0 + k * h) * dir[1];
-        eval_ok(ctx, m, zdot, afree, f);
-        if (k > -steps)
-            for (size_t q = 0; q < 2 * m; q++)
-                jump = fmax(jump, fabs(f[q] - prev[q]));
-        memcpy(prev, f, sizeof(double) * 2 * m);
-    }
-    return jump;
-}
-
 START_TEST(test_continuity)
 {
     const size_t m = 3;
@@ -430,8 +408,9 @@ START_TEST(test_continuity)
             zdot[k] = uniform(-0.5, 0.5) * eps;
         double th = uniform(0.0, 6.3), dir[2] = {cos(th), sin(th)};
         fricreg_disk_ctx *ctx = make_ctx(m, FRICREG_DISK_QUINN, eps, mun, W);
-        worst = fmax(worst, sweep(ctx, m, zdot, afree, dir, eps, h, 300)); /* |zdot_1| = eps */
-        worst = fmax(worst, sweep(ctx, m, zdot, afree, dir, 0.0, h, 300)); /* through 0 */
+        worst = fmax(worst,
+                     disk_ctx_sweep(ctx, m, zdot, afree, dir, eps, h, 300)); /* |zdot_1| = eps */
+        worst = fmax(worst, disk_ctx_sweep(ctx, m, zdot, afree, dir, 0.0, h, 300)); /* through 0 */
         fricreg_disk_ctx_free(ctx);
     }
     printf("disk_ctx: largest jump over steps of 1e-9 eps: %.3g mun\n", worst);
@@ -440,63 +419,6 @@ START_TEST(test_continuity)
 END_TEST
 
 /* ---- The tangent against central differences --------------------------------------------- */
-
-/* Central differences of eval in zdot (which = 0) or a_free (which = 1), step h. */
-static void central(fricreg_disk_ctx *ctx, size_t m, const double zdot[], const double afree[],
-                    int which, double h, double J[])
-{
-    size_t n = 2 * m;
-    double z[N2], a[N2], fp[N2], fm[N2];
-    for (size_t c = 0; c < n; c++) {
-        memcpy(z, zdot, n * sizeof *z);
-        memcpy(a, afree, n * sizeof *a);
-        double *x = which ? a : z;
-        x[c] += h;
-        eval_ok(ctx, m, z, a, fp);
-        x[c] -= 2.0 * h;
-        eval_ok(ctx, m, z, a, fm);
-        for (size_t r = 0; r < n; r++)
-            J[r * n + c] = (fp[r] - fm[r]) / (2.0 * h);
-    }
-}
-
-static double max_abs(const double x[], size_t n)
-{
-    double s = 0.0;
-    for (size_t k = 0; k < n; k++)
-        s = fmax(s, fabs(x[k]));
-    return s;
-}
-
-/* Checks one case; returns 0 if it sits too near a kink for differences (two step sizes
- * disagree), 1 if checked. */
-static int check_tangent(fricreg_disk_ctx *ctx, size_t m, const double zdot[], const double afree[],
-                         double eps)
-{
-    size_t n = 2 * m, nn = n * n;
-    double f[N2], T[2][N2 * N2], D1[N2 * N2], D2[N2 * N2];
-    eval_ok(ctx, m, zdot, afree, f);
-    int status = fricreg_disk_ctx_tangent(ctx, m, T[0], T[1]);
-    ck_assert_msg(status == FRICREG_OK, "tangent: %s", fricreg_disk_ctx_errmsg(ctx));
-    for (int which = 0; which < 2; which++) {
-        double h = which ? 1e-6 : 1e-6 * eps;
-        central(ctx, m, zdot, afree, which, h, D1);
-        central(ctx, m, zdot, afree, which, 0.5 * h, D2);
-        double scale = fmax(max_abs(D1, nn), 1e-3);
-        double kink = 0.0, err = 0.0;
-        for (size_t k = 0; k < nn; k++) {
-            kink = fmax(kink, fabs(D1[k] - D2[k]));
-            err = fmax(err, fabs(T[which][k] - D2[k]));
-        }
-        if (kink > 1e-7 * scale)
-            return 0;
-        ck_assert_msg(err <= 1e-6 * scale,
-                      "tangent (%s) differs from central differences: %g "
-                      "of %g",
-                      which ? "a_free" : "zdot", err, scale);
-    }
-    return 1;
-}
 
 START_TEST(test_tangent_dense)
 {
@@ -510,7 +432,7 @@ START_TEST(test_tangent_dense)
             if (zdot[k] == 0.0)
                 zdot[k] = 0.3 * eps;
         fricreg_disk_ctx *ctx = make_ctx(m, FRICREG_DISK_QUINN, eps, mun, W);
-        checked += check_tangent(ctx, m, zdot, afree, eps);
+        checked += disk_ctx_check_tangent(ctx, m, zdot, afree, eps);
         tried++;
         fricreg_disk_ctx_free(ctx);
     }
@@ -536,7 +458,7 @@ START_TEST(test_tangent_blocks)
         }
         fricreg_disk_ctx *ctx = make_ctx(m, FRICREG_DISK_QUINN, eps, mun, NULL);
         ck_assert_int_eq(fricreg_disk_ctx_set_coupling_blocks(ctx, m, w), FRICREG_OK);
-        checked += check_tangent(ctx, m, zdot, afree, eps);
+        checked += disk_ctx_check_tangent(ctx, m, zdot, afree, eps);
         fricreg_disk_ctx_free(ctx);
     }
     ck_assert_int_ge(checked, 45);
@@ -560,7 +482,7 @@ START_TEST(test_tangent_at_rest_one_sided)
         }
         zdot[0] = zdot[1] = 0.0; /* contact 0 at rest */
         fricreg_disk_ctx *ctx = make_ctx(m, FRICREG_DISK_QUINN, eps, mun, W);
-        eval_ok(ctx, m, zdot, afree, f);
+        disk_ctx_eval_ok(ctx, m, zdot, afree, f);
         ck_assert_int_eq(fricreg_disk_ctx_tangent(ctx, m, T, NULL), FRICREG_OK);
         double nf = hypot(f[0], f[1]);
         if (nf < 1.0 - 1e-12) { /* stuck inside: not this kink */
@@ -570,7 +492,7 @@ START_TEST(test_tangent_at_rest_one_sided)
         double d[2] = {-f[0] / nf, -f[1] / nf}, h = 1e-7 * eps, err = 0.0, scale = 1e-3;
         memcpy(z, zdot, sizeof z);
         z[0] = h * d[0], z[1] = h * d[1];
-        eval_ok(ctx, m, z, afree, fh);
+        disk_ctx_eval_ok(ctx, m, z, afree, fh);
         for (size_t r = 0; r < n; r++) {
             double fd = (fh[r] - f[r]) / h, t = T[r * n] * d[0] + T[r * n + 1] * d[1];
             err = fmax(err, fabs(fd - t));
@@ -662,7 +584,7 @@ START_TEST(test_bad_input)
     for (int k = 0; k < 4; k++)
         ck_assert_double_eq(f[k], SENTINEL); /* untouched on failure */
     /* tangent */
-    eval_ok(ctx, 2, zdot, afree, f);
+    disk_ctx_eval_ok(ctx, 2, zdot, afree, f);
     for (int k = 0; k < 16; k++)
         T[k] = SENTINEL;
     expect_fail(ctx, fricreg_disk_ctx_tangent(ctx, 2, NULL, NULL), FRICREG_ENULL);

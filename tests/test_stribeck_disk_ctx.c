@@ -26,6 +26,7 @@
 
 #include "fricreg_disk_ctx.h"
 #include "fricreg_stribeck.h"
+#include "disk_ctx_checks.h"
 #include "random.h"
 
 #define MAXM 4
@@ -96,21 +97,6 @@ static fricreg_disk_ctx *make_ctx(size_t m, double eps, const struct params *p, 
     return ctx;
 }
 
-static void eval_ok(fricreg_disk_ctx *ctx, size_t m, const double zdot[], const double afree[],
-                    double f[])
-{
-    int status = fricreg_disk_ctx_eval(ctx, m, zdot, afree, f);
-    ck_assert_msg(status == FRICREG_OK, "eval: %d %s", status, fricreg_disk_ctx_errmsg(ctx));
-}
-
-static double fmax_of(const double x[], size_t n)
-{
-    double s = 0.0;
-    for (size_t k = 0; k < n; k++)
-        s = fmax(s, fabs(x[k]));
-    return s;
-}
-
 /* ---- The scalar law, contact by contact ---------------------------------------------------- */
 
 START_TEST(test_isotropic_blocks_are_the_scalar_law)
@@ -129,7 +115,7 @@ START_TEST(test_isotropic_blocks_are_the_scalar_law)
         }
         fricreg_disk_ctx *ctx = make_ctx(m, eps, &p, NULL);
         ck_assert_int_eq(fricreg_disk_ctx_set_coupling_blocks(ctx, m, w), FRICREG_OK);
-        eval_ok(ctx, m, zdot, afree, f);
+        disk_ctx_eval_ok(ctx, m, zdot, afree, f);
         for (size_t i = 0; i < m; i++) {
             double feq[2] = {-afree[2 * i] / w[4 * i], -afree[2 * i + 1] / w[4 * i]}, ref[2];
             ck_assert_int_eq(fricreg_stribeck_disk_eval(zdot + 2 * i, feq, p.fs[i], p.fk[i],
@@ -162,7 +148,7 @@ START_TEST(test_dense_is_the_scalar_law_at_its_f_eq)
         random_state(m, eps, zdot, afree);
         isotropic_spd(m, uniform(0.1, 0.5), W);
         fricreg_disk_ctx *ctx = make_ctx(m, eps, &p, W);
-        eval_ok(ctx, m, zdot, afree, f);
+        disk_ctx_eval_ok(ctx, m, zdot, afree, f);
         for (size_t i = 0; i < m; i++) {
             double feq[2], ref[2], w = W[2 * i * n + 2 * i];
             for (int a = 0; a < 2; a++) {
@@ -209,8 +195,8 @@ START_TEST(test_equal_bounds_are_set_bounds)
         ck_assert_int_eq(fricreg_disk_ctx_set_law(b, FRICREG_DISK_QUINN, eps), FRICREG_OK);
         ck_assert_int_eq(fricreg_disk_ctx_set_coupling_dense(b, m, W), FRICREG_OK);
         ck_assert_int_eq(fricreg_disk_ctx_set_bounds(b, m, p.fk), FRICREG_OK);
-        eval_ok(a, m, zdot, afree, f1);
-        eval_ok(b, m, zdot, afree, f2);
+        disk_ctx_eval_ok(a, m, zdot, afree, f1);
+        disk_ctx_eval_ok(b, m, zdot, afree, f2);
         ck_assert_msg(memcmp(f1, f2, n * sizeof *f1) == 0, "trial %d: forces differ", trial);
         int s1 = fricreg_disk_ctx_tangent(a, m, T1[0], T1[1]);
         int s2 = fricreg_disk_ctx_tangent(b, m, T2[0], T2[1]);
@@ -254,13 +240,13 @@ START_TEST(test_stick_and_break_away)
                 for (size_t c = 0; c < n; c++)
                     afree[r] -= s * W[r * n + c] * fstar[c];
             }
-            eval_ok(ctx, m, zdot, afree, f);
+            disk_ctx_eval_ok(ctx, m, zdot, afree, f);
             for (size_t r = 0; r < n; r++) {
                 acc[r] = afree[r];
                 for (size_t c = 0; c < n; c++)
                     acc[r] += W[r * n + c] * f[c];
             }
-            double a = fmax_of(acc, n), scale = fmax_of(afree, n);
+            double a = max_abs(acc, n), scale = max_abs(afree, n);
             for (size_t i = 0; i < m; i++)
                 ck_assert_double_le(hypot(f[2 * i], f[2 * i + 1]), p.fs[i] * (1.0 + 1e-14));
             if (k < 2) { /* holds: f = s f*, at rest */
@@ -279,35 +265,19 @@ START_TEST(test_stick_and_break_away)
             for (size_t c = 0; c < n; c++)
                 afree[r] -= W[r * n + c] * fstar[c];
         }
-        eval_ok(ctx, m, zdot, afree, f);
+        disk_ctx_eval_ok(ctx, m, zdot, afree, f);
         for (size_t r = 0; r < n; r++) {
             acc[r] = afree[r];
             for (size_t c = 0; c < n; c++)
                 acc[r] += W[r * n + c] * f[c];
         }
-        ck_assert_double_gt(fmax_of(acc, n), 1e-6);
+        ck_assert_double_gt(max_abs(acc, n), 1e-6);
         fricreg_disk_ctx_free(ctx);
     }
 }
 END_TEST
 
 /* ---- Continuity --------------------------------------------------------------------------- */
-
-static double sweep(fricreg_disk_ctx *ctx, size_t m, double zdot[], const double afree[],
-                    const double dir[2], double s0, double h, int steps)
-{
-    double f[N2], prev[N2], jump = 0.0;
-    for (int k = -steps; k <= steps; k++) {
-        zdot[0] = (s0 + k * h) * dir[0];
-        zdot[1] = (s0 + k * h) * dir[1];
-        eval_ok(ctx, m, zdot, afree, f);
-        if (k > -steps)
-            for (size_t q = 0; q < 2 * m; q++)
-                jump = fmax(jump, fabs(f[q] - prev[q]));
-        memcpy(prev, f, sizeof(double) * 2 * m);
-    }
-    return jump;
-}
 
 /* Across |zdot_0| = eps and through rest, with a dense W: the largest jump over steps of
  * 1e-9 eps stays below 1e-8 fs, as in test_disk_ctx.c (Lipschitz constant 10 fs/eps: the
@@ -330,8 +300,9 @@ START_TEST(test_continuity)
             zdot[k] = uniform(-0.5, 0.5) * eps;
         double th = uniform(0.0, 6.3), dir[2] = {cos(th), sin(th)};
         fricreg_disk_ctx *ctx = make_ctx(m, eps, &p, W);
-        worst = fmax(worst, sweep(ctx, m, zdot, afree, dir, eps, h, 300)); /* |zdot_0| = eps */
-        worst = fmax(worst, sweep(ctx, m, zdot, afree, dir, 0.0, h, 300)); /* through 0 */
+        worst = fmax(worst,
+                     disk_ctx_sweep(ctx, m, zdot, afree, dir, eps, h, 300)); /* |zdot_0| = eps */
+        worst = fmax(worst, disk_ctx_sweep(ctx, m, zdot, afree, dir, 0.0, h, 300)); /* through 0 */
         fricreg_disk_ctx_free(ctx);
     }
     printf("stribeck_disk_ctx: largest jump over steps of 1e-9 eps: %.3g fs\n", worst);
@@ -340,53 +311,6 @@ START_TEST(test_continuity)
 END_TEST
 
 /* ---- The tangent ---------------------------------------------------------------------------- */
-
-static void central(fricreg_disk_ctx *ctx, size_t m, const double zdot[], const double afree[],
-                    int which, double h, double J[])
-{
-    size_t n = 2 * m;
-    double z[N2], a[N2], fp[N2], fm[N2];
-    for (size_t c = 0; c < n; c++) {
-        memcpy(z, zdot, n * sizeof *z);
-        memcpy(a, afree, n * sizeof *a);
-        double *x = which ? a : z;
-        x[c] += h;
-        eval_ok(ctx, m, z, a, fp);
-        x[c] -= 2.0 * h;
-        eval_ok(ctx, m, z, a, fm);
-        for (size_t r = 0; r < n; r++)
-            J[r * n + c] = (fp[r] - fm[r]) / (2.0 * h);
-    }
-}
-
-/* Returns 0 if the case sits too near a kink for differences (two steps disagree), 1 if
- * checked. */
-static int check_tangent(fricreg_disk_ctx *ctx, size_t m, const double zdot[], const double afree[],
-                         double eps)
-{
-    size_t n = 2 * m, nn = n * n;
-    double f[N2], T[2][N2 * N2], D1[N2 * N2], D2[N2 * N2];
-    eval_ok(ctx, m, zdot, afree, f);
-    int status = fricreg_disk_ctx_tangent(ctx, m, T[0], T[1]);
-    ck_assert_msg(status == FRICREG_OK, "tangent: %s", fricreg_disk_ctx_errmsg(ctx));
-    for (int which = 0; which < 2; which++) {
-        double h = which ? 1e-6 : 1e-6 * eps;
-        central(ctx, m, zdot, afree, which, h, D1);
-        central(ctx, m, zdot, afree, which, 0.5 * h, D2);
-        double scale = fmax(fmax_of(D1, nn), 1e-3);
-        double kink = 0.0, err = 0.0;
-        for (size_t k = 0; k < nn; k++) {
-            kink = fmax(kink, fabs(D1[k] - D2[k]));
-            err = fmax(err, fabs(T[which][k] - D2[k]));
-        }
-        if (kink > 1e-7 * scale)
-            return 0;
-        ck_assert_msg(err <= 1e-6 * scale,
-                      "tangent (%s) differs from central differences: %g of %g",
-                      which ? "a_free" : "zdot", err, scale);
-    }
-    return 1;
-}
 
 /* Dense W (anisotropic blocks) and block-diagonal W, zdot in the band and sliding. */
 START_TEST(test_tangent_central_differences)
@@ -413,7 +337,7 @@ START_TEST(test_tangent_central_differences)
             }
             ck_assert_int_eq(fricreg_disk_ctx_set_coupling_blocks(ctx, m, w), FRICREG_OK);
         }
-        checked += check_tangent(ctx, m, zdot, afree, eps);
+        checked += disk_ctx_check_tangent(ctx, m, zdot, afree, eps);
         tried++;
         fricreg_disk_ctx_free(ctx);
     }
@@ -432,13 +356,13 @@ START_TEST(test_tangent_at_rest_one_sided)
     double W[16] = {1.2, 0, 0.3, 0.1, 0, 1.2, 0.1, -0.2, 0.3, 0.1, 0.9, 0, 0.1, -0.2, 0, 0.9};
     double zdot[4] = {0.0, 0.0, 0.01, -0.005}, afree[4] = {2.0, -1.0, 0.1, 0.2}, f0[4], T[16];
     fricreg_disk_ctx *ctx = make_ctx(2, eps, &p, W);
-    eval_ok(ctx, 2, zdot, afree, f0);
+    disk_ctx_eval_ok(ctx, 2, zdot, afree, f0);
     ck_assert_double_eq_tol(hypot(f0[0], f0[1]), 1.0, 1e-12); /* saturated at fs */
     ck_assert_int_eq(fricreg_disk_ctx_tangent(ctx, 2, T, NULL), FRICREG_OK);
     double u[2] = {-f0[0] / hypot(f0[0], f0[1]), -f0[1] / hypot(f0[0], f0[1])}, prev = INFINITY;
     for (int k = 0; k < 3; k++) {
         double h = 1e-6 * eps * pow(0.1, k), z[4] = {h * u[0], h * u[1], zdot[2], zdot[3]}, f[4];
-        eval_ok(ctx, 2, z, afree, f);
+        disk_ctx_eval_ok(ctx, 2, z, afree, f);
         double err = 0.0;
         for (int r = 0; r < 4; r++)
             err = fmax(err, fabs((f[r] - f0[r]) / h - (T[4 * r] * u[0] + T[4 * r + 1] * u[1])));
@@ -461,14 +385,14 @@ START_TEST(test_setter_rules)
     double f[2], ref[2], feq[2] = {0.3, -2.0};
     fricreg_disk_ctx *ctx = make_ctx(1, 0.02, &p, NULL);
     ck_assert_int_eq(fricreg_disk_ctx_set_law(ctx, FRICREG_DISK_QUINN, 0.05), FRICREG_OK);
-    eval_ok(ctx, 1, zdot, afree, f);
+    disk_ctx_eval_ok(ctx, 1, zdot, afree, f);
     fricreg_stribeck_disk_eval(zdot, feq, 1.0, 0.4, 0.01, 1.0, 0.05, ref);
     ck_assert_double_eq_tol(f[0], ref[0], 1e-15);
     ck_assert_double_eq_tol(f[1], ref[1], 1e-15);
 
     /* m = 0 (arrays NULL): the bounds of set_bounds (defaults 1) */
     ck_assert_int_eq(fricreg_disk_ctx_set_stribeck(ctx, 0, NULL, NULL, NULL, NULL), FRICREG_OK);
-    eval_ok(ctx, 1, zdot, afree, f);
+    disk_ctx_eval_ok(ctx, 1, zdot, afree, f);
     fricreg_disk_eval(FRICREG_DISK_QUINN, zdot, feq, 1.0, 0.05, ref);
     ck_assert_double_eq_tol(f[0], ref[0], 1e-15);
     ck_assert_double_eq_tol(f[1], ref[1], 1e-15);
@@ -476,7 +400,7 @@ START_TEST(test_setter_rules)
     /* set_bounds after set_stribeck: its bounds */
     ck_assert_int_eq(fricreg_disk_ctx_set_stribeck(ctx, 1, p.fs, p.fk, p.vs, p.delta), FRICREG_OK);
     ck_assert_int_eq(fricreg_disk_ctx_set_bounds(ctx, 1, mun), FRICREG_OK);
-    eval_ok(ctx, 1, zdot, afree, f);
+    disk_ctx_eval_ok(ctx, 1, zdot, afree, f);
     fricreg_disk_eval(FRICREG_DISK_QUINN, zdot, feq, 0.7, 0.05, ref);
     ck_assert_double_eq_tol(f[0], ref[0], 1e-15);
     ck_assert_double_eq_tol(f[1], ref[1], 1e-15);
@@ -484,10 +408,10 @@ START_TEST(test_setter_rules)
     /* FORCE_BALANCE switches it off; set_stribeck selects QUINN again */
     ck_assert_int_eq(fricreg_disk_ctx_set_stribeck(ctx, 1, p.fs, p.fk, p.vs, p.delta), FRICREG_OK);
     ck_assert_int_eq(fricreg_disk_ctx_set_law(ctx, FRICREG_DISK_FORCE_BALANCE, 0.05), FRICREG_OK);
-    eval_ok(ctx, 1, zdot, afree, f);
+    disk_ctx_eval_ok(ctx, 1, zdot, afree, f);
     ck_assert_double_eq_tol(f[0], -0.7, 1e-15); /* sliding with mun */
     ck_assert_int_eq(fricreg_disk_ctx_set_stribeck(ctx, 1, p.fs, p.fk, p.vs, p.delta), FRICREG_OK);
-    eval_ok(ctx, 1, zdot, afree, f);
+    disk_ctx_eval_ok(ctx, 1, zdot, afree, f);
     fricreg_stribeck_disk_eval(zdot, feq, 1.0, 0.4, 0.01, 1.0, 0.05, ref);
     ck_assert_double_eq_tol(f[0], ref[0], 1e-15);
     ck_assert_double_eq_tol(f[1], ref[1], 1e-15);
@@ -512,7 +436,7 @@ START_TEST(test_bad_input_leaves_context)
     const double zdot[4] = {0.01, 0.0, 0.07, -0.005}, afree[4] = {0.9, -0.4, 0.1, 0.2};
     double f0[4], f[4], T[16];
     fricreg_disk_ctx *ctx = make_ctx(m, 0.05, &p, W);
-    eval_ok(ctx, m, zdot, afree, f0);
+    disk_ctx_eval_ok(ctx, m, zdot, afree, f0);
     struct {
         int contact, which; /* parameter 0 fs, 1 fk, 2 vs, 3 delta */
         double value;
@@ -528,7 +452,7 @@ START_TEST(test_bad_input_leaves_context)
         expect_fail(ctx, fricreg_disk_ctx_set_stribeck(ctx, m, q.fs, q.fk, q.vs, q.delta),
                     bad[k].want);
         ck_assert_int_eq(fricreg_disk_ctx_tangent(ctx, m, T, NULL), FRICREG_OK);
-        eval_ok(ctx, m, zdot, afree, f);
+        disk_ctx_eval_ok(ctx, m, zdot, afree, f);
         ck_assert_msg(memcmp(f, f0, sizeof f) == 0, "case %zu changed the context", k);
     }
     expect_fail(ctx, fricreg_disk_ctx_set_stribeck(ctx, 3, p.fs, p.fk, p.vs, p.delta),
@@ -537,18 +461,18 @@ START_TEST(test_bad_input_leaves_context)
                 FRICREG_ENULL);
     ck_assert_int_eq(fricreg_disk_ctx_set_stribeck(NULL, m, p.fs, p.fk, p.vs, p.delta),
                      FRICREG_ENULL);
-    eval_ok(ctx, m, zdot, afree, f);
+    disk_ctx_eval_ok(ctx, m, zdot, afree, f);
     ck_assert(memcmp(f, f0, sizeof f) == 0);
 
     /* refused while Stribeck friction is off: the bounds stay those of set_bounds */
     const double mun[2] = {0.6, 0.3};
     ck_assert_int_eq(fricreg_disk_ctx_set_bounds(ctx, m, mun), FRICREG_OK);
-    eval_ok(ctx, m, zdot, afree, f0);
+    disk_ctx_eval_ok(ctx, m, zdot, afree, f0);
     struct params q = p;
     q.fk[0] = 2.0;
     expect_fail(ctx, fricreg_disk_ctx_set_stribeck(ctx, m, q.fs, q.fk, q.vs, q.delta),
                 FRICREG_EINVAL);
-    eval_ok(ctx, m, zdot, afree, f);
+    disk_ctx_eval_ok(ctx, m, zdot, afree, f);
     ck_assert(memcmp(f, f0, sizeof f) == 0);
     fricreg_disk_ctx_free(ctx);
 }
