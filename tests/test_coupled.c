@@ -41,8 +41,7 @@ static double uniform(double lo, double hi)
 
 static size_t uniform_size(size_t lo, size_t hi) /* in [lo, hi] */
 {
-    size_t k = lo + (size_t)uniform(0.0, (double)(hi - lo + 1));
-    return k > hi ? hi : k;
+    return random_size(splitmix64_uniform, &rng_state, lo, hi);
 }
 
 /* ---- Cases ------------------------------------------------------------------------------- */

@@ -38,10 +38,9 @@ static double uniform(double lo, double hi)
     return splitmix64_uniform(&rng_state, lo, hi);
 }
 
-static size_t uniform_index(size_t m)
+static size_t uniform_index(size_t m) /* in [0, m) */
 {
-    size_t k = (size_t)uniform(0.0, (double)m);
-    return k < m ? k : m - 1;
+    return random_size(splitmix64_uniform, &rng_state, 0, m - 1);
 }
 
 /* W = D (A A^T / m + delta I) D: SPD, condition number a few hundred at most, unequal

@@ -25,6 +25,12 @@ double xorshift64star_uniform(uint64_t *state, double lo, double hi)
     return lo + (hi - lo) * unit_interval(*state * 0x2545F4914F6CDD1Dull);
 }
 
+size_t random_size(random_uniform_fn uniform, uint64_t *state, size_t lo, size_t hi)
+{
+    size_t k = lo + (size_t)uniform(state, 0.0, (double)(hi - lo + 1));
+    return k > hi ? hi : k; /* the draw is below hi - lo + 1, but may round up to it */
+}
+
 void random_scaled_spd(random_uniform_fn uniform, uint64_t *state, size_t m, double delta_lo,
                        double delta_hi, double work[], double W[])
 {

@@ -20,6 +20,9 @@ double splitmix64_uniform(uint64_t *state, double lo, double hi);
  * not be 0. */
 double xorshift64star_uniform(uint64_t *state, double lo, double hi);
 
+/* An integer in [lo, hi] (lo <= hi), from one draw in [0, hi - lo + 1) rounded down. */
+size_t random_size(random_uniform_fn uniform, uint64_t *state, size_t lo, size_t hi);
+
 /* A random SPD W (m x m, row-major) with unequal diagonal: W = D (A A^T / m + delta I) D.
  * Draws, in this order: delta in [delta_lo, delta_hi), A (m x m, row-major, entries in
  * [-1, 1)), then D's diagonal in [0.5, 2). The condition number is a few hundred at most.
