@@ -170,10 +170,10 @@ START_TEST(test_isotropic_blocks_are_the_scalar_law)
         }
         fricreg_disk_ctx *ctx = make_ctx(m, FRICREG_DISK_QUINN, eps, mun, NULL);
         ck_assert_int_eq(fricreg_disk_ctx_set_coupling_blocks(ctx, m, w), FRICREG_OK);
-        disk_ctx_eval_ok(ctx, m, zdot, afree, f);
+        eval_ok(ctx, m, zdot, afree, f);
         double fd[N2];
         ck_assert_int_eq(fricreg_disk_ctx_set_coupling_dense(ctx, m, Wd), FRICREG_OK);
-        disk_ctx_eval_ok(ctx, m, zdot, afree, fd);
+        eval_ok(ctx, m, zdot, afree, fd);
         for (size_t i = 0; i < m; i++) {
             double feq[2] = {-afree[2 * i] / w[4 * i], -afree[2 * i + 1] / w[4 * i]}, ref[2];
             ck_assert_int_eq(fricreg_disk_eval(FRICREG_DISK_QUINN, zdot + 2 * i, feq, mun[i], eps,
@@ -201,7 +201,7 @@ START_TEST(test_force_balance_blocks)
         w[4 * i] = w[4 * i + 3] = 1.0 + (double)i, w[4 * i + 1] = w[4 * i + 2] = 0.0;
     fricreg_disk_ctx *ctx = make_ctx(m, FRICREG_DISK_FORCE_BALANCE, 1.0, mun, NULL);
     ck_assert_int_eq(fricreg_disk_ctx_set_coupling_blocks(ctx, m, w), FRICREG_OK);
-    disk_ctx_eval_ok(ctx, m, zdot, afree, f);
+    eval_ok(ctx, m, zdot, afree, f);
     for (size_t i = 0; i < m; i++) {
         double feq[2] = {-afree[2 * i] / w[4 * i], -afree[2 * i + 1] / w[4 * i]}, ref[2];
         fricreg_disk_eval(FRICREG_DISK_FORCE_BALANCE, zdot + 2 * i, feq, mun[i], 1.0, ref);
@@ -231,7 +231,7 @@ START_TEST(test_rest_stick_exact)
                 afree[k] -= W[k * n + l] * target[l];
         }
         fricreg_disk_ctx *ctx = make_ctx(m, FRICREG_DISK_QUINN, 0.01, mun, W);
-        disk_ctx_eval_ok(ctx, m, zdot, afree, f);
+        eval_ok(ctx, m, zdot, afree, f);
         for (size_t k = 0; k < n; k++) {
             double acc = afree[k];
             for (size_t l = 0; l < n; l++)
@@ -266,7 +266,7 @@ START_TEST(test_rest_stick_strongly_coupled)
                 afree[k] -= W[k * n + l] * target[l];
         }
         fricreg_disk_ctx *ctx = make_ctx(m, FRICREG_DISK_QUINN, 0.01, mun, W);
-        disk_ctx_eval_ok(ctx, m, zdot, afree, f);
+        eval_ok(ctx, m, zdot, afree, f);
         for (size_t k = 0; k < n; k++)
             worst = fmax(worst, fabs(f[k] - target[k]));
         fricreg_disk_ctx_free(ctx);
@@ -289,7 +289,7 @@ START_TEST(test_rest_saturated_dissipates_most)
         for (size_t k = 0; k < n; k++)
             afree[k] = scale * uniform(-1.0, 1.0);
         fricreg_disk_ctx *ctx = make_ctx(m, FRICREG_DISK_QUINN, 0.01, mun, W);
-        disk_ctx_eval_ok(ctx, m, zdot, afree, f);
+        eval_ok(ctx, m, zdot, afree, f);
         reference(m, W, mun, 0.01, zdot, afree, ref);
         for (size_t i = 0; i < m; i++) {
             double acc[2];
@@ -329,7 +329,7 @@ START_TEST(test_anisotropic_block_metric)
         double afree[2] = {uniform(-8.0, 8.0), uniform(-8.0, 8.0)}, f[2], ref[2];
         fricreg_disk_ctx *ctx = make_ctx(1, FRICREG_DISK_QUINN, eps, &mun, NULL);
         ck_assert_int_eq(fricreg_disk_ctx_set_coupling_blocks(ctx, 1, A), FRICREG_OK);
-        disk_ctx_eval_ok(ctx, 1, zdot, afree, f);
+        eval_ok(ctx, 1, zdot, afree, f);
         reference(1, A, &mun, eps, zdot, afree, ref);
         ck_assert_double_eq_tol(f[0], ref[0], 1e-9);
         ck_assert_double_eq_tol(f[1], ref[1], 1e-9);
@@ -376,7 +376,7 @@ START_TEST(test_random_against_fista)
         double W[64], mun[4], zdot[8], afree[8], f[8], ref[8];
         random_case(m, eps, W, mun, zdot, afree);
         fricreg_disk_ctx *ctx = make_ctx(m, FRICREG_DISK_QUINN, eps, mun, W);
-        disk_ctx_eval_ok(ctx, m, zdot, afree, f);
+        eval_ok(ctx, m, zdot, afree, f);
         reference(m, W, mun, eps, zdot, afree, ref);
         double mmax = 0.0;
         for (size_t i = 0; i < m; i++)
@@ -482,7 +482,7 @@ START_TEST(test_tangent_at_rest_one_sided)
         }
         zdot[0] = zdot[1] = 0.0; /* contact 0 at rest */
         fricreg_disk_ctx *ctx = make_ctx(m, FRICREG_DISK_QUINN, eps, mun, W);
-        disk_ctx_eval_ok(ctx, m, zdot, afree, f);
+        eval_ok(ctx, m, zdot, afree, f);
         ck_assert_int_eq(fricreg_disk_ctx_tangent(ctx, m, T, NULL), FRICREG_OK);
         double nf = hypot(f[0], f[1]);
         if (nf < 1.0 - 1e-12) { /* stuck inside: not this kink */
@@ -492,7 +492,7 @@ START_TEST(test_tangent_at_rest_one_sided)
         double d[2] = {-f[0] / nf, -f[1] / nf}, h = 1e-7 * eps, err = 0.0, scale = 1e-3;
         memcpy(z, zdot, sizeof z);
         z[0] = h * d[0], z[1] = h * d[1];
-        disk_ctx_eval_ok(ctx, m, z, afree, fh);
+        eval_ok(ctx, m, z, afree, fh);
         for (size_t r = 0; r < n; r++) {
             double fd = (fh[r] - f[r]) / h, t = T[r * n] * d[0] + T[r * n + 1] * d[1];
             err = fmax(err, fabs(fd - t));
@@ -584,7 +584,7 @@ START_TEST(test_bad_input)
     for (int k = 0; k < 4; k++)
         ck_assert_double_eq(f[k], SENTINEL); /* untouched on failure */
     /* tangent */
-    disk_ctx_eval_ok(ctx, 2, zdot, afree, f);
+    eval_ok(ctx, 2, zdot, afree, f);
     for (int k = 0; k < 16; k++)
         T[k] = SENTINEL;
     expect_fail(ctx, fricreg_disk_ctx_tangent(ctx, 2, NULL, NULL), FRICREG_ENULL);

@@ -115,7 +115,7 @@ START_TEST(test_isotropic_blocks_are_the_scalar_law)
         }
         fricreg_disk_ctx *ctx = make_ctx(m, eps, &p, NULL);
         ck_assert_int_eq(fricreg_disk_ctx_set_coupling_blocks(ctx, m, w), FRICREG_OK);
-        disk_ctx_eval_ok(ctx, m, zdot, afree, f);
+        eval_ok(ctx, m, zdot, afree, f);
         for (size_t i = 0; i < m; i++) {
             double feq[2] = {-afree[2 * i] / w[4 * i], -afree[2 * i + 1] / w[4 * i]}, ref[2];
             ck_assert_int_eq(fricreg_stribeck_disk_eval(zdot + 2 * i, feq, p.fs[i], p.fk[i],
@@ -148,7 +148,7 @@ START_TEST(test_dense_is_the_scalar_law_at_its_f_eq)
         random_state(m, eps, zdot, afree);
         isotropic_spd(m, uniform(0.1, 0.5), W);
         fricreg_disk_ctx *ctx = make_ctx(m, eps, &p, W);
-        disk_ctx_eval_ok(ctx, m, zdot, afree, f);
+        eval_ok(ctx, m, zdot, afree, f);
         for (size_t i = 0; i < m; i++) {
             double feq[2], ref[2], w = W[2 * i * n + 2 * i];
             for (int a = 0; a < 2; a++) {
@@ -195,8 +195,8 @@ START_TEST(test_equal_bounds_are_set_bounds)
         ck_assert_int_eq(fricreg_disk_ctx_set_law(b, FRICREG_DISK_QUINN, eps), FRICREG_OK);
         ck_assert_int_eq(fricreg_disk_ctx_set_coupling_dense(b, m, W), FRICREG_OK);
         ck_assert_int_eq(fricreg_disk_ctx_set_bounds(b, m, p.fk), FRICREG_OK);
-        disk_ctx_eval_ok(a, m, zdot, afree, f1);
-        disk_ctx_eval_ok(b, m, zdot, afree, f2);
+        eval_ok(a, m, zdot, afree, f1);
+        eval_ok(b, m, zdot, afree, f2);
         ck_assert_msg(memcmp(f1, f2, n * sizeof *f1) == 0, "trial %d: forces differ", trial);
         int s1 = fricreg_disk_ctx_tangent(a, m, T1[0], T1[1]);
         int s2 = fricreg_disk_ctx_tangent(b, m, T2[0], T2[1]);
@@ -240,7 +240,7 @@ START_TEST(test_stick_and_break_away)
                 for (size_t c = 0; c < n; c++)
                     afree[r] -= s * W[r * n + c] * fstar[c];
             }
-            disk_ctx_eval_ok(ctx, m, zdot, afree, f);
+            eval_ok(ctx, m, zdot, afree, f);
             for (size_t r = 0; r < n; r++) {
                 acc[r] = afree[r];
                 for (size_t c = 0; c < n; c++)
@@ -265,7 +265,7 @@ START_TEST(test_stick_and_break_away)
             for (size_t c = 0; c < n; c++)
                 afree[r] -= W[r * n + c] * fstar[c];
         }
-        disk_ctx_eval_ok(ctx, m, zdot, afree, f);
+        eval_ok(ctx, m, zdot, afree, f);
         for (size_t r = 0; r < n; r++) {
             acc[r] = afree[r];
             for (size_t c = 0; c < n; c++)
@@ -356,13 +356,13 @@ START_TEST(test_tangent_at_rest_one_sided)
     double W[16] = {1.2, 0, 0.3, 0.1, 0, 1.2, 0.1, -0.2, 0.3, 0.1, 0.9, 0, 0.1, -0.2, 0, 0.9};
     double zdot[4] = {0.0, 0.0, 0.01, -0.005}, afree[4] = {2.0, -1.0, 0.1, 0.2}, f0[4], T[16];
     fricreg_disk_ctx *ctx = make_ctx(2, eps, &p, W);
-    disk_ctx_eval_ok(ctx, 2, zdot, afree, f0);
+    eval_ok(ctx, 2, zdot, afree, f0);
     ck_assert_double_eq_tol(hypot(f0[0], f0[1]), 1.0, 1e-12); /* saturated at fs */
     ck_assert_int_eq(fricreg_disk_ctx_tangent(ctx, 2, T, NULL), FRICREG_OK);
     double u[2] = {-f0[0] / hypot(f0[0], f0[1]), -f0[1] / hypot(f0[0], f0[1])}, prev = INFINITY;
     for (int k = 0; k < 3; k++) {
         double h = 1e-6 * eps * pow(0.1, k), z[4] = {h * u[0], h * u[1], zdot[2], zdot[3]}, f[4];
-        disk_ctx_eval_ok(ctx, 2, z, afree, f);
+        eval_ok(ctx, 2, z, afree, f);
         double err = 0.0;
         for (int r = 0; r < 4; r++)
             err = fmax(err, fabs((f[r] - f0[r]) / h - (T[4 * r] * u[0] + T[4 * r + 1] * u[1])));
@@ -385,14 +385,14 @@ START_TEST(test_setter_rules)
     double f[2], ref[2], feq[2] = {0.3, -2.0};
     fricreg_disk_ctx *ctx = make_ctx(1, 0.02, &p, NULL);
     ck_assert_int_eq(fricreg_disk_ctx_set_law(ctx, FRICREG_DISK_QUINN, 0.05), FRICREG_OK);
-    disk_ctx_eval_ok(ctx, 1, zdot, afree, f);
+    eval_ok(ctx, 1, zdot, afree, f);
     fricreg_stribeck_disk_eval(zdot, feq, 1.0, 0.4, 0.01, 1.0, 0.05, ref);
     ck_assert_double_eq_tol(f[0], ref[0], 1e-15);
     ck_assert_double_eq_tol(f[1], ref[1], 1e-15);
 
     /* m = 0 (arrays NULL): the bounds of set_bounds (defaults 1) */
     ck_assert_int_eq(fricreg_disk_ctx_set_stribeck(ctx, 0, NULL, NULL, NULL, NULL), FRICREG_OK);
-    disk_ctx_eval_ok(ctx, 1, zdot, afree, f);
+    eval_ok(ctx, 1, zdot, afree, f);
     fricreg_disk_eval(FRICREG_DISK_QUINN, zdot, feq, 1.0, 0.05, ref);
     ck_assert_double_eq_tol(f[0], ref[0], 1e-15);
     ck_assert_double_eq_tol(f[1], ref[1], 1e-15);
@@ -400,7 +400,7 @@ START_TEST(test_setter_rules)
     /* set_bounds after set_stribeck: its bounds */
     ck_assert_int_eq(fricreg_disk_ctx_set_stribeck(ctx, 1, p.fs, p.fk, p.vs, p.delta), FRICREG_OK);
     ck_assert_int_eq(fricreg_disk_ctx_set_bounds(ctx, 1, mun), FRICREG_OK);
-    disk_ctx_eval_ok(ctx, 1, zdot, afree, f);
+    eval_ok(ctx, 1, zdot, afree, f);
     fricreg_disk_eval(FRICREG_DISK_QUINN, zdot, feq, 0.7, 0.05, ref);
     ck_assert_double_eq_tol(f[0], ref[0], 1e-15);
     ck_assert_double_eq_tol(f[1], ref[1], 1e-15);
@@ -408,10 +408,10 @@ START_TEST(test_setter_rules)
     /* FORCE_BALANCE switches it off; set_stribeck selects QUINN again */
     ck_assert_int_eq(fricreg_disk_ctx_set_stribeck(ctx, 1, p.fs, p.fk, p.vs, p.delta), FRICREG_OK);
     ck_assert_int_eq(fricreg_disk_ctx_set_law(ctx, FRICREG_DISK_FORCE_BALANCE, 0.05), FRICREG_OK);
-    disk_ctx_eval_ok(ctx, 1, zdot, afree, f);
+    eval_ok(ctx, 1, zdot, afree, f);
     ck_assert_double_eq_tol(f[0], -0.7, 1e-15); /* sliding with mun */
     ck_assert_int_eq(fricreg_disk_ctx_set_stribeck(ctx, 1, p.fs, p.fk, p.vs, p.delta), FRICREG_OK);
-    disk_ctx_eval_ok(ctx, 1, zdot, afree, f);
+    eval_ok(ctx, 1, zdot, afree, f);
     fricreg_stribeck_disk_eval(zdot, feq, 1.0, 0.4, 0.01, 1.0, 0.05, ref);
     ck_assert_double_eq_tol(f[0], ref[0], 1e-15);
     ck_assert_double_eq_tol(f[1], ref[1], 1e-15);
@@ -436,7 +436,7 @@ START_TEST(test_bad_input_leaves_context)
     const double zdot[4] = {0.01, 0.0, 0.07, -0.005}, afree[4] = {0.9, -0.4, 0.1, 0.2};
     double f0[4], f[4], T[16];
     fricreg_disk_ctx *ctx = make_ctx(m, 0.05, &p, W);
-    disk_ctx_eval_ok(ctx, m, zdot, afree, f0);
+    eval_ok(ctx, m, zdot, afree, f0);
     struct {
         int contact, which; /* parameter 0 fs, 1 fk, 2 vs, 3 delta */
         double value;
@@ -452,7 +452,7 @@ START_TEST(test_bad_input_leaves_context)
         expect_fail(ctx, fricreg_disk_ctx_set_stribeck(ctx, m, q.fs, q.fk, q.vs, q.delta),
                     bad[k].want);
         ck_assert_int_eq(fricreg_disk_ctx_tangent(ctx, m, T, NULL), FRICREG_OK);
-        disk_ctx_eval_ok(ctx, m, zdot, afree, f);
+        eval_ok(ctx, m, zdot, afree, f);
         ck_assert_msg(memcmp(f, f0, sizeof f) == 0, "case %zu changed the context", k);
     }
     expect_fail(ctx, fricreg_disk_ctx_set_stribeck(ctx, 3, p.fs, p.fk, p.vs, p.delta),
@@ -461,18 +461,18 @@ START_TEST(test_bad_input_leaves_context)
                 FRICREG_ENULL);
     ck_assert_int_eq(fricreg_disk_ctx_set_stribeck(NULL, m, p.fs, p.fk, p.vs, p.delta),
                      FRICREG_ENULL);
-    disk_ctx_eval_ok(ctx, m, zdot, afree, f);
+    eval_ok(ctx, m, zdot, afree, f);
     ck_assert(memcmp(f, f0, sizeof f) == 0);
 
     /* refused while Stribeck friction is off: the bounds stay those of set_bounds */
     const double mun[2] = {0.6, 0.3};
     ck_assert_int_eq(fricreg_disk_ctx_set_bounds(ctx, m, mun), FRICREG_OK);
-    disk_ctx_eval_ok(ctx, m, zdot, afree, f0);
+    eval_ok(ctx, m, zdot, afree, f0);
     struct params q = p;
     q.fk[0] = 2.0;
     expect_fail(ctx, fricreg_disk_ctx_set_stribeck(ctx, m, q.fs, q.fk, q.vs, q.delta),
                 FRICREG_EINVAL);
-    disk_ctx_eval_ok(ctx, m, zdot, afree, f);
+    eval_ok(ctx, m, zdot, afree, f);
     ck_assert(memcmp(f, f0, sizeof f) == 0);
     fricreg_disk_ctx_free(ctx);
 }

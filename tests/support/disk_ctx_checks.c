@@ -6,8 +6,8 @@
 #include <math.h>
 #include <string.h>
 
-void disk_ctx_eval_ok(fricreg_disk_ctx *ctx, size_t m, const double zdot[], const double a_free[],
-                      double f[])
+void eval_ok(fricreg_disk_ctx *ctx, size_t m, const double zdot[], const double a_free[],
+             double f[])
 {
     int status = fricreg_disk_ctx_eval(ctx, m, zdot, a_free, f);
     ck_assert_msg(status == FRICREG_OK, "eval: %d %s", status, fricreg_disk_ctx_errmsg(ctx));
@@ -29,7 +29,7 @@ double disk_ctx_sweep(fricreg_disk_ctx *ctx, size_t m, double zdot[], const doub
     for (int k = -steps; k <= steps; k++) {
         zdot[0] = (s0 + k * h) * dir[0];
         zdot[1] = (s0 + k * h) * dir[1];
-        disk_ctx_eval_ok(ctx, m, zdot, a_free, f);
+        eval_ok(ctx, m, zdot, a_free, f);
         if (k > -steps)
             for (size_t q = 0; q < 2 * m; q++)
                 jump = fmax(jump, fabs(f[q] - prev[q]));
@@ -50,9 +50,9 @@ static void central(fricreg_disk_ctx *ctx, size_t m, const double zdot[], const 
         memcpy(a, a_free, n * sizeof *a);
         double *x = which ? a : z;
         x[c] += h;
-        disk_ctx_eval_ok(ctx, m, z, a, fp);
+        eval_ok(ctx, m, z, a, fp);
         x[c] -= 2.0 * h;
-        disk_ctx_eval_ok(ctx, m, z, a, fm);
+        eval_ok(ctx, m, z, a, fm);
         for (size_t r = 0; r < n; r++)
             J[r * n + c] = (fp[r] - fm[r]) / (2.0 * h);
     }
@@ -65,7 +65,7 @@ int disk_ctx_check_tangent(fricreg_disk_ctx *ctx, size_t m, const double zdot[],
     ck_assert_uint_le(2 * m, DISK_CHECK_MAXN);
     size_t n = 2 * m, nn = n * n;
     double f[DISK_CHECK_MAXN], T[2][NN], D1[NN], D2[NN];
-    disk_ctx_eval_ok(ctx, m, zdot, a_free, f);
+    eval_ok(ctx, m, zdot, a_free, f);
     int status = fricreg_disk_ctx_tangent(ctx, m, T[0], T[1]);
     ck_assert_msg(status == FRICREG_OK, "tangent: %s", fricreg_disk_ctx_errmsg(ctx));
     for (int which = 0; which < 2; which++) {

@@ -12,8 +12,8 @@
 #define DISK_CHECK_MAXN 12 /* 2 m at most: up to 6 contacts */
 
 /* fricreg_disk_ctx_eval, asserted to return FRICREG_OK. zdot, a_free and f hold 2 m. */
-void disk_ctx_eval_ok(fricreg_disk_ctx *ctx, size_t m, const double zdot[], const double a_free[],
-                      double f[]);
+void eval_ok(fricreg_disk_ctx *ctx, size_t m, const double zdot[], const double a_free[],
+             double f[]);
 
 /* max_k |x_k| over n entries (0 for n = 0). */
 double max_abs(const double x[], size_t n);
