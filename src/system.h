@@ -106,6 +106,10 @@ const char *fr_param_name(int param);
 int fr_param_positive(double value);    /* "must be > 0" */
 int fr_param_nonnegative(double value); /* "must be >= 0" */
 
+/* Table entries shared by the systems. */
+double fr_paper_eps_two_dt(const struct fr_system *sys, double dt); /* eps = 2 dt */
+double fr_unit_weight(const struct fr_system *sys); /* w = 1: D = -sum_i ∫ zdot_i f_i dt */
+
 /* The three reference systems (src/systems/). */
 extern const struct fr_system_type fr_oscillator_type;
 extern const struct fr_system_type fr_chain_type;

@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "fricreg.h"
+#include "random.h"
 
 #define SENTINEL (-777.125) /* written into outputs before a call that must fail */
 #define TOL 1e-13           /* absolute, for forces of order 1 after a 2x2 solve */
@@ -241,10 +242,7 @@ END_TEST
 static uint64_t rng_state = 0x9E3779B97F4A7C15u;
 static double uniform01(void)
 {
-    rng_state ^= rng_state >> 12;
-    rng_state ^= rng_state << 25;
-    rng_state ^= rng_state >> 27;
-    return (double)((rng_state * 0x2545F4914F6CDD1Du) >> 11) * 0x1.0p-53;
+    return xorshift64star_uniform(&rng_state, 0.0, 1.0);
 }
 
 static int same_bits(double a, double b)

@@ -24,6 +24,7 @@
 #include <gsl/gsl_linalg.h>
 
 #include "fricreg.h"
+#include "random.h"
 
 #define MMAX 8        /* largest contact count of the random cases: 3^8 assignments */
 #define KKT_TOL 1e-10 /* largest scaled KKT violation the reference accepts */
@@ -35,17 +36,12 @@ static uint64_t rng_state;
 
 static double uniform(double lo, double hi)
 {
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return lo + (hi - lo) * ((double)(z >> 11) * 0x1.0p-53);
+    return splitmix64_uniform(&rng_state, lo, hi);
 }
 
 static size_t uniform_size(size_t lo, size_t hi) /* in [lo, hi] */
 {
-    size_t k = lo + (size_t)uniform(0.0, (double)(hi - lo + 1));
-    return k > hi ? hi : k;
+    return random_size(splitmix64_uniform, &rng_state, lo, hi);
 }
 
 /* ---- Cases ------------------------------------------------------------------------------- */
@@ -60,19 +56,8 @@ typedef struct {
  * at most a few hundred, and unequal diagonal entries. */
 static void random_spd(size_t m, double W[])
 {
-    double A[MMAX * MMAX], d[MMAX], delta = uniform(0.2, 1.0);
-    for (size_t k = 0; k < m * m; k++)
-        A[k] = uniform(-1.0, 1.0);
-    for (size_t i = 0; i < m; i++)
-        d[i] = uniform(0.5, 2.0);
-    for (size_t i = 0; i < m; i++)
-        for (size_t j = 0; j <= i; j++) {
-            double s = 0.0;
-            for (size_t k = 0; k < m; k++)
-                s += A[i * m + k] * A[j * m + k];
-            s = s / (double)m + (i == j ? delta : 0.0);
-            W[i * m + j] = W[j * m + i] = d[i] * s * d[j];
-        }
+    double work[MMAX * MMAX + MMAX];
+    random_scaled_spd(splitmix64_uniform, &rng_state, m, 0.2, 1.0, work, W);
 }
 
 /* zdot: mostly inside the band, some exactly at rest, some sliding either way. */

@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "fricreg_disk.h"
+#include "random.h"
 
 #define SENTINEL (-777.125)
 #define ULP DBL_EPSILON
@@ -30,11 +31,7 @@ static const int all_laws[] = {FRICREG_DISK_COULOMB, FRICREG_DISK_FORCE_BALANCE,
 static uint64_t rng_state = 0x9e3779b97f4a7c15u;
 static double uniform(double lo, double hi)
 {
-    rng_state ^= rng_state >> 12;
-    rng_state ^= rng_state << 25;
-    rng_state ^= rng_state >> 27;
-    uint64_t x = rng_state * 0x2545f4914f6cdd1du;
-    return lo + (hi - lo) * ((double)(x >> 11) * 0x1p-53);
+    return xorshift64star_uniform(&rng_state, lo, hi);
 }
 
 static void eval(int law, const double v[2], const double g[2], double mun, double eps, double f[2])

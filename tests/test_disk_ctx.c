@@ -26,6 +26,8 @@
 
 #include "fricreg_disk.h"
 #include "fricreg_disk_ctx.h"
+#include "disk_ctx_checks.h"
+#include "random.h"
 
 #define MAXM 6
 #define N2 (2 * MAXM)
@@ -34,26 +36,14 @@
 static uint64_t rng_state = 0x2545f4914f6cdd1du;
 static double uniform(double lo, double hi)
 {
-    rng_state ^= rng_state >> 12;
-    rng_state ^= rng_state << 25;
-    rng_state ^= rng_state >> 27;
-    uint64_t x = rng_state * 0x2545f4914f6cdd1du;
-    return lo + (hi - lo) * ((double)(x >> 11) * 0x1p-53);
+    return xorshift64star_uniform(&rng_state, lo, hi);
 }
 
 /* A random symmetric positive definite W of order n: B B^T/n + shift I. */
 static void random_spd(size_t n, double shift, double W[])
 {
-    double B[N2 * N2];
-    for (size_t k = 0; k < n * n; k++)
-        B[k] = uniform(-1.0, 1.0);
-    for (size_t i = 0; i < n; i++)
-        for (size_t j = 0; j < n; j++) {
-            double s = 0.0;
-            for (size_t k = 0; k < n; k++)
-                s += B[i * n + k] * B[j * n + k];
-            W[i * n + j] = s / (double)n + (i == j ? shift : 0.0);
-        }
+    double work[N2 * N2];
+    random_gram_spd(xorshift64star_uniform, &rng_state, n, shift, work, W);
 }
 
 static fricreg_disk_ctx *make_ctx(size_t m, int law, double eps, const double mun[],
@@ -67,13 +57,6 @@ static fricreg_disk_ctx *make_ctx(size_t m, int law, double eps, const double mu
         ck_assert_msg(fricreg_disk_ctx_set_coupling_dense(ctx, m, W) == FRICREG_OK, "%s",
                       fricreg_disk_ctx_errmsg(ctx));
     return ctx;
-}
-
-static void eval_ok(fricreg_disk_ctx *ctx, size_t m, const double zdot[], const double a_free[],
-                    double f[])
-{
-    int status = fricreg_disk_ctx_eval(ctx, m, zdot, a_free, f);
-    ck_assert_msg(status == FRICREG_OK, "eval: %d %s", status, fricreg_disk_ctx_errmsg(ctx));
 }
 
 /* ---- The independent reference: FISTA on the QP ------------------------------------------- */
@@ -411,22 +394,6 @@ END_TEST
 
 /* ---- Continuity across the band's edge and through rest ----------------------------------- */
 
-static double sweep(fricreg_disk_ctx *ctx, size_t m, double zdot[], const double afree[],
-                    const double dir[2], double s0, double h, int steps)
-{
-    double f[N2], prev[N2], jump = 0.0;
-    for (int k = -steps; k <= steps; k++) {
-        zdot[0] = (s0 + k * h) * dir[0];
-        zdot[1] = (s0 + k * h) * dir[1];
-        eval_ok(ctx, m, zdot, afree, f);
-        if (k > -steps)
-            for (size_t q = 0; q < 2 * m; q++)
-                jump = fmax(jump, fabs(f[q] - prev[q]));
-        memcpy(prev, f, sizeof(double) * 2 * m);
-    }
-    return jump;
-}
-
 START_TEST(test_continuity)
 {
     const size_t m = 3;
@@ -441,8 +408,9 @@ START_TEST(test_continuity)
             zdot[k] = uniform(-0.5, 0.5) * eps;
         double th = uniform(0.0, 6.3), dir[2] = {cos(th), sin(th)};
         fricreg_disk_ctx *ctx = make_ctx(m, FRICREG_DISK_QUINN, eps, mun, W);
-        worst = fmax(worst, sweep(ctx, m, zdot, afree, dir, eps, h, 300)); /* |zdot_1| = eps */
-        worst = fmax(worst, sweep(ctx, m, zdot, afree, dir, 0.0, h, 300)); /* through 0 */
+        worst = fmax(worst,
+                     disk_ctx_sweep(ctx, m, zdot, afree, dir, eps, h, 300)); /* |zdot_1| = eps */
+        worst = fmax(worst, disk_ctx_sweep(ctx, m, zdot, afree, dir, 0.0, h, 300)); /* through 0 */
         fricreg_disk_ctx_free(ctx);
     }
     printf("disk_ctx: largest jump over steps of 1e-9 eps: %.3g mun\n", worst);
@@ -451,63 +419,6 @@ START_TEST(test_continuity)
 END_TEST
 
 /* ---- The tangent against central differences --------------------------------------------- */
-
-/* Central differences of eval in zdot (which = 0) or a_free (which = 1), step h. */
-static void central(fricreg_disk_ctx *ctx, size_t m, const double zdot[], const double afree[],
-                    int which, double h, double J[])
-{
-    size_t n = 2 * m;
-    double z[N2], a[N2], fp[N2], fm[N2];
-    for (size_t c = 0; c < n; c++) {
-        memcpy(z, zdot, n * sizeof *z);
-        memcpy(a, afree, n * sizeof *a);
-        double *x = which ? a : z;
-        x[c] += h;
-        eval_ok(ctx, m, z, a, fp);
-        x[c] -= 2.0 * h;
-        eval_ok(ctx, m, z, a, fm);
-        for (size_t r = 0; r < n; r++)
-            J[r * n + c] = (fp[r] - fm[r]) / (2.0 * h);
-    }
-}
-
-static double max_abs(const double x[], size_t n)
-{
-    double s = 0.0;
-    for (size_t k = 0; k < n; k++)
-        s = fmax(s, fabs(x[k]));
-    return s;
-}
-
-/* Checks one case; returns 0 if it sits too near a kink for differences (two step sizes
- * disagree), 1 if checked. */
-static int check_tangent(fricreg_disk_ctx *ctx, size_t m, const double zdot[], const double afree[],
-                         double eps)
-{
-    size_t n = 2 * m, nn = n * n;
-    double f[N2], T[2][N2 * N2], D1[N2 * N2], D2[N2 * N2];
-    eval_ok(ctx, m, zdot, afree, f);
-    int status = fricreg_disk_ctx_tangent(ctx, m, T[0], T[1]);
-    ck_assert_msg(status == FRICREG_OK, "tangent: %s", fricreg_disk_ctx_errmsg(ctx));
-    for (int which = 0; which < 2; which++) {
-        double h = which ? 1e-6 : 1e-6 * eps;
-        central(ctx, m, zdot, afree, which, h, D1);
-        central(ctx, m, zdot, afree, which, 0.5 * h, D2);
-        double scale = fmax(max_abs(D1, nn), 1e-3);
-        double kink = 0.0, err = 0.0;
-        for (size_t k = 0; k < nn; k++) {
-            kink = fmax(kink, fabs(D1[k] - D2[k]));
-            err = fmax(err, fabs(T[which][k] - D2[k]));
-        }
-        if (kink > 1e-7 * scale)
-            return 0;
-        ck_assert_msg(err <= 1e-6 * scale,
-                      "tangent (%s) differs from central differences: %g "
-                      "of %g",
-                      which ? "a_free" : "zdot", err, scale);
-    }
-    return 1;
-}
 
 START_TEST(test_tangent_dense)
 {
@@ -521,7 +432,7 @@ START_TEST(test_tangent_dense)
             if (zdot[k] == 0.0)
                 zdot[k] = 0.3 * eps;
         fricreg_disk_ctx *ctx = make_ctx(m, FRICREG_DISK_QUINN, eps, mun, W);
-        checked += check_tangent(ctx, m, zdot, afree, eps);
+        checked += disk_ctx_check_tangent(ctx, m, zdot, afree, eps);
         tried++;
         fricreg_disk_ctx_free(ctx);
     }
@@ -547,7 +458,7 @@ START_TEST(test_tangent_blocks)
         }
         fricreg_disk_ctx *ctx = make_ctx(m, FRICREG_DISK_QUINN, eps, mun, NULL);
         ck_assert_int_eq(fricreg_disk_ctx_set_coupling_blocks(ctx, m, w), FRICREG_OK);
-        checked += check_tangent(ctx, m, zdot, afree, eps);
+        checked += disk_ctx_check_tangent(ctx, m, zdot, afree, eps);
         fricreg_disk_ctx_free(ctx);
     }
     ck_assert_int_ge(checked, 45);

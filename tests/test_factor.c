@@ -21,6 +21,7 @@
 #include <string.h>
 
 #include "fricreg.h"
+#include "random.h"
 
 #define MMAX 50
 #define EPS 0.0731
@@ -34,37 +35,20 @@ static uint64_t rng_state = 0x2385u;
 
 static double uniform(double lo, double hi)
 {
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return lo + (hi - lo) * ((double)(z >> 11) * 0x1.0p-53);
+    return splitmix64_uniform(&rng_state, lo, hi);
 }
 
-static size_t uniform_index(size_t m)
+static size_t uniform_index(size_t m) /* in [0, m) */
 {
-    size_t k = (size_t)uniform(0.0, (double)m);
-    return k < m ? k : m - 1;
+    return random_size(splitmix64_uniform, &rng_state, 0, m - 1);
 }
 
 /* W = D (A A^T / m + delta I) D: SPD, condition number a few hundred at most, unequal
  * diagonal. */
 static void random_spd(size_t m, double W[])
 {
-    static double A[MMAX * MMAX];
-    double d[MMAX], delta = uniform(0.2, 0.6);
-    for (size_t k = 0; k < m * m; k++)
-        A[k] = uniform(-1.0, 1.0);
-    for (size_t i = 0; i < m; i++)
-        d[i] = uniform(0.5, 2.0);
-    for (size_t i = 0; i < m; i++)
-        for (size_t j = 0; j <= i; j++) {
-            double s = 0.0;
-            for (size_t k = 0; k < m; k++)
-                s += A[i * m + k] * A[j * m + k];
-            s = s / (double)m + (i == j ? delta : 0.0);
-            W[i * m + j] = W[j * m + i] = d[i] * s * d[j];
-        }
+    static double work[MMAX * MMAX + MMAX];
+    random_scaled_spd(splitmix64_uniform, &rng_state, m, 0.2, 0.6, work, W);
 }
 
 static fricreg_ctx *make_ctx(size_t m, const double W[], const double mun[], int partition)

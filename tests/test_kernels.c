@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "fricreg.h"
+#include "random.h"
 
 #define EPS 0.0731
 #define SENTINEL (-777.125)
@@ -29,10 +30,7 @@ static const int all_laws[] = {FRICREG_LAW_COULOMB, FRICREG_LAW_FORCE_BALANCE,
 static uint64_t rng_state = 0x9E3779B97F4A7C15u;
 static double uniform(void)
 {
-    rng_state ^= rng_state >> 12;
-    rng_state ^= rng_state << 25;
-    rng_state ^= rng_state >> 27;
-    return (double)((rng_state * 0x2545F4914F6CDD1Du) >> 11) * 0x1.0p-53;
+    return xorshift64star_uniform(&rng_state, 0.0, 1.0);
 }
 
 /* Contacts stuck (v = 0), in the band and slipping; f_eq on both sides of +-mun. */

@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "fricreg.h"
+#include "random.h"
 
 #define MUN 2.385
 #define EPS 0.0731
@@ -567,10 +568,7 @@ END_TEST
 static uint64_t rng_state = 0x9E3779B97F4A7C15u;
 static double uniform01(void)
 {
-    rng_state ^= rng_state >> 12;
-    rng_state ^= rng_state << 25;
-    rng_state ^= rng_state >> 27;
-    return (double)((rng_state * 0x2545F4914F6CDD1Du) >> 11) * 0x1.0p-53;
+    return xorshift64star_uniform(&rng_state, 0.0, 1.0);
 }
 
 /* |f - F| for (4)'s exact value F = clamp(g - c mun, -mun, mun), g = clamp(f_eq, -mun, mun)

@@ -15,6 +15,7 @@
 
 #include "fricreg_disk.h"
 #include "fricreg_stribeck.h"
+#include "random.h"
 
 #define SENTINEL (-777.125)
 #define ULP DBL_EPSILON
@@ -22,11 +23,7 @@
 static uint64_t rng_state = 0x2545f4914f6cdd1du;
 static double uniform(double lo, double hi)
 {
-    rng_state ^= rng_state >> 12;
-    rng_state ^= rng_state << 25;
-    rng_state ^= rng_state >> 27;
-    uint64_t x = rng_state * 0x2545f4914f6cdd1du;
-    return lo + (hi - lo) * ((double)(x >> 11) * 0x1p-53);
+    return xorshift64star_uniform(&rng_state, lo, hi);
 }
 
 struct params {

@@ -26,6 +26,8 @@
 
 #include "fricreg_disk_ctx.h"
 #include "fricreg_stribeck.h"
+#include "disk_ctx_checks.h"
+#include "random.h"
 
 #define MAXM 4
 #define N2 (2 * MAXM)
@@ -33,11 +35,7 @@
 static uint64_t rng_state = 0x9e3779b97f4a7c15u;
 static double uniform(double lo, double hi)
 {
-    rng_state ^= rng_state >> 12;
-    rng_state ^= rng_state << 25;
-    rng_state ^= rng_state >> 27;
-    uint64_t x = rng_state * 0x2545f4914f6cdd1du;
-    return lo + (hi - lo) * ((double)(x >> 11) * 0x1p-53);
+    return xorshift64star_uniform(&rng_state, lo, hi);
 }
 
 /* A random SPD W of order 2m whose diagonal blocks are isotropic: B B^T/n + shift I, each
@@ -45,16 +43,8 @@ static double uniform(double lo, double hi)
 static void isotropic_spd(size_t m, double shift, double W[])
 {
     size_t n = 2 * m;
-    double B[N2 * N2];
-    for (size_t k = 0; k < n * n; k++)
-        B[k] = uniform(-1.0, 1.0);
-    for (size_t i = 0; i < n; i++)
-        for (size_t j = 0; j < n; j++) {
-            double s = 0.0;
-            for (size_t k = 0; k < n; k++)
-                s += B[i * n + k] * B[j * n + k];
-            W[i * n + j] = s / (double)n + (i == j ? shift : 0.0);
-        }
+    double work[N2 * N2];
+    random_gram_spd(xorshift64star_uniform, &rng_state, n, shift, work, W);
     for (size_t i = 0; i < m; i++) {
         double *b = W + 2 * i * n + 2 * i, a = b[0], c = b[1], d = b[n + 1];
         double top = 0.5 * (a + d) + hypot(0.5 * (a - d), c);
@@ -105,21 +95,6 @@ static fricreg_disk_ctx *make_ctx(size_t m, double eps, const struct params *p, 
     ck_assert_int_eq(fricreg_disk_ctx_set_stribeck(ctx, m, p->fs, p->fk, p->vs, p->delta),
                      FRICREG_OK);
     return ctx;
-}
-
-static void eval_ok(fricreg_disk_ctx *ctx, size_t m, const double zdot[], const double afree[],
-                    double f[])
-{
-    int status = fricreg_disk_ctx_eval(ctx, m, zdot, afree, f);
-    ck_assert_msg(status == FRICREG_OK, "eval: %d %s", status, fricreg_disk_ctx_errmsg(ctx));
-}
-
-static double fmax_of(const double x[], size_t n)
-{
-    double s = 0.0;
-    for (size_t k = 0; k < n; k++)
-        s = fmax(s, fabs(x[k]));
-    return s;
 }
 
 /* ---- The scalar law, contact by contact ---------------------------------------------------- */
@@ -271,7 +246,7 @@ START_TEST(test_stick_and_break_away)
                 for (size_t c = 0; c < n; c++)
                     acc[r] += W[r * n + c] * f[c];
             }
-            double a = fmax_of(acc, n), scale = fmax_of(afree, n);
+            double a = max_abs(acc, n), scale = max_abs(afree, n);
             for (size_t i = 0; i < m; i++)
                 ck_assert_double_le(hypot(f[2 * i], f[2 * i + 1]), p.fs[i] * (1.0 + 1e-14));
             if (k < 2) { /* holds: f = s f*, at rest */
@@ -296,29 +271,13 @@ START_TEST(test_stick_and_break_away)
             for (size_t c = 0; c < n; c++)
                 acc[r] += W[r * n + c] * f[c];
         }
-        ck_assert_double_gt(fmax_of(acc, n), 1e-6);
+        ck_assert_double_gt(max_abs(acc, n), 1e-6);
         fricreg_disk_ctx_free(ctx);
     }
 }
 END_TEST
 
 /* ---- Continuity --------------------------------------------------------------------------- */
-
-static double sweep(fricreg_disk_ctx *ctx, size_t m, double zdot[], const double afree[],
-                    const double dir[2], double s0, double h, int steps)
-{
-    double f[N2], prev[N2], jump = 0.0;
-    for (int k = -steps; k <= steps; k++) {
-        zdot[0] = (s0 + k * h) * dir[0];
-        zdot[1] = (s0 + k * h) * dir[1];
-        eval_ok(ctx, m, zdot, afree, f);
-        if (k > -steps)
-            for (size_t q = 0; q < 2 * m; q++)
-                jump = fmax(jump, fabs(f[q] - prev[q]));
-        memcpy(prev, f, sizeof(double) * 2 * m);
-    }
-    return jump;
-}
 
 /* Across |zdot_0| = eps and through rest, with a dense W: the largest jump over steps of
  * 1e-9 eps stays below 1e-8 fs, as in test_disk_ctx.c (Lipschitz constant 10 fs/eps: the
@@ -341,8 +300,9 @@ START_TEST(test_continuity)
             zdot[k] = uniform(-0.5, 0.5) * eps;
         double th = uniform(0.0, 6.3), dir[2] = {cos(th), sin(th)};
         fricreg_disk_ctx *ctx = make_ctx(m, eps, &p, W);
-        worst = fmax(worst, sweep(ctx, m, zdot, afree, dir, eps, h, 300)); /* |zdot_0| = eps */
-        worst = fmax(worst, sweep(ctx, m, zdot, afree, dir, 0.0, h, 300)); /* through 0 */
+        worst = fmax(worst,
+                     disk_ctx_sweep(ctx, m, zdot, afree, dir, eps, h, 300)); /* |zdot_0| = eps */
+        worst = fmax(worst, disk_ctx_sweep(ctx, m, zdot, afree, dir, 0.0, h, 300)); /* through 0 */
         fricreg_disk_ctx_free(ctx);
     }
     printf("stribeck_disk_ctx: largest jump over steps of 1e-9 eps: %.3g fs\n", worst);
@@ -351,53 +311,6 @@ START_TEST(test_continuity)
 END_TEST
 
 /* ---- The tangent ---------------------------------------------------------------------------- */
-
-static void central(fricreg_disk_ctx *ctx, size_t m, const double zdot[], const double afree[],
-                    int which, double h, double J[])
-{
-    size_t n = 2 * m;
-    double z[N2], a[N2], fp[N2], fm[N2];
-    for (size_t c = 0; c < n; c++) {
-        memcpy(z, zdot, n * sizeof *z);
-        memcpy(a, afree, n * sizeof *a);
-        double *x = which ? a : z;
-        x[c] += h;
-        eval_ok(ctx, m, z, a, fp);
-        x[c] -= 2.0 * h;
-        eval_ok(ctx, m, z, a, fm);
-        for (size_t r = 0; r < n; r++)
-            J[r * n + c] = (fp[r] - fm[r]) / (2.0 * h);
-    }
-}
-
-/* Returns 0 if the case sits too near a kink for differences (two steps disagree), 1 if
- * checked. */
-static int check_tangent(fricreg_disk_ctx *ctx, size_t m, const double zdot[], const double afree[],
-                         double eps)
-{
-    size_t n = 2 * m, nn = n * n;
-    double f[N2], T[2][N2 * N2], D1[N2 * N2], D2[N2 * N2];
-    eval_ok(ctx, m, zdot, afree, f);
-    int status = fricreg_disk_ctx_tangent(ctx, m, T[0], T[1]);
-    ck_assert_msg(status == FRICREG_OK, "tangent: %s", fricreg_disk_ctx_errmsg(ctx));
-    for (int which = 0; which < 2; which++) {
-        double h = which ? 1e-6 : 1e-6 * eps;
-        central(ctx, m, zdot, afree, which, h, D1);
-        central(ctx, m, zdot, afree, which, 0.5 * h, D2);
-        double scale = fmax(fmax_of(D1, nn), 1e-3);
-        double kink = 0.0, err = 0.0;
-        for (size_t k = 0; k < nn; k++) {
-            kink = fmax(kink, fabs(D1[k] - D2[k]));
-            err = fmax(err, fabs(T[which][k] - D2[k]));
-        }
-        if (kink > 1e-7 * scale)
-            return 0;
-        ck_assert_msg(err <= 1e-6 * scale,
-                      "tangent (%s) differs from central differences: %g of %g",
-                      which ? "a_free" : "zdot", err, scale);
-    }
-    return 1;
-}
 
 /* Dense W (anisotropic blocks) and block-diagonal W, zdot in the band and sliding. */
 START_TEST(test_tangent_central_differences)
@@ -424,7 +337,7 @@ START_TEST(test_tangent_central_differences)
             }
             ck_assert_int_eq(fricreg_disk_ctx_set_coupling_blocks(ctx, m, w), FRICREG_OK);
         }
-        checked += check_tangent(ctx, m, zdot, afree, eps);
+        checked += disk_ctx_check_tangent(ctx, m, zdot, afree, eps);
         tried++;
         fricreg_disk_ctx_free(ctx);
     }

@@ -59,6 +59,22 @@ static int64_t stat(const fricreg_structure *s, int which)
     return x;
 }
 
+/* The two storeys of the coupled-contact tests: M = diag(1.7, 0.9),
+ * K = [[30.2, -12.1], [-12.1, 12.1]], contacts J = [[1, 0], [-1, 1]] (storey 1 on the ground,
+ * storey 2 on storey 1), bounds mun and the law with its eps. */
+static fricreg_structure *make_two_storeys(const double mun[2], int law, double eps)
+{
+    const double M[4] = {1.7, 0.0, 0.0, 0.9}, K[4] = {30.2, -12.1, -12.1, 12.1};
+    const double J[4] = {1.0, 0.0, -1.0, 1.0};
+    fricreg_structure *s = make(2, 2);
+    ok(s, fricreg_structure_set_mass(s, 2, M));
+    ok(s, fricreg_structure_set_stiffness(s, 2, K));
+    ok(s, fricreg_structure_set_contacts(s, 2, 2, J));
+    ok(s, fricreg_structure_set_bounds(s, 2, mun));
+    ok(s, fricreg_structure_set_law(s, law, eps));
+    return s;
+}
+
 /* A structure with no friction: one contact on DOF 0 with mun = 0 (f = 0 exactly). */
 static void frictionless(fricreg_structure *s, size_t n)
 {
@@ -485,14 +501,8 @@ END_TEST
  * J^T f = -p gives f = (-(p1 + p2), -p2) = (-0.319, 0.412), and nothing moves, ever. */
 START_TEST(coupled_contacts_hold_a_static_load)
 {
-    const double M[4] = {1.7, 0.0, 0.0, 0.9}, K[4] = {30.2, -12.1, -12.1, 12.1};
-    const double J[4] = {1.0, 0.0, -1.0, 1.0}, mun[2] = {0.5, 0.6}, p[2] = {0.731, -0.412};
-    fricreg_structure *s = make(2, 2);
-    ok(s, fricreg_structure_set_mass(s, 2, M));
-    ok(s, fricreg_structure_set_stiffness(s, 2, K));
-    ok(s, fricreg_structure_set_contacts(s, 2, 2, J));
-    ok(s, fricreg_structure_set_bounds(s, 2, mun));
-    ok(s, fricreg_structure_set_law(s, FRICREG_LAW_QUINN, 0.013));
+    const double mun[2] = {0.5, 0.6}, p[2] = {0.731, -0.412};
+    fricreg_structure *s = make_two_storeys(mun, FRICREG_LAW_QUINN, 0.013);
     ok(s, fricreg_structure_set_load(s, 2, p, 0.0, 0.0, 0, NULL));
     ok(s, fricreg_structure_run(s, 0.01, 1.0));
     double u[2], v[2], f[2];
@@ -555,17 +565,11 @@ END_TEST
 START_TEST(every_law_on_coupled_contacts)
 {
     const int law = _i;
-    const double M[4] = {1.7, 0.0, 0.0, 0.9}, K[4] = {30.2, -12.1, -12.1, 12.1};
-    const double J[4] = {1.0, 0.0, -1.0, 1.0}, mun[2] = {1.3, 0.45}, r[2] = {1.0, 1.0};
+    const double mun[2] = {1.3, 0.45}, r[2] = {1.0, 1.0};
     double ag[801];
     for (int k = 0; k < 801; k++)
         ag[k] = 2.1 * sin(3.7 * k * 0.005);
-    fricreg_structure *s = make(2, 2);
-    ok(s, fricreg_structure_set_mass(s, 2, M));
-    ok(s, fricreg_structure_set_stiffness(s, 2, K));
-    ok(s, fricreg_structure_set_contacts(s, 2, 2, J));
-    ok(s, fricreg_structure_set_bounds(s, 2, mun));
-    ok(s, fricreg_structure_set_law(s, law, 0.01));
+    fricreg_structure *s = make_two_storeys(mun, law, 0.01);
     ok(s, fricreg_structure_set_influence(s, 2, r));
     ok(s, fricreg_structure_set_ground_accel(s, 0.0, 0.005, 801, ag));
     ok(s, fricreg_structure_run(s, 0.01, 4.0));
@@ -584,19 +588,13 @@ END_TEST
  * of the whole record sampled at the steps: the record is read at step ends only. */
 START_TEST(ground_motion_step_by_step)
 {
-    const double M[4] = {1.7, 0.0, 0.0, 0.9}, K[4] = {30.2, -12.1, -12.1, 12.1};
-    const double J[4] = {1.0, 0.0, -1.0, 1.0}, mun[2] = {1.3, 0.45}, r[2] = {1.0, 1.0};
+    const double mun[2] = {1.3, 0.45}, r[2] = {1.0, 1.0};
     const double dt = 0.01;
     double ag[301], u[2][2];
     for (int k = 0; k < 301; k++)
         ag[k] = 2.1 * sin(3.7 * k * dt);
     for (int by_step = 0; by_step < 2; by_step++) {
-        fricreg_structure *s = make(2, 2);
-        ok(s, fricreg_structure_set_mass(s, 2, M));
-        ok(s, fricreg_structure_set_stiffness(s, 2, K));
-        ok(s, fricreg_structure_set_contacts(s, 2, 2, J));
-        ok(s, fricreg_structure_set_bounds(s, 2, mun));
-        ok(s, fricreg_structure_set_law(s, FRICREG_LAW_QUINN, 0.01));
+        fricreg_structure *s = make_two_storeys(mun, FRICREG_LAW_QUINN, 0.01);
         ok(s, fricreg_structure_set_influence(s, 2, r));
         if (!by_step)
             ok(s, fricreg_structure_set_ground_accel(s, 0.0, dt, 301, ag));
@@ -1048,17 +1046,11 @@ END_TEST
  * factored in the factor's storage, which must then be refactored from the kept M). */
 START_TEST(refused_setter_mid_run_changes_nothing)
 {
-    const double M[4] = {1.7, 0.0, 0.0, 0.9}, K[4] = {30.2, -12.1, -12.1, 12.1};
-    const double J[4] = {1.0, 0.0, -1.0, 1.0}, mun[2] = {1.3, 0.45}, p[2] = {2.9, -0.8};
+    const double mun[2] = {1.3, 0.45}, p[2] = {2.9, -0.8};
     const double indefinite[4] = {1.0, 2.0, 2.0, 1.0};
     double u[2][2];
     for (int refuse = 0; refuse < 2; refuse++) {
-        fricreg_structure *s = make(2, 2);
-        ok(s, fricreg_structure_set_mass(s, 2, M));
-        ok(s, fricreg_structure_set_stiffness(s, 2, K));
-        ok(s, fricreg_structure_set_contacts(s, 2, 2, J));
-        ok(s, fricreg_structure_set_bounds(s, 2, mun));
-        ok(s, fricreg_structure_set_law(s, FRICREG_LAW_QUINN, 0.01));
+        fricreg_structure *s = make_two_storeys(mun, FRICREG_LAW_QUINN, 0.01);
         ok(s, fricreg_structure_set_load(s, 2, p, 0.0, 0.0, 0, NULL));
         ok(s, fricreg_structure_run(s, 0.01, 0.5));
         if (refuse)

@@ -36,19 +36,6 @@ static double max_frequency(const struct fr_system *sys)
     return 1.0;
 }
 
-/* eps = 2 dt (Sec. 3.1). */
-static double paper_eps(const struct fr_system *sys, double dt)
-{
-    (void)sys;
-    return 2.0 * dt;
-}
-
-static double unit_weight(const struct fr_system *sys)
-{
-    (void)sys;
-    return 1.0;
-}
-
 static int configure(const struct fr_system *sys, fricreg_ctx *ctx)
 {
     return fricreg_ctx_set_bounds(ctx, 1, &sys->p[MUN]); /* W = 1: the context's default */
@@ -112,8 +99,8 @@ const struct fr_system_type fr_oscillator_type = {
     .ncontacts = one,
     .period = period,
     .max_frequency = max_frequency,
-    .paper_eps = paper_eps,
-    .dissipation_weight = unit_weight,
+    .paper_eps = fr_paper_eps_two_dt, /* Sec. 3.1 */
+    .dissipation_weight = fr_unit_weight,
     .configure = configure,
     .initial = initial,
     .contacts = contacts,

@@ -37,19 +37,6 @@ static double max_frequency(const struct fr_system *sys)
     return sqrt(fmax(1.0, sys->p[K]));
 }
 
-/* eps = 2 dt, as for the oscillator (Sec. 3.3). */
-static double paper_eps(const struct fr_system *sys, double dt)
-{
-    (void)sys;
-    return 2.0 * dt;
-}
-
-static double unit_weight(const struct fr_system *sys)
-{
-    (void)sys;
-    return 1.0;
-}
-
 static int configure(const struct fr_system *sys, fricreg_ctx *ctx)
 {
     const double W[4] = {1.0, -1.0, -1.0, 2.0}; /* Eqs. (7): z'' = a_free + W f */
@@ -132,8 +119,8 @@ const struct fr_system_type fr_twoblock_type = {
     .ncontacts = two,
     .period = period,
     .max_frequency = max_frequency,
-    .paper_eps = paper_eps,
-    .dissipation_weight = unit_weight,
+    .paper_eps = fr_paper_eps_two_dt, /* as for the oscillator (Sec. 3.3) */
+    .dissipation_weight = fr_unit_weight,
     .configure = configure,
     .initial = initial,
     .contacts = contacts,

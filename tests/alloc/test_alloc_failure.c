@@ -577,28 +577,43 @@ START_TEST(test_disk_ctx_set_coupling_dense)
 }
 END_TEST
 
-/* fricreg_disk_ctx.h: eval never allocates; neither does the tangent (Brent's solver and the
- * KKT storage are the context's). Contacts at rest, in the band and sliding, dense W. */
-START_TEST(test_disk_eval_does_not_allocate)
+/* A disk context of M_DENSE contacts on the dense W of disk_dense_w. */
+static fricreg_disk_ctx *disk_dense_ctx(void)
 {
-    double W[4 * M_DENSE * M_DENSE], f[2 * M_DENSE], T[4 * M_DENSE * M_DENSE];
+    double W[4 * M_DENSE * M_DENSE];
     disk_dense_w(W);
-    const double mun[M_DENSE] = {0.4125, 1.25, 0.3175, 2.0625, 0.8125};
-    const double zdot[2 * M_DENSE] = {1e-5, 2e-3, -0.375, 0.0, 0.0, 0.0, 0.0, 1e-3, 1.875, 0.5};
-    const double a_free[2 * M_DENSE] = {0.9375, -3.25, 0.0625, 1.625, -0.4375,
-                                        0.25,   2.0,   -1.0,   0.5,   0.125};
     fricreg_disk_ctx *ctx = NULL;
     ck_assert_int_eq(fricreg_disk_ctx_create(M_DENSE, &ctx), FRICREG_OK);
     ck_assert_int_eq(fricreg_disk_ctx_set_coupling_dense(ctx, M_DENSE, W), FRICREG_OK);
-    ck_assert_int_eq(fricreg_disk_ctx_set_bounds(ctx, M_DENSE, mun), FRICREG_OK);
-    ck_assert_int_eq(fricreg_disk_ctx_set_law(ctx, FRICREG_DISK_QUINN, 0.02), FRICREG_OK);
+    return ctx;
+}
+
+/* eval and tangent of a set-up disk context of M_DENSE contacts (at rest, in the band and
+ * sliding) succeed with the first allocation armed to fail, and request none. */
+static void expect_disk_eval_allocates_nothing(fricreg_disk_ctx *ctx, const char *what)
+{
+    const double zdot[2 * M_DENSE] = {1e-5, 2e-3, -0.375, 0.0, 0.0, 0.0, 0.0, 1e-3, 1.875, 0.5};
+    const double a_free[2 * M_DENSE] = {0.9375, -3.25, 0.0625, 1.625, -0.4375,
+                                        0.25,   2.0,   -1.0,   0.5,   0.125};
+    double f[2 * M_DENSE], T[4 * M_DENSE * M_DENSE];
     hook_arm(1); /* the first request would fail: none may be made */
     int status = fricreg_disk_ctx_eval(ctx, M_DENSE, zdot, a_free, f);
     int tangent = fricreg_disk_ctx_tangent(ctx, M_DENSE, T, T);
     hook_disarm();
     ck_assert_int_eq(status, FRICREG_OK);
     ck_assert_int_eq(tangent, FRICREG_OK);
-    ck_assert_msg(n_allocs == 0, "disk eval and tangent made %ld allocations", n_allocs);
+    ck_assert_msg(n_allocs == 0, "%s eval and tangent made %ld allocations", what, n_allocs);
+}
+
+/* fricreg_disk_ctx.h: eval never allocates; neither does the tangent (Brent's solver and the
+ * KKT storage are the context's). Contacts at rest, in the band and sliding, dense W. */
+START_TEST(test_disk_eval_does_not_allocate)
+{
+    const double mun[M_DENSE] = {0.4125, 1.25, 0.3175, 2.0625, 0.8125};
+    fricreg_disk_ctx *ctx = disk_dense_ctx();
+    ck_assert_int_eq(fricreg_disk_ctx_set_bounds(ctx, M_DENSE, mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_disk_ctx_set_law(ctx, FRICREG_DISK_QUINN, 0.02), FRICREG_OK);
+    expect_disk_eval_allocates_nothing(ctx, "disk");
     fricreg_disk_ctx_free(ctx);
 }
 END_TEST
@@ -621,25 +636,12 @@ END_TEST
  * and sliding, dense W). */
 START_TEST(test_disk_stribeck_eval_does_not_allocate)
 {
-    double W[4 * M_DENSE * M_DENSE], f[2 * M_DENSE], T[4 * M_DENSE * M_DENSE];
-    disk_dense_w(W);
-    const double zdot[2 * M_DENSE] = {1e-5, 2e-3, -0.375, 0.0, 0.0, 0.0, 0.0, 1e-3, 1.875, 0.5};
-    const double a_free[2 * M_DENSE] = {0.9375, -3.25, 0.0625, 1.625, -0.4375,
-                                        0.25,   2.0,   -1.0,   0.5,   0.125};
-    fricreg_disk_ctx *ctx = NULL;
-    ck_assert_int_eq(fricreg_disk_ctx_create(M_DENSE, &ctx), FRICREG_OK);
-    ck_assert_int_eq(fricreg_disk_ctx_set_coupling_dense(ctx, M_DENSE, W), FRICREG_OK);
+    fricreg_disk_ctx *ctx = disk_dense_ctx();
     ck_assert_int_eq(fricreg_disk_ctx_set_law(ctx, FRICREG_DISK_QUINN, 0.02), FRICREG_OK);
     ck_assert_int_eq(fricreg_disk_ctx_set_stribeck(ctx, M_DENSE, strib_fs, strib_fk, strib_vs,
                                                    strib_delta),
                      FRICREG_OK);
-    hook_arm(1); /* the first request would fail: none may be made */
-    int status = fricreg_disk_ctx_eval(ctx, M_DENSE, zdot, a_free, f);
-    int tangent = fricreg_disk_ctx_tangent(ctx, M_DENSE, T, T);
-    hook_disarm();
-    ck_assert_int_eq(status, FRICREG_OK);
-    ck_assert_int_eq(tangent, FRICREG_OK);
-    ck_assert_msg(n_allocs == 0, "disk Stribeck eval and tangent made %ld allocations", n_allocs);
+    expect_disk_eval_allocates_nothing(ctx, "disk Stribeck");
     fricreg_disk_ctx_free(ctx);
 }
 END_TEST

@@ -36,7 +36,8 @@ void stress_check(struct stress_tally *tally, int ok, const char *fmt, ...)
 #endif
     ;
 
-/* A seeded generator of its own (splitmix64), so that every platform draws the same cases. */
+/* A seeded generator (splitmix64 of tests/support/random.h, the state the caller's), so that
+ * every platform draws the same cases. */
 double stress_uniform(uint64_t *state, double lo, double hi);
 double stress_log_uniform(uint64_t *state, double lo, double hi);
 

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "stress.h"
+#include "random.h"
 
 void stress_check(struct stress_tally *tally, int ok, const char *fmt, ...)
 {
@@ -21,19 +22,9 @@ void stress_check(struct stress_tally *tally, int ok, const char *fmt, ...)
     va_end(ap);
 }
 
-/* splitmix64 (Steele, Lea, Flood 2014): 64 bits per call from a 64-bit state. */
-static uint64_t next_bits(uint64_t *state)
-{
-    uint64_t z = (*state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-
 double stress_uniform(uint64_t *state, double lo, double hi)
 {
-    double u = (double)(next_bits(state) >> 11) * 0x1.0p-53; /* [0, 1) */
-    return lo + (hi - lo) * u;
+    return splitmix64_uniform(state, lo, hi); /* the tests' generator, tests/support/random.h */
 }
 
 double stress_log_uniform(uint64_t *state, double lo, double hi)
