@@ -4,7 +4,8 @@
 #   builds with -DFRICREG_BENCH=ON in build-bench/, runs the work-precision, the scaling and
 #   the kernel benchmarks, writes every CSV, gnuplot script and PNG to bench-results/, prints
 #   the tables (the summary ends the work-precision part), and rewrites the dated results page
-#   docs/results.md from them (commit it to publish a run). Not run by ctest: it takes minutes.
+#   docs/results.md and the README's summary table from them (commit both to publish a
+#   run). Not run by ctest: it takes minutes.
 # The event-driven baseline is built when SUNDIALS CVODE is installed (Debian:
 # libsundials-dev); without it the rest runs and says so.
 set -eu
@@ -53,4 +54,5 @@ else
     echo "gnuplot not found: no PNGs (the .gp scripts and the data are in $out/)"
 fi
 sh bench/results_page.sh "$out" docs/results.md
+sh bench/readme_table.sh "$out" README.md
 echo "results in $out/; benchmark wall time $(( $(date +%s) - start )) s"
