@@ -14,8 +14,9 @@
  * far it got). Above n = 2000 (10^4) only what fits in minutes: the reference is RK4 at
  * 0.35/n itself, the implicit prototype runs at 1e-3 only, CVODE at 1e-6 only, capped at
  * CVODE_CAP_BIG seconds (FRICREG_BENCH_CVODE_CAP=S sets another). BDF's dense Newton on
- * 2n + 1 unknowns is left out: O(n^3) per Jacobian. Writes bigchain.csv. Not in bench/run.sh by default
- * (FRICREG_BENCH_BIG=1 runs it): n = 1000 takes about a minute of CPU, n = 10^4 three. */
+ * 2n + 1 unknowns is left out: O(n^3) per Jacobian. Writes bigchain.csv. Not in bench/run.sh
+ * by default (FRICREG_BENCH_BIG=1 runs it): n = 1000 takes about a minute of CPU, n = 10^4
+ * three. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
