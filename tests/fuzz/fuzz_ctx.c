@@ -130,42 +130,11 @@ static void op_set_diagonal(struct fuzz_input *in, fricreg_ctx *ctx, struct mode
     }
 }
 
-/* A dense W of one of several kinds, row-major m x m. */
-static void make_dense(struct fuzz_input *in, size_t m, double W[])
-{
-    uint8_t kind = fuzz_byte(in) % 4;
-    double B[MAX_M * MAX_M];
-    size_t rank = 1 + fuzz_byte(in) % m;
-    double scale = fuzz_double(in);
-    switch (kind) {
-    case 0: /* any symmetric matrix: mostly indefinite */
-        for (size_t i = 0; i < m; i++)
-            for (size_t j = i; j < m; j++)
-                W[i * m + j] = W[j * m + i] = fuzz_double(in);
-        break;
-    case 1: /* B B^T with B m x rank: PSD, singular when rank < m */
-    case 3: /* the same, scaled (huge, subnormal, negative, NaN scale) */
-        for (size_t k = 0; k < m * rank; k++)
-            B[k] = fuzz_double(in);
-        for (size_t i = 0; i < m; i++)
-            for (size_t j = 0; j < m; j++) {
-                double s = 0.0;
-                for (size_t k = 0; k < rank; k++)
-                    s += B[i * rank + k] * B[j * rank + k];
-                W[i * m + j] = kind == 3 ? s * scale : s;
-            }
-        break;
-    default: /* any matrix */
-        for (size_t k = 0; k < m * m; k++)
-            W[k] = fuzz_double(in);
-    }
-}
-
 static void op_set_dense(struct fuzz_input *in, fricreg_ctx *ctx, struct model *md)
 {
     size_t m = fuzz_size(in, md->m);
-    double W[MAX_M * MAX_M];
-    make_dense(in, md->m, W);
+    double W[MAX_M * MAX_M], scratch[MAX_M * MAX_M];
+    fuzz_matrix(in, md->m, W, scratch);
     double W0[MAX_M * MAX_M];
     memcpy(W0, W, sizeof W);
     int status = fricreg_ctx_set_coupling_dense(ctx, m, fuzz_byte(in) == 1 ? NULL : W);

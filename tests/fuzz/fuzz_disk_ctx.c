@@ -199,42 +199,11 @@ static void op_set_blocks(struct fuzz_input *in, fricreg_disk_ctx *ctx, struct m
     md->evaluated = 0;
 }
 
-/* A dense W of one of several kinds, row-major n x n. */
-static void make_dense(struct fuzz_input *in, size_t n, double W[])
-{
-    uint8_t kind = fuzz_byte(in) % 4;
-    double B[MAX_N * MAX_N];
-    size_t rank = 1 + fuzz_byte(in) % n;
-    double scale = fuzz_double(in);
-    switch (kind) {
-    case 0: /* any symmetric matrix: mostly indefinite */
-        for (size_t i = 0; i < n; i++)
-            for (size_t j = i; j < n; j++)
-                W[i * n + j] = W[j * n + i] = fuzz_double(in);
-        break;
-    case 1: /* B B^T with B n x rank: PSD, singular when rank < n */
-    case 3: /* the same, scaled (huge, subnormal, negative, NaN scale) */
-        for (size_t k = 0; k < n * rank; k++)
-            B[k] = fuzz_double(in);
-        for (size_t i = 0; i < n; i++)
-            for (size_t j = 0; j < n; j++) {
-                double s = 0.0;
-                for (size_t k = 0; k < rank; k++)
-                    s += B[i * rank + k] * B[j * rank + k];
-                W[i * n + j] = kind == 3 ? s * scale : s;
-            }
-        break;
-    default: /* any matrix */
-        for (size_t k = 0; k < n * n; k++)
-            W[k] = fuzz_double(in);
-    }
-}
-
 static void op_set_dense(struct fuzz_input *in, fricreg_disk_ctx *ctx, struct model *md)
 {
     size_t m = fuzz_size(in, md->m), n = 2 * md->m;
-    double W[MAX_N * MAX_N], W0[MAX_N * MAX_N];
-    make_dense(in, n, W);
+    double W[MAX_N * MAX_N], W0[MAX_N * MAX_N], scratch[MAX_N * MAX_N];
+    fuzz_matrix(in, n, W, scratch);
     memcpy(W0, W, sizeof W);
     int null = fuzz_byte(in) == 1;
     int status = fricreg_disk_ctx_set_coupling_dense(ctx, m, null ? NULL : W);

@@ -108,4 +108,36 @@ static inline int fuzz_all_finite(const double *a, size_t n)
     return 1;
 }
 
+/* A dense n x n matrix W (row-major) of one of several kinds, for a coupling: any symmetric
+ * (mostly indefinite), B B^T with B n x rank (PSD, singular when rank < n), the same scaled by
+ * any double (huge, subnormal, negative, NaN), or any matrix. B: scratch of n * n doubles. */
+static inline void fuzz_matrix(struct fuzz_input *in, size_t n, double W[], double B[])
+{
+    uint8_t kind = fuzz_byte(in) % 4;
+    size_t rank = 1 + fuzz_byte(in) % n;
+    double scale = fuzz_double(in);
+    switch (kind) {
+    case 0:
+        for (size_t i = 0; i < n; i++)
+            for (size_t j = i; j < n; j++)
+                W[i * n + j] = W[j * n + i] = fuzz_double(in);
+        break;
+    case 1:
+    case 3:
+        for (size_t k = 0; k < n * rank; k++)
+            B[k] = fuzz_double(in);
+        for (size_t i = 0; i < n; i++)
+            for (size_t j = 0; j < n; j++) {
+                double s = 0.0;
+                for (size_t k = 0; k < rank; k++)
+                    s += B[i * rank + k] * B[j * rank + k];
+                W[i * n + j] = kind == 3 ? s * scale : s;
+            }
+        break;
+    default:
+        for (size_t k = 0; k < n * n; k++)
+            W[k] = fuzz_double(in);
+    }
+}
+
 #endif
