@@ -9,9 +9,8 @@
  * on success f finite with |f_i| <= mun_i, each f_i the law at (zdot_i, f_eq,i) on the
  * near-stick set (the force balance f = clamp(f_eq, ±mun) at zdot_i = 0), the slip contacts
  * at the law with no f_eq, and f_eq = -a_free/w exactly for a diagonal W. */
-#include <gsl/gsl_eigen.h>
-#include <gsl/gsl_matrix.h>
 
+#include "fuzz_condition.h"
 #include "fuzz_input.h"
 
 #include "fricreg.h"
@@ -205,24 +204,7 @@ static double scaled_condition(const struct model *md, const int in_s[])
     for (size_t i = 0; i < m; i++)
         if (in_s[i])
             pos[s++] = i;
-    if (s == 0)
-        return 1.0;
-    gsl_matrix *A = gsl_matrix_alloc(s, s);
-    gsl_vector *eval = gsl_vector_alloc(s);
-    gsl_eigen_symm_workspace *work = gsl_eigen_symm_alloc(s);
-    FUZZ_REQUIRE(A && eval && work, "harness: out of memory");
-    for (size_t a = 0; a < s; a++)
-        for (size_t b = 0; b < s; b++) {
-            size_t i = pos[a], j = pos[b];
-            double scaled = md->W[i * m + j] / sqrt(md->W[i * m + i]) / sqrt(md->W[j * m + j]);
-            gsl_matrix_set(A, a, b, scaled);
-        }
-    gsl_eigen_symm(A, eval, work);
-    double lo = gsl_vector_min(eval), hi = gsl_vector_max(eval);
-    gsl_eigen_symm_free(work);
-    gsl_vector_free(eval);
-    gsl_matrix_free(A);
-    return lo > 0.0 ? hi / lo : INFINITY;
+    return fuzz_scaled_condition(md->W, m, pos, s);
 }
 
 static void check_forces(const struct model *md, const double zdot[], const double a_free[],

@@ -14,9 +14,8 @@
  * f_eq,i = -a_free,i/w_i to rounding; otherwise f_i lies in K_i and satisfies the QP's
  * optimality conditions (stationarity, a multiplier >= 0 on the circle) to the accuracy the
  * header states, cond(W_SS) DBL_EPSILON. A successful tangent is finite and written in full. */
-#include <gsl/gsl_eigen.h>
-#include <gsl/gsl_matrix.h>
 
+#include "fuzz_condition.h"
 #include "fuzz_input.h"
 
 #include "fricreg_disk_ctx.h"
@@ -293,24 +292,7 @@ static double scaled_condition(const struct model *md, const int near[])
     for (size_t k = 0; k < n; k++)
         if (near[k / 2])
             pos[s++] = k;
-    if (s == 0)
-        return 1.0;
-    gsl_matrix *A = gsl_matrix_alloc(s, s);
-    gsl_vector *eval = gsl_vector_alloc(s);
-    gsl_eigen_symm_workspace *work = gsl_eigen_symm_alloc(s);
-    FUZZ_REQUIRE(A && eval && work, "harness: out of memory");
-    for (size_t a = 0; a < s; a++)
-        for (size_t b = 0; b < s; b++) {
-            size_t i = pos[a], j = pos[b];
-            double w = md->W[i * n + j] / sqrt(md->W[i * n + i]) / sqrt(md->W[j * n + j]);
-            gsl_matrix_set(A, a, b, w);
-        }
-    gsl_eigen_symm(A, eval, work);
-    double lo = gsl_vector_min(eval), hi = gsl_vector_max(eval);
-    gsl_eigen_symm_free(work);
-    gsl_vector_free(eval);
-    gsl_matrix_free(A);
-    return lo > 0.0 ? hi / lo : INFINITY;
+    return fuzz_scaled_condition(md->W, n, pos, s);
 }
 
 /* Contact i's optimality in the QP of fricreg_disk_ctx.h: with g_i = (W f)_i + a_free,i +
