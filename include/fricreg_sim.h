@@ -78,11 +78,23 @@ enum fricreg_integrator {
      *  step, second order (src/central_step.c). Stable for (dt omega/2)^2 + dt lambda < 1;
      *  the guard takes 0.9 (fricreg_sim_run). Not for fricreg_structure_run_ode (the structure has its own
      *  central difference). Since 1.3.0. */
-    FRICREG_INT_CENTRAL = 13
+    FRICREG_INT_CENTRAL = 13,
+    /** FRICREG_INT_CENTRAL with the friction of the step's end implicit (IMEX: springs
+     *  explicit, friction implicit): a1 = a_free(x1) + W f1 and v1 = v + dt (a + a1)/2 with
+     *  f1 = law (4) at (v1, f_eq(x1)), solved exactly contact by contact (law (4) is piecewise
+     *  linear in v: no iteration; src/central_imex.c). The trapezoid on the friction is
+     *  A-stable, so the stick zone bounds no step: the guard is the springs',
+     *  (dt omega/2)^2 < 0.9, and, where dt lambda >= 0.9 (eps below about 2.2 dt mun W_ii:
+     *  law (4)'s band is crossed within one step, as a law that jumps), also
+     *  dt omega <= 1/sqrt 2 (fricreg_sim_run). Second order, one right-hand side per step. Law (4) only, on systems whose contacts are the bodies with a diagonal W (the
+     *  oscillator and the chain); fricreg_sim_run refuses anything else with FRICREG_EINVAL.
+     *  Fixed steps only. Since 1.5.0. */
+    FRICREG_INT_CENTRAL_IMEX = 14
 };
 
-/** The name of an integrator: GSL's ("rk4", "msbdf", …), "rk4-gsl" for FRICREG_INT_RK4_GSL
- *  and "central" for FRICREG_INT_CENTRAL; NULL if unknown. Static storage. */
+/** The name of an integrator: GSL's ("rk4", "msbdf", …), "rk4-gsl" for FRICREG_INT_RK4_GSL,
+ *  "central" for FRICREG_INT_CENTRAL and "central-imex" for FRICREG_INT_CENTRAL_IMEX; NULL if
+ *  unknown. Static storage. */
 FRICREG_API const char *fricreg_integrator_name(int integrator);
 
 /** The integrator named `name` (as above). Returns its enum value, not a status: 0 if there
@@ -142,7 +154,8 @@ FRICREG_API int fricreg_sim_set_partition(fricreg_sim *sim, int partition);
  *  (fricreg_ctx_tangent) chained through the system's linear kinematics, one right-hand side
  *  per Jacobian, exact wherever the forces are differentiable.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown integrator, dt <= 0,
- *  rtol < 0 or atol < 0, or rtol or atol > 0 with FRICREG_INT_CENTRAL (fixed steps only);
+ *  rtol < 0 or atol < 0, or rtol or atol > 0 with FRICREG_INT_CENTRAL or
+ *  FRICREG_INT_CENTRAL_IMEX (fixed steps only);
  *  FRICREG_ENONFINITE. */
 FRICREG_API int fricreg_sim_set_integrator(fricreg_sim *sim, int integrator, double dt, double rtol,
                                            double atol);
@@ -189,6 +202,9 @@ FRICREG_API int fricreg_sim_set_observer(fricreg_sim *sim, fricreg_sim_observer 
  *  not depend on dt: a refusal by the stick zone then holds at every dt (e.g. the oscillator
  *  with mun = 3: dt * lambda = 3 > 2.78 for rk4), and the message says so and names the
  *  smallest eps to set instead; no eps is chosen silently, since eps changes the results.
+ *  FRICREG_INT_CENTRAL_IMEX solves the friction implicitly and needs (dt omega/2)^2 < 0.9
+ *  whatever eps, and dt omega <= 1/sqrt 2 as well where dt * lambda >= 0.9: with law (4)'s
+ *  band not resolved by the step, a reversal within one step can put energy in, as above.
  *  tests/test_guard.c sweeps these limits over every stepper, law and system from 0.5x to 1.5x
  *  the accepted dt: no accepted run leaves a stick or puts energy in beyond 1% of the run's
  *  energy scale (Karnopp with the paper's eps over wide bands excepted: its band pushes).
@@ -198,7 +214,8 @@ FRICREG_API int fricreg_sim_set_observer(fricreg_sim *sim, fricreg_sim_observer 
  *  a step).
  *
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if t_end <= 0, or too many fixed steps
- *  (more than 2^31) or cycles (more than 10^9); FRICREG_ENONFINITE; FRICREG_ESTEP; FRICREG_EDIVERGED; FRICREG_EINTEGRATOR
+ *  (more than 2^31) or cycles (more than 10^9), or FRICREG_INT_CENTRAL_IMEX with a law other
+ *  than (4) or on the two blocks; FRICREG_ENONFINITE; FRICREG_ESTEP; FRICREG_EDIVERGED; FRICREG_EINTEGRATOR
  *  (GSL failed, e.g. the adaptive step underflowed); FRICREG_ESINGULAR; FRICREG_ENOMEM.
  *  On failure the results hold what was reached before it: a run refused before its first
  *  step (e.g. FRICREG_ESTEP) leaves the initial state, time 0 and no cycles. A call from the

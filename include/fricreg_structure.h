@@ -248,7 +248,8 @@ FRICREG_API int fricreg_structure_run(fricreg_structure *s, double dt, double t_
  *  from the state reached, its acceleration from the equation of motion.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown integrator or
- *  FRICREG_INT_CENTRAL (fricreg_sim's only: use fricreg_structure_step's central difference),
+ *  FRICREG_INT_CENTRAL or FRICREG_INT_CENTRAL_IMEX (fricreg_sim's only: use
+ *  fricreg_structure_step's central difference),
  *  dt <= 0, rtol < 0, atol < 0, t_end not after the current time, more than 2^31 fixed steps, or J
  *  never set; FRICREG_ENONFINITE; FRICREG_ESTEP; FRICREG_ESINGULAR; FRICREG_EDIVERGED (the
  *  state non-finite or beyond 1e100); FRICREG_EINTEGRATOR (GSL failed, e.g. the adaptive step

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* central_step.c — explicit central differences (Newmark beta = 0, gamma = 1/2) as a
- * gsl_odeiv2_step_type, for fricreg_sim's fixed steps (FRICREG_INT_CENTRAL).
+ * gsl_odeiv2_step_type, for fricreg_sim's fixed steps (FRICREG_INT_CENTRAL and
+ * FRICREG_INT_CENTRAL_IMEX).
  *
  * The state is fricreg_sim's (src/sim.c): y = (x[n], v[n], D), dim = 2n + 1, and the
  * right-hand side returns (v, a, D'). One step of size h, with a = a(t, x, v) carried over from
@@ -25,7 +26,9 @@
  * the scheme first order wherever friction depends on velocity (the near-stick band); it would
  * double the stick-zone bound (dt lambda < 2 instead of 1), which is not worth an order.
  * The stability bound of this form, (dt omega/2)^2 + dt lambda < 1, is derived in src/sim.c
- * (check_central_step).
+ * (check_central_step). FRICREG_INT_CENTRAL_IMEX ("central-imex") is the same step with the
+ * friction taken at v1 itself, law (4) solved body by body (central_imex.c), which frees the
+ * step from the stick zone's bound.
  *
  * D is the work of the step's mean friction impulse on its mean velocity: since v1 - v is h
  * times the mean acceleration, this is exactly the friction's share of the scheme's own change
@@ -43,6 +46,9 @@
 
 #include <gsl/gsl_errno.h>
 
+#include "central_imex.h"
+#include "ctx_internal.h"
+#include "dispatch.h"
 #include "integrator.h"
 #include "sim_internal.h"
 
@@ -55,6 +61,9 @@ struct central_state {
     double t_dydt; /* the time dydt belongs to */
     int have_dydt; /* 0 after alloc and reset: dydt is evaluated at the next step's start */
     double h_arg;  /* > 0: arg already holds the predictor of a step of h_arg from the state */
+    /* central-imex only: fr_central_imex_coefficients [3 m] for the step h_coef (0: none) */
+    double *coef;
+    double h_coef;
 };
 
 static void central_free(void *vstate)
@@ -67,6 +76,7 @@ static void central_free(void *vstate)
     free(s->arg);
     free(s->f);
     free(s->zdot);
+    free(s->coef);
     free(s);
 }
 
@@ -80,7 +90,8 @@ static void *central_alloc(size_t dim)
     s->arg = malloc(dim * sizeof *s->arg);
     s->f = malloc(dim * sizeof *s->f); /* m <= ndof < dim for every reference system */
     s->zdot = malloc(dim * sizeof *s->zdot);
-    if (!s->dydt || !s->next || !s->arg || !s->f || !s->zdot) {
+    s->coef = malloc(3 * dim * sizeof *s->coef);
+    if (!s->dydt || !s->next || !s->arg || !s->f || !s->zdot || !s->coef) {
         central_free(s);
         return NULL;
     }
@@ -144,19 +155,19 @@ static double dissipation_step(fricreg_sim *sim, struct central_state *s, double
     return -0.25 * h * sim->sys.type->dissipation_weight(&sim->sys) * work;
 }
 
-/* The pass of finish_on_bodies over n bodies, from v = y's v at the step's start: writes x1
- * and v1 into x and v and f1 into f0 (carried on), adds h to stick where |v1| < eps, and
- * overwrites (x1, v*) with the predictor of the next step, of the same h (predictor(), from
- * x1, v1 and a1: the same operations, so the same bits). Returns
+/* The loop of bodies_end_pass (finish_on_bodies) over n bodies, from v = y's v at the step's
+ * start: writes x1 and v1 into x and v and f1 into f0 (carried on), adds h to stick where
+ * |v1| < eps, and overwrites (x1, v*) with the predictor of the next step, of the same h
+ * (predictor(), from x1, v1 and a1: the same operations, so the same bits). Returns
  * sum_i (f0_i + f1_i)(v_i + v1_i) and the count of components of (x1, v1) beyond
  * FR_SIM_STATE_LIMIT or not finite in *diverged. restrict: GCC honours it on parameters,
  * which lets the pass vectorize. */
 enum { END_LANES = 8 }; /* 4 made GCC 12 shuffle and spill: 2.3 ns a body, 8 1.1 */
-static double bodies_end_pass(size_t n, double h, double eps, double *restrict x1,
-                              double *restrict vstar, const double *restrict a0,
-                              const double *restrict a1, const double *restrict f1,
-                              double *restrict f0, double *restrict stick, double *restrict x,
-                              double *restrict v, double *diverged)
+FR_KERNEL_BODY double bodies_end_loop(size_t n, double h, double eps, double *restrict x1,
+                                      double *restrict vstar, const double *restrict a0,
+                                      const double *restrict a1, const double *restrict f1,
+                                      double *restrict f0, double *restrict stick,
+                                      double *restrict x, double *restrict v, double *diverged)
 {
     double lane[END_LANES] = {0.0}, bad[END_LANES] = {0.0}, work = 0.0, limit = FR_SIM_STATE_LIMIT;
     size_t i = 0;
@@ -186,6 +197,76 @@ static double bodies_end_pass(size_t n, double h, double eps, double *restrict x
     return work;
 }
 
+#ifdef FRICREG_AVX2_DISPATCH
+FR_AVX2 static double bodies_end_avx2(size_t n, double h, double eps, double *restrict x1,
+                                      double *restrict vstar, const double *restrict a0,
+                                      const double *restrict a1, const double *restrict f1,
+                                      double *restrict f0, double *restrict stick,
+                                      double *restrict x, double *restrict v, double *diverged)
+{
+    return bodies_end_loop(n, h, eps, x1, vstar, a0, a1, f1, f0, stick, x, v, diverged);
+}
+#endif
+
+/* bodies_end_loop, in AVX2 where the CPU has it (dispatch.h). */
+static double bodies_end_pass(size_t n, double h, double eps, double *restrict x1,
+                              double *restrict vstar, const double *restrict a0,
+                              const double *restrict a1, const double *restrict f1,
+                              double *restrict f0, double *restrict stick, double *restrict x,
+                              double *restrict v, double *diverged)
+{
+#ifdef FRICREG_AVX2_DISPATCH
+    if (fr_have_avx2())
+        return bodies_end_avx2(n, h, eps, x1, vstar, a0, a1, f1, f0, stick, x, v, diverged);
+#endif
+    return bodies_end_loop(n, h, eps, x1, vstar, a0, a1, f1, f0, stick, x, v, diverged);
+}
+
+/* The loop of imex_friction_pass: the friction at the step's end solved implicitly, body by
+ * body (central_imex.h), from the state's v, the carried a0, the free accelerations a_free at
+ * the step's end and coef = (bound_acc, den_inv, w_inv) [3n] of fr_central_imex_coefficients:
+ * f1 and a1 = a_free + W f1. A pass of its own: fused into bodies_end_pass, the step took
+ * 1.4x as long (chain, n = 1000, SSE2: 14 streams in one loop). */
+FR_KERNEL_BODY void imex_friction_loop(size_t n, double h, double eps, const double *restrict v,
+                                       const double *restrict a0, const double *restrict a_free,
+                                       const double *restrict coef, double *restrict f1,
+                                       double *restrict a1)
+{
+    double two_over_eps = 2.0 / eps;
+    const double *bound_acc = coef, *den_inv = coef + n, *w_inv = coef + 2 * n;
+    for (size_t i = 0; i < n; i++) {
+        double g1 = fr_imex_friction_acc(v[i], a0[i], a_free[i], h, two_over_eps, bound_acc[i],
+                                         den_inv[i]);
+        a1[i] = a_free[i] + g1;
+        f1[i] = g1 * w_inv[i];
+    }
+}
+
+#ifdef FRICREG_AVX2_DISPATCH
+FR_AVX2 static void imex_friction_avx2(size_t n, double h, double eps, const double *restrict v,
+                                       const double *restrict a0, const double *restrict a_free,
+                                       const double *restrict coef, double *restrict f1,
+                                       double *restrict a1)
+{
+    imex_friction_loop(n, h, eps, v, a0, a_free, coef, f1, a1);
+}
+#endif
+
+/* imex_friction_loop, in AVX2 where the CPU has it (dispatch.h). */
+static void imex_friction_pass(size_t n, double h, double eps, const double *restrict v,
+                               const double *restrict a0, const double *restrict a_free,
+                               const double *restrict coef, double *restrict f1,
+                               double *restrict a1)
+{
+#ifdef FRICREG_AVX2_DISPATCH
+    if (fr_have_avx2()) {
+        imex_friction_avx2(n, h, eps, v, a0, a_free, coef, f1, a1);
+        return;
+    }
+#endif
+    imex_friction_loop(n, h, eps, v, a0, a_free, coef, f1, a1);
+}
+
 /* The step's end when the contacts are the bodies (zdot = v: the oscillator, the chain), in
  * one pass (bodies_end_pass): the corrector, D's increment (dissipation_step with zdot = v,
  * so the carried zdot is y's v itself and no copy of it is kept), the carried f, sim.c's
@@ -212,11 +293,52 @@ static double finish_any(fricreg_sim *sim, struct central_state *s, double t, do
     return dissipation_step(sim, s, h, contact_velocities(sim, t + h, y));
 }
 
-/* One step; on failure y is left as it was. yerr may be NULL (sim.c's direct call). */
-static int central_apply(void *vstate, size_t dim, double t, double h, double y[], double yerr[],
-                         const double dydt_in[], double dydt_out[], const gsl_odeiv2_system *sys)
+/* The step's end, explicit: the right-hand side at (t + h, x1, v*) into s->next, then the
+ * corrector and D's increment (returned into *dD). GSL's status. */
+static int explicit_end(const gsl_odeiv2_system *sys, struct central_state *s, double t, double h,
+                        double y[], double *dD)
 {
-    (void)dydt_in, (void)dydt_out; /* can_use_dydt_in = gives_exact_dydt_out = 0 */
+    fricreg_sim *sim = sys->params;
+    size_t n = sim->ndof;
+    int status = GSL_ODEIV_FN_EVAL(sys, t + h, s->arg, s->next);
+    if (status != GSL_SUCCESS)
+        return status;
+    /* The evaluation read the contact velocities straight from its v*: the contacts are
+     * the bodies (system.h's contacts()). */
+    int on_bodies = sim->zdot == s->arg + n && sim->m == n;
+    *dD = on_bodies ? finish_on_bodies(sim, s, h, y) : finish_any(sim, s, t, h, y);
+    return GSL_SUCCESS;
+}
+
+/* The step's end with implicit friction (central_imex.c), where fr_central_imex_refusal
+ * allows it (law (4), contacts the bodies, W diagonal): the free accelerations at
+ * (t + h, x1), the friction solved body by body (imex_friction_pass: f1 into sim->f, a1
+ * into s->next), and the end of finish_on_bodies. Never fails. */
+static int implicit_end(const gsl_odeiv2_system *sys, struct central_state *s, double t, double h,
+                        double y[], double *dD)
+{
+    fricreg_sim *sim = sys->params;
+    const fricreg_ctx *ctx = sim->ctx;
+    size_t n = sim->ndof;
+    sim->rhs_evals++;
+    sim->sys.type->contacts(&sim->sys, t + h, s->arg, s->arg + n, sim->zdot_buf, sim->a_free);
+    if (s->h_coef != h) { /* once per step size: at a run's start and each cycle's end */
+        fr_central_imex_coefficients(n, h, ctx->eps, ctx->mun, ctx->w_diag, s->coef);
+        s->h_coef = h;
+    }
+    imex_friction_pass(n, h, ctx->eps, y + n, s->dydt + n, sim->a_free, s->coef, sim->f,
+                       s->next + n);
+    *dD = finish_on_bodies(sim, s, h, y);
+    return GSL_SUCCESS;
+}
+
+typedef int step_end(const gsl_odeiv2_system *sys, struct central_state *s, double t, double h,
+                     double y[], double *dD);
+
+/* One step; on failure y is left as it was. yerr may be NULL (sim.c's direct call). */
+static int central_step(void *vstate, size_t dim, double t, double h, double y[], double yerr[],
+                        const gsl_odeiv2_system *sys, step_end *end)
+{
     struct central_state *s = vstate;
     fricreg_sim *sim = sys->params;
     if (dim != 2 * sim->ndof + 1 || sim->m > dim)
@@ -235,13 +357,11 @@ static int central_apply(void *vstate, size_t dim, double t, double h, double y[
     if (s->h_arg != h) /* else the last step's end made it */
         predictor(n, h, y, s->dydt, s->arg);
     s->h_arg = 0.0;
-    int status = GSL_ODEIV_FN_EVAL(sys, t + h, s->arg, s->next);
+    double dD = 0.0;
+    int status = end(sys, s, t, h, y, &dD);
     if (status != GSL_SUCCESS)
         return status;
-    /* The evaluation read the contact velocities straight from its v*: the contacts are
-     * the bodies (system.h's contacts()). */
-    int on_bodies = sim->zdot == s->arg + n && sim->m == n;
-    y[2 * n] += on_bodies ? finish_on_bodies(sim, s, h, y) : finish_any(sim, s, t, h, y);
+    y[2 * n] += dD;
     double *swap = s->dydt; /* a1 is the next step's a */
     s->dydt = s->next;
     s->next = swap;
@@ -251,11 +371,27 @@ static int central_apply(void *vstate, size_t dim, double t, double h, double y[
     return GSL_SUCCESS;
 }
 
+static int central_apply(void *vstate, size_t dim, double t, double h, double y[], double yerr[],
+                         const double dydt_in[], double dydt_out[], const gsl_odeiv2_system *sys)
+{
+    (void)dydt_in, (void)dydt_out; /* can_use_dydt_in = gives_exact_dydt_out = 0 */
+    return central_step(vstate, dim, t, h, y, yerr, sys, explicit_end);
+}
+
+static int central_imex_apply(void *vstate, size_t dim, double t, double h, double y[],
+                              double yerr[], const double dydt_in[], double dydt_out[],
+                              const gsl_odeiv2_system *sys)
+{
+    (void)dydt_in, (void)dydt_out;
+    return central_step(vstate, dim, t, h, y, yerr, sys, implicit_end);
+}
+
 static int central_reset(void *vstate, size_t dim)
 {
     (void)dim;
     ((struct central_state *)vstate)->have_dydt = 0;
     ((struct central_state *)vstate)->h_arg = 0.0;
+    ((struct central_state *)vstate)->h_coef = 0.0;
     return GSL_SUCCESS;
 }
 
@@ -278,4 +414,19 @@ static const gsl_odeiv2_step_type central_type = {
 const gsl_odeiv2_step_type *fr_step_central(void)
 {
     return &central_type;
+}
+
+static const gsl_odeiv2_step_type central_imex_type = {"central-imex",
+                                                       0,
+                                                       0,
+                                                       central_alloc,
+                                                       central_imex_apply,
+                                                       central_set_driver,
+                                                       central_reset,
+                                                       central_order,
+                                                       central_free};
+
+const gsl_odeiv2_step_type *fr_step_central_imex(void)
+{
+    return &central_imex_type;
 }

@@ -30,16 +30,18 @@
  *
  * "central" is not GSL's: explicit central differences (central_step.c), one right-hand side
  * per step, for fixed steps of fricreg_sim only (no error estimate, and the stepper needs the
- * state layout (x, v, D)). */
+ * state layout (x, v, D)). "central-imex" is the same scheme with law (4)'s friction at the
+ * step's end solved implicitly, contact by contact (central_imex.c). */
+#include <math.h>
 #include <stddef.h>
 #include <string.h>
 
 #include "fricreg_sim.h"
 #include "integrator.h"
 
-#define ROW(ID, NAME, REAL, ZONE, IMAG, SUB, TOL)                       \
-    {                                                                   \
-        ID, #NAME, gsl_type_##NAME, REAL, ZONE, IMAG, SUB, TOL, NULL, 0 \
+#define ROW(ID, NAME, REAL, ZONE, IMAG, SUB, TOL)                          \
+    {                                                                      \
+        ID, #NAME, gsl_type_##NAME, REAL, ZONE, IMAG, SUB, TOL, NULL, 0, 0 \
     }
 
 /* gsl_odeiv2_step_* are data symbols; functions returning them keep the table constant. */
@@ -63,7 +65,7 @@ GSL_TYPE(msbdf)
 static const struct fr_integrator table[] = {
     ROW(FRICREG_INT_RK2, rk2, 2.5, 2.5, 1.73, 1, 1e-6),
     /* rk4: GSL's for adaptive steps, fricreg's classical RK4 for fixed ones (same numbers) */
-    {FRICREG_INT_RK4, "rk4", gsl_type_rk4, 2.78, 2.78, 2.82, 2, 1e-6, fr_step_rk4_classic, 0},
+    {FRICREG_INT_RK4, "rk4", gsl_type_rk4, 2.78, 2.78, 2.82, 2, 1e-6, fr_step_rk4_classic, 0, 0},
     ROW(FRICREG_INT_RKF45, rkf45, 3.6, 2.2, 0.7, 1, 1e-6),
     ROW(FRICREG_INT_RKCK, rkck, 3.7, 3.7, 0.88, 1, 1e-6),
     ROW(FRICREG_INT_RK8PD, rk8pd, 5.1, 5.1, 3.7, 1, 1e-6),
@@ -74,10 +76,14 @@ static const struct fr_integrator table[] = {
     ROW(FRICREG_INT_MSADAMS, msadams, 0.0, 0.0, 0.0, 1, 1e-6),
     ROW(FRICREG_INT_MSBDF, msbdf, 0.0, 0.0, 0.0, 1, 1e-6),
     /* GSL's rk4 for fixed steps too, for comparison */
-    {FRICREG_INT_RK4_GSL, "rk4-gsl", gsl_type_rk4, 2.78, 2.78, 2.82, 2, 1e-6, NULL, 0},
+    {FRICREG_INT_RK4_GSL, "rk4-gsl", gsl_type_rk4, 2.78, 2.78, 2.82, 2, 1e-6, NULL, 0, 0},
     /* central differences, fixed steps only: real axis (dt lambda) 1, imaginary axis
      * (dt omega) 2, jointly (dt omega/2)^2 + dt lambda < 1; the guard takes 0.9 (src/sim.c) */
-    {FRICREG_INT_CENTRAL, "central", fr_step_central, 1.0, 0.9, 2.0, 1, 1e-6, NULL, 1},
+    {FRICREG_INT_CENTRAL, "central", fr_step_central, 1.0, 0.9, 2.0, 1, 1e-6, NULL, 1, 0},
+    /* the same with law (4) implicit at the step's end: no stick-zone bound (infinite real
+     * axis), imaginary axis 2; the guard takes (dt omega/2)^2 < 0.9 (src/sim.c) */
+    {FRICREG_INT_CENTRAL_IMEX, "central-imex", fr_step_central_imex, INFINITY, INFINITY, 2.0, 1,
+     1e-6, NULL, 1, 1},
 };
 
 const struct fr_integrator *fr_integrator_find(int id)

@@ -32,6 +32,11 @@ struct fr_integrator {
      * layout (x, v, D), and one combined step bound (dt omega/2)^2 + dt lambda < 0.9 in place
      * of the three columns above (src/sim.c, check_central_step). */
     int central;
+    /* 1 for central differences with law (4) solved implicitly, per contact, at the step's end
+     * (central_imex.c): the stick zone then bounds no step's stability, and the guard is the
+     * springs', plus the reversal bound where the step does not resolve law (4)'s band
+     * (src/sim.c, check_central_imex_step). */
+    int implicit_friction;
 };
 
 /* rk4_classic.c: two classical RK4 steps per call, as GSL's rk4, with no error estimate. */
@@ -40,6 +45,10 @@ const gsl_odeiv2_step_type *fr_step_rk4_classic(void);
 /* central_step.c: explicit central differences (Newmark beta = 0, gamma = 1/2) on the state
  * (x[n], v[n], D) of dimension 2n + 1, one right-hand side per step; no error estimate. */
 const gsl_odeiv2_step_type *fr_step_central(void);
+
+/* central_step.c: the same scheme with the friction of the step's end solved implicitly
+ * (central_imex.c) where fricreg_sim allows it (fr_central_imex_refusal); no error estimate. */
+const gsl_odeiv2_step_type *fr_step_central_imex(void);
 
 /* The table row of an integrator id, or NULL if unknown. */
 const struct fr_integrator *fr_integrator_find(int id);

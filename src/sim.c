@@ -15,6 +15,7 @@
 #include <gsl/gsl_odeiv2.h>
 
 #include "fr_math.h"
+#include "central_imex.h"
 #include "integrator.h"
 #include "law.h"
 #include "ode_driver.h"
@@ -434,6 +435,43 @@ static int check_central_step(fricreg_sim *sim, double rate)
                     sim->dt, sum, CENTRAL_STEP_BOUND, omega, lambda, dt_max);
 }
 
+/* Central differences with implicit friction (central_imex.c): the friction's velocity term
+ * is the trapezoid's, stable at every dt lambda, so only the springs bound the step's
+ * stability, (dt omega/2)^2 < CENTRAL_STEP_BOUND (its margin as above). Energy is another
+ * matter: where dt lambda >= CENTRAL_STEP_BOUND the step no longer resolves law (4)'s band,
+ * (4) reverses within one step like a law that jumps, and the reversal bound applies
+ * (REVERSAL_STEP_BOUND). Measured without it (tests/test_guard.c's sweep): the oscillator
+ * with eps = 0.02 gained 0.45 of an energy scale of 3.8 at dt omega = 1.9, and with
+ * mun = 3, eps = 0.05 from dt omega = 1.42; the paper's eps = 2 dt (dt lambda = 1) gained
+ * from dt omega = 1.71. With the band resolved, dt lambda below the explicit scheme's own
+ * stick-zone bound, the sweep finds no energy put in up to the springs' bound (the chain at
+ * dt omega = 1.9). */
+static int check_central_imex_step(fricreg_sim *sim, double rate)
+{
+    double lambda = rate / sim->eps, omega = sim->sys.type->max_frequency(&sim->sys);
+    double half_p = 0.5 * sim->dt * omega, h = sim->dt * lambda;
+    if (!isfinite(lambda))
+        return sim_fail(sim, FRICREG_ESTEP,
+                        "run: the stick zone's stiffness, of order mun/eps, is beyond the "
+                        "double range for eps = %g: lower the bounds mun or raise eps",
+                        sim->eps);
+    if (!(half_p * half_p < CENTRAL_STEP_BOUND))
+        return sim_fail(sim, FRICREG_ESTEP,
+                        "run: dt = %g too large for central differences: (dt*omega/2)^2 = %g >= "
+                        "%g (omega = %g the highest frequency); reduce dt below %.6g",
+                        sim->dt, half_p * half_p, CENTRAL_STEP_BOUND, omega,
+                        2.0 * sqrt(CENTRAL_STEP_BOUND) / omega);
+    if (h >= CENTRAL_STEP_BOUND && sim->dt * omega > REVERSAL_STEP_BOUND)
+        return sim_fail(sim, FRICREG_ESTEP,
+                        "run: dt = %g, eps = %g: dt*lambda = %g >= %g leaves law (4)'s band "
+                        "unresolved, where dt*omega = %g > %g lets a friction reversal put "
+                        "energy in; reduce dt to %.6g or raise eps to %.6g",
+                        sim->dt, sim->eps, h, CENTRAL_STEP_BOUND, sim->dt * omega,
+                        REVERSAL_STEP_BOUND, REVERSAL_STEP_BOUND / omega,
+                        sim->dt * rate / CENTRAL_STEP_BOUND * (1.0 + 1e-9));
+    return FRICREG_OK;
+}
+
 /* A fixed explicit step must keep dt * lambda within the stepper's stick-zone bound, lambda
  * the context's stick-zone stiffness (fricreg_ctx_stick_stiffness: coupled contacts
  * included), and dt * omega_max within its imaginary-axis bound and within
@@ -441,6 +479,9 @@ static int check_central_step(fricreg_sim *sim, double rate)
  * springs: 2n). */
 static int check_step(fricreg_sim *sim, const struct fr_integrator *integ)
 {
+    const char *refusal = integ->implicit_friction ? fr_central_imex_refusal(sim) : NULL;
+    if (refusal != NULL) /* what the step solves, not a stability limit: never unguarded */
+        return sim_fail(sim, FRICREG_EINVAL, "run: integrator %s: %s", integ->name, refusal);
     if (adaptive(sim) || sim->unguarded || integ->stick_zone_bound == 0.0)
         return FRICREG_OK; /* implicit and multistep steppers report their own failures */
     double rate = 0.0;     /* lambda * eps (stiffness.h) */
@@ -452,6 +493,8 @@ static int check_step(fricreg_sim *sim, const struct fr_integrator *integ)
     if (law_jumps(sim->law) && sim->dt * lambda > CHORD_STEP_BOUND)
         return refuse_stick_zone(sim, "where a law that jumps chatters out of its band",
                                  CHORD_STEP_BOUND, rate);
+    if (integ->implicit_friction)
+        return check_central_imex_step(sim, rate);
     if (integ->central)
         return check_central_step(sim, rate);
     snprintf(what, sizeof what, "the stick-zone bound of %s", integ->name);

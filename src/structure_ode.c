@@ -171,8 +171,9 @@ int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, d
         return fr_sfail(s, FRICREG_EINVAL, "run_ode: unknown integrator %d", integrator);
     if (integ->central) /* its stepper knows fricreg_sim's state layout only */
         return fr_sfail(s, FRICREG_EINVAL,
-                        "run_ode: integrator central is fricreg_sim's; a structure has its "
-                        "own central difference (fricreg_structure_step)");
+                        "run_ode: integrator %s is fricreg_sim's; a structure has its "
+                        "own central difference (fricreg_structure_step)",
+                        integ->name);
     if (!isfinite(dt) || !isfinite(rtol) || !isfinite(atol) || !isfinite(t_end))
         return fr_sfail(s, FRICREG_ENONFINITE, "run_ode: dt, rtol, atol or t_end not finite");
     if (!(dt > 0.0) || rtol < 0.0 || atol < 0.0)

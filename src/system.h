@@ -57,6 +57,9 @@ struct fr_system_type {
      * (oscillator, chain), which saves a copy per right-hand side. */
     const double *(*contacts)(const struct fr_system *sys, double t, const double x[],
                               const double v[], double zdot_buf[], double a_free[]);
+    /* 1 where contacts() returns v itself (zdot = v, m = ndof: the contacts are the bodies)
+     * and W is diagonal; FRICREG_INT_CENTRAL_IMEX solves the friction body by body there. */
+    int contacts_are_bodies;
     /* The rest of the right-hand side once the friction forces f are known, in one pass
      * where the system allows: x' = v into dydt[0, ndof), the body accelerations into
      * dydt[ndof, 2 ndof), and the friction power sum_i zdot_i f_i as the return value. */

@@ -65,7 +65,7 @@ expect_usage_error "--law" oscillator --law sticky
 expect_usage_error "coulomb, force-balance, karnopp, velocity-limited, tanh, quinn" oscillator --law Quinn
 expect_usage_error "rk2, rk4, rkf45, rkck, rk8pd, rk1imp, rk2imp, rk4imp, bsimp, msadams, msbdf" chain --integrator rk45
 expect_output '^  --law coulomb\|force-balance\|karnopp\|velocity-limited\|tanh\|quinn +\[quinn\]$' --help
-expect_output '^  --integrator rk2\|rk4\|rkf45\|rkck\|rk8pd\|rk1imp\|rk2imp\|rk4imp\|bsimp\|msadams\|msbdf\|rk4-gsl\|central \[rk4\]$' --help
+expect_output '^  --integrator rk2\|rk4\|rkf45\|rkck\|rk8pd\|rk1imp\|rk2imp\|rk4imp\|bsimp\|msadams\|msbdf\|rk4-gsl\|central\|central-imex \[rk4\]$' --help
 for law in coulomb force-balance karnopp velocity-limited tanh quinn; do
     expect_output "\"law\": \"$law\"" oscillator --law "$law" --t-end 0.5
 done

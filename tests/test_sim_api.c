@@ -204,8 +204,9 @@ START_TEST(test_set_integrator_rejects_bad_settings)
         int code;
     } bad[] = {
         {0, 0.01, 0.0, 0.0, FRICREG_EINVAL},
-        {14, 0.01, 0.0, 0.0, FRICREG_EINVAL},
-        {FRICREG_INT_CENTRAL, 0.01, 1e-6, 0.0, FRICREG_EINVAL}, /* fixed steps only */
+        {15, 0.01, 0.0, 0.0, FRICREG_EINVAL},
+        {FRICREG_INT_CENTRAL_IMEX, 0.01, 0.0, 1e-8, FRICREG_EINVAL}, /* fixed steps only */
+        {FRICREG_INT_CENTRAL, 0.01, 1e-6, 0.0, FRICREG_EINVAL},      /* fixed steps only */
         {FRICREG_INT_RK4, 0.0, 0.0, 0.0, FRICREG_EINVAL},
         {FRICREG_INT_RK4, -0.01, 0.0, 0.0, FRICREG_EINVAL},
         {FRICREG_INT_RKF45, 0.01, -1e-6, 1e-8, FRICREG_EINVAL},
@@ -589,7 +590,8 @@ START_TEST(test_integrator_names_round_trip)
     ck_assert_ptr_null(fricreg_integrator_name(0));
     ck_assert_str_eq(fricreg_integrator_name(FRICREG_INT_RK4_GSL), "rk4-gsl");
     ck_assert_str_eq(fricreg_integrator_name(FRICREG_INT_CENTRAL), "central");
-    ck_assert_ptr_null(fricreg_integrator_name(14));
+    ck_assert_str_eq(fricreg_integrator_name(FRICREG_INT_CENTRAL_IMEX), "central-imex");
+    ck_assert_ptr_null(fricreg_integrator_name(15));
     ck_assert_int_eq(fricreg_integrator_from_name("rk5"), 0);
     ck_assert_int_eq(fricreg_integrator_from_name("RK4"), 0);
     ck_assert_int_eq(fricreg_integrator_from_name(""), 0);

@@ -50,14 +50,14 @@ static int parse_rayleigh(const char *text, struct structure_options *o)
 }
 
 /* The library's integrators that --integrator runs through fricreg_structure_run_ode, each
- * after ", ", into buf[len]: all but "central", which names the structure's own central
- * differences here (listed once, with newmark and hht, not again as a stepper). */
+ * after ", ", into buf[len]: all but fricreg_sim's "central" and "central-imex"; "central"
+ * names the structure's own central differences here (listed once, with newmark and hht). */
 static const char *gsl_stepper_names(char *buf, size_t len)
 {
     size_t used = 0;
     buf[0] = '\0';
     for (int k = 1; fricreg_integrator_name(k) != NULL && used < len; k++)
-        if (strcmp(fricreg_integrator_name(k), "central") != 0)
+        if (strncmp(fricreg_integrator_name(k), "central", strlen("central")) != 0)
             used += (size_t)snprintf(buf + used, len - used, ", %s", fricreg_integrator_name(k));
     return buf;
 }

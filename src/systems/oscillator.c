@@ -104,6 +104,7 @@ const struct fr_system_type fr_oscillator_type = {
     .configure = configure,
     .initial = initial,
     .contacts = contacts,
+    .contacts_are_bodies = 1,
     .bodies = bodies,
     .contact_maps = contact_maps,
     .body_maps = body_maps,
