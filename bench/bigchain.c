@@ -9,7 +9,8 @@
  * RK4 at dt = 0.35/n and 0.175/n; the implicit prototype of chain_implicit.c (Newmark, Newton
  * on a tridiagonal matrix, law (4) at eps = 1e-4) at dt = 1e-3 and 2.5e-4; the explicit
  * central differences of chain_explicit.c at dt = 0.35/n and 0.9/n; the library's
- * (FRICREG_INT_CENTRAL) at 0.5/n … 0.8/n on its guard's bound; and CVODE Adams at
+ * (FRICREG_INT_CENTRAL) at 0.5/n … 0.8/n on its guard's bound, and with law (4) implicit
+ * (FRICREG_INT_CENTRAL_IMEX) at 0.5/n … 0.94/n, eps = 2.5 dt; and CVODE Adams at
  * rtol 1e-4, 1e-6, 1e-8, each stopped at a CPU cap of CVODE_CAP seconds (the message says how
  * far it got). Above n = 2000 (10^4) only what fits in minutes: the reference is RK4 at
  * 0.35/n itself, the implicit prototype runs at 1e-3 only, CVODE at 1e-6 only, capped at
@@ -142,6 +143,21 @@ static int one_n(size_t n, FILE *csv)
         record(&rows[nr++], "central/quinn(4)", h, t0, &run, ref);
         snprintf(rows[nr - 1].msg, sizeof rows[nr - 1].msg, "fricreg_sim; eps = %.3g dt%s%.100s",
                  eps_dt, run.status == FRICREG_OK ? "" : ": ", run.msg);
+    }
+    /* Central differences with law (4) implicit (FRICREG_INT_CENTRAL_IMEX): the stick zone no
+     * longer bounds the step, only the springs, (dt*2n/2)^2 < 0.9, dt*n < 0.949; eps = 2.5 dt
+     * keeps law (4)'s band resolved (dt*lambda = 0.8 < 0.9), where the guard needs no
+     * friction-reversal bound. */
+    static const double imex_dts[4] = {0.5, 0.7, 0.9, 0.94};
+    for (int k = 0; k < 4; k++) {
+        double h = imex_dts[k] / (double)n;
+        struct bench_sim_point pt = {
+            &p, FRICREG_LAW_QUINN, FRICREG_INT_CENTRAL_IMEX, h, 0.0, 2.5 * h, 0, 0, 0, 0};
+        t0 = bench_cpu_seconds();
+        bench_sim_run(&pt, &run);
+        record(&rows[nr++], "central-imex/quinn(4)", h, t0, &run, ref);
+        snprintf(rows[nr - 1].msg, sizeof rows[nr - 1].msg, "fricreg_sim; eps = 2.5 dt%s%.100s",
+                 run.status == FRICREG_OK ? "" : ": ", run.msg);
     }
 #ifdef FRICREG_BENCH_CVODE
     static const double rtols[3] = {1e-4, 1e-6, 1e-8};

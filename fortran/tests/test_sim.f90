@@ -53,6 +53,8 @@ program test_sim
   call check(fricreg_integrator_string(FRICREG_INT_RK4) == 'rk4', 'integrator 2 is rk4')
   call check(fricreg_integrator_string(99_c_int) == '', 'integrator 99 has no name')
   call check(fricreg_integrator_id('msbdf') == FRICREG_INT_MSBDF, 'msbdf is FRICREG_INT_MSBDF')
+  call check(fricreg_integrator_id('central-imex') == FRICREG_INT_CENTRAL_IMEX, &
+             'central-imex is FRICREG_INT_CENTRAL_IMEX')
   call check(fricreg_integrator_id('rk4  ') == FRICREG_INT_RK4, 'trailing blanks ignored')
   call check(fricreg_integrator_id('euler') == 0, 'no integrator euler')
 
