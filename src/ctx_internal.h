@@ -73,6 +73,14 @@ double fr_stribeck_bound_slope(const fricreg_ctx *ctx, size_t i, double v);
 void fr_stribeck_refresh(fricreg_ctx *ctx);
 void fr_stribeck_off(fricreg_ctx *ctx);
 
+/* partition.c: fricreg_ctx_eval of m = ctx->m contacts without the finiteness pass, for a
+ * caller that checks what it makes of f instead (fricreg_sim's fixed explicit steps, whose
+ * state is checked after every step: a non-finite input carries into it through a_free or
+ * zdot). With a diagonal W or a law that does not read f_eq and without Stribeck friction;
+ * otherwise (the dense solve's range checks need finite inputs) fricreg_ctx_eval itself. The
+ * status of fricreg_ctx_eval; FRICREG_OK on the unchecked path. */
+int fr_ctx_eval_unchecked(fricreg_ctx *ctx, const double zdot[], const double a_free[], double f[]);
+
 /* Records a failure (code and printf-style message) in the context and returns the code. */
 #define fr_fail(ctx, ...) fr_error_set(&(ctx)->err, __VA_ARGS__)
 

@@ -295,3 +295,16 @@ int fricreg_ctx_eval(fricreg_ctx *ctx, size_t m, const double zdot[], const doub
     ctx->stats[FRICREG_STAT_FEQ_CONTACTS] += (int64_t)ctx->n_stick;
     return FRICREG_OK;
 }
+
+int fr_ctx_eval_unchecked(fricreg_ctx *ctx, const double zdot[], const double a_free[], double f[])
+{
+    if (ctx->stribeck || (ctx->W != NULL && fr_law_uses_feq(ctx->law)))
+        return fricreg_ctx_eval(ctx, ctx->m, zdot, a_free, f, NULL);
+    if (fr_law_uses_feq(ctx->law))
+        eval_diagonal(ctx, zdot, a_free, f, NULL);
+    else
+        eval_without_feq(ctx, zdot, a_free, f, NULL);
+    ctx->stats[FRICREG_STAT_EVALS]++;
+    ctx->stats[FRICREG_STAT_FEQ_CONTACTS] += (int64_t)ctx->n_stick;
+    return FRICREG_OK;
+}

@@ -16,6 +16,7 @@
 
 #include "fr_math.h"
 #include "central_imex.h"
+#include "ctx_internal.h"
 #include "integrator.h"
 #include "law.h"
 #include "ode_driver.h"
@@ -234,6 +235,8 @@ static int eval_friction(fricreg_sim *sim, double t, const double y[], int want_
 {
     const double *x = y, *v = y + sim->ndof;
     sim->zdot = sim->sys.type->contacts(&sim->sys, t, x, v, sim->zdot_buf, sim->a_free);
+    if (sim->unchecked_eval && !want_feq)
+        return fr_ctx_eval_unchecked(sim->ctx, sim->zdot, sim->a_free, sim->f);
     return fricreg_ctx_eval(sim->ctx, sim->m, sim->zdot, sim->a_free, sim->f,
                             want_feq ? sim->f_eq : NULL);
 }
@@ -726,7 +729,9 @@ int fricreg_sim_run(fricreg_sim *sim, double t_end)
     if (d == NULL)
         return sim_fail(sim, FRICREG_ENOMEM, "run: GSL driver allocation failed");
     sim->running = 1;
+    sim->unchecked_eval = !adaptive(sim) && (integ->central || integ->fixed_type != NULL);
     status = integrate(sim, d, integ, t_end, cycles);
+    sim->unchecked_eval = 0;
     sim->running = 0;
     sim->rejected_steps += (int64_t)d->e->failed_steps; /* the adaptive control's rejections */
     gsl_odeiv2_driver_free(d);

@@ -53,6 +53,11 @@ struct fricreg_sim {
      * stick_time, so after_step skips its two passes over the state. */
     int step_checked;
     size_t step_diverged;
+    /* Set for the run of a fixed step of fricreg's own explicit steppers (rk4, central), which
+     * never fail a step and whose state after_step checks: the right-hand side then skips the
+     * context's finiteness pass (fr_ctx_eval_unchecked), a non-finite input reaching the
+     * state instead. */
+    int unchecked_eval;
 
     /* extrapolate.c's window (fricreg_sim_run_extrapolated_window), kept across free_run: a
      * run that starts at the end of cycle start_cycle from the state start_y (x, v; D starts
