@@ -10,7 +10,8 @@
  *     0.2 of 2 on the last three halvings (measured 2.00, 2.00, 2.02; 3.1e-6 at dt = 0.000625);
  *   - the chain (n = 32, eps = 0.01): D per cycle equal to classical RK4's at dt = 0.00025 (its
  *     own error ~1e-9 relative: RK4 at 0.0005 differs by 1e-9) to 1e-5 relative at
- *     dt = 0.0005 (measured 4.6e-6), and falling at about second order from dt = 0.002;
+ *     dt = 0.0005 (measured 4.6e-6; FRICREG_INT_CENTRAL_IMEX, checked alike, 6.1e-6), and
+ *     falling at about second order from dt = 0.002;
  *   - the two blocks (eps = 0.01): D per cycle within 1e-6 relative of RK4's at dt = 0.00025
  *     at dt = 0.0005 (measured 1.3e-7);
  *   - one right-hand side per step, plus one at t = 0;
@@ -36,33 +37,8 @@
 #include "fricreg_exact.h"
 #include "fricreg_sim.h"
 #include "fricreg_structure.h"
+#include "sim_runs.h"
 #include "sim_internal.h"
-
-static fricreg_sim *make(int system, int integrator, double dt, double eps)
-{
-    fricreg_sim *sim = NULL;
-    ck_assert_int_eq(fricreg_sim_create(system, &sim), FRICREG_OK);
-    ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_QUINN, eps), FRICREG_OK);
-    ck_assert_int_eq(fricreg_sim_set_integrator(sim, integrator, dt, 0.0, 0.0), FRICREG_OK);
-    return sim;
-}
-
-static fricreg_sim *sticking_oscillator(double dt, double eps)
-{
-    fricreg_sim *sim = make(FRICREG_SYSTEM_OSCILLATOR, FRICREG_INT_CENTRAL, dt, eps);
-    ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_A, 2.0), FRICREG_OK);
-    ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_OMEGA, 0.5), FRICREG_OK);
-    return sim;
-}
-
-/* D of the first `cycles` cycles into D[]; returns the run's status. */
-static int dissipation(fricreg_sim *sim, int cycles, double D[])
-{
-    int status = fricreg_sim_run_cycles(sim, cycles);
-    if (status == FRICREG_OK)
-        ck_assert_int_eq(fricreg_sim_get_dissipation(sim, (size_t)cycles, D), FRICREG_OK);
-    return status;
-}
 
 START_TEST(oscillator_second_order_against_exact)
 {
@@ -78,9 +54,9 @@ START_TEST(oscillator_second_order_against_exact)
     enum { LEVELS = 5 };
     double err[LEVELS], dt = 0.01;
     for (int k = 0; k < LEVELS; k++, dt /= 2.0) {
-        fricreg_sim *sim = sticking_oscillator(dt, 4.0 * dt);
+        fricreg_sim *sim = sim_runs_sticking_oscillator(FRICREG_INT_CENTRAL, dt, 4.0 * dt);
         double D = 0.0;
-        ck_assert_int_eq(dissipation(sim, 1, &D), FRICREG_OK);
+        ck_assert_int_eq(sim_runs_dissipation(sim, 1, &D), FRICREG_OK);
         err[k] = fabs(D - D_exact[0]);
         fricreg_sim_free(sim);
     }
@@ -98,16 +74,13 @@ START_TEST(oscillator_second_order_against_exact)
 }
 END_TEST
 
-START_TEST(chain_equals_rk4_at_a_fine_step)
+/* The chain by `integrator` at dt = 0.002, 0.001, 0.0005 against rk4's D per cycle ref[2]. */
+static void chain_against_rk4(int integrator, const double ref[2])
 {
-    double ref[2], D[2];
-    fricreg_sim *sim = make(FRICREG_SYSTEM_CHAIN, FRICREG_INT_RK4, 0.00025, 0.01);
-    ck_assert_int_eq(dissipation(sim, 2, ref), FRICREG_OK);
-    fricreg_sim_free(sim);
-    double rel[3], dt = 0.002;
+    double rel[3], dt = 0.002, D[2];
     for (int k = 0; k < 3; k++, dt /= 2.0) {
-        sim = make(FRICREG_SYSTEM_CHAIN, FRICREG_INT_CENTRAL, dt, 0.01);
-        ck_assert_int_eq(dissipation(sim, 2, D), FRICREG_OK);
+        fricreg_sim *sim = sim_runs_make(FRICREG_SYSTEM_CHAIN, integrator, dt, 0.01);
+        ck_assert_int_eq(sim_runs_dissipation(sim, 2, D), FRICREG_OK);
         rel[k] = fmax(fabs(D[0] / ref[0] - 1.0), fabs(D[1] / ref[1] - 1.0));
         int64_t steps = 0, rhs = 0;
         ck_assert_int_eq(fricreg_sim_get_stat(sim, FRICREG_SIM_STAT_STEPS, &steps), FRICREG_OK);
@@ -115,18 +88,28 @@ START_TEST(chain_equals_rk4_at_a_fine_step)
         ck_assert_int_eq(rhs, steps + 1); /* one friction evaluation per step */
         fricreg_sim_free(sim);
     }
-    printf("central, chain n = 32, eps = 0.01: D per cycle against rk4 at dt = 0.00025, relative "
+    printf("%s, chain n = 32, eps = 0.01: D per cycle against rk4 at dt = 0.00025, relative "
            "%.3g, %.3g, %.3g at dt = 0.002, 0.001, 0.0005\n",
-           rel[0], rel[1], rel[2]);
+           fricreg_integrator_name(integrator), rel[0], rel[1], rel[2]);
     ck_assert_double_lt(rel[2], 1e-5);
     ck_assert_double_gt(rel[0] / rel[2], 8.0); /* second order: 16 over two halvings */
+}
+
+START_TEST(chain_equals_rk4_at_a_fine_step)
+{
+    double ref[2], D[2];
+    fricreg_sim *sim = sim_runs_make(FRICREG_SYSTEM_CHAIN, FRICREG_INT_RK4, 0.00025, 0.01);
+    ck_assert_int_eq(sim_runs_dissipation(sim, 2, ref), FRICREG_OK);
+    fricreg_sim_free(sim);
+    chain_against_rk4(FRICREG_INT_CENTRAL, ref);
+    chain_against_rk4(FRICREG_INT_CENTRAL_IMEX, ref); /* law (4) implicit (central_imex.c) */
 
     /* the two blocks (coupled W), eps = 0.01: central at dt = 0.0005 against rk4 at 0.00025 */
-    sim = make(FRICREG_SYSTEM_TWOBLOCK, FRICREG_INT_RK4, 0.00025, 0.01);
-    ck_assert_int_eq(dissipation(sim, 2, ref), FRICREG_OK);
+    sim = sim_runs_make(FRICREG_SYSTEM_TWOBLOCK, FRICREG_INT_RK4, 0.00025, 0.01);
+    ck_assert_int_eq(sim_runs_dissipation(sim, 2, ref), FRICREG_OK);
     fricreg_sim_free(sim);
-    sim = make(FRICREG_SYSTEM_TWOBLOCK, FRICREG_INT_CENTRAL, 0.0005, 0.01);
-    ck_assert_int_eq(dissipation(sim, 2, D), FRICREG_OK);
+    sim = sim_runs_make(FRICREG_SYSTEM_TWOBLOCK, FRICREG_INT_CENTRAL, 0.0005, 0.01);
+    ck_assert_int_eq(sim_runs_dissipation(sim, 2, D), FRICREG_OK);
     fricreg_sim_free(sim);
     double rel2 = fmax(fabs(D[0] / ref[0] - 1.0), fabs(D[1] / ref[1] - 1.0));
     printf("central, two blocks, eps = 0.01, dt = 0.0005: D per cycle against rk4, relative "
@@ -155,7 +138,7 @@ static int watch_stick(void *user, double t, size_t ndof, const double x[], cons
 START_TEST(chain_stick_fraction_equals_the_observers)
 {
     struct stick_watch w = {.eps = 0.01};
-    fricreg_sim *sim = make(FRICREG_SYSTEM_CHAIN, FRICREG_INT_CENTRAL, 0.001, w.eps);
+    fricreg_sim *sim = sim_runs_make(FRICREG_SYSTEM_CHAIN, FRICREG_INT_CENTRAL, 0.001, w.eps);
     ck_assert_int_eq(fricreg_sim_set_observer(sim, watch_stick, &w), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_run_cycles(sim, 1), FRICREG_OK);
     double frac[32], T = 4.0 * 3.14159265358979323846, sticking = 0.0; /* omega = 0.5 */
@@ -179,13 +162,13 @@ static double dt_max(double lambda, double omega)
  * the stick zone's screening of them by f_eq, set the motion at its highest frequency. */
 static int run_at(int system, double n, double dt, double eps, int guarded, double *D)
 {
-    fricreg_sim *sim = make(system, FRICREG_INT_CENTRAL, dt, eps);
+    fricreg_sim *sim = sim_runs_make(system, FRICREG_INT_CENTRAL, dt, eps);
     if (system == FRICREG_SYSTEM_CHAIN) {
         ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_N, n), FRICREG_OK);
         ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_A, 5.0), FRICREG_OK);
     }
     sim->unguarded = !guarded;
-    int status = dissipation(sim, 1, D);
+    int status = sim_runs_dissipation(sim, 1, D);
     if (status == FRICREG_ESTEP) { /* refused before any step */
         double t = -1.0;
         ck_assert_int_eq(fricreg_sim_get_value(sim, FRICREG_VALUE_TIME, &t), FRICREG_OK);
@@ -225,7 +208,8 @@ START_TEST(guard_at_and_beyond_the_bound)
      * shortened: with 2 pi cycles, 1.98 grew to 8e26 (src/sim.c, CENTRAL_STEP_BOUND). */
     for (int k = 0; k < 2; k++) {
         double step = k ? 2.1 : 1.98;
-        fricreg_sim *sim = make(FRICREG_SYSTEM_OSCILLATOR, FRICREG_INT_CENTRAL, step, 0.05);
+        fricreg_sim *sim = sim_runs_make(FRICREG_SYSTEM_OSCILLATOR, FRICREG_INT_CENTRAL, step,
+                                         0.05);
         ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_MUN, 0.0), FRICREG_OK);
         ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_OMEGA,
                                                2.0 * 3.14159265358979323846 / (32.0 * step)),
@@ -247,7 +231,7 @@ END_TEST
 
 START_TEST(adaptive_tolerances_refused)
 {
-    fricreg_sim *sim = make(FRICREG_SYSTEM_OSCILLATOR, FRICREG_INT_RK4, 0.02, 0.0);
+    fricreg_sim *sim = sim_runs_make(FRICREG_SYSTEM_OSCILLATOR, FRICREG_INT_RK4, 0.02, 0.0);
     ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_CENTRAL, 0.01, 1e-6, 0.0),
                      FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_CENTRAL, 0.01, 0.0, 1e-8),
@@ -259,7 +243,7 @@ START_TEST(adaptive_tolerances_refused)
     fricreg_sim_free(sim);
 
     /* the paper's eps = 2 dt: dt*lambda = 2 mun/2 = 1 at every dt, refused with the eps */
-    sim = make(FRICREG_SYSTEM_OSCILLATOR, FRICREG_INT_CENTRAL, 0.01, 0.0);
+    sim = sim_runs_make(FRICREG_SYSTEM_OSCILLATOR, FRICREG_INT_CENTRAL, 0.01, 0.0);
     ck_assert_int_eq(fricreg_sim_run_cycles(sim, 1), FRICREG_ESTEP);
     ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "at every dt; set eps >="));
     fricreg_sim_free(sim);
