@@ -73,6 +73,7 @@ int fricreg_ctx_create(size_t m, fricreg_ctx **out)
     ctx->w_unit = 1;
     ctx->bound = ctx->mun;
     ctx->keep_tangent = 1;
+    ctx->coded_from = FR_CODED_TANGENT_FROM;
     *out = ctx;
     return FRICREG_OK;
 }

@@ -15,6 +15,11 @@
 
 #define FR_NSTATS 6
 #define FR_MAX_CONTACTS ((size_t)1 << 26)
+/* From this many contacts the diagonal pass keeps the tangent's codes, not its inputs. The
+ * codes cost compute, the copies memory traffic: in cache (m = 10^3) the codes made
+ * fricreg_ctx_eval 1.8x slower, out of it (m = 10^6, 48 MB) the copies 1.45x
+ * (bench/kernels.c). 2^16 contacts are 3 MB of arrays, beyond a core's L2. */
+#define FR_CODED_TANGENT_FROM ((size_t)1 << 16)
 
 struct fricreg_ctx {
     size_t m;
@@ -45,7 +50,13 @@ struct fricreg_ctx {
     double *last_zdot;  /* [m] */
     double *last_afree; /* [m] */
     int last_valid;     /* an evaluation succeeded since the last setter call */
-    int keep_tangent;   /* eval keeps last_zdot, last_afree (fricreg_ctx_set_keep_tangent) */
+    /* The diagonal pass kept, in last_afree, fr_near_tangent_code's code per contact instead
+     * of the inputs (a diagonal W, a law that reads f_eq, no Stribeck friction): one stream
+     * written instead of two (partition.c). It does so from coded_from contacts on
+     * (FR_CODED_TANGENT_FROM; tests set 0 to check the codes at a small m). */
+    int last_coded;
+    size_t coded_from;
+    int keep_tangent; /* eval keeps last_zdot, last_afree (fricreg_ctx_set_keep_tangent) */
 
     /* Stribeck friction (fricreg_ctx_set_stribeck, ctx_stribeck.c): allocated at the first
      * set-up, kept when cleared. */

@@ -101,6 +101,35 @@ static inline void fr_box(double c, double mun, double *lo, double *hi)
     *hi = mun * (1.0 - fmax(c, 0.0));
 }
 
+/* The piece of clamp(f_eq - c mun, lo, hi) (fr_box) a contact's force lies on: 1 held at hi,
+ * -1 held at lo, 0 free; a value exactly on a bound is held there (the tangent's rule). Made
+ * of selects between values computed unconditionally, and a double, not an int, so that the
+ * diagonal pass vectorizes with it (partition.c; GCC does not if-convert arithmetic under a
+ * condition, which may trap). */
+static inline double fr_box_piece(double c, double f_eq, double mun)
+{
+    /* fr_box's lo and hi as min/max of the shifted bounds (mun >= 0): the same values */
+    double shifted_hi = mun * (1.0 - c), shifted_lo = -mun * (1.0 + c);
+    double hi = shifted_hi < mun ? shifted_hi : mun, lo = shifted_lo > -mun ? shifted_lo : -mun;
+    double y = f_eq - c * mun, held_lo = y <= lo ? -1.0 : 0.0;
+    return y >= hi ? 1.0 : held_lo;
+}
+
+/* The diagonal tangent of a near-stick contact with a constant bound, as one number the
+ * diagonal pass keeps in place of the evaluation's inputs (fricreg_ctx_tangent, tangent.c):
+ * 1 when d f/d zdot = -mun dc (dc = 2/eps for (4), else 0), plus 2 when d f/d f_eq = 1
+ * (free). On a bound the slope is d hi/dc or d lo/dc (fr_box_slopes): -mun for c >= 0 at hi,
+ * for c < 0 at lo. A sliding contact of (2), (4) or Karnopp has slope 0: its code is 0, which
+ * the pass selects (partition.c). */
+static inline double fr_near_tangent_code(double c, double f_eq, double mun)
+{
+    double piece = fr_box_piece(c, f_eq, mun);
+    double at_hi_slope = c >= 0.0 ? 1.0 : 0.0, at_lo_slope = c < 0.0 ? 1.0 : 0.0;
+    double held_slope = piece > 0.0 ? at_hi_slope : at_lo_slope;
+    double slope_on = piece == 0.0 ? 1.0 : held_slope;
+    return slope_on + (piece == 0.0 ? 2.0 : 0.0);
+}
+
 /* d lo/dc and d hi/dc; at the kink c = 0, the side c > 0 (the tangent's convention). */
 static inline void fr_box_slopes(double c, double mun, double *dlo, double *dhi)
 {

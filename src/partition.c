@@ -104,32 +104,46 @@ static inline uint64_t bits_of(double x)
         n_near += (bits_of(fabs(v)) - band) >> 63;      \
     }
 #define KEEP_INPUTS (last_zdot[i] = v, last_afree[i] = a)
+/* The code of fr_near_tangent_code where near, else 0: computed for every contact, then
+ * selected (GCC does not vectorize arithmetic under a condition, which may trap). */
+static inline double tangent_code(int near, double c, double feq, double mun)
+{
+    double code = fr_near_tangent_code(c, feq, mun);
+    return near ? code : 0.0;
+}
+#define KEEP_CODE(NEAR) (last_afree[i] = tangent_code((NEAR), v * dc, feq, mun[i]))
 #define DIAGONAL_OUT(FEQ, NEAR, FORCE, KEEP)                          \
     if (f_eq)                                                         \
         DIAGONAL_LOOP(FEQ, FORCE, f_eq[i] = (NEAR) ? feq : NAN, KEEP) \
     else                                                              \
         DIAGONAL_LOOP(FEQ, FORCE, (void)0, KEEP)
-/* W = I needs no division: -a_free,i / 1 is -a_free,i exactly. */
-#define DIAGONAL_CASE(NEAR, FORCE)                    \
-    if (w_unit && !keep)                              \
-        DIAGONAL_OUT(-a, NEAR, FORCE, (void)0)        \
-    else if (w_unit)                                  \
-        DIAGONAL_OUT(-a, NEAR, FORCE, KEEP_INPUTS)    \
-    else if (!keep)                                   \
-        DIAGONAL_OUT(-a / w[i], NEAR, FORCE, (void)0) \
-    else                                              \
+/* W = I needs no division: -a_free,i / 1 is -a_free,i exactly. The tangent's inputs: none,
+ * its code (last_zdot NULL, last_afree not), or both inputs. */
+#define DIAGONAL_CASE(NEAR, FORCE)                            \
+    if (w_unit && !keep)                                      \
+        DIAGONAL_OUT(-a, NEAR, FORCE, (void)0)                \
+    else if (w_unit && coded)                                 \
+        DIAGONAL_OUT(-a, NEAR, FORCE, KEEP_CODE(NEAR))        \
+    else if (w_unit)                                          \
+        DIAGONAL_OUT(-a, NEAR, FORCE, KEEP_INPUTS)            \
+    else if (!keep)                                           \
+        DIAGONAL_OUT(-a / w[i], NEAR, FORCE, (void)0)         \
+    else if (coded)                                           \
+        DIAGONAL_OUT(-a / w[i], NEAR, FORCE, KEEP_CODE(NEAR)) \
+    else                                                      \
         DIAGONAL_OUT(-a / w[i], NEAR, FORCE, KEEP_INPUTS)
 
-/* The pass for law (known, reading f_eq) on m contacts; returns |S|. With last_zdot NULL the
- * tangent's inputs are not kept (fricreg_ctx_set_keep_tangent); w_unit: W = I. */
+/* The pass for law (known, reading f_eq) on m contacts; returns |S|. The tangent's inputs:
+ * with last_afree NULL none (fricreg_ctx_set_keep_tangent), with last_zdot NULL the codes of
+ * fr_near_tangent_code (a constant bound: mun), else both inputs; w_unit: W = I. */
 FR_KERNEL_BODY size_t diagonal_loops(int law, double eps, size_t m, const double zdot[],
                                      const double a_free[], const double w[], int w_unit,
                                      const double mun[], double f[], double f_eq[],
                                      double *restrict last_zdot, double *restrict last_afree)
 {
     uint64_t n_near = 0, band = bits_of(law == FRICREG_LAW_FORCE_BALANCE ? 0x1p-1074 : eps);
-    double k = fr_band_scale(eps);
-    int keep = last_zdot != NULL;
+    double k = fr_band_scale(eps), dc = law == FRICREG_LAW_QUINN ? 2.0 / eps : 0.0;
+    int keep = last_afree != NULL, coded = last_zdot == NULL;
     switch (law) {
     case FRICREG_LAW_QUINN: DIAGONAL_CASE(fabs(v) < eps, fr_quinn_band(v * k, feq, mun[i])) break;
     case FRICREG_LAW_KARNOPP: DIAGONAL_CASE(fabs(v) < eps, fr_karnopp(v, feq, mun[i], eps)) break;
@@ -169,11 +183,12 @@ static size_t diagonal_pass(int law, double eps, size_t m, const double zdot[],
 static void eval_diagonal(fricreg_ctx *ctx, const double zdot[], const double a_free[], double f[],
                           double f_eq[])
 {
-    int keep = ctx->keep_tangent;
+    int keep = ctx->keep_tangent, coded = keep && !ctx->stribeck && ctx->m >= ctx->coded_from;
     ctx->n_stick = diagonal_pass(ctx->law, ctx->eps, ctx->m, zdot, a_free, ctx->w_diag, ctx->w_unit,
-                                 ctx->bound, f, f_eq, keep ? ctx->last_zdot : NULL,
+                                 ctx->bound, f, f_eq, keep && !coded ? ctx->last_zdot : NULL,
                                  keep ? ctx->last_afree : NULL);
     ctx->last_valid = keep;
+    ctx->last_coded = coded;
 }
 
 /* The largest |f_eq,i| a dense solve is given: beyond it the solve's amplification (up to the
@@ -241,6 +256,7 @@ static int eval_dense(fricreg_ctx *ctx, const double zdot[], const double a_free
 static void remember_inputs(fricreg_ctx *ctx, const double zdot[], const double a_free[])
 {
     ctx->last_valid = ctx->keep_tangent;
+    ctx->last_coded = 0;
     if (!ctx->keep_tangent)
         return;
     memcpy(ctx->last_zdot, zdot, ctx->m * sizeof *zdot);

@@ -57,11 +57,9 @@ static void near_slopes(const fricreg_ctx *ctx, double v, double feq, double mun
                         double *dv, double *dfeq)
 {
     double dc = ctx->law == FRICREG_LAW_QUINN ? 2.0 / ctx->eps : 0.0, c = v * dc;
-    double lo, hi, dlo, dhi;
-    fr_box(c, mun, &lo, &hi);
+    double dlo, dhi, piece = fr_box_piece(c, feq, mun);
     fr_box_slopes(c, mun, &dlo, &dhi);
-    double y = feq - c * mun;
-    int at_hi = y >= hi, at_lo = !at_hi && y <= lo;
+    int at_hi = piece > 0.0, at_lo = piece < 0.0;
     *dfeq = at_hi || at_lo ? 0.0 : 1.0;
     *dv = (at_hi ? dhi : at_lo ? dlo : -mun) * dc + dmun * box_bound_weight(at_hi, at_lo, c);
 }
@@ -73,13 +71,25 @@ static double off_band_slope(const fricreg_ctx *ctx, size_t i, double v)
     return slip_slope(ctx->law, v, ctx->bound[i], ctx->eps) + fr_coulomb(v, bound_slope(ctx, i, v));
 }
 
-/* Laws without f_eq, or a diagonal W: one contact at a time, the diagonals only. */
+/* The slopes of fr_near_tangent_code's code, kept by the diagonal pass (partition.c) for a
+ * contact of bound mun: near_slopes' values without the evaluation's inputs. */
+static void coded_slopes(const fricreg_ctx *ctx, double code, double mun, double *dv, double *dfeq)
+{
+    double dc = ctx->law == FRICREG_LAW_QUINN ? 2.0 / ctx->eps : 0.0;
+    *dv = (code == 1.0 || code == 3.0 ? -mun : 0.0) * dc;
+    *dfeq = code >= 2.0 ? 1.0 : 0.0;
+}
+
+/* Laws without f_eq, or a diagonal W: one contact at a time, the diagonals only; from the
+ * codes the diagonal pass kept (ctx->last_coded) or from the evaluation's inputs. */
 static void tangent_diagonal(const fricreg_ctx *ctx, double dz[], double da[])
 {
     size_t m = ctx->m;
     for (size_t i = 0; i < m; i++) {
-        double v = ctx->last_zdot[i], dv, dfeq = 0.0;
-        if (fr_needs_feq(ctx->law, v, ctx->eps))
+        double v = ctx->last_coded ? 0.0 : ctx->last_zdot[i], dv, dfeq = 0.0;
+        if (ctx->last_coded)
+            coded_slopes(ctx, ctx->last_afree[i], ctx->bound[i], &dv, &dfeq);
+        else if (fr_needs_feq(ctx->law, v, ctx->eps))
             near_slopes(ctx, v, -ctx->last_afree[i] / ctx->w_diag[i], ctx->bound[i],
                         bound_slope(ctx, i, v), &dv, &dfeq);
         else

@@ -12,7 +12,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ctx_internal.h"
 #include "fricreg.h"
+#include "random.h"
 
 #define TOL 1e-12
 #define SENTINEL (-777.125)
@@ -135,6 +137,69 @@ START_TEST(diagonal_and_its_dense_twin_agree)
         expect_matrix(dz, want_dz, 9, dense ? "dense df_dzdot" : "diagonal df_dzdot");
         expect_matrix(da, want_da, 9, dense ? "dense df_dafree" : "diagonal df_dafree");
         fricreg_ctx_free(ctx);
+    }
+}
+END_TEST
+
+/* From FR_CODED_TANGENT_FROM contacts on the diagonal pass keeps, instead of the evaluation's
+ * inputs, one code per contact from which the tangent is rebuilt (src/law.h,
+ * fr_near_tangent_code); coded_from = 0 (the static library's internal field) makes it do so
+ * here. Both, against the same W given densely under the paper's partition, whose tangent
+ * differentiates law (4) at the kept inputs: 64 contacts of (4), (2) and Karnopp, velocities
+ * in and out of the band, 0 and +-eps exactly (the kink rules: v = 0 takes the side v > 0,
+ * |v| = eps slides), f_eq inside and beyond the bounds: the same matrices to 1e-12. */
+START_TEST(coded_diagonal_matches_dense_twin)
+{
+    enum { M = 64 };
+    static const int laws[3] = {FRICREG_LAW_QUINN, FRICREG_LAW_FORCE_BALANCE, FRICREG_LAW_KARNOPP};
+    const double eps = 0.05;
+    double w[M], mun[M], z[M], a[M], Wd[M * M] = {0};
+    uint64_t state = 20261122;
+    for (size_t i = 0; i < M; i++) {
+        w[i] = splitmix64_uniform(&state, 0.5, 2.0);
+        mun[i] = splitmix64_uniform(&state, 0.1, 1.5);
+        Wd[i * M + i] = w[i];
+        z[i] = i % 8 == 0   ? 0.0
+               : i % 8 == 1 ? eps
+               : i % 8 == 2 ? -eps
+                            : splitmix64_uniform(&state, -2 * eps, 2 * eps);
+        a[i] = w[i] * splitmix64_uniform(&state, -2.0, 2.0) * mun[i]; /* |f_eq| up to 2 mun */
+    }
+    static double dz[3][M * M], da[3][M * M]; /* diagonal coded, diagonal with inputs, dense */
+    for (int l = 0; l < 3; l++) {
+        for (int run = 0; run < 3; run++) {
+            int dense = run == 2;
+            fricreg_ctx *ctx = NULL;
+            double f[M];
+            ck_assert_int_eq(fricreg_ctx_create(M, &ctx), FRICREG_OK);
+            if (run == 0)
+                ctx->coded_from = 0;
+            if (dense) {
+                ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, M, Wd), FRICREG_OK);
+                ck_assert_int_eq(fricreg_ctx_set_partition(ctx, FRICREG_PARTITION_PAPER),
+                                 FRICREG_OK);
+            } else {
+                ck_assert_int_eq(fricreg_ctx_set_coupling_diagonal(ctx, M, w), FRICREG_OK);
+            }
+            ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, M, mun), FRICREG_OK);
+            ck_assert_int_eq(fricreg_ctx_set_law(ctx, laws[l], eps), FRICREG_OK);
+            ck_assert_int_eq(fricreg_ctx_eval(ctx, M, z, a, f, NULL), FRICREG_OK);
+            ck_assert_int_eq(fricreg_ctx_tangent(ctx, M, dz[run], da[run]), FRICREG_OK);
+            ck_assert_int_eq(ctx->last_coded, run == 0);
+            fricreg_ctx_free(ctx);
+        }
+        for (int run = 0; run < 2; run++) {
+            expect_matrix(dz[run], dz[2], M * M, fricreg_law_name(laws[l]));
+            expect_matrix(da[run], da[2], M * M, fricreg_law_name(laws[l]));
+        }
+        int slopes = 0, held = 0; /* the sample reaches every piece: the check is not 0 = 0 */
+        for (size_t i = 0; i < M; i++) {
+            slopes += dz[0][i * M + i] != 0.0;
+            held += fabs(a[i] / w[i]) > mun[i] && da[0][i * M + i] == 0.0 && fabs(z[i]) < eps;
+        }
+        if (laws[l] == FRICREG_LAW_QUINN)
+            ck_assert_int_gt(slopes, 8);
+        ck_assert_int_gt(held, 2);
     }
 }
 END_TEST
@@ -375,6 +440,7 @@ static Suite *tangent_suite(void)
     tcase_add_test(tc, consistent_one_held_at_moving_bound);
     tcase_add_test(tc, paper_both_near_stick);
     tcase_add_test(tc, diagonal_and_its_dense_twin_agree);
+    tcase_add_test(tc, coded_diagonal_matches_dense_twin);
     tcase_add_test(tc, laws_without_feq);
     tcase_add_test(tc, central_differences);
     tcase_add_test(tc, errors);
