@@ -345,7 +345,9 @@ FRICREG_API int fricreg_ctx_tangent(fricreg_ctx *ctx, size_t m, double df_dzdot[
 
 /** Whether fricreg_ctx_eval keeps what fricreg_ctx_tangent needs: copies of its zdot and
  *  a_free, two stores per contact (with a diagonal W and a law that reads f_eq, about a
- *  quarter of the evaluation's memory traffic: out of cache, a quarter of its time). On by
+ *  quarter of the evaluation's memory traffic: out of cache, a quarter of its time); from
+ *  65536 contacts with a diagonal W, a law that reads f_eq and no Stribeck friction, one
+ *  store instead, the piece of the law each contact is on (the same tangent). On by
  *  default; a caller that never asks for the tangent (an explicit integrator: fricreg's
  *  drivers turn it off until an implicit stepper asks for a Jacobian) may turn it off.
  *  Cheap. Like every setter it discards the tangent of the last evaluation; while off,

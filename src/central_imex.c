@@ -14,7 +14,8 @@
  * polynomial is mu ((1 + z) mu^2 - (2 - p^2) mu + (1 - z)), p = h omega, z = h c/2, whose
  * roots lie in the unit disc for every z >= 0 exactly when p <= 2 (Schur's test:
  * |1 - z| <= 1 + z always, |2 - p^2| <= 2 iff p <= 2). So eps is free of h, and the guard is
- * the springs' (src/sim.c). Still one evaluation a step and second order (the trapezoid).
+ * the springs', plus the friction-reversal bound where the step does not resolve the band
+ * (src/sim.c, check_central_imex_step). Still one evaluation a step and second order.
  *
  * The solve. a_free does not depend on v (system.h: a_free = Ax x + a_0(t)), so with
  * c = v + h/2 (a + a_free) and kappa = h W/2 the velocity is v1 = c + kappa f1, and f1 solves
@@ -23,7 +24,7 @@
  * decreases in f1, so the root is unique: the unclamped one, (F - lambda c)/(1 + kappa lambda),
  * clamped to +-mun (if it lies beyond mun, F - lambda (c + kappa mun) is beyond mun too, and
  * the clamp holds f1 = mun). No iteration and no branch (fr_imex_friction_acc, in W f1's
- * units, inlined into central_step.c's end pass); the two divisions per contact (by
+ * units, inlined into central_step.c's friction pass); the two divisions per contact (by
  * 1 + kappa lambda and by W) are made once per step size (fr_central_imex_coefficients):
  * made each step they cost as much as the rest of it (52% of a chain run). */
 #include "central_imex.h"

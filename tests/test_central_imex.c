@@ -22,7 +22,8 @@
  *   - the guard: (dt omega/2)^2 < 0.9 whatever eps while law (4)'s band is resolved
  *     (dt lambda < 0.9): accepted at 0.99 and refused (FRICREG_ESTEP, before any step) at 1.01
  *     of dt = 2 sqrt(0.9)/omega on the chain n = 32 (omega = 64); where the band is not
- *     resolved, dt omega <= 1/sqrt 2 as well, with the eps to raise to in the message;
+ *     resolved, dt omega <= 1/sqrt 2 as well, with the eps to raise to in the message; a
+ *     stick-zone slope 2 mun/eps beyond the double range is refused (mun = 1e300);
  *   - refusals (FRICREG_EINVAL before any step): a law other than (4), the two blocks; a
  *     structure's GSL driver refuses it as it refuses FRICREG_INT_CENTRAL. */
 #include <check.h>
@@ -167,6 +168,13 @@ START_TEST(guard_springs_and_reversal)
     ck_assert_int_eq(chain_run(0.02, 0.0445, msg, sizeof msg), FRICREG_OK);
     /* unresolved but within the reversal bound: dt omega = 0.7, eps = 1e-6 */
     ck_assert_int_eq(chain_run(0.7 / 64.0, 1e-6, msg, sizeof msg), FRICREG_OK);
+    /* a stick-zone slope 2 mun/eps beyond the double range: refused, not run into NaN */
+    fricreg_sim *sim = sim_runs_make(FRICREG_SYSTEM_OSCILLATOR, FRICREG_INT_CENTRAL_IMEX, 0.01,
+                                     1e-9);
+    ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_MUN, 1e300), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run_cycles(sim, 1), FRICREG_ESTEP);
+    ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "beyond the double range"));
+    fricreg_sim_free(sim);
 }
 END_TEST
 
