@@ -645,6 +645,13 @@ static int advance(fricreg_sim *sim, gsl_odeiv2_driver *d, const struct fr_integ
     return FRICREG_OK;
 }
 
+/* time/span, a fraction: the steps' h summed over a cycle can pass the cycle's length by
+ * rounding (1.000000000000007 for a contact stuck all cycle), which a fraction cannot. */
+static double fraction_of(double time, double span)
+{
+    return fmin(time / span, 1.0);
+}
+
 static void close_cycle(fricreg_sim *sim, double period, double *D_start)
 {
     double D_now = sim->y[2 * sim->ndof];
@@ -653,7 +660,7 @@ static void close_cycle(fricreg_sim *sim, double period, double *D_start)
         memcpy(sim->capture_y, sim->y, (2 * sim->ndof + 1) * sizeof *sim->y);
     *D_start = D_now;
     for (size_t i = 0; i < sim->m; i++) {
-        sim->stick_fraction[i] = sim->stick_time[i] / period;
+        sim->stick_fraction[i] = fraction_of(sim->stick_time[i], period);
         sim->stick_time[i] = 0.0;
     }
 }
@@ -673,7 +680,7 @@ static int integrate(fricreg_sim *sim, gsl_odeiv2_driver *d, const struct fr_int
     }
     if (sim->cycles == 0 && sim->t > 0.0) /* no whole cycle: report over the whole run */
         for (size_t i = 0; i < sim->m; i++)
-            sim->stick_fraction[i] = sim->stick_time[i] / sim->t;
+            sim->stick_fraction[i] = fraction_of(sim->stick_time[i], sim->t);
     return status == STOP_REQUESTED ? FRICREG_OK : status;
 }
 

@@ -18,7 +18,9 @@
  *   - a stick holds: the unforced oscillator (x0 = 2.75, mun = 1) comes to rest at
  *     x = -(2.75 - 2) = -0.75 after half a period (Coulomb: each half swing loses 2 mun); at
  *     dt = 0.01 and eps = 0.001 (dt lambda = 20, refused by FRICREG_INT_CENTRAL) it rests
- *     within 5 dt^2 of it (measured 1.0e-4) and does not move from cycle 2 to cycle 8;
+ *     within 5 dt^2 of it (measured 1.0e-4) and does not move from cycle 2 to cycle 8; its
+ *     near-stick fraction of a cycle at rest is 1 exactly (the summed steps passed the
+ *     cycle's length by rounding: 1.000000000000007 before fricreg_sim clamped it);
  *   - the guard: (dt omega/2)^2 < 0.9 whatever eps while law (4)'s band is resolved
  *     (dt lambda < 0.9): accepted at 0.99 and refused (FRICREG_ESTEP, before any step) at 1.01
  *     of dt = 2 sqrt(0.9)/omega on the chain n = 32 (omega = 64); where the band is not
@@ -128,6 +130,9 @@ START_TEST(stick_holds_with_eps_below_dt)
         sim = sim_runs_make(FRICREG_SYSTEM_OSCILLATOR, FRICREG_INT_CENTRAL_IMEX, 0.01, 0.001);
         ck_assert_int_eq(fricreg_sim_run_cycles(sim, cycles[k]), FRICREG_OK);
         ck_assert_int_eq(fricreg_sim_get_state(sim, 1, &x[k], &v), FRICREG_OK);
+        double frac = 0.0; /* the last cycle at rest throughout: 1, not 1 + rounding */
+        ck_assert_int_eq(fricreg_sim_get_stick_fraction(sim, 1, &frac), FRICREG_OK);
+        ck_assert_double_eq(frac, 1.0);
         fricreg_sim_free(sim);
     }
     printf("central-imex, unforced oscillator, dt = 0.01, eps = 0.001: at rest at x = %.17g "
