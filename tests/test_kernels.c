@@ -218,6 +218,28 @@ START_TEST(batch_equals_scalar_law)
 }
 END_TEST
 
+/* From 2^19 contacts the batch streams f (src/law.c): the scalar law still, bit for bit, to an
+ * aligned and a misaligned f, for (4) and (1), and over its own input v. */
+START_TEST(batch_streamed_equals_scalar_law)
+{
+    enum { M_BIG = (1 << 19) + 3 };
+    double *v = array(M_BIG), *f_eq = array(M_BIG), *mun = array(M_BIG), *out = array(M_BIG + 1);
+    static const int laws[2] = {FRICREG_LAW_QUINN, FRICREG_LAW_COULOMB};
+    for (int c = 0; c < 4; c++) {
+        int law = laws[c / 2];
+        double *f = out + c % 2;
+        fill(M_BIG, v, f_eq, mun);
+        ck_assert_int_eq(fricreg_law_eval_batch(law, EPS, M_BIG, v, f_eq, mun, f), FRICREG_OK);
+        expect_scalar_law(law, M_BIG, v, f_eq, mun, f);
+    }
+    memcpy(out, v, M_BIG * sizeof *v); /* over v itself */
+    ck_assert_int_eq(fricreg_law_eval_batch(FRICREG_LAW_QUINN, EPS, M_BIG, out, f_eq, mun, out),
+                     FRICREG_OK);
+    expect_scalar_law(FRICREG_LAW_QUINN, M_BIG, v, f_eq, mun, out);
+    free(v), free(f_eq), free(mun), free(out);
+}
+END_TEST
+
 /* f may be v or f_eq (include/fricreg.h): a batch written over its own input gives what it
  * gives into a separate array. */
 START_TEST(batch_in_place)
@@ -293,6 +315,7 @@ static Suite *kernels_suite(void)
     TCase *paths = tcase_create("vector_loops");
     tcase_add_test(paths, batch_equals_scalar_law);
     tcase_add_test(paths, batch_in_place);
+    tcase_add_test(paths, batch_streamed_equals_scalar_law);
     tcase_add_test(paths, context_diagonal_equals_scalar_law);
     suite_add_tcase(s, paths);
     return s;
