@@ -3,6 +3,11 @@
 #include <math.h>
 #include <stdint.h>
 
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__SSE2__)
+#define FR_STREAM_STORES 1 /* fricreg_law_eval_batch's non-temporal stores (below) */
+#include <emmintrin.h>
+#endif
+
 #include "dispatch.h"
 #include "law.h"
 #include "plausible.h"
@@ -99,14 +104,12 @@ void fr_law_batch(int law, double eps, size_t m, const double v[], const double 
     law_batch_loops(law, eps, m, v, f_eq, mun, f);
 }
 
-#if defined(__GNUC__) && defined(__x86_64__) && defined(__SSE2__)
-#include <emmintrin.h>
-#define FR_STREAM_STORES 1
+#ifdef FR_STREAM_STORES
 /* From 2^19 contacts the batch's four arrays (16 MB) outgrow the caches a call can count on,
- * and f is written with non-temporal stores: out of cache (m = 10^6) the batch went from 1.46-1.49
- * to 1.37-1.39 times the minimal loop (bench/kernels.c), its reads of f for ownership saved.
- * f is then not left in cache, which a caller reading it next at this size would miss
- * anyway. */
+ * and f is written with non-temporal stores: out of cache (m = 10^6) the batch went from
+ * 1.46-1.49 to 1.37-1.42 times the minimal loop (bench/kernels.c), its reads of f for
+ * ownership saved. f is then not left in cache, which a caller reading it next at this size
+ * would miss anyway. */
 enum { STREAM_FROM = 1 << 19, STREAM_CHUNK = 512 };
 
 /* fr_law_batch chunk by chunk into a buffer in L1, then streamed to f: the same bits. f may
