@@ -81,7 +81,8 @@ static const struct fr_integrator table[] = {
      * (dt omega) 2, jointly (dt omega/2)^2 + dt lambda < 1; the guard takes 0.9 (src/sim.c) */
     {FRICREG_INT_CENTRAL, "central", fr_step_central, 1.0, 0.9, 2.0, 1, 1e-6, NULL, 1, 0},
     /* the same with law (4) implicit at the step's end: no stick-zone bound (infinite real
-     * axis), imaginary axis 2; the guard takes (dt omega/2)^2 < 0.9 (src/sim.c) */
+     * axis), imaginary axis 2; the guard takes (dt omega/2)^2 < 0.9, and dt omega <= 1/sqrt 2
+     * where the step does not resolve law (4)'s band (src/sim.c) */
     {FRICREG_INT_CENTRAL_IMEX, "central-imex", fr_step_central_imex, INFINITY, INFINITY, 2.0, 1,
      1e-6, NULL, 1, 1},
 };
