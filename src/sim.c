@@ -342,15 +342,22 @@ static int alloc_run(fricreg_sim *sim, size_t cycles)
  * gives dt * lambda = 3 > 2.78 for RK4). That is said rather than an eps chosen silently: eps
  * is part of the model (the stick band, an O(eps) change of the results), and a default that
  * followed the stepper's bound would move the results whenever the bound table is corrected. */
+/* The refusal where the stick zone's stiffness is beyond the double range: no dt and no eps
+ * to name. */
+static int refuse_overflowing_stick_zone(fricreg_sim *sim)
+{
+    return sim_fail(sim, FRICREG_ESTEP,
+                    "run: the stick zone's stiffness, of order mun/eps, is beyond the double "
+                    "range for eps = %g: lower the bounds mun or raise eps",
+                    sim->eps);
+}
+
 static int refuse_stick_zone(fricreg_sim *sim, const char *what, double bound, double rate)
 {
     double lambda = rate / sim->eps, z = sim->dt * lambda;
     double eps_min = sim->dt * rate / bound; /* = eps z/bound, finite where lambda overflows */
     if (!isfinite(eps_min) || !(bound * sim->eps / rate > 0.0)) /* no step or eps would do */
-        return sim_fail(sim, FRICREG_ESTEP,
-                        "run: the stick zone's stiffness, of order mun/eps, is beyond the "
-                        "double range for eps = %g: lower the bounds mun or raise eps",
-                        sim->eps);
+        return refuse_overflowing_stick_zone(sim);
     if (sim->eps_set > 0.0)
         return sim_fail(sim, FRICREG_ESTEP,
                         "run: dt = %g too large for the stick zone: its stiffness %g gives "
@@ -454,10 +461,7 @@ static int check_central_imex_step(fricreg_sim *sim, double rate)
     double lambda = rate / sim->eps, omega = sim->sys.type->max_frequency(&sim->sys);
     double half_p = 0.5 * sim->dt * omega, h = sim->dt * lambda;
     if (!isfinite(lambda))
-        return sim_fail(sim, FRICREG_ESTEP,
-                        "run: the stick zone's stiffness, of order mun/eps, is beyond the "
-                        "double range for eps = %g: lower the bounds mun or raise eps",
-                        sim->eps);
+        return refuse_overflowing_stick_zone(sim);
     if (!(half_p * half_p < CENTRAL_STEP_BOUND))
         return sim_fail(sim, FRICREG_ESTEP,
                         "run: dt = %g too large for central differences: (dt*omega/2)^2 = %g >= "

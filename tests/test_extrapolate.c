@@ -13,6 +13,7 @@
 
 #include "fricreg_exact.h"
 #include "fricreg_sim.h"
+#include "sim_runs.h"
 #include "richardson.h"
 
 #define CHAIN_D4 0.010494960003438
@@ -129,20 +130,6 @@ static fricreg_sim *oscillator(double a, double omega, double eps, double tol)
     return sim;
 }
 
-static double period(const fricreg_sim *sim)
-{
-    double T = NAN;
-    ck_assert_int_eq(fricreg_sim_get_value(sim, FRICREG_VALUE_PERIOD, &T), FRICREG_OK);
-    return T;
-}
-
-static double extrap_value(const fricreg_sim *sim, int which)
-{
-    double v = NAN;
-    ck_assert_int_eq(fricreg_sim_get_extrapolation(sim, which, &v), FRICREG_OK);
-    return v;
-}
-
 /* D of cycle `cycle` of the exact solution, from rest at the origin; *total gets the sum
  * over cycles 1 … cycle (the total D at the end of the last one). */
 static double exact_D_total(double a, double omega, int cycle, double *total)
@@ -180,19 +167,21 @@ static struct outcome run_oscillator(double a, double omega, double eps, int lev
     struct outcome o;
     double D[CYCLES], err[CYCLES];
     fricreg_sim *sim = oscillator(a, omega, eps, tol);
-    ck_assert_int_eq(fricreg_sim_run_extrapolated(sim, CYCLES * period(sim), levels, order),
+    ck_assert_int_eq(fricreg_sim_run_extrapolated(sim, CYCLES * sim_runs_period(sim), levels,
+                                                  order),
                      FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_get_dissipation(sim, CYCLES, D), FRICREG_OK);
     o.raw = D[CYCLES - 1];
     ck_assert_int_eq(fricreg_sim_get_extrapolated_dissipation(sim, CYCLES, D, err), FRICREG_OK);
     o.value = D[CYCLES - 1];
     o.estimate = err[CYCLES - 1];
-    o.order = extrap_value(sim, FRICREG_EXTRAP_ORDER);
-    o.observed = extrap_value(sim, FRICREG_EXTRAP_OBSERVED_ORDER);
-    o.total = extrap_value(sim, FRICREG_EXTRAP_DISSIPATION);
-    o.total_estimate = extrap_value(sim, FRICREG_EXTRAP_DISSIPATION_ERR);
-    ck_assert_double_eq(extrap_value(sim, FRICREG_EXTRAP_LEVELS), levels);
-    ck_assert_double_eq(extrap_value(sim, FRICREG_EXTRAP_EPS_FINEST), ldexp(eps, 1 - levels));
+    o.order = sim_runs_extrapolation(sim, FRICREG_EXTRAP_ORDER);
+    o.observed = sim_runs_extrapolation(sim, FRICREG_EXTRAP_OBSERVED_ORDER);
+    o.total = sim_runs_extrapolation(sim, FRICREG_EXTRAP_DISSIPATION);
+    o.total_estimate = sim_runs_extrapolation(sim, FRICREG_EXTRAP_DISSIPATION_ERR);
+    ck_assert_double_eq(sim_runs_extrapolation(sim, FRICREG_EXTRAP_LEVELS), levels);
+    ck_assert_double_eq(sim_runs_extrapolation(sim, FRICREG_EXTRAP_EPS_FINEST),
+                        ldexp(eps, 1 - levels));
     fricreg_sim_free(sim);
     fricreg_sim *fine = oscillator(a, omega, ldexp(eps, 1 - levels), tol);
     ck_assert_int_eq(fricreg_sim_run_cycles(fine, CYCLES), FRICREG_OK);
@@ -270,7 +259,8 @@ START_TEST(test_benchmark_methods_reach_1e_8)
     double D[CYCLES], err[CYCLES];
     const double stick_ref = exact_D(2.0, 0.5, CYCLES);
     fricreg_sim *sim = oscillator(2.0, 0.5, 0.025, 1e-10);
-    ck_assert_int_eq(fricreg_sim_run_extrapolated(sim, CYCLES * period(sim), 2, 2), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run_extrapolated(sim, CYCLES * sim_runs_period(sim), 2, 2),
+                     FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_get_extrapolated_dissipation(sim, CYCLES, D, err), FRICREG_OK);
     ck_assert(fabs(D[CYCLES - 1] - stick_ref) < 1e-8 * stick_ref);
     ck_assert(err[CYCLES - 1] >= fabs(D[CYCLES - 1] - stick_ref));
@@ -300,10 +290,11 @@ START_TEST(test_chain_against_the_reference)
     ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_QUINN, 0.0052), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK8PD, 1e-3, 1e-10, 1e-10),
                      FRICREG_OK);
-    ck_assert_int_eq(fricreg_sim_run_extrapolated(sim, CYCLES * period(sim), 3, 0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run_extrapolated(sim, CYCLES * sim_runs_period(sim), 3, 0),
+                     FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_get_extrapolated_dissipation(sim, CYCLES, D, err), FRICREG_OK);
     double e = D[CYCLES - 1] - CHAIN_D4;
-    ck_assert_double_eq(extrap_value(sim, FRICREG_EXTRAP_ORDER), 2.0);
+    ck_assert_double_eq(sim_runs_extrapolation(sim, FRICREG_EXTRAP_ORDER), 2.0);
     ck_assert(fabs(e) <= err[CYCLES - 1] + CHAIN_D4_UNCERTAINTY);
     /* the finest level alone */
     ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_QUINN, 0.0052 / 4), FRICREG_OK);
@@ -337,7 +328,8 @@ START_TEST(test_level_zero_is_the_plain_run)
     ck_assert_int_eq(fricreg_sim_get_dissipation(sim, CYCLES, D_plain), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_get_state(sim, 1, &x_plain, &v_plain), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_set_observer(sim, count_calls, &calls_extrap), FRICREG_OK);
-    ck_assert_int_eq(fricreg_sim_run_extrapolated(sim, CYCLES * period(sim), 3, 0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run_extrapolated(sim, CYCLES * sim_runs_period(sim), 3, 0),
+                     FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_get_dissipation(sim, CYCLES, D), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_get_state(sim, 1, &x, &v), FRICREG_OK);
     ck_assert_int_eq(memcmp(D, D_plain, sizeof D), 0);
@@ -357,12 +349,14 @@ START_TEST(test_fixed_step_halves_with_eps)
     ck_assert_int_eq(fricreg_sim_create(FRICREG_SYSTEM_OSCILLATOR, &sim), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RK4, 0.0137, 0.0, 0.0),
                      FRICREG_OK);
-    ck_assert_int_eq(fricreg_sim_run_extrapolated(sim, 2 * period(sim), 3, 0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run_extrapolated(sim, 2 * sim_runs_period(sim), 3, 0), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_get_value(sim, FRICREG_VALUE_RHS_EVALS, &rhs0), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_get_value(sim, FRICREG_VALUE_EPS, &eps0), FRICREG_OK);
     ck_assert_double_eq_tol(eps0, 2 * 0.0137, 1e-15); /* the paper's rule at level 0 */
-    ck_assert_double_eq_tol(extrap_value(sim, FRICREG_EXTRAP_RHS_EVALS) / rhs0, 7.0, 0.07);
-    ck_assert_double_eq_tol(extrap_value(sim, FRICREG_EXTRAP_EPS_FINEST), eps0 / 4, 1e-15);
+    ck_assert_double_eq_tol(sim_runs_extrapolation(sim, FRICREG_EXTRAP_RHS_EVALS) / rhs0, 7.0,
+                            0.07);
+    ck_assert_double_eq_tol(sim_runs_extrapolation(sim, FRICREG_EXTRAP_EPS_FINEST), eps0 / 4,
+                            1e-15);
     fricreg_sim_free(sim);
 }
 END_TEST
@@ -377,7 +371,7 @@ static void expect_failure(const fricreg_sim *sim, int status, int code)
 START_TEST(test_bad_input_is_refused)
 {
     fricreg_sim *sim = oscillator(2.0, 0.5, 0.0413, 1e-8);
-    double T = period(sim), out = 7.25, D[2] = {7.25, 7.25}, err[2] = {7.25, 7.25};
+    double T = sim_runs_period(sim), out = 7.25, D[2] = {7.25, 7.25}, err[2] = {7.25, 7.25};
     ck_assert_int_eq(fricreg_sim_run_extrapolated(NULL, T, 3, 0), FRICREG_ENULL);
     expect_failure(sim, fricreg_sim_run_extrapolated(sim, T, 1, 0), FRICREG_EINVAL);
     ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "levels"));
@@ -435,7 +429,7 @@ START_TEST(test_refused_from_the_observer)
     fricreg_sim *sim = oscillator(2.0, 0.5, 0.0413, 1e-8);
     nested_status = FRICREG_OK;
     ck_assert_int_eq(fricreg_sim_set_observer(sim, call_extrapolated, sim), FRICREG_OK);
-    ck_assert_int_eq(fricreg_sim_run_extrapolated(sim, 2 * period(sim), 2, 0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run_extrapolated(sim, 2 * sim_runs_period(sim), 2, 0), FRICREG_OK);
     ck_assert_int_eq(nested_status, FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_sim_get_extrapolated_dissipation(sim, 2, (double[2]){0, 0},
                                                               (double[2]){0, 0}),

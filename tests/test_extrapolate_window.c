@@ -15,6 +15,7 @@
 
 #include "fricreg_exact.h"
 #include "fricreg_sim.h"
+#include "sim_runs.h"
 
 enum { CYCLES = 50 };
 
@@ -30,20 +31,6 @@ static fricreg_sim *oscillator(double eps, int integrator, double dt, double tol
     return sim;
 }
 
-static double period(const fricreg_sim *sim)
-{
-    double T = NAN;
-    ck_assert_int_eq(fricreg_sim_get_value(sim, FRICREG_VALUE_PERIOD, &T), FRICREG_OK);
-    return T;
-}
-
-static double extrap_value(const fricreg_sim *sim, int which)
-{
-    double v = NAN;
-    ck_assert_int_eq(fricreg_sim_get_extrapolation(sim, which, &v), FRICREG_OK);
-    return v;
-}
-
 /* One extrapolated run of CYCLES cycles: D and its estimate per cycle, the work. */
 struct outcome {
     double D[CYCLES], err[CYCLES], rhs;
@@ -52,11 +39,11 @@ struct outcome {
 static struct outcome run(fricreg_sim *sim, int levels, int order, int window)
 {
     struct outcome o;
-    ck_assert_int_eq(fricreg_sim_run_extrapolated_window(sim, CYCLES * period(sim), levels, order,
-                                                         window),
+    ck_assert_int_eq(fricreg_sim_run_extrapolated_window(sim, CYCLES * sim_runs_period(sim), levels,
+                                                         order, window),
                      FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_get_extrapolated_dissipation(sim, CYCLES, o.D, o.err), FRICREG_OK);
-    o.rhs = extrap_value(sim, FRICREG_EXTRAP_RHS_EVALS);
+    o.rhs = sim_runs_extrapolation(sim, FRICREG_EXTRAP_RHS_EVALS);
     return o;
 }
 
@@ -117,12 +104,13 @@ START_TEST(test_window_reports_what_it_extrapolated)
         ck_assert(isfinite(w.D[c]) && isfinite(w.err[c]));
         ck_assert(w.D[c] != level0[c]); /* extrapolated */
     }
-    ck_assert(isinf(extrap_value(sim, FRICREG_EXTRAP_DISSIPATION_ERR)));
+    ck_assert(isinf(sim_runs_extrapolation(sim, FRICREG_EXTRAP_DISSIPATION_ERR)));
     /* the dissipation over the window: near the sum of its cycles' D (its own extrapolation) */
     double sum = 0.0;
     for (int c = CYCLES - WINDOW; c < CYCLES; c++)
         sum += w.D[c];
-    ck_assert_double_eq_tol(extrap_value(sim, FRICREG_EXTRAP_DISSIPATION), sum, 1e-6 * sum);
+    ck_assert_double_eq_tol(sim_runs_extrapolation(sim, FRICREG_EXTRAP_DISSIPATION), sum,
+                            1e-6 * sum);
     double rhs0 = NAN;
     ck_assert_int_eq(fricreg_sim_get_value(sim, FRICREG_VALUE_RHS_EVALS, &rhs0), FRICREG_OK);
     ck_assert(w.rhs > rhs0); /* level 0's and the finer levels' */
@@ -168,7 +156,7 @@ START_TEST(test_no_window_is_the_plain_extrapolation)
     enum { SHORT = 4 };
     double D[SHORT], err[SHORT], Dw[SHORT], errw[SHORT];
     fricreg_sim *sim = oscillator(0.04, FRICREG_INT_RK8PD, 1e-3, 1e-8);
-    double T = period(sim);
+    double T = sim_runs_period(sim);
     ck_assert_int_eq(fricreg_sim_run_extrapolated(sim, SHORT * T, 2, 2), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_get_extrapolated_dissipation(sim, SHORT, D, err), FRICREG_OK);
     static const int windows[3] = {0, SHORT, SHORT + 3};
@@ -205,7 +193,7 @@ START_TEST(test_stopped_before_the_window)
 {
     double D[3], err[3], Dw[3], errw[3], cycles = NAN;
     fricreg_sim *sim = oscillator(0.04, FRICREG_INT_RK8PD, 1e-3, 1e-8);
-    double T = period(sim), t_stop = 3.5 * T;
+    double T = sim_runs_period(sim), t_stop = 3.5 * T;
     ck_assert_int_eq(fricreg_sim_set_observer(sim, stop_after, &t_stop), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_run_extrapolated(sim, 8 * T, 2, 2), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_get_value(sim, FRICREG_VALUE_CYCLES, &cycles), FRICREG_OK);

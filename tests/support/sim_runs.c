@@ -3,6 +3,7 @@
 #include "sim_runs.h"
 
 #include <check.h>
+#include <math.h>
 
 fricreg_sim *sim_runs_make(int system, int integrator, double dt, double eps)
 {
@@ -27,4 +28,18 @@ int sim_runs_dissipation(fricreg_sim *sim, int cycles, double D[])
     if (status == FRICREG_OK)
         ck_assert_int_eq(fricreg_sim_get_dissipation(sim, (size_t)cycles, D), FRICREG_OK);
     return status;
+}
+
+double sim_runs_period(const fricreg_sim *sim)
+{
+    double T = NAN;
+    ck_assert_int_eq(fricreg_sim_get_value(sim, FRICREG_VALUE_PERIOD, &T), FRICREG_OK);
+    return T;
+}
+
+double sim_runs_extrapolation(const fricreg_sim *sim, int which)
+{
+    double v = NAN;
+    ck_assert_int_eq(fricreg_sim_get_extrapolation(sim, which, &v), FRICREG_OK);
+    return v;
 }

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* Runs of fricreg_sim shared by the central-difference tests (test_central.c,
- * test_central_imex.c): law (4) with a set eps and fixed steps. Failures are Check assertions.
+/* Runs of fricreg_sim shared by the central-difference and extrapolation tests: law (4) with
+ * a set eps and fixed steps, and getters of their results. Failures are Check assertions.
  * Not linked to the library: each test brings its own (shared or static). */
 #ifndef FRICREG_TESTS_SIM_RUNS_H
 #define FRICREG_TESTS_SIM_RUNS_H
@@ -15,5 +15,11 @@ fricreg_sim *sim_runs_sticking_oscillator(int integrator, double dt, double eps)
 
 /* Runs `cycles` forcing cycles; on success D of each into D[cycles]. The run's status. */
 int sim_runs_dissipation(fricreg_sim *sim, int cycles, double D[]);
+
+/* The forcing period (FRICREG_VALUE_PERIOD), asserted to be there. */
+double sim_runs_period(const fricreg_sim *sim);
+
+/* One value of the last extrapolation (fricreg_sim_get_extrapolation), asserted to be there. */
+double sim_runs_extrapolation(const fricreg_sim *sim, int which);
 
 #endif
