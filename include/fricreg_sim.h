@@ -288,7 +288,8 @@ FRICREG_API int fricreg_sim_get_state(const fricreg_sim *sim, size_t ndof, doubl
 FRICREG_API int fricreg_sim_get_dissipation(const fricreg_sim *sim, size_t ncycles, double D[]);
 
 /** Copy, per contact, the fraction of time with |zdot_i| < eps (the near-stick set) over the
- *  last whole cycle, or over the whole run if it completed none, into frac[m].
+ *  last whole cycle, or over the whole run if it completed none, into frac[m], each in
+ *  [0, 1] (steps counted whole: a step ending in the band counts as near stick).
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if m is not fricreg_sim_ncontacts. */
 FRICREG_API int fricreg_sim_get_stick_fraction(const fricreg_sim *sim, size_t m, double frac[]);
 
