@@ -4,10 +4,10 @@
  *
  *   u1 = u + dt v + dt^2/2 a,  v* = v + dt a,  a1 = a_free(t1, u1) + f(v*, -a_free),
  *   v1 = v + dt (a + a1)/2
- * (the library's structure integrator, src/central_difference.c, on dense matrices). Why: RK4
+ * (the library's structure integrator, src/structure/central_difference.c, on dense matrices). Why: RK4
  * pays four right-hand sides a step and is held by the step guard to dt * 2n <= 1/sqrt 2;
  * this scheme pays one, and is stable to dt * 2n < 2 (springs) and dt * 2/eps < 1 (law (4)'s
- * stick zone, src/central_difference.c). Second order: the velocity update is Heun's. D is
+ * stick zone, src/structure/central_difference.c). Second order: the velocity update is Heun's. D is
  * integrated by the trapezoidal rule on the power -(1/n) sum v* f. Not part of the library:
  * bench/bigchain.c measures it at the guard's step (0.35/n) and beyond it (0.9/n). */
 #include <math.h>
@@ -15,7 +15,7 @@
 
 #include "chain_explicit.h"
 
-/* a_free = -n^2 K u + n G e_1 (src/systems/chain.c). */
+/* a_free = -n^2 K u + n G e_1 (src/sim/systems/chain.c). */
 static void free_acc(size_t n, double G, const double u[], double af[])
 {
     double n2 = (double)n * (double)n;

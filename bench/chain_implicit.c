@@ -38,7 +38,7 @@ struct chain {
     gsl_vector *diag, *above, *below, *rhs, *dx;
 };
 
-/* a_free = -n^2 K u + n G(t) e_1 (src/systems/chain.c). */
+/* a_free = -n^2 K u + n G(t) e_1 (src/sim/systems/chain.c). */
 static void free_acc(const struct chain *c, double t, const double u[], double af[])
 {
     size_t n = c->n;

@@ -7,7 +7,7 @@
  * and m = 10^6 (40 MB of arrays: memory traffic counts). Inputs as bench/scaling.c: 40 %
  * stuck (v = 0), 20 % near stick (|v| < eps), 40 % slipping, in random order, fixed seed.
  * fricreg_ctx_eval runs as created, and with fricreg_ctx_set_keep_tangent(0) (no copies of
- * zdot and a_free for the tangent). Where the library runs AVX2 kernels (src/dispatch.h), the
+ * zdot and a_free for the tangent). Where the library runs AVX2 kernels (src/base/dispatch.h), the
  * minimal loops compiled for AVX2 too. Every figure is the median of REPEATS interleaved
  * timings.
  * Prints the table and the ratios to the minimal loops; with OUTDIR, also writes kernels.csv

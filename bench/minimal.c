@@ -48,7 +48,7 @@ void minimal_triad(size_t m, double a[], const double b[], const double c[], dou
 }
 
 /* The same two loops compiled for AVX2 (no FMA: it would change the rounding), the code the
- * library's kernels run on a CPU with AVX2 (src/dispatch.h), so that the benchmark shows the
+ * library's kernels run on a CPU with AVX2 (src/base/dispatch.h), so that the benchmark shows the
  * kernels' ratios to both. Where the compiler cannot dispatch, the portable loops. */
 #ifdef FRICREG_AVX2_DISPATCH
 #define AVX2 __attribute__((target("avx2")))

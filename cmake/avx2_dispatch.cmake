@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
-# FRICREG_AVX2_DISPATCH: the hot loops of the batch law and of fricreg_ctx_eval (src/dispatch.h)
+# FRICREG_AVX2_DISPATCH: the hot loops of the batch law and of fricreg_ctx_eval (src/base/dispatch.h)
 # get AVX2 versions chosen at run time, the way glibc, FFTW and OpenBLAS do: on x86-64 with
 # GCC or clang (target("avx2") and __builtin_cpu_supports). Probed by compiling and linking a
 # program that uses both; elsewhere the portable loops alone. "avx2" adds no FMA, so both versions

@@ -75,14 +75,14 @@ enum fricreg_integrator {
     /** explicit central differences (Newmark beta = 0, gamma = 1/2), fricreg's own, fixed steps
      *  only: x1 = x + dt v + dt^2/2 a, a1 = a(x1, v*) with the velocity predictor
      *  v* = v + dt a seen by the friction, v1 = v + dt (a + a1)/2; one right-hand side per
-     *  step, second order (src/central_step.c). Stable for (dt omega/2)^2 + dt lambda < 1;
+     *  step, second order (src/sim/central_step.c). Stable for (dt omega/2)^2 + dt lambda < 1;
      *  the guard takes 0.9 (fricreg_sim_run). Not for fricreg_structure_run_ode (the structure has its own
      *  central difference). Since 1.3.0. */
     FRICREG_INT_CENTRAL = 13,
     /** FRICREG_INT_CENTRAL with the friction of the step's end implicit (IMEX: springs
      *  explicit, friction implicit): a1 = a_free(x1) + W f1 and v1 = v + dt (a + a1)/2 with
      *  f1 = law (4) at (v1, f_eq(x1)), solved exactly contact by contact (law (4) is piecewise
-     *  linear in v: no iteration; src/central_imex.c). The trapezoid on the friction is
+     *  linear in v: no iteration; src/sim/central_imex.c). The trapezoid on the friction is
      *  A-stable, so the stick zone bounds no step: the guard is the springs',
      *  (dt omega/2)^2 < 0.9, and, where dt lambda >= 0.9 (eps below about 2.2 dt mun W_ii:
      *  law (4)'s band is crossed within one step, as a law that jumps), also
@@ -192,9 +192,9 @@ FRICREG_API int fricreg_sim_set_observer(fricreg_sim *sim, fricreg_sim_observer 
  *     step of chatter stays in the band |zdot| < eps;
  *   - dt * omega within the stepper's imaginary-axis bound (rk2 1.73, rk4 2.82, rkf45 0.7,
  *     rkck 0.88, rk8pd 3.7) and within 1/sqrt 2, beyond which a friction reversal inside one
- *     step can put energy in (src/sim.c derives it).
+ *     step can put energy in (src/sim/sim.c derives it).
  *  Central differences (FRICREG_INT_CENTRAL) instead need (dt omega/2)^2 + dt lambda < 0.9,
- *  the linear stability bound 1 of x'' = -omega^2 x - lambda x' (src/sim.c derives it) with a
+ *  the linear stability bound 1 of x'' = -omega^2 x - lambda x' (src/sim/sim.c derives it) with a
  *  margin for each cycle's shortened last step, and for the laws that jump also dt * lambda
  *  <= 1 and dt * omega <= 1/sqrt 2, as above. For (4) this is dt * lambda < 0.9: the paper's
  *  eps = 2 dt, dt * lambda = 2 mun W_ii / 2, is refused at every dt where mun W_ii >= 0.9.
@@ -255,7 +255,7 @@ FRICREG_API int fricreg_sim_get_value(const fricreg_sim *sim, int which, double 
  *  for fricreg_sim_get_stat. Values are fixed forever. */
 enum fricreg_sim_stat {
     /** Accepted steps. Fixed step: steps of size dt, GSL's rk4 step of 2 dt counting as two
-     *  (src/integrator.c), a cycle's shortened last step as a full one and a retried step
+     *  (src/ode/integrator.c), a cycle's shortened last step as a full one and a retried step
      *  once. Adaptive: steps accepted by GSL's control. */
     FRICREG_SIM_STAT_STEPS = 0,
     /** Right-hand-side evaluations by the stepper, one per Jacobian of an implicit stepper

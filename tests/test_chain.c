@@ -75,7 +75,7 @@ END_TEST
  * returns two classical steps of dt. GSL's rk4 (FRICREG_INT_RK4_GSL) also takes a full step of
  * 2 dt for its step-doubling error estimate: evaluations k1 (1), full step (3), first half step
  * reusing k1 (3), k1 at the midpoint (1), second half step (3), dydt_out at the end (1) = 12 per
- * call. fricreg's own step type (FRICREG_INT_RK4 in fixed steps, src/rk4_classic.c) needs the
+ * call. fricreg's own step type (FRICREG_INT_RK4 in fixed steps, src/ode/rk4_classic.c) needs the
  * two classical steps only: 8. Each cycle of T = 4 pi takes ceil(T/(2 dt)) = ceil(628.32) = 629
  * calls, the last one shortened to end on the boundary and still counted as 2 steps. 4 cycles:
  * STEPS = 4*629*2 = 5032, RHS_EVALS = 4*STEPS (GSL: 6*STEPS). (No observer: it evaluates

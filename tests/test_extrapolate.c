@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_extrapolate.c — extrapolation in eps (fricreg_sim_run_extrapolated) and its Richardson
- * table (src/richardson.c, white box: this test links the static library).
+ * table (src/sim/richardson.c, white box: this test links the static library).
  *
  * References: the oscillator's exact solution (fricreg_exact.h); for the chain, law (4) + RK4
  * on a ladder of halved steps, extrapolated (bench/reference.c), D on cycle 4 =
@@ -14,7 +14,7 @@
 #include "fricreg_exact.h"
 #include "fricreg_sim.h"
 #include "sim_runs.h"
-#include "richardson.h"
+#include "sim/richardson.h"
 
 #define CHAIN_D4 0.010494960003438
 #define CHAIN_D4_UNCERTAINTY 1.9e-11

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* test_factor.c — Check suite for the factor of a dense W's block (src/factor.c) through the
+/* test_factor.c — Check suite for the factor of a dense W's block (src/ctx/factor.c) through the
  * public API: updated when the near-stick set (paper's partition) or the QP's free set
  * (consistent law) changes by a few contacts, refactored otherwise, and still refusing a
  * singular block.

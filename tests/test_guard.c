@@ -40,7 +40,7 @@
 #include <string.h>
 
 #include "fricreg_sim.h"
-#include "sim_internal.h"
+#include "sim/sim_internal.h"
 
 #define MAXC 64
 

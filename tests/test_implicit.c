@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_implicit.c — GSL's implicit steppers on the reference systems at a tiny eps, where
  * the stick zone's slope 2 mun/eps = 2e6 makes the problem stiff and the drivers' Jacobian
- * (src/sim_jacobian.c: the context's exact tangent) decides whether Newton converges.
+ * (src/sim/sim_jacobian.c: the context's exact tangent) decides whether Newton converges.
  *
  * References: the oscillator's exact solution (fricreg_exact.h, 12 digits), and the chain's
  * D on cycle 4 = 0.01049496000, within 1e-11: msbdf with the exact Jacobian at eps 1e-5 and

@@ -1,12 +1,12 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_integrator.c — the real-axis stability bounds behind FRICREG_ESTEP.
  *
- * src/integrator.c keeps, per explicit GSL stepper, the largest stable dt*lambda on the negative
+ * src/ode/integrator.c keeps, per explicit GSL stepper, the largest stable dt*lambda on the negative
  * real axis (rk2 2.5, rk4 2.78 per classical step, rkf45 3.6, rkck 3.7, rk8pd 5.1), rounded
  * down from values "measured by applying each GSL stepper with a fixed step to y' = -y"
  * (2.51, 2.785, 3.67, 3.73, 5.16). fricreg_sim_run refuses a fixed step with dt*lambda above
  * the stick-zone bound (lambda = 2 mun/eps for law (4)): the real-axis bound, except rkf45
- * 2.2, where the nonlinear zone fails first (src/integrator.c; test_guard.c measures it).
+ * 2.2, where the nonlinear zone fails first (src/ode/integrator.c; test_guard.c measures it).
  * Checked here twice:
  *   - directly on GSL: one fixed step of y' = -y with h = z gives y = R(-z), the stepper's
  *     stability function; |R(-z)| <= 1 on (0, bound], and the bound is tight;
@@ -26,11 +26,11 @@
 
 struct explicit_row {
     int id;                  /* enum fricreg_integrator */
-    double table_bound;      /* src/integrator.c, in fricreg's dt (classical step for rk4) */
-    double measured;         /* src/integrator.c's comment: the measured value */
+    double table_bound;      /* src/ode/integrator.c, in fricreg's dt (classical step for rk4) */
+    double measured;         /* src/ode/integrator.c's comment: the measured value */
     double gsl_steps_per_dt; /* GSL step length per fricreg dt: 2 for rk4 (step doubling) */
-    double imag_bound;       /* src/integrator.c: dt*omega with amplification <= 1 + 1e-4 */
-    double guard_bound;      /* src/integrator.c: the stick-zone bound the guard applies */
+    double imag_bound;       /* src/ode/integrator.c: dt*omega with amplification <= 1 + 1e-4 */
+    double guard_bound;      /* src/ode/integrator.c: the stick-zone bound the guard applies */
 };
 
 static const struct explicit_row rows[] = {
@@ -72,7 +72,7 @@ static const gsl_odeiv2_step_type *gsl_type(int id)
 
 /* R(-z) of a fricreg integrator: one fixed GSL step of y' = -y from y = 1, with GSL step length
  * z * (GSL steps per fricreg dt), through a driver (the implicit steppers read their error
- * levels from it) but with no step control, as src/sim.c steps. */
+ * levels from it) but with no step control, as src/sim/sim.c steps. */
 static double stability_function(int id, double z, double gsl_steps_per_dt)
 {
     gsl_odeiv2_system sys = {decay, decay_jacobian, 1, NULL};
@@ -109,7 +109,7 @@ static double amplification_on_imaginary_axis(int id, double z, double gsl_steps
     return hypot(y[0], y[1]);
 }
 
-/* The table's imaginary-axis bound (the system-frequency check of src/sim.c) keeps the
+/* The table's imaginary-axis bound (the system-frequency check of src/sim/sim.c) keeps the
  * amplification per step within 1 + 1e-4, and 10% beyond it the amplification is larger. */
 START_TEST(test_imaginary_axis_bound)
 {

@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* test_kernels.c — Check suite for the batch kernels' validation pass (src/plausible.c: SSE2
+/* test_kernels.c — Check suite for the batch kernels' validation pass (src/law/plausible.c: SSE2
  * groups of 8 contacts, or AVX2 groups of 16, then a plain-C tail in 4 lanes), behind
  * fricreg_law_eval_batch and fricreg_ctx_eval, and for their vector loops (AVX2 where the CPU
- * has it, src/dispatch.h).
+ * has it, src/base/dispatch.h).
  *
  * Expected values: the promise of include/fricreg.h that bad input gets its code and a failing
  * call writes nothing (every bad element is put at every position of the groups and the tail,
@@ -178,7 +178,7 @@ START_TEST(context_rejects_every_position)
 }
 END_TEST
 
-/* ---- The vector loops: in AVX2 where the CPU has it (src/dispatch.h), else SSE2 */
+/* ---- The vector loops: in AVX2 where the CPU has it (src/base/dispatch.h), else SSE2 */
 
 /* Contacts: odd, so that every vector loop has a remainder. */
 #define M_PATH 1003
@@ -218,7 +218,7 @@ START_TEST(batch_equals_scalar_law)
 }
 END_TEST
 
-/* From 2^19 contacts the batch streams f (src/law.c): the scalar law still, bit for bit, to an
+/* From 2^19 contacts the batch streams f (src/law/law.c): the scalar law still, bit for bit, to an
  * aligned and a misaligned f, for (4) and (1), and over its own input v. */
 START_TEST(batch_streamed_equals_scalar_law)
 {

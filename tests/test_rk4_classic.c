@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_rk4_classic.c — fixed steps of FRICREG_INT_RK4: fricreg's own classical RK4 step type
- * (src/rk4_classic.c), against GSL's rk4 (FRICREG_INT_RK4_GSL).
+ * (src/ode/rk4_classic.c), against GSL's rk4 (FRICREG_INT_RK4_GSL).
  *
  * Expected values:
  *   - In the stick zone of (4) the oscillator is the linear decay v' = -lambda v with

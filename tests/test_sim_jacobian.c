@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_sim_jacobian.c — white box: the analytic Jacobian of the drivers' ODE
- * (src/sim_jacobian.c) against central differences of its right-hand side.
+ * (src/sim/sim_jacobian.c) against central differences of its right-hand side.
  *
  * Law (4) is piecewise linear in (zdot, a_free) and each system linear in (x, v, f), so on one
  * piece the right-hand side is linear in x and v, except D' = -w zdot . f, which is quadratic:
@@ -21,7 +21,7 @@
 
 #include <gsl/gsl_errno.h>
 
-#include "sim_internal.h"
+#include "sim/sim_internal.h"
 
 #define STEP 1e-6        /* central-difference step, times max(|y_j|, 1) */
 #define TOL 1e-6         /* relative to the Jacobian's largest entry (issue 9) */
@@ -276,7 +276,7 @@ START_TEST(twoblock_other_laws_match_central_differences)
 }
 END_TEST
 
-/* The chain's fused pass (src/systems/chain.c) against the plain loops it replaced: x' = v and
+/* The chain's fused pass (src/sim/systems/chain.c) against the plain loops it replaced: x' = v and
  * u'' = a_free + f to the bit, the power v . f summed in 8 partial sums within the rounding
  * bound of both orders, 2 n u sum |v_i f_i| (u = 2^-53), at sizes with and without a tail.
  * contacts() passes v itself as zdot, with no copy. */

@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "ctx_internal.h"
+#include "ctx/ctx_internal.h"
 #include "fricreg.h"
 #include "random.h"
 
@@ -142,7 +142,7 @@ START_TEST(diagonal_and_its_dense_twin_agree)
 END_TEST
 
 /* From FR_CODED_TANGENT_FROM contacts on the diagonal pass keeps, instead of the evaluation's
- * inputs, one code per contact from which the tangent is rebuilt (src/law.h,
+ * inputs, one code per contact from which the tangent is rebuilt (src/law/law.h,
  * fr_near_tangent_code); coded_from = 0 (the static library's internal field) makes it do so
  * here. Both, against the same W given densely under the paper's partition, whose tangent
  * differentiates law (4) at the kept inputs: 64 contacts of (4), (2) and Karnopp, velocities

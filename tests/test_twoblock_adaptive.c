@@ -62,7 +62,7 @@ END_TEST
 
 /* The issue's own setting, rtol 1e-8, atol 1e-10: D4 within 1e-4 of the reference and both
  * interfaces stick (issue: 0 at rtol 1e-6 before the consistent law). Measured 3.2e-5 with the
- * exact Jacobian (src/sim_jacobian.c); forward differences gave 1.6e-4. The error is the
+ * exact Jacobian (src/sim/sim_jacobian.c); forward differences gave 1.6e-4. The error is the
  * integrator's tolerance, not the law's eps: 4.7e-4, 3.2e-5, 1.3e-6, -2.4e-8 at rtol 1e-7 …
  * 1e-10. */
 START_TEST(msbdf_at_the_issue_tolerance_sticks)

@@ -16,7 +16,7 @@
 
 #define PI 3.14159265358979323846
 #define DEG (PI / 180.0)
-#define RK4_STABLE 2.78 /* RK4's real-axis stability bound, dt * lambda (src/integrator.c) */
+#define RK4_STABLE 2.78 /* RK4's real-axis stability bound, dt * lambda (src/ode/integrator.c) */
 #define DISK_MAX 1e250  /* the 2-D laws' largest number (fricreg_disk.h) */
 
 /* A numeric option: its name, where it goes, and its range. */
@@ -104,7 +104,7 @@ static int whole(const char *option, double value, double lo, double hi)
 }
 
 /* The stick zone's rate times dt must be inside RK4's stability interval (the library's own
- * step guard, src/sim.c, for the 1-D law): 2 bound/(mass eps) dt <= 2.78. */
+ * step guard, src/sim/sim.c, for the 1-D law): 2 bound/(mass eps) dt <= 2.78. */
 static int stable_step(double bound_per_mass, double dt, double eps)
 {
     double rate = 2.0 * bound_per_mass / eps * dt;

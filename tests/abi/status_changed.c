@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* status_changed.c — a deliberately incompatible src/status.c for the ABI check's own test:
+/* status_changed.c — a deliberately incompatible src/base/status.c for the ABI check's own test:
  * fricreg_version_number returns a long instead of an int. (A function no other file calls,
  * so this definition is the only debug information that describes it.) Linked with the other
  * objects into a probe library that tests/abi_bites.sh expects tests/abi_check.sh to reject.

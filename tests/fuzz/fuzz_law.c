@@ -141,7 +141,7 @@ static void fuzz_batch(struct fuzz_input *in, int law)
         double scalar;
         int s = fricreg_law_eval(law, v0[i], feq_null ? 0.0 : f_eq0[i], mun[i], eps, &scalar);
         FUZZ_REQUIRE(s == FRICREG_OK, "scalar law refused what the batch took: %d", s);
-        /* sat-form and clamp-form may differ by a few roundings of mun (src/law.h) */
+        /* sat-form and clamp-form may differ by a few roundings of mun (src/law/law.h) */
         FUZZ_REQUIRE(fabs(f[i] - scalar) <= 4.0 * DBL_EPSILON * mun[i],
                      "batch law %d contact %zu: %.17g, scalar %.17g", law, i, f[i], scalar);
         check_force(law, v0[i], feq_null ? 0.0 : f_eq0[i], mun[i], eps, f[i]);

@@ -11,7 +11,7 @@
  * double where the compiler has none): products of doubles are exact there, so its error,
  * ~kappa 1e-34, is far below the double solve's ~kappa 1e-16. Errors are measured in the
  * Jacobi-scaled norm max_i sqrt(W_ii) |f_i - x_i| / max_i sqrt(W_ii) |x_i| that the factor
- * works in (src/factor.c), so badly scaled but regular W (diag(1, 1e-14)) count as regular. */
+ * works in (src/ctx/factor.c), so badly scaled but regular W (diag(1, 1e-14)) count as regular. */
 #include <float.h>
 #include <math.h>
 #include <stdio.h>

@@ -1,0 +1,35 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* ctx_driver.h — internal: what the drivers above the context (fricreg_sim, fricreg_structure)
+ * may use of it beyond the public API: its evaluation without the finiteness pass, read access
+ * to eps, the bounds and W's diagonal, and the step guard's stiffness. Everything else of the
+ * context's layout stays in ctx_internal.h, included only inside src/ctx/. */
+#ifndef FRICREG_CTX_DRIVER_H
+#define FRICREG_CTX_DRIVER_H
+
+#include "fricreg.h"
+
+/* fricreg_ctx_eval of m = fricreg_ctx_size(ctx) contacts without the finiteness pass, for a
+ * caller that checks what it makes of f instead (fricreg_sim's fixed explicit steps, whose
+ * state is checked after every step: a non-finite input carries into it through a_free or
+ * zdot). With a diagonal W or a law that does not read f_eq and without Stribeck friction;
+ * otherwise (the dense solve's range checks need finite inputs) fricreg_ctx_eval itself. The
+ * status of fricreg_ctx_eval; FRICREG_OK on the unchecked path (partition.c). */
+int fr_ctx_eval_unchecked(fricreg_ctx *ctx, const double zdot[], const double a_free[], double f[]);
+
+/* The law's eps (fricreg_ctx_set_law). */
+double fr_ctx_eps(const fricreg_ctx *ctx);
+
+/* The bounds mun [m] of fricreg_ctx_set_bounds, and W's diagonal [m] (all of W when it is
+ * diagonal); owned by the context, valid until its next setter call. */
+const double *fr_ctx_bounds(const fricreg_ctx *ctx);
+const double *fr_ctx_coupling_diagonal(const fricreg_ctx *ctx);
+
+/* lambda * eps, finite where lambda = mun/eps overflows, so that the step guard can still name
+ * the eps that passes (eps >= dt lambda eps / bound). chord = 0: the stick-zone stiffness of
+ * fricreg_ctx_stick_stiffness. chord = 1: the chord stiffness of (1), (2) and Karnopp, their
+ * jump 2 mun_i across the band 2 eps seen as the slope mun_i/eps of law (3), with (3)'s
+ * coupling (the largest eigenvalue of D^1/2 W D^1/2 for a dense W). A fricreg status
+ * (FRICREG_ENOMEM, recorded in ctx; stiffness.c). */
+int fr_stiffness_times_eps(fricreg_ctx *ctx, int chord, double *rate);
+
+#endif

@@ -1,0 +1,53 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* integrator.h — internal: our integrator enum mapped onto GSL's gsl_odeiv2 steppers. */
+#ifndef FRICREG_INTEGRATOR_H
+#define FRICREG_INTEGRATOR_H
+
+#include <gsl/gsl_odeiv2.h>
+
+struct fr_integrator {
+    int id;           /* enum fricreg_integrator */
+    const char *name; /* GSL's name */
+    const gsl_odeiv2_step_type *(*type)(void);
+    /* Largest stable dt*lambda on the negative real axis for a fixed step of this stepper
+     * (0: not checked a priori, the stepper reports its own failure). */
+    double real_axis_bound;
+    /* Largest dt*lambda, lambda = fricreg_ctx_stick_stiffness, that the step guard accepts:
+     * the real-axis bound, or less where the stick zone fails before it (integrator.c). */
+    double stick_zone_bound;
+    /* Largest dt*omega on the imaginary axis (an undamped oscillation of frequency omega) at
+     * which the amplification per fixed step stays below 1 + 1e-4 (0: not checked). */
+    double imag_axis_bound;
+    /* GSL steps of this stepper per fricreg step dt (GSL's rk4: 2, see integrator.c). */
+    int substeps;
+    /* Absolute tolerance given to GSL's driver in a fixed-step run. Only some steppers read
+     * it: the multistep ones to choose their order (1e-6 keeps them accurate), and the
+     * implicit Runge-Kutta ones as their Newton tolerance, which no iteration meets once a
+     * stick brings the velocity to the rounding floor: they get 1e300, no test at all. */
+    double fixed_tolerance;
+    /* The stepper used for fixed steps, or NULL for `type` itself: fricreg's own classical
+     * RK4 for rk4, which gives GSL rk4's numbers without its error estimate. */
+    const gsl_odeiv2_step_type *(*fixed_type)(void);
+    /* 1 for central differences: fixed steps only, stepped by the driver's own stepper
+     * (type is NULL; fricreg_sim's is src/sim/central_step.c, on its state layout (x, v, D)),
+     * and one combined step bound (dt omega/2)^2 + dt lambda < 0.9 in place of the three
+     * columns above (src/sim/sim.c, check_central_step). */
+    int central;
+    /* 1 for central differences with law (4) solved implicitly, per contact, at the step's end
+     * (src/sim/central_imex.c): the stick zone then bounds no step's stability, and the guard is
+     * the springs', plus the reversal bound where the step does not resolve law (4)'s band
+     * (src/sim/sim.c, check_central_imex_step). */
+    int implicit_friction;
+};
+
+/* rk4_classic.c: two classical RK4 steps per call, as GSL's rk4, with no error estimate. */
+const gsl_odeiv2_step_type *fr_step_rk4_classic(void);
+
+/* The table row of an integrator id, or NULL if unknown. */
+const struct fr_integrator *fr_integrator_find(int id);
+
+/* The GSL stepper for a run: fixed or adaptive steps; NULL for the central rows, whose
+ * stepper is the driver's own (fricreg_sim's, src/sim/central_step.c). */
+const gsl_odeiv2_step_type *fr_integrator_stepper(const struct fr_integrator *integ, int adaptive);
+
+#endif

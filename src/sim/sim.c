@@ -1,0 +1,863 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* sim.c — fricreg_sim: runs a reference system (system.h) on GSL's gsl_odeiv2 steppers.
+ *
+ * The state is y = (x, v, D): body positions, velocities and the dissipated energy, all
+ * advanced by the same scheme. Each forcing cycle is integrated to its exact end, so D per
+ * cycle is a difference of two states. After every step the state is checked for finiteness,
+ * because GSL carries a NaN to the end and reports success. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_math.h>
+#include <gsl/gsl_odeiv2.h>
+
+#include "base/fr_math.h"
+#include "central_imex.h"
+#include "central_step.h"
+#include "ctx/ctx_driver.h"
+#include "ode/integrator.h"
+#include "law/law.h"
+#include "ode/ode_driver.h"
+#include "sim_internal.h"
+
+#define MAX_GSL_STEPS 2147483648.0     /* 2^31 fixed steps in one run */
+#define MAX_CYCLES 1e9                 /* forcing cycles recorded in one run */
+#define STOP_REQUESTED (-1)            /* the observer asked to stop: not an error */
+#define MAX_STEP_PER_PERIOD (1.0 / 32) /* an adaptive step's cap, in forcing periods (advance) */
+
+/* ---- Life cycle and settings ------------------------------------------------------------- */
+
+static void free_run(fricreg_sim *sim)
+{
+    fricreg_ctx_free(sim->ctx);
+    free(sim->y);
+    free(sim->zdot_buf);
+    free(sim->a_free);
+    free(sim->f);
+    free(sim->f_eq);
+    free(sim->stick_time);
+    free(sim->stick_fraction);
+    free(sim->D);
+    free(sim->jac_work);
+    fr_jacobian_free(sim->jac);
+    fr_extrap_free(sim->extrap);
+    sim->extrap = NULL;
+    sim->jac_work = NULL;
+    sim->jac = NULL;
+    sim->ctx = NULL;
+    sim->y = sim->zdot_buf = sim->a_free = sim->f = sim->f_eq = NULL;
+    sim->zdot = NULL;
+    sim->stick_time = sim->stick_fraction = sim->D = NULL;
+    sim->ndof = sim->m = sim->cycles = 0;
+    sim->t = 0.0;
+    sim->steps = sim->rhs_evals = sim->rejected_steps = 0;
+}
+
+void fricreg_sim_free(fricreg_sim *sim)
+{
+    if (sim == NULL)
+        return;
+    free_run(sim);
+    free(sim);
+}
+
+int fricreg_sim_create(int system, fricreg_sim **out)
+{
+    if (out == NULL)
+        return FRICREG_ENULL;
+    const struct fr_system_type *type = fr_system_type_find(system);
+    if (type == NULL)
+        return FRICREG_EINVAL;
+    fricreg_sim *sim = calloc(1, sizeof *sim);
+    if (sim == NULL)
+        return FRICREG_ENOMEM;
+    fr_system_init(&sim->sys, type); /* the paper's parameters */
+    sim->law = FRICREG_LAW_QUINN;
+    sim->partition = FRICREG_PARTITION_CONSISTENT;
+    sim->eps_set = 0.0;
+    sim->integrator = FRICREG_INT_RK4;
+    sim->dt = 0.01;
+    *out = sim;
+    return FRICREG_OK;
+}
+
+/* Records why `param` = value was refused: not finite, not read by this system, or outside
+ * the range of the system's table row `spec`. */
+static int reject_param(fricreg_sim *sim, int param, double value, const struct fr_param_spec *spec)
+{
+    const char *name = fr_param_name(param);
+    char label[32];
+    if (name == NULL)
+        snprintf(label, sizeof label, "parameter %d", param);
+    else
+        snprintf(label, sizeof label, "%s", name);
+    if (!isfinite(value))
+        return fr_fail(sim, FRICREG_ENONFINITE, "set_param: %s = %g is not finite", label, value);
+    if (name == NULL)
+        return fr_fail(sim, FRICREG_EINVAL, "set_param: %s = %g is not a known parameter", label,
+                       value);
+    if (spec == NULL)
+        return fr_fail(sim, FRICREG_EINVAL, "set_param: %s = %g is not a parameter of the %s",
+                       label, value, sim->sys.type->name);
+    return fr_fail(sim, FRICREG_EINVAL, "set_param: %s = %g %s", label, value, spec->rule);
+}
+
+/* A setter or a run called from the observer would free or replace the state the run is
+ * stepping: refused, and the run goes on. `who` names the call. */
+static int refuse_during_run(fricreg_sim *sim, const char *who)
+{
+    return fr_fail(sim, FRICREG_EINVAL, "%s: not allowed during a run (called from the observer)",
+                   who);
+}
+
+int fricreg_sim_set_param(fricreg_sim *sim, int param, double value)
+{
+    if (sim == NULL)
+        return FRICREG_ENULL;
+    if (sim->running)
+        return refuse_during_run(sim, "set_param");
+    size_t slot = 0;
+    const struct fr_param_spec *spec = fr_system_param(sim->sys.type, param, &slot);
+    if (spec == NULL || !isfinite(value) || (spec->valid && !spec->valid(value)))
+        return reject_param(sim, param, value, spec);
+    free_run(sim);
+    sim->sys.p[slot] = value;
+    return FRICREG_OK;
+}
+
+int fricreg_sim_get_param(const fricreg_sim *sim, int param, double *value)
+{
+    if (sim == NULL || value == NULL)
+        return FRICREG_ENULL;
+    size_t slot = 0;
+    if (fr_system_param(sim->sys.type, param, &slot) == NULL)
+        return FRICREG_EINVAL;
+    *value = sim->sys.p[slot];
+    return FRICREG_OK;
+}
+
+int fricreg_sim_set_law(fricreg_sim *sim, int law, double eps)
+{
+    if (sim == NULL)
+        return FRICREG_ENULL;
+    if (sim->running)
+        return refuse_during_run(sim, "set_law");
+    if (!fr_law_known(law))
+        return fr_fail(sim, FRICREG_EINVAL, "set_law: unknown law %d", law);
+    if (!isfinite(eps))
+        return fr_fail(sim, FRICREG_ENONFINITE, "set_law: eps is not finite");
+    if (eps < 0.0)
+        return fr_fail(sim, FRICREG_EINVAL, "set_law: eps = %g must be >= 0", eps);
+    free_run(sim);
+    sim->law = law;
+    sim->eps_set = eps;
+    return FRICREG_OK;
+}
+
+int fricreg_sim_set_partition(fricreg_sim *sim, int partition)
+{
+    if (sim == NULL)
+        return FRICREG_ENULL;
+    if (sim->running)
+        return refuse_during_run(sim, "set_partition");
+    if (partition != FRICREG_PARTITION_CONSISTENT && partition != FRICREG_PARTITION_PAPER)
+        return fr_fail(sim, FRICREG_EINVAL, "set_partition: unknown partition %d", partition);
+    free_run(sim);
+    sim->partition = partition;
+    return FRICREG_OK;
+}
+
+int fricreg_sim_set_integrator(fricreg_sim *sim, int integrator, double dt, double rtol,
+                               double atol)
+{
+    if (sim == NULL)
+        return FRICREG_ENULL;
+    if (sim->running)
+        return refuse_during_run(sim, "set_integrator");
+    if (fr_integrator_find(integrator) == NULL)
+        return fr_fail(sim, FRICREG_EINVAL, "set_integrator: unknown integrator %d", integrator);
+    if (!isfinite(dt) || !isfinite(rtol) || !isfinite(atol))
+        return fr_fail(sim, FRICREG_ENONFINITE, "set_integrator: dt, rtol or atol not finite");
+    if (!(dt > 0.0))
+        return fr_fail(sim, FRICREG_EINVAL, "set_integrator: dt = %g must be > 0", dt);
+    if (rtol < 0.0 || atol < 0.0)
+        return fr_fail(sim, FRICREG_EINVAL, "set_integrator: rtol = %g, atol = %g must be >= 0",
+                       rtol, atol);
+    if (fr_integrator_find(integrator)->central && (rtol > 0.0 || atol > 0.0))
+        return fr_fail(sim, FRICREG_EINVAL,
+                       "set_integrator: central differences have no error estimate: fixed "
+                       "steps only (rtol = atol = 0), got rtol = %g, atol = %g",
+                       rtol, atol);
+    free_run(sim);
+    sim->integrator = integrator;
+    sim->dt = dt;
+    sim->rtol = rtol;
+    sim->atol = atol;
+    return FRICREG_OK;
+}
+
+int fricreg_sim_set_observer(fricreg_sim *sim, fricreg_sim_observer fn, void *user)
+{
+    if (sim == NULL)
+        return FRICREG_ENULL;
+    if (sim->running)
+        return refuse_during_run(sim, "set_observer");
+    sim->observer = fn;
+    sim->observer_user = user;
+    return FRICREG_OK;
+}
+
+static int adaptive(const fricreg_sim *sim)
+{
+    return sim->rtol > 0.0 || sim->atol > 0.0;
+}
+
+static double period(const fricreg_sim *sim)
+{
+    return sim->sys.type->period(&sim->sys);
+}
+
+/* The eps set by fricreg_sim_set_law, or the paper's rule for the current dt. */
+static double eps_in_use(const fricreg_sim *sim)
+{
+    return sim->eps_set > 0.0 ? sim->eps_set : sim->sys.type->paper_eps(&sim->sys, sim->dt);
+}
+
+/* ---- Right-hand side for GSL (its Jacobian: sim_jacobian.c) ----------------------------- */
+
+/* Contact kinematics and friction at (t, x, v), into sim->zdot, a_free, f (and f_eq). */
+static int eval_friction(fricreg_sim *sim, double t, const double y[], int want_feq)
+{
+    const double *x = y, *v = y + sim->ndof;
+    sim->zdot = sim->sys.type->contacts(&sim->sys, t, x, v, sim->zdot_buf, sim->a_free);
+    if (sim->unchecked_eval && !want_feq)
+        return fr_ctx_eval_unchecked(sim->ctx, sim->zdot, sim->a_free, sim->f);
+    return fricreg_ctx_eval(sim->ctx, sim->m, sim->zdot, sim->a_free, sim->f,
+                            want_feq ? sim->f_eq : NULL);
+}
+
+/* The first component of y that has diverged: not finite or beyond FR_SIM_STATE_LIMIT, which no
+ * motion of these systems comes near, so an unstable step on its way to overflow. dim if
+ * none has. Counted first in one vectorized pass, in DIVERGED_LANES partial counts (an early
+ * exit is a branch per component, and one count a serial add), then searched for only when
+ * the count is not 0. */
+enum { DIVERGED_LANES = 8 };
+static size_t first_diverged(const double y[], size_t dim)
+{
+    double count[DIVERGED_LANES] = {0.0}, diverged = 0.0;
+    size_t k = 0;
+    for (; k + DIVERGED_LANES <= dim; k += DIVERGED_LANES)
+        for (size_t l = 0; l < DIVERGED_LANES; l++)
+            count[l] += fabs(y[k + l]) <= FR_SIM_STATE_LIMIT ? 0.0 : 1.0;
+    for (; k < dim; k++) /* the tail */
+        count[0] += fabs(y[k]) <= FR_SIM_STATE_LIMIT ? 0.0 : 1.0;
+    for (size_t l = 0; l < DIVERGED_LANES; l++)
+        diverged += count[l];
+    for (k = 0; diverged > 0.0 && k < dim && fabs(y[k]) <= FR_SIM_STATE_LIMIT; k++)
+        continue;
+    return diverged > 0.0 ? k : dim;
+}
+
+/* The first contact whose kinematics overflowed: a stage of an unstable step. */
+static size_t first_nonfinite_contact(const fricreg_sim *sim)
+{
+    size_t i = 0;
+    while (i < sim->m && isfinite(sim->zdot[i]) && isfinite(sim->a_free[i]))
+        i++;
+    return i;
+}
+
+/* Names component k of the state y = (x, v, D), e.g. "velocity of body 7". */
+static const char *state_part(const fricreg_sim *sim, size_t k, char *buf, size_t len)
+{
+    size_t n = sim->ndof;
+    if (k >= 2 * n)
+        snprintf(buf, len, "dissipation");
+    else
+        snprintf(buf, len, "%s of body %zu", k < n ? "position" : "velocity", k % n);
+    return buf;
+}
+
+/* The ODE's right-hand side for GSL (sim_internal.h): the contacts, the friction through the
+ * context, and the system's bodies pass, which also gives the power for D'. */
+int fr_sim_rhs(double t, const double y[], double dydt[], void *params)
+{
+    fricreg_sim *sim = params;
+    size_t n = sim->ndof;
+    sim->rhs_evals++;
+    int status = eval_friction(sim, t, y, 0);
+    if (status != FRICREG_OK) {
+        sim->rhs_status = status;
+        sim->bad_contact = first_nonfinite_contact(sim);
+        return GSL_EBADFUNC; /* GSL stops the step at once */
+    }
+    double power = sim->sys.type->bodies(&sim->sys, t, y, y + n, sim->zdot, sim->a_free, sim->f,
+                                         dydt);
+    dydt[2 * n] = -sim->sys.type->dissipation_weight(&sim->sys) * power;
+    return GSL_SUCCESS;
+}
+
+/* ---- Running ----------------------------------------------------------------------------- */
+
+static int alloc_run(fricreg_sim *sim, size_t cycles)
+{
+    size_t n = sim->sys.type->ndof(&sim->sys), m = sim->sys.type->ncontacts(&sim->sys);
+    sim->ndof = n;
+    sim->m = m;
+    sim->y = malloc((2 * n + 1) * sizeof *sim->y);
+    sim->zdot_buf = malloc(m * sizeof *sim->zdot_buf);
+    sim->a_free = malloc(m * sizeof *sim->a_free);
+    sim->f = malloc(m * sizeof *sim->f);
+    sim->f_eq = malloc(m * sizeof *sim->f_eq);
+    sim->stick_time = calloc(m, sizeof *sim->stick_time);
+    sim->stick_fraction = calloc(m, sizeof *sim->stick_fraction);
+    sim->D = calloc(cycles + 1, sizeof *sim->D);
+    sim->jac_work = malloc(3 * (2 * n + 1) * sizeof *sim->jac_work);
+    if (!sim->jac_work || !sim->y || !sim->zdot_buf || !sim->a_free || !sim->f || !sim->f_eq ||
+        !sim->stick_time || !sim->stick_fraction || !sim->D)
+        return fr_fail(sim, FRICREG_ENOMEM, "run: out of memory for %zu bodies", n);
+    int status = fricreg_ctx_create(m, &sim->ctx);
+    if (status == FRICREG_OK)
+        status = fricreg_ctx_set_law(sim->ctx, sim->law, sim->eps);
+    if (status == FRICREG_OK)
+        status = fricreg_ctx_set_partition(sim->ctx, sim->partition);
+    if (status == FRICREG_OK)
+        status = sim->sys.type->configure(&sim->sys, sim->ctx);
+    if (status == FRICREG_OK) /* until a Jacobian is asked for (fr_sim_jacobian) */
+        status = fricreg_ctx_set_keep_tangent(sim->ctx, 0);
+    if (status != FRICREG_OK)
+        return fr_fail(sim, status, "run: %s",
+                       sim->ctx ? fricreg_ctx_errmsg(sim->ctx) : fricreg_strerror(status));
+    return FRICREG_OK;
+}
+
+/* The stick zone's refusal. lambda is proportional to 1/eps, so eps >= eps dt lambda / bound
+ * passes at this dt. Under the paper's rule eps is proportional to dt and dt * lambda does not
+ * depend on dt: no dt passes, and only an explicit eps helps (oscillator, mun = 3: eps = 2 dt
+ * gives dt * lambda = 3 > 2.78 for RK4). That is said rather than an eps chosen silently: eps
+ * is part of the model (the stick band, an O(eps) change of the results), and a default that
+ * followed the stepper's bound would move the results whenever the bound table is corrected. */
+/* The refusal where the stick zone's stiffness is beyond the double range: no dt and no eps
+ * to name. */
+static int refuse_overflowing_stick_zone(fricreg_sim *sim)
+{
+    return fr_fail(sim, FRICREG_ESTEP,
+                   "run: the stick zone's stiffness, of order mun/eps, is beyond the double "
+                   "range for eps = %g: lower the bounds mun or raise eps",
+                   sim->eps);
+}
+
+static int refuse_stick_zone(fricreg_sim *sim, const char *what, double bound, double rate)
+{
+    double lambda = rate / sim->eps, z = sim->dt * lambda;
+    double eps_min = sim->dt * rate / bound; /* = eps z/bound, finite where lambda overflows */
+    if (!isfinite(eps_min) || !(bound * sim->eps / rate > 0.0)) /* no step or eps would do */
+        return refuse_overflowing_stick_zone(sim);
+    if (sim->eps_set > 0.0)
+        return fr_fail(sim, FRICREG_ESTEP,
+                       "run: dt = %g too large for the stick zone: its stiffness %g gives "
+                       "dt*lambda = %g > %g, %s; reduce dt to %.6g or raise eps to %.6g",
+                       sim->dt, lambda, z, bound, what, bound * sim->eps / rate, eps_min);
+    return fr_fail(sim, FRICREG_ESTEP,
+                   "run: eps by the paper's rule (eps = %g dt) makes dt*lambda = %g > %g, %s, "
+                   "at every dt; set eps >= %.6g explicitly",
+                   sim->eps / sim->dt, z, bound, what, eps_min);
+}
+
+/* Laws whose force jumps by 2 mun at zdot = 0 (or at Karnopp's band edge) have no linear
+ * zone: a fixed step chatters. Their stiffness is the chord of the jump across the band the
+ * run resolves, lambda = W_ii mun_i/eps (stiffness.h). One step from the band edge with the
+ * whole swing moves zdot_i by at most 2 dt W_ii mun_i = 2 eps dt lambda: it lands inside the
+ * band, of width 2 eps, for every stepper while dt * lambda <= 1. Measured: against the
+ * steppers' real-axis bounds instead (up to 5.1), the chain (n = 8, eps = 0.002) gained energy
+ * under (1) with rk8pd, and the two blocks with mun = (10, 5) by up to 300x their scale. */
+#define CHORD_STEP_BOUND 1.0
+static int law_jumps(int law)
+{
+    return law == FRICREG_LAW_COULOMB || law == FRICREG_LAW_FORCE_BALANCE ||
+           law == FRICREG_LAW_KARNOPP;
+}
+
+/* A reversal of the friction force within one step. A law that jumps ((1), (2), Karnopp) swings
+ * by 2 mun at zdot = 0; a regularized one does so across its band, within one step whenever
+ * eps <= dt |zddot| (the paper's rule eps = 2 dt: whenever |zddot| > 2). A step across the swing
+ * takes its friction impulse with the wrong sign for part of the step, an error J <= 2 mun dt
+ * (unit mass), while the velocity moves by at most v <= dt omega^2 A at amplitude A: an energy
+ * error of at most J v + J^2/2 <= 2 mun dt^2 (omega^2 A + mun). The swing that ends in the
+ * reversal dissipates at least 2 mun A, and a swing worth a reversal has A >= mun/omega^2, the
+ * friction's offset of its centre (a smaller one ends in the stick zone, the stick-zone
+ * bound's business): no energy is gained while 2 omega^2 dt^2 <= 1, dt * omega <= 1/sqrt 2.
+ * Measured without it: rk8pd at dt = 3.7 (its imaginary-axis bound) grew the unforced
+ * oscillator's energy 3.78 -> 104 under (1); the two blocks under (4) with the paper's eps gain
+ * energy from dt * omega = 0.9 with RK4, not at 0.75. */
+#define REVERSAL_STEP_BOUND M_SQRT1_2
+
+/* Central differences (central_step.c) on x'' = -omega^2 x - c x', the linear model of a
+ * contact near stick: c is the stick zone's damping-like rate, at most lambda (the spring is
+ * screened by f_eq where the law is linear, c = lambda, omega = 0; where the band saturates the
+ * spring acts and c < lambda). With p = dt omega, h = dt c, on (x, dt v, dt^2 a) the step's
+ * characteristic polynomial is
+ *   P(mu) = mu^3 - (2 - p^2 - 3h/2) mu^2 + (1 - 2h) mu + h/2,
+ * P(1) = p^2 >= 0 and P(-1) = p^2 + 4h - 4: a root leaves the unit disc through -1 at
+ * p^2/4 + h = 1, and nowhere before (scanned over 0 <= h <= 1, p <= 2.2 in steps of 1e-3).
+ * So the step is stable for (dt omega/2)^2 + dt lambda < 1: dt omega < 2 undamped (the
+ * three-term recurrence), dt lambda < 1 in the linear stick zone (src/structure/central_difference.c),
+ * and dt < 2/(lambda + sqrt(lambda^2 + omega^2)) in between. The friction-reversal bound
+ * (REVERSAL_STEP_BOUND) is kept for the laws that jump only: tests/test_guard.c's sweep finds
+ * no energy put in by (3), tanh or (4) up to the linear bound (dt omega up to 2 sqrt(1 - h)),
+ * while (1) and (2) put it in from dt omega = 1.36 (two blocks, the paper's eps: 0.12 of an
+ * energy scale 3.4; the oscillator from 1.41), a reversal's whole swing within one step. */
+/* Kept 10% inside the linear bound: each cycle's last step is shortened to end on the cycle's
+ * boundary, which breaks the constant-step recurrence once a cycle. Measured on the unforced,
+ * frictionless oscillator over 64 cycles of 2 pi: bounded up to dt omega = 1.9, grown to 8e26
+ * at 1.98. With 0.9 the frictionless limit is dt omega < 1.897. */
+#define CENTRAL_STEP_BOUND 0.9
+static int check_central_step(fricreg_sim *sim, double rate)
+{
+    double lambda = rate / sim->eps, omega = sim->sys.type->max_frequency(&sim->sys);
+    double h = sim->dt * lambda, half_p = 0.5 * sim->dt * omega;
+    if (!(h < CENTRAL_STEP_BOUND)) /* no dt passes under the paper's rule */
+        return refuse_stick_zone(sim, "the stick-zone bound of central differences",
+                                 CENTRAL_STEP_BOUND, rate);
+    if (law_jumps(sim->law) && sim->dt * omega > REVERSAL_STEP_BOUND)
+        return fr_fail(sim, FRICREG_ESTEP,
+                       "run: dt = %g too large for the system's highest frequency %g: "
+                       "dt*omega = %g > %g lets a friction reversal of a law that jumps put "
+                       "energy in within one step; reduce dt to %.6g",
+                       sim->dt, omega, sim->dt * omega, REVERSAL_STEP_BOUND,
+                       REVERSAL_STEP_BOUND / omega);
+    double sum = half_p * half_p + h;
+    if (sum < CENTRAL_STEP_BOUND)
+        return FRICREG_OK;
+    const double B = CENTRAL_STEP_BOUND; /* dt_max solves (omega dt/2)^2 + lambda dt = B */
+    double dt_max = sim->eps_set > 0.0
+                        ? 2.0 * B / (lambda + sqrt(lambda * lambda + B * omega * omega))
+                        : 2.0 * sqrt(B - h) / omega;
+    return fr_fail(sim, FRICREG_ESTEP,
+                   "run: dt = %g too large for central differences: (dt*omega/2)^2 + "
+                   "dt*lambda = %g >= %g (omega = %g the highest frequency, lambda = %g the "
+                   "stick-zone stiffness); reduce dt below %.6g",
+                   sim->dt, sum, CENTRAL_STEP_BOUND, omega, lambda, dt_max);
+}
+
+/* Central differences with implicit friction (central_imex.c): the friction's velocity term
+ * is the trapezoid's, stable at every dt lambda, so only the springs bound the step's
+ * stability, (dt omega/2)^2 < CENTRAL_STEP_BOUND (its margin as above). Energy is another
+ * matter: where dt lambda >= CENTRAL_STEP_BOUND the step no longer resolves law (4)'s band,
+ * (4) reverses within one step like a law that jumps, and the reversal bound applies
+ * (REVERSAL_STEP_BOUND). Measured without it (tests/test_guard.c's sweep): the oscillator
+ * with eps = 0.02 gained 0.45 of an energy scale of 3.8 at dt omega = 1.9, and with
+ * mun = 3, eps = 0.05 from dt omega = 1.42; the paper's eps = 2 dt (dt lambda = 1) gained
+ * from dt omega = 1.71. With the band resolved, dt lambda below the explicit scheme's own
+ * stick-zone bound, the sweep finds no energy put in up to the springs' bound (the chain at
+ * dt omega = 1.9). */
+static int check_central_imex_step(fricreg_sim *sim, double rate)
+{
+    double lambda = rate / sim->eps, omega = sim->sys.type->max_frequency(&sim->sys);
+    double half_p = 0.5 * sim->dt * omega, h = sim->dt * lambda;
+    if (!isfinite(lambda))
+        return refuse_overflowing_stick_zone(sim);
+    if (!(half_p * half_p < CENTRAL_STEP_BOUND))
+        return fr_fail(sim, FRICREG_ESTEP,
+                       "run: dt = %g too large for central differences: (dt*omega/2)^2 = %g >= "
+                       "%g (omega = %g the highest frequency); reduce dt below %.6g",
+                       sim->dt, half_p * half_p, CENTRAL_STEP_BOUND, omega,
+                       2.0 * sqrt(CENTRAL_STEP_BOUND) / omega);
+    if (h >= CENTRAL_STEP_BOUND && sim->dt * omega > REVERSAL_STEP_BOUND)
+        return fr_fail(sim, FRICREG_ESTEP,
+                       "run: dt = %g, eps = %g: dt*lambda = %g >= %g leaves law (4)'s band "
+                       "unresolved, where dt*omega = %g > %g lets a friction reversal put "
+                       "energy in; reduce dt to %.6g or raise eps to %.6g",
+                       sim->dt, sim->eps, h, CENTRAL_STEP_BOUND, sim->dt * omega,
+                       REVERSAL_STEP_BOUND, REVERSAL_STEP_BOUND / omega,
+                       sim->dt * rate / CENTRAL_STEP_BOUND * (1.0 + 1e-9));
+    return FRICREG_OK;
+}
+
+/* A fixed explicit step must keep dt * lambda within the stepper's stick-zone bound, lambda
+ * the context's stick-zone stiffness (fricreg_ctx_stick_stiffness: coupled contacts
+ * included), and dt * omega_max within its imaginary-axis bound and within
+ * REVERSAL_STEP_BOUND, omega_max the system's highest natural frequency (the chain's
+ * springs: 2n). */
+static int check_step(fricreg_sim *sim, const struct fr_integrator *integ)
+{
+    const char *refusal = integ->implicit_friction ? fr_central_imex_refusal(sim) : NULL;
+    if (refusal != NULL) /* what the step solves, not a stability limit: never unguarded */
+        return fr_fail(sim, FRICREG_EINVAL, "run: integrator %s: %s", integ->name, refusal);
+    if (adaptive(sim) || sim->unguarded || integ->stick_zone_bound == 0.0)
+        return FRICREG_OK; /* implicit and multistep steppers report their own failures */
+    double rate = 0.0;     /* lambda * eps (stiffness.h) */
+    int status = fr_stiffness_times_eps(sim->ctx, law_jumps(sim->law), &rate);
+    if (status != FRICREG_OK)
+        return fr_fail(sim, FRICREG_ENOMEM, "run: %s", fricreg_ctx_errmsg(sim->ctx));
+    double lambda = rate / sim->eps; /* +inf when mun/eps overflows: refused below */
+    char what[64];
+    if (law_jumps(sim->law) && sim->dt * lambda > CHORD_STEP_BOUND)
+        return refuse_stick_zone(sim, "where a law that jumps chatters out of its band",
+                                 CHORD_STEP_BOUND, rate);
+    if (integ->implicit_friction)
+        return check_central_imex_step(sim, rate);
+    if (integ->central)
+        return check_central_step(sim, rate);
+    snprintf(what, sizeof what, "the stick-zone bound of %s", integ->name);
+    if (sim->dt * lambda > integ->stick_zone_bound)
+        return refuse_stick_zone(sim, what, integ->stick_zone_bound, rate);
+    double omega = sim->sys.type->max_frequency(&sim->sys), z = sim->dt * omega;
+    if (z > integ->imag_axis_bound)
+        return fr_fail(sim, FRICREG_ESTEP,
+                       "run: dt = %g too large for the system's highest frequency %g: "
+                       "dt*omega = %g > %g, the stability bound of %s; reduce dt",
+                       sim->dt, omega, z, integ->imag_axis_bound, integ->name);
+    if (z > REVERSAL_STEP_BOUND)
+        return fr_fail(sim, FRICREG_ESTEP,
+                       "run: dt = %g too large for the system's highest frequency %g: "
+                       "dt*omega = %g > %g lets a friction reversal within one step put "
+                       "energy in; reduce dt to %.6g",
+                       sim->dt, omega, z, REVERSAL_STEP_BOUND, REVERSAL_STEP_BOUND / omega);
+    return FRICREG_OK;
+}
+
+static int observe(fricreg_sim *sim)
+{
+    int status = eval_friction(sim, sim->t, sim->y, 1);
+    if (status != FRICREG_OK)
+        return fr_fail(sim, status, "run: t = %.17g: %s", sim->t, fricreg_ctx_errmsg(sim->ctx));
+    const double *x = sim->y, *v = sim->y + sim->ndof;
+    int stop = sim->observer(sim->observer_user, sim->t, sim->ndof, x, v, sim->m, sim->f,
+                             sim->f_eq);
+    return stop ? STOP_REQUESTED : FRICREG_OK;
+}
+
+/* The step's h to the near-stick time of each contact within the band |zdot| < eps. */
+static void add_stick_time(fricreg_sim *sim, double h)
+{
+    const double *zdot = sim->sys.type->contacts(&sim->sys, sim->t, sim->y, sim->y + sim->ndof,
+                                                 sim->zdot_buf, NULL);
+    for (size_t i = 0; i < sim->m; i++)
+        sim->stick_time[i] += fabs(zdot[i]) < sim->eps ? h : 0.0;
+}
+
+/* After a step from t_before: finiteness, near-stick time, the observer. */
+static int after_step(fricreg_sim *sim, double t_before)
+{
+    size_t dim = 2 * sim->ndof + 1;
+    int checked = sim->step_checked; /* by the step's own last pass: no pass here */
+    sim->step_checked = 0;
+    size_t k = checked && sim->step_diverged == 0 ? dim : first_diverged(sim->y, dim);
+    char part[64];
+    if (k < dim)
+        return fr_fail(sim, FRICREG_EDIVERGED,
+                       "run: state diverged at t = %.17g (%s): the step is unstable; reduce dt",
+                       sim->t, state_part(sim, k, part, sizeof part));
+    if (!checked)
+        add_stick_time(sim, sim->t - t_before);
+    return sim->observer ? observe(sim) : FRICREG_OK;
+}
+
+static int step_failure(fricreg_sim *sim, int gsl_status)
+{
+    if (sim->rhs_status == FRICREG_ENONFINITE) /* a stage of the step blew up */
+        return fr_fail(sim, FRICREG_EDIVERGED,
+                       "run: contact %zu overflowed in the step from t = %.17g: the step is "
+                       "unstable; reduce dt",
+                       sim->bad_contact, sim->t);
+    if (sim->rhs_status == FRICREG_ENOMEM) /* the context never runs out: the Jacobian did */
+        return fr_fail(sim, FRICREG_ENOMEM, "run: t = %.17g: out of memory for the Jacobian",
+                       sim->t);
+    if (sim->rhs_status != FRICREG_OK)
+        return fr_fail(sim, sim->rhs_status, "run: t = %.17g: %s", sim->t,
+                       fricreg_ctx_errmsg(sim->ctx));
+    return fr_fail(sim, FRICREG_EINTEGRATOR, "run: GSL stepper failed at t = %.17g: %s", sim->t,
+                   gsl_strerror(gsl_status));
+}
+
+/* One fixed step of size h. GSL's implicit and multistep steppers fail a step when their
+ * Newton or corrector iteration does not converge, which happens at an exact stick, where the
+ * velocity sits at the rounding floor; such a step is retried as two half steps, down to
+ * h / 2^MAX_HALVINGS, so the run keeps the caller's step grid. Explicit steppers never fail.
+ * Each retried step counts as rejected (FRICREG_SIM_STAT_REJECTED_STEPS), as GSL counts the
+ * adaptive control's retries. */
+#define MAX_HALVINGS 10
+
+/* A step of fricreg's own fixed-step steppers (rk4_classic.c, central_step.c) straight
+ * through the stepper: GSL's evolve would copy the state to restore it on failure, which
+ * these steppers never write before they succeed, and have them clear an error estimate
+ * they do not make. */
+static int own_step(fricreg_sim *sim, gsl_odeiv2_driver *d, double h)
+{
+    int status = gsl_odeiv2_step_apply(d->s, sim->t, h, sim->y, NULL, NULL, NULL, d->sys);
+    if (status == GSL_SUCCESS)
+        sim->t += h;
+    return status;
+}
+
+static int apply_fixed_step(fricreg_sim *sim, gsl_odeiv2_driver *d,
+                            const struct fr_integrator *integ, double h, int depth)
+{
+    double t0 = sim->t, *y = sim->y;
+    if (integ->central || integ->fixed_type != NULL) /* explicit: they never fail a step */
+        return own_step(sim, d, h);
+    int status = gsl_odeiv2_evolve_apply_fixed_step(d->e, NULL, d->s, d->sys, &sim->t, h, y);
+    if (status != GSL_FAILURE || depth == MAX_HALVINGS || sim->rhs_status != FRICREG_OK)
+        return status;
+    sim->rejected_steps++;
+    sim->t = t0; /* GSL leaves t and y unchanged on failure */
+    gsl_odeiv2_step_reset(d->s);
+    status = apply_fixed_step(sim, d, integ, 0.5 * h, depth + 1);
+    return status == GSL_SUCCESS ? apply_fixed_step(sim, d, integ, t0 + h - sim->t, depth + 1)
+                                 : status;
+}
+
+/* Integrates from sim->t to t_target exactly. An adaptive step is capped at
+ * MAX_STEP_PER_PERIOD of the forcing period: while every contact sticks, the state is at rest
+ * and GSL's error estimate is zero whatever the step, but the forcing that will break the
+ * stick is not part of the state. Uncapped, msbdf with the exact Jacobian stepped from a stick
+ * at t = 0.295 to the cycle's end at 12.57 over a whole slip phase (oscillator a = 2,
+ * omega = 0.5, x0 = 0.385, v0 = -0.217, eps 1e-6: D = 0 instead of 10.4). Capped, the step
+ * that crosses a break-away lands in the slip phase, where the estimate rejects it. */
+static int advance(fricreg_sim *sim, gsl_odeiv2_driver *d, const struct fr_integrator *integ,
+                   double t_target, double *h)
+{
+    double gsl_dt = sim->dt * integ->substeps;
+    while (sim->t < t_target) {
+        double t_before = sim->t;
+        int gsl_status;
+        if (adaptive(sim)) {
+            double t_stop = fmin(t_target, sim->t + MAX_STEP_PER_PERIOD * period(sim));
+            gsl_status = gsl_odeiv2_evolve_apply(d->e, d->c, d->s, d->sys, &sim->t, t_stop, h,
+                                                 sim->y);
+        } else {
+            /* The last step of a cycle is shortened to end on its boundary. */
+            int last = t_target - sim->t <= gsl_dt * (1.0 + 1e-9);
+            double step = last ? t_target - sim->t : gsl_dt;
+            gsl_status = apply_fixed_step(sim, d, integ, step, 0);
+            if (last && gsl_status == GSL_SUCCESS)
+                sim->t = t_target;
+        }
+        if (gsl_status != GSL_SUCCESS)
+            return step_failure(sim, gsl_status);
+        sim->steps += adaptive(sim) ? 1 : integ->substeps;
+        int status = after_step(sim, t_before);
+        if (status != FRICREG_OK)
+            return status;
+    }
+    return FRICREG_OK;
+}
+
+/* time/span, a fraction: the steps' h summed over a cycle can pass the cycle's length by
+ * rounding (1.000000000000007 for a contact stuck all cycle), which a fraction cannot. */
+static double fraction_of(double time, double span)
+{
+    return fmin(time / span, 1.0);
+}
+
+static void close_cycle(fricreg_sim *sim, double period, double *D_start)
+{
+    double D_now = sim->y[2 * sim->ndof];
+    sim->D[sim->cycles++] = D_now - *D_start;
+    if (sim->capture_y != NULL && sim->cycles == sim->capture_cycle)
+        memcpy(sim->capture_y, sim->y, (2 * sim->ndof + 1) * sizeof *sim->y);
+    *D_start = D_now;
+    for (size_t i = 0; i < sim->m; i++) {
+        sim->stick_fraction[i] = fraction_of(sim->stick_time[i], period);
+        sim->stick_time[i] = 0.0;
+    }
+}
+
+/* Integrates the `cycles` whole forcing cycles within t_end (after the start_cycle ones a
+ * window's run skips), then the rest of the way. */
+static int integrate(fricreg_sim *sim, gsl_odeiv2_driver *d, const struct fr_integrator *integ,
+                     double t_end, size_t cycles)
+{
+    double T = period(sim), D_start = 0.0, h = sim->dt;
+    int status = sim->observer ? observe(sim) : FRICREG_OK;
+    for (size_t k = sim->start_cycle + 1; status == FRICREG_OK && sim->t < t_end; k++) {
+        int whole = k <= sim->start_cycle + cycles;
+        status = advance(sim, d, integ, whole ? (double)k * T : t_end, &h);
+        if (status == FRICREG_OK && whole)
+            close_cycle(sim, T, &D_start);
+    }
+    if (sim->cycles == 0 && sim->t > 0.0) /* no whole cycle: report over the whole run */
+        for (size_t i = 0; i < sim->m; i++)
+            sim->stick_fraction[i] = fraction_of(sim->stick_time[i], sim->t);
+    return status == STOP_REQUESTED ? FRICREG_OK : status;
+}
+
+/* The stepper of a run: the table's (src/ode/integrator.c), or for its central rows
+ * fricreg_sim's own (central_step.c). */
+static const gsl_odeiv2_step_type *run_stepper(const fricreg_sim *sim,
+                                               const struct fr_integrator *integ)
+{
+    if (integ->central)
+        return integ->implicit_friction ? fr_step_central_imex() : fr_step_central();
+    return fr_integrator_stepper(integ, adaptive(sim));
+}
+
+int fricreg_sim_run(fricreg_sim *sim, double t_end)
+{
+    if (sim == NULL)
+        return FRICREG_ENULL;
+    if (sim->running)
+        return refuse_during_run(sim, "run");
+    if (!isfinite(t_end))
+        return fr_fail(sim, FRICREG_ENONFINITE, "run: t_end is not finite");
+    const struct fr_integrator *integ = fr_integrator_find(sim->integrator);
+    if (!(t_end > 0.0))
+        return fr_fail(sim, FRICREG_EINVAL, "run: t_end = %g must be > 0", t_end);
+    if (!adaptive(sim) && t_end / (sim->dt * integ->substeps) > MAX_GSL_STEPS)
+        return fr_fail(sim, FRICREG_EINVAL, "run: t_end/dt = %g steps is too many",
+                       t_end / sim->dt);
+    double whole_cycles = fr_whole_cycles(t_end, period(sim));
+    if (whole_cycles > MAX_CYCLES)
+        return fr_fail(sim, FRICREG_EINVAL, "run: t_end = %g spans more than 10^9 cycles", t_end);
+    if (sim->start_cycle > 0 && (double)sim->start_cycle >= whole_cycles) /* extrapolate.c */
+        return fr_fail(sim, FRICREG_EINVAL, "run: a window from cycle %zu of %g", sim->start_cycle,
+                       whole_cycles);
+    free_run(sim);
+    sim->eps = eps_in_use(sim);
+    size_t cycles = (size_t)whole_cycles - sim->start_cycle;
+    int status = alloc_run(sim, cycles);
+    if (status == FRICREG_OK)
+        status = check_step(sim, integ);
+    if (status != FRICREG_OK) {
+        free_run(sim); /* nothing was reached: the getters report the initial state */
+        return status;
+    }
+    sim->sys.type->initial(&sim->sys, sim->y, sim->y + sim->ndof);
+    if (sim->start_y != NULL) { /* a window's level: level 0's state where the window starts */
+        memcpy(sim->y, sim->start_y, 2 * sim->ndof * sizeof *sim->y);
+        sim->t = (double)sim->start_cycle * period(sim);
+    }
+    sim->y[2 * sim->ndof] = 0.0;
+    sim->rhs_status = FRICREG_OK;
+    sim->step_checked = 0;
+
+    size_t dim = 2 * sim->ndof + 1;
+    gsl_odeiv2_system sys = {fr_sim_rhs, fr_sim_jacobian, dim, sim};
+    /* Fixed steps never consult the control, but some steppers read the driver's tolerances:
+     * the multistep ones to pick their order (moderate values), the implicit Runge-Kutta
+     * ones for their Newton iteration (integrator.h, fixed_tolerance). */
+    double tol_abs = adaptive(sim) ? sim->atol : integ->fixed_tolerance;
+    double tol_rel = adaptive(sim) ? sim->rtol : 0.0;
+    const gsl_odeiv2_step_type *stepper = run_stepper(sim, integ);
+    gsl_odeiv2_driver *d = fr_ode_driver_alloc(&sys, stepper, sim->dt * integ->substeps, tol_abs,
+                                               tol_rel);
+    if (d == NULL)
+        return fr_fail(sim, FRICREG_ENOMEM, "run: GSL driver allocation failed");
+    sim->running = 1;
+    sim->unchecked_eval = !adaptive(sim) && (integ->central || integ->fixed_type != NULL);
+    status = integrate(sim, d, integ, t_end, cycles);
+    sim->unchecked_eval = 0;
+    sim->running = 0;
+    sim->rejected_steps += (int64_t)d->e->failed_steps; /* the adaptive control's rejections */
+    gsl_odeiv2_driver_free(d);
+    return status;
+}
+
+int fricreg_sim_run_cycles(fricreg_sim *sim, int cycles)
+{
+    if (sim == NULL)
+        return FRICREG_ENULL;
+    if (cycles < 1)
+        return fr_fail(sim, FRICREG_EINVAL, "run_cycles: cycles = %d must be >= 1", cycles);
+    return fricreg_sim_run(sim, cycles * period(sim));
+}
+
+/* ---- Results ----------------------------------------------------------------------------- */
+
+size_t fricreg_sim_ndof(const fricreg_sim *sim)
+{
+    return sim ? sim->sys.type->ndof(&sim->sys) : 0;
+}
+
+size_t fricreg_sim_ncontacts(const fricreg_sim *sim)
+{
+    return sim ? sim->sys.type->ncontacts(&sim->sys) : 0;
+}
+
+int fricreg_sim_get_value(const fricreg_sim *sim, int which, double *value)
+{
+    if (sim == NULL || value == NULL)
+        return FRICREG_ENULL;
+    switch (which) {
+    case FRICREG_VALUE_TIME: *value = sim->t; break;
+    case FRICREG_VALUE_EPS: *value = eps_in_use(sim); break;
+    case FRICREG_VALUE_DT: *value = sim->dt; break;
+    case FRICREG_VALUE_PERIOD: *value = period(sim); break;
+    case FRICREG_VALUE_STEPS: *value = (double)sim->steps; break;
+    case FRICREG_VALUE_RHS_EVALS: *value = (double)sim->rhs_evals; break;
+    case FRICREG_VALUE_CYCLES: *value = (double)sim->cycles; break;
+    case FRICREG_VALUE_DISSIPATION: *value = sim->y ? sim->y[2 * sim->ndof] : 0.0; break;
+    default: return FRICREG_EINVAL;
+    }
+    return FRICREG_OK;
+}
+
+int fricreg_sim_get_stat(const fricreg_sim *sim, int which, int64_t *value)
+{
+    if (sim == NULL || value == NULL)
+        return FRICREG_ENULL;
+    switch (which) {
+    case FRICREG_SIM_STAT_STEPS: *value = sim->steps; break;
+    case FRICREG_SIM_STAT_RHS_EVALS: *value = sim->rhs_evals; break;
+    case FRICREG_SIM_STAT_CYCLES: *value = (int64_t)sim->cycles; break;
+    case FRICREG_SIM_STAT_REJECTED_STEPS: *value = sim->rejected_steps; break;
+    default: return FRICREG_EINVAL;
+    }
+    return FRICREG_OK;
+}
+
+int fricreg_sim_get_state(const fricreg_sim *sim, size_t ndof, double x[], double v[])
+{
+    if (sim == NULL || x == NULL || v == NULL)
+        return FRICREG_ENULL;
+    if (ndof != fricreg_sim_ndof(sim))
+        return FRICREG_ESIZE;
+    if (sim->y == NULL) /* not run yet: the initial conditions */
+        sim->sys.type->initial(&sim->sys, x, v);
+    else {
+        memcpy(x, sim->y, ndof * sizeof *x);
+        memcpy(v, sim->y + ndof, ndof * sizeof *v);
+    }
+    return FRICREG_OK;
+}
+
+int fricreg_sim_get_dissipation(const fricreg_sim *sim, size_t ncycles, double D[])
+{
+    if (sim == NULL || (D == NULL && ncycles > 0))
+        return FRICREG_ENULL;
+    if (ncycles != sim->cycles)
+        return FRICREG_ESIZE;
+    if (ncycles > 0)
+        memcpy(D, sim->D, ncycles * sizeof *D);
+    return FRICREG_OK;
+}
+
+int fricreg_sim_get_stick_fraction(const fricreg_sim *sim, size_t m, double frac[])
+{
+    if (sim == NULL || frac == NULL)
+        return FRICREG_ENULL;
+    if (m != fricreg_sim_ncontacts(sim))
+        return FRICREG_ESIZE;
+    for (size_t i = 0; i < m; i++)
+        frac[i] = sim->stick_fraction ? sim->stick_fraction[i] : 0.0;
+    return FRICREG_OK;
+}
+
+int fricreg_sim_errcode(const fricreg_sim *sim)
+{
+    return sim ? sim->err.code : FRICREG_OK;
+}
+
+const char *fricreg_sim_errmsg(const fricreg_sim *sim)
+{
+    return sim ? sim->err.msg : "NULL simulation";
+}
+
+size_t fricreg_sim_errmsg_copy(const fricreg_sim *sim, char *buf, size_t len)
+{
+    return fr_error_copy(fricreg_sim_errmsg(sim), buf, len);
+}

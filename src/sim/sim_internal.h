@@ -1,0 +1,93 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* sim_internal.h — the simulation's layout: a reference system (system.h) and the state of
+ * its run (sim.c). */
+#ifndef FRICREG_SIM_INTERNAL_H
+#define FRICREG_SIM_INTERNAL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "base/error.h"
+#include "fricreg_sim.h"
+#include "system.h"
+
+/* |state| beyond this: diverged, an unstable step on its way to overflow (sim.c's after-step
+ * check; central_step.c's fused pass). */
+#define FR_SIM_STATE_LIMIT 1e100
+
+struct fricreg_sim {
+    struct fr_system sys; /* the system and its parameters */
+    int law;
+    int partition;  /* enum fricreg_partition, passed to the context */
+    int running;    /* 1 while fricreg_sim_run steps: the observer may not change the run */
+    int unguarded;  /* tests only (test_guard.c, static library): skip the step guard, to see
+                    * what a refused step would have done */
+    double eps_set; /* 0: the paper's rule */
+    int integrator;
+    double dt, rtol, atol;
+    fricreg_sim_observer observer;
+    void *observer_user;
+
+    /* Working state of a run, sized by the system at its start. */
+    size_t ndof, m;
+    double eps;
+    fricreg_ctx *ctx;
+    double *y;               /* [2 ndof + 1]: x, v, D */
+    double *zdot_buf;        /* [m] contact velocities, for systems that do not pass v */
+    const double *zdot;      /* [m] the last evaluation's contact velocities: zdot_buf or v */
+    double *a_free;          /* [m] free accelerations */
+    double *f, *f_eq;        /* [m] friction */
+    double *stick_time;      /* [m] near-stick time in the current cycle */
+    double *stick_fraction;  /* [m] result */
+    double *D;               /* [cycles] dissipation per cycle */
+    double *jac_work;        /* [3 (2 ndof + 1)] finite-difference Jacobian scratch */
+    struct fr_jacobian *jac; /* the analytic Jacobian's maps, made at its first use */
+    size_t cycles;
+    double t;
+    int64_t steps, rhs_evals, rejected_steps; /* enum fricreg_sim_stat */
+    int rhs_status;                           /* fricreg status raised inside the right-hand side */
+    size_t bad_contact;       /* with FRICREG_ENONFINITE: the first contact that overflowed */
+    struct fr_extrap *extrap; /* extrapolate.c: the last fricreg_sim_run_extrapolated */
+    /* Set by a step that made the after-step checks in its own last pass (central_step.c):
+     * it counted the diverged components into step_diverged and added the step to
+     * stick_time, so after_step skips its two passes over the state. */
+    int step_checked;
+    size_t step_diverged;
+    /* Set for the run of a fixed step of fricreg's own explicit steppers (rk4, central), which
+     * never fail a step and whose state after_step checks: the right-hand side then skips the
+     * context's finiteness pass (fr_ctx_eval_unchecked), a non-finite input reaching the
+     * state instead. */
+    int unchecked_eval;
+
+    /* extrapolate.c's window (fricreg_sim_run_extrapolated_window), kept across free_run: a
+     * run that starts at the end of cycle start_cycle from the state start_y (x, v; D starts
+     * at 0) and records only the cycles after it; a run that copies its state (x, v, D) at
+     * the end of cycle capture_cycle into capture_y. 0 and NULL: neither. */
+    size_t start_cycle, capture_cycle;
+    const double *start_y; /* [2 ndof] */
+    double *capture_y;     /* [2 ndof + 1] */
+
+    struct fr_error err;
+};
+
+/* sim.c: the right-hand side of the ODE y = (x, v, D) for gsl_odeiv2_system (params: the
+ * fricreg_sim). Leaves the contacts' zdot, a_free and f of (t, y) in the simulation and the
+ * context. GSL_EBADFUNC, with sim->rhs_status set, if the context refuses the state. */
+int fr_sim_rhs(double t, const double y[], double dydt[], void *params);
+
+/* sim_jacobian.c: the Jacobian dfdy [dim x dim, row-major] and dfdt [dim] of fr_sim_rhs, for
+ * gsl_odeiv2_system, dim = 2 ndof + 1. fr_sim_jacobian is analytic (the system's linear maps
+ * through fricreg_ctx_tangent), or fr_sim_jacobian_fd for a system without maps;
+ * fr_sim_jacobian_fd is by forward differences. Both leave the context at an evaluation of
+ * (t, y) or a nearby state, and fail as fr_sim_rhs does; fr_sim_jacobian also with
+ * GSL_ENOMEM (rhs_status FRICREG_ENOMEM) when it cannot allocate its maps. */
+struct fr_jacobian;
+int fr_sim_jacobian(double t, const double y[], double *dfdy, double dfdt[], void *params);
+int fr_sim_jacobian_fd(double t, const double y[], double *dfdy, double dfdt[], void *params);
+void fr_jacobian_free(struct fr_jacobian *J);
+
+/* extrapolate.c: releases an extrapolation (NULL: nothing), as free_run discards it. */
+struct fr_extrap;
+void fr_extrap_free(struct fr_extrap *x);
+
+#endif

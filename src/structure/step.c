@@ -1,0 +1,159 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* step.c — stepping a fricreg_structure: the equilibrium acceleration at the start, one
+ * step of the selected scheme (newmark.c, central_difference.c), the energy balance
+ * (energy.c) and the counters; fricreg_structure_step and fricreg_structure_run. */
+#include <float.h>
+#include <math.h>
+
+#include <gsl/gsl_blas.h>
+#include <gsl/gsl_linalg.h>
+
+#include "structure_internal.h"
+
+#define STATE_LIMIT 1e100 /* |state| beyond this: diverged */
+#define MAX_RUN_STEPS 2147483648.0
+
+double fr_norm_inf(const gsl_vector *x)
+{
+    double m = 0.0;
+    for (size_t k = 0; k < x->size; k++) {
+        double a = fabs(gsl_vector_get(x, k));
+        if (!(a <= m)) /* NaN propagates */
+            m = a;
+    }
+    return m;
+}
+
+/* a_free = G w and zdot = J v, then f from the context: the friction at a state whose
+ * net non-friction force is w. */
+int fr_structure_friction(fricreg_structure *s, const gsl_vector *w, const gsl_vector *v,
+                          gsl_vector *f)
+{
+    gsl_blas_dgemv(CblasNoTrans, 1.0, s->G, w, 0.0, s->afree);
+    gsl_blas_dgemv(CblasNoTrans, 1.0, s->J, v, 0.0, s->zdot);
+    int status = fricreg_ctx_eval(s->ctx, s->m, s->zdot->data, s->afree->data, f->data, NULL);
+    /* The context's inputs are the structure's own state, from validated data: one that is
+     * not finite (or an f_eq beyond range) means the state overflowed, e.g. a finite dt of
+     * 1e200 (tests/test_bad_input.c), which the headers call FRICREG_EDIVERGED. */
+    return status == FRICREG_ENONFINITE ? FRICREG_EDIVERGED : status;
+}
+
+/* w = p~ - C v - K u */
+void fr_structure_net_force(const fricreg_structure *s, const gsl_vector *ptil, const gsl_vector *u,
+                            const gsl_vector *v, gsl_vector *w)
+{
+    gsl_vector_memcpy(w, ptil);
+    gsl_blas_dgemv(CblasNoTrans, -1.0, s->C, v, 1.0, w);
+    gsl_blas_dgemv(CblasNoTrans, -1.0, s->K, u, 1.0, w);
+}
+
+int fr_structure_equilibrium(fricreg_structure *s)
+{
+    fr_structure_effective_load(s, s->t, s->ptil);
+    fr_structure_net_force(s, s->ptil, s->u, s->v, s->work);
+    int status = fr_structure_friction(s, s->work, s->v, s->f);
+    if (status != FRICREG_OK)
+        return fr_fail(s, status, "step: friction at t = %g: %s", s->t, fricreg_ctx_errmsg(s->ctx));
+    /* M a = w + J^T f */
+    gsl_blas_dgemv(CblasTrans, 1.0, s->J, s->f, 1.0, s->work);
+    gsl_linalg_cholesky_solve(s->L, s->work, s->a);
+    s->stick_valid = 0; /* bounds, law or model may have changed */
+    s->ready = 1;
+    return FRICREG_OK;
+}
+
+static int beyond_limit(const gsl_vector *x)
+{
+    return !(fr_norm_inf(x) <= STATE_LIMIT);
+}
+
+/* One step from s->t to t1 (> s->t). */
+static int step_to(fricreg_structure *s, double t1)
+{
+    double dt = t1 - s->t;
+    int status = fr_structure_prepare(s);
+    if (status == FRICREG_OK && !s->ready)
+        status = fr_structure_equilibrium(s);
+    if (status != FRICREG_OK)
+        return status;
+    if (s->fresh)
+        fr_energy_start(s);
+    fr_structure_effective_load(s, t1, s->ptil1);
+    int converged = 1, iters = 0;
+    if (s->scheme == FR_SCHEME_CENTRAL)
+        status = fr_central_solve(s, dt);
+    else
+        status = fr_newmark_solve(s, dt, &converged, &iters);
+    if (status != FRICREG_OK)
+        return status;
+    if (beyond_limit(s->u1) || beyond_limit(s->v1) || beyond_limit(s->x))
+        return fr_fail(s, FRICREG_EDIVERGED, "step: the state at t = %g is beyond 1e100", t1);
+
+    fr_energy_step(s, s->u1, s->v1, s->ptil1, s->f1);
+    gsl_vector_memcpy(s->u, s->u1);
+    gsl_vector_memcpy(s->v, s->v1);
+    gsl_vector_memcpy(s->a, s->x);
+    gsl_vector_memcpy(s->ptil, s->ptil1);
+    gsl_vector_memcpy(s->f, s->f1);
+    s->t = t1;
+    s->fresh = 0;
+    s->stats[FRICREG_SSTAT_STEPS]++;
+    s->stats[FRICREG_SSTAT_NEWTON_ITERATIONS] += iters;
+    if (iters > s->stats[FRICREG_SSTAT_NEWTON_MAX])
+        s->stats[FRICREG_SSTAT_NEWTON_MAX] = iters;
+    if (!converged)
+        s->stats[FRICREG_SSTAT_NEWTON_FAILURES]++;
+    return FRICREG_OK;
+}
+
+static int check_dt(fricreg_structure *s, const char *name, double dt)
+{
+    if (!isfinite(dt))
+        return fr_fail(s, FRICREG_ENONFINITE, "%s: dt is not finite", name);
+    if (!(dt > 0.0))
+        return fr_fail(s, FRICREG_EINVAL, "%s: dt = %g must be > 0", name, dt);
+    return FRICREG_OK;
+}
+
+int fricreg_structure_step(fricreg_structure *s, double dt)
+{
+    if (s == NULL)
+        return FRICREG_ENULL;
+    int status = check_dt(s, "step", dt);
+    if (status != FRICREG_OK)
+        return status;
+    double t1 = s->t + dt;
+    if (!(t1 > s->t))
+        return fr_fail(s, FRICREG_EINVAL, "step: dt = %g is lost against t = %g", dt, s->t);
+    return step_to(s, t1);
+}
+
+int fricreg_structure_run(fricreg_structure *s, double dt, double t_end)
+{
+    if (s == NULL)
+        return FRICREG_ENULL;
+    int status = check_dt(s, "run", dt);
+    if (status != FRICREG_OK)
+        return status;
+    if (!isfinite(t_end))
+        return fr_fail(s, FRICREG_ENONFINITE, "run: t_end is not finite");
+    double t0 = s->t;
+    if (!(t_end > t0))
+        return fr_fail(s, FRICREG_EINVAL, "run: t_end = %g must be after t = %g", t_end, t0);
+    /* Steps that end within 1e-12 dt, or within rounding of the times (4 ulps of t), of t_end
+     * land on it: no sliver of a last step. */
+    double slack = 4.0 * DBL_EPSILON * fmax(fabs(t0), fabs(t_end)) / dt;
+    double steps = ceil((t_end - t0) / dt * (1.0 - 1e-12) - slack);
+    if (steps > MAX_RUN_STEPS)
+        return fr_fail(s, FRICREG_EINVAL, "run: %g steps of dt = %g exceed 2^31", steps, dt);
+    int64_t nsteps = steps < 1.0 ? 1 : (int64_t)steps;
+    for (int64_t k = 1; k <= nsteps; k++) {
+        double t1 = k == nsteps ? t_end : t0 + (double)k * dt;
+        if (!(t1 > s->t))
+            return fr_fail(s, FRICREG_EINVAL, "run: dt = %g is lost against t = %g", dt, s->t);
+        status = step_to(s, t1);
+        if (status != FRICREG_OK)
+            return status;
+    }
+    return FRICREG_OK;
+}

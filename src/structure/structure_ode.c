@@ -1,0 +1,231 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* structure_ode.c — a fricreg_structure integrated by GSL's gsl_odeiv2 steppers (the table of
+ * integrator.c, as the reference systems' drivers use it).
+ *
+ * First-order form, y = (u, v, W_in, E_visc, D_1 … D_m):
+ *   u' = v,   M v' = p~(t) - C v - K u + J^T f(J v, a_free),   W_in' = v.p~,
+ *   E_visc' = v.C v,   D_i' = -zdot_i f_i,
+ * so the energy balance is integrated by the same scheme as the motion. Fixed explicit steps
+ * are checked as the drivers check them: dt lambda within the stepper's real-axis bound
+ * (lambda: fricreg_ctx_stick_stiffness) and dt omega_max within its imaginary-axis bound. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_blas.h>
+#include <gsl/gsl_linalg.h>
+#include <gsl/gsl_odeiv2.h>
+
+#include "ode/fd_jacobian.h"
+#include "ode/integrator.h"
+#include "ode/ode_driver.h"
+#include "structure_internal.h"
+
+#define MAX_GSL_STEPS 2147483648.0
+#define MAX_HALVINGS 10
+
+struct ode_run {
+    fricreg_structure *s;
+    size_t dim;
+    double *jac_work; /* [3 dim] */
+    int rhs_status;
+};
+
+static int rhs(double t, const double y[], double dydt[], void *params)
+{
+    struct ode_run *run = params;
+    fricreg_structure *s = run->s;
+    size_t n = s->n;
+    gsl_vector_const_view u = gsl_vector_const_view_array(y, n);
+    gsl_vector_const_view v = gsl_vector_const_view_array(y + n, n);
+    gsl_vector_view acc = gsl_vector_view_array(dydt + n, n);
+    fr_structure_effective_load(s, t, s->ptil1);
+    fr_structure_net_force(s, s->ptil1, &u.vector, &v.vector, s->work);
+    int status = fr_structure_friction(s, s->work, &v.vector, s->f1);
+    if (status != FRICREG_OK) {
+        run->rhs_status = status;
+        return GSL_EBADFUNC; /* GSL stops the step at once */
+    }
+    memcpy(dydt, y + n, n * sizeof *dydt);
+    gsl_blas_dgemv(CblasTrans, 1.0, s->J, s->f1, 1.0, s->work);
+    gsl_linalg_cholesky_solve(s->L, s->work, &acc.vector);
+    double input, viscous;
+    gsl_blas_ddot(&v.vector, s->ptil1, &input);
+    gsl_blas_dgemv(CblasNoTrans, 1.0, s->C, &v.vector, 0.0, s->work);
+    gsl_blas_ddot(&v.vector, s->work, &viscous);
+    dydt[2 * n] = input;
+    dydt[2 * n + 1] = viscous;
+    for (size_t i = 0; i < s->m; i++)
+        dydt[2 * n + 2 + i] = -gsl_vector_get(s->zdot, i) * gsl_vector_get(s->f1, i);
+    return GSL_SUCCESS;
+}
+
+/* For the implicit steppers: forward differences, as the drivers' (fd_jacobian.h). */
+static int jacobian(double t, const double y[], double *dfdy, double dfdt[], void *params)
+{
+    struct ode_run *run = params;
+    return fr_fd_jacobian(rhs, run, run->dim, run->jac_work, t, y, dfdy, dfdt);
+}
+
+static int check_fixed_step(fricreg_structure *s, const struct fr_integrator *integ, double dt)
+{
+    double lambda = 0.0;
+    if (integ->real_axis_bound > 0.0) {
+        if (fricreg_ctx_stick_stiffness(s->ctx, &lambda) != FRICREG_OK)
+            return fr_fail(s, FRICREG_ENOMEM, "run_ode: %s", fricreg_ctx_errmsg(s->ctx));
+        if (dt * lambda > integ->real_axis_bound)
+            return fr_fail(s, FRICREG_ESTEP,
+                           "run_ode: dt = %g too large for the stick zone: "
+                           "its stiffness %g gives dt*lambda = %g > %g, the stability bound "
+                           "of %s; reduce dt or raise eps",
+                           dt, lambda, dt * lambda, integ->real_axis_bound, integ->name);
+    }
+    double omega = fr_structure_omega_max(s);
+    if (integ->imag_axis_bound > 0.0 && dt * omega > integ->imag_axis_bound)
+        return fr_fail(s, FRICREG_ESTEP,
+                       "run_ode: dt = %g too large for the structure's "
+                       "highest frequency %g: dt*omega = %g > %g, the stability bound of %s; "
+                       "reduce dt",
+                       dt, omega, dt * omega, integ->imag_axis_bound, integ->name);
+    return FRICREG_OK;
+}
+
+/* One fixed step of size h; an implicit or multistep stepper whose iteration fails (at an
+ * exact stick) retries it as two half steps, as the drivers do. */
+static int fixed_step(gsl_odeiv2_driver *d, double *t, double h, double y[], int depth)
+{
+    double t0 = *t;
+    int status = gsl_odeiv2_evolve_apply_fixed_step(d->e, NULL, d->s, d->sys, t, h, y);
+    if (status != GSL_FAILURE || depth == MAX_HALVINGS)
+        return status;
+    *t = t0;
+    gsl_odeiv2_step_reset(d->s);
+    status = fixed_step(d, t, 0.5 * h, y, depth + 1);
+    return status == GSL_SUCCESS ? fixed_step(d, t, t0 + h - *t, y, depth + 1) : status;
+}
+
+static int beyond(const double y[], size_t dim)
+{
+    for (size_t k = 0; k < dim; k++)
+        if (!(fabs(y[k]) <= 1e100))
+            return 1;
+    return 0;
+}
+
+/* Integrates y from s->t to t_end; on success or failure s->t is where y is. */
+static int integrate(fricreg_structure *s, struct ode_run *run, gsl_odeiv2_driver *d,
+                     const struct fr_integrator *integ, int adaptive, double dt, double t_end,
+                     double y[])
+{
+    double gsl_dt = dt * integ->substeps, h = gsl_dt, t = s->t;
+    while (t < t_end) {
+        int status;
+        if (adaptive) {
+            status = gsl_odeiv2_evolve_apply(d->e, d->c, d->s, d->sys, &t, t_end, &h, y);
+        } else {
+            int last = t_end - t <= gsl_dt * (1.0 + 1e-9);
+            status = fixed_step(d, &t, last ? t_end - t : gsl_dt, y, 0);
+            if (last && status == GSL_SUCCESS)
+                t = t_end;
+        }
+        if (status != GSL_SUCCESS) {
+            if (run->rhs_status != FRICREG_OK)
+                return fr_fail(s,
+                               run->rhs_status == FRICREG_ENONFINITE ? FRICREG_EDIVERGED
+                                                                     : run->rhs_status,
+                               "run_ode: t = %.17g: %s", t, fricreg_ctx_errmsg(s->ctx));
+            return fr_fail(s, FRICREG_EINTEGRATOR,
+                           "run_ode: GSL stepper failed at t = %.17g:"
+                           " %s",
+                           t, gsl_strerror(status));
+        }
+        if (beyond(y, run->dim))
+            return fr_fail(s, FRICREG_EDIVERGED,
+                           "run_ode: the state at t = %.17g is beyond "
+                           "1e100: the step is unstable; reduce dt",
+                           t);
+        /* accept: the structure's state follows the integration */
+        memcpy(s->u->data, y, s->n * sizeof *y);
+        memcpy(s->v->data, y + s->n, s->n * sizeof *y);
+        s->energy.input = y[2 * s->n];
+        s->energy.viscous = y[2 * s->n + 1];
+        s->energy.friction = 0.0;
+        for (size_t i = 0; i < s->m; i++) {
+            s->energy.per_contact[i] = y[2 * s->n + 2 + i];
+            s->energy.friction += y[2 * s->n + 2 + i];
+        }
+        s->t = t;
+        s->stats[FRICREG_SSTAT_STEPS] += adaptive ? 1 : integ->substeps;
+    }
+    return FRICREG_OK;
+}
+
+int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, double rtol,
+                              double atol, double t_end)
+{
+    if (s == NULL)
+        return FRICREG_ENULL;
+    const struct fr_integrator *integ = fr_integrator_find(integrator);
+    if (integ == NULL)
+        return fr_fail(s, FRICREG_EINVAL, "run_ode: unknown integrator %d", integrator);
+    if (integ->central) /* its stepper knows fricreg_sim's state layout only */
+        return fr_fail(s, FRICREG_EINVAL,
+                       "run_ode: integrator %s is fricreg_sim's; a structure has its "
+                       "own central difference (fricreg_structure_step)",
+                       integ->name);
+    if (!isfinite(dt) || !isfinite(rtol) || !isfinite(atol) || !isfinite(t_end))
+        return fr_fail(s, FRICREG_ENONFINITE, "run_ode: dt, rtol, atol or t_end not finite");
+    if (!(dt > 0.0) || rtol < 0.0 || atol < 0.0)
+        return fr_fail(s, FRICREG_EINVAL,
+                       "run_ode: dt = %g must be > 0, rtol = %g and "
+                       "atol = %g >= 0",
+                       dt, rtol, atol);
+    if (!(t_end > s->t))
+        return fr_fail(s, FRICREG_EINVAL, "run_ode: t_end = %g must be after t = %g", t_end, s->t);
+    int adaptive = rtol > 0.0 || atol > 0.0;
+    if (!adaptive && (t_end - s->t) / (dt * integ->substeps) > MAX_GSL_STEPS)
+        return fr_fail(s, FRICREG_EINVAL, "run_ode: (t_end - t)/dt is too many steps");
+
+    int status = fr_structure_prepare(s);
+    if (status == FRICREG_OK && !adaptive)
+        status = check_fixed_step(s, integ, dt);
+    if (status != FRICREG_OK)
+        return status;
+    if (s->fresh)
+        fr_energy_start(s);
+
+    struct ode_run run = {.s = s, .dim = 2 * s->n + 2 + s->m, .rhs_status = FRICREG_OK};
+    double *y = malloc(run.dim * sizeof *y);
+    run.jac_work = malloc(3 * run.dim * sizeof *run.jac_work);
+    if (y == NULL || run.jac_work == NULL) {
+        free(y);
+        free(run.jac_work);
+        return fr_fail(s, FRICREG_ENOMEM, "run_ode: no memory for a state of %zu", run.dim);
+    }
+    memcpy(y, s->u->data, s->n * sizeof *y);
+    memcpy(y + s->n, s->v->data, s->n * sizeof *y);
+    y[2 * s->n] = s->energy.input;
+    y[2 * s->n + 1] = s->energy.viscous;
+    memcpy(y + 2 * s->n + 2, s->energy.per_contact, s->m * sizeof *y);
+
+    gsl_odeiv2_system sys = {rhs, jacobian, run.dim, &run};
+    gsl_odeiv2_driver *d = fr_ode_driver_alloc(&sys, fr_integrator_stepper(integ, adaptive),
+                                               dt * integ->substeps,
+                                               adaptive ? atol : integ->fixed_tolerance,
+                                               adaptive ? rtol : 0.0);
+    if (d == NULL)
+        status = fr_fail(s, FRICREG_ENOMEM, "run_ode: GSL driver allocation failed");
+    else
+        status = integrate(s, &run, d, integ, adaptive, dt, t_end, y);
+    if (d)
+        gsl_odeiv2_driver_free(d);
+    free(y);
+    free(run.jac_work);
+    s->fresh = 0;
+    s->ready = 0; /* the next step takes its acceleration from the equation of motion */
+    if (status == FRICREG_OK) {
+        status = fr_structure_equilibrium(s);
+    }
+    return status;
+}
