@@ -1,0 +1,50 @@
+#!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
+# The layering check can fail: on copies of src/ with one arrow run back up (an include, a
+# call), ctx_internal.h included outside src/ctx/, or a folder missing from the module table,
+# it must fail and name the break. Usage: module_layers_bites.sh CHECK SRC_DIR C_COMPILER
+check=$1 src=$2 cc=$3
+work=$(mktemp -d "${TMPDIR:-/tmp}/fricreg-layers-bites.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+fails=0 passes=0
+fresh() { rm -rf "$work/src" "$work/build" && cp -R "$src" "$work/src"; }
+expect() { # NAME EXPECTED [BUILD_DIR]: the check on $work/src must fail, naming EXPECTED
+    if [ -n "${3:-}" ]; then sh "$check" "$work/src" "$3"; else sh "$check" "$work/src"; fi \
+        >"$work/out" 2>&1 && { echo "FAIL: $1: the check passed"; fails=$((fails + 1)); return; }
+    if grep -q "FAIL: .*$2" "$work/out"; then
+        passes=$((passes + 1))
+    else
+        echo "FAIL: $1: the check failed without naming $2:"; cat "$work/out"; fails=$((fails + 1))
+    fi
+}
+
+fresh
+echo '#include "sim/sim_internal.h"' >>"$work/src/base/error.c"
+expect "an include back up" "src/base/error.c (floor 0) includes sim/sim_internal.h of sim/"
+
+fresh
+echo '#include "structure/structure_internal.h"' >>"$work/src/sim/sim.c"
+expect "an include between siblings" "src/sim/sim.c (floor 3) includes structure/structure_internal.h"
+
+fresh
+sed 's|#include "ctx/ctx_driver.h"|#include "ctx/ctx_internal.h"|' "$src/sim/sim.c" >"$work/src/sim/sim.c"
+expect "ctx_internal.h outside the context" "src/sim/sim.c includes ctx/ctx_internal.h outside src/ctx/"
+
+fresh
+mkdir "$work/src/joints" && echo 'int fr_joint;' >"$work/src/joints/joint.c"
+expect "a folder not in the table" "src/joints/ is not in src/README.md's module table"
+
+# A call back up, in objects named as a build tree names them.
+fresh
+printf 'int fr_layers_up(void);\nint fr_layers_base(void) { return fr_layers_up(); }\n' \
+    >"$work/src/base/layers_base.c"
+printf 'int fr_layers_up(void) { return 1; }\n' >"$work/src/sim/layers_up.c"
+objects=$work/build/CMakeFiles/fricreg_objects.dir/src
+mkdir -p "$objects/base" "$objects/sim"
+"$cc" -c "$work/src/base/layers_base.c" -o "$objects/base/layers_base.c.o" &&
+    "$cc" -c "$work/src/sim/layers_up.c" -o "$objects/sim/layers_up.c.o" ||
+    { echo "FAIL: $cc did not compile the probe"; exit 1; }
+expect "a call back up" "src/base/layers_base.c (floor 0) calls fr_layers_up of sim/" "$work/build"
+
+echo "$passes passed, $fails failed"
+[ $fails -eq 0 ]
