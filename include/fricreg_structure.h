@@ -165,14 +165,15 @@ FRICREG_API int fricreg_structure_set_hht(fricreg_structure *s, double alpha);
  *  u1 = u + dt v + dt^2 a/2, then the acceleration a1 from the equation of motion with the
  *  damping and the friction at the explicit velocity v* = v + dt a (f = f(J v*, a_free)),
  *  v1 = v + dt (a + a1)/2. No Newton iteration (the counters record 0); second order
- *  undamped. Each step is refused (FRICREG_ESTEP, the state unchanged) beyond its stability
- *  bounds: dt omega_max < 2, omega_max^2 the largest eigenvalue of M^-1 K (GSL's symmetric
- *  eigensolver on L^-1 K L^-T, O(ndof^3) once per model change; the bound ignores C, which
- *  lowers it to (sqrt(1 + zeta^2) - zeta) 2/omega for a damping ratio zeta), and
- *  dt lambda < 1, lambda = fricreg_ctx_stick_stiffness (law (4): max_i W_ii 2 mun_i/eps), the
- *  bound of the stick zone's velocity decay under this step (so the paper's eps = 2 dt with
- *  W mun = 1 sits on the margin and is refused: take eps > 2 dt W_ii mun_i). set_newmark or
- *  set_hht select an implicit scheme again.
+ *  undamped. Each step is refused (FRICREG_ESTEP, the state unchanged) beyond the stability
+ *  bound of fricreg_sim's FRICREG_INT_CENTRAL, the same guard:
+ *  (dt omega_max/2)^2 + dt (lambda + c_max) < 0.9, omega_max^2 and c_max the largest
+ *  eigenvalues of M^-1 K and M^-1 C (GSL's symmetric eigensolver on L^-1 K L^-T and
+ *  L^-1 C L^-T, O(ndof^3) once per model change), lambda = fricreg_ctx_stick_stiffness (law
+ *  (4): max_i W_ii 2 mun_i/eps; for (1), (2) and Karnopp the chord W_ii mun_i/eps, with
+ *  dt lambda <= 1 and dt omega_max <= 1/sqrt 2 besides). The linear bound is 1: 0.9 keeps a
+ *  margin. So the paper's eps = 2 dt with W mun = 1 is refused: take eps > 2.2 dt W_ii mun_i.
+ *  set_newmark or set_hht select an implicit scheme again.
  *  Returns FRICREG_OK or FRICREG_ENULL. */
 FRICREG_API int fricreg_structure_set_central_difference(fricreg_structure *s);
 
@@ -236,10 +237,11 @@ FRICREG_API int fricreg_structure_run(fricreg_structure *s, double dt, double t_
  *  (so the balance's residual measures the scheme's energy error).
  *
  *  rtol = atol = 0: fixed steps dt > 0 (the last one shortened to end on t_end; RK4 is the
- *  classical one, the paper's method). A fixed explicit step is refused (FRICREG_ESTEP) when
- *  dt times the stick-zone stiffness (fricreg_ctx_stick_stiffness) exceeds the stepper's
- *  stability bound on the negative real axis, or dt omega_max its bound on the imaginary
- *  axis (omega_max^2 the largest eigenvalue of M^-1 K), as fricreg_sim_run refuses it.
+ *  classical one, the paper's method). A fixed explicit step passes the guard that
+ *  fricreg_sim_run applies, or is refused (FRICREG_ESTEP): dt (lambda + c_max) within the
+ *  stepper's stick-zone bound (lambda = fricreg_ctx_stick_stiffness, the chord's for (1), (2)
+ *  and Karnopp; c_max the largest eigenvalue of M^-1 C), dt omega_max within its bound on the
+ *  imaginary axis and within 1/sqrt 2 (omega_max^2 the largest eigenvalue of M^-1 K).
  *  Otherwise adaptive, GSL's standard control (|error| <= atol + rtol |y|), dt the first step.
  *  Implicit steppers use a forward-difference Jacobian (2 ndof + 3 + m right-hand sides).
  *  The load and ground records are read at every stage time (interpolated). Allocates the

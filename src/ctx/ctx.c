@@ -83,6 +83,11 @@ size_t fricreg_ctx_size(const fricreg_ctx *ctx)
     return ctx ? ctx->m : 0;
 }
 
+int fr_ctx_law(const fricreg_ctx *ctx)
+{
+    return ctx->law;
+}
+
 double fr_ctx_eps(const fricreg_ctx *ctx)
 {
     return ctx->eps;

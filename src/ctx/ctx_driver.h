@@ -16,7 +16,8 @@
  * status of fricreg_ctx_eval; FRICREG_OK on the unchecked path (partition.c). */
 int fr_ctx_eval_unchecked(fricreg_ctx *ctx, const double zdot[], const double a_free[], double f[]);
 
-/* The law's eps (fricreg_ctx_set_law). */
+/* The law (enum fricreg_law) and its eps (fricreg_ctx_set_law). */
+int fr_ctx_law(const fricreg_ctx *ctx);
 double fr_ctx_eps(const fricreg_ctx *ctx);
 
 /* The bounds mun [m] of fricreg_ctx_set_bounds, and W's diagonal [m] (all of W when it is

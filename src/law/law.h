@@ -148,6 +148,14 @@ static inline int fr_needs_feq(int law, double v, double eps)
     }
 }
 
+/* Whether the law's force jumps (by 2 mun at zdot = 0, or at Karnopp's band edge): (1), (2),
+ * Karnopp. A fixed step's guard then takes the chord of the jump as the law's stiffness. */
+static inline int fr_law_jumps(int law)
+{
+    return law == FRICREG_LAW_COULOMB || law == FRICREG_LAW_FORCE_BALANCE ||
+           law == FRICREG_LAW_KARNOPP;
+}
+
 /* Whether the law reads f_eq at all (for any v). */
 static inline int fr_law_uses_feq(int law)
 {

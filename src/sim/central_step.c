@@ -1,34 +1,19 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* central_step.c — explicit central differences (Newmark beta = 0, gamma = 1/2) as a
- * gsl_odeiv2_step_type, for fricreg_sim's fixed steps (FRICREG_INT_CENTRAL and
- * FRICREG_INT_CENTRAL_IMEX).
+/* central_step.c — explicit central differences (src/ode/central.h, the scheme the structure's
+ * central difference shares) as a gsl_odeiv2_step_type, for fricreg_sim's fixed steps
+ * (FRICREG_INT_CENTRAL and FRICREG_INT_CENTRAL_IMEX).
  *
  * The state is fricreg_sim's (src/sim/sim.c): y = (x[n], v[n], D), dim = 2n + 1, and the
  * right-hand side returns (v, a, D'). One step of size h, with a = a(t, x, v) carried over from
- * the end of the previous step:
+ * the end of the previous step, is central.h's, and D's increment
  *
- *   x1 = x + h v + h^2/2 a,   v* = v + h a,   a1 = a(t + h, x1, v*),   v1 = v + h (a + a1)/2,
  *   D1 = D - w h/2 sum_i (f_i + f1_i)/2 (zdot_i + zdot1_i)/2   (w: the system's weight),
  *
  * f, f1 the friction forces of the two evaluations and zdot, zdot1 the contact velocities of
- * the state's v and v1 (not v*).
- *
- * This is Newmark's average-acceleration family with beta = 0, gamma = 1/2 (N. M. Newmark,
- * J. Eng. Mech. Div. ASCE 85 (1959); T. J. R. Hughes, The Finite Element Method (1987),
- * Sec. 9.1), the structure integrator's form (src/structure/central_difference.c). Undamped, x1 is the
- * classical three-term recurrence x_{n+1} - 2 x_n + x_{n-1} = h^2 a_n.
- *
- * Friction depends on the contact velocity at the new time, which the scheme does not have
- * before a1: it sees the explicit predictor v* = v + h a (Euler's), so one right-hand side per
- * step and nothing to solve. v* is off by O(h^2) from v(t + h), so v1 is Heun's (trapezoid
- * with an Euler predictor) and the step is second order in the velocity-dependent force too.
- * The half-step velocity v + h a/2 would lag by h/2, an O(h) error in the friction, and make
- * the scheme first order wherever friction depends on velocity (the near-stick band); it would
- * double the stick-zone bound (dt lambda < 2 instead of 1), which is not worth an order.
- * The stability bound of this form, (dt omega/2)^2 + dt lambda < 1, is derived in src/sim/sim.c
- * (check_central_step). FRICREG_INT_CENTRAL_IMEX ("central-imex") is the same step with the
- * friction taken at v1 itself, law (4) solved body by body (central_imex.c), which frees the
- * step from the stick zone's bound.
+ * the state's v and v1 (not v*). The stability bound, (dt omega/2)^2 + dt lambda < 1, is
+ * derived in src/ode/step_guard.c. FRICREG_INT_CENTRAL_IMEX ("central-imex") is the same step
+ * with the friction taken at v1 itself, law (4) solved body by body (central_imex.c), which
+ * frees the step from the stick zone's bound.
  *
  * D is the work of the step's mean friction impulse on its mean velocity: since v1 - v is h
  * times the mean acceleration, this is exactly the friction's share of the scheme's own change
@@ -50,6 +35,7 @@
 #include "central_step.h"
 #include "ctx/ctx_driver.h"
 #include "base/dispatch.h"
+#include "ode/central.h"
 #include "ode/integrator.h"
 #include "sim_internal.h"
 
@@ -112,8 +98,8 @@ static void predictor(size_t n, double h, const double *restrict y, const double
 {
     const double *x = y, *v = y + n, *a = d + n;
     for (size_t i = 0; i < n; i++) {
-        arg[i] = x[i] + h * v[i] + 0.5 * h * h * a[i];
-        arg[n + i] = v[i] + h * a[i];
+        arg[i] = fr_central_position(h, x[i], v[i], a[i]);
+        arg[n + i] = fr_central_predicted_velocity(h, v[i], a[i]);
     }
     arg[2 * n] = y[2 * n]; /* D: the right-hand side does not read it */
 }
@@ -124,7 +110,7 @@ static void corrector(size_t n, double h, const double *restrict arg, const doub
 {
     for (size_t i = 0; i < n; i++) {
         y[i] = arg[i];
-        y[n + i] += 0.5 * h * (d0[n + i] + d1[n + i]);
+        y[n + i] = fr_central_velocity(h, y[n + i], d0[n + i], d1[n + i]);
     }
 }
 
@@ -174,15 +160,15 @@ FR_KERNEL_BODY double bodies_end_loop(size_t n, double h, double eps, double *re
     size_t i = 0;
 #define FR_BODY_END(k, l)                                                               \
     do {                                                                                \
-        double v1 = v[k] + 0.5 * h * (a0[k] + a1[k]);                                   \
+        double v1 = fr_central_velocity(h, v[k], a0[k], a1[k]);                         \
         lane[l] += (f0[k] + f1[k]) * (v[k] + v1);                                       \
         f0[k] = f1[k];                                                                  \
         stick[k] += fabs(v1) < eps ? h : 0.0;                                           \
         bad[l] += (fabs(x1[k]) <= limit ? 0.0 : 1.0) + (fabs(v1) <= limit ? 0.0 : 1.0); \
         x[k] = x1[k];                                                                   \
         v[k] = v1;                                                                      \
-        x1[k] = x[k] + h * v1 + 0.5 * h * h * a1[k];                                    \
-        vstar[k] = v1 + h * a1[k];                                                      \
+        x1[k] = fr_central_position(h, x[k], v1, a1[k]);                                \
+        vstar[k] = fr_central_predicted_velocity(h, v1, a1[k]);                         \
     } while (0)
     for (; i + END_LANES <= n; i += END_LANES)
         for (size_t l = 0; l < END_LANES; l++)

@@ -21,6 +21,7 @@
 #include "ode/integrator.h"
 #include "law/law.h"
 #include "ode/ode_driver.h"
+#include "ode/step_guard.h"
 #include "sim_internal.h"
 
 #define MAX_GSL_STEPS 2147483648.0     /* 2^31 fixed steps in one run */
@@ -334,190 +335,27 @@ static int alloc_run(fricreg_sim *sim, size_t cycles)
     return FRICREG_OK;
 }
 
-/* The stick zone's refusal. lambda is proportional to 1/eps, so eps >= eps dt lambda / bound
- * passes at this dt. Under the paper's rule eps is proportional to dt and dt * lambda does not
- * depend on dt: no dt passes, and only an explicit eps helps (oscillator, mun = 3: eps = 2 dt
- * gives dt * lambda = 3 > 2.78 for RK4). That is said rather than an eps chosen silently: eps
- * is part of the model (the stick band, an O(eps) change of the results), and a default that
- * followed the stepper's bound would move the results whenever the bound table is corrected. */
-/* The refusal where the stick zone's stiffness is beyond the double range: no dt and no eps
- * to name. */
-static int refuse_overflowing_stick_zone(fricreg_sim *sim)
-{
-    return fr_fail(sim, FRICREG_ESTEP,
-                   "run: the stick zone's stiffness, of order mun/eps, is beyond the double "
-                   "range for eps = %g: lower the bounds mun or raise eps",
-                   sim->eps);
-}
-
-static int refuse_stick_zone(fricreg_sim *sim, const char *what, double bound, double rate)
-{
-    double lambda = rate / sim->eps, z = sim->dt * lambda;
-    double eps_min = sim->dt * rate / bound; /* = eps z/bound, finite where lambda overflows */
-    if (!isfinite(eps_min) || !(bound * sim->eps / rate > 0.0)) /* no step or eps would do */
-        return refuse_overflowing_stick_zone(sim);
-    if (sim->eps_set > 0.0)
-        return fr_fail(sim, FRICREG_ESTEP,
-                       "run: dt = %g too large for the stick zone: its stiffness %g gives "
-                       "dt*lambda = %g > %g, %s; reduce dt to %.6g or raise eps to %.6g",
-                       sim->dt, lambda, z, bound, what, bound * sim->eps / rate, eps_min);
-    return fr_fail(sim, FRICREG_ESTEP,
-                   "run: eps by the paper's rule (eps = %g dt) makes dt*lambda = %g > %g, %s, "
-                   "at every dt; set eps >= %.6g explicitly",
-                   sim->eps / sim->dt, z, bound, what, eps_min);
-}
-
-/* Laws whose force jumps by 2 mun at zdot = 0 (or at Karnopp's band edge) have no linear
- * zone: a fixed step chatters. Their stiffness is the chord of the jump across the band the
- * run resolves, lambda = W_ii mun_i/eps (stiffness.h). One step from the band edge with the
- * whole swing moves zdot_i by at most 2 dt W_ii mun_i = 2 eps dt lambda: it lands inside the
- * band, of width 2 eps, for every stepper while dt * lambda <= 1. Measured: against the
- * steppers' real-axis bounds instead (up to 5.1), the chain (n = 8, eps = 0.002) gained energy
- * under (1) with rk8pd, and the two blocks with mun = (10, 5) by up to 300x their scale. */
-#define CHORD_STEP_BOUND 1.0
-static int law_jumps(int law)
-{
-    return law == FRICREG_LAW_COULOMB || law == FRICREG_LAW_FORCE_BALANCE ||
-           law == FRICREG_LAW_KARNOPP;
-}
-
-/* A reversal of the friction force within one step. A law that jumps ((1), (2), Karnopp) swings
- * by 2 mun at zdot = 0; a regularized one does so across its band, within one step whenever
- * eps <= dt |zddot| (the paper's rule eps = 2 dt: whenever |zddot| > 2). A step across the swing
- * takes its friction impulse with the wrong sign for part of the step, an error J <= 2 mun dt
- * (unit mass), while the velocity moves by at most v <= dt omega^2 A at amplitude A: an energy
- * error of at most J v + J^2/2 <= 2 mun dt^2 (omega^2 A + mun). The swing that ends in the
- * reversal dissipates at least 2 mun A, and a swing worth a reversal has A >= mun/omega^2, the
- * friction's offset of its centre (a smaller one ends in the stick zone, the stick-zone
- * bound's business): no energy is gained while 2 omega^2 dt^2 <= 1, dt * omega <= 1/sqrt 2.
- * Measured without it: rk8pd at dt = 3.7 (its imaginary-axis bound) grew the unforced
- * oscillator's energy 3.78 -> 104 under (1); the two blocks under (4) with the paper's eps gain
- * energy from dt * omega = 0.9 with RK4, not at 0.75. */
-#define REVERSAL_STEP_BOUND M_SQRT1_2
-
-/* Central differences (central_step.c) on x'' = -omega^2 x - c x', the linear model of a
- * contact near stick: c is the stick zone's damping-like rate, at most lambda (the spring is
- * screened by f_eq where the law is linear, c = lambda, omega = 0; where the band saturates the
- * spring acts and c < lambda). With p = dt omega, h = dt c, on (x, dt v, dt^2 a) the step's
- * characteristic polynomial is
- *   P(mu) = mu^3 - (2 - p^2 - 3h/2) mu^2 + (1 - 2h) mu + h/2,
- * P(1) = p^2 >= 0 and P(-1) = p^2 + 4h - 4: a root leaves the unit disc through -1 at
- * p^2/4 + h = 1, and nowhere before (scanned over 0 <= h <= 1, p <= 2.2 in steps of 1e-3).
- * So the step is stable for (dt omega/2)^2 + dt lambda < 1: dt omega < 2 undamped (the
- * three-term recurrence), dt lambda < 1 in the linear stick zone (src/structure/central_difference.c),
- * and dt < 2/(lambda + sqrt(lambda^2 + omega^2)) in between. The friction-reversal bound
- * (REVERSAL_STEP_BOUND) is kept for the laws that jump only: tests/test_guard.c's sweep finds
- * no energy put in by (3), tanh or (4) up to the linear bound (dt omega up to 2 sqrt(1 - h)),
- * while (1) and (2) put it in from dt omega = 1.36 (two blocks, the paper's eps: 0.12 of an
- * energy scale 3.4; the oscillator from 1.41), a reversal's whole swing within one step. */
-/* Kept 10% inside the linear bound: each cycle's last step is shortened to end on the cycle's
- * boundary, which breaks the constant-step recurrence once a cycle. Measured on the unforced,
- * frictionless oscillator over 64 cycles of 2 pi: bounded up to dt omega = 1.9, grown to 8e26
- * at 1.98. With 0.9 the frictionless limit is dt omega < 1.897. */
-#define CENTRAL_STEP_BOUND 0.9
-static int check_central_step(fricreg_sim *sim, double rate)
-{
-    double lambda = rate / sim->eps, omega = sim->sys.type->max_frequency(&sim->sys);
-    double h = sim->dt * lambda, half_p = 0.5 * sim->dt * omega;
-    if (!(h < CENTRAL_STEP_BOUND)) /* no dt passes under the paper's rule */
-        return refuse_stick_zone(sim, "the stick-zone bound of central differences",
-                                 CENTRAL_STEP_BOUND, rate);
-    if (law_jumps(sim->law) && sim->dt * omega > REVERSAL_STEP_BOUND)
-        return fr_fail(sim, FRICREG_ESTEP,
-                       "run: dt = %g too large for the system's highest frequency %g: "
-                       "dt*omega = %g > %g lets a friction reversal of a law that jumps put "
-                       "energy in within one step; reduce dt to %.6g",
-                       sim->dt, omega, sim->dt * omega, REVERSAL_STEP_BOUND,
-                       REVERSAL_STEP_BOUND / omega);
-    double sum = half_p * half_p + h;
-    if (sum < CENTRAL_STEP_BOUND)
-        return FRICREG_OK;
-    const double B = CENTRAL_STEP_BOUND; /* dt_max solves (omega dt/2)^2 + lambda dt = B */
-    double dt_max = sim->eps_set > 0.0
-                        ? 2.0 * B / (lambda + sqrt(lambda * lambda + B * omega * omega))
-                        : 2.0 * sqrt(B - h) / omega;
-    return fr_fail(sim, FRICREG_ESTEP,
-                   "run: dt = %g too large for central differences: (dt*omega/2)^2 + "
-                   "dt*lambda = %g >= %g (omega = %g the highest frequency, lambda = %g the "
-                   "stick-zone stiffness); reduce dt below %.6g",
-                   sim->dt, sum, CENTRAL_STEP_BOUND, omega, lambda, dt_max);
-}
-
-/* Central differences with implicit friction (central_imex.c): the friction's velocity term
- * is the trapezoid's, stable at every dt lambda, so only the springs bound the step's
- * stability, (dt omega/2)^2 < CENTRAL_STEP_BOUND (its margin as above). Energy is another
- * matter: where dt lambda >= CENTRAL_STEP_BOUND the step no longer resolves law (4)'s band,
- * (4) reverses within one step like a law that jumps, and the reversal bound applies
- * (REVERSAL_STEP_BOUND). Measured without it (tests/test_guard.c's sweep): the oscillator
- * with eps = 0.02 gained 0.45 of an energy scale of 3.8 at dt omega = 1.9, and with
- * mun = 3, eps = 0.05 from dt omega = 1.42; the paper's eps = 2 dt (dt lambda = 1) gained
- * from dt omega = 1.71. With the band resolved, dt lambda below the explicit scheme's own
- * stick-zone bound, the sweep finds no energy put in up to the springs' bound (the chain at
- * dt omega = 1.9). */
-static int check_central_imex_step(fricreg_sim *sim, double rate)
-{
-    double lambda = rate / sim->eps, omega = sim->sys.type->max_frequency(&sim->sys);
-    double half_p = 0.5 * sim->dt * omega, h = sim->dt * lambda;
-    if (!isfinite(lambda))
-        return refuse_overflowing_stick_zone(sim);
-    if (!(half_p * half_p < CENTRAL_STEP_BOUND))
-        return fr_fail(sim, FRICREG_ESTEP,
-                       "run: dt = %g too large for central differences: (dt*omega/2)^2 = %g >= "
-                       "%g (omega = %g the highest frequency); reduce dt below %.6g",
-                       sim->dt, half_p * half_p, CENTRAL_STEP_BOUND, omega,
-                       2.0 * sqrt(CENTRAL_STEP_BOUND) / omega);
-    if (h >= CENTRAL_STEP_BOUND && sim->dt * omega > REVERSAL_STEP_BOUND)
-        return fr_fail(sim, FRICREG_ESTEP,
-                       "run: dt = %g, eps = %g: dt*lambda = %g >= %g leaves law (4)'s band "
-                       "unresolved, where dt*omega = %g > %g lets a friction reversal put "
-                       "energy in; reduce dt to %.6g or raise eps to %.6g",
-                       sim->dt, sim->eps, h, CENTRAL_STEP_BOUND, sim->dt * omega,
-                       REVERSAL_STEP_BOUND, REVERSAL_STEP_BOUND / omega,
-                       sim->dt * rate / CENTRAL_STEP_BOUND * (1.0 + 1e-9));
-    return FRICREG_OK;
-}
-
-/* A fixed explicit step must keep dt * lambda within the stepper's stick-zone bound, lambda
- * the context's stick-zone stiffness (fricreg_ctx_stick_stiffness: coupled contacts
- * included), and dt * omega_max within its imaginary-axis bound and within
- * REVERSAL_STEP_BOUND, omega_max the system's highest natural frequency (the chain's
- * springs: 2n). */
+/* A fixed explicit step must pass the guard (src/ode/step_guard.c) with lambda the context's
+ * stick-zone stiffness (fricreg_ctx_stick_stiffness: coupled contacts included; the chord's
+ * for a law that jumps) and omega the system's highest natural frequency (the chain's
+ * springs: 2n). central-imex's refusal comes first: it is what the step solves, not a
+ * stability limit, so it holds unguarded too. */
 static int check_step(fricreg_sim *sim, const struct fr_integrator *integ)
 {
     const char *refusal = integ->implicit_friction ? fr_central_imex_refusal(sim) : NULL;
-    if (refusal != NULL) /* what the step solves, not a stability limit: never unguarded */
+    if (refusal != NULL)
         return fr_fail(sim, FRICREG_EINVAL, "run: integrator %s: %s", integ->name, refusal);
     if (adaptive(sim) || sim->unguarded || integ->stick_zone_bound == 0.0)
         return FRICREG_OK; /* implicit and multistep steppers report their own failures */
-    double rate = 0.0;     /* lambda * eps (stiffness.h) */
-    int status = fr_stiffness_times_eps(sim->ctx, law_jumps(sim->law), &rate);
-    if (status != FRICREG_OK)
+    struct fr_guard_run run = {.integ = integ,
+                               .dt = sim->dt,
+                               .eps = sim->eps,
+                               .omega = sim->sys.type->max_frequency(&sim->sys),
+                               .jumps = fr_law_jumps(sim->law),
+                               .eps_by_rule = sim->eps_set == 0.0};
+    if (fr_stiffness_times_eps(sim->ctx, run.jumps, &run.rate) != FRICREG_OK)
         return fr_fail(sim, FRICREG_ENOMEM, "run: %s", fricreg_ctx_errmsg(sim->ctx));
-    double lambda = rate / sim->eps; /* +inf when mun/eps overflows: refused below */
-    char what[64];
-    if (law_jumps(sim->law) && sim->dt * lambda > CHORD_STEP_BOUND)
-        return refuse_stick_zone(sim, "where a law that jumps chatters out of its band",
-                                 CHORD_STEP_BOUND, rate);
-    if (integ->implicit_friction)
-        return check_central_imex_step(sim, rate);
-    if (integ->central)
-        return check_central_step(sim, rate);
-    snprintf(what, sizeof what, "the stick-zone bound of %s", integ->name);
-    if (sim->dt * lambda > integ->stick_zone_bound)
-        return refuse_stick_zone(sim, what, integ->stick_zone_bound, rate);
-    double omega = sim->sys.type->max_frequency(&sim->sys), z = sim->dt * omega;
-    if (z > integ->imag_axis_bound)
-        return fr_fail(sim, FRICREG_ESTEP,
-                       "run: dt = %g too large for the system's highest frequency %g: "
-                       "dt*omega = %g > %g, the stability bound of %s; reduce dt",
-                       sim->dt, omega, z, integ->imag_axis_bound, integ->name);
-    if (z > REVERSAL_STEP_BOUND)
-        return fr_fail(sim, FRICREG_ESTEP,
-                       "run: dt = %g too large for the system's highest frequency %g: "
-                       "dt*omega = %g > %g lets a friction reversal within one step put "
-                       "energy in; reduce dt to %.6g",
-                       sim->dt, omega, z, REVERSAL_STEP_BOUND, REVERSAL_STEP_BOUND / omega);
-    return FRICREG_OK;
+    return fr_step_guard(&run, &sim->err, "run");
 }
 
 static int observe(fricreg_sim *sim)

@@ -52,15 +52,18 @@ struct fricreg_structure {
     int newton_max;
 
     /* Derived at the first step after a model change (fr_structure_prepare). */
-    int prepared;    /* M's factor, G, W and C are current */
-    gsl_matrix *L;   /* n x n: Cholesky factor of M */
-    gsl_matrix *G;   /* m x n: J M^-1 */
-    gsl_matrix *W;   /* m x m: J M^-1 J^T */
-    gsl_vector *Mr;  /* M r */
-    int omega_valid; /* central difference: omega_max is current (reset by prepare) */
-    double omega_max;
-    int stick_valid;   /* central difference: stick_rate is current (reset at equilibrium) */
-    double stick_rate; /* fricreg_ctx_stick_stiffness */
+    int prepared;       /* M's factor, G, W and C are current */
+    gsl_matrix *L;      /* n x n: Cholesky factor of M */
+    gsl_matrix *G;      /* m x n: J M^-1 */
+    gsl_matrix *W;      /* m x m: J M^-1 J^T */
+    gsl_vector *Mr;     /* M r */
+    int unguarded;      /* tests only (test_guard_structure.c, static library): skip the step guard,
+                    * to see what a refused step would have done */
+    int omega_valid;    /* the step guard: omega_max, damping_max are current (reset by prepare) */
+    double omega_max;   /* sqrt of the largest eigenvalue of M^-1 K */
+    double damping_max; /* the largest eigenvalue of M^-1 C */
+    int stick_valid;    /* the step guard: stick_rate is current (reset at equilibrium) */
+    double stick_rate; /* lambda * eps (fr_stiffness_times_eps): the chord's for a law that jumps */
     gsl_eigen_symm_workspace *eigen_work;
     gsl_vector *eigenvalues;
 
@@ -117,8 +120,14 @@ int fr_stick_predictor(fricreg_structure *s, size_t k);
 
 /* central_difference.c: the same, explicit; FRICREG_ESTEP beyond its stability bounds. */
 int fr_central_solve(fricreg_structure *s, double dt);
-/* The largest natural frequency sqrt(max eig M^-1 K) (0 if K has none > 0), cached. */
+
+/* guard.c: the largest natural frequency sqrt(max eig M^-1 K) (0 if K has none > 0), cached;
+ * and the step guard (src/ode/step_guard.h) of a fixed step dt of integ, FRICREG_OK or
+ * FRICREG_ESTEP (recorded, led by who). */
+struct fr_integrator;
 double fr_structure_omega_max(fricreg_structure *s);
+int fr_structure_guard(fricreg_structure *s, const struct fr_integrator *integ, double dt,
+                       const char *who);
 
 /* energy.c */
 void fr_energy_reset(fricreg_structure *s);

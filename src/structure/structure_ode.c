@@ -6,8 +6,7 @@
  *   u' = v,   M v' = p~(t) - C v - K u + J^T f(J v, a_free),   W_in' = v.p~,
  *   E_visc' = v.C v,   D_i' = -zdot_i f_i,
  * so the energy balance is integrated by the same scheme as the motion. Fixed explicit steps
- * are checked as the drivers check them: dt lambda within the stepper's real-axis bound
- * (lambda: fricreg_ctx_stick_stiffness) and dt omega_max within its imaginary-axis bound. */
+ * pass the drivers' one step guard (src/ode/step_guard.c, through guard.c). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -66,29 +65,6 @@ static int jacobian(double t, const double y[], double *dfdy, double dfdt[], voi
 {
     struct ode_run *run = params;
     return fr_fd_jacobian(rhs, run, run->dim, run->jac_work, t, y, dfdy, dfdt);
-}
-
-static int check_fixed_step(fricreg_structure *s, const struct fr_integrator *integ, double dt)
-{
-    double lambda = 0.0;
-    if (integ->real_axis_bound > 0.0) {
-        if (fricreg_ctx_stick_stiffness(s->ctx, &lambda) != FRICREG_OK)
-            return fr_fail(s, FRICREG_ENOMEM, "run_ode: %s", fricreg_ctx_errmsg(s->ctx));
-        if (dt * lambda > integ->real_axis_bound)
-            return fr_fail(s, FRICREG_ESTEP,
-                           "run_ode: dt = %g too large for the stick zone: "
-                           "its stiffness %g gives dt*lambda = %g > %g, the stability bound "
-                           "of %s; reduce dt or raise eps",
-                           dt, lambda, dt * lambda, integ->real_axis_bound, integ->name);
-    }
-    double omega = fr_structure_omega_max(s);
-    if (integ->imag_axis_bound > 0.0 && dt * omega > integ->imag_axis_bound)
-        return fr_fail(s, FRICREG_ESTEP,
-                       "run_ode: dt = %g too large for the structure's "
-                       "highest frequency %g: dt*omega = %g > %g, the stability bound of %s; "
-                       "reduce dt",
-                       dt, omega, dt * omega, integ->imag_axis_bound, integ->name);
-    return FRICREG_OK;
 }
 
 /* One fixed step of size h; an implicit or multistep stepper whose iteration fails (at an
@@ -188,8 +164,10 @@ int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, d
         return fr_fail(s, FRICREG_EINVAL, "run_ode: (t_end - t)/dt is too many steps");
 
     int status = fr_structure_prepare(s);
-    if (status == FRICREG_OK && !adaptive)
-        status = check_fixed_step(s, integ, dt);
+    if (status == FRICREG_OK && !adaptive) {
+        s->stick_valid = 0; /* law, eps or bounds may have changed since the last step */
+        status = fr_structure_guard(s, integ, dt, "run_ode");
+    }
     if (status != FRICREG_OK)
         return status;
     if (s->fresh)

@@ -1,0 +1,62 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* guard.c — what the step guard (src/ode/step_guard.c, the drivers' one guard) reads of a
+ * structure: its highest natural frequency, its largest viscous damping rate and the stick
+ * zone's stiffness, each cached until what it depends on changes. */
+#include <math.h>
+
+#include <gsl/gsl_blas.h>
+#include <gsl/gsl_eigen.h>
+
+#include "ctx/ctx_driver.h"
+#include "law/law.h"
+#include "ode/step_guard.h"
+#include "structure_internal.h"
+
+/* The largest eigenvalue of L^-1 X L^-T (M = L L^T), X = K or C, in s->A's storage: the
+ * largest omega^2 of M^-1 K, or the largest decay rate of M^-1 C. */
+static double largest_generalized_eigenvalue(fricreg_structure *s, const gsl_matrix *X)
+{
+    gsl_matrix_memcpy(s->A, X);
+    gsl_blas_dtrsm(CblasLeft, CblasLower, CblasNoTrans, CblasNonUnit, 1.0, s->L, s->A);
+    gsl_blas_dtrsm(CblasRight, CblasLower, CblasTrans, CblasNonUnit, 1.0, s->L, s->A);
+    gsl_eigen_symm(s->A, s->eigenvalues, s->eigen_work);
+    return fmax(gsl_vector_max(s->eigenvalues), 0.0);
+}
+
+/* omega_max and the damping rate, at the first use after fr_structure_prepare. */
+static void model_rates(fricreg_structure *s)
+{
+    if (s->omega_valid)
+        return;
+    s->omega_max = sqrt(largest_generalized_eigenvalue(s, s->K));
+    s->damping_max = largest_generalized_eigenvalue(s, s->C);
+    s->omega_valid = 1;
+}
+
+double fr_structure_omega_max(fricreg_structure *s)
+{
+    model_rates(s);
+    return s->omega_max;
+}
+
+int fr_structure_guard(fricreg_structure *s, const struct fr_integrator *integ, double dt,
+                       const char *who)
+{
+    if (s->unguarded)
+        return FRICREG_OK;
+    model_rates(s);
+    int jumps = fr_law_jumps(fr_ctx_law(s->ctx));
+    if (!s->stick_valid) { /* lambda * eps, the chord's for a law that jumps */
+        if (fr_stiffness_times_eps(s->ctx, jumps, &s->stick_rate) != FRICREG_OK)
+            return fr_fail(s, FRICREG_ENOMEM, "%s: %s", who, fricreg_ctx_errmsg(s->ctx));
+        s->stick_valid = 1;
+    }
+    struct fr_guard_run run = {.integ = integ,
+                               .dt = dt,
+                               .eps = fr_ctx_eps(s->ctx),
+                               .rate = s->stick_rate,
+                               .omega = s->omega_max,
+                               .damping = s->damping_max,
+                               .jumps = jumps};
+    return fr_step_guard(&run, &s->err, who);
+}
