@@ -42,6 +42,7 @@
 
 #include "fricreg_sim.h"
 #include "integrator.h"
+#include "rk4_classic.h"
 
 #define ROW(ID, NAME, REAL, ZONE, IMAG, SUB, TOL)                          \
     {                                                                      \

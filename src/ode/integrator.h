@@ -40,9 +40,6 @@ struct fr_integrator {
     int implicit_friction;
 };
 
-/* rk4_classic.c: two classical RK4 steps per call, as GSL's rk4, with no error estimate. */
-const gsl_odeiv2_step_type *fr_step_rk4_classic(void);
-
 /* The table row of an integrator id, or NULL if unknown. */
 const struct fr_integrator *fr_integrator_find(int id);
 

@@ -14,7 +14,7 @@
 
 #include <gsl/gsl_errno.h>
 
-#include "integrator.h"
+#include "rk4_classic.h"
 
 struct rk4_state {
     double *mid;  /* [dim] the state after the first of the two classical steps */

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* prob_internal.h — what the problems share: GSL's RK4 at a fixed step, and events located
- * inside a step on the cubic Hermite interpolant by GSL's Brent solver. */
+/* prob_internal.h — what the problems share: the library's classical RK4 at a fixed step, and
+ * events located inside a step on the cubic Hermite interpolant by GSL's Brent solver. */
 #ifndef FRICREG_PROB_INTERNAL_H
 #define FRICREG_PROB_INTERNAL_H
 
@@ -10,11 +10,10 @@
 
 #include "problems.h"
 
-/* Classical RK4 at dt as GSL's rk4 at 2 dt (problems.h), with no step control. */
+/* Classical RK4 at dt, two steps a call (problems.h), with no step control. */
 struct prob_rk4 {
     gsl_odeiv2_system sys;
     gsl_odeiv2_step *step;
-    double *yerr; /* GSL's error estimate, unused (the step is fixed) */
     double dt;
 };
 

@@ -4,11 +4,10 @@
  * Internal, not installed; built on the public laws (fricreg_disk.h, fricreg_stribeck.h) and
  * GSL only. docs/laws2d.md states the problems and the numbers they give.
  *
- * Stepping: the paper's method, classical RK4 at a fixed step dt, is GSL's rk4 at 2 dt
- * (gsl_odeiv2_step_rk4 estimates its error by step doubling, so one of its steps of 2 dt is two
- * classical steps of dt), through gsl_odeiv2_step_apply with no step control: 11 right-hand
- * sides a step of 2 dt.
- * Every run counts classical steps; observers see the state after each GSL step (every 2 dt).
+ * Stepping: the paper's method, classical RK4 at a fixed step dt, by the library's RK4
+ * (src/ode/rk4_classic.h), which takes two classical steps of dt a call on GSL's rk4 grid,
+ * through gsl_odeiv2_step_apply with no step control: 8 right-hand sides a call of 2 dt.
+ * Every run counts classical steps; observers see the state after each call (every 2 dt).
  *
  * Every function returns FRICREG_OK or a fricreg status: FRICREG_EINVAL for a parameter out of
  * range, FRICREG_ENOMEM, FRICREG_EINTEGRATOR when GSL fails, FRICREG_EDIVERGED when a run does
