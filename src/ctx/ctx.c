@@ -9,6 +9,7 @@
 
 #include "ctx_internal.h"
 #include "base/eigen.h"
+#include "law/contact_check.h"
 #include "law/law.h"
 
 #define SYMMETRY_RTOL 1e-12
@@ -137,31 +138,21 @@ int fricreg_ctx_set_partition(fricreg_ctx *ctx, int partition)
     return FRICREG_OK;
 }
 
-/* Common checks of an array argument of m contacts and n = m or m*m elements; `what` names it
- * in the message. */
+/* fr_check_contact_array on the context (contact_check.h). */
 static int check_array(fricreg_ctx *ctx, const char *what, size_t m, size_t n, const double a[])
 {
     if (ctx == NULL)
         return FRICREG_ENULL;
-    if (m != ctx->m)
-        return fr_fail(ctx, FRICREG_ESIZE, "%s: m = %zu, context has %zu contacts", what, m,
-                       ctx->m);
-    if (a == NULL)
-        return fr_fail(ctx, FRICREG_ENULL, "%s: array is NULL", what);
-    for (size_t k = 0; k < n; k++)
-        if (!isfinite(a[k]))
-            return fr_fail(ctx, FRICREG_ENONFINITE, "%s: element %zu is not finite", what, k);
-    return FRICREG_OK;
+    return fr_check_contact_array(&ctx->err, what, m, ctx->m, n, a);
 }
 
 int fricreg_ctx_set_bounds(fricreg_ctx *ctx, size_t m, const double mun[])
 {
-    int status = check_array(ctx, "set_bounds", m, m, mun);
+    if (ctx == NULL)
+        return FRICREG_ENULL;
+    int status = fr_check_bounds(&ctx->err, m, ctx->m, mun, DBL_MAX); /* any finite bound */
     if (status != FRICREG_OK)
         return status;
-    for (size_t i = 0; i < m; i++)
-        if (mun[i] < 0.0)
-            return fr_fail(ctx, FRICREG_EINVAL, "set_bounds: mun[%zu] = %g is negative", i, mun[i]);
     memcpy(ctx->mun, mun, m * sizeof *mun);
     fr_stribeck_off(ctx); /* the bounds mun replace Stribeck friction's */
     ctx->last_valid = 0;

@@ -9,6 +9,7 @@
 
 #include "disk_ctx_internal.h"
 #include "base/eigen.h"
+#include "law/contact_check.h"
 #include "law/law.h"
 #include "law/law_disk.h"
 
@@ -154,32 +155,22 @@ int fricreg_disk_ctx_set_law(fricreg_disk_ctx *ctx, int law, double eps)
     return FRICREG_OK;
 }
 
-/* Common checks of an array of n numbers for m contacts; `what` names it in the message. */
+/* fr_check_contact_array on the context (contact_check.h). */
 static int check_array(fricreg_disk_ctx *ctx, const char *what, size_t m, size_t n,
                        const double a[])
 {
     if (ctx == NULL)
         return FRICREG_ENULL;
-    if (m != ctx->m)
-        return fr_fail(ctx, FRICREG_ESIZE, "%s: m = %zu, context has %zu contacts", what, m,
-                       ctx->m);
-    if (a == NULL)
-        return fr_fail(ctx, FRICREG_ENULL, "%s: array is NULL", what);
-    for (size_t k = 0; k < n; k++)
-        if (!isfinite(a[k]))
-            return fr_fail(ctx, FRICREG_ENONFINITE, "%s: element %zu is not finite", what, k);
-    return FRICREG_OK;
+    return fr_check_contact_array(&ctx->err, what, m, ctx->m, n, a);
 }
 
 int fricreg_disk_ctx_set_bounds(fricreg_disk_ctx *ctx, size_t m, const double mun[])
 {
-    int status = check_array(ctx, "set_bounds", m, m, mun);
+    if (ctx == NULL)
+        return FRICREG_ENULL;
+    int status = fr_check_bounds(&ctx->err, m, ctx->m, mun, FR_DISK_MAX); /* the 2-D kernels' */
     if (status != FRICREG_OK)
         return status;
-    for (size_t i = 0; i < m; i++)
-        if (!(mun[i] >= 0.0 && mun[i] <= FR_DISK_MAX))
-            return fr_fail(ctx, FRICREG_EINVAL, "set_bounds: mun[%zu] = %g not in [0, 1e250]", i,
-                           mun[i]);
     memcpy(ctx->mun, mun, m * sizeof *mun);
     ctx->stribeck = 0; /* the bounds mun replace Stribeck friction's */
     ctx->last_valid = 0;

@@ -1,0 +1,25 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* contact_check.h — internal: the contexts' one check of their per-contact array arguments
+ * (the 1-D context's ctx.c and the 2-D context's disk_ctx.c), so that both refuse alike. */
+#ifndef FRICREG_CONTACT_CHECK_H
+#define FRICREG_CONTACT_CHECK_H
+
+#include <stddef.h>
+
+#include "base/error.h"
+
+/* An array a[n] given for m contacts (n = m, 2m, 4m, m^2 or (2m)^2 numbers) of a context of
+ * ctx_m: FRICREG_ESIZE unless m == ctx_m, FRICREG_ENULL if a is NULL, FRICREG_ENONFINITE
+ * naming the first element that is not finite, else FRICREG_OK. A failure is recorded in err,
+ * led by `what` (the setter's name). */
+int fr_check_contact_array(struct fr_error *err, const char *what, size_t m, size_t ctx_m, size_t n,
+                           const double a[]);
+
+/* The friction bounds mun[m] of a context of ctx_m contacts: fr_check_contact_array's checks,
+ * then FRICREG_EINVAL naming the first bound outside [0, max]. The range is the laws':
+ * the 1-D laws are division-free clamps (law.h) and take every finite bound (max = DBL_MAX);
+ * the 2-D kernels form hypot, products and sums of vector components and take at most
+ * FR_DISK_MAX (law_disk.h), below which none of them overflows. */
+int fr_check_bounds(struct fr_error *err, size_t m, size_t ctx_m, const double mun[], double max);
+
+#endif
