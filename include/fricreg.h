@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/*
+/**
+ * \file
  * fricreg.h — public C API of fricreg, a library for dry (Coulomb) friction with stick–slip.
  *
  * Implements the friction laws of D. D. Quinn, "A New Regularization of Coulomb Friction",
@@ -33,6 +34,13 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
+
+/** \defgroup conventions Conventions: version, status codes, errors
+ *  What every function shares: the library's version, the status codes that every int result
+ *  is one of, and their fixed texts. The conventions every function follows (units, failures,
+ *  threads) are at the top of fricreg.h; each object keeps the status and a message of its
+ *  last failed call (fricreg_ctx_errmsg and its kin, in each object's group).
+ *  \{ */
 
 /* ---- Version ----------------------------------------------------------------------------- */
 
@@ -68,7 +76,15 @@ enum fricreg_status {
  *  "unknown fricreg status code". Thread safe. */
 FRICREG_API const char *fricreg_strerror(int status);
 
+/** \} */
+
 /* ---- Friction laws ----------------------------------------------------------------------- */
+
+/** \defgroup law Friction laws
+ *  The friction laws evaluated without a context, one contact or an array at a time: the 1-D
+ *  laws of the paper (enum fricreg_law) here, and beyond the paper the 2-D laws of the friction
+ *  disk and static above kinetic (Stribeck) friction, in the sub-groups below.
+ *  \{ */
 
 /** Friction laws. Values are fixed forever. sat(y) = max(-1, min(1, y)); sgn(0) = 0. */
 enum fricreg_law {
@@ -76,12 +92,12 @@ enum fricreg_law {
     FRICREG_LAW_COULOMB = 1,
     /** (2) force balance at rest (Karnopp): v == 0: f = mun sat(f_eq/mun); else (1). Ignores eps. */
     FRICREG_LAW_FORCE_BALANCE = 2,
-    /** Karnopp threshold (paper ref. [2]) with dead band eps: |v| < eps: f = mun sat(f_eq/mun);
+    /** Karnopp threshold (paper ref.\ [2]) with dead band eps: |v| < eps: f = mun sat(f_eq/mun);
      *  else (1). */
     FRICREG_LAW_KARNOPP = 3,
     /** (3) velocity-limited (Martins–Oden): |v| < eps: f = -(mun/eps) v; else (1). */
     FRICREG_LAW_VELOCITY_LIMITED = 4,
-    /** Smooth (paper refs. [13,14]): f = -mun tanh(v/eps). */
+    /** Smooth (paper refs.\ [13,14]): f = -mun tanh(v/eps). */
     FRICREG_LAW_TANH = 5,
     /** (4) Quinn: xi = (eps/2) sat(f_eq/mun); |v - xi| < eps/2: f = -(2 mun/eps)(v - xi);
      *  else f = -mun sgn(v - xi). Continuous in (v, f_eq); equals (2) at v = 0. With coupled
@@ -138,7 +154,17 @@ FRICREG_API int fricreg_law_eval(int law, double v, double f_eq, double mun, dou
 FRICREG_API int fricreg_law_eval_batch(int law, double eps, size_t m, const double v[],
                                        const double f_eq[], const double mun[], double f[]);
 
+/** \} */
+
 /* ---- Context: coupled contacts and the f_eq partition (Sec. 3.3) -------------------------- */
+
+/** \defgroup ctx Context: coupled 1-D contacts (fricreg_ctx)
+ *  An opaque context that gives the friction forces of m coupled contacts, zddot = a_free + W f.
+ *  It holds the law, eps, the bounds, the coupling W and all scratch memory; it partitions the
+ *  contacts into slip and near-stick sets, finds f_eq where the law needs it (the paper's
+ *  Sec. 3.3), and gives the tangent for implicit integrators. Stribeck friction in a context:
+ *  fricreg_ctx_set_stribeck (declared in fricreg_stribeck.h).
+ *  \{ */
 
 /** Opaque context for m contacts: law, eps, bounds mun, coupling W, and all scratch memory. */
 typedef struct fricreg_ctx fricreg_ctx;
@@ -204,7 +230,7 @@ enum fricreg_partition {
      *  (zdot, a_free, mun), also where a contact crosses |zdot_j| = eps; equal to Coulomb's
      *  stick problem with saturation at zdot_S = 0. */
     FRICREG_PARTITION_CONSISTENT = 1,
-    /** The paper's Sec. 3.3: W_SS f_eq,S = -(a_free,S + W_SL f_L), then the law at each
+    /** The paper's Sec.\ 3.3: W_SS f_eq,S = -(a_free,S + W_SL f_L), then the law at each
      *  contact of S. The force jumps when a coupled contact crosses |zdot_j| = eps; kept to
      *  reproduce the paper's Fig. 11. */
     FRICREG_PARTITION_PAPER = 2
@@ -239,7 +265,7 @@ FRICREG_API int fricreg_ctx_set_partition(fricreg_ctx *ctx, int partition);
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ENOMEM. */
 FRICREG_API int fricreg_ctx_stick_stiffness(fricreg_ctx *ctx, double *lambda);
 
-/** Evaluate the friction forces of all m contacts (Sec. 3.3, with the context's law).
+/** Evaluate the friction forces of all m contacts (Sec.\ 3.3, with the context's law).
  *
  *  The contacts obey zddot = a_free + W f. The near-stick set S is where the law needs f_eq:
  *  |zdot_i| < eps for (4) and Karnopp, zdot_i == 0 for (2), empty for (1), (3) and tanh.
@@ -399,6 +425,8 @@ FRICREG_API const char *fricreg_ctx_errmsg(const fricreg_ctx *ctx);
  *  Fortran and other callers that cannot hold a C pointer). Returns the full message length
  *  (excluding the NUL), as snprintf does; 0 and nothing written if buf is NULL or len is 0. */
 FRICREG_API size_t fricreg_ctx_errmsg_copy(const fricreg_ctx *ctx, char *buf, size_t len);
+
+/** \} */
 
 #ifdef __cplusplus
 }

@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/*
+/**
+ * \file
  * fricreg_disk.h — friction laws for 2-D contacts (isotropic friction disk), beyond the paper:
  * the tangential velocity v and the forces f, f_eq of a contact are vectors of R^2.
  *
@@ -26,12 +27,19 @@
 extern "C" {
 #endif
 
+/** \defgroup law_disk 2-D friction laws (the friction disk)
+ *  \ingroup law
+ *  The friction laws of 2-D contacts, whose velocity and forces are vectors of the tangent plane
+ *  and whose bound is the disk |f| <= mun. Beyond the paper; the constructions are in
+ *  docs/laws2d.md, and coupled 2-D contacts in a context are fricreg_disk_ctx.h's.
+ *  \{ */
+
 /** 2-D friction laws (the disk |f| <= mun). Values are fixed forever. c = 2 v/eps. */
 enum fricreg_disk_law {
     /** The 2-D (1), sliding: f = -mun v/|v|; f = 0 at v = 0. Ignores f_eq and eps. */
     FRICREG_DISK_COULOMB = 1,
     /** The 2-D (2), force balance at rest: v == 0 (both components): f = mun P_D(f_eq/mun),
-     *  i.e. f_eq if |f_eq| <= mun, else mun f_eq/|f_eq|; otherwise the 2-D (1). Ignores eps. */
+     *  i.e.\ f_eq if |f_eq| <= mun, else mun f_eq/|f_eq|; otherwise the 2-D (1). Ignores eps. */
     FRICREG_DISK_FORCE_BALANCE = 2,
     /** The 2-D (4), the default: for 0 < |v| < eps, with u = v/|v| and a = mun |v|/eps,
      *  f = P_K(f_eq - 2 a u) onto the disk K of centre -a u and radius mun - a (the largest
@@ -118,6 +126,8 @@ FRICREG_API int fricreg_disk_eval(int law, const double v[], const double f_eq[]
  *  Thread safe. */
 FRICREG_API int fricreg_disk_eval_batch(int law, double eps, size_t m, const double v[],
                                         const double f_eq[], const double mun[], double f[]);
+
+/** \} */
 
 #ifdef __cplusplus
 }

@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/*
+/**
+ * \file
  * fricreg_disk_ctx.h — coupled 2-D contacts in a context (beyond the paper): the consistent
  * coupled law of docs/coupled.md extended to the friction disk of fricreg_disk.h.
  *
@@ -39,6 +40,14 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
+
+/** \defgroup disk_ctx 2-D context: coupled 2-D contacts (fricreg_disk_ctx)
+ *  An opaque context that gives the friction forces of m coupled 2-D contacts, each with a
+ *  tangential velocity in R^2, under the 2-D law FRICREG_DISK_QUINN. It extends the consistent
+ *  coupled law (docs/coupled.md) to the friction disk and gives the tangent for implicit
+ *  integrators. Stribeck friction in a 2-D context: fricreg_disk_ctx_set_stribeck (declared in
+ *  fricreg_stribeck.h).
+ *  \{ */
 
 /** Opaque context for m coupled 2-D contacts: law, eps, bounds, W and all scratch memory. */
 typedef struct fricreg_disk_ctx fricreg_disk_ctx;
@@ -84,7 +93,7 @@ FRICREG_API int fricreg_disk_ctx_set_law(fricreg_disk_ctx *ctx, int law, double 
 FRICREG_API int fricreg_disk_ctx_set_bounds(fricreg_disk_ctx *ctx, size_t m, const double mun[]);
 
 /** Uncoupled contacts: W block diagonal, w[4m] holding contact i's 2x2 block W_ii row-major at
- *  w[4i .. 4i+3] (inverse effective masses of the tangent plane). Each block must be symmetric
+ *  w[4i..4i+3] (inverse effective masses of the tangent plane). Each block must be symmetric
  *  (to 1e-12 relative) and positive definite: its smallest eigenvalue above 1e-12 times its
  *  largest, and at least DBL_MIN ~ 2.2e-308 (a smaller one is a contact with no mobility,
  *  whose inverse, the scale of its tangent, overflows; as fricreg_ctx_set_coupling_dense's
@@ -185,6 +194,8 @@ FRICREG_API const char *fricreg_disk_ctx_errmsg(const fricreg_disk_ctx *ctx);
  *  full message length (excluding the NUL), as snprintf does; 0 and nothing written if buf is
  *  NULL or len is 0. */
 FRICREG_API size_t fricreg_disk_ctx_errmsg_copy(const fricreg_disk_ctx *ctx, char *buf, size_t len);
+
+/** \} */
 
 #ifdef __cplusplus
 }

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/*
- * fricreg_exact.h — the semi-analytical ("exact") solution of the 1-dof oscillator, Eq. (5),
+/**
+ * \file
+ * fricreg_exact.h — the semi-analytical ("exact") solution of the 1-dof oscillator, Eq.\ (5),
  * under classical Coulomb friction (1) with force balance at rest (2).
  *
  *     x'' + x = f + a sin(omega t),   f_eq = x - a sin(omega t)
@@ -36,10 +37,17 @@
 extern "C" {
 #endif
 
+/** \defgroup exact Exact solver: the oscillator in closed form (fricreg_exact)
+ *  An opaque object holding the semi-analytical solution of the paper's 1-dof oscillator under
+ *  Coulomb friction with force balance at rest, switching times to the last bits. The reference
+ *  the regularized runs are measured against: its state at any time, its switches and its
+ *  dissipation per cycle, in closed form.
+ *  \{ */
+
 /** Opaque exact solution: its parameters and the phases (stick or slip) computed so far. */
 typedef struct fricreg_exact fricreg_exact;
 
-/** Solve Eq. (5) with (1)+(2) from (x, x')(0) = (x0, v0) over 0 <= t <= t_end.
+/** Solve Eq.\ (5) with (1)+(2) from (x, x')(0) = (x0, v0) over 0 <= t <= t_end.
  *
  *  a      forcing amplitude (finite; 0: unforced).
  *  omega  forcing frequency > 0; also sets the cycle 2 pi/omega of the dissipation.
@@ -58,7 +66,7 @@ typedef struct fricreg_exact fricreg_exact;
 FRICREG_API int fricreg_exact_solve(double a, double omega, double mun, double x0, double v0,
                                     double t_end, fricreg_exact **out);
 
-/** Create an exact solution of Eq. (5) with (1)+(2) from (x, x')(0) = (x0, v0). Nothing is
+/** Create an exact solution of Eq.\ (5) with (1)+(2) from (x, x')(0) = (x0, v0). Nothing is
  *  solved yet: fricreg_exact_run or fricreg_exact_run_cycles does that. The Brent root solver
  *  is allocated here, so a run allocates only the list of phases.
  *
@@ -169,6 +177,8 @@ FRICREG_API int fricreg_exact_dissipation(const fricreg_exact *ex, size_t ncycle
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for a bad interval. */
 FRICREG_API int fricreg_exact_stick_fraction(const fricreg_exact *ex, double t0, double t1,
                                              double *fraction);
+
+/** \} */
 
 #ifdef __cplusplus
 }

@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/*
+/**
+ * \file
  * fricreg_sim.h — GSL ODE drivers for the paper's three reference systems.
  *
  * D. D. Quinn, J. Vib. Acoust. 126 (2004): the 1-dof oscillator, Eq. (5); the n-dof chain of
@@ -20,16 +21,23 @@
 extern "C" {
 #endif
 
+/** \defgroup sim Simulation: the paper's reference systems (fricreg_sim)
+ *  An opaque simulation of one of the paper's three reference systems, integrated by one of
+ *  GSL's ODE steppers or fricreg's own central differences with friction from a context. Its
+ *  parameters, law, integrator and step control are set, then it runs over a time or whole
+ *  forcing cycles (optionally extrapolated in eps), and its getters read the results.
+ *  \{ */
+
 /** Reference systems. Values are fixed forever. */
 enum fricreg_system {
-    /** Eq. (5): x'' + x = f + a sin(omega t), one contact with bound mun, f_eq = x - a sin(wt).
+    /** Eq.\ (5): x'' + x = f + a sin(omega t), one contact with bound mun, f_eq = x - a sin(wt).
      *  Paper defaults: a = 0, omega = 1 (sets the cycle length), mun = 1, x0 = 2.75, v0 = 0. */
     FRICREG_SYSTEM_OSCILLATOR = 1,
-    /** Sec. 3.2: n blocks of mass 1/n, springs of stiffness n, block n tied to a wall, block 1
+    /** Sec.\ 3.2: n blocks of mass 1/n, springs of stiffness n, block n tied to a wall, block 1
      *  driven by a sin(omega t), every block mun = 1, friction entering as f_i/n; W = I.
      *  Paper defaults: n = 32, a = 0.25, omega = 0.5, at rest at the origin. */
     FRICREG_SYSTEM_CHAIN = 2,
-    /** Eqs. (7): lower block x1 on a belt u(t) = belt_amp sin(belt_omega t), upper block x2 on
+    /** Eqs.\ (7): lower block x1 on a belt u(t) = belt_amp sin(belt_omega t), upper block x2 on
      *  it, springs 1 and k to the ground; contacts z1 = x1 - u, z2 = x2 - x1 with bounds mu1,
      *  mu2; W = [[1, -1], [-1, 2]]. Paper defaults: k = 2, mu1 = 0.5, mu2 = 0.25,
      *  belt_amp = 1, belt_omega = 0.5, at rest at the origin. */
@@ -411,6 +419,8 @@ FRICREG_API const char *fricreg_sim_errmsg(const fricreg_sim *sim);
  *  Fortran). Returns the full message length, as snprintf does; 0 and nothing written if buf
  *  is NULL or len is 0. */
 FRICREG_API size_t fricreg_sim_errmsg_copy(const fricreg_sim *sim, char *buf, size_t len);
+
+/** \} */
 
 #ifdef __cplusplus
 }

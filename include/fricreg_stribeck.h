@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/*
+/**
+ * \file
  * fricreg_stribeck.h — static friction above kinetic (Stribeck), with exact stick, for 1-D
  * and 2-D contacts, beyond the paper.
  *
@@ -30,6 +31,14 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
+
+/** \defgroup law_stribeck Stribeck friction (static above kinetic)
+ *  \ingroup law
+ *  The Stribeck law, static friction above kinetic with exact stick, at 1-D and 2-D contacts,
+ *  one contact or an array at a time. Beyond the paper; the law is at the top of
+ *  fricreg_stribeck.h. In a context it is set by fricreg_ctx_set_stribeck (1-D) and
+ *  fricreg_disk_ctx_set_stribeck (2-D), which belong to their contexts' groups.
+ *  \{ */
 
 /** Evaluate the Stribeck law at one 1-D contact (see the top of this header).
  *
@@ -97,6 +106,11 @@ FRICREG_API int fricreg_stribeck_disk_eval_batch(double eps, size_t m, const dou
                                                  const double fk[], const double vs[],
                                                  const double delta[], double f[]);
 
+/** \} */
+
+/** \addtogroup ctx
+ *  \{ */
+
 /** Static > kinetic (Stribeck) friction for the m contacts of a 1-D context (fricreg.h,
  *  fricreg_ctx_eval), each with its own parameters: the law at the top of this header, with the
  *  context's eps, under every coupling and partition the context offers. Since 1.3
@@ -145,6 +159,11 @@ FRICREG_API int fricreg_stribeck_disk_eval_batch(double eps, size_t m, const dou
 FRICREG_API int fricreg_ctx_set_stribeck(fricreg_ctx *ctx, size_t m, const double fs[],
                                          const double fk[], const double vs[],
                                          const double delta[]);
+
+/** \} */
+
+/** \addtogroup disk_ctx
+ *  \{ */
 
 /** Static > kinetic (Stribeck) friction for the m contacts of a 2-D context
  *  (fricreg_disk_ctx.h, fricreg_disk_ctx_eval), each with its own parameters: the 2-D law at
@@ -197,6 +216,8 @@ FRICREG_API int fricreg_ctx_set_stribeck(fricreg_ctx *ctx, size_t m, const doubl
 FRICREG_API int fricreg_disk_ctx_set_stribeck(fricreg_disk_ctx *ctx, size_t m, const double fs[],
                                               const double fk[], const double vs[],
                                               const double delta[]);
+
+/** \} */
 
 #ifdef __cplusplus
 }

@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/*
+/**
+ * \file
  * fricreg_structure.h — a linear structure with friction contacts, integrated by Newmark or
  * HHT-alpha with the friction implicit (Newton on the exact tangent), by explicit central
  * difference, or by any of GSL's steppers (fricreg_structure_run_ode).
@@ -32,6 +33,13 @@
 extern "C" {
 #endif
 
+/** \defgroup structure Structure: a linear structure with friction contacts (fricreg_structure)
+ *  An opaque linear structure M u'' + C u' + K u = p(t) - M r a_g(t) + J^T f, whose friction
+ *  forces f come from a context, stepped by Newmark, HHT-alpha, central difference or GSL's
+ *  steppers with its energy balance. The model matrices may also be given as GSL sparse
+ *  matrices (fricreg_structure_gsl.h).
+ *  \{ */
+
 /** Opaque linear structure with friction contacts: model, excitation, integrator, state. */
 typedef struct fricreg_structure fricreg_structure;
 
@@ -58,7 +66,7 @@ FRICREG_API int fricreg_structure_create(size_t ndof, size_t m, fricreg_structur
 /** Release a structure. fricreg_structure_free(NULL) does nothing. */
 FRICREG_API void fricreg_structure_free(fricreg_structure *s);
 
-/** Set the mass matrix M[ndof*ndof] (mass units, e.g. kg), symmetric to 1e-12 of the rows'
+/** Set the mass matrix M[ndof*ndof] (mass units, e.g.\ kg), symmetric to 1e-12 of the rows'
  *  scales (|M_ij - M_ji| <= 1e-12 sqrt(r_i r_j), r_i = max_k |M_ik|, so that a change of
  *  units of a degree of freedom does not change the verdict) and positive definite (GSL's
  *  Cholesky decomposition succeeds). Copied.
@@ -70,13 +78,13 @@ FRICREG_API void fricreg_structure_free(fricreg_structure *s);
  *  M) needs its smallest eigenvalue above 2 n (n + 1) 2.2e-16 (Demmel's condition). */
 FRICREG_API int fricreg_structure_set_mass(fricreg_structure *s, size_t ndof, const double M[]);
 
-/** Set the stiffness matrix K[ndof*ndof] (force per length, e.g. N/m), symmetric (to 1e-12 of
+/** Set the stiffness matrix K[ndof*ndof] (force per length, e.g.\ N/m), symmetric (to 1e-12 of
  *  the rows' scales, as M); it need not be definite (rigid-body modes are allowed). Copied.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_ENOTSYM. */
 FRICREG_API int fricreg_structure_set_stiffness(fricreg_structure *s, size_t ndof,
                                                 const double K[]);
 
-/** Set the damping matrix C[ndof*ndof] (force per velocity, e.g. N s/m), symmetric (to 1e-12 of
+/** Set the damping matrix C[ndof*ndof] (force per velocity, e.g.\ N s/m), symmetric (to 1e-12 of
  *  the rows' scales, as M). Copied; replaces Rayleigh damping.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_ENOTSYM. */
 FRICREG_API int fricreg_structure_set_damping(fricreg_structure *s, size_t ndof, const double C[]);
@@ -103,7 +111,7 @@ FRICREG_API int fricreg_structure_set_contacts(fricreg_structure *s, size_t m, s
  *  some mun[i] < 0; FRICREG_ENONFINITE. */
 FRICREG_API int fricreg_structure_set_bounds(fricreg_structure *s, size_t m, const double mun[]);
 
-/** Select the friction law (enum fricreg_law) and eps > 0 (velocity units, e.g. m/s), as
+/** Select the friction law (enum fricreg_law) and eps > 0 (velocity units, e.g.\ m/s), as
  *  fricreg_ctx_set_law. The continuous laws (3), (4) and tanh give an implicit step with a
  *  solution that Newton finds; (1) and (2) jump at v = 0 and Karnopp at |v| = eps, where a
  *  step may have no root: such steps end on Newton's last iterate and count as failures.
@@ -117,7 +125,7 @@ FRICREG_API int fricreg_structure_set_law(fricreg_structure *s, int law, double 
 FRICREG_API int fricreg_structure_set_influence(fricreg_structure *s, size_t ndof,
                                                 const double r[]);
 
-/** Set the ground acceleration a_g(t) (acceleration units, e.g. m/s^2) as a record of n >= 2
+/** Set the ground acceleration a_g(t) (acceleration units, e.g.\ m/s^2) as a record of n >= 2
  *  samples ag[n] at times t0 + k dt_rec, dt_rec > 0, interpolated linearly and zero outside
  *  [t0, t0 + (n-1) dt_rec] (a time within 1e-9 dt_rec of an end is on it: step times are
  *  rounded). n = 0 (ag may be NULL) removes the ground motion. Copied.
@@ -321,6 +329,8 @@ FRICREG_API const char *fricreg_structure_errmsg(const fricreg_structure *s);
  *  Fortran). Returns the full message length, as snprintf does; 0 and nothing written if buf
  *  is NULL or len is 0. */
 FRICREG_API size_t fricreg_structure_errmsg_copy(const fricreg_structure *s, char *buf, size_t len);
+
+/** \} */
 
 #ifdef __cplusplus
 }

@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/*
+/**
+ * \file
  * fricreg_structure_gsl.h — sparse model matrices for a fricreg_structure, as GSL's
  * gsl_spmatrix (the format GSL reads Matrix Market files into, gsl_spmatrix_fscanf).
  *
@@ -21,6 +22,9 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
+
+/** \addtogroup structure
+ *  \{ */
 
 /** Set the mass matrix from a sparse ndof x ndof M (mass units), symmetric (relative
  *  tolerance 1e-12) and positive definite, all of it stored (not one triangle: mirror a
@@ -44,6 +48,8 @@ FRICREG_API int fricreg_structure_set_damping_sparse(fricreg_structure *s, const
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if J is not m x ndof;
  *  FRICREG_ENONFINITE; FRICREG_EINVAL if a row is zero. */
 FRICREG_API int fricreg_structure_set_contacts_sparse(fricreg_structure *s, const gsl_spmatrix *J);
+
+/** \} */
 
 #ifdef __cplusplus
 }
