@@ -20,7 +20,7 @@ struct cli_run {
     double dt, rtol, atol, eps; /* eps = 0: the paper's rule */
     double t_end;               /* 0: use cycles */
     int cycles;
-    enum cli_output output;
+    int output;             /* enum cli_output, as an int: the option table writes ints */
     int partition;          /* enum fricreg_partition; only twoblock's differs from the default */
     int extrapolate;        /* --extrapolate LEVELS (fricreg_sim_run_extrapolated); 0: off */
     int extrapolate_order;  /* --extrapolate-order P: the declared leading order (0: 1) */
@@ -32,23 +32,86 @@ struct cli_run {
     int nparams;
 };
 
-/* options.c: parses argv (after the subcommand) into run; on error prints one line naming the
- * option to stderr and returns CLI_EXIT_USAGE. */
-int cli_parse_run(int system, int argc, char **argv, struct cli_run *run);
-/* 0, or CLI_EXIT_USAGE (message printed) for atol = 0 with rtol > 0 on a stepper whose Newton
- * iteration needs atol > 0 (rk1imp, rk2imp, rk4imp, msadams, msbdf). */
-int cli_check_tolerances(int integrator, double rtol, double atol);
+/* ---- option_table.c: every subcommand's options, as a table of rows ---------------------- */
+
+/* What an option's value is: how it is parsed and what its row's slot points to. */
+enum cli_option_kind {
+    CLI_NUMBER,      /* double: a finite number */
+    CLI_POSITIVE,    /* double: a finite number > 0 */
+    CLI_NONNEGATIVE, /* double: a finite number >= 0 */
+    CLI_WHOLE,       /* int: a whole number from lo to hi */
+    CLI_NAME,        /* int: a name in one of the library's tables (names) */
+    CLI_CHOICE,      /* int: the value of one of a few fixed words (words) */
+    CLI_FILE,        /* const char *: a path, pointing into argv; read later */
+    CLI_CUSTOM       /* anything: parse(row, text) */
+};
+
+/* A library name table: the noun its messages use, and its two look-ups (0 and NULL: none). */
+struct cli_name_table {
+    const char *what;
+    int (*from_name)(const char *name);
+    const char *(*name_of)(int id);
+};
+extern const struct cli_name_table cli_law_names, cli_integrator_names;
+
+/* A fixed word and what it stands for; lists of them end with a NULL word. */
+struct cli_word {
+    const char *word;
+    int value;
+};
+extern const struct cli_word cli_output_words[]; /* summary, trajectory */
+
+/* One option: its name and kind first, the rest by field name, e.g.
+ * {"--cycles", CLI_WHOLE, .slot = &run->cycles, .lo = 1, .hi = 1e7, .given = &cycles_given}. */
+struct cli_option {
+    const char *name; /* "--dt" */
+    enum cli_option_kind kind;
+    void *slot;                         /* where the value goes, as the kind says */
+    int *given;                         /* set to 1 once the option is parsed; NULL: not needed */
+    double lo, hi;                      /* CLI_WHOLE's range */
+    const struct cli_name_table *names; /* CLI_NAME */
+    const struct cli_word *words;       /* CLI_CHOICE */
+    /* CLI_CUSTOM: parses text into row->slot (with row->arg); 0 or CLI_EXIT_USAGE (printed) */
+    int (*parse)(const struct cli_option *row, const char *text);
+    int arg;
+};
+
+/* Parses argv (after the subcommand) against table[n]: each option's value by its row, a
+ * repeated option's last value kept. Returns 0, or CLI_EXIT_USAGE after one line on stderr
+ * naming the option (for an unknown one, "unknown option for COMMAND"). */
+int cli_parse_options(int argc, char **argv, const struct cli_option table[], size_t n,
+                      const char *command);
+/* One value by its row's kind, as cli_parse_options does (for a custom parse to build on). */
+int cli_parse_value(const struct cli_option *row, const char *text);
+/* A finite double, the whole of text (an underflow is kept as the subnormal or zero it gives). */
+int cli_parse_number(const char *option, const char *text, double *value);
+/* 0, or CLI_EXIT_USAGE (printed) unless value is a whole number from lo to hi. */
+int cli_check_whole(const char *option, double value, double lo, double hi);
 /* Prints "fricreg-sim: OPTION: WHAT" on stderr and returns CLI_EXIT_USAGE. */
 int cli_usage_error(const char *option, const char *what);
 /* The option at argv[*k] and its value ("--name=value", or the next argument, advancing *k).
  * Returns 0, or CLI_EXIT_USAGE (message printed) for a non-option or a missing value. */
 int cli_next_option(int argc, char **argv, int *k, char **option, char **value);
-const char *cli_system_name(int system);
-/* Each system's parameter options with the library's defaults, one line per system. */
-void cli_print_param_defaults(FILE *out);
 /* The library's names name_of(1), name_of(2), … up to the first NULL (fricreg_law_name,
  * fricreg_integrator_name), joined by sep into buf[len] (truncated to fit); returns buf. */
 const char *cli_names(char *buf, size_t len, const char *(*name_of)(int), const char *sep);
+/* The words joined by ", ", the last by last_sep (" or "), into buf[len]; returns buf. */
+const char *cli_join_words(char *buf, size_t len, const struct cli_word words[],
+                           const char *last_sep);
+/* The entry of words whose word is text, or NULL. */
+const struct cli_word *cli_find_word(const struct cli_word words[], const char *text);
+
+/* ---- options.c: the reference systems oscillator|chain|twoblock, and exact ---------------- */
+
+/* Parses argv (after the subcommand) into run; on error prints one line naming the option to
+ * stderr and returns CLI_EXIT_USAGE. */
+int cli_parse_run(int system, int argc, char **argv, struct cli_run *run);
+/* 0, or CLI_EXIT_USAGE (message printed) for atol = 0 with rtol > 0 on a stepper whose Newton
+ * iteration needs atol > 0 (rk1imp, rk2imp, rk4imp, msadams, msbdf). */
+int cli_check_tolerances(int integrator, double rtol, double atol);
+const char *cli_system_name(int system);
+/* Each system's parameter options with the library's defaults, one line per system. */
+void cli_print_param_defaults(FILE *out);
 
 /* The extrapolation in eps of a run (fricreg_sim_run_extrapolated), for its summary. */
 struct cli_extrapolation {

@@ -13,7 +13,7 @@ struct structure_options {
     int rayleigh_given, alpha_given, law, integrator;
     enum scheme scheme;
     double a0, a1, eps, alpha, dt, t_end, rtol, atol;
-    enum cli_output output;
+    int output; /* enum cli_output, as an int: the option table writes ints */
 };
 
 /* Parses argv (after the subcommand) into o, the file options as pointers into argv; checks

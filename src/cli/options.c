@@ -1,21 +1,9 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* options.c — parsing and validation of fricreg-sim's options. Every error is one line on
- * stderr that names the option, and exit status 2; nothing is run or written. */
-#include <errno.h>
+/* options.c — the options of the reference systems (oscillator, chain, twoblock) and of
+ * exact: their table (option_table.c reads it) and the checks between options. */
 #include <math.h>
-#include <stdlib.h>
-#include <string.h>
 
 #include "cli.h"
-
-const char *cli_names(char *buf, size_t len, const char *(*name_of)(int), const char *sep)
-{
-    size_t used = 0;
-    buf[0] = '\0';
-    for (int k = 1; name_of(k) != NULL && used < len; k++)
-        used += (size_t)snprintf(buf + used, len - used, "%s%s", k > 1 ? sep : "", name_of(k));
-    return buf;
-}
 
 const char *cli_system_name(int system)
 {
@@ -72,215 +60,95 @@ void cli_print_param_defaults(FILE *out)
     fricreg_sim_free(sim);
 }
 
-int cli_usage_error(const char *option, const char *what)
+/* A system parameter: the library checks its value on a fresh simulation, and its message
+ * gives the range (e.g. omega > 0, n integer >= 2). The row's slot is the run, arg the param. */
+static int parse_param(const struct cli_option *row, const char *text)
 {
-    fprintf(stderr, "fricreg-sim: %s: %s\n", option, what);
-    return CLI_EXIT_USAGE;
-}
-
-int cli_next_option(int argc, char **argv, int *k, char **option, char **value)
-{
-    *option = argv[*k];
-    if (strncmp(*option, "--", 2) != 0)
-        return cli_usage_error(*option, "unexpected argument");
-    char *eq = strchr(*option, '=');
-    if (eq != NULL) { /* --name=value */
-        *eq = '\0';
-        *value = eq + 1;
-    } else if (*k + 1 < argc) {
-        *value = argv[++*k];
-    } else {
-        return cli_usage_error(*option, "missing value");
-    }
+    struct cli_run *run = row->slot;
+    double value;
+    int status = cli_parse_number(row->name, text, &value);
+    if (status != 0)
+        return status;
+    fricreg_sim *probe = NULL;
+    if (fricreg_sim_create(run->system, &probe) != FRICREG_OK)
+        return cli_usage_error(row->name, "out of memory");
+    if (fricreg_sim_set_param(probe, row->arg, value) != FRICREG_OK)
+        status = cli_usage_error(row->name, fricreg_sim_errmsg(probe));
+    fricreg_sim_free(probe);
+    if (status != 0)
+        return status;
+    if (run->nparams == (int)(sizeof run->params / sizeof run->params[0]))
+        return cli_usage_error(row->name, "too many parameters");
+    run->params[run->nparams].param = row->arg;
+    run->params[run->nparams++].value = value;
     return 0;
-}
-
-/* A finite double, the whole of text. strtod sets ERANGE on underflow too (1e-310, 1e-400),
- * returning the subnormal or zero nearest the text: that is the number meant, so it is kept;
- * only an overflow (±HUGE_VAL) is refused. */
-static int parse_double(const char *option, const char *text, double *value)
-{
-    char *end = NULL;
-    errno = 0;
-    *value = strtod(text, &end);
-    if (end == text || *end != '\0')
-        return cli_usage_error(option, "not a number");
-    if (errno == ERANGE && fabs(*value) == HUGE_VAL)
-        return cli_usage_error(option, "out of the range of a double");
-    if (!isfinite(*value))
-        return cli_usage_error(option, "not a finite number");
-    return 0;
-}
-
-static int parse_positive(const char *option, const char *text, double *value)
-{
-    int status = parse_double(option, text, value);
-    if (status == 0 && !(*value > 0.0))
-        return cli_usage_error(option, "must be > 0");
-    return status;
-}
-
-static int parse_nonnegative(const char *option, const char *text, double *value)
-{
-    int status = parse_double(option, text, value);
-    if (status == 0 && !(*value >= 0.0))
-        return cli_usage_error(option, "must be >= 0");
-    return status;
-}
-
-static int parse_law(const char *text, int *law)
-{
-    *law = fricreg_law_from_name(text);
-    if (*law != 0)
-        return 0;
-    char names[256], what[300];
-    snprintf(what, sizeof what, "unknown law (%s)",
-             cli_names(names, sizeof names, fricreg_law_name, ", "));
-    return cli_usage_error("--law", what);
-}
-
-static int parse_param(int system, const char *option, const char *text, struct cli_run *run)
-{
-    for (size_t k = 0; k < sizeof param_options / sizeof param_options[0]; k++) {
-        const struct param_option *p = &param_options[k];
-        if (p->system != system || strcmp(p->name, option) != 0)
-            continue;
-        double value;
-        int status = parse_double(option, text, &value);
-        if (status != 0)
-            return status;
-        /* The library's own check gives the range (e.g. omega > 0, n integer >= 2). */
-        fricreg_sim *probe = NULL;
-        if (fricreg_sim_create(system, &probe) != FRICREG_OK)
-            return cli_usage_error(option, "out of memory");
-        status = fricreg_sim_set_param(probe, p->param, value);
-        if (status != FRICREG_OK) {
-            status = cli_usage_error(option, fricreg_sim_errmsg(probe));
-            fricreg_sim_free(probe);
-            return status;
-        }
-        fricreg_sim_free(probe);
-        if (run->nparams == (int)(sizeof run->params / sizeof run->params[0]))
-            return cli_usage_error(option, "too many parameters");
-        run->params[run->nparams].param = p->param;
-        run->params[run->nparams++].value = value;
-        return 0;
-    }
-    return cli_usage_error(option, "unknown option for this system (see fricreg-sim --help)");
 }
 
 /* --partition paper|consistent (the two blocks only: the other systems have no coupled
  * contacts, so the choice would change nothing there). */
-static int parse_partition(int system, const char *text, struct cli_run *run)
+static int parse_partition(const struct cli_option *row, const char *text)
 {
-    if (system != FRICREG_SYSTEM_TWOBLOCK)
-        return cli_usage_error("--partition", "only twoblock has coupled contacts");
-    if (strcmp(text, "consistent") == 0)
-        run->partition = FRICREG_PARTITION_CONSISTENT;
-    else if (strcmp(text, "paper") == 0)
-        run->partition = FRICREG_PARTITION_PAPER;
-    else
-        return cli_usage_error("--partition", "expected paper or consistent");
-    return 0;
+    static const struct cli_word partitions[] = {{"paper", FRICREG_PARTITION_PAPER},
+                                                 {"consistent", FRICREG_PARTITION_CONSISTENT},
+                                                 {NULL, 0}};
+    struct cli_run *run = row->slot;
+    if (run->system != FRICREG_SYSTEM_TWOBLOCK)
+        return cli_usage_error(row->name, "only twoblock has coupled contacts");
+    const struct cli_option choice = {row->name, CLI_CHOICE, .slot = &run->partition,
+                                      .words = partitions};
+    return cli_parse_value(&choice, text);
 }
 
-/* Options that every system has. Returns -1 if option is not one of them. */
-/* A whole number from lo to hi (the extrapolation's order and window). */
-static int parse_whole(const char *option, const char *text, double lo, double hi, int *out)
+/* `exact` solves in closed form: the integration options have no meaning for it. */
+static int refused_by_exact(const struct cli_option *row, const char *text)
 {
-    char *end = NULL;
-    double x = strtod(text, &end);
-    if (end == text || *end != '\0' || !(x >= lo && x <= hi) || x != floor(x)) {
-        char what[96];
-        snprintf(what, sizeof what, "must be a whole number from %g to %g", lo, hi);
-        return cli_usage_error(option, what);
-    }
-    *out = (int)x;
-    return 0;
+    (void)text;
+    return cli_usage_error(row->name, "not an option of exact (closed-form solution)");
 }
 
-static int parse_common(const char *option, const char *text, struct cli_run *run)
+enum { MAX_ROWS = 32 };
+
+/* The rows every system has (exact refuses the integration ones), then the system's
+ * parameters; returns their number. */
+static size_t run_table(struct cli_run *run, int exact, int *cycles_given,
+                        struct cli_option table[MAX_ROWS])
 {
-    if (strcmp(option, "--law") == 0)
-        return parse_law(text, &run->law);
-    if (strcmp(option, "--integrator") == 0) {
-        run->integrator = fricreg_integrator_from_name(text);
-        if (run->integrator != 0)
-            return 0;
-        char names[256], what[300];
-        snprintf(what, sizeof what, "unknown integrator (%s)",
-                 cli_names(names, sizeof names, fricreg_integrator_name, ", "));
-        return cli_usage_error(option, what);
+    const struct cli_option integration[] = {
+        {"--law", CLI_NAME, .slot = &run->law, .names = &cli_law_names},
+        {"--integrator", CLI_NAME, .slot = &run->integrator, .names = &cli_integrator_names},
+        {"--dt", CLI_POSITIVE, .slot = &run->dt},
+        {"--rtol", CLI_NONNEGATIVE, .slot = &run->rtol},
+        {"--atol", CLI_NONNEGATIVE, .slot = &run->atol},
+        {"--eps", CLI_POSITIVE, .slot = &run->eps},
+        {"--extrapolate", CLI_WHOLE, .slot = &run->extrapolate, .lo = 2, .hi = 8},
+        {"--extrapolate-order", CLI_WHOLE, .slot = &run->extrapolate_order, .lo = 0, .hi = 4},
+        {"--extrapolate-window", CLI_WHOLE, .slot = &run->extrapolate_window, .lo = 0, .hi = 1e7}};
+    const struct cli_option run_length_and_output[] = {
+        {"--t-end", CLI_POSITIVE, .slot = &run->t_end},
+        {"--cycles", CLI_WHOLE, .slot = &run->cycles, .lo = 1, .hi = 1e7, .given = cycles_given},
+        {"--output", CLI_CHOICE, .slot = &run->output, .words = cli_output_words},
+        {"--partition", CLI_CUSTOM, .slot = run, .parse = parse_partition}};
+    size_t n = 0;
+    for (size_t k = 0; k < sizeof integration / sizeof integration[0]; k++) {
+        table[n] = integration[k];
+        if (exact) { /* the name is known, its value never read */
+            table[n].kind = CLI_CUSTOM;
+            table[n].parse = refused_by_exact;
+        }
+        n++;
     }
-    if (strcmp(option, "--dt") == 0)
-        return parse_positive(option, text, &run->dt);
-    if (strcmp(option, "--eps") == 0)
-        return parse_positive(option, text, &run->eps);
-    if (strcmp(option, "--rtol") == 0)
-        return parse_nonnegative(option, text, &run->rtol);
-    if (strcmp(option, "--atol") == 0)
-        return parse_nonnegative(option, text, &run->atol);
-    if (strcmp(option, "--t-end") == 0)
-        return parse_positive(option, text, &run->t_end);
-    if (strcmp(option, "--cycles") == 0) {
-        double cycles;
-        int status = parse_positive(option, text, &cycles);
-        if (status != 0)
-            return status; /* NaN, Inf, <= 0: never converted to int */
-        if (cycles != floor(cycles) || cycles > 1e7)
-            return cli_usage_error(option, "must be a whole number from 1 to 10^7");
-        run->cycles = (int)cycles;
-        return 0;
-    }
-    if (strcmp(option, "--extrapolate") == 0) {
-        double levels;
-        int status = parse_positive(option, text, &levels);
-        if (status != 0)
-            return status; /* not a number: never converted to int */
-        if (levels != floor(levels) || levels < 2 || levels > 8)
-            return cli_usage_error(option, "must be a whole number of levels from 2 to 8");
-        run->extrapolate = (int)levels;
-        return 0;
-    }
-    if (strcmp(option, "--extrapolate-order") == 0)
-        return parse_whole(option, text, 0, 4, &run->extrapolate_order);
-    if (strcmp(option, "--extrapolate-window") == 0)
-        return parse_whole(option, text, 0, 1e7, &run->extrapolate_window);
-    if (strcmp(option, "--output") == 0) {
-        if (strcmp(text, "summary") == 0)
-            run->output = CLI_SUMMARY;
-        else if (strcmp(text, "trajectory") == 0)
-            run->output = CLI_TRAJECTORY;
-        else
-            return cli_usage_error(option, "expected summary or trajectory");
-        return 0;
-    }
-    return -1;
+    for (size_t k = 0; k < sizeof run_length_and_output / sizeof run_length_and_output[0]; k++)
+        table[n++] = run_length_and_output[k];
+    for (size_t k = 0; k < sizeof param_options / sizeof param_options[0]; k++)
+        if (param_options[k].system == run->system && n < MAX_ROWS)
+            table[n++] = (struct cli_option){param_options[k].name, CLI_CUSTOM, .slot = run,
+                                             .parse = parse_param, .arg = param_options[k].param};
+    return n;
 }
 
-int cli_parse_run(int system, int argc, char **argv, struct cli_run *run)
+/* The checks between options, once all are read. */
+static int check_run(const struct cli_run *run, int cycles_given)
 {
-    *run = (struct cli_run){.system = system,
-                            .law = FRICREG_LAW_QUINN,
-                            .integrator = FRICREG_INT_RK4,
-                            .dt = 0.01,
-                            .cycles = 4,
-                            .output = CLI_SUMMARY,
-                            .partition = FRICREG_PARTITION_CONSISTENT};
-    int cycles_given = 0;
-    for (int k = 0; k < argc; k++) {
-        char *option = NULL, *value = NULL;
-        int split = cli_next_option(argc, argv, &k, &option, &value);
-        if (split != 0)
-            return split;
-        cycles_given |= strcmp(option, "--cycles") == 0;
-        int status = strcmp(option, "--partition") == 0 ? parse_partition(system, value, run)
-                                                        : parse_common(option, value, run);
-        if (status < 0)
-            status = parse_param(system, option, value, run);
-        if (status != 0)
-            return status;
-    }
     if (run->t_end > 0.0 && cycles_given)
         return cli_usage_error("--t-end", "give --t-end or --cycles, not both");
     if (!run->extrapolate && (run->extrapolate_order || run->extrapolate_window))
@@ -291,6 +159,27 @@ int cli_parse_run(int system, int argc, char **argv, struct cli_run *run)
         return cli_usage_error("--extrapolate",
                                "adds to the summary; not with --output trajectory");
     return cli_check_tolerances(run->integrator, run->rtol, run->atol);
+}
+
+static int parse_run(int system, int exact, int argc, char **argv, struct cli_run *run)
+{
+    *run = (struct cli_run){.system = system,
+                            .law = FRICREG_LAW_QUINN,
+                            .integrator = FRICREG_INT_RK4,
+                            .dt = 0.01,
+                            .cycles = 4,
+                            .output = CLI_SUMMARY,
+                            .partition = FRICREG_PARTITION_CONSISTENT};
+    int cycles_given = 0;
+    struct cli_option table[MAX_ROWS];
+    size_t n = run_table(run, exact, &cycles_given, table);
+    int status = cli_parse_options(argc, argv, table, n, exact ? "exact" : cli_system_name(system));
+    return status != 0 ? status : check_run(run, cycles_given);
+}
+
+int cli_parse_run(int system, int argc, char **argv, struct cli_run *run)
+{
+    return parse_run(system, 0, argc, argv, run);
 }
 
 /* GSL's implicit and multistep steppers end their Newton iterations when the correction is
@@ -312,27 +201,10 @@ int cli_check_tolerances(int integrator, double rtol, double atol)
     return 0;
 }
 
-/* `exact` takes the oscillator's parameters and the run length; the integration options have
- * no meaning for it and are refused by name. */
+/* `exact` takes the oscillator's parameters and the run length. */
 int cli_parse_exact(int argc, char **argv, struct cli_run *run)
 {
-    static const char *const refused[] = {"--law",
-                                          "--integrator",
-                                          "--dt",
-                                          "--rtol",
-                                          "--atol",
-                                          "--eps",
-                                          "--extrapolate",
-                                          "--extrapolate-order",
-                                          "--extrapolate-window"};
-    for (int k = 0; k < argc; k++)
-        for (size_t r = 0; r < sizeof refused / sizeof refused[0]; r++) {
-            size_t len = strlen(refused[r]);
-            if (strncmp(argv[k], refused[r], len) == 0 &&
-                (argv[k][len] == '\0' || argv[k][len] == '='))
-                return cli_usage_error(refused[r], "not an option of exact (closed-form solution)");
-        }
-    int status = cli_parse_run(FRICREG_SYSTEM_OSCILLATOR, argc, argv, run);
+    int status = parse_run(FRICREG_SYSTEM_OSCILLATOR, 1, argc, argv, run);
     if (status == 0 && run->output != CLI_SUMMARY)
         return cli_usage_error("--output", "exact writes a summary only");
     return status;

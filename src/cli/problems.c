@@ -1,9 +1,9 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* problems.c — `fricreg-sim hold|belt|disk`: the reference problems of issue 13 beyond the
- * paper (src/problems/, the same code the benchmarks run; docs/laws2d.md), each with a JSON
- * summary of what it measures against its reference, or a CSV row per GSL step (2 dt).
- * Every bad option is one line on stderr naming it, exit 2, nothing on stdout; a run that
- * fails (or does not reach what it measures) exits 1. */
+/* problems.c — `fricreg-sim hold|belt|disk`: the reference problems beyond the paper
+ * (src/problems/, the same code the benchmarks run; docs/laws2d.md), each with a JSON summary
+ * of what it measures against its reference, or a CSV row per GSL step (2 dt). Every bad
+ * option is one line on stderr naming it, exit 2, nothing on stdout; a run that fails (or does
+ * not reach what it measures) exits 1. */
 #include <errno.h>
 #include <float.h>
 #include <math.h>
@@ -19,89 +19,8 @@
 #define RK4_STABLE 2.78 /* RK4's real-axis stability bound, dt * lambda (src/ode/integrator.c) */
 #define DISK_MAX 1e250  /* the 2-D laws' largest number (fricreg_disk.h) */
 
-/* A numeric option: its name, where it goes, and its range. */
-enum range { ANY, POSITIVE, NONNEGATIVE };
-struct number_option {
-    const char *name;
-    double *slot;
-    enum range range;
-};
-
-static int parse_number(const struct number_option *o, const char *text)
-{
-    char *end = NULL;
-    errno = 0;
-    double value = strtod(text, &end);
-    if (end == text || *end != '\0')
-        return cli_usage_error(o->name, "not a number");
-    if (!isfinite(value) || (errno == ERANGE && fabs(value) == HUGE_VAL))
-        return cli_usage_error(o->name, "not a finite number");
-    if (o->range == POSITIVE && !(value > 0.0))
-        return cli_usage_error(o->name, "must be > 0");
-    if (o->range == NONNEGATIVE && !(value >= 0.0))
-        return cli_usage_error(o->name, "must be >= 0");
-    *o->slot = value;
-    return 0;
-}
-
-static int parse_output(const char *text, enum cli_output *output)
-{
-    if (strcmp(text, "summary") == 0)
-        *output = CLI_SUMMARY;
-    else if (strcmp(text, "trajectory") == 0)
-        *output = CLI_TRAJECTORY;
-    else
-        return cli_usage_error("--output", "expected summary or trajectory");
-    return 0;
-}
-
-/* Parses argv into the numeric options (each marked in given[] when set), --output and, when
- * law != NULL, --law (a 2-D law's name). */
-static int parse_options(int argc, char **argv, const struct number_option opts[], size_t n,
-                         int given[], int *law, enum cli_output *output, const char *command)
-{
-    for (int k = 0; k < argc; k++) {
-        char *option = NULL, *value = NULL;
-        int status = cli_next_option(argc, argv, &k, &option, &value);
-        if (status != 0)
-            return status;
-        if (strcmp(option, "--output") == 0) {
-            status = parse_output(value, output);
-        } else if (law != NULL && strcmp(option, "--law") == 0) {
-            *law = fricreg_disk_law_from_name(value);
-            char names[256], what[300];
-            snprintf(what, sizeof what, "unknown 2-D law (%s)",
-                     cli_names(names, sizeof names, fricreg_disk_law_name, ", "));
-            status = *law != 0 ? 0 : cli_usage_error(option, what);
-        } else {
-            size_t j = 0;
-            while (j < n && strcmp(opts[j].name, option) != 0)
-                j++;
-            if (j == n) {
-                char what[96];
-                snprintf(what, sizeof what, "unknown option for %s (see fricreg-sim --help)",
-                         command);
-                return cli_usage_error(option, what);
-            }
-            status = parse_number(&opts[j], value);
-            given[j] = 1;
-        }
-        if (status != 0)
-            return status;
-    }
-    return 0;
-}
-
-/* A whole number of steps or cycles from lo to hi, given as a double option. */
-static int whole(const char *option, double value, double lo, double hi)
-{
-    if (value != floor(value) || value < lo || value > hi) {
-        char what[96];
-        snprintf(what, sizeof what, "must be a whole number from %g to %g", lo, hi);
-        return cli_usage_error(option, what);
-    }
-    return 0;
-}
+static const struct cli_name_table disk_law_names = {"2-D law", fricreg_disk_law_from_name,
+                                                     fricreg_disk_law_name};
 
 /* The stick zone's rate times dt must be inside RK4's stability interval (the library's own
  * step guard, src/sim/sim.c, for the 1-D law): 2 bound/(mass eps) dt <= 2.78. */
@@ -199,32 +118,38 @@ int cli_parse_hold(int argc, char **argv, struct prob_hold *p, enum cli_output *
 {
     double v[H_N];
     memcpy(v, hold_defaults, sizeof v);
-    const struct number_option opts[H_N] = {
-        {"--mu", &v[H_MU], POSITIVE},       {"--mass", &v[H_MASS], POSITIVE},
-        {"--g", &v[H_G], POSITIVE},         {"--theta-deg", &v[H_THETA], NONNEGATIVE},
-        {"--phi-deg", &v[H_PHI], ANY},      {"--tilt-rate", &v[H_RATE], NONNEGATIVE},
-        {"--steps", &v[H_STEPS], POSITIVE}, {"--dt", &v[H_DT], POSITIVE},
-        {"--eps", &v[H_EPS], POSITIVE}};
-    int given[H_N] = {0};
-    int status = parse_options(argc, argv, opts, H_N, given, NULL, output, "hold");
+    int theta_given = 0, steps_given = 0, eps_given = 0, out = CLI_SUMMARY;
+    const struct cli_option opts[] = {
+        {"--mu", CLI_POSITIVE, .slot = &v[H_MU]},
+        {"--mass", CLI_POSITIVE, .slot = &v[H_MASS]},
+        {"--g", CLI_POSITIVE, .slot = &v[H_G]},
+        {"--theta-deg", CLI_NONNEGATIVE, .slot = &v[H_THETA], .given = &theta_given},
+        {"--phi-deg", CLI_NUMBER, .slot = &v[H_PHI]},
+        {"--tilt-rate", CLI_NONNEGATIVE, .slot = &v[H_RATE]},
+        {"--steps", CLI_POSITIVE, .slot = &v[H_STEPS], .given = &steps_given},
+        {"--dt", CLI_POSITIVE, .slot = &v[H_DT]},
+        {"--eps", CLI_POSITIVE, .slot = &v[H_EPS], .given = &eps_given},
+        {"--output", CLI_CHOICE, .slot = &out, .words = cli_output_words}};
+    int status = cli_parse_options(argc, argv, opts, sizeof opts / sizeof opts[0], "hold");
     if (status != 0)
         return status;
-    if (!given[H_THETA]) /* inside the disk: tan(theta) = 0.8 mu, or 0.9 atan(mu) to tilt from */
+    *output = out;
+    if (!theta_given) /* inside the disk: tan(theta) = 0.8 mu, or 0.9 atan(mu) to tilt from */
         v[H_THETA] = (v[H_RATE] > 0.0 ? 0.9 * atan(v[H_MU]) : atan(0.8 * v[H_MU])) / DEG;
     if (v[H_THETA] >= 90.0)
         return cli_usage_error("--theta-deg", "must be below 90");
-    if (!given[H_STEPS] && v[H_RATE] > 0.0) { /* to 90 degrees and a second more */
+    if (!steps_given && v[H_RATE] > 0.0) { /* to 90 degrees and a second more */
         v[H_STEPS] = 2.0 * ceil(((90.0 - v[H_THETA]) / v[H_RATE] + 1.0) / (2.0 * v[H_DT]));
         if (v[H_STEPS] > 1e9)
             return cli_usage_error("--tilt-rate", "more than 10^9 steps to 90 deg: give --steps");
     }
-    if ((status = whole("--steps", v[H_STEPS], 2, 1e9)) != 0)
+    if ((status = cli_check_whole("--steps", v[H_STEPS], 2, 1e9)) != 0)
         return status;
     if (fmod(v[H_STEPS], 2.0) != 0.0)
         return cli_usage_error("--steps", "must be even (GSL's rk4 takes two classical steps)");
-    if (!given[H_EPS])
+    if (!eps_given)
         v[H_EPS] = 20.0 * v[H_DT]; /* tests/test_hold.c: the stick zone's rate 0.49 / step */
-    if ((status = law_eps(given[H_EPS] ? "--eps" : "--dt", v[H_EPS], DISK_MAX)) != 0)
+    if ((status = law_eps(eps_given ? "--eps" : "--dt", v[H_EPS], DISK_MAX)) != 0)
         return status;
     *p = (struct prob_hold){.mass = v[H_MASS],
                             .g = v[H_G],
@@ -291,31 +216,32 @@ static int cli_hold(int argc, char **argv, FILE *out)
 
 /* ---- belt ------------------------------------------------------------------------------- */
 
-enum { B_FS, B_FK, B_VS, B_DELTA, B_V, B_DT, B_EPS, B_CYCLES, B_REF_DT, B_N };
-
 int cli_parse_belt(int argc, char **argv, struct prob_belt *p, enum cli_output *output)
 {
-    const struct prob_belt d = prob_belt_defaults();
-    double v[B_N] = {d.fs, d.fk, d.vs, d.delta, d.v_belt, d.dt, 0.0, d.cycles, d.ref_dt};
-    const struct number_option opts[B_N] = {
-        {"--fs", &v[B_FS], POSITIVE},        {"--fk", &v[B_FK], NONNEGATIVE},
-        {"--vs", &v[B_VS], POSITIVE},        {"--delta", &v[B_DELTA], POSITIVE},
-        {"--v-belt", &v[B_V], POSITIVE},     {"--dt", &v[B_DT], POSITIVE},
-        {"--eps", &v[B_EPS], POSITIVE},      {"--cycles", &v[B_CYCLES], POSITIVE},
-        {"--ref-dt", &v[B_REF_DT], POSITIVE}};
-    int given[B_N] = {0};
-    int status = parse_options(argc, argv, opts, B_N, given, NULL, output, "belt");
+    struct prob_belt b = prob_belt_defaults();
+    int eps_given = 0, out = CLI_SUMMARY;
+    const struct cli_option opts[] = {{"--fs", CLI_POSITIVE, .slot = &b.fs},
+                                      {"--fk", CLI_NONNEGATIVE, .slot = &b.fk},
+                                      {"--vs", CLI_POSITIVE, .slot = &b.vs},
+                                      {"--delta", CLI_POSITIVE, .slot = &b.delta},
+                                      {"--v-belt", CLI_POSITIVE, .slot = &b.v_belt},
+                                      {"--dt", CLI_POSITIVE, .slot = &b.dt},
+                                      {"--eps", CLI_POSITIVE, .slot = &b.eps, .given = &eps_given},
+                                      {"--cycles", CLI_WHOLE, .slot = &b.cycles, .lo = 2,
+                                       .hi = 1000},
+                                      {"--ref-dt", CLI_POSITIVE, .slot = &b.ref_dt},
+                                      {"--output", CLI_CHOICE, .slot = &out,
+                                       .words = cli_output_words}};
+    int status = cli_parse_options(argc, argv, opts, sizeof opts / sizeof opts[0], "belt");
     if (status != 0)
         return status;
-    if (v[B_FK] > v[B_FS])
+    *output = out;
+    if (b.fk > b.fs)
         return cli_usage_error("--fk", "kinetic above static: must be <= --fs");
-    if ((status = whole("--cycles", v[B_CYCLES], 2, 1000)) != 0)
-        return status;
-    *p = (struct prob_belt){v[B_FS], v[B_FK],  v[B_VS],          v[B_DELTA], v[B_V],
-                            v[B_DT], v[B_EPS], (int)v[B_CYCLES], v[B_REF_DT]};
-    if (!given[B_EPS])
-        p->eps = 2.0 * p->dt; /* the paper's rule */
-    if ((status = law_eps(given[B_EPS] ? "--eps" : "--dt", p->eps, DBL_MAX)) != 0)
+    if (!eps_given)
+        b.eps = 2.0 * b.dt; /* the paper's rule */
+    *p = b;
+    if ((status = law_eps(eps_given ? "--eps" : "--dt", p->eps, DBL_MAX)) != 0)
         return status;
     /* a cycle is at most a stick of 2 fs/V and about a natural period of slip: a run of more
      * than 1e9 steps is refused rather than left to run for hours */
@@ -379,27 +305,29 @@ static int cli_belt(int argc, char **argv, FILE *out)
 
 /* ---- disk ------------------------------------------------------------------------------- */
 
-enum { D_A, D_OMEGA, D_DT, D_EPS, D_REF_EPS, D_N };
-
 int cli_parse_disk(int argc, char **argv, struct prob_disk *p, double *ref_eps,
                    enum cli_output *output)
 {
-    const struct prob_disk d = prob_disk_defaults();
-    double v[D_N] = {d.a, d.omega, d.dt, 0.0, DISK_REF_EPS};
-    const struct number_option opts[D_N] = {{"--a", &v[D_A], POSITIVE},
-                                            {"--omega", &v[D_OMEGA], POSITIVE},
-                                            {"--dt", &v[D_DT], POSITIVE},
-                                            {"--eps", &v[D_EPS], POSITIVE},
-                                            {"--ref-eps", &v[D_REF_EPS], NONNEGATIVE}};
-    int given[D_N] = {0}, law = d.law;
-    int status = parse_options(argc, argv, opts, D_N, given, &law, output, "disk");
+    struct prob_disk d = prob_disk_defaults();
+    double reference = DISK_REF_EPS;
+    int eps_given = 0, out = CLI_SUMMARY;
+    const struct cli_option opts[] = {{"--a", CLI_POSITIVE, .slot = &d.a},
+                                      {"--omega", CLI_POSITIVE, .slot = &d.omega},
+                                      {"--dt", CLI_POSITIVE, .slot = &d.dt},
+                                      {"--eps", CLI_POSITIVE, .slot = &d.eps, .given = &eps_given},
+                                      {"--ref-eps", CLI_NONNEGATIVE, .slot = &reference},
+                                      {"--law", CLI_NAME, .slot = &d.law, .names = &disk_law_names},
+                                      {"--output", CLI_CHOICE, .slot = &out,
+                                       .words = cli_output_words}};
+    int status = cli_parse_options(argc, argv, opts, sizeof opts / sizeof opts[0], "disk");
     if (status != 0)
         return status;
+    *output = out;
+    if (!eps_given)
+        d.eps = 2.0 * d.dt; /* the paper's rule */
     *p = d;
-    p->law = law, p->a = v[D_A], p->omega = v[D_OMEGA], p->dt = v[D_DT];
-    p->eps = given[D_EPS] ? v[D_EPS] : 2.0 * p->dt; /* the paper's rule */
-    *ref_eps = v[D_REF_EPS];
-    if ((status = law_eps(given[D_EPS] ? "--eps" : "--dt", p->eps, DISK_MAX)) != 0 ||
+    *ref_eps = reference;
+    if ((status = law_eps(eps_given ? "--eps" : "--dt", p->eps, DISK_MAX)) != 0 ||
         (*ref_eps > 0.0 && (status = law_eps("--ref-eps", *ref_eps, DISK_MAX)) != 0))
         return status;
     double turns = (p->turns_transient + 1) * 2.0 * PI * p->cycles_per_turn / p->omega;

@@ -454,17 +454,10 @@ static int check_out_dir(const char *dir)
 int cli_reproduce(int argc, char **argv)
 {
     const char *dir = NULL;
-    for (int k = 0; k < argc; k++) {
-        if (strcmp(argv[k], "--out") == 0 && k + 1 < argc)
-            dir = argv[++k];
-        else if (strncmp(argv[k], "--out=", 6) == 0)
-            dir = argv[k] + 6;
-        else {
-            fprintf(stderr, "fricreg-sim: %s: unknown option for reproduce (--out DIR)\n", argv[k]);
-            return CLI_EXIT_USAGE;
-        }
-    }
-    int status = check_out_dir(dir);
+    const struct cli_option opts[] = {{"--out", CLI_FILE, .slot = &dir}};
+    int status = cli_parse_options(argc, argv, opts, sizeof opts / sizeof opts[0], "reproduce");
+    if (status == 0)
+        status = check_out_dir(dir);
     if (status != 0)
         return status;
     printf("fricreg %s: reproduction of Quinn (2004), RK4, paper's eps rules; files in %s\n\n",

@@ -20,38 +20,42 @@ struct structure_input {
     double t0, dt_rec;
 };
 
-static int parse_number(const char *option, const char *text, double *value)
+/* strtod's ERANGE for an overflow; an underflow is the subnormal or zero meant, as
+ * cli_parse_number keeps it. */
+static int overflowed(double x)
 {
-    char *end = NULL;
-    errno = 0;
-    *value = strtod(text, &end);
-    if (end == text || *end != '\0' || errno == ERANGE || !isfinite(*value))
-        return cli_usage_error(option, "not a finite number");
-    return 0;
+    return errno == ERANGE && fabs(x) == HUGE_VAL;
 }
 
 /* --rayleigh A0,A1: two numbers >= 0 (the library names the range too; checked here first so
  * that the message names the option). */
-static int parse_rayleigh(const char *text, struct structure_options *o)
+static int parse_rayleigh(const struct cli_option *row, const char *text)
 {
+    struct structure_options *o = row->slot;
     char *end = NULL;
     errno = 0;
     o->a0 = strtod(text, &end);
-    if (end == text || *end != ',' || errno == ERANGE)
-        return cli_usage_error("--rayleigh", "expected A0,A1 (two numbers, comma-separated)");
+    if (end == text || *end != ',' || overflowed(o->a0))
+        return cli_usage_error(row->name, "expected A0,A1 (two numbers, comma-separated)");
     const char *second = end + 1;
+    errno = 0;
     o->a1 = strtod(second, &end);
-    if (end == second || *end != '\0' || errno == ERANGE || !isfinite(o->a0) || !isfinite(o->a1))
-        return cli_usage_error("--rayleigh", "expected A0,A1 (two finite numbers)");
+    if (end == second || *end != '\0' || overflowed(o->a1) || !isfinite(o->a0) || !isfinite(o->a1))
+        return cli_usage_error(row->name, "expected A0,A1 (two finite numbers)");
     if (o->a0 < 0.0 || o->a1 < 0.0)
-        return cli_usage_error("--rayleigh", "A0 and A1 must be >= 0");
-    o->rayleigh_given = 1;
+        return cli_usage_error(row->name, "A0 and A1 must be >= 0");
     return 0;
 }
 
+/* The structure's own schemes; "central" is its central differences, not fricreg_sim's. */
+static const struct cli_word schemes[] = {{"newmark", SCHEME_NEWMARK},
+                                          {"hht", SCHEME_HHT},
+                                          {"central", SCHEME_CENTRAL},
+                                          {NULL, 0}};
+
 /* The library's integrators that --integrator runs through fricreg_structure_run_ode, each
- * after ", ", into buf[len]: all but fricreg_sim's "central" and "central-imex"; "central"
- * names the structure's own central differences here (listed once, with newmark and hht). */
+ * after ", ", into buf[len]: all but fricreg_sim's "central" and "central-imex" (the word
+ * "central" names the structure's own scheme here, listed once with the others). */
 static const char *gsl_stepper_names(char *buf, size_t len)
 {
     size_t used = 0;
@@ -62,87 +66,23 @@ static const char *gsl_stepper_names(char *buf, size_t len)
     return buf;
 }
 
-static int parse_integrator(const char *text, struct structure_options *o)
+/* --integrator: one of the schemes, or a GSL stepper by the library's name. */
+static int parse_integrator(const struct cli_option *row, const char *text)
 {
-    if (strcmp(text, "newmark") == 0)
-        o->scheme = SCHEME_NEWMARK;
-    else if (strcmp(text, "hht") == 0)
-        o->scheme = SCHEME_HHT;
-    else if (strcmp(text, "central") == 0)
-        o->scheme = SCHEME_CENTRAL;
+    struct structure_options *o = row->slot;
+    const struct cli_word *scheme = cli_find_word(schemes, text);
+    if (scheme != NULL)
+        o->scheme = scheme->value;
     else if ((o->integrator = fricreg_integrator_from_name(text)) != 0)
         o->scheme = SCHEME_GSL;
     else {
-        char names[256], what[320];
-        snprintf(what, sizeof what, "unknown integrator (newmark, hht, central%s)",
+        char words[64], names[256], what[340];
+        snprintf(what, sizeof what, "unknown integrator (%s%s)",
+                 cli_join_words(words, sizeof words, schemes, ", "),
                  gsl_stepper_names(names, sizeof names));
-        return cli_usage_error("--integrator", what);
+        return cli_usage_error(row->name, what);
     }
     return 0;
-}
-
-/* A file option: its name and where it is kept. */
-static const char **file_option(struct structure_options *o, const char *option)
-{
-    static const char *const names[] = {"--mass", "--stiffness", "--damping",     "--contacts",
-                                        "--mun",  "--influence", "--ground-accel"};
-    const char **slots[] = {&o->mass, &o->stiffness, &o->damping, &o->contacts,
-                            &o->mun,  &o->influence, &o->ground};
-    for (size_t k = 0; k < sizeof names / sizeof names[0]; k++)
-        if (strcmp(option, names[k]) == 0)
-            return slots[k];
-    return NULL;
-}
-
-static int parse_option(const char *option, const char *text, struct structure_options *o)
-{
-    const char **file = file_option(o, option);
-    if (file != NULL) {
-        *file = text;
-        return 0;
-    }
-    int status;
-    if (strcmp(option, "--rayleigh") == 0)
-        return parse_rayleigh(text, o);
-    if (strcmp(option, "--integrator") == 0)
-        return parse_integrator(text, o);
-    if (strcmp(option, "--law") == 0) {
-        o->law = fricreg_law_from_name(text);
-        if (o->law != 0)
-            return 0;
-        char names[256], what[300];
-        snprintf(what, sizeof what, "unknown law (%s)",
-                 cli_names(names, sizeof names, fricreg_law_name, ", "));
-        return cli_usage_error(option, what);
-    }
-    if (strcmp(option, "--output") == 0) {
-        if (strcmp(text, "summary") == 0)
-            o->output = CLI_SUMMARY;
-        else if (strcmp(text, "trajectory") == 0)
-            o->output = CLI_TRAJECTORY;
-        else
-            return cli_usage_error(option, "expected summary or trajectory");
-        return 0;
-    }
-    static const char *const positive[] = {"--eps", "--dt", "--t-end"};
-    double *positive_slot[] = {&o->eps, &o->dt, &o->t_end};
-    for (size_t k = 0; k < 3; k++)
-        if (strcmp(option, positive[k]) == 0) {
-            if ((status = parse_number(option, text, positive_slot[k])) != 0)
-                return status;
-            return *positive_slot[k] > 0.0 ? 0 : cli_usage_error(option, "must be > 0");
-        }
-    if (strcmp(option, "--rtol") == 0 || strcmp(option, "--atol") == 0) {
-        double *slot = option[2] == 'r' ? &o->rtol : &o->atol;
-        if ((status = parse_number(option, text, slot)) != 0)
-            return status;
-        return *slot >= 0.0 ? 0 : cli_usage_error(option, "must be >= 0");
-    }
-    if (strcmp(option, "--alpha") == 0) {
-        o->alpha_given = 1;
-        return parse_number(option, text, &o->alpha);
-    }
-    return cli_usage_error(option, "unknown option for structure (see fricreg-sim --help)");
 }
 
 /* Options that need others, or exclude them. */
@@ -176,15 +116,26 @@ int cli_parse_structure(int argc, char **argv, struct structure_options *o)
     *o = (struct structure_options){.law = FRICREG_LAW_QUINN,
                                     .alpha = -0.05,
                                     .output = CLI_SUMMARY};
-    for (int k = 0; k < argc; k++) {
-        char *option = NULL, *value = NULL;
-        int status = cli_next_option(argc, argv, &k, &option, &value);
-        if (status == 0)
-            status = parse_option(option, value, o);
-        if (status != 0)
-            return status;
-    }
-    return check_options(o);
+    const struct cli_option opts[] = {
+        {"--mass", CLI_FILE, .slot = &o->mass},
+        {"--stiffness", CLI_FILE, .slot = &o->stiffness},
+        {"--damping", CLI_FILE, .slot = &o->damping},
+        {"--contacts", CLI_FILE, .slot = &o->contacts},
+        {"--mun", CLI_FILE, .slot = &o->mun},
+        {"--influence", CLI_FILE, .slot = &o->influence},
+        {"--ground-accel", CLI_FILE, .slot = &o->ground},
+        {"--rayleigh", CLI_CUSTOM, .slot = o, .parse = parse_rayleigh, .given = &o->rayleigh_given},
+        {"--integrator", CLI_CUSTOM, .slot = o, .parse = parse_integrator},
+        {"--law", CLI_NAME, .slot = &o->law, .names = &cli_law_names},
+        {"--output", CLI_CHOICE, .slot = &o->output, .words = cli_output_words},
+        {"--eps", CLI_POSITIVE, .slot = &o->eps},
+        {"--dt", CLI_POSITIVE, .slot = &o->dt},
+        {"--t-end", CLI_POSITIVE, .slot = &o->t_end},
+        {"--rtol", CLI_NONNEGATIVE, .slot = &o->rtol},
+        {"--atol", CLI_NONNEGATIVE, .slot = &o->atol},
+        {"--alpha", CLI_NUMBER, .slot = &o->alpha, .given = &o->alpha_given}};
+    int status = cli_parse_options(argc, argv, opts, sizeof opts / sizeof opts[0], "structure");
+    return status != 0 ? status : check_options(o);
 }
 
 /* ---- Reading the model -------------------------------------------------------------------- */
