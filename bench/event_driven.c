@@ -51,7 +51,7 @@ struct ed_sys {
     double *a_free;
 };
 
-/* Free accelerations a_free(t, u) (friction excluded), as in src/systems/{oscillator,chain}.c. */
+/* Free accelerations a_free(t, u) (friction excluded), as in src/sim/systems/{oscillator,chain}.c. */
 static void free_acc(const struct ed_sys *s, double t, const double u[], double af[])
 {
     double G = s->a * sin(s->omega * t);

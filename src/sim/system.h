@@ -2,7 +2,7 @@
 /* system.h — internal: a reference system as a table of function pointers, one file each.
  *
  * As GSL's ode-initval2 has one file per stepper behind gsl_odeiv2_step_type, each system of
- * the drivers is one file in src/systems/ defining one `const struct fr_system_type`, and
+ * the drivers is one file in src/sim/systems/ defining one `const struct fr_system_type`, and
  * systems.c maps enum fricreg_system onto them. A system is written as contacts
  * zddot = a_free + W f (Sec. 3.3): it gives the contact velocities zdot and free
  * accelerations a_free from the state, its W and bounds, and the body accelerations once the
@@ -113,7 +113,7 @@ int fr_param_nonnegative(double value); /* "must be >= 0" */
 double fr_paper_eps_two_dt(const struct fr_system *sys, double dt); /* eps = 2 dt */
 double fr_unit_weight(const struct fr_system *sys); /* w = 1: D = -sum_i ∫ zdot_i f_i dt */
 
-/* The three reference systems (src/systems/). */
+/* The three reference systems (src/sim/systems/). */
 extern const struct fr_system_type fr_oscillator_type;
 extern const struct fr_system_type fr_chain_type;
 extern const struct fr_system_type fr_twoblock_type;

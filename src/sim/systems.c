@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* systems.c — enum fricreg_system mapped onto the reference systems' types (src/systems/),
+/* systems.c — enum fricreg_system mapped onto the reference systems' types (src/sim/systems/),
  * and their parameter tables read by parameter id. */
 #include <stddef.h>
 
