@@ -17,6 +17,7 @@
 
 #include "ctx_internal.h"
 #include "fricreg_stribeck.h"
+#include "law/contact_check.h"
 #include "law/law.h"
 
 void fr_stribeck_bounds(fricreg_ctx *ctx, const double zdot[])
@@ -53,19 +54,6 @@ void fr_stribeck_off(fricreg_ctx *ctx)
     ctx->bound = ctx->mun;
 }
 
-/* Validation as fricreg_stribeck_eval's: a non-finite number anywhere decides first, then the
- * first contact out of range. */
-static int check_parameters(fricreg_ctx *ctx, size_t m, const double fs[], const double fk[],
-                            const double vs[], const double delta[])
-{
-    if (m != ctx->m)
-        return fr_fail(ctx, FRICREG_ESIZE, "set_stribeck: m = %zu, context has %zu contacts", m,
-                       ctx->m);
-    char why[160];
-    int status = fr_stribeck_check(m, fs, fk, vs, delta, INFINITY, why, sizeof why);
-    return status == FRICREG_OK ? status : fr_fail(ctx, status, "set_stribeck: %s", why);
-}
-
 /* The three arrays, at the first set-up only; the context is unchanged if one fails. */
 static int allocate(fricreg_ctx *ctx)
 {
@@ -94,7 +82,7 @@ int fricreg_ctx_set_stribeck(fricreg_ctx *ctx, size_t m, const double fs[], cons
         ctx->last_valid = 0;
         return FRICREG_OK;
     }
-    int status = check_parameters(ctx, m, fs, fk, vs, delta);
+    int status = fr_check_stribeck(&ctx->err, m, ctx->m, fs, fk, vs, delta, INFINITY);
     if (status == FRICREG_OK)
         status = allocate(ctx);
     if (status != FRICREG_OK)

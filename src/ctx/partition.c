@@ -12,33 +12,13 @@
 #include "base/dispatch.h"
 #include "law/law.h"
 #include "partition.h"
+#include "law/contact_check.h"
 #include "law/plausible.h"
-
-/* The index of the first non-finite zdot[i] or a_free[i], or m: run only when
- * fr_plausible fails, to name the culprit. */
-static size_t first_nonfinite(size_t m, const double zdot[], const double a_free[])
-{
-    size_t i = 0;
-    while (i < m && isfinite(zdot[i]) && isfinite(a_free[i]))
-        i++;
-    return i;
-}
 
 static int check_inputs(fricreg_ctx *ctx, size_t m, const double zdot[], const double a_free[],
                         const double f[])
 {
-    if (m != ctx->m)
-        return fr_fail(ctx, FRICREG_ESIZE, "eval: m = %zu, context has %zu contacts", m, ctx->m);
-    if (zdot == NULL || a_free == NULL || f == NULL)
-        return fr_fail(ctx, FRICREG_ENULL, "eval: %s is NULL",
-                       zdot == NULL     ? "zdot"
-                       : a_free == NULL ? "a_free"
-                                        : "f");
-    size_t i = fr_plausible(m, zdot, a_free, NULL) ? m : first_nonfinite(m, zdot, a_free);
-    if (i < m)
-        return fr_fail(ctx, FRICREG_ENONFINITE, "eval: %s[%zu] is not finite",
-                       isfinite(zdot[i]) ? "a_free" : "zdot", i);
-    return FRICREG_OK;
+    return fr_check_eval_inputs(&ctx->err, m, ctx->m, m, zdot, a_free, f);
 }
 
 /* Splits the contacts: slip contacts get their force now, near-stick ones are listed in S

@@ -8,6 +8,7 @@
 
 #include "disk_ctx_internal.h"
 #include "disk_polish.h"
+#include "law/contact_check.h"
 #include "law/law_disk.h"
 
 #define GS_TOL 1e-14 /* a sweep moves no force by more than this times its bound: converged */
@@ -122,17 +123,9 @@ static int gauss_seidel(fricreg_disk_ctx *ctx)
 static int check_inputs(fricreg_disk_ctx *ctx, size_t m, const double zdot[], const double a_free[],
                         const double f[])
 {
-    if (m != ctx->m)
-        return fr_fail(ctx, FRICREG_ESIZE, "eval: m = %zu, context has %zu contacts", m, ctx->m);
-    if (zdot == NULL || a_free == NULL || f == NULL)
-        return fr_fail(ctx, FRICREG_ENULL, "eval: %s is NULL",
-                       zdot == NULL     ? "zdot"
-                       : a_free == NULL ? "a_free"
-                                        : "f");
-    for (size_t k = 0; k < 2 * m; k++)
-        if (!isfinite(zdot[k]) || !isfinite(a_free[k]))
-            return fr_fail(ctx, FRICREG_ENONFINITE, "eval: %s[%zu] is not finite",
-                           isfinite(zdot[k]) ? "a_free" : "zdot", k);
+    int status = fr_check_eval_inputs(&ctx->err, m, ctx->m, 2 * m, zdot, a_free, f);
+    if (status != FRICREG_OK)
+        return status;
     for (size_t k = 0; k < 2 * m; k++)
         if (!fr_disk_in_range(zdot[k]) || !fr_disk_in_range(a_free[k]))
             return fr_fail(ctx, FRICREG_EINVAL, "eval: %s[%zu] is beyond 1e250",

@@ -16,6 +16,7 @@
 
 #include "disk_ctx_internal.h"
 #include "fricreg_stribeck.h"
+#include "law/contact_check.h"
 #include "law/law_disk.h"
 
 double fr_disk_bound(const fricreg_disk_ctx *ctx, size_t i, double r)
@@ -45,19 +46,6 @@ void fr_disk_stribeck_refresh(fricreg_disk_ctx *ctx)
         ctx->strib_keps[i] = fr_stribeck_kinetic(&ctx->strib[i], ctx->eps);
 }
 
-/* Validation as fricreg_stribeck_disk_eval's: a non-finite number anywhere decides first, then
- * the first contact out of range (fs at most 1e250, as the context's bounds). */
-static int check_parameters(fricreg_disk_ctx *ctx, size_t m, const double fs[], const double fk[],
-                            const double vs[], const double delta[])
-{
-    if (m != ctx->m)
-        return fr_fail(ctx, FRICREG_ESIZE, "set_stribeck: m = %zu, context has %zu contacts", m,
-                       ctx->m);
-    char why[160];
-    int status = fr_stribeck_check(m, fs, fk, vs, delta, FR_DISK_MAX, why, sizeof why);
-    return status == FRICREG_OK ? status : fr_fail(ctx, status, "set_stribeck: %s", why);
-}
-
 /* The two arrays, at the first set-up only; the context is unchanged if one fails. */
 static int allocate(fricreg_disk_ctx *ctx)
 {
@@ -85,7 +73,7 @@ int fricreg_disk_ctx_set_stribeck(fricreg_disk_ctx *ctx, size_t m, const double 
         ctx->last_valid = 0;
         return FRICREG_OK;
     }
-    int status = check_parameters(ctx, m, fs, fk, vs, delta);
+    int status = fr_check_stribeck(&ctx->err, m, ctx->m, fs, fk, vs, delta, FR_DISK_MAX);
     if (status == FRICREG_OK)
         status = allocate(ctx);
     if (status != FRICREG_OK)

@@ -22,4 +22,17 @@ int fr_check_contact_array(struct fr_error *err, const char *what, size_t m, siz
  * FR_DISK_MAX (law_disk.h), below which none of them overflows. */
 int fr_check_bounds(struct fr_error *err, size_t m, size_t ctx_m, const double mun[], double max);
 
+/* The Stribeck parameters of m contacts for a context of ctx_m: FRICREG_ESIZE unless
+ * m == ctx_m, then fr_stribeck_check's statuses (law_stribeck.h), fs at most cap (the bounds'
+ * range: INFINITY in 1-D, FR_DISK_MAX in 2-D); recorded led by "set_stribeck". */
+int fr_check_stribeck(struct fr_error *err, size_t m, size_t ctx_m, const double fs[],
+                      const double fk[], const double vs[], const double delta[], double cap);
+
+/* An evaluation's inputs zdot[n] and a_free[n] for m contacts (n = m in 1-D, 2m in 2-D) and
+ * its output f: FRICREG_ESIZE unless m == ctx_m, FRICREG_ENULL naming the NULL array,
+ * FRICREG_ENONFINITE naming the first component of zdot or a_free that is not finite;
+ * recorded led by "eval". One vectorized pass (fr_plausible) when all are finite. */
+int fr_check_eval_inputs(struct fr_error *err, size_t m, size_t ctx_m, size_t n,
+                         const double zdot[], const double a_free[], const double f[]);
+
 #endif
