@@ -143,6 +143,6 @@ pivot() { # CSV HEADER_CELL PROBLEM_HEADER_SUFFIXES AWK_CELL_EXPRESSION
     awk -F, 'NR > 1 { printf "| %s | `%s` | %s | %.2f |\n", $1, $2, $3, $4 }' "$dir/laws.csv"
     verbatim "The kernels against the minimal loop and the triad bandwidth" kernels.txt
     verbatim "Dense W, m = 500: a changing near-stick set against an unchanged one" dense.txt
-    sh "$(dirname "$0")/results_wp13.sh" "$dir" # issue 13's problems, if fricreg-bench-wp13 ran
+    sh "$(dirname "$0")/results_problems.sh" "$dir" # if fricreg-bench-problems ran
 } >"$out"
 echo "results page: $out"
