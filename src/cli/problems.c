@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* problems.c — `fricreg-sim hold|belt|disk`: the reference problems of issue 13 beyond the
- * paper (src/problems/, the same code the benchmarks run; docs/laws2d.md), each with a JSON
+/* problems.c — `fricreg-sim hold|belt|disk`: the reference problems beyond the paper
+ * (src/problems/, the same code the benchmarks run; docs/laws2d.md), each with a JSON
  * summary of what it measures against its reference, or a CSV row per GSL step (2 dt).
  * Every bad option is one line on stderr naming it, exit 2, nothing on stdout; a run that
  * fails (or does not reach what it measures) exits 1. */

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* hold.c — the hold test of issue 13 (problems.h, docs/laws2d.md): a block on an incline under
+/* hold.c — the hold test (problems.h, docs/laws2d.md): a block on an incline under
  * a load inside the friction disk must not creep at all, and, tilted at a constant rate, must
  * leave rest at the exact angle atan(mu). Both follow from the law's exact stick: at v = 0,
  * FRICREG_DISK_QUINN returns f_eq itself, so F + f == 0 in floating point and every RK4 stage
