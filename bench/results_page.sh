@@ -59,7 +59,7 @@ pivot() { # CSV HEADER_CELL PROBLEM_HEADER_SUFFIXES AWK_CELL_EXPRESSION
     echo "    $(field machine)"
     echo
     echo "CPU times vary with the machine and its load: compare the ratios, and rerun"
-    echo "\`bench/run.sh\` to refresh this page. The method, and what the first run found, are in"
+    echo "\`bench/run.sh\` to refresh this page. The method, and how to read these tables, are in"
     echo "[benchmark.md](benchmark.md)."
     echo
     echo "## Against event-driven CVODE, relative error 1e-2 … 1e-8 in D"
