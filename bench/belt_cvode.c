@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* belt_cvode.c — the event-driven CVODE reference of the belt-driven stick-slip oscillator with
- * Stribeck friction (issue13.h; the problem p of src/problems/problems.h), classical set-valued
- * friction with static bound fs:
+ * Stribeck friction (problems_cvode.h; the problem p of src/problems/problems.h), classical
+ * set-valued friction with static bound fs:
  *   - stick (x' = V, |f_eq| = |x| <= fs): exact, x = x0 + V (t - t0), until x = fs, the
  *     break-away (x only grows while stuck, so the bound is reached at +fs);
  *   - slip with direction s = sgn(u), u = x' - V the relative velocity: CVODE integrates
@@ -20,7 +20,7 @@
 
 #include "cvode_setup.h"
 #include "event_driven.h"
-#include "issue13.h"
+#include "problems_cvode.h"
 
 struct belt_sys {
     const struct prob_belt *p;

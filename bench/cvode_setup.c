@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* cvode_setup.c — CVODE set-up and tear-down for the issue-13 references (cvode_setup.h), the
- * same choices as event_driven.c: Adams with fixed-point iteration (no Jacobian), or BDF with
- * a dense difference-quotient Newton solver; abstol = reltol; CVODE's messages kept off
- * stderr. */
+/* cvode_setup.c — CVODE set-up and tear-down for the references of the belt and the 2-D
+ * oscillator (cvode_setup.h), the same choices as event_driven.c: Adams with fixed-point
+ * iteration (no Jacobian), or BDF with a dense difference-quotient Newton solver; abstol =
+ * reltol; CVODE's messages kept off stderr. */
 #include <string.h>
 
 #include <sunlinsol/sunlinsol_dense.h>

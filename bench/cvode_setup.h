@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* cvode_setup.h — one CVODE integrator with root finding, set up and torn down in one place for
- * the event-driven references of issue 13 (belt_cvode.c, disk_cvode.c). Built only with
- * SUNDIALS (FRICREG_BENCH_CVODE). */
+ * the event-driven references of the belt and the 2-D oscillator (belt_cvode.c, disk_cvode.c).
+ * Built only with SUNDIALS (FRICREG_BENCH_CVODE). */
 #ifndef FRICREG_BENCH_CVODE_SETUP_H
 #define FRICREG_BENCH_CVODE_SETUP_H
 

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* disk_cvode.c — the event-driven CVODE reference of the 2-D oscillator with rotating forcing
- * (issue13.h; the problem p of src/problems/problems.h), classical isotropic Coulomb friction
- * with mun = 1 (the disk |f| <= 1):
+ * (problems_cvode.h; the problem p of src/problems/problems.h), classical isotropic Coulomb
+ * friction with mun = 1 (the disk |f| <= 1):
  *     x'' = -x + F(t) + f,   F(t) = a sin(omega t) (cos(Omega t), sin(Omega t)),
  *     f_eq(t) = x - F(t),    y = (x[2], v[2], E), E' = -f . v = |v| (the dissipated energy).
  * Two modes:
@@ -36,7 +36,7 @@
 
 #include "cvode_setup.h"
 #include "event_driven.h"
-#include "issue13.h"
+#include "problems_cvode.h"
 
 #define MAX_BURST 1000 /* events without progress in time before a run is declared stuck */
 

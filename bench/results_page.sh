@@ -59,7 +59,7 @@ pivot() { # CSV HEADER_CELL PROBLEM_HEADER_SUFFIXES AWK_CELL_EXPRESSION
     echo "    $(field machine)"
     echo
     echo "CPU times vary with the machine and its load: compare the ratios, and rerun"
-    echo "\`bench/run.sh\` to refresh this page. The method, and what the first run found, are in"
+    echo "\`bench/run.sh\` to refresh this page. The method, and how to read these tables, are in"
     echo "[benchmark.md](benchmark.md)."
     echo
     echo "## Against event-driven CVODE, relative error 1e-2 … 1e-8 in D"
@@ -143,6 +143,6 @@ pivot() { # CSV HEADER_CELL PROBLEM_HEADER_SUFFIXES AWK_CELL_EXPRESSION
     awk -F, 'NR > 1 { printf "| %s | `%s` | %s | %.2f |\n", $1, $2, $3, $4 }' "$dir/laws.csv"
     verbatim "The kernels against the minimal loop and the triad bandwidth" kernels.txt
     verbatim "Dense W, m = 500: a changing near-stick set against an unchanged one" dense.txt
-    sh "$(dirname "$0")/results_wp13.sh" "$dir" # issue 13's problems, if fricreg-bench-wp13 ran
+    sh "$(dirname "$0")/results_problems.sh" "$dir" # if fricreg-bench-problems ran
 } >"$out"
 echo "results page: $out"

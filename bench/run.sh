@@ -37,8 +37,9 @@ echo
 echo
 ./build-bench/bench/fricreg-bench-dense "$out" | tee "$out/dense.txt"
 echo
-# Issue 13's belt, 2-D oscillator and hold (the first two need the CVODE references).
-./build-bench/bench/fricreg-bench-wp13 "$out" | tee "$out/wp13.txt"
+# The problems beyond the paper: the hold, the Stribeck belt and the 2-D oscillator (the last
+# two need the CVODE references).
+./build-bench/bench/fricreg-bench-problems "$out" | tee "$out/problems.txt"
 echo
 # The chain at n = 1000 and 10^4 against CVODE: minutes of CPU, so only when asked.
 if [ "${FRICREG_BENCH_BIG:-0}" = 1 ]; then
@@ -48,7 +49,7 @@ fi
 
 if command -v gnuplot >/dev/null 2>&1; then
     (cd "$out" && gnuplot workprecision.gp && gnuplot scaling.gp)
-    if [ -f "$out/wp13.gp" ]; then (cd "$out" && gnuplot wp13.gp); fi
+    if [ -f "$out/problems_wp.gp" ]; then (cd "$out" && gnuplot problems_wp.gp); fi
     echo "plots: $(cd "$out" && ls ./*.png | sed 's|^\./||' | tr '\n' ' ')"
 else
     echo "gnuplot not found: no PNGs (the .gp scripts and the data are in $out/)"

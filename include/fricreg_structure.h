@@ -190,7 +190,7 @@ FRICREG_API int fricreg_structure_set_central_difference(fricreg_structure *s);
  *  tol times the step's force scale: the largest entry of |M a| and |C v + K u - p~ - J^T f|
  *  at the step's start, |p~| at its end, and |J|^T mun. 0 < tol < 1; 1 <= max_iter <= 1000.
  *  Iterations grow slowly as eps shrinks against dt times the contacts' accelerations (law
- *  (4) then approaches a jump): on the ten-storey building of issue 10 at dt = 0.01 s, mean
+ *  (4) then approaches a jump): on the ten-storey example building at dt = 0.01 s, mean
  *  (max) iterations per step were 1.09 (6) at eps = 0.01 m/s, 1.23 (11) at 1e-3 and 1.29 (19)
  *  at 1e-4; the default max_iter = 50 leaves room.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ENONFINITE; FRICREG_EINVAL. */

@@ -382,7 +382,7 @@ for command in oscillator chain twoblock exact reproduce structure hold belt dis
 done
 expect_output '^belt: +--fs' belt --dt 0.01 -h
 
-# ---- Issue 11: no hang, exit codes as the usage says, no data lost ---------------------------
+# ---- Reliability: no hang, exit codes as the usage says, no data lost ------------------------
 # expect NAME COMMAND...: a check that passes when COMMAND (a shell snippet) succeeds.
 expect() {
     total=$((total + 1))

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* test_bad_input.c — the bad-input matrix (issue 11): every public function of every header,
- * each argument in turn replaced by the hostile values its type allows, the others valid.
+/* test_bad_input.c — the bad-input matrix (docs/reliability.md): every public function of
+ * every header, each argument in turn replaced by the hostile values its type allows, the
+ * others valid.
  *
  *   pointer           NULL
  *   double            NaN, +Inf, -Inf, -2.385, 0, the least subnormal 4.9e-324, 1e308
@@ -1152,8 +1153,8 @@ END_TEST
 
 /* W = [[2.385, -1e-12], [-1e-12, 1e-270]] is indefinite (det < 0) but its smallest eigenvalue
  * relative to max|W| is -4e-25, within any tolerance on that scale; on the Jacobi-scaled
- * matrix its off-diagonal is 1e-12/sqrt(2.385e-270) = 6.5e122 > 1. Accepted before issue 11's
- * fuzzing (fuzz_ctx), and eval then returned forces that are not the law. */
+ * matrix its off-diagonal is 1e-12/sqrt(2.385e-270) = 6.5e122 > 1. Once accepted (a finding
+ * of fuzz_ctx), and eval then returned forces that are not the law. */
 START_TEST(indefinite_w_with_tiny_diagonal)
 {
     fricreg_ctx *ctx = NULL;

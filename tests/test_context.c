@@ -804,7 +804,7 @@ END_TEST
 
 /* eval: ENULL (each array), ESIZE, ENONFINITE (zdot or a_free); outputs untouched, no counter
  * moves, the factor is not built. */
-/* Overflow is refused, not passed off as success (issue 11):
+/* Overflow is refused, not passed off as success:
  *  - a subnormal eps makes 2/eps overflow, and law (4) then gave +mun at v = 0 whatever f_eq
  *    was; eps >= DBL_MIN is required, and at eps = DBL_MIN (4) is still the force balance (2)
  *    at v = 0: f = mun sat(f_eq/mun) = 0.3 for f_eq = 0.3, mun = 1;
@@ -1075,7 +1075,7 @@ START_TEST(consistent_two_block_both_free)
 }
 END_TEST
 
-/* The issue's jumps, at the band edge |zdot_j| = eps(1 -+ 1e-9).
+/* The jumps of docs/coupled.md, at the band edge |zdot_j| = eps(1 -+ 1e-9).
  * (a) a = (0.1, 0.1), zdot = (0, eps(1 -+ 1e-9)). Outside: f1 = -0.25, S = {0}:
  *     f0 = -(0.1 + (-1)(-0.25)) = -0.35. Inside: c1 = 2 (1 - 1e-9), box1 = [-0.25,
  *     -0.25 + 5e-10]; f1 is held at -0.25 (its free value -(b1 - f0)/2 = -0.725 is below),

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* test_coupled.c — Check suite for the consistent near-stick law of coupled contacts (issue 9,
- * shared/spec/coupled.md), verified against a reference written independently of the library.
+/* test_coupled.c — Check suite for the consistent near-stick law of coupled contacts
+ * (docs/coupled.md), verified against a reference written independently of the library.
  *
  * The reference. Under FRICREG_PARTITION_CONSISTENT the forces of the near-stick set S solve
  *     f_S = argmin_{l <= f <= u} 1/2 f^T W_SS f + b^T f,
@@ -230,7 +230,7 @@ static void reference_forces(const contact_case *c, int law, double f[])
 
 /* ---- The reference on hand-solved cases --------------------------------------------------- */
 
-/* The two blocks of the issue: W = [[1, -1], [-1, 2]] (det 1, W^-1 = [[2, 1], [1, 1]]),
+/* The two blocks of docs/coupled.md: W = [[1, -1], [-1, 2]] (det 1, W^-1 = [[2, 1], [1, 1]]),
  * mun = (0.5, 0.25), eps = 0.02. */
 static contact_case two_block(double z1, double z2, double a1, double a2)
 {
@@ -260,10 +260,11 @@ START_TEST(reference_interior_at_rest)
 }
 END_TEST
 
-/* The issue's first jump: zdot = (0, eps(1 - 1e-9)). c_2 = 2(1 - 1e-9) squeezes contact 2's box
- * to [l_2, u_2] = [-0.25, -0.25 + 5e-10], and b_2 = 0.1 + W_22 c_2 mun_2 = 1.1 - 1e-9 pushes it to
- * l_2 = -0.25; then f_1 = -(b_1 + W_12 f_2) / W_11 = -(0.1 + 0.25) = -0.35 (gradient of contact 2:
- * 0.35 - 0.5 + 1.1 > 0). The paper's partition gives -0.35 only once contact 2 has left. */
+/* The first jump of docs/coupled.md: zdot = (0, eps(1 - 1e-9)). c_2 = 2(1 - 1e-9) squeezes
+ * contact 2's box to [l_2, u_2] = [-0.25, -0.25 + 5e-10], and b_2 = 0.1 + W_22 c_2 mun_2 =
+ * 1.1 - 1e-9 pushes it to l_2 = -0.25; then f_1 = -(b_1 + W_12 f_2) / W_11 = -(0.1 + 0.25) =
+ * -0.35 (gradient of contact 2: 0.35 - 0.5 + 1.1 > 0). The paper's partition gives -0.35 only
+ * once contact 2 has left. */
 START_TEST(reference_edge_pins_the_leaving_contact)
 {
     contact_case c = two_block(0.0, 0.02 * (1.0 - 1e-9), 0.1, 0.1);
@@ -273,10 +274,11 @@ START_TEST(reference_edge_pins_the_leaving_contact)
 }
 END_TEST
 
-/* The issue's sign change: a_free = (-0.3, 0.1), zdot = (eps(1 - 1e-9), 0). Contact 1's box is
- * [-0.5, -0.5 + 1e-9] and b_1 = -0.3 + 1 - 1e-9 puts it at -0.5; f_2's unconstrained value
- * -(0.1 - f_1)/2 = -0.3 is below -0.25, so it sits at its lower bound, with gradients
- * (-0.5 + 0.25 + 0.7, 0.5 - 0.5 + 0.1) >= 0. The paper's partition gives f_2 = +0.2 here. */
+/* The sign change of docs/coupled.md: a_free = (-0.3, 0.1), zdot = (eps(1 - 1e-9), 0).
+ * Contact 1's box is [-0.5, -0.5 + 1e-9] and b_1 = -0.3 + 1 - 1e-9 puts it at -0.5; f_2's
+ * unconstrained value -(0.1 - f_1)/2 = -0.3 is below -0.25, so it sits at its lower bound,
+ * with gradients (-0.5 + 0.25 + 0.7, 0.5 - 0.5 + 0.1) >= 0. The paper's partition gives
+ * f_2 = +0.2 here. */
 START_TEST(reference_edge_with_saturated_partner)
 {
     contact_case c = two_block(0.02 * (1.0 - 1e-9), 0.0, -0.3, 0.1);
@@ -493,9 +495,9 @@ START_TEST(warm_started_walk_matches_brute_force)
 }
 END_TEST
 
-/* The issue's two-block numbers through the library: the consistent law gives the hand-solved
+/* docs/coupled.md's two-block cases through the library: the consistent law gives the hand-solved
  * values of the reference tests on both sides of each band edge. */
-START_TEST(two_block_issue_cases)
+START_TEST(two_block_band_edge_cases)
 {
     const double eps = 0.02, in = 1.0 - 1e-9, out = 1.0 + 1e-9;
     struct {
@@ -608,7 +610,7 @@ static void sweep_contact(fricreg_ctx *ctx, const contact_case *c, size_t j, jum
 
 /* Random SPD W, m = 2..8, random states: the consistent law's largest jump across every
  * |zdot_j| = eps and every |f_eq,j| = mun_j is <= 1e-12 max mun; the paper's partition, for
- * comparison, jumps by more than 0.1 mun somewhere (the issue measured up to 1.8 mun). */
+ * comparison, jumps by more than 0.1 mun somewhere (docs/coupled.md: up to 1.8 mun). */
 START_TEST(consistent_law_is_continuous_across_every_edge)
 {
     rng_state = 0x5eed0004u;
@@ -716,9 +718,9 @@ START_TEST(consistent_law_is_continuous_in_the_bounds)
 }
 END_TEST
 
-/* The issue's measured jumps of the paper's partition, as the detector sees them: f_1
+/* The paper's partition's jumps of docs/coupled.md, as the detector sees them: f_1
  * -0.30 -> -0.35 (0.05 = 0.1 max mun) and f_2 +0.2 -> -0.25 (0.45 = 0.9 max mun, 1.8 mun_2). */
-START_TEST(paper_partition_jumps_as_the_issue_measured)
+START_TEST(paper_partition_jumps_as_measured)
 {
     contact_case c = two_block(0.0, 0.0, 0.1, 0.1);
     fricreg_ctx *ctx = make_ctx(&c, FRICREG_LAW_QUINN, FRICREG_PARTITION_PAPER);
@@ -1187,10 +1189,10 @@ static Suite *coupled_suite(void)
     tc = tcase_create("library");
     tcase_add_test(tc, consistent_law_matches_brute_force);
     tcase_add_test(tc, warm_started_walk_matches_brute_force);
-    tcase_add_test(tc, two_block_issue_cases);
+    tcase_add_test(tc, two_block_band_edge_cases);
     tcase_add_test(tc, consistent_law_is_continuous_across_every_edge);
     tcase_add_test(tc, consistent_law_is_continuous_in_the_bounds);
-    tcase_add_test(tc, paper_partition_jumps_as_the_issue_measured);
+    tcase_add_test(tc, paper_partition_jumps_as_measured);
     tcase_add_test(tc, entering_contact_warm_starts_inside_its_box);
     tcase_add_test(tc, diagonal_w_is_law_4_contact_by_contact);
     tcase_add_test(tc, tiny_mobility_keeps_its_acceleration_to_1e_292);

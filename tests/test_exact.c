@@ -1064,9 +1064,9 @@ START_TEST(test_counters_follow_the_scan_grid)
 }
 END_TEST
 
-/* Issue 11: the work of a run is bounded (header: at most 2^22 - 1 switches and 2^27 scan
- * points; a scan step must stay above 2^-32 t). The three cases of the issue, judged by the
- * counters, never by time:
+/* The work of a run is bounded (header: at most 2^22 - 1 switches and 2^27 scan points; a scan
+ * step must stay above 2^-32 t). Three cases that once hung or took seconds to minutes, judged
+ * by the counters, never by time:
  * - omega = 1e-300 (a = 2, mun = 1, from rest at 0, one cycle): the body sticks until
  *   2 sin(omega t) = 1, t = (pi/6)/omega = 5.2e299, where a slip would need steps of
  *   2 pi/1024 — lost in the rounding of t: refused there with EINVAL, at once (the old scan

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* test_gsl_handler.c — fricreg leaves GSL's process-wide error handler alone (issue 11).
+/* test_gsl_handler.c — fricreg leaves GSL's process-wide error handler alone (docs/reliability.md).
  *
  * The program installs its own GSL handler once, which counts its calls, then runs every
  * entry-point family — laws, a context with dense W (positive definite, singular, indefinite,

@@ -435,13 +435,13 @@ START_TEST(no_false_accept)
 }
 END_TEST
 
-/* The checks catch what the guard let through before this sweep, and the guard now refuses it:
- *   - the issue's rkf45 at 0.9x its real-axis bound 3.6: two blocks, mun = (10, 5),
+/* The checks catch what a per-contact guard lets through, and the guard refuses it:
+ *   - rkf45 at 0.9x its real-axis bound 3.6: two blocks, mun = (10, 5),
  *     eps = 0.02, law (3), whose coupled lambda is 500 (1 + 1/sqrt 2) = 853.55, so
  *     dt = 3.24/853.55 = 0.003796: 2.6 of energy put in (and the stick left);
- *   - the issue's rk8pd with Coulomb at dt = 3.7 (its imaginary-axis bound), the paper's eps:
+ *   - rk8pd with Coulomb at dt = 3.7 (its imaginary-axis bound), the paper's eps:
  *     the oscillator's energy grows past its initial 3.78;
- *   - the issue's two blocks, mun = (10, 5), eps = 0.02, the paper's partition, RK4 at
+ *   - the two blocks, mun = (10, 5), eps = 0.02, the paper's partition, RK4 at
  *     dt = 0.0025: energy put in as the upper interface leaves its stick (D = 1.17 for 0).
  * And Karnopp's check against its fine run (karnopp_fine) still sees an unstable step: the
  * oscillator, paper's eps, rk2 at 2x its bound (dt = 1.414, eps = 2.83): E - E0 - W_in = 1.29

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* test_hold.c — the hold test of issue 13 on the 2-D law (fricreg_disk_eval, the default
+/* test_hold.c — the hold test on the 2-D law (fricreg_disk_eval, the default
  * FRICREG_DISK_QUINN): a block of mass M on an incline of angle theta, loaded in the incline's
  * plane by gravity along a direction phi of that plane,
  *     M v' = F + f,   F = M g sin(theta) (cos phi, sin phi),   mun = mu M g cos(theta),

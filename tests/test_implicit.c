@@ -72,7 +72,7 @@ static void report(const char *what, double D, double ref)
 }
 
 /* rtol 1e-8: msbdf measured 1.3e-7, rk4imp 1.6e-8 from the exact D; law (4)'s own
- * error at eps = 1e-6 is O(eps^2) on the sticking oscillator (issue 12: -1.5e-5 at eps = 0.04),
+ * error at eps = 1e-6 is O(eps^2) on the sticking oscillator (-1.5e-5 at eps = 0.04),
  * so what is left is the integrators' tolerance. */
 START_TEST(oscillator_msbdf_and_rk4imp_reach_the_exact_solution)
 {

@@ -24,7 +24,7 @@
 #include "sim/sim_internal.h"
 
 #define STEP 1e-6        /* central-difference step, times max(|y_j|, 1) */
-#define TOL 1e-6         /* relative to the Jacobian's largest entry (issue 9) */
+#define TOL 1e-6         /* relative to the Jacobian's largest entry */
 #define SAME_PIECE 1e-12 /* Jacobians this close (relative) lie on one piece */
 #define SAMPLES 40
 

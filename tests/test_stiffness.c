@@ -5,8 +5,8 @@
  * mun = (10, 5), eps = 0.02, so law (4)'s slopes are s = 2 mun/eps = (1000, 500).
  * Consistent law: max_i W_ii s_i = max(1000, 1000) = 1000.
  * Paper's partition: D^1/2 W D^1/2 = [[1000, -sqrt(5e5)], [-sqrt(5e5), 1000]], whose largest
- * eigenvalue is 1000 + sqrt(5e5) = 1000 (1 + 1/sqrt 2) = 1707.1067811865476: the 1.707x of the
- * coupled-contacts issue. Law (3) halves the slopes: 853.55339059327378 whatever the
+ * eigenvalue is 1000 + sqrt(5e5) = 1000 (1 + 1/sqrt 2) = 1707.1067811865476: 1.707x the
+ * per-contact bound (docs/coupled.md). Law (3) halves the slopes: 853.55339059327378 whatever the
  * partition, since (3) does not read f_eq. */
 #include <check.h>
 #include <math.h>

@@ -348,8 +348,8 @@ static double jump_at(fricreg_ctx *ctx, const stribeck_case *c, size_t j, double
 
 /* Random coupled cases: at every contact's band edges zdot_j = +-eps (where its bound turns
  * from B to k and other contacts' f_eq move) and at its rest zdot_j = 0 (the kink of |zdot| in
- * B), the consistent law's largest jump is <= 1e-12 max fs (issue 13); the paper's partition,
- * for comparison, jumps by more than 0.05 fs somewhere. */
+ * B), the consistent law's largest jump is <= 1e-12 max fs (docs/laws2d.md's continuity
+ * criterion); the paper's partition, for comparison, jumps by more than 0.05 fs somewhere. */
 START_TEST(consistent_is_continuous_across_band_edges)
 {
     rng_state = 0x57c0006u;

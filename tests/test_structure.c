@@ -13,7 +13,7 @@
  *  - the paper's oscillator (Eq. (5)) as a structure M = K = J = 1, against fricreg_exact;
  *  - a static load held by coupled contacts: J^T f = -p, no motion at all;
  *  - the paper's oscillator and chain through run_ode against fricreg_sim's drivers;
- *  - the ten-storey building of issue 10 against a fine reference of its own;
+ *  - the ten-storey building (examples/building/) against a fine reference of its own;
  *  - the sparse setters (fricreg_structure_gsl.h) against the dense ones, bit for bit. */
 #include <check.h>
 #include <math.h>
@@ -722,7 +722,7 @@ START_TEST(run_ode_adaptive_then_newmark)
 }
 END_TEST
 
-/* ---------------------------------------------------------------- the building of issue 10 */
+/* ------------------------------------------------------------------ the ten-storey building */
 
 #define STOREYS 10
 
@@ -791,7 +791,7 @@ static double building(double dt, double alpha, double *peak_roof, fricreg_struc
     return total;
 }
 
-/* The issue's acceptance numbers at dt = 0.01 s and 0.005 s, Newmark and HHT (alpha = -0.1):
+/* The building's acceptance numbers at dt = 0.01 s and 0.005 s, Newmark and HHT (alpha = -0.1):
  * no Newton failure and at most 5 iterations per step on average; damper energy and peak
  * roof displacement within 0.5 % of a fine reference (Newmark, dt = 5e-4 s); Newmark's
  * energy balance closes to 1e-6 of the input, HHT's residual is its numerical damping (> 0).

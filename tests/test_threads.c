@@ -1,15 +1,15 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_threads.c — separate objects in separate threads (fricreg.h: "separate contexts may be
  * used from separate threads at once"), next to a thread of the program's own that uses GSL
- * with its own error handler (issue 11).
+ * with its own error handler.
  *
  * Eight threads each run, ROUNDS times, their own context (dense W: eval, tangent, stick
  * stiffness, and a singular W), a simulation (a different system and stepper
  * family per thread: fricreg's rk4, GSL's rkf45, rk4imp, msbdf) and an exact solution; every
  * result must equal, bit for bit, the same work done before in one thread. Meanwhile a ninth
  * thread provokes GSL_ERRORS errors of its own (Cholesky of an indefinite matrix) and its
- * handler must see every one: the previous code switched GSL's process-wide handler off
- * around its calls, and such a thread lost some of its errors (4.3 % in the issue). The
+ * handler must see every one: a library that switches GSL's process-wide handler off around
+ * its calls makes such a thread lose some of its errors (4.3 % of them, measured). The
  * handler must still be the program's at the end. Built with -fsanitize=thread by
  * tests/tsan.sh (ctest tsan), which fails on any ThreadSanitizer report. */
 #include <check.h>

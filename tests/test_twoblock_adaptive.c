@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_twoblock_adaptive.c — the two blocks on a belt (paper defaults, Eqs. (7)) with GSL's
  * adaptive BDF at eps = 1e-6, where the paper's partition made adaptive integrators return
- * wrong answers silently (issue 9: D 12x too large, no stick at rtol 1e-6).
+ * wrong answers silently (D 12x too large, no stick at rtol 1e-6).
  *
  * Reference: D on belt cycle 4 = 1.7355132, within 3e-7. How it was obtained (fricreg-sim
  * twoblock, consistent law unless said): RK4 with eps = 2 dt on dt = 1e-3 / 2^k, k = 0..6,
@@ -60,12 +60,12 @@ START_TEST(msbdf_converges_to_the_reference)
 }
 END_TEST
 
-/* The issue's own setting, rtol 1e-8, atol 1e-10: D4 within 1e-4 of the reference and both
- * interfaces stick (issue: 0 at rtol 1e-6 before the consistent law). Measured 3.2e-5 with the
+/* rtol 1e-8, atol 1e-10: D4 within 1e-4 of the reference and both interfaces stick (the
+ * paper's partition: a stick fraction of 0 on the upper one at rtol 1e-6). Measured 3.2e-5 with the
  * exact Jacobian (src/sim/sim_jacobian.c); forward differences gave 1.6e-4. The error is the
  * integrator's tolerance, not the law's eps: 4.7e-4, 3.2e-5, 1.3e-6, -2.4e-8 at rtol 1e-7 …
  * 1e-10. */
-START_TEST(msbdf_at_the_issue_tolerance_sticks)
+START_TEST(msbdf_at_rtol_1e_8_sticks)
 {
     struct outcome o = run_msbdf(FRICREG_PARTITION_CONSISTENT, 1e-8);
     ck_assert_double_eq_tol(o.D4, D_REF, 1e-4 * D_REF);
@@ -79,7 +79,7 @@ static Suite *twoblock_adaptive_suite(void)
     Suite *s = suite_create("twoblock_adaptive");
     TCase *tc = tcase_create("msbdf");
     tcase_add_test(tc, msbdf_converges_to_the_reference);
-    tcase_add_test(tc, msbdf_at_the_issue_tolerance_sticks);
+    tcase_add_test(tc, msbdf_at_rtol_1e_8_sticks);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* building.c — the ten-storey building of issue 10 from C, through fricreg_structure.h:
+/* building.c — the ten-storey building (docs/structural.md) from C, through fricreg_structure.h:
  * Newmark average acceleration, dt = 0.01 s, eps = 0.01 m/s, 15 s (10 s of ground motion, 5 s
  * free), law (4). Prints the peak roof displacement, each damper's energy and their total,
  * Newton's iterations per step (mean, max) and failures, and the energy balance.

@@ -1,9 +1,9 @@
 ! SPDX-License-Identifier: GPL-3.0-or-later
-! building.f90 — the ten-storey building of issue 10 from Fortran, through type(fricreg_structure)
-! of module fricreg: Newmark average acceleration, dt = 0.01 s, eps = 0.01 m/s, 15 s (10 s of
-! ground motion, 5 s free), law (4). Prints what building.c prints: the peak roof displacement,
-! each damper's energy and their total, Newton's iterations per step (mean, max) and failures,
-! and the energy balance.
+! building.f90 — the ten-storey building (docs/structural.md) from Fortran, through
+! type(fricreg_structure) of module fricreg: Newmark average acceleration, dt = 0.01 s,
+! eps = 0.01 m/s, 15 s (10 s of ground motion, 5 s free), law (4). Prints what building.c
+! prints: the peak roof displacement, each damper's energy and their total, Newton's
+! iterations per step (mean, max) and failures, and the energy balance.
 !
 ! The structure is built in code (M, K, J and the slip loads: storey mass 1e5 kg, stiffness
 ! 1e8 N/m, a damper on each storey drift slipping at 5 % of the weight above), in Fortran's

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* building_model.h — the ten-storey shear building of issue 10, in one place for the program
+/* building_model.h — the ten-storey shear building, in one place for the program
  * that writes its files (make_building.c) and the one that builds it in code (building.c):
  * storey mass 1e5 kg, storey stiffness 1e8 N/m, 5 % Rayleigh damping in modes 1 and 2, a
  * friction damper on every storey drift slipping at 5 % of the weight above, and the ground

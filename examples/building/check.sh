@@ -1,6 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-3.0-or-later
-# check.sh — issue 10's acceptance on the building, from the command line (run.sh): Newmark and
+# check.sh — the building's acceptance test, from the command line (run.sh): Newmark and
 # HHT-alpha (alpha = -0.1) at dt = 0.01 s and 0.005 s with no Newton failure, at most 5
 # iterations per step on average, peak roof displacement and damper energy within 0.5 % of a
 # fine reference computed here (Newmark, dt = 1e-4 s, itself within 2e-5 of dt = 2e-4 s), and

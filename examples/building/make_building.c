@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* make_building.c — writes the ten-storey shear building of issue 10 as fricreg-sim structure
+/* make_building.c — writes the ten-storey shear building as fricreg-sim structure
  * reads it, into the folder given (default "."):
  *
  *   M.mtx       storey masses 1e5 kg (diagonal, symmetric storage)

@@ -1,6 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-3.0-or-later
-# run.sh — the ten-storey building of issue 10 from the command line: writes its files with
+# run.sh — the ten-storey building (docs/structural.md) from the command line: writes its files with
 # make_building into DIR, runs fricreg-sim structure on them and prints the JSON summary, then
 # one line with the numbers docs/structural.md quotes. Options after DIR are passed on and
 # override the defaults (Newmark, dt = 0.01 s, eps = 0.01 m/s, 15 s).

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* reproduce_beyond.c — the part of `fricreg-sim reproduce` beyond the paper: the reference
- * problems of issue 13 (src/problems/, docs/laws2d.md), one CSV each beside the paper's
+ * problems (src/problems/, docs/laws2d.md), one CSV each beside the paper's
  * figures, and their rows in the table. Small runs: a few seconds in all. */
 #include <math.h>
 #include <stdlib.h>

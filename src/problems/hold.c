@@ -1,10 +1,10 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* hold.c — the hold test of issue 13 (problems.h, docs/laws2d.md): a block on an incline under
+/* hold.c — the hold test (problems.h, docs/laws2d.md): a block on an incline under
  * a load inside the friction disk must not creep at all, and, tilted at a constant rate, must
  * leave rest at the exact angle atan(mu). Both follow from the law's exact stick: at v = 0,
  * FRICREG_DISK_QUINN returns f_eq itself, so F + f == 0 in floating point and every RK4 stage
  * from rest stays at rest until a stage's tilt is past atan(mu). The default law is that one;
- * the benchmark (bench/wp13.c) runs the other 2-D laws too, for their creep. */
+ * the benchmark (bench/problems_wp.c) runs the other 2-D laws too, for their creep. */
 #include <math.h>
 
 #include "fricreg_disk.h"

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* problems.h — the reference problems of issue 13 beyond the paper, shared by `fricreg-sim`
+/* problems.h — the reference problems beyond the paper, shared by `fricreg-sim`
  * (hold, belt, disk) and the benchmarks (bench/disk_laws.c, bench/stribeck_belt.c): one copy.
  * Internal, not installed; built on the public laws (fricreg_disk.h, fricreg_stribeck.h) and
  * GSL only. docs/laws2d.md states the problems and the numbers they give.

@@ -20,7 +20,7 @@
  * The solve. a_free does not depend on v (system.h: a_free = Ax x + a_0(t)), so with
  * c = v + h/2 (a + a_free) and kappa = h W/2 the velocity is v1 = c + kappa f1, and f1 solves
  * f1 = clamp(F - lambda (c + kappa f1), +-mun), F = clamp(f_eq1, +-mun), in the division-free
- * form of (4) (issue 12: clamp(clamp(f_eq, +-mun) - (2 mun/eps) v, +-mun)). The right side
+ * form of (4) (src/law/law.h: clamp(clamp(f_eq, +-mun) - (2 mun/eps) v, +-mun)). The right side
  * decreases in f1, so the root is unique: the unclamped one, (F - lambda c)/(1 + kappa lambda),
  * clamped to +-mun (if it lies beyond mun, F - lambda (c + kappa mun) is beyond mun too, and
  * the clamp holds f1 = mun). No iteration and no branch (fr_imex_friction_acc, in W f1's

@@ -6,9 +6,9 @@
  * Why: at small eps the band (law (4): |zdot - xi| < eps/2) is only eps/(gamma dt) wide in the
  * step's acceleration. A sticking contact's velocity wanders inside it, and a, extrapolated
  * over dt, puts it outside: Newton then brings the sticking contacts back one at a time (a
- * stop each, newmark.c's first_trial), about an iteration per contact. On the building of
- * issue 10 at eps = 1e-4 m/s and dt = 0.01 s that was 10 iterations a step through its 5 s
- * of free vibration, all ten dampers sticking.
+ * stop each, newmark.c's first_trial), about an iteration per contact. On the ten-storey
+ * building (examples/building/) at eps = 1e-4 m/s and dt = 0.01 s that was 10 iterations a
+ * step through its 5 s of free vibration, all ten dampers sticking.
  *
  * The guess x = a + dx keeps J_S zdot over the step for the set S of contacts with
  * |f_i| < mun_i at t, with the smallest such correction in M's norm. For law (4), and (3),

@@ -12,7 +12,7 @@
  * must return FRICREG_OK or FRICREG_ENOMEM (with ENOMEM recorded in the object's error state
  * where there is an object), call GSL's error handler never (GSL's default one aborts) except
  * from gsl_odeiv2_step_alloc, and leave no block allocated once its objects are freed.
- * fricreg never touches GSL's handler (issue 11): a failed malloc inside GSL's own stepper
+ * fricreg never touches GSL's handler: a failed malloc inside GSL's own stepper
  * allocation reports to it, and a program that wants FRICREG_ENOMEM there instead of GSL's
  * abort calls gsl_set_error_handler_off() once at start (docs/reliability.md). This program
  * does just that in main(); the scenarios then count the handler's calls with a handler of

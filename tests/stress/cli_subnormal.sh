@@ -1,6 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-3.0-or-later
-# Subnormal values on fricreg-sim's command line (issue 11, a 1.0 finding: they were refused).
+# Subnormal values on fricreg-sim's command line (1.0 refused them).
 # Values below DBL_MIN are ordinary finite numbers: every system and the exact solver take
 # them and print finite results; only eps, which the library requires >= DBL_MIN (2/eps would
 # overflow), is refused, non-zero, with a message that says why.

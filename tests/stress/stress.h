@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* stress.h — the numerical stress suite (issue 11 item 3): shared settings, checks and the
+/* stress.h — the numerical stress suite (docs/reliability.md): shared settings, checks and the
  * energy bookkeeping of the three reference systems. Each group is one file and one function;
  * stress_main.c runs them. Only the public API is used, as a user would. */
 #ifndef FRICREG_STRESS_H

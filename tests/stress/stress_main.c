@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* stress_main.c — fricreg-stress: the numerical stress suite (issue 11 item 3).
+/* stress_main.c — fricreg-stress: the numerical stress suite (docs/reliability.md).
  *
  *   fricreg-stress [--full] [--seed S] [long|extreme|exact|conditioning ...]
  *

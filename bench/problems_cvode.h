@@ -1,12 +1,13 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* issue13.h — the event-driven CVODE references of two of issue 13's problems (bench/wp13.c's
- * independent check): the belt-driven Stribeck oscillator (bench/belt_cvode.c) and the 2-D
- * oscillator with rotating forcing (bench/disk_cvode.c). The problems themselves (parameters,
- * forcing, kinetic curve) and their regularized runs are src/problems/ (problems.h), which
- * fricreg-sim and the other benchmarks share; the references take them from there. Built only
- * with SUNDIALS (FRICREG_BENCH_CVODE). Not part of the library. */
-#ifndef FRICREG_BENCH_ISSUE13_H
-#define FRICREG_BENCH_ISSUE13_H
+/* problems_cvode.h — the event-driven CVODE references of two of the problems beyond the paper
+ * (bench/problems_wp.c's independent check): the belt-driven Stribeck oscillator
+ * (bench/belt_cvode.c) and the 2-D oscillator with rotating forcing (bench/disk_cvode.c). The
+ * problems themselves (parameters, forcing, kinetic curve) and their regularized runs are
+ * src/problems/ (problems.h), which fricreg-sim and the other benchmarks share; the references
+ * take them from there. Built only with SUNDIALS (FRICREG_BENCH_CVODE). Not part of the
+ * library. */
+#ifndef FRICREG_BENCH_PROBLEMS_CVODE_H
+#define FRICREG_BENCH_PROBLEMS_CVODE_H
 
 #include <stddef.h>
 

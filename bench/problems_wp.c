@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* wp13.c — fricreg-bench-wp13 OUTDIR: work-precision on the three problems of issue 13
- * (src/problems/problems.h), in one process.
+/* problems_wp.c — fricreg-bench-problems OUTDIR: work-precision on the three reference
+ * problems beyond the paper (src/problems/problems.h), in one process.
  *
  *   belt  the belt-driven Stribeck oscillator: the limit cycle's period and amplitude; error =
  *         the larger of their two relative errors;
@@ -13,14 +13,16 @@
  * classical sliding law FRICREG_DISK_COULOMB the same way; and the event-driven CVODE
  * references (belt_cvode.c, disk_cvode.c; Adams and BDF) over rtol = 1e-3 … 1e-11. The
  * reference of each problem is CVODE Adams at rtol REF_RTOL; its convergence (rtol 1e-6 …
- * 1e-12, both methods) and its distance to the earlier references, computed here as
- * fricreg-bench-stribeck-belt and fricreg-bench-disk compute them, are printed first. Every point's CPU time is the
- * median of PASSES interleaved passes over the whole sweep (a burst of load spoils one repeat
- * of many points, not every repeat of one). Writes to OUTDIR:
- *   wp13.csv          one row per point          wp13_refs.csv  the references' convergence
- *   wp13_best.csv     per problem and target 1e-2 … 1e-8: each method's CPU seconds, the winner
- *   hold13.csv        the hold: creep and CPU per 1e6 steps per 2-D law
- *   wp13_<problem>.dat and wp13.gp   gnuplot data and script: wp13_belt.png, wp13_disk.png
+ * 1e-12, both methods) and its distance to the references of fricreg-bench-stribeck-belt and
+ * fricreg-bench-disk, computed here as those programs compute them, are printed first. Every
+ * point's CPU time is the median of PASSES interleaved passes over the whole sweep (a burst of
+ * load spoils one repeat of many points, not every repeat of one). Writes to OUTDIR:
+ *   problems_wp.csv    one row per point
+ *   problems_refs.csv  the references' convergence
+ *   problems_best.csv  per problem and target 1e-2 … 1e-8: each method's CPU seconds, the winner
+ *   problems_hold.csv  the hold: creep and CPU per 1e6 steps per 2-D law
+ *   problems_wp_<problem>.dat and problems_wp.gp  gnuplot data and script: problems_wp_belt.png,
+ *                      problems_wp_disk.png
  * Without SUNDIALS only the hold runs (the other two have no reference). */
 #include <math.h>
 #include <stdio.h>
@@ -34,7 +36,7 @@
 #include "problems.h"
 #ifdef FRICREG_BENCH_CVODE
 #include "event_driven.h"
-#include "issue13.h"
+#include "problems_cvode.h"
 #endif
 
 enum { PASSES = 3, MAXPTS = 12, NTARGETS = 7, BELT_CYCLES = 6 };
@@ -44,7 +46,7 @@ enum { PASSES = 3, MAXPTS = 12, NTARGETS = 7, BELT_CYCLES = 6 };
 
 static FILE *open_out(const char *dir, const char *name)
 {
-    return bench_open_out("fricreg-bench-wp13", dir, name);
+    return bench_open_out("fricreg-bench-problems", dir, name);
 }
 
 /* The hold of problems.h at its fixed tilt (tan theta = 0.8 mu) under `law`, HOLD_STEPS GSL
@@ -78,7 +80,7 @@ static void print_hold(const char *dir)
     printf("== The hold: a block on an incline, tan(theta) = 0.8 mu, from rest, %ld RK4 steps of "
            "%g s (eps = 20 dt) ==\n%-14s %-14s %-14s %s\n",
            HOLD_STEPS, HOLD_DT, "2-D law", "creep m/s", "max |v| m/s", "CPU s per 1e6 steps");
-    FILE *f = open_out(dir, "hold13.csv");
+    FILE *f = open_out(dir, "problems_hold.csv");
     if (f)
         fprintf(f, "law,steps,dt,creep_m_per_s,max_speed_m_per_s,cpu_s_per_1e6_steps,status\n");
     for (int l = 0; l < NL; l++) {
@@ -224,11 +226,11 @@ static double rel(double x, double ref)
     return fabs(x - ref) / fabs(ref);
 }
 
-/* The earlier references, computed as their programs compute them (src/problems' defaults):
- * fricreg-bench-stribeck-belt's event-driven RK4 reference (slips at 1e-5, their ends on the
- * Hermite interpolant; the 12th cycle) and fricreg-bench-disk's tiny-eps run (quinn, classical
- * dt = 1e-5, eps = 2e-5), and the CVODE references' distance to them. */
-static void print_earlier_references(const struct belt_cycle *bref, const struct disk_result *dref)
+/* The references of the other benchmarks, computed as their programs compute them (src/problems'
+ * defaults): fricreg-bench-stribeck-belt's event-driven RK4 reference (slips at 1e-5, their
+ * ends on the Hermite interpolant; the 12th cycle) and fricreg-bench-disk's tiny-eps run
+ * (quinn, classical dt = 1e-5, eps = 2e-5), and the CVODE references' distance to them. */
+static void print_other_references(const struct belt_cycle *bref, const struct disk_result *dref)
 {
     struct prob_belt belt = prob_belt_defaults();
     struct prob_belt_cycle c;
@@ -253,7 +255,7 @@ static void print_earlier_references(const struct belt_cycle *bref, const struct
 /* CVODE at rtol 1e-6 … 1e-12, both methods: the convergence of the references. */
 static int print_references(const char *dir)
 {
-    FILE *f = open_out(dir, "wp13_refs.csv");
+    FILE *f = open_out(dir, "problems_refs.csv");
     if (f)
         fprintf(f, "problem,method,rtol,value1,value2,steps,events,rel_diff_to_ref\n");
     struct belt_cycle bref;
@@ -261,7 +263,7 @@ static int print_references(const char *dir)
     char msg[200] = "";
     if (belt_cvode_run(&belt_problem, ED_ADAMS, REF_RTOL, &bref, msg, sizeof msg) != FRICREG_OK ||
         disk_cvode_run(&disk_problem, ED_ADAMS, REF_RTOL, &dref, msg, sizeof msg) != FRICREG_OK) {
-        fprintf(stderr, "fricreg-bench-wp13: the reference failed: %s\n", msg);
+        fprintf(stderr, "fricreg-bench-problems: the reference failed: %s\n", msg);
         return 1;
     }
     ref_value[P_BELT][0] = bref.period, ref_value[P_BELT][1] = bref.amplitude;
@@ -297,7 +299,7 @@ static int print_references(const char *dir)
                     fprintf(f, "%s,%s,%g,%.15g,%.15g,%.0f,%.0f,%.3e\n", problem_key[ip],
                             m == ED_BDF ? "bdf" : "adams", rtol, v[0], v[1], steps, events, diff);
             }
-    print_earlier_references(&bref, &dref);
+    print_other_references(&bref, &dref);
     if (f)
         fclose(f);
     return 0;
@@ -330,7 +332,7 @@ static void run_sweeps(void)
 
 static void print_points(const char *dir)
 {
-    FILE *f = open_out(dir, "wp13.csv");
+    FILE *f = open_out(dir, "problems_wp.csv");
     if (f)
         fprintf(f, "problem,method,param_name,param,value1,value2,rel_error,cpu_s,steps,status,"
                    "message\n");
@@ -379,7 +381,7 @@ static double time_to_reach(const struct series *s, double target, int *bound)
 
 static void print_best(const char *dir)
 {
-    FILE *f = open_out(dir, "wp13_best.csv");
+    FILE *f = open_out(dir, "problems_best.csv");
     if (f)
         fprintf(f, "problem,target,winner,cpu_s");
     for (int is = 0; f && is < NSERIES; is++)
@@ -429,7 +431,7 @@ static void write_plots(const char *dir)
 {
     for (int ip = 0; ip < NPROBLEMS; ip++) {
         char name[64];
-        snprintf(name, sizeof name, "wp13_%s.dat", problem_key[ip]);
+        snprintf(name, sizeof name, "problems_wp_%s.dat", problem_key[ip]);
         FILE *f = open_out(dir, name);
         if (!f)
             return;
@@ -446,23 +448,23 @@ static void write_plots(const char *dir)
         }
         fclose(f);
     }
-    FILE *f = open_out(dir, "wp13.gp");
+    FILE *f = open_out(dir, "problems_wp.gp");
     if (!f)
         return;
-    fprintf(f, "# generated by fricreg-bench-wp13; run in this folder: gnuplot wp13.gp\n"
+    fprintf(f, "# generated by fricreg-bench-problems; run in this folder: gnuplot problems_wp.gp\n"
                "set terminal pngcairo noenhanced size 1000,650\n"
                "set logscale xy; set grid; set key outside right\n"
                "set format x '%%.0e'; set format y '%%.0e'\n"
                "set xlabel 'CPU seconds (median)'\n");
     for (int ip = 0; ip < NPROBLEMS; ip++) {
-        fprintf(f, "set output 'wp13_%s.png'\nset title \"work-precision\\n%s\"\n", problem_key[ip],
-                problem_title[ip]);
+        fprintf(f, "set output 'problems_wp_%s.png'\nset title \"work-precision\\n%s\"\n",
+                problem_key[ip], problem_title[ip]);
         fprintf(f, "set ylabel 'relative error%s'\nplot ",
                 ip == P_BELT ? " (the larger of period, amplitude)" : " in D");
         int block = 0;
         for (int is = 0; is < NSERIES; is++)
             if (series[is].problem == (enum problem)ip)
-                fprintf(f, "%s'wp13_%s.dat' index %d using 2:3 with linespoints title '%s'",
+                fprintf(f, "%s'problems_wp_%s.dat' index %d using 2:3 with linespoints title '%s'",
                         block ? ", \\\n     " : "", problem_key[ip], block, series[is].name),
                     block++;
         fprintf(f, "\n");
@@ -485,12 +487,13 @@ int main(int argc, char **argv)
     print_points(dir);
     print_best(dir);
     write_plots(dir);
-    printf("\nwrote to %s/: wp13.csv, wp13_refs.csv, wp13_best.csv, hold13.csv, wp13_*.dat, "
-           "wp13.gp\n",
+    printf("\nwrote to %s/: problems_wp.csv, problems_refs.csv, problems_best.csv, "
+           "problems_hold.csv, problems_wp_*.dat, "
+           "problems_wp.gp\n",
            dir);
 #else
     printf("\nbelt and disk: not run (their event-driven references need SUNDIALS CVODE: "
-           "libsundials-dev)\nwrote to %s/: hold13.csv\n",
+           "libsundials-dev)\nwrote to %s/: problems_hold.csv\n",
            dir);
 #endif
     return 0;
