@@ -97,7 +97,7 @@ expect_usage_error "--dt" oscillator --dt 0.05 --eps 0.02
 expect_usage_error "^fricreg-sim: --eps: .*at every dt; set eps >= 0.0215827 explicitly$" oscillator --mun 3
 expect_usage_error "^fricreg-sim: --dt: .*reduce dt to 0.00926667 or raise eps to 0.0215827$" oscillator --mun 3 --eps 0.02
 # Coulomb with rk8pd at dt 3.7 (its imaginary-axis bound) grew the energy 3.78 -> 104: a
-# reversal within one step is refused beyond dt * omega = 1/sqrt 2 (src/sim/sim.c).
+# reversal within one step is refused beyond dt * omega = 1/sqrt 2 (src/ode/step_guard.c).
 expect_usage_error "^fricreg-sim: --dt: .*> 0.707107 lets a friction reversal" oscillator --law coulomb --integrator rk8pd --dt 3.7
 expect_usage_error "--out" reproduce
 

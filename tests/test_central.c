@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_central.c — FRICREG_INT_CENTRAL, explicit central differences in fricreg_sim
- * (src/sim/central_step.c), and its step guard (src/sim/sim.c, check_central_step).
+ * (src/sim/central_step.c), and its step guard (src/ode/step_guard.c, check_central).
  *
  * Expected values:
  *   - order: the oscillator a = 2, omega = 0.5 (it sticks twice a cycle), eps = 4 dt, D of
@@ -205,7 +205,7 @@ START_TEST(guard_at_and_beyond_the_bound)
      * sharp: the oscillator with mun = 0 (lambda = 0) grows by 1.88 per step at dt = 2.1 and
      * overflows within 64 cycles, where 1.98 runs them at bounded energy (both refused by the
      * guard's margin, 1.897). The cycle is 32 steps (omega sets it; a = 0), so no step is
-     * shortened: with 2 pi cycles, 1.98 grew to 8e26 (src/sim/sim.c, CENTRAL_STEP_BOUND). */
+     * shortened: with 2 pi cycles, 1.98 grew to 8e26 (src/ode/step_guard.c, FR_CENTRAL_STEP_BOUND). */
     for (int k = 0; k < 2; k++) {
         double step = k ? 2.1 : 1.98;
         fricreg_sim *sim = sim_runs_make(FRICREG_SYSTEM_OSCILLATOR, FRICREG_INT_CENTRAL, step,

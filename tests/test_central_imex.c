@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_central_imex.c — FRICREG_INT_CENTRAL_IMEX: central differences with law (4) implicit at
- * the step's end (src/sim/central_imex.c), and its guard (src/sim/sim.c, check_central_imex_step).
+ * the step's end (src/sim/central_imex.c), and its guard (src/ode/step_guard.c, check_central_imex).
  *
  * Expected values:
  *   - order: the oscillator a = 2, omega = 0.5 (it sticks twice a cycle), eps = 4 dt, D of

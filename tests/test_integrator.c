@@ -110,7 +110,7 @@ static double amplification_on_imaginary_axis(int id, double z, double gsl_steps
     return hypot(y[0], y[1]);
 }
 
-/* The table's imaginary-axis bound (the system-frequency check of src/sim/sim.c) keeps the
+/* The table's imaginary-axis bound (the system-frequency check of src/ode/step_guard.c) keeps the
  * amplification per step within 1 + 1e-4, and 10% beyond it the amplification is larger. */
 START_TEST(test_imaginary_axis_bound)
 {

@@ -23,7 +23,7 @@ static const struct cli_name_table disk_law_names = {"2-D law", fricreg_disk_law
                                                      fricreg_disk_law_name};
 
 /* The stick zone's rate times dt must be inside RK4's stability interval (the library's own
- * step guard, src/sim/sim.c, for the 1-D law): 2 bound/(mass eps) dt <= 2.78. */
+ * step guard, src/ode/step_guard.c, for the 1-D law): 2 bound/(mass eps) dt <= 2.78. */
 static int stable_step(double bound_per_mass, double dt, double eps)
 {
     double rate = 2.0 * bound_per_mass / eps * dt;

@@ -83,11 +83,11 @@ static const struct fr_integrator table[] = {
     /* GSL's rk4 for fixed steps too, for comparison */
     {FRICREG_INT_RK4_GSL, "rk4-gsl", gsl_type_rk4, 2.78, 2.78, 2.82, 2, 1e-6, NULL, 0, 0},
     /* central differences, fixed steps only: real axis (dt lambda) 1, imaginary axis
-     * (dt omega) 2, jointly (dt omega/2)^2 + dt lambda < 1; the guard takes 0.9 (src/sim/sim.c) */
+     * (dt omega) 2, jointly (dt omega/2)^2 + dt lambda < 1; the guard takes 0.9 (step_guard.c) */
     {FRICREG_INT_CENTRAL, "central", NULL, 1.0, 0.9, 2.0, 1, 1e-6, NULL, 1, 0},
     /* the same with law (4) implicit at the step's end: no stick-zone bound (infinite real
      * axis), imaginary axis 2; the guard takes (dt omega/2)^2 < 0.9, and dt omega <= 1/sqrt 2
-     * where the step does not resolve law (4)'s band (src/sim/sim.c) */
+     * where the step does not resolve law (4)'s band (step_guard.c) */
     {FRICREG_INT_CENTRAL_IMEX, "central-imex", NULL, INFINITY, INFINITY, 2.0, 1, 1e-6, NULL, 1, 1},
 };
 

@@ -31,12 +31,12 @@ struct fr_integrator {
     /* 1 for central differences: fixed steps only, stepped by the driver's own stepper
      * (type is NULL; fricreg_sim's is src/sim/central_step.c, on its state layout (x, v, D)),
      * and one combined step bound (dt omega/2)^2 + dt lambda < 0.9 in place of the three
-     * columns above (src/sim/sim.c, check_central_step). */
+     * columns above (src/ode/step_guard.c, check_central). */
     int central;
     /* 1 for central differences with law (4) solved implicitly, per contact, at the step's end
      * (src/sim/central_imex.c): the stick zone then bounds no step's stability, and the guard is
      * the springs', plus the reversal bound where the step does not resolve law (4)'s band
-     * (src/sim/sim.c, check_central_imex_step). */
+     * (src/ode/step_guard.c, check_central_imex). */
     int implicit_friction;
 };
 

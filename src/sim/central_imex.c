@@ -15,7 +15,7 @@
  * roots lie in the unit disc for every z >= 0 exactly when p <= 2 (Schur's test:
  * |1 - z| <= 1 + z always, |2 - p^2| <= 2 iff p <= 2). So eps is free of h, and the guard is
  * the springs', plus the friction-reversal bound where the step does not resolve the band
- * (src/sim/sim.c, check_central_imex_step). Still one evaluation a step and second order.
+ * (src/ode/step_guard.c, check_central_imex). Still one evaluation a step and second order.
  *
  * The solve. a_free does not depend on v (system.h: a_free = Ax x + a_0(t)), so with
  * c = v + h/2 (a + a_free) and kappa = h W/2 the velocity is v1 = c + kappa f1, and f1 solves
