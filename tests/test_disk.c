@@ -493,6 +493,23 @@ START_TEST(tiny_bound_beside_huge_feq)
 }
 END_TEST
 
+/* A subnormal velocity: the sliding force is mun in -v's direction, |f| = mun to rounding,
+ * for every law that slides there (at v = (4.9e-324, 4.9e-324), |v| rounds on the subnormal
+ * grid to 4.9e-324 and v/|v| was (1, 1): f = (-mun, -mun), |f| = sqrt 2 mun). */
+START_TEST(subnormal_velocity_slides_at_the_bound)
+{
+    const double v[2] = {4.9e-324, 4.9e-324}, feq[2] = {0.0, 0.0}, mun = 2.385;
+    const int laws[2] = {FRICREG_DISK_COULOMB, FRICREG_DISK_FORCE_BALANCE};
+    for (int k = 0; k < 2; k++) {
+        double f[2];
+        ck_assert_int_eq(fricreg_disk_eval(laws[k], v, feq, mun, 1e-3, f), FRICREG_OK);
+        ck_assert_double_eq_tol(f[0], -mun / sqrt(2.0), 1e-15 * mun);
+        ck_assert_double_eq_tol(f[1], -mun / sqrt(2.0), 1e-15 * mun);
+        ck_assert_double_le(hypot(f[0], f[1]), mun * (1.0 + 1e-15));
+    }
+}
+END_TEST
+
 START_TEST(names_round_trip)
 {
     const char *want[] = {NULL, "coulomb", "force-balance", "quinn", "quinn-lens", "quinn-nested"};
@@ -529,6 +546,7 @@ static Suite *disk_suite(void)
     tcase_add_test(cases, batch_bad_input);
     tcase_add_test(cases, names_round_trip);
     tcase_add_test(cases, tiny_bound_beside_huge_feq);
+    tcase_add_test(cases, subnormal_velocity_slides_at_the_bound);
     suite_add_tcase(s, sweeps);
     suite_add_tcase(s, cases);
     return s;

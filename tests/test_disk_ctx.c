@@ -715,6 +715,19 @@ START_TEST(test_tiny_bound_isotropic)
 }
 END_TEST
 
+/* The force-balance law at a subnormal velocity slides at the bound, |f| = mun (it gave
+ * (-mun, -mun): |v| rounded on the subnormal grid). */
+START_TEST(test_subnormal_velocity_slides)
+{
+    double mun = 2.385, zdot[2] = {4.9e-324, 4.9e-324}, afree[2] = {0.3, 0.1}, f[2];
+    fricreg_disk_ctx *ctx = make_ctx(1, FRICREG_DISK_FORCE_BALANCE, 1e-3, &mun, NULL);
+    eval_ok(ctx, 1, zdot, afree, f);
+    ck_assert_double_eq_tol(f[0], -mun / sqrt(2.0), 1e-15 * mun);
+    ck_assert_double_eq_tol(f[1], -mun / sqrt(2.0), 1e-15 * mun);
+    fricreg_disk_ctx_free(ctx);
+}
+END_TEST
+
 static Suite *disk_ctx_suite(void)
 {
     Suite *s = suite_create("disk_ctx");
@@ -737,6 +750,7 @@ static Suite *disk_ctx_suite(void)
     tcase_add_test(tc, test_tiny_disk_anisotropic_block);
     tcase_add_test(tc, test_tangent_overflow_refused);
     tcase_add_test(tc, test_tiny_bound_isotropic);
+    tcase_add_test(tc, test_subnormal_velocity_slides);
     suite_add_tcase(s, tc);
     return s;
 }

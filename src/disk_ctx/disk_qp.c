@@ -22,8 +22,9 @@ static void classify(fricreg_disk_ctx *ctx, size_t i, const double v[2])
     double *p = ctx->p + 2 * i, *u = ctx->u + 2 * i, *f = ctx->f + 2 * i;
     ctx->r[i] = r;
     ctx->bound[i] = mun;
-    u[0] = r > 0.0 ? v[0] / r : 0.0;
-    u[1] = r > 0.0 ? v[1] / r : 0.0;
+    u[0] = u[1] = 0.0;
+    if (r > 0.0)
+        fr_disk_direction(v, u);
     p[0] = p[1] = 0.0;
     ctx->radius[i] = mun;
     ctx->lam[i] = 0.0;

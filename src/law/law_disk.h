@@ -28,26 +28,48 @@ static inline int fr_disk_law_uses_feq(int law)
     return law != FRICREG_DISK_COULOMB;
 }
 
+/* The unit vector u = v/|v| of v != 0 (v/|v| first, so that m u never meets m/|v|, which a
+ * subnormal v makes overflow). A v whose components are both below 2^-900 is scaled by 2^600
+ * first, exactly: on the subnormal grid |v| rounds by up to half its own size, and
+ * v = (4.9e-324, 4.9e-324) gave u = (1, 1), a sliding force of sqrt 2 mun. Normal v: the same
+ * bits as v/hypot(v). */
+static inline void fr_disk_direction(const double v[2], double u[2])
+{
+    double s0 = v[0], s1 = v[1];
+    if (fabs(s0) < 0x1p-900 && fabs(s1) < 0x1p-900) {
+        s0 *= 0x1p600;
+        s1 *= 0x1p600;
+    }
+    double r = hypot(s0, s1);
+    u[0] = s0 / r;
+    u[1] = s1 / r;
+}
+
 /* The 2-D (2) at rest: the projection of g onto the disk of radius m, g if |g| <= m (the same
- * bits), else g m/|g|. m = 0 gives 0. */
+ * bits), else m g/|g| (the direction first: m/|g| may underflow, m = 1e-100 beside
+ * |g| = 1e250 gave f = 0). m = 0 gives 0. */
 static inline void fr_disk_hold(const double g[2], double m, double f[2])
 {
-    double r = hypot(g[0], g[1]);
-    /* g/|g| first: m/|g| may underflow (m = 1e-100 beside |g| = 1e250 gave f = 0) */
-    double f0 = r > m ? m * (g[0] / r) : g[0], f1 = r > m ? m * (g[1] / r) : g[1];
+    double u[2] = {0.0, 0.0};
+    int out = hypot(g[0], g[1]) > m;
+    if (out)
+        fr_disk_direction(g, u);
+    double f0 = out ? m * u[0] : g[0], f1 = out ? m * u[1] : g[1];
     f[0] = f0;
     f[1] = f1;
 }
 
-/* The 2-D (1): f = -m v/|v| (0 at v = 0). v/|v| first, so a subnormal v does not make m/|v|
- * overflow. */
+/* The 2-D (1): f = -m v/|v| (0 at v = 0). */
 static inline void fr_disk_slide(const double v[2], double m, double f[2])
 {
-    double r = hypot(v[0], v[1]);
-    double f0 = r > 0.0 ? -m * (v[0] / r) : 0.0;
-    double f1 = r > 0.0 ? -m * (v[1] / r) : 0.0;
-    f[0] = f0;
-    f[1] = f1;
+    if (v[0] == 0.0 && v[1] == 0.0) {
+        f[0] = f[1] = 0.0;
+        return;
+    }
+    double u[2];
+    fr_disk_direction(v, u);
+    f[0] = -m * u[0];
+    f[1] = -m * u[1];
 }
 
 /* The lens law in the band 0 < |v| < eps, with rho = |v|/eps in (0, 1] and u = v/|v|:
@@ -66,8 +88,9 @@ static inline void fr_disk_slide(const double v[2], double m, double f[2])
 static inline void fr_disk_lens(const double v[2], const double g[2], double m, double rho,
                                 double f[2])
 {
-    double r = hypot(v[0], v[1]);
-    double u0 = v[0] / r, u1 = v[1] / r;
+    double u[2];
+    fr_disk_direction(v, u);
+    double u0 = u[0], u1 = u[1];
     double a = m * rho;
     double x = (g[0] * u0 + g[1] * u1) - a, y = g[1] * u0 - g[0] * u1;
     double X = fabs(x) + a, Y = fabs(y);
@@ -102,8 +125,9 @@ static inline void fr_disk_lens(const double v[2], const double g[2], double m, 
 static inline void fr_disk_inscribed(const double v[2], const double g[2], double m, double rho,
                                      double f[2])
 {
-    double r = hypot(v[0], v[1]);
-    double u0 = v[0] / r, u1 = v[1] / r;
+    double u[2];
+    fr_disk_direction(v, u);
+    double u0 = u[0], u1 = u[1];
     double a = m * rho, radius = m * (1.0 - rho);
     double d0 = g[0] - a * u0, d1 = g[1] - a * u1; /* g - w relative to the centre -a u */
     double d = hypot(d0, d1);
@@ -160,10 +184,11 @@ static inline void fr_disk_quinn_nested(const double v[2], const double g[2], do
         fr_disk_slide(v, m, f);
         return;
     }
-    double p[2];
+    double p[2], u[2];
     fr_disk_hold(g, m, p);
-    p[0] -= t * (m * (v[0] / r)); /* w = m c = t m u */
-    p[1] -= t * (m * (v[1] / r));
+    fr_disk_direction(v, u);
+    p[0] -= t * (m * u[0]); /* w = m c = t m u */
+    p[1] -= t * (m * u[1]);
     fr_disk_hold(p, m, f);
 }
 

@@ -19,13 +19,22 @@
  * dependent; then the guess stays a. Cost: O(m n + |S|^3), paid only where a is not already
  * within Newton's tolerance. Newton starts from whichever of a and this guess has the smaller
  * residual: for a smooth law (tanh) every contact is "in the band", and keeping velocities is
- * not always the better guess. */
+ * not always the better guess.
+ *
+ * W_SS is factored by GSL's pivoted LDL^T (Golub & Van Loan, Alg. 4.2.2), which takes a
+ * semidefinite matrix without a word, where gsl_linalg_cholesky_decomp1 reports one to GSL's
+ * error handler, whose default aborts: two contacts with equal rows of J (two dampers on one
+ * storey) under law (3) or tanh, which the context does not refuse, aborted the step. A pivot
+ * below FR_PREDICTOR_PIVOT_MIN of its row's diagonal, the context's singularity test
+ * (src/ctx/factor.h), means W_SS is singular: no guess. */
 #include <math.h>
 
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_linalg.h>
 
 #include "structure_internal.h"
+
+#define FR_PREDICTOR_PIVOT_MIN 1e-12
 
 size_t fr_stick_mark(fricreg_structure *s)
 {
@@ -55,8 +64,17 @@ int fr_stick_predictor(fricreg_structure *s, size_t k)
                 gsl_matrix_set(&Wss.matrix, p, q++, gsl_matrix_get(s->W, i, j));
         p++;
     }
-    if (gsl_linalg_cholesky_decomp1(&Wss.matrix) != GSL_SUCCESS ||
-        gsl_linalg_cholesky_svx(&Wss.matrix, &y.vector) != GSL_SUCCESS)
+    gsl_vector_view diag = gsl_vector_subvector(s->mwork, 0, k); /* W_SS's diagonal */
+    for (size_t p = 0; p < k; p++)
+        gsl_vector_set(&diag.vector, p, gsl_matrix_get(&Wss.matrix, p, p));
+    gsl_permutation perm = {k, s->stick_perm};
+    if (gsl_linalg_pcholesky_decomp(&Wss.matrix, &perm) != GSL_SUCCESS)
+        return 0;
+    for (size_t p = 0; p < k; p++)
+        if (!(gsl_matrix_get(&Wss.matrix, p, p) >
+              FR_PREDICTOR_PIVOT_MIN * gsl_vector_get(&diag.vector, perm.data[p])))
+            return 0; /* W_SS singular: rows of J_S dependent */
+    if (gsl_linalg_pcholesky_svx(&Wss.matrix, &perm, &y.vector) != GSL_SUCCESS)
         return 0;
     for (size_t i = 0, p = 0; i < s->m; i++)
         if (s->stopped[i]) {

@@ -35,6 +35,7 @@ void fricreg_structure_free(fricreg_structure *s)
     fricreg_ctx_free(s->ctx);
     free(s->mun);
     free(s->stopped);
+    free(s->stick_perm);
     free(s->ground.x);
     free(s->load.x);
     free(s->energy.per_contact);
@@ -74,8 +75,9 @@ static int allocate(fricreg_structure *s)
     s->eigenvalues = fr_gsl_vector_new(n);
     s->mun = malloc(m * sizeof *s->mun);
     s->stopped = calloc(m, sizeof *s->stopped);
+    s->stick_perm = malloc(m * sizeof *s->stick_perm);
     s->energy.per_contact = calloc(m, sizeof *s->energy.per_contact);
-    return s->perm && s->eigen_work && s->eigenvalues && s->mun && s->stopped &&
+    return s->perm && s->eigen_work && s->eigenvalues && s->mun && s->stopped && s->stick_perm &&
            s->energy.per_contact && fricreg_ctx_create(m, &s->ctx) == FRICREG_OK;
 }
 

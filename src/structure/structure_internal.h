@@ -87,6 +87,7 @@ struct fricreg_structure {
     gsl_vector *u1, *v1, *guess, *R, *Rt, *ptil1, *hist, *up, *vp, *work;
     gsl_vector *f1, *zdot, *afree, *mwork; /* [m] */
     unsigned char *stopped;                /* [m] Newton: stopped at zdot_i = 0 this step */
+    size_t *stick_perm;                    /* [m] the stick predictor's pivots */
 
     struct fr_energy energy;
     int64_t stats[FR_NSSTATS];
