@@ -260,8 +260,10 @@ FRICREG_API int fricreg_structure_run(fricreg_structure *s, double dt, double t_
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown integrator or
  *  FRICREG_INT_CENTRAL or FRICREG_INT_CENTRAL_IMEX (fricreg_sim's only: use
  *  fricreg_structure_step's central difference),
- *  dt <= 0, rtol < 0, atol < 0, t_end not after the current time, more than 2^31 fixed steps, or J
- *  never set; FRICREG_ENONFINITE; FRICREG_ESTEP; FRICREG_ESINGULAR; FRICREG_EDIVERGED (the
+ *  dt <= 0, rtol < 0, atol < 0, t_end not after the current time, more than 2^31 fixed steps, J
+ *  never set, or a stepper that solves its Newton matrix by GSL's LU (rk1imp, rk2imp, rk4imp,
+ *  bsimp, msbdf) on an unstable structure (K or C not positive semidefinite: that matrix can
+ *  be singular, which GSL would report to its error handler); FRICREG_ENONFINITE; FRICREG_ESTEP; FRICREG_ESINGULAR; FRICREG_EDIVERGED (the
  *  state non-finite or beyond 1e100); FRICREG_EINTEGRATOR (GSL failed, e.g. the adaptive step
  *  underflowed); FRICREG_ENOMEM. On failure the state is that of the last accepted step. */
 FRICREG_API int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt,

@@ -1104,6 +1104,40 @@ START_TEST(divergence_is_reported)
 }
 END_TEST
 
+/* GSL's implicit steppers that solve I - h c J by GSL's LU (rk1imp, rk2imp, rk4imp, bsimp,
+ * msbdf) refuse an unstable structure, whose J has an eigenvalue with a positive real part and
+ * so an h where that matrix is singular, which gsl_linalg_LU_solve reports to GSL's handler
+ * (the default aborted: fuzz finding, rk4imp with K indefinite). Newmark and the explicit
+ * steppers still run it, as does a negative damping with msadams (no LU). */
+START_TEST(lu_steppers_refuse_an_unstable_structure)
+{
+    const int lu[] = {FRICREG_INT_RK1IMP, FRICREG_INT_RK2IMP, FRICREG_INT_RK4IMP, FRICREG_INT_BSIMP,
+                      FRICREG_INT_MSBDF};
+    const double K[4] = {2.0, 0.0, 0.0, -0.5}, C[4] = {0.1, 0.0, 0.0, -0.2};
+    const double u0[2] = {0.01, 0.02}, v0[2] = {0.0, 0.0};
+    for (int model = 0; model < 2; model++)
+        for (size_t k = 0; k < sizeof lu / sizeof lu[0]; k++) {
+            fricreg_structure *s = make(2, 1);
+            if (model == 0) { /* indefinite K */
+                ok(s, fricreg_structure_set_stiffness(s, 2, K));
+            } else { /* negative damping */
+                const double Kpos[4] = {2.0, 0.0, 0.0, 0.5};
+                ok(s, fricreg_structure_set_stiffness(s, 2, Kpos));
+                ok(s, fricreg_structure_set_damping(s, 2, C));
+            }
+            frictionless(s, 2);
+            ok(s, fricreg_structure_set_initial(s, 2, u0, v0));
+            ck_assert_int_eq(fricreg_structure_run_ode(s, lu[k], 0.01, 1e-6, 1e-9, 1.0),
+                             FRICREG_EINVAL);
+            ck_assert_ptr_nonnull(strstr(fricreg_structure_errmsg(s), "positive semidefinite"));
+            ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_RK4, 0.01, 0.0, 0.0, 0.1),
+                             FRICREG_OK);
+            ok(s, fricreg_structure_run(s, 0.01, 0.2));
+            fricreg_structure_free(s);
+        }
+}
+END_TEST
+
 static Suite *structure_suite(void)
 {
     Suite *suite = suite_create("structure");
@@ -1141,6 +1175,7 @@ static Suite *structure_suite(void)
     tcase_add_test(errors, redundant_contacts_are_singular);
     tcase_add_test(errors, refused_setter_mid_run_changes_nothing);
     tcase_add_test(errors, divergence_is_reported);
+    tcase_add_test(errors, lu_steppers_refuse_an_unstable_structure);
     suite_add_tcase(suite, errors);
     return suite;
 }

@@ -38,6 +38,12 @@ struct fr_integrator {
      * the springs', plus the reversal bound where the step does not resolve law (4)'s band
      * (src/ode/step_guard.c, check_central_imex). */
     int implicit_friction;
+    /* 1 for GSL's steppers that solve their Newton matrix I - h c J by GSL's LU (rk1imp,
+     * rk2imp, rk4imp, bsimp, msbdf): gsl_linalg_LU_solve reports an exactly singular one to
+     * GSL's error handler, whose default aborts. I - h c J is regular when no eigenvalue of J
+     * has a positive real part, a stable system: the drivers run these steppers on stable
+     * systems only (a structure's K and C positive semidefinite, structure_ode.c). */
+    int lu_newton;
 };
 
 /* The table row of an integrator id, or NULL if unknown. */

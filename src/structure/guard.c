@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* guard.c — what the step guard (src/ode/step_guard.c, the drivers' one guard) reads of a
  * structure: its highest natural frequency, its largest viscous damping rate and the stick
- * zone's stiffness, each cached until what it depends on changes. */
+ * zone's stiffness, each cached until what it depends on changes; and whether the structure
+ * is stable (K and C positive semidefinite), which GSL's LU-based implicit steppers need. */
 #include <math.h>
 
 #include <gsl/gsl_blas.h>
@@ -12,25 +13,39 @@
 #include "ode/step_guard.h"
 #include "structure_internal.h"
 
-/* The largest eigenvalue of L^-1 X L^-T (M = L L^T), X = K or C, in s->A's storage: the
- * largest omega^2 of M^-1 K, or the largest decay rate of M^-1 C. */
-static double largest_generalized_eigenvalue(fricreg_structure *s, const gsl_matrix *X)
+/* The eigenvalues of L^-1 X L^-T (M = L L^T), X = K or C, in s->A's storage: the omega^2 of
+ * M^-1 K, or the decay rates of M^-1 C. Their largest into *max (0 if none is positive); 1 if
+ * none is below -STABLE_RTOL times the largest magnitude (X positive semidefinite to
+ * rounding: a rigid-body mode of K gives an eigenvalue of order 1e-16 of either sign). */
+#define STABLE_RTOL 1e-10
+static int generalized_eigenvalues(fricreg_structure *s, const gsl_matrix *X, double *max)
 {
     gsl_matrix_memcpy(s->A, X);
     gsl_blas_dtrsm(CblasLeft, CblasLower, CblasNoTrans, CblasNonUnit, 1.0, s->L, s->A);
     gsl_blas_dtrsm(CblasRight, CblasLower, CblasTrans, CblasNonUnit, 1.0, s->L, s->A);
     gsl_eigen_symm(s->A, s->eigenvalues, s->eigen_work);
-    return fmax(gsl_vector_max(s->eigenvalues), 0.0);
+    double lo = gsl_vector_min(s->eigenvalues), hi = gsl_vector_max(s->eigenvalues);
+    *max = fmax(hi, 0.0);
+    return !(lo < -STABLE_RTOL * fmax(fabs(lo), fabs(hi)));
 }
 
-/* omega_max and the damping rate, at the first use after fr_structure_prepare. */
+/* omega_max, the damping rate and stability, at the first use after fr_structure_prepare. */
 static void model_rates(fricreg_structure *s)
 {
     if (s->omega_valid)
         return;
-    s->omega_max = sqrt(largest_generalized_eigenvalue(s, s->K));
-    s->damping_max = largest_generalized_eigenvalue(s, s->C);
+    double omega2 = 0.0;
+    int stiff_psd = generalized_eigenvalues(s, s->K, &omega2);
+    int damp_psd = generalized_eigenvalues(s, s->C, &s->damping_max);
+    s->omega_max = sqrt(omega2);
+    s->stable = stiff_psd && damp_psd;
     s->omega_valid = 1;
+}
+
+int fr_structure_stable(fricreg_structure *s)
+{
+    model_rates(s);
+    return s->stable;
 }
 
 double fr_structure_omega_max(fricreg_structure *s)

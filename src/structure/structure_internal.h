@@ -62,6 +62,7 @@ struct fricreg_structure {
     int omega_valid;    /* the step guard: omega_max, damping_max are current (reset by prepare) */
     double omega_max;   /* sqrt of the largest eigenvalue of M^-1 K */
     double damping_max; /* the largest eigenvalue of M^-1 C */
+    int stable;         /* K and C positive semidefinite (to rounding) */
     int stick_valid;    /* the step guard: stick_rate is current (reset at equilibrium) */
     double stick_rate; /* lambda * eps (fr_stiffness_times_eps): the chord's for a law that jumps */
     gsl_eigen_symm_workspace *eigen_work;
@@ -127,6 +128,8 @@ int fr_central_solve(fricreg_structure *s, double dt);
  * FRICREG_ESTEP (recorded, led by who). */
 struct fr_integrator;
 double fr_structure_omega_max(fricreg_structure *s);
+/* K and C are positive semidefinite, to rounding (cached with omega_max). */
+int fr_structure_stable(fricreg_structure *s);
 int fr_structure_guard(fricreg_structure *s, const struct fr_integrator *integ, double dt,
                        const char *who);
 

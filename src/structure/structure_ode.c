@@ -164,6 +164,12 @@ int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, d
         return fr_fail(s, FRICREG_EINVAL, "run_ode: (t_end - t)/dt is too many steps");
 
     int status = fr_structure_prepare(s);
+    if (status == FRICREG_OK && integ->lu_newton && !fr_structure_stable(s))
+        return fr_fail(s, FRICREG_EINVAL,
+                       "run_ode: integrator %s solves its Newton matrix by GSL's LU, which a "
+                       "structure whose K or C is not positive semidefinite (unstable) can make "
+                       "singular; take Newmark or HHT, or an explicit stepper",
+                       integ->name);
     if (status == FRICREG_OK && !adaptive) {
         s->stick_valid = 0; /* law, eps or bounds may have changed since the last step */
         status = fr_structure_guard(s, integ, dt, "run_ode");
