@@ -16,7 +16,8 @@
 !   - every C function by its C name, with an interface generated from its prototype
 !     (modules fricreg_c and fricreg_sim_c: scalars by value, arrays dimension(*) with the
 !     count passed, handles as type(c_ptr), omitted pointer arguments passed as NULL), the
-!     abstract interface fricreg_sim_observer, and fricreg_c_string, fricreg_ptr_to_handle,
+!     abstract interfaces fricreg_sim_observer and fricreg_structure_observer, and
+!     fricreg_c_string, fricreg_ptr_to_handle,
 !     fricreg_handle_to_ptr;
 !   - the iso_c_binding names used with them: c_int, c_double, c_size_t, c_int64_t,
 !     c_intptr_t, c_ptr, c_funptr, c_char, c_null_ptr, c_null_funptr, c_null_char,
@@ -71,7 +72,7 @@ module fricreg
   public :: fricreg_disk_context
 #ifdef FRICREG_HAVE_SIM
   include 'fricreg_drivers_h_public.inc'
-  public :: fricreg_sim_observer
+  public :: fricreg_sim_observer, fricreg_structure_observer
   public :: fricreg_simulation, fricreg_exact_solution, fricreg_structure, &
             fricreg_integrator_string, fricreg_integrator_id
 #endif
@@ -197,6 +198,7 @@ module fricreg
     procedure :: set_partition => sim_set_partition
     procedure :: set_integrator => sim_set_integrator
     procedure :: set_observer => sim_set_observer
+    procedure :: set_max_steps => sim_set_max_steps
     procedure :: run => sim_run
     procedure :: run_cycles => sim_run_cycles
     procedure :: ndof => sim_ndof
@@ -255,6 +257,8 @@ module fricreg
     procedure :: set_hht => struct_set_hht
     procedure :: set_central_difference => struct_set_central_difference
     procedure :: set_newton => struct_set_newton
+    procedure :: set_observer => struct_set_observer
+    procedure :: set_max_steps => struct_set_max_steps
     procedure :: step => struct_step
     procedure :: run => struct_run
     procedure :: run_ode => struct_run_ode
@@ -1079,6 +1083,18 @@ contains
     if (status == FRICREG_OK) status = self%record(fricreg_sim_set_observer(self%ptr, fn, u))
   end function sim_set_observer
 
+  !> Bound the adaptive steps accepted in one forcing cycle (0: no bound; by default 10^4 for
+  !> the laws that jump, 10^6 otherwise): a run that needs more returns FRICREG_EWORK
+  !> (fricreg_sim_set_max_steps).
+  function sim_set_max_steps(self, max_steps) result(status)
+    class(fricreg_simulation), intent(inout) :: self
+    integer(c_int64_t), intent(in) :: max_steps
+    integer(c_int) :: status
+    status = self%ready('set_max_steps', 'simulation')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_sim_set_max_steps(self%ptr, max_steps))
+  end function sim_set_max_steps
+
   !> Integrate from t = 0 to t_end > 0 (see fricreg_sim_run for the returns).
   function sim_run(self, t_end) result(status)
     class(fricreg_simulation), intent(inout) :: self
@@ -1633,6 +1649,37 @@ contains
     status = self%ready('set_newton', 'structure')
     if (status == FRICREG_OK) status = self%record(fricreg_structure_set_newton(self%ptr, t, n))
   end function struct_set_newton
+
+  !> Install an observer of run and run_ode (a bind(C) function with interface
+  !> fricreg_structure_observer), called after every step; user is passed back to it. With no
+  !> observer, removes it (fricreg_structure_set_observer).
+  function struct_set_observer(self, fricreg_observer, user) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    procedure(fricreg_structure_observer), optional :: fricreg_observer
+    type(c_ptr), intent(in), optional :: user
+    integer(c_int) :: status
+    type(c_funptr) :: fn
+    type(c_ptr) :: u
+    fn = c_null_funptr
+    u = c_null_ptr
+    if (present(fricreg_observer)) fn = c_funloc(fricreg_observer)
+    if (present(user)) u = user
+    status = self%ready('set_observer', 'structure')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_structure_set_observer(self%ptr, fn, u))
+  end function struct_set_observer
+
+  !> Bound the adaptive steps accepted by one run_ode call (0: no bound; by default 10^4 for the
+  !> laws that jump, 10^6 otherwise): a call that needs more returns FRICREG_EWORK
+  !> (fricreg_structure_set_max_steps).
+  function struct_set_max_steps(self, max_steps) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    integer(c_int64_t), intent(in) :: max_steps
+    integer(c_int) :: status
+    status = self%ready('set_max_steps', 'structure')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_structure_set_max_steps(self%ptr, max_steps))
+  end function struct_set_max_steps
 
   !> One step of dt > 0 with the selected scheme. FRICREG_EINVAL (dt, J never set);
   !> FRICREG_ENONFINITE; FRICREG_ESINGULAR; FRICREG_ESTEP; FRICREG_EDIVERGED. On failure the

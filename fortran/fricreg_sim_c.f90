@@ -12,14 +12,15 @@
 ! include/fricreg_exact.h apply unchanged. The idiomatic layer is types fricreg_simulation and
 ! fricreg_exact_solution in module fricreg. Built only with the drivers (FRICREG_DRIVERS).
 !
-! Public: the generated interfaces and the abstract interface fricreg_sim_observer.
+! Public: the generated interfaces and the abstract interfaces fricreg_sim_observer and
+! fricreg_structure_observer.
 module fricreg_sim_c
   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_int64_t, c_ptr, &
                                          c_funptr, c_char
   implicit none
   private
   include 'fricreg_drivers_h_public.inc'
-  public :: fricreg_sim_observer
+  public :: fricreg_sim_observer, fricreg_structure_observer
 
   abstract interface
     !> An observer (fricreg_sim_observer): called after every accepted step, and once at t = 0,
@@ -34,6 +35,20 @@ module fricreg_sim_c
       real(c_double), intent(in) :: x(ndof), v(ndof)
       integer(c_size_t), value :: m
       real(c_double), intent(in) :: f(m), f_eq(m)
+      integer(c_int) :: stop_run
+    end function
+    !> A structure's observer (fricreg_structure_observer): called after every step of run
+    !> and every GSL step of run_ode with the displacements u, velocities v and the m friction
+    !> forces f at time t, valid during the call only. Return 0 to go on, nonzero to stop the
+    !> run there. Write it as a bind(C) function and pass it to the structure's set_observer.
+    function fricreg_structure_observer(user, t, ndof, u, v, m, f) bind(C) result(stop_run)
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: user
+      real(c_double), value :: t
+      integer(c_size_t), value :: ndof
+      real(c_double), intent(in) :: u(ndof), v(ndof)
+      integer(c_size_t), value :: m
+      real(c_double), intent(in) :: f(m)
       integer(c_int) :: stop_run
     end function
   end interface

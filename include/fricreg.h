@@ -59,17 +59,18 @@ enum fricreg_status {
     FRICREG_OK = 0,     /**< success */
     FRICREG_ENULL = 1,  /**< a required pointer argument is NULL */
     FRICREG_EINVAL = 2, /**< an argument is out of its valid range (unknown law, eps <= 0 …) */
-    FRICREG_ENONFINITE = 3,  /**< an input number is NaN or infinite */
-    FRICREG_ESIZE = 4,       /**< an array length does not match the context's contact count */
-    FRICREG_ENOMEM = 5,      /**< memory allocation failed */
-    FRICREG_ENOTSYM = 6,     /**< a coupling matrix is not symmetric */
-    FRICREG_ENOTPSD = 7,     /**< a coupling matrix is not positive semidefinite */
-    FRICREG_ESINGULAR = 8,   /**< the near-stick block W_SS (or the consistent law's W_FF) is
+    FRICREG_ENONFINITE = 3,   /**< an input number is NaN or infinite */
+    FRICREG_ESIZE = 4,        /**< an array length does not match the context's contact count */
+    FRICREG_ENOMEM = 5,       /**< memory allocation failed */
+    FRICREG_ENOTSYM = 6,      /**< a coupling matrix is not symmetric */
+    FRICREG_ENOTPSD = 7,      /**< a coupling matrix is not positive semidefinite */
+    FRICREG_ESINGULAR = 8,    /**< the near-stick block W_SS (or the consistent law's W_FF) is
                                   singular: the near-stick forces are not unique */
-    FRICREG_ESTEP = 9,       /**< the step is too large for the stick-zone stiffness or the
+    FRICREG_ESTEP = 9,        /**< the step is too large for the stick-zone stiffness or the
                                   system's highest frequency (explicit fixed steps) */
-    FRICREG_EDIVERGED = 10,  /**< the integrated state became NaN, infinite or beyond 1e100 */
-    FRICREG_EINTEGRATOR = 11 /**< the ODE integrator failed (step size underflow, …) */
+    FRICREG_EDIVERGED = 10,   /**< the integrated state became NaN, infinite or beyond 1e100 */
+    FRICREG_EINTEGRATOR = 11, /**< the ODE integrator failed (step size underflow, …) */
+    FRICREG_EWORK = 12        /**< a run reached its bound on steps before its end (since 1.6) */
 };
 
 /** Fixed English text for a status code. Never NULL; static storage; an unknown code gives

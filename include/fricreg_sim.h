@@ -184,6 +184,15 @@ typedef int (*fricreg_sim_observer)(void *user, double t, size_t ndof, const dou
  *  observer during a run. */
 FRICREG_API int fricreg_sim_set_observer(fricreg_sim *sim, fricreg_sim_observer fn, void *user);
 
+/** Bound the adaptive steps accepted in one forcing cycle at max_steps >= 1, or remove the
+ *  bound with 0. By default 10^4 for the laws that jump ((1), (2), Karnopp), whose jump an
+ *  adaptive stepper chases at a stick in ever smaller steps, and 10^6 for the others (rk8pd on
+ *  the chain of 1000 blocks at rtol 1e-10 takes 4.3e5). A run whose cycle needs more returns
+ *  FRICREG_EWORK. Fixed steps are bounded before the run starts (fricreg_sim_run).
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if max_steps < 0 or called from the
+ *  observer during a run. Since 1.6 (FRICREG_1.6). */
+FRICREG_API int fricreg_sim_set_max_steps(fricreg_sim *sim, int64_t max_steps);
+
 /** Integrate from t = 0 and the initial conditions to t_end > 0 (replacing earlier results).
  *  D is recorded per forcing cycle of period 2 pi/omega (belt_omega for twoblock).
  *
@@ -192,17 +201,18 @@ FRICREG_API int fricreg_sim_set_observer(fricreg_sim *sim, fricreg_sim_observer 
  *  sqrt(max(1, k)) for the two blocks); each limit beyond is FRICREG_ESTEP, refused before any
  *  step:
  *   - the stick zone: dt * lambda must not exceed the stepper's stick-zone bound (rk2 2.5,
- *     rk4 2.78, rkf45 2.2, rkck 3.7, rk8pd 5.1; the negative real axis's, but rkf45's, whose
- *     stages overshoot the zone first), lambda the stiffness of fricreg_ctx_stick_stiffness
+ *     rk4 2.78, rkf45 2.2, rkck 3.7, rk8pd 4.5; the negative real axis's, but rkf45's, whose
+ *     stages overshoot the zone first, and rk8pd's, whose last stretch lets the stick zone
+ *     ring), lambda the stiffness of fricreg_ctx_stick_stiffness
  *     (W_ii * 2 mun_i/eps for (4) under the consistent partition; coupled contacts included).
  *     For the laws that jump, (1), (2) and Karnopp, lambda is the chord of the jump across the
  *     band eps, W_ii mun_i/eps (coupled as (3)), and dt * lambda must not exceed 1, so that one
  *     step of chatter stays in the band |zdot| < eps;
  *   - dt * omega within the stepper's imaginary-axis bound (rk2 1.73, rk4 2.82, rkf45 0.7,
  *     rkck 0.88, rk8pd 3.7) and within 1/sqrt 2, beyond which a friction reversal inside one
- *     step can put energy in (src/sim/sim.c derives it).
+ *     step can put energy in (src/ode/step_guard.c derives it).
  *  Central differences (FRICREG_INT_CENTRAL) instead need (dt omega/2)^2 + dt lambda < 0.9,
- *  the linear stability bound 1 of x'' = -omega^2 x - lambda x' (src/sim/sim.c derives it) with a
+ *  the linear stability bound 1 of x'' = -omega^2 x - lambda x' (src/ode/step_guard.c derives it) with a
  *  margin for each cycle's shortened last step, and for the laws that jump also dt * lambda
  *  <= 1 and dt * omega <= 1/sqrt 2, as above. For (4) this is dt * lambda < 0.9: the paper's
  *  eps = 2 dt, dt * lambda = 2 mun W_ii / 2, is refused at every dt where mun W_ii >= 0.9.
@@ -221,10 +231,16 @@ FRICREG_API int fricreg_sim_set_observer(fricreg_sim *sim, fricreg_sim_observer 
  *  body, or the contact whose kinematics overflowed within
  *  a step).
  *
+ *  Adaptive steps are bounded per forcing cycle (fricreg_sim_set_max_steps: 10^4 or 10^6):
+ *  a cycle that needs more stops the run with FRICREG_EWORK, its state at the last step. An
+ *  adaptive stepper meets that bound with a law that jumps ((1), (2), Karnopp), whose force
+ *  it chases back and forth across zdot = 0 in ever smaller steps; the message says so.
+ *
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if t_end <= 0, or too many fixed steps
  *  (more than 2^31) or cycles (more than 10^9), or FRICREG_INT_CENTRAL_IMEX with a law other
  *  than (4) or on the two blocks; FRICREG_ENONFINITE; FRICREG_ESTEP; FRICREG_EDIVERGED; FRICREG_EINTEGRATOR
- *  (GSL failed, e.g. the adaptive step underflowed); FRICREG_ESINGULAR; FRICREG_ENOMEM.
+ *  (GSL failed, e.g. the adaptive step underflowed); FRICREG_EWORK; FRICREG_ESINGULAR;
+ *  FRICREG_ENOMEM.
  *  On failure the results hold what was reached before it: a run refused before its first
  *  step (e.g. FRICREG_ESTEP) leaves the initial state, time 0 and no cycles. A call from the
  *  observer during a run is FRICREG_EINVAL. */

@@ -232,11 +232,39 @@ FRICREG_API int fricreg_structure_set_newton(fricreg_structure *s, double tol, i
 FRICREG_API int fricreg_structure_step(fricreg_structure *s, double dt);
 
 /** Step from the current time to t_end with steps of dt, the last one shortened to land on
- *  t_end (step k ends at t_start + k dt exactly, no accumulated rounding).
- *  Returns FRICREG_OK or the codes of fricreg_structure_step, and FRICREG_EINVAL if t_end is
- *  not after the current time or needs more than 2^31 steps. On failure the state is that of
+ *  t_end (step k ends at t_start + k dt exactly, no accumulated rounding). The observer
+ *  (fricreg_structure_set_observer) sees every step and may stop the run.
+ *  Returns FRICREG_OK (also when the observer stopped it) or the codes of
+ *  fricreg_structure_step, and FRICREG_EINVAL if t_end is not after the current time, needs
+ *  more than 2^31 steps, or the call comes from the observer. On failure the state is that of
  *  the last successful step. */
 FRICREG_API int fricreg_structure_run(fricreg_structure *s, double dt, double t_end);
+
+/** Called by fricreg_structure_run after every step, and by fricreg_structure_run_ode after
+ *  every GSL step, with the state at time t: displacements u[ndof], velocities v[ndof]
+ *  (length and time units of the model) and the friction forces f[m] at (t, u, v) (force
+ *  units), valid during the call only. Return 0 to go on, nonzero to stop the run there: the
+ *  call then returns FRICREG_OK at time t. It may call the structure's getters; any other call
+ *  on it from here returns FRICREG_EINVAL and changes nothing; it must not free it. Since 1.6
+ *  (FRICREG_1.6). */
+typedef int (*fricreg_structure_observer)(void *user, double t, size_t ndof, const double u[],
+                                          const double v[], size_t m, const double f[]);
+
+/** Install an observer of the long runs (NULL removes it); user is passed back unchanged.
+ *  Returns FRICREG_OK; FRICREG_ENULL if s is NULL; FRICREG_EINVAL if called from the observer
+ *  during a run. Since 1.6 (FRICREG_1.6). */
+FRICREG_API int fricreg_structure_set_observer(fricreg_structure *s, fricreg_structure_observer fn,
+                                               void *user);
+
+/** Bound the adaptive steps accepted by one fricreg_structure_run_ode call at max_steps >= 1,
+ *  or remove the bound with 0; by default 10^4 for the laws that jump ((1), (2), Karnopp) and
+ *  10^6 for the others, as fricreg_sim_set_max_steps. A call that needs more returns
+ *  FRICREG_EWORK with the state of its last step: an adaptive stepper meets the bound with a
+ *  law that jumps ((1), (2), Karnopp), which it chases across zdot = 0 in ever smaller steps
+ *  (the message says so). Fixed steps are bounded before the run starts (2^31).
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if max_steps < 0 or called from the
+ *  observer during a run. Since 1.6 (FRICREG_1.6). */
+FRICREG_API int fricreg_structure_set_max_steps(fricreg_structure *s, int64_t max_steps);
 
 /** Integrate from the current time to t_end with one of GSL's steppers (enum
  *  fricreg_integrator of fricreg_sim.h), as the reference systems' drivers do: the
@@ -265,7 +293,10 @@ FRICREG_API int fricreg_structure_run(fricreg_structure *s, double dt, double t_
  *  bsimp, msbdf) on an unstable structure (K or C not positive semidefinite: that matrix can
  *  be singular, which GSL would report to its error handler); FRICREG_ENONFINITE; FRICREG_ESTEP; FRICREG_ESINGULAR; FRICREG_EDIVERGED (the
  *  state non-finite or beyond 1e100); FRICREG_EINTEGRATOR (GSL failed, e.g. the adaptive step
- *  underflowed); FRICREG_ENOMEM. On failure the state is that of the last accepted step. */
+ *  underflowed); FRICREG_EWORK (more adaptive steps than fricreg_structure_set_max_steps
+ *  allows); FRICREG_ENOMEM. On failure the state is that of the last accepted step. The
+ *  observer sees every GSL step (one more right-hand side each for its forces) and may stop
+ *  the run (FRICREG_OK); a call from the observer is FRICREG_EINVAL. */
 FRICREG_API int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt,
                                           double rtol, double atol, double t_end);
 

@@ -396,6 +396,12 @@ expect() {
 # sanitize tree); 1e13 is beyond 10^7.
 expect_usage_error "^fricreg-sim: --cycles: not a finite number$" oscillator --cycles nan
 expect_usage_error "^fricreg-sim: --cycles: must be a whole number" oscillator --cycles 1e13
+# Adaptive steps are bounded per cycle (--max-steps; 10^4 for a law that jumps): Coulomb under
+# rkf45 chatters at the first stick and stops there (exit 1, the option named), in ~0.05 s.
+expect "a chattering adaptive run stops with its reason" \
+    '"$sim" oscillator --law coulomb --integrator rkf45 --rtol 1e-6 --atol 1e-8 >"$tmp/out" 2>"$tmp/err"; [ $? -eq 1 ] && [ ! -s "$tmp/out" ] && grep -q "^fricreg-sim: --max-steps: run: more than 10000 adaptive steps (rkf45)" "$tmp/err"'
+expect_usage_error "^fricreg-sim: --max-steps: must be a whole number from 0 to 10^9$" oscillator --max-steps -1
+expect_output '"steps": 630,' oscillator --max-steps 0 --cycles 1
 # A run length the library refuses is a bad value (exit 2), like the exact solver's.
 expect_usage_error "^fricreg-sim: --cycles: run: .* steps is too many" oscillator --cycles 10000000 --dt 1e-4
 expect_usage_error "^fricreg-sim: --t-end: run: .* steps is too many" chain --t-end 1e9 --dt 1e-3

@@ -710,11 +710,12 @@ END_TEST
 
 /* ---- Status text and version ------------------------------------------------------------- */
 
-/* Every code 0..11 has its own non-empty text; unknown codes get the fixed fallback. */
+/* Every code 0..FRICREG_EWORK has its own non-empty text; unknown codes get the fixed
+ * fallback. */
 START_TEST(strerror_texts)
 {
-    const char *text[12];
-    for (int c = 0; c <= 11; c++) {
+    const char *text[FRICREG_EWORK + 1];
+    for (int c = 0; c <= FRICREG_EWORK; c++) {
         text[c] = fricreg_strerror(c);
         ck_assert_ptr_nonnull(text[c]);
         ck_assert_uint_gt(strlen(text[c]), 0);
@@ -722,7 +723,7 @@ START_TEST(strerror_texts)
         for (int d = 0; d < c; d++)
             ck_assert_msg(strcmp(text[c], text[d]) != 0, "codes %d and %d share a text", c, d);
     }
-    ck_assert_str_eq(fricreg_strerror(12), "unknown fricreg status code");
+    ck_assert_str_eq(fricreg_strerror(FRICREG_EWORK + 1), "unknown fricreg status code");
     ck_assert_str_eq(fricreg_strerror(-1), "unknown fricreg status code");
     ck_assert_str_eq(fricreg_strerror(100000), "unknown fricreg status code");
 }

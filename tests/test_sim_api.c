@@ -64,6 +64,7 @@ START_TEST(test_null_simulation_is_rejected_everywhere)
     ck_assert_int_eq(fricreg_sim_set_integrator(NULL, FRICREG_INT_RK4, 0.01, 0.0, 0.0),
                      FRICREG_ENULL);
     ck_assert_int_eq(fricreg_sim_set_observer(NULL, NULL, NULL), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_sim_set_max_steps(NULL, 10), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_sim_run(NULL, 1.0), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_sim_run_cycles(NULL, 1), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_sim_get_value(NULL, FRICREG_VALUE_TIME, &d), FRICREG_ENULL);
@@ -827,6 +828,51 @@ START_TEST(test_fixed_step_retries_count_as_rejected)
 }
 END_TEST
 
+/* The adaptive steps of one forcing cycle are bounded (fricreg_sim_set_max_steps):
+ *   - Coulomb's law under rkf45 (rtol 1e-6, atol 1e-8) shrinks its steps without end at the
+ *     first stick (it took 12 s a cycle, about 5e7 steps): with the bound at 10^5 the run
+ *     stops inside the first cycle with FRICREG_EWORK, naming the law's jump, with exactly
+ *     10^5 accepted steps; by default (a law that jumps: 10^4) the force balance likewise;
+ *   - law (4) at the same tolerances takes more than 100 steps a cycle (counted with the bound
+ *     off), so a bound of 100 stops it in cycle 1, and its own count lets it finish;
+ *   - the bound is per cycle: 2 cycles pass the bound that one passes;
+ *   - negative bounds are refused, and 0 removes it. */
+START_TEST(test_adaptive_steps_are_bounded_per_cycle)
+{
+    fricreg_sim *sim = make(FRICREG_SYSTEM_OSCILLATOR);
+    ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_COULOMB, 0.0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RKF45, 0.01, 1e-6, 1e-8),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_max_steps(sim, -1), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_sim_set_max_steps(sim, 100000), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run_cycles(sim, 4), FRICREG_EWORK);
+    ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "jump at zdot = 0"));
+    double period = value(sim, FRICREG_VALUE_PERIOD), t = value(sim, FRICREG_VALUE_TIME);
+    ck_assert_double_lt(t, period);
+    ck_assert_int_eq(counter(sim, FRICREG_SIM_STAT_STEPS), 100000);
+    /* by default a law that jumps gets 10^4 adaptive steps a cycle */
+    fricreg_sim *fresh = make(FRICREG_SYSTEM_OSCILLATOR);
+    ck_assert_int_eq(fricreg_sim_set_law(fresh, FRICREG_LAW_FORCE_BALANCE, 0.0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_integrator(fresh, FRICREG_INT_RKF45, 0.01, 1e-6, 1e-8),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run_cycles(fresh, 4), FRICREG_EWORK);
+    ck_assert_int_eq(counter(fresh, FRICREG_SIM_STAT_STEPS), 10000);
+    fricreg_sim_free(fresh);
+
+    ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_QUINN, 0.02), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_max_steps(sim, 0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run_cycles(sim, 1), FRICREG_OK);
+    int64_t cycle = counter(sim, FRICREG_SIM_STAT_STEPS);
+    ck_assert_int_gt(cycle, 100);
+    ck_assert_int_eq(fricreg_sim_set_max_steps(sim, 100), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run_cycles(sim, 1), FRICREG_EWORK);
+    ck_assert_ptr_null(strstr(fricreg_sim_errmsg(sim), "jump"));
+    ck_assert_int_eq(fricreg_sim_set_max_steps(sim, cycle), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run_cycles(sim, 1), FRICREG_OK);
+    fricreg_sim_free(sim);
+}
+END_TEST
+
 static Suite *sim_api_suite(void)
 {
     Suite *s = suite_create("sim_api");
@@ -856,6 +902,7 @@ static Suite *sim_api_suite(void)
     tcase_add_test(run, test_observer_stops_the_run_early);
     tcase_add_test(run, test_observer_cannot_change_its_own_run);
     tcase_add_test(run, test_observer_stopping_at_start_is_ok);
+    tcase_add_test(run, test_adaptive_steps_are_bounded_per_cycle);
     suite_add_tcase(s, run);
 
     TCase *params = tcase_create("get_param");

@@ -1138,6 +1138,99 @@ START_TEST(lu_steppers_refuse_an_unstable_structure)
 }
 END_TEST
 
+/* ---------------------------------------------------------------- long runs: observer, bound */
+
+struct watch {
+    fricreg_structure *s;
+    int calls, stop_at;
+    double last_t, max_force_excess;
+    int meddled; /* the status of a setter called from the observer */
+};
+
+static int watcher(void *user, double t, size_t ndof, const double u[], const double v[], size_t m,
+                   const double f[])
+{
+    struct watch *w = user;
+    (void)u, (void)v;
+    ck_assert_uint_eq(ndof, 2);
+    ck_assert_uint_eq(m, 2);
+    ck_assert_double_gt(t, w->last_t);
+    w->last_t = t;
+    for (size_t i = 0; i < m; i++) /* the bounds of make_two_storeys' callers: 0.4, 0.3 */
+        w->max_force_excess = fmax(w->max_force_excess, fabs(f[i]) - (i == 0 ? 0.4 : 0.3));
+    const double mun[2] = {5.0, 5.0};
+    w->meddled = fricreg_structure_set_bounds(w->s, 2, mun);
+    return ++w->calls == w->stop_at;
+}
+
+/* The observer sees every step of run (Newmark) and every GSL step of run_ode, at increasing
+ * times, with forces within their bounds; a setter called from it is refused (EINVAL) and
+ * changes nothing; asking to stop ends the call with FRICREG_OK at its time: run stops after
+ * 7 of 100 steps at t = 7 dt. */
+START_TEST(observer_sees_every_step_and_stops_the_run)
+{
+    const double mun[2] = {0.4, 0.3}, u0[2] = {0.05, 0.08}, v0[2] = {0.0, 0.0};
+    fricreg_structure *s = make_two_storeys(mun, FRICREG_LAW_QUINN, 1e-3);
+    ok(s, fricreg_structure_set_initial(s, 2, u0, v0));
+    struct watch w = {.s = s, .stop_at = -1};
+    ok(s, fricreg_structure_set_observer(s, watcher, &w));
+    ok(s, fricreg_structure_run(s, 0.01, 1.0));
+    ck_assert_int_eq(w.calls, 100);
+    ck_assert_int_eq(w.calls, stat(s, FRICREG_SSTAT_STEPS));
+    ck_assert_int_eq(w.meddled, FRICREG_EINVAL);
+    ck_assert_double_le(w.max_force_excess, 1e-12);
+    double f[2];
+    ok(s, fricreg_structure_get_forces(s, 2, f));
+    ck_assert_double_le(fabs(f[0]), 0.4 + 1e-12); /* the bounds were not changed */
+
+    int64_t before = stat(s, FRICREG_SSTAT_STEPS);
+    w = (struct watch){.s = s, .stop_at = 25, .last_t = 1.0};
+    ok(s, fricreg_structure_run_ode(s, FRICREG_INT_RK4, 0.001, 0.0, 0.0, 2.0));
+    ck_assert_int_eq(w.calls, 25);
+    ck_assert_int_eq(stat(s, FRICREG_SSTAT_STEPS) - before, 2 * 25); /* rk4: 2 a GSL step */
+    ck_assert_double_eq_tol(value(s, FRICREG_SVALUE_TIME), 1.0 + 25 * 0.002, 1e-12);
+
+    w = (struct watch){.s = s, .stop_at = 7, .last_t = 0.0};
+    ok(s, fricreg_structure_set_initial(s, 2, u0, v0));
+    ok(s, fricreg_structure_run(s, 0.01, 1.0));
+    ck_assert_int_eq(w.calls, 7);
+    ck_assert_double_eq_tol(value(s, FRICREG_SVALUE_TIME), 0.07, 1e-15);
+    ok(s, fricreg_structure_set_observer(s, NULL, NULL));
+    ck_assert_int_eq(fricreg_structure_set_observer(NULL, NULL, NULL), FRICREG_ENULL);
+    fricreg_structure_free(s);
+}
+END_TEST
+
+/* run_ode's adaptive steps are bounded per call (fricreg_structure_set_max_steps, 10^6 by
+ * default): Coulomb's law under rkf45 shrinks its steps without end at the first stick, and
+ * with the bound at 2000 the call returns FRICREG_EWORK, naming the law's jump, after exactly
+ * 2000 accepted steps, its state finite; law (4) at the same tolerances finishes 0.5 s in fewer
+ * than 2000; negative bounds are refused. */
+START_TEST(run_ode_adaptive_steps_are_bounded)
+{
+    const double mun[2] = {0.4, 0.3}, u0[2] = {0.05, 0.08}, v0[2] = {0.0, 0.0};
+    fricreg_structure *s = make_two_storeys(mun, FRICREG_LAW_COULOMB, 1e-3);
+    ok(s, fricreg_structure_set_initial(s, 2, u0, v0));
+    ck_assert_int_eq(fricreg_structure_set_max_steps(s, -1), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_structure_set_max_steps(NULL, 1), FRICREG_ENULL);
+    ok(s, fricreg_structure_set_max_steps(s, 2000));
+    ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_RKF45, 1e-3, 1e-6, 1e-8, 2.0),
+                     FRICREG_EWORK);
+    ck_assert_ptr_nonnull(strstr(fricreg_structure_errmsg(s), "jump at zdot = 0"));
+    ck_assert_int_eq(stat(s, FRICREG_SSTAT_STEPS), 2000);
+    double u[2], v[2];
+    ok(s, fricreg_structure_get_state(s, 2, u, v, NULL));
+    ck_assert(isfinite(u[0]) && isfinite(u[1]) && isfinite(v[0]) && isfinite(v[1]));
+    ck_assert_double_lt(value(s, FRICREG_SVALUE_TIME), 2.0);
+
+    ok(s, fricreg_structure_set_law(s, FRICREG_LAW_QUINN, 1e-2));
+    ok(s, fricreg_structure_set_initial(s, 2, u0, v0));
+    ok(s, fricreg_structure_run_ode(s, FRICREG_INT_RKF45, 1e-3, 1e-6, 1e-8, 0.5));
+    ck_assert_int_lt(stat(s, FRICREG_SSTAT_STEPS), 2000);
+    fricreg_structure_free(s);
+}
+END_TEST
+
 static Suite *structure_suite(void)
 {
     Suite *suite = suite_create("structure");
@@ -1176,6 +1269,8 @@ static Suite *structure_suite(void)
     tcase_add_test(errors, refused_setter_mid_run_changes_nothing);
     tcase_add_test(errors, divergence_is_reported);
     tcase_add_test(errors, lu_steppers_refuse_an_unstable_structure);
+    tcase_add_test(errors, observer_sees_every_step_and_stops_the_run);
+    tcase_add_test(errors, run_ode_adaptive_steps_are_bounded);
     suite_add_tcase(suite, errors);
     return suite;
 }

@@ -8,10 +8,42 @@
 !     load record, run by HHT-alpha and by GSL's RK4 through the type and through the C API
 !     (the thin layer): every number equal bit for bit, the same calls reaching the same C;
 !   - its failures: sizes checked in Fortran (FRICREG_ESIZE naming the array, nothing
-!     written), an object not created (FRICREG_ENULL), C's own refusals with C's message.
+!     written), an object not created (FRICREG_ENULL), C's own refusals with C's message;
+!   - an observer (a bind(C) function with interface fricreg_structure_observer) that stops
+!     the run after 10 of its 100 steps, and the bound on run_ode's adaptive steps.
+module step_watch
+  use, intrinsic :: iso_c_binding
+  implicit none
+  real(c_double) :: watched_t = -1.0_c_double
+  integer(c_size_t) :: watched_ndof = 0, watched_m = 0
+
+contains
+
+  !> A fricreg_structure_observer: counts its calls in the integer user points to, keeps t and
+  !> the sizes, and stops the run after 10 steps.
+  function stop_after_ten(user, t, ndof, u, v, m, f) bind(C) result(stop_run)
+    type(c_ptr), value :: user
+    real(c_double), value :: t
+    integer(c_size_t), value :: ndof
+    real(c_double), intent(in) :: u(ndof), v(ndof)
+    integer(c_size_t), value :: m
+    real(c_double), intent(in) :: f(m)
+    integer(c_int) :: stop_run
+    integer(c_int), pointer :: calls
+    call c_f_pointer(user, calls)
+    calls = calls + 1
+    watched_t = t
+    watched_ndof = ndof
+    watched_m = m
+    stop_run = merge(1_c_int, 0_c_int, calls >= 10)
+  end function stop_after_ten
+
+end module step_watch
+
 program test_structure_type
   use fricreg
   use ftest
+  use step_watch
   implicit none
   type(fricreg_structure) :: st
   real(c_double) :: M2(2, 2), K2(2, 2), J2(2, 2), f2(2), u2(2), v2(2)
@@ -19,6 +51,8 @@ program test_structure_type
   real(c_double), parameter :: a0 = 0.0731_c_double, a1 = 0.00213_c_double
   real(c_double), parameter :: dt = 0.0137_c_double, t_end = 2.385_c_double
   integer(c_int64_t) :: count
+  integer(c_int), target :: calls
+  real(c_double) :: t_now
   integer :: i
 
   ! ---- The static load: J(i, k) = d zdot_i / d u'_k, ground slip and inter-storey slip ----
@@ -41,6 +75,19 @@ program test_structure_type
   call check_close(f2(2), 0.412_c_double, 1e-13_c_double, 'f2 = -p2')
   call check_status(st%get_stat(FRICREG_SSTAT_STEPS, count), FRICREG_OK, 'get_stat')
   call check(count == 100, '100 steps')
+
+  ! ---- An observer that stops the run after 10 of its 100 steps; run_ode's bound -------------
+  calls = 0
+  call check_status(st%set_observer(stop_after_ten, c_loc(calls)), FRICREG_OK, 'set_observer')
+  call check_status(st%run(0.01_c_double, 2.0_c_double), FRICREG_OK, 'a run the observer stops')
+  call check(calls == 10, 'the observer saw 10 steps')
+  call check(watched_ndof == 2 .and. watched_m == 2, 'the observer saw 2 DOFs and 2 contacts')
+  call check_status(st%get_value(FRICREG_SVALUE_TIME, t_now), FRICREG_OK, 'get_value time')
+  call check_close(t_now, watched_t, 0.0_c_double, 'the run stopped where the observer did')
+  call check_close(t_now, 1.1_c_double, 1e-12_c_double, 'at t = 1 + 10 dt')
+  call check_status(st%set_observer(), FRICREG_OK, 'remove the observer')
+  call check_status(st%set_max_steps(-1_c_int64_t), FRICREG_EINVAL, 'set_max_steps -1')
+  call check_status(st%set_max_steps(0_c_int64_t), FRICREG_OK, 'set_max_steps 0: no bound')
 
   ! ---- A frame of three DOFs and two contacts, against the C API ----------------------------
   M = reshape([2.31_c_double, 0.17_c_double, 0.0_c_double, 0.17_c_double, 1.43_c_double, &

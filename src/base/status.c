@@ -17,6 +17,7 @@ const char *fricreg_strerror(int status)
     case FRICREG_ESTEP: return "step too large for the stability of the explicit stepper";
     case FRICREG_EDIVERGED: return "integrated state diverged (non-finite or beyond 1e100)";
     case FRICREG_EINTEGRATOR: return "ODE integrator failed";
+    case FRICREG_EWORK: return "the run reached its bound on steps before its end";
     default: return "unknown fricreg status code";
     }
 }

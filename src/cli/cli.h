@@ -25,6 +25,7 @@ struct cli_run {
     int extrapolate;        /* --extrapolate LEVELS (fricreg_sim_run_extrapolated); 0: off */
     int extrapolate_order;  /* --extrapolate-order P: the declared leading order (0: 1) */
     int extrapolate_window; /* --extrapolate-window W (fricreg_sim_run_extrapolated_window) */
+    int max_steps;          /* --max-steps N (fricreg_sim_set_max_steps); -1: the default */
     struct {
         int param;
         double value;

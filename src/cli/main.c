@@ -22,7 +22,7 @@ static void usage(FILE *out)
           "           --rayleigh A0,A1] --contacts J.mtx --mun MUN.txt [--influence R.mtx]\n"
           "           [--ground-accel FILE] [--law L] [--eps E] --integrator newmark|hht|\n"
           "           central|<GSL stepper> [--alpha A] [--rtol R --atol A] --dt DT --t-end T\n"
-          "           [--output summary|trajectory]   (docs/structural.md)\n"
+          "           [--max-steps N] [--output summary|trajectory]   (docs/structural.md)\n"
           "       fricreg-sim hold [--mu --mass --g --theta-deg --phi-deg --dt --eps --steps]\n"
           "           [--tilt-rate DEG_PER_S]   block on an incline: creep (m/s), break-away\n"
           "       fricreg-sim belt [--fs --fk --vs --delta --v-belt --dt --eps --cycles --ref-dt]\n"
@@ -49,7 +49,9 @@ static void usage(FILE *out)
           "  --extrapolate-order P   the leading order in eps where the levels show none\n"
           "                   (2 levels), 0 … 4                                     [0: 1]\n"
           "  --extrapolate-window W  the finer levels over the last W cycles only, from\n"
-          "                   the state of the first level there (0: the whole run)  [0]\n",
+          "                   the state of the first level there (0: the whole run)  [0]\n"
+          "  --max-steps N    adaptive steps a forcing cycle may take (0: no bound)\n"
+          "                   [10^4 for coulomb, force-balance, karnopp; else 10^6]\n",
           out);
     cli_print_param_defaults(out);
     fputs("            --partition paper|consistent  coupled contacts' near-stick law "

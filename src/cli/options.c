@@ -122,7 +122,8 @@ static size_t run_table(struct cli_run *run, int exact, int *cycles_given,
         {"--eps", CLI_POSITIVE, .slot = &run->eps},
         {"--extrapolate", CLI_WHOLE, .slot = &run->extrapolate, .lo = 2, .hi = 8},
         {"--extrapolate-order", CLI_WHOLE, .slot = &run->extrapolate_order, .lo = 0, .hi = 4},
-        {"--extrapolate-window", CLI_WHOLE, .slot = &run->extrapolate_window, .lo = 0, .hi = 1e7}};
+        {"--extrapolate-window", CLI_WHOLE, .slot = &run->extrapolate_window, .lo = 0, .hi = 1e7},
+        {"--max-steps", CLI_WHOLE, .slot = &run->max_steps, .lo = 0, .hi = 1e9}};
     const struct cli_option run_length_and_output[] = {
         {"--t-end", CLI_POSITIVE, .slot = &run->t_end},
         {"--cycles", CLI_WHOLE, .slot = &run->cycles, .lo = 1, .hi = 1e7, .given = cycles_given},
@@ -169,7 +170,8 @@ static int parse_run(int system, int exact, int argc, char **argv, struct cli_ru
                             .dt = 0.01,
                             .cycles = 4,
                             .output = CLI_SUMMARY,
-                            .partition = FRICREG_PARTITION_CONSISTENT};
+                            .partition = FRICREG_PARTITION_CONSISTENT,
+                            .max_steps = -1};
     int cycles_given = 0;
     struct cli_option table[MAX_ROWS];
     size_t n = run_table(run, exact, &cycles_given, table);

@@ -31,6 +31,8 @@ static int run_failed(fricreg_sim *sim, int status, const struct cli_run *run)
     const char *option = "";
     if (status == FRICREG_ESTEP)
         option = refused_at_every_dt(run) ? "--eps: " : "--dt: ";
+    else if (status == FRICREG_EWORK) /* a run failure, named by the option that bounds it */
+        option = "--max-steps: ";
     else if (status == FRICREG_EINVAL)
         option = run->t_end > 0.0 ? "--t-end: " : "--cycles: ";
     fprintf(stderr, "fricreg-sim: %s%s\n", option, fricreg_sim_errmsg(sim));
@@ -50,6 +52,8 @@ fricreg_sim *cli_make_sim(const struct cli_run *run)
         status = fricreg_sim_set_integrator(sim, run->integrator, run->dt, run->rtol, run->atol);
     if (status == FRICREG_OK)
         status = fricreg_sim_set_partition(sim, run->partition);
+    if (status == FRICREG_OK && run->max_steps >= 0)
+        status = fricreg_sim_set_max_steps(sim, run->max_steps);
     for (int k = 0; status == FRICREG_OK && k < run->nparams; k++)
         status = fricreg_sim_set_param(sim, run->params[k].param, run->params[k].value);
     if (status != FRICREG_OK) {

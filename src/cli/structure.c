@@ -115,7 +115,8 @@ int cli_parse_structure(int argc, char **argv, struct structure_options *o)
 {
     *o = (struct structure_options){.law = FRICREG_LAW_QUINN,
                                     .alpha = -0.05,
-                                    .output = CLI_SUMMARY};
+                                    .output = CLI_SUMMARY,
+                                    .max_steps = -1};
     const struct cli_option opts[] = {
         {"--mass", CLI_FILE, .slot = &o->mass},
         {"--stiffness", CLI_FILE, .slot = &o->stiffness},
@@ -133,7 +134,8 @@ int cli_parse_structure(int argc, char **argv, struct structure_options *o)
         {"--t-end", CLI_POSITIVE, .slot = &o->t_end},
         {"--rtol", CLI_NONNEGATIVE, .slot = &o->rtol},
         {"--atol", CLI_NONNEGATIVE, .slot = &o->atol},
-        {"--alpha", CLI_NUMBER, .slot = &o->alpha, .given = &o->alpha_given}};
+        {"--alpha", CLI_NUMBER, .slot = &o->alpha, .given = &o->alpha_given},
+        {"--max-steps", CLI_WHOLE, .slot = &o->max_steps, .lo = 0, .hi = 1e9}};
     int status = cli_parse_options(argc, argv, opts, sizeof opts / sizeof opts[0], "structure");
     return status != 0 ? status : check_options(o);
 }
@@ -377,16 +379,31 @@ static double svalue(const fricreg_structure *s, int which)
     return v;
 }
 
+/* Bounds the next run_ode call at what is left of --max-steps for the whole run (at least one
+ * step, so that a spent budget ends in the library's FRICREG_EWORK and its message): the
+ * library's bound is per call, and the run makes one call per sample. */
+static void spend_steps(fricreg_structure *s, const struct structure_options *o, int64_t start)
+{
+    if (o->scheme != SCHEME_GSL || !(o->rtol > 0.0 || o->atol > 0.0) || o->max_steps <= 0)
+        return; /* fixed steps; the library's own bound per call (-1); no bound (0) */
+    int64_t taken = 0;
+    fricreg_structure_get_stat(s, FRICREG_SSTAT_STEPS, &taken);
+    int64_t left = (int64_t)o->max_steps - (taken - start);
+    fricreg_structure_set_max_steps(s, left > 1 ? left : 1);
+}
+
 /* Steps of dt to t_end, the last one shortened (as fricreg_structure_run counts them), the
  * state observed after each; GSL's steppers are run from sample to sample (adaptive ones
- * restart at each with dt as their first step). */
+ * restart at each with dt as their first step, within --max-steps over the whole run). */
 static int advance(fricreg_structure *s, const struct structure_options *o,
                    const struct structure_input *in, struct structure_run *run)
 {
     double steps = ceil(o->t_end / o->dt * (1.0 - 1e-12)); /* <= 2^31: check_options */
-    int64_t nsteps = steps < 1.0 ? 1 : (int64_t)steps;
+    int64_t nsteps = steps < 1.0 ? 1 : (int64_t)steps, start = 0;
+    fricreg_structure_get_stat(s, FRICREG_SSTAT_STEPS, &start);
     observe(s, in, run);
     for (int64_t k = 1; k <= nsteps; k++) {
+        spend_steps(s, o, start);
         double t1 = k == nsteps ? o->t_end : (double)k * o->dt;
         /* One step of exactly t1 - t: k dt - (k - 1) dt may exceed dt by a rounding, which
          * would make run() split it. */
@@ -467,6 +484,11 @@ static int run_failed(const fricreg_structure *s, int status)
     if (status == FRICREG_ESTEP) {
         fprintf(stderr, "fricreg-sim: --dt: %s\n", fricreg_structure_errmsg(s));
         return CLI_EXIT_USAGE;
+    }
+    if (status == FRICREG_EWORK) { /* --max-steps bounds the whole run, not one call */
+        fprintf(stderr, "fricreg-sim: --max-steps: the run's adaptive steps passed the bound: %s\n",
+                fricreg_structure_errmsg(s));
+        return CLI_EXIT_RUN;
     }
     fprintf(stderr, "fricreg-sim: structure: the run failed after t = %g: %s\n", t,
             fricreg_structure_errmsg(s));

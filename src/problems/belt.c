@@ -76,16 +76,25 @@ struct reference_run {
     double steps;
 };
 
+/* The slip of a stick-slip cycle lasts about one natural period 2 pi (x'' + x = const while
+ * the force is near fk), its reversals included: slip that has not stuck after
+ * SLIP_PERIODS_MAX periods belongs to no stick-slip cycle (a belt so fast that x' meets V only
+ * tangentially, --v-belt 1e3, slid on, phase after phase, until the run's time bound: 7e7
+ * steps, 28 s), and is refused as such. */
+#define SLIP_PERIODS_MAX 10.0
+#define TWO_PI 6.283185307179586
+
 /* One slip phase from (x, V) at t in direction s, to its end x' = V located inside the step;
- * observed if `observe`. Leaves run->x, run->t at the end. */
-static int slip_phase(struct reference_run *run, double s, prob_observer observe, void *user)
+ * observed if `observe`. Leaves run->x, run->t at the end. FRICREG_EDIVERGED past `t_max`. */
+static int slip_phase(struct reference_run *run, double s, double t_max, prob_observer observe,
+                      void *user)
 {
     const double V = run->p->v_belt, h = 2.0 * run->rk.dt;
     double y[2] = {run->x, V}, t0 = run->t;
     int status = FRICREG_OK, none = FRICREG_OK;
     run->sl.s = s;
     for (double k = 0.0; status == FRICREG_OK; k += 1.0) {
-        if (t0 + k * h > time_bound(run->p))
+        if (t0 + k * h > t_max)
             return FRICREG_EDIVERGED;
         double a[3] = {y[0], y[1], 0.0}, b[3], d[2];
         slip_rhs(0.0, y, d, &run->sl);
@@ -132,11 +141,12 @@ static int reference_cycle(struct reference_run *run, int last, prob_observer ob
     if (status == FRICREG_OK)
         status = emit(obs, user, run->t, run->x, p->v_belt);
     /* at break-away f_eq = x = fs: the force falls below it, so x' < V: s = -1 */
+    double t_max = fmin(time_bound(p), run->t + SLIP_PERIODS_MAX * TWO_PI);
     for (double s = -1.0; status == FRICREG_OK; s = -s) {
-        status = slip_phase(run, s, obs, user);
+        status = slip_phase(run, s, t_max, obs, user);
         if (status == FRICREG_OK && fabs(run->x) <= p->fs)
             break; /* sticks */
-        if (run->t > time_bound(p))
+        if (run->t > t_max)
             return FRICREG_EDIVERGED;
     }
     return status;

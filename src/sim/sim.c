@@ -81,6 +81,7 @@ int fricreg_sim_create(int system, fricreg_sim **out)
     sim->eps_set = 0.0;
     sim->integrator = FRICREG_INT_RK4;
     sim->dt = 0.01;
+    sim->max_steps = -1; /* the law's default (fr_law_max_adaptive_steps) */
     *out = sim;
     return FRICREG_OK;
 }
@@ -197,6 +198,20 @@ int fricreg_sim_set_integrator(fricreg_sim *sim, int integrator, double dt, doub
     sim->dt = dt;
     sim->rtol = rtol;
     sim->atol = atol;
+    return FRICREG_OK;
+}
+
+int fricreg_sim_set_max_steps(fricreg_sim *sim, int64_t max_steps)
+{
+    if (sim == NULL)
+        return FRICREG_ENULL;
+    if (sim->running)
+        return refuse_during_run(sim, "set_max_steps");
+    if (max_steps < 0)
+        return fr_fail(sim, FRICREG_EINVAL,
+                       "set_max_steps: max_steps = %lld must be >= 0 (0: no bound)",
+                       (long long)max_steps);
+    sim->max_steps = max_steps;
     return FRICREG_OK;
 }
 
@@ -456,11 +471,30 @@ static int apply_fixed_step(fricreg_sim *sim, gsl_odeiv2_driver *d,
  * at t = 0.295 to the cycle's end at 12.57 over a whole slip phase (oscillator a = 2,
  * omega = 0.5, x0 = 0.385, v0 = -0.217, eps 1e-6: D = 0 instead of 10.4). Capped, the step
  * that crosses a break-away lands in the slip phase, where the estimate rejects it. */
+/* The refusal of a cycle whose adaptive steps passed the bound (fricreg_sim_set_max_steps). */
+static int too_much_work(fricreg_sim *sim, const struct fr_integrator *integ, int64_t bound)
+{
+    if (fr_law_jumps(sim->law))
+        return fr_fail(sim, FRICREG_EWORK,
+                       "run: more than %lld adaptive steps (%s) in the cycle to t = %.6g: laws "
+                       "(1), (2) and Karnopp jump at zdot = 0, where adaptive steps shrink "
+                       "without end; take law (4) or fixed steps (fricreg_sim_set_max_steps)",
+                       (long long)bound, integ->name, sim->t);
+    return fr_fail(sim, FRICREG_EWORK,
+                   "run: more than %lld adaptive steps (%s) in the cycle to t = %.6g; "
+                   "fricreg_sim_set_max_steps raises the bound",
+                   (long long)bound, integ->name, sim->t);
+}
+
 static int advance(fricreg_sim *sim, gsl_odeiv2_driver *d, const struct fr_integrator *integ,
                    double t_target, double *h)
 {
     double gsl_dt = sim->dt * integ->substeps;
+    int64_t cycle_steps = 0; /* adaptive steps accepted in this cycle */
+    int64_t bound = sim->max_steps >= 0 ? sim->max_steps : fr_law_max_adaptive_steps(sim->law);
     while (sim->t < t_target) {
+        if (adaptive(sim) && bound > 0 && ++cycle_steps > bound)
+            return too_much_work(sim, integ, bound);
         double t_before = sim->t;
         int gsl_status;
         if (adaptive(sim)) {

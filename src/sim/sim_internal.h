@@ -25,6 +25,7 @@ struct fricreg_sim {
     double eps_set; /* 0: the paper's rule */
     int integrator;
     double dt, rtol, atol;
+    int64_t max_steps; /* adaptive steps of one forcing cycle (0: no bound; -1: the law's) */
     fricreg_sim_observer observer;
     void *observer_user;
 

@@ -119,6 +119,8 @@ int fricreg_structure_step(fricreg_structure *s, double dt)
 {
     if (s == NULL)
         return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, "step");
     int status = check_dt(s, "step", dt);
     if (status != FRICREG_OK)
         return status;
@@ -132,6 +134,8 @@ int fricreg_structure_run(fricreg_structure *s, double dt, double t_end)
 {
     if (s == NULL)
         return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, "run");
     int status = check_dt(s, "run", dt);
     if (status != FRICREG_OK)
         return status;
@@ -147,13 +151,23 @@ int fricreg_structure_run(fricreg_structure *s, double dt, double t_end)
     if (steps > MAX_RUN_STEPS)
         return fr_fail(s, FRICREG_EINVAL, "run: %g steps of dt = %g exceed 2^31", steps, dt);
     int64_t nsteps = steps < 1.0 ? 1 : (int64_t)steps;
-    for (int64_t k = 1; k <= nsteps; k++) {
+    s->running = 1;
+    for (int64_t k = 1; k <= nsteps && status == FRICREG_OK; k++) {
         double t1 = k == nsteps ? t_end : t0 + (double)k * dt;
         if (!(t1 > s->t))
-            return fr_fail(s, FRICREG_EINVAL, "run: dt = %g is lost against t = %g", dt, s->t);
-        status = step_to(s, t1);
-        if (status != FRICREG_OK)
-            return status;
+            status = fr_fail(s, FRICREG_EINVAL, "run: dt = %g is lost against t = %g", dt, s->t);
+        else
+            status = step_to(s, t1);
+        if (status == FRICREG_OK &&
+            fr_structure_observe(s, s->t, s->u->data, s->v->data, s->f->data))
+            break; /* the observer asked to stop: not an error */
     }
-    return FRICREG_OK;
+    s->running = 0;
+    return status;
+}
+
+int fr_structure_observe(fricreg_structure *s, double t, const double u[], const double v[],
+                         const double f[])
+{
+    return s->observer != NULL && s->observer(s->observer_user, t, s->n, u, v, s->m, f) != 0;
 }

@@ -15,6 +15,7 @@
 #include "structure_internal.h"
 
 #define MAX_SIZE ((size_t)1 << 15)
+
 #define SYMMETRY_RTOL 1e-12
 
 /* ---- Life cycle --------------------------------------------------------------------------- */
@@ -105,8 +106,40 @@ int fricreg_structure_create(size_t ndof, size_t m, fricreg_structure **out)
     s->gamma = 0.5;
     s->newton_tol = 1e-10;
     s->newton_max = 50;
+    s->max_steps = -1; /* the law's default (fr_law_max_adaptive_steps) */
     s->fresh = 1;
     *out = s;
+    return FRICREG_OK;
+}
+
+int fr_structure_busy(fricreg_structure *s, const char *who)
+{
+    return fr_fail(s, FRICREG_EINVAL, "%s: not allowed during a run (called from the observer)",
+                   who);
+}
+
+int fricreg_structure_set_observer(fricreg_structure *s, fricreg_structure_observer fn, void *user)
+{
+    if (s == NULL)
+        return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, "set_observer");
+    s->observer = fn;
+    s->observer_user = user;
+    return FRICREG_OK;
+}
+
+int fricreg_structure_set_max_steps(fricreg_structure *s, int64_t max_steps)
+{
+    if (s == NULL)
+        return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, "set_max_steps");
+    if (max_steps < 0)
+        return fr_fail(s, FRICREG_EINVAL,
+                       "set_max_steps: max_steps = %lld must be >= 0 (0: no bound)",
+                       (long long)max_steps);
+    s->max_steps = max_steps;
     return FRICREG_OK;
 }
 
@@ -207,6 +240,8 @@ int fricreg_structure_set_mass(fricreg_structure *s, size_t ndof, const double M
 {
     if (s == NULL)
         return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, "set_mass");
     int status = check_square(s, "set_mass", ndof, M);
     if (status != FRICREG_OK)
         return status;
@@ -231,6 +266,8 @@ int fricreg_structure_set_stiffness(fricreg_structure *s, size_t ndof, const dou
 {
     if (s == NULL)
         return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, "set_stiffness");
     int status = check_square(s, "set_stiffness", ndof, K);
     if (status != FRICREG_OK)
         return status;
@@ -243,6 +280,8 @@ int fricreg_structure_set_damping(fricreg_structure *s, size_t ndof, const doubl
 {
     if (s == NULL)
         return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, "set_damping");
     int status = check_square(s, "set_damping", ndof, C);
     if (status != FRICREG_OK)
         return status;
@@ -256,6 +295,8 @@ int fricreg_structure_set_rayleigh(fricreg_structure *s, double a0, double a1)
 {
     if (s == NULL)
         return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, "set_rayleigh");
     if (!isfinite(a0) || !isfinite(a1))
         return fr_fail(s, FRICREG_ENONFINITE, "set_rayleigh: a0 = %g or a1 = %g is not finite", a0,
                        a1);
@@ -272,6 +313,8 @@ int fricreg_structure_set_contacts(fricreg_structure *s, size_t m, size_t ndof, 
 {
     if (s == NULL)
         return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, "set_contacts");
     if (J == NULL)
         return fr_fail(s, FRICREG_ENULL, "set_contacts: J is NULL");
     if (m != s->m || ndof != s->n)
@@ -309,6 +352,8 @@ int fricreg_structure_set_bounds(fricreg_structure *s, size_t m, const double mu
 {
     if (s == NULL)
         return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, "set_bounds");
     int status = fricreg_ctx_set_bounds(s->ctx, m, mun);
     if (status != FRICREG_OK)
         return ctx_failed(s, "set_bounds", status);
@@ -321,6 +366,8 @@ int fricreg_structure_set_law(fricreg_structure *s, int law, double eps)
 {
     if (s == NULL)
         return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, "set_law");
     int status = fricreg_ctx_set_law(s->ctx, law, eps);
     if (status != FRICREG_OK)
         return ctx_failed(s, "set_law", status);
@@ -345,6 +392,8 @@ int fricreg_structure_set_influence(fricreg_structure *s, size_t ndof, const dou
 {
     if (s == NULL)
         return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, "set_influence");
     int status = check_vector(s, "set_influence", ndof, r);
     if (status != FRICREG_OK)
         return status;
@@ -388,6 +437,8 @@ int fricreg_structure_set_ground_accel(fricreg_structure *s, double t0, double d
 {
     if (s == NULL)
         return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, "set_ground_accel");
     /* The step's start keeps the load it began with (a holds the equation there): the
      * record is read at step ends only, so a caller may feed it step by step. */
     return set_record(s, "set_ground_accel", &s->ground, t0, dt_rec, n, ag);
@@ -398,6 +449,8 @@ int fricreg_structure_set_load(fricreg_structure *s, size_t ndof, const double p
 {
     if (s == NULL)
         return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, "set_load");
     int status = check_vector(s, "set_load", ndof, p);
     if (status != FRICREG_OK)
         return status;
@@ -413,6 +466,8 @@ int fricreg_structure_set_initial(fricreg_structure *s, size_t ndof, const doubl
 {
     if (s == NULL)
         return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, "set_initial");
     int status = check_vector(s, "set_initial", ndof, u0);
     if (status == FRICREG_OK)
         status = check_vector(s, "set_initial", ndof, v0);
@@ -434,6 +489,8 @@ int fricreg_structure_set_newmark(fricreg_structure *s, double beta, double gamm
 {
     if (s == NULL)
         return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, "set_newmark");
     if (!isfinite(beta) || !isfinite(gamma))
         return fr_fail(s, FRICREG_ENONFINITE,
                        "set_newmark: beta = %g or gamma = %g is not "
@@ -456,6 +513,8 @@ int fricreg_structure_set_hht(fricreg_structure *s, double alpha)
 {
     if (s == NULL)
         return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, "set_hht");
     if (!isfinite(alpha))
         return fr_fail(s, FRICREG_ENONFINITE, "set_hht: alpha is not finite");
     if (!(alpha >= -1.0 / 3.0 && alpha <= 0.0))
@@ -472,6 +531,8 @@ int fricreg_structure_set_central_difference(fricreg_structure *s)
 {
     if (s == NULL)
         return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, "set_central_difference");
     s->scheme = FR_SCHEME_CENTRAL;
     return FRICREG_OK;
 }
@@ -480,6 +541,8 @@ int fricreg_structure_set_newton(fricreg_structure *s, double tol, int max_iter)
 {
     if (s == NULL)
         return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, "set_newton");
     if (!isfinite(tol))
         return fr_fail(s, FRICREG_ENONFINITE, "set_newton: tol is not finite");
     if (!(tol > 0.0 && tol < 1.0) || max_iter < 1 || max_iter > 1000)

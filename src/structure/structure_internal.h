@@ -51,6 +51,13 @@ struct fricreg_structure {
     double newton_tol;
     int newton_max;
 
+    /* Long runs: the observer, the bound on a run_ode call's adaptive steps (0: none), and
+     * whether run or run_ode is stepping (the observer may then only read). */
+    fricreg_structure_observer observer;
+    void *observer_user;
+    int64_t max_steps; /* -1: the law's default (fr_law_max_adaptive_steps) */
+    int running;
+
     /* Derived at the first step after a model change (fr_structure_prepare). */
     int prepared;       /* M's factor, G, W and C are current */
     gsl_matrix *L;      /* n x n: Cholesky factor of M */
@@ -97,11 +104,16 @@ struct fricreg_structure {
 
 /* structure.c */
 int fr_structure_prepare(fricreg_structure *s);
+/* The refusal of a call `who` made from the observer during a run: FRICREG_EINVAL, recorded. */
+int fr_structure_busy(fricreg_structure *s, const char *who);
 double fr_record_at(const struct fr_record *rec, double t);
 void fr_structure_effective_load(const fricreg_structure *s, double t, gsl_vector *ptil);
 
 /* step.c */
 double fr_norm_inf(const gsl_vector *x);
+/* The observer (if any) at time t with u[n], v[n], f[m]: 1 if it asks to stop. */
+int fr_structure_observe(fricreg_structure *s, double t, const double u[], const double v[],
+                         const double f[]);
 int fr_structure_equilibrium(fricreg_structure *s);
 /* a_free = G w, zdot = J v, f from the context, for the net non-friction force w. */
 int fr_structure_friction(fricreg_structure *s, const gsl_vector *w, const gsl_vector *v,

@@ -16,6 +16,8 @@
 #include <gsl/gsl_linalg.h>
 #include <gsl/gsl_odeiv2.h>
 
+#include "ctx/ctx_driver.h"
+#include "law/law.h"
 #include "ode/fd_jacobian.h"
 #include "ode/integrator.h"
 #include "ode/ode_driver.h"
@@ -89,14 +91,35 @@ static int beyond(const double y[], size_t dim)
     return 0;
 }
 
+/* The refusal of a call whose adaptive steps passed the bound (set_max_steps). */
+static int too_much_work(fricreg_structure *s, const struct fr_integrator *integ, double t,
+                         int64_t bound)
+{
+    if (fr_law_jumps(fr_ctx_law(s->ctx)))
+        return fr_fail(s, FRICREG_EWORK,
+                       "run_ode: more than %lld adaptive steps (%s) by t = %.6g: laws (1), (2) "
+                       "and Karnopp jump at zdot = 0, where adaptive steps shrink without end; "
+                       "take law (4) or Newmark (fricreg_structure_set_max_steps)",
+                       (long long)bound, integ->name, t);
+    return fr_fail(s, FRICREG_EWORK,
+                   "run_ode: more than %lld adaptive steps (%s) by t = %.6g; "
+                   "fricreg_structure_set_max_steps raises the bound",
+                   (long long)bound, integ->name, t);
+}
+
 /* Integrates y from s->t to t_end; on success or failure s->t is where y is. */
 static int integrate(fricreg_structure *s, struct ode_run *run, gsl_odeiv2_driver *d,
                      const struct fr_integrator *integ, int adaptive, double dt, double t_end,
                      double y[])
 {
     double gsl_dt = dt * integ->substeps, h = gsl_dt, t = s->t;
+    int64_t steps = 0; /* adaptive steps accepted by this call */
+    int64_t bound = s->max_steps >= 0 ? s->max_steps
+                                      : fr_law_max_adaptive_steps(fr_ctx_law(s->ctx));
     while (t < t_end) {
         int status;
+        if (adaptive && bound > 0 && ++steps > bound)
+            return too_much_work(s, integ, t, bound);
         if (adaptive) {
             status = gsl_odeiv2_evolve_apply(d->e, d->c, d->s, d->sys, &t, t_end, &h, y);
         } else {
@@ -133,6 +156,9 @@ static int integrate(fricreg_structure *s, struct ode_run *run, gsl_odeiv2_drive
         }
         s->t = t;
         s->stats[FRICREG_SSTAT_STEPS] += adaptive ? 1 : integ->substeps;
+        if (s->observer != NULL && rhs(t, y, run->jac_work, run) == GSL_SUCCESS &&
+            fr_structure_observe(s, t, y, y + s->n, s->f1->data))
+            break; /* the observer asked to stop (its forces at (t, y)): not an error */
     }
     return FRICREG_OK;
 }
@@ -142,6 +168,8 @@ int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, d
 {
     if (s == NULL)
         return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, "run_ode");
     const struct fr_integrator *integ = fr_integrator_find(integrator);
     if (integ == NULL)
         return fr_fail(s, FRICREG_EINVAL, "run_ode: unknown integrator %d", integrator);
@@ -200,8 +228,11 @@ int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, d
                                                adaptive ? rtol : 0.0);
     if (d == NULL)
         status = fr_fail(s, FRICREG_ENOMEM, "run_ode: GSL driver allocation failed");
-    else
+    else {
+        s->running = 1;
         status = integrate(s, &run, d, integ, adaptive, dt, t_end, y);
+        s->running = 0;
+    }
     if (d)
         gsl_odeiv2_driver_free(d);
     free(y);
