@@ -165,6 +165,10 @@ expect_output '"dissipation_per_contact": \[9\.4396613422[67][0-9]*\]' $block --
 expect_output '"peak_displacement": \[1\.95438123028[34][0-9]*\]' $block --integrator hht --alpha -0.1 --dt 0.01
 expect_output '"x": \[-1\.95438123028[34][0-9]*\]' structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_const.txt --eps 0.01 --t-end 2.1 --integrator rk4 --dt 0.005
 expect_output '"x": \[-1\.95438123028[34][0-9]*\]' structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_const.txt --eps 0.01 --t-end 2.1 --integrator central --dt 0.002
+# A record's subnormal sample (a ground acceleration of 1e-310 at t = 5, after the run's end)
+# is the number written, as on the command line, not "not finite": the same run.
+printf '# t a_g\n0 2.41\n2.5 2.41\n5 1e-310\n' >"$d/ag_subnormal.txt"
+expect_output '"x": \[-1\.95438123028[34][0-9]*\]' structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_subnormal.txt --eps 1e-6 --t-end 2.1 --integrator newmark --dt 0.01
 # Its energy balance: input m A |u| = 14.9308862850 J, kinetic m (0.886341 T)^2/2 = 5.49122494 J.
 expect_output '"input": 14\.930886285[0-9]*, "kinetic": 5\.4912249[0-9]*, "strain": 0, "viscous": 0, "friction": 9\.43966134[0-9]*, "residual": -?[0-9.]+e-1[3-9]\}, "newton_iterations": \{"mean": [0-9.]+, "max": 1\}, "newton_failures": 0' $block --integrator newmark --dt 0.01
 # Comment and blank lines anywhere, CRLF line ends and a trailing blank line (which GSL's own

@@ -48,12 +48,14 @@ static int blank(const char *s)
     return s[strspn(s, " \t\r\n")] == '\0';
 }
 
-/* A finite double as the whole token starting at text; *end after it. */
+/* A finite double as the whole token starting at text; *end after it. strtod sets ERANGE on
+ * underflow too (a subnormal time or entry, 1e-310), returning the number meant: kept, as the
+ * options' parser keeps it (cli_parse_number); only an overflow (+-HUGE_VAL) is refused. */
 static int read_number(const char *text, char **end, double *value)
 {
     errno = 0;
     *value = strtod(text, end);
-    return *end != text && errno != ERANGE && isfinite(*value) &&
+    return *end != text && !(errno == ERANGE && fabs(*value) == HUGE_VAL) && isfinite(*value) &&
            (**end == '\0' || strchr(" \t\r\n,", **end) != NULL);
 }
 
