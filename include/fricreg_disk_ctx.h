@@ -99,8 +99,9 @@ FRICREG_API int fricreg_disk_ctx_set_bounds(fricreg_disk_ctx *ctx, size_t m, con
  *  whose inverse, the scale of its tangent, overflows; as fricreg_ctx_set_coupling_dense's
  *  W_ii). Each contact is then solved exactly, once, with no iteration.
  *
- *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_ENOTSYM;
- *  FRICREG_ENOTPSD (a block not positive definite); FRICREG_ENOMEM. */
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_EINVAL (an
+ *  entry beyond 1e250 in magnitude); FRICREG_ENOTSYM; FRICREG_ENOTPSD (a block not positive
+ *  definite); FRICREG_ENOMEM. */
 FRICREG_API int fricreg_disk_ctx_set_coupling_blocks(fricreg_disk_ctx *ctx, size_t m,
                                                      const double w[]);
 
@@ -113,7 +114,8 @@ FRICREG_API int fricreg_disk_ctx_set_coupling_blocks(fricreg_disk_ctx *ctx, size
  *  evaluation that meets it may return FRICREG_ESINGULAR.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE (also if (2m)^2 overflows);
- *  FRICREG_ENONFINITE; FRICREG_ENOTSYM; FRICREG_ENOTPSD; FRICREG_ENOMEM. */
+ *  FRICREG_ENONFINITE; FRICREG_EINVAL (an entry beyond 1e250 in magnitude); FRICREG_ENOTSYM;
+ *  FRICREG_ENOTPSD; FRICREG_ENOMEM. */
 FRICREG_API int fricreg_disk_ctx_set_coupling_dense(fricreg_disk_ctx *ctx, size_t m,
                                                     const double W[]);
 

@@ -728,6 +728,22 @@ START_TEST(test_subnormal_velocity_slides)
 }
 END_TEST
 
+/* The header's range: every number at most 1e250 in magnitude. The coupling setters took a
+ * block or a dense W with entries beyond it (EINVAL now, the context unchanged). */
+START_TEST(test_coupling_beyond_1e250_refused)
+{
+    fricreg_disk_ctx *ctx = NULL;
+    ck_assert_int_eq(fricreg_disk_ctx_create(1, &ctx), FRICREG_OK);
+    const double big[4] = {2e250, 0.0, 0.0, 2e250}, edge[4] = {1e250, 0.0, 0.0, 1e250};
+    ck_assert_int_eq(fricreg_disk_ctx_set_coupling_blocks(ctx, 1, big), FRICREG_EINVAL);
+    ck_assert_ptr_nonnull(strstr(fricreg_disk_ctx_errmsg(ctx), "beyond 1e+250"));
+    ck_assert_int_eq(fricreg_disk_ctx_set_coupling_dense(ctx, 1, big), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_disk_ctx_set_coupling_blocks(ctx, 1, edge), FRICREG_OK);
+    ck_assert_int_eq(fricreg_disk_ctx_set_coupling_dense(ctx, 1, edge), FRICREG_OK);
+    fricreg_disk_ctx_free(ctx);
+}
+END_TEST
+
 static Suite *disk_ctx_suite(void)
 {
     Suite *s = suite_create("disk_ctx");
@@ -751,6 +767,7 @@ static Suite *disk_ctx_suite(void)
     tcase_add_test(tc, test_tangent_overflow_refused);
     tcase_add_test(tc, test_tiny_bound_isotropic);
     tcase_add_test(tc, test_subnormal_velocity_slides);
+    tcase_add_test(tc, test_coupling_beyond_1e250_refused);
     suite_add_tcase(s, tc);
     return s;
 }

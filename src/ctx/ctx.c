@@ -143,7 +143,7 @@ static int check_array(fricreg_ctx *ctx, const char *what, size_t m, size_t n, c
 {
     if (ctx == NULL)
         return FRICREG_ENULL;
-    return fr_check_contact_array(&ctx->err, what, m, ctx->m, n, a);
+    return fr_check_contact_array(&ctx->err, what, m, ctx->m, n, a, INFINITY);
 }
 
 int fricreg_ctx_set_bounds(fricreg_ctx *ctx, size_t m, const double mun[])

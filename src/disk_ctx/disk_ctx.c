@@ -161,7 +161,7 @@ static int check_array(fricreg_disk_ctx *ctx, const char *what, size_t m, size_t
 {
     if (ctx == NULL)
         return FRICREG_ENULL;
-    return fr_check_contact_array(&ctx->err, what, m, ctx->m, n, a);
+    return fr_check_contact_array(&ctx->err, what, m, ctx->m, n, a, FR_DISK_MAX);
 }
 
 int fricreg_disk_ctx_set_bounds(fricreg_disk_ctx *ctx, size_t m, const double mun[])

@@ -9,7 +9,7 @@
 #include "plausible.h"
 
 int fr_check_contact_array(struct fr_error *err, const char *what, size_t m, size_t ctx_m, size_t n,
-                           const double a[])
+                           const double a[], double max)
 {
     if (m != ctx_m)
         return fr_error_set(err, FRICREG_ESIZE, "%s: m = %zu, context has %zu contacts", what, m,
@@ -19,12 +19,16 @@ int fr_check_contact_array(struct fr_error *err, const char *what, size_t m, siz
     for (size_t k = 0; k < n; k++)
         if (!isfinite(a[k]))
             return fr_error_set(err, FRICREG_ENONFINITE, "%s: element %zu is not finite", what, k);
+    for (size_t k = 0; k < n; k++)
+        if (fabs(a[k]) > max)
+            return fr_error_set(err, FRICREG_EINVAL, "%s: element %zu = %g is beyond %g", what, k,
+                                a[k], max);
     return FRICREG_OK;
 }
 
 int fr_check_bounds(struct fr_error *err, size_t m, size_t ctx_m, const double mun[], double max)
 {
-    int status = fr_check_contact_array(err, "set_bounds", m, ctx_m, m, mun);
+    int status = fr_check_contact_array(err, "set_bounds", m, ctx_m, m, mun, INFINITY);
     if (status != FRICREG_OK)
         return status;
     for (size_t i = 0; i < m; i++) {

@@ -10,10 +10,11 @@
 
 /* An array a[n] given for m contacts (n = m, 2m, 4m, m^2 or (2m)^2 numbers) of a context of
  * ctx_m: FRICREG_ESIZE unless m == ctx_m, FRICREG_ENULL if a is NULL, FRICREG_ENONFINITE
- * naming the first element that is not finite, else FRICREG_OK. A failure is recorded in err,
- * led by `what` (the setter's name). */
+ * naming the first element that is not finite, FRICREG_EINVAL naming the first beyond max in
+ * magnitude (INFINITY for the 1-D context, FR_DISK_MAX for the 2-D one: its kernels' range),
+ * else FRICREG_OK. A failure is recorded in err, led by `what` (the setter's name). */
 int fr_check_contact_array(struct fr_error *err, const char *what, size_t m, size_t ctx_m, size_t n,
-                           const double a[]);
+                           const double a[], double max);
 
 /* The friction bounds mun[m] of a context of ctx_m contacts: fr_check_contact_array's checks,
  * then FRICREG_EINVAL naming the first bound outside [0, max]. The range is the laws':
