@@ -23,7 +23,12 @@
  * documented set, leave every output untouched on failure (sentinels) and, for a call on an
  * object, record the failure there with a message; none may crash (the test runs under ASan,
  * UBSan and valgrind). The count of cases and every disagreement are printed; any
- * disagreement fails the test. */
+ * disagreement fails the test.
+ *
+ * The classes sit far from most documented bounds (1e308 against 1e250, INT_MAX against 1000),
+ * so test edges_of_documented_ranges tries every bound a docstring states at its last accepted
+ * value and at the first refused one (the next double or integer; twice a tolerance), with the
+ * same checks. */
 #include <check.h>
 #include <float.h>
 #include <limits.h>
@@ -61,7 +66,7 @@ struct perturb {
 /* ---- Fixture: one valid object of each kind, and sentinel-filled outputs ---------------- */
 
 #define SENTINEL_BYTE 0x5a
-#define NOUT 6
+#define NOUT 8
 #define OUTLEN 64
 
 /* A fixture's matrices are 2 x 2; each kind of square-matrix perturbation replaces one. */
@@ -80,6 +85,12 @@ struct fixture {
     double arr[8][OUTLEN];    /* input arrays of the call (perturbed copies) */
     size_t n_switches, n_cycles;
 };
+
+/* Objects some bounds need beside the fixture's (test edges_of_documented_ranges): a chain,
+ * an extrapolated run, a stuck exact solution (x0 = 0.5, a = 0, mun = 1: at rest forever, so
+ * 10^6 cycles cost nothing). */
+static fricreg_sim *chain_, *extrap_;
+static fricreg_exact *stuck_;
 
 static void fixture_make(struct fixture *fx)
 {
@@ -581,10 +592,68 @@ static int w_st_get_stat(void)
     return fricreg_structure_get_stat(ST(), N(0, FRICREG_SSTAT_STEPS), (int64_t *)O(1));
 }
 
+/* the functions the first matrix missed */
+static int w_ctx_set_keep_tangent(void)
+{
+    return fricreg_ctx_set_keep_tangent(CTX(), N(0, 0));
+}
+static const double V2[2] = {0.004, -0.002}, FEQ2[2] = {0.213, -0.347};
+static int w_disk_eval(void)
+{
+    return fricreg_disk_eval(N(0, FRICREG_DISK_QUINN), A(1, V2, 2), A(2, FEQ2, 2), D(0, 0.5),
+                             D(1, 0.02), OUTD(3));
+}
+static int w_disk_eval_batch(void)
+{
+    const double v[4] = {0.004, -0.002, 0.0, 0.5}, feq[4] = {0.213, -0.347, 0.1, 0.0};
+    return fricreg_disk_eval_batch(N(0, FRICREG_DISK_QUINN), D(0, 0.02), Z(0, 2), A(1, v, 4),
+                                   A(2, feq, 4), A(3, MUN2, 2), OUTD(4));
+}
+static int w_stribeck_eval(void)
+{
+    return fricreg_stribeck_eval(D(0, 0.0004), D(1, 0.3), D(2, 0.5), D(3, 0.3), D(4, 0.01),
+                                 D(5, 1.0), D(6, 0.02), OUTD(0));
+}
+static const double FS2[2] = {0.5, 0.25}, FK2[2] = {0.3, 0.2}, VS2[2] = {0.01, 0.02},
+                    DELTA2[2] = {1.0, 2.0};
+static int w_stribeck_eval_batch(void)
+{
+    return fricreg_stribeck_eval_batch(D(0, 0.02), Z(0, 2), A(1, TWO, 2), A(2, TWO, 2),
+                                       A(3, FS2, 2), A(4, FK2, 2), A(5, VS2, 2), A(6, DELTA2, 2),
+                                       OUTD(7));
+}
+static int w_stribeck_disk_eval(void)
+{
+    return fricreg_stribeck_disk_eval(A(1, V2, 2), A(2, FEQ2, 2), D(0, 0.5), D(1, 0.3), D(2, 0.01),
+                                      D(3, 1.0), D(4, 0.02), OUTD(3));
+}
+static int w_stribeck_disk_eval_batch(void)
+{
+    return fricreg_stribeck_disk_eval_batch(D(0, 0.02), Z(0, 1), A(1, V2, 2), A(2, FEQ2, 2),
+                                            A(3, FS2, 1), A(4, FK2, 1), A(5, VS2, 1),
+                                            A(6, DELTA2, 1), OUTD(7));
+}
+static int w_sim_run_extrapolated(void)
+{
+    return fricreg_sim_run_extrapolated(SIM(), D(0, 1.0), N(0, 2), N(1, 0));
+}
+static int w_sim_run_extrapolated_window(void)
+{
+    return fricreg_sim_run_extrapolated_window(SIM(), D(0, 1.0), N(0, 2), N(1, 0), N(2, 0));
+}
+static int w_sim_get_extrapolation(void)
+{
+    return fricreg_sim_get_extrapolation(SIM(), N(0, FRICREG_EXTRAP_LEVELS), OUTD(1));
+}
+static int w_sim_get_extrapolated_dissipation(void)
+{
+    return fricreg_sim_get_extrapolated_dissipation(SIM(), Z(0, 1), OUTD(1), OUTD(2));
+}
+
 /* ---- The table ---------------------------------------------------------------------------- */
 
 /* The object a call records its failures in (a const getter records none). */
-enum owner { NONE, CTX_REC, EX_REC, SIM_REC, ST_REC, DCTX_REC };
+enum owner { NONE, CTX_REC, EX_REC, SIM_REC, ST_REC, DCTX_REC, CHAIN_REC, EXSTUCK_REC };
 
 #define MAXARGS 8
 struct arg {
@@ -695,6 +764,79 @@ static const struct row rows[] = {
      CTX_REC,
      {PTR(8, "0")}},
     {"fricreg_ctx_get_stat", w_ctx_get_stat, "0i", NONE, {HANDLE, INT(0, "ioii"), PTR(1, "0")}},
+    {"fricreg_ctx_set_keep_tangent",
+     w_ctx_set_keep_tangent,
+     "0i",
+     CTX_REC,
+     {HANDLE, INT(0, "ioii")}},
+    /* fricreg_disk.h */
+    {"fricreg_disk_eval",
+     w_disk_eval,
+     "0in",
+     NONE,
+     {INT(0, "iiii"), PTR(1, "0"), ARR(1, "nnoooi"), PTR(2, "0"), ARR(2, "nnoooi"),
+      DBL(0, "nnfiooi"), DBL(1, "nnfiii*"), PTR(3, "0")}},
+    {"fricreg_disk_eval_batch",
+     w_disk_eval_batch,
+     "0in",
+     NONE,
+     {INT(0, "iiii"), DBL(0, "nnfiii*"), SIZE(0, "oxxx"), PTR(1, "0"), ARR(1, "nnoooi"),
+      PTR(2, "0"), ARR(2, "nnoooi")}},
+    {"fricreg_disk_eval_batch (mun, f)",
+     w_disk_eval_batch,
+     "0in",
+     NONE,
+     {PTR(3, "0"), ARR(3, "nniooi"), PTR(4, "0")}},
+    /* fricreg_stribeck.h: the laws */
+    {"fricreg_stribeck_eval",
+     w_stribeck_eval,
+     "0ni",
+     NONE,
+     {DBL(0, "nnnoooo"), DBL(1, "nnnoooo"), DBL(2, "nnfiiio"), DBL(3, "nffiooi"), DBL(4, "nnfiioo"),
+      DBL(5, "nnfiioo"), DBL(6, "nnfiiio"), PTR(0, "0")}},
+    {"fricreg_stribeck_eval_batch",
+     w_stribeck_eval_batch,
+     "0ni",
+     NONE,
+     {DBL(0, "nnfiiio"), SIZE(0, "oxxx"), PTR(1, "0"), ARR(1, "nnoooo"), PTR(2, "0"),
+      ARR(2, "nnoooo")}},
+    {"fricreg_stribeck_eval_batch (fs, fk)",
+     w_stribeck_eval_batch,
+     "0ni",
+     NONE,
+     {PTR(3, "0"), ARR(3, "nniiio"), PTR(4, "0"), ARR(4, "nfiooi")}},
+    {"fricreg_stribeck_eval_batch (vs, delta, f)",
+     w_stribeck_eval_batch,
+     "0ni",
+     NONE,
+     {PTR(5, "0"), ARR(5, "nniioo"), PTR(6, "0"), ARR(6, "nniioo"), PTR(7, "0")}},
+    {"fricreg_stribeck_disk_eval",
+     w_stribeck_disk_eval,
+     "0ni",
+     NONE,
+     {PTR(1, "0"), ARR(1, "nnoooi"), PTR(2, "0"), ARR(2, "nnoooi"), DBL(0, "nnfiiii"),
+      DBL(1, "nffiooi"), PTR(3, "0")}},
+    {"fricreg_stribeck_disk_eval (vs, delta, eps)",
+     w_stribeck_disk_eval,
+     "0ni",
+     NONE,
+     {DBL(2, "nnfiioo"), DBL(3, "nnfiioo"), DBL(4, "nnfiii*")}},
+    {"fricreg_stribeck_disk_eval_batch",
+     w_stribeck_disk_eval_batch,
+     "0ni",
+     NONE,
+     {DBL(0, "nnfiii*"), SIZE(0, "oxxx"), PTR(1, "0"), ARR(1, "nnoooi"), PTR(2, "0"),
+      ARR(2, "nnoooi")}},
+    {"fricreg_stribeck_disk_eval_batch (fs, fk)",
+     w_stribeck_disk_eval_batch,
+     "0ni",
+     NONE,
+     {PTR(3, "0"), ARR(3, "nniiii"), PTR(4, "0"), ARR(4, "nfiooi")}},
+    {"fricreg_stribeck_disk_eval_batch (vs, delta, f)",
+     w_stribeck_disk_eval_batch,
+     "0ni",
+     NONE,
+     {PTR(5, "0"), ARR(5, "nniioo"), PTR(6, "0"), ARR(6, "nniioo"), PTR(7, "0")}},
     /* fricreg_disk_ctx.h */
     {"fricreg_disk_ctx_create", w_dctx_create, "0im", NONE, {SIZE(0, "iiio"), PTR(0, "0")}},
     {"fricreg_disk_ctx_set_law",
@@ -820,6 +962,26 @@ static const struct row rows[] = {
     {"fricreg_sim_set_observer", w_sim_set_observer, "0i", SIM_REC, {HANDLE}},
     {"fricreg_sim_run", w_sim_run, "0inedtgm", SIM_REC, {HANDLE, DBL(0, "nnfiioi")}},
     {"fricreg_sim_run_cycles", w_sim_run_cycles, "0inedtgm", SIM_REC, {HANDLE, INT(0, "iiii")}},
+    {"fricreg_sim_run_extrapolated",
+     w_sim_run_extrapolated,
+     "0inedtgm",
+     SIM_REC,
+     {HANDLE, DBL(0, "nnfii*i"), INT(0, "iiii"), INT(1, "ioii")}},
+    {"fricreg_sim_run_extrapolated_window",
+     w_sim_run_extrapolated_window,
+     "0inedtgm",
+     SIM_REC,
+     {HANDLE, INT(2, "iooi")}},
+    {"fricreg_sim_get_extrapolation (none held)",
+     w_sim_get_extrapolation,
+     "0i",
+     NONE,
+     {PTR(8, "i"), HANDLE, INT(0, "iiii"), PTR(1, "0")}},
+    {"fricreg_sim_get_extrapolated_dissipation (none held)",
+     w_sim_get_extrapolated_dissipation,
+     "0is",
+     NONE,
+     {PTR(8, "i"), HANDLE, SIZE(0, "ffff"), PTR(1, "0"), PTR(2, "0")}},
     {"fricreg_sim_get_value", w_sim_get_value, "0i", NONE, {HANDLE, INT(0, "ioii"), PTR(1, "0")}},
     {"fricreg_sim_get_stat", w_sim_get_stat, "0i", NONE, {HANDLE, INT(0, "ioii"), PTR(1, "0")}},
     {"fricreg_sim_get_state",
@@ -992,6 +1154,8 @@ static int recorded(enum owner owner, const struct fixture *fx)
     case SIM_REC: return fricreg_sim_errcode(fx->sim);
     case ST_REC: return fricreg_structure_errcode(fx->st);
     case DCTX_REC: return fricreg_disk_ctx_errcode(fx->dctx);
+    case CHAIN_REC: return fricreg_sim_errcode(chain_);
+    case EXSTUCK_REC: return fricreg_exact_errcode(stuck_);
     default: return -1;
     }
 }
@@ -1003,6 +1167,8 @@ static const char *message(enum owner owner, const struct fixture *fx)
     case EX_REC: return fricreg_exact_errmsg(fx->ex);
     case SIM_REC: return fricreg_sim_errmsg(fx->sim);
     case DCTX_REC: return fricreg_disk_ctx_errmsg(fx->dctx);
+    case CHAIN_REC: return fricreg_sim_errmsg(chain_);
+    case EXSTUCK_REC: return fricreg_exact_errmsg(stuck_);
     default: return fricreg_structure_errmsg(fx->st);
     }
 }
@@ -1088,6 +1254,593 @@ START_TEST(matrix)
 }
 END_TEST
 
+/* ---- Documented bounds: the last value accepted, and the first refused --------------------
+
+The classes above are far from most bounds (1e308 against a bound of 1e250 or 1000), so a
+bound moved or loosened passes them. Each edge below is a bound some docstring states, tried
+at its last accepted value (must return FRICREG_OK) and at the first value beyond (the
+next double, or the next integer; for a tolerance, twice it: rounding blurs the line by a few
+ulps), which must return the documented refusal, write no output and record it. An upper
+bound that takes hours or gigabytes to reach from inside (2^26 contacts, 2^31 steps, 10^9
+cycles) is tried from outside only: inside NAN. */
+
+struct edge {
+    const char *name;
+    int (*call)(int which, double x);
+    int which;
+    double inside, outside;
+    char refused;
+    enum owner owner;
+};
+
+static double below(double x)
+{
+    return nextafter(x, -INFINITY);
+}
+static double above(double x)
+{
+    return nextafter(x, INFINITY);
+}
+
+static int e_law_eval(int which, double x)
+{
+    return fricreg_law_eval(which == 2 ? (int)x : FRICREG_LAW_QUINN, 0.0004, 0.3,
+                            which == 1 ? x : 1.0, which == 0 ? x : 1e-3, OUTD(0));
+}
+static int e_law_eval_batch(int which, double x)
+{
+    const double mun[2] = {which == 2 ? x : 0.5, 0.25};
+    return fricreg_law_eval_batch(which == 1 ? (int)x : FRICREG_LAW_QUINN, which == 0 ? x : 1e-3, 2,
+                                  TWO, TWO, mun, OUTD(0));
+}
+static int e_ctx_create(int which, double x)
+{
+    (void)which;
+    fricreg_ctx *ctx = (fricreg_ctx *)FX_->handle_out;
+    int status = fricreg_ctx_create((size_t)x, &ctx);
+    if (status == FRICREG_OK)
+        fricreg_ctx_free(ctx);
+    else
+        memcpy(&FX_->handle_out, &ctx, sizeof ctx);
+    return status;
+}
+static int e_ctx_set_law(int which, double x)
+{
+    return fricreg_ctx_set_law(FX_->ctx, which == 1 ? (int)x : FRICREG_LAW_QUINN,
+                               which == 0 ? x : 0.02);
+}
+static int e_ctx_set_bounds(int which, double x)
+{
+    (void)which;
+    const double mun[2] = {x, 0.25};
+    return fricreg_ctx_set_bounds(FX_->ctx, 2, mun);
+}
+static int e_ctx_set_dense(int which, double x)
+{
+    const double W[3][4] = {{x, 0.0, 0.0, 1.0},            /* W_ii >= DBL_MIN */
+                            {1.0, 0.5 + x, 0.5, 1.0},      /* symmetric to 1e-12 */
+                            {1.0, 1.0 + x, 1.0 + x, 1.0}}; /* eigenvalue -x >= -1e-12 m */
+    return fricreg_ctx_set_coupling_dense(FX_->ctx, 2, W[which]);
+}
+static int e_ctx_int(int which, double x)
+{
+    switch (which) {
+    case 0: return fricreg_ctx_set_partition(FX_->ctx, (int)x);
+    case 1: return fricreg_ctx_set_keep_tangent(FX_->ctx, (int)x);
+    default: return fricreg_ctx_get_stat(FX_->ctx, (int)x, (int64_t *)OUTD(0));
+    }
+}
+static int e_ctx_eval(int which, double x)
+{
+    (void)which;
+    const double zdot[2] = {0.0004, -0.0002}, a[2] = {x, -0.347};
+    return fricreg_ctx_eval(FX_->ctx, 2, zdot, a, OUTD(0), OUTD(1));
+}
+static int e_ctx_set_stribeck(int which, double x)
+{
+    const double fk[2] = {x, 0.2};
+    return fricreg_ctx_set_stribeck(FX_->ctx, 2, which == 0 ? FS2 : FS2, fk, VS2, DELTA2);
+}
+static int e_disk_eval(int which, double x)
+{
+    double v[2] = {0.004, -0.002}, feq[2] = {0.213, -0.347}, mun = 0.5, eps = 0.02;
+    int law = FRICREG_DISK_QUINN;
+    switch (which) {
+    case 0: eps = x; break;
+    case 1: law = (int)x; break;
+    case 2: v[0] = x; break;
+    case 3: feq[1] = x; break;
+    default: mun = x;
+    }
+    return fricreg_disk_eval(law, v, feq, mun, eps, OUTD(0));
+}
+static int e_disk_eval_batch(int which, double x)
+{
+    double v[2] = {0.004, -0.002}, feq[2] = {0.213, -0.347}, mun[1] = {0.5}, eps = 0.02;
+    int law = FRICREG_DISK_QUINN;
+    switch (which) {
+    case 0: eps = x; break;
+    case 1: law = (int)x; break;
+    case 2: v[1] = x; break;
+    case 3: feq[0] = x; break;
+    default: mun[0] = x;
+    }
+    return fricreg_disk_eval_batch(law, eps, 1, v, feq, mun, OUTD(0));
+}
+static int e_dctx_create(int which, double x)
+{
+    (void)which;
+    fricreg_disk_ctx *ctx = (fricreg_disk_ctx *)FX_->handle_out;
+    int status = fricreg_disk_ctx_create((size_t)x, &ctx);
+    if (status == FRICREG_OK)
+        fricreg_disk_ctx_free(ctx);
+    else
+        memcpy(&FX_->handle_out, &ctx, sizeof ctx);
+    return status;
+}
+static int e_dctx_set_law(int which, double x)
+{
+    return which == 0 ? fricreg_disk_ctx_set_law(FX_->dctx, (int)x, 0.02)
+                      : fricreg_disk_ctx_set_law(FX_->dctx, FRICREG_DISK_QUINN, x);
+}
+static int e_dctx_set_bounds(int which, double x)
+{
+    (void)which;
+    return fricreg_disk_ctx_set_bounds(FX_->dctx, 1, &x);
+}
+/* which 0-2: blocks, 3-5: dense (one contact: W is its block) */
+static int e_dctx_coupling(int which, double x)
+{
+    const double W[3][4] = {{1.0, 0.0, 0.0, x},        /* smallest eigenvalue > 1e-12 largest */
+                            {x, 0.0, 0.0, x},          /* and >= DBL_MIN */
+                            {1.0, 0.5 + x, 0.5, 1.0}}; /* symmetric to 1e-12 */
+    return which < 3 ? fricreg_disk_ctx_set_coupling_blocks(FX_->dctx, 1, W[which])
+                     : fricreg_disk_ctx_set_coupling_dense(FX_->dctx, 1, W[which - 3]);
+}
+static int e_dctx_eval(int which, double x)
+{
+    double zdot[2] = {0.004, -0.002}, a[2] = {0.213, -0.347};
+    (which == 0 ? zdot : a)[0] = x;
+    return fricreg_disk_ctx_eval(FX_->dctx, 1, zdot, a, OUTD(0));
+}
+static int e_dctx_set_stribeck(int which, double x)
+{
+    double fs[1] = {0.5}, fk[1] = {0.3};
+    (which == 0 ? fs : fk)[0] = x;
+    return fricreg_disk_ctx_set_stribeck(FX_->dctx, 1, fs, fk, VS2, DELTA2);
+}
+/* fs 0.5, fk 0.3, vs 0.01, delta 1, eps 0.02; which picks the one that is x */
+static int e_stribeck_eval(int which, double x)
+{
+    double a[5] = {0.5, 0.3, 0.01, 1.0, 0.02};
+    a[which] = x;
+    return fricreg_stribeck_eval(0.0004, 0.3, a[0], a[1], a[2], a[3], a[4], OUTD(0));
+}
+static int e_stribeck_eval_batch(int which, double x)
+{
+    double a[5] = {0.5, 0.3, 0.01, 1.0, 0.02};
+    a[which] = x;
+    return fricreg_stribeck_eval_batch(a[4], 1, TWO, TWO, &a[0], &a[1], &a[2], &a[3], OUTD(0));
+}
+/* 5, 6: a component of v or f_eq */
+static int e_stribeck_disk_eval(int which, double x)
+{
+    double a[5] = {0.5, 0.3, 0.01, 1.0, 0.02}, v[2] = {0.004, -0.002}, feq[2] = {0.213, -0.347};
+    if (which < 5)
+        a[which] = x;
+    else
+        (which == 5 ? v : feq)[1] = x;
+    return fricreg_stribeck_disk_eval(v, feq, a[0], a[1], a[2], a[3], a[4], OUTD(0));
+}
+static int e_stribeck_disk_eval_batch(int which, double x)
+{
+    double a[5] = {0.5, 0.3, 0.01, 1.0, 0.02}, v[2] = {0.004, -0.002}, feq[2] = {0.213, -0.347};
+    if (which < 5)
+        a[which] = x;
+    else
+        (which == 5 ? v : feq)[0] = x;
+    return fricreg_stribeck_disk_eval_batch(a[4], 1, v, feq, &a[0], &a[1], &a[2], &a[3], OUTD(0));
+}
+static int e_exact_create(int which, double x)
+{
+    (void)which;
+    fricreg_exact *ex = (fricreg_exact *)FX_->handle_out;
+    int status = fricreg_exact_create(0.3, 0.8, x, 2.75, 0.1, &ex);
+    if (status == FRICREG_OK)
+        fricreg_exact_free(ex);
+    else
+        memcpy(&FX_->handle_out, &ex, sizeof ex);
+    return status;
+}
+static int e_exact_solve(int which, double x)
+{
+    (void)which;
+    fricreg_exact *ex = (fricreg_exact *)FX_->handle_out;
+    int status = fricreg_exact_solve(0.0, 0.8, 1.0, 0.5, 0.0, x, &ex);
+    if (status == FRICREG_OK)
+        fricreg_exact_free(ex);
+    else
+        memcpy(&FX_->handle_out, &ex, sizeof ex);
+    return status;
+}
+static int e_exact_stuck(int which, double x)
+{
+    return which == 0 ? fricreg_exact_run(stuck_, x) : fricreg_exact_run_cycles(stuck_, (int)x);
+}
+/* which 0, 1: get_value, get_stat; 2, 3: state at t (the fixture runs to 20), t >= 0; 4: the
+ * stick fraction over [0, x]; 5: over [x, 10] */
+static int e_exact_get(int which, double x)
+{
+    switch (which) {
+    case 0: return fricreg_exact_get_value(FX_->ex, (int)x, OUTD(0));
+    case 1: return fricreg_exact_get_stat(FX_->ex, (int)x, (int64_t *)OUTD(0));
+    case 2:
+    case 3: return fricreg_exact_state(FX_->ex, x, OUTD(0), OUTD(1));
+    case 4: return fricreg_exact_stick_fraction(FX_->ex, 0.0, x, OUTD(0));
+    default: return fricreg_exact_stick_fraction(FX_->ex, x, 10.0, OUTD(0));
+    }
+}
+static int e_chain_n(int which, double x)
+{
+    (void)which;
+    return fricreg_sim_set_param(chain_, FRICREG_PARAM_N, x);
+}
+/* which 0: mun; 1: law's eps (0: the paper's rule); 2: law; 3: partition; 4: integrator;
+ * 5: rtol of central differences; 6: rtol of rkf45 */
+static int e_sim_set(int which, double x)
+{
+    switch (which) {
+    case 0: return fricreg_sim_set_param(FX_->sim, FRICREG_PARAM_MUN, x);
+    case 1: return fricreg_sim_set_law(FX_->sim, FRICREG_LAW_QUINN, x);
+    case 2: return fricreg_sim_set_law(FX_->sim, (int)x, 0.02);
+    case 3: return fricreg_sim_set_partition(FX_->sim, (int)x);
+    case 4: return fricreg_sim_set_integrator(FX_->sim, (int)x, 0.01, 0.0, 0.0);
+    case 5: return fricreg_sim_set_integrator(FX_->sim, FRICREG_INT_CENTRAL, 0.01, x, 0.0);
+    default: return fricreg_sim_set_integrator(FX_->sim, FRICREG_INT_RKF45, 0.01, x, 0.0);
+    }
+}
+/* which 0: fixed steps (rkf45, dt = 0.01: one GSL step per dt; rk4's GSL steps are 2 dt, and
+ * the cap counts GSL steps) to t_end = x; 1: rkf45's whole cycles (adaptive);
+ * 2, 3: levels; 4, 5: order; 6: window (t_end = 1) */
+static int e_sim_run(int which, double x)
+{
+    switch (which) {
+    case 0:
+        if (fricreg_sim_set_integrator(FX_->sim, FRICREG_INT_RKF45, 0.01, 0.0, 0.0) != FRICREG_OK)
+            return -1;
+        return fricreg_sim_run(FX_->sim, x);
+    case 1:
+        if (fricreg_sim_set_integrator(FX_->sim, FRICREG_INT_RKF45, 0.01, 1e-6, 1e-9) != FRICREG_OK)
+            return -1;
+        return fricreg_sim_run_cycles(FX_->sim, (int)x);
+    case 2:
+    case 3: return fricreg_sim_run_extrapolated(FX_->sim, 1.0, (int)x, 0);
+    case 4:
+    case 5: return fricreg_sim_run_extrapolated(FX_->sim, 1.0, 2, (int)x);
+    default: return fricreg_sim_run_extrapolated_window(FX_->sim, 1.0, 2, 0, (int)x);
+    }
+}
+/* which 0: get_value; 1: get_stat; 2, 3: get_extrapolation of an extrapolated run */
+static int e_sim_get(int which, double x)
+{
+    switch (which) {
+    case 0: return fricreg_sim_get_value(FX_->sim, (int)x, OUTD(0));
+    case 1: return fricreg_sim_get_stat(FX_->sim, (int)x, (int64_t *)OUTD(0));
+    default: return fricreg_sim_get_extrapolation(extrap_, (int)x, OUTD(0));
+    }
+}
+static int e_st_create(int which, double x)
+{
+    fricreg_structure *s = (fricreg_structure *)FX_->handle_out;
+    int status = fricreg_structure_create(which == 0 ? (size_t)x : 1, which == 1 ? (size_t)x : 1,
+                                          &s);
+    if (status == FRICREG_OK)
+        fricreg_structure_free(s);
+    else
+        memcpy(&FX_->handle_out, &s, sizeof s);
+    return status;
+}
+/* which 0, 1: Rayleigh a0, a1; 2: the law's eps; 3: mun; 4-7: Newmark beta (upper), gamma
+ * (lower, upper), HHT alpha (lower, upper: 8); 9, 10: Newton's tol (upper), max_iter */
+static int e_st_set(int which, double x)
+{
+    fricreg_structure *s = FX_->st;
+    switch (which) {
+    case 0: return fricreg_structure_set_rayleigh(s, x, 0.002);
+    case 1: return fricreg_structure_set_rayleigh(s, 0.01, x);
+    case 2: return fricreg_structure_set_law(s, FRICREG_LAW_QUINN, x);
+    case 3: return fricreg_structure_set_bounds(s, 1, &x);
+    case 4: return fricreg_structure_set_newmark(s, x, 0.5);
+    case 5:
+    case 6: return fricreg_structure_set_newmark(s, 0.25, x);
+    case 7:
+    case 8: return fricreg_structure_set_hht(s, x);
+    case 9: return fricreg_structure_set_newton(s, x, 50);
+    default: return fricreg_structure_set_newton(s, 1e-10, (int)x);
+    }
+}
+/* which 0: run with dt = 1e-9 to x (2^31 steps); 1: run_ode's integrator (adaptive); 2:
+ * rk4imp on K (x = 0) or on a K that is not semidefinite (x = 1); 3, 4: get_value, get_stat */
+static int e_st_run(int which, double x)
+{
+    fricreg_structure *s = FX_->st;
+    const double K_unstable[4] = {-2.4, 0.0, 0.0, 1.1};
+    switch (which) {
+    case 0: return fricreg_structure_run(s, 1e-9, x);
+    case 1: return fricreg_structure_run_ode(s, (int)x, 0.001, 1e-6, 1e-9, 0.05);
+    case 2:
+        if (x != 0.0 && fricreg_structure_set_stiffness(s, 2, K_unstable) != FRICREG_OK)
+            return -1;
+        return fricreg_structure_run_ode(s, FRICREG_INT_RK4IMP, 0.001, 0.0, 0.0, 0.05);
+    case 3: return fricreg_structure_get_value(s, (int)x, OUTD(0));
+    default: return fricreg_structure_get_stat(s, (int)x, (int64_t *)OUTD(0));
+    }
+}
+
+#define TINY 4.9e-324
+/* The first t_end beyond 10^6 cycles of omega = 0.8, as fricreg_exact_run computes cycles,
+ * and the last one within. */
+static double exact_cycles_edge(int beyond)
+{
+    double t = 1e6 * 6.283185307179586 / 0.8;
+    while (t * 0.8 / 6.283185307179586 > 1e6)
+        t = below(t);
+    while (!(above(t) * 0.8 / 6.283185307179586 > 1e6))
+        t = above(t);
+    return beyond ? above(t) : t;
+}
+
+static void edge_objects(void)
+{
+    ck_assert_int_eq(fricreg_sim_create(FRICREG_SYSTEM_CHAIN, &chain_), FRICREG_OK);
+    ck_assert_int_eq(fricreg_exact_create(0.0, 0.8, 1.0, 0.5, 0.0, &stuck_), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_create(FRICREG_SYSTEM_OSCILLATOR, &extrap_), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run_extrapolated(extrap_, 1.0, 2, 0), FRICREG_OK);
+}
+
+static void edge_objects_free(void)
+{
+    fricreg_sim_free(chain_), fricreg_sim_free(extrap_);
+    fricreg_exact_free(stuck_);
+    chain_ = extrap_ = NULL;
+    stuck_ = NULL;
+}
+
+/* One side of an edge; returns 1 if it disagrees with the docstring (printed). */
+static int run_edge(const struct edge *e, double x, char expect)
+{
+    struct fixture fx;
+    fixture_make(&fx);
+    edge_objects();
+    static const struct perturb none = {K_PTR, -1, 0};
+    P_ = &none;
+    FX_ = &fx;
+    int status = e->call(e->which, x), want = code_of(expect);
+    char why[200] = "";
+    if (status != want)
+        snprintf(why, sizeof why, "status %d (%s), docstring says %d (%s)", status,
+                 fricreg_strerror(status), want, fricreg_strerror(want));
+    else if (status != FRICREG_OK &&
+             !(untouched(fx.out, sizeof fx.out) && untouched(&fx.handle_out, sizeof(void *))))
+        snprintf(why, sizeof why, "failed (%d) but wrote an output", status);
+    else if (status != FRICREG_OK && e->owner != NONE &&
+             (recorded(e->owner, &fx) != status || message(e->owner, &fx)[0] == '\0'))
+        snprintf(why, sizeof why, "failed (%d) but recorded %d, message '%s'", status,
+                 recorded(e->owner, &fx), message(e->owner, &fx));
+    fixture_free(&fx);
+    edge_objects_free();
+    if (getenv("BAD_INPUT_VERBOSE") != NULL)
+        printf("edge %s at %.17g: %s\n", e->name, x, fricreg_strerror(status));
+    if (why[0] != '\0')
+        printf("DISAGREES: edge %s at %.17g: %s\n", e->name, x, why);
+    fflush(stdout);
+    return why[0] != '\0';
+}
+
+START_TEST(edges_of_documented_ranges)
+{
+    const struct edge edges[] = {
+        /* fricreg.h */
+        {"law_eval eps >= DBL_MIN", e_law_eval, 0, DBL_MIN, 0, 'i', NONE},
+        {"law_eval mun >= 0", e_law_eval, 1, 0.0, -TINY, 'i', NONE},
+        {"law_eval law <= quinn", e_law_eval, 2, FRICREG_LAW_QUINN, FRICREG_LAW_QUINN + 1, 'i',
+         NONE},
+        {"law_eval law >= coulomb", e_law_eval, 2, FRICREG_LAW_COULOMB, 0, 'i', NONE},
+        {"law_eval_batch eps >= DBL_MIN", e_law_eval_batch, 0, DBL_MIN, 0, 'i', NONE},
+        {"law_eval_batch law <= quinn", e_law_eval_batch, 1, FRICREG_LAW_QUINN,
+         FRICREG_LAW_QUINN + 1, 'i', NONE},
+        {"law_eval_batch mun >= 0", e_law_eval_batch, 2, 0.0, -TINY, 'i', NONE},
+        {"ctx_create m <= 2^26", e_ctx_create, 0, NAN, 67108865.0, 'i', NONE},
+        {"ctx_create m >= 1", e_ctx_create, 0, 1.0, 0.0, 'i', NONE},
+        {"ctx_set_law eps >= DBL_MIN", e_ctx_set_law, 0, DBL_MIN, 0, 'i', CTX_REC},
+        {"ctx_set_law law <= quinn", e_ctx_set_law, 1, FRICREG_LAW_QUINN, FRICREG_LAW_QUINN + 1,
+         'i', CTX_REC},
+        {"ctx_set_bounds mun >= 0", e_ctx_set_bounds, 0, 0.0, -TINY, 'i', CTX_REC},
+        {"ctx_set_coupling_dense W_ii >= DBL_MIN", e_ctx_set_dense, 0, DBL_MIN, 0, 'p', CTX_REC},
+        {"ctx_set_coupling_dense symmetric to 1e-12", e_ctx_set_dense, 1, 0.5e-12, 2e-12, 'y',
+         CTX_REC},
+        {"ctx_set_coupling_dense eigenvalue >= -1e-12 m", e_ctx_set_dense, 2, 1e-12, 4e-12, 'p',
+         CTX_REC},
+        {"ctx_set_partition <= paper", e_ctx_int, 0, FRICREG_PARTITION_PAPER,
+         FRICREG_PARTITION_PAPER + 1, 'i', CTX_REC},
+        {"ctx_set_partition >= consistent", e_ctx_int, 0, FRICREG_PARTITION_CONSISTENT, 0, 'i',
+         CTX_REC},
+        {"ctx_set_keep_tangent <= 1", e_ctx_int, 1, 1, 2, 'i', CTX_REC},
+        {"ctx_set_keep_tangent >= 0", e_ctx_int, 1, 0, -1, 'i', CTX_REC},
+        {"ctx_get_stat <= factor updates", e_ctx_int, 2, FRICREG_STAT_FACTOR_UPDATES,
+         FRICREG_STAT_FACTOR_UPDATES + 1, 'i', NONE},
+        {"ctx_eval f_eq within 1e280", e_ctx_eval, 0, 0.5e280, 2e280, 'n', CTX_REC},
+        {"ctx_eval f_eq within -1e280", e_ctx_eval, 0, -0.5e280, -2e280, 'n', CTX_REC},
+        {"ctx_set_stribeck fk <= fs", e_ctx_set_stribeck, 0, 0.5, above(0.5), 'i', CTX_REC},
+        {"ctx_set_stribeck fk >= 0", e_ctx_set_stribeck, 0, 0.0, -TINY, 'i', CTX_REC},
+        /* fricreg_disk.h */
+        {"disk_eval eps >= DBL_MIN", e_disk_eval, 0, DBL_MIN, below(DBL_MIN), 'i', NONE},
+        {"disk_eval law <= quinn-nested", e_disk_eval, 1, FRICREG_DISK_QUINN_NESTED,
+         FRICREG_DISK_QUINN_NESTED + 1, 'i', NONE},
+        {"disk_eval law >= coulomb", e_disk_eval, 1, FRICREG_DISK_COULOMB, 0, 'i', NONE},
+        {"disk_eval v <= 1e250", e_disk_eval, 2, 1e250, above(1e250), 'i', NONE},
+        {"disk_eval v >= -1e250", e_disk_eval, 2, -1e250, below(-1e250), 'i', NONE},
+        {"disk_eval f_eq <= 1e250", e_disk_eval, 3, 1e250, above(1e250), 'i', NONE},
+        {"disk_eval mun <= 1e250", e_disk_eval, 4, 1e250, above(1e250), 'i', NONE},
+        {"disk_eval mun >= 0", e_disk_eval, 4, 0.0, -TINY, 'i', NONE},
+        {"disk_eval_batch eps >= DBL_MIN", e_disk_eval_batch, 0, DBL_MIN, below(DBL_MIN), 'i',
+         NONE},
+        {"disk_eval_batch law <= quinn-nested", e_disk_eval_batch, 1, FRICREG_DISK_QUINN_NESTED,
+         FRICREG_DISK_QUINN_NESTED + 1, 'i', NONE},
+        {"disk_eval_batch v <= 1e250", e_disk_eval_batch, 2, 1e250, above(1e250), 'i', NONE},
+        {"disk_eval_batch f_eq >= -1e250", e_disk_eval_batch, 3, -1e250, below(-1e250), 'i', NONE},
+        {"disk_eval_batch mun <= 1e250", e_disk_eval_batch, 4, 1e250, above(1e250), 'i', NONE},
+        {"disk_eval_batch mun >= 0", e_disk_eval_batch, 4, 0.0, -TINY, 'i', NONE},
+        /* fricreg_disk_ctx.h */
+        {"disk_ctx_create m <= 2^24", e_dctx_create, 0, NAN, 16777217.0, 'i', NONE},
+        {"disk_ctx_set_law quinn, not the lens", e_dctx_set_law, 0, FRICREG_DISK_QUINN,
+         FRICREG_DISK_QUINN_LENS, 'i', DCTX_REC},
+        {"disk_ctx_set_law force-balance, not coulomb", e_dctx_set_law, 0,
+         FRICREG_DISK_FORCE_BALANCE, FRICREG_DISK_COULOMB, 'i', DCTX_REC},
+        {"disk_ctx_set_law not the nested law", e_dctx_set_law, 0, FRICREG_DISK_QUINN,
+         FRICREG_DISK_QUINN_NESTED, 'i', DCTX_REC},
+        {"disk_ctx_set_law eps >= DBL_MIN", e_dctx_set_law, 1, DBL_MIN, below(DBL_MIN), 'i',
+         DCTX_REC},
+        {"disk_ctx_set_law eps <= 1e250", e_dctx_set_law, 1, 1e250, above(1e250), 'i', DCTX_REC},
+        {"disk_ctx_set_bounds mun <= 1e250", e_dctx_set_bounds, 0, 1e250, above(1e250), 'i',
+         DCTX_REC},
+        {"disk_ctx_set_bounds mun >= 0", e_dctx_set_bounds, 0, 0.0, -TINY, 'i', DCTX_REC},
+        {"disk_ctx_set_coupling_blocks eigenvalues within 1e12", e_dctx_coupling, 0, 2e-12, 0.5e-12,
+         'p', DCTX_REC},
+        {"disk_ctx_set_coupling_blocks eigenvalue >= DBL_MIN", e_dctx_coupling, 1, DBL_MIN,
+         below(DBL_MIN), 'p', DCTX_REC},
+        {"disk_ctx_set_coupling_blocks symmetric to 1e-12", e_dctx_coupling, 2, 0.5e-12, 2e-12, 'y',
+         DCTX_REC},
+        {"disk_ctx_set_coupling_dense eigenvalues within 1e12", e_dctx_coupling, 3, 2e-12, 0.5e-12,
+         'p', DCTX_REC},
+        {"disk_ctx_set_coupling_dense eigenvalue >= DBL_MIN", e_dctx_coupling, 4, DBL_MIN,
+         below(DBL_MIN), 'p', DCTX_REC},
+        {"disk_ctx_set_coupling_dense symmetric to 1e-12", e_dctx_coupling, 5, 0.5e-12, 2e-12, 'y',
+         DCTX_REC},
+        {"disk_ctx_eval zdot <= 1e250", e_dctx_eval, 0, 1e250, above(1e250), 'i', DCTX_REC},
+        {"disk_ctx_eval a_free >= -1e250", e_dctx_eval, 1, -1e250, below(-1e250), 'i', DCTX_REC},
+        {"disk_ctx_set_stribeck fs <= 1e250", e_dctx_set_stribeck, 0, 1e250, above(1e250), 'i',
+         DCTX_REC},
+        {"disk_ctx_set_stribeck fk <= fs", e_dctx_set_stribeck, 1, 0.5, above(0.5), 'i', DCTX_REC},
+        {"disk_ctx_set_stribeck fk >= 0", e_dctx_set_stribeck, 1, 0.0, -TINY, 'i', DCTX_REC},
+        /* fricreg_stribeck.h */
+        {"stribeck_eval fs >= fk", e_stribeck_eval, 0, 0.3, below(0.3), 'i', NONE},
+        {"stribeck_eval fk >= 0", e_stribeck_eval, 1, 0.0, -TINY, 'i', NONE},
+        {"stribeck_eval vs > 0", e_stribeck_eval, 2, TINY, 0.0, 'i', NONE},
+        {"stribeck_eval delta > 0", e_stribeck_eval, 3, TINY, 0.0, 'i', NONE},
+        {"stribeck_eval eps >= DBL_MIN", e_stribeck_eval, 4, DBL_MIN, below(DBL_MIN), 'i', NONE},
+        {"stribeck_eval_batch fk <= fs", e_stribeck_eval_batch, 1, 0.5, above(0.5), 'i', NONE},
+        {"stribeck_eval_batch vs > 0", e_stribeck_eval_batch, 2, TINY, 0.0, 'i', NONE},
+        {"stribeck_eval_batch delta > 0", e_stribeck_eval_batch, 3, TINY, 0.0, 'i', NONE},
+        {"stribeck_eval_batch eps >= DBL_MIN", e_stribeck_eval_batch, 4, DBL_MIN, below(DBL_MIN),
+         'i', NONE},
+        {"stribeck_disk_eval fs <= 1e250", e_stribeck_disk_eval, 0, 1e250, above(1e250), 'i', NONE},
+        {"stribeck_disk_eval fk <= fs", e_stribeck_disk_eval, 1, 0.5, above(0.5), 'i', NONE},
+        {"stribeck_disk_eval eps >= DBL_MIN", e_stribeck_disk_eval, 4, DBL_MIN, below(DBL_MIN), 'i',
+         NONE},
+        {"stribeck_disk_eval v <= 1e250", e_stribeck_disk_eval, 5, 1e250, above(1e250), 'i', NONE},
+        {"stribeck_disk_eval f_eq >= -1e250", e_stribeck_disk_eval, 6, -1e250, below(-1e250), 'i',
+         NONE},
+        {"stribeck_disk_eval_batch fs <= 1e250", e_stribeck_disk_eval_batch, 0, 1e250, above(1e250),
+         'i', NONE},
+        {"stribeck_disk_eval_batch fk >= 0", e_stribeck_disk_eval_batch, 1, 0.0, -TINY, 'i', NONE},
+        {"stribeck_disk_eval_batch v >= -1e250", e_stribeck_disk_eval_batch, 5, -1e250,
+         below(-1e250), 'i', NONE},
+        {"stribeck_disk_eval_batch f_eq <= 1e250", e_stribeck_disk_eval_batch, 6, 1e250,
+         above(1e250), 'i', NONE},
+        /* fricreg_exact.h */
+        {"exact_create mun >= 0", e_exact_create, 0, 0.0, -TINY, 'i', NONE},
+        {"exact_solve t_end within 10^6 cycles", e_exact_solve, 0, exact_cycles_edge(0),
+         exact_cycles_edge(1), 'i', NONE},
+        {"exact_run t_end within 10^6 cycles", e_exact_stuck, 0, exact_cycles_edge(0),
+         exact_cycles_edge(1), 'i', EXSTUCK_REC},
+        {"exact_run_cycles <= 10^6", e_exact_stuck, 1, 1e6, 1e6 + 1, 'i', EXSTUCK_REC},
+        {"exact_run_cycles >= 1", e_exact_stuck, 1, 1, 0, 'i', EXSTUCK_REC},
+        {"exact_get_value <= period", e_exact_get, 0, FRICREG_EXACT_VALUE_PERIOD,
+         FRICREG_EXACT_VALUE_PERIOD + 1, 'i', NONE},
+        {"exact_get_stat <= root iterations", e_exact_get, 1, FRICREG_EXACT_STAT_ROOT_ITERS,
+         FRICREG_EXACT_STAT_ROOT_ITERS + 1, 'i', NONE},
+        {"exact_state t <= t_end", e_exact_get, 2, 20.0, above(20.0), 'i', NONE},
+        {"exact_state t >= 0", e_exact_get, 3, 0.0, -TINY, 'i', NONE},
+        {"exact_stick_fraction t1 <= t_end", e_exact_get, 4, 20.0, above(20.0), 'i', NONE},
+        {"exact_stick_fraction t0 < t1", e_exact_get, 5, below(10.0), 10.0, 'i', NONE},
+        /* fricreg_sim.h */
+        {"sim_set_param n >= 2", e_chain_n, 0, 2.0, 1.0, 'i', CHAIN_REC},
+        {"sim_set_param n <= 10^7", e_chain_n, 0, 1e7, 1e7 + 1, 'i', CHAIN_REC},
+        {"sim_set_param n an integer", e_chain_n, 0, 3.0, 2.5, 'i', CHAIN_REC},
+        {"sim_set_param mun >= 0", e_sim_set, 0, 0.0, -TINY, 'i', SIM_REC},
+        {"sim_set_law eps >= 0 (0: the paper's rule)", e_sim_set, 1, 0.0, -TINY, 'i', SIM_REC},
+        {"sim_set_law law <= quinn", e_sim_set, 2, FRICREG_LAW_QUINN, FRICREG_LAW_QUINN + 1, 'i',
+         SIM_REC},
+        {"sim_set_partition <= paper", e_sim_set, 3, FRICREG_PARTITION_PAPER,
+         FRICREG_PARTITION_PAPER + 1, 'i', SIM_REC},
+        {"sim_set_integrator <= central-imex", e_sim_set, 4, FRICREG_INT_CENTRAL_IMEX,
+         FRICREG_INT_CENTRAL_IMEX + 1, 'i', SIM_REC},
+        {"sim_set_integrator central: fixed steps only", e_sim_set, 5, 0.0, 1e-6, 'i', SIM_REC},
+        {"sim_set_integrator rtol >= 0", e_sim_set, 6, 0.0, -TINY, 'i', SIM_REC},
+        {"sim_run at most 2^31 fixed steps", e_sim_run, 0, NAN, 0.01 * 2147483648.0 * 1.0000001,
+         'i', SIM_REC},
+        {"sim_run_cycles at most 10^9 cycles", e_sim_run, 1, NAN, 1000000001.0, 'i', SIM_REC},
+        {"sim_run_extrapolated levels >= 2", e_sim_run, 2, 2, 1, 'i', SIM_REC},
+        {"sim_run_extrapolated levels <= 8", e_sim_run, 3, 8, 9, 'i', SIM_REC},
+        {"sim_run_extrapolated order >= 0", e_sim_run, 4, 0, -1, 'i', SIM_REC},
+        {"sim_run_extrapolated order <= 4", e_sim_run, 5, 4, 5, 'i', SIM_REC},
+        {"sim_run_extrapolated_window window >= 0", e_sim_run, 6, 0, -1, 'i', SIM_REC},
+        {"sim_get_value <= dissipation", e_sim_get, 0, FRICREG_VALUE_DISSIPATION,
+         FRICREG_VALUE_DISSIPATION + 1, 'i', NONE},
+        {"sim_get_stat <= rejected steps", e_sim_get, 1, FRICREG_SIM_STAT_REJECTED_STEPS,
+         FRICREG_SIM_STAT_REJECTED_STEPS + 1, 'i', NONE},
+        {"sim_get_extrapolation <= rhs evals", e_sim_get, 2, FRICREG_EXTRAP_RHS_EVALS,
+         FRICREG_EXTRAP_RHS_EVALS + 1, 'i', NONE},
+        {"sim_get_extrapolation >= levels", e_sim_get, 3, FRICREG_EXTRAP_LEVELS, -1, 'i', NONE},
+        /* fricreg_structure.h */
+        {"structure_create ndof <= 2^15", e_st_create, 0, NAN, 32769.0, 'i', NONE},
+        {"structure_create m <= 2^15", e_st_create, 1, NAN, 32769.0, 'i', NONE},
+        {"structure_set_rayleigh a0 >= 0", e_st_set, 0, 0.0, -TINY, 'i', ST_REC},
+        {"structure_set_rayleigh a1 >= 0", e_st_set, 1, 0.0, -TINY, 'i', ST_REC},
+        {"structure_set_law eps >= DBL_MIN", e_st_set, 2, DBL_MIN, below(DBL_MIN), 'i', ST_REC},
+        {"structure_set_bounds mun >= 0", e_st_set, 3, 0.0, -TINY, 'i', ST_REC},
+        {"structure_set_newmark beta <= 1/2", e_st_set, 4, 0.5, above(0.5), 'i', ST_REC},
+        {"structure_set_newmark beta > 0", e_st_set, 4, TINY, 0.0, 'i', ST_REC},
+        {"structure_set_newmark gamma >= 1/2", e_st_set, 5, 0.5, below(0.5), 'i', ST_REC},
+        {"structure_set_newmark gamma <= 1", e_st_set, 6, 1.0, above(1.0), 'i', ST_REC},
+        {"structure_set_hht alpha >= -1/3", e_st_set, 7, -1.0 / 3.0, below(-1.0 / 3.0), 'i',
+         ST_REC},
+        {"structure_set_hht alpha <= 0", e_st_set, 8, 0.0, TINY, 'i', ST_REC},
+        {"structure_set_newton tol < 1", e_st_set, 9, below(1.0), 1.0, 'i', ST_REC},
+        {"structure_set_newton tol > 0", e_st_set, 9, TINY, 0.0, 'i', ST_REC},
+        {"structure_set_newton max_iter <= 1000", e_st_set, 10, 1000, 1001, 'i', ST_REC},
+        {"structure_set_newton max_iter >= 1", e_st_set, 10, 1, 0, 'i', ST_REC},
+        {"structure_run at most 2^31 steps", e_st_run, 0, NAN, 1e-9 * 2147483648.0 * 1.0000001, 'i',
+         ST_REC},
+        {"structure_run_ode integrator <= rk4-gsl", e_st_run, 1, FRICREG_INT_RK4_GSL,
+         FRICREG_INT_CENTRAL, 'i', ST_REC},
+        {"structure_run_ode not central-imex", e_st_run, 1, FRICREG_INT_RK4_GSL,
+         FRICREG_INT_CENTRAL_IMEX, 'i', ST_REC},
+        {"structure_run_ode integrator known", e_st_run, 1, FRICREG_INT_RK4_GSL,
+         FRICREG_INT_CENTRAL_IMEX + 1, 'i', ST_REC},
+        {"structure_run_ode rk4imp: K semidefinite", e_st_run, 2, 0.0, 1.0, 'i', ST_REC},
+        {"structure_get_value <= initial", e_st_run, 3, FRICREG_SVALUE_INITIAL,
+         FRICREG_SVALUE_INITIAL + 1, 'i', NONE},
+        {"structure_get_stat <= line-search cuts", e_st_run, 4, FRICREG_SSTAT_LINE_SEARCH_CUTS,
+         FRICREG_SSTAT_LINE_SEARCH_CUTS + 1, 'i', NONE},
+    };
+    int cases = 0, disagreements = 0;
+    for (size_t k = 0; k < sizeof edges / sizeof edges[0]; k++) {
+        const struct edge e = edges[k];
+        if (!isnan(e.inside)) {
+            disagreements += run_edge(&e, e.inside, 'o');
+            cases++;
+        }
+        disagreements += run_edge(&e, e.outside, e.refused);
+        cases++;
+    }
+    printf("documented edges: %d cases over %zu bounds, %d disagreements\n", cases,
+           sizeof edges / sizeof edges[0], disagreements);
+    ck_assert_int_eq(disagreements, 0);
+}
+END_TEST
+
 /* The functions that return no status: their NULL and out-of-range arguments. */
 START_TEST(non_status_functions)
 {
@@ -1101,6 +1854,17 @@ START_TEST(non_status_functions)
         ck_assert_ptr_null(fricreg_law_name(int_class[bad]));
         ck_assert_ptr_null(fricreg_integrator_name(int_class[bad]));
     }
+    for (int bad = 0; bad < 4; bad++)
+        ck_assert_ptr_null(fricreg_disk_law_name(int_class[bad]));
+    ck_assert_ptr_null(fricreg_law_name(FRICREG_LAW_QUINN + 1)); /* one past the last */
+    ck_assert_ptr_null(fricreg_disk_law_name(FRICREG_DISK_QUINN_NESTED + 1));
+    ck_assert_ptr_null(fricreg_integrator_name(FRICREG_INT_CENTRAL_IMEX + 1));
+    ck_assert_ptr_nonnull(fricreg_law_name(FRICREG_LAW_QUINN));
+    ck_assert_ptr_nonnull(fricreg_disk_law_name(FRICREG_DISK_QUINN_NESTED));
+    ck_assert_ptr_nonnull(fricreg_integrator_name(FRICREG_INT_CENTRAL_IMEX));
+    ck_assert_int_eq(fricreg_disk_law_from_name(NULL), 0);
+    ck_assert_int_eq(fricreg_disk_law_from_name(""), 0);
+    ck_assert_int_eq(fricreg_disk_law_from_name("QUINN"), 0);
     ck_assert_int_eq(fricreg_law_from_name(NULL), 0);
     ck_assert_int_eq(fricreg_law_from_name(""), 0);
     ck_assert_int_eq(fricreg_law_from_name("QUINN"), 0);
@@ -1132,14 +1896,16 @@ START_TEST(non_status_functions)
 
     /* errmsg_copy: buf NULL or len 0 gives 0 and writes nothing; a short buffer is truncated
      * and NUL-terminated; the full length is returned ("NULL context" is 12 characters). */
-    size_t (*const copy[4])(const void *, char *, size_t) = {
+    size_t (*const copy[5])(const void *, char *, size_t) = {
         (size_t(*)(const void *, char *, size_t))fricreg_ctx_errmsg_copy,
         (size_t(*)(const void *, char *, size_t))fricreg_exact_errmsg_copy,
         (size_t(*)(const void *, char *, size_t))fricreg_sim_errmsg_copy,
-        (size_t(*)(const void *, char *, size_t))fricreg_structure_errmsg_copy};
-    const size_t full[4] = {strlen("NULL context"), strlen("NULL exact solution"),
-                            strlen("NULL simulation"), strlen("NULL structure")};
-    for (int k = 0; k < 4; k++) {
+        (size_t(*)(const void *, char *, size_t))fricreg_structure_errmsg_copy,
+        (size_t(*)(const void *, char *, size_t))fricreg_disk_ctx_errmsg_copy};
+    const size_t full[5] = {strlen("NULL context"), strlen("NULL exact solution"),
+                            strlen("NULL simulation"), strlen("NULL structure"),
+                            strlen("NULL context")};
+    for (int k = 0; k < 5; k++) {
         memset(buf, SENTINEL_BYTE, sizeof buf);
         ck_assert_uint_eq(copy[k](NULL, NULL, sizeof buf), 0);
         ck_assert_uint_eq(copy[k](NULL, buf, 0), 0);
@@ -1251,6 +2017,7 @@ int main(void)
     Suite *s = suite_create("bad_input");
     TCase *tc = tcase_create("bad_input");
     tcase_add_test(tc, matrix);
+    tcase_add_test(tc, edges_of_documented_ranges);
     tcase_add_test(tc, non_status_functions);
     tcase_add_test(tc, indefinite_w_with_tiny_diagonal);
     tcase_add_test(tc, dense_feq_overflow_is_refused);

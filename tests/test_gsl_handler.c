@@ -3,7 +3,9 @@
  *
  * The program installs its own GSL handler once, which counts its calls, then runs every
  * entry-point family — laws, a context with dense W (positive definite, singular, indefinite,
- * near 1e308), the tangent and stick stiffness, simulations of each system with explicit and
+ * near 1e308), the tangent and stick stiffness, a 2-D context (dense W, well and badly
+ * conditioned, and anisotropic blocks; eval at rest, in the band and sliding, the tangent,
+ * Stribeck friction, refused W, a singular W), simulations of each system with explicit and
  * implicit GSL steppers (and a run the step guard refuses), the exact solver (solved, refused, near overflow), a
  * structure (indefinite and singular mass, Newmark, central difference, a GSL stepper) — and
  * after each call checks that the handler in place is still the program's
@@ -21,8 +23,10 @@
 
 #include <gsl/gsl_errno.h>
 
+#include "fricreg_disk_ctx.h"
 #include "fricreg_exact.h"
 #include "fricreg_sim.h"
+#include "fricreg_stribeck.h"
 #include "fricreg_structure.h"
 
 static int handler_calls, handler_swaps;
@@ -132,6 +136,106 @@ START_TEST(contexts)
 }
 END_TEST
 
+/* 2-D contexts of 3 contacts (fricreg_disk_ctx.h): inputs at rest, in the band and sliding. */
+#define DM 3
+static const double DZDOT[3][2 * DM] = {{0.0, 0.0, 0.0, 0.0, 0.0, 0.0},
+                                        {3e-3, -1e-3, 0.0, 5e-3, -2e-3, 0.0},
+                                        {0.25, -0.5, 0.0, 0.0, 4e-3, 0.0}};
+static const double DAFREE[3][2 * DM] = {{0.6, -0.35, 1.25, 0.4, -0.2, 0.9},
+                                         {0.05, 0.02, -0.03, 0.01, 0.04, -0.06},
+                                         {-0.75, 0.3, 0.2, 2.5, -1.0, 0.6}};
+
+/* Evaluations at the three input sets, each with its tangent: every status is fricreg's. */
+static void disk_evals(fricreg_disk_ctx *ctx, const char *what)
+{
+    double f[2 * DM], Fz[4 * DM * DM], Fa[4 * DM * DM];
+    for (int p = 0; p < 3; p++) {
+        int status = fricreg_disk_ctx_eval(ctx, DM, DZDOT[p], DAFREE[p], f);
+        ck_assert_msg(status == FRICREG_OK, "%s, inputs %d: %s", what, p,
+                      fricreg_disk_ctx_errmsg(ctx));
+        assert_handler_intact("fricreg_disk_ctx_eval");
+        status = fricreg_disk_ctx_tangent(ctx, DM, Fz, Fa);
+        ck_assert_msg(status == FRICREG_OK, "%s, inputs %d: tangent %s", what, p,
+                      fricreg_disk_ctx_errmsg(ctx));
+        assert_handler_intact("fricreg_disk_ctx_tangent");
+    }
+}
+
+/* Dense W: diagonally dominant (well conditioned), and 1e-4 I + u u^T (condition 3e4: the
+ * Gauss-Seidel sweeps are slow and Newton's polish on the KKT conditions, GSL's QR, runs);
+ * anisotropic blocks. Each with Coulomb bounds, then Stribeck friction, then force balance. */
+START_TEST(disk_contexts)
+{
+    static const double u[2 * DM] = {1.0, 0.5, 0.8, -0.3, 0.6, 0.2};
+    static const double mun[DM] = {1.3, 0.7, 2.385}, fs[DM] = {1.3, 0.9, 2.385};
+    static const double fk[DM] = {0.8, 0.6, 1.5}, vs[DM] = {0.01, 0.02, 0.005};
+    static const double delta[DM] = {1.0, 2.0, 0.5};
+    double W[2][4 * DM * DM], w[4 * DM];
+    for (int i = 0; i < 2 * DM; i++)
+        for (int j = 0; j < 2 * DM; j++) {
+            W[0][i * 2 * DM + j] = i == j ? 1.5 + 0.1 * i : 0.2 / (1.0 + abs(i - j));
+            W[1][i * 2 * DM + j] = u[i] * u[j] + (i == j ? 1e-4 : 0.0);
+        }
+    for (int i = 0; i < DM; i++) {
+        w[4 * i] = 1.25 + 0.1 * i;
+        w[4 * i + 1] = w[4 * i + 2] = 0.3 - 0.05 * i;
+        w[4 * i + 3] = 0.8 + 0.125 * i;
+    }
+    for (int coupling = 0; coupling < 3; coupling++) {
+        fricreg_disk_ctx *ctx = NULL;
+        ck_assert_int_eq(fricreg_disk_ctx_create(DM, &ctx), FRICREG_OK);
+        ck_assert_int_eq(fricreg_disk_ctx_set_law(ctx, FRICREG_DISK_QUINN, 0.02), FRICREG_OK);
+        ck_assert_int_eq(fricreg_disk_ctx_set_bounds(ctx, DM, mun), FRICREG_OK);
+        int status = coupling < 2 ? fricreg_disk_ctx_set_coupling_dense(ctx, DM, W[coupling])
+                                  : fricreg_disk_ctx_set_coupling_blocks(ctx, DM, w);
+        ck_assert_msg(status == FRICREG_OK, "coupling %d: %s", coupling,
+                      fricreg_disk_ctx_errmsg(ctx));
+        assert_handler_intact("fricreg_disk_ctx_set_coupling");
+        disk_evals(ctx, "Coulomb bounds");
+        ck_assert_int_eq(fricreg_disk_ctx_set_stribeck(ctx, DM, fs, fk, vs, delta), FRICREG_OK);
+        assert_handler_intact("fricreg_disk_ctx_set_stribeck");
+        disk_evals(ctx, "Stribeck friction");
+        ck_assert_int_eq(fricreg_disk_ctx_set_law(ctx, FRICREG_DISK_FORCE_BALANCE, 0.02),
+                         FRICREG_OK);
+        disk_evals(ctx, "force balance");
+        fricreg_disk_ctx_free(ctx);
+    }
+}
+END_TEST
+
+/* W refused (indefinite, not symmetric, a block not positive definite) and a singular W
+ * (two contacts with identical rows, accepted): the singular block comes back as
+ * FRICREG_ESINGULAR from eval, or from the tangent where eval found a minimizer. */
+START_TEST(disk_contexts_refused_and_singular)
+{
+    static const double indefinite[16] = {1, 0, 2, 0, 0, 1, 0, 2, 2, 0, 1, 0, 0, 2, 0, 1};
+    static const double nonsym[16] = {1, 0, 0.5, 0, 0, 1, 0, 0.5, 0.4, 0, 1, 0, 0, 0.5, 0, 1};
+    static const double blocks[8] = {1.0, 0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 1.0};
+    static const double singular[16] = {1, 0, 1, 0, 0, 1, 0, 1, 1, 0, 1, 0, 0, 1, 0, 1};
+    static const double mun[2] = {1.0, 1.0}, zdot[4] = {0}, afree[4] = {0.1, 0.1, 0.1, 0.1};
+    double f[4], T[16];
+    fricreg_disk_ctx *ctx = NULL;
+    ck_assert_int_eq(fricreg_disk_ctx_create(2, &ctx), FRICREG_OK);
+    ck_assert_int_eq(fricreg_disk_ctx_set_coupling_dense(ctx, 2, indefinite), FRICREG_ENOTPSD);
+    assert_handler_intact("fricreg_disk_ctx_set_coupling_dense, indefinite");
+    ck_assert_int_eq(fricreg_disk_ctx_set_coupling_dense(ctx, 2, nonsym), FRICREG_ENOTSYM);
+    assert_handler_intact("fricreg_disk_ctx_set_coupling_dense, not symmetric");
+    ck_assert_int_eq(fricreg_disk_ctx_set_coupling_blocks(ctx, 2, blocks), FRICREG_ENOTPSD);
+    assert_handler_intact("fricreg_disk_ctx_set_coupling_blocks, indefinite");
+    ck_assert_int_eq(fricreg_disk_ctx_set_law(ctx, FRICREG_DISK_QUINN, 0.1), FRICREG_OK);
+    ck_assert_int_eq(fricreg_disk_ctx_set_bounds(ctx, 2, mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_disk_ctx_set_coupling_dense(ctx, 2, singular), FRICREG_OK);
+    int status = fricreg_disk_ctx_eval(ctx, 2, zdot, afree, f);
+    assert_handler_intact("fricreg_disk_ctx_eval, singular W");
+    if (status == FRICREG_OK) {
+        status = fricreg_disk_ctx_tangent(ctx, 2, T, T);
+        assert_handler_intact("fricreg_disk_ctx_tangent, singular W");
+    }
+    ck_assert_int_eq(status, FRICREG_ESINGULAR);
+    fricreg_disk_ctx_free(ctx);
+}
+END_TEST
+
 /* Each system with each stepper family: GSL's explicit rk4 (fixed), rkf45 (adaptive), the
  * implicit rk4imp and bsimp, the multistep msadams and msbdf; and runs that fail (a step too
  * large for the guard). */
@@ -167,13 +271,16 @@ END_TEST
 START_TEST(exact_solver)
 {
     fricreg_exact *ex = NULL;
+    int status; /* checked after the handler: a report to it is what this test is for */
     ck_assert_int_eq(fricreg_exact_create(2.0, 0.5, 1.0, 0.0, 0.0, &ex), FRICREG_OK);
-    ck_assert_int_eq(fricreg_exact_run_cycles(ex, 20), FRICREG_OK);
+    status = fricreg_exact_run_cycles(ex, 20);
     assert_handler_intact("fricreg_exact_run");
+    ck_assert_int_eq(status, FRICREG_OK);
     fricreg_exact_free(ex);
     ck_assert_int_eq(fricreg_exact_create(2.0, 1e-300, 1.0, 0.0, 0.0, &ex), FRICREG_OK);
-    ck_assert_int_eq(fricreg_exact_run_cycles(ex, 1), FRICREG_EINVAL);
+    status = fricreg_exact_run_cycles(ex, 1);
     assert_handler_intact("fricreg_exact_run, refused");
+    ck_assert_int_eq(status, FRICREG_EINVAL);
     fricreg_exact_free(ex);
     if (fricreg_exact_solve(1e308, 1e6, 0.0, -1e308, 1e308, 1.0, &ex) == FRICREG_OK)
         fricreg_exact_free(ex);
@@ -202,16 +309,20 @@ START_TEST(structures)
     static const double indefinite[4] = {1.0, 2.0, 2.0, 1.0}, singular[4] = {1.0, 1.0, 1.0, 1.0};
     static const double negative[4] = {-1.0, 0.0, 0.0, 1.0};
     fricreg_structure *s = structure();
-    ck_assert_int_eq(fricreg_structure_set_mass(s, 2, indefinite), FRICREG_ENOTPSD);
+    /* each status checked after the handler: a report to it is what this test is for */
+    int status = fricreg_structure_set_mass(s, 2, indefinite);
     assert_handler_intact("fricreg_structure_set_mass, indefinite");
-    ck_assert_int_eq(fricreg_structure_set_mass(s, 2, singular), FRICREG_ENOTPSD);
+    ck_assert_int_eq(status, FRICREG_ENOTPSD);
+    status = fricreg_structure_set_mass(s, 2, singular);
     assert_handler_intact("fricreg_structure_set_mass, singular");
-    ck_assert_int_eq(fricreg_structure_set_mass(s, 2, negative), FRICREG_ENOTPSD);
+    ck_assert_int_eq(status, FRICREG_ENOTPSD);
+    status = fricreg_structure_set_mass(s, 2, negative);
     assert_handler_intact("fricreg_structure_set_mass, negative");
+    ck_assert_int_eq(status, FRICREG_ENOTPSD);
     ck_assert_int_eq(fricreg_structure_run(s, 0.01, 1.0), FRICREG_OK);
     assert_handler_intact("fricreg_structure_run, Newmark");
     ck_assert_int_eq(fricreg_structure_set_central_difference(s), FRICREG_OK);
-    int status = fricreg_structure_run(s, 0.01, 2.0);
+    status = fricreg_structure_run(s, 0.01, 2.0);
     ck_assert_msg(status == FRICREG_OK || status == FRICREG_ESTEP, "%s",
                   fricreg_structure_errmsg(s));
     assert_handler_intact("fricreg_structure_run, central difference");
@@ -258,6 +369,8 @@ static Suite *handler_suite(void)
     tcase_set_timeout(tc, 120.0);
     tcase_add_test(tc, laws);
     tcase_add_test(tc, contexts);
+    tcase_add_test(tc, disk_contexts);
+    tcase_add_test(tc, disk_contexts_refused_and_singular);
     tcase_add_loop_test(tc, simulations, 0, 3);
     tcase_add_test(tc, exact_solver);
     tcase_add_test(tc, structures);

@@ -3,10 +3,13 @@
  * used from separate threads at once"), next to a thread of the program's own that uses GSL
  * with its own error handler.
  *
- * Eight threads each run, ROUNDS times, their own context (dense W: eval, tangent, stick
- * stiffness, and a singular W), a simulation (a different system and stepper
- * family per thread: fricreg's rk4, GSL's rkf45, rk4imp, msbdf) and an exact solution; every
- * result must equal, bit for bit, the same work done before in one thread. Meanwhile a ninth
+ * Eight threads each run, ROUNDS times, one object of every kind, their own: a 1-D context
+ * (dense W: eval, tangent, stick stiffness, and a singular W), a 1-D context with Stribeck
+ * friction (both partitions), a 2-D context with Stribeck friction (dense W, then anisotropic
+ * blocks: eval and tangent), a structure (Newmark or HHT-alpha, then run_ode with rkf45 or
+ * rk4), a simulation (a different system and stepper family per thread: fricreg's rk4, GSL's
+ * rkf45, rk4imp, msbdf) and an exact solution; every result and status must equal, bit for
+ * bit, the same work done before in one thread, and every status the one expected. Meanwhile a ninth
  * thread provokes GSL_ERRORS errors of its own (Cholesky of an indefinite matrix) and its
  * handler must see every one: a library that switches GSL's process-wide handler off around
  * its calls makes such a thread lose some of its errors (4.3 % of them, measured). The
@@ -15,30 +18,50 @@
 #include <check.h>
 #include <pthread.h>
 #include <stdatomic.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_linalg.h>
 
+#include "fricreg_disk_ctx.h"
 #include "fricreg_exact.h"
 #include "fricreg_sim.h"
+#include "fricreg_stribeck.h"
+#include "fricreg_structure.h"
 
 #define NTHREADS 8
 #define ROUNDS 3
-#define NRESULTS 48
+#define NRESULTS 256
+#define NSTATUS 64
 #define GSL_ERRORS 2000
 
 struct results {
     double v[NRESULTS];
     int n;
-    int status[8];
+    int status[NSTATUS];
     int nstatus;
+    int unexpected; /* statuses other than the one expected */
 };
 
 static void put(struct results *r, double x)
 {
     if (r->n < NRESULTS)
         r->v[r->n++] = x;
+}
+
+static void put_all(struct results *r, const double x[], int n)
+{
+    for (int k = 0; k < n; k++)
+        put(r, x[k]);
+}
+
+/* Records a call's status, and whether it is the one expected. */
+static void expect(struct results *r, int status, int want)
+{
+    if (r->nstatus < NSTATUS)
+        r->status[r->nstatus++] = status;
+    r->unexpected += status != want;
 }
 
 /* Context k: a 3 x 3 dense positive definite W that depends on k, evaluated near stick. */
@@ -52,22 +75,127 @@ static void context_work(int k, struct results *r)
     const double a_free[3] = {0.5 + d, -0.25, 3.0};
     double f[3], f_eq[3], Fz[9], Fa[9], lambda = 0.0;
     fricreg_ctx *ctx = NULL;
-    r->status[r->nstatus++] = fricreg_ctx_create(3, &ctx);
-    fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, 0.02);
-    fricreg_ctx_set_bounds(ctx, 3, mun);
-    fricreg_ctx_set_coupling_dense(ctx, 3, W);
-    r->status[r->nstatus++] = fricreg_ctx_eval(ctx, 3, zdot, a_free, f, f_eq);
-    fricreg_ctx_tangent(ctx, 3, Fz, Fa);
-    fricreg_ctx_stick_stiffness(ctx, &lambda);
+    expect(r, fricreg_ctx_create(3, &ctx), FRICREG_OK);
+    expect(r, fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, 0.02), FRICREG_OK);
+    expect(r, fricreg_ctx_set_bounds(ctx, 3, mun), FRICREG_OK);
+    expect(r, fricreg_ctx_set_coupling_dense(ctx, 3, W), FRICREG_OK);
+    expect(r, fricreg_ctx_eval(ctx, 3, zdot, a_free, f, f_eq), FRICREG_OK);
+    expect(r, fricreg_ctx_tangent(ctx, 3, Fz, Fa), FRICREG_OK);
+    expect(r, fricreg_ctx_stick_stiffness(ctx, &lambda), FRICREG_OK);
     for (int i = 0; i < 3; i++) {
         put(r, f[i]);
         put(r, Fz[4 * i]);
     }
     put(r, lambda);
-    fricreg_ctx_set_coupling_dense(ctx, 3, singular);
+    expect(r, fricreg_ctx_set_coupling_dense(ctx, 3, singular), FRICREG_OK);
     const double rest[3] = {0.0, 0.0, 0.0};
-    r->status[r->nstatus++] = fricreg_ctx_eval(ctx, 3, rest, a_free, f, f_eq); /* an error path */
+    /* an error path for most k: contacts 0 and 1 are redundant, both at rest (FRICREG_OK where
+     * the QP's active set holds one of them at its bound): compared with the threads' only */
+    int singular_status = fricreg_ctx_eval(ctx, 3, rest, a_free, f, f_eq);
+    expect(r, singular_status, singular_status);
     fricreg_ctx_free(ctx);
+}
+
+/* Stribeck friction in a 1-D context k: dense W, contacts at rest, in the band and sliding,
+ * under both partitions; the forces, the tangent and the stick stiffness. */
+static void stribeck_ctx_work(int k, struct results *r)
+{
+    const double d = 0.05 * k;
+    const double W[9] = {1.8 + d, -0.4,           0.2,    -0.4, 2.2, 0.1 + 0.01 * k,
+                         0.2,     0.1 + 0.01 * k, 1.1 + d};
+    const double fs[3] = {1.2 + d, 0.9, 2.0}, fk[3] = {0.8, 0.6 + 0.5 * d, 1.5};
+    const double vs[3] = {0.01, 0.02 + 0.001 * k, 0.005}, delta[3] = {1.0, 2.0, 0.5 + d};
+    const double zdot[3] = {0.0, 4e-3 + 1e-4 * k, -0.3}, a_free[3] = {0.7 - d, -1.25, 0.4};
+    double f[3], Fz[9], Fa[9], lambda = 0.0;
+    fricreg_ctx *ctx = NULL;
+    expect(r, fricreg_ctx_create(3, &ctx), FRICREG_OK);
+    expect(r, fricreg_ctx_set_coupling_dense(ctx, 3, W), FRICREG_OK);
+    expect(r, fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, 0.02), FRICREG_OK);
+    expect(r, fricreg_ctx_set_stribeck(ctx, 3, fs, fk, vs, delta), FRICREG_OK);
+    expect(r, fricreg_ctx_eval(ctx, 3, zdot, a_free, f, NULL), FRICREG_OK);
+    put_all(r, f, 3);
+    expect(r, fricreg_ctx_tangent(ctx, 3, Fz, Fa), FRICREG_OK);
+    put_all(r, Fz, 9);
+    put_all(r, Fa, 9);
+    expect(r, fricreg_ctx_stick_stiffness(ctx, &lambda), FRICREG_OK);
+    put(r, lambda);
+    expect(r, fricreg_ctx_set_partition(ctx, FRICREG_PARTITION_PAPER), FRICREG_OK);
+    expect(r, fricreg_ctx_eval(ctx, 3, zdot, a_free, f, NULL), FRICREG_OK);
+    put_all(r, f, 3);
+    fricreg_ctx_free(ctx);
+}
+
+/* A 2-D context k of 3 contacts with Stribeck friction: a dense W (diagonally dominant, so
+ * positive definite), then anisotropic blocks; contacts at rest, in the band and sliding,
+ * eval and tangent each. */
+static void disk_work(int k, struct results *r)
+{
+    enum { M = 3, N = 2 * M };
+    double W[N * N], w[4 * M], f[N], Fz[N * N], Fa[N * N];
+    for (int i = 0; i < N; i++)
+        for (int j = 0; j < N; j++)
+            W[i * N + j] = i == j ? 1.5 + 0.1 * i + 0.05 * k : 0.2 / (1.0 + abs(i - j));
+    for (int i = 0; i < M; i++) {
+        w[4 * i] = 1.25 + 0.1 * i + 0.02 * k;
+        w[4 * i + 1] = w[4 * i + 2] = 0.3 - 0.05 * i;
+        w[4 * i + 3] = 0.8 + 0.125 * i;
+    }
+    const double fs[M] = {1.2 + 0.05 * k, 0.9, 2.0}, fk[M] = {0.8, 0.6, 1.5 - 0.02 * k};
+    const double vs[M] = {0.01, 0.02, 0.005 + 0.001 * k}, delta[M] = {1.0, 2.0, 0.5};
+    const double zdot[N] = {0.0, 0.0, 3e-3, -1e-3 * (k + 1), 0.25, -0.5};
+    const double a_free[N] = {0.6 - 0.03 * k, -0.35, 1.25, 0.4, -0.2, 0.9};
+    fricreg_disk_ctx *ctx = NULL;
+    expect(r, fricreg_disk_ctx_create(M, &ctx), FRICREG_OK);
+    expect(r, fricreg_disk_ctx_set_law(ctx, FRICREG_DISK_QUINN, 0.02), FRICREG_OK);
+    expect(r, fricreg_disk_ctx_set_stribeck(ctx, M, fs, fk, vs, delta), FRICREG_OK);
+    for (int coupling = 0; coupling < 2; coupling++) {
+        expect(r,
+               coupling == 0 ? fricreg_disk_ctx_set_coupling_dense(ctx, M, W)
+                             : fricreg_disk_ctx_set_coupling_blocks(ctx, M, w),
+               FRICREG_OK);
+        expect(r, fricreg_disk_ctx_eval(ctx, M, zdot, a_free, f), FRICREG_OK);
+        put_all(r, f, N);
+        expect(r, fricreg_disk_ctx_tangent(ctx, M, Fz, Fa), FRICREG_OK);
+        put_all(r, Fz, N * N);
+        put_all(r, Fa, N * N);
+    }
+    fricreg_disk_ctx_free(ctx);
+}
+
+/* A structure k: two masses on springs, a friction contact on the first, a load record;
+ * Newmark (even k) or HHT-alpha (odd k) to t = 1, then GSL's rkf45 (adaptive; or rk4 in fixed
+ * steps) to t = 2. */
+static void structure_work(int k, struct results *r)
+{
+    const double M[4] = {2.0, 0.0, 0.0, 1.0}, K[4] = {30.0, -10.0, -10.0, 10.0 + k};
+    const double J[2] = {1.0, 0.0}, mun[1] = {0.3 + 0.01 * k}, p[2] = {0.0, 1.0};
+    const double load[3] = {0.0, 2.385 + 0.1 * k, 0.0};
+    double u[2], v[2], D[1], residual = 0.0;
+    fricreg_structure *s = NULL;
+    expect(r, fricreg_structure_create(2, 1, &s), FRICREG_OK);
+    expect(r, fricreg_structure_set_mass(s, 2, M), FRICREG_OK);
+    expect(r, fricreg_structure_set_stiffness(s, 2, K), FRICREG_OK);
+    expect(r, fricreg_structure_set_rayleigh(s, 0.05, 0.002), FRICREG_OK);
+    expect(r, fricreg_structure_set_contacts(s, 1, 2, J), FRICREG_OK);
+    expect(r, fricreg_structure_set_bounds(s, 1, mun), FRICREG_OK);
+    expect(r, fricreg_structure_set_law(s, FRICREG_LAW_QUINN, 0.01), FRICREG_OK);
+    expect(r, fricreg_structure_set_load(s, 2, p, 0.0, 0.5, 3, load), FRICREG_OK);
+    if (k % 2)
+        expect(r, fricreg_structure_set_hht(s, -0.05 * (k % 4)), FRICREG_OK);
+    expect(r, fricreg_structure_run(s, 0.01, 1.0), FRICREG_OK);
+    expect(r, fricreg_structure_get_state(s, 2, u, v, NULL), FRICREG_OK);
+    expect(r, fricreg_structure_get_dissipation(s, 1, D), FRICREG_OK);
+    expect(r, fricreg_structure_get_value(s, FRICREG_SVALUE_RESIDUAL, &residual), FRICREG_OK);
+    put_all(r, u, 2), put_all(r, v, 2), put(r, D[0]), put(r, residual);
+    int adaptive = k % 4 < 2;
+    expect(r,
+           fricreg_structure_run_ode(s, adaptive ? FRICREG_INT_RKF45 : FRICREG_INT_RK4, 0.005,
+                                     adaptive ? 1e-7 : 0.0, adaptive ? 1e-9 : 0.0, 2.0),
+           FRICREG_OK);
+    expect(r, fricreg_structure_get_state(s, 2, u, v, NULL), FRICREG_OK);
+    expect(r, fricreg_structure_get_dissipation(s, 1, D), FRICREG_OK);
+    put_all(r, u, 2), put_all(r, v, 2), put(r, D[0]);
+    fricreg_structure_free(s);
 }
 
 static void sim_work(int k, struct results *r)
@@ -78,15 +206,18 @@ static void sim_work(int k, struct results *r)
                                           {FRICREG_INT_MSBDF, 1}};
     const int *integ = integrators[k % 4];
     fricreg_sim *sim = NULL;
-    r->status[r->nstatus++] = fricreg_sim_create(FRICREG_SYSTEM_OSCILLATOR + k % 3, &sim);
-    fricreg_sim_set_integrator(sim, integ[0], 0.01, integ[1] ? 1e-7 : 0.0, integ[1] ? 1e-9 : 0.0);
+    expect(r, fricreg_sim_create(FRICREG_SYSTEM_OSCILLATOR + k % 3, &sim), FRICREG_OK);
+    expect(r,
+           fricreg_sim_set_integrator(sim, integ[0], 0.01, integ[1] ? 1e-7 : 0.0,
+                                      integ[1] ? 1e-9 : 0.0),
+           FRICREG_OK);
     if (k % 3 != 2)
-        fricreg_sim_set_param(sim, FRICREG_PARAM_OMEGA, 0.5 + 0.05 * k);
-    r->status[r->nstatus++] = fricreg_sim_run_cycles(sim, 2);
+        expect(r, fricreg_sim_set_param(sim, FRICREG_PARAM_OMEGA, 0.5 + 0.05 * k), FRICREG_OK);
+    expect(r, fricreg_sim_run_cycles(sim, 2), FRICREG_OK);
     double x[64], v[64], D[2];
     size_t n = fricreg_sim_ndof(sim);
-    fricreg_sim_get_state(sim, n, x, v);
-    fricreg_sim_get_dissipation(sim, 2, D);
+    expect(r, fricreg_sim_get_state(sim, n, x, v), FRICREG_OK);
+    expect(r, fricreg_sim_get_dissipation(sim, 2, D), FRICREG_OK);
     put(r, x[0]);
     put(r, v[n - 1]);
     put(r, D[0]);
@@ -97,12 +228,11 @@ static void sim_work(int k, struct results *r)
 static void exact_work(int k, struct results *r)
 {
     fricreg_exact *ex = NULL;
-    r->status[r->nstatus++] = fricreg_exact_create(2.0 + 0.1 * k, 0.5 + 0.1 * k, 1.0, 0.0, 0.0,
-                                                   &ex);
-    r->status[r->nstatus++] = fricreg_exact_run_cycles(ex, 5);
+    expect(r, fricreg_exact_create(2.0 + 0.1 * k, 0.5 + 0.1 * k, 1.0, 0.0, 0.0, &ex), FRICREG_OK);
+    expect(r, fricreg_exact_run_cycles(ex, 5), FRICREG_OK);
     double D[5], x, v;
-    fricreg_exact_dissipation(ex, 5, D);
-    fricreg_exact_state(ex, 2.385, &x, &v);
+    expect(r, fricreg_exact_dissipation(ex, 5, D), FRICREG_OK);
+    expect(r, fricreg_exact_state(ex, 2.385, &x, &v), FRICREG_OK);
     for (int c = 0; c < 5; c++)
         put(r, D[c]);
     put(r, x);
@@ -114,6 +244,9 @@ static void work(int k, struct results *r)
 {
     memset(r, 0, sizeof *r);
     context_work(k, r);
+    stribeck_ctx_work(k, r);
+    disk_work(k, r);
+    structure_work(k, r);
     sim_work(k, r);
     exact_work(k, r);
 }
@@ -161,11 +294,12 @@ START_TEST(threads_match_one_thread)
     gsl_set_error_handler(users_handler);
     for (int k = 0; k < NTHREADS; k++) {
         work(k, &reference[k]);
-        ck_assert_int_eq(reference[k].n, 18);
-        for (int s = 0; s < reference[k].nstatus; s++)
-            if (s != 2) /* the singular W's status: compared with the threads' below */
-                ck_assert_msg(reference[k].status[s] == FRICREG_OK, "thread %d, call %d: %s", k, s,
-                              fricreg_strerror(reference[k].status[s]));
+        /* results per thread: context 3 f + 3 Fz_ii + lambda = 7; Stribeck context 3 f +
+         * 2 x 9 tangent + lambda + 3 f = 25; 2-D context 2 x (6 f + 2 x 36 tangent) = 156;
+         * structure 2 x (2 u + 2 v + D) + the residual = 11; simulation 4; exact 7 */
+        ck_assert_int_eq(reference[k].n, 7 + 25 + 156 + 11 + 4 + 7);
+        ck_assert_msg(reference[k].unexpected == 0, "thread %d: %d unexpected statuses", k,
+                      reference[k].unexpected);
     }
     ck_assert_int_eq(atomic_load(&users_errors), 0); /* fricreg reported nothing to it */
 

@@ -204,9 +204,9 @@ int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, d
     }
     if (status != FRICREG_OK)
         return status;
-    if (s->fresh)
-        fr_energy_start(s);
 
+    /* Everything is allocated before the balance starts: a failed allocation leaves the
+     * structure as it was (its initial energy and the balance's start included). */
     struct ode_run run = {.s = s, .dim = 2 * s->n + 2 + s->m, .rhs_status = FRICREG_OK};
     double *y = malloc(run.dim * sizeof *y);
     run.jac_work = malloc(3 * run.dim * sizeof *run.jac_work);
@@ -215,26 +215,28 @@ int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, d
         free(run.jac_work);
         return fr_fail(s, FRICREG_ENOMEM, "run_ode: no memory for a state of %zu", run.dim);
     }
+    gsl_odeiv2_system sys = {rhs, jacobian, run.dim, &run};
+    gsl_odeiv2_driver *d = fr_ode_driver_alloc(&sys, fr_integrator_stepper(integ, adaptive),
+                                               dt * integ->substeps,
+                                               adaptive ? atol : integ->fixed_tolerance,
+                                               adaptive ? rtol : 0.0);
+    if (d == NULL) {
+        free(y);
+        free(run.jac_work);
+        return fr_fail(s, FRICREG_ENOMEM, "run_ode: GSL driver allocation failed");
+    }
+    if (s->fresh)
+        fr_energy_start(s);
     memcpy(y, s->u->data, s->n * sizeof *y);
     memcpy(y + s->n, s->v->data, s->n * sizeof *y);
     y[2 * s->n] = s->energy.input;
     y[2 * s->n + 1] = s->energy.viscous;
     memcpy(y + 2 * s->n + 2, s->energy.per_contact, s->m * sizeof *y);
 
-    gsl_odeiv2_system sys = {rhs, jacobian, run.dim, &run};
-    gsl_odeiv2_driver *d = fr_ode_driver_alloc(&sys, fr_integrator_stepper(integ, adaptive),
-                                               dt * integ->substeps,
-                                               adaptive ? atol : integ->fixed_tolerance,
-                                               adaptive ? rtol : 0.0);
-    if (d == NULL)
-        status = fr_fail(s, FRICREG_ENOMEM, "run_ode: GSL driver allocation failed");
-    else {
-        s->running = 1;
-        status = integrate(s, &run, d, integ, adaptive, dt, t_end, y);
-        s->running = 0;
-    }
-    if (d)
-        gsl_odeiv2_driver_free(d);
+    s->running = 1;
+    status = integrate(s, &run, d, integ, adaptive, dt, t_end, y);
+    s->running = 0;
+    gsl_odeiv2_driver_free(d);
     free(y);
     free(run.jac_work);
     s->fresh = 0;
