@@ -176,7 +176,8 @@ static void op_set_blocks(struct fuzz_input *in, fricreg_disk_ctx *ctx, struct m
     int status = fricreg_disk_ctx_set_coupling_blocks(ctx, m, null ? NULL : w);
     require_status(ctx, status,
                    CODE(FRICREG_ENULL) | CODE(FRICREG_ESIZE) | CODE(FRICREG_ENONFINITE) |
-                       CODE(FRICREG_ENOTSYM) | CODE(FRICREG_ENOTPSD) | CODE(FRICREG_ENOMEM),
+                       CODE(FRICREG_EINVAL) | CODE(FRICREG_ENOTSYM) | CODE(FRICREG_ENOTPSD) |
+                       CODE(FRICREG_ENOMEM),
                    "set_coupling_blocks");
     FUZZ_REQUIRE(memcmp(w, w0, sizeof w) == 0, "set_coupling_blocks changed the caller's w");
     if (status != FRICREG_OK)
@@ -208,7 +209,8 @@ static void op_set_dense(struct fuzz_input *in, fricreg_disk_ctx *ctx, struct mo
     int status = fricreg_disk_ctx_set_coupling_dense(ctx, m, null ? NULL : W);
     require_status(ctx, status,
                    CODE(FRICREG_ENULL) | CODE(FRICREG_ESIZE) | CODE(FRICREG_ENONFINITE) |
-                       CODE(FRICREG_ENOTSYM) | CODE(FRICREG_ENOTPSD) | CODE(FRICREG_ENOMEM),
+                       CODE(FRICREG_EINVAL) | CODE(FRICREG_ENOTSYM) | CODE(FRICREG_ENOTPSD) |
+                       CODE(FRICREG_ENOMEM),
                    "set_coupling_dense");
     FUZZ_REQUIRE(memcmp(W, W0, sizeof W) == 0, "set_coupling_dense changed the caller's W");
     if (status != FRICREG_OK)
