@@ -237,7 +237,8 @@ FRICREG_API int fricreg_sim_set_max_steps(fricreg_sim *sim, int64_t max_steps);
  *  it chases back and forth across zdot = 0 in ever smaller steps; the message says so.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if t_end <= 0, or too many fixed steps
- *  (more than 2^31) or cycles (more than 10^9), or FRICREG_INT_CENTRAL_IMEX with a law other
+ *  (more than 2^31 stepper calls: rk4 and rk4-gsl take two steps of dt a call, so 2^32 of
+ *  theirs) or cycles (more than 10^9), or FRICREG_INT_CENTRAL_IMEX with a law other
  *  than (4) or on the two blocks; FRICREG_ENONFINITE; FRICREG_ESTEP; FRICREG_EDIVERGED; FRICREG_EINTEGRATOR
  *  (GSL failed, e.g. the adaptive step underflowed); FRICREG_EWORK; FRICREG_ESINGULAR;
  *  FRICREG_ENOMEM.
