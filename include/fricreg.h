@@ -77,6 +77,29 @@ enum fricreg_status {
  *  "unknown fricreg status code". Thread safe. */
 FRICREG_API const char *fricreg_strerror(int status);
 
+/* ---- Compressed sparse matrices ---------------------------------------------------------- */
+
+/** How a compressed sparse matrix is given to the _csr and _csc setters (since 1.6). Values
+ *  are fixed forever; combine with |.
+ *
+ *  A matrix of nrows x ncols in compressed sparse rows (CSR) is three arrays: ptr[nrows + 1]
+ *  with ptr[0] = base, non-decreasing; ind[nnz], the column of each entry, row i's entries
+ *  being ind[ptr[i] - base .. ptr[i+1] - base - 1]; and val[nnz], their values (nnz =
+ *  ptr[nrows] - base). Compressed sparse columns (CSC) swap rows and columns. Indices are
+ *  int64_t (Fortran: integer(c_int64_t)); base is 0, or 1 with FRICREG_SPARSE_ONE_BASED.
+ *  Within a row (column) entries may come in any order; duplicates are summed, as in
+ *  finite-element assembly; explicit zeros are kept (they belong to the pattern). A symmetric
+ *  matrix may be given whole (then checked symmetric, and its symmetric part (A + A^T)/2
+ *  used) or by one triangle, the diagonal included: the other triangle then must hold no
+ *  entry. Whole or by a triangle, CSR and CSC of a symmetric matrix are the same arrays but
+ *  for the triangle: a CSR upper triangle is a CSC lower one. */
+enum fricreg_sparse_flags {
+    FRICREG_SPARSE_ZERO_BASED = 0, /**< indices and ptr count from 0 (C), the default */
+    FRICREG_SPARSE_ONE_BASED = 1,  /**< indices and ptr count from 1 (Fortran) */
+    FRICREG_SPARSE_UPPER = 2,      /**< symmetric, given by its upper triangle (column >= row) */
+    FRICREG_SPARSE_LOWER = 4       /**< symmetric, given by its lower triangle (column <= row) */
+};
+
 /** \} */
 
 /* ---- Friction laws ----------------------------------------------------------------------- */

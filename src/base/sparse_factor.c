@@ -10,8 +10,8 @@ int fr_cholmod_start(cholmod_common *c)
     memset(c, 0, sizeof *c);
     if (!cholmod_l_start(c))
         return FRICREG_ENOMEM;
-    c->print = 0;             /* CHOLMOD prints nothing (its default, 3, prints errors) */
-    c->error_handler = NULL;  /* failures come back in c->status */
+    c->print = 0;            /* CHOLMOD prints nothing (its default, 3, prints errors) */
+    c->error_handler = NULL; /* failures come back in c->status */
     c->try_catch = 0;
     return FRICREG_OK;
 }
