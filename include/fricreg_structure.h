@@ -7,18 +7,27 @@
  *
  *     M u'' + C u' + K u = p(t) - M r a_g(t) + J^T f,      zdot = J u'
  *
- * u[ndof] are the structure's displacements, M, C, K its dense mass, damping and stiffness
+ * u[ndof] are the structure's displacements, M, C, K its mass, damping and stiffness
  * matrices, p(t) an external load, r the influence vector of a ground acceleration a_g(t), J
  * the m x ndof contact matrix and f[m] the friction forces, given by a fricreg context
  * (fricreg.h) from the contact velocities zdot = J u' and the free contact accelerations
  * a_free = J M^-1 (p - M r a_g - C u' - K u), with the Delassus matrix W = J M^-1 J^T. The
- * object forms W and a_free itself (one GSL Cholesky factor of M); coupled contacts (dense W)
- * use the consistent near-stick law (FRICREG_PARTITION_CONSISTENT).
+ * object forms W and a_free itself; coupled contacts (W not diagonal) use the consistent
+ * near-stick law (FRICREG_PARTITION_CONSISTENT).
+ *
+ * The model is sparse inside, whatever form it is given in: M, C, K and J are kept in
+ * compressed columns and factored by CHOLMOD (SuiteSparse's sparse Cholesky), so that a step
+ * costs about one sparse solve with K_eff = M + gamma dt C + beta dt^2 K plus work in the m
+ * contacts only (fricreg_structure_step). A lumped (diagonal) M is the cheapest, a
+ * consistent one is factored once per model.
  *
  * Units are the caller's, consistent and physical: e.g. kg, N/m, N s/m, m, s, N; eps of the
- * friction law is a velocity (m/s). All matrices are dense and row-major (A[i*ncols + j]);
- * M, C and K are symmetric, so Fortran may pass them as they are, while J (m x ndof) must be
- * passed transposed from a Fortran J(m, ndof) array (or stored as Jt(ndof, m)).
+ * friction law is a velocity (m/s). The matrices are given dense and row-major
+ * (A[i*ncols + j]), or as compressed sparse rows or columns (the _csr and _csc setters, with
+ * fricreg.h's enum fricreg_sparse_flags: one-based CSC is what Fortran codes hold), or as GSL
+ * sparse matrices (fricreg_structure_gsl.h). Dense M, C and K are symmetric, so Fortran may
+ * pass them as they are, while a dense J (m x ndof) must be passed transposed from a Fortran
+ * J(m, ndof) array (or stored as Jt(ndof, m)).
  *
  * Conventions are those of fricreg.h: int results are fricreg_status codes, nothing is
  * printed, a failed call leaves the caller's arrays untouched, one object per thread.
@@ -48,14 +57,16 @@ typedef struct fricreg_structure fricreg_structure;
  *  Defaults: M = I, C = 0, K = 0, J unset (set_contacts before the first step), mun[i] = 1,
  *  law (4) with eps = 1e-3, r = 0, no load and no ground motion, u = u' = 0 at t = 0,
  *  average-acceleration Newmark (beta = 1/4, gamma = 1/2), Newton tolerance 1e-10 and at
- *  most 50 iterations. All memory is allocated here (O(ndof^2 + m ndof + m^2) doubles), but
- *  for the records of set_ground_accel and set_load and for W: the first step after a model
- *  setter hands the new W to the contacts (fricreg_ctx_set_coupling_dense, which allocates
- *  its copy and its checks' scratch, O(m^2), and frees the old); the other steps never
- *  allocate.
+ *  most 50 iterations. Allocates O(ndof + m) here. The setters copy what they are given; the
+ *  first step after a model setter factors M and hands W to the contacts (a dense m x m W
+ *  when contacts couple, fricreg_ctx_set_coupling_dense), the first step with a new dt (or
+ *  scheme) factors K_eff, and the step guard's first use computes the model's rates (dense
+ *  eigenvalues up to 2048 degrees of freedom): those steps allocate. The other steps never
+ *  do (but for a falling Stribeck branch under a diagonal W with more than 64 contacts,
+ *  whose dense Newton matrix is allocated at its first use).
  *
- *  ndof  number of degrees of freedom, 1 <= ndof <= 2^15.
- *  m     number of friction contacts, 1 <= m <= 2^15 (a structure without friction: one
+ *  ndof  number of degrees of freedom, 1 <= ndof <= 2^40 (memory runs out first).
+ *  m     number of friction contacts, 1 <= m <= 2^26 (a structure without friction: one
  *        contact with mun = 0, whose force is exactly 0).
  *  out   out: the structure, released with fricreg_structure_free. Written only on success.
  *
@@ -68,25 +79,29 @@ FRICREG_API void fricreg_structure_free(fricreg_structure *s);
 
 /** Set the mass matrix M[ndof*ndof] (mass units, e.g.\ kg), symmetric to 1e-12 of the rows'
  *  scales (|M_ij - M_ji| <= 1e-12 sqrt(r_i r_j), r_i = max_k |M_ik|, so that a change of
- *  units of a degree of freedom does not change the verdict) and positive definite (GSL's
- *  Cholesky decomposition succeeds). Copied.
+ *  units of a degree of freedom does not change the verdict) and positive definite (CHOLMOD's
+ *  Cholesky factor exists: every pivot positive). Copied, its symmetric part (M + M^T)/2, its
+ *  zero entries left out.
  *  Like every model setter, it takes effect at the next step, which recomputes the
  *  acceleration at the current state from the equation of motion.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if ndof is not the structure's;
- *  FRICREG_ENONFINITE; FRICREG_ENOTSYM; FRICREG_ENOTPSD if M is not positive definite, or so
- *  nearly singular that GSL's Cholesky factor could fail: D^-1/2 M D^-1/2 (D the diagonal of
- *  M) needs its smallest eigenvalue above 2 n (n + 1) 2.2e-16 (Demmel's condition). */
+ *  FRICREG_ENONFINITE; FRICREG_ENOTSYM; FRICREG_ENOTPSD if M is not positive definite (a
+ *  pivot of its Cholesky factor is not positive; the message names its column);
+ *  FRICREG_ENOMEM. */
 FRICREG_API int fricreg_structure_set_mass(fricreg_structure *s, size_t ndof, const double M[]);
 
 /** Set the stiffness matrix K[ndof*ndof] (force per length, e.g.\ N/m), symmetric (to 1e-12 of
- *  the rows' scales, as M); it need not be definite (rigid-body modes are allowed). Copied.
- *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_ENOTSYM. */
+ *  the rows' scales, as M); it need not be definite (rigid-body modes are allowed). Copied, its
+ *  symmetric part.
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_ENOTSYM;
+ *  FRICREG_ENOMEM. */
 FRICREG_API int fricreg_structure_set_stiffness(fricreg_structure *s, size_t ndof,
                                                 const double K[]);
 
 /** Set the damping matrix C[ndof*ndof] (force per velocity, e.g.\ N s/m), symmetric (to 1e-12 of
- *  the rows' scales, as M). Copied; replaces Rayleigh damping.
- *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_ENOTSYM. */
+ *  the rows' scales, as M). Copied, its symmetric part; replaces Rayleigh damping.
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_ENOTSYM;
+ *  FRICREG_ENOMEM. */
 FRICREG_API int fricreg_structure_set_damping(fricreg_structure *s, size_t ndof, const double C[]);
 
 /** Rayleigh damping C = a0 M + a1 K (a0 in 1/s, a1 in s, both >= 0), formed from the M and
@@ -101,9 +116,82 @@ FRICREG_API int fricreg_structure_set_rayleigh(fricreg_structure *s, double a0, 
  *  W = J M^-1 J^T then has W_ii > 0; redundant contacts (dependent rows) make W singular,
  *  which the friction evaluation reports as FRICREG_ESINGULAR when they stick together.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if m or ndof is not the structure's;
- *  FRICREG_ENONFINITE; FRICREG_EINVAL if a row is zero. */
+ *  FRICREG_ENONFINITE; FRICREG_EINVAL if a row is zero; FRICREG_ENOMEM. */
 FRICREG_API int fricreg_structure_set_contacts(fricreg_structure *s, size_t m, size_t ndof,
                                                const double J[]);
+
+/** Set the mass matrix from compressed sparse rows: ndof x ndof, rowptr[ndof + 1],
+ *  colind[nnz], values[nnz] (mass units), as enum fricreg_sparse_flags of fricreg.h describes
+ *  (zero- or one-based; whole, then symmetric to 1e-12 of the rows' scales as
+ *  fricreg_structure_set_mass, or one triangle; duplicates summed). Positive definite:
+ *  CHOLMOD's Cholesky factor must exist. A diagonal (lumped) M is the cheapest: its factor is
+ *  its square root. Copied. Since 1.6 (FRICREG_1.6).
+ *  Returns FRICREG_OK; FRICREG_ENULL (s, rowptr, or colind or values with nnz > 0);
+ *  FRICREG_ESIZE if ndof is not the structure's; FRICREG_EINVAL (flags, rowptr not starting
+ *  at the base or decreasing, an index out of range, an entry outside the triangle given);
+ *  FRICREG_ENONFINITE; FRICREG_ENOTSYM; FRICREG_ENOTPSD; FRICREG_ENOMEM. The message names
+ *  the array and the entry. */
+FRICREG_API int fricreg_structure_set_mass_csr(fricreg_structure *s, size_t ndof, int flags,
+                                               const int64_t rowptr[], const int64_t colind[],
+                                               const double values[]);
+
+/** The same from compressed sparse columns: colptr[ndof + 1], rowind[nnz], values[nnz] (for a
+ *  symmetric matrix the same arrays as CSR's but for the triangle: a CSR upper triangle is a
+ *  CSC lower one). Since 1.6 (FRICREG_1.6).
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_EINVAL; FRICREG_ENONFINITE;
+ *  FRICREG_ENOTSYM; FRICREG_ENOTPSD; FRICREG_ENOMEM, as fricreg_structure_set_mass_csr. */
+FRICREG_API int fricreg_structure_set_mass_csc(fricreg_structure *s, size_t ndof, int flags,
+                                               const int64_t colptr[], const int64_t rowind[],
+                                               const double values[]);
+
+/** Set the stiffness matrix K (force per length) from compressed sparse rows, as
+ *  fricreg_structure_set_mass_csr but need not be definite. Since 1.6 (FRICREG_1.6).
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_EINVAL; FRICREG_ENONFINITE;
+ *  FRICREG_ENOTSYM; FRICREG_ENOMEM. */
+FRICREG_API int fricreg_structure_set_stiffness_csr(fricreg_structure *s, size_t ndof, int flags,
+                                                    const int64_t rowptr[], const int64_t colind[],
+                                                    const double values[]);
+
+/** The same from compressed sparse columns. Since 1.6 (FRICREG_1.6).
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_EINVAL; FRICREG_ENONFINITE;
+ *  FRICREG_ENOTSYM; FRICREG_ENOMEM. */
+FRICREG_API int fricreg_structure_set_stiffness_csc(fricreg_structure *s, size_t ndof, int flags,
+                                                    const int64_t colptr[], const int64_t rowind[],
+                                                    const double values[]);
+
+/** Set the damping matrix C (force per velocity) from compressed sparse rows, as
+ *  fricreg_structure_set_stiffness_csr; it replaces Rayleigh damping. Since 1.6 (FRICREG_1.6).
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_EINVAL; FRICREG_ENONFINITE;
+ *  FRICREG_ENOTSYM; FRICREG_ENOMEM. */
+FRICREG_API int fricreg_structure_set_damping_csr(fricreg_structure *s, size_t ndof, int flags,
+                                                  const int64_t rowptr[], const int64_t colind[],
+                                                  const double values[]);
+
+/** The same from compressed sparse columns. Since 1.6 (FRICREG_1.6).
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_EINVAL; FRICREG_ENONFINITE;
+ *  FRICREG_ENOTSYM; FRICREG_ENOMEM. */
+FRICREG_API int fricreg_structure_set_damping_csc(fricreg_structure *s, size_t ndof, int flags,
+                                                  const int64_t colptr[], const int64_t rowind[],
+                                                  const double values[]);
+
+/** Set the contact matrix J (m x ndof, J(i, k) = d zdot_i / d u'_k) from compressed sparse
+ *  rows: rowptr[m + 1], colind[nnz], values[nnz]; flags FRICREG_SPARSE_ONE_BASED or 0 (J is
+ *  not symmetric: the triangle flags are refused). Each row must hold a nonzero value, as
+ *  fricreg_structure_set_contacts. Since 1.6 (FRICREG_1.6).
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if m or ndof is not the structure's;
+ *  FRICREG_EINVAL (flags, pointers, indices, a zero row); FRICREG_ENONFINITE;
+ *  FRICREG_ENOMEM. */
+FRICREG_API int fricreg_structure_set_contacts_csr(fricreg_structure *s, size_t m, size_t ndof,
+                                                   int flags, const int64_t rowptr[],
+                                                   const int64_t colind[], const double values[]);
+
+/** The same from compressed sparse columns: colptr[ndof + 1], rowind[nnz], values[nnz]. Since
+ *  1.6 (FRICREG_1.6).
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_EINVAL; FRICREG_ENONFINITE;
+ *  FRICREG_ENOMEM, as fricreg_structure_set_contacts_csr. */
+FRICREG_API int fricreg_structure_set_contacts_csc(fricreg_structure *s, size_t m, size_t ndof,
+                                                   int flags, const int64_t colptr[],
+                                                   const int64_t rowind[], const double values[]);
 
 /** Set the friction bounds mun[m] = mu_i N_i >= 0 (force units). May be called between any
  *  two steps (normal forces vary); the next step starts from the equilibrium acceleration
@@ -176,8 +264,11 @@ FRICREG_API int fricreg_structure_set_hht(fricreg_structure *s, double alpha);
  *  undamped. Each step is refused (FRICREG_ESTEP, the state unchanged) beyond the stability
  *  bound of fricreg_sim's FRICREG_INT_CENTRAL, the same guard:
  *  (dt omega_max/2)^2 + dt (lambda + c_max) < 0.9, omega_max^2 and c_max the largest
- *  eigenvalues of M^-1 K and M^-1 C (GSL's symmetric eigensolver on L^-1 K L^-T and
- *  L^-1 C L^-T, O(ndof^3) once per model change), lambda = fricreg_ctx_stick_stiffness (law
+ *  eigenvalues of M^-1 K and M^-1 C (up to 2048 degrees of freedom GSL's symmetric
+ *  eigensolver on L^-1 P K P^T L^-T and the same of C, P M P^T = L L^T, O(ndof^3) once per
+ *  model change; beyond, upper bounds from Gershgorin's discs of D^-1/2 K D^-1/2 over the
+ *  smallest of D^-1/2 M D^-1/2, D = diag(M), O(nnz): exact for a lumped M's discs, and no
+ *  bound, so no step, when M's discs reach 0), lambda = fricreg_ctx_stick_stiffness (law
  *  (4): max_i W_ii 2 mun_i/eps; for (1), (2) and Karnopp the chord W_ii mun_i/eps, with
  *  dt lambda <= 1 and dt omega_max <= 1/sqrt 2 besides). The linear bound is 1: 0.9 keeps a
  *  margin. So the paper's eps = 2 dt with W mun = 1 is refused: take eps > 2.2 dt W_ii mun_i.
@@ -191,8 +282,9 @@ FRICREG_API int fricreg_structure_set_central_difference(fricreg_structure *s);
  *  at the step's start, |p~| at its end, and |J|^T mun. 0 < tol < 1; 1 <= max_iter <= 1000.
  *  Iterations grow slowly as eps shrinks against dt times the contacts' accelerations (law
  *  (4) then approaches a jump): on the ten-storey example building at dt = 0.01 s, mean
- *  (max) iterations per step were 1.09 (6) at eps = 0.01 m/s, 1.23 (11) at 1e-3 and 1.29 (19)
- *  at 1e-4; the default max_iter = 50 leaves room.
+ *  (max) iterations per step were 0.58 (6) at eps = 0.01 m/s, 0.71 (11) at 1e-3 and 0.76 (15)
+ *  at 1e-4 (a step whose start forces hold, every damper sliding, needs none); the default
+ *  max_iter = 50 leaves room.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ENONFINITE; FRICREG_EINVAL. */
 FRICREG_API int fricreg_structure_set_newton(fricreg_structure *s, double tol, int max_iter);
 
@@ -202,37 +294,53 @@ FRICREG_API int fricreg_structure_set_newton(fricreg_structure *s, double tol, i
  *  Unknown: the acceleration a at t + dt, with u = u_pred + beta dt^2 a and
  *  v = v_pred + gamma dt a. Residual (HHT-alpha; Newmark: alpha = 0):
  *  R(a) = M a + (1 + alpha) (C v + K u - p~ - J^T f) - alpha (the same at t),
- *  p~ = p - M r a_g, f = f(J v, a_free(u, v)) from the friction law. Newton on the exact
- *  tangent dR/da = M + (1 + alpha) (S - J^T (gamma dt F_z J - F_a J M^-1 S)),
- *  S = gamma dt C + beta dt^2 K, with F_z = df/dzdot and F_a = df/da_free from
- *  fricreg_ctx_tangent, solved by GSL's QR with column pivoting. First guess: the previous acceleration or, if
- *  its residual is larger than the tolerance and than this one's, the same corrected so that
- *  the contacts whose force is below the bound (law (4): in its band, sticking) keep their
- *  velocities over the step (the smallest such correction in M's norm). Each
- *  Newton direction is first cut where it would carry a slipping contact across the whole
- *  band (to zdot_i = 0, once per contact and step), then halved until the residual's 2-norm
- *  decreases (Armijo, 1e-4), at most 30 halvings; should that stall, Newton starts again
- *  from the previous acceleration without the cuts. A step whose Newton does not converge
- *  within max_iter iterations in all (or whose line search or linear solve fails) is still taken, from
- *  its last iterate, and counted in FRICREG_SSTAT_NEWTON_FAILURES.
- *  The energy balance is updated (fricreg_structure_get_value). The first step after a model
- *  setter forms G = J M^-1 and W (O(m ndof^2 + m^2 ndof)) and the equilibrium acceleration
- *  at t (and allocates W, see fricreg_structure_create); each Newton iteration costs one
- *  tangent, O(m^2 ndof + m ndof^2) to form the matrix and an O(ndof^3) QR with column
- *  pivoting; the corrected guess O(m ndof + m^3) and a residual. Other steps make no heap
- *  allocation.
+ *  p~ = p - M r a_g, f = f(J v, a_free(u, v)) from the friction law. For given forces f, R = 0
+ *  is linear: K_eff a = b + (1 + alpha) J^T f, K_eff = M + (1 + alpha)(gamma dt C +
+ *  beta dt^2 K). So Newton runs on the m forces: the contact velocities and free accelerations
+ *  at the step's end are affine in f, zdot = z0 + c W_eff f and a_free = a0 - (W - W_eff) f
+ *  (W_eff = J K_eff^-1 J^T, c = (1 + alpha) gamma dt), and G(f) = f - F(zdot, a_free) = 0 is
+ *  solved on the exact tangent of the law F (fricreg_ctx_tangent): dG/df = I - c F_z W_eff +
+ *  F_a (W - W_eff). Its iterates are those of Newton on a mapped through a(f), and R =
+ *  (1 + alpha) J^T G there, which the stopping rule reads (fricreg_structure_set_newton).
+ *  The m x m Newton matrix: where the contacts' W is diagonal (separate degrees of freedom and
+ *  a lumped M) a sparse Cholesky factor (CHOLMOD) of the near-stick block of W_eff plus a
+ *  diagonal, whose entries below 2^-53 sqrt(W_eff,ii W_eff,jj) are left out (far contacts
+ *  barely interact over a step); otherwise dense, by GSL's QR with column pivoting, on the
+ *  near-stick rows only (sliding rows are the identity's). First guess: the forces at t or,
+ *  if their residual is above the tolerance and that one's smaller, the same with the
+ *  contacts whose force is below the bound (law (4): in its band, sticking) keeping their
+ *  velocities over the step. Each Newton direction is first cut where it would carry a
+ *  slipping contact across the whole band (to zdot_i = 0, once per contact and step), then
+ *  halved until the residual's 2-norm decreases (Armijo, 1e-4), at most 30 halvings; should
+ *  that stall, Newton starts again from the forces at t without the cuts. A step whose Newton
+ *  does not converge within max_iter iterations in all (or whose line search or Newton matrix
+ *  fails) is still taken, from its last iterate, and counted in
+ *  FRICREG_SSTAT_NEWTON_FAILURES. The energy balance is updated (fricreg_structure_get_value).
+ *
+ *  Cost: the first step after a model setter factors M (CHOLMOD) and forms W and the
+ *  equilibrium acceleration at t; the first step with a new dt factors K_eff (nested
+ *  dissection from 4096 degrees of freedom, minimum degree below) and forms Y = L^-1 P J^T
+ *  column by column on each contact's reach and W_eff = Y^T Y. A step within 1e-9 of the
+ *  factored dt (a run's steps, whose lengths carry the rounding of t) is taken with that dt.
+ *  Then each step costs a forward and a backward solve with K_eff's factor and products with
+ *  M, C and K, O(nnz), and in the contacts O(nnz(Y)) per residual and one Newton matrix per
+ *  iteration: a frictionless step's cost plus the contacts' (docs/benchmark.md, scaling).
+ *  Steps other than these first ones make no heap allocation (fricreg_structure_create).
  *
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if dt <= 0, t + dt rounds to t, J
  *  was never set, or W = J M^-1 J^T has an entry beyond the double range or a W_ii below
  *  DBL_MIN ~ 2.2e-308 (J and M of scales too far apart); FRICREG_ENONFINITE if dt is not
  *  finite; FRICREG_ENOTSYM or
  *  FRICREG_ENOTPSD if the context refuses W (not expected: W is formed symmetric from a
- *  positive definite M and non-zero rows of J); FRICREG_ESINGULAR (redundant contacts
+ *  positive definite M and non-zero rows of J); FRICREG_ENOTPSD if K_eff is not positive
+ *  definite (K or C indefinite, an unstable structure, at too large a dt: the message says
+ *  so); FRICREG_ESINGULAR (redundant contacts
  *  sticking together: their forces are not unique); FRICREG_ESTEP (central
  *  difference beyond its stability bounds); FRICREG_EDIVERGED if the residual or the state
- *  becomes non-finite or beyond 1e100. On failure nothing a getter shows changes: u, v, a, f,
- *  the energies and the counters are those before the call (a first step after set_initial
- *  or a setter computes the acceleration at t before it fails: that is undone). */
+ *  becomes non-finite or beyond 1e100; FRICREG_ENOMEM (the factors, the first steps above).
+ *  On failure nothing a getter shows changes: u, v, a, f, the energies and the counters are
+ *  those before the call (a first step after set_initial or a setter computes the
+ *  acceleration at t before it fails: that is undone). */
 FRICREG_API int fricreg_structure_step(fricreg_structure *s, double dt);
 
 /** Step from the current time to t_end with steps of dt, the last one shortened to land on

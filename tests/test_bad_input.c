@@ -1794,8 +1794,8 @@ START_TEST(edges_of_documented_ranges)
          FRICREG_EXTRAP_RHS_EVALS + 1, 'i', NONE},
         {"sim_get_extrapolation >= levels", e_sim_get, 3, FRICREG_EXTRAP_LEVELS, -1, 'i', NONE},
         /* fricreg_structure.h */
-        {"structure_create ndof <= 2^15", e_st_create, 0, NAN, 32769.0, 'i', NONE},
-        {"structure_create m <= 2^15", e_st_create, 1, NAN, 32769.0, 'i', NONE},
+        {"structure_create ndof <= 2^40", e_st_create, 0, NAN, 1099511627777.0, 'i', NONE},
+        {"structure_create m <= 2^26", e_st_create, 1, NAN, 67108865.0, 'i', NONE},
         {"structure_set_rayleigh a0 >= 0", e_st_set, 0, 0.0, -TINY, 'i', ST_REC},
         {"structure_set_rayleigh a1 >= 0", e_st_set, 1, 0.0, -TINY, 'i', ST_REC},
         {"structure_set_law eps >= DBL_MIN", e_st_set, 2, DBL_MIN, below(DBL_MIN), 'i', ST_REC},

@@ -865,7 +865,7 @@ static gsl_spmatrix *sparse(const double A[], size_t rows, size_t cols, int form
 
 /* A three-DOF frame with two coupled contacts (J 2 x 3), shaken: set up densely and through
  * each of GSL's storage formats, every state, force and energy after 200 steps is the same
- * double (the sparse setters hand the dense ones the same numbers). */
+ * double (every setter makes the same CHOLMOD matrices). */
 START_TEST(sparse_setters_equal_dense)
 {
     static const double M[9] = {2.31, 0.17, 0.0, 0.17, 1.43, -0.08, 0.0, -0.08, 0.87};
@@ -913,6 +913,162 @@ START_TEST(sparse_setters_equal_dense)
             ck_assert_double_gt(ref[19] * ref[20], 0.0); /* both contacts slid */
         fricreg_structure_free(s);
     }
+}
+END_TEST
+
+/* How compressed_arrays lays a dense matrix out. */
+struct layout {
+    int by_columns, flags; /* CSC; enum fricreg_sparse_flags (base and triangle) */
+    int split;             /* each entry given as two halves, one after the other (summed) */
+};
+
+/* The non-zero entries of a dense row-major rows x cols A as compressed arrays ptr[outer + 1],
+ * ind[], val[] (room for 2 rows * cols entries), in the layout asked. */
+static void compressed_arrays(const double A[], size_t rows, size_t cols, struct layout l,
+                              int64_t ptr[], int64_t ind[], double val[])
+{
+    int64_t base = (l.flags & FRICREG_SPARSE_ONE_BASED) ? 1 : 0, nnz = 0;
+    size_t outer = l.by_columns ? cols : rows, inner = l.by_columns ? rows : cols;
+    ptr[0] = base;
+    for (size_t o = 0; o < outer; o++) {
+        for (size_t k = inner; k-- > 0;) { /* descending: unsorted within the row */
+            size_t i = l.by_columns ? k : o, j = l.by_columns ? o : k;
+            double a = A[i * cols + j];
+            if (a == 0.0 || ((l.flags & FRICREG_SPARSE_UPPER) && j < i) ||
+                ((l.flags & FRICREG_SPARSE_LOWER) && j > i))
+                continue;
+            for (int half = 0; half <= l.split; half++) {
+                ind[nnz] = (int64_t)k + base;
+                val[nnz++] = l.split ? 0.5 * a : a; /* halving is exact: the sum is a */
+            }
+        }
+        ptr[o + 1] = nnz + base;
+    }
+}
+
+/* The same frame set up through fricreg_structure_set_*_csr and _csc, zero- and one-based,
+ * whole and by either triangle, entries unsorted and split into summed duplicates: every state,
+ * force and energy after 200 steps is the dense setters' double (both make the same CHOLMOD
+ * matrices; a whole symmetric matrix's symmetric part is itself). */
+START_TEST(compressed_setters_equal_dense)
+{
+    static const double M[9] = {2.31, 0.17, 0.0, 0.17, 1.43, -0.08, 0.0, -0.08, 0.87};
+    static const double K[9] = {41.3, -17.9, 0.0, -17.9, 29.6, -11.7, 0.0, -11.7, 11.7};
+    static const double C[9] = {0.21, -0.05, 0.0, -0.05, 0.13, -0.02, 0.0, -0.02, 0.04};
+    static const double J[6] = {1.0, 0.0, 0.0, -1.0, 0.0, 1.0}, mun[2] = {0.437, 0.291};
+    static const double r[3] = {1.0, 1.0, 1.0}, ag[4] = {0.0, 3.1, -2.7, 0.4};
+    const struct layout layouts[] = {
+        {0, 0, 0},
+        {1, FRICREG_SPARSE_ONE_BASED, 0},
+        {0, FRICREG_SPARSE_UPPER, 1},
+        {1, FRICREG_SPARSE_ONE_BASED | FRICREG_SPARSE_LOWER, 0},
+        {0, FRICREG_SPARSE_ONE_BASED | FRICREG_SPARSE_LOWER, 1},
+        {1, FRICREG_SPARSE_UPPER, 1},
+    };
+    double ref[8 + 3 * 3 + 2 + 2], got[sizeof ref / sizeof *ref];
+    int64_t ptr[4], ind[18];
+    double val[18];
+    for (int k = -1; k < (int)(sizeof layouts / sizeof *layouts); k++) {
+        fricreg_structure *s = make(3, 2);
+        if (k < 0) {
+            ok(s, fricreg_structure_set_mass(s, 3, M));
+            ok(s, fricreg_structure_set_stiffness(s, 3, K));
+            ok(s, fricreg_structure_set_damping(s, 3, C));
+            ok(s, fricreg_structure_set_contacts(s, 2, 3, J));
+        } else {
+            struct layout l = layouts[k],
+                          lj = {l.by_columns, l.flags & FRICREG_SPARSE_ONE_BASED, l.split};
+            int (*set[3])(fricreg_structure *, size_t, int, const int64_t[], const int64_t[],
+                          const double[]) = {l.by_columns ? fricreg_structure_set_mass_csc
+                                                          : fricreg_structure_set_mass_csr,
+                                             l.by_columns ? fricreg_structure_set_stiffness_csc
+                                                          : fricreg_structure_set_stiffness_csr,
+                                             l.by_columns ? fricreg_structure_set_damping_csc
+                                                          : fricreg_structure_set_damping_csr};
+            const double *model[3] = {M, K, C};
+            for (int w = 0; w < 3; w++) {
+                compressed_arrays(model[w], 3, 3, l, ptr, ind, val);
+                ok(s, set[w](s, 3, l.flags, ptr, ind, val));
+            }
+            compressed_arrays(J, 2, 3, lj, ptr, ind, val);
+            ok(s, (l.by_columns
+                       ? fricreg_structure_set_contacts_csc
+                       : fricreg_structure_set_contacts_csr)(s, 2, 3, lj.flags, ptr, ind, val));
+        }
+        ok(s, fricreg_structure_set_bounds(s, 2, mun));
+        ok(s, fricreg_structure_set_law(s, FRICREG_LAW_QUINN, 0.0213));
+        ok(s, fricreg_structure_set_influence(s, 3, r));
+        ok(s, fricreg_structure_set_ground_accel(s, 0.0, 0.5, 4, ag));
+        ok(s, fricreg_structure_run(s, 0.0137, 200 * 0.0137));
+        double *out = k < 0 ? ref : got;
+        for (int w = 0; w < 8; w++)
+            out[w] = value(s, w);
+        ok(s, fricreg_structure_get_state(s, 3, out + 8, out + 11, out + 14));
+        ok(s, fricreg_structure_get_forces(s, 2, out + 17));
+        ok(s, fricreg_structure_get_dissipation(s, 2, out + 19));
+        if (k >= 0)
+            for (size_t w = 0; w < sizeof ref / sizeof *ref; w++)
+                ck_assert_msg(memcmp(&got[w], &ref[w], sizeof(double)) == 0,
+                              "layout %d, number %zu: %.17g, dense %.17g", k, w, got[w], ref[w]);
+        fricreg_structure_free(s);
+    }
+}
+END_TEST
+
+/* A refusal: the code, and a message that starts as given (NULL: none to check). */
+static void refused(const fricreg_structure *s, int status, int code, const char *message)
+{
+    ck_assert_int_eq(status, code);
+    const char *got = fricreg_structure_errmsg(s);
+    if (message)
+        ck_assert_msg(strncmp(got, message, strlen(message)) == 0, "'%s', expected '%s'", got,
+                      message);
+}
+
+/* Each refusal of a compressed setter: its code, a message that names the array and the
+ * entry, and nothing changed (M stays I: the kinetic energy at v0 = (1, 1) stays 1). */
+START_TEST(compressed_setters_refuse)
+{
+    fricreg_structure *s = make(2, 2);
+    const double v0[2] = {1.0, 1.0}, u0[2] = {0.0, 0.0};
+    ok(s, fricreg_structure_set_initial(s, 2, u0, v0));
+    /* rows {0: columns 0, 1; 1: column 1}: [[2, 0.5], [0, 1]], not symmetric */
+    const int64_t p[3] = {0, 2, 3}, i[3] = {0, 1, 1}, p1[3] = {1, 3, 4}, i1[3] = {1, 2, 2};
+    const double x[3] = {2.0, 0.5, 1.0}, nan1[3] = {2.0, NAN, 1.0}, indef[3] = {1.0, 2.0, 1.0};
+    const int64_t from1[3] = {1, 3, 4}, decreasing[3] = {0, 3, 2}, empty_row[3] = {0, 2, 2};
+    const int upper = FRICREG_SPARSE_UPPER, one = FRICREG_SPARSE_ONE_BASED;
+    refused(s, fricreg_structure_set_mass_csr(NULL, 2, 0, p, i, x), FRICREG_ENULL, NULL);
+    refused(s, fricreg_structure_set_mass_csr(s, 2, 0, NULL, i, x), FRICREG_ENULL,
+            "set_mass_csr: rowptr is NULL");
+    refused(s, fricreg_structure_set_mass_csc(s, 2, 0, p, NULL, x), FRICREG_ENULL,
+            "set_mass_csc: rowind is NULL");
+    refused(s, fricreg_structure_set_mass_csr(s, 3, 0, p, i, x), FRICREG_ESIZE,
+            "set_mass_csr: the matrix is 3 x 3, the structure needs 2 x 2");
+    refused(s, fricreg_structure_set_mass_csr(s, 2, 8, p, i, x), FRICREG_EINVAL,
+            "set_mass_csr: unknown flags 0x8");
+    refused(s, fricreg_structure_set_mass_csr(s, 2, upper | FRICREG_SPARSE_LOWER, p, i, x),
+            FRICREG_EINVAL, "set_mass_csr: FRICREG_SPARSE_UPPER and FRICREG_SPARSE_LOWER");
+    refused(s, fricreg_structure_set_contacts_csr(s, 2, 2, upper, p, i, x), FRICREG_EINVAL,
+            "set_contacts_csr: a triangle flag for a matrix that need not be symmetric");
+    refused(s, fricreg_structure_set_mass_csr(s, 2, 0, from1, i, x), FRICREG_EINVAL,
+            "set_mass_csr: rowptr[0] = 1 must be 0");
+    refused(s, fricreg_structure_set_mass_csr(s, 2, 0, decreasing, i, x), FRICREG_EINVAL,
+            "set_mass_csr: rowptr[2] = 2 is below rowptr[1] = 3");
+    refused(s, fricreg_structure_set_mass_csr(s, 2, one, p1, i, x), FRICREG_EINVAL,
+            "set_mass_csr: colind[0] = 0 is outside 1..2");
+    refused(s, fricreg_structure_set_stiffness_csc(s, 2, upper, p, i, x), FRICREG_EINVAL,
+            "set_stiffness_csc: entry (1, 0) lies outside the upper triangle given");
+    refused(s, fricreg_structure_set_damping_csr(s, 2, 0, p, i, nan1), FRICREG_ENONFINITE,
+            "set_damping_csr: val[1] (entry (0, 1)) is not finite");
+    refused(s, fricreg_structure_set_stiffness_csr(s, 2, 0, p, i, x), FRICREG_ENOTSYM,
+            "set_stiffness_csr: entries (0, 1) = 0.5 and (1, 0) = 0 differ");
+    refused(s, fricreg_structure_set_mass_csr(s, 2, one | upper, p1, i1, indef), FRICREG_ENOTPSD,
+            "set_mass_csr: the mass matrix is not positive definite");
+    refused(s, fricreg_structure_set_contacts_csr(s, 2, 2, 0, empty_row, i, x), FRICREG_EINVAL,
+            "set_contacts_csr: row 1 of J is zero");
+    ck_assert_double_eq(value(s, FRICREG_SVALUE_KINETIC), 1.0);
+    ck_assert_int_eq(fricreg_structure_step(s, 0.01), FRICREG_EINVAL); /* J never set */
+    fricreg_structure_free(s);
 }
 END_TEST
 
@@ -1229,8 +1385,9 @@ static void show(const fricreg_structure *s, size_t n, size_t m, struct shown *w
  *    central difference at dt = 1 (dt lambda = 600 > 0.9: FRICREG_ESTEP). The equilibrium is
  *    f = -0.3, a = 1.7 - 0.2385 - 0.3 = 1.1615; a and f showed it (and INITIAL the energy at
  *    t = 0), where the header promises the state of before: a = f = 0;
- *  - a Newmark step that diverges (k = -1e130, u0 = 1, dt = 1: u1 beyond 1e100) after Newton's
- *    line search cut its directions: LINE_SEARCH_CUTS counted them. */
+ *  - a Newmark step that diverges (M = 1, a load p = 1e130, dt = 1: u1 = p/4 beyond 1e100);
+ *  - a Newmark step refused because K_eff = M + gamma dt C + beta dt^2 K is not positive
+ *    definite (k = -1e130, dt = 1: 1 - 2.5e129). */
 START_TEST(failed_step_changes_nothing)
 {
     const double k = 2.385, p = 1.7, mun = 0.3, u0 = 0.1, v0 = 0.0;
@@ -1252,13 +1409,21 @@ START_TEST(failed_step_changes_nothing)
     ck_assert_double_eq(value(s, FRICREG_SVALUE_INITIAL), 0.5 * k * u0 * u0);
     fricreg_structure_free(s);
 
-    const double unstable = -1e130, one = 1.0;
+    const double huge = 1e130, unstable = -1e130, one = 1.0;
     s = make(1, 1);
-    ok(s, fricreg_structure_set_stiffness(s, 1, &unstable));
+    ok(s, fricreg_structure_set_load(s, 1, &huge, 0.0, 0.0, 0, NULL));
     ok(s, fricreg_structure_set_contacts(s, 1, 1, &one));
     ok(s, fricreg_structure_set_initial(s, 1, &one, &v0));
     show(s, 1, 1, &before);
     ck_assert_int_eq(fricreg_structure_run(s, 1.0, 21.0), FRICREG_EDIVERGED);
+    show(s, 1, 1, &after);
+    ck_assert_mem_eq(&before, &after, sizeof before);
+    const double zero = 0.0;
+    ok(s, fricreg_structure_set_load(s, 1, &zero, 0.0, 0.0, 0, NULL));
+    ok(s, fricreg_structure_set_stiffness(s, 1, &unstable));
+    show(s, 1, 1, &before);
+    ck_assert_int_eq(fricreg_structure_step(s, 1.0), FRICREG_ENOTPSD);
+    ck_assert_ptr_nonnull(strstr(fricreg_structure_errmsg(s), "K_eff"));
     show(s, 1, 1, &after);
     ck_assert_mem_eq(&before, &after, sizeof before);
     fricreg_structure_free(s);
@@ -1392,7 +1557,8 @@ END_TEST
  * fuzz_structure: run_ode with fixed RK4). The structure's eigen-solves now scale the matrix
  * by a power of two first and refuse Inf and NaN (fr_eigen_symm, base/eigen.c, as the
  * contexts' did): omega_max is +Inf and the step is refused (FRICREG_ESTEP), GSL's LU
- * steppers too (stability unknown: FRICREG_EINVAL), and Newmark steps from rest. set_mass's
+ * steppers too (stability unknown: FRICREG_EINVAL), and Newmark refuses the step (K_eff = M +
+ * beta dt^2 K is not positive definite: FRICREG_ENOTPSD). set_mass's
  * check goes the same way: M_01 = 1e300 beside M_00 = M_11 = 1e-300 (D^-1/2 M D^-1/2 infinite)
  * is FRICREG_ENOTPSD. */
 START_TEST(eigen_solves_of_extreme_models)
@@ -1406,8 +1572,8 @@ START_TEST(eigen_solves_of_extreme_models)
     ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_RK4, 0.01, 0.0, 0.0, 1.0),
                      FRICREG_ESTEP);
     ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_RK4IMP, 0.01, 0.0, 0.0, 1.0),
-                     FRICREG_EINVAL);       /* stability not known: GSL's LU steppers refused */
-    ok(s, fricreg_structure_step(s, 0.01)); /* at rest: K u = 0 */
+                     FRICREG_EINVAL); /* stability not known: GSL's LU steppers refused */
+    ck_assert_int_eq(fricreg_structure_step(s, 0.01), FRICREG_ENOTPSD); /* K_eff indefinite */
     const double M[9] = {1e-300, 1e300, 0.0, 1e300, 1e-300, 0.0, 0.0, 0.0, 1.0};
     ck_assert_int_eq(fricreg_structure_set_mass(s, 3, M), FRICREG_ENOTPSD);
     fricreg_structure_free(s);
@@ -1435,6 +1601,7 @@ static Suite *structure_suite(void)
     tcase_add_test(friction, ground_motion_step_by_step);
     tcase_add_test(friction, building_newton_at_small_eps);
     tcase_add_test(friction, sparse_setters_equal_dense);
+    tcase_add_test(friction, compressed_setters_equal_dense);
     tcase_add_test(friction, central_difference_oscillator);
     suite_add_tcase(suite, friction);
     TCase *ode = tcase_create("run_ode");
@@ -1448,6 +1615,7 @@ static Suite *structure_suite(void)
     TCase *errors = tcase_create("errors");
     tcase_add_test(errors, every_error_code);
     tcase_add_test(errors, sparse_setters_refuse);
+    tcase_add_test(errors, compressed_setters_refuse);
     tcase_add_test(errors, redundant_contacts_are_singular);
     tcase_add_test(errors, refused_setter_mid_run_changes_nothing);
     tcase_add_test(errors, divergence_is_reported);

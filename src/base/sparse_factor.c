@@ -13,6 +13,8 @@ int fr_cholmod_start(cholmod_common *c)
     c->print = 0;            /* CHOLMOD prints nothing (its default, 3, prints errors) */
     c->error_handler = NULL; /* failures come back in c->status */
     c->try_catch = 0;
+    c->final_ll = 1; /* L L^T: a matrix that is not positive definite is reported as such
+                      * (CHOLMOD_NOT_POSDEF), where an L D L^T factor takes it silently */
     return FRICREG_OK;
 }
 
@@ -30,4 +32,20 @@ int fr_cholmod_status(int cholmod_status)
     case CHOLMOD_TOO_LARGE: return FRICREG_ENOMEM;
     default: return cholmod_status >= CHOLMOD_OK ? FRICREG_OK : FRICREG_EINVAL;
     }
+}
+
+void fr_cholmod_keep_workspace(cholmod_dense *Y)
+{
+    if (Y != NULL && Y->nzmax >= 4 * Y->ncol && Y->nrow < 4) {
+        Y->nrow = 4;
+        Y->d = 4;
+    }
+}
+
+void fr_cholmod_ordering(cholmod_common *c, int ordering, int simplicial)
+{
+    c->nmethods = 1;
+    c->method[0].ordering = ordering;
+    c->postorder = ordering != CHOLMOD_NATURAL;
+    c->supernodal = simplicial ? CHOLMOD_SIMPLICIAL : CHOLMOD_AUTO;
 }

@@ -2,15 +2,13 @@
 /* central_difference.c — the explicit central-difference step of a fricreg_structure: the
  * scheme of src/ode/central.h, with
  *
- *   M a1 = p~1 - C v* - K u1 + J^T f(J v*, G (p~1 - C v* - K u1)),
+ *   M a1 = p~1 - C v* - K u1 + J^T f(J v*, J M^-1 (p~1 - C v* - K u1)),
  *
  * so the friction and the damping see the explicit velocity v* and nothing is solved but M's
- * Cholesky factor. Each step passes the drivers' one step guard first (src/ode/step_guard.c,
- * the integrator table's central row): (dt omega_max/2)^2 + dt (lambda + c_max) < 0.9, with
- * lambda the stick zone's stiffness and c_max the largest viscous damping rate (guard.c). */
-#include <gsl/gsl_blas.h>
-#include <gsl/gsl_linalg.h>
-
+ * factor (one forward and one backward solve; O(n) for a lumped M). Each step passes the
+ * drivers' one step guard first (src/ode/step_guard.c, the integrator table's central row):
+ * (dt omega_max/2)^2 + dt (lambda + c_max) < 0.9, with lambda the stick zone's stiffness and
+ * c_max the largest viscous damping rate (guard.c). */
 #include "fricreg_sim.h"
 #include "ode/central.h"
 #include "ode/integrator.h"
@@ -28,12 +26,10 @@ int fr_central_solve(fricreg_structure *s, double dt)
         vp[k] = fr_central_predicted_velocity(dt, v[k], a[k]);
     }
     fr_structure_net_force(s, s->ptil1, s->u1, s->vp, s->work);
-    status = fr_structure_friction(s, s->work, s->vp, s->f1);
+    status = fr_structure_motion(s, s->work, s->vp, s->f1, s->x); /* f1 and a1 */
     if (status != FRICREG_OK)
         return fr_fail(s, status, "step: friction at t = %g: %s", s->t + dt,
                        fricreg_ctx_errmsg(s->ctx));
-    gsl_blas_dgemv(CblasTrans, 1.0, s->J, s->f1, 1.0, s->work);
-    gsl_linalg_cholesky_solve(s->L, s->work, s->x); /* a1 */
     const double *a1 = s->x->data;
     double *v1 = s->v1->data;
     for (size_t k = 0; k < s->n; k++)

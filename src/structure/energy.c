@@ -8,24 +8,30 @@
 
 #include <gsl/gsl_blas.h>
 
+#include "base/sparse_ops.h"
 #include "structure_internal.h"
+
+/* x^T S x for a symmetric S stored as its upper triangle: no scratch, so that the getters
+ * (const, callable from the observer mid-step) may use it. */
+static double quadratic_form(const cholmod_sparse *S, const double x[])
+{
+    const SuiteSparse_long *Sp = S->p, *Si = S->i;
+    const double *Sx = S->x;
+    double q = 0.0;
+    for (size_t j = 0; j < S->ncol; j++)
+        for (SuiteSparse_long p = Sp[j]; p < Sp[j + 1]; p++)
+            q += ((size_t)Si[p] == j ? 1.0 : 2.0) * Sx[p] * x[Si[p]] * x[j];
+    return q;
+}
 
 double fr_energy_kinetic(const fricreg_structure *s)
 {
-    double q = 0.0;
-    for (size_t i = 0; i < s->n; i++)
-        for (size_t j = 0; j < s->n; j++)
-            q += gsl_vector_get(s->v, i) * gsl_matrix_get(s->M, i, j) * gsl_vector_get(s->v, j);
-    return 0.5 * q;
+    return 0.5 * quadratic_form(s->M, s->v->data);
 }
 
 double fr_energy_strain(const fricreg_structure *s)
 {
-    double q = 0.0;
-    for (size_t i = 0; i < s->n; i++)
-        for (size_t j = 0; j < s->n; j++)
-            q += gsl_vector_get(s->u, i) * gsl_matrix_get(s->K, i, j) * gsl_vector_get(s->u, j);
-    return 0.5 * q;
+    return 0.5 * quadratic_form(s->K, s->u->data);
 }
 
 void fr_energy_reset(fricreg_structure *s)
@@ -61,11 +67,11 @@ void fr_energy_step(fricreg_structure *s, const gsl_vector *u1, const gsl_vector
 
     gsl_vector_memcpy(mid, s->v);
     gsl_vector_add(mid, v1);
-    gsl_blas_dgemv(CblasNoTrans, 0.5, s->C, mid, 0.0, s->work);
+    fr_sym_mult(s->Cd, 0.5, mid->data, 0.0, s->work->data);
     gsl_blas_ddot(du, s->work, &w);
     s->energy.viscous += w;
 
-    gsl_blas_dgemv(CblasNoTrans, 1.0, s->J, du, 0.0, s->mwork); /* dz */
+    fr_csc_mult_t(s->Jt, du->data, s->mwork->data); /* dz */
     for (size_t i = 0; i < s->m; i++) {
         double d = -gsl_vector_get(s->mwork, i) *
                    (0.5 * gsl_vector_get(s->f, i) + 0.5 * gsl_vector_get(f1, i));

@@ -1,104 +1,128 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* newmark.c — Newmark and HHT-alpha steps of a fricreg_structure, the friction implicit:
- * Newton on the exact tangent (fricreg_ctx_tangent) with a backtracking line search.
+ * Newton in the contact space on the exact tangent, with a backtracking line search.
  *
- * Unknown: the acceleration x at the step's end, with u1 = u_pred + beta dt^2 x and
- * v1 = v_pred + gamma dt x. Residual (Hilber, Hughes & Taylor 1977; alpha = 0 is Newmark):
- *   R(x) = M x + (1 + alpha)(C v1 + K u1 - p~1 - J^T f1) - alpha (C v + K u - p~ - J^T f),
- * f1 = f(J v1, G (p~1 - C v1 - K u1)), G = J M^-1. Its Jacobian, chained through zdot and
- * a_free: dR/dx = M + (1 + alpha)(S - J^T (gamma dt F_z J - F_a G S)), S = gamma dt C +
- * beta dt^2 K. */
+ * Unknown of the step: the acceleration x at its end, with u1 = u_pred + beta dt^2 x and
+ * v1 = v_pred + gamma dt x. Residual (Hilber, Hughes & Taylor 1977; alpha = 0 is Newmark),
+ * with w = 1 + alpha:
+ *   R(x) = M x + w (C v1 + K u1 - p~1 - J^T f1) - alpha (C v + K u - p~ - J^T f),
+ * linear in x but for the friction f1. For given forces f, R = 0 is
+ *   K_eff x = b + w J^T f,   K_eff = M + w (gamma dt C + beta dt^2 K),
+ *   b = w (p~1 - C v_pred - K u_pred) + alpha (C v + K u - p~ - J^T f)  (the start's term),
+ * so x(f) = K_eff^-1 (b + w J^T f), and the contacts' velocities and free accelerations at
+ * the step's end are affine in f:
+ *   zdot(f) = J v_pred + gamma dt J x(f) = z0 + c W_eff f,           c = w gamma dt,
+ *   a_free(f) = J M^-1 (p~1 - C v1 - K u1) = (J x(f) - alpha h)/w - W f = a0 - (W - W_eff) f,
+ * the second by R = 0, with W = J M^-1 J^T, W_eff = J K_eff^-1 J^T, h = J M^-1 (C v + K u -
+ * p~ - J^T f). Newton solves G(f) = f - F(zdot(f), a_free(f)) = 0 in the m forces
+ * (newton_matrix.h), F the context's law. At x(f), R = w J^T G(f) exactly, and Newton's steps
+ * on f are Newton's steps on x mapped through x(f) (the chain rule through the same affine
+ * maps): the stopping rule and the line search read R, as they did when x was the unknown.
+ *
+ * The step's cost: K_eff factored once per dt (contact_factor.c), one forward solve for b,
+ * the Newton iterations in the contact space, where W_eff f = Y^T (Y f) costs O(nnz(Y)), and
+ * one backward solve for x. */
 #include <math.h>
 #include <string.h>
 
 #include <gsl/gsl_blas.h>
-#include <gsl/gsl_linalg.h>
 
+#include "base/sparse_ops.h"
 #include "ctx/ctx_driver.h"
 #include "structure_internal.h"
 
-#define ARMIJO 1e-4 /* sufficient decrease of the residual's 2-norm */
-#define MAX_CUTS 30 /* halvings of one Newton direction */
+#define ARMIJO 1e-4       /* sufficient decrease of the residual's 2-norm */
+#define MAX_CUTS 30       /* halvings of one Newton direction */
+#define WEFF_DROP 0x1p-53 /* W_eff entries below this times sqrt(W_ii W_jj): rounding */
 
-/* u1, v1 from the unknown x; then f1 and the residual R. */
-static int residual(fricreg_structure *s, double dt, const gsl_vector *x, gsl_vector *R)
+/* zdot(f) and a_free(f) into s->zdot, s->afree; the law's forces into s->f1; G = f - F; then
+ * R = w J^T G on the degrees of freedom J touches, its 2-norm into *phi and its largest entry
+ * into *rinf. */
+static int residual(fricreg_structure *s, const gsl_vector *f, gsl_vector *G, double *phi,
+                    double *rinf)
 {
-    gsl_vector_memcpy(s->u1, s->up);
-    gsl_blas_daxpy(s->beta * dt * dt, x, s->u1);
-    gsl_vector_memcpy(s->v1, s->vp);
-    gsl_blas_daxpy(s->gamma * dt, x, s->v1);
-    fr_structure_net_force(s, s->ptil1, s->u1, s->v1, s->work);
-    int status = fr_structure_friction(s, s->work, s->v1, s->f1);
+    size_t m = s->m;
+    double *weff_f = s->mwork->data, *w_f = s->mwork2->data;
+    fr_cfactor_compliance(&s->step, f->data, weff_f, s->spread->data);
+    fr_cfactor_compliance(&s->mass, f->data, w_f, s->spread->data);
+    double c = (1.0 + s->alpha) * s->gamma * s->step_dt;
+    for (size_t i = 0; i < m; i++) {
+        s->zdot->data[i] = s->z0->data[i] + c * weff_f[i];
+        /* (W_eff - W) f first: near the range's end a0 and W f can be as large as each other */
+        s->afree->data[i] = s->af0->data[i] + (weff_f[i] - w_f[i]);
+    }
+    int status = fr_structure_contact_forces(s, s->f1);
     if (status != FRICREG_OK)
         return status;
-    gsl_blas_dgemv(CblasTrans, 1.0, s->J, s->f1, 1.0, s->work); /* w1 + J^T f1 */
-    gsl_vector_memcpy(R, s->hist);
-    gsl_vector_scale(R, -s->alpha);
-    gsl_blas_daxpy(-(1.0 + s->alpha), s->work, R);
-    gsl_blas_dgemv(CblasNoTrans, 1.0, s->M, x, 1.0, R);
+    for (size_t i = 0; i < m; i++)
+        G->data[i] = f->data[i] - s->f1->data[i];
+    fr_structure_spread_norms(s, 1.0 + s->alpha, G, phi, rinf);
     return FRICREG_OK;
 }
 
-/* S = gamma dt C + beta dt^2 K and G S, kept while dt and the model hold. */
-static void form_S(fricreg_structure *s, double dt)
+/* K_eff, its factor and the Newton matrix's pattern, kept while dt and the scheme hold. A
+ * run's steps end at t0 + k dt exactly, so their lengths differ from dt by the rounding of t:
+ * a step within STEP_RTOL of the factored dt is taken with that dt (fr_newmark_solve), not
+ * factored again; the clock keeps its exact times. */
+#define STEP_RTOL 1e-9
+/* Up to this many contacts the dense Newton matrix is allocated with K_eff's factor even where
+ * W is diagonal, for the steps that need it (a falling Stribeck branch): beyond, at that use. */
+#define DENSE_FALLBACK_MAX 64
+static int form_step_factor(fricreg_structure *s, double dt)
 {
-    if (s->S_dt == dt)
-        return;
-    gsl_matrix_memcpy(s->S, s->C);
-    gsl_matrix_scale(s->S, s->gamma * dt);
-    gsl_matrix_memcpy(s->A, s->K);
-    gsl_matrix_scale(s->A, s->beta * dt * dt);
-    gsl_matrix_add(s->S, s->A);
-    gsl_blas_dgemm(CblasNoTrans, CblasNoTrans, 1.0, s->G, s->S, 0.0, s->GS);
-    s->S_dt = dt;
-}
-
-/* The Newton direction dx = -(dR/dx)^-1 R at the last evaluated point, by GSL's QR with
- * column pivoting on workspaces allocated at create: GSL 2.7's gsl_linalg_LU_decomp allocates
- * its pivot array on every call and uses it unchecked, so a failed malloc there crashed a
- * step (found by tests/alloc/test_alloc_failure.c); QRPT with a caller's norm vector
- * allocates nothing, at twice LU's flops. A zero on R's diagonal is a singular matrix. */
-static int newton_direction(fricreg_structure *s, double dt)
-{
-    int status = fricreg_ctx_tangent(s->ctx, s->m, s->Fz->data, s->Fa->data);
-    if (status != FRICREG_OK)
-        return status;
+    if (fabs(dt - s->step_dt) <= STEP_RTOL * s->step_dt)
+        return FRICREG_OK;
+    s->step_dt = 0.0;
+    fr_cfactor_free(&s->step, &s->cc);
     double w = 1.0 + s->alpha;
-    gsl_blas_dgemm(CblasNoTrans, CblasNoTrans, s->gamma * dt, s->Fz, s->J, 0.0, s->T1);
-    gsl_blas_dgemm(CblasNoTrans, CblasNoTrans, -1.0, s->Fa, s->GS, 1.0, s->T1);
-    gsl_matrix_memcpy(s->A, s->S);
-    gsl_blas_dgemm(CblasTrans, CblasNoTrans, -w, s->J, s->T1, w, s->A);
-    gsl_matrix_add(s->A, s->M);
-    int signum;
-    if (gsl_linalg_QRPT_decomp(s->A, s->tau, s->perm, &signum, s->norm) != GSL_SUCCESS)
-        return FRICREG_ESINGULAR;
-    for (size_t k = 0; k < s->n; k++)
-        if (gsl_matrix_get(s->A, k, k) == 0.0)
-            return FRICREG_ESINGULAR;
-    if (gsl_linalg_QRPT_solve(s->A, s->tau, s->perm, s->R, s->dx) != GSL_SUCCESS)
-        return FRICREG_ESINGULAR;
-    gsl_vector_scale(s->dx, -1.0);
+    double gc = w * s->gamma * dt, gk = w * s->beta * dt * dt;
+    cholmod_sparse *Keff = fr_structure_combine(s, 1.0, gc, gk);
+    if (Keff == NULL)
+        return fr_fail(s, FRICREG_ENOMEM, "step: no memory for K_eff");
+    int status = fr_cfactor_build(&s->step, Keff, s->Jt, WEFF_DROP, &s->cc, &s->err, "step",
+                                  "K_eff = M + (1 + alpha)(gamma dt C + beta dt^2 K)");
+    cholmod_l_free_sparse(&Keff, &s->cc);
+    if (status != FRICREG_OK)
+        return status;
+    int dense = s->w_diag == NULL || s->m <= DENSE_FALLBACK_MAX;
+    if (fr_newton_matrix_prepare(&s->newton, s->step.D, dense, &s->cc) != FRICREG_OK) {
+        fr_cfactor_free(&s->step, &s->cc);
+        return fr_fail(s, FRICREG_ENOMEM, "step: no memory for the Newton matrix");
+    }
+    s->step_dt = dt;
     return FRICREG_OK;
+}
+
+/* The largest entry of |J|^T mun, on the degrees of freedom J touches (through s->spread). */
+static double bound_scale(fricreg_structure *s)
+{
+    const SuiteSparse_long *Jp = s->Jt->p, *Ji = s->Jt->i;
+    const double *Jx = s->Jt->x;
+    double *r = s->spread->data, big = 0.0;
+    for (size_t i = 0; i < s->m; i++)
+        for (SuiteSparse_long p = Jp[i]; p < Jp[i + 1]; p++)
+            r[Ji[p]] += fabs(Jx[p]) * s->mun[i];
+    for (size_t i = 0; i < s->m; i++)
+        for (SuiteSparse_long p = Jp[i]; p < Jp[i + 1]; p++) {
+            big = fmax(big, r[Ji[p]]);
+            r[Ji[p]] = 0.0;
+        }
+    return big;
 }
 
 /* The step's force scale: the largest entry of |M a| and |C v + K u - p~ - J^T f| at its
  * start (hist), |p~1| at its end, and |J|^T mun. */
 static double force_scale(fricreg_structure *s)
 {
-    gsl_blas_dgemv(CblasNoTrans, 1.0, s->M, s->a, 0.0, s->work);
+    fr_sym_mult(s->M, 1.0, s->a->data, 0.0, s->work->data);
     double scale = fmax(fr_norm_inf(s->work), fr_norm_inf(s->ptil1));
     scale = fmax(scale, fr_norm_inf(s->hist));
-    for (size_t k = 0; k < s->n; k++) {
-        double sum = 0.0;
-        for (size_t i = 0; i < s->m; i++)
-            sum += fabs(gsl_matrix_get(s->J, i, k)) * s->mun[i];
-        scale = fmax(scale, sum);
-    }
+    scale = fmax(scale, bound_scale(s));
     return scale > 0.0 ? scale : 1e-300;
 }
 
-/* The first trial step along dx: the largest fraction in (0, 1] that stops a slipping
- * contact (mun_i > 0 and df_i/dzdot_i = 0 at x: outside the law's band) at zdot_i = 0 where
+/* The first trial step along df: the largest fraction in (0, 1] that stops a slipping
+ * contact (mun_i > 0 and dF_i/dzdot_i = 0 at f: outside the law's band) at zdot_i = 0 where
  * the full step would take it across the whole band (from one side of zdot = 0 to beyond eps
  * on the other), each contact once a step. A Newton step from a slip piece is the root of
  * that piece's linearization; when the contact must stop, that root lies beyond the band,
@@ -107,15 +131,16 @@ static double force_scale(fricreg_structure *s)
  * 0, the contact is where the law holds it (f = the sticking force), and the next iteration
  * works on the band's own linearization; once a step, so that a contact that must reverse is
  * stopped only once. */
-static double first_trial(fricreg_structure *s, double dt)
+static double first_trial(fricreg_structure *s)
 {
-    gsl_blas_dgemv(CblasNoTrans, s->gamma * dt, s->J, s->dx, 0.0, s->mwork); /* dzdot/dlambda */
+    double c = (1.0 + s->alpha) * s->gamma * s->step_dt;
+    fr_cfactor_compliance(&s->step, s->df->data, s->mwork->data, s->spread->data);
     double lambda = 1.0, eps = fr_ctx_eps(s->ctx);
     size_t first = s->m;
     for (size_t i = 0; i < s->m; i++) {
-        double z = gsl_vector_get(s->zdot, i), z1 = z + gsl_vector_get(s->mwork, i);
-        if (!s->stopped[i] && s->mun[i] > 0.0 && gsl_matrix_get(s->Fz, i, i) == 0.0 &&
-            z * z1 < 0.0 && fabs(z1) >= eps && z / (z - z1) < lambda) {
+        double z = s->zdot->data[i], z1 = z + c * s->mwork->data[i];
+        if (!s->stopped[i] && s->mun[i] > 0.0 && s->newton.fz[i] == 0.0 && z * z1 < 0.0 &&
+            fabs(z1) >= eps && z / (z - z1) < lambda) {
             lambda = z / (z - z1);
             first = i;
         }
@@ -125,23 +150,23 @@ static double first_trial(fricreg_structure *s, double dt)
     return lambda;
 }
 
-/* Backtracking on ||R||_2 along dx from x, from the first trial (stop_slips) or from the full
- * step; on success x, R and the context's last evaluation are at the accepted point. Returns
+/* Backtracking on ||R||_2 along df from f, from the first trial (stop_slips) or from the full
+ * step; on success f, G and the context's last evaluation are at the accepted point. Returns
  * 0 if no cut decreased the residual. */
-static int line_search(fricreg_structure *s, double dt, int stop_slips, double *phi)
+static int line_search(fricreg_structure *s, int stop_slips, double *phi, double *rinf)
 {
-    double lambda = stop_slips ? first_trial(s, dt) : 1.0;
+    double lambda = stop_slips ? first_trial(s) : 1.0;
     for (int cut = 0; cut <= MAX_CUTS; cut++) {
-        gsl_vector_memcpy(s->xt, s->x);
-        gsl_blas_daxpy(lambda, s->dx, s->xt);
-        if (residual(s, dt, s->xt, s->Rt) == FRICREG_OK) {
-            double phi_t = gsl_blas_dnrm2(s->Rt);
-            if (phi_t <= (1.0 - ARMIJO * lambda) * *phi) {
-                gsl_vector_memcpy(s->x, s->xt);
-                gsl_vector_memcpy(s->R, s->Rt);
-                *phi = phi_t;
-                return 1;
-            }
+        gsl_vector_memcpy(s->ft, s->fk);
+        gsl_blas_daxpy(lambda, s->df, s->ft);
+        double phi_t, rinf_t;
+        if (residual(s, s->ft, s->Gt, &phi_t, &rinf_t) == FRICREG_OK &&
+            phi_t <= (1.0 - ARMIJO * lambda) * *phi) {
+            gsl_vector_memcpy(s->fk, s->ft);
+            gsl_vector_memcpy(s->G, s->Gt);
+            *phi = phi_t;
+            *rinf = rinf_t;
+            return 1;
         }
         s->stats[FRICREG_SSTAT_LINE_SEARCH_CUTS]++;
         lambda *= 0.5;
@@ -149,92 +174,168 @@ static int line_search(fricreg_structure *s, double dt, int stop_slips, double *
     return 0;
 }
 
-/* Newton iterations from x (its residual R evaluated, phi = ||R||_2) until the residual is
- * within tol, the step's iterations (*iters, counted on) run out, or the line search stalls.
- * At least one iteration unless R is exactly zero: a guess accepted within the tolerance
- * would leave a in error by up to tol, and a stick would creep by that times dt^2 every
- * step. On a linear piece of the law one iteration is exact. Returns ||R||_inf at x. */
-static double iterate(fricreg_structure *s, double dt, double tol, int stop_slips, double *phi,
-                      int *iters)
+/* Newton iterations from fk (its residual evaluated: G, phi = ||R||_2, *rinf = ||R||_inf)
+ * until the residual is within tol, the step's iterations (*iters, counted on) run out, or
+ * the line search stalls; FRICREG_ENOMEM if the Newton matrix could not be allocated. At least one iteration unless R is exactly zero: a guess accepted
+ * within the tolerance would leave a in error by up to tol, and a stick would creep by that
+ * times dt^2 every step. On a linear piece of the law one iteration is exact. */
+static int iterate(fricreg_structure *s, double tol, int stop_slips, double *phi, double *rinf,
+                   int *iters)
 {
     int done = 0;
-    double r = fr_norm_inf(s->R);
-    while (r != 0.0 && (done == 0 || r > tol) && *iters < s->newton_max) {
+    double c = (1.0 + s->alpha) * s->gamma * s->step_dt;
+    while (*rinf != 0.0 && (done == 0 || *rinf > tol) && *iters < s->newton_max) {
         if (!isfinite(*phi))
             break;
-        if (newton_direction(s, dt) != FRICREG_OK)
-            break;
+        int status = fr_newton_direction(&s->newton, s->ctx, c, s->mass.D, s->step.D, s->w_diag,
+                                         s->G->data, s->df->data, &s->cc);
+        if (status == FRICREG_ENOMEM)
+            return fr_fail(s, status, "step: no memory for the dense Newton matrix (%zu contacts)",
+                           s->m);
+        if (status != FRICREG_OK)
+            break; /* a singular tangent: the step ends on this iterate, a failure counted */
         ++*iters;
         ++done;
-        if (!line_search(s, dt, stop_slips, phi)) {
-            residual(s, dt, s->x, s->R); /* back to x: the best point */
+        if (!line_search(s, stop_slips, phi, rinf)) {
+            residual(s, s->fk, s->G, phi, rinf); /* back to fk: the best point */
             break;
         }
-        r = fr_norm_inf(s->R);
     }
-    return r;
-}
-
-/* x = the first guess (s->guess or s->a), its residual R and phi = ||R||_2. */
-static int start_at(fricreg_structure *s, double dt, const gsl_vector *guess, double *phi)
-{
-    gsl_vector_memcpy(s->x, guess);
-    int status = residual(s, dt, s->x, s->R);
-    if (status != FRICREG_OK)
-        return fr_fail(s, status, "step: friction at t = %g: %s", s->t + dt,
-                       fricreg_ctx_errmsg(s->ctx));
-    *phi = gsl_blas_dnrm2(s->R);
     return FRICREG_OK;
 }
 
-/* Newton from the previous acceleration a or, where a is not within tol, the stick
- * predictor's guess if its residual is smaller: returns a status, and *converged and *iters.
- * On return the context's last evaluation, u1, v1 and f1 are at x. Slipping contacts are
+/* fk = guess, its residual, phi and rinf. */
+static int start_at(fricreg_structure *s, double dt, const gsl_vector *guess, double *phi,
+                    double *rinf)
+{
+    gsl_vector_memcpy(s->fk, guess);
+    int status = residual(s, s->fk, s->G, phi, rinf);
+    if (status != FRICREG_OK)
+        return fr_fail(s, status, "step: friction at t = %g: %s", s->t + dt,
+                       fricreg_ctx_errmsg(s->ctx));
+    return FRICREG_OK;
+}
+
+/* Newton's first guess where the start's forces are not within the tolerance: those forces,
+ * but for the contacts whose force at t is below their bound (law (4): in its band, for (3)
+ * and tanh every contact), which take the forces that keep their velocities over the step:
+ *   zdot_S(f) = zdot_S(t),  i.e.  c W_eff,SS f_S = zdot_S(t) - z0_S - c W_eff,SR f_R.
+ * Why: at small eps the band (law (4): |zdot - xi| < eps/2) is only eps/(c W_eff) wide in the
+ * forces. A sticking contact's velocity wanders inside it, and the start's forces, held over
+ * the step while the structure moves, put it outside: Newton then brings the sticking contacts
+ * back one at a time (a stop each, first_trial), about an iteration per contact. On the
+ * ten-storey building (examples/building/) at eps = 1e-4 m/s and dt = 0.01 s that was 12
+ * iterations a step through its 5 s of free vibration, all ten dampers sticking.
+ * W_eff,SS is positive definite unless contacts of S depend on each other (equal rows of J):
+ * then no guess. Into s->ft; 0 if there is none. Uses s->stopped as the marks of S. */
+static int stick_guess(fricreg_structure *s)
+{
+    size_t m = s->m, k = 0;
+    unsigned char *set = s->stopped;
+    double *f = s->f->data, *guess = s->ft->data, *weff_fr = s->mwork->data, *b = s->mwork2->data;
+    for (size_t i = 0; i < m; i++) {
+        set[i] = fabs(f[i]) < s->mun[i];
+        k += set[i];
+        guess[i] = set[i] ? 0.0 : f[i];
+    }
+    if (k == 0)
+        return 0;
+    double c = (1.0 + s->alpha) * s->gamma * s->step_dt;
+    fr_cfactor_compliance(&s->step, guess, weff_fr, s->spread->data); /* W_eff f_R */
+    fr_csc_mult_t(s->Jt, s->v->data, b);                              /* zdot(t) */
+    for (size_t i = 0; i < m; i++)
+        b[i] = (b[i] - s->z0->data[i]) / c - weff_fr[i];
+    return fr_newton_stick_solve(&s->newton, s->step.D, set, b, guess, &s->cc) == FRICREG_OK;
+}
+
+/* Newton from the forces at the step's start or, where they are not within tol, the stick
+ * guess if its residual is smaller: returns a status, and *converged and *iters.
+ * On return the context's last evaluation and s->f1 are at fk. Slipping contacts are
  * stopped at zdot = 0 (first_trial). Where a stop ends on a kink of the law (zdot = 0 is the
  * band's edge when |f_eq| >= mun) the line search can stall there: Newton then starts again
- * from a, without stops, with the iterations left. */
+ * from the start's forces, without stops, with the iterations left. */
 static int newton(fricreg_structure *s, double dt, int *converged, int *iters)
 {
-    double phi = 0.0;
-    int status = start_at(s, dt, s->a, &phi);
+    double phi = 0.0, rinf = 0.0;
+    int status = start_at(s, dt, s->f, &phi, &rinf);
     if (status != FRICREG_OK)
         return status;
     double tol = s->newton_tol * force_scale(s);
-    if (fr_norm_inf(s->R) > tol && fr_stick_predictor(s, fr_stick_mark(s))) {
-        double phi_a = phi;
-        status = start_at(s, dt, s->guess, &phi);
-        if (status == FRICREG_OK && !(phi < phi_a))
-            status = start_at(s, dt, s->a, &phi);
+    if (rinf > tol && stick_guess(s)) {
+        double phi_start = phi;
+        status = start_at(s, dt, s->ft, &phi, &rinf);
+        if (status == FRICREG_OK && !(phi < phi_start))
+            status = start_at(s, dt, s->f, &phi, &rinf);
         if (status != FRICREG_OK)
             return status;
     }
     memset(s->stopped, 0, s->m * sizeof *s->stopped);
     *iters = 0;
-    double r = iterate(s, dt, tol, 1, &phi, iters);
-    if (r > tol && isfinite(phi) && *iters < s->newton_max) {
-        if ((status = start_at(s, dt, s->a, &phi)) != FRICREG_OK)
+    if ((status = iterate(s, tol, 1, &phi, &rinf, iters)) != FRICREG_OK)
+        return status;
+    if (rinf > tol && isfinite(phi) && *iters < s->newton_max) {
+        if ((status = start_at(s, dt, s->f, &phi, &rinf)) != FRICREG_OK ||
+            (status = iterate(s, tol, 0, &phi, &rinf, iters)) != FRICREG_OK)
             return status;
-        r = iterate(s, dt, tol, 0, &phi, iters);
     }
-    *converged = r <= tol; /* also when the extra iteration stalls at the rounding floor */
+    *converged = rinf <= tol; /* also when the extra iteration stalls at the rounding floor */
     if (!isfinite(phi))
         return fr_fail(s, FRICREG_EDIVERGED, "step: the residual at t = %g is not finite",
                        s->t + dt);
     return FRICREG_OK;
 }
 
+/* The predictors, the start's term hist = C v + K u - p~ - J^T f, and b's forward solve
+ * (into s->yb) with what the contacts see of it: z0 and a0. */
+static void predict(fricreg_structure *s, double dt)
+{
+    size_t n = s->n, m = s->m;
+    double b2 = s->beta * dt * dt, g = s->gamma * dt, w = 1.0 + s->alpha;
+    double *up = s->up->data, *vp = s->vp->data, *hist = s->hist->data, *yb = s->yb->data;
+    const double *u = s->u->data, *v = s->v->data, *a = s->a->data;
+    for (size_t k = 0; k < n; k++) {
+        up[k] = u[k] + dt * v[k] + (0.5 * dt * dt - b2) * a[k];
+        vp[k] = v[k] + (dt - g) * a[k];
+    }
+    fr_structure_net_force(s, s->ptil, s->u, s->v, s->hist); /* p~ - C v - K u */
+    fr_csc_mult_add(s->Jt, 1.0, s->f->data, hist);
+    for (size_t k = 0; k < n; k++)
+        hist[k] = -hist[k];
+    fr_structure_net_force(s, s->ptil1, s->up, s->vp, s->yb); /* p~1 - C vp - K up */
+    for (size_t k = 0; k < n; k++)
+        yb[k] = w * yb[k] + s->alpha * hist[k];
+    fr_cfactor_forward(&s->step, yb, yb, &s->cc);
+    double *z0 = s->z0->data, *a0 = s->af0->data;
+    fr_cfactor_project(&s->step, yb, a0); /* J x0 */
+    fr_csc_mult_t(s->Jt, vp, z0);
+    for (size_t i = 0; i < m; i++)
+        z0[i] += g * a0[i];
+    if (s->alpha != 0.0) { /* h = J M^-1 hist, through M's factor */
+        fr_cfactor_forward(&s->mass, hist, s->work->data, &s->cc);
+        fr_cfactor_project(&s->mass, s->work->data, s->mwork->data);
+        for (size_t i = 0; i < m; i++)
+            a0[i] -= s->alpha * s->mwork->data[i];
+    }
+    for (size_t i = 0; i < m; i++)
+        a0[i] /= w;
+}
+
 int fr_newmark_solve(fricreg_structure *s, double dt, int *converged, int *iters)
 {
-    form_S(s, dt);
-    /* Predictors, and the start's force C v + K u - p~ - J^T f (HHT's -alpha term). */
-    double b = s->beta * dt * dt, g = s->gamma * dt;
-    gsl_vector_memcpy(s->up, s->u);
-    gsl_blas_daxpy(dt, s->v, s->up);
-    gsl_blas_daxpy(0.5 * dt * dt - b, s->a, s->up);
-    gsl_vector_memcpy(s->vp, s->v);
-    gsl_blas_daxpy(dt - g, s->a, s->vp);
-    fr_structure_net_force(s, s->ptil, s->u, s->v, s->hist);
-    gsl_blas_dgemv(CblasTrans, 1.0, s->J, s->f, 1.0, s->hist);
-    gsl_vector_scale(s->hist, -1.0);
-    return newton(s, dt, converged, iters);
+    int status = form_step_factor(s, dt);
+    if (status != FRICREG_OK)
+        return status;
+    dt = s->step_dt;
+    predict(s, dt);
+    if ((status = newton(s, dt, converged, iters)) != FRICREG_OK)
+        return status;
+    /* x = K_eff^-1 (b + w J^T f): the forward half is yb, the backward half completes it. */
+    fr_cfactor_lift(&s->step, 1.0 + s->alpha, s->fk->data, s->yb->data);
+    fr_cfactor_backward(&s->step, s->yb->data, s->x->data, &s->cc);
+    double b2 = s->beta * dt * dt, g = s->gamma * dt;
+    for (size_t k = 0; k < s->n; k++) {
+        s->u1->data[k] = s->up->data[k] + b2 * s->x->data[k];
+        s->v1->data[k] = s->vp->data[k] + g * s->x->data[k];
+    }
+    return FRICREG_OK;
 }

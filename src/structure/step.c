@@ -5,9 +5,7 @@
 #include <float.h>
 #include <math.h>
 
-#include <gsl/gsl_blas.h>
-#include <gsl/gsl_linalg.h>
-
+#include "base/sparse_ops.h"
 #include "structure_internal.h"
 
 #define STATE_LIMIT 1e100 /* |state| beyond this: diverged */
@@ -24,13 +22,8 @@ double fr_norm_inf(const gsl_vector *x)
     return m;
 }
 
-/* a_free = G w and zdot = J v, then f from the context: the friction at a state whose
- * net non-friction force is w. */
-int fr_structure_friction(fricreg_structure *s, const gsl_vector *w, const gsl_vector *v,
-                          gsl_vector *f)
+int fr_structure_contact_forces(fricreg_structure *s, gsl_vector *f)
 {
-    gsl_blas_dgemv(CblasNoTrans, 1.0, s->G, w, 0.0, s->afree);
-    gsl_blas_dgemv(CblasNoTrans, 1.0, s->J, v, 0.0, s->zdot);
     int status = fricreg_ctx_eval(s->ctx, s->m, s->zdot->data, s->afree->data, f->data, NULL);
     /* The context's inputs are the structure's own state, from validated data: one that is
      * not finite (or an f_eq beyond range) means the state overflowed, e.g. a finite dt of
@@ -38,25 +31,57 @@ int fr_structure_friction(fricreg_structure *s, const gsl_vector *w, const gsl_v
     return status == FRICREG_ENONFINITE ? FRICREG_EDIVERGED : status;
 }
 
+int fr_structure_motion(fricreg_structure *s, const gsl_vector *w, const gsl_vector *v,
+                        gsl_vector *f, gsl_vector *a)
+{
+    double *y = s->yb->data;
+    fr_cfactor_forward(&s->mass, w->data, y, &s->cc);
+    fr_cfactor_project(&s->mass, y, s->afree->data); /* J M^-1 w */
+    fr_csc_mult_t(s->Jt, v->data, s->zdot->data);
+    int status = fr_structure_contact_forces(s, f);
+    if (status != FRICREG_OK)
+        return status;
+    fr_cfactor_lift(&s->mass, 1.0, f->data, y); /* M^-1 (w + J^T f) */
+    fr_cfactor_backward(&s->mass, y, a->data, &s->cc);
+    return FRICREG_OK;
+}
+
+void fr_structure_spread_norms(fricreg_structure *s, double scale, const gsl_vector *G,
+                               double *norm2, double *norm_inf)
+{
+    double *r = s->spread->data;
+    const SuiteSparse_long *Jp = s->Jt->p, *Ji = s->Jt->i;
+    fr_csc_mult_add(s->Jt, scale, G->data, r);
+    double sum = 0.0, big = 0.0;
+    /* Each touched entry once: read and zeroed at its first visit. */
+    for (size_t i = 0; i < s->m; i++)
+        for (SuiteSparse_long p = Jp[i]; p < Jp[i + 1]; p++) {
+            double x = r[Ji[p]];
+            r[Ji[p]] = 0.0;
+            sum += x * x;
+            if (!(fabs(x) <= big)) /* NaN propagates */
+                big = fabs(x);
+        }
+    *norm2 = sqrt(sum);
+    *norm_inf = big;
+}
+
 /* w = p~ - C v - K u */
 void fr_structure_net_force(const fricreg_structure *s, const gsl_vector *ptil, const gsl_vector *u,
                             const gsl_vector *v, gsl_vector *w)
 {
-    gsl_vector_memcpy(w, ptil);
-    gsl_blas_dgemv(CblasNoTrans, -1.0, s->C, v, 1.0, w);
-    gsl_blas_dgemv(CblasNoTrans, -1.0, s->K, u, 1.0, w);
+    fr_sym_mult(s->Cd, -1.0, v->data, 0.0, w->data);
+    fr_sym_mult(s->K, -1.0, u->data, 1.0, w->data);
+    gsl_vector_add(w, ptil);
 }
 
 int fr_structure_equilibrium(fricreg_structure *s)
 {
     fr_structure_effective_load(s, s->t, s->ptil);
     fr_structure_net_force(s, s->ptil, s->u, s->v, s->work);
-    int status = fr_structure_friction(s, s->work, s->v, s->f);
+    int status = fr_structure_motion(s, s->work, s->v, s->f, s->a);
     if (status != FRICREG_OK)
         return fr_fail(s, status, "step: friction at t = %g: %s", s->t, fricreg_ctx_errmsg(s->ctx));
-    /* M a = w + J^T f */
-    gsl_blas_dgemv(CblasTrans, 1.0, s->J, s->f, 1.0, s->work);
-    gsl_linalg_cholesky_solve(s->L, s->work, s->a);
     s->stick_valid = 0; /* bounds, law or model may have changed */
     s->ready = 1;
     return FRICREG_OK;

@@ -1,84 +1,97 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* structure_gsl.c — the sparse setters of fricreg_structure_gsl.h: GSL makes the matrix dense
- * (gsl_spmatrix_sp2d, any storage format) in the structure's Newton scratch, which holds
- * nothing between steps, and the dense setter checks and copies it; its messages are renamed
- * after the sparse function. */
-#include <stdio.h>
-#include <string.h>
+/* structure_gsl.c — the setters of fricreg_structure_gsl.h: a GSL sparse matrix (COO, CSC or
+ * CSR) read entry by entry into CHOLMOD's triplets, then the road of every model matrix
+ * (model.c, src/base/matrix_input.h). Never dense. */
+#include <math.h>
+#include <stddef.h>
 
-#include <gsl/gsl_errno.h>
+#include <gsl/gsl_spmatrix.h>
 
+#include "base/matrix_input.h"
 #include "fricreg_structure_gsl.h"
 #include "structure_internal.h"
 
-/* The dense setter's message "name: ..." as "name_sparse: ...". */
-static int renamed(fricreg_structure *s, int status, const char *name)
+/* Entry k of S (stored position k) into (row, col). */
+static void position(const gsl_spmatrix *S, size_t k, size_t *row, size_t *col)
 {
-    char rest[sizeof s->err.msg];
-    const char *msg = fricreg_structure_errmsg(s);
-    size_t len = strlen(name);
-    snprintf(rest, sizeof rest, "%s", strncmp(msg, name, len) == 0 ? msg + len : msg);
-    return fr_fail(s, status, "%s_sparse%s", name, rest);
+    if (S->sptype == GSL_SPMATRIX_COO) {
+        *row = (size_t)S->i[k];
+        *col = (size_t)S->p[k];
+        return;
+    }
+    /* Compressed: the outer index of position k, by bisection on the pointers. */
+    size_t outer = S->sptype == GSL_SPMATRIX_CSC ? S->size2 : S->size1, lo = 0, hi = outer;
+    while (hi - lo > 1) {
+        size_t mid = lo + (hi - lo) / 2;
+        if ((size_t)S->p[mid] <= k)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    *row = S->sptype == GSL_SPMATRIX_CSC ? (size_t)S->i[k] : lo;
+    *col = S->sptype == GSL_SPMATRIX_CSC ? lo : (size_t)S->i[k];
 }
 
-/* S (rows x cols, as the structure needs) into the scratch A, then the dense setter. */
-static int set_sparse(fricreg_structure *s, const char *name, const gsl_spmatrix *S, gsl_matrix *A,
-                      int (*set)(fricreg_structure *, gsl_matrix *))
+/* S (nrows x ncols, as the structure needs) checked and installed as matrix `which`. */
+static int set_sparse(fricreg_structure *s, int which, const char *who, const gsl_spmatrix *S,
+                      size_t nrows, size_t ncols)
 {
+    if (s == NULL)
+        return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, who);
     if (S == NULL)
-        return fr_fail(s, FRICREG_ENULL, "%s_sparse: the matrix is NULL", name);
-    if (S->size1 != A->size1 || S->size2 != A->size2)
+        return fr_fail(s, FRICREG_ENULL, "%s: the matrix is NULL", who);
+    if (S->size1 != nrows || S->size2 != ncols)
         return fr_fail(s, FRICREG_ESIZE,
-                       "%s_sparse: the matrix is %zu x %zu, the structure needs %zu x %zu", name,
-                       S->size1, S->size2, A->size1, A->size2);
-    /* gsl_spmatrix_sp2d reports (through GSL's process-wide handler) only a size mismatch and
-     * an unknown storage type: both are refused here first, so it cannot fail. */
+                       "%s: the matrix is %zu x %zu, the structure needs %zu x %zu", who, S->size1,
+                       S->size2, nrows, ncols);
     if (S->sptype != GSL_SPMATRIX_COO && S->sptype != GSL_SPMATRIX_CSC &&
         S->sptype != GSL_SPMATRIX_CSR)
-        return fr_fail(s, FRICREG_EINVAL,
-                       "%s_sparse: unknown storage type %d (GSL has COO, CSC and CSR)", name,
-                       S->sptype);
-    gsl_spmatrix_sp2d(A, S);
-    int status = set(s, A);
-    return status == FRICREG_OK ? status : renamed(s, status, name);
-}
-
-static int set_mass(fricreg_structure *s, gsl_matrix *A)
-{
-    return fricreg_structure_set_mass(s, s->n, A->data);
-}
-
-static int set_stiffness(fricreg_structure *s, gsl_matrix *A)
-{
-    return fricreg_structure_set_stiffness(s, s->n, A->data);
-}
-
-static int set_damping(fricreg_structure *s, gsl_matrix *A)
-{
-    return fricreg_structure_set_damping(s, s->n, A->data);
-}
-
-static int set_contacts(fricreg_structure *s, gsl_matrix *A)
-{
-    return fricreg_structure_set_contacts(s, s->m, s->n, A->data);
+        return fr_fail(s, FRICREG_EINVAL, "%s: unknown storage type %d (GSL has COO, CSC and CSR)",
+                       who, S->sptype);
+    size_t nnz = S->nz;
+    for (size_t k = 0; k < nnz; k++)
+        if (!isfinite(S->data[k])) {
+            size_t row, col;
+            position(S, k, &row, &col);
+            return fr_fail(s, FRICREG_ENONFINITE, "%s: entry (%zu, %zu) is not finite", who, row,
+                           col);
+        }
+    cholmod_triplet *T = fr_triplet_new(nrows, ncols, nnz, &s->cc);
+    if (T == NULL)
+        return fr_fail(s, FRICREG_ENOMEM, "%s: no memory for the sparse matrix", who);
+    SuiteSparse_long *Ti = T->i, *Tj = T->j;
+    double *Tx = T->x;
+    for (size_t k = 0; k < nnz; k++) {
+        size_t row, col;
+        position(S, k, &row, &col);
+        Ti[k] = (SuiteSparse_long)row;
+        Tj[k] = (SuiteSparse_long)col;
+        Tx[k] = S->data[k];
+    }
+    T->nnz = nnz;
+    cholmod_sparse *A = NULL;
+    int status = fr_triplet_finish(T, which != FR_CONTACTS, 0, &s->cc, &A, &s->err, who);
+    return status != FRICREG_OK ? status : fr_structure_install(s, which, A, who);
 }
 
 int fricreg_structure_set_mass_sparse(fricreg_structure *s, const gsl_spmatrix *M)
 {
-    return s == NULL ? FRICREG_ENULL : set_sparse(s, "set_mass", M, s->A, set_mass);
+    return set_sparse(s, FR_MASS, "set_mass_sparse", M, s ? s->n : 0, s ? s->n : 0);
 }
 
 int fricreg_structure_set_stiffness_sparse(fricreg_structure *s, const gsl_spmatrix *K)
 {
-    return s == NULL ? FRICREG_ENULL : set_sparse(s, "set_stiffness", K, s->A, set_stiffness);
+    return set_sparse(s, FR_STIFFNESS, "set_stiffness_sparse", K, s ? s->n : 0, s ? s->n : 0);
 }
 
 int fricreg_structure_set_damping_sparse(fricreg_structure *s, const gsl_spmatrix *C)
 {
-    return s == NULL ? FRICREG_ENULL : set_sparse(s, "set_damping", C, s->A, set_damping);
+    return set_sparse(s, FR_DAMPING, "set_damping_sparse", C, s ? s->n : 0, s ? s->n : 0);
 }
 
 int fricreg_structure_set_contacts_sparse(fricreg_structure *s, const gsl_spmatrix *J)
 {
-    return s == NULL ? FRICREG_ENULL : set_sparse(s, "set_contacts", J, s->T1, set_contacts);
+    return set_sparse(s, FR_CONTACTS, "set_contacts_sparse", J, s ? s->m : 0, s ? s->n : 0);
 }

@@ -1,23 +1,28 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* structure_internal.h — the structure's layout, shared by structure.c (model, set-up),
- * newmark.c (the integrator and Newton) and energy.c (the balance). */
+/* structure_internal.h — the structure's layout, shared by its files: structure.c (life cycle,
+ * setters, getters), model.c (the model matrices), prepare.c (the set-up of a model),
+ * newmark.c and newton_matrix.c (the implicit step), central_difference.c, step.c (stepping),
+ * structure_ode.c (GSL's steppers), guard.c (the step guard) and energy.c (the balance). */
 #ifndef FRICREG_STRUCTURE_INTERNAL_H
 #define FRICREG_STRUCTURE_INTERNAL_H
 
 #include <stddef.h>
 #include <stdint.h>
 
-#include <gsl/gsl_eigen.h>
-#include <gsl/gsl_matrix.h>
-#include <gsl/gsl_permutation.h>
+#include <cholmod.h>
 #include <gsl/gsl_vector.h>
 
 #include "base/error.h"
+#include "contact_factor.h"
 #include "fricreg_structure.h"
+#include "newton_matrix.h"
 
 #define FR_NSSTATS 5
 
 enum { FR_SCHEME_NEWMARK = 0, FR_SCHEME_CENTRAL = 1 }; /* HHT-alpha is Newmark's */
+
+/* The model matrices, for fr_structure_install. */
+enum { FR_MASS = 0, FR_STIFFNESS = 1, FR_DAMPING = 2, FR_CONTACTS = 3 };
 
 /* A sampled time function: n samples from t0 every dt, linear, zero outside (n = 0: none). */
 struct fr_record {
@@ -33,12 +38,13 @@ struct fr_energy {
 
 struct fricreg_structure {
     size_t n, m;
+    cholmod_common cc; /* CHOLMOD's workspace and settings (src/base/sparse_factor.h) */
 
-    /* The model, as the caller gave it. */
-    gsl_matrix *M, *K, *C; /* n x n; C is formed from a0, a1 when rayleigh */
-    int rayleigh;
+    /* The model, as the caller gave it, in CHOLMOD's compressed columns. */
+    cholmod_sparse *M, *K, *C; /* n x n, upper triangles (stype 1) */
+    int rayleigh;              /* C = a0 M + a1 K, formed by fr_structure_prepare */
     double a0, a1;
-    gsl_matrix *J; /* m x n */
+    cholmod_sparse *Jt; /* n x m: J^T, column i contact i's row of J */
     int contacts_set;
     gsl_vector *r, *p;             /* influence and load pattern */
     struct fr_record ground, load; /* load.n == 0: g = 1 */
@@ -59,21 +65,24 @@ struct fricreg_structure {
     int running;
 
     /* Derived at the first step after a model change (fr_structure_prepare). */
-    int prepared;       /* M's factor, G, W and C are current */
-    gsl_matrix *L;      /* n x n: Cholesky factor of M */
-    gsl_matrix *G;      /* m x n: J M^-1 */
-    gsl_matrix *W;      /* m x m: J M^-1 J^T */
-    gsl_vector *Mr;     /* M r */
+    int prepared;           /* Cd, the mass factor, W and Mr are current */
+    cholmod_sparse *Cd;     /* the damping in force: C, or Rayleigh's a0 M + a1 K */
+    struct fr_cfactor mass; /* M's factor; mass.D is the Delassus matrix W = J M^-1 J^T */
+    const double *w_diag;   /* the context's W when it is diagonal, else NULL */
+    gsl_vector *Mr;         /* M r */
     int unguarded;      /* tests only (test_guard_structure.c, static library): skip the step guard,
                     * to see what a refused step would have done */
     int omega_valid;    /* the step guard: omega_max, damping_max are current (reset by prepare) */
-    double omega_max;   /* sqrt of the largest eigenvalue of M^-1 K */
-    double damping_max; /* the largest eigenvalue of M^-1 C */
-    int stable;         /* K and C positive semidefinite (to rounding) */
+    double omega_max;   /* sqrt of the largest eigenvalue of M^-1 K (a bound for large models) */
+    double damping_max; /* the largest eigenvalue of M^-1 C (a bound for large models) */
+    int stable;         /* K and C positive semidefinite (to rounding; large models: shown so) */
     int stick_valid;    /* the step guard: stick_rate is current (reset at equilibrium) */
     double stick_rate; /* lambda * eps (fr_stiffness_times_eps): the chord's for a law that jumps */
-    gsl_eigen_symm_workspace *eigen_work;
-    gsl_vector *eigenvalues;
+
+    /* Newmark's step: K_eff's factor (step.D = W_eff) for step_dt, and the Newton matrix. */
+    struct fr_cfactor step;
+    double step_dt; /* the dt K_eff was factored for (0: none) */
+    struct fr_newton_matrix newton;
 
     /* State at time t; `ready` when a, f and p~ hold the equation of motion at t. */
     double t;
@@ -84,19 +93,13 @@ struct fricreg_structure {
     int ready;
     int fresh; /* set_initial since the last step: the balance starts here */
 
-    /* Newton scratch, allocated at create. */
-    gsl_matrix *S, *GS; /* n x n: gamma dt C + beta dt^2 K; m x n: G S */
-    double S_dt;        /* the dt S was formed for (0: none) */
-    gsl_matrix *A;      /* n x n: the Newton matrix, then its QR with column pivoting */
-    gsl_permutation *perm;
-    gsl_vector *tau, *norm;  /* [n] the QR's Householder coefficients, column norms */
-    gsl_matrix *Fz, *Fa;     /* m x m: df/dzdot, df/da_free */
-    gsl_matrix *T1;          /* m x n: gamma dt F_z J - F_a G S */
-    gsl_vector *x, *dx, *xt; /* unknown a, direction, trial */
-    gsl_vector *u1, *v1, *guess, *R, *Rt, *ptil1, *hist, *up, *vp, *work;
-    gsl_vector *f1, *zdot, *afree, *mwork; /* [m] */
-    unsigned char *stopped;                /* [m] Newton: stopped at zdot_i = 0 this step */
-    size_t *stick_perm;                    /* [m] the stick predictor's pivots */
+    /* Step scratch, allocated at create: [n] ... */
+    gsl_vector *x, *u1, *v1, *ptil1, *hist, *up, *vp, *work, *yb, *dx, *xt;
+    gsl_vector *spread; /* [n] zero between uses (fr_cfactor_compliance, spread norms) */
+    /* ... and [m]: the forces at the step's end, the context's inputs, Newton's iterate,
+     * residual, direction, trial, and what the contacts see of the step's predictor. */
+    gsl_vector *f1, *zdot, *afree, *fk, *G, *df, *ft, *Gt, *z0, *af0, *mwork, *mwork2;
+    unsigned char *stopped; /* [m] Newton: stopped at zdot_i = 0 this step */
 
     struct fr_energy energy;
     int64_t stats[FR_NSSTATS];
@@ -104,11 +107,25 @@ struct fricreg_structure {
 };
 
 /* structure.c */
-int fr_structure_prepare(fricreg_structure *s);
 /* The refusal of a call `who` made from the observer during a run: FRICREG_EINVAL, recorded. */
 int fr_structure_busy(fricreg_structure *s, const char *who);
 double fr_record_at(const struct fr_record *rec, double t);
 void fr_structure_effective_load(const fricreg_structure *s, double t, gsl_vector *ptil);
+
+/* model.c: installs A as the model matrix `which` (FR_MASS, FR_STIFFNESS, FR_DAMPING: n x n,
+ * upper triangle; FR_CONTACTS: J, m x n) after the checks that matrix needs (the mass
+ * positive definite, every contact moving); takes A, freed on failure too. The message of a
+ * failure is led by who. */
+int fr_structure_install(fricreg_structure *s, int which, cholmod_sparse *A, const char *who);
+/* After every model change: the set-up, the equilibrium at t and K_eff are redone at the next
+ * step. */
+void fr_structure_model_changed(fricreg_structure *s);
+
+/* prepare.c: the set-up of a model at its first step (the damping in force, M's factor, W into
+ * the context, M r, the force scale); and am M + ac C + ak K, the upper triangle, or NULL when
+ * out of memory. */
+int fr_structure_prepare(fricreg_structure *s);
+cholmod_sparse *fr_structure_combine(fricreg_structure *s, double am, double ac, double ak);
 
 /* step.c */
 double fr_norm_inf(const gsl_vector *x);
@@ -116,9 +133,18 @@ double fr_norm_inf(const gsl_vector *x);
 int fr_structure_observe(fricreg_structure *s, double t, const double u[], const double v[],
                          const double f[]);
 int fr_structure_equilibrium(fricreg_structure *s);
-/* a_free = G w, zdot = J v, f from the context, for the net non-friction force w. */
-int fr_structure_friction(fricreg_structure *s, const gsl_vector *w, const gsl_vector *v,
-                          gsl_vector *f);
+/* The context's forces f[m] at s->zdot and s->afree: FRICREG_OK, or the context's status (an
+ * input that is not finite, which the structure's own state made: FRICREG_EDIVERGED). */
+int fr_structure_contact_forces(fricreg_structure *s, gsl_vector *f);
+/* The friction f[m] and the acceleration a[n] of a state of velocity v whose net force but
+ * friction is w = p~ - C v - K u: zdot = J v, a_free = J M^-1 w, f from the context, then
+ * M a = w + J^T f (one forward and one backward solve with M's factor). Uses s->yb. */
+int fr_structure_motion(fricreg_structure *s, const gsl_vector *w, const gsl_vector *v,
+                        gsl_vector *f, gsl_vector *a);
+/* The 2-norm and the largest entry of scale J^T G[m] (nonzero on the degrees of freedom J
+ * touches only: O(nnz(J)), through s->spread). */
+void fr_structure_spread_norms(fricreg_structure *s, double scale, const gsl_vector *G,
+                               double *norm2, double *norm_inf);
 /* w = p~ - C v - K u */
 void fr_structure_net_force(const fricreg_structure *s, const gsl_vector *ptil, const gsl_vector *u,
                             const gsl_vector *v, gsl_vector *w);
@@ -126,29 +152,25 @@ void fr_structure_net_force(const fricreg_structure *s, const gsl_vector *ptil, 
 /* newmark.c: u1, v1, x (= a1) and f1 of one Newmark / HHT-alpha step by Newton. */
 int fr_newmark_solve(fricreg_structure *s, double dt, int *converged, int *iters);
 
-/* stick_predictor.c: the contacts whose force at t is below their bound (law (4): in its
- * band), marked in s->stopped; their number. */
-size_t fr_stick_mark(fricreg_structure *s);
-/* A first guess for a Newmark / HHT-alpha step's Newton, from the k marked contacts, into
- * s->guess; 0 if there is none (k = 0, or W_SS singular). Uses s->Fa, s->afree, s->mwork. */
-int fr_stick_predictor(fricreg_structure *s, size_t k);
-
 /* central_difference.c: the same, explicit; FRICREG_ESTEP beyond its stability bounds. */
 int fr_central_solve(fricreg_structure *s, double dt);
 
-/* guard.c: the largest natural frequency sqrt(max eig M^-1 K) (0 if K has none > 0), cached;
- * and the step guard (src/ode/step_guard.h) of a fixed step dt of integ, FRICREG_OK or
- * FRICREG_ESTEP (recorded, led by who). */
+/* guard.c: what the step guard (src/ode/step_guard.h) reads of the model, computed once per
+ * model by fr_structure_rates (FRICREG_OK or FRICREG_ENOMEM, recorded, led by who), read
+ * after it: the largest natural frequency sqrt(max eig M^-1 K) (0 if K has none > 0), whether
+ * K and C are positive semidefinite (to rounding), the stiffest rate of run_ode's Jacobian; and
+ * the step guard of a fixed step dt of integ, FRICREG_OK or FRICREG_ESTEP (recorded). Up to
+ * 2048 degrees of freedom the eigenvalues themselves; beyond, Gershgorin bounds (guard.c). */
 struct fr_integrator;
-double fr_structure_omega_max(fricreg_structure *s);
-/* K and C are positive semidefinite, to rounding (cached with omega_max). */
-int fr_structure_stable(fricreg_structure *s);
+int fr_structure_rates(fricreg_structure *s, const char *who);
+double fr_structure_omega_max(const fricreg_structure *s);
+int fr_structure_stable(const fricreg_structure *s);
 /* A bound of the stiffest rate in the forward-difference Jacobian J of run_ode's first-order
  * system: omega_max + c_max + m max_i W_ii 2 mun_i / max(eps, sqrt(DBL_EPSILON)), the friction's
  * steepest slope as a forward difference of step >= sqrt(DBL_EPSILON) |y| sees it (a law's
  * jump included). GSL's LU-based steppers factor I - h c J: once h times it nears
  * 1/DBL_EPSILON, the identity is lost to rounding and the factor can be exactly singular. */
-double fr_structure_newton_rate(fricreg_structure *s);
+double fr_structure_newton_rate(const fricreg_structure *s);
 int fr_structure_guard(fricreg_structure *s, const struct fr_integrator *integ, double dt,
                        const char *who);
 

@@ -12,10 +12,9 @@
 #include <string.h>
 
 #include <gsl/gsl_errno.h>
-#include <gsl/gsl_blas.h>
-#include <gsl/gsl_linalg.h>
 #include <gsl/gsl_odeiv2.h>
 
+#include "base/sparse_ops.h"
 #include "ctx/ctx_driver.h"
 #include "law/law.h"
 #include "ode/fd_jacobian.h"
@@ -47,18 +46,18 @@ static int rhs(double t, const double y[], double dydt[], void *params)
     gsl_vector_view acc = gsl_vector_view_array(dydt + n, n);
     fr_structure_effective_load(s, t, s->ptil1);
     fr_structure_net_force(s, s->ptil1, &u.vector, &v.vector, s->work);
-    int status = fr_structure_friction(s, s->work, &v.vector, s->f1);
+    int status = fr_structure_motion(s, s->work, &v.vector, s->f1, &acc.vector);
     if (status != FRICREG_OK) {
         run->rhs_status = status;
         return GSL_EBADFUNC; /* GSL stops the step at once */
     }
     memcpy(dydt, y + n, n * sizeof *dydt);
-    gsl_blas_dgemv(CblasTrans, 1.0, s->J, s->f1, 1.0, s->work);
-    gsl_linalg_cholesky_solve(s->L, s->work, &acc.vector);
-    double input, viscous;
-    gsl_blas_ddot(&v.vector, s->ptil1, &input);
-    gsl_blas_dgemv(CblasNoTrans, 1.0, s->C, &v.vector, 0.0, s->work);
-    gsl_blas_ddot(&v.vector, s->work, &viscous);
+    double input = 0.0, viscous = 0.0;
+    fr_sym_mult(s->Cd, 1.0, y + n, 0.0, s->work->data);
+    for (size_t k = 0; k < n; k++) {
+        input += y[n + k] * s->ptil1->data[k];
+        viscous += y[n + k] * s->work->data[k];
+    }
     dydt[2 * n] = input;
     dydt[2 * n + 1] = viscous;
     for (size_t i = 0; i < s->m; i++)
@@ -202,6 +201,8 @@ int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, d
         return fr_fail(s, FRICREG_EINVAL, "run_ode: (t_end - t)/dt is too many steps");
 
     int status = fr_structure_prepare(s);
+    if (status == FRICREG_OK)
+        status = fr_structure_rates(s, "run_ode");
     if (status == FRICREG_OK && integ->lu_newton && !fr_structure_stable(s))
         return fr_fail(s, FRICREG_EINVAL,
                        "run_ode: integrator %s solves its Newton matrix by GSL's LU, which a "

@@ -1,0 +1,272 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* contact_factor.c — a CHOLMOD factor with the contacts seen through it (contact_factor.h).
+ *
+ * Y's columns are sparse triangular solves: contact i's column of P J^T, solved with L on the
+ * rows it reaches only (cholmod_l_solve2 with a sparse right-hand side, Bset), O(|reach|) each
+ * instead of O(nnz(L)). D = Y^T Y by CHOLMOD's sparse product. */
+#include <math.h>
+#include <string.h>
+
+#include "base/sparse_factor.h"
+#include "contact_factor.h"
+#include "fricreg.h"
+
+static int failed(cholmod_common *c, struct fr_error *err, const char *who, const char *name)
+{
+    int status = fr_cholmod_status(c->status);
+    if (status == FRICREG_OK)
+        status = FRICREG_ENOMEM;
+    return fr_error_set(err, status, "%s: no memory to factor %s", who, name);
+}
+
+void fr_cfactor_free(struct fr_cfactor *f, cholmod_common *c)
+{
+    cholmod_l_free_factor(&f->L, c);
+    cholmod_l_free_sparse(&f->Y, c);
+    cholmod_l_free_sparse(&f->D, c);
+    cholmod_l_free_dense(&f->X, c);
+    cholmod_l_free_dense(&f->Ywork, c);
+    cholmod_l_free_dense(&f->Ework, c);
+    cholmod_l_free(f->n, sizeof *f->pb, f->pb, c);
+    memset(f, 0, sizeof *f);
+}
+
+/* Analyse (nested dissection from FR_CFACTOR_NESTED_FROM) and factor A = L L^T. */
+static int factor(struct fr_cfactor *f, cholmod_sparse *A, cholmod_common *c, struct fr_error *err,
+                  const char *who, const char *name)
+{
+    /* L L^T (fr_cholmod_start), so that Y^T Y is J A^-1 J^T without a diagonal */
+    fr_cholmod_ordering(c, A->nrow >= FR_CFACTOR_NESTED_FROM ? CHOLMOD_NESDIS : CHOLMOD_AMD, 0);
+    f->L = cholmod_l_analyze(A, c);
+    if (f->L == NULL || !cholmod_l_factorize(A, f->L, c) || c->status < CHOLMOD_OK)
+        return failed(c, err, who, name);
+    if (c->status == CHOLMOD_NOT_POSDEF)
+        return fr_error_set(err, FRICREG_ENOTPSD,
+                            "%s: %s is not positive definite (no pivot at its column %ld)", who,
+                            name, (long)f->L->minor);
+    f->perm = f->L->ordering == CHOLMOD_NATURAL ? NULL : f->L->Perm;
+    return FRICREG_OK;
+}
+
+/* Appends column j of Y: contact j's column of P J^T solved with L on its reach. B (dense,
+ * zero) and Bset are scratch; iperm the inverse of perm. */
+static int y_column(struct fr_cfactor *f, const cholmod_sparse *Jt, size_t j,
+                    const SuiteSparse_long *iperm, cholmod_dense *B, cholmod_sparse *Bset,
+                    cholmod_sparse **Xset, cholmod_dense **X, cholmod_dense **Yw,
+                    cholmod_dense **Ew, cholmod_common *c)
+{
+    const SuiteSparse_long *Jp = Jt->p, *Ji = Jt->i;
+    const double *Jx = Jt->x;
+    double *b = B->x;
+    SuiteSparse_long *bset = Bset->i, *bp = Bset->p;
+    SuiteSparse_long len = 0;
+    for (SuiteSparse_long p = Jp[j]; p < Jp[j + 1]; p++) {
+        SuiteSparse_long row = iperm ? iperm[Ji[p]] : Ji[p];
+        b[row] = Jx[p];
+        bset[len++] = row;
+    }
+    bp[0] = 0;
+    bp[1] = len;
+    int ok = cholmod_l_solve2(CHOLMOD_L, f->L, B, Bset, X, Xset, Yw, Ew, c);
+    for (SuiteSparse_long k = 0; k < len; k++)
+        b[bset[k]] = 0.0;
+    if (!ok)
+        return 0;
+    cholmod_sparse *Y = f->Y;
+    const SuiteSparse_long *xi = (*Xset)->i, nx = ((SuiteSparse_long *)(*Xset)->p)[1];
+    SuiteSparse_long *Yp = Y->p, start = Yp[j];
+    if ((size_t)(start + nx) > Y->nzmax &&
+        !cholmod_l_reallocate_sparse(2 * (size_t)(start + nx), Y, c))
+        return 0;
+    SuiteSparse_long *Yi = Y->i;
+    double *Yx = Y->x;
+    const double *x = (*X)->x;
+    for (SuiteSparse_long k = 0; k < nx; k++) {
+        Yi[start + k] = xi[k];
+        Yx[start + k] = x[xi[k]];
+    }
+    Yp[j + 1] = start + nx;
+    return 1;
+}
+
+/* Y, column by column (unsorted within columns, then sorted).
+ *
+ * The solution's pattern Xset is ours: CHOLMOD 3.0.14's cholmod_l_solve2 checks the Xset it
+ * is given by its itype where it means its xtype (CHOLMOD_PATTERN, 0), so a 64-bit-index Xset
+ * never passes: it is freed and allocated again at every call, and a failed allocation is
+ * dereferenced (a crash, found by tests/alloc). Ours is marked with the value the check reads,
+ * and its own itype is put back before it is freed. */
+static int form_y(struct fr_cfactor *f, cholmod_sparse *Jt, cholmod_common *c)
+{
+    size_t n = f->n, m = f->m;
+    SuiteSparse_long *iperm = cholmod_l_malloc(n, sizeof *iperm, c);
+    cholmod_dense *B = cholmod_l_zeros(n, 1, CHOLMOD_REAL, c);
+    size_t maxcol = 1;
+    const SuiteSparse_long *Jp = Jt->p;
+    for (size_t j = 0; j < m; j++)
+        if ((size_t)(Jp[j + 1] - Jp[j]) > maxcol)
+            maxcol = (size_t)(Jp[j + 1] - Jp[j]);
+    cholmod_sparse *Bset = cholmod_l_allocate_sparse(n, 1, maxcol, 0, 1, 0, CHOLMOD_PATTERN, c);
+    cholmod_sparse *Xset = cholmod_l_allocate_sparse(n, 1, n, 0, 1, 0, CHOLMOD_PATTERN, c);
+    f->Y = cholmod_l_allocate_sparse(n, m, 4 * (size_t)Jp[m] + m, 0, 1, 0, CHOLMOD_REAL, c);
+    cholmod_dense *X = NULL, *Yw = NULL, *Ew = NULL;
+    int ok = iperm && B && Bset && Xset && f->Y;
+    if (ok && f->perm)
+        for (size_t k = 0; k < n; k++)
+            iperm[f->perm[k]] = (SuiteSparse_long)k;
+    if (ok) {
+        ((SuiteSparse_long *)f->Y->p)[0] = 0;
+        Xset->itype = CHOLMOD_PATTERN; /* see above */
+    }
+    for (size_t j = 0; ok && j < m; j++)
+        ok = y_column(f, Jt, j, f->perm ? iperm : NULL, B, Bset, &Xset, &X, &Yw, &Ew, c);
+    ok = ok && cholmod_l_sort(f->Y, c);
+    if (Xset != NULL)
+        Xset->itype = CHOLMOD_LONG;
+    cholmod_l_free(n, sizeof *iperm, iperm, c);
+    cholmod_l_free_dense(&B, c);
+    cholmod_l_free_sparse(&Bset, c);
+    cholmod_l_free_sparse(&Xset, c);
+    cholmod_l_free_dense(&X, c);
+    cholmod_l_free_dense(&Yw, c);
+    cholmod_l_free_dense(&Ew, c);
+    return ok;
+}
+
+/* Leaves out of the upper triangle D the off-diagonal entries below drop sqrt(D_ii D_jj). */
+static void drop_small(cholmod_sparse *D, double drop)
+{
+    SuiteSparse_long *Dp = D->p, *Di = D->i;
+    double *Dx = D->x;
+    size_t m = D->ncol;
+    SuiteSparse_long q = 0, start = 0;
+    /* Compacted in place, column by column: D_jj is the last entry of the sorted upper column
+     * j, read before the column moves; D_ii (i < j) the last of column i, already moved. */
+    for (size_t j = 0; j < m; j++) {
+        SuiteSparse_long end = Dp[j + 1];
+        double djj = end > start && Di[end - 1] == (SuiteSparse_long)j ? Dx[end - 1] : 0.0;
+        for (SuiteSparse_long p = start; p < end; p++) {
+            SuiteSparse_long i = Di[p];
+            double dii = i < (SuiteSparse_long)j ? Dx[Dp[i + 1] - 1] : 0.0;
+            if (i == (SuiteSparse_long)j || fabs(Dx[p]) > drop * sqrt(dii) * sqrt(djj)) {
+                Di[q] = i;
+                Dx[q++] = Dx[p];
+            }
+        }
+        start = end;
+        Dp[j + 1] = q;
+    }
+}
+
+/* D = Y^T Y, upper triangle, sorted. */
+static int form_d(struct fr_cfactor *f, double drop, cholmod_common *c)
+{
+    cholmod_sparse *Yt = cholmod_l_transpose(f->Y, 1, c);
+    if (Yt == NULL)
+        return 0;
+    f->D = cholmod_l_ssmult(Yt, f->Y, 1, 1, 1, c);
+    cholmod_l_free_sparse(&Yt, c);
+    if (f->D == NULL)
+        return 0;
+    if (drop > 0.0)
+        drop_small(f->D, drop);
+    return 1;
+}
+
+int fr_cfactor_build(struct fr_cfactor *f, cholmod_sparse *A, cholmod_sparse *Jt, double drop,
+                     cholmod_common *c, struct fr_error *err, const char *who, const char *name)
+{
+    memset(f, 0, sizeof *f);
+    f->n = A->nrow;
+    f->m = Jt->ncol;
+    int status = factor(f, A, c, err, who, name);
+    if (status == FRICREG_OK && !(form_y(f, Jt, c) && form_d(f, drop, c)))
+        status = failed(c, err, who, name);
+    if (status == FRICREG_OK) {
+        f->pb = cholmod_l_malloc(f->n, sizeof *f->pb, c);
+        f->X = cholmod_l_allocate_dense(f->n, 1, f->n, CHOLMOD_REAL, c);
+        if (f->pb == NULL || f->X == NULL)
+            status = failed(c, err, who, name);
+    }
+    if (status == FRICREG_OK) { /* one solve sizes the workspaces: later ones reuse them */
+        memset(f->pb, 0, f->n * sizeof *f->pb);
+        fr_cfactor_forward(f, f->pb, f->pb, c);
+        if (c->status < CHOLMOD_OK)
+            status = failed(c, err, who, name);
+    }
+    if (status != FRICREG_OK)
+        fr_cfactor_free(f, c);
+    return status;
+}
+
+/* L^-1 or L^-T on f->pb, the result back in f->pb. */
+static void triangular(struct fr_cfactor *f, int sys, cholmod_common *c)
+{
+    cholmod_dense B = {.nrow = f->n,
+                       .ncol = 1,
+                       .nzmax = f->n,
+                       .d = f->n,
+                       .x = f->pb,
+                       .xtype = CHOLMOD_REAL,
+                       .dtype = CHOLMOD_DOUBLE};
+    fr_cholmod_keep_workspace(f->Ywork);
+    cholmod_l_solve2(sys, f->L, &B, NULL, &f->X, NULL, &f->Ywork, &f->Ework, c);
+    memcpy(f->pb, f->X->x, f->n * sizeof *f->pb);
+}
+
+void fr_cfactor_forward(struct fr_cfactor *f, const double b[], double y[], cholmod_common *c)
+{
+    for (size_t k = 0; k < f->n; k++)
+        f->pb[k] = b[f->perm ? (size_t)f->perm[k] : k];
+    triangular(f, CHOLMOD_L, c);
+    memcpy(y, f->pb, f->n * sizeof *y);
+}
+
+void fr_cfactor_backward(struct fr_cfactor *f, const double y[], double x[], cholmod_common *c)
+{
+    memcpy(f->pb, y, f->n * sizeof *y);
+    triangular(f, CHOLMOD_Lt, c);
+    for (size_t k = 0; k < f->n; k++)
+        x[f->perm ? (size_t)f->perm[k] : k] = f->pb[k];
+}
+
+void fr_cfactor_solve(struct fr_cfactor *f, const double b[], double x[], cholmod_common *c)
+{
+    fr_cfactor_forward(f, b, x, c);
+    fr_cfactor_backward(f, x, x, c);
+}
+
+void fr_cfactor_project(const struct fr_cfactor *f, const double y[], double out[])
+{
+    const SuiteSparse_long *Yp = f->Y->p, *Yi = f->Y->i;
+    const double *Yx = f->Y->x;
+    for (size_t j = 0; j < f->m; j++) {
+        double sum = 0.0;
+        for (SuiteSparse_long p = Yp[j]; p < Yp[j + 1]; p++)
+            sum += Yx[p] * y[Yi[p]];
+        out[j] = sum;
+    }
+}
+
+void fr_cfactor_lift(const struct fr_cfactor *f, double alpha, const double g[], double y[])
+{
+    const SuiteSparse_long *Yp = f->Y->p, *Yi = f->Y->i;
+    const double *Yx = f->Y->x;
+    for (size_t j = 0; j < f->m; j++) {
+        double gj = alpha * g[j];
+        if (gj != 0.0)
+            for (SuiteSparse_long p = Yp[j]; p < Yp[j + 1]; p++)
+                y[Yi[p]] += Yx[p] * gj;
+    }
+}
+
+void fr_cfactor_compliance(const struct fr_cfactor *f, const double g[], double out[],
+                           double work[])
+{
+    fr_cfactor_lift(f, 1.0, g, work);
+    fr_cfactor_project(f, work, out);
+    const SuiteSparse_long *Yp = f->Y->p, *Yi = f->Y->i;
+    for (size_t j = 0; j < f->m; j++)
+        for (SuiteSparse_long p = Yp[j]; p < Yp[j + 1]; p++)
+            work[Yi[p]] = 0.0;
+}

@@ -1,0 +1,71 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* contact_factor.h — internal: a symmetric positive definite n x n matrix A (the mass matrix M,
+ * or Newmark's K_eff = M + w (gamma dt C + beta dt^2 K)) factored by CHOLMOD,
+ * P A P^T = L L^T, with the contacts seen through it:
+ *
+ *   Y = L^-1 P J^T  (n x m, sparse),   D = Y^T Y = J A^-1 J^T  (m x m),
+ *
+ * so that J A^-1 b = Y^T (L^-1 P b) and A^-1 (b + J^T g) = P^T L^-T (L^-1 P b + Y g): with
+ * A = M, D is the Delassus matrix W; with A = K_eff, the contacts' compliance over a step.
+ * A solve with contact forces is a forward half, the forces added through Y, and a backward
+ * half: one solve's cost, however the forces were found between the halves.
+ *
+ * Y is sparse when the ordering keeps the elimination tree shallow: column i holds the rows
+ * reachable from contact i's degrees of freedom, its path to the root. A nested-dissection
+ * ordering (METIS) makes that path O(log n) supernodes long on a banded or mesh-like A, where a
+ * minimum-degree ordering of a chain leaves it n long (Y dense); fr_cfactor_build takes
+ * nested dissection for large A (FR_CFACTOR_NESTED_FROM). */
+#ifndef FRICREG_CONTACT_FACTOR_H
+#define FRICREG_CONTACT_FACTOR_H
+
+#include <stddef.h>
+
+#include <cholmod.h>
+
+#include "base/error.h"
+
+/* From this order on A is ordered by nested dissection, below by minimum degree (AMD). */
+#define FR_CFACTOR_NESTED_FROM 4096
+
+struct fr_cfactor {
+    size_t n, m;
+    cholmod_factor *L;
+    SuiteSparse_long *perm; /* [n] P: row k of P b is b[perm[k]] (NULL: identity) */
+    cholmod_sparse *Y;      /* n x m, each column sorted */
+    cholmod_sparse *D;      /* m x m, the upper triangle (stype 1) of Y^T Y, sorted */
+    /* Solve scratch, sized at build so that a solve never allocates. */
+    cholmod_dense *X, *Ywork, *Ework;
+    double *pb; /* [n] */
+};
+
+/* Factors A (n x n, stype 1, the upper triangle) and forms Y and D for the contacts Jt
+ * (n x m, J^T: column i is contact i's row of J). drop > 0 leaves out of D the entries below
+ * drop sqrt(D_ii D_jj) (0: D exact). f must be zeroed or freed; on failure it is left freed.
+ * FRICREG_OK; FRICREG_ENOTPSD (A not positive definite: *minor its first column without a
+ * pivot); FRICREG_ENOMEM; the error recorded in err, led by who and naming the matrix. */
+int fr_cfactor_build(struct fr_cfactor *f, cholmod_sparse *A, cholmod_sparse *Jt, double drop,
+                     cholmod_common *c, struct fr_error *err, const char *who, const char *name);
+
+void fr_cfactor_free(struct fr_cfactor *f, cholmod_common *c);
+
+/* y[n] = L^-1 P b[n] (b and y may be the same array). */
+void fr_cfactor_forward(struct fr_cfactor *f, const double b[], double y[], cholmod_common *c);
+
+/* x[n] = P^T L^-T y[n] (y and x may be the same array). */
+void fr_cfactor_backward(struct fr_cfactor *f, const double y[], double x[], cholmod_common *c);
+
+/* x[n] = A^-1 b[n]: both halves. */
+void fr_cfactor_solve(struct fr_cfactor *f, const double b[], double x[], cholmod_common *c);
+
+/* out[m] = Y^T y[n]: J A^-1 b for y = L^-1 P b. */
+void fr_cfactor_project(const struct fr_cfactor *f, const double y[], double out[]);
+
+/* y[n] += alpha Y g[m]. */
+void fr_cfactor_lift(const struct fr_cfactor *f, double alpha, const double g[], double y[]);
+
+/* out[m] = D g[m] = Y^T (Y g), exactly (D itself may have dropped entries), using work[n],
+ * which must be zero on entry and is zero again on return. */
+void fr_cfactor_compliance(const struct fr_cfactor *f, const double g[], double out[],
+                           double work[]);
+
+#endif

@@ -1,0 +1,221 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* model.c — a structure's model matrices, M, K, C and J, as the caller gives them: dense
+ * row-major, or compressed sparse rows or columns (fricreg.h's enum fricreg_sparse_flags).
+ * Every form becomes CHOLMOD's compressed columns (src/base/matrix_input.h) and goes through
+ * fr_structure_install, which checks what the matrix must be and takes it. GSL's sparse
+ * matrices take the same road from structure_gsl.c. */
+#include <math.h>
+
+#include "base/matrix_input.h"
+#include "base/sparse_factor.h"
+#include "structure_internal.h"
+
+void fr_structure_model_changed(fricreg_structure *s)
+{
+    s->prepared = 0;
+    s->ready = 0;
+    s->step_dt = 0.0; /* K_eff and W_eff are the model's too */
+}
+
+/* M is positive definite: CHOLMOD's Cholesky factor exists (a pivot that is not positive is
+ * CHOLMOD_NOT_POSDEF). Analysed and factored here, then released: the first step factors the
+ * model it gets. */
+static int check_positive_definite(fricreg_structure *s, cholmod_sparse *M, const char *who)
+{
+    fr_cholmod_ordering(&s->cc, CHOLMOD_AMD, 0);
+    cholmod_factor *L = cholmod_l_analyze(M, &s->cc);
+    int status = FRICREG_OK;
+    if (L == NULL || !cholmod_l_factorize(M, L, &s->cc) || s->cc.status < CHOLMOD_OK)
+        status = fr_fail(s, FRICREG_ENOMEM, "%s: no memory to factor the mass matrix", who);
+    else if (s->cc.status == CHOLMOD_NOT_POSDEF)
+        status = fr_fail(s, FRICREG_ENOTPSD,
+                         "%s: the mass matrix is not positive definite (its Cholesky factor has "
+                         "no positive pivot at column %ld)",
+                         who, (long)L->minor);
+    cholmod_l_free_factor(&L, &s->cc);
+    return status;
+}
+
+/* J (m x n) moves every contact: no row without a nonzero entry. Into *Jt its transpose. */
+static int contacts_transposed(fricreg_structure *s, cholmod_sparse *J, cholmod_sparse **Jt,
+                               const char *who)
+{
+    *Jt = cholmod_l_transpose(J, 1, &s->cc);
+    if (*Jt == NULL)
+        return fr_fail(s, FRICREG_ENOMEM, "%s: no memory for J", who);
+    const SuiteSparse_long *p = (*Jt)->p;
+    const double *x = (*Jt)->x;
+    for (size_t i = 0; i < s->m; i++) {
+        int moves = 0;
+        for (SuiteSparse_long k = p[i]; k < p[i + 1]; k++)
+            moves |= x[k] != 0.0;
+        if (!moves) {
+            cholmod_l_free_sparse(Jt, &s->cc);
+            return fr_fail(s, FRICREG_EINVAL, "%s: row %zu of J is zero: contact %zu does not move",
+                           who, i, i);
+        }
+    }
+    return FRICREG_OK;
+}
+
+int fr_structure_install(fricreg_structure *s, int which, cholmod_sparse *A, const char *who)
+{
+    cholmod_sparse **slot[] = {&s->M, &s->K, &s->C, &s->Jt};
+    int status = FRICREG_OK;
+    if (which == FR_MASS)
+        status = check_positive_definite(s, A, who);
+    if (which == FR_CONTACTS) {
+        cholmod_sparse *Jt = NULL;
+        status = contacts_transposed(s, A, &Jt, who);
+        cholmod_l_free_sparse(&A, &s->cc);
+        A = Jt;
+    }
+    if (status != FRICREG_OK) {
+        cholmod_l_free_sparse(&A, &s->cc);
+        return status;
+    }
+    cholmod_l_free_sparse(slot[which], &s->cc);
+    *slot[which] = A;
+    if (which == FR_DAMPING)
+        s->rayleigh = 0;
+    if (which == FR_CONTACTS)
+        s->contacts_set = 1;
+    fr_structure_model_changed(s);
+    return FRICREG_OK;
+}
+
+/* ---- Dense -------------------------------------------------------------------------------- */
+
+static int set_dense(fricreg_structure *s, int which, const char *who, size_t ndof,
+                     const double A[])
+{
+    if (s == NULL)
+        return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, who);
+    if (A == NULL)
+        return fr_fail(s, FRICREG_ENULL, "%s: the matrix is NULL", who);
+    if (ndof != s->n)
+        return fr_fail(s, FRICREG_ESIZE, "%s: ndof = %zu, the structure has %zu", who, ndof, s->n);
+    cholmod_sparse *S = NULL;
+    int status = fr_dense_to_cholmod(ndof, ndof, A, 1, &s->cc, &S, &s->err, who);
+    return status != FRICREG_OK ? status : fr_structure_install(s, which, S, who);
+}
+
+int fricreg_structure_set_mass(fricreg_structure *s, size_t ndof, const double M[])
+{
+    return set_dense(s, FR_MASS, "set_mass", ndof, M);
+}
+
+int fricreg_structure_set_stiffness(fricreg_structure *s, size_t ndof, const double K[])
+{
+    return set_dense(s, FR_STIFFNESS, "set_stiffness", ndof, K);
+}
+
+int fricreg_structure_set_damping(fricreg_structure *s, size_t ndof, const double C[])
+{
+    return set_dense(s, FR_DAMPING, "set_damping", ndof, C);
+}
+
+int fricreg_structure_set_contacts(fricreg_structure *s, size_t m, size_t ndof, const double J[])
+{
+    const char *who = "set_contacts";
+    if (s == NULL)
+        return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, who);
+    if (J == NULL)
+        return fr_fail(s, FRICREG_ENULL, "%s: J is NULL", who);
+    if (m != s->m || ndof != s->n)
+        return fr_fail(s, FRICREG_ESIZE, "%s: J is %zu x %zu, the structure needs %zu x %zu", who,
+                       m, ndof, s->m, s->n);
+    cholmod_sparse *S = NULL;
+    int status = fr_dense_to_cholmod(m, ndof, J, 0, &s->cc, &S, &s->err, who);
+    return status != FRICREG_OK ? status : fr_structure_install(s, FR_CONTACTS, S, who);
+}
+
+/* ---- Compressed rows and columns ---------------------------------------------------------- */
+
+static int set_compressed(fricreg_structure *s, int which, const char *who, size_t nrows,
+                          size_t ncols, const struct fr_compressed *a)
+{
+    if (s == NULL)
+        return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, who);
+    if (a->nrows != nrows || a->ncols != ncols)
+        return fr_fail(s, FRICREG_ESIZE,
+                       "%s: the matrix is %zu x %zu, the structure needs %zu x %zu", who, a->nrows,
+                       a->ncols, nrows, ncols);
+    int symmetric = which != FR_CONTACTS;
+    int status = fr_compressed_check(a, symmetric, &s->err, who);
+    cholmod_sparse *S = NULL;
+    if (status == FRICREG_OK)
+        status = fr_compressed_to_cholmod(a, symmetric, &s->cc, &S, &s->err, who);
+    return status != FRICREG_OK ? status : fr_structure_install(s, which, S, who);
+}
+
+static int set_square(fricreg_structure *s, int which, const char *who, size_t ndof, int flags,
+                      int by_columns, const int64_t ptr[], const int64_t ind[], const double val[])
+{
+    struct fr_compressed a = {ndof, ndof, by_columns, flags, ptr, ind, val};
+    return set_compressed(s, which, who, s ? s->n : 0, s ? s->n : 0, &a);
+}
+
+int fricreg_structure_set_mass_csr(fricreg_structure *s, size_t ndof, int flags,
+                                   const int64_t rowptr[], const int64_t colind[],
+                                   const double values[])
+{
+    return set_square(s, FR_MASS, "set_mass_csr", ndof, flags, 0, rowptr, colind, values);
+}
+
+int fricreg_structure_set_mass_csc(fricreg_structure *s, size_t ndof, int flags,
+                                   const int64_t colptr[], const int64_t rowind[],
+                                   const double values[])
+{
+    return set_square(s, FR_MASS, "set_mass_csc", ndof, flags, 1, colptr, rowind, values);
+}
+
+int fricreg_structure_set_stiffness_csr(fricreg_structure *s, size_t ndof, int flags,
+                                        const int64_t rowptr[], const int64_t colind[],
+                                        const double values[])
+{
+    return set_square(s, FR_STIFFNESS, "set_stiffness_csr", ndof, flags, 0, rowptr, colind, values);
+}
+
+int fricreg_structure_set_stiffness_csc(fricreg_structure *s, size_t ndof, int flags,
+                                        const int64_t colptr[], const int64_t rowind[],
+                                        const double values[])
+{
+    return set_square(s, FR_STIFFNESS, "set_stiffness_csc", ndof, flags, 1, colptr, rowind, values);
+}
+
+int fricreg_structure_set_damping_csr(fricreg_structure *s, size_t ndof, int flags,
+                                      const int64_t rowptr[], const int64_t colind[],
+                                      const double values[])
+{
+    return set_square(s, FR_DAMPING, "set_damping_csr", ndof, flags, 0, rowptr, colind, values);
+}
+
+int fricreg_structure_set_damping_csc(fricreg_structure *s, size_t ndof, int flags,
+                                      const int64_t colptr[], const int64_t rowind[],
+                                      const double values[])
+{
+    return set_square(s, FR_DAMPING, "set_damping_csc", ndof, flags, 1, colptr, rowind, values);
+}
+
+int fricreg_structure_set_contacts_csr(fricreg_structure *s, size_t m, size_t ndof, int flags,
+                                       const int64_t rowptr[], const int64_t colind[],
+                                       const double values[])
+{
+    struct fr_compressed a = {m, ndof, 0, flags, rowptr, colind, values};
+    return set_compressed(s, FR_CONTACTS, "set_contacts_csr", s ? s->m : 0, s ? s->n : 0, &a);
+}
+
+int fricreg_structure_set_contacts_csc(fricreg_structure *s, size_t m, size_t ndof, int flags,
+                                       const int64_t colptr[], const int64_t rowind[],
+                                       const double values[])
+{
+    struct fr_compressed a = {m, ndof, 1, flags, colptr, rowind, values};
+    return set_compressed(s, FR_CONTACTS, "set_contacts_csc", s ? s->m : 0, s ? s->n : 0, &a);
+}

@@ -1,0 +1,254 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* newton_matrix.c — the contact-space Newton direction of a Newmark / HHT-alpha step
+ * (newton_matrix.h). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gsl/gsl_linalg.h>
+
+#include "base/gsl_mem.h"
+#include "newton_matrix.h"
+
+void fr_newton_matrix_free(struct fr_newton_matrix *nm, cholmod_common *c)
+{
+    void *blocks[] = {nm->Fz,   nm->Fa,  nm->T,     nm->row,  nm->perm, nm->tau,
+                      nm->norm, nm->rhs, nm->sol,   nm->rows, nm->fz,   nm->fa,
+                      nm->d,    nm->e,   nm->shift, nm->in_n, nm->b};
+    for (size_t k = 0; k < sizeof blocks / sizeof *blocks; k++)
+        free(blocks[k]); /* gsl_mem.h: one block each */
+    fr_masked_factor_free(&nm->block, c);
+    memset(nm, 0, sizeof *nm);
+}
+
+/* ---- Products with a symmetric sparse matrix (upper triangle, CSC) ------------------------- */
+
+/* row[0..m) += alpha x^T S: row i of X S for x = X's row i (S symmetric). */
+static void row_times_sym(const cholmod_sparse *S, double alpha, const double x[], double row[])
+{
+    const SuiteSparse_long *Sp = S->p, *Si = S->i;
+    const double *Sx = S->x;
+    for (size_t j = 0; j < S->ncol; j++)
+        for (SuiteSparse_long p = Sp[j]; p < Sp[j + 1]; p++) {
+            size_t k = (size_t)Si[p];
+            row[j] += alpha * x[k] * Sx[p];
+            if (k != j)
+                row[k] += alpha * x[j] * Sx[p];
+        }
+}
+
+/* ---- Dense ------------------------------------------------------------------------------- */
+
+static int dense_allocate(struct fr_newton_matrix *nm)
+{
+    if (nm->T != NULL)
+        return 1;
+    size_t m = nm->m;
+    nm->Fz = malloc(m * m * sizeof *nm->Fz);
+    nm->Fa = malloc(m * m * sizeof *nm->Fa);
+    nm->T = malloc(m * m * sizeof *nm->T);
+    nm->row = malloc(m * sizeof *nm->row);
+    nm->rows = malloc(m * sizeof *nm->rows);
+    nm->perm = fr_gsl_permutation_new(m);
+    nm->tau = fr_gsl_vector_new(m);
+    nm->norm = fr_gsl_vector_new(m);
+    nm->rhs = fr_gsl_vector_new(m);
+    nm->sol = fr_gsl_vector_new(m);
+    if (nm->Fz && nm->Fa && nm->T && nm->row && nm->rows && nm->perm && nm->tau && nm->norm &&
+        nm->rhs && nm->sol)
+        return 1;
+    void *blocks[] = {nm->Fz,   nm->Fa,  nm->T,    nm->row, nm->rows,
+                      nm->perm, nm->tau, nm->norm, nm->rhs, nm->sol};
+    for (size_t k = 0; k < sizeof blocks / sizeof *blocks; k++)
+        free(blocks[k]);
+    nm->Fz = nm->Fa = nm->T = nm->row = NULL;
+    nm->rows = NULL;
+    nm->perm = NULL;
+    nm->tau = nm->norm = nm->rhs = nm->sol = NULL;
+    return 0;
+}
+
+/* Row i of T = I - c F_z W_eff + F_a (W - W_eff) into nm->row. */
+static void dense_row(struct fr_newton_matrix *nm, size_t i, double coef, const cholmod_sparse *W,
+                      const cholmod_sparse *Weff)
+{
+    size_t m = nm->m;
+    const double *fz = nm->Fz + i * m, *fa = nm->Fa + i * m;
+    memset(nm->row, 0, m * sizeof *nm->row);
+    nm->row[i] = 1.0;
+    row_times_sym(W, 1.0, fa, nm->row);
+    row_times_sym(Weff, -1.0, fa, nm->row);
+    row_times_sym(Weff, -coef, fz, nm->row);
+}
+
+static int row_is_identity(const double fz[], const double fa[], size_t m)
+{
+    for (size_t j = 0; j < m; j++)
+        if (fz[j] != 0.0 || fa[j] != 0.0)
+            return 0;
+    return 1;
+}
+
+/* T_NN df_N = -G_N - T_NR df_R with df_R = -G_R, by QR with column pivoting. */
+static int dense_direction(struct fr_newton_matrix *nm, fricreg_ctx *ctx, double coef,
+                           const cholmod_sparse *W, const cholmod_sparse *Weff, const double G[],
+                           double df[])
+{
+    size_t m = nm->m, k = 0;
+    if (!dense_allocate(nm))
+        return FRICREG_ENOMEM;
+    int status = fricreg_ctx_tangent(ctx, m, nm->Fz, nm->Fa);
+    if (status != FRICREG_OK)
+        return status;
+    for (size_t i = 0; i < m; i++) {
+        df[i] = -G[i];
+        nm->fz[i] = nm->Fz[i * m + i]; /* the slopes newmark.c's first trial reads */
+        if (!row_is_identity(nm->Fz + i * m, nm->Fa + i * m, m))
+            nm->rows[k++] = i;
+    }
+    if (k == 0)
+        return FRICREG_OK;
+    gsl_matrix_view T = gsl_matrix_view_array(nm->T, k, k);
+    gsl_vector_view rhs = gsl_vector_subvector(nm->rhs, 0, k);
+    for (size_t p = 0; p < k; p++) {
+        size_t i = nm->rows[p];
+        dense_row(nm, i, coef, W, Weff);
+        double r = -G[i];
+        for (size_t j = 0, q = 0; j < m; j++) {
+            if (q < k && nm->rows[q] == j)
+                gsl_matrix_set(&T.matrix, p, q++, nm->row[j]);
+            else
+                r -= nm->row[j] * df[j];
+        }
+        gsl_vector_set(&rhs.vector, p, r);
+    }
+    gsl_permutation perm = {k, nm->perm->data};
+    gsl_vector_view tau = gsl_vector_subvector(nm->tau, 0, k);
+    gsl_vector_view norm = gsl_vector_subvector(nm->norm, 0, k);
+    gsl_vector_view sol = gsl_vector_subvector(nm->sol, 0, k);
+    int signum;
+    if (gsl_linalg_QRPT_decomp(&T.matrix, &tau.vector, &perm, &signum, &norm.vector) != GSL_SUCCESS)
+        return FRICREG_ESINGULAR;
+    for (size_t p = 0; p < k; p++)
+        if (gsl_matrix_get(&T.matrix, p, p) == 0.0)
+            return FRICREG_ESINGULAR;
+    if (gsl_linalg_QRPT_solve(&T.matrix, &tau.vector, &perm, &rhs.vector, &sol.vector) !=
+        GSL_SUCCESS)
+        return FRICREG_ESINGULAR;
+    for (size_t p = 0; p < k; p++)
+        df[nm->rows[p]] = gsl_vector_get(&sol.vector, p);
+    return FRICREG_OK;
+}
+
+/* ---- Diagonal ---------------------------------------------------------------------------- */
+
+int fr_newton_matrix_prepare(struct fr_newton_matrix *nm, const cholmod_sparse *Weff, int dense,
+                             cholmod_common *c)
+{
+    size_t m = Weff->ncol;
+    fr_masked_factor_free(&nm->block, c);
+    if (nm->m != m || nm->fz == NULL) {
+        fr_newton_matrix_free(nm, c);
+        nm->m = m;
+        nm->fz = malloc(m * sizeof *nm->fz);
+        nm->fa = malloc(m * sizeof *nm->fa);
+        nm->d = malloc(m * sizeof *nm->d);
+        nm->e = malloc(m * sizeof *nm->e);
+        nm->shift = malloc(m * sizeof *nm->shift);
+        nm->b = malloc(m * sizeof *nm->b);
+        nm->in_n = malloc(m);
+        if (!(nm->fz && nm->fa && nm->d && nm->e && nm->shift && nm->b && nm->in_n))
+            return FRICREG_ENOMEM;
+    }
+    if (dense && !dense_allocate(nm))
+        return FRICREG_ENOMEM;
+    return fr_masked_factor_prepare(&nm->block, Weff, c);
+}
+
+/* F_z and F_a's diagonals, the only entries with a diagonal W. */
+static int diagonal_slopes(struct fr_newton_matrix *nm, fricreg_ctx *ctx)
+{
+    size_t m = nm->m;
+    if (!dense_allocate(nm))
+        return FRICREG_ENOMEM;
+    int status = fricreg_ctx_tangent(ctx, m, nm->Fz, nm->Fa);
+    if (status != FRICREG_OK)
+        return status;
+    for (size_t i = 0; i < m; i++) {
+        nm->fz[i] = nm->Fz[i * m + i];
+        nm->fa[i] = nm->Fa[i * m + i];
+    }
+    return FRICREG_OK;
+}
+
+/* b = G_N / e_N - W_eff,NR df_R (0 off N). */
+static void diagonal_rhs(struct fr_newton_matrix *nm, const cholmod_sparse *Weff, const double G[],
+                         const double df[])
+{
+    const SuiteSparse_long *Wp = Weff->p, *Wi = Weff->i;
+    const double *Wx = Weff->x;
+    for (size_t i = 0; i < nm->m; i++)
+        nm->b[i] = nm->in_n[i] ? G[i] / nm->e[i] : 0.0;
+    for (size_t j = 0; j < nm->m; j++)
+        for (SuiteSparse_long p = Wp[j]; p < Wp[j + 1]; p++) {
+            size_t i = (size_t)Wi[p];
+            if (nm->in_n[i] && !nm->in_n[j])
+                nm->b[i] -= Wx[p] * df[j];
+            else if (nm->in_n[j] && !nm->in_n[i])
+                nm->b[j] -= Wx[p] * df[i];
+        }
+}
+
+/* 1 if the diagonal path applies (every e_i <= 0), with df_R filled; 0 to go dense. */
+static int diagonal_split(struct fr_newton_matrix *nm, double coef, const double *w_diag,
+                          const double G[], double df[], int *singular)
+{
+    *singular = 0;
+    for (size_t i = 0; i < nm->m; i++) {
+        nm->d[i] = 1.0 + nm->fa[i] * w_diag[i];
+        nm->e[i] = coef * nm->fz[i] + nm->fa[i];
+        nm->in_n[i] = nm->e[i] != 0.0;
+        if (nm->e[i] > 0.0 || (nm->in_n[i] && nm->d[i] < 0.0))
+            return 0;
+        if (!nm->in_n[i]) {
+            if (nm->d[i] == 0.0)
+                *singular = 1;
+            df[i] = nm->d[i] != 0.0 ? -G[i] / nm->d[i] : 0.0;
+        } else {
+            nm->shift[i] = nm->d[i] / -nm->e[i];
+        }
+    }
+    return 1;
+}
+
+static int diagonal_direction(struct fr_newton_matrix *nm, fricreg_ctx *ctx, double coef,
+                              const cholmod_sparse *W, const cholmod_sparse *Weff,
+                              const double *w_diag, const double G[], double df[],
+                              cholmod_common *c)
+{
+    int status = diagonal_slopes(nm, ctx), singular;
+    if (status != FRICREG_OK)
+        return status;
+    if (!diagonal_split(nm, coef, w_diag, G, df, &singular))
+        return dense_direction(nm, ctx, coef, W, Weff, G, df);
+    if (singular)
+        return FRICREG_ESINGULAR;
+    diagonal_rhs(nm, Weff, G, df);
+    return fr_masked_factor_solve(&nm->block, Weff, nm->in_n, nm->shift, nm->b, df, c);
+}
+
+int fr_newton_direction(struct fr_newton_matrix *nm, fricreg_ctx *ctx, double coef,
+                        const cholmod_sparse *W, const cholmod_sparse *Weff, const double *w_diag,
+                        const double G[], double df[], cholmod_common *c)
+{
+    if (w_diag != NULL)
+        return diagonal_direction(nm, ctx, coef, W, Weff, w_diag, G, df, c);
+    return dense_direction(nm, ctx, coef, W, Weff, G, df);
+}
+
+int fr_newton_stick_solve(struct fr_newton_matrix *nm, const cholmod_sparse *Weff,
+                          const unsigned char set[], const double b[], double x[],
+                          cholmod_common *c)
+{
+    return fr_masked_factor_solve(&nm->block, Weff, set, NULL, b, x, c);
+}
