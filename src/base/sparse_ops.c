@@ -2,26 +2,56 @@
 /* sparse_ops.c — products with CHOLMOD's compressed columns (sparse_ops.h). */
 #include "sparse_ops.h"
 
-void fr_sym_mult(const cholmod_sparse *S, double alpha, const double x[], double beta, double y[])
+/* Column j of the upper triangle S times alpha x into out: the entries above the diagonal go
+ * to out[i], i < j (set already); the column's own sum is returned. */
+static double column_times(const cholmod_sparse *S, size_t j, double alpha, const double x[],
+                           double out[])
 {
     const SuiteSparse_long *Sp = S->p, *Si = S->i;
     const double *Sx = S->x;
-    size_t n = S->ncol;
-    for (size_t k = 0; k < n; k++)
-        y[k] = beta == 0.0 ? 0.0 : beta * y[k];
-    for (size_t j = 0; j < n; j++) {
-        double xj = alpha * x[j], sum = 0.0;
+    double xj = alpha * x[j], sum = 0.0;
+    for (SuiteSparse_long p = Sp[j]; p < Sp[j + 1]; p++) {
+        size_t i = (size_t)Si[p];
+        if (i == j) {
+            sum += Sx[p] * x[j];
+        } else {
+            out[i] += Sx[p] * xj;
+            sum += Sx[p] * x[i];
+        }
+    }
+    return alpha * sum;
+}
+
+void fr_sym_mult(const cholmod_sparse *S, double alpha, const double x[], double beta, double y[])
+{
+    for (size_t j = 0; j < S->ncol; j++) {
+        /* y[j] is reached first here (later columns add above it): scale it now */
+        y[j] = beta == 0.0 ? 0.0 : beta * y[j];
+        y[j] += column_times(S, j, alpha, x, y);
+    }
+}
+
+void fr_sym_mult_pair(const double y0[], const cholmod_sparse *A, double alpha, const double x[],
+                      const cholmod_sparse *B, double beta, const double z[], double out[])
+{
+    for (size_t j = 0; j < A->ncol; j++) {
+        out[j] = y0[j]; /* column j is the first to reach out[j]: later ones add above it */
+        out[j] += column_times(A, j, alpha, x, out);
+        out[j] += column_times(B, j, beta, z, out);
+    }
+}
+
+double fr_sym_bilinear(const cholmod_sparse *S, const double x[], const double y[])
+{
+    const SuiteSparse_long *Sp = S->p, *Si = S->i;
+    const double *Sx = S->x;
+    double sum = 0.0;
+    for (size_t j = 0; j < S->ncol; j++)
         for (SuiteSparse_long p = Sp[j]; p < Sp[j + 1]; p++) {
             size_t i = (size_t)Si[p];
-            if (i == j) {
-                sum += Sx[p] * x[j];
-            } else {
-                y[i] += Sx[p] * xj;  /* S_ij x_j, i < j */
-                sum += Sx[p] * x[i]; /* S_ji x_i */
-            }
+            sum += Sx[p] * (i == j ? x[j] * y[j] : x[i] * y[j] + x[j] * y[i]);
         }
-        y[j] += alpha * sum;
-    }
+    return sum;
 }
 
 void fr_csc_mult_t(const cholmod_sparse *A, const double x[], double y[])

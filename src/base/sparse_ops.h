@@ -10,6 +10,14 @@
  * x and y must not overlap. beta = 0 ignores y's old values (a NaN there included). */
 void fr_sym_mult(const cholmod_sparse *S, double alpha, const double x[], double beta, double y[]);
 
+/* out[n] = y0[n] + alpha A x[n] + beta B z[n] for symmetric A and B stored as their upper
+ * triangles, in one pass over both (out must not overlap the inputs). */
+void fr_sym_mult_pair(const double y0[], const cholmod_sparse *A, double alpha, const double x[],
+                      const cholmod_sparse *B, double beta, const double z[], double out[]);
+
+/* x^T S y for a symmetric S stored as its upper triangle: one pass over S, no scratch. */
+double fr_sym_bilinear(const cholmod_sparse *S, const double x[], const double y[]);
+
 /* y[ncol] = A^T x[nrow] (A unsymmetric): column j's dot product with x. */
 void fr_csc_mult_t(const cholmod_sparse *A, const double x[], double y[]);
 

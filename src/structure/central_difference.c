@@ -31,8 +31,11 @@ int fr_central_solve(fricreg_structure *s, double dt)
         return fr_fail(s, status, "step: friction at t = %g: %s", s->t + dt,
                        fricreg_ctx_errmsg(s->ctx));
     const double *a1 = s->x->data;
-    double *v1 = s->v1->data;
-    for (size_t k = 0; k < s->n; k++)
+    double *v1 = s->v1->data, big = 0.0;
+    for (size_t k = 0; k < s->n; k++) {
         v1[k] = fr_central_velocity(dt, v[k], a[k], a1[k]);
+        big = fr_max_abs(fr_max_abs(fr_max_abs(big, u1[k]), v1[k]), a1[k]);
+    }
+    s->end_max = big;
     return FRICREG_OK;
 }

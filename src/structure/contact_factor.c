@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "base/sparse_factor.h"
+#include "base/sparse_ops.h"
 #include "contact_factor.h"
 #include "fricreg.h"
 
@@ -164,12 +165,18 @@ static int form_d(struct fr_cfactor *f, double drop, cholmod_common *c)
     cholmod_sparse *Yt = cholmod_l_transpose(f->Y, 1, c);
     if (Yt == NULL)
         return 0;
-    f->D = cholmod_l_ssmult(Yt, f->Y, 1, 1, 1, c);
+    cholmod_sparse *D = cholmod_l_ssmult(Yt, f->Y, 1, 1, 1, c);
     cholmod_l_free_sparse(&Yt, c);
-    if (f->D == NULL)
+    if (D != NULL && D->stype != 1) { /* CHOLMOD may hand back the lower triangle */
+        f->D = cholmod_l_copy(D, 1, 1, c);
+        cholmod_l_free_sparse(&D, c);
+    } else {
+        f->D = D;
+    }
+    if (f->D == NULL || !cholmod_l_sort(f->D, c))
         return 0;
     if (drop > 0.0)
-        drop_small(f->D, drop);
+        drop_small(f->D, drop / (double)f->m);
     return 1;
 }
 
@@ -199,8 +206,9 @@ int fr_cfactor_build(struct fr_cfactor *f, cholmod_sparse *A, cholmod_sparse *Jt
     return status;
 }
 
-/* L^-1 or L^-T on f->pb, the result back in f->pb. */
-static void triangular(struct fr_cfactor *f, int sys, cholmod_common *c)
+/* L^-1 or L^-T on f->pb, the result into out[n]: the solution's header is pointed at out for
+ * the call (its size is right, so CHOLMOD writes into it instead of reallocating). */
+static void triangular(struct fr_cfactor *f, int sys, double out[], cholmod_common *c)
 {
     cholmod_dense B = {.nrow = f->n,
                        .ncol = 1,
@@ -210,24 +218,26 @@ static void triangular(struct fr_cfactor *f, int sys, cholmod_common *c)
                        .xtype = CHOLMOD_REAL,
                        .dtype = CHOLMOD_DOUBLE};
     fr_cholmod_keep_workspace(f->Ywork);
+    void *own = f->X->x;
+    f->X->x = out;
     cholmod_l_solve2(sys, f->L, &B, NULL, &f->X, NULL, &f->Ywork, &f->Ework, c);
-    memcpy(f->pb, f->X->x, f->n * sizeof *f->pb);
+    f->X->x = own;
 }
 
 void fr_cfactor_forward(struct fr_cfactor *f, const double b[], double y[], cholmod_common *c)
 {
     for (size_t k = 0; k < f->n; k++)
         f->pb[k] = b[f->perm ? (size_t)f->perm[k] : k];
-    triangular(f, CHOLMOD_L, c);
-    memcpy(y, f->pb, f->n * sizeof *y);
+    triangular(f, CHOLMOD_L, y, c);
 }
 
 void fr_cfactor_backward(struct fr_cfactor *f, const double y[], double x[], cholmod_common *c)
 {
     memcpy(f->pb, y, f->n * sizeof *y);
-    triangular(f, CHOLMOD_Lt, c);
+    double *sol = f->X->x;
+    triangular(f, CHOLMOD_Lt, sol, c);
     for (size_t k = 0; k < f->n; k++)
-        x[f->perm ? (size_t)f->perm[k] : k] = f->pb[k];
+        x[f->perm ? (size_t)f->perm[k] : k] = sol[k];
 }
 
 void fr_cfactor_solve(struct fr_cfactor *f, const double b[], double x[], cholmod_common *c)
@@ -260,13 +270,7 @@ void fr_cfactor_lift(const struct fr_cfactor *f, double alpha, const double g[],
     }
 }
 
-void fr_cfactor_compliance(const struct fr_cfactor *f, const double g[], double out[],
-                           double work[])
+void fr_cfactor_compliance(const struct fr_cfactor *f, const double g[], double out[])
 {
-    fr_cfactor_lift(f, 1.0, g, work);
-    fr_cfactor_project(f, work, out);
-    const SuiteSparse_long *Yp = f->Y->p, *Yi = f->Y->i;
-    for (size_t j = 0; j < f->m; j++)
-        for (SuiteSparse_long p = Yp[j]; p < Yp[j + 1]; p++)
-            work[Yi[p]] = 0.0;
+    fr_sym_mult(f->D, 1.0, g, 0.0, out);
 }

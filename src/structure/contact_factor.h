@@ -40,7 +40,8 @@ struct fr_cfactor {
 
 /* Factors A (n x n, stype 1, the upper triangle) and forms Y and D for the contacts Jt
  * (n x m, J^T: column i is contact i's row of J). drop > 0 leaves out of D the entries below
- * drop sqrt(D_ii D_jj) (0: D exact). f must be zeroed or freed; on failure it is left freed.
+ * drop sqrt(D_ii D_jj) / m (0: D exact): those of a row then sum to less than drop times its
+ * diagonal's scale, so that with drop = 2^-53 D f differs from Y^T (Y f) by rounding. f must be zeroed or freed; on failure it is left freed.
  * FRICREG_OK; FRICREG_ENOTPSD (A not positive definite: *minor its first column without a
  * pivot); FRICREG_ENOMEM; the error recorded in err, led by who and naming the matrix. */
 int fr_cfactor_build(struct fr_cfactor *f, cholmod_sparse *A, cholmod_sparse *Jt, double drop,
@@ -63,9 +64,7 @@ void fr_cfactor_project(const struct fr_cfactor *f, const double y[], double out
 /* y[n] += alpha Y g[m]. */
 void fr_cfactor_lift(const struct fr_cfactor *f, double alpha, const double g[], double y[]);
 
-/* out[m] = D g[m] = Y^T (Y g), exactly (D itself may have dropped entries), using work[n],
- * which must be zero on entry and is zero again on return. */
-void fr_cfactor_compliance(const struct fr_cfactor *f, const double g[], double out[],
-                           double work[]);
+/* out[m] = D g[m], O(nnz(D)). */
+void fr_cfactor_compliance(const struct fr_cfactor *f, const double g[], double out[]);
 
 #endif

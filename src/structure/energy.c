@@ -6,8 +6,6 @@
  * du.K(u + u1)/2 = d(u.K u/2) exactly, and the balance closes to Newton's tolerance. */
 #include <string.h>
 
-#include <gsl/gsl_blas.h>
-
 #include "base/sparse_ops.h"
 #include "structure_internal.h"
 
@@ -47,34 +45,27 @@ void fr_energy_start(fricreg_structure *s)
 }
 
 /* The step from (u, v, p~, f) at t to (u1, v1, p~1, f1); before the state is replaced.
- * Uses s->dx, s->xt and s->mwork as scratch (Newton is done with them). The means of the
- * loads and forces are x/2 + x1/2, not (x + x1)/2: a load and a friction bound near DBL_MAX
- * (holding each other, at rest) made the sum overflow and 0 * Inf a NaN dissipation; halving
- * is exact, so in range the numbers are the same. */
+ * Uses s->dx, s->xt and s->mwork as scratch (Newton is done with them). The means of
+ * the loads and forces are x/2 + x1/2, not (x + x1)/2: a load and a friction bound near
+ * DBL_MAX (holding each other, at rest) made the sum overflow and 0 * Inf a NaN dissipation;
+ * halving is exact, so in range the numbers are the same. */
 void fr_energy_step(fricreg_structure *s, const gsl_vector *u1, const gsl_vector *v1,
                     const gsl_vector *ptil1, const gsl_vector *f1)
 {
-    gsl_vector *du = s->dx, *mid = s->xt;
-    gsl_vector_memcpy(du, u1);
-    gsl_vector_sub(du, s->u);
+    double *du = s->dx->data, *mid = s->xt->data, *dz = s->mwork->data;
+    const double *u = s->u->data, *v = s->v->data, *p = s->ptil->data;
+    double input = 0.0;
+    for (size_t k = 0; k < s->n; k++) {
+        du[k] = u1->data[k] - u[k];
+        input += du[k] * (0.5 * ptil1->data[k] + 0.5 * p[k]);
+        mid[k] = 0.5 * v[k] + 0.5 * v1->data[k];
+    }
+    s->energy.input += input;
+    s->energy.viscous += fr_sym_bilinear(s->Cd, du, mid);
 
-    double w;
-    gsl_vector_memcpy(mid, ptil1);
-    gsl_vector_scale(mid, 0.5);
-    gsl_blas_daxpy(0.5, s->ptil, mid);
-    gsl_blas_ddot(du, mid, &w);
-    s->energy.input += w;
-
-    gsl_vector_memcpy(mid, s->v);
-    gsl_vector_add(mid, v1);
-    fr_sym_mult(s->Cd, 0.5, mid->data, 0.0, s->work->data);
-    gsl_blas_ddot(du, s->work, &w);
-    s->energy.viscous += w;
-
-    fr_csc_mult_t(s->Jt, du->data, s->mwork->data); /* dz */
+    fr_csc_mult_t(s->Jt, du, dz);
     for (size_t i = 0; i < s->m; i++) {
-        double d = -gsl_vector_get(s->mwork, i) *
-                   (0.5 * gsl_vector_get(s->f, i) + 0.5 * gsl_vector_get(f1, i));
+        double d = -dz[i] * (0.5 * s->f->data[i] + 0.5 * f1->data[i]);
         s->energy.per_contact[i] += d;
         s->energy.friction += d;
     }

@@ -20,7 +20,8 @@
  * maps): the stopping rule and the line search read R, as they did when x was the unknown.
  *
  * The step's cost: K_eff factored once per dt (contact_factor.c), one forward solve for b,
- * the Newton iterations in the contact space, where W_eff f = Y^T (Y f) costs O(nnz(Y)), and
+ * the Newton iterations in the contact space, where W_eff f costs O(nnz(W_eff)) (its entries
+ * below the rounding of the diagonal left out: contact_factor.h), and
  * one backward solve for x. */
 #include <math.h>
 #include <string.h>
@@ -33,7 +34,7 @@
 
 #define ARMIJO 1e-4       /* sufficient decrease of the residual's 2-norm */
 #define MAX_CUTS 30       /* halvings of one Newton direction */
-#define WEFF_DROP 0x1p-53 /* W_eff entries below this times sqrt(W_ii W_jj): rounding */
+#define WEFF_DROP 0x1p-53 /* W_eff entries below this times sqrt(W_ii W_jj) / m: rounding */
 
 /* zdot(f) and a_free(f) into s->zdot, s->afree; the law's forces into s->f1; G = f - F; then
  * R = w J^T G on the degrees of freedom J touches, its 2-norm into *phi and its largest entry
@@ -43,8 +44,8 @@ static int residual(fricreg_structure *s, const gsl_vector *f, gsl_vector *G, do
 {
     size_t m = s->m;
     double *weff_f = s->mwork->data, *w_f = s->mwork2->data;
-    fr_cfactor_compliance(&s->step, f->data, weff_f, s->spread->data);
-    fr_cfactor_compliance(&s->mass, f->data, w_f, s->spread->data);
+    fr_cfactor_compliance(&s->step, f->data, weff_f);
+    fr_cfactor_compliance(&s->mass, f->data, w_f);
     double c = (1.0 + s->alpha) * s->gamma * s->step_dt;
     for (size_t i = 0; i < m; i++) {
         s->zdot->data[i] = s->z0->data[i] + c * weff_f[i];
@@ -111,12 +112,14 @@ static double bound_scale(fricreg_structure *s)
 }
 
 /* The step's force scale: the largest entry of |M a| and |C v + K u - p~ - J^T f| at its
- * start (hist), |p~1| at its end, and |J|^T mun. */
+ * start (hist: HHT only; for Newmark it is -M a to Newton's tolerance), |p~1| at its end, and
+ * |J|^T mun. */
 static double force_scale(fricreg_structure *s)
 {
     fr_sym_mult(s->M, 1.0, s->a->data, 0.0, s->work->data);
     double scale = fmax(fr_norm_inf(s->work), fr_norm_inf(s->ptil1));
-    scale = fmax(scale, fr_norm_inf(s->hist));
+    if (s->alpha != 0.0)
+        scale = fmax(scale, fr_norm_inf(s->hist));
     scale = fmax(scale, bound_scale(s));
     return scale > 0.0 ? scale : 1e-300;
 }
@@ -134,7 +137,7 @@ static double force_scale(fricreg_structure *s)
 static double first_trial(fricreg_structure *s)
 {
     double c = (1.0 + s->alpha) * s->gamma * s->step_dt;
-    fr_cfactor_compliance(&s->step, s->df->data, s->mwork->data, s->spread->data);
+    fr_cfactor_compliance(&s->step, s->df->data, s->mwork->data);
     double lambda = 1.0, eps = fr_ctx_eps(s->ctx);
     size_t first = s->m;
     for (size_t i = 0; i < s->m; i++) {
@@ -241,8 +244,8 @@ static int stick_guess(fricreg_structure *s)
     if (k == 0)
         return 0;
     double c = (1.0 + s->alpha) * s->gamma * s->step_dt;
-    fr_cfactor_compliance(&s->step, guess, weff_fr, s->spread->data); /* W_eff f_R */
-    fr_csc_mult_t(s->Jt, s->v->data, b);                              /* zdot(t) */
+    fr_cfactor_compliance(&s->step, guess, weff_fr); /* W_eff f_R */
+    fr_csc_mult_t(s->Jt, s->v->data, b);             /* zdot(t) */
     for (size_t i = 0; i < m; i++)
         b[i] = (b[i] - s->z0->data[i]) / c - weff_fr[i];
     return fr_newton_stick_solve(&s->newton, s->step.D, set, b, guess, &s->cc) == FRICREG_OK;
@@ -297,13 +300,16 @@ static void predict(fricreg_structure *s, double dt)
         up[k] = u[k] + dt * v[k] + (0.5 * dt * dt - b2) * a[k];
         vp[k] = v[k] + (dt - g) * a[k];
     }
-    fr_structure_net_force(s, s->ptil, s->u, s->v, s->hist); /* p~ - C v - K u */
-    fr_csc_mult_add(s->Jt, 1.0, s->f->data, hist);
-    for (size_t k = 0; k < n; k++)
-        hist[k] = -hist[k];
+    if (s->alpha != 0.0) { /* Newmark: hist = -M a to Newton's tolerance, and unused */
+        fr_structure_net_force(s, s->ptil, s->u, s->v, s->hist); /* p~ - C v - K u */
+        fr_csc_mult_add(s->Jt, 1.0, s->f->data, hist);
+        for (size_t k = 0; k < n; k++)
+            hist[k] = -hist[k];
+    }
     fr_structure_net_force(s, s->ptil1, s->up, s->vp, s->yb); /* p~1 - C vp - K up */
-    for (size_t k = 0; k < n; k++)
-        yb[k] = w * yb[k] + s->alpha * hist[k];
+    if (s->alpha != 0.0)
+        for (size_t k = 0; k < n; k++)
+            yb[k] = w * yb[k] + s->alpha * hist[k];
     fr_cfactor_forward(&s->step, yb, yb, &s->cc);
     double *z0 = s->z0->data, *a0 = s->af0->data;
     fr_cfactor_project(&s->step, yb, a0); /* J x0 */
@@ -332,10 +338,13 @@ int fr_newmark_solve(fricreg_structure *s, double dt, int *converged, int *iters
     /* x = K_eff^-1 (b + w J^T f): the forward half is yb, the backward half completes it. */
     fr_cfactor_lift(&s->step, 1.0 + s->alpha, s->fk->data, s->yb->data);
     fr_cfactor_backward(&s->step, s->yb->data, s->x->data, &s->cc);
-    double b2 = s->beta * dt * dt, g = s->gamma * dt;
+    double b2 = s->beta * dt * dt, g = s->gamma * dt, big = 0.0;
     for (size_t k = 0; k < s->n; k++) {
-        s->u1->data[k] = s->up->data[k] + b2 * s->x->data[k];
-        s->v1->data[k] = s->vp->data[k] + g * s->x->data[k];
+        double x = s->x->data[k], u1 = s->up->data[k] + b2 * x, v1 = s->vp->data[k] + g * x;
+        s->u1->data[k] = u1;
+        s->v1->data[k] = v1;
+        big = fr_max_abs(fr_max_abs(fr_max_abs(big, u1), v1), x);
     }
+    s->end_max = big;
     return FRICREG_OK;
 }

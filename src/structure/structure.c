@@ -404,8 +404,9 @@ void fr_structure_effective_load(const fricreg_structure *s, double t, gsl_vecto
 {
     double g = s->load.n == 0 ? 1.0 : fr_record_at(&s->load, t);
     double ag = fr_record_at(&s->ground, t);
+    const double *p = s->p->data, *mr = s->Mr->data;
     for (size_t k = 0; k < s->n; k++)
-        gsl_vector_set(ptil, k, g * gsl_vector_get(s->p, k) - ag * gsl_vector_get(s->Mr, k));
+        ptil->data[k] = g * p[k] - ag * mr[k];
 }
 
 /* ---- Getters and errors -------------------------------------------------------------------- */

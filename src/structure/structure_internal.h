@@ -90,12 +90,14 @@ struct fricreg_structure {
     gsl_vector *ptil;            /* p - M r a_g at t */
     gsl_vector *f;               /* [m] friction at t */
     gsl_vector *a_held, *f_held; /* a and f before a step's equilibrium, restored if it fails */
+    double end_max;              /* the largest |u1|, |v1|, |a1| of the step just solved (NaN
+                                  * if one is NaN): the divergence check's */
     int ready;
     int fresh; /* set_initial since the last step: the balance starts here */
 
     /* Step scratch, allocated at create: [n] ... */
     gsl_vector *x, *u1, *v1, *ptil1, *hist, *up, *vp, *work, *yb, *dx, *xt;
-    gsl_vector *spread; /* [n] zero between uses (fr_cfactor_compliance, spread norms) */
+    gsl_vector *spread; /* [n] zero between uses (spread norms, the bounds' scale) */
     /* ... and [m]: the forces at the step's end, the context's inputs, Newton's iterate,
      * residual, direction, trial, and what the contacts see of the step's predictor. */
     gsl_vector *f1, *zdot, *afree, *fk, *G, *df, *ft, *Gt, *z0, *af0, *mwork, *mwork2;
@@ -149,7 +151,14 @@ void fr_structure_spread_norms(fricreg_structure *s, double scale, const gsl_vec
 void fr_structure_net_force(const fricreg_structure *s, const gsl_vector *ptil, const gsl_vector *u,
                             const gsl_vector *v, gsl_vector *w);
 
-/* newmark.c: u1, v1, x (= a1) and f1 of one Newmark / HHT-alpha step by Newton. */
+/* The largest of m and |x|, NaN if either is: a running maximum for end_max. */
+static inline double fr_max_abs(double m, double x)
+{
+    double a = x < 0.0 ? -x : x;
+    return a <= m ? m : a; /* a NaN x (or m) gives NaN */
+}
+
+/* newmark.c: u1, v1, x (= a1), f1 and end_max of one Newmark / HHT-alpha step by Newton. */
 int fr_newmark_solve(fricreg_structure *s, double dt, int *converged, int *iters);
 
 /* central_difference.c: the same, explicit; FRICREG_ESTEP beyond its stability bounds. */
