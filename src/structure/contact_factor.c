@@ -159,14 +159,43 @@ static void drop_small(cholmod_sparse *D, double drop)
     }
 }
 
-/* D = Y^T Y, upper triangle, sorted. */
+/* A copy of Y without the entries below drop times their column's largest: the terms they
+ * would add to an entry of Y^T Y are below drop times the product of the two columns' scales,
+ * and the rows far from a contact hold only such entries (K_eff^-1 decays away from the
+ * contact), so that contacts far apart share no row and Y^T Y stays sparse. */
+static cholmod_sparse *significant(const cholmod_sparse *Y, double drop, cholmod_common *c)
+{
+    cholmod_sparse *S = cholmod_l_copy_sparse((cholmod_sparse *)Y, c);
+    if (S == NULL)
+        return NULL;
+    SuiteSparse_long *Sp = S->p, *Si = S->i, q = 0, start = 0;
+    double *Sx = S->x;
+    for (size_t j = 0; j < S->ncol; j++) {
+        SuiteSparse_long end = Sp[j + 1];
+        double big = 0.0;
+        for (SuiteSparse_long p = start; p < end; p++)
+            big = fmax(big, fabs(Sx[p]));
+        for (SuiteSparse_long p = start; p < end; p++)
+            if (fabs(Sx[p]) > drop * big) {
+                Si[q] = Si[p];
+                Sx[q++] = Sx[p];
+            }
+        start = end;
+        Sp[j + 1] = q;
+    }
+    return S;
+}
+
+/* D = Y^T Y, upper triangle, sorted; with drop > 0 from Y's significant entries, and its own
+ * small entries left out. */
 static int form_d(struct fr_cfactor *f, double drop, cholmod_common *c)
 {
-    cholmod_sparse *Yt = cholmod_l_transpose(f->Y, 1, c);
-    if (Yt == NULL)
-        return 0;
-    cholmod_sparse *D = cholmod_l_ssmult(Yt, f->Y, 1, 1, 1, c);
+    cholmod_sparse *Ys = drop > 0.0 ? significant(f->Y, drop, c) : f->Y;
+    cholmod_sparse *Yt = Ys == NULL ? NULL : cholmod_l_transpose(Ys, 1, c);
+    cholmod_sparse *D = Yt == NULL ? NULL : cholmod_l_ssmult(Yt, Ys, 1, 1, 1, c);
     cholmod_l_free_sparse(&Yt, c);
+    if (Ys != f->Y)
+        cholmod_l_free_sparse(&Ys, c);
     if (D != NULL && D->stype != 1) { /* CHOLMOD may hand back the lower triangle */
         f->D = cholmod_l_copy(D, 1, 1, c);
         cholmod_l_free_sparse(&D, c);
