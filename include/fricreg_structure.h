@@ -327,8 +327,8 @@ FRICREG_API int fricreg_structure_set_newton(fricreg_structure *s, double tol, i
  *  iteration: a frictionless step's cost plus the contacts' (docs/benchmark.md, scaling).
  *  Steps other than these first ones make no heap allocation (fricreg_structure_create).
  *
- *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if dt <= 0, t + dt rounds to t, J
- *  was never set, or W = J M^-1 J^T has an entry beyond the double range or a W_ii below
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if dt <= 0, t + dt rounds to t, dt
+ *  is so large that K_eff's entries overflow, J was never set, or W = J M^-1 J^T has an entry beyond the double range or a W_ii below
  *  DBL_MIN ~ 2.2e-308 (J and M of scales too far apart); FRICREG_ENONFINITE if dt is not
  *  finite; FRICREG_ENOTSYM or
  *  FRICREG_ENOTPSD if the context refuses W (not expected: W is formed symmetric from a

@@ -1079,7 +1079,7 @@ static const struct row rows[] = {
      "0ni",
      ST_REC,
      {HANDLE, DBL(0, "nnfiioi"), INT(0, "iiii")}},
-    {"fricreg_structure_step", w_st_step, "0inypged", ST_REC, {HANDLE, DBL(0, "nnniiod")}},
+    {"fricreg_structure_step", w_st_step, "0inypged", ST_REC, {HANDLE, DBL(0, "nnniioi")}},
     {"fricreg_structure_run",
      w_st_run,
      "0inypged",

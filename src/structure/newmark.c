@@ -69,6 +69,16 @@ static int residual(fricreg_structure *s, const gsl_vector *f, gsl_vector *G, do
 /* Up to this many contacts the dense Newton matrix is allocated with K_eff's factor even where
  * W is diagonal, for the steps that need it (a falling Stribeck branch): beyond, at that use. */
 #define DENSE_FALLBACK_MAX 64
+static int all_finite(const cholmod_sparse *A)
+{
+    const SuiteSparse_long *Ap = A->p;
+    const double *Ax = A->x;
+    for (SuiteSparse_long p = 0; p < Ap[A->ncol]; p++)
+        if (!isfinite(Ax[p]))
+            return 0;
+    return 1;
+}
+
 static int form_step_factor(fricreg_structure *s, double dt)
 {
     if (fabs(dt - s->step_dt) <= STEP_RTOL * s->step_dt)
@@ -80,6 +90,11 @@ static int form_step_factor(fricreg_structure *s, double dt)
     cholmod_sparse *Keff = fr_structure_combine(s, 1.0, gc, gk);
     if (Keff == NULL)
         return fr_fail(s, FRICREG_ENOMEM, "step: no memory for K_eff");
+    if (!all_finite(Keff)) {
+        cholmod_l_free_sparse(&Keff, &s->cc);
+        return fr_fail(s, FRICREG_EINVAL,
+                       "step: dt = %g puts K_eff's entries beyond the double range", dt);
+    }
     int status = fr_cfactor_build(&s->step, Keff, s->Jt, WEFF_DROP, &s->cc, &s->err, "step",
                                   "K_eff = M + (1 + alpha)(gamma dt C + beta dt^2 K)");
     cholmod_l_free_sparse(&Keff, &s->cc);
