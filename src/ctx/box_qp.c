@@ -25,6 +25,7 @@
 #include "ctx_internal.h"
 #include "factor.h"
 #include "law/law.h"
+#include "sparse_coupling.h"
 
 #define NONE SIZE_MAX
 /* A held bound is released only if its multiplier is below -MULT_RTOL times the size of the
@@ -121,6 +122,32 @@ static double row_times_x(const double row[], const size_t set[], const size_t p
     return (sum[0] + sum[1]) + (sum[2] + sum[3]);
 }
 
+/* The positions pos[n] of x scattered by contact into the sparse coupling's zeroed scratch
+ * (value 1), or cleared again (value 0). */
+static double *scatter_x(fricreg_ctx *ctx, const size_t set[], const size_t pos[], size_t n,
+                         int value)
+{
+    double *by_contact = ctx->sp->by_contact;
+    for (size_t h = 0; h < n; h++) {
+        size_t k = pos ? pos[h] : h;
+        by_contact[set[k]] = value ? ctx->qp.x[k] : 0.0;
+    }
+    return by_contact;
+}
+
+/* Sparse W: y_F = -(b_F + W_FA x_A), W_FA x_A by the free rows' entries, x_A scattered by
+ * contact: O(nnz) rather than |F| |A|. */
+static void sparse_held_products(fricreg_ctx *ctx, const size_t set[], size_t nf)
+{
+    struct fr_box_qp *qp = &ctx->qp;
+    const double *x_held = scatter_x(ctx, set, qp->held_pos, qp->n_held, 1);
+    for (size_t a = 0; a < nf; a++) {
+        size_t k = qp->free_pos[a];
+        qp->y[a] = -(qp->b[k] + fr_sparse_row_dot(ctx->sp, set[k], x_held, 0, NULL));
+    }
+    scatter_x(ctx, set, qp->held_pos, qp->n_held, 0);
+}
+
 /* y_F = -W_FF^-1 (b_F + W_FA x_A), with the cached factor of W_FF (updated by factor.c when
  * F differs from the last iteration's by a contact or two). W_FA x_A over the held list: it is
  * usually short, and this runs once per iteration. */
@@ -128,11 +155,15 @@ static int subspace_minimizer(fricreg_ctx *ctx, const size_t set[], size_t nf)
 {
     struct fr_box_qp *qp = &ctx->qp;
     size_t m = ctx->m;
-    for (size_t a = 0; a < nf; a++) {
-        size_t k = qp->free_pos[a];
-        double size;
-        qp->y[a] = -(qp->b[k] +
-                     row_times_x(ctx->W + set[k] * m, set, qp->held_pos, qp->x, qp->n_held, &size));
+    if (ctx->sp != NULL) {
+        sparse_held_products(ctx, set, nf);
+    } else {
+        for (size_t a = 0; a < nf; a++) {
+            size_t k = qp->free_pos[a];
+            double size;
+            qp->y[a] = -(qp->b[k] + row_times_x(ctx->W + set[k] * m, set, qp->held_pos, qp->x,
+                                                qp->n_held, &size));
+        }
     }
     int status = fr_factor_ensure(ctx, qp->free_set, nf, "eval");
     if (status == FRICREG_OK)
@@ -199,16 +230,19 @@ static void take_step(struct fr_box_qp *qp, size_t nf, double alpha, size_t bloc
 
 /* The held bound with the most negative multiplier (gradient W_SS x + b, signed by the side),
  * or NONE if x is optimal. A degenerate box is never released. */
-static size_t most_negative_multiplier(const fricreg_ctx *ctx, const size_t set[], size_t s)
+static size_t most_negative_multiplier(fricreg_ctx *ctx, const size_t set[], size_t s)
 {
     const struct fr_box_qp *qp = &ctx->qp;
+    const double *x_all = ctx->sp != NULL ? scatter_x(ctx, set, NULL, s, 1) : NULL;
     size_t pick = NONE;
     double most = 0.0;
     for (size_t k = 0; k < s; k++) {
         if (qp->side[k] == FR_FREE || qp->lo[k] == qp->hi[k])
             continue;
         double size,
-            g = qp->b[k] + row_times_x(ctx->W + set[k] * ctx->m, set, NULL, qp->x, s, &size);
+            g = qp->b[k] +
+                (x_all != NULL ? fr_sparse_row_dot(ctx->sp, set[k], x_all, 0, &size)
+                               : row_times_x(ctx->W + set[k] * ctx->m, set, NULL, qp->x, s, &size));
         size += fabs(qp->b[k]);
         double lambda = qp->side[k] == FR_LOWER ? g : -g;
         if (lambda < -MULT_RTOL * size && lambda < most) {
@@ -216,6 +250,8 @@ static size_t most_negative_multiplier(const fricreg_ctx *ctx, const size_t set[
             pick = k;
         }
     }
+    if (x_all != NULL)
+        scatter_x(ctx, set, NULL, s, 0);
     return pick;
 }
 
