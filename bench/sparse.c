@@ -20,7 +20,8 @@
  * interleaved timings (CPU time; the dense context's, DENSE_REPEATS of 2 evaluations), printed per evaluation and per contact; the ratios read
  * against "unchanged" (target: <= 2 for "tenth") and against the dense context at the same m.
  * Targets at m = 10^5: <= 1 us per contact unchanged, <= 2x that with a tenth changing.
- * With OUTDIR, also writes sparse.csv there; MMAX (default 10^6) caps the sizes. */
+ * With OUTDIR (or "-" for none), also writes sparse.csv there; MMAX (default 10^6) and MMIN
+ * (default 10^3) bound the sizes. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -354,15 +355,18 @@ static int write_csv(const char *dir, const struct result all[], int n)
 
 int main(int argc, char **argv)
 {
-    if (argc > 3) {
-        fprintf(stderr, "usage: fricreg-bench-sparse [OUTDIR] [MMAX]\n");
+    if (argc > 4) {
+        fprintf(stderr, "usage: fricreg-bench-sparse [OUTDIR|-] [MMAX [MMIN]]\n");
         return 2;
     }
-    size_t m_max = argc == 3 ? (size_t)strtod(argv[2], NULL) : 1000000;
+    size_t m_max = argc >= 3 ? (size_t)strtod(argv[2], NULL) : 1000000;
+    size_t m_min = argc >= 4 ? (size_t)strtod(argv[3], NULL) : 1000;
     static struct result all[NKINDS * NSIZES * 4];
     int n = 0, status = FRICREG_OK;
     for (int kind = 0; kind < NKINDS && status == FRICREG_OK; kind++)
         for (int s = 0; s < NSIZES && status == FRICREG_OK && sizes[s] <= m_max; s++) {
+            if (sizes[s] < m_min)
+                continue;
             struct problem p;
             status = problem_init(&p, sizes[s], kind);
             if (status == FRICREG_OK)
@@ -373,7 +377,7 @@ int main(int argc, char **argv)
     if (status != FRICREG_OK)
         return 1;
     print_table(all, n);
-    if (argc >= 2 && write_csv(argv[1], all, n) != 0)
+    if (argc >= 2 && strcmp(argv[1], "-") != 0 && write_csv(argv[1], all, n) != 0)
         return 1;
     return 0;
 }

@@ -47,8 +47,10 @@ int fr_box_qp_alloc(struct fr_box_qp *qp, size_t m)
     qp->free_pos = malloc(m * sizeof *qp->free_pos);
     qp->free_set = malloc(m * sizeof *qp->free_set);
     qp->held_pos = malloc(m * sizeof *qp->held_pos);
+    qp->released = malloc(m * sizeof *qp->released);
+    qp->released_side = malloc(m * sizeof *qp->released_side);
     if (!qp->lo || !qp->hi || !qp->b || !qp->x || !qp->y || !qp->side || !qp->free_pos ||
-        !qp->free_set || !qp->held_pos) {
+        !qp->free_set || !qp->held_pos || !qp->released || !qp->released_side) {
         fr_box_qp_free(qp);
         return FRICREG_ENOMEM;
     }
@@ -66,6 +68,8 @@ void fr_box_qp_free(struct fr_box_qp *qp)
     free(qp->free_pos);
     free(qp->free_set);
     free(qp->held_pos);
+    free(qp->released);
+    free(qp->released_side);
     memset(qp, 0, sizeof *qp);
 }
 
@@ -255,12 +259,42 @@ static size_t most_negative_multiplier(fricreg_ctx *ctx, const size_t set[], siz
     return pick;
 }
 
+/* Whether position k is among those released together. */
+static int released_together(const struct fr_box_qp *qp, size_t k)
+{
+    for (size_t r = 0; r < qp->n_released; r++)
+        if (qp->released[r] == k)
+            return 1;
+    return 0;
+}
+
+/* At a minimizer of the working set: the bounds to release, as *released (one, its side in
+ * *released_side) or recorded in qp->released (several, bulk); returns 0 if x is optimal. */
+static int release(fricreg_ctx *ctx, const size_t set[], size_t s, size_t *released,
+                   signed char *released_side)
+{
+    struct fr_box_qp *qp = &ctx->qp;
+    if (qp->bulk) {
+        size_t count = fr_box_qp_release_all(ctx, set, s);
+        if (count == 1)
+            *released = fr_box_qp_keep_one(qp, released_side);
+        return count > 0;
+    }
+    *released = most_negative_multiplier(ctx, set, s);
+    if (*released == NONE)
+        return 0;
+    *released_side = qp->side[*released];
+    qp->side[*released] = FR_FREE;
+    return 1;
+}
+
 int fr_box_qp_solve(fricreg_ctx *ctx, const size_t set[], size_t s)
 {
     struct fr_box_qp *qp = &ctx->qp;
     size_t released = NONE;
     signed char released_side = FR_FREE;
     start(qp, s);
+    qp->n_released = 0;
     for (size_t it = 0; it < MAX_ITERATIONS(s); it++) {
         ctx->stats[FRICREG_STAT_QP_ITERATIONS]++;
         size_t nf = list_free(qp, set, s), block = NONE;
@@ -270,17 +304,25 @@ int fr_box_qp_solve(fricreg_ctx *ctx, const size_t set[], size_t s)
             int status = subspace_minimizer(ctx, set, nf);
             if (status != FRICREG_OK)
                 return status;
+            if (qp->bulk && released == NONE && fr_box_qp_projected_step(ctx, set, nf)) {
+                qp->n_released = 0;
+                continue; /* a lower point, not yet the minimizer of the new working set */
+            }
             alpha = step_length(qp, nf, released, released_side, &block, &block_side);
+            if (alpha == 0.0 && qp->n_released > 1 && released_together(qp, block)) {
+                /* several released at once, one turns straight back: release one alone, as
+                 * Alg. 16.3 does (Thm 16.5: it moves away from its bound) */
+                released = fr_box_qp_keep_one(qp, &released_side);
+                continue;
+            }
         }
         take_step(qp, nf, alpha, block, block_side);
         released = NONE;
+        qp->n_released = 0;
         if (block != NONE)
             continue; /* not yet at the minimizer of the new working set */
-        released = most_negative_multiplier(ctx, set, s);
-        if (released == NONE)
+        if (!release(ctx, set, s, &released, &released_side))
             return FRICREG_OK;
-        released_side = qp->side[released];
-        qp->side[released] = FR_FREE;
     }
     return fr_fail(ctx, FRICREG_ESINGULAR,
                    "eval: the near-stick QP of %zu contacts (first: contact %zu) did not settle"

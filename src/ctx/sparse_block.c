@@ -36,7 +36,8 @@
  * (CHOLMOD 3.0.14: Modify/cholmod_rowadd.c, cholmod_rowdel.c, cholmod_updown.c allocate only
  * through allocate_work, change_factor and reallocate_column; Cholesky/t_cholmod_rowfac.c
  * through change_factor and reallocate_column; cholmod_l_solve2 reuses X and Y of the right
- * size). tests/alloc/test_alloc_failure.c checks it with every allocation failing.
+ * size, once Y's shape is restored: fr_sparse_block_solve). tests/alloc/test_alloc_failure.c
+ * checks it with every allocation failing.
  *
  * Singularity: a fresh factorization's pivot ratio d_p / W_kk below FR_PIVOT_MIN (1e-12), k
  * the contact at factor position p, positions in the factor's (AMD's) order. The ratio does
@@ -150,30 +151,28 @@ void fr_sparse_block_free(struct fr_sparse_coupling *sp)
 /* ---- The factor's state ------------------------------------------------------------------ */
 
 /* The pivot d_p of L D L^T at factor position p. */
-static double pivot(const cholmod_factor *L, size_t p)
+static double pivot(const cholmod_factor *L, SuiteSparse_long p)
 {
     return ((const double *)L->x)[((const SuiteSparse_long *)L->p)[p]];
 }
 
 /* d_p / W_kk of position p (k = perm[p]); a pivot below DBL_MIN counts as 0, as in factor.c. */
-static double pivot_ratio(const fricreg_ctx *ctx, size_t p)
+static double pivot_ratio(const fricreg_ctx *ctx, SuiteSparse_long p)
 {
     double d = pivot(ctx->sp->block.L, p);
     return d >= DBL_MIN ? d / ctx->w_diag[ctx->sp->perm[p]] : 0.0;
 }
 
-/* The first held position whose pivot ratio is below bound (NaN too), or m if none. */
-static size_t first_small_pivot(const fricreg_ctx *ctx, double bound)
+/* The parent of position p in the elimination tree of L's pattern (-1 at a root). */
+static SuiteSparse_long parent_in(const cholmod_factor *L, SuiteSparse_long p)
 {
-    const struct fr_sparse_block *b = &ctx->sp->block;
-    for (size_t p = 0; p < ctx->m; p++)
-        if (b->held[p] && !(pivot_ratio(ctx, p) >= bound))
-            return p;
-    return ctx->m;
+    const SuiteSparse_long *Lp = L->p, *Li = L->i, *Lnz = L->nz;
+    return Lnz[p] > 1 ? Li[Lp[p] + 1] : -1;
 }
 
-/* max over held positions of |(L D L^T)_pp / W_kk - 1|, with sp->column as the accumulator. */
-static double diagonal_drift(const fricreg_ctx *ctx)
+/* max over the block's positions of |(L D L^T)_pp / W_kk - 1|, with sp->column as the
+ * accumulator: one pass over L. */
+static double diagonal_drift(const fricreg_ctx *ctx, const size_t set[], size_t n)
 {
     const struct fr_sparse_coupling *sp = ctx->sp;
     const cholmod_factor *L = sp->block.L;
@@ -186,11 +185,11 @@ static double diagonal_drift(const fricreg_ctx *ctx)
         for (SuiteSparse_long p = Lp[j] + 1; p < Lp[j] + Lnz[j]; p++)
             diag[Li[p]] += d * Lx[p] * Lx[p];
     }
-    for (size_t j = 0; j < ctx->m; j++) {
-        if (sp->block.held[j])
-            drift = fmax(drift, fabs(diag[j] / ctx->w_diag[sp->perm[j]] - 1.0));
-        diag[j] = 0.0;
+    for (size_t a = 0; a < n; a++) {
+        SuiteSparse_long p = sp->pinv[set[a]];
+        drift = fmax(drift, fabs(diag[p] / ctx->w_diag[set[a]] - 1.0));
     }
+    memset(diag, 0, ctx->m * sizeof *diag);
     return isnan(drift) ? INFINITY : drift;
 }
 
@@ -227,6 +226,23 @@ static void block_matrix(struct fr_sparse_coupling *sp)
     Bp[sp->m] = q;
 }
 
+/* The block's smallest pivot ratio, and its position (the lowest of equal ones) in *at. */
+static double smallest_ratio(const fricreg_ctx *ctx, const size_t set[], size_t n,
+                             SuiteSparse_long *at)
+{
+    double smallest = INFINITY;
+    *at = -1;
+    for (size_t a = 0; a < n; a++) {
+        SuiteSparse_long p = ctx->sp->pinv[set[a]];
+        double ratio = pivot_ratio(ctx, p);
+        if (ratio < smallest || (ratio == smallest && p < *at) || isnan(ratio)) {
+            smallest = isnan(ratio) ? 0.0 : ratio;
+            *at = p;
+        }
+    }
+    return smallest;
+}
+
 static int fresh(fricreg_ctx *ctx, const size_t set[], size_t n, const char *who)
 {
     struct fr_sparse_coupling *sp = ctx->sp;
@@ -241,16 +257,17 @@ static int fresh(fricreg_ctx *ctx, const size_t set[], size_t n, const char *who
     /* No allocation (the numeric factor exists), so nothing can fail but the pivots: a zero
      * pivot is CHOLMOD's warning CHOLMOD_NOT_POSDEF, and the scan below judges them all. */
     cholmod_l_rowfac(b->CB, NULL, zero, 0, ctx->m, b->L, &sp->c);
-    size_t p = first_small_pivot(ctx, FR_PIVOT_MIN);
-    if (p < ctx->m) {
+    SuiteSparse_long at;
+    double ratio = smallest_ratio(ctx, set, n, &at);
+    if (!(ratio >= FR_PIVOT_MIN)) {
         b->valid = 0;
         return fr_fail(ctx, FRICREG_ESINGULAR,
                        "%s: W on the %zu contacts (first: contact %zu) is singular: contact"
                        " %zu's pivot ratio d/W_ii %.3g (in the sparse factor's order) is below"
                        " %g: redundant contacts",
-                       who, n, set[0], (size_t)sp->perm[p], pivot_ratio(ctx, p), FR_PIVOT_MIN);
+                       who, n, set[0], (size_t)sp->perm[at], ratio, FR_PIVOT_MIN);
     }
-    b->fragile = first_small_pivot(ctx, UPDATE_PIVOT_MIN) < ctx->m;
+    b->fragile = ratio < UPDATE_PIVOT_MIN;
     b->updates = 0;
     b->valid = 1;
     remember_order(ctx, set, n);
@@ -263,51 +280,52 @@ static int fresh(fricreg_ctx *ctx, const size_t set[], size_t n, const char *who
  * they exceed budget (a row update's work: its rank-one update runs along that path). */
 static double path_cost(const cholmod_factor *L, SuiteSparse_long p, double budget)
 {
-    const SuiteSparse_long *Lp = L->p, *Li = L->i, *Lnz = L->nz;
+    const SuiteSparse_long *Lnz = L->nz;
     double cost = 0.0;
-    while (p >= 0 && cost <= budget) {
+    for (; p >= 0 && cost <= budget; p = parent_in(L, p))
         cost += (double)Lnz[p];
-        p = Lnz[p] > 1 ? Li[Lp[p] + 1] : -1;
-    }
     return cost;
 }
 
-/* The work of updating the factor to the block marked in next[]: a position that leaves
- * updates along its own path; one that enters joins the trees of its held neighbours (in W)
- * and downdates along their paths. Summed until it exceeds budget. */
-static double update_cost(const struct fr_sparse_coupling *sp, double budget)
+/* The work of updating the held block (positions order[b->n]) to the one marked in next[]
+ * (the set's positions): a position that leaves updates along its own path; one that enters
+ * joins the trees of its held neighbours (in W) and downdates along their paths. Summed until
+ * it exceeds budget. */
+static double update_cost(const struct fr_sparse_coupling *sp, const size_t set[], size_t n,
+                          double budget)
 {
     const struct fr_sparse_block *b = &sp->block;
     const SuiteSparse_long *Wp = sp->W->p, *Wi = sp->W->i;
     double cost = 0.0;
-    for (size_t p = 0; p < sp->m && cost <= budget; p++) {
-        if (b->held[p] && !b->next[p]) {
-            cost += path_cost(b->L, (SuiteSparse_long)p, budget - cost);
-        } else if (b->next[p] && !b->held[p]) {
-            SuiteSparse_long k = sp->perm[p];
-            cost += 1.0;
-            for (SuiteSparse_long t = Wp[k]; t < Wp[k + 1] && cost <= budget; t++) {
-                SuiteSparse_long q = sp->pinv[Wi[t]];
-                if (q != (SuiteSparse_long)p && b->held[q])
-                    cost += path_cost(b->L, q, budget - cost);
-            }
+    for (size_t a = 0; a < b->n && cost <= budget; a++)
+        if (!b->next[b->order[a]])
+            cost += path_cost(b->L, b->order[a], budget - cost);
+    for (size_t a = 0; a < n && cost <= budget; a++) {
+        SuiteSparse_long k = (SuiteSparse_long)set[a];
+        if (b->held[sp->pinv[k]])
+            continue;
+        cost += 1.0;
+        for (SuiteSparse_long t = Wp[k]; t < Wp[k + 1] && cost <= budget; t++) {
+            SuiteSparse_long q = sp->pinv[Wi[t]];
+            if (Wi[t] != k && b->held[q])
+                cost += path_cost(b->L, q, budget - cost);
         }
     }
     return cost;
 }
 
 /* Row p deleted: its row and column become the identity's. */
-static int delete_row(struct fr_sparse_coupling *sp, size_t p)
+static int delete_row(struct fr_sparse_coupling *sp, SuiteSparse_long p)
 {
     struct fr_sparse_block *b = &sp->block;
-    if (!cholmod_l_row_subtree(sp->C, NULL, p, b->parent, b->R, &sp->c))
+    if (!cholmod_l_row_subtree(sp->C, NULL, (size_t)p, b->parent, b->R, &sp->c))
         return 0;
     b->held[p] = 0;
-    return cholmod_l_rowdel(p, b->R, b->L, &sp->c);
+    return cholmod_l_rowdel((size_t)p, b->R, b->L, &sp->c);
 }
 
 /* Row p added: column p of C_B (both triangles, the held rows only, from W by contact). */
-static int add_row(struct fr_sparse_coupling *sp, size_t p)
+static int add_row(struct fr_sparse_coupling *sp, SuiteSparse_long p)
 {
     struct fr_sparse_block *b = &sp->block;
     const SuiteSparse_long *Wp = sp->W->p, *Wi = sp->W->i;
@@ -325,34 +343,46 @@ static int add_row(struct fr_sparse_coupling *sp, size_t p)
     Rp[0] = 0;
     Rp[1] = q;
     b->R->sorted = 0;
-    return cholmod_l_rowadd(p, b->R, b->L, &sp->c);
+    return cholmod_l_rowadd((size_t)p, b->R, b->L, &sp->c);
 }
 
-/* From the held block to the one marked in next[]: rows deleted, then added. Returns 0 if an
- * update gave up (a small pivot, a drift, or CHOLMOD refused): a fresh factorization must
- * follow. */
-static int update(fricreg_ctx *ctx, size_t n)
+/* Whether the pivots on p's path (the ones an added row downdates) keep their ratio above
+ * UPDATE_PIVOT_MIN. */
+static int path_pivots_hold(const fricreg_ctx *ctx, SuiteSparse_long p)
+{
+    const struct fr_sparse_block *b = &ctx->sp->block;
+    for (; p >= 0; p = parent_in(b->L, p))
+        if (b->held[p] && !(pivot_ratio(ctx, p) >= UPDATE_PIVOT_MIN))
+            return 0;
+    return 1;
+}
+
+/* From the held block (positions order[b->n]) to set (marked in next[]): rows deleted, then
+ * added. Returns 0 if an update gave up (a small pivot, a drift, or CHOLMOD refused): a fresh
+ * factorization must follow. */
+static int update(fricreg_ctx *ctx, const size_t set[], size_t n)
 {
     struct fr_sparse_coupling *sp = ctx->sp;
     struct fr_sparse_block *b = &sp->block;
-    const unsigned char *next = b->next;
     size_t changes = 0;
-    for (size_t p = 0; p < ctx->m; p++)
-        if (b->held[p] && !next[p]) {
-            if (!delete_row(sp, p))
+    for (size_t a = 0; a < b->n; a++)
+        if (!b->next[b->order[a]]) {
+            if (!delete_row(sp, b->order[a]))
                 return 0;
             changes++;
         }
-    for (size_t p = 0; p < ctx->m; p++)
-        if (next[p] && !b->held[p]) {
-            if (!add_row(sp, p))
-                return 0;
-            changes++;
-        }
+    for (size_t a = 0; a < n; a++) {
+        SuiteSparse_long p = sp->pinv[set[a]];
+        if (b->held[p])
+            continue;
+        if (!add_row(sp, p) || !path_pivots_hold(ctx, p))
+            return 0;
+        changes++;
+    }
     b->n = n;
     ctx->stats[FRICREG_STAT_FACTOR_UPDATES] += (int64_t)changes;
     b->updates += changes;
-    return first_small_pivot(ctx, UPDATE_PIVOT_MIN) == ctx->m && diagonal_drift(ctx) <= DRIFT_MAX;
+    return diagonal_drift(ctx, set, n) <= DRIFT_MAX;
 }
 
 int fr_sparse_block_ensure(fricreg_ctx *ctx, const size_t set[], size_t n, const char *who)
@@ -372,10 +402,10 @@ int fr_sparse_block_ensure(fricreg_ctx *ctx, const size_t set[], size_t n, const
     int worth = !b->fragile && changes <= few_changes(n > b->n ? n : b->n) &&
                 b->updates + changes <= MAX_UPDATES;
     if (worth) {
+        double budget = b->fresh_cost / UPDATE_WEIGHT;
         for (size_t a = 0; a < n; a++)
             b->next[sp->pinv[set[a]]] = 1;
-        worth = update_cost(sp, b->fresh_cost / UPDATE_WEIGHT) <= b->fresh_cost / UPDATE_WEIGHT &&
-                update(ctx, n);
+        worth = update_cost(sp, set, n, budget) <= budget && update(ctx, set, n);
         for (size_t a = 0; a < n; a++)
             b->next[sp->pinv[set[a]]] = 0;
         if (worth) {
@@ -396,6 +426,10 @@ int fr_sparse_block_solve(fricreg_ctx *ctx, double r[])
         return FRICREG_OK;
     for (size_t a = 0; a < b->n; a++)
         rhs[b->order[a]] = r[a];
+    /* cholmod_l_solve2 reuses Y of 4 x m, but (CHOLMOD 3.0.14, Cholesky/cholmod_solve.c,
+     * ptrans) leaves it shaped 1 x m for the one column solved, and would reallocate it on the
+     * next call: its 4 x m shape back, whose storage it still has. */
+    b->y->nrow = b->y->d = 4;
     cholmod_dense *E = NULL; /* unused by a simplicial factor */
     cholmod_l_solve2(CHOLMOD_A, b->L, b->rhs, NULL, &b->x, NULL, &b->y, &E, &sp->c);
     const double *x = b->x->x;

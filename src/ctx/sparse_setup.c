@@ -211,6 +211,7 @@ static void install(fricreg_ctx *ctx, struct fr_sparse_coupling *sp, const doubl
     ctx->w_unit = 0;
     ctx->sp = sp;
     ctx->qp = *qp;
+    ctx->qp.bulk = 1; /* box_qp_bulk.c */
     ctx->rhs = rhs;
     ctx->last_valid = 0;
     /* A first QP started with every contact free takes an iteration, O(m + nnz(L)) here, for
