@@ -17,8 +17,9 @@
  *     entries, so that L's pattern is that of W_BB's factor: separate clusters of B stay
  *     separate trees, and the updates that follow run along short paths.
  * As in factor.c, updates are used when at most 2 + |B|/8 contacts change, at most 1000
- * since the last fresh factorization, and while no pivot ratio falls below UPDATE_PIVOT_MIN
- * and the diagonal of L D L^T stays within DRIFT_MAX of W_BB's; and, as the dense rule is
+ * since the last fresh factorization, and while no pivot ratio (of an added row, or of the
+ * ancestors its downdate touched) falls below UPDATE_PIVOT_MIN and, after deletions, the
+ * diagonal of L D L^T stays within DRIFT_MAX of W_BB's (one pass over L); and, as the dense rule is
  * itself a cost rule (an update costs |B|^2, a factorization |B|^3/3), only when their
  * estimated cost is below a fresh factorization's: a row update walks the elimination tree
  * from its row to the root, and on a chain that AMD orders end to end that is a path of up
@@ -364,12 +365,12 @@ static int update(fricreg_ctx *ctx, const size_t set[], size_t n)
 {
     struct fr_sparse_coupling *sp = ctx->sp;
     struct fr_sparse_block *b = &sp->block;
-    size_t changes = 0;
+    size_t deleted = 0, added = 0;
     for (size_t a = 0; a < b->n; a++)
         if (!b->next[b->order[a]]) {
             if (!delete_row(sp, b->order[a]))
                 return 0;
-            changes++;
+            deleted++;
         }
     for (size_t a = 0; a < n; a++) {
         SuiteSparse_long p = sp->pinv[set[a]];
@@ -377,12 +378,13 @@ static int update(fricreg_ctx *ctx, const size_t set[], size_t n)
             continue;
         if (!add_row(sp, p) || !path_pivots_hold(ctx, p))
             return 0;
-        changes++;
+        added++;
     }
     b->n = n;
-    ctx->stats[FRICREG_STAT_FACTOR_UPDATES] += (int64_t)changes;
-    b->updates += changes;
-    return diagonal_drift(ctx, set, n) <= DRIFT_MAX;
+    ctx->stats[FRICREG_STAT_FACTOR_UPDATES] += (int64_t)(deleted + added);
+    b->updates += deleted + added;
+    /* As factor.c: the drift after deletions (an added row's pivots are checked above) */
+    return deleted == 0 || diagonal_drift(ctx, set, n) <= DRIFT_MAX;
 }
 
 int fr_sparse_block_ensure(fricreg_ctx *ctx, const size_t set[], size_t n, const char *who)
