@@ -595,6 +595,12 @@ START_TEST(tangent_apply_errors)
     ck_assert_int_eq(fricreg_ctx_tangent_apply(ctx, 6, NULL, NULL, df), FRICREG_OK);
     for (int i = 0; i < 6; i++)
         ck_assert(df[i] == 0.0);
+    /* all at rest and free: df = -W^-1 diag(2 W_ii mun_i/eps) dzdot, 2e3 W times 1e308 */
+    double huge[6] = {1e308, 1e308, 1e308, 1e308, 1e308, 1e308}, kept[6];
+    memcpy(kept, df, sizeof kept);
+    ck_assert_int_eq(fricreg_ctx_tangent_apply(ctx, 6, huge, NULL, df), FRICREG_ENONFINITE);
+    ck_assert_ptr_nonnull(strstr(fricreg_ctx_errmsg(ctx), "beyond the range"));
+    ck_assert(memcmp(df, kept, sizeof kept) == 0);
     fricreg_ctx_free(ctx);
 }
 END_TEST
