@@ -37,6 +37,8 @@ echo
 echo
 ./build-bench/bench/fricreg-bench-dense "$out" | tee "$out/dense.txt"
 echo
+./build-bench/bench/fricreg-bench-sparse "$out" | tee "$out/sparse.txt"
+echo
 # The problems beyond the paper: the hold, the Stribeck belt and the 2-D oscillator (the last
 # two need the CVODE references).
 ./build-bench/bench/fricreg-bench-problems "$out" | tee "$out/problems.txt"

@@ -120,10 +120,13 @@ module fricreg
     procedure :: set_stribeck => ctx_set_stribeck
     procedure :: set_coupling_diagonal => ctx_set_coupling_diagonal
     procedure :: set_coupling_dense => ctx_set_coupling_dense
+    procedure :: set_coupling_csr => ctx_set_coupling_csr
+    procedure :: set_coupling_csc => ctx_set_coupling_csc
     procedure :: set_partition => ctx_set_partition
     procedure :: set_keep_tangent => ctx_set_keep_tangent
     procedure :: eval => ctx_eval
     procedure :: tangent => ctx_tangent
+    procedure :: tangent_apply => ctx_tangent_apply
     procedure :: stick_stiffness => ctx_stick_stiffness
     procedure :: get_stat => ctx_get_stat
     procedure :: reset_stats => ctx_reset_stats
@@ -713,6 +716,71 @@ contains
     if (status == FRICREG_OK) status = self%record(fricreg_ctx_set_coupling_dense(self%ptr, m, W))
   end function ctx_set_coupling_dense
 
+  !> FRICREG_OK if the compressed arrays ptr(m + 1), ind and values hold the nnz = ptr(m + 1) -
+  !> base entries they describe (base 1 with FRICREG_SPARSE_ONE_BASED in flags, else 0), else a
+  !> recorded FRICREG_ESIZE naming the short array: C reads nnz of each, which it cannot check.
+  !> A ptr(m + 1) below base is left to C (FRICREG_EINVAL).
+  function ctx_check_compressed(self, what, names, flags, ptr, ind, values) result(status)
+    class(fricreg_context), intent(inout) :: self
+    character(len=*), intent(in) :: what, names(3)
+    integer(c_int), intent(in) :: flags
+    integer(c_int64_t), intent(in) :: ptr(:), ind(:)
+    real(c_double), intent(in) :: values(:)
+    integer(c_int) :: status
+    integer(c_size_t) :: m
+    integer(c_int64_t) :: nnz
+    character(len=64) :: buf
+    m = fricreg_ctx_size(self%ptr)
+    status = self%check_size(what, names(1), size(ptr), m + 1)
+    if (status /= FRICREG_OK) return
+    nnz = ptr(m + 1) - merge(1_c_int64_t, 0_c_int64_t, iand(flags, FRICREG_SPARSE_ONE_BASED) /= 0)
+    if (int(size(ind), c_int64_t) < nnz) then
+      write (buf, '(a, i0, a, i0)') ') = ', size(ind), ', expected at least ', nnz
+      status = self%fail(FRICREG_ESIZE, what // ': size(' // names(2) // trim(buf))
+    else if (int(size(values), c_int64_t) < nnz) then
+      write (buf, '(a, i0, a, i0)') ') = ', size(values), ', expected at least ', nnz
+      status = self%fail(FRICREG_ESIZE, what // ': size(' // names(3) // trim(buf))
+    end if
+  end function ctx_check_compressed
+
+  !> Coupled contacts: a sparse symmetric positive semidefinite W in compressed sparse rows
+  !> (C's fricreg_ctx_set_coupling_csr): rowptr(m + 1), colind(nnz) of kind c_int64_t,
+  !> values(nnz); flags from fricreg_sparse_flags (FRICREG_SPARSE_ONE_BASED for Fortran's
+  !> indices, FRICREG_SPARSE_UPPER or _LOWER for one triangle). Duplicates are summed. Copied.
+  !> FRICREG_ESIZE unless rowptr has m + 1 elements and colind and values at least nnz;
+  !> FRICREG_EINVAL (flags, pointers, indices); FRICREG_ENONFINITE; FRICREG_ENOTSYM;
+  !> FRICREG_ENOTPSD; FRICREG_ENOMEM. On failure the context keeps its coupling.
+  function ctx_set_coupling_csr(self, flags, rowptr, colind, values) result(status)
+    class(fricreg_context), intent(inout) :: self
+    integer(c_int), intent(in) :: flags
+    integer(c_int64_t), intent(in), contiguous :: rowptr(:), colind(:)
+    real(c_double), intent(in), contiguous :: values(:)
+    integer(c_int) :: status
+    status = self%ready('set_coupling_csr', 'context')
+    if (status == FRICREG_OK) status = ctx_check_compressed(self, 'set_coupling_csr', &
+      [character(len=6) :: 'rowptr', 'colind', 'values'], flags, rowptr, colind, values)
+    if (status == FRICREG_OK) status = self%record(fricreg_ctx_set_coupling_csr(self%ptr, &
+      fricreg_ctx_size(self%ptr), flags, rowptr, colind, values))
+  end function ctx_set_coupling_csr
+
+  !> Coupled contacts: a sparse W in compressed sparse columns (C's
+  !> fricreg_ctx_set_coupling_csc), what a Fortran code usually holds: colptr(m + 1),
+  !> rowind(nnz) of kind c_int64_t, values(nnz), flags as set_coupling_csr (one-based:
+  !> FRICREG_SPARSE_ONE_BASED). W being symmetric, its CSC arrays are its CSR arrays, the
+  !> upper triangle of one the lower of the other. The statuses of set_coupling_csr.
+  function ctx_set_coupling_csc(self, flags, colptr, rowind, values) result(status)
+    class(fricreg_context), intent(inout) :: self
+    integer(c_int), intent(in) :: flags
+    integer(c_int64_t), intent(in), contiguous :: colptr(:), rowind(:)
+    real(c_double), intent(in), contiguous :: values(:)
+    integer(c_int) :: status
+    status = self%ready('set_coupling_csc', 'context')
+    if (status == FRICREG_OK) status = ctx_check_compressed(self, 'set_coupling_csc', &
+      [character(len=6) :: 'colptr', 'rowind', 'values'], flags, colptr, rowind, values)
+    if (status == FRICREG_OK) status = self%record(fricreg_ctx_set_coupling_csc(self%ptr, &
+      fricreg_ctx_size(self%ptr), flags, colptr, rowind, values))
+  end function ctx_set_coupling_csc
+
   !> How coupled contacts are partitioned: FRICREG_PARTITION_CONSISTENT (default) or
   !> FRICREG_PARTITION_PAPER (C's fricreg_ctx_set_partition). FRICREG_EINVAL if unknown.
   function ctx_set_partition(self, partition) result(status)
@@ -793,6 +861,29 @@ contains
     if (present(df_dzdot)) call fricreg_transpose(df_dzdot, m)
     if (present(df_dafree)) call fricreg_transpose(df_dafree, m)
   end function ctx_tangent
+
+  !> The tangent of the last successful eval times a direction (C's
+  !> fricreg_ctx_tangent_apply): df(m) = (df/dzdot) dzdot + (df/da_free) dafree, without the
+  !> m x m tangent (large sparse W, Newton-Krylov). dzdot(m) and dafree(m) are optional (absent:
+  !> zero); df is written only on success. FRICREG_ESIZE unless every array has m elements;
+  !> FRICREG_ENONFINITE (a direction not finite, or df beyond double's range); FRICREG_EINVAL
+  !> if there is no evaluation to differentiate.
+  function ctx_tangent_apply(self, dzdot, dafree, df) result(status)
+    class(fricreg_context), intent(inout) :: self
+    real(c_double), intent(in), contiguous, optional :: dzdot(:), dafree(:)
+    real(c_double), intent(inout), contiguous :: df(:)
+    integer(c_int) :: status
+    integer(c_size_t) :: m
+    m = fricreg_ctx_size(self%ptr)
+    status = self%ready('tangent_apply', 'context')
+    if (status == FRICREG_OK .and. present(dzdot)) &
+      status = self%check_size('tangent_apply', 'dzdot', size(dzdot), m)
+    if (status == FRICREG_OK .and. present(dafree)) &
+      status = self%check_size('tangent_apply', 'dafree', size(dafree), m)
+    if (status == FRICREG_OK) status = self%check_size('tangent_apply', 'df', size(df), m)
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_ctx_tangent_apply(self%ptr, m, dzdot, dafree, df))
+  end function ctx_tangent_apply
 
   !> One counter (FRICREG_STAT_*) into value. FRICREG_EINVAL for an unknown counter.
   function ctx_get_stat(self, which, value) result(status)

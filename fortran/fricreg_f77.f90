@@ -203,6 +203,34 @@ subroutine frcpld(h, m, w, stat)
   stat = int(fricreg_ctx_set_coupling_dense(fricreg_handle_to_ptr(h), int(m, c_size_t), w))
 end subroutine frcpld
 
+!> FRCPLR(H, M, FLAGS, ROWPTR, COLIND, VALUES, STAT): sparse symmetric coupling W in compressed
+!> sparse rows, INTEGER*8 ROWPTR(M + 1) and COLIND(NNZ), VALUES(NNZ), NNZ = ROWPTR(M + 1) - base
+!> (fricreg_ctx_set_coupling_csr; FLAGS: FRICREG_SPARSE_ONE_BASED, _UPPER, _LOWER).
+subroutine frcplr(h, m, flags, rowptr, colind, values, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h, rowptr(*), colind(*)
+  integer, intent(in) :: m, flags
+  double precision, intent(in) :: values(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_ctx_set_coupling_csr(fricreg_handle_to_ptr(h), int(m, c_size_t), &
+                                          int(flags, c_int), rowptr, colind, values))
+end subroutine frcplr
+
+!> FRCPLC(H, M, FLAGS, COLPTR, ROWIND, VALUES, STAT): the same in compressed sparse columns,
+!> what Fortran codes hold: one-based INTEGER*8 COLPTR(M + 1) and ROWIND(NNZ) with
+!> FLAGS = FRICREG_SPARSE_ONE_BASED (fricreg_ctx_set_coupling_csc).
+subroutine frcplc(h, m, flags, colptr, rowind, values, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h, colptr(*), rowind(*)
+  integer, intent(in) :: m, flags
+  double precision, intent(in) :: values(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_ctx_set_coupling_csc(fricreg_handle_to_ptr(h), int(m, c_size_t), &
+                                          int(flags, c_int), colptr, rowind, values))
+end subroutine frcplc
+
 !> FREVAL(H, M, ZDOT, AFREE, F, FEQ, STAT): friction forces F(M) and FEQ(M) (NaN outside the
 !> near-stick set) from velocities ZDOT(M) and free accelerations AFREE(M) (fricreg_ctx_eval).
 subroutine freval(h, m, zdot, afree, f, feq, stat)
@@ -290,6 +318,20 @@ subroutine frtang(h, m, dfdz, dfda, stat)
   call fricreg_transpose(dfdz, n)
   call fricreg_transpose(dfda, n)
 end subroutine frtang
+
+!> FRTAPP(H, M, DZ, DA, DF, STAT): the last FREVAL's tangent times a direction,
+!> DF(M) = (dF/dZDOT) DZ(M) + (dF/dAFREE) DA(M), without the (M, M) tangent
+!> (fricreg_ctx_tangent_apply; pass zeros for a direction not wanted). Written only on success.
+subroutine frtapp(h, m, dz, da, df, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m
+  double precision, intent(in) :: dz(*), da(*)
+  double precision, intent(inout) :: df(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_ctx_tangent_apply(fricreg_handle_to_ptr(h), int(m, c_size_t), dz, da, df))
+end subroutine frtapp
 
 ! ---- 2-D contexts (fricreg_disk_ctx.h): handles of their own, never mixed with FRCTXC's ------
 

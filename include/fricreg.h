@@ -197,7 +197,8 @@ typedef struct fricreg_ctx fricreg_ctx;
  *
  *  Defaults: law FRICREG_LAW_QUINN, eps = 1e-3, mun[i] = 1, and diagonal coupling W = I
  *  (uncoupled contacts of unit effective mass). All memory for evaluation is allocated here
- *  and in fricreg_ctx_set_coupling_dense; fricreg_ctx_eval never allocates.
+ *  and in the coupling setters (fricreg_ctx_set_coupling_dense, _csr, _csc);
+ *  fricreg_ctx_eval never allocates.
  *
  *  m    number of contacts, 1 <= m <= 2^26.
  *  out  out: the new context, to be released with fricreg_ctx_free. Written only on success.
@@ -245,8 +246,82 @@ FRICREG_API int fricreg_ctx_set_coupling_diagonal(fricreg_ctx *ctx, size_t m, co
  *  one whose inverse, the scale of its tangent, overflows); FRICREG_ENOMEM. */
 FRICREG_API int fricreg_ctx_set_coupling_dense(fricreg_ctx *ctx, size_t m, const double W[]);
 
-/** How the near-stick forces of coupled contacts (dense W) are found. Values are fixed forever.
- *  With a diagonal W both give law (4) contact by contact (the same numbers to rounding). */
+/** Coupled contacts: a sparse symmetric positive semidefinite Delassus matrix W (m x m), in
+ *  compressed sparse rows (since 1.6, FRICREG_1.6). For the finite-element models whose
+ *  contacts are coupled only to their neighbours (W banded or otherwise sparse), where a dense
+ *  W costs O(m^2): nothing here, in fricreg_ctx_eval or in fricreg_ctx_tangent_apply is O(m^2)
+ *  in memory or O(m^3) in time (docs/coupled.md, "Sparse W"). The forces are those of the
+ *  dense path on the same W, to rounding, for every law and partition.
+ *
+ *  m               must equal the context's contact count.
+ *  flags           enum fricreg_sparse_flags, combined with |: FRICREG_SPARSE_ONE_BASED
+ *                  when the indices count from 1; W given whole (default), or by one triangle
+ *                  with the diagonal, FRICREG_SPARSE_UPPER (column >= row) or
+ *                  FRICREG_SPARSE_LOWER (column <= row).
+ *  rowptr[m + 1]   row pointers: rowptr[0] = base (0, or 1 with FRICREG_SPARSE_ONE_BASED),
+ *                  non-decreasing; row i's entries are colind/values[rowptr[i] - base ..
+ *                  rowptr[i+1] - base - 1], nnz = rowptr[m] - base in all.
+ *  colind[nnz]     the column of each entry, from base, in any order within a row;
+ *                  duplicates are summed (finite-element assembly), explicit zeros kept.
+ *  values[nnz]     the entries W_ij, finite, in W's units (acceleration per force: an
+ *                  inverse mass). May be NULL with colind when nnz = 0 (then refused: the
+ *                  diagonal is missing).
+ *  Copied; the caller keeps its arrays.
+ *
+ *  Checked as fricreg_ctx_set_coupling_dense checks a dense W, on the Jacobi-scaled
+ *  A = D^-1/2 W D^-1/2 (D = diag W), whatever each contact's units: every W_ii present and
+ *  >= DBL_MIN; given whole, symmetric as |W_ij - W_ji| <= 1e-12 sqrt(W_ii W_jj), the
+ *  symmetric part (W + W^T)/2 then used; semidefinite as |a_ij| <= 1 + tol and by a Cholesky
+ *  factorization (CHOLMOD, simplicial LL^T after AMD's fill-reducing ordering) of A + tol I,
+ *  i.e. the smallest eigenvalue of A is at least -tol, with tol = 1e-12 r, r the largest
+ *  count of entries in a row of W (the dense setter's 1e-12 m for a row as full as a dense
+ *  one's). A singular W (redundant contacts) is accepted, as by the dense setter.
+ *
+ *  Method: W is kept whole in contact order, for its products with vectors, and permuted by
+ *  AMD's ordering (chosen here, once) for the near-stick solves of fricreg_ctx_eval: a
+ *  CHOLMOD LDL^T factor of the principal block (W_SS, or the consistent law's W_FF), held as
+ *  the whole m x m matrix whose rows outside the block are the identity's, updated by
+ *  CHOLMOD's row additions and deletions as contacts enter and leave it. Costs here: the
+ *  analysis (AMD, O(nnz) to O(nnz(L))), the test's factorization, and memory O(nnz(L) + m),
+ *  L the factor of W's whole pattern; all memory evaluations need is allocated here.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if ctx or rowptr is NULL, or colind or values while
+ *  nnz > 0; FRICREG_ESIZE if m differs from the context's; FRICREG_EINVAL for unknown flags,
+ *  both triangle flags, rowptr[0] not the base, rowptr decreasing, an index outside
+ *  base .. m - 1 + base, or an entry in the triangle left out; FRICREG_ENONFINITE if an entry
+ *  is NaN or infinite; FRICREG_ENOTSYM; FRICREG_ENOTPSD (also if some W_ii is missing or
+ *  below DBL_MIN); FRICREG_ENOMEM. On failure the context keeps its coupling, its factor and
+ *  the tangent of its last evaluation. */
+FRICREG_API int fricreg_ctx_set_coupling_csr(fricreg_ctx *ctx, size_t m, int flags,
+                                             const int64_t rowptr[], const int64_t colind[],
+                                             const double values[]);
+
+/** Coupled contacts: a sparse W in compressed sparse columns (since 1.6, FRICREG_1.6): as
+ *  fricreg_ctx_set_coupling_csr, with colptr[m + 1] the column pointers and rowind[nnz] each
+ *  entry's row. One-based CSC (FRICREG_SPARSE_ONE_BASED) is what Fortran codes hold; W being
+ *  symmetric, its CSC arrays are its CSR arrays, FRICREG_SPARSE_UPPER of one being
+ *  FRICREG_SPARSE_LOWER of the other.
+ *
+ *  m               must equal the context's contact count.
+ *  flags           enum fricreg_sparse_flags (base, whole or one triangle).
+ *  colptr[m + 1]   column pointers, colptr[0] = base, non-decreasing (int64_t: Fortran
+ *                  integer(c_int64_t)).
+ *  rowind[nnz]     the row of each entry, from base, any order within a column; duplicates
+ *                  summed.
+ *  values[nnz]     the entries W_ij, finite.
+ *  Copied; checked and factored as by fricreg_ctx_set_coupling_csr.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if ctx or colptr is NULL, or rowind or values while
+ *  nnz > 0; FRICREG_ESIZE; FRICREG_EINVAL (flags, pointers, indices, an entry in the triangle
+ *  left out); FRICREG_ENONFINITE; FRICREG_ENOTSYM; FRICREG_ENOTPSD; FRICREG_ENOMEM, as
+ *  fricreg_ctx_set_coupling_csr. On failure the context keeps its coupling. */
+FRICREG_API int fricreg_ctx_set_coupling_csc(fricreg_ctx *ctx, size_t m, int flags,
+                                             const int64_t colptr[], const int64_t rowind[],
+                                             const double values[]);
+
+/** How the near-stick forces of coupled contacts (dense or sparse W) are found. Values are
+ *  fixed forever. With a diagonal W both give law (4) contact by contact (the same numbers to
+ *  rounding). */
 enum fricreg_partition {
     /** The consistent near-stick law (default): f_eq,i is the force that zeroes contact i's
      *  acceleration given every other contact's actual force, so the near-stick forces are the
@@ -260,7 +335,8 @@ enum fricreg_partition {
     FRICREG_PARTITION_PAPER = 2
 };
 
-/** Select the partition (enum fricreg_partition) used by fricreg_ctx_eval with a dense W.
+/** Select the partition (enum fricreg_partition) used by fricreg_ctx_eval with a dense or
+ *  sparse W.
  *  Cheap; discards the cached factor, and (like every setter) the tangent of the last
  *  evaluation.
  *  Returns FRICREG_OK; FRICREG_ENULL if ctx is NULL; FRICREG_EINVAL for an unknown partition. */
@@ -278,7 +354,10 @@ FRICREG_API int fricreg_ctx_set_partition(fricreg_ctx *ctx, int partition);
  *  consistent partition, gives max_i W_ii s_i (its free contacts decouple); the paper's
  *  partition, (3) and tanh with a dense W give the largest eigenvalue of D^1/2 W D^1/2 (GSL's
  *  symmetric eigensolver, O(m^3), allocating O(m^2) for the call), which is larger by up to
- *  the coupling: 1.707x on the paper's two blocks with mu1 = 2 mu2. Under the consistent law
+ *  the coupling: 1.707x on the paper's two blocks with mu1 = 2 mu2; with a sparse W, an upper
+ *  bound of it instead, Gershgorin's max_i sum_j sqrt(s_i) |W_ij| sqrt(s_j) (O(nnz), no
+ *  allocation; on a uniform chain W = tridiag(-w, 2w, -w) it is 4 w s against the
+ *  eigenvalue's 4 w s cos^2(pi/(2(m+1)))), so a step it accepts is stable. Under the consistent law
  *  contacts held at a velocity-dependent bound (breaking away, |f_eq,i| > mun_i) see the
  *  Schur complement (W_AA - W_AF W_FF^-1 W_FA) D_A, which can be larger; it is left out: such
  *  a contact accelerates out of that zone, which it crosses in about one step at this bound,
@@ -295,7 +374,8 @@ FRICREG_API int fricreg_ctx_stick_stiffness(fricreg_ctx *ctx, double *lambda);
  *  |zdot_i| < eps for (4) and Karnopp, zdot_i == 0 for (2), empty for (1), (3) and tanh.
  *  The slip set L gets f_L = -mun_L sgn(zdot_L) with no f_eq work. On S:
  *   - diagonal W (either partition): f_eq,i = -a_free,i / W_ii and the law, contact by contact;
- *   - dense W, FRICREG_PARTITION_CONSISTENT (default): the consistent law. f_eq,i is the force
+ *   - coupled W (dense, or sparse: the same forces to rounding),
+ *     FRICREG_PARTITION_CONSISTENT (default): the consistent law. f_eq,i is the force
  *     that zeroes contact i's acceleration given the others' actual forces, and f_S is the
  *     unique solution of the box-constrained convex QP
  *       min 1/2 f^T W_SS f + b^T f  on lo <= f <= hi,  b_i = a_free,i + W_ii c_i mun_i
@@ -304,8 +384,8 @@ FRICREG_API int fricreg_ctx_stick_stiffness(fricreg_ctx *ctx, double *lambda);
  *     exactly by a primal active-set method warm-started from the previous call's active set;
  *     f is continuous (Lipschitz) in (zdot, a_free, mun), across |zdot_j| = eps too, and each
  *     f_i is the law at (zdot_i, f_eq,i);
- *   - dense W, FRICREG_PARTITION_PAPER: W_SS f_eq,S = -(a_free,S + W_SL f_L), then the law at
- *     (zdot_S, f_eq,S); f jumps when a coupled contact crosses |zdot_j| = eps.
+ *   - coupled W, FRICREG_PARTITION_PAPER: W_SS f_eq,S = -(a_free,S + W_SL f_L), then the law
+ *     at (zdot_S, f_eq,S); f jumps when a coupled contact crosses |zdot_j| = eps.
  *  Accuracy with a dense W: the LDL^T solves are backward stable in the Jacobi-scaled norm
  *  (units in which every W_ii is 1, forces sqrt(W_ii) f_i), so f_i is the law at f_eq,i to
  *  the rounding of the sums forming f_eq,i, a_free,i + sum_j W_ij f_j, times the scaled
@@ -321,6 +401,17 @@ FRICREG_API int fricreg_ctx_stick_stiffness(fricreg_ctx *ctx, double *lambda);
  *  set and W are unchanged; when at most 2 + |set|/8 contacts enter or leave the set it is
  *  updated, O(|set|^2) per contact (FRICREG_STAT_FACTOR_UPDATES), else, and at least once every
  *  1000 updates, factored afresh, O(|set|^3) (FRICREG_STAT_FACTORIZATIONS).
+ *  Sparse W (fricreg_ctx_set_coupling_csr, _csc) solves with a CHOLMOD LDL^T factor of the
+ *  same block, held as the m x m matrix whose rows outside the block are the identity's, in
+ *  the AMD order chosen at set-up: a solve costs O(m + nnz(L)); contacts that enter or leave
+ *  are rows added or deleted (cholmod_l_rowadd, cholmod_l_rowdel), by the same rule and also
+ *  only while their estimated cost (their paths in the elimination tree) is below a fresh
+ *  factorization's, O(nnz(W) + flops of the block's factor): on a chain that AMD orders end
+ *  to end a row update costs about as much as a fresh factorization. Each QP iteration
+ *  computes its products in O(nnz(W) restricted to S), so an evaluation is O(m + nnz(L))
+ *  per QP iteration, with no O(m^2) term; the iterations change many bounds at once
+ *  (projected steps and bulk releases, still finitely many working sets: docs/coupled.md),
+ *  a few per evaluation where a tenth of 10^5 contacts change.
  *
  *  m          must equal the context's contact count.
  *  zdot[m]    relative contact velocities.
@@ -337,13 +428,15 @@ FRICREG_API int fricreg_ctx_stick_stiffness(fricreg_ctx *ctx, double *lambda);
  *  |a_free,i| + sum_j |W_ij| mun_j + 2 W_ii mun_i > 1e280, where the near-stick forces cannot
  *  be found in double precision, or whose near-stick solve overflows all the same);
  *  FRICREG_ESINGULAR if the block of W to be factorized (W_SS, or the consistent law's W_FF)
- *  is singular: a pivot of its LDL^T factorization (contacts in ascending order) below 1e-12
- *  times its diagonal entry, d_k < 1e-12 W_kk (for a pair, d_2 / W_22 = 1 - rho^2 with
- *  rho = W_12 / sqrt(W_11 W_22)), which happens for redundant contacts (their forces are not
- *  unique), whatever the contacts' units (the ratio does not change when W is scaled by a
- *  diagonal: diag(1, 1e-14) is regular), or below DBL_MIN (its inverse would overflow); also
- *  (never seen, a safeguard) if the QP's active-set iterations exceed
- *  100 + 10 |S|. */
+ *  is singular: a pivot of its LDL^T factorization (contacts in ascending order; with a sparse
+ *  W in the factor's AMD order, fixed per coupling) below 1e-12 times its diagonal entry,
+ *  d_k < 1e-12 W_kk (for a pair, d_2 / W_22 = 1 - rho^2 with rho = W_12 / sqrt(W_11 W_22)),
+ *  which happens for redundant contacts (their forces are not unique; in either order the last
+ *  of a redundant set has ratio 0 to rounding), whatever the contacts' units (the ratio does
+ *  not change when W is scaled by a diagonal: diag(1, 1e-14) is regular), or below DBL_MIN
+ *  (its inverse would overflow); a block whose pivot ratios straddle 1e-12 may be judged
+ *  differently in the two orders; also (never seen, a safeguard) if the QP's active-set
+ *  iterations exceed 100 + 10 |S|. */
 FRICREG_API int fricreg_ctx_eval(fricreg_ctx *ctx, size_t m, const double zdot[],
                                  const double a_free[], double f[], double f_eq[]);
 
@@ -384,7 +477,10 @@ FRICREG_API int fricreg_ctx_eval(fricreg_ctx *ctx, size_t m, const double zdot[]
  *  Cost: no factorization when the evaluation's factor is still held (a failed eval or an
  *  eval with another free set since may cost one, counted in FRICREG_STAT_FACTORIZATIONS);
  *  then |S| + |F| triangular solves of order |F| (paper: 1 + |S| of order |S|), counted in
- *  FRICREG_STAT_SOLVES, plus O(m^2) to write the zeros. No heap allocation.
+ *  FRICREG_STAT_SOLVES, plus O(m^2) to write the zeros. With a sparse W it works the same,
+ *  each solve O(m + nnz(L)), and its output is still 2 m^2 doubles (16 m^2 bytes: 160 GB at
+ *  m = 10^5): for large m, fricreg_ctx_tangent_apply gives the tangent's product with a
+ *  vector for one or two solves. No heap allocation.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if ctx is NULL or both outputs are NULL; FRICREG_ESIZE
  *  if m differs from the context's; FRICREG_EINVAL if no evaluation has succeeded since the
@@ -394,6 +490,40 @@ FRICREG_API int fricreg_ctx_eval(fricreg_ctx *ctx, size_t m, const double zdot[]
  *  singular, which cannot happen with the same W. */
 FRICREG_API int fricreg_ctx_tangent(fricreg_ctx *ctx, size_t m, double df_dzdot[],
                                     double df_dafree[]);
+
+/** The tangent of the last successful fricreg_ctx_eval times a direction (since 1.6,
+ *  FRICREG_1.6): df = (df/dzdot) dzdot + (df/da_free) dafree, the Jacobian of
+ *  fricreg_ctx_tangent applied to (dzdot, dafree) without forming it, for Newton–Krylov
+ *  callers and for a large sparse W, where the m x m tangent is out of reach. Every coupling
+ *  (diagonal, dense, sparse), law and partition; the same Jacobian as fricreg_ctx_tangent,
+ *  with its rules at kinks.
+ *
+ *  m           must equal the context's contact count.
+ *  dzdot[m]    in, optional (NULL: zero): the velocity direction, in zdot's units.
+ *  dafree[m]   in, optional (NULL: zero): the free-acceleration direction, in a_free's.
+ *  df[m]       out: the forces' change, in f's units. May alias dzdot or dafree. Written
+ *              only on success.
+ *
+ *  Method (docs/coupled.md): slip contacts df_i = s_i dzdot_i with the law's own slope;
+ *  diagonal W contact by contact; FRICREG_PARTITION_CONSISTENT, from the final active set A
+ *  and free set F, df_A from the bounds and df_F = -W_FF^-1 (d b_F + W_FA df_A + W_FL df_L),
+ *  d b_i = 2 W_ii (mun_i/eps) dzdot_i + dafree_i (Stribeck friction adds its bound's slope);
+ *  FRICREG_PARTITION_PAPER, f_eq,S from the held factor, then
+ *  d f_eq,S = -W_SS^-1 (dafree_S + W_SL df_L) and df_S by law (4)'s slopes at (zdot, f_eq).
+ *  Cost: O(m) with a diagonal W; with a coupled W one solve with the evaluation's factor
+ *  (paper: two), plus products with W's rows: O(m + nnz(L) + nnz(W)) sparse, O(m^2) dense;
+ *  no factorization when the evaluation's factor is still held (as fricreg_ctx_tangent). No
+ *  heap allocation.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if ctx or df is NULL; FRICREG_ESIZE if m differs from the
+ *  context's; FRICREG_ENONFINITE if a component of dzdot or dafree is NaN or infinite, or if
+ *  a component of df is beyond the range of a double (tiny mobilities, eps near DBL_MIN, a
+ *  huge direction); FRICREG_EINVAL if no evaluation has succeeded since the context was
+ *  created or last set up, or fricreg_ctx_set_keep_tangent turned the tangent's inputs off;
+ *  FRICREG_ESINGULAR only if the block it must refactorize has become singular, which cannot
+ *  happen with the same W. */
+FRICREG_API int fricreg_ctx_tangent_apply(fricreg_ctx *ctx, size_t m, const double dzdot[],
+                                          const double dafree[], double df[]);
 
 /** Whether fricreg_ctx_eval keeps what fricreg_ctx_tangent needs: copies of its zdot and
  *  a_free, two stores per contact (with a diagonal W and a law that reads f_eq, about a

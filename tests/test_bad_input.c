@@ -597,6 +597,28 @@ static int w_ctx_set_keep_tangent(void)
 {
     return fricreg_ctx_set_keep_tangent(CTX(), N(0, 0));
 }
+/* A sparse W: the two blocks' W2B in CSR (or CSC: the same arrays), whole, zero-based, its
+ * pattern full so that the square-matrix classes replace its values. */
+static const int64_t W2B_PTR[3] = {0, 2, 4}, W2B_IND[4] = {0, 1, 0, 1};
+static const int64_t *I64(int slot, const int64_t *base)
+{
+    return is(K_PTR, slot) ? NULL : base;
+}
+static int w_ctx_set_csr(void)
+{
+    return fricreg_ctx_set_coupling_csr(CTX(), Z(0, 2), N(0, 0), I64(1, W2B_PTR), I64(2, W2B_IND),
+                                        A(3, W2B, 4));
+}
+static int w_ctx_set_csc(void)
+{
+    return fricreg_ctx_set_coupling_csc(CTX(), Z(0, 2), N(0, 0), I64(1, W2B_PTR), I64(2, W2B_IND),
+                                        A(3, W2B, 4));
+}
+static int w_ctx_tangent_apply(void)
+{
+    const double dz[2] = {0.0123, -0.0231}, da[2] = {0.5, -0.25};
+    return fricreg_ctx_tangent_apply(CTX(), Z(0, 2), A(1, dz, 2), A(2, da, 2), OUTD(3));
+}
 static const double V2[2] = {0.004, -0.002}, FEQ2[2] = {0.213, -0.347};
 static int w_disk_eval(void)
 {
@@ -745,6 +767,18 @@ static const struct row rows[] = {
      "0snypm",
      CTX_REC,
      {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnpppo"), MAT(1, "poypo")}},
+    {"fricreg_ctx_set_coupling_csr",
+     w_ctx_set_csr,
+     "0sinypm",
+     CTX_REC,
+     {HANDLE, SIZE(0, "ssss"), INT(0, "ioii"), PTR(1, "0"), PTR(2, "0"), PTR(3, "0"),
+      ARR(3, "nnpppo"), MAT(3, "poypo")}},
+    {"fricreg_ctx_set_coupling_csc",
+     w_ctx_set_csc,
+     "0sinypm",
+     CTX_REC,
+     {HANDLE, SIZE(0, "ssss"), INT(0, "ioii"), PTR(1, "0"), PTR(2, "0"), PTR(3, "0"),
+      ARR(3, "nnpppo"), MAT(3, "poypo")}},
     {"fricreg_ctx_set_partition", w_ctx_set_partition, "0i", CTX_REC, {HANDLE, INT(0, "iiii")}},
     {"fricreg_ctx_stick_stiffness", w_ctx_stick_stiffness, "0m", CTX_REC, {HANDLE, PTR(1, "0")}},
     {"fricreg_ctx_eval",
@@ -763,6 +797,12 @@ static const struct row rows[] = {
      "0sig",
      CTX_REC,
      {PTR(8, "0")}},
+    {"fricreg_ctx_tangent_apply",
+     w_ctx_tangent_apply,
+     "0snig",
+     CTX_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "o"), ARR(1, "nnoooo"), PTR(2, "o"), ARR(2, "nnoooo"),
+      PTR(3, "0")}},
     {"fricreg_ctx_get_stat", w_ctx_get_stat, "0i", NONE, {HANDLE, INT(0, "ioii"), PTR(1, "0")}},
     {"fricreg_ctx_set_keep_tangent",
      w_ctx_set_keep_tangent,
@@ -1322,6 +1362,13 @@ static int e_ctx_set_dense(int which, double x)
                             {1.0, 1.0 + x, 1.0 + x, 1.0}}; /* eigenvalue -x >= -1e-12 m */
     return fricreg_ctx_set_coupling_dense(FX_->ctx, 2, W[which]);
 }
+static int e_ctx_set_csr(int which, double x)
+{
+    const double W[3][4] = {{x, 0.0, 0.0, 1.0},            /* W_ii >= DBL_MIN */
+                            {1.0, 0.5 + x, 0.5, 1.0},      /* symmetric to 1e-12 */
+                            {1.0, 1.0 + x, 1.0 + x, 1.0}}; /* eigenvalue -x >= -1e-12 r */
+    return fricreg_ctx_set_coupling_csr(FX_->ctx, 2, 0, W2B_PTR, W2B_IND, W[which]);
+}
 static int e_ctx_int(int which, double x)
 {
     switch (which) {
@@ -1660,6 +1707,10 @@ START_TEST(edges_of_documented_ranges)
         {"ctx_set_coupling_dense symmetric to 1e-12", e_ctx_set_dense, 1, 0.5e-12, 2e-12, 'y',
          CTX_REC},
         {"ctx_set_coupling_dense eigenvalue >= -1e-12 m", e_ctx_set_dense, 2, 1e-12, 4e-12, 'p',
+         CTX_REC},
+        {"ctx_set_coupling_csr W_ii >= DBL_MIN", e_ctx_set_csr, 0, DBL_MIN, 0, 'p', CTX_REC},
+        {"ctx_set_coupling_csr symmetric to 1e-12", e_ctx_set_csr, 1, 0.5e-12, 2e-12, 'y', CTX_REC},
+        {"ctx_set_coupling_csr eigenvalue >= -1e-12 r (r = 2)", e_ctx_set_csr, 2, 1e-12, 4e-12, 'p',
          CTX_REC},
         {"ctx_set_partition <= paper", e_ctx_int, 0, FRICREG_PARTITION_PAPER,
          FRICREG_PARTITION_PAPER + 1, 'i', CTX_REC},

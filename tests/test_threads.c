@@ -4,7 +4,8 @@
  * with its own error handler.
  *
  * Eight threads each run, ROUNDS times, one object of every kind, their own: a 1-D context
- * (dense W: eval, tangent, stick stiffness, and a singular W), a 1-D context with Stribeck
+ * (dense W: eval, tangent, stick stiffness, and a singular W), a 1-D context with a sparse W
+ * (CHOLMOD's factor, its row updates, the tangent's product, a redundant pair), one with Stribeck
  * friction (both partitions), a 2-D context with Stribeck friction (dense W, then anisotropic
  * blocks: eval and tangent), a structure (Newmark or HHT-alpha, then run_ode with rkf45 or
  * rk4), a simulation (a different system and stepper family per thread: fricreg's rk4, GSL's
@@ -32,8 +33,8 @@
 
 #define NTHREADS 8
 #define ROUNDS 3
-#define NRESULTS 256
-#define NSTATUS 64
+#define NRESULTS 320
+#define NSTATUS 96
 #define GSL_ERRORS 2000
 
 struct results {
@@ -93,6 +94,62 @@ static void context_work(int k, struct results *r)
      * the QP's active set holds one of them at its bound): compared with the threads' only */
     int singular_status = fricreg_ctx_eval(ctx, 3, rest, a_free, f, f_eq);
     expect(r, singular_status, singular_status);
+    fricreg_ctx_free(ctx);
+}
+
+/* A sparse W in a 1-D context k (a chain of 12 contacts, one-based CSC of its upper triangle
+ * for even k, zero-based CSR whole for odd k): evaluations under both partitions along a walk
+ * that moves contacts in and out of the band (the factor's row updates and refactorizations),
+ * the tangent's product, the stick stiffness, and a redundant pair (FRICREG_ESINGULAR). */
+static void sparse_ctx_work(int k, struct results *r)
+{
+    enum { M = 12 };
+    int64_t ptr[M + 1], ind[3 * M];
+    double val[3 * M], mun[M], zdot[M], a_free[M], f[M], df[M], lambda = 0.0;
+    int csc = k % 2 == 0, n = 0;
+    for (int i = 0; i < M; i++) {
+        ptr[i] = n + csc;
+        for (int j = i > 0 ? i - 1 : 0; j <= i + 1 && j < M; j++)
+            if (!csc || j <= i) {
+                ind[n] = j + csc;
+                val[n++] = i == j ? 2.385 + 0.1 * ((i + k) % 4) : -0.6 - 0.01 * k;
+            }
+        mun[i] = 0.5 + 0.125 * ((i * 7 + k) % 5);
+        a_free[i] = 1.5 * ((i * 3 + k) % 7 - 3) / 3.0;
+    }
+    ptr[M] = n + csc;
+    fricreg_ctx *ctx = NULL;
+    expect(r, fricreg_ctx_create(M, &ctx), FRICREG_OK);
+    expect(r, fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, 0.02), FRICREG_OK);
+    expect(r, fricreg_ctx_set_bounds(ctx, M, mun), FRICREG_OK);
+    expect(r,
+           csc ? fricreg_ctx_set_coupling_csc(ctx, M,
+                                              FRICREG_SPARSE_ONE_BASED | FRICREG_SPARSE_UPPER, ptr,
+                                              ind, val)
+               : fricreg_ctx_set_coupling_csr(ctx, M, 0, ptr, ind, val),
+           FRICREG_OK);
+    for (int partition = FRICREG_PARTITION_CONSISTENT; partition <= FRICREG_PARTITION_PAPER;
+         partition++) {
+        expect(r, fricreg_ctx_set_partition(ctx, partition), FRICREG_OK);
+        for (int step = 0; step < 6; step++) {
+            for (int i = 0; i < M; i++)
+                zdot[i] = 0.03 * ((i * 5 + step * 3 + k) % 9 - 4) / 4.0;
+            expect(r, fricreg_ctx_eval(ctx, M, zdot, a_free, f, NULL), FRICREG_OK);
+        }
+        put_all(r, f, M);
+    }
+    expect(r, fricreg_ctx_tangent_apply(ctx, M, zdot, a_free, df), FRICREG_OK);
+    put_all(r, df, M);
+    expect(r, fricreg_ctx_stick_stiffness(ctx, &lambda), FRICREG_OK);
+    put(r, lambda);
+    const int64_t pair_ptr[3] = {0, 2, 4}, pair_ind[4] = {0, 1, 0, 1};
+    const double pair[4] = {1.0 + 0.1 * k, 1.0 + 0.1 * k, 1.0 + 0.1 * k, 1.0 + 0.1 * k};
+    fricreg_ctx *two = NULL;
+    const double rest[2] = {0.0, 0.0}, load[2] = {0.1, 0.1};
+    expect(r, fricreg_ctx_create(2, &two), FRICREG_OK);
+    expect(r, fricreg_ctx_set_coupling_csr(two, 2, 0, pair_ptr, pair_ind, pair), FRICREG_OK);
+    expect(r, fricreg_ctx_eval(two, 2, rest, load, f, NULL), FRICREG_ESINGULAR);
+    fricreg_ctx_free(two);
     fricreg_ctx_free(ctx);
 }
 
@@ -244,6 +301,7 @@ static void work(int k, struct results *r)
 {
     memset(r, 0, sizeof *r);
     context_work(k, r);
+    sparse_ctx_work(k, r);
     stribeck_ctx_work(k, r);
     disk_work(k, r);
     structure_work(k, r);
@@ -294,10 +352,11 @@ START_TEST(threads_match_one_thread)
     gsl_set_error_handler(users_handler);
     for (int k = 0; k < NTHREADS; k++) {
         work(k, &reference[k]);
-        /* results per thread: context 3 f + 3 Fz_ii + lambda = 7; Stribeck context 3 f +
-         * 2 x 9 tangent + lambda + 3 f = 25; 2-D context 2 x (6 f + 2 x 36 tangent) = 156;
-         * structure 2 x (2 u + 2 v + D) + the residual = 11; simulation 4; exact 7 */
-        ck_assert_int_eq(reference[k].n, 7 + 25 + 156 + 11 + 4 + 7);
+        /* results per thread: context 3 f + 3 Fz_ii + lambda = 7; sparse context 2 x 12 f +
+         * 12 df + lambda = 37; Stribeck context 3 f + 2 x 9 tangent + lambda + 3 f = 25; 2-D
+         * context 2 x (6 f + 2 x 36 tangent) = 156; structure 2 x (2 u + 2 v + D) + the
+         * residual = 11; simulation 4; exact 7 */
+        ck_assert_int_eq(reference[k].n, 7 + 37 + 25 + 156 + 11 + 4 + 7);
         ck_assert_msg(reference[k].unexpected == 0, "thread %d: %d unexpected statuses", k,
                       reference[k].unexpected);
     }

@@ -25,6 +25,7 @@
 #include "ctx_internal.h"
 #include "factor.h"
 #include "law/law.h"
+#include "sparse_coupling.h"
 
 #define NONE SIZE_MAX
 /* A held bound is released only if its multiplier is below -MULT_RTOL times the size of the
@@ -46,8 +47,10 @@ int fr_box_qp_alloc(struct fr_box_qp *qp, size_t m)
     qp->free_pos = malloc(m * sizeof *qp->free_pos);
     qp->free_set = malloc(m * sizeof *qp->free_set);
     qp->held_pos = malloc(m * sizeof *qp->held_pos);
+    qp->released = malloc(m * sizeof *qp->released);
+    qp->released_side = malloc(m * sizeof *qp->released_side);
     if (!qp->lo || !qp->hi || !qp->b || !qp->x || !qp->y || !qp->side || !qp->free_pos ||
-        !qp->free_set || !qp->held_pos) {
+        !qp->free_set || !qp->held_pos || !qp->released || !qp->released_side) {
         fr_box_qp_free(qp);
         return FRICREG_ENOMEM;
     }
@@ -65,6 +68,8 @@ void fr_box_qp_free(struct fr_box_qp *qp)
     free(qp->free_pos);
     free(qp->free_set);
     free(qp->held_pos);
+    free(qp->released);
+    free(qp->released_side);
     memset(qp, 0, sizeof *qp);
 }
 
@@ -121,6 +126,32 @@ static double row_times_x(const double row[], const size_t set[], const size_t p
     return (sum[0] + sum[1]) + (sum[2] + sum[3]);
 }
 
+/* The positions pos[n] of x scattered by contact into the sparse coupling's zeroed scratch
+ * (value 1), or cleared again (value 0). */
+static double *scatter_x(fricreg_ctx *ctx, const size_t set[], const size_t pos[], size_t n,
+                         int value)
+{
+    double *by_contact = ctx->sp->by_contact;
+    for (size_t h = 0; h < n; h++) {
+        size_t k = pos ? pos[h] : h;
+        by_contact[set[k]] = value ? ctx->qp.x[k] : 0.0;
+    }
+    return by_contact;
+}
+
+/* Sparse W: y_F = -(b_F + W_FA x_A), W_FA x_A by the free rows' entries, x_A scattered by
+ * contact: O(nnz) rather than |F| |A|. */
+static void sparse_held_products(fricreg_ctx *ctx, const size_t set[], size_t nf)
+{
+    struct fr_box_qp *qp = &ctx->qp;
+    const double *x_held = scatter_x(ctx, set, qp->held_pos, qp->n_held, 1);
+    for (size_t a = 0; a < nf; a++) {
+        size_t k = qp->free_pos[a];
+        qp->y[a] = -(qp->b[k] + fr_sparse_row_dot(ctx->sp, set[k], x_held, 0, NULL));
+    }
+    scatter_x(ctx, set, qp->held_pos, qp->n_held, 0);
+}
+
 /* y_F = -W_FF^-1 (b_F + W_FA x_A), with the cached factor of W_FF (updated by factor.c when
  * F differs from the last iteration's by a contact or two). W_FA x_A over the held list: it is
  * usually short, and this runs once per iteration. */
@@ -128,11 +159,15 @@ static int subspace_minimizer(fricreg_ctx *ctx, const size_t set[], size_t nf)
 {
     struct fr_box_qp *qp = &ctx->qp;
     size_t m = ctx->m;
-    for (size_t a = 0; a < nf; a++) {
-        size_t k = qp->free_pos[a];
-        double size;
-        qp->y[a] = -(qp->b[k] +
-                     row_times_x(ctx->W + set[k] * m, set, qp->held_pos, qp->x, qp->n_held, &size));
+    if (ctx->sp != NULL) {
+        sparse_held_products(ctx, set, nf);
+    } else {
+        for (size_t a = 0; a < nf; a++) {
+            size_t k = qp->free_pos[a];
+            double size;
+            qp->y[a] = -(qp->b[k] + row_times_x(ctx->W + set[k] * m, set, qp->held_pos, qp->x,
+                                                qp->n_held, &size));
+        }
     }
     int status = fr_factor_ensure(ctx, qp->free_set, nf, "eval");
     if (status == FRICREG_OK)
@@ -199,16 +234,19 @@ static void take_step(struct fr_box_qp *qp, size_t nf, double alpha, size_t bloc
 
 /* The held bound with the most negative multiplier (gradient W_SS x + b, signed by the side),
  * or NONE if x is optimal. A degenerate box is never released. */
-static size_t most_negative_multiplier(const fricreg_ctx *ctx, const size_t set[], size_t s)
+static size_t most_negative_multiplier(fricreg_ctx *ctx, const size_t set[], size_t s)
 {
     const struct fr_box_qp *qp = &ctx->qp;
+    const double *x_all = ctx->sp != NULL ? scatter_x(ctx, set, NULL, s, 1) : NULL;
     size_t pick = NONE;
     double most = 0.0;
     for (size_t k = 0; k < s; k++) {
         if (qp->side[k] == FR_FREE || qp->lo[k] == qp->hi[k])
             continue;
         double size,
-            g = qp->b[k] + row_times_x(ctx->W + set[k] * ctx->m, set, NULL, qp->x, s, &size);
+            g = qp->b[k] +
+                (x_all != NULL ? fr_sparse_row_dot(ctx->sp, set[k], x_all, 0, &size)
+                               : row_times_x(ctx->W + set[k] * ctx->m, set, NULL, qp->x, s, &size));
         size += fabs(qp->b[k]);
         double lambda = qp->side[k] == FR_LOWER ? g : -g;
         if (lambda < -MULT_RTOL * size && lambda < most) {
@@ -216,7 +254,38 @@ static size_t most_negative_multiplier(const fricreg_ctx *ctx, const size_t set[
             pick = k;
         }
     }
+    if (x_all != NULL)
+        scatter_x(ctx, set, NULL, s, 0);
     return pick;
+}
+
+/* Whether position k is among those released together. */
+static int released_together(const struct fr_box_qp *qp, size_t k)
+{
+    for (size_t r = 0; r < qp->n_released; r++)
+        if (qp->released[r] == k)
+            return 1;
+    return 0;
+}
+
+/* At a minimizer of the working set: the bounds to release, as *released (one, its side in
+ * *released_side) or recorded in qp->released (several, bulk); returns 0 if x is optimal. */
+static int release(fricreg_ctx *ctx, const size_t set[], size_t s, size_t *released,
+                   signed char *released_side)
+{
+    struct fr_box_qp *qp = &ctx->qp;
+    if (qp->bulk) {
+        size_t count = fr_box_qp_release_all(ctx, set, s);
+        if (count == 1)
+            *released = fr_box_qp_keep_one(qp, released_side);
+        return count > 0;
+    }
+    *released = most_negative_multiplier(ctx, set, s);
+    if (*released == NONE)
+        return 0;
+    *released_side = qp->side[*released];
+    qp->side[*released] = FR_FREE;
+    return 1;
 }
 
 int fr_box_qp_solve(fricreg_ctx *ctx, const size_t set[], size_t s)
@@ -225,6 +294,7 @@ int fr_box_qp_solve(fricreg_ctx *ctx, const size_t set[], size_t s)
     size_t released = NONE;
     signed char released_side = FR_FREE;
     start(qp, s);
+    qp->n_released = 0;
     for (size_t it = 0; it < MAX_ITERATIONS(s); it++) {
         ctx->stats[FRICREG_STAT_QP_ITERATIONS]++;
         size_t nf = list_free(qp, set, s), block = NONE;
@@ -234,17 +304,25 @@ int fr_box_qp_solve(fricreg_ctx *ctx, const size_t set[], size_t s)
             int status = subspace_minimizer(ctx, set, nf);
             if (status != FRICREG_OK)
                 return status;
+            if (qp->bulk && released == NONE && fr_box_qp_projected_step(ctx, set, nf)) {
+                qp->n_released = 0;
+                continue; /* a lower point, not yet the minimizer of the new working set */
+            }
             alpha = step_length(qp, nf, released, released_side, &block, &block_side);
+            if (alpha == 0.0 && qp->n_released > 1 && released_together(qp, block)) {
+                /* several released at once, one turns straight back: release one alone, as
+                 * Alg. 16.3 does (Thm 16.5: it moves away from its bound) */
+                released = fr_box_qp_keep_one(qp, &released_side);
+                continue;
+            }
         }
         take_step(qp, nf, alpha, block, block_side);
         released = NONE;
+        qp->n_released = 0;
         if (block != NONE)
             continue; /* not yet at the minimizer of the new working set */
-        released = most_negative_multiplier(ctx, set, s);
-        if (released == NONE)
+        if (!release(ctx, set, s, &released, &released_side))
             return FRICREG_OK;
-        released_side = qp->side[released];
-        qp->side[released] = FR_FREE;
     }
     return fr_fail(ctx, FRICREG_ESINGULAR,
                    "eval: the near-stick QP of %zu contacts (first: contact %zu) did not settle"

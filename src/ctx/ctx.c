@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "ctx_internal.h"
+#include "sparse_coupling.h"
 #include "base/eigen.h"
 #include "law/contact_check.h"
 #include "law/law.h"
@@ -15,20 +16,33 @@
 #define SYMMETRY_RTOL 1e-12
 #define PSD_RTOL 1e-12
 
-static void free_dense(fricreg_ctx *ctx)
+/* Back to a diagonal W: the dense or sparse coupling and what it needs, released. */
+void fr_ctx_free_coupling(fricreg_ctx *ctx)
 {
     free(ctx->W);
     free(ctx->rhs);
     ctx->W = ctx->rhs = NULL;
     fr_factor_free(&ctx->fac);
     fr_box_qp_free(&ctx->qp);
+    if (ctx->sp != NULL) {
+        fr_sparse_coupling_free(ctx->sp);
+        free(ctx->sp);
+        ctx->sp = NULL;
+    }
+}
+
+void fr_ctx_forget_factor(fricreg_ctx *ctx)
+{
+    ctx->fac.valid = 0;
+    if (ctx->sp != NULL)
+        ctx->sp->block.valid = 0;
 }
 
 void fricreg_ctx_free(fricreg_ctx *ctx)
 {
     if (ctx == NULL)
         return;
-    free_dense(ctx);
+    fr_ctx_free_coupling(ctx);
     free(ctx->mun);
     free(ctx->w_diag);
     free(ctx->f);
@@ -133,7 +147,7 @@ int fricreg_ctx_set_partition(fricreg_ctx *ctx, int partition)
     if (partition != FRICREG_PARTITION_CONSISTENT && partition != FRICREG_PARTITION_PAPER)
         return fr_fail(ctx, FRICREG_EINVAL, "set_partition: unknown partition %d", partition);
     ctx->partition = partition;
-    ctx->fac.valid = 0;
+    fr_ctx_forget_factor(ctx);
     ctx->last_valid = 0;
     return FRICREG_OK;
 }
@@ -168,7 +182,7 @@ int fricreg_ctx_set_coupling_diagonal(fricreg_ctx *ctx, size_t m, const double w
         if (!(w[i] > 0.0))
             return fr_fail(ctx, FRICREG_EINVAL, "set_coupling_diagonal: w[%zu] = %g must be > 0", i,
                            w[i]);
-    free_dense(ctx);
+    fr_ctx_free_coupling(ctx);
     memcpy(ctx->w_diag, w, m * sizeof *w);
     ctx->w_unit = 1;
     for (size_t i = 0; i < m; i++)
@@ -270,7 +284,7 @@ int fricreg_ctx_set_coupling_dense(fricreg_ctx *ctx, size_t m, const double W[])
         fr_factor_free(&fac), fr_box_qp_free(&qp);
         return fr_fail(ctx, FRICREG_ENOMEM, "set_coupling_dense: out of memory for m = %zu", m);
     }
-    free_dense(ctx);
+    fr_ctx_free_coupling(ctx);
     memcpy(copy, W, m * m * sizeof *W);
     for (size_t i = 0; i < m; i++)
         ctx->w_diag[i] = W[i * m + i];

@@ -14,6 +14,8 @@
 #include "fricreg.h"
 #include "law/law_stribeck.h"
 
+struct fr_sparse_coupling; /* sparse_coupling.h, included where it is used */
+
 #define FR_NSTATS 6
 #define FR_MAX_CONTACTS ((size_t)1 << 26)
 /* From this many contacts the diagonal pass keeps the tangent's codes, not its inputs. The
@@ -25,7 +27,7 @@
 struct fricreg_ctx {
     size_t m;
     int law;
-    int partition; /* enum fricreg_partition: used with a dense W */
+    int partition; /* enum fricreg_partition: used with a coupled (dense or sparse) W */
     double eps;
     double *mun; /* [m] friction bounds */
     /* [m] the bounds law (4) reads in an evaluation: mun, or with Stribeck friction the
@@ -34,16 +36,17 @@ struct fricreg_ctx {
     const double *bound;
     double *w_diag; /* [m] diagonal of W (the whole of W when W is diagonal) */
     int w_unit;     /* W = I: f_eq = -a_free needs no division */
-    double *W;      /* [m*m] row-major dense W, or NULL when W is diagonal */
+    double *W;      /* [m*m] row-major dense W, or NULL when W is diagonal or sparse */
+    struct fr_sparse_coupling *sp; /* a sparse W (sparse_coupling.h), or NULL */
 
     /* Scratch, allocated with the context or the coupling so that eval never allocates. */
     double *f;     /* [m] friction forces being built */
     double *f_eq;  /* [m] f_eq being built */
     size_t *stick; /* [m] indices of the near-stick set S */
     size_t n_stick;
-    double *rhs;          /* [m] dense only: right-hand side of the paper's W_SS solve */
+    double *rhs;          /* [m] coupled W: right-hand side of the paper's W_SS solve */
     struct fr_factor fac; /* dense only: cached factor of a principal block of W */
-    struct fr_box_qp qp;  /* dense only: the consistent law's QP on S */
+    struct fr_box_qp qp;  /* coupled W (dense or sparse): the consistent law's QP on S */
     signed char *side;    /* [m] the QP's last working set per contact, its warm start (a mark
                            * outside S: partition_consistent.c) */
 
@@ -70,12 +73,23 @@ struct fricreg_ctx {
     struct fr_error err;
 };
 
+/* W couples the contacts: dense or sparse, not diagonal. */
+static inline int fr_coupled(const fricreg_ctx *ctx)
+{
+    return ctx->W != NULL || ctx->sp != NULL;
+}
+
 /* The bound of contact i at rest: its static bound fs with Stribeck friction, else mun. It
  * bounds |f_i| at every velocity, and (4)'s slope at rest is 2/eps times it. */
 static inline double fr_rest_bound(const fricreg_ctx *ctx, size_t i)
 {
     return ctx->stribeck ? ctx->strib[i].fs : ctx->mun[i];
 }
+
+/* ctx.c: the coupling released (back to W = I, as set_coupling_diagonal leaves it before it
+ * writes the diagonal); the cached factor, dense or sparse, marked stale. */
+void fr_ctx_free_coupling(fricreg_ctx *ctx);
+void fr_ctx_forget_factor(fricreg_ctx *ctx);
 
 /* ctx_stribeck.c: the bounds of Stribeck friction at velocities zdot[m] into
  * ctx->strib_bound (ctx->stribeck on); the slope d bound_i/d zdot_i at v (at v = 0 that of

@@ -252,6 +252,8 @@ static int update(fricreg_ctx *ctx, const size_t set[], size_t n)
 
 int fr_factor_ensure(fricreg_ctx *ctx, const size_t set[], size_t n, const char *who)
 {
+    if (ctx->sp != NULL)
+        return fr_sparse_block_ensure(ctx, set, n, who);
     struct fr_factor *fa = &ctx->fac;
     if (!fa->valid)
         forget(fa);
@@ -273,6 +275,8 @@ int fr_factor_ensure(fricreg_ctx *ctx, const size_t set[], size_t n, const char 
 int fr_factor_solve(fricreg_ctx *ctx, double r[], const char *who)
 {
     (void)who; /* a held factor has positive pivots: nothing can fail */
+    if (ctx->sp != NULL)
+        return fr_sparse_block_solve(ctx, r);
     struct fr_factor *fa = &ctx->fac;
     size_t n = fa->n;
     double *y = fa->work;

@@ -57,4 +57,9 @@ int fr_factor_ensure(struct fricreg_ctx *ctx, const size_t set[], size_t n, cons
  * FRICREG_OK. */
 int fr_factor_solve(struct fricreg_ctx *ctx, double r[], const char *who);
 
+/* Their sparse twins (sparse_block.c), to which the two above hand over when W is sparse:
+ * the same contract, with the singularity test in the sparse factor's order. */
+int fr_sparse_block_ensure(struct fricreg_ctx *ctx, const size_t set[], size_t n, const char *who);
+int fr_sparse_block_solve(struct fricreg_ctx *ctx, double r[]);
+
 #endif

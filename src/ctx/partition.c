@@ -3,13 +3,15 @@
  *
  * Slip contacts get their sliding force with no f_eq work; only the near-stick set S needs f_eq.
  * With a diagonal W that is a division per contact and law (4) contact by contact (both
- * partitions agree there); with a dense W the near-stick forces come from the consistent law's
- * QP (partition_consistent.c) or the paper's joint solve (partition_paper.c). */
+ * partitions agree there); with a coupled W (dense or sparse) the near-stick forces come from
+ * the consistent law's QP (partition_consistent.c) or the paper's joint solve
+ * (partition_paper.c). */
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
 
 #include "base/dispatch.h"
+#include "coupling.h"
 #include "law/law.h"
 #include "partition.h"
 #include "law/contact_check.h"
@@ -186,15 +188,12 @@ static void eval_diagonal(fricreg_ctx *ctx, const double zdot[], const double a_
  * force wrong (fuzz finding). */
 static int check_feq_range(fricreg_ctx *ctx, const double a_free[])
 {
-    size_t m = ctx->m;
     for (size_t k = 0; k < ctx->n_stick; k++) {
         size_t i = ctx->stick[k];
-        const double *row = ctx->W + i * m;
-        double load = fabs(a_free[i]);
-        for (size_t j = 0; j < m; j++)
-            load += fabs(row[j]) * ctx->bound[j];
-        double reach = load / row[i] + 2.0 * ctx->bound[i];
-        double acceleration = load + 2.0 * row[i] * ctx->bound[i];
+        double w_ii = ctx->w_diag[i];
+        double load = fabs(a_free[i]) + fr_w_row_abs_dot(ctx, i, ctx->bound);
+        double reach = load / w_ii + 2.0 * ctx->bound[i];
+        double acceleration = load + 2.0 * w_ii * ctx->bound[i];
         if (!(reach <= FEQ_RANGE && acceleration <= FEQ_RANGE))
             return fr_fail(ctx, FRICREG_ENONFINITE,
                            "eval: contact %zu: f_eq up to (|a_free| + |W| mun)/W_ii = %g, or the"
@@ -217,8 +216,9 @@ static int check_solution(fricreg_ctx *ctx)
     return FRICREG_OK;
 }
 
-/* A dense W and a law that reads f_eq: split, then the near-stick forces by the partition. */
-static int eval_dense(fricreg_ctx *ctx, const double zdot[], const double a_free[])
+/* A coupled W (dense or sparse) and a law that reads f_eq: split, then the near-stick forces
+ * by the partition. */
+static int eval_coupled(fricreg_ctx *ctx, const double zdot[], const double a_free[])
 {
     fr_split_contacts(ctx, zdot);
     int status = check_feq_range(ctx, a_free);
@@ -276,10 +276,10 @@ int fricreg_ctx_eval(fricreg_ctx *ctx, size_t m, const double zdot[], const doub
         fr_stribeck_bounds(ctx, zdot);
     if (!fr_law_uses_feq(ctx->law)) {
         eval_without_feq(ctx, zdot, a_free, f, f_eq);
-    } else if (ctx->W == NULL) {
+    } else if (!fr_coupled(ctx)) {
         eval_diagonal(ctx, zdot, a_free, f, f_eq);
     } else {
-        status = eval_dense(ctx, zdot, a_free);
+        status = eval_coupled(ctx, zdot, a_free);
         if (status != FRICREG_OK)
             return status;
         memcpy(f, ctx->f, m * sizeof *f);
@@ -294,7 +294,7 @@ int fricreg_ctx_eval(fricreg_ctx *ctx, size_t m, const double zdot[], const doub
 
 int fr_ctx_eval_unchecked(fricreg_ctx *ctx, const double zdot[], const double a_free[], double f[])
 {
-    if (ctx->stribeck || (ctx->W != NULL && fr_law_uses_feq(ctx->law)))
+    if (ctx->stribeck || (fr_coupled(ctx) && fr_law_uses_feq(ctx->law)))
         return fricreg_ctx_eval(ctx, ctx->m, zdot, a_free, f, NULL);
     if (fr_law_uses_feq(ctx->law))
         eval_diagonal(ctx, zdot, a_free, f, NULL);

@@ -20,6 +20,10 @@ int fr_eval_paper(fricreg_ctx *ctx, const double zdot[], const double a_free[]);
 /* The consistent law: the box QP on S (partition_consistent.c, docs/coupled.md). */
 int fr_eval_consistent(fricreg_ctx *ctx, const double zdot[], const double a_free[]);
 
+/* Every contact's working set forgotten: each starts the next QP from its own row's minimizer
+ * (partition_consistent.c, entering_side), as a contact that enters S does. */
+void fr_consistent_forget_working_set(fricreg_ctx *ctx);
+
 /* c_i = 2 zdot_i/eps for (4), 0 for Karnopp and (2): where contact i sits in the band. */
 static inline double fr_band_position(const fricreg_ctx *ctx, double zdot)
 {

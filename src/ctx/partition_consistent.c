@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* partition_consistent.c — the consistent near-stick law with a dense W (docs/coupled.md).
+/* partition_consistent.c — the consistent near-stick law with a coupled W, dense or sparse
+ * (docs/coupled.md).
  *
  * f_eq,i is the force that zeroes contact i's acceleration given every other contact's actual
  * force. Law (4) on S is then f_i = clamp(f_eq,i - c_i mun_i, lo_i, hi_i) (law.h, fr_box), and
@@ -7,6 +8,7 @@
  *   f_S = argmin_{lo <= f <= hi} 1/2 f^T W_SS f + b^T f,  b_i = a_free,i + W_ii c_i mun_i
  *                                                                + (W_SL f_L)_i,
  * solved by box_qp.c from the previous evaluation's working set. */
+#include "coupling.h"
 #include "law/law.h"
 #include "partition.h"
 
@@ -14,7 +16,7 @@
  * FR_FREE, FR_UPPER): it has no working set to warm-start from when it enters S. */
 enum { ENTERING = 2 };
 
-static void mark_entering(fricreg_ctx *ctx)
+void fr_consistent_forget_working_set(fricreg_ctx *ctx)
 {
     for (size_t i = 0; i < ctx->m; i++)
         ctx->side[i] = ENTERING;
@@ -37,16 +39,13 @@ static void build_problem(fricreg_ctx *ctx, const signed char side[], const doub
                           const double a_free[])
 {
     struct fr_box_qp *qp = &ctx->qp;
-    size_t m = ctx->m;
     for (size_t k = 0; k < ctx->n_stick; k++) {
         size_t i = ctx->stick[k];
-        double c = fr_band_position(ctx, zdot[i]), coupling = 0.0;
-        const double *row = ctx->W + i * m;
-        for (size_t j = 0; j < m; j++)
-            coupling += row[j] * ctx->f[j];
+        double c = fr_band_position(ctx, zdot[i]), w_ii = ctx->w_diag[i];
+        double coupling = fr_w_row_dot(ctx, i, ctx->f, 0);
         fr_box(c, ctx->bound[i], &qp->lo[k], &qp->hi[k]);
-        qp->b[k] = a_free[i] + row[i] * c * ctx->bound[i] + coupling;
-        qp->side[k] = side[i] == ENTERING ? entering_side(qp->b[k], row[i], qp->lo[k], qp->hi[k])
+        qp->b[k] = a_free[i] + w_ii * c * ctx->bound[i] + coupling;
+        qp->side[k] = side[i] == ENTERING ? entering_side(qp->b[k], w_ii, qp->lo[k], qp->hi[k])
                                           : side[i];
     }
 }
@@ -54,14 +53,10 @@ static void build_problem(fricreg_ctx *ctx, const signed char side[], const doub
 /* f_eq,i = -(a_free,i + sum_{j != i} W_ij f_j) / W_ii on S, with the final forces. */
 static void consistent_feq(fricreg_ctx *ctx, const double a_free[])
 {
-    size_t m = ctx->m;
     for (size_t k = 0; k < ctx->n_stick; k++) {
         size_t i = ctx->stick[k];
-        const double *row = ctx->W + i * m;
-        double others = 0.0;
-        for (size_t j = 0; j < m; j++)
-            others += j == i ? 0.0 : row[j] * ctx->f[j];
-        ctx->f_eq[i] = -(a_free[i] + others) / row[i];
+        double others = fr_w_row_dot(ctx, i, ctx->f, 1);
+        ctx->f_eq[i] = -(a_free[i] + others) / ctx->w_diag[i];
     }
 }
 
@@ -74,7 +69,7 @@ int fr_eval_consistent(fricreg_ctx *ctx, const double zdot[], const double a_fre
         if (status != FRICREG_OK)
             return status;
     }
-    mark_entering(ctx); /* the working set is written back only on success */
+    fr_consistent_forget_working_set(ctx); /* the working set is written back only on success */
     for (size_t k = 0; k < ctx->n_stick; k++) {
         ctx->f[ctx->stick[k]] = qp->x[k];
         ctx->side[ctx->stick[k]] = qp->side[k];

@@ -1,7 +1,9 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* partition_paper.c — the paper's Sec. 3.3 partition with a dense W: every near-stick contact's
- * f_eq assumes all of S holds, W_SS f_eq,S = -(a_free,S + W_SL f_L), then the law on S. Kept to
- * reproduce the paper's Fig. 11; its force jumps when a coupled contact crosses |zdot| = eps. */
+/* partition_paper.c — the paper's Sec. 3.3 partition with a coupled W (dense or sparse): every
+ * near-stick contact's f_eq assumes all of S holds, W_SS f_eq,S = -(a_free,S + W_SL f_L), then
+ * the law on S. Kept to reproduce the paper's Fig. 11; its force jumps when a coupled contact
+ * crosses |zdot| = eps. */
+#include "coupling.h"
 #include "factor.h"
 #include "law/law.h"
 #include "partition.h"
@@ -40,10 +42,17 @@ static double coupling(const double row[], const size_t slip[], const double f_s
 /* f_eq,S from W_SS f_eq,S = -(a_free,S + W_SL f_L). */
 static int solve_feq(fricreg_ctx *ctx, const double a_free[])
 {
-    size_t s = ctx->n_stick, m = ctx->m, n_slip = list_slipping(ctx);
-    for (size_t a = 0; a < s; a++) {
-        const double *row = ctx->W + ctx->stick[a] * m;
-        ctx->rhs[a] = -(a_free[ctx->stick[a]] + coupling(row, ctx->qp.free_pos, ctx->qp.y, n_slip));
+    size_t s = ctx->n_stick, m = ctx->m;
+    if (ctx->sp != NULL) { /* f is 0 on S: the row's product with f is W_SL f_L */
+        for (size_t a = 0; a < s; a++)
+            ctx->rhs[a] = -(a_free[ctx->stick[a]] + fr_w_row_dot(ctx, ctx->stick[a], ctx->f, 0));
+    } else {
+        size_t n_slip = list_slipping(ctx);
+        for (size_t a = 0; a < s; a++) {
+            const double *row = ctx->W + ctx->stick[a] * m;
+            ctx->rhs[a] = -(a_free[ctx->stick[a]] +
+                            coupling(row, ctx->qp.free_pos, ctx->qp.y, n_slip));
+        }
     }
     int status = fr_factor_ensure(ctx, ctx->stick, s, "eval");
     if (status == FRICREG_OK)

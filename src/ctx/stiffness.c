@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "ctx_internal.h"
+#include "sparse_coupling.h"
 #include "base/eigen.h"
 
 /* The slope of the law at v = 0 times eps (so finite whatever eps): s_i eps, with s_i the
@@ -77,13 +78,33 @@ static int coupled_rate(fricreg_ctx *ctx, int law, double *rate)
     return status;
 }
 
+/* Sparse W: Gershgorin's bound of the largest eigenvalue of D^1/2 W D^1/2 times eps,
+ * max_i sum_j sqrt(s_i) |W_ij| sqrt(s_j): rigorous, O(nnz), and above the eigenvalue by the
+ * coupling's spread (on a uniform chain W = tridiag(-w, 2w, -w), 4w against 4w cos^2(pi/2(m+1))
+ * for the eigenvalue: equal as m grows). Scaled as coupled_rate, so that no term overflows;
+ * s_i eps = k bound_i, the bounds in the context's f_eq scratch. */
+static double sparse_rate(fricreg_ctx *ctx, int law)
+{
+    double k = law_slope_times_eps(law, 1.0), mun_max = 0.0, *s = ctx->f_eq;
+    for (size_t i = 0; i < ctx->m; i++)
+        mun_max = fmax(mun_max, s[i] = fr_rest_bound(ctx, i));
+    double w_max = fr_sparse_max_abs(ctx->sp);
+    if (k == 0.0 || mun_max == 0.0 || w_max == 0.0)
+        return 0.0;
+    return fr_sparse_gershgorin(ctx->sp, s, mun_max, w_max) * w_max * mun_max * k;
+}
+
 int fr_stiffness_times_eps(fricreg_ctx *ctx, int chord, double *rate)
 {
     int law = chord ? FRICREG_LAW_VELOCITY_LIMITED : ctx->law;
-    int decoupled = ctx->W == NULL || (!chord && ctx->law == FRICREG_LAW_QUINN &&
-                                       ctx->partition == FRICREG_PARTITION_CONSISTENT);
+    int decoupled = !fr_coupled(ctx) || (!chord && ctx->law == FRICREG_LAW_QUINN &&
+                                         ctx->partition == FRICREG_PARTITION_CONSISTENT);
     if (decoupled) {
         *rate = diagonal_rate(ctx, law);
+        return FRICREG_OK;
+    }
+    if (ctx->sp != NULL) {
+        *rate = sparse_rate(ctx, law);
         return FRICREG_OK;
     }
     double value = 0.0;

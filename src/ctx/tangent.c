@@ -18,9 +18,11 @@
 #include <math.h>
 #include <string.h>
 
+#include "coupling.h"
 #include "factor.h"
 #include "law/law.h"
 #include "partition.h"
+#include "tangent.h"
 
 /* d f/d zdot of a contact that does not read f_eq at zdot = v. */
 static double slip_slope(int law, double v, double mun, double eps)
@@ -39,7 +41,7 @@ static double slip_slope(int law, double v, double mun, double eps)
 
 /* d bound_i/d zdot_i at v: 0, but for Stribeck friction (ctx_stribeck.c), whose bound moves
  * with |zdot_i|. */
-static double bound_slope(const fricreg_ctx *ctx, size_t i, double v)
+double fr_tangent_bound_slope(const fricreg_ctx *ctx, size_t i, double v)
 {
     return ctx->stribeck ? fr_stribeck_bound_slope(ctx, i, v) : 0.0;
 }
@@ -53,8 +55,8 @@ static double box_bound_weight(int at_hi, int at_lo, double c)
 
 /* d f/d zdot and d f/d f_eq of a near-stick contact at (v, f_eq) with f_eq held fixed; the
  * bound mun moves with v at the rate dmun (Stribeck friction; else 0). */
-static void near_slopes(const fricreg_ctx *ctx, double v, double feq, double mun, double dmun,
-                        double *dv, double *dfeq)
+void fr_tangent_near_slopes(const fricreg_ctx *ctx, double v, double feq, double mun, double dmun,
+                            double *dv, double *dfeq)
 {
     double dc = ctx->law == FRICREG_LAW_QUINN ? 2.0 / ctx->eps : 0.0, c = v * dc;
     double dlo, dhi, piece = fr_box_piece(c, feq, mun);
@@ -66,9 +68,10 @@ static void near_slopes(const fricreg_ctx *ctx, double v, double feq, double mun
 
 /* d f/d zdot of a contact off the band (no f_eq): the law's slope at fixed bound, and
  * d(-mun sgn v)/d mun = -sgn v times the bound's own slope (Stribeck: -k'(|v|)). */
-static double off_band_slope(const fricreg_ctx *ctx, size_t i, double v)
+double fr_tangent_off_band_slope(const fricreg_ctx *ctx, size_t i, double v)
 {
-    return slip_slope(ctx->law, v, ctx->bound[i], ctx->eps) + fr_coulomb(v, bound_slope(ctx, i, v));
+    return slip_slope(ctx->law, v, ctx->bound[i], ctx->eps) +
+           fr_coulomb(v, fr_tangent_bound_slope(ctx, i, v));
 }
 
 /* The slopes of fr_near_tangent_code's code, kept by the diagonal pass (partition.c) for a
@@ -82,22 +85,29 @@ static void coded_slopes(const fricreg_ctx *ctx, double code, double mun, double
 
 /* Laws without f_eq, or a diagonal W: one contact at a time, the diagonals only; from the
  * codes the diagonal pass kept (ctx->last_coded) or from the evaluation's inputs. */
+void fr_tangent_diagonal_slopes(const fricreg_ctx *ctx, size_t i, double *dv, double *da)
+{
+    double v = ctx->last_coded ? 0.0 : ctx->last_zdot[i], dfeq = 0.0;
+    if (ctx->last_coded)
+        coded_slopes(ctx, ctx->last_afree[i], ctx->bound[i], dv, &dfeq);
+    else if (fr_needs_feq(ctx->law, v, ctx->eps))
+        fr_tangent_near_slopes(ctx, v, -ctx->last_afree[i] / ctx->w_diag[i], ctx->bound[i],
+                               fr_tangent_bound_slope(ctx, i, v), dv, &dfeq);
+    else
+        *dv = fr_tangent_off_band_slope(ctx, i, v);
+    *da = -dfeq / ctx->w_diag[i];
+}
+
 static void tangent_diagonal(const fricreg_ctx *ctx, double dz[], double da[])
 {
     size_t m = ctx->m;
     for (size_t i = 0; i < m; i++) {
-        double v = ctx->last_coded ? 0.0 : ctx->last_zdot[i], dv, dfeq = 0.0;
-        if (ctx->last_coded)
-            coded_slopes(ctx, ctx->last_afree[i], ctx->bound[i], &dv, &dfeq);
-        else if (fr_needs_feq(ctx->law, v, ctx->eps))
-            near_slopes(ctx, v, -ctx->last_afree[i] / ctx->w_diag[i], ctx->bound[i],
-                        bound_slope(ctx, i, v), &dv, &dfeq);
-        else
-            dv = off_band_slope(ctx, i, v);
+        double dv, dfa;
+        fr_tangent_diagonal_slopes(ctx, i, &dv, &dfa);
         if (dz)
             dz[i * m + i] = dv;
         if (da)
-            da[i * m + i] = -dfeq / ctx->w_diag[i];
+            da[i * m + i] = dfa;
     }
 }
 
@@ -133,8 +143,7 @@ static void tangent_slip_columns(fricreg_ctx *ctx, const size_t set[], size_t n,
         double slope = dz[k * m + k];
         if (fr_needs_feq(ctx->law, ctx->last_zdot[k], ctx->eps) || slope == 0.0)
             continue;
-        for (size_t a = 0; a < n; a++)
-            ctx->rhs[a] = ctx->W[set[a] * m + k];
+        fr_w_column_gather(ctx, k, set, n, ctx->rhs);
         scatter_solution(ctx, set, n, dz, k, row_scale, slope);
     }
 }
@@ -147,7 +156,7 @@ static void tangent_slip_columns(fricreg_ctx *ctx, const size_t set[], size_t n,
 static double column_scale(const fricreg_ctx *ctx, size_t k)
 {
     int exponent;
-    frexp(sqrt(ctx->W[k * ctx->m + k]), &exponent);
+    frexp(sqrt(ctx->w_diag[k]), &exponent);
     return ldexp(1.0, exponent);
 }
 
@@ -157,20 +166,16 @@ static void tangent_paper(fricreg_ctx *ctx, double dz[], double da[])
 {
     size_t m = ctx->m, s = ctx->n_stick;
     const size_t *S = ctx->stick;
-    for (size_t a = 0; a < s; a++) {
-        const double *row = ctx->W + S[a] * m;
-        double coupling = 0.0;
-        for (size_t j = 0; j < m; j++)
-            coupling += row[j] * ctx->f[j];
-        ctx->rhs[a] = -(ctx->last_afree[S[a]] + coupling);
-    }
+    for (size_t a = 0; a < s; a++)
+        ctx->rhs[a] = -(ctx->last_afree[S[a]] + fr_w_row_dot(ctx, S[a], ctx->f, 0));
     fr_factor_solve(ctx, ctx->rhs, "tangent");
     double *dfeq = ctx->qp.y; /* d f_i/d f_eq,i on S: scratch of the QP, free here */
     for (size_t a = 0; a < s; a++) {
         size_t i = S[a];
         double dv;
         double v = ctx->last_zdot[i];
-        near_slopes(ctx, v, ctx->rhs[a], ctx->bound[i], bound_slope(ctx, i, v), &dv, &dfeq[a]);
+        fr_tangent_near_slopes(ctx, v, ctx->rhs[a], ctx->bound[i],
+                               fr_tangent_bound_slope(ctx, i, v), &dv, &dfeq[a]);
         if (dz)
             dz[i * m + i] = dv;
     }
@@ -185,13 +190,20 @@ static void tangent_paper(fricreg_ctx *ctx, double dz[], double da[])
 
 /* d(bound)/d zdot of a held contact i of S: through c, and through the bound itself when it
  * moves with zdot_i (Stribeck friction). */
-static double held_slope(const fricreg_ctx *ctx, size_t i)
+double fr_tangent_held_slope(const fricreg_ctx *ctx, size_t i)
 {
     double dc = ctx->law == FRICREG_LAW_QUINN ? 2.0 / ctx->eps : 0.0, dlo, dhi;
     double v = ctx->last_zdot[i], c = v * dc;
     int upper = ctx->side[i] == FR_UPPER;
     fr_box_slopes(c, ctx->bound[i], &dlo, &dhi);
-    return (upper ? dhi : dlo) * dc + bound_slope(ctx, i, v) * box_bound_weight(upper, !upper, c);
+    return (upper ? dhi : dlo) * dc +
+           fr_tangent_bound_slope(ctx, i, v) * box_bound_weight(upper, !upper, c);
+}
+
+double fr_tangent_free_slope(const fricreg_ctx *ctx, size_t k)
+{
+    double dc = ctx->law == FRICREG_LAW_QUINN ? 2.0 / ctx->eps : 0.0, v = ctx->last_zdot[k];
+    return ctx->bound[k] * dc + v * dc * fr_tangent_bound_slope(ctx, k, v);
 }
 
 /* The consistent law's free set F (in ctx->qp.free_set), from the final working set. */
@@ -210,21 +222,21 @@ static void tangent_consistent(fricreg_ctx *ctx, size_t nf, double dz[], double 
 {
     size_t m = ctx->m, s = ctx->n_stick;
     const size_t *S = ctx->stick, *F = ctx->qp.free_set;
-    double dc = ctx->law == FRICREG_LAW_QUINN ? 2.0 / ctx->eps : 0.0;
     for (size_t b = 0; dz && b < s; b++) { /* column k = S[b] of d f/d zdot */
         size_t k = S[b];
         int held = ctx->side[k] != FR_FREE;
-        double dk = held ? held_slope(ctx, k) : 0.0;
+        double dk = held ? fr_tangent_held_slope(ctx, k) : 0.0;
         if (held)
             dz[k * m + k] = dk;
         /* d b_F/d zdot_k + W_F,k d f_k/d zdot_k = (W_F,k or W_kk e_k) times a slope, solved
          * for the matrix part and scaled by the slope after: the product W mun/eps can
          * overflow where the solution (of the size of the slope) does not (found by
          * fuzz_ctx: W ~ 1e164, mun ~ 1e151 gave Inf - Inf = NaN). */
-        double v = ctx->last_zdot[k]; /* d(c_k bound_k)/d zdot_k: d b_k = W_kk times it */
-        double slope = held ? dk : ctx->bound[k] * dc + v * dc * bound_slope(ctx, k, v);
-        for (size_t a = 0; a < nf; a++)
-            ctx->rhs[a] = held ? ctx->W[F[a] * m + k] : (F[a] == k ? ctx->W[k * m + k] : 0.0);
+        double slope = held ? dk : fr_tangent_free_slope(ctx, k);
+        if (held)
+            fr_w_column_gather(ctx, k, F, nf, ctx->rhs);
+        for (size_t a = 0; !held && a < nf; a++)
+            ctx->rhs[a] = F[a] == k ? ctx->w_diag[k] : 0.0;
         if (nf > 0 && slope != 0.0)
             scatter_solution(ctx, F, nf, dz, k, NULL, slope);
     }
@@ -243,58 +255,72 @@ static void tangent_slip(const fricreg_ctx *ctx, double dz[])
     size_t m = ctx->m;
     for (size_t i = 0; dz && i < m; i++)
         if (!fr_needs_feq(ctx->law, ctx->last_zdot[i], ctx->eps))
-            dz[i * m + i] = off_band_slope(ctx, i, ctx->last_zdot[i]);
+            dz[i * m + i] = fr_tangent_off_band_slope(ctx, i, ctx->last_zdot[i]);
 }
 
-static int check_tangent_args(fricreg_ctx *ctx, size_t m, const double dz[], const double da[])
+int fr_tangent_check_size(fricreg_ctx *ctx, size_t m, const char *who)
 {
     if (m != ctx->m)
-        return fr_fail(ctx, FRICREG_ESIZE, "tangent: m = %zu, context has %zu contacts", m, ctx->m);
-    if (dz == NULL && da == NULL)
-        return fr_fail(ctx, FRICREG_ENULL, "tangent: df_dzdot and df_dafree are both NULL");
-    if (!ctx->keep_tangent)
-        return fr_fail(ctx, FRICREG_EINVAL,
-                       "tangent: the evaluation's inputs are not kept (set_keep_tangent 0)");
-    if (!ctx->last_valid)
-        return fr_fail(ctx, FRICREG_EINVAL,
-                       "tangent: no successful evaluation since the context was created or"
-                       " last set up");
+        return fr_fail(ctx, FRICREG_ESIZE, "%s: m = %zu, context has %zu contacts", who, m, ctx->m);
     return FRICREG_OK;
 }
 
-/* Dense W: the split of the last evaluation and the factor the tangent solves with (W_SS for
- * the paper's partition, W_FF for the consistent law), before any output is written: the
+int fr_tangent_check_kept(fricreg_ctx *ctx, const char *who)
+{
+    if (!ctx->keep_tangent)
+        return fr_fail(ctx, FRICREG_EINVAL,
+                       "%s: the evaluation's inputs are not kept (set_keep_tangent 0)", who);
+    if (!ctx->last_valid)
+        return fr_fail(ctx, FRICREG_EINVAL,
+                       "%s: no successful evaluation since the context was created or"
+                       " last set up",
+                       who);
+    return FRICREG_OK;
+}
+
+/* Coupled W: the split of the last evaluation and the factor the tangent solves with (W_SS
+ * for the paper's partition, W_FF for the consistent law), before any output is written: the
  * factor is the only thing that can fail. *nf is the consistent law's |F|. */
-static int prepare_dense(fricreg_ctx *ctx, size_t *nf)
+static int prepare_coupled(fricreg_ctx *ctx, size_t *nf, const char *who)
 {
     fr_split_contacts(ctx, ctx->last_zdot);
     *nf = 0;
     if (ctx->n_stick == 0)
         return FRICREG_OK;
     if (ctx->partition == FRICREG_PARTITION_PAPER)
-        return fr_factor_ensure(ctx, ctx->stick, ctx->n_stick, "tangent");
+        return fr_factor_ensure(ctx, ctx->stick, ctx->n_stick, who);
     *nf = consistent_free_set(ctx);
-    return *nf > 0 ? fr_factor_ensure(ctx, ctx->qp.free_set, *nf, "tangent") : FRICREG_OK;
+    return *nf > 0 ? fr_factor_ensure(ctx, ctx->qp.free_set, *nf, who) : FRICREG_OK;
+}
+
+int fr_tangent_prepare(fricreg_ctx *ctx, const char *who, int *coupled, size_t *nf)
+{
+    if (ctx->stribeck) /* the bounds of the evaluation's velocities (a failed eval since may */
+        fr_stribeck_bounds(ctx, ctx->last_zdot); /* have left others) */
+    *coupled = fr_coupled(ctx) && fr_law_uses_feq(ctx->law);
+    *nf = 0;
+    return *coupled ? prepare_coupled(ctx, nf, who) : FRICREG_OK;
 }
 
 int fricreg_ctx_tangent(fricreg_ctx *ctx, size_t m, double df_dzdot[], double df_dafree[])
 {
     if (ctx == NULL)
         return FRICREG_ENULL;
-    int status = check_tangent_args(ctx, m, df_dzdot, df_dafree);
-    if (status != FRICREG_OK)
-        return status;
-    if (ctx->stribeck) /* the bounds of the evaluation's velocities (a failed eval since may */
-        fr_stribeck_bounds(ctx, ctx->last_zdot); /* have left others) */
-    int dense = ctx->W != NULL && fr_law_uses_feq(ctx->law);
+    int status = fr_tangent_check_size(ctx, m, "tangent"), coupled = 0;
+    if (status == FRICREG_OK && df_dzdot == NULL && df_dafree == NULL)
+        status = fr_fail(ctx, FRICREG_ENULL, "tangent: df_dzdot and df_dafree are both NULL");
+    if (status == FRICREG_OK)
+        status = fr_tangent_check_kept(ctx, "tangent");
     size_t nf = 0;
-    if (dense && (status = prepare_dense(ctx, &nf)) != FRICREG_OK)
+    if (status == FRICREG_OK)
+        status = fr_tangent_prepare(ctx, "tangent", &coupled, &nf);
+    if (status != FRICREG_OK)
         return status;
     if (df_dzdot)
         memset(df_dzdot, 0, m * m * sizeof *df_dzdot);
     if (df_dafree)
         memset(df_dafree, 0, m * m * sizeof *df_dafree);
-    if (!dense) {
+    if (!coupled) {
         tangent_diagonal(ctx, df_dzdot, df_dafree);
     } else {
         tangent_slip(ctx, df_dzdot);
