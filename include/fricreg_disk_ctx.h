@@ -119,6 +119,55 @@ FRICREG_API int fricreg_disk_ctx_set_coupling_blocks(fricreg_disk_ctx *ctx, size
 FRICREG_API int fricreg_disk_ctx_set_coupling_dense(fricreg_disk_ctx *ctx, size_t m,
                                                     const double W[]);
 
+/** Coupled contacts, sparse: the Delassus matrix W of order 2m in compressed sparse rows, in
+ *  the layout of fricreg_disk_ctx_set_coupling_dense (row and column 2i+a are contact i's
+ *  component a; the 2x2 block W_ij couples contacts i and j), as enum fricreg_sparse_flags
+ *  describes (fricreg.h): zero- or one-based, W whole or one triangle (diagonal included),
+ *  duplicates summed, entries of a row in any order. Read and copied; the caller keeps its
+ *  arrays. Memory: O(entries of W + entries of its sparse factor), no (2m)^2 array; evaluation
+ *  allocates nothing (fricreg_disk_ctx_eval).
+ *
+ *  m       number of contacts, equal to the context's.
+ *  flags   enum fricreg_sparse_flags, combined with |.
+ *  rowptr  in: rowptr[2m + 1], rowptr[0] = base (0, or 1 with FRICREG_SPARSE_ONE_BASED),
+ *          non-decreasing; nnz = rowptr[2m] - base. Fortran: integer(c_int64_t).
+ *  colind  in: colind[nnz], the column (base-based, < 2m + base) of each entry of row r at
+ *          rowptr[r] - base ... rowptr[r+1] - base - 1. May be NULL when nnz = 0.
+ *  values  in: values[nnz], the entries (inverse mass units), finite, at most 1e250 in
+ *          magnitude, each and summed with its duplicates.
+ *
+ *  Refused as by the dense setter: W not symmetric, judged by src/base/matrix_input.c's rule
+ *  (given whole, entries (k, l) and (l, k) differing by more than 1e-12 sqrt(r_k r_l), r_k the
+ *  largest magnitude in row k: a change of a contact's units does not change the verdict;
+ *  FRICREG_ENOTSYM); a diagonal block W_ii not positive definite (as
+ *  fricreg_disk_ctx_set_coupling_blocks; also a contact with no diagonal entry) or an entry
+ *  with W_kl^2 > W_kk W_ll (FRICREG_ENOTPSD); W not positive semidefinite: the smallest
+ *  eigenvalue of D^-1/2 W D^-1/2 (D = diag W) below -2m 1e-12, found here by CHOLMOD's sparse
+ *  LDL^T of D^-1/2 W D^-1/2 + 2m 1e-12 I, which has a pivot <= 0 exactly then (FRICREG_ENOTPSD;
+ *  cost that of one sparse factorization, not the dense setter's O(m^3)). A singular W is
+ *  accepted, as by the dense setter. Nothing is changed on failure.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL (ctx, rowptr, or colind or values while nnz > 0);
+ *  FRICREG_ESIZE if m differs from the context's; FRICREG_EINVAL (unknown flags, both
+ *  triangles, rowptr[0] not the base or rowptr decreasing, an index out of range, an entry in
+ *  the triangle left out, a value beyond 1e250); FRICREG_ENONFINITE; FRICREG_ENOTSYM;
+ *  FRICREG_ENOTPSD; FRICREG_ENOMEM. Since 1.6 (FRICREG_1.6). */
+FRICREG_API int fricreg_disk_ctx_set_coupling_csr(fricreg_disk_ctx *ctx, size_t m, int flags,
+                                                  const int64_t rowptr[], const int64_t colind[],
+                                                  const double values[]);
+
+/** Coupled contacts, sparse, in compressed sparse columns: as
+ *  fricreg_disk_ctx_set_coupling_csr with rows and columns swapped, colptr[2m + 1] and
+ *  rowind[nnz] (integer(c_int64_t) in Fortran) the column pointers and row indices. W being
+ *  symmetric, its CSC arrays are its CSR arrays, but for the triangle flag: a CSR upper
+ *  triangle is a CSC lower one. Checks, errors and cost as fricreg_disk_ctx_set_coupling_csr.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_EINVAL; FRICREG_ENONFINITE;
+ *  FRICREG_ENOTSYM; FRICREG_ENOTPSD; FRICREG_ENOMEM. Since 1.6 (FRICREG_1.6). */
+FRICREG_API int fricreg_disk_ctx_set_coupling_csc(fricreg_disk_ctx *ctx, size_t m, int flags,
+                                                  const int64_t colptr[], const int64_t rowind[],
+                                                  const double values[]);
+
 /** Evaluate the friction forces of all m contacts (the law above).
  *
  *  m          must equal the context's contact count.
