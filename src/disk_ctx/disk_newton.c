@@ -273,10 +273,6 @@ static int line_search(fricreg_disk_ctx *ctx, int circle)
             change = objective_change(ctx, &slope);
             accept = slope < 0.0 && change <= ARMIJO * slope;
         }
-#ifdef FR_DEBUG_NEWTON
-        if (accept)
-            fprintf(stderr, "  accepted h=%d clipped %d\n", h, clipped);
-#endif
         if (accept) {
             for (size_t k = 0; k < ctx->n_near; k++) {
                 size_t i = ctx->near[k];
@@ -289,9 +285,6 @@ static int line_search(fricreg_disk_ctx *ctx, int circle)
     return 0;
 }
 
-#ifdef FR_DEBUG_NEWTON
-#include <stdio.h>
-#endif
 int fr_disk_newton(fricreg_disk_ctx *ctx, int max_iter, double tol, int *converged)
 {
     *converged = 0;
@@ -299,16 +292,7 @@ int fr_disk_newton(fricreg_disk_ctx *ctx, int max_iter, double tol, int *converg
         int status = near_accelerations(ctx);
         if (status != FRICREG_OK)
             return status;
-        double mv = block_pass(ctx);
-#ifdef FR_DEBUG_NEWTON
-        {
-            int nc = 0;
-            for (size_t k = 0; k < ctx->n_near; k++)
-                nc += ctx->cpl->onl[ctx->near[k]];
-            fprintf(stderr, "it %d move %.3g circles %d\n", it, mv, nc);
-        }
-#endif
-        if (mv <= tol) {
+        if (block_pass(ctx) <= tol) {
             accept_block_pass(ctx);
             *converged = 1;
             return FRICREG_OK;
@@ -318,9 +302,6 @@ int fr_disk_newton(fricreg_disk_ctx *ctx, int max_iter, double tol, int *converg
         int circle = newton_direction(ctx);
         if (circle >= 0 && line_search(ctx, circle))
             continue;
-#ifdef FR_DEBUG_NEWTON
-        fprintf(stderr, "  step failed (%d)\n", circle);
-#endif
         double moved; /* no descent found: a sweep, which always descends */
         if ((status = fr_disk_sweep(ctx, &moved)) != FRICREG_OK)
             return status;
