@@ -162,9 +162,11 @@ FRICREG_API int fricreg_sim_set_partition(fricreg_sim *sim, int partition);
  *  (fricreg_ctx_tangent) chained through the system's linear kinematics, one right-hand side
  *  per Jacobian, exact wherever the forces are differentiable.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown integrator, dt <= 0,
- *  rtol < 0 or atol < 0, or rtol or atol > 0 with FRICREG_INT_CENTRAL or
- *  FRICREG_INT_CENTRAL_IMEX (fixed steps only);
- *  FRICREG_ENONFINITE. */
+ *  rtol < 0 or atol < 0, rtol or atol > 0 with FRICREG_INT_CENTRAL or
+ *  FRICREG_INT_CENTRAL_IMEX (fixed steps only), or rtol > 0 with atol = 0 for rk1imp, rk2imp,
+ *  rk4imp, msadams or msbdf (their iteration converges to atol + rtol |y|, which is 0 where a
+ *  state component is 0, as at a start from rest; GSL reports that level to its error
+ *  handler); FRICREG_ENONFINITE. */
 FRICREG_API int fricreg_sim_set_integrator(fricreg_sim *sim, int integrator, double dt, double rtol,
                                            double atol);
 

@@ -222,13 +222,17 @@ FRICREG_API int fricreg_structure_set_newton(fricreg_structure *s, double tol, i
  *  pivoting; the corrected guess O(m ndof + m^3) and a residual. Other steps make no heap
  *  allocation.
  *
- *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if dt <= 0, t + dt rounds to t, or J
- *  was never set; FRICREG_ENONFINITE if dt is not finite; FRICREG_ENOTSYM or
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if dt <= 0, t + dt rounds to t, J
+ *  was never set, or W = J M^-1 J^T has an entry beyond the double range or a W_ii below
+ *  DBL_MIN ~ 2.2e-308 (J and M of scales too far apart); FRICREG_ENONFINITE if dt is not
+ *  finite; FRICREG_ENOTSYM or
  *  FRICREG_ENOTPSD if the context refuses W (not expected: W is formed symmetric from a
  *  positive definite M and non-zero rows of J); FRICREG_ESINGULAR (redundant contacts
  *  sticking together: their forces are not unique); FRICREG_ESTEP (central
  *  difference beyond its stability bounds); FRICREG_EDIVERGED if the residual or the state
- *  becomes non-finite or beyond 1e100. On failure the state is unchanged. */
+ *  becomes non-finite or beyond 1e100. On failure nothing a getter shows changes: u, v, a, f,
+ *  the energies and the counters are those before the call (a first step after set_initial
+ *  or a setter computes the acceleration at t before it fails: that is undone). */
 FRICREG_API int fricreg_structure_step(fricreg_structure *s, double dt);
 
 /** Step from the current time to t_end with steps of dt, the last one shortened to land on
@@ -287,16 +291,24 @@ FRICREG_API int fricreg_structure_set_max_steps(fricreg_structure *s, int64_t ma
  *
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown integrator or
  *  FRICREG_INT_CENTRAL or FRICREG_INT_CENTRAL_IMEX (fricreg_sim's only: use
- *  fricreg_structure_step's central difference),
- *  dt <= 0, rtol < 0, atol < 0, t_end not after the current time, more than 2^31 fixed steps, J
- *  never set, or a stepper that solves its Newton matrix by GSL's LU (rk1imp, rk2imp, rk4imp,
- *  bsimp, msbdf) on an unstable structure (K or C not positive semidefinite: that matrix can
- *  be singular, which GSL would report to its error handler); FRICREG_ENONFINITE; FRICREG_ESTEP; FRICREG_ESINGULAR; FRICREG_EDIVERGED (the
- *  state non-finite or beyond 1e100); FRICREG_EINTEGRATOR (GSL failed, e.g. the adaptive step
- *  underflowed); FRICREG_EWORK (more adaptive steps than fricreg_structure_set_max_steps
- *  allows); FRICREG_ENOMEM. On failure the state is that of the last accepted step. The
- *  observer sees every GSL step (one more right-hand side each for its forces) and may stop
- *  the run (FRICREG_OK); a call from the observer is FRICREG_EINVAL. */
+ *  fricreg_structure_step's central difference), dt <= 0, rtol < 0, atol < 0, t_end not after
+ *  the current time, more than 2^31 fixed steps, J never set, W out of range (as
+ *  fricreg_structure_step), rtol > 0 with atol = 0 for rk1imp, rk2imp, rk4imp, msadams or msbdf
+ *  (as fricreg_sim_set_integrator), or a stepper that solves its Newton matrix I - h c J by
+ *  GSL's LU (rk1imp, rk2imp, rk4imp, bsimp, msbdf) where that matrix can be singular, which GSL
+ *  would report to its error handler: on an unstable structure (K or C not positive
+ *  semidefinite), or where the largest step (dt; t_end - t when adaptive) times the stiffest
+ *  rate exceeds 1e12 (omega_max + c_max + m max_i W_ii 2 mun_i / max(eps, 1.5e-8), the
+ *  friction's steepest slope as the forward-difference Jacobian sees it: near 1/DBL_EPSILON the
+ *  identity is lost to rounding); FRICREG_ENONFINITE; FRICREG_ESTEP; FRICREG_ESINGULAR;
+ *  FRICREG_EDIVERGED (the state non-finite or beyond 1e100); FRICREG_EINTEGRATOR (GSL failed,
+ *  e.g. the adaptive step underflowed); FRICREG_EWORK (more adaptive steps than
+ *  fricreg_structure_set_max_steps allows); FRICREG_ENOMEM. On failure the state is that of the
+ *  last accepted step, its acceleration and forces from the equation of motion there (or,
+ *  where that fails too, FRICREG_ESINGULAR or FRICREG_EDIVERGED, those of the run's start);
+ *  with no step accepted, nothing a getter shows changes (the energy balance starts at the
+ *  first accepted step). The observer sees every GSL step (one more right-hand side each for
+ *  its forces) and may stop the run (FRICREG_OK); a call from the observer is FRICREG_EINVAL. */
 FRICREG_API int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt,
                                           double rtol, double atol, double t_end);
 

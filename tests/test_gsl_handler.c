@@ -361,6 +361,75 @@ START_TEST(structure_redundant_contacts)
 }
 END_TEST
 
+/* GSL's steppers that iterate to the error level atol + rtol |y| per component (rk1imp, rk2imp,
+ * rk4imp, msadams, msbdf) report a level of 0 to GSL's handler, whose default aborted (fuzz
+ * finding, fuzz_structure: run_ode with rk2imp, rtol > 0, atol = 0, from rest): every start at
+ * rest has a zero component, and the structure's energies and the simulations' dissipation start
+ * at 0 anyway. Simulations and structures now refuse atol = 0 with them (FRICREG_EINVAL). */
+START_TEST(iterating_steppers_without_atol)
+{
+    const int iterating[] = {FRICREG_INT_RK1IMP, FRICREG_INT_RK2IMP, FRICREG_INT_RK4IMP,
+                             FRICREG_INT_MSADAMS, FRICREG_INT_MSBDF};
+    for (size_t k = 0; k < sizeof iterating / sizeof iterating[0]; k++) {
+        fricreg_sim *sim = NULL;
+        ck_assert_int_eq(fricreg_sim_create(FRICREG_SYSTEM_OSCILLATOR, &sim), FRICREG_OK);
+        ck_assert_int_eq(fricreg_sim_set_integrator(sim, iterating[k], 0.01, 1e-6, 0.0),
+                         FRICREG_EINVAL);
+        ck_assert_int_eq(fricreg_sim_run(sim, 1.0), FRICREG_OK); /* the default stepper */
+        assert_handler_intact("fricreg_sim_set_integrator, atol = 0");
+        fricreg_sim_free(sim);
+        fricreg_structure *s = structure();
+        ck_assert_int_eq(fricreg_structure_run_ode(s, iterating[k], 0.01, 1e-6, 0.0, 1.0),
+                         FRICREG_EINVAL);
+        assert_handler_intact("fricreg_structure_run_ode, atol = 0");
+        fricreg_structure_free(s);
+    }
+    /* an explicit stepper is not refused: its step control divides by the error level instead
+     * of reporting a zero one (this run meets one it cannot satisfy at t = 0.34 and fails,
+     * FRICREG_EINTEGRATOR), and GSL's handler is not reached */
+    fricreg_structure *s = structure();
+    ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_RKF45, 0.01, 1e-6, 0.0, 1.0),
+                     FRICREG_EINTEGRATOR);
+    assert_handler_intact("fricreg_structure_run_ode, rkf45, atol = 0");
+    fricreg_structure_free(s);
+}
+END_TEST
+
+/* A stable structure whose damping dwarfs 1 (fuzz finding, fuzz_structure): C = 1e300
+ * [[1, 1], [1, 1]] (positive semidefinite), M = I, rk1imp at dt = 1. Its Newton matrix
+ * I + h C rounds to 1e300 [[1, 1], [1, 1]], exactly singular, and gsl_linalg_LU_solve reported
+ * it to the handler (the default aborted). run_ode now refuses GSL's LU-based steppers where the
+ * step times the stiffest rate exceeds 1e12 (FRICREG_EINVAL); at dt = 1e-3 with C = 1e3 [[1, 1],
+ * [1, 1]] (a rate of 2e3 and more from the contact) it runs. */
+START_TEST(lu_steppers_on_a_stiff_structure)
+{
+    const double J[2] = {1.0, 0.0}, u0[2] = {0.01, 0.0}, v0[2] = {0.0, 0.0};
+    double C[4] = {1e300, 1e300, 1e300, 1e300};
+    const int lu[] = {FRICREG_INT_RK1IMP, FRICREG_INT_RK2IMP, FRICREG_INT_RK4IMP, FRICREG_INT_BSIMP,
+                      FRICREG_INT_MSBDF};
+    for (size_t k = 0; k < sizeof lu / sizeof lu[0]; k++) {
+        fricreg_structure *s = NULL;
+        ck_assert_int_eq(fricreg_structure_create(2, 1, &s), FRICREG_OK);
+        ck_assert_int_eq(fricreg_structure_set_contacts(s, 1, 2, J), FRICREG_OK);
+        ck_assert_int_eq(fricreg_structure_set_damping(s, 2, C), FRICREG_OK);
+        ck_assert_int_eq(fricreg_structure_set_initial(s, 2, u0, v0), FRICREG_OK);
+        ck_assert_int_eq(fricreg_structure_run_ode(s, lu[k], 1.0, 0.0, 0.0, 3.0), FRICREG_EINVAL);
+        assert_handler_intact("fricreg_structure_run_ode, I + h C singular in rounding");
+        fricreg_structure_free(s);
+    }
+    C[0] = C[1] = C[2] = C[3] = 1e3;
+    fricreg_structure *s = NULL;
+    ck_assert_int_eq(fricreg_structure_create(2, 1, &s), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_contacts(s, 1, 2, J), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_damping(s, 2, C), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_initial(s, 2, u0, v0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_RK1IMP, 1e-3, 0.0, 0.0, 0.1),
+                     FRICREG_OK);
+    assert_handler_intact("fricreg_structure_run_ode, rk1imp, C = 1e3");
+    fricreg_structure_free(s);
+}
+END_TEST
+
 static Suite *handler_suite(void)
 {
     Suite *s = suite_create("gsl_handler");
@@ -375,6 +444,8 @@ static Suite *handler_suite(void)
     tcase_add_test(tc, exact_solver);
     tcase_add_test(tc, structures);
     tcase_add_test(tc, structure_redundant_contacts);
+    tcase_add_test(tc, iterating_steppers_without_atol);
+    tcase_add_test(tc, lu_steppers_on_a_stiff_structure);
     suite_add_tcase(s, tc);
     return s;
 }

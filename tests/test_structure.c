@@ -16,6 +16,7 @@
  *  - the ten-storey building (examples/building/) against a fine reference of its own;
  *  - the sparse setters (fricreg_structure_gsl.h) against the dense ones, bit for bit. */
 #include <check.h>
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -995,8 +996,11 @@ START_TEST(every_error_code)
 
     const double neg = -1.0, bad_eps = 0.0;
     ck_assert_int_eq(fricreg_structure_set_bounds(s, 1, &neg), FRICREG_EINVAL);
+    ck_assert_str_eq(fricreg_structure_errmsg(s), "set_bounds: mun[0] = -1 is negative");
     ck_assert_int_eq(fricreg_structure_set_bounds(s, 2, good), FRICREG_ESIZE);
     ck_assert_int_eq(fricreg_structure_set_law(s, 99, 0.01), FRICREG_EINVAL);
+    /* the context's message names the function once (it was "set_law: set_law: ...") */
+    ck_assert_str_eq(fricreg_structure_errmsg(s), "set_law: unknown law 99");
     ck_assert_int_eq(fricreg_structure_set_law(s, FRICREG_LAW_QUINN, bad_eps), FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_structure_set_influence(s, 2, nan2 + 1), FRICREG_ENONFINITE);
     ck_assert_int_eq(fricreg_structure_set_ground_accel(s, 0.0, 0.01, 1, good), FRICREG_EINVAL);
@@ -1201,6 +1205,66 @@ START_TEST(observer_sees_every_step_and_stops_the_run)
 }
 END_TEST
 
+/* Everything a getter shows: t, u, v, a, f, D, the energies and the counters. */
+struct shown {
+    double u[2], v[2], a[2], f[2], D[2], value[8];
+    int64_t stat[5];
+};
+
+static void show(const fricreg_structure *s, size_t n, size_t m, struct shown *w)
+{
+    memset(w, 0, sizeof *w);
+    ok((fricreg_structure *)s, fricreg_structure_get_state(s, n, w->u, w->v, w->a));
+    ok((fricreg_structure *)s, fricreg_structure_get_forces(s, m, w->f));
+    ok((fricreg_structure *)s, fricreg_structure_get_dissipation(s, m, w->D));
+    for (int k = 0; k < 8; k++)
+        w->value[k] = value(s, k);
+    for (int k = 0; k < 5; k++)
+        w->stat[k] = stat(s, k);
+}
+
+/* A refused or failed step shows nothing of what it did (fuzz findings, fuzz_structure):
+ *  - a first step after set_initial computes the acceleration and the forces at t = 0 before
+ *    it is refused: SDOF m = 1, k = 2.385, p = 1.7, u0 = 0.1, mun = 0.3, law (4) eps = 1e-3,
+ *    central difference at dt = 1 (dt lambda = 600 > 0.9: FRICREG_ESTEP). The equilibrium is
+ *    f = -0.3, a = 1.7 - 0.2385 - 0.3 = 1.1615; a and f showed it (and INITIAL the energy at
+ *    t = 0), where the header promises the state of before: a = f = 0;
+ *  - a Newmark step that diverges (k = -1e130, u0 = 1, dt = 1: u1 beyond 1e100) after Newton's
+ *    line search cut its directions: LINE_SEARCH_CUTS counted them. */
+START_TEST(failed_step_changes_nothing)
+{
+    const double k = 2.385, p = 1.7, mun = 0.3, u0 = 0.1, v0 = 0.0;
+    fricreg_structure *s = make(1, 1);
+    ok(s, fricreg_structure_set_stiffness(s, 1, &k));
+    frictionless(s, 1);
+    ok(s, fricreg_structure_set_bounds(s, 1, &mun));
+    ok(s, fricreg_structure_set_load(s, 1, &p, 0.0, 0.0, 0, NULL));
+    ok(s, fricreg_structure_set_initial(s, 1, &u0, &v0));
+    ok(s, fricreg_structure_set_central_difference(s));
+    struct shown before, after;
+    show(s, 1, 1, &before);
+    ck_assert_int_eq(fricreg_structure_step(s, 1.0), FRICREG_ESTEP);
+    show(s, 1, 1, &after);
+    ck_assert_mem_eq(&before, &after, sizeof before);
+    ck_assert_double_eq(after.a[0], 0.0);
+    /* the step that passes computes the same equilibrium */
+    ok(s, fricreg_structure_step(s, 1e-4));
+    ck_assert_double_eq(value(s, FRICREG_SVALUE_INITIAL), 0.5 * k * u0 * u0);
+    fricreg_structure_free(s);
+
+    const double unstable = -1e130, one = 1.0;
+    s = make(1, 1);
+    ok(s, fricreg_structure_set_stiffness(s, 1, &unstable));
+    ok(s, fricreg_structure_set_contacts(s, 1, 1, &one));
+    ok(s, fricreg_structure_set_initial(s, 1, &one, &v0));
+    show(s, 1, 1, &before);
+    ck_assert_int_eq(fricreg_structure_run(s, 1.0, 21.0), FRICREG_EDIVERGED);
+    show(s, 1, 1, &after);
+    ck_assert_mem_eq(&before, &after, sizeof before);
+    fricreg_structure_free(s);
+}
+END_TEST
+
 /* run_ode's adaptive steps are bounded per call (fricreg_structure_set_max_steps, 10^6 by
  * default): Coulomb's law under rkf45 shrinks its steps without end at the first stick, and
  * with the bound at 2000 the call returns FRICREG_EWORK, naming the law's jump, after exactly
@@ -1227,6 +1291,125 @@ START_TEST(run_ode_adaptive_steps_are_bounded)
     ok(s, fricreg_structure_set_initial(s, 2, u0, v0));
     ok(s, fricreg_structure_run_ode(s, FRICREG_INT_RKF45, 1e-3, 1e-6, 1e-8, 0.5));
     ck_assert_int_lt(stat(s, FRICREG_SSTAT_STEPS), 2000);
+    fricreg_structure_free(s);
+}
+END_TEST
+
+/* run_ode's failures (fuzz findings, fuzz_structure):
+ *  - one that fails after accepted steps leaves the state of the last one, but the
+ *    acceleration and forces were those of the run's start: an unstable spring k = -9.7 under
+ *    a load p = 0.23 from u0 = 0.1 (-k u0 + p = 1.2 beyond mun = 0.41: it slides, law (4) with
+ *    eps = 0.05), RK4 at dt = 0.05 diverges (EDIVERGED, u beyond 1e90 near t = 74); at the
+ *    state reached, a = p - k u + f (M = 1, J = 1) must hold, with f = -mun sgn(v);
+ *  - one that fails at its first step (two equal rows of J sticking at rest, k = 3.1:
+ *    ESINGULAR) started the energy balance: INITIAL showed the energy at t = 0, where nothing
+ *    may change. */
+START_TEST(run_ode_failure_state)
+{
+    const double k = -9.7, p = 0.23, mun = 0.41, u0 = 0.1, v0 = 0.0, one = 1.0;
+    fricreg_structure *s = make(1, 1);
+    ok(s, fricreg_structure_set_stiffness(s, 1, &k));
+    ok(s, fricreg_structure_set_contacts(s, 1, 1, &one));
+    ok(s, fricreg_structure_set_bounds(s, 1, &mun));
+    ok(s, fricreg_structure_set_law(s, FRICREG_LAW_QUINN, 0.05));
+    ok(s, fricreg_structure_set_load(s, 1, &p, 0.0, 0.0, 0, NULL));
+    ok(s, fricreg_structure_set_initial(s, 1, &u0, &v0));
+    ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_RK4, 0.05, 0.0, 0.0, 200.0),
+                     FRICREG_EDIVERGED);
+    double u, v, a, f;
+    ok(s, fricreg_structure_get_state(s, 1, &u, &v, &a));
+    ok(s, fricreg_structure_get_forces(s, 1, &f));
+    ck_assert(value(s, FRICREG_SVALUE_TIME) > 1.0 && fabs(u) > 1e90 && fabs(u) <= 1e100);
+    ck_assert(fabs(f) <= mun && f != 0.0);
+    ck_assert_double_eq_tol(a, p - k * u + f, 1e-15 * fabs(k * u));
+    fricreg_structure_free(s);
+
+    const double J[2] = {1.0, 1.0}, kpos = 3.1;
+    s = make(1, 2);
+    ok(s, fricreg_structure_set_stiffness(s, 1, &kpos));
+    ok(s, fricreg_structure_set_contacts(s, 2, 1, J));
+    ok(s, fricreg_structure_set_initial(s, 1, &u0, &v0));
+    struct shown before, after;
+    show(s, 1, 2, &before);
+    ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_RK4, 1e-4, 0.0, 0.0, 0.01),
+                     FRICREG_ESINGULAR);
+    show(s, 1, 2, &after);
+    ck_assert_mem_eq(&before, &after, sizeof before);
+    fricreg_structure_free(s);
+}
+END_TEST
+
+/* J and M of scales too far apart (fuzz finding, fuzz_structure): W = J M^-1 J^T overflowed
+ * (M = 1e-310 beside J = 1) and the step returned FRICREG_ENONFINITE, documented for a dt that
+ * is not finite; W_ii underflowed to 0 (M = 1 beside J = 1e-200): FRICREG_EINVAL naming the
+ * context's argument w[0]. Both are now FRICREG_EINVAL naming the contact and W_ii. */
+START_TEST(coupling_out_of_range)
+{
+    const double tiny = 1e-310, one = 1.0, small = 1e-200;
+    fricreg_structure *s = make(1, 1);
+    ok(s, fricreg_structure_set_mass(s, 1, &tiny));
+    ok(s, fricreg_structure_set_contacts(s, 1, 1, &one));
+    ck_assert_int_eq(fricreg_structure_step(s, 0.01), FRICREG_EINVAL);
+    ck_assert_ptr_nonnull(strstr(fricreg_structure_errmsg(s), "contact 0's W_ii = inf"));
+    ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_RK4, 0.01, 0.0, 0.0, 1.0),
+                     FRICREG_EINVAL);
+    ok(s, fricreg_structure_set_mass(s, 1, &one));
+    ok(s, fricreg_structure_set_contacts(s, 1, 1, &small));
+    ck_assert_int_eq(fricreg_structure_step(s, 0.01), FRICREG_EINVAL);
+    ck_assert_ptr_nonnull(strstr(fricreg_structure_errmsg(s), "below DBL_MIN"));
+    ok(s, fricreg_structure_set_contacts(s, 1, 1, &one));
+    ok(s, fricreg_structure_step(s, 0.01));
+    fricreg_structure_free(s);
+}
+END_TEST
+
+/* A load p = DBL_MAX held at rest by a bound mun = DBL_MAX (fuzz finding, fuzz_structure): the
+ * trapezoid's (f + f1)/2 and (p~ + p~1)/2 overflowed, and 0 * Inf made the dissipation and the
+ * input NaN with FRICREG_OK. Both are 0: nothing moved. */
+START_TEST(extreme_forces_at_rest)
+{
+    const double big = DBL_MAX;
+    fricreg_structure *s = make(1, 1);
+    frictionless(s, 1);
+    ok(s, fricreg_structure_set_bounds(s, 1, &big));
+    ok(s, fricreg_structure_set_load(s, 1, &big, 0.0, 0.0, 0, NULL));
+    ok(s, fricreg_structure_step(s, 0.01));
+    double u, f, D;
+    ok(s, fricreg_structure_get_state(s, 1, &u, NULL, NULL));
+    ok(s, fricreg_structure_get_forces(s, 1, &f));
+    ok(s, fricreg_structure_get_dissipation(s, 1, &D));
+    ck_assert_double_eq(u, 0.0);
+    ck_assert_double_eq(f, -DBL_MAX);
+    ck_assert_double_eq(D, 0.0);
+    ck_assert_double_eq(value(s, FRICREG_SVALUE_INPUT), 0.0);
+    ck_assert_double_eq(value(s, FRICREG_SVALUE_FRICTION), 0.0);
+    fricreg_structure_free(s);
+}
+END_TEST
+
+/* GSL's symmetric eigensolver has no iteration cap: the step guard's L^-1 K L^-T (M = I) of
+ * K = [[3490, 3490, 0], [3490, 3490, -DBL_MAX], [0, -DBL_MAX, 0]] never returned (fuzz finding,
+ * fuzz_structure: run_ode with fixed RK4). The structure's eigen-solves now scale the matrix
+ * by a power of two first and refuse Inf and NaN (fr_eigen_symm, base/eigen.c, as the
+ * contexts' did): omega_max is +Inf and the step is refused (FRICREG_ESTEP), GSL's LU
+ * steppers too (stability unknown: FRICREG_EINVAL), and Newmark steps from rest. set_mass's
+ * check goes the same way: M_01 = 1e300 beside M_00 = M_11 = 1e-300 (D^-1/2 M D^-1/2 infinite)
+ * is FRICREG_ENOTPSD. */
+START_TEST(eigen_solves_of_extreme_models)
+{
+    const double K[9] = {3490.0, 3490.0, 0.0, 3490.0, 3490.0, -DBL_MAX, 0.0, -DBL_MAX, 0.0};
+    const double J[3] = {1.0, 0.0, 0.0}, u0[3] = {0.0, 0.0, 0.0}, v0[3] = {0.0, 0.0, 0.0};
+    fricreg_structure *s = make(3, 1);
+    ok(s, fricreg_structure_set_stiffness(s, 3, K));
+    ok(s, fricreg_structure_set_contacts(s, 1, 3, J));
+    ok(s, fricreg_structure_set_initial(s, 3, u0, v0));
+    ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_RK4, 0.01, 0.0, 0.0, 1.0),
+                     FRICREG_ESTEP);
+    ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_RK4IMP, 0.01, 0.0, 0.0, 1.0),
+                     FRICREG_EINVAL);       /* stability not known: GSL's LU steppers refused */
+    ok(s, fricreg_structure_step(s, 0.01)); /* at rest: K u = 0 */
+    const double M[9] = {1e-300, 1e300, 0.0, 1e300, 1e-300, 0.0, 0.0, 0.0, 1.0};
+    ck_assert_int_eq(fricreg_structure_set_mass(s, 3, M), FRICREG_ENOTPSD);
     fricreg_structure_free(s);
 }
 END_TEST
@@ -1271,6 +1454,11 @@ static Suite *structure_suite(void)
     tcase_add_test(errors, lu_steppers_refuse_an_unstable_structure);
     tcase_add_test(errors, observer_sees_every_step_and_stops_the_run);
     tcase_add_test(errors, run_ode_adaptive_steps_are_bounded);
+    tcase_add_test(errors, failed_step_changes_nothing);
+    tcase_add_test(errors, run_ode_failure_state);
+    tcase_add_test(errors, coupling_out_of_range);
+    tcase_add_test(errors, extreme_forces_at_rest);
+    tcase_add_test(errors, eigen_solves_of_extreme_models);
     suite_add_tcase(suite, errors);
     return suite;
 }

@@ -44,36 +44,45 @@ void fr_eigen_free(struct fr_eigen *e)
  * m DBL_EPSILON^2 max|a|, far below the eigenvalues' own rounding, about m DBL_EPSILON max|a|
  * (Weyl's inequality). No nonzero entry is then below 1e-32, far from the subnormals. Returns the
  * power of two the eigenvalues must be scaled back by. */
-static int normalize(double a[], size_t n)
+static int normalize(gsl_matrix *A)
 {
     double largest = 0.0;
-    for (size_t k = 0; k < n; k++)
-        largest = fmax(largest, fabs(a[k]));
+    for (size_t i = 0; i < A->size1; i++)
+        for (size_t j = 0; j < A->size2; j++)
+            largest = fmax(largest, fabs(gsl_matrix_get(A, i, j)));
     if (largest == 0.0)
         return 0;
     int exponent;
     frexp(largest, &exponent);
     double cut = ldexp(DBL_EPSILON * DBL_EPSILON, exponent);
-    for (size_t k = 0; k < n; k++)
-        a[k] = fabs(a[k]) < cut ? 0.0 : ldexp(a[k], -exponent);
+    for (size_t i = 0; i < A->size1; i++)
+        for (size_t j = 0; j < A->size2; j++) {
+            double a = gsl_matrix_get(A, i, j);
+            gsl_matrix_set(A, i, j, fabs(a) < cut ? 0.0 : ldexp(a, -exponent));
+        }
     return exponent;
+}
+
+int fr_eigen_symm(gsl_matrix *A, gsl_vector *eval, gsl_eigen_symm_workspace *work)
+{
+    /* GSL's QR iteration never ends on a NaN or an Inf entry: refuse them here. */
+    for (size_t i = 0; i < A->size1; i++)
+        for (size_t j = 0; j < A->size2; j++)
+            if (!isfinite(gsl_matrix_get(A, i, j))) {
+                gsl_vector_set_all(eval, NAN); /* callers that read them see no number */
+                return GSL_EDOM;
+            }
+    int exponent = normalize(A);
+    int status = gsl_eigen_symm(A, eval, work);
+    for (size_t i = 0; i < eval->size; i++)
+        gsl_vector_set(eval, i, ldexp(gsl_vector_get(eval, i), exponent));
+    return status;
 }
 
 int fr_eigen_solve(struct fr_eigen *e)
 {
-    /* GSL's QR iteration never ends on a NaN or an Inf entry: refuse them here. */
-    for (size_t k = 0; k < e->m * e->m; k++)
-        if (!isfinite(e->a[k])) {
-            for (size_t i = 0; i < e->m; i++)
-                e->eval[i] = NAN; /* callers that read them see no number */
-            return GSL_EDOM;
-        }
-    int exponent = normalize(e->a, e->m * e->m);
     gsl_matrix_view A = gsl_matrix_view_array(e->a, e->m, e->m);
     gsl_vector_view eval = gsl_vector_view_array(e->eval, e->m);
     gsl_eigen_symm_workspace work = {e->m, e->d, e->sd};
-    int status = gsl_eigen_symm(&A.matrix, &eval.vector, &work);
-    for (size_t i = 0; i < e->m; i++)
-        e->eval[i] = ldexp(e->eval[i], exponent);
-    return status;
+    return fr_eigen_symm(&A.matrix, &eval.vector, &work);
 }

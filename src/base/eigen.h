@@ -11,6 +11,10 @@
 
 #include <stddef.h>
 
+#include <gsl/gsl_eigen.h>
+#include <gsl/gsl_matrix.h>
+#include <gsl/gsl_vector.h>
+
 struct fr_eigen {
     size_t m;
     double *a;    /* [m*m] row-major: the caller fills it; fr_eigen_solve destroys it */
@@ -28,5 +32,12 @@ void fr_eigen_free(struct fr_eigen *e);
  * by GSL's gsl_eigen_symm with GSL's error handler kept out. Returns GSL's status: nonzero
  * only for sizes that do not match, which fr_eigen_alloc rules out. */
 int fr_eigen_solve(struct fr_eigen *e);
+
+/* The same on a caller's GSL objects (A square, eval and work of its order; A destroyed):
+ * gsl_eigen_symm on A scaled by a power of two to a largest entry in [0.5, 1), entries below
+ * DBL_EPSILON^2 of it dropped (eigen.c: GSL's iteration has no cap and can loop among
+ * subnormals, or forever on an Inf or NaN). GSL_EDOM, with every eigenvalue NaN, if an entry is
+ * NaN or infinite; otherwise GSL's status. */
+int fr_eigen_symm(gsl_matrix *A, gsl_vector *eval, gsl_eigen_symm_workspace *work);
 
 #endif

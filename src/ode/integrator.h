@@ -44,6 +44,12 @@ struct fr_integrator {
      * has a positive real part, a stable system: the drivers run these steppers on stable
      * systems only (a structure's K and C positive semidefinite, structure_ode.c). */
     int lu_newton;
+    /* 1 for GSL's steppers that iterate until each component's correction is below the
+     * control's error level atol + rtol |y_i| (rk1imp, rk2imp, rk4imp, msadams, msbdf: they call
+     * gsl_odeiv2_control_errlevel, which reports a level of 0 to GSL's error handler, whose
+     * default aborts): an adaptive run with atol = 0 meets it at the first component that is 0,
+     * as every start from rest is. The drivers refuse such a run (FRICREG_EINVAL). */
+    int atol_required;
 };
 
 /* The table row of an integrator id, or NULL if unknown. */

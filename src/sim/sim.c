@@ -188,6 +188,11 @@ int fricreg_sim_set_integrator(fricreg_sim *sim, int integrator, double dt, doub
     if (rtol < 0.0 || atol < 0.0)
         return fr_fail(sim, FRICREG_EINVAL, "set_integrator: rtol = %g, atol = %g must be >= 0",
                        rtol, atol);
+    if (fr_integrator_find(integrator)->atol_required && rtol > 0.0 && atol == 0.0)
+        return fr_fail(sim, FRICREG_EINVAL,
+                       "set_integrator: %s needs atol > 0: its iteration converges to atol + rtol "
+                       "|y|, which is 0 where a state component is 0 (a start at rest)",
+                       fricreg_integrator_name(integrator));
     if (fr_integrator_find(integrator)->central && (rtol > 0.0 || atol > 0.0))
         return fr_fail(sim, FRICREG_EINVAL,
                        "set_integrator: central differences have no error estimate: fixed "

@@ -41,7 +41,10 @@ void fr_energy_start(fricreg_structure *s)
 }
 
 /* The step from (u, v, p~, f) at t to (u1, v1, p~1, f1); before the state is replaced.
- * Uses s->dx, s->xt and s->mwork as scratch (Newton is done with them). */
+ * Uses s->dx, s->xt and s->mwork as scratch (Newton is done with them). The means of the
+ * loads and forces are x/2 + x1/2, not (x + x1)/2: a load and a friction bound near DBL_MAX
+ * (holding each other, at rest) made the sum overflow and 0 * Inf a NaN dissipation; halving
+ * is exact, so in range the numbers are the same. */
 void fr_energy_step(fricreg_structure *s, const gsl_vector *u1, const gsl_vector *v1,
                     const gsl_vector *ptil1, const gsl_vector *f1)
 {
@@ -50,10 +53,11 @@ void fr_energy_step(fricreg_structure *s, const gsl_vector *u1, const gsl_vector
     gsl_vector_sub(du, s->u);
 
     double w;
-    gsl_vector_memcpy(mid, s->ptil);
-    gsl_vector_add(mid, ptil1);
+    gsl_vector_memcpy(mid, ptil1);
+    gsl_vector_scale(mid, 0.5);
+    gsl_blas_daxpy(0.5, s->ptil, mid);
     gsl_blas_ddot(du, mid, &w);
-    s->energy.input += 0.5 * w;
+    s->energy.input += w;
 
     gsl_vector_memcpy(mid, s->v);
     gsl_vector_add(mid, v1);
@@ -63,8 +67,8 @@ void fr_energy_step(fricreg_structure *s, const gsl_vector *u1, const gsl_vector
 
     gsl_blas_dgemv(CblasNoTrans, 1.0, s->J, du, 0.0, s->mwork); /* dz */
     for (size_t i = 0; i < s->m; i++) {
-        double d = -0.5 * gsl_vector_get(s->mwork, i) *
-                   (gsl_vector_get(s->f, i) + gsl_vector_get(f1, i));
+        double d = -gsl_vector_get(s->mwork, i) *
+                   (0.5 * gsl_vector_get(s->f, i) + 0.5 * gsl_vector_get(f1, i));
         s->energy.per_contact[i] += d;
         s->energy.friction += d;
     }

@@ -7,7 +7,10 @@
 
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_eigen.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_machine.h>
 
+#include "base/eigen.h"
 #include "ctx/ctx_driver.h"
 #include "law/law.h"
 #include "ode/step_guard.h"
@@ -16,14 +19,20 @@
 /* The eigenvalues of L^-1 X L^-T (M = L L^T), X = K or C, in s->A's storage: the omega^2 of
  * M^-1 K, or the decay rates of M^-1 C. Their largest into *max (0 if none is positive); 1 if
  * none is below -STABLE_RTOL times the largest magnitude (X positive semidefinite to
- * rounding: a rigid-body mode of K gives an eigenvalue of order 1e-16 of either sign). */
+ * rounding: a rigid-body mode of K gives an eigenvalue of order 1e-16 of either sign). Where
+ * L^-1 X L^-T overflows (K near DBL_MAX, or a mass far below K's scale), *max is +Inf (no
+ * fixed explicit step is stable) and stability is not known: 0. By fr_eigen_symm, whose
+ * scaling kept GSL's iteration from looping on such a matrix (fuzz finding). */
 #define STABLE_RTOL 1e-10
 static int generalized_eigenvalues(fricreg_structure *s, const gsl_matrix *X, double *max)
 {
     gsl_matrix_memcpy(s->A, X);
     gsl_blas_dtrsm(CblasLeft, CblasLower, CblasNoTrans, CblasNonUnit, 1.0, s->L, s->A);
     gsl_blas_dtrsm(CblasRight, CblasLower, CblasTrans, CblasNonUnit, 1.0, s->L, s->A);
-    gsl_eigen_symm(s->A, s->eigenvalues, s->eigen_work);
+    if (fr_eigen_symm(s->A, s->eigenvalues, s->eigen_work) != GSL_SUCCESS) {
+        *max = INFINITY;
+        return 0;
+    }
     double lo = gsl_vector_min(s->eigenvalues), hi = gsl_vector_max(s->eigenvalues);
     *max = fmax(hi, 0.0);
     return !(lo < -STABLE_RTOL * fmax(fabs(lo), fabs(hi)));
@@ -52,6 +61,16 @@ double fr_structure_omega_max(fricreg_structure *s)
 {
     model_rates(s);
     return s->omega_max;
+}
+
+double fr_structure_newton_rate(fricreg_structure *s)
+{
+    model_rates(s);
+    double slope = 0.0;
+    for (size_t i = 0; i < s->m; i++)
+        slope = fmax(slope, gsl_matrix_get(s->W, i, i) * 2.0 * s->mun[i]);
+    double eps = fmax(fr_ctx_eps(s->ctx), GSL_SQRT_DBL_EPSILON);
+    return s->omega_max + s->damping_max + (double)s->m * slope / eps;
 }
 
 int fr_structure_guard(fricreg_structure *s, const struct fr_integrator *integ, double dt,

@@ -67,28 +67,45 @@ static int beyond_limit(const gsl_vector *x)
     return !(fr_norm_inf(x) <= STATE_LIMIT);
 }
 
-/* One step from s->t to t1 (> s->t). */
+/* One step from s->t to t1 (> s->t). A failed step changes nothing a getter shows: the
+ * equilibrium it computed at t (after set_initial or a setter) is undone, the next step
+ * computes it again, the line search's cuts are not counted, and the balance starts at the
+ * first step that succeeds. */
 static int step_to(fricreg_structure *s, double t1)
 {
     double dt = t1 - s->t;
+    int64_t cuts = s->stats[FRICREG_SSTAT_LINE_SEARCH_CUTS];
     int status = fr_structure_prepare(s);
-    if (status == FRICREG_OK && !s->ready)
-        status = fr_structure_equilibrium(s);
     if (status != FRICREG_OK)
         return status;
+    int equilibrium = !s->ready;
+    if (equilibrium) {
+        gsl_vector_memcpy(s->a_held, s->a);
+        gsl_vector_memcpy(s->f_held, s->f);
+        status = fr_structure_equilibrium(s);
+    }
+    int converged = 1, iters = 0;
+    if (status == FRICREG_OK) {
+        fr_structure_effective_load(s, t1, s->ptil1);
+        if (s->scheme == FR_SCHEME_CENTRAL)
+            status = fr_central_solve(s, dt);
+        else
+            status = fr_newmark_solve(s, dt, &converged, &iters);
+    }
+    if (status == FRICREG_OK && (beyond_limit(s->u1) || beyond_limit(s->v1) || beyond_limit(s->x)))
+        status = fr_fail(s, FRICREG_EDIVERGED, "step: the state at t = %g is beyond 1e100", t1);
+    if (status != FRICREG_OK) {
+        s->stats[FRICREG_SSTAT_LINE_SEARCH_CUTS] = cuts;
+        if (equilibrium) {
+            gsl_vector_memcpy(s->a, s->a_held);
+            gsl_vector_memcpy(s->f, s->f_held);
+            s->ready = 0;
+        }
+        return status;
+    }
+
     if (s->fresh)
         fr_energy_start(s);
-    fr_structure_effective_load(s, t1, s->ptil1);
-    int converged = 1, iters = 0;
-    if (s->scheme == FR_SCHEME_CENTRAL)
-        status = fr_central_solve(s, dt);
-    else
-        status = fr_newmark_solve(s, dt, &converged, &iters);
-    if (status != FRICREG_OK)
-        return status;
-    if (beyond_limit(s->u1) || beyond_limit(s->v1) || beyond_limit(s->x))
-        return fr_fail(s, FRICREG_EDIVERGED, "step: the state at t = %g is beyond 1e100", t1);
-
     fr_energy_step(s, s->u1, s->v1, s->ptil1, s->f1);
     gsl_vector_memcpy(s->u, s->u1);
     gsl_vector_memcpy(s->v, s->v1);

@@ -2,6 +2,7 @@
 /* structure.c — fricreg_structure: life cycle, model setters, getters, and the set-up that
  * turns the model into a fricreg context (M's Cholesky factor, G = J M^-1, W = J M^-1 J^T).
  * The integrator is newmark.c, the energy balance energy.c. */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,6 +11,7 @@
 #include <gsl/gsl_machine.h>
 #include <gsl/gsl_linalg.h>
 
+#include "base/eigen.h"
 #include "base/gsl_mem.h"
 #include "law/law.h"
 #include "structure_internal.h"
@@ -24,13 +26,13 @@ void fricreg_structure_free(fricreg_structure *s)
 {
     if (s == NULL)
         return;
-    void *blocks[] = {s->M,    s->K,     s->C,     s->J,    s->L,          s->G,           s->W,
-                      s->S,    s->GS,    s->A,     s->Fz,   s->Fa,         s->T1,          s->r,
-                      s->p,    s->Mr,    s->u,     s->v,    s->a,          s->ptil,        s->f,
-                      s->x,    s->dx,    s->xt,    s->u1,   s->v1,         s->guess,       s->R,
-                      s->Rt,   s->ptil1, s->hist,  s->up,   s->vp,         s->work,        s->f1,
-                      s->zdot, s->afree, s->mwork, s->perm, s->eigen_work, s->eigenvalues, s->tau,
-                      s->norm};
+    void *blocks[] = {s->M,    s->K,      s->C,     s->J,    s->L,          s->G,           s->W,
+                      s->S,    s->GS,     s->A,     s->Fz,   s->Fa,         s->T1,          s->r,
+                      s->p,    s->Mr,     s->u,     s->v,    s->a,          s->ptil,        s->f,
+                      s->x,    s->dx,     s->xt,    s->u1,   s->v1,         s->guess,       s->R,
+                      s->Rt,   s->ptil1,  s->hist,  s->up,   s->vp,         s->work,        s->f1,
+                      s->zdot, s->afree,  s->mwork, s->perm, s->eigen_work, s->eigenvalues, s->tau,
+                      s->norm, s->a_held, s->f_held};
     for (size_t k = 0; k < sizeof blocks / sizeof *blocks; k++)
         free(blocks[k]); /* gsl_mem.h: one block each */
     fricreg_ctx_free(s->ctx);
@@ -60,14 +62,14 @@ static int allocate(fricreg_structure *s)
     for (size_t k = 0; k < sizeof mm / sizeof *mm; k++)
         if ((*mm[k] = fr_gsl_matrix_new(m, m)) == NULL)
             return 0;
-    gsl_vector **nv[] = {&s->r,     &s->p,    &s->Mr,  &s->u,     &s->v,    &s->a,
-                         &s->ptil,  &s->x,    &s->dx,  &s->xt,    &s->u1,   &s->v1,
-                         &s->guess, &s->R,    &s->Rt,  &s->ptil1, &s->hist, &s->up,
-                         &s->vp,    &s->work, &s->tau, &s->norm};
+    gsl_vector **nv[] = {&s->r,     &s->p,    &s->Mr,  &s->u,     &s->v,     &s->a,
+                         &s->ptil,  &s->x,    &s->dx,  &s->xt,    &s->u1,    &s->v1,
+                         &s->guess, &s->R,    &s->Rt,  &s->ptil1, &s->hist,  &s->up,
+                         &s->vp,    &s->work, &s->tau, &s->norm,  &s->a_held};
     for (size_t k = 0; k < sizeof nv / sizeof *nv; k++)
         if ((*nv[k] = fr_gsl_vector_new(n)) == NULL)
             return 0;
-    gsl_vector **mv[] = {&s->f, &s->f1, &s->zdot, &s->afree, &s->mwork};
+    gsl_vector **mv[] = {&s->f, &s->f1, &s->zdot, &s->afree, &s->mwork, &s->f_held};
     for (size_t k = 0; k < sizeof mv / sizeof *mv; k++)
         if ((*mv[k] = fr_gsl_vector_new(m)) == NULL)
             return 0;
@@ -231,7 +233,9 @@ static int cholesky_safe(fricreg_structure *s, const double M[], double *lambda_
     for (size_t i = 0; i < n; i++)
         for (size_t j = 0; j < n; j++)
             gsl_matrix_set(s->L, i, j, M[i * n + j] / sqrt(M[i * n + i]) / sqrt(M[j * n + j]));
-    gsl_eigen_symm(s->L, s->eigenvalues, s->eigen_work);
+    /* fr_eigen_symm: a scaled entry beyond the doubles (M_ij = 1e300 beside M_ii = 1e-300)
+     * would make GSL's iteration loop; it gives NaN, not positive definite */
+    fr_eigen_symm(s->L, s->eigenvalues, s->eigen_work);
     *lambda_min = gsl_vector_min(s->eigenvalues);
     return *lambda_min > 2.0 * (double)n * (double)(n + 1) * GSL_DBL_EPSILON;
 }
@@ -342,10 +346,11 @@ int fricreg_structure_set_contacts(fricreg_structure *s, size_t m, size_t ndof, 
     return FRICREG_OK;
 }
 
-/* The context's own message, prefixed with the structure's function. */
-static int ctx_failed(fricreg_structure *s, const char *name, int status)
+/* The context's own message: it names the function (set_bounds, set_law), which is the
+ * structure's too. */
+static int ctx_failed(fricreg_structure *s, int status)
 {
-    return fr_fail(s, status, "%s: %s", name, fricreg_ctx_errmsg(s->ctx));
+    return fr_fail(s, status, "%s", fricreg_ctx_errmsg(s->ctx));
 }
 
 int fricreg_structure_set_bounds(fricreg_structure *s, size_t m, const double mun[])
@@ -356,7 +361,7 @@ int fricreg_structure_set_bounds(fricreg_structure *s, size_t m, const double mu
         return fr_structure_busy(s, "set_bounds");
     int status = fricreg_ctx_set_bounds(s->ctx, m, mun);
     if (status != FRICREG_OK)
-        return ctx_failed(s, "set_bounds", status);
+        return ctx_failed(s, status);
     memcpy(s->mun, mun, m * sizeof *mun);
     s->ready = 0; /* W is unchanged: only the equilibrium at t is recomputed */
     return FRICREG_OK;
@@ -370,7 +375,7 @@ int fricreg_structure_set_law(fricreg_structure *s, int law, double eps)
         return fr_structure_busy(s, "set_law");
     int status = fricreg_ctx_set_law(s->ctx, law, eps);
     if (status != FRICREG_OK)
-        return ctx_failed(s, "set_law", status);
+        return ctx_failed(s, status);
     s->ready = 0;
     return FRICREG_OK;
 }
@@ -585,6 +590,21 @@ static int couple(fricreg_structure *s)
             gsl_matrix_set(W, i, j, w);
             gsl_matrix_set(W, j, i, w);
         }
+    /* J and M of scales too far apart: W beyond the double range (M = 1e-310 beside J = 1), or
+     * a W_ii below the normal doubles (J = 1e-200 beside M = 1), which the context refuses
+     * with the code of its own argument (ENONFINITE, EINVAL or ENOTPSD); one code here, named
+     * after the contact. */
+    for (size_t i = 0; i < s->m; i++) {
+        double wii = gsl_matrix_get(W, i, i);
+        int finite = 1;
+        for (size_t j = 0; j < s->m; j++)
+            finite = finite && isfinite(gsl_matrix_get(W, i, j));
+        if (!finite || !(wii >= DBL_MIN))
+            return fr_fail(s, FRICREG_EINVAL,
+                           "W = J M^-1 J^T: contact %zu's W_ii = %g is %s: J and M are of scales "
+                           "too far apart",
+                           i, wii, finite ? "below DBL_MIN" : "beyond the double range");
+    }
     int status;
     if (diagonal(W)) {
         for (size_t i = 0; i < s->m; i++)

@@ -78,8 +78,9 @@ struct fricreg_structure {
     /* State at time t; `ready` when a, f and p~ hold the equation of motion at t. */
     double t;
     gsl_vector *u, *v, *a;
-    gsl_vector *ptil; /* p - M r a_g at t */
-    gsl_vector *f;    /* [m] friction at t */
+    gsl_vector *ptil;            /* p - M r a_g at t */
+    gsl_vector *f;               /* [m] friction at t */
+    gsl_vector *a_held, *f_held; /* a and f before a step's equilibrium, restored if it fails */
     int ready;
     int fresh; /* set_initial since the last step: the balance starts here */
 
@@ -142,6 +143,12 @@ struct fr_integrator;
 double fr_structure_omega_max(fricreg_structure *s);
 /* K and C are positive semidefinite, to rounding (cached with omega_max). */
 int fr_structure_stable(fricreg_structure *s);
+/* A bound of the stiffest rate in the forward-difference Jacobian J of run_ode's first-order
+ * system: omega_max + c_max + m max_i W_ii 2 mun_i / max(eps, sqrt(DBL_EPSILON)), the friction's
+ * steepest slope as a forward difference of step >= sqrt(DBL_EPSILON) |y| sees it (a law's
+ * jump included). GSL's LU-based steppers factor I - h c J: once h times it nears
+ * 1/DBL_EPSILON, the identity is lost to rounding and the factor can be exactly singular. */
+double fr_structure_newton_rate(fricreg_structure *s);
 int fr_structure_guard(fricreg_structure *s, const struct fr_integrator *integ, double dt,
                        const char *who);
 

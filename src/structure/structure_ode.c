@@ -25,6 +25,10 @@
 
 #define MAX_GSL_STEPS 2147483648.0
 #define MAX_HALVINGS 10
+/* The largest step times fr_structure_newton_rate that GSL's LU-based steppers are given:
+ * 1e12, below 1/DBL_EPSILON = 4.5e15 where I - h c J rounds to a singular matrix (C = 1e300
+ * [[1, 1], [1, 1]] at h = 1: 1 + 1e300 = 1e300, and the LU's second pivot is exactly 0). */
+#define NEWTON_RATE_LIMIT 1e12
 
 struct ode_run {
     fricreg_structure *s;
@@ -188,6 +192,12 @@ int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, d
     if (!(t_end > s->t))
         return fr_fail(s, FRICREG_EINVAL, "run_ode: t_end = %g must be after t = %g", t_end, s->t);
     int adaptive = rtol > 0.0 || atol > 0.0;
+    if (adaptive && atol == 0.0 && integ->atol_required)
+        return fr_fail(s, FRICREG_EINVAL,
+                       "run_ode: %s needs atol > 0: its iteration converges to atol + rtol |y|, "
+                       "which is 0 where a state component is 0 (a start at rest, the energies "
+                       "at t = 0)",
+                       integ->name);
     if (!adaptive && (t_end - s->t) / (dt * integ->substeps) > MAX_GSL_STEPS)
         return fr_fail(s, FRICREG_EINVAL, "run_ode: (t_end - t)/dt is too many steps");
 
@@ -198,15 +208,29 @@ int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, d
                        "structure whose K or C is not positive semidefinite (unstable) can make "
                        "singular; take Newmark or HHT, or an explicit stepper",
                        integ->name);
+    /* The largest step GSL may take: dt, or the whole span when adaptive. */
+    double h_max = adaptive ? t_end - s->t : dt * integ->substeps;
+    if (status == FRICREG_OK && integ->lu_newton &&
+        !(h_max * fr_structure_newton_rate(s) <= NEWTON_RATE_LIMIT))
+        return fr_fail(s, FRICREG_EINVAL,
+                       "run_ode: integrator %s solves I - h J by GSL's LU, which rounding can "
+                       "make singular: the step %g times the stiffest rate %g (frequency, "
+                       "damping or friction slope) exceeds 1e12; take a smaller %s, Newmark or "
+                       "HHT, or an explicit stepper",
+                       integ->name, h_max, fr_structure_newton_rate(s),
+                       adaptive ? "t_end - t" : "dt");
     if (status == FRICREG_OK && !adaptive) {
         s->stick_valid = 0; /* law, eps or bounds may have changed since the last step */
         status = fr_structure_guard(s, integ, dt, "run_ode");
     }
     if (status != FRICREG_OK)
         return status;
+    /* The balance starts at t = 0 with the first step accepted (below): a run that fails
+     * before one changes nothing a getter shows. */
+    double initial = fr_energy_kinetic(s) + fr_energy_strain(s), t_start = s->t;
 
-    /* Everything is allocated before the balance starts: a failed allocation leaves the
-     * structure as it was (its initial energy and the balance's start included). */
+    /* Everything is allocated before the run starts: a failed allocation leaves the
+     * structure as it was. */
     struct ode_run run = {.s = s, .dim = 2 * s->n + 2 + s->m, .rhs_status = FRICREG_OK};
     double *y = malloc(run.dim * sizeof *y);
     run.jac_work = malloc(3 * run.dim * sizeof *run.jac_work);
@@ -225,8 +249,6 @@ int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, d
         free(run.jac_work);
         return fr_fail(s, FRICREG_ENOMEM, "run_ode: GSL driver allocation failed");
     }
-    if (s->fresh)
-        fr_energy_start(s);
     memcpy(y, s->u->data, s->n * sizeof *y);
     memcpy(y + s->n, s->v->data, s->n * sizeof *y);
     y[2 * s->n] = s->energy.input;
@@ -239,10 +261,20 @@ int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, d
     gsl_odeiv2_driver_free(d);
     free(y);
     free(run.jac_work);
+    if (s->t == t_start)
+        return status; /* nothing accepted (and a run ends after its start) */
+    if (s->fresh)
+        s->energy.initial = initial;
     s->fresh = 0;
     s->ready = 0; /* the next step takes its acceleration from the equation of motion */
-    if (status == FRICREG_OK) {
-        status = fr_structure_equilibrium(s);
-    }
+    if (status == FRICREG_OK)
+        return fr_structure_equilibrium(s);
+    /* Failed after some steps: the state is the last accepted step's, and so are a and f, the
+     * equation of motion there; where that fails too (redundant contacts sticking, or an
+     * overflow: the cause of the run's failure), they stay those of the run's start. The
+     * run's error stays. */
+    struct fr_error err = s->err;
+    fr_structure_equilibrium(s);
+    s->err = err;
     return status;
 }
