@@ -102,10 +102,12 @@ int fr_disk_block_solve(const struct fr_disk_eig *e, const double g[2], const do
         struct secular q = {e->d1 / dmax, e->d2 / dmax, t1, t2, radius};
         double root = e->d1 == e->d2 ? -1.0 : secular_root(&q, brent);
         if (root < 0.0) { /* isotropic: the Euclidean projection, as fricreg_disk_eval; t/|t|
-                           * first: radius/|t| may underflow */
+                           * first: radius/|t| may underflow. Anisotropic: t lies on the circle
+                           * to rounding, where the multiplier is 0 to first order
+                           * (|y(lam)| ~ |t| (1 - lam/d)): its estimate d (|t|/radius - 1) */
             y1 = radius * (t1 / nt);
             y2 = radius * (t2 / nt);
-            l = e->d1 == e->d2 ? e->d1 * (nt / radius - 1.0) : fmax(e->d1, e->d2) * (nt / radius);
+            l = (e->d1 == e->d2 ? e->d1 : dmax) * (nt / radius - 1.0);
         } else {
             y1 = q.d1 * t1 / (q.d1 + root);
             y2 = q.d2 * t2 / (q.d2 + root);

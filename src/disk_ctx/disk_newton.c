@@ -215,12 +215,14 @@ static int project_trial(fricreg_disk_ctx *ctx, double alpha)
     return clipped;
 }
 
-/* |y|^2 - radius^2 of y = f_i + p_i, 0 within rounding of the circle: a point on its circle
- * before and after a step adds nothing below. */
+/* |y|^2 - radius^2 of y = f_i + p_i, 0 within rounding of the circle (y's own rounding is
+ * that of f_i and p_i, which may be far larger than the radius near the band's edge): a
+ * point on its circle before and after a step adds nothing below. */
 static double off_circle(const double f[2], const double p[2], double R)
 {
     double y0 = f[0] + p[0], y1 = f[1] + p[1], c = (y0 * y0 + y1 * y1) - R * R;
-    return fabs(c) <= 8.0 * DBL_EPSILON * R * R ? 0.0 : c;
+    double size = R + fabs(f[0]) + fabs(f[1]) + fabs(p[0]) + fabs(p[1]);
+    return fabs(c) <= 16.0 * DBL_EPSILON * R * size ? 0.0 : c;
 }
 
 /* The change of the objective q from f to trial, q(trial) - q(f) = grad . d + 1/2 d^T W d
@@ -285,9 +287,24 @@ static int line_search(fricreg_disk_ctx *ctx, int circle)
     return 0;
 }
 
+/* f onto the disks: a warm start (the last evaluation's forces) may lie outside the disks of
+ * new velocities, and the line search compares feasible points. */
+static void project_forces(fricreg_disk_ctx *ctx)
+{
+    struct fr_disk_coupled *cpl = ctx->cpl;
+    memset(cpl->step, 0, 2 * ctx->m * sizeof *cpl->step);
+    project_trial(ctx, 0.0);
+    for (size_t k = 0; k < ctx->n_near; k++) {
+        size_t i = ctx->near[k];
+        ctx->f[2 * i] = cpl->trial[2 * i];
+        ctx->f[2 * i + 1] = cpl->trial[2 * i + 1];
+    }
+}
+
 int fr_disk_newton(fricreg_disk_ctx *ctx, int max_iter, double tol, int *converged)
 {
     *converged = 0;
+    project_forces(ctx);
     for (int it = 0;; it++) {
         int status = near_accelerations(ctx);
         if (status != FRICREG_OK)
