@@ -293,6 +293,18 @@ int fr_disk_factor_holds(const struct fr_disk_factor *F, const signed char kind[
     return 1;
 }
 
+/* CHOLMOD's simplicial solve asks for its buffer Y as 4 x n (cholmod_ensure_dense: up to 4
+ * right-hand sides at a time), then sets Y's shape to the 1 x n it used; the next call finds
+ * the shape changed and frees and allocates Y again. Its shape put back (the struct is
+ * cholmod_core.h's; Y holds 4n doubles), every later solve reuses it and allocates nothing. */
+static void keep_solve_buffer(struct fr_disk_factor *F)
+{
+    cholmod_dense *Y = F->Y;
+    size_t n = 2 * F->m;
+    if (Y != NULL && Y->ncol == n && Y->nrow == 1 && Y->d == 1 && Y->nzmax >= 4 * n)
+        Y->nrow = Y->d = 4;
+}
+
 int fr_disk_factor_solve(struct fr_disk_factor *F, const double rhs[], double x[])
 {
     double *b = F->B->x;
@@ -303,6 +315,7 @@ int fr_disk_factor_solve(struct fr_disk_factor *F, const double rhs[], double x[
     }
     if (!cholmod_l_solve2(CHOLMOD_LDLt, F->L, F->B, NULL, &F->X, NULL, &F->Y, &F->E, &F->c))
         return FRICREG_ENOMEM;
+    keep_solve_buffer(F);
     const double *y = F->X->x;
     for (size_t p = 0; p < F->m; p++) {
         int64_t i = F->order[p];
