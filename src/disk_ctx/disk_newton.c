@@ -7,19 +7,19 @@
  * Each iteration starts with a block pass: every near-stick contact's exact subproblem given
  * the others' forces (disk_block.c, as a sweep but all from one point). How far it moves the
  * forces is the stopping test, the one of the sweeps (converged: no force moves by more than
- * tol times its bound; the pass's forces are then the result), and the contacts whose
- * subproblem ends on its circle are the active set. On that set, Newton's step on the KKT
- * conditions: a free contact moves in the plane, one on its circle along its tangent t_i (the
- * circle's curvature, its multiplier lam_i, in the Hessian) and onto the circle along its
- * normal n_i. The reduced Hessian H = Q^T (W_SS + Lambda) Q is sparse and positive definite,
- * factored by CHOLMOD (disk_factor.c), and kept while the set holds and no contact is on its
- * circle. The step is projected onto the disks and halved until the objective falls as
- * Armijo's rule asks along the projection arc (D. P. Bertsekas, "Projected Newton methods for
- * optimization problems with simple constraints", SIAM J. Control Optim. 20 (1982) 221-246):
- * every iterate is feasible, every accepted step lowers the strictly convex objective, and a
- * step that finds no such point is replaced by a Gauss-Seidel sweep, a descent step too.
- * Once the set is right the step is exact when no contact is on its circle, and converges
- * quadratically when some are. No allocation. */
+ * tol times its bound; the pass's forces are then the result). The active set holds the
+ * contacts on their circles that the gradient pushes outwards (active_set below). On it,
+ * Newton's step on the KKT conditions: a free contact moves in the plane, a held one along
+ * its tangent t_i (the circle's curvature, its multiplier lam_i, in the Hessian) and onto
+ * the circle along its normal n_i. The reduced Hessian H = Q^T (W_SS + Lambda) Q is sparse
+ * and positive definite, factored by CHOLMOD (disk_factor.c), and kept while the set holds
+ * and no contact is held. The step is projected onto the disks and halved until the
+ * objective falls as Armijo's rule asks along the projection arc (D. P. Bertsekas,
+ * "Projected Newton methods for optimization problems with simple constraints", SIAM J.
+ * Control Optim. 20 (1982) 221-246): every iterate is feasible, every accepted step lowers
+ * the strictly convex objective, and a step that finds no such point is replaced by a
+ * Gauss-Seidel sweep, a descent step too. Once the set is right the step is exact when no
+ * contact is held, and converges quadratically when some are. No allocation. */
 #include <float.h>
 #include <math.h>
 #include <string.h>
@@ -28,7 +28,7 @@
 
 #define ARMIJO 1e-4 /* the fraction of the first-order decrease a step must achieve */
 #define HALVINGS 30
-#define NORMAL_FROM_POINT 0.5 /* |f_i + p_i| above this times the radius: n_i along it */
+#define ACTIVE_ZONE 1e-3 /* the largest zone of the active set, relative to the radius */
 
 /* acc_i = g_i + sum over near-stick j != i of W_ij f_j and the gradient
  * grad_i = acc_i + W_ii (f_i + 2 p_i) of every near-stick contact. */
@@ -86,32 +86,34 @@ static void accept_block_pass(fricreg_disk_ctx *ctx)
     }
 }
 
-/* Newton's set from the block pass: each circle contact's normal n_i (along f_i + p_i when
- * that is not far inside, else towards its subproblem's solution) and its known step
- * n_i (radius_i - n_i . (f_i + p_i)) onto the circle, into step; 0 for the others. Returns
- * whether some contact is on its circle. */
-static int active_set(fricreg_disk_ctx *ctx)
+/* Newton's set: a contact is held on its circle when it is there already, within zone times
+ * its radius (the epsilon-active set of Bertsekas's method, zone shrinking with the block
+ * pass's move so that a contact coming to its circle is held before it zigzags along it),
+ * its subproblem's solution is on the circle too, and the gradient pushes it outwards there
+ * (its multiplier -n_i . grad_i/radius_i > 0: on the far side of its circle from its
+ * solution it is pushed inwards, and crosses the disk); every other near-stick contact moves
+ * freely, a step beyond its disk cut back by the projection. A held contact's normal
+ * n_i = (f_i + p_i)/|f_i + p_i| and its known step n_i (radius_i - |f_i + p_i|) onto the
+ * circle go into nrm and step (0 for the others). Returns whether some contact is held. */
+static int active_set(fricreg_disk_ctx *ctx, double zone)
 {
     struct fr_disk_coupled *cpl = ctx->cpl;
     int circle = 0;
     memset(cpl->nkind, FR_DISK_FIXED, ctx->m);
     for (size_t k = 0; k < ctx->n_near; k++) {
         size_t i = ctx->near[k];
-        double *n = cpl->nrm + 2 * i, *s = cpl->step + 2 * i;
+        double *n = cpl->nrm + 2 * i, *s = cpl->step + 2 * i, R = ctx->radius[i];
         const double *f = ctx->f + 2 * i, *p = ctx->p + 2 * i;
+        const double *g = cpl->grad + 2 * i;
+        double y0 = f[0] + p[0], y1 = f[1] + p[1], ny = hypot(y0, y1);
+        int held = cpl->onl[i] && R - ny <= zone * R && g[0] * y0 + g[1] * y1 < 0.0;
         s[0] = s[1] = 0.0;
-        cpl->nkind[i] = cpl->onl[i] ? FR_DISK_CIRCLE : FR_DISK_FREE;
-        if (!cpl->onl[i])
+        cpl->nkind[i] = held ? FR_DISK_CIRCLE : FR_DISK_FREE;
+        if (!held)
             continue;
         circle = 1;
-        double y0 = f[0] + p[0], y1 = f[1] + p[1], ny = hypot(y0, y1);
-        if (!(ny >= NORMAL_FROM_POINT * ctx->radius[i])) {
-            y0 = cpl->fl[2 * i] + p[0], y1 = cpl->fl[2 * i + 1] + p[1];
-            ny = hypot(y0, y1);
-        }
         n[0] = y0 / ny, n[1] = y1 / ny;
-        double a = ctx->radius[i] - (n[0] * (f[0] + p[0]) + n[1] * (f[1] + p[1]));
-        s[0] = a * n[0], s[1] = a * n[1];
+        s[0] = (R - ny) * n[0], s[1] = (R - ny) * n[1];
     }
     return circle;
 }
@@ -165,10 +167,10 @@ static void reduced_rhs(fricreg_disk_ctx *ctx, int circle)
 /* Newton's step into step: the reduced system solved, back in the plane. Returns -1 if the
  * reduced Hessian is singular on the set (the caller sweeps instead), else whether some
  * contact is on its circle. */
-static int newton_direction(fricreg_disk_ctx *ctx)
+static int newton_direction(fricreg_disk_ctx *ctx, double moved)
 {
     struct fr_disk_coupled *cpl = ctx->cpl;
-    int circle = active_set(ctx);
+    int circle = active_set(ctx, fmin(ACTIVE_ZONE, moved));
     size_t pivot;
     if (!fr_disk_factor_holds(&cpl->F, cpl->nkind) &&
         fr_disk_factor_build(&cpl->F, &cpl->w, cpl->nkind, cpl->nrm, cpl->laml, &pivot) !=
@@ -309,17 +311,18 @@ int fr_disk_newton(fricreg_disk_ctx *ctx, int max_iter, double tol, int *converg
         int status = near_accelerations(ctx);
         if (status != FRICREG_OK)
             return status;
-        if (block_pass(ctx) <= tol) {
+        double moved = block_pass(ctx);
+        if (moved <= tol) {
             accept_block_pass(ctx);
             *converged = 1;
             return FRICREG_OK;
         }
         if (it == max_iter)
             return FRICREG_OK;
-        int circle = newton_direction(ctx);
+        int circle = newton_direction(ctx, moved);
         if (circle >= 0 && line_search(ctx, circle))
             continue;
-        double moved; /* no descent found: a sweep, which always descends */
+        /* no descent found: a sweep, which always descends */
         if ((status = fr_disk_sweep(ctx, &moved)) != FRICREG_OK)
             return status;
     }

@@ -76,6 +76,22 @@ static int sweep_until(fricreg_disk_ctx *ctx, int sweeps, int *converged)
     return FRICREG_OK;
 }
 
+/* The near-stick contacts' starting forces into the coupled W's scratch (save), or back
+ * (restore): Newton starts where the sweeps did. Sweeps far from converging leave contacts on
+ * their circles that the solution has inside (each sweep's subproblems see the others'
+ * unconverged forces), and Newton would hold them there at first; the warm start, the last
+ * solution, holds the right ones. */
+static void keep_start(fricreg_disk_ctx *ctx, int save)
+{
+    double *kept = ctx->cpl->fl; /* Newton's, unused by the sweeps */
+    for (size_t k = 0; k < ctx->n_near; k++) {
+        size_t i = ctx->near[k];
+        double *from = save ? ctx->f : kept, *to = save ? kept : ctx->f;
+        to[2 * i] = from[2 * i];
+        to[2 * i + 1] = from[2 * i + 1];
+    }
+}
+
 /* The near-stick QP of a coupled W. Block Gauss-Seidel first, which ends in a few sweeps on
  * weakly coupled contacts (and gives there the numbers it always gave); else the projected
  * Newton method on the reduced Hessian's sparse factor (disk_newton.c), with which the next
@@ -87,11 +103,13 @@ static int solve_coupled(fricreg_disk_ctx *ctx, int warm)
     struct fr_disk_coupled *cpl = ctx->cpl;
     int converged = 0, status = add_fixed_share(ctx);
     if (status == FRICREG_OK && !(warm && cpl->newton_last)) {
+        keep_start(ctx, 1);
         status = sweep_until(ctx, GS_FIRST, &converged);
         if (status != FRICREG_OK || converged) {
             cpl->newton_last = 0;
             return status;
         }
+        keep_start(ctx, 0);
     }
     if (status == FRICREG_OK)
         status = fr_disk_newton(ctx, NEWTON_MAX_ITER, GS_TOL, &converged);
