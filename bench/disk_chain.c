@@ -9,8 +9,9 @@
  * problem and its forces' x components are the 1-D forces (the program prints the largest
  * difference). Two cases: "stuck", every target force inside its bound (a_free = -W1 f*),
  * and "saturating", a tenth of them beyond (those contacts on their bounds, the others'
- * forces moved). Each timing is a walk of the load, WALK states of a_free evaluated forwards
- * then backwards from a warm start, what an integrator's steps ask of a context.
+ * forces moved). Each timing is a walk of the load, WALK states (the targets moved by up to
+ * 0.2 % of the bounds each) evaluated forwards then backwards from a warm start, what an
+ * integrator's steps ask of a context.
  *
  * The 1-D contexts are a table (one_d below): the dense W1 (fricreg_ctx_set_coupling_dense)
  * up to m = 3000, its O(m^2) memory and O(m^3) set-up being the limit; a 1-D context with a
@@ -78,21 +79,27 @@ static void chain_rows(struct chain *c)
     c->ptr[2 * c->m] = e;
 }
 
-/* a_free = -W1 f* for targets f* (a share `beyond` past their bounds), then the walk: each
- * state moves every a_free,i by up to 0.2 % of its bound's acceleration. */
+/* The walk of the load: targets f* (a share `beyond` past their bounds, by 20 to 50 %), each
+ * state's moved by up to 0.2 % of the bounds, and a_free = -W1 f*. The load moves through the
+ * forces, not through a_free: W1's lowest mode would turn a random change of a_free into
+ * forces cond(W1) times larger, no longer a stuck chain. */
 static void chain_load(struct chain *c, double beyond)
 {
     size_t m = c->m;
     double *target = c->f1;
-    for (size_t i = 0; i < m; i++)
-        target[i] = uniform(-0.9, 0.9) * c->mun[i] * (uniform(0.0, 1.0) < beyond ? 1.6 : 1.0);
-    for (size_t i = 0; i < m; i++)
-        c->walk1[i] = -CHAIN_W * (2.0 * target[i] - (i > 0 ? target[i - 1] : 0.0) -
-                                  (i + 1 < m ? target[i + 1] : 0.0));
-    for (int k = 1; k < WALK; k++)
+    for (size_t i = 0; i < m; i++) {
+        int past = uniform(0.0, 1.0) < beyond;
+        double sign = uniform(0.0, 1.0) < 0.5 ? -1.0 : 1.0;
+        target[i] = (past ? sign * uniform(1.2, 1.5) : uniform(-0.9, 0.9)) * c->mun[i];
+    }
+    for (int k = 0; k < WALK; k++) {
+        double *a = c->walk1 + (size_t)k * m;
+        for (size_t i = 0; k > 0 && i < m; i++)
+            target[i] += 0.002 * c->mun[i] * uniform(-1.0, 1.0);
         for (size_t i = 0; i < m; i++)
-            c->walk1[k * m + i] = c->walk1[(k - 1) * m + i] +
-                                  0.002 * CHAIN_W * c->mun[i] * uniform(-1.0, 1.0);
+            a[i] = -CHAIN_W * (2.0 * target[i] - (i > 0 ? target[i - 1] : 0.0) -
+                               (i + 1 < m ? target[i + 1] : 0.0));
+    }
     for (size_t k = 0; k < (size_t)WALK * m; k++)
         c->walk2[2 * k] = c->walk1[k], c->walk2[2 * k + 1] = 0.0;
 }

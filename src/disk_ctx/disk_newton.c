@@ -105,7 +105,7 @@ static int active_set(fricreg_disk_ctx *ctx, double zone)
         double *n = cpl->nrm + 2 * i, *s = cpl->step + 2 * i, R = ctx->radius[i];
         const double *f = ctx->f + 2 * i, *p = ctx->p + 2 * i;
         const double *g = cpl->grad + 2 * i;
-        double y0 = f[0] + p[0], y1 = f[1] + p[1], ny = hypot(y0, y1);
+        double y0 = f[0] + p[0], y1 = f[1] + p[1], ny = cpl->onl[i] ? hypot(y0, y1) : 0.0;
         int held = cpl->onl[i] && R - ny <= zone * R && g[0] * y0 + g[1] * y1 < 0.0;
         s[0] = s[1] = 0.0;
         cpl->nkind[i] = held ? FR_DISK_CIRCLE : FR_DISK_FREE;
