@@ -143,6 +143,7 @@ pivot() { # CSV HEADER_CELL PROBLEM_HEADER_SUFFIXES AWK_CELL_EXPRESSION
     awk -F, 'NR > 1 { printf "| %s | `%s` | %s | %.2f |\n", $1, $2, $3, $4 }' "$dir/laws.csv"
     verbatim "The kernels against the minimal loop and the triad bandwidth" kernels.txt
     verbatim "Dense W, m = 500: a changing near-stick set against an unchanged one" dense.txt
+    verbatim "The 2-D context on stuck chains, beside the 1-D context" disk_chain.txt
     sh "$(dirname "$0")/results_problems.sh" "$dir" # if fricreg-bench-problems ran
 } >"$out"
 echo "results page: $out"

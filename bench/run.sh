@@ -38,6 +38,9 @@ echo
 ./build-bench/bench/fricreg-bench-dense "$out" | tee "$out/dense.txt"
 echo
 ./build-bench/bench/fricreg-bench-sparse "$out" | tee "$out/sparse.txt"
+# The 2-D context on stuck chains of 10^2 ... 10^5 contacts (10^6 with FRICREG_BENCH_BIG=1),
+# beside the 1-D context on the same data.
+./build-bench/bench/fricreg-bench-disk-chain "$out" | tee "$out/disk_chain.txt"
 echo
 # The problems beyond the paper: the hold, the Stribeck belt and the 2-D oscillator (the last
 # two need the CVODE references).

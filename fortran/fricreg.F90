@@ -145,6 +145,9 @@ module fricreg
     procedure :: set_stribeck => dctx_set_stribeck
     procedure :: set_coupling_blocks => dctx_set_coupling_blocks
     procedure :: set_coupling_dense => dctx_set_coupling_dense
+    procedure :: set_coupling_csr => dctx_set_coupling_csr
+    procedure :: set_coupling_csc => dctx_set_coupling_csc
+    procedure, private :: check_compressed
     procedure :: eval => dctx_eval
     procedure :: tangent => dctx_tangent
     final :: dctx_final
@@ -1024,6 +1027,65 @@ contains
     if (status == FRICREG_OK) &
       status = self%record(fricreg_disk_ctx_set_coupling_dense(self%ptr, m, W))
   end function dctx_set_coupling_dense
+
+  !> Sparse W of order 2m (C's fricreg_disk_ctx_set_coupling_csr): flags (FRICREG_SPARSE_*:
+  !> FRICREG_SPARSE_ONE_BASED for Fortran's indices, a triangle), rowptr(2m + 1), colind and
+  !> values (at least nnz = rowptr(2m + 1) - base each), indices integer(c_int64_t).
+  !> FRICREG_ESIZE unless rowptr is 2m + 1 long and colind and values hold nnz; then C's
+  !> statuses (FRICREG_EINVAL, FRICREG_ENONFINITE, FRICREG_ENOTSYM, FRICREG_ENOTPSD, ...).
+  function dctx_set_coupling_csr(self, flags, rowptr, colind, values) result(status)
+    class(fricreg_disk_context), intent(inout) :: self
+    integer(c_int), intent(in) :: flags
+    integer(c_int64_t), intent(in), contiguous :: rowptr(:), colind(:)
+    real(c_double), intent(in), contiguous :: values(:)
+    integer(c_int) :: status
+    integer(c_size_t) :: m
+    m = fricreg_disk_ctx_size(self%ptr)
+    status = self%check_compressed('set_coupling_csr', 'rowptr', 'colind', flags, rowptr, &
+                                   size(colind), size(values))
+    if (status == FRICREG_OK) status = self%record(fricreg_disk_ctx_set_coupling_csr( &
+                                                   self%ptr, m, flags, rowptr, colind, values))
+  end function dctx_set_coupling_csr
+
+  !> Sparse W by compressed columns (C's fricreg_disk_ctx_set_coupling_csc): as
+  !> set_coupling_csr with colptr(2m + 1) and rowind.
+  function dctx_set_coupling_csc(self, flags, colptr, rowind, values) result(status)
+    class(fricreg_disk_context), intent(inout) :: self
+    integer(c_int), intent(in) :: flags
+    integer(c_int64_t), intent(in), contiguous :: colptr(:), rowind(:)
+    real(c_double), intent(in), contiguous :: values(:)
+    integer(c_int) :: status
+    integer(c_size_t) :: m
+    m = fricreg_disk_ctx_size(self%ptr)
+    status = self%check_compressed('set_coupling_csc', 'colptr', 'rowind', flags, colptr, &
+                                   size(rowind), size(values))
+    if (status == FRICREG_OK) status = self%record(fricreg_disk_ctx_set_coupling_csc( &
+                                                   self%ptr, m, flags, colptr, rowind, values))
+  end function dctx_set_coupling_csc
+
+  !> The Fortran side's checks of a compressed W: a created context, ptr(2m + 1), and index and
+  !> value arrays that hold the nnz entries ptr says (C reads that many; a ptr that C refuses
+  !> is left to C).
+  function check_compressed(self, what, ptr_name, ind_name, flags, ptr, nind, nval) result(status)
+    class(fricreg_disk_context), intent(inout) :: self
+    character(len=*), intent(in) :: what, ptr_name, ind_name
+    integer(c_int), intent(in) :: flags
+    integer(c_int64_t), intent(in) :: ptr(:)
+    integer, intent(in) :: nind, nval
+    integer(c_int) :: status
+    integer(c_int64_t) :: nnz
+    character(len=96) :: buf
+    status = self%ready(what, 'context')
+    if (status == FRICREG_OK) &
+      status = self%check_size(what, ptr_name, size(ptr), 2 * fricreg_disk_ctx_size(self%ptr) + 1)
+    if (status /= FRICREG_OK) return
+    nnz = ptr(size(ptr)) - merge(1_c_int64_t, 0_c_int64_t, iand(flags, FRICREG_SPARSE_ONE_BASED) /= 0)
+    if (nnz > int(min(nind, nval), c_int64_t)) then
+      write (buf, '(a, i0, a, i0, a, i0)') ': ', nnz, ' entries, size(' // ind_name // ') = ', &
+        nind, ', size(values) = ', nval
+      status = self%fail(FRICREG_ESIZE, what // trim(buf))
+    end if
+  end function check_compressed
 
   !> Friction forces f(2, m) from zdot(2, m) and a_free(2, m) (C's fricreg_disk_ctx_eval).
   !> f is written only on success. FRICREG_ESIZE unless each is (2, m); FRICREG_ENONFINITE;

@@ -422,6 +422,36 @@ subroutine frdcpd(h, m, w, stat)
   stat = int(fricreg_disk_ctx_set_coupling_dense(fricreg_handle_to_ptr(h), int(m, c_size_t), w))
 end subroutine frdcpd
 
+!> FRDCSR(H, M, FLAGS, ROWPTR, COLIND, VALUES, STAT): sparse symmetric coupling of order 2M by
+!> compressed rows, ROWPTR(2M + 1) and COLIND(NNZ) INTEGER*8 (integer(c_int64_t)), VALUES(NNZ),
+!> FLAGS the FRICREG_SPARSE_* constants (FRICREG_SPARSE_ONE_BASED for Fortran's indices)
+!> (fricreg_disk_ctx_set_coupling_csr).
+subroutine frdcsr(h, m, flags, rowptr, colind, values, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m, flags
+  integer(c_int64_t), intent(in) :: rowptr(*), colind(*)
+  double precision, intent(in) :: values(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_disk_ctx_set_coupling_csr(fricreg_handle_to_ptr(h), int(m, c_size_t), &
+                                               int(flags, c_int), rowptr, colind, values))
+end subroutine frdcsr
+
+!> FRDCSC(H, M, FLAGS, COLPTR, ROWIND, VALUES, STAT): the same by compressed columns
+!> (fricreg_disk_ctx_set_coupling_csc).
+subroutine frdcsc(h, m, flags, colptr, rowind, values, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m, flags
+  integer(c_int64_t), intent(in) :: colptr(*), rowind(*)
+  double precision, intent(in) :: values(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_disk_ctx_set_coupling_csc(fricreg_handle_to_ptr(h), int(m, c_size_t), &
+                                               int(flags, c_int), colptr, rowind, values))
+end subroutine frdcsc
+
 !> FRDEVL(H, M, ZDOT, AFREE, F, STAT): friction forces F(2, M) from velocities ZDOT(2, M) and
 !> free accelerations AFREE(2, M), column I contact I (fricreg_disk_ctx_eval).
 subroutine frdevl(h, m, zdot, afree, f, stat)

@@ -29,7 +29,8 @@
  * one context per thread) and fricreg_disk.h's layout: a vector is two doubles, arrays of m
  * vectors are interleaved (contact i at [2i], [2i+1]; in Fortran a (2, m) array), and a 2m x 2m
  * matrix is row-major with contact i's components at rows and columns 2i, 2i+1. Numbers must be
- * finite and at most 1e250 in magnitude. Since 1.3 (FRICREG_1.3).
+ * finite and at most 1e250 in magnitude. Since 1.3 (FRICREG_1.3); W as a sparse matrix
+ * (fricreg_disk_ctx_set_coupling_csr, _csc) since 1.6.
  */
 #ifndef FRICREG_DISK_CTX_H
 #define FRICREG_DISK_CTX_H
@@ -111,13 +112,64 @@ FRICREG_API int fricreg_disk_ctx_set_coupling_blocks(fricreg_disk_ctx *ctx, size
  *  as for fricreg_disk_ctx_set_coupling_blocks, or W not positive semidefinite: the smallest
  *  eigenvalue of D^-1/2 W D^-1/2 (D = diag W; GSL's gsl_eigen_symm, O(m^3) once here) below
  *  -2m 1e-12 (FRICREG_ENOTPSD). A singular W (redundant contacts) is accepted here; an
- *  evaluation that meets it may return FRICREG_ESINGULAR.
+ *  evaluation that meets it may return FRICREG_ESINGULAR. The context also holds W by its
+ *  non-zero 2x2 blocks and the storage of their sparse factor (eval's Newton method), set up
+ *  here: memory O(m^2) in all, as W's copy.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE (also if (2m)^2 overflows);
  *  FRICREG_ENONFINITE; FRICREG_EINVAL (an entry beyond 1e250 in magnitude); FRICREG_ENOTSYM;
  *  FRICREG_ENOTPSD; FRICREG_ENOMEM. */
 FRICREG_API int fricreg_disk_ctx_set_coupling_dense(fricreg_disk_ctx *ctx, size_t m,
                                                     const double W[]);
+
+/** Coupled contacts, sparse: the Delassus matrix W of order 2m in compressed sparse rows, in
+ *  the layout of fricreg_disk_ctx_set_coupling_dense (row and column 2i+a are contact i's
+ *  component a; the 2x2 block W_ij couples contacts i and j), as enum fricreg_sparse_flags
+ *  describes (fricreg.h): zero- or one-based, W whole or one triangle (diagonal included),
+ *  duplicates summed, entries of a row in any order. Read and copied; the caller keeps its
+ *  arrays. Memory: O(entries of W + entries of its sparse factor), no (2m)^2 array; evaluation
+ *  allocates nothing (fricreg_disk_ctx_eval).
+ *
+ *  m       number of contacts, equal to the context's.
+ *  flags   enum fricreg_sparse_flags, combined with |.
+ *  rowptr  in: rowptr[2m + 1], rowptr[0] = base (0, or 1 with FRICREG_SPARSE_ONE_BASED),
+ *          non-decreasing; nnz = rowptr[2m] - base. Fortran: integer(c_int64_t).
+ *  colind  in: colind[nnz], the column (base-based, < 2m + base) of each entry of row r at
+ *          rowptr[r] - base ... rowptr[r+1] - base - 1. May be NULL when nnz = 0.
+ *  values  in: values[nnz], the entries (inverse mass units), finite, at most 1e250 in
+ *          magnitude, each and summed with its duplicates.
+ *
+ *  Refused as by the dense setter: W not symmetric, judged by src/base/matrix_input.c's rule
+ *  (given whole, entries (k, l) and (l, k) differing by more than 1e-12 sqrt(r_k r_l), r_k the
+ *  largest magnitude in row k: a change of a contact's units does not change the verdict;
+ *  FRICREG_ENOTSYM); a diagonal block W_ii not positive definite (as
+ *  fricreg_disk_ctx_set_coupling_blocks; also a contact with no diagonal entry) or an entry
+ *  with W_kl^2 > W_kk W_ll (FRICREG_ENOTPSD); W not positive semidefinite: the smallest
+ *  eigenvalue of D^-1/2 W D^-1/2 (D = diag W) below -2m 1e-12, found here by CHOLMOD's sparse
+ *  LDL^T of D^-1/2 W D^-1/2 + 2m 1e-12 I, which has a pivot <= 0 exactly then (FRICREG_ENOTPSD;
+ *  cost that of one sparse factorization, not the dense setter's O(m^3)). A singular W is
+ *  accepted, as by the dense setter. Nothing is changed on failure.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL (ctx, rowptr, or colind or values while nnz > 0);
+ *  FRICREG_ESIZE if m differs from the context's; FRICREG_EINVAL (unknown flags, both
+ *  triangles, rowptr[0] not the base or rowptr decreasing, an index out of range, an entry in
+ *  the triangle left out, a value beyond 1e250); FRICREG_ENONFINITE; FRICREG_ENOTSYM;
+ *  FRICREG_ENOTPSD; FRICREG_ENOMEM. Since 1.6 (FRICREG_1.6). */
+FRICREG_API int fricreg_disk_ctx_set_coupling_csr(fricreg_disk_ctx *ctx, size_t m, int flags,
+                                                  const int64_t rowptr[], const int64_t colind[],
+                                                  const double values[]);
+
+/** Coupled contacts, sparse, in compressed sparse columns: as
+ *  fricreg_disk_ctx_set_coupling_csr with rows and columns swapped, colptr[2m + 1] and
+ *  rowind[nnz] (integer(c_int64_t) in Fortran) the column pointers and row indices. W being
+ *  symmetric, its CSC arrays are its CSR arrays, but for the triangle flag: a CSR upper
+ *  triangle is a CSC lower one. Checks, errors and cost as fricreg_disk_ctx_set_coupling_csr.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_EINVAL; FRICREG_ENONFINITE;
+ *  FRICREG_ENOTSYM; FRICREG_ENOTPSD; FRICREG_ENOMEM. Since 1.6 (FRICREG_1.6). */
+FRICREG_API int fricreg_disk_ctx_set_coupling_csc(fricreg_disk_ctx *ctx, size_t m, int flags,
+                                                  const int64_t colptr[], const int64_t rowind[],
+                                                  const double values[]);
 
 /** Evaluate the friction forces of all m contacts (the law above).
  *
@@ -131,20 +183,36 @@ FRICREG_API int fricreg_disk_ctx_set_coupling_dense(fricreg_disk_ctx *ctx, size_
  *  inside K_i by the 2x2 solve, else on its circle, in W_ii's eigenbasis, by the secular
  *  equation |y(lambda)| = radius, which is decreasing in lambda on a bracket [0, 2 d_max |t| /
  *  radius] where it changes sign, solved by GSL's gsl_root_fsolver_brent to the last bits.
- *  A block diagonal W needs one such solve per contact. A dense W is solved by block
- *  Gauss-Seidel over the near-stick contacts (a descent method on the strictly convex QP),
- *  warm-started from the last successful evaluation; after sweeps 8, 16, 32, ... Newton's
- *  method on the KKT conditions of the sweep's active set (GSL's Householder QR; up to 200
- *  near-stick contacts) polishes the iterate, kept only if its multipliers are >= 0, its free contacts inside their disks and a
- *  sweep from it moves nothing. Converged when a sweep moves no force by more than
- *  1e-14 mun_i: then the forces are the QP's solution to about cond(W_SS) DBL_EPSILON mun
- *  (measured: 5e-16 on well-conditioned W, 7e-13 on W = B B^T/12 + 1e-5 I, m = 6); at
- *  most 20000 sweeps.
- *  No heap allocation.
+ *  A block diagonal W needs one such solve per contact. A coupled W (dense or sparse setter)
+ *  is solved from the last successful evaluation's forces (warm start) by two methods:
+ *   - block Gauss-Seidel over the near-stick contacts (each sweep solves every subproblem
+ *     given the others' latest forces: a descent method on the strictly convex QP), up to 8
+ *     sweeps, which settle weakly coupled contacts;
+ *   - else the projected Newton method (D. P. Bertsekas, SIAM J. Control Optim. 20 (1982)):
+ *     contacts on their circles that the gradient pushes outwards are held there (moving
+ *     along the circle, its curvature in the Hessian), the others move freely; the reduced
+ *     Hessian Q^T (W_SS + diag(lambda_i)) Q (Q each contact's frame, normal and tangent on its
+ *     circle) keeps W's pattern of 2x2 blocks and is factored by CHOLMOD's sparse LDL^T in a
+ *     fill-reducing order of the contacts chosen at set-up; the step is projected onto the
+ *     disks and shortened by Armijo's rule, so every accepted step lowers the objective, and a
+ *     step that cannot is replaced by a sweep. With no contact on its circle the factor is
+ *     kept from one evaluation to the next while the near-stick set holds, and a step is one
+ *     solve. Once Newton was needed, the next evaluation starts with it.
+ *  Converged when a pass of exact subproblems (the sweeps' test) moves no force by more than
+ *  1e-14 mun_i; the forces are that pass's, the QP's solution to about cond(W_SS)
+ *  DBL_EPSILON mun (measured: 5e-16 on well-conditioned W, 7e-13 on W = B B^T/12 + 1e-5 I,
+ *  m = 6; a stuck chain of 10^4 contacts, cond 4e7, to 3e-11). Cost per Newton step: one
+ *  sparse factorization (none while the set holds with no contact on its circle) and solve,
+ *  O(entries of the factor), and two passes over W's blocks: O(m) on a chain; a warm-started
+ *  stuck chain takes one step (docs/laws2d.md has the measured cost). Should neither
+ *  converge (W singular on the near-stick set), sweeps go on to 20000, with 10 Newton
+ *  steps after sweeps 16, 32, 64, ...
+ *  No heap allocation: CHOLMOD's factor, its workspace and its solve's buffers are allocated
+ *  by the coupling setters.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE (NaN/Inf input, or an
  *  f_eq beyond the double range); FRICREG_EINVAL (an input beyond 1e250 in magnitude);
- *  FRICREG_ESINGULAR if the Gauss-Seidel sweeps reach their limit: W restricted to the
+ *  FRICREG_ESINGULAR if neither method converges within those limits: W restricted to the
  *  near-stick contacts is singular or so badly conditioned that the forces are not
  *  determined to that tolerance. */
 FRICREG_API int fricreg_disk_ctx_eval(fricreg_disk_ctx *ctx, size_t m, const double zdot[],
@@ -164,19 +232,25 @@ FRICREG_API int fricreg_disk_ctx_eval(fricreg_disk_ctx *ctx, size_t m, const dou
  *  circle of K_i, stationarity with its multiplier and the circle |f_i + a_i u_i| = mun_i - a_i;
  *  sliding contacts contribute d(-mun v/|v|)/dv = -(mun/|v|)(I - u u^T) (0 for mun = 0), and
  *  no a_free dependence. The linear system (order 2|S| + |circle|, dense W; per contact for
- *  blocks) is solved by GSL's Householder QR. Exact where the force is differentiable. Kinks
+ *  blocks) is solved by GSL's Householder QR. With a sparse W (fricreg_disk_ctx_set_coupling_csr,
+ *  _csc) the same conditions are taken in each contact's frame, where the circle's multiplier
+ *  drops out: the matrix is the reduced Hessian of eval's Newton method, factored once by
+ *  CHOLMOD's sparse LDL^T (singular: a pivot d_k not above 1e-12 of its diagonal entry), then
+ *  one sparse solve per column of each output asked for, 2m each: time O(m (entries of the
+ *  factor + m)), O(m^2) on a chain, plus the (2m)^2 entries of each output, the caller's
+ *  memory; no (2m)^2 memory of the context's. Exact where the force is differentiable. Kinks
  *  follow fixed rules: a contact exactly on its circle (multiplier 0) is held on it; at
  *  zdot_i = 0 the circle's radius mun - mun|v|/eps has no derivative, and the one taken is that
  *  along the direction the contact will slide, -f_i/|f_i| (the radius then does not move to
  *  first order); at |zdot_i| = eps the contact slides, as eval decides. A failed evaluation
  *  since (FRICREG_ESINGULAR, FRICREG_ENONFINITE) does not change it: its state is rebuilt from
- *  the last successful evaluation's inputs, warm-started at its forces (one sweep, no
+ *  the last successful evaluation's inputs, warm-started at its forces (one pass, no
  *  allocation).
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if ctx is NULL or both outputs are NULL; FRICREG_ESIZE;
  *  FRICREG_EINVAL if no evaluation succeeded since creation or the last setter call;
  *  FRICREG_ESINGULAR if the KKT matrix is singular (a pivot of its R factor below 1e-13 times
- *  the largest: redundant contacts); FRICREG_ENONFINITE if an entry overflows (mun/eps or
+ *  the largest; sparse W: of its LDL^T factor as above: redundant contacts); FRICREG_ENONFINITE if an entry overflows (mun/eps or
  *  mun/|zdot| beyond or near the double range, or W^-1: when a slope, a multiplier, an entry
  *  of W or the inverse of a diagonal block's eigenvalue exceeds 1e100, the columns are solved
  *  once without writing to check, before anything is written). */

@@ -314,6 +314,23 @@ static int w_dctx_set_dense(void)
 {
     return fricreg_disk_ctx_set_coupling_dense(DCTX(), Z(0, 1), A(1, W2B, 4));
 }
+/* The one contact's W2B by compressed rows (or columns: it is symmetric), whole, zero-based;
+ * the values perturbed as a dense W's (they are its entries in row-major order). */
+static const int64_t W2B_PTR[3] = {0, 2, 4}, W2B_IND[4] = {0, 1, 0, 1};
+static const int64_t *I64(int slot, const int64_t *base)
+{
+    return is(K_PTR, slot) ? NULL : base;
+}
+static int w_dctx_set_csr(void)
+{
+    return fricreg_disk_ctx_set_coupling_csr(DCTX(), Z(0, 1), N(0, FRICREG_SPARSE_ZERO_BASED),
+                                             I64(1, W2B_PTR), I64(2, W2B_IND), A(3, W2B, 4));
+}
+static int w_dctx_set_csc(void)
+{
+    return fricreg_disk_ctx_set_coupling_csc(DCTX(), Z(0, 1), N(0, FRICREG_SPARSE_ZERO_BASED),
+                                             I64(1, W2B_PTR), I64(2, W2B_IND), A(3, W2B, 4));
+}
 static int w_dctx_eval(void)
 {
     const double zdot[2] = {0.004, -0.002}, a[2] = {0.213, -0.347};
@@ -597,13 +614,8 @@ static int w_ctx_set_keep_tangent(void)
 {
     return fricreg_ctx_set_keep_tangent(CTX(), N(0, 0));
 }
-/* A sparse W: the two blocks' W2B in CSR (or CSC: the same arrays), whole, zero-based, its
- * pattern full so that the square-matrix classes replace its values. */
-static const int64_t W2B_PTR[3] = {0, 2, 4}, W2B_IND[4] = {0, 1, 0, 1};
-static const int64_t *I64(int slot, const int64_t *base)
-{
-    return is(K_PTR, slot) ? NULL : base;
-}
+/* A sparse W: the two contacts' W2B (above) in CSR (or CSC: the same arrays), whole,
+ * zero-based, its pattern full so that the square-matrix classes replace its values. */
 static int w_ctx_set_csr(void)
 {
     return fricreg_ctx_set_coupling_csr(CTX(), Z(0, 2), N(0, 0), I64(1, W2B_PTR), I64(2, W2B_IND),
@@ -899,6 +911,18 @@ static const struct row rows[] = {
      "0sinypm",
      DCTX_REC,
      {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnpppi"), MAT(1, "ppypi")}},
+    {"fricreg_disk_ctx_set_coupling_csr",
+     w_dctx_set_csr,
+     "0sinypm",
+     DCTX_REC,
+     {HANDLE, SIZE(0, "ssss"), INT(0, "ioii"), PTR(1, "0"), PTR(2, "0"), PTR(3, "0"),
+      ARR(3, "nnpppi"), MAT(3, "ppypi")}},
+    {"fricreg_disk_ctx_set_coupling_csc",
+     w_dctx_set_csc,
+     "0sinypm",
+     DCTX_REC,
+     {HANDLE, SIZE(0, "ssss"), INT(0, "ioii"), PTR(1, "0"), PTR(2, "0"), PTR(3, "0"),
+      ARR(3, "nnpppi"), MAT(3, "ppypi")}},
     {"fricreg_disk_ctx_eval",
      w_dctx_eval,
      "0snig",
@@ -1444,6 +1468,29 @@ static int e_dctx_coupling(int which, double x)
     return which < 3 ? fricreg_disk_ctx_set_coupling_blocks(FX_->dctx, 1, W[which])
                      : fricreg_disk_ctx_set_coupling_dense(FX_->dctx, 1, W[which - 3]);
 }
+/* which 0-2: e_dctx_coupling's W by compressed rows, 3-5: by columns (the diagonal ones by
+ * their upper triangle: a W given whole is read as (W + W^T)/2, which moves a subnormal
+ * entry by its last bit); 6: diag(x, x) by rows; 7: the same with each diagonal entry given
+ * as two halves (duplicates summed) */
+static int e_dctx_sparse(int which, double x)
+{
+    const double W[3][4] = {{1.0, 0.0, 0.0, x}, {x, 0.0, 0.0, x}, {1.0, 0.5 + x, 0.5, 1.0}};
+    const int64_t ptr[3] = {0, 2, 4}, ind[4] = {0, 1, 0, 1};
+    const int64_t dptr[3] = {0, 2, 4}, dind[4] = {0, 0, 1, 1}, tptr[3] = {0, 1, 2};
+    const double diag[4] = {x, 0.0, 0.0, x}, halves[4] = {0.5 * x, 0.5 * x, 0.5 * x, 0.5 * x};
+    const double tri[2] = {W[which % 3][0], W[which % 3][3]};
+    const int up = FRICREG_SPARSE_UPPER;
+    switch (which) {
+    case 0:
+    case 1: return fricreg_disk_ctx_set_coupling_csr(FX_->dctx, 1, up, tptr, ind, tri);
+    case 2: return fricreg_disk_ctx_set_coupling_csr(FX_->dctx, 1, 0, ptr, ind, W[2]);
+    case 3:
+    case 4: return fricreg_disk_ctx_set_coupling_csc(FX_->dctx, 1, up, tptr, ind, tri);
+    case 5: return fricreg_disk_ctx_set_coupling_csc(FX_->dctx, 1, 0, ptr, ind, W[2]);
+    case 6: return fricreg_disk_ctx_set_coupling_csr(FX_->dctx, 1, 0, ptr, ind, diag);
+    default: return fricreg_disk_ctx_set_coupling_csr(FX_->dctx, 1, 0, dptr, dind, halves);
+    }
+}
 static int e_dctx_eval(int which, double x)
 {
     double zdot[2] = {0.004, -0.002}, a[2] = {0.213, -0.347};
@@ -1768,6 +1815,22 @@ START_TEST(edges_of_documented_ranges)
          below(DBL_MIN), 'p', DCTX_REC},
         {"disk_ctx_set_coupling_dense symmetric to 1e-12", e_dctx_coupling, 5, 0.5e-12, 2e-12, 'y',
          DCTX_REC},
+        {"disk_ctx_set_coupling_csr eigenvalues within 1e12", e_dctx_sparse, 0, 2e-12, 0.5e-12, 'p',
+         DCTX_REC},
+        {"disk_ctx_set_coupling_csr eigenvalue >= DBL_MIN", e_dctx_sparse, 1, DBL_MIN,
+         below(DBL_MIN), 'p', DCTX_REC},
+        {"disk_ctx_set_coupling_csr symmetric to 1e-12", e_dctx_sparse, 2, 0.5e-12, 2e-12, 'y',
+         DCTX_REC},
+        {"disk_ctx_set_coupling_csc eigenvalues within 1e12", e_dctx_sparse, 3, 2e-12, 0.5e-12, 'p',
+         DCTX_REC},
+        {"disk_ctx_set_coupling_csc eigenvalue >= DBL_MIN", e_dctx_sparse, 4, DBL_MIN,
+         below(DBL_MIN), 'p', DCTX_REC},
+        {"disk_ctx_set_coupling_csc symmetric to 1e-12", e_dctx_sparse, 5, 0.5e-12, 2e-12, 'y',
+         DCTX_REC},
+        {"disk_ctx_set_coupling_csr values <= 1e250", e_dctx_sparse, 6, 1e250, above(1e250), 'i',
+         DCTX_REC},
+        {"disk_ctx_set_coupling_csr duplicates summed <= 1e250", e_dctx_sparse, 7, 1e250,
+         above(1e250), 'i', DCTX_REC},
         {"disk_ctx_eval zdot <= 1e250", e_dctx_eval, 0, 1e250, above(1e250), 'i', DCTX_REC},
         {"disk_ctx_eval a_free >= -1e250", e_dctx_eval, 1, -1e250, below(-1e250), 'i', DCTX_REC},
         {"disk_ctx_set_stribeck fs <= 1e250", e_dctx_set_stribeck, 0, 1e250, above(1e250), 'i',

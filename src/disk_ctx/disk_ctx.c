@@ -73,6 +73,7 @@ void fricreg_disk_ctx_free(fricreg_disk_ctx *ctx)
         return;
     free_kkt(ctx);
     free(ctx->mun), free(ctx->eig), free(ctx->blk), free(ctx->W);
+    fr_disk_coupled_free(ctx->cpl);
     free(ctx->f), free(ctx->f_last), free(ctx->g), free(ctx->p), free(ctx->u);
     free(ctx->r), free(ctx->radius), free(ctx->lam), free(ctx->kind), free(ctx->near);
     free(ctx->bound), free(ctx->strib), free(ctx->strib_keps);
@@ -177,10 +178,8 @@ int fricreg_disk_ctx_set_bounds(fricreg_disk_ctx *ctx, size_t m, const double mu
     return FRICREG_OK;
 }
 
-/* Checks the 2x2 block [[a, b], [c, d]] of contact i (symmetric, positive definite) and
- * writes its eigen-decomposition. */
-static int check_block(fricreg_disk_ctx *ctx, const char *who, size_t i, double a, double b,
-                       double c, double d, struct fr_disk_eig *e)
+int fr_disk_check_block(fricreg_disk_ctx *ctx, const char *who, size_t i, double a, double b,
+                        double c, double d, struct fr_disk_eig *e)
 {
     double scale = fmax(fmax(fabs(a), fabs(d)), fmax(fabs(b), fabs(c)));
     if (fabs(b - c) > SYMMETRY_RTOL * scale)
@@ -222,17 +221,21 @@ int fricreg_disk_ctx_set_coupling_blocks(fricreg_disk_ctx *ctx, size_t m, const 
         return status;
     for (size_t i = 0; i < m; i++) {
         struct fr_disk_eig e;
-        status = check_block(ctx, who, i, w[4 * i], w[4 * i + 1], w[4 * i + 2], w[4 * i + 3], &e);
+        status = fr_disk_check_block(ctx, who, i, w[4 * i], w[4 * i + 1], w[4 * i + 2],
+                                     w[4 * i + 3], &e);
         if (status != FRICREG_OK)
             return status;
     }
     if (alloc_kkt(ctx, 3) != FRICREG_OK)
         return fr_fail(ctx, FRICREG_ENOMEM, "%s: out of memory", who);
     for (size_t i = 0; i < m; i++)
-        check_block(ctx, who, i, w[4 * i], w[4 * i + 1], w[4 * i + 2], w[4 * i + 3], &ctx->eig[i]);
+        fr_disk_check_block(ctx, who, i, w[4 * i], w[4 * i + 1], w[4 * i + 2], w[4 * i + 3],
+                            &ctx->eig[i]);
     memcpy(ctx->blk, w, 4 * m * sizeof *w);
     free(ctx->W);
     ctx->W = NULL;
+    fr_disk_coupled_free(ctx->cpl);
+    ctx->cpl = NULL;
     ctx->last_valid = 0;
     return FRICREG_OK;
 }
@@ -274,7 +277,7 @@ static int check_dense(fricreg_disk_ctx *ctx, const char *who, size_t m, const d
     for (size_t i = 0; i < m; i++) {
         struct fr_disk_eig e;
         const double *b = W + 2 * i * n + 2 * i;
-        int status = check_block(ctx, who, i, b[0], b[1], b[n], b[n + 1], &e);
+        int status = fr_disk_check_block(ctx, who, i, b[0], b[1], b[n], b[n + 1], &e);
         if (status != FRICREG_OK)
             return status;
     }
@@ -315,22 +318,33 @@ int fricreg_disk_ctx_set_coupling_dense(fricreg_disk_ctx *ctx, size_t m, const d
         status = check_dense(ctx, who, m, W);
     if (status != FRICREG_OK)
         return status;
+    struct fr_disk_coupled *cpl = fr_disk_coupled_new(m);
     double *copy = malloc(n * n * sizeof *copy);
-    if (copy == NULL || alloc_kkt(ctx, 3 * m) != FRICREG_OK) {
+    if (cpl == NULL || copy == NULL || fr_disk_coupling_from_dense(&cpl->w, m, W) != FRICREG_OK ||
+        fr_disk_factor_setup(&cpl->F, &cpl->w) != FRICREG_OK ||
+        alloc_kkt(ctx, 3 * m) != FRICREG_OK) {
         free(copy);
+        fr_disk_coupled_free(cpl);
         return fr_fail(ctx, FRICREG_ENOMEM, "%s: out of memory for m = %zu", who, m);
     }
     memcpy(copy, W, n * n * sizeof *W);
+    fr_disk_install_coupled(ctx, cpl, copy);
+    return FRICREG_OK;
+}
+
+void fr_disk_install_coupled(fricreg_disk_ctx *ctx, struct fr_disk_coupled *cpl, double *W)
+{
+    const struct fr_disk_coupling *w = &cpl->w;
     free(ctx->W);
-    ctx->W = copy;
-    for (size_t i = 0; i < m; i++) {
-        const double *b = W + 2 * i * n + 2 * i;
-        ctx->blk[4 * i] = b[0], ctx->blk[4 * i + 1] = b[1];
-        ctx->blk[4 * i + 2] = b[n], ctx->blk[4 * i + 3] = b[n + 1];
-        check_block(ctx, who, i, b[0], b[1], b[n], b[n + 1], &ctx->eig[i]);
+    fr_disk_coupled_free(ctx->cpl);
+    ctx->W = W;
+    ctx->cpl = cpl;
+    for (size_t i = 0; i < ctx->m; i++) {
+        const double *b = w->blk + 4 * w->diag[i];
+        memcpy(ctx->blk + 4 * i, b, 4 * sizeof *b);
+        fr_disk_check_block(ctx, "set_coupling", i, b[0], b[1], b[2], b[3], &ctx->eig[i]);
     }
     ctx->last_valid = 0;
-    return FRICREG_OK;
 }
 
 int fricreg_disk_ctx_errcode(const fricreg_disk_ctx *ctx)

@@ -9,27 +9,48 @@
 #include <gsl/gsl_roots.h>
 
 #include "disk_block.h"
+#include "disk_coupling.h"
+#include "disk_factor.h"
+#include "disk_kind.h"
 #include "base/error.h"
 #include "fricreg_disk_ctx.h"
 #include "law/law_stribeck.h"
 
 #define FR_DISK_CTX_MAX ((size_t)1 << 24)
 
-/* What eval decided for a contact (kept for the tangent). */
-enum fr_disk_kind {
-    FR_DISK_FIXED = 0, /* sliding, mun = 0 or a radius 0: f_i does not depend on the others */
-    FR_DISK_FREE = 1,  /* near stick, inside K_i */
-    FR_DISK_CIRCLE = 2 /* near stick, on the circle of K_i */
+/* A coupled W (dense or sparse setter): its blocks, the reduced Hessian's factor, and the
+ * work of the sweeps and of Newton's method (disk_newton.c), [2m] or [m]. */
+struct fr_disk_coupled {
+    struct fr_disk_coupling w;
+    struct fr_disk_factor F;
+    double *acc;        /* [2m] G_i: contact i's acceleration with f_i = 0, the others' f */
+    double *grad;       /* [2m] the QP's gradient W f + b on the near-stick contacts */
+    double *fl;         /* [2m] each contact's exact subproblem's solution given G_i */
+    double *laml;       /* [m] its multiplier */
+    signed char *onl;   /* [m] whether it is on the circle */
+    signed char *nkind; /* [m] the kinds of Newton's reduced Hessian */
+    double *nrm;        /* [2m] the circles' normals */
+    double *step;       /* [2m] Newton's step */
+    double *trial;      /* [2m] a trial point; the right-hand side */
+    double *wd;         /* [2m] W times a displacement */
+    int newton_last;    /* the last successful evaluation needed Newton's method */
 };
+
+/* Allocates a coupled W's work for m contacts, fr_disk_coupled_free releases it all (NULL
+ * safe). The coupling and factor are the caller's to set up. */
+struct fr_disk_coupled *fr_disk_coupled_new(size_t m);
+void fr_disk_coupled_free(struct fr_disk_coupled *cpl);
 
 struct fricreg_disk_ctx {
     size_t m;
     int law;
     double eps;
-    double *mun;             /* [m] */
-    struct fr_disk_eig *eig; /* [m] eigen-decomposition of each diagonal block W_ii */
-    double *blk;             /* [4m] the diagonal blocks W_ii, row-major */
-    double *W;               /* [(2m)^2] dense W, or NULL for block diagonal */
+    double *mun;                 /* [m] */
+    struct fr_disk_eig *eig;     /* [m] eigen-decomposition of each diagonal block W_ii */
+    double *blk;                 /* [4m] the diagonal blocks W_ii, row-major */
+    double *W;                   /* [(2m)^2] dense W (the dense tangent's), or NULL */
+    struct fr_disk_coupled *cpl; /* W by blocks and its factor (dense or sparse W), or NULL
+                                  * for block diagonal */
 
     /* The state of the last evaluation (the tangent's inputs), scratch during one. */
     double *f;         /* [2m] forces being built */
@@ -69,11 +90,52 @@ struct fricreg_disk_ctx {
     struct fr_error err;
 };
 
+/* disk_ctx.c: checks the 2x2 block [[a, b], [c, d]] of contact i (symmetric, positive
+ * definite, smallest eigenvalue at least DBL_MIN) and writes its eigen-decomposition; the
+ * failure is recorded led by who. */
+int fr_disk_check_block(fricreg_disk_ctx *ctx, const char *who, size_t i, double a, double b,
+                        double c, double d, struct fr_disk_eig *e);
+
+/* disk_ctx.c: makes cpl (and W, the dense copy, or NULL) the context's coupling, freeing the
+ * old one; the diagonal blocks and their eigen-decompositions from cpl. Cannot fail. */
+void fr_disk_install_coupled(fricreg_disk_ctx *ctx, struct fr_disk_coupled *cpl, double *W);
+
 /* disk_stribeck.c: contact i's bound at speed r = |zdot_i| (mun_i without Stribeck friction);
  * its slope d bound/d r (0 without); k(eps) after eps changed; Stribeck friction off. */
 double fr_disk_bound(const fricreg_disk_ctx *ctx, size_t i, double r);
 double fr_disk_bound_slope(const fricreg_disk_ctx *ctx, size_t i, double r);
 void fr_disk_stribeck_refresh(fricreg_disk_ctx *ctx);
+
+/* disk_sweep.c: block Gauss-Seidel. g_i += sum over the contacts j != i that are fixed
+ * (fixed_ones) or near stick of W_ij f_j; one contact's exact subproblem given g (returns how
+ * far its force moved over its bound); one sweep over the near-stick contacts (*moved: the
+ * largest such move), FRICREG_OK or FRICREG_ENONFINITE. */
+void fr_disk_add_coupling(const fricreg_disk_ctx *ctx, size_t i, int fixed_ones, double g[2]);
+double fr_disk_solve_contact(fricreg_disk_ctx *ctx, size_t i, const double g[2]);
+int fr_disk_sweep(fricreg_disk_ctx *ctx, double *moved);
+
+/* disk_newton.c: up to max_iter iterations of the projected Newton method on the near-stick
+ * QP from ctx->f (ctx->g holding a_free plus the fixed contacts' share); *converged says
+ * whether a block pass moved no force by more than tol times its bound (then ctx->f, kind and
+ * lam are that pass's). FRICREG_OK or FRICREG_ENONFINITE. No allocation. */
+int fr_disk_newton(fricreg_disk_ctx *ctx, int max_iter, double tol, int *converged);
+
+/* disk_slopes.c, at the last evaluation's solution: d p_i/d zdot_i (p_i = a_i u_i, K_i's
+ * centre is -p_i), row-major; d f_i/d zdot_i of a fixed contact; the unit normal
+ * (f_i + p_i)/|f_i + p_i| of a circle contact; and for a circle contact j, n_j . d f_j/d zdot_{j,b}
+ * = d radius_j - n_j . d p_j given P = d p_j/d zdot_j (at rest along the direction -n_j the
+ * contact will slide). */
+void fr_disk_centre_jacobian(const fricreg_disk_ctx *ctx, size_t i, double P[4]);
+void fr_disk_fixed_jacobian(const fricreg_disk_ctx *ctx, size_t i, double D[4]);
+void fr_disk_normal(const fricreg_disk_ctx *ctx, size_t i, double n[2]);
+double fr_disk_normal_rate(const fricreg_disk_ctx *ctx, size_t j, int b, const double P[4]);
+
+/* disk_tangent_sparse.c: the tangent with a sparse W from the reduced Hessian's factor:
+ * fr_disk_tangent_sparse_factor builds it at the solution (FRICREG_OK or FRICREG_ESINGULAR,
+ * recorded); fr_disk_tangent_sparse then writes every column of the outputs given (zeroed
+ * before; dry: nothing written, returns whether every entry would be finite). */
+int fr_disk_tangent_sparse_factor(fricreg_disk_ctx *ctx);
+int fr_disk_tangent_sparse(fricreg_disk_ctx *ctx, double *dz, double *da, int dry);
 
 /* disk_qp.c: the state of the last successful evaluation, rebuilt from its inputs if a failed
  * evaluation overwrote it (warm-started at its forces). Returns FRICREG_OK or eval's status. */

@@ -2,23 +2,26 @@
 /* disk_qp.c — fricreg_disk_ctx_eval: the consistent coupled 2-D law (fricreg_disk_ctx.h;
  * docs/laws2d.md, "Coupled 2-D contacts in a context"): fixed (sliding) contacts first, then
  * the near-stick contacts' QP over their disks, contact by contact (disk_block.c), by block
- * Gauss-Seidel when W couples them. */
+ * Gauss-Seidel (disk_sweep.c) and the projected Newton method (disk_newton.c) when W couples
+ * them. */
 #include <math.h>
 #include <string.h>
 
 #include "disk_ctx_internal.h"
-#include "disk_polish.h"
 #include "law/contact_check.h"
 #include "law/law_disk.h"
 
 #define GS_TOL 1e-14 /* a sweep moves no force by more than this times its bound: converged */
 #define GS_MAX_SWEEPS 20000
-#define POLISH_FIRST 8 /* Newton after sweep 8, 16, 32, ... while not converged */
+#define GS_FIRST 8           /* sweeps before Newton's method */
+#define NEWTON_MAX_ITER 100  /* Newton's iterations after the first sweeps */
+#define NEWTON_RETRY_ITER 10 /* and between later sweeps */
 
 /* Sorts contact i: fixed (its force written to ctx->f) or near stick (centre -p, radius). */
 static void classify(fricreg_disk_ctx *ctx, size_t i, const double v[2])
 {
-    double r = hypot(v[0], v[1]), mun = fr_disk_bound(ctx, i, r); /* Stribeck: B_i(r) */
+    double r = v[0] == 0.0 && v[1] == 0.0 ? 0.0 : hypot(v[0], v[1]); /* at rest: no call */
+    double mun = fr_disk_bound(ctx, i, r);                           /* Stribeck: B_i(r) */
     double *p = ctx->p + 2 * i, *u = ctx->u + 2 * i, *f = ctx->f + 2 * i;
     ctx->r[i] = r;
     ctx->bound[i] = mun;
@@ -45,79 +48,88 @@ static void classify(fricreg_disk_ctx *ctx, size_t i, const double v[2])
     ctx->near[ctx->n_near++] = i;
 }
 
-/* g_i += sum over contacts j of `which` (j != i) of W_ij f_j, for contact i. */
-static void add_coupling(const fricreg_disk_ctx *ctx, size_t i, int fixed_ones, double g[2])
-{
-    for (size_t j = 0; j < ctx->m; j++) {
-        if (j == i || (ctx->kind[j] == FR_DISK_FIXED) != fixed_ones)
-            continue;
-        const double *fj = ctx->f + 2 * j;
-        for (int a = 0; a < 2; a++)
-            g[a] += fr_disk_w(ctx, i, a, j, 0) * fj[0] + fr_disk_w(ctx, i, a, j, 1) * fj[1];
-    }
-}
-
-/* One near-stick contact's exact subproblem given g (its acceleration with f_i = 0); returns
- * how far its force moved, relative to its bound. */
-static double solve_contact(fricreg_disk_ctx *ctx, size_t i, const double g[2])
-{
-    double *f = ctx->f + 2 * i, old0 = f[0], old1 = f[1];
-    int on = fr_disk_block_solve(&ctx->eig[i], g, ctx->p + 2 * i, ctx->radius[i], ctx->brent, f,
-                                 &ctx->lam[i]);
-    ctx->kind[i] = on ? FR_DISK_CIRCLE : FR_DISK_FREE;
-    return hypot(f[0] - old0, f[1] - old1) / ctx->bound[i];
-}
-
-/* One sweep over the near-stick contacts; *moved gets the largest change over its bound. */
-static int sweep_once(fricreg_disk_ctx *ctx, double *moved)
+/* The fixed contacts' share of each near-stick contact's acceleration, once, into ctx->g. */
+static int add_fixed_share(fricreg_disk_ctx *ctx)
 {
     for (size_t k = 0; k < ctx->n_near; k++) {
         size_t i = ctx->near[k];
-        double g[2] = {ctx->g[2 * i], ctx->g[2 * i + 1]};
-        add_coupling(ctx, i, 0, g);
-        if (!isfinite(g[0]) || !isfinite(g[1]))
-            return fr_fail(ctx, FRICREG_ENONFINITE, "eval: contact %zu's acceleration overflows",
-                           i);
-        *moved = fmax(*moved, solve_contact(ctx, i, g));
-    }
-    return FRICREG_OK;
-}
-
-/* Block Gauss-Seidel over the near-stick contacts of a dense W: each sweep solves every
- * contact's subproblem exactly given the others' latest forces, a descent step on the strictly
- * convex QP, so the sweeps converge to its solution (linearly). */
-static int gauss_seidel(fricreg_disk_ctx *ctx)
-{
-    for (size_t k = 0; k < ctx->n_near; k++) { /* the fixed contacts' share, once */
-        size_t i = ctx->near[k];
-        add_coupling(ctx, i, 1, ctx->g + 2 * i);
+        fr_disk_add_coupling(ctx, i, 1, ctx->g + 2 * i);
         if (!isfinite(ctx->g[2 * i]) || !isfinite(ctx->g[2 * i + 1]))
             return fr_fail(ctx, FRICREG_ENONFINITE, "eval: contact %zu's acceleration overflows",
                            i);
     }
-    int next_polish = POLISH_FIRST;
-    for (int sweep = 1; sweep <= GS_MAX_SWEEPS; sweep++) {
+    return FRICREG_OK;
+}
+
+/* Up to `sweeps` block Gauss-Seidel sweeps; *converged when one moves no force by more than
+ * GS_TOL times its bound. */
+static int sweep_until(fricreg_disk_ctx *ctx, int sweeps, int *converged)
+{
+    *converged = 0;
+    for (int sweep = 1; sweep <= sweeps && !*converged; sweep++) {
         double moved = 0.0;
-        int status = sweep_once(ctx, &moved);
+        int status = fr_disk_sweep(ctx, &moved);
         if (status != FRICREG_OK)
             return status;
-        if (moved <= GS_TOL)
-            return FRICREG_OK;
-        if (sweep == next_polish) { /* slow: Newton on this sweep's active set */
-            next_polish *= 2;
-            if (fr_disk_polish(ctx)) {
-                status = sweep_once(ctx, &moved); /* verifies, and cleans to exact blocks */
-                if (status != FRICREG_OK)
-                    return status;
-                if (moved <= GS_TOL)
-                    return FRICREG_OK;
-            }
-        }
+        *converged = moved <= GS_TOL;
     }
-    return fr_fail(ctx, FRICREG_ESINGULAR,
-                   "eval: block Gauss-Seidel did not converge in %d sweeps (W on the "
-                   "near-stick contacts singular or badly conditioned)",
-                   GS_MAX_SWEEPS);
+    return FRICREG_OK;
+}
+
+/* The near-stick contacts' starting forces into the coupled W's scratch (save), or back
+ * (restore): Newton starts where the sweeps did. Sweeps far from converging leave contacts on
+ * their circles that the solution has inside (each sweep's subproblems see the others'
+ * unconverged forces), and Newton would hold them there at first; the warm start, the last
+ * solution, holds the right ones. */
+static void keep_start(fricreg_disk_ctx *ctx, int save)
+{
+    double *kept = ctx->cpl->fl; /* Newton's, unused by the sweeps */
+    for (size_t k = 0; k < ctx->n_near; k++) {
+        size_t i = ctx->near[k];
+        double *from = save ? ctx->f : kept, *to = save ? kept : ctx->f;
+        to[2 * i] = from[2 * i];
+        to[2 * i + 1] = from[2 * i + 1];
+    }
+}
+
+/* The near-stick QP of a coupled W. Block Gauss-Seidel first, which ends in a few sweeps on
+ * weakly coupled contacts (and gives there the numbers it always gave); else the projected
+ * Newton method on the reduced Hessian's sparse factor (disk_newton.c), with which the next
+ * evaluation then starts (an integrator's next state is near this one). Should Newton fail
+ * (a singular W on the set), sweeps continue to GS_MAX_SWEEPS, with Newton retried after
+ * sweeps 16, 32, ... */
+static int solve_coupled(fricreg_disk_ctx *ctx, int warm)
+{
+    struct fr_disk_coupled *cpl = ctx->cpl;
+    int converged = 0, status = add_fixed_share(ctx);
+    if (status == FRICREG_OK && !(warm && cpl->newton_last)) {
+        keep_start(ctx, 1);
+        status = sweep_until(ctx, GS_FIRST, &converged);
+        if (status != FRICREG_OK || converged) {
+            cpl->newton_last = 0;
+            return status;
+        }
+        keep_start(ctx, 0);
+    }
+    if (status == FRICREG_OK)
+        status = fr_disk_newton(ctx, NEWTON_MAX_ITER, GS_TOL, &converged);
+    for (int done = GS_FIRST, chunk = GS_FIRST;
+         status == FRICREG_OK && !converged && done < GS_MAX_SWEEPS; chunk *= 2) {
+        int n = chunk < GS_MAX_SWEEPS - done ? chunk : GS_MAX_SWEEPS - done;
+        status = sweep_until(ctx, n, &converged);
+        done += n;
+        if (status == FRICREG_OK && !converged)
+            status = fr_disk_newton(ctx, NEWTON_RETRY_ITER, GS_TOL, &converged);
+    }
+    if (status != FRICREG_OK)
+        return status;
+    if (!converged)
+        return fr_fail(ctx, FRICREG_ESINGULAR,
+                       "eval: neither Newton's method nor %d block Gauss-Seidel sweeps "
+                       "converged (W on the near-stick contacts singular or badly conditioned)",
+                       GS_MAX_SWEEPS);
+    cpl->newton_last = 1;
+    return FRICREG_OK;
 }
 
 /* The inputs' status: NULL, then non-finite, then out of range. */
@@ -150,10 +162,10 @@ static int evaluate(fricreg_disk_ctx *ctx, const double zdot[], const double a_f
         ctx->f[2 * i] = warm ? ctx->f_last[2 * i] : 0.0;
         ctx->f[2 * i + 1] = warm ? ctx->f_last[2 * i + 1] : 0.0;
     }
-    if (ctx->W == NULL) { /* uncoupled: one exact subproblem per contact */
+    if (ctx->cpl == NULL) { /* uncoupled: one exact subproblem per contact */
         for (size_t k = 0; k < ctx->n_near; k++)
-            solve_contact(ctx, ctx->near[k], ctx->g + 2 * ctx->near[k]);
-    } else if ((status = gauss_seidel(ctx)) != FRICREG_OK) {
+            fr_disk_solve_contact(ctx, ctx->near[k], ctx->g + 2 * ctx->near[k]);
+    } else if ((status = solve_coupled(ctx, warm)) != FRICREG_OK) {
         return status;
     }
     for (size_t k = 0; k < 2 * m; k++)

@@ -23,50 +23,6 @@
 
 #define PIVOT_RTOL 1e-13
 
-/* d p_i / d zdot_i, row-major 2x2: p = B zdot/eps (FRICREG_DISK_QUINN in the band and at
- * rest; 0 for the force balance) with the bound B = mun, or the Stribeck bound B(|zdot|),
- * whose slope B' adds (|zdot|/eps) B' u u^T (0 at rest). */
-static void centre_jacobian(const fricreg_disk_ctx *ctx, size_t i, double P[4])
-{
-    double s = ctx->law == FRICREG_DISK_QUINN ? ctx->bound[i] / ctx->eps : 0.0;
-    double q = ctx->law == FRICREG_DISK_QUINN && ctx->r[i] > 0.0
-                   ? (ctx->r[i] / ctx->eps) * fr_disk_bound_slope(ctx, i, ctx->r[i])
-                   : 0.0;
-    const double *u = ctx->u + 2 * i;
-    P[0] = s + q * u[0] * u[0], P[1] = q * u[0] * u[1];
-    P[2] = P[1], P[3] = s + q * u[1] * u[1];
-}
-
-/* df_i/dzdot_i of a fixed contact: sliding, d(-B u) = -(B/|v|)(I - u u^T) - B'(|v|) u u^T
- * (B' = k' for Stribeck friction, else 0); -dp/dzdot on a point K_i; 0 for a bound 0. */
-static void fixed_jacobian(const fricreg_disk_ctx *ctx, size_t i, double D[4])
-{
-    double mun = ctx->bound[i], r = ctx->r[i];
-    const double *u = ctx->u + 2 * i;
-    int slides = ctx->law == FRICREG_DISK_QUINN ? r >= ctx->eps : r > 0.0;
-    if (mun == 0.0) {
-        D[0] = D[1] = D[2] = D[3] = 0.0;
-    } else if (slides) {
-        double k = -mun / r, kr = -fr_disk_bound_slope(ctx, i, r);
-        D[0] = k * (1.0 - u[0] * u[0]) + kr * u[0] * u[0];
-        D[1] = -k * u[0] * u[1] + kr * u[0] * u[1];
-        D[2] = D[1], D[3] = k * (1.0 - u[1] * u[1]) + kr * u[1] * u[1];
-    } else {
-        double P[4];
-        centre_jacobian(ctx, i, P);
-        D[0] = -P[0], D[1] = -P[1], D[2] = -P[2], D[3] = -P[3];
-    }
-}
-
-/* The unit normal of a circle contact; at rest (u = 0) the direction it will slide is -n. */
-static void normal(const fricreg_disk_ctx *ctx, size_t i, double n[2])
-{
-    const double *f = ctx->f + 2 * i, *p = ctx->p + 2 * i;
-    double y0 = f[0] + p[0], y1 = f[1] + p[1], ny = hypot(y0, y1);
-    n[0] = y0 / ny;
-    n[1] = y1 / ny;
-}
-
 static void assemble(fricreg_disk_ctx *ctx, size_t n)
 {
     double *J = ctx->kkt;
@@ -82,7 +38,7 @@ static void assemble(fricreg_disk_ctx *ctx, size_t n)
         if (ctx->kind[i] != FR_DISK_CIRCLE)
             continue;
         double nv[2];
-        normal(ctx, i, nv);
+        fr_disk_normal(ctx, i, nv);
         size_t mr = ctx->mrow[i];
         for (int a = 0; a < 2; a++) {
             J[(ri + a) * n + ri + a] += ctx->lam[i];
@@ -134,26 +90,15 @@ static void parameter_column(fricreg_disk_ctx *ctx, size_t n, size_t j, int b, i
         return;
     }
     double P[4];
-    centre_jacobian(ctx, j, P);
+    fr_disk_centre_jacobian(ctx, j, P);
     for (int a = 0; a < 2; a++) { /* d/dp of 2 W_jj p_j + lam (f_j + p_j), times dp/dzdot */
         double w = 0.0;
         for (int e = 0; e < 2; e++)
             w += (2.0 * ctx->blk[4 * j + 2 * a + e] + (a == e ? ctx->lam[j] : 0.0)) * P[2 * e + b];
         c[rj + a] = -w;
     }
-    if (ctx->kind[j] == FR_DISK_CIRCLE) {
-        /* n^T df = d radius - n^T dp, radius = B (1 - r/eps), r = |zdot_j|:
-         * d radius = (B' (1 - r/eps) - B/eps) u^T dzdot; at rest u := -n (the direction the
-         * contact will slide), where the constant bound's terms cancel. */
-        double nv[2];
-        normal(ctx, j, nv);
-        double r = ctx->r[j], rho = ctx->law == FRICREG_DISK_QUINN ? r / ctx->eps : 0.0;
-        double ub = r > 0.0 ? ctx->u[2 * j + b] : -nv[b];
-        double s = ctx->law == FRICREG_DISK_QUINN ? ctx->bound[j] / ctx->eps : 0.0;
-        double dB = ctx->law == FRICREG_DISK_QUINN ? fr_disk_bound_slope(ctx, j, r) : 0.0;
-        double d_radius = (dB * (1.0 - rho) - s) * ub;
-        c[ctx->mrow[j]] = d_radius - (nv[0] * P[b] + nv[1] * P[2 + b]);
-    }
+    if (ctx->kind[j] == FR_DISK_CIRCLE)
+        c[ctx->mrow[j]] = fr_disk_normal_rate(ctx, j, b, P);
 }
 
 /* Writes column (j, b) of one output (zeroed before) from the solved column and Dj. */
@@ -192,7 +137,7 @@ static int fill_columns(fricreg_disk_ctx *ctx, size_t n, size_t j, int afree, do
     gsl_vector_const_view tau = gsl_vector_const_view_array(ctx->tau, n);
     double Dj[4] = {0.0, 0.0, 0.0, 0.0};
     if (ctx->kind[j] == FR_DISK_FIXED)
-        fixed_jacobian(ctx, j, Dj);
+        fr_disk_fixed_jacobian(ctx, j, Dj);
     for (int b = 0; b < 2; b++) {
         parameter_column(ctx, n, j, b, afree, Dj);
         if (n > 0) {
@@ -276,8 +221,8 @@ static int extreme_scales(const fricreg_disk_ctx *ctx)
     const double big = 1e100;
     for (size_t i = 0; i < ctx->m; i++) {
         double D[4], P[4];
-        fixed_jacobian(ctx, i, D);
-        centre_jacobian(ctx, i, P);
+        fr_disk_fixed_jacobian(ctx, i, D);
+        fr_disk_centre_jacobian(ctx, i, P);
         double dmin = fmin(ctx->eig[i].d1, ctx->eig[i].d2);
         if (fmax(fmax(fabs(D[0]), fabs(D[3])), fmax(fabs(P[0]), fabs(P[3]))) > big ||
             fabs(D[1]) > big || fabs(P[1]) > big || ctx->lam[i] > big || dmin < 1.0 / big ||
@@ -288,7 +233,41 @@ static int extreme_scales(const fricreg_disk_ctx *ctx)
     for (size_t k = 0; ctx->W != NULL && k < n * n; k++)
         if (fabs(ctx->W[k]) > big)
             return 1;
+    const struct fr_disk_coupling *w = ctx->cpl != NULL ? &ctx->cpl->w : NULL;
+    for (int64_t k = 0; w != NULL && k < 4 * w->ptr[ctx->m]; k++)
+        if (fabs(w->blk[k]) > big)
+            return 1;
     return 0;
+}
+
+/* Which tangent: dense W (the bordered KKT matrix by QR), block diagonal (per contact), or
+ * sparse W (the reduced Hessian's sparse factor, disk_tangent_sparse.c). */
+enum shape { DENSE, BLOCKS, SPARSE };
+
+static enum shape shape_of(const fricreg_disk_ctx *ctx)
+{
+    return ctx->W != NULL ? DENSE : ctx->cpl != NULL ? SPARSE : BLOCKS;
+}
+
+/* Every column of the outputs (zeroed before); dry: none written, whether all are finite. */
+static int tangent_columns(fricreg_disk_ctx *ctx, size_t n, double *dz, double *da, int dry)
+{
+    switch (shape_of(ctx)) {
+    case DENSE: return tangent_dense(ctx, n, dz, da, dry);
+    case SPARSE: return fr_disk_tangent_sparse(ctx, dz, da, dry);
+    default: return tangent_blocks(ctx, dz, da, dry);
+    }
+}
+
+/* The factor (dense, sparse) or the blocks' factors checked, before anything is written. */
+static int tangent_factor(fricreg_disk_ctx *ctx, size_t *n)
+{
+    *n = 0;
+    switch (shape_of(ctx)) {
+    case DENSE: return prepare(ctx, n);
+    case SPARSE: return fr_disk_tangent_sparse_factor(ctx);
+    default: return check_blocks(ctx);
+    }
 }
 
 /* The slopes the tangent divides by must be finite: checked before anything is written. */
@@ -296,8 +275,8 @@ static int check_slopes(fricreg_disk_ctx *ctx)
 {
     for (size_t i = 0; i < ctx->m; i++) {
         double D[4], P[4];
-        fixed_jacobian(ctx, i, D);
-        centre_jacobian(ctx, i, P);
+        fr_disk_fixed_jacobian(ctx, i, D);
+        fr_disk_centre_jacobian(ctx, i, P);
         double dB = fr_disk_bound_slope(ctx, i, ctx->r[i]);
         if (!isfinite(P[0]) || !isfinite(P[1]) || !isfinite(P[3]) || !isfinite(dB) ||
             !isfinite(D[0]) || !isfinite(D[1]) || !isfinite(D[3]))
@@ -326,13 +305,12 @@ int fricreg_disk_ctx_tangent(fricreg_disk_ctx *ctx, size_t m, double df_dzdot[],
     size_t n = 0; /* factored first: a singular system writes nothing */
     status = check_slopes(ctx);
     if (status == FRICREG_OK)
-        status = ctx->W != NULL ? prepare(ctx, &n) : check_blocks(ctx);
+        status = tangent_factor(ctx, &n);
     if (status != FRICREG_OK)
         return status;
     /* Near the double range, a dry run first: nothing is written unless every entry is
      * finite (fuzz finding: mun/eps = 4.5e307 gave NaN with FRICREG_OK). */
-    if (extreme_scales(ctx) && !(ctx->W != NULL ? tangent_dense(ctx, n, df_dzdot, df_dafree, 1)
-                                                : tangent_blocks(ctx, df_dzdot, df_dafree, 1)))
+    if (extreme_scales(ctx) && !tangent_columns(ctx, n, df_dzdot, df_dafree, 1))
         return fr_fail(ctx, FRICREG_ENONFINITE,
                        "tangent: an entry overflows the double range (slopes mun/eps, "
                        "mun/|zdot| or W^-1 near it)");
@@ -341,9 +319,6 @@ int fricreg_disk_ctx_tangent(fricreg_disk_ctx *ctx, size_t m, double df_dzdot[],
         memset(df_dzdot, 0, n2 * sizeof *df_dzdot);
     if (df_dafree != NULL)
         memset(df_dafree, 0, n2 * sizeof *df_dafree);
-    if (ctx->W != NULL)
-        tangent_dense(ctx, n, df_dzdot, df_dafree, 0);
-    else
-        tangent_blocks(ctx, df_dzdot, df_dafree, 0);
+    tangent_columns(ctx, n, df_dzdot, df_dafree, 0);
     return FRICREG_OK;
 }

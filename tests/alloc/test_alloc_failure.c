@@ -837,6 +837,92 @@ static const struct script disk_create = {
     "disk_ctx create", 0,         NULL, 0, 0, disk_open, NULL, NULL, disk_observe,
     disk_errcode,      disk_close};
 
+/* A sparse W (fricreg_disk_ctx_set_coupling_csr, _csc): disk_dense_w's W by compressed rows,
+ * its upper triangle, one-based (duplicates: its diagonal given as two halves). A failure
+ * keeps the W before it: a sparse W then dense, or dense then sparse. */
+enum { SPARSE_N = 2 * M_DENSE, SPARSE_NNZ = SPARSE_N * (SPARSE_N + 1) / 2 + SPARSE_N };
+static int64_t sparse_ptr[SPARSE_N + 1], sparse_ind[SPARSE_NNZ];
+static double sparse_val[SPARSE_NNZ];
+
+static void disk_sparse_w(void)
+{
+    double W[4 * M_DENSE * M_DENSE];
+    disk_dense_w(W, 0.1);
+    int64_t e = 0;
+    for (size_t r = 0; r < SPARSE_N; r++) {
+        sparse_ptr[r] = e + 1;
+        for (size_t c = r; c < SPARSE_N; c++) {
+            int halves = c == r ? 2 : 1;
+            for (int h = 0; h < halves; h++) {
+                sparse_ind[e] = (int64_t)c + 1;
+                sparse_val[e++] = W[r * SPARSE_N + c] / halves;
+            }
+        }
+    }
+    sparse_ptr[SPARSE_N] = e + 1;
+}
+
+static const char *const disk_sparse_calls[] = {"set_coupling_csr", "set_bounds", "set_law", "eval",
+                                                "set_coupling_dense"};
+static const char *const disk_dense_sparse_calls[] = {"set_coupling_dense", "set_bounds", "set_law",
+                                                      "eval", "set_coupling_csc"};
+
+static int disk_sparse_coupling_call(void *obj, int i, struct view *v, int sparse_first)
+{
+    double W[4 * M_DENSE * M_DENSE];
+    disk_dense_w(W, -0.05);
+    disk_sparse_w();
+    const int flags = FRICREG_SPARSE_ONE_BASED | FRICREG_SPARSE_UPPER;
+    switch (i) {
+    case 0:
+    case 4:
+        if ((i == 0) != sparse_first)
+            return fricreg_disk_ctx_set_coupling_dense(obj, M_DENSE, W);
+        return i == 0 ? fricreg_disk_ctx_set_coupling_csr(obj, M_DENSE, flags, sparse_ptr,
+                                                          sparse_ind, sparse_val)
+                      : fricreg_disk_ctx_set_coupling_csc(obj, M_DENSE,
+                                                          FRICREG_SPARSE_ONE_BASED |
+                                                              FRICREG_SPARSE_LOWER,
+                                                          sparse_ptr, sparse_ind, sparse_val);
+    case 1: return fricreg_disk_ctx_set_bounds(obj, M_DENSE, MUN5);
+    case 2: return fricreg_disk_ctx_set_law(obj, FRICREG_DISK_QUINN, 0.02);
+    default: return disk_eval(obj, 0, v);
+    }
+}
+
+static int disk_sparse_call(void *obj, int i, struct view *v)
+{
+    return disk_sparse_coupling_call(obj, i, v, 1);
+}
+
+static int disk_dense_sparse_call(void *obj, int i, struct view *v)
+{
+    return disk_sparse_coupling_call(obj, i, v, 0);
+}
+
+static const struct script disk_sparse = {"disk_ctx set_coupling_csr, then dense",
+                                          5,
+                                          disk_sparse_calls,
+                                          0,
+                                          0,
+                                          disk_open,
+                                          disk_sparse_call,
+                                          NULL,
+                                          disk_observe,
+                                          disk_errcode,
+                                          disk_close};
+static const struct script disk_dense_sparse = {"disk_ctx set_coupling_dense, then csc",
+                                                5,
+                                                disk_dense_sparse_calls,
+                                                0,
+                                                0,
+                                                disk_open,
+                                                disk_dense_sparse_call,
+                                                NULL,
+                                                disk_observe,
+                                                disk_errcode,
+                                                disk_close};
+
 /* ---- Simulations ----------------------------------------------------------------------------- */
 
 static int current_system, current_integrator;
@@ -1420,6 +1506,60 @@ START_TEST(test_disk_eval_does_not_allocate)
 }
 END_TEST
 
+START_TEST(test_disk_ctx_set_coupling_sparse)
+{
+    struct tally t = fail_each_allocation(_i == 0 ? &disk_sparse : &disk_dense_sparse);
+    ck_assert_int_eq(t.enomem, t.cases);
+}
+END_TEST
+
+/* A chain's W1 (x) I2, W1 = tridiag(-1, 2, -1) of order M_DENSE, by compressed rows: so
+ * strongly coupled (cond 14) that block Gauss-Seidel does not converge in its first 8 sweeps
+ * and Newton's method runs. */
+static int64_t chain_ptr[2 * M_DENSE + 1], chain_ind[6 * M_DENSE];
+static double chain_val[6 * M_DENSE];
+
+static void disk_chain_w(void)
+{
+    int64_t e = 0;
+    for (size_t r = 0; r < 2 * M_DENSE; r++) {
+        chain_ptr[r] = e;
+        for (int d = -1; d <= 1; d++) {
+            size_t c = r + 2 * (size_t)(d + 1);
+            if (c < 2 || c - 2 >= 2 * M_DENSE)
+                continue;
+            chain_ind[e] = (int64_t)(c - 2);
+            chain_val[e++] = d == 0 ? 2.0 : -1.0;
+        }
+    }
+    chain_ptr[2 * M_DENSE] = e;
+}
+
+/* With a sparse W, eval (block Gauss-Seidel, or Newton's method on CHOLMOD's factor, set up by
+ * the setter) and the tangent (4m solves with that factor) allocate nothing either. */
+START_TEST(test_disk_sparse_eval_does_not_allocate)
+{
+    fricreg_disk_ctx *ctx = NULL;
+    disk_sparse_w();
+    disk_chain_w();
+    ck_assert_int_eq(fricreg_disk_ctx_create(M_DENSE, &ctx), FRICREG_OK);
+    ck_assert_int_eq(fricreg_disk_ctx_set_bounds(ctx, M_DENSE, MUN5), FRICREG_OK);
+    ck_assert_int_eq(fricreg_disk_ctx_set_law(ctx, FRICREG_DISK_QUINN, 0.02), FRICREG_OK);
+    ck_assert_int_eq(fricreg_disk_ctx_set_coupling_csr(ctx, M_DENSE,
+                                                       FRICREG_SPARSE_ONE_BASED |
+                                                           FRICREG_SPARSE_UPPER,
+                                                       sparse_ptr, sparse_ind, sparse_val),
+                     FRICREG_OK);
+    expect_disk_eval_allocates_nothing(ctx, "disk sparse");
+    ck_assert_int_eq(fricreg_disk_ctx_set_coupling_csr(ctx, M_DENSE, FRICREG_SPARSE_ZERO_BASED,
+                                                       chain_ptr, chain_ind, chain_val),
+                     FRICREG_OK);
+    expect_disk_eval_allocates_nothing(ctx, "disk chain (cold)");
+    expect_disk_eval_allocates_nothing(ctx, "disk chain (warm)");
+    fricreg_disk_ctx_free(ctx);
+}
+END_TEST
+
 START_TEST(test_disk_ctx_set_stribeck)
 {
     struct tally t = fail_each_allocation(&disk_stribeck);
@@ -1540,6 +1680,8 @@ static Suite *alloc_suite(void)
     tcase_add_test(core, test_ctx_set_stribeck);
     tcase_add_test(core, test_disk_ctx_set_stribeck);
     tcase_add_test(core, test_disk_stribeck_eval_does_not_allocate);
+    tcase_add_loop_test(core, test_disk_ctx_set_coupling_sparse, 0, 2);
+    tcase_add_test(core, test_disk_sparse_eval_does_not_allocate);
     suite_add_tcase(s, core);
     TCase *drivers = tcase_create("drivers");
     tcase_add_loop_test(drivers, test_sim_run, 0, (int)(3 * N_INTEGRATORS));

@@ -23,6 +23,7 @@ struct stress_mode {
     int cond_samples;       /* random W per (m, condition number) */
     int qp_cases;           /* random coupled evaluations with mixed near-stick sets */
     uint64_t seed;
+    double disk_chain_m; /* the largest stuck chain of the 2-D context (from 10^4 up, x10) */
 };
 
 /* Counts the failed checks of a group; printf-style message on failure. */
@@ -77,5 +78,6 @@ int stress_long_runs(const struct stress_mode *mode);
 int stress_extreme(const struct stress_mode *mode);
 int stress_exact_random(const struct stress_mode *mode);
 int stress_conditioning(const struct stress_mode *mode);
+int stress_disk_chain(const struct stress_mode *mode);
 
 #endif /* FRICREG_STRESS_H */

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* stress_main.c — fricreg-stress: the numerical stress suite (docs/reliability.md).
  *
- *   fricreg-stress [--full] [--seed S] [long|extreme|exact|conditioning ...]
+ *   fricreg-stress [--full] [--seed S] [long|extreme|exact|conditioning|disk_chain ...]
  *
  * With no group named, runs them all. The short default is ctest's (label stress); --full is
  * bench/stress.sh's: 10^7 steps per system, the chain up to n = 10^6, thousands of random
@@ -15,8 +15,9 @@
 
 #include "stress.h"
 
-static const struct stress_mode short_mode = {0, 1000000, 300, 8, 20, 1e4, 8, 2000, 20261121};
-static const struct stress_mode full_mode = {1, 10000000, 2000, 40, 100, 1e6, 40, 40000, 20261121};
+static const struct stress_mode short_mode = {0, 1000000, 300, 8, 20, 1e4, 8, 2000, 20261121, 1e4};
+static const struct stress_mode full_mode = {1,   10000000, 2000,  40,       100,
+                                             1e6, 40,       40000, 20261121, 1e6};
 
 struct group {
     const char *name;
@@ -24,17 +25,16 @@ struct group {
 };
 
 static const struct group groups[] = {
-    {"long", stress_long_runs},
-    {"extreme", stress_extreme},
-    {"exact", stress_exact_random},
-    {"conditioning", stress_conditioning},
+    {"long", stress_long_runs},        {"extreme", stress_extreme},
+    {"exact", stress_exact_random},    {"conditioning", stress_conditioning},
+    {"disk_chain", stress_disk_chain},
 };
 #define NGROUPS (sizeof groups / sizeof groups[0])
 
 static int usage(void)
 {
-    fprintf(stderr,
-            "usage: fricreg-stress [--full] [--seed S] [long|extreme|exact|conditioning ...]\n");
+    fprintf(stderr, "usage: fricreg-stress [--full] [--seed S] "
+                    "[long|extreme|exact|conditioning|disk_chain ...]\n");
     return 2;
 }
 
