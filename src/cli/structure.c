@@ -191,7 +191,8 @@ static void csv_header(FILE *out, size_t n, size_t m)
 static void observe(const fricreg_structure *s, const struct structure_input *in,
                     struct structure_run *run)
 {
-    fricreg_structure_get_state(s, in->n, run->u, run->v, NULL);
+    /* the velocities only for a row: the summary's are the last state's (write_summary) */
+    fricreg_structure_get_state(s, in->n, run->u, run->rows != NULL ? run->v : NULL, NULL);
     for (size_t i = 0; i < in->n; i++)
         run->peak[i] = fmax(run->peak[i], fabs(run->u[i]));
     if (run->rows == NULL)
@@ -239,17 +240,21 @@ static int advance(fricreg_structure *s, const struct structure_options *o,
     int64_t nsteps = steps < 1.0 ? 1 : (int64_t)steps, start = 0;
     fricreg_structure_get_stat(s, FRICREG_SSTAT_STEPS, &start);
     observe(s, in, run);
+    /* The structure's time, kept here: each call ends on its t1 exactly, and asking the
+     * library (fricreg_structure_get_value) costs its energies, O(nnz), every step. */
+    double t = svalue(s, FRICREG_SVALUE_TIME);
     for (int64_t k = 1; k <= nsteps; k++) {
         spend_steps(s, o, start);
         double t1 = k == nsteps ? o->t_end : (double)k * o->dt;
         /* One step of exactly t1 - t: k dt - (k - 1) dt may exceed dt by a rounding, which
          * would make run() split it. */
-        double h = t1 - svalue(s, FRICREG_SVALUE_TIME);
+        double h = t1 - t;
         int status = o->scheme == SCHEME_GSL
                          ? fricreg_structure_run_ode(s, o->integrator, h, o->rtol, o->atol, t1)
                          : fricreg_structure_run(s, h, t1);
         if (status != FRICREG_OK)
             return status;
+        t = t1;
         observe(s, in, run);
     }
     return FRICREG_OK;
@@ -283,6 +288,7 @@ static void write_summary(FILE *out, const struct structure_options *o,
     int64_t steps = sstat(s, FRICREG_SSTAT_STEPS);
     double *D = run->f; /* the forces are not needed any more */
     fricreg_structure_get_dissipation(s, in->m, D);
+    fricreg_structure_get_state(s, in->n, NULL, run->v, NULL);
     fprintf(out, "{\"system\": \"structure\", \"law\": \"%s\", \"integrator\": \"%s\", ",
             fricreg_law_name(o->law), scheme_name(o));
     if (o->scheme == SCHEME_HHT)
@@ -395,6 +401,7 @@ int cli_structure(int argc, char **argv, FILE *out)
     }
     double eps = 0.0;
     status = setup(&o, &in, s, &eps);
+    cli_free_matrices(&in);
     if (status == 0)
         status = run_structure(s, &o, &in, eps, out);
     fricreg_structure_free(s);

@@ -12,12 +12,17 @@
 
 /* ---- Reading ------------------------------------------------------------------------------ */
 
-void cli_free_model(struct structure_input *in)
+void cli_free_matrices(struct structure_input *in)
 {
     cli_sparse_free(&in->M);
     cli_sparse_free(&in->K);
     cli_sparse_free(&in->C);
     cli_sparse_free(&in->J);
+}
+
+void cli_free_model(struct structure_input *in)
+{
+    cli_free_matrices(in);
     free(in->mun);
     free(in->r);
     free(in->ag);

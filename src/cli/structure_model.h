@@ -29,6 +29,8 @@ int cli_read_model(const struct structure_options *o, struct structure_input *in
 int cli_set_model(const struct structure_options *o, const struct structure_input *in,
                   fricreg_structure *s);
 
+/* Frees M, K, C and J once set (the structure holds its own copies), or with the rest. */
+void cli_free_matrices(struct structure_input *in);
 void cli_free_model(struct structure_input *in);
 
 #endif
