@@ -87,18 +87,16 @@ int cli_read_model(const struct structure_options *o, struct structure_input *in
 /* A's transpose, in the same form (A's rows ascending in each of its columns). */
 static int transpose(const struct cli_sparse *A, struct cli_sparse *T)
 {
-    int64_t nnz = A->colptr[A->cols];
-    *T = (struct cli_sparse){A->cols,
-                             A->rows,
-                             0,
-                             calloc(A->rows + 1, sizeof(int64_t)),
-                             malloc((size_t)(nnz > 0 ? nnz : 1) * sizeof(int64_t)),
-                             malloc((size_t)(nnz > 0 ? nnz : 1) * sizeof(double))};
+    size_t nnz = (size_t)A->colptr[A->cols], room = nnz > 0 ? nnz : 1;
+    *T = (struct cli_sparse){.rows = A->cols, .cols = A->rows};
+    T->colptr = calloc(A->rows + 1, sizeof *T->colptr);
+    T->rowind = malloc(room * sizeof *T->rowind);
+    T->values = malloc(room * sizeof *T->values);
     if (T->colptr == NULL || T->rowind == NULL || T->values == NULL) {
         cli_sparse_free(T);
         return 0;
     }
-    for (int64_t p = 0; p < nnz; p++)
+    for (size_t p = 0; p < nnz; p++)
         T->colptr[A->rowind[p] + 1]++;
     for (size_t i = 0; i < A->rows; i++)
         T->colptr[i + 1] += T->colptr[i];
@@ -114,14 +112,15 @@ static int transpose(const struct cli_sparse *A, struct cli_sparse *T)
     return 1;
 }
 
-/* The most asymmetric pair (i, j), i > j, of a square A given whole: |A_ij - A_ji| largest,
- * the first in row-major order on a tie (as a dense scan finds it). Column j of A and of A^T
- * are merged over the rows below the diagonal. */
+/* A pair (i, j), i > j, and its two entries A_ij and A_ji. */
 struct asymmetry {
     size_t i, j;
     double aij, aji;
 };
 
+/* Keeps in *worst the pair below the diagonal of column j with |A_ij - A_ji| largest, the
+ * first in row-major order on a tie (as a dense scan finds it): column j of A and of A^T
+ * merged by row. */
 static void merge_column(const struct cli_sparse *A, const struct cli_sparse *T, size_t j,
                          struct asymmetry *worst)
 {
@@ -132,8 +131,8 @@ static void merge_column(const struct cli_sparse *A, const struct cli_sparse *T,
         int64_t i = ip < iq ? ip : iq;
         double aij = ip == i ? A->values[p++] : 0.0, aji = iq == i ? T->values[q++] : 0.0;
         double d = fabs(aij - aji), w = fabs(worst->aij - worst->aji);
-        if ((size_t)i > j && (d > w || (d == w && ((size_t)i < worst->i ||
-                                                   ((size_t)i == worst->i && j <= worst->j)))))
+        int first = (size_t)i < worst->i || ((size_t)i == worst->i && j <= worst->j);
+        if ((size_t)i > j && (d > w || (d == w && first)))
             *worst = (struct asymmetry){(size_t)i, j, aij, aji};
     }
 }
