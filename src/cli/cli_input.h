@@ -1,15 +1,12 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* cli_input.h — the input files of `fricreg-sim structure` (input.c). Each reader prints one
- * line naming option, file and line or entry to stderr and returns CLI_EXIT_USAGE on a bad
- * file; on success it returns 0 and the caller frees the array it wrote. */
+/* cli_input.h — the plain-text input files of `fricreg-sim structure` (input.c; its matrices:
+ * matrix_market.h). Each reader prints one line naming option, file and line or entry to
+ * stderr and returns CLI_EXIT_USAGE on a bad file; on success it returns 0 and the caller
+ * frees the array it wrote. */
 #ifndef FRICREG_CLI_INPUT_H
 #define FRICREG_CLI_INPUT_H
 
 #include "cli.h"
-
-/* A Matrix Market file, "matrix coordinate real|integer general|symmetric" (symmetric storage:
- * the lower triangle, mirrored here), as a dense row-major A[rows*cols]. */
-int cli_read_mtx(const char *option, const char *path, size_t *rows, size_t *cols, double **A);
 
 /* Lines of ncols finite numbers (separated by blanks or commas; lines starting with # or %
  * and blank lines skipped) into values[nrows*ncols], row by row. */

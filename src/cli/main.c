@@ -108,7 +108,7 @@ int main(int argc, char **argv)
 static int dispatch(int argc, char **argv)
 {
     /* The program's own choice (docs/reliability.md): GSL reports by status, never aborts —
-     * a malformed Matrix Market file, memory running out inside a GSL stepper. */
+     * memory running out inside a GSL stepper. */
     gsl_set_error_handler_off();
     if (argc < 2) {
         usage(stderr);

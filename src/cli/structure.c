@@ -9,16 +9,8 @@
 #include <string.h>
 #include <time.h>
 
-#include "cli_input.h"
 #include "cli_structure.h"
-#include "fricreg_structure.h"
-
-/* The model as read from the files: M, K, C (NULL: Rayleigh or none) n x n, J m x n. */
-struct structure_input {
-    size_t n, m, nrec;
-    double *M, *K, *C, *J, *mun, *r, *ag;
-    double t0, dt_rec;
-};
+#include "structure_model.h"
 
 /* strtod's ERANGE for an overflow; an underflow is the subnormal or zero meant, as
  * cli_parse_number keeps it. */
@@ -140,132 +132,7 @@ int cli_parse_structure(int argc, char **argv, struct structure_options *o)
     return status != 0 ? status : check_options(o);
 }
 
-/* ---- Reading the model -------------------------------------------------------------------- */
-
-static void free_input(struct structure_input *in)
-{
-    free(in->M);
-    free(in->K);
-    free(in->C);
-    free(in->J);
-    free(in->mun);
-    free(in->r);
-    free(in->ag);
-}
-
-/* A matrix file that must be rows x cols (0: any). */
-static int read_sized(const char *option, const char *path, size_t rows, size_t cols,
-                      size_t *got_rows, size_t *got_cols, double **A)
-{
-    int status = cli_read_mtx(option, path, got_rows, got_cols, A);
-    if (status != 0)
-        return status;
-    if ((rows && *got_rows != rows) || (cols && *got_cols != cols)) {
-        fprintf(stderr, "fricreg-sim: %s %s: the matrix is %zu x %zu, expected %zu x %zu\n", option,
-                path, *got_rows, *got_cols, rows ? rows : *got_rows, cols ? cols : *got_cols);
-        free(*A);
-        *A = NULL;
-        return CLI_EXIT_USAGE;
-    }
-    return 0;
-}
-
-static int read_input(const struct structure_options *o, struct structure_input *in)
-{
-    size_t rows, cols;
-    int status = read_sized("--mass", o->mass, 0, 0, &in->n, &cols, &in->M);
-    if (status == 0 && cols != in->n) {
-        fprintf(stderr, "fricreg-sim: --mass %s: the matrix is %zu x %zu, not square\n", o->mass,
-                in->n, cols);
-        status = CLI_EXIT_USAGE;
-    }
-    if (status == 0)
-        status = read_sized("--stiffness", o->stiffness, in->n, in->n, &rows, &cols, &in->K);
-    if (status == 0 && o->damping != NULL)
-        status = read_sized("--damping", o->damping, in->n, in->n, &rows, &cols, &in->C);
-    if (status == 0)
-        status = read_sized("--contacts", o->contacts, 0, in->n, &in->m, &cols, &in->J);
-    if (status == 0 && o->influence != NULL)
-        status = read_sized("--influence", o->influence, in->n, 1, &rows, &cols, &in->r);
-    if (status == 0) {
-        status = cli_read_columns("--mun", o->mun, 1, &rows, &in->mun);
-        if (status == 0 && rows != in->m) {
-            fprintf(stderr, "fricreg-sim: --mun %s: %zu bounds, %s has %zu contacts (rows)\n",
-                    o->mun, rows, o->contacts, in->m);
-            status = CLI_EXIT_USAGE;
-        }
-    }
-    if (status == 0 && o->ground != NULL)
-        status = cli_read_record("--ground-accel", o->ground, &in->t0, &in->dt_rec, &in->nrec,
-                                 &in->ag);
-    return status;
-}
-
 /* ---- Setting up the structure ------------------------------------------------------------ */
-
-/* The library decides symmetry (its tolerance); the message names the most asymmetric entry
- * as the file numbers it, from 1. */
-static void name_asymmetry(const char *option, const char *path, size_t n, const double A[])
-{
-    size_t bi = 1, bj = 0;
-    double worst = -1.0;
-    for (size_t i = 0; i < n; i++)
-        for (size_t j = 0; j < i; j++)
-            if (fabs(A[i * n + j] - A[j * n + i]) > worst) {
-                worst = fabs(A[i * n + j] - A[j * n + i]);
-                bi = i;
-                bj = j;
-            }
-    fprintf(stderr,
-            "fricreg-sim: %s %s: not symmetric: entry (%zu, %zu) = %.17g but "
-            "(%zu, %zu) = %.17g\n",
-            option, path, bi + 1, bj + 1, A[bi * n + bj], bj + 1, bi + 1, A[bj * n + bi]);
-}
-
-/* A refused model file: one line naming it, exit 2. */
-static int model_error(fricreg_structure *s, int status, const char *option, const char *path,
-                       size_t n, const double A[])
-{
-    if (status == FRICREG_ENOTSYM)
-        name_asymmetry(option, path, n, A);
-    else if (status == FRICREG_ENOTPSD)
-        fprintf(stderr,
-                "fricreg-sim: %s %s: the mass matrix is singular or not positive "
-                "definite (GSL's Cholesky decomposition fails)\n",
-                option, path);
-    else
-        fprintf(stderr, "fricreg-sim: %s %s: %s\n", option, path, fricreg_structure_errmsg(s));
-    return CLI_EXIT_USAGE;
-}
-
-/* Rows of J that are zero, named from 1 (the library refuses them too, numbered from 0). */
-static int check_contacts(const char *path, const struct structure_input *in)
-{
-    for (size_t i = 0; i < in->m; i++) {
-        int moves = 0;
-        for (size_t k = 0; k < in->n; k++)
-            moves |= in->J[i * in->n + k] != 0.0;
-        if (!moves) {
-            fprintf(stderr,
-                    "fricreg-sim: --contacts %s: row %zu is zero: contact %zu does not "
-                    "move\n",
-                    path, i + 1, i + 1);
-            return CLI_EXIT_USAGE;
-        }
-    }
-    return 0;
-}
-
-static int check_bounds(const char *path, const struct structure_input *in)
-{
-    for (size_t i = 0; i < in->m; i++)
-        if (in->mun[i] < 0.0) {
-            fprintf(stderr, "fricreg-sim: --mun %s: bound %zu = %g must be >= 0\n", path, i + 1,
-                    in->mun[i]);
-            return CLI_EXIT_USAGE;
-        }
-    return 0;
-}
 
 /* The default eps, 1 % of the ground's peak velocity |integral of a_g| (a velocity scale known
  * before the run; docs/structural.md, "Choosing eps"), or the library's 1e-3 without motion. */
@@ -292,39 +159,9 @@ static int set_scheme(fricreg_structure *s, const struct structure_options *o)
 static int setup(const struct structure_options *o, const struct structure_input *in,
                  fricreg_structure *s, double *eps)
 {
-    int status = fricreg_structure_set_mass(s, in->n, in->M);
-    if (status != FRICREG_OK)
-        return model_error(s, status, "--mass", o->mass, in->n, in->M);
-    if ((status = fricreg_structure_set_stiffness(s, in->n, in->K)) != FRICREG_OK)
-        return model_error(s, status, "--stiffness", o->stiffness, in->n, in->K);
-    if (in->C != NULL && (status = fricreg_structure_set_damping(s, in->n, in->C)) != FRICREG_OK)
-        return model_error(s, status, "--damping", o->damping, in->n, in->C);
-    if (o->rayleigh_given && fricreg_structure_set_rayleigh(s, o->a0, o->a1) != FRICREG_OK)
-        return cli_usage_error("--rayleigh", fricreg_structure_errmsg(s));
-    if ((status = check_contacts(o->contacts, in)) != 0)
+    int status = cli_set_model(o, in, s);
+    if (status != 0)
         return status;
-    if ((status = fricreg_structure_set_contacts(s, in->m, in->n, in->J)) != FRICREG_OK)
-        return model_error(s, status, "--contacts", o->contacts, in->n, NULL);
-    if ((status = check_bounds(o->mun, in)) != 0)
-        return status;
-    if ((status = fricreg_structure_set_bounds(s, in->m, in->mun)) != FRICREG_OK)
-        return model_error(s, status, "--mun", o->mun, in->n, NULL);
-    if (in->r != NULL && (status = fricreg_structure_set_influence(s, in->n, in->r)) != FRICREG_OK)
-        return model_error(s, status, "--influence", o->influence, in->n, NULL);
-    if (in->r == NULL && in->ag != NULL) { /* every DOF translates with the ground */
-        double *ones = malloc(in->n * sizeof *ones);
-        if (ones == NULL)
-            return cli_usage_error("--ground-accel", "out of memory");
-        for (size_t k = 0; k < in->n; k++)
-            ones[k] = 1.0;
-        status = fricreg_structure_set_influence(s, in->n, ones);
-        free(ones);
-        if (status != FRICREG_OK)
-            return cli_usage_error("--ground-accel", fricreg_structure_errmsg(s));
-    }
-    if (in->ag != NULL &&
-        fricreg_structure_set_ground_accel(s, in->t0, in->dt_rec, in->nrec, in->ag) != 0)
-        return model_error(s, FRICREG_EINVAL, "--ground-accel", o->ground, in->n, NULL);
     *eps = o->eps > 0.0 ? o->eps : default_eps(in);
     if (fricreg_structure_set_law(s, o->law, *eps) != FRICREG_OK)
         return cli_usage_error("--eps", fricreg_structure_errmsg(s));
@@ -354,7 +191,8 @@ static void csv_header(FILE *out, size_t n, size_t m)
 static void observe(const fricreg_structure *s, const struct structure_input *in,
                     struct structure_run *run)
 {
-    fricreg_structure_get_state(s, in->n, run->u, run->v, NULL);
+    /* the velocities only for a row: the summary's are the last state's (write_summary) */
+    fricreg_structure_get_state(s, in->n, run->u, run->rows != NULL ? run->v : NULL, NULL);
     for (size_t i = 0; i < in->n; i++)
         run->peak[i] = fmax(run->peak[i], fabs(run->u[i]));
     if (run->rows == NULL)
@@ -402,17 +240,21 @@ static int advance(fricreg_structure *s, const struct structure_options *o,
     int64_t nsteps = steps < 1.0 ? 1 : (int64_t)steps, start = 0;
     fricreg_structure_get_stat(s, FRICREG_SSTAT_STEPS, &start);
     observe(s, in, run);
+    /* The structure's time, kept here: each call ends on its t1 exactly, and asking the
+     * library (fricreg_structure_get_value) costs its energies, O(nnz), every step. */
+    double t = svalue(s, FRICREG_SVALUE_TIME);
     for (int64_t k = 1; k <= nsteps; k++) {
         spend_steps(s, o, start);
         double t1 = k == nsteps ? o->t_end : (double)k * o->dt;
         /* One step of exactly t1 - t: k dt - (k - 1) dt may exceed dt by a rounding, which
          * would make run() split it. */
-        double h = t1 - svalue(s, FRICREG_SVALUE_TIME);
+        double h = t1 - t;
         int status = o->scheme == SCHEME_GSL
                          ? fricreg_structure_run_ode(s, o->integrator, h, o->rtol, o->atol, t1)
                          : fricreg_structure_run(s, h, t1);
         if (status != FRICREG_OK)
             return status;
+        t = t1;
         observe(s, in, run);
     }
     return FRICREG_OK;
@@ -446,6 +288,7 @@ static void write_summary(FILE *out, const struct structure_options *o,
     int64_t steps = sstat(s, FRICREG_SSTAT_STEPS);
     double *D = run->f; /* the forces are not needed any more */
     fricreg_structure_get_dissipation(s, in->m, D);
+    fricreg_structure_get_state(s, in->n, NULL, run->v, NULL);
     fprintf(out, "{\"system\": \"structure\", \"law\": \"%s\", \"integrator\": \"%s\", ",
             fricreg_law_name(o->law), scheme_name(o));
     if (o->scheme == SCHEME_HHT)
@@ -547,20 +390,21 @@ int cli_structure(int argc, char **argv, FILE *out)
     if (status != 0)
         return status;
     struct structure_input in = {0};
-    if ((status = read_input(&o, &in)) != 0) {
-        free_input(&in);
+    if ((status = cli_read_model(&o, &in)) != 0) {
+        cli_free_model(&in);
         return status;
     }
     fricreg_structure *s = NULL;
     if (fricreg_structure_create(in.n, in.m, &s) != FRICREG_OK) {
-        free_input(&in);
+        cli_free_model(&in);
         return cli_usage_error("structure", "cannot create the structure (out of memory)");
     }
     double eps = 0.0;
     status = setup(&o, &in, s, &eps);
+    cli_free_matrices(&in);
     if (status == 0)
         status = run_structure(s, &o, &in, eps, out);
     fricreg_structure_free(s);
-    free_input(&in);
+    cli_free_model(&in);
     return status;
 }
