@@ -94,7 +94,7 @@ static int jacobian(double t, const double y[], double *dfdy, double dfdt[], voi
 static int fixed_step(gsl_odeiv2_driver *d, double *t, double h, double y[], int depth)
 {
     double t0 = *t;
-    int status = gsl_odeiv2_evolve_apply_fixed_step(d->e, NULL, d->s, d->sys, t, h, y);
+    int status = fr_ode_apply_fixed_step(d, t, h, y);
     if (status != GSL_FAILURE || depth == MAX_HALVINGS)
         return status;
     *t = t0;
