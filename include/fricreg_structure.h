@@ -410,7 +410,9 @@ FRICREG_API int fricreg_structure_set_max_steps(fricreg_structure *s, int64_t ma
  *  friction's steepest slope as the forward-difference Jacobian sees it: near 1/DBL_EPSILON the
  *  identity is lost to rounding); FRICREG_ENONFINITE; FRICREG_ESTEP; FRICREG_ESINGULAR;
  *  FRICREG_EDIVERGED (the state non-finite or beyond 1e100); FRICREG_EINTEGRATOR (GSL failed,
- *  e.g. the adaptive step underflowed); FRICREG_EWORK (more adaptive steps than
+ *  e.g. the adaptive step underflowed, or an entry of an implicit stepper's Jacobian times the
+ *  largest step is beyond 1e100 or NaN: a load or a state so large that GSL's LU could round
+ *  I - h c J to a singular matrix); FRICREG_EWORK (more adaptive steps than
  *  fricreg_structure_set_max_steps allows); FRICREG_ENOMEM. On failure the state is that of the
  *  last accepted step, its acceleration and forces from the equation of motion there (or,
  *  where that fails too, FRICREG_ESINGULAR or FRICREG_EDIVERGED, those of the run's start);

@@ -18,6 +18,7 @@
 #define _GNU_SOURCE
 #include <check.h>
 #include <dlfcn.h>
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 
@@ -430,6 +431,26 @@ START_TEST(lu_steppers_on_a_stiff_structure)
 }
 END_TEST
 
+/* A load of -DBL_MAX on a free mass (fuzz finding, fuzz_structure): bsimp at dt = 3.6e6 from
+ * rest. The input work's row of the Jacobian holds the load (W_in' = v.p~), h times it is -Inf,
+ * GSL's LU pivoted on it and met an exactly zero pivot further on, reported to the handler.
+ * The structure now stops an implicit stepper whose Jacobian times the step has an entry beyond
+ * 1e100 (FRICREG_EINTEGRATOR), before GSL factors it. */
+START_TEST(lu_steppers_under_an_extreme_load)
+{
+    const double J[2] = {1.0, 0.0}, p[2] = {-DBL_MAX, -0.0122};
+    fricreg_structure *s = NULL;
+    ck_assert_int_eq(fricreg_structure_create(2, 1, &s), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_contacts(s, 1, 2, J), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_load(s, 2, p, 0.0, 0.0, 0, NULL), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_BSIMP, 3646850.5859375, 0.0, 0.0,
+                                               3646850.5859375),
+                     FRICREG_EINTEGRATOR);
+    assert_handler_intact("fricreg_structure_run_ode, bsimp, load -DBL_MAX");
+    fricreg_structure_free(s);
+}
+END_TEST
+
 static Suite *handler_suite(void)
 {
     Suite *s = suite_create("gsl_handler");
@@ -446,6 +467,7 @@ static Suite *handler_suite(void)
     tcase_add_test(tc, structure_redundant_contacts);
     tcase_add_test(tc, iterating_steppers_without_atol);
     tcase_add_test(tc, lu_steppers_on_a_stiff_structure);
+    tcase_add_test(tc, lu_steppers_under_an_extreme_load);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -642,6 +642,28 @@ START_TEST(test_fixed_step_stepper_holds_the_stick)
 }
 END_TEST
 
+/* GSL's bsimp breaks off a step that meets its runaway test, a change beyond 100 dim times
+ * |y_i| (here x0 = 1e-300 once the forcing a = 2 breaks the stick near t = 0.52), with yerr =
+ * +Inf and GSL_SUCCESS: a fixed step took it as done without moving the state, and the run
+ * returned FRICREG_OK frozen at x = 1e-300, v = 0 (the run from x0 = 0 ends at x = 1.2). Found
+ * while reducing a fuzz finding of the structure target. Such a step now fails, is retried in
+ * halves like any failed implicit step, and the run reports FRICREG_EINTEGRATOR. */
+START_TEST(test_bsimp_fixed_step_does_not_freeze)
+{
+    fricreg_sim *sim = make(FRICREG_SYSTEM_OSCILLATOR);
+    ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_A, 2.0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_X0, 1e-300), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_BSIMP, 0.01, 0.0, 0.0),
+                     FRICREG_OK);
+    int status = fricreg_sim_run(sim, 3.0);
+    double x, v;
+    ck_assert_int_eq(fricreg_sim_get_state(sim, 1, &x, &v), FRICREG_OK);
+    ck_assert_msg(status == FRICREG_EINTEGRATOR || (status == FRICREG_OK && x > 1.0),
+                  "status %d, x = %g, v = %g", status, x, v);
+    fricreg_sim_free(sim);
+}
+END_TEST
+
 /* ---- get_param ----------------------------------------------------------------------------- */
 
 #define NPARAMS 11 /* enum fricreg_param: 1 … 11 */
@@ -921,6 +943,7 @@ static Suite *sim_api_suite(void)
     tcase_add_test(steppers, test_integrator_names_round_trip);
     tcase_add_loop_test(steppers, test_adaptive_stepper_holds_the_stick, 0, 11);
     tcase_add_loop_test(steppers, test_fixed_step_stepper_holds_the_stick, 0, 10);
+    tcase_add_test(steppers, test_bsimp_fixed_step_does_not_freeze);
     suite_add_tcase(s, steppers);
     return s;
 }

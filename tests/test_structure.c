@@ -1580,6 +1580,28 @@ START_TEST(eigen_solves_of_extreme_models)
 }
 END_TEST
 
+/* run_ode with a fixed bsimp step on two coupled DOFs (K = [[1, 0.5], [0.5, 1]]) from
+ * u0 = (1, 1e-300): every step met bsimp's runaway test (the second DOF's change beside its
+ * 1e-300), which GSL reports only by yerr = +Inf, and the run returned FRICREG_OK with u frozen
+ * at u0 after 100 steps (from u0 = (1, 0) it ends at (0.5497, -0.2105)). Found while reducing a
+ * fuzz finding (an adaptive bsimp run that never ended). The run now fails, nothing moved. */
+START_TEST(bsimp_fixed_step_does_not_freeze)
+{
+    const double K[4] = {1.0, 0.5, 0.5, 1.0}, u0[2] = {1.0, 1e-300}, v0[2] = {0.0, 0.0};
+    fricreg_structure *s = make(2, 1);
+    ok(s, fricreg_structure_set_stiffness(s, 2, K));
+    frictionless(s, 2);
+    ok(s, fricreg_structure_set_initial(s, 2, u0, v0));
+    ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_BSIMP, 0.01, 0.0, 0.0, 1.0),
+                     FRICREG_EINTEGRATOR);
+    double u[2];
+    ok(s, fricreg_structure_get_state(s, 2, u, NULL, NULL));
+    ck_assert_double_eq(value(s, FRICREG_SVALUE_TIME), 0.0);
+    ck_assert_mem_eq(u, u0, sizeof u);
+    fricreg_structure_free(s);
+}
+END_TEST
+
 static Suite *structure_suite(void)
 {
     Suite *suite = suite_create("structure");
@@ -1627,6 +1649,7 @@ static Suite *structure_suite(void)
     tcase_add_test(errors, coupling_out_of_range);
     tcase_add_test(errors, extreme_forces_at_rest);
     tcase_add_test(errors, eigen_solves_of_extreme_models);
+    tcase_add_test(errors, bsimp_fixed_step_does_not_freeze);
     suite_add_tcase(suite, errors);
     return suite;
 }

@@ -1,8 +1,12 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* ode_driver.c — gsl_odeiv2_driver_alloc_y_new, with every allocation checked (ode_driver.h):
- * fricreg's own, except the stepper's private state, which only GSL can allocate. */
+ * fricreg's own, except the stepper's private state, which only GSL can allocate; and a fixed
+ * step that fails where the stepper says so only in its error estimate (bsimp). */
+#include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
+#include <gsl/gsl_errno.h>
 #include <gsl/gsl_machine.h>
 
 #include "ode_driver.h"
@@ -71,4 +75,18 @@ gsl_odeiv2_driver *fr_ode_driver_alloc(const gsl_odeiv2_system *sys, const gsl_o
         return NULL;
     }
     return d;
+}
+
+int fr_ode_apply_fixed_step(gsl_odeiv2_driver *d, double *t, double h, double y[])
+{
+    double t0 = *t;
+    size_t dim = d->sys->dimension;
+    int status = gsl_odeiv2_evolve_apply_fixed_step(d->e, NULL, d->s, d->sys, t, h, y);
+    for (size_t k = 0; status == GSL_SUCCESS && k < dim; k++)
+        if (isfinite(y[k]) && !isfinite(d->e->yerr[k])) {
+            memcpy(y, d->e->y0, dim * sizeof *y); /* the step's start, as GSL keeps it */
+            *t = t0;
+            status = GSL_FAILURE;
+        }
+    return status;
 }

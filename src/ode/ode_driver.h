@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* ode_driver.h — internal: a gsl_odeiv2_driver assembled from GSL's parts, all or nothing.
+/* ode_driver.h — internal: a gsl_odeiv2_driver assembled from GSL's parts, all or nothing, and
+ * the drivers' fixed step on it.
  *
  * gsl_odeiv2_driver_alloc_y_new cannot be used when memory may run out: its control,
  * gsl_odeiv2_control_y_new, passes the NULL of a failed allocation straight on to
@@ -15,5 +16,15 @@
  * GSL's error handler (docs/reliability.md). Free with gsl_odeiv2_driver_free. */
 gsl_odeiv2_driver *fr_ode_driver_alloc(const gsl_odeiv2_system *sys, const gsl_odeiv2_step_type *T,
                                        double hstart, double epsabs, double epsrel);
+
+/* One fixed step of h from (*t, y) by the driver's stepper, as gsl_odeiv2_evolve_apply_fixed_step
+ * (no step control), which also fails where the stepper tells its failure only by its error
+ * estimate: GSL's bsimp breaks off a step that meets its runaway test (a change of the state
+ * beyond 100 dim times |y_i| summed over i: a component of 1e-300 beside a change of 1e-3)
+ * with yerr = +Inf, y not advanced and GSL_SUCCESS, so a fixed step "succeeded" without
+ * moving the state, and a run returned FRICREG_OK on a frozen state (fuzz finding). An error
+ * estimate that is not finite beside a finite y restores y and *t and returns GSL_FAILURE,
+ * which the drivers retry in halves. */
+int fr_ode_apply_fixed_step(gsl_odeiv2_driver *d, double *t, double h, double y[]);
 
 #endif

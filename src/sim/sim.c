@@ -458,7 +458,7 @@ static int apply_fixed_step(fricreg_sim *sim, gsl_odeiv2_driver *d,
     double t0 = sim->t, *y = sim->y;
     if (integ->central || integ->fixed_type != NULL) /* explicit: they never fail a step */
         return own_step(sim, d, h);
-    int status = gsl_odeiv2_evolve_apply_fixed_step(d->e, NULL, d->s, d->sys, &sim->t, h, y);
+    int status = fr_ode_apply_fixed_step(d, &sim->t, h, y);
     if (status != GSL_FAILURE || depth == MAX_HALVINGS || sim->rhs_status != FRICREG_OK)
         return status;
     sim->rejected_steps++;

@@ -28,12 +28,21 @@
  * 1e12, below 1/DBL_EPSILON = 4.5e15 where I - h c J rounds to a singular matrix (C = 1e300
  * [[1, 1], [1, 1]] at h = 1: 1 + 1e300 = 1e300, and the LU's second pivot is exactly 0). */
 #define NEWTON_RATE_LIMIT 1e12
+/* The largest |J_ij| h_max of a Jacobian handed to GSL's LU-based steppers. The rates above
+ * bound the motion's rows, not the energies' (v.p~ in W_in' has the load in its row) nor a
+ * forward difference of a huge acceleration (its rounding, 1e-8 |a|, becomes an entry): a
+ * load of -DBL_MAX at h = 3.6e6 (bsimp) made an entry -Inf, GSL's LU pivoted on it, every
+ * multiplier below it was 0, and a later pivot exactly 0. Far above any useful run; below it
+ * no multiplier underflows. */
+#define JACOBIAN_LIMIT 1e100
 
 struct ode_run {
     fricreg_structure *s;
     size_t dim;
     double *jac_work; /* [3 dim] */
+    double h_max;     /* the largest step GSL may take */
     int rhs_status;
+    size_t jac_beyond; /* the Jacobian's entry beyond JACOBIAN_LIMIT (rhs_status EINTEGRATOR) */
 };
 
 static int rhs(double t, const double y[], double dydt[], void *params)
@@ -65,11 +74,20 @@ static int rhs(double t, const double y[], double dydt[], void *params)
     return GSL_SUCCESS;
 }
 
-/* For the implicit steppers: forward differences, as the drivers' (fd_jacobian.h). */
+/* For the implicit steppers: forward differences, as the drivers' (fd_jacobian.h). They are
+ * all GSL's LU-based ones: an entry beyond JACOBIAN_LIMIT / h_max (or NaN) stops the run
+ * before GSL factors I - h c J (FRICREG_EINTEGRATOR). */
 static int jacobian(double t, const double y[], double *dfdy, double dfdt[], void *params)
 {
     struct ode_run *run = params;
-    return fr_fd_jacobian(rhs, run, run->dim, run->jac_work, t, y, dfdy, dfdt);
+    int status = fr_fd_jacobian(rhs, run, run->dim, run->jac_work, t, y, dfdy, dfdt);
+    for (size_t k = 0; status == GSL_SUCCESS && k < run->dim * run->dim; k++)
+        if (!(fabs(dfdy[k]) * run->h_max <= JACOBIAN_LIMIT)) {
+            run->rhs_status = FRICREG_EINTEGRATOR;
+            run->jac_beyond = k;
+            return GSL_EBADFUNC; /* GSL stops the step at once */
+        }
+    return status;
 }
 
 /* One fixed step of size h; an implicit or multistep stepper whose iteration fails (at an
@@ -77,7 +95,7 @@ static int jacobian(double t, const double y[], double *dfdy, double dfdt[], voi
 static int fixed_step(gsl_odeiv2_driver *d, double *t, double h, double y[], int depth)
 {
     double t0 = *t;
-    int status = gsl_odeiv2_evolve_apply_fixed_step(d->e, NULL, d->s, d->sys, t, h, y);
+    int status = fr_ode_apply_fixed_step(d, t, h, y);
     if (status != GSL_FAILURE || depth == MAX_HALVINGS)
         return status;
     *t = t0;
@@ -132,6 +150,13 @@ static int integrate(fricreg_structure *s, struct ode_run *run, gsl_odeiv2_drive
                 t = t_end;
         }
         if (status != GSL_SUCCESS) {
+            if (run->rhs_status == FRICREG_EINTEGRATOR)
+                return fr_fail(s, FRICREG_EINTEGRATOR,
+                               "run_ode: t = %.17g: the Jacobian's entry (%zu, %zu) times the "
+                               "step %g is beyond 1e100 (or NaN): GSL's LU could round I - h J "
+                               "to a singular matrix; the load or the state is too large for %s",
+                               t, run->jac_beyond / run->dim, run->jac_beyond % run->dim,
+                               run->h_max, integ->name);
             if (run->rhs_status != FRICREG_OK)
                 return fr_fail(s,
                                run->rhs_status == FRICREG_ENONFINITE ? FRICREG_EDIVERGED
@@ -232,7 +257,10 @@ int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, d
 
     /* Everything is allocated before the run starts: a failed allocation leaves the
      * structure as it was. */
-    struct ode_run run = {.s = s, .dim = 2 * s->n + 2 + s->m, .rhs_status = FRICREG_OK};
+    struct ode_run run = {.s = s,
+                          .dim = 2 * s->n + 2 + s->m,
+                          .h_max = h_max,
+                          .rhs_status = FRICREG_OK};
     double *y = malloc(run.dim * sizeof *y);
     run.jac_work = malloc(3 * run.dim * sizeof *run.jac_work);
     if (y == NULL || run.jac_work == NULL) {
