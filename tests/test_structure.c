@@ -587,6 +587,85 @@ START_TEST(every_law_on_coupled_contacts)
 }
 END_TEST
 
+/* A shear chain of 100 storeys (lumped masses 1 + 0.01 i kg, storey stiffness 400 N/m, a
+ * damper between each storey and the one below): W = J M^-1 J^T is tridiagonal, coupled, and
+ * the structure's context holds it sparse (beyond 64 contacts). Shaken at the ground for 200
+ * steps, each step's forces must be the consistent law at its end: the law evaluated by a
+ * context of its own on the dense W the test forms, at zdot = J v and a_free = J a - W f
+ * (J a = J M^-1 (p - C v - K u) + W f). */
+START_TEST(many_coupled_contacts_obey_the_law)
+{
+    enum { N = 100, STEPS = 200 };
+    double *M = calloc(N * N, sizeof *M), *K = calloc(N * N, sizeof *K);
+    double *J = calloc(N * N, sizeof *J), *W = calloc(N * N, sizeof *W);
+    double mun[N], minv[N], r[N], ag[2 * STEPS + 1];
+    for (int i = 0; i < N; i++) {
+        M[i * N + i] = 1.0 + 0.01 * i;
+        minv[i] = 1.0 / M[i * N + i];
+        mun[i] = 0.3 * M[i * N + i] * (1.0 + 0.2 * sin(i));
+        r[i] = 1.0;
+        K[i * N + i] = i + 1 < N ? 800.0 : 400.0;
+        if (i > 0)
+            K[i * N + i - 1] = K[(i - 1) * N + i] = -400.0;
+        J[i * N + i] = 1.0;
+        if (i > 0)
+            J[i * N + i - 1] = -1.0;
+    }
+    for (int i = 0; i < N; i++) /* W = J M^-1 J^T, tridiagonal */
+        for (int j = 0; j < N; j++)
+            for (int k = 0; k < N; k++)
+                W[i * N + j] += J[i * N + k] * minv[k] * J[j * N + k];
+    for (int k = 0; k <= 2 * STEPS; k++)
+        ag[k] = 2.1 * sin(3.7 * k * 0.005);
+    fricreg_structure *s = make(N, N);
+    ok(s, fricreg_structure_set_mass(s, N, M));
+    ok(s, fricreg_structure_set_stiffness(s, N, K));
+    ok(s, fricreg_structure_set_rayleigh(s, 0.05, 0.002));
+    ok(s, fricreg_structure_set_contacts(s, N, N, J));
+    ok(s, fricreg_structure_set_bounds(s, N, mun));
+    ok(s, fricreg_structure_set_law(s, FRICREG_LAW_QUINN, 0.01));
+    ok(s, fricreg_structure_set_influence(s, N, r));
+    ok(s, fricreg_structure_set_ground_accel(s, 0.0, 0.005, 2 * STEPS + 1, ag));
+    fricreg_ctx *ctx = NULL;
+    ck_assert_int_eq(fricreg_ctx_create(N, &ctx), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, 0.01), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, N, mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, N, W), FRICREG_OK);
+    double u[N], v[N], a[N], f[N], zdot[N], afree[N], law[N], worst = 0.0;
+    int sticking = 0, sliding = 0;
+    for (int step = 0; step < STEPS; step++) {
+        ok(s, fricreg_structure_step(s, 0.01));
+        ok(s, fricreg_structure_get_state(s, N, u, v, a));
+        ok(s, fricreg_structure_get_forces(s, N, f));
+        for (int i = 0; i < N; i++) {
+            zdot[i] = v[i] - (i > 0 ? v[i - 1] : 0.0);
+            double ja = a[i] - (i > 0 ? a[i - 1] : 0.0), wf = 0.0;
+            for (int j = 0; j < N; j++)
+                wf += W[i * N + j] * f[j];
+            afree[i] = ja - wf;
+        }
+        ck_assert_int_eq(fricreg_ctx_eval(ctx, N, zdot, afree, law, NULL), FRICREG_OK);
+        for (int i = 0; i < N; i++) {
+            worst = fmax(worst, fabs(f[i] - law[i]) / mun[i]);
+            sticking += fabs(zdot[i]) < 0.01;
+            sliding += fabs(zdot[i]) >= 0.01;
+        }
+    }
+    printf("many coupled contacts: max |f - F(zdot, a_free)| / mun = %.2e over %d steps; "
+           "%d near-stick and %d sliding contact-steps; %lld Newton iterations\n",
+           worst, STEPS, sticking, sliding, (long long)stat(s, FRICREG_SSTAT_NEWTON_ITERATIONS));
+    ck_assert_double_le(worst, 1e-7);
+    ck_assert_int_gt(sticking, STEPS * N / 10); /* both pieces of the law are exercised */
+    ck_assert_int_gt(sliding, STEPS * N / 10);
+    ck_assert_int_eq(stat(s, FRICREG_SSTAT_NEWTON_FAILURES), 0);
+    /* Newton on the exact tangent: 231 iterations measured, about one a step */
+    ck_assert_int_le(stat(s, FRICREG_SSTAT_NEWTON_ITERATIONS), 2 * STEPS);
+    fricreg_ctx_free(ctx);
+    fricreg_structure_free(s);
+    free(M), free(K), free(J), free(W);
+}
+END_TEST
+
 /* The ground motion fed step by step, {a_g(t), a_g(t + dt)} before each step, gives the run
  * of the whole record sampled at the steps: the record is read at step ends only. */
 START_TEST(ground_motion_step_by_step)
@@ -1618,6 +1697,7 @@ static Suite *structure_suite(void)
     tcase_add_test(friction, oscillator_forced_dissipation_matches_exact);
     tcase_add_test(friction, coupled_contacts_hold_a_static_load);
     tcase_add_loop_test(friction, coupled_contacts_shaken, 0, 2);
+    tcase_add_test(friction, many_coupled_contacts_obey_the_law);
     tcase_add_loop_test(friction, every_law_on_coupled_contacts, FRICREG_LAW_COULOMB,
                         FRICREG_LAW_QUINN + 1);
     tcase_add_test(friction, ground_motion_step_by_step);

@@ -25,6 +25,15 @@ double fr_ctx_eps(const fricreg_ctx *ctx);
 const double *fr_ctx_bounds(const fricreg_ctx *ctx);
 const double *fr_ctx_coupling_diagonal(const fricreg_ctx *ctx);
 
+/* The tangent of the last successful evaluation (fricreg_ctx_tangent) as one row per contact,
+ * for a driver that solves with it without the m x m matrix (tangent_rows.c): implicit[i] = 0,
+ * df_i = coef_i dzdot_i; implicit[i] = 1, [W df]_i + coef_i dzdot_i + dafree_i = 0 (the
+ * consistent law's free contacts; a diagonal W's near-stick ones). implicit[m], coef[m] out.
+ * FRICREG_OK; FRICREG_EINVAL where the tangent has no such rows (the paper's partition with a
+ * coupled W and a near-stick set; not recorded) or where fricreg_ctx_tangent would refuse it
+ * (recorded). */
+int fr_ctx_tangent_rows(fricreg_ctx *ctx, unsigned char implicit[], double coef[]);
+
 /* lambda * eps, finite where lambda = mun/eps overflows, so that the step guard can still name
  * the eps that passes (eps >= dt lambda eps / bound). chord = 0: the stick-zone stiffness of
  * fricreg_ctx_stick_stiffness. chord = 1: the chord stiffness of (1), (2) and Karnopp, their

@@ -66,8 +66,8 @@ static int residual(fricreg_structure *s, const gsl_vector *f, gsl_vector *G, do
  * a step within STEP_RTOL of the factored dt is taken with that dt (fr_newmark_solve), not
  * factored again; the clock keeps its exact times. */
 #define STEP_RTOL 1e-9
-/* Up to this many contacts the dense Newton matrix is allocated with K_eff's factor even where
- * W is diagonal, for the steps that need it (a falling Stribeck branch): beyond, at that use. */
+/* Up to this many contacts the dense Newton matrix is allocated with K_eff's factor, for the
+ * steps that need it (a falling Stribeck branch): beyond, at that use. */
 #define DENSE_FALLBACK_MAX 64
 static int all_finite(const cholmod_sparse *A)
 {
@@ -100,7 +100,7 @@ static int form_step_factor(fricreg_structure *s, double dt)
     cholmod_l_free_sparse(&Keff, &s->cc);
     if (status != FRICREG_OK)
         return status;
-    int dense = s->w_diag == NULL || s->m <= DENSE_FALLBACK_MAX;
+    int dense = s->m <= DENSE_FALLBACK_MAX;
     if (fr_newton_matrix_prepare(&s->newton, s->step.D, dense, &s->cc) != FRICREG_OK) {
         fr_cfactor_free(&s->step, &s->cc);
         return fr_fail(s, FRICREG_ENOMEM, "step: no memory for the Newton matrix");
@@ -205,8 +205,8 @@ static int iterate(fricreg_structure *s, double tol, int stop_slips, double *phi
     while (*rinf != 0.0 && (done == 0 || *rinf > tol) && *iters < s->newton_max) {
         if (!isfinite(*phi))
             break;
-        int status = fr_newton_direction(&s->newton, s->ctx, c, s->mass.D, s->step.D, s->w_diag,
-                                         s->G->data, s->df->data, &s->cc);
+        int status = fr_newton_direction(&s->newton, s->ctx, c, s->mass.D, s->step.D, s->G->data,
+                                         s->df->data, &s->cc);
         if (status == FRICREG_ENOMEM)
             return fr_fail(s, status, "step: no memory for the dense Newton matrix (%zu contacts)",
                            s->m);

@@ -8,13 +8,15 @@
 #include <gsl/gsl_linalg.h>
 
 #include "base/gsl_mem.h"
+#include "base/sparse_ops.h"
+#include "ctx/ctx_driver.h"
 #include "newton_matrix.h"
 
 void fr_newton_matrix_free(struct fr_newton_matrix *nm, cholmod_common *c)
 {
-    void *blocks[] = {nm->Fz,   nm->Fa,  nm->T,     nm->row,  nm->perm, nm->tau,
-                      nm->norm, nm->rhs, nm->sol,   nm->rows, nm->fz,   nm->fa,
-                      nm->d,    nm->e,   nm->shift, nm->in_n, nm->b};
+    void *blocks[] = {nm->Fz,   nm->Fa,    nm->T,    nm->row,  nm->perm,    nm->tau,
+                      nm->norm, nm->rhs,   nm->sol,  nm->rows, nm->fz,      nm->coef,
+                      nm->wg,   nm->shift, nm->in_n, nm->b,    nm->implicit};
     for (size_t k = 0; k < sizeof blocks / sizeof *blocks; k++)
         free(blocks[k]); /* gsl_mem.h: one block each */
     fr_masked_factor_free(&nm->block, c);
@@ -140,7 +142,7 @@ static int dense_direction(struct fr_newton_matrix *nm, fricreg_ctx *ctx, double
     return FRICREG_OK;
 }
 
-/* ---- Diagonal ---------------------------------------------------------------------------- */
+/* ---- Contact by contact ---------------------------------------------------------------- */
 
 int fr_newton_matrix_prepare(struct fr_newton_matrix *nm, const cholmod_sparse *Weff, int dense,
                              cholmod_common *c)
@@ -151,44 +153,61 @@ int fr_newton_matrix_prepare(struct fr_newton_matrix *nm, const cholmod_sparse *
         fr_newton_matrix_free(nm, c);
         nm->m = m;
         nm->fz = malloc(m * sizeof *nm->fz);
-        nm->fa = malloc(m * sizeof *nm->fa);
-        nm->d = malloc(m * sizeof *nm->d);
-        nm->e = malloc(m * sizeof *nm->e);
+        nm->coef = malloc(m * sizeof *nm->coef);
+        nm->wg = malloc(m * sizeof *nm->wg);
         nm->shift = malloc(m * sizeof *nm->shift);
         nm->b = malloc(m * sizeof *nm->b);
+        nm->implicit = malloc(m);
         nm->in_n = malloc(m);
-        if (!(nm->fz && nm->fa && nm->d && nm->e && nm->shift && nm->b && nm->in_n))
+        if (!(nm->fz && nm->coef && nm->wg && nm->shift && nm->b && nm->implicit && nm->in_n)) {
+            fr_newton_matrix_free(nm, c); /* none kept: the next call allocates them all */
             return FRICREG_ENOMEM;
+        }
     }
     if (dense && !dense_allocate(nm))
         return FRICREG_ENOMEM;
     return fr_masked_factor_prepare(&nm->block, Weff, c);
 }
 
-/* F_z and F_a's diagonals, the only entries with a diagonal W. */
-static int diagonal_slopes(struct fr_newton_matrix *nm, fricreg_ctx *ctx)
+/* Each row of T df = -G from the context's rows (fr_ctx_tangent_rows), into N's shifts and
+ * right-hand sides over W_eff (newton_matrix.h); df_R = -G_R. 1 if every row of N fits the
+ * symmetric form (shift >= 0), 0 to go dense (a falling Stribeck branch). */
+static int rows_split(struct fr_newton_matrix *nm, double coef, const cholmod_sparse *W,
+                      const double G[], double df[])
 {
     size_t m = nm->m;
-    if (!dense_allocate(nm))
-        return FRICREG_ENOMEM;
-    int status = fricreg_ctx_tangent(ctx, m, nm->Fz, nm->Fa);
-    if (status != FRICREG_OK)
-        return status;
+    int any_implicit = 0;
+    for (size_t i = 0; i < m; i++)
+        any_implicit |= nm->implicit[i];
+    if (any_implicit)
+        fr_sym_mult(W, 1.0, G, 0.0, nm->wg); /* [W G] */
     for (size_t i = 0; i < m; i++) {
-        nm->fz[i] = nm->Fz[i * m + i];
-        nm->fa[i] = nm->Fa[i * m + i];
+        double k = nm->coef[i];
+        nm->fz[i] = nm->implicit[i] ? -k : k; /* zero where F_i does not move with zdot_i */
+        nm->in_n[i] = nm->implicit[i] || k != 0.0;
+        nm->shift[i] = 0.0;
+        if (nm->implicit[i]) { /* (1 + c k_i) [W_eff df]_i = -[W G]_i */
+            double scale = 1.0 + coef * k;
+            if (!(scale > 0.0))
+                return 0;
+            nm->b[i] = -nm->wg[i] / scale;
+        } else if (k < 0.0) { /* [W_eff df]_i + df_i / (c |s_i|) = -G_i / (c |s_i|) */
+            nm->shift[i] = 1.0 / (coef * -k);
+            nm->b[i] = -G[i] * nm->shift[i];
+        } else if (k > 0.0) {
+            return 0;
+        } else {
+            df[i] = -G[i];
+        }
     }
-    return FRICREG_OK;
+    return 1;
 }
 
-/* b = G_N / e_N - W_eff,NR df_R (0 off N). */
-static void diagonal_rhs(struct fr_newton_matrix *nm, const cholmod_sparse *Weff, const double G[],
-                         const double df[])
+/* b_N -= W_eff,NR df_R. */
+static void rows_rhs(struct fr_newton_matrix *nm, const cholmod_sparse *Weff, const double df[])
 {
     const SuiteSparse_long *Wp = Weff->p, *Wi = Weff->i;
     const double *Wx = Weff->x;
-    for (size_t i = 0; i < nm->m; i++)
-        nm->b[i] = nm->in_n[i] ? G[i] / nm->e[i] : 0.0;
     for (size_t j = 0; j < nm->m; j++)
         for (SuiteSparse_long p = Wp[j]; p < Wp[j + 1]; p++) {
             size_t i = (size_t)Wi[p];
@@ -199,51 +218,15 @@ static void diagonal_rhs(struct fr_newton_matrix *nm, const cholmod_sparse *Weff
         }
 }
 
-/* 1 if the diagonal path applies (every e_i <= 0), with df_R filled; 0 to go dense. */
-static int diagonal_split(struct fr_newton_matrix *nm, double coef, const double *w_diag,
-                          const double G[], double df[], int *singular)
-{
-    *singular = 0;
-    for (size_t i = 0; i < nm->m; i++) {
-        nm->d[i] = 1.0 + nm->fa[i] * w_diag[i];
-        nm->e[i] = coef * nm->fz[i] + nm->fa[i];
-        nm->in_n[i] = nm->e[i] != 0.0;
-        if (nm->e[i] > 0.0 || (nm->in_n[i] && nm->d[i] < 0.0))
-            return 0;
-        if (!nm->in_n[i]) {
-            if (nm->d[i] == 0.0)
-                *singular = 1;
-            df[i] = nm->d[i] != 0.0 ? -G[i] / nm->d[i] : 0.0;
-        } else {
-            nm->shift[i] = nm->d[i] / -nm->e[i];
-        }
-    }
-    return 1;
-}
-
-static int diagonal_direction(struct fr_newton_matrix *nm, fricreg_ctx *ctx, double coef,
-                              const cholmod_sparse *W, const cholmod_sparse *Weff,
-                              const double *w_diag, const double G[], double df[],
-                              cholmod_common *c)
-{
-    int status = diagonal_slopes(nm, ctx), singular;
-    if (status != FRICREG_OK)
-        return status;
-    if (!diagonal_split(nm, coef, w_diag, G, df, &singular))
-        return dense_direction(nm, ctx, coef, W, Weff, G, df);
-    if (singular)
-        return FRICREG_ESINGULAR;
-    diagonal_rhs(nm, Weff, G, df);
-    return fr_masked_factor_solve(&nm->block, Weff, nm->in_n, nm->shift, nm->b, df, c);
-}
-
 int fr_newton_direction(struct fr_newton_matrix *nm, fricreg_ctx *ctx, double coef,
-                        const cholmod_sparse *W, const cholmod_sparse *Weff, const double *w_diag,
-                        const double G[], double df[], cholmod_common *c)
+                        const cholmod_sparse *W, const cholmod_sparse *Weff, const double G[],
+                        double df[], cholmod_common *c)
 {
-    if (w_diag != NULL)
-        return diagonal_direction(nm, ctx, coef, W, Weff, w_diag, G, df, c);
-    return dense_direction(nm, ctx, coef, W, Weff, G, df);
+    int status = fr_ctx_tangent_rows(ctx, nm->implicit, nm->coef);
+    if (status != FRICREG_OK || !rows_split(nm, coef, W, G, df))
+        return dense_direction(nm, ctx, coef, W, Weff, G, df);
+    rows_rhs(nm, Weff, df);
+    return fr_masked_factor_solve(&nm->block, Weff, nm->in_n, nm->shift, nm->b, df, c);
 }
 
 int fr_newton_stick_solve(struct fr_newton_matrix *nm, const cholmod_sparse *Weff,

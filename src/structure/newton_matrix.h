@@ -8,18 +8,22 @@
  * W = J M^-1 J^T the Delassus matrix, W_eff = J K_eff^-1 J^T. Newton solves
  * G(f) = f - F(zdot(f), a_free(f)) = 0, F the context's law, whose tangent (F_z, F_a) gives
  *   T = dG/df = I - c F_z W_eff + F_a (W - W_eff),
- * and the direction df = -T^-1 G. Rows where F_z and F_a vanish (sliding contacts) are the
- * identity: df_i = -G_i, and only the rest, N, is solved. Two ways:
- *  - the context's W is diagonal (contacts on separate degrees of freedom, e.g. a lumped M):
- *    F_z and F_a are diagonal too, and T = diag(d) - diag(e) W_eff, d_i = 1 + F_a,ii W_ii,
- *    e_i = c F_z,ii + F_a,ii. With every e_i < 0 on N (every law but a falling Stribeck
- *    branch) T_NN = diag(-e_N) (W_eff,NN + diag(d_N / -e_N)), the bracket symmetric positive
- *    definite: CHOLMOD's sparse Cholesky on W_eff's pattern (analysed once per K_eff), whose
- *    other rows and columns are set to the identity. W_eff's pattern is what makes this
- *    cheap: contacts far apart on a structure barely interact over a step (contact_factor.c
- *    leaves out entries below the rounding of the diagonal).
- *  - otherwise dense: T_NN from the context's dense tangent, by GSL's QR with column pivoting
- *    (which allocates nothing; GSL 2.7's LU allocates its pivots on every call), O(|N|^3). */
+ * and the direction df = -T^-1 G. The context gives its tangent row by row
+ * (fr_ctx_tangent_rows): explicit, dF_i = s_i dzdot_i, or implicit, [W dF]_i + k_i dzdot_i +
+ * dafree_i = 0 (the consistent law's free contacts, or a diagonal W's near-stick ones). Row i
+ * of T df = -G is then, with dF_E = df_E + G_E on the explicit rows E,
+ *   explicit:  df_i - c s_i [W_eff df]_i = -G_i,
+ *   implicit:  (1 + c k_i) [W_eff df]_i = -[W G]_i,
+ * and with every s_i <= 0 and 1 + c k_i > 0 (every law but a falling Stribeck branch) the
+ * rows of N (implicit, or s_i < 0) are (W_eff,NN + diag(shift_N)) df_N = b_N - W_eff,NR df_R,
+ * shift_i = 1 / (c |s_i|) on the explicit rows and 0 on the implicit ones: symmetric positive
+ * definite, CHOLMOD's sparse Cholesky on W_eff's pattern (analysed once per K_eff), whose
+ * other rows and columns are set to the identity; the rest, R (s_i = 0: sliding contacts), is
+ * df_i = -G_i. Nothing is O(m^2): W_eff's pattern makes it cheap, contacts far apart on a
+ * structure barely interacting over a step (contact_factor.c leaves out entries below the
+ * rounding of the diagonal). Otherwise dense: T_NN from the context's dense tangent, by GSL's
+ * QR with column pivoting (which allocates nothing; GSL 2.7's LU allocates its pivots on
+ * every call), O(|N|^3). */
 #ifndef FRICREG_NEWTON_MATRIX_H
 #define FRICREG_NEWTON_MATRIX_H
 
@@ -40,16 +44,19 @@ struct fr_newton_matrix {
     gsl_permutation *perm;
     gsl_vector *tau, *norm, *rhs, *sol; /* [m] views of |N| */
     size_t *rows;                       /* [m] N, ascending */
-    /* Diagonal: W_eff's pattern with the identity where the rows are not in N. */
-    double *fz, *fa, *d, *e, *shift; /* [m] */
-    unsigned char *in_n;             /* [m] */
-    double *b;                       /* [m] */
-    struct fr_masked_factor block;   /* W_eff's principal blocks (shifted) */
+    /* Contact by contact: the context's rows, and W_eff's pattern with the identity where the
+     * rows are not in N. */
+    double *fz;                /* [m] d F_i/d zdot_i's sign (0: F_i does not move with zdot_i) */
+    double *coef, *wg, *shift; /* [m] s_i or k_i; [W G]; the shifts */
+    unsigned char *implicit;   /* [m] */
+    unsigned char *in_n;       /* [m] */
+    double *b;                 /* [m] */
+    struct fr_masked_factor block; /* W_eff's principal blocks (shifted) */
 };
 
-/* Ready for the contacts of a new K_eff: the diagonal path's blocks of W_eff (m x m, upper,
- * sorted) ordered and analysed, and with dense set the dense form allocated (otherwise it is
- * allocated at its first use, a falling Stribeck branch under a diagonal W). FRICREG_OK or
+/* Ready for the contacts of a new K_eff: the blocks of W_eff (m x m, upper, sorted) ordered
+ * and analysed, and with dense set the dense form allocated (otherwise it is allocated at its
+ * first use, a falling Stribeck branch). FRICREG_OK or
  * FRICREG_ENOMEM. */
 int fr_newton_matrix_prepare(struct fr_newton_matrix *nm, const cholmod_sparse *Weff, int dense,
                              cholmod_common *c);
@@ -57,12 +64,11 @@ int fr_newton_matrix_prepare(struct fr_newton_matrix *nm, const cholmod_sparse *
 void fr_newton_matrix_free(struct fr_newton_matrix *nm, cholmod_common *c);
 
 /* The direction df[m] = -T^-1 G[m] at the context's last evaluation, with coef = c above,
- * W and W_eff m x m upper triangles (stype 1, sorted). w_diag is the context's W when it is
- * diagonal (fr_ctx_coupling_diagonal), else NULL. FRICREG_OK; FRICREG_ESINGULAR (T singular);
+ * W and W_eff m x m upper triangles (stype 1, sorted). FRICREG_OK; FRICREG_ESINGULAR (T singular);
  * FRICREG_ENOMEM (the dense form could not be allocated); the context's tangent's status. */
 int fr_newton_direction(struct fr_newton_matrix *nm, fricreg_ctx *ctx, double coef,
-                        const cholmod_sparse *W, const cholmod_sparse *Weff, const double *w_diag,
-                        const double G[], double df[], cholmod_common *c);
+                        const cholmod_sparse *W, const cholmod_sparse *Weff, const double G[],
+                        double df[], cholmod_common *c);
 
 /* x_S = W_eff,SS^-1 b_S for the contacts marked in set[m] (x elsewhere untouched), through
  * the same sparse factor: FRICREG_OK, FRICREG_ESINGULAR (W_eff,SS singular: contacts that

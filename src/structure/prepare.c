@@ -71,35 +71,67 @@ static int off_diagonal(const cholmod_sparse *W)
     return 0;
 }
 
-/* W into the context: its diagonal when contacts do not couple (separate degrees of freedom
- * under a lumped M), else dense (m x m, allocated for the call). */
-static int couple(fricreg_structure *s)
+/* Up to this many contacts a coupled W goes to the context dense (the path of every small
+ * model's numbers, and its exact eigenvalue for the step guard); beyond, sparse, where nothing
+ * the context does with it is O(m^2). */
+#define DENSE_COUPLING_MAX 64
+
+/* The context's setter's status, its failure recorded by the structure. */
+static int from_ctx(fricreg_structure *s, int status)
 {
-    const cholmod_sparse *W = s->mass.D;
+    if (status != FRICREG_OK)
+        return fr_fail(s, status, "W = J M^-1 J^T: %s", fricreg_ctx_errmsg(s->ctx));
+    return FRICREG_OK;
+}
+
+/* A coupled W (upper triangle, CSC) into the context: dense, m x m allocated for the call. */
+static int couple_dense(fricreg_structure *s, const cholmod_sparse *W)
+{
     const SuiteSparse_long *Wp = W->p, *Wi = W->i;
     const double *Wx = W->x;
     size_t m = s->m;
-    int coupled = off_diagonal(W), status;
-    double *dense = calloc(coupled ? m * m : m, sizeof *dense);
+    double *dense = calloc(m * m, sizeof *dense);
     if (dense == NULL)
         return fr_fail(s, FRICREG_ENOMEM, "step: no memory for W = J M^-1 J^T");
     for (size_t j = 0; j < m; j++)
-        for (SuiteSparse_long p = Wp[j]; p < Wp[j + 1]; p++) {
-            size_t i = (size_t)Wi[p];
-            if (!coupled)
-                dense[j] = i == j ? Wx[p] : dense[j];
-            else
-                dense[i * m + j] = dense[j * m + i] = Wx[p];
-        }
-    if (coupled)
-        status = fricreg_ctx_set_coupling_dense(s->ctx, m, dense);
-    else
-        status = fricreg_ctx_set_coupling_diagonal(s->ctx, m, dense);
+        for (SuiteSparse_long p = Wp[j]; p < Wp[j + 1]; p++)
+            dense[(size_t)Wi[p] * m + j] = dense[j * m + (size_t)Wi[p]] = Wx[p];
+    int status = fricreg_ctx_set_coupling_dense(s->ctx, m, dense);
     free(dense);
-    if (status != FRICREG_OK)
-        return fr_fail(s, status, "W = J M^-1 J^T: %s", fricreg_ctx_errmsg(s->ctx));
-    s->w_diag = coupled ? NULL : fr_ctx_coupling_diagonal(s->ctx);
-    return FRICREG_OK;
+    return from_ctx(s, status);
+}
+
+/* W's diagonal (no entry off it) into the context. */
+static int couple_diagonal(fricreg_structure *s, const cholmod_sparse *W)
+{
+    const SuiteSparse_long *Wp = W->p, *Wi = W->i;
+    const double *Wx = W->x;
+    double *w = calloc(s->m, sizeof *w);
+    if (w == NULL)
+        return fr_fail(s, FRICREG_ENOMEM, "step: no memory for W = J M^-1 J^T");
+    for (size_t j = 0; j < s->m; j++)
+        for (SuiteSparse_long p = Wp[j]; p < Wp[j + 1]; p++)
+            w[j] = (size_t)Wi[p] == j ? Wx[p] : w[j];
+    int status = fricreg_ctx_set_coupling_diagonal(s->ctx, s->m, w);
+    free(w);
+    return from_ctx(s, status);
+}
+
+/* CHOLMOD's long indices are the sparse setters' int64_t (C99 has no static_assert). */
+typedef char fr_long_is_int64[sizeof(SuiteSparse_long) == sizeof(int64_t) ? 1 : -1];
+
+/* W into the context: its diagonal when contacts do not couple (separate degrees of freedom
+ * under a lumped M), else dense or sparse (DENSE_COUPLING_MAX). */
+static int couple(fricreg_structure *s)
+{
+    const cholmod_sparse *W = s->mass.D;
+    if (!off_diagonal(W))
+        return couple_diagonal(s, W);
+    if (s->m <= DENSE_COUPLING_MAX)
+        return couple_dense(s, W);
+    int flags = FRICREG_SPARSE_ZERO_BASED | FRICREG_SPARSE_UPPER;
+    return from_ctx(s, fricreg_ctx_set_coupling_csc(s->ctx, s->m, flags, (const int64_t *)W->p,
+                                                    (const int64_t *)W->i, W->x));
 }
 
 int fr_structure_prepare(fricreg_structure *s)

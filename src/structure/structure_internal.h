@@ -68,7 +68,6 @@ struct fricreg_structure {
     int prepared;           /* Cd, the mass factor, W and Mr are current */
     cholmod_sparse *Cd;     /* the damping in force: C, or Rayleigh's a0 M + a1 K */
     struct fr_cfactor mass; /* M's factor; mass.D is the Delassus matrix W = J M^-1 J^T */
-    const double *w_diag;   /* the context's W when it is diagonal, else NULL */
     gsl_vector *Mr;         /* M r */
     int unguarded;      /* tests only (test_guard_structure.c, static library): skip the step guard,
                     * to see what a refused step would have done */
