@@ -15,7 +15,7 @@ for n in 100 1000 10000 100000 1000000; do
     [ "$n" -le "$max" ] || continue
     root=$(awk -v n="$n" 'BEGIN { printf "%d", sqrt(n) + 0.5 }')
     # fewer steps at the largest sizes: a step is then tens of milliseconds
-    steps=$(awk -v n="$n" 'BEGIN { print n >= 1000000 ? 5 : n >= 100000 ? 10 : 20 }')
+    steps=$(awk -v n="$n" 'BEGIN { print (n >= 1000000 ? 5 : (n >= 100000 ? 10 : 20)) }')
     for k in 1 "$root" 1000 $((n / 2)); do
         [ "$k" -le $((n / 2)) ] || continue
         line=$("$bin" "$n" "$k" "$steps" 3) || { echo "n = $n, k = $k failed" >&2; continue; }

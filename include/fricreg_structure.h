@@ -58,12 +58,13 @@ typedef struct fricreg_structure fricreg_structure;
  *  law (4) with eps = 1e-3, r = 0, no load and no ground motion, u = u' = 0 at t = 0,
  *  average-acceleration Newmark (beta = 1/4, gamma = 1/2), Newton tolerance 1e-10 and at
  *  most 50 iterations. Allocates O(ndof + m) here. The setters copy what they are given; the
- *  first step after a model setter factors M and hands W to the contacts (a dense m x m W
- *  when contacts couple, fricreg_ctx_set_coupling_dense), the first step with a new dt (or
+ *  first step after a model setter factors M and hands W to the contacts (its diagonal when
+ *  contacts do not couple; else dense m x m up to 64 contacts, fricreg_ctx_set_coupling_dense,
+ *  and sparse beyond, fricreg_ctx_set_coupling_csc), the first step with a new dt (or
  *  scheme) factors K_eff, and the step guard's first use computes the model's rates (dense
  *  eigenvalues up to 2048 degrees of freedom): those steps allocate. The other steps never
- *  do (but for a falling Stribeck branch under a diagonal W with more than 64 contacts,
- *  whose dense Newton matrix is allocated at its first use).
+ *  do (but for a falling Stribeck branch with more than 64 contacts, whose dense Newton
+ *  matrix is allocated at its first use).
  *
  *  ndof  number of degrees of freedom, 1 <= ndof <= 2^40 (memory runs out first).
  *  m     number of friction contacts, 1 <= m <= 2^26 (a structure without friction: one
@@ -302,11 +303,15 @@ FRICREG_API int fricreg_structure_set_newton(fricreg_structure *s, double tol, i
  *  solved on the exact tangent of the law F (fricreg_ctx_tangent): dG/df = I - c F_z W_eff +
  *  F_a (W - W_eff). Its iterates are those of Newton on a mapped through a(f), and R =
  *  (1 + alpha) J^T G there, which the stopping rule reads (fricreg_structure_set_newton).
- *  The m x m Newton matrix: where the contacts' W is diagonal (separate degrees of freedom and
- *  a lumped M) a sparse Cholesky factor (CHOLMOD) of the near-stick block of W_eff plus a
- *  diagonal, whose entries below 2^-53 sqrt(W_eff,ii W_eff,jj) are left out (far contacts
- *  barely interact over a step); otherwise dense, by GSL's QR with column pivoting, on the
- *  near-stick rows only (sliding rows are the identity's). First guess: the forces at t or,
+ *  The m x m Newton matrix is never formed: the law's tangent is taken row by row, a slope
+ *  s_i in zdot_i (sliding contacts, contacts held on a bound) or the consistent law's
+ *  equation of a free contact, [W df]_i + k_i dzdot_i + dafree_i = 0 (docs/coupled.md), so
+ *  that the rows to solve are (W_eff + diag(1/(c |s_i|))) df = ... on the near-stick
+ *  contacts and their band's, df_i = -G_i on the others: a sparse Cholesky factor (CHOLMOD)
+ *  of that block of W_eff plus a diagonal, refactored only when the block or the diagonal
+ *  changes, with W_eff's entries below 2^-53 sqrt(W_eff,ii W_eff,jj) left out (far contacts
+ *  barely interact over a step). A falling Stribeck branch (s_i > 0), where that matrix is
+ *  not positive definite, goes dense: GSL's QR with column pivoting on the near-stick rows. First guess: the forces at t or,
  *  if their residual is above the tolerance and that one's smaller, the same with the
  *  contacts whose force is below the bound (law (4): in its band, sticking) keeping their
  *  velocities over the step. Each Newton direction is first cut where it would carry a
@@ -320,11 +325,13 @@ FRICREG_API int fricreg_structure_set_newton(fricreg_structure *s, double tol, i
  *  Cost: the first step after a model setter factors M (CHOLMOD) and forms W and the
  *  equilibrium acceleration at t; the first step with a new dt factors K_eff (nested
  *  dissection from 4096 degrees of freedom, minimum degree below) and forms Y = L^-1 P J^T
- *  column by column on each contact's reach and W_eff = Y^T Y. A step within 1e-9 of the
- *  factored dt (a run's steps, whose lengths carry the rounding of t) is taken with that dt.
- *  Then each step costs a forward and a backward solve with K_eff's factor and products with
- *  M, C and K, O(nnz), and in the contacts O(nnz(Y)) per residual and one Newton matrix per
- *  iteration: a frictionless step's cost plus the contacts' (docs/benchmark.md, scaling).
+ *  column by column on each contact's reach and W_eff = Y^T Y (Y kept where it has fewer
+ *  entries than the factor, else its products are triangular solves). A step within 1e-9
+ *  of the factored dt (a run's steps, whose lengths carry the rounding of t) is taken with
+ *  that dt. Then each step costs two forward and two backward solves with K_eff's factor at
+ *  most and products with M, C and K, O(nnz), and in the contacts products with W_eff per
+ *  residual and a Newton factor where the near-stick set changed: a frictionless step's cost
+ *  plus the contacts' (docs/benchmark.md, scaling).
  *  Steps other than these first ones make no heap allocation (fricreg_structure_create).
  *
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if dt <= 0, t + dt rounds to t, dt

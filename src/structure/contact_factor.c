@@ -29,6 +29,7 @@ void fr_cfactor_free(struct fr_cfactor *f, cholmod_common *c)
     cholmod_l_free_dense(&f->Ywork, c);
     cholmod_l_free_dense(&f->Ework, c);
     cholmod_l_free(f->n, sizeof *f->pb, f->pb, c);
+    cholmod_l_free(f->n, sizeof *f->work, f->work, c);
     memset(f, 0, sizeof *f);
 }
 
@@ -220,9 +221,17 @@ int fr_cfactor_build(struct fr_cfactor *f, cholmod_sparse *A, cholmod_sparse *Jt
         status = failed(c, err, who, name);
     if (status == FRICREG_OK) {
         f->pb = cholmod_l_malloc(f->n, sizeof *f->pb, c);
+        f->work = cholmod_l_malloc(f->n, sizeof *f->work, c);
         f->X = cholmod_l_allocate_dense(f->n, 1, f->n, CHOLMOD_REAL, c);
-        if (f->pb == NULL || f->X == NULL)
+        if (f->pb == NULL || f->work == NULL || f->X == NULL)
             status = failed(c, err, who, name);
+    }
+    if (status == FRICREG_OK) {
+        size_t nnz_l = f->L->is_super ? f->L->xsize : f->L->nzmax;
+        f->Jt = Jt;
+        f->by_solves = (size_t)cholmod_l_nnz(f->Y, c) > nnz_l + f->n;
+        if (f->by_solves)
+            cholmod_l_free_sparse(&f->Y, c);
     }
     if (status == FRICREG_OK) { /* one solve sizes the workspaces: later ones reuse them */
         memset(f->pb, 0, f->n * sizeof *f->pb);
@@ -275,8 +284,16 @@ void fr_cfactor_solve(struct fr_cfactor *f, const double b[], double x[], cholmo
     fr_cfactor_backward(f, x, x, c);
 }
 
-void fr_cfactor_project(const struct fr_cfactor *f, const double y[], double out[])
+void fr_cfactor_project(struct fr_cfactor *f, const double y[], double out[], cholmod_common *c)
 {
+    if (f->by_solves) { /* J P^T L^-T y */
+        memcpy(f->pb, y, f->n * sizeof *y);
+        triangular(f, CHOLMOD_Lt, f->work, c);
+        for (size_t k = 0; k < f->n; k++)
+            f->pb[f->perm ? (size_t)f->perm[k] : k] = f->work[k];
+        fr_csc_mult_t(f->Jt, f->pb, out);
+        return;
+    }
     const SuiteSparse_long *Yp = f->Y->p, *Yi = f->Y->i;
     const double *Yx = f->Y->x;
     for (size_t j = 0; j < f->m; j++) {
@@ -287,8 +304,19 @@ void fr_cfactor_project(const struct fr_cfactor *f, const double y[], double out
     }
 }
 
-void fr_cfactor_lift(const struct fr_cfactor *f, double alpha, const double g[], double y[])
+void fr_cfactor_lift(struct fr_cfactor *f, double alpha, const double g[], double y[],
+                     cholmod_common *c)
 {
+    if (f->by_solves) { /* L^-1 P J^T (alpha g) */
+        memset(f->work, 0, f->n * sizeof *f->work);
+        fr_csc_mult_add(f->Jt, alpha, g, f->work);
+        for (size_t k = 0; k < f->n; k++)
+            f->pb[k] = f->work[f->perm ? (size_t)f->perm[k] : k];
+        triangular(f, CHOLMOD_L, f->work, c);
+        for (size_t k = 0; k < f->n; k++)
+            y[k] += f->work[k];
+        return;
+    }
     const SuiteSparse_long *Yp = f->Y->p, *Yi = f->Y->i;
     const double *Yx = f->Y->x;
     for (size_t j = 0; j < f->m; j++) {

@@ -30,12 +30,15 @@
 struct fr_cfactor {
     size_t n, m;
     cholmod_factor *L;
-    SuiteSparse_long *perm; /* [n] P: row k of P b is b[perm[k]] (NULL: identity) */
-    cholmod_sparse *Y;      /* n x m, each column sorted */
-    cholmod_sparse *D;      /* m x m, the upper triangle (stype 1) of Y^T Y, sorted */
+    SuiteSparse_long *perm;   /* [n] P: row k of P b is b[perm[k]] (NULL: identity) */
+    cholmod_sparse *Y;        /* n x m, each column sorted; freed once D is formed where the
+                             * products go through triangular solves (by_solves) */
+    const cholmod_sparse *Jt; /* n x m, the caller's J^T (kept for by_solves) */
+    int by_solves;            /* Y's products as triangular solves with J: nnz(Y) > nnz(L) + n */
+    cholmod_sparse *D;        /* m x m, the upper triangle (stype 1) of Y^T Y, sorted */
     /* Solve scratch, sized at build so that a solve never allocates. */
     cholmod_dense *X, *Ywork, *Ework;
-    double *pb; /* [n] */
+    double *pb, *work; /* [n] */
 };
 
 /* Factors A (n x n, stype 1, the upper triangle) and forms Y and D for the contacts Jt
@@ -58,11 +61,15 @@ void fr_cfactor_backward(struct fr_cfactor *f, const double y[], double x[], cho
 /* x[n] = A^-1 b[n]: both halves. */
 void fr_cfactor_solve(struct fr_cfactor *f, const double b[], double x[], cholmod_common *c);
 
-/* out[m] = Y^T y[n]: J A^-1 b for y = L^-1 P b. */
-void fr_cfactor_project(const struct fr_cfactor *f, const double y[], double out[]);
+/* out[m] = Y^T y[n]: J A^-1 b for y = L^-1 P b. Through Y's columns, O(nnz(Y)), or, where
+ * Y has more entries than L (contacts everywhere: each column of Y fills the path to the root
+ * of the elimination tree), a backward solve and a product with J, O(nnz(L) + nnz(J)). */
+void fr_cfactor_project(struct fr_cfactor *f, const double y[], double out[], cholmod_common *c);
 
-/* y[n] += alpha Y g[m]. */
-void fr_cfactor_lift(const struct fr_cfactor *f, double alpha, const double g[], double y[]);
+/* y[n] += alpha Y g[m]: through Y's columns, or as project's, a product with J^T and a
+ * forward solve. */
+void fr_cfactor_lift(struct fr_cfactor *f, double alpha, const double g[], double y[],
+                     cholmod_common *c);
 
 /* out[m] = D g[m], O(nnz(D)). */
 void fr_cfactor_compliance(const struct fr_cfactor *f, const double g[], double out[]);

@@ -14,6 +14,8 @@ void fr_masked_factor_free(struct fr_masked_factor *f, cholmod_common *c)
     cholmod_l_free(nnz, sizeof *f->src, f->src, c);
     cholmod_l_free(f->m, sizeof *f->perm, f->perm, c);
     cholmod_l_free(f->m, sizeof *f->b, f->b, c);
+    cholmod_l_free(f->m, sizeof *f->held_shift, f->held_shift, c);
+    cholmod_l_free(f->m, sizeof *f->held_set, f->held_set, c);
     cholmod_l_free_sparse(&f->A, c);
     cholmod_l_free_factor(&f->L, c);
     cholmod_l_free_dense(&f->X, c);
@@ -79,7 +81,10 @@ int fr_masked_factor_prepare(struct fr_masked_factor *f, const cholmod_sparse *W
     memset(f, 0, sizeof *f);
     f->m = W->ncol;
     f->b = cholmod_l_malloc(f->m, sizeof *f->b, c);
-    int ok = f->b != NULL && order(f, W, c) && permute(f, W, c) && analyse(f, c);
+    f->held_shift = cholmod_l_malloc(f->m, sizeof *f->held_shift, c);
+    f->held_set = cholmod_l_malloc(f->m, sizeof *f->held_set, c);
+    int ok = f->b && f->held_shift && f->held_set && order(f, W, c) && permute(f, W, c) &&
+             analyse(f, c);
     if (ok) { /* the identity (an empty block) once: CHOLMOD sizes its workspaces */
         memset(f->b, 0, f->m * sizeof *f->b);
         ok = fr_masked_factor_solve(f, W, NULL, NULL, f->b, f->b, c) == FRICREG_OK;
@@ -107,19 +112,45 @@ static void fill(struct fr_masked_factor *f, const cholmod_sparse *W, const unsi
     }
 }
 
+/* The block and shifts of the factor held: those of the last factorization (f->held). */
+static int holds(const struct fr_masked_factor *f, const unsigned char *set, const double *shift)
+{
+    if (!f->held)
+        return 0;
+    for (size_t i = 0; i < f->m; i++) {
+        unsigned char in = set != NULL && set[i];
+        if (in != f->held_set[i] || (in && (shift ? shift[i] : 0.0) != f->held_shift[i]))
+            return 0;
+    }
+    return 1;
+}
+
+static void hold(struct fr_masked_factor *f, const unsigned char *set, const double *shift)
+{
+    for (size_t i = 0; i < f->m; i++) {
+        f->held_set[i] = set != NULL && set[i];
+        f->held_shift[i] = f->held_set[i] && shift ? shift[i] : 0.0;
+    }
+    f->held = 1;
+}
+
 int fr_masked_factor_solve(struct fr_masked_factor *f, const cholmod_sparse *W,
                            const unsigned char *set, const double *shift, const double b[],
                            double x[], cholmod_common *c)
 {
-    fill(f, W, set, shift);
     for (size_t k = 0; k < f->m; k++) {
         size_t i = (size_t)f->perm[k];
         f->b[k] = set && set[i] ? b[i] : 0.0;
     }
-    if (!cholmod_l_factorize(f->A, f->L, c) || c->status < CHOLMOD_OK)
-        return FRICREG_ENOMEM;
-    if (c->status == CHOLMOD_NOT_POSDEF)
-        return FRICREG_ESINGULAR;
+    if (!holds(f, set, shift)) {
+        f->held = 0;
+        fill(f, W, set, shift);
+        if (!cholmod_l_factorize(f->A, f->L, c) || c->status < CHOLMOD_OK)
+            return FRICREG_ENOMEM;
+        if (c->status == CHOLMOD_NOT_POSDEF)
+            return FRICREG_ESINGULAR;
+        hold(f, set, shift);
+    }
     cholmod_dense B = {.nrow = f->m,
                        .ncol = 1,
                        .nzmax = f->m,

@@ -6,7 +6,8 @@
  * columns outside S are the identity's: one pattern, W's, for every S. The pattern is ordered
  * once (AMD) and stored permuted, so that each numeric factorization is CHOLMOD's simplicial
  * one on a matrix in natural order, which allocates nothing (cholmod_l_factorize permutes a
- * matrix in any other order into new storage every call). */
+ * matrix in any other order into new storage every call). A solve on the block and shifts of
+ * the last factorization makes none. */
 #ifndef FRICREG_MASKED_FACTOR_H
 #define FRICREG_MASKED_FACTOR_H
 
@@ -22,6 +23,11 @@ struct fr_masked_factor {
     cholmod_factor *L;
     cholmod_dense *X, *Yw, *Ew;
     double *b; /* [m] */
+    /* The block and shifts of the last factorization: a solve on the same ones reuses it
+     * (a stick set that holds from one Newton iteration, or one step, to the next). */
+    unsigned char *held_set; /* [m] */
+    double *held_shift;      /* [m] */
+    int held;
 };
 
 /* Ready for blocks of W (m x m, upper triangle, sorted): ordered, permuted, analysed, and one

@@ -327,13 +327,13 @@ static void predict(fricreg_structure *s, double dt)
             yb[k] = w * yb[k] + s->alpha * hist[k];
     fr_cfactor_forward(&s->step, yb, yb, &s->cc);
     double *z0 = s->z0->data, *a0 = s->af0->data;
-    fr_cfactor_project(&s->step, yb, a0); /* J x0 */
+    fr_cfactor_project(&s->step, yb, a0, &s->cc); /* J x0 */
     fr_csc_mult_t(s->Jt, vp, z0);
     for (size_t i = 0; i < m; i++)
         z0[i] += g * a0[i];
     if (s->alpha != 0.0) { /* h = J M^-1 hist, through M's factor */
         fr_cfactor_forward(&s->mass, hist, s->work->data, &s->cc);
-        fr_cfactor_project(&s->mass, s->work->data, s->mwork->data);
+        fr_cfactor_project(&s->mass, s->work->data, s->mwork->data, &s->cc);
         for (size_t i = 0; i < m; i++)
             a0[i] -= s->alpha * s->mwork->data[i];
     }
@@ -351,7 +351,7 @@ int fr_newmark_solve(fricreg_structure *s, double dt, int *converged, int *iters
     if ((status = newton(s, dt, converged, iters)) != FRICREG_OK)
         return status;
     /* x = K_eff^-1 (b + w J^T f): the forward half is yb, the backward half completes it. */
-    fr_cfactor_lift(&s->step, 1.0 + s->alpha, s->fk->data, s->yb->data);
+    fr_cfactor_lift(&s->step, 1.0 + s->alpha, s->fk->data, s->yb->data, &s->cc);
     fr_cfactor_backward(&s->step, s->yb->data, s->x->data, &s->cc);
     double b2 = s->beta * dt * dt, g = s->gamma * dt, big = 0.0;
     for (size_t k = 0; k < s->n; k++) {

@@ -37,12 +37,12 @@ int fr_structure_motion(fricreg_structure *s, const gsl_vector *w, const gsl_vec
 {
     double *y = s->yb->data;
     fr_cfactor_forward(&s->mass, w->data, y, &s->cc);
-    fr_cfactor_project(&s->mass, y, s->afree->data); /* J M^-1 w */
+    fr_cfactor_project(&s->mass, y, s->afree->data, &s->cc); /* J M^-1 w */
     fr_csc_mult_t(s->Jt, v->data, s->zdot->data);
     int status = fr_structure_contact_forces(s, f);
     if (status != FRICREG_OK)
         return status;
-    fr_cfactor_lift(&s->mass, 1.0, f->data, y); /* M^-1 (w + J^T f) */
+    fr_cfactor_lift(&s->mass, 1.0, f->data, y, &s->cc); /* M^-1 (w + J^T f) */
     fr_cfactor_backward(&s->mass, y, a->data, &s->cc);
     return FRICREG_OK;
 }
