@@ -127,6 +127,8 @@ module fricreg
     procedure :: eval => ctx_eval
     procedure :: tangent => ctx_tangent
     procedure :: tangent_apply => ctx_tangent_apply
+    procedure :: switching => ctx_switching
+    procedure :: switching_count => ctx_switching_count
     procedure :: stick_stiffness => ctx_stick_stiffness
     procedure :: get_stat => ctx_get_stat
     procedure :: reset_stats => ctx_reset_stats
@@ -887,6 +889,40 @@ contains
     if (status == FRICREG_OK) &
       status = self%record(fricreg_ctx_tangent_apply(self%ptr, m, dzdot, dafree, df))
   end function ctx_tangent_apply
+
+  !> The switching functions (C's fricreg_ctx_switching): g(k + 1, i) is component k
+  !> (FRICREG_SWITCH_BAND_HI ... FRICREG_SWITCH_SAT_LO) of contact i, a signed distance to a
+  !> kink of its law, +1 where the law has no such kink; g is (FRICREG_SWITCH_PER_CONTACT, m).
+  !> zdot(m) and a_free(m) as for eval; f(m) the forces eval gave there, read only with a
+  !> coupled W and a law that reads f_eq (optional otherwise). g is written only on success.
+  !> FRICREG_ESIZE unless the arrays have those shapes; FRICREG_ENULL if f is needed and
+  !> absent; FRICREG_ENONFINITE.
+  function ctx_switching(self, zdot, a_free, g, f) result(status)
+    class(fricreg_context), intent(inout) :: self
+    real(c_double), intent(in), contiguous :: zdot(:), a_free(:)
+    real(c_double), intent(inout), contiguous :: g(:, :)
+    real(c_double), intent(in), contiguous, optional :: f(:)
+    integer(c_int) :: status
+    integer(c_size_t) :: m
+    m = fricreg_ctx_size(self%ptr)
+    status = self%ready('switching', 'context')
+    if (status == FRICREG_OK) status = self%check_size('switching', 'zdot', size(zdot), m)
+    if (status == FRICREG_OK) status = self%check_size('switching', 'a_free', size(a_free), m)
+    if (status == FRICREG_OK .and. present(f)) &
+      status = self%check_size('switching', 'f', size(f), m)
+    if (status == FRICREG_OK) status = self%check_size('switching', 'g, 1', size(g, 1), &
+                                                       int(FRICREG_SWITCH_PER_CONTACT, c_size_t))
+    if (status == FRICREG_OK) status = self%check_size('switching', 'g, 2', size(g, 2), m)
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_ctx_switching(self%ptr, m, zdot, a_free, f, g, &
+                                                 int(size(g), c_size_t)))
+  end function ctx_switching
+
+  !> The number of switching functions, FRICREG_SWITCH_PER_CONTACT * m (0 before create).
+  integer function ctx_switching_count(self)
+    class(fricreg_context), intent(in) :: self
+    ctx_switching_count = int(fricreg_ctx_switching_count(self%ptr))
+  end function ctx_switching_count
 
   !> One counter (FRICREG_STAT_*) into value. FRICREG_EINVAL for an unknown counter.
   function ctx_get_stat(self, which, value) result(status)

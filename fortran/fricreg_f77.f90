@@ -333,6 +333,23 @@ subroutine frtapp(h, m, dz, da, df, stat)
   stat = int(fricreg_ctx_tangent_apply(fricreg_handle_to_ptr(h), int(m, c_size_t), dz, da, df))
 end subroutine frtapp
 
+!> FRSWIT(H, M, ZDOT, AFREE, F, G, NG, STAT): the switching functions G(NG) of velocities
+!> ZDOT(M), free accelerations AFREE(M) and the forces F(M) FREVAL gave there (read with a
+!> coupled W): G(FRICREG_SWITCH_PER_CONTACT*(I-1) + K + 1) is component K of contact I, a
+!> signed distance to a kink of its law, +1 where it has none; NG >=
+!> FRICREG_SWITCH_PER_CONTACT*M (fricreg_ctx_switching). Written only on success.
+subroutine frswit(h, m, zdot, afree, f, g, ng, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m, ng
+  double precision, intent(in) :: zdot(*), afree(*), f(*)
+  double precision, intent(inout) :: g(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_ctx_switching(fricreg_handle_to_ptr(h), int(m, c_size_t), zdot, afree, f, &
+                                   g, int(max(ng, 0), c_size_t)))
+end subroutine frswit
+
 ! ---- 2-D contexts (fricreg_disk_ctx.h): handles of their own, never mixed with FRCTXC's ------
 
 !> FRDCC(M, H, STAT): create a context of M two-dimensional contacts into handle H

@@ -525,6 +525,123 @@ FRICREG_API int fricreg_ctx_tangent(fricreg_ctx *ctx, size_t m, double df_dzdot[
 FRICREG_API int fricreg_ctx_tangent_apply(fricreg_ctx *ctx, size_t m, const double dzdot[],
                                           const double dafree[], double df[]);
 
+/** The switching functions of a 1-D context: what component k of contact i's g measures
+ *  (since 1.6, FRICREG_1.6). Contact i's components are g[FRICREG_SWITCH_PER_CONTACT * i + k]
+ *  (Fortran: g(k + 1, i) of a (FRICREG_SWITCH_PER_CONTACT, m) array). Values are fixed
+ *  forever. v is zdot_i, B the contact's bound (mun_i, or with Stribeck friction the band's
+ *  bound B(|v|) and the kinetic k(|v|) outside it), xi = (eps/2) sat(f_eq/B) the centre of
+ *  law (4)'s linear zone, (4b). An inert component is +1 whatever the state. */
+enum fricreg_switch {
+    /** v - eps (velocity): the band's upper edge, where the near-stick set changes (Sec. 3.3).
+     *  Live for Karnopp (the force jumps), (3) (its kink), Stribeck friction (the band's bound
+     *  meets the kinetic curve) and, with a coupled W under FRICREG_PARTITION_PAPER, for (4)
+     *  (the other contacts' forces jump). */
+    FRICREG_SWITCH_BAND_HI = 0,
+    /** v + eps (velocity): the band's lower edge; live as FRICREG_SWITCH_BAND_HI. */
+    FRICREG_SWITCH_BAND_LO = 1,
+    /** v (velocity): rest. Live for (1) and (2) (the force jumps, sgn(v)) and Stribeck
+     *  friction (B(|v|) has a kink at v = 0). */
+    FRICREG_SWITCH_REST = 2,
+    /** v - xi - eps/2 (velocity): the upper edge of (4)'s linear zone, (4a): beyond it
+     *  f = -B. Live for (4). */
+    FRICREG_SWITCH_ZONE_HI = 3,
+    /** v - xi + eps/2 (velocity): the lower edge of (4)'s linear zone: below it f = +B. Live
+     *  for (4). */
+    FRICREG_SWITCH_ZONE_LO = 4,
+    /** The saturation f_eq = +B of (4b) (Karnopp: of its hold, (2)), in force units:
+     *  min(f_eq - B, B min(a, b)), a, b > 0 the distances into the zone where the law reads
+     *  f_eq (see fricreg_ctx_switching): positive exactly where the law holds the saturated
+     *  value. Live for (4) and Karnopp. */
+    FRICREG_SWITCH_SAT_HI = 5,
+    /** The saturation f_eq = -B, in force units: max(f_eq + B, -B min(a, b)); negative exactly
+     *  where the law reads f_eq saturated at -B. Live for (4) and Karnopp. */
+    FRICREG_SWITCH_SAT_LO = 6,
+    /** The number of components per contact (not a component). */
+    FRICREG_SWITCH_PER_CONTACT = 7
+};
+
+/** The number of switching functions of the context, FRICREG_SWITCH_PER_CONTACT * m: the
+ *  length g must have for fricreg_ctx_switching (since 1.6, FRICREG_1.6). 0 if ctx is NULL.
+ *  Pure function of the contact count; thread safe on a context not being set up. */
+FRICREG_API size_t fricreg_ctx_switching_count(const fricreg_ctx *ctx);
+
+/** Switching functions: for each contact, signed distances to the kinks of its friction law,
+ *  for the event location of adaptive and multistep integrators (CVODE's CVodeRootInit,
+ *  DOPRI5's dense output, RADAU): every law of the context is piecewise smooth in
+ *  (zdot_i, f_eq,i), and an integrator that steps over a kink unknowingly loses its order and
+ *  its error estimate (since 1.6, FRICREG_1.6; docs/integrators.md, "Switching functions").
+ *
+ *  Each component is continuous in the state and changes sign exactly where the force or its
+ *  derivative jumps: a root finder that brackets a sign change of g brackets the kink. Where
+ *  the law has no kink of a component's kind the component is inert, +1 for every state, so
+ *  that no root finder ever fires on it. The index layout and the live components by law are
+ *  enum fricreg_switch's; in short (v = zdot_i, B the bound, xi = (eps/2) sat(f_eq,i/B), (4b)):
+ *
+ *    k  component                 (1)  (2)  Karnopp  (3)  tanh  (4)  (4)+Stribeck
+ *    0  v - eps                    -    -      x      x    -    p        x
+ *    1  v + eps                    -    -      x      x    -    p        x
+ *    2  v                          x    x      -      -    -    -        x
+ *    3  v - xi - eps/2             -    -      -      -    -    x        x
+ *    4  v - xi + eps/2             -    -      -      -    -    x        x
+ *    5  f_eq = +B (saturation)     -    -      x      -    -    x        x
+ *    6  f_eq = -B (saturation)     -    -      x      -    -    x        x
+ *
+ *  (x live, - inert, p live only with a coupled W under FRICREG_PARTITION_PAPER, whose forces
+ *  jump when a coupled contact crosses |zdot| = eps.) Components 0-4 are velocities,
+ *  Lipschitz with constant 1 in zdot_i (3 and 4: at a fixed f_eq and a constant bound).
+ *  Components 5 and 6 are forces: with d = v - xi and h = eps/2 for (4) (d = v, h = eps for
+ *  Karnopp, whose hold reads f_eq in the whole band), a = sat2((h - d)/h) and
+ *  b = sat2((h + d)/h) (sat2 clamps to [-2, 2]) are positive exactly inside the zone where
+ *  the law reads f_eq, and with F = f_eq,i clamped to [-3B, 3B],
+ *    g5 = min(F - B, B min(a, b)),   g6 = max(F + B, -B min(a, b)),
+ *  which equal f_eq,i - B and f_eq,i + B near the saturation kinks inside the zone and vanish
+ *  only on kinks (the zone's edges elsewhere). A contact whose bound is 0 (mun_i = 0, or fs_i = 0)
+ *  has no kink: all its components are inert, but for 0 and 1 under the paper's partition.
+ *  Laws (1) and (2) and Karnopp jump (their "kinks" are discontinuities of f): a root finder
+ *  locates them all the same. At a few points a live component's zero set runs where the
+ *  pieces on either side happen to agree (Karnopp at v = -eps with f_eq >= mun, where f = +mun
+ *  on both sides): a root finder stops there once, which costs a step, not accuracy.
+ *
+ *  Inputs: those of fricreg_ctx_eval and its forces at them, not the context's stored state,
+ *  so that g is a pure function of the state that any root finder may call at any point
+ *  (CVODE calls it at interpolated states between evaluations) with no effect on the
+ *  context: no tangent, warm start, counter or cached factor changes. f_eq,i is the force
+ *  that would zero contact i's acceleration given every other force,
+ *    f_eq,i = -(a_free,i + sum_{j != i} W_ij f_j) / W_ii   (-a_free,i / W_ii for a diagonal W),
+ *  defined for every contact (fricreg_ctx_eval gives it only on the near-stick set), so that
+ *  components 3-6 are continuous across the band's edges too; it costs O(m) with a diagonal
+ *  W, O(nnz(W)) sparse, O(m^2) dense, with no solve. It is the f_eq the law reads in a
+ *  diagonal W and under FRICREG_PARTITION_CONSISTENT (each f_i is law (4) at (zdot_i,
+ *  f_eq,i)); under FRICREG_PARTITION_PAPER with a coupled W the law reads the joint solve's
+ *  f_eq,S instead, which differs where two coupled contacts are near stick at once: there
+ *  components 3-6 locate the consistent law's kinks, not the paper's, and the paper's forces
+ *  jump at components 0 and 1 anyway.
+ *
+ *  ctx        the context (law, eps, bounds or Stribeck parameters, coupling, partition).
+ *  m          must equal the context's contact count.
+ *  zdot[m]    in: relative contact velocities (velocity units).
+ *  a_free[m]  in: free relative accelerations, as for fricreg_ctx_eval.
+ *  f[m]       in: the forces fricreg_ctx_eval gave at (zdot, a_free) (force units). Read only
+ *             with a coupled W (dense or sparse) and a law that reads f_eq ((2), Karnopp,
+ *             (4)); may be NULL otherwise.
+ *  g[ng]      out: the switching functions, g[FRICREG_SWITCH_PER_CONTACT * i + k] component k
+ *             (enum fricreg_switch) of contact i; velocity units for k = 0-4, force units for
+ *             5 and 6, +1 when inert. Finite for finite inputs and bounds below DBL_MAX/4.
+ *             Only the first fricreg_ctx_switching_count(ctx) entries are written, and only on
+ *             success.
+ *  ng         the length of g, at least fricreg_ctx_switching_count(ctx).
+ *  No heap allocation; the context's settings are read, nothing of it is changed but its error
+ *  record on failure.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if ctx, zdot, a_free or g is NULL, or f where it is read;
+ *  FRICREG_ESIZE if m differs from the context's or ng < FRICREG_SWITCH_PER_CONTACT * m;
+ *  FRICREG_ENONFINITE if a component of zdot, a_free or (where read) f is NaN or infinite.
+ *  Implements the kinks of (1), (2), (3), (4a), (4b), the Karnopp law of the paper's Sec. 2
+ *  and the near-stick partition of its Sec. 3.3. */
+FRICREG_API int fricreg_ctx_switching(fricreg_ctx *ctx, size_t m, const double zdot[],
+                                      const double a_free[], const double f[], double g[],
+                                      size_t ng);
+
 /** Whether fricreg_ctx_eval keeps what fricreg_ctx_tangent needs: copies of its zdot and
  *  a_free, two stores per contact (with a diagonal W and a law that reads f_eq, about a
  *  quarter of the evaluation's memory traffic: out of cache, a quarter of its time); from

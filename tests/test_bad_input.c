@@ -631,6 +631,13 @@ static int w_ctx_tangent_apply(void)
     const double dz[2] = {0.0123, -0.0231}, da[2] = {0.5, -0.25};
     return fricreg_ctx_tangent_apply(CTX(), Z(0, 2), A(1, dz, 2), A(2, da, 2), OUTD(3));
 }
+/* The fixture's two blocks (a dense W, so f is read) at a state near stick. */
+static int w_ctx_switching(void)
+{
+    const double zdot[2] = {0.0004, -0.0002}, a[2] = {0.213, -0.347}, f[2] = {-0.21, 0.125};
+    return fricreg_ctx_switching(CTX(), Z(0, 2), A(1, zdot, 2), A(2, a, 2), A(3, f, 2), OUTD(4),
+                                 C(0, 2 * FRICREG_SWITCH_PER_CONTACT));
+}
 static const double V2[2] = {0.004, -0.002}, FEQ2[2] = {0.213, -0.347};
 static int w_disk_eval(void)
 {
@@ -815,6 +822,17 @@ static const struct row rows[] = {
      CTX_REC,
      {HANDLE, SIZE(0, "ssss"), PTR(1, "o"), ARR(1, "nnoooo"), PTR(2, "o"), ARR(2, "nnoooo"),
       PTR(3, "0")}},
+    {"fricreg_ctx_switching",
+     w_ctx_switching,
+     "0sn",
+     CTX_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnoooo"), PTR(2, "0"), ARR(2, "nnoooo"),
+      PTR(3, "0"), ARR(3, "nnoooo")}},
+    {"fricreg_ctx_switching (g, ng)",
+     w_ctx_switching,
+     "0sn",
+     CTX_REC,
+     {PTR(4, "0"), COUNT(0, "ssoo")}},
     {"fricreg_ctx_get_stat", w_ctx_get_stat, "0i", NONE, {HANDLE, INT(0, "ioii"), PTR(1, "0")}},
     {"fricreg_ctx_set_keep_tangent",
      w_ctx_set_keep_tangent,
@@ -1986,6 +2004,7 @@ START_TEST(non_status_functions)
     ck_assert_int_eq(fricreg_integrator_from_name("rk4 "), 0);
 
     ck_assert_uint_eq(fricreg_ctx_size(NULL), 0);
+    ck_assert_uint_eq(fricreg_ctx_switching_count(NULL), 0);
     ck_assert_int_eq(fricreg_ctx_errcode(NULL), FRICREG_OK);
     ck_assert_str_eq(fricreg_ctx_errmsg(NULL), "NULL context");
     fricreg_ctx_free(NULL);

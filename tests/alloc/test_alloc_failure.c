@@ -1364,13 +1364,18 @@ START_TEST(test_eval_does_not_allocate)
         ck_assert_int_eq(fricreg_ctx_set_partition(ctx, partition ? FRICREG_PARTITION_PAPER
                                                                   : FRICREG_PARTITION_CONSISTENT),
                          FRICREG_OK);
-        int with_feq = FRICREG_ENOMEM, without = FRICREG_ENOMEM;
+        int with_feq = FRICREG_ENOMEM, without = FRICREG_ENOMEM, switching = FRICREG_ENOMEM;
+        double g[FRICREG_SWITCH_PER_CONTACT * M_DENSE];
         hook_arm(1); /* the first request would fail: none may be made */
         with_feq = fricreg_ctx_eval(ctx, M_DENSE, ZDOT5[0], AFREE5[0], f, f_eq);
         without = fricreg_ctx_eval(ctx, M_DENSE, ZDOT5[0], AFREE5[0], f, NULL);
+        /* nor do the switching functions ("No heap allocation") */
+        switching = fricreg_ctx_switching(ctx, M_DENSE, ZDOT5[0], AFREE5[0], f, g,
+                                          sizeof g / sizeof g[0]);
         hook_disarm();
         ck_assert_int_eq(with_feq, FRICREG_OK);
         ck_assert_int_eq(without, FRICREG_OK);
+        ck_assert_int_eq(switching, FRICREG_OK);
         ck_assert_msg(n_allocs == 0, "partition %d: eval made %ld allocations", partition,
                       n_allocs);
     }
