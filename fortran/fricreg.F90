@@ -255,6 +255,14 @@ module fricreg
     procedure :: set_damping => struct_set_damping
     procedure :: set_rayleigh => struct_set_rayleigh
     procedure :: set_contacts => struct_set_contacts
+    procedure :: set_mass_csr => struct_set_mass_csr
+    procedure :: set_mass_csc => struct_set_mass_csc
+    procedure :: set_stiffness_csr => struct_set_stiffness_csr
+    procedure :: set_stiffness_csc => struct_set_stiffness_csc
+    procedure :: set_damping_csr => struct_set_damping_csr
+    procedure :: set_damping_csc => struct_set_damping_csc
+    procedure :: set_contacts_csr => struct_set_contacts_csr
+    procedure :: set_contacts_csc => struct_set_contacts_csc
     procedure :: set_bounds => struct_set_bounds
     procedure :: set_law => struct_set_law
     procedure :: set_influence => struct_set_influence
@@ -1685,6 +1693,195 @@ contains
                                        fricreg_structure_set_contacts(self%ptr, self%m, self%n, &
                                                                       transpose(J)))
   end function struct_set_contacts
+
+  ! The compressed sparse setters (fricreg_structure.h, since 1.6): the arrays as a Fortran code
+  ! holds them, indices integer(c_int64_t), flags from enum fricreg_sparse_flags, optional and
+  ! FRICREG_SPARSE_ONE_BASED when absent (what Fortran's indices count from). A compressed
+  ! matrix states its rows and columns itself, so J's arrays go to C as they are.
+
+  !> flags, or FRICREG_SPARSE_ONE_BASED when absent.
+  integer(c_int) function struct_sparse_flags(flags)
+    integer(c_int), intent(in), optional :: flags
+    struct_sparse_flags = FRICREG_SPARSE_ONE_BASED
+    if (present(flags)) struct_sparse_flags = flags
+  end function struct_sparse_flags
+
+  !> FRICREG_OK if self is created, ptr has n + 1 elements and ind and values hold at least the
+  !> nnz = ptr(n + 1) - base entries ptr says (base 1 with FRICREG_SPARSE_ONE_BASED in flags,
+  !> else 0), else a recorded FRICREG_ESIZE naming the array: C reads nnz of each, which it
+  !> cannot check. ptr_name and ind_name name the first two arrays in the message; a
+  !> ptr(n + 1) below base is left to C (FRICREG_EINVAL).
+  function struct_compressed(self, what, ptr_name, ind_name, flags, n, ptr, ind, values) &
+      result(status)
+    class(fricreg_structure), intent(inout) :: self
+    character(len=*), intent(in) :: what, ptr_name, ind_name
+    integer(c_int), intent(in) :: flags
+    integer(c_size_t), intent(in) :: n
+    integer(c_int64_t), intent(in) :: ptr(:), ind(:)
+    real(c_double), intent(in) :: values(:)
+    integer(c_int) :: status
+    integer(c_int64_t) :: nnz
+    character(len=64) :: buf
+    status = self%ready(what, 'structure')
+    if (status == FRICREG_OK) status = self%check_size(what, ptr_name, size(ptr), n + 1)
+    if (status /= FRICREG_OK) return
+    nnz = ptr(n + 1) - merge(1_c_int64_t, 0_c_int64_t, iand(flags, FRICREG_SPARSE_ONE_BASED) /= 0)
+    if (int(size(ind), c_int64_t) < nnz) then
+      write (buf, '(a, i0, a, i0)') ') = ', size(ind), ', expected at least ', nnz
+      status = self%fail(FRICREG_ESIZE, what // ': size(' // ind_name // trim(buf))
+    else if (int(size(values), c_int64_t) < nnz) then
+      write (buf, '(a, i0, a, i0)') ') = ', size(values), ', expected at least ', nnz
+      status = self%fail(FRICREG_ESIZE, what // ': size(values' // trim(buf))
+    end if
+  end function struct_compressed
+
+  !> Mass matrix M (ndof x ndof) from compressed sparse rows (C's
+  !> fricreg_structure_set_mass_csr): rowptr(ndof + 1), colind(nnz) of kind c_int64_t,
+  !> values(nnz) (mass units), nnz = rowptr(ndof + 1) - base. flags (fricreg_sparse_flags,
+  !> combined with +): absent, FRICREG_SPARSE_ONE_BASED (rowptr(1) = 1, indices 1..ndof);
+  !> FRICREG_SPARSE_ZERO_BASED for C's; with FRICREG_SPARSE_UPPER or _LOWER, M given by that
+  !> triangle and its diagonal, else whole (then symmetric to 1e-12 of the rows' scales, as
+  !> set_mass). Duplicates are summed. Positive definite. Copied.
+  !> FRICREG_ESIZE unless rowptr has ndof + 1 elements and colind and values at least nnz;
+  !> FRICREG_EINVAL (flags, rowptr not starting at the base or decreasing, an index out of range,
+  !> an entry outside the triangle given; the message names the array and the entry, counting
+  !> from 0); FRICREG_ENONFINITE; FRICREG_ENOTSYM; FRICREG_ENOTPSD; FRICREG_ENOMEM. On failure
+  !> the structure keeps its M.
+  function struct_set_mass_csr(self, rowptr, colind, values, flags) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    integer(c_int64_t), intent(in), contiguous :: rowptr(:), colind(:)
+    real(c_double), intent(in), contiguous :: values(:)
+    integer(c_int), intent(in), optional :: flags
+    integer(c_int) :: status, f
+    f = struct_sparse_flags(flags)
+    status = struct_compressed(self, 'set_mass_csr', 'rowptr', 'colind', f, &
+                               self%n, rowptr, colind, values)
+    if (status == FRICREG_OK) status = self%record(fricreg_structure_set_mass_csr(self%ptr, &
+                                                   self%n, f, rowptr, colind, values))
+  end function struct_set_mass_csr
+
+  !> Mass matrix M from compressed sparse columns (C's fricreg_structure_set_mass_csc), what a
+  !> Fortran code usually holds: colptr(ndof + 1), rowind(nnz) of kind c_int64_t, values(nnz),
+  !> flags as set_mass_csr (absent: one-based, whole). M being symmetric, its CSC arrays are
+  !> its CSR arrays, the lower triangle of one the upper of the other:
+  !> flags = FRICREG_SPARSE_ONE_BASED + FRICREG_SPARSE_LOWER for the lower triangle's columns.
+  !> The statuses of set_mass_csr.
+  function struct_set_mass_csc(self, colptr, rowind, values, flags) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    integer(c_int64_t), intent(in), contiguous :: colptr(:), rowind(:)
+    real(c_double), intent(in), contiguous :: values(:)
+    integer(c_int), intent(in), optional :: flags
+    integer(c_int) :: status, f
+    f = struct_sparse_flags(flags)
+    status = struct_compressed(self, 'set_mass_csc', 'colptr', 'rowind', f, &
+                               self%n, colptr, rowind, values)
+    if (status == FRICREG_OK) status = self%record(fricreg_structure_set_mass_csc(self%ptr, &
+                                                   self%n, f, colptr, rowind, values))
+  end function struct_set_mass_csc
+
+  !> Stiffness matrix K (ndof x ndof, force per length) from compressed sparse rows (C's
+  !> fricreg_structure_set_stiffness_csr): rowptr(ndof + 1), colind(nnz), values(nnz) and
+  !> flags as set_mass_csr (absent: one-based, whole); symmetric, need not be definite.
+  !> FRICREG_ESIZE; FRICREG_EINVAL; FRICREG_ENONFINITE; FRICREG_ENOTSYM; FRICREG_ENOMEM.
+  function struct_set_stiffness_csr(self, rowptr, colind, values, flags) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    integer(c_int64_t), intent(in), contiguous :: rowptr(:), colind(:)
+    real(c_double), intent(in), contiguous :: values(:)
+    integer(c_int), intent(in), optional :: flags
+    integer(c_int) :: status, f
+    f = struct_sparse_flags(flags)
+    status = struct_compressed(self, 'set_stiffness_csr', 'rowptr', 'colind', f, &
+                               self%n, rowptr, colind, values)
+    if (status == FRICREG_OK) status = self%record(fricreg_structure_set_stiffness_csr( &
+                                                   self%ptr, self%n, f, rowptr, colind, values))
+  end function struct_set_stiffness_csr
+
+  !> Stiffness matrix K from compressed sparse columns (C's
+  !> fricreg_structure_set_stiffness_csc): colptr(ndof + 1), rowind(nnz), values(nnz), flags as
+  !> set_mass_csc. The statuses of set_stiffness_csr.
+  function struct_set_stiffness_csc(self, colptr, rowind, values, flags) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    integer(c_int64_t), intent(in), contiguous :: colptr(:), rowind(:)
+    real(c_double), intent(in), contiguous :: values(:)
+    integer(c_int), intent(in), optional :: flags
+    integer(c_int) :: status, f
+    f = struct_sparse_flags(flags)
+    status = struct_compressed(self, 'set_stiffness_csc', 'colptr', 'rowind', f, &
+                               self%n, colptr, rowind, values)
+    if (status == FRICREG_OK) status = self%record(fricreg_structure_set_stiffness_csc( &
+                                                   self%ptr, self%n, f, colptr, rowind, values))
+  end function struct_set_stiffness_csc
+
+  !> Damping matrix C (ndof x ndof, force per velocity) from compressed sparse rows (C's
+  !> fricreg_structure_set_damping_csr), as set_stiffness_csr; replaces Rayleigh damping.
+  !> FRICREG_ESIZE; FRICREG_EINVAL; FRICREG_ENONFINITE; FRICREG_ENOTSYM; FRICREG_ENOMEM.
+  function struct_set_damping_csr(self, rowptr, colind, values, flags) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    integer(c_int64_t), intent(in), contiguous :: rowptr(:), colind(:)
+    real(c_double), intent(in), contiguous :: values(:)
+    integer(c_int), intent(in), optional :: flags
+    integer(c_int) :: status, f
+    f = struct_sparse_flags(flags)
+    status = struct_compressed(self, 'set_damping_csr', 'rowptr', 'colind', f, &
+                               self%n, rowptr, colind, values)
+    if (status == FRICREG_OK) status = self%record(fricreg_structure_set_damping_csr( &
+                                                   self%ptr, self%n, f, rowptr, colind, values))
+  end function struct_set_damping_csr
+
+  !> Damping matrix C from compressed sparse columns (C's fricreg_structure_set_damping_csc):
+  !> colptr(ndof + 1), rowind(nnz), values(nnz), flags as set_mass_csc; replaces Rayleigh
+  !> damping. The statuses of set_damping_csr.
+  function struct_set_damping_csc(self, colptr, rowind, values, flags) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    integer(c_int64_t), intent(in), contiguous :: colptr(:), rowind(:)
+    real(c_double), intent(in), contiguous :: values(:)
+    integer(c_int), intent(in), optional :: flags
+    integer(c_int) :: status, f
+    f = struct_sparse_flags(flags)
+    status = struct_compressed(self, 'set_damping_csc', 'colptr', 'rowind', f, &
+                               self%n, colptr, rowind, values)
+    if (status == FRICREG_OK) status = self%record(fricreg_structure_set_damping_csc( &
+                                                   self%ptr, self%n, f, colptr, rowind, values))
+  end function struct_set_damping_csc
+
+  !> Contact matrix J (m x ndof, J(i, k) = d zdot_i / d u'_k) from compressed sparse rows (C's
+  !> fricreg_structure_set_contacts_csr): rowptr(m + 1), colind(nnz) of kind c_int64_t (columns
+  !> 1..ndof when one-based), values(nnz). flags: absent or FRICREG_SPARSE_ONE_BASED, or
+  !> FRICREG_SPARSE_ZERO_BASED (J is not symmetric: a triangle flag is FRICREG_EINVAL). Each
+  !> row must hold a nonzero value. Copied. FRICREG_ESIZE unless rowptr has m + 1 elements and
+  !> colind and values at least nnz; FRICREG_EINVAL (flags, pointers, indices, a zero row, C's
+  !> message counting from 0); FRICREG_ENONFINITE; FRICREG_ENOMEM. On failure J is kept.
+  function struct_set_contacts_csr(self, rowptr, colind, values, flags) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    integer(c_int64_t), intent(in), contiguous :: rowptr(:), colind(:)
+    real(c_double), intent(in), contiguous :: values(:)
+    integer(c_int), intent(in), optional :: flags
+    integer(c_int) :: status, f
+    f = struct_sparse_flags(flags)
+    status = struct_compressed(self, 'set_contacts_csr', 'rowptr', 'colind', f, &
+                               self%m, rowptr, colind, values)
+    if (status == FRICREG_OK) status = self%record(fricreg_structure_set_contacts_csr( &
+                                                   self%ptr, self%m, self%n, f, rowptr, colind, &
+                                                   values))
+  end function struct_set_contacts_csr
+
+  !> Contact matrix J (m x ndof) from compressed sparse columns (C's
+  !> fricreg_structure_set_contacts_csc), the CSC of a Fortran J(m, ndof): colptr(ndof + 1),
+  !> rowind(nnz) (contacts 1..m when one-based), values(nnz), flags as set_contacts_csr. The
+  !> statuses of set_contacts_csr, colptr having ndof + 1 elements.
+  function struct_set_contacts_csc(self, colptr, rowind, values, flags) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    integer(c_int64_t), intent(in), contiguous :: colptr(:), rowind(:)
+    real(c_double), intent(in), contiguous :: values(:)
+    integer(c_int), intent(in), optional :: flags
+    integer(c_int) :: status, f
+    f = struct_sparse_flags(flags)
+    status = struct_compressed(self, 'set_contacts_csc', 'colptr', 'rowind', f, &
+                               self%n, colptr, rowind, values)
+    if (status == FRICREG_OK) status = self%record(fricreg_structure_set_contacts_csc( &
+                                                   self%ptr, self%m, self%n, f, colptr, rowind, &
+                                                   values))
+  end function struct_set_contacts_csc
 
   !> Friction bounds mun(m) = mu_i N_i >= 0 (force units); may change between steps.
   !> FRICREG_ESIZE; FRICREG_EINVAL if one is negative; FRICREG_ENONFINITE.
