@@ -154,7 +154,7 @@ void fr_structure_net_force(const fricreg_structure *s, const gsl_vector *ptil, 
 static inline double fr_max_abs(double m, double x)
 {
     double a = x < 0.0 ? -x : x;
-    return a <= m ? m : a; /* a NaN x (or m) gives NaN */
+    return a <= m || m != m ? m : a; /* a NaN x, or a NaN m from an earlier x, gives NaN */
 }
 
 /* newmark.c: u1, v1, x (= a1), f1 and end_max of one Newmark / HHT-alpha step by Newton. */

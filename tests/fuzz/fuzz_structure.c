@@ -66,6 +66,8 @@
  * GSL's default error handler stays installed: the library promises never to reach it, and an
  * abort from GSL is a finding. */
 
+#include <float.h>
+
 #include <gsl/gsl_eigen.h>
 #include <gsl/gsl_matrix.h>
 #include <gsl/gsl_spmatrix.h>
@@ -742,6 +744,23 @@ static void check_eom(const struct model *md, const struct snapshot *sn, const d
 /* Whether W = J M^-1 J^T is out of the range a step takes (an entry beyond the doubles, a W_ii
  * below DBL_MIN), or near it (1e-300, 1e300: the harness's rounding differs from the
  * library's), by Cholesky (M was accepted: positive definite). */
+/* K_eff = M + (1 + alpha)(gamma dt C + beta dt^2 K) with an entry near or beyond the double
+ * range (the step refuses such a dt, EINVAL): judged with a margin of 2, the structure's sums
+ * being rounded otherwise. */
+static int keff_out_of_range(const struct model *md, double dt)
+{
+    if (md->scheme != SCHEME_NEWMARK)
+        return 0;
+    double w = 1.0 + md->alpha, gc = w * md->gamma * dt, gk = w * md->beta * dt * dt;
+    for (size_t k = 0; k < md->n * md->n; k++) {
+        double c = md->rayleigh ? md->a0 * md->M[k] + md->a1 * md->K[k] : md->C[k];
+        double e = fabs(md->M[k]) + fabs(gc) * fabs(c) + fabs(gk) * fabs(md->K[k]);
+        if (!(e <= DBL_MAX / 2.0))
+            return 1;
+    }
+    return 0;
+}
+
 static int coupling_out_of_range(const struct model *md)
 {
     size_t n = md->n, m = md->m;
@@ -932,7 +951,7 @@ static void op_step(struct fuzz_input *in, fricreg_structure *s, struct model *m
                      "step(%g): ENONFINITE with a finite dt: %s", dt, fricreg_structure_errmsg(s));
         FUZZ_REQUIRE(status != FRICREG_EINVAL || !(dt > 0.0) ||
                          !(now(&before) + dt > now(&before)) || !md->contacts_set ||
-                         coupling_out_of_range(md),
+                         coupling_out_of_range(md) || keff_out_of_range(md, dt),
                      "step(%g): EINVAL: %s", dt, fricreg_structure_errmsg(s));
         return;
     }
