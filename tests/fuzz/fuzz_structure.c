@@ -1266,11 +1266,13 @@ static void op_getters(struct fuzz_input *in, fricreg_structure *s, struct model
 /* create with a bad size or a NULL out, and every call on a NULL structure: refused. */
 static void check_refusals(uint8_t sel)
 {
-    static const size_t sizes[4] = {0, ((size_t)1 << 15) + 1, SIZE_MAX, (size_t)1 << 40};
+    /* zero, SIZE_MAX, and one beyond the caps: 2^40 degrees of freedom, 2^26 contacts */
+    static const size_t sizes[4] = {0, SIZE_MAX, ((size_t)1 << 40) + 1, ((size_t)1 << 26) + 1};
     fricreg_structure *s;
     fuzz_fill(&s, sizeof s);
-    size_t bad = sizes[sel % 4];
-    int status = fricreg_structure_create(sel & 4 ? 1 : bad, sel & 4 ? bad : 1, &s);
+    int contacts = (sel & 4) != 0;
+    size_t bad = sizes[sel % 4 == 3 && !contacts ? 2 : sel % 4]; /* 2^26 + 1 dof is valid */
+    int status = fricreg_structure_create(contacts ? 1 : bad, contacts ? bad : 1, &s);
     FUZZ_REQUIRE(status == FRICREG_EINVAL && fuzz_untouched(&s, sizeof s), "create: status %d",
                  status);
     FUZZ_REQUIRE(fricreg_structure_create(1, 1, NULL) == FRICREG_ENULL, "create(1, 1, NULL)");
