@@ -42,6 +42,7 @@
 #include "fricreg_disk_ctx.h"
 #include "fricreg_stribeck.h"
 #include "fricreg_exact.h"
+#include "fricreg_jenkins.h"
 #include "fricreg_sim.h"
 #include "fricreg_structure.h"
 
@@ -80,6 +81,7 @@ struct fixture {
     fricreg_exact *ex;
     fricreg_sim *sim;
     fricreg_structure *st;
+    fricreg_jenkins *jk;      /* one 2-D Jenkins element after a committed slip */
     double out[NOUT][OUTLEN]; /* outputs, all sentinel before the call */
     void *handle_out;         /* a create's out, sentinel before the call */
     double arr[8][OUTLEN];    /* input arrays of the call (perturbed copies) */
@@ -127,6 +129,12 @@ static void fixture_make(struct fixture *fx)
     ck_assert_int_eq(fricreg_structure_set_contacts(fx->st, 1, 2, J), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_set_bounds(fx->st, 1, mun1), FRICREG_OK);
 
+    const double kt1[1] = {2.385}, mun1j[1] = {0.5}, u1[2] = {0.6, -0.3};
+    ck_assert_int_eq(fricreg_jenkins_create(2, 1, &fx->jk), FRICREG_OK);
+    ck_assert_int_eq(fricreg_jenkins_set_params(fx->jk, 1, kt1, mun1j), FRICREG_OK);
+    ck_assert_int_eq(fricreg_jenkins_trial(fx->jk, 1, u1, df, NULL), FRICREG_OK);
+    ck_assert_int_eq(fricreg_jenkins_commit(fx->jk), FRICREG_OK);
+
     memset(fx->out, SENTINEL_BYTE, sizeof fx->out);
     memset(&fx->handle_out, SENTINEL_BYTE, sizeof fx->handle_out);
 }
@@ -138,6 +146,7 @@ static void fixture_free(struct fixture *fx)
     fricreg_exact_free(fx->ex);
     fricreg_sim_free(fx->sim);
     fricreg_structure_free(fx->st);
+    fricreg_jenkins_free(fx->jk);
 }
 
 static int untouched(const void *p, size_t bytes)
@@ -691,10 +700,46 @@ static int w_sim_get_extrapolated_dissipation(void)
     return fricreg_sim_get_extrapolated_dissipation(SIM(), Z(0, 1), OUTD(1), OUTD(2));
 }
 
+/* fricreg_jenkins.h: one 2-D element */
+static int w_jk_create(void)
+{
+    fricreg_jenkins **out = is(K_PTR, 0) ? NULL : (fricreg_jenkins **)&FX_->handle_out;
+    int status = fricreg_jenkins_create(N(0, 2), Z(0, 1), out);
+    if (status == FRICREG_OK)
+        fricreg_jenkins_free(*out);
+    return status;
+}
+static fricreg_jenkins *JK(void)
+{
+    return is(K_PTR, 9) ? NULL : FX_->jk;
+}
+static int w_jk_set_params(void)
+{
+    const double kt[1] = {2.385}, mun[1] = {0.5};
+    return fricreg_jenkins_set_params(JK(), Z(0, 1), A(1, kt, 1), A(2, mun, 1));
+}
+static int w_jk_trial(void)
+{
+    const double u[2] = {0.7, 0.1};
+    return fricreg_jenkins_trial(JK(), Z(0, 1), A(1, u, 2), OUTD(2), OUTD(3));
+}
+static int w_jk_commit(void)
+{
+    return fricreg_jenkins_commit(JK());
+}
+static int w_jk_reset(void)
+{
+    return fricreg_jenkins_reset(JK());
+}
+static int w_jk_get_slider(void)
+{
+    return fricreg_jenkins_get_slider(JK(), Z(0, 1), OUTD(1));
+}
+
 /* ---- The table ---------------------------------------------------------------------------- */
 
 /* The object a call records its failures in (a const getter records none). */
-enum owner { NONE, CTX_REC, EX_REC, SIM_REC, ST_REC, DCTX_REC, CHAIN_REC, EXSTUCK_REC };
+enum owner { NONE, CTX_REC, EX_REC, SIM_REC, ST_REC, DCTX_REC, CHAIN_REC, EXSTUCK_REC, JK_REC };
 
 #define MAXARGS 8
 struct arg {
@@ -979,6 +1024,29 @@ static const struct row rows[] = {
      "0snim",
      DCTX_REC,
      {PTR(3, "0"), ARR(3, "nniioo"), PTR(4, "0"), ARR(4, "nniioo")}},
+    /* fricreg_jenkins.h: one 2-D element */
+    {"fricreg_jenkins_create",
+     w_jk_create,
+     "0im",
+     NONE,
+     {INT(0, "iiii"), SIZE(0, "iiio"), PTR(0, "0")}},
+    {"fricreg_jenkins_set_params",
+     w_jk_set_params,
+     "0sni",
+     JK_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nniioo"), PTR(2, "0"), ARR(2, "nniooo")}},
+    {"fricreg_jenkins_trial",
+     w_jk_trial,
+     "0sn",
+     JK_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnoooo"), PTR(2, "0"), PTR(3, "o")}},
+    {"fricreg_jenkins_commit", w_jk_commit, "0", JK_REC, {HANDLE}},
+    {"fricreg_jenkins_reset", w_jk_reset, "0", JK_REC, {HANDLE}},
+    {"fricreg_jenkins_get_slider",
+     w_jk_get_slider,
+     "0s",
+     JK_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0")}},
     /* fricreg_exact.h */
     {"fricreg_exact_solve",
      w_exact_solve,
@@ -1238,6 +1306,7 @@ static int recorded(enum owner owner, const struct fixture *fx)
     case DCTX_REC: return fricreg_disk_ctx_errcode(fx->dctx);
     case CHAIN_REC: return fricreg_sim_errcode(chain_);
     case EXSTUCK_REC: return fricreg_exact_errcode(stuck_);
+    case JK_REC: return fricreg_jenkins_errcode(fx->jk);
     default: return -1;
     }
 }
@@ -1251,6 +1320,7 @@ static const char *message(enum owner owner, const struct fixture *fx)
     case DCTX_REC: return fricreg_disk_ctx_errmsg(fx->dctx);
     case CHAIN_REC: return fricreg_sim_errmsg(chain_);
     case EXSTUCK_REC: return fricreg_exact_errmsg(stuck_);
+    case JK_REC: return fricreg_jenkins_errmsg(fx->jk);
     default: return fricreg_structure_errmsg(fx->st);
     }
 }

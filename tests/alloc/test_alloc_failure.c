@@ -48,6 +48,7 @@
 
 #include "fricreg.h"
 #include "fricreg_disk_ctx.h"
+#include "fricreg_jenkins.h"
 #include "fricreg_exact.h"
 #include "fricreg_sim.h"
 #include "fricreg_stribeck.h"
@@ -1319,6 +1320,52 @@ static int structure_model(fricreg_structure *s)
     return status;
 }
 
+/* ---- Jenkins elements ------------------------------------------------------------------------ */
+
+/* create alone (its one block): a failure leaves no handle; the view is three 2-D elements
+ * after set_params, two trials (the second committed) and the committed sliders. That trial
+ * and commit never allocate is test_jenkins_trial_does_not_allocate's. */
+static int jk_open(void **obj)
+{
+    fricreg_jenkins *j = SENTINEL;
+    int status = fricreg_jenkins_create(2, 3, &j);
+    if (status != FRICREG_OK && j != SENTINEL)
+        NOTE("jenkins_create failed (%d) but wrote its handle", status);
+    *obj = status == FRICREG_OK ? j : NULL;
+    return status;
+}
+
+static int jk_errcode(const void *obj)
+{
+    return fricreg_jenkins_errcode(obj);
+}
+
+static void jk_close(void *obj)
+{
+    fricreg_jenkins_free(obj);
+}
+
+static void jk_observe(void *obj, struct view *v)
+{
+    fricreg_jenkins *j = obj;
+    const double kt[3] = {2.385, 1.0, 0.5}, mun[3] = {0.7125, 0.25, 3.0};
+    const double u[2][6] = {{0.5, -0.25, 1.5, 0.0, 0.125, 0.375}, {-0.75, 0.5, 0.0, 2.0, 1.0, 1.0}};
+    double f[6], t[12], w[6];
+    see(v, fricreg_jenkins_set_params(j, 3, kt, mun));
+    for (int k = 0; k < 2; k++) {
+        see(v, fricreg_jenkins_trial(j, 3, u[k], f, t));
+        see_all(v, f, 6);
+        see_all(v, t, 12);
+    }
+    see(v, fricreg_jenkins_commit(j));
+    see(v, fricreg_jenkins_get_slider(j, 3, w));
+    see_all(v, w, 6);
+}
+
+static const struct script jk_create = {"jenkins create", 0,    NULL, 0,          0,
+                                        jk_open,          NULL, NULL, jk_observe, jk_errcode,
+                                        jk_close};
+
 /* ---- The tests ------------------------------------------------------------------------------- */
 
 START_TEST(test_ctx_create)
@@ -1464,6 +1511,31 @@ START_TEST(test_disk_ctx_set_coupling)
 {
     struct tally t = fail_each_allocation(_i == 0 ? &disk_dense : &disk_blocks_script);
     ck_assert_int_eq(t.enomem, t.cases);
+}
+END_TEST
+
+START_TEST(test_jenkins_create)
+{
+    struct tally t = fail_each_allocation(&jk_create);
+    ck_assert_int_eq(t.enomem, t.cases);
+}
+END_TEST
+
+/* trial and commit of a set-up object request no memory. */
+START_TEST(test_jenkins_trial_does_not_allocate)
+{
+    fricreg_jenkins *j = NULL;
+    ck_assert_int_eq(fricreg_jenkins_create(2, 2, &j), FRICREG_OK);
+    const double u[4] = {0.5, -2.25, 0.125, 0.0};
+    double f[4], t[8];
+    hook_arm(1);
+    int status = fricreg_jenkins_trial(j, 2, u, f, t);
+    int commit = fricreg_jenkins_commit(j);
+    hook_disarm();
+    ck_assert_int_eq(status, FRICREG_OK);
+    ck_assert_int_eq(commit, FRICREG_OK);
+    ck_assert_msg(n_allocs == 0, "jenkins trial and commit made %ld allocations", n_allocs);
+    fricreg_jenkins_free(j);
 }
 END_TEST
 
@@ -1680,6 +1752,8 @@ static Suite *alloc_suite(void)
     tcase_add_test(core, test_sparse_eval_does_not_allocate);
     tcase_add_test(core, test_structure_steps_do_not_allocate);
     tcase_add_test(core, test_disk_ctx_create);
+    tcase_add_test(core, test_jenkins_create);
+    tcase_add_test(core, test_jenkins_trial_does_not_allocate);
     tcase_add_loop_test(core, test_disk_ctx_set_coupling, 0, 2);
     tcase_add_test(core, test_disk_eval_does_not_allocate);
     tcase_add_test(core, test_ctx_set_stribeck);

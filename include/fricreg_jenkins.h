@@ -1,0 +1,162 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/**
+ * \file
+ * fricreg_jenkins.h — Jenkins elements (elastic–slip elements) for implicit finite-element
+ * codes: n independent elements, each a tangential spring of stiffness kt in series with a
+ * Coulomb slider of bound mun = mu N, in 1-D or in the tangential plane (2-D). Beyond the paper:
+ * the first element of "joints" (docs/joints.md).
+ *
+ * Each element holds its committed slider position w_c (dim components). A trial at the
+ * relative tangential displacement u gives the force by the return mapping (backward Euler on
+ * the slider: J. C. Simo, T. J. R. Hughes, Computational Inelasticity, Springer 1998, Ch. 1 for
+ * the 1-D return mapping, Ch. 3 for the radial return; in 1-D it is exact for any path that
+ * does not reverse within a step):
+ *
+ *     f_tr = kt (u - w_c)                                  elastic predictor
+ *     |f_tr| <= mun:  f = f_tr,                df/du = kt I           (stick)
+ *     |f_tr| >  mun:  f = mun f_tr/|f_tr|,     df/du = kt (mun/|f_tr|) (I - n n^T), n = f_tr/|f_tr|
+ *                     w = u - f/kt             (the slider's trial position; slip)
+ *
+ * with |.| the absolute value in 1-D (there I - n n^T = 0: the sliding tangent is 0) and the
+ * Euclidean norm in 2-D (radial return onto the disk |f| <= mun; the tangent is the consistent
+ * one, symmetric). The force is continuous in u; the tangent jumps at |f_tr| = mun.
+ *
+ * Protocol (the one of an implicit code's Newton iterations): fricreg_jenkins_trial as often
+ * as needed, which never changes the committed state; fricreg_jenkins_commit once the step has
+ * converged, which makes the last trial's slider positions the committed ones. Cost O(n) per
+ * call; nothing allocates after fricreg_jenkins_create.
+ *
+ * One object, a dimension argument: the 1-D element is the 2-D one restricted to a line (the
+ * same state, parameters, protocol and equations, only the norm changes), so one object type
+ * with dim = 1 or 2 serves both, with the same functions and one Fortran type, rather than two
+ * families of ten functions each. Arrays scale with dim: u, f and w hold dim numbers per
+ * element, the tangent dim x dim.
+ *
+ * Conventions are those of fricreg.h: int results are fricreg_status codes, nothing is printed,
+ * a failed call leaves the caller's arrays and the object's state untouched, one object per
+ * thread. The object keeps the status and a message of its last failed call
+ * (fricreg_jenkins_errcode, fricreg_jenkins_errmsg, fricreg_jenkins_errmsg_copy).
+ * Since 1.6 (FRICREG_1.6).
+ */
+#ifndef FRICREG_JENKINS_H
+#define FRICREG_JENKINS_H
+
+#include "fricreg.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** \defgroup jenkins Joints: Jenkins elements with trial/commit (fricreg_jenkins)
+ *  An opaque set of n independent Jenkins elements (a spring kt in series with a Coulomb slider
+ *  of bound mun), 1-D or 2-D, with the exact return mapping, its consistent tangent and the
+ *  trial/commit protocol of implicit finite-element codes (docs/joints.md).
+ *  \{ */
+
+/** Opaque set of n Jenkins elements: dim, kt and mun per element, committed and trial slider
+ *  positions, the last error. */
+typedef struct fricreg_jenkins fricreg_jenkins;
+
+/** Create n independent Jenkins elements of dimension dim (1: a line; 2: the tangential
+ *  plane).
+ *
+ *  Defaults: kt = 1 and mun = 1 for every element (fricreg_jenkins_set_params), every slider
+ *  at 0 (committed and trial). All memory is allocated here: 3 n dim doubles.
+ *
+ *  dim  1 or 2.
+ *  n    number of elements, 1 <= n <= SIZE_MAX/64.
+ *  out  out: the new object, released with fricreg_jenkins_free. Written only on success.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if out is NULL; FRICREG_EINVAL if dim is not 1 or 2, n
+ *  is 0 or n > SIZE_MAX/64; FRICREG_ENOMEM. With no object to keep it, a failure has no
+ *  message beyond its status, as for fricreg_ctx_create. Since 1.6. */
+FRICREG_API int fricreg_jenkins_create(int dim, size_t n, fricreg_jenkins **out);
+
+/** Release the elements. fricreg_jenkins_free(NULL) does nothing. Since 1.6. */
+FRICREG_API void fricreg_jenkins_free(fricreg_jenkins *j);
+
+/** Number of elements n; 0 if j is NULL. Returns that number, not a status. Since 1.6. */
+FRICREG_API size_t fricreg_jenkins_size(const fricreg_jenkins *j);
+
+/** Dimension of the elements, 1 or 2; 0 if j is NULL. Returns that number, not a status.
+ *  Since 1.6. */
+FRICREG_API int fricreg_jenkins_dim(const fricreg_jenkins *j);
+
+/** Set each element's tangential stiffness and slip bound.
+ *
+ *  n       must equal the object's element count.
+ *  kt[n]   tangential stiffness > 0 (finite), force per unit displacement.
+ *  mun[n]  slip bound mu N >= 0 (finite), force units; 0: the element never carries a force.
+ *
+ *  The committed slider positions are kept; a trial not yet committed is discarded (the next
+ *  fricreg_jenkins_commit without a trial keeps the committed state). All inputs are checked
+ *  before anything changes.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if j, kt or mun is NULL; FRICREG_ESIZE if n differs from
+ *  the element count; FRICREG_ENONFINITE if some kt[i] or mun[i] is NaN or infinite;
+ *  FRICREG_EINVAL if some kt[i] <= 0 or mun[i] < 0. Since 1.6. */
+FRICREG_API int fricreg_jenkins_set_params(fricreg_jenkins *j, size_t n, const double kt[],
+                                           const double mun[]);
+
+/** Trial forces and tangents at relative tangential displacements u, by the return mapping at
+ *  the top of this header, from the committed slider positions. The committed state does not
+ *  change; the slider's trial positions are kept for fricreg_jenkins_commit (each trial
+ *  replaces the previous one).
+ *
+ *  n          must equal the object's element count.
+ *  u[n dim]   relative displacements (finite), element i's at u[dim i .. dim i + dim - 1].
+ *  f[n dim]   out: forces on the body whose relative displacement is u, |f_i| <= mun_i, laid
+ *             out as u. May alias u.
+ *  dfdu[n dim dim]  out, or NULL if not wanted: the consistent tangents, element i's dim x dim
+ *             block at dfdu[dim dim i], row-major (df_a/du_b at [dim a + b]); each block is
+ *             symmetric, so Fortran's column-major reading is the same. Stick: kt I; slip:
+ *             kt (mun/|f_tr|)(I - n n^T), 0 in 1-D.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if j, u or f is NULL; FRICREG_ESIZE if n differs from the
+ *  element count; FRICREG_ENONFINITE if some u is NaN or infinite, or u - w_c overflows (a
+ *  displacement near 1e308). All inputs are checked before any output is written. Cost O(n);
+ *  no allocation. Since 1.6. */
+FRICREG_API int fricreg_jenkins_trial(fricreg_jenkins *j, size_t n, const double u[], double f[],
+                                      double dfdu[]);
+
+/** Make the last trial's slider positions the committed state (the step has converged).
+ *  Without a trial since the last commit, reset or set_params, the committed state stays.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if j is NULL. Since 1.6. */
+FRICREG_API int fricreg_jenkins_commit(fricreg_jenkins *j);
+
+/** Put every slider back at 0 (committed and trial), as after create; kt and mun are kept.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if j is NULL. Since 1.6. */
+FRICREG_API int fricreg_jenkins_reset(fricreg_jenkins *j);
+
+/** Copy the committed slider positions into w.
+ *
+ *  n         must equal the object's element count.
+ *  w[n dim]  out: element i's slider at w[dim i .. dim i + dim - 1], displacement units.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if j or w is NULL; FRICREG_ESIZE if n differs from the
+ *  element count. Since 1.6. */
+FRICREG_API int fricreg_jenkins_get_slider(fricreg_jenkins *j, size_t n, double w[]);
+
+/** Status of the last failed call on j. Returns that code, or FRICREG_OK if none (or j NULL).
+ *  A successful call does not clear it. Since 1.6. */
+FRICREG_API int fricreg_jenkins_errcode(const fricreg_jenkins *j);
+
+/** Message of the last failed call on j: names the function, the argument and its value.
+ *  "" if none; "NULL Jenkins elements" if j is NULL. Owned by j, valid until its next call.
+ *  Since 1.6. */
+FRICREG_API const char *fricreg_jenkins_errmsg(const fricreg_jenkins *j);
+
+/** Copy the last error message into buf[len], NUL-terminated and truncated to fit (for
+ *  Fortran). Returns the full message length (excluding the NUL), as snprintf does; 0 and
+ *  nothing written if buf is NULL or len is 0. Since 1.6. */
+FRICREG_API size_t fricreg_jenkins_errmsg_copy(const fricreg_jenkins *j, char *buf, size_t len);
+
+/** \} */
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FRICREG_JENKINS_H */
