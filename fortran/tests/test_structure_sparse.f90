@@ -167,6 +167,7 @@ program test_structure_sparse
     call check_bits(got(i), ref(i), 'after the refusals: number ' // str(i))
   end do
   call st%destroy()
+  deallocate (ptr, ind, val) ! a main program's allocatables live on: LeakSanitizer counts them
   call finish('test_structure_sparse')
 
 contains
