@@ -105,8 +105,10 @@ int fr_disk_block_solve(const struct fr_disk_eig *e, const double g[2], const do
                            * first: radius/|t| may underflow. Anisotropic: t lies on the circle
                            * to rounding, where the multiplier is 0 to first order
                            * (|y(lam)| ~ |t| (1 - lam/d)): its estimate d (|t|/radius - 1) */
-            y1 = radius * (t1 / nt);
-            y2 = radius * (t2 / nt);
+            double s = isfinite(nt) ? 1.0 : fmax(fabs(t1), fabs(t2)); /* |t| beyond DBL_MAX */
+            double n1 = t1 / s, n2 = t2 / s, nn = s == 1.0 ? nt : hypot(n1, n2);
+            y1 = radius * (n1 / nn); /* (fuzz finding: t/Inf put f at the centre) */
+            y2 = radius * (n2 / nn);
             l = (e->d1 == e->d2 ? e->d1 : dmax) * (nt / radius - 1.0);
         } else {
             y1 = q.d1 * t1 / (q.d1 + root);
