@@ -36,16 +36,37 @@
 #define MAX_CUTS 30       /* halvings of one Newton direction */
 #define WEFF_DROP 0x1p-53 /* W_eff entries below this times sqrt(W_ii W_jj) / m: rounding */
 
-/* zdot(f) and a_free(f) into s->zdot, s->afree; the law's forces into s->f1; G = f - F; then
- * R = w J^T G on the degrees of freedom J touches, its 2-norm into *phi and its largest entry
- * into *rinf. */
-static int residual(fricreg_structure *s, const gsl_vector *f, gsl_vector *G, double *phi,
-                    double *rinf)
+/* W_eff f and W f into p: the step's products with the forces, O(nnz(W_eff) + nnz(W)). */
+static void form_products(fricreg_structure *s, const double f[], struct fr_compliance_pair *p)
+{
+    fr_cfactor_compliance(&s->step, f, p->weff->data);
+    fr_cfactor_compliance(&s->mass, f, p->w->data);
+}
+
+/* p = a + lambda b: the products at the forces f_a + lambda f_b, O(m). */
+static void combine_products(const struct fr_compliance_pair *a, double lambda,
+                             const struct fr_compliance_pair *b, struct fr_compliance_pair *p)
+{
+    for (size_t i = 0; i < a->weff->size; i++) {
+        p->weff->data[i] = a->weff->data[i] + lambda * b->weff->data[i];
+        p->w->data[i] = a->w->data[i] + lambda * b->w->data[i];
+    }
+}
+
+static void copy_products(const struct fr_compliance_pair *from, struct fr_compliance_pair *to)
+{
+    gsl_vector_memcpy(to->weff, from->weff);
+    gsl_vector_memcpy(to->w, from->w);
+}
+
+/* From f and its products p: zdot(f) and a_free(f) into s->zdot, s->afree; the law's forces
+ * into s->f1; G = f - F; then R = w J^T G on the degrees of freedom J touches, its 2-norm
+ * into *phi and its largest entry into *rinf. */
+static int residual(fricreg_structure *s, const gsl_vector *f, const struct fr_compliance_pair *p,
+                    gsl_vector *G, double *phi, double *rinf)
 {
     size_t m = s->m;
-    double *weff_f = s->mwork->data, *w_f = s->mwork2->data;
-    fr_cfactor_compliance(&s->step, f->data, weff_f);
-    fr_cfactor_compliance(&s->mass, f->data, w_f);
+    const double *weff_f = p->weff->data, *w_f = p->w->data;
     double c = (1.0 + s->alpha) * s->gamma * s->step_dt;
     for (size_t i = 0; i < m; i++) {
         s->zdot->data[i] = s->z0->data[i] + c * weff_f[i];
@@ -152,11 +173,11 @@ static double force_scale(fricreg_structure *s)
 static double first_trial(fricreg_structure *s)
 {
     double c = (1.0 + s->alpha) * s->gamma * s->step_dt;
-    fr_cfactor_compliance(&s->step, s->df->data, s->mwork->data);
+    const double *weff_df = s->at_df.weff->data;
     double lambda = 1.0, eps = fr_ctx_eps(s->ctx);
     size_t first = s->m;
     for (size_t i = 0; i < s->m; i++) {
-        double z = s->zdot->data[i], z1 = z + c * s->mwork->data[i];
+        double z = s->zdot->data[i], z1 = z + c * weff_df[i];
         if (!s->stopped[i] && s->mun[i] > 0.0 && s->newton.fz[i] == 0.0 && z * z1 < 0.0 &&
             fabs(z1) >= eps && z / (z - z1) < lambda) {
             lambda = z / (z - z1);
@@ -169,17 +190,21 @@ static double first_trial(fricreg_structure *s)
 }
 
 /* Backtracking on ||R||_2 along df from f, from the first trial (stop_slips) or from the full
- * step; on success f, G and the context's last evaluation are at the accepted point. Returns
- * 0 if no cut decreased the residual. */
+ * step; on success f, its products, G and the context's last evaluation are at the accepted
+ * point. Returns 0 if no cut decreased the residual. */
 static int line_search(fricreg_structure *s, int stop_slips, double *phi, double *rinf)
 {
     double lambda = stop_slips ? first_trial(s) : 1.0;
     for (int cut = 0; cut <= MAX_CUTS; cut++) {
         gsl_vector_memcpy(s->ft, s->fk);
         gsl_blas_daxpy(lambda, s->df, s->ft);
+        combine_products(&s->at_fk, lambda, &s->at_df, &s->at_ft);
         double phi_t, rinf_t;
-        if (residual(s, s->ft, s->Gt, &phi_t, &rinf_t) == FRICREG_OK &&
+        if (residual(s, s->ft, &s->at_ft, s->Gt, &phi_t, &rinf_t) == FRICREG_OK &&
             phi_t <= (1.0 - ARMIJO * lambda) * *phi) {
+            struct fr_compliance_pair accepted = s->at_ft;
+            s->at_ft = s->at_fk;
+            s->at_fk = accepted;
             gsl_vector_memcpy(s->fk, s->ft);
             gsl_vector_memcpy(s->G, s->Gt);
             *phi = phi_t;
@@ -214,20 +239,22 @@ static int iterate(fricreg_structure *s, double tol, int stop_slips, double *phi
             break; /* a singular tangent: the step ends on this iterate, a failure counted */
         ++*iters;
         ++done;
+        form_products(s, s->df->data, &s->at_df);
         if (!line_search(s, stop_slips, phi, rinf)) {
-            residual(s, s->fk, s->G, phi, rinf); /* back to fk: the best point */
+            residual(s, s->fk, &s->at_fk, s->G, phi, rinf); /* back to fk: the best point */
             break;
         }
     }
     return FRICREG_OK;
 }
 
-/* fk = guess, its residual, phi and rinf. */
-static int start_at(fricreg_structure *s, double dt, const gsl_vector *guess, double *phi,
-                    double *rinf)
+/* fk = guess (whose products are p), its residual, phi and rinf. */
+static int start_at(fricreg_structure *s, double dt, const gsl_vector *guess,
+                    const struct fr_compliance_pair *p, double *phi, double *rinf)
 {
     gsl_vector_memcpy(s->fk, guess);
-    int status = residual(s, s->fk, s->G, phi, rinf);
+    copy_products(p, &s->at_fk);
+    int status = residual(s, s->fk, &s->at_fk, s->G, phi, rinf);
     if (status != FRICREG_OK)
         return fr_fail(s, status, "step: friction at t = %g: %s", s->t + dt,
                        fricreg_ctx_errmsg(s->ctx));
@@ -245,25 +272,33 @@ static int start_at(fricreg_structure *s, double dt, const gsl_vector *guess, do
  * ten-storey building (examples/building/) at eps = 1e-4 m/s and dt = 0.01 s that was 12
  * iterations a step through its 5 s of free vibration, all ten dampers sticking.
  * W_eff,SS is positive definite unless contacts of S depend on each other (equal rows of J):
- * then no guess. Into s->ft; 0 if there is none. Uses s->stopped as the marks of S. */
+ * then no guess. As a change of the start's forces f on S, whose velocities s->zdot holds:
+ *   c W_eff,SS df_S = zdot_S(t) - zdot_S(f),
+ * so that the guess's products are f's (s->at_start) and df's, one product. Into s->ft and
+ * its products into s->at_ft; 0 if there is none. Uses s->stopped as the marks of S. */
 static int stick_guess(fricreg_structure *s)
 {
     size_t m = s->m, k = 0;
     unsigned char *set = s->stopped;
-    double *f = s->f->data, *guess = s->ft->data, *weff_fr = s->mwork->data, *b = s->mwork2->data;
+    double *f = s->f->data, *guess = s->ft->data, *df = s->mwork->data, *b = s->mwork2->data;
     for (size_t i = 0; i < m; i++) {
         set[i] = fabs(f[i]) < s->mun[i];
         k += set[i];
-        guess[i] = set[i] ? 0.0 : f[i];
+        df[i] = 0.0;
     }
     if (k == 0)
         return 0;
     double c = (1.0 + s->alpha) * s->gamma * s->step_dt;
-    fr_cfactor_compliance(&s->step, guess, weff_fr); /* W_eff f_R */
-    fr_csc_mult_t(s->Jt, s->v->data, b);             /* zdot(t) */
+    fr_csc_mult_t(s->Jt, s->v->data, b); /* zdot(t) */
     for (size_t i = 0; i < m; i++)
-        b[i] = (b[i] - s->z0->data[i]) / c - weff_fr[i];
-    return fr_newton_stick_solve(&s->newton, s->step.D, set, b, guess, &s->cc) == FRICREG_OK;
+        b[i] = (b[i] - s->zdot->data[i]) / c;
+    if (fr_newton_stick_solve(&s->newton, s->step.D, set, b, df, &s->cc) != FRICREG_OK)
+        return 0;
+    for (size_t i = 0; i < m; i++)
+        guess[i] = f[i] + df[i];
+    form_products(s, df, &s->at_ft);
+    combine_products(&s->at_start, 1.0, &s->at_ft, &s->at_ft);
+    return 1;
 }
 
 /* Newton from the forces at the step's start or, where they are not within tol, the stick
@@ -275,15 +310,16 @@ static int stick_guess(fricreg_structure *s)
 static int newton(fricreg_structure *s, double dt, int *converged, int *iters)
 {
     double phi = 0.0, rinf = 0.0;
-    int status = start_at(s, dt, s->f, &phi, &rinf);
+    form_products(s, s->f->data, &s->at_start);
+    int status = start_at(s, dt, s->f, &s->at_start, &phi, &rinf);
     if (status != FRICREG_OK)
         return status;
     double tol = s->newton_tol * force_scale(s);
     if (rinf > tol && stick_guess(s)) {
         double phi_start = phi;
-        status = start_at(s, dt, s->ft, &phi, &rinf);
+        status = start_at(s, dt, s->ft, &s->at_ft, &phi, &rinf);
         if (status == FRICREG_OK && !(phi < phi_start))
-            status = start_at(s, dt, s->f, &phi, &rinf);
+            status = start_at(s, dt, s->f, &s->at_start, &phi, &rinf);
         if (status != FRICREG_OK)
             return status;
     }
@@ -292,7 +328,7 @@ static int newton(fricreg_structure *s, double dt, int *converged, int *iters)
     if ((status = iterate(s, tol, 1, &phi, &rinf, iters)) != FRICREG_OK)
         return status;
     if (rinf > tol && isfinite(phi) && *iters < s->newton_max) {
-        if ((status = start_at(s, dt, s->f, &phi, &rinf)) != FRICREG_OK ||
+        if ((status = start_at(s, dt, s->f, &s->at_start, &phi, &rinf)) != FRICREG_OK ||
             (status = iterate(s, tol, 0, &phi, &rinf, iters)) != FRICREG_OK)
             return status;
     }

@@ -22,11 +22,16 @@ void fricreg_structure_free(fricreg_structure *s)
 {
     if (s == NULL)
         return;
-    gsl_vector *vectors[] = {s->r,    s->p,    s->Mr,    s->u,     s->v,      s->a,      s->ptil,
-                             s->x,    s->u1,   s->v1,    s->ptil1, s->hist,   s->up,     s->vp,
-                             s->work, s->yb,   s->dx,    s->xt,    s->spread, s->a_held, s->f,
-                             s->f1,   s->zdot, s->afree, s->fk,    s->G,      s->df,     s->ft,
-                             s->Gt,   s->z0,   s->af0,   s->mwork, s->mwork2, s->f_held};
+    gsl_vector *vectors[] = {
+        s->r,          s->p,          s->Mr,      s->u,          s->v,
+        s->a,          s->ptil,       s->x,       s->u1,         s->v1,
+        s->ptil1,      s->hist,       s->up,      s->vp,         s->work,
+        s->yb,         s->dx,         s->xt,      s->spread,     s->a_held,
+        s->f,          s->f1,         s->zdot,    s->afree,      s->fk,
+        s->G,          s->df,         s->ft,      s->Gt,         s->z0,
+        s->af0,        s->mwork,      s->mwork2,  s->f_held,     s->at_start.weff,
+        s->at_start.w, s->at_fk.weff, s->at_fk.w, s->at_df.weff, s->at_df.w,
+        s->at_ft.weff, s->at_ft.w};
     for (size_t k = 0; k < sizeof vectors / sizeof *vectors; k++)
         free(vectors[k]); /* gsl_mem.h: one block each */
     cholmod_sparse **model[] = {&s->M, &s->K, &s->C, &s->Jt, &s->Cd};
@@ -56,8 +61,14 @@ static int allocate(fricreg_structure *s)
     for (size_t k = 0; k < sizeof nv / sizeof *nv; k++)
         if ((*nv[k] = fr_gsl_vector_new(n)) == NULL)
             return 0;
-    gsl_vector **mv[] = {&s->f,  &s->f1, &s->zdot, &s->afree, &s->fk,    &s->G,      &s->df,
-                         &s->ft, &s->Gt, &s->z0,   &s->af0,   &s->mwork, &s->mwork2, &s->f_held};
+    gsl_vector **mv[] = {&s->f,          &s->f1,         &s->zdot,
+                         &s->afree,      &s->fk,         &s->G,
+                         &s->df,         &s->ft,         &s->Gt,
+                         &s->z0,         &s->af0,        &s->mwork,
+                         &s->mwork2,     &s->f_held,     &s->at_start.weff,
+                         &s->at_start.w, &s->at_fk.weff, &s->at_fk.w,
+                         &s->at_df.weff, &s->at_df.w,    &s->at_ft.weff,
+                         &s->at_ft.w};
     for (size_t k = 0; k < sizeof mv / sizeof *mv; k++)
         if ((*mv[k] = fr_gsl_vector_new(m)) == NULL)
             return 0;

@@ -36,6 +36,11 @@ struct fr_energy {
     double *per_contact; /* [m] */
 };
 
+/* W_eff f and W f, [m] each, at one set of contact forces f. */
+struct fr_compliance_pair {
+    gsl_vector *weff, *w;
+};
+
 struct fricreg_structure {
     size_t n, m;
     cholmod_common cc; /* CHOLMOD's workspace and settings (src/base/sparse_factor.h) */
@@ -101,6 +106,9 @@ struct fricreg_structure {
      * residual, direction, trial, and what the contacts see of the step's predictor. */
     gsl_vector *f1, *zdot, *afree, *fk, *G, *df, *ft, *Gt, *z0, *af0, *mwork, *mwork2;
     unsigned char *stopped; /* [m] Newton: stopped at zdot_i = 0 this step */
+    /* W_eff f and W f at the step's start forces, Newton's iterate, its direction and the
+     * trial (newmark.c): the residual is affine in f, so a trial's are combined, not formed */
+    struct fr_compliance_pair at_start, at_fk, at_df, at_ft;
 
     struct fr_energy energy;
     int64_t stats[FR_NSSTATS];
