@@ -47,14 +47,19 @@ if(FRICREG_PETSC_BUILT)
   install(FILES include/fricreg_petsc.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endif()
 
-# fricreg_add_mpi_test(NAME RANKS TIMEOUT COMMAND...): the test NAME_npRANKS, run by mpiexec
-# on RANKS ranks, label mpi. Open MPI refuses root unless told (CI runs as root), and a
-# 2-rank run on a machine that reports fewer free slots needs oversubscription.
+# fricreg_mpi_test_properties(TEST RANKS TIMEOUT): label mpi, and the environment mpiexec
+# needs here: Open MPI refuses root unless told (CI runs as root), and a 2-rank run on a
+# machine that reports fewer free slots needs oversubscription.
+function(fricreg_mpi_test_properties test ranks timeout)
+  set_tests_properties(${test} PROPERTIES LABELS mpi TIMEOUT ${timeout} PROCESSORS ${ranks}
+    ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_rmaps_base_oversubscribe=1")
+endfunction()
+
+# fricreg_add_mpi_test(NAME RANKS TIMEOUT PROGRAM ARGS...): the test NAME_npRANKS, PROGRAM run
+# by mpiexec on RANKS ranks.
 function(fricreg_add_mpi_test name ranks timeout)
   add_test(NAME ${name}_np${ranks}
            COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${ranks} ${MPIEXEC_PREFLAGS}
                    ${ARGN} ${MPIEXEC_POSTFLAGS})
-  set_tests_properties(${name}_np${ranks} PROPERTIES LABELS mpi TIMEOUT ${timeout}
-    PROCESSORS ${ranks}
-    ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_rmaps_base_oversubscribe=1")
+  fricreg_mpi_test_properties(${name}_np${ranks} ${ranks} ${timeout})
 endfunction()
