@@ -22,7 +22,7 @@ reports=$work/reports
 rm -rf "$reports" && mkdir -p "$reports"
 log=$work/log
 # shellcheck disable=SC2086 # $fortran is two words or one, on purpose
-cmake -S "$src" -B "$work/tree" -DCMAKE_C_COMPILER="$cc" $fortran -DFRICREG_SANITIZE_TREE=ON \
+cmake -S "$src" -B "$work/tree" -DCMAKE_C_COMPILER="$cc" $fortran -DFRICREG_SANITIZE_TREE=ON -DFRICREG_PETSC=OFF \
       -DFRICREG_AVX2=OFF \
       -DCMAKE_C_FLAGS="$flags" -DCMAKE_Fortran_FLAGS="$flags" \
       -DCMAKE_EXE_LINKER_FLAGS="$flags" -DCMAKE_SHARED_LINKER_FLAGS="$flags" >"$log" 2>&1 &&

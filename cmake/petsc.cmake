@@ -1,0 +1,65 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+# libfricreg_petsc, the optional PETSc adapter (include/fricreg_petsc.h, src/petsc/): built when
+# PETSc (pkg-config PETSc, Debian petsc-dev) and MPI are found, unless FRICREG_PETSC is OFF;
+# FRICREG_PETSC=ON makes their absence an error. The core builds the same either way.
+set(FRICREG_PETSC AUTO CACHE STRING "Build the PETSc adapter libfricreg_petsc: AUTO (when PETSc and MPI are found), ON, OFF")
+set_property(CACHE FRICREG_PETSC PROPERTY STRINGS AUTO ON OFF)
+set(FRICREG_PETSC_BUILT OFF)
+if(NOT FRICREG_PETSC STREQUAL "OFF")
+  find_package(PkgConfig QUIET)
+  if(PKG_CONFIG_FOUND)
+    pkg_check_modules(PETSC QUIET IMPORTED_TARGET PETSc)
+  endif()
+  find_package(MPI QUIET COMPONENTS C)
+  if(PETSC_FOUND AND MPI_C_FOUND)
+    set(FRICREG_PETSC_BUILT ON)
+  elseif(FRICREG_PETSC STREQUAL "ON")
+    message(FATAL_ERROR "FRICREG_PETSC=ON but PETSc (pkg-config PETSc) or MPI was not found "
+                        "(Debian: apt-get install petsc-dev)")
+  else()
+    message(STATUS "PETSc or MPI not found (Debian: petsc-dev): libfricreg_petsc and the MPI "
+                   "examples are not built")
+  endif()
+endif()
+
+if(FRICREG_PETSC_BUILT)
+  message(STATUS "PETSc ${PETSC_VERSION} and MPI found: building libfricreg_petsc")
+  set(FRICREG_PETSC_VERSION_SCRIPT ${PROJECT_SOURCE_DIR}/src/petsc/fricreg_petsc.map)
+  # error.c: the core's message record, compiled in (hidden in libfricreg, as rk4_classic.c in
+  # the problems).
+  add_library(fricreg_petsc SHARED src/petsc/adapter.c src/petsc/eval.c src/petsc/jacobian.c
+                                   src/base/error.c)
+  add_library(fricreg::fricreg_petsc ALIAS fricreg_petsc)
+  target_include_directories(fricreg_petsc PUBLIC ${FRICREG_INCLUDE_DIRS}
+                             PRIVATE ${PROJECT_SOURCE_DIR}/src)
+  target_link_libraries(fricreg_petsc PUBLIC fricreg PkgConfig::PETSC MPI::MPI_C PRIVATE m)
+  target_compile_options(fricreg_petsc PRIVATE ${FRICREG_WARNINGS})
+  if(FRICREG_LD_VERSION_SCRIPT)
+    target_link_options(fricreg_petsc PRIVATE
+                        "LINKER:--version-script=${FRICREG_PETSC_VERSION_SCRIPT}")
+  endif()
+  set_target_properties(fricreg_petsc PROPERTIES
+    VERSION ${PROJECT_VERSION}
+    SOVERSION ${FRICREG_PETSC_SOVERSION}
+    C_VISIBILITY_PRESET hidden
+    LINK_DEPENDS ${FRICREG_PETSC_VERSION_SCRIPT})
+  install(TARGETS fricreg_petsc LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+  install(FILES include/fricreg_petsc.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+endif()
+
+# fricreg_mpi_test_properties(TEST RANKS TIMEOUT): label mpi, and the environment mpiexec
+# needs here: Open MPI refuses root unless told (CI runs as root), and a 2-rank run on a
+# machine that reports fewer free slots needs oversubscription.
+function(fricreg_mpi_test_properties test ranks timeout)
+  set_tests_properties(${test} PROPERTIES LABELS mpi TIMEOUT ${timeout} PROCESSORS ${ranks}
+    ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_rmaps_base_oversubscribe=1")
+endfunction()
+
+# fricreg_add_mpi_test(NAME RANKS TIMEOUT PROGRAM ARGS...): the test NAME_npRANKS, PROGRAM run
+# by mpiexec on RANKS ranks.
+function(fricreg_add_mpi_test name ranks timeout)
+  add_test(NAME ${name}_np${ranks}
+           COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${ranks} ${MPIEXEC_PREFLAGS}
+                   ${ARGN} ${MPIEXEC_POSTFLAGS})
+  fricreg_mpi_test_properties(${name}_np${ranks} ${ranks} ${timeout})
+endfunction()

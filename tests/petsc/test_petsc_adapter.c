@@ -1,0 +1,255 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* test_petsc_adapter.c — libfricreg_petsc on 1 or more ranks (mpiexec -n 1, -n 2):
+ *  - jacobian_add is the exact derivative of residual_add: against central differences of the
+ *    whole residual R = M A - F_free - J^T f of a spring chain with a lumped mass, TSALPHA2's
+ *    shifts, contacts sliding, in law (4)'s zone and against the ground and between two nodes;
+ *  - a contact on another rank's degree of freedom is refused on every rank with
+ *    FRICREG_PETSC_EREMOTE (2 ranks), a shared degree of freedom with FRICREG_EINVAL.
+ * Prints "ok" lines and exits 0, or names the failure and exits 1. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include <petscdmda.h>
+
+#include "fricreg_petsc.h"
+
+#define N 12
+#define SPRING 2.385
+#define DAMPING 0.137
+#define EPS 0.1
+#define SHIFT_V 31.7 /* TSALPHA2-like shifts: v_shift ~ 1/(gamma dt)... any finite values */
+#define SHIFT_A 913.0
+
+static int fails = 0;
+
+static void check(int ok, const char *what)
+{
+    int rank;
+    MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+    if (!ok)
+        fails++;
+    if (rank == 0 || !ok)
+        printf("%s: %s\n", ok ? "ok" : "FAIL", what);
+}
+
+struct model {
+    DM da;
+    Vec mass, U0, V0, A0;
+    fricreg_petsc *fp;
+};
+
+/* F_free = p - K U - C V at the owned entries: K the chain of springs (walls at both ends),
+ * C = DAMPING M, p a fixed load. */
+static void free_force(struct model *md, Vec U, Vec V, Vec F)
+{
+    Vec Ul;
+    PetscScalar *ul, *f;
+    const PetscScalar *v, *mv;
+    PetscInt xs, xm;
+    DMGetLocalVector(md->da, &Ul);
+    DMGlobalToLocal(md->da, U, INSERT_VALUES, Ul);
+    DMDAGetCorners(md->da, &xs, NULL, NULL, &xm, NULL, NULL);
+    DMDAVecGetArray(md->da, Ul, &ul);
+    DMDAVecGetArray(md->da, F, &f);
+    DMDAVecGetArrayRead(md->da, V, &v);
+    DMDAVecGetArrayRead(md->da, md->mass, &mv);
+    for (PetscInt i = xs; i < xs + xm; i++) {
+        double left = i > 0 ? ul[i - 1] : 0.0, right = i < N - 1 ? ul[i + 1] : 0.0;
+        f[i] = 0.7 * sin(1.3 * i) - SPRING * (2.0 * ul[i] - left - right) - DAMPING * mv[i] * v[i];
+    }
+    DMDAVecRestoreArrayRead(md->da, md->mass, &mv);
+    DMDAVecRestoreArrayRead(md->da, V, &v);
+    DMDAVecRestoreArray(md->da, F, &f);
+    DMDAVecRestoreArray(md->da, Ul, &ul);
+    DMRestoreLocalVector(md->da, &Ul);
+}
+
+/* R(U) with V = V0 + SHIFT_V (U - U0), A = A0 + SHIFT_A (U - U0). */
+static int residual(struct model *md, Vec U, Vec R)
+{
+    Vec V, A, F, dU;
+    VecDuplicate(U, &V), VecDuplicate(U, &A), VecDuplicate(U, &F), VecDuplicate(U, &dU);
+    VecWAXPY(dU, -1.0, md->U0, U);
+    VecWAXPY(V, SHIFT_V, dU, md->V0);
+    VecWAXPY(A, SHIFT_A, dU, md->A0);
+    free_force(md, U, V, F);
+    VecPointwiseMult(R, md->mass, A);
+    VecAXPY(R, -1.0, F);
+    int status = fricreg_petsc_residual_add(md->fp, V, F, R, NULL);
+    VecDestroy(&V), VecDestroy(&A), VecDestroy(&F), VecDestroy(&dU);
+    return status;
+}
+
+/* The caller's Jacobian without friction, SHIFT_A M + SHIFT_V C + K, then the adapter's. */
+static int jacobian(struct model *md, Mat P)
+{
+    PetscInt xs, xm;
+    const PetscScalar *mv;
+    DMDAGetCorners(md->da, &xs, NULL, NULL, &xm, NULL, NULL);
+    DMDAVecGetArrayRead(md->da, md->mass, &mv);
+    MatZeroEntries(P);
+    for (PetscInt i = xs; i < xs + xm; i++) {
+        MatSetValue(P, i, i, SHIFT_A * mv[i] + SHIFT_V * DAMPING * mv[i] + 2.0 * SPRING,
+                    INSERT_VALUES);
+        if (i > 0)
+            MatSetValue(P, i, i - 1, -SPRING, INSERT_VALUES);
+        if (i < N - 1)
+            MatSetValue(P, i, i + 1, -SPRING, INSERT_VALUES);
+    }
+    DMDAVecRestoreArrayRead(md->da, md->mass, &mv);
+    MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY);
+    MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY);
+    Vec V, F;
+    VecDuplicate(md->U0, &V), VecDuplicate(md->U0, &F);
+    VecCopy(md->V0, V);
+    free_force(md, md->U0, V, F);
+    int status = fricreg_petsc_jacobian_add(md->fp, V, F, SHIFT_A, SHIFT_V, P);
+    VecDestroy(&V), VecDestroy(&F);
+    return status;
+}
+
+/* Contacts of this rank: to the ground at every owned node but the pairs, and one pair of
+ * neighbours (two owned nodes) per rank with at least 4 nodes. Velocities V0 put them in
+ * slip (|zdot| > eps), in law (4)'s zone, and at rest. */
+static void contacts(struct model *md, PetscInt node[], PetscInt other[], size_t *m)
+{
+    PetscInt xs, xm;
+    DMDAGetCorners(md->da, &xs, NULL, NULL, &xm, NULL, NULL);
+    *m = 0;
+    for (PetscInt i = xs; i < xs + xm; i++) {
+        int pair = xm >= 4 && i == xs + 1;
+        node[*m] = i;
+        other[(*m)++] = pair ? i + 1 : -1;
+        if (pair)
+            i++;
+    }
+}
+
+static void fill_state(struct model *md)
+{
+    PetscInt xs, xm;
+    PetscScalar *u, *v, *a, *mv;
+    DMDAGetCorners(md->da, &xs, NULL, NULL, &xm, NULL, NULL);
+    DMDAVecGetArray(md->da, md->U0, &u), DMDAVecGetArray(md->da, md->V0, &v);
+    DMDAVecGetArray(md->da, md->A0, &a), DMDAVecGetArray(md->da, md->mass, &mv);
+    static const double vel[5] = {0.31, -0.023, 0.0123, 0.061, -0.47};
+    for (PetscInt i = xs; i < xs + xm; i++) {
+        mv[i] = 1.0 + 0.1 * i;
+        u[i] = 0.05 * cos(0.9 * i);
+        v[i] = vel[i % 5];
+        a[i] = 0.2 * sin(0.4 * i);
+    }
+    DMDAVecRestoreArray(md->da, md->U0, &u), DMDAVecRestoreArray(md->da, md->V0, &v);
+    DMDAVecRestoreArray(md->da, md->A0, &a), DMDAVecRestoreArray(md->da, md->mass, &mv);
+}
+
+/* max |P - dR/dU| over max |P|, dR/dU by central differences column by column. */
+static double jacobian_error(struct model *md, Mat P)
+{
+    Vec U, Rp, Rm;
+    VecDuplicate(md->U0, &U), VecDuplicate(md->U0, &Rp), VecDuplicate(md->U0, &Rm);
+    PetscInt rs, re;
+    VecGetOwnershipRange(U, &rs, &re);
+    double err = 0.0, scale = 0.0, h = 1e-7;
+    for (PetscInt j = 0; j < N; j++) {
+        VecCopy(md->U0, U);
+        if (j >= rs && j < re) /* the owner alone: each rank's ADD would add */
+            VecSetValue(U, j, h, ADD_VALUES);
+        VecAssemblyBegin(U), VecAssemblyEnd(U);
+        residual(md, U, Rp);
+        VecCopy(md->U0, U);
+        if (j >= rs && j < re)
+            VecSetValue(U, j, -h, ADD_VALUES);
+        VecAssemblyBegin(U), VecAssemblyEnd(U);
+        residual(md, U, Rm);
+        const PetscScalar *rp, *rm;
+        VecGetArrayRead(Rp, &rp), VecGetArrayRead(Rm, &rm);
+        for (PetscInt i = rs; i < re; i++) {
+            PetscScalar pij;
+            MatGetValues(P, 1, &i, 1, &j, &pij);
+            double fd = (rp[i - rs] - rm[i - rs]) / (2.0 * h);
+            err = fmax(err, fabs(pij - fd));
+            scale = fmax(scale, fabs(pij));
+        }
+        VecRestoreArrayRead(Rp, &rp), VecRestoreArrayRead(Rm, &rm);
+    }
+    VecDestroy(&U), VecDestroy(&Rp), VecDestroy(&Rm);
+    double local[2] = {err, scale}, all[2];
+    MPI_Allreduce(local, all, 2, MPI_DOUBLE, MPI_MAX, PETSC_COMM_WORLD);
+    return all[0] / all[1];
+}
+
+static void test_jacobian(void)
+{
+    struct model md = {0};
+    DMDACreate1d(PETSC_COMM_WORLD, DM_BOUNDARY_NONE, N, 1, 2, NULL, &md.da);
+    DMSetUp(md.da);
+    DMCreateGlobalVector(md.da, &md.mass);
+    VecDuplicate(md.mass, &md.U0), VecDuplicate(md.mass, &md.V0), VecDuplicate(md.mass, &md.A0);
+    fill_state(&md);
+    PetscInt node[N], other[N];
+    size_t m;
+    contacts(&md, node, other, &m);
+    int status = fricreg_petsc_create(md.mass, m, node, other, &md.fp);
+    check(status == FRICREG_OK, "create: contacts to the ground and between two owned nodes");
+    double mun[N];
+    for (size_t k = 0; k < m; k++)
+        mun[k] = 0.4 + 0.05 * (double)k;
+    fricreg_petsc_set_law(md.fp, FRICREG_LAW_QUINN, EPS);
+    fricreg_petsc_set_bounds(md.fp, m, mun);
+    Mat P;
+    DMCreateMatrix(md.da, &P);
+    status = jacobian(&md, P);
+    check(status == FRICREG_OK, "jacobian_add");
+    double err = jacobian_error(&md, P);
+    char what[160];
+    snprintf(what, sizeof what, "jacobian_add against central differences: %.2e (< 1e-6)", err);
+    check(err < 1e-6, what);
+    MatDestroy(&P);
+    fricreg_petsc_free(md.fp);
+    VecDestroy(&md.mass), VecDestroy(&md.U0), VecDestroy(&md.V0), VecDestroy(&md.A0);
+    DMDestroy(&md.da);
+}
+
+/* Rank 1 names rank 0's first node: both ranks get FRICREG_PETSC_EREMOTE; a degree of freedom
+ * in two contacts: FRICREG_EINVAL. */
+static void test_refusals(void)
+{
+    int rank, size;
+    MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+    MPI_Comm_size(PETSC_COMM_WORLD, &size);
+    Vec mass;
+    VecCreateMPI(PETSC_COMM_WORLD, 4, PETSC_DETERMINE, &mass);
+    VecSet(mass, 2.0);
+    PetscInt rs, re;
+    VecGetOwnershipRange(mass, &rs, &re);
+    fricreg_petsc *fp = NULL;
+    if (size > 1) {
+        PetscInt node[1] = {rank == 1 ? 0 : rs};
+        int status = fricreg_petsc_create(mass, 1, node, NULL, &fp);
+        check(status == FRICREG_PETSC_EREMOTE && fp == NULL,
+              "a contact on another rank's node: FRICREG_PETSC_EREMOTE on every rank");
+    }
+    PetscInt shared[2] = {rs, rs + 1}, pair[2] = {-1, rs};
+    int status = fricreg_petsc_create(mass, 2, shared, pair, &fp);
+    check(status == FRICREG_EINVAL && fp == NULL, "a node in two contacts: FRICREG_EINVAL");
+    PetscInt beyond[1] = {re + 100 * (PetscInt)size};
+    status = fricreg_petsc_create(mass, 1, beyond, NULL, &fp);
+    check(status == FRICREG_PETSC_EREMOTE, "an index beyond the Vec: FRICREG_PETSC_EREMOTE");
+    check(strstr(fricreg_petsc_strerror(FRICREG_PETSC_EREMOTE), "across ranks") != NULL,
+          "strerror names the restriction");
+    VecDestroy(&mass);
+}
+
+int main(int argc, char **argv)
+{
+    if (PetscInitialize(&argc, &argv, NULL, NULL))
+        return 1;
+    test_jacobian();
+    test_refusals();
+    int all;
+    MPI_Allreduce(&fails, &all, 1, MPI_INT, MPI_SUM, PETSC_COMM_WORLD);
+    PetscFinalize();
+    return all == 0 ? 0 : 1;
+}
