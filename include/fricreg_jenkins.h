@@ -26,6 +26,18 @@
  * converged, which makes the last trial's slider positions the committed ones. Cost O(n) per
  * call; nothing allocates after fricreg_jenkins_create.
  *
+ * Normal load with lift-off (fricreg_jenkins_set_normal, fricreg_jenkins_trial_normal): the
+ * bound becomes mun = mu N with the normal force N = max(0, N0 + kn g) of a preload N0 and a
+ * normal stiffness kn on the normal relative displacement g, positive when the surfaces press
+ * together (g < -N0/kn opens the contact). With N0 + kn g < 0 the element is separated: f = 0,
+ * df/du = 0, df/dg = 0, and its slider follows the displacement (w = u: the spring unloaded,
+ * the memory reset). In contact the return mapping above runs with mun = mu N, and
+ *
+ *     stick: df/dg = 0;     slip: df/dg = mu kn n          (dN/dg = kn)
+ *
+ * (the slip force mu N n grows with N along the slip direction). At N0 + kn g = 0 exactly the
+ * contact is closed with mun = 0 (the one-sided derivatives of the closed side).
+ *
  * One object, a dimension argument: the 1-D element is the 2-D one restricted to a line (the
  * same state, parameters, protocol and equations, only the norm changes), so one object type
  * with dim = 1 or 2 serves both, with the same functions and one Fortran type, rather than two
@@ -61,7 +73,7 @@ typedef struct fricreg_jenkins fricreg_jenkins;
  *  plane).
  *
  *  Defaults: kt = 1 and mun = 1 for every element (fricreg_jenkins_set_params), every slider
- *  at 0 (committed and trial). All memory is allocated here: 3 n dim doubles.
+ *  at 0 (committed and trial). All memory is allocated here: (4 + 2 dim) n doubles.
  *
  *  dim  1 or 2.
  *  n    number of elements, 1 <= n <= SIZE_MAX/64.
@@ -90,7 +102,8 @@ FRICREG_API int fricreg_jenkins_dim(const fricreg_jenkins *j);
  *
  *  The committed slider positions are kept; a trial not yet committed is discarded (the next
  *  fricreg_jenkins_commit without a trial keeps the committed state). All inputs are checked
- *  before anything changes.
+ *  before anything changes. A fixed bound replaces a normal law of fricreg_jenkins_set_normal
+ *  (it is the law mu = 1, N0 = mun, kn = 0).
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if j, kt or mun is NULL; FRICREG_ESIZE if n differs from
  *  the element count; FRICREG_ENONFINITE if some kt[i] or mun[i] is NaN or infinite;
@@ -119,13 +132,59 @@ FRICREG_API int fricreg_jenkins_set_params(fricreg_jenkins *j, size_t n, const d
 FRICREG_API int fricreg_jenkins_trial(fricreg_jenkins *j, size_t n, const double u[], double f[],
                                       double dfdu[]);
 
+/** Set each element's normal law: the slip bound mu N with N = max(0, N0 + kn g) (the header's
+ *  lift-off rule), g the normal relative displacement of fricreg_jenkins_trial_normal,
+ *  positive when the surfaces press together. kt is kept.
+ *
+ *  n       must equal the object's element count.
+ *  mu[n]   friction coefficient >= 0 (finite), nondimensional.
+ *  n0[n]   preload N0 (finite), force units: the normal force at g = 0; negative for a contact
+ *          open at g = 0 (a gap of -N0/kn).
+ *  kn[n]   normal stiffness >= 0 (finite), force per unit displacement; 0: N = N0 whatever g.
+ *
+ *  fricreg_jenkins_trial is then fricreg_jenkins_trial_normal at g = 0 (bound mu max(0, N0)).
+ *  The committed slider positions are kept; a trial not yet committed is discarded. All
+ *  inputs are checked before anything changes.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if j, mu, n0 or kn is NULL; FRICREG_ESIZE if n differs
+ *  from the element count; FRICREG_ENONFINITE if some mu[i], n0[i] or kn[i] is NaN or
+ *  infinite, or mu[i] n0[i] or mu[i] kn[i] overflows; FRICREG_EINVAL if some mu[i] < 0 or
+ *  kn[i] < 0. Since 1.6. */
+FRICREG_API int fricreg_jenkins_set_normal(fricreg_jenkins *j, size_t n, const double mu[],
+                                           const double n0[], const double kn[]);
+
+/** Trial forces and tangents at tangential displacements u and normal displacements g, by the
+ *  lift-off rule at the top of this header (bound mu max(0, N0 + kn g), separated for
+ *  N0 + kn g < 0), from the committed slider positions. As fricreg_jenkins_trial otherwise: the
+ *  committed state does not change, the sliders' trial positions (w = u where separated) are
+ *  kept for fricreg_jenkins_commit.
+ *
+ *  n          must equal the object's element count.
+ *  u[n dim]   relative tangential displacements (finite), laid out as in fricreg_jenkins_trial.
+ *  g[n]       normal relative displacements (finite), displacement units, positive pressing.
+ *  f[n dim]   out: tangential forces, |f_i| <= mu_i N_i; 0 where separated. May alias u.
+ *  nf[n]      out, or NULL: the normal forces N = max(0, N0 + kn g) >= 0 (dN/dg = kn where
+ *             N0 + kn g >= 0, else 0).
+ *  dfdu[n dim dim]  out, or NULL: the tangents df/du, laid out as in fricreg_jenkins_trial;
+ *             0 where separated.
+ *  dfdg[n dim]  out, or NULL: df/dg per element: 0 in a stick or separated, mu kn n in a slip.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if j, u, g or f is NULL; FRICREG_ESIZE if n differs from
+ *  the element count; FRICREG_ENONFINITE if some u or g is NaN or infinite, u - w_c overflows,
+ *  or N0 + kn g or mu N overflows. All inputs are checked before any output is written. Cost
+ *  O(n); no allocation. Since 1.6. */
+FRICREG_API int fricreg_jenkins_trial_normal(fricreg_jenkins *j, size_t n, const double u[],
+                                             const double g[], double f[], double nf[],
+                                             double dfdu[], double dfdg[]);
+
 /** Make the last trial's slider positions the committed state (the step has converged).
  *  Without a trial since the last commit, reset or set_params, the committed state stays.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if j is NULL. Since 1.6. */
 FRICREG_API int fricreg_jenkins_commit(fricreg_jenkins *j);
 
-/** Put every slider back at 0 (committed and trial), as after create; kt and mun are kept.
+/** Put every slider back at 0 (committed and trial), as after create; kt, mun and the normal
+ *  law are kept.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if j is NULL. Since 1.6. */
 FRICREG_API int fricreg_jenkins_reset(fricreg_jenkins *j);

@@ -42,6 +42,7 @@
 #include "fricreg_disk_ctx.h"
 #include "fricreg_stribeck.h"
 #include "fricreg_exact.h"
+#include "fricreg_iwan.h"
 #include "fricreg_jenkins.h"
 #include "fricreg_sim.h"
 #include "fricreg_structure.h"
@@ -82,6 +83,7 @@ struct fixture {
     fricreg_sim *sim;
     fricreg_structure *st;
     fricreg_jenkins *jk;      /* one 2-D Jenkins element after a committed slip */
+    fricreg_iwan *iw;         /* one 2-D Iwan element of 3 sliders after a committed slip */
     double out[NOUT][OUTLEN]; /* outputs, all sentinel before the call */
     void *handle_out;         /* a create's out, sentinel before the call */
     double arr[8][OUTLEN];    /* input arrays of the call (perturbed copies) */
@@ -135,6 +137,12 @@ static void fixture_make(struct fixture *fx)
     ck_assert_int_eq(fricreg_jenkins_trial(fx->jk, 1, u1, df, NULL), FRICREG_OK);
     ck_assert_int_eq(fricreg_jenkins_commit(fx->jk), FRICREG_OK);
 
+    const double k3[3] = {2.385, 1.25, 0.5}, phi3[3] = {0.5, 0.25, 1.0};
+    ck_assert_int_eq(fricreg_iwan_create(2, 1, 3, &fx->iw), FRICREG_OK);
+    ck_assert_int_eq(fricreg_iwan_set_params(fx->iw, 1, 3, k3, phi3), FRICREG_OK);
+    ck_assert_int_eq(fricreg_iwan_trial(fx->iw, 1, u1, df, NULL), FRICREG_OK);
+    ck_assert_int_eq(fricreg_iwan_commit(fx->iw), FRICREG_OK);
+
     memset(fx->out, SENTINEL_BYTE, sizeof fx->out);
     memset(&fx->handle_out, SENTINEL_BYTE, sizeof fx->handle_out);
 }
@@ -147,6 +155,7 @@ static void fixture_free(struct fixture *fx)
     fricreg_sim_free(fx->sim);
     fricreg_structure_free(fx->st);
     fricreg_jenkins_free(fx->jk);
+    fricreg_iwan_free(fx->iw);
 }
 
 static int untouched(const void *p, size_t bytes)
@@ -736,12 +745,92 @@ static int w_jk_get_slider(void)
     return fricreg_jenkins_get_slider(JK(), Z(0, 1), OUTD(1));
 }
 
+static int w_jk_set_normal(void)
+{
+    const double mu[1] = {0.5}, n0[1] = {1.5}, kn[1] = {2.0};
+    return fricreg_jenkins_set_normal(JK(), Z(0, 1), A(1, mu, 1), A(2, n0, 1), A(3, kn, 1));
+}
+static int w_jk_trial_normal(void)
+{
+    const double u[2] = {0.7, 0.1}, g[1] = {0.125};
+    return fricreg_jenkins_trial_normal(JK(), Z(0, 1), A(1, u, 2), A(2, g, 1), OUTD(3), OUTD(4),
+                                        OUTD(5), OUTD(6));
+}
+
+/* fricreg_iwan.h: one 2-D element of 3 sliders */
+static int w_iw_create(void)
+{
+    fricreg_iwan **out = is(K_PTR, 0) ? NULL : (fricreg_iwan **)&FX_->handle_out;
+    int status = fricreg_iwan_create(N(0, 2), Z(0, 1), Z(1, 3), out);
+    if (status == FRICREG_OK)
+        fricreg_iwan_free(*out);
+    return status;
+}
+static fricreg_iwan *IW(void)
+{
+    return is(K_PTR, 9) ? NULL : FX_->iw;
+}
+static int w_iw_set_params(void)
+{
+    const double k[3] = {2.385, 1.0, 0.5}, phi[3] = {0.5, 0.75, 0.125};
+    return fricreg_iwan_set_params(IW(), Z(0, 1), Z(1, 3), A(1, k, 3), A(2, phi, 3));
+}
+static int w_iw_get_params(void)
+{
+    return fricreg_iwan_get_params(IW(), Z(0, 1), Z(1, 3), OUTD(1), OUTD(2));
+}
+static int w_iw_set_segalman(void)
+{
+    const double fs[1] = {2.385}, kt[1] = {10.0}, chi[1] = {-0.5}, beta[1] = {0.35};
+    return fricreg_iwan_set_segalman(IW(), Z(0, 1), A(1, fs, 1), A(2, kt, 1), A(3, chi, 1),
+                                     A(4, beta, 1), D(0, 1e-4));
+}
+static int w_iw_set_normal(void)
+{
+    const double n0[1] = {1.5}, kn[1] = {2.0};
+    return fricreg_iwan_set_normal(IW(), Z(0, 1), A(1, n0, 1), A(2, kn, 1));
+}
+static int w_iw_trial(void)
+{
+    const double u[2] = {0.7, 0.1};
+    return fricreg_iwan_trial(IW(), Z(0, 1), A(1, u, 2), OUTD(2), OUTD(3));
+}
+static int w_iw_trial_normal(void)
+{
+    const double u[2] = {0.7, 0.1}, g[1] = {0.125};
+    return fricreg_iwan_trial_normal(IW(), Z(0, 1), A(1, u, 2), A(2, g, 1), OUTD(3), OUTD(4),
+                                     OUTD(5), OUTD(6));
+}
+static int w_iw_commit(void)
+{
+    return fricreg_iwan_commit(IW());
+}
+static int w_iw_reset(void)
+{
+    return fricreg_iwan_reset(IW());
+}
+static int w_iw_get_slider(void)
+{
+    return fricreg_iwan_get_slider(IW(), Z(0, 1), Z(1, 3), OUTD(1));
+}
+
 /* ---- The table ---------------------------------------------------------------------------- */
 
 /* The object a call records its failures in (a const getter records none). */
-enum owner { NONE, CTX_REC, EX_REC, SIM_REC, ST_REC, DCTX_REC, CHAIN_REC, EXSTUCK_REC, JK_REC };
+enum owner {
+    NONE,
+    CTX_REC,
+    EX_REC,
+    SIM_REC,
+    ST_REC,
+    DCTX_REC,
+    CHAIN_REC,
+    EXSTUCK_REC,
+    JK_REC,
+    IW_REC
+};
 
-#define MAXARGS 8
+#define MAXARGS 12
 struct arg {
     enum kind kind;
     int slot;
@@ -1047,6 +1136,64 @@ static const struct row rows[] = {
      "0s",
      JK_REC,
      {HANDLE, SIZE(0, "ssss"), PTR(1, "0")}},
+    {"fricreg_jenkins_set_normal",
+     w_jk_set_normal,
+     "0sni",
+     JK_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnioon"), PTR(2, "0"), ARR(2, "nnoooo"),
+      PTR(3, "0"), ARR(3, "nniooo")}},
+    {"fricreg_jenkins_trial_normal",
+     w_jk_trial_normal,
+     "0sn",
+     JK_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnoooo"), PTR(2, "0"), ARR(2, "nnoooo"),
+      PTR(3, "0"), PTR(4, "o"), PTR(5, "o"), PTR(6, "o")}},
+    /* fricreg_iwan.h: one 2-D element of 3 sliders */
+    {"fricreg_iwan_create",
+     w_iw_create,
+     "0im",
+     NONE,
+     {INT(0, "iiii"), SIZE(0, "iiio"), SIZE(1, "iiio"), PTR(0, "0")}},
+    {"fricreg_iwan_set_params",
+     w_iw_set_params,
+     "0sni",
+     IW_REC,
+     {HANDLE, SIZE(0, "ssss"), SIZE(1, "ssss"), PTR(1, "0"), ARR(1, "nniioo"), PTR(2, "0"),
+      ARR(2, "nniooo")}},
+    {"fricreg_iwan_get_params",
+     w_iw_get_params,
+     "0s",
+     IW_REC,
+     {HANDLE, SIZE(0, "ssss"), SIZE(1, "ssss"), PTR(1, "0"), PTR(2, "0")}},
+    {"fricreg_iwan_set_segalman",
+     w_iw_set_segalman,
+     "0sni",
+     IW_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnii**"), PTR(2, "0"), ARR(2, "nniii*"),
+      PTR(3, "0"), ARR(3, "nniooi"), PTR(4, "0"), ARR(4, "nnioo*"), DBL(0, "nnniioi")}},
+    {"fricreg_iwan_set_normal",
+     w_iw_set_normal,
+     "0sni",
+     IW_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nniino"), PTR(2, "0"), ARR(2, "nniooo")}},
+    {"fricreg_iwan_trial",
+     w_iw_trial,
+     "0sn",
+     IW_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnoooo"), PTR(2, "0"), PTR(3, "o")}},
+    {"fricreg_iwan_trial_normal",
+     w_iw_trial_normal,
+     "0sn",
+     IW_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnoooo"), PTR(2, "0"), ARR(2, "nnoooo"),
+      PTR(3, "0"), PTR(4, "o"), PTR(5, "o"), PTR(6, "o")}},
+    {"fricreg_iwan_commit", w_iw_commit, "0", IW_REC, {HANDLE}},
+    {"fricreg_iwan_reset", w_iw_reset, "0", IW_REC, {HANDLE}},
+    {"fricreg_iwan_get_slider",
+     w_iw_get_slider,
+     "0s",
+     IW_REC,
+     {HANDLE, SIZE(0, "ssss"), SIZE(1, "ssss"), PTR(1, "0")}},
     /* fricreg_exact.h */
     {"fricreg_exact_solve",
      w_exact_solve,
@@ -1307,6 +1454,7 @@ static int recorded(enum owner owner, const struct fixture *fx)
     case CHAIN_REC: return fricreg_sim_errcode(chain_);
     case EXSTUCK_REC: return fricreg_exact_errcode(stuck_);
     case JK_REC: return fricreg_jenkins_errcode(fx->jk);
+    case IW_REC: return fricreg_iwan_errcode(fx->iw);
     default: return -1;
     }
 }
@@ -1321,6 +1469,7 @@ static const char *message(enum owner owner, const struct fixture *fx)
     case CHAIN_REC: return fricreg_sim_errmsg(chain_);
     case EXSTUCK_REC: return fricreg_exact_errmsg(stuck_);
     case JK_REC: return fricreg_jenkins_errmsg(fx->jk);
+    case IW_REC: return fricreg_iwan_errmsg(fx->iw);
     default: return fricreg_structure_errmsg(fx->st);
     }
 }

@@ -21,7 +21,10 @@
  *     integrates to 0). Backward Euler on the slider converges to it like h only: each step's
  *     slip takes the direction at its end, and on a circle that direction turns by h within
  *     the step (measured order 1.04; the 1-D loop has no turning direction, hence h^2).
- *   - the tangent against centred differences of the trial force, away from |f_tr| = mun. */
+ *   - the tangent against centred differences of the trial force, away from |f_tr| = mun.
+ *   - normal load: the bound is mu N with N = max(0, N0 + kn g). A constant N (kn = 0, or
+ *     g = 0) is the fixed bound mun = mu N0; separated (N0 + kn g < 0): f = 0, tangents 0,
+ *     the slider at u; sliding, f = mu N n, so df/dg = mu kn n, and df/du as with mun = mu N. */
 #include <check.h>
 #include <float.h>
 #include <math.h>
@@ -380,6 +383,198 @@ START_TEST(bad_input)
 }
 END_TEST
 
+/* The normal law: mu = 0.4375, N0 = 1.625 (mu N0 = 0.7109375), kt = KT. */
+static const double MU = 0.4375, N0 = 1.625, KN = 3.25;
+
+START_TEST(normal_load_constant_preload)
+{
+    for (int dim = 1; dim <= 2; dim++) {
+        /* kn = 0 with any g, and kn > 0 with g = 0: the fixed bound mu N0 */
+        for (int variant = 0; variant < 2; variant++) {
+            fricreg_jenkins *j = make(dim, 1, KT, MUN), *ref = make(dim, 1, KT, MU * N0);
+            const double kn = variant ? KN : 0.0;
+            ck_assert_int_eq(fricreg_jenkins_set_normal(j, 1, &MU, &N0, &kn), FRICREG_OK);
+            for (int i = 0; i < 60; i++) {
+                double u[2] = {0.9 * sin(0.37 * i), 0.6 * cos(0.23 * i)},
+                       g = variant ? 0.0 : 5.0 * sin(0.71 * i) - 1.0;
+                double f[2], fr[2], t[4], tr[4], tg[2], nf;
+                ck_assert_int_eq(fricreg_jenkins_trial_normal(j, 1, u, &g, f, &nf, t, tg),
+                                 FRICREG_OK);
+                ck_assert_int_eq(fricreg_jenkins_trial(ref, 1, u, fr, tr), FRICREG_OK);
+                for (int a = 0; a < dim; a++) {
+                    ck_assert_double_eq_tol(f[a], fr[a], 1e-14);
+                    if (!variant)
+                        ck_assert_double_eq(tg[a], 0.0);
+                }
+                for (int a = 0; a < dim * dim; a++)
+                    ck_assert_double_eq_tol(t[a], tr[a], 1e-14);
+                ck_assert_double_eq(nf, N0);
+                /* the plain trial is the one at g = 0 */
+                ck_assert_int_eq(fricreg_jenkins_trial(j, 1, u, f, t), FRICREG_OK);
+                for (int a = 0; a < dim; a++)
+                    ck_assert_double_eq_tol(f[a], fr[a], 1e-14);
+                ck_assert_int_eq(fricreg_jenkins_commit(j), FRICREG_OK);
+                ck_assert_int_eq(fricreg_jenkins_commit(ref), FRICREG_OK);
+            }
+            fricreg_jenkins_free(j);
+            fricreg_jenkins_free(ref);
+        }
+    }
+}
+END_TEST
+
+START_TEST(normal_load_lift_off)
+{
+    for (int dim = 1; dim <= 2; dim++) {
+        fricreg_jenkins *j = make(dim, 1, KT, MUN);
+        ck_assert_int_eq(fricreg_jenkins_set_normal(j, 1, &MU, &N0, &KN), FRICREG_OK);
+        /* sliding at g = 0.25: N = 1.625 + 0.8125 = 2.4375, |f| = mu N = 1.06640625 */
+        double u[2] = {3.0, dim == 2 ? 4.0 : 0.0}, g = 0.25, f[2], nf, t[4], tg[2];
+        double r = dim == 2 ? 5.0 : 3.0;
+        ck_assert_int_eq(fricreg_jenkins_trial_normal(j, 1, u, &g, f, &nf, t, tg), FRICREG_OK);
+        ck_assert_double_eq_tol(nf, 2.4375, 1e-15);
+        ck_assert_double_eq_tol(hypot(f[0], dim == 2 ? f[1] : 0.0), 1.06640625, 1e-15);
+        ck_assert_double_eq_tol(tg[0], MU * KN * u[0] / r, 1e-15);
+        /* separated at g = -0.5625 (N0 + kn g = -0.203125): all zero, slider at u */
+        g = -0.5625;
+        for (int a = 0; a < 4; a++)
+            t[a] = SENTINEL;
+        ck_assert_int_eq(fricreg_jenkins_trial_normal(j, 1, u, &g, f, &nf, t, tg), FRICREG_OK);
+        for (int a = 0; a < dim; a++) {
+            ck_assert_double_eq(f[a], 0.0);
+            ck_assert_double_eq(tg[a], 0.0);
+        }
+        for (int a = 0; a < dim * dim; a++)
+            ck_assert_double_eq(t[a], 0.0);
+        ck_assert_double_eq(nf, 0.0);
+        ck_assert_int_eq(fricreg_jenkins_commit(j), FRICREG_OK);
+        double w[2];
+        ck_assert_int_eq(fricreg_jenkins_get_slider(j, 1, w), FRICREG_OK);
+        for (int a = 0; a < dim; a++)
+            ck_assert_double_eq(w[a], u[a]); /* the memory is reset: the spring unloaded */
+        /* back in contact at u + du: the spring starts from the released position */
+        double du = 0.01, u2[2] = {u[0] + du, u[1]};
+        g = 0.0;
+        ck_assert_int_eq(fricreg_jenkins_trial_normal(j, 1, u2, &g, f, &nf, t, tg), FRICREG_OK);
+        ck_assert_double_eq_tol(f[0], KT * du, 1e-14);
+        ck_assert_double_eq(t[0], KT);
+        ck_assert_double_eq(tg[0], 0.0);
+        /* set_params goes back to the fixed bound: no lift-off at any g */
+        const double mun = 0.5;
+        ck_assert_int_eq(fricreg_jenkins_set_params(j, 1, &KT, &mun), FRICREG_OK);
+        g = -100.0;
+        ck_assert_int_eq(fricreg_jenkins_trial_normal(j, 1, u2, &g, f, &nf, t, tg), FRICREG_OK);
+        ck_assert_double_eq_tol(f[0], KT * du, 1e-14);
+        ck_assert_double_eq(nf, 0.5);
+        fricreg_jenkins_free(j);
+    }
+}
+END_TEST
+
+START_TEST(normal_load_tangent_against_differences)
+{
+    for (int dim = 1; dim <= 2; dim++) {
+        fricreg_jenkins *j = make(dim, 1, KT, MUN);
+        ck_assert_int_eq(fricreg_jenkins_set_normal(j, 1, &MU, &N0, &KN), FRICREG_OK);
+        const double u0[2] = {0.8125, -0.4375};
+        double g0 = 0.0625, f[2], w[2];
+        ck_assert_int_eq(fricreg_jenkins_trial_normal(j, 1, u0, &g0, f, NULL, NULL, NULL),
+                         FRICREG_OK);
+        ck_assert_int_eq(fricreg_jenkins_commit(j), FRICREG_OK);
+        ck_assert_int_eq(fricreg_jenkins_get_slider(j, 1, w), FRICREG_OK);
+        int tried = 0, slipped = 0;
+        for (int k = 0; k < 40; k++) {
+            double ang = 0.37 + 0.611 * k, rad = 0.9 * (0.05 + 0.071 * k), g = 0.3 - 0.017 * k;
+            double u[2] = {w[0] + rad * cos(ang), w[1] + (dim == 2 ? rad * sin(ang) : 0.0)};
+            if (dim == 1)
+                u[0] = w[0] + rad * (k % 2 ? -1.0 : 1.0);
+            double nc = N0 + KN * g, ratio = KT * rad / (MU * nc);
+            if (nc < 1e-3 || fabs(ratio - 1.0) < 1e-3)
+                continue;
+            double t[4], tg[2], fp[2], fm[2], h = 1e-7;
+            ck_assert_int_eq(fricreg_jenkins_trial_normal(j, 1, u, &g, f, NULL, t, tg), FRICREG_OK);
+            for (int b = 0; b < dim; b++) {
+                double up[2] = {u[0], u[1]}, um[2] = {u[0], u[1]};
+                up[b] += h;
+                um[b] -= h;
+                ck_assert_int_eq(fricreg_jenkins_trial_normal(j, 1, up, &g, fp, NULL, NULL, NULL),
+                                 FRICREG_OK);
+                ck_assert_int_eq(fricreg_jenkins_trial_normal(j, 1, um, &g, fm, NULL, NULL, NULL),
+                                 FRICREG_OK);
+                for (int a = 0; a < dim; a++)
+                    ck_assert_double_eq_tol(t[dim * a + b], (fp[a] - fm[a]) / (2.0 * h), 1e-6 * KT);
+            }
+            double gp = g + h, gm = g - h;
+            ck_assert_int_eq(fricreg_jenkins_trial_normal(j, 1, u, &gp, fp, NULL, NULL, NULL),
+                             FRICREG_OK);
+            ck_assert_int_eq(fricreg_jenkins_trial_normal(j, 1, u, &gm, fm, NULL, NULL, NULL),
+                             FRICREG_OK);
+            for (int a = 0; a < dim; a++)
+                ck_assert_double_eq_tol(tg[a], (fp[a] - fm[a]) / (2.0 * h), 1e-6 * KT);
+            slipped += ratio > 1.0;
+            tried++;
+        }
+        ck_assert_int_ge(tried, 30);
+        ck_assert_int_ge(slipped, 10);
+        fricreg_jenkins_free(j);
+    }
+}
+END_TEST
+
+START_TEST(normal_load_bad_input)
+{
+    fricreg_jenkins *j = make(1, 2, KT, MUN);
+    const double mu[2] = {0.5, 0.25}, n0[2] = {1.0, -0.5}, kn[2] = {2.0, 1.0};
+    double bad[2], out[8];
+    ck_assert_int_eq(fricreg_jenkins_set_normal(NULL, 2, mu, n0, kn), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_jenkins_set_normal(j, 2, mu, NULL, kn), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_jenkins_set_normal(j, 1, mu, n0, kn), FRICREG_ESIZE);
+    const double mu_bad[3] = {-0.125, NAN, INFINITY};
+    const int mu_code[3] = {FRICREG_EINVAL, FRICREG_ENONFINITE, FRICREG_ENONFINITE};
+    for (int k = 0; k < 3; k++) {
+        bad[0] = 0.5;
+        bad[1] = mu_bad[k];
+        ck_assert_int_eq(fricreg_jenkins_set_normal(j, 2, bad, n0, kn), mu_code[k]);
+        ck_assert_str_ne(fricreg_jenkins_errmsg(j), "");
+        ck_assert_int_eq(fricreg_jenkins_set_normal(j, 2, mu, n0, bad), mu_code[k]);
+    }
+    bad[0] = 1e300;
+    bad[1] = 1e300; /* mu n0 overflows */
+    const double big[2] = {1e10, 1e10};
+    ck_assert_int_eq(fricreg_jenkins_set_normal(j, 2, big, bad, kn), FRICREG_ENONFINITE);
+    /* nothing changed: the fixed bound MUN at any g */
+    const double u[2] = {10.0, -10.0};
+    double g[2] = {-100.0, -100.0};
+    ck_assert_int_eq(fricreg_jenkins_trial_normal(j, 2, u, g, out, NULL, NULL, NULL), FRICREG_OK);
+    ck_assert_double_eq(out[0], MUN);
+    ck_assert_double_eq(out[1], -MUN);
+    /* a contact open at g = 0 (n0 < 0): separated in the plain trial too */
+    ck_assert_int_eq(fricreg_jenkins_set_normal(j, 2, mu, n0, kn), FRICREG_OK);
+    ck_assert_int_eq(fricreg_jenkins_trial(j, 2, u, out, out + 2), FRICREG_OK);
+    ck_assert_double_eq(out[0], 0.5 * 1.0);
+    ck_assert_double_eq(out[1], 0.0);
+    ck_assert_double_eq(out[3], 0.0);
+    for (int k = 0; k < 8; k++)
+        out[k] = SENTINEL;
+    ck_assert_int_eq(fricreg_jenkins_trial_normal(j, 2, u, NULL, out, NULL, NULL, NULL),
+                     FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_jenkins_trial_normal(j, 1, u, g, out, NULL, NULL, NULL),
+                     FRICREG_ESIZE);
+    g[1] = NAN;
+    ck_assert_int_eq(fricreg_jenkins_trial_normal(j, 2, u, g, out, out + 2, out + 4, out + 6),
+                     FRICREG_ENONFINITE);
+    g[1] = 1e308;
+    const double kn_big[2] = {2.0, 1e308};
+    ck_assert_int_eq(fricreg_jenkins_set_normal(j, 2, mu, n0, kn_big), FRICREG_OK);
+    ck_assert_int_eq(fricreg_jenkins_trial_normal(j, 2, u, g, out, out + 2, out + 4, out + 6),
+                     FRICREG_ENONFINITE); /* N0 + kn g overflows */
+    ck_assert_str_ne(fricreg_jenkins_errmsg(j), "");
+    for (int k = 0; k < 8; k++)
+        ck_assert_double_eq(out[k], SENTINEL);
+    fricreg_jenkins_free(j);
+}
+END_TEST
+
 static Suite *jenkins_suite(void)
 {
     Suite *s = suite_create("jenkins");
@@ -390,6 +585,10 @@ static Suite *jenkins_suite(void)
     tcase_add_test(tc, tangent_against_differences);
     tcase_add_test(tc, circular_orbit_2d);
     tcase_add_test(tc, bad_input);
+    tcase_add_test(tc, normal_load_constant_preload);
+    tcase_add_test(tc, normal_load_lift_off);
+    tcase_add_test(tc, normal_load_tangent_against_differences);
+    tcase_add_test(tc, normal_load_bad_input);
     suite_add_tcase(s, tc);
     return s;
 }

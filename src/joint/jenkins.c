@@ -1,11 +1,13 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* jenkins.c — n Jenkins elements (spring kt in series with a Coulomb slider of bound mun), 1-D
  * or 2-D: the elastic predictor, the return onto |f| <= mun and its consistent tangent
- * (fricreg_jenkins.h; Simo & Hughes 1998, Ch. 1 and 3), with trial/commit of the sliders.
+ * (fricreg_jenkins.h; Simo & Hughes 1998, Ch. 1 and 3), with trial/commit of the sliders, and
+ * the normal load with lift-off: the bound mu max(0, N0 + kn g). The one slider's return
+ * mapping is slider.c's, shared with the Iwan elements.
  *
- * The return works on d = u - w_c, not on f_tr = kt d: |d| and the direction d/|d| stay finite
- * whenever d does, so a stiff spring (kt d beyond 1e308) still slides to f = mun n, and the
- * sliding tangent kt (mun/|f_tr|) is computed as mun/|d|. */
+ * A fixed bound mun (set_params) is the normal law mu = 1, N0 = mun, kn = 0: the bound is then
+ * 1 * max(0, mun + 0 g) = mun to the bit and never separates, so fricreg_jenkins_trial keeps
+ * its results, and it is fricreg_jenkins_trial_normal at g = 0. */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -13,15 +15,16 @@
 
 #include "base/error.h"
 #include "fricreg_jenkins.h"
+#include "slider.h"
 
 #define MAX_ELEMENTS (SIZE_MAX / 64)
 
 struct fricreg_jenkins {
     int dim;
     size_t n;
-    double *kt, *mun; /* [n] each, one block */
-    double *w_c;      /* committed slider positions [n dim] */
-    double *w_tr;     /* the last trial's [n dim]; equal to w_c after commit, reset, set_params */
+    double *kt, *mu, *n0, *kn; /* [n] each, one block: the bound is mu max(0, n0 + kn g) */
+    double *w_c;               /* committed slider positions [n dim] */
+    double *w_tr; /* the last trial's [n dim]; equal to w_c after commit, reset, set_params */
     struct fr_error err;
 };
 
@@ -32,7 +35,7 @@ int fricreg_jenkins_create(int dim, size_t n, fricreg_jenkins **out)
     if ((dim != 1 && dim != 2) || n == 0 || n > MAX_ELEMENTS)
         return FRICREG_EINVAL;
     fricreg_jenkins *j = calloc(1, sizeof *j);
-    double *block = malloc((2 + 2 * (size_t)dim) * n * sizeof *block);
+    double *block = malloc((4 + 2 * (size_t)dim) * n * sizeof *block);
     if (j == NULL || block == NULL) {
         free(j);
         free(block);
@@ -41,11 +44,15 @@ int fricreg_jenkins_create(int dim, size_t n, fricreg_jenkins **out)
     j->dim = dim;
     j->n = n;
     j->kt = block;
-    j->mun = block + n;
-    j->w_c = block + 2 * n;
+    j->mu = block + n;
+    j->n0 = block + 2 * n;
+    j->kn = block + 3 * n;
+    j->w_c = block + 4 * n;
     j->w_tr = j->w_c + (size_t)dim * n;
-    for (size_t i = 0; i < n; i++)
-        j->kt[i] = j->mun[i] = 1.0;
+    for (size_t i = 0; i < n; i++) {
+        j->kt[i] = j->mu[i] = j->n0[i] = 1.0;
+        j->kn[i] = 0.0;
+    }
     memset(j->w_c, 0, 2 * (size_t)dim * n * sizeof *block);
     *out = j;
     return FRICREG_OK;
@@ -95,50 +102,51 @@ int fricreg_jenkins_set_params(fricreg_jenkins *j, size_t n, const double kt[], 
                            mun[i]);
     }
     memcpy(j->kt, kt, n * sizeof *kt);
-    memcpy(j->mun, mun, n * sizeof *mun);
+    memcpy(j->n0, mun, n * sizeof *mun);
+    for (size_t i = 0; i < n; i++) {
+        j->mu[i] = 1.0;
+        j->kn[i] = 0.0;
+    }
     memcpy(j->w_tr, j->w_c, (size_t)j->dim * n * sizeof *j->w_c);
     return FRICREG_OK;
 }
 
-/* |d| of one element's d = u - w_c, dim 1 or 2. */
-static double norm(const double *d, int dim)
+int fricreg_jenkins_set_normal(fricreg_jenkins *j, size_t n, const double mu[], const double n0[],
+                               const double kn[])
 {
-    return dim == 1 ? fabs(d[0]) : hypot(d[0], d[1]);
+    if (j == NULL)
+        return FRICREG_ENULL;
+    if (mu == NULL || n0 == NULL || kn == NULL)
+        return fr_fail(j, FRICREG_ENULL, "set_normal: %s is NULL",
+                       mu == NULL   ? "mu"
+                       : n0 == NULL ? "n0"
+                                    : "kn");
+    if (check_n(j, "set_normal", n) != FRICREG_OK)
+        return FRICREG_ESIZE;
+    for (size_t i = 0; i < n; i++) {
+        if (!isfinite(mu[i]) || !isfinite(n0[i]) || !isfinite(kn[i]))
+            return fr_fail(j, FRICREG_ENONFINITE,
+                           "set_normal: mu[%zu] = %g, n0[%zu] = %g, kn[%zu] = %g", i, mu[i], i,
+                           n0[i], i, kn[i]);
+        if (!(mu[i] >= 0.0) || !(kn[i] >= 0.0))
+            return fr_fail(j, FRICREG_EINVAL,
+                           "set_normal: mu[%zu] = %g and kn[%zu] = %g must be >= 0", i, mu[i], i,
+                           kn[i]);
+        if (!isfinite(mu[i] * n0[i]) || !isfinite(mu[i] * kn[i]))
+            return fr_fail(j, FRICREG_ENONFINITE,
+                           "set_normal: mu[%zu] n0[%zu] = %g or mu[%zu] kn[%zu] = %g overflows", i,
+                           i, mu[i] * n0[i], i, i, mu[i] * kn[i]);
+    }
+    memcpy(j->mu, mu, n * sizeof *mu);
+    memcpy(j->n0, n0, n * sizeof *n0);
+    memcpy(j->kn, kn, n * sizeof *kn);
+    memcpy(j->w_tr, j->w_c, (size_t)j->dim * n * sizeof *j->w_c);
+    return FRICREG_OK;
 }
 
-/* One element: the return mapping from its committed slider wc[dim] at u[dim], with
- * d = u - wc finite and |d| finite (checked by the caller). Writes f[dim], the slider's trial
- * position w[dim] (wc itself in a stick), and the tangent t[dim dim] if t is not NULL. f may
- * alias u: u is read before f is written. */
-static void element(double kt, double mun, int dim, const double *u, const double *wc, double *f,
-                    double *w, double *t)
-{
-    double d[2] = {u[0] - wc[0], dim == 2 ? u[1] - wc[1] : 0.0},
-           ui[2] = {u[0], dim == 2 ? u[1] : 0.0};
-    double r = norm(d, dim);
-    if (kt * r <= mun) { /* stick: f = kt d, tangent kt I */
-        for (int a = 0; a < dim; a++) {
-            f[a] = kt * d[a];
-            w[a] = wc[a];
-        }
-        if (t != NULL)
-            for (int a = 0; a < dim * dim; a++)
-                t[a] = (a % (dim + 1) == 0) ? kt : 0.0;
-        return;
-    }
-    double nrm[2] = {d[0] / r, d[1] / r}, s = mun / r;
-    for (int a = 0; a < dim; a++) {
-        f[a] = mun * nrm[a];
-        w[a] = ui[a] - f[a] / kt;
-    }
-    if (t != NULL) /* kt (mun/|f_tr|)(I - n n^T) = (mun/|d|)(I - n n^T); 0 in 1-D */
-        for (int a = 0; a < dim; a++)
-            for (int b = 0; b < dim; b++)
-                t[dim * a + b] = dim == 1 ? 0.0 : s * ((a == b) - nrm[a] * nrm[b]);
-}
-
-/* Whether element i's u is finite and |u - w_c| too; writes the message if not. */
-static int check_u(fricreg_jenkins *j, size_t i, const double *u)
+/* Whether element i's u is finite and |u - w_c| too; writes the message (of function fn) if
+ * not. */
+static int check_u(fricreg_jenkins *j, const char *fn, size_t i, const double *u)
 {
     int dim = j->dim;
     const double *wc = &j->w_c[(size_t)dim * i];
@@ -146,13 +154,57 @@ static int check_u(fricreg_jenkins *j, size_t i, const double *u)
     for (int a = 0; a < dim; a++) {
         size_t k = (size_t)dim * i + (size_t)a;
         if (!isfinite(u[a]))
-            return fr_fail(j, FRICREG_ENONFINITE, "trial: u[%zu] = %g", k, u[a]);
+            return fr_fail(j, FRICREG_ENONFINITE, "%s: u[%zu] = %g", fn, k, u[a]);
         d[a] = u[a] - wc[a];
     }
-    if (!isfinite(norm(d, dim)))
+    if (!isfinite(fr_slider_norm(d, dim)))
         return fr_fail(j, FRICREG_ENONFINITE,
-                       "trial: element %zu's u - w overflows (u[%zu] = %g, w = %g)", i,
+                       "%s: element %zu's u - w overflows (u[%zu] = %g, w = %g)", fn, i,
                        (size_t)dim * i, u[0], wc[0]);
+    return FRICREG_OK;
+}
+
+/* Element i's normal force N0 + kn g (negative: separated) and its bound mu max(0, .), both
+ * finite; writes the message if not. */
+static int check_g(fricreg_jenkins *j, size_t i, double g, double *nc, double *b)
+{
+    if (!isfinite(g))
+        return fr_fail(j, FRICREG_ENONFINITE, "trial_normal: g[%zu] = %g", i, g);
+    *nc = j->n0[i] + j->kn[i] * g;
+    *b = j->mu[i] * fmax(0.0, *nc);
+    if (!isfinite(*nc) || !isfinite(*b))
+        return fr_fail(j, FRICREG_ENONFINITE,
+                       "trial_normal: element %zu's normal force n0 + kn g = %g (g = %g) overflows",
+                       i, *nc, g);
+    return FRICREG_OK;
+}
+
+/* The trial of every element, g NULL meaning g = 0 (fricreg_jenkins_trial), inputs checked. */
+static int trial(fricreg_jenkins *j, const char *fn, size_t n, const double u[], const double g[],
+                 double f[], double nf[], double dfdu[], double dfdg[])
+{
+    if (check_n(j, fn, n) != FRICREG_OK)
+        return FRICREG_ESIZE;
+    size_t dim = (size_t)j->dim;
+    double nc, b;
+    for (size_t i = 0; i < n; i++) {
+        if (check_u(j, fn, i, &u[dim * i]) != FRICREG_OK)
+            return j->err.code;
+        if (g != NULL && check_g(j, i, g[i], &nc, &b) != FRICREG_OK)
+            return j->err.code;
+    }
+    for (size_t i = 0; i < n; i++) {
+        nc = j->n0[i] + j->kn[i] * (g ? g[i] : 0.0);
+        b = j->mu[i] * fmax(0.0, nc);
+        double *t = dfdu ? &dfdu[dim * dim * i] : NULL, *tg = dfdg ? &dfdg[dim * i] : NULL;
+        if (nc < 0.0)
+            fr_slider_separated(j->dim, &u[dim * i], &f[dim * i], &j->w_tr[dim * i], t, tg);
+        else
+            fr_slider_return(j->kt[i], b, j->mu[i] * j->kn[i], j->dim, &u[dim * i],
+                             &j->w_c[dim * i], &f[dim * i], &j->w_tr[dim * i], t, tg);
+        if (nf != NULL)
+            nf[i] = fmax(0.0, nc);
+    }
     return FRICREG_OK;
 }
 
@@ -162,16 +214,20 @@ int fricreg_jenkins_trial(fricreg_jenkins *j, size_t n, const double u[], double
         return FRICREG_ENULL;
     if (u == NULL || f == NULL)
         return fr_fail(j, FRICREG_ENULL, "trial: %s is NULL", u == NULL ? "u" : "f");
-    if (check_n(j, "trial", n) != FRICREG_OK)
-        return FRICREG_ESIZE;
-    size_t dim = (size_t)j->dim;
-    for (size_t i = 0; i < n; i++)
-        if (check_u(j, i, &u[dim * i]) != FRICREG_OK)
-            return j->err.code;
-    for (size_t i = 0; i < n; i++)
-        element(j->kt[i], j->mun[i], j->dim, &u[dim * i], &j->w_c[dim * i], &f[dim * i],
-                &j->w_tr[dim * i], dfdu ? &dfdu[dim * dim * i] : NULL);
-    return FRICREG_OK;
+    return trial(j, "trial", n, u, NULL, f, NULL, dfdu, NULL);
+}
+
+int fricreg_jenkins_trial_normal(fricreg_jenkins *j, size_t n, const double u[], const double g[],
+                                 double f[], double nf[], double dfdu[], double dfdg[])
+{
+    if (j == NULL)
+        return FRICREG_ENULL;
+    if (u == NULL || g == NULL || f == NULL)
+        return fr_fail(j, FRICREG_ENULL, "trial_normal: %s is NULL",
+                       u == NULL   ? "u"
+                       : g == NULL ? "g"
+                                   : "f");
+    return trial(j, "trial_normal", n, u, g, f, nf, dfdu, dfdg);
 }
 
 int fricreg_jenkins_commit(fricreg_jenkins *j)

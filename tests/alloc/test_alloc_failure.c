@@ -48,6 +48,7 @@
 
 #include "fricreg.h"
 #include "fricreg_disk_ctx.h"
+#include "fricreg_iwan.h"
 #include "fricreg_jenkins.h"
 #include "fricreg_exact.h"
 #include "fricreg_sim.h"
@@ -1366,6 +1367,59 @@ static const struct script jk_create = {"jenkins create", 0,    NULL, 0,        
                                         jk_open,          NULL, NULL, jk_observe, jk_errcode,
                                         jk_close};
 
+/* ---- Iwan elements --------------------------------------------------------------------------- */
+
+/* create alone (its one block): a failure leaves no handle; the view is two 2-D elements of
+ * three sliders after set_params, set_segalman and set_normal, two trials with a normal
+ * displacement (the second committed) and the committed sliders. That trial and commit never
+ * allocate is test_iwan_trial_does_not_allocate's. */
+static int iw_open(void **obj)
+{
+    fricreg_iwan *iw = SENTINEL;
+    int status = fricreg_iwan_create(2, 2, 3, &iw);
+    if (status != FRICREG_OK && iw != SENTINEL)
+        NOTE("iwan_create failed (%d) but wrote its handle", status);
+    *obj = status == FRICREG_OK ? iw : NULL;
+    return status;
+}
+
+static int iw_errcode(const void *obj)
+{
+    return fricreg_iwan_errcode(obj);
+}
+
+static void iw_close(void *obj)
+{
+    fricreg_iwan_free(obj);
+}
+
+static void iw_observe(void *obj, struct view *v)
+{
+    fricreg_iwan *iw = obj;
+    const double k[6] = {2.385, 1.0, 0.5, 1.5, 0.25, 3.0}, phi[6] = {0.7125, 0.25, 3.0, 1, 1, 1};
+    const double fs[2] = {2.385, 1.0}, kt[2] = {10.0, 4.0}, chi[2] = {-0.5, -0.2},
+                 beta[2] = {0.35, 0.0}, n0[2] = {1.5, 2.0}, kn[2] = {3.0, 0.0};
+    const double u[2][4] = {{0.5, -0.25, 1.5, 0.0}, {-0.75, 0.5, 0.0, 2.0}}, g[2] = {0.1, -0.2};
+    double f[4], t[8], tg[4], nf[2], w[12];
+    see(v, fricreg_iwan_set_params(iw, 2, 3, k, phi));
+    see(v, fricreg_iwan_set_segalman(iw, 2, fs, kt, chi, beta, 1e-4));
+    see(v, fricreg_iwan_set_normal(iw, 2, n0, kn));
+    for (int i = 0; i < 2; i++) {
+        see(v, fricreg_iwan_trial_normal(iw, 2, u[i], g, f, nf, t, tg));
+        see_all(v, f, 4);
+        see_all(v, t, 8);
+        see_all(v, tg, 4);
+        see_all(v, nf, 2);
+    }
+    see(v, fricreg_iwan_commit(iw));
+    see(v, fricreg_iwan_get_slider(iw, 2, 3, w));
+    see_all(v, w, 12);
+}
+
+static const struct script iw_create = {"iwan create", 0,    NULL, 0,          0,
+                                        iw_open,       NULL, NULL, iw_observe, iw_errcode,
+                                        iw_close};
+
 /* ---- The tests ------------------------------------------------------------------------------- */
 
 START_TEST(test_ctx_create)
@@ -1536,6 +1590,33 @@ START_TEST(test_jenkins_trial_does_not_allocate)
     ck_assert_int_eq(commit, FRICREG_OK);
     ck_assert_msg(n_allocs == 0, "jenkins trial and commit made %ld allocations", n_allocs);
     fricreg_jenkins_free(j);
+}
+END_TEST
+
+START_TEST(test_iwan_create)
+{
+    struct tally t = fail_each_allocation(&iw_create);
+    ck_assert_int_eq(t.enomem, t.cases);
+}
+END_TEST
+
+/* trial, trial_normal and commit of a set-up object request no memory. */
+START_TEST(test_iwan_trial_does_not_allocate)
+{
+    fricreg_iwan *iw = NULL;
+    ck_assert_int_eq(fricreg_iwan_create(2, 2, 4, &iw), FRICREG_OK);
+    const double u[4] = {0.5, -2.25, 0.125, 0.0}, g[2] = {0.25, -3.0};
+    double f[4], t[8], tg[4], nf[2];
+    hook_arm(1);
+    int status = fricreg_iwan_trial(iw, 2, u, f, t);
+    int normal = fricreg_iwan_trial_normal(iw, 2, u, g, f, nf, t, tg);
+    int commit = fricreg_iwan_commit(iw);
+    hook_disarm();
+    ck_assert_int_eq(status, FRICREG_OK);
+    ck_assert_int_eq(normal, FRICREG_OK);
+    ck_assert_int_eq(commit, FRICREG_OK);
+    ck_assert_msg(n_allocs == 0, "iwan trials and commit made %ld allocations", n_allocs);
+    fricreg_iwan_free(iw);
 }
 END_TEST
 
@@ -1754,6 +1835,8 @@ static Suite *alloc_suite(void)
     tcase_add_test(core, test_disk_ctx_create);
     tcase_add_test(core, test_jenkins_create);
     tcase_add_test(core, test_jenkins_trial_does_not_allocate);
+    tcase_add_test(core, test_iwan_create);
+    tcase_add_test(core, test_iwan_trial_does_not_allocate);
     tcase_add_loop_test(core, test_disk_ctx_set_coupling, 0, 2);
     tcase_add_test(core, test_disk_eval_does_not_allocate);
     tcase_add_test(core, test_ctx_set_stribeck);
