@@ -5,8 +5,8 @@
 ! (FRICREG_DRIVERS), like fricreg_sim_f77.f90, whose conventions it shares with
 ! fricreg_f77.f90: external subroutines, every argument by reference, INTEGER*8 handle H (0:
 ! none), INTEGER STAT last (the C status, FRICREG_OK = 0; nothing stops the program), DOUBLE
-! PRECISION reals, nothing changed on failure. Each size (NDOF, M, N) is checked by the C
-! library against the structure (FRICREG_ESIZE) before any array is read.
+! PRECISION reals, nothing changed on failure. NDOF and M are checked by the C library against
+! the structure (FRICREG_ESIZE) before any array is read.
 !
 ! Matrices. The model is sparse inside; a legacy code hands over the compressed sparse columns
 ! (CSC) it holds, one-based, as they are: INTEGER*8 COLPTR(NCOL + 1), the column pointers
