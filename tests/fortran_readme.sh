@@ -4,7 +4,9 @@
 # (fricreg.F90) in its type's rows of the table (those from the row that names the type in bold
 # to the next bold row), as `name(` or `obj%name(`; each name of the module's `public ::`
 # lists (types, procedures, the iso_c_binding names it passes on); and each F77 entry point (fricreg_f77.f90, fricreg_sim_f77.f90,
-# fricreg_f77_check.f90) as `FRNAME(`. Usage: fortran_readme.sh ROOT
+# fricreg_structure_f77.f90, fricreg_f77_check.f90) as `FRNAME(`, named once only across
+# the files (external names share one space: a second definition would fail at link time, or
+# silently take the first). Usage: fortran_readme.sh ROOT
 root=$1
 readme=$root/fortran/README.md module=$root/fortran/fricreg.F90
 fails=0 checked=0
@@ -45,10 +47,21 @@ for name in $public; do
 done
 
 # The F77 entry points.
-for f in fricreg_f77.f90 fricreg_sim_f77.f90 fricreg_f77_check.f90; do
+f77_files="fricreg_f77.f90 fricreg_sim_f77.f90 fricreg_structure_f77.f90 fricreg_f77_check.f90"
+for f in $f77_files; do
+    [ -f "$root/fortran/$f" ] || fail "no fortran/$f"
+done
+for f in $f77_files; do
     sed -n 's/^subroutine \(fr[a-z0-9]*\)(.*/\1/p' "$root/fortran/$f"
 done | tr 'a-z' 'A-Z' >"${TMPDIR:-/tmp}/fortran_f77.$$"
 [ -s "${TMPDIR:-/tmp}/fortran_f77.$$" ] || fail "no F77 entry points found"
+for name in $(sort "${TMPDIR:-/tmp}/fortran_f77.$$" | uniq -d); do
+    fail "F77 entry point $name is defined twice"
+done
+while read -r name; do
+    checked=$((checked + 1))
+    [ ${#name} -le 6 ] || fail "F77 entry point $name has more than six characters"
+done <"${TMPDIR:-/tmp}/fortran_f77.$$"
 while read -r name; do
     checked=$((checked + 1))
     grep -q "\`$name(" "$readme" || fail "F77 entry point $name is not in fortran/README.md"

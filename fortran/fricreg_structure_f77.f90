@@ -1,0 +1,481 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
+! fricreg_structure_f77.f90 — module-free entry points for Fortran 77 callers: the linear
+! structure with friction contacts (fricreg_structure.h), M u'' + C u' + K u = p(t) - M r a_g(t)
+! + J^T f, stepped by Newmark, HHT-alpha or central difference. Built only with the drivers
+! (FRICREG_DRIVERS), like fricreg_sim_f77.f90, whose conventions it shares with
+! fricreg_f77.f90: external subroutines, every argument by reference, INTEGER*8 handle H (0:
+! none), INTEGER STAT last (the C status, FRICREG_OK = 0; nothing stops the program), DOUBLE
+! PRECISION reals, nothing changed on failure. NDOF and M are checked by the C library against
+! the structure (FRICREG_ESIZE) before any array is read.
+!
+! Matrices. The model is sparse inside; a legacy code hands over the compressed sparse columns
+! (CSC) it holds, one-based, as they are: INTEGER*8 COLPTR(NCOL + 1), the column pointers
+! (COLPTR(1) = 1, never decreasing), INTEGER*8 ROWIND(NNZ), the row indices, DOUBLE PRECISION
+! VALUES(NNZ), NNZ = COLPTR(NCOL + 1) - 1 entries read from each of the last two. FLAGS are the
+! FRICREG_SPARSE_* constants, added: FRICREG_SPARSE_ONE_BASED for Fortran's indices (0 for
+! zero-based arrays), plus FRICREG_SPARSE_LOWER (or _UPPER) when only one triangle of a
+! symmetric M, K or C is stored. Compressed arrays have no leading dimension or storage order,
+! so no row-/column-major question arises, and CSR needs no entry point for M, K and C: the
+! CSR arrays of a symmetric matrix are its CSC arrays (swap _UPPER and _LOWER). The dense
+! setters take M, K, C as (NDOF, NDOF) arrays, symmetric, so Fortran's order is C's; J as
+! Fortran's J(M, NDOF), which FRSTJF transposes into C's row order in a scratch copy.
+!
+!   call                                         C function (fricreg_structure_*)
+!   FRSTCR(NDOF, M, H, STAT)                     _create
+!   FRSTFR(H, STAT)                              _free, then H = 0 (H = 0 does nothing)
+!   FRSTMC(H, NDOF, FLAGS, COLPTR, ROWIND, VALUES, STAT)   _set_mass_csc
+!   FRSTKC(H, NDOF, FLAGS, COLPTR, ROWIND, VALUES, STAT)   _set_stiffness_csc
+!   FRSTCC(H, NDOF, FLAGS, COLPTR, ROWIND, VALUES, STAT)   _set_damping_csc
+!   FRSTJC(H, M, NDOF, FLAGS, COLPTR, ROWIND, VALUES, STAT) _set_contacts_csc (J's columns)
+!   FRSTJR(H, M, NDOF, FLAGS, ROWPTR, COLIND, VALUES, STAT) _set_contacts_csr (J's rows)
+!   FRSTMF(H, NDOF, A, STAT), FRSTKF, FRSTCF     _set_mass, _set_stiffness, _set_damping
+!   FRSTJF(H, M, NDOF, J, STAT)                  _set_contacts (given J transposed)
+!   FRSTCA(H, A0, A1, STAT)                      _set_rayleigh: C = A0 M + A1 K
+!   FRSTBD(H, M, MUN, STAT)                      _set_bounds
+!   FRSTLW(H, LAW, EPS, STAT)                    _set_law
+!   FRSTIV(H, NDOF, R, STAT)                     _set_influence
+!   FRSTAG(H, T0, DTREC, N, AG, STAT)            _set_ground_accel
+!   FRSTLD(H, NDOF, P, T0, DTREC, N, G, STAT)    _set_load
+!   FRSTU0(H, NDOF, U0, V0, STAT)                _set_initial
+!   FRSTNM(H, BETA, GAMMA, STAT)                 _set_newmark
+!   FRSTHH(H, ALPHA, STAT)                       _set_hht
+!   FRSTCD(H, STAT)                              _set_central_difference
+!   FRSTNT(H, TOL, MAXIT, STAT)                  _set_newton
+!   FRSTSP(H, DT, STAT)                          _step
+!   FRSTTE(H, DT, TEND, STAT)                    _run
+!   FRSTGS(H, NDOF, U, V, A, STAT)               _get_state
+!   FRSTGF(H, M, F, STAT), FRSTGD(H, M, D, STAT) _get_forces, _get_dissipation
+!   FRSTGV(H, WHICH, VALUE, STAT)                _get_value (FRICREG_SVALUE_*)
+!   FRSTGT(H, WHICH, VALUE, STAT)                _get_stat (FRICREG_SSTAT_*, INTEGER*8 VALUE)
+!   FRSTER(H, CODE, MSG, STAT)                   _errcode, _errmsg
+! The getters (FRSTG*) read a const structure: C records no failure of theirs, so FRSTER
+! still shows the failure before (their STAT is the answer). So do the few refusals made here,
+! before C is called, of counts that would wrap into size_t: FRSTCR's NDOF or M below 1
+! (there is no structure yet to record it), FRSTAG's and FRSTLD's N below 0 (FRICREG_EINVAL).
+
+!> FRSTCR(NDOF, M, H, STAT): create a structure of NDOF >= 1 degrees of freedom and M >= 1
+!> contacts into H, with C's defaults (M = I, C = K = 0, J unset, law (4), eps = 1e-3,
+!> average-acceleration Newmark).
+subroutine frstcr(ndof, m, h, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer, intent(in) :: ndof, m
+  integer(c_int64_t), intent(inout) :: h
+  integer, intent(out) :: stat
+  type(c_ptr) :: p
+  if (ndof < 1 .or. m < 1) then ! a negative count must not reach size_t as a huge one
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  p = c_null_ptr
+  stat = fricreg_f77_created(fricreg_structure_create(int(ndof, c_size_t), int(m, c_size_t), &
+                                                      p), p, h)
+end subroutine frstcr
+
+!> FRSTFR(H, STAT): release the structure H and set H = 0; H = 0 does nothing.
+subroutine frstfr(h, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(inout) :: h
+  integer, intent(out) :: stat
+  stat = fricreg_f77_release(h, fricreg_structure_free)
+end subroutine frstfr
+
+!> FRSTMC(H, NDOF, FLAGS, COLPTR, ROWIND, VALUES, STAT): mass matrix M (NDOF x NDOF) in
+!> compressed sparse columns, 1-based with FLAGS = FRICREG_SPARSE_ONE_BASED: INTEGER*8
+!> COLPTR(NDOF + 1) column pointers, INTEGER*8 ROWIND(NNZ) row indices, VALUES(NNZ),
+!> NNZ = COLPTR(NDOF + 1) - 1. Whole and symmetric, or one triangle (+ FRICREG_SPARSE_LOWER or
+!> _UPPER); positive definite. A lumped M is COLPTR(K) = K, ROWIND(K) = K.
+subroutine frstmc(h, ndof, flags, colptr, rowind, values, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h, colptr(*), rowind(*)
+  integer, intent(in) :: ndof, flags
+  double precision, intent(in) :: values(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_set_mass_csc(fricreg_handle_to_ptr(h), int(ndof, c_size_t), &
+                                            int(flags, c_int), colptr, rowind, values))
+end subroutine frstmc
+
+!> FRSTKC(H, NDOF, FLAGS, COLPTR, ROWIND, VALUES, STAT): stiffness matrix K in compressed
+!> sparse columns, the arrays and FLAGS as FRSTMC (1-based COLPTR(NDOF + 1), ROWIND(NNZ),
+!> VALUES(NNZ)); symmetric, need not be definite.
+subroutine frstkc(h, ndof, flags, colptr, rowind, values, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h, colptr(*), rowind(*)
+  integer, intent(in) :: ndof, flags
+  double precision, intent(in) :: values(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_set_stiffness_csc(fricreg_handle_to_ptr(h), &
+                                                 int(ndof, c_size_t), int(flags, c_int), &
+                                                 colptr, rowind, values))
+end subroutine frstkc
+
+!> FRSTCC(H, NDOF, FLAGS, COLPTR, ROWIND, VALUES, STAT): damping matrix C in compressed sparse
+!> columns, as FRSTKC (1-based COLPTR(NDOF + 1), ROWIND(NNZ), VALUES(NNZ)); replaces Rayleigh
+!> damping.
+subroutine frstcc(h, ndof, flags, colptr, rowind, values, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h, colptr(*), rowind(*)
+  integer, intent(in) :: ndof, flags
+  double precision, intent(in) :: values(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_set_damping_csc(fricreg_handle_to_ptr(h), int(ndof, c_size_t), &
+                                               int(flags, c_int), colptr, rowind, values))
+end subroutine frstcc
+
+!> FRSTJC(H, M, NDOF, FLAGS, COLPTR, ROWIND, VALUES, STAT): contact matrix J (M x NDOF,
+!> J(I, K) = d zdot_I / d u'_K) by its compressed columns, one per degree of freedom: 1-based
+!> INTEGER*8 COLPTR(NDOF + 1), INTEGER*8 ROWIND(NNZ) contact numbers 1..M, VALUES(NNZ). FLAGS
+!> FRICREG_SPARSE_ONE_BASED or 0 (J is not symmetric: a triangle flag is FRICREG_EINVAL).
+!> Each contact must have a nonzero entry.
+subroutine frstjc(h, m, ndof, flags, colptr, rowind, values, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h, colptr(*), rowind(*)
+  integer, intent(in) :: m, ndof, flags
+  double precision, intent(in) :: values(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_set_contacts_csc(fricreg_handle_to_ptr(h), int(m, c_size_t), &
+                                                int(ndof, c_size_t), int(flags, c_int), &
+                                                colptr, rowind, values))
+end subroutine frstjc
+
+!> FRSTJR(H, M, NDOF, FLAGS, ROWPTR, COLIND, VALUES, STAT): J by its compressed rows, one per
+!> contact, as codes that assemble contact by contact hold it: 1-based INTEGER*8 ROWPTR(M + 1),
+!> INTEGER*8 COLIND(NNZ) degrees of freedom 1..NDOF, VALUES(NNZ); FLAGS as FRSTJC.
+subroutine frstjr(h, m, ndof, flags, rowptr, colind, values, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h, rowptr(*), colind(*)
+  integer, intent(in) :: m, ndof, flags
+  double precision, intent(in) :: values(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_set_contacts_csr(fricreg_handle_to_ptr(h), int(m, c_size_t), &
+                                                int(ndof, c_size_t), int(flags, c_int), &
+                                                rowptr, colind, values))
+end subroutine frstjr
+
+!> FRSTMF(H, NDOF, A, STAT): dense mass matrix A(NDOF, NDOF), symmetric (so Fortran's column
+!> order is C's row order), positive definite; its zeros are left out.
+subroutine frstmf(h, ndof, a, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: ndof
+  double precision, intent(in) :: a(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_set_mass(fricreg_handle_to_ptr(h), int(ndof, c_size_t), a))
+end subroutine frstmf
+
+!> FRSTKF(H, NDOF, A, STAT): dense stiffness matrix A(NDOF, NDOF), symmetric.
+subroutine frstkf(h, ndof, a, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: ndof
+  double precision, intent(in) :: a(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_set_stiffness(fricreg_handle_to_ptr(h), int(ndof, c_size_t), a))
+end subroutine frstkf
+
+!> FRSTCF(H, NDOF, A, STAT): dense damping matrix A(NDOF, NDOF), symmetric; replaces Rayleigh
+!> damping.
+subroutine frstcf(h, ndof, a, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: ndof
+  double precision, intent(in) :: a(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_set_damping(fricreg_handle_to_ptr(h), int(ndof, c_size_t), a))
+end subroutine frstcf
+
+!> FRSTJF(H, M, NDOF, J, STAT): dense contact matrix J(M, NDOF) in Fortran's order,
+!> J(I, K) = d zdot_I / d u'_K. J is not symmetric and C reads it row-major, so it is
+!> transposed into a scratch copy of M*NDOF values here (FRICREG_ENOMEM if that fails).
+subroutine frstjf(h, m, ndof, j, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m, ndof
+  double precision, intent(in) :: j(max(m, 0), *)
+  integer, intent(out) :: stat
+  double precision, allocatable :: jt(:, :)
+  integer :: mm, nn, alloc
+  ! Sizes that cannot be the structure's copy nothing: C answers FRICREG_ESIZE or ENULL.
+  mm = max(m, 0)
+  nn = max(ndof, 0)
+  allocate (jt(nn, mm), stat=alloc)
+  if (alloc /= 0) then
+    stat = int(FRICREG_ENOMEM)
+    return
+  end if
+  if (mm > 0 .and. nn > 0) jt = transpose(j(1:mm, 1:nn))
+  stat = int(fricreg_structure_set_contacts(fricreg_handle_to_ptr(h), int(m, c_size_t), &
+                                            int(ndof, c_size_t), jt))
+end subroutine frstjf
+
+!> FRSTCA(H, A0, A1, STAT): Rayleigh damping C = A0 M + A1 K (A0 in 1/s, A1 in s, both >= 0),
+!> following later changes of M and K; replaces a C given before.
+subroutine frstca(h, a0, a1, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  double precision, intent(in) :: a0, a1
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_set_rayleigh(fricreg_handle_to_ptr(h), a0, a1))
+end subroutine frstca
+
+!> FRSTBD(H, M, MUN, STAT): friction bounds MUN(M) = mu_I N_I >= 0 (force units); may change
+!> between steps.
+subroutine frstbd(h, m, mun, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m
+  double precision, intent(in) :: mun(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_set_bounds(fricreg_handle_to_ptr(h), int(m, c_size_t), mun))
+end subroutine frstbd
+
+!> FRSTLW(H, LAW, EPS, STAT): friction law (FRICREG_LAW_*) and eps > 0 (velocity units).
+subroutine frstlw(h, law, eps, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: law
+  double precision, intent(in) :: eps
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_set_law(fricreg_handle_to_ptr(h), int(law, c_int), eps))
+end subroutine frstlw
+
+!> FRSTIV(H, NDOF, R, STAT): influence vector R(NDOF) of the ground acceleration (load
+!> -M R a_g; R(K) = 1 for a degree of freedom that translates with the ground).
+subroutine frstiv(h, ndof, r, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: ndof
+  double precision, intent(in) :: r(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_set_influence(fricreg_handle_to_ptr(h), int(ndof, c_size_t), r))
+end subroutine frstiv
+
+!> FRSTAG(H, T0, DTREC, N, AG, STAT): ground acceleration record AG(N), N >= 2, AG(K) at
+!> T0 + (K - 1) DTREC, linear between samples and zero outside; N = 0 removes it (AG not read).
+subroutine frstag(h, t0, dtrec, n, ag, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  double precision, intent(in) :: t0, dtrec, ag(*)
+  integer, intent(in) :: n
+  integer, intent(out) :: stat
+  if (n < 0) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  stat = int(fricreg_structure_set_ground_accel(fricreg_handle_to_ptr(h), t0, dtrec, &
+                                                int(n, c_size_t), ag))
+end subroutine frstag
+
+!> FRSTLD(H, NDOF, P, T0, DTREC, N, G, STAT): external load P(NDOF) g(t), g the record G(N)
+!> at T0 + (K - 1) DTREC as in FRSTAG, or g = 1 at all times with N = 0 (G not read).
+subroutine frstld(h, ndof, p, t0, dtrec, n, g, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: ndof, n
+  double precision, intent(in) :: p(*), t0, dtrec, g(*)
+  integer, intent(out) :: stat
+  if (n < 0) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  stat = int(fricreg_structure_set_load(fricreg_handle_to_ptr(h), int(ndof, c_size_t), p, t0, &
+                                        dtrec, int(n, c_size_t), g))
+end subroutine frstld
+
+!> FRSTU0(H, NDOF, U0, V0, STAT): restart at t = 0 from U0(NDOF), V0(NDOF); clears the energy
+!> balance, the dissipation and the counters.
+subroutine frstu0(h, ndof, u0, v0, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: ndof
+  double precision, intent(in) :: u0(*), v0(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_set_initial(fricreg_handle_to_ptr(h), int(ndof, c_size_t), &
+                                           u0, v0))
+end subroutine frstu0
+
+!> FRSTNM(H, BETA, GAMMA, STAT): Newmark's method, 0 < BETA <= 1/2, 1/2 <= GAMMA <= 1
+!> (0.25D0, 0.5D0: average acceleration, the default).
+subroutine frstnm(h, beta, gamma, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  double precision, intent(in) :: beta, gamma
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_set_newmark(fricreg_handle_to_ptr(h), beta, gamma))
+end subroutine frstnm
+
+!> FRSTHH(H, ALPHA, STAT): HHT-alpha, -1/3 <= ALPHA <= 0.
+subroutine frsthh(h, alpha, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  double precision, intent(in) :: alpha
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_set_hht(fricreg_handle_to_ptr(h), alpha))
+end subroutine frsthh
+
+!> FRSTCD(H, STAT): explicit central difference (each step refused, FRICREG_ESTEP, beyond its
+!> stability bound).
+subroutine frstcd(h, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_set_central_difference(fricreg_handle_to_ptr(h)))
+end subroutine frstcd
+
+!> FRSTNT(H, TOL, MAXIT, STAT): Newton's tolerance 0 < TOL < 1 and at most 1 <= MAXIT <= 1000
+!> iterations per step.
+subroutine frstnt(h, tol, maxit, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  double precision, intent(in) :: tol
+  integer, intent(in) :: maxit
+  integer, intent(out) :: stat
+  ! C takes an int: an ILP64 caller's count beyond its range is clamped, not wrapped into
+  ! range, so that C refuses it (and records why).
+  stat = int(fricreg_structure_set_newton(fricreg_handle_to_ptr(h), tol, &
+             int(min(max(maxit, -int(huge(0_c_int))), int(huge(0_c_int))), c_int)))
+end subroutine frstnt
+
+!> FRSTSP(H, DT, STAT): one step of DT > 0 with the selected scheme.
+subroutine frstsp(h, dt, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  double precision, intent(in) :: dt
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_step(fricreg_handle_to_ptr(h), dt))
+end subroutine frstsp
+
+!> FRSTTE(H, DT, TEND, STAT): steps of DT from the current time to TEND, the last one shortened
+!> to land on it; on failure the state is the last successful step's.
+subroutine frstte(h, dt, tend, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  double precision, intent(in) :: dt, tend
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_run(fricreg_handle_to_ptr(h), dt, tend))
+end subroutine frstte
+
+!> FRSTGS(H, NDOF, U, V, A, STAT): displacements U(NDOF), velocities V(NDOF), accelerations
+!> A(NDOF) at the current time.
+subroutine frstgs(h, ndof, u, v, a, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: ndof
+  double precision, intent(inout) :: u(*), v(*), a(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_get_state(fricreg_handle_to_ptr(h), int(ndof, c_size_t), u, v, a))
+end subroutine frstgs
+
+!> FRSTGF(H, M, F, STAT): friction forces F(M) of the current state.
+subroutine frstgf(h, m, f, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m
+  double precision, intent(inout) :: f(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_get_forces(fricreg_handle_to_ptr(h), int(m, c_size_t), f))
+end subroutine frstgf
+
+!> FRSTGD(H, M, D, STAT): energy D(M) dissipated by each contact since the start.
+subroutine frstgd(h, m, d, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m
+  double precision, intent(inout) :: d(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_get_dissipation(fricreg_handle_to_ptr(h), int(m, c_size_t), d))
+end subroutine frstgd
+
+!> FRSTGV(H, WHICH, VALUE, STAT): one quantity (FRICREG_SVALUE_*: time, energies) into VALUE.
+subroutine frstgv(h, which, value, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: which
+  double precision, intent(inout) :: value
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_get_value(fricreg_handle_to_ptr(h), int(which, c_int), value))
+end subroutine frstgv
+
+!> FRSTGT(H, WHICH, VALUE, STAT): one counter (FRICREG_SSTAT_*: steps, Newton iterations, ...)
+!> into INTEGER*8 VALUE.
+subroutine frstgt(h, which, value, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: which
+  integer(c_int64_t), intent(inout) :: value
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_get_stat(fricreg_handle_to_ptr(h), int(which, c_int), value))
+end subroutine frstgt
+
+!> FRSTER(H, CODE, MSG, STAT): status CODE and message MSG of the structure's last failed call
+!> (FRICREG_OK and blanks if none; 'NULL structure' for H = 0); MSG blank-padded or truncated.
+subroutine frster(h, code, msg, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(out) :: code
+  character(len=*), intent(out) :: msg
+  integer, intent(out) :: stat
+  integer(c_int) :: last
+  stat = fricreg_f77_last_error(h, fricreg_structure_errcode, fricreg_structure_errmsg, last, &
+                                msg)
+  code = last
+end subroutine frster

@@ -1,0 +1,488 @@
+C     SPDX-License-Identifier: GPL-3.0-or-later
+C     TEST_F77_STRUCTURE.F -- THE STRUCTURE'S ENTRY POINTS (FRST*) FROM
+C     FIXED-FORM F77. A SHEAR BUILDING OF 6 STOREYS (LUMPED MASSES,
+C     STOREY SPRINGS AND DASHPOTS: TRIDIAGONAL K AND C) WITH 5 FRICTION
+C     CONTACTS BETWEEN NEIGHBOURING STOREYS, SHAKEN BY A GROUND RECORD,
+C     IS BUILT AND STEPPED THROUGH FRST* IN THREE VARIANTS:
+C       1  NEWMARK, M, K, C, J IN ONE-BASED CSC (K BY ITS LOWER
+C          TRIANGLE), WITH THE REFUSALS OF BAD INPUT BEFORE THE RUN;
+C       2  HHT-ALPHA, DENSE M AND K, RAYLEIGH C, DENSE J(M, NDOF), A
+C          LOAD RECORD, NEWTON'S TOLERANCE;
+C       3  CENTRAL DIFFERENCE, ZERO-BASED CSC M, K BY ITS UPPER
+C          TRIANGLE, J BY ONE-BASED ROWS, THE TANH LAW.
+C     EACH IS COMPARED WITH THE SAME MODEL STEPPED THROUGH THE C API
+C     FROM DENSE ROW-MAJOR MATRICES (STREF, F77_STRUCTURE_REF.F90):
+C     STATE, FORCES, DISSIPATION AND ENERGIES TO 1E-14 RELATIVE (THE
+C     MAXIMUM OF EACH ARRAY), COUNTERS EQUAL. EXITS 1 ON FAILURE.
+C     ITS NUMBERS HAVE 17 DIGITS: THE ILP64 BUILD PRINTS THE SAME.
+      PROGRAM TF77ST
+      IMPLICIT NONE
+      INCLUDE 'fricreg.fi'
+      INTEGER NDOF, M, NAG
+      PARAMETER (NDOF = 6, M = 5, NAG = 101)
+      DOUBLE PRECISION XM(NDOF), XK(NDOF), XC(NDOF), XMUN(M), P(NDOF)
+      DOUBLE PRECISION PAR(10), AG(NAG), V0(NDOF), DT, TEND
+      DOUBLE PRECISION U(NDOF), V(NDOF), A(NDOF), F(M), D(M), E(8)
+      DOUBLE PRECISION UR(NDOF), VR(NDOF), AR(NDOF), FR(M), DR(M)
+      DOUBLE PRECISION ER(8)
+C     WORK ARRAYS OF THE F77 RUNS: CSC OR CSR ARRAYS OF AT MOST 3
+C     ENTRIES PER COLUMN, DENSE M OR K, DENSE J
+      INTEGER*8 IP(NDOF + 1), IX(3 * NDOF)
+      DOUBLE PRECISION VX(3 * NDOF), WA(NDOF, NDOF), WJ(M, NDOF)
+      INTEGER*8 NS(5), NSR(5), IVAR8, NDOF8, M8, NAG8, NX8, IST8, HZ
+      INTEGER NFAIL, I, K, IVAR, NX, IST, ICODE
+      CHARACTER*80 MSG
+      NFAIL = 0
+      DO 10 I = 1, NDOF
+         XM(I) = 1.0D0 + 0.25D0 * (I - 1)
+         XK(I) = 400.0D0 - 30.0D0 * (I - 1)
+         XC(I) = 0.4D0 + 0.1D0 * I
+         P(I) = 0.5D0 * I
+         V0(I) = 0.01D0 * I
+   10 CONTINUE
+      DO 20 I = 1, M
+         XMUN(I) = 0.8D0 - 0.1D0 * (I - 1)
+   20 CONTINUE
+C     A TRIANGLE WAVE OF 2 M/S**2 AND 0.4 S (ONE ROUNDING PER SAMPLE: A
+C     SINE'S VALUES WOULD DEPEND ON HOW THE COMPILER VECTORIZES THE
+C     LOOP, AND THE ILP64 BUILD MUST READ THE SAME RECORD)
+      DO 30 I = 1, NAG
+         K = MOD(I - 1, 40)
+         IF (K .GT. 20) K = 40 - K
+         AG(I) = 0.2D0 * (K - 10)
+   30 CONTINUE
+C     EPS, DT OF THE GROUND RECORD, HHT ALPHA, RAYLEIGH A0 AND A1, DT
+C     OF THE LOAD RECORD, NEWTON'S TOLERANCE, THE LOAD RECORD G(3)
+      PAR(1) = 0.01D0
+      PAR(2) = 0.01D0
+      PAR(3) = -0.1D0
+      PAR(4) = 0.3D0
+      PAR(5) = 0.002D0
+      PAR(6) = 0.2D0
+      PAR(7) = 1.0D-12
+      PAR(8) = 0.0D0
+      PAR(9) = 1.0D0
+      PAR(10) = 0.5D0
+      NX = 10
+C
+      DO 100 IVAR = 1, 3
+         IF (IVAR .LE. 2) THEN
+            DT = 0.005D0
+            TEND = 0.3D0
+            PAR(1) = 0.01D0
+         ELSE
+C           CENTRAL DIFFERENCE: A STEP AND AN EPS WITHIN ITS BOUND
+            DT = 0.002D0
+            TEND = 0.2D0
+            PAR(1) = 0.1D0
+         END IF
+         CALL F77RUN(IVAR, NDOF, M, XM, XK, XC, XMUN, P, PAR, NAG, AG,
+     &               V0, DT, TEND, NX, IP, IX, VX, WA, WJ,
+     &               U, V, A, F, D, E, NS, IST, NFAIL)
+         CALL CHK(IST .EQ. FRICREG_OK, 'F77 RUN', NFAIL)
+         IVAR8 = IVAR
+         NDOF8 = NDOF
+         M8 = M
+         NAG8 = NAG
+         NX8 = NX
+         CALL STREF(IVAR8, NDOF8, M8, XM, XK, XC, XMUN, P, PAR, NAG8,
+     &              AG, V0, DT, TEND, NX8, UR, VR, AR, FR, DR, ER, NSR,
+     &              IST8)
+         CALL CHK(IST8 .EQ. 0, 'C API RUN', NFAIL)
+         WRITE (*, '(A, I0)') 'VARIANT ', IVAR
+         CALL CMPV(NDOF, U, UR, 'U', NFAIL)
+         CALL CMPV(NDOF, V, VR, 'V', NFAIL)
+         CALL CMPV(NDOF, A, AR, 'A', NFAIL)
+         CALL CMPV(M, F, FR, 'F', NFAIL)
+         CALL CMPV(M, D, DR, 'D', NFAIL)
+         CALL CMPV(8, E, ER, 'ENERGIES', NFAIL)
+         DO 40 I = 1, 5
+            CALL CHK(NS(I) .EQ. NSR(I), 'COUNTERS', NFAIL)
+   40    CONTINUE
+         WRITE (*, '(A, 5(1X, I0))') '  COUNTERS:', (NS(I), I = 1, 5)
+         WRITE (*, '(A, 2(1X, 1PE24.16))') '  U(6), F(1):', U(6), F(1)
+         WRITE (*, '(A, 2(1X, 1PE24.16))') '  TIME, FRICTION:', E(1),
+     &        E(6)
+C        THE RUN REACHED ITS END AND THE CONTACTS DID WORK
+         CALL CHK(ABS(E(1) - (TEND + NX * DT)) .LT. 1.0D-12,
+     &            'TIME REACHED', NFAIL)
+         CALL CHK(E(6) .GT. 0.0D0, 'FRICTION DISSIPATES', NFAIL)
+         CALL CHK(NS(1) .GT. 0, 'STEPS COUNTED', NFAIL)
+  100 CONTINUE
+C
+C     NO STRUCTURE: CREATE REFUSED, H = 0 ANSWERED, FREE TWICE.
+      HZ = 0
+      CALL FRSTCR(0, M, HZ, IST)
+      CALL CHK(IST .EQ. FRICREG_EINVAL .AND. HZ .EQ. 0, 'FRSTCR NDOF 0',
+     &         NFAIL)
+      CALL FRSTCR(NDOF, -1, HZ, IST)
+      CALL CHK(IST .EQ. FRICREG_EINVAL .AND. HZ .EQ. 0, 'FRSTCR M < 0',
+     &         NFAIL)
+      CALL CSCMAS(NDOF, XM, 1, IP, IX, VX)
+      CALL FRSTMC(HZ, NDOF, FRICREG_SPARSE_ONE_BASED, IP, IX, VX, IST)
+      CALL CHK(IST .EQ. FRICREG_ENULL, 'FRSTMC H = 0', NFAIL)
+      CALL FRSTSP(HZ, DT, IST)
+      CALL CHK(IST .EQ. FRICREG_ENULL, 'FRSTSP H = 0', NFAIL)
+      CALL FRSTER(HZ, ICODE, MSG, IST)
+      CALL CHK(IST .EQ. FRICREG_OK .AND. ICODE .EQ. FRICREG_OK .AND.
+     &         MSG .EQ. 'NULL structure', 'FRSTER H = 0', NFAIL)
+      CALL FRSTFR(HZ, IST)
+      CALL CHK(IST .EQ. FRICREG_OK .AND. HZ .EQ. 0, 'FRSTFR H = 0',
+     &         NFAIL)
+C
+      WRITE (*, '(A, I0, A)') 'test_f77_structure: ', NFAIL, ' failed'
+      IF (NFAIL .GT. 0) STOP 1
+      END
+C
+C     F77RUN -- BUILD VARIANT IVAR THROUGH FRST* AND RUN IT AS STREF
+C     DOES; VARIANT 1 FIRST PROVOKES THE REFUSALS OF BAD INPUT, WHICH
+C     MUST LEAVE THE MODEL AS IT WAS (THE COMPARISON SHOWS IT). IST IS
+C     THE FIRST FAILING STATUS OF THE RUN AND THE GETTERS.
+      SUBROUTINE F77RUN(IVAR, NDOF, M, XM, XK, XC, XMUN, P, PAR, NAG,
+     &                  AG, V0, DT, TEND, NX, IP, IX, VX, WA, WJ,
+     &                  U, V, A, F, D, E, NS, IST, NFAIL)
+      IMPLICIT NONE
+      INCLUDE 'fricreg.fi'
+      INTEGER IVAR, NDOF, M, NAG, NX, IST, NFAIL
+      DOUBLE PRECISION XM(NDOF), XK(NDOF), XC(NDOF), XMUN(M), P(NDOF)
+      DOUBLE PRECISION PAR(10), AG(NAG), V0(NDOF), DT, TEND
+      INTEGER*8 IP(NDOF + 1), IX(3 * NDOF)
+      DOUBLE PRECISION VX(3 * NDOF), WA(NDOF, NDOF), WJ(M, NDOF)
+      DOUBLE PRECISION U(NDOF), V(NDOF), A(NDOF), F(M), D(M), E(8)
+      INTEGER*8 NS(5), H
+C     INFLUENCE VECTOR AND INITIAL DISPLACEMENTS, NDOF <= 20
+      DOUBLE PRECISION R(20), U0(20)
+      INTEGER I, K, JS, ICODE
+      CHARACTER*80 MSG
+      CHARACTER*12 SHORT
+      H = 0
+      CALL FRSTCR(NDOF, M, H, JS)
+      CALL CHK(JS .EQ. FRICREG_OK .AND. H .NE. 0, 'FRSTCR', NFAIL)
+      DO 10 I = 1, NDOF
+         R(I) = 1.0D0
+         U0(I) = 0.0D0
+   10 CONTINUE
+      IF (IVAR .EQ. 1) THEN
+         CALL CSCMAS(NDOF, XM, 1, IP, IX, VX)
+         CALL FRSTMC(H, NDOF, FRICREG_SPARSE_ONE_BASED, IP, IX, VX, JS)
+         CALL CHK(JS .EQ. FRICREG_OK, 'FRSTMC', NFAIL)
+         CALL CSCTRI(NDOF, XK, 1, IP, IX, VX)
+         CALL FRSTKC(H, NDOF, FRICREG_SPARSE_ONE_BASED +
+     &               FRICREG_SPARSE_LOWER, IP, IX, VX, JS)
+         CALL CHK(JS .EQ. FRICREG_OK, 'FRSTKC LOWER', NFAIL)
+         CALL CSCTRI(NDOF, XC, 0, IP, IX, VX)
+         CALL FRSTCC(H, NDOF, FRICREG_SPARSE_ONE_BASED, IP, IX, VX, JS)
+         CALL CHK(JS .EQ. FRICREG_OK, 'FRSTCC', NFAIL)
+         CALL CSCJ(M, NDOF, IP, IX, VX)
+         CALL FRSTJC(H, M, NDOF, FRICREG_SPARSE_ONE_BASED, IP, IX, VX,
+     &               JS)
+         CALL CHK(JS .EQ. FRICREG_OK, 'FRSTJC', NFAIL)
+      ELSE IF (IVAR .EQ. 2) THEN
+         CALL DENTRI(NDOF, XM, 0, WA)
+         CALL FRSTMF(H, NDOF, WA, JS)
+         CALL CHK(JS .EQ. FRICREG_OK, 'FRSTMF', NFAIL)
+         CALL DENTRI(NDOF, XK, 1, WA)
+         CALL FRSTKF(H, NDOF, WA, JS)
+         CALL CHK(JS .EQ. FRICREG_OK, 'FRSTKF', NFAIL)
+C        C = A0 M + A1 K, FROM THE M AND K ABOVE
+         CALL FRSTCA(H, PAR(4), PAR(5), JS)
+         CALL CHK(JS .EQ. FRICREG_OK, 'FRSTCA', NFAIL)
+C        J(I, K) = D ZDOT_I / D U'_K, IN FORTRAN'S ORDER
+         DO 30 K = 1, NDOF
+            DO 20 I = 1, M
+               WJ(I, K) = 0.0D0
+               IF (K .EQ. I) WJ(I, K) = -1.0D0
+               IF (K .EQ. I + 1) WJ(I, K) = 1.0D0
+   20       CONTINUE
+   30    CONTINUE
+         CALL FRSTJF(H, M, NDOF, WJ, JS)
+         CALL CHK(JS .EQ. FRICREG_OK, 'FRSTJF', NFAIL)
+      ELSE
+         CALL CSCMAS(NDOF, XM, 0, IP, IX, VX)
+         CALL FRSTMC(H, NDOF, FRICREG_SPARSE_ZERO_BASED, IP, IX, VX, JS)
+         CALL CHK(JS .EQ. FRICREG_OK, 'FRSTMC ZERO-BASED', NFAIL)
+         CALL CSCTRI(NDOF, XK, 2, IP, IX, VX)
+         CALL FRSTKC(H, NDOF, FRICREG_SPARSE_ONE_BASED +
+     &               FRICREG_SPARSE_UPPER, IP, IX, VX, JS)
+         CALL CHK(JS .EQ. FRICREG_OK, 'FRSTKC UPPER', NFAIL)
+         CALL CSRJ(M, NDOF, IP, IX, VX)
+         CALL FRSTJR(H, M, NDOF, FRICREG_SPARSE_ONE_BASED, IP, IX, VX,
+     &               JS)
+         CALL CHK(JS .EQ. FRICREG_OK, 'FRSTJR', NFAIL)
+      END IF
+      CALL FRSTBD(H, M, XMUN, JS)
+      CALL CHK(JS .EQ. FRICREG_OK, 'FRSTBD', NFAIL)
+      CALL FRSTIV(H, NDOF, R, JS)
+      CALL CHK(JS .EQ. FRICREG_OK, 'FRSTIV', NFAIL)
+      CALL FRSTAG(H, 0.0D0, PAR(2), NAG, AG, JS)
+      CALL CHK(JS .EQ. FRICREG_OK, 'FRSTAG', NFAIL)
+      IF (IVAR .EQ. 1) THEN
+         CALL FRSTLW(H, FRICREG_LAW_QUINN, PAR(1), JS)
+         CALL CHK(JS .EQ. FRICREG_OK, 'FRSTLW', NFAIL)
+         CALL FRSTNM(H, 0.25D0, 0.5D0, JS)
+         CALL CHK(JS .EQ. FRICREG_OK, 'FRSTNM', NFAIL)
+         CALL FRSTU0(H, NDOF, U0, V0, JS)
+         CALL CHK(JS .EQ. FRICREG_OK, 'FRSTU0', NFAIL)
+      ELSE IF (IVAR .EQ. 2) THEN
+         CALL FRSTLW(H, FRICREG_LAW_QUINN, PAR(1), JS)
+         CALL CHK(JS .EQ. FRICREG_OK, 'FRSTLW', NFAIL)
+         CALL FRSTLD(H, NDOF, P, 0.0D0, PAR(6), 3, PAR(8), JS)
+         CALL CHK(JS .EQ. FRICREG_OK, 'FRSTLD', NFAIL)
+         CALL FRSTHH(H, PAR(3), JS)
+         CALL CHK(JS .EQ. FRICREG_OK, 'FRSTHH', NFAIL)
+         CALL FRSTNT(H, PAR(7), 60, JS)
+         CALL CHK(JS .EQ. FRICREG_OK, 'FRSTNT', NFAIL)
+      ELSE
+         CALL FRSTLW(H, FRICREG_LAW_TANH, PAR(1), JS)
+         CALL CHK(JS .EQ. FRICREG_OK, 'FRSTLW TANH', NFAIL)
+         CALL FRSTCD(H, JS)
+         CALL CHK(JS .EQ. FRICREG_OK, 'FRSTCD', NFAIL)
+         CALL FRSTU0(H, NDOF, U0, V0, JS)
+         CALL CHK(JS .EQ. FRICREG_OK, 'FRSTU0', NFAIL)
+      END IF
+C
+      IF (IVAR .EQ. 1) THEN
+C        A WRONG BASE FLAG: ONE-BASED ARRAYS GIVEN AS ZERO-BASED.
+         CALL CSCMAS(NDOF, XM, 1, IP, IX, VX)
+         CALL FRSTMC(H, NDOF, FRICREG_SPARSE_ZERO_BASED, IP, IX, VX, JS)
+         CALL CHKERR(H, JS, FRICREG_EINVAL, 'colptr[0] = 1 must be 0',
+     &               'WRONG BASE', NFAIL)
+C        FLAGS THAT ARE NO FRICREG_SPARSE_* COMBINATION.
+         CALL FRSTMC(H, NDOF, 8, IP, IX, VX, JS)
+         CALL CHKERR(H, JS, FRICREG_EINVAL, 'unknown flags 0x8',
+     &               'UNKNOWN FLAGS', NFAIL)
+         CALL FRSTMC(H, NDOF, FRICREG_SPARSE_ONE_BASED +
+     &               FRICREG_SPARSE_UPPER + FRICREG_SPARSE_LOWER, IP,
+     &               IX, VX, JS)
+         CALL CHKERR(H, JS, FRICREG_EINVAL, 'LOWER together',
+     &               'BOTH TRIANGLES', NFAIL)
+C        COLUMN POINTERS THAT DECREASE: COLPTR(4) BELOW COLPTR(3).
+         CALL CSCTRI(NDOF, XK, 1, IP, IX, VX)
+         IP(4) = IP(3) - 1
+         CALL FRSTKC(H, NDOF, FRICREG_SPARSE_ONE_BASED +
+     &               FRICREG_SPARSE_LOWER, IP, IX, VX, JS)
+         CALL CHKERR(H, JS, FRICREG_EINVAL,
+     &               'colptr[3] = 4 is below colptr[2] = 5',
+     &               'COLPTR DECREASING', NFAIL)
+C        A ROW INDEX BEYOND NDOF, AND AN ENTRY ABOVE THE LOWER TRIANGLE.
+         CALL CSCTRI(NDOF, XK, 1, IP, IX, VX)
+         IX(2) = NDOF + 1
+         CALL FRSTKC(H, NDOF, FRICREG_SPARSE_ONE_BASED +
+     &               FRICREG_SPARSE_LOWER, IP, IX, VX, JS)
+         CALL CHKERR(H, JS, FRICREG_EINVAL,
+     &               'rowind[1] = 7 is outside 1..6',
+     &               'ROW INDEX OUT OF RANGE', NFAIL)
+         CALL CSCTRI(NDOF, XK, 0, IP, IX, VX)
+         CALL FRSTKC(H, NDOF, FRICREG_SPARSE_ONE_BASED +
+     &               FRICREG_SPARSE_LOWER, IP, IX, VX, JS)
+         CALL CHKERR(H, JS, FRICREG_EINVAL,
+     &               'outside the lower triangle',
+     &               'WHOLE K GIVEN AS LOWER', NFAIL)
+C        NDOF OR M NOT THE STRUCTURE'S.
+         CALL CSCTRI(NDOF - 1, XC, 0, IP, IX, VX)
+         CALL FRSTCC(H, NDOF - 1, FRICREG_SPARSE_ONE_BASED, IP, IX, VX,
+     &               JS)
+         CALL CHKERR(H, JS, FRICREG_ESIZE,
+     &               'is 5 x 5, the structure needs 6 x 6',
+     &               'NDOF MISMATCH', NFAIL)
+         CALL CSCJ(M, NDOF, IP, IX, VX)
+         CALL FRSTJC(H, M - 1, NDOF, FRICREG_SPARSE_ONE_BASED, IP, IX,
+     &               VX, JS)
+         CALL CHKERR(H, JS, FRICREG_ESIZE,
+     &               'is 4 x 6, the structure needs 5 x 6',
+     &               'M MISMATCH', NFAIL)
+C        J IS NOT SYMMETRIC: NO TRIANGLE.
+         CALL FRSTJC(H, M, NDOF, FRICREG_SPARSE_ONE_BASED +
+     &               FRICREG_SPARSE_LOWER, IP, IX, VX, JS)
+         CALL CHKERR(H, JS, FRICREG_EINVAL, 'a triangle flag',
+     &               'TRIANGLE FLAG FOR J', NFAIL)
+         CALL FRSTU0(H, NDOF - 1, U0, V0, JS)
+         CALL CHKERR(H, JS, FRICREG_ESIZE, 'set_initial',
+     &               'FRSTU0 NDOF', NFAIL)
+         CALL FRSTSP(H, 0.0D0, JS)
+         CALL CHKERR(H, JS, FRICREG_EINVAL, 'dt', 'FRSTSP DT = 0',
+     &               NFAIL)
+C        A GETTER'S REFUSAL IS NOT RECORDED: FRSTER STILL SHOWS DT = 0.
+         CALL FRSTGS(H, NDOF + 1, U, V, A, JS)
+         CALL CHK(JS .EQ. FRICREG_ESIZE, 'FRSTGS NDOF', NFAIL)
+         CALL FRSTER(H, ICODE, MSG, JS)
+         CALL CHK(JS .EQ. FRICREG_OK .AND. ICODE .EQ. FRICREG_EINVAL,
+     &            'FRSTER AFTER A GETTER', NFAIL)
+C        A SHORT BUFFER GETS THE MESSAGE'S BEGINNING.
+         CALL FRSTER(H, ICODE, SHORT, JS)
+         CALL CHK(SHORT .EQ. MSG(1:12), 'FRSTER TRUNCATES', NFAIL)
+C        COUNTS THAT CANNOT BE: REFUSED BEFORE C SEES THEM.
+         CALL FRSTAG(H, 0.0D0, PAR(2), -1, AG, JS)
+         CALL CHK(JS .EQ. FRICREG_EINVAL, 'FRSTAG N < 0', NFAIL)
+      END IF
+C
+      IST = FRICREG_OK
+      CALL FRSTTE(H, DT, TEND, JS)
+      IF (IST .EQ. FRICREG_OK) IST = JS
+      DO 40 K = 1, NX
+         CALL FRSTSP(H, DT, JS)
+         IF (IST .EQ. FRICREG_OK) IST = JS
+   40 CONTINUE
+      CALL FRSTGS(H, NDOF, U, V, A, JS)
+      IF (IST .EQ. FRICREG_OK) IST = JS
+      CALL FRSTGF(H, M, F, JS)
+      IF (IST .EQ. FRICREG_OK) IST = JS
+      CALL FRSTGD(H, M, D, JS)
+      IF (IST .EQ. FRICREG_OK) IST = JS
+      DO 50 K = 1, 8
+         CALL FRSTGV(H, FRICREG_SVALUE_TIME + K - 1, E(K), JS)
+         IF (IST .EQ. FRICREG_OK) IST = JS
+   50 CONTINUE
+      DO 60 K = 1, 5
+         CALL FRSTGT(H, FRICREG_SSTAT_STEPS + K - 1, NS(K), JS)
+         IF (IST .EQ. FRICREG_OK) IST = JS
+   60 CONTINUE
+      IF (IST .NE. FRICREG_OK) THEN
+         CALL FRSTER(H, ICODE, MSG, JS)
+         WRITE (*, '(A, A)') 'RUN FAILED: ', MSG
+      END IF
+      CALL FRSTFR(H, JS)
+      CALL CHK(JS .EQ. FRICREG_OK .AND. H .EQ. 0, 'FRSTFR', NFAIL)
+      END
+C
+C     CHKERR -- STAT JS MUST BE ISTEXP, AND FRSTER MUST GIVE THE SAME
+C     CODE AND A MESSAGE CONTAINING TEXT; PRINTS THE MESSAGE.
+      SUBROUTINE CHKERR(H, JS, ISTEXP, TEXT, WHAT, NFAIL)
+      IMPLICIT NONE
+      INCLUDE 'fricreg.fi'
+      INTEGER*8 H
+      INTEGER JS, ISTEXP, NFAIL, ICODE, IST
+      CHARACTER*(*) TEXT, WHAT
+      CHARACTER*80 MSG
+      CALL CHK(JS .EQ. ISTEXP, WHAT, NFAIL)
+      CALL FRSTER(H, ICODE, MSG, IST)
+      CALL CHK(IST .EQ. FRICREG_OK .AND. ICODE .EQ. ISTEXP .AND.
+     &         INDEX(MSG, TEXT) .GT. 0, WHAT, NFAIL)
+      WRITE (*, '(A, A, A, A)') '  ', WHAT, ': ', MSG(1:LEN_TRIM(MSG))
+      END
+C
+C     CMPV -- X(N) EQUALS THE REFERENCE Y(N) TO 1E-14 OF MAX |Y|.
+      SUBROUTINE CMPV(N, X, Y, WHAT, NFAIL)
+      IMPLICIT NONE
+      INTEGER N, NFAIL, I
+      DOUBLE PRECISION X(N), Y(N), DMAX, YMAX
+      CHARACTER*(*) WHAT
+      DMAX = 0.0D0
+      YMAX = 0.0D0
+      DO 10 I = 1, N
+         DMAX = MAX(DMAX, ABS(X(I) - Y(I)))
+         YMAX = MAX(YMAX, ABS(Y(I)))
+   10 CONTINUE
+      CALL CHK(DMAX .LE. 1.0D-14 * YMAX .AND. YMAX .GT. 0.0D0, WHAT,
+     &         NFAIL)
+      WRITE (*, '(A, A, A, 1PE10.2)') '  ', WHAT,
+     &      ': MAX |F77 - C| / MAX |C| =', DMAX / MAX(YMAX, 1.0D-300)
+      END
+C
+C     CSCMAS -- THE LUMPED MASS DIAG(XM) IN CSC COUNTING FROM IBASE:
+C     COLUMN POINTERS IP(NDOF + 1), ROW INDICES IX, VALUES VX.
+      SUBROUTINE CSCMAS(NDOF, XM, IBASE, IP, IX, VX)
+      IMPLICIT NONE
+      INTEGER NDOF, IBASE, J
+      DOUBLE PRECISION XM(NDOF), VX(*)
+      INTEGER*8 IP(NDOF + 1), IX(*)
+      DO 10 J = 1, NDOF
+         IP(J) = J - 1 + IBASE
+         IX(J) = J - 1 + IBASE
+         VX(J) = XM(J)
+   10 CONTINUE
+      IP(NDOF + 1) = NDOF + IBASE
+      END
+C
+C     CSCTRI -- THE TRIDIAGONAL MATRIX OF STOREY ELEMENTS X(J) (BETWEEN
+C     STOREYS J - 1 AND J, THE GROUND FOR J = 1) IN ONE-BASED CSC:
+C     ITRI = 0 WHOLE, 1 LOWER TRIANGLE, 2 UPPER TRIANGLE. COLUMN J
+C     HOLDS (J - 1, -X(J)), (J, X(J) + X(J + 1)), (J + 1, -X(J + 1)).
+      SUBROUTINE CSCTRI(NDOF, X, ITRI, IP, IX, VX)
+      IMPLICIT NONE
+      INTEGER NDOF, ITRI, J, NZ
+      DOUBLE PRECISION X(NDOF), VX(*), XN
+      INTEGER*8 IP(NDOF + 1), IX(*)
+      NZ = 0
+      DO 10 J = 1, NDOF
+         IP(J) = NZ + 1
+         XN = 0.0D0
+         IF (J .LT. NDOF) XN = X(J + 1)
+         IF (J .GT. 1 .AND. ITRI .NE. 1) THEN
+            NZ = NZ + 1
+            IX(NZ) = J - 1
+            VX(NZ) = -X(J)
+         END IF
+         NZ = NZ + 1
+         IX(NZ) = J
+         VX(NZ) = X(J) + XN
+         IF (J .LT. NDOF .AND. ITRI .NE. 2) THEN
+            NZ = NZ + 1
+            IX(NZ) = J + 1
+            VX(NZ) = -X(J + 1)
+         END IF
+   10 CONTINUE
+      IP(NDOF + 1) = NZ + 1
+      END
+C
+C     DENTRI -- THE SAME AS A DENSE WA(NDOF, NDOF); ITRI = 0: DIAG(X).
+      SUBROUTINE DENTRI(NDOF, X, ITRI, WA)
+      IMPLICIT NONE
+      INTEGER NDOF, ITRI, I, J
+      DOUBLE PRECISION X(NDOF), WA(NDOF, NDOF)
+      DO 20 J = 1, NDOF
+         DO 10 I = 1, NDOF
+            WA(I, J) = 0.0D0
+   10    CONTINUE
+         WA(J, J) = X(J)
+         IF (ITRI .NE. 0) THEN
+            IF (J .LT. NDOF) THEN
+               WA(J, J) = X(J) + X(J + 1)
+               WA(J + 1, J) = -X(J + 1)
+            END IF
+            IF (J .GT. 1) WA(J - 1, J) = -X(J)
+         END IF
+   20 CONTINUE
+      END
+C
+C     CSCJ -- J (M X NDOF), CONTACT I BETWEEN STOREYS I AND I + 1
+C     (ZDOT_I = U'_(I+1) - U'_I), BY ITS ONE-BASED COLUMNS: COLUMN K
+C     HOLDS (K - 1, +1) AND (K, -1).
+      SUBROUTINE CSCJ(M, NDOF, IP, IX, VX)
+      IMPLICIT NONE
+      INTEGER M, NDOF, K, NZ
+      DOUBLE PRECISION VX(*)
+      INTEGER*8 IP(NDOF + 1), IX(*)
+      NZ = 0
+      DO 10 K = 1, NDOF
+         IP(K) = NZ + 1
+         IF (K .GE. 2) THEN
+            NZ = NZ + 1
+            IX(NZ) = K - 1
+            VX(NZ) = 1.0D0
+         END IF
+         IF (K .LE. M) THEN
+            NZ = NZ + 1
+            IX(NZ) = K
+            VX(NZ) = -1.0D0
+         END IF
+   10 CONTINUE
+      IP(NDOF + 1) = NZ + 1
+      END
+C
+C     CSRJ -- THE SAME J BY ITS ONE-BASED ROWS: ROW I HOLDS (I, -1) AND
+C     (I + 1, +1).
+      SUBROUTINE CSRJ(M, NDOF, IP, IX, VX)
+      IMPLICIT NONE
+      INTEGER M, NDOF, I
+      DOUBLE PRECISION VX(*)
+      INTEGER*8 IP(M + 1), IX(*)
+      DO 10 I = 1, M
+         IP(I) = 2 * I - 1
+         IX(2 * I - 1) = I
+         VX(2 * I - 1) = -1.0D0
+         IX(2 * I) = I + 1
+         VX(2 * I) = 1.0D0
+   10 CONTINUE
+      IP(M + 1) = 2 * M + 1
+      END
