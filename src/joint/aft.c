@@ -18,27 +18,23 @@ void fr_aft_basis(int H, double theta, double *phi)
     }
 }
 
-/* Binomial coefficients' products: (1 + i t)^(H+h) (1 - i t)^(H-h) into qre, qim (row h). The
- * coefficients of (1 + i t)^m are C(m, k) i^k; those of (1 - i t)^m, C(m, k) (-i)^k. */
-static void half_angle_table(fricreg_aft *a)
+void fr_aft_half_angle_table(fricreg_aft *a, int H)
 {
-    int H = a->H;
     size_t w = (size_t)(2 * H + 1);
-    double *binom = a->dcoef; /* [2H+1] row m of Pascal's triangle, rebuilt per factor */
+    double *b1 = a->cm, *b2 = a->sm; /* rows H + h and H - h of Pascal's triangle */
     for (int h = 0; h <= H; h++) {
         double *re = &a->qre[w * (size_t)h], *im = &a->qim[w * (size_t)h];
         memset(re, 0, w * sizeof *re);
         memset(im, 0, w * sizeof *im);
         int m1 = H + h, m2 = H - h;
-        double *b2 = a->cm; /* row m2 */
         for (int k = 0; k <= m2; k++)
             b2[k] = k == 0 ? 1.0 : b2[k - 1] * (double)(m2 - k + 1) / k;
         for (int k = 0; k <= m1; k++) {
-            binom[k] = k == 0 ? 1.0 : binom[k - 1] * (double)(m1 - k + 1) / k;
+            b1[k] = k == 0 ? 1.0 : b1[k - 1] * (double)(m1 - k + 1) / k;
             for (int l = 0; l <= m2; l++) {
-                /* i^k (-i)^l = i^(k+l) (-1)^l */
+                /* the coefficient of t^(k+l): C(m1, k) i^k C(m2, l) (-i)^l, i^(k+l) (-1)^l */
                 int p = (k + l) % 4;
-                double sgn = (l % 2) ? -1.0 : 1.0, c = binom[k] * b2[l] * sgn;
+                double c = b1[k] * b2[l] * ((l % 2) ? -1.0 : 1.0);
                 if (p == 0)
                     re[k + l] += c;
                 else if (p == 1)
@@ -50,6 +46,7 @@ static void half_angle_table(fricreg_aft *a)
             }
         }
     }
+    a->table_H = H;
 }
 
 int fricreg_aft_create(int harmonics, size_t samples, fricreg_aft **out)
@@ -76,12 +73,20 @@ int fricreg_aft_create(int harmonics, size_t samples, fricreg_aft **out)
     a->rdir = malloc(2 * H * sizeof(int));
     a->cm = malloc((2 * nc + nc * nc + 2 * nc) * sizeof(double));
     a->fout = malloc((nc + nc * nc) * sizeof(double));
+    /* gsl_root_fsolver_alloc's two mallocs, done here: GSL would report a failed one to its
+     * error handler (as in exact.c) */
+    a->brent = malloc(sizeof *a->brent);
+    void *state = malloc(gsl_root_fsolver_brent->size);
+    if (a->brent != NULL)
+        *a->brent = (gsl_root_fsolver){.type = gsl_root_fsolver_brent, .state = state};
     if (N != 0) {
         a->ctab = malloc((5 * N + nc * N) * sizeof(double));
         a->anchor = malloc(N * sizeof(size_t));
     }
+    if (a->brent == NULL)
+        free(state);
     if (!a->qre || !a->poly || !a->roots || !a->ws.matrix || !a->cand || !a->rdir || !a->cm ||
-        !a->fout || (N != 0 && (!a->ctab || !a->anchor))) {
+        !a->fout || !a->brent || !state || (N != 0 && (!a->ctab || !a->anchor))) {
         fricreg_aft_free(a);
         return FRICREG_ENOMEM;
     }
@@ -93,7 +98,7 @@ int fricreg_aft_create(int harmonics, size_t samples, fricreg_aft **out)
     a->phw = a->gram + nc * nc;
     a->dcoef = a->phw + nc;
     a->jout = a->fout + nc;
-    half_angle_table(a);
+    fr_aft_half_angle_table(a, harmonics);
     if (N != 0) {
         a->stab = a->ctab + N;
         a->us = a->stab + N;
@@ -124,6 +129,9 @@ void fricreg_aft_free(fricreg_aft *aft)
     free(aft->fout);
     free(aft->ctab);
     free(aft->anchor);
+    if (aft->brent != NULL)
+        free(aft->brent->state);
+    free(aft->brent);
     free(aft);
 }
 

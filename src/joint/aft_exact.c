@@ -34,10 +34,12 @@
  * rules: the piece's Gram matrix G_ij = ∫ φ_i φ_j. A stick piece adds kt G (u − w e_0) to the
  * coefficients and kt (G_ij − φ_j(θ_w) G_i0) to the Jacobian (θ_w the reversal where the
  * slider stopped, u'(θ_w) = 0, so ∂w/∂u_j = φ_j(θ_w)); a slip piece adds s mun G_i0. */
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
 #include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
 
 #include "aft_internal.h"
 #include "base/fr_math.h"
@@ -73,14 +75,26 @@ static double polish(int H, const double *co, double th, double lo, double hi)
     return th;
 }
 
-/* The 2H roots of the trigonometric polynomial co (not zero, entries of order 1) as angles:
- * real parts into a->cand (in [0, 2pi)), sizes of the imaginary parts into a->cim. Returns
- * FRICREG_OK, or FRICREG_EINTEGRATOR (message recorded) if GSL's QR did not converge. */
-static int trig_roots(fricreg_aft *a, const char *fn, const double *co)
+/* The roots of the trigonometric polynomial co (not zero, entries of order 1) as angles: real
+ * parts into a->cand (in [0, 2pi)), sizes of the imaginary parts into a->cim, their count
+ * (2D, D the degree kept) into *count. Harmonics below DBL_EPSILON times the largest
+ * coefficient are left out of the algebraic polynomial (they move a simple real root by less
+ * than the polish restores; kept, they would put multiple roots at t = +-i, which slow GSL's
+ * QR). Returns FRICREG_OK, or FRICREG_EINTEGRATOR (message recorded) if GSL's QR did not
+ * converge. */
+static int trig_roots(fricreg_aft *a, const char *fn, const double *co, int *count)
 {
-    int H = a->H;
-    size_t w = a->nc, probes = 4 * (size_t)H + 2;
-    double best = -1.0, ths = 0.0, d;
+    int H = a->H, D = 1;
+    double big = fabs(co[0]), d;
+    for (size_t j = 1; j < a->nc; j++)
+        big = fmax(big, fabs(co[j]));
+    for (int h = 1; h <= H; h++)
+        if (fmax(fabs(co[2 * h - 1]), fabs(co[2 * h])) > DBL_EPSILON * big)
+            D = h;
+    if (a->table_H != D)
+        fr_aft_half_angle_table(a, D);
+    size_t w = (size_t)(2 * D + 1), probes = 4 * (size_t)D + 2;
+    double best = -1.0, ths = 0.0;
     for (size_t j = 0; j < probes; j++) {
         double th = FR_TWO_PI * (double)j / (double)probes, g = fabs(trig_eval(H, co, th, &d));
         if (g > best) {
@@ -90,7 +104,7 @@ static int trig_roots(fricreg_aft *a, const char *fn, const double *co)
     }
     for (size_t k = 0; k < w; k++)
         a->poly[k] = co[0] * a->qre[k];
-    for (int h = 1; h <= H; h++) {
+    for (int h = 1; h <= D; h++) {
         double ch = cos(h * ths), sh = sin(h * ths), al = co[2 * h - 1], be = co[2 * h];
         double p = al * ch + be * sh, q = be * ch - al * sh;
         const double *re = &a->qre[w * (size_t)h], *im = &a->qim[w * (size_t)h];
@@ -100,21 +114,23 @@ static int trig_roots(fricreg_aft *a, const char *fn, const double *co)
     double scale = 0.0;
     for (size_t k = 0; k < w; k++)
         scale = fmax(scale, fabs(a->poly[k]));
+    if (!(scale > 0.0) || a->poly[w - 1] == 0.0) /* g = 0 at every probe: ruled out by callers */
+        return fr_fail(a, FRICREG_EINTEGRATOR, "%s: a trigonometric polynomial vanished", fn);
     for (size_t k = 0; k < w; k++)
         a->poly[k] /= scale;
-    if (a->poly[w - 1] == 0.0) /* g vanishes at every probe: g = 0, ruled out by the callers */
-        return fr_fail(a, FRICREG_EINTEGRATOR, "%s: a trigonometric polynomial vanished", fn);
     /* inputs finite, leading term non-zero, workspace of the right size: GSL's only remaining
      * failure is QR's non-convergence */
+    a->ws.nc = w - 1;
     if (gsl_poly_complex_solve(a->poly, w, &a->ws, a->roots) != GSL_SUCCESS)
         return fr_fail(a, FRICREG_EINTEGRATOR,
                        "%s: GSL's polynomial root solver did not converge", fn);
-    for (int k = 0; k < 2 * H; k++) {
+    for (int k = 0; k < 2 * D; k++) {
         double x = a->roots[2 * k], y = a->roots[2 * k + 1];
         double th = fmod(ths + 2.0 * atan(x), FR_TWO_PI);
         a->cand[k] = th < 0.0 ? th + FR_TWO_PI : th;
         a->cim[k] = 2.0 * fabs(y) / (1.0 + x * x); /* d theta/dt = 2/(1 + t^2) */
     }
+    *count = 2 * D;
     return FRICREG_OK;
 }
 
@@ -146,11 +162,11 @@ static int reversals(fricreg_aft *a, const char *fn, const double *u, int *m)
         return FRICREG_OK;
     for (int j = 1; j < (int)a->nc; j++)
         du[j] /= big;
-    int status = trig_roots(a, fn, du);
+    int nroots = 0, status = trig_roots(a, fn, du, &nroots);
     if (status != FRICREG_OK)
         return status;
     int K = 0;
-    for (int k = 0; k < 2 * H; k++) /* real to first order: |Im theta| below 1e-6 */
+    for (int k = 0; k < nroots; k++) /* real to first order: |Im theta| below 1e-6 */
         if (a->cim[k] <= 1e-6)
             a->cand[K++] = polish(H, du, a->cand[k], a->cand[k] - 0.1, a->cand[k] + 0.1);
     for (int k = 0; k < K; k++) { /* back into [0, 2pi) after the polish */
@@ -255,35 +271,49 @@ static void add_slip(fricreg_aft *a, double fs, double al, double be)
         a->fout[i] += weight(i) * fs * a->gram[a->nc * i];
 }
 
-/* The angle in (al, be) where u = target, u monotone there (u(al), u(be) on either side). */
-static int slip_onset(fricreg_aft *a, const char *fn, const double *u, double target, double al,
-                      double be, double *th)
+/* u(theta) - target for GSL's Brent. */
+struct onset_probe {
+    int H;
+    const double *u;
+    double target;
+};
+
+static double onset_gap(double th, void *params)
 {
-    double *co = a->dcoef, big = fabs(u[0] - target);
-    co[0] = u[0] - target;
-    for (size_t j = 1; j < a->nc; j++) {
-        co[j] = u[j];
-        big = fmax(big, fabs(u[j]));
-    }
-    for (size_t j = 0; j < a->nc; j++)
-        co[j] /= big;
-    int status = trig_roots(a, fn, co);
-    if (status != FRICREG_OK)
-        return status;
-    /* the root nearest the interval, a real one first: near a reversal the root is nearly
-     * double (u − target has a second root just beyond it) and may come out complex */
-    double best = INFINITY, pick = al;
-    for (int k = 0; k < 2 * a->H; k++) {
-        double t = al + fmod(a->cand[k] - al + 2.0 * FR_TWO_PI, FR_TWO_PI);
-        double out = t <= be ? 0.0 : fmin(t - be, al + FR_TWO_PI - t);
-        double score = out + a->cim[k];
-        if (score < best) {
-            best = score;
-            pick = t <= be ? t : (t - be < al + FR_TWO_PI - t ? be : al);
+    const struct onset_probe *p = params;
+    double d;
+    return trig_eval(p->H, p->u, th, &d) - p->target;
+}
+
+/* The angle in [al, be] where u = target: u is monotone there in the direction dir (al, be
+ * consecutive reversals) and dir (u(be) − target) > 0, so the root is unique and bracketed.
+ * GSL's Brent on the bracket to a width of 4 DBL_EPSILON |theta| (at most 100 iterations:
+ * Brent's guarantee is about 4 log2(2 pi/eps) evaluations), then one Newton step. The
+ * function is finite (inputs checked) and the bracket valid, so GSL has nothing to report to
+ * its error handler. Where rounding puts u(al) beyond the target already, the slip starts at
+ * al. */
+static double slip_onset(fricreg_aft *a, const double *u, double target, int dir, double al,
+                         double be)
+{
+    struct onset_probe p = {a->H, u, target};
+    if (dir * onset_gap(al, &p) >= 0.0)
+        return al;
+    gsl_function F = {onset_gap, &p};
+    double lo = al, hi = be, th = 0.5 * (al + be);
+    if (gsl_root_fsolver_set(a->brent, &F, al, be) == GSL_SUCCESS)
+        for (int it = 0; it < 100; it++) {
+            if (gsl_root_fsolver_iterate(a->brent) != GSL_SUCCESS)
+                break;
+            th = gsl_root_fsolver_root(a->brent);
+            lo = gsl_root_fsolver_x_lower(a->brent);
+            hi = gsl_root_fsolver_x_upper(a->brent);
+            if (gsl_root_test_interval(lo, hi, 0.0, 4.0 * DBL_EPSILON) == GSL_SUCCESS)
+                break;
         }
-    }
-    *th = polish(a->H, co, pick, al, be);
-    return FRICREG_OK;
+    double *co = a->dcoef; /* u - target as coefficients, for the Newton step */
+    memcpy(co, u, a->nc * sizeof *co);
+    co[0] -= target;
+    return polish(a->H, co, th, lo, hi);
 }
 
 int fr_aft_exact(fricreg_aft *a, const char *fn, size_t ns, const double *k, const double *phi,
@@ -344,8 +374,7 @@ int fr_aft_exact(fricreg_aft *a, const char *fn, size_t ns, const double *k, con
                 add_stick(a, kt, u, wv, thw, al, be, want_jac);
                 continue;
             }
-            if ((status = slip_onset(a, fn, u, target, al, be, &th)) != FRICREG_OK)
-                return status;
+            th = slip_onset(a, u, target, dir, al, be);
             add_stick(a, kt, u, wv, thw, al, th, want_jac);
             add_slip(a, dir * mun, th, be);
             wv = ub - dir * r;

@@ -8,6 +8,7 @@
 #include <stddef.h>
 
 #include <gsl/gsl_poly.h>
+#include <gsl/gsl_roots.h>
 
 #include "base/error.h"
 #include "fricreg_aft.h"
@@ -18,11 +19,14 @@ struct fricreg_aft {
     size_t N;  /* samples of the sampled path, 0 if none */
 
     /* exact path */
-    double *qre, *qim; /* [(H+1)(2H+1)]: (1 + i t)^(H+h) (1 - i t)^(H-h), coefficient of t^k
-                          at [(2H+1) h + k]: the half-angle form of e^{i h phi} (aft_exact.c) */
+    double *qre, *qim; /* [(H+1)(2H+1)]: (1 + i t)^(D+h) (1 - i t)^(D-h), coefficient of t^k
+                          at [(2D+1) h + k]: the half-angle form of e^{i h phi} (aft_exact.c),
+                          for the degree D = table_H <= H of the last root solve */
+    int table_H;
     double *poly;      /* [2H+1] the real polynomial in t handed to GSL */
     double *roots;     /* [4H] its complex roots, packed (re, im) */
-    gsl_poly_complex_workspace ws; /* nc = 2H, matrix [(2H)^2], allocated here */
+    gsl_poly_complex_workspace ws; /* matrix [(2H)^2], allocated here; nc set per solve */
+    gsl_root_fsolver *brent;       /* GSL's Brent for the stick-slip onsets, allocated here */
     double *cand;      /* [2H] a root solve's angles (the real parts) */
     double *cim;       /* [2H] their imaginary parts' size, |Im theta| to first order */
     double *rev;       /* [2H] the reversals kept, sorted in [0, 2pi) */
@@ -50,6 +54,9 @@ struct fricreg_aft {
 
 /* The basis phi_j(theta) of the coefficient layout: 1, cos theta, sin theta, cos 2 theta, ... */
 void fr_aft_basis(int H, double theta, double *phi);
+
+/* The table qre, qim for degree D (1 <= D <= H); sets table_H. Uses cm and sm as scratch. */
+void fr_aft_half_angle_table(fricreg_aft *a, int D);
 
 /* Exact AFT of ns sliders (k[s], phi[s]) under u[nc] (checked), summed into aft->fout and,
  * when want_jac, aft->jout (both zeroed here). FRICREG_OK, or FRICREG_EINTEGRATOR with the
