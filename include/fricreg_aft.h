@@ -180,8 +180,8 @@ FRICREG_API int fricreg_aft_iwan_exact(fricreg_aft *aft, size_t ns, const double
  *  not 2H + 1; FRICREG_ENONFINITE as fricreg_aft_iwan_exact. Cost O(ns N H); no allocation.
  *  Since 1.6. */
 FRICREG_API int fricreg_aft_iwan_sampled(fricreg_aft *aft, size_t ns, const double k[],
-                                         const double phi[], size_t n, const double u[],
-                                         double f[], double jac[]);
+                                         const double phi[], size_t n, const double u[], double f[],
+                                         double jac[]);
 
 /** Status of the last failed call on aft. Returns that code, or FRICREG_OK if none (or aft
  *  NULL). A successful call does not clear it. Since 1.6. */

@@ -156,8 +156,8 @@ static int check(fricreg_aft *a, const char *fn, int sampled, size_t ns, const d
                        : k == NULL ? "k"
                                    : "phi");
     if (sampled && a->N == 0)
-        return fr_fail(a, FRICREG_EINVAL,
-                       "%s: the workspace was created with no samples (N = 0)", fn);
+        return fr_fail(a, FRICREG_EINVAL, "%s: the workspace was created with no samples (N = 0)",
+                       fn);
     if (n != a->nc)
         return fr_fail(a, FRICREG_ESIZE, "%s: n = %zu, the workspace has 2H + 1 = %zu", fn, n,
                        a->nc);
@@ -166,12 +166,12 @@ static int check(fricreg_aft *a, const char *fn, int sampled, size_t ns, const d
     double ksum = 0.0, usum = 0.0;
     for (size_t s = 0; s < ns; s++) {
         if (!isfinite(k[s]) || !isfinite(phi[s]))
-            return fr_fail(a, FRICREG_ENONFINITE, "%s: stiffness[%zu] = %g, bound[%zu] = %g", fn,
-                           s, k[s], s, phi[s]);
+            return fr_fail(a, FRICREG_ENONFINITE, "%s: stiffness[%zu] = %g, bound[%zu] = %g", fn, s,
+                           k[s], s, phi[s]);
         if (!(k[s] > 0.0) || !(phi[s] >= 0.0))
             return fr_fail(a, FRICREG_EINVAL,
-                           "%s: stiffness[%zu] = %g must be > 0, bound[%zu] = %g >= 0", fn, s,
-                           k[s], s, phi[s]);
+                           "%s: stiffness[%zu] = %g must be > 0, bound[%zu] = %g >= 0", fn, s, k[s],
+                           s, phi[s]);
         ksum += k[s];
     }
     for (size_t j = 0; j < n; j++) {
@@ -210,8 +210,8 @@ int fricreg_aft_jenkins_exact(fricreg_aft *aft, double kt, double mun, size_t n,
     return evaluate(aft, "jenkins_exact", 0, 1, &kt, &mun, n, u, f, jac);
 }
 
-int fricreg_aft_jenkins_sampled(fricreg_aft *aft, double kt, double mun, size_t n,
-                                const double u[], double f[], double jac[])
+int fricreg_aft_jenkins_sampled(fricreg_aft *aft, double kt, double mun, size_t n, const double u[],
+                                double f[], double jac[])
 {
     return evaluate(aft, "jenkins_sampled", 1, 1, &kt, &mun, n, u, f, jac);
 }

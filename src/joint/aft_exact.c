@@ -122,8 +122,8 @@ static int trig_roots(fricreg_aft *a, const char *fn, const double *co, int *cou
      * failure is QR's non-convergence */
     a->ws.nc = w - 1;
     if (gsl_poly_complex_solve(a->poly, w, &a->ws, a->roots) != GSL_SUCCESS)
-        return fr_fail(a, FRICREG_EINTEGRATOR,
-                       "%s: GSL's polynomial root solver did not converge", fn);
+        return fr_fail(a, FRICREG_EINTEGRATOR, "%s: GSL's polynomial root solver did not converge",
+                       fn);
     for (int k = 0; k < 2 * D; k++) {
         double x = a->roots[2 * k], y = a->roots[2 * k + 1];
         double th = fmod(ths + 2.0 * atan(x), FR_TWO_PI);
@@ -228,8 +228,8 @@ static void gram(fricreg_aft *a, double al, double be)
             double sgn = h > k ? 1.0 : (h < k ? -1.0 : 0.0);
             size_t ck = (size_t)(2 * k - 1), sk = (size_t)(2 * k);
             size_t ch = (size_t)(2 * h - 1), shh = (size_t)(2 * h);
-            G[w * ck + ch] = 0.5 * (cm[dd] + cm[h + k]);       /* cos k cos h */
-            G[w * sk + shh] = 0.5 * (cm[dd] - cm[h + k]);      /* sin k sin h */
+            G[w * ck + ch] = 0.5 * (cm[dd] + cm[h + k]);        /* cos k cos h */
+            G[w * sk + shh] = 0.5 * (cm[dd] - cm[h + k]);       /* sin k sin h */
             G[w * ck + shh] = 0.5 * (sm[h + k] + sgn * sm[dd]); /* cos k sin h */
             G[w * sk + ch] = 0.5 * (sm[h + k] - sgn * sm[dd]);  /* sin k cos h */
         }
@@ -243,8 +243,8 @@ static double weight(size_t i)
 }
 
 /* A stick piece [al, be], f = kt (u − w), the slider stopped at thw. */
-static void add_stick(fricreg_aft *a, double kt, const double *u, double wv, double thw,
-                      double al, double be, int want_jac)
+static void add_stick(fricreg_aft *a, double kt, const double *u, double wv, double thw, double al,
+                      double be, int want_jac)
 {
     size_t w = a->nc;
     gram(a, al, be);

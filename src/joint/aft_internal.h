@@ -23,18 +23,18 @@ struct fricreg_aft {
                           at [(2D+1) h + k]: the half-angle form of e^{i h phi} (aft_exact.c),
                           for the degree D = table_H <= H of the last root solve */
     int table_H;
-    double *poly;      /* [2H+1] the real polynomial in t handed to GSL */
-    double *roots;     /* [4H] its complex roots, packed (re, im) */
+    double *poly;                  /* [2H+1] the real polynomial in t handed to GSL */
+    double *roots;                 /* [4H] its complex roots, packed (re, im) */
     gsl_poly_complex_workspace ws; /* matrix [(2H)^2], allocated here; nc set per solve */
     gsl_root_fsolver *brent;       /* GSL's Brent for the stick-slip onsets, allocated here */
-    double *cand;      /* [2H] a root solve's angles (the real parts) */
-    double *cim;       /* [2H] their imaginary parts' size, |Im theta| to first order */
-    double *rev;       /* [2H] the reversals kept, sorted in [0, 2pi) */
-    int *rdir;         /* [2H] sign of u' after each reversal */
-    double *cm, *sm;   /* [2H+1] a piece's integrals of cos m theta, sin m theta */
-    double *gram;      /* [nc nc] a piece's integrals of phi_i phi_j */
-    double *phw;       /* [nc] the basis at the slider's anchor theta_w */
-    double *dcoef;     /* [nc] scratch: the coefficients of a trigonometric polynomial */
+    double *cand;                  /* [2H] a root solve's angles (the real parts) */
+    double *cim;                   /* [2H] their imaginary parts' size, |Im theta| to first order */
+    double *rev;                   /* [2H] the reversals kept, sorted in [0, 2pi) */
+    int *rdir;                     /* [2H] sign of u' after each reversal */
+    double *cm, *sm;               /* [2H+1] a piece's integrals of cos m theta, sin m theta */
+    double *gram;                  /* [nc nc] a piece's integrals of phi_i phi_j */
+    double *phw;                   /* [nc] the basis at the slider's anchor theta_w */
+    double *dcoef; /* [nc] scratch: the coefficients of a trigonometric polynomial */
 
     /* sampled path */
     double *ctab, *stab; /* [N] cos, sin of 2 pi n/N */

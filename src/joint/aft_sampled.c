@@ -75,8 +75,8 @@ static void march(fricreg_aft *a, double kt, double mun, size_t nmax, size_t nmi
     }
 }
 
-void fr_aft_sampled(fricreg_aft *a, size_t ns, const double *k, const double *phi,
-                    const double *u, int want_jac)
+void fr_aft_sampled(fricreg_aft *a, size_t ns, const double *k, const double *phi, const double *u,
+                    int want_jac)
 {
     size_t N = a->N, w = a->nc;
     int H = a->H;
@@ -105,8 +105,8 @@ void fr_aft_sampled(fricreg_aft *a, size_t ns, const double *k, const double *ph
         for (size_t j = 1; j < w; j++) {
             double *col = &a->ds[N * j];
             /* a constant u (nmax = nmin): the exact path's tangent, kt on the harmonics */
-            double centred =
-                nmax == nmin ? 0.0 : 0.5 * (basis_at(a, j, nmax) + basis_at(a, j, nmin));
+            double centred = nmax == nmin ? 0.0
+                                          : 0.5 * (basis_at(a, j, nmax) + basis_at(a, j, nmin));
             for (size_t n = 0; n < N; n++) {
                 if (a->ts[n] == 0.0)
                     continue;
