@@ -34,9 +34,11 @@
  *
  * Two paths:
  *   - exact (fricreg_aft_jenkins_exact, fricreg_aft_iwan_exact): the velocity reversals
- *     u'(θ) = 0 and the stick→slip points kt (u(θ) − w) = ±mun are roots of trigonometric
- *     polynomials of degree H, found as the roots of a degree-2H algebraic polynomial by GSL's
- *     gsl_poly_complex_solve (companion matrix, QR) and polished by Newton's method; f is then
+ *     u'(θ) = 0 are the roots of a trigonometric polynomial of degree H, found as the roots
+ *     of a degree-2H algebraic polynomial by GSL's gsl_poly_complex_solve (companion matrix,
+ *     QR) and polished by Newton's method; between two reversals u is monotone, so each
+ *     stick→slip point kt (u(θ) − w) = ±mun is the one root in that bracket (GSL's Brent to
+ *     4 ulps, then a Newton step); f is then
  *     integrated against cos kθ, sin kθ piece by piece in closed form (stick: kt (u − w), a
  *     trigonometric polynomial; slip: ±mun). No sampling error: the results are exact to
  *     rounding. The Jacobian is exact too: f is continuous at the switch points, so their
@@ -84,9 +86,9 @@ extern "C" {
  *  error. */
 typedef struct fricreg_aft fricreg_aft;
 
-/** Largest number of harmonics H of fricreg_aft_create. The exact path's polynomial in
- *  t = tan(θ/2) has binomial coefficients up to C(2H, H); beyond about 40 harmonics its roots
- *  lose digits (docs/joints.md). */
+/** Largest number of harmonics H of fricreg_aft_create: as far as the exact path is tested
+ *  against the sampled one (docs/joints.md); its polynomial in t = tan(θ/2) has binomial
+ *  coefficients up to C(2H, H). */
 #define FRICREG_AFT_MAX_HARMONICS 40
 
 /** Largest number of samples N of fricreg_aft_create, 2^24. */
@@ -133,7 +135,8 @@ FRICREG_API size_t fricreg_aft_samples(const fricreg_aft *aft);
  *  sum of |u[j]| overflows; FRICREG_EINVAL if kt <= 0 or mun < 0; FRICREG_EINTEGRATOR if GSL's
  *  polynomial root solver did not converge (30 QR iterations on one root; GSL then also calls
  *  its error handler: not seen on any input so far). All inputs are checked before anything
- *  is computed. Cost O(H^3) per velocity reversal (a root solve each); no allocation.
+ *  is computed. Cost O(H^3) for the reversals (one root solve), O(H^2) per reversal for the
+ *  rest; no allocation.
  *  Since 1.6. */
 FRICREG_API int fricreg_aft_jenkins_exact(fricreg_aft *aft, double kt, double mun, size_t n,
                                           const double u[], double f[], double jac[]);
@@ -164,8 +167,8 @@ FRICREG_API int fricreg_aft_jenkins_sampled(fricreg_aft *aft, double kt, double 
  *  Returns FRICREG_OK; FRICREG_ENULL if aft, k, phi, u or f is NULL; FRICREG_EINVAL if ns is
  *  0, some k[s] <= 0 or phi[s] < 0; FRICREG_ESIZE if n is not 2H + 1; FRICREG_ENONFINITE if
  *  some k[s], phi[s] or u[j] is NaN or infinite, or the sum of k[s] times the sum of |u[j]|
- *  overflows; FRICREG_EINTEGRATOR as fricreg_aft_jenkins_exact. Cost O(ns H^3) per reversal;
- *  no allocation. Since 1.6. */
+ *  overflows; FRICREG_EINTEGRATOR as fricreg_aft_jenkins_exact. Cost O(H^3) for the
+ *  reversals, O(ns H^2) per reversal for the rest; no allocation. Since 1.6. */
 FRICREG_API int fricreg_aft_iwan_exact(fricreg_aft *aft, size_t ns, const double k[],
                                        const double phi[], size_t n, const double u[], double f[],
                                        double jac[]);

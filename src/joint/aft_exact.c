@@ -25,8 +25,9 @@
  * operator's wiping-out property: the state every history reaches there once the range
  * exceeds 2r), so one period is the stabilized one. Between two reversals u is monotone with
  * direction s: the slider sticks, f = kt (u − w), until kt (u − w) = s mun, the root of
- * u(θ) − (w + s r) inside the interval, then slips, f = s mun, to the next reversal, where it
- * stops at w = u − s r.
+ * u(θ) − (w + s r) inside the interval (unique and bracketed there: GSL's Brent, not another
+ * companion solve, which cost five times as much at H = 7), then slips, f = s mun, to the next
+ * reversal, where it stops at w = u − s r.
  *
  * Integrals. On a piece [α, β] with centre μ and half-width δ,
  *     ∫ cos mθ = 2 cos(mμ) sin(mδ)/m,   ∫ sin mθ = 2 sin(mμ) sin(mδ)/m
