@@ -39,6 +39,7 @@
 #include <string.h>
 
 #include "fricreg.h"
+#include "fricreg_aft.h"
 #include "fricreg_disk_ctx.h"
 #include "fricreg_stribeck.h"
 #include "fricreg_exact.h"
@@ -84,6 +85,7 @@ struct fixture {
     fricreg_structure *st;
     fricreg_jenkins *jk;      /* one 2-D Jenkins element after a committed slip */
     fricreg_iwan *iw;         /* one 2-D Iwan element of 3 sliders after a committed slip */
+    fricreg_aft *aft;         /* an AFT workspace of H = 2 harmonics and N = 16 samples */
     double out[NOUT][OUTLEN]; /* outputs, all sentinel before the call */
     void *handle_out;         /* a create's out, sentinel before the call */
     double arr[8][OUTLEN];    /* input arrays of the call (perturbed copies) */
@@ -143,6 +145,8 @@ static void fixture_make(struct fixture *fx)
     ck_assert_int_eq(fricreg_iwan_trial(fx->iw, 1, u1, df, NULL), FRICREG_OK);
     ck_assert_int_eq(fricreg_iwan_commit(fx->iw), FRICREG_OK);
 
+    ck_assert_int_eq(fricreg_aft_create(2, 16, &fx->aft), FRICREG_OK);
+
     memset(fx->out, SENTINEL_BYTE, sizeof fx->out);
     memset(&fx->handle_out, SENTINEL_BYTE, sizeof fx->handle_out);
 }
@@ -156,6 +160,7 @@ static void fixture_free(struct fixture *fx)
     fricreg_structure_free(fx->st);
     fricreg_jenkins_free(fx->jk);
     fricreg_iwan_free(fx->iw);
+    fricreg_aft_free(fx->aft);
 }
 
 static int untouched(const void *p, size_t bytes)
@@ -817,6 +822,42 @@ static int w_iw_get_slider(void)
 /* ---- The table ---------------------------------------------------------------------------- */
 
 /* The object a call records its failures in (a const getter records none). */
+/* fricreg_aft.h: H = 2 harmonics (n = 5 coefficients), N = 16 samples */
+static const double AFT_U[5] = {0.25, 1.5, -0.5, 0.125, 0.375};
+static const double AFT_K[3] = {2.385, 1.0, 0.5}, AFT_PHI[3] = {0.5, 0.75, 0.125};
+static int w_aft_create(void)
+{
+    fricreg_aft **out = is(K_PTR, 0) ? NULL : (fricreg_aft **)&FX_->handle_out;
+    int status = fricreg_aft_create(N(0, 2), C(0, 16), out);
+    if (status == FRICREG_OK)
+        fricreg_aft_free(*out);
+    return status;
+}
+static fricreg_aft *AFT(void)
+{
+    return is(K_PTR, 9) ? NULL : FX_->aft;
+}
+static int w_aft_jenkins_exact(void)
+{
+    return fricreg_aft_jenkins_exact(AFT(), D(0, 2.385), D(1, 0.5), Z(0, 5), A(1, AFT_U, 5),
+                                     OUTD(2), OUTD(3));
+}
+static int w_aft_jenkins_sampled(void)
+{
+    return fricreg_aft_jenkins_sampled(AFT(), D(0, 2.385), D(1, 0.5), Z(0, 5), A(1, AFT_U, 5),
+                                       OUTD(2), OUTD(3));
+}
+static int w_aft_iwan_exact(void)
+{
+    return fricreg_aft_iwan_exact(AFT(), C(0, 3), A(1, AFT_K, 3), A(2, AFT_PHI, 3), Z(0, 5),
+                                  A(3, AFT_U, 5), OUTD(4), OUTD(5));
+}
+static int w_aft_iwan_sampled(void)
+{
+    return fricreg_aft_iwan_sampled(AFT(), C(0, 3), A(1, AFT_K, 3), A(2, AFT_PHI, 3), Z(0, 5),
+                                    A(3, AFT_U, 5), OUTD(4), OUTD(5));
+}
+
 enum owner {
     NONE,
     CTX_REC,
@@ -827,7 +868,8 @@ enum owner {
     CHAIN_REC,
     EXSTUCK_REC,
     JK_REC,
-    IW_REC
+    IW_REC,
+    AFT_REC
 };
 
 #define MAXARGS 12
@@ -1194,6 +1236,36 @@ static const struct row rows[] = {
      "0s",
      IW_REC,
      {HANDLE, SIZE(0, "ssss"), SIZE(1, "ssss"), PTR(1, "0")}},
+    /* fricreg_aft.h: H = 2, N = 16 (N = 0 allowed: the exact path only) */
+    {"fricreg_aft_create",
+     w_aft_create,
+     "0im",
+     NONE,
+     {INT(0, "iiii"), COUNT(0, "oiii"), PTR(0, "0")}},
+    {"fricreg_aft_jenkins_exact",
+     w_aft_jenkins_exact,
+     "0nist",
+     AFT_REC,
+     {HANDLE, DBL(0, "nnniion"), DBL(1, "nnniooo"), SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnooon"),
+      PTR(2, "0"), PTR(3, "o")}},
+    {"fricreg_aft_jenkins_sampled",
+     w_aft_jenkins_sampled,
+     "0nis",
+     AFT_REC,
+     {HANDLE, DBL(0, "nnniion"), DBL(1, "nnniooo"), SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnooon"),
+      PTR(2, "0"), PTR(3, "o")}},
+    {"fricreg_aft_iwan_exact",
+     w_aft_iwan_exact,
+     "0nist",
+     AFT_REC,
+     {HANDLE, COUNT(0, "ioxx"), PTR(1, "0"), ARR(1, "nniion"), PTR(2, "0"), ARR(2, "nniooo"),
+      SIZE(0, "ssss"), PTR(3, "0"), ARR(3, "nnooon"), PTR(4, "0"), PTR(5, "o")}},
+    {"fricreg_aft_iwan_sampled",
+     w_aft_iwan_sampled,
+     "0nis",
+     AFT_REC,
+     {HANDLE, COUNT(0, "ioxx"), PTR(1, "0"), ARR(1, "nniion"), PTR(2, "0"), ARR(2, "nniooo"),
+      SIZE(0, "ssss"), PTR(3, "0"), ARR(3, "nnooon"), PTR(4, "0"), PTR(5, "o")}},
     /* fricreg_exact.h */
     {"fricreg_exact_solve",
      w_exact_solve,
@@ -1455,6 +1527,7 @@ static int recorded(enum owner owner, const struct fixture *fx)
     case EXSTUCK_REC: return fricreg_exact_errcode(stuck_);
     case JK_REC: return fricreg_jenkins_errcode(fx->jk);
     case IW_REC: return fricreg_iwan_errcode(fx->iw);
+    case AFT_REC: return fricreg_aft_errcode(fx->aft);
     default: return -1;
     }
 }
@@ -1470,6 +1543,7 @@ static const char *message(enum owner owner, const struct fixture *fx)
     case EXSTUCK_REC: return fricreg_exact_errmsg(stuck_);
     case JK_REC: return fricreg_jenkins_errmsg(fx->jk);
     case IW_REC: return fricreg_iwan_errmsg(fx->iw);
+    case AFT_REC: return fricreg_aft_errmsg(fx->aft);
     default: return fricreg_structure_errmsg(fx->st);
     }
 }
@@ -1593,6 +1667,29 @@ static int e_law_eval_batch(int which, double x)
     const double mun[2] = {which == 2 ? x : 0.5, 0.25};
     return fricreg_law_eval_batch(which == 1 ? (int)x : FRICREG_LAW_QUINN, which == 0 ? x : 1e-3, 2,
                                   TWO, TWO, mun, OUTD(0));
+}
+static int e_aft_create(int which, double x)
+{
+    fricreg_aft *a = (fricreg_aft *)FX_->handle_out;
+    int H = which == 0 ? (int)x : 3;
+    size_t N = which == 0 ? 0 : (size_t)x;
+    int status = fricreg_aft_create(H, N, &a);
+    if (status == FRICREG_OK)
+        fricreg_aft_free(a);
+    else
+        memcpy(&FX_->handle_out, &a, sizeof a);
+    return status;
+}
+static int e_aft_eval(int which, double x)
+{
+    const double u[5] = {0.25, 1.5, -0.5, 0.125, 0.375};
+    double *f = FX_->out[0], *jac = FX_->out[1];
+    if (which == 0)
+        return fricreg_aft_jenkins_exact(FX_->aft, x, 0.5, 5, u, f, jac);
+    if (which == 1)
+        return fricreg_aft_jenkins_exact(FX_->aft, 2.385, x, 5, u, f, jac);
+    const double k[2] = {1.0, x}, phi[2] = {0.5, 0.25};
+    return fricreg_aft_iwan_sampled(FX_->aft, 2, k, phi, 5, u, f, jac);
 }
 static int e_ctx_create(int which, double x)
 {
@@ -2099,6 +2196,16 @@ START_TEST(edges_of_documented_ranges)
          below(-1e250), 'i', NONE},
         {"stribeck_disk_eval_batch f_eq <= 1e250", e_stribeck_disk_eval_batch, 6, 1e250,
          above(1e250), 'i', NONE},
+        /* fricreg_aft.h */
+        {"aft_create H >= 1", e_aft_create, 0, 1, 0, 'i', NONE},
+        {"aft_create H <= max", e_aft_create, 0, FRICREG_AFT_MAX_HARMONICS,
+         FRICREG_AFT_MAX_HARMONICS + 1, 'i', NONE},
+        {"aft_create N >= 2H + 2 (H = 3)", e_aft_create, 1, 8, 4, 'i', NONE},
+        {"aft_create N a power of two", e_aft_create, 1, 16, 24, 'i', NONE},
+        {"aft_create N <= 2^24", e_aft_create, 1, NAN, 2.0 * FRICREG_AFT_MAX_SAMPLES, 'i', NONE},
+        {"aft_jenkins_exact kt > 0", e_aft_eval, 0, TINY, 0.0, 'i', AFT_REC},
+        {"aft_jenkins_exact mun >= 0", e_aft_eval, 1, 0.0, -TINY, 'i', AFT_REC},
+        {"aft_iwan_sampled k > 0", e_aft_eval, 2, TINY, 0.0, 'i', AFT_REC},
         /* fricreg_exact.h */
         {"exact_create mun >= 0", e_exact_create, 0, 0.0, -TINY, 'i', NONE},
         {"exact_solve t_end within 10^6 cycles", e_exact_solve, 0, exact_cycles_edge(0),

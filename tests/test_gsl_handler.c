@@ -6,7 +6,9 @@
  * near 1e308), the tangent and stick stiffness, a 2-D context (dense W, well and badly
  * conditioned, and anisotropic blocks; eval at rest, in the band and sliding, the tangent,
  * Stribeck friction, refused W, a singular W), simulations of each system with explicit and
- * implicit GSL steppers (and a run the step guard refuses), the exact solver (solved, refused, near overflow), a
+ * implicit GSL steppers (and a run the step guard refuses), the AFT of a Jenkins element (its
+ * polynomial roots, Brent and FFT over random, degenerate and extreme displacements), the
+ * exact solver (solved, refused, near overflow), a
  * structure (indefinite and singular mass, Newmark, central difference, a GSL stepper) — and
  * after each call checks that the handler in place is still the program's
  * (gsl_set_error_handler returns the one it replaces) and that it was never called: fricreg's
@@ -24,6 +26,7 @@
 
 #include <gsl/gsl_errno.h>
 
+#include "fricreg_aft.h"
 #include "fricreg_disk_ctx.h"
 #include "fricreg_exact.h"
 #include "fricreg_sim.h"
@@ -80,6 +83,44 @@ static void setup(void)
     real_set_handler(users_handler);
     handler_calls = handler_swaps = 0;
 }
+
+/* The AFT's GSL calls (gsl_poly_complex_solve, Brent, the radix-2 FFT) over 400 random
+ * displacements at H = 1 ... 7, from 1e-300 to 1e300 in scale, and degenerate ones
+ * (constant, a flat inflection, a flat reversal, stuck, mun = 0). */
+START_TEST(aft)
+{
+    fricreg_aft *a = NULL;
+    ck_assert_int_eq(fricreg_aft_create(7, 64, &a), FRICREG_OK);
+    double u[15], f[15], jac[225];
+    unsigned long seed = 2385;
+    for (int t = 0; t < 400; t++) {
+        int H = 1 + t % 7;
+        double scale = t % 5 == 0 ? 1e-300 : (t % 5 == 1 ? 1e300 : 1.0);
+        for (int j = 0; j < 15; j++) {
+            seed = seed * 6364136223846793005UL + 1442695040888963407UL;
+            double r = (double)(seed >> 11) / 9007199254740992.0 * 2.0 - 1.0;
+            u[j] = j <= 2 * H ? scale * r / (1 + (j + 1) / 2) : 0.0;
+        }
+        if (t % 11 == 0) /* u' = (1 - cos)(cos + 1/2): a flat inflection at 0 */
+            for (int j = 0; j < 15; j++)
+                u[j] = j == 2 ? 0.5 * scale : (j == 4 ? -0.25 * scale : 0.0);
+        if (t % 13 == 0) /* u' = -(4/3) sin^3: flat reversals */
+            for (int j = 0; j < 15; j++)
+                u[j] = j == 1 ? scale : (j == 5 ? -scale / 9 : 0.0);
+        if (t % 17 == 0)
+            for (int j = 1; j < 15; j++)
+                u[j] = 0.0;
+        double kt = scale > 1.0 ? 1e-10 : 2.385, mun = t % 19 == 0 ? 0.0 : 0.7 * (t % 3 + 1);
+        mun *= scale < 1.0 ? 1e-300 : 1.0;
+        ck_assert_msg(fricreg_aft_jenkins_exact(a, kt, mun, 15, u, f, jac) == FRICREG_OK,
+                      "case %d: %s", t, fricreg_aft_errmsg(a));
+        assert_handler_intact("fricreg_aft_jenkins_exact");
+        ck_assert_int_eq(fricreg_aft_jenkins_sampled(a, kt, mun, 15, u, f, jac), FRICREG_OK);
+        assert_handler_intact("fricreg_aft_jenkins_sampled");
+    }
+    fricreg_aft_free(a);
+}
+END_TEST
 
 START_TEST(laws)
 {
@@ -458,6 +499,7 @@ static Suite *handler_suite(void)
     tcase_add_checked_fixture(tc, setup, NULL);
     tcase_set_timeout(tc, 120.0);
     tcase_add_test(tc, laws);
+    tcase_add_test(tc, aft);
     tcase_add_test(tc, contexts);
     tcase_add_test(tc, disk_contexts);
     tcase_add_test(tc, disk_contexts_refused_and_singular);

@@ -47,6 +47,7 @@
 #include <gsl/gsl_odeiv2.h>
 
 #include "fricreg.h"
+#include "fricreg_aft.h"
 #include "fricreg_disk_ctx.h"
 #include "fricreg_iwan.h"
 #include "fricreg_jenkins.h"
@@ -1420,6 +1421,53 @@ static const struct script iw_create = {"iwan create", 0,    NULL, 0,          0
                                         iw_open,       NULL, NULL, iw_observe, iw_errcode,
                                         iw_close};
 
+/* ---- AFT workspaces ------------------------------------------------------------------------- */
+
+/* create alone (its blocks, GSL's Brent among them): a failure leaves no handle; the view is
+ * both paths' coefficients and Jacobians of a Jenkins and an Iwan element. That the
+ * evaluations never allocate is test_aft_eval_does_not_allocate's. */
+static int aft_open(void **obj)
+{
+    fricreg_aft *a = SENTINEL;
+    int status = fricreg_aft_create(2, 16, &a);
+    if (status != FRICREG_OK && a != SENTINEL)
+        NOTE("aft_create failed (%d) but wrote its handle", status);
+    *obj = status == FRICREG_OK ? a : NULL;
+    return status;
+}
+
+static int aft_errcode(const void *obj)
+{
+    return fricreg_aft_errcode(obj);
+}
+
+static void aft_close(void *obj)
+{
+    fricreg_aft_free(obj);
+}
+
+static void aft_observe(void *obj, struct view *v)
+{
+    fricreg_aft *a = obj;
+    const double u[5] = {0.25, 1.5, -0.5, 0.125, 0.375}, k[2] = {2.385, 1.0},
+                 phi[2] = {0.7125, 0.25};
+    double f[5], jac[25];
+    see(v, fricreg_aft_jenkins_exact(a, 2.385, 0.7125, 5, u, f, jac));
+    see_all(v, f, 5);
+    see_all(v, jac, 25);
+    see(v, fricreg_aft_jenkins_sampled(a, 2.385, 0.7125, 5, u, f, jac));
+    see_all(v, f, 5);
+    see_all(v, jac, 25);
+    see(v, fricreg_aft_iwan_exact(a, 2, k, phi, 5, u, f, jac));
+    see_all(v, f, 5);
+    see(v, fricreg_aft_iwan_sampled(a, 2, k, phi, 5, u, f, jac));
+    see_all(v, f, 5);
+}
+
+static const struct script aft_create = {"aft create", 0,    NULL, 0,           0,
+                                         aft_open,     NULL, NULL, aft_observe, aft_errcode,
+                                         aft_close};
+
 /* ---- The tests ------------------------------------------------------------------------------- */
 
 START_TEST(test_ctx_create)
@@ -1590,6 +1638,35 @@ START_TEST(test_jenkins_trial_does_not_allocate)
     ck_assert_int_eq(commit, FRICREG_OK);
     ck_assert_msg(n_allocs == 0, "jenkins trial and commit made %ld allocations", n_allocs);
     fricreg_jenkins_free(j);
+}
+END_TEST
+
+START_TEST(test_aft_create)
+{
+    struct tally t = fail_each_allocation(&aft_create);
+    ck_assert_int_eq(t.enomem, t.cases);
+}
+END_TEST
+
+/* both paths' evaluations, with Jacobians, of a set-up workspace request no memory. */
+START_TEST(test_aft_eval_does_not_allocate)
+{
+    fricreg_aft *a = NULL;
+    ck_assert_int_eq(fricreg_aft_create(3, 64, &a), FRICREG_OK);
+    const double u[7] = {0.3, 1.2, -0.4, 0.1, 0.9, -0.7, 0.35}, k[2] = {2.385, 1.0},
+                 phi[2] = {0.7, 0.25};
+    double f[7], jac[49];
+    int st[4];
+    hook_arm(1);
+    st[0] = fricreg_aft_jenkins_exact(a, 2.385, 0.7, 7, u, f, jac);
+    st[1] = fricreg_aft_jenkins_sampled(a, 2.385, 0.7, 7, u, f, jac);
+    st[2] = fricreg_aft_iwan_exact(a, 2, k, phi, 7, u, f, jac);
+    st[3] = fricreg_aft_iwan_sampled(a, 2, k, phi, 7, u, f, jac);
+    hook_disarm();
+    for (int i = 0; i < 4; i++)
+        ck_assert_int_eq(st[i], FRICREG_OK);
+    ck_assert_msg(n_allocs == 0, "AFT evaluations made %ld allocations", n_allocs);
+    fricreg_aft_free(a);
 }
 END_TEST
 
@@ -1837,6 +1914,8 @@ static Suite *alloc_suite(void)
     tcase_add_test(core, test_jenkins_trial_does_not_allocate);
     tcase_add_test(core, test_iwan_create);
     tcase_add_test(core, test_iwan_trial_does_not_allocate);
+    tcase_add_test(core, test_aft_create);
+    tcase_add_test(core, test_aft_eval_does_not_allocate);
     tcase_add_loop_test(core, test_disk_ctx_set_coupling, 0, 2);
     tcase_add_test(core, test_disk_eval_does_not_allocate);
     tcase_add_test(core, test_ctx_set_stribeck);

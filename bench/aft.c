@@ -1,0 +1,106 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* aft.c — fricreg-bench-aft: the exact AFT of a Jenkins element against the sampled one
+ * (fricreg_aft.h, docs/joints.md section AFT).
+ *
+ * Error: the largest |f_sampled[j] − f_exact[j]|/mun over the coefficients, the envelope over
+ * eight phases ψ of u = 0.1 + 1.3 cos(θ − ψ) + 0.25 cos(3θ − 2ψ) (H = 3; kt = 2.385,
+ * mun = 0.7125: six reversals where the third harmonic makes minor loops, else two), at
+ * N = 2^5 … 2^12.
+ * Cost: CPU time per evaluation, with and without the Jacobian, of the exact AFT at H = 7 and
+ * of the sampled AFT at H = 7 and N = 2^5 … 2^12, on u with all seven harmonics
+ * (a_h = 1.3/h^2, b_h = −0.4/h^2: two to four reversals), each the median of 21 timings of
+ * REPS evaluations, and the ratio sampled/exact. Prints the two tables as Markdown. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include <fricreg_aft.h>
+
+#include "bench.h"
+
+enum { TIMINGS = 21, REPS = 400, PMIN = 5, PMAX = 12, PHASES = 8 };
+static const double KT = 2.385, MUN = 0.7125;
+
+static fricreg_aft *make(int H, size_t N)
+{
+    fricreg_aft *a = NULL;
+    int status = fricreg_aft_create(H, N, &a);
+    if (status != FRICREG_OK) {
+        fprintf(stderr, "fricreg_aft_create(%d, %zu): %s\n", H, N, fricreg_strerror(status));
+        exit(1);
+    }
+    return a;
+}
+
+static void error_table(void)
+{
+    puts("| N | max error / mun | N^2 error / mun |");
+    puts("|---|---|---|");
+    for (int p = PMIN; p <= PMAX; p++) {
+        size_t N = (size_t)1 << p;
+        fricreg_aft *a = make(3, N);
+        double e = 0.0;
+        for (int c = 0; c < PHASES; c++) {
+            double psi = 0.3 + 0.61 * c, fe[7], fs[7];
+            double u[7] = {0.1, 1.3 * cos(psi),      1.3 * sin(psi),     0,
+                           0,   0.25 * cos(2 * psi), 0.25 * sin(2 * psi)};
+            if (fricreg_aft_jenkins_exact(a, KT, MUN, 7, u, fe, NULL) != FRICREG_OK ||
+                fricreg_aft_jenkins_sampled(a, KT, MUN, 7, u, fs, NULL) != FRICREG_OK) {
+                fprintf(stderr, "AFT failed: %s\n", fricreg_aft_errmsg(a));
+                exit(1);
+            }
+            for (int j = 0; j < 7; j++)
+                e = fmax(e, fabs(fs[j] - fe[j]) / MUN);
+        }
+        printf("| 2^%d | %.2e | %.2f |\n", p, e, e * (double)N * (double)N);
+        fricreg_aft_free(a);
+    }
+}
+
+/* Median CPU seconds per evaluation. */
+static double per_eval(fricreg_aft *a, int sampled, int with_jac, const double *u)
+{
+    double t[TIMINGS], f[15], jac[225];
+    for (int k = 0; k < TIMINGS; k++) {
+        double t0 = bench_cpu_seconds();
+        for (int r = 0; r < REPS; r++) {
+            int st = sampled
+                         ? fricreg_aft_jenkins_sampled(a, KT, MUN, 15, u, f, with_jac ? jac : NULL)
+                         : fricreg_aft_jenkins_exact(a, KT, MUN, 15, u, f, with_jac ? jac : NULL);
+            if (st != FRICREG_OK) {
+                fprintf(stderr, "AFT failed: %s\n", fricreg_aft_errmsg(a));
+                exit(1);
+            }
+        }
+        t[k] = (bench_cpu_seconds() - t0) / REPS;
+    }
+    return bench_median(t, TIMINGS);
+}
+
+static void cost_table(void)
+{
+    double u[15] = {0.1};
+    for (int h = 1; h <= 7; h++) {
+        u[2 * h - 1] = 1.3 / (h * h);
+        u[2 * h] = -0.4 / (h * h);
+    }
+    fricreg_aft *ex = make(7, 0);
+    double e0 = per_eval(ex, 0, 0, u), e1 = per_eval(ex, 0, 1, u);
+    fricreg_aft_free(ex);
+    printf("\nexact, H = 7: %.1f us (f), %.1f us (f and Jacobian)\n\n", 1e6 * e0, 1e6 * e1);
+    puts("| N | sampled f (us) | sampled/exact | sampled f, Jacobian (us) | sampled/exact |");
+    puts("|---|---|---|---|---|");
+    for (int p = PMIN; p <= PMAX; p++) {
+        fricreg_aft *a = make(7, (size_t)1 << p);
+        double s0 = per_eval(a, 1, 0, u), s1 = per_eval(a, 1, 1, u);
+        printf("| 2^%d | %.1f | %.2f | %.1f | %.2f |\n", p, 1e6 * s0, s0 / e0, 1e6 * s1, s1 / e1);
+        fricreg_aft_free(a);
+    }
+}
+
+int main(void)
+{
+    error_table();
+    cost_table();
+    return 0;
+}

@@ -1,0 +1,209 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/**
+ * \file
+ * fricreg_aft.h — the alternating frequency–time (AFT) method for the 1-D Jenkins and Iwan
+ * elements: from the Fourier coefficients of a periodic relative displacement, the Fourier
+ * coefficients of the element force of the stabilized (periodic) hysteresis and their
+ * Jacobian, for harmonic balance. Beyond the paper: the frequency-domain side of "joints"
+ * (docs/joints.md, section AFT). AFT after M. Krack and J. Gross, "Harmonic Balance for
+ * Nonlinear Vibration Problems", Springer 2019, Sec. 3.3 (their NLvib's elasticDryFriction,
+ * the Jenkins element, is sampled and marched over two periods).
+ *
+ * Convention, for every function: the displacement over one period, θ in [0, 2π), is
+ *
+ *     u(θ) = u0 + sum_{h=1..H} (a_h cos hθ + b_h sin hθ)
+ *
+ * given as the 2H + 1 coefficients u[] = (u0, a_1, b_1, a_2, b_2, ..., a_H, b_H); the force
+ * f(θ) comes back in the same layout, f[] = (f0, fa_1, fb_1, ..., fa_H, fb_H), with
+ * f0 = (1/2π) ∫ f dθ, fa_h = (1/π) ∫ f cos hθ dθ, fb_h = (1/π) ∫ f sin hθ dθ (harmonics
+ * above H are dropped). The Jacobian jac[(2H+1)(2H+1)] is row-major, jac[(2H+1) i + j] =
+ * ∂f[i]/∂u[j] (Fortran reading it column-major sees its transpose). The element is that of
+ * fricreg_jenkins.h in 1-D: f = kt (u − w) with the slider w, |f| <= mun, of the same sign
+ * as fricreg_jenkins_trial's (the spring force: u = A cos θ gives fa_1 > 0, fb_1 < 0). The
+ * energy dissipated per period is ∮ f du = π sum_h h (b_h fa_h − a_h fb_h) >= 0.
+ *
+ * The stabilized hysteresis. With r = mun/kt and the range of u beyond the slip
+ * (kt (max u − min u) > 2 mun), the element slips in every period and its periodic response is
+ * unique: at the global maximum of u the slider sits at w = max u − r (the play operator's
+ * wiping-out property), whatever the initial state. Below it (kt (max u − min u) <= 2 mun) the
+ * element sticks after a transient and the periodic response depends on the initial state;
+ * this header's rule is the centred slider w = (max u + min u)/2: the limit of the slipping
+ * response as the range falls to 2 r (so f is continuous in the coefficients across the
+ * threshold), and invariant under a time shift of u (a start at θ = 0, as NLvib's, is not).
+ * A constant u gives f = 0 and the stick tangent kt on the harmonics.
+ *
+ * Two paths:
+ *   - exact (fricreg_aft_jenkins_exact, fricreg_aft_iwan_exact): the velocity reversals
+ *     u'(θ) = 0 are the roots of a trigonometric polynomial of degree H, found as the roots
+ *     of a degree-2H algebraic polynomial by GSL's gsl_poly_complex_solve (companion matrix,
+ *     QR) and polished by Newton's method; between two reversals u is monotone, so each
+ *     stick→slip point kt (u(θ) − w) = ±mun is the one root in that bracket (GSL's Brent to
+ *     4 ulps, then a Newton step); f is then
+ *     integrated against cos kθ, sin kθ piece by piece in closed form (stick: kt (u − w), a
+ *     trigonometric polynomial; slip: ±mun). No sampling error: the results are exact to
+ *     rounding. The Jacobian is exact too: f is continuous at the switch points, so their
+ *     motion adds nothing; in a stick ∂f/∂u[j] = kt (φ_j(θ) − φ_j(θ_w)), θ_w the reversal where
+ *     the slider stopped (u'(θ_w) = 0), and in a slip 0.
+ *   - sampled (fricreg_aft_jenkins_sampled, fricreg_aft_iwan_sampled): u at N equidistant
+ *     points, the return mapping of fricreg_jenkins.h marched over one period from the
+ *     stabilized state at the sampled maximum (the state a march of any number of periods
+ *     reaches there, so the march is already periodic), and the coefficients by GSL's real
+ *     radix-2 FFT. Its error comes from the kinks of f (a stick–slip switch inside a sampling
+ *     interval): O(N^-2) for the coefficients (docs/joints.md measures it). The Jacobian is the
+ *     chain rule through the sampled return mapping (tangent kt in a stick, 0 in a slip) and
+ *     the DFT. The sampled path is the one to extend to laws without a closed form (a
+ *     velocity-only law of fricreg.h needs only f(u'(θ)) at the samples); here it serves the
+ *     Jenkins and Iwan elements, beside the exact path, for comparison.
+ * Lift-off (a normal displacement) and 2-D elements are not supported by either path yet.
+ *
+ * One object for both paths, with the harmonics H and the samples N fixed at create: it holds
+ * every buffer an evaluation needs (the companion matrix, the roots, the pieces, the samples,
+ * the FFT's array and the results before they are copied out), so an evaluation never
+ * allocates (GSL's workspace rule), and the element parameters are arguments of each call
+ * (an HB Newton loop changes u, seldom kt and mun, and one object serves every element of a
+ * model). Conventions are those of fricreg.h: int results are fricreg_status codes, nothing is
+ * printed, a failed call leaves the caller's arrays untouched, one object per thread. The
+ * object keeps the status and a message of its last failed call (fricreg_aft_errcode,
+ * fricreg_aft_errmsg, fricreg_aft_errmsg_copy). Since 1.6 (FRICREG_1.6).
+ */
+#ifndef FRICREG_AFT_H
+#define FRICREG_AFT_H
+
+#include "fricreg.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** \defgroup aft Joints: the alternating frequency–time method (fricreg_aft)
+ *  An opaque workspace for the AFT of the 1-D Jenkins and Iwan elements: the Fourier
+ *  coefficients of the stabilized hysteresis force and their Jacobian, exactly (switch points
+ *  as roots of trigonometric polynomials, pieces integrated in closed form) or sampled (the
+ *  return mapping at N points and GSL's FFT), docs/joints.md.
+ *  \{ */
+
+/** Opaque AFT workspace for H harmonics and N samples: every buffer of both paths, the last
+ *  error. */
+typedef struct fricreg_aft fricreg_aft;
+
+/** Largest number of harmonics H of fricreg_aft_create: as far as the exact path is tested
+ *  against the sampled one (docs/joints.md); its polynomial in t = tan(θ/2) has binomial
+ *  coefficients up to C(2H, H). */
+#define FRICREG_AFT_MAX_HARMONICS 40
+
+/** Largest number of samples N of fricreg_aft_create, 2^24. */
+#define FRICREG_AFT_MAX_SAMPLES 16777216
+
+/** Create an AFT workspace for harmonics 0..H and, for the sampled path, N samples a period.
+ *
+ *  All memory is allocated here: O(H^2 + N H) doubles.
+ *
+ *  harmonics  H, 1 <= H <= FRICREG_AFT_MAX_HARMONICS.
+ *  samples    N: 0 (the exact path only: the sampled functions then fail with
+ *             FRICREG_EINVAL), or a power of two with 2H + 2 <= N <= FRICREG_AFT_MAX_SAMPLES
+ *             (every harmonic below the Nyquist frequency).
+ *  out        out: the new object, released with fricreg_aft_free. Written only on success.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if out is NULL; FRICREG_EINVAL if H or N is out of its
+ *  range or N is not a power of two; FRICREG_ENOMEM. With no object to keep it, a failure has
+ *  no message beyond its status, as for fricreg_ctx_create. Since 1.6. */
+FRICREG_API int fricreg_aft_create(int harmonics, size_t samples, fricreg_aft **out);
+
+/** Release the workspace. fricreg_aft_free(NULL) does nothing. Since 1.6. */
+FRICREG_API void fricreg_aft_free(fricreg_aft *aft);
+
+/** Number of harmonics H; 0 if aft is NULL. Returns that number, not a status. Since 1.6. */
+FRICREG_API int fricreg_aft_harmonics(const fricreg_aft *aft);
+
+/** Number of samples N of the sampled path (0: none); 0 if aft is NULL. Returns that number,
+ *  not a status. Since 1.6. */
+FRICREG_API size_t fricreg_aft_samples(const fricreg_aft *aft);
+
+/** Exact AFT of one 1-D Jenkins element: the Fourier coefficients of the force of the
+ *  stabilized hysteresis under the displacement u, and their Jacobian (header comment).
+ *
+ *  kt     tangential stiffness > 0 (finite), force per unit displacement.
+ *  mun    slip bound mu N >= 0 (finite), force units; 0 gives f = 0 and jac = 0.
+ *  n      must equal 2H + 1.
+ *  u[n]   displacement coefficients (u0, a_1, b_1, ..., a_H, b_H), finite, displacement units.
+ *  f[n]   out: force coefficients (f0, fa_1, fb_1, ..., fa_H, fb_H), force units. May alias u.
+ *  jac[n n]  out, or NULL if not wanted: ∂f[i]/∂u[j] at jac[n i + j] (row-major), force per
+ *         unit displacement.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if aft, u or f is NULL; FRICREG_ESIZE if n is not
+ *  2H + 1; FRICREG_ENONFINITE if kt, mun or some u[j] is NaN or infinite, or 8 kt times
+ *  the sum of |u[j]| overflows; FRICREG_EINVAL if kt <= 0 or mun < 0; FRICREG_EINTEGRATOR if GSL's
+ *  polynomial root solver did not converge (30 QR iterations on one root; GSL then also calls
+ *  its error handler: not seen on any input so far). All inputs are checked before anything
+ *  is computed. Cost O(H^3) for the reversals (one root solve), O(H^2) per reversal for the
+ *  rest; no allocation.
+ *  Since 1.6. */
+FRICREG_API int fricreg_aft_jenkins_exact(fricreg_aft *aft, double kt, double mun, size_t n,
+                                          const double u[], double f[], double jac[]);
+
+/** Sampled AFT of one 1-D Jenkins element: as fricreg_aft_jenkins_exact, from the return
+ *  mapping at the object's N samples and GSL's FFT (header comment); the results differ from
+ *  the exact ones by the sampling error, O(N^-2).
+ *
+ *  Arguments, layouts and units as fricreg_aft_jenkins_exact.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if aft, u or f is NULL; FRICREG_EINVAL if the object was
+ *  created with N = 0, kt <= 0 or mun < 0; FRICREG_ESIZE if n is not 2H + 1;
+ *  FRICREG_ENONFINITE if kt, mun or some u[j] is NaN or infinite, or 8 kt times the sum
+ *  of |u[j]| overflows. All inputs are checked before anything is computed. Cost O(N H) for f,
+ *  O(N H log N) with jac; no allocation. Since 1.6. */
+FRICREG_API int fricreg_aft_jenkins_sampled(fricreg_aft *aft, double kt, double mun, size_t n,
+                                            const double u[], double f[], double jac[]);
+
+/** Exact AFT of one 1-D Iwan element of ns sliders in parallel (fricreg_iwan.h: slider s a
+ *  Jenkins element of stiffness k[s] and slip force phi[s]): the sum of the sliders' exact
+ *  AFTs, with the velocity reversals, which u alone decides, found once.
+ *
+ *  ns       number of sliders, >= 1.
+ *  k[ns]    slider stiffnesses > 0 (finite), force per unit displacement.
+ *  phi[ns]  slip forces >= 0 (finite), force units.
+ *  n, u, f, jac  as fricreg_aft_jenkins_exact.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if aft, k, phi, u or f is NULL; FRICREG_EINVAL if ns is
+ *  0, some k[s] <= 0 or phi[s] < 0; FRICREG_ESIZE if n is not 2H + 1; FRICREG_ENONFINITE if
+ *  some k[s], phi[s] or u[j] is NaN or infinite, or 8 times the sum of k[s] times the
+ *  sum of |u[j]| overflows; FRICREG_EINTEGRATOR as fricreg_aft_jenkins_exact. Cost O(H^3) for the
+ *  reversals, O(ns H^2) per reversal for the rest; no allocation. Since 1.6. */
+FRICREG_API int fricreg_aft_iwan_exact(fricreg_aft *aft, size_t ns, const double k[],
+                                       const double phi[], size_t n, const double u[], double f[],
+                                       double jac[]);
+
+/** Sampled AFT of one 1-D Iwan element: the sum of its sliders' sampled AFTs
+ *  (fricreg_aft_jenkins_sampled), one FFT for the sum.
+ *
+ *  Arguments as fricreg_aft_iwan_exact.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if aft, k, phi, u or f is NULL; FRICREG_EINVAL if the
+ *  object was created with N = 0, ns is 0, some k[s] <= 0 or phi[s] < 0; FRICREG_ESIZE if n is
+ *  not 2H + 1; FRICREG_ENONFINITE as fricreg_aft_iwan_exact. Cost O(ns N H); no allocation.
+ *  Since 1.6. */
+FRICREG_API int fricreg_aft_iwan_sampled(fricreg_aft *aft, size_t ns, const double k[],
+                                         const double phi[], size_t n, const double u[], double f[],
+                                         double jac[]);
+
+/** Status of the last failed call on aft. Returns that code, or FRICREG_OK if none (or aft
+ *  NULL). A successful call does not clear it. Since 1.6. */
+FRICREG_API int fricreg_aft_errcode(const fricreg_aft *aft);
+
+/** Message of the last failed call on aft: names the function, the argument and its value.
+ *  "" if none; "NULL AFT workspace" if aft is NULL. Owned by aft, valid until its next call.
+ *  Since 1.6. */
+FRICREG_API const char *fricreg_aft_errmsg(const fricreg_aft *aft);
+
+/** Copy the last error message into buf[len], NUL-terminated and truncated to fit (for
+ *  Fortran). Returns the full message length (excluding the NUL), as snprintf does; 0 and
+ *  nothing written if buf is NULL or len is 0. Since 1.6. */
+FRICREG_API size_t fricreg_aft_errmsg_copy(const fricreg_aft *aft, char *buf, size_t len);
+
+/** \} */
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FRICREG_AFT_H */

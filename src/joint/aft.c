@@ -1,0 +1,245 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* aft.c — the AFT workspace (fricreg_aft.h): create and free, the one input check of the
+ * four evaluations, and the copy-out that leaves the caller's arrays untouched on failure.
+ * The two paths are aft_exact.c and aft_sampled.c. */
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "aft_internal.h"
+
+void fr_aft_basis(int H, double theta, double *phi)
+{
+    phi[0] = 1.0;
+    for (int h = 1; h <= H; h++) {
+        phi[2 * h - 1] = cos(h * theta);
+        phi[2 * h] = sin(h * theta);
+    }
+}
+
+void fr_aft_half_angle_table(fricreg_aft *a, int H)
+{
+    size_t w = (size_t)(2 * H + 1);
+    double *b1 = a->cm, *b2 = a->sm; /* rows H + h and H - h of Pascal's triangle */
+    for (int h = 0; h <= H; h++) {
+        double *re = &a->qre[w * (size_t)h], *im = &a->qim[w * (size_t)h];
+        memset(re, 0, w * sizeof *re);
+        memset(im, 0, w * sizeof *im);
+        int m1 = H + h, m2 = H - h;
+        for (int k = 0; k <= m2; k++)
+            b2[k] = k == 0 ? 1.0 : b2[k - 1] * (double)(m2 - k + 1) / k;
+        for (int k = 0; k <= m1; k++) {
+            b1[k] = k == 0 ? 1.0 : b1[k - 1] * (double)(m1 - k + 1) / k;
+            for (int l = 0; l <= m2; l++) {
+                /* the coefficient of t^(k+l): C(m1, k) i^k C(m2, l) (-i)^l, i^(k+l) (-1)^l */
+                int p = (k + l) % 4;
+                double c = b1[k] * b2[l] * ((l % 2) ? -1.0 : 1.0);
+                if (p == 0)
+                    re[k + l] += c;
+                else if (p == 1)
+                    im[k + l] += c;
+                else if (p == 2)
+                    re[k + l] -= c;
+                else
+                    im[k + l] -= c;
+            }
+        }
+    }
+    a->table_H = H;
+}
+
+int fricreg_aft_create(int harmonics, size_t samples, fricreg_aft **out)
+{
+    if (out == NULL)
+        return FRICREG_ENULL;
+    if (harmonics < 1 || harmonics > FRICREG_AFT_MAX_HARMONICS)
+        return FRICREG_EINVAL;
+    size_t H = (size_t)harmonics, nc = 2 * H + 1, N = samples;
+    if (N != 0 && (N < nc + 1 || N > FRICREG_AFT_MAX_SAMPLES || (N & (N - 1)) != 0))
+        return FRICREG_EINVAL;
+    fricreg_aft *a = calloc(1, sizeof *a);
+    if (a == NULL)
+        return FRICREG_ENOMEM;
+    a->H = harmonics;
+    a->nc = nc;
+    a->N = N;
+    a->qre = malloc(2 * (H + 1) * nc * sizeof(double));
+    a->poly = malloc(nc * sizeof(double));
+    a->roots = malloc(8 * H * sizeof(double));
+    a->ws.nc = 2 * H;
+    a->ws.matrix = malloc(4 * H * H * sizeof(double));
+    a->cand = malloc(6 * H * sizeof(double));
+    a->rdir = malloc(2 * H * sizeof(int));
+    a->cm = malloc((2 * nc + nc * nc + 2 * nc) * sizeof(double));
+    a->fout = malloc((nc + nc * nc) * sizeof(double));
+    /* gsl_root_fsolver_alloc's two mallocs, done here: GSL would report a failed one to its
+     * error handler (as in exact.c) */
+    a->brent = malloc(sizeof *a->brent);
+    void *state = malloc(gsl_root_fsolver_brent->size);
+    if (a->brent != NULL)
+        *a->brent = (gsl_root_fsolver){.type = gsl_root_fsolver_brent, .state = state};
+    if (N != 0) {
+        a->ctab = malloc((5 * N + nc * N) * sizeof(double));
+        a->anchor = malloc(N * sizeof(size_t));
+    }
+    if (a->brent == NULL)
+        free(state);
+    if (!a->qre || !a->poly || !a->roots || !a->ws.matrix || !a->cand || !a->rdir || !a->cm ||
+        !a->fout || !a->brent || !state || (N != 0 && (!a->ctab || !a->anchor))) {
+        fricreg_aft_free(a);
+        return FRICREG_ENOMEM;
+    }
+    a->qim = a->qre + (H + 1) * nc;
+    a->cim = a->cand + 2 * H;
+    a->rev = a->cand + 4 * H;
+    a->sm = a->cm + nc;
+    a->gram = a->sm + nc;
+    a->phw = a->gram + nc * nc;
+    a->dcoef = a->phw + nc;
+    a->jout = a->fout + nc;
+    fr_aft_half_angle_table(a, harmonics);
+    if (N != 0) {
+        a->stab = a->ctab + N;
+        a->us = a->stab + N;
+        a->fs = a->us + N;
+        a->ts = a->fs + N;
+        a->ds = a->ts + N;
+        for (size_t n = 0; n < N; n++) {
+            double th = 6.283185307179586 * (double)n / (double)N;
+            a->ctab[n] = cos(th);
+            a->stab[n] = sin(th);
+        }
+    }
+    *out = a;
+    return FRICREG_OK;
+}
+
+void fricreg_aft_free(fricreg_aft *aft)
+{
+    if (aft == NULL)
+        return;
+    free(aft->qre);
+    free(aft->poly);
+    free(aft->roots);
+    free(aft->ws.matrix);
+    free(aft->cand);
+    free(aft->rdir);
+    free(aft->cm);
+    free(aft->fout);
+    free(aft->ctab);
+    free(aft->anchor);
+    if (aft->brent != NULL)
+        free(aft->brent->state);
+    free(aft->brent);
+    free(aft);
+}
+
+int fricreg_aft_harmonics(const fricreg_aft *aft)
+{
+    return aft ? aft->H : 0;
+}
+
+size_t fricreg_aft_samples(const fricreg_aft *aft)
+{
+    return aft ? aft->N : 0;
+}
+
+/* The checks every evaluation shares: the pointers, n, the sliders and u, in that order. */
+static int check(fricreg_aft *a, const char *fn, int sampled, size_t ns, const double *k,
+                 const double *phi, size_t n, const double *u, const double *f)
+{
+    if (k == NULL || phi == NULL || u == NULL || f == NULL)
+        return fr_fail(a, FRICREG_ENULL, "%s: %s is NULL", fn,
+                       u == NULL   ? "u"
+                       : f == NULL ? "f"
+                       : k == NULL ? "k"
+                                   : "phi");
+    if (sampled && a->N == 0)
+        return fr_fail(a, FRICREG_EINVAL, "%s: the workspace was created with no samples (N = 0)",
+                       fn);
+    if (n != a->nc)
+        return fr_fail(a, FRICREG_ESIZE, "%s: n = %zu, the workspace has 2H + 1 = %zu", fn, n,
+                       a->nc);
+    if (ns == 0)
+        return fr_fail(a, FRICREG_EINVAL, "%s: ns = 0 sliders", fn);
+    double ksum = 0.0, usum = 0.0;
+    for (size_t s = 0; s < ns; s++) {
+        if (!isfinite(k[s]) || !isfinite(phi[s]))
+            return fr_fail(a, FRICREG_ENONFINITE, "%s: stiffness[%zu] = %g, bound[%zu] = %g", fn, s,
+                           k[s], s, phi[s]);
+        if (!(k[s] > 0.0) || !(phi[s] >= 0.0))
+            return fr_fail(a, FRICREG_EINVAL,
+                           "%s: stiffness[%zu] = %g must be > 0, bound[%zu] = %g >= 0", fn, s, k[s],
+                           s, phi[s]);
+        ksum += k[s];
+    }
+    for (size_t j = 0; j < n; j++) {
+        if (!isfinite(u[j]))
+            return fr_fail(a, FRICREG_ENONFINITE, "%s: u[%zu] = %g", fn, j, u[j]);
+        usum += fabs(u[j]);
+    }
+    /* the pieces' integrals reach 2 pi kt sum |u[j]| before they cancel to |f| <= mun */
+    if (!isfinite(8.0 * ksum * usum))
+        return fr_fail(a, FRICREG_ENONFINITE,
+                       "%s: 8 x stiffness %g x the sum of |u[j]| %g overflows", fn, ksum, usum);
+    return FRICREG_OK;
+}
+
+/* Checks, computes into the workspace, copies out. */
+static int evaluate(fricreg_aft *a, const char *fn, int sampled, size_t ns, const double *k,
+                    const double *phi, size_t n, const double *u, double *f, double *jac)
+{
+    if (a == NULL)
+        return FRICREG_ENULL;
+    int status = check(a, fn, sampled, ns, k, phi, n, u, f);
+    if (status != FRICREG_OK)
+        return status;
+    if (sampled)
+        fr_aft_sampled(a, ns, k, phi, u, jac != NULL);
+    else if ((status = fr_aft_exact(a, fn, ns, k, phi, u, jac != NULL)) != FRICREG_OK)
+        return status;
+    memcpy(f, a->fout, n * sizeof *f);
+    if (jac != NULL)
+        memcpy(jac, a->jout, n * n * sizeof *jac);
+    return FRICREG_OK;
+}
+
+int fricreg_aft_jenkins_exact(fricreg_aft *aft, double kt, double mun, size_t n, const double u[],
+                              double f[], double jac[])
+{
+    return evaluate(aft, "jenkins_exact", 0, 1, &kt, &mun, n, u, f, jac);
+}
+
+int fricreg_aft_jenkins_sampled(fricreg_aft *aft, double kt, double mun, size_t n, const double u[],
+                                double f[], double jac[])
+{
+    return evaluate(aft, "jenkins_sampled", 1, 1, &kt, &mun, n, u, f, jac);
+}
+
+int fricreg_aft_iwan_exact(fricreg_aft *aft, size_t ns, const double k[], const double phi[],
+                           size_t n, const double u[], double f[], double jac[])
+{
+    return evaluate(aft, "iwan_exact", 0, ns, k, phi, n, u, f, jac);
+}
+
+int fricreg_aft_iwan_sampled(fricreg_aft *aft, size_t ns, const double k[], const double phi[],
+                             size_t n, const double u[], double f[], double jac[])
+{
+    return evaluate(aft, "iwan_sampled", 1, ns, k, phi, n, u, f, jac);
+}
+
+int fricreg_aft_errcode(const fricreg_aft *aft)
+{
+    return aft ? aft->err.code : FRICREG_OK;
+}
+
+const char *fricreg_aft_errmsg(const fricreg_aft *aft)
+{
+    return aft ? aft->err.msg : "NULL AFT workspace";
+}
+
+size_t fricreg_aft_errmsg_copy(const fricreg_aft *aft, char *buf, size_t len)
+{
+    return fr_error_copy(fricreg_aft_errmsg(aft), buf, len);
+}

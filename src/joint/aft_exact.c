@@ -1,0 +1,386 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* aft_exact.c — the exact AFT of 1-D Jenkins sliders (fricreg_aft.h): switch points as roots
+ * of trigonometric polynomials, the force integrated piece by piece in closed form.
+ *
+ * Roots. A real trigonometric polynomial g(θ) = c0 + sum_h (α_h cos hθ + β_h sin hθ) of
+ * degree H is z^-H times a polynomial of degree 2H in z = e^{iθ}, whose roots on the unit
+ * circle are g's real roots; its coefficients are complex, and GSL's gsl_poly_complex_solve
+ * takes real ones. The half-angle substitution t = tan((θ − θs)/2) maps the same unit-circle
+ * roots onto the real roots of a real polynomial of degree 2H,
+ *
+ *     P(t) = (1 + t^2)^H g(θs + φ) = c0 Q_0(t) + sum_h Re[(p_h − i q_h) Q_h(t)],
+ *     Q_h(t) = (1 + i t)^(H+h) (1 − i t)^(H−h)          (since e^{iφ} = (1 + i t)^2/(1 + t^2))
+ *
+ * with (p_h, q_h) the coefficients of g rotated by θs. Its leading coefficient is g(θs + π),
+ * so θs is taken where |g(θs + π)| is largest among 4H + 2 equidistant angles: P then has
+ * degree 2H exactly, no root near t = ∞, and GSL never sees a zero leading term. The roots
+ * are polished by Newton's method on g itself (at most three steps, each kept only if it
+ * lowers |g|), which restores the digits the substitution costs.
+ *
+ * Reversals are the roots of u' where its sign changes (a double root, a flat inflection,
+ * changes nothing and is dropped; so are duplicates); the sign of u' on each arc between
+ * candidate roots is read at the arc's middle.
+ *
+ * The march starts at the global maximum with the slider at max u − r, r = mun/kt (the play
+ * operator's wiping-out property: the state every history reaches there once the range
+ * exceeds 2r), so one period is the stabilized one. Between two reversals u is monotone with
+ * direction s: the slider sticks, f = kt (u − w), until kt (u − w) = s mun, the root of
+ * u(θ) − (w + s r) inside the interval (unique and bracketed there: GSL's Brent, not another
+ * companion solve, which cost five times as much at H = 7), then slips, f = s mun, to the next
+ * reversal, where it stops at w = u − s r.
+ *
+ * Integrals. On a piece [α, β] with centre μ and half-width δ,
+ *     ∫ cos mθ = 2 cos(mμ) sin(mδ)/m,   ∫ sin mθ = 2 sin(mμ) sin(mδ)/m
+ * (no cancellation on a short piece), and the products of the basis by the sum-to-product
+ * rules: the piece's Gram matrix G_ij = ∫ φ_i φ_j. A stick piece adds kt G (u − w e_0) to the
+ * coefficients and kt (G_ij − φ_j(θ_w) G_i0) to the Jacobian (θ_w the reversal where the
+ * slider stopped, u'(θ_w) = 0, so ∂w/∂u_j = φ_j(θ_w)); a slip piece adds s mun G_i0. */
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
+
+#include "aft_internal.h"
+#include "base/fr_math.h"
+
+/* g(θ) and g'(θ) of the trigonometric polynomial with coefficients co[2H+1] in the layout of
+ * fricreg_aft.h; cos hθ, sin hθ by rotation. */
+static double trig_eval(int H, const double *co, double th, double *dg)
+{
+    double c1 = cos(th), s1 = sin(th), c = 1.0, s = 0.0, g = co[0], d = 0.0;
+    for (int h = 1; h <= H; h++) {
+        double cn = c * c1 - s * s1;
+        s = s * c1 + c * s1;
+        c = cn;
+        g += co[2 * h - 1] * c + co[2 * h] * s;
+        d += h * (co[2 * h] * c - co[2 * h - 1] * s);
+    }
+    *dg = d;
+    return g;
+}
+
+/* Newton on g from th, at most three steps, each kept if it stays in [lo, hi] and lowers |g|. */
+static double polish(int H, const double *co, double th, double lo, double hi)
+{
+    for (int it = 0; it < 3; it++) {
+        double d, g = trig_eval(H, co, th, &d);
+        if (g == 0.0 || d == 0.0)
+            break;
+        double next = th - g / d, d2;
+        if (!(next >= lo && next <= hi) || !(fabs(trig_eval(H, co, next, &d2)) < fabs(g)))
+            break;
+        th = next;
+    }
+    return th;
+}
+
+/* The roots of the trigonometric polynomial co (not zero, entries of order 1) as angles: real
+ * parts into a->cand (in [0, 2pi)), sizes of the imaginary parts into a->cim, their count
+ * (2D, D the degree kept) into *count. Harmonics below DBL_EPSILON times the largest
+ * coefficient are left out of the algebraic polynomial (they move a simple real root by less
+ * than the polish restores; kept, they would put multiple roots at t = +-i, which slow GSL's
+ * QR). Returns FRICREG_OK, or FRICREG_EINTEGRATOR (message recorded) if GSL's QR did not
+ * converge. */
+static int trig_roots(fricreg_aft *a, const char *fn, const double *co, int *count)
+{
+    int H = a->H, D = 1;
+    double big = fabs(co[0]), d;
+    for (size_t j = 1; j < a->nc; j++)
+        big = fmax(big, fabs(co[j]));
+    for (int h = 1; h <= H; h++)
+        if (fmax(fabs(co[2 * h - 1]), fabs(co[2 * h])) > DBL_EPSILON * big)
+            D = h;
+    if (a->table_H != D)
+        fr_aft_half_angle_table(a, D);
+    size_t w = (size_t)(2 * D + 1), probes = 4 * (size_t)D + 2;
+    double best = -1.0, ths = 0.0;
+    for (size_t j = 0; j < probes; j++) {
+        double th = FR_TWO_PI * (double)j / (double)probes, g = fabs(trig_eval(H, co, th, &d));
+        if (g > best) {
+            best = g;
+            ths = th - 0.5 * FR_TWO_PI;
+        }
+    }
+    for (size_t k = 0; k < w; k++)
+        a->poly[k] = co[0] * a->qre[k];
+    for (int h = 1; h <= D; h++) {
+        double ch = cos(h * ths), sh = sin(h * ths), al = co[2 * h - 1], be = co[2 * h];
+        double p = al * ch + be * sh, q = be * ch - al * sh;
+        const double *re = &a->qre[w * (size_t)h], *im = &a->qim[w * (size_t)h];
+        for (size_t k = 0; k < w; k++)
+            a->poly[k] += p * re[k] + q * im[k];
+    }
+    double scale = 0.0;
+    for (size_t k = 0; k < w; k++)
+        scale = fmax(scale, fabs(a->poly[k]));
+    if (!(scale > 0.0) || a->poly[w - 1] == 0.0) /* g = 0 at every probe: ruled out by callers */
+        return fr_fail(a, FRICREG_EINTEGRATOR, "%s: a trigonometric polynomial vanished", fn);
+    for (size_t k = 0; k < w; k++)
+        a->poly[k] /= scale;
+    /* inputs finite, leading term non-zero, workspace of the right size: GSL's only remaining
+     * failure is QR's non-convergence */
+    a->ws.nc = w - 1;
+    if (gsl_poly_complex_solve(a->poly, w, &a->ws, a->roots) != GSL_SUCCESS)
+        return fr_fail(a, FRICREG_EINTEGRATOR, "%s: GSL's polynomial root solver did not converge",
+                       fn);
+    for (int k = 0; k < 2 * D; k++) {
+        double x = a->roots[2 * k], y = a->roots[2 * k + 1];
+        double th = fmod(ths + 2.0 * atan(x), FR_TWO_PI);
+        a->cand[k] = th < 0.0 ? th + FR_TWO_PI : th;
+        a->cim[k] = 2.0 * fabs(y) / (1.0 + x * x); /* d theta/dt = 2/(1 + t^2) */
+    }
+    *count = 2 * D;
+    return FRICREG_OK;
+}
+
+static int cmp_double(const void *x, const void *y)
+{
+    double p = *(const double *)x, q = *(const double *)y;
+    return (p > q) - (p < q);
+}
+
+static int sign_of(double x)
+{
+    return (x > 0.0) - (x < 0.0);
+}
+
+/* Angles of the velocity reversals into a->rev (sorted), the direction after each into
+ * a->rdir; their count into *m (0 for a constant u). du: u' scaled, as coefficients. */
+static int reversals(fricreg_aft *a, const char *fn, const double *u, int *m)
+{
+    int H = a->H;
+    double *du = a->dcoef, big = 0.0, d;
+    du[0] = 0.0;
+    for (int h = 1; h <= H; h++) {
+        du[2 * h - 1] = h * u[2 * h];
+        du[2 * h] = -h * u[2 * h - 1];
+        big = fmax(big, fmax(fabs(du[2 * h - 1]), fabs(du[2 * h])));
+    }
+    *m = 0;
+    if (big == 0.0)
+        return FRICREG_OK;
+    for (int j = 1; j < (int)a->nc; j++)
+        du[j] /= big;
+    int nroots = 0, status = trig_roots(a, fn, du, &nroots);
+    if (status != FRICREG_OK)
+        return status;
+    int K = 0;
+    for (int k = 0; k < nroots; k++) /* real to first order: |Im theta| below 1e-6 */
+        if (a->cim[k] <= 1e-6)
+            a->cand[K++] = polish(H, du, a->cand[k], a->cand[k] - 0.1, a->cand[k] + 0.1);
+    for (int k = 0; k < K; k++) { /* back into [0, 2pi) after the polish */
+        a->cand[k] = fmod(a->cand[k], FR_TWO_PI);
+        if (a->cand[k] < 0.0)
+            a->cand[k] += FR_TWO_PI;
+    }
+    qsort(a->cand, (size_t)K, sizeof *a->cand, cmp_double);
+    int kept = 0;
+    for (int k = 0; k < K; k++) /* duplicates (a double root found twice) */
+        if (kept == 0 || a->cand[k] - a->cand[kept - 1] > 1e-10)
+            a->cand[kept++] = a->cand[k];
+    if (kept > 1 && a->cand[0] + FR_TWO_PI - a->cand[kept - 1] <= 1e-10)
+        kept--;
+    if (kept == 0)
+        return fr_fail(a, FRICREG_EINTEGRATOR,
+                       "%s: no velocity reversal found for a non-constant u", fn);
+    /* sign of u' on arc k (from cand[k] to the next); a zero takes the previous arc's */
+    int *sg = a->rdir;
+    for (int k = 0; k < kept; k++) {
+        double lo = a->cand[k], hi = k + 1 < kept ? a->cand[k + 1] : a->cand[0] + FR_TWO_PI;
+        sg[k] = sign_of(trig_eval(H, du, 0.5 * (lo + hi), &d));
+    }
+    for (int pass = 0; pass < 2; pass++)
+        for (int k = 0; k < kept; k++)
+            if (sg[k] == 0)
+                sg[k] = sg[(k + kept - 1) % kept];
+    for (int k = 0; k < kept; k++)
+        if (sg[k] != 0 && sg[k] != sg[(k + kept - 1) % kept]) {
+            a->rev[*m] = a->cand[k];
+            sg[*m] = sg[k]; /* *m <= k: rdir is written behind its reads */
+            (*m)++;
+        }
+    if (*m < 2)
+        return fr_fail(a, FRICREG_EINTEGRATOR,
+                       "%s: fewer than two velocity reversals found for a non-constant u", fn);
+    return FRICREG_OK;
+}
+
+/* The Gram matrix of the basis over [al, be] into a->gram, and the integrals of cos, sin. */
+static void gram(fricreg_aft *a, double al, double be)
+{
+    int H = a->H, M = 2 * H;
+    size_t w = a->nc;
+    double mu = 0.5 * (al + be), de = 0.5 * (be - al), *cm = a->cm, *sm = a->sm, *G = a->gram;
+    cm[0] = be - al;
+    sm[0] = 0.0;
+    for (int m = 1; m <= M; m++) {
+        double q = 2.0 * sin(m * de) / m;
+        cm[m] = cos(m * mu) * q;
+        sm[m] = sin(m * mu) * q;
+    }
+    G[0] = cm[0];
+    for (int h = 1; h <= H; h++) {
+        G[2 * h - 1] = G[w * (size_t)(2 * h - 1)] = cm[h];
+        G[2 * h] = G[w * (size_t)(2 * h)] = sm[h];
+        for (int k = 1; k <= H; k++) {
+            int dd = h > k ? h - k : k - h;
+            double sgn = h > k ? 1.0 : (h < k ? -1.0 : 0.0);
+            size_t ck = (size_t)(2 * k - 1), sk = (size_t)(2 * k);
+            size_t ch = (size_t)(2 * h - 1), shh = (size_t)(2 * h);
+            G[w * ck + ch] = 0.5 * (cm[dd] + cm[h + k]);        /* cos k cos h */
+            G[w * sk + shh] = 0.5 * (cm[dd] - cm[h + k]);       /* sin k sin h */
+            G[w * ck + shh] = 0.5 * (sm[h + k] + sgn * sm[dd]); /* cos k sin h */
+            G[w * sk + ch] = 0.5 * (sm[h + k] - sgn * sm[dd]);  /* sin k cos h */
+        }
+    }
+}
+
+/* Weight of coefficient i: 1/(2 pi) for the mean, 1/pi for the harmonics. */
+static double weight(size_t i)
+{
+    return i == 0 ? 1.0 / FR_TWO_PI : 2.0 / FR_TWO_PI;
+}
+
+/* A stick piece [al, be], f = kt (u − w), the slider stopped at thw. */
+static void add_stick(fricreg_aft *a, double kt, const double *u, double wv, double thw, double al,
+                      double be, int want_jac)
+{
+    size_t w = a->nc;
+    gram(a, al, be);
+    const double *G = a->gram;
+    for (size_t i = 0; i < w; i++) {
+        double s = G[w * i] * (u[0] - wv);
+        for (size_t j = 1; j < w; j++)
+            s += G[w * i + j] * u[j];
+        a->fout[i] += weight(i) * kt * s;
+    }
+    if (!want_jac)
+        return;
+    fr_aft_basis(a->H, thw, a->phw);
+    for (size_t i = 0; i < w; i++)
+        for (size_t j = 0; j < w; j++)
+            a->jout[w * i + j] += weight(i) * kt * (G[w * i + j] - a->phw[j] * G[w * i]);
+}
+
+/* A slip piece [al, be], f = fs constant. */
+static void add_slip(fricreg_aft *a, double fs, double al, double be)
+{
+    gram(a, al, be);
+    for (size_t i = 0; i < a->nc; i++)
+        a->fout[i] += weight(i) * fs * a->gram[a->nc * i];
+}
+
+/* u(theta) - target for GSL's Brent. */
+struct onset_probe {
+    int H;
+    const double *u;
+    double target;
+};
+
+static double onset_gap(double th, void *params)
+{
+    const struct onset_probe *p = params;
+    double d;
+    return trig_eval(p->H, p->u, th, &d) - p->target;
+}
+
+/* The angle in [al, be] where u = target: u is monotone there in the direction dir (al, be
+ * consecutive reversals) and dir (u(be) − target) > 0, so the root is unique and bracketed.
+ * GSL's Brent on the bracket to a width of 4 DBL_EPSILON |theta| (at most 100 iterations:
+ * Brent's guarantee is about 4 log2(2 pi/eps) evaluations), then one Newton step. The
+ * function is finite (inputs checked) and the bracket valid, so GSL has nothing to report to
+ * its error handler. Where rounding puts u(al) beyond the target already, the slip starts at
+ * al. */
+static double slip_onset(fricreg_aft *a, const double *u, double target, int dir, double al,
+                         double be)
+{
+    struct onset_probe p = {a->H, u, target};
+    if (dir * onset_gap(al, &p) >= 0.0)
+        return al;
+    gsl_function F = {onset_gap, &p};
+    double lo = al, hi = be, th = 0.5 * (al + be);
+    if (gsl_root_fsolver_set(a->brent, &F, al, be) == GSL_SUCCESS)
+        for (int it = 0; it < 100; it++) {
+            if (gsl_root_fsolver_iterate(a->brent) != GSL_SUCCESS)
+                break;
+            th = gsl_root_fsolver_root(a->brent);
+            lo = gsl_root_fsolver_x_lower(a->brent);
+            hi = gsl_root_fsolver_x_upper(a->brent);
+            if (gsl_root_test_interval(lo, hi, 0.0, 4.0 * DBL_EPSILON) == GSL_SUCCESS)
+                break;
+        }
+    double *co = a->dcoef; /* u - target as coefficients, for the Newton step */
+    memcpy(co, u, a->nc * sizeof *co);
+    co[0] -= target;
+    return polish(a->H, co, th, lo, hi);
+}
+
+int fr_aft_exact(fricreg_aft *a, const char *fn, size_t ns, const double *k, const double *phi,
+                 const double *u, int want_jac)
+{
+    size_t w = a->nc;
+    memset(a->fout, 0, w * sizeof *a->fout);
+    memset(a->jout, 0, w * w * sizeof *a->jout);
+    int m, status = reversals(a, fn, u, &m);
+    if (status != FRICREG_OK)
+        return status;
+    double d;
+    if (m == 0) { /* constant u: f = 0, the stick tangent on the harmonics */
+        for (size_t s = 0; s < ns; s++)
+            if (phi[s] > 0.0)
+                for (size_t j = 1; j < w; j++)
+                    a->jout[w * j + j] += k[s];
+        return FRICREG_OK;
+    }
+    int imax = 0, imin = 0;
+    for (int i = 1; i < m; i++) {
+        if (trig_eval(a->H, u, a->rev[i], &d) > trig_eval(a->H, u, a->rev[imax], &d))
+            imax = i;
+        if (trig_eval(a->H, u, a->rev[i], &d) < trig_eval(a->H, u, a->rev[imin], &d))
+            imin = i;
+    }
+    double thmax = a->rev[imax], thmin = a->rev[imin];
+    double umax = trig_eval(a->H, u, thmax, &d), umin = trig_eval(a->H, u, thmin, &d);
+    for (size_t s = 0; s < ns; s++) {
+        double kt = k[s], mun = phi[s], r = mun / kt;
+        if (mun == 0.0)
+            continue;
+        if (kt * (umax - umin) <= 2.0 * mun) { /* stuck: the centred slider */
+            double wc = 0.5 * (umax + umin);
+            a->fout[0] += kt * (u[0] - wc);
+            for (size_t j = 1; j < w; j++)
+                a->fout[j] += kt * u[j];
+            if (!want_jac)
+                continue;
+            fr_aft_basis(a->H, thmax, a->phw);
+            for (size_t j = 1; j < w; j++)
+                a->jout[j] -= 0.5 * kt * a->phw[j];
+            fr_aft_basis(a->H, thmin, a->phw);
+            for (size_t j = 1; j < w; j++) {
+                a->jout[j] -= 0.5 * kt * a->phw[j];
+                a->jout[w * j + j] += kt;
+            }
+            continue;
+        }
+        double wv = umax - r, thw = thmax;
+        for (int i = 0; i < m; i++) {
+            int ia = (imax + i) % m, ib = (ia + 1) % m, dir = a->rdir[ia];
+            double al = a->rev[ia], be = a->rev[ib];
+            if (be <= al)
+                be += FR_TWO_PI;
+            double target = wv + dir * r, ub = trig_eval(a->H, u, be, &d), th;
+            if (dir * (ub - target) <= 0.0) { /* sticks to the next reversal */
+                add_stick(a, kt, u, wv, thw, al, be, want_jac);
+                continue;
+            }
+            th = slip_onset(a, u, target, dir, al, be);
+            add_stick(a, kt, u, wv, thw, al, th, want_jac);
+            add_slip(a, dir * mun, th, be);
+            wv = ub - dir * r;
+            thw = be;
+        }
+    }
+    return FRICREG_OK;
+}
