@@ -200,8 +200,9 @@ FRICREG_API int fricreg_iwan_set_normal(fricreg_iwan *iw, size_t n, const double
  *
  *  n          must equal the object's element count.
  *  u[n dim]   relative displacements (finite), element e's at u[dim e .. dim e + dim - 1].
- *  f[n dim]   out: forces on the body whose relative displacement is u, laid out as u,
- *             |f_e| <= sum_s phi_s. May alias u.
+ *  f[n dim]   out: the elements' internal forces (the sums of the sliders' kt (u - w)), laid
+ *             out as u, |f_e| <= sum_s phi_s (the body whose relative displacement is u feels
+ *             -f: f enters the internal force vector, as a spring's k u does). May alias u.
  *  dfdu[n dim dim]  out, or NULL if not wanted: the consistent tangents, element e's dim x dim
  *             block at dfdu[dim dim e], row-major and symmetric: sum over stuck sliders of
  *             k_s I plus, in 2-D, sum over slipping ones of (phi_s/|u - w_s|)(I - n_s n_s^T).

@@ -118,8 +118,9 @@ FRICREG_API int fricreg_jenkins_set_params(fricreg_jenkins *j, size_t n, const d
  *
  *  n          must equal the object's element count.
  *  u[n dim]   relative displacements (finite), element i's at u[dim i .. dim i + dim - 1].
- *  f[n dim]   out: forces on the body whose relative displacement is u, |f_i| <= mun_i, laid
- *             out as u. May alias u.
+ *  f[n dim]   out: the elements' internal forces kt (u - w), |f_i| <= mun_i, laid out as u
+ *             (the body whose relative displacement is u feels -f: f enters the internal
+ *             force vector, as a spring's kt u does). May alias u.
  *  dfdu[n dim dim]  out, or NULL if not wanted: the consistent tangents, element i's dim x dim
  *             block at dfdu[dim dim i], row-major (df_a/du_b at [dim a + b]); each block is
  *             symmetric, so Fortran's column-major reading is the same. Stick: kt I; slip:
