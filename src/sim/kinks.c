@@ -206,12 +206,14 @@ static void bracket_crossing(struct fr_kinks *k, double b, double gb, double tol
     k->tau_known = b, k->g_known = gb;
     gsl_function F = {along_trials, k};
     gsl_root_fsolver_set(&k->brent, &F, 0.0, b); /* a strict change of sign: no GSL error */
-    for (int it = 0; it<ROOT_MAX_ITER && * hi - *lo> tol; it++) {
+    double a = 0.0, c = b;                       /* the bracket, from Brent's */
+    for (int it = 0; it < ROOT_MAX_ITER && c - a > tol; it++) {
         if (gsl_root_fsolver_iterate(&k->brent) != GSL_SUCCESS)
             break;
-        *lo = gsl_root_fsolver_x_lower(&k->brent);
-        *hi = gsl_root_fsolver_x_upper(&k->brent);
+        a = gsl_root_fsolver_x_lower(&k->brent);
+        c = gsl_root_fsolver_x_upper(&k->brent);
     }
+    *lo = a, *hi = c;
     k->tau_known = -1.0;
 }
 
@@ -239,9 +241,9 @@ static double first_crossing(struct fr_kinks *k, double h)
         return 0.0;
     double b = h, lo = 0.0, hi = h;
     for (int round = 0; round < MAX_EARLIER; round++) {
-        k->comp = first_changed(k, k->g_trial);
+        k->comp = first_changed(k, k->g_trial); /* a change at b: always found after round 0 */
         if (k->comp == k->ng)
-            return round == 0 ? 0.0 : b; /* b, checked by the last round, has a change */
+            return 0.0;
         bracket_crossing(k, b, k->g_trial[k->comp], tol, &lo, &hi);
         if (lo <= 0.0 || trial(k, lo) != FRICREG_OK || first_changed(k, k->g_trial) == k->ng)
             break; /* no other component crossed before lo */
