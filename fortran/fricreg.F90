@@ -268,6 +268,7 @@ module fricreg
     procedure :: set_integrator => sim_set_integrator
     procedure :: set_observer => sim_set_observer
     procedure :: set_max_steps => sim_set_max_steps
+    procedure :: set_kink_location => sim_set_kink_location
     procedure :: run => sim_run
     procedure :: run_cycles => sim_run_cycles
     procedure :: ndof => sim_ndof
@@ -1855,6 +1856,17 @@ contains
     if (status == FRICREG_OK) &
       status = self%record(fricreg_sim_set_max_steps(self%ptr, max_steps))
   end function sim_set_max_steps
+
+  !> Whether adaptive runs stop at the friction law's kinks and restart the stepper there
+  !> (1, the default) or step over them (0) (fricreg_sim_set_kink_location).
+  function sim_set_kink_location(self, on) result(status)
+    class(fricreg_simulation), intent(inout) :: self
+    integer(c_int), intent(in) :: on
+    integer(c_int) :: status
+    status = self%ready('set_kink_location', 'simulation')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_sim_set_kink_location(self%ptr, on))
+  end function sim_set_kink_location
 
   !> Integrate from t = 0 to t_end > 0 (see fricreg_sim_run for the returns).
   function sim_run(self, t_end) result(status)

@@ -444,6 +444,12 @@ expect "a chattering adaptive run stops with its reason" \
     '"$sim" oscillator --law coulomb --integrator rkf45 --rtol 1e-6 --atol 1e-8 >"$tmp/out" 2>"$tmp/err"; [ $? -eq 1 ] && [ ! -s "$tmp/out" ] && grep -q "^fricreg-sim: --max-steps: run: more than 10000 adaptive steps (rkf45)" "$tmp/err"'
 expect_usage_error "^fricreg-sim: --max-steps: must be a whole number from 0 to 10^9$" oscillator --max-steps -1
 expect_output '"steps": 630,' oscillator --max-steps 0 --cycles 1
+# Adaptive steps stop at the law's kinks unless --kink-location off, which gives the run of the
+# drivers before it: the msbdf run on the two blocks, D on cycle 4 43% off.
+expect_output '"kinks": [1-9][0-9]*,' twoblock --integrator msbdf --eps 1e-6 --rtol 1e-6 --atol 1e-6
+expect_output '"kinks": 0, .*2.4887871015811562\]' twoblock --integrator msbdf --eps 1e-6 --rtol 1e-6 \
+    --atol 1e-6 --kink-location off
+expect_usage_error "^fricreg-sim: --kink-location: expected on or off$" oscillator --kink-location 1
 # A run length the library refuses is a bad value (exit 2), like the exact solver's.
 expect_usage_error "^fricreg-sim: --cycles: run: .* steps is too many" oscillator --cycles 10000000 --dt 1e-4
 expect_usage_error "^fricreg-sim: --t-end: run: .* steps is too many" chain --t-end 1e9 --dt 1e-3

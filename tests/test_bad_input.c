@@ -480,6 +480,10 @@ static int w_sim_set_integrator(void)
     return fricreg_sim_set_integrator(SIM(), N(0, FRICREG_INT_RKF45), D(0, 0.01), D(1, 1e-6),
                                       D(2, 1e-9));
 }
+static int w_sim_set_kink_location(void)
+{
+    return fricreg_sim_set_kink_location(SIM(), N(0, 0));
+}
 static int w_sim_set_observer(void)
 {
     return fricreg_sim_set_observer(SIM(), NULL, NULL);
@@ -1329,6 +1333,11 @@ static const struct row rows[] = {
      SIM_REC,
      {HANDLE, INT(0, "iiii"), DBL(0, "nnfiioo"), DBL(1, "nnfiooo"), DBL(2, "nnfiooo")}},
     {"fricreg_sim_set_observer", w_sim_set_observer, "0i", SIM_REC, {HANDLE}},
+    {"fricreg_sim_set_kink_location",
+     w_sim_set_kink_location,
+     "0i",
+     SIM_REC,
+     {HANDLE, INT(0, "ioii")}},
     {"fricreg_sim_run", w_sim_run, "0inedtgm", SIM_REC, {HANDLE, DBL(0, "nnfiioi")}},
     {"fricreg_sim_run_cycles", w_sim_run_cycles, "0inedtgm", SIM_REC, {HANDLE, INT(0, "iiii")}},
     {"fricreg_sim_run_extrapolated",
@@ -1914,7 +1923,7 @@ static int e_chain_n(int which, double x)
     return fricreg_sim_set_param(chain_, FRICREG_PARAM_N, x);
 }
 /* which 0: mun; 1: law's eps (0: the paper's rule); 2: law; 3: partition; 4: integrator;
- * 5: rtol of central differences; 6: rtol of rkf45 */
+ * 5: rtol of central differences; 6: rtol of rkf45; 7: kink location */
 static int e_sim_set(int which, double x)
 {
     switch (which) {
@@ -1924,6 +1933,7 @@ static int e_sim_set(int which, double x)
     case 3: return fricreg_sim_set_partition(FX_->sim, (int)x);
     case 4: return fricreg_sim_set_integrator(FX_->sim, (int)x, 0.01, 0.0, 0.0);
     case 5: return fricreg_sim_set_integrator(FX_->sim, FRICREG_INT_CENTRAL, 0.01, x, 0.0);
+    case 7: return fricreg_sim_set_kink_location(FX_->sim, (int)x);
     default: return fricreg_sim_set_integrator(FX_->sim, FRICREG_INT_RKF45, 0.01, x, 0.0);
     }
 }
@@ -2246,8 +2256,10 @@ START_TEST(edges_of_documented_ranges)
         {"sim_run_extrapolated_window window >= 0", e_sim_run, 6, 0, -1, 'i', SIM_REC},
         {"sim_get_value <= dissipation", e_sim_get, 0, FRICREG_VALUE_DISSIPATION,
          FRICREG_VALUE_DISSIPATION + 1, 'i', NONE},
-        {"sim_get_stat <= rejected steps", e_sim_get, 1, FRICREG_SIM_STAT_REJECTED_STEPS,
-         FRICREG_SIM_STAT_REJECTED_STEPS + 1, 'i', NONE},
+        {"sim_get_stat <= kinks", e_sim_get, 1, FRICREG_SIM_STAT_KINKS, FRICREG_SIM_STAT_KINKS + 1,
+         'i', NONE},
+        {"sim_set_kink_location on <= 1", e_sim_set, 7, 1, 2, 'i', SIM_REC},
+        {"sim_set_kink_location on >= 0", e_sim_set, 7, 0, -1, 'i', SIM_REC},
         {"sim_get_extrapolation <= rhs evals", e_sim_get, 2, FRICREG_EXTRAP_RHS_EVALS,
          FRICREG_EXTRAP_RHS_EVALS + 1, 'i', NONE},
         {"sim_get_extrapolation >= levels", e_sim_get, 3, FRICREG_EXTRAP_LEVELS, -1, 'i', NONE},

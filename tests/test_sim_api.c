@@ -753,12 +753,12 @@ static int64_t counter(const fricreg_sim *sim, int which)
     return out;
 }
 
-/* Header: FRICREG_EINVAL for an unknown counter (valid 0 … 3), FRICREG_ENULL for a NULL value;
+/* Header: FRICREG_EINVAL for an unknown counter (valid 0 … 4), FRICREG_ENULL for a NULL value;
  * *value untouched on failure, no error recorded. Before any run every counter is 0. */
 START_TEST(test_get_stat_rejects_unknown_counter)
 {
     fricreg_sim *sim = make(FRICREG_SYSTEM_TWOBLOCK);
-    static const int bad[] = {-1, 4, 1000};
+    static const int bad[] = {-1, FRICREG_SIM_STAT_KINKS + 1, 1000};
     for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
         int64_t out = 2385;
         ck_assert_int_eq(fricreg_sim_get_stat(sim, bad[k], &out), FRICREG_EINVAL);
@@ -766,7 +766,7 @@ START_TEST(test_get_stat_rejects_unknown_counter)
     }
     ck_assert_int_eq(fricreg_sim_get_stat(sim, FRICREG_SIM_STAT_STEPS, NULL), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_sim_errcode(sim), FRICREG_OK);
-    for (int which = FRICREG_SIM_STAT_STEPS; which <= FRICREG_SIM_STAT_REJECTED_STEPS; which++)
+    for (int which = FRICREG_SIM_STAT_STEPS; which <= FRICREG_SIM_STAT_KINKS; which++)
         ck_assert_int_eq(counter(sim, which), 0);
     fricreg_sim_free(sim);
 }
@@ -792,7 +792,7 @@ START_TEST(test_fixed_rk4_counts_match_the_step_grid)
     ck_assert_double_eq(value(sim, FRICREG_VALUE_RHS_EVALS), 7112.0);
     ck_assert_double_eq(value(sim, FRICREG_VALUE_CYCLES), 3.0);
     ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_X0, 2.385), FRICREG_OK);
-    for (int which = FRICREG_SIM_STAT_STEPS; which <= FRICREG_SIM_STAT_REJECTED_STEPS; which++)
+    for (int which = FRICREG_SIM_STAT_STEPS; which <= FRICREG_SIM_STAT_KINKS; which++)
         ck_assert_int_eq(counter(sim, which), 0);
     fricreg_sim_free(sim);
 }
@@ -808,7 +808,8 @@ static int count_calls(void *user, double t, size_t ndof, const double x[], cons
 
 /* Adaptive rkf45 (GSL 2.7): each attempt at a step, accepted or rejected, evaluates the five
  * stages after k1 and dydt at its end, which the next step reuses as its k1; only the first
- * step evaluates its k1. So RHS_EVALS = 1 + 6 (STEPS + REJECTED_STEPS) exactly. An initial
+ * step evaluates its k1. So RHS_EVALS = 1 + 6 (STEPS + REJECTED_STEPS) exactly, without kink
+ * location (its trial steps add their own right-hand sides: counted, more). An initial
  * step dt = 1 against rtol = 1e-9 is rejected at once, so REJECTED_STEPS > 0; the observer,
  * called at t = 0 and after every accepted step, counts STEPS + 1 calls. Forced oscillator,
  * a = 0.6137, eps = 0.02, 2 cycles. */
@@ -821,13 +822,20 @@ START_TEST(test_adaptive_counts_rejected_steps)
     ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_RKF45, 1.0, 1e-9, 1e-12),
                      FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_set_observer(sim, count_calls, &calls), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_kink_location(sim, 0), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_run_cycles(sim, 2), FRICREG_OK);
     int64_t steps = counter(sim, FRICREG_SIM_STAT_STEPS);
     int64_t rejected = counter(sim, FRICREG_SIM_STAT_REJECTED_STEPS);
     ck_assert_int_gt(rejected, 0);
     ck_assert_int_eq(counter(sim, FRICREG_SIM_STAT_RHS_EVALS), 1 + 6 * (steps + rejected));
+    ck_assert_int_eq(counter(sim, FRICREG_SIM_STAT_KINKS), 0);
     ck_assert_int_eq(calls, steps + 1);
     ck_assert_int_eq(counter(sim, FRICREG_SIM_STAT_CYCLES), 2);
+    calls = 0; /* with location: every accepted step observed once, cut ones included */
+    ck_assert_int_eq(fricreg_sim_set_kink_location(sim, 1), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run_cycles(sim, 2), FRICREG_OK);
+    ck_assert_int_gt(counter(sim, FRICREG_SIM_STAT_KINKS), 0);
+    ck_assert_int_eq(calls, counter(sim, FRICREG_SIM_STAT_STEPS) + 1);
     fricreg_sim_free(sim);
 }
 END_TEST
@@ -854,9 +862,13 @@ END_TEST
  *   - Coulomb's law under rkf45 (rtol 1e-6, atol 1e-8) shrinks its steps without end at the
  *     first stick (it took 12 s a cycle, about 5e7 steps): with the bound at 10^5 the run
  *     stops inside the first cycle with FRICREG_EWORK, naming the law's jump, with exactly
- *     10^5 accepted steps; by default (a law that jumps: 10^4) the force balance likewise;
- *   - law (4) at the same tolerances takes more than 100 steps a cycle (counted with the bound
- *     off), so a bound of 100 stops it in cycle 1, and its own count lets it finish;
+ *     10^5 accepted steps and kink locations (a location counts as a step: 99866 and 134);
+ *     by default (a law that jumps: 10^4) the force balance likewise without kink location;
+ *     with it, its step lands on zdot = 0 and the stick holds (4 cycles in 167 steps, D on
+ *     the first 3.5000007 against the closed form's 3.5, `fricreg-sim exact`);
+ *   - law (4) at the same tolerances takes more than 100 steps a cycle (steps and kink
+ *     locations, counted with the bound off), so a bound of 100 stops it in cycle 1, and its
+ *     own count lets it finish;
  *   - the bound is per cycle: 2 cycles pass the bound that one passes;
  *   - negative bounds are refused, and 0 removes it. */
 START_TEST(test_adaptive_steps_are_bounded_per_cycle)
@@ -871,20 +883,29 @@ START_TEST(test_adaptive_steps_are_bounded_per_cycle)
     ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "jump at zdot = 0"));
     double period = value(sim, FRICREG_VALUE_PERIOD), t = value(sim, FRICREG_VALUE_TIME);
     ck_assert_double_lt(t, period);
-    ck_assert_int_eq(counter(sim, FRICREG_SIM_STAT_STEPS), 100000);
+    ck_assert_int_gt(counter(sim, FRICREG_SIM_STAT_KINKS), 0);
+    ck_assert_int_eq(counter(sim, FRICREG_SIM_STAT_STEPS) + counter(sim, FRICREG_SIM_STAT_KINKS),
+                     100000);
     /* by default a law that jumps gets 10^4 adaptive steps a cycle */
     fricreg_sim *fresh = make(FRICREG_SYSTEM_OSCILLATOR);
     ck_assert_int_eq(fricreg_sim_set_law(fresh, FRICREG_LAW_FORCE_BALANCE, 0.0), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_set_integrator(fresh, FRICREG_INT_RKF45, 0.01, 1e-6, 1e-8),
                      FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_kink_location(fresh, 0), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_run_cycles(fresh, 4), FRICREG_EWORK);
     ck_assert_int_eq(counter(fresh, FRICREG_SIM_STAT_STEPS), 10000);
+    ck_assert_int_eq(fricreg_sim_set_kink_location(fresh, 1), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run_cycles(fresh, 4), FRICREG_OK);
+    ck_assert_int_lt(counter(fresh, FRICREG_SIM_STAT_STEPS), 1000);
+    double D[4];
+    ck_assert_int_eq(fricreg_sim_get_dissipation(fresh, 4, D), FRICREG_OK);
+    ck_assert_double_eq_tol(D[0], 3.5, 1e-5);
     fricreg_sim_free(fresh);
 
     ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_QUINN, 0.02), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_set_max_steps(sim, 0), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_run_cycles(sim, 1), FRICREG_OK);
-    int64_t cycle = counter(sim, FRICREG_SIM_STAT_STEPS);
+    int64_t cycle = counter(sim, FRICREG_SIM_STAT_STEPS) + counter(sim, FRICREG_SIM_STAT_KINKS);
     ck_assert_int_gt(cycle, 100);
     ck_assert_int_eq(fricreg_sim_set_max_steps(sim, 100), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_run_cycles(sim, 1), FRICREG_EWORK);

@@ -159,6 +159,8 @@ program test_sim
   ! The chain of Sec. 3.2, the paper's defaults: D per cycle converges to 0.0105.
   call check_status(sim%create(FRICREG_SYSTEM_CHAIN), FRICREG_OK, 'create chain (replaces)')
   call check(sim%ndof() == 32, 'n = 32 blocks')
+  call check_status(sim%set_kink_location(2_c_int), FRICREG_EINVAL, 'set_kink_location 2')
+  call check_status(sim%set_kink_location(1_c_int), FRICREG_OK, 'set_kink_location 1')
   call check_status(sim%run_cycles(4), FRICREG_OK, 'four cycles')
   call check_status(sim%get_dissipation(D), FRICREG_OK, 'get_dissipation, chain')
   call check(size(D) == 4, 'four values of D')

@@ -26,6 +26,7 @@ struct cli_run {
     int extrapolate_order;  /* --extrapolate-order P: the declared leading order (0: 1) */
     int extrapolate_window; /* --extrapolate-window W (fricreg_sim_run_extrapolated_window) */
     int max_steps;          /* --max-steps N (fricreg_sim_set_max_steps); -1: the default */
+    int kink_location;      /* --kink-location on|off (fricreg_sim_set_kink_location) */
     struct {
         int param;
         double value;
@@ -126,6 +127,7 @@ struct cli_summary {
     const char *system, *law, *integrator;
     int adaptive;
     double dt, rtol, atol, eps, steps, rhs_evals, t, period, cpu_seconds;
+    double kinks; /* adaptive steps cut at a kink (written for adaptive runs only) */
     size_t ndof, ncontacts, cycles;
     const double *x, *v;                    /* [ndof] */
     const double *D;                        /* [cycles] dissipation per cycle */

@@ -51,7 +51,9 @@ static void usage(FILE *out)
           "  --extrapolate-window W  the finer levels over the last W cycles only, from\n"
           "                   the state of the first level there (0: the whole run)  [0]\n"
           "  --max-steps N    adaptive steps a forcing cycle may take (0: no bound)\n"
-          "                   [10^4 for coulomb, force-balance, karnopp; else 10^6]\n",
+          "                   [10^4 for coulomb, force-balance, karnopp; else 10^6]\n"
+          "  --kink-location on|off   adaptive steps stop at the friction law's kinks and\n"
+          "                   restart the stepper there (docs/integrators.md)      [on]\n",
           out);
     cli_print_param_defaults(out);
     fputs("            --partition paper|consistent  coupled contacts' near-stick law "

@@ -99,6 +99,8 @@ static int parse_partition(const struct cli_option *row, const char *text)
     return cli_parse_value(&choice, text);
 }
 
+static const struct cli_word on_off[] = {{"on", 1}, {"off", 0}, {NULL, 0}};
+
 /* `exact` solves in closed form: the integration options have no meaning for it. */
 static int refused_by_exact(const struct cli_option *row, const char *text)
 {
@@ -123,7 +125,8 @@ static size_t run_table(struct cli_run *run, int exact, int *cycles_given,
         {"--extrapolate", CLI_WHOLE, .slot = &run->extrapolate, .lo = 2, .hi = 8},
         {"--extrapolate-order", CLI_WHOLE, .slot = &run->extrapolate_order, .lo = 0, .hi = 4},
         {"--extrapolate-window", CLI_WHOLE, .slot = &run->extrapolate_window, .lo = 0, .hi = 1e7},
-        {"--max-steps", CLI_WHOLE, .slot = &run->max_steps, .lo = 0, .hi = 1e9}};
+        {"--max-steps", CLI_WHOLE, .slot = &run->max_steps, .lo = 0, .hi = 1e9},
+        {"--kink-location", CLI_CHOICE, .slot = &run->kink_location, .words = on_off}};
     const struct cli_option run_length_and_output[] = {
         {"--t-end", CLI_POSITIVE, .slot = &run->t_end},
         {"--cycles", CLI_WHOLE, .slot = &run->cycles, .lo = 1, .hi = 1e7, .given = cycles_given},
@@ -171,7 +174,8 @@ static int parse_run(int system, int exact, int argc, char **argv, struct cli_ru
                             .cycles = 4,
                             .output = CLI_SUMMARY,
                             .partition = FRICREG_PARTITION_CONSISTENT,
-                            .max_steps = -1};
+                            .max_steps = -1,
+                            .kink_location = 1};
     int cycles_given = 0;
     struct cli_option table[MAX_ROWS];
     size_t n = run_table(run, exact, &cycles_given, table);

@@ -54,6 +54,8 @@ fricreg_sim *cli_make_sim(const struct cli_run *run)
         status = fricreg_sim_set_partition(sim, run->partition);
     if (status == FRICREG_OK && run->max_steps >= 0)
         status = fricreg_sim_set_max_steps(sim, run->max_steps);
+    if (status == FRICREG_OK)
+        status = fricreg_sim_set_kink_location(sim, run->kink_location);
     for (int k = 0; status == FRICREG_OK && k < run->nparams; k++)
         status = fricreg_sim_set_param(sim, run->params[k].param, run->params[k].value);
     if (status != FRICREG_OK) {
@@ -123,6 +125,8 @@ void cli_write_summary(FILE *out, const struct cli_summary *s)
     fprintf(out, "\"eps\": %.17g, \"steps\": %.0f, \"rhs_evals\": %.0f, \"t\": %.17g, ", s->eps,
             s->steps, s->rhs_evals, s->t);
     fprintf(out, "\"period\": %.17g", s->period);
+    if (s->adaptive)
+        fprintf(out, ", \"kinks\": %.0f", s->kinks);
     json_array(out, "x", s->ndof, s->x);
     json_array(out, "v", s->ndof, s->v);
     json_array(out, "dissipation_per_cycle", s->cycles, s->D);
@@ -157,6 +161,13 @@ static void read_extrapolation(const fricreg_sim *sim, size_t cycles, double buf
         .err = buf + cycles};
 }
 
+static double kink_count(const fricreg_sim *sim)
+{
+    int64_t n = 0;
+    fricreg_sim_get_stat(sim, FRICREG_SIM_STAT_KINKS, &n);
+    return (double)n;
+}
+
 static void write_summary(FILE *out, const struct cli_run *run, const fricreg_sim *sim,
                           double cpu_seconds)
 {
@@ -184,6 +195,7 @@ static void write_summary(FILE *out, const struct cli_run *run, const fricreg_si
                             .eps = value(sim, FRICREG_VALUE_EPS),
                             .steps = value(sim, FRICREG_VALUE_STEPS),
                             .rhs_evals = value(sim, FRICREG_VALUE_RHS_EVALS),
+                            .kinks = kink_count(sim),
                             .t = value(sim, FRICREG_VALUE_TIME),
                             .period = value(sim, FRICREG_VALUE_PERIOD),
                             .cpu_seconds = cpu_seconds,

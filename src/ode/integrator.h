@@ -50,6 +50,11 @@ struct fr_integrator {
      * default aborts): an adaptive run with atol = 0 meets it at the first component that is 0,
      * as every start from rest is. The drivers refuse such a run (FRICREG_EINVAL). */
     int atol_required;
+    /* The one-step stepper that re-steps an adaptive step from its start to locate a kink of
+     * the friction law within it (src/sim/kinks.c), or NULL for `type` itself: a multistep
+     * stepper's step depends on its history, so msadams has rk8pd (non-stiff, as Adams) and
+     * msbdf rk4imp (A-stable, for the stiff stick zone), each from the step's start. */
+    const gsl_odeiv2_step_type *(*locator)(void);
 };
 
 /* The table row of an integrator id, or NULL if unknown. */

@@ -56,6 +56,7 @@ static int make_level(const fricreg_sim *sim, int k, fricreg_sim **out)
     level->dt = adaptive ? sim->dt : sim->dt * scale;
     level->rtol = sim->rtol;
     level->atol = sim->atol;
+    level->kink_location = sim->kink_location;
     *out = level;
     return FRICREG_OK;
 }

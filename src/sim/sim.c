@@ -21,6 +21,7 @@
 #include "ode/integrator.h"
 #include "law/law.h"
 #include "ode/ode_driver.h"
+#include "kinks.h"
 #include "ode/step_guard.h"
 #include "sim_internal.h"
 
@@ -54,7 +55,7 @@ static void free_run(fricreg_sim *sim)
     sim->stick_time = sim->stick_fraction = sim->D = NULL;
     sim->ndof = sim->m = sim->cycles = 0;
     sim->t = 0.0;
-    sim->steps = sim->rhs_evals = sim->rejected_steps = 0;
+    sim->steps = sim->rhs_evals = sim->rejected_steps = sim->kinks = 0;
 }
 
 void fricreg_sim_free(fricreg_sim *sim)
@@ -82,6 +83,7 @@ int fricreg_sim_create(int system, fricreg_sim **out)
     sim->integrator = FRICREG_INT_RK4;
     sim->dt = 0.01;
     sim->max_steps = -1; /* the law's default (fr_law_max_adaptive_steps) */
+    sim->kink_location = 1;
     *out = sim;
     return FRICREG_OK;
 }
@@ -217,6 +219,18 @@ int fricreg_sim_set_max_steps(fricreg_sim *sim, int64_t max_steps)
                        "set_max_steps: max_steps = %lld must be >= 0 (0: no bound)",
                        (long long)max_steps);
     sim->max_steps = max_steps;
+    return FRICREG_OK;
+}
+
+int fricreg_sim_set_kink_location(fricreg_sim *sim, int on)
+{
+    if (sim == NULL)
+        return FRICREG_ENULL;
+    if (sim->running)
+        return refuse_during_run(sim, "set_kink_location");
+    if (on != 0 && on != 1)
+        return fr_fail(sim, FRICREG_EINVAL, "set_kink_location: on = %d must be 0 or 1", on);
+    sim->kink_location = on;
     return FRICREG_OK;
 }
 
@@ -501,9 +515,11 @@ static int advance(fricreg_sim *sim, gsl_odeiv2_driver *d, const struct fr_integ
         if (adaptive(sim) && bound > 0 && ++cycle_steps > bound)
             return too_much_work(sim, integ, bound);
         double t_before = sim->t;
-        int gsl_status;
+        int gsl_status, moved = 1;
         if (adaptive(sim)) {
             double t_stop = fmin(t_target, sim->t + MAX_STEP_PER_PERIOD * period(sim));
+            if (sim->locate != NULL) /* a kink being re-approached ends the step there */
+                t_stop = fr_kinks_before_step(sim->locate, sim, t_stop);
             gsl_status = gsl_odeiv2_evolve_apply(d->e, d->c, d->s, d->sys, &sim->t, t_stop, h,
                                                  sim->y);
         } else {
@@ -516,6 +532,17 @@ static int advance(fricreg_sim *sim, gsl_odeiv2_driver *d, const struct fr_integ
         }
         if (gsl_status != GSL_SUCCESS)
             return step_failure(sim, gsl_status);
+        if (sim->locate != NULL) { /* a kink crossed: the step cut there (kinks.c) */
+            int64_t kinks_before = sim->kinks;
+            int status = fr_kinks_after_step(sim->locate, sim, d, &moved);
+            if (status != FRICREG_OK)
+                return status;
+            cycle_steps += sim->kinks - kinks_before; /* a location is a step of work */
+        }
+        if (!moved) { /* back to the step's start, to step up to the kink under control */
+            sim->rejected_steps++;
+            continue;
+        }
         sim->steps += adaptive(sim) ? 1 : integ->substeps;
         int status = after_step(sim, t_before);
         if (status != FRICREG_OK)
@@ -624,12 +651,21 @@ int fricreg_sim_run(fricreg_sim *sim, double t_end)
                                                tol_rel);
     if (d == NULL)
         return fr_fail(sim, FRICREG_ENOMEM, "run: GSL driver allocation failed");
+    if (adaptive(sim) && sim->kink_location) { /* kinks.c */
+        sim->locate = fr_kinks_new(sim, d, integ);
+        status = sim->locate
+                     ? fr_kinks_start(sim->locate, sim)
+                     : fr_fail(sim, FRICREG_ENOMEM, "run: out of memory for %zu contacts", sim->m);
+    }
     sim->running = 1;
     sim->unchecked_eval = !adaptive(sim) && (integ->central || integ->fixed_type != NULL);
-    status = integrate(sim, d, integ, t_end, cycles);
+    if (status == FRICREG_OK)
+        status = integrate(sim, d, integ, t_end, cycles);
     sim->unchecked_eval = 0;
     sim->running = 0;
     sim->rejected_steps += (int64_t)d->e->failed_steps; /* the adaptive control's rejections */
+    fr_kinks_free(sim->locate);
+    sim->locate = NULL;
     gsl_odeiv2_driver_free(d);
     return status;
 }
@@ -682,6 +718,7 @@ int fricreg_sim_get_stat(const fricreg_sim *sim, int which, int64_t *value)
     case FRICREG_SIM_STAT_RHS_EVALS: *value = sim->rhs_evals; break;
     case FRICREG_SIM_STAT_CYCLES: *value = (int64_t)sim->cycles; break;
     case FRICREG_SIM_STAT_REJECTED_STEPS: *value = sim->rejected_steps; break;
+    case FRICREG_SIM_STAT_KINKS: *value = sim->kinks; break;
     default: return FRICREG_EINVAL;
     }
     return FRICREG_OK;

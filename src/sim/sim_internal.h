@@ -15,6 +15,8 @@
  * check; central_step.c's fused pass). */
 #define FR_SIM_STATE_LIMIT 1e100
 
+struct fr_kinks; /* kinks.c */
+
 struct fricreg_sim {
     struct fr_system sys; /* the system and its parameters */
     int law;
@@ -26,6 +28,7 @@ struct fricreg_sim {
     int integrator;
     double dt, rtol, atol;
     int64_t max_steps; /* adaptive steps of one forcing cycle (0: no bound; -1: the law's) */
+    int kink_location; /* adaptive steps stop at the law's kinks (kinks.c); 1 by default */
     fricreg_sim_observer observer;
     void *observer_user;
 
@@ -45,8 +48,9 @@ struct fricreg_sim {
     struct fr_jacobian *jac; /* the analytic Jacobian's maps, made at its first use */
     size_t cycles;
     double t;
-    int64_t steps, rhs_evals, rejected_steps; /* enum fricreg_sim_stat */
-    int rhs_status;                           /* fricreg status raised inside the right-hand side */
+    int64_t steps, rhs_evals, rejected_steps, kinks; /* enum fricreg_sim_stat */
+    struct fr_kinks *locate;  /* kinks.c: during an adaptive run with kink location, else NULL */
+    int rhs_status;           /* fricreg status raised inside the right-hand side */
     size_t bad_contact;       /* with FRICREG_ENONFINITE: the first contact that overflowed */
     struct fr_extrap *extrap; /* extrapolate.c: the last fricreg_sim_run_extrapolated */
     /* Set by a step that made the after-step checks in its own last pass (central_step.c):
