@@ -457,32 +457,6 @@ static void op_eval(struct fuzz_input *in, fricreg_disk_ctx *ctx, struct model *
     check_forces(md, zdot, a_free, f);
 }
 
-/* A lower bound of cond(W): (max_k L_kk / min_k L_kk)^2 of W's Cholesky factor, which is at
- * least max W_ii / min W_ii; INFINITY where a pivot is not positive (W singular to rounding:
- * equal rows of contacts that depend on each other). */
-static double condition_bound(const struct model *md)
-{
-    size_t nn = 2 * md->m;
-    double L[MAX_N * MAX_N], lo = INFINITY, hi = 0.0;
-    for (size_t j = 0; j < nn; j++) {
-        double d = md->W[j * nn + j];
-        for (size_t k = 0; k < j; k++)
-            d -= L[j * nn + k] * L[j * nn + k];
-        if (!(d > 0.0))
-            return INFINITY;
-        L[j * nn + j] = sqrt(d);
-        lo = fmin(lo, L[j * nn + j]);
-        hi = fmax(hi, L[j * nn + j]);
-        for (size_t i = j + 1; i < nn; i++) {
-            double x = md->W[i * nn + j];
-            for (size_t k = 0; k < j; k++)
-                x -= L[i * nn + k] * L[j * nn + k];
-            L[i * nn + j] = x / L[j * nn + j];
-        }
-    }
-    return (hi / lo) * (hi / lo);
-}
-
 static void op_tangent(struct fuzz_input *in, fricreg_disk_ctx *ctx, struct model *md)
 {
     size_t m = fuzz_size(in, md->m), nn = 4 * md->m * md->m;
@@ -512,11 +486,15 @@ static void op_tangent(struct fuzz_input *in, fricreg_disk_ctx *ctx, struct mode
                  "tangent wrote past (2m)^2");
     /* The tangent of the last successful eval: the same bits again, and after a failed eval
      * (its state rebuilt by a sweep from the kept forces) the same to 1e-9 of its largest
-     * entry, or to the rounding a rebuild meets on an ill-conditioned W: 64 eps times a
-     * lower bound of cond(W) (a finding: 2.3e10, moved by 1.1e-9); on a W singular to
-     * rounding the forces, and so the tangent, are not unique, and a rebuild may find others
-     * (a finding: equal rows, moved by 0.3 of its largest entry): not compared. */
-    double rebuild_tol = fmax(1e-9, 64.0 * DBL_EPSILON * condition_bound(md));
+     * entry, or to the rounding a rebuild meets on an ill-conditioned W: 64 eps times its
+     * scaled condition number (a finding: W's diagonal from 17 to 3.9e11, the tangent moved by
+     * 1.1e-9); on a W singular to rounding the forces, and so the tangent, are not unique, and
+     * a rebuild may find others (a finding: equal rows, moved by 0.3 of its largest entry):
+     * not compared. */
+    int every[MAX_M];
+    for (size_t i = 0; i < md->m; i++)
+        every[i] = 1;
+    double rebuild_tol = fmax(1e-9, 64.0 * DBL_EPSILON * scaled_condition(md, every));
     for (int w = 0; w < 2; w++) {
         const double *T = w ? da : dz;
         if (!(which >> w & 1))
