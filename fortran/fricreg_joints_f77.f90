@@ -39,6 +39,7 @@
 !   FRAFFR(H, STAT)                                  _free, then H = 0
 !   FRAFJE(H, KT, MUN, NC, U, F, JAC, STAT)          _jenkins_exact
 !   FRAFJS(H, KT, MUN, NC, U, F, JAC, STAT)          _jenkins_sampled
+!   FRAFJN(H, KT, MU, N0, KN, NC, U, G, F, NF, JAC, STAT)  _jenkins_normal_sampled
 !   FRAFIE(H, NS, K, PHI, NC, U, F, JAC, STAT)       _iwan_exact
 !   FRAFIS(H, NS, K, PHI, NC, U, F, JAC, STAT)       _iwan_sampled
 !   FRAFER(H, CODE, MSG, STAT)                       _errcode, _errmsg
@@ -361,6 +362,24 @@ subroutine frafjs(h, kt, mun, nc, u, f, jac, stat)
                                          u, f, jac))
   if (stat == FRICREG_OK) call fricreg_transpose(jac, int(nc, c_size_t))
 end subroutine frafjs
+
+!> FRAFJN(H, KT, MU, N0, KN, NC, U, G, F, NF, JAC, STAT): the sampled AFT of one Jenkins
+!> element under normal load with lift-off (bound MU max(0, N0 + KN G)): from U(NC) and the
+!> normal displacement's G(NC), the tangential force's F(NC), the normal force's NF(NC) and
+!> JAC(2 NC, 2 NC), column-major, rows (F, NF) and columns (U, G): JAC(I, J) = dF(I)/dU(J),
+!> JAC(I, NC + J) = dF(I)/dG(J), JAC(NC + I, NC + J) = dNF(I)/dG(J).
+subroutine frafjn(h, kt, mu, n0, kn, nc, u, g, f, nf, jac, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  double precision, intent(in) :: kt, mu, n0, kn, u(*), g(*)
+  integer, intent(in) :: nc
+  double precision, intent(inout) :: f(*), nf(*), jac(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_aft_jenkins_normal_sampled(fricreg_handle_to_ptr(h), kt, mu, n0, kn, &
+                                                int(nc, c_size_t), u, g, f, nf, jac))
+  if (stat == FRICREG_OK) call fricreg_transpose(jac, 2 * int(nc, c_size_t))
+end subroutine frafjn
 
 !> FRAFIE(H, NS, K, PHI, NC, U, F, JAC, STAT): exact AFT of one Iwan element of NS sliders
 !> K(NS) > 0, PHI(NS) >= 0, as FRAFJE.
