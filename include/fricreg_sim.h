@@ -170,6 +170,44 @@ FRICREG_API int fricreg_sim_set_partition(fricreg_sim *sim, int partition);
 FRICREG_API int fricreg_sim_set_integrator(fricreg_sim *sim, int integrator, double dt, double rtol,
                                            double atol);
 
+/** The atol of fricreg_sim_set_integrator that selects absolute tolerances per component
+ *  derived from eps (fricreg_sim_get_abs_tolerances gives them). Since 1.6 (FRICREG_1.6). */
+#define FRICREG_ATOL_FROM_EPS (-1.0)
+
+/** Set an absolute tolerance per state component, as SUNDIALS' CVodeSVtolerances does:
+ *  an adaptive step is accepted where |error_i| <= atol[i] + rtol |y_i| in every component i
+ *  (rtol from fricreg_sim_set_integrator, whose atol this replaces; a later
+ *  fricreg_sim_set_integrator replaces these in turn). The state is y = (x, v, D): ndof body
+ *  positions (length, as the system's), ndof velocities (length/time) and the dissipated
+ *  energy D (force x length), n = 2 ndof + 1 components. The run is adaptive even with
+ *  rtol = 0. Discards any results.
+ *
+ *  sim   in/out: the simulation.
+ *  n     in: 2 fricreg_sim_ndof(sim) + 1 (a chain whose n changes afterwards is refused by
+ *        fricreg_sim_run until they are set again).
+ *  atol  in: atol[n], each finite and > 0; copied.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if sim or atol is NULL; FRICREG_ESIZE if n is not
+ *  2 ndof + 1; FRICREG_ENONFINITE for an entry not finite; FRICREG_EINVAL for an entry <= 0,
+ *  with FRICREG_INT_CENTRAL or FRICREG_INT_CENTRAL_IMEX (fixed steps only), or when called
+ *  from the observer during a run; FRICREG_ENOMEM. On failure nothing is changed.
+ *  Since 1.6 (FRICREG_1.6). */
+FRICREG_API int fricreg_sim_set_abs_tolerances(fricreg_sim *sim, size_t n, const double atol[]);
+
+/** Copy the absolute tolerances an adaptive run of sim uses, per component of y = (x, v, D)
+ *  (see fricreg_sim_set_abs_tolerances), at the eps in use (FRICREG_VALUE_EPS): those set by
+ *  fricreg_sim_set_abs_tolerances, the one atol of fricreg_sim_set_integrator in every
+ *  component, or under FRICREG_ATOL_FROM_EPS the rule's; zeros for a fixed-step run.
+ *
+ *  sim   in: the simulation; not modified.
+ *  n     in: 2 fricreg_sim_ndof(sim) + 1.
+ *  atol  out: atol[n]; written only on success.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if sim or atol is NULL; FRICREG_ESIZE if n is not
+ *  2 ndof + 1 (or not the length set, for a chain whose n changed since). Since 1.6
+ *  (FRICREG_1.6). */
+FRICREG_API int fricreg_sim_get_abs_tolerances(const fricreg_sim *sim, size_t n, double atol[]);
+
 /** Called after every accepted step with the state at time t: the ndof body positions x and
  *  velocities v, and the m contact friction forces f and f_eq (NaN where not computed, as in
  *  fricreg_ctx_eval), all evaluated at (t, x, v). The arrays are valid during the call only.
