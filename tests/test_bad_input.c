@@ -489,6 +489,10 @@ static int w_sim_get_abs_tolerances(void)
 {
     return fricreg_sim_get_abs_tolerances(SIM(), Z(0, 3), OUTD(1));
 }
+static int w_sim_set_max_steps(void)
+{
+    return fricreg_sim_set_max_steps(SIM(), N(0, 1000));
+}
 static int w_sim_set_kink_location(void)
 {
     return fricreg_sim_set_kink_location(SIM(), N(0, 0));
@@ -602,6 +606,10 @@ static int w_st_set_hht(void)
 static int w_st_set_central_difference(void)
 {
     return fricreg_structure_set_central_difference(ST());
+}
+static int w_st_set_max_steps(void)
+{
+    return fricreg_structure_set_max_steps(ST(), N(0, 1000));
 }
 static int w_st_set_newton(void)
 {
@@ -859,6 +867,13 @@ static int w_aft_jenkins_sampled(void)
 {
     return fricreg_aft_jenkins_sampled(AFT(), D(0, 2.385), D(1, 0.5), Z(0, 5), A(1, AFT_U, 5),
                                        OUTD(2), OUTD(3));
+}
+static const double AFT_G[5] = {0.1, 0.2, 0.0, 0.05, 0.0}; /* a normal displacement, H = 2 */
+static int w_aft_jenkins_normal_sampled(void)
+{
+    return fricreg_aft_jenkins_normal_sampled(AFT(), D(0, 2.385), D(1, 0.5), D(2, 1.0), D(3, 1.0),
+                                              Z(0, 5), A(1, AFT_U, 5), A(2, AFT_G, 5), OUTD(3),
+                                              OUTD(4), OUTD(5));
 }
 static int w_aft_iwan_exact(void)
 {
@@ -1267,6 +1282,13 @@ static const struct row rows[] = {
      AFT_REC,
      {HANDLE, DBL(0, "nnniion"), DBL(1, "nnniooo"), SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnooon"),
       PTR(2, "0"), PTR(3, "o")}},
+    {"fricreg_aft_jenkins_normal_sampled",
+     w_aft_jenkins_normal_sampled,
+     "0nis",
+     AFT_REC,
+     {HANDLE, DBL(0, "nnniion"), DBL(1, "nnnioon"), DBL(2, "nnnooon"), DBL(3, "nnnioon"),
+      SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnooon"), PTR(2, "0"), ARR(2, "nnooon"), PTR(3, "0"),
+      PTR(4, "0"), PTR(5, "o")}},
     {"fricreg_aft_iwan_exact",
      w_aft_iwan_exact,
      "0nist",
@@ -1352,6 +1374,7 @@ static const struct row rows[] = {
      "0s",
      NONE,
      {HANDLE, SIZE(0, "ssss"), PTR(1, "0")}},
+    {"fricreg_sim_set_max_steps", w_sim_set_max_steps, "0i", SIM_REC, {HANDLE, INT(0, "iooi")}},
     {"fricreg_sim_set_kink_location",
      w_sim_set_kink_location,
      "0i",
@@ -1471,6 +1494,7 @@ static const struct row rows[] = {
      "0",
      ST_REC,
      {HANDLE}},
+    {"fricreg_structure_set_max_steps", w_st_set_max_steps, "0i", ST_REC, {HANDLE, INT(0, "iooi")}},
     {"fricreg_structure_set_newton",
      w_st_set_newton,
      "0ni",

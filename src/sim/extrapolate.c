@@ -67,6 +67,7 @@ static int make_level(const fricreg_sim *sim, int k, fricreg_sim **out)
         level->atol_n = sim->atol_n;
     }
     level->kink_location = sim->kink_location;
+    level->max_steps = sim->max_steps; /* the caller's bound holds on every level */
     *out = level;
     return FRICREG_OK;
 }
