@@ -221,9 +221,9 @@ FRICREG_API int fricreg_aft_iwan_sampled(fricreg_aft *aft, size_t ns, const doub
  *  before anything is computed or written. Cost O(N H) per period marched for f and N,
  *  O(N H log N) with jac; no allocation. Since 1.6. */
 FRICREG_API int fricreg_aft_jenkins_normal_sampled(fricreg_aft *aft, double kt, double mu,
-                                                   double n0, double kn, size_t n,
-                                                   const double u[], const double g[],
-                                                   double f[], double nf[], double jac[]);
+                                                   double n0, double kn, size_t n, const double u[],
+                                                   const double g[], double f[], double nf[],
+                                                   double jac[]);
 
 /** Status of the last failed call on aft. Returns that code, or FRICREG_OK if none (or aft
  *  NULL). A successful call does not clear it. Since 1.6. */
