@@ -4,12 +4,15 @@
 # ranks, in one run so that both see the same machine: the median of REPS runs each of
 #  - strong scaling: the NX x NX grid on 1 rank, then on 2 (the speed-up, 1 rank / 2 ranks);
 #  - weak scaling: NX x NX/2 on 1 rank against NX x NX on 2 (the same nodes per rank).
-# Prints each run's line and a table of medians. A figure, not a test (docs/distributed.md).
+# Prints each run's line and a table of medians. A figure, not a test (docs/distributed.md):
+# run it on idle cores, since a rank that shares its core with another job makes 2 ranks
+# slower than 1.
 # Usage: bench/petsc_scaling.sh BUILD_DIR [NX] [REPS] [CYCLES]
 build=$1 nx=${2:-1000} reps=${3:-3} cycles=${4:-1}
 grid=$build/examples/petsc/petsc_grid
 [ -x "$grid" ] || { echo "no $grid: build with PETSc (cmake -DFRICREG_PETSC=ON)"; exit 1; }
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+export OMPI_MCA_mpi_yield_when_idle=1
 median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 seconds() { # ranks ny: the median seconds of reps runs
     for r in $(seq "$reps"); do
