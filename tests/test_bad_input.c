@@ -900,7 +900,7 @@ enum owner {
     AFT_REC
 };
 
-#define MAXARGS 12
+#define MAXARGS 13
 struct arg {
     enum kind kind;
     int slot;
