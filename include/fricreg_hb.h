@@ -82,7 +82,7 @@ typedef struct fricreg_hb fricreg_hb;
  *  Defaults: M = I, C = 0, K = 0 (set_stiffness before solving: K must be nonsingular), J
  *  unset (fricreg_hb_set_elements before solving), no excitation, Newton tolerance 1e-10 with
  *  at most 50 iterations, continuation steps ds = 0.02, between 1e-6 and 0.1, at most 2000
- *  points. All memory but the continuation's points is allocated here:
+ *  points. All memory but the continuation's points (fricreg_hb_continue) is allocated here:
  *  O(H ndof² + H m ndof + (m H)²) doubles.
  *
  *  ndof       degrees of freedom, 1 <= ndof <= 4096 (dense matrices).
@@ -240,8 +240,10 @@ FRICREG_API int fricreg_hb_displacement(fricreg_hb *hb, size_t ndof, size_t nc, 
  *  q0[j] is NaN or infinite; FRICREG_ESIZE if nq is not m (2H + 1); FRICREG_ESINGULAR,
  *  FRICREG_EWORK, FRICREG_EINTEGRATOR as fricreg_hb_solve at omega0; FRICREG_EINTEGRATOR if
  *  the step fell below ds_min; FRICREG_EWORK if max_points were stored before omega1;
- *  FRICREG_ENOMEM. On failure the points reached so far are kept (fricreg_hb_points counts
- *  them) and fricreg_hb_displacement gives the last. Since 1.6. */
+ *  FRICREG_ENOMEM (for the first 64 points before anything changed; for more, later, with the
+ *  points so far kept). On failure the points reached so far are kept (fricreg_hb_points
+ *  counts them; 0 if the solve at omega0 failed) and fricreg_hb_displacement gives the last
+ *  solution. Allocates room for the points, 64 at first, doubling. Since 1.6. */
 FRICREG_API int fricreg_hb_continue(fricreg_hb *hb, double omega0, double omega1, size_t nq,
                                     const double q0[]);
 

@@ -20,19 +20,27 @@ struct branch {
     char why[256]; /* the last failed step's message */
 };
 
+/* Room for `want` points (at most max_points), kept on failure: FRICREG_ENOMEM. */
+static int reserve(fricreg_hb *hb, size_t want)
+{
+    if (want > hb->max_points)
+        want = hb->max_points;
+    if (want <= hb->cap)
+        return FRICREG_OK;
+    double *p = realloc(hb->pts, want * (1 + hb->n) * sizeof(double));
+    if (p == NULL)
+        return fr_fail(hb, FRICREG_ENOMEM, "continue: no memory for %zu points", want);
+    hb->pts = p;
+    hb->cap = want;
+    return FRICREG_OK;
+}
+
 static int store_point(fricreg_hb *hb, double omega)
 {
     size_t w = 1 + hb->n;
-    if (hb->npts == hb->cap) {
-        size_t cap = hb->cap ? 2 * hb->cap : 64;
-        if (cap > hb->max_points)
-            cap = hb->max_points;
-        double *p = realloc(hb->pts, cap * w * sizeof(double));
-        if (p == NULL)
-            return fr_fail(hb, FRICREG_ENOMEM, "continue: no memory for %zu points", cap);
-        hb->pts = p;
-        hb->cap = cap;
-    }
+    int status = hb->npts < hb->cap ? FRICREG_OK : reserve(hb, 2 * hb->cap);
+    if (status != FRICREG_OK)
+        return status;
     hb->pts[hb->npts * w] = omega;
     fr_hb_rms(hb, hb->pts + hb->npts * w + 1);
     hb->npts++;
@@ -190,7 +198,8 @@ int fricreg_hb_continue(fricreg_hb *hb, double omega0, double omega1, size_t nq,
     if (status == FRICREG_OK && (!(omega1 > 0.0) || omega1 == omega0))
         status = fr_fail(hb, FRICREG_EINVAL, "%s: Omega1 = %g must be > 0 and differ from %g", fn,
                          omega1, omega0);
-    if (status != FRICREG_OK)
+    /* the first 64 points' room before anything changes: a failure here changes nothing */
+    if (status != FRICREG_OK || (status = reserve(hb, 64)) != FRICREG_OK)
         return status;
     hb->npts = 0;
     if ((status = fr_hb_solve_at(hb, fn, omega0, q0)) != FRICREG_OK)
