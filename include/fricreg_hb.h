@@ -172,9 +172,10 @@ FRICREG_API int fricreg_hb_set_excitation(fricreg_hb *hb, size_t ndof, const dou
 FRICREG_API int fricreg_hb_set_newton(fricreg_hb *hb, double tol, int max_iter);
 
 /** The continuation's step control, in the arclength of the scaled unknowns (q divided by the
- *  largest |q| of the starting solution, Ω by |Ω1 − Ω0|, so ds = 0.01 is about a hundredth of
- *  the interval on a flat branch): start at ds, grow by 1.5 (up to ds_max) after a corrector
- *  that converged within 4 iterations, halve after one that failed; below ds_min the
+ *  largest |q| of the starting solution, raised to the largest |q| reached along the branch, Ω
+ *  by |Ω1 − Ω0|, so ds = 0.01 is about a hundredth of the interval on a flat branch): start at ds, grow by 1.5 (up to ds_max) after a corrector
+ *  that converged within 4 iterations, halve after one that failed or ended farther than ds/2
+ *  from its predictor (it would have jumped along the branch, e.g. across a sharp peak); below ds_min the
  *  continuation stops with FRICREG_EINTEGRATOR.
  *
  *  ds          first step, ds_min <= ds <= ds_max (finite).
@@ -202,7 +203,8 @@ FRICREG_API int fricreg_hb_set_continuation(fricreg_hb *hb, double ds, double ds
  *  Returns FRICREG_OK; FRICREG_ENULL if hb or q is NULL; FRICREG_EINVAL if omega <= 0 or
  *  the elements were not set; FRICREG_ENONFINITE if omega or some q0[j] is NaN or infinite;
  *  FRICREG_ESIZE if nq is not m (2H + 1); FRICREG_ESINGULAR if K or some D_h(Ω) is singular
- *  (a pivot of its LU factor below 1e-14 of the matrix's largest entry; header comment), or
+ *  (a pivot of its LU factor below 1e-14 of the largest entry of |K| + (hΩ)² |M| + hΩ |C|;
+ *  header comment), or
  *  Newton's matrix is; FRICREG_EWORK if Newton did not converge within max_iter iterations
  *  (or its line search found no decrease); FRICREG_EINTEGRATOR if the AFT's root solver
  *  failed (fricreg_aft_jenkins_exact). On failure q and the kept solution are untouched. Since

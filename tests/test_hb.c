@@ -500,6 +500,17 @@ START_TEST(bad_input)
     ck_assert_int_eq(fricreg_hb_continue(hb, 0.5, 1.5, nq, NULL), FRICREG_EWORK);
     ck_assert_uint_eq(fricreg_hb_points(hb), 3);
     ck_assert_int_eq(fricreg_hb_displacement(hb, 3, 7, x), FRICREG_OK);
+    /* a corrector allowed one iteration never converges (the stuck start does, being linear
+     * in q): the step halves below ds_min */
+    struct model lin = chain();
+    lin.mun[0] = lin.mun[1] = 1e6;
+    fricreg_hb *hl = make(&lin, 3, 1);
+    ck_assert_int_eq(fricreg_hb_set_newton(hl, 1e-10, 1), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_continuation(hl, 0.5, 0.5, 0.5, 100), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_continue(hl, 0.5, 1.5, nq, NULL), FRICREG_EINTEGRATOR);
+    ck_assert_ptr_nonnull(strstr(fricreg_hb_errmsg(hl), "ds_min"));
+    ck_assert_uint_eq(fricreg_hb_points(hl), 1);
+    fricreg_hb_free(hl);
     /* the points' getter */
     double r[3] = {SENTINEL, SENTINEL, SENTINEL};
     om = SENTINEL;

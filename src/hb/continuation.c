@@ -2,9 +2,10 @@
 /* continuation.c — the frequency response by pseudo-arclength continuation (H. B. Keller,
  * "Numerical solution of bifurcation and nonlinear eigenvalue problems", 1977; Krack & Gross
  * 2019, Ch. 5) on the scaled unknowns y = (q/qs, Ω/ws), qs the starting solution's displacement
- * scale, ws = |Ω1 − Ω0|: the tangent t from [R_q R_Ω; t_prev^T] t = [0; 1], normalized; the
+ * scale raised to the largest |q| the branch reaches, ws = |Ω1 − Ω0|: the tangent t from [R_q R_Ω; t_prev^T] t = [0; 1], normalized; the
  * predictor y + ds t; the corrector Newton's method on (R) bordered by t^T (y − y_pred) = 0; the
- * step grown by 1.5 after a quick corrector, halved after a failed one. The points' Ω and RMS
+ * step grown by 1.5 after a quick corrector, halved after a failed one or one that ended
+ * farther than ds/2 from its predictor. The points' Ω and RMS
  * are stored, and the getters. */
 #include <math.h>
 #include <stdio.h>
@@ -128,6 +129,21 @@ static int corrector(fricreg_hb *hb, const char *fn, const struct branch *b, int
     }
 }
 
+/* A corrector that ends farther than ds/2 from its predictor has left the branch's
+ * neighbourhood (on a sharp peak the hyperplane t^T (y − y_pred) = 0 meets the branch again
+ * beyond the peak, and Newton may go there): the step counts as failed, so it is halved. */
+static int close_to_predictor(fricreg_hb *hb, const char *fn, const struct branch *b, double ds)
+{
+    double d = 0.0;
+    for (size_t j = 0; j <= hb->nq; j++)
+        d += (hb->qw[j] - b->yp[j]) * (hb->qw[j] - b->yp[j]);
+    if (sqrt(d) > 0.5 * ds)
+        return fr_fail(hb, FRICREG_EWORK,
+                       "%s: the corrector ended %g from its predictor, beyond ds/2 = %g", fn,
+                       sqrt(d), 0.5 * ds);
+    return FRICREG_OK;
+}
+
 /* The last step: the point at omega1 by Newton at fixed Ω, from the tangent's line there. */
 static int final_point(fricreg_hb *hb, const char *fn, const struct branch *b, double omega1)
 {
@@ -154,6 +170,28 @@ static int shrink(fricreg_hb *hb, const char *fn, struct branch *b, double *ds)
     return FRICREG_OK;
 }
 
+/* The displacement scale follows the branch up: qs = the largest |q| so far, so that a branch
+ * that starts far below a resonance takes steps in proportion to the amplitudes it reaches
+ * (the point qw and the tangent converted to the new scale). */
+static void rescale(fricreg_hb *hb, struct branch *b)
+{
+    size_t nq = hb->nq;
+    double top = 0.0, norm = 0.0;
+    for (size_t j = 0; j < nq; j++)
+        top = fmax(top, fabs(hb->qw[j]));
+    if (!(top > 1.0))
+        return;
+    for (size_t j = 0; j < nq; j++) {
+        hb->qw[j] /= top;
+        hb->tan[j] /= top;
+    }
+    for (size_t j = 0; j <= nq; j++)
+        norm += hb->tan[j] * hb->tan[j];
+    for (size_t j = 0; j <= nq; j++)
+        hb->tan[j] /= sqrt(norm);
+    b->qs *= top;
+}
+
 static int follow(fricreg_hb *hb, const char *fn, struct branch *b, double omega1)
 {
     size_t nq = hb->nq;
@@ -171,6 +209,8 @@ static int follow(fricreg_hb *hb, const char *fn, struct branch *b, double omega
             b->yp[j] = b->yc[j] + ds * hb->tan[j];
         int last = dir * (b->yp[nq] * b->ws - omega1) >= 0.0;
         status = last ? final_point(hb, fn, b, omega1) : corrector(hb, fn, b, &its);
+        if (status == FRICREG_OK && !last)
+            status = close_to_predictor(hb, fn, b, ds);
         if (status == FRICREG_ENOMEM)
             return status;
         if (status != FRICREG_OK) {
@@ -181,6 +221,7 @@ static int follow(fricreg_hb *hb, const char *fn, struct branch *b, double omega
         double omega = last ? omega1 : hb->qw[nq] * b->ws;
         if ((status = store_point(hb, omega)) != FRICREG_OK || last)
             return status;
+        rescale(hb, b);
         memcpy(b->yc, hb->qw, (nq + 1) * sizeof(double));
         if (its <= 4)
             ds = fmin(1.5 * ds, hb->ds_max);

@@ -28,7 +28,7 @@ static double damping(const fricreg_hb *hb, size_t idx)
 }
 
 /* Forms and factors D_h in hb->D; FRICREG_ESINGULAR if a pivot is below 1e-14 of the largest
- * entry (or not finite). */
+ * entry of |K| + w² |M| + w |C| (or not finite). */
 static int factor_one(fricreg_hb *hb, const char *fn, int h, double omega)
 {
     size_t n = hb->n;
@@ -36,7 +36,8 @@ static int factor_one(fricreg_hb *hb, const char *fn, int h, double omega)
     for (size_t k = 0; k < n * n; k++) {
         hb->D[2 * k] = hb->K[k] - w * w * hb->M[k];
         hb->D[2 * k + 1] = w * damping(hb, k);
-        dmax = fmax(dmax, hypot(hb->D[2 * k], hb->D[2 * k + 1]));
+        /* the scale of the terms, not of their sum: K − w² M cancels at a resonance */
+        dmax = fmax(dmax, fabs(hb->K[k]) + w * w * fabs(hb->M[k]) + fabs(hb->D[2 * k + 1]));
     }
     gsl_matrix_complex_view D = gsl_matrix_complex_view_array(hb->D, n, n);
     int signum;
@@ -46,7 +47,7 @@ static int factor_one(fricreg_hb *hb, const char *fn, int h, double omega)
         if (!(p > 1e-14 * dmax) || !isfinite(p))
             return fr_fail(hb, FRICREG_ESINGULAR,
                            "%s: %s is singular at Omega = %g (pivot %zu of its LU factor: %g, "
-                           "largest entry %g)",
+                           "the matrices' scale %g)",
                            fn, h == 0 ? "K" : "the dynamic stiffness D_h", omega, k, p, dmax);
     }
     return FRICREG_OK;
