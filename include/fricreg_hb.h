@@ -83,7 +83,8 @@ typedef struct fricreg_hb fricreg_hb;
  *  unset (fricreg_hb_set_elements before solving), no excitation, Newton tolerance 1e-10 with
  *  at most 50 iterations, continuation steps ds = 0.02, between 1e-6 and 0.1, at most 2000
  *  points. All memory but the continuation's points (fricreg_hb_continue) is allocated here:
- *  O(H ndof² + H m ndof + (m H)²) doubles.
+ *  O(ndof² + H m ndof + (m H)²) doubles (one D_h at a time; the
+ *  solves Y_h of every harmonic).
  *
  *  ndof       degrees of freedom, 1 <= ndof <= 4096 (dense matrices).
  *  m          Jenkins elements, 1 <= m <= 256.
