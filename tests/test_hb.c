@@ -406,6 +406,19 @@ START_TEST(continuation_over_resonance)
     ck_assert_double_le(best, peak * 1.01);
     ck_assert_double_ge(w_best, w_lo);
     ck_assert_double_le(w_best, w_hi);
+    /* downwards, from the last point's solution: the same ends, the same peak */
+    double q1[2 * 15], back = 0.0;
+    ck_assert_int_eq(fricreg_hb_solve(hb, omega1, s.m * 15, NULL, q1), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_continue(hb, omega1, omega0, s.m * 15, q1), FRICREG_OK);
+    np = fricreg_hb_points(hb);
+    ck_assert_int_eq(fricreg_hb_point(hb, 0, &first, s.n, rms), FRICREG_OK);
+    ck_assert_double_eq(first, omega1);
+    for (size_t k = 0; k < np; k++) {
+        ck_assert_int_eq(fricreg_hb_point(hb, k, &omega, s.n, rms), FRICREG_OK);
+        back = fmax(back, rms[0]);
+    }
+    ck_assert_double_eq(omega, omega0);
+    ck_assert_double_le(fabs(back - best), 0.01 * best);
     fricreg_hb_free(hb);
 }
 END_TEST
