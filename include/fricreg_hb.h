@@ -57,6 +57,7 @@
 #define FRICREG_HB_H
 
 #include "fricreg.h"
+#include "fricreg_aft.h" /* FRICREG_AFT_MAX_HARMONICS */
 
 #ifdef __cplusplus
 extern "C" {
@@ -73,8 +74,8 @@ extern "C" {
  *  factors of the last frequency, the last solution and the continuation's points. */
 typedef struct fricreg_hb fricreg_hb;
 
-/** Largest number of harmonics H of fricreg_hb_create: FRICREG_AFT_MAX_HARMONICS (40). */
-#define FRICREG_HB_MAX_HARMONICS 40
+/** Largest number of harmonics H of fricreg_hb_create: the exact AFT's, 40. */
+#define FRICREG_HB_MAX_HARMONICS FRICREG_AFT_MAX_HARMONICS
 
 /** Create a harmonic-balance driver for ndof degrees of freedom, m Jenkins elements and the
  *  harmonics 0..H.
