@@ -520,6 +520,9 @@ START_TEST(bad_input)
     ck_assert_int_eq(fricreg_hb_displacement(hb, 3, 7, x), FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_hb_set_newton(hb, 1e-10, 50), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_solve(hb, 1.05, nq, NULL, q), FRICREG_OK);
+    /* kept: the last failed call's (displacement's above), not the stuck guess's in this one */
+    ck_assert_int_eq(fricreg_hb_errcode(hb), FRICREG_EINVAL);
+    ck_assert_ptr_nonnull(strstr(fricreg_hb_errmsg(hb), "displacement: no solution"));
     /* the displacement's arguments */
     ck_assert_int_eq(fricreg_hb_displacement(NULL, 3, 7, x), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_hb_displacement(hb, 3, 7, NULL), FRICREG_ENULL);

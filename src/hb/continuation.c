@@ -253,7 +253,11 @@ int fricreg_hb_continue(fricreg_hb *hb, double omega0, double omega1, size_t nq,
     for (size_t j = 0; j < nq; j++)
         b.yc[j] = hb->qw[j] / b.qs;
     b.yc[nq] = omega0 / b.ws;
-    return follow(hb, fn, &b, omega1);
+    struct fr_error before = hb->err; /* a success keeps it: the halved steps' failures are not
+                                         the call's */
+    if ((status = follow(hb, fn, &b, omega1)) == FRICREG_OK)
+        hb->err = before;
+    return status;
 }
 
 size_t fricreg_hb_points(const fricreg_hb *hb)

@@ -138,10 +138,14 @@ int fricreg_hb_solve(fricreg_hb *hb, double omega, size_t nq, const double q0[],
         return FRICREG_ENULL;
     if (q == NULL)
         return fr_fail(hb, FRICREG_ENULL, "solve: q is NULL");
+    struct fr_error before = hb->err; /* a success keeps it: a first guess's failure is not
+                                         the call's */
     int status = fr_hb_check_start(hb, "solve", omega, nq, q0);
     if (status == FRICREG_OK)
         status = fr_hb_solve_at(hb, "solve", omega, q0);
-    if (status == FRICREG_OK)
+    if (status == FRICREG_OK) {
         memcpy(q, hb->qsol, nq * sizeof(double));
+        hb->err = before;
+    }
     return status;
 }
