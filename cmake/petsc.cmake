@@ -43,16 +43,30 @@ if(FRICREG_PETSC_BUILT)
     SOVERSION ${FRICREG_PETSC_SOVERSION}
     C_VISIBILITY_PRESET hidden
     LINK_DEPENDS ${FRICREG_PETSC_VERSION_SCRIPT})
-  install(TARGETS fricreg_petsc LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+  # Installed with its own export set: its link interface names PkgConfig::PETSC and
+  # MPI::MPI_C, which only a consumer that asks for the component (find_package(fricreg
+  # COMPONENTS petsc), fricregConfig.cmake) recreates. fricreg_petsc.pc for pkg-config.
+  set_target_properties(fricreg_petsc PROPERTIES EXPORT_NAME fricreg_petsc)
+  install(TARGETS fricreg_petsc EXPORT fricregPetscTargets
+          LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
   install(FILES include/fricreg_petsc.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  install(EXPORT fricregPetscTargets NAMESPACE fricreg::
+          DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/fricreg)
+  file(RELATIVE_PATH FRICREG_PC_TO_PREFIX "/${CMAKE_INSTALL_LIBDIR}/pkgconfig" "/")
+  configure_file(${PROJECT_SOURCE_DIR}/cmake/fricreg_petsc.pc.in
+                 ${PROJECT_BINARY_DIR}/fricreg_petsc.pc @ONLY)
+  install(FILES ${PROJECT_BINARY_DIR}/fricreg_petsc.pc
+          DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
 endif()
 
 # fricreg_mpi_test_properties(TEST RANKS TIMEOUT): label mpi, and the environment mpiexec
-# needs here: Open MPI refuses root unless told (CI runs as root), and a 2-rank run on a
-# machine that reports fewer free slots needs oversubscription.
+# needs here: Open MPI refuses root unless told (CI runs as root), a 2-rank run on a machine
+# that reports fewer free slots needs oversubscription, and a rank that waits yields its core
+# (mpi_yield_when_idle) rather than spin, which on a machine shared with other jobs makes two
+# ranks slower than one (docs/distributed.md, "Scaling on this machine").
 function(fricreg_mpi_test_properties test ranks timeout)
   set_tests_properties(${test} PROPERTIES LABELS mpi TIMEOUT ${timeout} PROCESSORS ${ranks}
-    ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_rmaps_base_oversubscribe=1")
+    ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_rmaps_base_oversubscribe=1;OMPI_MCA_mpi_yield_when_idle=1")
 endfunction()
 
 # fricreg_add_mpi_test(NAME RANKS TIMEOUT PROGRAM ARGS...): the test NAME_npRANKS, PROGRAM run

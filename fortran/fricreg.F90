@@ -269,6 +269,8 @@ module fricreg
     procedure :: set_observer => sim_set_observer
     procedure :: set_max_steps => sim_set_max_steps
     procedure :: set_kink_location => sim_set_kink_location
+    procedure :: set_abs_tolerances => sim_set_abs_tolerances
+    procedure :: get_abs_tolerances => sim_get_abs_tolerances
     procedure :: run => sim_run
     procedure :: run_cycles => sim_run_cycles
     procedure :: ndof => sim_ndof
@@ -1809,7 +1811,8 @@ contains
     if (status == FRICREG_OK) status = self%record(fricreg_sim_set_partition(self%ptr, partition))
   end function sim_set_partition
 
-  !> Integrator (FRICREG_INT_*), step dt > 0, and rtol, atol (both omitted or 0: fixed step).
+  !> Integrator (FRICREG_INT_*), step dt > 0, and rtol, atol (both omitted or 0: fixed step;
+  !> rtol > 0 without atol: the absolute tolerances from eps, FRICREG_ATOL_FROM_EPS).
   function sim_set_integrator(self, integrator, dt, rtol, atol) result(status)
     class(fricreg_simulation), intent(inout) :: self
     integer(c_int), intent(in) :: integrator
@@ -1817,9 +1820,13 @@ contains
     real(c_double), intent(in), optional :: rtol, atol
     integer(c_int) :: status
     real(c_double) :: r, a
+    ! FRICREG_ATOL_FROM_EPS of fricreg_sim.h (a double macro: gen_constants reads enums only);
+    ! test_sim.f90 checks that an absent atol gives the rule's tolerances.
+    real(c_double), parameter :: atol_from_eps = -1.0_c_double
     r = 0.0_c_double
     a = 0.0_c_double
     if (present(rtol)) r = rtol
+    if (r > 0.0_c_double) a = atol_from_eps
     if (present(atol)) a = atol
     status = self%ready('set_integrator', 'simulation')
     if (status == FRICREG_OK) &
@@ -1867,6 +1874,33 @@ contains
     if (status == FRICREG_OK) &
       status = self%record(fricreg_sim_set_kink_location(self%ptr, on))
   end function sim_set_kink_location
+
+  !> An absolute tolerance per component of the state y = (x, v, D), size 2 ndof + 1: ndof
+  !> positions, ndof velocities, then D; each finite and > 0; replaces set_integrator's atol
+  !> until the next set_integrator (fricreg_sim_set_abs_tolerances).
+  function sim_set_abs_tolerances(self, atol) result(status)
+    class(fricreg_simulation), intent(inout) :: self
+    real(c_double), intent(in), contiguous :: atol(:)
+    integer(c_int) :: status
+    status = self%ready('set_abs_tolerances', 'simulation')
+    if (status == FRICREG_OK) status = self%record(fricreg_sim_set_abs_tolerances(self%ptr, &
+                                           int(size(atol), c_size_t), atol))
+  end function sim_set_abs_tolerances
+
+  !> The absolute tolerances an adaptive run uses per component of y = (x, v, D), size
+  !> 2 ndof + 1: the rule from eps (set_integrator with rtol and no atol), the one atol, or
+  !> those of set_abs_tolerances; zeros for fixed steps (fricreg_sim_get_abs_tolerances).
+  function sim_get_abs_tolerances(self, atol) result(status)
+    class(fricreg_simulation), intent(inout) :: self
+    real(c_double), intent(inout), contiguous :: atol(:)
+    integer(c_int) :: status
+    integer(c_size_t) :: n
+    n = 2_c_size_t * fricreg_sim_ndof(self%ptr) + 1_c_size_t
+    status = self%ready('get_abs_tolerances', 'simulation')
+    if (status == FRICREG_OK) status = self%check_size('get_abs_tolerances', 'atol', size(atol), n)
+    if (status == FRICREG_OK) status = self%unrecorded('get_abs_tolerances', &
+                                           fricreg_sim_get_abs_tolerances(self%ptr, n, atol))
+  end function sim_get_abs_tolerances
 
   !> Integrate from t = 0 to t_end > 0 (see fricreg_sim_run for the returns).
   function sim_run(self, t_end) result(status)

@@ -54,7 +54,8 @@
  *     the DFT. The sampled path is the one to extend to laws without a closed form (a
  *     velocity-only law of fricreg.h needs only f(u'(θ)) at the samples); here it serves the
  *     Jenkins and Iwan elements, beside the exact path, for comparison.
- * Lift-off (a normal displacement) and 2-D elements are not supported by either path yet.
+ * Lift-off (a normal displacement): the sampled path only, fricreg_aft_jenkins_normal_sampled;
+ * 2-D elements: neither path yet.
  *
  * One object for both paths, with the harmonics H and the samples N fixed at create: it holds
  * every buffer an evaluation needs (the companion matrix, the roots, the pieces, the samples,
@@ -185,6 +186,44 @@ FRICREG_API int fricreg_aft_iwan_exact(fricreg_aft *aft, size_t ns, const double
 FRICREG_API int fricreg_aft_iwan_sampled(fricreg_aft *aft, size_t ns, const double k[],
                                          const double phi[], size_t n, const double u[], double f[],
                                          double jac[]);
+
+/** Sampled AFT of one 1-D Jenkins element under normal load with lift-off: the slip bound
+ *  mu N with N = max(0, N0 + kn g) of fricreg_jenkins_set_normal, for a tangential
+ *  displacement u and a normal one g (positive pressing) given by their coefficients. Returns
+ *  the coefficients of the tangential force f and of the normal force N over the periodic
+ *  response, and their Jacobian. Where the contact opens (N0 + kn g < 0) f = 0 and the slider
+ *  follows u (its memory reset), so the response is periodic from the last opening; without
+ *  an opening the bound moves with g, and the periodic state is marched to (up to 16
+ *  periods, until the slider repeats to the bit), with the centred slider of the header
+ *  comment for a period that sticks throughout. With kn = 0 and N0 >= 0 it equals
+ *  fricreg_aft_jenkins_sampled at mun = mu N0 to the bit. Sampling error O(N^-2), as the
+ *  sampled path; the exact path does not take a normal displacement yet.
+ *
+ *  kt     tangential stiffness > 0 (finite), force per unit displacement.
+ *  mu     friction coefficient >= 0 (finite), nondimensional.
+ *  n0     preload N0 (finite), force units: the normal force at g = 0 (negative: open at g = 0).
+ *  kn     normal stiffness >= 0 (finite), force per unit displacement.
+ *  n      must equal 2H + 1.
+ *  u[n]   tangential displacement coefficients (u0, a_1, b_1, ...), finite.
+ *  g[n]   normal displacement coefficients, same layout, finite.
+ *  f[n]   out: tangential force coefficients, force units.
+ *  nf[n]  out: normal force coefficients of N(θ) = max(0, N0 + kn g(θ)), force units.
+ *  jac[2n 2n]  out, or NULL if not wanted: row-major, rows (f, nf), columns (u, g):
+ *         jac[2n i + j] = ∂f[i]/∂u[j], jac[2n i + n + j] = ∂f[i]/∂g[j],
+ *         jac[2n (n + i) + n + j] = ∂nf[i]/∂g[j], and ∂nf/∂u = 0; one-sided at the samples'
+ *         switches as fricreg_aft_jenkins_sampled's.
+ *  The outputs are written after u and g are read: they may alias them.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if aft, u, g, f or nf is NULL; FRICREG_EINVAL if the
+ *  object was created with N = 0, kt <= 0, mu < 0 or kn < 0; FRICREG_ESIZE if n is not
+ *  2H + 1; FRICREG_ENONFINITE if kt, mu, n0, kn, some u[j] or g[j] is NaN or infinite, or the
+ *  scales 8 kt sum |u[j]| or 8 (1 + mu)(|n0| + kn sum |g[j]|) overflow. All inputs are checked
+ *  before anything is computed or written. Cost O(N H) per period marched for f and N,
+ *  O(N H log N) with jac; no allocation. Since 1.6. */
+FRICREG_API int fricreg_aft_jenkins_normal_sampled(fricreg_aft *aft, double kt, double mu,
+                                                   double n0, double kn, size_t n, const double u[],
+                                                   const double g[], double f[], double nf[],
+                                                   double jac[]);
 
 /** Status of the last failed call on aft. Returns that code, or FRICREG_OK if none (or aft
  *  NULL). A successful call does not clear it. Since 1.6. */

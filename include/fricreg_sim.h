@@ -154,7 +154,18 @@ FRICREG_API int fricreg_sim_set_partition(fricreg_sim *sim, int partition);
 
 /** Select the integrator (enum fricreg_integrator) and its step control.
  *  rtol = atol = 0: fixed step dt > 0 (each cycle's last step is shortened to end on the cycle
- *  boundary). Otherwise adaptive with GSL's standard control (|error| <= atol + rtol |y|),
+ *  boundary). atol = FRICREG_ATOL_FROM_EPS (-1) with rtol > 0: adaptive with absolute
+ *  tolerances per component derived from eps (since 1.6, FRICREG_1.6; the one that holds for
+ *  coupled contacts): each body velocity is held to
+ *  atol_v = min(1e-3 eps, rtol x 1 velocity unit) absolutely, with no relative part, and
+ *  positions and D to rtol + rtol |y_i| (GSL's standard level with atol = rtol in the
+ *  nondimensional systems' units). Law (4) reads the contact velocity, a difference of body
+ *  velocities of order 1 that lies within its band |zdot| < eps at a stick: a relative
+ *  tolerance on the body velocity, or one atol >= eps, leaves the force there uncontrolled.
+ *  Measured on the two blocks (docs/integrators.md, "Absolute tolerances from eps"): msbdf at
+ *  eps = 1e-6 gives D on cycle 4 within 5e-6 from rtol 1e-4 to 1e-8, where atol = rtol = 1e-6
+ *  gave +8e-3; fricreg_sim_get_abs_tolerances reads the values. Otherwise (atol >= 0)
+ *  adaptive with GSL's standard control (|error| <= atol + rtol |y|),
  *  dt the initial step, and no step longer than 1/32 of the forcing period: while every
  *  contact sticks the state is at rest and the error estimate is zero, so an uncapped step
  *  could pass over a whole slip phase. Implicit steppers (rk1imp, rk2imp, rk4imp, bsimp,
@@ -162,13 +173,54 @@ FRICREG_API int fricreg_sim_set_partition(fricreg_sim *sim, int partition);
  *  (fricreg_ctx_tangent) chained through the system's linear kinematics, one right-hand side
  *  per Jacobian, exact wherever the forces are differentiable.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown integrator, dt <= 0,
- *  rtol < 0 or atol < 0, rtol or atol > 0 with FRICREG_INT_CENTRAL or
+ *  rtol < 0 or atol < 0 other than FRICREG_ATOL_FROM_EPS, FRICREG_ATOL_FROM_EPS with
+ *  rtol = 0, rtol or atol nonzero with FRICREG_INT_CENTRAL or
  *  FRICREG_INT_CENTRAL_IMEX (fixed steps only), or rtol > 0 with atol = 0 for rk1imp, rk2imp,
  *  rk4imp, msadams or msbdf (their iteration converges to atol + rtol |y|, which is 0 where a
  *  state component is 0, as at a start from rest; GSL reports that level to its error
  *  handler); FRICREG_ENONFINITE. */
 FRICREG_API int fricreg_sim_set_integrator(fricreg_sim *sim, int integrator, double dt, double rtol,
                                            double atol);
+
+/** The atol of fricreg_sim_set_integrator that selects absolute tolerances per component
+ *  derived from eps (fricreg_sim_get_abs_tolerances gives them). Since 1.6 (FRICREG_1.6). */
+#define FRICREG_ATOL_FROM_EPS (-1.0)
+
+/** Set an absolute tolerance per state component, as SUNDIALS' CVodeSVtolerances does:
+ *  an adaptive step is accepted where |error_i| <= atol[i] + rtol |y_i| in every component i
+ *  (rtol from fricreg_sim_set_integrator, whose atol this replaces; a later
+ *  fricreg_sim_set_integrator replaces these in turn). The state is y = (x, v, D): ndof body
+ *  positions (length, as the system's), ndof velocities (length/time) and the dissipated
+ *  energy D (force x length), n = 2 ndof + 1 components. The run is adaptive even with
+ *  rtol = 0. Discards any results.
+ *
+ *  sim   in/out: the simulation.
+ *  n     in: 2 fricreg_sim_ndof(sim) + 1 (a chain whose n changes afterwards is refused by
+ *        fricreg_sim_run until they are set again).
+ *  atol  in: atol[n], each finite and > 0; copied.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if sim or atol is NULL; FRICREG_ESIZE if n is not
+ *  2 ndof + 1; FRICREG_ENONFINITE for an entry not finite; FRICREG_EINVAL for an entry <= 0,
+ *  with FRICREG_INT_CENTRAL or FRICREG_INT_CENTRAL_IMEX (fixed steps only), or when called
+ *  from the observer during a run; FRICREG_ENOMEM. On failure nothing is changed.
+ *  Since 1.6 (FRICREG_1.6). */
+FRICREG_API int fricreg_sim_set_abs_tolerances(fricreg_sim *sim, size_t n, const double atol[]);
+
+/** Copy the absolute tolerances an adaptive run of sim uses, per component of y = (x, v, D)
+ *  (see fricreg_sim_set_abs_tolerances), at the eps in use (FRICREG_VALUE_EPS): those set by
+ *  fricreg_sim_set_abs_tolerances, the one atol of fricreg_sim_set_integrator in every
+ *  component, or under FRICREG_ATOL_FROM_EPS the rule's (fricreg_sim_set_integrator: its
+ *  velocity entries carry no relative part); zeros for a fixed-step run. An extrapolated run's
+ *  finer levels apply the rule at their own eps / 2^k.
+ *
+ *  sim   in: the simulation; not modified.
+ *  n     in: 2 fricreg_sim_ndof(sim) + 1.
+ *  atol  out: atol[n]; written only on success.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if sim or atol is NULL; FRICREG_ESIZE if n is not
+ *  2 ndof + 1 (or not the length set, for a chain whose n changed since). Since 1.6
+ *  (FRICREG_1.6). */
+FRICREG_API int fricreg_sim_get_abs_tolerances(const fricreg_sim *sim, size_t n, double atol[]);
 
 /** Called after every accepted step with the state at time t: the ndof body positions x and
  *  velocities v, and the m contact friction forces f and f_eq (NaN where not computed, as in
@@ -216,7 +268,8 @@ FRICREG_API int fricreg_sim_set_max_steps(fricreg_sim *sim, int64_t max_steps);
  *  an adaptive run is the one of fricreg 1.5, to the bit. Measured (docs/integrators.md): the
  *  run above gives +0.8% with both stick fractions within 2e-3; location does not make an
  *  absolute tolerance of the order of eps accurate in the velocities, where a run chatters
- *  across the zone's edges at great cost (rtol = atol = 1e-4 there: 3.3 s for +1.2%).
+ *  across the zone's edges at great cost (rtol = atol = 1e-4 there: 3.3 s for +1.2%); the
+ *  tolerances from eps do (fricreg_sim_set_integrator, FRICREG_ATOL_FROM_EPS: -4.8e-6 in 7 ms).
  *
  *  on     in: 1 to locate the kinks (default), 0 to step over them.
  *

@@ -450,6 +450,14 @@ expect_output '"kinks": [1-9][0-9]*,' twoblock --integrator msbdf --eps 1e-6 --r
 expect_output '"kinks": 0, .*2.4887871015811562\]' twoblock --integrator msbdf --eps 1e-6 --rtol 1e-6 \
     --atol 1e-6 --kink-location off
 expect_usage_error "^fricreg-sim: --kink-location: expected on or off$" oscillator --kink-location 1
+# --rtol without --atol: the tolerances from eps (velocities 1e-3 eps, x and D rtol), reported
+# per component; the same run's D on cycle 4, 1.7355047, is 4.9e-6 off 1.7355132
+# (docs/integrators.md).
+expect_output '"atol": "eps", .*"atol_used": \[9.9999999999999995e-07, 9.9999999999999995e-07, 1.0000000000000001e-09, 1.0000000000000001e-09, 9.9999999999999995e-07\]' \
+    twoblock --integrator msbdf --eps 1e-6 --rtol 1e-6
+expect_output '"dissipation_per_cycle": \[[^]]*, 1\.735504[0-9]*\]' twoblock --integrator msbdf --eps 1e-6 --rtol 1e-6
+expect_output '"atol": 1e-08, .*"atol_used": \[1e-08, 1e-08, 1e-08\]' oscillator --integrator rkf45 --rtol 1e-6 --atol 1e-8 --cycles 1
+expect_output '"adaptive": false, "dt": 0.01, "rtol": 0, "atol": 0, ' oscillator --cycles 1
 # A run length the library refuses is a bad value (exit 2), like the exact solver's.
 expect_usage_error "^fricreg-sim: --cycles: run: .* steps is too many" oscillator --cycles 10000000 --dt 1e-4
 expect_usage_error "^fricreg-sim: --t-end: run: .* steps is too many" chain --t-end 1e9 --dt 1e-3

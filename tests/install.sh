@@ -83,10 +83,11 @@ if [ "$fc" != "-" ]; then
     #    gives, as a compiler that cannot read the installed .mod files would.
     fsrc=$prefix/include/fricreg/src
     order="fricreg_constants.f90 fricreg_c.f90 fricreg.F90 fricreg_f77.f90"
-    order="$order fricreg_f77_check.f90" sim=""
+    order="$order fricreg_f77_check.f90 fricreg_joints_f77.f90" sim=""
     if [ -f "$fsrc/fricreg_sim_c.f90" ]; then
         order="fricreg_constants.f90 fricreg_c.f90 fricreg_sim_c.f90 fricreg.F90"
-        order="$order fricreg_f77.f90 fricreg_f77_check.f90 fricreg_sim_f77.f90"
+        order="$order fricreg_f77.f90 fricreg_f77_check.f90 fricreg_joints_f77.f90"
+        order="$order fricreg_sim_f77.f90"
         order="$order fricreg_structure_f77.f90"
         sim=-DFRICREG_HAVE_SIM
     fi

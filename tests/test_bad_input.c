@@ -480,6 +480,19 @@ static int w_sim_set_integrator(void)
     return fricreg_sim_set_integrator(SIM(), N(0, FRICREG_INT_RKF45), D(0, 0.01), D(1, 1e-6),
                                       D(2, 1e-9));
 }
+static const double ATOL3[3] = {1e-6, 2.385e-9, 1e-6}; /* the oscillator's (x, v, D) */
+static int w_sim_set_abs_tolerances(void)
+{
+    return fricreg_sim_set_abs_tolerances(SIM(), Z(0, 3), A(1, ATOL3, 3));
+}
+static int w_sim_get_abs_tolerances(void)
+{
+    return fricreg_sim_get_abs_tolerances(SIM(), Z(0, 3), OUTD(1));
+}
+static int w_sim_set_max_steps(void)
+{
+    return fricreg_sim_set_max_steps(SIM(), N(0, 1000));
+}
 static int w_sim_set_kink_location(void)
 {
     return fricreg_sim_set_kink_location(SIM(), N(0, 0));
@@ -593,6 +606,10 @@ static int w_st_set_hht(void)
 static int w_st_set_central_difference(void)
 {
     return fricreg_structure_set_central_difference(ST());
+}
+static int w_st_set_max_steps(void)
+{
+    return fricreg_structure_set_max_steps(ST(), N(0, 1000));
 }
 static int w_st_set_newton(void)
 {
@@ -850,6 +867,13 @@ static int w_aft_jenkins_sampled(void)
 {
     return fricreg_aft_jenkins_sampled(AFT(), D(0, 2.385), D(1, 0.5), Z(0, 5), A(1, AFT_U, 5),
                                        OUTD(2), OUTD(3));
+}
+static const double AFT_G[5] = {0.1, 0.2, 0.0, 0.05, 0.0}; /* a normal displacement, H = 2 */
+static int w_aft_jenkins_normal_sampled(void)
+{
+    return fricreg_aft_jenkins_normal_sampled(AFT(), D(0, 2.385), D(1, 0.5), D(2, 1.0), D(3, 1.0),
+                                              Z(0, 5), A(1, AFT_U, 5), A(2, AFT_G, 5), OUTD(3),
+                                              OUTD(4), OUTD(5));
 }
 static int w_aft_iwan_exact(void)
 {
@@ -1258,6 +1282,13 @@ static const struct row rows[] = {
      AFT_REC,
      {HANDLE, DBL(0, "nnniion"), DBL(1, "nnniooo"), SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnooon"),
       PTR(2, "0"), PTR(3, "o")}},
+    {"fricreg_aft_jenkins_normal_sampled",
+     w_aft_jenkins_normal_sampled,
+     "0nis",
+     AFT_REC,
+     {HANDLE, DBL(0, "nnniion"), DBL(1, "nnnioon"), DBL(2, "nnnooon"), DBL(3, "nnnioon"),
+      SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnooon"), PTR(2, "0"), ARR(2, "nnooon"), PTR(3, "0"),
+      PTR(4, "0"), PTR(5, "o")}},
     {"fricreg_aft_iwan_exact",
      w_aft_iwan_exact,
      "0nist",
@@ -1333,6 +1364,17 @@ static const struct row rows[] = {
      SIM_REC,
      {HANDLE, INT(0, "iiii"), DBL(0, "nnfiioo"), DBL(1, "nnfiooo"), DBL(2, "nnfiooo")}},
     {"fricreg_sim_set_observer", w_sim_set_observer, "0i", SIM_REC, {HANDLE}},
+    {"fricreg_sim_set_abs_tolerances",
+     w_sim_set_abs_tolerances,
+     "0sinm",
+     SIM_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nniioo")}},
+    {"fricreg_sim_get_abs_tolerances",
+     w_sim_get_abs_tolerances,
+     "0s",
+     NONE,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0")}},
+    {"fricreg_sim_set_max_steps", w_sim_set_max_steps, "0i", SIM_REC, {HANDLE, INT(0, "iooi")}},
     {"fricreg_sim_set_kink_location",
      w_sim_set_kink_location,
      "0i",
@@ -1452,6 +1494,7 @@ static const struct row rows[] = {
      "0",
      ST_REC,
      {HANDLE}},
+    {"fricreg_structure_set_max_steps", w_st_set_max_steps, "0i", ST_REC, {HANDLE, INT(0, "iooi")}},
     {"fricreg_structure_set_newton",
      w_st_set_newton,
      "0ni",
@@ -1923,7 +1966,8 @@ static int e_chain_n(int which, double x)
     return fricreg_sim_set_param(chain_, FRICREG_PARAM_N, x);
 }
 /* which 0: mun; 1: law's eps (0: the paper's rule); 2: law; 3: partition; 4: integrator;
- * 5: rtol of central differences; 6: rtol of rkf45; 7: kink location */
+ * 5: rtol of central differences; 6: rtol of rkf45; 7: kink location; 8: msbdf's atol
+ * (FRICREG_ATOL_FROM_EPS = -1 or >= 0); 9: a velocity's entry of set_abs_tolerances */
 static int e_sim_set(int which, double x)
 {
     switch (which) {
@@ -1934,6 +1978,11 @@ static int e_sim_set(int which, double x)
     case 4: return fricreg_sim_set_integrator(FX_->sim, (int)x, 0.01, 0.0, 0.0);
     case 5: return fricreg_sim_set_integrator(FX_->sim, FRICREG_INT_CENTRAL, 0.01, x, 0.0);
     case 7: return fricreg_sim_set_kink_location(FX_->sim, (int)x);
+    case 8: return fricreg_sim_set_integrator(FX_->sim, FRICREG_INT_MSBDF, 0.01, 1e-6, x);
+    case 9: {
+        const double atol[3] = {1e-6, x, 1e-6};
+        return fricreg_sim_set_abs_tolerances(FX_->sim, 3, atol);
+    }
     default: return fricreg_sim_set_integrator(FX_->sim, FRICREG_INT_RKF45, 0.01, x, 0.0);
     }
 }
@@ -2259,6 +2308,11 @@ START_TEST(edges_of_documented_ranges)
         {"sim_get_stat <= kinks", e_sim_get, 1, FRICREG_SIM_STAT_KINKS, FRICREG_SIM_STAT_KINKS + 1,
          'i', NONE},
         {"sim_set_kink_location on <= 1", e_sim_set, 7, 1, 2, 'i', SIM_REC},
+        {"sim_set_integrator atol = FRICREG_ATOL_FROM_EPS, not below", e_sim_set, 8,
+         FRICREG_ATOL_FROM_EPS, -1.0000000000000002, 'i', SIM_REC},
+        {"sim_set_integrator atol = FRICREG_ATOL_FROM_EPS, not above", e_sim_set, 8,
+         FRICREG_ATOL_FROM_EPS, -0.99999999999999989, 'i', SIM_REC},
+        {"sim_set_abs_tolerances atol > 0", e_sim_set, 9, TINY, 0.0, 'i', SIM_REC},
         {"sim_set_kink_location on >= 0", e_sim_set, 7, 0, -1, 'i', SIM_REC},
         {"sim_get_extrapolation <= rhs evals", e_sim_get, 2, FRICREG_EXTRAP_RHS_EVALS,
          FRICREG_EXTRAP_RHS_EVALS + 1, 'i', NONE},

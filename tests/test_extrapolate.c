@@ -340,6 +340,36 @@ START_TEST(test_level_zero_is_the_plain_run)
 }
 END_TEST
 
+/* A plain run of the oscillator at eps over cycles with the step bound max_steps: its status. */
+static int bounded_run(double eps, int cycles, int64_t max_steps)
+{
+    fricreg_sim *sim = oscillator(2.0, 0.5, eps, 1e-9);
+    ck_assert_int_eq(fricreg_sim_set_max_steps(sim, max_steps), FRICREG_OK);
+    int status = fricreg_sim_run_cycles(sim, cycles);
+    fricreg_sim_free(sim);
+    return status;
+}
+
+/* The finer levels keep the caller's bound on adaptive steps (fricreg_sim_set_max_steps): with
+ * the smallest bound under which a plain run at eps passes, a plain run at eps/4 (level 2) is
+ * refused, and so is the extrapolation, with FRICREG_EWORK naming the level. */
+START_TEST(test_finer_levels_keep_the_step_bound)
+{
+    enum { CYCLES = 2 };
+    const double eps = 0.0413;
+    int64_t bound = 16;
+    while (bounded_run(eps, CYCLES, bound) != FRICREG_OK)
+        bound += bound / 8;
+    ck_assert_int_eq(bounded_run(eps / 4, CYCLES, bound), FRICREG_EWORK);
+    fricreg_sim *sim = oscillator(2.0, 0.5, eps, 1e-9);
+    ck_assert_int_eq(fricreg_sim_set_max_steps(sim, bound), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run_extrapolated(sim, CYCLES * sim_runs_period(sim), 3, 0),
+                     FRICREG_EWORK);
+    ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "level"));
+    fricreg_sim_free(sim);
+}
+END_TEST
+
 /* A fixed step is halved with eps: three levels of fixed RK4 cost 1 + 2 + 4 = 7 times level
  * 0's right-hand sides (each cycle's shortened last step aside: within 1%). */
 START_TEST(test_fixed_step_halves_with_eps)
@@ -458,6 +488,7 @@ static Suite *extrapolate_suite(void)
     TCase *api = tcase_create("contract");
     tcase_add_test(api, test_level_zero_is_the_plain_run);
     tcase_add_test(api, test_fixed_step_halves_with_eps);
+    tcase_add_test(api, test_finer_levels_keep_the_step_bound);
     tcase_add_test(api, test_bad_input_is_refused);
     tcase_add_test(api, test_refused_from_the_observer);
     suite_add_tcase(s, api);

@@ -44,7 +44,7 @@ program test_sim
   implicit none
   type(fricreg_simulation) :: sim
   real(c_double), allocatable :: D(:), Derr(:)
-  real(c_double) :: x(1), v(1), x2(2), value, frac(32)
+  real(c_double) :: x(1), v(1), x2(2), value, frac(32), atol3(3)
   integer(c_int), target :: calls
   integer(c_int64_t) :: count
   type(c_ptr) :: p
@@ -161,6 +161,27 @@ program test_sim
   call check(sim%ndof() == 32, 'n = 32 blocks')
   call check_status(sim%set_kink_location(2_c_int), FRICREG_EINVAL, 'set_kink_location 2')
   call check_status(sim%set_kink_location(1_c_int), FRICREG_OK, 'set_kink_location 1')
+  ! Absolute tolerances per component of (x, v, D): the rule from eps when atol is absent
+  ! (velocities min(1e-3 eps, rtol), x and D rtol), the caller's, and their errors.
+  call check_status(sim%create(FRICREG_SYSTEM_OSCILLATOR), FRICREG_OK, 'create (tolerances)')
+  call check_status(sim%set_law(FRICREG_LAW_QUINN, 2.385e-4_c_double), FRICREG_OK, 'eps')
+  call check_status(sim%set_integrator(FRICREG_INT_MSBDF, 0.01_c_double, 1e-6_c_double), &
+                    FRICREG_OK, 'msbdf, rtol only')
+  call check_status(sim%get_abs_tolerances(atol3), FRICREG_OK, 'get_abs_tolerances')
+  call check_close(atol3(2), 2.385e-7_c_double, 1e-15_c_double, 'velocity: 1e-3 eps')
+  call check_close(atol3(1), 1e-6_c_double, 1e-15_c_double, 'position: rtol')
+  call check_status(sim%get_abs_tolerances(frac(1:2)), FRICREG_ESIZE, 'get_abs_tolerances, 2')
+  call check_status(sim%set_abs_tolerances([1e-6_c_double, 1e-9_c_double, 1e-6_c_double]), &
+                    FRICREG_OK, 'set_abs_tolerances')
+  call check_status(sim%get_abs_tolerances(atol3), FRICREG_OK, 'get_abs_tolerances, set')
+  call check_close(atol3(2), 1e-9_c_double, 0.0_c_double, 'velocity: the caller''s')
+  call check_status(sim%set_abs_tolerances([1e-6_c_double, 0.0_c_double, 1e-6_c_double]), &
+                    FRICREG_EINVAL, 'set_abs_tolerances, 0')
+  call check(index(sim%errmsg(), 'atol(2)') > 0 .or. index(sim%errmsg(), 'atol[1]') > 0, &
+             'message: ' // sim%errmsg())
+  call check_status(sim%set_abs_tolerances(frac(1:2)), FRICREG_ESIZE, 'set_abs_tolerances, 2')
+  call check_status(sim%run_cycles(1), FRICREG_OK, 'one adaptive cycle')
+  call check_status(sim%create(FRICREG_SYSTEM_CHAIN), FRICREG_OK, 'create chain again')
   call check_status(sim%run_cycles(4), FRICREG_OK, 'four cycles')
   call check_status(sim%get_dissipation(D), FRICREG_OK, 'get_dissipation, chain')
   call check(size(D) == 4, 'four values of D')

@@ -127,7 +127,8 @@ struct cli_summary {
     const char *system, *law, *integrator;
     int adaptive;
     double dt, rtol, atol, eps, steps, rhs_evals, t, period, cpu_seconds;
-    double kinks; /* adaptive steps cut at a kink (written for adaptive runs only) */
+    const double *atol_used; /* [2 ndof + 1] absolute tolerances of y = (x, v, D), or NULL */
+    double kinks;            /* adaptive steps cut at a kink (written for adaptive runs only) */
     size_t ndof, ncontacts, cycles;
     const double *x, *v;                    /* [ndof] */
     const double *D;                        /* [cycles] dissipation per cycle */

@@ -40,7 +40,8 @@ static void usage(FILE *out)
             cli_names(names, sizeof names, fricreg_integrator_name, "|"),
             fricreg_integrator_name(defaults.integrator));
     fputs("  --dt STEP        fixed step, or the first step when adaptive          [0.01]\n"
-          "  --rtol R --atol A  adaptive step control (both 0: fixed step)         [0 0]\n"
+          "  --rtol R --atol A  adaptive step control (both 0: fixed step); without\n"
+          "                     --atol, velocities to min(1e-3 eps, R), x and D to R  [0 eps]\n"
           "  --eps EPS        regularization; default 2dt, or 10*omega*dt for chain\n"
           "  --t-end T | --cycles N   run length in time or forcing cycles         [--cycles 4]\n"
           "  --output summary|trajectory   JSON summary, or CSV row per step       [summary]\n"

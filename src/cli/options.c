@@ -165,6 +165,9 @@ static int check_run(const struct cli_run *run, int cycles_given)
     return cli_check_tolerances(run->integrator, run->rtol, run->atol);
 }
 
+/* --atol's value before parsing: no number the option accepts (CLI_NONNEGATIVE). */
+#define ATOL_NOT_GIVEN (-2.0)
+
 static int parse_run(int system, int exact, int argc, char **argv, struct cli_run *run)
 {
     *run = (struct cli_run){.system = system,
@@ -175,11 +178,14 @@ static int parse_run(int system, int exact, int argc, char **argv, struct cli_ru
                             .output = CLI_SUMMARY,
                             .partition = FRICREG_PARTITION_CONSISTENT,
                             .max_steps = -1,
-                            .kink_location = 1};
+                            .kink_location = 1,
+                            .atol = ATOL_NOT_GIVEN};
     int cycles_given = 0;
     struct cli_option table[MAX_ROWS];
     size_t n = run_table(run, exact, &cycles_given, table);
     int status = cli_parse_options(argc, argv, table, n, exact ? "exact" : cli_system_name(system));
+    if (run->atol == ATOL_NOT_GIVEN) /* adaptive: the rule from eps; else fixed steps */
+        run->atol = run->rtol > 0.0 ? FRICREG_ATOL_FROM_EPS : 0.0;
     return status != 0 ? status : check_run(run, cycles_given);
 }
 

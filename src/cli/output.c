@@ -120,13 +120,19 @@ void cli_write_summary(FILE *out, const struct cli_summary *s)
 {
     fprintf(out, "{\"system\": \"%s\", \"law\": \"%s\", \"integrator\": \"%s\", ", s->system,
             s->law, s->integrator);
-    fprintf(out, "\"adaptive\": %s, \"dt\": %.17g, \"rtol\": %.17g, \"atol\": %.17g, ",
-            s->adaptive ? "true" : "false", s->dt, s->rtol, s->atol);
+    fprintf(out, "\"adaptive\": %s, \"dt\": %.17g, \"rtol\": %.17g, \"atol\": ",
+            s->adaptive ? "true" : "false", s->dt, s->rtol);
+    if (s->atol == FRICREG_ATOL_FROM_EPS)
+        fprintf(out, "\"eps\", ");
+    else
+        fprintf(out, "%.17g, ", s->atol);
     fprintf(out, "\"eps\": %.17g, \"steps\": %.0f, \"rhs_evals\": %.0f, \"t\": %.17g, ", s->eps,
             s->steps, s->rhs_evals, s->t);
     fprintf(out, "\"period\": %.17g", s->period);
     if (s->adaptive)
         fprintf(out, ", \"kinks\": %.0f", s->kinks);
+    if (s->adaptive && s->atol_used != NULL) /* per component of y = (x, v, D) */
+        json_array(out, "atol_used", 2 * s->ndof + 1, s->atol_used);
     json_array(out, "x", s->ndof, s->x);
     json_array(out, "v", s->ndof, s->v);
     json_array(out, "dissipation_per_cycle", s->cycles, s->D);
@@ -173,12 +179,13 @@ static void write_summary(FILE *out, const struct cli_run *run, const fricreg_si
 {
     size_t n = fricreg_sim_ndof(sim), m = fricreg_sim_ncontacts(sim);
     size_t cycles = (size_t)value(sim, FRICREG_VALUE_CYCLES);
-    double *buf = malloc((2 * n + m + 3 * cycles + 1) * sizeof *buf);
+    double *buf = malloc((4 * n + m + 3 * cycles + 2) * sizeof *buf);
     if (buf == NULL) {
         fprintf(stderr, "fricreg-sim: out of memory\n");
         return;
     }
-    double *x = buf, *v = x + n, *stick = v + n, *D = stick + m;
+    double *x = buf, *v = x + n, *stick = v + n, *atol = stick + m, *D = atol + 2 * n + 1;
+    fricreg_sim_get_abs_tolerances(sim, 2 * n + 1, atol);
     fricreg_sim_get_state(sim, n, x, v);
     fricreg_sim_get_stick_fraction(sim, m, stick);
     fricreg_sim_get_dissipation(sim, cycles, D);
@@ -188,10 +195,11 @@ static void write_summary(FILE *out, const struct cli_run *run, const fricreg_si
     struct cli_summary s = {.system = cli_system_name(run->system),
                             .law = fricreg_law_name(run->law),
                             .integrator = fricreg_integrator_name(run->integrator),
-                            .adaptive = run->rtol > 0.0 || run->atol > 0.0,
+                            .adaptive = run->rtol > 0.0 || run->atol != 0.0,
                             .dt = run->dt,
                             .rtol = run->rtol,
                             .atol = run->atol,
+                            .atol_used = atol,
                             .eps = value(sim, FRICREG_VALUE_EPS),
                             .steps = value(sim, FRICREG_VALUE_STEPS),
                             .rhs_evals = value(sim, FRICREG_VALUE_RHS_EVALS),

@@ -229,6 +229,46 @@ int fricreg_aft_iwan_sampled(fricreg_aft *aft, size_t ns, const double k[], cons
     return evaluate(aft, "iwan_sampled", 1, ns, k, phi, n, u, f, jac);
 }
 
+/* The normal law's checks beyond check()'s: g, mu, n0, kn, and the overflow of the bound. */
+static int check_normal(fricreg_aft *a, const char *fn, double mu, double n0, double kn,
+                        const double *g, const double *nf)
+{
+    if (g == NULL || nf == NULL)
+        return fr_fail(a, FRICREG_ENULL, "%s: %s is NULL", fn, g == NULL ? "g" : "nf");
+    if (!isfinite(mu) || !isfinite(n0) || !isfinite(kn))
+        return fr_fail(a, FRICREG_ENONFINITE, "%s: mu = %g, n0 = %g, kn = %g", fn, mu, n0, kn);
+    if (!(mu >= 0.0) || !(kn >= 0.0))
+        return fr_fail(a, FRICREG_EINVAL, "%s: mu = %g and kn = %g must be >= 0", fn, mu, kn);
+    double gsum = 0.0;
+    for (size_t j = 0; j < a->nc; j++) {
+        if (!isfinite(g[j]))
+            return fr_fail(a, FRICREG_ENONFINITE, "%s: g[%zu] = %g", fn, j, g[j]);
+        gsum += fabs(g[j]);
+    }
+    /* the normal force reaches |n0| + kn sum |g[j]|, and its Fourier integrals 8 times that */
+    if (!isfinite(8.0 * (1.0 + mu) * (fabs(n0) + kn * gsum)))
+        return fr_fail(a, FRICREG_ENONFINITE,
+                       "%s: the normal force |n0| + kn x the sum of |g[j]| overflows", fn);
+    return FRICREG_OK;
+}
+
+int fricreg_aft_jenkins_normal_sampled(fricreg_aft *aft, double kt, double mu, double n0, double kn,
+                                       size_t n, const double u[], const double g[], double f[],
+                                       double nf[], double jac[])
+{
+    static const char fn[] = "jenkins_normal_sampled";
+    if (aft == NULL)
+        return FRICREG_ENULL;
+    double unit = 1.0; /* check() reads a slider bound: the normal law is checked apart */
+    int status = check(aft, fn, 1, 1, &kt, &unit, n, u, f);
+    if (status == FRICREG_OK)
+        status = check_normal(aft, fn, mu, n0, kn, g, nf);
+    if (status != FRICREG_OK)
+        return status;
+    fr_aft_sampled_normal(aft, kt, mu, n0, kn, u, g, f, nf, jac);
+    return FRICREG_OK;
+}
+
 int fricreg_aft_errcode(const fricreg_aft *aft)
 {
     return aft ? aft->err.code : FRICREG_OK;

@@ -68,4 +68,19 @@ int fr_aft_exact(fricreg_aft *aft, const char *fn, size_t ns, const double *k, c
 void fr_aft_sampled(fricreg_aft *aft, size_t ns, const double *k, const double *phi,
                     const double *u, int want_jac);
 
+/* Sampled AFT of one Jenkins element under normal load with lift-off (aft_normal.c): from
+ * the checked u[nc], g[nc], the coefficients of f into f[nc] and of N into nf[nc] and, with
+ * jac not NULL, the Jacobian jac[2nc x 2nc] (fricreg_aft_jenkins_normal_sampled). Cannot
+ * fail on checked inputs; the outputs are written last, so they may alias u and g. */
+void fr_aft_sampled_normal(fricreg_aft *aft, double kt, double mu, double n0, double kn,
+                           const double *u, const double *g, double *f, double *nf, double *jac);
+
+/* phi_j at sample n of the sampled path, by the tables: cos, sin of h theta_n at index
+ * h n mod N. */
+double fr_aft_sample_basis(const fricreg_aft *a, size_t j, size_t n);
+
+/* Coefficients of the sampled sequence x[N] (transformed in place, x destroyed) into
+ * out[i * stride], i = 0 .. 2H: f0 = X_0/N, fa_h = 2 Re X_h/N, fb_h = -2 Im X_h/N. */
+void fr_aft_sample_coefficients(const fricreg_aft *a, double *x, double *out, size_t stride);
+
 #endif

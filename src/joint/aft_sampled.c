@@ -23,8 +23,7 @@
 #include "aft_internal.h"
 #include "slider.h"
 
-/* φ_j at sample n by the tables: cos, sin of h theta_n at index h n mod N. */
-static double basis_at(const fricreg_aft *a, size_t j, size_t n)
+double fr_aft_sample_basis(const fricreg_aft *a, size_t j, size_t n)
 {
     if (j == 0)
         return 1.0;
@@ -32,10 +31,8 @@ static double basis_at(const fricreg_aft *a, size_t j, size_t n)
     return (j % 2) ? a->ctab[idx] : a->stab[idx];
 }
 
-/* Coefficients of the sampled sequence x[N] (transformed in place, x destroyed) into
- * out[i * stride], i = 0 .. 2H: f0 = X_0/N, fa_h = 2 Re X_h/N, fb_h = -2 Im X_h/N. Called
- * with N a power of two (checked at create): GSL has nothing to report. */
-static void coefficients(const fricreg_aft *a, double *x, double *out, size_t stride)
+/* Called with N a power of two (checked at create): GSL has nothing to report. */
+void fr_aft_sample_coefficients(const fricreg_aft *a, double *x, double *out, size_t stride)
 {
     size_t N = a->N;
     gsl_fft_real_radix2_transform(x, 1, N);
@@ -106,19 +103,21 @@ void fr_aft_sampled(fricreg_aft *a, size_t ns, const double *k, const double *ph
             double *col = &a->ds[N * j];
             /* a constant u (nmax = nmin): the exact path's tangent, kt on the harmonics */
             double centred = nmax == nmin ? 0.0
-                                          : 0.5 * (basis_at(a, j, nmax) + basis_at(a, j, nmin));
+                                          : 0.5 * (fr_aft_sample_basis(a, j, nmax) +
+                                                   fr_aft_sample_basis(a, j, nmin));
             for (size_t n = 0; n < N; n++) {
                 if (a->ts[n] == 0.0)
                     continue;
-                double anchor = a->anchor[n] == N ? centred : basis_at(a, j, a->anchor[n]);
-                col[n] += a->ts[n] * (basis_at(a, j, n) - anchor);
+                double anchor = a->anchor[n] == N ? centred
+                                                  : fr_aft_sample_basis(a, j, a->anchor[n]);
+                col[n] += a->ts[n] * (fr_aft_sample_basis(a, j, n) - anchor);
             }
         }
     }
-    coefficients(a, a->fs, a->fout, 1);
+    fr_aft_sample_coefficients(a, a->fs, a->fout, 1);
     if (!want_jac)
         return;
     memset(a->jout, 0, w * w * sizeof *a->jout); /* column 0: u0 moves f nowhere */
     for (size_t j = 1; j < w; j++)
-        coefficients(a, &a->ds[N * j], &a->jout[j], w);
+        fr_aft_sample_coefficients(a, &a->ds[N * j], &a->jout[j], w);
 }

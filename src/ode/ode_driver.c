@@ -52,8 +52,103 @@ static gsl_odeiv2_evolve *evolve_new(size_t dim)
     return e;
 }
 
-gsl_odeiv2_driver *fr_ode_driver_alloc(const gsl_odeiv2_system *sys, const gsl_odeiv2_step_type *T,
-                                       double hstart, double epsabs, double epsrel)
+/* ---- The per-component control (fr_ode_driver_alloc_vector) ----------------------------
+ * GSL's standard control (ode-initval2/cstd.c, GSL 1.14 to 2.7) with a_y = 1, a_dydt = 0 and
+ * the absolute level per component: D0_i = atol_i + eps_rel |y_i|; the step is cut when
+ * max_i |yerr_i|/D0_i > 1.1 (by S/r^(1/q), S = 0.9, at most 5x) and grown when it is below
+ * 0.5 (by S/r^(1/(q+1)), at most 5x, never shrunk), the same heuristic as GSL's. */
+struct vector_control {
+    double eps_rel;
+    size_t dim;
+    double *atol; /* [2 dim]: atol_i, then the weight w_i of eps_rel in component i */
+};
+
+static void *vector_alloc(void)
+{
+    return calloc(1, sizeof(struct vector_control));
+}
+
+static int vector_init(void *vstate, double eps_abs, double eps_rel, double a_y, double a_dydt)
+{
+    (void)eps_abs, (void)a_y, (void)a_dydt; /* atol per component; a_y = 1, a_dydt = 0 */
+    ((struct vector_control *)vstate)->eps_rel = eps_rel;
+    return GSL_SUCCESS;
+}
+
+static int vector_hadjust(void *vstate, size_t dim, unsigned int ord, const double y[],
+                          const double yerr[], const double yp[], double *h)
+{
+    const struct vector_control *c = vstate;
+    const double S = 0.9, h_old = *h;
+    double rmax = GSL_DBL_MIN;
+    (void)yp;
+    for (size_t i = 0; i < dim && i < c->dim; i++)
+        rmax = fmax(rmax,
+                    fabs(yerr[i]) / (c->atol[i] + c->atol[c->dim + i] * c->eps_rel * fabs(y[i])));
+    if (rmax > 1.1) {
+        *h = h_old * fmax(S / pow(rmax, 1.0 / ord), 0.2);
+        return GSL_ODEIV_HADJ_DEC;
+    }
+    if (rmax < 0.5) {
+        *h = h_old * fmax(fmin(S / pow(rmax, 1.0 / (ord + 1.0)), 5.0), 1.0);
+        return GSL_ODEIV_HADJ_INC;
+    }
+    return GSL_ODEIV_HADJ_NIL;
+}
+
+/* The level the implicit and multistep steppers iterate to: > 0, as every atol_i is. */
+static int vector_errlevel(void *vstate, const double y, const double dydt, const double h,
+                           const size_t ind, double *errlev)
+{
+    const struct vector_control *c = vstate;
+    (void)dydt, (void)h;
+    size_t i = ind < c->dim ? ind : c->dim - 1;
+    *errlev = c->atol[i] + c->atol[c->dim + i] * c->eps_rel * fabs(y);
+    return GSL_SUCCESS;
+}
+
+static int vector_set_driver(void *vstate, const gsl_odeiv2_driver *d)
+{
+    (void)vstate, (void)d;
+    return GSL_SUCCESS;
+}
+
+static void vector_free(void *vstate)
+{
+    struct vector_control *c = vstate;
+    if (c != NULL)
+        free(c->atol);
+    free(c);
+}
+
+static const gsl_odeiv2_control_type vector_type = {
+    "fricreg per-component", vector_alloc,      vector_init, vector_hadjust,
+    vector_errlevel,         vector_set_driver, vector_free};
+
+static gsl_odeiv2_control *control_vector_new(const double atol[], const double rel_weight[],
+                                              size_t dim, double epsrel)
+{
+    gsl_odeiv2_control *c = malloc(sizeof *c);
+    struct vector_control *state = vector_alloc();
+    double *copy = malloc(2 * dim * sizeof *copy);
+    if (c == NULL || state == NULL || copy == NULL) {
+        free(c);
+        free(state);
+        free(copy);
+        return NULL;
+    }
+    memcpy(copy, atol, dim * sizeof *copy);
+    for (size_t i = 0; i < dim; i++)
+        copy[dim + i] = rel_weight ? rel_weight[i] : 1.0;
+    *state = (struct vector_control){.eps_rel = epsrel, .dim = dim, .atol = copy};
+    *c = (gsl_odeiv2_control){.type = &vector_type, .state = state};
+    return c;
+}
+
+/* The driver around a stepper of T and the control c (NULL: the allocation failed). */
+static gsl_odeiv2_driver *driver_with(const gsl_odeiv2_system *sys, const gsl_odeiv2_step_type *T,
+                                      double hstart, double epsabs, double epsrel,
+                                      const double atol[], const double rel_weight[])
 {
     gsl_odeiv2_driver *d = calloc(1, sizeof *d);
     if (d == NULL)
@@ -61,7 +156,9 @@ gsl_odeiv2_driver *fr_ode_driver_alloc(const gsl_odeiv2_system *sys, const gsl_o
     d->sys = sys;
     d->s = gsl_odeiv2_step_alloc(T, sys->dimension);
     d->e = d->s ? evolve_new(sys->dimension) : NULL;
-    d->c = d->e ? control_y_new(epsabs, epsrel) : NULL;
+    if (d->e != NULL)
+        d->c = atol ? control_vector_new(atol, rel_weight, sys->dimension, epsrel)
+                    : control_y_new(epsabs, epsrel);
     if (d->c != NULL) {
         d->h = hstart;
         d->hmin = 0.0;
@@ -75,6 +172,20 @@ gsl_odeiv2_driver *fr_ode_driver_alloc(const gsl_odeiv2_system *sys, const gsl_o
         return NULL;
     }
     return d;
+}
+
+gsl_odeiv2_driver *fr_ode_driver_alloc(const gsl_odeiv2_system *sys, const gsl_odeiv2_step_type *T,
+                                       double hstart, double epsabs, double epsrel)
+{
+    return driver_with(sys, T, hstart, epsabs, epsrel, NULL, NULL);
+}
+
+gsl_odeiv2_driver *fr_ode_driver_alloc_vector(const gsl_odeiv2_system *sys,
+                                              const gsl_odeiv2_step_type *T, double hstart,
+                                              const double atol[], const double rel_weight[],
+                                              double epsrel)
+{
+    return driver_with(sys, T, hstart, 0.0, epsrel, atol, rel_weight);
 }
 
 int fr_ode_apply_fixed_step(gsl_odeiv2_driver *d, double *t, double h, double y[])

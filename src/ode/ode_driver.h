@@ -17,6 +17,17 @@
 gsl_odeiv2_driver *fr_ode_driver_alloc(const gsl_odeiv2_system *sys, const gsl_odeiv2_step_type *T,
                                        double hstart, double epsabs, double epsrel);
 
+/* fr_ode_driver_alloc with tolerances per component: the control is GSL's standard one on y
+ * (a_y = 1, a_dydt = 0) with the level atol[i] + w[i] epsrel |y_i| in component i, the
+ * per-component tolerances of SUNDIALS' CVodeSVtolerances (GSL's gsl_odeiv2_control_scaled_new
+ * with eps_abs = 1 is the same rule for w = 1, but allocates unchecked). atol[dim] > 0 and
+ * rel_weight[dim] >= 0 (NULL: every w[i] = 1), copied; epsrel >= 0. NULL if any allocation
+ * failed, nothing left allocated. */
+gsl_odeiv2_driver *fr_ode_driver_alloc_vector(const gsl_odeiv2_system *sys,
+                                              const gsl_odeiv2_step_type *T, double hstart,
+                                              const double atol[], const double rel_weight[],
+                                              double epsrel);
+
 /* One fixed step of h from (*t, y) by the driver's stepper, as gsl_odeiv2_evolve_apply_fixed_step
  * (no step control), which also fails where the stepper tells its failure only by its error
  * estimate: GSL's bsimp breaks off a step that meets its runaway test (a change of the state

@@ -46,7 +46,7 @@ static int make_level(const fricreg_sim *sim, int k, fricreg_sim **out)
     if (status != FRICREG_OK)
         return status;
     double scale = ldexp(1.0, -k);
-    int adaptive = sim->rtol > 0.0 || sim->atol > 0.0;
+    int adaptive = sim->rtol > 0.0 || sim->atol > 0.0 || sim->atol_from_eps || sim->atol_vec;
     level->sys = sim->sys;
     level->law = sim->law;
     level->partition = sim->partition;
@@ -56,7 +56,18 @@ static int make_level(const fricreg_sim *sim, int k, fricreg_sim **out)
     level->dt = adaptive ? sim->dt : sim->dt * scale;
     level->rtol = sim->rtol;
     level->atol = sim->atol;
+    level->atol_from_eps = sim->atol_from_eps; /* the rule at the level's own eps */
+    if (sim->atol_vec != NULL) {
+        level->atol_vec = malloc(sim->atol_n * sizeof *level->atol_vec);
+        if (level->atol_vec == NULL) {
+            fricreg_sim_free(level);
+            return FRICREG_ENOMEM;
+        }
+        memcpy(level->atol_vec, sim->atol_vec, sim->atol_n * sizeof *level->atol_vec);
+        level->atol_n = sim->atol_n;
+    }
     level->kink_location = sim->kink_location;
+    level->max_steps = sim->max_steps; /* the caller's bound holds on every level */
     *out = level;
     return FRICREG_OK;
 }

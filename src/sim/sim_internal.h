@@ -27,6 +27,12 @@ struct fricreg_sim {
     double eps_set; /* 0: the paper's rule */
     int integrator;
     double dt, rtol, atol;
+    /* The absolute tolerances of an adaptive run, one of: atol for every component (atol_vec
+     * NULL, atol_from_eps 0); fricreg's rule from eps (atol_from_eps 1: sim.c, default_atol);
+     * the caller's per component (atol_vec [atol_n = 2 ndof + 1], owned). */
+    int atol_from_eps;
+    double *atol_vec;
+    size_t atol_n;
     int64_t max_steps; /* adaptive steps of one forcing cycle (0: no bound; -1: the law's) */
     int kink_location; /* adaptive steps stop at the law's kinks (kinks.c); 1 by default */
     fricreg_sim_observer observer;

@@ -1,0 +1,262 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* test_aft_normal.c — Check suite for the sampled AFT of a Jenkins element under normal load
+ * with lift-off (fricreg_aft_jenkins_normal_sampled, fricreg_aft.h).
+ *
+ * Where the numbers come from:
+ *   - a constant normal force (kn = 0) is the Jenkins element of bound mu N0: the same
+ *     function as fricreg_aft_jenkins_sampled at mun = mu N0, to the bit (the header's promise);
+ *   - an element open throughout (N0 + kn g < 0 at every sample) carries nothing: f, N and
+ *     the Jacobian are 0 exactly;
+ *   - against the time-domain element: fricreg_jenkins_trial_normal and commit at the same
+ *     samples, marched from a relaxed slider over three periods, the last period's forces
+ *     transformed by a plain DFT written here (no FFT): equal to rounding, with lift-off in
+ *     part of the period, with a bound moving with g and no opening, and stuck;
+ *   - the Jacobian against central differences of the same function (step 1e-6). */
+#include <check.h>
+#include <math.h>
+#include <string.h>
+
+#include "fricreg_aft.h"
+#include "fricreg_jenkins.h"
+
+#define SENTINEL (-777.125)
+#define H 3
+#define NC (2 * H + 1)
+#define NS 1024
+static const double PI = 3.14159265358979323846;
+
+static fricreg_aft *make(int harmonics, size_t samples)
+{
+    fricreg_aft *a = NULL;
+    ck_assert_int_eq(fricreg_aft_create(harmonics, samples, &a), FRICREG_OK);
+    return a;
+}
+
+static double at(const double *c, double th)
+{
+    double v = c[0];
+    for (int h = 1; h <= H; h++)
+        v += c[2 * h - 1] * cos(h * th) + c[2 * h] * sin(h * th);
+    return v;
+}
+
+/* The plain DFT of x[NS] into c[NC] (the header's coefficient layout). */
+static void dft(const double *x, double *c)
+{
+    memset(c, 0, NC * sizeof *c);
+    for (int n = 0; n < NS; n++) {
+        double th = 2.0 * PI * n / NS;
+        c[0] += x[n] / NS;
+        for (int h = 1; h <= H; h++) {
+            c[2 * h - 1] += 2.0 * x[n] * cos(h * th) / NS;
+            c[2 * h] += 2.0 * x[n] * sin(h * th) / NS;
+        }
+    }
+}
+
+/* The time-domain element marched three periods over the samples: the last period's f and N
+ * transformed into f[NC], nf[NC]. */
+static void time_domain(double kt, double mu, double n0, double kn, const double *u,
+                        const double *g, double *f, double *nf)
+{
+    fricreg_jenkins *j = NULL;
+    double one = 1.0, fs[NS], ns[NS];
+    ck_assert_int_eq(fricreg_jenkins_create(1, 1, &j), FRICREG_OK);
+    ck_assert_int_eq(fricreg_jenkins_set_params(j, 1, &kt, &one), FRICREG_OK);
+    ck_assert_int_eq(fricreg_jenkins_set_normal(j, 1, &mu, &n0, &kn), FRICREG_OK);
+    for (int p = 0; p < 3; p++)
+        for (int n = 0; n < NS; n++) {
+            double th = 2.0 * PI * n / NS, un = at(u, th), gn = at(g, th);
+            ck_assert_int_eq(fricreg_jenkins_trial_normal(j, 1, &un, &gn, &fs[n], &ns[n], NULL,
+                                                          NULL),
+                             FRICREG_OK);
+            ck_assert_int_eq(fricreg_jenkins_commit(j), FRICREG_OK);
+        }
+    fricreg_jenkins_free(j);
+    dft(fs, f);
+    dft(ns, nf);
+}
+
+static void check_against_time_domain(double kt, double mu, double n0, double kn, const double *u,
+                                      const double *g, const char *what)
+{
+    fricreg_aft *a = make(H, NS);
+    double f[NC], nf[NC], ft[NC], nft[NC], scale = mu * (fabs(n0) + kn * 4.0);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(a, kt, mu, n0, kn, NC, u, g, f, nf, NULL),
+                     FRICREG_OK);
+    time_domain(kt, mu, n0, kn, u, g, ft, nft);
+    for (int i = 0; i < NC; i++) {
+        ck_assert_msg(fabs(f[i] - ft[i]) < 1e-12 * scale, "%s: f[%d] = %.15g, time domain %.15g",
+                      what, i, f[i], ft[i]);
+        ck_assert_msg(fabs(nf[i] - nft[i]) < 1e-12 * (fabs(n0) + kn * 4.0),
+                      "%s: nf[%d] = %.15g, time domain %.15g", what, i, nf[i], nft[i]);
+    }
+    fricreg_aft_free(a);
+}
+
+START_TEST(constant_preload_is_jenkins)
+{
+    const double u[NC] = {0.3, 1.0, 0.0, 0.0, 0.2, 0.9, -0.1}, g[NC] = {0.4, 0.5, -0.2, 0, 0, 0, 0};
+    const double kt = 2.385, mu = 0.1, bounds[2] = {0.7, 30.0}; /* slipping, stuck */
+    fricreg_aft *a = make(H, NS);
+    for (int c = 0; c < 2; c++) {
+        double f[NC], nf[NC], jac[4 * NC * NC], fj[NC], jj[NC * NC], n0 = bounds[c] / mu;
+        ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(a, kt, mu, n0, 0.0, NC, u, g, f, nf,
+                                                            jac),
+                         FRICREG_OK);
+        ck_assert_int_eq(fricreg_aft_jenkins_sampled(a, kt, mu * n0, NC, u, fj, jj), FRICREG_OK);
+        for (int i = 0; i < NC; i++) {
+            ck_assert_double_eq(f[i], fj[i]);
+            ck_assert_double_eq_tol(nf[i], i == 0 ? n0 : 0.0, 1e-13 * n0);
+            for (int j = 0; j < NC; j++) {
+                ck_assert_double_eq(jac[2 * NC * i + j], jj[NC * i + j]);
+                ck_assert_double_eq(jac[2 * NC * i + NC + j], 0.0);        /* df/dg: kn = 0 */
+                ck_assert_double_eq(jac[2 * NC * (NC + i) + j], 0.0);      /* dN/du */
+                ck_assert_double_eq(jac[2 * NC * (NC + i) + NC + j], 0.0); /* dN/dg */
+            }
+        }
+    }
+    fricreg_aft_free(a);
+}
+END_TEST
+
+START_TEST(open_throughout_is_zero)
+{
+    const double u[NC] = {0.3, 1.0, 0.0, 0.0, 0.2, 0.9, -0.1}, g[NC] = {0.0, 0.2, 0.1, 0, 0, 0, 0};
+    double f[NC], nf[NC], jac[4 * NC * NC];
+    fricreg_aft *a = make(H, NS);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(a, 2.0, 0.5, -1.0, 2.0, NC, u, g, f, nf,
+                                                        jac),
+                     FRICREG_OK);
+    for (int i = 0; i < NC; i++) {
+        ck_assert_double_eq(f[i], 0.0);
+        ck_assert_double_eq(nf[i], 0.0);
+    }
+    for (int i = 0; i < 4 * NC * NC; i++)
+        ck_assert_double_eq(jac[i], 0.0);
+    fricreg_aft_free(a);
+}
+END_TEST
+
+START_TEST(against_the_time_domain_element)
+{
+    const double u1[NC] = {0.0, 1.0, 0.0, 0, 0, 0, 0}, g1[NC] = {0.0, 0.0, 1.5, 0, 0, 0, 0};
+    const double u2[NC] = {0.1, 1.2, 0.0, 0.0, 0.3, 0, 0};
+    const double g2[NC] = {0.0, 0.8 * 0.955336489125606, -0.8 * 0.29552020666134, 0, 0, 0, 0};
+    const double u3[NC] = {0.0, 0.05, 0.0, 0, 0, 0, 0};
+    /* opens where sin θ < -2/3 */
+    check_against_time_domain(2.0, 0.5, 1.0, 1.0, u1, g1, "lift-off");
+    /* N between 1.2 and 2.8, never open, slipping both ways every period */
+    check_against_time_domain(3.0, 0.4, 2.0, 1.0, u2, g2, "moving bound");
+    /* kt (max u - min u) = 0.3 below 2 mu N_min = 0.96: stuck, centred */
+    check_against_time_domain(3.0, 0.4, 2.0, 1.0, u3, g2, "stuck");
+}
+END_TEST
+
+/* Central differences of f and N in u and g against the Jacobian. */
+static void check_jacobian(double kt, double mu, double n0, double kn, const double *u,
+                           const double *g)
+{
+    fricreg_aft *a = make(H, NS);
+    double f[NC], nf[NC], jac[4 * NC * NC], x[2 * NC], h = 1e-6, scale = fmax(kt, kn);
+    memcpy(x, u, NC * sizeof *u);
+    memcpy(x + NC, g, NC * sizeof *g);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(a, kt, mu, n0, kn, NC, u, g, f, nf, jac),
+                     FRICREG_OK);
+    for (int j = 0; j < 2 * NC; j++) {
+        double xp[2 * NC], xm[2 * NC], fp[NC], fm[NC], np[NC], nm[NC];
+        memcpy(xp, x, sizeof x);
+        memcpy(xm, x, sizeof x);
+        xp[j] += h;
+        xm[j] -= h;
+        ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(a, kt, mu, n0, kn, NC, xp, xp + NC, fp,
+                                                            np, NULL),
+                         FRICREG_OK);
+        ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(a, kt, mu, n0, kn, NC, xm, xm + NC, fm,
+                                                            nm, NULL),
+                         FRICREG_OK);
+        for (int i = 0; i < NC; i++) {
+            double df = (fp[i] - fm[i]) / (2 * h), dn = (np[i] - nm[i]) / (2 * h);
+            ck_assert_msg(fabs(df - jac[2 * NC * i + j]) < 1e-6 * scale,
+                          "df[%d]/dx[%d] = %.12g, differences %.12g", i, j, jac[2 * NC * i + j],
+                          df);
+            ck_assert_msg(fabs(dn - jac[2 * NC * (NC + i) + j]) < 1e-6 * scale,
+                          "dN[%d]/dx[%d] = %.12g, differences %.12g", i, j,
+                          jac[2 * NC * (NC + i) + j], dn);
+        }
+    }
+    fricreg_aft_free(a);
+}
+
+START_TEST(jacobian_against_differences)
+{
+    const double u1[NC] = {0.0, 1.0, 0.0, 0, 0, 0.1, 0}, g1[NC] = {0.1, 0.0, 1.5, 0, 0, 0, 0};
+    const double u2[NC] = {0.1, 1.2, 0.0, 0.0, 0.3, 0, 0}, g2[NC] = {0.0, 0.76, -0.24, 0, 0, 0, 0};
+    check_jacobian(2.0, 0.5, 1.0, 1.0, u1, g1);
+    check_jacobian(3.0, 0.4, 2.0, 1.0, u2, g2);
+}
+END_TEST
+
+START_TEST(bad_input)
+{
+    const double u[NC] = {0.3, 1.0, 0, 0, 0, 0, 0}, g[NC] = {0.1, 0.2, 0, 0, 0, 0, 0};
+    double f[NC], nf[NC], jac[4 * NC * NC], bad[NC];
+    fricreg_aft *a = make(H, NS), *exact_only = make(H, 0);
+    for (int i = 0; i < NC; i++)
+        f[i] = nf[i] = SENTINEL;
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(NULL, 1, 1, 1, 1, NC, u, g, f, nf, jac),
+                     FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(a, 1, 1, 1, 1, NC, u, NULL, f, nf, jac),
+                     FRICREG_ENULL);
+    ck_assert_ptr_nonnull(strstr(fricreg_aft_errmsg(a), "jenkins_normal_sampled: g"));
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(a, 1, 1, 1, 1, NC, u, g, f, NULL, jac),
+                     FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(a, 1, 1, 1, 1, NC, NULL, g, f, nf, jac),
+                     FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(exact_only, 1, 1, 1, 1, NC, u, g, f, nf,
+                                                        jac),
+                     FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(a, 1, 1, 1, 1, NC - 2, u, g, f, nf, jac),
+                     FRICREG_ESIZE);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(a, 0, 1, 1, 1, NC, u, g, f, nf, jac),
+                     FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(a, 1, -1, 1, 1, NC, u, g, f, nf, jac),
+                     FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(a, 1, 1, 1, -1, NC, u, g, f, nf, jac),
+                     FRICREG_EINVAL);
+    ck_assert_str_eq(fricreg_aft_errmsg(a),
+                     "jenkins_normal_sampled: mu = 1 and kn = -1 must be >= 0");
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(a, 1, 1, NAN, 1, NC, u, g, f, nf, jac),
+                     FRICREG_ENONFINITE);
+    memcpy(bad, g, sizeof bad);
+    bad[2] = INFINITY;
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(a, 1, 1, 1, 1, NC, u, bad, f, nf, jac),
+                     FRICREG_ENONFINITE);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(a, 1, 1, 1e308, 1, NC, u, g, f, nf, jac),
+                     FRICREG_ENONFINITE);
+    for (int i = 0; i < NC; i++) {
+        ck_assert_double_eq(f[i], SENTINEL);
+        ck_assert_double_eq(nf[i], SENTINEL);
+    }
+    ck_assert_int_eq(fricreg_aft_errcode(a), FRICREG_ENONFINITE);
+    fricreg_aft_free(a);
+    fricreg_aft_free(exact_only);
+}
+END_TEST
+
+int main(void)
+{
+    Suite *s = suite_create("aft_normal");
+    TCase *tc = tcase_create("core");
+    tcase_add_test(tc, constant_preload_is_jenkins);
+    tcase_add_test(tc, open_throughout_is_zero);
+    tcase_add_test(tc, against_the_time_domain_element);
+    tcase_add_test(tc, jacobian_against_differences);
+    tcase_add_test(tc, bad_input);
+    suite_add_tcase(s, tc);
+    SRunner *sr = srunner_create(s);
+    srunner_run_all(sr, CK_NORMAL);
+    int failed = srunner_ntests_failed(sr);
+    srunner_free(sr);
+    return failed == 0 ? 0 : 1;
+}
