@@ -203,7 +203,9 @@ FRICREG_API int fricreg_hb_set_continuation(fricreg_hb *hb, double ds, double ds
  *  q[nq]        out: the solution, in the same layout. May alias q0.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if hb or q is NULL; FRICREG_EINVAL if omega <= 0 or
- *  the elements were not set; FRICREG_ENONFINITE if omega or some q0[j] is NaN or infinite;
+ *  the elements were not set; FRICREG_ENONFINITE if omega or some q0[j] is NaN or infinite,
+ *  or an intermediate overflows (a model, element or excitation scale near the double range:
+ *  D_h itself or its solves, or fricreg_aft_jenkins_exact's bound on 8 kt sum |q|);
  *  FRICREG_ESIZE if nq is not m (2H + 1); FRICREG_ESINGULAR if K or some D_h(Ω) is singular
  *  (a pivot of its LU factor below 1e-14 of the largest entry of |K| + (hΩ)² |M| + hΩ |C|;
  *  header comment), or
@@ -224,7 +226,8 @@ FRICREG_API int fricreg_hb_solve(fricreg_hb *hb, double omega, size_t nq, const 
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if hb or x is NULL; FRICREG_ESIZE if ndof or nc is not
  *  the driver's; FRICREG_EINVAL if there is no solution yet (or the model changed since);
- *  FRICREG_EINTEGRATOR as fricreg_hb_solve. Since 1.6. */
+ *  FRICREG_EINTEGRATOR as fricreg_hb_solve (FRICREG_ENONFINITE cannot arise: the solution's
+ *  evaluation succeeded before). Since 1.6. */
 FRICREG_API int fricreg_hb_displacement(fricreg_hb *hb, size_t ndof, size_t nc, double x[]);
 
 /** Follow the periodic response from omega0 to omega1 by pseudo-arclength continuation in Ω
@@ -241,7 +244,7 @@ FRICREG_API int fricreg_hb_displacement(fricreg_hb *hb, size_t ndof, size_t nc, 
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if hb is NULL; FRICREG_EINVAL if omega0 or omega1 <= 0,
  *  they are equal, or the elements were not set; FRICREG_ENONFINITE if omega0, omega1 or some
- *  q0[j] is NaN or infinite; FRICREG_ESIZE if nq is not m (2H + 1); FRICREG_ESINGULAR,
+ *  q0[j] is NaN or infinite, or an intermediate overflows (as fricreg_hb_solve); FRICREG_ESIZE if nq is not m (2H + 1); FRICREG_ESINGULAR,
  *  FRICREG_EWORK, FRICREG_EINTEGRATOR as fricreg_hb_solve at omega0; FRICREG_EINTEGRATOR if
  *  the step fell below ds_min; FRICREG_EWORK if max_points were stored before omega1;
  *  FRICREG_ENOMEM (for the first 64 points before anything changed; for more, later, with the

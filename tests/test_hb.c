@@ -503,6 +503,13 @@ START_TEST(bad_input)
     ck_assert_int_eq(fricreg_hb_set_mass(hb, 3, s.M), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 3, s.K), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_set_damping(hb, 3, s.C), FRICREG_OK);
+    /* overflow: D_1 at Omega = 1e300, the solves with an excitation of 1e308 */
+    ck_assert_int_eq(fricreg_hb_solve(hb, 1e300, nq, NULL, q), FRICREG_ENONFINITE);
+    ck_assert_ptr_nonnull(strstr(fricreg_hb_errmsg(hb), "overflows"));
+    const double huge[3] = {1e308, 0.0, 0.0};
+    ck_assert_int_eq(fricreg_hb_set_excitation(hb, 3, huge, s.ps), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_solve(hb, 1.0, nq, NULL, q), FRICREG_ENONFINITE);
+    ck_assert_int_eq(fricreg_hb_set_excitation(hb, 3, s.pc, s.ps), FRICREG_OK);
     /* solve's own arguments */
     ck_assert_int_eq(fricreg_hb_solve(NULL, 1.0, nq, NULL, q), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_hb_solve(hb, 1.0, nq, NULL, NULL), FRICREG_ENULL);

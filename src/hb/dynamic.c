@@ -39,6 +39,11 @@ static int factor_one(fricreg_hb *hb, const char *fn, int h, double omega)
         /* the scale of the terms, not of their sum: K − w² M cancels at a resonance */
         dmax = fmax(dmax, fabs(hb->K[k]) + w * w * fabs(hb->M[k]) + fabs(hb->D[2 * k + 1]));
     }
+    if (!isfinite(dmax))
+        return fr_fail(hb, FRICREG_ENONFINITE,
+                       "%s: the dynamic stiffness D_%d overflows at Omega = %g (|K| + w^2 |M| + w "
+                       "|C| beyond the double range)",
+                       fn, h, omega);
     gsl_matrix_complex_view D = gsl_matrix_complex_view_array(hb->D, n, n);
     int signum;
     gsl_linalg_complex_LU_decomp(&D.matrix, hb->perm, &signum);
@@ -113,14 +118,32 @@ static void derivative_times_y(fricreg_hb *hb, int h, double omega)
         }
 }
 
+/* The solves and the condensation are finite: a model, element or excitation scale near the
+ * double range overflows in them (FRICREG_ENONFINITE), before NaN reaches the AFT. */
+static int check_finite(fricreg_hb *hb, const char *fn, double omega)
+{
+    size_t H1 = (size_t)hb->H + 1, m = hb->m;
+    size_t counts[3] = {2 * H1 * hb->n * (m + 1), 2 * H1 * m * m, 2 * H1 * m};
+    const double *arrays[3] = {hb->Y, hb->G, hb->ql};
+    for (int a = 0; a < 3; a++)
+        for (size_t k = 0; k < counts[a]; k++)
+            if (!isfinite(arrays[a][k]))
+                return fr_fail(hb, FRICREG_ENONFINITE,
+                               "%s: the solves with D_h overflow at Omega = %g (the model's, the "
+                               "elements' or the excitation's scale is near the double range)",
+                               fn, omega);
+    return FRICREG_OK;
+}
+
 int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv)
 {
     if (hb->factored_omega == omega && (hb->factored_deriv || !deriv))
         return FRICREG_OK;
     size_t n = hb->n, m = hb->m, w = m + 1;
     hb->factored_omega = NAN;
+    int status = FRICREG_OK;
     for (int h = 0; h <= hb->H; h++) {
-        int status = factor_one(hb, fn, h, omega);
+        status = factor_one(hb, fn, h, omega);
         if (status != FRICREG_OK)
             return status;
         solve_columns(hb, h);
@@ -138,6 +161,8 @@ int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv)
         derivative_times_y(hb, h, omega);
         project(hb, Y, hb->Z, -1.0, dG, dq);
     }
+    if ((status = check_finite(hb, fn, omega)) != FRICREG_OK)
+        return status;
     hb->factored_omega = omega;
     hb->factored_deriv = deriv;
     return FRICREG_OK;

@@ -145,7 +145,7 @@ static int set_symmetric(fricreg_hb *hb, const char *fn, size_t ndof, const doub
                                A[i * n + k], k, i, A[k * n + i]);
     for (size_t i = 0; i < n; i++)
         for (size_t k = 0; k < n; k++)
-            dst[i * n + k] = 0.5 * (A[i * n + k] + A[k * n + i]);
+            dst[i * n + k] = 0.5 * A[i * n + k] + 0.5 * A[k * n + i]; /* no overflow near 1e308 */
     invalidate(hb);
     return FRICREG_OK;
 }
