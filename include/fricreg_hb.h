@@ -233,8 +233,10 @@ FRICREG_API int fricreg_hb_displacement(fricreg_hb *hb, size_t ndof, size_t nc, 
 /** Follow the periodic response from omega0 to omega1 by pseudo-arclength continuation in Ω
  *  (Keller's, Krack & Gross Ch. 5): from the solution at omega0 (fricreg_hb_solve's, from q0
  *  or the stuck guess), a tangent predictor and a Newton corrector on (R) bordered by the
- *  arclength condition, with the step control of fricreg_hb_set_continuation; through turning
- *  points in Ω; the last point is solved at omega1 exactly. Each point's Ω and the RMS of
+ *  arclength condition, with the step control of fricreg_hb_set_continuation (the
+ *  parametrization passes turning points in Ω; none was met in the tests, where the Jenkins
+ *  elements soften the resonances without folding them); the last point is solved at omega1
+ *  exactly. Each point's Ω and the RMS of
  *  each dof over one period, rms_k² = x0² + (1/2) Σ_h (a_h² + b_h²) (all harmonics), are
  *  stored (fricreg_hb_points, fricreg_hb_point), replacing those of an earlier call; the last
  *  point is the one fricreg_hb_displacement gives.
