@@ -29,6 +29,7 @@
 #include "fricreg_aft.h"
 #include "fricreg_disk_ctx.h"
 #include "fricreg_exact.h"
+#include "fricreg_hb.h"
 #include "fricreg_sim.h"
 #include "fricreg_stribeck.h"
 #include "fricreg_structure.h"
@@ -119,6 +120,37 @@ START_TEST(aft)
         assert_handler_intact("fricreg_aft_jenkins_sampled");
     }
     fricreg_aft_free(a);
+}
+END_TEST
+
+/* The HB driver's GSL calls (complex LU of K and D_h, real LU of Newton's matrix): singular
+ * K, a singular D_1 (undamped, at a natural frequency), a singular Newton matrix's neighbour
+ * (entries near 1e300) and a continuation must all come back as statuses. */
+START_TEST(harmonic_balance)
+{
+    fricreg_hb *hb = NULL;
+    ck_assert_int_eq(fricreg_hb_create(2, 1, 5, &hb), FRICREG_OK);
+    const double J[2] = {1.0, -1.0}, kt[1] = {2.385}, mun[1] = {0.3}, pc[2] = {0.7, 0.0},
+                 ps[2] = {0.0, 0.0}, K2[4] = {2.0, 0.0, 0.0, 2.0}, K[4] = {3.1, -1.2, -1.2, 1.2},
+                 Kbig[4] = {1e300, 0.0, 0.0, 1e300};
+    double q[11], x[22];
+    ck_assert_int_eq(fricreg_hb_set_elements(hb, 1, 2, J, kt, mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_excitation(hb, 2, pc, ps), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_solve(hb, 1.0, 11, NULL, q), FRICREG_ESINGULAR); /* K = 0 */
+    assert_handler_intact("fricreg_hb_solve, K singular");
+    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 2, K2), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_solve(hb, sqrt(2.0), 11, NULL, q), FRICREG_ESINGULAR);
+    assert_handler_intact("fricreg_hb_solve, D_1 singular");
+    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 2, Kbig), FRICREG_OK);
+    (void)fricreg_hb_solve(hb, 1.0, 11, NULL, q);
+    assert_handler_intact("fricreg_hb_solve, K near 1e300");
+    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 2, K), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_rayleigh(hb, 0.02, 0.01), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_solve(hb, 1.3, 11, NULL, q), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_displacement(hb, 2, 11, x), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_continue(hb, 0.3, 2.5, 11, NULL), FRICREG_OK);
+    assert_handler_intact("fricreg_hb_continue");
+    fricreg_hb_free(hb);
 }
 END_TEST
 
@@ -500,6 +532,7 @@ static Suite *handler_suite(void)
     tcase_set_timeout(tc, 120.0);
     tcase_add_test(tc, laws);
     tcase_add_test(tc, aft);
+    tcase_add_test(tc, harmonic_balance);
     tcase_add_test(tc, contexts);
     tcase_add_test(tc, disk_contexts);
     tcase_add_test(tc, disk_contexts_refused_and_singular);

@@ -48,6 +48,7 @@
 
 #include "fricreg.h"
 #include "fricreg_aft.h"
+#include "fricreg_hb.h"
 #include "fricreg_disk_ctx.h"
 #include "fricreg_iwan.h"
 #include "fricreg_jenkins.h"
@@ -1468,6 +1469,58 @@ static const struct script aft_create = {"aft create", 0,    NULL, 0,           
                                          aft_open,     NULL, NULL, aft_observe, aft_errcode,
                                          aft_close};
 
+/* ---- Harmonic balance ------------------------------------------------------------------------ */
+
+/* create alone (its blocks, the AFT workspace, GSL's permutations): a failure leaves no
+ * handle; the view is a 2-dof model with one element solved at one frequency, its
+ * displacement, and a short continuation's points (whose one allocation, the first 64 points'
+ * room, the view makes: not failed here). */
+static int hb_open(void **obj)
+{
+    fricreg_hb *hb = SENTINEL;
+    int status = fricreg_hb_create(2, 1, 3, &hb);
+    if (status != FRICREG_OK && hb != SENTINEL)
+        NOTE("hb_create failed (%d) but wrote its handle", status);
+    *obj = status == FRICREG_OK ? hb : NULL;
+    return status;
+}
+
+static int hb_errcode(const void *obj)
+{
+    return fricreg_hb_errcode(obj);
+}
+
+static void hb_close(void *obj)
+{
+    fricreg_hb_free(obj);
+}
+
+static void hb_observe(void *obj, struct view *v)
+{
+    fricreg_hb *hb = obj;
+    const double M[4] = {1.3, 0.0, 0.0, 0.9}, K[4] = {4.2, -1.7, -1.7, 2.385}, J[2] = {0.0, 1.0};
+    const double kt[1] = {1.5}, mun[1] = {0.25}, pc[2] = {0.6, 0.0}, ps[2] = {0.0, 0.125};
+    double q[7], x[14], rms[2], omega;
+    see(v, fricreg_hb_set_mass(hb, 2, M));
+    see(v, fricreg_hb_set_stiffness(hb, 2, K));
+    see(v, fricreg_hb_set_rayleigh(hb, 0.05, 0.01));
+    see(v, fricreg_hb_set_elements(hb, 1, 2, J, kt, mun));
+    see(v, fricreg_hb_set_excitation(hb, 2, pc, ps));
+    see(v, fricreg_hb_solve(hb, 1.1, 7, NULL, q));
+    see_all(v, q, 7);
+    see(v, fricreg_hb_displacement(hb, 2, 7, x));
+    see_all(v, x, 14);
+    see(v, fricreg_hb_set_continuation(hb, 0.05, 1e-6, 0.1, 64));
+    see(v, fricreg_hb_continue(hb, 1.0, 1.2, 7, NULL));
+    see(v, (double)fricreg_hb_points(hb));
+    see(v, fricreg_hb_point(hb, fricreg_hb_points(hb) - 1, &omega, 2, rms));
+    see(v, omega);
+    see_all(v, rms, 2);
+}
+
+static const struct script hb_create = {"hb create", 0,    NULL,       0,          0,       hb_open,
+                                        NULL,        NULL, hb_observe, hb_errcode, hb_close};
+
 /* ---- The tests ------------------------------------------------------------------------------- */
 
 START_TEST(test_ctx_create)
@@ -1649,6 +1702,13 @@ START_TEST(test_aft_create)
 END_TEST
 
 /* both paths' evaluations, with Jacobians, of a set-up workspace request no memory. */
+START_TEST(test_hb_create)
+{
+    struct tally t = fail_each_allocation(&hb_create);
+    ck_assert_int_eq(t.enomem, t.cases);
+}
+END_TEST
+
 START_TEST(test_aft_eval_does_not_allocate)
 {
     fricreg_aft *a = NULL;
@@ -1929,6 +1989,7 @@ static Suite *alloc_suite(void)
     tcase_add_test(drivers, test_sim_run_extrapolated);
     tcase_add_test(drivers, test_exact_run);
     tcase_add_test(drivers, test_exact_solve);
+    tcase_add_test(drivers, test_hb_create);
     tcase_add_loop_test(drivers, test_structure_run, 0, N_SCHEMES);
     suite_add_tcase(s, drivers);
     return s;

@@ -1,0 +1,295 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/**
+ * \file
+ * fricreg_hb.h — harmonic balance (HB) for the periodic steady state of a linear structure with
+ * 1-D Jenkins elements under harmonic excitation, at one frequency or along a branch in the
+ * excitation frequency by pseudo-arclength continuation. Beyond the paper: the
+ * frequency-domain driver of "joints" (docs/joints.md, section Harmonic balance), on the exact
+ * AFT of fricreg_aft.h. After M. Krack and J. Gross, "Harmonic Balance for Nonlinear Vibration
+ * Problems", Springer 2019 (Ch. 2 the method, Ch. 4 the condensation on the nonlinear
+ * coordinates, Ch. 5 the continuation).
+ *
+ * The model, x[ndof] the displacements, θ = Ω t:
+ *
+ *     M x'' + C x' + K x + J^T f(J x) = p_c cos Ωt + p_s sin Ωt
+ *
+ * with M, C, K symmetric ndof x ndof (dense, row-major), the m x ndof matrix J whose row i
+ * gives element i's relative displacement q_i = J_i x, and f_i the force of a 1-D Jenkins
+ * element (fricreg_jenkins.h: a spring kt_i in series with a Coulomb slider of bound mun_i),
+ * the stabilized hysteresis of fricreg_aft.h, entering as a spring's kt q would. Every
+ * periodic function is given by its Fourier coefficients up to harmonic H, in fricreg_aft.h's
+ * layout: x_k(θ) = x0 + Σ_{h=1..H} (a_h cos hθ + b_h sin hθ) as the 2H + 1 numbers
+ * (x0, a_1, b_1, ..., a_H, b_H).
+ *
+ * The HB equations per harmonic h, in complex form X_h = a_h − i b_h (and likewise F_h, P_h),
+ * with the dynamic stiffness D_h(Ω) = K − (hΩ)² M + i hΩ C:
+ *
+ *     D_h X_h = P_h − J^T F_h(q),     P_1 = p_c − i p_s, P_h = 0 otherwise        (HB)
+ *
+ * are linear in X_h for given element forces, so they are condensed on the elements'
+ * coordinates q = J x, m (2H + 1) unknowns (Krack & Gross Ch. 4):
+ *
+ *     R_h(q) = Q_h + G_h F_h(q) − J D_h^-1 P_h = 0,    G_h = J D_h^-1 J^T (m x m)     (R)
+ *
+ * with the Jacobian I + G_h ∂F_h/∂q from fricreg_aft_jenkins_exact's exact Jacobian. Newton's
+ * method with a backtracking line search solves (R); the displacements then follow from (HB),
+ * X_h = D_h^-1 P_h − (D_h^-1 J^T) F_h, with the solves already done for G_h. The static term
+ * h = 0 is K x0 = −J^T f0 (no static load): f does not depend on the mean q0 (the stabilized
+ * hysteresis is invariant under a shift of q, ∂f/∂q0 = 0), so the mean follows from the other
+ * harmonics through K^-1, and K must be nonsingular. A structure held only by its joints (K
+ * singular, a rigid-body mode) has a mean position that the periodic response does not decide
+ * (the sliders' offsets are left by the transient): add a ground spring, small against kt, to
+ * K, or eliminate the mode, before calling. Likewise each D_h (h = 1..H) must be nonsingular:
+ * a structure without damping has no finite response where hΩ is one of its own (the
+ * elements removed) natural frequencies; give C (or Rayleigh damping) at least a little.
+ *
+ * Cost per frequency: H + 1 complex LU factors of ndof x ndof (GSL's
+ * gsl_linalg_complex_LU_decomp, O(H ndof³)) and (H + 1)(m + 1) solves, then per Newton
+ * iteration m AFTs (O(H³) each) and a real LU of order m (2H + 1) (gsl_linalg_LU_decomp).
+ * Dense only in this version: the structure is for small to medium ndof.
+ *
+ * Conventions are those of fricreg.h: int results are fricreg_status codes, nothing is
+ * printed, a failed call leaves the caller's arrays untouched, one object per thread. The
+ * object keeps the status and a message of its last failed call (fricreg_hb_errcode,
+ * fricreg_hb_errmsg, fricreg_hb_errmsg_copy). Since 1.6 (FRICREG_1.6).
+ */
+#ifndef FRICREG_HB_H
+#define FRICREG_HB_H
+
+#include "fricreg.h"
+#include "fricreg_aft.h" /* FRICREG_AFT_MAX_HARMONICS */
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** \defgroup hb Joints: harmonic balance of structures with Jenkins elements (fricreg_hb)
+ *  An opaque harmonic-balance driver: a linear structure M, C, K with m 1-D Jenkins elements
+ *  on rows of J, excited at the fundamental, solved for H harmonics at one frequency or along
+ *  a frequency branch by pseudo-arclength continuation, condensed on the elements'
+ *  coordinates (docs/joints.md).
+ *  \{ */
+
+/** Opaque harmonic-balance driver: the model, the excitation, the solver settings, the
+ *  factors of the last frequency, the last solution and the continuation's points. */
+typedef struct fricreg_hb fricreg_hb;
+
+/** Largest number of harmonics H of fricreg_hb_create: the exact AFT's, 40. */
+#define FRICREG_HB_MAX_HARMONICS FRICREG_AFT_MAX_HARMONICS
+
+/** Create a harmonic-balance driver for ndof degrees of freedom, m Jenkins elements and the
+ *  harmonics 0..H.
+ *
+ *  Defaults: M = I, C = 0, K = 0 (set_stiffness before solving: K must be nonsingular), J
+ *  unset (fricreg_hb_set_elements before solving), no excitation, Newton tolerance 1e-10 with
+ *  at most 50 iterations, continuation steps ds = 0.02, between 1e-6 and 0.1, at most 2000
+ *  points. All memory but the continuation's points (fricreg_hb_continue) is allocated here:
+ *  O(ndof² + H m ndof + (m H)²) doubles (one D_h at a time; the
+ *  solves Y_h of every harmonic).
+ *
+ *  ndof       degrees of freedom, 1 <= ndof <= 4096 (dense matrices).
+ *  m          Jenkins elements, 1 <= m <= 256.
+ *  harmonics  H, 1 <= H <= FRICREG_HB_MAX_HARMONICS.
+ *  out        out: the new object, released with fricreg_hb_free. Written only on success.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if out is NULL; FRICREG_EINVAL if ndof, m or H is out of
+ *  its range; FRICREG_ENOMEM. With no object to keep it, a failure has no message beyond its
+ *  status, as for fricreg_ctx_create. Since 1.6. */
+FRICREG_API int fricreg_hb_create(size_t ndof, size_t m, int harmonics, fricreg_hb **out);
+
+/** Release the driver. fricreg_hb_free(NULL) does nothing. Since 1.6. */
+FRICREG_API void fricreg_hb_free(fricreg_hb *hb);
+
+/** Set the mass matrix M[ndof ndof], row-major, mass units (e.g. kg): finite, symmetric to
+ *  1e-12 of the rows' scales (|M_ij − M_ji| <= 1e-12 sqrt(r_i r_j), r_i = max_k |M_ik|);
+ *  its symmetric part (M + M^T)/2 is kept. Definiteness is not checked: what the solves need
+ *  is D_h nonsingular, checked at each frequency.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb or M is NULL; FRICREG_ESIZE if ndof is not the
+ *  driver's; FRICREG_ENONFINITE if an entry is NaN or infinite; FRICREG_ENOTSYM if M is not
+ *  symmetric. All inputs are checked before anything changes. Since 1.6. */
+FRICREG_API int fricreg_hb_set_mass(fricreg_hb *hb, size_t ndof, const double M[]);
+
+/** Set the stiffness matrix K[ndof ndof], row-major, force per unit displacement (e.g. N/m),
+ *  as fricreg_hb_set_mass (symmetric, finite); it must be nonsingular for the static term
+ *  (header comment), which the solves check.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_ENOTSYM, as
+ *  fricreg_hb_set_mass. Since 1.6. */
+FRICREG_API int fricreg_hb_set_stiffness(fricreg_hb *hb, size_t ndof, const double K[]);
+
+/** Set the damping matrix C[ndof ndof], row-major, force per unit velocity (e.g. N s/m), as
+ *  fricreg_hb_set_mass (symmetric, finite). Replaces Rayleigh damping.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_ENOTSYM, as
+ *  fricreg_hb_set_mass. Since 1.6. */
+FRICREG_API int fricreg_hb_set_damping(fricreg_hb *hb, size_t ndof, const double C[]);
+
+/** Rayleigh damping C = a0 M + a1 K (a0 in 1/s, a1 in s, both >= 0), formed from the M and K
+ *  in force at each frequency, so it follows later set_mass and set_stiffness calls; replaces
+ *  a damping matrix. Mode k of circular frequency w_k gets the damping ratio
+ *  a0/(2 w_k) + a1 w_k/2.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb is NULL; FRICREG_ENONFINITE if a0 or a1 is NaN
+ *  or infinite; FRICREG_EINVAL if a0 < 0 or a1 < 0. Since 1.6. */
+FRICREG_API int fricreg_hb_set_rayleigh(fricreg_hb *hb, double a0, double a1);
+
+/** Set the Jenkins elements: where they act and their parameters.
+ *
+ *  m            must equal the driver's element count.
+ *  ndof         must equal the driver's degrees of freedom.
+ *  J[m ndof]    row-major: element i's relative displacement is q_i = sum_k J[ndof i + k] x_k
+ *               (dimensionless for displacement dofs); finite, each row non-zero. Its forces
+ *               act on the structure as J^T f.
+ *  kt[m]        tangential stiffnesses > 0 (finite), force per unit displacement.
+ *  mun[m]       slip bounds mu N >= 0 (finite), force units.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb, J, kt or mun is NULL; FRICREG_ESIZE if m or ndof
+ *  is not the driver's; FRICREG_ENONFINITE if an entry is NaN or infinite; FRICREG_EINVAL if
+ *  a row of J is zero, some kt[i] <= 0 or mun[i] < 0. All inputs are checked before anything
+ *  changes. Since 1.6. */
+FRICREG_API int fricreg_hb_set_elements(fricreg_hb *hb, size_t m, size_t ndof, const double J[],
+                                        const double kt[], const double mun[]);
+
+/** Set the harmonic excitation of the fundamental, p(t) = pc cos Ωt + ps sin Ωt.
+ *
+ *  ndof      must equal the driver's degrees of freedom.
+ *  pc[ndof]  cosine amplitudes (finite), force units.
+ *  ps[ndof]  sine amplitudes (finite), force units.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb, pc or ps is NULL; FRICREG_ESIZE if ndof is not
+ *  the driver's; FRICREG_ENONFINITE if an entry is NaN or infinite. Since 1.6. */
+FRICREG_API int fricreg_hb_set_excitation(fricreg_hb *hb, size_t ndof, const double pc[],
+                                          const double ps[]);
+
+/** Newton's stopping rule: converged when the largest entry of the residual (R) is at most
+ *  tol times the problem's displacement scale (the largest |q| of the iterate and of the
+ *  response with the elements removed, J D_h^-1 P_h), after at least one iteration.
+ *
+ *  tol       0 < tol < 1 (finite), relative.
+ *  max_iter  1 <= max_iter <= 1000 iterations per solve (and per continuation step).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb is NULL; FRICREG_ENONFINITE if tol is NaN or
+ *  infinite; FRICREG_EINVAL if tol or max_iter is out of its range. Since 1.6. */
+FRICREG_API int fricreg_hb_set_newton(fricreg_hb *hb, double tol, int max_iter);
+
+/** The continuation's step control, in the arclength of the scaled unknowns (q divided by the
+ *  largest |q| of the starting solution, raised to the largest |q| reached along the branch, Ω
+ *  by |Ω1 − Ω0|, so ds = 0.01 is about a hundredth of the interval on a flat branch): start at ds, grow by 1.5 (up to ds_max) after a corrector
+ *  that converged within 4 iterations, halve after one that failed or ended farther than ds/2
+ *  from its predictor (it would have jumped along the branch, e.g. across a sharp peak); below ds_min the
+ *  continuation stops with FRICREG_EINTEGRATOR.
+ *
+ *  ds          first step, ds_min <= ds <= ds_max (finite).
+ *  ds_min      smallest step, > 0.
+ *  ds_max      largest step, <= 1.
+ *  max_points  bound on the points stored, >= 2; reaching it stops with FRICREG_EWORK.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb is NULL; FRICREG_ENONFINITE if ds, ds_min or
+ *  ds_max is NaN or infinite; FRICREG_EINVAL if they are out of order or range or max_points
+ *  < 2. Since 1.6. */
+FRICREG_API int fricreg_hb_set_continuation(fricreg_hb *hb, double ds, double ds_min, double ds_max,
+                                            size_t max_points);
+
+/** Solve the HB equations (R) at the excitation frequency omega by Newton's method with a
+ *  backtracking line search on |R|², from the guess q0 or, if q0 is NULL, from the response
+ *  with every element stuck (then, should that fail, with every element slipping freely).
+ *  The solution is kept for fricreg_hb_displacement.
+ *
+ *  omega        excitation circular frequency Ω > 0 (finite), 1/time (rad/s).
+ *  nq           must equal m (2H + 1).
+ *  q0[nq]       guess, or NULL: element i's coefficients (q0, a_1, b_1, ..., a_H, b_H) at
+ *               q0[(2H+1) i .. (2H+1) i + 2H], displacement units; finite.
+ *  q[nq]        out: the solution, in the same layout. May alias q0.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb or q is NULL; FRICREG_EINVAL if omega <= 0 or
+ *  the elements were not set; FRICREG_ENONFINITE if omega or some q0[j] is NaN or infinite,
+ *  or an intermediate overflows (a model, element or excitation scale near the double range:
+ *  D_h itself or its solves, or fricreg_aft_jenkins_exact's bound on 8 kt sum |q|);
+ *  FRICREG_ESIZE if nq is not m (2H + 1); FRICREG_ESINGULAR if K or some D_h(Ω) is singular
+ *  (a pivot of its LU factor below 1e-14 of the largest entry of |K| + (hΩ)² |M| + hΩ |C|;
+ *  header comment), or
+ *  Newton's matrix is; FRICREG_EWORK if Newton did not converge within max_iter iterations
+ *  (or its line search found no decrease); FRICREG_EINTEGRATOR if the AFT's root solver
+ *  failed (fricreg_aft_jenkins_exact). On failure q and the kept solution are untouched. Since
+ *  1.6. */
+FRICREG_API int fricreg_hb_solve(fricreg_hb *hb, double omega, size_t nq, const double q0[],
+                                 double q[]);
+
+/** The displacements' Fourier coefficients of the last solution (fricreg_hb_solve, or the
+ *  last point of fricreg_hb_continue), from (HB): X_h = D_h^-1 (P_h − J^T F_h(q)).
+ *
+ *  ndof          must equal the driver's degrees of freedom.
+ *  nc            must equal 2H + 1.
+ *  x[ndof nc]    out: dof k's coefficients (x0, a_1, b_1, ..., a_H, b_H) at x[nc k ..
+ *                nc k + 2H], displacement units.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb or x is NULL; FRICREG_ESIZE if ndof or nc is not
+ *  the driver's; FRICREG_EINVAL if there is no solution yet (or the model changed since);
+ *  FRICREG_EINTEGRATOR as fricreg_hb_solve (FRICREG_ENONFINITE cannot arise: the solution's
+ *  evaluation succeeded before). Since 1.6. */
+FRICREG_API int fricreg_hb_displacement(fricreg_hb *hb, size_t ndof, size_t nc, double x[]);
+
+/** Follow the periodic response from omega0 to omega1 by pseudo-arclength continuation in Ω
+ *  (Keller's, Krack & Gross Ch. 5): from the solution at omega0 (fricreg_hb_solve's, from q0
+ *  or the stuck guess), a tangent predictor and a Newton corrector on (R) bordered by the
+ *  arclength condition, with the step control of fricreg_hb_set_continuation (the
+ *  parametrization passes turning points in Ω; none was met in the tests, where the Jenkins
+ *  elements soften the resonances without folding them); the last point is solved at omega1
+ *  exactly. Each point's Ω and the RMS of
+ *  each dof over one period, rms_k² = x0² + (1/2) Σ_h (a_h² + b_h²) (all harmonics), are
+ *  stored (fricreg_hb_points, fricreg_hb_point), replacing those of an earlier call; the last
+ *  point is the one fricreg_hb_displacement gives.
+ *
+ *  omega0, omega1  the interval's ends, > 0 (finite), omega0 != omega1 (either order), rad/s.
+ *  nq, q0          as fricreg_hb_solve (q0 the guess at omega0, or NULL).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb is NULL; FRICREG_EINVAL if omega0 or omega1 <= 0,
+ *  they are equal, or the elements were not set; FRICREG_ENONFINITE if omega0, omega1 or some
+ *  q0[j] is NaN or infinite, or an intermediate overflows (as fricreg_hb_solve); FRICREG_ESIZE if nq is not m (2H + 1); FRICREG_ESINGULAR,
+ *  FRICREG_EWORK, FRICREG_EINTEGRATOR as fricreg_hb_solve at omega0; FRICREG_EINTEGRATOR if
+ *  the step fell below ds_min; FRICREG_EWORK if max_points were stored before omega1;
+ *  FRICREG_ENOMEM (for the first 64 points before anything changed; for more, later, with the
+ *  points so far kept). On failure the points reached so far are kept (fricreg_hb_points
+ *  counts them; 0 if the solve at omega0 failed) and fricreg_hb_displacement gives the last
+ *  solution. Allocates room for the points, 64 at first, doubling. Since 1.6. */
+FRICREG_API int fricreg_hb_continue(fricreg_hb *hb, double omega0, double omega1, size_t nq,
+                                    const double q0[]);
+
+/** Number of points stored by the last fricreg_hb_continue; 0 if none or hb is NULL. Returns
+ *  that number, not a status. Since 1.6. */
+FRICREG_API size_t fricreg_hb_points(const fricreg_hb *hb);
+
+/** One stored continuation point: its frequency and the RMS of each dof.
+ *
+ *  k           point index, 0 <= k < fricreg_hb_points(hb), in the order of the branch.
+ *  omega       out: its excitation frequency Ω, rad/s.
+ *  ndof        must equal the driver's degrees of freedom.
+ *  rms[ndof]   out: each dof's RMS over one period (fricreg_hb_continue), displacement units.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb, omega or rms is NULL; FRICREG_EINVAL if k is
+ *  out of range; FRICREG_ESIZE if ndof is not the driver's. Since 1.6. */
+FRICREG_API int fricreg_hb_point(fricreg_hb *hb, size_t k, double *omega, size_t ndof,
+                                 double rms[]);
+
+/** Status of the last failed call on hb. Returns that code, or FRICREG_OK if none (or hb
+ *  NULL). A successful call does not clear it. Since 1.6. */
+FRICREG_API int fricreg_hb_errcode(const fricreg_hb *hb);
+
+/** Message of the last failed call on hb: names the function, the argument and its value.
+ *  "" if none; "NULL HB driver" if hb is NULL. Owned by hb, valid until its next call.
+ *  Since 1.6. */
+FRICREG_API const char *fricreg_hb_errmsg(const fricreg_hb *hb);
+
+/** Copy the last error message into buf[len], NUL-terminated and truncated to fit (for
+ *  Fortran). Returns the full message length (excluding the NUL), as snprintf does; 0 and
+ *  nothing written if buf is NULL or len is 0. Since 1.6. */
+FRICREG_API size_t fricreg_hb_errmsg_copy(const fricreg_hb *hb, char *buf, size_t len);
+
+/** \} */
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FRICREG_HB_H */

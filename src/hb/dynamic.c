@@ -1,0 +1,169 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* dynamic.c — the dynamic stiffnesses D_h(Ω) = K − (hΩ)² M + i hΩ C, h = 0..H, factored by
+ * GSL's complex LU (partial pivoting; Golub & Van Loan, Matrix Computations, 4th ed., Alg.
+ * 3.4.1), their solves Y_h = D_h^-1 [J^T | P_h], and the condensation on the elements:
+ * G_h = J Y_h (the receptance between the elements' coordinates), ql_h = J D_h^-1 P_h (their
+ * response with the elements removed), and with deriv their Ω derivatives,
+ * d(J D^-1 B)/dΩ = −(J D^-1) D' (D^-1 B), where J D^-1 = (D^-1 J^T)^T because M, C, K (so D)
+ * are symmetric: no second solve. A pivot is checked before GSL's solve sees it (GSL reports a
+ * singular one to its error handler). */
+#include <math.h>
+#include <string.h>
+
+#include <gsl/gsl_linalg.h>
+
+#include "hb_internal.h"
+
+/* (a + ib)(c + id) accumulated into out[0..1] with the sign s. */
+static inline void cmac(double *out, double s, double a, double b, double c, double d)
+{
+    out[0] += s * (a * c - b * d);
+    out[1] += s * (a * d + b * c);
+}
+
+/* The damping in force: C, or a0 M + a1 K. */
+static double damping(const fricreg_hb *hb, size_t idx)
+{
+    return hb->rayleigh ? hb->a0 * hb->M[idx] + hb->a1 * hb->K[idx] : hb->C[idx];
+}
+
+/* Forms and factors D_h in hb->D; FRICREG_ESINGULAR if a pivot is below 1e-14 of the largest
+ * entry of |K| + w² |M| + w |C| (or not finite). */
+static int factor_one(fricreg_hb *hb, const char *fn, int h, double omega)
+{
+    size_t n = hb->n;
+    double w = h * omega, dmax = 0.0;
+    for (size_t k = 0; k < n * n; k++) {
+        hb->D[2 * k] = hb->K[k] - w * w * hb->M[k];
+        hb->D[2 * k + 1] = w * damping(hb, k);
+        /* the scale of the terms, not of their sum: K − w² M cancels at a resonance */
+        dmax = fmax(dmax, fabs(hb->K[k]) + w * w * fabs(hb->M[k]) + fabs(hb->D[2 * k + 1]));
+    }
+    if (!isfinite(dmax))
+        return fr_fail(hb, FRICREG_ENONFINITE,
+                       "%s: the dynamic stiffness D_%d overflows at Omega = %g (|K| + w^2 |M| + w "
+                       "|C| beyond the double range)",
+                       fn, h, omega);
+    gsl_matrix_complex_view D = gsl_matrix_complex_view_array(hb->D, n, n);
+    int signum;
+    gsl_linalg_complex_LU_decomp(&D.matrix, hb->perm, &signum);
+    for (size_t k = 0; k < n; k++) {
+        double p = hypot(hb->D[2 * (k * n + k)], hb->D[2 * (k * n + k) + 1]);
+        if (!(p > 1e-14 * dmax) || !isfinite(p))
+            return fr_fail(hb, FRICREG_ESINGULAR,
+                           "%s: %s is singular at Omega = %g (pivot %zu of its LU factor: %g, "
+                           "the matrices' scale %g)",
+                           fn, h == 0 ? "K" : "the dynamic stiffness D_h", omega, k, p, dmax);
+    }
+    return FRICREG_OK;
+}
+
+/* Y_h's columns: D_h^-1 J_e^T for each element e, and D_h^-1 P_h (0 but for h = 1). */
+static void solve_columns(fricreg_hb *hb, int h)
+{
+    size_t n = hb->n, m = hb->m, w = m + 1;
+    double *Y = hb->Y + 2 * (size_t)h * n * w;
+    gsl_matrix_complex_view D = gsl_matrix_complex_view_array(hb->D, n, n);
+    gsl_vector_complex_view b = gsl_vector_complex_view_array(hb->colw, n);
+    for (size_t e = 0; e <= m; e++) {
+        gsl_vector_complex_view x = gsl_vector_complex_view_array_with_stride(Y + 2 * e, w, n);
+        if (e == m && h != 1) {
+            gsl_vector_complex_set_zero(&x.vector);
+            continue;
+        }
+        for (size_t k = 0; k < n; k++) {
+            hb->colw[2 * k] = e < m ? hb->J[e * n + k] : hb->pc[k];
+            hb->colw[2 * k + 1] = e < m ? 0.0 : -hb->ps[k];
+        }
+        gsl_linalg_complex_LU_solve(&D.matrix, hb->perm, &b.vector, &x.vector);
+    }
+}
+
+/* out[e (m+1) + c] (complex, c <= m) = s sum_k L(e, k) B[k (m+1) + c], L(e, k) = J(e, k)
+ * (real) when left is NULL, else left[k (m+1) + e] (complex: a column of Y as a row). */
+static void project(const fricreg_hb *hb, const double *left, const double *B, double s, double *G,
+                    double *q)
+{
+    size_t n = hb->n, m = hb->m, w = m + 1;
+    for (size_t e = 0; e < m; e++)
+        for (size_t c = 0; c <= m; c++) {
+            double acc[2] = {0.0, 0.0};
+            for (size_t k = 0; k < n; k++) {
+                const double *b = B + 2 * (k * w + c);
+                if (left == NULL)
+                    cmac(acc, s, hb->J[e * n + k], 0.0, b[0], b[1]);
+                else
+                    cmac(acc, s, left[2 * (k * w + e)], left[2 * (k * w + e) + 1], b[0], b[1]);
+            }
+            double *dst = c < m ? G + 2 * (e * m + c) : q + 2 * e;
+            dst[0] = acc[0];
+            dst[1] = acc[1];
+        }
+}
+
+/* Z = D_h' Y_h, D_h' = dD_h/dΩ = −2 h² Ω M + i h C. */
+static void derivative_times_y(fricreg_hb *hb, int h, double omega)
+{
+    size_t n = hb->n, w = hb->m + 1;
+    const double *Y = hb->Y + 2 * (size_t)h * n * w;
+    memset(hb->Z, 0, 2 * n * w * sizeof(double));
+    for (size_t k = 0; k < n; k++)
+        for (size_t l = 0; l < n; l++) {
+            double re = -2.0 * h * h * omega * hb->M[k * n + l], im = h * damping(hb, k * n + l);
+            if (re == 0.0 && im == 0.0)
+                continue;
+            for (size_t c = 0; c < w; c++)
+                cmac(hb->Z + 2 * (k * w + c), 1.0, re, im, Y[2 * (l * w + c)],
+                     Y[2 * (l * w + c) + 1]);
+        }
+}
+
+/* The solves and the condensation are finite: a model, element or excitation scale near the
+ * double range overflows in them (FRICREG_ENONFINITE), before NaN reaches the AFT. */
+static int check_finite(fricreg_hb *hb, const char *fn, double omega)
+{
+    size_t H1 = (size_t)hb->H + 1, m = hb->m;
+    size_t counts[3] = {2 * H1 * hb->n * (m + 1), 2 * H1 * m * m, 2 * H1 * m};
+    const double *arrays[3] = {hb->Y, hb->G, hb->ql};
+    for (int a = 0; a < 3; a++)
+        for (size_t k = 0; k < counts[a]; k++)
+            if (!isfinite(arrays[a][k]))
+                return fr_fail(hb, FRICREG_ENONFINITE,
+                               "%s: the solves with D_h overflow at Omega = %g (the model's, the "
+                               "elements' or the excitation's scale is near the double range)",
+                               fn, omega);
+    return FRICREG_OK;
+}
+
+int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv)
+{
+    if (hb->factored_omega == omega && (hb->factored_deriv || !deriv))
+        return FRICREG_OK;
+    size_t n = hb->n, m = hb->m, w = m + 1;
+    hb->factored_omega = NAN;
+    int status = FRICREG_OK;
+    for (int h = 0; h <= hb->H; h++) {
+        status = factor_one(hb, fn, h, omega);
+        if (status != FRICREG_OK)
+            return status;
+        solve_columns(hb, h);
+        const double *Y = hb->Y + 2 * (size_t)h * n * w;
+        double *G = hb->G + 2 * (size_t)h * m * m, *q = hb->ql + 2 * (size_t)h * m;
+        project(hb, NULL, Y, 1.0, G, q);
+        double *dG = hb->dG + 2 * (size_t)h * m * m, *dq = hb->dql + 2 * (size_t)h * m;
+        if (!deriv)
+            continue;
+        if (h == 0) {
+            memset(dG, 0, 2 * m * m * sizeof(double));
+            memset(dq, 0, 2 * m * sizeof(double));
+            continue;
+        }
+        derivative_times_y(hb, h, omega);
+        project(hb, Y, hb->Z, -1.0, dG, dq);
+    }
+    if ((status = check_finite(hb, fn, omega)) != FRICREG_OK)
+        return status;
+    hb->factored_omega = omega;
+    hb->factored_deriv = deriv;
+    return FRICREG_OK;
+}

@@ -1,0 +1,293 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* hb.c — the harmonic-balance driver (fricreg_hb.h): create and free, the model, element,
+ * excitation and solver setters, each checking everything before it changes anything, and the
+ * error record. */
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/gsl_mem.h"
+#include "hb_internal.h"
+
+#define MAX_DOFS 4096
+#define MAX_ELEMENTS 256
+
+static void *alloc_doubles(size_t count)
+{
+    return malloc((count ? count : 1) * sizeof(double));
+}
+
+int fricreg_hb_create(size_t ndof, size_t m, int harmonics, fricreg_hb **out)
+{
+    if (out == NULL)
+        return FRICREG_ENULL;
+    if (ndof == 0 || ndof > MAX_DOFS || m == 0 || m > MAX_ELEMENTS || harmonics < 1 ||
+        harmonics > FRICREG_HB_MAX_HARMONICS)
+        return FRICREG_EINVAL;
+    fricreg_hb *hb = calloc(1, sizeof *hb);
+    if (hb == NULL)
+        return FRICREG_ENOMEM;
+    size_t n = ndof, H1 = (size_t)harmonics + 1, nc = 2 * (size_t)harmonics + 1, nq = m * nc;
+    *hb = (fricreg_hb){.n = n,
+                       .m = m,
+                       .H = harmonics,
+                       .nc = nc,
+                       .nq = nq,
+                       .tol = 1e-10,
+                       .max_iter = 50,
+                       .ds0 = 0.02,
+                       .ds_min = 1e-6,
+                       .ds_max = 0.1,
+                       .max_points = 2000,
+                       .factored_omega = NAN};
+    hb->M = alloc_doubles(3 * n * n);
+    hb->J = alloc_doubles(m * n + 2 * m + 2 * n);
+    hb->D = alloc_doubles(2 * n * n);
+    hb->Y = alloc_doubles(2 * H1 * n * (m + 1));
+    hb->Z = alloc_doubles(2 * n * (m + 1) + 2 * n);
+    hb->G = alloc_doubles(4 * H1 * m * m + 4 * H1 * m);
+    hb->fq = alloc_doubles(nq + m * nc * nc + (nq + 1) * (nq + 1) + 8 * (nq + 1) + nq);
+    hb->perm = fr_gsl_permutation_new(n);
+    hb->perm2 = fr_gsl_permutation_new(nq + 1);
+    int status = fricreg_aft_create(harmonics, 0, &hb->aft);
+    if (!hb->M || !hb->J || !hb->D || !hb->Y || !hb->Z || !hb->G || !hb->fq || !hb->perm ||
+        !hb->perm2 || status != FRICREG_OK) {
+        fricreg_hb_free(hb);
+        return FRICREG_ENOMEM;
+    }
+    hb->C = hb->M + n * n;
+    hb->K = hb->C + n * n;
+    memset(hb->M, 0, 3 * n * n * sizeof(double));
+    for (size_t k = 0; k < n; k++)
+        hb->M[k * n + k] = 1.0;
+    hb->kt = hb->J + m * n;
+    hb->mun = hb->kt + m;
+    hb->pc = hb->mun + m;
+    hb->ps = hb->pc + n;
+    memset(hb->J, 0, (m * n + 2 * m + 2 * n) * sizeof(double));
+    hb->colw = hb->Z + 2 * n * (m + 1);
+    hb->ql = hb->G + 2 * H1 * m * m;
+    hb->dG = hb->ql + 2 * H1 * m;
+    hb->dql = hb->dG + 2 * H1 * m * m;
+    hb->jq = hb->fq + nq;
+    hb->A = hb->jq + m * nc * nc;
+    hb->R = hb->A + (nq + 1) * (nq + 1);
+    hb->rw = hb->R + (nq + 1);
+    hb->dy = hb->rw + (nq + 1);
+    hb->qw = hb->dy + (nq + 1);
+    hb->qt = hb->qw + (nq + 1);
+    hb->tan = hb->qt + (nq + 1);
+    hb->yp = hb->tan + (nq + 1);
+    hb->qsol = hb->yp + 2 * (nq + 1);
+    *out = hb;
+    return FRICREG_OK;
+}
+
+void fricreg_hb_free(fricreg_hb *hb)
+{
+    if (hb == NULL)
+        return;
+    free(hb->M);
+    free(hb->J);
+    free(hb->D);
+    free(hb->Y);
+    free(hb->Z);
+    free(hb->G);
+    free(hb->fq);
+    free(hb->perm);
+    free(hb->perm2);
+    free(hb->pts);
+    fricreg_aft_free(hb->aft);
+    free(hb);
+}
+
+/* A model change: the factors and the kept solution no longer hold. */
+static void invalidate(fricreg_hb *hb)
+{
+    hb->factored_omega = NAN;
+    hb->have_solution = 0;
+}
+
+static int check_ndof(fricreg_hb *hb, const char *fn, size_t ndof)
+{
+    if (ndof != hb->n)
+        return fr_fail(hb, FRICREG_ESIZE, "%s: ndof = %zu, the driver has %zu", fn, ndof, hb->n);
+    return FRICREG_OK;
+}
+
+/* The symmetric-matrix setters' one check and copy: finite, symmetric to 1e-12 of the rows'
+ * scales, its symmetric part into dst. */
+static int set_symmetric(fricreg_hb *hb, const char *fn, size_t ndof, const double *A, double *dst)
+{
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    if (A == NULL)
+        return fr_fail(hb, FRICREG_ENULL, "%s: the matrix is NULL", fn);
+    if (check_ndof(hb, fn, ndof) != FRICREG_OK)
+        return FRICREG_ESIZE;
+    size_t n = ndof;
+    for (size_t k = 0; k < n * n; k++)
+        if (!isfinite(A[k]))
+            return fr_fail(hb, FRICREG_ENONFINITE, "%s: entry (%zu, %zu) = %g", fn, k / n, k % n,
+                           A[k]);
+    double *scale = hb->colw; /* scratch [2n]: the rows' largest entries */
+    for (size_t i = 0; i < n; i++) {
+        scale[i] = 0.0;
+        for (size_t k = 0; k < n; k++)
+            scale[i] = fmax(scale[i], fabs(A[i * n + k]));
+    }
+    for (size_t i = 0; i < n; i++)
+        for (size_t k = i + 1; k < n; k++)
+            if (fabs(A[i * n + k] - A[k * n + i]) > 1e-12 * sqrt(scale[i] * scale[k]))
+                return fr_fail(hb, FRICREG_ENOTSYM,
+                               "%s: entries (%zu, %zu) = %g and (%zu, %zu) = %g", fn, i, k,
+                               A[i * n + k], k, i, A[k * n + i]);
+    for (size_t i = 0; i < n; i++)
+        for (size_t k = 0; k < n; k++)
+            dst[i * n + k] = 0.5 * A[i * n + k] + 0.5 * A[k * n + i]; /* no overflow near 1e308 */
+    invalidate(hb);
+    return FRICREG_OK;
+}
+
+int fricreg_hb_set_mass(fricreg_hb *hb, size_t ndof, const double M[])
+{
+    return set_symmetric(hb, "set_mass", ndof, M, hb ? hb->M : NULL);
+}
+
+int fricreg_hb_set_stiffness(fricreg_hb *hb, size_t ndof, const double K[])
+{
+    return set_symmetric(hb, "set_stiffness", ndof, K, hb ? hb->K : NULL);
+}
+
+int fricreg_hb_set_damping(fricreg_hb *hb, size_t ndof, const double C[])
+{
+    int status = set_symmetric(hb, "set_damping", ndof, C, hb ? hb->C : NULL);
+    if (status == FRICREG_OK)
+        hb->rayleigh = 0;
+    return status;
+}
+
+int fricreg_hb_set_rayleigh(fricreg_hb *hb, double a0, double a1)
+{
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    if (!isfinite(a0) || !isfinite(a1))
+        return fr_fail(hb, FRICREG_ENONFINITE, "set_rayleigh: a0 = %g, a1 = %g", a0, a1);
+    if (a0 < 0.0 || a1 < 0.0)
+        return fr_fail(hb, FRICREG_EINVAL, "set_rayleigh: a0 = %g and a1 = %g must be >= 0", a0,
+                       a1);
+    hb->rayleigh = 1;
+    hb->a0 = a0;
+    hb->a1 = a1;
+    invalidate(hb);
+    return FRICREG_OK;
+}
+
+int fricreg_hb_set_elements(fricreg_hb *hb, size_t m, size_t ndof, const double J[],
+                            const double kt[], const double mun[])
+{
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    if (J == NULL || kt == NULL || mun == NULL)
+        return fr_fail(hb, FRICREG_ENULL, "set_elements: %s is NULL",
+                       J == NULL    ? "J"
+                       : kt == NULL ? "kt"
+                                    : "mun");
+    if (m != hb->m)
+        return fr_fail(hb, FRICREG_ESIZE, "set_elements: m = %zu, the driver has %zu", m, hb->m);
+    if (check_ndof(hb, "set_elements", ndof) != FRICREG_OK)
+        return FRICREG_ESIZE;
+    for (size_t i = 0; i < m; i++) {
+        double norm = 0.0;
+        for (size_t k = 0; k < ndof; k++) {
+            if (!isfinite(J[i * ndof + k]))
+                return fr_fail(hb, FRICREG_ENONFINITE, "set_elements: J(%zu, %zu) = %g", i, k,
+                               J[i * ndof + k]);
+            norm += fabs(J[i * ndof + k]);
+        }
+        if (norm == 0.0)
+            return fr_fail(hb, FRICREG_EINVAL, "set_elements: row %zu of J is zero", i);
+        if (!isfinite(kt[i]) || !isfinite(mun[i]))
+            return fr_fail(hb, FRICREG_ENONFINITE, "set_elements: kt[%zu] = %g, mun[%zu] = %g", i,
+                           kt[i], i, mun[i]);
+        if (!(kt[i] > 0.0) || !(mun[i] >= 0.0))
+            return fr_fail(hb, FRICREG_EINVAL,
+                           "set_elements: kt[%zu] = %g must be > 0, mun[%zu] = %g >= 0", i, kt[i],
+                           i, mun[i]);
+    }
+    memcpy(hb->J, J, m * ndof * sizeof *J);
+    memcpy(hb->kt, kt, m * sizeof *kt);
+    memcpy(hb->mun, mun, m * sizeof *mun);
+    hb->have_elements = 1;
+    invalidate(hb);
+    return FRICREG_OK;
+}
+
+int fricreg_hb_set_excitation(fricreg_hb *hb, size_t ndof, const double pc[], const double ps[])
+{
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    if (pc == NULL || ps == NULL)
+        return fr_fail(hb, FRICREG_ENULL, "set_excitation: %s is NULL", pc == NULL ? "pc" : "ps");
+    if (check_ndof(hb, "set_excitation", ndof) != FRICREG_OK)
+        return FRICREG_ESIZE;
+    for (size_t k = 0; k < ndof; k++)
+        if (!isfinite(pc[k]) || !isfinite(ps[k]))
+            return fr_fail(hb, FRICREG_ENONFINITE, "set_excitation: pc[%zu] = %g, ps[%zu] = %g", k,
+                           pc[k], k, ps[k]);
+    memcpy(hb->pc, pc, ndof * sizeof *pc);
+    memcpy(hb->ps, ps, ndof * sizeof *ps);
+    invalidate(hb);
+    return FRICREG_OK;
+}
+
+int fricreg_hb_set_newton(fricreg_hb *hb, double tol, int max_iter)
+{
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    if (!isfinite(tol))
+        return fr_fail(hb, FRICREG_ENONFINITE, "set_newton: tol = %g", tol);
+    if (!(tol > 0.0 && tol < 1.0) || max_iter < 1 || max_iter > 1000)
+        return fr_fail(hb, FRICREG_EINVAL,
+                       "set_newton: tol = %g must be in (0, 1), max_iter = %d in [1, 1000]", tol,
+                       max_iter);
+    hb->tol = tol;
+    hb->max_iter = max_iter;
+    return FRICREG_OK;
+}
+
+int fricreg_hb_set_continuation(fricreg_hb *hb, double ds, double ds_min, double ds_max,
+                                size_t max_points)
+{
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    if (!isfinite(ds) || !isfinite(ds_min) || !isfinite(ds_max))
+        return fr_fail(hb, FRICREG_ENONFINITE,
+                       "set_continuation: ds = %g, ds_min = %g, ds_max = %g", ds, ds_min, ds_max);
+    if (!(ds_min > 0.0 && ds_min <= ds && ds <= ds_max && ds_max <= 1.0) || max_points < 2)
+        return fr_fail(hb, FRICREG_EINVAL,
+                       "set_continuation: need 0 < ds_min = %g <= ds = %g <= ds_max = %g <= 1 and "
+                       "max_points = %zu >= 2",
+                       ds_min, ds, ds_max, max_points);
+    hb->ds0 = ds;
+    hb->ds_min = ds_min;
+    hb->ds_max = ds_max;
+    hb->max_points = max_points;
+    return FRICREG_OK;
+}
+
+int fricreg_hb_errcode(const fricreg_hb *hb)
+{
+    return hb ? hb->err.code : FRICREG_OK;
+}
+
+const char *fricreg_hb_errmsg(const fricreg_hb *hb)
+{
+    return hb ? hb->err.msg : "NULL HB driver";
+}
+
+size_t fricreg_hb_errmsg_copy(const fricreg_hb *hb, char *buf, size_t len)
+{
+    return fr_error_copy(fricreg_hb_errmsg(hb), buf, len);
+}

@@ -1,0 +1,119 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* hb_internal.h — the harmonic-balance driver's layout (fricreg_hb.h) and the kernels its files
+ * share: dynamic.c factors the dynamic stiffnesses and condenses them on the elements
+ * (G_h = J D_h^-1 J^T), residual.c evaluates (R), its Jacobian and its Ω derivative, newton.c
+ * solves at one Ω, continuation.c follows a branch, recover.c gives the displacements. Complex
+ * numbers are stored as (re, im) pairs of doubles. Included only inside src/hb/. */
+#ifndef FRICREG_HB_INTERNAL_H
+#define FRICREG_HB_INTERNAL_H
+
+#include <stddef.h>
+
+#include <gsl/gsl_permutation.h>
+
+#include "base/error.h"
+#include "fricreg_aft.h"
+#include "fricreg_hb.h"
+
+struct fricreg_hb {
+    size_t n, m;       /* dofs, elements */
+    int H;             /* harmonics */
+    size_t nc, nq;     /* 2H + 1 coefficients, m nc unknowns */
+    double *M, *C, *K; /* [n n] each, row-major, symmetric */
+    int rayleigh;      /* C = a0 M + a1 K instead of the matrix C */
+    double a0, a1;
+    double *J, *kt, *mun; /* [m n], [m], [m] */
+    int have_elements;
+    double *pc, *ps; /* [n] excitation of the fundamental */
+
+    double tol;
+    int max_iter;
+    double ds0, ds_min, ds_max;
+    size_t max_points;
+
+    fricreg_aft *aft;
+
+    /* The factors of one frequency (dynamic.c), valid while factored_omega is that Ω. */
+    double factored_omega; /* NaN: none */
+    int factored_deriv;    /* the Ω derivatives dG, dql are there too */
+    double *D;             /* [n n] complex: one D_h at a time, LU-factored in place */
+    gsl_permutation *perm; /* [n] */
+    double *Y;             /* [(H+1) n (m+1)] complex: D_h^-1 [J^T | P_h], row k of harmonic h at
+                     Y[(h n + k)(m+1)], column m the load (0 but for h = 1) */
+    double *Z;             /* [n (m+1)] complex scratch: D_h' Y_h */
+    double *G;             /* [(H+1) m m] complex: G_h = J D_h^-1 J^T */
+    double *ql;            /* [(H+1) m] complex: J D_h^-1 P_h */
+    double *dG;            /* [(H+1) m m] complex: dG_h/dΩ */
+    double *dql;           /* [(H+1) m] complex: dql_h/dΩ */
+    double *colw;          /* [n] complex scratch: one column */
+
+    /* Newton (residual.c, newton.c, continuation.c) */
+    double *fq;             /* [nq] element force coefficients at the last evaluation */
+    double *jq;             /* [m nc nc] their Jacobians */
+    double *R;              /* [nq + 1] residual (continuation: the arclength equation last) */
+    double *A;              /* [(nq + 1)^2] Newton's matrix, LU-factored in place */
+    double *rw;             /* [nq + 1] dR/dΩ, then scratch */
+    double *dy;             /* [nq + 1] Newton's step */
+    double *qw;             /* [nq + 1] iterate (continuation: Ω last) */
+    double *qt;             /* [nq + 1] line search trial */
+    double *tan;            /* [nq + 1] continuation tangent */
+    double *yp;             /* [nq + 1] continuation: last point, then predictor */
+    gsl_permutation *perm2; /* [nq + 1] */
+    int iterations;         /* of the last Newton solve */
+
+    /* the last solution */
+    int have_solution;
+    double omega_sol;
+    double *qsol; /* [nq] */
+
+    /* the continuation's points: [npts (1 + n)], Ω then the n RMS values */
+    double *pts;
+    size_t npts, cap;
+
+    struct fr_error err;
+};
+
+/* Factors D_h(omega) for h = 0..H and forms Y, G, ql (and dG, dql when deriv); keeps them
+ * while omega stays. FRICREG_OK or FRICREG_ESINGULAR (message recorded, with fn). */
+int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv);
+
+/* The real LU solve of Newton's matrix A[nd nd] (factored in place) for rhs[nd] into sol[nd]
+ * (may alias rhs). FRICREG_OK or FRICREG_ESINGULAR (a pivot below 1e-14 of the matrix's
+ * largest entry; message recorded). */
+int fr_hb_lu_solve(fricreg_hb *hb, const char *fn, size_t nd, double *rhs, double *sol);
+
+/* The forces and, with jac, Jacobians of every element at q[nq] (fq, jq), then the residual
+ * (R) into R[nq] at the factored Ω. FRICREG_OK or FRICREG_EINTEGRATOR (the AFT). */
+int fr_hb_residual(fricreg_hb *hb, const char *fn, const double *q, double *R, int jac);
+
+/* Newton's matrix I + G ∂F/∂q from the Jacobian blocks jac[m nc nc], into A with leading
+ * dimension ld (rows and columns 0..nq-1). */
+void fr_hb_matrix(fricreg_hb *hb, const double *jac, double *A, size_t ld);
+
+/* dR/dΩ at the forces fq: dG F − dql, into out[nq] (needs the derivatives factored). */
+void fr_hb_domega(fricreg_hb *hb, double *out);
+
+/* The displacement scale of the convergence test: max(|q|_inf, |ql|_inf), or 1 if both 0. */
+double fr_hb_scale(const fricreg_hb *hb, const double *q);
+
+/* Newton's method at the factored Ω from qw (in place), tolerance relative to the scale.
+ * FRICREG_OK, FRICREG_ESINGULAR, FRICREG_EWORK, FRICREG_EINTEGRATOR (message recorded). */
+int fr_hb_newton(fricreg_hb *hb, const char *fn);
+
+/* The checks of omega, nq and q0 that fricreg_hb_solve and fricreg_hb_continue share. */
+int fr_hb_check_start(fricreg_hb *hb, const char *fn, double omega, size_t nq, const double *q0);
+
+/* Factors at omega and solves (R) from q0, or from the stuck guess and then the slipping one:
+ * the solution in qw (R, fq, jq at it), kept as the driver's last solution. */
+int fr_hb_solve_at(fricreg_hb *hb, const char *fn, double omega, const double *q0);
+
+/* The starting guess into qw: every element stuck (stuck) or slipping freely (F = 0). */
+int fr_hb_guess(fricreg_hb *hb, const char *fn, int stuck);
+
+/* The displacements' coefficients x[n nc] from the forces fq at the factored Ω. */
+void fr_hb_recover(const fricreg_hb *hb, double *x);
+
+/* Each dof's RMS over a period from the forces fq at the factored Ω, into rms[n]. */
+void fr_hb_rms(const fricreg_hb *hb, double *rms);
+
+#endif

@@ -1,0 +1,151 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* newton.c — the HB equations (R) at one frequency: the starting guesses (every element stuck,
+ * or slipping freely) and Newton's method with a backtracking line search on |R|² (Armijo's
+ * condition with c = 1e-4, halving down to 1/1024; Nocedal & Wright, Numerical Optimization,
+ * 2nd ed., Alg. 3.1 on the merit function of their Sec. 11.2), and fricreg_hb_solve. */
+#include <math.h>
+#include <string.h>
+
+#include "hb_internal.h"
+
+static double norm2(const double *v, size_t n)
+{
+    double s = 0.0;
+    for (size_t j = 0; j < n; j++)
+        s += v[j] * v[j];
+    return sqrt(s);
+}
+
+static double norm_inf(const double *v, size_t n)
+{
+    double s = 0.0;
+    for (size_t j = 0; j < n; j++)
+        s = fmax(s, fabs(v[j]));
+    return s;
+}
+
+int fr_hb_guess(fricreg_hb *hb, const char *fn, int stuck)
+{
+    size_t nq = hb->nq, nc = hb->nc;
+    memset(hb->qt, 0, nq * sizeof(double));
+    int status = fr_hb_residual(hb, fn, hb->qt, hb->R, 0); /* F(0) = 0: R = −ql */
+    if (status != FRICREG_OK)
+        return status;
+    for (size_t j = 0; j < nq; j++)
+        hb->qw[j] = -hb->R[j];
+    if (!stuck)
+        return FRICREG_OK;
+    /* the centred stick: f_h = kt q_h for h >= 1, f_0 = 0 (fricreg_aft.h) */
+    memset(hb->jq, 0, hb->m * nc * nc * sizeof(double));
+    for (size_t e = 0; e < hb->m; e++)
+        for (size_t c = 1; c < nc; c++)
+            hb->jq[e * nc * nc + c * nc + c] = hb->kt[e];
+    fr_hb_matrix(hb, hb->jq, hb->A, nq);
+    return fr_hb_lu_solve(hb, fn, nq, hb->qw, hb->qw);
+}
+
+/* Backtracking from qw along dy: the first of alpha = 1, 1/2, ..., 1/1024 whose residual
+ * meets Armijo's condition on |R| becomes qw (with R, fq, jq at it). Converged iterates
+ * (|R| within the tolerance already) take the full step: rounding decides there. */
+static int line_search(fricreg_hb *hb, const char *fn, int converged)
+{
+    size_t nq = hb->nq;
+    double r0 = norm2(hb->R, nq);
+    for (double alpha = 1.0; alpha >= 1.0 / 1024; alpha *= 0.5) {
+        for (size_t j = 0; j < nq; j++)
+            hb->qt[j] = hb->qw[j] + alpha * hb->dy[j];
+        int status = fr_hb_residual(hb, fn, hb->qt, hb->rw, 1);
+        if (status != FRICREG_OK)
+            return status;
+        if (converged || norm2(hb->rw, nq) <= (1.0 - 1e-4 * alpha) * r0) {
+            memcpy(hb->qw, hb->qt, nq * sizeof(double));
+            memcpy(hb->R, hb->rw, nq * sizeof(double));
+            return FRICREG_OK;
+        }
+    }
+    return fr_fail(hb, FRICREG_EWORK, "%s: Newton's line search found no decrease of |R| = %g", fn,
+                   r0);
+}
+
+int fr_hb_newton(fricreg_hb *hb, const char *fn)
+{
+    size_t nq = hb->nq;
+    int status = fr_hb_residual(hb, fn, hb->qw, hb->R, 1);
+    for (int it = 0; status == FRICREG_OK; it++) {
+        double r = norm_inf(hb->R, nq), bound = hb->tol * fr_hb_scale(hb, hb->qw);
+        if (it >= 1 && r <= bound) {
+            hb->iterations = it;
+            return FRICREG_OK;
+        }
+        if (it == hb->max_iter)
+            return fr_fail(hb, FRICREG_EWORK,
+                           "%s: Newton did not converge in %d iterations (|R| = %g, tolerance %g)",
+                           fn, it, r, bound);
+        fr_hb_matrix(hb, hb->jq, hb->A, nq);
+        for (size_t j = 0; j < nq; j++)
+            hb->dy[j] = -hb->R[j];
+        status = fr_hb_lu_solve(hb, fn, nq, hb->dy, hb->dy);
+        if (status == FRICREG_OK)
+            status = line_search(hb, fn, r <= bound);
+    }
+    return status;
+}
+
+/* The arguments every solve shares: omega, nq, q0. */
+int fr_hb_check_start(fricreg_hb *hb, const char *fn, double omega, size_t nq, const double *q0)
+{
+    if (!isfinite(omega))
+        return fr_fail(hb, FRICREG_ENONFINITE, "%s: Omega = %g", fn, omega);
+    if (!(omega > 0.0))
+        return fr_fail(hb, FRICREG_EINVAL, "%s: Omega = %g must be > 0", fn, omega);
+    if (!hb->have_elements)
+        return fr_fail(hb, FRICREG_EINVAL, "%s: no elements (fricreg_hb_set_elements)", fn);
+    if (nq != hb->nq)
+        return fr_fail(hb, FRICREG_ESIZE, "%s: nq = %zu, the driver has m (2H + 1) = %zu", fn, nq,
+                       hb->nq);
+    for (size_t j = 0; q0 != NULL && j < nq; j++)
+        if (!isfinite(q0[j]))
+            return fr_fail(hb, FRICREG_ENONFINITE, "%s: q0[%zu] = %g", fn, j, q0[j]);
+    return FRICREG_OK;
+}
+
+/* Solves at omega from q0, or from the stuck guess and then the slipping one; the solution in
+ * qw (and R, fq, jq at it), kept as the driver's last. */
+int fr_hb_solve_at(fricreg_hb *hb, const char *fn, double omega, const double *q0)
+{
+    int status = fr_hb_factor(hb, fn, omega, 0);
+    if (status != FRICREG_OK)
+        return status;
+    for (int attempt = 0; attempt < (q0 ? 1 : 2); attempt++) {
+        if (q0 != NULL)
+            memcpy(hb->qw, q0, hb->nq * sizeof(double));
+        else if ((status = fr_hb_guess(hb, fn, attempt == 0)) != FRICREG_OK)
+            continue;
+        if ((status = fr_hb_newton(hb, fn)) == FRICREG_OK)
+            break;
+    }
+    if (status != FRICREG_OK)
+        return status;
+    memcpy(hb->qsol, hb->qw, hb->nq * sizeof(double));
+    hb->omega_sol = omega;
+    hb->have_solution = 1;
+    return FRICREG_OK;
+}
+
+int fricreg_hb_solve(fricreg_hb *hb, double omega, size_t nq, const double q0[], double q[])
+{
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    if (q == NULL)
+        return fr_fail(hb, FRICREG_ENULL, "solve: q is NULL");
+    struct fr_error before = hb->err; /* a success keeps it: a first guess's failure is not
+                                         the call's */
+    int status = fr_hb_check_start(hb, "solve", omega, nq, q0);
+    if (status == FRICREG_OK)
+        status = fr_hb_solve_at(hb, "solve", omega, q0);
+    if (status == FRICREG_OK) {
+        memcpy(q, hb->qsol, nq * sizeof(double));
+        hb->err = before;
+    }
+    return status;
+}

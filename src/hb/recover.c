@@ -1,0 +1,76 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* recover.c — the displacements from the elements' forces by (HB) of fricreg_hb.h,
+ * X_h = D_h^-1 P_h − (D_h^-1 J^T) F_h, with the solves Y_h of the factored frequency, the RMS
+ * per dof, and fricreg_hb_displacement. */
+#include <math.h>
+#include <string.h>
+
+#include "hb_internal.h"
+
+/* X_h of dof k (complex, into out[2]) from the forces fq. */
+static void coefficient(const fricreg_hb *hb, int h, size_t k, double *out)
+{
+    size_t m = hb->m, w = m + 1, nc = hb->nc;
+    const double *y = hb->Y + 2 * (((size_t)h * hb->n + k) * w);
+    double re = y[2 * m], im = y[2 * m + 1];
+    for (size_t e = 0; e < m; e++) {
+        double fa = h == 0 ? hb->fq[e * nc] : hb->fq[e * nc + 2 * (size_t)h - 1];
+        double fb = h == 0 ? 0.0 : -hb->fq[e * nc + 2 * (size_t)h]; /* F = fa − i fb */
+        re -= y[2 * e] * fa - y[2 * e + 1] * fb;
+        im -= y[2 * e] * fb + y[2 * e + 1] * fa;
+    }
+    out[0] = re;
+    out[1] = im;
+}
+
+void fr_hb_recover(const fricreg_hb *hb, double *x)
+{
+    size_t nc = hb->nc;
+    for (size_t k = 0; k < hb->n; k++)
+        for (int h = 0; h <= hb->H; h++) {
+            double X[2];
+            coefficient(hb, h, k, X);
+            if (h == 0) {
+                x[k * nc] = X[0];
+                continue;
+            }
+            x[k * nc + 2 * (size_t)h - 1] = X[0];
+            x[k * nc + 2 * (size_t)h] = -X[1]; /* X = a − i b */
+        }
+}
+
+void fr_hb_rms(const fricreg_hb *hb, double *rms)
+{
+    for (size_t k = 0; k < hb->n; k++) {
+        double s = 0.0;
+        for (int h = 0; h <= hb->H; h++) {
+            double X[2];
+            coefficient(hb, h, k, X);
+            s += h == 0 ? X[0] * X[0] : 0.5 * (X[0] * X[0] + X[1] * X[1]);
+        }
+        rms[k] = sqrt(s);
+    }
+}
+
+int fricreg_hb_displacement(fricreg_hb *hb, size_t ndof, size_t nc, double x[])
+{
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    if (x == NULL)
+        return fr_fail(hb, FRICREG_ENULL, "displacement: x is NULL");
+    if (ndof != hb->n || nc != hb->nc)
+        return fr_fail(hb, FRICREG_ESIZE,
+                       "displacement: ndof = %zu, nc = %zu, the driver has %zu and 2H + 1 = %zu",
+                       ndof, nc, hb->n, hb->nc);
+    if (!hb->have_solution)
+        return fr_fail(hb, FRICREG_EINVAL,
+                       "displacement: no solution (none yet, or the model changed since)");
+    /* the factors and forces of the solution's frequency: a later failed call may have moved
+     * them */
+    int status = fr_hb_factor(hb, "displacement", hb->omega_sol, 0);
+    if (status == FRICREG_OK)
+        status = fr_hb_residual(hb, "displacement", hb->qsol, hb->rw, 0);
+    if (status == FRICREG_OK)
+        fr_hb_recover(hb, x);
+    return status;
+}

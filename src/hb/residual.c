@@ -1,0 +1,126 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* residual.c — the condensed HB residual (R) of fricreg_hb.h in real form, its Jacobian and
+ * its Ω derivative, and the real LU solve of Newton's matrix. For harmonic h >= 1, element e,
+ * with G = Gr + i Gi and F = fa − i fb (the complex form of fricreg_hb.h):
+ *
+ *     R_a = a + sum_e' (Gr fa + Gi fb) − Re ql,      R_b = b + sum_e' (Gr fb − Gi fa) + Im ql
+ *
+ * and R_0 = q0 + sum_e' G_0 f0 − ql_0 (real). The forces and their exact Jacobians come from
+ * fricreg_aft_jenkins_exact, one element at a time. */
+#include <math.h>
+#include <string.h>
+
+#include <gsl/gsl_linalg.h>
+
+#include "hb_internal.h"
+
+/* out[nq] = G F − ql in the real form above, from the forces f[nq] and the complex G[(H+1) m m],
+ * ql[(H+1) m] (the condensation or its Ω derivative). */
+static void apply(const fricreg_hb *hb, const double *G, const double *ql, const double *f,
+                  double *out)
+{
+    size_t m = hb->m, nc = hb->nc;
+    for (size_t e = 0; e < m; e++)
+        for (int h = 0; h <= hb->H; h++) {
+            const double *g = G + 2 * ((size_t)h * m * m + e * m),
+                         *p = ql + 2 * ((size_t)h * m + e);
+            if (h == 0) {
+                double s = -p[0];
+                for (size_t e2 = 0; e2 < m; e2++)
+                    s += g[2 * e2] * f[e2 * nc];
+                out[e * nc] = s;
+                continue;
+            }
+            size_t ca = 2 * (size_t)h - 1, cb = ca + 1;
+            double ra = -p[0], rb = p[1];
+            for (size_t e2 = 0; e2 < m; e2++) {
+                double gr = g[2 * e2], gi = g[2 * e2 + 1], fa = f[e2 * nc + ca],
+                       fb = f[e2 * nc + cb];
+                ra += gr * fa + gi * fb;
+                rb += gr * fb - gi * fa;
+            }
+            out[e * nc + ca] = ra;
+            out[e * nc + cb] = rb;
+        }
+}
+
+int fr_hb_residual(fricreg_hb *hb, const char *fn, const double *q, double *R, int jac)
+{
+    size_t nc = hb->nc;
+    for (size_t e = 0; e < hb->m; e++) {
+        int status = fricreg_aft_jenkins_exact(hb->aft, hb->kt[e], hb->mun[e], nc, q + e * nc,
+                                               hb->fq + e * nc, jac ? hb->jq + e * nc * nc : NULL);
+        if (status != FRICREG_OK)
+            return fr_fail(hb, status, "%s: the AFT of element %zu failed: %s", fn, e,
+                           fricreg_aft_errmsg(hb->aft));
+    }
+    apply(hb, hb->G, hb->ql, hb->fq, R);
+    for (size_t j = 0; j < hb->nq; j++)
+        R[j] += q[j];
+    return FRICREG_OK;
+}
+
+void fr_hb_domega(fricreg_hb *hb, double *out)
+{
+    apply(hb, hb->dG, hb->dql, hb->fq, out);
+}
+
+void fr_hb_matrix(fricreg_hb *hb, const double *jac, double *A, size_t ld)
+{
+    size_t m = hb->m, nc = hb->nc;
+    for (size_t e = 0; e < m; e++)
+        for (size_t e2 = 0; e2 < m; e2++)
+            for (int h = 0; h <= hb->H; h++) {
+                const double *g = hb->G + 2 * ((size_t)h * m * m + e * m + e2);
+                const double *J2 = jac + e2 * nc * nc;
+                size_t ca = h == 0 ? 0 : 2 * (size_t)h - 1, cb = ca + 1;
+                double *ra = A + (e * nc + ca) * ld + e2 * nc,
+                       *rb = A + (e * nc + cb) * ld + e2 * nc;
+                for (size_t j = 0; j < nc; j++) {
+                    if (h == 0) {
+                        ra[j] = g[0] * J2[j];
+                        continue;
+                    }
+                    ra[j] = g[0] * J2[ca * nc + j] + g[1] * J2[cb * nc + j];
+                    rb[j] = g[0] * J2[cb * nc + j] - g[1] * J2[ca * nc + j];
+                }
+            }
+    for (size_t j = 0; j < hb->nq; j++)
+        A[j * ld + j] += 1.0;
+}
+
+int fr_hb_lu_solve(fricreg_hb *hb, const char *fn, size_t nd, double *rhs, double *sol)
+{
+    double amax = 0.0;
+    for (size_t k = 0; k < nd * nd; k++)
+        amax = fmax(amax, fabs(hb->A[k]));
+    gsl_matrix_view A = gsl_matrix_view_array(hb->A, nd, nd);
+    gsl_permutation p = {.size = nd, .data = hb->perm2->data};
+    int signum;
+    gsl_linalg_LU_decomp(&A.matrix, &p, &signum);
+    for (size_t k = 0; k < nd; k++) {
+        double piv = fabs(hb->A[k * nd + k]);
+        if (!(piv > 1e-14 * amax) || !isfinite(piv))
+            return fr_fail(hb, FRICREG_ESINGULAR,
+                           "%s: Newton's matrix is singular (pivot %zu of its LU factor: %g, "
+                           "largest entry %g)",
+                           fn, k, piv, amax);
+    }
+    gsl_vector_view b = gsl_vector_view_array(rhs, nd);
+    gsl_vector_view x = gsl_vector_view_array(sol, nd);
+    if (rhs == sol)
+        gsl_linalg_LU_svx(&A.matrix, &p, &x.vector);
+    else
+        gsl_linalg_LU_solve(&A.matrix, &p, &b.vector, &x.vector);
+    return FRICREG_OK;
+}
+
+double fr_hb_scale(const fricreg_hb *hb, const double *q)
+{
+    double s = 0.0;
+    for (size_t j = 0; j < hb->nq; j++)
+        s = fmax(s, fabs(q[j]));
+    for (size_t j = 0; j < 2 * ((size_t)hb->H + 1) * hb->m; j++)
+        s = fmax(s, fabs(hb->ql[j]));
+    return s > 0.0 ? s : 1.0;
+}
