@@ -327,6 +327,43 @@ awk 'BEGIN { n = 5001; print "%%MatrixMarket matrix coordinate real symmetric"; 
 mtx Jbig.mtx general "1 5001 1" "1 1 1"
 expect_output '"ndof": 5001, "ncontacts": 1, "x": \[-5\.3140(4999999|5000000)[0-9]*, .*, -5\.3140(4999999|5000000)[0-9]*\], "v"' structure --mass "$d/Mbig.mtx" --stiffness "$d/Kbig.mtx" --contacts "$d/Jbig.mtx" --mun "$d/mun0.txt" --ground-accel "$d/ag_const.txt" --integrator newmark --dt 0.01 --t-end 2.1
 
+# ---- hb: harmonic balance with Jenkins elements (fricreg_hb.h) from Matrix Market files.
+# One mass m = 2 on a spring k = 3 and a Jenkins element kt = 1.5 whose slider never slips
+# (mu N = 1e6): a linear oscillator of stiffness k + kt = 4.5, Rayleigh C = 0.02 K = 0.06, forced
+# by 0.5 cos(Omega t). Its RMS over a period is |X|/sqrt(2) with
+# |X| = 0.5/sqrt((4.5 - 2 Omega^2)^2 + (0.06 Omega)^2) (closed form): every row of --output frf
+# within 1e-8, and the summary's peak at the resonance sqrt(4.5/2) = 1.5, within the branch's
+# resolution (1 %), at an RMS within 1 % of 0.5/(0.06 x 1.5)/sqrt(2) = 3.928.
+d=$tmp/hb
+mkdir -p "$d"
+printf '%s\n' "%%MatrixMarket matrix coordinate real symmetric" "1 1 1" "1 1 2" >"$d/M.mtx"
+printf '%s\n' "%%MatrixMarket matrix coordinate real symmetric" "1 1 1" "1 1 3" >"$d/K.mtx"
+printf '%s\n' "%%MatrixMarket matrix coordinate real general" "1 1 1" "1 1 1" >"$d/J.mtx"
+echo "0.5 0" >"$d/F.txt"
+echo "1.5 1e6" >"$d/P.txt"
+echo "1.5" >"$d/P1.txt"
+hb="hb --mass $d/M.mtx --stiffness $d/K.mtx --rayleigh 0,0.02 --excitation $d/F.txt --jenkins $d/J.mtx --jenkins-params $d/P.txt --harmonics 3 --omega-start 0.5 --omega-end 3"
+total=$((total + 1))
+"$sim" $hb --output frf >"$d/frf.csv" 2>"$d/err"
+if [ "$(head -n 1 "$d/frf.csv")" != "omega,rms_1" ] || ! awk -F, 'NR > 1 { w = $1; a = 4.5 - 2 * w * w; c = 0.06 * w
+        r = 0.5 / sqrt(a * a + c * c) / sqrt(2); e = ($2 - r) / r; if (e < 0) e = -e; if (e > big) big = e; rows++ }
+        END { exit !(rows >= 20 && big < 1e-8 && w == 3) }' "$d/frf.csv"; then
+    echo "FAIL: hb frf against the linear closed form: $(head -n 3 "$d/frf.csv") $(cat "$d/err")"; fails=$((fails + 1))
+fi
+total=$((total + 1))
+"$sim" $hb >"$d/summary.json" 2>"$d/err"
+if ! sed 's/.*"peak_rms": \([^,]*\), "peak_omega": \([^}]*\)}.*/\1 \2/' "$d/summary.json" |
+        awk '{ exit !($1 > 0.99 * 3.9284 && $1 < 1.01 * 3.9284 && $2 > 1.485 && $2 < 1.515) }'; then
+    echo "FAIL: hb summary peak: $(cat "$d/summary.json" "$d/err")"; fails=$((fails + 1))
+fi
+expect_output '^       fricreg-sim hb --mass M\.mtx --stiffness K\.mtx' --help
+expect_usage_error "^fricreg-sim: --omega-end: missing" hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --jenkins $d/J.mtx --jenkins-params $d/P.txt --omega-start 1
+expect_usage_error "^fricreg-sim: --jenkins-params: missing" hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --jenkins $d/J.mtx --omega-start 1 --omega-end 2
+expect_usage_error "^fricreg-sim: --jenkins-params $d/P1.txt: line 1: " hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --jenkins $d/J.mtx --jenkins-params $d/P1.txt --omega-start 1 --omega-end 2
+expect_usage_error "^fricreg-sim: --harmonics: " $hb --harmonics 41
+expect_usage_error "^fricreg-sim: --rayleigh: give --damping or --rayleigh" hb --mass $d/M.mtx --stiffness $d/K.mtx --damping $d/K.mtx --rayleigh 0,0.02 --excitation $d/F.txt --jenkins $d/J.mtx --jenkins-params $d/P.txt --omega-start 1 --omega-end 2
+expect_usage_error "^fricreg-sim: --excitation $d/J.mtx" hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/J.mtx --jenkins $d/J.mtx --jenkins-params $d/P.txt --omega-start 1 --omega-end 2
+
 # ---- hold, belt, disk: the reference problems beyond the paper (src/problems/, the code the
 # benchmarks run; docs/laws2d.md). Values against the bench and tests/test_hold.c.
 # num FIELD FILE: the number after "FIELD": in a JSON summary.

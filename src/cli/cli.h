@@ -78,6 +78,11 @@ struct cli_option {
     int arg;
 };
 
+/* --rayleigh A0,A1 of `structure` and `hb`: two finite numbers >= 0, comma-separated (the
+ * library names the range too; checked here first so that the message names the option).
+ * 0, or CLI_EXIT_USAGE after one line on stderr. */
+int cli_parse_rayleigh(const char *option, const char *text, double *a0, double *a1);
+
 /* Parses argv (after the subcommand) against table[n]: each option's value by its row, a
  * repeated option's last value kept. Returns 0, or CLI_EXIT_USAGE after one line on stderr
  * naming the option (for an unknown one, "unknown option for COMMAND"). */
@@ -167,5 +172,9 @@ void cli_table_row(const char *figure, const char *quantity, const char *paper, 
 /* reproduce_beyond.c: the problems beyond the paper (hold, belt, 2-D oscillator), a CSV each in
  * dir and their table rows. Returns 0, or 1 (message printed). */
 int cli_reproduce_beyond(const char *dir);
+
+/* `fricreg-sim hb` (hb.c): the frequency response of a structure with Jenkins elements by
+ * harmonic balance. Returns the exit status. */
+int cli_hb(int argc, char **argv, FILE *out);
 
 #endif

@@ -68,6 +68,30 @@ const struct cli_word *cli_find_word(const struct cli_word words[], const char *
     return NULL;
 }
 
+/* strtod's ERANGE for an overflow; an underflow is the subnormal or zero meant, as
+ * cli_parse_number keeps it. */
+static int overflowed(double x)
+{
+    return errno == ERANGE && fabs(x) == HUGE_VAL;
+}
+
+int cli_parse_rayleigh(const char *option, const char *text, double *a0, double *a1)
+{
+    char *end = NULL;
+    errno = 0;
+    *a0 = strtod(text, &end);
+    if (end == text || *end != ',' || overflowed(*a0))
+        return cli_usage_error(option, "expected A0,A1 (two numbers, comma-separated)");
+    const char *second = end + 1;
+    errno = 0;
+    *a1 = strtod(second, &end);
+    if (end == second || *end != '\0' || overflowed(*a1) || !isfinite(*a0) || !isfinite(*a1))
+        return cli_usage_error(option, "expected A0,A1 (two finite numbers)");
+    if (*a0 < 0.0 || *a1 < 0.0)
+        return cli_usage_error(option, "A0 and A1 must be >= 0");
+    return 0;
+}
+
 /* strtod sets ERANGE on underflow too (1e-310, 1e-400), returning the subnormal or zero nearest
  * the text: that is the number meant, so it is kept; only an overflow (±HUGE_VAL) is refused. */
 int cli_parse_number(const char *option, const char *text, double *value)

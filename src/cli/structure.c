@@ -3,7 +3,6 @@
  * (fricreg_structure.h) from Matrix Market files, run with Newmark, HHT-alpha, central
  * difference or one of GSL's steppers; a JSON summary or a CSV row per step on stdout.
  * Every bad option or file is one line on stderr naming it, exit 2, nothing on stdout. */
-#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,31 +11,11 @@
 #include "cli_structure.h"
 #include "structure_model.h"
 
-/* strtod's ERANGE for an overflow; an underflow is the subnormal or zero meant, as
- * cli_parse_number keeps it. */
-static int overflowed(double x)
-{
-    return errno == ERANGE && fabs(x) == HUGE_VAL;
-}
-
-/* --rayleigh A0,A1: two numbers >= 0 (the library names the range too; checked here first so
- * that the message names the option). */
+/* --rayleigh A0,A1: two numbers >= 0 (cli_parse_rayleigh). */
 static int parse_rayleigh(const struct cli_option *row, const char *text)
 {
     struct structure_options *o = row->slot;
-    char *end = NULL;
-    errno = 0;
-    o->a0 = strtod(text, &end);
-    if (end == text || *end != ',' || overflowed(o->a0))
-        return cli_usage_error(row->name, "expected A0,A1 (two numbers, comma-separated)");
-    const char *second = end + 1;
-    errno = 0;
-    o->a1 = strtod(second, &end);
-    if (end == second || *end != '\0' || overflowed(o->a1) || !isfinite(o->a0) || !isfinite(o->a1))
-        return cli_usage_error(row->name, "expected A0,A1 (two finite numbers)");
-    if (o->a0 < 0.0 || o->a1 < 0.0)
-        return cli_usage_error(row->name, "A0 and A1 must be >= 0");
-    return 0;
+    return cli_parse_rayleigh(row->name, text, &o->a0, &o->a1);
 }
 
 /* The structure's own schemes; "central" is its central differences, not fricreg_sim's. */

@@ -1,0 +1,293 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* hb.c — `fricreg-sim hb`: the frequency response of a linear structure with Jenkins elements
+ * by harmonic balance (fricreg_hb.h) from Matrix Market files, continued in the excitation
+ * frequency from --omega-start to --omega-end; a JSON summary (per dof the peak RMS and its
+ * frequency) or a CSV row per continuation point on stdout. Every bad option or file is one
+ * line on stderr naming it, exit 2, nothing on stdout; a continuation that fails, exit 1. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "cli.h"
+#include "cli_input.h"
+#include "input_line.h"
+#include "fricreg_hb.h"
+#include "matrix_market.h"
+
+/* The driver is dense (fricreg_hb.h): M, K and C take ndof^2 doubles each, so the files are
+ * densified up to this many degrees of freedom (three 4096^2 matrices: 400 MB). */
+#define HB_MAX_DOF 4096
+
+enum { HB_SUMMARY, HB_FRF };
+static const struct cli_word hb_outputs[] = {{"summary", HB_SUMMARY}, {"frf", HB_FRF}, {NULL, 0}};
+
+struct hb_options {
+    const char *mass, *stiffness, *damping, *excitation, *jenkins, *params;
+    int rayleigh_given, harmonics, output, omega_start_given, omega_end_given;
+    double a0, a1, omega_start, omega_end;
+};
+
+/* The model as dense arrays: M, K, C (NULL: Rayleigh or none) n x n row-major, J m x n, the
+ * excitation pc[n], ps[n], the elements' kt[m], mun[m]. */
+struct hb_model {
+    size_t n, m;
+    double *M, *K, *C, *J, *pc, *ps, *kt, *mun;
+};
+
+static void free_model(struct hb_model *md)
+{
+    void *blocks[] = {md->M, md->K, md->C, md->J, md->pc, md->ps, md->kt, md->mun};
+    for (size_t k = 0; k < sizeof blocks / sizeof *blocks; k++)
+        free(blocks[k]);
+    memset(md, 0, sizeof *md);
+}
+
+static int parse_rayleigh(const struct cli_option *row, const char *text)
+{
+    struct hb_options *o = row->slot;
+    return cli_parse_rayleigh(row->name, text, &o->a0, &o->a1);
+}
+
+static int check_options(const struct hb_options *o)
+{
+    static const char *const required[] = {"--mass", "--stiffness", "--excitation", "--jenkins",
+                                           "--jenkins-params"};
+    const char *given[] = {o->mass, o->stiffness, o->excitation, o->jenkins, o->params};
+    for (size_t k = 0; k < 5; k++)
+        if (given[k] == NULL)
+            return cli_usage_error(required[k], "missing (a file is required)");
+    if (!o->omega_start_given)
+        return cli_usage_error("--omega-start", "missing");
+    if (!o->omega_end_given)
+        return cli_usage_error("--omega-end", "missing");
+    if (o->omega_end == o->omega_start)
+        return cli_usage_error("--omega-end", "equals --omega-start: no branch to follow");
+    if (o->damping != NULL && o->rayleigh_given)
+        return cli_usage_error("--rayleigh", "give --damping or --rayleigh, not both");
+    return 0;
+}
+
+static int parse_hb(int argc, char **argv, struct hb_options *o)
+{
+    *o = (struct hb_options){.harmonics = 7, .output = HB_SUMMARY};
+    const struct cli_option opts[] = {
+        {"--mass", CLI_FILE, .slot = &o->mass},
+        {"--stiffness", CLI_FILE, .slot = &o->stiffness},
+        {"--damping", CLI_FILE, .slot = &o->damping},
+        {"--excitation", CLI_FILE, .slot = &o->excitation},
+        {"--jenkins", CLI_FILE, .slot = &o->jenkins},
+        {"--jenkins-params", CLI_FILE, .slot = &o->params},
+        {"--rayleigh", CLI_CUSTOM, .slot = o, .parse = parse_rayleigh, .given = &o->rayleigh_given},
+        {"--harmonics", CLI_WHOLE, .slot = &o->harmonics, .lo = 1, .hi = FRICREG_HB_MAX_HARMONICS},
+        {"--omega-start", CLI_POSITIVE, .slot = &o->omega_start, .given = &o->omega_start_given},
+        {"--omega-end", CLI_POSITIVE, .slot = &o->omega_end, .given = &o->omega_end_given},
+        {"--output", CLI_CHOICE, .slot = &o->output, .words = hb_outputs}};
+    int status = cli_parse_options(argc, argv, opts, sizeof opts / sizeof opts[0], "hb");
+    return status != 0 ? status : check_options(o);
+}
+
+/* The rows x cols matrix of option's file, dense row-major into *out (a symmetric file's
+ * lower triangle mirrored). */
+static int read_dense(const char *option, const char *path, size_t rows, size_t cols, size_t *nrows,
+                      size_t *ncols, double **out)
+{
+    struct cli_sparse A = {0};
+    int status = cli_read_mtx(option, path, rows, cols, &A);
+    if (status != 0)
+        return status;
+    if (A.cols > HB_MAX_DOF || A.rows > HB_MAX_DOF) {
+        cli_sparse_free(&A);
+        return cli_file_error(option, path, 0,
+                              "%zu x %zu: the harmonic-balance driver is dense, at most %d "
+                              "degrees of freedom",
+                              A.rows, A.cols, HB_MAX_DOF);
+    }
+    double *D = calloc(A.rows * A.cols, sizeof *D);
+    if (D == NULL) {
+        cli_sparse_free(&A);
+        return cli_file_error(option, path, 0, "out of memory");
+    }
+    for (size_t j = 0; j < A.cols; j++)
+        for (int64_t p = A.colptr[j]; p < A.colptr[j + 1]; p++) {
+            size_t i = (size_t)A.rowind[p];
+            D[i * A.cols + j] = A.values[p];
+            if (A.lower)
+                D[j * A.cols + i] = A.values[p];
+        }
+    *nrows = A.rows;
+    *ncols = A.cols;
+    *out = D;
+    cli_sparse_free(&A);
+    return 0;
+}
+
+/* Two columns per row, one row per entity (dof or element): into a[rows], b[rows]. */
+static int read_pairs(const char *option, const char *path, size_t rows, const char *what,
+                      double **a, double **b)
+{
+    size_t got = 0;
+    double *values = NULL;
+    int status = cli_read_columns(option, path, 2, &got, &values);
+    if (status != 0)
+        return status;
+    if (got != rows) {
+        free(values);
+        return cli_file_error(option, path, 0, "%zu lines, the model has %zu %s", got, rows, what);
+    }
+    *a = malloc(rows * sizeof **a);
+    *b = malloc(rows * sizeof **b);
+    if (*a == NULL || *b == NULL) {
+        free(values);
+        return cli_file_error(option, path, 0, "out of memory");
+    }
+    for (size_t k = 0; k < rows; k++) {
+        (*a)[k] = values[2 * k];
+        (*b)[k] = values[2 * k + 1];
+    }
+    free(values);
+    return 0;
+}
+
+static int read_model(const struct hb_options *o, struct hb_model *md)
+{
+    size_t n = 0, cols = 0, m = 0;
+    int status = read_dense("--mass", o->mass, 0, 0, &n, &cols, &md->M);
+    if (status == 0 && n != cols)
+        status = cli_file_error("--mass", o->mass, 0, "%zu x %zu: not square", n, cols);
+    if (status == 0)
+        status = read_dense("--stiffness", o->stiffness, n, n, &n, &cols, &md->K);
+    if (status == 0 && o->damping != NULL)
+        status = read_dense("--damping", o->damping, n, n, &n, &cols, &md->C);
+    if (status == 0)
+        status = read_dense("--jenkins", o->jenkins, 0, n, &m, &cols, &md->J);
+    md->n = n;
+    md->m = m;
+    if (status == 0)
+        status = read_pairs("--excitation", o->excitation, n, "degrees of freedom", &md->pc,
+                            &md->ps);
+    if (status == 0)
+        status = read_pairs("--jenkins-params", o->params, m, "elements (rows of --jenkins)",
+                            &md->kt, &md->mun);
+    return status;
+}
+
+/* One refused setter: its option and file, and the library's reason. */
+static int refused(const fricreg_hb *hb, const char *option, const char *path)
+{
+    return cli_file_error(option, path, 0, "%s", fricreg_hb_errmsg(hb));
+}
+
+static int set_model(const struct hb_options *o, const struct hb_model *md, fricreg_hb *hb)
+{
+    size_t n = md->n;
+    if (fricreg_hb_set_mass(hb, n, md->M) != FRICREG_OK)
+        return refused(hb, "--mass", o->mass);
+    if (fricreg_hb_set_stiffness(hb, n, md->K) != FRICREG_OK)
+        return refused(hb, "--stiffness", o->stiffness);
+    if (md->C != NULL && fricreg_hb_set_damping(hb, n, md->C) != FRICREG_OK)
+        return refused(hb, "--damping", o->damping);
+    if (o->rayleigh_given && fricreg_hb_set_rayleigh(hb, o->a0, o->a1) != FRICREG_OK)
+        return cli_usage_error("--rayleigh", fricreg_hb_errmsg(hb));
+    if (fricreg_hb_set_elements(hb, md->m, n, md->J, md->kt, md->mun) != FRICREG_OK)
+        return refused(hb, "--jenkins-params", o->params);
+    if (fricreg_hb_set_excitation(hb, n, md->pc, md->ps) != FRICREG_OK)
+        return refused(hb, "--excitation", o->excitation);
+    return 0;
+}
+
+/* The branch's points: omega[k] and rms[k n + i] of dof i, into arrays the caller frees. */
+static int collect(fricreg_hb *hb, size_t n, size_t *npoints, double **omega, double **rms)
+{
+    size_t K = fricreg_hb_points(hb);
+    *omega = malloc((K > 0 ? K : 1) * sizeof **omega);
+    *rms = malloc((K > 0 ? K * n : 1) * sizeof **rms);
+    if (*omega == NULL || *rms == NULL)
+        return cli_usage_error("hb", "out of memory");
+    for (size_t k = 0; k < K; k++)
+        if (fricreg_hb_point(hb, k, &(*omega)[k], n, &(*rms)[k * n]) != FRICREG_OK)
+            return cli_usage_error("hb", fricreg_hb_errmsg(hb));
+    *npoints = K;
+    return 0;
+}
+
+static void write_frf(FILE *out, size_t n, size_t K, const double omega[], const double rms[])
+{
+    fprintf(out, "omega");
+    for (size_t i = 0; i < n; i++)
+        fprintf(out, ",rms_%zu", i + 1);
+    fprintf(out, "\n");
+    for (size_t k = 0; k < K; k++) {
+        fprintf(out, "%.17g", omega[k]);
+        for (size_t i = 0; i < n; i++)
+            fprintf(out, ",%.17g", rms[k * n + i]);
+        fprintf(out, "\n");
+    }
+}
+
+static void write_summary(FILE *out, const struct hb_options *o, const struct hb_model *md,
+                          size_t K, const double omega[], const double rms[], double cpu)
+{
+    size_t n = md->n;
+    fprintf(out,
+            "{\"command\": \"hb\", \"ndof\": %zu, \"elements\": %zu, \"harmonics\": %d, "
+            "\"omega_start\": %.17g, \"omega_end\": %.17g, \"points\": %zu",
+            n, md->m, o->harmonics, o->omega_start, o->omega_end, K);
+    fprintf(out, ", \"omega_reached\": %.17g, \"dofs\": [", K > 0 ? omega[K - 1] : o->omega_start);
+    for (size_t i = 0; i < n; i++) {
+        size_t best = 0;
+        for (size_t k = 1; k < K; k++)
+            if (rms[k * n + i] > rms[best * n + i])
+                best = k;
+        fprintf(out, "%s{\"dof\": %zu, \"peak_rms\": %.17g, \"peak_omega\": %.17g}", i ? ", " : "",
+                i + 1, K > 0 ? rms[best * n + i] : 0.0, K > 0 ? omega[best] : o->omega_start);
+    }
+    fprintf(out, "], \"cpu_seconds\": %.6f}\n", cpu);
+}
+
+/* The continuation from omega_start (its solution from q = 0) to omega_end, and the output. */
+static int run_hb(fricreg_hb *hb, const struct hb_options *o, const struct hb_model *md, FILE *out)
+{
+    clock_t start = clock();
+    size_t nq = md->m * (2 * (size_t)o->harmonics + 1);
+    int status = fricreg_hb_continue(hb, o->omega_start, o->omega_end, nq, NULL);
+    double cpu = (double)(clock() - start) / CLOCKS_PER_SEC;
+    if (status != FRICREG_OK) {
+        fprintf(stderr, "fricreg-sim: hb: the continuation failed: %s\n", fricreg_hb_errmsg(hb));
+        return CLI_EXIT_RUN;
+    }
+    size_t K = 0;
+    double *omega = NULL, *rms = NULL;
+    status = collect(hb, md->n, &K, &omega, &rms);
+    if (status == 0 && o->output == HB_FRF)
+        write_frf(out, md->n, K, omega, rms);
+    else if (status == 0)
+        write_summary(out, o, md, K, omega, rms, cpu);
+    free(omega);
+    free(rms);
+    return status;
+}
+
+int cli_hb(int argc, char **argv, FILE *out)
+{
+    struct hb_options o;
+    int status = parse_hb(argc, argv, &o);
+    if (status != 0)
+        return status;
+    struct hb_model md = {0};
+    if ((status = read_model(&o, &md)) != 0) {
+        free_model(&md);
+        return status;
+    }
+    fricreg_hb *hb = NULL;
+    if (fricreg_hb_create(md.n, md.m, o.harmonics, &hb) != FRICREG_OK) {
+        free_model(&md);
+        return cli_usage_error("hb", "cannot create the harmonic-balance driver (out of memory)");
+    }
+    status = set_model(&o, &md, hb);
+    if (status == 0)
+        status = run_hb(hb, &o, &md, out);
+    fricreg_hb_free(hb);
+    free_model(&md);
+    return status;
+}
