@@ -24,7 +24,8 @@
 !     c_associated, c_f_pointer, c_loc, c_funloc;
 !   - the idiomatic layer below: the types fricreg_context, fricreg_disk_context,
 !     fricreg_jenkins_elements, fricreg_iwan_elements, fricreg_aft_workspace, fricreg_simulation,
-!     fricreg_exact_solution and fricreg_structure (the last three with the drivers), their
+!     fricreg_exact_solution, fricreg_structure and fricreg_hb_driver (the last four with the
+!     drivers), their
 !     common parent fricreg_object, the generics law_eval, disk_eval, stribeck_eval and
 !     stribeck_disk_eval, and fricreg_error_string, fricreg_version_string,
 !     fricreg_law_string, fricreg_law_id, fricreg_disk_law_string, fricreg_disk_law_id,
@@ -77,6 +78,7 @@ module fricreg
   public :: fricreg_sim_observer, fricreg_structure_observer
   public :: fricreg_simulation, fricreg_exact_solution, fricreg_structure, &
             fricreg_integrator_string, fricreg_integrator_id
+  public :: fricreg_hb_driver
 #endif
 
   !> A failure detected in Fortran (a size mismatch, an object not created, or a C failure the
@@ -348,6 +350,35 @@ module fricreg
     procedure :: get_value => struct_get_value
     procedure :: get_stat => struct_get_stat
     final :: struct_final
+  end type
+
+  !> Harmonic balance of a structure with 1-D Jenkins elements (fricreg_hb.h, docs/joints.md):
+  !> M, C, K (ndof, ndof) symmetric, J(m, ndof) in Fortran's order, the elements' coordinates'
+  !> coefficients q(2H+1, m) (column i element i: q0, a_1, b_1, ..., a_H, b_H) and the
+  !> displacements' x(2H+1, ndof); continuation points counted from 1.
+  type, extends(fricreg_object) :: fricreg_hb_driver
+    private
+    integer(c_size_t) :: n = 0, m = 0, nc = 0 ! C has no size getters: kept from create
+  contains
+    procedure :: create => hb_create
+    procedure :: ndof => hb_ndof
+    procedure :: nelements => hb_nelements
+    procedure :: harmonics => hb_harmonics
+    procedure :: set_mass => hb_set_mass
+    procedure :: set_stiffness => hb_set_stiffness
+    procedure :: set_damping => hb_set_damping
+    procedure :: set_rayleigh => hb_set_rayleigh
+    procedure :: set_elements => hb_set_elements
+    procedure :: set_excitation => hb_set_excitation
+    procedure :: set_newton => hb_set_newton
+    procedure :: set_continuation => hb_set_continuation
+    procedure :: solve => hb_solve
+    procedure :: displacement => hb_displacement
+    procedure :: continue => hb_continue
+    procedure :: points => hb_points
+    procedure :: point => hb_point
+    procedure, private :: hb_shape
+    final :: hb_final
   end type
 #endif
 
@@ -2780,6 +2811,225 @@ contains
     if (status == FRICREG_OK) status = self%unrecorded('get_stat', &
                                        fricreg_structure_get_stat(self%ptr, which, value))
   end function struct_get_stat
+
+  ! ---- Harmonic balance (fricreg_hb.h) -----------------------------------------------------
+
+  !> Create a driver for ndof >= 1 degrees of freedom, m >= 1 Jenkins elements and harmonics
+  !> 1 <= H <= FRICREG_HB_MAX_HARMONICS. An object that held one gets the new one and releases
+  !> the old (on failure it keeps the old). FRICREG_EINVAL; FRICREG_ENOMEM.
+  function hb_create(self, ndof, m, harmonics) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    integer, intent(in) :: ndof, m, harmonics
+    integer(c_int) :: status
+    type(c_ptr) :: p
+    character(len=80) :: buf
+    write (buf, '(a, i0, a, i0, a, i0)') 'create: ndof = ', ndof, ', m = ', m, ', H = ', harmonics
+    if (ndof < 1 .or. m < 1) then
+      status = self%fail(FRICREG_EINVAL, trim(buf) // ': ndof and m must be >= 1')
+      return
+    end if
+    p = c_null_ptr
+    status = fricreg_hb_create(as_size(ndof), as_size(m), int(harmonics, c_int), p)
+    if (status /= FRICREG_OK) then
+      status = self%fail(status, trim(buf) // ': ' // fricreg_error_string(status))
+      return
+    end if
+    call self%adopt(p, fricreg_hb_free, fricreg_hb_errcode, fricreg_hb_errmsg)
+    self%n = as_size(ndof)
+    self%m = as_size(m)
+    self%nc = 2 * as_size(harmonics) + 1
+  end function hb_create
+
+  subroutine hb_final(self)
+    type(fricreg_hb_driver), intent(inout) :: self
+    call self%destroy()
+  end subroutine hb_final
+
+  !> Degrees of freedom (0 if not created).
+  integer function hb_ndof(self)
+    class(fricreg_hb_driver), intent(in) :: self
+    hb_ndof = 0
+    if (c_associated(self%ptr)) hb_ndof = int(self%n)
+  end function hb_ndof
+
+  !> Jenkins elements (0 if not created).
+  integer function hb_nelements(self)
+    class(fricreg_hb_driver), intent(in) :: self
+    hb_nelements = 0
+    if (c_associated(self%ptr)) hb_nelements = int(self%m)
+  end function hb_nelements
+
+  !> Harmonics H (0 if not created).
+  integer function hb_harmonics(self)
+    class(fricreg_hb_driver), intent(in) :: self
+    hb_harmonics = 0
+    if (c_associated(self%ptr)) hb_harmonics = int((self%nc - 1) / 2)
+  end function hb_harmonics
+
+  !> FRICREG_OK if self is created and a has the extents (n1, n2), else a recorded failure.
+  function hb_shape(self, what, name, extents, n1, n2) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    character(len=*), intent(in) :: what, name
+    integer, intent(in) :: extents(:)
+    integer(c_size_t), intent(in) :: n1, n2
+    integer(c_int) :: status
+    status = self%ready(what, 'HB driver')
+    if (status == FRICREG_OK) status = self%check_size(what, name // ', 1', extents(1), n1)
+    if (status == FRICREG_OK .and. size(extents) > 1) &
+      status = self%check_size(what, name // ', 2', extents(2), n2)
+  end function hb_shape
+
+  !> Mass matrix M(ndof, ndof), symmetric (the same numbers in C's row order).
+  !> FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_ENOTSYM.
+  function hb_set_mass(self, M) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    real(c_double), intent(in), contiguous :: M(:, :)
+    integer(c_int) :: status
+    status = self%hb_shape('set_mass', 'M', shape(M), self%n, self%n)
+    if (status == FRICREG_OK) status = self%record(fricreg_hb_set_mass(self%ptr, self%n, M))
+  end function hb_set_mass
+
+  !> Stiffness matrix K(ndof, ndof), symmetric and nonsingular. As set_mass.
+  function hb_set_stiffness(self, K) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    real(c_double), intent(in), contiguous :: K(:, :)
+    integer(c_int) :: status
+    status = self%hb_shape('set_stiffness', 'K', shape(K), self%n, self%n)
+    if (status == FRICREG_OK) status = self%record(fricreg_hb_set_stiffness(self%ptr, self%n, K))
+  end function hb_set_stiffness
+
+  !> Damping matrix C(ndof, ndof), symmetric; replaces Rayleigh damping. As set_mass.
+  function hb_set_damping(self, C) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    real(c_double), intent(in), contiguous :: C(:, :)
+    integer(c_int) :: status
+    status = self%hb_shape('set_damping', 'C', shape(C), self%n, self%n)
+    if (status == FRICREG_OK) status = self%record(fricreg_hb_set_damping(self%ptr, self%n, C))
+  end function hb_set_damping
+
+  !> Rayleigh damping C = a0 M + a1 K (a0 in 1/s, a1 in s, both >= 0). FRICREG_EINVAL;
+  !> FRICREG_ENONFINITE.
+  function hb_set_rayleigh(self, a0, a1) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    real(c_double), intent(in) :: a0, a1
+    integer(c_int) :: status
+    status = self%ready('set_rayleigh', 'HB driver')
+    if (status == FRICREG_OK) status = self%record(fricreg_hb_set_rayleigh(self%ptr, a0, a1))
+  end function hb_set_rayleigh
+
+  !> The elements: J(m, ndof) in Fortran's order (row i gives element i's relative
+  !> displacement; passed transposed to C, which reads it row-major), stiffnesses kt(m) > 0
+  !> and slip forces mun(m) >= 0. FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_EINVAL.
+  function hb_set_elements(self, J, kt, mun) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    real(c_double), intent(in) :: J(:, :)
+    real(c_double), intent(in), contiguous :: kt(:), mun(:)
+    integer(c_int) :: status
+    status = self%hb_shape('set_elements', 'J', shape(J), self%m, self%n)
+    if (status == FRICREG_OK) status = self%hb_shape('set_elements', 'kt', shape(kt), self%m, 0_c_size_t)
+    if (status == FRICREG_OK) status = self%hb_shape('set_elements', 'mun', shape(mun), self%m, 0_c_size_t)
+    if (status == FRICREG_OK) status = self%record(fricreg_hb_set_elements(self%ptr, self%m, &
+                                                     self%n, transpose(J), kt, mun))
+  end function hb_set_elements
+
+  !> The excitation of the fundamental, p(t) = pc cos(Omega t) + ps sin(Omega t): pc(ndof),
+  !> ps(ndof), force units. FRICREG_ESIZE; FRICREG_ENONFINITE.
+  function hb_set_excitation(self, pc, ps) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    real(c_double), intent(in), contiguous :: pc(:), ps(:)
+    integer(c_int) :: status
+    status = self%hb_shape('set_excitation', 'pc', shape(pc), self%n, 0_c_size_t)
+    if (status == FRICREG_OK) status = self%hb_shape('set_excitation', 'ps', shape(ps), self%n, 0_c_size_t)
+    if (status == FRICREG_OK) status = self%record(fricreg_hb_set_excitation(self%ptr, self%n, &
+                                                     pc, ps))
+  end function hb_set_excitation
+
+  !> Newton's tolerance and iteration bound (fricreg_hb_set_newton). FRICREG_EINVAL;
+  !> FRICREG_ENONFINITE.
+  function hb_set_newton(self, tol, max_iter) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    real(c_double), intent(in) :: tol
+    integer, intent(in) :: max_iter
+    integer(c_int) :: status
+    status = self%ready('set_newton', 'HB driver')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_hb_set_newton(self%ptr, tol, int(max_iter, c_int)))
+  end function hb_set_newton
+
+  !> The continuation's step control (fricreg_hb_set_continuation). FRICREG_EINVAL;
+  !> FRICREG_ENONFINITE; FRICREG_ENOMEM.
+  function hb_set_continuation(self, ds, ds_min, ds_max, max_points) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    real(c_double), intent(in) :: ds, ds_min, ds_max
+    integer, intent(in) :: max_points
+    integer(c_int) :: status
+    status = self%ready('set_continuation', 'HB driver')
+    if (status == FRICREG_OK .and. max_points < 0) &
+      status = self%fail(FRICREG_EINVAL, 'set_continuation: max_points must be >= 1')
+    if (status == FRICREG_OK) status = self%record(fricreg_hb_set_continuation(self%ptr, ds, &
+                                                     ds_min, ds_max, as_size(max_points)))
+  end function hb_set_continuation
+
+  !> Solve at the frequency omega into q(2H+1, m), from the guess q0 (same shape) or, absent,
+  !> the linear response. The statuses of fricreg_hb_solve; FRICREG_ESIZE.
+  function hb_solve(self, omega, q, q0) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    real(c_double), intent(in) :: omega
+    real(c_double), intent(inout), contiguous :: q(:, :)
+    real(c_double), intent(in), contiguous, optional :: q0(:, :)
+    integer(c_int) :: status
+    status = self%hb_shape('solve', 'q', shape(q), self%nc, self%m)
+    if (status == FRICREG_OK .and. present(q0)) &
+      status = self%hb_shape('solve', 'q0', shape(q0), self%nc, self%m)
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_hb_solve(self%ptr, omega, self%nc * self%m, q0, q))
+  end function hb_solve
+
+  !> The displacements' coefficients of the last solution, x(2H+1, ndof) (column k dof k).
+  !> The statuses of fricreg_hb_displacement; FRICREG_ESIZE.
+  function hb_displacement(self, x) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    real(c_double), intent(inout), contiguous :: x(:, :)
+    integer(c_int) :: status
+    status = self%hb_shape('displacement', 'x', shape(x), self%nc, self%n)
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_hb_displacement(self%ptr, self%n, self%nc, x))
+  end function hb_displacement
+
+  !> Follow the response from omega0 to omega1 (fricreg_hb_continue), from the guess q0(2H+1,
+  !> m) at omega0 or, absent, the linear response. Its statuses; FRICREG_ESIZE.
+  function hb_continue(self, omega0, omega1, q0) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    real(c_double), intent(in) :: omega0, omega1
+    real(c_double), intent(in), contiguous, optional :: q0(:, :)
+    integer(c_int) :: status
+    status = self%ready('continue', 'HB driver')
+    if (status == FRICREG_OK .and. present(q0)) &
+      status = self%hb_shape('continue', 'q0', shape(q0), self%nc, self%m)
+    if (status == FRICREG_OK) status = self%record(fricreg_hb_continue(self%ptr, omega0, omega1, &
+                                                     self%nc * self%m, q0))
+  end function hb_continue
+
+  !> Number of points of the last continuation (0 if none).
+  integer function hb_points(self)
+    class(fricreg_hb_driver), intent(in) :: self
+    hb_points = int(fricreg_hb_points(self%ptr))
+  end function hb_points
+
+  !> Point k (1 <= k <= points()): its frequency omega and the RMS of each dof, rms(ndof).
+  !> FRICREG_EINVAL for k out of range; FRICREG_ESIZE.
+  function hb_point(self, k, omega, rms) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    integer, intent(in) :: k
+    real(c_double), intent(inout) :: omega
+    real(c_double), intent(inout), contiguous :: rms(:)
+    integer(c_int) :: status
+    status = self%hb_shape('point', 'rms', shape(rms), self%n, 0_c_size_t)
+    if (status == FRICREG_OK .and. k < 1) &
+      status = self%fail(FRICREG_EINVAL, 'point: k must be >= 1 (Fortran counts from 1)')
+    if (status == FRICREG_OK) status = self%record(fricreg_hb_point(self%ptr, as_size(k - 1), &
+                                                     omega, self%n, rms))
+  end function hb_point
 #endif
 
 end module fricreg

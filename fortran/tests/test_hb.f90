@@ -1,0 +1,94 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
+! test_hb.f90 — harmonic balance (fricreg_hb.h) from Fortran: the type fricreg_hb_driver of
+! module fricreg.
+!
+! Values: one mass m = 2 on a spring k = 3 and a Jenkins element kt = 1.5 that never slips
+! (mun = 1e6), Rayleigh C = 0.02 K = 0.06, forced by 0.5 cos(Omega t): a linear oscillator of
+! stiffness 4.5 whose response X = 0.5/(d + i c), d = 4.5 - 2 Omega^2, c = 0.06 Omega, gives
+! a_1 = 0.5 d/(d^2 + c^2), b_1 = 0.5 c/(d^2 + c^2) (X_h = a_h - i b_h, fricreg_hb.h) and the RMS
+! |X|/sqrt(2) (closed form). A two-mass chain with a slipping element, J in Fortran's order:
+! the type's solution equals the C functions' (called through bind(C), J transposed by hand)
+! bit for bit.
+program test_hb
+  use fricreg
+  use ftest
+  implicit none
+  type(fricreg_hb_driver) :: hb, chain
+  type(c_ptr) :: p
+  real(c_double), parameter :: w = 1.2_c_double
+  real(c_double) :: q(7, 1), x(7, 1), d, c, rms(1), omega, big, qc(7, 1), q2(7, 1), bad(5, 1)
+  real(c_double) :: M2(2, 2), K2(2, 2), J2(1, 2), Jrow(2)
+  integer :: k
+
+  call check_status(hb%create(1, 1, 3), FRICREG_OK, 'create')
+  call check(hb%ndof() == 1 .and. hb%nelements() == 1 .and. hb%harmonics() == 3, 'sizes')
+  call check_status(hb%set_mass(reshape([2.0_c_double], [1, 1])), FRICREG_OK, 'set_mass')
+  call check_status(hb%set_stiffness(reshape([3.0_c_double], [1, 1])), FRICREG_OK, 'set_stiffness')
+  call check_status(hb%set_rayleigh(0.0_c_double, 0.02_c_double), FRICREG_OK, 'set_rayleigh')
+  call check_status(hb%set_elements(reshape([1.0_c_double], [1, 1]), [1.5_c_double], &
+                                    [1e6_c_double]), FRICREG_OK, 'set_elements')
+  call check_status(hb%set_excitation([0.5_c_double], [0.0_c_double]), FRICREG_OK, 'excitation')
+  call check_status(hb%solve(w, q), FRICREG_OK, 'solve')
+  d = 4.5_c_double - 2.0_c_double * w * w
+  c = 0.06_c_double * w
+  call check_close(q(2, 1), 0.5_c_double * d / (d * d + c * c), 1e-12_c_double, 'a_1')
+  call check_close(q(3, 1), 0.5_c_double * c / (d * d + c * c), 1e-12_c_double, 'b_1')
+  call check(maxval(abs(q(4:, 1))) < 1e-12_c_double, 'no higher harmonics')
+  call check_status(hb%displacement(x), FRICREG_OK, 'displacement')
+  call check(maxval(abs(x - q)) < 1e-14_c_double, 'x = q (J = 1)')
+
+  ! the branch from 0.5 to 3: every point's RMS in closed form
+  call check_status(hb%continue(0.5_c_double, 3.0_c_double), FRICREG_OK, 'continue')
+  call check(hb%points() >= 20, 'points')
+  big = 0.0_c_double
+  do k = 1, hb%points()
+    call check_status(hb%point(k, omega, rms), FRICREG_OK, 'point')
+    d = 4.5_c_double - 2.0_c_double * omega * omega
+    c = 0.06_c_double * omega
+    big = max(big, abs(rms(1) * sqrt(2.0_c_double) * sqrt(d * d + c * c) / 0.5_c_double - 1.0_c_double))
+  end do
+  call check(big < 1e-8_c_double, 'RMS along the branch against the closed form')
+  call check_status(hb%point(1, omega, rms), FRICREG_OK, 'first point')
+  call check_close(omega, 0.5_c_double, 1e-15_c_double, 'the branch starts at omega0')
+  call check_status(hb%point(hb%points(), omega, rms), FRICREG_OK, 'last point')
+  call check_close(omega, 3.0_c_double, 1e-15_c_double, 'the branch ends at omega1')
+
+  ! errors: Fortran's shape checks, C's refusals, each with a message
+  call check_status(hb%solve(w, bad), FRICREG_ESIZE, 'q of the wrong shape')
+  call check(len(hb%errmsg()) > 0, 'message of ESIZE')
+  call check_status(hb%point(0, omega, rms), FRICREG_EINVAL, 'point 0')
+  call check_status(hb%set_rayleigh(-1.0_c_double, 0.0_c_double), FRICREG_EINVAL, 'a0 < 0')
+  call check_status(hb%create(1, 0, 3), FRICREG_EINVAL, 'm = 0')
+  call check(hb%harmonics() == 3, 'a failed create keeps the old driver')
+  call hb%destroy()
+  call hb%destroy()
+
+  ! J in Fortran's order: the type against C's functions with J's rows by hand
+  M2 = reshape([1.0_c_double, 0.0_c_double, 0.0_c_double, 2.0_c_double], [2, 2])
+  K2 = reshape([5.0_c_double, -2.0_c_double, -2.0_c_double, 3.0_c_double], [2, 2])
+  J2(1, :) = [1.0_c_double, -1.0_c_double]
+  Jrow = [1.0_c_double, -1.0_c_double]
+  call check_status(chain%create(2, 1, 3), FRICREG_OK, 'chain create')
+  call check_status(chain%set_mass(M2), FRICREG_OK, 'chain M')
+  call check_status(chain%set_stiffness(K2), FRICREG_OK, 'chain K')
+  call check_status(chain%set_rayleigh(0.05_c_double, 0.0_c_double), FRICREG_OK, 'chain C')
+  call check_status(chain%set_elements(J2, [4.0_c_double], [0.1_c_double]), FRICREG_OK, 'chain J')
+  call check_status(chain%set_excitation([1.0_c_double, 0.0_c_double], [0.0_c_double, 0.0_c_double]), &
+                    FRICREG_OK, 'chain excitation')
+  call check_status(chain%solve(1.1_c_double, q2), FRICREG_OK, 'chain solve')
+  p = c_null_ptr
+  call check_status(fricreg_hb_create(2_c_size_t, 1_c_size_t, 3_c_int, p), FRICREG_OK, 'C create')
+  call check_status(fricreg_hb_set_mass(p, 2_c_size_t, M2), FRICREG_OK, 'C M')
+  call check_status(fricreg_hb_set_stiffness(p, 2_c_size_t, K2), FRICREG_OK, 'C K')
+  call check_status(fricreg_hb_set_rayleigh(p, 0.05_c_double, 0.0_c_double), FRICREG_OK, 'C C')
+  call check_status(fricreg_hb_set_elements(p, 1_c_size_t, 2_c_size_t, Jrow, [4.0_c_double], &
+                                            [0.1_c_double]), FRICREG_OK, 'C J')
+  call check_status(fricreg_hb_set_excitation(p, 2_c_size_t, [1.0_c_double, 0.0_c_double], &
+                                              [0.0_c_double, 0.0_c_double]), FRICREG_OK, 'C p')
+  call check_status(fricreg_hb_solve(p, 1.1_c_double, 7_c_size_t, q=qc), FRICREG_OK, 'C solve')
+  call fricreg_hb_free(p)
+  call check(all(q2 == qc), 'the type equals C bit for bit')
+  call check(abs(q2(2, 1)) + abs(q2(3, 1)) > 0.1_c_double / 4.0_c_double, 'the element slips')
+  call chain%destroy()
+  call finish('test_hb')
+end program test_hb
