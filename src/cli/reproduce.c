@@ -116,11 +116,12 @@ static double last_cycle_dissipation(const fricreg_sim *sim)
 
 /* Every file reproduce writes into --out (out_file.h), the manifest last. */
 static const char *const outputs[] = {
-    "fig5_unforced.csv",  "fig6_force.csv",       "fig9_chain.csv",      "fig11_twoblock.csv",
-    "hold_breakaway.csv", "belt_limit_cycle.csv", "disk_oscillator.csv", "plots.gp",
-    "fig5_unforced.png",  "fig6_force.png",       "fig9_chain.png",      "fig11_twoblock.png",
-    "hold_breakaway.png", "belt_limit_cycle.png", "disk_oscillator.png"};
-#define N_CSV 8 /* the CSVs and plots.gp come first in outputs[] */
+    "fig5_unforced.csv",  "fig6_force.csv",       "fig9_chain.csv",       "fig11_twoblock.csv",
+    "hold_breakaway.csv", "belt_limit_cycle.csv", "disk_oscillator.csv",  "hb_frf.csv",
+    "plots.gp",           "fig5_unforced.png",    "fig6_force.png",       "fig9_chain.png",
+    "fig11_twoblock.png", "hold_breakaway.png",   "belt_limit_cycle.png", "disk_oscillator.png",
+    "hb_frf.png"};
+#define N_CSV 9 /* the CSVs and plots.gp come first in outputs[] */
 #define N_OUTPUTS (sizeof outputs / sizeof outputs[0])
 
 /* Opens dir/name for writing (a temporary file until cli_out_commit): o->f, or NULL. */
@@ -378,6 +379,15 @@ static const char plot_script[] =
     "set xlabel 'x1 (and f1)'; set ylabel 'x2 (and f2)'; set size ratio -1\n"
     "plot 'disk_oscillator.csv' using 2:3 with lines title 'position x', '' using 4:5 with "
     "lines title 'friction force f (|f| <= mu N = 1)'\n"
+    "set output outdir.'hb_frf.png'\n"
+    "set title 'Harmonic balance, H = 7: 3-dof chain with two Jenkins elements, mass 1'\n"
+    "set size noratio; set key top left; set logscale y\n"
+    "set xlabel 'excitation frequency Omega (rad/s)'; set ylabel 'RMS displacement of mass 1'\n"
+    "plot 'hb_frf.csv' using ($1 == 0 ? $2 : NaN):3 with lines dashtype 2 title "
+    "'elements slipping freely (mu N = 0)', '' using ($1 == 1 ? $2 : NaN):3 with lines lw 2 "
+    "title 'Jenkins elements (stick-slip)', '' using ($1 == 2 ? $2 : NaN):3 with lines "
+    "dashtype 3 title 'elements stuck'\n"
+    "unset logscale y\n"
     "set size noratio\n";
 
 /* Moves the PNGs gnuplot made in the temporary directory tmp (inside dir) to dir, and removes
