@@ -4,7 +4,8 @@
 # (fricreg.F90) in its type's rows of the table (those from the row that names the type in bold
 # to the next bold row), as `name(` or `obj%name(`; each name of the module's `public ::`
 # lists (types, procedures, the iso_c_binding names it passes on); and each F77 entry point (fricreg_f77.f90, fricreg_sim_f77.f90,
-# fricreg_joints_f77.f90, fricreg_structure_f77.f90, fricreg_f77_check.f90) as `FRNAME(`, named once only across
+# fricreg_joints_f77.f90, fricreg_structure_f77.f90, fricreg_hb_f77.f90, fricreg_f77_check.f90)
+# as `FRNAME(`, named once only across
 # the files (external names share one space: a second definition would fail at link time, or
 # silently take the first). Usage: fortran_readme.sh ROOT
 root=$1
@@ -47,7 +48,7 @@ for name in $public; do
 done
 
 # The F77 entry points.
-f77_files="fricreg_f77.f90 fricreg_joints_f77.f90 fricreg_sim_f77.f90 fricreg_structure_f77.f90 fricreg_f77_check.f90"
+f77_files="fricreg_f77.f90 fricreg_joints_f77.f90 fricreg_sim_f77.f90 fricreg_structure_f77.f90 fricreg_hb_f77.f90 fricreg_f77_check.f90"
 for f in $f77_files; do
     [ -f "$root/fortran/$f" ] || fail "no fortran/$f"
 done

@@ -1,0 +1,284 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
+! fricreg_hb_f77.f90 — module-free entry points for Fortran 77 callers: harmonic balance of a
+! linear structure with 1-D Jenkins elements (fricreg_hb.h; docs/joints.md), the
+! frequency-domain side of a legacy joint code. Built with the drivers, like
+! fricreg_structure_f77.f90, whose conventions it shares: external subroutines, every argument
+! by reference, INTEGER*8 handle H (0: none), INTEGER STAT last (the C status, FRICREG_OK = 0),
+! DOUBLE PRECISION reals, nothing changed on failure; counts checked by C against the driver.
+!
+! Layouts. M, K, C are (NDOF, NDOF) symmetric (Fortran's order is C's); J is Fortran's
+! J(M, NDOF), transposed here into C's row order in a scratch copy. The elements' coordinates
+! Q(NC, M), NC = 2 NH + 1, column I element I's coefficients (Q0, A1, B1, ..., ANH, BNH); the
+! displacements X(NC, NDOF); the same numbers as C's. Continuation points count from 1.
+!
+!   call                                              C function (fricreg_hb_*)
+!   FRHBCR(NDOF, M, NH, H, STAT)                      _create
+!   FRHBFR(H, STAT)                                   _free, then H = 0
+!   FRHBMF(H, NDOF, A, STAT), FRHBKF, FRHBCF          _set_mass, _set_stiffness, _set_damping
+!   FRHBCA(H, A0, A1, STAT)                           _set_rayleigh
+!   FRHBJF(H, M, NDOF, J, KT, MUN, STAT)              _set_elements (given J transposed)
+!   FRHBPF(H, NDOF, PC, PS, STAT)                     _set_excitation
+!   FRHBNT(H, TOL, MAXIT, STAT)                       _set_newton
+!   FRHBCT(H, DS, DSMIN, DSMAX, MAXPT, STAT)          _set_continuation
+!   FRHBSV(H, OMEGA, NQ, IGUESS, Q, STAT)             _solve (IGUESS = 1: Q holds the guess)
+!   FRHBXD(H, NDOF, NC, X, STAT)                      _displacement
+!   FRHBGO(H, W0, W1, NQ, IGUESS, Q0, STAT)           _continue (IGUESS = 1: Q0 the guess)
+!   FRHBNP(H, NP, STAT)                               _points
+!   FRHBPT(H, K, OMEGA, NDOF, RMS, STAT)              _point (K from 1)
+!   FRHBER(H, CODE, MSG, STAT)                        _errcode, _errmsg
+! Refused here, before C sees them, with FRICREG_EINVAL: FRHBCR's NDOF or M below 1, a
+! negative MAXPT, IGUESS other than 0 or 1, and a K below 1 (counts that would wrap into
+! size_t or C's 0-based index).
+
+!> FRHBCR(NDOF, M, NH, H, STAT): a driver for NDOF >= 1 degrees of freedom, M >= 1 Jenkins
+!> elements and NH harmonics (1 <= NH <= FRICREG_HB_MAX_HARMONICS) into H.
+subroutine frhbcr(ndof, m, nh, h, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer, intent(in) :: ndof, m, nh
+  integer(c_int64_t), intent(inout) :: h
+  integer, intent(out) :: stat
+  type(c_ptr) :: p
+  if (ndof < 1 .or. m < 1) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  p = c_null_ptr
+  stat = fricreg_f77_created(fricreg_hb_create(int(ndof, c_size_t), int(m, c_size_t), &
+                                               int(nh, c_int), p), p, h)
+end subroutine frhbcr
+
+!> FRHBFR(H, STAT): release the driver H and set H = 0; H = 0 does nothing.
+subroutine frhbfr(h, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(inout) :: h
+  integer, intent(out) :: stat
+  stat = fricreg_f77_release(h, fricreg_hb_free)
+end subroutine frhbfr
+
+!> FRHBMF(H, NDOF, A, STAT): the mass matrix A(NDOF, NDOF), symmetric.
+subroutine frhbmf(h, ndof, a, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: ndof
+  double precision, intent(in) :: a(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_hb_set_mass(fricreg_handle_to_ptr(h), int(ndof, c_size_t), a))
+end subroutine frhbmf
+
+!> FRHBKF(H, NDOF, A, STAT): the stiffness matrix A(NDOF, NDOF), symmetric and nonsingular.
+subroutine frhbkf(h, ndof, a, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: ndof
+  double precision, intent(in) :: a(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_hb_set_stiffness(fricreg_handle_to_ptr(h), int(ndof, c_size_t), a))
+end subroutine frhbkf
+
+!> FRHBCF(H, NDOF, A, STAT): the damping matrix A(NDOF, NDOF), symmetric; replaces Rayleigh.
+subroutine frhbcf(h, ndof, a, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: ndof
+  double precision, intent(in) :: a(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_hb_set_damping(fricreg_handle_to_ptr(h), int(ndof, c_size_t), a))
+end subroutine frhbcf
+
+!> FRHBCA(H, A0, A1, STAT): Rayleigh damping C = A0 M + A1 K (A0 in 1/s, A1 in s, >= 0).
+subroutine frhbca(h, a0, a1, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  double precision, intent(in) :: a0, a1
+  integer, intent(out) :: stat
+  stat = int(fricreg_hb_set_rayleigh(fricreg_handle_to_ptr(h), a0, a1))
+end subroutine frhbca
+
+!> FRHBJF(H, M, NDOF, J, KT, MUN, STAT): the elements, Fortran's J(M, NDOF) (row I element
+!> I's relative displacement), stiffnesses KT(M) > 0 and slip forces MUN(M) >= 0.
+subroutine frhbjf(h, m, ndof, j, kt, mun, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m, ndof
+  double precision, intent(in) :: j(max(m, 0), *), kt(*), mun(*)
+  integer, intent(out) :: stat
+  double precision, allocatable :: jt(:, :)
+  integer :: mm, nn, alloc
+  ! Sizes that cannot be the driver's copy nothing: C answers FRICREG_ESIZE.
+  mm = max(m, 0)
+  nn = max(ndof, 0)
+  allocate (jt(nn, mm), stat=alloc)
+  if (alloc /= 0) then
+    stat = int(FRICREG_ENOMEM)
+    return
+  end if
+  if (mm > 0 .and. nn > 0) jt = transpose(j(1:mm, 1:nn))
+  stat = int(fricreg_hb_set_elements(fricreg_handle_to_ptr(h), int(m, c_size_t), &
+                                     int(ndof, c_size_t), jt, kt, mun))
+end subroutine frhbjf
+
+!> FRHBPF(H, NDOF, PC, PS, STAT): the excitation PC(NDOF) cos(OMEGA t) + PS(NDOF)
+!> sin(OMEGA t), force units.
+subroutine frhbpf(h, ndof, pc, ps, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: ndof
+  double precision, intent(in) :: pc(*), ps(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_hb_set_excitation(fricreg_handle_to_ptr(h), int(ndof, c_size_t), pc, ps))
+end subroutine frhbpf
+
+!> FRHBNT(H, TOL, MAXIT, STAT): Newton's tolerance and iteration bound.
+subroutine frhbnt(h, tol, maxit, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  double precision, intent(in) :: tol
+  integer, intent(in) :: maxit
+  integer, intent(out) :: stat
+  stat = int(fricreg_hb_set_newton(fricreg_handle_to_ptr(h), tol, int(maxit, c_int)))
+end subroutine frhbnt
+
+!> FRHBCT(H, DS, DSMIN, DSMAX, MAXPT, STAT): the continuation's step control and its most
+!> points MAXPT >= 1.
+subroutine frhbct(h, ds, dsmin, dsmax, maxpt, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  double precision, intent(in) :: ds, dsmin, dsmax
+  integer, intent(in) :: maxpt
+  integer, intent(out) :: stat
+  if (maxpt < 0) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  stat = int(fricreg_hb_set_continuation(fricreg_handle_to_ptr(h), ds, dsmin, dsmax, &
+                                         int(maxpt, c_size_t)))
+end subroutine frhbct
+
+!> FRHBSV(H, OMEGA, NQ, IGUESS, Q, STAT): solve at OMEGA into Q(NC, M), NQ = NC M; with
+!> IGUESS = 1 from the guess Q holds on entry, with 0 from the linear response.
+subroutine frhbsv(h, omega, nq, iguess, q, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  double precision, intent(in) :: omega
+  integer, intent(in) :: nq, iguess
+  double precision, intent(inout) :: q(*)
+  integer, intent(out) :: stat
+  double precision, allocatable :: q0(:)
+  integer :: alloc
+  if (iguess /= 0 .and. iguess /= 1) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  if (iguess == 1) then ! the guess copied: Fortran forbids passing Q as both arguments
+    allocate (q0(max(nq, 0)), stat=alloc)
+    if (alloc /= 0) then
+      stat = int(FRICREG_ENOMEM)
+      return
+    end if
+    if (nq > 0) q0 = q(1:nq)
+    stat = int(fricreg_hb_solve(fricreg_handle_to_ptr(h), omega, int(nq, c_size_t), q0, q))
+  else
+    stat = int(fricreg_hb_solve(fricreg_handle_to_ptr(h), omega, int(nq, c_size_t), q=q))
+  end if
+end subroutine frhbsv
+
+!> FRHBXD(H, NDOF, NC, X, STAT): the displacements' coefficients X(NC, NDOF) of the last
+!> solution.
+subroutine frhbxd(h, ndof, nc, x, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: ndof, nc
+  double precision, intent(inout) :: x(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_hb_displacement(fricreg_handle_to_ptr(h), int(ndof, c_size_t), &
+                                     int(nc, c_size_t), x))
+end subroutine frhbxd
+
+!> FRHBGO(H, W0, W1, NQ, IGUESS, Q0, STAT): follow the response from W0 to W1 by
+!> continuation; with IGUESS = 1 from the guess Q0(NC, M) at W0, with 0 from the linear
+!> response (Q0 not read).
+subroutine frhbgo(h, w0, w1, nq, iguess, q0, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  double precision, intent(in) :: w0, w1, q0(*)
+  integer, intent(in) :: nq, iguess
+  integer, intent(out) :: stat
+  if (iguess /= 0 .and. iguess /= 1) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  if (iguess == 1) then
+    stat = int(fricreg_hb_continue(fricreg_handle_to_ptr(h), w0, w1, int(nq, c_size_t), q0))
+  else
+    stat = int(fricreg_hb_continue(fricreg_handle_to_ptr(h), w0, w1, int(nq, c_size_t)))
+  end if
+end subroutine frhbgo
+
+!> FRHBNP(H, NP, STAT): the number of points NP of the last continuation (0 if none).
+subroutine frhbnp(h, np, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(out) :: np, stat
+  np = int(fricreg_hb_points(fricreg_handle_to_ptr(h)))
+  stat = int(FRICREG_OK)
+end subroutine frhbnp
+
+!> FRHBPT(H, K, OMEGA, NDOF, RMS, STAT): point K (1 <= K <= NP) of the last continuation, its
+!> frequency OMEGA and the RMS of each dof, RMS(NDOF).
+subroutine frhbpt(h, k, omega, ndof, rms, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: k, ndof
+  double precision, intent(inout) :: omega, rms(*)
+  integer, intent(out) :: stat
+  if (k < 1) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  stat = int(fricreg_hb_point(fricreg_handle_to_ptr(h), int(k - 1, c_size_t), omega, &
+                              int(ndof, c_size_t), rms))
+end subroutine frhbpt
+
+!> FRHBER(H, CODE, MSG, STAT): code and message of the driver's last failure.
+subroutine frhber(h, code, msg, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(out) :: code
+  character(len=*), intent(out) :: msg
+  integer, intent(out) :: stat
+  integer(c_int) :: last
+  stat = fricreg_f77_last_error(h, fricreg_hb_errcode, fricreg_hb_errmsg, last, msg)
+  code = last
+end subroutine frhber
