@@ -34,9 +34,11 @@
  *
  * Two paths:
  *   - exact (fricreg_aft_jenkins_exact, fricreg_aft_iwan_exact): the velocity reversals
- *     u'(θ) = 0 are the roots of a trigonometric polynomial of degree H, found as the roots
- *     of a degree-2H algebraic polynomial by GSL's gsl_poly_complex_solve (companion matrix,
- *     QR) and polished by Newton's method; between two reversals u is monotone, so each
+ *     u'(θ) = 0 are the sign changes of a trigonometric polynomial of degree H, isolated on
+ *     a grid of 8H intervals certified by bounds on its derivatives and found by GSL's Brent,
+ *     or, where the grid cannot certify them (a double root nearby), as the roots of a
+ *     degree-2H algebraic polynomial by GSL's gsl_poly_complex_solve (companion matrix, QR);
+ *     polished by Newton's method. Between two reversals u is monotone, so each
  *     stick→slip point kt (u(θ) − w) = ±mun is the one root in that bracket (GSL's Brent to
  *     4 ulps, then a Newton step); f is then
  *     integrated against cos kθ, sin kθ piece by piece in closed form (stick: kt (u − w), a
