@@ -48,10 +48,10 @@
 #include "base/fr_math.h"
 
 /* g(θ) and g'(θ) of the trigonometric polynomial with coefficients co[2H+1] in the layout of
- * fricreg_aft.h; cos hθ, sin hθ by rotation. */
-static double trig_eval(int H, const double *co, double th, double *dg)
+ * fricreg_aft.h, from c1 = cos θ and s1 = sin θ; cos hθ, sin hθ by rotation. */
+static double trig_eval_cs(int H, const double *co, double c1, double s1, double *dg)
 {
-    double c1 = cos(th), s1 = sin(th), c = 1.0, s = 0.0, g = co[0], d = 0.0;
+    double c = 1.0, s = 0.0, g = co[0], d = 0.0;
     for (int h = 1; h <= H; h++) {
         double cn = c * c1 - s * s1;
         s = s * c1 + c * s1;
@@ -61,6 +61,11 @@ static double trig_eval(int H, const double *co, double th, double *dg)
     }
     *dg = d;
     return g;
+}
+
+static double trig_eval(int H, const double *co, double th, double *dg)
+{
+    return trig_eval_cs(H, co, cos(th), sin(th), dg);
 }
 
 /* Newton on g from th, at most three steps, each kept if it stays in [lo, hi] and lowers |g|. */
@@ -174,61 +179,106 @@ static double brent_root(fricreg_aft *a, const double *co, double target, double
 }
 
 /* Isolation of the sign changes of g = co (entries of order 1) on a grid, certified by bounds
- * on its derivatives, L1 >= |g'| and L2 >= |g''| (sums of h |c_h| and h^2 |c_h|): on an
- * interval of width δ whose ends have one sign, g cannot vanish if |g(a)| + |g(b)| > L1 δ;
- * where the signs differ, g has exactly one root if g' keeps one sign, which holds if
- * |g'(a)| + |g'(b)| > L2 δ with g'(a) g'(b) > 0. An interval certified neither way is halved,
- * up to ISOLATE_DEPTH times. Each root is bracketed for Brent. The companion matrix finds every
- * root but costs O(H^3), 70 % of an exact AFT at H = 7; the grid costs O(H^2) and is certain
- * where it certifies. Returns the number of roots into a->cand, or -1 where some interval
- * could not be certified (the caller then takes the companion matrix). */
+ * on its derivatives, B1 >= |g'|, B2 >= |g''|, B3 >= |g'''| (sums of h |c_h|, h^2 |c_h|,
+ * h^3 |c_h|). On an interval [a, b] of width δ whose ends have one sign σ, g cannot vanish if
+ * |g(a)| + |g(b)| > B1 δ (two cones), or if σ (g(a) + g'(a) δ) − B2 δ²/2 > 0 (the Taylor bound
+ * from a, concave: positive at both ends, so throughout), or the same from b. Where the signs
+ * differ, g has exactly one root if g' keeps one sign, which the same tests on g' (with g'',
+ * B2, B3) certify. An interval certified neither way is halved, up to ISOLATE_DEPTH times.
+ * Each root is bracketed for Brent. The companion matrix finds every root but costs O(H^3),
+ * 70 % of an exact AFT at H = 7; the grid costs O(H^2) and is certain where it certifies.
+ * isolate_roots returns the number of roots, in a->cand, or -1 where some interval could not
+ * be certified (the caller then takes the companion matrix). */
 #define ISOLATE_GRID 8  /* grid intervals per harmonic of the degree */
 #define ISOLATE_DEPTH 8 /* halvings of an interval before giving up (at most 2^8 leaves) */
 struct isolation {
     fricreg_aft *a;
     const double *co;
-    double L1, L2;
+    double B1, B2, B3;
     int count;
 };
 
-static int isolate_interval(struct isolation *iso, double t0, double g0, double d0, double t1,
-                            double g1, double d1, int depth)
+/* g and its first two derivatives at one angle t, from cos t and sin t. */
+struct sample {
+    double t, g, d, dd;
+};
+
+static struct sample sample_at(const struct isolation *iso, double t, double c1, double s1)
 {
-    double width = t1 - t0;
-    if (g0 * g1 > 0.0 && fabs(g0) + fabs(g1) > iso->L1 * width)
-        return 0; /* one sign throughout */
-    if (g0 * g1 < 0.0 && d0 * d1 > 0.0 && fabs(d0) + fabs(d1) > iso->L2 * width) {
+    const double *co = iso->co;
+    double c = 1.0, s = 0.0;
+    struct sample p = {t, co[0], 0.0, 0.0};
+    for (int h = 1; h <= iso->a->H; h++) {
+        double cn = c * c1 - s * s1, al = co[2 * h - 1], be = co[2 * h];
+        s = s * c1 + c * s1;
+        c = cn;
+        p.g += al * c + be * s;
+        p.d += h * (be * c - al * s);
+        p.dd -= (double)h * h * (al * c + be * s);
+    }
+    return p;
+}
+
+/* Whether f, with f(a) = f0, f'(a) = f0p, f(b) = f1, f'(b) = f1p, |f'| <= b1 and |f''| <= b2
+ * on [a, b] of width w, keeps one sign there (the tests above). */
+static int keeps_sign(double f0, double f0p, double f1, double f1p, double b1, double b2, double w)
+{
+    if (!(f0 * f1 > 0.0))
+        return 0;
+    double sg = f0 > 0.0 ? 1.0 : -1.0, curve = 0.5 * b2 * w * w;
+    return fabs(f0) + fabs(f1) > b1 * w || sg * (f0 + f0p * w) - curve > 0.0 ||
+           sg * (f1 - f1p * w) - curve > 0.0;
+}
+
+static int isolate_interval(struct isolation *iso, struct sample p, struct sample q, int depth)
+{
+    double w = q.t - p.t;
+    if (keeps_sign(p.g, p.d, q.g, q.d, iso->B1, iso->B2, w))
+        return 0;
+    if (p.g * q.g < 0.0 && keeps_sign(p.d, p.dd, q.d, q.dd, iso->B2, iso->B3, w)) {
         if (iso->count >= 2 * iso->a->H)
             return -1; /* more sign changes than the degree allows: rounding, not roots */
-        double lo = t0, hi = t1, th = brent_root(iso->a, iso->co, 0.0, &lo, &hi);
+        double lo = p.t, hi = q.t, th = brent_root(iso->a, iso->co, 0.0, &lo, &hi);
         iso->a->cand[iso->count++] = polish(iso->a->H, iso->co, th, lo, hi);
         return 0;
     }
     if (depth == 0)
         return -1;
-    double tm = 0.5 * (t0 + t1), dm, gm = trig_eval(iso->a->H, iso->co, tm, &dm);
-    if (isolate_interval(iso, t0, g0, d0, tm, gm, dm, depth - 1) != 0)
+    double tm = 0.5 * (p.t + q.t);
+    struct sample m = sample_at(iso, tm, cos(tm), sin(tm));
+    if (isolate_interval(iso, p, m, depth - 1) != 0)
         return -1;
-    return isolate_interval(iso, tm, gm, dm, t1, g1, d1, depth - 1);
+    return isolate_interval(iso, m, q, depth - 1);
 }
 
 static int isolate_roots(fricreg_aft *a, const double *co)
 {
     int H = a->H, n = ISOLATE_GRID * H;
-    struct isolation iso = {a, co, 0.0, 0.0, 0};
+    struct isolation iso = {a, co, 0.0, 0.0, 0.0, 0};
     for (int h = 1; h <= H; h++) {
         double c = fabs(co[2 * h - 1]) + fabs(co[2 * h]);
-        iso.L1 += h * c;
-        iso.L2 += (double)h * h * c;
+        iso.B1 += h * c;
+        iso.B2 += (double)h * h * c;
+        iso.B3 += (double)h * h * h * c;
     }
-    double d0, g0 = trig_eval(H, co, 0.0, &d0), t0 = 0.0, gs = g0, ds = d0;
+    /* a margin for the rounding of the values and of the grid's angles, which are rotated
+     * step by step (one sincos for the grid) */
+    iso.B1 *= 1.0 + 1e-9;
+    iso.B2 *= 1.0 + 1e-9;
+    iso.B3 *= 1.0 + 1e-9;
+    double cd = cos(FR_TWO_PI / n), sd = sin(FR_TWO_PI / n), c1 = 1.0, s1 = 0.0;
+    struct sample first = sample_at(&iso, 0.0, 1.0, 0.0), p = first;
     for (int i = 1; i <= n; i++) { /* the last interval closes the period on the first point */
-        double t1 = FR_TWO_PI * (double)i / (double)n, d1 = ds, g1 = gs;
+        double cn = c1 * cd - s1 * sd;
+        s1 = s1 * cd + c1 * sd;
+        c1 = cn;
+        struct sample q = first;
+        q.t = FR_TWO_PI * (double)i / (double)n;
         if (i < n)
-            g1 = trig_eval(H, co, t1, &d1);
-        if (isolate_interval(&iso, t0, g0, d0, t1, g1, d1, ISOLATE_DEPTH) != 0)
+            q = sample_at(&iso, q.t, c1, s1);
+        if (isolate_interval(&iso, p, q, ISOLATE_DEPTH) != 0)
             return -1;
-        t0 = t1, g0 = g1, d0 = d1;
+        p = q;
     }
     return iso.count;
 }
