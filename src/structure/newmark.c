@@ -263,19 +263,27 @@ static int start_at(fricreg_structure *s, double dt, const gsl_vector *guess,
 
 /* Newton's first guess where the start's forces are not within the tolerance: those forces,
  * but for the contacts whose force at t is below their bound (law (4): in its band, for (3)
- * and tanh every contact), which take the forces that keep their velocities over the step:
- *   zdot_S(f) = zdot_S(t),  i.e.  c W_eff,SS f_S = zdot_S(t) - z0_S - c W_eff,SR f_R.
+ * and tanh every contact), S, which take new forces, the others R keeping theirs.
  * Why: at small eps the band (law (4): |zdot - xi| < eps/2) is only eps/(c W_eff) wide in the
  * forces. A sticking contact's velocity wanders inside it, and the start's forces, held over
  * the step while the structure moves, put it outside: Newton then brings the sticking contacts
  * back one at a time (a stop each, first_trial), about an iteration per contact. On the
  * ten-storey building (examples/building/) at eps = 1e-4 m/s and dt = 0.01 s that was 12
  * iterations a step through its 5 s of free vibration, all ten dampers sticking.
+ * The forces on S:
+ *   - law (4) with a diagonal W (law_exact = 1): those of the band's own affine piece, where
+ *     the law is W_ii f_i + a_free,i + k_i zdot_i = 0 with k_i = 2 mun_i W_ii/eps (the free
+ *     near-stick row of fr_ctx_tangent_rows; W f cancels against a_free's -W f):
+ *       (1 + c k_i) [W_eff f]_i = -a0_i - k_i z0_i,   i in S.
+ *     Where S and R are what the law makes of the result, this is the step's solution to
+ *     rounding (newton: no Newton iteration after it);
+ *   - otherwise, the forces that keep S's velocities over the step, zdot_S(f) = zdot_S(t).
  * W_eff,SS is positive definite unless contacts of S depend on each other (equal rows of J):
- * then no guess. As a change of the start's forces f on S, whose velocities s->zdot holds:
- *   c W_eff,SS df_S = zdot_S(t) - zdot_S(f),
- * so that the guess's products are f's (s->at_start) and df's, one product. Into s->ft and
- * its products into s->at_ft; 0 if there is none. Uses s->stopped as the marks of S. */
+ * then no guess. As a change df_S of the start's forces f, whose products are s->at_start,
+ *   W_eff,SS df_S = rhs_S - [W_eff f]_S,
+ * so that the guess's products are f's and df's, one product. Into s->ft and its products
+ * into s->at_ft; returns 0 if there is none, else 1 (2 for law_exact). Uses s->stopped as the
+ * marks of S. */
 static int stick_guess(fricreg_structure *s)
 {
     size_t m = s->m, k = 0;
@@ -289,16 +297,27 @@ static int stick_guess(fricreg_structure *s)
     if (k == 0)
         return 0;
     double c = (1.0 + s->alpha) * s->gamma * s->step_dt;
-    fr_csc_mult_t(s->Jt, s->v->data, b); /* zdot(t) */
-    for (size_t i = 0; i < m; i++)
-        b[i] = (b[i] - s->zdot->data[i]) / c;
+    const double *weff_f = s->at_start.weff->data;
+    int law_exact = s->w_diagonal && fr_ctx_law(s->ctx) == FRICREG_LAW_QUINN;
+    if (law_exact) {
+        const double *w = fr_ctx_coupling_diagonal(s->ctx);
+        double two_over_eps = 2.0 / fr_ctx_eps(s->ctx);
+        for (size_t i = 0; i < m; i++) {
+            double ki = s->mun[i] * w[i] * two_over_eps;
+            b[i] = (-s->af0->data[i] - ki * s->z0->data[i]) / (1.0 + c * ki) - weff_f[i];
+        }
+    } else {
+        fr_csc_mult_t(s->Jt, s->v->data, b); /* zdot(t) */
+        for (size_t i = 0; i < m; i++)
+            b[i] = (b[i] - s->zdot->data[i]) / c;
+    }
     if (fr_newton_stick_solve(&s->newton, s->step.D, set, b, df, &s->cc) != FRICREG_OK)
         return 0;
     for (size_t i = 0; i < m; i++)
         guess[i] = f[i] + df[i];
     form_products(s, df, &s->at_ft);
     combine_products(&s->at_start, 1.0, &s->at_ft, &s->at_ft);
-    return 1;
+    return law_exact ? 2 : 1;
 }
 
 /* Newton from the forces at the step's start or, where they are not within tol, the stick
@@ -315,9 +334,11 @@ static int newton(fricreg_structure *s, double dt, int *converged, int *iters)
     if (status != FRICREG_OK)
         return status;
     double tol = s->newton_tol * force_scale(s);
-    if (rinf > tol && stick_guess(s)) {
+    int guess = 0, exact = 0;
+    if (rinf > tol && (guess = stick_guess(s)) != 0) {
         double phi_start = phi;
         status = start_at(s, dt, s->ft, &s->at_ft, &phi, &rinf);
+        exact = guess == 2 && phi < phi_start && rinf <= tol;
         if (status == FRICREG_OK && !(phi < phi_start))
             status = start_at(s, dt, s->f, &s->at_start, &phi, &rinf);
         if (status != FRICREG_OK)
@@ -325,6 +346,11 @@ static int newton(fricreg_structure *s, double dt, int *converged, int *iters)
     }
     memset(s->stopped, 0, s->m * sizeof *s->stopped);
     *iters = 0;
+    if (exact) { /* the law's own solution on its piece: a Newton step, and converged */
+        *iters = 1;
+        *converged = 1;
+        return FRICREG_OK;
+    }
     if ((status = iterate(s, tol, 1, &phi, &rinf, iters)) != FRICREG_OK)
         return status;
     if (rinf > tol && isfinite(phi) && *iters < s->newton_max) {

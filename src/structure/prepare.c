@@ -125,7 +125,8 @@ typedef char fr_long_is_int64[sizeof(SuiteSparse_long) == sizeof(int64_t) ? 1 : 
 static int couple(fricreg_structure *s)
 {
     const cholmod_sparse *W = s->mass.D;
-    if (!off_diagonal(W))
+    s->w_diagonal = !off_diagonal(W);
+    if (s->w_diagonal)
         return couple_diagonal(s, W);
     if (s->m <= DENSE_COUPLING_MAX)
         return couple_dense(s, W);

@@ -73,6 +73,7 @@ struct fricreg_structure {
     int prepared;           /* Cd, the mass factor, W and Mr are current */
     cholmod_sparse *Cd;     /* the damping in force: C, or Rayleigh's a0 M + a1 K */
     struct fr_cfactor mass; /* M's factor; mass.D is the Delassus matrix W = J M^-1 J^T */
+    int w_diagonal;         /* W has no entry off its diagonal (contacts on separate dofs) */
     gsl_vector *Mr;         /* M r */
     int unguarded;      /* tests only (test_guard_structure.c, static library): skip the step guard,
                     * to see what a refused step would have done */
