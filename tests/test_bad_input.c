@@ -652,6 +652,13 @@ static int w_st_get_stat(void)
 {
     return fricreg_structure_get_stat(ST(), N(0, FRICREG_SSTAT_STEPS), (int64_t *)O(1));
 }
+/* A warning to read: one step from rest, the contact never sliding (FRICREG_WARN_EPS_SPEED). */
+static int w_st_get_warning(void)
+{
+    fricreg_structure_step(FX_->st, 0.01);
+    fricreg_structure_warning_count(FX_->st);
+    return fricreg_structure_get_warning(ST(), C(0, 0), (int *)O(1), (char *)O(2), 64);
+}
 
 /* the functions the first matrix missed */
 static int w_ctx_set_keep_tangent(void)
@@ -1542,6 +1549,11 @@ static const struct row rows[] = {
      "0i",
      NONE,
      {HANDLE, INT(0, "ioii"), PTR(1, "0")}},
+    {"fricreg_structure_get_warning",
+     w_st_get_warning,
+     "0i",
+     NONE,
+     {HANDLE, COUNT(0, "oiii"), PTR(1, "0"), PTR(2, "o")}},
 };
 
 /* ---- Running the table -------------------------------------------------------------------- */
@@ -2418,6 +2430,11 @@ START_TEST(non_status_functions)
     ck_assert_int_eq(fricreg_structure_errcode(NULL), FRICREG_OK);
     ck_assert_str_eq(fricreg_structure_errmsg(NULL), "NULL structure");
     fricreg_structure_free(NULL);
+    ck_assert_uint_eq(fricreg_structure_warning_count(NULL), 0);
+    ck_assert_str_eq(fricreg_structure_warning_message(NULL, 0), "");
+    ck_assert_str_eq(fricreg_warning_name(-1), "unknown");
+    ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_ENERGY + 1), "unknown");
+    ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_EPS_LARGE), "eps_large");
 
     /* errmsg_copy: buf NULL or len 0 gives 0 and writes nothing; a short buffer is truncated
      * and NUL-terminated; the full length is returned ("NULL context" is 12 characters). */

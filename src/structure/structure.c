@@ -320,6 +320,7 @@ int fricreg_structure_set_initial(fricreg_structure *s, size_t ndof, const doubl
     s->fresh = 1;
     fr_energy_reset(s);
     memset(s->stats, 0, sizeof s->stats);
+    fr_warn_track_reset(s);
     return FRICREG_OK;
 }
 
