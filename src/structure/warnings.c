@@ -51,6 +51,8 @@ void fr_warn_track_step(fricreg_structure *s, double dt)
     const SuiteSparse_long *Jp = s->Jt->p, *Ji = s->Jt->i;
     const double *Jx = s->Jt->x, *v = s->v->data;
     for (size_t i = 0; i < s->m; i++) { /* zdot_i = (J v)_i: column i of J^T */
+        if (s->mun[i] == 0.0)
+            continue; /* no friction there: its speed says nothing of eps */
         double z = 0.0;
         for (SuiteSparse_long p = Jp[i]; p < Jp[i + 1]; p++)
             z += Jx[p] * v[Ji[p]];
@@ -107,10 +109,15 @@ static void check_ground(fricreg_structure *s)
                 eps, pgv);
 }
 
-static void check_speed(fricreg_structure *s)
+/* Judged once the run has lasted a fundamental period (when known): a structure starting from
+ * rest takes that long to reach its speeds. */
+static void check_speed(fricreg_structure *s, double period)
 {
-    double eps = fr_ctx_eps(s->ctx);
-    if (s->stats[FRICREG_SSTAT_STEPS] > 0 && s->peak_speed < EPS_SPEED_RATIO * eps)
+    double eps = fr_ctx_eps(s->ctx), friction = 0.0;
+    for (size_t i = 0; i < s->m; i++)
+        friction = fmax(friction, s->mun[i]);
+    if (friction > 0.0 && s->stats[FRICREG_SSTAT_STEPS] > 0 && s->t >= period &&
+        s->peak_speed < EPS_SPEED_RATIO * eps)
         fr_warn(&s->warnings, FRICREG_WARN_EPS_SPEED,
                 "no contact slid faster than 10 eps = %.4g m/s in the run (peak %.4g m/s): "
                 "the law never left its regularized band; either the contacts held throughout "
@@ -138,21 +145,25 @@ static void check_bounds(fricreg_structure *s)
         }
 }
 
-static void check_dt(fricreg_structure *s)
+/* The fundamental period 2 pi/omega_1 of the model in force, or 0 where it is not known (no
+ * step yet, K without a positive eigenvalue, beyond 2048 degrees of freedom, no memory). */
+static double fundamental_period(fricreg_structure *s)
 {
-    if (!s->prepared || !(s->max_dt > 0.0))
-        return;
+    if (!s->prepared)
+        return 0.0;
     struct fr_error kept = s->err; /* a failure here is no failure of the caller's */
     int status = fr_structure_rates(s, "warning_count");
     s->err = kept;
-    if (status != FRICREG_OK || !(s->omega_min > 0.0))
-        return;
-    double period = FR_TWO_PI / s->omega_min;
-    if (s->max_dt > period / STEPS_PER_PERIOD)
+    return status == FRICREG_OK && s->omega_min > 0.0 ? FR_TWO_PI / s->omega_min : 0.0;
+}
+
+static void check_dt(fricreg_structure *s, double period)
+{
+    if (period > 0.0 && s->max_dt > period / STEPS_PER_PERIOD)
         fr_warn(&s->warnings, FRICREG_WARN_DT_COARSE,
                 "dt = %.4g s is above a tenth of the fundamental period %.4g s (omega_1 = %.4g "
                 "rad/s): the lowest mode is not resolved; are dt in s, M in kg and K in N/m?",
-                s->max_dt, period, s->omega_min);
+                s->max_dt, period, FR_TWO_PI / period);
 }
 
 static void check_newton(fricreg_structure *s)
@@ -194,10 +205,11 @@ size_t fricreg_structure_warning_count(fricreg_structure *s)
     if (s->running)
         return s->warnings.n; /* from the observer: the list as last judged */
     fr_warnings_clear(&s->warnings);
+    double period = fundamental_period(s);
     check_ground(s);
-    check_speed(s);
+    check_speed(s, period);
     check_bounds(s);
-    check_dt(s);
+    check_dt(s, period);
     check_newton(s);
     check_energy(s);
     return s->warnings.n;
