@@ -222,6 +222,33 @@ START_TEST(warnings_change_nothing)
 }
 END_TEST
 
+/* From the observer, warning_count judges nothing: the list as last judged (here, the record in
+ * g's ground_peak from before the run), however the run goes on. */
+static size_t seen_from_observer;
+
+static int count_from_observer(void *user, double t, size_t ndof, const double u[],
+                               const double v[], size_t m, const double f[])
+{
+    (void)t, (void)ndof, (void)u, (void)v, (void)m, (void)f;
+    seen_from_observer = fricreg_structure_warning_count(user);
+    return 0;
+}
+
+START_TEST(observer_sees_the_list_as_judged)
+{
+    struct units in_g = si;
+    in_g.ground = 1.0 / 9.81;
+    fricreg_structure *s = building(&in_g);
+    ck_assert_uint_eq(fricreg_structure_warning_count(s), 1); /* ground_peak: no step yet */
+    ok(s, fricreg_structure_set_observer(s, count_from_observer, s));
+    ok(s, fricreg_structure_run(s, 0.01, 15.0));
+    ck_assert_uint_eq(seen_from_observer, 1);
+    ck_assert_int_eq(fricreg_structure_errcode(s), FRICREG_OK);
+    ck_assert_uint_eq(fricreg_structure_warning_count(s), 2); /* and eps_speed, after the run */
+    fricreg_structure_free(s);
+}
+END_TEST
+
 START_TEST(names)
 {
     ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_NONE), "none");
@@ -244,6 +271,7 @@ int main(void)
     tcase_add_test(tc, newton_failures);
     tcase_add_test(tc, energy_residual);
     tcase_add_test(tc, warnings_change_nothing);
+    tcase_add_test(tc, observer_sees_the_list_as_judged);
     tcase_add_test(tc, names);
     suite_add_tcase(suite, tc);
     SRunner *runner = srunner_create(suite);
