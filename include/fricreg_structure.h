@@ -452,14 +452,18 @@ FRICREG_API int fricreg_structure_get_dissipation(const fricreg_structure *s, si
  *  Newmark makes the residual vanish to Newton's tolerance (its discrete balance is exact);
  *  HHT-alpha's numerical damping shows in it. */
 enum fricreg_structure_value {
-    FRICREG_SVALUE_TIME = 0,     /**< time reached */
-    FRICREG_SVALUE_INPUT = 1,    /**< work of p - M r a_g since t = 0 */
-    FRICREG_SVALUE_KINETIC = 2,  /**< kinetic energy now */
-    FRICREG_SVALUE_STRAIN = 3,   /**< strain energy now */
-    FRICREG_SVALUE_VISCOUS = 4,  /**< energy dissipated by C since t = 0 */
-    FRICREG_SVALUE_FRICTION = 5, /**< energy dissipated by all contacts since t = 0 */
-    FRICREG_SVALUE_RESIDUAL = 6, /**< the balance's residual */
-    FRICREG_SVALUE_INITIAL = 7   /**< kinetic + strain energy at t = 0 */
+    FRICREG_SVALUE_TIME = 0,      /**< time reached */
+    FRICREG_SVALUE_INPUT = 1,     /**< work of p - M r a_g since t = 0 */
+    FRICREG_SVALUE_KINETIC = 2,   /**< kinetic energy now */
+    FRICREG_SVALUE_STRAIN = 3,    /**< strain energy now */
+    FRICREG_SVALUE_VISCOUS = 4,   /**< energy dissipated by C since t = 0 */
+    FRICREG_SVALUE_FRICTION = 5,  /**< energy dissipated by all contacts since t = 0 */
+    FRICREG_SVALUE_RESIDUAL = 6,  /**< the balance's residual */
+    FRICREG_SVALUE_INITIAL = 7,   /**< kinetic + strain energy at t = 0 */
+    FRICREG_SVALUE_GROUND_PGV = 8 /**< the ground record's peak velocity max |integral of a_g
+                                       dt| (trapezoidal from the record's start; 0 without a
+                                       record): the scale of fricreg-sim's default eps and of
+                                       the eps warnings (since 1.6) */
 };
 
 /** Read one quantity (enum fricreg_structure_value) into *value.

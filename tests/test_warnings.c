@@ -81,6 +81,9 @@ static fricreg_structure *building(const struct units *u)
     ok(s, fricreg_structure_set_ground_accel(s, 0.0, building_record_dt, NREC, ag));
     ok(s, fricreg_structure_set_law(s, FRICREG_LAW_QUINN,
                                     u->eps_pgv * peak_ground_velocity(ag, 1.0 / u->ground)));
+    double pgv = 0.0; /* the library's scale of the eps checks is this record's */
+    ok(s, fricreg_structure_get_value(s, FRICREG_SVALUE_GROUND_PGV, &pgv));
+    ck_assert_double_eq_tol(pgv, peak_ground_velocity(ag, 1.0), 1e-12 * pgv);
     free(ag);
     return s;
 }

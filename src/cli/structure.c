@@ -134,15 +134,13 @@ int cli_parse_structure(int argc, char **argv, struct structure_options *o)
 
 /* ---- Setting up the structure ------------------------------------------------------------ */
 
-/* The default eps, 1 % of the ground's peak velocity |integral of a_g| (a velocity scale known
- * before the run; docs/structural.md, "Choosing eps"), or the library's 1e-3 without motion. */
-static double default_eps(const struct structure_input *in)
+/* The default eps, 1 % of the ground's peak velocity |integral of a_g| as the library computes
+ * it for its warnings (a velocity scale known before the run; docs/structural.md, "Choosing
+ * eps"), or the library's 1e-3 without motion. */
+static double default_eps(const fricreg_structure *s)
 {
-    double v = 0.0, peak = 0.0;
-    for (size_t k = 1; k < in->nrec; k++) {
-        v += 0.5 * (in->ag[k - 1] + in->ag[k]) * in->dt_rec;
-        peak = fmax(peak, fabs(v));
-    }
+    double peak = 0.0;
+    fricreg_structure_get_value(s, FRICREG_SVALUE_GROUND_PGV, &peak);
     return peak > 0.0 ? 0.01 * peak : 1e-3;
 }
 
@@ -162,7 +160,7 @@ static int setup(const struct structure_options *o, const struct structure_input
     int status = cli_set_model(o, in, s);
     if (status != 0)
         return status;
-    *eps = o->eps > 0.0 ? o->eps : default_eps(in);
+    *eps = o->eps > 0.0 ? o->eps : default_eps(s);
     if (fricreg_structure_set_law(s, o->law, *eps) != FRICREG_OK)
         return cli_usage_error("--eps", fricreg_structure_errmsg(s));
     return set_scheme(s, o);

@@ -203,6 +203,8 @@ int fr_structure_guard(fricreg_structure *s, const struct fr_integrator *integ, 
  * run (set_initial). */
 void fr_warn_track_step(fricreg_structure *s, double dt);
 void fr_warn_track_reset(fricreg_structure *s);
+/* The ground record's peak velocity max |integral of a_g dt| (trapezoidal; 0 without one). */
+double fr_ground_pgv(const fricreg_structure *s);
 
 /* energy.c */
 void fr_energy_reset(fricreg_structure *s);

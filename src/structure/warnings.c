@@ -76,6 +76,13 @@ static void record_peaks(const struct fr_record *rec, double *pga, double *pgv)
     }
 }
 
+double fr_ground_pgv(const fricreg_structure *s)
+{
+    double pga, pgv;
+    record_peaks(&s->ground, &pga, &pgv);
+    return pgv;
+}
+
 static int moves_with_ground(const fricreg_structure *s)
 {
     for (size_t k = 0; k < s->n; k++)
