@@ -514,7 +514,7 @@ FRICREG_API size_t fricreg_structure_errmsg_copy(const fricreg_structure *s, cha
  *    the excitation or the bounds are in the wrong units).
  *  - FRICREG_WARN_BOUND_SCALE: after a step, a contact with mun_i > 0 whose mun_i W_ii (the
  *    acceleration its bound gives its effective mass 1/W_ii) is outside 1e-3 g .. 10 g.
- *  - FRICREG_WARN_DT_COARSE: after a step of fricreg_structure_step or _run, the longest dt
+ *  - FRICREG_WARN_DT_COARSE: after a fixed step (step, run, run_ode's fixed), the longest dt
  *    above a tenth of the fundamental period 2 pi/omega_1 (omega_1^2 the smallest positive
  *    eigenvalue of M^-1 K, computed here once per model up to 2048 degrees of freedom, O(ndof^3)
  *    and an allocation; not judged beyond).

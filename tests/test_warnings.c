@@ -21,6 +21,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fricreg_sim.h"
 #include "fricreg_structure.h"
 
 #include "../examples/building/building_model.h"
@@ -163,6 +164,19 @@ START_TEST(unit_mistake_raises_its_code)
 }
 END_TEST
 
+/* A fixed step of GSL's implicit RK4 (run_ode) counts for dt_coarse: 0.2 s against the period's
+ * tenth 0.133 s; its balance is not average acceleration's, so energy is not judged. */
+START_TEST(run_ode_fixed_steps)
+{
+    fricreg_structure *s = building(&si);
+    ok(s, fricreg_structure_run_ode(s, FRICREG_INT_RK4IMP, 0.2, 0.0, 0.0, 2.0));
+    size_t count = fricreg_structure_warning_count(s);
+    ck_assert(raised(s, count, FRICREG_WARN_DT_COARSE));
+    ck_assert(!raised(s, count, FRICREG_WARN_ENERGY));
+    fricreg_structure_free(s);
+}
+END_TEST
+
 /* Newton's checks: one iteration allowed per step (max_iter = 1) leaves steps unconverged. */
 START_TEST(newton_failures)
 {
@@ -271,6 +285,7 @@ int main(void)
     tcase_add_test(tc, si_units_raise_none);
     tcase_add_loop_test(tc, unit_mistake_raises_its_code, 0,
                         (int)(sizeof mistakes / sizeof mistakes[0]));
+    tcase_add_test(tc, run_ode_fixed_steps);
     tcase_add_test(tc, newton_failures);
     tcase_add_test(tc, energy_residual);
     tcase_add_test(tc, warnings_change_nothing);

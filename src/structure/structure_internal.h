@@ -120,7 +120,7 @@ struct fricreg_structure {
      * since set_initial showed them (reset by set_initial). */
     struct fr_warnings warnings;
     double peak_speed;     /* the largest |zdot_i| = |(J v)_i| at a step's end */
-    double max_dt;         /* the longest step of step/run (not run_ode's) */
+    double max_dt;         /* the longest fixed step (run_ode's adaptive ones aside) */
     int64_t inexact_steps; /* steps of a scheme whose energy balance is not exact */
 };
 
@@ -199,9 +199,10 @@ double fr_structure_newton_rate(const fricreg_structure *s);
 int fr_structure_guard(fricreg_structure *s, const struct fr_integrator *integ, double dt,
                        const char *who);
 
-/* warnings.c: what a step (of length dt; 0 for run_ode's) shows the checks; reset with the
- * run (set_initial). */
-void fr_warn_track_step(fricreg_structure *s, double dt);
+/* warnings.c: what a step of length dt (0: an adaptive one) shows the checks, ode for one of
+ * run_ode's (GSL's schemes: their energy balance is not exact); reset with the run
+ * (set_initial). */
+void fr_warn_track_step(fricreg_structure *s, double dt, int ode);
 void fr_warn_track_reset(fricreg_structure *s);
 /* The ground record's peak velocity max |integral of a_g dt| (trapezoidal; 0 without one). */
 double fr_ground_pgv(const fricreg_structure *s);

@@ -46,7 +46,7 @@ static int balance_exact(const fricreg_structure *s)
     return s->scheme == FR_SCHEME_NEWMARK && s->alpha == 0.0 && s->beta == 0.25 && s->gamma == 0.5;
 }
 
-void fr_warn_track_step(fricreg_structure *s, double dt)
+void fr_warn_track_step(fricreg_structure *s, double dt, int ode)
 {
     const SuiteSparse_long *Jp = s->Jt->p, *Ji = s->Jt->i;
     const double *Jx = s->Jt->x, *v = s->v->data;
@@ -59,7 +59,7 @@ void fr_warn_track_step(fricreg_structure *s, double dt)
         s->peak_speed = fmax(s->peak_speed, fabs(z));
     }
     s->max_dt = fmax(s->max_dt, dt);
-    if (dt == 0.0 || !balance_exact(s))
+    if (ode || !balance_exact(s))
         s->inexact_steps++;
 }
 
