@@ -32,7 +32,7 @@ run() {
         --contacts "$dir/J.mtx" --mun "$dir/mun.txt" --ground-accel "$dir/ground.txt" \
         --eps 1e-3 --integrator newmark --dt 0.005 --t-end "$(echo "$1" | awk '{ print $1 * 0.005 }')" \
         >"$dir/summary.json"
-    run_cpu=$(sed -n 's/.*"cpu_seconds": \([0-9.]*\)}.*/\1/p' "$dir/summary.json")
+    run_cpu=$(sed -n 's/.*"cpu_seconds": \([0-9.]*\)[,}].*/\1/p' "$dir/summary.json")
     read -r user sys kib <"$dir/time.txt"
     echo "$1 $run_cpu $(echo "$user $sys $kib" | awk '{ printf "%.2f %.1f", $1 + $2, $3 / 1024 }')"
 }

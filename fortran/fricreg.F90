@@ -27,7 +27,7 @@
 !     fricreg_exact_solution, fricreg_structure and fricreg_hb_driver (the last four with the
 !     drivers), their
 !     common parent fricreg_object, the generics law_eval, disk_eval, stribeck_eval and
-!     stribeck_disk_eval, and fricreg_error_string, fricreg_version_string,
+!     stribeck_disk_eval, and fricreg_error_string, fricreg_warning_string, fricreg_version_string,
 !     fricreg_law_string, fricreg_law_id, fricreg_disk_law_string, fricreg_disk_law_id,
 !     fricreg_integrator_string, fricreg_integrator_id.
 !
@@ -68,7 +68,7 @@ module fricreg
   public :: fricreg_c_string, fricreg_ptr_to_handle, fricreg_handle_to_ptr, fricreg_transpose
   ! ---- Public: the idiomatic layer ------------------------------------------------------------
   public :: fricreg_object, fricreg_context, law_eval, fricreg_error_string, &
-            fricreg_version_string, fricreg_law_string, fricreg_law_id
+            fricreg_warning_string, fricreg_version_string, fricreg_law_string, fricreg_law_id
   public :: disk_eval, stribeck_eval, stribeck_disk_eval, fricreg_disk_law_string, &
             fricreg_disk_law_id
   public :: fricreg_disk_context, fricreg_jenkins_elements, fricreg_iwan_elements
@@ -349,6 +349,8 @@ module fricreg
     procedure :: get_dissipation => struct_get_dissipation
     procedure :: get_value => struct_get_value
     procedure :: get_stat => struct_get_stat
+    procedure :: warning_count => struct_warning_count
+    procedure :: get_warning => struct_get_warning
     final :: struct_final
   end type
 
@@ -392,6 +394,14 @@ contains
     character(len=:), allocatable :: text
     text = fricreg_c_string(fricreg_strerror(status))
   end function fricreg_error_string
+
+  !> Short fixed name of a warning code (FRICREG_WARN_*: 'eps_large', ...; C's
+  !> fricreg_warning_name), 'unknown' if unknown. Since 1.6.
+  function fricreg_warning_string(code) result(text)
+    integer(c_int), intent(in) :: code
+    character(len=:), allocatable :: text
+    text = fricreg_c_string(fricreg_warning_name(code))
+  end function fricreg_warning_string
 
   !> Version "MAJOR.MINOR.PATCH" of the library linked (FRICREG_VERSION_STRING: the headers').
   function fricreg_version_string() result(text)
@@ -2811,6 +2821,39 @@ contains
     if (status == FRICREG_OK) status = self%unrecorded('get_stat', &
                                        fricreg_structure_get_stat(self%ptr, which, value))
   end function struct_get_stat
+
+  !> Judge the checks of plausibility now and return how many warnings they raise (C's
+  !> fricreg_structure_warning_count: the thresholds, in SI units, are in its docstring and in
+  !> docs/structural.md "Warnings"); 0 if not created. Read them with get_warning. Since 1.6.
+  integer function struct_warning_count(self)
+    class(fricreg_structure), intent(inout) :: self
+    struct_warning_count = 0
+    if (c_associated(self%ptr)) &
+      struct_warning_count = int(fricreg_structure_warning_count(self%ptr))
+  end function struct_warning_count
+
+  !> Warning k, 1 <= k <= warning_count() (one-based, as Fortran counts): its code
+  !> (FRICREG_WARN_*) and its message. FRICREG_ENULL if not created; FRICREG_EINVAL if k is
+  !> out of range (code FRICREG_WARN_NONE, message ''). Since 1.6.
+  function struct_get_warning(self, k, code, message) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    integer, intent(in) :: k
+    integer(c_int), intent(out) :: code
+    character(len=:), allocatable, intent(out) :: message
+    integer(c_int) :: status
+    code = FRICREG_WARN_NONE
+    message = ''
+    status = self%ready('get_warning', 'structure')
+    if (status /= FRICREG_OK) return
+    if (k < 1) then
+      status = self%unrecorded('get_warning', FRICREG_EINVAL)
+      return
+    end if
+    status = self%unrecorded('get_warning', fricreg_structure_get_warning(self%ptr, &
+                             int(k - 1, c_size_t), code, len=0_c_size_t))
+    if (status == FRICREG_OK) &
+      message = fricreg_c_string(fricreg_structure_warning_message(self%ptr, int(k - 1, c_size_t)))
+  end function struct_get_warning
 
   ! ---- Harmonic balance (fricreg_hb.h) -----------------------------------------------------
 

@@ -77,6 +77,35 @@ enum fricreg_status {
  *  "unknown fricreg status code". Thread safe. */
 FRICREG_API const char *fricreg_strerror(int status);
 
+/* ---- Warnings ---------------------------------------------------------------------------- */
+
+/** Warning codes: what an object's checks of plausibility found (fricreg_structure_warning_count
+ *  and its kin). A warning is not a failure: the call that ran returned FRICREG_OK, its
+ *  results are what the library computed, and no warning changes any result (as CVODE's
+ *  warnings through its handler and GSL's status-only convention: the library reports, the
+ *  caller decides). Each warning is a rule of thumb with a documented threshold
+ *  (docs/structural.md, "Warnings"): a sign that a number may be in the wrong units or the
+ *  model or step out of its valid range, not a proof. Values are fixed forever: new codes are
+ *  appended, none is renumbered. Since 1.6 (FRICREG_1.6). */
+enum fricreg_warning {
+    FRICREG_WARN_NONE = 0,            /**< no warning (k out of range) */
+    FRICREG_WARN_EPS_LARGE = 1,       /**< eps above 0.1 x the ground's peak velocity */
+    FRICREG_WARN_EPS_SMALL = 2,       /**< eps below 1e-9 x the ground's peak velocity */
+    FRICREG_WARN_EPS_SPEED = 3,       /**< no contact slid faster than 10 eps in the run */
+    FRICREG_WARN_GROUND_PEAK = 4,     /**< ground record's peak outside 0.05 g .. 5 g */
+    FRICREG_WARN_BOUND_SCALE = 5,     /**< mun_i W_ii outside 1e-3 g .. 10 g */
+    FRICREG_WARN_DT_COARSE = 6,       /**< dt above a tenth of the fundamental period */
+    FRICREG_WARN_NEWTON_FAILURES = 7, /**< steps whose Newton iteration did not converge */
+    FRICREG_WARN_NEWTON_SLOW = 8,     /**< more than 5 Newton iterations per step on average */
+    FRICREG_WARN_ENERGY = 9           /**< energy balance's residual above 1e-6 of its scale */
+};
+
+/** Short fixed name of a warning code (enum fricreg_warning), e.g. "eps_large" for
+ *  FRICREG_WARN_EPS_LARGE: lower case, the enumerator's name without its prefix, for
+ *  machine-read output (fricreg-sim's JSON). Never NULL; static storage; an unknown code
+ *  gives "unknown". Thread safe. Since 1.6 (FRICREG_1.6). */
+FRICREG_API const char *fricreg_warning_name(int code);
+
 /* ---- Compressed sparse matrices ---------------------------------------------------------- */
 
 /** How a compressed sparse matrix is given to the _csr and _csc setters (since 1.6). Values

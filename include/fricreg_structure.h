@@ -452,14 +452,18 @@ FRICREG_API int fricreg_structure_get_dissipation(const fricreg_structure *s, si
  *  Newmark makes the residual vanish to Newton's tolerance (its discrete balance is exact);
  *  HHT-alpha's numerical damping shows in it. */
 enum fricreg_structure_value {
-    FRICREG_SVALUE_TIME = 0,     /**< time reached */
-    FRICREG_SVALUE_INPUT = 1,    /**< work of p - M r a_g since t = 0 */
-    FRICREG_SVALUE_KINETIC = 2,  /**< kinetic energy now */
-    FRICREG_SVALUE_STRAIN = 3,   /**< strain energy now */
-    FRICREG_SVALUE_VISCOUS = 4,  /**< energy dissipated by C since t = 0 */
-    FRICREG_SVALUE_FRICTION = 5, /**< energy dissipated by all contacts since t = 0 */
-    FRICREG_SVALUE_RESIDUAL = 6, /**< the balance's residual */
-    FRICREG_SVALUE_INITIAL = 7   /**< kinetic + strain energy at t = 0 */
+    FRICREG_SVALUE_TIME = 0,      /**< time reached */
+    FRICREG_SVALUE_INPUT = 1,     /**< work of p - M r a_g since t = 0 */
+    FRICREG_SVALUE_KINETIC = 2,   /**< kinetic energy now */
+    FRICREG_SVALUE_STRAIN = 3,    /**< strain energy now */
+    FRICREG_SVALUE_VISCOUS = 4,   /**< energy dissipated by C since t = 0 */
+    FRICREG_SVALUE_FRICTION = 5,  /**< energy dissipated by all contacts since t = 0 */
+    FRICREG_SVALUE_RESIDUAL = 6,  /**< the balance's residual */
+    FRICREG_SVALUE_INITIAL = 7,   /**< kinetic + strain energy at t = 0 */
+    FRICREG_SVALUE_GROUND_PGV = 8 /**< the ground record's peak velocity max |integral of a_g
+                                       dt| (trapezoidal from the record's start; 0 without a
+                                       record): the scale of fricreg-sim's default eps and of
+                                       the eps warnings (since 1.6) */
 };
 
 /** Read one quantity (enum fricreg_structure_value) into *value.
@@ -491,6 +495,53 @@ FRICREG_API const char *fricreg_structure_errmsg(const fricreg_structure *s);
  *  Fortran). Returns the full message length, as snprintf does; 0 and nothing written if buf
  *  is NULL or len is 0. */
 FRICREG_API size_t fricreg_structure_errmsg_copy(const fricreg_structure *s, char *buf, size_t len);
+
+/** Judge the structure's checks of plausibility now and return how many warnings they raise
+ *  (0 to 16; each code of enum fricreg_warning at most once), to be read with
+ *  fricreg_structure_get_warning. The checks read the model in force, its excitation and the
+ *  run since fricreg_structure_set_initial (or creation); the list is emptied and judged anew
+ *  at each call, so it follows every change of model, law or record, and it is never printed.
+ *  No check changes a result, the state, the counters or the last error (a warning is not a
+ *  failure: the calls that ran returned FRICREG_OK). Units are SI (kg, N, m, s: the header's
+ *  example), thresholds from docs/structural.md, "Warnings":
+ *  - FRICREG_WARN_GROUND_PEAK: the ground record's peak |a_g| outside 0.05 g .. 5 g
+ *    (g = 9.80665 m/s^2): a record in g or in cm/s^2.
+ *  - FRICREG_WARN_EPS_LARGE, FRICREG_WARN_EPS_SMALL: with a ground record and r != 0, eps
+ *    above 0.1 or below 1e-9 times the peak ground velocity |integral of a_g dt|
+ *    (trapezoidal from the record's start): eps in mm/s, or a near-jump Newton cannot follow.
+ *  - FRICREG_WARN_EPS_SPEED: after a step, no contact's |zdot_i| at a step's end exceeded
+ *    10 eps: the law never left its regularized band (the contacts held throughout, or eps,
+ *    the excitation or the bounds are in the wrong units).
+ *  - FRICREG_WARN_BOUND_SCALE: after a step, a contact with mun_i > 0 whose mun_i W_ii (the
+ *    acceleration its bound gives its effective mass 1/W_ii) is outside 1e-3 g .. 10 g.
+ *  - FRICREG_WARN_DT_COARSE: after a fixed step (step, run, run_ode's fixed), the longest dt
+ *    above a tenth of the fundamental period 2 pi/omega_1 (omega_1^2 the smallest positive
+ *    eigenvalue of M^-1 K, computed here once per model up to 2048 degrees of freedom, O(ndof^3)
+ *    and an allocation; not judged beyond).
+ *  - FRICREG_WARN_NEWTON_FAILURES: a step ended without Newton's convergence
+ *    (FRICREG_SSTAT_NEWTON_FAILURES > 0); FRICREG_WARN_NEWTON_SLOW: more than 5 iterations per
+ *    step on average.
+ *  - FRICREG_WARN_ENERGY: when every step since set_initial was average-acceleration Newmark
+ *    (whose discrete balance is exact), |FRICREG_SVALUE_RESIDUAL| above 1e-6 of
+ *    |initial| + |input|.
+ *  Called from the observer during a run, it judges nothing and returns the list as it was.
+ *  Returns the number of warnings; 0 if s is NULL. Since 1.6 (FRICREG_1.6). */
+FRICREG_API size_t fricreg_structure_warning_count(fricreg_structure *s);
+
+/** Read warning k, 0 <= k < fricreg_structure_warning_count(s): its code (enum
+ *  fricreg_warning) into *code and its message (English, one line, under 256 characters, SI
+ *  units, the numbers that raised it) into buf[len], NUL-terminated and truncated to fit as
+ *  fricreg_structure_errmsg_copy (nothing written if buf is NULL or len is 0; for Fortran).
+ *  Warnings are listed in a fixed order of checks. The list is the last
+ *  fricreg_structure_warning_count's. Returns FRICREG_OK; FRICREG_ENULL if s or code is NULL;
+ *  FRICREG_EINVAL if k is not below the count (nothing written). Since 1.6 (FRICREG_1.6). */
+FRICREG_API int fricreg_structure_get_warning(const fricreg_structure *s, size_t k, int *code,
+                                              char *buf, size_t len);
+
+/** Message of warning k of the last fricreg_structure_warning_count, as
+ *  fricreg_structure_get_warning writes it; "" if s is NULL or k is not below the count. Owned
+ *  by s, valid until its next warning_count call. Since 1.6 (FRICREG_1.6). */
+FRICREG_API const char *fricreg_structure_warning_message(const fricreg_structure *s, size_t k);
 
 /** \} */
 

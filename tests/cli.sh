@@ -163,6 +163,24 @@ block="structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --m
 expect_output '"x": \[-1\.95438123028[34][0-9]*\]' $block --integrator newmark --dt 0.01
 expect_output '"dissipation_per_contact": \[9\.4396613422[67][0-9]*\]' $block --integrator newmark --dt 0.01
 expect_output '"peak_displacement": \[1\.95438123028[34][0-9]*\]' $block --integrator hht --alpha -0.1 --dt 0.01
+# Warnings (fricreg_structure_warning_count, docs/structural.md "Warnings"): the block in SI
+# units raises none (record peak 2.41 m/s^2 = 0.246 g inside 0.05 g .. 5 g; eps = 1e-6 m/s
+# inside 1e-9 .. 0.1 of the ground's peak velocity 12.05 m/s; mu N/m = 1.52 m/s^2 = 0.155 g
+# inside 1e-3 g .. 10 g; the block slides at up to 1.86 m/s > 10 eps; K = 0: no fundamental
+# period); the same record typed in g (2.41/9.81 = 0.2457, below 0.05 g = 0.49 m/s^2) raises
+# ground_peak, once on stderr and in the JSON, and the exit status stays 0.
+total=$((total + 1))
+if ! "$sim" $block --integrator newmark --dt 0.01 >"$tmp/out" 2>"$tmp/err" || [ -s "$tmp/err" ] ||
+   ! grep -q '"warnings": \[\]}$' "$tmp/out"; then
+    echo "FAIL: structure in SI units: warnings: $(cat "$tmp/err") $(tail -c 200 "$tmp/out")"; fails=$((fails + 1))
+fi
+printf '# t a_g (in g: a unit mistake)\n0 0.2457\n5 0.2457\n' >"$d/ag_g.txt"
+total=$((total + 1))
+if ! "$sim" structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_g.txt --eps 1e-6 --t-end 2.1 --integrator newmark --dt 0.01 >"$tmp/out" 2>"$tmp/err" ||
+   [ "$(grep -c '^fricreg-sim: warning: the ground acceleration record peaks at 0.2457 m/s^2' "$tmp/err")" -ne 1 ] ||
+   ! grep -q '"warnings": \[{"code": "ground_peak", "message": "the ground acceleration record peaks at 0.2457 m/s^2' "$tmp/out"; then
+    echo "FAIL: structure with a record in g: stderr $(cat "$tmp/err"), $(tail -c 300 "$tmp/out")"; fails=$((fails + 1))
+fi
 expect_output '"x": \[-1\.95438123028[34][0-9]*\]' structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_const.txt --eps 0.01 --t-end 2.1 --integrator rk4 --dt 0.005
 expect_output '"x": \[-1\.95438123028[34][0-9]*\]' structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_const.txt --eps 0.01 --t-end 2.1 --integrator central --dt 0.002
 # A record's subnormal sample (a ground acceleration of 1e-310 at t = 5, after the run's end)

@@ -652,6 +652,15 @@ static int w_st_get_stat(void)
 {
     return fricreg_structure_get_stat(ST(), N(0, FRICREG_SSTAT_STEPS), (int64_t *)O(1));
 }
+/* A warning to read: a ground record typed in g (peak 0.2457 < 0.05 g, FRICREG_WARN_GROUND_PEAK,
+ * the only one: no step taken). */
+static int w_st_get_warning(void)
+{
+    const double ag[2] = {0.2457, 0.2457};
+    fricreg_structure_set_ground_accel(FX_->st, 0.0, 0.01, 2, ag);
+    fricreg_structure_warning_count(FX_->st);
+    return fricreg_structure_get_warning(ST(), C(0, 0), (int *)O(1), (char *)O(2), 64);
+}
 
 /* the functions the first matrix missed */
 static int w_ctx_set_keep_tangent(void)
@@ -1542,6 +1551,11 @@ static const struct row rows[] = {
      "0i",
      NONE,
      {HANDLE, INT(0, "ioii"), PTR(1, "0")}},
+    {"fricreg_structure_get_warning",
+     w_st_get_warning,
+     "0i",
+     NONE,
+     {HANDLE, COUNT(0, "oiii"), PTR(1, "0"), PTR(2, "o")}},
 };
 
 /* ---- Running the table -------------------------------------------------------------------- */
@@ -2344,8 +2358,8 @@ START_TEST(edges_of_documented_ranges)
         {"structure_run_ode integrator known", e_st_run, 1, FRICREG_INT_RK4_GSL,
          FRICREG_INT_CENTRAL_IMEX + 1, 'i', ST_REC},
         {"structure_run_ode rk4imp: K semidefinite", e_st_run, 2, 0.0, 1.0, 'i', ST_REC},
-        {"structure_get_value <= initial", e_st_run, 3, FRICREG_SVALUE_INITIAL,
-         FRICREG_SVALUE_INITIAL + 1, 'i', NONE},
+        {"structure_get_value <= ground_pgv", e_st_run, 3, FRICREG_SVALUE_GROUND_PGV,
+         FRICREG_SVALUE_GROUND_PGV + 1, 'i', NONE},
         {"structure_get_stat <= line-search cuts", e_st_run, 4, FRICREG_SSTAT_LINE_SEARCH_CUTS,
          FRICREG_SSTAT_LINE_SEARCH_CUTS + 1, 'i', NONE},
     };
@@ -2418,6 +2432,11 @@ START_TEST(non_status_functions)
     ck_assert_int_eq(fricreg_structure_errcode(NULL), FRICREG_OK);
     ck_assert_str_eq(fricreg_structure_errmsg(NULL), "NULL structure");
     fricreg_structure_free(NULL);
+    ck_assert_uint_eq(fricreg_structure_warning_count(NULL), 0);
+    ck_assert_str_eq(fricreg_structure_warning_message(NULL, 0), "");
+    ck_assert_str_eq(fricreg_warning_name(-1), "unknown");
+    ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_ENERGY + 1), "unknown");
+    ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_EPS_LARGE), "eps_large");
 
     /* errmsg_copy: buf NULL or len 0 gives 0 and writes nothing; a short buffer is truncated
      * and NUL-terminated; the full length is returned ("NULL context" is 12 characters). */

@@ -14,7 +14,7 @@ mkdir -p "$dir" && "$make_building" "$dir" || exit 1
     "$@" >"$dir/summary.json" || exit 1
 cat "$dir/summary.json"
 # peak roof displacement (m), damper energy (J), Newton mean and max, failures, residual/input
-sed -e 's/.*"peak_displacement": \[[^]]*, \([^],]*\)\].*"dissipation_per_contact": \[\([^]]*\)\].*"input": \([^,]*\),.*"residual": \([^}]*\)}, "newton_iterations": {"mean": \([^,]*\), "max": \([^}]*\)}, "newton_failures": \([0-9]*\), "cpu_seconds": \([^}]*\)}.*/\1 \2 \3 \4 \5 \6 \7 \8/' \
+sed -e 's/.*"peak_displacement": \[[^]]*, \([^],]*\)\].*"dissipation_per_contact": \[\([^]]*\)\].*"input": \([^,]*\),.*"residual": \([^}]*\)}, "newton_iterations": {"mean": \([^,]*\), "max": \([^}]*\)}, "newton_failures": \([0-9]*\), "cpu_seconds": \([0-9.]*\).*/\1 \2 \3 \4 \5 \6 \7 \8/' \
     "$dir/summary.json" | tr -d , | awk '{ D = 0; for (i = 2; i <= 11; i++) D += $i
     printf "roof %.7f m, dampers %.6e J, Newton %.3f/%d, failures %d, residual/input %.2e, cpu %.3f s\n",
            $1, D, $14, $15, $16, $13 / $12, $17 }'

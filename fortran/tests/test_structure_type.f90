@@ -9,6 +9,7 @@
 !     (the thin layer): every number equal bit for bit, the same calls reaching the same C;
 !   - its failures: sizes checked in Fortran (FRICREG_ESIZE naming the array, nothing
 !     written), an object not created (FRICREG_ENULL), C's own refusals with C's message;
+!   - its warnings (warning_count, get_warning): a ground record typed in g raises ground_peak;
 !   - an observer (a bind(C) function with interface fricreg_structure_observer) that stops
 !     the run after 10 of its 100 steps, and the bound on run_ode's adaptive steps.
 module step_watch
@@ -53,7 +54,10 @@ program test_structure_type
   integer(c_int64_t) :: count
   integer(c_int), target :: calls
   real(c_double) :: t_now
-  integer :: i
+  integer :: i, nwarn
+  integer(c_int) :: wcode
+  character(len=:), allocatable :: wmsg
+  logical :: found
 
   ! ---- The static load: J(i, k) = d zdot_i / d u'_k, ground slip and inter-storey slip ----
   M2 = reshape([1.7_c_double, 0.0_c_double, 0.0_c_double, 0.9_c_double], [2, 2])
@@ -101,6 +105,23 @@ program test_structure_type
   p = [0.12_c_double, -0.07_c_double, 0.05_c_double]
   ag = [(3.1_c_double * sin(0.0617_c_double * i) * sin(0.0047_c_double * i), i = 1, 200)]
   g = [(cos(0.21_c_double * i), i = 1, 50)]
+  ! ---- Warnings: a ground record typed in g (peak 0.2457, below 0.05 g = 0.49 m/s^2) --------
+  call check_status(st%set_ground_accel([0.2457_c_double, 0.2457_c_double], 0.01_c_double), &
+                    FRICREG_OK, 'a ground record in g')
+  nwarn = st%warning_count()
+  call check(nwarn >= 1, 'the record in g raises a warning')
+  found = .false.
+  do i = 1, nwarn
+    call check_status(st%get_warning(i, wcode, wmsg), FRICREG_OK, 'get_warning')
+    call check(len(wmsg) > 0, 'a message')
+    if (wcode == FRICREG_WARN_GROUND_PEAK) found = index(wmsg, '0.2457 m/s^2') > 0
+  end do
+  call check(found, 'ground_peak, naming the peak')
+  call check(fricreg_warning_string(FRICREG_WARN_GROUND_PEAK) == 'ground_peak', 'its name')
+  call check_status(st%get_warning(0, wcode, wmsg), FRICREG_EINVAL, 'get_warning(0)')
+  call check(wcode == FRICREG_WARN_NONE .and. len(wmsg) == 0, 'no warning 0')
+  call check_status(st%get_warning(nwarn + 1, wcode, wmsg), FRICREG_EINVAL, 'beyond the count')
+
   call check_status(st%create(3, 2), FRICREG_OK, 'create 3, 2 (replaces the first)')
   call check(st%ndof() == 3 .and. st%ncontacts() == 2, 'ndof 3, ncontacts 2')
   call check_status(st%set_mass(M), FRICREG_OK, 'set_mass 3')

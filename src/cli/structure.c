@@ -113,15 +113,13 @@ int cli_parse_structure(int argc, char **argv, struct structure_options *o)
 
 /* ---- Setting up the structure ------------------------------------------------------------ */
 
-/* The default eps, 1 % of the ground's peak velocity |integral of a_g| (a velocity scale known
- * before the run; docs/structural.md, "Choosing eps"), or the library's 1e-3 without motion. */
-static double default_eps(const struct structure_input *in)
+/* The default eps, 1 % of the ground's peak velocity |integral of a_g| as the library computes
+ * it for its warnings (a velocity scale known before the run; docs/structural.md, "Choosing
+ * eps"), or the library's 1e-3 without motion. */
+static double default_eps(const fricreg_structure *s)
 {
-    double v = 0.0, peak = 0.0;
-    for (size_t k = 1; k < in->nrec; k++) {
-        v += 0.5 * (in->ag[k - 1] + in->ag[k]) * in->dt_rec;
-        peak = fmax(peak, fabs(v));
-    }
+    double peak = 0.0;
+    fricreg_structure_get_value(s, FRICREG_SVALUE_GROUND_PGV, &peak);
     return peak > 0.0 ? 0.01 * peak : 1e-3;
 }
 
@@ -141,7 +139,7 @@ static int setup(const struct structure_options *o, const struct structure_input
     int status = cli_set_model(o, in, s);
     if (status != 0)
         return status;
-    *eps = o->eps > 0.0 ? o->eps : default_eps(in);
+    *eps = o->eps > 0.0 ? o->eps : default_eps(s);
     if (fricreg_structure_set_law(s, o->law, *eps) != FRICREG_OK)
         return cli_usage_error("--eps", fricreg_structure_errmsg(s));
     return set_scheme(s, o);
@@ -254,6 +252,49 @@ static void json_array(FILE *out, const char *name, size_t n, const double a[])
     fputc(']', out);
 }
 
+/* A JSON string: the library's messages are plain text, but quotes, backslashes and control
+ * characters are escaped all the same. */
+static void json_string(FILE *out, const char *text)
+{
+    fputc('"', out);
+    for (const unsigned char *c = (const unsigned char *)text; *c; c++) {
+        if (*c == '"' || *c == '\\')
+            fprintf(out, "\\%c", *c);
+        else if (*c < 0x20)
+            fprintf(out, "\\u%04x", *c);
+        else
+            fputc(*c, out);
+    }
+    fputc('"', out);
+}
+
+/* The library's warnings on the structure and its run (fricreg_structure_warning_count, judged
+ * by the caller after the run), as "warnings": [{"code": ..., "message": ...}, ...]. */
+static void json_warnings(FILE *out, const fricreg_structure *s, size_t count)
+{
+    fputs(", \"warnings\": [", out);
+    for (size_t k = 0; k < count; k++) {
+        int code = FRICREG_WARN_NONE;
+        char message[256];
+        fricreg_structure_get_warning(s, k, &code, message, sizeof message);
+        fprintf(out, "%s{\"code\": ", k ? ", " : "");
+        json_string(out, fricreg_warning_name(code));
+        fputs(", \"message\": ", out);
+        json_string(out, message);
+        fputc('}', out);
+    }
+    fputc(']', out);
+}
+
+/* Each warning once on stderr; the exit status stays the run's. */
+static size_t print_warnings(fricreg_structure *s)
+{
+    size_t count = fricreg_structure_warning_count(s);
+    for (size_t k = 0; k < count; k++)
+        fprintf(stderr, "fricreg-sim: warning: %s\n", fricreg_structure_warning_message(s, k));
+    return count;
+}
+
 static const char *scheme_name(const struct structure_options *o)
 {
     static const char *const names[] = {"", "newmark", "hht", "central"};
@@ -262,7 +303,8 @@ static const char *scheme_name(const struct structure_options *o)
 
 static void write_summary(FILE *out, const struct structure_options *o,
                           const struct structure_input *in, const fricreg_structure *s,
-                          const struct structure_run *run, double eps, double cpu_seconds)
+                          const struct structure_run *run, double eps, double cpu_seconds,
+                          size_t nwarnings)
 {
     int64_t steps = sstat(s, FRICREG_SSTAT_STEPS);
     double *D = run->f; /* the forces are not needed any more */
@@ -293,10 +335,12 @@ static void write_summary(FILE *out, const struct structure_options *o,
     int64_t iterations = sstat(s, FRICREG_SSTAT_NEWTON_ITERATIONS);
     fprintf(out,
             ", \"newton_iterations\": {\"mean\": %.17g, \"max\": %lld}, "
-            "\"newton_failures\": %lld, \"cpu_seconds\": %.6f}\n",
+            "\"newton_failures\": %lld, \"cpu_seconds\": %.6f",
             steps > 0 ? (double)iterations / (double)steps : 0.0,
             (long long)sstat(s, FRICREG_SSTAT_NEWTON_MAX),
             (long long)sstat(s, FRICREG_SSTAT_NEWTON_FAILURES), cpu_seconds);
+    json_warnings(out, s, nwarnings);
+    fputs("}\n", out);
 }
 
 /* A refused step size is a bad --dt (exit 2); any other failure of the run exits 1. */
@@ -350,12 +394,13 @@ static int run_structure(fricreg_structure *s, const struct structure_options *o
     clock_t start = clock();
     int status = advance(s, o, in, &run);
     double cpu_seconds = (double)(clock() - start) / CLOCKS_PER_SEC;
+    size_t nwarnings = print_warnings(s);
     if (status != FRICREG_OK)
         status = run_failed(s, status);
     else if (run.rows != NULL)
         copy_stream(run.rows, out);
     else
-        write_summary(out, o, in, s, &run, eps, cpu_seconds);
+        write_summary(out, o, in, s, &run, eps, cpu_seconds, nwarnings);
     if (run.rows != NULL)
         fclose(run.rows);
     free(buf);

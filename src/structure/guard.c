@@ -47,9 +47,10 @@ static void congruence(fricreg_structure *s, const cholmod_sparse *X, struct fr_
  * -STABLE_RTOL times the largest magnitude (X positive semidefinite to rounding: a rigid-body
  * mode of K gives an eigenvalue of order 1e-16 of either sign). Where the matrix overflows
  * (K near DBL_MAX, or a mass far below K's scale), *max is +Inf (no fixed explicit step is
- * stable) and stability is not known: 0. By fr_eigen_solve, whose scaling keeps GSL's
+ * stable) and stability is not known: 0. The smallest eigenvalue above 1e-8 of the largest
+ * into *min (0 if none: a rigid-body mode's rounding is of order 1e-16 of it). By fr_eigen_solve, whose scaling keeps GSL's
  * iteration from looping on such a matrix (fuzz finding). -1: no memory. */
-static int exact_rate(fricreg_structure *s, const cholmod_sparse *X, double *max)
+static int exact_rate(fricreg_structure *s, const cholmod_sparse *X, double *max, double *min)
 {
     struct fr_eigen e;
     if (fr_eigen_alloc(&e, s->n) != 0)
@@ -65,6 +66,10 @@ static int exact_rate(fricreg_structure *s, const cholmod_sparse *X, double *max
         }
         *max = fmax(hi, 0.0);
         psd = !(lo < -STABLE_RTOL * fmax(fabs(lo), fabs(hi)));
+        *min = 0.0;
+        for (size_t k = 0; k < s->n; k++)
+            if (e.eval[k] > 1e-8 * *max && (*min == 0.0 || e.eval[k] < *min))
+                *min = e.eval[k];
     }
     fr_eigen_free(&e);
     return psd;
@@ -121,11 +126,11 @@ int fr_structure_rates(fricreg_structure *s, const char *who)
 {
     if (s->omega_valid)
         return FRICREG_OK;
-    double omega2 = 0.0;
+    double omega2 = 0.0, omega2_min = 0.0, unused = 0.0;
     int stiff_psd, damp_psd;
     if (s->n <= DENSE_RATES_MAX) {
-        stiff_psd = exact_rate(s, s->K, &omega2);
-        damp_psd = exact_rate(s, s->Cd, &s->damping_max);
+        stiff_psd = exact_rate(s, s->K, &omega2, &omega2_min);
+        damp_psd = exact_rate(s, s->Cd, &s->damping_max, &unused);
         if (stiff_psd < 0 || damp_psd < 0)
             return fr_fail(s, FRICREG_ENOMEM, "%s: no memory for the model's eigenvalues", who);
     } else {
@@ -133,6 +138,7 @@ int fr_structure_rates(fricreg_structure *s, const char *who)
         damp_psd = bound_rate(s, s->Cd, &s->damping_max);
     }
     s->omega_max = sqrt(omega2);
+    s->omega_min = sqrt(omega2_min); /* 0 beyond DENSE_RATES_MAX: not known */
     s->stable = stiff_psd && damp_psd;
     s->omega_valid = 1;
     return FRICREG_OK;

@@ -147,6 +147,7 @@ static int step_to(fricreg_structure *s, double t1)
         s->stats[FRICREG_SSTAT_NEWTON_MAX] = iters;
     if (!converged)
         s->stats[FRICREG_SSTAT_NEWTON_FAILURES]++;
+    fr_warn_track_step(s, dt, 0);
     return FRICREG_OK;
 }
 

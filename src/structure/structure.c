@@ -320,6 +320,7 @@ int fricreg_structure_set_initial(fricreg_structure *s, size_t ndof, const doubl
     s->fresh = 1;
     fr_energy_reset(s);
     memset(s->stats, 0, sizeof s->stats);
+    fr_warn_track_reset(s);
     return FRICREG_OK;
 }
 
@@ -475,6 +476,7 @@ int fricreg_structure_get_value(const fricreg_structure *s, int which, double *v
         *value = e->initial + e->input - kinetic - strain - e->viscous - e->friction;
         break;
     case FRICREG_SVALUE_INITIAL: *value = e->initial; break;
+    case FRICREG_SVALUE_GROUND_PGV: *value = fr_ground_pgv(s); break;
     default: return FRICREG_EINVAL;
     }
     return FRICREG_OK;

@@ -13,6 +13,7 @@
 #include <gsl/gsl_vector.h>
 
 #include "base/error.h"
+#include "base/warning.h"
 #include "contact_factor.h"
 #include "fricreg_structure.h"
 #include "newton_matrix.h"
@@ -80,6 +81,7 @@ struct fricreg_structure {
     int omega_valid;    /* the step guard: omega_max, damping_max are current (reset by prepare) */
     double omega_max;   /* sqrt of the largest eigenvalue of M^-1 K (a bound for large models) */
     double damping_max; /* the largest eigenvalue of M^-1 C (a bound for large models) */
+    double omega_min;   /* sqrt of the smallest positive eigenvalue of M^-1 K (0: not known) */
     int stable;         /* K and C positive semidefinite (to rounding; large models: shown so) */
     int stick_valid;    /* the step guard: stick_rate is current (reset at equilibrium) */
     double stick_rate; /* lambda * eps (fr_stiffness_times_eps): the chord's for a law that jumps */
@@ -114,6 +116,13 @@ struct fricreg_structure {
     struct fr_energy energy;
     int64_t stats[FR_NSSTATS];
     struct fr_error err;
+
+    /* The checks of plausibility (warnings.c): the list as last judged, and what the run
+     * since set_initial showed them (reset by set_initial). */
+    struct fr_warnings warnings;
+    double peak_speed;     /* the largest |zdot_i| = |(J v)_i| at a step's end */
+    double max_dt;         /* the longest fixed step (run_ode's adaptive ones aside) */
+    int64_t inexact_steps; /* steps of a scheme whose energy balance is not exact */
 };
 
 /* structure.c */
@@ -190,6 +199,14 @@ int fr_structure_stable(const fricreg_structure *s);
 double fr_structure_newton_rate(const fricreg_structure *s);
 int fr_structure_guard(fricreg_structure *s, const struct fr_integrator *integ, double dt,
                        const char *who);
+
+/* warnings.c: what a step of length dt (0: an adaptive one) shows the checks, ode for one of
+ * run_ode's (GSL's schemes: their energy balance is not exact); reset with the run
+ * (set_initial). */
+void fr_warn_track_step(fricreg_structure *s, double dt, int ode);
+void fr_warn_track_reset(fricreg_structure *s);
+/* The ground record's peak velocity max |integral of a_g dt| (trapezoidal; 0 without one). */
+double fr_ground_pgv(const fricreg_structure *s);
 
 /* energy.c */
 void fr_energy_reset(fricreg_structure *s);

@@ -184,6 +184,7 @@ static int integrate(fricreg_structure *s, struct ode_run *run, gsl_odeiv2_drive
         }
         s->t = t;
         s->stats[FRICREG_SSTAT_STEPS] += adaptive ? 1 : integ->substeps;
+        fr_warn_track_step(s, adaptive ? 0.0 : dt, 1); /* a fixed step's length: dt_coarse */
         if (s->observer != NULL && rhs(t, y, run->jac_work, run) == GSL_SUCCESS &&
             fr_structure_observe(s, t, y, y + s->n, s->f1->data))
             break; /* the observer asked to stop (its forces at (t, y)): not an error */

@@ -1,0 +1,45 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* warning.c — the warning codes' names, and an object's list of warnings (warning.h). */
+#include <stdarg.h>
+#include <stdio.h>
+
+#include "fricreg.h"
+#include "warning.h"
+
+const char *fricreg_warning_name(int code)
+{
+    static const char *const names[] = {
+        [FRICREG_WARN_NONE] = "none",
+        [FRICREG_WARN_EPS_LARGE] = "eps_large",
+        [FRICREG_WARN_EPS_SMALL] = "eps_small",
+        [FRICREG_WARN_EPS_SPEED] = "eps_speed",
+        [FRICREG_WARN_GROUND_PEAK] = "ground_peak",
+        [FRICREG_WARN_BOUND_SCALE] = "bound_scale",
+        [FRICREG_WARN_DT_COARSE] = "dt_coarse",
+        [FRICREG_WARN_NEWTON_FAILURES] = "newton_failures",
+        [FRICREG_WARN_NEWTON_SLOW] = "newton_slow",
+        [FRICREG_WARN_ENERGY] = "energy",
+    };
+    if (code < 0 || (size_t)code >= sizeof names / sizeof names[0] || names[code] == NULL)
+        return "unknown";
+    return names[code];
+}
+
+void fr_warnings_clear(struct fr_warnings *list)
+{
+    list->n = 0;
+}
+
+void fr_warn(struct fr_warnings *list, int code, const char *fmt, ...)
+{
+    for (size_t k = 0; k < list->n; k++)
+        if (list->w[k].code == code)
+            return;
+    if (list->n == FR_WARN_MAX)
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(list->w[list->n].msg, sizeof list->w[list->n].msg, fmt, ap);
+    va_end(ap);
+    list->w[list->n++].code = code;
+}

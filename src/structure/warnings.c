@@ -1,0 +1,240 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* warnings.c — the structure's checks of plausibility (fricreg_structure_warning_count): the
+ * model, its excitation and the run so far judged against physical scales in SI units, each
+ * check one function with its threshold and its reason (docs/structural.md, "Warnings"). A
+ * warning never changes a result: the checks only read. */
+#include <math.h>
+#include <string.h>
+
+#include "base/fr_math.h"
+#include "ctx/ctx_driver.h"
+#include "structure_internal.h"
+
+/* Standard gravity (m/s^2): the scale of ground accelerations and of a structure's weight. */
+#define G_STANDARD 9.80665
+
+/* A ground record's peak within [0.05 g, 5 g]: a record in g (peak <= ~2, read as m/s^2 below
+ * 0.2 g) is caught when its true peak is below 0.49 g, one in cm/s^2 (Gal) when its true peak
+ * is above 0.05 g; the strongest records measured are about 3-4 g. */
+#define GROUND_PEAK_LO (0.05 * G_STANDARD)
+#define GROUND_PEAK_HI (5.0 * G_STANDARD)
+/* eps against the ground's peak velocity: law (4) approaches Coulomb's as eps / v shrinks, and
+ * slip speeds are of the order of the ground's velocity; fricreg-sim's default is 0.01 PGV. */
+#define EPS_PGV_HI 0.1
+#define EPS_PGV_LO 1e-9
+/* eps against the run's fastest contact: below 10 eps the law is in its regularized band. */
+#define EPS_SPEED_RATIO 10.0
+/* mun_i W_ii, the acceleration the bound gives the contact's effective mass 1/W_ii. */
+#define BOUND_ACCEL_LO (1e-3 * G_STANDARD)
+#define BOUND_ACCEL_HI (10.0 * G_STANDARD)
+/* dt against the fundamental period 2 pi/omega_1: at least 10 steps per period (average
+ * acceleration's period error (omega dt)^2/12 is then 3.3 %). */
+#define STEPS_PER_PERIOD 10.0
+#define NEWTON_MEAN_MAX 5.0
+#define ENERGY_RTOL 1e-6
+
+void fr_warn_track_reset(fricreg_structure *s)
+{
+    s->peak_speed = 0.0;
+    s->max_dt = 0.0;
+    s->inexact_steps = 0;
+}
+
+/* Average-acceleration Newmark: the one scheme whose discrete energy balance is exact. */
+static int balance_exact(const fricreg_structure *s)
+{
+    return s->scheme == FR_SCHEME_NEWMARK && s->alpha == 0.0 && s->beta == 0.25 && s->gamma == 0.5;
+}
+
+void fr_warn_track_step(fricreg_structure *s, double dt, int ode)
+{
+    const SuiteSparse_long *Jp = s->Jt->p, *Ji = s->Jt->i;
+    const double *Jx = s->Jt->x, *v = s->v->data;
+    for (size_t i = 0; i < s->m; i++) { /* zdot_i = (J v)_i: column i of J^T */
+        if (s->mun[i] == 0.0)
+            continue; /* no friction there: its speed says nothing of eps */
+        double z = 0.0;
+        for (SuiteSparse_long p = Jp[i]; p < Jp[i + 1]; p++)
+            z += Jx[p] * v[Ji[p]];
+        s->peak_speed = fmax(s->peak_speed, fabs(z));
+    }
+    s->max_dt = fmax(s->max_dt, dt);
+    if (ode || !balance_exact(s))
+        s->inexact_steps++;
+}
+
+/* The record's peak |a_g| and its peak velocity |integral of a_g| (trapezoidal from 0). */
+static void record_peaks(const struct fr_record *rec, double *pga, double *pgv)
+{
+    double v = 0.0;
+    *pga = rec->n > 0 ? fabs(rec->x[0]) : 0.0;
+    *pgv = 0.0;
+    for (size_t k = 1; k < rec->n; k++) {
+        v += 0.5 * (rec->x[k - 1] + rec->x[k]) * rec->dt;
+        *pga = fmax(*pga, fabs(rec->x[k]));
+        *pgv = fmax(*pgv, fabs(v));
+    }
+}
+
+double fr_ground_pgv(const fricreg_structure *s)
+{
+    double pga, pgv;
+    record_peaks(&s->ground, &pga, &pgv);
+    return pgv;
+}
+
+static int moves_with_ground(const fricreg_structure *s)
+{
+    for (size_t k = 0; k < s->n; k++)
+        if (gsl_vector_get(s->r, k) != 0.0)
+            return 1;
+    return 0;
+}
+
+static void check_ground(fricreg_structure *s)
+{
+    if (s->ground.n < 2)
+        return;
+    double pga, pgv, eps = fr_ctx_eps(s->ctx);
+    record_peaks(&s->ground, &pga, &pgv);
+    if (!(pga >= GROUND_PEAK_LO && pga <= GROUND_PEAK_HI))
+        fr_warn(&s->warnings, FRICREG_WARN_GROUND_PEAK,
+                "the ground acceleration record peaks at %.4g m/s^2 = %.3g g, outside 0.05 g "
+                "to 5 g: is it in m/s^2 (not g or cm/s^2)?",
+                pga, pga / G_STANDARD);
+    if (!moves_with_ground(s) || !(pgv > 0.0))
+        return;
+    if (eps > EPS_PGV_HI * pgv)
+        fr_warn(&s->warnings, FRICREG_WARN_EPS_LARGE,
+                "eps = %.4g m/s is above 0.1 x the ground's peak velocity %.4g m/s: the "
+                "regularized law smears stick and slip; is eps in m/s (not mm/s)?",
+                eps, pgv);
+    else if (eps < EPS_PGV_LO * pgv)
+        fr_warn(&s->warnings, FRICREG_WARN_EPS_SMALL,
+                "eps = %.4g m/s is below 1e-9 x the ground's peak velocity %.4g m/s: the stick "
+                "zone's stiffness 2 mun W/eps makes Newton's steps ill-conditioned",
+                eps, pgv);
+}
+
+/* Judged once the run has lasted a fundamental period (when known): a structure starting from
+ * rest takes that long to reach its speeds. */
+static void check_speed(fricreg_structure *s, double period)
+{
+    double eps = fr_ctx_eps(s->ctx), friction = 0.0;
+    for (size_t i = 0; i < s->m; i++)
+        friction = fmax(friction, s->mun[i]);
+    if (friction > 0.0 && s->stats[FRICREG_SSTAT_STEPS] > 0 && s->t >= period &&
+        s->peak_speed < EPS_SPEED_RATIO * eps)
+        fr_warn(&s->warnings, FRICREG_WARN_EPS_SPEED,
+                "no contact slid faster than 10 eps = %.4g m/s in the run (peak %.4g m/s): "
+                "the law never left its regularized band; either the contacts held throughout "
+                "or eps, the load or the bounds are off (units?)",
+                EPS_SPEED_RATIO * eps, s->peak_speed);
+}
+
+static void check_bounds(fricreg_structure *s)
+{
+    if (!s->prepared)
+        return;
+    const SuiteSparse_long *Wp = s->mass.D->p, *Wi = s->mass.D->i;
+    const double *Wx = s->mass.D->x;
+    for (size_t j = 0; j < s->m; j++)
+        for (SuiteSparse_long p = Wp[j]; p < Wp[j + 1]; p++) {
+            double accel = s->mun[j] * Wx[p];
+            if ((size_t)Wi[p] != j || s->mun[j] == 0.0 ||
+                (accel >= BOUND_ACCEL_LO && accel <= BOUND_ACCEL_HI))
+                continue;
+            fr_warn(&s->warnings, FRICREG_WARN_BOUND_SCALE,
+                    "contact %zu: its bound mun = %.4g N gives its effective mass 1/W_ii = %.4g "
+                    "kg %.3g g, outside 1e-3 g to 10 g: are mun in N and M in kg?",
+                    j, s->mun[j], 1.0 / Wx[p], accel / G_STANDARD);
+            return; /* one message names the first contact */
+        }
+}
+
+/* The fundamental period 2 pi/omega_1 of the model in force, or 0 where it is not known (no
+ * step yet, K without a positive eigenvalue, beyond 2048 degrees of freedom, no memory). */
+static double fundamental_period(fricreg_structure *s)
+{
+    if (!s->prepared)
+        return 0.0;
+    struct fr_error kept = s->err; /* a failure here is no failure of the caller's */
+    int status = fr_structure_rates(s, "warning_count");
+    s->err = kept;
+    return status == FRICREG_OK && s->omega_min > 0.0 ? FR_TWO_PI / s->omega_min : 0.0;
+}
+
+static void check_dt(fricreg_structure *s, double period)
+{
+    if (period > 0.0 && s->max_dt > period / STEPS_PER_PERIOD)
+        fr_warn(&s->warnings, FRICREG_WARN_DT_COARSE,
+                "dt = %.4g s is above a tenth of the fundamental period %.4g s (omega_1 = %.4g "
+                "rad/s): the lowest mode is not resolved; are dt in s, M in kg and K in N/m?",
+                s->max_dt, period, FR_TWO_PI / period);
+}
+
+static void check_newton(fricreg_structure *s)
+{
+    int64_t steps = s->stats[FRICREG_SSTAT_STEPS];
+    int64_t failures = s->stats[FRICREG_SSTAT_NEWTON_FAILURES];
+    if (failures > 0)
+        fr_warn(&s->warnings, FRICREG_WARN_NEWTON_FAILURES,
+                "%lld of %lld steps ended without Newton's convergence, on their last iterate",
+                (long long)failures, (long long)steps);
+    double mean = steps > 0 ? (double)s->stats[FRICREG_SSTAT_NEWTON_ITERATIONS] / steps : 0.0;
+    if (mean > NEWTON_MEAN_MAX)
+        fr_warn(&s->warnings, FRICREG_WARN_NEWTON_SLOW,
+                "%.3g Newton iterations per step on average, above 5: eps is small against dt "
+                "times the contacts' accelerations",
+                mean);
+}
+
+static void check_energy(fricreg_structure *s)
+{
+    if (s->stats[FRICREG_SSTAT_STEPS] == 0 || s->inexact_steps > 0)
+        return;
+    double initial = 0.0, input = 0.0, residual = 0.0;
+    fricreg_structure_get_value(s, FRICREG_SVALUE_INITIAL, &initial);
+    fricreg_structure_get_value(s, FRICREG_SVALUE_INPUT, &input);
+    fricreg_structure_get_value(s, FRICREG_SVALUE_RESIDUAL, &residual);
+    double scale = fabs(initial) + fabs(input);
+    if (fabs(residual) > ENERGY_RTOL * scale)
+        fr_warn(&s->warnings, FRICREG_WARN_ENERGY,
+                "the energy balance's residual %.4g J is above 1e-6 of the initial and input "
+                "energy %.4g J, which average-acceleration Newmark closes to Newton's tolerance",
+                residual, scale);
+}
+
+size_t fricreg_structure_warning_count(fricreg_structure *s)
+{
+    if (s == NULL)
+        return 0;
+    if (s->running)
+        return s->warnings.n; /* from the observer: the list as last judged */
+    fr_warnings_clear(&s->warnings);
+    double period = fundamental_period(s);
+    check_ground(s);
+    check_speed(s, period);
+    check_bounds(s);
+    check_dt(s, period);
+    check_newton(s);
+    check_energy(s);
+    return s->warnings.n;
+}
+
+const char *fricreg_structure_warning_message(const fricreg_structure *s, size_t k)
+{
+    return s != NULL && k < s->warnings.n ? s->warnings.w[k].msg : "";
+}
+
+int fricreg_structure_get_warning(const fricreg_structure *s, size_t k, int *code, char *buf,
+                                  size_t len)
+{
+    if (s == NULL || code == NULL)
+        return FRICREG_ENULL;
+    if (k >= s->warnings.n)
+        return FRICREG_EINVAL;
+    *code = s->warnings.w[k].code;
+    fr_error_copy(s->warnings.w[k].msg, buf, len);
+    return FRICREG_OK;
+}
