@@ -283,7 +283,13 @@ static int start_at(fricreg_structure *s, double dt, const gsl_vector *guess,
  *   W_eff,SS df_S = rhs_S - [W_eff f]_S,
  * so that the guess's products are f's and df's, one product. Into s->ft and its products
  * into s->at_ft; returns 0 if there is none, else 1 (2 for law_exact). Uses s->stopped as the
- * marks of S. */
+ * marks of S, and s->zdot (the start's residual) unless law_exact. */
+/* Law (4) with a diagonal W: the stick guess solves the band's own law (stick_guess). */
+static int law_exact(const fricreg_structure *s)
+{
+    return s->w_diagonal && fr_ctx_law(s->ctx) == FRICREG_LAW_QUINN;
+}
+
 static int stick_guess(fricreg_structure *s)
 {
     size_t m = s->m, k = 0;
@@ -298,8 +304,8 @@ static int stick_guess(fricreg_structure *s)
         return 0;
     double c = (1.0 + s->alpha) * s->gamma * s->step_dt;
     const double *weff_f = s->at_start.weff->data;
-    int law_exact = s->w_diagonal && fr_ctx_law(s->ctx) == FRICREG_LAW_QUINN;
-    if (law_exact) {
+    int exact = law_exact(s);
+    if (exact) {
         const double *w = fr_ctx_coupling_diagonal(s->ctx);
         double two_over_eps = 2.0 / fr_ctx_eps(s->ctx);
         for (size_t i = 0; i < m; i++) {
@@ -317,40 +323,51 @@ static int stick_guess(fricreg_structure *s)
         guess[i] = f[i] + df[i];
     form_products(s, df, &s->at_ft);
     combine_products(&s->at_start, 1.0, &s->at_ft, &s->at_ft);
-    return law_exact ? 2 : 1;
+    return exact ? 2 : 1;
 }
 
 /* Newton from the forces at the step's start or, where they are not within tol, the stick
- * guess if its residual is smaller: returns a status, and *converged and *iters.
+ * guess if its residual is smaller: returns a status, and *converged and *iters. With law (4)
+ * and a diagonal W the guess comes first, before the start's residual: where it is within
+ * tol it is the step's solution (one iteration counted, no more made).
  * On return the context's last evaluation and s->f1 are at fk. Slipping contacts are
  * stopped at zdot = 0 (first_trial). Where a stop ends on a kink of the law (zdot = 0 is the
  * band's edge when |f_eq| >= mun) the line search can stall there: Newton then starts again
  * from the start's forces, without stops, with the iterations left. */
 static int newton(fricreg_structure *s, double dt, int *converged, int *iters)
 {
-    double phi = 0.0, rinf = 0.0;
+    double phi = 0.0, rinf = 0.0, phi_guess = 0.0;
     form_products(s, s->f->data, &s->at_start);
-    int status = start_at(s, dt, s->f, &s->at_start, &phi, &rinf);
-    if (status != FRICREG_OK)
-        return status;
     double tol = s->newton_tol * force_scale(s);
-    int guess = 0, exact = 0;
-    if (rinf > tol && (guess = stick_guess(s)) != 0) {
+    int guess = 0, status;
+    *iters = 0;
+    if (law_exact(s) && (guess = stick_guess(s)) != 0) { /* needs no residual at the start */
+        if ((status = start_at(s, dt, s->ft, &s->at_ft, &phi, &rinf)) != FRICREG_OK)
+            return status;
+        if (rinf <= tol) { /* the law's own solution on its piece: a Newton step, converged */
+            memset(s->stopped, 0, s->m * sizeof *s->stopped);
+            *iters = 1;
+            *converged = 1;
+            return FRICREG_OK;
+        }
+        phi_guess = phi;
+    }
+    if ((status = start_at(s, dt, s->f, &s->at_start, &phi, &rinf)) != FRICREG_OK)
+        return status;
+    if (rinf > tol) { /* Newton from the guess where its residual is the smaller */
         double phi_start = phi;
-        status = start_at(s, dt, s->ft, &s->at_ft, &phi, &rinf);
-        exact = guess == 2 && phi < phi_start && rinf <= tol;
-        if (status == FRICREG_OK && !(phi < phi_start))
-            status = start_at(s, dt, s->f, &s->at_start, &phi, &rinf);
+        if (guess != 0) { /* law_exact's, evaluated above */
+            if (phi_guess < phi_start)
+                status = start_at(s, dt, s->ft, &s->at_ft, &phi, &rinf);
+        } else if (stick_guess(s)) { /* reads the start's residual */
+            status = start_at(s, dt, s->ft, &s->at_ft, &phi, &rinf);
+            if (status == FRICREG_OK && !(phi < phi_start))
+                status = start_at(s, dt, s->f, &s->at_start, &phi, &rinf);
+        }
         if (status != FRICREG_OK)
             return status;
     }
     memset(s->stopped, 0, s->m * sizeof *s->stopped);
-    *iters = 0;
-    if (exact) { /* the law's own solution on its piece: a Newton step, and converged */
-        *iters = 1;
-        *converged = 1;
-        return FRICREG_OK;
-    }
     if ((status = iterate(s, tol, 1, &phi, &rinf, iters)) != FRICREG_OK)
         return status;
     if (rinf > tol && isfinite(phi) && *iters < s->newton_max) {
