@@ -79,8 +79,8 @@ FRICREG_API const char *fricreg_strerror(int status);
 
 /* ---- Warnings ---------------------------------------------------------------------------- */
 
-/** Warning codes: what an object's checks of plausibility found (fricreg_structure_warning_count
- *  and its kin). A warning is not a failure: the call that ran returned FRICREG_OK, its
+/** Warning codes: what an object's checks of plausibility found (fricreg_structure_warning_count,
+ *  fricreg_sim_warning_count and their kin). A warning is not a failure: the call that ran returned FRICREG_OK, its
  *  results are what the library computed, and no warning changes any result (as CVODE's
  *  warnings through its handler and GSL's status-only convention: the library reports, the
  *  caller decides). Each warning is a rule of thumb with a documented threshold
@@ -97,7 +97,8 @@ enum fricreg_warning {
     FRICREG_WARN_DT_COARSE = 6,       /**< dt above a tenth of the fundamental period */
     FRICREG_WARN_NEWTON_FAILURES = 7, /**< steps whose Newton iteration did not converge */
     FRICREG_WARN_NEWTON_SLOW = 8,     /**< more than 5 Newton iterations per step on average */
-    FRICREG_WARN_ENERGY = 9           /**< energy balance's residual above 1e-6 of its scale */
+    FRICREG_WARN_ENERGY = 9,          /**< energy balance's residual above 1e-6 of its scale */
+    FRICREG_WARN_TOL_LOOSE = 10       /**< adaptive velocity tolerance above 0.01 eps */
 };
 
 /** Short fixed name of a warning code (enum fricreg_warning), e.g. "eps_large" for

@@ -511,6 +511,34 @@ FRICREG_API int fricreg_sim_get_extrapolation(const fricreg_sim *sim, int which,
 FRICREG_API int fricreg_sim_get_extrapolated_dissipation(const fricreg_sim *sim, size_t ncycles,
                                                          double D[], double err[]);
 
+/** Judge the simulation's checks of plausibility now and return how many warnings they raise
+ *  (enum fricreg_warning of fricreg.h; none changes a result). One check so far:
+ *  - FRICREG_WARN_TOL_LOOSE: an adaptive run whose velocities are held to more than 0.01 eps,
+ *    the level atol_v + rtol x 1 (velocities of order 1 in the paper's nondimensional
+ *    systems; atol_v the caller's scalar or per-component velocity tolerance). Law (4) reads
+ *    a contact velocity within its band |zdot| < eps: measured on the two blocks at eps = 1e-6
+ *    under msbdf, a level of 1e-2 eps gave D on cycle 4 1.2e-4 off, atol = rtol = 1e-6 +8e-3
+ *    (docs/integrators.md, "Warnings"). FRICREG_ATOL_FROM_EPS's tolerances (at most 1e-3 eps
+ *    on velocities) never raise it.
+ *  Judged on the settings in force (before or after a run); called from the observer during a
+ *  run, it judges nothing and returns the list as it was.
+ *  Returns the number of warnings; 0 if sim is NULL. Since 1.6 (FRICREG_1.6). */
+FRICREG_API size_t fricreg_sim_warning_count(fricreg_sim *sim);
+
+/** Read warning k, 0 <= k < fricreg_sim_warning_count(sim): its code (enum fricreg_warning)
+ *  into *code and its message (English, one line, under 256 characters) into buf[len],
+ *  NUL-terminated and truncated to fit (nothing written if buf is NULL or len is 0; for
+ *  Fortran). The list is the last fricreg_sim_warning_count's. Returns FRICREG_OK;
+ *  FRICREG_ENULL if sim or code is NULL; FRICREG_EINVAL if k is not below the count (nothing
+ *  written). Since 1.6 (FRICREG_1.6). */
+FRICREG_API int fricreg_sim_get_warning(const fricreg_sim *sim, size_t k, int *code, char *buf,
+                                        size_t len);
+
+/** Message of warning k of the last fricreg_sim_warning_count, as fricreg_sim_get_warning
+ *  writes it; "" if sim is NULL or k is not below the count. Owned by sim, valid until its next
+ *  warning_count call. Since 1.6 (FRICREG_1.6). */
+FRICREG_API const char *fricreg_sim_warning_message(const fricreg_sim *sim, size_t k);
+
 /** Returns the status of the last failed call (FRICREG_OK if none or sim NULL). The getters, which take
  *  a const simulation, return their status without recording it. */
 FRICREG_API int fricreg_sim_errcode(const fricreg_sim *sim);

@@ -139,6 +139,24 @@ expect_usage_error "--output" exact --output trajectory
 expect_usage_error "^fricreg-sim: --cycles: .*cycles = 2000000 must be from 1 to 10^6$" exact --cycles 2000000
 expect_usage_error "^fricreg-sim: --t-end: .*t_end = 1e+300 .*more than 10^6$" exact --t-end 1e300
 
+# Warnings on a run's settings (fricreg_sim_warning_count): atol = rtol = 1e-6 at eps = 1e-6 holds
+# velocities to 2e-6, above 0.01 eps: one line on stderr, one "tol_loose" entry in the JSON, exit 0;
+# without --atol (the tolerances from eps) and with fixed steps, none.
+total=$((total + 1))
+"$sim" twoblock --integrator msbdf --eps 1e-6 --cycles 1 --rtol 1e-6 --atol 1e-6 >"$tmp/out" 2>"$tmp/err"
+rc=$?
+if [ $rc -ne 0 ] || [ "$(grep -c '^fricreg-sim: warning: .*above 0.01 eps' "$tmp/err")" -ne 1 ] ||
+   ! grep -q '"warnings": \[{"code": "tol_loose", "message": "the adaptive steps' "$tmp/out"; then
+    echo "FAIL: loose tolerances: exit $rc, stderr $(cat "$tmp/err"), $(tail -c 300 "$tmp/out")"; fails=$((fails + 1))
+fi
+for args in "twoblock --integrator msbdf --eps 1e-6 --cycles 1 --rtol 1e-6" "oscillator"; do
+    total=$((total + 1))
+    "$sim" $args >"$tmp/out" 2>"$tmp/err"
+    if [ -s "$tmp/err" ] || ! grep -q '"warnings": \[\]}$' "$tmp/out"; then
+        echo "FAIL: fricreg-sim $args warned: $(cat "$tmp/err") $(tail -c 200 "$tmp/out")"; fails=$((fails + 1))
+    fi
+done
+
 # ---- structure: a linear structure from Matrix Market files (tests write their own files).
 d=$tmp/structure
 mkdir -p "$d"

@@ -489,6 +489,14 @@ static int w_sim_get_abs_tolerances(void)
 {
     return fricreg_sim_get_abs_tolerances(SIM(), Z(0, 3), OUTD(1));
 }
+/* A warning to read: the oscillator's fixture adaptive with one atol = rtol = 1e-3, a velocity
+ * level 2e-3 above 0.01 eps (FRICREG_WARN_TOL_LOOSE, the only one). */
+static int w_sim_get_warning(void)
+{
+    fricreg_sim_set_integrator(FX_->sim, FRICREG_INT_RKF45, 0.01, 1e-3, 1e-3);
+    fricreg_sim_warning_count(FX_->sim);
+    return fricreg_sim_get_warning(SIM(), C(0, 0), (int *)O(1), (char *)O(2), 64);
+}
 static int w_sim_set_max_steps(void)
 {
     return fricreg_sim_set_max_steps(SIM(), N(0, 1000));
@@ -1384,6 +1392,11 @@ static const struct row rows[] = {
      NONE,
      {HANDLE, SIZE(0, "ssss"), PTR(1, "0")}},
     {"fricreg_sim_set_max_steps", w_sim_set_max_steps, "0i", SIM_REC, {HANDLE, INT(0, "iooi")}},
+    {"fricreg_sim_get_warning",
+     w_sim_get_warning,
+     "0i",
+     NONE,
+     {HANDLE, COUNT(0, "oiii"), PTR(1, "0"), PTR(2, "o")}},
     {"fricreg_sim_set_kink_location",
      w_sim_set_kink_location,
      "0i",
@@ -2434,8 +2447,10 @@ START_TEST(non_status_functions)
     fricreg_structure_free(NULL);
     ck_assert_uint_eq(fricreg_structure_warning_count(NULL), 0);
     ck_assert_str_eq(fricreg_structure_warning_message(NULL, 0), "");
+    ck_assert_uint_eq(fricreg_sim_warning_count(NULL), 0);
+    ck_assert_str_eq(fricreg_sim_warning_message(NULL, 0), "");
     ck_assert_str_eq(fricreg_warning_name(-1), "unknown");
-    ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_ENERGY + 1), "unknown");
+    ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_TOL_LOOSE + 1), "unknown");
     ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_EPS_LARGE), "eps_large");
 
     /* errmsg_copy: buf NULL or len 0 gives 0 and writes nothing; a short buffer is truncated

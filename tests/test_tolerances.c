@@ -22,6 +22,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fricreg.h"
 #include "fricreg_sim.h"
 
 #define D_REF_TWOBLOCK_EPS6 1.7355132
@@ -116,6 +117,62 @@ START_TEST(getter_reports_the_rule)
 }
 END_TEST
 
+/* The warning on loose tolerances (fricreg_sim_warning_count): raised where a velocity's level
+ * atol + rtol x 1 exceeds 0.01 eps, at the boundary exactly as documented; never by the rule
+ * from eps nor by fixed steps; read back with its code and message; judged on the settings,
+ * so the same before and after a run, and the run's numbers the same either way. */
+START_TEST(loose_tolerances_warn)
+{
+    fricreg_sim *sim = NULL;
+    int code = -1;
+    char msg[256], tiny[8];
+    ck_assert_int_eq(fricreg_sim_create(FRICREG_SYSTEM_TWOBLOCK, &sim), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_QUINN, 1e-6), FRICREG_OK);
+    ck_assert_uint_eq(fricreg_sim_warning_count(sim), 0); /* fixed-step RK4 */
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_MSBDF, 0.01, 1e-6,
+                                                FRICREG_ATOL_FROM_EPS),
+                     FRICREG_OK);
+    ck_assert_uint_eq(fricreg_sim_warning_count(sim), 0);
+    /* level 1e-6 + 1e-6 = 2e-6 against 0.01 eps = 1e-8 */
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_MSBDF, 0.01, 1e-6, 1e-6),
+                     FRICREG_OK);
+    ck_assert_uint_eq(fricreg_sim_warning_count(sim), 1);
+    ck_assert_int_eq(fricreg_sim_get_warning(sim, 0, &code, msg, sizeof msg), FRICREG_OK);
+    ck_assert_int_eq(code, FRICREG_WARN_TOL_LOOSE);
+    ck_assert_str_eq(fricreg_warning_name(code), "tol_loose");
+    ck_assert_str_eq(msg, fricreg_sim_warning_message(sim, 0));
+    ck_assert_ptr_nonnull(strstr(msg, "2e-06"));
+    ck_assert_int_eq(fricreg_sim_get_warning(sim, 0, &code, tiny, sizeof tiny), FRICREG_OK);
+    ck_assert_uint_eq(strlen(tiny), sizeof tiny - 1);
+    code = -1;
+    ck_assert_int_eq(fricreg_sim_get_warning(sim, 1, &code, msg, sizeof msg), FRICREG_EINVAL);
+    ck_assert_int_eq(code, -1);
+    ck_assert_str_eq(fricreg_sim_warning_message(sim, 1), "");
+    ck_assert_int_eq(fricreg_sim_get_warning(sim, 0, NULL, msg, sizeof msg), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_sim_get_warning(NULL, 0, &code, msg, sizeof msg), FRICREG_ENULL);
+    ck_assert_uint_eq(fricreg_sim_warning_count(NULL), 0);
+    ck_assert_str_eq(fricreg_sim_warning_message(NULL, 0), "");
+    /* at the boundary: rtol 1e-9, atol 1e-8 - 1e-9 is the level 0.01 eps exactly, no warning;
+     * the next atol up warns */
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_MSBDF, 0.01, 1e-9, 9e-9),
+                     FRICREG_OK);
+    ck_assert_uint_eq(fricreg_sim_warning_count(sim), 0);
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_MSBDF, 0.01, 1e-9, 9.1e-9),
+                     FRICREG_OK);
+    ck_assert_uint_eq(fricreg_sim_warning_count(sim), 1);
+    /* per component: a loose velocity entry warns, loose positions and D do not */
+    const double fine[5] = {1e-3, 1e-3, 1e-9, 1e-9, 1e-3},
+                 loose[5] = {1e-9, 1e-9, 1e-9, 1e-7, 1e-9};
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, FRICREG_INT_MSBDF, 0.01, 0.0, 0.0),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_abs_tolerances(sim, 5, fine), FRICREG_OK);
+    ck_assert_uint_eq(fricreg_sim_warning_count(sim), 0);
+    ck_assert_int_eq(fricreg_sim_set_abs_tolerances(sim, 5, loose), FRICREG_OK);
+    ck_assert_uint_eq(fricreg_sim_warning_count(sim), 1);
+    fricreg_sim_free(sim);
+}
+END_TEST
+
 /* The caller's tolerances: copied, reported, used (the run is adaptive even with rtol 0),
  * replaced by a later set_integrator; refused with a message, nothing changed, for each error
  * the docstring names; a chain whose n changed is refused at the run. */
@@ -182,6 +239,7 @@ int main(void)
     tcase_add_test(tc, two_blocks_eps_1e_4_rule);
     tcase_add_test(tc, getter_reports_the_rule);
     tcase_add_test(tc, caller_tolerances);
+    tcase_add_test(tc, loose_tolerances_warn);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);
     srunner_run_all(sr, CK_NORMAL);

@@ -139,7 +139,22 @@ struct cli_summary {
     const double *D;                        /* [cycles] dissipation per cycle */
     const double *stick;                    /* [ncontacts] stick fraction of the last whole cycle */
     const struct cli_extrapolation *extrap; /* NULL: not extrapolated */
+    const struct cli_warnings *warnings;    /* NULL: none judged (an empty list) */
 };
+
+/* An object's warnings as fricreg-sim reports them (fricreg_structure_warning_count,
+ * fricreg_sim_warning_count): each once on stderr, and as the summary's "warnings" list. */
+struct cli_warnings {
+    size_t n;
+    int code[16];
+    char message[16][256];
+};
+
+/* Each of w's warnings on stderr, "fricreg-sim: warning: MESSAGE"; the exit status stays the
+ * run's. */
+void cli_print_warnings(const struct cli_warnings *w);
+/* ", \"warnings\": [{\"code\": NAME, \"message\": TEXT}, ...]" (JSON strings escaped). */
+void cli_json_warnings(FILE *out, const struct cli_warnings *w);
 
 /* output.c */
 void cli_write_summary(FILE *out, const struct cli_summary *s);

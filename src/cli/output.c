@@ -116,6 +116,15 @@ static void write_extrapolation(FILE *out, const struct cli_extrapolation *x, si
     fprintf(out, "}");
 }
 
+/* The simulation's warnings on its settings and run (fricreg_sim_warning_count). */
+static void sim_warnings(fricreg_sim *sim, struct cli_warnings *w)
+{
+    size_t count = fricreg_sim_warning_count(sim);
+    w->n = 0;
+    for (size_t k = 0; k < count && w->n < 16; k++, w->n++)
+        fricreg_sim_get_warning(sim, k, &w->code[w->n], w->message[w->n], sizeof w->message[0]);
+}
+
 void cli_write_summary(FILE *out, const struct cli_summary *s)
 {
     fprintf(out, "{\"system\": \"%s\", \"law\": \"%s\", \"integrator\": \"%s\", ", s->system,
@@ -139,7 +148,9 @@ void cli_write_summary(FILE *out, const struct cli_summary *s)
     json_array(out, "stick_fraction", s->ncontacts, s->stick);
     if (s->extrap != NULL)
         write_extrapolation(out, s->extrap, s->cycles);
-    fprintf(out, ", \"cpu_seconds\": %.6f}\n", s->cpu_seconds);
+    fprintf(out, ", \"cpu_seconds\": %.6f", s->cpu_seconds);
+    cli_json_warnings(out, s->warnings);
+    fputs("}\n", out);
 }
 
 static double extrap_value(const fricreg_sim *sim, int which)
@@ -175,7 +186,7 @@ static double kink_count(const fricreg_sim *sim)
 }
 
 static void write_summary(FILE *out, const struct cli_run *run, const fricreg_sim *sim,
-                          double cpu_seconds)
+                          double cpu_seconds, const struct cli_warnings *warnings)
 {
     size_t n = fricreg_sim_ndof(sim), m = fricreg_sim_ncontacts(sim);
     size_t cycles = (size_t)value(sim, FRICREG_VALUE_CYCLES);
@@ -214,7 +225,8 @@ static void write_summary(FILE *out, const struct cli_run *run, const fricreg_si
                             .v = v,
                             .D = D,
                             .stick = stick,
-                            .extrap = run->extrapolate ? &extrap : NULL};
+                            .extrap = run->extrapolate ? &extrap : NULL,
+                            .warnings = warnings};
     cli_write_summary(out, &s);
     free(buf);
 }
@@ -229,7 +241,10 @@ int cli_run_summary(const struct cli_run *run, FILE *out)
     double cpu_seconds = (double)(clock() - start) / CLOCKS_PER_SEC;
     if (status != FRICREG_OK)
         return run_failed(sim, status, run);
-    write_summary(out, run, sim, cpu_seconds);
+    struct cli_warnings warnings;
+    sim_warnings(sim, &warnings);
+    cli_print_warnings(&warnings);
+    write_summary(out, run, sim, cpu_seconds, &warnings);
     fricreg_sim_free(sim);
     return 0;
 }

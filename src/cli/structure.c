@@ -252,47 +252,15 @@ static void json_array(FILE *out, const char *name, size_t n, const double a[])
     fputc(']', out);
 }
 
-/* A JSON string: the library's messages are plain text, but quotes, backslashes and control
- * characters are escaped all the same. */
-static void json_string(FILE *out, const char *text)
-{
-    fputc('"', out);
-    for (const unsigned char *c = (const unsigned char *)text; *c; c++) {
-        if (*c == '"' || *c == '\\')
-            fprintf(out, "\\%c", *c);
-        else if (*c < 0x20)
-            fprintf(out, "\\u%04x", *c);
-        else
-            fputc(*c, out);
-    }
-    fputc('"', out);
-}
-
 /* The library's warnings on the structure and its run (fricreg_structure_warning_count, judged
- * by the caller after the run), as "warnings": [{"code": ..., "message": ...}, ...]. */
-static void json_warnings(FILE *out, const fricreg_structure *s, size_t count)
-{
-    fputs(", \"warnings\": [", out);
-    for (size_t k = 0; k < count; k++) {
-        int code = FRICREG_WARN_NONE;
-        char message[256];
-        fricreg_structure_get_warning(s, k, &code, message, sizeof message);
-        fprintf(out, "%s{\"code\": ", k ? ", " : "");
-        json_string(out, fricreg_warning_name(code));
-        fputs(", \"message\": ", out);
-        json_string(out, message);
-        fputc('}', out);
-    }
-    fputc(']', out);
-}
-
-/* Each warning once on stderr; the exit status stays the run's. */
-static size_t print_warnings(fricreg_structure *s)
+ * by the caller after the run), each printed once on stderr. */
+static void structure_warnings(fricreg_structure *s, struct cli_warnings *w)
 {
     size_t count = fricreg_structure_warning_count(s);
-    for (size_t k = 0; k < count; k++)
-        fprintf(stderr, "fricreg-sim: warning: %s\n", fricreg_structure_warning_message(s, k));
-    return count;
+    w->n = 0;
+    for (size_t k = 0; k < count && w->n < 16; k++, w->n++)
+        fricreg_structure_get_warning(s, k, &w->code[w->n], w->message[w->n], sizeof w->message[0]);
+    cli_print_warnings(w);
 }
 
 static const char *scheme_name(const struct structure_options *o)
@@ -304,7 +272,7 @@ static const char *scheme_name(const struct structure_options *o)
 static void write_summary(FILE *out, const struct structure_options *o,
                           const struct structure_input *in, const fricreg_structure *s,
                           const struct structure_run *run, double eps, double cpu_seconds,
-                          size_t nwarnings)
+                          const struct cli_warnings *warnings)
 {
     int64_t steps = sstat(s, FRICREG_SSTAT_STEPS);
     double *D = run->f; /* the forces are not needed any more */
@@ -339,7 +307,7 @@ static void write_summary(FILE *out, const struct structure_options *o,
             steps > 0 ? (double)iterations / (double)steps : 0.0,
             (long long)sstat(s, FRICREG_SSTAT_NEWTON_MAX),
             (long long)sstat(s, FRICREG_SSTAT_NEWTON_FAILURES), cpu_seconds);
-    json_warnings(out, s, nwarnings);
+    cli_json_warnings(out, warnings);
     fputs("}\n", out);
 }
 
@@ -394,13 +362,14 @@ static int run_structure(fricreg_structure *s, const struct structure_options *o
     clock_t start = clock();
     int status = advance(s, o, in, &run);
     double cpu_seconds = (double)(clock() - start) / CLOCKS_PER_SEC;
-    size_t nwarnings = print_warnings(s);
+    struct cli_warnings warnings;
+    structure_warnings(s, &warnings);
     if (status != FRICREG_OK)
         status = run_failed(s, status);
     else if (run.rows != NULL)
         copy_stream(run.rows, out);
     else
-        write_summary(out, o, in, s, &run, eps, cpu_seconds, nwarnings);
+        write_summary(out, o, in, s, &run, eps, cpu_seconds, &warnings);
     if (run.rows != NULL)
         fclose(run.rows);
     free(buf);

@@ -314,20 +314,19 @@ static double eps_in_use(const fricreg_sim *sim)
 
 /* The rule from eps (fricreg_sim_set_integrator, FRICREG_ATOL_FROM_EPS), measured in
  * docs/integrators.md ("Absolute tolerances from eps"): a velocity is held absolutely to
- * min(ATOL_V_PER_EPS eps, rtol x 1 velocity unit), with no relative part, since the contact
+ * min(FR_SIM_ATOL_V_PER_EPS eps, rtol x 1 velocity unit), with no relative part, since the contact
  * velocity that law (4) reads is a difference of body velocities that are O(1) while it is
  * within its band |zdot| < eps. On the two blocks at eps = 1e-6 (msbdf, rtol 1e-6), D on
  * cycle 4 was 3e-3 off with 1e-1 eps, 1.2e-4 with 1e-2 eps, and within 7e-6 with 1e-3 eps
  * from rtol 1e-4 to 1e-8. Positions and D keep GSL's standard level rtol (1 + |y_i|) of the
  * nondimensional systems. */
-#define ATOL_V_PER_EPS 1e-3
 
 /* The rule from eps at eps: absolute tolerances atol[2 ndof + 1] of y = (x, v, D) and the
  * weights w[2 ndof + 1] of rtol in each component (w NULL: not asked for). */
 static void rule_tolerances(const fricreg_sim *sim, double eps, double atol[], double w[])
 {
     size_t n = fricreg_sim_ndof(sim);
-    double atol_v = fmin(ATOL_V_PER_EPS * eps, sim->rtol), atol_x = sim->rtol;
+    double atol_v = fmin(FR_SIM_ATOL_V_PER_EPS * eps, sim->rtol), atol_x = sim->rtol;
     for (size_t i = 0; i < n; i++) {
         atol[i] = atol_x;
         atol[n + i] = atol_v;

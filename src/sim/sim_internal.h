@@ -8,6 +8,7 @@
 #include <stdint.h>
 
 #include "base/error.h"
+#include "base/warning.h"
 #include "fricreg_sim.h"
 #include "system.h"
 
@@ -16,6 +17,10 @@
 #define FR_SIM_STATE_LIMIT 1e100
 
 struct fr_kinks; /* kinks.c */
+
+/* The rule from eps's velocity tolerance, per unit of eps (sim.c, default tolerances; and the
+ * warning against looser ones, warnings.c). */
+#define FR_SIM_ATOL_V_PER_EPS 1e-3
 
 struct fricreg_sim {
     struct fr_system sys; /* the system and its parameters */
@@ -79,6 +84,7 @@ struct fricreg_sim {
     double *capture_y;     /* [2 ndof + 1] */
 
     struct fr_error err;
+    struct fr_warnings warnings; /* the checks of plausibility, as last judged (warnings.c) */
 };
 
 /* sim.c: the right-hand side of the ODE y = (x, v, D) for gsl_odeiv2_system (params: the
