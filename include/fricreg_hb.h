@@ -125,6 +125,46 @@ FRICREG_API int fricreg_hb_set_stiffness(fricreg_hb *hb, size_t ndof, const doub
  *  fricreg_hb_set_mass. Since 1.6. */
 FRICREG_API int fricreg_hb_set_damping(fricreg_hb *hb, size_t ndof, const double C[]);
 
+/** Set the mass matrix from compressed sparse columns: ndof x ndof, colptr[ndof + 1],
+ *  rowind[nnz], values[nnz] (mass units), with the conventions of
+ *  fricreg_structure_set_mass_csc and enum fricreg_sparse_flags of fricreg.h: zero-based, or
+ *  one-based with FRICREG_SPARSE_ONE_BASED; given whole (then symmetric to 1e-12 of the rows'
+ *  scales as fricreg_hb_set_mass, its symmetric part kept) or by one triangle
+ *  (FRICREG_SPARSE_UPPER, row <= column, or FRICREG_SPARSE_LOWER); duplicates summed. Copied.
+ *  The model becomes sparse: from then on D_h is factored by UMFPACK (header comment), the
+ *  dense setters convert their matrices to it, and a dense model's other two matrices are
+ *  converted now (their non-zero entries). Since 1.6 (FRICREG_1.6).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb or colptr is NULL, or rowind or values while
+ *  nnz > 0; FRICREG_ESIZE if ndof is not the driver's; FRICREG_EINVAL for unknown flags,
+ *  both triangle flags, colptr[0] not the base, colptr decreasing, a row index out of range or
+ *  an entry outside the triangle given; FRICREG_ENONFINITE if a value is NaN or infinite;
+ *  FRICREG_ENOTSYM if, given whole, it is not symmetric; FRICREG_ENOMEM. The message names
+ *  the array and the entry. All inputs are checked before anything changes; on failure the
+ *  model is the one before the call. */
+FRICREG_API int fricreg_hb_set_mass_csc(fricreg_hb *hb, size_t ndof, int flags,
+                                        const int64_t colptr[], const int64_t rowind[],
+                                        const double values[]);
+
+/** Set the stiffness matrix K from compressed sparse columns, as fricreg_hb_set_mass_csc
+ *  (force per unit displacement); nonsingular, as fricreg_hb_set_stiffness. Since 1.6
+ *  (FRICREG_1.6).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_EINVAL; FRICREG_ENONFINITE;
+ *  FRICREG_ENOTSYM; FRICREG_ENOMEM, as fricreg_hb_set_mass_csc. */
+FRICREG_API int fricreg_hb_set_stiffness_csc(fricreg_hb *hb, size_t ndof, int flags,
+                                             const int64_t colptr[], const int64_t rowind[],
+                                             const double values[]);
+
+/** Set the damping matrix C from compressed sparse columns, as fricreg_hb_set_mass_csc (force
+ *  per unit velocity); replaces Rayleigh damping. Since 1.6 (FRICREG_1.6).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_EINVAL; FRICREG_ENONFINITE;
+ *  FRICREG_ENOTSYM; FRICREG_ENOMEM, as fricreg_hb_set_mass_csc. */
+FRICREG_API int fricreg_hb_set_damping_csc(fricreg_hb *hb, size_t ndof, int flags,
+                                           const int64_t colptr[], const int64_t rowind[],
+                                           const double values[]);
+
 /** Rayleigh damping C = a0 M + a1 K (a0 in 1/s, a1 in s, both >= 0), formed from the M and K
  *  in force at each frequency, so it follows later set_mass and set_stiffness calls; replaces
  *  a damping matrix. Mode k of circular frequency w_k gets the damping ratio
