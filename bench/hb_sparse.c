@@ -3,7 +3,7 @@
  * (GSL's complex LU) on tests/support/hb_rod.h's rod with three Jenkins elements, H = 7: the
  * time of one point solve (fricreg_hb_solve from the stuck guess, the factors at a new
  * frequency included) against the dofs, and the frequency response over the first resonance
- * (fricreg_hb_continue, 1.1 to 1.6 rad/s) at 10^4 dofs; wall-clock medians of repeats, the
+ * (fricreg_hb_continue, 1.1 to 1.6 rad/s, Newton's tolerance 1e-7) at 10^4 dofs; wall-clock medians of repeats, the
  * process's peak resident memory after each size. Usage: fricreg-bench-hb-sparse [repeats]. */
 #include <stdio.h>
 #include <stdlib.h>
@@ -52,6 +52,8 @@ static double run(const struct hb_rod *r, int dense, int frf, int repeats, size_
         if (fricreg_hb_create(r->n, r->m, H, &hb) != FRICREG_OK)
             return -1.0;
         int status = hb_rod_set(hb, r, dense, HB_ROD_UPPER, 0);
+        if (status == FRICREG_OK && frf) /* Newton's tolerance above the solves' noise, 3e-8 */
+            status = fricreg_hb_set_newton(hb, 1e-7, 50);
         if (status == FRICREG_OK && frf)
             status = fricreg_hb_set_continuation(hb, 0.05, 1e-6, 0.1, 2000);
         double t0 = now();
