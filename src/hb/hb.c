@@ -45,7 +45,7 @@ int fricreg_hb_create(size_t ndof, size_t m, int harmonics, fricreg_hb **out)
                        .factored_omega = NAN};
     /* up to 4096 dofs the dense model, as the dense setters leave it; beyond, sparse only */
     int dense = n <= MAX_DENSE_DOFS;
-    hb->M = dense ? alloc_doubles(3 * n * n) : NULL;
+    hb->M = dense ? calloc(3 * n * n, sizeof(double)) : NULL; /* untouched until set */
     hb->J = alloc_doubles(m * n + 2 * m + 2 * n);
     hb->D = dense ? alloc_doubles(2 * n * n) : NULL;
     hb->Y = alloc_doubles(2 * H1 * n * (m + 1));
@@ -65,7 +65,6 @@ int fricreg_hb_create(size_t ndof, size_t m, int harmonics, fricreg_hb **out)
     if (dense) {
         hb->C = hb->M + n * n;
         hb->K = hb->C + n * n;
-        memset(hb->M, 0, 3 * n * n * sizeof(double));
         for (size_t k = 0; k < n; k++)
             hb->M[k * n + k] = 1.0;
     }

@@ -168,7 +168,12 @@ static int install(fricreg_hb *hb, const char *fn, cholmod_sparse *X[3])
     hb->W = p.W;
     if (hb->symbolic != NULL)
         umfpack_zl_free_symbolic(&hb->symbolic);
-    if (!hb->sparse) {
+    if (!hb->sparse) { /* for good: the dense model's memory is not needed again */
+        free(hb->M);
+        free(hb->D);
+        free(hb->perm);
+        hb->M = hb->C = hb->K = hb->D = NULL;
+        hb->perm = NULL;
         umfpack_zl_defaults(hb->control);
         hb->control[UMFPACK_PRL] = 0; /* nothing printed */
         hb->sparse = 1;
