@@ -5,11 +5,13 @@
  * frequency included) against the dofs, and the frequency response over the first resonance
  * (fricreg_hb_continue, 1.1 to 1.6 rad/s, Newton's tolerance 1e-7) at 10^4 dofs; wall-clock medians of repeats, the
  * process's peak resident memory after each size. Usage: fricreg-bench-hb-sparse [repeats]. */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime, getrusage */
 #include <stdio.h>
 #include <stdlib.h>
 #include <sys/resource.h>
 #include <time.h>
 
+#include "bench.h"
 #include "fricreg_hb.h"
 #include "hb_rod.h"
 
@@ -21,18 +23,6 @@ static double now(void)
     struct timespec t;
     clock_gettime(CLOCK_MONOTONIC, &t);
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-static int by_value(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *t, int count)
-{
-    qsort(t, (size_t)count, sizeof *t, by_value);
-    return count % 2 ? t[count / 2] : 0.5 * (t[count / 2 - 1] + t[count / 2]);
 }
 
 static double peak_mib(void)
@@ -71,7 +61,7 @@ static double run(const struct hb_rod *r, int dense, int frf, int repeats, size_
             *points = fricreg_hb_points(hb);
         fricreg_hb_free(hb);
     }
-    return median(t, repeats);
+    return bench_median(t, (size_t)repeats);
 }
 
 int main(int argc, char **argv)
