@@ -13,7 +13,8 @@
  *
  *     M x'' + C x' + K x + J^T f(J x) = p_c cos Ωt + p_s sin Ωt
  *
- * with M, C, K symmetric ndof x ndof (dense, row-major), the m x ndof matrix J whose row i
+ * with M, C, K symmetric ndof x ndof (dense row-major, or sparse: the _csc setters), the
+ * m x ndof matrix J (dense row-major: m is small) whose row i
  * gives element i's relative displacement q_i = J_i x, and f_i the force of a 1-D Jenkins
  * element (fricreg_jenkins.h: a spring kt_i in series with a Coulomb slider of bound mun_i),
  * the stabilized hysteresis of fricreg_aft.h, entering as a spring's kt q would. Every
@@ -43,10 +44,20 @@
  * a structure without damping has no finite response where hΩ is one of its own (the
  * elements removed) natural frequencies; give C (or Rayleigh damping) at least a little.
  *
- * Cost per frequency: H + 1 complex LU factors of ndof x ndof (GSL's
- * gsl_linalg_complex_LU_decomp, O(H ndof³)) and (H + 1)(m + 1) solves, then per Newton
- * iteration m AFTs (O(H³) each) and a real LU of order m (2H + 1) (gsl_linalg_LU_decomp).
- * Dense only in this version: the structure is for small to medium ndof.
+ * Cost per frequency: H + 1 complex LU factors of ndof x ndof and (H + 1)(m + 1) solves, then
+ * per Newton iteration m AFTs (O(H³) each) and a real LU of order m (2H + 1)
+ * (gsl_linalg_LU_decomp). A dense model (the dense setters) is factored by GSL's
+ * gsl_linalg_complex_LU_decomp, O(H ndof³): for small to medium ndof (at most 4096). A sparse
+ * model (any _csc setter; the only one above 4096 dofs) by SuiteSparse's UMFPACK, complex
+ * (D_h is complex symmetric, not Hermitian, and indefinite above the first resonance: no
+ * Cholesky): the pattern of D_h, the union of M's, C's and K's, is analysed once per pattern
+ * (umfpack_zl_symbolic), each D_h factored per frequency (umfpack_zl_numeric) and freed once
+ * its solves Y_h = D_h^-1 [J^T | P_h] are done, so one factor, O(nnz(L + U)), lives at a time;
+ * Y_h of every harmonic, (H + 1) ndof (m + 1) complex numbers, is kept (the displacements need
+ * no factor). Its cost follows the factors' fill, O(H ndof) on a banded model (measured:
+ * docs/joints.md). The solves' forward error grows with the condition of D_h (on a rod of
+ * ndof elements as ndof²: about 3e-8 of q at 10^4 dofs): Newton's tolerance must lie above it
+ * for a continuation to converge (fricreg_hb_set_newton: 1e-7 there).
  *
  * Conventions are those of fricreg.h: int results are fricreg_status codes, nothing is
  * printed, a failed call leaves the caller's arrays untouched, one object per thread. The
@@ -83,11 +94,14 @@ typedef struct fricreg_hb fricreg_hb;
  *  Defaults: M = I, C = 0, K = 0 (set_stiffness before solving: K must be nonsingular), J
  *  unset (fricreg_hb_set_elements before solving), no excitation, Newton tolerance 1e-10 with
  *  at most 50 iterations, continuation steps ds = 0.02, between 1e-6 and 0.1, at most 2000
- *  points. All memory but the continuation's points (fricreg_hb_continue) is allocated here:
- *  O(ndof² + H m ndof + (m H)²) doubles (one D_h at a time; the
- *  solves Y_h of every harmonic).
+ *  points. Up to 4096 dofs the model is dense, and all memory but the continuation's points
+ *  (fricreg_hb_continue) is allocated here: O(ndof² + H m ndof + (m H)²) doubles (one D_h at a
+ *  time; the solves Y_h of every harmonic); a _csc setter turns it sparse for good (its dense
+ *  matrices converted, then freed). Beyond 4096 dofs the model is sparse from the start (M = I,
+ *  C = K = 0 as sparse matrices), O(H m ndof + (m H)²) doubles here, and the sparse setters
+ *  and solves allocate the pattern and UMFPACK's factors (header comment).
  *
- *  ndof       degrees of freedom, 1 <= ndof <= 4096 (dense matrices).
+ *  ndof       degrees of freedom, 1 <= ndof <= 2^24.
  *  m          Jenkins elements, 1 <= m <= 256.
  *  harmonics  H, 1 <= H <= FRICREG_HB_MAX_HARMONICS.
  *  out        out: the new object, released with fricreg_hb_free. Written only on success.
@@ -103,27 +117,69 @@ FRICREG_API void fricreg_hb_free(fricreg_hb *hb);
 /** Set the mass matrix M[ndof ndof], row-major, mass units (e.g. kg): finite, symmetric to
  *  1e-12 of the rows' scales (|M_ij − M_ji| <= 1e-12 sqrt(r_i r_j), r_i = max_k |M_ik|);
  *  its symmetric part (M + M^T)/2 is kept. Definiteness is not checked: what the solves need
- *  is D_h nonsingular, checked at each frequency.
+ *  is D_h nonsingular, checked at each frequency. On a sparse model (fricreg_hb_set_mass_csc)
+ *  its non-zero entries are converted to it.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if hb or M is NULL; FRICREG_ESIZE if ndof is not the
  *  driver's; FRICREG_ENONFINITE if an entry is NaN or infinite; FRICREG_ENOTSYM if M is not
- *  symmetric. All inputs are checked before anything changes. Since 1.6. */
+ *  symmetric; FRICREG_ENOMEM (a sparse model only). All inputs are checked before anything
+ *  changes. Since 1.6. */
 FRICREG_API int fricreg_hb_set_mass(fricreg_hb *hb, size_t ndof, const double M[]);
 
 /** Set the stiffness matrix K[ndof ndof], row-major, force per unit displacement (e.g. N/m),
  *  as fricreg_hb_set_mass (symmetric, finite); it must be nonsingular for the static term
  *  (header comment), which the solves check.
  *
- *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_ENOTSYM, as
- *  fricreg_hb_set_mass. Since 1.6. */
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_ENOTSYM;
+ *  FRICREG_ENOMEM, as fricreg_hb_set_mass. Since 1.6. */
 FRICREG_API int fricreg_hb_set_stiffness(fricreg_hb *hb, size_t ndof, const double K[]);
 
 /** Set the damping matrix C[ndof ndof], row-major, force per unit velocity (e.g. N s/m), as
  *  fricreg_hb_set_mass (symmetric, finite). Replaces Rayleigh damping.
  *
- *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_ENOTSYM, as
- *  fricreg_hb_set_mass. Since 1.6. */
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_ENOTSYM;
+ *  FRICREG_ENOMEM, as fricreg_hb_set_mass. Since 1.6. */
 FRICREG_API int fricreg_hb_set_damping(fricreg_hb *hb, size_t ndof, const double C[]);
+
+/** Set the mass matrix from compressed sparse columns: ndof x ndof, colptr[ndof + 1],
+ *  rowind[nnz], values[nnz] (mass units), with the conventions of
+ *  fricreg_structure_set_mass_csc and enum fricreg_sparse_flags of fricreg.h: zero-based, or
+ *  one-based with FRICREG_SPARSE_ONE_BASED; given whole (then symmetric to 1e-12 of the rows'
+ *  scales as fricreg_hb_set_mass, its symmetric part kept) or by one triangle
+ *  (FRICREG_SPARSE_UPPER, row <= column, or FRICREG_SPARSE_LOWER); duplicates summed. Copied.
+ *  The model becomes sparse: from then on D_h is factored by UMFPACK (header comment), the
+ *  dense setters convert their matrices to it, and a dense model's other two matrices are
+ *  converted now (their non-zero entries). Since 1.6 (FRICREG_1.6).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb or colptr is NULL, or rowind or values while
+ *  nnz > 0; FRICREG_ESIZE if ndof is not the driver's; FRICREG_EINVAL for unknown flags,
+ *  both triangle flags, colptr[0] not the base, colptr decreasing, a row index out of range or
+ *  an entry outside the triangle given; FRICREG_ENONFINITE if a value is NaN or infinite;
+ *  FRICREG_ENOTSYM if, given whole, it is not symmetric; FRICREG_ENOMEM. The message names
+ *  the array and the entry. All inputs are checked before anything changes; on failure the
+ *  model is the one before the call. */
+FRICREG_API int fricreg_hb_set_mass_csc(fricreg_hb *hb, size_t ndof, int flags,
+                                        const int64_t colptr[], const int64_t rowind[],
+                                        const double values[]);
+
+/** Set the stiffness matrix K from compressed sparse columns, as fricreg_hb_set_mass_csc
+ *  (force per unit displacement); nonsingular, as fricreg_hb_set_stiffness. Since 1.6
+ *  (FRICREG_1.6).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_EINVAL; FRICREG_ENONFINITE;
+ *  FRICREG_ENOTSYM; FRICREG_ENOMEM, as fricreg_hb_set_mass_csc. */
+FRICREG_API int fricreg_hb_set_stiffness_csc(fricreg_hb *hb, size_t ndof, int flags,
+                                             const int64_t colptr[], const int64_t rowind[],
+                                             const double values[]);
+
+/** Set the damping matrix C from compressed sparse columns, as fricreg_hb_set_mass_csc (force
+ *  per unit velocity); replaces Rayleigh damping. Since 1.6 (FRICREG_1.6).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_EINVAL; FRICREG_ENONFINITE;
+ *  FRICREG_ENOTSYM; FRICREG_ENOMEM, as fricreg_hb_set_mass_csc. */
+FRICREG_API int fricreg_hb_set_damping_csc(fricreg_hb *hb, size_t ndof, int flags,
+                                           const int64_t colptr[], const int64_t rowind[],
+                                           const double values[]);
 
 /** Rayleigh damping C = a0 M + a1 K (a0 in 1/s, a1 in s, both >= 0), formed from the M and K
  *  in force at each frequency, so it follows later set_mass and set_stiffness calls; replaces
@@ -207,9 +263,10 @@ FRICREG_API int fricreg_hb_set_continuation(fricreg_hb *hb, double ds, double ds
  *  or an intermediate overflows (a model, element or excitation scale near the double range:
  *  D_h itself or its solves, or fricreg_aft_jenkins_exact's bound on 8 kt sum |q|);
  *  FRICREG_ESIZE if nq is not m (2H + 1); FRICREG_ESINGULAR if K or some D_h(Ω) is singular
- *  (a pivot of its LU factor below 1e-14 of the largest entry of |K| + (hΩ)² |M| + hΩ |C|;
- *  header comment), or
- *  Newton's matrix is; FRICREG_EWORK if Newton did not converge within max_iter iterations
+ *  (dense: a pivot of its LU factor below 1e-14 of the largest entry of |K| + (hΩ)² |M| +
+ *  hΩ |C|; sparse: UMFPACK's smallest over largest pivot below 1e-14, or its singular
+ *  warning; header comment), or Newton's matrix is; FRICREG_ENOMEM (a sparse model: UMFPACK's
+ *  analysis or factor); FRICREG_EWORK if Newton did not converge within max_iter iterations
  *  (or its line search found no decrease); FRICREG_EINTEGRATOR if the AFT's root solver
  *  failed (fricreg_aft_jenkins_exact). On failure q and the kept solution are untouched. Since
  *  1.6. */
@@ -227,7 +284,8 @@ FRICREG_API int fricreg_hb_solve(fricreg_hb *hb, double omega, size_t nq, const 
  *  Returns FRICREG_OK; FRICREG_ENULL if hb or x is NULL; FRICREG_ESIZE if ndof or nc is not
  *  the driver's; FRICREG_EINVAL if there is no solution yet (or the model changed since);
  *  FRICREG_EINTEGRATOR as fricreg_hb_solve (FRICREG_ENONFINITE cannot arise: the solution's
- *  evaluation succeeded before). Since 1.6. */
+ *  evaluation succeeded before); FRICREG_ENOMEM (a sparse model whose solves a later failed
+ *  call moved: they are redone, with UMFPACK's factors). Since 1.6. */
 FRICREG_API int fricreg_hb_displacement(fricreg_hb *hb, size_t ndof, size_t nc, double x[]);
 
 /** Follow the periodic response from omega0 to omega1 by pseudo-arclength continuation in Ω
@@ -250,7 +308,8 @@ FRICREG_API int fricreg_hb_displacement(fricreg_hb *hb, size_t ndof, size_t nc, 
  *  FRICREG_EWORK, FRICREG_EINTEGRATOR as fricreg_hb_solve at omega0; FRICREG_EINTEGRATOR if
  *  the step fell below ds_min; FRICREG_EWORK if max_points were stored before omega1;
  *  FRICREG_ENOMEM (for the first 64 points before anything changed; for more, later, with the
- *  points so far kept). On failure the points reached so far are kept (fricreg_hb_points
+ *  points so far kept; or UMFPACK's, as fricreg_hb_solve, with the points so far kept). On
+ *  failure the points reached so far are kept (fricreg_hb_points
  *  counts them; 0 if the solve at omega0 failed) and fricreg_hb_displacement gives the last
  *  solution. Allocates room for the points, 64 at first, doubling. Since 1.6. */
 FRICREG_API int fricreg_hb_continue(fricreg_hb *hb, double omega0, double omega1, size_t nq,

@@ -15,10 +15,6 @@
 #include "fricreg_hb.h"
 #include "matrix_market.h"
 
-/* The driver is dense (fricreg_hb.h): M, K and C take ndof^2 doubles each, so the files are
- * densified up to this many degrees of freedom (three 4096^2 matrices: 400 MB). */
-#define HB_MAX_DOF 4096
-
 enum { HB_SUMMARY, HB_FRF };
 static const struct cli_word hb_outputs[] = {{"summary", HB_SUMMARY}, {"frf", HB_FRF}, {NULL, 0}};
 
@@ -28,18 +24,23 @@ struct hb_options {
     double a0, a1, omega_start, omega_end;
 };
 
-/* The model as dense arrays: M, K, C (NULL: Rayleigh or none) n x n row-major, J m x n, the
- * excitation pc[n], ps[n], the elements' kt[m], mun[m]. */
+/* The model: M, K, C (C.colptr NULL: Rayleigh or none) n x n as the files' compressed
+ * columns, passed sparse to the driver (its _csc setters: nothing densified); J m x n dense
+ * row-major (m <= 256 rows), the excitation pc[n], ps[n], the elements' kt[m], mun[m]. */
 struct hb_model {
     size_t n, m;
-    double *M, *K, *C, *J, *pc, *ps, *kt, *mun;
+    struct cli_sparse M, K, C;
+    double *J, *pc, *ps, *kt, *mun;
 };
 
 static void free_model(struct hb_model *md)
 {
-    void *blocks[] = {md->M, md->K, md->C, md->J, md->pc, md->ps, md->kt, md->mun};
+    void *blocks[] = {md->J, md->pc, md->ps, md->kt, md->mun};
     for (size_t k = 0; k < sizeof blocks / sizeof *blocks; k++)
         free(blocks[k]);
+    cli_sparse_free(&md->M);
+    cli_sparse_free(&md->K);
+    cli_sparse_free(&md->C);
     memset(md, 0, sizeof *md);
 }
 
@@ -87,7 +88,7 @@ static int parse_hb(int argc, char **argv, struct hb_options *o)
     return status != 0 ? status : check_options(o);
 }
 
-/* The rows x cols matrix of option's file, dense row-major into *out (a symmetric file's
+/* The rows x cols matrix of option's file (J), dense row-major into *out (a symmetric file's
  * lower triangle mirrored). */
 static int read_dense(const char *option, const char *path, size_t rows, size_t cols, size_t *nrows,
                       size_t *ncols, double **out)
@@ -96,13 +97,6 @@ static int read_dense(const char *option, const char *path, size_t rows, size_t 
     int status = cli_read_mtx(option, path, rows, cols, &A);
     if (status != 0)
         return status;
-    if (A.cols > HB_MAX_DOF || A.rows > HB_MAX_DOF) {
-        cli_sparse_free(&A);
-        return cli_file_error(option, path, 0,
-                              "%zu x %zu: the harmonic-balance driver is dense, at most %d "
-                              "degrees of freedom",
-                              A.rows, A.cols, HB_MAX_DOF);
-    }
     double *D = calloc(A.rows * A.cols, sizeof *D);
     if (D == NULL) {
         cli_sparse_free(&A);
@@ -152,13 +146,14 @@ static int read_pairs(const char *option, const char *path, size_t rows, const c
 static int read_model(const struct hb_options *o, struct hb_model *md)
 {
     size_t n = 0, cols = 0, m = 0;
-    int status = read_dense("--mass", o->mass, 0, 0, &n, &cols, &md->M);
-    if (status == 0 && n != cols)
-        status = cli_file_error("--mass", o->mass, 0, "%zu x %zu: not square", n, cols);
+    int status = cli_read_mtx("--mass", o->mass, 0, 0, &md->M);
+    n = md->M.rows;
+    if (status == 0 && n != md->M.cols)
+        status = cli_file_error("--mass", o->mass, 0, "%zu x %zu: not square", n, md->M.cols);
     if (status == 0)
-        status = read_dense("--stiffness", o->stiffness, n, n, &n, &cols, &md->K);
+        status = cli_read_mtx("--stiffness", o->stiffness, n, n, &md->K);
     if (status == 0 && o->damping != NULL)
-        status = read_dense("--damping", o->damping, n, n, &n, &cols, &md->C);
+        status = cli_read_mtx("--damping", o->damping, n, n, &md->C);
     if (status == 0)
         status = read_dense("--jenkins", o->jenkins, 0, n, &m, &cols, &md->J);
     md->n = n;
@@ -178,14 +173,24 @@ static int refused(const fricreg_hb *hb, const char *option, const char *path)
     return cli_file_error(option, path, 0, "%s", fricreg_hb_errmsg(hb));
 }
 
+/* A matrix file's flags for the _csc setters: zero-based, whole or its lower triangle. */
+static int sparse_flags(const struct cli_sparse *A)
+{
+    return A->lower ? FRICREG_SPARSE_LOWER : 0;
+}
+
 static int set_model(const struct hb_options *o, const struct hb_model *md, fricreg_hb *hb)
 {
     size_t n = md->n;
-    if (fricreg_hb_set_mass(hb, n, md->M) != FRICREG_OK)
+    const struct cli_sparse *M = &md->M, *K = &md->K, *C = &md->C;
+    if (fricreg_hb_set_mass_csc(hb, n, sparse_flags(M), M->colptr, M->rowind, M->values) !=
+        FRICREG_OK)
         return refused(hb, "--mass", o->mass);
-    if (fricreg_hb_set_stiffness(hb, n, md->K) != FRICREG_OK)
+    if (fricreg_hb_set_stiffness_csc(hb, n, sparse_flags(K), K->colptr, K->rowind, K->values) !=
+        FRICREG_OK)
         return refused(hb, "--stiffness", o->stiffness);
-    if (md->C != NULL && fricreg_hb_set_damping(hb, n, md->C) != FRICREG_OK)
+    if (C->colptr != NULL && fricreg_hb_set_damping_csc(hb, n, sparse_flags(C), C->colptr,
+                                                        C->rowind, C->values) != FRICREG_OK)
         return refused(hb, "--damping", o->damping);
     if (o->rayleigh_given && fricreg_hb_set_rayleigh(hb, o->a0, o->a1) != FRICREG_OK)
         return cli_usage_error("--rayleigh", fricreg_hb_errmsg(hb));

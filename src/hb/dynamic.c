@@ -143,10 +143,15 @@ int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv)
     hb->factored_omega = NAN;
     int status = FRICREG_OK;
     for (int h = 0; h <= hb->H; h++) {
-        status = factor_one(hb, fn, h, omega);
+        if (hb->sparse) {
+            status = fr_hb_sparse_solve(hb, fn, h, omega);
+        } else {
+            status = factor_one(hb, fn, h, omega);
+            if (status == FRICREG_OK)
+                solve_columns(hb, h);
+        }
         if (status != FRICREG_OK)
             return status;
-        solve_columns(hb, h);
         const double *Y = hb->Y + 2 * (size_t)h * n * w;
         double *G = hb->G + 2 * (size_t)h * m * m, *q = hb->ql + 2 * (size_t)h * m;
         project(hb, NULL, Y, 1.0, G, q);
@@ -158,7 +163,10 @@ int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv)
             memset(dq, 0, 2 * m * sizeof(double));
             continue;
         }
-        derivative_times_y(hb, h, omega);
+        if (hb->sparse)
+            fr_hb_sparse_derivative(hb, h, omega);
+        else
+            derivative_times_y(hb, h, omega);
         project(hb, Y, hb->Z, -1.0, dG, dq);
     }
     if ((status = check_finite(hb, fn, omega)) != FRICREG_OK)

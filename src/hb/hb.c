@@ -8,9 +8,11 @@
 #include <string.h>
 
 #include "base/gsl_mem.h"
+#include "base/sparse_factor.h"
 #include "hb_internal.h"
 
-#define MAX_DOFS 4096
+#define MAX_DENSE_DOFS 4096
+#define MAX_DOFS ((size_t)1 << 24)
 #define MAX_ELEMENTS 256
 
 static void *alloc_doubles(size_t count)
@@ -41,26 +43,31 @@ int fricreg_hb_create(size_t ndof, size_t m, int harmonics, fricreg_hb **out)
                        .ds_max = 0.1,
                        .max_points = 2000,
                        .factored_omega = NAN};
-    hb->M = alloc_doubles(3 * n * n);
+    /* up to 4096 dofs the dense model, as the dense setters leave it; beyond, sparse only */
+    int dense = n <= MAX_DENSE_DOFS;
+    hb->M = dense ? calloc(3 * n * n, sizeof(double)) : NULL; /* untouched until set */
     hb->J = alloc_doubles(m * n + 2 * m + 2 * n);
-    hb->D = alloc_doubles(2 * n * n);
+    hb->D = dense ? alloc_doubles(2 * n * n) : NULL;
     hb->Y = alloc_doubles(2 * H1 * n * (m + 1));
     hb->Z = alloc_doubles(2 * n * (m + 1) + 2 * n);
     hb->G = alloc_doubles(4 * H1 * m * m + 4 * H1 * m);
     hb->fq = alloc_doubles(nq + m * nc * nc + (nq + 1) * (nq + 1) + 8 * (nq + 1) + nq);
-    hb->perm = fr_gsl_permutation_new(n);
+    hb->perm = dense ? fr_gsl_permutation_new(n) : NULL;
     hb->perm2 = fr_gsl_permutation_new(nq + 1);
     int status = fricreg_aft_create(harmonics, 0, &hb->aft);
-    if (!hb->M || !hb->J || !hb->D || !hb->Y || !hb->Z || !hb->G || !hb->fq || !hb->perm ||
-        !hb->perm2 || status != FRICREG_OK) {
+    int started = fr_cholmod_start(&hb->cc) == FRICREG_OK;
+    if ((dense && (!hb->M || !hb->D || !hb->perm)) || !hb->J || !hb->Y || !hb->Z || !hb->G ||
+        !hb->fq || !hb->perm2 || status != FRICREG_OK || !started ||
+        (!dense && fr_hb_sparse_defaults(hb) != FRICREG_OK)) {
         fricreg_hb_free(hb);
         return FRICREG_ENOMEM;
     }
-    hb->C = hb->M + n * n;
-    hb->K = hb->C + n * n;
-    memset(hb->M, 0, 3 * n * n * sizeof(double));
-    for (size_t k = 0; k < n; k++)
-        hb->M[k * n + k] = 1.0;
+    if (dense) {
+        hb->C = hb->M + n * n;
+        hb->K = hb->C + n * n;
+        for (size_t k = 0; k < n; k++)
+            hb->M[k * n + k] = 1.0;
+    }
     hb->kt = hb->J + m * n;
     hb->mun = hb->kt + m;
     hb->pc = hb->mun + m;
@@ -99,6 +106,8 @@ void fricreg_hb_free(fricreg_hb *hb)
     free(hb->perm2);
     free(hb->pts);
     fricreg_aft_free(hb->aft);
+    fr_hb_sparse_free(hb);
+    fr_cholmod_finish(&hb->cc);
     free(hb);
 }
 
@@ -117,8 +126,9 @@ static int check_ndof(fricreg_hb *hb, const char *fn, size_t ndof)
 }
 
 /* The symmetric-matrix setters' one check and copy: finite, symmetric to 1e-12 of the rows'
- * scales, its symmetric part into dst. */
-static int set_symmetric(fricreg_hb *hb, const char *fn, size_t ndof, const double *A, double *dst)
+ * scales, its symmetric part into dst (the dense model), or as matrix which (0 M, 1 C, 2 K)
+ * of the sparse one. */
+static int set_symmetric(fricreg_hb *hb, const char *fn, size_t ndof, const double *A, int which)
 {
     if (hb == NULL)
         return FRICREG_ENULL;
@@ -143,6 +153,9 @@ static int set_symmetric(fricreg_hb *hb, const char *fn, size_t ndof, const doub
                 return fr_fail(hb, FRICREG_ENOTSYM,
                                "%s: entries (%zu, %zu) = %g and (%zu, %zu) = %g", fn, i, k,
                                A[i * n + k], k, i, A[k * n + i]);
+    if (hb->sparse)
+        return fr_hb_sparse_set_dense(hb, fn, which, A);
+    double *dst = which == 0 ? hb->M : which == 1 ? hb->C : hb->K;
     for (size_t i = 0; i < n; i++)
         for (size_t k = 0; k < n; k++)
             dst[i * n + k] = 0.5 * A[i * n + k] + 0.5 * A[k * n + i]; /* no overflow near 1e308 */
@@ -152,17 +165,17 @@ static int set_symmetric(fricreg_hb *hb, const char *fn, size_t ndof, const doub
 
 int fricreg_hb_set_mass(fricreg_hb *hb, size_t ndof, const double M[])
 {
-    return set_symmetric(hb, "set_mass", ndof, M, hb ? hb->M : NULL);
+    return set_symmetric(hb, "set_mass", ndof, M, 0);
 }
 
 int fricreg_hb_set_stiffness(fricreg_hb *hb, size_t ndof, const double K[])
 {
-    return set_symmetric(hb, "set_stiffness", ndof, K, hb ? hb->K : NULL);
+    return set_symmetric(hb, "set_stiffness", ndof, K, 2);
 }
 
 int fricreg_hb_set_damping(fricreg_hb *hb, size_t ndof, const double C[])
 {
-    int status = set_symmetric(hb, "set_damping", ndof, C, hb ? hb->C : NULL);
+    int status = set_symmetric(hb, "set_damping", ndof, C, 1);
     if (status == FRICREG_OK)
         hb->rayleigh = 0;
     return status;

@@ -8,8 +8,11 @@
 #define FRICREG_HB_INTERNAL_H
 
 #include <stddef.h>
+#include <stdint.h>
 
+#include <cholmod.h>
 #include <gsl/gsl_permutation.h>
+#include <umfpack.h>
 
 #include "base/error.h"
 #include "fricreg_aft.h"
@@ -19,7 +22,7 @@ struct fricreg_hb {
     size_t n, m;       /* dofs, elements */
     int H;             /* harmonics */
     size_t nc, nq;     /* 2H + 1 coefficients, m nc unknowns */
-    double *M, *C, *K; /* [n n] each, row-major, symmetric */
+    double *M, *C, *K; /* [n n] each, row-major, symmetric (dense models; NULL above 4096) */
     int rayleigh;      /* C = a0 M + a1 K instead of the matrix C */
     double a0, a1;
     double *J, *kt, *mun; /* [m n], [m], [m] */
@@ -46,6 +49,23 @@ struct fricreg_hb {
     double *dG;            /* [(H+1) m m] complex: dG_h/dΩ */
     double *dql;           /* [(H+1) m] complex: dql_h/dΩ */
     double *colw;          /* [n] complex scratch: one column */
+
+    /* The sparse model (sparse.c): M, C, K as the upper triangles of their symmetric parts,
+     * and D_h's pattern, the union of theirs with both triangles (compressed columns, rows
+     * sorted), with each matrix's values on it; UMFPACK's analysis of that pattern (once per
+     * pattern) and one numeric factor at a time (per harmonic and frequency). */
+    int sparse;                   /* the model is sparse: dense setters convert to it */
+    cholmod_common cc;            /* fr_cholmod_start's: the setters' conversions */
+    cholmod_sparse *Ms, *Cs, *Ks; /* upper triangles (stype 1) */
+    int64_t *Dp, *Di;             /* [n + 1], [dnz]: the pattern of D_h */
+    size_t dnz;
+    double *vM, *vC, *vK; /* [dnz] each: M, C, K on that pattern */
+    double *Dx, *Dz;      /* [dnz] each: D_h's real and imaginary parts */
+    int64_t *Wi;          /* [n] umfpack_zl_wsolve's workspace */
+    double *W;            /* [10 n] its workspace, then Bx, Bz, Xx, Xz [n] each */
+    void *symbolic;       /* umfpack_zl_symbolic's, NULL: none yet */
+    double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
+    double lu_entries; /* nnz(L) + nnz(U) of the last factor */
 
     /* Newton (residual.c, newton.c, continuation.c) */
     double *fq;             /* [nq] element force coefficients at the last evaluation */
@@ -76,6 +96,23 @@ struct fricreg_hb {
 /* Factors D_h(omega) for h = 0..H and forms Y, G, ql (and dG, dql when deriv); keeps them
  * while omega stays. FRICREG_OK or FRICREG_ESINGULAR (message recorded, with fn). */
 int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv);
+
+/* Factors the sparse D_h at omega (its values formed from vM, vC, vK) and solves for Y_h's
+ * columns, the factor then freed. FRICREG_OK, FRICREG_ESINGULAR, FRICREG_ENONFINITE,
+ * FRICREG_ENOMEM (message recorded, with fn). */
+int fr_hb_sparse_solve(fricreg_hb *hb, const char *fn, int h, double omega);
+
+/* Z = D_h' Y_h on the sparse pattern, D_h' = −2 h² Ω M + i h C. */
+void fr_hb_sparse_derivative(fricreg_hb *hb, int h, double omega);
+
+/* Switches a dense driver to the sparse model (its M, C, K converted) and sets the model's
+ * defaults for a sparse-only one; frees the sparse state. */
+int fr_hb_sparse_defaults(fricreg_hb *hb);
+void fr_hb_sparse_free(fricreg_hb *hb);
+
+/* The dense setters' path on a sparse model: the checked, symmetric dense A installed as
+ * matrix which (0 M, 1 C, 2 K). */
+int fr_hb_sparse_set_dense(fricreg_hb *hb, const char *fn, int which, const double *A);
 
 /* The real LU solve of Newton's matrix A[nd nd] (factored in place) for rhs[nd] into sol[nd]
  * (may alias rhs). FRICREG_OK or FRICREG_ESINGULAR (a pivot below 1e-14 of the matrix's

@@ -1,0 +1,387 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* sparse.c — the harmonic-balance driver's sparse model (fricreg_hb.h): the _csc setters, the
+ * pattern of the dynamic stiffness D_h = K − (hΩ)² M + i hΩ C (the union of M's, C's and
+ * K's, both triangles, assembled once per pattern with each matrix's values on it), and its
+ * factorization by SuiteSparse's UMFPACK, complex (umfpack_zl_*: D_h is complex symmetric,
+ * not Hermitian, and indefinite above the first resonance, so CHOLMOD's Cholesky does not
+ * apply): the analysis once per pattern, a numeric LU per harmonic and frequency, freed once
+ * Y_h = D_h^-1 [J^T | P_h] is solved (Y_h is what the displacements need later). UMFPACK
+ * prints nothing (print level 0) and its solves use a workspace held here (umfpack_zl_wsolve,
+ * which does not allocate); its analysis and factors allocate through SuiteSparse_config. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/matrix_input.h"
+#include "base/sparse_factor.h"
+#include "hb_internal.h"
+
+/* ---- The pattern --------------------------------------------------------------------------- */
+
+struct entry {
+    int64_t row;
+    int which; /* 0 M, 1 C, 2 K */
+    double value;
+};
+
+static int by_row(const void *a, const void *b)
+{
+    const struct entry *x = a, *y = b;
+    if (x->row != y->row)
+        return x->row < y->row ? -1 : 1;
+    return x->which - y->which;
+}
+
+/* The new pattern's arrays, built before anything of the driver changes. */
+struct pattern {
+    int64_t *Dp, *Di;
+    size_t dnz;
+    double *v; /* vM, vC, vK, Dx, Dz: [5 dnz] */
+    int64_t *Wi;
+    double *W; /* [14 n] */
+};
+
+static void pattern_free(struct pattern *p)
+{
+    free(p->Dp);
+    free(p->Di);
+    free(p->v);
+    free(p->Wi);
+    free(p->W);
+}
+
+/* The union of X[0..2]'s patterns (upper triangles, stype 1) with both triangles, rows sorted
+ * in each column, and each matrix's values on it. FRICREG_OK or FRICREG_ENOMEM. */
+static int build_pattern(size_t n, cholmod_sparse *const X[3], struct pattern *p)
+{
+    *p = (struct pattern){0};
+    size_t total = 0;
+    int64_t *start = calloc(n + 1, sizeof *start);
+    if (start == NULL)
+        return FRICREG_ENOMEM;
+    for (int x = 0; x < 3; x++) {
+        const SuiteSparse_long *Ap = X[x]->p, *Ai = X[x]->i, *Anz = X[x]->nz;
+        for (size_t j = 0; j < n; j++) {
+            SuiteSparse_long end = X[x]->packed ? Ap[j + 1] : Ap[j] + Anz[j];
+            for (SuiteSparse_long q = Ap[j]; q < end; q++) {
+                start[j + 1]++;
+                total++;
+                if ((size_t)Ai[q] != j) {
+                    start[Ai[q] + 1]++;
+                    total++;
+                }
+            }
+        }
+    }
+    for (size_t j = 0; j < n; j++)
+        start[j + 1] += start[j];
+    struct entry *e = malloc((total ? total : 1) * sizeof *e);
+    int64_t *fill = malloc((n ? n : 1) * sizeof *fill);
+    if (e == NULL || fill == NULL) {
+        free(start);
+        free(e);
+        free(fill);
+        return FRICREG_ENOMEM;
+    }
+    memcpy(fill, start, n * sizeof *fill);
+    for (int x = 0; x < 3; x++) {
+        const SuiteSparse_long *Ap = X[x]->p, *Ai = X[x]->i, *Anz = X[x]->nz;
+        const double *Ax = X[x]->x;
+        for (size_t j = 0; j < n; j++) {
+            SuiteSparse_long end = X[x]->packed ? Ap[j + 1] : Ap[j] + Anz[j];
+            for (SuiteSparse_long q = Ap[j]; q < end; q++) {
+                size_t i = (size_t)Ai[q];
+                e[fill[j]++] = (struct entry){(int64_t)i, x, Ax[q]};
+                if (i != j)
+                    e[fill[i]++] = (struct entry){(int64_t)j, x, Ax[q]};
+            }
+        }
+    }
+    free(fill);
+    size_t dnz = 0;
+    for (size_t j = 0; j < n; j++) {
+        qsort(e + start[j], (size_t)(start[j + 1] - start[j]), sizeof *e, by_row);
+        for (int64_t q = start[j]; q < start[j + 1]; q++)
+            dnz += q == start[j] || e[q].row != e[q - 1].row;
+    }
+    p->dnz = dnz;
+    p->Dp = malloc((n + 1) * sizeof *p->Dp);
+    p->Di = malloc((dnz ? dnz : 1) * sizeof *p->Di);
+    p->v = calloc(5 * (dnz ? dnz : 1), sizeof *p->v);
+    p->Wi = malloc(n * sizeof *p->Wi);
+    p->W = malloc(14 * n * sizeof *p->W);
+    if (!p->Dp || !p->Di || !p->v || !p->Wi || !p->W) {
+        free(start);
+        free(e);
+        pattern_free(p);
+        return FRICREG_ENOMEM;
+    }
+    size_t k = 0;
+    for (size_t j = 0; j < n; j++) {
+        p->Dp[j] = (int64_t)k;
+        for (int64_t q = start[j]; q < start[j + 1]; q++) {
+            if (q == start[j] || e[q].row != e[q - 1].row)
+                p->Di[k++] = e[q].row;
+            p->v[(size_t)e[q].which * dnz + k - 1] = e[q].value;
+        }
+    }
+    p->Dp[n] = (int64_t)k;
+    free(start);
+    free(e);
+    return FRICREG_OK;
+}
+
+/* Installs the matrices X[0..2] (M, C, K; each either the driver's own or new) with their
+ * pattern: the driver's old matrices not kept are freed. On failure the new ones are freed
+ * and nothing changes. */
+static int install(fricreg_hb *hb, const char *fn, cholmod_sparse *X[3])
+{
+    cholmod_sparse **own[3] = {&hb->Ms, &hb->Cs, &hb->Ks};
+    struct pattern p;
+    int status = build_pattern(hb->n, X, &p);
+    if (status != FRICREG_OK) {
+        for (int x = 0; x < 3; x++)
+            if (X[x] != *own[x])
+                cholmod_l_free_sparse(&X[x], &hb->cc);
+        return fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for the dynamic stiffness's pattern", fn);
+    }
+    for (int x = 0; x < 3; x++)
+        if (X[x] != *own[x]) {
+            cholmod_l_free_sparse(own[x], &hb->cc);
+            *own[x] = X[x];
+        }
+    free(hb->Dp);
+    free(hb->Di);
+    free(hb->vM);
+    free(hb->Wi);
+    free(hb->W);
+    hb->Dp = p.Dp;
+    hb->Di = p.Di;
+    hb->dnz = p.dnz;
+    size_t d = p.dnz ? p.dnz : 1;
+    hb->vM = p.v;
+    hb->vC = p.v + d;
+    hb->vK = p.v + 2 * d;
+    hb->Dx = p.v + 3 * d;
+    hb->Dz = p.v + 4 * d;
+    hb->Wi = p.Wi;
+    hb->W = p.W;
+    if (hb->symbolic != NULL)
+        umfpack_zl_free_symbolic(&hb->symbolic);
+    if (!hb->sparse) { /* for good: the dense model's memory is not needed again */
+        free(hb->M);
+        free(hb->D);
+        free(hb->perm);
+        hb->M = hb->C = hb->K = hb->D = NULL;
+        hb->perm = NULL;
+        umfpack_zl_defaults(hb->control);
+        hb->control[UMFPACK_PRL] = 0; /* nothing printed */
+        hb->sparse = 1;
+    }
+    hb->factored_omega = NAN;
+    hb->have_solution = 0;
+    return FRICREG_OK;
+}
+
+void fr_hb_sparse_free(fricreg_hb *hb)
+{
+    cholmod_l_free_sparse(&hb->Ms, &hb->cc);
+    cholmod_l_free_sparse(&hb->Cs, &hb->cc);
+    cholmod_l_free_sparse(&hb->Ks, &hb->cc);
+    free(hb->Dp);
+    free(hb->Di);
+    free(hb->vM);
+    free(hb->Wi);
+    free(hb->W);
+    if (hb->symbolic != NULL)
+        umfpack_zl_free_symbolic(&hb->symbolic);
+}
+
+/* A zero n x n upper triangle, or the identity. */
+static cholmod_sparse *simple(fricreg_hb *hb, int identity)
+{
+    cholmod_sparse *S = identity ? cholmod_l_speye(hb->n, hb->n, CHOLMOD_REAL, &hb->cc)
+                                 : cholmod_l_spzeros(hb->n, hb->n, 0, CHOLMOD_REAL, &hb->cc);
+    if (S != NULL)
+        S->stype = 1;
+    return S;
+}
+
+int fr_hb_sparse_defaults(fricreg_hb *hb)
+{
+    cholmod_sparse *X[3] = {simple(hb, 1), simple(hb, 0), simple(hb, 0)};
+    if (!X[0] || !X[1] || !X[2]) {
+        for (int x = 0; x < 3; x++)
+            cholmod_l_free_sparse(&X[x], &hb->cc);
+        return FRICREG_ENOMEM;
+    }
+    return install(hb, "create", X);
+}
+
+/* The dense driver's matrix which (checked when it was set) as an upper triangle. */
+static int from_dense(fricreg_hb *hb, const char *fn, int which, cholmod_sparse **out)
+{
+    const double *A = which == 0 ? hb->M : which == 1 ? hb->C : hb->K;
+    return fr_dense_to_cholmod(hb->n, hb->n, A, 1, &hb->cc, out, &hb->err, fn);
+}
+
+/* S becomes matrix which; a dense driver's other two are converted first. */
+static int replace(fricreg_hb *hb, const char *fn, int which, cholmod_sparse *S)
+{
+    cholmod_sparse *X[3] = {hb->Ms, hb->Cs, hb->Ks};
+    X[which] = S;
+    if (!hb->sparse)
+        for (int x = 0; x < 3; x++) {
+            if (x == which)
+                continue;
+            X[x] = NULL;
+            if (from_dense(hb, fn, x, &X[x]) != FRICREG_OK) {
+                for (int y = 0; y < 3; y++)
+                    cholmod_l_free_sparse(&X[y], &hb->cc);
+                return fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for the sparse model", fn);
+            }
+        }
+    return install(hb, fn, X);
+}
+
+int fr_hb_sparse_set_dense(fricreg_hb *hb, const char *fn, int which, const double *A)
+{
+    cholmod_sparse *S = NULL;
+    int status = fr_dense_to_cholmod(hb->n, hb->n, A, 1, &hb->cc, &S, &hb->err, fn);
+    return status != FRICREG_OK ? status : replace(hb, fn, which, S);
+}
+
+static int set_csc(fricreg_hb *hb, const char *fn, int which, size_t ndof, int flags,
+                   const int64_t colptr[], const int64_t rowind[], const double values[])
+{
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    if (ndof != hb->n)
+        return fr_fail(hb, FRICREG_ESIZE, "%s: ndof = %zu, the driver has %zu", fn, ndof, hb->n);
+    struct fr_compressed a = {ndof, ndof, 1, flags, colptr, rowind, values};
+    int status = fr_compressed_check(&a, 1, &hb->err, fn);
+    cholmod_sparse *S = NULL;
+    if (status == FRICREG_OK)
+        status = fr_compressed_to_cholmod(&a, 1, &hb->cc, &S, &hb->err, fn);
+    return status != FRICREG_OK ? status : replace(hb, fn, which, S);
+}
+
+int fricreg_hb_set_mass_csc(fricreg_hb *hb, size_t ndof, int flags, const int64_t colptr[],
+                            const int64_t rowind[], const double values[])
+{
+    return set_csc(hb, "set_mass_csc", 0, ndof, flags, colptr, rowind, values);
+}
+
+int fricreg_hb_set_damping_csc(fricreg_hb *hb, size_t ndof, int flags, const int64_t colptr[],
+                               const int64_t rowind[], const double values[])
+{
+    int status = set_csc(hb, "set_damping_csc", 1, ndof, flags, colptr, rowind, values);
+    if (status == FRICREG_OK)
+        hb->rayleigh = 0;
+    return status;
+}
+
+int fricreg_hb_set_stiffness_csc(fricreg_hb *hb, size_t ndof, int flags, const int64_t colptr[],
+                                 const int64_t rowind[], const double values[])
+{
+    return set_csc(hb, "set_stiffness_csc", 2, ndof, flags, colptr, rowind, values);
+}
+
+/* ---- The factor and the solves ------------------------------------------------------------- */
+
+static double damping(const fricreg_hb *hb, size_t p)
+{
+    return hb->rayleigh ? hb->a0 * hb->vM[p] + hb->a1 * hb->vK[p] : hb->vC[p];
+}
+
+static int umfpack_failed(fricreg_hb *hb, const char *fn, const char *what, int status)
+{
+    if (status == UMFPACK_ERROR_out_of_memory)
+        return fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for UMFPACK's %s of D_h", fn, what);
+    return fr_fail(hb, FRICREG_EINVAL, "%s: UMFPACK's %s of D_h failed (status %d)", fn, what,
+                   status);
+}
+
+int fr_hb_sparse_solve(fricreg_hb *hb, const char *fn, int h, double omega)
+{
+    size_t n = hb->n, m = hb->m, w = m + 1;
+    double wh = h * omega, dmax = 0.0;
+    for (size_t p = 0; p < hb->dnz; p++) {
+        hb->Dx[p] = hb->vK[p] - wh * wh * hb->vM[p];
+        hb->Dz[p] = wh * damping(hb, p);
+        dmax = fmax(dmax, fabs(hb->vK[p]) + wh * wh * fabs(hb->vM[p]) + fabs(hb->Dz[p]));
+    }
+    if (!isfinite(dmax))
+        return fr_fail(hb, FRICREG_ENONFINITE,
+                       "%s: the dynamic stiffness D_%d overflows at Omega = %g (|K| + w^2 |M| + w "
+                       "|C| beyond the double range)",
+                       fn, h, omega);
+    const SuiteSparse_long *Dp = (const SuiteSparse_long *)hb->Dp,
+                           *Di = (const SuiteSparse_long *)hb->Di;
+    int status;
+    if (hb->symbolic == NULL) {
+        status = (int)umfpack_zl_symbolic((SuiteSparse_long)n, (SuiteSparse_long)n, Dp, Di, NULL,
+                                          NULL, &hb->symbolic, hb->control, hb->info);
+        if (status != UMFPACK_OK) {
+            hb->symbolic = NULL;
+            return umfpack_failed(hb, fn, "analysis", status);
+        }
+    }
+    void *numeric = NULL;
+    status = (int)umfpack_zl_numeric(Dp, Di, hb->Dx, hb->Dz, hb->symbolic, &numeric, hb->control,
+                                     hb->info);
+    if (status != UMFPACK_OK && status != UMFPACK_WARNING_singular_matrix) {
+        umfpack_zl_free_numeric(&numeric);
+        return umfpack_failed(hb, fn, "LU factor", status);
+    }
+    double rcond = hb->info[UMFPACK_RCOND];
+    if (status == UMFPACK_WARNING_singular_matrix || !(rcond > 1e-14)) {
+        umfpack_zl_free_numeric(&numeric);
+        return fr_fail(hb, FRICREG_ESINGULAR,
+                       "%s: %s is singular at Omega = %g (UMFPACK's LU factor: smallest over "
+                       "largest pivot %g)",
+                       fn, h == 0 ? "K" : "the dynamic stiffness D_h", omega, rcond);
+    }
+    hb->lu_entries = hb->info[UMFPACK_LNZ] + hb->info[UMFPACK_UNZ];
+    double *Y = hb->Y + 2 * (size_t)h * n * w;
+    double *Bx = hb->W + 10 * n, *Bz = Bx + n, *Xx = Bz + n, *Xz = Xx + n;
+    for (size_t e = 0; e <= m; e++) {
+        if (e == m && h != 1) {
+            for (size_t k = 0; k < n; k++)
+                Y[2 * (k * w + e)] = Y[2 * (k * w + e) + 1] = 0.0;
+            continue;
+        }
+        for (size_t k = 0; k < n; k++) {
+            Bx[k] = e < m ? hb->J[e * n + k] : hb->pc[k];
+            Bz[k] = e < m ? 0.0 : -hb->ps[k];
+        }
+        umfpack_zl_wsolve(UMFPACK_A, Dp, Di, hb->Dx, hb->Dz, Xx, Xz, Bx, Bz, numeric, hb->control,
+                          hb->info, (SuiteSparse_long *)hb->Wi, hb->W);
+        for (size_t k = 0; k < n; k++) {
+            Y[2 * (k * w + e)] = Xx[k];
+            Y[2 * (k * w + e) + 1] = Xz[k];
+        }
+    }
+    umfpack_zl_free_numeric(&numeric);
+    return FRICREG_OK;
+}
+
+void fr_hb_sparse_derivative(fricreg_hb *hb, int h, double omega)
+{
+    size_t n = hb->n, w = hb->m + 1;
+    const double *Y = hb->Y + 2 * (size_t)h * n * w;
+    memset(hb->Z, 0, 2 * n * w * sizeof(double));
+    for (size_t j = 0; j < n; j++)
+        for (int64_t p = hb->Dp[j]; p < hb->Dp[j + 1]; p++) {
+            size_t i = (size_t)hb->Di[p];
+            double re = -2.0 * h * h * omega * hb->vM[p], im = h * damping(hb, (size_t)p);
+            if (re == 0.0 && im == 0.0)
+                continue;
+            for (size_t c = 0; c < w; c++) {
+                const double *y = Y + 2 * (j * w + c);
+                double *z = hb->Z + 2 * (i * w + c);
+                z[0] += re * y[0] - im * y[1];
+                z[1] += re * y[1] + im * y[0];
+            }
+        }
+}
