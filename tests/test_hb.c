@@ -295,16 +295,16 @@ static void against_time_domain(const struct model *s, const double *omegas, int
 START_TEST(oscillator_against_time_domain)
 {
     struct model s = oscillator();
-    const double omegas[4] = {1.2, 1.5, 1.7, 2.1};
-    against_time_domain(&s, omegas, 4, 100);
+    const double omegas[5] = {1.2, 1.35, 1.5, 1.7, 2.1};
+    against_time_domain(&s, omegas, 5, 100);
 }
 END_TEST
 
 START_TEST(chain_against_time_domain)
 {
     struct model s = chain();
-    const double omegas[3] = {1.0, 1.3, 1.6};
-    against_time_domain(&s, omegas, 3, 100);
+    const double omegas[5] = {1.0, 1.15, 1.3, 1.45, 1.6};
+    against_time_domain(&s, omegas, 5, 100);
 }
 END_TEST
 
