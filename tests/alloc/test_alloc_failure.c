@@ -1500,7 +1500,7 @@ static void hb_observe(void *obj, struct view *v)
     fricreg_hb *hb = obj;
     const double M[4] = {1.3, 0.0, 0.0, 0.9}, K[4] = {4.2, -1.7, -1.7, 2.385}, J[2] = {0.0, 1.0};
     const double kt[1] = {1.5}, mun[1] = {0.25}, pc[2] = {0.6, 0.0}, ps[2] = {0.0, 0.125};
-    double q[7], x[14], rms[2], omega;
+    double q[7] = {0}, x[14] = {0}, rms[2] = {0}, omega = 0.0; /* left by a failed call */
     see(v, fricreg_hb_set_mass(hb, 2, M));
     see(v, fricreg_hb_set_stiffness(hb, 2, K));
     see(v, fricreg_hb_set_rayleigh(hb, 0.05, 0.01));
@@ -1549,7 +1549,7 @@ static int hb_sparse_call(void *obj, int i, struct view *v)
 
 static void hb_sparse_observe(void *obj, struct view *v)
 {
-    double q[7], x[14];
+    double q[7] = {0}, x[14] = {0}; /* a failed call leaves them: the view must read the same */
     see(v, fricreg_hb_solve(obj, 1.1, 7, NULL, q));
     see_all(v, q, 7);
     see(v, fricreg_hb_displacement(obj, 2, 7, x));
