@@ -17,7 +17,7 @@
 #define TOL_PER_EPS 1e-2
 
 /* The loosest level a velocity is held to, atol_v + rtol x 1 (no relative part under the rule
- * from eps), into *level; 0 for a fixed-step run. */
+ * from eps); 0 for a fixed-step run. */
 static double velocity_level(const fricreg_sim *sim, double eps)
 {
     if (!(sim->rtol > 0.0 || sim->atol > 0.0 || sim->atol_from_eps || sim->atol_vec != NULL))

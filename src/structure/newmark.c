@@ -261,6 +261,12 @@ static int start_at(fricreg_structure *s, double dt, const gsl_vector *guess,
     return FRICREG_OK;
 }
 
+/* Law (4) with a diagonal W: the stick guess solves the band's own law (stick_guess). */
+static int law_exact(const fricreg_structure *s)
+{
+    return s->w_diagonal && fr_ctx_law(s->ctx) == FRICREG_LAW_QUINN;
+}
+
 /* Newton's first guess where the start's forces are not within the tolerance: those forces,
  * but for the contacts whose force at t is below their bound (law (4): in its band, for (3)
  * and tanh every contact), S, which take new forces, the others R keeping theirs.
@@ -284,12 +290,6 @@ static int start_at(fricreg_structure *s, double dt, const gsl_vector *guess,
  * so that the guess's products are f's and df's, one product. Into s->ft and its products
  * into s->at_ft; returns 0 if there is none, else 1 (2 for law_exact). Uses s->stopped as the
  * marks of S, and s->zdot (the start's residual) unless law_exact. */
-/* Law (4) with a diagonal W: the stick guess solves the band's own law (stick_guess). */
-static int law_exact(const fricreg_structure *s)
-{
-    return s->w_diagonal && fr_ctx_law(s->ctx) == FRICREG_LAW_QUINN;
-}
-
 static int stick_guess(fricreg_structure *s)
 {
     size_t m = s->m, k = 0;
