@@ -3,6 +3,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 
+#include "error.h"
 #include "fricreg.h"
 #include "warning.h"
 
@@ -43,4 +44,20 @@ void fr_warn(struct fr_warnings *list, int code, const char *fmt, ...)
     vsnprintf(list->w[list->n].msg, sizeof list->w[list->n].msg, fmt, ap);
     va_end(ap);
     list->w[list->n++].code = code;
+}
+
+int fr_warnings_get(const struct fr_warnings *list, size_t k, int *code, char *buf, size_t len)
+{
+    if (code == NULL)
+        return FRICREG_ENULL;
+    if (k >= list->n)
+        return FRICREG_EINVAL;
+    *code = list->w[k].code;
+    fr_error_copy(list->w[k].msg, buf, len);
+    return FRICREG_OK;
+}
+
+const char *fr_warnings_message(const struct fr_warnings *list, size_t k)
+{
+    return k < list->n ? list->w[k].msg : "";
 }

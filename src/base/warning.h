@@ -28,4 +28,12 @@ void fr_warn(struct fr_warnings *list, int code, const char *fmt, ...)
 #endif
     ;
 
+/* Entry k of the list: its code into *code and its message into buf[len], NUL-terminated and
+ * truncated to fit (nothing written if buf is NULL or len is 0). FRICREG_OK; FRICREG_ENULL if
+ * code is NULL; FRICREG_EINVAL if k is not below the count (nothing written). */
+int fr_warnings_get(const struct fr_warnings *list, size_t k, int *code, char *buf, size_t len);
+
+/* Entry k's message, or "" if k is not below the count. */
+const char *fr_warnings_message(const struct fr_warnings *list, size_t k);
+
 #endif

@@ -4,7 +4,6 @@
  * never changes a result: the checks only read. */
 #include <math.h>
 
-#include "base/error.h"
 #include "sim_internal.h"
 
 /* An adaptive run's velocity tolerance against eps. GSL holds a body velocity to
@@ -59,16 +58,10 @@ size_t fricreg_sim_warning_count(fricreg_sim *sim)
 
 const char *fricreg_sim_warning_message(const fricreg_sim *sim, size_t k)
 {
-    return sim != NULL && k < sim->warnings.n ? sim->warnings.w[k].msg : "";
+    return sim != NULL ? fr_warnings_message(&sim->warnings, k) : "";
 }
 
 int fricreg_sim_get_warning(const fricreg_sim *sim, size_t k, int *code, char *buf, size_t len)
 {
-    if (sim == NULL || code == NULL)
-        return FRICREG_ENULL;
-    if (k >= sim->warnings.n)
-        return FRICREG_EINVAL;
-    *code = sim->warnings.w[k].code;
-    fr_error_copy(sim->warnings.w[k].msg, buf, len);
-    return FRICREG_OK;
+    return sim != NULL ? fr_warnings_get(&sim->warnings, k, code, buf, len) : FRICREG_ENULL;
 }

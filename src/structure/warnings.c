@@ -224,17 +224,11 @@ size_t fricreg_structure_warning_count(fricreg_structure *s)
 
 const char *fricreg_structure_warning_message(const fricreg_structure *s, size_t k)
 {
-    return s != NULL && k < s->warnings.n ? s->warnings.w[k].msg : "";
+    return s != NULL ? fr_warnings_message(&s->warnings, k) : "";
 }
 
 int fricreg_structure_get_warning(const fricreg_structure *s, size_t k, int *code, char *buf,
                                   size_t len)
 {
-    if (s == NULL || code == NULL)
-        return FRICREG_ENULL;
-    if (k >= s->warnings.n)
-        return FRICREG_EINVAL;
-    *code = s->warnings.w[k].code;
-    fr_error_copy(s->warnings.w[k].msg, buf, len);
-    return FRICREG_OK;
+    return s != NULL ? fr_warnings_get(&s->warnings, k, code, buf, len) : FRICREG_ENULL;
 }
