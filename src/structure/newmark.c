@@ -130,9 +130,12 @@ static int form_step_factor(fricreg_structure *s, double dt)
     return FRICREG_OK;
 }
 
-/* The largest entry of |J|^T mun, on the degrees of freedom J touches (through s->spread). */
+/* The largest entry of |J|^T mun, on the degrees of freedom J touches (through s->spread):
+ * formed once for J and the bounds (s->bound_scale). */
 static double bound_scale(fricreg_structure *s)
 {
+    if (s->bound_scale >= 0.0)
+        return s->bound_scale;
     const SuiteSparse_long *Jp = s->Jt->p, *Ji = s->Jt->i;
     const double *Jx = s->Jt->x;
     double *r = s->spread->data, big = 0.0;
@@ -144,6 +147,7 @@ static double bound_scale(fricreg_structure *s)
             big = fmax(big, r[Ji[p]]);
             r[Ji[p]] = 0.0;
         }
+    s->bound_scale = big;
     return big;
 }
 
@@ -261,7 +265,7 @@ static int start_at(fricreg_structure *s, double dt, const gsl_vector *guess,
     return FRICREG_OK;
 }
 
-/* Law (4) with a diagonal W: the stick guess solves the band's own law (stick_guess). */
+/* Law (4) with a diagonal W: the stick guess solves the band's own law (band_guess). */
 static int law_exact(const fricreg_structure *s)
 {
     return s->w_diagonal && fr_ctx_law(s->ctx) == FRICREG_LAW_QUINN;
@@ -277,59 +281,80 @@ static int law_exact(const fricreg_structure *s)
  * ten-storey building (examples/building/) at eps = 1e-4 m/s and dt = 0.01 s that was 12
  * iterations a step through its 5 s of free vibration, all ten dampers sticking.
  * The forces on S:
- *   - law (4) with a diagonal W (law_exact = 1): those of the band's own affine piece, where
- *     the law is W_ii f_i + a_free,i + k_i zdot_i = 0 with k_i = 2 mun_i W_ii/eps (the free
- *     near-stick row of fr_ctx_tangent_rows; W f cancels against a_free's -W f):
+ *   - law (4) with a diagonal W (law_exact = 1, band_guess): those of the band's own affine
+ *     piece, where the law is W_ii f_i + a_free,i + k_i zdot_i = 0 with k_i = 2 mun_i W_ii/eps
+ *     (the free near-stick row of fr_ctx_tangent_rows; W f cancels against a_free's -W f):
  *       (1 + c k_i) [W_eff f]_i = -a0_i - k_i z0_i,   i in S.
  *     Where S and R are what the law makes of the result, this is the step's solution to
  *     rounding (newton: no Newton iteration after it);
- *   - otherwise, the forces that keep S's velocities over the step, zdot_S(f) = zdot_S(t).
+ *   - otherwise (hold_guess), the forces that keep S's velocities over the step,
+ *     zdot_S(f) = zdot_S(t).
  * W_eff,SS is positive definite unless contacts of S depend on each other (equal rows of J):
- * then no guess. As a change df_S of the start's forces f, whose products are s->at_start,
- *   W_eff,SS df_S = rhs_S - [W_eff f]_S,
- * so that the guess's products are f's and df's, one product. Into s->ft and its products
- * into s->at_ft; returns 0 if there is none, else 1 (2 for law_exact). Uses s->stopped as the
- * marks of S, and s->zdot (the start's residual) unless law_exact. */
-static int stick_guess(fricreg_structure *s)
+ * then no guess. The guess goes into s->ft and its products into s->at_ft; each returns 0 if
+ * there is none. s->stopped holds the marks of S (mark_below_bound: their number). */
+static size_t mark_below_bound(fricreg_structure *s)
 {
-    size_t m = s->m, k = 0;
-    unsigned char *set = s->stopped;
-    double *f = s->f->data, *guess = s->ft->data, *df = s->mwork->data, *b = s->mwork2->data;
-    for (size_t i = 0; i < m; i++) {
-        set[i] = fabs(f[i]) < s->mun[i];
-        k += set[i];
-        df[i] = 0.0;
+    size_t k = 0;
+    for (size_t i = 0; i < s->m; i++) {
+        s->stopped[i] = fabs(s->f->data[i]) < s->mun[i];
+        k += s->stopped[i];
     }
-    if (k == 0)
-        return 0;
+    return k;
+}
+
+/* law_exact's guess, solved for the forces themselves: W_eff,SS f_S = rhs_S - W_eff,SR f_R.
+ * With every contact in S (all sticking) that is one solve and one product, the guess's. */
+static int band_guess(fricreg_structure *s, size_t k)
+{
+    size_t m = s->m;
+    const unsigned char *set = s->stopped;
+    const double *f = s->f->data, *w = fr_ctx_coupling_diagonal(s->ctx);
+    double *guess = s->ft->data, *b = s->mwork2->data, *weff_r = s->mwork->data;
+    for (size_t i = 0; i < m; i++)
+        guess[i] = set[i] ? 0.0 : f[i];
+    if (k < m) /* W_eff f_R: what the kept forces do to S */
+        fr_cfactor_compliance(&s->step, guess, weff_r);
     double c = (1.0 + s->alpha) * s->gamma * s->step_dt;
-    const double *weff_f = s->at_start.weff->data;
-    int exact = law_exact(s);
-    if (exact) {
-        const double *w = fr_ctx_coupling_diagonal(s->ctx);
-        double two_over_eps = 2.0 / fr_ctx_eps(s->ctx);
-        for (size_t i = 0; i < m; i++) {
-            double ki = s->mun[i] * w[i] * two_over_eps;
-            b[i] = (-s->af0->data[i] - ki * s->z0->data[i]) / (1.0 + c * ki) - weff_f[i];
-        }
-    } else {
-        fr_csc_mult_t(s->Jt, s->v->data, b); /* zdot(t) */
-        for (size_t i = 0; i < m; i++)
-            b[i] = (b[i] - s->zdot->data[i]) / c;
+    double two_over_eps = 2.0 / fr_ctx_eps(s->ctx);
+    for (size_t i = 0; i < m; i++) {
+        double ki = s->mun[i] * w[i] * two_over_eps;
+        b[i] = (-s->af0->data[i] - ki * s->z0->data[i]) / (1.0 + c * ki);
+        if (k < m)
+            b[i] -= weff_r[i];
     }
-    if (fr_newton_stick_solve(&s->newton, s->step.D, set, b, df, &s->cc) != FRICREG_OK)
+    if (fr_newton_stick_solve(&s->newton, s->step.D, set, b, guess, &s->cc) != FRICREG_OK)
+        return 0; /* guess_S is then not read */
+    form_products(s, guess, &s->at_ft);
+    return 1;
+}
+
+/* The other laws' guess (and law (4)'s with a coupled W), as a change df_S of the start's
+ * forces f, whose products are s->at_start: W_eff,SS df_S = (zdot_S(t) - zdot_S(f))/c, so
+ * that the guess's products are f's and df's, one product. Reads the start's residual
+ * (s->zdot). */
+static int hold_guess(fricreg_structure *s)
+{
+    size_t m = s->m;
+    double *f = s->f->data, *guess = s->ft->data, *df = s->mwork->data, *b = s->mwork2->data;
+    double c = (1.0 + s->alpha) * s->gamma * s->step_dt;
+    memset(df, 0, m * sizeof *df);
+    fr_csc_mult_t(s->Jt, s->v->data, b); /* zdot(t) */
+    for (size_t i = 0; i < m; i++)
+        b[i] = (b[i] - s->zdot->data[i]) / c;
+    if (fr_newton_stick_solve(&s->newton, s->step.D, s->stopped, b, df, &s->cc) != FRICREG_OK)
         return 0;
     for (size_t i = 0; i < m; i++)
         guess[i] = f[i] + df[i];
     form_products(s, df, &s->at_ft);
     combine_products(&s->at_start, 1.0, &s->at_ft, &s->at_ft);
-    return exact ? 2 : 1;
+    return 1;
 }
 
 /* Newton from the forces at the step's start or, where they are not within tol, the stick
  * guess if its residual is smaller: returns a status, and *converged and *iters. With law (4)
  * and a diagonal W the guess comes first, before the start's residual: where it is within
- * tol it is the step's solution (one iteration counted, no more made).
+ * tol it is the step's solution (one iteration counted, no more made), and the start's
+ * products and residual are not formed.
  * On return the context's last evaluation and s->f1 are at fk. Slipping contacts are
  * stopped at zdot = 0 (first_trial). Where a stop ends on a kink of the law (zdot = 0 is the
  * band's edge when |f_eq| >= mun) the line search can stall there: Newton then starts again
@@ -337,11 +362,12 @@ static int stick_guess(fricreg_structure *s)
 static int newton(fricreg_structure *s, double dt, int *converged, int *iters)
 {
     double phi = 0.0, rinf = 0.0, phi_guess = 0.0;
-    form_products(s, s->f->data, &s->at_start);
     double tol = s->newton_tol * force_scale(s);
     int guess = 0, status;
     *iters = 0;
-    if (law_exact(s) && (guess = stick_guess(s)) != 0) { /* needs no residual at the start */
+    size_t below = mark_below_bound(s);
+    if (law_exact(s) && below > 0 && (guess = band_guess(s, below)) != 0) {
+        /* needs no residual at the start */
         if ((status = start_at(s, dt, s->ft, &s->at_ft, &phi, &rinf)) != FRICREG_OK)
             return status;
         if (rinf <= tol) { /* the law's own solution on its piece: a Newton step, converged */
@@ -352,14 +378,15 @@ static int newton(fricreg_structure *s, double dt, int *converged, int *iters)
         }
         phi_guess = phi;
     }
+    form_products(s, s->f->data, &s->at_start);
     if ((status = start_at(s, dt, s->f, &s->at_start, &phi, &rinf)) != FRICREG_OK)
         return status;
     if (rinf > tol) { /* Newton from the guess where its residual is the smaller */
         double phi_start = phi;
-        if (guess != 0) { /* law_exact's, evaluated above */
+        if (guess != 0) { /* band_guess's, evaluated above */
             if (phi_guess < phi_start)
                 status = start_at(s, dt, s->ft, &s->at_ft, &phi, &rinf);
-        } else if (stick_guess(s)) { /* reads the start's residual */
+        } else if (!law_exact(s) && below > 0 && hold_guess(s)) { /* reads the start's residual */
             status = start_at(s, dt, s->ft, &s->at_ft, &phi, &rinf);
             if (status == FRICREG_OK && !(phi < phi_start))
                 status = start_at(s, dt, s->f, &s->at_start, &phi, &rinf);

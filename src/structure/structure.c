@@ -105,6 +105,7 @@ int fricreg_structure_create(size_t ndof, size_t m, fricreg_structure **out)
     }
     for (size_t i = 0; i < m; i++)
         s->mun[i] = 1.0;
+    s->bound_scale = -1.0;
     s->alpha = 0.0;
     s->beta = 0.25;
     s->gamma = 0.5;
@@ -196,6 +197,7 @@ int fricreg_structure_set_bounds(fricreg_structure *s, size_t m, const double mu
     if (status != FRICREG_OK)
         return ctx_failed(s, status);
     memcpy(s->mun, mun, m * sizeof *mun);
+    s->bound_scale = -1.0;
     s->ready = 0; /* W is unchanged: only the equilibrium at t is recomputed */
     return FRICREG_OK;
 }

@@ -56,6 +56,7 @@ struct fricreg_structure {
     struct fr_record ground, load; /* load.n == 0: g = 1 */
     fricreg_ctx *ctx;              /* law, eps, bounds; coupling set by fr_structure_prepare */
     double *mun;                   /* [m] the bounds, for the force scale */
+    double bound_scale;            /* the largest entry of |J|^T mun (< 0: to be formed) */
 
     /* Integrator. */
     int scheme; /* FR_SCHEME_* */
