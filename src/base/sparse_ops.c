@@ -41,6 +41,24 @@ void fr_sym_mult_pair(const double y0[], const cholmod_sparse *A, double alpha, 
     }
 }
 
+void fr_sym_mult_combined(const double y0[], const cholmod_sparse *S, double alpha,
+                          const double x[], double beta, const double z[], double out[])
+{
+    const SuiteSparse_long *Sp = S->p, *Si = S->i;
+    const double *Sx = S->x;
+    for (size_t j = 0; j < S->ncol; j++) {
+        double wj = alpha * x[j] + beta * z[j], sum = 0.0;
+        out[j] = y0[j]; /* column j is the first to reach out[j]: later ones add above it */
+        for (SuiteSparse_long p = Sp[j]; p < Sp[j + 1]; p++) {
+            size_t i = (size_t)Si[p];
+            if (i != j)
+                out[i] += Sx[p] * wj;
+            sum += Sx[p] * (alpha * x[i] + beta * z[i]);
+        }
+        out[j] += sum;
+    }
+}
+
 double fr_sym_bilinear(const cholmod_sparse *S, const double x[], const double y[])
 {
     const SuiteSparse_long *Sp = S->p, *Si = S->i;

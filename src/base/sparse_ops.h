@@ -15,6 +15,12 @@ void fr_sym_mult(const cholmod_sparse *S, double alpha, const double x[], double
 void fr_sym_mult_pair(const double y0[], const cholmod_sparse *A, double alpha, const double x[],
                       const cholmod_sparse *B, double beta, const double z[], double out[]);
 
+/* out[n] = y0[n] + S (alpha x[n] + beta z[n]) for a symmetric S stored as its upper triangle,
+ * in one pass over S (out must not overlap the inputs): Rayleigh's C v + K u = K (u + a1 v) +
+ * a0 M v with one product with K. */
+void fr_sym_mult_combined(const double y0[], const cholmod_sparse *S, double alpha,
+                          const double x[], double beta, const double z[], double out[]);
+
 /* x^T S y for a symmetric S stored as its upper triangle: one pass over S, no scratch. */
 double fr_sym_bilinear(const cholmod_sparse *S, const double x[], const double y[]);
 

@@ -151,13 +151,28 @@ static double bound_scale(fricreg_structure *s)
     return big;
 }
 
+/* The largest entry of |M a| and of |p~1|: one pass where M is lumped (its upper triangle
+ * holds n entries, which M's positive definiteness puts on the diagonal). */
+static double inertia_scale(fricreg_structure *s)
+{
+    const double *a = s->a->data, *p1 = s->ptil1->data;
+    if ((size_t)((const SuiteSparse_long *)s->M->p)[s->n] == s->n) {
+        const double *Mx = s->M->x;
+        double big = 0.0;
+        for (size_t k = 0; k < s->n; k++)
+            big = fr_max_abs(fr_max_abs(big, Mx[k] * a[k]), p1[k]);
+        return big;
+    }
+    fr_sym_mult(s->M, 1.0, a, 0.0, s->work->data);
+    return fmax(fr_norm_inf(s->work), fr_norm_inf(s->ptil1));
+}
+
 /* The step's force scale: the largest entry of |M a| and |C v + K u - p~ - J^T f| at its
  * start (hist: HHT only; for Newmark it is -M a to Newton's tolerance), |p~1| at its end, and
  * |J|^T mun. */
 static double force_scale(fricreg_structure *s)
 {
-    fr_sym_mult(s->M, 1.0, s->a->data, 0.0, s->work->data);
-    double scale = fmax(fr_norm_inf(s->work), fr_norm_inf(s->ptil1));
+    double scale = inertia_scale(s);
     if (s->alpha != 0.0)
         scale = fmax(scale, fr_norm_inf(s->hist));
     scale = fmax(scale, bound_scale(s));

@@ -67,11 +67,18 @@ void fr_structure_spread_norms(fricreg_structure *s, double scale, const gsl_vec
     *norm_inf = big;
 }
 
-/* w = p~ - C v - K u */
+/* w = p~ - C v - K u; with Rayleigh's C, p~ - K (u + a1 v) - a0 M v: one pass over K, not
+ * two (with a lumped M the second product is a diagonal's). */
 void fr_structure_net_force(const fricreg_structure *s, const gsl_vector *ptil, const gsl_vector *u,
                             const gsl_vector *v, gsl_vector *w)
 {
-    fr_sym_mult_pair(ptil->data, s->Cd, -1.0, v->data, s->K, -1.0, u->data, w->data);
+    if (!s->rayleigh) {
+        fr_sym_mult_pair(ptil->data, s->Cd, -1.0, v->data, s->K, -1.0, u->data, w->data);
+        return;
+    }
+    fr_sym_mult_combined(ptil->data, s->K, -1.0, u->data, -s->a1, v->data, w->data);
+    if (s->a0 != 0.0)
+        fr_sym_mult(s->M, -s->a0, v->data, 1.0, w->data);
 }
 
 int fr_structure_equilibrium(fricreg_structure *s)
