@@ -413,6 +413,15 @@ expect_usage_error "^fricreg-sim: --omega-end: missing" hb --mass $d/M.mtx --sti
 expect_usage_error "^fricreg-sim: --jenkins-params: missing" hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --jenkins $d/J.mtx --omega-start 1 --omega-end 2
 expect_usage_error "^fricreg-sim: --jenkins-params $d/P1.txt: line 1: " hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --jenkins $d/J.mtx --jenkins-params $d/P1.txt --omega-start 1 --omega-end 2
 expect_usage_error "^fricreg-sim: --harmonics: " $hb --harmonics 41
+expect_usage_error "^fricreg-sim: --newton-tol: .*tol" $hb --newton-tol 2
+expect_usage_error "^fricreg-sim: --newton-max: " $hb --newton-max 0
+# A looser Newton tolerance reaches the same peak: the rule is passed on (1e-6 of q's scale)
+total=$((total + 1))
+"$sim" $hb --newton-tol 1e-6 --newton-max 20 >"$d/loose.json" 2>"$d/err"
+if ! sed 's/.*"peak_rms": \([^,]*\), "peak_omega": \([^}]*\)}.*/\1 \2/' "$d/loose.json" |
+        awk '{ exit !($1 > 0.99 * 3.9284 && $1 < 1.01 * 3.9284 && $2 > 1.485 && $2 < 1.515) }'; then
+    echo "FAIL: hb --newton-tol 1e-6: $(cat "$d/loose.json" "$d/err")"; fails=$((fails + 1))
+fi
 expect_usage_error "^fricreg-sim: --rayleigh: give --damping or --rayleigh" hb --mass $d/M.mtx --stiffness $d/K.mtx --damping $d/K.mtx --rayleigh 0,0.02 --excitation $d/F.txt --jenkins $d/J.mtx --jenkins-params $d/P.txt --omega-start 1 --omega-end 2
 expect_usage_error "^fricreg-sim: --excitation $d/J.mtx" hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/J.mtx --jenkins $d/J.mtx --jenkins-params $d/P.txt --omega-start 1 --omega-end 2
 

@@ -20,8 +20,8 @@ static const struct cli_word hb_outputs[] = {{"summary", HB_SUMMARY}, {"frf", HB
 
 struct hb_options {
     const char *mass, *stiffness, *damping, *excitation, *jenkins, *params;
-    int rayleigh_given, harmonics, output, omega_start_given, omega_end_given;
-    double a0, a1, omega_start, omega_end;
+    int rayleigh_given, harmonics, output, omega_start_given, omega_end_given, newton_max;
+    double a0, a1, omega_start, omega_end, newton_tol;
 };
 
 /* The model: M, K, C (C.colptr NULL: Rayleigh or none) n x n as the files' compressed
@@ -71,7 +71,11 @@ static int check_options(const struct hb_options *o)
 
 static int parse_hb(int argc, char **argv, struct hb_options *o)
 {
-    *o = (struct hb_options){.harmonics = 7, .output = HB_SUMMARY};
+    /* Newton's rule: the driver's defaults (fricreg_hb_set_newton) */
+    *o = (struct hb_options){.harmonics = 7,
+                             .output = HB_SUMMARY,
+                             .newton_tol = 1e-10,
+                             .newton_max = 50};
     const struct cli_option opts[] = {
         {"--mass", CLI_FILE, .slot = &o->mass},
         {"--stiffness", CLI_FILE, .slot = &o->stiffness},
@@ -83,6 +87,8 @@ static int parse_hb(int argc, char **argv, struct hb_options *o)
         {"--harmonics", CLI_WHOLE, .slot = &o->harmonics, .lo = 1, .hi = FRICREG_HB_MAX_HARMONICS},
         {"--omega-start", CLI_POSITIVE, .slot = &o->omega_start, .given = &o->omega_start_given},
         {"--omega-end", CLI_POSITIVE, .slot = &o->omega_end, .given = &o->omega_end_given},
+        {"--newton-tol", CLI_POSITIVE, .slot = &o->newton_tol},
+        {"--newton-max", CLI_WHOLE, .slot = &o->newton_max, .lo = 1, .hi = 1000},
         {"--output", CLI_CHOICE, .slot = &o->output, .words = hb_outputs}};
     int status = cli_parse_options(argc, argv, opts, sizeof opts / sizeof opts[0], "hb");
     return status != 0 ? status : check_options(o);
@@ -196,6 +202,8 @@ static int set_model(const struct hb_options *o, const struct hb_model *md, fric
         return cli_usage_error("--rayleigh", fricreg_hb_errmsg(hb));
     if (fricreg_hb_set_elements(hb, md->m, n, md->J, md->kt, md->mun) != FRICREG_OK)
         return refused(hb, "--jenkins-params", o->params);
+    if (fricreg_hb_set_newton(hb, o->newton_tol, o->newton_max) != FRICREG_OK)
+        return cli_usage_error("--newton-tol", fricreg_hb_errmsg(hb));
     if (fricreg_hb_set_excitation(hb, n, md->pc, md->ps) != FRICREG_OK)
         return refused(hb, "--excitation", o->excitation);
     return 0;

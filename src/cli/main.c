@@ -15,30 +15,30 @@ static void usage(FILE *out)
     char names[256];
     struct cli_run defaults;
     cli_parse_run(FRICREG_SYSTEM_OSCILLATOR, 0, NULL, &defaults);
-    fputs(
-        "usage: fricreg-sim oscillator|chain|twoblock [options]\n"
-        "       fricreg-sim exact [--a --omega --mun --x0 --v0] [--t-end T | --cycles N]\n"
-        "       fricreg-sim reproduce --out DIR\n"
-        "       fricreg-sim structure --mass M.mtx --stiffness K.mtx [--damping C.mtx |\n"
-        "           --rayleigh A0,A1] --contacts J.mtx --mun MUN.txt [--influence R.mtx]\n"
-        "           [--ground-accel FILE] [--law L] [--eps E] --integrator newmark|hht|\n"
-        "           central|<GSL stepper> [--alpha A] [--rtol R --atol A] --dt DT --t-end T\n"
-        "           [--max-steps N] [--output summary|trajectory]   (docs/structural.md)\n"
-        "       fricreg-sim hb --mass M.mtx --stiffness K.mtx [--damping C.mtx |\n"
-        "           --rayleigh A0,A1] --excitation F.txt --jenkins J.mtx --jenkins-params\n"
-        "           P.txt [--harmonics H] --omega-start W0 --omega-end W1\n"
-        "           [--output summary|frf]   harmonic balance, Jenkins elements (docs/joints.md)\n"
-        "       fricreg-sim hold [--mu --mass --g --theta-deg --phi-deg --dt --eps --steps]\n"
-        "           [--tilt-rate DEG_PER_S]   block on an incline: creep (m/s), break-away\n"
-        "       fricreg-sim belt [--fs --fk --vs --delta --v-belt --dt --eps --cycles --ref-dt]\n"
-        "           Stribeck belt oscillator: limit-cycle period, amplitude vs event-driven\n"
-        "       fricreg-sim disk [--law quinn|quinn-lens|quinn-nested|coulomb|force-balance]\n"
-        "           [--a --omega --dt --eps --ref-eps]   2-D oscillator, D per forcing cycle\n"
-        "           (these three: --output summary|trajectory; docs/laws2d.md)\n"
-        "       fricreg-sim --help | --version\n"
-        "\n"
-        "Common options (defaults in brackets):\n",
-        out);
+    fputs("usage: fricreg-sim oscillator|chain|twoblock [options]\n"
+          "       fricreg-sim exact [--a --omega --mun --x0 --v0] [--t-end T | --cycles N]\n"
+          "       fricreg-sim reproduce --out DIR\n"
+          "       fricreg-sim structure --mass M.mtx --stiffness K.mtx [--damping C.mtx |\n"
+          "           --rayleigh A0,A1] --contacts J.mtx --mun MUN.txt [--influence R.mtx]\n"
+          "           [--ground-accel FILE] [--law L] [--eps E] --integrator newmark|hht|\n"
+          "           central|<GSL stepper> [--alpha A] [--rtol R --atol A] --dt DT --t-end T\n"
+          "           [--max-steps N] [--output summary|trajectory]   (docs/structural.md)\n"
+          "       fricreg-sim hb --mass M.mtx --stiffness K.mtx [--damping C.mtx |\n"
+          "           --rayleigh A0,A1] --excitation F.txt --jenkins J.mtx --jenkins-params\n"
+          "           P.txt [--harmonics H] --omega-start W0 --omega-end W1 [--newton-tol TOL]\n"
+          "           [--newton-max N] [--output summary|frf]   harmonic balance, Jenkins\n"
+          "           elements (docs/joints.md)\n"
+          "       fricreg-sim hold [--mu --mass --g --theta-deg --phi-deg --dt --eps --steps]\n"
+          "           [--tilt-rate DEG_PER_S]   block on an incline: creep (m/s), break-away\n"
+          "       fricreg-sim belt [--fs --fk --vs --delta --v-belt --dt --eps --cycles --ref-dt]\n"
+          "           Stribeck belt oscillator: limit-cycle period, amplitude vs event-driven\n"
+          "       fricreg-sim disk [--law quinn|quinn-lens|quinn-nested|coulomb|force-balance]\n"
+          "           [--a --omega --dt --eps --ref-eps]   2-D oscillator, D per forcing cycle\n"
+          "           (these three: --output summary|trajectory; docs/laws2d.md)\n"
+          "       fricreg-sim --help | --version\n"
+          "\n"
+          "Common options (defaults in brackets):\n",
+          out);
     fprintf(out, "  --law %s   [%s]\n", cli_names(names, sizeof names, fricreg_law_name, "|"),
             fricreg_law_name(defaults.law));
     fprintf(out, "  --integrator %s [%s]\n",
