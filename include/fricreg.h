@@ -98,7 +98,9 @@ enum fricreg_warning {
     FRICREG_WARN_NEWTON_FAILURES = 7, /**< steps whose Newton iteration did not converge */
     FRICREG_WARN_NEWTON_SLOW = 8,     /**< more than 5 Newton iterations per step on average */
     FRICREG_WARN_ENERGY = 9,          /**< energy balance's residual above 1e-6 of its scale */
-    FRICREG_WARN_TOL_LOOSE = 10       /**< adaptive velocity tolerance above 0.01 eps */
+    FRICREG_WARN_TOL_LOOSE = 10,      /**< adaptive velocity tolerance above 0.01 eps */
+    FRICREG_WARN_STRIBECK_EPS = 11    /**< Stribeck delta < 1: band error (fs-fk)/fs (eps/vs)^delta
+                                       *   above 1e-2 */
 };
 
 /** Short fixed name of a warning code (enum fricreg_warning), e.g. "eps_large" for

@@ -16,7 +16,9 @@
  * exact stick while |f_eq| <= fs, break-away at |f_eq| = fs exactly; at |v| -> eps it is
  * -k(eps) sgn(v), so f is continuous (Lipschitz, for every delta > 0) in (v, f_eq); and as
  * eps -> 0 it converges pointwise to the set-valued law. With fs = fk it is law (4) (2-D:
- * FRICREG_DISK_QUINN) with mun = fk, bit for bit.
+ * FRICREG_DISK_QUINN) with mun = fk, bit for bit. The band's error relative to fs is of order
+ * (fs - fk)/fs (eps/vs)^delta: with delta < 1 it falls slower than eps (docs/laws2d.md,
+ * "Warnings: δ < 1"; fricreg-sim belt warns, FRICREG_WARN_STRIBECK_EPS).
  *
  * Conventions are fricreg.h's, and for 2-D fricreg_disk.h's (vectors of two doubles, arrays of
  * m vectors interleaved: contact i is (v[2*i], v[2*i + 1]); numbers at most 1e250). Since 1.2

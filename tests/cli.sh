@@ -485,6 +485,20 @@ if ! awk -v a="$(num period_error "$tmp/belt.json")" -v b="$(num period_error "$
         'BEGIN { exit !(b > 0 && d > 0 && a / b > 3 && c / d > 3) }'; then
     echo "FAIL: belt errors not second order: $(cat "$tmp/belt.json" "$tmp/belt2.json")"; fails=$((fails + 1))
 fi
+# Stribeck with delta < 1 (docs/laws2d.md, "Warnings"): the band's error (fs - fk)/fs
+# (eps/vs)^delta = 0.3 x 0.5 = 0.15 warns, once on stderr and in the JSON; at delta = 1 the
+# same run (0.075) and the defaults raise none.
+"$sim" belt --fs 1 --fk 0.7 --vs 0.02 --delta 0.5 --v-belt 0.1 --dt 0.0025 --eps 0.005 --cycles 3 >"$tmp/sb.json" 2>"$tmp/err"
+total=$((total + 1))
+if [ "$(grep -c '^fricreg-sim: warning: Stribeck delta = 0.5 < 1' "$tmp/err")" != 1 ] ||
+        ! grep -q '"warnings": \[{"code": "stribeck_eps", "message": "Stribeck delta = 0.5 < 1: .* = 0.15 and' "$tmp/sb.json"; then
+    echo "FAIL: belt delta 0.5 warning: $(cat "$tmp/err" "$tmp/sb.json")"; fails=$((fails + 1))
+fi
+"$sim" belt --fs 1 --fk 0.7 --vs 0.02 --delta 1 --v-belt 0.1 --dt 0.0025 --eps 0.005 --cycles 3 >"$tmp/sb1.json" 2>"$tmp/err"
+total=$((total + 1))
+if [ -s "$tmp/err" ] || ! grep -q '"warnings": \[\]}$' "$tmp/sb1.json" || ! grep -q '"warnings": \[\]}$' "$tmp/belt.json"; then
+    echo "FAIL: belt warned at delta = 1 or with its defaults: $(cat "$tmp/err" "$tmp/sb1.json")"; fails=$((fails + 1))
+fi
 expect_output '^t,x,v,f$' belt --output trajectory
 expect_usage_error "--fk" belt --fk 2
 expect_usage_error "--cycles" belt --cycles 1.5
