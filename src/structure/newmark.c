@@ -173,20 +173,8 @@ static double force_scale(fricreg_structure *s)
 static double first_trial(fricreg_structure *s)
 {
     double c = (1.0 + s->alpha) * s->gamma * s->step_dt;
-    const double *weff_df = s->at_df.weff->data;
-    double lambda = 1.0, eps = fr_ctx_eps(s->ctx);
-    size_t first = s->m;
-    for (size_t i = 0; i < s->m; i++) {
-        double z = s->zdot->data[i], z1 = z + c * weff_df[i];
-        if (!s->stopped[i] && s->mun[i] > 0.0 && s->newton.fz[i] == 0.0 && z * z1 < 0.0 &&
-            fabs(z1) >= eps && z / (z - z1) < lambda) {
-            lambda = z / (z - z1);
-            first = i;
-        }
-    }
-    if (first < s->m)
-        s->stopped[first] = 1;
-    return lambda;
+    return fr_newton_first_stop(s->m, s->zdot->data, s->at_df.weff->data, c, fr_ctx_eps(s->ctx),
+                                s->mun, s->newton.fz, s->stopped);
 }
 
 /* Backtracking on ||R||_2 along df from f, from the first trial (stop_slips) or from the full
@@ -305,18 +293,10 @@ static int stick_guess(fricreg_structure *s)
     double c = (1.0 + s->alpha) * s->gamma * s->step_dt;
     const double *weff_f = s->at_start.weff->data;
     int exact = law_exact(s);
-    if (exact) {
-        const double *w = fr_ctx_coupling_diagonal(s->ctx);
-        double two_over_eps = 2.0 / fr_ctx_eps(s->ctx);
-        for (size_t i = 0; i < m; i++) {
-            double ki = s->mun[i] * w[i] * two_over_eps;
-            b[i] = (-s->af0->data[i] - ki * s->z0->data[i]) / (1.0 + c * ki) - weff_f[i];
-        }
-    } else {
+    if (!exact)
         fr_csc_mult_t(s->Jt, s->v->data, b); /* zdot(t) */
-        for (size_t i = 0; i < m; i++)
-            b[i] = (b[i] - s->zdot->data[i]) / c;
-    }
+    fr_newton_stick_rhs(m, exact, c, fr_ctx_eps(s->ctx), s->mun, fr_ctx_coupling_diagonal(s->ctx),
+                        s->z0->data, s->af0->data, weff_f, b, s->zdot->data, b);
     if (fr_newton_stick_solve(&s->newton, s->step.D, set, b, df, &s->cc) != FRICREG_OK)
         return 0;
     for (size_t i = 0; i < m; i++)

@@ -1,0 +1,388 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* contact_step.c — fricreg_ctx_solve_step: the contact-space Newton of one implicit step
+ * (Newmark, HHT-alpha, a BDF) for a caller who keeps their own integrator and their own K_eff
+ * solve, with the safeguards of fricreg_structure's steps (newmark.c): the stick guess, the
+ * stop of a slipping contact at zdot = 0, and the backtracking line search.
+ *
+ * The caller's step makes the contacts' velocities and free accelerations affine in the forces
+ * (fricreg_structure.h, fricreg_ctx_solve_step):
+ *   zdot(f) = zdot_pred + c W_eff f,   a_free(f) = a_pred - (W - W_eff) f,
+ * and Newton solves G(f) = f - F(zdot(f), a_free(f)) = 0, F the context's law. The direction
+ * and the stick guess's solve are newton_matrix.c's, the first trial (the stop) and the stick
+ * guess's right-hand side newton_matrix.c's too, shared with newmark.c; what differs is where
+ * the residual is measured: here in the contact space, ||G||, where newmark.c reads the
+ * structure's residual R = w J^T G on its degrees of freedom. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/error.h"
+#include "base/sparse_factor.h"
+#include "base/sparse_ops.h"
+#include "ctx/ctx_driver.h"
+#include "fricreg_structure.h"
+#include "newton_matrix.h"
+
+#define ARMIJO 1e-4   /* sufficient decrease of ||G||_2, as newmark.c */
+#define MAX_CUTS 30   /* halvings of one Newton direction, as newmark.c */
+#define SYM_TOL 1e-12 /* |A_ij - A_ji| <= SYM_TOL sqrt(A_ii A_jj), as the context's setters */
+#define DENSE_FALLBACK_MAX 64
+
+struct products {
+    double *weff, *w; /* [m] W_eff f and W f */
+};
+
+struct step_solver {
+    size_t m;
+    fricreg_ctx *ctx;
+    double c;
+    const double *z0, *a0, *mun;
+    cholmod_common cc;
+    cholmod_sparse *W, *Weff; /* upper triangles, sorted */
+    struct fr_newton_matrix nm;
+    double *block; /* every vector below, one allocation */
+    double *f0, *fk, *ft, *df, *G, *Gt, *zdot, *afree, *F, *b;
+    struct products at_start, at_k, at_t, at_df, at_guess;
+    unsigned char *stopped;
+};
+
+static int fail(fricreg_ctx *ctx, int code, const char *what)
+{
+    return fr_error_set(fr_ctx_error(ctx), code, "solve_step: %s", what);
+}
+
+/* A's upper triangle (m x m, row-major) as CHOLMOD's symmetric upper form, the diagonal kept
+ * and the zeros above it left out; NULL when out of memory. */
+static cholmod_sparse *upper_of(const double A[], size_t m, cholmod_common *cc)
+{
+    size_t nnz = 0;
+    for (size_t j = 0; j < m; j++)
+        for (size_t i = 0; i <= j; i++)
+            nnz += i == j || A[i * m + j] != 0.0;
+    cholmod_sparse *S = cholmod_l_allocate_sparse(m, m, nnz, 1, 1, 1, CHOLMOD_REAL, cc);
+    if (S == NULL)
+        return NULL;
+    SuiteSparse_long *Sp = S->p, *Si = S->i, p = 0;
+    double *Sx = S->x;
+    for (size_t j = 0; j < m; j++) {
+        Sp[j] = p;
+        for (size_t i = 0; i <= j; i++)
+            if (i == j || A[i * m + j] != 0.0) {
+                Si[p] = (SuiteSparse_long)i;
+                Sx[p++] = A[i * m + j];
+            }
+    }
+    Sp[m] = p;
+    return S;
+}
+
+/* FRICREG_OK, FRICREG_ENOTSYM or FRICREG_ENOTPSD (a diagonal entry not above DBL_MIN). */
+static int check_symmetric(const double A[], size_t m)
+{
+    for (size_t i = 0; i < m; i++)
+        if (!(A[i * m + i] >= 0x1p-1022))
+            return FRICREG_ENOTPSD;
+    for (size_t i = 0; i < m; i++)
+        for (size_t j = i + 1; j < m; j++)
+            if (fabs(A[i * m + j] - A[j * m + i]) >
+                SYM_TOL * sqrt(A[i * m + i]) * sqrt(A[j * m + j]))
+                return FRICREG_ENOTSYM;
+    return FRICREG_OK;
+}
+
+static int all_finite(const double x[], size_t n)
+{
+    for (size_t k = 0; k < n; k++)
+        if (!isfinite(x[k]))
+            return 0;
+    return 1;
+}
+
+static void products_of(struct step_solver *s, const double f[], struct products *p)
+{
+    fr_sym_mult(s->Weff, 1.0, f, 0.0, p->weff);
+    fr_sym_mult(s->W, 1.0, f, 0.0, p->w);
+}
+
+static void combine(const struct step_solver *s, const struct products *a, double lambda,
+                    const struct products *b, struct products *p)
+{
+    for (size_t i = 0; i < s->m; i++) {
+        p->weff[i] = a->weff[i] + lambda * b->weff[i];
+        p->w[i] = a->w[i] + lambda * b->w[i];
+    }
+}
+
+static void copy_products(const struct step_solver *s, const struct products *from,
+                          struct products *to)
+{
+    memcpy(to->weff, from->weff, s->m * sizeof *to->weff);
+    memcpy(to->w, from->w, s->m * sizeof *to->w);
+}
+
+/* G = f - F(zdot(f), a_free(f)) from f and its products, ||G||_2 into *phi and ||G||_inf into
+ * *rinf; the context's status (its eval's). */
+static int residual(struct step_solver *s, const double f[], const struct products *p, double G[],
+                    double *phi, double *rinf)
+{
+    size_t m = s->m;
+    for (size_t i = 0; i < m; i++) {
+        s->zdot[i] = s->z0[i] + s->c * p->weff[i];
+        s->afree[i] = s->a0[i] + (p->weff[i] - p->w[i]); /* as newmark.c: the difference first */
+    }
+    int status = fricreg_ctx_eval(s->ctx, m, s->zdot, s->afree, s->F, NULL);
+    if (status != FRICREG_OK)
+        return status;
+    double big = 0.0, scale = 0.0, sum = 1.0;
+    for (size_t i = 0; i < m; i++) {
+        G[i] = f[i] - s->F[i];
+        double a = fabs(G[i]);
+        big = fmax(big, a);
+        if (a > 0.0) { /* the 2-norm without overflow (LAPACK's dnrm2 recurrence) */
+            if (scale < a) {
+                sum = 1.0 + sum * (scale / a) * (scale / a);
+                scale = a;
+            } else {
+                sum += (a / scale) * (a / scale);
+            }
+        }
+    }
+    *phi = scale * sqrt(sum);
+    *rinf = big;
+    return FRICREG_OK;
+}
+
+/* fk = x (products p) and its residual. */
+static int start_at(struct step_solver *s, const double x[], const struct products *p,
+                    double *phi, double *rinf)
+{
+    memcpy(s->fk, x, s->m * sizeof *s->fk);
+    copy_products(s, p, &s->at_k);
+    return residual(s, s->fk, &s->at_k, s->G, phi, rinf);
+}
+
+/* Law (4) with a diagonal W: the stick guess solves the band's own piece (newmark.c). */
+static int law_exact(const struct step_solver *s)
+{
+    if (fr_ctx_law(s->ctx) != FRICREG_LAW_QUINN)
+        return 0;
+    const SuiteSparse_long *Wp = s->W->p;
+    return Wp[s->m] == (SuiteSparse_long)s->m; /* the diagonal alone */
+}
+
+/* The stick guess of newmark.c's stick_guess into s->ft, its products into at_guess: 0 if
+ * there is none, 1 (2 for law_exact). Reads s->zdot (the start's residual) unless law_exact. */
+static int stick_guess(struct step_solver *s, const double zstart[])
+{
+    size_t m = s->m, k = 0;
+    for (size_t i = 0; i < m; i++) {
+        s->stopped[i] = fabs(s->f0[i]) < s->mun[i];
+        k += s->stopped[i];
+        s->df[i] = 0.0;
+    }
+    if (k == 0)
+        return 0;
+    int exact = law_exact(s);
+    fr_newton_stick_rhs(m, exact, s->c, fr_ctx_eps(s->ctx), s->mun,
+                        fr_ctx_coupling_diagonal(s->ctx), s->z0, s->a0, s->at_start.weff, zstart,
+                        s->zdot, s->b);
+    if (fr_newton_stick_solve(&s->nm, s->Weff, s->stopped, s->b, s->df, &s->cc) != FRICREG_OK)
+        return 0;
+    for (size_t i = 0; i < m; i++)
+        s->ft[i] = s->f0[i] + s->df[i];
+    products_of(s, s->df, &s->at_guess);
+    combine(s, &s->at_start, 1.0, &s->at_guess, &s->at_guess);
+    return exact ? 2 : 1;
+}
+
+/* Backtracking on ||G||_2 from the first trial (stops) or the full step; plain: the full step
+ * taken whatever it gives. 1 if a point was accepted (fk, G, the context's evaluation there). */
+static int line_search(struct step_solver *s, int safeguarded, int stops, double *phi,
+                       double *rinf)
+{
+    double lambda = 1.0;
+    if (stops)
+        lambda = fr_newton_first_stop(s->m, s->zdot, s->at_df.weff, s->c, fr_ctx_eps(s->ctx),
+                                      s->mun, s->nm.fz, s->stopped);
+    for (int cut = 0; cut <= (safeguarded ? MAX_CUTS : 0); cut++) {
+        for (size_t i = 0; i < s->m; i++)
+            s->ft[i] = s->fk[i] + lambda * s->df[i];
+        combine(s, &s->at_k, lambda, &s->at_df, &s->at_t);
+        double phi_t, rinf_t;
+        int status = residual(s, s->ft, &s->at_t, s->Gt, &phi_t, &rinf_t);
+        if (status == FRICREG_OK && (!safeguarded || phi_t <= (1.0 - ARMIJO * lambda) * *phi)) {
+            struct products accepted = s->at_t;
+            s->at_t = s->at_k;
+            s->at_k = accepted;
+            memcpy(s->fk, s->ft, s->m * sizeof *s->fk);
+            memcpy(s->G, s->Gt, s->m * sizeof *s->G);
+            *phi = phi_t;
+            *rinf = rinf_t;
+            return 1;
+        }
+        lambda *= 0.5;
+    }
+    return 0;
+}
+
+/* Newton from fk until ||G||_inf <= tol (at least one iteration unless G = 0), the iterations
+ * run out or the line search stalls. FRICREG_ENOMEM only. */
+static int iterate(struct step_solver *s, double tol, int max_iter, int safeguarded, int stops,
+                   double *phi, double *rinf, int *iters)
+{
+    int done = 0;
+    while (*rinf != 0.0 && (done == 0 || *rinf > tol) && *iters < max_iter) {
+        if (!isfinite(*phi))
+            break;
+        int status = fr_newton_direction(&s->nm, s->ctx, s->c, s->W, s->Weff, s->G, s->df, &s->cc);
+        if (status == FRICREG_ENOMEM)
+            return status;
+        if (status != FRICREG_OK)
+            break; /* a singular tangent: the step ends here, not converged */
+        ++*iters;
+        ++done;
+        products_of(s, s->df, &s->at_df);
+        if (!line_search(s, safeguarded, stops, phi, rinf)) {
+            if (residual(s, s->fk, &s->at_k, s->G, phi, rinf) != FRICREG_OK)
+                *phi = NAN; /* the point was evaluated before: cannot happen */
+            break;
+        }
+    }
+    return FRICREG_OK;
+}
+
+/* Newton as newmark.c's newton(), or plain (full steps from f0, no guess). */
+static int solve(struct step_solver *s, const double zstart[], double tol, int max_iter,
+                 int plain, int *converged, int *iters)
+{
+    double phi = 0.0, rinf = 0.0, phi_guess = 0.0;
+    int guess = 0, status;
+    *iters = 0;
+    products_of(s, s->f0, &s->at_start);
+    if (!plain && law_exact(s) && (guess = stick_guess(s, zstart)) != 0) {
+        if ((status = start_at(s, s->ft, &s->at_guess, &phi, &rinf)) != FRICREG_OK)
+            return status;
+        if (rinf <= tol) {
+            *iters = 1;
+            *converged = 1;
+            return FRICREG_OK;
+        }
+        phi_guess = phi;
+    }
+    if ((status = start_at(s, s->f0, &s->at_start, &phi, &rinf)) != FRICREG_OK)
+        return status;
+    if (!plain && rinf > tol) {
+        double phi_start = phi;
+        if (guess != 0) {
+            if (phi_guess < phi_start)
+                status = start_at(s, s->ft, &s->at_guess, &phi, &rinf);
+        } else if (stick_guess(s, zstart)) {
+            status = start_at(s, s->ft, &s->at_guess, &phi, &rinf);
+            if (status == FRICREG_OK && !(phi < phi_start))
+                status = start_at(s, s->f0, &s->at_start, &phi, &rinf);
+        }
+        if (status != FRICREG_OK)
+            return status;
+    }
+    memset(s->stopped, 0, s->m);
+    if ((status = iterate(s, tol, max_iter, !plain, !plain, &phi, &rinf, iters)) != FRICREG_OK)
+        return status;
+    if (!plain && rinf > tol && isfinite(phi) && *iters < max_iter) {
+        if ((status = start_at(s, s->f0, &s->at_start, &phi, &rinf)) != FRICREG_OK ||
+            (status = iterate(s, tol, max_iter, 1, 0, &phi, &rinf, iters)) != FRICREG_OK)
+            return status;
+    }
+    *converged = rinf <= tol;
+    return isfinite(phi) ? FRICREG_OK : FRICREG_EDIVERGED;
+}
+
+static int allocate(struct step_solver *s, const double W[], const double Weff[])
+{
+    size_t m = s->m;
+    if (fr_cholmod_start(&s->cc) != FRICREG_OK)
+        return FRICREG_ENOMEM;
+    s->W = upper_of(W, m, &s->cc);
+    s->Weff = upper_of(Weff, m, &s->cc);
+    enum { VECTORS = 20 };
+    s->block = malloc(VECTORS * m * sizeof *s->block);
+    s->stopped = malloc(m);
+    if (s->W == NULL || s->Weff == NULL || s->block == NULL || s->stopped == NULL)
+        return FRICREG_ENOMEM;
+    double **v[VECTORS] = {&s->f0,          &s->fk,          &s->ft,         &s->df,
+                           &s->G,           &s->Gt,          &s->zdot,       &s->afree,
+                           &s->F,           &s->b,           &s->at_start.weff, &s->at_start.w,
+                           &s->at_k.weff,   &s->at_k.w,      &s->at_t.weff,  &s->at_t.w,
+                           &s->at_df.weff,  &s->at_df.w,     &s->at_guess.weff, &s->at_guess.w};
+    for (size_t k = 0; k < VECTORS; k++)
+        *v[k] = s->block + k * m;
+    return fr_newton_matrix_prepare(&s->nm, s->Weff, m <= DENSE_FALLBACK_MAX, &s->cc);
+}
+
+static void release(struct step_solver *s)
+{
+    fr_newton_matrix_free(&s->nm, &s->cc);
+    cholmod_l_free_sparse(&s->W, &s->cc);
+    cholmod_l_free_sparse(&s->Weff, &s->cc);
+    free(s->block);
+    free(s->stopped);
+    fr_cholmod_finish(&s->cc);
+}
+
+int fricreg_ctx_solve_step(fricreg_ctx *ctx, size_t m, const double zdot_start[],
+                           const double zdot_pred[], const double a_pred[], const double W[],
+                           const double Weff[], double c, double tol, int max_iter, int flags,
+                           double f[], int info[])
+{
+    if (ctx == NULL)
+        return FRICREG_ENULL;
+    if (zdot_start == NULL || zdot_pred == NULL || a_pred == NULL || W == NULL || Weff == NULL ||
+        f == NULL || info == NULL)
+        return fail(ctx, FRICREG_ENULL, "a required array is NULL");
+    if (m != fricreg_ctx_size(ctx))
+        return fr_error_set(fr_ctx_error(ctx), FRICREG_ESIZE,
+                            "solve_step: m = %zu, the context has %zu contacts", m,
+                            fricreg_ctx_size(ctx));
+    if (!isfinite(c) || !isfinite(tol))
+        return fail(ctx, FRICREG_ENONFINITE, "c or tol is NaN or infinite");
+    if (!(c > 0.0) || !(tol > 0.0) || max_iter < 1 || (flags & ~FRICREG_STEP_PLAIN) != 0)
+        return fail(ctx, FRICREG_EINVAL, "needs c > 0, tol > 0, max_iter >= 1, known flags");
+    if (!all_finite(zdot_start, m) || !all_finite(zdot_pred, m) || !all_finite(a_pred, m) ||
+        !all_finite(f, m) || !all_finite(W, m * m) || !all_finite(Weff, m * m))
+        return fail(ctx, FRICREG_ENONFINITE, "an input array holds NaN or infinity");
+    int status = check_symmetric(W, m);
+    if (status == FRICREG_OK)
+        status = check_symmetric(Weff, m);
+    if (status != FRICREG_OK)
+        return fail(ctx, status,
+                    status == FRICREG_ENOTSYM
+                        ? "W or W_eff is not symmetric"
+                        : "W or W_eff has a diagonal entry below DBL_MIN");
+
+    struct step_solver s;
+    memset(&s, 0, sizeof s);
+    s.m = m;
+    s.ctx = ctx;
+    s.c = c;
+    s.z0 = zdot_pred;
+    s.a0 = a_pred;
+    s.mun = fr_ctx_bounds(ctx);
+    status = allocate(&s, W, Weff);
+    if (status != FRICREG_OK) {
+        release(&s);
+        return fail(ctx, status, "no memory");
+    }
+    memcpy(s.f0, f, m * sizeof *f);
+    int converged = 0, iters = 0;
+    status = solve(&s, zdot_start, tol, max_iter, flags & FRICREG_STEP_PLAIN, &converged, &iters);
+    if (status == FRICREG_OK) {
+        memcpy(f, s.fk, m * sizeof *f);
+        info[0] = iters;
+        info[1] = converged;
+    } else if (status == FRICREG_EDIVERGED) {
+        fail(ctx, status, "the residual is not finite");
+    } else if (status == FRICREG_ENOMEM) {
+        fail(ctx, status, "no memory for the dense Newton matrix");
+    }
+    release(&s);
+    return status;
+}
