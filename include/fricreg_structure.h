@@ -587,11 +587,14 @@ enum fricreg_step_flags {
  *     side of zdot = 0 across the whole band is stopped at zdot_i = 0 instead (the first trial
  *     step), each contact once a step;
  *   - line search: backtracking (halvings, at most 30) with Armijo's sufficient decrease
- *     1e-4 on ||G||_2; where it stalls, Newton starts again from the guess without stops.
- *  The tangent at zdot_i = 0 exactly (where a stop leaves a contact) is fricreg_ctx_tangent's:
- *  the bounds' slopes of zdot_i > 0; the stop has already chosen the side of the step's motion
- *  (the contact arrives there from zdot_pred's side, and the band's linearization is the same
- *  on both sides of 0 for law (4)), so no other rule is needed.
+ *     1e-4 on the merit sqrt(G^T W G), the M^-1 norm of the structure's residual J^T G
+ *     (fricreg_structure's line search reads that residual's 2-norm); where it stalls,
+ *     Newton starts again from the guess without stops.
+ *  The tangent at zdot_i = 0 exactly (where a stop leaves a contact) is fricreg_ctx_tangent's,
+ *  unchanged: its bounds' slopes are those of zdot_i > 0. Which side of zdot = 0 the step
+ *  takes is decided by the stop, not by the tangent: a contact whose Newton step would carry it
+ *  across the band is halted at zdot_i = 0, coming from the side it had at the iterate, and the
+ *  next iteration works on the band's own piece there.
  *
  *  ctx          a context with the law, eps, bounds and coupling W (fricreg_ctx_set_*); its
  *               last evaluation is at the returned forces on success.

@@ -23,7 +23,7 @@
 #include "fricreg_structure.h"
 #include "newton_matrix.h"
 
-#define ARMIJO 1e-4   /* sufficient decrease of ||G||_2, as newmark.c */
+#define ARMIJO 1e-4   /* sufficient decrease of the merit, as newmark.c */
 #define MAX_CUTS 30   /* halvings of one Newton direction, as newmark.c */
 #define SYM_TOL 1e-12 /* |A_ij - A_ji| <= SYM_TOL sqrt(A_ii A_jj), as the context's setters */
 #define DENSE_FALLBACK_MAX 64
@@ -41,7 +41,7 @@ struct step_solver {
     cholmod_sparse *W, *Weff; /* upper triangles, sorted */
     struct fr_newton_matrix nm;
     double *block; /* every vector below, one allocation */
-    double *f0, *fk, *ft, *df, *G, *Gt, *zdot, *afree, *F, *b;
+    double *f0, *fk, *ft, *df, *G, *Gt, *zdot, *afree, *F, *b, *wg;
     struct products at_start, at_k, at_t, at_df, at_guess;
     unsigned char *stopped;
 };
@@ -120,8 +120,8 @@ static void copy_products(const struct step_solver *s, const struct products *fr
     memcpy(to->w, from->w, s->m * sizeof *to->w);
 }
 
-/* G = f - F(zdot(f), a_free(f)) from f and its products, ||G||_2 into *phi and ||G||_inf into
- * *rinf; the context's status (its eval's). */
+/* G = f - F(zdot(f), a_free(f)) from f and its products, the merit sqrt(G^T W G) into *phi
+ * and ||G||_inf into *rinf; the context's status (its eval's). */
 static int residual(struct step_solver *s, const double f[], const struct products *p, double G[],
                     double *phi, double *rinf)
 {
@@ -133,21 +133,15 @@ static int residual(struct step_solver *s, const double f[], const struct produc
     int status = fricreg_ctx_eval(s->ctx, m, s->zdot, s->afree, s->F, NULL);
     if (status != FRICREG_OK)
         return status;
-    double big = 0.0, scale = 0.0, sum = 1.0;
+    double big = 0.0, q = 0.0;
     for (size_t i = 0; i < m; i++) {
         G[i] = f[i] - s->F[i];
-        double a = fabs(G[i]);
-        big = fmax(big, a);
-        if (a > 0.0) { /* the 2-norm without overflow (LAPACK's dnrm2 recurrence) */
-            if (scale < a) {
-                sum = 1.0 + sum * (scale / a) * (scale / a);
-                scale = a;
-            } else {
-                sum += (a / scale) * (a / scale);
-            }
-        }
+        big = fmax(big, fabs(G[i]));
     }
-    *phi = scale * sqrt(sum);
+    fr_sym_mult(s->W, 1.0, G, 0.0, s->wg);
+    for (size_t i = 0; i < m; i++)
+        q += G[i] * s->wg[i];
+    *phi = sqrt(fmax(q, 0.0));
     *rinf = big;
     return FRICREG_OK;
 }
@@ -195,7 +189,7 @@ static int stick_guess(struct step_solver *s, const double zstart[])
     return exact ? 2 : 1;
 }
 
-/* Backtracking on ||G||_2 from the first trial (stops) or the full step; plain: the full step
+/* Backtracking on the merit from the first trial (stops) or the full step; plain: the full step
  * taken whatever it gives. 1 if a point was accepted (fk, G, the context's evaluation there). */
 static int line_search(struct step_solver *s, int safeguarded, int stops, double *phi,
                        double *rinf)
@@ -303,7 +297,7 @@ static int allocate(struct step_solver *s, const double W[], const double Weff[]
         return FRICREG_ENOMEM;
     s->W = upper_of(W, m, &s->cc);
     s->Weff = upper_of(Weff, m, &s->cc);
-    enum { VECTORS = 20 };
+    enum { VECTORS = 21 };
     s->block = malloc(VECTORS * m * sizeof *s->block);
     s->stopped = malloc(m);
     if (s->W == NULL || s->Weff == NULL || s->block == NULL || s->stopped == NULL)
@@ -312,7 +306,7 @@ static int allocate(struct step_solver *s, const double W[], const double Weff[]
                            &s->G,           &s->Gt,          &s->zdot,       &s->afree,
                            &s->F,           &s->b,           &s->at_start.weff, &s->at_start.w,
                            &s->at_k.weff,   &s->at_k.w,      &s->at_t.weff,  &s->at_t.w,
-                           &s->at_df.weff,  &s->at_df.w,     &s->at_guess.weff, &s->at_guess.w};
+                           &s->at_df.weff,  &s->at_df.w,     &s->at_guess.weff, &s->at_guess.w, &s->wg};
     for (size_t k = 0; k < VECTORS; k++)
         *v[k] = s->block + k * m;
     return fr_newton_matrix_prepare(&s->nm, s->Weff, m <= DENSE_FALLBACK_MAX, &s->cc);
