@@ -604,7 +604,9 @@ enum fricreg_step_flags {
  *  a_pred[m]    the end's free accelerations at f = 0 plus W_eff f's share, as above
  *               (acceleration units): a_free(f) = a_pred - (W - W_eff) f.
  *  W[m*m]       W = J M^-1 J^T, row-major (symmetric: Fortran may pass its array), the
- *               coupling the context holds (acceleration per force).
+ *               coupling the context holds (acceleration per force): its diagonal is checked
+ *               against the context's (to 1e-12 relative), its semidefiniteness is not (the
+ *               context's setter checked it).
  *  Weff[m*m]    W_eff = J K_eff^-1 J^T, row-major, symmetric positive definite.
  *  c            > 0, d zdot / d (J x): gamma dt for Newmark (time units).
  *  tol          > 0, force units: converged when max_i |G_i| <= tol (at least one Newton
@@ -620,17 +622,18 @@ enum fricreg_step_flags {
  *
  *  Returns FRICREG_OK (converged or not: read info[1]); FRICREG_ENULL if ctx or an array is
  *  NULL; FRICREG_ESIZE if m differs from the context's; FRICREG_ENONFINITE if c, tol or an
- *  input entry is NaN or infinite; FRICREG_EINVAL if c <= 0, tol <= 0, max_iter < 1 or flags
- *  has an unknown bit; FRICREG_ENOTSYM if W or Weff is not symmetric (|A_ij - A_ji| >
+ *  input entry is NaN or infinite; FRICREG_EINVAL if c <= 0, tol <= 0, max_iter < 1, flags
+ *  has an unknown bit or W's diagonal is not the context's coupling's; FRICREG_ENOTSYM if W or Weff is not symmetric (|A_ij - A_ji| >
  *  1e-12 sqrt(A_ii A_jj)); FRICREG_ENOTPSD if a diagonal entry of W or Weff is below DBL_MIN;
  *  FRICREG_ENOMEM; FRICREG_EDIVERGED if the residual became NaN or infinite; the context's
- *  fricreg_ctx_eval status where an evaluation fails. The failure is recorded in the
+ *  fricreg_ctx_eval status where an evaluation fails (FRICREG_ENONFINITE where the step's
+ *  velocities, free accelerations or forces reach beyond its solve's range, ~1e280, as with
+ *  entries near 1e308; FRICREG_ESINGULAR for redundant contacts). The failure is recorded in the
  *  context (fricreg_ctx_errmsg); on failure f and info are not written. */
 FRICREG_API int fricreg_ctx_solve_step(fricreg_ctx *ctx, size_t m, const double zdot_start[],
                                        const double zdot_pred[], const double a_pred[],
-                                       const double W[], const double Weff[], double c,
-                                       double tol, int max_iter, int flags, double f[],
-                                       int info[]);
+                                       const double W[], const double Weff[], double c, double tol,
+                                       int max_iter, int flags, double f[], int info[]);
 
 #ifdef __cplusplus
 }

@@ -147,8 +147,8 @@ static int residual(struct step_solver *s, const double f[], const struct produc
 }
 
 /* fk = x (products p) and its residual. */
-static int start_at(struct step_solver *s, const double x[], const struct products *p,
-                    double *phi, double *rinf)
+static int start_at(struct step_solver *s, const double x[], const struct products *p, double *phi,
+                    double *rinf)
 {
     memcpy(s->fk, x, s->m * sizeof *s->fk);
     copy_products(s, p, &s->at_k);
@@ -182,8 +182,11 @@ static int stick_guess(struct step_solver *s, const double zstart[])
                         s->zdot, s->b);
     if (fr_newton_stick_solve(&s->nm, s->Weff, s->stopped, s->b, s->df, &s->cc) != FRICREG_OK)
         return 0;
-    for (size_t i = 0; i < m; i++)
+    for (size_t i = 0; i < m; i++) {
         s->ft[i] = s->f0[i] + s->df[i];
+        if (!isfinite(s->ft[i]))
+            return 0; /* beyond the range (a tiny c): no guess, Newton from f0 */
+    }
     products_of(s, s->df, &s->at_guess);
     combine(s, &s->at_start, 1.0, &s->at_guess, &s->at_guess);
     return exact ? 2 : 1;
@@ -191,8 +194,7 @@ static int stick_guess(struct step_solver *s, const double zstart[])
 
 /* Backtracking on the merit from the first trial (stops) or the full step; plain: the full step
  * taken whatever it gives. 1 if a point was accepted (fk, G, the context's evaluation there). */
-static int line_search(struct step_solver *s, int safeguarded, int stops, double *phi,
-                       double *rinf)
+static int line_search(struct step_solver *s, int safeguarded, int stops, double *phi, double *rinf)
 {
     double lambda = 1.0;
     if (stops)
@@ -246,8 +248,8 @@ static int iterate(struct step_solver *s, double tol, int max_iter, int safeguar
 }
 
 /* Newton as newmark.c's newton(), or plain (full steps from f0, no guess). */
-static int solve(struct step_solver *s, const double zstart[], double tol, int max_iter,
-                 int plain, int *converged, int *iters)
+static int solve(struct step_solver *s, const double zstart[], double tol, int max_iter, int plain,
+                 int *converged, int *iters)
 {
     double phi = 0.0, rinf = 0.0, phi_guess = 0.0;
     int guess = 0, status;
@@ -302,11 +304,27 @@ static int allocate(struct step_solver *s, const double W[], const double Weff[]
     s->stopped = malloc(m);
     if (s->W == NULL || s->Weff == NULL || s->block == NULL || s->stopped == NULL)
         return FRICREG_ENOMEM;
-    double **v[VECTORS] = {&s->f0,          &s->fk,          &s->ft,         &s->df,
-                           &s->G,           &s->Gt,          &s->zdot,       &s->afree,
-                           &s->F,           &s->b,           &s->at_start.weff, &s->at_start.w,
-                           &s->at_k.weff,   &s->at_k.w,      &s->at_t.weff,  &s->at_t.w,
-                           &s->at_df.weff,  &s->at_df.w,     &s->at_guess.weff, &s->at_guess.w, &s->wg};
+    double **v[VECTORS] = {&s->f0,
+                           &s->fk,
+                           &s->ft,
+                           &s->df,
+                           &s->G,
+                           &s->Gt,
+                           &s->zdot,
+                           &s->afree,
+                           &s->F,
+                           &s->b,
+                           &s->at_start.weff,
+                           &s->at_start.w,
+                           &s->at_k.weff,
+                           &s->at_k.w,
+                           &s->at_t.weff,
+                           &s->at_t.w,
+                           &s->at_df.weff,
+                           &s->at_df.w,
+                           &s->at_guess.weff,
+                           &s->at_guess.w,
+                           &s->wg};
     for (size_t k = 0; k < VECTORS; k++)
         *v[k] = s->block + k * m;
     return fr_newton_matrix_prepare(&s->nm, s->Weff, m <= DENSE_FALLBACK_MAX, &s->cc);
@@ -348,9 +366,15 @@ int fricreg_ctx_solve_step(fricreg_ctx *ctx, size_t m, const double zdot_start[]
         status = check_symmetric(Weff, m);
     if (status != FRICREG_OK)
         return fail(ctx, status,
-                    status == FRICREG_ENOTSYM
-                        ? "W or W_eff is not symmetric"
-                        : "W or W_eff has a diagonal entry below DBL_MIN");
+                    status == FRICREG_ENOTSYM ? "W or W_eff is not symmetric"
+                                              : "W or W_eff has a diagonal entry below DBL_MIN");
+
+    const double *wd = fr_ctx_coupling_diagonal(ctx);
+    for (size_t i = 0; i < m; i++)
+        if (!(fabs(W[i * m + i] - wd[i]) <= SYM_TOL * wd[i]))
+            return fr_error_set(fr_ctx_error(ctx), FRICREG_EINVAL,
+                                "solve_step: W_%zu%zu = %g, the context's coupling has %g", i, i,
+                                W[i * m + i], wd[i]);
 
     struct step_solver s;
     memset(&s, 0, sizeof s);
