@@ -543,8 +543,6 @@ FRICREG_API int fricreg_structure_get_warning(const fricreg_structure *s, size_t
  *  by s, valid until its next warning_count call. Since 1.6 (FRICREG_1.6). */
 FRICREG_API const char *fricreg_structure_warning_message(const fricreg_structure *s, size_t k);
 
-/** \} */
-
 /* ---- Your own implicit integrator: the contact-space step on a context --------------------- */
 
 /** Flags of fricreg_ctx_solve_step (values fixed forever). */
@@ -634,6 +632,8 @@ FRICREG_API int fricreg_ctx_solve_step(fricreg_ctx *ctx, size_t m, const double 
                                        const double zdot_pred[], const double a_pred[],
                                        const double W[], const double Weff[], double c, double tol,
                                        int max_iter, int flags, double f[], int info[]);
+
+/** \} */
 
 #ifdef __cplusplus
 }
