@@ -7,11 +7,18 @@
  * The caller's step makes the contacts' velocities and free accelerations affine in the forces
  * (fricreg_structure.h, fricreg_ctx_solve_step):
  *   zdot(f) = zdot_pred + c W_eff f,   a_free(f) = a_pred - (W - W_eff) f,
- * and Newton solves G(f) = f - F(zdot(f), a_free(f)) = 0, F the context's law. The direction
- * and the stick guess's solve are newton_matrix.c's, the first trial (the stop) and the stick
- * guess's right-hand side newton_matrix.c's too, shared with newmark.c; what differs is where
- * the residual is measured: here in the contact space, ||G||, where newmark.c reads the
- * structure's residual R = w J^T G on its degrees of freedom. */
+ * and Newton solves G(f) = f - F(zdot(f), a_free(f)) = 0, F the context's law. The iterations
+ * (direction, stop, line search) are step_newton.c's and the stick guess's solve and right-hand
+ * side newton_matrix.c's, all shared with newmark.c; the sequence (stick guess, start, restart
+ * without stops) is newmark.c's newton(). What differs is how the residual is measured.
+ * newmark.c reads the structure's residual R = w J^T G on its degrees of freedom, which this
+ * function does not see; the line search here reads its M^-1 norm,
+ *   ||R||_{M^-1}^2 = G^T J M^-1 J^T G = G^T W G,
+ * which is newmark.c's ||R||_2 up to a constant when M is a multiple of I (the building) and
+ * the same kind of measure otherwise. With the plain 2-norm of G instead, the line search
+ * stalled at the building's reversals (a stopped damper beside two sliding ones: 1 step of
+ * 1500 unconverged at eps = 1e-3, 5 at 1e-4), where ||R|| weighs the dampers' differences.
+ * The stopping rule reads max_i |G_i|, in force units. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -22,14 +29,25 @@
 #include "ctx/ctx_driver.h"
 #include "fricreg_structure.h"
 #include "newton_matrix.h"
+#include "step_newton.h"
 
-#define ARMIJO 1e-4   /* sufficient decrease of the merit, as newmark.c */
-#define MAX_CUTS 30   /* halvings of one Newton direction, as newmark.c */
 #define SYM_TOL 1e-12 /* |A_ij - A_ji| <= SYM_TOL sqrt(A_ii A_jj), as the context's setters */
 #define DENSE_FALLBACK_MAX 64
 
-struct products {
-    double *weff, *w; /* [m] W_eff f and W f */
+enum {
+    V_F0,
+    V_FK,
+    V_FT,
+    V_DF,
+    V_G,
+    V_GT,
+    V_ZDOT,
+    V_AFREE,
+    V_F,
+    V_B,
+    V_WG,
+    V_PAIRS,
+    VECTORS = V_PAIRS + 10
 };
 
 struct step_solver {
@@ -40,9 +58,10 @@ struct step_solver {
     cholmod_common cc;
     cholmod_sparse *W, *Weff; /* upper triangles, sorted */
     struct fr_newton_matrix nm;
-    double *block; /* every vector below, one allocation */
-    double *f0, *fk, *ft, *df, *G, *Gt, *zdot, *afree, *F, *b, *wg;
-    struct products at_start, at_k, at_t, at_df, at_guess;
+    double *block;         /* every vector, one allocation */
+    gsl_vector v[VECTORS]; /* views of it, for the shared iterations (step_newton.h) */
+    double *f0, *zdot, *afree, *F, *b, *wg, *df;
+    struct fr_compliance_pair at_start, at_k, at_t, at_df, at_guess;
     unsigned char *stopped;
 };
 
@@ -98,37 +117,23 @@ static int all_finite(const double x[], size_t n)
     return 1;
 }
 
-static void products_of(struct step_solver *s, const double f[], struct products *p)
+static void products_of(struct step_solver *s, const double f[], struct fr_compliance_pair *p)
 {
-    fr_sym_mult(s->Weff, 1.0, f, 0.0, p->weff);
-    fr_sym_mult(s->W, 1.0, f, 0.0, p->w);
-}
-
-static void combine(const struct step_solver *s, const struct products *a, double lambda,
-                    const struct products *b, struct products *p)
-{
-    for (size_t i = 0; i < s->m; i++) {
-        p->weff[i] = a->weff[i] + lambda * b->weff[i];
-        p->w[i] = a->w[i] + lambda * b->w[i];
-    }
-}
-
-static void copy_products(const struct step_solver *s, const struct products *from,
-                          struct products *to)
-{
-    memcpy(to->weff, from->weff, s->m * sizeof *to->weff);
-    memcpy(to->w, from->w, s->m * sizeof *to->w);
+    fr_sym_mult(s->Weff, 1.0, f, 0.0, p->weff->data);
+    fr_sym_mult(s->W, 1.0, f, 0.0, p->w->data);
 }
 
 /* G = f - F(zdot(f), a_free(f)) from f and its products, the merit sqrt(G^T W G) into *phi
  * and ||G||_inf into *rinf; the context's status (its eval's). */
-static int residual(struct step_solver *s, const double f[], const struct products *p, double G[],
-                    double *phi, double *rinf)
+static int residual(struct step_solver *s, const gsl_vector *fv, const struct fr_compliance_pair *p,
+                    gsl_vector *Gv, double *phi, double *rinf)
 {
     size_t m = s->m;
+    const double *f = fv->data, *weff_f = p->weff->data, *w_f = p->w->data;
+    double *G = Gv->data;
     for (size_t i = 0; i < m; i++) {
-        s->zdot[i] = s->z0[i] + s->c * p->weff[i];
-        s->afree[i] = s->a0[i] + (p->weff[i] - p->w[i]); /* as newmark.c: the difference first */
+        s->zdot[i] = s->z0[i] + s->c * weff_f[i];
+        s->afree[i] = s->a0[i] + (weff_f[i] - w_f[i]); /* as newmark.c: the difference first */
     }
     int status = fricreg_ctx_eval(s->ctx, m, s->zdot, s->afree, s->F, NULL);
     if (status != FRICREG_OK)
@@ -146,13 +151,25 @@ static int residual(struct step_solver *s, const double f[], const struct produc
     return FRICREG_OK;
 }
 
-/* fk = x (products p) and its residual. */
-static int start_at(struct step_solver *s, const double x[], const struct products *p, double *phi,
-                    double *rinf)
+static void products_cb(void *user, const double x[], struct fr_compliance_pair *p)
 {
-    memcpy(s->fk, x, s->m * sizeof *s->fk);
-    copy_products(s, p, &s->at_k);
-    return residual(s, s->fk, &s->at_k, s->G, phi, rinf);
+    products_of(user, x, p);
+}
+
+static int residual_cb(void *user, const gsl_vector *f, const struct fr_compliance_pair *p,
+                       gsl_vector *G, double *phi, double *rinf)
+{
+    return residual(user, f, p, G, phi, rinf);
+}
+
+/* fk = x (products p) and its residual. */
+static int start_at(struct step_solver *s, const gsl_vector *x, const struct fr_compliance_pair *p,
+                    double *phi, double *rinf)
+{
+    gsl_vector_memcpy(&s->v[V_FK], x);
+    gsl_vector_memcpy(s->at_k.weff, p->weff);
+    gsl_vector_memcpy(s->at_k.w, p->w);
+    return residual(s, &s->v[V_FK], &s->at_k, &s->v[V_G], phi, rinf);
 }
 
 /* Law (4) with a diagonal W: the stick guess solves the band's own piece (newmark.c). */
@@ -178,73 +195,52 @@ static int stick_guess(struct step_solver *s, const double zstart[])
         return 0;
     int exact = law_exact(s);
     fr_newton_stick_rhs(m, exact, s->c, fr_ctx_eps(s->ctx), s->mun,
-                        fr_ctx_coupling_diagonal(s->ctx), s->z0, s->a0, s->at_start.weff, zstart,
-                        s->zdot, s->b);
+                        fr_ctx_coupling_diagonal(s->ctx), s->z0, s->a0, s->at_start.weff->data,
+                        zstart, s->zdot, s->b);
     if (fr_newton_stick_solve(&s->nm, s->Weff, s->stopped, s->b, s->df, &s->cc) != FRICREG_OK)
         return 0;
+    double *guess = s->v[V_FT].data;
     for (size_t i = 0; i < m; i++) {
-        s->ft[i] = s->f0[i] + s->df[i];
-        if (!isfinite(s->ft[i]))
+        guess[i] = s->f0[i] + s->df[i];
+        if (!isfinite(guess[i]))
             return 0; /* beyond the range (a tiny c): no guess, Newton from f0 */
     }
     products_of(s, s->df, &s->at_guess);
-    combine(s, &s->at_start, 1.0, &s->at_guess, &s->at_guess);
+    fr_step_combine(&s->at_start, 1.0, &s->at_guess, &s->at_guess);
     return exact ? 2 : 1;
 }
 
-/* Backtracking on the merit from the first trial (stops) or the full step; plain: the full step
- * taken whatever it gives. 1 if a point was accepted (fk, G, the context's evaluation there). */
-static int line_search(struct step_solver *s, int safeguarded, int stops, double *phi, double *rinf)
-{
-    double lambda = 1.0;
-    if (stops)
-        lambda = fr_newton_first_stop(s->m, s->zdot, s->at_df.weff, s->c, fr_ctx_eps(s->ctx),
-                                      s->mun, s->nm.fz, s->stopped);
-    for (int cut = 0; cut <= (safeguarded ? MAX_CUTS : 0); cut++) {
-        for (size_t i = 0; i < s->m; i++)
-            s->ft[i] = s->fk[i] + lambda * s->df[i];
-        combine(s, &s->at_k, lambda, &s->at_df, &s->at_t);
-        double phi_t, rinf_t;
-        int status = residual(s, s->ft, &s->at_t, s->Gt, &phi_t, &rinf_t);
-        if (status == FRICREG_OK && (!safeguarded || phi_t <= (1.0 - ARMIJO * lambda) * *phi)) {
-            struct products accepted = s->at_t;
-            s->at_t = s->at_k;
-            s->at_k = accepted;
-            memcpy(s->fk, s->ft, s->m * sizeof *s->fk);
-            memcpy(s->G, s->Gt, s->m * sizeof *s->G);
-            *phi = phi_t;
-            *rinf = rinf_t;
-            return 1;
-        }
-        lambda *= 0.5;
-    }
-    return 0;
-}
-
-/* Newton from fk until ||G||_inf <= tol (at least one iteration unless G = 0), the iterations
- * run out or the line search stalls. FRICREG_ENOMEM only. */
-static int iterate(struct step_solver *s, double tol, int max_iter, int safeguarded, int stops,
+/* The shared iterations (step_newton.c) from fk; plain: full steps, no stops, no search. */
+static int iterate(struct step_solver *s, double tol, int max_iter, int stops, int search,
                    double *phi, double *rinf, int *iters)
 {
-    int done = 0;
-    while (*rinf != 0.0 && (done == 0 || *rinf > tol) && *iters < max_iter) {
-        if (!isfinite(*phi))
-            break;
-        int status = fr_newton_direction(&s->nm, s->ctx, s->c, s->W, s->Weff, s->G, s->df, &s->cc);
-        if (status == FRICREG_ENOMEM)
-            return status;
-        if (status != FRICREG_OK)
-            break; /* a singular tangent: the step ends here, not converged */
-        ++*iters;
-        ++done;
-        products_of(s, s->df, &s->at_df);
-        if (!line_search(s, safeguarded, stops, phi, rinf)) {
-            if (residual(s, s->fk, &s->at_k, s->G, phi, rinf) != FRICREG_OK)
-                *phi = NAN; /* the point was evaluated before: cannot happen */
-            break;
-        }
-    }
-    return FRICREG_OK;
+    struct fr_step_newton e = {
+        .m = s->m,
+        .coef = s->c,
+        .eps = fr_ctx_eps(s->ctx),
+        .mun = s->mun,
+        .max_iter = max_iter,
+        .ctx = s->ctx,
+        .nm = &s->nm,
+        .W = s->W,
+        .Weff = s->Weff,
+        .cc = &s->cc,
+        .fk = &s->v[V_FK],
+        .ft = &s->v[V_FT],
+        .df = &s->v[V_DF],
+        .G = &s->v[V_G],
+        .Gt = &s->v[V_GT],
+        .at_k = &s->at_k,
+        .at_t = &s->at_t,
+        .at_df = &s->at_df,
+        .zdot = &s->v[V_ZDOT],
+        .stopped = s->stopped,
+        .cuts = NULL,
+        .user = s,
+        .products = products_cb,
+        .residual = residual_cb,
+    };
+    return fr_step_newton_iterate(&e, tol, stops, search, phi, rinf, iters);
 }
 
 /* Newton as newmark.c's newton(), or plain (full steps from f0, no guess). */
@@ -256,7 +252,7 @@ static int solve(struct step_solver *s, const double zstart[], double tol, int m
     *iters = 0;
     products_of(s, s->f0, &s->at_start);
     if (!plain && law_exact(s) && (guess = stick_guess(s, zstart)) != 0) {
-        if ((status = start_at(s, s->ft, &s->at_guess, &phi, &rinf)) != FRICREG_OK)
+        if ((status = start_at(s, &s->v[V_FT], &s->at_guess, &phi, &rinf)) != FRICREG_OK)
             return status;
         if (rinf <= tol) {
             *iters = 1;
@@ -265,17 +261,17 @@ static int solve(struct step_solver *s, const double zstart[], double tol, int m
         }
         phi_guess = phi;
     }
-    if ((status = start_at(s, s->f0, &s->at_start, &phi, &rinf)) != FRICREG_OK)
+    if ((status = start_at(s, &s->v[V_F0], &s->at_start, &phi, &rinf)) != FRICREG_OK)
         return status;
     if (!plain && rinf > tol) {
         double phi_start = phi;
         if (guess != 0) {
             if (phi_guess < phi_start)
-                status = start_at(s, s->ft, &s->at_guess, &phi, &rinf);
+                status = start_at(s, &s->v[V_FT], &s->at_guess, &phi, &rinf);
         } else if (stick_guess(s, zstart)) {
-            status = start_at(s, s->ft, &s->at_guess, &phi, &rinf);
+            status = start_at(s, &s->v[V_FT], &s->at_guess, &phi, &rinf);
             if (status == FRICREG_OK && !(phi < phi_start))
-                status = start_at(s, s->f0, &s->at_start, &phi, &rinf);
+                status = start_at(s, &s->v[V_F0], &s->at_start, &phi, &rinf);
         }
         if (status != FRICREG_OK)
             return status;
@@ -284,8 +280,8 @@ static int solve(struct step_solver *s, const double zstart[], double tol, int m
     if ((status = iterate(s, tol, max_iter, !plain, !plain, &phi, &rinf, iters)) != FRICREG_OK)
         return status;
     if (!plain && rinf > tol && isfinite(phi) && *iters < max_iter) {
-        if ((status = start_at(s, s->f0, &s->at_start, &phi, &rinf)) != FRICREG_OK ||
-            (status = iterate(s, tol, max_iter, 1, 0, &phi, &rinf, iters)) != FRICREG_OK)
+        if ((status = start_at(s, &s->v[V_F0], &s->at_start, &phi, &rinf)) != FRICREG_OK ||
+            (status = iterate(s, tol, max_iter, 0, 1, &phi, &rinf, iters)) != FRICREG_OK)
             return status;
     }
     *converged = rinf <= tol;
@@ -299,34 +295,23 @@ static int allocate(struct step_solver *s, const double W[], const double Weff[]
         return FRICREG_ENOMEM;
     s->W = upper_of(W, m, &s->cc);
     s->Weff = upper_of(Weff, m, &s->cc);
-    enum { VECTORS = 21 };
     s->block = malloc(VECTORS * m * sizeof *s->block);
     s->stopped = malloc(m);
     if (s->W == NULL || s->Weff == NULL || s->block == NULL || s->stopped == NULL)
         return FRICREG_ENOMEM;
-    double **v[VECTORS] = {&s->f0,
-                           &s->fk,
-                           &s->ft,
-                           &s->df,
-                           &s->G,
-                           &s->Gt,
-                           &s->zdot,
-                           &s->afree,
-                           &s->F,
-                           &s->b,
-                           &s->at_start.weff,
-                           &s->at_start.w,
-                           &s->at_k.weff,
-                           &s->at_k.w,
-                           &s->at_t.weff,
-                           &s->at_t.w,
-                           &s->at_df.weff,
-                           &s->at_df.w,
-                           &s->at_guess.weff,
-                           &s->at_guess.w,
-                           &s->wg};
     for (size_t k = 0; k < VECTORS; k++)
-        *v[k] = s->block + k * m;
+        s->v[k] = (gsl_vector){.size = m, .stride = 1, .data = s->block + k * m};
+    s->f0 = s->v[V_F0].data;
+    s->df = s->v[V_DF].data;
+    s->zdot = s->v[V_ZDOT].data;
+    s->afree = s->v[V_AFREE].data;
+    s->F = s->v[V_F].data;
+    s->b = s->v[V_B].data;
+    s->wg = s->v[V_WG].data;
+    struct fr_compliance_pair *pairs[] = {&s->at_start, &s->at_k, &s->at_t, &s->at_df,
+                                          &s->at_guess};
+    for (size_t k = 0; k < 5; k++)
+        *pairs[k] = (struct fr_compliance_pair){&s->v[V_PAIRS + 2 * k], &s->v[V_PAIRS + 2 * k + 1]};
     return fr_newton_matrix_prepare(&s->nm, s->Weff, m <= DENSE_FALLBACK_MAX, &s->cc);
 }
 
@@ -393,7 +378,7 @@ int fricreg_ctx_solve_step(fricreg_ctx *ctx, size_t m, const double zdot_start[]
     int converged = 0, iters = 0;
     status = solve(&s, zdot_start, tol, max_iter, flags & FRICREG_STEP_PLAIN, &converged, &iters);
     if (status == FRICREG_OK) {
-        memcpy(f, s.fk, m * sizeof *f);
+        memcpy(f, s.v[V_FK].data, m * sizeof *f);
         info[0] = iters;
         info[1] = converged;
     } else if (status == FRICREG_EDIVERGED) {
