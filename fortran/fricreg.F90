@@ -131,6 +131,9 @@ module fricreg
     procedure :: eval => ctx_eval
     procedure :: tangent => ctx_tangent
     procedure :: tangent_apply => ctx_tangent_apply
+#ifdef FRICREG_HAVE_SIM
+    procedure :: solve_step => ctx_solve_step
+#endif
     procedure :: switching => ctx_switching
     procedure :: switching_count => ctx_switching_count
     procedure :: stick_stiffness => ctx_stick_stiffness
@@ -1002,6 +1005,48 @@ contains
     if (status == FRICREG_OK) &
       status = self%record(fricreg_ctx_tangent_apply(self%ptr, m, dzdot, dafree, df))
   end function ctx_tangent_apply
+
+#ifdef FRICREG_HAVE_SIM
+  !> The forces of one implicit step of the caller's own integrator (C's fricreg_ctx_solve_step,
+  !> fricreg_structure.h): Newton with the stick guess, the stop at zdot = 0 and the line
+  !> search on G(f) = f - F(zdot(f), a_free(f)), zdot(f) = zdot_pred + c Weff f and
+  !> a_free(f) = a_pred - (W - Weff) f. W(m, m) = J M^-1 J^T and Weff(m, m) = J K_eff^-1 J^T
+  !> are symmetric, so Fortran's arrays are passed as they are. f(m) in: the guess, out: the
+  !> forces; iterations and converged (optional) say how it went. flags: 0 (default) or
+  !> FRICREG_STEP_PLAIN. FRICREG_ESIZE unless every array has m (or m x m) elements; the C
+  !> function's codes otherwise (not converging is FRICREG_OK with converged false).
+  function ctx_solve_step(self, zdot_start, zdot_pred, a_pred, W, Weff, c, tol, max_iter, f, &
+                          iterations, converged, flags) result(status)
+    class(fricreg_context), intent(inout) :: self
+    real(c_double), intent(in), contiguous :: zdot_start(:), zdot_pred(:), a_pred(:)
+    real(c_double), intent(in), contiguous :: W(:, :), Weff(:, :)
+    real(c_double), intent(in) :: c, tol
+    integer, intent(in) :: max_iter
+    real(c_double), intent(inout), contiguous :: f(:)
+    integer, intent(out), optional :: iterations
+    logical, intent(out), optional :: converged
+    integer, intent(in), optional :: flags
+    integer(c_int) :: status, info(2), how
+    integer(c_size_t) :: m
+    m = fricreg_ctx_size(self%ptr)
+    how = 0
+    if (present(flags)) how = int(flags, c_int)
+    status = self%ready('solve_step', 'context')
+    if (status == FRICREG_OK) status = self%check_size('solve_step', 'zdot_start', size(zdot_start), m)
+    if (status == FRICREG_OK) status = self%check_size('solve_step', 'zdot_pred', size(zdot_pred), m)
+    if (status == FRICREG_OK) status = self%check_size('solve_step', 'a_pred', size(a_pred), m)
+    if (status == FRICREG_OK) status = self%check_square('solve_step', 'W', shape(W), m)
+    if (status == FRICREG_OK) status = self%check_square('solve_step', 'Weff', shape(Weff), m)
+    if (status == FRICREG_OK) status = self%check_size('solve_step', 'f', size(f), m)
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_ctx_solve_step(self%ptr, m, zdot_start, zdot_pred, a_pred, &
+                                                  W, Weff, c, tol, int(max_iter, c_int), how, &
+                                                  f, info))
+    if (status /= FRICREG_OK) return
+    if (present(iterations)) iterations = int(info(1))
+    if (present(converged)) converged = info(2) /= 0
+  end function ctx_solve_step
+#endif
 
   !> The switching functions (C's fricreg_ctx_switching): g(k + 1, i) is component k
   !> (FRICREG_SWITCH_BAND_HI ... FRICREG_SWITCH_SAT_LO) of contact i, a signed distance to a

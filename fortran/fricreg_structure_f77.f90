@@ -48,6 +48,9 @@
 !   FRSTGV(H, WHICH, VALUE, STAT)                _get_value (FRICREG_SVALUE_*)
 !   FRSTGT(H, WHICH, VALUE, STAT)                _get_stat (FRICREG_SSTAT_*, INTEGER*8 VALUE)
 !   FRSTER(H, CODE, MSG, STAT)                   _errcode, _errmsg
+!   FRCSTP(H, M, ZS, ZP, AP, W, WEFF, C, TOL, MAXIT, FLAGS, F, ITERS, CONV, STAT)
+!                                                fricreg_ctx_solve_step, on a context H of
+!                                                FRCTXC (the user's own Newmark)
 ! The getters (FRSTG*) read a const structure: C records no failure of theirs, so FRSTER
 ! still shows the failure before (their STAT is the answer). So do the few refusals made here,
 ! before C is called, of counts that would wrap into size_t: FRSTCR's NDOF or M below 1
@@ -479,3 +482,33 @@ subroutine frster(h, code, msg, stat)
                                 msg)
   code = last
 end subroutine frster
+
+!> FRCSTP(H, M, ZS, ZP, AP, W, WEFF, C, TOL, MAXIT, FLAGS, F, ITERS, CONV, STAT): the forces of
+!> one implicit step of the caller's own integrator on a context H (FRCTXC), C's
+!> fricreg_ctx_solve_step (fricreg_structure.h, docs/structural.md "Your own Newmark with
+!> fricreg"): F(M) in: the guess, out: the step's forces solving F = law(ZP + C WEFF F,
+!> AP - (W - WEFF) F); ZS(M) the velocities at the step's start; W(M, M) = J M^-1 J^T and
+!> WEFF(M, M) = J K_eff^-1 J^T, symmetric (Fortran's order is C's); C = gamma dt; TOL > 0 in
+!> force units; MAXIT >= 1; FLAGS 0 or FRICREG_STEP_PLAIN. ITERS the Newton iterations, CONV 1
+!> if converged, else 0 (STAT FRICREG_OK all the same). F, ITERS and CONV written only on
+!> success.
+subroutine frcstp(h, m, zs, zp, ap, w, weff, c, tol, maxit, flags, f, iters, conv, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m, maxit, flags
+  double precision, intent(in) :: zs(*), zp(*), ap(*), w(*), weff(*), c, tol
+  double precision, intent(inout) :: f(*)
+  integer, intent(inout) :: iters, conv
+  integer, intent(out) :: stat
+  integer(c_int) :: info(2)
+  ! C takes ints: an ILP64 caller's count beyond their range is clamped, so that C refuses it.
+  stat = int(fricreg_ctx_solve_step(fricreg_handle_to_ptr(h), int(max(m, 0), c_size_t), zs, zp, &
+             ap, w, weff, c, tol, &
+             int(min(max(maxit, -int(huge(0_c_int))), int(huge(0_c_int))), c_int), &
+             int(min(max(flags, -int(huge(0_c_int))), int(huge(0_c_int))), c_int), f, info))
+  if (stat /= FRICREG_OK) return
+  iters = int(info(1))
+  conv = int(info(2))
+end subroutine frcstp

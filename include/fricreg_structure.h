@@ -543,6 +543,96 @@ FRICREG_API int fricreg_structure_get_warning(const fricreg_structure *s, size_t
  *  by s, valid until its next warning_count call. Since 1.6 (FRICREG_1.6). */
 FRICREG_API const char *fricreg_structure_warning_message(const fricreg_structure *s, size_t k);
 
+/* ---- Your own implicit integrator: the contact-space step on a context --------------------- */
+
+/** Flags of fricreg_ctx_solve_step (values fixed forever). */
+enum fricreg_step_flags {
+    /** Plain Newton: full steps on the exact tangent from the caller's guess, no stick guess,
+     *  no stop at zdot = 0, no line search. For comparison: it fails where the safeguards do
+     *  not (docs/structural.md, "Your own Newmark with fricreg"). */
+    FRICREG_STEP_PLAIN = 1
+};
+
+/** The friction forces of one implicit step of the caller's own integrator (Newmark, HHT-alpha,
+ *  a BDF) on a context, by the contact-space Newton of fricreg_structure's steps with its
+ *  safeguards (since 1.6, FRICREG_1.6): for a caller who factors their own K_eff and only
+ *  wants the m contact forces of the step, after which one linear solve gives the structure's
+ *  update. Declared here because it is the structure's step made public; it needs no
+ *  fricreg_structure.
+ *
+ *  The step's equations. With the forces f entering the structure as + J^T f, M x + C v1 +
+ *  K u1 = p1 + J^T f (x the end's acceleration), a step whose end state is affine in x
+ *  (Newmark: u1 = u_pred + beta dt^2 x, v1 = v_pred + gamma dt x) gives
+ *  x(f) = K_eff^-1 (b + J^T f), K_eff = M + gamma dt C + beta dt^2 K, b = p1 - C v_pred -
+ *  K u_pred, and the contacts' velocities and free accelerations at the end are affine in f:
+ *    zdot(f)   = zdot_pred + c W_eff f,          zdot_pred = J v_pred + c J K_eff^-1 b,
+ *    a_free(f) = a_pred - (W - W_eff) f,         a_pred = J K_eff^-1 b,
+ *  with W = J M^-1 J^T (the context's coupling), W_eff = J K_eff^-1 J^T and c = gamma dt
+ *  (HHT-alpha with w = 1 + alpha: c = w gamma dt, W_eff from w K_eff's definition, newmark.c).
+ *  The step's forces solve G(f) = f - F(zdot(f), a_free(f)) = 0, F the context's law (its
+ *  fricreg_ctx_eval: the paper's (1)-(4), f_eq from a_free and W, Sec. 3.3).
+ *
+ *  Method (fricreg_structure's, src/structure/newmark.c): Newton on the exact tangent
+ *  (fricreg_ctx_tangent's), T = dG/df = I - c F_z W_eff + F_a (W - W_eff), solved contact by
+ *  contact in W_eff's sparse pattern (CHOLMOD), dense by QR where a law's slope is positive;
+ *  with three safeguards:
+ *   - stick guess: where ||G|| at the guess f is above tol, the contacts whose guess is below
+ *     their bound (|f_i| < mun_i) take the forces that keep their velocities at the step's
+ *     start (W_eff,SS df_S = (zdot_start - zdot(f))_S / c), or, with law (4) and a diagonal W,
+ *     the forces of the band's own affine piece (then usually exact: one iteration); taken
+ *     when its residual is smaller;
+ *   - stop: a slipping contact (outside (4)'s band) whose Newton step would carry it from one
+ *     side of zdot = 0 across the whole band is stopped at zdot_i = 0 instead (the first trial
+ *     step), each contact once a step;
+ *   - line search: backtracking (halvings, at most 30) with Armijo's sufficient decrease
+ *     1e-4 on the merit sqrt(G^T W G), the M^-1 norm of the structure's residual J^T G
+ *     (fricreg_structure's line search reads that residual's 2-norm); where it stalls,
+ *     Newton starts again from the guess without stops.
+ *  The tangent at zdot_i = 0 exactly (where a stop leaves a contact) is fricreg_ctx_tangent's,
+ *  unchanged: its bounds' slopes are those of zdot_i > 0. Which side of zdot = 0 the step
+ *  takes is decided by the stop, not by the tangent: a contact whose Newton step would carry it
+ *  across the band is halted at zdot_i = 0, coming from the side it had at the iterate, and the
+ *  next iteration works on the band's own piece there.
+ *
+ *  ctx          a context with the law, eps, bounds and coupling W (fricreg_ctx_set_*); its
+ *               last evaluation is at the returned forces on success.
+ *  m            its contact count.
+ *  zdot_start[m] the contacts' velocities at the step's start, J v (velocity units).
+ *  zdot_pred[m] the end's velocities with no friction change, as above.
+ *  a_pred[m]    the end's free accelerations at f = 0 plus W_eff f's share, as above
+ *               (acceleration units): a_free(f) = a_pred - (W - W_eff) f.
+ *  W[m*m]       W = J M^-1 J^T, row-major (symmetric: Fortran may pass its array), the
+ *               coupling the context holds (acceleration per force): its diagonal is checked
+ *               against the context's (to 1e-12 relative), its semidefiniteness is not (the
+ *               context's setter checked it).
+ *  Weff[m*m]    W_eff = J K_eff^-1 J^T, row-major, symmetric positive definite.
+ *  c            > 0, d zdot / d (J x): gamma dt for Newmark (time units).
+ *  tol          > 0, force units: converged when max_i |G_i| <= tol (at least one Newton
+ *               iteration unless G is exactly 0 at the first point).
+ *  max_iter     >= 1, the step's Newton iterations.
+ *  flags        0 or FRICREG_STEP_PLAIN.
+ *  f[m]         in: the guess (the previous step's forces); out: the step's forces (force
+ *               units); the best iterate when not converged (info[1] = 0).
+ *  info[2]      out: info[0] the Newton iterations made, info[1] 1 if converged, else 0.
+ *  Cost: two m x m dense inputs read and their nonzeros kept (O(m^2) per call), CHOLMOD's
+ *  analysis of W_eff's pattern per call, then per iteration one eval, one tangent's rows and
+ *  one sparse solve. Allocates per call (freed before it returns).
+ *
+ *  Returns FRICREG_OK (converged or not: read info[1]); FRICREG_ENULL if ctx or an array is
+ *  NULL; FRICREG_ESIZE if m differs from the context's; FRICREG_ENONFINITE if c, tol or an
+ *  input entry is NaN or infinite; FRICREG_EINVAL if c <= 0, tol <= 0, max_iter < 1, flags
+ *  has an unknown bit or W's diagonal is not the context's coupling's; FRICREG_ENOTSYM if W or Weff is not symmetric (|A_ij - A_ji| >
+ *  1e-12 sqrt(A_ii A_jj)); FRICREG_ENOTPSD if a diagonal entry of W or Weff is below DBL_MIN;
+ *  FRICREG_ENOMEM; FRICREG_EDIVERGED if the residual became NaN or infinite; the context's
+ *  fricreg_ctx_eval status where an evaluation fails (FRICREG_ENONFINITE where the step's
+ *  velocities, free accelerations or forces reach beyond its solve's range, ~1e280, as with
+ *  entries near 1e308; FRICREG_ESINGULAR for redundant contacts). The failure is recorded in the
+ *  context (fricreg_ctx_errmsg); on failure f and info are not written. */
+FRICREG_API int fricreg_ctx_solve_step(fricreg_ctx *ctx, size_t m, const double zdot_start[],
+                                       const double zdot_pred[], const double a_pred[],
+                                       const double W[], const double Weff[], double c, double tol,
+                                       int max_iter, int flags, double f[], int info[]);
+
 /** \} */
 
 #ifdef __cplusplus

@@ -692,6 +692,16 @@ static int w_ctx_tangent_apply(void)
     const double dz[2] = {0.0123, -0.0231}, da[2] = {0.5, -0.25};
     return fricreg_ctx_tangent_apply(CTX(), Z(0, 2), A(1, dz, 2), A(2, da, 2), OUTD(3));
 }
+/* One step's forces on the fixture's two blocks: W2B, a W_eff = W2B / (1 + 100 W2B)-like SPD
+ * matrix, velocities near the band (eps = 1e-3), a guess inside the bounds. */
+static int w_ctx_solve_step(void)
+{
+    const double z0[2] = {0.0004, -0.0002}, zp[2] = {0.0011, -0.0007}, ap[2] = {0.213, -0.347};
+    const double weff[4] = {0.0081, -0.0023, -0.0023, 0.0097}, f0[2] = {0.1, -0.05};
+    return fricreg_ctx_solve_step(CTX(), Z(0, 2), A(1, z0, 2), A(2, zp, 2), A(3, ap, 2),
+                                  A(4, W2B, 4), A(5, weff, 4), D(0, 0.005), D(1, 1e-10), N(0, 50),
+                                  N(1, 0), (double *)A(6, f0, 2), (int *)O(0));
+}
 /* The fixture's two blocks (a dense W, so f is read) at a state near stick. */
 static int w_ctx_switching(void)
 {
@@ -1043,6 +1053,18 @@ static const struct row rows[] = {
      CTX_REC,
      {HANDLE, SIZE(0, "ssss"), PTR(1, "o"), ARR(1, "nnoooo"), PTR(2, "o"), ARR(2, "nnoooo"),
       PTR(3, "0")}},
+    {"fricreg_ctx_solve_step (arrays)",
+     w_ctx_solve_step,
+     "0snimypge",
+     CTX_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnoooo"), PTR(2, "0"), ARR(2, "nnoooo"),
+      PTR(3, "0"), ARR(3, "nnooof"), PTR(6, "0"), ARR(6, "nnooof"), PTR(0, "0")}},
+    {"fricreg_ctx_solve_step (matrices and scalars)",
+     w_ctx_solve_step,
+     "0snimypge",
+     CTX_REC,
+     {PTR(4, "0"), MAT(4, "iiypi"), ARR(4, "nnpppi"), PTR(5, "0"), MAT(5, "ooypo"),
+      ARR(5, "nnpppo"), DBL(0, "nnniioo"), DBL(1, "nnniioo"), INT(0, "iioi"), INT(1, "ioii")}},
     {"fricreg_ctx_switching",
      w_ctx_switching,
      "0sn",

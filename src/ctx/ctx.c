@@ -113,6 +113,11 @@ const double *fr_ctx_bounds(const fricreg_ctx *ctx)
     return ctx->mun;
 }
 
+struct fr_error *fr_ctx_error(fricreg_ctx *ctx)
+{
+    return &ctx->err;
+}
+
 const double *fr_ctx_coupling_diagonal(const fricreg_ctx *ctx)
 {
     return ctx->w_diag;

@@ -16,6 +16,10 @@
  * status of fricreg_ctx_eval; FRICREG_OK on the unchecked path (partition.c). */
 int fr_ctx_eval_unchecked(fricreg_ctx *ctx, const double zdot[], const double a_free[], double f[]);
 
+/* The context's last error, for a driver's public function on the context that records its
+ * own failures there (fricreg_ctx_errmsg then reads them). */
+struct fr_error *fr_ctx_error(fricreg_ctx *ctx);
+
 /* The law (enum fricreg_law) and its eps (fricreg_ctx_set_law). */
 int fr_ctx_law(const fricreg_ctx *ctx);
 double fr_ctx_eps(const fricreg_ctx *ctx);

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* newmark.c — Newmark and HHT-alpha steps of a fricreg_structure, the friction implicit:
- * Newton in the contact space on the exact tangent, with a backtracking line search.
+ * Newton in the contact space on the exact tangent, with a backtracking line search (the
+ * iterations in step_newton.c, shared with fricreg_ctx_solve_step, contact_step.c).
  *
  * Unknown of the step: the acceleration x at its end, with u1 = u_pred + beta dt^2 x and
  * v1 = v_pred + gamma dt x. Residual (Hilber, Hughes & Taylor 1977; alpha = 0 is Newmark),
@@ -32,8 +33,6 @@
 #include "ctx/ctx_driver.h"
 #include "structure_internal.h"
 
-#define ARMIJO 1e-4       /* sufficient decrease of the residual's 2-norm */
-#define MAX_CUTS 30       /* halvings of one Newton direction */
 #define WEFF_DROP 0x1p-53 /* W_eff entries below this times sqrt(W_ii W_jj) / m: rounding */
 
 /* W_eff f and W f into p: the step's products with the forces, O(nnz(W_eff) + nnz(W)). */
@@ -41,16 +40,6 @@ static void form_products(fricreg_structure *s, const double f[], struct fr_comp
 {
     fr_cfactor_compliance(&s->step, f, p->weff->data);
     fr_cfactor_compliance(&s->mass, f, p->w->data);
-}
-
-/* p = a + lambda b: the products at the forces f_a + lambda f_b, O(m). */
-static void combine_products(const struct fr_compliance_pair *a, double lambda,
-                             const struct fr_compliance_pair *b, struct fr_compliance_pair *p)
-{
-    for (size_t i = 0; i < a->weff->size; i++) {
-        p->weff->data[i] = a->weff->data[i] + lambda * b->weff->data[i];
-        p->w->data[i] = a->w->data[i] + lambda * b->w->data[i];
-    }
 }
 
 static void copy_products(const struct fr_compliance_pair *from, struct fr_compliance_pair *to)
@@ -179,91 +168,61 @@ static double force_scale(fricreg_structure *s)
     return scale > 0.0 ? scale : 1e-300;
 }
 
-/* The first trial step along df: the largest fraction in (0, 1] that stops a slipping
- * contact (mun_i > 0 and dF_i/dzdot_i = 0 at f: outside the law's band) at zdot_i = 0 where
- * the full step would take it across the whole band (from one side of zdot = 0 to beyond eps
- * on the other), each contact once a step. A Newton step from a slip piece is the root of
- * that piece's linearization; when the contact must stop, that root lies beyond the band,
- * which is only eps/(gamma dt) wide in the acceleration, so the full step jumps across it to
- * the other slip piece, and halving finds the band only after many cuts. Stopped at zdot_i =
- * 0, the contact is where the law holds it (f = the sticking force), and the next iteration
- * works on the band's own linearization; once a step, so that a contact that must reverse is
- * stopped only once. */
-static double first_trial(fricreg_structure *s)
+/* The engine's callbacks (step_newton.h): the products and the residual above. */
+static void products_cb(void *user, const double x[], struct fr_compliance_pair *p)
 {
-    double c = (1.0 + s->alpha) * s->gamma * s->step_dt;
-    const double *weff_df = s->at_df.weff->data;
-    double lambda = 1.0, eps = fr_ctx_eps(s->ctx);
-    size_t first = s->m;
-    for (size_t i = 0; i < s->m; i++) {
-        double z = s->zdot->data[i], z1 = z + c * weff_df[i];
-        if (!s->stopped[i] && s->mun[i] > 0.0 && s->newton.fz[i] == 0.0 && z * z1 < 0.0 &&
-            fabs(z1) >= eps && z / (z - z1) < lambda) {
-            lambda = z / (z - z1);
-            first = i;
-        }
-    }
-    if (first < s->m)
-        s->stopped[first] = 1;
-    return lambda;
+    form_products(user, x, p);
 }
 
-/* Backtracking on ||R||_2 along df from f, from the first trial (stop_slips) or from the full
- * step; on success f, its products, G and the context's last evaluation are at the accepted
- * point. Returns 0 if no cut decreased the residual. */
-static int line_search(fricreg_structure *s, int stop_slips, double *phi, double *rinf)
+static int residual_cb(void *user, const gsl_vector *f, const struct fr_compliance_pair *p,
+                       gsl_vector *G, double *phi, double *rinf)
 {
-    double lambda = stop_slips ? first_trial(s) : 1.0;
-    for (int cut = 0; cut <= MAX_CUTS; cut++) {
-        gsl_vector_memcpy(s->ft, s->fk);
-        gsl_blas_daxpy(lambda, s->df, s->ft);
-        combine_products(&s->at_fk, lambda, &s->at_df, &s->at_ft);
-        double phi_t, rinf_t;
-        if (residual(s, s->ft, &s->at_ft, s->Gt, &phi_t, &rinf_t) == FRICREG_OK &&
-            phi_t <= (1.0 - ARMIJO * lambda) * *phi) {
-            struct fr_compliance_pair accepted = s->at_ft;
-            s->at_ft = s->at_fk;
-            s->at_fk = accepted;
-            gsl_vector_memcpy(s->fk, s->ft);
-            gsl_vector_memcpy(s->G, s->Gt);
-            *phi = phi_t;
-            *rinf = rinf_t;
-            return 1;
-        }
-        s->stats[FRICREG_SSTAT_LINE_SEARCH_CUTS]++;
-        lambda *= 0.5;
-    }
-    return 0;
+    return residual(user, f, p, G, phi, rinf);
 }
 
 /* Newton iterations from fk (its residual evaluated: G, phi = ||R||_2, *rinf = ||R||_inf)
  * until the residual is within tol, the step's iterations (*iters, counted on) run out, or
- * the line search stalls; FRICREG_ENOMEM if the Newton matrix could not be allocated. At least one iteration unless R is exactly zero: a guess accepted
- * within the tolerance would leave a in error by up to tol, and a stick would creep by that
- * times dt^2 every step. On a linear piece of the law one iteration is exact. */
+ * the line search stalls (step_newton.c), slipping contacts stopped at zdot = 0 with
+ * stop_slips (the first trial, fr_newton_first_stop: a Newton step from a slip piece is the
+ * root of that piece's linearization; when the contact must stop, that root lies beyond the
+ * band, which is only eps/(gamma dt) wide in the acceleration, so the full step jumps across
+ * it to the other slip piece, and halving finds the band only after many cuts; stopped at
+ * zdot_i = 0, the contact is where the law holds it, and the next iteration works on the
+ * band's own linearization; once a step, so that a contact that must reverse is stopped only
+ * once). FRICREG_ENOMEM if the Newton matrix could not be allocated. On a linear piece of
+ * the law one iteration is exact. */
 static int iterate(fricreg_structure *s, double tol, int stop_slips, double *phi, double *rinf,
                    int *iters)
 {
-    int done = 0;
-    double c = (1.0 + s->alpha) * s->gamma * s->step_dt;
-    while (*rinf != 0.0 && (done == 0 || *rinf > tol) && *iters < s->newton_max) {
-        if (!isfinite(*phi))
-            break;
-        int status = fr_newton_direction(&s->newton, s->ctx, c, s->mass.D, s->step.D, s->G->data,
-                                         s->df->data, &s->cc);
-        if (status == FRICREG_ENOMEM)
-            return fr_fail(s, status, "step: no memory for the dense Newton matrix (%zu contacts)",
-                           s->m);
-        if (status != FRICREG_OK)
-            break; /* a singular tangent: the step ends on this iterate, a failure counted */
-        ++*iters;
-        ++done;
-        form_products(s, s->df->data, &s->at_df);
-        if (!line_search(s, stop_slips, phi, rinf)) {
-            residual(s, s->fk, &s->at_fk, s->G, phi, rinf); /* back to fk: the best point */
-            break;
-        }
-    }
+    struct fr_step_newton e = {
+        .m = s->m,
+        .coef = (1.0 + s->alpha) * s->gamma * s->step_dt,
+        .eps = fr_ctx_eps(s->ctx),
+        .mun = s->mun,
+        .max_iter = s->newton_max,
+        .ctx = s->ctx,
+        .nm = &s->newton,
+        .W = s->mass.D,
+        .Weff = s->step.D,
+        .cc = &s->cc,
+        .fk = s->fk,
+        .ft = s->ft,
+        .df = s->df,
+        .G = s->G,
+        .Gt = s->Gt,
+        .at_k = &s->at_fk,
+        .at_t = &s->at_ft,
+        .at_df = &s->at_df,
+        .zdot = s->zdot,
+        .stopped = s->stopped,
+        .cuts = &s->stats[FRICREG_SSTAT_LINE_SEARCH_CUTS],
+        .user = s,
+        .products = products_cb,
+        .residual = residual_cb,
+    };
+    if (fr_step_newton_iterate(&e, tol, stop_slips, 1, phi, rinf, iters) == FRICREG_ENOMEM)
+        return fr_fail(s, FRICREG_ENOMEM,
+                       "step: no memory for the dense Newton matrix (%zu contacts)", s->m);
     return FRICREG_OK;
 }
 
@@ -292,7 +251,7 @@ static int law_exact(const fricreg_structure *s)
  * Why: at small eps the band (law (4): |zdot - xi| < eps/2) is only eps/(c W_eff) wide in the
  * forces. A sticking contact's velocity wanders inside it, and the start's forces, held over
  * the step while the structure moves, put it outside: Newton then brings the sticking contacts
- * back one at a time (a stop each, first_trial), about an iteration per contact. On the
+ * back one at a time (a stop each, fr_newton_first_stop), about an iteration per contact. On the
  * ten-storey building (examples/building/) at eps = 1e-4 m/s and dt = 0.01 s that was 12
  * iterations a step through its 5 s of free vibration, all ten dampers sticking.
  * The forces on S:
@@ -317,26 +276,24 @@ static size_t mark_below_bound(fricreg_structure *s)
     return k;
 }
 
-/* law_exact's guess, solved for the forces themselves: W_eff,SS f_S = rhs_S - W_eff,SR f_R.
- * With every contact in S (all sticking) that is one solve and one product, the guess's. */
+/* law_exact's guess, solved for the forces themselves: W_eff,SS f_S = rhs_S - W_eff,SR f_R
+ * (fr_newton_stick_rhs's b with W_eff f_R for W_eff f). With every contact in S (all
+ * sticking) that is one solve and one product, the guess's. */
 static int band_guess(fricreg_structure *s, size_t k)
 {
     size_t m = s->m;
     const unsigned char *set = s->stopped;
-    const double *f = s->f->data, *w = fr_ctx_coupling_diagonal(s->ctx);
+    const double *f = s->f->data;
     double *guess = s->ft->data, *b = s->mwork2->data, *weff_r = s->mwork->data;
     for (size_t i = 0; i < m; i++)
         guess[i] = set[i] ? 0.0 : f[i];
     if (k < m) /* W_eff f_R: what the kept forces do to S */
         fr_cfactor_compliance(&s->step, guess, weff_r);
+    else
+        memset(weff_r, 0, m * sizeof *weff_r);
     double c = (1.0 + s->alpha) * s->gamma * s->step_dt;
-    double two_over_eps = 2.0 / fr_ctx_eps(s->ctx);
-    for (size_t i = 0; i < m; i++) {
-        double ki = s->mun[i] * w[i] * two_over_eps;
-        b[i] = (-s->af0->data[i] - ki * s->z0->data[i]) / (1.0 + c * ki);
-        if (k < m)
-            b[i] -= weff_r[i];
-    }
+    fr_newton_stick_rhs(m, 1, c, fr_ctx_eps(s->ctx), s->mun, fr_ctx_coupling_diagonal(s->ctx),
+                        s->z0->data, s->af0->data, weff_r, NULL, NULL, b);
     if (fr_newton_stick_solve(&s->newton, s->step.D, set, b, guess, &s->cc) != FRICREG_OK)
         return 0; /* guess_S is then not read */
     form_products(s, guess, &s->at_ft);
@@ -354,14 +311,14 @@ static int hold_guess(fricreg_structure *s)
     double c = (1.0 + s->alpha) * s->gamma * s->step_dt;
     memset(df, 0, m * sizeof *df);
     fr_csc_mult_t(s->Jt, s->v->data, b); /* zdot(t) */
-    for (size_t i = 0; i < m; i++)
-        b[i] = (b[i] - s->zdot->data[i]) / c;
+    fr_newton_stick_rhs(m, 0, c, fr_ctx_eps(s->ctx), s->mun, NULL, NULL, NULL, NULL, b,
+                        s->zdot->data, b);
     if (fr_newton_stick_solve(&s->newton, s->step.D, s->stopped, b, df, &s->cc) != FRICREG_OK)
         return 0;
     for (size_t i = 0; i < m; i++)
         guess[i] = f[i] + df[i];
     form_products(s, df, &s->at_ft);
-    combine_products(&s->at_start, 1.0, &s->at_ft, &s->at_ft);
+    fr_step_combine(&s->at_start, 1.0, &s->at_ft, &s->at_ft);
     return 1;
 }
 
@@ -371,7 +328,7 @@ static int hold_guess(fricreg_structure *s)
  * tol it is the step's solution (one iteration counted, no more made), and the start's
  * products and residual are not formed.
  * On return the context's last evaluation and s->f1 are at fk. Slipping contacts are
- * stopped at zdot = 0 (first_trial). Where a stop ends on a kink of the law (zdot = 0 is the
+ * stopped at zdot = 0 (fr_newton_first_stop). Where a stop ends on a kink of the law (zdot = 0 is the
  * band's edge when |f_eq| >= mun) the line search can stall there: Newton then starts again
  * from the start's forces, without stops, with the iterations left. */
 static int newton(fricreg_structure *s, double dt, int *converged, int *iters)

@@ -235,3 +235,39 @@ int fr_newton_stick_solve(struct fr_newton_matrix *nm, const cholmod_sparse *Wef
 {
     return fr_masked_factor_solve(&nm->block, Weff, set, NULL, b, x, c);
 }
+
+double fr_newton_first_stop(size_t m, const double zdot[], const double weff_df[], double coef,
+                            double eps, const double mun[], const double fz[],
+                            unsigned char stopped[])
+{
+    double lambda = 1.0;
+    size_t first = m;
+    for (size_t i = 0; i < m; i++) {
+        double z = zdot[i], z1 = z + coef * weff_df[i];
+        if (!stopped[i] && mun[i] > 0.0 && fz[i] == 0.0 && z * z1 < 0.0 && fabs(z1) >= eps &&
+            z / (z - z1) < lambda) {
+            lambda = z / (z - z1);
+            first = i;
+        }
+    }
+    if (first < m)
+        stopped[first] = 1;
+    return lambda;
+}
+
+void fr_newton_stick_rhs(size_t m, int exact, double coef, double eps, const double mun[],
+                         const double w[], const double z0[], const double a0[],
+                         const double weff_f[], const double zstart[], const double zdot[],
+                         double b[])
+{
+    if (exact) {
+        double two_over_eps = 2.0 / eps;
+        for (size_t i = 0; i < m; i++) {
+            double ki = mun[i] * w[i] * two_over_eps;
+            b[i] = (-a0[i] - ki * z0[i]) / (1.0 + coef * ki) - weff_f[i];
+        }
+    } else {
+        for (size_t i = 0; i < m; i++)
+            b[i] = (zstart[i] - zdot[i]) / coef;
+    }
+}

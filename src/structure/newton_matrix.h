@@ -77,4 +77,24 @@ int fr_newton_stick_solve(struct fr_newton_matrix *nm, const cholmod_sparse *Wef
                           const unsigned char set[], const double b[], double x[],
                           cholmod_common *c);
 
+/* The first trial fraction of a Newton direction (Newmark's stop of a slipping contact,
+ * newmark.c and contact_step.c): with zdot[m] the velocities at the iterate, weff_df[m] =
+ * W_eff df, coef = c, fz[m] the slopes' signs of the last direction (nm->fz), the largest
+ * lambda in (0, 1] at which a slipping contact (mun_i > 0, fz_i = 0) not yet stopped this step
+ * reaches zdot_i = 0 where the full step takes it from one side across the whole band
+ * (|zdot_i + c [W_eff df]_i| >= eps on the other); that contact is marked in stopped[m]. */
+double fr_newton_first_stop(size_t m, const double zdot[], const double weff_df[], double coef,
+                            double eps, const double mun[], const double fz[],
+                            unsigned char stopped[]);
+
+/* The right-hand side b[m] of the stick guess's W_eff,SS df_S = b_S - [W_eff f]_S, f the
+ * start's forces with products weff_f[m] = [W_eff f]: with exact set (law (4), diagonal W
+ * w[m]), the band's own affine piece, b_i = (-a0_i - k_i z0_i) / (1 + c k_i) - [W_eff f]_i,
+ * k_i = 2 mun_i w_i / eps; otherwise the forces that keep the velocities at the step's start
+ * zstart[m], b_i = (zstart_i - zdot_i) / c with zdot[m] at f. b may alias zstart. */
+void fr_newton_stick_rhs(size_t m, int exact, double coef, double eps, const double mun[],
+                         const double w[], const double z0[], const double a0[],
+                         const double weff_f[], const double zstart[], const double zdot[],
+                         double b[]);
+
 #endif

@@ -17,6 +17,7 @@
 #include "contact_factor.h"
 #include "fricreg_structure.h"
 #include "newton_matrix.h"
+#include "step_newton.h"
 
 #define FR_NSSTATS 5
 
@@ -35,11 +36,6 @@ struct fr_record {
 struct fr_energy {
     double initial, input, viscous, friction;
     double *per_contact; /* [m] */
-};
-
-/* W_eff f and W f, [m] each, at one set of contact forces f. */
-struct fr_compliance_pair {
-    gsl_vector *weff, *w;
 };
 
 struct fricreg_structure {

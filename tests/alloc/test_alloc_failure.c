@@ -532,6 +532,45 @@ static const struct script ctx_coupling = {
     "ctx set_coupling_dense", 5,    ctx_coupling_calls, 0,           0,        ctx_open,
     ctx_coupling_call,        NULL, ctx_observe,        ctx_errcode, ctx_close};
 
+/* fricreg_ctx_solve_step (fricreg_structure.h) on a coupled context: its scratch (CHOLMOD's
+ * copies of W and W_eff, the Newton matrix, the vectors) is allocated per call, before any
+ * evaluation, and freed before it returns; a failed call writes neither f nor info and leaves
+ * the context's last evaluation as it was. */
+static const char *const ctx_solve_step_calls[] = {"set_coupling_dense", "set_bounds", "set_law",
+                                                   "solve_step"};
+
+static int ctx_solve_step_call(void *obj, int i, struct view *v)
+{
+    double W[M_DENSE * M_DENSE], Weff[M_DENSE * M_DENSE], f[M_DENSE];
+    dense_w(W, -0.731);
+    switch (i) {
+    case 0: return fricreg_ctx_set_coupling_dense(obj, M_DENSE, W);
+    case 1: return fricreg_ctx_set_bounds(obj, M_DENSE, MUN5);
+    case 2: return fricreg_ctx_set_law(obj, FRICREG_LAW_QUINN, 0.02);
+    default: {
+        for (size_t k = 0; k < M_DENSE * M_DENSE; k++)
+            Weff[k] = 0.05 * W[k];
+        for (size_t k = 0; k < M_DENSE; k++)
+            f[k] = 0.5 * MUN5[k];
+        int info[2] = {-7, -7};
+        int status = fricreg_ctx_solve_step(obj, M_DENSE, ZDOT5[0], ZDOT5[2], AFREE5[0], W, Weff,
+                                            0.01, 1e-12, 50, 0, f, info);
+        if (status != FRICREG_OK && (info[0] != -7 || info[1] != -7 || f[0] != 0.5 * MUN5[0]))
+            NOTE("solve_step: status %d but f or info written", status);
+        if (status == FRICREG_OK) {
+            see_all(v, f, M_DENSE);
+            see(v, info[0]);
+            see(v, info[1]);
+        }
+        return status;
+    }
+    }
+}
+
+static const struct script ctx_solve_step = {
+    "ctx solve_step",    4,    ctx_solve_step_calls, 0,           0,        ctx_open,
+    ctx_solve_step_call, NULL, ctx_observe,          ctx_errcode, ctx_close};
+
 /* The step guard's eigenvalue problem: the paper's partition with a dense W (stiffness.c). A
  * failed call writes no lambda and changes nothing. */
 static const char *const ctx_stiffness_calls[] = {"set_coupling_dense", "set_bounds",
@@ -1576,6 +1615,13 @@ START_TEST(test_ctx_set_coupling_dense)
 }
 END_TEST
 
+START_TEST(test_ctx_solve_step)
+{
+    struct tally t = fail_each_allocation(&ctx_solve_step);
+    ck_assert_int_eq(t.enomem, t.cases);
+}
+END_TEST
+
 START_TEST(test_ctx_stick_stiffness)
 {
     struct tally t = fail_each_allocation(&ctx_stiffness);
@@ -2014,6 +2060,7 @@ static Suite *alloc_suite(void)
     tcase_add_test(core, test_ctx_create);
     tcase_add_test(core, test_ctx_set_coupling_dense);
     tcase_add_test(core, test_ctx_stick_stiffness);
+    tcase_add_test(core, test_ctx_solve_step);
     tcase_add_test(core, test_eval_does_not_allocate);
     tcase_add_test(core, test_ctx_set_coupling_sparse);
     tcase_add_test(core, test_sparse_eval_does_not_allocate);

@@ -1,0 +1,391 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* contact_step.c — fricreg_ctx_solve_step: the contact-space Newton of one implicit step
+ * (Newmark, HHT-alpha, a BDF) for a caller who keeps their own integrator and their own K_eff
+ * solve, with the safeguards of fricreg_structure's steps (newmark.c): the stick guess, the
+ * stop of a slipping contact at zdot = 0, and the backtracking line search.
+ *
+ * The caller's step makes the contacts' velocities and free accelerations affine in the forces
+ * (fricreg_structure.h, fricreg_ctx_solve_step):
+ *   zdot(f) = zdot_pred + c W_eff f,   a_free(f) = a_pred - (W - W_eff) f,
+ * and Newton solves G(f) = f - F(zdot(f), a_free(f)) = 0, F the context's law. The iterations
+ * (direction, stop, line search) are step_newton.c's and the stick guess's solve and right-hand
+ * side newton_matrix.c's, all shared with newmark.c; the sequence (stick guess, start, restart
+ * without stops) is newmark.c's newton(). What differs is how the residual is measured.
+ * newmark.c reads the structure's residual R = w J^T G on its degrees of freedom, which this
+ * function does not see; the line search here reads its M^-1 norm,
+ *   ||R||_{M^-1}^2 = G^T J M^-1 J^T G = G^T W G,
+ * which is newmark.c's ||R||_2 up to a constant when M is a multiple of I (the building) and
+ * the same kind of measure otherwise. With the plain 2-norm of G instead, the line search
+ * stalled at the building's reversals (a stopped damper beside two sliding ones: 1 step of
+ * 1500 unconverged at eps = 1e-3, 5 at 1e-4), where ||R|| weighs the dampers' differences.
+ * The stopping rule reads max_i |G_i|, in force units. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/error.h"
+#include "base/sparse_factor.h"
+#include "base/sparse_ops.h"
+#include "ctx/ctx_driver.h"
+#include "fricreg_structure.h"
+#include "newton_matrix.h"
+#include "step_newton.h"
+
+#define SYM_TOL 1e-12 /* |A_ij - A_ji| <= SYM_TOL sqrt(A_ii A_jj), as the context's setters */
+#define DENSE_FALLBACK_MAX 64
+
+enum {
+    V_F0,
+    V_FK,
+    V_FT,
+    V_DF,
+    V_G,
+    V_GT,
+    V_ZDOT,
+    V_AFREE,
+    V_F,
+    V_B,
+    V_WG,
+    V_PAIRS,
+    VECTORS = V_PAIRS + 10
+};
+
+struct step_solver {
+    size_t m;
+    fricreg_ctx *ctx;
+    double c;
+    const double *z0, *a0, *mun;
+    cholmod_common cc;
+    cholmod_sparse *W, *Weff; /* upper triangles, sorted */
+    struct fr_newton_matrix nm;
+    double *block;         /* every vector, one allocation */
+    gsl_vector v[VECTORS]; /* views of it, for the shared iterations (step_newton.h) */
+    double *f0, *zdot, *afree, *F, *b, *wg, *df;
+    struct fr_compliance_pair at_start, at_k, at_t, at_df, at_guess;
+    unsigned char *stopped;
+};
+
+static int fail(fricreg_ctx *ctx, int code, const char *what)
+{
+    return fr_error_set(fr_ctx_error(ctx), code, "solve_step: %s", what);
+}
+
+/* A's upper triangle (m x m, row-major) as CHOLMOD's symmetric upper form, the diagonal kept
+ * and the zeros above it left out; NULL when out of memory. */
+static cholmod_sparse *upper_of(const double A[], size_t m, cholmod_common *cc)
+{
+    size_t nnz = 0;
+    for (size_t j = 0; j < m; j++)
+        for (size_t i = 0; i <= j; i++)
+            nnz += i == j || A[i * m + j] != 0.0;
+    cholmod_sparse *S = cholmod_l_allocate_sparse(m, m, nnz, 1, 1, 1, CHOLMOD_REAL, cc);
+    if (S == NULL)
+        return NULL;
+    SuiteSparse_long *Sp = S->p, *Si = S->i, p = 0;
+    double *Sx = S->x;
+    for (size_t j = 0; j < m; j++) {
+        Sp[j] = p;
+        for (size_t i = 0; i <= j; i++)
+            if (i == j || A[i * m + j] != 0.0) {
+                Si[p] = (SuiteSparse_long)i;
+                Sx[p++] = A[i * m + j];
+            }
+    }
+    Sp[m] = p;
+    return S;
+}
+
+/* FRICREG_OK, FRICREG_ENOTSYM or FRICREG_ENOTPSD (a diagonal entry not above DBL_MIN). */
+static int check_symmetric(const double A[], size_t m)
+{
+    for (size_t i = 0; i < m; i++)
+        if (!(A[i * m + i] >= 0x1p-1022))
+            return FRICREG_ENOTPSD;
+    for (size_t i = 0; i < m; i++)
+        for (size_t j = i + 1; j < m; j++)
+            if (fabs(A[i * m + j] - A[j * m + i]) >
+                SYM_TOL * sqrt(A[i * m + i]) * sqrt(A[j * m + j]))
+                return FRICREG_ENOTSYM;
+    return FRICREG_OK;
+}
+
+static int all_finite(const double x[], size_t n)
+{
+    for (size_t k = 0; k < n; k++)
+        if (!isfinite(x[k]))
+            return 0;
+    return 1;
+}
+
+static void products_of(struct step_solver *s, const double f[], struct fr_compliance_pair *p)
+{
+    fr_sym_mult(s->Weff, 1.0, f, 0.0, p->weff->data);
+    fr_sym_mult(s->W, 1.0, f, 0.0, p->w->data);
+}
+
+/* G = f - F(zdot(f), a_free(f)) from f and its products, the merit sqrt(G^T W G) into *phi
+ * and ||G||_inf into *rinf; the context's status (its eval's). */
+static int residual(struct step_solver *s, const gsl_vector *fv, const struct fr_compliance_pair *p,
+                    gsl_vector *Gv, double *phi, double *rinf)
+{
+    size_t m = s->m;
+    const double *f = fv->data, *weff_f = p->weff->data, *w_f = p->w->data;
+    double *G = Gv->data;
+    for (size_t i = 0; i < m; i++) {
+        s->zdot[i] = s->z0[i] + s->c * weff_f[i];
+        s->afree[i] = s->a0[i] + (weff_f[i] - w_f[i]); /* as newmark.c: the difference first */
+    }
+    int status = fricreg_ctx_eval(s->ctx, m, s->zdot, s->afree, s->F, NULL);
+    if (status != FRICREG_OK)
+        return status;
+    double big = 0.0, q = 0.0;
+    for (size_t i = 0; i < m; i++) {
+        G[i] = f[i] - s->F[i];
+        big = fmax(big, fabs(G[i]));
+    }
+    fr_sym_mult(s->W, 1.0, G, 0.0, s->wg);
+    for (size_t i = 0; i < m; i++)
+        q += G[i] * s->wg[i];
+    *phi = sqrt(fmax(q, 0.0));
+    *rinf = big;
+    return FRICREG_OK;
+}
+
+static void products_cb(void *user, const double x[], struct fr_compliance_pair *p)
+{
+    products_of(user, x, p);
+}
+
+static int residual_cb(void *user, const gsl_vector *f, const struct fr_compliance_pair *p,
+                       gsl_vector *G, double *phi, double *rinf)
+{
+    return residual(user, f, p, G, phi, rinf);
+}
+
+/* fk = x (products p) and its residual. */
+static int start_at(struct step_solver *s, const gsl_vector *x, const struct fr_compliance_pair *p,
+                    double *phi, double *rinf)
+{
+    gsl_vector_memcpy(&s->v[V_FK], x);
+    gsl_vector_memcpy(s->at_k.weff, p->weff);
+    gsl_vector_memcpy(s->at_k.w, p->w);
+    return residual(s, &s->v[V_FK], &s->at_k, &s->v[V_G], phi, rinf);
+}
+
+/* Law (4) with a diagonal W: the stick guess solves the band's own piece (newmark.c). */
+static int law_exact(const struct step_solver *s)
+{
+    if (fr_ctx_law(s->ctx) != FRICREG_LAW_QUINN)
+        return 0;
+    const SuiteSparse_long *Wp = s->W->p;
+    return Wp[s->m] == (SuiteSparse_long)s->m; /* the diagonal alone */
+}
+
+/* The stick guess of newmark.c's stick_guess into s->ft, its products into at_guess: 0 if
+ * there is none, 1 (2 for law_exact). Reads s->zdot (the start's residual) unless law_exact. */
+static int stick_guess(struct step_solver *s, const double zstart[])
+{
+    size_t m = s->m, k = 0;
+    for (size_t i = 0; i < m; i++) {
+        s->stopped[i] = fabs(s->f0[i]) < s->mun[i];
+        k += s->stopped[i];
+        s->df[i] = 0.0;
+    }
+    if (k == 0)
+        return 0;
+    int exact = law_exact(s);
+    fr_newton_stick_rhs(m, exact, s->c, fr_ctx_eps(s->ctx), s->mun,
+                        fr_ctx_coupling_diagonal(s->ctx), s->z0, s->a0, s->at_start.weff->data,
+                        zstart, s->zdot, s->b);
+    if (fr_newton_stick_solve(&s->nm, s->Weff, s->stopped, s->b, s->df, &s->cc) != FRICREG_OK)
+        return 0;
+    double *guess = s->v[V_FT].data;
+    for (size_t i = 0; i < m; i++) {
+        guess[i] = s->f0[i] + s->df[i];
+        if (!isfinite(guess[i]))
+            return 0; /* beyond the range (a tiny c): no guess, Newton from f0 */
+    }
+    products_of(s, s->df, &s->at_guess);
+    fr_step_combine(&s->at_start, 1.0, &s->at_guess, &s->at_guess);
+    return exact ? 2 : 1;
+}
+
+/* The shared iterations (step_newton.c) from fk; plain: full steps, no stops, no search. */
+static int iterate(struct step_solver *s, double tol, int max_iter, int stops, int search,
+                   double *phi, double *rinf, int *iters)
+{
+    struct fr_step_newton e = {
+        .m = s->m,
+        .coef = s->c,
+        .eps = fr_ctx_eps(s->ctx),
+        .mun = s->mun,
+        .max_iter = max_iter,
+        .ctx = s->ctx,
+        .nm = &s->nm,
+        .W = s->W,
+        .Weff = s->Weff,
+        .cc = &s->cc,
+        .fk = &s->v[V_FK],
+        .ft = &s->v[V_FT],
+        .df = &s->v[V_DF],
+        .G = &s->v[V_G],
+        .Gt = &s->v[V_GT],
+        .at_k = &s->at_k,
+        .at_t = &s->at_t,
+        .at_df = &s->at_df,
+        .zdot = &s->v[V_ZDOT],
+        .stopped = s->stopped,
+        .cuts = NULL,
+        .user = s,
+        .products = products_cb,
+        .residual = residual_cb,
+    };
+    return fr_step_newton_iterate(&e, tol, stops, search, phi, rinf, iters);
+}
+
+/* Newton as newmark.c's newton(), or plain (full steps from f0, no guess). */
+static int solve(struct step_solver *s, const double zstart[], double tol, int max_iter, int plain,
+                 int *converged, int *iters)
+{
+    double phi = 0.0, rinf = 0.0, phi_guess = 0.0;
+    int guess = 0, status;
+    *iters = 0;
+    products_of(s, s->f0, &s->at_start);
+    if (!plain && law_exact(s) && (guess = stick_guess(s, zstart)) != 0) {
+        if ((status = start_at(s, &s->v[V_FT], &s->at_guess, &phi, &rinf)) != FRICREG_OK)
+            return status;
+        if (rinf <= tol) {
+            *iters = 1;
+            *converged = 1;
+            return FRICREG_OK;
+        }
+        phi_guess = phi;
+    }
+    if ((status = start_at(s, &s->v[V_F0], &s->at_start, &phi, &rinf)) != FRICREG_OK)
+        return status;
+    if (!plain && rinf > tol) {
+        double phi_start = phi;
+        if (guess != 0) {
+            if (phi_guess < phi_start)
+                status = start_at(s, &s->v[V_FT], &s->at_guess, &phi, &rinf);
+        } else if (stick_guess(s, zstart)) {
+            status = start_at(s, &s->v[V_FT], &s->at_guess, &phi, &rinf);
+            if (status == FRICREG_OK && !(phi < phi_start))
+                status = start_at(s, &s->v[V_F0], &s->at_start, &phi, &rinf);
+        }
+        if (status != FRICREG_OK)
+            return status;
+    }
+    memset(s->stopped, 0, s->m);
+    if ((status = iterate(s, tol, max_iter, !plain, !plain, &phi, &rinf, iters)) != FRICREG_OK)
+        return status;
+    if (!plain && rinf > tol && isfinite(phi) && *iters < max_iter) {
+        if ((status = start_at(s, &s->v[V_F0], &s->at_start, &phi, &rinf)) != FRICREG_OK ||
+            (status = iterate(s, tol, max_iter, 0, 1, &phi, &rinf, iters)) != FRICREG_OK)
+            return status;
+    }
+    *converged = rinf <= tol;
+    return isfinite(phi) ? FRICREG_OK : FRICREG_EDIVERGED;
+}
+
+static int allocate(struct step_solver *s, const double W[], const double Weff[])
+{
+    size_t m = s->m;
+    if (fr_cholmod_start(&s->cc) != FRICREG_OK)
+        return FRICREG_ENOMEM;
+    s->W = upper_of(W, m, &s->cc);
+    s->Weff = upper_of(Weff, m, &s->cc);
+    s->block = malloc(VECTORS * m * sizeof *s->block);
+    s->stopped = malloc(m);
+    if (s->W == NULL || s->Weff == NULL || s->block == NULL || s->stopped == NULL)
+        return FRICREG_ENOMEM;
+    for (size_t k = 0; k < VECTORS; k++)
+        s->v[k] = (gsl_vector){.size = m, .stride = 1, .data = s->block + k * m};
+    s->f0 = s->v[V_F0].data;
+    s->df = s->v[V_DF].data;
+    s->zdot = s->v[V_ZDOT].data;
+    s->afree = s->v[V_AFREE].data;
+    s->F = s->v[V_F].data;
+    s->b = s->v[V_B].data;
+    s->wg = s->v[V_WG].data;
+    struct fr_compliance_pair *pairs[] = {&s->at_start, &s->at_k, &s->at_t, &s->at_df,
+                                          &s->at_guess};
+    for (size_t k = 0; k < 5; k++)
+        *pairs[k] = (struct fr_compliance_pair){&s->v[V_PAIRS + 2 * k], &s->v[V_PAIRS + 2 * k + 1]};
+    return fr_newton_matrix_prepare(&s->nm, s->Weff, m <= DENSE_FALLBACK_MAX, &s->cc);
+}
+
+static void release(struct step_solver *s)
+{
+    fr_newton_matrix_free(&s->nm, &s->cc);
+    cholmod_l_free_sparse(&s->W, &s->cc);
+    cholmod_l_free_sparse(&s->Weff, &s->cc);
+    free(s->block);
+    free(s->stopped);
+    fr_cholmod_finish(&s->cc);
+}
+
+int fricreg_ctx_solve_step(fricreg_ctx *ctx, size_t m, const double zdot_start[],
+                           const double zdot_pred[], const double a_pred[], const double W[],
+                           const double Weff[], double c, double tol, int max_iter, int flags,
+                           double f[], int info[])
+{
+    if (ctx == NULL)
+        return FRICREG_ENULL;
+    if (zdot_start == NULL || zdot_pred == NULL || a_pred == NULL || W == NULL || Weff == NULL ||
+        f == NULL || info == NULL)
+        return fail(ctx, FRICREG_ENULL, "a required array is NULL");
+    if (m != fricreg_ctx_size(ctx))
+        return fr_error_set(fr_ctx_error(ctx), FRICREG_ESIZE,
+                            "solve_step: m = %zu, the context has %zu contacts", m,
+                            fricreg_ctx_size(ctx));
+    if (!isfinite(c) || !isfinite(tol))
+        return fail(ctx, FRICREG_ENONFINITE, "c or tol is NaN or infinite");
+    if (!(c > 0.0) || !(tol > 0.0) || max_iter < 1 || (flags & ~FRICREG_STEP_PLAIN) != 0)
+        return fail(ctx, FRICREG_EINVAL, "needs c > 0, tol > 0, max_iter >= 1, known flags");
+    if (!all_finite(zdot_start, m) || !all_finite(zdot_pred, m) || !all_finite(a_pred, m) ||
+        !all_finite(f, m) || !all_finite(W, m * m) || !all_finite(Weff, m * m))
+        return fail(ctx, FRICREG_ENONFINITE, "an input array holds NaN or infinity");
+    int status = check_symmetric(W, m);
+    if (status == FRICREG_OK)
+        status = check_symmetric(Weff, m);
+    if (status != FRICREG_OK)
+        return fail(ctx, status,
+                    status == FRICREG_ENOTSYM ? "W or W_eff is not symmetric"
+                                              : "W or W_eff has a diagonal entry below DBL_MIN");
+
+    const double *wd = fr_ctx_coupling_diagonal(ctx);
+    for (size_t i = 0; i < m; i++)
+        if (!(fabs(W[i * m + i] - wd[i]) <= SYM_TOL * wd[i]))
+            return fr_error_set(fr_ctx_error(ctx), FRICREG_EINVAL,
+                                "solve_step: W_%zu%zu = %g, the context's coupling has %g", i, i,
+                                W[i * m + i], wd[i]);
+
+    struct step_solver s;
+    memset(&s, 0, sizeof s);
+    s.m = m;
+    s.ctx = ctx;
+    s.c = c;
+    s.z0 = zdot_pred;
+    s.a0 = a_pred;
+    s.mun = fr_ctx_bounds(ctx);
+    status = allocate(&s, W, Weff);
+    if (status != FRICREG_OK) {
+        release(&s);
+        return fail(ctx, status, "no memory");
+    }
+    memcpy(s.f0, f, m * sizeof *f);
+    int converged = 0, iters = 0;
+    status = solve(&s, zdot_start, tol, max_iter, flags & FRICREG_STEP_PLAIN, &converged, &iters);
+    if (status == FRICREG_OK) {
+        memcpy(f, s.v[V_FK].data, m * sizeof *f);
+        info[0] = iters;
+        info[1] = converged;
+    } else if (status == FRICREG_EDIVERGED) {
+        fail(ctx, status, "the residual is not finite");
+    } else if (status == FRICREG_ENOMEM) {
+        fail(ctx, status, "no memory for the dense Newton matrix");
+    }
+    release(&s);
+    return status;
+}

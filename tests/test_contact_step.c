@@ -1,0 +1,344 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* test_contact_step.c — Check suite for fricreg_ctx_solve_step (fricreg_structure.h): one
+ * implicit step's contact forces for the user's own integrator.
+ *
+ * Expected numbers, each derived where it is used:
+ *  - the step's equations: the returned f is the context's law at the step's end,
+ *    f = F(zdot_pred + c W_eff f, a_pred - (W - W_eff) f), F from fricreg_ctx_eval itself, to
+ *    the tolerance asked (on random symmetric positive definite W and W_eff, for law (4) with a
+ *    coupled and a diagonal W, (3) and tanh: the continuous laws, whose step equations have a
+ *    solution; Karnopp's force jumps at |zdot| = eps, where a step can have none);
+ *  - fricreg_structure's own Newmark steps: the same forces, step after step, when the caller
+ *    forms zdot_pred, a_pred, W and W_eff of the structure's step (Newmark, docstring);
+ *  - plain Newton (FRICREG_STEP_PLAIN) on a step that reverses a sliding contact: it fails
+ *    where the safeguarded one converges. */
+#include <check.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gsl/gsl_linalg.h>
+#include <gsl/gsl_matrix.h>
+
+#include "fricreg.h"
+#include "fricreg_structure.h"
+
+#define MMAX 8
+
+static double uniform(unsigned long *state)
+{
+    *state = *state * 6364136223846793005UL + 1442695040888963407UL;
+    return (double)(*state >> 11) / 9007199254740992.0; /* [0, 1) */
+}
+
+/* A = B B^T / m + shift I, B uniform in [-1, 1): symmetric positive definite, row-major. */
+static void random_spd(size_t m, double scale, double shift, unsigned long *state, double A[])
+{
+    double B[MMAX * MMAX];
+    for (size_t k = 0; k < m * m; k++)
+        B[k] = 2.0 * uniform(state) - 1.0;
+    for (size_t i = 0; i < m; i++)
+        for (size_t j = 0; j < m; j++) {
+            double s = 0.0;
+            for (size_t k = 0; k < m; k++)
+                s += B[i * m + k] * B[j * m + k];
+            A[i * m + j] = scale * (s / (double)m + (i == j ? shift : 0.0));
+        }
+}
+
+/* max_i |f_i - F_i| with F the context's law at the step's end for the forces f. */
+static double law_residual(fricreg_ctx *ctx, size_t m, const double zp[], const double ap[],
+                           const double W[], const double Weff[], double c, const double f[])
+{
+    double zdot[MMAX], afree[MMAX], F[MMAX], big = 0.0;
+    for (size_t i = 0; i < m; i++) {
+        double weff_f = 0.0, w_f = 0.0;
+        for (size_t j = 0; j < m; j++) {
+            weff_f += Weff[i * m + j] * f[j];
+            w_f += W[i * m + j] * f[j];
+        }
+        zdot[i] = zp[i] + c * weff_f;
+        afree[i] = ap[i] + (weff_f - w_f);
+    }
+    ck_assert_int_eq(fricreg_ctx_eval(ctx, m, zdot, afree, F, NULL), FRICREG_OK);
+    for (size_t i = 0; i < m; i++)
+        big = fmax(big, fabs(f[i] - F[i]));
+    return big;
+}
+
+/* Random steps of m = 6 contacts: velocities around the band, free accelerations that hold
+ * some contacts and break others away. law: the context's; diagonal: W diagonal. */
+static void random_steps(int law, int diagonal)
+{
+    enum { M = 6, STEPS = 200 };
+    const double eps = 1e-3, c = 0.005, tol = 1e-10;
+    unsigned long state = 2385;
+    fricreg_ctx *ctx = NULL;
+    ck_assert_int_eq(fricreg_ctx_create(M, &ctx), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_law(ctx, law, eps), FRICREG_OK);
+    int converged = 0, iterations = 0;
+    for (int step = 0; step < STEPS; step++) {
+        double W[M * M], Weff[M * M], mun[M], z0[M], zp[M], ap[M], f[M], wd[M];
+        random_spd(M, 1.0, 0.3, &state, W);
+        if (diagonal) {
+            for (size_t i = 0; i < M; i++) {
+                wd[i] = W[i * M + i];
+                for (size_t j = 0; j < M; j++)
+                    W[i * M + j] = i == j ? wd[i] : 0.0;
+            }
+            ck_assert_int_eq(fricreg_ctx_set_coupling_diagonal(ctx, M, wd), FRICREG_OK);
+        } else {
+            ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, M, W), FRICREG_OK);
+        }
+        random_spd(M, 0.05, 0.2, &state, Weff); /* K_eff stiffer than M: W_eff << W */
+        for (size_t i = 0; i < M; i++) {
+            mun[i] = 0.5 + uniform(&state);
+            z0[i] = eps * (6.0 * uniform(&state) - 3.0);
+            zp[i] = z0[i] + eps * (4.0 * uniform(&state) - 2.0);
+            ap[i] = 3.0 * uniform(&state) - 1.5;
+            f[i] = mun[i] * (2.0 * uniform(&state) - 1.0);
+        }
+        ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, M, mun), FRICREG_OK);
+        int info[2] = {-1, -1};
+        int status = fricreg_ctx_solve_step(ctx, M, z0, zp, ap, W, Weff, c, tol, 50, 0, f, info);
+        ck_assert_msg(status == FRICREG_OK, "%s", fricreg_ctx_errmsg(ctx));
+        ck_assert_int_ge(info[0], 0);
+        if (info[1]) {
+            converged++;
+            iterations += info[0];
+            ck_assert_double_le(law_residual(ctx, M, zp, ap, W, Weff, c, f), 2.0 * tol);
+        }
+    }
+    /* Every step converges, in a few iterations on average. */
+    ck_assert_int_eq(converged, STEPS);
+    ck_assert_int_le(iterations, 6 * STEPS);
+    fricreg_ctx_free(ctx);
+}
+
+START_TEST(law_quinn_coupled)
+{
+    random_steps(FRICREG_LAW_QUINN, 0);
+}
+END_TEST
+
+START_TEST(law_quinn_diagonal)
+{
+    random_steps(FRICREG_LAW_QUINN, 1);
+}
+END_TEST
+
+START_TEST(law_velocity_limited)
+{
+    random_steps(FRICREG_LAW_VELOCITY_LIMITED, 0);
+}
+END_TEST
+
+START_TEST(law_tanh)
+{
+    random_steps(FRICREG_LAW_TANH, 0);
+}
+END_TEST
+
+/* ---- Against fricreg_structure's Newmark steps ------------------------------------------- */
+
+enum { N = 3, MC = 2 };
+
+/* A three-mass chain with two dampers: M, K dense SPD, Rayleigh C, J (2 x 3). */
+static const double Mm[N * N] = {1.3, 0.2, 0.0, 0.2, 0.7, 0.1, 0.0, 0.1, 1.1};
+static const double Km[N * N] = {240.0, -110.0, 0.0, -110.0, 230.0, -120.0, 0.0, -120.0, 120.0};
+static const double Jm[MC * N] = {1.0, 0.0, 0.0, -1.0, 1.0, 0.0};
+static const double ray0 = 0.35, ray1 = 0.0021, MUN[MC] = {2.385, 1.21};
+
+/* X = A^-1 B (A n x n SPD, B n x k), row-major, by GSL's Cholesky. */
+static void spd_solve(const double A[], size_t n, const double B[], size_t k, double X[])
+{
+    gsl_matrix *L = gsl_matrix_alloc(n, n);
+    gsl_vector *x = gsl_vector_alloc(n);
+    memcpy(L->data, A, n * n * sizeof *A);
+    ck_assert_int_eq(gsl_linalg_cholesky_decomp1(L), 0);
+    for (size_t col = 0; col < k; col++) {
+        for (size_t i = 0; i < n; i++)
+            x->data[i] = B[i * k + col];
+        gsl_linalg_cholesky_svx(L, x);
+        for (size_t i = 0; i < n; i++)
+            X[i * k + col] = x->data[i];
+    }
+    gsl_vector_free(x);
+    gsl_matrix_free(L);
+}
+
+/* y = A x, A rows x cols row-major. */
+static void mult(const double A[], size_t rows, size_t cols, const double x[], double y[])
+{
+    for (size_t i = 0; i < rows; i++) {
+        y[i] = 0.0;
+        for (size_t j = 0; j < cols; j++)
+            y[i] += A[i * cols + j] * x[j];
+    }
+}
+
+/* W = J A^-1 J^T for A = M or K_eff. */
+static void delassus(const double A[], double W[])
+{
+    double Jt[N * MC], X[N * MC];
+    for (size_t i = 0; i < MC; i++)
+        for (size_t k = 0; k < N; k++)
+            Jt[k * MC + i] = Jm[i * N + k];
+    spd_solve(A, N, Jt, MC, X);
+    for (size_t i = 0; i < MC; i++)
+        for (size_t j = 0; j < MC; j++) {
+            double s = 0.0;
+            for (size_t k = 0; k < N; k++)
+                s += Jm[i * N + k] * X[k * MC + j];
+            W[i * MC + j] = s;
+        }
+    double off = 0.5 * (W[1] + W[2]); /* symmetric to the last bit */
+    W[1] = W[2] = off;
+}
+
+static void structure_steps(double eps, double *worst, int *iterations, int *steps, int *held,
+                            int *sliding)
+{
+    const double dt = 0.01, beta = 0.25, gamma = 0.5;
+    const double p[N] = {0.0, 0.0, 1.0};
+    double g[401];
+    for (int k = 0; k <= 400; k++)
+        g[k] = 9.7 * sin(2.0 * 3.14159265358979323846 * 1.3 * dt * k);
+    fricreg_structure *s = NULL;
+    ck_assert_int_eq(fricreg_structure_create(N, MC, &s), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_mass(s, N, Mm), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_stiffness(s, N, Km), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_rayleigh(s, ray0, ray1), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_contacts(s, MC, N, Jm), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_bounds(s, MC, MUN), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_law(s, FRICREG_LAW_QUINN, eps), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_load(s, N, p, 0.0, dt, 401, g), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_newton(s, 1e-13, 50), FRICREG_OK);
+
+    double C[N * N], Keff[N * N], W[MC * MC], Weff[MC * MC];
+    for (size_t k = 0; k < N * N; k++) {
+        C[k] = ray0 * Mm[k] + ray1 * Km[k];
+        Keff[k] = Mm[k] + gamma * dt * C[k] + beta * dt * dt * Km[k];
+    }
+    delassus(Mm, W);
+    delassus(Keff, Weff);
+    fricreg_ctx *ctx = NULL;
+    ck_assert_int_eq(fricreg_ctx_create(MC, &ctx), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, eps), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, MC, MUN), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, MC, W), FRICREG_OK);
+
+    *worst = 0.0;
+    *iterations = *steps = *held = *sliding = 0;
+    ck_assert_int_eq(fricreg_structure_step(s, dt), FRICREG_OK); /* a(0) from the first step */
+    for (int k = 2; k <= 400; k++) {
+        double u[N], v[N], a[N], f[MC], fs[MC], up[N], vp[N], b[N], y[N], t1 = k * dt;
+        ck_assert_int_eq(fricreg_structure_get_state(s, N, u, v, a), FRICREG_OK);
+        ck_assert_int_eq(fricreg_structure_get_forces(s, MC, f), FRICREG_OK);
+        for (size_t i = 0; i < N; i++) {
+            up[i] = u[i] + dt * v[i] + (0.5 - beta) * dt * dt * a[i];
+            vp[i] = v[i] + (1.0 - gamma) * dt * a[i];
+        }
+        double cv[N], ku[N];
+        mult(C, N, N, vp, cv);
+        mult(Km, N, N, up, ku);
+        for (size_t i = 0; i < N; i++)
+            b[i] = p[i] * g[k] - cv[i] - ku[i];
+        spd_solve(Keff, N, b, 1, y);
+        double ap[MC], zp[MC], z0[MC], jvp[MC];
+        mult(Jm, MC, N, y, ap);
+        mult(Jm, MC, N, vp, jvp);
+        mult(Jm, MC, N, v, z0);
+        for (size_t i = 0; i < MC; i++)
+            zp[i] = jvp[i] + gamma * dt * ap[i];
+        int info[2];
+        ck_assert_int_eq(fricreg_ctx_solve_step(ctx, MC, z0, zp, ap, W, Weff, gamma * dt,
+                                                1e-13 * MUN[0], 50, 0, f, info),
+                         FRICREG_OK);
+        ck_assert_int_eq(info[1], 1);
+        ck_assert_int_eq(fricreg_structure_step(s, t1 - (k - 1) * dt), FRICREG_OK);
+        ck_assert_int_eq(fricreg_structure_get_forces(s, MC, fs), FRICREG_OK);
+        for (size_t i = 0; i < MC; i++) {
+            *worst = fmax(*worst, fabs(f[i] - fs[i]) / MUN[i]);
+            *held += fabs(fs[i]) < MUN[i];
+            *sliding += fabs(fs[i]) == MUN[i];
+        }
+        *iterations += info[0];
+        ++*steps;
+    }
+    fricreg_ctx_free(ctx);
+    fricreg_structure_free(s);
+}
+
+START_TEST(equals_structure_steps)
+{
+    const double eps[] = {1e-3, 1e-4};
+    for (size_t e = 0; e < 2; e++) {
+        double worst;
+        int iterations, steps, held, sliding;
+        structure_steps(eps[e], &worst, &iterations, &steps, &held, &sliding);
+        /* Both regimes are visited: contacts held inside their bounds and sliding at them. */
+        ck_assert_int_ge(held, 50);
+        ck_assert_int_ge(sliding, 50);
+        /* The same equations to Newton's tolerance 1e-13 on both sides, solved on pieces of a
+         * piecewise-linear law (one Newton step is exact on a piece): the forces agree to
+         * rounding, 1e-12 of the bounds (measured: 8e-15 at eps = 1e-3, 1e-13 at 1e-4). */
+        ck_assert_msg(worst <= 1e-12, "eps %g: forces differ by %g of the bounds", eps[e], worst);
+        ck_assert_int_le(iterations, 2 * steps);
+    }
+}
+END_TEST
+
+/* One contact sliding into a stop: W = 2, W_eff = 1, c = 0.005, eps = 1e-3, zdot_pred = 0, a
+ * guess at the bound f = -1. On the slip pieces the tangent is flat (F_z = 0), so plain Newton
+ * steps to the other piece's force: from f = -1, zdot = -0.005 < -eps gives F = +1 and f = +1,
+ * where zdot = +0.005 > eps gives F = -1 and f = -1 again: a 2-cycle, never converged. The stop
+ * halves the first step (zdot reaches 0 at f = 0, inside the band), and the band's own piece
+ * is linear: converged in at most 3 iterations. */
+START_TEST(plain_newton_cycles)
+{
+    fricreg_ctx *ctx = NULL;
+    ck_assert_int_eq(fricreg_ctx_create(1, &ctx), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, 1e-3), FRICREG_OK);
+    const double W = 2.0, Weff = 1.0, z0 = 0.001, zp = 0.0, ap = 0.3, c = 0.005;
+    ck_assert_int_eq(fricreg_ctx_set_coupling_diagonal(ctx, 1, &W), FRICREG_OK);
+    double f = -1.0;
+    int info[2];
+    ck_assert_int_eq(fricreg_ctx_solve_step(ctx, 1, &z0, &zp, &ap, &W, &Weff, c, 1e-12, 50,
+                                            FRICREG_STEP_PLAIN, &f, info),
+                     FRICREG_OK);
+    int plain_converged = info[1];
+    f = -1.0;
+    ck_assert_int_eq(fricreg_ctx_solve_step(ctx, 1, &z0, &zp, &ap, &W, &Weff, c, 1e-12, 50, 0, &f,
+                                            info),
+                     FRICREG_OK);
+    ck_assert_int_eq(info[1], 1);
+    ck_assert_int_le(info[0], 3);
+    ck_assert_double_le(law_residual(ctx, 1, &zp, &ap, &W, &Weff, c, &f), 1e-12);
+    ck_assert_int_eq(plain_converged, 0);
+    fricreg_ctx_free(ctx);
+}
+END_TEST
+
+static Suite *suite(void)
+{
+    Suite *s = suite_create("contact_step");
+    TCase *tc = tcase_create("core");
+    tcase_add_test(tc, law_quinn_coupled);
+    tcase_add_test(tc, law_quinn_diagonal);
+    tcase_add_test(tc, law_velocity_limited);
+    tcase_add_test(tc, law_tanh);
+    tcase_add_test(tc, equals_structure_steps);
+    tcase_add_test(tc, plain_newton_cycles);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+int main(void)
+{
+    SRunner *sr = srunner_create(suite());
+    srunner_run_all(sr, CK_NORMAL);
+    int failed = srunner_ntests_failed(sr);
+    srunner_free(sr);
+    return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
