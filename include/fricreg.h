@@ -98,7 +98,10 @@ enum fricreg_warning {
     FRICREG_WARN_NEWTON_FAILURES = 7, /**< steps whose Newton iteration did not converge */
     FRICREG_WARN_NEWTON_SLOW = 8,     /**< more than 5 Newton iterations per step on average */
     FRICREG_WARN_ENERGY = 9,          /**< energy balance's residual above 1e-6 of its scale */
-    FRICREG_WARN_TOL_LOOSE = 10       /**< adaptive velocity tolerance above 0.01 eps */
+    FRICREG_WARN_TOL_LOOSE = 10,      /**< adaptive velocity tolerance above 0.01 eps */
+    /** an error estimate (fricreg_sim_set_error_estimate) could not be formed, or is above
+     *  10% of its quantity, where it may not bound the error. Since 1.6. */
+    FRICREG_WARN_ERROR_ESTIMATE = 11
 };
 
 /** Short fixed name of a warning code (enum fricreg_warning), e.g. "eps_large" for

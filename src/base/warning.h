@@ -6,7 +6,7 @@
 
 #include <stddef.h>
 
-/* Room for every code of enum fricreg_warning (FRICREG_WARN_TOL_LOOSE = 10) and those to come. */
+/* Room for every code of enum fricreg_warning (FRICREG_WARN_ERROR_ESTIMATE = 11) and those to come. */
 #define FR_WARN_MAX 16
 
 struct fr_warnings {
