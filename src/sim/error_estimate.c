@@ -18,7 +18,9 @@
 
 #include "sim_internal.h"
 
-#define FACTOR 2.0     /* D(eps) - D(0) = 2 (D(eps) - D(eps/2)) at p = 1 */
+/* D(eps) - D(0) = 2 (D(eps) - D(eps/2)) at p = 1; the calibration found 2 at the edge (the
+ * two blocks at eps = 1e-2 are p = 1 to 1%: ratios 0.99 … 1.01) and takes 3. */
+#define FACTOR 3.0
 #define TOL_SCALE 16.0 /* the companion's tolerances: rtol / 16 (rk8pd: ~1.4x the steps) */
 #define TOO_LARGE 0.1  /* an estimate above 10% of |D|: eps is out of the asymptotic range */
 
@@ -87,6 +89,14 @@ void fr_sim_error_estimate(fricreg_sim *sim)
     fricreg_sim_free(companion);
 }
 
+/* GSL's multistep steppers, whose error in D the calibration found not to follow their
+ * tolerances (msbdf on the two blocks: ~1e-5 from rtol 1e-3 to 1e-9). */
+static int multistep(const fricreg_sim *sim)
+{
+    return adaptive(sim) &&
+           (sim->integrator == FRICREG_INT_MSADAMS || sim->integrator == FRICREG_INT_MSBDF);
+}
+
 void fr_sim_check_estimate(fricreg_sim *sim)
 {
     if (sim->D_err == NULL)
@@ -105,6 +115,12 @@ void fr_sim_check_estimate(fricreg_sim *sim)
                 "tolerances) is too coarse for the estimate's asymptotic form, which may then "
                 "not bound the error; halve eps",
                 err, D);
+    else if (multistep(sim))
+        fr_warn(&sim->warnings, FRICREG_WARN_ERROR_ESTIMATE,
+                "the error estimate of an adaptive multistep run (msadams, msbdf) is not a "
+                "reliable bound: their error does not follow the tolerances (it bounded the error "
+                "in 84%% of the calibration's runs, one-step and fixed-step runs 98%%); "
+                "take rk8pd or rk4imp for an error bar");
 }
 
 int fricreg_sim_get_dissipation_error(const fricreg_sim *sim, size_t ncycles, double err[])
