@@ -198,6 +198,14 @@ printf '# t a_g\n0 2.41\n5 2.41\n' >"$d/ag_const.txt"
 block="structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_const.txt --eps 1e-6 --t-end 2.1"
 expect_output '"x": \[-1\.95438123028[34][0-9]*\]' $block --integrator newmark --dt 0.01
 expect_output '"dissipation_per_contact": \[9\.4396613422[67][0-9]*\]' $block --integrator newmark --dt 0.01
+# The error estimates of the peak displacement and the dissipation (a companion run at eps/2,
+# dt/2): the block's motion is exact in every scheme, so they are at rounding level (a
+# companion that moved would show); none with --error-estimate off.
+expect_output '"peak_displacement_error_estimate": \[[0-9.]+e-1[3-9]\], "dissipation_per_contact": \[9\.4396613422[67][0-9]*\], "dissipation_per_contact_error_estimate": \[[0-9.]+e-1[2-9]\]' $block --integrator newmark --dt 0.01
+total=$((total + 1))
+if "$sim" $block --integrator newmark --dt 0.01 --error-estimate off 2>&1 | grep -q error_estimate; then
+    echo "FAIL: structure --error-estimate off still estimates"; fails=$((fails + 1))
+fi
 expect_output '"peak_displacement": \[1\.95438123028[34][0-9]*\]' $block --integrator hht --alpha -0.1 --dt 0.01
 # Warnings (fricreg_structure_warning_count, docs/structural.md "Warnings"): the block in SI
 # units raises none (record peak 2.41 m/s^2 = 0.246 g inside 0.05 g .. 5 g; eps = 1e-6 m/s
