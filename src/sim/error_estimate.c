@@ -116,11 +116,11 @@ void fr_sim_check_estimate(fricreg_sim *sim)
                 "not bound the error; halve eps",
                 err, D);
     else if (multistep(sim))
-        fr_warn(&sim->warnings, FRICREG_WARN_ERROR_ESTIMATE,
-                "the error estimate of an adaptive multistep run (msadams, msbdf) is not a "
-                "reliable bound: their error does not follow the tolerances (it bounded the error "
-                "in 84%% of the calibration's runs, one-step and fixed-step runs 98%%); "
-                "take rk8pd or rk4imp for an error bar");
+        fr_warn(
+            &sim->warnings, FRICREG_WARN_ERROR_ESTIMATE,
+            "the error estimate of msadams and msbdf is no reliable bound: their error does not "
+            "follow the tolerances (bounded in 84%% of the calibration's runs, one-step and "
+            "fixed-step runs 97%%); take rk8pd for an error bar");
 }
 
 int fricreg_sim_get_dissipation_error(const fricreg_sim *sim, size_t ncycles, double err[])
