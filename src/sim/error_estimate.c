@@ -99,13 +99,13 @@ static int multistep(const fricreg_sim *sim)
 
 void fr_sim_check_estimate(fricreg_sim *sim)
 {
-    if (sim->D_err == NULL)
-        return;
-    if (sim->estimate_failed) {
+    if (sim->estimate_failed) { /* also when even D_err could not be allocated */
         fr_warn(&sim->warnings, FRICREG_WARN_ERROR_ESTIMATE,
                 "no error estimate could be formed (reported as infinite): %s", sim->estimate_msg);
         return;
     }
+    if (sim->D_err == NULL)
+        return;
     /* The last whole cycle's D, else the total: the headline quantity. */
     double D = sim->cycles > 0 ? sim->D[sim->cycles - 1] : sim->y[2 * sim->ndof];
     double err = sim->cycles > 0 ? sim->D_err[sim->cycles - 1] : sim->total_err;
