@@ -274,6 +274,7 @@ module fricreg
     procedure :: set_observer => sim_set_observer
     procedure :: set_max_steps => sim_set_max_steps
     procedure :: set_kink_location => sim_set_kink_location
+    procedure :: set_error_estimate => sim_set_error_estimate
     procedure :: set_abs_tolerances => sim_set_abs_tolerances
     procedure :: get_abs_tolerances => sim_get_abs_tolerances
     procedure :: run => sim_run
@@ -285,6 +286,7 @@ module fricreg
     procedure :: get_param => sim_get_param
     procedure :: get_state => sim_get_state
     procedure :: get_dissipation => sim_get_dissipation
+    procedure :: get_dissipation_error => sim_get_dissipation_error
     procedure :: get_stick_fraction => sim_get_stick_fraction
     procedure :: run_extrapolated => sim_run_extrapolated
     procedure :: get_extrapolation => sim_get_extrapolation
@@ -1961,6 +1963,17 @@ contains
       status = self%record(fricreg_sim_set_kink_location(self%ptr, on))
   end function sim_set_kink_location
 
+  !> Whether runs estimate the error of D per cycle against eps -> 0 with one companion run at
+  !> eps/2 (1) or not (0, the default) (fricreg_sim_set_error_estimate).
+  function sim_set_error_estimate(self, on) result(status)
+    class(fricreg_simulation), intent(inout) :: self
+    integer(c_int), intent(in) :: on
+    integer(c_int) :: status
+    status = self%ready('set_error_estimate', 'simulation')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_sim_set_error_estimate(self%ptr, on))
+  end function sim_set_error_estimate
+
   !> An absolute tolerance per component of the state y = (x, v, D), size 2 ndof + 1: ndof
   !> positions, ndof velocities, then D; each finite and > 0; replaces set_integrator's atol
   !> until the next set_integrator (fricreg_sim_set_abs_tolerances).
@@ -2087,6 +2100,26 @@ contains
     status = self%unrecorded('get_dissipation', status)
     if (status == FRICREG_OK) D = tmp(1:int(cycles))
   end function sim_get_dissipation
+
+  !> The error estimate of D per whole cycle of the last run (fricreg_sim_get_dissipation_error):
+  !> err is (re)allocated to the number of cycles; FRICREG_EINVAL when the run made none.
+  function sim_get_dissipation_error(self, err) result(status)
+    class(fricreg_simulation), intent(inout) :: self
+    real(c_double), allocatable, intent(inout) :: err(:)
+    integer(c_int) :: status
+    real(c_double) :: cycles
+    real(c_double), allocatable :: tmp(:)
+    cycles = 0.0_c_double
+    status = self%ready('get_dissipation_error', 'simulation')
+    if (status /= FRICREG_OK) return
+    status = fricreg_sim_get_value(self%ptr, FRICREG_VALUE_CYCLES, cycles)
+    if (status == FRICREG_OK) then
+      allocate (tmp(max(1, int(cycles))))
+      status = fricreg_sim_get_dissipation_error(self%ptr, int(cycles, c_size_t), tmp)
+    end if
+    status = self%unrecorded('get_dissipation_error', status)
+    if (status == FRICREG_OK) err = tmp(1:int(cycles))
+  end function sim_get_dissipation_error
 
   !> Per contact, the fraction of the last whole cycle with |zdot_i| < eps: frac(ncontacts).
   function sim_get_stick_fraction(self, frac) result(status)

@@ -99,8 +99,11 @@ enum fricreg_warning {
     FRICREG_WARN_NEWTON_SLOW = 8,     /**< more than 5 Newton iterations per step on average */
     FRICREG_WARN_ENERGY = 9,          /**< energy balance's residual above 1e-6 of its scale */
     FRICREG_WARN_TOL_LOOSE = 10,      /**< adaptive velocity tolerance above 0.01 eps */
-    FRICREG_WARN_STRIBECK_EPS = 11    /**< Stribeck delta < 1: band error (fs-fk)/fs (eps/vs)^delta
+    FRICREG_WARN_STRIBECK_EPS = 11,   /**< Stribeck delta < 1: band error (fs-fk)/fs (eps/vs)^delta
                                        *   above 1e-2 */
+    /** an error estimate (fricreg_sim_set_error_estimate) could not be formed, or is above
+     *  10% of its quantity, where it may not bound the error. Since 1.6. */
+    FRICREG_WARN_ERROR_ESTIMATE = 12
 };
 
 /** Short fixed name of a warning code (enum fricreg_warning), e.g. "eps_large" for

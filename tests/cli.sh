@@ -141,7 +141,8 @@ expect_usage_error "^fricreg-sim: --t-end: .*t_end = 1e+300 .*more than 10^6$" e
 
 # Warnings on a run's settings (fricreg_sim_warning_count): atol = rtol = 1e-6 at eps = 1e-6 holds
 # velocities to 2e-6, above 0.01 eps: one line on stderr, one "tol_loose" entry in the JSON, exit 0;
-# without --atol (the tolerances from eps) and with fixed steps, none.
+# without --atol (the tolerances from eps) and with fixed steps, none (msbdf's error estimate,
+# off here, warns for multistep steppers: below).
 total=$((total + 1))
 "$sim" twoblock --integrator msbdf --eps 1e-6 --cycles 1 --rtol 1e-6 --atol 1e-6 >"$tmp/out" 2>"$tmp/err"
 rc=$?
@@ -149,13 +150,30 @@ if [ $rc -ne 0 ] || [ "$(grep -c '^fricreg-sim: warning: .*above 0.01 eps' "$tmp
    ! grep -q '"warnings": \[{"code": "tol_loose", "message": "the adaptive steps' "$tmp/out"; then
     echo "FAIL: loose tolerances: exit $rc, stderr $(cat "$tmp/err"), $(tail -c 300 "$tmp/out")"; fails=$((fails + 1))
 fi
-for args in "twoblock --integrator msbdf --eps 1e-6 --cycles 1 --rtol 1e-6" "oscillator"; do
+for args in "twoblock --integrator msbdf --eps 1e-6 --cycles 1 --rtol 1e-6 --error-estimate off" "oscillator"; do
     total=$((total + 1))
     "$sim" $args >"$tmp/out" 2>"$tmp/err"
     if [ -s "$tmp/err" ] || ! grep -q '"warnings": \[\]}$' "$tmp/out"; then
         echo "FAIL: fricreg-sim $args warned: $(cat "$tmp/err") $(tail -c 200 "$tmp/out")"; fails=$((fails + 1))
     fi
 done
+
+# The error estimate of D per cycle (fricreg_sim_set_error_estimate): on by default, one number
+# per cycle beside dissipation_per_cycle; absent with --error-estimate off; a multistep stepper's
+# run warns that its estimate is no reliable bound.
+total=$((total + 1))
+"$sim" oscillator --cycles 3 >"$tmp/out" 2>"$tmp/err"
+"$sim" oscillator --cycles 3 --error-estimate off >"$tmp/off" 2>>"$tmp/err"
+if [ -s "$tmp/err" ] ||
+   ! grep -Eq '"dissipation_error_estimate": \[[0-9.e+-]+, [0-9.e+-]+, [0-9.e+-]+\]' "$tmp/out" ||
+   grep -q 'error_estimate' "$tmp/off"; then
+    echo "FAIL: error estimate: $(cat "$tmp/err") $(cat "$tmp/out") $(cat "$tmp/off")"; fails=$((fails + 1))
+fi
+total=$((total + 1))
+"$sim" twoblock --integrator msbdf --eps 1e-4 --cycles 1 --rtol 1e-6 >"$tmp/out" 2>"$tmp/err"
+if ! grep -q '"code": "error_estimate", "message": "the error estimate of msadams and msbdf is no reliable bound' "$tmp/out"; then
+    echo "FAIL: msbdf's estimate did not warn: $(tail -c 400 "$tmp/out")"; fails=$((fails + 1))
+fi
 
 # ---- structure: a linear structure from Matrix Market files (tests write their own files).
 d=$tmp/structure
@@ -180,6 +198,14 @@ printf '# t a_g\n0 2.41\n5 2.41\n' >"$d/ag_const.txt"
 block="structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_const.txt --eps 1e-6 --t-end 2.1"
 expect_output '"x": \[-1\.95438123028[34][0-9]*\]' $block --integrator newmark --dt 0.01
 expect_output '"dissipation_per_contact": \[9\.4396613422[67][0-9]*\]' $block --integrator newmark --dt 0.01
+# The error estimates of the peak displacement and the dissipation (a companion run at eps/2,
+# dt/2): the block's motion is exact in every scheme, so they are at rounding level (a
+# companion that moved would show); none with --error-estimate off.
+expect_output '"peak_displacement_error_estimate": \[[0-9.]+e-1[3-9]\], "dissipation_per_contact": \[9\.4396613422[67][0-9]*\], "dissipation_per_contact_error_estimate": \[[0-9.]+e-1[2-9]\]' $block --integrator newmark --dt 0.01
+total=$((total + 1))
+if "$sim" $block --integrator newmark --dt 0.01 --error-estimate off 2>&1 | grep -q error_estimate; then
+    echo "FAIL: structure --error-estimate off still estimates"; fails=$((fails + 1))
+fi
 expect_output '"peak_displacement": \[1\.95438123028[34][0-9]*\]' $block --integrator hht --alpha -0.1 --dt 0.01
 # Warnings (fricreg_structure_warning_count, docs/structural.md "Warnings"): the block in SI
 # units raises none (record peak 2.41 m/s^2 = 0.246 g inside 0.05 g .. 5 g; eps = 1e-6 m/s

@@ -505,6 +505,14 @@ static int w_sim_set_kink_location(void)
 {
     return fricreg_sim_set_kink_location(SIM(), N(0, 0));
 }
+static int w_sim_set_error_estimate(void)
+{
+    return fricreg_sim_set_error_estimate(SIM(), N(0, 0));
+}
+static int w_sim_get_dissipation_error(void)
+{
+    return fricreg_sim_get_dissipation_error(SIM(), Z(0, 1), OUTD(1));
+}
 static int w_sim_set_observer(void)
 {
     return fricreg_sim_set_observer(SIM(), NULL, NULL);
@@ -1424,6 +1432,16 @@ static const struct row rows[] = {
      "0i",
      SIM_REC,
      {HANDLE, INT(0, "ioii")}},
+    {"fricreg_sim_set_error_estimate",
+     w_sim_set_error_estimate,
+     "0i",
+     SIM_REC,
+     {HANDLE, INT(0, "ioii")}},
+    {"fricreg_sim_get_dissipation_error (none held)",
+     w_sim_get_dissipation_error,
+     "0is",
+     NONE,
+     {PTR(8, "i"), HANDLE, SIZE(0, "ffff"), PTR(1, "0")}},
     {"fricreg_sim_run", w_sim_run, "0inedtgm", SIM_REC, {HANDLE, DBL(0, "nnfiioi")}},
     {"fricreg_sim_run_cycles", w_sim_run_cycles, "0inedtgm", SIM_REC, {HANDLE, INT(0, "iiii")}},
     {"fricreg_sim_run_extrapolated",
@@ -2016,7 +2034,8 @@ static int e_chain_n(int which, double x)
 }
 /* which 0: mun; 1: law's eps (0: the paper's rule); 2: law; 3: partition; 4: integrator;
  * 5: rtol of central differences; 6: rtol of rkf45; 7: kink location; 8: msbdf's atol
- * (FRICREG_ATOL_FROM_EPS = -1 or >= 0); 9: a velocity's entry of set_abs_tolerances */
+ * (FRICREG_ATOL_FROM_EPS = -1 or >= 0); 9: a velocity's entry of set_abs_tolerances;
+ * 10: error estimate */
 static int e_sim_set(int which, double x)
 {
     switch (which) {
@@ -2027,6 +2046,7 @@ static int e_sim_set(int which, double x)
     case 4: return fricreg_sim_set_integrator(FX_->sim, (int)x, 0.01, 0.0, 0.0);
     case 5: return fricreg_sim_set_integrator(FX_->sim, FRICREG_INT_CENTRAL, 0.01, x, 0.0);
     case 7: return fricreg_sim_set_kink_location(FX_->sim, (int)x);
+    case 10: return fricreg_sim_set_error_estimate(FX_->sim, (int)x);
     case 8: return fricreg_sim_set_integrator(FX_->sim, FRICREG_INT_MSBDF, 0.01, 1e-6, x);
     case 9: {
         const double atol[3] = {1e-6, x, 1e-6};
@@ -2357,6 +2377,7 @@ START_TEST(edges_of_documented_ranges)
         {"sim_get_stat <= kinks", e_sim_get, 1, FRICREG_SIM_STAT_KINKS, FRICREG_SIM_STAT_KINKS + 1,
          'i', NONE},
         {"sim_set_kink_location on <= 1", e_sim_set, 7, 1, 2, 'i', SIM_REC},
+        {"sim_set_error_estimate on <= 1", e_sim_set, 10, 1, 2, 'i', SIM_REC},
         {"sim_set_integrator atol = FRICREG_ATOL_FROM_EPS, not below", e_sim_set, 8,
          FRICREG_ATOL_FROM_EPS, -1.0000000000000002, 'i', SIM_REC},
         {"sim_set_integrator atol = FRICREG_ATOL_FROM_EPS, not above", e_sim_set, 8,
@@ -2472,7 +2493,7 @@ START_TEST(non_status_functions)
     ck_assert_uint_eq(fricreg_sim_warning_count(NULL), 0);
     ck_assert_str_eq(fricreg_sim_warning_message(NULL, 0), "");
     ck_assert_str_eq(fricreg_warning_name(-1), "unknown");
-    ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_STRIBECK_EPS + 1), "unknown");
+    ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_ERROR_ESTIMATE + 1), "unknown");
     ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_EPS_LARGE), "eps_large");
 
     /* errmsg_copy: buf NULL or len 0 gives 0 and writes nothing; a short buffer is truncated

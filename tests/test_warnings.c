@@ -272,8 +272,9 @@ START_TEST(names)
     ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_GROUND_PEAK), "ground_peak");
     ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_ENERGY), "energy");
     ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_STRIBECK_EPS), "stribeck_eps");
-    ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_STRIBECK_EPS + 1), "unknown");
-    for (int c = FRICREG_WARN_EPS_LARGE; c <= FRICREG_WARN_STRIBECK_EPS; c++)
+    ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_ERROR_ESTIMATE), "error_estimate");
+    ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_ERROR_ESTIMATE + 1), "unknown");
+    for (int c = FRICREG_WARN_EPS_LARGE; c <= FRICREG_WARN_ERROR_ESTIMATE; c++)
         for (int d = FRICREG_WARN_NONE; d < c; d++)
             ck_assert_str_ne(fricreg_warning_name(c), fricreg_warning_name(d));
 }

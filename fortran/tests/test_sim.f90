@@ -155,6 +155,16 @@ program test_sim
   call check(Derr(3) <= huge(Derr(3)), 'cycle 3 extrapolated, a finite estimate')
   call check_status(sim%run_extrapolated(1.0_c_double, 2, window=-1), FRICREG_EINVAL, 'window -1')
   call check(index(sim%errmsg(), 'window') > 0, 'message: ' // sim%errmsg())
+  ! The error estimate of a plain run bounds its distance to the extrapolation above.
+  call check_status(sim%get_dissipation_error(Derr), FRICREG_EINVAL, 'no estimate made')
+  call check_status(sim%set_error_estimate(2_c_int), FRICREG_EINVAL, 'set_error_estimate 2')
+  call check_status(sim%set_error_estimate(1_c_int), FRICREG_OK, 'set_error_estimate 1')
+  call check_status(sim%run_cycles(3), FRICREG_OK, 'run_cycles with an estimate')
+  call check_status(sim%get_dissipation(D), FRICREG_OK, 'estimated: dissipation')
+  call check_status(sim%get_dissipation_error(Derr), FRICREG_OK, 'get_dissipation_error')
+  call check(size(Derr) == 3, 'three estimates')
+  call check(abs(D(3) - 10.410028667845459_c_double) <= Derr(3), 'D within its error estimate')
+  call check(Derr(3) <= 10 * abs(D(3) - 10.410028667845459_c_double), 'estimate within 10x')
 
   ! The chain of Sec. 3.2, the paper's defaults: D per cycle converges to 0.0105.
   call check_status(sim%create(FRICREG_SYSTEM_CHAIN), FRICREG_OK, 'create chain (replaces)')

@@ -22,6 +22,7 @@ const char *fricreg_warning_name(int code)
         [FRICREG_WARN_ENERGY] = "energy",
         [FRICREG_WARN_TOL_LOOSE] = "tol_loose",
         [FRICREG_WARN_STRIBECK_EPS] = "stribeck_eps",
+        [FRICREG_WARN_ERROR_ESTIMATE] = "error_estimate",
     };
     if (code < 0 || (size_t)code >= sizeof names / sizeof names[0] || names[code] == NULL)
         return "unknown";

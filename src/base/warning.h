@@ -6,7 +6,8 @@
 
 #include <stddef.h>
 
-/* Room for every code of enum fricreg_warning (FRICREG_WARN_STRIBECK_EPS = 11) and those to come. */
+/* Room for every code of enum fricreg_warning (FRICREG_WARN_ERROR_ESTIMATE = 12) and those to
+ * come. */
 #define FR_WARN_MAX 16
 
 struct fr_warnings {

@@ -27,6 +27,7 @@ struct cli_run {
     int extrapolate_window; /* --extrapolate-window W (fricreg_sim_run_extrapolated_window) */
     int max_steps;          /* --max-steps N (fricreg_sim_set_max_steps); -1: the default */
     int kink_location;      /* --kink-location on|off (fricreg_sim_set_kink_location) */
+    int error_estimate;     /* --error-estimate on|off (fricreg_sim_set_error_estimate) */
     struct {
         int param;
         double value;
@@ -135,9 +136,11 @@ struct cli_summary {
     const double *atol_used; /* [2 ndof + 1] absolute tolerances of y = (x, v, D), or NULL */
     double kinks;            /* adaptive steps cut at a kink (written for adaptive runs only) */
     size_t ndof, ncontacts, cycles;
-    const double *x, *v;                    /* [ndof] */
-    const double *D;                        /* [cycles] dissipation per cycle */
-    const double *stick;                    /* [ncontacts] stick fraction of the last whole cycle */
+    const double *x, *v; /* [ndof] */
+    const double *D;     /* [cycles] dissipation per cycle */
+    const double *D_err; /* [cycles] its error estimate (fricreg_sim_get_dissipation_error), or
+                          * NULL: none made */
+    const double *stick; /* [ncontacts] stick fraction of the last whole cycle */
     const struct cli_extrapolation *extrap; /* NULL: not extrapolated */
     const struct cli_warnings *warnings;    /* NULL: none judged (an empty list) */
 };

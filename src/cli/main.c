@@ -59,7 +59,9 @@ static void usage(FILE *out)
           "  --max-steps N    adaptive steps a forcing cycle may take (0: no bound)\n"
           "                   [10^4 for coulomb, force-balance, karnopp; else 10^6]\n"
           "  --kink-location on|off   adaptive steps stop at the friction law's kinks and\n"
-          "                   restart the stepper there (docs/integrators.md)      [on]\n",
+          "                   restart the stepper there (docs/integrators.md)      [on]\n"
+          "  --error-estimate on|off   one companion run at eps/2 (dt/2, or tolerances/16)\n"
+          "                   adds dissipation_error_estimate per cycle, ~3x the cost [on]\n",
           out);
     cli_print_param_defaults(out);
     fputs("            --partition paper|consistent  coupled contacts' near-stick law "

@@ -126,7 +126,8 @@ static size_t run_table(struct cli_run *run, int exact, int *cycles_given,
         {"--extrapolate-order", CLI_WHOLE, .slot = &run->extrapolate_order, .lo = 0, .hi = 4},
         {"--extrapolate-window", CLI_WHOLE, .slot = &run->extrapolate_window, .lo = 0, .hi = 1e7},
         {"--max-steps", CLI_WHOLE, .slot = &run->max_steps, .lo = 0, .hi = 1e9},
-        {"--kink-location", CLI_CHOICE, .slot = &run->kink_location, .words = on_off}};
+        {"--kink-location", CLI_CHOICE, .slot = &run->kink_location, .words = on_off},
+        {"--error-estimate", CLI_CHOICE, .slot = &run->error_estimate, .words = on_off}};
     const struct cli_option run_length_and_output[] = {
         {"--t-end", CLI_POSITIVE, .slot = &run->t_end},
         {"--cycles", CLI_WHOLE, .slot = &run->cycles, .lo = 1, .hi = 1e7, .given = cycles_given},
@@ -179,6 +180,7 @@ static int parse_run(int system, int exact, int argc, char **argv, struct cli_ru
                             .partition = FRICREG_PARTITION_CONSISTENT,
                             .max_steps = -1,
                             .kink_location = 1,
+                            .error_estimate = 1,
                             .atol = ATOL_NOT_GIVEN};
     int cycles_given = 0;
     struct cli_option table[MAX_ROWS];

@@ -145,6 +145,8 @@ void cli_write_summary(FILE *out, const struct cli_summary *s)
     json_array(out, "x", s->ndof, s->x);
     json_array(out, "v", s->ndof, s->v);
     json_array(out, "dissipation_per_cycle", s->cycles, s->D);
+    if (s->D_err != NULL) /* an estimate that could not be formed is null */
+        json_array(out, "dissipation_error_estimate", s->cycles, s->D_err);
     json_array(out, "stick_fraction", s->ncontacts, s->stick);
     if (s->extrap != NULL)
         write_extrapolation(out, s->extrap, s->cycles);
@@ -190,7 +192,7 @@ static void write_summary(FILE *out, const struct cli_run *run, const fricreg_si
 {
     size_t n = fricreg_sim_ndof(sim), m = fricreg_sim_ncontacts(sim);
     size_t cycles = (size_t)value(sim, FRICREG_VALUE_CYCLES);
-    double *buf = malloc((4 * n + m + 3 * cycles + 2) * sizeof *buf);
+    double *buf = malloc((4 * n + m + 4 * cycles + 2) * sizeof *buf);
     if (buf == NULL) {
         fprintf(stderr, "fricreg-sim: out of memory\n");
         return;
@@ -203,6 +205,8 @@ static void write_summary(FILE *out, const struct cli_run *run, const fricreg_si
     struct cli_extrapolation extrap;
     if (run->extrapolate)
         read_extrapolation(sim, cycles, D + cycles, &extrap);
+    double *D_err = D + 3 * cycles;
+    int estimated = fricreg_sim_get_dissipation_error(sim, cycles, D_err) == FRICREG_OK;
     struct cli_summary s = {.system = cli_system_name(run->system),
                             .law = fricreg_law_name(run->law),
                             .integrator = fricreg_integrator_name(run->integrator),
@@ -224,6 +228,7 @@ static void write_summary(FILE *out, const struct cli_run *run, const fricreg_si
                             .x = x,
                             .v = v,
                             .D = D,
+                            .D_err = estimated ? D_err : NULL,
                             .stick = stick,
                             .extrap = run->extrapolate ? &extrap : NULL,
                             .warnings = warnings};
@@ -236,6 +241,8 @@ int cli_run_summary(const struct cli_run *run, FILE *out)
     fricreg_sim *sim = cli_make_sim(run);
     if (sim == NULL)
         return CLI_EXIT_USAGE;
+    /* the summary's headline D with its error bar; an extrapolation carries its own */
+    fricreg_sim_set_error_estimate(sim, run->error_estimate && !run->extrapolate);
     clock_t start = clock();
     int status = execute(sim, run);
     double cpu_seconds = (double)(clock() - start) / CLOCKS_PER_SEC;

@@ -4,6 +4,7 @@
  * difference or one of GSL's steppers; a JSON summary or a CSV row per step on stdout.
  * Every bad option or file is one line on stderr naming it, exit 2, nothing on stdout. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -82,12 +83,15 @@ static int check_options(const struct structure_options *o)
     return o->scheme == SCHEME_GSL ? cli_check_tolerances(o->integrator, o->rtol, o->atol) : 0;
 }
 
+static const struct cli_word on_off[] = {{"on", 1}, {"off", 0}, {NULL, 0}};
+
 int cli_parse_structure(int argc, char **argv, struct structure_options *o)
 {
     *o = (struct structure_options){.law = FRICREG_LAW_QUINN,
                                     .alpha = -0.05,
                                     .output = CLI_SUMMARY,
-                                    .max_steps = -1};
+                                    .max_steps = -1,
+                                    .error_estimate = 1};
     const struct cli_option opts[] = {
         {"--mass", CLI_FILE, .slot = &o->mass},
         {"--stiffness", CLI_FILE, .slot = &o->stiffness},
@@ -106,7 +110,8 @@ int cli_parse_structure(int argc, char **argv, struct structure_options *o)
         {"--rtol", CLI_NONNEGATIVE, .slot = &o->rtol},
         {"--atol", CLI_NONNEGATIVE, .slot = &o->atol},
         {"--alpha", CLI_NUMBER, .slot = &o->alpha, .given = &o->alpha_given},
-        {"--max-steps", CLI_WHOLE, .slot = &o->max_steps, .lo = 0, .hi = 1e9}};
+        {"--max-steps", CLI_WHOLE, .slot = &o->max_steps, .lo = 0, .hi = 1e9},
+        {"--error-estimate", CLI_CHOICE, .slot = &o->error_estimate, .words = on_off}};
     int status = cli_parse_options(argc, argv, opts, sizeof opts / sizeof opts[0], "structure");
     return status != 0 ? status : check_options(o);
 }
@@ -269,10 +274,18 @@ static const char *scheme_name(const struct structure_options *o)
     return o->scheme == SCHEME_GSL ? fricreg_integrator_name(o->integrator) : names[o->scheme];
 }
 
+/* The error estimates of the headline quantities against eps -> 0 from a companion run at
+ * eps / 2 (dt / 2 for fixed steps, tolerances / 16 for adaptive ones), as
+ * fricreg_sim_set_error_estimate: 3 |q - q_companion| (docs/structural.md, "Error estimate").
+ * NULL arrays: none made. */
+struct structure_estimate {
+    double *peak_err, *D_err; /* [n], [m]; +infinity where the companion failed */
+};
+
 static void write_summary(FILE *out, const struct structure_options *o,
                           const struct structure_input *in, const fricreg_structure *s,
                           const struct structure_run *run, double eps, double cpu_seconds,
-                          const struct cli_warnings *warnings)
+                          const struct cli_warnings *warnings, const struct structure_estimate *est)
 {
     int64_t steps = sstat(s, FRICREG_SSTAT_STEPS);
     double *D = run->f; /* the forces are not needed any more */
@@ -291,7 +304,11 @@ static void write_summary(FILE *out, const struct structure_options *o,
     json_array(out, "x", in->n, run->u);
     json_array(out, "v", in->n, run->v);
     json_array(out, "peak_displacement", in->n, run->peak);
+    if (est->peak_err != NULL)
+        json_array(out, "peak_displacement_error_estimate", in->n, est->peak_err);
     json_array(out, "dissipation_per_contact", in->m, D);
+    if (est->D_err != NULL)
+        json_array(out, "dissipation_per_contact_error_estimate", in->m, est->D_err);
     fprintf(out,
             ", \"energy_balance\": {\"initial\": %.17g, \"input\": %.17g, "
             "\"kinetic\": %.17g, \"strain\": %.17g, \"viscous\": %.17g, \"friction\": %.17g, "
@@ -309,6 +326,77 @@ static void write_summary(FILE *out, const struct structure_options *o,
             (long long)sstat(s, FRICREG_SSTAT_NEWTON_FAILURES), cpu_seconds);
     cli_json_warnings(out, warnings);
     fputs("}\n", out);
+}
+
+/* An error_estimate warning, printed as the library's are and added to the summary's list. */
+static void estimate_warning(struct cli_warnings *w, const char *msg)
+{
+    struct cli_warnings one = {.n = 1, .code = {FRICREG_WARN_ERROR_ESTIMATE}};
+    snprintf(one.message[0], sizeof one.message[0], "%s", msg);
+    cli_print_warnings(&one);
+    if (w->n < 16) {
+        w->code[w->n] = one.code[0];
+        memcpy(w->message[w->n++], one.message[0], sizeof one.message[0]);
+    }
+}
+
+/* Runs the companion and fills est (one allocation, at est->peak_err); warns where the
+ * companion failed or an estimate is above 10% of its quantity (outside the asymptotic
+ * range, as fricreg_sim's FRICREG_WARN_ERROR_ESTIMATE). */
+static void estimate(const fricreg_structure *s, const struct structure_input *in,
+                     const struct structure_run *run, fricreg_structure *companion,
+                     const struct structure_options *oc, struct structure_estimate *est,
+                     struct cli_warnings *w)
+{
+    size_t n = in->n, m = in->m;
+    double *buf = malloc((n + 3 * m + 1) * sizeof *buf);
+    double *cbuf = calloc(3 * n + m + 1, sizeof *cbuf);
+    if (buf == NULL || cbuf == NULL) {
+        free(buf);
+        free(cbuf);
+        estimate_warning(w, "no error estimate could be formed: out of memory");
+        return;
+    }
+    est->peak_err = buf;
+    est->D_err = buf + n;
+    double *D = buf + n + m, *Dc = buf + n + 2 * m;
+    struct structure_run crun = {.u = cbuf, .v = cbuf + n, .peak = cbuf + 2 * n, .f = cbuf + 3 * n};
+    int status = advance(companion, oc, in, &crun);
+    if (status != FRICREG_OK) {
+        char msg[256];
+        snprintf(msg, sizeof msg,
+                 "no error estimate could be formed (null): the companion run at eps = %g "
+                 "failed: %s",
+                 oc->eps, fricreg_structure_errmsg(companion));
+        estimate_warning(w, msg);
+        for (size_t i = 0; i < n + m; i++)
+            buf[i] = INFINITY;
+        free(cbuf);
+        return;
+    }
+    fricreg_structure_get_dissipation(s, m, D);
+    fricreg_structure_get_dissipation(companion, m, Dc);
+    double peak = 0.0, peak_err = 0.0, Dsum = 0.0, Derr = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        est->peak_err[i] = 3.0 * fabs(run->peak[i] - crun.peak[i]);
+        peak = fmax(peak, run->peak[i]);
+        peak_err = fmax(peak_err, est->peak_err[i]);
+    }
+    for (size_t j = 0; j < m; j++) {
+        est->D_err[j] = 3.0 * fabs(D[j] - Dc[j]);
+        Dsum += fabs(D[j]);
+        Derr += est->D_err[j];
+    }
+    if (peak_err > 0.1 * peak || Derr > 0.1 * Dsum) {
+        char msg[256];
+        snprintf(msg, sizeof msg,
+                 "an error estimate is above 10%% of its quantity (peak %.3g +- %.3g, "
+                 "dissipation %.3g +- %.3g): eps or dt is too coarse for the estimate, which may "
+                 "then not bound the error; halve them",
+                 peak, peak_err, Dsum, Derr);
+        estimate_warning(w, msg);
+    }
+    free(cbuf);
 }
 
 /* A refused step size is a bad --dt (exit 2); any other failure of the run exits 1. */
@@ -341,7 +429,8 @@ static void copy_stream(FILE *from, FILE *to)
 /* Runs the set-up structure; the trajectory goes to a temporary file first, so that a failed
  * run writes nothing to out. */
 static int run_structure(fricreg_structure *s, const struct structure_options *o,
-                         const struct structure_input *in, double eps, FILE *out)
+                         const struct structure_input *in, double eps, FILE *out,
+                         fricreg_structure *companion, const struct structure_options *oc)
 {
     struct structure_run run = {0};
     double *buf = calloc(3 * in->n + in->m, sizeof *buf);
@@ -364,12 +453,16 @@ static int run_structure(fricreg_structure *s, const struct structure_options *o
     double cpu_seconds = (double)(clock() - start) / CLOCKS_PER_SEC;
     struct cli_warnings warnings;
     structure_warnings(s, &warnings);
+    struct structure_estimate est = {0};
+    if (status == FRICREG_OK && companion != NULL)
+        estimate(s, in, &run, companion, oc, &est, &warnings);
     if (status != FRICREG_OK)
         status = run_failed(s, status);
     else if (run.rows != NULL)
         copy_stream(run.rows, out);
     else
-        write_summary(out, o, in, s, &run, eps, cpu_seconds, &warnings);
+        write_summary(out, o, in, s, &run, eps, cpu_seconds, &warnings, &est);
+    free(est.peak_err);
     if (run.rows != NULL)
         fclose(run.rows);
     free(buf);
@@ -394,9 +487,27 @@ int cli_structure(int argc, char **argv, FILE *out)
     }
     double eps = 0.0;
     status = setup(&o, &in, s, &eps);
+    /* The companion of the error estimate: eps / 2 and dt / 2, or an adaptive GSL run's
+     * tolerances / 16 (dt is then the sampling interval, kept). */
+    struct structure_options oc = o;
+    fricreg_structure *companion = NULL;
+    if (status == 0 && o.error_estimate && o.output == CLI_SUMMARY) {
+        double eps_c = 0.0;
+        oc.eps = 0.5 * eps;
+        if (o.scheme == SCHEME_GSL && (o.rtol > 0.0 || o.atol > 0.0)) {
+            oc.rtol /= 16.0;
+            oc.atol /= 16.0;
+        } else {
+            oc.dt *= 0.5;
+        }
+        if (fricreg_structure_create(in.n, in.m, &companion) != FRICREG_OK ||
+            setup(&oc, &in, companion, &eps_c) != 0)
+            status = cli_usage_error("--error-estimate", "cannot set up the companion run");
+    }
     cli_free_matrices(&in);
     if (status == 0)
-        status = run_structure(s, &o, &in, eps, out);
+        status = run_structure(s, &o, &in, eps, out, companion, &oc);
+    fricreg_structure_free(companion);
     fricreg_structure_free(s);
     cli_free_model(&in);
     return status;

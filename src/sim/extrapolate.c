@@ -36,10 +36,8 @@ void fr_extrap_free(struct fr_extrap *x)
     free(x);
 }
 
-/* A new simulation with every setting of sim, at level k: eps / 2^k, and a fixed step
- * dt / 2^k (an adaptive run keeps its first step and tolerances). Keep this list in step
- * with the settings of struct fricreg_sim. */
-static int make_level(const fricreg_sim *sim, int k, fricreg_sim **out)
+/* sim_internal.h. Keep this list in step with the settings of struct fricreg_sim. */
+int fr_sim_level(const fricreg_sim *sim, int k, double tol_scale, fricreg_sim **out)
 {
     fricreg_sim *level = NULL;
     int status = fricreg_sim_create(sim->sys.type->id, &level);
@@ -54,8 +52,8 @@ static int make_level(const fricreg_sim *sim, int k, fricreg_sim **out)
     level->eps_set = sim->eps * scale;
     level->integrator = sim->integrator;
     level->dt = adaptive ? sim->dt : sim->dt * scale;
-    level->rtol = sim->rtol;
-    level->atol = sim->atol;
+    level->rtol = sim->rtol * tol_scale;
+    level->atol = sim->atol * tol_scale;
     level->atol_from_eps = sim->atol_from_eps; /* the rule at the level's own eps */
     if (sim->atol_vec != NULL) {
         level->atol_vec = malloc(sim->atol_n * sizeof *level->atol_vec);
@@ -63,7 +61,8 @@ static int make_level(const fricreg_sim *sim, int k, fricreg_sim **out)
             fricreg_sim_free(level);
             return FRICREG_ENOMEM;
         }
-        memcpy(level->atol_vec, sim->atol_vec, sim->atol_n * sizeof *level->atol_vec);
+        for (size_t i = 0; i < sim->atol_n; i++)
+            level->atol_vec[i] = sim->atol_vec[i] * tol_scale;
         level->atol_n = sim->atol_n;
     }
     level->kink_location = sim->kink_location;
@@ -79,7 +78,7 @@ static int run_level(fricreg_sim *sim, int k, double t_end, size_t first, const 
                      double D[], double total[], int64_t *rhs_evals)
 {
     fricreg_sim *level = NULL;
-    int status = make_level(sim, k, &level);
+    int status = fr_sim_level(sim, k, 1.0, &level);
     if (status != FRICREG_OK)
         return fr_fail(sim, status, "run_extrapolated: level %d: out of memory", k);
     level->start_cycle = first;
@@ -202,7 +201,9 @@ static int run_level0(fricreg_sim *sim, double t_end, size_t first, double **sta
     }
     sim->capture_cycle = first;
     sim->capture_y = *start;
+    sim->estimate_skip = 1;                   /* the extrapolation is the run's estimate */
     int status = fricreg_sim_run(sim, t_end); /* discards any earlier extrapolation */
+    sim->estimate_skip = 0;
     sim->capture_cycle = 0;
     sim->capture_y = NULL;
     return status;

@@ -47,6 +47,10 @@ static void free_run(fricreg_sim *sim)
     fr_jacobian_free(sim->jac);
     fr_extrap_free(sim->extrap);
     sim->extrap = NULL;
+    free(sim->D_err);
+    sim->D_err = NULL;
+    sim->total_err = NAN;
+    sim->estimate_failed = 0;
     sim->jac_work = NULL;
     sim->jac = NULL;
     sim->ctx = NULL;
@@ -85,6 +89,7 @@ int fricreg_sim_create(int system, fricreg_sim **out)
     sim->dt = 0.01;
     sim->max_steps = -1; /* the law's default (fr_law_max_adaptive_steps) */
     sim->kink_location = 1;
+    sim->total_err = NAN;
     *out = sim;
     return FRICREG_OK;
 }
@@ -786,6 +791,8 @@ int fricreg_sim_run(fricreg_sim *sim, double t_end)
     fr_kinks_free(sim->locate);
     sim->locate = NULL;
     gsl_odeiv2_driver_free(d);
+    if (status == FRICREG_OK && sim->error_estimate && !sim->estimate_skip)
+        fr_sim_error_estimate(sim);
     return status;
 }
 
@@ -823,6 +830,11 @@ int fricreg_sim_get_value(const fricreg_sim *sim, int which, double *value)
     case FRICREG_VALUE_RHS_EVALS: *value = (double)sim->rhs_evals; break;
     case FRICREG_VALUE_CYCLES: *value = (double)sim->cycles; break;
     case FRICREG_VALUE_DISSIPATION: *value = sim->y ? sim->y[2 * sim->ndof] : 0.0; break;
+    case FRICREG_VALUE_DISSIPATION_ERROR:
+        if (sim->D_err == NULL)
+            return FRICREG_EINVAL;
+        *value = sim->total_err;
+        break;
     default: return FRICREG_EINVAL;
     }
     return FRICREG_OK;

@@ -64,6 +64,15 @@ struct fricreg_sim {
     int rhs_status;           /* fricreg status raised inside the right-hand side */
     size_t bad_contact;       /* with FRICREG_ENONFINITE: the first contact that overflowed */
     struct fr_extrap *extrap; /* extrapolate.c: the last fricreg_sim_run_extrapolated */
+    /* error_estimate.c: the setting (fricreg_sim_set_error_estimate), and the last run's
+     * estimate: per cycle [cycles] and of the total D, NULL / NaN when none is held;
+     * estimate_failed (with its message) when the companion run failed. */
+    int error_estimate;
+    int estimate_skip; /* set by extrapolate.c for its level 0: the extrapolation estimates */
+    double *D_err;
+    double total_err;
+    int estimate_failed;
+    char estimate_msg[200];
     /* Set by a step that made the after-step checks in its own last pass (central_step.c):
      * it counted the diverged components into step_diverged and added the step to
      * stick_time, so after_step skips its two passes over the state. */
@@ -106,5 +115,17 @@ void fr_jacobian_free(struct fr_jacobian *J);
 /* extrapolate.c: releases an extrapolation (NULL: nothing), as free_run discards it. */
 struct fr_extrap;
 void fr_extrap_free(struct fr_extrap *x);
+
+/* extrapolate.c: a new simulation with every setting of sim at level k: eps / 2^k, a fixed
+ * step dt / 2^k, and an adaptive run's tolerances (rtol, atol, per component) times
+ * tol_scale with its first step kept. FRICREG_OK or FRICREG_ENOMEM; *out is then the
+ * caller's. */
+int fr_sim_level(const fricreg_sim *sim, int k, double tol_scale, fricreg_sim **out);
+
+/* error_estimate.c: after a successful run of sim with the estimate on, the companion run
+ * and the estimate per cycle (a failed companion leaves +infinity and its message for the
+ * warning); fr_sim_check_estimate raises the estimate's warnings (warnings.c). */
+void fr_sim_error_estimate(fricreg_sim *sim);
+void fr_sim_check_estimate(fricreg_sim *sim);
 
 #endif

@@ -53,6 +53,7 @@ size_t fricreg_sim_warning_count(fricreg_sim *sim)
         return sim->warnings.n; /* from the observer: the list as last judged */
     fr_warnings_clear(&sim->warnings);
     check_tolerances(sim);
+    fr_sim_check_estimate(sim);
     return sim->warnings.n;
 }
 

@@ -1,0 +1,166 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* test_error_estimate.c — fricreg_sim_set_error_estimate: the estimate of D per cycle bounds
+ * its error against the Coulomb problem, and is within 10x of it, on runs with a known
+ * reference: the oscillator's exact solution (fricreg_exact.h), a = 2, omega = 0.5 (it sticks:
+ * p = 2 in eps), and the non-sticking a = 0.5, omega = 1.5 (p = 1); and its warnings. The full
+ * calibration is bench/error_estimate.c (docs/integrators.md, "Error estimate"). */
+#include <check.h>
+#include <math.h>
+#include <stdlib.h>
+
+#include "fricreg_exact.h"
+#include "fricreg_sim.h"
+
+#define CYCLES 4
+
+/* D per cycle of the exact Coulomb solution from (2.75, 0). */
+static void exact_dissipation(double a, double omega, double D[CYCLES])
+{
+    fricreg_exact *ex = NULL;
+    ck_assert_int_eq(fricreg_exact_create(a, omega, 1.0, 2.75, 0.0, &ex), FRICREG_OK);
+    ck_assert_int_eq(fricreg_exact_run_cycles(ex, CYCLES), FRICREG_OK);
+    ck_assert_int_eq(fricreg_exact_dissipation(ex, CYCLES, D), FRICREG_OK);
+    fricreg_exact_free(ex);
+}
+
+static fricreg_sim *oscillator(double a, double omega, int integrator, double dt, double rtol,
+                               double atol, double eps)
+{
+    fricreg_sim *sim = NULL;
+    ck_assert_int_eq(fricreg_sim_create(FRICREG_SYSTEM_OSCILLATOR, &sim), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_A, a), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_OMEGA, omega), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_QUINN, eps), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, integrator, dt, rtol, atol), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_error_estimate(sim, 1), FRICREG_OK);
+    return sim;
+}
+
+/* Every cycle after the first (the start's transient holds the most error for the least D):
+ * the estimate >= the error and <= 10x it, and no warning. */
+static void check_bounds(fricreg_sim *sim, double a, double omega)
+{
+    double ref[CYCLES], D[CYCLES], err[CYCLES];
+    exact_dissipation(a, omega, ref);
+    ck_assert_int_eq(fricreg_sim_run_cycles(sim, CYCLES), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_get_dissipation(sim, CYCLES, D), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_get_dissipation_error(sim, CYCLES, err), FRICREG_OK);
+    for (int c = 0; c < CYCLES; c++) {
+        double truth = fabs(D[c] - ref[c]);
+        ck_assert_msg(err[c] >= truth && err[c] <= 10.0 * truth,
+                      "cycle %d: D = %.12g, exact %.12g, error %.3g, estimate %.3g", c + 1, D[c],
+                      ref[c], truth, err[c]);
+    }
+    double total = 0.0;
+    ck_assert_int_eq(fricreg_sim_get_value(sim, FRICREG_VALUE_DISSIPATION_ERROR, &total),
+                     FRICREG_OK);
+    ck_assert(isfinite(total) && total > 0.0);
+    ck_assert_uint_eq(fricreg_sim_warning_count(sim), 0);
+    fricreg_sim_free(sim);
+}
+
+START_TEST(test_fixed_rk4_paper_rule)
+{
+    check_bounds(oscillator(2.0, 0.5, FRICREG_INT_RK4, 0.01, 0.0, 0.0, 0.0), 2.0, 0.5);
+}
+END_TEST
+
+START_TEST(test_fixed_rk4_without_stick)
+{
+    check_bounds(oscillator(0.5, 1.5, FRICREG_INT_RK4, 0.005, 0.0, 0.0, 0.0), 0.5, 1.5);
+}
+END_TEST
+
+START_TEST(test_adaptive_rk8pd)
+{
+    check_bounds(oscillator(2.0, 0.5, FRICREG_INT_RK8PD, 0.01, 1e-6, FRICREG_ATOL_FROM_EPS, 1e-2),
+                 2.0, 0.5);
+}
+END_TEST
+
+START_TEST(test_central_imex)
+{
+    check_bounds(oscillator(2.0, 0.5, FRICREG_INT_CENTRAL_IMEX, 0.005, 0.0, 0.0, 1e-3), 2.0, 0.5);
+}
+END_TEST
+
+/* The getters before a run and with the estimate off; the setter's refusals. */
+START_TEST(test_off_and_refusals)
+{
+    fricreg_sim *sim = NULL;
+    double err[CYCLES] = {-1.0}, v = -1.0;
+    ck_assert_int_eq(fricreg_sim_create(FRICREG_SYSTEM_OSCILLATOR, &sim), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_get_dissipation_error(sim, 0, NULL), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_sim_run_cycles(sim, CYCLES), FRICREG_OK); /* off by default */
+    ck_assert_int_eq(fricreg_sim_get_dissipation_error(sim, CYCLES, err), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_sim_get_value(sim, FRICREG_VALUE_DISSIPATION_ERROR, &v),
+                     FRICREG_EINVAL);
+    ck_assert(err[0] == -1.0 && v == -1.0);
+    ck_assert_int_eq(fricreg_sim_set_error_estimate(sim, 2), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_sim_set_error_estimate(NULL, 1), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_sim_set_error_estimate(sim, 1), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run_cycles(sim, CYCLES), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_get_dissipation_error(sim, CYCLES - 1, err), FRICREG_ESIZE);
+    ck_assert_int_eq(fricreg_sim_get_dissipation_error(sim, CYCLES, NULL), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_sim_get_dissipation_error(sim, CYCLES, err), FRICREG_OK);
+    /* a setter that discards the results discards the estimate */
+    ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_A, 1.0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_get_dissipation_error(sim, CYCLES, err), FRICREG_EINVAL);
+    /* an extrapolated run estimates by its extrapolation, not a companion */
+    double period = 0.0;
+    ck_assert_int_eq(fricreg_sim_get_value(sim, FRICREG_VALUE_PERIOD, &period), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run_extrapolated(sim, CYCLES * period, 2, 0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_get_dissipation_error(sim, CYCLES, err), FRICREG_EINVAL);
+    fricreg_sim_free(sim);
+}
+END_TEST
+
+/* A companion that cannot run (its adaptive steps bounded below what tolerances / 16 take)
+ * leaves the run's D, an infinite estimate and FRICREG_WARN_ERROR_ESTIMATE; an estimate above
+ * 10% of D (eps = 0.5, far outside the asymptotic range) warns too. */
+START_TEST(test_warnings)
+{
+    fricreg_sim *sim = oscillator(2.0, 0.5, FRICREG_INT_RKF45, 0.01, 1e-4, 1e-4, 1e-2);
+    ck_assert_int_eq(fricreg_sim_run_cycles(sim, 1), FRICREG_OK);
+    int64_t steps = 0;
+    ck_assert_int_eq(fricreg_sim_get_stat(sim, FRICREG_SIM_STAT_STEPS, &steps), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_max_steps(sim, steps + steps / 4), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run_cycles(sim, 1), FRICREG_OK);
+    double err = 0.0;
+    ck_assert_int_eq(fricreg_sim_get_dissipation_error(sim, 1, &err), FRICREG_OK);
+    ck_assert(isinf(err));
+    size_t n = fricreg_sim_warning_count(sim);
+    int code = 0, found = 0;
+    for (size_t k = 0; k < n; k++) {
+        ck_assert_int_eq(fricreg_sim_get_warning(sim, k, &code, NULL, 0), FRICREG_OK);
+        found += code == FRICREG_WARN_ERROR_ESTIMATE;
+    }
+    ck_assert_int_eq(found, 1);
+    fricreg_sim_free(sim);
+
+    sim = oscillator(0.5, 1.5, FRICREG_INT_RK4, 0.01, 0.0, 0.0, 0.5);
+    ck_assert_int_eq(fricreg_sim_run_cycles(sim, 2), FRICREG_OK);
+    ck_assert_uint_eq(fricreg_sim_warning_count(sim), 1);
+    ck_assert_int_eq(fricreg_sim_get_warning(sim, 0, &code, NULL, 0), FRICREG_OK);
+    ck_assert_int_eq(code, FRICREG_WARN_ERROR_ESTIMATE);
+    fricreg_sim_free(sim);
+}
+END_TEST
+
+int main(void)
+{
+    Suite *s = suite_create("error_estimate");
+    TCase *tc = tcase_create("core");
+    tcase_add_test(tc, test_fixed_rk4_paper_rule);
+    tcase_add_test(tc, test_fixed_rk4_without_stick);
+    tcase_add_test(tc, test_adaptive_rk8pd);
+    tcase_add_test(tc, test_central_imex);
+    tcase_add_test(tc, test_off_and_refusals);
+    tcase_add_test(tc, test_warnings);
+    suite_add_tcase(s, tc);
+    SRunner *sr = srunner_create(s);
+    srunner_run_all(sr, CK_NORMAL);
+    int failed = srunner_ntests_failed(sr);
+    srunner_free(sr);
+    return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
