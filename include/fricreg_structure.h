@@ -482,7 +482,7 @@ enum fricreg_structure_value {
  *  elements implicitly: Newton on their forces at the step's end with their exact tangent (kt
  *  sticking, 0 slipping), condensed on the elements' coordinates through
  *  E = J_e K_eff^-1 J_e^T (me x me, dense, formed with K_eff's factor: me solves per dt), GSL's
- *  LU of I + (1 + alpha) beta dt^2 diag(tangent) E per iteration and a line search halving the
+ *  pivoted QR of I + (1 + alpha) beta dt^2 diag(tangent) E per iteration and a line search halving the
  *  direction until the residual's 2-norm decreases (fricreg_structure_set_newton's tolerance on
  *  max |fe - F(q)| times the step's force scale, its iterations counted with the contacts'). The
  *  central difference evaluates them at the explicit displacement u(t + dt), its step guard

@@ -644,6 +644,27 @@ static int w_st_get_state_no_output(void)
 {
     return fricreg_structure_get_state(ST(), 2, NULL, NULL, NULL);
 }
+static const double ST_JE[2] = {1.0, 0.0}, ST_KT[1] = {2.0}, ST_MUN[1] = {0.1};
+static const int64_t ST_JE_PTR[2] = {0, 1}, ST_JE_IND[1] = {0};
+static int w_st_set_jenkins(void)
+{
+    return fricreg_structure_set_jenkins(ST(), C(0, 1), Z(0, 2), A(1, ST_JE, 2), A(2, ST_KT, 1),
+                                         A(3, ST_MUN, 1));
+}
+static int w_st_set_jenkins_csr(void)
+{
+    return fricreg_structure_set_jenkins_csr(ST(), C(0, 1), Z(0, 2), N(0, 0), I64(1, ST_JE_PTR),
+                                             I64(2, ST_JE_IND), A(3, ST_JE, 1), A(4, ST_KT, 1),
+                                             A(5, ST_MUN, 1));
+}
+static int w_st_get_jenkins_state(void)
+{
+    return fricreg_structure_get_jenkins_state(ST(), Z(0, 0), OUTD(1), OUTD(2), OUTD(3));
+}
+static int w_st_get_jenkins_state_no_output(void)
+{
+    return fricreg_structure_get_jenkins_state(ST(), 0, NULL, NULL, NULL);
+}
 static int w_st_get_forces(void)
 {
     return fricreg_structure_get_forces(ST(), Z(0, 1), OUTD(1));
@@ -1541,6 +1562,28 @@ static const struct row rows[] = {
      {HANDLE, SIZE(0, "ssss"), PTR(1, "o"), PTR(2, "o"), PTR(3, "o")}},
     {"fricreg_structure_get_state (all outputs NULL)",
      w_st_get_state_no_output,
+     "0s",
+     NONE,
+     {PTR(8, "0")}},
+    {"fricreg_structure_set_jenkins",
+     w_st_set_jenkins,
+     "0snim",
+     ST_REC,
+     {HANDLE, COUNT(0, "ooii"), SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnoioo"), PTR(2, "0"),
+      ARR(2, "nniioo"), PTR(3, "0"), ARR(3, "nniooo")}},
+    {"fricreg_structure_set_jenkins_csr",
+     w_st_set_jenkins_csr,
+     "0snim",
+     ST_REC,
+     {HANDLE, COUNT(0, "ooii"), SIZE(0, "ssss"), INT(0, "ioii"), PTR(1, "0"), PTR(2, "0"),
+      PTR(3, "0"), ARR(3, "nnoioo"), PTR(4, "0"), ARR(4, "nniioo"), PTR(5, "0"), ARR(5, "nniooo")}},
+    {"fricreg_structure_get_jenkins_state",
+     w_st_get_jenkins_state,
+     "0s",
+     NONE,
+     {HANDLE, SIZE(0, "osss"), PTR(1, "o"), PTR(2, "o"), PTR(3, "o")}},
+    {"fricreg_structure_get_jenkins_state (all outputs NULL)",
+     w_st_get_jenkins_state_no_output,
      "0s",
      NONE,
      {PTR(8, "0")}},

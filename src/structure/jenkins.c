@@ -13,7 +13,7 @@
  * elements: u1 = u_pred + beta dt^2 x gives
  *   q(fe1) = q0 - c E fe1,   q0 = J_e (u_pred + beta dt^2 K_eff^-1 b),   c = w beta dt^2,
  * E = J_e K_eff^-1 J_e^T (me x me, formed once per factor of K_eff), and Newton solves
- * G(fe1) = fe1 - F(q(fe1)) = 0 on the matrix I + c diag(tangent) E with GSL's LU, the
+ * G(fe1) = fe1 - F(q(fe1)) = 0 on the matrix I + c diag(tangent) E with GSL's pivoted QR, the
  * direction halved until ||G||_2 decreases (the mapping is piecewise linear: a full step can
  * overshoot a kink). Central difference: fe1 = F(J_e u1) at the explicit displacement.
  *
@@ -39,9 +39,9 @@
 void fr_elements_free(fricreg_structure *s)
 {
     struct fr_elements *e = &s->el;
-    double *arrays[] = {e->kt,      e->mun,     e->wc,          e->wt, e->fe, e->fe1,
-                        e->wc_held, e->fe_held, e->dissipation, e->q0, e->g,  e->df,
-                        e->ft,      e->gt,      e->tan,         e->E,  e->A};
+    double *arrays[] = {e->kt,      e->mun,         e->wc, e->wt,  e->fe,  e->fe1, e->wc_held,
+                        e->fe_held, e->dissipation, e->q0, e->g,   e->df,  e->ft,  e->gt,
+                        e->tan,     e->E,           e->A,  e->tau, e->norm};
     for (size_t k = 0; k < sizeof arrays / sizeof *arrays; k++)
         free(arrays[k]);
     free(e->perm);
@@ -53,9 +53,9 @@ void fr_elements_free(fricreg_structure *s)
  * caller frees it). */
 static int allocate(struct fr_elements *e, size_t me)
 {
-    double **arrays[] = {&e->kt,  &e->mun,     &e->wc,      &e->wt,          &e->fe,
-                         &e->fe1, &e->wc_held, &e->fe_held, &e->dissipation, &e->q0,
-                         &e->g,   &e->df,      &e->ft,      &e->gt,          &e->tan};
+    double **arrays[] = {&e->kt,      &e->mun,     &e->wc,          &e->wt,  &e->fe,  &e->fe1,
+                         &e->wc_held, &e->fe_held, &e->dissipation, &e->q0,  &e->g,   &e->df,
+                         &e->ft,      &e->gt,      &e->tan,         &e->tau, &e->norm};
     for (size_t k = 0; k < sizeof arrays / sizeof *arrays; k++)
         if ((*arrays[k] = calloc(me, sizeof(double))) == NULL)
             return 0;
@@ -296,8 +296,9 @@ static double evaluate(struct fr_elements *e, double c, const double f[], double
     return sqrt(sum);
 }
 
-/* df = -(I + c diag(tan) E)^-1 g by GSL's LU; 0 if the matrix is singular (not expected:
- * diag(tan) E has no negative eigenvalue). */
+/* df = -(I + c diag(tan) E)^-1 g by GSL's QR with column pivoting (its LU allocates in GSL
+ * 2.7: a step must not); 0 if the matrix is singular (not expected: diag(tan) E has no
+ * negative eigenvalue). */
 static int direction(struct fr_elements *e, double c)
 {
     size_t me = e->me;
@@ -308,15 +309,16 @@ static int direction(struct fr_elements *e, double c)
         e->df[i] = -e->g[i];
     }
     gsl_matrix_view A = gsl_matrix_view_array(e->A, me, me);
+    gsl_vector_view tau = gsl_vector_view_array(e->tau, me),
+                    norm = gsl_vector_view_array(e->norm, me), b = gsl_vector_view_array(e->df, me);
     gsl_permutation perm = {me, e->perm};
     int signum;
-    gsl_linalg_LU_decomp(&A.matrix, &perm, &signum);
+    if (gsl_linalg_QRPT_decomp(&A.matrix, &tau.vector, &perm, &signum, &norm.vector) != GSL_SUCCESS)
+        return 0;
     for (size_t i = 0; i < me; i++)
         if (!(fabs(e->A[i * me + i]) > 0.0))
-            return 0; /* gsl_linalg_LU_svx would call GSL's error handler */
-    gsl_vector_view b = gsl_vector_view_array(e->df, me);
-    gsl_linalg_LU_svx(&A.matrix, &perm, &b.vector);
-    return 1;
+            return 0; /* the solve would call GSL's error handler */
+    return gsl_linalg_QRPT_svx(&A.matrix, &tau.vector, &perm, &b.vector) == GSL_SUCCESS;
 }
 
 int fr_elements_newmark(fricreg_structure *s, double dt, double scale, gsl_vector *b,

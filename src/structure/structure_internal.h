@@ -50,6 +50,7 @@ struct fr_elements {
     double *wc_held, *fe_held; /* [me] before a step's equilibrium, restored if it fails */
     double *dissipation;       /* [me] since set_initial */
     double *q0, *g, *df, *ft, *gt, *tan; /* [me] Newton's scratch */
+    double *tau, *norm;                  /* [me] the Newton matrix's QR (GSL's, pivoted) */
     double *E, *A; /* [me me] J_e K_eff^-1 J_e^T for step_dt, Newton's matrix */
     size_t *perm;  /* [me] its LU's permutation */
     int E_valid;   /* E is K_eff's at step_dt */
