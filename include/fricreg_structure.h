@@ -239,7 +239,8 @@ FRICREG_API int fricreg_structure_set_load(fricreg_structure *s, size_t ndof, co
                                            double t0, double dt_rec, size_t n, const double g[]);
 
 /** Restart at t = 0 from displacements u0[ndof] and velocities v0[ndof]: clears the energy
- *  balance, the dissipation and the counters. The initial acceleration follows from the
+ *  balance, the dissipation and the counters, and puts the Jenkins elements' sliders back at
+ *  w = 0 (fricreg_structure_set_jenkins). The initial acceleration follows from the
  *  equation of motion at the first step (friction from the law at zdot = J v0).
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE. */
 FRICREG_API int fricreg_structure_set_initial(fricreg_structure *s, size_t ndof, const double u0[],
