@@ -6,7 +6,7 @@
  *   - the hand-written average-acceleration Newmark with the elements' return mapping
  *     (tests/support/jenkins_newmark.h, test_hb's reference) solves the same discrete equations
  *     as the structure's Newmark: the displacement histories agree to rounding (1e-10 of the
- *     amplitude over 100 periods);
+ *     amplitude over 100 periods; one dof, and test_hb's chain of three with two elements);
  *   - harmonic balance (fricreg_hb at H = 21, as test_hb): the steady RMS within 1e-3;
  *   - the closed form of a Jenkins element driven with amplitude A: 4 mun (A - mun/kt) per
  *     cycle (the hysteresis loop's area), the element behind a stiff spring to a prescribed
@@ -159,6 +159,59 @@ START_TEST(oscillator_against_reference_and_hb)
     fricreg_structure_free(s);
     free(ref);
     free(got);
+}
+END_TEST
+
+/* test_hb's chain (three masses, two elements: one to ground, one between masses 1 and 2, so
+ * E = J_e K_eff^-1 J_e^T is full), forced by 0.8 sin(Omega t) on mass 1, HHT's alpha = 0:
+ * against the hand-written Newmark to rounding over 60 periods, every dof. */
+START_TEST(chain_against_reference)
+{
+    struct jenkins_model m = {.n = 3, .m = 2};
+    const double mass[3] = {1.1, 0.9, 1.25}, k[3] = {3.2, 2.1, 1.6};
+    for (int i = 0; i < 3; i++)
+        m.M[4 * i] = mass[i];
+    m.K[0] = k[0] + k[1];
+    m.K[1] = m.K[3] = -k[1];
+    m.K[4] = k[1] + k[2];
+    m.K[5] = m.K[7] = -k[2];
+    m.K[8] = k[2];
+    for (int i = 0; i < 9; i++)
+        m.C[i] = 0.03 * m.M[i] + 0.01 * m.K[i];
+    m.J[2] = 1.0;
+    m.J[3] = -1.0, m.J[4] = 1.0;
+    m.kt[0] = 2.5, m.kt[1] = 1.4;
+    m.mun[0] = 0.3, m.mun[1] = 0.12;
+    m.ps[0] = 0.8;
+    const int N = 512, periods = 60, nsteps = N * periods;
+    const double omega = 1.3, dt = 2.0 * PI / omega / N;
+    double *ref = malloc(3 * (size_t)nsteps * sizeof *ref), rms[3], prev[3], x[3];
+    ck_assert_ptr_nonnull(ref);
+    ck_assert(jenkins_newmark_rms(&m, omega, N, periods, rms, prev, ref));
+    fricreg_structure *s = make(&m, 1, omega, dt, nsteps);
+    double amp = 0.0, diff = 0.0;
+    for (int k = 1; k <= nsteps; k++) {
+        double t0;
+        ck_assert_int_eq(fricreg_structure_get_value(s, FRICREG_SVALUE_TIME, &t0), FRICREG_OK);
+        ck_assert_int_eq(fricreg_structure_step(s, k * dt - t0), FRICREG_OK);
+        ck_assert_int_eq(fricreg_structure_get_state(s, 3, x, NULL, NULL), FRICREG_OK);
+        for (int i = 0; i < 3; i++) {
+            amp = fmax(amp, fabs(ref[3 * (size_t)(k - 1) + i]));
+            diff = fmax(diff, fabs(x[i] - ref[3 * (size_t)(k - 1) + i]));
+        }
+    }
+    int64_t iters, imax, fails;
+    fricreg_structure_get_stat(s, FRICREG_SSTAT_NEWTON_ITERATIONS, &iters);
+    fricreg_structure_get_stat(s, FRICREG_SSTAT_NEWTON_MAX, &imax);
+    fricreg_structure_get_stat(s, FRICREG_SSTAT_NEWTON_FAILURES, &fails);
+    if (getenv("JENKINS_PRINT"))
+        fprintf(stderr, "chain: history |x - ref| %.3e of %.4g; Newton %g per step, max %lld\n",
+                diff, amp, (double)iters / nsteps, (long long)imax);
+    ck_assert_msg(diff <= 1e-10 * amp, "history differs by %g of %g", diff, amp);
+    ck_assert_int_eq(fails, 0);
+    ck_assert_int_le(imax, 4);
+    fricreg_structure_free(s);
+    free(ref);
 }
 END_TEST
 
@@ -348,6 +401,7 @@ static Suite *suite(void)
     TCase *tc = tcase_create("core");
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, oscillator_against_reference_and_hb);
+    tcase_add_test(tc, chain_against_reference);
     tcase_add_test(tc, dissipation_closed_form);
     tcase_add_test(tc, stuck_element_is_a_spring);
     tcase_add_test(tc, central_converges_to_newmark);
