@@ -382,6 +382,8 @@ int fr_elements_newmark(fricreg_structure *s, double dt, double scale, gsl_vecto
 void fr_elements_commit(fricreg_structure *s)
 {
     struct fr_elements *e = &s->el;
+    if (e->me == 0)
+        return; /* no arrays: memcpy may not take NULL */
     memcpy(e->fe, e->fe1, e->me * sizeof *e->fe);
     memcpy(e->wc, e->wt, e->me * sizeof *e->wc);
 }
