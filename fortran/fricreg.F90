@@ -326,6 +326,8 @@ module fricreg
     procedure :: set_damping => struct_set_damping
     procedure :: set_rayleigh => struct_set_rayleigh
     procedure :: set_contacts => struct_set_contacts
+    procedure :: set_jenkins => struct_set_jenkins
+    procedure :: get_jenkins_state => struct_get_jenkins_state
     procedure :: set_mass_csr => struct_set_mass_csr
     procedure :: set_mass_csc => struct_set_mass_csc
     procedure :: set_stiffness_csr => struct_set_stiffness_csr
@@ -2422,6 +2424,55 @@ contains
                                        fricreg_structure_set_contacts(self%ptr, self%m, self%n, &
                                                                       transpose(J)))
   end function struct_set_contacts
+
+  !> Jenkins elements on the rows of Je(me, ndof) in Fortran's order (fricreg_structure_set_jenkins:
+  !> element i sees q_i = (Je u)_i, a spring kt(i) in series with a slider of bound mun(i));
+  !> me = size(Je, 1), 0 removes them. FRICREG_ESIZE unless Je has ndof columns and kt, mun
+  !> me entries; C's codes (FRICREG_EINVAL for a zero row, kt <= 0 or mun < 0, ...).
+  function struct_set_jenkins(self, Je, kt, mun) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(in) :: Je(:, :), kt(:), mun(:)
+    integer(c_int) :: status
+    integer(c_size_t) :: me
+    me = int(size(Je, 1), c_size_t)
+    status = self%ready('set_jenkins', 'structure')
+    if (status == FRICREG_OK) status = self%check_size('set_jenkins', 'Je, 2', size(Je, 2), self%n)
+    if (status == FRICREG_OK) status = self%check_size('set_jenkins', 'kt', size(kt), me)
+    if (status == FRICREG_OK) status = self%check_size('set_jenkins', 'mun', size(mun), me)
+    if (status == FRICREG_OK) status = self%record( &
+                                       fricreg_structure_set_jenkins(self%ptr, me, self%n, &
+                                                                     transpose(Je), kt, mun))
+  end function struct_set_jenkins
+
+  !> The Jenkins elements' forces f(me), committed slider positions w(me) and dissipation
+  !> D(me) (fricreg_structure_get_jenkins_state); each optional, at least one given, all of
+  !> one size me, the number of elements set. FRICREG_ESIZE; FRICREG_ENULL if none is given.
+  function struct_get_jenkins_state(self, f, w, D) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(inout), contiguous, optional :: f(:), w(:), D(:)
+    integer(c_int) :: status
+    integer :: me
+    status = self%ready('get_jenkins_state', 'structure')
+    if (status /= FRICREG_OK) return
+    me = -1
+    if (present(f)) me = size(f)
+    if (present(w)) then
+      if (me >= 0 .and. size(w) /= me) me = -2
+      if (me == -1) me = size(w)
+    end if
+    if (present(D)) then
+      if (me >= 0 .and. size(D) /= me) me = -2
+      if (me == -1) me = size(D)
+    end if
+    if (me == -2) then
+      status = self%fail(FRICREG_ESIZE, 'get_jenkins_state: f, w and D differ in size')
+      return
+    end if
+    status = self%unrecorded('get_jenkins_state', &
+                             fricreg_structure_get_jenkins_state(self%ptr, &
+                                                                 int(max(me, 0), c_size_t), &
+                                                                 f, w, D))
+  end function struct_get_jenkins_state
 
   ! The compressed sparse setters (fricreg_structure.h, since 1.6): the arrays as a Fortran code
   ! holds them, indices integer(c_int64_t), flags from enum fricreg_sparse_flags, optional and

@@ -239,7 +239,8 @@ FRICREG_API int fricreg_structure_set_load(fricreg_structure *s, size_t ndof, co
                                            double t0, double dt_rec, size_t n, const double g[]);
 
 /** Restart at t = 0 from displacements u0[ndof] and velocities v0[ndof]: clears the energy
- *  balance, the dissipation and the counters. The initial acceleration follows from the
+ *  balance, the dissipation and the counters, and puts the Jenkins elements' sliders back at
+ *  w = 0 (fricreg_structure_set_jenkins). The initial acceleration follows from the
  *  equation of motion at the first step (friction from the law at zdot = J v0).
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE. */
 FRICREG_API int fricreg_structure_set_initial(fricreg_structure *s, size_t ndof, const double u0[],
@@ -448,23 +449,91 @@ FRICREG_API int fricreg_structure_get_dissipation(const fricreg_structure *s, si
  *  summed over steps with the trapezoidal rule on the displacement increments du:
  *  input += du.(p~(t) + p~(t+dt))/2, viscous += du.C(v(t) + v(t+dt))/2, friction as in
  *  get_dissipation; kinetic = v.M v/2 and strain = u.K u/2 now, initial = both at t = 0;
- *  residual = initial + input - kinetic - strain - viscous - friction. Average-acceleration
+ *  residual = initial + input - kinetic - strain - viscous - friction - jenkins (strain
+ *  holding the Jenkins elements' springs' energy too). Average-acceleration
  *  Newmark makes the residual vanish to Newton's tolerance (its discrete balance is exact);
  *  HHT-alpha's numerical damping shows in it. */
 enum fricreg_structure_value {
-    FRICREG_SVALUE_TIME = 0,      /**< time reached */
-    FRICREG_SVALUE_INPUT = 1,     /**< work of p - M r a_g since t = 0 */
-    FRICREG_SVALUE_KINETIC = 2,   /**< kinetic energy now */
-    FRICREG_SVALUE_STRAIN = 3,    /**< strain energy now */
-    FRICREG_SVALUE_VISCOUS = 4,   /**< energy dissipated by C since t = 0 */
-    FRICREG_SVALUE_FRICTION = 5,  /**< energy dissipated by all contacts since t = 0 */
-    FRICREG_SVALUE_RESIDUAL = 6,  /**< the balance's residual */
-    FRICREG_SVALUE_INITIAL = 7,   /**< kinetic + strain energy at t = 0 */
-    FRICREG_SVALUE_GROUND_PGV = 8 /**< the ground record's peak velocity max |integral of a_g
+    FRICREG_SVALUE_TIME = 0,       /**< time reached */
+    FRICREG_SVALUE_INPUT = 1,      /**< work of p - M r a_g since t = 0 */
+    FRICREG_SVALUE_KINETIC = 2,    /**< kinetic energy now */
+    FRICREG_SVALUE_STRAIN = 3,     /**< strain energy now */
+    FRICREG_SVALUE_VISCOUS = 4,    /**< energy dissipated by C since t = 0 */
+    FRICREG_SVALUE_FRICTION = 5,   /**< energy dissipated by all contacts since t = 0 */
+    FRICREG_SVALUE_RESIDUAL = 6,   /**< the balance's residual */
+    FRICREG_SVALUE_INITIAL = 7,    /**< kinetic + strain energy at t = 0 */
+    FRICREG_SVALUE_GROUND_PGV = 8, /**< the ground record's peak velocity max |integral of a_g
                                        dt| (trapezoidal from the record's start; 0 without a
                                        record): the scale of fricreg-sim's default eps and of
                                        the eps warnings (since 1.6) */
+    FRICREG_SVALUE_JENKINS = 9     /**< energy dissipated by all Jenkins elements since t = 0
+                                       (fricreg_structure_get_jenkins_state; since 1.6) */
 };
+
+/** Attach me Jenkins elements (fricreg_jenkins.h's 1-D element: a spring kt in series with a
+ *  Coulomb slider of bound mun) to the structure, on the rows of the element matrix
+ *  Je[me*ndof] (row-major; Je[i*ndof + k] = d q_i / d u_k, dimensionless for displacement
+ *  DOFs). Element i sees the relative displacement q_i = (J_e u)_i and its force
+ *  fe_i = kt_i (q_i - w_i), |fe_i| <= mun_i, by the exact return mapping from its committed
+ *  slider position w_i (fricreg_jenkins_trial), acts on the structure as -J_e^T fe:
+ *
+ *      M u'' + C u' + K u + J_e^T fe(J_e u) = p(t) - M r a_g(t) + J^T f.
+ *
+ *  The sliders are committed at the end of each accepted step. Newmark and HHT-alpha solve the
+ *  elements implicitly: Newton on their forces at the step's end with their exact tangent (kt
+ *  sticking, 0 slipping), condensed on the elements' coordinates through
+ *  E = J_e K_eff^-1 J_e^T (me x me, dense, formed with K_eff's factor: me solves per dt), GSL's
+ *  pivoted QR of I + (1 + alpha) beta dt^2 diag(tangent) E per iteration and a line search halving the
+ *  direction until the residual's 2-norm decreases (fricreg_structure_set_newton's tolerance on
+ *  max |fe - F(q)| times the step's force scale, its iterations counted with the contacts'). The
+ *  central difference evaluates them at the explicit displacement u(t + dt), its step guard
+ *  reading the largest frequency of M^-1 (K + J_e^T diag(kt) J_e) (all elements sticking).
+ *  fricreg_structure_run_ode refuses elements (FRICREG_EINVAL).
+ *
+ *  Elements and friction contacts do not act together: a step with elements refuses
+ *  (FRICREG_EINVAL) every contact whose bound mun is not 0, so a structure with elements only
+ *  has one contact of bound 0 (fricreg_structure_create's "structure without friction": any
+ *  non-zero row of J, fricreg_structure_set_bounds with 0).
+ *
+ *  Energy: the elements' springs' energy fe^2/(2 kt) is part of FRICREG_SVALUE_STRAIN, their
+ *  dissipation, sum over steps of (w(t+dt) - w(t)) (fe(t) + fe(t+dt))/2 (the trapezoidal work
+ *  less the springs' change: exact for average-acceleration Newmark), is
+ *  FRICREG_SVALUE_JENKINS and is taken out of the balance's residual.
+ *
+ *  Copied. me = 0 removes the elements (Je, kt, mun may then be NULL). Setting elements
+ *  replaces the previous ones, with every slider at w = 0 and their dissipation at 0, as does
+ *  fricreg_structure_set_initial; the next step starts from the return mapping at J_e u.
+ *  Like a model setter, K_eff is factored again at the next step. Allocates O(me^2 + nnz(J_e)).
+ *  Since 1.6 (FRICREG_1.6).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL (s, or Je, kt or mun with me > 0); FRICREG_ESIZE if ndof
+ *  is not the structure's; FRICREG_EINVAL if me > 2^26, a row of J_e is zero, a kt_i <= 0 or
+ *  a mun_i < 0, or the call comes from the observer; FRICREG_ENONFINITE (an entry of Je, kt or
+ *  mun); FRICREG_ENOMEM. On failure the elements in force are unchanged. */
+FRICREG_API int fricreg_structure_set_jenkins(fricreg_structure *s, size_t me, size_t ndof,
+                                              const double Je[], const double kt[],
+                                              const double mun[]);
+
+/** The same with J_e from compressed sparse rows: rowptr[me + 1], colind[nnz], values[nnz],
+ *  flags FRICREG_SPARSE_ONE_BASED or 0 (as fricreg_structure_set_contacts_csr: the triangle
+ *  flags are refused; duplicates summed). Since 1.6 (FRICREG_1.6).
+ *  Returns FRICREG_OK; FRICREG_ENULL (s, kt, mun, rowptr, or colind or values with nnz > 0);
+ *  FRICREG_ESIZE; FRICREG_EINVAL (flags, pointers, indices, a zero row, kt_i <= 0, mun_i < 0,
+ *  me > 2^26, from the observer); FRICREG_ENONFINITE; FRICREG_ENOMEM, as
+ *  fricreg_structure_set_jenkins. */
+FRICREG_API int fricreg_structure_set_jenkins_csr(fricreg_structure *s, size_t me, size_t ndof,
+                                                  int flags, const int64_t rowptr[],
+                                                  const int64_t colind[], const double values[],
+                                                  const double kt[], const double mun[]);
+
+/** Copy the Jenkins elements' state at the current time: their forces f[me] (force units,
+ *  fe = kt (q - w) on the element, -J_e^T fe on the structure; 0 before the first step), the
+ *  committed slider positions w[me] (the units of q) and the energy each has dissipated since
+ *  set_initial (or since set_jenkins) D[me] (energy units, as FRICREG_SVALUE_JENKINS). Any of
+ *  f, w, D may be NULL, not all three. Since 1.6 (FRICREG_1.6).
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if me is not the number of elements set. */
+FRICREG_API int fricreg_structure_get_jenkins_state(const fricreg_structure *s, size_t me,
+                                                    double f[], double w[], double D[]);
 
 /** Read one quantity (enum fricreg_structure_value) into *value.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown quantity. */

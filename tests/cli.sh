@@ -257,6 +257,23 @@ printf '0 0.731\n10 0.731\n' >"$d/ag_osc.txt"
 expect_output '"x": \[-0\.00113279590437[89][0-9]*\]' structure --mass $d/M2.mtx --stiffness $d/K2.mtx --contacts $d/J1.mtx --mun $d/mun0.txt --ground-accel $d/ag_osc.txt --integrator newmark --dt 0.01 --t-end 1.37
 # ... its energy balance closes (input = kinetic + strain) to Newton's tolerance.
 expect_output '"residual": -?[0-9.]+e-(1[3-9]|[2-9][0-9])' structure --mass $d/M2.mtx --stiffness $d/K2.mtx --contacts $d/J1.mtx --mun $d/mun0.txt --ground-accel $d/ag_osc.txt --integrator newmark --dt 0.01 --t-end 1.37
+# The same with 200.0 of the 417.3 N/m a stuck Jenkins element (--jenkins, mu N = 1e30 N): a
+# spring kt, so the same closed form; with mu N = 0.05 N it slips (its dissipation > 0) and the
+# balance still closes.
+mtx K2a.mtx symmetric "1 1 1" "1 1 217.3"
+echo "200.0 1e30" >"$d/P_stuck.txt"
+echo "200.0 0.05" >"$d/P_slip.txt"
+jk="structure --mass $d/M2.mtx --stiffness $d/K2a.mtx --contacts $d/J1.mtx --mun $d/mun0.txt --ground-accel $d/ag_osc.txt --jenkins $d/J1.mtx --dt 0.01 --t-end 1.37"
+expect_output '"x": \[-0\.00113279590437[89][0-9]*\].*"njenkins": 1, "dissipation_per_jenkins": \[0\]' $jk --jenkins-params $d/P_stuck.txt --integrator newmark
+expect_output '"jenkins_dissipation": 0\.0[0-9]*[1-9].*"jenkins": 0\.0[0-9]*[1-9][0-9]*, "residual": -?[0-9.]+e-(1[3-9]|[2-9][0-9])' $jk --jenkins-params $d/P_slip.txt --integrator newmark
+# Central difference is exact for it too, with W = (2/dt) asin(w dt/2) = 13.23717/s:
+# u(1.37 s) = -0.00102196310005633 m.
+expect_output '"x": \[-0\.00102196310005[56][0-9]*\]' $jk --jenkins-params $d/P_stuck.txt --integrator central
+expect_usage_error "^fricreg-sim: --jenkins-params: missing" structure --mass $d/M2.mtx --stiffness $d/K2a.mtx --contacts $d/J1.mtx --mun $d/mun0.txt --jenkins $d/J1.mtx --integrator newmark --dt 0.01 --t-end 1
+expect_usage_error "^fricreg-sim: --jenkins: Jenkins elements are integrated by newmark" $jk --jenkins-params $d/P_stuck.txt --integrator rk4
+expect_usage_error "^fricreg-sim: --mun $d/mun1.txt: line 1: .*every contact's bound must be 0" structure --mass $d/M2.mtx --stiffness $d/K2a.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --jenkins $d/J1.mtx --jenkins-params $d/P_slip.txt --integrator newmark --dt 0.01 --t-end 1
+echo "-1 0.05" >"$d/P_bad.txt"
+expect_usage_error "^fricreg-sim: --jenkins-params $d/P_bad.txt: .*kt > 0" $jk --jenkins-params $d/P_bad.txt --integrator newmark
 
 # Two storeys (m 1.7, 2.3 kg; k 311, 187 N/m), a damper on each drift, a shaken ground:
 # symmetric storage (lower triangle) and the full general matrix are the same model, and

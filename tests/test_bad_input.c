@@ -652,6 +652,27 @@ static int w_st_get_state_no_output(void)
 {
     return fricreg_structure_get_state(ST(), 2, NULL, NULL, NULL);
 }
+static const double ST_JE[2] = {1.0, 0.0}, ST_KT[1] = {2.0}, ST_MUN[1] = {0.1};
+static const int64_t ST_JE_PTR[2] = {0, 1}, ST_JE_IND[1] = {0};
+static int w_st_set_jenkins(void)
+{
+    return fricreg_structure_set_jenkins(ST(), C(0, 1), Z(0, 2), A(1, ST_JE, 2), A(2, ST_KT, 1),
+                                         A(3, ST_MUN, 1));
+}
+static int w_st_set_jenkins_csr(void)
+{
+    return fricreg_structure_set_jenkins_csr(ST(), C(0, 1), Z(0, 2), N(0, 0), I64(1, ST_JE_PTR),
+                                             I64(2, ST_JE_IND), A(3, ST_JE, 1), A(4, ST_KT, 1),
+                                             A(5, ST_MUN, 1));
+}
+static int w_st_get_jenkins_state(void)
+{
+    return fricreg_structure_get_jenkins_state(ST(), Z(0, 0), OUTD(1), OUTD(2), OUTD(3));
+}
+static int w_st_get_jenkins_state_no_output(void)
+{
+    return fricreg_structure_get_jenkins_state(ST(), 0, NULL, NULL, NULL);
+}
 static int w_st_get_forces(void)
 {
     return fricreg_structure_get_forces(ST(), Z(0, 1), OUTD(1));
@@ -1584,6 +1605,28 @@ static const struct row rows[] = {
      "0s",
      NONE,
      {PTR(8, "0")}},
+    {"fricreg_structure_set_jenkins",
+     w_st_set_jenkins,
+     "0snim",
+     ST_REC,
+     {HANDLE, COUNT(0, "ooii"), SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnoioo"), PTR(2, "0"),
+      ARR(2, "nniioo"), PTR(3, "0"), ARR(3, "nniooo")}},
+    {"fricreg_structure_set_jenkins_csr",
+     w_st_set_jenkins_csr,
+     "0snim",
+     ST_REC,
+     {HANDLE, COUNT(0, "ooii"), SIZE(0, "ssss"), INT(0, "ioii"), PTR(1, "0"), PTR(2, "0"),
+      PTR(3, "0"), ARR(3, "nnoioo"), PTR(4, "0"), ARR(4, "nniioo"), PTR(5, "0"), ARR(5, "nniooo")}},
+    {"fricreg_structure_get_jenkins_state",
+     w_st_get_jenkins_state,
+     "0s",
+     NONE,
+     {HANDLE, SIZE(0, "osss"), PTR(1, "o"), PTR(2, "o"), PTR(3, "o")}},
+    {"fricreg_structure_get_jenkins_state (all outputs NULL)",
+     w_st_get_jenkins_state_no_output,
+     "0s",
+     NONE,
+     {PTR(8, "0")}},
     {"fricreg_structure_get_forces",
      w_st_get_forces,
      "0s",
@@ -2415,7 +2458,7 @@ START_TEST(edges_of_documented_ranges)
          FRICREG_INT_CENTRAL_IMEX + 1, 'i', ST_REC},
         {"structure_run_ode rk4imp: K semidefinite", e_st_run, 2, 0.0, 1.0, 'i', ST_REC},
         {"structure_get_value <= ground_pgv", e_st_run, 3, FRICREG_SVALUE_GROUND_PGV,
-         FRICREG_SVALUE_GROUND_PGV + 1, 'i', NONE},
+         FRICREG_SVALUE_JENKINS + 1, 'i', NONE},
         {"structure_get_stat <= line-search cuts", e_st_run, 4, FRICREG_SSTAT_LINE_SEARCH_CUTS,
          FRICREG_SSTAT_LINE_SEARCH_CUTS + 1, 'i', NONE},
     };

@@ -9,7 +9,7 @@
  *   - nonlinear: the steady state of the same equations in time, M x'' + C x' + K x + J^T f =
  *     p(t), by average-acceleration Newmark (beta = 1/4, gamma = 1/2, second order) with Newton
  *     on the displacements and the Jenkins elements' return mapping (fricreg_jenkins_trial,
- *     commit after each step), 2048 steps a period, from rest for long enough that the RMS of
+ *     commit after each step; tests/support/jenkins_newmark.h), 1024 steps a period, from rest for long enough that the RMS of
  *     the last two periods agree to 1e-7 (asserted: the reference has reached its steady
  *     state), the RMS over the last period by the rectangle rule (exact for a periodic
  *     trigonometric polynomial sampled over one period). The frequencies are those where
@@ -33,23 +33,17 @@
 
 #include "fricreg_hb.h"
 #include "fricreg_jenkins.h"
+#include "jenkins_newmark.h"
 
 #define SENTINEL (-777.125)
-#define MAXN 3
-#define MAXM 2
+#define MAXN JENKINS_MODEL_MAXN
+#define MAXM JENKINS_MODEL_MAXM
 static const double PI = 3.14159265358979323846;
 
-/* A model: n dofs, m elements, dense row-major matrices. */
-struct model {
-    size_t n, m;
-    double M[MAXN * MAXN], C[MAXN * MAXN], K[MAXN * MAXN], J[MAXM * MAXN];
-    double kt[MAXM], mun[MAXM], pc[MAXN], ps[MAXN];
-};
-
 /* One dof on a spring to ground with a Jenkins element to ground. */
-static struct model oscillator(void)
+static struct jenkins_model oscillator(void)
 {
-    struct model s = {.n = 1, .m = 1};
+    struct jenkins_model s = {.n = 1, .m = 1};
     s.M[0] = 1.3;
     s.K[0] = 2.385;
     s.C[0] = 0.12;
@@ -63,9 +57,9 @@ static struct model oscillator(void)
 
 /* Three masses in a chain on springs (ground–1, 1–2, 2–3), Rayleigh damping a0 M + a1 K;
  * element 0 between mass 3 and ground, element 1 between masses 1 and 2; mass 1 excited. */
-static struct model chain(void)
+static struct jenkins_model chain(void)
 {
-    struct model s = {.n = 3, .m = 2};
+    struct jenkins_model s = {.n = 3, .m = 2};
     const double mass[3] = {1.1, 0.9, 1.25}, k[3] = {3.2, 2.1, 1.6};
     for (int i = 0; i < 3; i++)
         s.M[4 * i] = mass[i];
@@ -84,7 +78,7 @@ static struct model chain(void)
     return s;
 }
 
-static fricreg_hb *make(const struct model *s, int H, int rayleigh)
+static fricreg_hb *make(const struct jenkins_model *s, int H, int rayleigh)
 {
     fricreg_hb *hb = NULL;
     ck_assert_int_eq(fricreg_hb_create(s->n, s->m, H, &hb), FRICREG_OK);
@@ -100,7 +94,7 @@ static fricreg_hb *make(const struct model *s, int H, int rayleigh)
 }
 
 /* rms_k² = x0² + (1/2) sum_h (a_h² + b_h²) of HB's displacement at Omega. */
-static void hb_rms(fricreg_hb *hb, const struct model *s, int H, double omega, double *rms)
+static void hb_rms(fricreg_hb *hb, const struct jenkins_model *s, int H, double omega, double *rms)
 {
     size_t nc = 2 * (size_t)H + 1, nq = s->m * nc;
     double q[MAXM * 83], x[MAXN * 83];
@@ -115,7 +109,7 @@ static void hb_rms(fricreg_hb *hb, const struct model *s, int H, double omega, d
 }
 
 /* The linear closed form at h = 1 with stiffness K + J^T kt J, into X[2n] (a_1, b_1 per dof). */
-static void linear_response(const struct model *s, double omega, double *X)
+static void linear_response(const struct jenkins_model *s, double omega, double *X)
 {
     size_t n = s->n;
     double D[2 * MAXN * MAXN], b[2 * MAXN], x[2 * MAXN];
@@ -144,7 +138,7 @@ static void linear_response(const struct model *s, double omega, double *X)
 START_TEST(linear_stuck_closed_form)
 {
     for (int which = 0; which < 2; which++) {
-        struct model s = which ? chain() : oscillator();
+        struct jenkins_model s = which ? chain() : oscillator();
         for (size_t e = 0; e < s.m; e++)
             s.mun[e] = 1e6;
         const int Hs[2] = {1, 3};
@@ -180,100 +174,14 @@ START_TEST(linear_stuck_closed_form)
 }
 END_TEST
 
-/* Newmark (average acceleration) from rest over `periods` periods of 2048 steps; the RMS of
- * each dof over the last period (rms) and the one before (prev); whether every element's
- * range over the last period exceeded its slip range 2 mun/kt. */
-static int newmark_rms(const struct model *s, double omega, int periods, double *rms, double *prev)
-{
-    const int N = 1024;
-    size_t n = s->n, m = s->m;
-    double dt = 2.0 * PI / omega / N, beta = 0.25, gamma = 0.5;
-    double x[MAXN] = {0}, v[MAXN] = {0}, a[MAXN] = {0}, xn[MAXN], an[MAXN], vn[MAXN];
-    double q[MAXM], f[MAXM], df[MAXM], R[MAXN], Kt[MAXN * MAXN], dx[MAXN];
-    double sum[MAXN] = {0}, qmax[MAXM], qmin[MAXM], xscale = 0.0; /* largest |x| so far */
-    int slips = 1;
-    fricreg_jenkins *jk = NULL;
-    ck_assert_int_eq(fricreg_jenkins_create(1, m, &jk), FRICREG_OK);
-    ck_assert_int_eq(fricreg_jenkins_set_params(jk, m, s->kt, s->mun), FRICREG_OK);
-    gsl_permutation *p = gsl_permutation_alloc(n);
-    for (int step = 1; step <= periods * N; step++) {
-        double t = step * dt, ct = cos(omega * t), st = sin(omega * t);
-        memcpy(xn, x, sizeof x);
-        for (int it = 0;; it++) {
-            ck_assert_int_lt(it, 50);
-            for (size_t i = 0; i < n; i++) {
-                an[i] = (xn[i] - x[i] - dt * v[i]) / (beta * dt * dt) - (0.5 / beta - 1.0) * a[i];
-                vn[i] = v[i] + dt * ((1.0 - gamma) * a[i] + gamma * an[i]);
-            }
-            for (size_t e = 0; e < m; e++) {
-                q[e] = 0.0;
-                for (size_t k = 0; k < n; k++)
-                    q[e] += s->J[e * n + k] * xn[k];
-            }
-            ck_assert_int_eq(fricreg_jenkins_trial(jk, m, q, f, df), FRICREG_OK);
-            double rmax = 0.0;
-            for (size_t i = 0; i < n; i++) {
-                R[i] = -(s->pc[i] * ct + s->ps[i] * st);
-                for (size_t k = 0; k < n; k++) {
-                    R[i] += s->M[i * n + k] * an[k] + s->C[i * n + k] * vn[k] +
-                            s->K[i * n + k] * xn[k];
-                    Kt[i * n + k] = s->M[i * n + k] / (beta * dt * dt) +
-                                    gamma / (beta * dt) * s->C[i * n + k] + s->K[i * n + k];
-                    for (size_t e = 0; e < m; e++)
-                        Kt[i * n + k] += s->J[e * n + i] * df[e] * s->J[e * n + k];
-                }
-                for (size_t e = 0; e < m; e++)
-                    R[i] += s->J[e * n + i] * f[e];
-                rmax = fmax(rmax, fabs(R[i]));
-            }
-            (void)rmax;
-            gsl_matrix_view Kv = gsl_matrix_view_array(Kt, n, n);
-            gsl_vector_view Rv = gsl_vector_view_array(R, n), dv = gsl_vector_view_array(dx, n);
-            int sg;
-            gsl_linalg_LU_decomp(&Kv.matrix, p, &sg);
-            gsl_linalg_LU_solve(&Kv.matrix, p, &Rv.vector, &dv.vector);
-            double dm = 0.0;
-            for (size_t i = 0; i < n; i++) {
-                xn[i] -= dx[i];
-                xscale = fmax(xscale, fabs(xn[i]));
-                dm = fmax(dm, fabs(dx[i]));
-            }
-            if (dm <= 1e-14 * xscale)
-                break;
-        }
-        ck_assert_int_eq(fricreg_jenkins_commit(jk), FRICREG_OK);
-        memcpy(x, xn, sizeof x);
-        memcpy(v, vn, sizeof v);
-        memcpy(a, an, sizeof a);
-        int k = step % N;
-        if (step > (periods - 2) * N) {
-            for (size_t i = 0; i < n; i++)
-                sum[i] += x[i] * x[i];
-            for (size_t e = 0; e < m && step > (periods - 1) * N; e++) {
-                qmax[e] = step == (periods - 1) * N + 1 ? q[e] : fmax(qmax[e], q[e]);
-                qmin[e] = step == (periods - 1) * N + 1 ? q[e] : fmin(qmin[e], q[e]);
-            }
-        }
-        if (k == 0 && step == (periods - 1) * N)
-            for (size_t i = 0; i < n; i++)
-                prev[i] = sqrt(sum[i] / N), sum[i] = 0.0;
-    }
-    for (size_t i = 0; i < n; i++)
-        rms[i] = sqrt(sum[i] / N);
-    for (size_t e = 0; e < m; e++)
-        slips = slips && s->kt[e] * (qmax[e] - qmin[e]) > 2.0 * s->mun[e];
-    gsl_permutation_free(p);
-    fricreg_jenkins_free(jk);
-    return slips;
-}
-
-static void against_time_domain(const struct model *s, const double *omegas, int count, int periods)
+static void against_time_domain(const struct jenkins_model *s, const double *omegas, int count,
+                                int periods)
 {
     const int H = 21;
     fricreg_hb *hb = make(s, H, 0);
     for (int w = 0; w < count; w++) {
         double rms[MAXN], prev[MAXN], ref[MAXN];
-        int slips = newmark_rms(s, omegas[w], periods, ref, prev);
+        int slips = jenkins_newmark_rms(s, omegas[w], 1024, periods, ref, prev, NULL);
         ck_assert_msg(slips, "Omega = %g: an element sticks in the reference", omegas[w]);
         hb_rms(hb, s, H, omegas[w], rms);
         for (size_t k = 0; k < s->n; k++) {
@@ -294,7 +202,7 @@ static void against_time_domain(const struct model *s, const double *omegas, int
 
 START_TEST(oscillator_against_time_domain)
 {
-    struct model s = oscillator();
+    struct jenkins_model s = oscillator();
     const double omegas[5] = {1.2, 1.35, 1.5, 1.7, 2.1};
     against_time_domain(&s, omegas, 5, 100);
 }
@@ -302,7 +210,7 @@ END_TEST
 
 START_TEST(chain_against_time_domain)
 {
-    struct model s = chain();
+    struct jenkins_model s = chain();
     const double omegas[5] = {1.0, 1.15, 1.3, 1.45, 1.6};
     against_time_domain(&s, omegas, 5, 100);
 }
@@ -313,7 +221,7 @@ END_TEST
  * 2.8e-7) and H = 7 within 2e-4 (6.5e-5, 3.2e-5). */
 START_TEST(harmonics_converge)
 {
-    struct model s = chain();
+    struct jenkins_model s = chain();
     const double omegas[2] = {1.0, 1.6};
     for (int w = 0; w < 2; w++) {
         double r40[MAXN], r21[MAXN], r7[MAXN];
@@ -331,7 +239,7 @@ START_TEST(harmonics_converge)
 END_TEST
 
 /* The chain's first natural frequency with stiffness K + J^T diag(kts) J. */
-static double first_frequency(const struct model *s, const double *kts)
+static double first_frequency(const struct jenkins_model *s, const double *kts)
 {
     size_t n = s->n;
     double K[MAXN * MAXN], M[MAXN * MAXN], lam[MAXN];
@@ -355,7 +263,7 @@ static double first_frequency(const struct model *s, const double *kts)
 
 START_TEST(continuation_over_resonance)
 {
-    struct model s = chain();
+    struct jenkins_model s = chain();
     const int H = 7;
     const double zero[MAXM] = {0.0, 0.0};
     double w_slip = first_frequency(&s, zero), w_stick = first_frequency(&s, s.kt);
@@ -425,7 +333,7 @@ END_TEST
 
 START_TEST(bad_input)
 {
-    struct model s = chain();
+    struct jenkins_model s = chain();
     fricreg_hb *hb = NULL;
     ck_assert_int_eq(fricreg_hb_create(3, 2, 3, NULL), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_hb_create(0, 2, 3, &hb), FRICREG_EINVAL);
@@ -547,7 +455,7 @@ START_TEST(bad_input)
     ck_assert_int_eq(fricreg_hb_displacement(hb, 3, 7, x), FRICREG_OK);
     /* a corrector allowed one iteration never converges (the stuck start does, being linear
      * in q): the step halves below ds_min */
-    struct model lin = chain();
+    struct jenkins_model lin = chain();
     lin.mun[0] = lin.mun[1] = 1e6;
     fricreg_hb *hl = make(&lin, 3, 1);
     ck_assert_int_eq(fricreg_hb_set_newton(hl, 1e-10, 1), FRICREG_OK);

@@ -9,7 +9,8 @@
 enum scheme { SCHEME_NONE, SCHEME_NEWMARK, SCHEME_HHT, SCHEME_CENTRAL, SCHEME_GSL };
 
 struct structure_options {
-    const char *mass, *stiffness, *damping, *contacts, *mun, *influence, *ground;
+    const char *mass, *stiffness, *damping, *contacts, *mun, *influence, *ground, *jenkins,
+        *jenkins_params;
     int rayleigh_given, alpha_given, law, integrator;
     enum scheme scheme;
     double a0, a1, eps, alpha, dt, t_end, rtol, atol;

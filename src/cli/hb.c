@@ -12,6 +12,7 @@
 #include "cli.h"
 #include "cli_input.h"
 #include "input_line.h"
+#include "jenkins_input.h"
 #include "fricreg_hb.h"
 #include "matrix_market.h"
 
@@ -94,64 +95,9 @@ static int parse_hb(int argc, char **argv, struct hb_options *o)
     return status != 0 ? status : check_options(o);
 }
 
-/* The rows x cols matrix of option's file (J), dense row-major into *out (a symmetric file's
- * lower triangle mirrored). */
-static int read_dense(const char *option, const char *path, size_t rows, size_t cols, size_t *nrows,
-                      size_t *ncols, double **out)
-{
-    struct cli_sparse A = {0};
-    int status = cli_read_mtx(option, path, rows, cols, &A);
-    if (status != 0)
-        return status;
-    double *D = calloc(A.rows * A.cols, sizeof *D);
-    if (D == NULL) {
-        cli_sparse_free(&A);
-        return cli_file_error(option, path, 0, "out of memory");
-    }
-    for (size_t j = 0; j < A.cols; j++)
-        for (int64_t p = A.colptr[j]; p < A.colptr[j + 1]; p++) {
-            size_t i = (size_t)A.rowind[p];
-            D[i * A.cols + j] = A.values[p];
-            if (A.lower)
-                D[j * A.cols + i] = A.values[p];
-        }
-    *nrows = A.rows;
-    *ncols = A.cols;
-    *out = D;
-    cli_sparse_free(&A);
-    return 0;
-}
-
-/* Two columns per row, one row per entity (dof or element): into a[rows], b[rows]. */
-static int read_pairs(const char *option, const char *path, size_t rows, const char *what,
-                      double **a, double **b)
-{
-    size_t got = 0;
-    double *values = NULL;
-    int status = cli_read_columns(option, path, 2, &got, &values);
-    if (status != 0)
-        return status;
-    if (got != rows) {
-        free(values);
-        return cli_file_error(option, path, 0, "%zu lines, the model has %zu %s", got, rows, what);
-    }
-    *a = malloc(rows * sizeof **a);
-    *b = malloc(rows * sizeof **b);
-    if (*a == NULL || *b == NULL) {
-        free(values);
-        return cli_file_error(option, path, 0, "out of memory");
-    }
-    for (size_t k = 0; k < rows; k++) {
-        (*a)[k] = values[2 * k];
-        (*b)[k] = values[2 * k + 1];
-    }
-    free(values);
-    return 0;
-}
-
 static int read_model(const struct hb_options *o, struct hb_model *md)
 {
-    size_t n = 0, cols = 0, m = 0;
+    size_t n = 0, m = 0;
     int status = cli_read_mtx("--mass", o->mass, 0, 0, &md->M);
     n = md->M.rows;
     if (status == 0 && n != md->M.cols)
@@ -161,15 +107,12 @@ static int read_model(const struct hb_options *o, struct hb_model *md)
     if (status == 0 && o->damping != NULL)
         status = cli_read_mtx("--damping", o->damping, n, n, &md->C);
     if (status == 0)
-        status = read_dense("--jenkins", o->jenkins, 0, n, &m, &cols, &md->J);
+        status = cli_read_jenkins(o->jenkins, o->params, n, &m, &md->J, &md->kt, &md->mun);
     md->n = n;
     md->m = m;
     if (status == 0)
-        status = read_pairs("--excitation", o->excitation, n, "degrees of freedom", &md->pc,
-                            &md->ps);
-    if (status == 0)
-        status = read_pairs("--jenkins-params", o->params, m, "elements (rows of --jenkins)",
-                            &md->kt, &md->mun);
+        status = cli_read_pairs("--excitation", o->excitation, n, "degrees of freedom", &md->pc,
+                                &md->ps);
     return status;
 }
 

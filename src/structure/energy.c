@@ -29,13 +29,16 @@ double fr_energy_kinetic(const fricreg_structure *s)
 
 double fr_energy_strain(const fricreg_structure *s)
 {
-    return 0.5 * quadratic_form(s->K, s->u->data);
+    return 0.5 * quadratic_form(s->K, s->u->data) + fr_elements_strain(s);
 }
 
 void fr_energy_reset(fricreg_structure *s)
 {
     s->energy.initial = s->energy.input = s->energy.viscous = s->energy.friction = 0.0;
     memset(s->energy.per_contact, 0, s->m * sizeof *s->energy.per_contact);
+    s->energy.jenkins = 0.0;
+    if (s->el.me > 0)
+        memset(s->el.dissipation, 0, s->el.me * sizeof *s->el.dissipation);
 }
 
 void fr_energy_start(fricreg_structure *s)
@@ -68,5 +71,11 @@ void fr_energy_step(fricreg_structure *s, const gsl_vector *u1, const gsl_vector
         double d = -dz[i] * (0.5 * s->f->data[i] + 0.5 * f1->data[i]);
         s->energy.per_contact[i] += d;
         s->energy.friction += d;
+    }
+    const struct fr_elements *e = &s->el; /* its sliders' slip times the mean force */
+    for (size_t i = 0; i < e->me; i++) {
+        double d = (e->wt[i] - e->wc[i]) * (0.5 * e->fe[i] + 0.5 * e->fe1[i]);
+        e->dissipation[i] += d;
+        s->energy.jenkins += d;
     }
 }

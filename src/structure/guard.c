@@ -122,21 +122,49 @@ static int bound_rate(fricreg_structure *s, const cholmod_sparse *X, double *max
     return xlo >= 0.0;
 }
 
+/* K + J_e^T diag(kt) J_e, the stiffness with every Jenkins element sticking (its upper
+ * triangle), or NULL when out of memory. */
+static cholmod_sparse *stick_stiffness(fricreg_structure *s)
+{
+    cholmod_sparse *B = cholmod_l_copy_sparse(s->el.Jt, &s->cc);
+    if (B == NULL)
+        return NULL;
+    const SuiteSparse_long *Bp = B->p;
+    double *Bx = B->x;
+    for (size_t i = 0; i < s->el.me; i++)
+        for (SuiteSparse_long p = Bp[i]; p < Bp[i + 1]; p++)
+            Bx[p] *= sqrt(s->el.kt[i]);
+    cholmod_sparse *BBt = cholmod_l_aat(B, NULL, 0, 1, &s->cc);
+    cholmod_l_free_sparse(&B, &s->cc);
+    cholmod_sparse *upper = BBt == NULL ? NULL : cholmod_l_copy(BBt, 1, 1, &s->cc);
+    cholmod_l_free_sparse(&BBt, &s->cc);
+    double one[2] = {1.0, 0.0};
+    cholmod_sparse *Ks = upper == NULL ? NULL : cholmod_l_add(s->K, upper, one, one, 1, 1, &s->cc);
+    cholmod_l_free_sparse(&upper, &s->cc);
+    return Ks;
+}
+
 int fr_structure_rates(fricreg_structure *s, const char *who)
 {
     if (s->omega_valid)
         return FRICREG_OK;
     double omega2 = 0.0, omega2_min = 0.0, unused = 0.0;
     int stiff_psd, damp_psd;
+    cholmod_sparse *K = s->el.me > 0 ? stick_stiffness(s) : s->K;
+    if (K == NULL)
+        return fr_fail(s, FRICREG_ENOMEM, "%s: no memory for the sticking elements' stiffness",
+                       who);
     if (s->n <= DENSE_RATES_MAX) {
-        stiff_psd = exact_rate(s, s->K, &omega2, &omega2_min);
+        stiff_psd = exact_rate(s, K, &omega2, &omega2_min);
         damp_psd = exact_rate(s, s->Cd, &s->damping_max, &unused);
-        if (stiff_psd < 0 || damp_psd < 0)
-            return fr_fail(s, FRICREG_ENOMEM, "%s: no memory for the model's eigenvalues", who);
     } else {
-        stiff_psd = bound_rate(s, s->K, &omega2);
+        stiff_psd = bound_rate(s, K, &omega2);
         damp_psd = bound_rate(s, s->Cd, &s->damping_max);
     }
+    if (K != s->K)
+        cholmod_l_free_sparse(&K, &s->cc);
+    if (stiff_psd < 0 || damp_psd < 0)
+        return fr_fail(s, FRICREG_ENOMEM, "%s: no memory for the model's eigenvalues", who);
     s->omega_max = sqrt(omega2);
     s->omega_min = sqrt(omega2_min); /* 0 beyond DENSE_RATES_MAX: not known */
     s->stable = stiff_psd && damp_psd;

@@ -94,6 +94,7 @@ static int form_step_factor(fricreg_structure *s, double dt)
     if (fabs(dt - s->step_dt) <= STEP_RTOL * s->step_dt)
         return FRICREG_OK;
     s->step_dt = 0.0;
+    s->el.E_valid = 0;
     fr_cfactor_free(&s->step, &s->cc);
     double w = 1.0 + s->alpha;
     double gc = w * s->gamma * dt, gk = w * s->beta * dt * dt;
@@ -381,9 +382,10 @@ static int newton(fricreg_structure *s, double dt, int *converged, int *iters)
     return FRICREG_OK;
 }
 
-/* The predictors, the start's term hist = C v + K u - p~ - J^T f, and b's forward solve
+/* The predictors, the start's term hist = C v + K u - p~ - J^T f + J_e^T fe, the Jenkins
+ * elements' forces at the step's end (b then holds them: jenkins.c), and b's forward solve
  * (into s->yb) with what the contacts see of it: z0 and a0. */
-static void predict(fricreg_structure *s, double dt)
+static int predict(fricreg_structure *s, double dt, int *converged, int *iters)
 {
     size_t n = s->n, m = s->m;
     double b2 = s->beta * dt * dt, g = s->gamma * dt, w = 1.0 + s->alpha;
@@ -398,11 +400,18 @@ static void predict(fricreg_structure *s, double dt)
         fr_csc_mult_add(s->Jt, 1.0, s->f->data, hist);
         for (size_t k = 0; k < n; k++)
             hist[k] = -hist[k];
+        if (s->el.me > 0) /* the elements' forces on the structure, -J_e^T fe, at t */
+            fr_csc_mult_add(s->el.Jt, 1.0, s->el.fe, hist);
     }
     fr_structure_net_force(s, s->ptil1, s->up, s->vp, s->yb); /* p~1 - C vp - K up */
     if (s->alpha != 0.0)
         for (size_t k = 0; k < n; k++)
             yb[k] = w * yb[k] + s->alpha * hist[k];
+    if (s->el.me > 0) {
+        int status = fr_elements_newmark(s, dt, force_scale(s), s->yb, converged, iters);
+        if (status != FRICREG_OK)
+            return status;
+    }
     fr_cfactor_forward(&s->step, yb, yb, &s->cc);
     double *z0 = s->z0->data, *a0 = s->af0->data;
     fr_cfactor_project(&s->step, yb, a0, &s->cc); /* J x0 */
@@ -417,6 +426,7 @@ static void predict(fricreg_structure *s, double dt)
     }
     for (size_t i = 0; i < m; i++)
         a0[i] /= w;
+    return FRICREG_OK;
 }
 
 int fr_newmark_solve(fricreg_structure *s, double dt, int *converged, int *iters)
@@ -425,9 +435,13 @@ int fr_newmark_solve(fricreg_structure *s, double dt, int *converged, int *iters
     if (status != FRICREG_OK)
         return status;
     dt = s->step_dt;
-    predict(s, dt);
-    if ((status = newton(s, dt, converged, iters)) != FRICREG_OK)
+    fr_elements_compliance(s);
+    int el_converged = 1, el_iters = 0;
+    if ((status = predict(s, dt, &el_converged, &el_iters)) != FRICREG_OK ||
+        (status = newton(s, dt, converged, iters)) != FRICREG_OK)
         return status;
+    *converged = *converged && el_converged;
+    *iters += el_iters;
     /* x = K_eff^-1 (b + w J^T f): the forward half is yb, the backward half completes it. */
     fr_cfactor_lift(&s->step, 1.0 + s->alpha, s->fk->data, s->yb->data, &s->cc);
     fr_cfactor_backward(&s->step, s->yb->data, s->x->data, &s->cc);

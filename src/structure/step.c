@@ -85,6 +85,7 @@ int fr_structure_equilibrium(fricreg_structure *s)
 {
     fr_structure_effective_load(s, s->t, s->ptil);
     fr_structure_net_force(s, s->ptil, s->u, s->v, s->work);
+    fr_elements_equilibrium(s, s->work);
     int status = fr_structure_motion(s, s->work, s->v, s->f, s->a);
     if (status != FRICREG_OK)
         return fr_fail(s, status, "step: friction at t = %g: %s", s->t, fricreg_ctx_errmsg(s->ctx));
@@ -109,12 +110,15 @@ static int step_to(fricreg_structure *s, double t1)
     double dt = t1 - s->t;
     int64_t cuts = s->stats[FRICREG_SSTAT_LINE_SEARCH_CUTS];
     int status = fr_structure_prepare(s);
+    if (status == FRICREG_OK)
+        status = fr_elements_check_contacts(s, "step");
     if (status != FRICREG_OK)
         return status;
     int equilibrium = !s->ready;
     if (equilibrium) {
         gsl_vector_memcpy(s->a_held, s->a);
         gsl_vector_memcpy(s->f_held, s->f);
+        fr_elements_hold(s, 0);
         status = fr_structure_equilibrium(s);
     }
     int converged = 1, iters = 0;
@@ -132,6 +136,7 @@ static int step_to(fricreg_structure *s, double t1)
         if (equilibrium) {
             gsl_vector_memcpy(s->a, s->a_held);
             gsl_vector_memcpy(s->f, s->f_held);
+            fr_elements_hold(s, 1);
             s->ready = 0;
         }
         return status;
@@ -140,6 +145,7 @@ static int step_to(fricreg_structure *s, double t1)
     if (s->fresh)
         fr_energy_start(s);
     fr_energy_step(s, s->u1, s->v1, s->ptil1, s->f1);
+    fr_elements_commit(s);
     /* The step's end becomes the state: the vectors trade places, nothing is copied. */
     swap(&s->u, &s->u1);
     swap(&s->v, &s->v1);

@@ -40,6 +40,7 @@ void fricreg_structure_free(fricreg_structure *s)
     fr_cfactor_free(&s->mass, &s->cc);
     fr_cfactor_free(&s->step, &s->cc);
     fr_newton_matrix_free(&s->newton, &s->cc);
+    fr_elements_free(s);
     fr_cholmod_finish(&s->cc);
     fricreg_ctx_free(s->ctx);
     free(s->mun);
@@ -317,6 +318,7 @@ int fricreg_structure_set_initial(fricreg_structure *s, size_t ndof, const doubl
     memcpy(s->v->data, v0, ndof * sizeof *v0);
     gsl_vector_set_zero(s->a);
     gsl_vector_set_zero(s->f);
+    fr_elements_reset(s);
     s->t = 0.0;
     s->ready = 0;
     s->fresh = 1;
@@ -475,10 +477,11 @@ int fricreg_structure_get_value(const fricreg_structure *s, int which, double *v
     case FRICREG_SVALUE_VISCOUS: *value = e->viscous; break;
     case FRICREG_SVALUE_FRICTION: *value = e->friction; break;
     case FRICREG_SVALUE_RESIDUAL:
-        *value = e->initial + e->input - kinetic - strain - e->viscous - e->friction;
+        *value = e->initial + e->input - kinetic - strain - e->viscous - e->friction - e->jenkins;
         break;
     case FRICREG_SVALUE_INITIAL: *value = e->initial; break;
     case FRICREG_SVALUE_GROUND_PGV: *value = fr_ground_pgv(s); break;
+    case FRICREG_SVALUE_JENKINS: *value = e->jenkins; break;
     default: return FRICREG_EINVAL;
     }
     return FRICREG_OK;

@@ -2,7 +2,8 @@
 /* structure_internal.h — the structure's layout, shared by its files: structure.c (life cycle,
  * setters, getters), model.c (the model matrices), prepare.c (the set-up of a model),
  * newmark.c and newton_matrix.c (the implicit step), central_difference.c, step.c (stepping),
- * structure_ode.c (GSL's steppers), guard.c (the step guard) and energy.c (the balance). */
+ * structure_ode.c (GSL's steppers), guard.c (the step guard), energy.c (the balance) and
+ * jenkins.c (Jenkins elements). */
 #ifndef FRICREG_STRUCTURE_INTERNAL_H
 #define FRICREG_STRUCTURE_INTERNAL_H
 
@@ -36,6 +37,25 @@ struct fr_record {
 struct fr_energy {
     double initial, input, viscous, friction;
     double *per_contact; /* [m] */
+    double jenkins;      /* the Jenkins elements' dissipation, all of them */
+};
+
+/* Jenkins elements on rows of J_e (jenkins.c): me = 0 without any. Each is a spring kt in
+ * series with a slider of bound mun at q = J_e u, force fe = kt (q - w) on the element (so
+ * -J_e^T fe on the structure), returned by slider.h's mapping from the committed wc. */
+struct fr_elements {
+    size_t me;
+    cholmod_sparse *Jt;        /* n x me: J_e^T */
+    double *kt, *mun;          /* [me] */
+    double *wc, *wt;           /* [me] committed and trial slider positions */
+    double *fe, *fe1;          /* [me] forces at t and at the step's end */
+    double *wc_held, *fe_held; /* [me] before a step's equilibrium, restored if it fails */
+    double *dissipation;       /* [me] since set_initial */
+    double *q0, *g, *df, *ft, *gt, *tan; /* [me] Newton's scratch */
+    double *tau, *norm;                  /* [me] the Newton matrix's QR (GSL's, pivoted) */
+    double *E, *A; /* [me me] J_e K_eff^-1 J_e^T for step_dt, Newton's matrix */
+    size_t *perm;  /* [me] its LU's permutation */
+    int E_valid;   /* E is K_eff's at step_dt */
 };
 
 struct fricreg_structure {
@@ -110,6 +130,7 @@ struct fricreg_structure {
      * trial (newmark.c): the residual is affine in f, so a trial's are combined, not formed */
     struct fr_compliance_pair at_start, at_fk, at_df, at_ft;
 
+    struct fr_elements el;
     struct fr_energy energy;
     int64_t stats[FR_NSSTATS];
     struct fr_error err;
@@ -204,6 +225,25 @@ void fr_warn_track_step(fricreg_structure *s, double dt, int ode);
 void fr_warn_track_reset(fricreg_structure *s);
 /* The ground record's peak velocity max |integral of a_g dt| (trapezoidal; 0 without one). */
 double fr_ground_pgv(const fricreg_structure *s);
+
+/* jenkins.c: the elements' part of the step. elements_equilibrium: fe at q = J_e u from wc
+ * (committed: the mapping is idempotent), w -= J_e^T fe. elements_explicit: fe1, wt at
+ * J_e u1, w -= J_e^T fe1 (central difference). elements_newmark: Newton on fe1 with b[n] the
+ * step's right-hand side K_eff x = b - w J_e^T fe1 (before the forward solve), until max |G|
+ * is within newton_tol times the larger of scale and max |fe|; then b -= (1 + alpha) J_e^T fe1. elements_commit after an accepted step. */
+int fr_elements_compliance(fricreg_structure *s);
+void fr_elements_equilibrium(fricreg_structure *s, gsl_vector *w);
+void fr_elements_explicit(fricreg_structure *s, const gsl_vector *u1, gsl_vector *w);
+int fr_elements_newmark(fricreg_structure *s, double dt, double scale, gsl_vector *b,
+                        int *converged, int *iters);
+void fr_elements_commit(fricreg_structure *s);
+/* fe and wc into their held copies (restore = 0), or back (restore = 1). */
+void fr_elements_hold(fricreg_structure *s, int restore);
+void fr_elements_reset(fricreg_structure *s);
+void fr_elements_free(fricreg_structure *s);
+double fr_elements_strain(const fricreg_structure *s);
+/* Refuses (FRICREG_EINVAL, led by who) elements beside a contact whose bound is > 0. */
+int fr_elements_check_contacts(fricreg_structure *s, const char *who);
 
 /* energy.c */
 void fr_energy_reset(fricreg_structure *s);

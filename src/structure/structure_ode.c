@@ -207,6 +207,10 @@ int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, d
                        "run_ode: integrator %s is fricreg_sim's; a structure has its "
                        "own central difference (fricreg_structure_step)",
                        integ->name);
+    if (s->el.me > 0) /* a slider's commit needs accepted steps GSL's stages do not show */
+        return fr_fail(s, FRICREG_EINVAL,
+                       "run_ode: the structure has Jenkins elements, which only "
+                       "fricreg_structure_step's schemes integrate");
     if (!isfinite(dt) || !isfinite(rtol) || !isfinite(atol) || !isfinite(t_end))
         return fr_fail(s, FRICREG_ENONFINITE, "run_ode: dt, rtol, atol or t_end not finite");
     if (!(dt > 0.0) || rtol < 0.0 || atol < 0.0)

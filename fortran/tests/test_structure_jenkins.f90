@@ -1,0 +1,58 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
+! test_structure_jenkins.f90 — Jenkins elements through type(fricreg_structure) (set_jenkins,
+! get_jenkins_state):
+!   - one mass (2.385 kg) on 217.3 N/m and a stuck element (kt 200 N/m, mu N 1e30 N) under a
+!     constant load P = -0.731 x 2.385 N: the spring 417.3 N/m, whose average-acceleration
+!     Newmark solution is u_n = (P/k)(1 - cos(W n dt)), W = (2/dt) atan(w dt/2): at dt = 0.01 s,
+!     u(1.37 s) = -0.00113279590437900 m (tests/cli.sh's), the element's force kt u;
+!   - the element slipping (mu N = 0.05 N): it dissipates, and the energy balance closes;
+!   - Fortran's size checks (FRICREG_ESIZE naming the array) and C's refusals (kt <= 0).
+program test_structure_jenkins
+  use fricreg
+  use ftest
+  implicit none
+  type(fricreg_structure) :: st
+  real(c_double) :: u(1), f(1), w(1), D(1), D2(2), residual, input, jenkins
+  real(c_double), parameter :: Je(1, 1) = reshape([1.0_c_double], [1, 1])
+
+  call check_status(st%create(1, 1), FRICREG_OK, 'create 1, 1')
+  call check_status(st%set_mass(reshape([2.385_c_double], [1, 1])), FRICREG_OK, 'set_mass')
+  call check_status(st%set_stiffness(reshape([217.3_c_double], [1, 1])), FRICREG_OK, &
+                    'set_stiffness')
+  call check_status(st%set_contacts(Je), FRICREG_OK, 'set_contacts')
+  call check_status(st%set_bounds([0.0_c_double]), FRICREG_OK, 'set_bounds 0')
+  call check_status(st%set_load([-0.731_c_double * 2.385_c_double]), FRICREG_OK, 'set_load')
+
+  ! ---- stuck: the spring kt ----------------------------------------------------------------
+  call check_status(st%set_jenkins(Je, [200.0_c_double], [1e30_c_double]), FRICREG_OK, &
+                    'set_jenkins stuck')
+  call check_status(st%run(0.01_c_double, 1.37_c_double), FRICREG_OK, 'run stuck')
+  call check_status(st%get_state(u=u), FRICREG_OK, 'get_state')
+  call check_close(u(1), -0.00113279590437900_c_double, 2e-15_c_double, 'u(1.37) closed form')
+  call check_status(st%get_jenkins_state(f=f, w=w, D=D), FRICREG_OK, 'get_jenkins_state')
+  call check_close(f(1), 200.0_c_double * u(1), 1e-15_c_double, 'f = kt u')
+  call check(w(1) == 0.0_c_double .and. D(1) == 0.0_c_double, 'the slider did not move')
+
+  ! ---- slipping: the elements dissipate, the balance closes ----------------------------------
+  call check_status(st%set_jenkins(Je, [200.0_c_double], [0.05_c_double]), FRICREG_OK, &
+                    'set_jenkins slipping')
+  call check_status(st%set_initial([0.0_c_double], [0.0_c_double]), FRICREG_OK, 'set_initial')
+  call check_status(st%run(0.01_c_double, 1.37_c_double), FRICREG_OK, 'run slipping')
+  call check_status(st%get_jenkins_state(D=D), FRICREG_OK, 'get_jenkins_state D')
+  call check_status(st%get_value(FRICREG_SVALUE_JENKINS, jenkins), FRICREG_OK, 'jenkins value')
+  call check_status(st%get_value(FRICREG_SVALUE_RESIDUAL, residual), FRICREG_OK, 'residual')
+  call check_status(st%get_value(FRICREG_SVALUE_INPUT, input), FRICREG_OK, 'input')
+  call check(D(1) > 0.0_c_double .and. D(1) == jenkins, 'the element dissipated')
+  call check(abs(residual) <= 1e-9_c_double * abs(input), 'the balance closes')
+
+  ! ---- refusals --------------------------------------------------------------------------------
+  call check_status(st%set_jenkins(Je, [200.0_c_double, 1.0_c_double], [0.05_c_double]), &
+                    FRICREG_ESIZE, 'kt of 2 entries')
+  call check(index(st%errmsg(), 'kt') > 0, 'the message names kt')
+  call check_status(st%set_jenkins(Je, [-1.0_c_double], [0.05_c_double]), FRICREG_EINVAL, &
+                    'kt < 0')
+  call check_status(st%get_jenkins_state(f=f, D=D2), FRICREG_ESIZE, &
+                    'f and D differ in size')
+  call check_status(st%get_jenkins_state(), FRICREG_ENULL, 'no output')
+  call finish('test_structure_jenkins')
+end program test_structure_jenkins

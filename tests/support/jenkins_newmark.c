@@ -1,0 +1,101 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* jenkins_newmark.c — the hand-written Newmark reference with Jenkins elements
+ * (jenkins_newmark.h). */
+#include <check.h>
+#include <math.h>
+#include <string.h>
+
+#include <gsl/gsl_linalg.h>
+
+#include "fricreg_jenkins.h"
+#include "jenkins_newmark.h"
+
+#define MAXN JENKINS_MODEL_MAXN
+#define MAXM JENKINS_MODEL_MAXM
+static const double PI = 3.14159265358979323846;
+
+int jenkins_newmark_rms(const struct jenkins_model *s, double omega, int N, int periods,
+                        double *rms, double *prev, double *hist)
+{
+    size_t n = s->n, m = s->m;
+    double dt = 2.0 * PI / omega / N, beta = 0.25, gamma = 0.5;
+    double x[MAXN] = {0}, v[MAXN] = {0}, a[MAXN] = {0}, xn[MAXN], an[MAXN], vn[MAXN];
+    double q[MAXM], f[MAXM], df[MAXM], R[MAXN], Kt[MAXN * MAXN], dx[MAXN];
+    double sum[MAXN] = {0}, qmax[MAXM], qmin[MAXM], xscale = 0.0; /* largest |x| so far */
+    int slips = 1;
+    fricreg_jenkins *jk = NULL;
+    ck_assert_int_eq(fricreg_jenkins_create(1, m, &jk), FRICREG_OK);
+    ck_assert_int_eq(fricreg_jenkins_set_params(jk, m, s->kt, s->mun), FRICREG_OK);
+    gsl_permutation *p = gsl_permutation_alloc(n);
+    for (int step = 1; step <= periods * N; step++) {
+        double t = step * dt, ct = cos(omega * t), st = sin(omega * t);
+        memcpy(xn, x, sizeof x);
+        for (int it = 0;; it++) {
+            ck_assert_int_lt(it, 50);
+            for (size_t i = 0; i < n; i++) {
+                an[i] = (xn[i] - x[i] - dt * v[i]) / (beta * dt * dt) - (0.5 / beta - 1.0) * a[i];
+                vn[i] = v[i] + dt * ((1.0 - gamma) * a[i] + gamma * an[i]);
+            }
+            for (size_t e = 0; e < m; e++) {
+                q[e] = 0.0;
+                for (size_t k = 0; k < n; k++)
+                    q[e] += s->J[e * n + k] * xn[k];
+            }
+            ck_assert_int_eq(fricreg_jenkins_trial(jk, m, q, f, df), FRICREG_OK);
+            double rmax = 0.0;
+            for (size_t i = 0; i < n; i++) {
+                R[i] = -(s->pc[i] * ct + s->ps[i] * st);
+                for (size_t k = 0; k < n; k++) {
+                    R[i] += s->M[i * n + k] * an[k] + s->C[i * n + k] * vn[k] +
+                            s->K[i * n + k] * xn[k];
+                    Kt[i * n + k] = s->M[i * n + k] / (beta * dt * dt) +
+                                    gamma / (beta * dt) * s->C[i * n + k] + s->K[i * n + k];
+                    for (size_t e = 0; e < m; e++)
+                        Kt[i * n + k] += s->J[e * n + i] * df[e] * s->J[e * n + k];
+                }
+                for (size_t e = 0; e < m; e++)
+                    R[i] += s->J[e * n + i] * f[e];
+                rmax = fmax(rmax, fabs(R[i]));
+            }
+            (void)rmax;
+            gsl_matrix_view Kv = gsl_matrix_view_array(Kt, n, n);
+            gsl_vector_view Rv = gsl_vector_view_array(R, n), dv = gsl_vector_view_array(dx, n);
+            int sg;
+            gsl_linalg_LU_decomp(&Kv.matrix, p, &sg);
+            gsl_linalg_LU_solve(&Kv.matrix, p, &Rv.vector, &dv.vector);
+            double dm = 0.0;
+            for (size_t i = 0; i < n; i++) {
+                xn[i] -= dx[i];
+                xscale = fmax(xscale, fabs(xn[i]));
+                dm = fmax(dm, fabs(dx[i]));
+            }
+            if (dm <= 1e-14 * xscale)
+                break;
+        }
+        ck_assert_int_eq(fricreg_jenkins_commit(jk), FRICREG_OK);
+        memcpy(x, xn, sizeof x);
+        memcpy(v, vn, sizeof v);
+        memcpy(a, an, sizeof a);
+        if (hist != NULL)
+            memcpy(hist + (size_t)(step - 1) * n, x, n * sizeof *x);
+        int k = step % N;
+        if (step > (periods - 2) * N) {
+            for (size_t i = 0; i < n; i++)
+                sum[i] += x[i] * x[i];
+            for (size_t e = 0; e < m && step > (periods - 1) * N; e++) {
+                qmax[e] = step == (periods - 1) * N + 1 ? q[e] : fmax(qmax[e], q[e]);
+                qmin[e] = step == (periods - 1) * N + 1 ? q[e] : fmin(qmin[e], q[e]);
+            }
+        }
+        if (k == 0 && step == (periods - 1) * N)
+            for (size_t i = 0; i < n; i++)
+                prev[i] = sqrt(sum[i] / N), sum[i] = 0.0;
+    }
+    for (size_t i = 0; i < n; i++)
+        rms[i] = sqrt(sum[i] / N);
+    for (size_t e = 0; e < m; e++)
+        slips = slips && s->kt[e] * (qmax[e] - qmin[e]) > 2.0 * s->mun[e];
+    gsl_permutation_free(p);
+    fricreg_jenkins_free(jk);
+    return slips;
+}
