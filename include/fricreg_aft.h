@@ -197,9 +197,10 @@ FRICREG_API int fricreg_aft_iwan_sampled(fricreg_aft *aft, size_t ns, const doub
  *  follows u (its memory reset), so the response is periodic from the last opening; without
  *  an opening the bound moves with g, and the periodic state is marched to (up to 16
  *  periods, until the slider repeats to the bit), with the centred slider of the header
- *  comment for a period that sticks throughout or slips one way only (at the periodic state such
- *  a slip has no length: the slider touches the bound, its place a leftover of the start). With kn = 0 and N0 >= 0 it equals
- *  fricreg_aft_jenkins_sampled at mun = mu N0 to the bit. Sampling error O(N^-2), as the
+ *  comment for a period that sticks throughout or slips one way only (at the periodic state
+ *  such a slip has no length: the slider touches the bound, its place a leftover of the
+ *  start). With kn = 0 and N0 >= 0 it equals fricreg_aft_jenkins_sampled at mun = mu N0 to
+ *  the bit. Sampling error O(N^-2), as the
  *  sampled path; fricreg_aft_jenkins_normal_exact is its exact counterpart.
  *
  *  kt     tangential stiffness > 0 (finite), force per unit displacement.
@@ -242,7 +243,8 @@ FRICREG_API int fricreg_aft_jenkins_normal_sampled(fricreg_aft *aft, double kt, 
  *  in closed form. The periodic response: one period from a touchdown when the contact opens;
  *  otherwise marched from the maximum of u with the slider at the positive bound until the
  *  state there repeats to the bit (up to 16 periods); a period with no slip, or slips one way
- *  only, takes the centred slider w = (max u + min u)/2 where it keeps |f| <= mu N throughout (else the marched one).
+ *  only, takes the centred slider w = (max u + min u)/2 where it keeps |f| <= mu N
+ *  throughout (else the marched one).
  *  With kn = 0 and N0 >= 0 it is fricreg_aft_jenkins_exact at mun = mu N0 (to rounding).
  *
  *  The Jacobian is exact (f and N are continuous at the switch points, whose motion adds

@@ -3,9 +3,9 @@
  * \file
  * fricreg_hb.h — harmonic balance (HB) for the periodic steady state of a linear structure with
  * 1-D Jenkins or Iwan elements (fricreg_hb_set_iwan) under harmonic excitation, at one frequency
- * or along a branch in the excitation frequency by pseudo-arclength continuation. Beyond the paper: the
- * frequency-domain driver of "joints" (docs/joints.md, section Harmonic balance), on the exact
- * AFT of fricreg_aft.h. After M. Krack and J. Gross, "Harmonic Balance for Nonlinear Vibration
+ * or along a branch in the excitation frequency by pseudo-arclength continuation. Beyond the
+ * paper: the frequency-domain driver of "joints" (docs/joints.md, section Harmonic balance), on
+ * the exact AFT of fricreg_aft.h. After M. Krack and J. Gross, "Harmonic Balance for Nonlinear Vibration
  * Problems", Springer 2019 (Ch. 2 the method, Ch. 4 the condensation on the nonlinear
  * coordinates, Ch. 5 the continuation).
  *

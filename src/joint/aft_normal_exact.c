@@ -22,9 +22,9 @@
  * until the state at the start repeats to the bit (at most MAX_PERIODS): a period that slips
  * both ways ends on a slip whose end is a fixed root, so the state repeats from the second
  * period. A period with no slip, or slips one way only (which at the periodic state have no
- * length: the slider touches the bound), takes the centred slider w = (max u + min u)/2 where it holds (the margins
- * c_s <= 0 at their maxima, the sign changes of v_s), as the sampled path does; with kn = 0 this
- * is fricreg_aft_jenkins_exact at mun = mu N0.
+ * length: the slider touches the bound), takes the centred slider w = (max u + min u)/2 where
+ * it holds (the margins c_s <= 0 at their maxima, the sign changes of v_s), as the sampled path
+ * does; with kn = 0 this is fricreg_aft_jenkins_exact at mun = mu N0.
  *
  * The Jacobian. f and N are continuous at every switch point, so the switch points' motion adds
  * nothing: the Jacobian is the integral of the pointwise derivatives. Slip s: ∂f/∂g_j =
