@@ -218,6 +218,41 @@ START_TEST(against_the_sampled_path)
 }
 END_TEST
 
+/* A march that starts on a reversal of u (the maximum) with g following u: rounding put the
+ * start a hair past the slider velocity's sign change, and the slip went on through the
+ * decreasing branch (f0 0.60 where the sampled path gives -0.093). The slip now stops at
+ * once where its first arc already has the velocity against it. Against the sampled path at
+ * N = 2^16 within the force scale times 2 pi/N, as the sweep. */
+START_TEST(slip_starting_on_a_reversal)
+{
+    const double kt = 0.95789016068814814, mu = 0.8812804789660873, n0 = 0.77750149684841796,
+                 kn = 0.07378712206789606;
+    const double u[11] = {0,
+                          -0.69712608666025377,
+                          0.10287065040453836,
+                          0.3745257784028192,
+                          0.27525961427418189,
+                          -0.26979934762688323,
+                          -0.15405492223988049,
+                          0,
+                          0.17424074093543029,
+                          -0.18025088197563349,
+                          -0.014503629807306906};
+    double g[11], f[11], nf[11], fs[11], nfs[11], scale = kt + mu * (n0 + 4.0 * kn);
+    memcpy(g, u, sizeof g);
+    g[0] = -0.0065336371802415805;
+    fricreg_aft *a = make(5, 1 << 16);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, kt, mu, n0, kn, 11, u, g, f, nf, NULL),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(a, kt, mu, n0, kn, 11, u, g, fs, nfs, NULL),
+                     FRICREG_OK);
+    for (int i = 0; i < 11; i++)
+        ck_assert_msg(fabs(f[i] - fs[i]) < scale * 2.0 * PI / (1 << 16),
+                      "f[%d] = %.12g, sampled %.12g", i, f[i], fs[i]);
+    fricreg_aft_free(a);
+}
+END_TEST
+
 /* Central differences of f and N in u and g against the Jacobian. */
 static void check_jacobian(fricreg_aft *a, double kt, double mu, double n0, double kn,
                            const double *u, const double *g)
@@ -346,6 +381,7 @@ int main(void)
     tcase_add_test(tc, open_throughout_and_no_friction);
     tcase_add_test(tc, against_the_time_domain_element);
     tcase_add_test(tc, against_the_sampled_path);
+    tcase_add_test(tc, slip_starting_on_a_reversal);
     tcase_add_test(tc, jacobian_against_differences);
     tcase_add_test(tc, outputs_may_alias_inputs);
     tcase_add_test(tc, bad_input);

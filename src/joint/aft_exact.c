@@ -164,12 +164,18 @@ static double onset_gap(double th, void *params)
 /* GSL's Brent for the root of co(θ) − target in the bracket [*lo, *hi] (a sign change), to a
  * width of 4 DBL_EPSILON |θ| (at most 100 iterations: Brent's guarantee is about
  * 4 log2(2 pi/eps) evaluations); the final bracket into *lo, *hi. The function is finite
- * (inputs checked) and the bracket valid, so GSL has nothing to report to its error handler. */
+ * (inputs checked) and the bracket is checked to straddle 0 with this very function, so GSL
+ * has nothing to report to its error handler. */
 static double brent_root(fricreg_aft *a, const double *co, double target, double *lo, double *hi)
 {
     struct onset_probe p = {a->H, co, target};
     gsl_function F = {onset_gap, &p};
-    double th = 0.5 * (*lo + *hi);
+    double th = 0.5 * (*lo + *hi), flo = onset_gap(*lo, &p), fhi = onset_gap(*hi, &p);
+    /* a bracket decided by values computed another way (the grid's rotated angles) may not
+     * straddle 0 here by rounding: an end is then a root to rounding, and GSL, which would
+     * call its error handler, is not asked */
+    if (!(flo * fhi < 0.0))
+        return fabs(flo) <= fabs(fhi) ? *lo : *hi;
     if (gsl_root_fsolver_set(a->brent, &F, *lo, *hi) == GSL_SUCCESS)
         for (int it = 0; it < 100; it++) {
             if (gsl_root_fsolver_iterate(a->brent) != GSL_SUCCESS)

@@ -198,8 +198,13 @@ static void period(struct march *s, struct state *st, double th0)
             th = t;
         } else {
             const struct changes *v = &s->v[st->dir > 0 ? 0 : 1];
-            double t_open = next_change(&s->p, -1, th, &k),
-                   t_stop = next_change(v, -st->dir, th, &k);
+            /* the slip stops at the next sign change of v against dir, or at once where the
+             * arc it starts on already has v against dir (a start on a sign change, which
+             * rounding may put on either side of it) */
+            next_change(v, 0, th, &k);
+            int arc = v->m > 0 ? -v->d[k] : v->sign;
+            double t_open = next_change(&s->p, -1, th, &k);
+            double t_stop = st->dir * arc < 0 ? th : next_change(v, -st->dir, th, &k);
             double t = fmin(fmin(t_open, t_stop), the);
             if (t > th)
                 add_slip(s, st->dir, th, t);
