@@ -9,7 +9,11 @@
  * Cost: CPU time per evaluation, with and without the Jacobian, of the exact AFT at H = 7 and
  * of the sampled AFT at H = 7 and N = 2^5 … 2^12, on u with all seven harmonics
  * (a_h = 1.3/h^2, b_h = −0.4/h^2: two to four reversals), each the median of 21 timings of
- * REPS evaluations, and the ratio sampled/exact. Prints the two tables as Markdown. */
+ * REPS evaluations, and the ratio sampled/exact.
+ * Lift-off cost: the same for fricreg_aft_jenkins_normal_exact against _sampled at H = 7 and
+ * N = 2^8, 2^10 (kt = 2.385, mu = 0.3, kn = 1.7, u as above, g with a_h = 0.8/h^2,
+ * b_h = 0.3/h^2), with N0 = 0.5 (the contact opens over part of the period) and N0 = 3 (closed,
+ * the bound moving). Prints the three tables as Markdown. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -98,9 +102,57 @@ static void cost_table(void)
     }
 }
 
+static double per_eval_normal(fricreg_aft *a, int sampled, int with_jac, double n0, const double *u,
+                              const double *g)
+{
+    double t[TIMINGS], f[15], nf[15], jac[900];
+    for (int k = 0; k < TIMINGS; k++) {
+        double t0 = bench_cpu_seconds();
+        for (int r = 0; r < REPS; r++) {
+            int st = sampled ? fricreg_aft_jenkins_normal_sampled(a, KT, 0.3, n0, 1.7, 15, u, g, f,
+                                                                  nf, with_jac ? jac : NULL)
+                             : fricreg_aft_jenkins_normal_exact(a, KT, 0.3, n0, 1.7, 15, u, g, f,
+                                                                nf, with_jac ? jac : NULL);
+            if (st != FRICREG_OK) {
+                fprintf(stderr, "AFT failed: %s\n", fricreg_aft_errmsg(a));
+                exit(1);
+            }
+        }
+        t[k] = (bench_cpu_seconds() - t0) / REPS;
+    }
+    return bench_median(t, TIMINGS);
+}
+
+static void normal_cost_table(void)
+{
+    double u[15] = {0.1}, g[15] = {0.0};
+    for (int h = 1; h <= 7; h++) {
+        u[2 * h - 1] = 1.3 / (h * h);
+        u[2 * h] = -0.4 / (h * h);
+        g[2 * h - 1] = 0.8 / (h * h);
+        g[2 * h] = 0.3 / (h * h);
+    }
+    puts("\n| lift-off, H = 7 | N0 | exact f (us) | exact f, Jacobian (us) | sampled f (us) | "
+         "sampled/exact | sampled f, Jacobian (us) | sampled/exact |");
+    puts("|---|---|---|---|---|---|---|---|");
+    const double n0s[2] = {0.5, 3.0};
+    for (int c = 0; c < 2; c++)
+        for (int p = 8; p <= 10; p += 2) {
+            fricreg_aft *a = make(7, (size_t)1 << p);
+            double e0 = per_eval_normal(a, 0, 0, n0s[c], u, g);
+            double e1 = per_eval_normal(a, 0, 1, n0s[c], u, g);
+            double s0 = per_eval_normal(a, 1, 0, n0s[c], u, g);
+            double s1 = per_eval_normal(a, 1, 1, n0s[c], u, g);
+            printf("| N = 2^%d | %.1f | %.1f | %.1f | %.1f | %.2f | %.1f | %.2f |\n", p, n0s[c],
+                   1e6 * e0, 1e6 * e1, 1e6 * s0, s0 / e0, 1e6 * s1, s1 / e1);
+            fricreg_aft_free(a);
+        }
+}
+
 int main(void)
 {
     error_table();
     cost_table();
+    normal_cost_table();
     return 0;
 }

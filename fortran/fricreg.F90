@@ -378,6 +378,7 @@ module fricreg
     procedure :: set_damping => hb_set_damping
     procedure :: set_rayleigh => hb_set_rayleigh
     procedure :: set_elements => hb_set_elements
+    procedure :: set_iwan => hb_set_iwan
     procedure :: set_excitation => hb_set_excitation
     procedure :: set_newton => hb_set_newton
     procedure :: set_continuation => hb_set_continuation
@@ -3103,6 +3104,25 @@ contains
     if (status == FRICREG_OK) status = self%record(fricreg_hb_set_elements(self%ptr, self%m, &
                                                      self%n, transpose(J), kt, mun))
   end function hb_set_elements
+
+  !> Iwan elements instead: J(m, ndof) as set_elements; element i's ns sliders have the
+  !> stiffnesses k(:, i) > 0 and slip forces phi(:, i) >= 0, k and phi (ns, m) (C's row-major
+  !> k[m ns], the same numbers); set_elements is the case ns = 1 and each replaces the other.
+  !> FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_EINVAL; FRICREG_ENOMEM.
+  function hb_set_iwan(self, J, k, phi) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    real(c_double), intent(in) :: J(:, :)
+    real(c_double), intent(in), contiguous :: k(:, :), phi(:, :)
+    integer(c_int) :: status
+    status = self%hb_shape('set_iwan', 'J', shape(J), self%m, self%n)
+    if (status == FRICREG_OK) status = self%hb_shape('set_iwan', 'k', shape(k), &
+                                                     int(size(k, 1), c_size_t), self%m)
+    if (status == FRICREG_OK) status = self%hb_shape('set_iwan', 'phi', shape(phi), &
+                                                     int(size(k, 1), c_size_t), self%m)
+    if (status == FRICREG_OK) status = self%record(fricreg_hb_set_iwan(self%ptr, self%m, &
+                                                     self%n, transpose(J), &
+                                                     int(size(k, 1), c_size_t), k, phi))
+  end function hb_set_iwan
 
   !> The excitation of the fundamental, p(t) = pc cos(Omega t) + ps sin(Omega t): pc(ndof),
   !> ps(ndof), force units. FRICREG_ESIZE; FRICREG_ENONFINITE.

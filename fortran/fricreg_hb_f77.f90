@@ -17,6 +17,7 @@
 !   FRHBMF(H, NDOF, A, STAT), FRHBKF, FRHBCF          _set_mass, _set_stiffness, _set_damping
 !   FRHBCA(H, A0, A1, STAT)                           _set_rayleigh
 !   FRHBJF(H, M, NDOF, J, KT, MUN, STAT)              _set_elements (given J transposed)
+!   FRHBIW(H, M, NDOF, J, NS, K, PHI, STAT)           _set_iwan (J transposed, K(NS, M))
 !   FRHBPF(H, NDOF, PC, PS, STAT)                     _set_excitation
 !   FRHBNT(H, TOL, MAXIT, STAT)                       _set_newton
 !   FRHBCT(H, DS, DSMIN, DSMAX, MAXPT, STAT)          _set_continuation
@@ -130,6 +131,36 @@ subroutine frhbjf(h, m, ndof, j, kt, mun, stat)
   stat = int(fricreg_hb_set_elements(fricreg_handle_to_ptr(h), int(m, c_size_t), &
                                      int(ndof, c_size_t), jt, kt, mun))
 end subroutine frhbjf
+
+!> FRHBIW(H, M, NDOF, J, NS, K, PHI, STAT): Iwan elements instead, J(M, NDOF) as FRHBJF,
+!> element I's NS sliders the stiffnesses K(1:NS, I) > 0 and slip forces PHI(1:NS, I) >= 0
+!> (C's row-major K[M NS], the same numbers). FRHBJF is the case NS = 1.
+subroutine frhbiw(h, m, ndof, j, ns, k, phi, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m, ndof, ns
+  double precision, intent(in) :: j(max(m, 0), *), k(*), phi(*)
+  integer, intent(out) :: stat
+  double precision, allocatable :: jt(:, :)
+  integer :: mm, nn, alloc
+  ! Sizes that cannot be the driver's copy nothing: C answers FRICREG_ESIZE.
+  mm = max(m, 0)
+  nn = max(ndof, 0)
+  if (ns < 1) then ! would wrap into size_t
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  allocate (jt(nn, mm), stat=alloc)
+  if (alloc /= 0) then
+    stat = int(FRICREG_ENOMEM)
+    return
+  end if
+  if (mm > 0 .and. nn > 0) jt = transpose(j(1:mm, 1:nn))
+  stat = int(fricreg_hb_set_iwan(fricreg_handle_to_ptr(h), int(m, c_size_t), &
+                                 int(ndof, c_size_t), jt, int(ns, c_size_t), k, phi))
+end subroutine frhbiw
 
 !> FRHBPF(H, NDOF, PC, PS, STAT): the excitation PC(NDOF) cos(OMEGA t) + PS(NDOF)
 !> sin(OMEGA t), force units.

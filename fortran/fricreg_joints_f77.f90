@@ -40,6 +40,7 @@
 !   FRAFJE(H, KT, MUN, NC, U, F, JAC, STAT)          _jenkins_exact
 !   FRAFJS(H, KT, MUN, NC, U, F, JAC, STAT)          _jenkins_sampled
 !   FRAFJN(H, KT, MU, N0, KN, NC, U, G, F, NF, JAC, STAT)  _jenkins_normal_sampled
+!   FRAFNE(H, KT, MU, N0, KN, NC, U, G, F, NF, JAC, STAT)  _jenkins_normal_exact
 !   FRAFIE(H, NS, K, PHI, NC, U, F, JAC, STAT)       _iwan_exact
 !   FRAFIS(H, NS, K, PHI, NC, U, F, JAC, STAT)       _iwan_sampled
 !   FRAFER(H, CODE, MSG, STAT)                       _errcode, _errmsg
@@ -380,6 +381,22 @@ subroutine frafjn(h, kt, mu, n0, kn, nc, u, g, f, nf, jac, stat)
                                                 int(nc, c_size_t), u, g, f, nf, jac))
   if (stat == FRICREG_OK) call fricreg_transpose(jac, 2 * int(nc, c_size_t))
 end subroutine frafjn
+
+!> FRAFNE(H, KT, MU, N0, KN, NC, U, G, F, NF, JAC, STAT): the exact AFT of one Jenkins
+!> element under normal load with lift-off, as FRAFJN (same arguments and layouts) without
+!> sampling error (the workspace may have NSAMP = 0).
+subroutine frafne(h, kt, mu, n0, kn, nc, u, g, f, nf, jac, stat)
+  use fricreg_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  double precision, intent(in) :: kt, mu, n0, kn, u(*), g(*)
+  integer, intent(in) :: nc
+  double precision, intent(inout) :: f(*), nf(*), jac(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_aft_jenkins_normal_exact(fricreg_handle_to_ptr(h), kt, mu, n0, kn, &
+                                              int(nc, c_size_t), u, g, f, nf, jac))
+  if (stat == FRICREG_OK) call fricreg_transpose(jac, 2 * int(nc, c_size_t))
+end subroutine frafne
 
 !> FRAFIE(H, NS, K, PHI, NC, U, F, JAC, STAT): exact AFT of one Iwan element of NS sliders
 !> K(NS) > 0, PHI(NS) >= 0, as FRAFJE.

@@ -56,8 +56,8 @@
  *     the DFT. The sampled path is the one to extend to laws without a closed form (a
  *     velocity-only law of fricreg.h needs only f(u'(θ)) at the samples); here it serves the
  *     Jenkins and Iwan elements, beside the exact path, for comparison.
- * Lift-off (a normal displacement): the sampled path only, fricreg_aft_jenkins_normal_sampled;
- * 2-D elements: neither path yet.
+ * Lift-off (a normal displacement): both paths, fricreg_aft_jenkins_normal_exact and
+ * fricreg_aft_jenkins_normal_sampled; 2-D elements: neither path yet.
  *
  * One object for both paths, with the harmonics H and the samples N fixed at create: it holds
  * every buffer an evaluation needs (the companion matrix, the roots, the pieces, the samples,
@@ -197,9 +197,11 @@ FRICREG_API int fricreg_aft_iwan_sampled(fricreg_aft *aft, size_t ns, const doub
  *  follows u (its memory reset), so the response is periodic from the last opening; without
  *  an opening the bound moves with g, and the periodic state is marched to (up to 16
  *  periods, until the slider repeats to the bit), with the centred slider of the header
- *  comment for a period that sticks throughout. With kn = 0 and N0 >= 0 it equals
- *  fricreg_aft_jenkins_sampled at mun = mu N0 to the bit. Sampling error O(N^-2), as the
- *  sampled path; the exact path does not take a normal displacement yet.
+ *  comment for a period that sticks throughout or slips one way only (at the periodic state
+ *  such a slip has no length: the slider touches the bound, its place a leftover of the
+ *  start). With kn = 0 and N0 >= 0 it equals fricreg_aft_jenkins_sampled at mun = mu N0 to
+ *  the bit. Sampling error O(N^-2), as the
+ *  sampled path; fricreg_aft_jenkins_normal_exact is its exact counterpart.
  *
  *  kt     tangential stiffness > 0 (finite), force per unit displacement.
  *  mu     friction coefficient >= 0 (finite), nondimensional.
@@ -226,6 +228,45 @@ FRICREG_API int fricreg_aft_jenkins_normal_sampled(fricreg_aft *aft, double kt, 
                                                    double n0, double kn, size_t n, const double u[],
                                                    const double g[], double f[], double nf[],
                                                    double jac[]);
+
+/** Exact AFT of one 1-D Jenkins element under normal load with lift-off: the function of
+ *  fricreg_aft_jenkins_normal_sampled (same arguments, outputs and layouts, so the two can be
+ *  swapped) without sampling error. With the gap P(θ) = N0 + kn g(θ) and the bound
+ *  mu max(0, P), the period splits into pieces: open (P < 0: f = 0, N = 0; at the touchdown
+ *  the slider takes w = u, the spring unstressed), stick (f = kt (u − w), w constant) and slip
+ *  (f = s mu P, s = ±1, w = u − s mu P/kt). Their switch points are roots of trigonometric
+ *  polynomials of degree H: opening and touchdown P = 0; stick→slip
+ *  s kt (u − w) − mu P = 0; slip→stick where the slider's velocity u' − s mu kn g'/kt changes
+ *  sign. They are found as fricreg_aft_jenkins_exact finds its reversals and onsets (the sign
+ *  changes of u' ± mu kn g'/kt once per call; each onset bracketed between two of them, where
+ *  the margin is monotone, and found by GSL's Brent), and f, N are integrated piece by piece
+ *  in closed form. The periodic response: one period from a touchdown when the contact opens;
+ *  otherwise marched from the maximum of u with the slider at the positive bound until the
+ *  state there repeats to the bit (up to 16 periods); a period with no slip, or slips one way
+ *  only, takes the centred slider w = (max u + min u)/2 where it keeps |f| <= mu N
+ *  throughout (else the marched one).
+ *  With kn = 0 and N0 >= 0 it is fricreg_aft_jenkins_exact at mun = mu N0 (to rounding).
+ *
+ *  The Jacobian is exact (f and N are continuous at the switch points, whose motion adds
+ *  nothing): slip, ∂f/∂g_j = s mu kn φ_j(θ); stick after a slip ended at θw,
+ *  ∂f/∂u_j = kt (φ_j(θ) − φ_j(θw)) and ∂f/∂g_j = s mu kn φ_j(θw); stick after a touchdown at
+ *  θt, ∂f/∂u_j = kt (φ_j(θ) − φ_j(θt)) and ∂f/∂g_j = kt u'(θt) φ_j(θt)/g'(θt) (the touchdown
+ *  moves with g; the sampled path, whose touchdown sits on a sample, has 0 there);
+ *  ∂N/∂g_j = kn φ_j(θ) while closed. φ_j is the basis 1, cos θ, sin θ, cos 2θ, ...
+ *
+ *  Arguments, layouts, units and aliasing as fricreg_aft_jenkins_normal_sampled; the object
+ *  may have N = 0.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if aft, u, g, f or nf is NULL; FRICREG_EINVAL if
+ *  kt <= 0, mu < 0 or kn < 0; FRICREG_ESIZE if n is not 2H + 1; FRICREG_ENONFINITE as
+ *  fricreg_aft_jenkins_normal_sampled; FRICREG_EINTEGRATOR as fricreg_aft_jenkins_exact (the
+ *  outputs then untouched). All inputs are checked before anything is computed or written.
+ *  Cost O(H^2) per sign change (three polynomials) and per piece, O(H^3) where the
+ *  companion matrix is needed; no allocation. Since 1.6. */
+FRICREG_API int fricreg_aft_jenkins_normal_exact(fricreg_aft *aft, double kt, double mu, double n0,
+                                                 double kn, size_t n, const double u[],
+                                                 const double g[], double f[], double nf[],
+                                                 double jac[]);
 
 /** Status of the last failed call on aft. Returns that code, or FRICREG_OK if none (or aft
  *  NULL). A successful call does not clear it. Since 1.6. */

@@ -2,10 +2,10 @@
 /**
  * \file
  * fricreg_hb.h — harmonic balance (HB) for the periodic steady state of a linear structure with
- * 1-D Jenkins elements under harmonic excitation, at one frequency or along a branch in the
- * excitation frequency by pseudo-arclength continuation. Beyond the paper: the
- * frequency-domain driver of "joints" (docs/joints.md, section Harmonic balance), on the exact
- * AFT of fricreg_aft.h. After M. Krack and J. Gross, "Harmonic Balance for Nonlinear Vibration
+ * 1-D Jenkins or Iwan elements (fricreg_hb_set_iwan) under harmonic excitation, at one frequency
+ * or along a branch in the excitation frequency by pseudo-arclength continuation. Beyond the
+ * paper: the frequency-domain driver of "joints" (docs/joints.md, section Harmonic balance), on
+ * the exact AFT of fricreg_aft.h. After M. Krack and J. Gross, "Harmonic Balance for Nonlinear Vibration
  * Problems", Springer 2019 (Ch. 2 the method, Ch. 4 the condensation on the nonlinear
  * coordinates, Ch. 5 the continuation).
  *
@@ -87,6 +87,10 @@ typedef struct fricreg_hb fricreg_hb;
 
 /** Largest number of harmonics H of fricreg_hb_create: the exact AFT's, 40. */
 #define FRICREG_HB_MAX_HARMONICS FRICREG_AFT_MAX_HARMONICS
+
+/** Largest number of sliders per Iwan element of fricreg_hb_set_iwan, 1024 (Segalman's
+ *  discretization at its finest resolution, fricreg_iwan.h, has fewer). */
+#define FRICREG_HB_MAX_SLIDERS 1024
 
 /** Create a harmonic-balance driver for ndof degrees of freedom, m Jenkins elements and the
  *  harmonics 0..H.
@@ -206,6 +210,33 @@ FRICREG_API int fricreg_hb_set_rayleigh(fricreg_hb *hb, double a0, double a1);
  *  changes. Since 1.6. */
 FRICREG_API int fricreg_hb_set_elements(fricreg_hb *hb, size_t m, size_t ndof, const double J[],
                                         const double kt[], const double mun[]);
+
+/** Set Iwan elements instead: element i is ns Jenkins sliders in parallel on row i of J
+ *  (fricreg_iwan.h in 1-D: slider s of stiffness k[ns i + s] and slip force phi[ns i + s]),
+ *  its force the sum of theirs, f_i = sum_s k_s (q_i − w_s) with |k_s (q_i − w_s)| <= phi_s. In
+ *  the residual each element's force coefficients and exact Jacobian come from
+ *  fricreg_aft_iwan_exact (the stabilized hysteresis of fricreg_aft.h, slider by slider).
+ *  fricreg_hb_set_elements is the case ns = 1 (k = kt, phi = mun) and replaces what this sets,
+ *  as this replaces what it set; an Iwan element with ns sliders gives the displacements of ns
+ *  Jenkins elements on ns copies of its row of J. Every element has the same ns (give a slider
+ *  phi = 0 to drop it: it carries nothing).
+ *
+ *  m            must equal the driver's element count.
+ *  ndof         must equal the driver's degrees of freedom.
+ *  J[m ndof]    row-major, as fricreg_hb_set_elements.
+ *  ns           sliders per element, 1 <= ns <= FRICREG_HB_MAX_SLIDERS.
+ *  k[m ns]      row-major (element i's sliders at k[ns i .. ns i + ns − 1]): stiffnesses > 0
+ *               (finite), force per unit displacement.
+ *  phi[m ns]    same layout: slip forces >= 0 (finite), force units.
+ *
+ *  Allocates 2 m ns doubles (the previous set's freed on success).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb, J, k or phi is NULL; FRICREG_ESIZE if m or ndof is
+ *  not the driver's; FRICREG_ENONFINITE if an entry is NaN or infinite; FRICREG_EINVAL if a row
+ *  of J is zero, ns is out of its range, some k <= 0 or phi < 0; FRICREG_ENOMEM. All inputs are
+ *  checked before anything changes, and nothing changes on failure. Since 1.6. */
+FRICREG_API int fricreg_hb_set_iwan(fricreg_hb *hb, size_t m, size_t ndof, const double J[],
+                                    size_t ns, const double k[], const double phi[]);
 
 /** Set the harmonic excitation of the fundamental, p(t) = pc cos Ωt + ps sin Ωt.
  *

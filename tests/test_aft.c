@@ -370,6 +370,29 @@ START_TEST(bad_input)
 }
 END_TEST
 
+/* u = sin 3θ at H = 3 has its reversals on the certifying grid's points (θ = π/6 + kπ/3),
+ * where the grid's rotated angles and a direct evaluation of u' may give zeros of opposite
+ * sign: Brent was handed a bracket that does not straddle 0 and GSL's default handler aborted
+ * the process. The stabilized hysteresis is invariant under a time shift, so with
+ * u = sin 3θ = cos(3θ − π/2) its third harmonic is that of u = cos 3θ rotated:
+ * (fa_3, fb_3) = (−fb_3', fa_3'). */
+START_TEST(reversals_on_grid_points)
+{
+    const double us[7] = {0, 0, 0, 0, 0, 0, 1.0}, uc[7] = {0, 0, 0, 0, 0, 1.0, 0};
+    double fs[7], fc[7], js[49];
+    fricreg_aft *a = make(3, 0);
+    ck_assert_int_eq(fricreg_aft_jenkins_exact(a, 1.0, 0.2, 7, us, fs, js), FRICREG_OK);
+    ck_assert_int_eq(fricreg_aft_jenkins_exact(a, 1.0, 0.2, 7, uc, fc, NULL), FRICREG_OK);
+    ck_assert_double_eq_tol(fs[5], -fc[6], 1e-14);
+    ck_assert_double_eq_tol(fs[6], fc[5], 1e-14);
+    /* and the closed form of single_harmonic_closed_form: kt A/π (T* − sin(2T*)/2),
+     * cos T* = 1 − 2 mun/(kt A) = 0.6 */
+    double ts = acos(0.6);
+    ck_assert_double_eq_tol(fs[6], (ts - 0.5 * sin(2.0 * ts)) / 3.14159265358979323846, 1e-14);
+    fricreg_aft_free(a);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("aft");
@@ -383,6 +406,7 @@ int main(void)
     tcase_add_test(tc, jacobian_against_differences);
     tcase_add_test(tc, iwan_is_the_sum_of_its_sliders);
     tcase_add_test(tc, degenerate_displacements);
+    tcase_add_test(tc, reversals_on_grid_points);
     tcase_add_test(tc, bad_input);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);

@@ -931,6 +931,12 @@ static int w_aft_jenkins_normal_sampled(void)
                                               Z(0, 5), A(1, AFT_U, 5), A(2, AFT_G, 5), OUTD(3),
                                               OUTD(4), OUTD(5));
 }
+static int w_aft_jenkins_normal_exact(void)
+{
+    return fricreg_aft_jenkins_normal_exact(AFT(), D(0, 2.385), D(1, 0.5), D(2, 1.0), D(3, 1.0),
+                                            Z(0, 5), A(1, AFT_U, 5), A(2, AFT_G, 5), OUTD(3),
+                                            OUTD(4), OUTD(5));
+}
 static int w_aft_iwan_exact(void)
 {
     return fricreg_aft_iwan_exact(AFT(), C(0, 3), A(1, AFT_K, 3), A(2, AFT_PHI, 3), Z(0, 5),
@@ -1353,6 +1359,13 @@ static const struct row rows[] = {
     {"fricreg_aft_jenkins_normal_sampled",
      w_aft_jenkins_normal_sampled,
      "0nis",
+     AFT_REC,
+     {HANDLE, DBL(0, "nnniion"), DBL(1, "nnnioon"), DBL(2, "nnnooon"), DBL(3, "nnnioon"),
+      SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnooon"), PTR(2, "0"), ARR(2, "nnooon"), PTR(3, "0"),
+      PTR(4, "0"), PTR(5, "o")}},
+    {"fricreg_aft_jenkins_normal_exact",
+     w_aft_jenkins_normal_exact,
+     "0nist",
      AFT_REC,
      {HANDLE, DBL(0, "nnniion"), DBL(1, "nnnioon"), DBL(2, "nnnooon"), DBL(3, "nnnioon"),
       SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnooon"), PTR(2, "0"), ARR(2, "nnooon"), PTR(3, "0"),

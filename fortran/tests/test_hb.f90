@@ -89,6 +89,13 @@ program test_hb
   call fricreg_hb_free(p)
   call check(all(q2 == qc), 'the type equals C bit for bit')
   call check(abs(q2(2, 1)) + abs(q2(3, 1)) > 0.1_c_double / 4.0_c_double, 'the element slips')
+  ! an Iwan element of one slider is the Jenkins element, to the bit; k and phi are (ns, m)
+  call check_status(chain%set_iwan(J2, reshape([4.0_c_double], [1, 1]), &
+                                   reshape([0.1_c_double], [1, 1])), FRICREG_OK, 'set_iwan')
+  call check_status(chain%solve(1.1_c_double, qc), FRICREG_OK, 'Iwan solve')
+  call check(all(q2 == qc), 'one slider equals the Jenkins element bit for bit')
+  call check_status(chain%set_iwan(J2, reshape([4.0_c_double, 1.0_c_double], [2, 1]), &
+                                   reshape([0.1_c_double], [1, 1])), FRICREG_ESIZE, 'phi (1, 1)')
   call chain%destroy()
   call finish('test_hb')
 end program test_hb

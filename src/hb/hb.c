@@ -36,6 +36,7 @@ int fricreg_hb_create(size_t ndof, size_t m, int harmonics, fricreg_hb **out)
                        .H = harmonics,
                        .nc = nc,
                        .nq = nq,
+                       .ns = 1,
                        .tol = 1e-10,
                        .max_iter = 50,
                        .ds0 = 0.02,
@@ -106,6 +107,7 @@ void fricreg_hb_free(fricreg_hb *hb)
     free(hb->perm2);
     free(hb->pts);
     fricreg_aft_free(hb->aft);
+    free(hb->sk);
     fr_hb_sparse_free(hb);
     fr_cholmod_finish(&hb->cc);
     free(hb);
@@ -197,6 +199,42 @@ int fricreg_hb_set_rayleigh(fricreg_hb *hb, double a0, double a1)
     return FRICREG_OK;
 }
 
+/* The checks set_elements and set_iwan share: the sizes and J (finite, no zero row). */
+static int check_rows(fricreg_hb *hb, const char *fn, size_t m, size_t ndof, const double *J)
+{
+    if (m != hb->m)
+        return fr_fail(hb, FRICREG_ESIZE, "%s: m = %zu, the driver has %zu", fn, m, hb->m);
+    if (check_ndof(hb, fn, ndof) != FRICREG_OK)
+        return FRICREG_ESIZE;
+    for (size_t i = 0; i < m; i++) {
+        double norm = 0.0;
+        for (size_t k = 0; k < ndof; k++) {
+            if (!isfinite(J[i * ndof + k]))
+                return fr_fail(hb, FRICREG_ENONFINITE, "%s: J(%zu, %zu) = %g", fn, i, k,
+                               J[i * ndof + k]);
+            norm += fabs(J[i * ndof + k]);
+        }
+        if (norm == 0.0)
+            return fr_fail(hb, FRICREG_EINVAL, "%s: row %zu of J is zero", fn, i);
+    }
+    return FRICREG_OK;
+}
+
+/* The sliders' parameters: finite, stiffness > 0, slip force >= 0. */
+static int check_sliders(fricreg_hb *hb, const char *fn, size_t count, const double *k,
+                         const double *phi, const char *kname, const char *pname)
+{
+    for (size_t i = 0; i < count; i++) {
+        if (!isfinite(k[i]) || !isfinite(phi[i]))
+            return fr_fail(hb, FRICREG_ENONFINITE, "%s: %s[%zu] = %g, %s[%zu] = %g", fn, kname, i,
+                           k[i], pname, i, phi[i]);
+        if (!(k[i] > 0.0) || !(phi[i] >= 0.0))
+            return fr_fail(hb, FRICREG_EINVAL, "%s: %s[%zu] = %g must be > 0, %s[%zu] = %g >= 0",
+                           fn, kname, i, k[i], pname, i, phi[i]);
+    }
+    return FRICREG_OK;
+}
+
 int fricreg_hb_set_elements(fricreg_hb *hb, size_t m, size_t ndof, const double J[],
                             const double kt[], const double mun[])
 {
@@ -207,31 +245,50 @@ int fricreg_hb_set_elements(fricreg_hb *hb, size_t m, size_t ndof, const double 
                        J == NULL    ? "J"
                        : kt == NULL ? "kt"
                                     : "mun");
-    if (m != hb->m)
-        return fr_fail(hb, FRICREG_ESIZE, "set_elements: m = %zu, the driver has %zu", m, hb->m);
-    if (check_ndof(hb, "set_elements", ndof) != FRICREG_OK)
-        return FRICREG_ESIZE;
-    for (size_t i = 0; i < m; i++) {
-        double norm = 0.0;
-        for (size_t k = 0; k < ndof; k++) {
-            if (!isfinite(J[i * ndof + k]))
-                return fr_fail(hb, FRICREG_ENONFINITE, "set_elements: J(%zu, %zu) = %g", i, k,
-                               J[i * ndof + k]);
-            norm += fabs(J[i * ndof + k]);
-        }
-        if (norm == 0.0)
-            return fr_fail(hb, FRICREG_EINVAL, "set_elements: row %zu of J is zero", i);
-        if (!isfinite(kt[i]) || !isfinite(mun[i]))
-            return fr_fail(hb, FRICREG_ENONFINITE, "set_elements: kt[%zu] = %g, mun[%zu] = %g", i,
-                           kt[i], i, mun[i]);
-        if (!(kt[i] > 0.0) || !(mun[i] >= 0.0))
-            return fr_fail(hb, FRICREG_EINVAL,
-                           "set_elements: kt[%zu] = %g must be > 0, mun[%zu] = %g >= 0", i, kt[i],
-                           i, mun[i]);
-    }
+    int status = check_rows(hb, "set_elements", m, ndof, J);
+    if (status == FRICREG_OK)
+        status = check_sliders(hb, "set_elements", m, kt, mun, "kt", "mun");
+    if (status != FRICREG_OK)
+        return status;
     memcpy(hb->J, J, m * ndof * sizeof *J);
     memcpy(hb->kt, kt, m * sizeof *kt);
     memcpy(hb->mun, mun, m * sizeof *mun);
+    free(hb->sk); /* Jenkins elements: one slider each, kt and mun */
+    hb->sk = NULL;
+    hb->ns = 1;
+    hb->have_elements = 1;
+    invalidate(hb);
+    return FRICREG_OK;
+}
+
+int fricreg_hb_set_iwan(fricreg_hb *hb, size_t m, size_t ndof, const double J[], size_t ns,
+                        const double k[], const double phi[])
+{
+    static const char fn[] = "set_iwan";
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    if (J == NULL || k == NULL || phi == NULL)
+        return fr_fail(hb, FRICREG_ENULL, "%s: %s is NULL", fn,
+                       J == NULL   ? "J"
+                       : k == NULL ? "k"
+                                   : "phi");
+    int status = check_rows(hb, fn, m, ndof, J);
+    if (status != FRICREG_OK)
+        return status;
+    if (ns < 1 || ns > FRICREG_HB_MAX_SLIDERS)
+        return fr_fail(hb, FRICREG_EINVAL, "%s: ns = %zu sliders, must be in [1, %d]", fn, ns,
+                       FRICREG_HB_MAX_SLIDERS);
+    if ((status = check_sliders(hb, fn, m * ns, k, phi, "k", "phi")) != FRICREG_OK)
+        return status;
+    double *sk = malloc(2 * m * ns * sizeof *sk);
+    if (sk == NULL)
+        return fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for %zu sliders", fn, m * ns);
+    memcpy(sk, k, m * ns * sizeof *sk);
+    memcpy(sk + m * ns, phi, m * ns * sizeof *sk);
+    memcpy(hb->J, J, m * ndof * sizeof *J);
+    free(hb->sk);
+    hb->sk = sk;
+    hb->ns = ns;
     hb->have_elements = 1;
     invalidate(hb);
     return FRICREG_OK;

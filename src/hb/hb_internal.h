@@ -26,6 +26,8 @@ struct fricreg_hb {
     int rayleigh;      /* C = a0 M + a1 K instead of the matrix C */
     double a0, a1;
     double *J, *kt, *mun; /* [m n], [m], [m] */
+    size_t ns;            /* sliders per element: 1 (Jenkins, kt and mun) or set_iwan's */
+    double *sk;           /* set_iwan's [m ns] stiffnesses then [m ns] slip forces; NULL: Jenkins */
     int have_elements;
     double *pc, *ps; /* [n] excitation of the fundamental */
 
@@ -92,6 +94,20 @@ struct fricreg_hb {
 
     struct fr_error err;
 };
+
+/* Element e's sliders: their count, stiffnesses and slip forces (Jenkins: kt[e], mun[e]). */
+static inline size_t fr_hb_sliders(const fricreg_hb *hb, size_t e, const double **k,
+                                   const double **phi)
+{
+    if (hb->sk == NULL) {
+        *k = &hb->kt[e];
+        *phi = &hb->mun[e];
+        return 1;
+    }
+    *k = hb->sk + e * hb->ns;
+    *phi = hb->sk + (hb->m + e) * hb->ns;
+    return hb->ns;
+}
 
 /* Factors D_h(omega) for h = 0..H and forms Y, G, ql (and dG, dql when deriv); keeps them
  * while omega stays. FRICREG_OK or FRICREG_ESINGULAR (message recorded, with fn). */

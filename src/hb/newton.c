@@ -37,9 +37,15 @@ int fr_hb_guess(fricreg_hb *hb, const char *fn, int stuck)
         return FRICREG_OK;
     /* the centred stick: f_h = kt q_h for h >= 1, f_0 = 0 (fricreg_aft.h) */
     memset(hb->jq, 0, hb->m * nc * nc * sizeof(double));
-    for (size_t e = 0; e < hb->m; e++)
+    for (size_t e = 0; e < hb->m; e++) {
+        const double *k, *phi;
+        size_t ns = fr_hb_sliders(hb, e, &k, &phi);
+        double kt = 0.0;
+        for (size_t s = 0; s < ns; s++)
+            kt += k[s];
         for (size_t c = 1; c < nc; c++)
-            hb->jq[e * nc * nc + c * nc + c] = hb->kt[e];
+            hb->jq[e * nc * nc + c * nc + c] = kt;
+    }
     fr_hb_matrix(hb, hb->jq, hb->A, nq);
     return fr_hb_lu_solve(hb, fn, nq, hb->qw, hb->qw);
 }

@@ -6,7 +6,7 @@
  *     R_a = a + sum_e' (Gr fa + Gi fb) − Re ql,      R_b = b + sum_e' (Gr fb − Gi fa) + Im ql
  *
  * and R_0 = q0 + sum_e' G_0 f0 − ql_0 (real). The forces and their exact Jacobians come from
- * fricreg_aft_jenkins_exact, one element at a time. */
+ * fricreg_aft_iwan_exact (a Jenkins element is one slider), one element at a time. */
 #include <math.h>
 #include <string.h>
 
@@ -48,8 +48,10 @@ int fr_hb_residual(fricreg_hb *hb, const char *fn, const double *q, double *R, i
 {
     size_t nc = hb->nc;
     for (size_t e = 0; e < hb->m; e++) {
-        int status = fricreg_aft_jenkins_exact(hb->aft, hb->kt[e], hb->mun[e], nc, q + e * nc,
-                                               hb->fq + e * nc, jac ? hb->jq + e * nc * nc : NULL);
+        const double *k, *phi;
+        size_t ns = fr_hb_sliders(hb, e, &k, &phi);
+        int status = fricreg_aft_iwan_exact(hb->aft, ns, k, phi, nc, q + e * nc, hb->fq + e * nc,
+                                            jac ? hb->jq + e * nc * nc : NULL);
         if (status != FRICREG_OK)
             return fr_fail(hb, status, "%s: the AFT of element %zu failed: %s", fn, e,
                            fricreg_aft_errmsg(hb->aft));

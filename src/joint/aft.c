@@ -69,9 +69,9 @@ int fricreg_aft_create(int harmonics, size_t samples, fricreg_aft **out)
     a->roots = malloc(8 * H * sizeof(double));
     a->ws.nc = 2 * H;
     a->ws.matrix = malloc(4 * H * H * sizeof(double));
-    a->cand = malloc(6 * H * sizeof(double));
-    a->rdir = malloc(2 * H * sizeof(int));
-    a->cm = malloc((2 * nc + nc * nc + 2 * nc) * sizeof(double));
+    a->cand = malloc(12 * H * sizeof(double));
+    a->rdir = malloc(8 * H * sizeof(int));
+    a->cm = malloc((2 * nc + nc * nc + 2 * nc + 6 * nc) * sizeof(double));
     a->fout = malloc((nc + nc * nc) * sizeof(double));
     /* gsl_root_fsolver_alloc's two mallocs, done here: GSL would report a failed one to its
      * error handler (as in exact.c) */
@@ -97,6 +97,9 @@ int fricreg_aft_create(int harmonics, size_t samples, fricreg_aft **out)
     a->gram = a->sm + nc;
     a->phw = a->gram + nc * nc;
     a->dcoef = a->phw + nc;
+    a->ncoef = a->dcoef + nc;
+    a->nroot = a->cand + 6 * H;
+    a->ndir = a->rdir + 2 * H;
     a->jout = a->fout + nc;
     fr_aft_half_angle_table(a, harmonics);
     if (N != 0) {
@@ -267,6 +270,22 @@ int fricreg_aft_jenkins_normal_sampled(fricreg_aft *aft, double kt, double mu, d
         return status;
     fr_aft_sampled_normal(aft, kt, mu, n0, kn, u, g, f, nf, jac);
     return FRICREG_OK;
+}
+
+int fricreg_aft_jenkins_normal_exact(fricreg_aft *aft, double kt, double mu, double n0, double kn,
+                                     size_t n, const double u[], const double g[], double f[],
+                                     double nf[], double jac[])
+{
+    static const char fn[] = "jenkins_normal_exact";
+    if (aft == NULL)
+        return FRICREG_ENULL;
+    double unit = 1.0; /* check() reads a slider bound: the normal law is checked apart */
+    int status = check(aft, fn, 0, 1, &kt, &unit, n, u, f);
+    if (status == FRICREG_OK)
+        status = check_normal(aft, fn, mu, n0, kn, g, nf);
+    if (status != FRICREG_OK)
+        return status;
+    return fr_aft_exact_normal(aft, fn, kt, mu, n0, kn, u, g, f, nf, jac);
 }
 
 int fricreg_aft_errcode(const fricreg_aft *aft)

@@ -63,9 +63,14 @@ static double trig_eval_cs(int H, const double *co, double c1, double s1, double
     return g;
 }
 
-static double trig_eval(int H, const double *co, double th, double *dg)
+double fr_aft_trig_eval(int H, const double *co, double th, double *dg)
 {
     return trig_eval_cs(H, co, cos(th), sin(th), dg);
+}
+
+static double trig_eval(int H, const double *co, double th, double *dg)
+{
+    return fr_aft_trig_eval(H, co, th, dg);
 }
 
 /* Newton on g from th, at most three steps, each kept if it stays in [lo, hi] and lowers |g|. */
@@ -159,12 +164,18 @@ static double onset_gap(double th, void *params)
 /* GSL's Brent for the root of co(θ) − target in the bracket [*lo, *hi] (a sign change), to a
  * width of 4 DBL_EPSILON |θ| (at most 100 iterations: Brent's guarantee is about
  * 4 log2(2 pi/eps) evaluations); the final bracket into *lo, *hi. The function is finite
- * (inputs checked) and the bracket valid, so GSL has nothing to report to its error handler. */
+ * (inputs checked) and the bracket is checked to straddle 0 with this very function, so GSL
+ * has nothing to report to its error handler. */
 static double brent_root(fricreg_aft *a, const double *co, double target, double *lo, double *hi)
 {
     struct onset_probe p = {a->H, co, target};
     gsl_function F = {onset_gap, &p};
-    double th = 0.5 * (*lo + *hi);
+    double th = 0.5 * (*lo + *hi), flo = onset_gap(*lo, &p), fhi = onset_gap(*hi, &p);
+    /* a bracket decided by values computed another way (the grid's rotated angles) may not
+     * straddle 0 here by rounding: an end is then a root to rounding, and GSL, which would
+     * call its error handler, is not asked */
+    if (!(flo * fhi < 0.0))
+        return fabs(flo) <= fabs(fhi) ? *lo : *hi;
     if (gsl_root_fsolver_set(a->brent, &F, *lo, *hi) == GSL_SUCCESS)
         for (int it = 0; it < 100; it++) {
             if (gsl_root_fsolver_iterate(a->brent) != GSL_SUCCESS)
@@ -176,6 +187,12 @@ static double brent_root(fricreg_aft *a, const double *co, double target, double
                 break;
         }
     return th;
+}
+
+double fr_aft_root_in(fricreg_aft *a, const double *co, double lo, double hi)
+{
+    double th = brent_root(a, co, 0.0, &lo, &hi);
+    return polish(a->H, co, th, lo, hi);
 }
 
 /* Isolation of the sign changes of g = co (entries of order 1) on a grid, certified by bounds
@@ -294,32 +311,21 @@ static int sign_of(double x)
     return (x > 0.0) - (x < 0.0);
 }
 
-/* Angles of the velocity reversals into a->rev (sorted), the direction after each into
- * a->rdir; their count into *m (0 for a constant u). du: u' scaled, as coefficients. */
-static int reversals(fricreg_aft *a, const char *fn, const double *u, int *m)
+int fr_aft_sign_changes(fricreg_aft *a, const char *fn, const double *co, double *roots, int *dir,
+                        int *m)
 {
     int H = a->H;
-    double *du = a->dcoef, big = 0.0, d;
-    du[0] = 0.0;
-    for (int h = 1; h <= H; h++) {
-        du[2 * h - 1] = h * u[2 * h];
-        du[2 * h] = -h * u[2 * h - 1];
-        big = fmax(big, fmax(fabs(du[2 * h - 1]), fabs(du[2 * h])));
-    }
+    double d;
     *m = 0;
-    if (big == 0.0)
-        return FRICREG_OK;
-    for (int j = 1; j < (int)a->nc; j++)
-        du[j] /= big;
-    int K = isolate_roots(a, du);
+    int K = isolate_roots(a, co);
     if (K < 0) { /* not certified on the grid: every root, by the companion matrix */
-        int nroots = 0, status = trig_roots(a, fn, du, &nroots);
+        int nroots = 0, status = trig_roots(a, fn, co, &nroots);
         if (status != FRICREG_OK)
             return status;
         K = 0;
         for (int k = 0; k < nroots; k++) /* real to first order: |Im theta| below 1e-6 */
             if (a->cim[k] <= 1e-6)
-                a->cand[K++] = polish(H, du, a->cand[k], a->cand[k] - 0.1, a->cand[k] + 0.1);
+                a->cand[K++] = polish(H, co, a->cand[k], a->cand[k] - 0.1, a->cand[k] + 0.1);
     }
     for (int k = 0; k < K; k++) { /* back into [0, 2pi) after the polish */
         a->cand[k] = fmod(a->cand[k], FR_TWO_PI);
@@ -333,33 +339,73 @@ static int reversals(fricreg_aft *a, const char *fn, const double *u, int *m)
             a->cand[kept++] = a->cand[k];
     if (kept > 1 && a->cand[0] + FR_TWO_PI - a->cand[kept - 1] <= 1e-10)
         kept--;
-    if (kept == 0)
-        return fr_fail(a, FRICREG_EINTEGRATOR,
-                       "%s: no velocity reversal found for a non-constant u", fn);
-    /* sign of u' on arc k (from cand[k] to the next); a zero takes the previous arc's */
-    int *sg = a->rdir;
+    /* sign of co on arc k (from cand[k] to the next); a zero takes the previous arc's */
     for (int k = 0; k < kept; k++) {
         double lo = a->cand[k], hi = k + 1 < kept ? a->cand[k + 1] : a->cand[0] + FR_TWO_PI;
-        sg[k] = sign_of(trig_eval(H, du, 0.5 * (lo + hi), &d));
+        dir[k] = sign_of(trig_eval(H, co, 0.5 * (lo + hi), &d));
     }
     for (int pass = 0; pass < 2; pass++)
         for (int k = 0; k < kept; k++)
-            if (sg[k] == 0)
-                sg[k] = sg[(k + kept - 1) % kept];
+            if (dir[k] == 0)
+                dir[k] = dir[(k + kept - 1) % kept];
     for (int k = 0; k < kept; k++)
-        if (sg[k] != 0 && sg[k] != sg[(k + kept - 1) % kept]) {
-            a->rev[*m] = a->cand[k];
-            sg[*m] = sg[k]; /* *m <= k: rdir is written behind its reads */
+        if (dir[k] != 0 && dir[k] != dir[(k + kept - 1) % kept]) {
+            roots[*m] = a->cand[k];
+            dir[*m] = dir[k]; /* *m <= k: dir is written behind its reads */
             (*m)++;
         }
+    return FRICREG_OK;
+}
+
+/* Angles of the velocity reversals into a->rev (sorted), the direction after each into
+ * a->rdir; their count into *m (0 for a constant u). du: u' scaled, as coefficients. */
+static int reversals(fricreg_aft *a, const char *fn, const double *u, int *m)
+{
+    int H = a->H;
+    double *du = a->dcoef, big = 0.0;
+    du[0] = 0.0;
+    for (int h = 1; h <= H; h++) {
+        du[2 * h - 1] = h * u[2 * h];
+        du[2 * h] = -h * u[2 * h - 1];
+        big = fmax(big, fmax(fabs(du[2 * h - 1]), fabs(du[2 * h])));
+    }
+    *m = 0;
+    if (big == 0.0)
+        return FRICREG_OK;
+    for (int j = 1; j < (int)a->nc; j++)
+        du[j] /= big;
+    int status = fr_aft_sign_changes(a, fn, du, a->rev, a->rdir, m);
+    if (status != FRICREG_OK)
+        return status;
     if (*m < 2)
         return fr_fail(a, FRICREG_EINTEGRATOR,
                        "%s: fewer than two velocity reversals found for a non-constant u", fn);
     return FRICREG_OK;
 }
 
+int fr_aft_extremes(fricreg_aft *a, const char *fn, const double *u, double *thmax, double *thmin)
+{
+    int m, status = reversals(a, fn, u, &m);
+    *thmax = *thmin = 0.0;
+    if (status != FRICREG_OK || m == 0)
+        return status;
+    double d, umax = -INFINITY, umin = INFINITY;
+    for (int i = 0; i < m; i++) {
+        double v = trig_eval(a->H, u, a->rev[i], &d);
+        if (v > umax) {
+            umax = v;
+            *thmax = a->rev[i];
+        }
+        if (v < umin) {
+            umin = v;
+            *thmin = a->rev[i];
+        }
+    }
+    return FRICREG_OK;
+}
+
 /* The Gram matrix of the basis over [al, be] into a->gram, and the integrals of cos, sin. */
-static void gram(fricreg_aft *a, double al, double be)
+void fr_aft_gram(fricreg_aft *a, double al, double be)
 {
     int H = a->H, M = 2 * H;
     size_t w = a->nc;
@@ -389,38 +435,38 @@ static void gram(fricreg_aft *a, double al, double be)
 }
 
 /* Weight of coefficient i: 1/(2 pi) for the mean, 1/pi for the harmonics. */
-static double weight(size_t i)
+double fr_aft_weight(size_t i)
 {
     return i == 0 ? 1.0 / FR_TWO_PI : 2.0 / FR_TWO_PI;
 }
 
 /* A stick piece [al, be], f = kt (u − w), the slider stopped at thw. */
-static void add_stick(fricreg_aft *a, double kt, const double *u, double wv, double thw, double al,
+void fr_aft_add_stick(fricreg_aft *a, double kt, const double *u, double wv, double thw, double al,
                       double be, int want_jac)
 {
     size_t w = a->nc;
-    gram(a, al, be);
+    fr_aft_gram(a, al, be);
     const double *G = a->gram;
     for (size_t i = 0; i < w; i++) {
         double s = G[w * i] * (u[0] - wv);
         for (size_t j = 1; j < w; j++)
             s += G[w * i + j] * u[j];
-        a->fout[i] += weight(i) * kt * s;
+        a->fout[i] += fr_aft_weight(i) * kt * s;
     }
     if (!want_jac)
         return;
     fr_aft_basis(a->H, thw, a->phw);
     for (size_t i = 0; i < w; i++)
         for (size_t j = 0; j < w; j++)
-            a->jout[w * i + j] += weight(i) * kt * (G[w * i + j] - a->phw[j] * G[w * i]);
+            a->jout[w * i + j] += fr_aft_weight(i) * kt * (G[w * i + j] - a->phw[j] * G[w * i]);
 }
 
 /* A slip piece [al, be], f = fs constant. */
 static void add_slip(fricreg_aft *a, double fs, double al, double be)
 {
-    gram(a, al, be);
+    fr_aft_gram(a, al, be);
     for (size_t i = 0; i < a->nc; i++)
-        a->fout[i] += weight(i) * fs * a->gram[a->nc * i];
+        a->fout[i] += fr_aft_weight(i) * fs * a->gram[a->nc * i];
 }
 
 /* The angle in [al, be] where u = target: u is monotone there in the direction dir (al, be
@@ -498,11 +544,11 @@ int fr_aft_exact(fricreg_aft *a, const char *fn, size_t ns, const double *k, con
                 be += FR_TWO_PI;
             double target = wv + dir * r, ub = trig_eval(a->H, u, be, &d), th;
             if (dir * (ub - target) <= 0.0) { /* sticks to the next reversal */
-                add_stick(a, kt, u, wv, thw, al, be, want_jac);
+                fr_aft_add_stick(a, kt, u, wv, thw, al, be, want_jac);
                 continue;
             }
             th = slip_onset(a, u, target, dir, al, be);
-            add_stick(a, kt, u, wv, thw, al, th, want_jac);
+            fr_aft_add_stick(a, kt, u, wv, thw, al, th, want_jac);
             add_slip(a, dir * mun, th, be);
             wv = ub - dir * r;
             thw = be;

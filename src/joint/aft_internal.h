@@ -35,6 +35,9 @@ struct fricreg_aft {
     double *gram;                  /* [nc nc] a piece's integrals of phi_i phi_j */
     double *phw;                   /* [nc] the basis at the slider's anchor theta_w */
     double *dcoef; /* [nc] scratch: the coefficients of a trigonometric polynomial */
+    double *nroot; /* [3][2H] lift-off path: sign changes of v+, v-, the gap (aft_normal_exact.c) */
+    int *ndir;     /* [3][2H] the sign after each of them */
+    double *ncoef; /* [6][nc] lift-off path: v+, v-, the gap, a stick margin, copies of u, g */
 
     /* sampled path */
     double *ctab, *stab; /* [N] cos, sin of 2 pi n/N */
@@ -63,6 +66,43 @@ void fr_aft_half_angle_table(fricreg_aft *a, int D);
  * message recorded if GSL's root solver failed. */
 int fr_aft_exact(fricreg_aft *aft, const char *fn, size_t ns, const double *k, const double *phi,
                  const double *u, int want_jac);
+
+/* g(theta) of the trigonometric polynomial co[2H+1], g'(theta) into *dg. */
+double fr_aft_trig_eval(int H, const double *co, double theta, double *dg);
+
+/* The sign changes of the trigonometric polynomial co (not constant, entries of order 1) in
+ * [0, 2pi), sorted, into roots[], the sign of co after each into dir[], their count into *m
+ * (0: co keeps one sign). Grid isolation with GSL's Brent, the companion matrix where the grid
+ * cannot certify (aft_exact.c). FRICREG_OK, or FRICREG_EINTEGRATOR (message recorded). Uses
+ * cand, cim, poly, roots, qre, qim as scratch. */
+int fr_aft_sign_changes(fricreg_aft *a, const char *fn, const double *co, double *roots, int *dir,
+                        int *m);
+
+/* The angles of the global maximum and minimum of u (0 and 0 for a constant u), from its
+ * velocity reversals. FRICREG_OK or FRICREG_EINTEGRATOR (message recorded). */
+int fr_aft_extremes(fricreg_aft *a, const char *fn, const double *u, double *thmax, double *thmin);
+
+/* The root of co in [lo, hi] where co changes sign: GSL's Brent, then Newton's polish. */
+double fr_aft_root_in(fricreg_aft *a, const double *co, double lo, double hi);
+
+/* A piece [al, be]: its Gram matrix G_ij = int phi_i phi_j into a->gram (and int cos, sin
+ * into cm, sm). */
+void fr_aft_gram(fricreg_aft *a, double al, double be);
+
+/* Weight of coefficient i: 1/(2 pi) for the mean, 1/pi for the harmonics. */
+double fr_aft_weight(size_t i);
+
+/* A stick piece [al, be] of f = kt (u - wv), the slider anchored at thw (dw/du_j =
+ * phi_j(thw)), added to fout and, when want_jac, to jout (nc x nc, row stride nc). */
+void fr_aft_add_stick(fricreg_aft *a, double kt, const double *u, double wv, double thw, double al,
+                      double be, int want_jac);
+
+/* Exact AFT of one Jenkins element under normal load with lift-off (aft_normal_exact.c), the
+ * exact counterpart of fr_aft_sampled_normal, same outputs. FRICREG_OK or FRICREG_EINTEGRATOR
+ * (message recorded, outputs untouched). */
+int fr_aft_exact_normal(fricreg_aft *aft, const char *fn, double kt, double mu, double n0,
+                        double kn, const double *u, const double *g, double *f, double *nf,
+                        double *jac);
 
 /* Sampled AFT of the same, into the same buffers. Cannot fail on checked inputs. */
 void fr_aft_sampled(fricreg_aft *aft, size_t ns, const double *k, const double *phi,

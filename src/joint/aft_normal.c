@@ -11,7 +11,8 @@
  * hold at the maximum of u: the march starts there as if slipping (w = u_max − mu N/kt), and
  * periods are marched until the slider at the start repeats to the bit (a period that slips
  * in both directions forgets its start; MAX_PERIODS bounds the march). A period with no slip
- * and no opening sticks throughout, and its state is not unique: the centred slider
+ * and no opening sticks throughout (or slips one way only, which at the periodic state has no
+ * length), and its state is not unique: the centred slider
  * w = (max u + min u)/2 is taken where it holds (as fricreg_aft_jenkins_sampled does, which
  * this function equals to the bit when kn = 0).
  *
@@ -65,7 +66,8 @@ static double step(fricreg_aft *a, double kt, double mu, const double *gap, cons
 }
 
 /* March one period from sample start (exclusive) around to it (inclusive) with the slider
- * *w and anchor *m; returns whether any sample slipped or opened. */
+ * *w and anchor *m; returns the directions slipped (1: positive, 2: negative, 3: both or an
+ * opening). */
 static int period(fricreg_aft *a, double kt, double mu, const double *gap, const double *load,
                   size_t start, double *w, size_t *m)
 {
@@ -73,7 +75,10 @@ static int period(fricreg_aft *a, double kt, double mu, const double *gap, const
     for (size_t i = 1; i <= a->N; i++) {
         size_t n = (start + i) % a->N;
         *w = step(a, kt, mu, gap, load, n, *w, m);
-        moved |= a->ts[n] != kt; /* a slip or an opening */
+        if (a->ts[n] == OPEN)
+            moved = 3;
+        else if (a->ts[n] == 0.0)
+            moved |= a->fs[n] > 0.0 ? 1 : 2;
     }
     return moved;
 }
@@ -107,9 +112,11 @@ static void march(fricreg_aft *a, double kt, double mu, const double *gap, const
         if (w == w0)
             break;
     }
-    if (moved)
+    if (moved == 3)
         return;
-    /* stuck throughout: the centred slider where it holds */
+    /* stuck, or slipping one way only: at the periodic state such a slip has no length (the
+     * slider only touches the bound; a net slip would move it from period to period), and the
+     * slider is a leftover of the start: the centred slider where it holds */
     double wc = 0.5 * (a->us[*nmax] + a->us[*nmin]);
     for (size_t n = 0; n < N; n++)
         if (!(kt * fabs(a->us[n] - wc) <= mu * load[n]))

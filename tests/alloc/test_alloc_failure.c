@@ -1666,6 +1666,42 @@ static const struct script hb_sparse = {
     "hb set_*_csc", 5,    hb_sparse_calls,   0,          0,       hb_open,
     hb_sparse_call, NULL, hb_sparse_observe, hb_errcode, hb_close};
 
+/* Iwan elements: set_iwan twice (the second replaces the first's sliders: its one allocation
+ * made before the old block is freed); the view solves at one frequency. */
+static const char *const hb_iwan_calls[] = {"set_iwan(2 sliders)", "set_iwan(3 sliders)"};
+
+/* create and the dense model (whose setters allocate nothing), no elements yet */
+static int hb_iwan_open(void **obj)
+{
+    const double M[4] = {1.3, 0.0, 0.0, 0.9}, K[4] = {4.2, -1.7, -1.7, 2.385};
+    const double pc[2] = {0.6, 0.0}, ps[2] = {0.0, 0.125};
+    int status = hb_open(obj);
+    if (status == FRICREG_OK && (fricreg_hb_set_mass(*obj, 2, M) != FRICREG_OK ||
+                                 fricreg_hb_set_stiffness(*obj, 2, K) != FRICREG_OK ||
+                                 fricreg_hb_set_rayleigh(*obj, 0.05, 0.01) != FRICREG_OK ||
+                                 fricreg_hb_set_excitation(*obj, 2, pc, ps) != FRICREG_OK))
+        NOTE("a dense setter failed");
+    return status;
+}
+
+static int hb_iwan_call(void *obj, int i, struct view *v)
+{
+    (void)v;
+    const double J[2] = {0.0, 1.0}, k[3] = {1.5, 0.7, 0.4}, phi[3] = {0.25, 0.1, 0.05};
+    return fricreg_hb_set_iwan(obj, 1, 2, J, i == 0 ? 2 : 3, k, phi);
+}
+
+static void hb_iwan_observe(void *obj, struct view *v)
+{
+    double q[7] = {0}; /* a failed call leaves it: the view must read the same */
+    see(v, fricreg_hb_solve(obj, 1.1, 7, NULL, q));
+    see_all(v, q, 7);
+}
+
+static const struct script hb_iwan = {
+    "hb set_iwan", 2,    hb_iwan_calls,   1,          0,       hb_iwan_open,
+    hb_iwan_call,  NULL, hb_iwan_observe, hb_errcode, hb_close};
+
 /* ---- The tests ------------------------------------------------------------------------------- */
 
 START_TEST(test_ctx_create)
@@ -1868,6 +1904,14 @@ START_TEST(test_hb_sparse)
 {
     struct tally t = fail_each_allocation(&hb_sparse);
     ck_assert_int_ge(t.enomem, t.cases - 4);
+}
+END_TEST
+
+/* set_iwan's one allocation fails cleanly: ENOMEM and the sliders as before */
+START_TEST(test_hb_iwan)
+{
+    struct tally t = fail_each_allocation(&hb_iwan);
+    ck_assert_int_eq(t.enomem, t.cases);
 }
 END_TEST
 
@@ -2192,6 +2236,7 @@ static Suite *alloc_suite(void)
     tcase_add_test(drivers, test_exact_solve);
     tcase_add_test(drivers, test_hb_create);
     tcase_add_test(drivers, test_hb_sparse);
+    tcase_add_test(drivers, test_hb_iwan);
     tcase_add_loop_test(drivers, test_structure_run, 0, N_SCHEMES);
     tcase_add_loop_test(drivers, test_structure_jenkins_run, 0, 3);
     suite_add_tcase(s, drivers);

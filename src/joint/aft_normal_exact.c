@@ -1,0 +1,391 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* aft_normal_exact.c — the exact AFT of a 1-D Jenkins element under normal load with lift-off
+ * (fricreg_aft_jenkins_normal_exact): the pieces of the periodic response located as roots of
+ * trigonometric polynomials and integrated in closed form (aft_exact.c's root isolation, Brent
+ * and Gram matrices), the counterpart of aft_normal.c's sampled march.
+ *
+ * With the gap P(θ) = N0 + kn g(θ), the bound is mu max(0, P). Three kinds of piece:
+ *   open   (P < 0): f = 0, N = 0; at the touchdown (P rising through 0) the slider takes w = u,
+ *          the spring unstressed;
+ *   stick  f = kt (u − w), w constant, until the margin c_s = s kt (u − w) − mu P reaches 0
+ *          rising, s = ±1 (then slip s), or P falls through 0 (then open);
+ *   slip s f = s mu P, w = u − s mu P/kt, until the slider's velocity
+ *          v_s = u' − s mu kn g'/kt changes sign against s (then stick), or P falls through 0.
+ * Since c_s' = s kt v_s, c_s is monotone between consecutive sign changes of v_s: each onset is
+ * bracketed in one such arc (the arc where c_s rises and ends positive) and found by GSL's
+ * Brent, as the constant-bound path does between the reversals of u. The sign changes of v+,
+ * v− and P are found once per call (fr_aft_sign_changes).
+ *
+ * The periodic state. With an opening the march starts at a touchdown (memory reset) and one
+ * period is periodic. Without, it starts at the maximum of u with the slider at the positive
+ * bound (w = u − mu P/kt, the constant-bound path's wiping-out state) and periods are marched
+ * until the state at the start repeats to the bit (at most MAX_PERIODS): a period that slips
+ * both ways ends on a slip whose end is a fixed root, so the state repeats from the second
+ * period. A period with no slip, or slips one way only (which at the periodic state have no
+ * length: the slider touches the bound), takes the centred slider w = (max u + min u)/2 where
+ * it holds (the margins c_s <= 0 at their maxima, the sign changes of v_s), as the sampled path
+ * does; with kn = 0 this is fricreg_aft_jenkins_exact at mun = mu N0.
+ *
+ * The Jacobian. f and N are continuous at every switch point, so the switch points' motion adds
+ * nothing: the Jacobian is the integral of the pointwise derivatives. Slip s: ∂f/∂g_j =
+ * s mu kn φ_j. Stick after a slip s ended at θw (v_s(θw) = 0): ∂f/∂u_j = kt (φ_j − φ_j(θw)),
+ * ∂f/∂g_j = s mu kn φ_j(θw). Stick after a touchdown at θt (w = u(θt), θt moving with g by
+ * ∂θt/∂g_j = −φ_j(θt)/g'(θt)): ∂f/∂u_j = kt (φ_j − φ_j(θt)), ∂f/∂g_j = kt u'(θt) φ_j(θt)/g'(θt).
+ * N = P on the closed arcs: ∂N/∂g_j = kn φ_j there. */
+#include <math.h>
+#include <string.h>
+
+#include "aft_internal.h"
+#include "base/fr_math.h"
+
+#define MAX_PERIODS 16 /* periods marched in search of the periodic state without opening */
+
+enum mode { OPEN, STICK, SLIP };
+
+/* The march's state: the mode, the slip direction or the anchor's, the slider, and where it
+ * was anchored (a slip's end, or a touchdown when touch is set). */
+struct state {
+    enum mode mode;
+    int dir, touch;
+    double w, th;
+};
+
+/* A set of sign changes: angles in [0, 2pi), the sign after each, and the sign throughout when
+ * there are none. */
+struct changes {
+    const double *r;
+    const int *d;
+    int m, sign;
+};
+
+struct march {
+    fricreg_aft *a;
+    double kt, mu, n0, kn;
+    const double *u, *g, *gap; /* coefficients (copies), and of P = N0 + kn g */
+    double *cs;                /* coefficients of a margin c_s */
+    struct changes v[2], p;    /* v[0]: v+, v[1]: v-; p: the gap */
+    double *jac;               /* 2nc x 2nc or NULL */
+    int moved;                 /* the period's slips: 1 positive, 2 negative, 3 both */
+};
+
+/* The first sign change of c after th (strictly), with the sign want after it (0: any), as an
+ * absolute angle; its index into *k. INFINITY if none. */
+static double next_change(const struct changes *c, int want, double th, int *k)
+{
+    double base = floor(th / FR_TWO_PI) * FR_TWO_PI, best = INFINITY;
+    for (int i = 0; i < c->m; i++) {
+        if (want != 0 && c->d[i] != want)
+            continue;
+        double t = base + c->r[i];
+        if (!(t > th))
+            t += FR_TWO_PI;
+        if (t < best) {
+            best = t;
+            *k = i;
+        }
+    }
+    return best;
+}
+
+static double eval(const struct march *s, const double *co, double th)
+{
+    double d;
+    return fr_aft_trig_eval(s->a->H, co, th, &d);
+}
+
+/* The margin c_dir = dir kt (u − w) − mu P as coefficients into s->cs. */
+static void margin(struct march *s, int dir, double w)
+{
+    for (size_t j = 0; j < s->a->nc; j++)
+        s->cs[j] = dir * s->kt * s->u[j] - s->mu * s->gap[j];
+    s->cs[0] -= dir * s->kt * w;
+}
+
+/* The first stick→slip onset in direction dir after th and before lim (INFINITY if none): in
+ * the arcs of v_dir where c_dir rises, the first whose end has c_dir > 0. */
+static double onset(struct march *s, int dir, double w, double th, double lim)
+{
+    const struct changes *v = &s->v[dir > 0 ? 0 : 1];
+    margin(s, dir, w);
+    for (double pos = th; pos < lim;) {
+        int k = 0;
+        double t = next_change(v, 0, pos, &k), end = fmin(t, lim);
+        int sg = v->m > 0 ? -v->d[k] : v->sign; /* sign of v on (pos, t) */
+        if (dir * sg > 0 && eval(s, s->cs, end) > 0.0)
+            return eval(s, s->cs, pos) >= 0.0 ? pos : fr_aft_root_in(s->a, s->cs, pos, end);
+        pos = end;
+    }
+    return INFINITY;
+}
+
+/* A stick piece [al, be] of the slider st. */
+static void add_stick(struct march *s, const struct state *st, double al, double be)
+{
+    fricreg_aft *a = s->a;
+    size_t nc = a->nc;
+    fr_aft_add_stick(a, s->kt, s->u, st->w, st->th, al, be, s->jac != NULL);
+    if (s->jac == NULL)
+        return;
+    double c;
+    fr_aft_basis(a->H, st->th, a->phw);
+    if (st->touch) {
+        double du, dg;
+        fr_aft_trig_eval(a->H, s->u, st->th, &du);
+        fr_aft_trig_eval(a->H, s->g, st->th, &dg);
+        c = dg != 0.0 ? s->kt * du / dg : 0.0;
+    } else {
+        c = st->dir * s->mu * s->kn;
+    }
+    for (size_t i = 0; i < nc; i++)
+        for (size_t j = 0; j < nc; j++)
+            s->jac[2 * nc * i + nc + j] += fr_aft_weight(i) * c * a->phw[j] * a->gram[nc * i];
+}
+
+/* A slip piece [al, be] in direction dir: f = dir mu P. */
+static void add_slip(struct march *s, int dir, double al, double be)
+{
+    fricreg_aft *a = s->a;
+    size_t nc = a->nc;
+    fr_aft_gram(a, al, be);
+    const double *G = a->gram;
+    for (size_t i = 0; i < nc; i++) {
+        double v = 0.0;
+        for (size_t j = 0; j < nc; j++)
+            v += G[nc * i + j] * s->gap[j];
+        a->fout[i] += fr_aft_weight(i) * dir * s->mu * v;
+        if (s->jac != NULL)
+            for (size_t j = 0; j < nc; j++)
+                s->jac[2 * nc * i + nc + j] += fr_aft_weight(i) * dir * s->mu * s->kn *
+                                               G[nc * i + j];
+    }
+    s->moved |= dir > 0 ? 1 : 2;
+}
+
+/* March one period [th0, th0 + 2pi) from *st, accumulating f into fout, jout and jac's
+ * df/dg block (zeroed here); *st becomes the state at the end. */
+static void period(struct march *s, struct state *st, double th0)
+{
+    fricreg_aft *a = s->a;
+    size_t nc = a->nc;
+    memset(a->fout, 0, nc * sizeof *a->fout);
+    memset(a->jout, 0, nc * nc * sizeof *a->jout);
+    if (s->jac != NULL)
+        for (size_t i = 0; i < nc; i++)
+            memset(&s->jac[2 * nc * i + nc], 0, nc * sizeof *s->jac);
+    s->moved = 0;
+    double th = th0, the = th0 + FR_TWO_PI;
+    int k = 0;
+    while (th < the) {
+        if (st->mode == OPEN) {
+            double t = next_change(&s->p, 1, th, &k);
+            if (t >= the)
+                return;
+            *st = (struct state){STICK, 0, 1, eval(s, s->u, t), t};
+            th = t;
+        } else if (st->mode == STICK) {
+            double t_open = fmin(next_change(&s->p, -1, th, &k), the);
+            double tp = onset(s, 1, st->w, th, t_open), tm = onset(s, -1, st->w, th, t_open);
+            double t_slip = fmin(tp, tm), t = fmin(t_open, t_slip);
+            if (t > th)
+                add_stick(s, st, th, t);
+            if (t_open <= t_slip) { /* an opening first (or the period's end) */
+                if (t < the)
+                    st->mode = OPEN;
+            } else {
+                st->mode = SLIP;
+                st->dir = tp <= tm ? 1 : -1;
+            }
+            th = t;
+        } else {
+            const struct changes *v = &s->v[st->dir > 0 ? 0 : 1];
+            /* the slip stops at the next sign change of v against dir, or at once where the
+             * arc it starts on already has v against dir (a start on a sign change, which
+             * rounding may put on either side of it) */
+            next_change(v, 0, th, &k);
+            int arc = v->m > 0 ? -v->d[k] : v->sign;
+            double t_open = next_change(&s->p, -1, th, &k);
+            double t_stop = st->dir * arc < 0 ? th : next_change(v, -st->dir, th, &k);
+            double t = fmin(fmin(t_open, t_stop), the);
+            if (t > th)
+                add_slip(s, st->dir, th, t);
+            if (t < the && t_open <= t_stop) {
+                st->mode = OPEN;
+            } else if (t < the || t_stop == the) {
+                double w = eval(s, s->u, t) - st->dir * s->mu * eval(s, s->gap, t) / s->kt;
+                *st = (struct state){STICK, st->dir, 0, w, t};
+            }
+            th = t;
+        }
+    }
+}
+
+/* The sign changes of co (nc coefficients, scaled here into co) into set i of the workspace. */
+static int changes_of(fricreg_aft *a, const char *fn, double *co, int i, struct changes *c)
+{
+    double big = 0.0, top = fabs(co[0]);
+    for (size_t j = 1; j < a->nc; j++)
+        big = fmax(big, fabs(co[j]));
+    top = fmax(top, big);
+    *c = (struct changes){a->nroot + 2 * a->H * i, a->ndir + 2 * a->H * i, 0, 0};
+    if (big <= 1e-15 * top || top == 0.0) { /* constant (to rounding): its sign */
+        c->sign = (co[0] > 0.0) - (co[0] < 0.0);
+        return FRICREG_OK;
+    }
+    for (size_t j = 0; j < a->nc; j++)
+        co[j] /= top;
+    int status = fr_aft_sign_changes(a, fn, co, a->nroot + 2 * a->H * i, a->ndir + 2 * a->H * i,
+                                     &c->m);
+    if (status == FRICREG_OK && c->m == 0) { /* one sign: the largest of a few probes */
+        double best = 0.0, d;
+        for (int q = 0; q < 8 * a->H; q++) {
+            double v = fr_aft_trig_eval(a->H, co, FR_TWO_PI * q / (8 * a->H), &d);
+            if (fabs(v) > fabs(best))
+                best = v;
+        }
+        c->sign = (best > 0.0) - (best < 0.0);
+    }
+    return status;
+}
+
+/* Whether the centred slider wc keeps both margins <= 0: at the maxima of c_s, the sign changes
+ * of v_s (or anywhere when v_s keeps one sign). */
+static int centred_holds(struct march *s, double wc)
+{
+    for (int i = 0; i < 2; i++) {
+        int dir = i == 0 ? 1 : -1;
+        margin(s, dir, wc);
+        if (s->v[i].m == 0 && eval(s, s->cs, 0.0) > 0.0)
+            return 0;
+        for (int k = 0; k < s->v[i].m; k++)
+            if (eval(s, s->cs, s->v[i].r[k]) > 0.0)
+                return 0;
+    }
+    return 1;
+}
+
+/* The normal force's coefficients and Jacobian block over the closed arcs. */
+static void normal_force(struct march *s, double *nf)
+{
+    fricreg_aft *a = s->a;
+    size_t nc = a->nc;
+    memset(nf, 0, nc * sizeof *nf);
+    int k = 0;
+    for (int i = 0; i < (s->p.m > 0 ? s->p.m : 1); i++) {
+        double al = 0.0, be = FR_TWO_PI;
+        if (s->p.m > 0) {
+            if (s->p.d[i] < 0)
+                continue;
+            al = s->p.r[i];
+            be = next_change(&s->p, -1, al, &k);
+        }
+        fr_aft_gram(a, al, be);
+        const double *G = a->gram;
+        for (size_t r = 0; r < nc; r++) {
+            double v = 0.0;
+            for (size_t j = 0; j < nc; j++)
+                v += G[nc * r + j] * s->gap[j];
+            nf[r] += fr_aft_weight(r) * v;
+            if (s->jac != NULL)
+                for (size_t j = 0; j < nc; j++)
+                    s->jac[2 * nc * (nc + r) + nc + j] += fr_aft_weight(r) * s->kn * G[nc * r + j];
+        }
+    }
+}
+
+int fr_aft_exact_normal(fricreg_aft *a, const char *fn, double kt, double mu, double n0, double kn,
+                        const double *u, const double *g, double *f, double *nf, double *jac)
+{
+    int H = a->H;
+    size_t nc = a->nc;
+    double *vp = a->ncoef, *vm = vp + nc, *gap = vm + nc, *cs = gap + nc, *uc = cs + nc,
+           *gc = uc + nc;
+    memcpy(uc, u, nc * sizeof *uc);
+    memcpy(gc, g, nc * sizeof *gc);
+    struct march s = {a, kt, mu, n0, kn, uc, gc, gap, cs, {{0}}, {0}, NULL, 0};
+    for (size_t j = 0; j < nc; j++)
+        cs[j] = kn * gc[j];
+    cs[0] += n0;
+    int status = changes_of(a, fn, cs, 2, &s.p); /* scales cs: gap keeps P itself */
+    for (size_t j = 0; j < nc; j++)
+        gap[j] = kn * gc[j];
+    gap[0] += n0;
+    double thmax = 0.0, thmin = 0.0;
+    int open_throughout = s.p.m == 0 && s.p.sign <= 0, slides = mu > 0.0 && !open_throughout;
+    if (status == FRICREG_OK && slides) {
+        for (int h = 1; h <= H; h++) {
+            double dub = h * uc[2 * h], dua = -h * uc[2 * h - 1];
+            double dgb = h * gc[2 * h] * mu * kn / kt, dga = -h * gc[2 * h - 1] * mu * kn / kt;
+            vp[2 * h - 1] = dub - dgb;
+            vp[2 * h] = dua - dga;
+            vm[2 * h - 1] = dub + dgb;
+            vm[2 * h] = dua + dga;
+        }
+        vp[0] = vm[0] = 0.0;
+        status = changes_of(a, fn, vp, 0, &s.v[0]);
+        if (status == FRICREG_OK)
+            status = changes_of(a, fn, vm, 1, &s.v[1]);
+        if (status == FRICREG_OK)
+            status = fr_aft_extremes(a, fn, uc, &thmax, &thmin);
+    }
+    if (status != FRICREG_OK)
+        return status;
+    /* nothing fails from here on: the outputs are written directly (u, g were copied) */
+    s.jac = jac;
+    if (jac != NULL)
+        memset(jac, 0, 4 * nc * nc * sizeof *jac);
+    memset(a->fout, 0, nc * sizeof *a->fout);
+    memset(a->jout, 0, nc * nc * sizeof *a->jout);
+    if (open_throughout) {
+        memset(f, 0, nc * sizeof *f);
+        memset(nf, 0, nc * sizeof *nf);
+        return FRICREG_OK;
+    }
+    normal_force(&s, a->dcoef);
+    if (slides && s.p.m > 0) { /* one period from a touchdown */
+        double t0 = 0.0;
+        for (int k = s.p.m - 1; k >= 0; k--)
+            if (s.p.d[k] > 0)
+                t0 = s.p.r[k];
+        struct state st = {STICK, 0, 1, eval(&s, uc, t0), t0};
+        period(&s, &st, t0);
+    } else if (slides) {
+        struct state st = {STICK, 1, 0, eval(&s, uc, thmax) - mu * eval(&s, gap, thmax) / kt,
+                           thmax};
+        for (int p = 0; p < MAX_PERIODS; p++) {
+            struct state st0 = st;
+            period(&s, &st, thmax);
+            if (st.mode == st0.mode && st.dir == st0.dir && st.w == st0.w)
+                break;
+        }
+        int constant_u = 1;
+        for (size_t j = 1; j < nc; j++)
+            constant_u &= uc[j] == 0.0;
+        double wc = constant_u ? uc[0] : 0.5 * (eval(&s, uc, thmax) + eval(&s, uc, thmin));
+        /* stuck, or slipping one way only (at the periodic state such a slip has no length:
+         * the slider touches the bound, its place a leftover of the start): the centred
+         * slider where it holds */
+        if (s.moved != 3 && centred_holds(&s, wc)) {
+            a->fout[0] = kt * (uc[0] - wc);
+            for (size_t j = 1; j < nc; j++)
+                a->fout[j] = kt * uc[j];
+            memset(a->jout, 0, nc * nc * sizeof *a->jout);
+            if (jac != NULL)
+                for (size_t i = 0; i < nc; i++)
+                    memset(&jac[2 * nc * i + nc], 0, nc * sizeof *jac);
+            double *pmax = a->phw, *pmin = a->cm; /* cm is free scratch after the march */
+            fr_aft_basis(H, thmax, pmax);
+            fr_aft_basis(H, thmin, pmin);
+            for (size_t j = 1; j < nc; j++) {
+                if (!constant_u)
+                    a->jout[j] = -0.5 * kt * (pmax[j] + pmin[j]);
+                a->jout[nc * j + j] = kt;
+            }
+        }
+    }
+    memcpy(f, a->fout, nc * sizeof *f);
+    memcpy(nf, a->dcoef, nc * sizeof *nf);
+    if (jac != NULL)
+        for (size_t i = 0; i < nc; i++)
+            memcpy(&jac[2 * nc * i], &a->jout[nc * i], nc * sizeof *jac);
+    return FRICREG_OK;
+}

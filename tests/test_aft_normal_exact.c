@@ -1,0 +1,394 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* test_aft_normal_exact.c — Check suite for the exact AFT of a Jenkins element under normal
+ * load with lift-off (fricreg_aft_jenkins_normal_exact, fricreg_aft.h).
+ *
+ * Where the numbers come from:
+ *   - a constant normal force (kn = 0) is the Jenkins element of bound mu N0: the same
+ *     coefficients and Jacobian as fricreg_aft_jenkins_exact at mun = mu N0, to rounding
+ *     (1e-14 of the force scale), N = N0 exactly, ∂f/∂g = ∂N/∂g = 0;
+ *   - open throughout (N0 + kn g < 0 everywhere): f, N and the Jacobian are 0 exactly; mu = 0:
+ *     f = 0 and N the closed form;
+ *   - the time-domain element (fricreg_jenkins_trial_normal and commit) marched three periods
+ *     at NS = 2^18 samples, its last period through a plain DFT: the exact coefficients differ
+ *     from it by the sampling error only, measured at 1e-11 of the force scale or below in the
+ *     three cases of test_aft_normal.c (lift-off, moving bound, stuck); asserted at 1e-10;
+ *   - the sampled path at N = 2^16 on a random sweep with openings: within the force scale
+ *     times the sampling interval 2 pi/N (the sampled touchdown sits on a sample: an error of
+ *     order u' 2 pi/N in the slider, O(N^-1)), and closer than at N = 1024 (the difference is
+ *     the sampled path's error, and it converges);
+ *   - the Jacobian against central differences of the same function (step 1e-6, 1e-6 of
+ *     the stiffness scale). */
+#include <check.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fricreg_aft.h"
+#include "fricreg_jenkins.h"
+
+#define SENTINEL (-777.125)
+#define H 3
+#define NC (2 * H + 1)
+#define NS (1 << 18)
+static const double PI = 3.14159265358979323846;
+
+static fricreg_aft *make(int harmonics, size_t samples)
+{
+    fricreg_aft *a = NULL;
+    ck_assert_int_eq(fricreg_aft_create(harmonics, samples, &a), FRICREG_OK);
+    return a;
+}
+
+/* A reproducible pseudo-random number in [-1, 1] (a 64-bit LCG: no libc rand state). */
+static double rnd(unsigned long long *s)
+{
+    *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
+    return 2.0 * (double)(*s >> 11) / 9007199254740992.0 - 1.0;
+}
+
+static double at(const double *c, double th)
+{
+    double v = c[0];
+    for (int h = 1; h <= H; h++)
+        v += c[2 * h - 1] * cos(h * th) + c[2 * h] * sin(h * th);
+    return v;
+}
+
+/* The time-domain element marched three periods over NS samples: the last period's f and N
+ * through a plain DFT into f[NC], nf[NC]. */
+static void time_domain(double kt, double mu, double n0, double kn, const double *u,
+                        const double *g, double *f, double *nf)
+{
+    fricreg_jenkins *j = NULL;
+    double one = 1.0;
+    ck_assert_int_eq(fricreg_jenkins_create(1, 1, &j), FRICREG_OK);
+    ck_assert_int_eq(fricreg_jenkins_set_params(j, 1, &kt, &one), FRICREG_OK);
+    ck_assert_int_eq(fricreg_jenkins_set_normal(j, 1, &mu, &n0, &kn), FRICREG_OK);
+    memset(f, 0, NC * sizeof *f);
+    memset(nf, 0, NC * sizeof *nf);
+    for (int p = 0; p < 3; p++)
+        for (int n = 0; n < NS; n++) {
+            double th = 2.0 * PI * n / NS, un = at(u, th), gn = at(g, th), fn, nn;
+            ck_assert_int_eq(fricreg_jenkins_trial_normal(j, 1, &un, &gn, &fn, &nn, NULL, NULL),
+                             FRICREG_OK);
+            ck_assert_int_eq(fricreg_jenkins_commit(j), FRICREG_OK);
+            if (p < 2)
+                continue;
+            f[0] += fn / NS;
+            nf[0] += nn / NS;
+            for (int h = 1; h <= H; h++) {
+                double c = 2.0 * cos(h * th) / NS, s = 2.0 * sin(h * th) / NS;
+                f[2 * h - 1] += fn * c;
+                f[2 * h] += fn * s;
+                nf[2 * h - 1] += nn * c;
+                nf[2 * h] += nn * s;
+            }
+        }
+    fricreg_jenkins_free(j);
+}
+
+START_TEST(constant_preload_is_jenkins_exact)
+{
+    fricreg_aft *a = make(H, 0);
+    unsigned long long seed = 2385;
+    for (int c = 0; c < 8; c++) {
+        double u[NC], g[NC], f[NC], nf[NC], jac[4 * NC * NC], fj[NC], jj[NC * NC];
+        for (int i = 0; i < NC; i++) {
+            u[i] = rnd(&seed) / (1 + i / 2);
+            g[i] = rnd(&seed);
+        }
+        /* slipping, and (c = 7) stuck: kt (max u - min u) <= 2 mu N0 */
+        double kt = 2.385, mu = 0.3, n0 = c == 7 ? 40.0 : 0.5 + 0.4 * c, scale = kt + mu * n0;
+        ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, kt, mu, n0, 0.0, NC, u, g, f, nf, jac),
+                         FRICREG_OK);
+        ck_assert_int_eq(fricreg_aft_jenkins_exact(a, kt, mu * n0, NC, u, fj, jj), FRICREG_OK);
+        for (int i = 0; i < NC; i++) {
+            ck_assert_double_eq_tol(f[i], fj[i], 1e-14 * scale);
+            ck_assert_double_eq_tol(nf[i], i == 0 ? n0 : 0.0, 1e-14 * n0);
+            for (int j = 0; j < NC; j++) {
+                ck_assert_double_eq_tol(jac[2 * NC * i + j], jj[NC * i + j], 1e-14 * scale);
+                ck_assert_double_eq(jac[2 * NC * i + NC + j], 0.0);        /* df/dg: kn = 0 */
+                ck_assert_double_eq(jac[2 * NC * (NC + i) + j], 0.0);      /* dN/du */
+                ck_assert_double_eq(jac[2 * NC * (NC + i) + NC + j], 0.0); /* dN/dg */
+            }
+        }
+    }
+    fricreg_aft_free(a);
+}
+END_TEST
+
+START_TEST(open_throughout_and_no_friction)
+{
+    const double u[NC] = {0.3, 1.0, 0.0, 0.0, 0.2, 0.9, -0.1}, g[NC] = {0.0, 0.2, 0.1, 0, 0, 0, 0};
+    double f[NC], nf[NC], jac[4 * NC * NC];
+    fricreg_aft *a = make(H, 0);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 2.0, 0.5, -1.0, 2.0, NC, u, g, f, nf, jac),
+                     FRICREG_OK);
+    for (int i = 0; i < NC; i++) {
+        ck_assert_double_eq(f[i], 0.0);
+        ck_assert_double_eq(nf[i], 0.0);
+    }
+    for (int i = 0; i < 4 * NC * NC; i++)
+        ck_assert_double_eq(jac[i], 0.0);
+    /* mu = 0, closed throughout: f = 0, N = N0 + kn g, dN/dg = kn I */
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 2.0, 0.0, 1.0, 2.0, NC, u, g, f, nf, jac),
+                     FRICREG_OK);
+    for (int i = 0; i < NC; i++) {
+        ck_assert_double_eq(f[i], 0.0);
+        ck_assert_double_eq_tol(nf[i], (i == 0 ? 1.0 : 0.0) + 2.0 * g[i], 1e-14);
+        for (int j = 0; j < NC; j++) {
+            ck_assert_double_eq(jac[2 * NC * i + j], 0.0);
+            ck_assert_double_eq(jac[2 * NC * i + NC + j], 0.0);
+            ck_assert_double_eq_tol(jac[2 * NC * (NC + i) + NC + j], i == j ? 2.0 : 0.0, 1e-14);
+        }
+    }
+    fricreg_aft_free(a);
+}
+END_TEST
+
+static void check_against_time_domain(double kt, double mu, double n0, double kn, const double *u,
+                                      const double *g, const char *what)
+{
+    fricreg_aft *a = make(H, 0);
+    double f[NC], nf[NC], ft[NC], nft[NC], scale = mu * (fabs(n0) + kn * 4.0);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, kt, mu, n0, kn, NC, u, g, f, nf, NULL),
+                     FRICREG_OK);
+    time_domain(kt, mu, n0, kn, u, g, ft, nft);
+    for (int i = 0; i < NC; i++) {
+        ck_assert_msg(fabs(f[i] - ft[i]) < 1e-10 * scale, "%s: f[%d] = %.15g, time domain %.15g",
+                      what, i, f[i], ft[i]);
+        ck_assert_msg(fabs(nf[i] - nft[i]) < 1e-10 * (fabs(n0) + kn * 4.0),
+                      "%s: nf[%d] = %.15g, time domain %.15g", what, i, nf[i], nft[i]);
+    }
+    fricreg_aft_free(a);
+}
+
+START_TEST(against_the_time_domain_element)
+{
+    const double u1[NC] = {0.0, 1.0, 0.0, 0, 0, 0, 0}, g1[NC] = {0.0, 0.0, 1.5, 0, 0, 0, 0};
+    const double u2[NC] = {0.1, 1.2, 0.0, 0.0, 0.3, 0, 0};
+    const double g2[NC] = {0.0, 0.8 * 0.955336489125606, -0.8 * 0.29552020666134, 0, 0, 0, 0};
+    const double u3[NC] = {0.0, 0.05, 0.0, 0, 0, 0, 0};
+    /* opens where sin θ < -2/3 */
+    check_against_time_domain(2.0, 0.5, 1.0, 1.0, u1, g1, "lift-off");
+    /* N between 1.2 and 2.8, never open, slipping both ways every period */
+    check_against_time_domain(3.0, 0.4, 2.0, 1.0, u2, g2, "moving bound");
+    /* kt (max u - min u) = 0.3 below 2 mu N_min = 0.96: stuck, centred */
+    check_against_time_domain(3.0, 0.4, 2.0, 1.0, u3, g2, "stuck");
+}
+END_TEST
+
+START_TEST(against_the_sampled_path)
+{
+    fricreg_aft *fine = make(H, 1 << 16), *coarse = make(H, 1024);
+    unsigned long long seed = 1234;
+    int opened = 0;
+    for (int c = 0; c < 10; c++) {
+        double u[NC], g[NC], f[NC], nf[NC], fs[NC], nfs[NC], fc[NC], nfc[NC];
+        for (int i = 0; i < NC; i++) {
+            u[i] = rnd(&seed) / (1 + i / 2);
+            g[i] = rnd(&seed) / (1 + i / 2);
+        }
+        double kt = 1.0 + 0.5 * rnd(&seed), mu = 0.3 + 0.2 * rnd(&seed), n0 = 1.0 + rnd(&seed);
+        double kn = 1.0 + 0.5 * rnd(&seed), scale = kt + mu * (fabs(n0) + 4.0 * kn);
+        double err = 0.0, errc = 0.0, h = 2.0 * PI / (1 << 16);
+        ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(fine, kt, mu, n0, kn, NC, u, g, f, nf,
+                                                          NULL),
+                         FRICREG_OK);
+        ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(fine, kt, mu, n0, kn, NC, u, g, fs, nfs,
+                                                            NULL),
+                         FRICREG_OK);
+        ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(coarse, kt, mu, n0, kn, NC, u, g, fc,
+                                                            nfc, NULL),
+                         FRICREG_OK);
+        for (int i = 0; i < NC; i++) {
+            err = fmax(err, fmax(fabs(f[i] - fs[i]), fabs(nf[i] - nfs[i])));
+            errc = fmax(errc, fmax(fabs(f[i] - fc[i]), fabs(nf[i] - nfc[i])));
+        }
+        ck_assert_msg(err < scale * h, "case %d: exact - sampled = %g, bound %g", c, err,
+                      scale * h);
+        ck_assert_msg(err < errc || err < 1e-12 * scale, "case %d: %g at N = 2^16, %g at 1024", c,
+                      err, errc);
+        for (int q = 0; q < 64 && !opened; q++)
+            opened = n0 + kn * at(g, 2.0 * PI * q / 64) < 0.0;
+    }
+    ck_assert(opened); /* the sweep has openings */
+    fricreg_aft_free(fine);
+    fricreg_aft_free(coarse);
+}
+END_TEST
+
+/* A march that starts on a reversal of u (the maximum) with g following u: rounding put the
+ * start a hair past the slider velocity's sign change, and the slip went on through the
+ * decreasing branch (f0 0.60 where the sampled path gives -0.093). The slip now stops at
+ * once where its first arc already has the velocity against it. Against the sampled path at
+ * N = 2^16 within the force scale times 2 pi/N, as the sweep. */
+START_TEST(slip_starting_on_a_reversal)
+{
+    const double kt = 0.95789016068814814, mu = 0.8812804789660873, n0 = 0.77750149684841796,
+                 kn = 0.07378712206789606;
+    const double u[11] = {0,
+                          -0.69712608666025377,
+                          0.10287065040453836,
+                          0.3745257784028192,
+                          0.27525961427418189,
+                          -0.26979934762688323,
+                          -0.15405492223988049,
+                          0,
+                          0.17424074093543029,
+                          -0.18025088197563349,
+                          -0.014503629807306906};
+    double g[11], f[11], nf[11], fs[11], nfs[11], scale = kt + mu * (n0 + 4.0 * kn);
+    memcpy(g, u, sizeof g);
+    g[0] = -0.0065336371802415805;
+    fricreg_aft *a = make(5, 1 << 16);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, kt, mu, n0, kn, 11, u, g, f, nf, NULL),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(a, kt, mu, n0, kn, 11, u, g, fs, nfs, NULL),
+                     FRICREG_OK);
+    for (int i = 0; i < 11; i++)
+        ck_assert_msg(fabs(f[i] - fs[i]) < scale * 2.0 * PI / (1 << 16),
+                      "f[%d] = %.12g, sampled %.12g", i, f[i], fs[i]);
+    fricreg_aft_free(a);
+}
+END_TEST
+
+/* Central differences of f and N in u and g against the Jacobian. */
+static void check_jacobian(fricreg_aft *a, double kt, double mu, double n0, double kn,
+                           const double *u, const double *g)
+{
+    double f[NC], nf[NC], jac[4 * NC * NC], x[2 * NC], h = 1e-6, scale = fmax(kt, kn);
+    memcpy(x, u, NC * sizeof *u);
+    memcpy(x + NC, g, NC * sizeof *g);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, kt, mu, n0, kn, NC, u, g, f, nf, jac),
+                     FRICREG_OK);
+    for (int j = 0; j < 2 * NC; j++) {
+        double xp[2 * NC], xm[2 * NC], fp[NC], fm[NC], np[NC], nm[NC];
+        memcpy(xp, x, sizeof x);
+        memcpy(xm, x, sizeof x);
+        xp[j] += h;
+        xm[j] -= h;
+        ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, kt, mu, n0, kn, NC, xp, xp + NC, fp,
+                                                          np, NULL),
+                         FRICREG_OK);
+        ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, kt, mu, n0, kn, NC, xm, xm + NC, fm,
+                                                          nm, NULL),
+                         FRICREG_OK);
+        for (int i = 0; i < NC; i++) {
+            double df = (fp[i] - fm[i]) / (2 * h), dn = (np[i] - nm[i]) / (2 * h);
+            ck_assert_msg(fabs(df - jac[2 * NC * i + j]) < 1e-6 * scale,
+                          "df[%d]/dx[%d] = %.12g, differences %.12g", i, j, jac[2 * NC * i + j],
+                          df);
+            ck_assert_msg(fabs(dn - jac[2 * NC * (NC + i) + j]) < 1e-6 * scale,
+                          "dN[%d]/dx[%d] = %.12g, differences %.12g", i, j,
+                          jac[2 * NC * (NC + i) + j], dn);
+        }
+    }
+}
+
+START_TEST(jacobian_against_differences)
+{
+    const double u1[NC] = {0.0, 1.0, 0.0, 0, 0, 0.1, 0}, g1[NC] = {0.1, 0.0, 1.5, 0, 0, 0, 0};
+    const double u2[NC] = {0.1, 1.2, 0.0, 0.0, 0.3, 0, 0}, g2[NC] = {0.0, 0.76, -0.24, 0, 0, 0, 0};
+    const double u3[NC] = {0.0, 0.05, 0.0, 0, 0, 0, 0};
+    fricreg_aft *a = make(H, 0);
+    check_jacobian(a, 2.0, 0.5, 1.0, 1.0, u1, g1); /* lift-off: the touchdown term */
+    check_jacobian(a, 3.0, 0.4, 2.0, 1.0, u2, g2); /* moving bound */
+    check_jacobian(a, 3.0, 0.4, 2.0, 1.0, u3, g2); /* stuck, centred */
+    unsigned long long seed = 77;
+    for (int c = 0; c < 6; c++) {
+        double u[NC], g[NC];
+        for (int i = 0; i < NC; i++) {
+            u[i] = rnd(&seed) / (1 + i / 2);
+            g[i] = rnd(&seed) / (1 + i / 2);
+        }
+        check_jacobian(a, 1.0 + 0.5 * rnd(&seed), 0.3 + 0.2 * rnd(&seed), 1.0 + rnd(&seed),
+                       1.0 + 0.5 * rnd(&seed), u, g);
+    }
+    fricreg_aft_free(a);
+}
+END_TEST
+
+START_TEST(outputs_may_alias_inputs)
+{
+    const double u[NC] = {0.0, 1.0, 0.0, 0, 0, 0.1, 0}, g[NC] = {0.1, 0.0, 1.5, 0, 0, 0, 0};
+    double f[NC], nf[NC], uf[NC], gn[NC];
+    fricreg_aft *a = make(H, 0);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 2.0, 0.5, 1.0, 1.0, NC, u, g, f, nf, NULL),
+                     FRICREG_OK);
+    memcpy(uf, u, sizeof uf);
+    memcpy(gn, g, sizeof gn);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 2.0, 0.5, 1.0, 1.0, NC, uf, gn, uf, gn,
+                                                      NULL),
+                     FRICREG_OK);
+    for (int i = 0; i < NC; i++) {
+        ck_assert_double_eq(uf[i], f[i]);
+        ck_assert_double_eq(gn[i], nf[i]);
+    }
+    fricreg_aft_free(a);
+}
+END_TEST
+
+START_TEST(bad_input)
+{
+    const double u[NC] = {0.3, 1.0, 0, 0, 0, 0, 0}, g[NC] = {0.1, 0.2, 0, 0, 0, 0, 0};
+    double f[NC], nf[NC], jac[4 * NC * NC], bad[NC];
+    fricreg_aft *a = make(H, 0);
+    for (int i = 0; i < NC; i++)
+        f[i] = nf[i] = SENTINEL;
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(NULL, 1, 1, 1, 1, NC, u, g, f, nf, jac),
+                     FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 1, 1, 1, 1, NC, u, NULL, f, nf, jac),
+                     FRICREG_ENULL);
+    ck_assert_ptr_nonnull(strstr(fricreg_aft_errmsg(a), "jenkins_normal_exact: g"));
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 1, 1, 1, 1, NC, u, g, f, NULL, jac),
+                     FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 1, 1, 1, 1, NC, NULL, g, f, nf, jac),
+                     FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 1, 1, 1, 1, NC - 2, u, g, f, nf, jac),
+                     FRICREG_ESIZE);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 0, 1, 1, 1, NC, u, g, f, nf, jac),
+                     FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 1, -1, 1, 1, NC, u, g, f, nf, jac),
+                     FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 1, 1, 1, -1, NC, u, g, f, nf, jac),
+                     FRICREG_EINVAL);
+    ck_assert_str_eq(fricreg_aft_errmsg(a),
+                     "jenkins_normal_exact: mu = 1 and kn = -1 must be >= 0");
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 1, 1, NAN, 1, NC, u, g, f, nf, jac),
+                     FRICREG_ENONFINITE);
+    memcpy(bad, g, sizeof bad);
+    bad[2] = INFINITY;
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 1, 1, 1, 1, NC, u, bad, f, nf, jac),
+                     FRICREG_ENONFINITE);
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 1, 1, 1e308, 1, NC, u, g, f, nf, jac),
+                     FRICREG_ENONFINITE);
+    for (int i = 0; i < NC; i++) {
+        ck_assert_double_eq(f[i], SENTINEL);
+        ck_assert_double_eq(nf[i], SENTINEL);
+    }
+    ck_assert_int_eq(fricreg_aft_errcode(a), FRICREG_ENONFINITE);
+    fricreg_aft_free(a);
+}
+END_TEST
+
+int main(void)
+{
+    Suite *s = suite_create("aft_normal_exact");
+    TCase *tc = tcase_create("core");
+    tcase_set_timeout(tc, 60);
+    tcase_add_test(tc, constant_preload_is_jenkins_exact);
+    tcase_add_test(tc, open_throughout_and_no_friction);
+    tcase_add_test(tc, against_the_time_domain_element);
+    tcase_add_test(tc, against_the_sampled_path);
+    tcase_add_test(tc, slip_starting_on_a_reversal);
+    tcase_add_test(tc, jacobian_against_differences);
+    tcase_add_test(tc, outputs_may_alias_inputs);
+    tcase_add_test(tc, bad_input);
+    suite_add_tcase(s, tc);
+    SRunner *sr = srunner_create(s);
+    srunner_run_all(sr, CK_NORMAL);
+    int failed = srunner_ntests_failed(sr);
+    srunner_free(sr);
+    return failed == 0 ? 0 : 1;
+}
