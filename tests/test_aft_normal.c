@@ -17,6 +17,7 @@
 #include <string.h>
 
 #include "fricreg_aft.h"
+#include "aft_normal_checks.h"
 #include "fricreg_jenkins.h"
 
 #define SENTINEL (-777.125)
@@ -30,68 +31,6 @@ static fricreg_aft *make(int harmonics, size_t samples)
     fricreg_aft *a = NULL;
     ck_assert_int_eq(fricreg_aft_create(harmonics, samples, &a), FRICREG_OK);
     return a;
-}
-
-static double at(const double *c, double th)
-{
-    double v = c[0];
-    for (int h = 1; h <= H; h++)
-        v += c[2 * h - 1] * cos(h * th) + c[2 * h] * sin(h * th);
-    return v;
-}
-
-/* The plain DFT of x[NS] into c[NC] (the header's coefficient layout). */
-static void dft(const double *x, double *c)
-{
-    memset(c, 0, NC * sizeof *c);
-    for (int n = 0; n < NS; n++) {
-        double th = 2.0 * PI * n / NS;
-        c[0] += x[n] / NS;
-        for (int h = 1; h <= H; h++) {
-            c[2 * h - 1] += 2.0 * x[n] * cos(h * th) / NS;
-            c[2 * h] += 2.0 * x[n] * sin(h * th) / NS;
-        }
-    }
-}
-
-/* The time-domain element marched three periods over the samples: the last period's f and N
- * transformed into f[NC], nf[NC]. */
-static void time_domain(double kt, double mu, double n0, double kn, const double *u,
-                        const double *g, double *f, double *nf)
-{
-    fricreg_jenkins *j = NULL;
-    double one = 1.0, fs[NS], ns[NS];
-    ck_assert_int_eq(fricreg_jenkins_create(1, 1, &j), FRICREG_OK);
-    ck_assert_int_eq(fricreg_jenkins_set_params(j, 1, &kt, &one), FRICREG_OK);
-    ck_assert_int_eq(fricreg_jenkins_set_normal(j, 1, &mu, &n0, &kn), FRICREG_OK);
-    for (int p = 0; p < 3; p++)
-        for (int n = 0; n < NS; n++) {
-            double th = 2.0 * PI * n / NS, un = at(u, th), gn = at(g, th);
-            ck_assert_int_eq(fricreg_jenkins_trial_normal(j, 1, &un, &gn, &fs[n], &ns[n], NULL,
-                                                          NULL),
-                             FRICREG_OK);
-            ck_assert_int_eq(fricreg_jenkins_commit(j), FRICREG_OK);
-        }
-    fricreg_jenkins_free(j);
-    dft(fs, f);
-    dft(ns, nf);
-}
-
-static void check_against_time_domain(double kt, double mu, double n0, double kn, const double *u,
-                                      const double *g, const char *what)
-{
-    fricreg_aft *a = make(H, NS);
-    double f[NC], nf[NC], ft[NC], nft[NC], scale = mu * (fabs(n0) + kn * 4.0);
-    ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(a, kt, mu, n0, kn, NC, u, g, f, nf, NULL),
-                     FRICREG_OK);
-    time_domain(kt, mu, n0, kn, u, g, ft, nft);
-    for (int i = 0; i < NC; i++) {
-        ck_assert_msg(fabs(f[i] - ft[i]) < 1e-12 * scale, "%s: f[%d] = %.15g, time domain %.15g",
-                      what, i, f[i], ft[i]);
-        ck_assert_msg(fabs(nf[i] - nft[i]) < 1e-12 * (fabs(n0) + kn * 4.0),
-                      "%s: nf[%d] = %.15g, time domain %.15g", what, i, nf[i], nft[i]);
-    }
-    fricreg_aft_free(a);
 }
 
 START_TEST(constant_preload_is_jenkins)
@@ -140,60 +79,20 @@ END_TEST
 
 START_TEST(against_the_time_domain_element)
 {
-    const double u1[NC] = {0.0, 1.0, 0.0, 0, 0, 0, 0}, g1[NC] = {0.0, 0.0, 1.5, 0, 0, 0, 0};
-    const double u2[NC] = {0.1, 1.2, 0.0, 0.0, 0.3, 0, 0};
-    const double g2[NC] = {0.0, 0.8 * 0.955336489125606, -0.8 * 0.29552020666134, 0, 0, 0, 0};
-    const double u3[NC] = {0.0, 0.05, 0.0, 0, 0, 0, 0};
-    /* opens where sin θ < -2/3 */
-    check_against_time_domain(2.0, 0.5, 1.0, 1.0, u1, g1, "lift-off");
-    /* N between 1.2 and 2.8, never open, slipping both ways every period */
-    check_against_time_domain(3.0, 0.4, 2.0, 1.0, u2, g2, "moving bound");
-    /* kt (max u - min u) = 0.3 below 2 mu N_min = 0.96: stuck, centred */
-    check_against_time_domain(3.0, 0.4, 2.0, 1.0, u3, g2, "stuck");
-}
-END_TEST
-
-/* Central differences of f and N in u and g against the Jacobian. */
-static void check_jacobian(double kt, double mu, double n0, double kn, const double *u,
-                           const double *g)
-{
     fricreg_aft *a = make(H, NS);
-    double f[NC], nf[NC], jac[4 * NC * NC], x[2 * NC], h = 1e-6, scale = fmax(kt, kn);
-    memcpy(x, u, NC * sizeof *u);
-    memcpy(x + NC, g, NC * sizeof *g);
-    ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(a, kt, mu, n0, kn, NC, u, g, f, nf, jac),
-                     FRICREG_OK);
-    for (int j = 0; j < 2 * NC; j++) {
-        double xp[2 * NC], xm[2 * NC], fp[NC], fm[NC], np[NC], nm[NC];
-        memcpy(xp, x, sizeof x);
-        memcpy(xm, x, sizeof x);
-        xp[j] += h;
-        xm[j] -= h;
-        ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(a, kt, mu, n0, kn, NC, xp, xp + NC, fp,
-                                                            np, NULL),
-                         FRICREG_OK);
-        ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(a, kt, mu, n0, kn, NC, xm, xm + NC, fm,
-                                                            nm, NULL),
-                         FRICREG_OK);
-        for (int i = 0; i < NC; i++) {
-            double df = (fp[i] - fm[i]) / (2 * h), dn = (np[i] - nm[i]) / (2 * h);
-            ck_assert_msg(fabs(df - jac[2 * NC * i + j]) < 1e-6 * scale,
-                          "df[%d]/dx[%d] = %.12g, differences %.12g", i, j, jac[2 * NC * i + j],
-                          df);
-            ck_assert_msg(fabs(dn - jac[2 * NC * (NC + i) + j]) < 1e-6 * scale,
-                          "dN[%d]/dx[%d] = %.12g, differences %.12g", i, j,
-                          jac[2 * NC * (NC + i) + j], dn);
-        }
-    }
+    aft_normal_check_time_domain_cases(a, fricreg_aft_jenkins_normal_sampled, NS, 1e-12);
     fricreg_aft_free(a);
 }
+END_TEST
 
 START_TEST(jacobian_against_differences)
 {
     const double u1[NC] = {0.0, 1.0, 0.0, 0, 0, 0.1, 0}, g1[NC] = {0.1, 0.0, 1.5, 0, 0, 0, 0};
     const double u2[NC] = {0.1, 1.2, 0.0, 0.0, 0.3, 0, 0}, g2[NC] = {0.0, 0.76, -0.24, 0, 0, 0, 0};
-    check_jacobian(2.0, 0.5, 1.0, 1.0, u1, g1);
-    check_jacobian(3.0, 0.4, 2.0, 1.0, u2, g2);
+    fricreg_aft *a = make(H, NS);
+    aft_normal_check_jacobian(a, fricreg_aft_jenkins_normal_sampled, 2.0, 0.5, 1.0, 1.0, u1, g1);
+    aft_normal_check_jacobian(a, fricreg_aft_jenkins_normal_sampled, 3.0, 0.4, 2.0, 1.0, u2, g2);
+    fricreg_aft_free(a);
 }
 END_TEST
 
