@@ -24,7 +24,6 @@
 #define H 3
 #define NC (2 * H + 1)
 #define NS 1024
-static const double PI = 3.14159265358979323846;
 
 static fricreg_aft *make(int harmonics, size_t samples)
 {
