@@ -107,7 +107,7 @@ START_TEST(constant_normal_load_is_jenkins)
     real_solve(n, s.K, load, dx0);
     const double omegas[3] = {0.9, 1.35, 1.8};
     for (int w = 0; w < 3; w++) {
-        double qn[2 * 15], xn[MAXN * 15], qj[15], xj[MAXN * 15], amax = 0.0;
+        double qn[2 * 15], xn[MAXN * 15], qj[15], xj[MAXN * 15], amax = 0.0, dev = 0.0;
         hb_solve(hn, &s, H, 2, omegas[w], qn, xn);
         hb_solve(hj, &s, H, 1, omegas[w], qj, xj);
         for (size_t j = 0; j < n * nc; j++)
@@ -116,10 +116,13 @@ START_TEST(constant_normal_load_is_jenkins)
         for (size_t k = 0; k < n; k++)
             for (size_t c = 0; c < nc; c++) {
                 double want = xj[k * nc + c] + (c == 0 ? dx0[k] : 0.0);
+                dev = fmax(dev, fabs(xn[k * nc + c] - want) / amax);
                 ck_assert_msg(fabs(xn[k * nc + c] - want) <= 1e-12 * amax,
                               "Omega %g dof %zu coefficient %zu: %.17g against %.17g", omegas[w], k,
                               c, xn[k * nc + c], want);
             }
+        if (getenv("HB_PRINT"))
+            fprintf(stderr, "kn = 0, Omega %g: %.2e of the scale %.3g\n", omegas[w], dev, amax);
         /* the unknowns: u as q of the Jenkins driver but for the mean, g = Jn x */
         for (size_t c = 0; c < nc; c++) {
             double gx = 0.0;
@@ -185,18 +188,24 @@ START_TEST(closed_stuck_is_linear)
             gsl_linalg_complex_LU_decomp(&Dv.matrix, p, &sg);
             gsl_linalg_complex_LU_solve(&Dv.matrix, p, &bv.vector, &Xv.vector);
             gsl_permutation_free(p);
-            double q[2 * 9], x[MAXN * 9], amax = 0.0;
+            /* the mean and the harmonics each to 1e-10 of their own scale */
+            double q[2 * 9], x[MAXN * 9], a0 = 0.0, a1 = 0.0, dev = 0.0;
             hb_solve(hb, &s, H, 2, om, q, x);
             for (size_t k = 0; k < n; k++)
-                amax = fmax(amax, fmax(fabs(x0[k]), hypot(X[2 * k], X[2 * k + 1])));
+                a0 = fmax(a0, fabs(x0[k])), a1 = fmax(a1, hypot(X[2 * k], X[2 * k + 1]));
             for (size_t k = 0; k < n; k++)
                 for (size_t c = 0; c < nc; c++) {
                     /* X = a − i b */
                     double want = c == 0 ? x0[k] : c == 1 ? X[2 * k] : c == 2 ? -X[2 * k + 1] : 0;
+                    double amax = c == 0 ? a0 : a1;
+                    dev = fmax(dev, fabs(x[k * nc + c] - want) / amax);
                     ck_assert_msg(fabs(x[k * nc + c] - want) <= 1e-10 * amax,
                                   "H %d Omega %g dof %zu coefficient %zu: %.17g against %.17g", H,
                                   om, k, c, x[k * nc + c], want);
                 }
+            if (getenv("HB_PRINT"))
+                fprintf(stderr, "closed stuck, H %d Omega %g: %.2e of the scales %.3g, %.3g\n", H,
+                        om, dev, a0, a1);
             /* closed throughout: N0 + kn g > 0 with g's amplitude bound */
             double gmin = q[nc];
             for (size_t c = 1; c < nc; c++)
