@@ -17,7 +17,8 @@
  *     a period, from rest until the RMS of the last two periods agree to 1e-7, asserted), at
  *     two frequencies where the element opens and closes in every period (asserted on the time
  *     series: the separation wipes out the slider's memory, so the periodic state is unique).
- *     HB at H = 21 within 1e-3 relative in each dof's RMS. */
+ *     HB at H = 21 within 1e-3 relative in each dof's RMS.
+ *   - the sparse model (UMFPACK) against the dense one (GSL's LU), to 1e-12. */
 #include <check.h>
 #include <math.h>
 #include <stdio.h>
@@ -251,6 +252,30 @@ START_TEST(partial_liftoff_against_time_domain)
 }
 END_TEST
 
+/* The sparse model (UMFPACK, fricreg_hb_set_*_csc) gives the dense model's solution with
+ * lift-off too: its solves take the 2 m columns of J^T. K given whole (both triangles). */
+START_TEST(sparse_model_equals_dense)
+{
+    struct jenkins_model s = contact();
+    const int H = 7;
+    size_t nc = 2 * (size_t)H + 1;
+    fricreg_hb *hd = make(&s, H, 1), *hs = make(&s, H, 1);
+    const int64_t p[3] = {0, 2, 4}, i[4] = {0, 1, 0, 1};
+    ck_assert_int_eq(fricreg_hb_set_stiffness_csc(hs, 2, 0, p, i, s.K), FRICREG_OK);
+    double qd[2 * 15], xd[MAXN * 15], qs[2 * 15], xs[MAXN * 15], amax = 0.0;
+    hb_solve(hd, &s, H, 2, 1.45, qd, xd);
+    hb_solve(hs, &s, H, 2, 1.45, qs, xs);
+    for (size_t j = 0; j < 2 * nc; j++)
+        amax = fmax(amax, fabs(qd[j]));
+    for (size_t j = 0; j < 2 * nc; j++)
+        ck_assert_double_eq_tol(qs[j], qd[j], 1e-12 * amax);
+    for (size_t j = 0; j < s.n * nc; j++)
+        ck_assert_double_eq_tol(xs[j], xd[j], 1e-12 * amax);
+    fricreg_hb_free(hd);
+    fricreg_hb_free(hs);
+}
+END_TEST
+
 START_TEST(bad_input)
 {
     struct jenkins_model s = contact();
@@ -303,6 +328,7 @@ int main(void)
     tcase_add_test(tc, constant_normal_load_is_jenkins);
     tcase_add_test(tc, closed_stuck_is_linear);
     tcase_add_test(tc, partial_liftoff_against_time_domain);
+    tcase_add_test(tc, sparse_model_equals_dense);
     tcase_add_test(tc, bad_input);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);
