@@ -368,6 +368,7 @@ module fricreg
   type, extends(fricreg_object) :: fricreg_hb_driver
     private
     integer(c_size_t) :: n = 0, m = 0, nc = 0 ! C has no size getters: kept from create
+    integer(c_size_t) :: rows = 0 ! q's columns: m, or 2 m with set_normal_elements
   contains
     procedure :: create => hb_create
     procedure :: ndof => hb_ndof
@@ -379,6 +380,7 @@ module fricreg
     procedure :: set_rayleigh => hb_set_rayleigh
     procedure :: set_elements => hb_set_elements
     procedure :: set_iwan => hb_set_iwan
+    procedure :: set_normal_elements => hb_set_normal_elements
     procedure :: set_excitation => hb_set_excitation
     procedure :: set_newton => hb_set_newton
     procedure :: set_continuation => hb_set_continuation
@@ -3010,6 +3012,7 @@ contains
     call self%adopt(p, fricreg_hb_free, fricreg_hb_errcode, fricreg_hb_errmsg)
     self%n = as_size(ndof)
     self%m = as_size(m)
+    self%rows = self%m
     self%nc = 2 * as_size(harmonics) + 1
   end function hb_create
 
@@ -3103,6 +3106,7 @@ contains
     if (status == FRICREG_OK) status = self%hb_shape('set_elements', 'mun', shape(mun), self%m, 0_c_size_t)
     if (status == FRICREG_OK) status = self%record(fricreg_hb_set_elements(self%ptr, self%m, &
                                                      self%n, transpose(J), kt, mun))
+    if (status == FRICREG_OK) self%rows = self%m
   end function hb_set_elements
 
   !> Iwan elements instead: J(m, ndof) as set_elements; element i's ns sliders have the
@@ -3122,7 +3126,33 @@ contains
     if (status == FRICREG_OK) status = self%record(fricreg_hb_set_iwan(self%ptr, self%m, &
                                                      self%n, transpose(J), &
                                                      int(size(k, 1), c_size_t), k, phi))
+    if (status == FRICREG_OK) self%rows = self%m
   end function hb_set_iwan
+
+  !> Jenkins elements under a normal load with lift-off instead (fricreg_hb_set_normal_elements):
+  !> Jt(m, ndof), Jn(m, ndof) as set_elements's J (tangential and normal rows, g positive
+  !> pressing), kt(m) > 0, mu(m) >= 0, n0(m) the preloads, kn(m) >= 0; the normal force
+  !> max(0, N0 + kn g), the slip bound mu N. q then has 2 m columns: column 2i - 1 element i's
+  !> u, column 2i its g. Each element setter replaces the others. FRICREG_ESIZE;
+  !> FRICREG_ENONFINITE; FRICREG_EINVAL; FRICREG_ENOMEM.
+  function hb_set_normal_elements(self, Jt, Jn, kt, mu, n0, kn) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    real(c_double), intent(in) :: Jt(:, :), Jn(:, :)
+    real(c_double), intent(in), contiguous :: kt(:), mu(:), n0(:), kn(:)
+    integer(c_int) :: status
+    character(len=*), parameter :: fn = 'set_normal_elements'
+    status = self%hb_shape(fn, 'Jt', shape(Jt), self%m, self%n)
+    if (status == FRICREG_OK) status = self%hb_shape(fn, 'Jn', shape(Jn), self%m, self%n)
+    if (status == FRICREG_OK) status = self%hb_shape(fn, 'kt', shape(kt), self%m, 0_c_size_t)
+    if (status == FRICREG_OK) status = self%hb_shape(fn, 'mu', shape(mu), self%m, 0_c_size_t)
+    if (status == FRICREG_OK) status = self%hb_shape(fn, 'n0', shape(n0), self%m, 0_c_size_t)
+    if (status == FRICREG_OK) status = self%hb_shape(fn, 'kn', shape(kn), self%m, 0_c_size_t)
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_hb_set_normal_elements(self%ptr, self%m, self%n, &
+                                                          transpose(Jt), transpose(Jn), kt, mu, &
+                                                          n0, kn))
+    if (status == FRICREG_OK) self%rows = 2 * self%m
+  end function hb_set_normal_elements
 
   !> The excitation of the fundamental, p(t) = pc cos(Omega t) + ps sin(Omega t): pc(ndof),
   !> ps(ndof), force units. FRICREG_ESIZE; FRICREG_ENONFINITE.
@@ -3162,7 +3192,8 @@ contains
                                                      ds_min, ds_max, as_size(max_points)))
   end function hb_set_continuation
 
-  !> Solve at the frequency omega into q(2H+1, m), from the guess q0 (same shape) or, absent,
+  !> Solve at the frequency omega into q(2H+1, m) (2 m columns with set_normal_elements), from
+  !> the guess q0 (same shape) or, absent,
   !> the linear response. The statuses of fricreg_hb_solve; FRICREG_ESIZE.
   function hb_solve(self, omega, q, q0) result(status)
     class(fricreg_hb_driver), intent(inout) :: self
@@ -3170,11 +3201,11 @@ contains
     real(c_double), intent(inout), contiguous :: q(:, :)
     real(c_double), intent(in), contiguous, optional :: q0(:, :)
     integer(c_int) :: status
-    status = self%hb_shape('solve', 'q', shape(q), self%nc, self%m)
+    status = self%hb_shape('solve', 'q', shape(q), self%nc, self%rows)
     if (status == FRICREG_OK .and. present(q0)) &
-      status = self%hb_shape('solve', 'q0', shape(q0), self%nc, self%m)
+      status = self%hb_shape('solve', 'q0', shape(q0), self%nc, self%rows)
     if (status == FRICREG_OK) &
-      status = self%record(fricreg_hb_solve(self%ptr, omega, self%nc * self%m, q0, q))
+      status = self%record(fricreg_hb_solve(self%ptr, omega, self%nc * self%rows, q0, q))
   end function hb_solve
 
   !> The displacements' coefficients of the last solution, x(2H+1, ndof) (column k dof k).
@@ -3197,9 +3228,9 @@ contains
     integer(c_int) :: status
     status = self%ready('continue', 'HB driver')
     if (status == FRICREG_OK .and. present(q0)) &
-      status = self%hb_shape('continue', 'q0', shape(q0), self%nc, self%m)
+      status = self%hb_shape('continue', 'q0', shape(q0), self%nc, self%rows)
     if (status == FRICREG_OK) status = self%record(fricreg_hb_continue(self%ptr, omega0, omega1, &
-                                                     self%nc * self%m, q0))
+                                                     self%nc * self%rows, q0))
   end function hb_continue
 
   !> Number of points of the last continuation (0 if none).

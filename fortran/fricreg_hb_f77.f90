@@ -18,6 +18,7 @@
 !   FRHBCA(H, A0, A1, STAT)                           _set_rayleigh
 !   FRHBJF(H, M, NDOF, J, KT, MUN, STAT)              _set_elements (given J transposed)
 !   FRHBIW(H, M, NDOF, J, NS, K, PHI, STAT)           _set_iwan (J transposed, K(NS, M))
+!   FRHBLO(H, M, NDOF, JT, JN, KT, MU, N0, KN, STAT)  _set_normal_elements (JT, JN transposed)
 !   FRHBPF(H, NDOF, PC, PS, STAT)                     _set_excitation
 !   FRHBNT(H, TOL, MAXIT, STAT)                       _set_newton
 !   FRHBCT(H, DS, DSMIN, DSMAX, MAXPT, STAT)          _set_continuation
@@ -161,6 +162,37 @@ subroutine frhbiw(h, m, ndof, j, ns, k, phi, stat)
   stat = int(fricreg_hb_set_iwan(fricreg_handle_to_ptr(h), int(m, c_size_t), &
                                  int(ndof, c_size_t), jt, int(ns, c_size_t), k, phi))
 end subroutine frhbiw
+
+!> FRHBLO(H, M, NDOF, JT, JN, KT, MU, N0, KN, STAT): Jenkins elements under a normal load with
+!> lift-off instead, JT(M, NDOF) and JN(M, NDOF) the tangential and normal rows as FRHBJF's J,
+!> KT(M) > 0, MU(M) >= 0, N0(M) the preloads, KN(M) >= 0: the normal force MAX(0, N0 + KN G),
+!> the slip bound MU N. Q then has 2 M columns (NQ = 2 M NC): column 2I - 1 element I's U,
+!> column 2I its G. Each element setter replaces the others.
+subroutine frhblo(h, m, ndof, jt, jn, kt, mu, n0, kn, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m, ndof
+  double precision, intent(in) :: jt(max(m, 0), *), jn(max(m, 0), *), kt(*), mu(*), n0(*), kn(*)
+  integer, intent(out) :: stat
+  double precision, allocatable :: ct(:, :), cn(:, :)
+  integer :: mm, nn, alloc
+  ! Sizes that cannot be the driver's copy nothing: C answers FRICREG_ESIZE.
+  mm = max(m, 0)
+  nn = max(ndof, 0)
+  allocate (ct(nn, mm), cn(nn, mm), stat=alloc)
+  if (alloc /= 0) then
+    stat = int(FRICREG_ENOMEM)
+    return
+  end if
+  if (mm > 0 .and. nn > 0) then
+    ct = transpose(jt(1:mm, 1:nn))
+    cn = transpose(jn(1:mm, 1:nn))
+  end if
+  stat = int(fricreg_hb_set_normal_elements(fricreg_handle_to_ptr(h), int(m, c_size_t), &
+                                            int(ndof, c_size_t), ct, cn, kt, mu, n0, kn))
+end subroutine frhblo
 
 !> FRHBPF(H, NDOF, PC, PS, STAT): the excitation PC(NDOF) cos(OMEGA t) + PS(NDOF)
 !> sin(OMEGA t), force units.

@@ -43,6 +43,8 @@
  * K, or eliminate the mode, before calling. Likewise each D_h (h = 1..H) must be nonsingular:
  * a structure without damping has no finite response where hΩ is one of its own (the
  * elements removed) natural frequencies; give C (or Rayleigh damping) at least a little.
+ * Elements with a normal load and lift-off (fricreg_hb_set_normal_elements) have two rows of J
+ * each, tangential and normal, and the same equations with F_h = (f_h, N_h) on both.
  *
  * Cost per frequency: H + 1 complex LU factors of ndof x ndof and (H + 1)(m + 1) solves, then
  * per Newton iteration m AFTs (O(H³) each) and a real LU of order m (2H + 1)
@@ -238,6 +240,49 @@ FRICREG_API int fricreg_hb_set_elements(fricreg_hb *hb, size_t m, size_t ndof, c
 FRICREG_API int fricreg_hb_set_iwan(fricreg_hb *hb, size_t m, size_t ndof, const double J[],
                                     size_t ns, const double k[], const double phi[]);
 
+/** Set Jenkins elements under a normal load with lift-off instead: element i has a
+ *  tangential relative displacement u_i = Jt_i x and a normal one g_i = Jn_i x (positive when
+ *  the surfaces press together), the normal force N_i = max(0, N0_i + kn_i g_i) (the normal
+ *  spring acts only in contact, g_i < −N0_i/kn_i opens it) and the tangential force f_i of a
+ *  Jenkins element of stiffness kt_i with the slip bound mu_i N_i(θ), 0 while open (the law of
+ *  fricreg_jenkins_trial_normal, fricreg_jenkins.h). The forces act on the structure as
+ *  Jt^T f + Jn^T N in the model of the header comment (N0 included: a preload pushes the
+ *  structure apart along Jn). In the residual each element's f and N coefficients and their
+ *  exact Jacobian with respect to (u, g) come from fricreg_aft_jenkins_normal_exact. The
+ *  condensation is on both coordinates: 2 m rows of J (element i's rows 2i tangential, 2i + 1
+ *  normal), nq = 2 m (2H + 1) unknowns for fricreg_hb_solve and fricreg_hb_continue, element
+ *  i's u coefficients at q[2 (2H+1) i ..] and its g coefficients right after them, at
+ *  q[(2i + 1)(2H + 1) ..]. With kn = 0 and N0 >= 0 the element is fricreg_hb_set_elements's
+ *  with mun = mu N0 (on the tangential rows; g then carries no force). The static term now has
+ *  the load −Jn^T N_0: K x0 = −Jt^T f_0 − Jn^T N_0.
+ *
+ *  Replaces the elements of fricreg_hb_set_elements and fricreg_hb_set_iwan, which replace
+ *  these in turn (back to m rows, nq = m (2H + 1)); one kind of element per driver.
+ *
+ *  m            must equal the driver's element count.
+ *  ndof         must equal the driver's degrees of freedom.
+ *  Jt[m ndof]   row-major, tangential rows as fricreg_hb_set_elements's J: finite, each row
+ *               non-zero.
+ *  Jn[m ndof]   row-major, normal rows, likewise.
+ *  kt[m]        tangential stiffnesses > 0 (finite), force per unit displacement.
+ *  mu[m]        friction coefficients >= 0 (finite), nondimensional.
+ *  n0[m]        preloads N0 (finite), force units: N at g = 0 (negative: a gap −N0/kn).
+ *  kn[m]        normal stiffnesses >= 0 (finite), force per unit displacement; 0: N = max(0, N0).
+ *
+ *  Allocates 4 m doubles, and the first time the buffers for 2 m rows (the solves Y_h, the
+ *  condensation G_h and Newton's matrix of order 2 m (2H + 1): O(H m ndof + (m H)²) doubles),
+ *  which stay for the driver's life (the previous ones freed on success).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb, Jt, Jn, kt, mu, n0 or kn is NULL; FRICREG_ESIZE if
+ *  m or ndof is not the driver's; FRICREG_ENONFINITE if an entry is NaN or infinite;
+ *  FRICREG_EINVAL if a row of Jt or Jn is zero, some kt[i] <= 0, mu[i] < 0 or kn[i] < 0;
+ *  FRICREG_ENOMEM. All inputs are checked before anything changes, and nothing changes on
+ *  failure. Since 1.6 (FRICREG_1.6). */
+FRICREG_API int fricreg_hb_set_normal_elements(fricreg_hb *hb, size_t m, size_t ndof,
+                                               const double Jt[], const double Jn[],
+                                               const double kt[], const double mu[],
+                                               const double n0[], const double kn[]);
+
 /** Set the harmonic excitation of the fundamental, p(t) = pc cos Ωt + ps sin Ωt.
  *
  *  ndof      must equal the driver's degrees of freedom.
@@ -284,17 +329,18 @@ FRICREG_API int fricreg_hb_set_continuation(fricreg_hb *hb, double ds, double ds
  *  The solution is kept for fricreg_hb_displacement.
  *
  *  omega        excitation circular frequency Ω > 0 (finite), 1/time (rad/s).
- *  nq           must equal m (2H + 1).
+ *  nq           must equal m (2H + 1), or 2 m (2H + 1) with fricreg_hb_set_normal_elements.
  *  q0[nq]       guess, or NULL: element i's coefficients (q0, a_1, b_1, ..., a_H, b_H) at
- *               q0[(2H+1) i .. (2H+1) i + 2H], displacement units; finite.
+ *               q0[(2H+1) i .. (2H+1) i + 2H] (with lift-off: row i of J's, rows 2i and
+ *               2i + 1 element i's u and g), displacement units; finite.
  *  q[nq]        out: the solution, in the same layout. May alias q0.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if hb or q is NULL; FRICREG_EINVAL if omega <= 0 or
  *  the elements were not set; FRICREG_ENONFINITE if omega or some q0[j] is NaN or infinite,
  *  or an intermediate overflows (a model, element or excitation scale near the double range:
  *  D_h itself or its solves, or fricreg_aft_jenkins_exact's bound on 8 kt sum |q|);
- *  FRICREG_ESIZE if nq is not m (2H + 1); FRICREG_ESINGULAR if K or some D_h(Ω) is singular
- *  (dense: a pivot of its LU factor below 1e-14 of the largest entry of |K| + (hΩ)² |M| +
+ *  FRICREG_ESIZE if nq is not m (2H + 1) (2 m (2H + 1) with lift-off); FRICREG_ESINGULAR if
+ *  K or some D_h(Ω) is singular (dense: a pivot of its LU factor below 1e-14 of the largest entry of |K| + (hΩ)² |M| +
  *  hΩ |C|; sparse: UMFPACK's smallest over largest pivot below 1e-14, or its singular
  *  warning; header comment), or Newton's matrix is; FRICREG_ENOMEM (a sparse model: UMFPACK's
  *  analysis or factor); FRICREG_EWORK if Newton did not converge within max_iter iterations
@@ -335,7 +381,8 @@ FRICREG_API int fricreg_hb_displacement(fricreg_hb *hb, size_t ndof, size_t nc, 
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if hb is NULL; FRICREG_EINVAL if omega0 or omega1 <= 0,
  *  they are equal, or the elements were not set; FRICREG_ENONFINITE if omega0, omega1 or some
- *  q0[j] is NaN or infinite, or an intermediate overflows (as fricreg_hb_solve); FRICREG_ESIZE if nq is not m (2H + 1); FRICREG_ESINGULAR,
+ *  q0[j] is NaN or infinite, or an intermediate overflows (as fricreg_hb_solve); FRICREG_ESIZE
+ *  if nq is not fricreg_hb_solve's; FRICREG_ESINGULAR,
  *  FRICREG_EWORK, FRICREG_EINTEGRATOR as fricreg_hb_solve at omega0; FRICREG_EINTEGRATOR if
  *  the step fell below ds_min; FRICREG_EWORK if max_points were stored before omega1;
  *  FRICREG_ENOMEM (for the first 64 points before anything changed; for more, later, with the

@@ -43,6 +43,7 @@
 #include "fricreg_disk_ctx.h"
 #include "fricreg_stribeck.h"
 #include "fricreg_exact.h"
+#include "fricreg_hb.h"
 #include "fricreg_iwan.h"
 #include "fricreg_jenkins.h"
 #include "fricreg_sim.h"
@@ -86,6 +87,7 @@ struct fixture {
     fricreg_jenkins *jk;      /* one 2-D Jenkins element after a committed slip */
     fricreg_iwan *iw;         /* one 2-D Iwan element of 3 sliders after a committed slip */
     fricreg_aft *aft;         /* an AFT workspace of H = 2 harmonics and N = 16 samples */
+    fricreg_hb *hb;           /* an HB driver of 2 dofs, 1 element, H = 2 */
     double out[NOUT][OUTLEN]; /* outputs, all sentinel before the call */
     void *handle_out;         /* a create's out, sentinel before the call */
     double arr[8][OUTLEN];    /* input arrays of the call (perturbed copies) */
@@ -146,6 +148,7 @@ static void fixture_make(struct fixture *fx)
     ck_assert_int_eq(fricreg_iwan_commit(fx->iw), FRICREG_OK);
 
     ck_assert_int_eq(fricreg_aft_create(2, 16, &fx->aft), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_create(2, 1, 2, &fx->hb), FRICREG_OK);
 
     memset(fx->out, SENTINEL_BYTE, sizeof fx->out);
     memset(&fx->handle_out, SENTINEL_BYTE, sizeof fx->handle_out);
@@ -161,6 +164,7 @@ static void fixture_free(struct fixture *fx)
     fricreg_jenkins_free(fx->jk);
     fricreg_iwan_free(fx->iw);
     fricreg_aft_free(fx->aft);
+    fricreg_hb_free(fx->hb);
 }
 
 static int untouched(const void *p, size_t bytes)
@@ -896,6 +900,16 @@ static int w_iw_get_slider(void)
     return fricreg_iwan_get_slider(IW(), Z(0, 1), Z(1, 3), OUTD(1));
 }
 
+/* fricreg_hb.h: 2 dofs, one element with lift-off */
+static int w_hb_set_normal_elements(void)
+{
+    const double Jt[2] = {1.0, 0.5}, Jn[2] = {0.25, -1.0}, kt[1] = {1.7}, mu[1] = {0.5},
+                 n0[1] = {0.6}, kn[1] = {3.0};
+    fricreg_hb *hb = is(K_PTR, 9) ? NULL : FX_->hb;
+    return fricreg_hb_set_normal_elements(hb, Z(0, 1), Z(1, 2), A(1, Jt, 2), A(2, Jn, 2),
+                                          A(3, kt, 1), A(4, mu, 1), A(5, n0, 1), A(6, kn, 1));
+}
+
 /* ---- The table ---------------------------------------------------------------------------- */
 
 /* The object a call records its failures in (a const getter records none). */
@@ -959,7 +973,8 @@ enum owner {
     EXSTUCK_REC,
     JK_REC,
     IW_REC,
-    AFT_REC
+    AFT_REC,
+    HB_REC
 };
 
 #define MAXARGS 13
@@ -1382,6 +1397,14 @@ static const struct row rows[] = {
      AFT_REC,
      {HANDLE, COUNT(0, "ioxx"), PTR(1, "0"), ARR(1, "nniion"), PTR(2, "0"), ARR(2, "nniooo"),
       SIZE(0, "ssss"), PTR(3, "0"), ARR(3, "nnooon"), PTR(4, "0"), PTR(5, "o")}},
+    /* fricreg_hb.h (Jt's and Jn's elements: test_hb_liftoff, for the 13 arguments here) */
+    {"fricreg_hb_set_normal_elements",
+     w_hb_set_normal_elements,
+     "0snim",
+     HB_REC,
+     {HANDLE, SIZE(0, "ssss"), SIZE(1, "ssss"), PTR(1, "0"), PTR(2, "0"), PTR(3, "0"),
+      ARR(3, "nniioo"), PTR(4, "0"), ARR(4, "nniooo"), PTR(5, "0"), ARR(5, "nnoooo"), PTR(6, "0"),
+      ARR(6, "nniooo")}},
     /* fricreg_exact.h */
     {"fricreg_exact_solve",
      w_exact_solve,
@@ -1703,6 +1726,7 @@ static int recorded(enum owner owner, const struct fixture *fx)
     case JK_REC: return fricreg_jenkins_errcode(fx->jk);
     case IW_REC: return fricreg_iwan_errcode(fx->iw);
     case AFT_REC: return fricreg_aft_errcode(fx->aft);
+    case HB_REC: return fricreg_hb_errcode(fx->hb);
     default: return -1;
     }
 }
@@ -1719,6 +1743,7 @@ static const char *message(enum owner owner, const struct fixture *fx)
     case JK_REC: return fricreg_jenkins_errmsg(fx->jk);
     case IW_REC: return fricreg_iwan_errmsg(fx->iw);
     case AFT_REC: return fricreg_aft_errmsg(fx->aft);
+    case HB_REC: return fricreg_hb_errmsg(fx->hb);
     default: return fricreg_structure_errmsg(fx->st);
     }
 }

@@ -17,7 +17,7 @@ program test_hb
   type(c_ptr) :: p
   real(c_double), parameter :: w = 1.2_c_double
   real(c_double) :: q(7, 1), x(7, 1), d, c, rms(1), omega, big, qc(7, 1), q2(7, 1), bad(5, 1)
-  real(c_double) :: M2(2, 2), K2(2, 2), J2(1, 2), Jrow(2)
+  real(c_double) :: M2(2, 2), K2(2, 2), J2(1, 2), Jrow(2), Jn2(1, 2), qn(7, 2)
   integer :: k
 
   call check_status(hb%create(1, 1, 3), FRICREG_OK, 'create')
@@ -96,6 +96,26 @@ program test_hb
   call check(all(q2 == qc), 'one slider equals the Jenkins element bit for bit')
   call check_status(chain%set_iwan(J2, reshape([4.0_c_double, 1.0_c_double], [2, 1]), &
                                    reshape([0.1_c_double], [1, 1])), FRICREG_ESIZE, 'phi (1, 1)')
+  ! lift-off with kn = 0: the Jenkins element of mun = mu N0 on u's harmonics (the preload only
+  ! moves the mean); q has two columns, u then g
+  Jn2(1, :) = [0.0_c_double, 1.0_c_double]
+  call check_status(chain%set_normal_elements(J2, Jn2, [4.0_c_double], [0.2_c_double], &
+                                              [0.5_c_double], [0.0_c_double]), FRICREG_OK, &
+                    'set_normal_elements')
+  call check_status(chain%solve(1.1_c_double, qc), FRICREG_ESIZE, 'q with m columns')
+  call check_status(chain%solve(1.1_c_double, qn), FRICREG_OK, 'lift-off solve')
+  call check(maxval(abs(qn(2:7, 1) - q2(2:7, 1))) <= 1e-12_c_double * maxval(abs(q2)), &
+             'kn = 0 is the Jenkins element of mun = mu N0')
+  call check_status(chain%set_normal_elements(J2, Jn2, [4.0_c_double], [-0.2_c_double], &
+                                              [0.5_c_double], [0.0_c_double]), FRICREG_EINVAL, &
+                    'mu < 0')
+  call check_status(chain%set_normal_elements(J2, J2, [4.0_c_double], [0.2_c_double], &
+                                              [0.5_c_double, 1.0_c_double], [0.0_c_double]), &
+                    FRICREG_ESIZE, 'n0(2)')
+  call check_status(chain%set_elements(J2, [4.0_c_double], [0.1_c_double]), FRICREG_OK, &
+                    'back to Jenkins elements')
+  call check_status(chain%solve(1.1_c_double, qc), FRICREG_OK, 'Jenkins solve again')
+  call check(all(q2 == qc), 'back to m columns, the Jenkins solution bit for bit')
   call chain%destroy()
   call finish('test_hb')
 end program test_hb

@@ -20,6 +20,93 @@ static void *alloc_doubles(size_t count)
     return malloc((count ? count : 1) * sizeof(double));
 }
 
+/* The buffers sized by the rows of J, for cap rows of me elements (at most cap/me rows each):
+ * J's block (J [cap n], kt, mun [me], pc, ps [n]), Y, Z (with colw), G (with ql, dG, dql),
+ * fq's block (fq, jq, A, R, rw, dy, qw, qt, tan, yp, qsol) and perm2. All or none. */
+struct rows_buffers {
+    double *J, *Y, *Z, *G, *fq;
+    gsl_permutation *perm2;
+};
+
+static void free_rows(struct rows_buffers *b)
+{
+    free(b->J);
+    free(b->Y);
+    free(b->Z);
+    free(b->G);
+    free(b->fq);
+    free(b->perm2);
+}
+
+static int alloc_rows(const fricreg_hb *hb, size_t cap, struct rows_buffers *b)
+{
+    size_t n = hb->n, me = hb->me, H1 = (size_t)hb->H + 1, nc = hb->nc, nq = cap * nc;
+    *b = (struct rows_buffers){0};
+    b->J = alloc_doubles(cap * n + 2 * me + 2 * n);
+    b->Y = alloc_doubles(2 * H1 * n * (cap + 1));
+    b->Z = alloc_doubles(2 * n * (cap + 1) + 2 * n);
+    b->G = alloc_doubles(4 * H1 * cap * cap + 4 * H1 * cap);
+    b->fq = alloc_doubles(nq + cap * (cap / me) * nc * nc + (nq + 1) * (nq + 1) + 8 * (nq + 1) +
+                          nq);
+    b->perm2 = fr_gsl_permutation_new(nq + 1);
+    if (!b->J || !b->Y || !b->Z || !b->G || !b->fq || !b->perm2) {
+        free_rows(b);
+        return FRICREG_ENOMEM;
+    }
+    memset(b->J, 0, (cap * n + 2 * me + 2 * n) * sizeof(double));
+    return FRICREG_OK;
+}
+
+/* Installs b (room for cap rows), the excitation and the Jenkins parameters carried over from
+ * the buffers it replaces, if any. */
+static void install_rows(fricreg_hb *hb, size_t cap, struct rows_buffers *b)
+{
+    size_t n = hb->n, me = hb->me;
+    if (hb->J != NULL)
+        memcpy(b->J + cap * n, hb->kt, (2 * me + 2 * n) * sizeof(double));
+    free(hb->J);
+    free(hb->Y);
+    free(hb->Z);
+    free(hb->G);
+    free(hb->fq);
+    free(hb->perm2);
+    hb->J = b->J;
+    hb->Y = b->Y;
+    hb->Z = b->Z;
+    hb->G = b->G;
+    hb->fq = b->fq;
+    hb->perm2 = b->perm2;
+    hb->rows_cap = cap;
+    hb->kt = hb->J + cap * n;
+    hb->mun = hb->kt + me;
+    hb->pc = hb->mun + me;
+    hb->ps = hb->pc + n;
+}
+
+/* The views into the buffers for rpe rows per element (m = rpe me rows, nq = m nc). */
+static void set_rows(fricreg_hb *hb, size_t rpe)
+{
+    size_t n = hb->n, H1 = (size_t)hb->H + 1, nc = hb->nc;
+    size_t m = rpe * hb->me, nq = m * nc;
+    hb->rpe = rpe;
+    hb->m = m;
+    hb->nq = nq;
+    hb->colw = hb->Z + 2 * n * (m + 1);
+    hb->ql = hb->G + 2 * H1 * m * m;
+    hb->dG = hb->ql + 2 * H1 * m;
+    hb->dql = hb->dG + 2 * H1 * m * m;
+    hb->jq = hb->fq + nq;
+    hb->A = hb->jq + m * rpe * nc * nc;
+    hb->R = hb->A + (nq + 1) * (nq + 1);
+    hb->rw = hb->R + (nq + 1);
+    hb->dy = hb->rw + (nq + 1);
+    hb->qw = hb->dy + (nq + 1);
+    hb->qt = hb->qw + (nq + 1);
+    hb->tan = hb->qt + (nq + 1);
+    hb->yp = hb->tan + (nq + 1);
+    hb->qsol = hb->yp + 2 * (nq + 1);
+}
+
 int fricreg_hb_create(size_t ndof, size_t m, int harmonics, fricreg_hb **out)
 {
     if (out == NULL)
@@ -30,12 +117,11 @@ int fricreg_hb_create(size_t ndof, size_t m, int harmonics, fricreg_hb **out)
     fricreg_hb *hb = calloc(1, sizeof *hb);
     if (hb == NULL)
         return FRICREG_ENOMEM;
-    size_t n = ndof, H1 = (size_t)harmonics + 1, nc = 2 * (size_t)harmonics + 1, nq = m * nc;
+    size_t n = ndof, nc = 2 * (size_t)harmonics + 1;
     *hb = (fricreg_hb){.n = n,
-                       .m = m,
+                       .me = m,
                        .H = harmonics,
                        .nc = nc,
-                       .nq = nq,
                        .ns = 1,
                        .tol = 1e-10,
                        .max_iter = 50,
@@ -47,19 +133,16 @@ int fricreg_hb_create(size_t ndof, size_t m, int harmonics, fricreg_hb **out)
     /* up to 4096 dofs the dense model, as the dense setters leave it; beyond, sparse only */
     int dense = n <= MAX_DENSE_DOFS;
     hb->M = dense ? calloc(3 * n * n, sizeof(double)) : NULL; /* untouched until set */
-    hb->J = alloc_doubles(m * n + 2 * m + 2 * n);
     hb->D = dense ? alloc_doubles(2 * n * n) : NULL;
-    hb->Y = alloc_doubles(2 * H1 * n * (m + 1));
-    hb->Z = alloc_doubles(2 * n * (m + 1) + 2 * n);
-    hb->G = alloc_doubles(4 * H1 * m * m + 4 * H1 * m);
-    hb->fq = alloc_doubles(nq + m * nc * nc + (nq + 1) * (nq + 1) + 8 * (nq + 1) + nq);
     hb->perm = dense ? fr_gsl_permutation_new(n) : NULL;
-    hb->perm2 = fr_gsl_permutation_new(nq + 1);
+    struct rows_buffers b;
+    int rows = alloc_rows(hb, m, &b);
+    if (rows == FRICREG_OK)
+        install_rows(hb, m, &b);
     int status = fricreg_aft_create(harmonics, 0, &hb->aft);
     int started = fr_cholmod_start(&hb->cc) == FRICREG_OK;
-    if ((dense && (!hb->M || !hb->D || !hb->perm)) || !hb->J || !hb->Y || !hb->Z || !hb->G ||
-        !hb->fq || !hb->perm2 || status != FRICREG_OK || !started ||
-        (!dense && fr_hb_sparse_defaults(hb) != FRICREG_OK)) {
+    if ((dense && (!hb->M || !hb->D || !hb->perm)) || rows != FRICREG_OK || status != FRICREG_OK ||
+        !started || (!dense && fr_hb_sparse_defaults(hb) != FRICREG_OK)) {
         fricreg_hb_free(hb);
         return FRICREG_ENOMEM;
     }
@@ -69,25 +152,7 @@ int fricreg_hb_create(size_t ndof, size_t m, int harmonics, fricreg_hb **out)
         for (size_t k = 0; k < n; k++)
             hb->M[k * n + k] = 1.0;
     }
-    hb->kt = hb->J + m * n;
-    hb->mun = hb->kt + m;
-    hb->pc = hb->mun + m;
-    hb->ps = hb->pc + n;
-    memset(hb->J, 0, (m * n + 2 * m + 2 * n) * sizeof(double));
-    hb->colw = hb->Z + 2 * n * (m + 1);
-    hb->ql = hb->G + 2 * H1 * m * m;
-    hb->dG = hb->ql + 2 * H1 * m;
-    hb->dql = hb->dG + 2 * H1 * m * m;
-    hb->jq = hb->fq + nq;
-    hb->A = hb->jq + m * nc * nc;
-    hb->R = hb->A + (nq + 1) * (nq + 1);
-    hb->rw = hb->R + (nq + 1);
-    hb->dy = hb->rw + (nq + 1);
-    hb->qw = hb->dy + (nq + 1);
-    hb->qt = hb->qw + (nq + 1);
-    hb->tan = hb->qt + (nq + 1);
-    hb->yp = hb->tan + (nq + 1);
-    hb->qsol = hb->yp + 2 * (nq + 1);
+    set_rows(hb, 1);
     *out = hb;
     return FRICREG_OK;
 }
@@ -108,6 +173,7 @@ void fricreg_hb_free(fricreg_hb *hb)
     free(hb->pts);
     fricreg_aft_free(hb->aft);
     free(hb->sk);
+    free(hb->nl);
     fr_hb_sparse_free(hb);
     fr_cholmod_finish(&hb->cc);
     free(hb);
@@ -199,25 +265,34 @@ int fricreg_hb_set_rayleigh(fricreg_hb *hb, double a0, double a1)
     return FRICREG_OK;
 }
 
-/* The checks set_elements and set_iwan share: the sizes and J (finite, no zero row). */
-static int check_rows(fricreg_hb *hb, const char *fn, size_t m, size_t ndof, const double *J)
+/* The checks the element setters share: the sizes and J (finite, no zero row), named name. */
+static int check_rows(fricreg_hb *hb, const char *fn, size_t m, size_t ndof, const double *J,
+                      const char *name)
 {
-    if (m != hb->m)
-        return fr_fail(hb, FRICREG_ESIZE, "%s: m = %zu, the driver has %zu", fn, m, hb->m);
+    if (m != hb->me)
+        return fr_fail(hb, FRICREG_ESIZE, "%s: m = %zu, the driver has %zu", fn, m, hb->me);
     if (check_ndof(hb, fn, ndof) != FRICREG_OK)
         return FRICREG_ESIZE;
     for (size_t i = 0; i < m; i++) {
         double norm = 0.0;
         for (size_t k = 0; k < ndof; k++) {
             if (!isfinite(J[i * ndof + k]))
-                return fr_fail(hb, FRICREG_ENONFINITE, "%s: J(%zu, %zu) = %g", fn, i, k,
+                return fr_fail(hb, FRICREG_ENONFINITE, "%s: %s(%zu, %zu) = %g", fn, name, i, k,
                                J[i * ndof + k]);
             norm += fabs(J[i * ndof + k]);
         }
         if (norm == 0.0)
-            return fr_fail(hb, FRICREG_EINVAL, "%s: row %zu of J is zero", fn, i);
+            return fr_fail(hb, FRICREG_EINVAL, "%s: row %zu of %s is zero", fn, i, name);
     }
     return FRICREG_OK;
+}
+
+/* Jenkins or Iwan elements: one row each, the normal elements' parameters dropped. */
+static void one_row_elements(fricreg_hb *hb)
+{
+    free(hb->nl);
+    hb->nl = NULL;
+    set_rows(hb, 1);
 }
 
 /* The sliders' parameters: finite, stiffness > 0, slip force >= 0. */
@@ -245,7 +320,7 @@ int fricreg_hb_set_elements(fricreg_hb *hb, size_t m, size_t ndof, const double 
                        J == NULL    ? "J"
                        : kt == NULL ? "kt"
                                     : "mun");
-    int status = check_rows(hb, "set_elements", m, ndof, J);
+    int status = check_rows(hb, "set_elements", m, ndof, J, "J");
     if (status == FRICREG_OK)
         status = check_sliders(hb, "set_elements", m, kt, mun, "kt", "mun");
     if (status != FRICREG_OK)
@@ -256,6 +331,7 @@ int fricreg_hb_set_elements(fricreg_hb *hb, size_t m, size_t ndof, const double 
     free(hb->sk); /* Jenkins elements: one slider each, kt and mun */
     hb->sk = NULL;
     hb->ns = 1;
+    one_row_elements(hb);
     hb->have_elements = 1;
     invalidate(hb);
     return FRICREG_OK;
@@ -272,7 +348,7 @@ int fricreg_hb_set_iwan(fricreg_hb *hb, size_t m, size_t ndof, const double J[],
                        J == NULL   ? "J"
                        : k == NULL ? "k"
                                    : "phi");
-    int status = check_rows(hb, fn, m, ndof, J);
+    int status = check_rows(hb, fn, m, ndof, J, "J");
     if (status != FRICREG_OK)
         return status;
     if (ns < 1 || ns > FRICREG_HB_MAX_SLIDERS)
@@ -289,6 +365,62 @@ int fricreg_hb_set_iwan(fricreg_hb *hb, size_t m, size_t ndof, const double J[],
     free(hb->sk);
     hb->sk = sk;
     hb->ns = ns;
+    one_row_elements(hb);
+    hb->have_elements = 1;
+    invalidate(hb);
+    return FRICREG_OK;
+}
+
+int fricreg_hb_set_normal_elements(fricreg_hb *hb, size_t m, size_t ndof, const double Jt[],
+                                   const double Jn[], const double kt[], const double mu[],
+                                   const double n0[], const double kn[])
+{
+    static const char fn[] = "set_normal_elements";
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    const void *args[6] = {Jt, Jn, kt, mu, n0, kn};
+    static const char *const names[6] = {"Jt", "Jn", "kt", "mu", "n0", "kn"};
+    for (int a = 0; a < 6; a++)
+        if (args[a] == NULL)
+            return fr_fail(hb, FRICREG_ENULL, "%s: %s is NULL", fn, names[a]);
+    int status = check_rows(hb, fn, m, ndof, Jt, "Jt");
+    if (status == FRICREG_OK)
+        status = check_rows(hb, fn, m, ndof, Jn, "Jn");
+    if (status != FRICREG_OK)
+        return status;
+    for (size_t i = 0; i < m; i++) {
+        if (!isfinite(kt[i]) || !isfinite(mu[i]) || !isfinite(n0[i]) || !isfinite(kn[i]))
+            return fr_fail(hb, FRICREG_ENONFINITE,
+                           "%s: kt[%zu] = %g, mu[%zu] = %g, n0[%zu] = %g, kn[%zu] = %g", fn, i,
+                           kt[i], i, mu[i], i, n0[i], i, kn[i]);
+        if (!(kt[i] > 0.0) || !(mu[i] >= 0.0) || !(kn[i] >= 0.0))
+            return fr_fail(hb, FRICREG_EINVAL,
+                           "%s: kt[%zu] = %g must be > 0, mu[%zu] = %g >= 0, kn[%zu] = %g >= 0", fn,
+                           i, kt[i], i, mu[i], i, kn[i]);
+    }
+    /* two rows an element: the buffers sized by the rows grow once (and stay) */
+    struct rows_buffers b = {0};
+    double *nl = malloc(4 * m * sizeof *nl);
+    if (nl == NULL || (hb->rows_cap < 2 * m && alloc_rows(hb, 2 * m, &b) != FRICREG_OK)) {
+        free(nl);
+        return fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for %zu elements with lift-off", fn, m);
+    }
+    if (b.J != NULL)
+        install_rows(hb, 2 * m, &b);
+    for (size_t i = 0; i < m; i++) {
+        memcpy(hb->J + 2 * i * ndof, Jt + i * ndof, ndof * sizeof *Jt);
+        memcpy(hb->J + (2 * i + 1) * ndof, Jn + i * ndof, ndof * sizeof *Jn);
+    }
+    memcpy(nl, kt, m * sizeof *nl);
+    memcpy(nl + m, mu, m * sizeof *nl);
+    memcpy(nl + 2 * m, n0, m * sizeof *nl);
+    memcpy(nl + 3 * m, kn, m * sizeof *nl);
+    free(hb->nl);
+    hb->nl = nl;
+    free(hb->sk);
+    hb->sk = NULL;
+    hb->ns = 1;
+    set_rows(hb, 2);
     hb->have_elements = 1;
     invalidate(hb);
     return FRICREG_OK;

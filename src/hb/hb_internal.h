@@ -19,15 +19,18 @@
 #include "fricreg_hb.h"
 
 struct fricreg_hb {
-    size_t n, m;       /* dofs, elements */
+    size_t n, m;       /* dofs, rows of J (the condensation's coordinates) */
+    size_t me, rpe;    /* elements, rows per element: 1, or 2 (tangential, normal) on lift-off */
+    size_t rows_cap;   /* rows the buffers below hold: me, 2 me once normal elements were set */
     int H;             /* harmonics */
     size_t nc, nq;     /* 2H + 1 coefficients, m nc unknowns */
     double *M, *C, *K; /* [n n] each, row-major, symmetric (dense models; NULL above 4096) */
     int rayleigh;      /* C = a0 M + a1 K instead of the matrix C */
     double a0, a1;
-    double *J, *kt, *mun; /* [m n], [m], [m] */
+    double *J, *kt, *mun; /* [m n] (room for rows_cap rows), [me], [me] */
     size_t ns;            /* sliders per element: 1 (Jenkins, kt and mun) or set_iwan's */
-    double *sk;           /* set_iwan's [m ns] stiffnesses then [m ns] slip forces; NULL: Jenkins */
+    double *sk; /* set_iwan's [me ns] stiffnesses then [me ns] slip forces; NULL: Jenkins */
+    double *nl; /* set_normal_elements' [4 me]: kt, mu, n0, kn; NULL: none */
     int have_elements;
     double *pc, *ps; /* [n] excitation of the fundamental */
 
@@ -71,7 +74,7 @@ struct fricreg_hb {
 
     /* Newton (residual.c, newton.c, continuation.c) */
     double *fq;             /* [nq] element force coefficients at the last evaluation */
-    double *jq;             /* [m nc nc] their Jacobians */
+    double *jq;             /* [me (rpe nc)²] their Jacobians, one block per element */
     double *R;              /* [nq + 1] residual (continuation: the arclength equation last) */
     double *A;              /* [(nq + 1)^2] Newton's matrix, LU-factored in place */
     double *rw;             /* [nq + 1] dR/dΩ, then scratch */
@@ -105,7 +108,7 @@ static inline size_t fr_hb_sliders(const fricreg_hb *hb, size_t e, const double 
         return 1;
     }
     *k = hb->sk + e * hb->ns;
-    *phi = hb->sk + (hb->m + e) * hb->ns;
+    *phi = hb->sk + (hb->me + e) * hb->ns;
     return hb->ns;
 }
 
@@ -139,7 +142,7 @@ int fr_hb_lu_solve(fricreg_hb *hb, const char *fn, size_t nd, double *rhs, doubl
  * (R) into R[nq] at the factored Ω. FRICREG_OK or FRICREG_EINTEGRATOR (the AFT). */
 int fr_hb_residual(fricreg_hb *hb, const char *fn, const double *q, double *R, int jac);
 
-/* Newton's matrix I + G ∂F/∂q from the Jacobian blocks jac[m nc nc], into A with leading
+/* Newton's matrix I + G ∂F/∂q from the Jacobian blocks jac[me (rpe nc)²], into A with leading
  * dimension ld (rows and columns 0..nq-1). */
 void fr_hb_matrix(fricreg_hb *hb, const double *jac, double *A, size_t ld);
 

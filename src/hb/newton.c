@@ -28,16 +28,24 @@ int fr_hb_guess(fricreg_hb *hb, const char *fn, int stuck)
 {
     size_t nq = hb->nq, nc = hb->nc;
     memset(hb->qt, 0, nq * sizeof(double));
-    int status = fr_hb_residual(hb, fn, hb->qt, hb->R, 0); /* F(0) = 0: R = −ql */
+    int status = fr_hb_residual(hb, fn, hb->qt, hb->R, 0); /* R = G F(0) − ql */
     if (status != FRICREG_OK)
         return status;
     for (size_t j = 0; j < nq; j++)
         hb->qw[j] = -hb->R[j];
     if (!stuck)
         return FRICREG_OK;
-    /* the centred stick: f_h = kt q_h for h >= 1, f_0 = 0 (fricreg_aft.h) */
-    memset(hb->jq, 0, hb->m * nc * nc * sizeof(double));
-    for (size_t e = 0; e < hb->m; e++) {
+    /* the centred stick: f_h = kt q_h for h >= 1, f_0 = 0 (fricreg_aft.h); with lift-off
+     * closed too, N = N0 + kn g on every harmonic */
+    size_t b = hb->rpe * nc, me = hb->me;
+    memset(hb->jq, 0, me * b * b * sizeof(double));
+    for (size_t e = 0; e < me && hb->nl != NULL; e++)
+        for (size_t c = 0; c < nc; c++) {
+            if (c > 0)
+                hb->jq[e * b * b + c * b + c] = hb->nl[e];
+            hb->jq[e * b * b + (nc + c) * b + nc + c] = hb->nl[3 * me + e];
+        }
+    for (size_t e = 0; e < me && hb->nl == NULL; e++) {
         const double *k, *phi;
         size_t ns = fr_hb_sliders(hb, e, &k, &phi);
         double kt = 0.0;
@@ -107,8 +115,9 @@ int fr_hb_check_start(fricreg_hb *hb, const char *fn, double omega, size_t nq, c
     if (!hb->have_elements)
         return fr_fail(hb, FRICREG_EINVAL, "%s: no elements (fricreg_hb_set_elements)", fn);
     if (nq != hb->nq)
-        return fr_fail(hb, FRICREG_ESIZE, "%s: nq = %zu, the driver has m (2H + 1) = %zu", fn, nq,
-                       hb->nq);
+        return fr_fail(hb, FRICREG_ESIZE,
+                       "%s: nq = %zu, the driver has %zu (%zu rows of J times 2H + 1)", fn, nq,
+                       hb->nq, hb->m);
     for (size_t j = 0; q0 != NULL && j < nq; j++)
         if (!isfinite(q0[j]))
             return fr_fail(hb, FRICREG_ENONFINITE, "%s: q0[%zu] = %g", fn, j, q0[j]);

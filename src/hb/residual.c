@@ -5,8 +5,10 @@
  *
  *     R_a = a + sum_e' (Gr fa + Gi fb) − Re ql,      R_b = b + sum_e' (Gr fb − Gi fa) + Im ql
  *
- * and R_0 = q0 + sum_e' G_0 f0 − ql_0 (real). The forces and their exact Jacobians come from
- * fricreg_aft_iwan_exact (a Jenkins element is one slider), one element at a time. */
+ * and R_0 = q0 + sum_e' G_0 f0 − ql_0 (real), e, e' rows of J. The forces and their exact
+ * Jacobians come from fricreg_aft_iwan_exact (a Jenkins element is one slider), or with lift-off
+ * fricreg_aft_jenkins_normal_exact (two rows: the tangential force f on u, the normal force N on
+ * g, one Jacobian block coupling them), one element at a time. */
 #include <math.h>
 #include <string.h>
 
@@ -46,12 +48,21 @@ static void apply(const fricreg_hb *hb, const double *G, const double *ql, const
 
 int fr_hb_residual(fricreg_hb *hb, const char *fn, const double *q, double *R, int jac)
 {
-    size_t nc = hb->nc;
-    for (size_t e = 0; e < hb->m; e++) {
-        const double *k, *phi;
-        size_t ns = fr_hb_sliders(hb, e, &k, &phi);
-        int status = fricreg_aft_iwan_exact(hb->aft, ns, k, phi, nc, q + e * nc, hb->fq + e * nc,
+    size_t nc = hb->nc, me = hb->me;
+    for (size_t e = 0; e < me; e++) {
+        int status;
+        if (hb->nl != NULL) {
+            const double *u = q + 2 * e * nc, *p = hb->nl;
+            double *f = hb->fq + 2 * e * nc;
+            status = fricreg_aft_jenkins_normal_exact(hb->aft, p[e], p[me + e], p[2 * me + e],
+                                                      p[3 * me + e], nc, u, u + nc, f, f + nc,
+                                                      jac ? hb->jq + 4 * e * nc * nc : NULL);
+        } else {
+            const double *k, *phi;
+            size_t ns = fr_hb_sliders(hb, e, &k, &phi);
+            status = fricreg_aft_iwan_exact(hb->aft, ns, k, phi, nc, q + e * nc, hb->fq + e * nc,
                                             jac ? hb->jq + e * nc * nc : NULL);
+        }
         if (status != FRICREG_OK)
             return fr_fail(hb, status, "%s: the AFT of element %zu failed: %s", fn, e,
                            fricreg_aft_errmsg(hb->aft));
@@ -69,22 +80,29 @@ void fr_hb_domega(fricreg_hb *hb, double *out)
 
 void fr_hb_matrix(fricreg_hb *hb, const double *jac, double *A, size_t ld)
 {
-    size_t m = hb->m, nc = hb->nc;
-    for (size_t e = 0; e < m; e++)
-        for (size_t e2 = 0; e2 < m; e2++)
+    /* row r of J against element e2's block: its rows r2 = rpe e2 + s, its Jacobian's rows
+     * (s nc + c) and columns the block's rpe nc unknowns */
+    size_t m = hb->m, nc = hb->nc, rpe = hb->rpe, b = rpe * nc;
+    for (size_t r = 0; r < m; r++)
+        for (size_t e2 = 0; e2 < hb->me; e2++)
             for (int h = 0; h <= hb->H; h++) {
-                const double *g = hb->G + 2 * ((size_t)h * m * m + e * m + e2);
-                const double *J2 = jac + e2 * nc * nc;
                 size_t ca = h == 0 ? 0 : 2 * (size_t)h - 1, cb = ca + 1;
-                double *ra = A + (e * nc + ca) * ld + e2 * nc,
-                       *rb = A + (e * nc + cb) * ld + e2 * nc;
-                for (size_t j = 0; j < nc; j++) {
-                    if (h == 0) {
-                        ra[j] = g[0] * J2[j];
-                        continue;
+                double *ra = A + (r * nc + ca) * ld + e2 * b, *rb = A + (r * nc + cb) * ld + e2 * b;
+                for (size_t j = 0; j < b; j++) {
+                    double sa = 0.0, sb = 0.0;
+                    for (size_t s = 0; s < rpe; s++) {
+                        const double *g = hb->G + 2 * ((size_t)h * m * m + r * m + rpe * e2 + s);
+                        const double *J2 = jac + e2 * b * b + s * nc * b;
+                        if (h == 0) {
+                            sa += g[0] * J2[j];
+                            continue;
+                        }
+                        sa += g[0] * J2[ca * b + j] + g[1] * J2[cb * b + j];
+                        sb += g[0] * J2[cb * b + j] - g[1] * J2[ca * b + j];
                     }
-                    ra[j] = g[0] * J2[ca * nc + j] + g[1] * J2[cb * nc + j];
-                    rb[j] = g[0] * J2[cb * nc + j] - g[1] * J2[ca * nc + j];
+                    ra[j] = sa;
+                    if (h > 0)
+                        rb[j] = sb;
                 }
             }
     for (size_t j = 0; j < hb->nq; j++)

@@ -1702,6 +1702,31 @@ static const struct script hb_iwan = {
     "hb set_iwan", 2,    hb_iwan_calls,   1,          0,       hb_iwan_open,
     hb_iwan_call,  NULL, hb_iwan_observe, hb_errcode, hb_close};
 
+/* Elements with lift-off: set_normal_elements twice (the first grows the buffers sized by the
+ * rows of J to two rows an element and allocates the parameters, the second only the
+ * parameters, the first's freed after); the view solves at one frequency (nq = 2 (2H + 1)). */
+static const char *const hb_normal_calls[] = {"set_normal_elements(grows)",
+                                              "set_normal_elements(again)"};
+
+static int hb_normal_call(void *obj, int i, struct view *v)
+{
+    (void)v;
+    const double Jt[2] = {0.0, 1.0}, Jn[2] = {-1.0, 0.0}, kt[1] = {1.5}, mu[1] = {0.4},
+                 n0[2] = {0.5, 0.3}, kn[1] = {2.0};
+    return fricreg_hb_set_normal_elements(obj, 1, 2, Jt, Jn, kt, mu, n0 + i, kn);
+}
+
+static void hb_normal_observe(void *obj, struct view *v)
+{
+    double q[14] = {0}; /* a failed call leaves it: the view must read the same */
+    see(v, fricreg_hb_solve(obj, 1.1, 14, NULL, q));
+    see_all(v, q, 14);
+}
+
+static const struct script hb_normal = {
+    "hb set_normal_elements", 2,    hb_normal_calls,   1,          0,       hb_iwan_open,
+    hb_normal_call,           NULL, hb_normal_observe, hb_errcode, hb_close};
+
 /* ---- The tests ------------------------------------------------------------------------------- */
 
 START_TEST(test_ctx_create)
@@ -1911,6 +1936,14 @@ END_TEST
 START_TEST(test_hb_iwan)
 {
     struct tally t = fail_each_allocation(&hb_iwan);
+    ck_assert_int_eq(t.enomem, t.cases);
+}
+END_TEST
+
+/* set_normal_elements' allocations fail cleanly: ENOMEM and the elements as before */
+START_TEST(test_hb_normal)
+{
+    struct tally t = fail_each_allocation(&hb_normal);
     ck_assert_int_eq(t.enomem, t.cases);
 }
 END_TEST
@@ -2237,6 +2270,7 @@ static Suite *alloc_suite(void)
     tcase_add_test(drivers, test_hb_create);
     tcase_add_test(drivers, test_hb_sparse);
     tcase_add_test(drivers, test_hb_iwan);
+    tcase_add_test(drivers, test_hb_normal);
     tcase_add_loop_test(drivers, test_structure_run, 0, N_SCHEMES);
     tcase_add_loop_test(drivers, test_structure_jenkins_run, 0, 3);
     suite_add_tcase(s, drivers);

@@ -21,11 +21,16 @@ int jenkins_newmark_rms(const struct jenkins_model *s, double omega, int N, int 
     double dt = 2.0 * PI / omega / N, beta = 0.25, gamma = 0.5;
     double x[MAXN] = {0}, v[MAXN] = {0}, a[MAXN] = {0}, xn[MAXN], an[MAXN], vn[MAXN];
     double q[MAXM], f[MAXM], df[MAXM], R[MAXN], Kt[MAXN * MAXN], dx[MAXN];
+    double g[MAXM], nf[MAXM], dfdg[MAXM], dndg[MAXM];
+    int opened[MAXM] = {0}, closed[MAXM] = {0};
     double sum[MAXN] = {0}, qmax[MAXM], qmin[MAXM], xscale = 0.0; /* largest |x| so far */
     int slips = 1;
     fricreg_jenkins *jk = NULL;
     ck_assert_int_eq(fricreg_jenkins_create(1, m, &jk), FRICREG_OK);
-    ck_assert_int_eq(fricreg_jenkins_set_params(jk, m, s->kt, s->mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_jenkins_set_params(jk, m, s->kt, s->normal ? s->mu : s->mun),
+                     FRICREG_OK);
+    if (s->normal)
+        ck_assert_int_eq(fricreg_jenkins_set_normal(jk, m, s->mu, s->n0, s->kn), FRICREG_OK);
     gsl_permutation *p = gsl_permutation_alloc(n);
     for (int step = 1; step <= periods * N; step++) {
         double t = step * dt, ct = cos(omega * t), st = sin(omega * t);
@@ -37,11 +42,21 @@ int jenkins_newmark_rms(const struct jenkins_model *s, double omega, int N, int 
                 vn[i] = v[i] + dt * ((1.0 - gamma) * a[i] + gamma * an[i]);
             }
             for (size_t e = 0; e < m; e++) {
-                q[e] = 0.0;
-                for (size_t k = 0; k < n; k++)
+                q[e] = g[e] = 0.0;
+                for (size_t k = 0; k < n; k++) {
                     q[e] += s->J[e * n + k] * xn[k];
+                    g[e] += s->Jn[e * n + k] * xn[k];
+                }
+                nf[e] = dfdg[e] = dndg[e] = 0.0;
             }
-            ck_assert_int_eq(fricreg_jenkins_trial(jk, m, q, f, df), FRICREG_OK);
+            if (s->normal) {
+                ck_assert_int_eq(fricreg_jenkins_trial_normal(jk, m, q, g, f, nf, df, dfdg),
+                                 FRICREG_OK);
+                for (size_t e = 0; e < m; e++)
+                    dndg[e] = s->n0[e] + s->kn[e] * g[e] >= 0.0 ? s->kn[e] : 0.0;
+            } else {
+                ck_assert_int_eq(fricreg_jenkins_trial(jk, m, q, f, df), FRICREG_OK);
+            }
             double rmax = 0.0;
             for (size_t i = 0; i < n; i++) {
                 R[i] = -(s->pc[i] * ct + s->ps[i] * st);
@@ -51,10 +66,12 @@ int jenkins_newmark_rms(const struct jenkins_model *s, double omega, int N, int 
                     Kt[i * n + k] = s->M[i * n + k] / (beta * dt * dt) +
                                     gamma / (beta * dt) * s->C[i * n + k] + s->K[i * n + k];
                     for (size_t e = 0; e < m; e++)
-                        Kt[i * n + k] += s->J[e * n + i] * df[e] * s->J[e * n + k];
+                        Kt[i * n + k] += s->J[e * n + i] * (df[e] * s->J[e * n + k] +
+                                                            dfdg[e] * s->Jn[e * n + k]) +
+                                         s->Jn[e * n + i] * dndg[e] * s->Jn[e * n + k];
                 }
                 for (size_t e = 0; e < m; e++)
-                    R[i] += s->J[e * n + i] * f[e];
+                    R[i] += s->J[e * n + i] * f[e] + s->Jn[e * n + i] * nf[e];
                 rmax = fmax(rmax, fabs(R[i]));
             }
             (void)rmax;
@@ -83,6 +100,8 @@ int jenkins_newmark_rms(const struct jenkins_model *s, double omega, int N, int 
             for (size_t i = 0; i < n; i++)
                 sum[i] += x[i] * x[i];
             for (size_t e = 0; e < m && step > (periods - 1) * N; e++) {
+                opened[e] |= s->n0[e] + s->kn[e] * g[e] < 0.0;
+                closed[e] |= s->n0[e] + s->kn[e] * g[e] >= 0.0;
                 qmax[e] = step == (periods - 1) * N + 1 ? q[e] : fmax(qmax[e], q[e]);
                 qmin[e] = step == (periods - 1) * N + 1 ? q[e] : fmin(qmin[e], q[e]);
             }
@@ -94,7 +113,8 @@ int jenkins_newmark_rms(const struct jenkins_model *s, double omega, int N, int 
     for (size_t i = 0; i < n; i++)
         rms[i] = sqrt(sum[i] / N);
     for (size_t e = 0; e < m; e++)
-        slips = slips && s->kt[e] * (qmax[e] - qmin[e]) > 2.0 * s->mun[e];
+        slips = slips && (s->normal ? opened[e] && closed[e]
+                                    : s->kt[e] * (qmax[e] - qmin[e]) > 2.0 * s->mun[e]);
     gsl_permutation_free(p);
     fricreg_jenkins_free(jk);
     return slips;
