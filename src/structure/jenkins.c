@@ -1,12 +1,14 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* jenkins.c — Jenkins elements (a spring kt in series with a Coulomb slider of bound mun) on
- * rows of J_e as a fricreg_structure's joints: their setters and getters, and their part of
- * each step.
+/* jenkins.c — Jenkins elements (a spring kt in series with a Coulomb slider of bound mun) and
+ * Iwan elements (ns such sliders in parallel) on rows of J_e as a fricreg_structure's joints:
+ * their setters and getters, and their part of each step.
  *
- * Element i sees q_i = (J_e u)_i and pushes back with fe_i = kt_i (q_i - w_i), |fe_i| <= mun_i,
- * by the exact return mapping from its committed slider position (src/joint/slider.h), so the
- * structure gets -J_e^T fe. The force is a function of the displacement with the consistent
- * tangent kt (stick) or 0 (slip).
+ * Element i sees q_i = (J_e u)_i and pushes back with fe_i = sum_s k_s (q_i - w_s),
+ * |k_s (q_i - w_s)| <= phi_s, each slider by the exact return mapping from its committed
+ * position (src/joint/slider.h), so the structure gets -J_e^T fe. A Jenkins element is one
+ * slider (k = kt, phi = mun). The force is a function of the displacement with the consistent
+ * tangent sum of the sticking sliders' k: the condensed Newton below keeps me unknowns whatever
+ * ns is.
  *
  * Newmark / HHT-alpha: with the contacts' forces zero (the combination with active contacts is
  * refused), the step's equation K_eff x = b - w J_e^T fe1 (w = 1 + alpha) condenses onto the
@@ -17,9 +19,9 @@
  * direction halved until ||G||_2 decreases (the mapping is piecewise linear: a full step can
  * overshoot a kink). Central difference: fe1 = F(J_e u1) at the explicit displacement.
  *
- * Energy: fe = kt (q - w) at both ends of a step, so the trapezoidal work of the elements
- * dq (fe + fe1)/2 is exactly the change of their springs' energy fe^2/(2 kt) plus
- * dw (fe + fe1)/2, which is booked as their dissipation: the balance closes as it does for
+ * Energy: f_s = k_s (q - w_s) at both ends of a step, so a slider's share of the trapezoidal
+ * work dq (f_s + f_s1)/2 is exactly the change of its spring's energy f_s^2/(2 k_s) plus
+ * dw_s (f_s + f_s1)/2, which is booked as its dissipation: the balance closes as it does for
  * the contacts. */
 #include <math.h>
 #include <stdlib.h>
@@ -39,9 +41,10 @@
 void fr_elements_free(fricreg_structure *s)
 {
     struct fr_elements *e = &s->el;
-    double *arrays[] = {e->kt,      e->mun,         e->wc, e->wt,  e->fe,  e->fe1, e->wc_held,
-                        e->fe_held, e->dissipation, e->q0, e->g,   e->df,  e->ft,  e->gt,
-                        e->tan,     e->E,           e->A,  e->tau, e->norm};
+    double *arrays[] = {e->k,           e->phi, e->kstick, e->wc,      e->wt,      e->fs,
+                        e->fs1,         e->fe,  e->fe1,    e->wc_held, e->fs_held, e->fe_held,
+                        e->dissipation, e->q0,  e->g,      e->df,      e->ft,      e->gt,
+                        e->tan,         e->E,   e->A,      e->tau,     e->norm};
     for (size_t k = 0; k < sizeof arrays / sizeof *arrays; k++)
         free(arrays[k]);
     free(e->perm);
@@ -51,13 +54,18 @@ void fr_elements_free(fricreg_structure *s)
 
 /* The new elements' arrays into e (zeroed); 0 when out of memory (e then partly filled: the
  * caller frees it). */
-static int allocate(struct fr_elements *e, size_t me)
+static int allocate(struct fr_elements *e, size_t me, size_t ns)
 {
-    double **arrays[] = {&e->kt,      &e->mun,     &e->wc,          &e->wt,  &e->fe,  &e->fe1,
-                         &e->wc_held, &e->fe_held, &e->dissipation, &e->q0,  &e->g,   &e->df,
-                         &e->ft,      &e->gt,      &e->tan,         &e->tau, &e->norm};
-    for (size_t k = 0; k < sizeof arrays / sizeof *arrays; k++)
-        if ((*arrays[k] = calloc(me, sizeof(double))) == NULL)
+    double **sliders[] = {&e->k,  &e->phi, &e->wc,      &e->wt,
+                          &e->fs, &e->fs1, &e->wc_held, &e->fs_held};
+    double **elements[] = {&e->kstick, &e->fe,  &e->fe1, &e->fe_held, &e->dissipation,
+                           &e->q0,     &e->g,   &e->df,  &e->ft,      &e->gt,
+                           &e->tan,    &e->tau, &e->norm};
+    for (size_t k = 0; k < sizeof sliders / sizeof *sliders; k++)
+        if ((*sliders[k] = calloc(me * ns, sizeof(double))) == NULL)
+            return 0;
+    for (size_t k = 0; k < sizeof elements / sizeof *elements; k++)
+        if ((*elements[k] = calloc(me, sizeof(double))) == NULL)
             return 0;
     e->E = calloc(me * me, sizeof(double));
     e->A = calloc(me * me, sizeof(double));
@@ -81,34 +89,39 @@ static int check_rows(fricreg_structure *s, const cholmod_sparse *Jt, const char
     return FRICREG_OK;
 }
 
-static int check_params(fricreg_structure *s, size_t me, const double kt[], const double mun[],
-                        const char *who)
+/* k > 0 and phi >= 0, finite, per slider (ns of them per element); a Jenkins element's
+ * (iwan = 0) are called kt and mun. */
+static int check_params(fricreg_structure *s, size_t me, size_t ns, int iwan, const double k[],
+                        const double phi[], const char *who)
 {
-    if (kt == NULL || mun == NULL)
-        return fr_fail(s, FRICREG_ENULL, "%s: kt or mun is NULL", who);
-    for (size_t i = 0; i < me; i++) {
-        if (!isfinite(kt[i]) || !isfinite(mun[i]))
+    const char *kn = iwan ? "k" : "kt", *pn = iwan ? "phi" : "mun";
+    if (k == NULL || phi == NULL)
+        return fr_fail(s, FRICREG_ENULL, "%s: %s or %s is NULL", who, kn, pn);
+    for (size_t j = 0; j < me * ns; j++) {
+        if (!isfinite(k[j]) || !isfinite(phi[j]))
             return fr_fail(s, FRICREG_ENONFINITE,
-                           "%s: element %zu's kt = %g or mun = %g is not finite", who, i, kt[i],
-                           mun[i]);
-        if (!(kt[i] > 0.0) || !(mun[i] >= 0.0))
+                           "%s: element %zu's %s = %g or %s = %g (slider %zu) is not finite", who,
+                           j / ns, kn, k[j], pn, phi[j], j % ns);
+        if (!(k[j] > 0.0) || !(phi[j] >= 0.0))
             return fr_fail(s, FRICREG_EINVAL,
-                           "%s: element %zu needs kt > 0 and mun >= 0 (kt = %g, "
-                           "mun = %g)",
-                           who, i, kt[i], mun[i]);
+                           "%s: element %zu (slider %zu) needs %s > 0 and %s >= 0 (%s = %g, "
+                           "%s = %g)",
+                           who, j / ns, j % ns, kn, pn, kn, k[j], pn, phi[j]);
     }
     return FRICREG_OK;
 }
 
-/* Takes J (me x n, CHOLMOD's, freed here on every path) and installs the elements. */
-static int install(fricreg_structure *s, size_t me, cholmod_sparse *J, const double kt[],
-                   const double mun[], const char *who)
+/* Takes J (me x n, CHOLMOD's, freed here on every path) and installs the elements of ns
+ * sliders each. */
+static int install(fricreg_structure *s, size_t me, size_t ns, cholmod_sparse *J, const double k[],
+                   const double phi[], const char *who)
 {
     struct fr_elements e = {0};
     e.me = me;
+    e.ns = ns;
     e.Jt = cholmod_l_transpose(J, 1, &s->cc);
     cholmod_l_free_sparse(&J, &s->cc);
-    int status = e.Jt == NULL || !allocate(&e, me)
+    int status = e.Jt == NULL || !allocate(&e, me, ns)
                      ? fr_fail(s, FRICREG_ENOMEM, "%s: no memory for %zu elements", who, me)
                      : check_rows(s, e.Jt, who);
     if (status != FRICREG_OK) {
@@ -118,8 +131,11 @@ static int install(fricreg_structure *s, size_t me, cholmod_sparse *J, const dou
         s->el = old;
         return status;
     }
-    memcpy(e.kt, kt, me * sizeof *kt);
-    memcpy(e.mun, mun, me * sizeof *mun);
+    memcpy(e.k, k, me * ns * sizeof *k);
+    memcpy(e.phi, phi, me * ns * sizeof *phi);
+    for (size_t i = 0; i < me; i++)
+        for (size_t j = 0; j < ns; j++)
+            e.kstick[i] += k[i * ns + j];
     fr_elements_free(s);
     s->el = e;
     fr_structure_model_changed(s); /* E = J_e K_eff^-1 J_e^T and the equilibrium anew */
@@ -127,14 +143,17 @@ static int install(fricreg_structure *s, size_t me, cholmod_sparse *J, const dou
     return FRICREG_OK;
 }
 
-static int start_setter(fricreg_structure *s, size_t me, size_t ndof, const char *who)
+static int start_setter(fricreg_structure *s, size_t me, size_t ns, size_t ndof, const char *who)
 {
     if (s->running)
         return fr_structure_busy(s, who);
     if (ndof != s->n)
         return fr_fail(s, FRICREG_ESIZE, "%s: ndof = %zu, the structure has %zu", who, ndof, s->n);
-    if (me > MAX_ELEMENTS)
-        return fr_fail(s, FRICREG_EINVAL, "%s: me = %zu elements exceed 2^26", who, me);
+    if (ns == 0 && me > 0)
+        return fr_fail(s, FRICREG_EINVAL, "%s: ns = 0: an Iwan element needs a slider", who);
+    if (me > MAX_ELEMENTS || (me > 0 && ns > MAX_ELEMENTS / me))
+        return fr_fail(s, FRICREG_EINVAL, "%s: me = %zu elements of %zu sliders exceed 2^26", who,
+                       me, ns);
     return FRICREG_OK;
 }
 
@@ -146,50 +165,77 @@ static int remove_all(fricreg_structure *s)
     return FRICREG_OK;
 }
 
-int fricreg_structure_set_jenkins(fricreg_structure *s, size_t me, size_t ndof, const double Je[],
-                                  const double kt[], const double mun[])
+/* The dense setters' body; iwan = 0 for Jenkins elements (ns = 1, kt and mun). */
+static int set_dense(fricreg_structure *s, size_t me, size_t ndof, const double Je[], int iwan,
+                     size_t ns, const double k[], const double phi[], const char *who)
 {
-    const char *who = "set_jenkins";
     if (s == NULL)
         return FRICREG_ENULL;
-    int status = start_setter(s, me, ndof, who);
+    int status = start_setter(s, me, ns, ndof, who);
     if (status != FRICREG_OK)
         return status;
     if (me == 0)
         return remove_all(s);
     if (Je == NULL)
         return fr_fail(s, FRICREG_ENULL, "%s: J_e is NULL", who);
-    if ((status = check_params(s, me, kt, mun, who)) != FRICREG_OK)
+    if ((status = check_params(s, me, ns, iwan, k, phi, who)) != FRICREG_OK)
         return status;
-    for (size_t k = 0; k < me * ndof; k++)
-        if (!isfinite(Je[k]))
-            return fr_fail(s, FRICREG_ENONFINITE, "%s: J_e(%zu, %zu) is not finite", who, k / ndof,
-                           k % ndof);
+    for (size_t j = 0; j < me * ndof; j++)
+        if (!isfinite(Je[j]))
+            return fr_fail(s, FRICREG_ENONFINITE, "%s: J_e(%zu, %zu) is not finite", who, j / ndof,
+                           j % ndof);
     cholmod_sparse *J = NULL;
     status = fr_dense_to_cholmod(me, ndof, Je, 0, &s->cc, &J, &s->err, who);
-    return status != FRICREG_OK ? status : install(s, me, J, kt, mun, who);
+    return status != FRICREG_OK ? status : install(s, me, ns, J, k, phi, who);
 }
 
-int fricreg_structure_set_jenkins_csr(fricreg_structure *s, size_t me, size_t ndof, int flags,
-                                      const int64_t rowptr[], const int64_t colind[],
-                                      const double values[], const double kt[], const double mun[])
+/* The compressed setters' body, as set_dense. */
+static int set_csr(fricreg_structure *s, size_t me, size_t ndof, int flags, const int64_t rowptr[],
+                   const int64_t colind[], const double values[], int iwan, size_t ns,
+                   const double k[], const double phi[], const char *who)
 {
-    const char *who = "set_jenkins_csr";
     if (s == NULL)
         return FRICREG_ENULL;
-    int status = start_setter(s, me, ndof, who);
+    int status = start_setter(s, me, ns, ndof, who);
     if (status != FRICREG_OK)
         return status;
     if (me == 0)
         return remove_all(s);
-    if ((status = check_params(s, me, kt, mun, who)) != FRICREG_OK)
+    if ((status = check_params(s, me, ns, iwan, k, phi, who)) != FRICREG_OK)
         return status;
     struct fr_compressed a = {me, ndof, 0, flags, rowptr, colind, values};
     cholmod_sparse *J = NULL;
     status = fr_compressed_check(&a, 0, &s->err, who);
     if (status == FRICREG_OK)
         status = fr_compressed_to_cholmod(&a, 0, &s->cc, &J, &s->err, who);
-    return status != FRICREG_OK ? status : install(s, me, J, kt, mun, who);
+    return status != FRICREG_OK ? status : install(s, me, ns, J, k, phi, who);
+}
+
+int fricreg_structure_set_jenkins(fricreg_structure *s, size_t me, size_t ndof, const double Je[],
+                                  const double kt[], const double mun[])
+{
+    return set_dense(s, me, ndof, Je, 0, 1, kt, mun, "set_jenkins");
+}
+
+int fricreg_structure_set_jenkins_csr(fricreg_structure *s, size_t me, size_t ndof, int flags,
+                                      const int64_t rowptr[], const int64_t colind[],
+                                      const double values[], const double kt[], const double mun[])
+{
+    return set_csr(s, me, ndof, flags, rowptr, colind, values, 0, 1, kt, mun, "set_jenkins_csr");
+}
+
+int fricreg_structure_set_iwan(fricreg_structure *s, size_t me, size_t ndof, const double Je[],
+                               size_t ns, const double k[], const double phi[])
+{
+    return set_dense(s, me, ndof, Je, 1, ns, k, phi, "set_iwan");
+}
+
+int fricreg_structure_set_iwan_csr(fricreg_structure *s, size_t me, size_t ndof, int flags,
+                                   const int64_t rowptr[], const int64_t colind[],
+                                   const double values[], size_t ns, const double k[],
+                                   const double phi[])
+{
+    return set_csr(s, me, ndof, flags, rowptr, colind, values, 1, ns, k, phi, "set_iwan_csr");
 }
 
 int fricreg_structure_get_jenkins_state(const fricreg_structure *s, size_t me, double f[],
@@ -197,7 +243,7 @@ int fricreg_structure_get_jenkins_state(const fricreg_structure *s, size_t me, d
 {
     if (s == NULL || (f == NULL && w == NULL && D == NULL))
         return FRICREG_ENULL;
-    if (me != s->el.me)
+    if (me != s->el.me || (w != NULL && me > 0 && s->el.ns != 1))
         return FRICREG_ESIZE;
     if (me == 0)
         return FRICREG_OK;
@@ -205,6 +251,24 @@ int fricreg_structure_get_jenkins_state(const fricreg_structure *s, size_t me, d
         memcpy(f, s->el.fe, me * sizeof *f);
     if (w != NULL)
         memcpy(w, s->el.wc, me * sizeof *w);
+    if (D != NULL)
+        memcpy(D, s->el.dissipation, me * sizeof *D);
+    return FRICREG_OK;
+}
+
+int fricreg_structure_get_iwan_state(const fricreg_structure *s, size_t me, size_t ns, double f[],
+                                     double w[], double D[])
+{
+    if (s == NULL || (f == NULL && w == NULL && D == NULL))
+        return FRICREG_ENULL;
+    if (me != s->el.me || (me > 0 && ns != s->el.ns))
+        return FRICREG_ESIZE;
+    if (me == 0)
+        return FRICREG_OK;
+    if (f != NULL)
+        memcpy(f, s->el.fe, me * sizeof *f);
+    if (w != NULL)
+        memcpy(w, s->el.wc, me * ns * sizeof *w);
     if (D != NULL)
         memcpy(D, s->el.dissipation, me * sizeof *D);
     return FRICREG_OK;
@@ -223,13 +287,28 @@ int fr_elements_check_contacts(fricreg_structure *s, const char *who)
     return FRICREG_OK;
 }
 
-/* fe and the trial positions wt at q[me] from the committed wc, and the tangents where tan is
- * not NULL. */
-static void map(const struct fr_elements *e, const double q[], double fe[], double tan[])
+/* Element i at q: its sliders' forces into fs1 and trial positions into wt from the committed
+ * wc; returns their sum, the sticking sliders' stiffness into *tan where not NULL. */
+static double element(const struct fr_elements *e, size_t i, double q, double *tan)
+{
+    double F = 0.0, t = 0.0;
+    for (size_t j = i * e->ns; j < (i + 1) * e->ns; j++) {
+        double tj;
+        fr_slider_return(e->k[j], e->phi[j], 0.0, 1, &q, &e->wc[j], &e->fs1[j], &e->wt[j], &tj,
+                         NULL);
+        F += e->fs1[j];
+        t += tj;
+    }
+    if (tan != NULL)
+        *tan = t;
+    return F;
+}
+
+/* fe at q[me] from the committed wc (the sliders' trial state as element's). */
+static void map(const struct fr_elements *e, const double q[], double fe[])
 {
     for (size_t i = 0; i < e->me; i++)
-        fr_slider_return(e->kt[i], e->mun[i], 0.0, 1, &q[i], &e->wc[i], &fe[i], &e->wt[i],
-                         tan != NULL ? &tan[i] : NULL, NULL);
+        fe[i] = element(e, i, q[i], NULL);
 }
 
 void fr_elements_equilibrium(fricreg_structure *s, gsl_vector *w)
@@ -238,8 +317,10 @@ void fr_elements_equilibrium(fricreg_structure *s, gsl_vector *w)
     if (e->me == 0)
         return;
     fr_csc_mult_t(e->Jt, s->u->data, e->q0);
-    map(e, e->q0, e->fe, NULL);
-    memcpy(e->wc, e->wt, e->me * sizeof *e->wc); /* idempotent: a returned slider sticks */
+    map(e, e->q0, e->fe);
+    size_t bytes = e->me * e->ns * sizeof(double); /* idempotent: a returned slider sticks */
+    memcpy(e->wc, e->wt, bytes);
+    memcpy(e->fs, e->fs1, bytes);
     fr_csc_mult_add(e->Jt, -1.0, e->fe, w->data);
 }
 
@@ -249,7 +330,7 @@ void fr_elements_explicit(fricreg_structure *s, const gsl_vector *u1, gsl_vector
     if (e->me == 0)
         return;
     fr_csc_mult_t(e->Jt, u1->data, e->q0);
-    map(e, e->q0, e->fe1, NULL);
+    map(e, e->q0, e->fe1);
     fr_csc_mult_add(e->Jt, -1.0, e->fe1, w->data);
 }
 
@@ -273,8 +354,8 @@ int fr_elements_compliance(fricreg_structure *s)
     return FRICREG_OK;
 }
 
-/* At the forces f[me]: q = q0 - c E f, the mapping's forces into e->ft's ... G = f - F(q) into
- * g, the tangents into e->tan, the trial sliders into e->wt; returns ||G||_2, *rinf its
+/* At the forces f[me]: q = q0 - c E f, G = f - F(q) into g, the tangents into e->tan, the
+ * trial sliders into e->wt and e->fs1; returns ||G||_2, *rinf its
  * largest entry (NaN propagates). */
 static double evaluate(struct fr_elements *e, double c, const double f[], double g[], double *rinf)
 {
@@ -284,10 +365,7 @@ static double evaluate(struct fr_elements *e, double c, const double f[], double
         double q = e->q0[i];
         for (size_t j = 0; j < me; j++)
             q -= c * e->E[i * me + j] * f[j];
-        double F;
-        fr_slider_return(e->kt[i], e->mun[i], 0.0, 1, &q, &e->wc[i], &F, &e->wt[i], &e->tan[i],
-                         NULL);
-        g[i] = f[i] - F;
+        g[i] = f[i] - element(e, i, q, &e->tan[i]);
         sum += g[i] * g[i];
         if (!(fabs(g[i]) <= big))
             big = fabs(g[i]);
@@ -372,8 +450,8 @@ int fr_elements_newmark(fricreg_structure *s, double dt, double scale, gsl_vecto
         }
     }
     if (!isfinite(phi))
-        return fr_fail(s, FRICREG_EDIVERGED,
-                       "step: the Jenkins elements' residual at t = %g is not finite", s->t + dt);
+        return fr_fail(s, FRICREG_EDIVERGED, "step: the elements' residual at t = %g is not finite",
+                       s->t + dt);
     *converged = rinf <= tol;
     fr_csc_mult_add(e->Jt, -w, f, b->data);
     return FRICREG_OK;
@@ -385,17 +463,19 @@ void fr_elements_commit(fricreg_structure *s)
     if (e->me == 0)
         return; /* no arrays: memcpy may not take NULL */
     memcpy(e->fe, e->fe1, e->me * sizeof *e->fe);
-    memcpy(e->wc, e->wt, e->me * sizeof *e->wc);
+    memcpy(e->fs, e->fs1, e->me * e->ns * sizeof *e->fs);
+    memcpy(e->wc, e->wt, e->me * e->ns * sizeof *e->wc);
 }
 
 void fr_elements_hold(fricreg_structure *s, int restore)
 {
     struct fr_elements *e = &s->el;
-    size_t bytes = e->me * sizeof(double);
+    size_t bytes = e->me * sizeof(double), sbytes = bytes * e->ns;
     if (e->me == 0)
         return;
     memcpy(restore ? e->fe : e->fe_held, restore ? e->fe_held : e->fe, bytes);
-    memcpy(restore ? e->wc : e->wc_held, restore ? e->wc_held : e->wc, bytes);
+    memcpy(restore ? e->fs : e->fs_held, restore ? e->fs_held : e->fs, sbytes);
+    memcpy(restore ? e->wc : e->wc_held, restore ? e->wc_held : e->wc, sbytes);
 }
 
 void fr_elements_reset(fricreg_structure *s)
@@ -403,7 +483,8 @@ void fr_elements_reset(fricreg_structure *s)
     struct fr_elements *e = &s->el;
     if (e->me == 0)
         return;
-    memset(e->wc, 0, e->me * sizeof *e->wc);
+    memset(e->wc, 0, e->me * e->ns * sizeof *e->wc);
+    memset(e->fs, 0, e->me * e->ns * sizeof *e->fs);
     memset(e->fe, 0, e->me * sizeof *e->fe);
 }
 
@@ -411,7 +492,7 @@ double fr_elements_strain(const fricreg_structure *s)
 {
     const struct fr_elements *e = &s->el;
     double energy = 0.0;
-    for (size_t i = 0; i < e->me; i++)
-        energy += 0.5 * e->fe[i] * (e->fe[i] / e->kt[i]);
+    for (size_t j = 0; j < e->me * e->ns; j++)
+        energy += 0.5 * e->fs[j] * (e->fs[j] / e->k[j]);
     return energy;
 }

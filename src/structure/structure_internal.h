@@ -40,16 +40,21 @@ struct fr_energy {
     double jenkins;      /* the Jenkins elements' dissipation, all of them */
 };
 
-/* Jenkins elements on rows of J_e (jenkins.c): me = 0 without any. Each is a spring kt in
- * series with a slider of bound mun at q = J_e u, force fe = kt (q - w) on the element (so
- * -J_e^T fe on the structure), returned by slider.h's mapping from the committed wc. */
+/* Elements on rows of J_e (jenkins.c): me = 0 without any. Each is ns Jenkins sliders in
+ * parallel (ns = 1: a Jenkins element, ns > 1: an Iwan element), slider s a spring k_s in
+ * series with a slider of bound phi_s at q = J_e u, force k_s (q - w_s); the element's force fe
+ * is their sum (so -J_e^T fe on the structure), each returned by slider.h's mapping from its
+ * committed wc. Per-slider arrays are [me ns], element i's slider s at i ns + s. */
 struct fr_elements {
-    size_t me;
+    size_t me, ns;
     cholmod_sparse *Jt;        /* n x me: J_e^T */
-    double *kt, *mun;          /* [me] */
-    double *wc, *wt;           /* [me] committed and trial slider positions */
-    double *fe, *fe1;          /* [me] forces at t and at the step's end */
-    double *wc_held, *fe_held; /* [me] before a step's equilibrium, restored if it fails */
+    double *k, *phi;           /* [me ns] */
+    double *kstick;            /* [me] sum of k: the element's stiffness when all stick */
+    double *wc, *wt;           /* [me ns] committed and trial slider positions */
+    double *fs, *fs1;          /* [me ns] slider forces at t and at the step's end */
+    double *fe, *fe1;          /* [me] element forces at t and at the step's end */
+    double *wc_held, *fs_held; /* [me ns] before a step's equilibrium, restored if it fails */
+    double *fe_held;           /* [me] */
     double *dissipation;       /* [me] since set_initial */
     double *q0, *g, *df, *ft, *gt, *tan; /* [me] Newton's scratch */
     double *tau, *norm;                  /* [me] the Newton matrix's QR (GSL's, pivoted) */
