@@ -600,6 +600,56 @@ FRICREG_API int fricreg_structure_set_iwan_csr(fricreg_structure *s, size_t me, 
 FRICREG_API int fricreg_structure_get_iwan_state(const fricreg_structure *s, size_t me, size_t ns,
                                                  double f[], double w[], double D[]);
 
+/** Attach me Jenkins elements with a normal load and lift-off (fricreg_jenkins_set_normal's
+ *  law): element i has a tangential row i of Je[me*ndof] and a normal row i of Jn[me*ndof]
+ *  (both row-major, as fricreg_structure_set_jenkins's Je), sees q_i = (J_e u)_i and the
+ *  normal relative displacement g_i = (J_n u)_i (positive closing), carries the normal force
+ *
+ *      N_i = max(0, n0_i + kn_i g_i)
+ *
+ *  and the tangential force fe_i = kt_i (q_i - w_i), |fe_i| <= mu_i N_i, by
+ *  fricreg_jenkins_trial_normal's return mapping from its committed slider w_i; while the
+ *  element is separated (n0 + kn g < 0) fe_i = 0 and the slider follows q (its memory reset).
+ *  Both forces act on the structure:
+ *
+ *      M u'' + C u' + K u + J_e^T fe(J_e u, J_n u) + J_n^T N(J_n u) = p(t) - M r a_g(t) + J^T f,
+ *
+ *  so at rest in contact the structure carries -J_n^T n0. Newmark and HHT-alpha solve the
+ *  elements as fricreg_structure_set_jenkins does, on 2 me unknowns (fe, N) condensed through
+ *  E = J K_eff^-1 J^T with J = (J_e over J_n), their exact tangent including dfe/dg = mu kn
+ *  sign(fe) while slipping and dN/dg = kn while closed; the central difference evaluates them
+ *  at u(t + dt), its step guard reading K + J_e^T diag(kt) J_e + J_n^T diag(kn) J_n. Energy:
+ *  N^2/(2 kn) is part of FRICREG_SVALUE_STRAIN and the sliders' dissipation of
+ *  FRICREG_SVALUE_JENKINS; the balance is exact over steps in which every element stays closed
+ *  or open (a step that opens or closes one leaves a residual of the order of kn times the
+ *  step's normal overshoot squared). Refusals beside contacts, run_ode and the observer are
+ *  fricreg_structure_set_jenkins's. Copied; every slider at w = 0; replaces the elements in
+ *  force. me = 0 removes them (the arrays may then be NULL). Since 1.6 (FRICREG_1.6).
+ *
+ *  kt[me]  tangential stiffness > 0 (finite), force per unit of q.
+ *  mu[me]  friction coefficient >= 0 (finite).
+ *  n0[me]  normal force at g = 0 (finite, force units; < 0: open at g = 0).
+ *  kn[me]  normal stiffness > 0 (finite), force per unit of g.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL (s, or Je, Jn, kt, mu, n0 or kn with me > 0);
+ *  FRICREG_ESIZE if ndof is not the structure's; FRICREG_EINVAL if me > 2^26, a row of J_e or
+ *  J_n is zero, a kt <= 0, mu < 0 or kn <= 0, or the call comes from the observer;
+ *  FRICREG_ENONFINITE (an entry of Je, Jn, kt, mu, n0 or kn); FRICREG_ENOMEM. On failure the
+ *  elements in force are unchanged. */
+FRICREG_API int fricreg_structure_set_jenkins_normal(fricreg_structure *s, size_t me, size_t ndof,
+                                                     const double Je[], const double Jn[],
+                                                     const double kt[], const double mu[],
+                                                     const double n0[], const double kn[]);
+
+/** Copy the normal forces N[me] (force units, max(0, n0 + kn g), 0 while separated) of the
+ *  elements of fricreg_structure_set_jenkins_normal at the current time (0 before the first
+ *  step); their tangential forces, sliders and dissipation are
+ *  fricreg_structure_get_jenkins_state's. Since 1.6 (FRICREG_1.6).
+ *  Returns FRICREG_OK; FRICREG_ENULL if s or N is NULL; FRICREG_ESIZE if me is not the number
+ *  of elements set; FRICREG_EINVAL if they have no normal law. */
+FRICREG_API int fricreg_structure_get_normal_forces(const fricreg_structure *s, size_t me,
+                                                    double N[]);
+
 /** Read one quantity (enum fricreg_structure_value) into *value.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown quantity. */
 FRICREG_API int fricreg_structure_get_value(const fricreg_structure *s, int which, double *value);
