@@ -685,6 +685,17 @@ static int w_st_get_iwan_state_no_output(void)
 {
     return fricreg_structure_get_iwan_state(ST(), 0, 3, NULL, NULL, NULL);
 }
+static const double ST_JN[2] = {0.0, 1.0}, ST_N0[1] = {0.5}, ST_KN[1] = {3.0};
+static int w_st_set_jenkins_normal(void)
+{
+    return fricreg_structure_set_jenkins_normal(ST(), C(0, 1), Z(0, 2), A(1, ST_JE, 2),
+                                                A(2, ST_JN, 2), A(3, ST_KT, 1), A(4, ST_MUN, 1),
+                                                A(5, ST_N0, 1), A(6, ST_KN, 1));
+}
+static int w_st_get_normal_forces(void)
+{
+    return fricreg_structure_get_normal_forces(ST(), Z(0, 0), OUTD(1));
+}
 static int w_st_get_jenkins_state(void)
 {
     return fricreg_structure_get_jenkins_state(ST(), Z(0, 0), OUTD(1), OUTD(2), OUTD(3));
@@ -1673,6 +1684,18 @@ static const struct row rows[] = {
      "0s",
      NONE,
      {PTR(8, "0")}},
+    {"fricreg_structure_set_jenkins_normal",
+     w_st_set_jenkins_normal,
+     "0snim",
+     ST_REC,
+     {HANDLE, COUNT(0, "ooii"), SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnoioo"), PTR(2, "0"),
+      ARR(2, "nnoooo"), PTR(3, "0"), ARR(3, "nniioo"), PTR(4, "0"), ARR(4, "nniooo"), PTR(5, "0"),
+      ARR(5, "nnoooo"), PTR(6, "0"), ARR(6, "nniioo")}},
+    {"fricreg_structure_get_normal_forces",
+     w_st_get_normal_forces,
+     "0si",
+     NONE,
+     {HANDLE, SIZE(0, "osss"), PTR(1, "0")}},
     {"fricreg_structure_get_jenkins_state",
      w_st_get_jenkins_state,
      "0s",
