@@ -330,6 +330,8 @@ module fricreg
     procedure :: get_jenkins_state => struct_get_jenkins_state
     procedure :: set_iwan => struct_set_iwan
     procedure :: get_iwan_state => struct_get_iwan_state
+    procedure :: set_jenkins_normal => struct_set_jenkins_normal
+    procedure :: get_normal_forces => struct_get_normal_forces
     procedure :: set_mass_csr => struct_set_mass_csr
     procedure :: set_mass_csc => struct_set_mass_csc
     procedure :: set_stiffness_csr => struct_set_stiffness_csr
@@ -2540,6 +2542,46 @@ contains
                                                               int(max(me, 0), c_size_t), &
                                                               int(ns, c_size_t), f, w, D))
   end function struct_get_iwan_state
+
+  !> Jenkins elements with a normal load and lift-off on the rows of Je(me, ndof) and
+  !> Jn(me, ndof) in Fortran's order (fricreg_structure_set_jenkins_normal: N = max(0, n0 + kn g),
+  !> g = (Jn u)_i, bound mu N); me = size(Je, 1). FRICREG_ESIZE unless Je and Jn have one shape
+  !> with ndof columns and kt, mu, n0, kn me entries; C's codes otherwise.
+  function struct_set_jenkins_normal(self, Je, Jn, kt, mu, n0, kn) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(in) :: Je(:, :), Jn(:, :), kt(:), mu(:), n0(:), kn(:)
+    integer(c_int) :: status
+    integer(c_size_t) :: me
+    character(len=*), parameter :: who = 'set_jenkins_normal'
+    me = int(size(Je, 1), c_size_t)
+    status = self%ready(who, 'structure')
+    if (status == FRICREG_OK) status = self%check_size(who, 'Je, 2', size(Je, 2), self%n)
+    if (status == FRICREG_OK) status = self%check_size(who, 'Jn, 1', size(Jn, 1), me)
+    if (status == FRICREG_OK) status = self%check_size(who, 'Jn, 2', size(Jn, 2), self%n)
+    if (status == FRICREG_OK) status = self%check_size(who, 'kt', size(kt), me)
+    if (status == FRICREG_OK) status = self%check_size(who, 'mu', size(mu), me)
+    if (status == FRICREG_OK) status = self%check_size(who, 'n0', size(n0), me)
+    if (status == FRICREG_OK) status = self%check_size(who, 'kn', size(kn), me)
+    if (status == FRICREG_OK) status = self%record( &
+                                       fricreg_structure_set_jenkins_normal(self%ptr, me, &
+                                                                            self%n, &
+                                                                            transpose(Je), &
+                                                                            transpose(Jn), kt, &
+                                                                            mu, n0, kn))
+  end function struct_set_jenkins_normal
+
+  !> The normal forces N(me) of set_jenkins_normal's elements
+  !> (fricreg_structure_get_normal_forces). FRICREG_ESIZE; FRICREG_EINVAL without a normal law.
+  function struct_get_normal_forces(self, N) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(inout), contiguous :: N(:)
+    integer(c_int) :: status
+    status = self%ready('get_normal_forces', 'structure')
+    if (status /= FRICREG_OK) return
+    status = self%unrecorded('get_normal_forces', &
+                             fricreg_structure_get_normal_forces(self%ptr, &
+                                                                 int(size(N), c_size_t), N))
+  end function struct_get_normal_forces
 
   ! The compressed sparse setters (fricreg_structure.h, since 1.6): the arrays as a Fortran code
   ! holds them, indices integer(c_int64_t), flags from enum fricreg_sparse_flags, optional and

@@ -8,7 +8,8 @@
 !   - the element slipping (mu N = 0.05 N): it dissipates, and the energy balance closes;
 !   - Fortran's size checks (FRICREG_ESIZE naming the array) and C's refusals (kt <= 0);
 !   - an Iwan element of two sliders (set_iwan, get_iwan_state) is two Jenkins elements on
-!     copies of its row: the same run to rounding.
+!     copies of its row: the same run to rounding;
+!   - a stuck, closed lift-off element (set_jenkins_normal, get_normal_forces): N = n0 + kn u.
 program test_structure_jenkins
   use fricreg
   use ftest
@@ -85,5 +86,22 @@ program test_structure_jenkins
                                 reshape([0.03_c_double], [1, 1])), FRICREG_ESIZE, &
                     'phi of 1 slider')
   call check(index(st%errmsg(), 'phi') > 0, 'the message names phi')
+
+  ! ---- lift-off: stuck and closed, the springs kt and kn and the force -n0 -------------------
+  ! one mass, Je = Jn = 1: K 217.3 + 200 + 100 under P - n0; N = n0 + kn u stays > 0 (u
+  ! peaks near 2 (P - n0)/517.3 = -0.0145)
+  call check_status(st%set_jenkins_normal(Je, Je, [200.0_c_double], [1e20_c_double], &
+                                          [2.0_c_double], [100.0_c_double]), FRICREG_OK, &
+                    'set_jenkins_normal')
+  call check_status(st%set_initial([0.0_c_double], [0.0_c_double]), FRICREG_OK, 'set_initial')
+  call check_status(st%run(0.01_c_double, 1.37_c_double), FRICREG_OK, 'run lift-off')
+  call check_status(st%get_state(u=u), FRICREG_OK, 'get_state lift-off')
+  call check_status(st%get_normal_forces(D), FRICREG_OK, 'get_normal_forces')
+  call check_close(D(1), 2.0_c_double + 100.0_c_double * u(1), 1e-13_c_double, 'N = n0 + kn u')
+  call check(D(1) > 0.0_c_double, 'closed')
+  call check_status(st%set_jenkins_normal(Je, reshape([1.0_c_double, 1.0_c_double], [2, 1]), &
+                                          [200.0_c_double], [0.3_c_double], [0.5_c_double], &
+                                          [100.0_c_double]), FRICREG_ESIZE, 'Jn of 2 rows')
+  call check(index(st%errmsg(), 'Jn') > 0, 'the message names Jn')
   call finish('test_structure_jenkins')
 end program test_structure_jenkins
