@@ -10,19 +10,26 @@
  * tangent sum of the sticking sliders' k: the condensed Newton below keeps me unknowns whatever
  * ns is.
  *
+ * With a normal law (set_jenkins_normal) element i also has a row of J_n, g_i = (J_n u)_i,
+ * N_i = max(0, n0_i + kn_i g_i) acting as -J_n^T N on the structure, and the bound phi N
+ * (fricreg_jenkins_trial_normal's law; separated, N_i < 0 before the max, the sliders follow
+ * q). The coordinates below are then (q, g) and the forces (fe, N): 2 me of them, J = J_e over
+ * J_n, and the tangent T gains dfe/dg (slipping) and dN/dg = kn (closed).
+ *
  * Newmark / HHT-alpha: with the contacts' forces zero (the combination with active contacts is
  * refused), the step's equation K_eff x = b - w J_e^T fe1 (w = 1 + alpha) condenses onto the
  * elements: u1 = u_pred + beta dt^2 x gives
  *   q(fe1) = q0 - c E fe1,   q0 = J_e (u_pred + beta dt^2 K_eff^-1 b),   c = w beta dt^2,
  * E = J_e K_eff^-1 J_e^T (me x me, formed once per factor of K_eff), and Newton solves
- * G(fe1) = fe1 - F(q(fe1)) = 0 on the matrix I + c diag(tangent) E with GSL's pivoted QR, the
+ * G(fe1) = fe1 - F(q(fe1)) = 0 on the matrix I + c T E (T = diag(tangent)) with GSL's pivoted QR, the
  * direction halved until ||G||_2 decreases (the mapping is piecewise linear: a full step can
  * overshoot a kink). Central difference: fe1 = F(J_e u1) at the explicit displacement.
  *
  * Energy: f_s = k_s (q - w_s) at both ends of a step, so a slider's share of the trapezoidal
  * work dq (f_s + f_s1)/2 is exactly the change of its spring's energy f_s^2/(2 k_s) plus
  * dw_s (f_s + f_s1)/2, which is booked as its dissipation: the balance closes as it does for
- * the contacts. */
+ * the contacts. A normal spring's dg (N + N1)/2 is the change of N^2/(2 kn) while it stays
+ * closed (or open); a step across the kink is not exact. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
