@@ -484,9 +484,10 @@ enum fricreg_structure_value {
  *  elements implicitly: Newton on their forces at the step's end with their exact tangent (kt
  *  sticking, 0 slipping), condensed on the elements' coordinates through
  *  E = J_e K_eff^-1 J_e^T (me x me, dense, formed with K_eff's factor: me solves per dt), GSL's
- *  pivoted QR of I + (1 + alpha) beta dt^2 diag(tangent) E per iteration and a line search halving the
- *  direction until the residual's 2-norm decreases (fricreg_structure_set_newton's tolerance on
- *  max |fe - F(q)| times the step's force scale, its iterations counted with the contacts'). The
+ *  pivoted QR of I + (1 + alpha) beta dt^2 diag(tangent) E per iteration and a line search
+ *  halving the direction until the residual's 2-norm decreases (fricreg_structure_set_newton's
+ *  tolerance on max |fe - F(q)| times the step's force scale, its iterations counted with the
+ *  contacts'). The
  *  central difference evaluates them at the explicit displacement u(t + dt), its step guard
  *  reading the largest frequency of M^-1 (K + J_e^T diag(kt) J_e) (all elements sticking).
  *  fricreg_structure_run_ode refuses elements (FRICREG_EINVAL).
@@ -622,8 +623,8 @@ FRICREG_API int fricreg_structure_get_iwan_state(const fricreg_structure *s, siz
  *  N^2/(2 kn) is part of FRICREG_SVALUE_STRAIN and the sliders' dissipation of
  *  FRICREG_SVALUE_JENKINS; the balance is exact over steps in which every element stays closed
  *  or open (a step that opens or closes one leaves a residual of the order of kn times the
- *  step's normal overshoot squared). Refusals beside contacts, run_ode and the observer are
- *  fricreg_structure_set_jenkins's. Copied; every slider at w = 0; replaces the elements in
+ *  step's normal overshoot squared, and FRICREG_WARN_ENERGY is then not judged). Refusals
+ *  beside contacts, run_ode and the observer are fricreg_structure_set_jenkins's. Copied; every slider at w = 0; replaces the elements in
  *  force. me = 0 removes them (the arrays may then be NULL). Since 1.6 (FRICREG_1.6).
  *
  *  kt[me]  tangential stiffness > 0 (finite), force per unit of q.
@@ -706,7 +707,8 @@ FRICREG_API size_t fricreg_structure_errmsg_copy(const fricreg_structure *s, cha
  *    (FRICREG_SSTAT_NEWTON_FAILURES > 0); FRICREG_WARN_NEWTON_SLOW: more than 5 iterations per
  *    step on average.
  *  - FRICREG_WARN_ENERGY: when every step since set_initial was average-acceleration Newmark
- *    (whose discrete balance is exact), |FRICREG_SVALUE_RESIDUAL| above 1e-6 of
+ *    (whose discrete balance is exact) and none opened or closed an element of
+ *    fricreg_structure_set_jenkins_normal, |FRICREG_SVALUE_RESIDUAL| above 1e-6 of
  *    |initial| + |input|.
  *  Called from the observer during a run, it judges nothing and returns the list as it was.
  *  Returns the number of warnings; 0 if s is NULL. Since 1.6 (FRICREG_1.6). */
@@ -805,8 +807,8 @@ enum fricreg_step_flags {
  *  Returns FRICREG_OK (converged or not: read info[1]); FRICREG_ENULL if ctx or an array is
  *  NULL; FRICREG_ESIZE if m differs from the context's; FRICREG_ENONFINITE if c, tol or an
  *  input entry is NaN or infinite; FRICREG_EINVAL if c <= 0, tol <= 0, max_iter < 1, flags
- *  has an unknown bit or W's diagonal is not the context's coupling's; FRICREG_ENOTSYM if W or Weff is not symmetric (|A_ij - A_ji| >
- *  1e-12 sqrt(A_ii A_jj)); FRICREG_ENOTPSD if a diagonal entry of W or Weff is below DBL_MIN;
+ *  has an unknown bit or W's diagonal is not the context's coupling's; FRICREG_ENOTSYM if W or
+ *  Weff is not symmetric (|A_ij - A_ji| > 1e-12 sqrt(A_ii A_jj)); FRICREG_ENOTPSD if a diagonal entry of W or Weff is below DBL_MIN;
  *  FRICREG_ENOMEM; FRICREG_EDIVERGED if the residual became NaN or infinite; the context's
  *  fricreg_ctx_eval status where an evaluation fails (FRICREG_ENONFINITE where the step's
  *  velocities, free accelerations or forces reach beyond its solve's range, ~1e280, as with

@@ -148,6 +148,13 @@ START_TEST(against_standalone_element)
                     "scheme %d: |f - f_element| %.2e of %.3g, |N - N_element| %.2e of %.3g; "
                     "%d steps open, %d slipping; balance residual %.2e of input %.4g\n",
                     scheme, df, fscale, dN, Nscale, open, slipping, residual, input);
+        /* the crossings make the balance inexact: the energy check stands aside */
+        size_t nw = fricreg_structure_warning_count(s);
+        for (size_t k = 0; k < nw; k++) {
+            int code;
+            ck_assert_int_eq(fricreg_structure_get_warning(s, k, &code, NULL, 0), FRICREG_OK);
+            ck_assert_int_ne(code, FRICREG_WARN_ENERGY);
+        }
         ck_assert_int_gt(open, 100);
         ck_assert_int_gt(slipping, 100);
         ck_assert_msg(df <= 1e-10 * fscale, "scheme %d: f differs by %g", scheme, df);

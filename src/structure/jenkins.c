@@ -21,9 +21,9 @@
  * elements: u1 = u_pred + beta dt^2 x gives
  *   q(fe1) = q0 - c E fe1,   q0 = J_e (u_pred + beta dt^2 K_eff^-1 b),   c = w beta dt^2,
  * E = J_e K_eff^-1 J_e^T (me x me, formed once per factor of K_eff), and Newton solves
- * G(fe1) = fe1 - F(q(fe1)) = 0 on the matrix I + c T E (T = diag(tangent)) with GSL's pivoted QR, the
- * direction halved until ||G||_2 decreases (the mapping is piecewise linear: a full step can
- * overshoot a kink). Central difference: fe1 = F(J_e u1) at the explicit displacement.
+ * G(fe1) = fe1 - F(q(fe1)) = 0 on the matrix I + c T E (T = diag(tangent)) with GSL's
+ * pivoted QR, the direction halved until ||G||_2 decreases (the mapping is piecewise linear: a
+ * full step can overshoot a kink). Central difference: fe1 = F(J_e u1) at the explicit displacement.
  *
  * Energy: f_s = k_s (q - w_s) at both ends of a step, so a slider's share of the trapezoidal
  * work dq (f_s + f_s1)/2 is exactly the change of its spring's energy f_s^2/(2 k_s) plus
@@ -578,6 +578,9 @@ void fr_elements_commit(fricreg_structure *s)
     struct fr_elements *e = &s->el;
     if (e->me == 0)
         return; /* no arrays: memcpy may not take NULL */
+    e->crossed = 0;
+    for (size_t i = e->me; i < e->nc; i++)
+        e->crossed |= (e->fe[i] > 0.0) != (e->fe1[i] > 0.0);
     memcpy(e->fe, e->fe1, e->nc * sizeof *e->fe);
     memcpy(e->fs, e->fs1, e->me * e->ns * sizeof *e->fs);
     memcpy(e->wc, e->wt, e->me * e->ns * sizeof *e->wc);

@@ -67,6 +67,8 @@ struct fr_elements {
     double *E, *A; /* [nc nc] J K_eff^-1 J^T for step_dt (J = J_e, or J_e over J_n), Newton's */
     size_t *perm;  /* [nc] its QR's permutation */
     int E_valid;   /* E is K_eff's at step_dt */
+    int crossed;   /* the last committed step opened or closed an element: its energy is not
+                      exact (warnings.c) */
 };
 
 struct fricreg_structure {
