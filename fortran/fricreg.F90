@@ -328,6 +328,10 @@ module fricreg
     procedure :: set_contacts => struct_set_contacts
     procedure :: set_jenkins => struct_set_jenkins
     procedure :: get_jenkins_state => struct_get_jenkins_state
+    procedure :: set_iwan => struct_set_iwan
+    procedure :: get_iwan_state => struct_get_iwan_state
+    procedure :: set_jenkins_normal => struct_set_jenkins_normal
+    procedure :: get_normal_forces => struct_get_normal_forces
     procedure :: set_mass_csr => struct_set_mass_csr
     procedure :: set_mass_csc => struct_set_mass_csc
     procedure :: set_stiffness_csr => struct_set_stiffness_csr
@@ -2476,6 +2480,110 @@ contains
                                                                  int(max(me, 0), c_size_t), &
                                                                  f, w, D))
   end function struct_get_jenkins_state
+
+  !> Iwan elements on the rows of Je(me, ndof) in Fortran's order (fricreg_structure_set_iwan:
+  !> element i sees q_i = (Je u)_i, ns sliders in parallel, slider s a spring k(s, i) in series
+  !> with a slider of slip force phi(s, i)); me = size(Je, 1), 0 removes them, ns = size(k, 1).
+  !> FRICREG_ESIZE unless Je has ndof columns and k, phi are (ns, me) arrays of one shape; C's
+  !> codes (FRICREG_EINVAL for a zero row, ns = 0, k <= 0 or phi < 0, ...).
+  function struct_set_iwan(self, Je, k, phi) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(in) :: Je(:, :), k(:, :), phi(:, :)
+    integer(c_int) :: status
+    integer(c_size_t) :: me
+    me = int(size(Je, 1), c_size_t)
+    status = self%ready('set_iwan', 'structure')
+    if (status == FRICREG_OK) status = self%check_size('set_iwan', 'Je, 2', size(Je, 2), self%n)
+    if (status == FRICREG_OK) status = self%check_size('set_iwan', 'k, 2', size(k, 2), me)
+    if (status == FRICREG_OK) status = self%check_size('set_iwan', 'phi, 1', size(phi, 1), &
+                                                       int(size(k, 1), c_size_t))
+    if (status == FRICREG_OK) status = self%check_size('set_iwan', 'phi, 2', size(phi, 2), me)
+    if (status == FRICREG_OK) status = self%record( &
+                                       fricreg_structure_set_iwan(self%ptr, me, self%n, &
+                                                                  transpose(Je), &
+                                                                  int(size(k, 1), c_size_t), &
+                                                                  k, phi))
+  end function struct_set_iwan
+
+  !> The elements' forces f(me), committed slider positions w(ns, me) and dissipation D(me)
+  !> (fricreg_structure_get_iwan_state); each optional, at least one given. me is the number
+  !> of elements set (size(f), size(D) or size(w, 2)), ns their sliders (size(w, 1); with w
+  !> absent, the elements' own). FRICREG_ESIZE; FRICREG_ENULL if none is given.
+  function struct_get_iwan_state(self, f, w, D) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(inout), contiguous, optional :: f(:), w(:, :), D(:)
+    integer(c_int) :: status
+    integer :: me, ns
+    status = self%ready('get_iwan_state', 'structure')
+    if (status /= FRICREG_OK) return
+    me = -1
+    ns = -1
+    if (present(f)) me = size(f)
+    if (present(w)) then
+      if (me >= 0 .and. size(w, 2) /= me) me = -2
+      if (me == -1) me = size(w, 2)
+      ns = size(w, 1)
+    end if
+    if (present(D)) then
+      if (me >= 0 .and. size(D) /= me) me = -2
+      if (me == -1) me = size(D)
+    end if
+    if (me == -2) then
+      status = self%fail(FRICREG_ESIZE, 'get_iwan_state: f, w and D differ in elements')
+      return
+    end if
+    if (.not. present(w)) then
+      status = self%unrecorded('get_iwan_state', &
+                               fricreg_structure_get_jenkins_state(self%ptr, &
+                                                                   int(max(me, 0), c_size_t), &
+                                                                   f=f, D=D))
+      return
+    end if
+    status = self%unrecorded('get_iwan_state', &
+                             fricreg_structure_get_iwan_state(self%ptr, &
+                                                              int(max(me, 0), c_size_t), &
+                                                              int(ns, c_size_t), f, w, D))
+  end function struct_get_iwan_state
+
+  !> Jenkins elements with a normal load and lift-off on the rows of Je(me, ndof) and
+  !> Jn(me, ndof) in Fortran's order (fricreg_structure_set_jenkins_normal: N = max(0, n0 + kn g),
+  !> g = (Jn u)_i, bound mu N); me = size(Je, 1). FRICREG_ESIZE unless Je and Jn have one shape
+  !> with ndof columns and kt, mu, n0, kn me entries; C's codes otherwise.
+  function struct_set_jenkins_normal(self, Je, Jn, kt, mu, n0, kn) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(in) :: Je(:, :), Jn(:, :), kt(:), mu(:), n0(:), kn(:)
+    integer(c_int) :: status
+    integer(c_size_t) :: me
+    character(len=*), parameter :: who = 'set_jenkins_normal'
+    me = int(size(Je, 1), c_size_t)
+    status = self%ready(who, 'structure')
+    if (status == FRICREG_OK) status = self%check_size(who, 'Je, 2', size(Je, 2), self%n)
+    if (status == FRICREG_OK) status = self%check_size(who, 'Jn, 1', size(Jn, 1), me)
+    if (status == FRICREG_OK) status = self%check_size(who, 'Jn, 2', size(Jn, 2), self%n)
+    if (status == FRICREG_OK) status = self%check_size(who, 'kt', size(kt), me)
+    if (status == FRICREG_OK) status = self%check_size(who, 'mu', size(mu), me)
+    if (status == FRICREG_OK) status = self%check_size(who, 'n0', size(n0), me)
+    if (status == FRICREG_OK) status = self%check_size(who, 'kn', size(kn), me)
+    if (status == FRICREG_OK) status = self%record( &
+                                       fricreg_structure_set_jenkins_normal(self%ptr, me, &
+                                                                            self%n, &
+                                                                            transpose(Je), &
+                                                                            transpose(Jn), kt, &
+                                                                            mu, n0, kn))
+  end function struct_set_jenkins_normal
+
+  !> The normal forces N(me) of set_jenkins_normal's elements
+  !> (fricreg_structure_get_normal_forces). FRICREG_ESIZE; FRICREG_EINVAL without a normal law.
+  function struct_get_normal_forces(self, N) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(inout), contiguous :: N(:)
+    integer(c_int) :: status
+    status = self%ready('get_normal_forces', 'structure')
+    if (status /= FRICREG_OK) return
+    status = self%unrecorded('get_normal_forces', &
+                             fricreg_structure_get_normal_forces(self%ptr, &
+                                                                 int(size(N), c_size_t), N))
+  end function struct_get_normal_forces
 
   ! The compressed sparse setters (fricreg_structure.h, since 1.6): the arrays as a Fortran code
   ! holds them, indices integer(c_int64_t), flags from enum fricreg_sparse_flags, optional and

@@ -466,8 +466,9 @@ enum fricreg_structure_value {
                                        dt| (trapezoidal from the record's start; 0 without a
                                        record): the scale of fricreg-sim's default eps and of
                                        the eps warnings (since 1.6) */
-    FRICREG_SVALUE_JENKINS = 9     /**< energy dissipated by all Jenkins elements since t = 0
-                                       (fricreg_structure_get_jenkins_state; since 1.6) */
+    FRICREG_SVALUE_JENKINS = 9     /**< energy dissipated by all Jenkins or Iwan elements
+                                       since t = 0 (fricreg_structure_get_jenkins_state,
+                                       fricreg_structure_get_iwan_state; since 1.6) */
 };
 
 /** Attach me Jenkins elements (fricreg_jenkins.h's 1-D element: a spring kt in series with a
@@ -532,9 +533,123 @@ FRICREG_API int fricreg_structure_set_jenkins_csr(fricreg_structure *s, size_t m
  *  committed slider positions w[me] (the units of q) and the energy each has dissipated since
  *  set_initial (or since set_jenkins) D[me] (energy units, as FRICREG_SVALUE_JENKINS). Any of
  *  f, w, D may be NULL, not all three. Since 1.6 (FRICREG_1.6).
- *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if me is not the number of elements set. */
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if me is not the number of elements set,
+ *  or w is not NULL and the elements are Iwan elements of ns > 1 sliders
+ *  (fricreg_structure_get_iwan_state reads those). */
 FRICREG_API int fricreg_structure_get_jenkins_state(const fricreg_structure *s, size_t me,
                                                     double f[], double w[], double D[]);
+
+/** Attach me Iwan elements (fricreg_iwan.h's 1-D element: ns Jenkins sliders in parallel) to
+ *  the structure, on the rows of Je[me*ndof] as fricreg_structure_set_jenkins. Element i sees
+ *  q_i = (J_e u)_i and pushes back with the sum of its sliders' forces,
+ *
+ *      fe_i = sum_s f_is,   f_is = k_is (q_i - w_is),   |f_is| <= phi_is,
+ *
+ *  each slider by the exact return mapping from its committed position w_is (the element of
+ *  fricreg_iwan_set_params and fricreg_hb_set_iwan); the structure gets -J_e^T fe. An element
+ *  of ns sliders is ns Jenkins elements on copies of its row, but the step's Newton keeps me
+ *  unknowns: an element's tangent is the sum of its sticking sliders' k. Everything else
+ *  (Newmark/HHT implicit, central difference with the step guard on K + J_e^T diag(sum_s k) J_e,
+ *  run_ode refusing elements, no friction contact of bound > 0 beside them, the energy with the
+ *  sliders' springs in FRICREG_SVALUE_STRAIN and their dissipation, summed over an element's
+ *  sliders, in FRICREG_SVALUE_JENKINS) is as for fricreg_structure_set_jenkins, which is this
+ *  call with ns = 1 (k = kt, phi = mun). Setting Iwan elements replaces the elements in force,
+ *  Jenkins or Iwan.
+ *
+ *  me         number of elements (0 removes them: Je, k, phi may then be NULL).
+ *  ndof       must be the structure's.
+ *  Je         [me*ndof] row-major, as fricreg_structure_set_jenkins.
+ *  ns         sliders per element, >= 1; me ns <= 2^26.
+ *  k[me*ns]   stiffnesses > 0 (finite), force per unit of q; element i's slider s at
+ *             k[i ns + s] (row-major; Fortran: a (ns, me) array).
+ *  phi[me*ns] slip forces >= 0 (finite), force units, laid out as k (Segalman's
+ *             discretization: fricreg_iwan_set_segalman then fricreg_iwan_get_params).
+ *
+ *  Copied; every slider at w = 0 and the dissipation at 0, as after
+ *  fricreg_structure_set_initial. Allocates O(me^2 + me ns + nnz(J_e)). Since 1.6
+ *  (FRICREG_1.6).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL (s, or Je, k or phi with me > 0); FRICREG_ESIZE if ndof is
+ *  not the structure's; FRICREG_EINVAL if ns = 0 with me > 0, me ns > 2^26, a row of J_e is
+ *  zero, a k <= 0 or a phi < 0, or the call comes from the observer; FRICREG_ENONFINITE (an
+ *  entry of Je, k or phi); FRICREG_ENOMEM. On failure the elements in force are unchanged. */
+FRICREG_API int fricreg_structure_set_iwan(fricreg_structure *s, size_t me, size_t ndof,
+                                           const double Je[], size_t ns, const double k[],
+                                           const double phi[]);
+
+/** The same with J_e from compressed sparse rows: rowptr[me + 1], colind[nnz], values[nnz],
+ *  flags FRICREG_SPARSE_ONE_BASED or 0, as fricreg_structure_set_jenkins_csr. Since 1.6
+ *  (FRICREG_1.6).
+ *  Returns FRICREG_OK; FRICREG_ENULL (s, k, phi, rowptr, or colind or values with nnz > 0);
+ *  FRICREG_ESIZE; FRICREG_EINVAL (flags, pointers, indices, a zero row, ns = 0, k <= 0,
+ *  phi < 0, me ns > 2^26, from the observer); FRICREG_ENONFINITE; FRICREG_ENOMEM, as
+ *  fricreg_structure_set_iwan. */
+FRICREG_API int fricreg_structure_set_iwan_csr(fricreg_structure *s, size_t me, size_t ndof,
+                                               int flags, const int64_t rowptr[],
+                                               const int64_t colind[], const double values[],
+                                               size_t ns, const double k[], const double phi[]);
+
+/** Copy the elements' state at the current time (Iwan or Jenkins elements, the latter with
+ *  ns = 1): their forces f[me] (force units, the sum of the sliders' forces on the element,
+ *  -J_e^T f on the structure; 0 before the first step), the committed slider positions
+ *  w[me*ns] (row-major, element i's slider s at w[i ns + s], the units of q) and the energy
+ *  each element has dissipated since set_initial (or since the elements were set) D[me]
+ *  (energy units, their sum FRICREG_SVALUE_JENKINS). Any of f, w, D may be NULL, not all
+ *  three. Since 1.6 (FRICREG_1.6).
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if me is not the number of elements set,
+ *  or (me > 0) ns is not their sliders per element. */
+FRICREG_API int fricreg_structure_get_iwan_state(const fricreg_structure *s, size_t me, size_t ns,
+                                                 double f[], double w[], double D[]);
+
+/** Attach me Jenkins elements with a normal load and lift-off (fricreg_jenkins_set_normal's
+ *  law): element i has a tangential row i of Je[me*ndof] and a normal row i of Jn[me*ndof]
+ *  (both row-major, as fricreg_structure_set_jenkins's Je), sees q_i = (J_e u)_i and the
+ *  normal relative displacement g_i = (J_n u)_i (positive closing), carries the normal force
+ *
+ *      N_i = max(0, n0_i + kn_i g_i)
+ *
+ *  and the tangential force fe_i = kt_i (q_i - w_i), |fe_i| <= mu_i N_i, by
+ *  fricreg_jenkins_trial_normal's return mapping from its committed slider w_i; while the
+ *  element is separated (n0 + kn g < 0) fe_i = 0 and the slider follows q (its memory reset).
+ *  Both forces act on the structure:
+ *
+ *      M u'' + C u' + K u + J_e^T fe(J_e u, J_n u) + J_n^T N(J_n u) = p(t) - M r a_g(t) + J^T f,
+ *
+ *  so at rest in contact the structure carries -J_n^T n0. Newmark and HHT-alpha solve the
+ *  elements as fricreg_structure_set_jenkins does, on 2 me unknowns (fe, N) condensed through
+ *  E = J K_eff^-1 J^T with J = (J_e over J_n), their exact tangent including dfe/dg = mu kn
+ *  sign(fe) while slipping and dN/dg = kn while closed; the central difference evaluates them
+ *  at u(t + dt), its step guard reading K + J_e^T diag(kt) J_e + J_n^T diag(kn) J_n. Energy:
+ *  N^2/(2 kn) is part of FRICREG_SVALUE_STRAIN and the sliders' dissipation of
+ *  FRICREG_SVALUE_JENKINS; the balance is exact over steps in which every element stays closed
+ *  or open (a step that opens or closes one leaves a residual of the order of kn times the
+ *  step's normal overshoot squared, and FRICREG_WARN_ENERGY is then not judged). Refusals
+ *  beside contacts, run_ode and the observer are fricreg_structure_set_jenkins's. Copied; every slider at w = 0; replaces the elements in
+ *  force. me = 0 removes them (the arrays may then be NULL). Since 1.6 (FRICREG_1.6).
+ *
+ *  kt[me]  tangential stiffness > 0 (finite), force per unit of q.
+ *  mu[me]  friction coefficient >= 0 (finite).
+ *  n0[me]  normal force at g = 0 (finite, force units; < 0: open at g = 0).
+ *  kn[me]  normal stiffness > 0 (finite), force per unit of g.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL (s, or Je, Jn, kt, mu, n0 or kn with me > 0);
+ *  FRICREG_ESIZE if ndof is not the structure's; FRICREG_EINVAL if me > 2^26, a row of J_e or
+ *  J_n is zero, a kt <= 0, mu < 0 or kn <= 0, or the call comes from the observer;
+ *  FRICREG_ENONFINITE (an entry of Je, Jn, kt, mu, n0 or kn); FRICREG_ENOMEM. On failure the
+ *  elements in force are unchanged. */
+FRICREG_API int fricreg_structure_set_jenkins_normal(fricreg_structure *s, size_t me, size_t ndof,
+                                                     const double Je[], const double Jn[],
+                                                     const double kt[], const double mu[],
+                                                     const double n0[], const double kn[]);
+
+/** Copy the normal forces N[me] (force units, max(0, n0 + kn g), 0 while separated) of the
+ *  elements of fricreg_structure_set_jenkins_normal at the current time (0 before the first
+ *  step); their tangential forces, sliders and dissipation are
+ *  fricreg_structure_get_jenkins_state's. Since 1.6 (FRICREG_1.6).
+ *  Returns FRICREG_OK; FRICREG_ENULL if s or N is NULL; FRICREG_ESIZE if me is not the number
+ *  of elements set; FRICREG_EINVAL if they have no normal law. */
+FRICREG_API int fricreg_structure_get_normal_forces(const fricreg_structure *s, size_t me,
+                                                    double N[]);
 
 /** Read one quantity (enum fricreg_structure_value) into *value.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown quantity. */
@@ -592,7 +707,8 @@ FRICREG_API size_t fricreg_structure_errmsg_copy(const fricreg_structure *s, cha
  *    (FRICREG_SSTAT_NEWTON_FAILURES > 0); FRICREG_WARN_NEWTON_SLOW: more than 5 iterations per
  *    step on average.
  *  - FRICREG_WARN_ENERGY: when every step since set_initial was average-acceleration Newmark
- *    (whose discrete balance is exact), |FRICREG_SVALUE_RESIDUAL| above 1e-6 of
+ *    (whose discrete balance is exact) and none opened or closed an element of
+ *    fricreg_structure_set_jenkins_normal, |FRICREG_SVALUE_RESIDUAL| above 1e-6 of
  *    |initial| + |input|.
  *  Called from the observer during a run, it judges nothing and returns the list as it was.
  *  Returns the number of warnings; 0 if s is NULL. Since 1.6 (FRICREG_1.6). */

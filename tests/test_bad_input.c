@@ -669,6 +669,37 @@ static int w_st_set_jenkins_csr(void)
                                              I64(2, ST_JE_IND), A(3, ST_JE, 1), A(4, ST_KT, 1),
                                              A(5, ST_MUN, 1));
 }
+static const double ST_IW_K[3] = {2.0, 1.0, 0.5}, ST_IW_PHI[3] = {0.1, 0.2, 0.3};
+static int w_st_set_iwan(void)
+{
+    return fricreg_structure_set_iwan(ST(), C(0, 1), Z(0, 2), A(1, ST_JE, 2), C(1, 3),
+                                      A(2, ST_IW_K, 3), A(3, ST_IW_PHI, 3));
+}
+static int w_st_set_iwan_csr(void)
+{
+    return fricreg_structure_set_iwan_csr(ST(), C(0, 1), Z(0, 2), N(0, 0), I64(1, ST_JE_PTR),
+                                          I64(2, ST_JE_IND), A(3, ST_JE, 1), C(1, 3),
+                                          A(4, ST_IW_K, 3), A(5, ST_IW_PHI, 3));
+}
+static int w_st_get_iwan_state(void)
+{
+    return fricreg_structure_get_iwan_state(ST(), Z(0, 0), Z(1, 3), OUTD(1), OUTD(2), OUTD(3));
+}
+static int w_st_get_iwan_state_no_output(void)
+{
+    return fricreg_structure_get_iwan_state(ST(), 0, 3, NULL, NULL, NULL);
+}
+static const double ST_JN[2] = {0.0, 1.0}, ST_N0[1] = {0.5}, ST_KN[1] = {3.0};
+static int w_st_set_jenkins_normal(void)
+{
+    return fricreg_structure_set_jenkins_normal(ST(), C(0, 1), Z(0, 2), A(1, ST_JE, 2),
+                                                A(2, ST_JN, 2), A(3, ST_KT, 1), A(4, ST_MUN, 1),
+                                                A(5, ST_N0, 1), A(6, ST_KN, 1));
+}
+static int w_st_get_normal_forces(void)
+{
+    return fricreg_structure_get_normal_forces(ST(), Z(0, 0), OUTD(1));
+}
 static int w_st_get_jenkins_state(void)
 {
     return fricreg_structure_get_jenkins_state(ST(), Z(0, 0), OUTD(1), OUTD(2), OUTD(3));
@@ -1653,6 +1684,46 @@ static const struct row rows[] = {
      ST_REC,
      {HANDLE, COUNT(0, "ooii"), SIZE(0, "ssss"), INT(0, "ioii"), PTR(1, "0"), PTR(2, "0"),
       PTR(3, "0"), ARR(3, "nnoioo"), PTR(4, "0"), ARR(4, "nniioo"), PTR(5, "0"), ARR(5, "nniooo")}},
+    {"fricreg_structure_set_iwan",
+     w_st_set_iwan,
+     "0snim",
+     ST_REC,
+     {HANDLE, COUNT(0, "ooii"), SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnoioo"), COUNT(1, "ioii"),
+      PTR(2, "0"), ARR(2, "nniioo"), PTR(3, "0"), ARR(3, "nniooo")}},
+    {"fricreg_structure_set_iwan_csr",
+     w_st_set_iwan_csr,
+     "0snim",
+     ST_REC,
+     {HANDLE, COUNT(0, "ooii"), SIZE(0, "ssss"), INT(0, "ioii"), PTR(1, "0"), PTR(2, "0"),
+      PTR(3, "0"), ARR(3, "nnoioo"), COUNT(1, "ioii"), PTR(4, "0"), ARR(4, "nniioo"), PTR(5, "0"),
+      ARR(5, "nniooo")}},
+    {"fricreg_structure_get_iwan_state",
+     w_st_get_iwan_state,
+     "0s",
+     NONE,
+     {HANDLE, SIZE(0, "osss"), SIZE(1, "oooo"), PTR(1, "o"), PTR(2, "o"), PTR(3, "o")}},
+    {"fricreg_structure_get_iwan_state (all outputs NULL)",
+     w_st_get_iwan_state_no_output,
+     "0s",
+     NONE,
+     {PTR(8, "0")}},
+    {"fricreg_structure_set_jenkins_normal",
+     w_st_set_jenkins_normal,
+     "0snim",
+     ST_REC,
+     {HANDLE, COUNT(0, "ooii"), SIZE(0, "ssss"), PTR(1, "0"), PTR(2, "0"), PTR(3, "0"), PTR(4, "0"),
+      PTR(5, "0"), PTR(6, "0")}},
+    {"fricreg_structure_set_jenkins_normal (array entries)",
+     w_st_set_jenkins_normal,
+     "0snim",
+     ST_REC,
+     {ARR(1, "nnoioo"), ARR(2, "nnoooo"), ARR(3, "nniioo"), ARR(4, "nniooo"), ARR(5, "nnoooo"),
+      ARR(6, "nniioo")}},
+    {"fricreg_structure_get_normal_forces",
+     w_st_get_normal_forces,
+     "0si",
+     NONE,
+     {HANDLE, SIZE(0, "osss"), PTR(1, "0")}},
     {"fricreg_structure_get_jenkins_state",
      w_st_get_jenkins_state,
      "0s",

@@ -6,13 +6,17 @@
 !     Newmark solution is u_n = (P/k)(1 - cos(W n dt)), W = (2/dt) atan(w dt/2): at dt = 0.01 s,
 !     u(1.37 s) = -0.00113279590437900 m (tests/cli.sh's), the element's force kt u;
 !   - the element slipping (mu N = 0.05 N): it dissipates, and the energy balance closes;
-!   - Fortran's size checks (FRICREG_ESIZE naming the array) and C's refusals (kt <= 0).
+!   - Fortran's size checks (FRICREG_ESIZE naming the array) and C's refusals (kt <= 0);
+!   - an Iwan element of two sliders (set_iwan, get_iwan_state) is two Jenkins elements on
+!     copies of its row: the same run to rounding;
+!   - a stuck, closed lift-off element (set_jenkins_normal, get_normal_forces): N = n0 + kn u.
 program test_structure_jenkins
   use fricreg
   use ftest
   implicit none
   type(fricreg_structure) :: st
   real(c_double) :: u(1), f(1), w(1), D(1), D2(2), residual, input, jenkins
+  real(c_double) :: u2(1), w2(2, 1), fj(2), wj(2), Dj(2)
   real(c_double), parameter :: Je(1, 1) = reshape([1.0_c_double], [1, 1])
 
   call check_status(st%create(1, 1), FRICREG_OK, 'create 1, 1')
@@ -54,5 +58,50 @@ program test_structure_jenkins
   call check_status(st%get_jenkins_state(f=f, D=D2), FRICREG_ESIZE, &
                     'f and D differ in size')
   call check_status(st%get_jenkins_state(), FRICREG_ENULL, 'no output')
+
+  ! ---- Iwan elements: two sliders are two Jenkins elements on copies of the row --------------
+  call check_status(st%set_iwan(Je, reshape([150.0_c_double, 50.0_c_double], [2, 1]), &
+                                reshape([0.03_c_double, 0.05_c_double], [2, 1])), FRICREG_OK, &
+                    'set_iwan')
+  call check_status(st%set_initial([0.0_c_double], [0.0_c_double]), FRICREG_OK, 'set_initial')
+  call check_status(st%run(0.01_c_double, 1.37_c_double), FRICREG_OK, 'run Iwan')
+  call check_status(st%get_state(u=u), FRICREG_OK, 'get_state Iwan')
+  call check_status(st%get_iwan_state(f=f, w=w2, D=D), FRICREG_OK, 'get_iwan_state')
+  call check_status(st%get_iwan_state(D=D2(1:1)), FRICREG_OK, 'get_iwan_state D alone')
+  call check(D2(1) == D(1), 'D alone is D')
+  call check_status(st%set_jenkins(reshape([1.0_c_double, 1.0_c_double], [2, 1]), &
+                                   [150.0_c_double, 50.0_c_double], &
+                                   [0.03_c_double, 0.05_c_double]), FRICREG_OK, &
+                    'set_jenkins copies')
+  call check_status(st%set_initial([0.0_c_double], [0.0_c_double]), FRICREG_OK, 'set_initial')
+  call check_status(st%run(0.01_c_double, 1.37_c_double), FRICREG_OK, 'run copies')
+  call check_status(st%get_state(u=u2), FRICREG_OK, 'get_state copies')
+  call check_status(st%get_jenkins_state(f=fj, w=wj, D=Dj), FRICREG_OK, 'get_jenkins_state')
+  call check_close(u(1), u2(1), 1e-14_c_double, 'Iwan = Jenkins copies: u')
+  call check_close(f(1), fj(1) + fj(2), 1e-14_c_double, 'Iwan = Jenkins copies: f')
+  call check_close(w2(2, 1), wj(2), 1e-14_c_double, 'Iwan = Jenkins copies: w')
+  call check_close(D(1), Dj(1) + Dj(2), 1e-14_c_double, 'Iwan = Jenkins copies: D')
+  call check(D(1) > 0.0_c_double, 'the Iwan element dissipated')
+  call check_status(st%set_iwan(Je, reshape([150.0_c_double, 50.0_c_double], [2, 1]), &
+                                reshape([0.03_c_double], [1, 1])), FRICREG_ESIZE, &
+                    'phi of 1 slider')
+  call check(index(st%errmsg(), 'phi') > 0, 'the message names phi')
+
+  ! ---- lift-off: stuck and closed, the springs kt and kn and the force -n0 -------------------
+  ! one mass, Je = Jn = 1: K 217.3 + 200 + 100 under P - n0; N = n0 + kn u stays > 0 (u
+  ! peaks near 2 (P - n0)/517.3 = -0.0145)
+  call check_status(st%set_jenkins_normal(Je, Je, [200.0_c_double], [1e20_c_double], &
+                                          [2.0_c_double], [100.0_c_double]), FRICREG_OK, &
+                    'set_jenkins_normal')
+  call check_status(st%set_initial([0.0_c_double], [0.0_c_double]), FRICREG_OK, 'set_initial')
+  call check_status(st%run(0.01_c_double, 1.37_c_double), FRICREG_OK, 'run lift-off')
+  call check_status(st%get_state(u=u), FRICREG_OK, 'get_state lift-off')
+  call check_status(st%get_normal_forces(D), FRICREG_OK, 'get_normal_forces')
+  call check_close(D(1), 2.0_c_double + 100.0_c_double * u(1), 1e-13_c_double, 'N = n0 + kn u')
+  call check(D(1) > 0.0_c_double, 'closed')
+  call check_status(st%set_jenkins_normal(Je, reshape([1.0_c_double, 1.0_c_double], [2, 1]), &
+                                          [200.0_c_double], [0.3_c_double], [0.5_c_double], &
+                                          [100.0_c_double]), FRICREG_ESIZE, 'Jn of 2 rows')
+  call check(index(st%errmsg(), 'Jn') > 0, 'the message names Jn')
   call finish('test_structure_jenkins')
 end program test_structure_jenkins

@@ -74,7 +74,9 @@ void fr_energy_step(fricreg_structure *s, const gsl_vector *u1, const gsl_vector
     }
     const struct fr_elements *e = &s->el; /* its sliders' slip times the mean force */
     for (size_t i = 0; i < e->me; i++) {
-        double d = (e->wt[i] - e->wc[i]) * (0.5 * e->fe[i] + 0.5 * e->fe1[i]);
+        double d = 0.0;
+        for (size_t j = i * e->ns; j < (i + 1) * e->ns; j++)
+            d += (e->wt[j] - e->wc[j]) * (0.5 * e->fs[j] + 0.5 * e->fs1[j]);
         e->dissipation[i] += d;
         s->energy.jenkins += d;
     }

@@ -122,7 +122,7 @@ static int bound_rate(fricreg_structure *s, const cholmod_sparse *X, double *max
     return xlo >= 0.0;
 }
 
-/* K + J_e^T diag(kt) J_e, the stiffness with every Jenkins element sticking (its upper
+/* K + J^T diag(kstick) J, the stiffness with every element sticking and closed (its upper
  * triangle), or NULL when out of memory. */
 static cholmod_sparse *stick_stiffness(fricreg_structure *s)
 {
@@ -131,9 +131,9 @@ static cholmod_sparse *stick_stiffness(fricreg_structure *s)
         return NULL;
     const SuiteSparse_long *Bp = B->p;
     double *Bx = B->x;
-    for (size_t i = 0; i < s->el.me; i++)
+    for (size_t i = 0; i < s->el.nc; i++)
         for (SuiteSparse_long p = Bp[i]; p < Bp[i + 1]; p++)
-            Bx[p] *= sqrt(s->el.kt[i]);
+            Bx[p] *= sqrt(s->el.kstick[i]);
     cholmod_sparse *BBt = cholmod_l_aat(B, NULL, 0, 1, &s->cc);
     cholmod_l_free_sparse(&B, &s->cc);
     cholmod_sparse *upper = BBt == NULL ? NULL : cholmod_l_copy(BBt, 1, 1, &s->cc);

@@ -1,26 +1,35 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* jenkins.c — Jenkins elements (a spring kt in series with a Coulomb slider of bound mun) on
- * rows of J_e as a fricreg_structure's joints: their setters and getters, and their part of
- * each step.
+/* jenkins.c — Jenkins elements (a spring kt in series with a Coulomb slider of bound mun) and
+ * Iwan elements (ns such sliders in parallel) on rows of J_e as a fricreg_structure's joints:
+ * their setters and getters, and their part of each step.
  *
- * Element i sees q_i = (J_e u)_i and pushes back with fe_i = kt_i (q_i - w_i), |fe_i| <= mun_i,
- * by the exact return mapping from its committed slider position (src/joint/slider.h), so the
- * structure gets -J_e^T fe. The force is a function of the displacement with the consistent
- * tangent kt (stick) or 0 (slip).
+ * Element i sees q_i = (J_e u)_i and pushes back with fe_i = sum_s k_s (q_i - w_s),
+ * |k_s (q_i - w_s)| <= phi_s, each slider by the exact return mapping from its committed
+ * position (src/joint/slider.h), so the structure gets -J_e^T fe. A Jenkins element is one
+ * slider (k = kt, phi = mun). The force is a function of the displacement with the consistent
+ * tangent sum of the sticking sliders' k: the condensed Newton below keeps me unknowns whatever
+ * ns is.
+ *
+ * With a normal law (set_jenkins_normal) element i also has a row of J_n, g_i = (J_n u)_i,
+ * N_i = max(0, n0_i + kn_i g_i) acting as -J_n^T N on the structure, and the bound phi N
+ * (fricreg_jenkins_trial_normal's law; separated, N_i < 0 before the max, the sliders follow
+ * q). The coordinates below are then (q, g) and the forces (fe, N): 2 me of them, J = J_e over
+ * J_n, and the tangent T gains dfe/dg (slipping) and dN/dg = kn (closed).
  *
  * Newmark / HHT-alpha: with the contacts' forces zero (the combination with active contacts is
  * refused), the step's equation K_eff x = b - w J_e^T fe1 (w = 1 + alpha) condenses onto the
  * elements: u1 = u_pred + beta dt^2 x gives
  *   q(fe1) = q0 - c E fe1,   q0 = J_e (u_pred + beta dt^2 K_eff^-1 b),   c = w beta dt^2,
  * E = J_e K_eff^-1 J_e^T (me x me, formed once per factor of K_eff), and Newton solves
- * G(fe1) = fe1 - F(q(fe1)) = 0 on the matrix I + c diag(tangent) E with GSL's pivoted QR, the
- * direction halved until ||G||_2 decreases (the mapping is piecewise linear: a full step can
- * overshoot a kink). Central difference: fe1 = F(J_e u1) at the explicit displacement.
+ * G(fe1) = fe1 - F(q(fe1)) = 0 on the matrix I + c T E (T = diag(tangent)) with GSL's
+ * pivoted QR, the direction halved until ||G||_2 decreases (the mapping is piecewise linear: a
+ * full step can overshoot a kink). Central difference: fe1 = F(J_e u1) at the explicit displacement.
  *
- * Energy: fe = kt (q - w) at both ends of a step, so the trapezoidal work of the elements
- * dq (fe + fe1)/2 is exactly the change of their springs' energy fe^2/(2 kt) plus
- * dw (fe + fe1)/2, which is booked as their dissipation: the balance closes as it does for
- * the contacts. */
+ * Energy: f_s = k_s (q - w_s) at both ends of a step, so a slider's share of the trapezoidal
+ * work dq (f_s + f_s1)/2 is exactly the change of its spring's energy f_s^2/(2 k_s) plus
+ * dw_s (f_s + f_s1)/2, which is booked as its dissipation: the balance closes as it does for
+ * the contacts. A normal spring's dg (N + N1)/2 is the change of N^2/(2 kn) while it stays
+ * closed (or open); a step across the kink is not exact. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -39,9 +48,10 @@
 void fr_elements_free(fricreg_structure *s)
 {
     struct fr_elements *e = &s->el;
-    double *arrays[] = {e->kt,      e->mun,         e->wc, e->wt,  e->fe,  e->fe1, e->wc_held,
-                        e->fe_held, e->dissipation, e->q0, e->g,   e->df,  e->ft,  e->gt,
-                        e->tan,     e->E,           e->A,  e->tau, e->norm};
+    double *arrays[] = {e->k,           e->phi,  e->n0, e->kn,  e->kstick,  e->wc,      e->wt,
+                        e->fs,          e->fs1,  e->fe, e->fe1, e->wc_held, e->fs_held, e->fe_held,
+                        e->dissipation, e->q0,   e->y,  e->g,   e->df,      e->ft,      e->gt,
+                        e->tan,         e->tang, e->E,  e->A,   e->tau,     e->norm};
     for (size_t k = 0; k < sizeof arrays / sizeof *arrays; k++)
         free(arrays[k]);
     free(e->perm);
@@ -49,24 +59,34 @@ void fr_elements_free(fricreg_structure *s)
     *e = (struct fr_elements){0};
 }
 
-/* The new elements' arrays into e (zeroed); 0 when out of memory (e then partly filled: the
- * caller frees it). */
-static int allocate(struct fr_elements *e, size_t me)
+/* The new elements' arrays into e (zeroed; e->me, ns, nc set, nc > me: with a normal law);
+ * 0 when out of memory (e then partly filled: the caller frees it). */
+static int allocate(struct fr_elements *e)
 {
-    double **arrays[] = {&e->kt,      &e->mun,     &e->wc,          &e->wt,  &e->fe,  &e->fe1,
-                         &e->wc_held, &e->fe_held, &e->dissipation, &e->q0,  &e->g,   &e->df,
-                         &e->ft,      &e->gt,      &e->tan,         &e->tau, &e->norm};
-    for (size_t k = 0; k < sizeof arrays / sizeof *arrays; k++)
-        if ((*arrays[k] = calloc(me, sizeof(double))) == NULL)
+    size_t me = e->me, ns = e->ns, nc = e->nc;
+    double **sliders[] = {&e->k,  &e->phi, &e->wc,      &e->wt,
+                          &e->fs, &e->fs1, &e->wc_held, &e->fs_held};
+    double **coordinates[] = {&e->kstick, &e->fe, &e->fe1, &e->fe_held, &e->q0,  &e->y,   &e->g,
+                              &e->df,     &e->ft, &e->gt,  &e->tan,     &e->tau, &e->norm};
+    double **normal[] = {&e->n0, &e->kn, &e->tang};
+    for (size_t k = 0; k < sizeof sliders / sizeof *sliders; k++)
+        if ((*sliders[k] = calloc(me * ns, sizeof(double))) == NULL)
             return 0;
-    e->E = calloc(me * me, sizeof(double));
-    e->A = calloc(me * me, sizeof(double));
-    e->perm = calloc(me, sizeof *e->perm);
-    return e->E != NULL && e->A != NULL && e->perm != NULL;
+    for (size_t k = 0; k < sizeof coordinates / sizeof *coordinates; k++)
+        if ((*coordinates[k] = calloc(nc, sizeof(double))) == NULL)
+            return 0;
+    for (size_t k = 0; k < sizeof normal / sizeof *normal && nc > me; k++)
+        if ((*normal[k] = calloc(me, sizeof(double))) == NULL)
+            return 0;
+    e->dissipation = calloc(me, sizeof(double));
+    e->E = calloc(nc * nc, sizeof(double));
+    e->A = calloc(nc * nc, sizeof(double));
+    e->perm = calloc(nc, sizeof *e->perm);
+    return e->dissipation != NULL && e->E != NULL && e->A != NULL && e->perm != NULL;
 }
 
-/* Every element moves: no zero column of J_e^T. */
-static int check_rows(fricreg_structure *s, const cholmod_sparse *Jt, const char *who)
+/* Every element moves: no zero column of J^T (me of J_e, then J_n's). */
+static int check_rows(fricreg_structure *s, const cholmod_sparse *Jt, size_t me, const char *who)
 {
     const SuiteSparse_long *p = Jt->p;
     const double *x = Jt->x;
@@ -76,41 +96,53 @@ static int check_rows(fricreg_structure *s, const cholmod_sparse *Jt, const char
             moves |= x[k] != 0.0;
         if (!moves)
             return fr_fail(s, FRICREG_EINVAL,
-                           "%s: row %zu of J_e is zero: element %zu does not move", who, i, i);
+                           "%s: row %zu of %s is zero: element %zu does not move", who, i % me,
+                           i < me ? "J_e" : "J_n", i % me);
     }
     return FRICREG_OK;
 }
 
-static int check_params(fricreg_structure *s, size_t me, const double kt[], const double mun[],
-                        const char *who)
+/* What a setter attaches: Jenkins elements (ns = 1, kt and mun), Iwan elements (k and phi per
+ * slider), or Jenkins elements with a normal law (kt and mu, n0 and kn, J_n). */
+enum kind { KIND_JENKINS, KIND_IWAN, KIND_NORMAL };
+
+/* k > 0 and phi >= 0, finite, per slider (ns of them per element), named after the kind. */
+static int check_params(fricreg_structure *s, size_t me, size_t ns, enum kind kind,
+                        const double k[], const double phi[], const char *who)
 {
-    if (kt == NULL || mun == NULL)
-        return fr_fail(s, FRICREG_ENULL, "%s: kt or mun is NULL", who);
-    for (size_t i = 0; i < me; i++) {
-        if (!isfinite(kt[i]) || !isfinite(mun[i]))
+    const char *kn = kind == KIND_IWAN ? "k" : "kt", *pn = kind == KIND_IWAN     ? "phi"
+                                                           : kind == KIND_NORMAL ? "mu"
+                                                                                 : "mun";
+    if (k == NULL || phi == NULL)
+        return fr_fail(s, FRICREG_ENULL, "%s: %s or %s is NULL", who, kn, pn);
+    for (size_t j = 0; j < me * ns; j++) {
+        if (!isfinite(k[j]) || !isfinite(phi[j]))
             return fr_fail(s, FRICREG_ENONFINITE,
-                           "%s: element %zu's kt = %g or mun = %g is not finite", who, i, kt[i],
-                           mun[i]);
-        if (!(kt[i] > 0.0) || !(mun[i] >= 0.0))
+                           "%s: element %zu's %s = %g or %s = %g (slider %zu) is not finite", who,
+                           j / ns, kn, k[j], pn, phi[j], j % ns);
+        if (!(k[j] > 0.0) || !(phi[j] >= 0.0))
             return fr_fail(s, FRICREG_EINVAL,
-                           "%s: element %zu needs kt > 0 and mun >= 0 (kt = %g, "
-                           "mun = %g)",
-                           who, i, kt[i], mun[i]);
+                           "%s: element %zu (slider %zu) needs %s > 0 and %s >= 0 (%s = %g, "
+                           "%s = %g)",
+                           who, j / ns, j % ns, kn, pn, kn, k[j], pn, phi[j]);
     }
     return FRICREG_OK;
 }
 
-/* Takes J (me x n, CHOLMOD's, freed here on every path) and installs the elements. */
-static int install(fricreg_structure *s, size_t me, cholmod_sparse *J, const double kt[],
-                   const double mun[], const char *who)
+/* Takes J (nc x n: J_e, then J_n with a normal law n0, kn (else NULL); CHOLMOD's, freed here
+ * on every path) and installs the elements of ns sliders each. */
+static int install(fricreg_structure *s, size_t me, size_t ns, cholmod_sparse *J, const double k[],
+                   const double phi[], const double n0[], const double kn[], const char *who)
 {
     struct fr_elements e = {0};
     e.me = me;
+    e.ns = ns;
+    e.nc = n0 != NULL ? 2 * me : me;
     e.Jt = cholmod_l_transpose(J, 1, &s->cc);
     cholmod_l_free_sparse(&J, &s->cc);
-    int status = e.Jt == NULL || !allocate(&e, me)
+    int status = e.Jt == NULL || !allocate(&e)
                      ? fr_fail(s, FRICREG_ENOMEM, "%s: no memory for %zu elements", who, me)
-                     : check_rows(s, e.Jt, who);
+                     : check_rows(s, e.Jt, me, who);
     if (status != FRICREG_OK) {
         struct fr_elements old = s->el;
         s->el = e;
@@ -118,8 +150,16 @@ static int install(fricreg_structure *s, size_t me, cholmod_sparse *J, const dou
         s->el = old;
         return status;
     }
-    memcpy(e.kt, kt, me * sizeof *kt);
-    memcpy(e.mun, mun, me * sizeof *mun);
+    memcpy(e.k, k, me * ns * sizeof *k);
+    memcpy(e.phi, phi, me * ns * sizeof *phi);
+    for (size_t i = 0; i < me; i++)
+        for (size_t j = 0; j < ns; j++)
+            e.kstick[i] += k[i * ns + j];
+    if (n0 != NULL) {
+        memcpy(e.n0, n0, me * sizeof *n0);
+        memcpy(e.kn, kn, me * sizeof *kn);
+        memcpy(e.kstick + me, kn, me * sizeof *kn);
+    }
     fr_elements_free(s);
     s->el = e;
     fr_structure_model_changed(s); /* E = J_e K_eff^-1 J_e^T and the equilibrium anew */
@@ -127,14 +167,17 @@ static int install(fricreg_structure *s, size_t me, cholmod_sparse *J, const dou
     return FRICREG_OK;
 }
 
-static int start_setter(fricreg_structure *s, size_t me, size_t ndof, const char *who)
+static int start_setter(fricreg_structure *s, size_t me, size_t ns, size_t ndof, const char *who)
 {
     if (s->running)
         return fr_structure_busy(s, who);
     if (ndof != s->n)
         return fr_fail(s, FRICREG_ESIZE, "%s: ndof = %zu, the structure has %zu", who, ndof, s->n);
-    if (me > MAX_ELEMENTS)
-        return fr_fail(s, FRICREG_EINVAL, "%s: me = %zu elements exceed 2^26", who, me);
+    if (ns == 0 && me > 0)
+        return fr_fail(s, FRICREG_EINVAL, "%s: ns = 0: an Iwan element needs a slider", who);
+    if (me > MAX_ELEMENTS || (me > 0 && ns > MAX_ELEMENTS / me))
+        return fr_fail(s, FRICREG_EINVAL, "%s: me = %zu elements of %zu sliders exceed 2^26", who,
+                       me, ns);
     return FRICREG_OK;
 }
 
@@ -146,50 +189,138 @@ static int remove_all(fricreg_structure *s)
     return FRICREG_OK;
 }
 
-int fricreg_structure_set_jenkins(fricreg_structure *s, size_t me, size_t ndof, const double Je[],
-                                  const double kt[], const double mun[])
+/* The normal law's n0 finite and kn > 0, finite, and J_n's entries finite. */
+static int check_normal(fricreg_structure *s, size_t me, size_t ndof, const double Jn[],
+                        const double n0[], const double kn[], const char *who)
 {
-    const char *who = "set_jenkins";
+    if (Jn == NULL || n0 == NULL || kn == NULL)
+        return fr_fail(s, FRICREG_ENULL, "%s: %s is NULL", who,
+                       Jn == NULL   ? "J_n"
+                       : n0 == NULL ? "n0"
+                                    : "kn");
+    for (size_t i = 0; i < me; i++) {
+        if (!isfinite(n0[i]) || !isfinite(kn[i]))
+            return fr_fail(s, FRICREG_ENONFINITE,
+                           "%s: element %zu's n0 = %g or kn = %g is not finite", who, i, n0[i],
+                           kn[i]);
+        if (!(kn[i] > 0.0))
+            return fr_fail(s, FRICREG_EINVAL, "%s: element %zu needs kn > 0 (kn = %g)", who, i,
+                           kn[i]);
+    }
+    for (size_t j = 0; j < me * ndof; j++)
+        if (!isfinite(Jn[j]))
+            return fr_fail(s, FRICREG_ENONFINITE, "%s: J_n(%zu, %zu) is not finite", who, j / ndof,
+                           j % ndof);
+    return FRICREG_OK;
+}
+
+/* The dense setters' body; Jn, n0, kn only with KIND_NORMAL. */
+static int set_dense(fricreg_structure *s, size_t me, size_t ndof, const double Je[],
+                     const double Jn[], enum kind kind, size_t ns, const double k[],
+                     const double phi[], const double n0[], const double kn[], const char *who)
+{
     if (s == NULL)
         return FRICREG_ENULL;
-    int status = start_setter(s, me, ndof, who);
+    int status = start_setter(s, me, ns, ndof, who);
     if (status != FRICREG_OK)
         return status;
     if (me == 0)
         return remove_all(s);
     if (Je == NULL)
         return fr_fail(s, FRICREG_ENULL, "%s: J_e is NULL", who);
-    if ((status = check_params(s, me, kt, mun, who)) != FRICREG_OK)
+    if ((status = check_params(s, me, ns, kind, k, phi, who)) != FRICREG_OK)
         return status;
-    for (size_t k = 0; k < me * ndof; k++)
-        if (!isfinite(Je[k]))
-            return fr_fail(s, FRICREG_ENONFINITE, "%s: J_e(%zu, %zu) is not finite", who, k / ndof,
-                           k % ndof);
+    for (size_t j = 0; j < me * ndof; j++)
+        if (!isfinite(Je[j]))
+            return fr_fail(s, FRICREG_ENONFINITE, "%s: J_e(%zu, %zu) is not finite", who, j / ndof,
+                           j % ndof);
+    if (kind == KIND_NORMAL && (status = check_normal(s, me, ndof, Jn, n0, kn, who)) != FRICREG_OK)
+        return status;
     cholmod_sparse *J = NULL;
-    status = fr_dense_to_cholmod(me, ndof, Je, 0, &s->cc, &J, &s->err, who);
-    return status != FRICREG_OK ? status : install(s, me, J, kt, mun, who);
+    if (kind != KIND_NORMAL) {
+        status = fr_dense_to_cholmod(me, ndof, Je, 0, &s->cc, &J, &s->err, who);
+        return status != FRICREG_OK ? status : install(s, me, ns, J, k, phi, NULL, NULL, who);
+    }
+    double *stacked = malloc(2 * me * ndof * sizeof *stacked); /* J_e over J_n */
+    if (stacked == NULL)
+        return fr_fail(s, FRICREG_ENOMEM, "%s: no memory for %zu elements", who, me);
+    memcpy(stacked, Je, me * ndof * sizeof *stacked);
+    memcpy(stacked + me * ndof, Jn, me * ndof * sizeof *stacked);
+    status = fr_dense_to_cholmod(2 * me, ndof, stacked, 0, &s->cc, &J, &s->err, who);
+    free(stacked);
+    return status != FRICREG_OK ? status : install(s, me, ns, J, k, phi, n0, kn, who);
 }
 
-int fricreg_structure_set_jenkins_csr(fricreg_structure *s, size_t me, size_t ndof, int flags,
-                                      const int64_t rowptr[], const int64_t colind[],
-                                      const double values[], const double kt[], const double mun[])
+/* The compressed setters' body, as set_dense. */
+static int set_csr(fricreg_structure *s, size_t me, size_t ndof, int flags, const int64_t rowptr[],
+                   const int64_t colind[], const double values[], enum kind kind, size_t ns,
+                   const double k[], const double phi[], const char *who)
 {
-    const char *who = "set_jenkins_csr";
     if (s == NULL)
         return FRICREG_ENULL;
-    int status = start_setter(s, me, ndof, who);
+    int status = start_setter(s, me, ns, ndof, who);
     if (status != FRICREG_OK)
         return status;
     if (me == 0)
         return remove_all(s);
-    if ((status = check_params(s, me, kt, mun, who)) != FRICREG_OK)
+    if ((status = check_params(s, me, ns, kind, k, phi, who)) != FRICREG_OK)
         return status;
     struct fr_compressed a = {me, ndof, 0, flags, rowptr, colind, values};
     cholmod_sparse *J = NULL;
     status = fr_compressed_check(&a, 0, &s->err, who);
     if (status == FRICREG_OK)
         status = fr_compressed_to_cholmod(&a, 0, &s->cc, &J, &s->err, who);
-    return status != FRICREG_OK ? status : install(s, me, J, kt, mun, who);
+    return status != FRICREG_OK ? status : install(s, me, ns, J, k, phi, NULL, NULL, who);
+}
+
+int fricreg_structure_set_jenkins(fricreg_structure *s, size_t me, size_t ndof, const double Je[],
+                                  const double kt[], const double mun[])
+{
+    return set_dense(s, me, ndof, Je, NULL, KIND_JENKINS, 1, kt, mun, NULL, NULL, "set_jenkins");
+}
+
+int fricreg_structure_set_jenkins_csr(fricreg_structure *s, size_t me, size_t ndof, int flags,
+                                      const int64_t rowptr[], const int64_t colind[],
+                                      const double values[], const double kt[], const double mun[])
+{
+    return set_csr(s, me, ndof, flags, rowptr, colind, values, KIND_JENKINS, 1, kt, mun,
+                   "set_jenkins_csr");
+}
+
+int fricreg_structure_set_iwan(fricreg_structure *s, size_t me, size_t ndof, const double Je[],
+                               size_t ns, const double k[], const double phi[])
+{
+    return set_dense(s, me, ndof, Je, NULL, KIND_IWAN, ns, k, phi, NULL, NULL, "set_iwan");
+}
+
+int fricreg_structure_set_iwan_csr(fricreg_structure *s, size_t me, size_t ndof, int flags,
+                                   const int64_t rowptr[], const int64_t colind[],
+                                   const double values[], size_t ns, const double k[],
+                                   const double phi[])
+{
+    return set_csr(s, me, ndof, flags, rowptr, colind, values, KIND_IWAN, ns, k, phi,
+                   "set_iwan_csr");
+}
+
+int fricreg_structure_set_jenkins_normal(fricreg_structure *s, size_t me, size_t ndof,
+                                         const double Je[], const double Jn[], const double kt[],
+                                         const double mu[], const double n0[], const double kn[])
+{
+    return set_dense(s, me, ndof, Je, Jn, KIND_NORMAL, 1, kt, mu, n0, kn, "set_jenkins_normal");
+}
+
+int fricreg_structure_get_normal_forces(const fricreg_structure *s, size_t me, double N[])
+{
+    if (s == NULL || N == NULL)
+        return FRICREG_ENULL;
+    if (me != s->el.me)
+        return FRICREG_ESIZE;
+    if (me == 0)
+        return FRICREG_OK;
+    if (s->el.n0 == NULL)
+        return FRICREG_EINVAL;
+    memcpy(N, s->el.fe + me, me * sizeof *N);
+    return FRICREG_OK;
 }
 
 int fricreg_structure_get_jenkins_state(const fricreg_structure *s, size_t me, double f[],
@@ -197,7 +328,7 @@ int fricreg_structure_get_jenkins_state(const fricreg_structure *s, size_t me, d
 {
     if (s == NULL || (f == NULL && w == NULL && D == NULL))
         return FRICREG_ENULL;
-    if (me != s->el.me)
+    if (me != s->el.me || (w != NULL && me > 0 && s->el.ns != 1))
         return FRICREG_ESIZE;
     if (me == 0)
         return FRICREG_OK;
@@ -205,6 +336,24 @@ int fricreg_structure_get_jenkins_state(const fricreg_structure *s, size_t me, d
         memcpy(f, s->el.fe, me * sizeof *f);
     if (w != NULL)
         memcpy(w, s->el.wc, me * sizeof *w);
+    if (D != NULL)
+        memcpy(D, s->el.dissipation, me * sizeof *D);
+    return FRICREG_OK;
+}
+
+int fricreg_structure_get_iwan_state(const fricreg_structure *s, size_t me, size_t ns, double f[],
+                                     double w[], double D[])
+{
+    if (s == NULL || (f == NULL && w == NULL && D == NULL))
+        return FRICREG_ENULL;
+    if (me != s->el.me || (me > 0 && ns != s->el.ns))
+        return FRICREG_ESIZE;
+    if (me == 0)
+        return FRICREG_OK;
+    if (f != NULL)
+        memcpy(f, s->el.fe, me * sizeof *f);
+    if (w != NULL)
+        memcpy(w, s->el.wc, me * ns * sizeof *w);
     if (D != NULL)
         memcpy(D, s->el.dissipation, me * sizeof *D);
     return FRICREG_OK;
@@ -223,13 +372,45 @@ int fr_elements_check_contacts(fricreg_structure *s, const char *who)
     return FRICREG_OK;
 }
 
-/* fe and the trial positions wt at q[me] from the committed wc, and the tangents where tan is
- * not NULL. */
-static void map(const struct fr_elements *e, const double q[], double fe[], double tan[])
+/* Element i at q (and, with a normal law, at the normal displacement gn): its sliders' forces
+ * into fs1 and trial positions into wt from the committed wc, separated sliders following q
+ * (fricreg_jenkins_trial_normal's lift-off); returns their sum, the sticking sliders' stiffness
+ * into *tan and dfe/dg into *tang where not NULL. */
+static double element(const struct fr_elements *e, size_t i, double q, double gn, double *tan,
+                      double *tang)
 {
-    for (size_t i = 0; i < e->me; i++)
-        fr_slider_return(e->kt[i], e->mun[i], 0.0, 1, &q[i], &e->wc[i], &fe[i], &e->wt[i],
-                         tan != NULL ? &tan[i] : NULL, NULL);
+    double F = 0.0, t = 0.0, tg = 0.0, N = 1.0, dbdg = 0.0;
+    if (e->n0 != NULL) {
+        N = e->n0[i] + e->kn[i] * gn;
+        dbdg = e->kn[i];
+    }
+    for (size_t j = i * e->ns; j < (i + 1) * e->ns; j++) {
+        double tj, gj;
+        if (N < 0.0)
+            fr_slider_separated(1, &q, &e->fs1[j], &e->wt[j], &tj, &gj);
+        else
+            fr_slider_return(e->k[j], e->phi[j] * N, e->phi[j] * dbdg, 1, &q, &e->wc[j], &e->fs1[j],
+                             &e->wt[j], &tj, &gj);
+        F += e->fs1[j];
+        t += tj;
+        tg += gj;
+    }
+    if (tan != NULL)
+        *tan = t;
+    if (tang != NULL)
+        *tang = tg;
+    return F;
+}
+
+/* The forces x[nc] at the coordinates y[nc] from the committed wc (the sliders' trial state as
+ * element's): the elements', then the normal forces max(0, n0 + kn g). */
+static void map(const struct fr_elements *e, const double y[], double x[])
+{
+    size_t me = e->me;
+    for (size_t i = 0; i < me; i++)
+        x[i] = element(e, i, y[i], e->n0 != NULL ? y[me + i] : 0.0, NULL, NULL);
+    for (size_t i = 0; i < e->nc - me; i++)
+        x[me + i] = fmax(0.0, e->n0[i] + e->kn[i] * y[me + i]);
 }
 
 void fr_elements_equilibrium(fricreg_structure *s, gsl_vector *w)
@@ -238,8 +419,10 @@ void fr_elements_equilibrium(fricreg_structure *s, gsl_vector *w)
     if (e->me == 0)
         return;
     fr_csc_mult_t(e->Jt, s->u->data, e->q0);
-    map(e, e->q0, e->fe, NULL);
-    memcpy(e->wc, e->wt, e->me * sizeof *e->wc); /* idempotent: a returned slider sticks */
+    map(e, e->q0, e->fe);
+    size_t bytes = e->me * e->ns * sizeof(double); /* idempotent: a returned slider sticks */
+    memcpy(e->wc, e->wt, bytes);
+    memcpy(e->fs, e->fs1, bytes);
     fr_csc_mult_add(e->Jt, -1.0, e->fe, w->data);
 }
 
@@ -249,7 +432,7 @@ void fr_elements_explicit(fricreg_structure *s, const gsl_vector *u1, gsl_vector
     if (e->me == 0)
         return;
     fr_csc_mult_t(e->Jt, u1->data, e->q0);
-    map(e, e->q0, e->fe1, NULL);
+    map(e, e->q0, e->fe1);
     fr_csc_mult_add(e->Jt, -1.0, e->fe1, w->data);
 }
 
@@ -258,36 +441,44 @@ int fr_elements_compliance(fricreg_structure *s)
     struct fr_elements *e = &s->el;
     if (e->me == 0 || e->E_valid)
         return FRICREG_OK;
-    size_t me = e->me;
+    size_t nc = e->nc;
     const SuiteSparse_long *p = e->Jt->p, *ri = e->Jt->i;
     const double *x = e->Jt->x;
     double *col = s->dx->data, *sol = s->xt->data;
-    for (size_t j = 0; j < me; j++) {
+    for (size_t j = 0; j < nc; j++) {
         memset(col, 0, s->n * sizeof *col);
         for (SuiteSparse_long k = p[j]; k < p[j + 1]; k++)
             col[ri[k]] = x[k];
         fr_cfactor_solve(&s->step, col, sol, &s->cc);
-        fr_csc_mult_t(e->Jt, sol, e->E + j * me); /* E is symmetric: column j as row j */
+        fr_csc_mult_t(e->Jt, sol, e->E + j * nc); /* E is symmetric: column j as row j */
     }
     e->E_valid = 1;
     return FRICREG_OK;
 }
 
-/* At the forces f[me]: q = q0 - c E f, the mapping's forces into e->ft's ... G = f - F(q) into
- * g, the tangents into e->tan, the trial sliders into e->wt; returns ||G||_2, *rinf its
+/* At the forces f[nc]: the coordinates y = q0 - c E f, G = f - F(y) into g, the tangents into
+ * e->tan (and e->tang), the trial sliders into e->wt and e->fs1; returns ||G||_2, *rinf its
  * largest entry (NaN propagates). */
 static double evaluate(struct fr_elements *e, double c, const double f[], double g[], double *rinf)
 {
-    size_t me = e->me;
+    size_t me = e->me, nc = e->nc;
     double sum = 0.0, big = 0.0;
-    for (size_t i = 0; i < me; i++) {
+    for (size_t i = 0; i < nc; i++) {
         double q = e->q0[i];
-        for (size_t j = 0; j < me; j++)
-            q -= c * e->E[i * me + j] * f[j];
-        double F;
-        fr_slider_return(e->kt[i], e->mun[i], 0.0, 1, &q, &e->wc[i], &F, &e->wt[i], &e->tan[i],
-                         NULL);
-        g[i] = f[i] - F;
+        for (size_t j = 0; j < nc; j++)
+            q -= c * e->E[i * nc + j] * f[j];
+        e->y[i] = q;
+    }
+    for (size_t i = 0; i < me; i++) {
+        double gn = e->n0 != NULL ? e->y[me + i] : 0.0;
+        g[i] = f[i] - element(e, i, e->y[i], gn, &e->tan[i], e->n0 != NULL ? &e->tang[i] : NULL);
+    }
+    for (size_t i = 0; i < nc - me; i++) {
+        double N = e->n0[i] + e->kn[i] * e->y[me + i];
+        e->tan[me + i] = N > 0.0 ? e->kn[i] : 0.0;
+        g[me + i] = f[me + i] - fmax(0.0, N);
+    }
+    for (size_t i = 0; i < nc; i++) {
         sum += g[i] * g[i];
         if (!(fabs(g[i]) <= big))
             big = fabs(g[i]);
@@ -296,27 +487,30 @@ static double evaluate(struct fr_elements *e, double c, const double f[], double
     return sqrt(sum);
 }
 
-/* df = -(I + c diag(tan) E)^-1 g by GSL's QR with column pivoting (its LU allocates in GSL
- * 2.7: a step must not); 0 if the matrix is singular (not expected: diag(tan) E has no
- * negative eigenvalue). */
+/* df = -(I + c T E)^-1 g, T = diag(tan) plus dfe/dg's entries (row i, column me + i) with a
+ * normal law, by GSL's QR with column pivoting (its LU allocates in GSL 2.7: a step must not);
+ * 0 if the matrix is singular. */
 static int direction(struct fr_elements *e, double c)
 {
-    size_t me = e->me;
-    for (size_t i = 0; i < me; i++) {
-        for (size_t j = 0; j < me; j++)
-            e->A[i * me + j] = c * e->tan[i] * e->E[i * me + j];
-        e->A[i * me + i] += 1.0;
+    size_t me = e->me, nc = e->nc;
+    for (size_t i = 0; i < nc; i++) {
+        for (size_t j = 0; j < nc; j++)
+            e->A[i * nc + j] = c * e->tan[i] * e->E[i * nc + j];
+        if (i < me && e->n0 != NULL)
+            for (size_t j = 0; j < nc; j++)
+                e->A[i * nc + j] += c * e->tang[i] * e->E[(me + i) * nc + j];
+        e->A[i * nc + i] += 1.0;
         e->df[i] = -e->g[i];
     }
-    gsl_matrix_view A = gsl_matrix_view_array(e->A, me, me);
-    gsl_vector_view tau = gsl_vector_view_array(e->tau, me),
-                    norm = gsl_vector_view_array(e->norm, me), b = gsl_vector_view_array(e->df, me);
-    gsl_permutation perm = {me, e->perm};
+    gsl_matrix_view A = gsl_matrix_view_array(e->A, nc, nc);
+    gsl_vector_view tau = gsl_vector_view_array(e->tau, nc),
+                    norm = gsl_vector_view_array(e->norm, nc), b = gsl_vector_view_array(e->df, nc);
+    gsl_permutation perm = {nc, e->perm};
     int signum;
     if (gsl_linalg_QRPT_decomp(&A.matrix, &tau.vector, &perm, &signum, &norm.vector) != GSL_SUCCESS)
         return 0;
-    for (size_t i = 0; i < me; i++)
-        if (!(fabs(e->A[i * me + i]) > 0.0))
+    for (size_t i = 0; i < nc; i++)
+        if (!(fabs(e->A[i * nc + i]) > 0.0))
             return 0; /* the solve would call GSL's error handler */
     return gsl_linalg_QRPT_svx(&A.matrix, &tau.vector, &perm, &b.vector) == GSL_SUCCESS;
 }
@@ -329,19 +523,19 @@ int fr_elements_newmark(fricreg_structure *s, double dt, double scale, gsl_vecto
     *iters = 0;
     if (e->me == 0)
         return FRICREG_OK;
-    size_t me = e->me, n = s->n;
+    size_t nc = e->nc, n = s->n;
     double w = 1.0 + s->alpha, b2 = s->beta * dt * dt, c = w * b2;
     double *x = s->dx->data;
     fr_cfactor_solve(&s->step, b->data, x, &s->cc);
     for (size_t k = 0; k < n; k++)
         x[k] = s->up->data[k] + b2 * x[k];
     fr_csc_mult_t(e->Jt, x, e->q0);
-    for (size_t i = 0; i < me; i++)
+    for (size_t i = 0; i < nc; i++)
         scale = fmax(scale, fabs(e->fe[i]));
     double tol = s->newton_tol * (scale > 0.0 ? scale : 1e-300);
 
     double *f = e->fe1, rinf, rinf_t;
-    memcpy(f, e->fe, me * sizeof *f);
+    memcpy(f, e->fe, nc * sizeof *f);
     double phi = evaluate(e, c, f, e->g, &rinf);
     int done = 0;
     while (rinf != 0.0 && (done == 0 || rinf > tol) && *iters < s->newton_max && isfinite(phi)) {
@@ -352,12 +546,12 @@ int fr_elements_newmark(fricreg_structure *s, double dt, double scale, gsl_vecto
         double lambda = 1.0;
         int accepted = 0;
         for (int cut = 0; cut <= MAX_CUTS && !accepted; cut++) {
-            for (size_t i = 0; i < me; i++)
+            for (size_t i = 0; i < nc; i++)
                 e->ft[i] = f[i] + lambda * e->df[i];
             double phi_t = evaluate(e, c, e->ft, e->gt, &rinf_t);
             if (phi_t <= (1.0 - ARMIJO * lambda) * phi) {
-                memcpy(f, e->ft, me * sizeof *f);
-                memcpy(e->g, e->gt, me * sizeof *e->g);
+                memcpy(f, e->ft, nc * sizeof *f);
+                memcpy(e->g, e->gt, nc * sizeof *e->g);
                 phi = phi_t;
                 rinf = rinf_t;
                 accepted = 1;
@@ -372,8 +566,8 @@ int fr_elements_newmark(fricreg_structure *s, double dt, double scale, gsl_vecto
         }
     }
     if (!isfinite(phi))
-        return fr_fail(s, FRICREG_EDIVERGED,
-                       "step: the Jenkins elements' residual at t = %g is not finite", s->t + dt);
+        return fr_fail(s, FRICREG_EDIVERGED, "step: the elements' residual at t = %g is not finite",
+                       s->t + dt);
     *converged = rinf <= tol;
     fr_csc_mult_add(e->Jt, -w, f, b->data);
     return FRICREG_OK;
@@ -384,18 +578,23 @@ void fr_elements_commit(fricreg_structure *s)
     struct fr_elements *e = &s->el;
     if (e->me == 0)
         return; /* no arrays: memcpy may not take NULL */
-    memcpy(e->fe, e->fe1, e->me * sizeof *e->fe);
-    memcpy(e->wc, e->wt, e->me * sizeof *e->wc);
+    e->crossed = 0;
+    for (size_t i = e->me; i < e->nc; i++)
+        e->crossed |= (e->fe[i] > 0.0) != (e->fe1[i] > 0.0);
+    memcpy(e->fe, e->fe1, e->nc * sizeof *e->fe);
+    memcpy(e->fs, e->fs1, e->me * e->ns * sizeof *e->fs);
+    memcpy(e->wc, e->wt, e->me * e->ns * sizeof *e->wc);
 }
 
 void fr_elements_hold(fricreg_structure *s, int restore)
 {
     struct fr_elements *e = &s->el;
-    size_t bytes = e->me * sizeof(double);
+    size_t bytes = e->nc * sizeof(double), sbytes = e->me * e->ns * sizeof(double);
     if (e->me == 0)
         return;
     memcpy(restore ? e->fe : e->fe_held, restore ? e->fe_held : e->fe, bytes);
-    memcpy(restore ? e->wc : e->wc_held, restore ? e->wc_held : e->wc, bytes);
+    memcpy(restore ? e->fs : e->fs_held, restore ? e->fs_held : e->fs, sbytes);
+    memcpy(restore ? e->wc : e->wc_held, restore ? e->wc_held : e->wc, sbytes);
 }
 
 void fr_elements_reset(fricreg_structure *s)
@@ -403,15 +602,18 @@ void fr_elements_reset(fricreg_structure *s)
     struct fr_elements *e = &s->el;
     if (e->me == 0)
         return;
-    memset(e->wc, 0, e->me * sizeof *e->wc);
-    memset(e->fe, 0, e->me * sizeof *e->fe);
+    memset(e->wc, 0, e->me * e->ns * sizeof *e->wc);
+    memset(e->fs, 0, e->me * e->ns * sizeof *e->fs);
+    memset(e->fe, 0, e->nc * sizeof *e->fe);
 }
 
 double fr_elements_strain(const fricreg_structure *s)
 {
     const struct fr_elements *e = &s->el;
     double energy = 0.0;
-    for (size_t i = 0; i < e->me; i++)
-        energy += 0.5 * e->fe[i] * (e->fe[i] / e->kt[i]);
+    for (size_t j = 0; j < e->me * e->ns; j++)
+        energy += 0.5 * e->fs[j] * (e->fs[j] / e->k[j]);
+    for (size_t i = 0; i < e->nc - e->me; i++) /* the normal springs: N^2/(2 kn) */
+        energy += 0.5 * e->fe[e->me + i] * (e->fe[e->me + i] / e->kn[i]);
     return energy;
 }

@@ -40,22 +40,35 @@ struct fr_energy {
     double jenkins;      /* the Jenkins elements' dissipation, all of them */
 };
 
-/* Jenkins elements on rows of J_e (jenkins.c): me = 0 without any. Each is a spring kt in
- * series with a slider of bound mun at q = J_e u, force fe = kt (q - w) on the element (so
- * -J_e^T fe on the structure), returned by slider.h's mapping from the committed wc. */
+/* Elements on rows of J_e (jenkins.c): me = 0 without any. Each is ns Jenkins sliders in
+ * parallel (ns = 1: a Jenkins element, ns > 1: an Iwan element), slider s a spring k_s in
+ * series with a slider of bound phi_s at q = J_e u, force k_s (q - w_s); the element's force fe
+ * is their sum (so -J_e^T fe on the structure), each returned by slider.h's mapping from its
+ * committed wc. Per-slider arrays are [me ns], element i's slider s at i ns + s.
+ * With a normal law (n0 != NULL) element i also has the row i of J_n, g = J_n u, the normal
+ * force N = max(0, n0 + kn g) and the bound phi_s N (phi holding mu): the element
+ * coordinates are then (q, g), nc = 2 me of them, and the forces (fe, N), -J_n^T N acting on
+ * the structure too; without, nc = me. */
 struct fr_elements {
-    size_t me;
-    cholmod_sparse *Jt;        /* n x me: J_e^T */
-    double *kt, *mun;          /* [me] */
-    double *wc, *wt;           /* [me] committed and trial slider positions */
-    double *fe, *fe1;          /* [me] forces at t and at the step's end */
-    double *wc_held, *fe_held; /* [me] before a step's equilibrium, restored if it fails */
+    size_t me, ns, nc;
+    cholmod_sparse *Jt;        /* n x nc: J_e^T, then J_n^T */
+    double *k, *phi;           /* [me ns] */
+    double *n0, *kn;           /* [me] the normal law, or NULL */
+    double *kstick;            /* [nc] sum of k (all sticking), then kn (closed) */
+    double *wc, *wt;           /* [me ns] committed and trial slider positions */
+    double *fs, *fs1;          /* [me ns] slider forces at t and at the step's end */
+    double *fe, *fe1;          /* [nc] element (then normal) forces at t and at the step's end */
+    double *wc_held, *fs_held; /* [me ns] before a step's equilibrium, restored if it fails */
+    double *fe_held;           /* [nc] */
     double *dissipation;       /* [me] since set_initial */
-    double *q0, *g, *df, *ft, *gt, *tan; /* [me] Newton's scratch */
-    double *tau, *norm;                  /* [me] the Newton matrix's QR (GSL's, pivoted) */
-    double *E, *A; /* [me me] J_e K_eff^-1 J_e^T for step_dt, Newton's matrix */
-    size_t *perm;  /* [me] its LU's permutation */
+    double *q0, *y, *g, *df, *ft, *gt, *tan; /* [nc] Newton's scratch */
+    double *tang;                            /* [me] dfe/dg (normal law), or NULL */
+    double *tau, *norm;                      /* [nc] the Newton matrix's QR (GSL's, pivoted) */
+    double *E, *A; /* [nc nc] J K_eff^-1 J^T for step_dt (J = J_e, or J_e over J_n), Newton's */
+    size_t *perm;  /* [nc] its QR's permutation */
     int E_valid;   /* E is K_eff's at step_dt */
+    int crossed;   /* the last committed step opened or closed an element: its energy is not
+                      exact (warnings.c) */
 };
 
 struct fricreg_structure {

@@ -59,7 +59,7 @@ void fr_warn_track_step(fricreg_structure *s, double dt, int ode)
         s->peak_speed = fmax(s->peak_speed, fabs(z));
     }
     s->max_dt = fmax(s->max_dt, dt);
-    if (ode || !balance_exact(s))
+    if (ode || !balance_exact(s) || s->el.crossed) /* lift-off: the normal kink within a step */
         s->inexact_steps++;
 }
 

@@ -1420,6 +1420,114 @@ static const struct script structure_jenkins_script = {"structure with Jenkins e
                                                        structure_errcode,
                                                        structure_close};
 
+/* The same frame with Iwan elements of three sliders: set_iwan (dense) replaced by
+ * set_iwan_csr. */
+static const double FRAME_IW_K[6] = {60, 50, 40, 30, 30, 30},
+                    FRAME_IW_PHI[6] = {1, 1.5, 2.5, 0.5, 1, 1},
+                    FRAME_IW_K2[6] = {75, 50, 25, 40, 30, 20},
+                    FRAME_IW_PHI2[6] = {0.5, 1, 2.5, 0.5, 1, 1};
+
+static void see_structure_iwan(const fricreg_structure *s, struct view *v)
+{
+    double f[2] = {-1, -1}, w[6] = {-1, -1, -1, -1, -1, -1}, D[2] = {-1, -1}, value = -1.0;
+    see_structure(s, v);
+    see(v, fricreg_structure_get_iwan_state(s, 2, 3, f, w, D));
+    see_all(v, f, 2), see_all(v, w, 6), see_all(v, D, 2);
+    see(v, fricreg_structure_get_value(s, FRICREG_SVALUE_JENKINS, &value));
+    see(v, value);
+}
+
+static void structure_iwan_observe(void *obj, struct view *v)
+{
+    double t = 0.0;
+    see_structure_iwan(obj, v);
+    fricreg_structure_get_value(obj, FRICREG_SVALUE_TIME, &t);
+    see(v, fricreg_structure_run(obj, ST_DT, t + 0.1));
+    see_structure_iwan(obj, v);
+}
+
+static const char *const structure_iwan_calls[] = {"set_mass",     "set_stiffness",
+                                                   "set_contacts", "set_bounds (0)",
+                                                   "set_load(1)",  "set_iwan",
+                                                   "the scheme",   "set_iwan_csr",
+                                                   "run"};
+
+static int structure_iwan_call(void *obj, int i, struct view *v)
+{
+    switch (i) {
+    case 5: return fricreg_structure_set_iwan(obj, 2, 3, FRAME_J, 3, FRAME_IW_K, FRAME_IW_PHI);
+    case 7:
+        return fricreg_structure_set_iwan_csr(obj, 2, 3, 0, FRAME_JE_PTR, FRAME_JE_IND,
+                                              FRAME_JE_VAL, 3, FRAME_IW_K2, FRAME_IW_PHI2);
+    default: return structure_jenkins_call(obj, i, v);
+    }
+}
+
+static const struct script structure_iwan_script = {"structure with Iwan elements",
+                                                    9,
+                                                    structure_iwan_calls,
+                                                    1u << 5,
+                                                    0,
+                                                    structure_open,
+                                                    structure_iwan_call,
+                                                    NULL,
+                                                    structure_iwan_observe,
+                                                    structure_errcode,
+                                                    structure_close};
+
+/* The same frame with Jenkins elements under a normal load with lift-off
+ * (set_jenkins_normal, then again with other parameters). */
+static const double FRAME_JN[6] = {0, 1, 0, 0, 0, 1}, FRAME_MU[2] = {0.3, 0.5},
+                    FRAME_N0[2] = {3, 1}, FRAME_KN[2] = {400, 300};
+
+static void see_structure_normal(const fricreg_structure *s, struct view *v)
+{
+    double N[2] = {-1, -1};
+    see_structure_jenkins(s, v);
+    see(v, fricreg_structure_get_normal_forces(s, 2, N));
+    see_all(v, N, 2);
+}
+
+static void structure_normal_observe(void *obj, struct view *v)
+{
+    double t = 0.0;
+    see_structure_normal(obj, v);
+    fricreg_structure_get_value(obj, FRICREG_SVALUE_TIME, &t);
+    see(v, fricreg_structure_run(obj, ST_DT, t + 0.1));
+    see_structure_normal(obj, v);
+}
+
+static const char *const structure_normal_calls[] = {"set_mass",     "set_stiffness",
+                                                     "set_contacts", "set_bounds (0)",
+                                                     "set_load(1)",  "set_jenkins_normal",
+                                                     "the scheme",   "set_jenkins_normal",
+                                                     "run"};
+
+static int structure_normal_call(void *obj, int i, struct view *v)
+{
+    switch (i) {
+    case 5:
+        return fricreg_structure_set_jenkins_normal(obj, 2, 3, FRAME_J, FRAME_JN, FRAME_KT,
+                                                    FRAME_MU, FRAME_N0, FRAME_KN);
+    case 7:
+        return fricreg_structure_set_jenkins_normal(obj, 2, 3, FRAME_J, FRAME_JN, FRAME_KT,
+                                                    FRAME_MUN_E, FRAME_N0, FRAME_KN);
+    default: return structure_jenkins_call(obj, i, v);
+    }
+}
+
+static const struct script structure_normal_script = {"structure with lift-off elements",
+                                                      9,
+                                                      structure_normal_calls,
+                                                      1u << 5,
+                                                      0,
+                                                      structure_open,
+                                                      structure_normal_call,
+                                                      NULL,
+                                                      structure_normal_observe,
+                                                      structure_errcode,
+                                                      structure_close};
+
 /* A model for the tests of steps that make no allocation. */
 static int structure_model(fricreg_structure *s)
 {
@@ -2180,6 +2288,32 @@ START_TEST(test_structure_jenkins_run)
 }
 END_TEST
 
+START_TEST(test_structure_iwan_run)
+{
+    static const char *const names[3] = {"structure newmark, Iwan elements",
+                                         "structure hht, Iwan elements",
+                                         "structure central difference, Iwan elements"};
+    current_scheme = _i;
+    struct script sc = structure_iwan_script;
+    sc.name = names[_i];
+    struct tally t = fail_each_allocation(&sc);
+    ck_assert_int_ge(t.enomem, t.cases - 30); /* CHOLMOD's own fallbacks, as above */
+}
+END_TEST
+
+START_TEST(test_structure_normal_run)
+{
+    static const char *const names[3] = {"structure newmark, lift-off elements",
+                                         "structure hht, lift-off elements",
+                                         "structure central difference, lift-off elements"};
+    current_scheme = _i;
+    struct script sc = structure_normal_script;
+    sc.name = names[_i];
+    struct tally t = fail_each_allocation(&sc);
+    ck_assert_int_ge(t.enomem, t.cases - 30); /* CHOLMOD's own fallbacks, as above */
+}
+END_TEST
+
 /* fricreg_structure.h: steps never allocate once the first step after the model's setters
  * has handed W to the contacts, for every scheme (GSL 2.7's gsl_linalg_LU_decomp allocated in
  * each Newton iteration until 1.3). */
@@ -2234,6 +2368,49 @@ START_TEST(test_structure_jenkins_steps_do_not_allocate)
 }
 END_TEST
 
+/* And with lift-off elements: the coupled Newton makes no allocation. */
+START_TEST(test_structure_normal_steps_do_not_allocate)
+{
+    for (int scheme = SCHEME_NEWMARK; scheme <= SCHEME_CENTRAL; scheme++) {
+        fricreg_structure *s = NULL;
+        ck_assert_int_eq(fricreg_structure_create(3, 2, &s), FRICREG_OK);
+        current_scheme = scheme;
+        for (int i = 0; i < 8; i++)
+            ck_assert_int_eq(structure_normal_call(s, i, NULL), FRICREG_OK);
+        ck_assert_int_eq(fricreg_structure_step(s, 0.001), FRICREG_OK); /* forms E */
+        hook_arm(1);
+        int status = fricreg_structure_run(s, 0.001, 0.5);
+        hook_disarm();
+        ck_assert_int_eq(status, FRICREG_OK);
+        ck_assert_msg(n_allocs == 0, "scheme %d: 499 steps made %ld allocations", scheme, n_allocs);
+        fricreg_structure_free(s);
+    }
+}
+END_TEST
+
+/* And with Iwan elements: the sliders' sums make no allocation. */
+START_TEST(test_structure_iwan_steps_do_not_allocate)
+{
+    for (int scheme = SCHEME_NEWMARK; scheme <= SCHEME_CENTRAL; scheme++) {
+        fricreg_structure *s = NULL;
+        ck_assert_int_eq(fricreg_structure_create(3, 2, &s), FRICREG_OK);
+        current_scheme = scheme;
+        for (int i = 0; i < 8; i++)
+            ck_assert_int_eq(structure_iwan_call(s, i, NULL), FRICREG_OK);
+        ck_assert_int_eq(fricreg_structure_step(s, 0.001), FRICREG_OK); /* forms E */
+        hook_arm(1);
+        int status = fricreg_structure_run(s, 0.001, 0.5);
+        hook_disarm();
+        ck_assert_int_eq(status, FRICREG_OK);
+        ck_assert_msg(n_allocs == 0, "scheme %d: 499 steps made %ld allocations", scheme, n_allocs);
+        double D[2];
+        ck_assert_int_eq(fricreg_structure_get_iwan_state(s, 2, 3, NULL, NULL, D), FRICREG_OK);
+        ck_assert(D[0] > 0.0 || D[1] > 0.0); /* a slider slipped */
+        fricreg_structure_free(s);
+    }
+}
+END_TEST
+
 static Suite *alloc_suite(void)
 {
     Suite *s = suite_create("alloc_failure");
@@ -2247,6 +2424,8 @@ static Suite *alloc_suite(void)
     tcase_add_test(core, test_sparse_eval_does_not_allocate);
     tcase_add_test(core, test_structure_steps_do_not_allocate);
     tcase_add_test(core, test_structure_jenkins_steps_do_not_allocate);
+    tcase_add_test(core, test_structure_iwan_steps_do_not_allocate);
+    tcase_add_test(core, test_structure_normal_steps_do_not_allocate);
     tcase_add_test(core, test_disk_ctx_create);
     tcase_add_test(core, test_jenkins_create);
     tcase_add_test(core, test_jenkins_trial_does_not_allocate);
@@ -2273,6 +2452,8 @@ static Suite *alloc_suite(void)
     tcase_add_test(drivers, test_hb_normal);
     tcase_add_loop_test(drivers, test_structure_run, 0, N_SCHEMES);
     tcase_add_loop_test(drivers, test_structure_jenkins_run, 0, 3);
+    tcase_add_loop_test(drivers, test_structure_iwan_run, 0, 3);
+    tcase_add_loop_test(drivers, test_structure_normal_run, 0, 3);
     suite_add_tcase(s, drivers);
     return s;
 }
