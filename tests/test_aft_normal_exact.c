@@ -287,13 +287,17 @@ int main(void)
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, constant_preload_is_jenkins_exact);
     tcase_add_test(tc, open_throughout_and_no_friction);
-    tcase_add_test(tc, against_the_time_domain_element);
-    tcase_add_test(tc, against_the_sampled_path);
     tcase_add_test(tc, slip_starting_on_a_reversal);
     tcase_add_test(tc, jacobian_against_differences);
     tcase_add_test(tc, outputs_may_alias_inputs);
     tcase_add_test(tc, bad_input);
     suite_add_tcase(s, tc);
+    /* 2^18 time-domain samples and 2^16 sampled ones a case: native and ASan only */
+    TCase *ts = tcase_create("sampled");
+    tcase_set_timeout(ts, 60);
+    tcase_add_test(ts, against_the_time_domain_element);
+    tcase_add_test(ts, against_the_sampled_path);
+    suite_add_tcase(s, ts);
     SRunner *sr = srunner_create(s);
     srunner_run_all(sr, CK_NORMAL);
     int failed = srunner_ntests_failed(sr);

@@ -248,10 +248,14 @@ int main(void)
     TCase *tc = tcase_create("core");
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, iwan_equals_jenkins_copies);
-    tcase_add_test(tc, oscillator_against_time_domain);
     tcase_add_test(tc, set_elements_after_set_iwan);
     tcase_add_test(tc, bad_input);
     suite_add_tcase(s, tc);
+    /* The Newmark reference, 10^5 steps: native and ASan only */
+    TCase *td = tcase_create("time_domain");
+    tcase_set_timeout(td, 120);
+    tcase_add_test(td, oscillator_against_time_domain);
+    suite_add_tcase(s, td);
     SRunner *sr = srunner_create(s);
     srunner_run_all(sr, CK_NORMAL);
     int failed = srunner_ntests_failed(sr);
