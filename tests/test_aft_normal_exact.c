@@ -239,43 +239,8 @@ END_TEST
 
 START_TEST(bad_input)
 {
-    const double u[NC] = {0.3, 1.0, 0, 0, 0, 0, 0}, g[NC] = {0.1, 0.2, 0, 0, 0, 0, 0};
-    double f[NC], nf[NC], jac[4 * NC * NC], bad[NC];
     fricreg_aft *a = make(H, 0);
-    for (int i = 0; i < NC; i++)
-        f[i] = nf[i] = SENTINEL;
-    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(NULL, 1, 1, 1, 1, NC, u, g, f, nf, jac),
-                     FRICREG_ENULL);
-    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 1, 1, 1, 1, NC, u, NULL, f, nf, jac),
-                     FRICREG_ENULL);
-    ck_assert_ptr_nonnull(strstr(fricreg_aft_errmsg(a), "jenkins_normal_exact: g"));
-    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 1, 1, 1, 1, NC, u, g, f, NULL, jac),
-                     FRICREG_ENULL);
-    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 1, 1, 1, 1, NC, NULL, g, f, nf, jac),
-                     FRICREG_ENULL);
-    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 1, 1, 1, 1, NC - 2, u, g, f, nf, jac),
-                     FRICREG_ESIZE);
-    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 0, 1, 1, 1, NC, u, g, f, nf, jac),
-                     FRICREG_EINVAL);
-    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 1, -1, 1, 1, NC, u, g, f, nf, jac),
-                     FRICREG_EINVAL);
-    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 1, 1, 1, -1, NC, u, g, f, nf, jac),
-                     FRICREG_EINVAL);
-    ck_assert_str_eq(fricreg_aft_errmsg(a),
-                     "jenkins_normal_exact: mu = 1 and kn = -1 must be >= 0");
-    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 1, 1, NAN, 1, NC, u, g, f, nf, jac),
-                     FRICREG_ENONFINITE);
-    memcpy(bad, g, sizeof bad);
-    bad[2] = INFINITY;
-    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 1, 1, 1, 1, NC, u, bad, f, nf, jac),
-                     FRICREG_ENONFINITE);
-    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 1, 1, 1e308, 1, NC, u, g, f, nf, jac),
-                     FRICREG_ENONFINITE);
-    for (int i = 0; i < NC; i++) {
-        ck_assert_double_eq(f[i], SENTINEL);
-        ck_assert_double_eq(nf[i], SENTINEL);
-    }
-    ck_assert_int_eq(fricreg_aft_errcode(a), FRICREG_ENONFINITE);
+    aft_normal_check_bad_input(a, fricreg_aft_jenkins_normal_exact, "jenkins_normal_exact");
     fricreg_aft_free(a);
 }
 END_TEST

@@ -2,6 +2,7 @@
 /* aft_normal_checks.c — the lift-off AFT suites' shared checks (aft_normal_checks.h). */
 #include <check.h>
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "aft_normal_checks.h"
@@ -107,4 +108,38 @@ void aft_normal_check_jacobian(fricreg_aft *a, aft_normal_fn path, double kt, do
                           jac[2 * nc * (nc + i) + j], dn);
         }
     }
+}
+
+void aft_normal_check_bad_input(fricreg_aft *a, aft_normal_fn path, const char *name)
+{
+    enum { NC = 7 };
+    static const double SENTINEL = -777.125;
+    ck_assert_int_eq(fricreg_aft_harmonics(a), 3);
+    char expect[128];
+    const double u[NC] = {0.3, 1.0, 0, 0, 0, 0, 0}, g[NC] = {0.1, 0.2, 0, 0, 0, 0, 0};
+    double f[NC], nf[NC], jac[4 * NC * NC], bad[NC];
+    for (int i = 0; i < NC; i++)
+        f[i] = nf[i] = SENTINEL;
+    ck_assert_int_eq(path(NULL, 1, 1, 1, 1, NC, u, g, f, nf, jac), FRICREG_ENULL);
+    ck_assert_int_eq(path(a, 1, 1, 1, 1, NC, u, NULL, f, nf, jac), FRICREG_ENULL);
+    snprintf(expect, sizeof expect, "%s: g", name);
+    ck_assert_ptr_nonnull(strstr(fricreg_aft_errmsg(a), expect));
+    ck_assert_int_eq(path(a, 1, 1, 1, 1, NC, u, g, f, NULL, jac), FRICREG_ENULL);
+    ck_assert_int_eq(path(a, 1, 1, 1, 1, NC, NULL, g, f, nf, jac), FRICREG_ENULL);
+    ck_assert_int_eq(path(a, 1, 1, 1, 1, NC - 2, u, g, f, nf, jac), FRICREG_ESIZE);
+    ck_assert_int_eq(path(a, 0, 1, 1, 1, NC, u, g, f, nf, jac), FRICREG_EINVAL);
+    ck_assert_int_eq(path(a, 1, -1, 1, 1, NC, u, g, f, nf, jac), FRICREG_EINVAL);
+    ck_assert_int_eq(path(a, 1, 1, 1, -1, NC, u, g, f, nf, jac), FRICREG_EINVAL);
+    snprintf(expect, sizeof expect, "%s: mu = 1 and kn = -1 must be >= 0", name);
+    ck_assert_str_eq(fricreg_aft_errmsg(a), expect);
+    ck_assert_int_eq(path(a, 1, 1, NAN, 1, NC, u, g, f, nf, jac), FRICREG_ENONFINITE);
+    memcpy(bad, g, sizeof bad);
+    bad[2] = INFINITY;
+    ck_assert_int_eq(path(a, 1, 1, 1, 1, NC, u, bad, f, nf, jac), FRICREG_ENONFINITE);
+    ck_assert_int_eq(path(a, 1, 1, 1e308, 1, NC, u, g, f, nf, jac), FRICREG_ENONFINITE);
+    for (int i = 0; i < NC; i++) {
+        ck_assert_double_eq(f[i], SENTINEL);
+        ck_assert_double_eq(nf[i], SENTINEL);
+    }
+    ck_assert_int_eq(fricreg_aft_errcode(a), FRICREG_ENONFINITE);
 }

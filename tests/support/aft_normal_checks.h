@@ -35,4 +35,10 @@ void aft_normal_check_time_domain_cases(fricreg_aft *a, aft_normal_fn path, size
 void aft_normal_check_jacobian(fricreg_aft *a, aft_normal_fn path, double kt, double mu, double n0,
                                double kn, const double *u, const double *g);
 
+/* The path's refusals (a of harmonics H = 3, name the function's name without "fricreg_aft_"):
+ * NULL arrays (ENULL), a wrong n (ESIZE), kt <= 0, mu < 0 or kn < 0 (EINVAL, the message
+ * naming mu and kn), a NaN n0, an infinite g entry and an overflowing normal force
+ * (ENONFINITE), each leaving f and nf as they were and the code recorded in a. */
+void aft_normal_check_bad_input(fricreg_aft *a, aft_normal_fn path, const char *name);
+
 #endif
