@@ -55,6 +55,7 @@ int fr_sim_level(const fricreg_sim *sim, int k, double tol_scale, fricreg_sim **
     level->rtol = sim->rtol * tol_scale;
     level->atol = sim->atol * tol_scale;
     level->atol_from_eps = sim->atol_from_eps; /* the rule at the level's own eps */
+    level->rule_scale = sim->rule_scale * tol_scale;
     if (sim->atol_vec != NULL) {
         level->atol_vec = malloc(sim->atol_n * sizeof *level->atol_vec);
         if (level->atol_vec == NULL) {

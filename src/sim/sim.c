@@ -88,6 +88,7 @@ int fricreg_sim_create(int system, fricreg_sim **out)
     sim->integrator = FRICREG_INT_RK4;
     sim->dt = 0.01;
     sim->max_steps = -1; /* the law's default (fr_law_max_adaptive_steps) */
+    sim->rule_scale = 1.0;
     sim->kink_location = 1;
     sim->total_err = NAN;
     *out = sim;
@@ -326,12 +327,17 @@ static double eps_in_use(const fricreg_sim *sim)
  * from rtol 1e-4 to 1e-8. Positions and D keep GSL's standard level rtol (1 + |y_i|) of the
  * nondimensional systems. */
 
+double fr_sim_rule_atol_v(const fricreg_sim *sim, double eps)
+{
+    return fmin(FR_SIM_ATOL_V_PER_EPS * eps * sim->rule_scale, sim->rtol);
+}
+
 /* The rule from eps at eps: absolute tolerances atol[2 ndof + 1] of y = (x, v, D) and the
  * weights w[2 ndof + 1] of rtol in each component (w NULL: not asked for). */
 static void rule_tolerances(const fricreg_sim *sim, double eps, double atol[], double w[])
 {
     size_t n = fricreg_sim_ndof(sim);
-    double atol_v = fmin(FR_SIM_ATOL_V_PER_EPS * eps, sim->rtol), atol_x = sim->rtol;
+    double atol_v = fr_sim_rule_atol_v(sim, eps), atol_x = sim->rtol;
     for (size_t i = 0; i < n; i++) {
         atol[i] = atol_x;
         atol[n + i] = atol_v;

@@ -34,8 +34,11 @@ struct fricreg_sim {
     double dt, rtol, atol;
     /* The absolute tolerances of an adaptive run, one of: atol for every component (atol_vec
      * NULL, atol_from_eps 0); fricreg's rule from eps (atol_from_eps 1: sim.c, default_atol);
-     * the caller's per component (atol_vec [atol_n = 2 ndof + 1], owned). */
+     * the caller's per component (atol_vec [atol_n = 2 ndof + 1], owned). The rule's velocity
+     * tolerance is scaled by rule_scale: 1, or an error estimate's companion's tolerance scale,
+     * so that all of the companion's tolerances are tightened together (fr_sim_level). */
     int atol_from_eps;
+    double rule_scale;
     double *atol_vec;
     size_t atol_n;
     int64_t max_steps; /* adaptive steps of one forcing cycle (0: no bound; -1: the law's) */
@@ -126,6 +129,8 @@ int fr_sim_level(const fricreg_sim *sim, int k, double tol_scale, fricreg_sim **
  * and the estimate per cycle (a failed companion leaves +infinity and its message for the
  * warning); fr_sim_check_estimate raises the estimate's warnings (warnings.c). */
 void fr_sim_error_estimate(fricreg_sim *sim);
+/* The rule from eps's absolute tolerance of a velocity at eps (sim.c). */
+double fr_sim_rule_atol_v(const fricreg_sim *sim, double eps);
 void fr_sim_check_estimate(fricreg_sim *sim);
 
 #endif

@@ -22,7 +22,7 @@ static double velocity_level(const fricreg_sim *sim, double eps)
     if (!(sim->rtol > 0.0 || sim->atol > 0.0 || sim->atol_from_eps || sim->atol_vec != NULL))
         return 0.0;
     if (sim->atol_from_eps)
-        return fmin(FR_SIM_ATOL_V_PER_EPS * eps, sim->rtol);
+        return fr_sim_rule_atol_v(sim, eps);
     if (sim->atol_vec == NULL)
         return sim->atol + sim->rtol;
     size_t ndof = (sim->atol_n - 1) / 2; /* y = (x, v, D): the velocities' entries */
