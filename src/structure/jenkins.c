@@ -16,8 +16,8 @@
  * q). The coordinates below are then (q, g) and the forces (fe, N): 2 me of them, J = J_e over
  * J_n, and the tangent T gains dfe/dg (slipping) and dN/dg = kn (closed).
  *
- * Newmark / HHT-alpha: with the contacts' forces zero (the combination with active contacts is
- * refused), the step's equation K_eff x = b - w J_e^T fe1 (w = 1 + alpha) condenses onto the
+ * Newmark / HHT-alpha: with the contacts' forces zero (every bound 0; beside contacts of bound
+ * > 0 the step is joint_step.c's, one Newton over both forces), the step's equation K_eff x = b - w J_e^T fe1 (w = 1 + alpha) condenses onto the
  * elements: u1 = u_pred + beta dt^2 x gives
  *   q(fe1) = q0 - c E fe1,   q0 = J_e (u_pred + beta dt^2 K_eff^-1 b),   c = w beta dt^2,
  * E = J_e K_eff^-1 J_e^T (me x me, formed once per factor of K_eff), and Newton solves

@@ -325,24 +325,18 @@ static int start_at(fricreg_structure *s, const double f[], double *phi, double 
     return FRICREG_OK;
 }
 
-int fr_joint_newton(fricreg_structure *s, double tol, const double guess[], int *converged,
-                    int *iters)
+/* fr_joint_newton's iterations: z ends at the step's forces. */
+static int solve(fricreg_structure *s, double tol, const double guess[], int *converged, int *iters)
 {
-    struct fr_elements *e = &s->el;
-    struct fr_joint *j = &e->joint;
     double phi = 0.0, rinf = 0.0, phi_guess = INFINITY;
     int status;
-    *iters = 0;
-    *converged = 0;
-    memcpy(j->fe0, e->fe, j->nc * sizeof *j->fe0);
-    memset(s->stopped, 0, j->m * sizeof *s->stopped); /* the guess's marks */
     if (guess != NULL) { /* the contacts' band guess with the elements at their start forces */
         if ((status = start_at(s, guess, &phi, &rinf)) != FRICREG_OK)
             return status;
-        if (rinf <= tol) {
+        if (rinf <= tol) { /* the solution on the guess's pieces: a Newton step, converged */
             *iters = 1;
             *converged = 1;
-            goto done;
+            return FRICREG_OK;
         }
         phi_guess = phi;
     }
@@ -351,7 +345,7 @@ int fr_joint_newton(fricreg_structure *s, double tol, const double guess[], int 
     if (rinf > tol && phi_guess < phi && (status = start_at(s, guess, &phi, &rinf)) != FRICREG_OK)
         return status;
     iterate(s, tol, 1, &phi, &rinf, iters);
-    if (rinf > tol && isfinite(phi) && *iters < s->newton_max) {
+    if (rinf > tol && isfinite(phi) && *iters < s->newton_max) { /* again, without stops */
         if ((status = start_at(s, s->f->data, &phi, &rinf)) != FRICREG_OK)
             return status;
         iterate(s, tol, 0, &phi, &rinf, iters);
@@ -360,9 +354,21 @@ int fr_joint_newton(fricreg_structure *s, double tol, const double guess[], int 
         return fr_fail(s, FRICREG_EDIVERGED, "step: the residual at t = %g is not finite",
                        s->t + s->step_dt);
     *converged = rinf <= tol;
-done:
+    return FRICREG_OK;
+}
+
+int fr_joint_newton(fricreg_structure *s, double tol, const double guess[], int *converged,
+                    int *iters)
+{
+    struct fr_elements *e = &s->el;
+    struct fr_joint *j = &e->joint;
+    *iters = 0;
+    *converged = 0;
+    memcpy(j->fe0, e->fe, j->nc * sizeof *j->fe0);
+    memset(s->stopped, 0, j->m * sizeof *s->stopped); /* the guess's marks */
+    int status = solve(s, tol, guess, converged, iters);
     memset(s->stopped, 0, j->m * sizeof *s->stopped);
     memcpy(s->fk->data, j->z, j->m * sizeof *j->z);
     memcpy(e->fe1, j->z + j->m, j->nc * sizeof *e->fe1);
-    return FRICREG_OK;
+    return status;
 }

@@ -2,8 +2,8 @@
 /* structure_internal.h — the structure's layout, shared by its files: structure.c (life cycle,
  * setters, getters), model.c (the model matrices), prepare.c (the set-up of a model),
  * newmark.c and newton_matrix.c (the implicit step), central_difference.c, step.c (stepping),
- * structure_ode.c (GSL's steppers), guard.c (the step guard), energy.c (the balance) and
- * jenkins.c (Jenkins elements). */
+ * structure_ode.c (GSL's steppers), guard.c (the step guard), energy.c (the balance),
+ * jenkins.c (Jenkins elements) and joint_step.c (elements beside contacts). */
 #ifndef FRICREG_STRUCTURE_INTERNAL_H
 #define FRICREG_STRUCTURE_INTERNAL_H
 
