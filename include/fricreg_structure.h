@@ -62,9 +62,11 @@ typedef struct fricreg_structure fricreg_structure;
  *  contacts do not couple; else dense m x m up to 64 contacts, fricreg_ctx_set_coupling_dense,
  *  and sparse beyond, fricreg_ctx_set_coupling_csc), the first step with a new dt (or
  *  scheme) factors K_eff, and the step guard's first use computes the model's rates (dense
- *  eigenvalues up to 2048 degrees of freedom): those steps allocate. The other steps never
- *  do (but for a falling Stribeck branch with more than 64 contacts, whose dense Newton
- *  matrix is allocated at its first use).
+ *  eigenvalues up to 2048 degrees of freedom), and the first Newmark/HHT step that finds
+ *  elements (fricreg_structure_set_jenkins) beside a contact of bound > 0 allocates the joint
+ *  Newton's dense storage: those steps allocate. The other steps never do (but for a falling
+ *  Stribeck branch with more than 64 contacts, whose dense Newton matrix is allocated at its
+ *  first use).
  *
  *  ndof  number of degrees of freedom, 1 <= ndof <= 2^40 (memory runs out first).
  *  m     number of friction contacts, 1 <= m <= 2^26 (a structure without friction: one
