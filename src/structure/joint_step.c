@@ -146,7 +146,7 @@ static int evaluate(fricreg_structure *s, const double z[], double gc[], double 
     }
     double phi_e = fr_elements_residual(e, fe, ge, &rinf_e);
     *phi = sqrt(phi_c * phi_c + phi_e * phi_e);
-    *rinf = isnan(rinf_e) || !(rinf_c <= rinf_e) ? (isnan(rinf_e) ? rinf_e : rinf_c) : rinf_e;
+    *rinf = isnan(rinf_e) || rinf_c <= rinf_e ? rinf_e : rinf_c; /* NaN propagates */
     return FRICREG_OK;
 }
 
