@@ -62,9 +62,11 @@ typedef struct fricreg_structure fricreg_structure;
  *  contacts do not couple; else dense m x m up to 64 contacts, fricreg_ctx_set_coupling_dense,
  *  and sparse beyond, fricreg_ctx_set_coupling_csc), the first step with a new dt (or
  *  scheme) factors K_eff, and the step guard's first use computes the model's rates (dense
- *  eigenvalues up to 2048 degrees of freedom): those steps allocate. The other steps never
- *  do (but for a falling Stribeck branch with more than 64 contacts, whose dense Newton
- *  matrix is allocated at its first use).
+ *  eigenvalues up to 2048 degrees of freedom), and the first Newmark/HHT step that finds
+ *  elements (fricreg_structure_set_jenkins) beside a contact of bound > 0 allocates the joint
+ *  Newton's dense storage: those steps allocate. The other steps never do (but for a falling
+ *  Stribeck branch with more than 64 contacts, whose dense Newton matrix is allocated at its
+ *  first use).
  *
  *  ndof  number of degrees of freedom, 1 <= ndof <= 2^40 (memory runs out first).
  *  m     number of friction contacts, 1 <= m <= 2^26 (a structure without friction: one
@@ -492,10 +494,22 @@ enum fricreg_structure_value {
  *  reading the largest frequency of M^-1 (K + J_e^T diag(kt) J_e) (all elements sticking).
  *  fricreg_structure_run_ode refuses elements (FRICREG_EINVAL).
  *
- *  Elements and friction contacts do not act together: a step with elements refuses
- *  (FRICREG_EINVAL) every contact whose bound mun is not 0, so a structure with elements only
- *  has one contact of bound 0 (fricreg_structure_create's "structure without friction": any
- *  non-zero row of J, fricreg_structure_set_bounds with 0).
+ *  Elements beside friction contacts: where some contact's bound is > 0, Newmark and
+ *  HHT-alpha solve the contacts' forces f and the elements' forces fe (with a normal law also
+ *  N; nc of them) together, one Newton over the stacked m + nc unknowns on the exact tangents
+ *  of both laws, coupled through [J; J_e] K_eff^-1 [J; J_e]^T (the cross block
+ *  J K_eff^-1 J_e^T is formed with E, by the same nc solves per dt; Quinn's law (4) and the
+ *  return mapping as above), dense: GSL's pivoted QR of the (m + nc) x (m + nc) Newton matrix
+ *  per iteration, O((m + nc)^3) (for the few contacts and joints of a jointed structure), and
+ *  O((m + nc)^2) memory allocated at the first such step after a model change (FRICREG_ENOMEM
+ *  from the step if it cannot be). The stopping rule and the line search are the contacts'
+ *  (the stop of a slipping contact at zdot = 0, law (4)'s stick guess with a diagonal W, the
+ *  direction halved until the residuals' 2-norm decreases); the step converges when both the
+ *  contacts' residual and max |fe - F(q)| are within the tolerance times the step's force
+ *  scale (or the elements' largest force at t if larger). The central difference evaluates the
+ *  elements at u(t + dt) and the contacts' law then sees their forces. With every bound 0 (a
+ *  structure with elements only keeps fricreg_structure_create's one contact, bound 0) the
+ *  step is the elements' alone, as without contacts, and without elements the contacts'.
  *
  *  Energy: the elements' springs' energy fe^2/(2 kt) is part of FRICREG_SVALUE_STRAIN, their
  *  dissipation, sum over steps of (w(t+dt) - w(t)) (fe(t) + fe(t+dt))/2 (the trapezoidal work
@@ -550,7 +564,7 @@ FRICREG_API int fricreg_structure_get_jenkins_state(const fricreg_structure *s, 
  *  of ns sliders is ns Jenkins elements on copies of its row, but the step's Newton keeps me
  *  unknowns: an element's tangent is the sum of its sticking sliders' k. Everything else
  *  (Newmark/HHT implicit, central difference with the step guard on K + J_e^T diag(sum_s k) J_e,
- *  run_ode refusing elements, no friction contact of bound > 0 beside them, the energy with the
+ *  run_ode refusing elements, friction contacts beside them solved in the same step, the energy with the
  *  sliders' springs in FRICREG_SVALUE_STRAIN and their dissipation, summed over an element's
  *  sliders, in FRICREG_SVALUE_JENKINS) is as for fricreg_structure_set_jenkins, which is this
  *  call with ns = 1 (k = kt, phi = mun). Setting Iwan elements replaces the elements in force,
@@ -623,8 +637,9 @@ FRICREG_API int fricreg_structure_get_iwan_state(const fricreg_structure *s, siz
  *  N^2/(2 kn) is part of FRICREG_SVALUE_STRAIN and the sliders' dissipation of
  *  FRICREG_SVALUE_JENKINS; the balance is exact over steps in which every element stays closed
  *  or open (a step that opens or closes one leaves a residual of the order of kn times the
- *  step's normal overshoot squared, and FRICREG_WARN_ENERGY is then not judged). Refusals
- *  beside contacts, run_ode and the observer are fricreg_structure_set_jenkins's. Copied; every slider at w = 0; replaces the elements in
+ *  step's normal overshoot squared, and FRICREG_WARN_ENERGY is then not judged). The
+ *  contacts beside them (one Newton over f, fe and N), run_ode and the observer are
+ *  fricreg_structure_set_jenkins's. Copied; every slider at w = 0; replaces the elements in
  *  force. me = 0 removes them (the arrays may then be NULL). Since 1.6 (FRICREG_1.6).
  *
  *  kt[me]  tangential stiffness > 0 (finite), force per unit of q.

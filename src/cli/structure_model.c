@@ -245,17 +245,10 @@ static int set_influence(fricreg_structure *s, const struct structure_options *o
                                 : cli_usage_error("--ground-accel", fricreg_structure_errmsg(s));
 }
 
-/* The elements: refused beside a contact with a bound > 0 (the library's rule, named here
- * by the file). */
+/* The elements (beside the contacts, whatever their bounds: one step solves both). */
 static int set_jenkins(fricreg_structure *s, const struct structure_options *o,
                        const struct structure_input *in)
 {
-    for (size_t i = 0; i < in->m; i++)
-        if (in->mun[i] != 0.0)
-            return cli_file_error("--mun", o->mun, i + 1,
-                                  "bound %g: with --jenkins every contact's bound must be 0 "
-                                  "(elements and friction contacts do not act together)",
-                                  in->mun[i]);
     if (fricreg_structure_set_jenkins(s, in->me, in->n, in->Je, in->kt, in->mun_e) != FRICREG_OK)
         return cli_file_error("--jenkins-params", o->jenkins_params, 0, "%s",
                               fricreg_structure_errmsg(s));

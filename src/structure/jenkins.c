@@ -16,8 +16,8 @@
  * q). The coordinates below are then (q, g) and the forces (fe, N): 2 me of them, J = J_e over
  * J_n, and the tangent T gains dfe/dg (slipping) and dN/dg = kn (closed).
  *
- * Newmark / HHT-alpha: with the contacts' forces zero (the combination with active contacts is
- * refused), the step's equation K_eff x = b - w J_e^T fe1 (w = 1 + alpha) condenses onto the
+ * Newmark / HHT-alpha: with the contacts' forces zero (every bound 0; beside contacts of bound
+ * > 0 the step is joint_step.c's, one Newton over both forces), the step's equation K_eff x = b - w J_e^T fe1 (w = 1 + alpha) condenses onto the
  * elements: u1 = u_pred + beta dt^2 x gives
  *   q(fe1) = q0 - c E fe1,   q0 = J_e (u_pred + beta dt^2 K_eff^-1 b),   c = w beta dt^2,
  * E = J_e K_eff^-1 J_e^T (me x me, formed once per factor of K_eff), and Newton solves
@@ -55,6 +55,7 @@ void fr_elements_free(fricreg_structure *s)
     for (size_t k = 0; k < sizeof arrays / sizeof *arrays; k++)
         free(arrays[k]);
     free(e->perm);
+    fr_joint_free(&e->joint);
     cholmod_l_free_sparse(&e->Jt, &s->cc);
     *e = (struct fr_elements){0};
 }
@@ -359,17 +360,14 @@ int fricreg_structure_get_iwan_state(const fricreg_structure *s, size_t me, size
     return FRICREG_OK;
 }
 
-int fr_elements_check_contacts(fricreg_structure *s, const char *who)
+int fr_elements_joint(const fricreg_structure *s)
 {
     if (s->el.me == 0)
-        return FRICREG_OK;
+        return 0;
     for (size_t i = 0; i < s->m; i++)
         if (s->mun[i] != 0.0)
-            return fr_fail(s, FRICREG_EINVAL,
-                           "%s: Jenkins elements beside friction contacts are not supported: "
-                           "contact %zu has mun = %g (set the contacts' bounds to 0)",
-                           who, i, s->mun[i]);
-    return FRICREG_OK;
+            return 1;
+    return 0;
 }
 
 /* Element i at q (and, with a normal law, at the normal displacement gn): its sliders' forces
@@ -436,39 +434,42 @@ void fr_elements_explicit(fricreg_structure *s, const gsl_vector *u1, gsl_vector
     fr_csc_mult_add(e->Jt, -1.0, e->fe1, w->data);
 }
 
-int fr_elements_compliance(fricreg_structure *s)
+int fr_elements_compliance(fricreg_structure *s, int joint)
 {
     struct fr_elements *e = &s->el;
-    if (e->me == 0 || e->E_valid)
+    if (e->me == 0 || (e->E_valid && (!joint || e->joint.valid)))
         return FRICREG_OK;
     size_t nc = e->nc;
+    if (joint && !fr_joint_allocate(&e->joint, s->m, nc))
+        return fr_fail(s, FRICREG_ENOMEM,
+                       "step: no memory for the joint Newton matrix (%zu contacts, %zu element "
+                       "coordinates)",
+                       s->m, nc);
     const SuiteSparse_long *p = e->Jt->p, *ri = e->Jt->i;
     const double *x = e->Jt->x;
-    double *col = s->dx->data, *sol = s->xt->data;
+    double *col = s->dx->data, *sol = s->xt->data, *cross = e->joint.dzc;
     for (size_t j = 0; j < nc; j++) {
         memset(col, 0, s->n * sizeof *col);
         for (SuiteSparse_long k = p[j]; k < p[j + 1]; k++)
             col[ri[k]] = x[k];
         fr_cfactor_solve(&s->step, col, sol, &s->cc);
         fr_csc_mult_t(e->Jt, sol, e->E + j * nc); /* E is symmetric: column j as row j */
+        if (joint) {                              /* column j of C = J K_eff^-1 J_e^T */
+            fr_csc_mult_t(s->Jt, sol, cross);
+            for (size_t i = 0; i < s->m; i++)
+                e->joint.C[i * nc + j] = cross[i];
+        }
     }
     e->E_valid = 1;
+    if (joint)
+        fr_joint_compliances(s);
     return FRICREG_OK;
 }
 
-/* At the forces f[nc]: the coordinates y = q0 - c E f, G = f - F(y) into g, the tangents into
- * e->tan (and e->tang), the trial sliders into e->wt and e->fs1; returns ||G||_2, *rinf its
- * largest entry (NaN propagates). */
-static double evaluate(struct fr_elements *e, double c, const double f[], double g[], double *rinf)
+double fr_elements_residual(struct fr_elements *e, const double f[], double g[], double *rinf)
 {
     size_t me = e->me, nc = e->nc;
     double sum = 0.0, big = 0.0;
-    for (size_t i = 0; i < nc; i++) {
-        double q = e->q0[i];
-        for (size_t j = 0; j < nc; j++)
-            q -= c * e->E[i * nc + j] * f[j];
-        e->y[i] = q;
-    }
     for (size_t i = 0; i < me; i++) {
         double gn = e->n0 != NULL ? e->y[me + i] : 0.0;
         g[i] = f[i] - element(e, i, e->y[i], gn, &e->tan[i], e->n0 != NULL ? &e->tang[i] : NULL);
@@ -485,6 +486,19 @@ static double evaluate(struct fr_elements *e, double c, const double f[], double
     }
     *rinf = big;
     return sqrt(sum);
+}
+
+/* At the forces f[nc]: the coordinates y = q0 - c E f, then fr_elements_residual. */
+static double evaluate(struct fr_elements *e, double c, const double f[], double g[], double *rinf)
+{
+    size_t nc = e->nc;
+    for (size_t i = 0; i < nc; i++) {
+        double q = e->q0[i];
+        for (size_t j = 0; j < nc; j++)
+            q -= c * e->E[i * nc + j] * f[j];
+        e->y[i] = q;
+    }
+    return fr_elements_residual(e, f, g, rinf);
 }
 
 /* df = -(I + c T E)^-1 g, T = diag(tan) plus dfe/dg's entries (row i, column me + i) with a

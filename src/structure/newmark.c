@@ -95,6 +95,7 @@ static int form_step_factor(fricreg_structure *s, double dt)
         return FRICREG_OK;
     s->step_dt = 0.0;
     s->el.E_valid = 0;
+    s->el.joint.valid = 0;
     fr_cfactor_free(&s->step, &s->cc);
     double w = 1.0 + s->alpha;
     double gc = w * s->gamma * dt, gk = w * s->beta * dt * dt;
@@ -382,10 +383,25 @@ static int newton(fricreg_structure *s, double dt, int *converged, int *iters)
     return FRICREG_OK;
 }
 
+/* The joint step (joint_step.c): Newton over the contacts' and the elements' forces, from
+ * the stick guess of newton() above where law (4) has one, the elements at their forces at t.
+ * The tolerance is the elements': the step's force scale or their largest force at t. */
+static int joint_newton(fricreg_structure *s, int *converged, int *iters)
+{
+    double scale = force_scale(s);
+    for (size_t i = 0; i < s->el.nc; i++)
+        scale = fmax(scale, fabs(s->el.fe[i]));
+    size_t below = mark_below_bound(s);
+    int guess = law_exact(s) && below > 0 && band_guess(s, below);
+    return fr_joint_newton(s, s->newton_tol * scale, guess ? s->ft->data : NULL, converged, iters);
+}
+
 /* The predictors, the start's term hist = C v + K u - p~ - J^T f + J_e^T fe, the Jenkins
  * elements' forces at the step's end (b then holds them: jenkins.c), and b's forward solve
- * (into s->yb) with what the contacts see of it: z0 and a0. */
-static int predict(fricreg_structure *s, double dt, int *converged, int *iters)
+ * (into s->yb) with what the contacts see of it: z0 and a0. joint: the elements are left to
+ * joint_step.c: b holds their forces at t, b is kept in s->x, and e->q0 is the elements'
+ * coordinates at that b (one backward solve more). */
+static int predict(fricreg_structure *s, double dt, int joint, int *converged, int *iters)
 {
     size_t n = s->n, m = s->m;
     double b2 = s->beta * dt * dt, g = s->gamma * dt, w = 1.0 + s->alpha;
@@ -407,12 +423,22 @@ static int predict(fricreg_structure *s, double dt, int *converged, int *iters)
     if (s->alpha != 0.0)
         for (size_t k = 0; k < n; k++)
             yb[k] = w * yb[k] + s->alpha * hist[k];
-    if (s->el.me > 0) {
+    if (joint) {
+        fr_csc_mult_add(s->el.Jt, -w, s->el.fe, yb);
+        gsl_vector_memcpy(s->x, s->yb);
+    } else if (s->el.me > 0) {
         int status = fr_elements_newmark(s, dt, force_scale(s), s->yb, converged, iters);
         if (status != FRICREG_OK)
             return status;
     }
     fr_cfactor_forward(&s->step, yb, yb, &s->cc);
+    if (joint) { /* q0 = J_e (u_pred + beta dt^2 K_eff^-1 b) */
+        double *x0 = s->dx->data;
+        fr_cfactor_backward(&s->step, yb, x0, &s->cc);
+        for (size_t k = 0; k < n; k++)
+            x0[k] = up[k] + b2 * x0[k];
+        fr_csc_mult_t(s->el.Jt, x0, s->el.q0);
+    }
     double *z0 = s->z0->data, *a0 = s->af0->data;
     fr_cfactor_project(&s->step, yb, a0, &s->cc); /* J x0 */
     fr_csc_mult_t(s->Jt, vp, z0);
@@ -435,13 +461,23 @@ int fr_newmark_solve(fricreg_structure *s, double dt, int *converged, int *iters
     if (status != FRICREG_OK)
         return status;
     dt = s->step_dt;
-    fr_elements_compliance(s);
+    int joint = fr_elements_joint(s);
+    if ((status = fr_elements_compliance(s, joint)) != FRICREG_OK)
+        return status;
     int el_converged = 1, el_iters = 0;
-    if ((status = predict(s, dt, &el_converged, &el_iters)) != FRICREG_OK ||
-        (status = newton(s, dt, converged, iters)) != FRICREG_OK)
+    if ((status = predict(s, dt, joint, &el_converged, &el_iters)) != FRICREG_OK ||
+        (status = joint ? joint_newton(s, converged, iters) : newton(s, dt, converged, iters)) !=
+            FRICREG_OK)
         return status;
     *converged = *converged && el_converged;
     *iters += el_iters;
+    if (joint) { /* b with the elements' forces at the step's end, forward again */
+        double *dfe = s->el.joint.dfe;
+        for (size_t i = 0; i < s->el.nc; i++)
+            dfe[i] = s->el.fe1[i] - s->el.fe[i];
+        fr_csc_mult_add(s->el.Jt, -(1.0 + s->alpha), dfe, s->x->data);
+        fr_cfactor_forward(&s->step, s->x->data, s->yb->data, &s->cc);
+    }
     /* x = K_eff^-1 (b + w J^T f): the forward half is yb, the backward half completes it. */
     fr_cfactor_lift(&s->step, 1.0 + s->alpha, s->fk->data, s->yb->data, &s->cc);
     fr_cfactor_backward(&s->step, s->yb->data, s->x->data, &s->cc);

@@ -110,8 +110,6 @@ static int step_to(fricreg_structure *s, double t1)
     double dt = t1 - s->t;
     int64_t cuts = s->stats[FRICREG_SSTAT_LINE_SEARCH_CUTS];
     int status = fr_structure_prepare(s);
-    if (status == FRICREG_OK)
-        status = fr_elements_check_contacts(s, "step");
     if (status != FRICREG_OK)
         return status;
     int equilibrium = !s->ready;

@@ -2,8 +2,8 @@
 /* structure_internal.h — the structure's layout, shared by its files: structure.c (life cycle,
  * setters, getters), model.c (the model matrices), prepare.c (the set-up of a model),
  * newmark.c and newton_matrix.c (the implicit step), central_difference.c, step.c (stepping),
- * structure_ode.c (GSL's steppers), guard.c (the step guard), energy.c (the balance) and
- * jenkins.c (Jenkins elements). */
+ * structure_ode.c (GSL's steppers), guard.c (the step guard), energy.c (the balance),
+ * jenkins.c (Jenkins elements) and joint_step.c (elements beside contacts). */
 #ifndef FRICREG_STRUCTURE_INTERNAL_H
 #define FRICREG_STRUCTURE_INTERNAL_H
 
@@ -49,6 +49,24 @@ struct fr_energy {
  * force N = max(0, n0 + kn g) and the bound phi_s N (phi holding mu): the element
  * coordinates are then (q, g), nc = 2 me of them, and the forces (fe, N), -J_n^T N acting on
  * the structure too; without, nc = me. */
+/* The joint step's dense storage (joint_step.c), for elements beside contacts of bound > 0:
+ * m contacts, nc element coordinates, dim = m + nc; row-major. */
+struct fr_joint {
+    size_t m, nc, dim;
+    int valid;                   /* Weff and W are the factors' (C and E: the elements' E_valid) */
+    double *Weff, *W;            /* [m m] J K_eff^-1 J^T (as the step's sparse D) and J M^-1 J^T */
+    double *C;                   /* [m nc] J K_eff^-1 J_e^T (J_e over J_n with a normal law) */
+    double *T, *Fz, *Fa;         /* [dim dim] the Newton matrix; [m m] the context's tangent */
+    double *tau, *norm, *rhs;    /* [dim] its QR and right-hand side */
+    size_t *perm;                /* [dim] */
+    double *z, *zt, *d;          /* [dim] the iterate (f, fe), the trial, the direction */
+    double *gc, *gct, *ge, *get; /* [m], [m], [nc], [nc] residuals at z and at the trial */
+    double *wf, *mf, *dzc;       /* [m] W_eff f, W f, the velocity change of d over c */
+    double *coef, *fz, *wg;      /* [m] the context's rows, the slopes' signs, [W G_c] */
+    unsigned char *implicit;     /* [m] */
+    double *fe0, *dfe;           /* [nc] the elements' start forces, fe - fe0 */
+};
+
 struct fr_elements {
     size_t me, ns, nc;
     cholmod_sparse *Jt;        /* n x nc: J_e^T, then J_n^T */
@@ -69,6 +87,7 @@ struct fr_elements {
     int E_valid;   /* E is K_eff's at step_dt */
     int crossed;   /* the last committed step opened or closed an element: its energy is not
                       exact (warnings.c) */
+    struct fr_joint joint; /* beside contacts of bound > 0 (joint_step.c) */
 };
 
 struct fricreg_structure {
@@ -244,7 +263,11 @@ double fr_ground_pgv(const fricreg_structure *s);
  * J_e u1, w -= J_e^T fe1 (central difference). elements_newmark: Newton on fe1 with b[n] the
  * step's right-hand side K_eff x = b - w J_e^T fe1 (before the forward solve), until max |G|
  * is within newton_tol times the larger of scale and max |fe|; then b -= (1 + alpha) J_e^T fe1. elements_commit after an accepted step. */
-int fr_elements_compliance(fricreg_structure *s);
+int fr_elements_compliance(fricreg_structure *s, int joint);
+/* G = fe - F(y) at the coordinates e->y (formed by the caller), into g[nc]; the tangents into
+ * e->tan (and e->tang), the trial sliders into e->wt, e->fs1; returns ||G||_2, *rinf its
+ * largest entry (NaN propagates). */
+double fr_elements_residual(struct fr_elements *e, const double fe[], double g[], double *rinf);
 void fr_elements_equilibrium(fricreg_structure *s, gsl_vector *w);
 void fr_elements_explicit(fricreg_structure *s, const gsl_vector *u1, gsl_vector *w);
 int fr_elements_newmark(fricreg_structure *s, double dt, double scale, gsl_vector *b,
@@ -255,8 +278,21 @@ void fr_elements_hold(fricreg_structure *s, int restore);
 void fr_elements_reset(fricreg_structure *s);
 void fr_elements_free(fricreg_structure *s);
 double fr_elements_strain(const fricreg_structure *s);
-/* Refuses (FRICREG_EINVAL, led by who) elements beside a contact whose bound is > 0. */
-int fr_elements_check_contacts(fricreg_structure *s, const char *who);
+/* Some contact has a bound > 0 beside elements: the step is joint_step.c's. */
+int fr_elements_joint(const fricreg_structure *s);
+
+/* joint_step.c: the step's Newton over the contacts' and the elements' forces together, with
+ * newmark.c's predictor formed at (f = 0, fe = fe at t): z0, a0, e->q0. allocate: the dense
+ * storage for m contacts and nc coordinates (kept if the sizes hold), 0 when out of memory;
+ * compliances: W_eff and W dense from the factors (C and E are jenkins.c's); newton: from the
+ * forces at t, or guess[m] (the contacts' stick guess, NULL: none) with the elements' at t,
+ * until both residuals' largest entries are within tol; the forces into s->fk and e->fe1, the
+ * law's at them into s->f1, the sliders' trial state at them. */
+int fr_joint_allocate(struct fr_joint *j, size_t m, size_t nc);
+void fr_joint_compliances(fricreg_structure *s);
+int fr_joint_newton(fricreg_structure *s, double tol, const double guess[], int *converged,
+                    int *iters);
+void fr_joint_free(struct fr_joint *j);
 
 /* energy.c */
 void fr_energy_reset(fricreg_structure *s);

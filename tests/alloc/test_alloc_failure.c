@@ -1420,6 +1420,36 @@ static const struct script structure_jenkins_script = {"structure with Jenkins e
                                                        structure_errcode,
                                                        structure_close};
 
+/* The same frame with its contacts' bounds > 0 beside the elements: the joint step
+ * (joint_step.c) allocates its dense storage at the first step. Newmark and HHT-alpha only:
+ * the central difference, explicit, has no joint step (and its step guard refuses these
+ * bounds at the default eps). */
+static const char *const structure_joint_calls[] = {"set_mass",     "set_stiffness",
+                                                    "set_contacts", "set_bounds (> 0)",
+                                                    "set_load(1)",  "set_jenkins",
+                                                    "the scheme",   "set_jenkins_csr",
+                                                    "run"};
+
+static int structure_joint_call(void *obj, int i, struct view *v)
+{
+    if (i == 3)
+        return fricreg_structure_set_bounds(obj, 2, FRAME_MUN);
+    return structure_jenkins_call(obj, i, v);
+}
+
+static const struct script structure_joint_script = {"structure with Jenkins elements beside "
+                                                     "contacts",
+                                                     9,
+                                                     structure_joint_calls,
+                                                     1u << 5,
+                                                     0,
+                                                     structure_open,
+                                                     structure_joint_call,
+                                                     NULL,
+                                                     structure_jenkins_observe,
+                                                     structure_errcode,
+                                                     structure_close};
+
 /* The same frame with Iwan elements of three sliders: set_iwan (dense) replaced by
  * set_iwan_csr. */
 static const double FRAME_IW_K[6] = {60, 50, 40, 30, 30, 30},
@@ -2288,6 +2318,18 @@ START_TEST(test_structure_jenkins_run)
 }
 END_TEST
 
+START_TEST(test_structure_joint_run)
+{
+    static const char *const names[2] = {"structure newmark, Jenkins elements beside contacts",
+                                         "structure hht, Jenkins elements beside contacts"};
+    current_scheme = _i;
+    struct script sc = structure_joint_script;
+    sc.name = names[_i];
+    struct tally t = fail_each_allocation(&sc);
+    ck_assert_int_ge(t.enomem, t.cases - 30); /* CHOLMOD's own fallbacks, as above */
+}
+END_TEST
+
 START_TEST(test_structure_iwan_run)
 {
     static const char *const names[3] = {"structure newmark, Iwan elements",
@@ -2368,6 +2410,27 @@ START_TEST(test_structure_jenkins_steps_do_not_allocate)
 }
 END_TEST
 
+/* And beside contacts of bound > 0 (Newmark, HHT-alpha): once the first step has allocated
+ * the joint step's storage, the joint Newton makes no allocation. */
+START_TEST(test_structure_joint_steps_do_not_allocate)
+{
+    for (int scheme = SCHEME_NEWMARK; scheme <= SCHEME_HHT; scheme++) {
+        fricreg_structure *s = NULL;
+        ck_assert_int_eq(fricreg_structure_create(3, 2, &s), FRICREG_OK);
+        current_scheme = scheme;
+        for (int i = 0; i < 8; i++)
+            ck_assert_int_eq(structure_joint_call(s, i, NULL), FRICREG_OK);
+        ck_assert_int_eq(fricreg_structure_step(s, 0.001), FRICREG_OK); /* the joint storage */
+        hook_arm(1);
+        int status = fricreg_structure_run(s, 0.001, 0.5);
+        hook_disarm();
+        ck_assert_int_eq(status, FRICREG_OK);
+        ck_assert_msg(n_allocs == 0, "scheme %d: 499 steps made %ld allocations", scheme, n_allocs);
+        fricreg_structure_free(s);
+    }
+}
+END_TEST
+
 /* And with lift-off elements: the coupled Newton makes no allocation. */
 START_TEST(test_structure_normal_steps_do_not_allocate)
 {
@@ -2426,6 +2489,7 @@ static Suite *alloc_suite(void)
     tcase_add_test(core, test_structure_jenkins_steps_do_not_allocate);
     tcase_add_test(core, test_structure_iwan_steps_do_not_allocate);
     tcase_add_test(core, test_structure_normal_steps_do_not_allocate);
+    tcase_add_test(core, test_structure_joint_steps_do_not_allocate);
     tcase_add_test(core, test_disk_ctx_create);
     tcase_add_test(core, test_jenkins_create);
     tcase_add_test(core, test_jenkins_trial_does_not_allocate);
@@ -2452,6 +2516,7 @@ static Suite *alloc_suite(void)
     tcase_add_test(drivers, test_hb_normal);
     tcase_add_loop_test(drivers, test_structure_run, 0, N_SCHEMES);
     tcase_add_loop_test(drivers, test_structure_jenkins_run, 0, 3);
+    tcase_add_loop_test(drivers, test_structure_joint_run, 0, 2); /* implicit: the joint step */
     tcase_add_loop_test(drivers, test_structure_iwan_run, 0, 3);
     tcase_add_loop_test(drivers, test_structure_normal_run, 0, 3);
     suite_add_tcase(s, drivers);
