@@ -6,7 +6,9 @@
 ! fricreg_f77.f90: external subroutines, every argument by reference, INTEGER*8 handle H (0:
 ! none), INTEGER STAT last (the C status, FRICREG_OK = 0; nothing stops the program), DOUBLE
 ! PRECISION reals, nothing changed on failure. NDOF and M are checked by the C library against
-! the structure (FRICREG_ESIZE) before any array is read.
+! the structure (FRICREG_ESIZE) before any array is read, but for the dense rows that are
+! transposed here first (FRSTJF's J, FRSTJK's, FRSTIW's and FRSTLO's JE and JN): those are read
+! as (M, NDOF) or (ME, NDOF) as given, so they must have those dimensions.
 !
 ! Matrices. The model is sparse inside; a legacy code hands over the compressed sparse columns
 ! (CSC) it holds, one-based, as they are: INTEGER*8 COLPTR(NCOL + 1), the column pointers

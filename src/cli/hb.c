@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* hb.c — `fricreg-sim hb`: the frequency response of a linear structure with Jenkins, Iwan or
- * lift-off elements by harmonic balance (fricreg_hb.h) from Matrix Market files, continued in the excitation
- * frequency from --omega-start to --omega-end; a JSON summary (per dof the peak RMS and its
- * frequency) or a CSV row per continuation point on stdout. Every bad option or file is one
- * line on stderr naming it, exit 2, nothing on stdout; a continuation that fails, exit 1. */
+ * lift-off elements (jenkins_input.h) by harmonic balance (fricreg_hb.h) from Matrix Market
+ * files, continued in the excitation frequency from --omega-start to --omega-end; a JSON
+ * summary (per dof the peak RMS and its frequency) or a CSV row per continuation point on
+ * stdout. Every bad option or file is one line on stderr naming it, exit 2, nothing on stdout;
+ * a continuation that fails, exit 1. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

@@ -178,9 +178,7 @@ static int read_sliders(const char *path, size_t m, size_t *ns, double **k, doub
                                     "%zu numbers: give pairs k_s phi_s, one per slider", count);
         else if (rows == m)
             status = cli_file_error(option, path, line,
-                                    "more lines than the %zu elements (rows "
-                                    "of --jenkins)",
-                                    m);
+                                    "more lines than the %zu elements (rows of --jenkins)", m);
         else if (rows > 0 && count != 2 * width)
             status = cli_file_error(option, path, line,
                                     "%zu sliders, line %ld has %zu: every element needs the same "
@@ -206,12 +204,12 @@ static int read_sliders(const char *path, size_t m, size_t *ns, double **k, doub
     free(buf);
     free(v);
     if (status == 0 && too_long)
-        status = cli_file_error(option, path, line, "line too long");
+        status = cli_file_error(option, path, line, "line too long (%d characters at most)",
+                                SLIDER_LINE_MAX - 2);
     if (status == 0 && rows != m)
         status = cli_file_error(option, path, 0,
-                                "%zu lines, the model has %zu elements (rows of "
-                                "--jenkins)",
-                                rows, m);
+                                "%zu lines, the model has %zu elements (rows of --jenkins)", rows,
+                                m);
     *ns = width;
     return status;
 }
