@@ -6,7 +6,9 @@
 ! fricreg_f77.f90: external subroutines, every argument by reference, INTEGER*8 handle H (0:
 ! none), INTEGER STAT last (the C status, FRICREG_OK = 0; nothing stops the program), DOUBLE
 ! PRECISION reals, nothing changed on failure. NDOF and M are checked by the C library against
-! the structure (FRICREG_ESIZE) before any array is read.
+! the structure (FRICREG_ESIZE) before any array is read, but for the dense rows that are
+! transposed here first (FRSTJF's J, FRSTJK's, FRSTIW's and FRSTLO's JE and JN): those are read
+! as (M, NDOF) or (ME, NDOF) as given, so they must have those dimensions.
 !
 ! Matrices. The model is sparse inside; a legacy code hands over the compressed sparse columns
 ! (CSC) it holds, one-based, as they are: INTEGER*8 COLPTR(NCOL + 1), the column pointers
@@ -47,14 +49,22 @@
 !   FRSTGF(H, M, F, STAT), FRSTGD(H, M, D, STAT) _get_forces, _get_dissipation
 !   FRSTGV(H, WHICH, VALUE, STAT)                _get_value (FRICREG_SVALUE_*)
 !   FRSTGT(H, WHICH, VALUE, STAT)                _get_stat (FRICREG_SSTAT_*, INTEGER*8 VALUE)
+!   FRSTJK(H, ME, NDOF, JE, KT, MUN, STAT)       _set_jenkins (given JE transposed)
+!   FRSTIW(H, ME, NDOF, JE, NS, K, PHI, STAT)    _set_iwan (JE transposed, K(NS, ME))
+!   FRSTLO(H, ME, NDOF, JE, JN, KT, MU, N0, KN, STAT)   _set_jenkins_normal (JE, JN transposed)
+!   FRSTJS(H, ME, F, W, D, STAT)                 _get_jenkins_state
+!   FRSTIS(H, ME, NS, F, W, D, STAT)             _get_iwan_state (W(NS, ME))
+!   FRSTNF(H, ME, N, STAT)                       _get_normal_forces
 !   FRSTER(H, CODE, MSG, STAT)                   _errcode, _errmsg
 !   FRCSTP(H, M, ZS, ZP, AP, W, WEFF, C, TOL, MAXIT, FLAGS, F, ITERS, CONV, STAT)
 !                                                fricreg_ctx_solve_step, on a context H of
 !                                                FRCTXC (the user's own Newmark)
-! The getters (FRSTG*) read a const structure: C records no failure of theirs, so FRSTER
-! still shows the failure before (their STAT is the answer). So do the few refusals made here,
+! The getters (FRSTG*, FRSTJS, FRSTIS, FRSTNF) read a const structure: C records no failure
+! of theirs, so FRSTER still shows the failure before (their STAT is the answer). So do the
+! few refusals made here,
 ! before C is called, of counts that would wrap into size_t: FRSTCR's NDOF or M below 1
-! (there is no structure yet to record it), FRSTAG's and FRSTLD's N below 0 (FRICREG_EINVAL).
+! (there is no structure yet to record it), FRSTAG's and FRSTLD's N below 0, FRSTIW's and
+! FRSTIS's NS below 0 (FRICREG_EINVAL).
 
 !> FRSTCR(NDOF, M, H, STAT): create a structure of NDOF >= 1 degrees of freedom and M >= 1
 !> contacts into H, with C's defaults (M = I, C = K = 0, J unset, law (4), eps = 1e-3,
@@ -482,6 +492,149 @@ subroutine frster(h, code, msg, stat)
                                 msg)
   code = last
 end subroutine frster
+
+!> FRSTJK(H, ME, NDOF, JE, KT, MUN, STAT): ME Jenkins elements (C's
+!> fricreg_structure_set_jenkins) on the rows of JE(ME, NDOF) in Fortran's order: element I
+!> sees Q_I = sum over K of JE(I, K) U(K) and its force FE_I = KT(I) (Q_I - W_I),
+!> |FE_I| <= MUN(I), acting on the structure as -JE^T FE. KT(ME) > 0, MUN(ME) >= 0; ME = 0
+!> removes them. Every contact's bound must be 0 beside them. JE is transposed into a scratch
+!> copy of ME*NDOF values (FRICREG_ENOMEM if that fails). Replaces the elements in force.
+subroutine frstjk(h, me, ndof, je, kt, mun, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: me, ndof
+  double precision, intent(in) :: je(max(me, 0), *), kt(*), mun(*)
+  integer, intent(out) :: stat
+  double precision, allocatable :: jt(:, :)
+  integer :: mm, nn, alloc
+  ! Sizes that cannot be the structure's copy nothing: C answers FRICREG_ESIZE or EINVAL.
+  mm = max(me, 0)
+  nn = max(ndof, 0)
+  allocate (jt(nn, mm), stat=alloc)
+  if (alloc /= 0) then
+    stat = int(FRICREG_ENOMEM)
+    return
+  end if
+  if (mm > 0 .and. nn > 0) jt = transpose(je(1:mm, 1:nn))
+  stat = int(fricreg_structure_set_jenkins(fricreg_handle_to_ptr(h), int(me, c_size_t), &
+                                           int(ndof, c_size_t), jt, kt, mun))
+end subroutine frstjk
+
+!> FRSTIW(H, ME, NDOF, JE, NS, K, PHI, STAT): ME Iwan elements instead (C's
+!> fricreg_structure_set_iwan), JE(ME, NDOF) as FRSTJK's, element I's NS sliders the
+!> stiffnesses K(1:NS, I) > 0 and slip forces PHI(1:NS, I) >= 0 (C's row-major K[ME NS], the
+!> same numbers); its force the sum of its sliders'. FRSTJK is the case NS = 1; NS below 0 is
+!> FRICREG_EINVAL here.
+subroutine frstiw(h, me, ndof, je, ns, k, phi, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: me, ndof, ns
+  double precision, intent(in) :: je(max(me, 0), *), k(*), phi(*)
+  integer, intent(out) :: stat
+  double precision, allocatable :: jt(:, :)
+  integer :: mm, nn, alloc
+  mm = max(me, 0)
+  nn = max(ndof, 0)
+  if (ns < 0) then ! would wrap into size_t
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  allocate (jt(nn, mm), stat=alloc)
+  if (alloc /= 0) then
+    stat = int(FRICREG_ENOMEM)
+    return
+  end if
+  if (mm > 0 .and. nn > 0) jt = transpose(je(1:mm, 1:nn))
+  stat = int(fricreg_structure_set_iwan(fricreg_handle_to_ptr(h), int(me, c_size_t), &
+                                        int(ndof, c_size_t), jt, int(ns, c_size_t), k, phi))
+end subroutine frstiw
+
+!> FRSTLO(H, ME, NDOF, JE, JN, KT, MU, N0, KN, STAT): ME Jenkins elements with a normal load
+!> and lift-off instead (C's fricreg_structure_set_jenkins_normal): tangential rows JE(ME, NDOF)
+!> and normal rows JN(ME, NDOF), both as FRSTJK's JE; G_I = (JN U)_I positive closing, the
+!> normal force N_I = MAX(0, N0(I) + KN(I) G_I), the bound MU(I) N_I; both forces act on the
+!> structure (-JE^T FE - JN^T N). KT(ME) > 0, MU(ME) >= 0, N0(ME) finite, KN(ME) > 0.
+subroutine frstlo(h, me, ndof, je, jn, kt, mu, n0, kn, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: me, ndof
+  double precision, intent(in) :: je(max(me, 0), *), jn(max(me, 0), *), kt(*), mu(*), n0(*), &
+                                  kn(*)
+  integer, intent(out) :: stat
+  double precision, allocatable :: ct(:, :), cn(:, :)
+  integer :: mm, nn, alloc
+  mm = max(me, 0)
+  nn = max(ndof, 0)
+  allocate (ct(nn, mm), cn(nn, mm), stat=alloc)
+  if (alloc /= 0) then
+    stat = int(FRICREG_ENOMEM)
+    return
+  end if
+  if (mm > 0 .and. nn > 0) then
+    ct = transpose(je(1:mm, 1:nn))
+    cn = transpose(jn(1:mm, 1:nn))
+  end if
+  stat = int(fricreg_structure_set_jenkins_normal(fricreg_handle_to_ptr(h), int(me, c_size_t), &
+                                                  int(ndof, c_size_t), ct, cn, kt, mu, n0, kn))
+end subroutine frstlo
+
+!> FRSTJS(H, ME, F, W, D, STAT): the Jenkins elements' forces F(ME) (on the element; -JE^T F
+!> on the structure), committed sliders W(ME) and dissipation D(ME) since they were set (C's
+!> fricreg_structure_get_jenkins_state, all three). FRICREG_ESIZE if ME is not the number of
+!> elements, or they are Iwan elements of NS > 1 (FRSTIS reads those).
+subroutine frstjs(h, me, f, w, d, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: me
+  double precision, intent(inout) :: f(*), w(*), d(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_get_jenkins_state(fricreg_handle_to_ptr(h), &
+                                                 int(max(me, 0), c_size_t), f, w, d))
+end subroutine frstjs
+
+!> FRSTIS(H, ME, NS, F, W, D, STAT): the elements' forces F(ME), committed sliders W(NS, ME)
+!> (element I's slider S at W(S, I)) and dissipation D(ME) (C's
+!> fricreg_structure_get_iwan_state; Jenkins elements with NS = 1). FRICREG_ESIZE if ME or NS
+!> is not the elements'.
+subroutine frstis(h, me, ns, f, w, d, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: me, ns
+  double precision, intent(inout) :: f(*), w(*), d(*)
+  integer, intent(out) :: stat
+  if (ns < 0) then ! would wrap into size_t
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  stat = int(fricreg_structure_get_iwan_state(fricreg_handle_to_ptr(h), &
+                                              int(max(me, 0), c_size_t), int(ns, c_size_t), f, &
+                                              w, d))
+end subroutine frstis
+
+!> FRSTNF(H, ME, N, STAT): the normal forces N(ME) of FRSTLO's elements (C's
+!> fricreg_structure_get_normal_forces; 0 while separated). FRICREG_ESIZE if ME is not the
+!> number of elements; FRICREG_EINVAL if they have no normal law.
+subroutine frstnf(h, me, n, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: me
+  double precision, intent(inout) :: n(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_get_normal_forces(fricreg_handle_to_ptr(h), &
+                                                 int(max(me, 0), c_size_t), n))
+end subroutine frstnf
 
 !> FRCSTP(H, M, ZS, ZP, AP, W, WEFF, C, TOL, MAXIT, FLAGS, F, ITERS, CONV, STAT): the forces of
 !> one implicit step of the caller's own integrator on a context H (FRCTXC), C's

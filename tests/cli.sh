@@ -32,6 +32,29 @@ expect_output() {
     fi
 }
 
+# expect_same TOL ARGS-A -- ARGS-B: two runs print the same JSON summary, every number within
+# TOL relative (of 1e-300 at least), all but cpu_seconds and the element kind and sliders.
+expect_same() {
+    total=$((total + 1))
+    tol=$1; shift
+    first=""
+    while [ "$1" != "--" ]; do first="$first $1"; shift; done
+    shift
+    for run in a b; do
+        if [ $run = a ]; then "$sim" $first >"$tmp/$run" 2>"$tmp/err"; else "$sim" "$@" >"$tmp/$run" 2>"$tmp/err"; fi
+        sed -e 's/"cpu_seconds": [0-9.e+-]*//; s/, "element_kind": "[^"]*"//; s/, "sliders_per_element": [0-9]*//' \
+            "$tmp/$run" | tr -s ',:[]{} ' '\n' >"$tmp/$run.tokens"
+    done
+    if [ ! -s "$tmp/a" ] || ! paste "$tmp/a.tokens" "$tmp/b.tokens" | awk -v tol="$tol" -F'\t' '
+            $1 == $2 { next }
+            $1 + 0 == $1 && $2 + 0 == $2 { d = $1 - $2; s = ($1 < 0 ? -$1 : $1); d = (d < 0 ? -d : d)
+                if (d <= tol * (s > 1e-300 ? s : 1e-300)) next }
+            { bad++ } END { exit bad > 0 || NR == 0 }'; then
+        echo "FAIL: fricreg-sim$first and $* differ: $(head -c 300 "$tmp/a") | $(head -c 300 "$tmp/b") $(cat "$tmp/err")"
+        fails=$((fails + 1))
+    fi
+}
+
 expect_usage_error "unknown command" frobnicate
 expect_usage_error "--dt" oscillator --dt -1
 expect_usage_error "--dt" oscillator --dt 0
@@ -279,6 +302,49 @@ expect_output '"x": \[-1\.95438123028[34][0-9]*\].*"dissipation_per_contact": \[
 expect_output '"dissipation_per_contact": \[9\.[0-9]+\],.*"njenkins": 1, "dissipation_per_jenkins": \[0\.09[0-9]+\].*"residual": -?[0-9.]+e-(1[3-9]|[2-9][0-9])' $block --jenkins $d/J1.mtx --jenkins-params $d/P_slip.txt --integrator newmark --dt 0.01
 echo "-1 0.05" >"$d/P_bad.txt"
 expect_usage_error "^fricreg-sim: --jenkins-params $d/P_bad.txt: .*kt > 0" $jk --jenkins-params $d/P_bad.txt --integrator newmark
+# Iwan elements (--iwan-params: a line k_1 phi_1 ... k_ns phi_ns per element): four equal
+# sliders of 50.0 and 0.0125 N are the slipping Jenkins element of 200.0 and 0.05 N above, to
+# rounding; Segalman's model (--iwan-segalman: F_S K_T chi beta) in one slider with beta = 0 is
+# the Jenkins element of kt = K_T, mun = F_S exactly (docs/joints.md), and in 50 sliders whose
+# stiffnesses sum to K_T with F_S = 1e30 (every slider stuck) the closed form above.
+echo "50.0 0.0125 50.0 0.0125 50.0 0.0125 50.0 0.0125" >"$d/I_slip.txt"
+echo "0.05 200.0 -0.5 0" >"$d/S_slip.txt"
+echo "1e30 200.0 -0.5 0" >"$d/S_stuck.txt"
+expect_same 1e-12 $jk --jenkins-params $d/P_slip.txt --integrator newmark -- $jk --iwan-params $d/I_slip.txt --integrator newmark
+expect_output '"jenkins_dissipation": 0\.0[0-9]*[1-9][0-9]*, "element_kind": "iwan", "sliders_per_element": 4' $jk --iwan-params $d/I_slip.txt --integrator newmark
+expect_same 0 $jk --jenkins-params $d/P_slip.txt --integrator central -- $jk --iwan-segalman $d/S_slip.txt --iwan-sliders 1 --integrator central
+expect_output '"x": \[-0\.00113279590437[89][0-9]*\].*"element_kind": "iwan", "sliders_per_element": 50' $jk --iwan-segalman $d/S_stuck.txt --integrator newmark
+printf '# k phi\n50.0 0.0125 50.0 0.0125\n200.0 0.05\n' >"$d/I_uneven.txt"
+mtx J2e.mtx general "2 1 2" "1 1 1" "2 1 1"
+expect_usage_error "^fricreg-sim: --iwan-params $d/I_uneven.txt: line 3: 1 sliders, line 2 has 2: every element needs the same number of sliders" ${jk%% --jenkins *} --jenkins $d/J2e.mtx --iwan-params $d/I_uneven.txt --integrator newmark --dt 0.01 --t-end 1
+echo "50.0 0.0125 50.0" >"$d/I_odd.txt"
+expect_usage_error "^fricreg-sim: --iwan-params $d/I_odd.txt: line 1: 3 numbers: give pairs" $jk --iwan-params $d/I_odd.txt --integrator newmark
+expect_usage_error "^fricreg-sim: --iwan-params $d/nosuch.txt: cannot open" $jk --iwan-params $d/nosuch.txt --integrator newmark
+expect_usage_error "^fricreg-sim: --iwan-params: give only one of" $jk --jenkins-params $d/P_slip.txt --iwan-params $d/I_slip.txt --integrator newmark
+echo "0.05 200.0 -1 0" >"$d/S_bad.txt"
+expect_usage_error "^fricreg-sim: --iwan-segalman $d/S_bad.txt: .*chi" $jk --iwan-segalman $d/S_bad.txt --integrator newmark
+expect_usage_error "^fricreg-sim: --iwan-sliders: only with --iwan-segalman" $jk --iwan-params $d/I_slip.txt --iwan-sliders 3 --integrator newmark
+expect_usage_error "^fricreg-sim: --iwan-resolution: must be < 1" $jk --iwan-segalman $d/S_slip.txt --iwan-resolution 1 --integrator newmark
+# Lift-off (--normal Jn.mtx --normal-params Q.txt, a line kt mu n0 kn per element): the
+# element of kt = 200.0 on dof 1 (the oscillator above, its K2a 217.3) pressed by dof 2
+# (m 1.3, k 80) with n0 = 1000 N, kn = 40 N/m, mu = 1e27: stuck and closed (N >= 1000 - 40 x
+# 2 x 1000.95/120 = 333 N), so dof 1 is the closed form above, and dof 2 is an undamped
+# oscillator of stiffness 80 + 40 under -(n0 + 1.3 A): Newmark's u_2 = -(1000.9503/120)
+# (1 - cos(W 1.37 s)), W = (2/dt) atan(w dt/2), w = sqrt(120/1.3): -1.39190163488111 m, and
+# N = 1000 + 40 u_2 = 944.323934604756 N.
+mtx M2n.mtx symmetric "2 2 2" "1 1 2.385" "2 2 1.3"
+mtx K2n.mtx symmetric "2 2 2" "1 1 217.3" "2 2 80"
+mtx Jt2.mtx general "1 2 1" "1 1 1"
+mtx Jn2.mtx general "1 2 1" "1 2 1"
+echo "200.0 1e27 1000 40" >"$d/Q_stuck.txt"
+lo="structure --mass $d/M2n.mtx --stiffness $d/K2n.mtx --contacts $d/Jt2.mtx --mun $d/mun0.txt --ground-accel $d/ag_osc.txt --jenkins $d/Jt2.mtx --normal $d/Jn2.mtx --dt 0.01 --t-end 1.37 --integrator newmark"
+expect_output '"x": \[-0\.00113279590437[89][0-9]*, -1\.391901634881(0[5-9]|1[0-7])[0-9]*\].*"element_kind": "lift-off", "normal_forces": \[944\.3239346047(5[4-9]|6[0-5])[0-9]*\]' $lo --normal-params $d/Q_stuck.txt
+echo "200.0 1e27 1000 0" >"$d/Q_kn0.txt"
+expect_usage_error "^fricreg-sim: --normal-params $d/Q_kn0.txt: .*kn > 0" $lo --normal-params $d/Q_kn0.txt
+echo "200.0 1e27 1000" >"$d/Q_short.txt"
+expect_usage_error "^fricreg-sim: --normal-params $d/Q_short.txt: line 1: expected 4" $lo --normal-params $d/Q_short.txt
+expect_usage_error "^fricreg-sim: --normal-params: missing" $lo
+expect_usage_error "^fricreg-sim: --normal $d/J2e.mtx: the matrix is 2 x 1" ${lo%% --jenkins *} --jenkins $d/Jt2.mtx --normal $d/J2e.mtx --normal-params $d/Q_stuck.txt --integrator newmark --dt 0.01 --t-end 1
 
 # Two storeys (m 1.7, 2.3 kg; k 311, 187 N/m), a damper on each drift, a shaken ground:
 # symmetric storage (lower triangle) and the full general matrix are the same model, and
@@ -472,6 +538,33 @@ if ! sed 's/.*"peak_rms": \([^,]*\), "peak_omega": \([^}]*\)}.*/\1 \2/' "$d/loos
 fi
 expect_usage_error "^fricreg-sim: --rayleigh: give --damping or --rayleigh" hb --mass $d/M.mtx --stiffness $d/K.mtx --damping $d/K.mtx --rayleigh 0,0.02 --excitation $d/F.txt --jenkins $d/J.mtx --jenkins-params $d/P.txt --omega-start 1 --omega-end 2
 expect_usage_error "^fricreg-sim: --excitation $d/J.mtx" hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/J.mtx --jenkins $d/J.mtx --jenkins-params $d/P.txt --omega-start 1 --omega-end 2
+# Iwan elements and lift-off in hb, against the element slipping (kt 1.5, mu N 0.3): two
+# sliders of 0.75 and 0.15 give the same branch to rounding; a lift-off element of mu 0.1,
+# n0 3, kn 0 on the same row is the Jenkins element of mu N = 0.3 (fricreg_hb.h) but its
+# preload pushes the mass to x0 = -n0/k = -1 (the static term), so its RMS is
+# sqrt(rms_jenkins^2 + 1): at the first point (Omega = W0, solved from q = 0) within 1e-12,
+# slipping near the peak (W0 = 1.24) and beyond it (1.5).
+hbs="hb --mass $d/M.mtx --stiffness $d/K.mtx --rayleigh 0,0.02 --excitation $d/F.txt --jenkins $d/J.mtx --harmonics 3"
+echo "1.5 0.3" >"$d/P_slip.txt"
+echo "0.75 0.15 0.75 0.15" >"$d/I_slip.txt"
+echo "1.5 0.1 3 0" >"$d/Q_kn0.txt"
+expect_same 1e-12 $hbs --omega-start 0.5 --omega-end 3 --jenkins-params $d/P_slip.txt -- $hbs --omega-start 0.5 --omega-end 3 --iwan-params $d/I_slip.txt
+expect_output '"element_kind": "iwan", "sliders_per_element": 2' $hbs --omega-start 0.5 --omega-end 3 --iwan-params $d/I_slip.txt
+for w0 in 1.24 1.5; do
+    total=$((total + 1))
+    "$sim" $hbs --omega-start $w0 --omega-end 3 --jenkins-params $d/P_slip.txt --output frf >"$d/j.csv" 2>"$d/err"
+    "$sim" $hbs --omega-start $w0 --omega-end 3 --normal $d/J.mtx --normal-params $d/Q_kn0.txt --output frf >"$d/n.csv" 2>>"$d/err"
+    if ! paste -d, "$d/j.csv" "$d/n.csv" | awk -F, -v w0=$w0 'NR == 2 { e = (sqrt($4 * $4 - 1) - $2) / $2
+            exit !($1 == w0 && $3 == w0 && $2 > 0.3 && e < 1e-12 && e > -1e-12) } END { if (NR < 2) exit 1 }'; then
+        echo "FAIL: hb lift-off kn = 0 against Jenkins at $w0: $(sed -n 2p "$d/j.csv") $(sed -n 2p "$d/n.csv") $(cat "$d/err")"
+        fails=$((fails + 1))
+    fi
+done
+expect_output '"element_kind": "lift-off"' $hbs --omega-start 0.5 --omega-end 3 --normal $d/J.mtx --normal-params $d/Q_kn0.txt
+echo "1.5 0.1 3 -1" >"$d/Q_bad.txt"
+expect_usage_error "^fricreg-sim: --normal-params $d/Q_bad.txt: .*kn" $hbs --omega-start 1 --omega-end 2 --normal $d/J.mtx --normal-params $d/Q_bad.txt
+expect_usage_error "^fricreg-sim: --iwan-params $d/P1.txt: line 1: 1 numbers: give pairs" $hbs --omega-start 1 --omega-end 2 --iwan-params $d/P1.txt
+expect_usage_error "^fricreg-sim: --jenkins: missing (a file is required)" hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --omega-start 1 --omega-end 2
 
 # ---- hold, belt, disk: the reference problems beyond the paper (src/problems/, the code the
 # benchmarks run; docs/laws2d.md). Values against the bench and tests/test_hold.c.

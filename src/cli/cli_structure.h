@@ -5,12 +5,13 @@
 #define FRICREG_CLI_STRUCTURE_H
 
 #include "cli.h"
+#include "jenkins_input.h"
 
 enum scheme { SCHEME_NONE, SCHEME_NEWMARK, SCHEME_HHT, SCHEME_CENTRAL, SCHEME_GSL };
 
 struct structure_options {
-    const char *mass, *stiffness, *damping, *contacts, *mun, *influence, *ground, *jenkins,
-        *jenkins_params;
+    const char *mass, *stiffness, *damping, *contacts, *mun, *influence, *ground;
+    struct cli_element_files elements; /* --jenkins with its parameters (jenkins_input.h) */
     int rayleigh_given, alpha_given, law, integrator;
     enum scheme scheme;
     double a0, a1, eps, alpha, dt, t_end, rtol, atol;

@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* hb.c — `fricreg-sim hb`: the frequency response of a linear structure with Jenkins elements
- * by harmonic balance (fricreg_hb.h) from Matrix Market files, continued in the excitation
- * frequency from --omega-start to --omega-end; a JSON summary (per dof the peak RMS and its
- * frequency) or a CSV row per continuation point on stdout. Every bad option or file is one
- * line on stderr naming it, exit 2, nothing on stdout; a continuation that fails, exit 1. */
+/* hb.c — `fricreg-sim hb`: the frequency response of a linear structure with Jenkins, Iwan or
+ * lift-off elements (jenkins_input.h) by harmonic balance (fricreg_hb.h) from Matrix Market
+ * files, continued in the excitation frequency from --omega-start to --omega-end; a JSON
+ * summary (per dof the peak RMS and its frequency) or a CSV row per continuation point on
+ * stdout. Every bad option or file is one line on stderr naming it, exit 2, nothing on stdout;
+ * a continuation that fails, exit 1. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -20,25 +21,27 @@ enum { HB_SUMMARY, HB_FRF };
 static const struct cli_word hb_outputs[] = {{"summary", HB_SUMMARY}, {"frf", HB_FRF}, {NULL, 0}};
 
 struct hb_options {
-    const char *mass, *stiffness, *damping, *excitation, *jenkins, *params;
+    const char *mass, *stiffness, *damping, *excitation;
+    struct cli_element_files elements; /* --jenkins with its parameters (jenkins_input.h) */
     int rayleigh_given, harmonics, output, omega_start_given, omega_end_given, newton_max;
     double a0, a1, omega_start, omega_end, newton_tol;
 };
 
 /* The model: M, K, C (C.colptr NULL: Rayleigh or none) n x n as the files' compressed
- * columns, passed sparse to the driver (its _csc setters: nothing densified); J m x n dense
- * row-major (m <= 256 rows), the excitation pc[n], ps[n], the elements' kt[m], mun[m]. */
+ * columns, passed sparse to the driver (its _csc setters: nothing densified); the elements
+ * (their rows dense, m <= 256), the excitation pc[n], ps[n]. */
 struct hb_model {
     size_t n, m;
     struct cli_sparse M, K, C;
-    double *J, *pc, *ps, *kt, *mun;
+    struct cli_elements el;
+    double *pc, *ps;
 };
 
 static void free_model(struct hb_model *md)
 {
-    void *blocks[] = {md->J, md->pc, md->ps, md->kt, md->mun};
-    for (size_t k = 0; k < sizeof blocks / sizeof *blocks; k++)
-        free(blocks[k]);
+    cli_free_elements(&md->el);
+    free(md->pc);
+    free(md->ps);
     cli_sparse_free(&md->M);
     cli_sparse_free(&md->K);
     cli_sparse_free(&md->C);
@@ -53,12 +56,14 @@ static int parse_rayleigh(const struct cli_option *row, const char *text)
 
 static int check_options(const struct hb_options *o)
 {
-    static const char *const required[] = {"--mass", "--stiffness", "--excitation", "--jenkins",
-                                           "--jenkins-params"};
-    const char *given[] = {o->mass, o->stiffness, o->excitation, o->jenkins, o->params};
-    for (size_t k = 0; k < 5; k++)
+    static const char *const required[] = {"--mass", "--stiffness", "--excitation"};
+    const char *given[] = {o->mass, o->stiffness, o->excitation};
+    for (size_t k = 0; k < 3; k++)
         if (given[k] == NULL)
             return cli_usage_error(required[k], "missing (a file is required)");
+    int status = cli_check_elements(&o->elements, 1);
+    if (status != 0)
+        return status;
     if (!o->omega_start_given)
         return cli_usage_error("--omega-start", "missing");
     if (!o->omega_end_given)
@@ -77,13 +82,13 @@ static int parse_hb(int argc, char **argv, struct hb_options *o)
                              .output = HB_SUMMARY,
                              .newton_tol = 1e-10,
                              .newton_max = 50};
+    cli_element_defaults(&o->elements);
     const struct cli_option opts[] = {
         {"--mass", CLI_FILE, .slot = &o->mass},
         {"--stiffness", CLI_FILE, .slot = &o->stiffness},
         {"--damping", CLI_FILE, .slot = &o->damping},
         {"--excitation", CLI_FILE, .slot = &o->excitation},
-        {"--jenkins", CLI_FILE, .slot = &o->jenkins},
-        {"--jenkins-params", CLI_FILE, .slot = &o->params},
+        CLI_ELEMENT_OPTIONS(&o->elements),
         {"--rayleigh", CLI_CUSTOM, .slot = o, .parse = parse_rayleigh, .given = &o->rayleigh_given},
         {"--harmonics", CLI_WHOLE, .slot = &o->harmonics, .lo = 1, .hi = FRICREG_HB_MAX_HARMONICS},
         {"--omega-start", CLI_POSITIVE, .slot = &o->omega_start, .given = &o->omega_start_given},
@@ -107,7 +112,8 @@ static int read_model(const struct hb_options *o, struct hb_model *md)
     if (status == 0 && o->damping != NULL)
         status = cli_read_mtx("--damping", o->damping, n, n, &md->C);
     if (status == 0)
-        status = cli_read_jenkins(o->jenkins, o->params, n, &m, &md->J, &md->kt, &md->mun);
+        status = cli_read_elements(&o->elements, n, &md->el);
+    m = md->el.m;
     md->n = n;
     md->m = m;
     if (status == 0)
@@ -128,6 +134,17 @@ static int sparse_flags(const struct cli_sparse *A)
     return A->lower ? FRICREG_SPARSE_LOWER : 0;
 }
 
+/* The elements by their kind's setter: a status. */
+static int set_elements(fricreg_hb *hb, size_t n, const struct cli_elements *el)
+{
+    if (el->kind == CLI_ELEMENTS_NORMAL)
+        return fricreg_hb_set_normal_elements(hb, el->m, n, el->J, el->Jn, el->k, el->mu, el->n0,
+                                              el->kn);
+    if (el->kind == CLI_ELEMENTS_IWAN)
+        return fricreg_hb_set_iwan(hb, el->m, n, el->J, el->ns, el->k, el->phi);
+    return fricreg_hb_set_elements(hb, el->m, n, el->J, el->k, el->phi);
+}
+
 static int set_model(const struct hb_options *o, const struct hb_model *md, fricreg_hb *hb)
 {
     size_t n = md->n;
@@ -143,8 +160,8 @@ static int set_model(const struct hb_options *o, const struct hb_model *md, fric
         return refused(hb, "--damping", o->damping);
     if (o->rayleigh_given && fricreg_hb_set_rayleigh(hb, o->a0, o->a1) != FRICREG_OK)
         return cli_usage_error("--rayleigh", fricreg_hb_errmsg(hb));
-    if (fricreg_hb_set_elements(hb, md->m, n, md->J, md->kt, md->mun) != FRICREG_OK)
-        return refused(hb, "--jenkins-params", o->params);
+    if (set_elements(hb, n, &md->el) != FRICREG_OK)
+        return refused(hb, md->el.option, md->el.path);
     if (fricreg_hb_set_newton(hb, o->newton_tol, o->newton_max) != FRICREG_OK)
         return cli_usage_error("--newton-tol", fricreg_hb_errmsg(hb));
     if (fricreg_hb_set_excitation(hb, n, md->pc, md->ps) != FRICREG_OK)
@@ -189,6 +206,9 @@ static void write_summary(FILE *out, const struct hb_options *o, const struct hb
             "{\"command\": \"hb\", \"ndof\": %zu, \"elements\": %zu, \"harmonics\": %d, "
             "\"omega_start\": %.17g, \"omega_end\": %.17g, \"points\": %zu",
             n, md->m, o->harmonics, o->omega_start, o->omega_end, K);
+    fprintf(out, ", \"element_kind\": \"%s\"", cli_element_kind_name(&md->el));
+    if (md->el.kind == CLI_ELEMENTS_IWAN)
+        fprintf(out, ", \"sliders_per_element\": %zu", md->el.ns);
     fprintf(out, ", \"omega_reached\": %.17g, \"dofs\": [", K > 0 ? omega[K - 1] : o->omega_start);
     for (size_t i = 0; i < n; i++) {
         size_t best = 0;
@@ -205,7 +225,9 @@ static void write_summary(FILE *out, const struct hb_options *o, const struct hb
 static int run_hb(fricreg_hb *hb, const struct hb_options *o, const struct hb_model *md, FILE *out)
 {
     clock_t start = clock();
-    size_t nq = md->m * (2 * (size_t)o->harmonics + 1);
+    /* lift-off elements: tangential and normal coefficients, 2 m rows */
+    size_t rows = md->el.kind == CLI_ELEMENTS_NORMAL ? 2 * md->m : md->m;
+    size_t nq = rows * (2 * (size_t)o->harmonics + 1);
     int status = fricreg_hb_continue(hb, o->omega_start, o->omega_end, nq, NULL);
     double cpu = (double)(clock() - start) / CLOCKS_PER_SEC;
     if (status != FRICREG_OK) {

@@ -1,13 +1,74 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* jenkins_input.c — the Jenkins elements' files that `fricreg-sim hb` and `fricreg-sim
- * structure` share (jenkins_input.h). */
+/* jenkins_input.c — the joint elements' files that `fricreg-sim hb` and `fricreg-sim
+ * structure` share (jenkins_input.h): Jenkins, Iwan (the caller's sliders or Segalman's
+ * model) and lift-off elements. */
+#include <errno.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "cli.h"
 #include "cli_input.h"
+#include "fricreg_iwan.h"
 #include "input_line.h"
 #include "jenkins_input.h"
 #include "matrix_market.h"
+
+/* An --iwan-params line holds 2 ns numbers: 1024 sliders (fricreg_hb's limit) written to 17
+ * digits fit. */
+#define SLIDER_LINE_MAX 65536
+
+void cli_element_defaults(struct cli_element_files *e)
+{
+    *e = (struct cli_element_files){.sliders = 50, .resolution = 1e-6};
+}
+
+int cli_check_elements(const struct cli_element_files *e, int required)
+{
+    const char *params[] = {e->jenkins, e->iwan, e->segalman, e->normal_params};
+    static const char *const names[] = {"--jenkins-params", "--iwan-params", "--iwan-segalman",
+                                        "--normal-params"};
+    size_t given = 0, last = 0;
+    for (size_t k = 0; k < 4; k++)
+        if (params[k] != NULL) {
+            given++;
+            last = k;
+        }
+    if (given > 1)
+        return cli_usage_error(names[last], "give only one of --jenkins-params, --iwan-params, "
+                                            "--iwan-segalman or --normal-params");
+    if (e->rows == NULL && (required || given > 0 || e->normal != NULL))
+        return cli_usage_error("--jenkins", given > 0 || e->normal != NULL
+                                                ? "missing (the elements' rows go with their "
+                                                  "parameters)"
+                                                : "missing (a file is required)");
+    if (e->rows != NULL && given == 0 && e->normal == NULL)
+        return cli_usage_error("--jenkins-params",
+                               "missing (--jenkins goes with --jenkins-params, --iwan-params, "
+                               "--iwan-segalman or --normal with --normal-params)");
+    if ((e->normal == NULL) != (e->normal_params == NULL))
+        return cli_usage_error(e->normal == NULL ? "--normal" : "--normal-params",
+                               "missing (--normal and --normal-params go together)");
+    if ((e->sliders_given || e->resolution_given) && e->segalman == NULL)
+        return cli_usage_error(e->sliders_given ? "--iwan-sliders" : "--iwan-resolution",
+                               "only with --iwan-segalman");
+    if (!(e->resolution < 1.0))
+        return cli_usage_error("--iwan-resolution", "must be < 1 (a fraction of phi_max)");
+    return 0;
+}
+
+const char *cli_element_kind_name(const struct cli_elements *el)
+{
+    static const char *const names[] = {"jenkins", "iwan", "lift-off"};
+    return names[el->kind];
+}
+
+void cli_free_elements(struct cli_elements *el)
+{
+    void *blocks[] = {el->J, el->Jn, el->k, el->phi, el->mu, el->n0, el->kn};
+    for (size_t k = 0; k < sizeof blocks / sizeof *blocks; k++)
+        free(blocks[k]);
+    memset(el, 0, sizeof *el);
+}
 
 /* The rows x cols matrix of option's file (J), dense row-major into *out (a symmetric file's
  * lower triangle mirrored). */
@@ -37,40 +98,200 @@ static int read_dense(const char *option, const char *path, size_t rows, size_t 
     return 0;
 }
 
-/* Two columns per row, one row per entity (dof or element): into a[rows], b[rows]. */
+/* Columns per row, one row per entity (dof or element): into v[rows * ncols]. */
+static int read_rows(const char *option, const char *path, size_t rows, size_t ncols,
+                     const char *what, double **v)
+{
+    size_t got = 0;
+    int status = cli_read_columns(option, path, ncols, &got, v);
+    if (status == 0 && got != rows) {
+        free(*v);
+        *v = NULL;
+        status = cli_file_error(option, path, 0, "%zu lines, the model has %zu %s", got, rows,
+                                what);
+    }
+    return status;
+}
+
+/* Column c of v[rows * ncols] into a new array *out. */
+static int column(const double *v, size_t rows, size_t ncols, size_t c, double **out)
+{
+    *out = malloc((rows > 0 ? rows : 1) * sizeof **out);
+    if (*out == NULL)
+        return 0;
+    for (size_t i = 0; i < rows; i++)
+        (*out)[i] = v[i * ncols + c];
+    return 1;
+}
+
 int cli_read_pairs(const char *option, const char *path, size_t rows, const char *what, double **a,
                    double **b)
 {
-    size_t got = 0;
     double *values = NULL;
-    int status = cli_read_columns(option, path, 2, &got, &values);
-    if (status != 0)
-        return status;
-    if (got != rows) {
-        free(values);
-        return cli_file_error(option, path, 0, "%zu lines, the model has %zu %s", got, rows, what);
-    }
-    *a = malloc(rows * sizeof **a);
-    *b = malloc(rows * sizeof **b);
-    if (*a == NULL || *b == NULL) {
-        free(values);
-        return cli_file_error(option, path, 0, "out of memory");
-    }
-    for (size_t k = 0; k < rows; k++) {
-        (*a)[k] = values[2 * k];
-        (*b)[k] = values[2 * k + 1];
-    }
+    int status = read_rows(option, path, rows, 2, what, &values);
+    if (status == 0 && !(column(values, rows, 2, 0, a) && column(values, rows, 2, 1, b)))
+        status = cli_file_error(option, path, 0, "out of memory");
     free(values);
+    return status;
+}
+
+/* The numbers of one line into v[*count] (room for cap): 0, or CLI_EXIT_USAGE after the
+ * line's message. */
+static int line_numbers(const char *option, const char *path, long line, char *p, double *v,
+                        size_t cap, size_t *count)
+{
+    char *end;
+    *count = 0;
+    for (p += strspn(p, " \t,"); !cli_blank(p); p = end + strspn(end, " \t,")) {
+        if (*count == cap)
+            return cli_file_error(option, path, line, "more than %zu numbers", cap);
+        if (!cli_read_number(p, &end, &v[(*count)++]))
+            return cli_file_error(option, path, line, "number %zu is not a finite number", *count);
+    }
     return 0;
 }
 
-int cli_read_jenkins(const char *jenkins, const char *params, size_t n, size_t *m, double **J,
-                     double **kt, double **mun)
+/* --iwan-params: m lines of k_1 phi_1 ... k_ns phi_ns, the same ns on each, into k[m ns] and
+ * phi[m ns]. */
+static int read_sliders(const char *path, size_t m, size_t *ns, double **k, double **phi)
 {
-    size_t cols = 0;
-    int status = read_dense("--jenkins", jenkins, 0, n, m, &cols, J);
-    if (status == 0)
-        status = cli_read_pairs("--jenkins-params", params, *m, "elements (rows of --jenkins)", kt,
-                                mun);
+    static const char option[] = "--iwan-params";
+    FILE *f = fopen(path, "r");
+    if (f == NULL)
+        return cli_file_error(option, path, 0, "cannot open: %s", strerror(errno));
+    const size_t cap = SLIDER_LINE_MAX / 2;
+    char *buf = malloc(SLIDER_LINE_MAX);
+    double *v = malloc(cap * sizeof *v);
+    long line = 0, first = 0;
+    int too_long = 0, status = 0;
+    size_t rows = 0, width = 0;
+    if (buf == NULL || v == NULL)
+        status = cli_file_error(option, path, 0, "out of memory");
+    while (status == 0 && cli_next_line(f, buf, SLIDER_LINE_MAX, &line, &too_long)) {
+        if (buf[0] == '#' || buf[0] == '%' || cli_blank(buf))
+            continue;
+        size_t count = 0;
+        if ((status = line_numbers(option, path, line, buf, v, cap, &count)) != 0)
+            break;
+        if (count % 2 != 0)
+            status = cli_file_error(option, path, line,
+                                    "%zu numbers: give pairs k_s phi_s, one per slider", count);
+        else if (rows == m)
+            status = cli_file_error(option, path, line,
+                                    "more lines than the %zu elements (rows of --jenkins)", m);
+        else if (rows > 0 && count != 2 * width)
+            status = cli_file_error(option, path, line,
+                                    "%zu sliders, line %ld has %zu: every element needs the same "
+                                    "number of sliders (give a slider phi = 0 to drop it)",
+                                    count / 2, first, width);
+        else {
+            if (rows == 0) {
+                width = count / 2;
+                first = line;
+                *k = malloc(m * width * sizeof **k);
+                *phi = malloc(m * width * sizeof **phi);
+                if (*k == NULL || *phi == NULL)
+                    status = cli_file_error(option, path, line, "out of memory");
+            }
+            for (size_t s = 0; status == 0 && s < width; s++) {
+                (*k)[rows * width + s] = v[2 * s];
+                (*phi)[rows * width + s] = v[2 * s + 1];
+            }
+            rows++;
+        }
+    }
+    fclose(f);
+    free(buf);
+    free(v);
+    if (status == 0 && too_long)
+        status = cli_file_error(option, path, line, "line too long (%d characters at most)",
+                                SLIDER_LINE_MAX - 2);
+    if (status == 0 && rows != m)
+        status = cli_file_error(option, path, 0,
+                                "%zu lines, the model has %zu elements (rows of --jenkins)", rows,
+                                m);
+    *ns = width;
     return status;
+}
+
+/* --iwan-segalman: m lines F_S K_T chi beta, discretized into e->sliders sliders each by
+ * fricreg_iwan_set_segalman. */
+static int read_segalman(const struct cli_element_files *e, struct cli_elements *el)
+{
+    const char *option = "--iwan-segalman";
+    size_t m = el->m, ns = (size_t)e->sliders;
+    double *v = NULL, *fs = NULL, *kt = NULL, *chi = NULL, *beta = NULL;
+    int status = read_rows(option, e->segalman, m, 4, "elements (rows of --jenkins)", &v);
+    if (status != 0)
+        return status;
+    fricreg_iwan *iw = NULL;
+    el->k = malloc(m * ns * sizeof *el->k);
+    el->phi = malloc(m * ns * sizeof *el->phi);
+    if (el->k == NULL || el->phi == NULL || !column(v, m, 4, 0, &fs) || !column(v, m, 4, 1, &kt) ||
+        !column(v, m, 4, 2, &chi) || !column(v, m, 4, 3, &beta) ||
+        fricreg_iwan_create(1, m, ns, &iw) != FRICREG_OK)
+        status = cli_file_error(option, e->segalman, 0, "out of memory");
+    else if (fricreg_iwan_set_segalman(iw, m, fs, kt, chi, beta, e->resolution) != FRICREG_OK)
+        status = cli_file_error(option, e->segalman, 0, "%s", fricreg_iwan_errmsg(iw));
+    else
+        fricreg_iwan_get_params(iw, m, ns, el->k, el->phi);
+    el->ns = ns;
+    fricreg_iwan_free(iw);
+    free(v);
+    free(fs);
+    free(kt);
+    free(chi);
+    free(beta);
+    return status;
+}
+
+/* --normal and --normal-params: the normal rows and m lines kt mu n0 kn. */
+static int read_normal(const struct cli_element_files *e, size_t n, struct cli_elements *el)
+{
+    size_t m = el->m, rows = 0, cols = 0;
+    double *v = NULL;
+    int status = read_dense("--normal", e->normal, m, n, &rows, &cols, &el->Jn);
+    if (status == 0)
+        status = read_rows("--normal-params", e->normal_params, m, 4,
+                           "elements (rows of --jenkins)", &v);
+    if (status == 0 && !(column(v, m, 4, 0, &el->k) && column(v, m, 4, 1, &el->mu) &&
+                         column(v, m, 4, 2, &el->n0) && column(v, m, 4, 3, &el->kn)))
+        status = cli_file_error("--normal-params", e->normal_params, 0, "out of memory");
+    el->ns = 1;
+    free(v);
+    return status;
+}
+
+int cli_read_elements(const struct cli_element_files *e, size_t n, struct cli_elements *el)
+{
+    if (e->rows == NULL)
+        return 0;
+    size_t cols = 0;
+    int status = read_dense("--jenkins", e->rows, 0, n, &el->m, &cols, &el->J);
+    if (status != 0)
+        return status;
+    el->ns = 1;
+    if (e->normal != NULL) {
+        el->kind = CLI_ELEMENTS_NORMAL;
+        el->option = "--normal-params";
+        el->path = e->normal_params;
+        return read_normal(e, n, el);
+    }
+    if (e->iwan != NULL) {
+        el->kind = CLI_ELEMENTS_IWAN;
+        el->option = "--iwan-params";
+        el->path = e->iwan;
+        return read_sliders(e->iwan, el->m, &el->ns, &el->k, &el->phi);
+    }
+    if (e->segalman != NULL) {
+        el->kind = CLI_ELEMENTS_IWAN;
+        el->option = "--iwan-segalman";
+        el->path = e->segalman;
+        return read_segalman(e, el);
+    }
+    el->kind = CLI_ELEMENTS_JENKINS;
+    el->option = "--jenkins-params";
+    el->path = e->jenkins;
+    return cli_read_pairs("--jenkins-params", e->jenkins, el->m, "elements (rows of --jenkins)",
+                          &el->k, &el->phi);
 }

@@ -1,21 +1,79 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* jenkins_input.h — the files of Jenkins elements, for `fricreg-sim hb` (hb.c) and
- * `fricreg-sim structure` (structure_model.c): --jenkins J.mtx (Matrix Market, m x n: element
- * i's q_i = (J x)_i) and --jenkins-params P.txt (one line per element: kt mun). */
+/* jenkins_input.h — the joint elements of `fricreg-sim hb` (hb.c) and `fricreg-sim structure`
+ * (structure_model.c), from their files: --jenkins J.mtx (Matrix Market, m x n: element i's
+ * q_i = (J x)_i) and one parameter file, a line per element:
+ *   --jenkins-params P.txt   kt mun                       (Jenkins elements)
+ *   --iwan-params P.txt      k_1 phi_1 ... k_ns phi_ns    (Iwan elements, ns sliders each)
+ *   --iwan-segalman S.txt    F_S K_T chi beta             (Iwan elements, Segalman's model
+ *                            discretized into --iwan-sliders NS at --iwan-resolution R)
+ *   --normal-params Q.txt    kt mu n0 kn                  (lift-off, with --normal Jn.mtx:
+ *                            element i's normal g_i = (Jn x)_i) */
 #ifndef FRICREG_CLI_JENKINS_INPUT_H
 #define FRICREG_CLI_JENKINS_INPUT_H
 
 #include <stddef.h>
+
+/* The element options as parsed (file options point into argv). */
+struct cli_element_files {
+    const char *rows;                      /* --jenkins */
+    const char *jenkins, *iwan, *segalman; /* the parameter files: one of these ... */
+    const char *normal, *normal_params;    /* ... or --normal with --normal-params */
+    int sliders, sliders_given;            /* --iwan-sliders (Segalman's discretization) */
+    double resolution;                     /* --iwan-resolution */
+    int resolution_given;
+};
+
+/* The element options' rows of a subcommand's option table (cli.h's struct cli_option), e
+ * a struct cli_element_files *. */
+/* (kept as written: clang-format would take the rows for one braced list) */
+/* clang-format off */
+#define CLI_ELEMENT_OPTIONS(e)                                                                \
+    {"--jenkins", CLI_FILE, .slot = &(e)->rows},                                             \
+    {"--jenkins-params", CLI_FILE, .slot = &(e)->jenkins},                                   \
+    {"--iwan-params", CLI_FILE, .slot = &(e)->iwan},                                         \
+    {"--iwan-segalman", CLI_FILE, .slot = &(e)->segalman},                                   \
+    {"--iwan-sliders", CLI_WHOLE, .slot = &(e)->sliders, .lo = 1, .hi = 1024,                \
+     .given = &(e)->sliders_given},                                                          \
+    {"--iwan-resolution", CLI_POSITIVE, .slot = &(e)->resolution,                            \
+     .given = &(e)->resolution_given},                                                       \
+    {"--normal", CLI_FILE, .slot = &(e)->normal},                                            \
+    {"--normal-params", CLI_FILE, .slot = &(e)->normal_params}
+/* clang-format on */
+
+/* The defaults: 50 sliders at resolution 1e-6 (docs/joints.md's rule for Segalman's model). */
+void cli_element_defaults(struct cli_element_files *e);
+
+/* Options that need or exclude others: --jenkins with exactly one parameter file (required:
+ * both must be given), --normal with --normal-params, --iwan-sliders and --iwan-resolution
+ * with --iwan-segalman only. 0, or CLI_EXIT_USAGE after one line naming the option. */
+int cli_check_elements(const struct cli_element_files *e, int required);
+
+enum cli_element_kind { CLI_ELEMENTS_JENKINS, CLI_ELEMENTS_IWAN, CLI_ELEMENTS_NORMAL };
+
+/* The elements as read: m elements on the rows of J (m x n, dense row-major); ns sliders each
+ * (1 but for Iwan elements) of stiffness k[m ns] and slip force phi[m ns] (row-major, element
+ * i's slider s at [i ns + s]; Jenkins elements: kt, mun); lift-off: kt in k, mu[m], n0[m],
+ * kn[m] and the normal rows Jn (m x n). option and path name the parameter file. */
+struct cli_elements {
+    enum cli_element_kind kind;
+    size_t m, ns;
+    double *J, *Jn, *k, *phi, *mu, *n0, *kn;
+    const char *option, *path;
+};
+
+/* Reads the files e names for n degrees of freedom into el, which must be zeroed (nothing read
+ * without --jenkins: m = 0). 0, or CLI_EXIT_USAGE after one line on stderr naming the option,
+ * the file and the line; either way el is the caller's to free with cli_free_elements. */
+int cli_read_elements(const struct cli_element_files *e, size_t n, struct cli_elements *el);
+void cli_free_elements(struct cli_elements *el);
+
+/* "jenkins", "iwan" or "lift-off", the summaries' element_kind. */
+const char *cli_element_kind_name(const struct cli_elements *el);
 
 /* Two columns per row, one row per entity (rows of them: dofs or elements, named by what in
  * the message): into a[rows], b[rows], the caller's to free. 0, or CLI_EXIT_USAGE after one
  * line on stderr naming the option, the file and the line. */
 int cli_read_pairs(const char *option, const char *path, size_t rows, const char *what, double **a,
                    double **b);
-
-/* The elements: J (m x n, dense row-major, m from the file) and kt[m], mun[m], into arrays the
- * caller frees (also on failure: those set). 0, or CLI_EXIT_USAGE as cli_read_pairs. */
-int cli_read_jenkins(const char *jenkins, const char *params, size_t n, size_t *m, double **J,
-                     double **kt, double **mun);
 
 #endif

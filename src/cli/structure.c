@@ -77,10 +77,10 @@ static int check_options(const struct structure_options *o)
         return cli_usage_error("--rayleigh", "give --damping or --rayleigh, not both");
     if (o->alpha_given && o->scheme != SCHEME_HHT)
         return cli_usage_error("--alpha", "only --integrator hht has alpha");
-    if ((o->jenkins == NULL) != (o->jenkins_params == NULL))
-        return cli_usage_error(o->jenkins == NULL ? "--jenkins" : "--jenkins-params",
-                               "missing (--jenkins and --jenkins-params go together)");
-    if (o->jenkins != NULL && o->scheme == SCHEME_GSL)
+    int status = cli_check_elements(&o->elements, 0);
+    if (status != 0)
+        return status;
+    if (o->elements.rows != NULL && o->scheme == SCHEME_GSL)
         return cli_usage_error("--jenkins",
                                "Jenkins elements are integrated by newmark, hht or central only");
     if ((o->rtol > 0.0 || o->atol > 0.0) && o->scheme != SCHEME_GSL)
@@ -98,6 +98,7 @@ int cli_parse_structure(int argc, char **argv, struct structure_options *o)
                                     .output = CLI_SUMMARY,
                                     .max_steps = -1,
                                     .error_estimate = 1};
+    cli_element_defaults(&o->elements);
     const struct cli_option opts[] = {
         {"--mass", CLI_FILE, .slot = &o->mass},
         {"--stiffness", CLI_FILE, .slot = &o->stiffness},
@@ -106,8 +107,7 @@ int cli_parse_structure(int argc, char **argv, struct structure_options *o)
         {"--mun", CLI_FILE, .slot = &o->mun},
         {"--influence", CLI_FILE, .slot = &o->influence},
         {"--ground-accel", CLI_FILE, .slot = &o->ground},
-        {"--jenkins", CLI_FILE, .slot = &o->jenkins},
-        {"--jenkins-params", CLI_FILE, .slot = &o->jenkins_params},
+        CLI_ELEMENT_OPTIONS(&o->elements),
         {"--rayleigh", CLI_CUSTOM, .slot = o, .parse = parse_rayleigh, .given = &o->rayleigh_given},
         {"--integrator", CLI_CUSTOM, .slot = o, .parse = parse_integrator},
         {"--law", CLI_NAME, .slot = &o->law, .names = &cli_law_names},
@@ -318,11 +318,19 @@ static void write_summary(FILE *out, const struct structure_options *o,
     json_array(out, "dissipation_per_contact", in->m, D);
     if (est->D_err != NULL)
         json_array(out, "dissipation_per_contact_error_estimate", in->m, est->D_err);
-    if (in->me > 0) {
-        fprintf(out, ", \"njenkins\": %zu", in->me);
-        fricreg_structure_get_jenkins_state(s, in->me, NULL, NULL, run->De);
-        json_array(out, "dissipation_per_jenkins", in->me, run->De);
-        fprintf(out, ", \"jenkins_dissipation\": %.17g", svalue(s, FRICREG_SVALUE_JENKINS));
+    const struct cli_elements *el = &in->el;
+    if (el->m > 0) {
+        fprintf(out, ", \"njenkins\": %zu", el->m);
+        fricreg_structure_get_jenkins_state(s, el->m, NULL, NULL, run->De);
+        json_array(out, "dissipation_per_jenkins", el->m, run->De);
+        fprintf(out, ", \"jenkins_dissipation\": %.17g, \"element_kind\": \"%s\"",
+                svalue(s, FRICREG_SVALUE_JENKINS), cli_element_kind_name(el));
+        if (el->kind == CLI_ELEMENTS_IWAN)
+            fprintf(out, ", \"sliders_per_element\": %zu", el->ns);
+        if (el->kind == CLI_ELEMENTS_NORMAL) {
+            fricreg_structure_get_normal_forces(s, el->m, run->De);
+            json_array(out, "normal_forces", el->m, run->De);
+        }
     }
     fprintf(out,
             ", \"energy_balance\": {\"initial\": %.17g, \"input\": %.17g, "
@@ -330,7 +338,7 @@ static void write_summary(FILE *out, const struct structure_options *o,
             svalue(s, FRICREG_SVALUE_INITIAL), svalue(s, FRICREG_SVALUE_INPUT),
             svalue(s, FRICREG_SVALUE_KINETIC), svalue(s, FRICREG_SVALUE_STRAIN),
             svalue(s, FRICREG_SVALUE_VISCOUS), svalue(s, FRICREG_SVALUE_FRICTION));
-    if (in->me > 0)
+    if (el->m > 0)
         fprintf(out, "\"jenkins\": %.17g, ", svalue(s, FRICREG_SVALUE_JENKINS));
     fprintf(out, "\"residual\": %.17g}", svalue(s, FRICREG_SVALUE_RESIDUAL));
     int64_t iterations = sstat(s, FRICREG_SSTAT_NEWTON_ITERATIONS);
@@ -449,14 +457,14 @@ static int run_structure(fricreg_structure *s, const struct structure_options *o
                          fricreg_structure *companion, const struct structure_options *oc)
 {
     struct structure_run run = {0};
-    double *buf = calloc(3 * in->n + in->m + in->me, sizeof *buf);
+    double *buf = calloc(3 * in->n + in->m + in->el.m, sizeof *buf);
     if (buf == NULL)
         return cli_usage_error("structure", "out of memory");
     run.u = buf;
     run.v = buf + in->n;
     run.peak = buf + 2 * in->n;
     run.f = buf + 3 * in->n;
-    run.De = in->me > 0 ? buf + 3 * in->n + in->m : NULL;
+    run.De = in->el.m > 0 ? buf + 3 * in->n + in->m : NULL;
     if (o->output == CLI_TRAJECTORY) {
         if ((run.rows = tmpfile()) == NULL) {
             free(buf);

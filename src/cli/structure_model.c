@@ -28,9 +28,7 @@ void cli_free_model(struct structure_input *in)
     free(in->mun);
     free(in->r);
     free(in->ag);
-    free(in->Je);
-    free(in->kt);
-    free(in->mun_e);
+    cli_free_elements(&in->el);
 }
 
 /* --influence: an n x 1 file as the vector r[n]. */
@@ -84,9 +82,8 @@ int cli_read_model(const struct structure_options *o, struct structure_input *in
     if (status == 0 && o->ground != NULL)
         status = cli_read_record("--ground-accel", o->ground, &in->t0, &in->dt_rec, &in->nrec,
                                  &in->ag);
-    if (status == 0 && o->jenkins != NULL)
-        status = cli_read_jenkins(o->jenkins, o->jenkins_params, in->n, &in->me, &in->Je, &in->kt,
-                                  &in->mun_e);
+    if (status == 0)
+        status = cli_read_elements(&o->elements, in->n, &in->el);
     return status;
 }
 
@@ -245,13 +242,21 @@ static int set_influence(fricreg_structure *s, const struct structure_options *o
                                 : cli_usage_error("--ground-accel", fricreg_structure_errmsg(s));
 }
 
-/* The elements (beside the contacts, whatever their bounds: one step solves both). */
-static int set_jenkins(fricreg_structure *s, const struct structure_options *o,
-                       const struct structure_input *in)
+/* The elements (beside the contacts, whatever their bounds: one step solves both); what the
+ * library refuses in them, named by their parameter file. */
+static int set_elements(fricreg_structure *s, const struct structure_input *in)
 {
-    if (fricreg_structure_set_jenkins(s, in->me, in->n, in->Je, in->kt, in->mun_e) != FRICREG_OK)
-        return cli_file_error("--jenkins-params", o->jenkins_params, 0, "%s",
-                              fricreg_structure_errmsg(s));
+    const struct cli_elements *el = &in->el;
+    int status;
+    if (el->kind == CLI_ELEMENTS_NORMAL)
+        status = fricreg_structure_set_jenkins_normal(s, el->m, in->n, el->J, el->Jn, el->k, el->mu,
+                                                      el->n0, el->kn);
+    else if (el->kind == CLI_ELEMENTS_IWAN)
+        status = fricreg_structure_set_iwan(s, el->m, in->n, el->J, el->ns, el->k, el->phi);
+    else
+        status = fricreg_structure_set_jenkins(s, el->m, in->n, el->J, el->k, el->phi);
+    if (status != FRICREG_OK)
+        return cli_file_error(el->option, el->path, 0, "%s", fricreg_structure_errmsg(s));
     return 0;
 }
 
@@ -278,7 +283,7 @@ int cli_set_model(const struct structure_options *o, const struct structure_inpu
     if (status == 0 && in->ag != NULL &&
         fricreg_structure_set_ground_accel(s, in->t0, in->dt_rec, in->nrec, in->ag) != 0)
         status = model_error(s, FRICREG_EINVAL, "--ground-accel", o->ground, NULL);
-    if (status == 0 && in->me > 0)
-        status = set_jenkins(s, o, in);
+    if (status == 0 && in->el.m > 0)
+        status = set_elements(s, in);
     return status;
 }

@@ -9,11 +9,12 @@
 #include "matrix_market.h"
 
 /* The model as read: M, K, C (no columns: Rayleigh or none) n x n and J m x n in compressed
- * sparse columns (Jenkins elements' J_e dense, as --jenkins of fricreg-sim hb); the influence r[n] (NULL: not given), the bounds mun[m] and the ground
+ * sparse columns; the joint elements (jenkins_input.h, their rows dense as for fricreg-sim
+ * hb; el.m = 0: none); the influence r[n] (NULL: not given), the bounds mun[m] and the ground
  * record ag[nrec] (NULL: none) from t0 every dt_rec. */
 struct structure_input {
-    size_t n, m, nrec, me;
-    double *Je, *kt, *mun_e; /* the Jenkins elements (me = 0: none): J_e me x n dense, row-major */
+    size_t n, m, nrec;
+    struct cli_elements el;
     struct cli_sparse M, K, C, J;
     double *mun, *r, *ag;
     double t0, dt_rec;
