@@ -2386,22 +2386,32 @@ START_TEST(test_structure_steps_do_not_allocate)
 }
 END_TEST
 
+/* A structure set up by call's eight setters (one of the element scenarios) under scheme,
+ * stepped once so that its first step's storage (E, the joint step's) exists; then a run of
+ * 499 steps that must make no allocation. */
+static fricreg_structure *run_without_allocation(int (*call)(void *, int, struct view *),
+                                                 int scheme)
+{
+    fricreg_structure *s = NULL;
+    ck_assert_int_eq(fricreg_structure_create(3, 2, &s), FRICREG_OK);
+    current_scheme = scheme;
+    for (int i = 0; i < 8; i++)
+        ck_assert_int_eq(call(s, i, NULL), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_step(s, 0.001), FRICREG_OK);
+    hook_arm(1);
+    int status = fricreg_structure_run(s, 0.001, 0.5);
+    hook_disarm();
+    ck_assert_int_eq(status, FRICREG_OK);
+    ck_assert_msg(n_allocs == 0, "scheme %d: 499 steps made %ld allocations", scheme, n_allocs);
+    return s;
+}
+
 /* The same with Jenkins elements: their Newton (GSL's pivoted QR on arrays of the setter) and
  * their explicit evaluation make no allocation either. */
 START_TEST(test_structure_jenkins_steps_do_not_allocate)
 {
     for (int scheme = SCHEME_NEWMARK; scheme <= SCHEME_CENTRAL; scheme++) {
-        fricreg_structure *s = NULL;
-        ck_assert_int_eq(fricreg_structure_create(3, 2, &s), FRICREG_OK);
-        current_scheme = scheme;
-        for (int i = 0; i < 8; i++)
-            ck_assert_int_eq(structure_jenkins_call(s, i, NULL), FRICREG_OK);
-        ck_assert_int_eq(fricreg_structure_step(s, 0.001), FRICREG_OK); /* forms E */
-        hook_arm(1);
-        int status = fricreg_structure_run(s, 0.001, 0.5);
-        hook_disarm();
-        ck_assert_int_eq(status, FRICREG_OK);
-        ck_assert_msg(n_allocs == 0, "scheme %d: 499 steps made %ld allocations", scheme, n_allocs);
+        fricreg_structure *s = run_without_allocation(structure_jenkins_call, scheme);
         double D[2];
         ck_assert_int_eq(fricreg_structure_get_jenkins_state(s, 2, NULL, NULL, D), FRICREG_OK);
         ck_assert(D[0] > 0.0 || D[1] > 0.0); /* an element slipped: both pieces were solved */
@@ -2414,40 +2424,16 @@ END_TEST
  * the joint step's storage, the joint Newton makes no allocation. */
 START_TEST(test_structure_joint_steps_do_not_allocate)
 {
-    for (int scheme = SCHEME_NEWMARK; scheme <= SCHEME_HHT; scheme++) {
-        fricreg_structure *s = NULL;
-        ck_assert_int_eq(fricreg_structure_create(3, 2, &s), FRICREG_OK);
-        current_scheme = scheme;
-        for (int i = 0; i < 8; i++)
-            ck_assert_int_eq(structure_joint_call(s, i, NULL), FRICREG_OK);
-        ck_assert_int_eq(fricreg_structure_step(s, 0.001), FRICREG_OK); /* the joint storage */
-        hook_arm(1);
-        int status = fricreg_structure_run(s, 0.001, 0.5);
-        hook_disarm();
-        ck_assert_int_eq(status, FRICREG_OK);
-        ck_assert_msg(n_allocs == 0, "scheme %d: 499 steps made %ld allocations", scheme, n_allocs);
-        fricreg_structure_free(s);
-    }
+    for (int scheme = SCHEME_NEWMARK; scheme <= SCHEME_HHT; scheme++)
+        fricreg_structure_free(run_without_allocation(structure_joint_call, scheme));
 }
 END_TEST
 
 /* And with lift-off elements: the coupled Newton makes no allocation. */
 START_TEST(test_structure_normal_steps_do_not_allocate)
 {
-    for (int scheme = SCHEME_NEWMARK; scheme <= SCHEME_CENTRAL; scheme++) {
-        fricreg_structure *s = NULL;
-        ck_assert_int_eq(fricreg_structure_create(3, 2, &s), FRICREG_OK);
-        current_scheme = scheme;
-        for (int i = 0; i < 8; i++)
-            ck_assert_int_eq(structure_normal_call(s, i, NULL), FRICREG_OK);
-        ck_assert_int_eq(fricreg_structure_step(s, 0.001), FRICREG_OK); /* forms E */
-        hook_arm(1);
-        int status = fricreg_structure_run(s, 0.001, 0.5);
-        hook_disarm();
-        ck_assert_int_eq(status, FRICREG_OK);
-        ck_assert_msg(n_allocs == 0, "scheme %d: 499 steps made %ld allocations", scheme, n_allocs);
-        fricreg_structure_free(s);
-    }
+    for (int scheme = SCHEME_NEWMARK; scheme <= SCHEME_CENTRAL; scheme++)
+        fricreg_structure_free(run_without_allocation(structure_normal_call, scheme));
 }
 END_TEST
 
@@ -2455,17 +2441,7 @@ END_TEST
 START_TEST(test_structure_iwan_steps_do_not_allocate)
 {
     for (int scheme = SCHEME_NEWMARK; scheme <= SCHEME_CENTRAL; scheme++) {
-        fricreg_structure *s = NULL;
-        ck_assert_int_eq(fricreg_structure_create(3, 2, &s), FRICREG_OK);
-        current_scheme = scheme;
-        for (int i = 0; i < 8; i++)
-            ck_assert_int_eq(structure_iwan_call(s, i, NULL), FRICREG_OK);
-        ck_assert_int_eq(fricreg_structure_step(s, 0.001), FRICREG_OK); /* forms E */
-        hook_arm(1);
-        int status = fricreg_structure_run(s, 0.001, 0.5);
-        hook_disarm();
-        ck_assert_int_eq(status, FRICREG_OK);
-        ck_assert_msg(n_allocs == 0, "scheme %d: 499 steps made %ld allocations", scheme, n_allocs);
+        fricreg_structure *s = run_without_allocation(structure_iwan_call, scheme);
         double D[2];
         ck_assert_int_eq(fricreg_structure_get_iwan_state(s, 2, 3, NULL, NULL, D), FRICREG_OK);
         ck_assert(D[0] > 0.0 || D[1] > 0.0); /* a slider slipped */
