@@ -79,6 +79,8 @@ struct bench_sim_point {
                     * the levels cannot show one (2 levels) */
     int window;    /* extrapolated runs: > 0: the finer levels run only the last `window`
                     * cycles from level 0's state (fricreg_sim_run_extrapolated_window) */
+    int no_kink_location; /* adaptive runs: 1 turns the drivers' kink location off
+                           * (fricreg_sim_set_kink_location); 0: the library's default, on */
 };
 
 /** The forcing period of a problem, as the library reports it (FRICREG_VALUE_PERIOD): the one

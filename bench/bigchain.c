@@ -72,7 +72,7 @@ static int one_n(size_t n, FILE *csv)
      * RK4 at the guard's step, not extrapolated, and CVODE gets a shorter cap. */
     int big = n > 2000;
     struct bench_sim_point ref_pt = {
-        &p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt, 0.0, 0.0, 0, big ? 0 : 3, 0, 0};
+        &p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt, 0.0, 0.0, 0, big ? 0 : 3, 0, 0, 0};
     double t0 = bench_cpu_seconds();
     if (bench_sim_run(&ref_pt, &run) != FRICREG_OK) {
         fprintf(stderr, "fricreg-bench-bigchain: n = %zu: the reference failed: %s\n", n, run.msg);
@@ -100,7 +100,7 @@ static int one_n(size_t n, FILE *csv)
     }
     for (int k = 0; !big && k < 2; k++) {
         struct bench_sim_point pt = {
-            &p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt / (1 << k), 0.0, 0.0, 0, 0, 0, 0};
+            &p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt / (1 << k), 0.0, 0.0, 0, 0, 0, 0, 0};
         t0 = bench_cpu_seconds();
         bench_sim_run(&pt, &run);
         record(&rows[nr++], "rk4/quinn(4)", dt / (1 << k), t0, &run, ref);
@@ -137,7 +137,7 @@ static int one_n(size_t n, FILE *csv)
     for (int k = 0; k < 4; k++) {
         double h = cd_lib[k] / (double)n, eps_dt = 2.0 / (0.88 - cd_lib[k] * cd_lib[k]);
         struct bench_sim_point pt = {
-            &p, FRICREG_LAW_QUINN, FRICREG_INT_CENTRAL, h, 0.0, eps_dt * h, 0, 0, 0, 0};
+            &p, FRICREG_LAW_QUINN, FRICREG_INT_CENTRAL, h, 0.0, eps_dt * h, 0, 0, 0, 0, 0};
         t0 = bench_cpu_seconds();
         bench_sim_run(&pt, &run);
         record(&rows[nr++], "central/quinn(4)", h, t0, &run, ref);
@@ -152,7 +152,7 @@ static int one_n(size_t n, FILE *csv)
     for (int k = 0; k < 4; k++) {
         double h = imex_dts[k] / (double)n;
         struct bench_sim_point pt = {
-            &p, FRICREG_LAW_QUINN, FRICREG_INT_CENTRAL_IMEX, h, 0.0, 2.5 * h, 0, 0, 0, 0};
+            &p, FRICREG_LAW_QUINN, FRICREG_INT_CENTRAL_IMEX, h, 0.0, 2.5 * h, 0, 0, 0, 0, 0};
         t0 = bench_cpu_seconds();
         bench_sim_run(&pt, &run);
         record(&rows[nr++], "central-imex/quinn(4)", h, t0, &run, ref);
@@ -164,7 +164,7 @@ static int one_n(size_t n, FILE *csv)
     for (int k = 0; k < 3; k++) {
         if (big && rtols[k] != 1e-6)
             continue;
-        struct ed_point ep = {&p, ED_ADAMS, rtols[k], big ? big_cap() : CVODE_CAP};
+        struct ed_point ep = {&p, ED_ADAMS, rtols[k], big ? big_cap() : CVODE_CAP, 0.0};
         t0 = bench_cpu_seconds();
         ed_run(&ep, &run);
         record(&rows[nr++], "cvode-adams/event-driven", rtols[k], t0, &run, ref);

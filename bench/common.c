@@ -74,12 +74,15 @@ static int sim_setup(fricreg_sim *sim, const struct bench_sim_point *pt)
         s = fricreg_sim_set_partition(sim, pt->partition);
     if (s == FRICREG_OK)
         s = fricreg_sim_set_integrator(sim, pt->integrator, pt->dt, pt->rtol, pt->rtol);
+    if (s == FRICREG_OK && pt->no_kink_location)
+        s = fricreg_sim_set_kink_location(sim, 0);
     return s;
 }
 
 double bench_period(const struct bench_problem *p)
 {
-    struct bench_sim_point pt = {p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0.01, 0.0, 0.0, 0, 0, 0, 0};
+    struct bench_sim_point pt = {p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0.01, 0.0, 0.0, 0, 0, 0, 0,
+                                 0};
     double period = NAN;
     fricreg_sim *sim = NULL;
     if (fricreg_sim_create(p->system, &sim) == FRICREG_OK && sim_setup(sim, &pt) == FRICREG_OK)

@@ -242,7 +242,7 @@ int ed_run(const void *point, struct bench_run *out)
         flag |= CVodeSetErrHandlerFn(mem, quiet_handler, NULL);
 #endif
         flag |= CVodeSetUserData(mem, &s);
-        flag |= CVodeSStolerances(mem, pt->rtol, pt->rtol);
+        flag |= CVodeSStolerances(mem, pt->rtol, pt->atol > 0.0 ? pt->atol : pt->rtol);
         flag |= CVodeSetMaxNumSteps(mem, 100000000L);
         flag |= CVodeRootInit(mem, (int)s.n, roots);
         if (newton) { /* BDF with Newton and a dense difference-quotient Jacobian */

@@ -18,9 +18,10 @@ enum ed_method { ED_BDF = 1, ED_ADAMS = 2 };
 struct ed_point {
     const struct bench_problem *problem; /* problem->event_driven must be 1 */
     int method;                          /* enum ed_method */
-    double rtol;                         /* CVODE reltol; abstol = rtol */
+    double rtol;                         /* CVODE reltol */
     double cpu_cap; /* CPU seconds after which the run stops and fails, saying how far it
                      * got (checked at every event and cycle boundary); 0: no cap */
+    double atol;    /* CVODE abstol, the same for every component; 0: abstol = rtol */
 };
 
 /** bench_fn for a struct ed_point: D on problem->cycle, CVODE's steps, right-hand-side

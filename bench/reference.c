@@ -62,7 +62,7 @@ static int ladder_reference(const struct bench_problem *p, double dt0, int level
     for (int k = 0; k < levels && k < MAX_LEVELS; k++) {
         dt[k] = dt0 / (double)(1 << k);
         struct bench_sim_point pt = {
-            p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt[k], 0.0, 0.0, 0, 0, 0, 0};
+            p, FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt[k], 0.0, 0.0, 0, 0, 0, 0, 0};
         double t0 = bench_cpu_seconds();
         if (bench_sim_run(&pt, &run) != FRICREG_OK) {
             fprintf(log, "  dt = %g failed: %s\n", dt[k], run.msg);
@@ -115,7 +115,7 @@ static void event_driven_check(const struct bench_problem *p, const struct bench
         double rtol;
     } runs[] = {{ED_BDF, 1e-10}, {ED_ADAMS, 1e-10}, {ED_ADAMS, 1e-12}};
     for (size_t k = 0; k < sizeof runs / sizeof runs[0]; k++) {
-        struct ed_point pt = {p, runs[k].method, runs[k].rtol, 0.0};
+        struct ed_point pt = {p, runs[k].method, runs[k].rtol, 0.0, 0.0};
         struct bench_run run;
         double t0 = bench_cpu_seconds();
         if (ed_run(&pt, &run) != FRICREG_OK) {

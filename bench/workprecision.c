@@ -12,13 +12,18 @@
  *   orders.csv           observed convergence order of each law (fixed-step RK4)
  *   summary.csv          CPU time each method needs to reach 1% and 0.01% error
  *   best.csv             per problem and target 1e-2 … 1e-8: fricreg's cheapest method and the
- *                        CPU ratio of event-driven CVODE (Adams, BDF) to it
+ *                        CPU ratio of event-driven CVODE (Adams, BDF) to it, each CVODE
+ *                        method at its best: the cheapest of its configurations (rtol =
+ *                        atol = 1e-2 … 1e-12; on the chain also atol = 1e-2 rtol) that
+ *                        reaches the target, the same rule as fricreg's cheapest method
  *   wp_<problem>.dat     the points, one block per method, for gnuplot
  *   workprecision.gp     the gnuplot script: wp_<problem>.png and conv_<problem>.png
- * and prints the references, the tables and the summary. */
+ * and prints the references, the tables and the summary. With PROBLEM keys after OUTDIR
+ * (osc_stick, osc_slip, chain, twoblock) only those problems run. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "bench.h"
 #include "reference.h"
@@ -57,60 +62,98 @@ struct method {
     int partition; /* FRICREG_PARTITION_PAPER: coupled problems only; 0: the default */
     int levels;    /* >= 2: extrapolated in eps over that many levels (fricreg_sim.h) */
     enum eps_choice eps_choice;
+    int atol_scaled; /* EVENT: atol = ed_atol_scale * rtol (problems where that is not 1) */
+    int kinks_off;   /* ADAPTIVE: the drivers' kink location off (fricreg_sim_set_kink_location) */
 };
 
 static const struct method methods[] = {
-    {"rk4/quinn(4)", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0, 0, 0, EPS_PROBLEM},
-    {"rk4/coulomb(1)", FIXED, FRICREG_LAW_COULOMB, FRICREG_INT_RK4, 0, 0, 0, EPS_PROBLEM},
+    {"rk4/quinn(4)", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0, 0, 0, EPS_PROBLEM, 0, 0},
+    {"rk4/coulomb(1)", FIXED, FRICREG_LAW_COULOMB, FRICREG_INT_RK4, 0, 0, 0, EPS_PROBLEM, 0, 0},
     {"rk4/force-balance(2)", FIXED, FRICREG_LAW_FORCE_BALANCE, FRICREG_INT_RK4, 0, 0, 0,
-     EPS_PROBLEM},
-    {"rk4/karnopp", FIXED, FRICREG_LAW_KARNOPP, FRICREG_INT_RK4, 0, 0, 0, EPS_PROBLEM},
+     EPS_PROBLEM, 0, 0},
+    {"rk4/karnopp", FIXED, FRICREG_LAW_KARNOPP, FRICREG_INT_RK4, 0, 0, 0, EPS_PROBLEM, 0, 0},
     {"rk4/velocity-limited(3)", FIXED, FRICREG_LAW_VELOCITY_LIMITED, FRICREG_INT_RK4, 0, 0, 0,
-     EPS_PROBLEM},
-    {"rk4/tanh", FIXED, FRICREG_LAW_TANH, FRICREG_INT_RK4, 0, 0, 0, EPS_PROBLEM},
-    {"rkf45/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RKF45, 0, 0, 0, EPS_PROBLEM},
-    {"rk8pd/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 0, EPS_PROBLEM},
-    {"msbdf/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_MSBDF, 0, 0, 0, EPS_PROBLEM},
+     EPS_PROBLEM, 0, 0},
+    {"rk4/tanh", FIXED, FRICREG_LAW_TANH, FRICREG_INT_RK4, 0, 0, 0, EPS_PROBLEM, 0, 0},
+    {"rkf45/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RKF45, 0, 0, 0, EPS_PROBLEM, 0, 0},
+    {"rk8pd/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 0, EPS_PROBLEM, 0, 0},
+    {"msbdf/quinn(4)", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_MSBDF, 0, 0, 0, EPS_PROBLEM, 0, 0},
     /* The paper's partition of coupled contacts beside the default consistent law (the rows
      * above), where they differ: the two blocks. */
     {"rk4/quinn(4)/paper", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0, FRICREG_PARTITION_PAPER, 0,
-     EPS_PROBLEM},
+     EPS_PROBLEM, 0, 0},
     {"rkf45/quinn(4)/paper", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RKF45, 0,
-     FRICREG_PARTITION_PAPER, 0, EPS_PROBLEM},
+     FRICREG_PARTITION_PAPER, 0, EPS_PROBLEM, 0, 0},
     {"msbdf/quinn(4)/paper", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_MSBDF, 0,
-     FRICREG_PARTITION_PAPER, 0, EPS_PROBLEM},
+     FRICREG_PARTITION_PAPER, 0, EPS_PROBLEM, 0, 0},
     /* Extrapolation in eps (fricreg_sim_run_extrapolated): fixed RK4 under the paper's rule
      * (dt halves with eps), and adaptive steppers from extrap_eps (below) down. */
-    {"rk4/quinn(4)/extrap3", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0, 0, 3, EPS_PROBLEM},
-    {"rk8pd/quinn(4)/extrap3", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 3,
-     EPS_PROBLEM},
-    {"rk8pd/quinn(4)/extrap4", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 4,
-     EPS_PROBLEM},
-    {"msbdf/quinn(4)/extrap3", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_MSBDF, 0, 0, 3,
-     EPS_PROBLEM},
+    {"rk4/quinn(4)/extrap3", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0, 0, 3, EPS_PROBLEM, 0, 0},
+    {"rk8pd/quinn(4)/extrap3", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 3, EPS_PROBLEM,
+     0, 0},
+    {"rk8pd/quinn(4)/extrap4", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 4, EPS_PROBLEM,
+     0, 0},
+    {"msbdf/quinn(4)/extrap3", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_MSBDF, 0, 0, 3, EPS_PROBLEM,
+     0, 0},
     /* Two levels, the leading order declared from the motion (leading_order), and law (4) at
      * a tiny eps where the motion never sticks (tiny_eps): the cheap ways to 1e-5 … 1e-8. */
-    {"rk4/quinn(4)/extrap2", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0, 0, 2, EPS_DECLARED},
+    {"rk4/quinn(4)/extrap2", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0, 0, 2, EPS_DECLARED, 0,
+     0},
     {"rk8pd/quinn(4)/extrap2", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 2,
-     EPS_DECLARED},
-    {"rk8pd/quinn(4)/tiny-eps", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 0, EPS_TINY},
+     EPS_DECLARED, 0, 0},
+    {"rk8pd/quinn(4)/tiny-eps", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 0, EPS_TINY,
+     0, 0},
     /* extrap2 with the finer level over the last cycles only, from level 0's state there
      * (fricreg_sim_run_extrapolated_window): where the motion forgets its start fast. */
-    {"rk4/quinn(4)/extrap2-window", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0, 0, 2, EPS_WINDOW},
+    {"rk4/quinn(4)/extrap2-window", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_RK4, 0, 0, 2, EPS_WINDOW,
+     0, 0},
     {"rk8pd/quinn(4)/extrap2-window", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 2,
-     EPS_WINDOW},
+     EPS_WINDOW, 0, 0},
+    /* The adaptive methods that are the cheapest at some target, with the drivers' kink
+     * location off (fricreg_sim_set_kink_location(sim, 0)): each location costs 10-15 trial
+     * steps, and where the steps are short against the kinks' spacing anyway (law (4)'s zone
+     * held to tolerances well below eps) the error is as small without it, at 0.5-0.7x the
+     * CPU (osc_slip, rkf45: 1e-3 at rtol 1e-4 in 0.41x; the chain, rk8pd extrap3: 3.4e-9 at
+     * rtol 1e-9 in 0.53x). rkf45 at the tiny eps too: without location its steps no longer
+     * stop at the band's edges, and 4th order reaches 1e-7 on osc_slip in half rk8pd's time. Location stays the library's default: where the steps are long
+     * against the kinks (msbdf at small eps) it is what makes the answer right. */
+    {"rkf45/quinn(4)/kinks-off", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RKF45, 0, 0, 0,
+     EPS_PROBLEM, 0, 1},
+    {"rk8pd/quinn(4)/extrap3/kinks-off", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 3,
+     EPS_PROBLEM, 0, 1},
+    {"rk8pd/quinn(4)/extrap2/kinks-off", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 2,
+     EPS_DECLARED, 0, 1},
+    {"rkf45/quinn(4)/tiny-eps/kinks-off", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RKF45, 0, 0, 0,
+     EPS_TINY, 0, 1},
+    {"rk8pd/quinn(4)/tiny-eps/kinks-off", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0, 0, 0,
+     EPS_TINY, 0, 1},
+    {"rk8pd/quinn(4)/extrap2-window/kinks-off", ADAPTIVE, FRICREG_LAW_QUINN, FRICREG_INT_RK8PD, 0,
+     0, 2, EPS_WINDOW, 0, 1},
     /* explicit central differences, one friction evaluation per step (FRICREG_INT_CENTRAL) */
-    {"central/quinn(4)", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_CENTRAL, 0, 0, 0, EPS_TWICE_PAPER},
+    {"central/quinn(4)", FIXED, FRICREG_LAW_QUINN, FRICREG_INT_CENTRAL, 0, 0, 0, EPS_TWICE_PAPER, 0,
+     0},
 #ifdef FRICREG_BENCH_CVODE
-    {"cvode-bdf/event-driven", EVENT, 0, 0, ED_BDF, 0, 0, EPS_PROBLEM},
-    {"cvode-adams/event-driven", EVENT, 0, 0, ED_ADAMS, 0, 0, EPS_PROBLEM},
+    {"cvode-bdf/event-driven", EVENT, 0, 0, ED_BDF, 0, 0, EPS_PROBLEM, 0, 0},
+    {"cvode-adams/event-driven", EVENT, 0, 0, ED_ADAMS, 0, 0, EPS_PROBLEM, 0, 0},
+    /* The same with atol scaled to the problem's magnitudes (ed_atol_scale). */
+    {"cvode-bdf/event-driven/atol-scaled", EVENT, 0, 0, ED_BDF, 0, 0, EPS_PROBLEM, 1, 0},
+    {"cvode-adams/event-driven/atol-scaled", EVENT, 0, 0, ED_ADAMS, 0, 0, EPS_PROBLEM, 1, 0},
 #endif
 };
-enum { NMETHODS = sizeof methods / sizeof methods[0], NSWEEP = 10 };
+enum { NMETHODS = sizeof methods / sizeof methods[0], NSWEEP = 10, NSWEEP_EVENT = 11 };
 
-/* Fixed steps (eps by the paper's rule) and tolerances (rtol = atol), coarse to fine. */
+/* Fixed steps (eps by the paper's rule) and tolerances (rtol = atol), coarse to fine. The
+ * event-driven baseline sweeps one tolerance further, to 1e-12, so that it is at its best
+ * wherever a tighter tolerance still buys accuracy; fricreg's adaptive runs stop at 1e-11. */
 static const double dts[NSWEEP] = {0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 5e-4, 2e-4, 1e-4};
-static const double tols[NSWEEP] = {1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11};
+static const double tols[NSWEEP_EVENT] = {1e-2, 1e-3, 1e-4,  1e-5,  1e-6, 1e-7,
+                                          1e-8, 1e-9, 1e-10, 1e-11, 1e-12};
+
+/* CVODE's atol relative to its rtol in the atol-scaled runs, per problem (bench_problems
+ * order; 1: not run). The chain's displacements and velocities are of order 1e-2 (its D on a
+ * cycle is 4 against the oscillators' 50), so atol = rtol lets CVODE's error test ignore
+ * their digits; atol = 1e-2 rtol weighs them as the oscillators' are weighed. */
+static const double ed_atol_scale[BENCH_NPROBLEMS] = {1.0, 1.0, 1e-2, 1.0};
 #define ADAPTIVE_DT0 1e-4 /* first step of the adaptive steppers */
 
 /* The ranges for the observed order: the finest points, dt <= 1e-3 (asymptotic), and
@@ -168,18 +211,30 @@ struct point {
     struct bench_run run; /* the first run's results */
 };
 
-static struct point results[BENCH_NPROBLEMS][NMETHODS][NSWEEP];
+static struct point results[BENCH_NPROBLEMS][NMETHODS][NSWEEP_EVENT];
 static struct bench_reference refs[BENCH_NPROBLEMS];
+static int
+    selected[BENCH_NPROBLEMS]; /* the problems run: all, or those named on the command line */
 
 static int applies(const struct method *m, const struct bench_problem *p)
 {
+    if (!selected[p - bench_problems])
+        return 0;
     if (m->partition && p->system != FRICREG_SYSTEM_TWOBLOCK)
         return 0; /* uncoupled contacts: both partitions are law (4) */
     if (m->eps_choice == EPS_TINY && tiny_eps[p - bench_problems] == 0.0)
         return 0;
     if (m->eps_choice == EPS_WINDOW && window_cycles[p - bench_problems] == 0)
         return 0;
+    if (m->atol_scaled && ed_atol_scale[p - bench_problems] == 1.0)
+        return 0;
     return m->kind != EVENT || p->event_driven;
+}
+
+/* The points of method m's sweep: dts or tols. */
+static int sweep_len(const struct method *m)
+{
+    return m->kind == EVENT ? NSWEEP_EVENT : NSWEEP;
 }
 
 /* The eps a law run of method m sets at sweep point k (0: the paper's rule, fixed steps). */
@@ -208,7 +263,8 @@ static void run_point(const struct bench_problem *p, const struct method *m, int
     double t;
     if (m->kind == EVENT) {
 #ifdef FRICREG_BENCH_CVODE
-        struct ed_point ep = {p, m->ed_method, tols[k], 0.0};
+        double atol = m->atol_scaled ? ed_atol_scale[p - bench_problems] * tols[k] : tols[k];
+        struct ed_point ep = {p, m->ed_method, tols[k], 0.0, atol};
         t = bench_time_once(ed_run, &ep, &run);
 #else
         return;
@@ -226,7 +282,8 @@ static void run_point(const struct bench_problem *p, const struct method *m, int
                                          ? leading_order[p - bench_problems]
                                          : 0,
                                      m->eps_choice == EPS_WINDOW ? window_cycles[p - bench_problems]
-                                                                 : 0};
+                                                                 : 0,
+                                     m->kinks_off};
         t = bench_time_once(bench_sim_run, &sp, &run);
     }
     pt->t[pt->nt++] = t;
@@ -270,22 +327,25 @@ static const char *status_word(const struct point *pt)
  * that every finer successful point of the sweep also reaches the target. NAN if none.
  * *bound is set when that holds from the first successful point on: the sweep starts too
  * fine to tell, and the time is an upper bound. */
-static double time_to_reach(const struct point pts[NSWEEP], double target, int *bound)
+static double time_to_reach(const struct point pts[], int npts, double target, int *bound, int *at)
 {
     double best = NAN;
-    int first_ok = 0, all = 1;
-    while (first_ok < NSWEEP && !pts[first_ok].ok)
+    int first_ok = 0, all = 1, k_best = -1;
+    while (first_ok < npts && !pts[first_ok].ok)
         first_ok++;
-    for (int k = NSWEEP - 1; k >= 0; k--) {
+    for (int k = npts - 1; k >= 0; k--) {
         if (!pts[k].ok)
             continue;
         if (!(pts[k].err <= target)) {
             all = 0;
             break;
         }
-        best = isnan(best) ? pts[k].cpu : fmin(best, pts[k].cpu);
+        if (isnan(best) || pts[k].cpu < best)
+            best = pts[k].cpu, k_best = k;
     }
-    *bound = !isnan(best) && all && first_ok < NSWEEP;
+    *bound = !isnan(best) && all && first_ok < npts;
+    if (at)
+        *at = k_best;
     return best;
 }
 
@@ -327,7 +387,7 @@ static void write_csv(FILE *f)
         for (int im = 0; im < NMETHODS; im++) {
             if (!applies(&methods[im], &bench_problems[ip]))
                 continue;
-            for (int k = 0; k < NSWEEP; k++) {
+            for (int k = 0; k < sweep_len(&methods[im]); k++) {
                 const struct point *pt = &results[ip][im][k];
                 const struct bench_run *r = &pt->run;
                 double lo = INFINITY, hi = 0.0;
@@ -359,7 +419,7 @@ static void write_dat(const char *dir, int ip)
         if (!applies(&methods[im], &bench_problems[ip]))
             continue;
         fprintf(f, "# %s\n# param cpu_s rel_error steps rhs_evals\n", methods[im].name);
-        for (int k = 0; k < NSWEEP; k++) {
+        for (int k = 0; k < sweep_len(&methods[im]); k++) {
             const struct point *pt = &results[ip][im][k];
             if (pt->ok) /* an exact hit would be 0 on a log axis: floor it */
                 fprintf(f, "%g %.6e %.6e %.0f %.0f\n", pt->param, pt->cpu, fmax(pt->err, 1e-16),
@@ -444,13 +504,15 @@ static void print_summary(FILE *csv)
            "so the time is an upper bound; '~' = a ratio involving such a bound)\n");
     fprintf(csv, "problem,method,cpu_1pct,ratio_1pct,cpu_001pct,ratio_001pct,best_error\n");
     for (int ip = 0; ip < BENCH_NPROBLEMS; ip++) {
+        if (!selected[ip])
+            continue;
         const struct bench_problem *p = &bench_problems[ip];
         static const int shown[2] = {TARGET_1PCT, TARGET_001PCT};
         double q[2];
         int q_bound[2];
         for (int j = 0; j < 2; j++)
-            q[j] = time_to_reach(results[ip][0], targets[shown[j]], &q_bound[j]);
-        printf("\n%s\n%-26s %10s %8s %10s %8s %10s\n", p->title, "method", "t(1%)", "ratio",
+            q[j] = time_to_reach(results[ip][0], NSWEEP, targets[shown[j]], &q_bound[j], NULL);
+        printf("\n%s\n%-40s %10s %8s %10s %8s %10s\n", p->title, "method", "t(1%)", "ratio",
                "t(0.01%)", "ratio", "best err");
         for (int im = 0; im < NMETHODS; im++) {
             if (!applies(&methods[im], p))
@@ -459,14 +521,15 @@ static void print_summary(FILE *csv)
             int bound[2];
             char s[4][32];
             for (int j = 0; j < 2; j++) {
-                t[j] = time_to_reach(results[ip][im], targets[shown[j]], &bound[j]);
+                t[j] = time_to_reach(results[ip][im], sweep_len(&methods[im]), targets[shown[j]],
+                                     &bound[j], NULL);
                 fmt_time(s[2 * j], sizeof s[0], t[j], bound[j]);
                 fmt_ratio(s[2 * j + 1], sizeof s[0], t[j], bound[j], q[j], q_bound[j]);
             }
-            for (int k = 0; k < NSWEEP; k++)
+            for (int k = 0; k < sweep_len(&methods[im]); k++)
                 if (results[ip][im][k].ok)
                     best = fmin(best, results[ip][im][k].err);
-            printf("%-26s %10s %8s %10s %8s %10.2e\n", methods[im].name, s[0], s[1], s[2], s[3],
+            printf("%-40s %10s %8s %10s %8s %10.2e\n", methods[im].name, s[0], s[1], s[2], s[3],
                    best);
             fprintf(csv, "%s,%s,%s,%s,%s,%s,%.3e\n", p->key, methods[im].name, s[0], s[1], s[2],
                     s[3], best);
@@ -479,45 +542,60 @@ static void print_summary(FILE *csv)
 
 /* The cheapest fricreg method (any law-(4) method: fixed, adaptive, extrapolated) to reach
  * `target` on problem ip; *best gets its index (-1 if none reaches it), *bound whether the
- * time is a bound (time_to_reach). */
-static double best_fricreg(int ip, double target, int *best, int *bound)
+ * time is a bound, *at the sweep point (time_to_reach). */
+static double best_fricreg(int ip, double target, int *best, int *bound, int *at)
 {
     double t_best = NAN;
     *best = -1;
+    *at = -1;
     *bound = 0;
     for (int im = 0; im < NMETHODS; im++) {
         const struct method *m = &methods[im];
-        int b = 0;
+        int b = 0, k = -1;
         if (m->kind == EVENT || m->law != FRICREG_LAW_QUINN || m->partition ||
             !applies(m, &bench_problems[ip]))
             continue; /* the paper's partition is another model than the reference's */
-        double t = time_to_reach(results[ip][im], target, &b);
+        double t = time_to_reach(results[ip][im], NSWEEP, target, &b, &k);
         if (!isnan(t) && (isnan(t_best) || t < t_best))
-            t_best = t, *best = im, *bound = b;
+            t_best = t, *best = im, *bound = b, *at = k;
     }
     return t_best;
 }
 
-/* One CVODE cell: "time" and "ratio" (CVODE time / fricreg time: above 1, fricreg ahead). */
+/* One CVODE cell: "time" and "ratio" (CVODE time / fricreg time: above 1, fricreg ahead), the
+ * peer at its best: the cheapest of its configurations (tolerance sweeps, atol = rtol and,
+ * where run, atol scaled) to reach the target; "config" says which ("-" if none). */
 static void cvode_cell(int ip, int ed_method, double target, double t_best, int best_bound,
-                       char *time, char *ratio, size_t len)
+                       char *time, char *ratio, char *config, size_t len)
 {
+    double t_ed = NAN;
+    int b_ed = 0, run = 0;
     snprintf(time, len, "n/a");
     snprintf(ratio, len, "n/a");
+    snprintf(config, len, "n/a");
     for (int im = 0; im < NMETHODS; im++) {
         if (methods[im].kind != EVENT || methods[im].ed_method != ed_method ||
             !applies(&methods[im], &bench_problems[ip]))
             continue;
-        int b = 0;
-        double t = time_to_reach(results[ip][im], target, &b);
-        fmt_time(time, len, t, b);
-        if (isnan(t_best))
-            snprintf(ratio, len, "-");
-        else if (isnan(t))
-            snprintf(ratio, len, "never");
-        else
-            snprintf(ratio, len, "%s%.3g", b || best_bound ? "~" : "", t / t_best);
+        int b = 0, k = -1;
+        double t = time_to_reach(results[ip][im], NSWEEP_EVENT, target, &b, &k);
+        if (!run++)
+            snprintf(config, len, "-");
+        if (isnan(t) || !(isnan(t_ed) || t < t_ed))
+            continue;
+        double scale = methods[im].atol_scaled ? ed_atol_scale[ip] : 1.0;
+        t_ed = t, b_ed = b;
+        snprintf(config, len, "rtol=%.0e atol=%.0e", tols[k], scale * tols[k]);
     }
+    if (!run)
+        return;
+    fmt_time(time, len, t_ed, b_ed);
+    if (isnan(t_best))
+        snprintf(ratio, len, "-");
+    else if (isnan(t_ed))
+        snprintf(ratio, len, "never");
+    else
+        snprintf(ratio, len, "%s%.3g", b_ed || best_bound ? "~" : "", t_ed / t_best);
 }
 
 /* The work-precision table against the event-driven baseline: per problem and target error
@@ -530,33 +608,42 @@ static void print_best(FILE *csv)
     printf("\n== Against event-driven CVODE: fricreg's cheapest method per target ==\n"
            "(CPU seconds to reach the target and stay below it over the sweep; ratio = CVODE's\n"
            "time / fricreg's: above 1, fricreg is ahead; 'never': CVODE does not reach it in\n"
-           "its sweep; '~': a time is a '<=' bound)\n");
-    printf("%-10s %7s %-26s %10s %10s %8s %10s %8s\n", "problem", "target", "fricreg best", "cpu",
-           "adams", "ratio", "bdf", "ratio");
-    fprintf(csv, "problem,target,best_method,best_cpu,adams_cpu,adams_ratio,bdf_cpu,bdf_ratio\n");
+           "its sweep; '~': a time is a '<=' bound; each CVODE method at its best: the cheapest\n"
+           "of its tolerances, and atol scalings where run, to reach the target, shown as\n"
+           "rtol/atol)\n");
+    printf("%-10s %7s %-40s %-8s %10s %10s %8s %10s %8s  %-15s %-15s\n", "problem", "target",
+           "fricreg best", "at", "cpu", "adams", "ratio", "bdf", "ratio", "adams config",
+           "bdf config");
+    fprintf(csv, "problem,target,best_method,best_cpu,adams_cpu,adams_ratio,bdf_cpu,bdf_ratio,"
+                 "best_param,adams_config,bdf_config\n");
     for (int ip = 0; ip < BENCH_NPROBLEMS; ip++) {
+        if (!selected[ip])
+            continue;
         double rel_unc = refs[ip].uncertainty / fabs(refs[ip].D);
         for (int j = 0; j < NTARGETS; j++) {
-            char tb[32], ta[32], ra[32], td[32], rd[32];
+            char tb[32], ta[32], ra[32], td[32], rd[32], ca[32], cd[32], at[32] = "-";
             const char *name = "-";
             if (targets[j] < 3.0 * rel_unc) {
                 printf("%-10s %7.0e (not judged: the reference is uncertain to %.1e)\n",
                        bench_problems[ip].key, targets[j], rel_unc);
-                fprintf(csv, "%s,%.0e,not judged (reference %.1e),,,,,\n", bench_problems[ip].key,
-                        targets[j], rel_unc);
+                fprintf(csv, "%s,%.0e,not judged (reference %.1e),,,,,,,,\n",
+                        bench_problems[ip].key, targets[j], rel_unc);
                 continue;
             }
-            int best, bound;
-            double t = best_fricreg(ip, targets[j], &best, &bound);
+            int best, bound, k;
+            double t = best_fricreg(ip, targets[j], &best, &bound, &k);
             fmt_time(tb, sizeof tb, t, bound);
-            if (best >= 0)
+            if (best >= 0) {
                 name = methods[best].name;
-            cvode_cell(ip, ED_ADAMS_ID, targets[j], t, bound, ta, ra, sizeof ta);
-            cvode_cell(ip, ED_BDF_ID, targets[j], t, bound, td, rd, sizeof td);
-            printf("%-10s %7.0e %-26s %10s %10s %8s %10s %8s\n", bench_problems[ip].key, targets[j],
-                   name, tb, ta, ra, td, rd);
-            fprintf(csv, "%s,%.0e,%s,%s,%s,%s,%s,%s\n", bench_problems[ip].key, targets[j], name,
-                    tb, ta, ra, td, rd);
+                snprintf(at, sizeof at, "%s=%g", methods[best].kind == FIXED ? "dt" : "tol",
+                         results[ip][best][k].param);
+            }
+            cvode_cell(ip, ED_ADAMS_ID, targets[j], t, bound, ta, ra, ca, sizeof ta);
+            cvode_cell(ip, ED_BDF_ID, targets[j], t, bound, td, rd, cd, sizeof td);
+            printf("%-10s %7.0e %-40s %-8s %10s %10s %8s %10s %8s  %-15s %-15s\n",
+                   bench_problems[ip].key, targets[j], name, at, tb, ta, ra, td, rd, ca, cd);
+            fprintf(csv, "%s,%.0e,%s,%s,%s,%s,%s,%s,%s,%s,%s\n", bench_problems[ip].key, targets[j],
+                    name, tb, ta, ra, td, rd, at, ca, cd);
         }
     }
 }
@@ -569,7 +656,7 @@ static void print_orders(FILE *csv, const double eps_orders[])
            "the paper: 2 for (4), 1 for (1) and (3) with sticking (Fig. 7a), 2 for all\n"
            "without (Fig. 7b))\n",
            dts[ORDER_FIRST], dts[NSWEEP - 1], dts[ORDER_WHOLE], dts[NSWEEP - 1]);
-    printf("%-26s", "method");
+    printf("%-40s", "method");
     for (int ip = 0; ip < BENCH_NPROBLEMS; ip++)
         printf(" %13s", bench_problems[ip].key);
     printf("\n");
@@ -578,7 +665,7 @@ static void print_orders(FILE *csv, const double eps_orders[])
     for (int im = 0; im < NMETHODS; im++) {
         if (methods[im].kind != FIXED || methods[im].levels >= 2) /* order of dt alone */
             continue;
-        printf("%-26s", methods[im].name);
+        printf("%-40s", methods[im].name);
         for (int ip = 0; ip < BENCH_NPROBLEMS; ip++) {
             int used, used_whole;
             const struct point *pts = results[ip][im];
@@ -593,7 +680,7 @@ static void print_orders(FILE *csv, const double eps_orders[])
         }
         printf("\n");
     }
-    printf("%-26s", "quinn(4): order in eps");
+    printf("%-40s", "quinn(4): order in eps");
     for (int ip = 0; ip < BENCH_NPROBLEMS; ip++)
         printf(" %13.2f", eps_orders[ip]);
     printf("\n(the last row: law (4) at fixed dt = 1e-4, eps = 3.2e-3 … 4e-4)\n"
@@ -601,7 +688,7 @@ static void print_orders(FILE *csv, const double eps_orders[])
     for (int im = 0; im < NMETHODS; im++) {
         if (methods[im].kind != FIXED || methods[im].levels >= 2)
             continue;
-        printf("%-26s", methods[im].name);
+        printf("%-40s", methods[im].name);
         for (int ip = 0; ip < BENCH_NPROBLEMS; ip++)
             printf("  %8.1e %8.1e", results[ip][im][ORDER_FIRST].err,
                    results[ip][im][NSWEEP - 1].err);
@@ -615,13 +702,13 @@ static void print_failures(void)
     int any = 0;
     for (int ip = 0; ip < BENCH_NPROBLEMS; ip++)
         for (int im = 0; im < NMETHODS; im++)
-            for (int k = 0; k < NSWEEP; k++) {
+            for (int k = 0; k < sweep_len(&methods[im]); k++) {
                 const struct point *pt = &results[ip][im][k];
                 if (!applies(&methods[im], &bench_problems[ip]) || pt->ok)
                     continue;
                 if (!any++)
                     printf("\n== Points without a result ==\n");
-                printf("%-10s %-26s %s %-8g %-9s %s\n", bench_problems[ip].key, methods[im].name,
+                printf("%-10s %-40s %s %-8g %-9s %s\n", bench_problems[ip].key, methods[im].name,
                        methods[im].kind == FIXED ? "dt " : "tol", pt->param, status_word(pt),
                        pt->run.msg);
             }
@@ -637,8 +724,17 @@ static double eps_order(int ip)
     double sx = 0, sy = 0, sxx = 0, sxy = 0;
     printf("  law (4) error against eps at fixed dt = %g (RK4):", dt);
     for (int k = 0; k < 4; k++) {
-        struct bench_sim_point sp = {
-            &bench_problems[ip], FRICREG_LAW_QUINN, FRICREG_INT_RK4, dt, 0.0, eps[k], 0, 0, 0, 0};
+        struct bench_sim_point sp = {&bench_problems[ip],
+                                     FRICREG_LAW_QUINN,
+                                     FRICREG_INT_RK4,
+                                     dt,
+                                     0.0,
+                                     eps[k],
+                                     0,
+                                     0,
+                                     0,
+                                     0,
+                                     0};
         struct bench_run run;
         if (bench_sim_run(&sp, &run) != FRICREG_OK) {
             printf(" eps %g failed: %s\n", eps[k], run.msg);
@@ -656,9 +752,14 @@ static double eps_order(int ip)
 
 int main(int argc, char **argv)
 {
-    if (argc != 2) {
-        fprintf(stderr, "usage: fricreg-bench-wp OUTDIR\n");
+    if (argc < 2) {
+        fprintf(stderr, "usage: fricreg-bench-wp OUTDIR [PROBLEM...]\n");
         return 2;
+    }
+    for (int ip = 0; ip < BENCH_NPROBLEMS; ip++) { /* no PROBLEM: all */
+        selected[ip] = argc == 2;
+        for (int a = 2; a < argc; a++)
+            selected[ip] |= strcmp(argv[a], bench_problems[ip].key) == 0;
     }
     const char *dir = argv[1];
     double t_start = bench_cpu_seconds(), eps_orders[BENCH_NPROBLEMS];
@@ -677,6 +778,9 @@ int main(int argc, char **argv)
            dts[0], dts[NSWEEP - 1], tols[0], tols[NSWEEP - 1], PASSES, MIN_PASSES, SLOW_POINT);
     for (int ip = 0; ip < BENCH_NPROBLEMS; ip++) {
         const struct bench_problem *p = &bench_problems[ip];
+        eps_orders[ip] = NAN;
+        if (!selected[ip])
+            continue;
         printf("\n== %s ==\n", p->title);
         if (bench_reference(p, &refs[ip], stdout) != FRICREG_OK) {
             fprintf(stderr, "fricreg-bench-wp: the reference of %s failed\n", p->key);
@@ -690,7 +794,7 @@ int main(int argc, char **argv)
         double t0 = bench_cpu_seconds();
         for (int ip = 0; ip < BENCH_NPROBLEMS; ip++)
             for (int im = 0; im < NMETHODS; im++)
-                for (int k = 0; k < NSWEEP; k++) {
+                for (int k = 0; k < sweep_len(&methods[im]); k++) {
                     struct point *pt = &results[ip][im][k];
                     if (applies(&methods[im], &bench_problems[ip]) && runs_in_pass(pt, pass))
                         run_point(&bench_problems[ip], &methods[im], k, pt, pass);
@@ -701,7 +805,7 @@ int main(int argc, char **argv)
     int nondeterministic = 0;
     for (int ip = 0; ip < BENCH_NPROBLEMS; ip++)
         for (int im = 0; im < NMETHODS; im++)
-            for (int k = 0; k < NSWEEP; k++) {
+            for (int k = 0; k < NSWEEP_EVENT; k++) {
                 struct point *pt = &results[ip][im][k];
                 pt->cpu = pt->nt ? bench_median(pt->t, (size_t)pt->nt) : NAN;
                 nondeterministic += pt->nondeterministic;

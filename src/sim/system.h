@@ -10,6 +10,7 @@
 #ifndef FRICREG_SYSTEM_H
 #define FRICREG_SYSTEM_H
 
+#include <math.h>
 #include <stddef.h>
 
 #include "fricreg_sim.h"
@@ -54,9 +55,10 @@ struct fr_system_type {
     /* The contacts' kinematics at (t, x, v): a_free [m] into a_free unless it is NULL (the
      * drivers' after-step check reads zdot only), and the contact velocities zdot [m] as the
      * return value: written into zdot_buf, or v itself where the contacts move with the bodies
-     * (oscillator, chain), which saves a copy per right-hand side. */
-    const double *(*contacts)(const struct fr_system *sys, double t, const double x[],
-                              const double v[], double zdot_buf[], double a_free[]);
+     * (oscillator, chain), which saves a copy per right-hand side. sys is not const: its
+     * forcing memo (fr_system_sin) may be updated, never its parameters. */
+    const double *(*contacts)(struct fr_system *sys, double t, const double x[], const double v[],
+                              double zdot_buf[], double a_free[]);
     /* 1 where contacts() returns v itself (zdot = v, m = ndof: the contacts are the bodies)
      * and W is diagonal; FRICREG_INT_CENTRAL_IMEX solves the friction body by body there. */
     int contacts_are_bodies;
@@ -86,8 +88,23 @@ struct fr_system_type {
 /* One system with its parameter values. */
 struct fr_system {
     const struct fr_system_type *type;
-    double p[FR_MAX_PARAMS]; /* in the order of type->params */
+    double p[FR_MAX_PARAMS];   /* in the order of type->params */
+    double memo_arg, memo_sin; /* fr_system_sin's last argument (NaN: none yet) and its sine */
 };
+
+/* sin(arg), from the memo when arg is the last argument, to the bit what sin(arg) is. The
+ * forcing's sine was a sixth of a fixed RK4 step's time (oscillator, chain of 32), and RK4's
+ * stages repeat their times: t + h/2 twice, and the end of each of a call's two steps is the
+ * start of the next (rk4_classic.c), so 3 of every 8 are repeats. The memo is a pure function
+ * of arg: a copied system may keep it whatever its parameters. */
+static inline double fr_system_sin(struct fr_system *sys, double arg)
+{
+    if (!(arg == sys->memo_arg)) {
+        sys->memo_arg = arg;
+        sys->memo_sin = sin(arg);
+    }
+    return sys->memo_sin;
+}
 
 /* systems.c: the table of types and the parameter lookups. */
 

@@ -24,6 +24,8 @@ const struct fr_system_type *fr_system_type_find(int id)
 void fr_system_init(struct fr_system *sys, const struct fr_system_type *type)
 {
     sys->type = type;
+    sys->memo_arg = NAN; /* no sine memorized: NaN equals no argument */
+    sys->memo_sin = 0.0;
     for (size_t k = 0; k < type->nparams; k++)
         sys->p[k] = type->params[k].paper_value;
 }

@@ -69,15 +69,15 @@ static void initial(const struct fr_system *sys, double x[], double v[])
 }
 
 /* The contacts are the blocks: zdot = v, no copy. a_free is the spring stencil. */
-static const double *contacts(const struct fr_system *sys, double t, const double u[],
-                              const double v[], double zdot_buf[], double a_free[])
+static const double *contacts(struct fr_system *sys, double t, const double u[], const double v[],
+                              double zdot_buf[], double a_free[])
 {
     (void)zdot_buf;
     size_t n = blocks(sys);
     double n2 = (double)n * (double)n;
     if (a_free == NULL)
         return v;
-    double G = sys->p[A] * sin(sys->p[OMEGA] * t);
+    double G = sys->p[A] * fr_system_sin(sys, sys->p[OMEGA] * t);
     a_free[0] = -n2 * (u[0] - u[1]) + (double)n * G;
     for (size_t i = 1; i + 1 < n; i++)
         a_free[i] = -n2 * (-u[i - 1] + 2.0 * u[i] - u[i + 1]);

@@ -48,12 +48,12 @@ static void initial(const struct fr_system *sys, double x[], double v[])
 }
 
 /* The contact is the body: zdot = v. */
-static const double *contacts(const struct fr_system *sys, double t, const double x[],
-                              const double v[], double zdot_buf[], double a_free[])
+static const double *contacts(struct fr_system *sys, double t, const double x[], const double v[],
+                              double zdot_buf[], double a_free[])
 {
     (void)zdot_buf;
     if (a_free != NULL)
-        a_free[0] = -x[0] + sys->p[A] * sin(sys->p[OMEGA] * t);
+        a_free[0] = -x[0] + sys->p[A] * fr_system_sin(sys, sys->p[OMEGA] * t);
     return v;
 }
 

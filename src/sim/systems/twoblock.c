@@ -51,8 +51,8 @@ static void initial(const struct fr_system *sys, double x[], double v[])
     x[0] = x[1] = v[0] = v[1] = 0.0;
 }
 
-static const double *contacts(const struct fr_system *sys, double t, const double x[],
-                              const double v[], double zdot[], double a_free[])
+static const double *contacts(struct fr_system *sys, double t, const double x[], const double v[],
+                              double zdot[], double a_free[])
 {
     double omega = sys->p[BELT_OMEGA], wt = omega * t;
     double belt_v = sys->p[BELT_AMP] * omega * cos(wt);
