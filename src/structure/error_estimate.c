@@ -139,11 +139,6 @@ void fr_estimate_discard(fricreg_structure *s)
     s->estimate_state = FR_ESTIMATE_NONE;
 }
 
-void fr_estimate_reset(fricreg_structure *s)
-{
-    fr_estimate_discard(s);
-}
-
 void fr_estimate_forwarded(fricreg_structure *s, int status, const char *who)
 {
     if (status != FRICREG_OK)

@@ -347,7 +347,7 @@ int fricreg_structure_set_initial(fricreg_structure *s, size_t ndof, const doubl
     fr_warn_track_reset(s);
     for (size_t i = 0; i < ndof; i++)
         s->peak[i] = fabs(u0[i]);
-    fr_estimate_reset(s); /* a new run: a new companion at its first step */
+    fr_estimate_discard(s); /* a new run: a new companion at its first step */
     return FRICREG_OK;
 }
 

@@ -318,20 +318,18 @@ void fr_energy_step(fricreg_structure *s, const gsl_vector *u1, const gsl_vector
 double fr_energy_kinetic(const fricreg_structure *s);
 double fr_energy_strain(const fricreg_structure *s);
 
-/* error_estimate.c. peak_sample: the peak of |u| takes in the current state. estimate_begin:
- * at a stepping call's start, makes the companion if the estimate is on and the run starts
- * here. estimate_follow: at the call's end, steps the companion to the structure's time with
- * the call's scheme: fixed steps dt / 2 (integrator 0: the structure's own scheme), or an
- * adaptive GSL run's tolerances / 16. estimate_discard: a setter changed what the companion
- * copied (the model, the scheme): the estimate ends. estimate_reset: set_initial. The
- * forwarding of the setters a run may call between steps (bounds, law, records, Newton, the
- * adaptive bound) is estimate_forward_status: the companion's status of the same call, a
- * failure ending the estimate as failed. */
+/* error_estimate.c. peak_sample: the peaks take in the current state. estimate_begin: at a
+ * stepping call's start, makes the companion if the estimate is on and the run starts there.
+ * estimate_follow: at the call's end, steps the companion to the structure's time with the
+ * call's scheme: fixed steps dt / 2 (integrator 0: the structure's own scheme), an adaptive
+ * GSL run the tolerances / 16. estimate_discard: set_initial, or a setter that changed what
+ * the companion copied (the model, the scheme): no estimate until the next run's start.
+ * estimate_forwarded: the companion's status of a setter passed on to it (bounds, law,
+ * records, Newton, the adaptive bound); a failure makes the estimate a failed one. */
 void fr_peak_sample(fricreg_structure *s);
 void fr_estimate_begin(fricreg_structure *s);
 void fr_estimate_follow(fricreg_structure *s, int integrator, double dt, double rtol, double atol);
 void fr_estimate_discard(fricreg_structure *s);
-void fr_estimate_reset(fricreg_structure *s);
 void fr_estimate_forwarded(fricreg_structure *s, int status, const char *who);
 void fr_estimate_check(fricreg_structure *s); /* warnings.c's check of the estimate */
 /* jenkins.c: a copy of src's elements on dst (the companion), sliders at w = 0. */
