@@ -358,6 +358,10 @@ module fricreg
     procedure :: get_state => struct_get_state
     procedure :: get_forces => struct_get_forces
     procedure :: get_dissipation => struct_get_dissipation
+    procedure :: set_error_estimate => struct_set_error_estimate
+    procedure :: get_peak_displacement => struct_get_peak_displacement
+    procedure :: get_peak_displacement_error => struct_get_peak_displacement_error
+    procedure :: get_dissipation_error => struct_get_dissipation_error
     procedure :: get_value => struct_get_value
     procedure :: get_stat => struct_get_stat
     procedure :: warning_count => struct_warning_count
@@ -3037,6 +3041,61 @@ contains
     if (status == FRICREG_OK) status = self%unrecorded('get_dissipation', &
                                        fricreg_structure_get_dissipation(self%ptr, self%m, D))
   end function struct_get_dissipation
+
+  !> Estimate the error of the peak displacements and of each contact's dissipation against
+  !> eps -> 0 (1) or not (0, the default), from a companion structure at eps/2 stepped alongside
+  !> at half the step, or an adaptive run's tolerances/16; err = 3 |q - q_companion|
+  !> (fricreg_structure_set_error_estimate: made at the first step after set_initial, fed the
+  !> setters of bounds, law, records, Newton and max_steps; another setter ends it).
+  !> FRICREG_EINVAL if on is not 0 or 1. Since 1.6.
+  function struct_set_error_estimate(self, on) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    integer(c_int), intent(in) :: on
+    integer(c_int) :: status
+    status = self%ready('set_error_estimate', 'structure')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_structure_set_error_estimate(self%ptr, on))
+  end function struct_set_error_estimate
+
+  !> The peak displacements max |u_i| since set_initial, peak(ndof) (length units), sampled at
+  !> every fixed step's end and every run_ode call's end (fricreg_structure_get_peak_displacement).
+  !> FRICREG_ESIZE. Since 1.6.
+  function struct_get_peak_displacement(self, peak) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(inout), contiguous :: peak(:)
+    integer(c_int) :: status
+    status = struct_vector(self, 'get_peak_displacement', 'peak', peak, self%n)
+    if (status == FRICREG_OK) status = self%unrecorded('get_peak_displacement', &
+                                       fricreg_structure_get_peak_displacement(self%ptr, &
+                                                                               self%n, peak))
+  end function struct_get_peak_displacement
+
+  !> The error estimate of each peak displacement, err(ndof) (length units; +Inf where the
+  !> companion failed), fricreg_structure_get_peak_displacement_error. FRICREG_EINVAL without
+  !> an estimate (off, no step since set_initial with it on, ended by a setter); FRICREG_ESIZE.
+  !> Since 1.6.
+  function struct_get_peak_displacement_error(self, err) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(inout), contiguous :: err(:)
+    integer(c_int) :: status
+    status = struct_vector(self, 'get_peak_displacement_error', 'err', err, self%n)
+    if (status == FRICREG_OK) status = self%unrecorded('get_peak_displacement_error', &
+                                       fricreg_structure_get_peak_displacement_error(self%ptr, &
+                                                                                     self%n, err))
+  end function struct_get_peak_displacement_error
+
+  !> The error estimate of each contact's dissipation, err(m) (energy units; +Inf where the
+  !> companion failed), fricreg_structure_get_dissipation_error. FRICREG_EINVAL without an
+  !> estimate; FRICREG_ESIZE. Since 1.6.
+  function struct_get_dissipation_error(self, err) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(inout), contiguous :: err(:)
+    integer(c_int) :: status
+    status = struct_vector(self, 'get_dissipation_error', 'err', err, self%m)
+    if (status == FRICREG_OK) status = self%unrecorded('get_dissipation_error', &
+                                       fricreg_structure_get_dissipation_error(self%ptr, &
+                                                                               self%m, err))
+  end function struct_get_dissipation_error
 
   !> One quantity (FRICREG_SVALUE_*: time, energies, the balance's residual) into value.
   !> FRICREG_EINVAL for an unknown one.

@@ -101,8 +101,9 @@ enum fricreg_warning {
     FRICREG_WARN_TOL_LOOSE = 10,      /**< adaptive velocity tolerance above 0.01 eps */
     FRICREG_WARN_STRIBECK_EPS = 11,   /**< Stribeck delta < 1: band error (fs-fk)/fs (eps/vs)^delta
                                        *   above 1e-2 */
-    /** an error estimate (fricreg_sim_set_error_estimate) could not be formed, or is above
-     *  10% of its quantity, where it may not bound the error. Since 1.6. */
+    /** an error estimate (fricreg_sim_set_error_estimate, fricreg_structure_set_error_estimate)
+     *  could not be formed, or is above 10% of its quantity, where it may not bound the error.
+     *  Since 1.6. */
     FRICREG_WARN_ERROR_ESTIMATE = 12
 };
 

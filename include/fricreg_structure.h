@@ -670,6 +670,93 @@ FRICREG_API int fricreg_structure_get_normal_forces(const fricreg_structure *s, 
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown quantity. */
 FRICREG_API int fricreg_structure_get_value(const fricreg_structure *s, int which, double *value);
 
+/* ---- Error estimate (since 1.6) ---------------------------------------------------------- */
+
+/** Whether the structure estimates the error of its peak displacements
+ *  (fricreg_structure_get_peak_displacement) and of each contact's dissipation
+ *  (fricreg_structure_get_dissipation) against the Coulomb problem, eps -> 0, where a run's
+ *  results carry both the regularization error of the law and the discretization (or
+ *  tolerance) error. Off by default (fricreg-sim structure turns it on). Since 1.6
+ *  (FRICREG_1.6).
+ *
+ *  The estimator is fricreg_sim_set_error_estimate's, with its calibration (docs/integrators.md,
+ *  "Error estimate"): a companion run at eps / 2 and half the step, err = 3 |q - q_companion|
+ *  (law (4)'s error is c eps^p, p = 1 or 2, and along dt / eps fixed a fixed step's error
+ *  follows eps, so q(eps) - q(0) = (q(eps) - q(eps/2)) 2^p / (2^p - 1), at most twice the
+ *  difference; 3 keeps the calibration's margin). Here the companion is a second structure,
+ *  owned by s, stepped alongside it:
+ *  - it is made at the first stepping call (fricreg_structure_step, _run or _run_ode) after
+ *    fricreg_structure_set_initial (or creation) with the estimate on, as a copy of everything
+ *    set then (model, Rayleigh damping, influence, load and ground records, law with eps / 2,
+ *    bounds, scheme, Newton's settings, the bound on adaptive steps, Jenkins or Iwan elements,
+ *    the initial state); turned on later in a run, the estimate starts at the next set_initial;
+ *  - at the end of every stepping call on s (successful, failed after some steps, or stopped by
+ *    the observer) it is stepped from its time to s's: fricreg_structure_step(s, dt) and
+ *    fricreg_structure_run(s, dt, t_end) by fricreg_structure_run(companion, dt / 2, t) (two
+ *    steps per step of s, the last shortened as run's), fricreg_structure_run_ode with fixed
+ *    steps by the same stepper at dt / 2, adaptive by the same stepper with dt as its first step
+ *    and rtol / 16, atol / 16;
+ *  - the setters a run may call between steps are passed on to it: set_bounds, set_law (eps / 2
+ *    of the new eps), set_ground_accel and set_load (a caller who feeds the record step by step
+ *    feeds the companion too: it reads its records at its own step ends, in between), set_newton
+ *    and set_max_steps (each call of the companion's bounded as s's). Every other setter after
+ *    the companion was made (the model matrices, Rayleigh, influence, scheme, elements) ends the
+ *    estimate until the next set_initial: the getters then return FRICREG_EINVAL.
+ *  The peaks are sampled at every fixed step's end (step, run, run_ode with fixed steps) and at
+ *  each run_ode call's end (adaptive: call run_ode once per sampling interval, as CVODE's tout,
+ *  to sample every interval). With fixed steps the companion samples twice as often, so the
+ *  peaks' estimate includes the sampling error; an adaptive companion samples at the same
+ *  times, so it does not (sample finer than the error sought: the test's oscillator sampled
+ *  every 0.01 s misses its peak by 6.4e-7 with an estimate of 0).
+ *  Where the companion fails (e.g. FRICREG_ESTEP or FRICREG_EWORK at its finer setting, or no
+ *  memory) s's run still succeeds, the estimates become +infinity until the next set_initial, and
+ *  fricreg_structure_warning_count raises FRICREG_WARN_ERROR_ESTIMATE with the companion's
+ *  message; it raises it too where an estimate is above 10% of its quantity.
+ *  Cost: the companion's run, about 2x s's for fixed steps (twice the steps, one more K_eff
+ *  factor), 1.4x ... 3x for adaptive ones (fricreg_sim_set_error_estimate); one more structure in
+ *  memory, allocated at the run's first step (a failed allocation is a failed estimate, not a
+ *  failed step). So with the estimate on, a run costs about 3x.
+ *
+ *  s   in/out: the structure.
+ *  on  in: 1 to estimate, 0 not to (default; 0 also discards the estimate made).
+ *  Returns FRICREG_OK; FRICREG_ENULL if s is NULL; FRICREG_EINVAL if on is neither 0 nor 1, or
+ *  if called from the observer during a run. */
+FRICREG_API int fricreg_structure_set_error_estimate(fricreg_structure *s, int on);
+
+/** Copy the peak displacements since fricreg_structure_set_initial (or creation),
+ *  peak[i] = max |u_i| over the sampled times: the initial state, every fixed step's end
+ *  (fricreg_structure_step, _run, _run_ode with fixed steps) and every fricreg_structure_run_ode
+ *  call's end (its adaptive steps in between are not sampled), into peak[ndof] (length units).
+ *  Tracked whether or not the error estimate is on. Since 1.6 (FRICREG_1.6).
+ *  Returns FRICREG_OK; FRICREG_ENULL if s or peak is NULL; FRICREG_ESIZE if ndof is not the
+ *  structure's. */
+FRICREG_API int fricreg_structure_get_peak_displacement(const fricreg_structure *s, size_t ndof,
+                                                        double peak[]);
+
+/** Copy the error estimate of each peak displacement (fricreg_structure_get_peak_displacement)
+ *  into err[ndof]: err_i = 3 |peak_i - peak_i(companion)| (length units, >= 0; +infinity where
+ *  the companion failed), fricreg_structure_set_error_estimate's estimator, at the current
+ *  time. Since 1.6 (FRICREG_1.6).
+ *  s     in: the structure; not modified.
+ *  ndof  in: the structure's degrees of freedom.
+ *  err   out: err[ndof]; written only on success.
+ *  Returns FRICREG_OK; FRICREG_ENULL if s or err is NULL; FRICREG_EINVAL when there is no
+ *  estimate (the estimate off, no stepping call since set_initial with it on, a setter ended it
+ *  (fricreg_structure_set_error_estimate), or called from the observer during a run, when the
+ *  companion has not caught up); FRICREG_ESIZE if ndof is not the structure's. */
+FRICREG_API int fricreg_structure_get_peak_displacement_error(const fricreg_structure *s,
+                                                              size_t ndof, double err[]);
+
+/** Copy the error estimate of each contact's dissipation (fricreg_structure_get_dissipation)
+ *  into err[m]: err_j = 3 |D_j - D_j(companion)| (energy units, >= 0; +infinity where the
+ *  companion failed), as fricreg_structure_get_peak_displacement_error. Since 1.6
+ *  (FRICREG_1.6).
+ *  Returns FRICREG_OK; FRICREG_ENULL if s or err is NULL; FRICREG_EINVAL when there is no
+ *  estimate (as fricreg_structure_get_peak_displacement_error); FRICREG_ESIZE if m is not the
+ *  structure's. */
+FRICREG_API int fricreg_structure_get_dissipation_error(const fricreg_structure *s, size_t m,
+                                                        double err[]);
+
 /** Counters since creation or set_initial, for fricreg_structure_get_stat. Fixed forever. */
 enum fricreg_structure_stat {
     FRICREG_SSTAT_STEPS = 0,             /**< steps taken */
@@ -725,6 +812,10 @@ FRICREG_API size_t fricreg_structure_errmsg_copy(const fricreg_structure *s, cha
  *    (whose discrete balance is exact) and none opened or closed an element of
  *    fricreg_structure_set_jenkins_normal, |FRICREG_SVALUE_RESIDUAL| above 1e-6 of
  *    |initial| + |input|.
+ *  - FRICREG_WARN_ERROR_ESTIMATE: with fricreg_structure_set_error_estimate on, the companion
+ *    failed (the estimates are +infinity; the message says why), or an estimate is above 10%
+ *    of its quantity (the largest peak_err_i against the largest peak_i, or the sum of the
+ *    D_err_i against the sum of |D_i|): outside the estimate's asymptotic range.
  *  Called from the observer during a run, it judges nothing and returns the list as it was.
  *  Returns the number of warnings; 0 if s is NULL. Since 1.6 (FRICREG_1.6). */
 FRICREG_API size_t fricreg_structure_warning_count(fricreg_structure *s);

@@ -716,6 +716,30 @@ static int w_st_get_dissipation(void)
 {
     return fricreg_structure_get_dissipation(ST(), Z(0, 1), OUTD(1));
 }
+static int w_st_set_error_estimate(void)
+{
+    return fricreg_structure_set_error_estimate(ST(), N(0, 1));
+}
+static int w_st_get_peak_displacement(void)
+{
+    return fricreg_structure_get_peak_displacement(ST(), Z(0, 2), OUTD(1));
+}
+/* The error getters after one step with the estimate on (before it: FRICREG_EINVAL). */
+static void st_estimated(void)
+{
+    ck_assert_int_eq(fricreg_structure_set_error_estimate(FX_->st, 1), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_step(FX_->st, 0.01), FRICREG_OK);
+}
+static int w_st_get_peak_displacement_error(void)
+{
+    st_estimated();
+    return fricreg_structure_get_peak_displacement_error(ST(), Z(0, 2), OUTD(1));
+}
+static int w_st_get_dissipation_error(void)
+{
+    st_estimated();
+    return fricreg_structure_get_dissipation_error(ST(), Z(0, 1), OUTD(1));
+}
 static int w_st_get_value(void)
 {
     return fricreg_structure_get_value(ST(), N(0, FRICREG_SVALUE_TIME), OUTD(1));
@@ -1742,6 +1766,26 @@ static const struct row rows[] = {
     {"fricreg_structure_get_dissipation",
      w_st_get_dissipation,
      "0s",
+     NONE,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0")}},
+    {"fricreg_structure_set_error_estimate",
+     w_st_set_error_estimate,
+     "0i",
+     ST_REC,
+     {HANDLE, INT(0, "ioii")}},
+    {"fricreg_structure_get_peak_displacement",
+     w_st_get_peak_displacement,
+     "0s",
+     NONE,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0")}},
+    {"fricreg_structure_get_peak_displacement_error",
+     w_st_get_peak_displacement_error,
+     "0is",
+     NONE,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0")}},
+    {"fricreg_structure_get_dissipation_error",
+     w_st_get_dissipation_error,
+     "0is",
      NONE,
      {HANDLE, SIZE(0, "ssss"), PTR(1, "0")}},
     {"fricreg_structure_get_value",

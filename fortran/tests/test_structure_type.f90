@@ -11,7 +11,9 @@
 !     written), an object not created (FRICREG_ENULL), C's own refusals with C's message;
 !   - its warnings (warning_count, get_warning): a ground record typed in g raises ground_peak;
 !   - an observer (a bind(C) function with interface fricreg_structure_observer) that stops
-!     the run after 10 of its 100 steps, and the bound on run_ode's adaptive steps.
+!     the run after 10 of its 100 steps, and the bound on run_ode's adaptive steps;
+!   - the error estimate (set_error_estimate, get_peak_displacement, get_peak_displacement_error,
+!     get_dissipation_error) on the frame's two runs, equal bit for bit to the C API's.
 module step_watch
   use, intrinsic :: iso_c_binding
   implicit none
@@ -139,6 +141,9 @@ program test_structure_type
                     FRICREG_OK, 'set_initial, u0 absent')
   call check_status(st%set_hht(-0.07_c_double), FRICREG_OK, 'set_hht')
   call check_status(st%set_newton(tol=1e-11_c_double), FRICREG_OK, 'set_newton, tol only')
+  call check_status(st%get_dissipation_error(mun), FRICREG_EINVAL, 'no estimate yet')
+  call check_status(st%set_error_estimate(2_c_int), FRICREG_EINVAL, 'set_error_estimate 2')
+  call check_status(st%set_error_estimate(1_c_int), FRICREG_OK, 'set_error_estimate')
   call check_status(st%run(dt, t_end), FRICREG_OK, 'run HHT')
   call compare_with_c(.false.)
   call check_status(st%set_newmark(), FRICREG_OK, 'set_newmark, defaults')
@@ -184,7 +189,7 @@ contains
     logical, intent(in) :: gsl
     type(c_ptr) :: s
     real(c_double) :: uf(3), vf(3), af(3), uc(3), vc(3), ac(3), ff(2), fc(2), Df(2), Dc(2)
-    real(c_double) :: wf, wc
+    real(c_double) :: wf, wc, pf(3), pc(3), pef(3), pec(3), Def(2), Dec(2)
     integer(c_int64_t) :: nf, nc
     integer(c_int) :: which
     character(len=8) :: tag
@@ -198,6 +203,7 @@ contains
     call check_status(fricreg_structure_set_bounds(s, 2_c_size_t, mun), FRICREG_OK, 'C bounds')
     call check_status(fricreg_structure_set_law(s, FRICREG_LAW_QUINN, 0.0213_c_double), &
                       FRICREG_OK, 'C law')
+    call check_status(fricreg_structure_set_error_estimate(s, 1_c_int), FRICREG_OK, 'C estimate')
     call check_status(fricreg_structure_set_influence(s, 3_c_size_t, [1.0_c_double, &
                       1.0_c_double, 0.5_c_double]), FRICREG_OK, 'C influence')
     call check_status(fricreg_structure_set_ground_accel(s, 0.0_c_double, 0.0123_c_double, &
@@ -235,6 +241,25 @@ contains
     do i = 1, 2
       call check_bits(ff(i), fc(i), trim(tag) // ': f')
       call check_bits(Df(i), Dc(i), trim(tag) // ': D')
+    end do
+    call check_status(st%get_peak_displacement(pf), FRICREG_OK, 'get_peak_displacement ' // tag)
+    call check_status(fricreg_structure_get_peak_displacement(s, 3_c_size_t, pc), FRICREG_OK, &
+                      'C peak')
+    call check_status(st%get_peak_displacement_error(pef), FRICREG_OK, 'peak error ' // tag)
+    call check_status(fricreg_structure_get_peak_displacement_error(s, 3_c_size_t, pec), &
+                      FRICREG_OK, 'C peak error')
+    call check_status(st%get_dissipation_error(Def), FRICREG_OK, 'dissipation error ' // tag)
+    call check_status(fricreg_structure_get_dissipation_error(s, 2_c_size_t, Dec), FRICREG_OK, &
+                      'C dissipation error')
+    call check_status(st%get_dissipation_error(pef), FRICREG_ESIZE, 'dissipation error of 3')
+    call check(all(Def > 0.0_c_double .and. Def < 0.1_c_double * Df), &
+               trim(tag) // ': D estimates finite, above 0, below 10% of D')
+    do i = 1, 3
+      call check_bits(pf(i), pc(i), trim(tag) // ': peak')
+      call check_bits(pef(i), pec(i), trim(tag) // ': peak error')
+    end do
+    do i = 1, 2
+      call check_bits(Def(i), Dec(i), trim(tag) // ': D error')
     end do
     do which = FRICREG_SVALUE_TIME, FRICREG_SVALUE_INITIAL
       call check_status(st%get_value(which, wf), FRICREG_OK, 'get_value')

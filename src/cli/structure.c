@@ -155,6 +155,10 @@ static int setup(const struct structure_options *o, const struct structure_input
     *eps = o->eps > 0.0 ? o->eps : default_eps(s);
     if (fricreg_structure_set_law(s, o->law, *eps) != FRICREG_OK)
         return cli_usage_error("--eps", fricreg_structure_errmsg(s));
+    /* The library's error estimate (a companion at eps / 2 and dt / 2, or an adaptive run's
+     * tolerances / 16): the summary's only, a trajectory has no place for it. */
+    if (o->error_estimate && o->output == CLI_SUMMARY)
+        fricreg_structure_set_error_estimate(s, 1);
     return set_scheme(s, o);
 }
 
@@ -179,26 +183,40 @@ static void csv_header(FILE *out, size_t n, size_t m)
     fputc('\n', out);
 }
 
+/* A CSV row of the state (t, u[n], v[n], f[m]). */
+static void csv_row(FILE *out, double t, size_t n, const double u[], const double v[], size_t m,
+                    const double f[])
+{
+    fprintf(out, "%.17g", t);
+    for (size_t i = 0; i < n; i++)
+        fprintf(out, ",%.17g", u[i]);
+    for (size_t i = 0; i < n; i++)
+        fprintf(out, ",%.17g", v[i]);
+    for (size_t i = 0; i < m; i++)
+        fprintf(out, ",%.17g", f[i]);
+    fputc('\n', out);
+}
+
+/* A row of the current state, after a call of GSL's steppers (and at the start). */
 static void observe(const fricreg_structure *s, const struct structure_input *in,
                     struct structure_run *run)
 {
-    /* the velocities only for a row: the summary's are the last state's (write_summary) */
-    fricreg_structure_get_state(s, in->n, run->u, run->rows != NULL ? run->v : NULL, NULL);
-    for (size_t i = 0; i < in->n; i++)
-        run->peak[i] = fmax(run->peak[i], fabs(run->u[i]));
     if (run->rows == NULL)
-        return;
+        return; /* the peaks are the library's (fricreg_structure_get_peak_displacement) */
     double t = 0.0;
     fricreg_structure_get_value(s, FRICREG_SVALUE_TIME, &t);
+    fricreg_structure_get_state(s, in->n, run->u, run->v, NULL);
     fricreg_structure_get_forces(s, in->m, run->f);
-    fprintf(run->rows, "%.17g", t);
-    for (size_t i = 0; i < in->n; i++)
-        fprintf(run->rows, ",%.17g", run->u[i]);
-    for (size_t i = 0; i < in->n; i++)
-        fprintf(run->rows, ",%.17g", run->v[i]);
-    for (size_t i = 0; i < in->m; i++)
-        fprintf(run->rows, ",%.17g", run->f[i]);
-    fputc('\n', run->rows);
+    csv_row(run->rows, t, in->n, run->u, run->v, in->m, run->f);
+}
+
+/* The observer of fricreg_structure_run: a row per step. */
+static int observe_step(void *user, double t, size_t n, const double u[], const double v[],
+                        size_t m, const double f[])
+{
+    struct structure_run *run = user;
+    csv_row(run->rows, t, n, u, v, m, f);
+    return 0;
 }
 
 static double svalue(const fricreg_structure *s, int which)
@@ -221,16 +239,22 @@ static void spend_steps(fricreg_structure *s, const struct structure_options *o,
     fricreg_structure_set_max_steps(s, left > 1 ? left : 1);
 }
 
-/* Steps of dt to t_end, the last one shortened (as fricreg_structure_run counts them), the
- * state observed after each; GSL's steppers are run from sample to sample (adaptive ones
- * restart at each with dt as their first step, within --max-steps over the whole run). */
+/* Steps of dt to t_end, the last one shortened, the state observed after each: the
+ * structure's own schemes in one fricreg_structure_run (its observer writing the rows), GSL's
+ * steppers from sample to sample (adaptive ones restart at each with dt as their first step,
+ * within --max-steps over the whole run). */
 static int advance(fricreg_structure *s, const struct structure_options *o,
                    const struct structure_input *in, struct structure_run *run)
 {
+    observe(s, in, run);
+    if (o->scheme != SCHEME_GSL) {
+        if (run->rows != NULL)
+            fricreg_structure_set_observer(s, observe_step, run);
+        return fricreg_structure_run(s, o->dt, o->t_end);
+    }
     double steps = ceil(o->t_end / o->dt * (1.0 - 1e-12)); /* <= 2^31: check_options */
     int64_t nsteps = steps < 1.0 ? 1 : (int64_t)steps, start = 0;
     fricreg_structure_get_stat(s, FRICREG_SSTAT_STEPS, &start);
-    observe(s, in, run);
     /* The structure's time, kept here: each call ends on its t1 exactly, and asking the
      * library (fricreg_structure_get_value) costs its energies, O(nnz), every step. */
     double t = svalue(s, FRICREG_SVALUE_TIME);
@@ -240,9 +264,7 @@ static int advance(fricreg_structure *s, const struct structure_options *o,
         /* One step of exactly t1 - t: k dt - (k - 1) dt may exceed dt by a rounding, which
          * would make run() split it. */
         double h = t1 - t;
-        int status = o->scheme == SCHEME_GSL
-                         ? fricreg_structure_run_ode(s, o->integrator, h, o->rtol, o->atol, t1)
-                         : fricreg_structure_run(s, h, t1);
+        int status = fricreg_structure_run_ode(s, o->integrator, h, o->rtol, o->atol, t1);
         if (status != FRICREG_OK)
             return status;
         t = t1;
@@ -283,10 +305,9 @@ static const char *scheme_name(const struct structure_options *o)
     return o->scheme == SCHEME_GSL ? fricreg_integrator_name(o->integrator) : names[o->scheme];
 }
 
-/* The error estimates of the headline quantities against eps -> 0 from a companion run at
- * eps / 2 (dt / 2 for fixed steps, tolerances / 16 for adaptive ones), as
- * fricreg_sim_set_error_estimate: 3 |q - q_companion| (docs/structural.md, "Error estimate").
- * NULL arrays: none made. */
+/* The error estimates of the headline quantities against eps -> 0, the library's
+ * (fricreg_structure_set_error_estimate: a companion at eps / 2 and dt / 2, or tolerances / 16,
+ * err = 3 |q - q_companion|; docs/structural.md, "Error estimate"). NULL arrays: none made. */
 struct structure_estimate {
     double *peak_err, *D_err; /* [n], [m]; +infinity where the companion failed */
 };
@@ -299,7 +320,7 @@ static void write_summary(FILE *out, const struct structure_options *o,
     int64_t steps = sstat(s, FRICREG_SSTAT_STEPS);
     double *D = run->f; /* the forces are not needed any more */
     fricreg_structure_get_dissipation(s, in->m, D);
-    fricreg_structure_get_state(s, in->n, NULL, run->v, NULL);
+    fricreg_structure_get_state(s, in->n, run->u, run->v, NULL);
     fprintf(out, "{\"system\": \"structure\", \"law\": \"%s\", \"integrator\": \"%s\", ",
             fricreg_law_name(o->law), scheme_name(o));
     if (o->scheme == SCHEME_HHT)
@@ -352,75 +373,18 @@ static void write_summary(FILE *out, const struct structure_options *o,
     fputs("}\n", out);
 }
 
-/* An error_estimate warning, printed as the library's are and added to the summary's list. */
-static void estimate_warning(struct cli_warnings *w, const char *msg)
+/* The library's estimates into est (one allocation, at est->peak_err), if it made them. */
+static void read_estimate(const fricreg_structure *s, const struct structure_input *in,
+                          struct structure_estimate *est)
 {
-    struct cli_warnings one = {.n = 1, .code = {FRICREG_WARN_ERROR_ESTIMATE}};
-    snprintf(one.message[0], sizeof one.message[0], "%s", msg);
-    cli_print_warnings(&one);
-    if (w->n < 16) {
-        w->code[w->n] = one.code[0];
-        memcpy(w->message[w->n++], one.message[0], sizeof one.message[0]);
-    }
-}
-
-/* Runs the companion and fills est (one allocation, at est->peak_err); warns where the
- * companion failed or an estimate is above 10% of its quantity (outside the asymptotic
- * range, as fricreg_sim's FRICREG_WARN_ERROR_ESTIMATE). */
-static void estimate(const fricreg_structure *s, const struct structure_input *in,
-                     const struct structure_run *run, fricreg_structure *companion,
-                     const struct structure_options *oc, struct structure_estimate *est,
-                     struct cli_warnings *w)
-{
-    size_t n = in->n, m = in->m;
-    double *buf = malloc((n + 3 * m + 1) * sizeof *buf);
-    double *cbuf = calloc(3 * n + m + 1, sizeof *cbuf);
-    if (buf == NULL || cbuf == NULL) {
+    double *buf = malloc((in->n + in->m) * sizeof *buf);
+    if (buf != NULL && fricreg_structure_get_peak_displacement_error(s, in->n, buf) == FRICREG_OK &&
+        fricreg_structure_get_dissipation_error(s, in->m, buf + in->n) == FRICREG_OK) {
+        est->peak_err = buf;
+        est->D_err = buf + in->n;
+    } else {
         free(buf);
-        free(cbuf);
-        estimate_warning(w, "no error estimate could be formed: out of memory");
-        return;
     }
-    est->peak_err = buf;
-    est->D_err = buf + n;
-    double *D = buf + n + m, *Dc = buf + n + 2 * m;
-    struct structure_run crun = {.u = cbuf, .v = cbuf + n, .peak = cbuf + 2 * n, .f = cbuf + 3 * n};
-    int status = advance(companion, oc, in, &crun);
-    if (status != FRICREG_OK) {
-        char msg[256];
-        snprintf(msg, sizeof msg,
-                 "no error estimate could be formed (null): the companion run at eps = %g "
-                 "failed: %s",
-                 oc->eps, fricreg_structure_errmsg(companion));
-        estimate_warning(w, msg);
-        for (size_t i = 0; i < n + m; i++)
-            buf[i] = INFINITY;
-        free(cbuf);
-        return;
-    }
-    fricreg_structure_get_dissipation(s, m, D);
-    fricreg_structure_get_dissipation(companion, m, Dc);
-    double peak = 0.0, peak_err = 0.0, Dsum = 0.0, Derr = 0.0;
-    for (size_t i = 0; i < n; i++) {
-        est->peak_err[i] = 3.0 * fabs(run->peak[i] - crun.peak[i]);
-        peak = fmax(peak, run->peak[i]);
-        peak_err = fmax(peak_err, est->peak_err[i]);
-    }
-    for (size_t j = 0; j < m; j++) {
-        est->D_err[j] = 3.0 * fabs(D[j] - Dc[j]);
-        Dsum += fabs(D[j]);
-        Derr += est->D_err[j];
-    }
-    if (peak_err > 0.1 * peak || Derr > 0.1 * Dsum) {
-        char msg[256];
-        snprintf(msg, sizeof msg,
-                 "an error estimate is above 10%% of its quantity (peak %.3g +- %.3g, "
-                 "dissipation %.3g +- %.3g): eps or dt is too coarse for the estimate, which may "
-                 "then not bound the error; halve them",
-                 peak, peak_err, Dsum, Derr);
-        estimate_warning(w, msg);
-    }
-    free(cbuf);
 }
 
 /* A refused step size is a bad --dt (exit 2); any other failure of the run exits 1. */
@@ -453,8 +417,7 @@ static void copy_stream(FILE *from, FILE *to)
 /* Runs the set-up structure; the trajectory goes to a temporary file first, so that a failed
  * run writes nothing to out. */
 static int run_structure(fricreg_structure *s, const struct structure_options *o,
-                         const struct structure_input *in, double eps, FILE *out,
-                         fricreg_structure *companion, const struct structure_options *oc)
+                         const struct structure_input *in, double eps, FILE *out)
 {
     struct structure_run run = {0};
     double *buf = calloc(3 * in->n + in->m + in->el.m, sizeof *buf);
@@ -479,8 +442,9 @@ static int run_structure(fricreg_structure *s, const struct structure_options *o
     struct cli_warnings warnings;
     structure_warnings(s, &warnings);
     struct structure_estimate est = {0};
-    if (status == FRICREG_OK && companion != NULL)
-        estimate(s, in, &run, companion, oc, &est, &warnings);
+    fricreg_structure_get_peak_displacement(s, in->n, run.peak);
+    if (status == FRICREG_OK)
+        read_estimate(s, in, &est);
     if (status != FRICREG_OK)
         status = run_failed(s, status);
     else if (run.rows != NULL)
@@ -512,27 +476,9 @@ int cli_structure(int argc, char **argv, FILE *out)
     }
     double eps = 0.0;
     status = setup(&o, &in, s, &eps);
-    /* The companion of the error estimate: eps / 2 and dt / 2, or an adaptive GSL run's
-     * tolerances / 16 (dt is then the sampling interval, kept). */
-    struct structure_options oc = o;
-    fricreg_structure *companion = NULL;
-    if (status == 0 && o.error_estimate && o.output == CLI_SUMMARY) {
-        double eps_c = 0.0;
-        oc.eps = 0.5 * eps;
-        if (o.scheme == SCHEME_GSL && (o.rtol > 0.0 || o.atol > 0.0)) {
-            oc.rtol /= 16.0;
-            oc.atol /= 16.0;
-        } else {
-            oc.dt *= 0.5;
-        }
-        if (fricreg_structure_create(in.n, in.m, &companion) != FRICREG_OK ||
-            setup(&oc, &in, companion, &eps_c) != 0)
-            status = cli_usage_error("--error-estimate", "cannot set up the companion run");
-    }
     cli_free_matrices(&in);
     if (status == 0)
-        status = run_structure(s, &o, &in, eps, out, companion, &oc);
-    fricreg_structure_free(companion);
+        status = run_structure(s, &o, &in, eps, out);
     fricreg_structure_free(s);
     cli_free_model(&in);
     return status;

@@ -274,6 +274,17 @@ static int set_csr(fricreg_structure *s, size_t me, size_t ndof, int flags, cons
     return status != FRICREG_OK ? status : install(s, me, ns, J, k, phi, NULL, NULL, who);
 }
 
+int fr_elements_clone(fricreg_structure *dst, const fricreg_structure *src)
+{
+    const struct fr_elements *e = &src->el;
+    if (e->me == 0)
+        return FRICREG_OK;
+    cholmod_sparse *J = cholmod_l_transpose(e->Jt, 1, &dst->cc);
+    if (J == NULL)
+        return fr_fail(dst, FRICREG_ENOMEM, "companion: no memory for %zu elements", e->me);
+    return install(dst, e->me, e->ns, J, e->k, e->phi, e->n0, e->kn, "companion");
+}
+
 int fricreg_structure_set_jenkins(fricreg_structure *s, size_t me, size_t ndof, const double Je[],
                                   const double kt[], const double mun[])
 {

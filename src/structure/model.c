@@ -14,8 +14,9 @@ void fr_structure_model_changed(fricreg_structure *s)
 {
     s->prepared = 0;
     s->ready = 0;
-    s->bound_scale = -1.0; /* J may have changed */
-    s->step_dt = 0.0;      /* K_eff and W_eff are the model's too */
+    s->bound_scale = -1.0;  /* J may have changed */
+    s->step_dt = 0.0;       /* K_eff and W_eff are the model's too */
+    fr_estimate_discard(s); /* the run's companion copied the model it started with */
 }
 
 /* M is positive definite: CHOLMOD's Cholesky factor exists (a pivot that is not positive is

@@ -159,6 +159,7 @@ static int step_to(fricreg_structure *s, double t1)
     if (!converged)
         s->stats[FRICREG_SSTAT_NEWTON_FAILURES]++;
     fr_warn_track_step(s, dt, 0);
+    fr_peak_sample(s);
     return FRICREG_OK;
 }
 
@@ -183,7 +184,10 @@ int fricreg_structure_step(fricreg_structure *s, double dt)
     double t1 = s->t + dt;
     if (!(t1 > s->t))
         return fr_fail(s, FRICREG_EINVAL, "step: dt = %g is lost against t = %g", dt, s->t);
-    return step_to(s, t1);
+    fr_estimate_begin(s);
+    status = step_to(s, t1);
+    fr_estimate_follow(s, 0, dt, 0.0, 0.0);
+    return status;
 }
 
 int fricreg_structure_run(fricreg_structure *s, double dt, double t_end)
@@ -207,6 +211,7 @@ int fricreg_structure_run(fricreg_structure *s, double dt, double t_end)
     if (steps > MAX_RUN_STEPS)
         return fr_fail(s, FRICREG_EINVAL, "run: %g steps of dt = %g exceed 2^31", steps, dt);
     int64_t nsteps = steps < 1.0 ? 1 : (int64_t)steps;
+    fr_estimate_begin(s);
     s->running = 1;
     for (int64_t k = 1; k <= nsteps && status == FRICREG_OK; k++) {
         double t1 = k == nsteps ? t_end : t0 + (double)k * dt;
@@ -219,6 +224,7 @@ int fricreg_structure_run(fricreg_structure *s, double dt, double t_end)
             break; /* the observer asked to stop: not an error */
     }
     s->running = 0;
+    fr_estimate_follow(s, 0, dt, 0.0, 0.0); /* to where the run ended, failed or stopped */
     return status;
 }
 

@@ -48,6 +48,8 @@ void fricreg_structure_free(fricreg_structure *s)
     free(s->ground.x);
     free(s->load.x);
     free(s->energy.per_contact);
+    free(s->peak);
+    fricreg_structure_free(s->companion);
     free(s);
 }
 
@@ -76,7 +78,8 @@ static int allocate(fricreg_structure *s)
     s->mun = malloc(m * sizeof *s->mun);
     s->stopped = calloc(m, sizeof *s->stopped);
     s->energy.per_contact = calloc(m, sizeof *s->energy.per_contact);
-    if (!(s->mun && s->stopped && s->energy.per_contact) ||
+    s->peak = calloc(n, sizeof *s->peak);
+    if (!(s->mun && s->stopped && s->energy.per_contact && s->peak) ||
         fricreg_ctx_create(m, &s->ctx) != FRICREG_OK || fr_cholmod_start(&s->cc) != FRICREG_OK)
         return 0;
     s->M = cholmod_l_speye(n, n, CHOLMOD_REAL, &s->cc);
@@ -146,6 +149,9 @@ int fricreg_structure_set_max_steps(fricreg_structure *s, int64_t max_steps)
                        "set_max_steps: max_steps = %lld must be >= 0 (0: no bound)",
                        (long long)max_steps);
     s->max_steps = max_steps;
+    if (s->companion != NULL)
+        fr_estimate_forwarded(s, fricreg_structure_set_max_steps(s->companion, max_steps),
+                              "set_max_steps");
     return FRICREG_OK;
 }
 
@@ -200,6 +206,8 @@ int fricreg_structure_set_bounds(fricreg_structure *s, size_t m, const double mu
     memcpy(s->mun, mun, m * sizeof *mun);
     s->bound_scale = -1.0;
     s->ready = 0; /* W is unchanged: only the equilibrium at t is recomputed */
+    if (s->companion != NULL)
+        fr_estimate_forwarded(s, fricreg_structure_set_bounds(s->companion, m, mun), "set_bounds");
     return FRICREG_OK;
 }
 
@@ -213,6 +221,9 @@ int fricreg_structure_set_law(fricreg_structure *s, int law, double eps)
     if (status != FRICREG_OK)
         return ctx_failed(s, status);
     s->ready = 0;
+    if (s->companion != NULL) /* the companion's eps stays half the structure's */
+        fr_estimate_forwarded(s, fricreg_structure_set_law(s->companion, law, 0.5 * eps),
+                              "set_law");
     return FRICREG_OK;
 }
 
@@ -282,7 +293,12 @@ int fricreg_structure_set_ground_accel(fricreg_structure *s, double t0, double d
         return fr_structure_busy(s, "set_ground_accel");
     /* The step's start keeps the load it began with (a holds the equation there): the
      * record is read at step ends only, so a caller may feed it step by step. */
-    return set_record(s, "set_ground_accel", &s->ground, t0, dt_rec, n, ag);
+    int status = set_record(s, "set_ground_accel", &s->ground, t0, dt_rec, n, ag);
+    if (status == FRICREG_OK && s->companion != NULL)
+        fr_estimate_forwarded(s,
+                              fricreg_structure_set_ground_accel(s->companion, t0, dt_rec, n, ag),
+                              "set_ground_accel");
+    return status;
 }
 
 int fricreg_structure_set_load(fricreg_structure *s, size_t ndof, const double p[], double t0,
@@ -299,6 +315,10 @@ int fricreg_structure_set_load(fricreg_structure *s, size_t ndof, const double p
     if (status != FRICREG_OK)
         return status;
     memcpy(s->p->data, p, ndof * sizeof *p);
+    if (s->companion != NULL)
+        fr_estimate_forwarded(s,
+                              fricreg_structure_set_load(s->companion, ndof, p, t0, dt_rec, n, g),
+                              "set_load");
     return FRICREG_OK; /* read at step ends only, as the ground motion */
 }
 
@@ -325,6 +345,9 @@ int fricreg_structure_set_initial(fricreg_structure *s, size_t ndof, const doubl
     fr_energy_reset(s);
     memset(s->stats, 0, sizeof s->stats);
     fr_warn_track_reset(s);
+    for (size_t i = 0; i < ndof; i++)
+        s->peak[i] = fabs(u0[i]);
+    fr_estimate_discard(s); /* a new run: a new companion at its first step */
     return FRICREG_OK;
 }
 
@@ -349,6 +372,7 @@ int fricreg_structure_set_newmark(fricreg_structure *s, double beta, double gamm
     s->beta = beta;
     s->gamma = gamma;
     s->step_dt = 0.0;
+    fr_estimate_discard(s);
     return FRICREG_OK;
 }
 
@@ -367,6 +391,7 @@ int fricreg_structure_set_hht(fricreg_structure *s, double alpha)
     s->beta = (1.0 - alpha) * (1.0 - alpha) / 4.0;
     s->gamma = 0.5 - alpha;
     s->step_dt = 0.0;
+    fr_estimate_discard(s);
     return FRICREG_OK;
 }
 
@@ -377,6 +402,7 @@ int fricreg_structure_set_central_difference(fricreg_structure *s)
     if (s->running)
         return fr_structure_busy(s, "set_central_difference");
     s->scheme = FR_SCHEME_CENTRAL;
+    fr_estimate_discard(s);
     return FRICREG_OK;
 }
 
@@ -395,6 +421,9 @@ int fricreg_structure_set_newton(fricreg_structure *s, double tol, int max_iter)
                        tol, max_iter);
     s->newton_tol = tol;
     s->newton_max = max_iter;
+    if (s->companion != NULL)
+        fr_estimate_forwarded(s, fricreg_structure_set_newton(s->companion, tol, max_iter),
+                              "set_newton");
     return FRICREG_OK;
 }
 

@@ -173,6 +173,22 @@ struct fricreg_structure {
     double peak_speed;     /* the largest |zdot_i| = |(J v)_i| at a step's end */
     double max_dt;         /* the longest fixed step (run_ode's adaptive ones aside) */
     int64_t inexact_steps; /* steps of a scheme whose energy balance is not exact */
+
+    /* The largest |u_i| at the sampled times since set_initial (fricreg_structure_get_peak_
+     * displacement): every fixed step's end, every run_ode call's end. [n] */
+    double *peak;
+    /* The error estimate (error_estimate.c): a companion structure at eps / 2 stepped alongside
+     * at half the step (or tolerances / 16), made at the run's first step. */
+    int estimate_on;
+    int estimate_state; /* FR_ESTIMATE_* */
+    fricreg_structure *companion;
+    char estimate_msg[256]; /* why the estimate failed (FR_ESTIMATE_FAILED) */
+};
+
+enum {
+    FR_ESTIMATE_NONE = 0,   /* off, not started since set_initial, or ended by a setter */
+    FR_ESTIMATE_ACTIVE = 1, /* the companion follows the structure */
+    FR_ESTIMATE_FAILED = 2  /* the companion failed: the estimates are +infinity */
 };
 
 /* structure.c */
@@ -301,5 +317,22 @@ void fr_energy_step(fricreg_structure *s, const gsl_vector *u1, const gsl_vector
                     const gsl_vector *ptil1, const gsl_vector *f1);
 double fr_energy_kinetic(const fricreg_structure *s);
 double fr_energy_strain(const fricreg_structure *s);
+
+/* error_estimate.c. peak_sample: the peaks take in the current state. estimate_begin: at a
+ * stepping call's start, makes the companion if the estimate is on and the run starts there.
+ * estimate_follow: at the call's end, steps the companion to the structure's time with the
+ * call's scheme: fixed steps dt / 2 (integrator 0: the structure's own scheme), an adaptive
+ * GSL run the tolerances / 16. estimate_discard: set_initial, or a setter that changed what
+ * the companion copied (the model, the scheme): no estimate until the next run's start.
+ * estimate_forwarded: the companion's status of a setter passed on to it (bounds, law,
+ * records, Newton, the adaptive bound); a failure makes the estimate a failed one. */
+void fr_peak_sample(fricreg_structure *s);
+void fr_estimate_begin(fricreg_structure *s);
+void fr_estimate_follow(fricreg_structure *s, int integrator, double dt, double rtol, double atol);
+void fr_estimate_discard(fricreg_structure *s);
+void fr_estimate_forwarded(fricreg_structure *s, int status, const char *who);
+void fr_estimate_check(fricreg_structure *s); /* warnings.c's check of the estimate */
+/* jenkins.c: a copy of src's elements on dst (the companion), sliders at w = 0. */
+int fr_elements_clone(fricreg_structure *dst, const fricreg_structure *src);
 
 #endif

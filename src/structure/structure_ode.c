@@ -185,6 +185,8 @@ static int integrate(fricreg_structure *s, struct ode_run *run, gsl_odeiv2_drive
         s->t = t;
         s->stats[FRICREG_SSTAT_STEPS] += adaptive ? 1 : integ->substeps;
         fr_warn_track_step(s, adaptive ? 0.0 : dt, 1); /* a fixed step's length: dt_coarse */
+        if (!adaptive)
+            fr_peak_sample(s);
         if (s->observer != NULL && rhs(t, y, run->jac_work, run) == GSL_SUCCESS &&
             fr_structure_observe(s, t, y, y + s->n, s->f1->data))
             break; /* the observer asked to stop (its forces at (t, y)): not an error */
@@ -289,6 +291,7 @@ int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, d
     y[2 * s->n + 1] = s->energy.viscous;
     memcpy(y + 2 * s->n + 2, s->energy.per_contact, s->m * sizeof *y);
 
+    fr_estimate_begin(s);
     s->running = 1;
     status = integrate(s, &run, d, integ, adaptive, dt, t_end, y);
     s->running = 0;
@@ -297,10 +300,12 @@ int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, d
     free(run.jac_work);
     if (s->t == t_start)
         return status; /* nothing accepted (and a run ends after its start) */
+    fr_peak_sample(s); /* an adaptive run is sampled at the call's end (a fixed one each step) */
     if (s->fresh)
         s->energy.initial = initial;
     s->fresh = 0;
     s->ready = 0; /* the next step takes its acceleration from the equation of motion */
+    fr_estimate_follow(s, integrator, dt, rtol, atol);
     if (status == FRICREG_OK)
         return fr_structure_equilibrium(s);
     /* Failed after some steps: the state is the last accepted step's, and so are a and f, the

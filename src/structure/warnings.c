@@ -219,6 +219,7 @@ size_t fricreg_structure_warning_count(fricreg_structure *s)
     check_dt(s, period);
     check_newton(s);
     check_energy(s);
+    fr_estimate_check(s);
     return s->warnings.n;
 }
 

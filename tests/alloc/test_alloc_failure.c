@@ -1353,6 +1353,75 @@ static const struct script structure_script = {"structure",
                                                structure_errcode,
                                                structure_close};
 
+/* The frame with the error estimate on (fricreg_structure_set_error_estimate): its companion
+ * is made at the first run and receives the record set between the two runs. A failed
+ * allocation for the companion is a failed estimate (+infinity, a warning), not a failed call:
+ * the structure's own results must then be those of the reference, and nothing may leak. The
+ * view holds the estimate getters' statuses (OK with the estimate, EINVAL without), not their
+ * values, which such a failure makes infinite. */
+static void see_structure_estimate(const fricreg_structure *s, struct view *v)
+{
+    double peak[3] = {-1, -1, -1}, err[3] = {-1, -1, -1};
+    see_structure(s, v);
+    see(v, fricreg_structure_get_peak_displacement(s, 3, peak));
+    see_all(v, peak, 3);
+    see(v, fricreg_structure_get_peak_displacement_error(s, 3, err));
+    see(v, fricreg_structure_get_dissipation_error(s, 2, err));
+}
+
+static void structure_estimate_observe(void *obj, struct view *v)
+{
+    double t = 0.0;
+    see_structure_estimate(obj, v);
+    fricreg_structure_get_value(obj, FRICREG_SVALUE_TIME, &t);
+    see(v, structure_advance(obj, t + 0.1));
+    see_structure_estimate(obj, v);
+}
+
+static const char *const structure_estimate_calls[] = {
+    "set_mass",   "set_stiffness",       "set_contacts",
+    "set_bounds", "set_influence",       "set_ground_accel(A)",
+    "set_law",    "set_error_estimate",  "the scheme",
+    "run (half)", "set_ground_accel(B)", "run"};
+
+static int structure_estimate_call(void *obj, int i, struct view *v)
+{
+    (void)v;
+    static const double u0[3] = {0.01, -0.02, 0.005}, v0[3] = {0.0, 0.1, -0.05};
+    switch (i) {
+    case 0: return fricreg_structure_set_mass(obj, 3, FRAME_M);
+    case 1: return fricreg_structure_set_stiffness(obj, 3, FRAME_K);
+    case 2: return fricreg_structure_set_contacts(obj, 2, 3, FRAME_J);
+    case 3: return fricreg_structure_set_bounds(obj, 2, FRAME_MUN);
+    case 4: return fricreg_structure_set_influence(obj, 3, FRAME_R);
+    case 5: return fricreg_structure_set_ground_accel(obj, 0.0, 0.25, 4, GROUND_A);
+    case 6: return fricreg_structure_set_law(obj, FRICREG_LAW_QUINN, 0.5);
+    case 7: return fricreg_structure_set_error_estimate(obj, 1);
+    case 8:
+        switch (current_scheme) {
+        case SCHEME_NEWMARK: return fricreg_structure_set_newmark(obj, 0.3025, 0.6);
+        case SCHEME_HHT: return fricreg_structure_set_hht(obj, -0.1);
+        case SCHEME_CENTRAL: return fricreg_structure_set_central_difference(obj);
+        default: return fricreg_structure_set_initial(obj, 3, u0, v0);
+        }
+    case 9: return structure_advance(obj, 0.5 * ST_T_END);
+    case 10: return fricreg_structure_set_ground_accel(obj, 0.0, 0.2, 5, GROUND_B);
+    default: return structure_advance(obj, ST_T_END);
+    }
+}
+
+static const struct script structure_estimate_script = {"structure with the error estimate",
+                                                        12,
+                                                        structure_estimate_calls,
+                                                        0,
+                                                        0,
+                                                        structure_open,
+                                                        structure_estimate_call,
+                                                        NULL,
+                                                        structure_estimate_observe,
+                                                        structure_errcode,
+                                                        structure_close};
+
 /* The frame with Jenkins elements for dampers (the contacts' bounds 0): set_jenkins (dense)
  * replaced by set_jenkins_csr (the second pair of elements), stepped by Newmark, HHT-alpha and
  * central difference (run_ode refuses elements). */
@@ -2305,6 +2374,19 @@ START_TEST(test_structure_run)
 }
 END_TEST
 
+START_TEST(test_structure_estimate_run)
+{
+    static const char *const names[N_SCHEMES] = {"structure newmark, error estimate",
+                                                 "structure hht, error estimate",
+                                                 "structure central difference, error estimate",
+                                                 "structure run_ode rkf45, error estimate"};
+    current_scheme = _i;
+    struct script sc = structure_estimate_script;
+    sc.name = names[_i];
+    fail_each_allocation(&sc); /* a companion's failure is OK with the structure's own results */
+}
+END_TEST
+
 START_TEST(test_structure_jenkins_run)
 {
     static const char *const names[3] = {"structure newmark, Jenkins elements",
@@ -2491,6 +2573,7 @@ static Suite *alloc_suite(void)
     tcase_add_test(drivers, test_hb_iwan);
     tcase_add_test(drivers, test_hb_normal);
     tcase_add_loop_test(drivers, test_structure_run, 0, N_SCHEMES);
+    tcase_add_loop_test(drivers, test_structure_estimate_run, 0, N_SCHEMES);
     tcase_add_loop_test(drivers, test_structure_jenkins_run, 0, 3);
     tcase_add_loop_test(drivers, test_structure_joint_run, 0, 2); /* implicit: the joint step */
     tcase_add_loop_test(drivers, test_structure_iwan_run, 0, 3);

@@ -1,0 +1,336 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* test_structure_error.c — fricreg_structure_set_error_estimate: the estimates of the peak
+ * displacement and of the dissipation bound their error against the Coulomb problem and are
+ * within 10x of it, on a structure whose Coulomb solution is closed-form: a mass on a spring
+ * (m = k = 1) with a friction contact of bound F = 0.1, from u = 0 at u' = 1, whose free motion
+ * is half-cycles of unit frequency about -F sign(u') (the peak 0.90498756 = sqrt(1 + F^2) - F
+ * at t = atan(1/F), D = F times the path); the companion is exactly the documented one (a
+ * second structure at eps / 2 and dt / 2 gives the same numbers bit for bit); the setters a
+ * run calls between steps keep the estimate, the others end it; a failed companion and an
+ * estimate above 10% warn. */
+#include <check.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fricreg_structure.h"
+
+#define F 0.1
+#define PI 3.14159265358979323846
+#define T_END 6.0 /* past the first peak and one reversal, inside the third half-cycle */
+
+/* The Coulomb solution from (u, v) = (0, 1) at T: D(T) = F times the path, and the largest
+ * |u| on [0, T]. Each half-cycle of sign s = sign(u') is u - c = R cos(theta), c = -s F,
+ * theta advancing at unit rate until u' = 0 (theta = 0 for s > 0, pi for s < 0); the mass
+ * reverses there since |u| > F throughout this run (it would stick at |u| <= F). */
+static void coulomb(double T, double *D, double *peak)
+{
+    double t = 0.0, u = 0.0, v = 1.0, path = 0.0, pk = 0.0;
+    int s = 1;
+    while (t < T) {
+        double c = -s * F, R = hypot(u - c, v), theta = atan2(-v, u - c);
+        if (s < 0 && theta < 0.0)
+            theta += 2.0 * PI;
+        double span = fmin((s > 0 ? 0.0 : PI) - theta, T - t), u1 = c + R * cos(theta + span);
+        ck_assert(fabs(u1) > F || t + span >= T); /* a reversal, no stick */
+        path += fabs(u1 - u);
+        pk = fmax(pk, fabs(u1));
+        u = u1;
+        v = 0.0;
+        t += span;
+        s = -s;
+    }
+    *D = F * path;
+    *peak = pk;
+}
+
+static fricreg_structure *oscillator(double eps)
+{
+    fricreg_structure *s = NULL;
+    double one = 1.0, mun = F, u0 = 0.0, v0 = 1.0;
+    ck_assert_int_eq(fricreg_structure_create(1, 1, &s), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_stiffness(s, 1, &one), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_contacts(s, 1, 1, &one), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_bounds(s, 1, &mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_law(s, FRICREG_LAW_QUINN, eps), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_initial(s, 1, &u0, &v0), FRICREG_OK);
+    return s;
+}
+
+/* The run to T_END: Newmark's run (integrator 0) or run_ode, one call per interval dt (the
+ * sampling of an adaptive run). */
+static void run(fricreg_structure *s, int integrator, double dt, double rtol, double atol)
+{
+    if (integrator == 0) {
+        ck_assert_int_eq(fricreg_structure_run(s, dt, T_END), FRICREG_OK);
+        return;
+    }
+    long n = lround(T_END / dt);
+    for (long k = 1; k <= n; k++)
+        ck_assert_int_eq(fricreg_structure_run_ode(s, integrator, dt, rtol, atol,
+                                                   k == n ? T_END : (double)k * dt),
+                         FRICREG_OK);
+}
+
+/* The estimate >= the error and <= 10x it; no warning. */
+static void check_bounds(int integrator, double eps, double dt, double rtol, double atol,
+                         int peak_too)
+{
+    fricreg_structure *s = oscillator(eps);
+    ck_assert_int_eq(fricreg_structure_set_error_estimate(s, 1), FRICREG_OK);
+    run(s, integrator, dt, rtol, atol);
+    double D, peak, D_err, peak_err, D_ref, peak_ref;
+    ck_assert_int_eq(fricreg_structure_get_dissipation(s, 1, &D), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_peak_displacement(s, 1, &peak), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_dissipation_error(s, 1, &D_err), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_peak_displacement_error(s, 1, &peak_err), FRICREG_OK);
+    coulomb(T_END, &D_ref, &peak_ref);
+    ck_assert_double_eq_tol(peak_ref, sqrt(1.0 + F * F) - F, 1e-15);
+    double e = fabs(D - D_ref);
+    ck_assert_msg(D_err >= e && D_err <= 10.0 * e, "D: error %g, estimate %g (eps %g, dt %g)", e,
+                  D_err, eps, dt);
+    if (peak_too) {
+        e = fabs(peak - peak_ref);
+        ck_assert_msg(peak_err >= e && peak_err <= 10.0 * e,
+                      "peak: error %g, estimate %g (eps %g, dt %g)", e, peak_err, eps, dt);
+    }
+    ck_assert_uint_eq(fricreg_structure_warning_count(s), 0);
+    fricreg_structure_free(s);
+}
+
+/* Newmark at dt = eps and dt = eps / 10, eps = 1e-2 and 1e-3: D's error 1.7e-4 ... 1.8e-5,
+ * ratios 1.4 ... 1.6; the peak's 3.4e-6 ... 3.1e-8, ratios 2.3 ... 3.0. */
+START_TEST(test_newmark_bounds)
+{
+    check_bounds(0, 1e-2, 1e-2, 0.0, 0.0, 1);
+    check_bounds(0, 1e-2, 1e-3, 0.0, 0.0, 1);
+    check_bounds(0, 1e-3, 1e-3, 0.0, 0.0, 1);
+}
+END_TEST
+
+/* GSL's classical RK4 in fixed steps, and adaptive RKF45 sampled every 0.01: the adaptive
+ * companion is sampled at the same times, so its peak's estimate misses the sampling error
+ * (docstring): D only there. */
+START_TEST(test_gsl_bounds)
+{
+    check_bounds(FRICREG_INT_RK4, 1e-2, 1e-3, 0.0, 0.0, 1);
+    check_bounds(FRICREG_INT_RK4, 1e-3, 1e-3, 0.0, 0.0, 1);
+    check_bounds(FRICREG_INT_RKF45, 1e-2, 1e-2, 1e-6, 1e-8, 1);
+    check_bounds(FRICREG_INT_RKF45, 1e-3, 1e-2, 1e-6, 1e-8, 0);
+}
+END_TEST
+
+/* The companion is a structure at eps / 2 stepped at dt / 2: the estimates are 3 |q - q_c|
+ * bit for bit, for Newmark (run), step by step (step), and HHT. */
+static void check_companion(int by_steps, int hht)
+{
+    const double eps = 1e-2, dt = 2e-2;
+    fricreg_structure *s = oscillator(eps), *c = oscillator(0.5 * eps);
+    if (hht) {
+        ck_assert_int_eq(fricreg_structure_set_hht(s, -0.1), FRICREG_OK);
+        ck_assert_int_eq(fricreg_structure_set_hht(c, -0.1), FRICREG_OK);
+    }
+    ck_assert_int_eq(fricreg_structure_set_error_estimate(s, 1), FRICREG_OK);
+    if (by_steps) {
+        for (int k = 0; k < 300; k++)
+            ck_assert_int_eq(fricreg_structure_step(s, dt), FRICREG_OK);
+    } else {
+        ck_assert_int_eq(fricreg_structure_run(s, dt, T_END), FRICREG_OK);
+    }
+    double t = 0.0;
+    ck_assert_int_eq(fricreg_structure_get_value(s, FRICREG_SVALUE_TIME, &t), FRICREG_OK);
+    /* by steps: each step's two half steps, as run(c, dt / 2, t + dt) takes them */
+    if (by_steps) {
+        double tc = 0.0;
+        for (int k = 0; k < 300; k++) {
+            double t1 = tc + dt;
+            ck_assert_int_eq(fricreg_structure_run(c, 0.5 * dt, t1), FRICREG_OK);
+            tc = t1;
+        }
+    } else {
+        ck_assert_int_eq(fricreg_structure_run(c, 0.5 * dt, t), FRICREG_OK);
+    }
+    double D, Dc, p, pc, D_err, p_err;
+    ck_assert_int_eq(fricreg_structure_get_dissipation(s, 1, &D), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_dissipation(c, 1, &Dc), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_peak_displacement(s, 1, &p), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_peak_displacement(c, 1, &pc), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_dissipation_error(s, 1, &D_err), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_peak_displacement_error(s, 1, &p_err), FRICREG_OK);
+    ck_assert(D_err > 0.0 && p_err > 0.0);
+    ck_assert_double_eq(D_err, 3.0 * fabs(D - Dc));
+    ck_assert_double_eq(p_err, 3.0 * fabs(p - pc));
+    fricreg_structure_free(c);
+    fricreg_structure_free(s);
+}
+
+START_TEST(test_companion)
+{
+    check_companion(0, 0);
+    check_companion(1, 0);
+    check_companion(0, 1);
+}
+END_TEST
+
+/* The estimate's life: none while off, before a run, or after a model setter in a run; the
+ * setters of a run between steps keep it (the companion got them: the same estimate as a
+ * structure given them from the start); set_initial starts a new one. */
+START_TEST(test_life_cycle)
+{
+    double err = 0.0, one = 1.0, two = 2.0, zero = 0.0, v0 = 1.0, mun = F;
+    fricreg_structure *s = oscillator(1e-2);
+    ck_assert_int_eq(fricreg_structure_run(s, 1e-2, 1.0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_dissipation_error(s, 1, &err), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_structure_set_error_estimate(s, 1), FRICREG_OK);
+    /* turned on in a run: from the next set_initial */
+    ck_assert_int_eq(fricreg_structure_run(s, 1e-2, 2.0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_dissipation_error(s, 1, &err), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_structure_set_initial(s, 1, &zero, &v0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_peak_displacement_error(s, 1, &err), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_structure_run(s, 1e-2, 1.0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_peak_displacement_error(s, 1, &err), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_dissipation_error(s, 1, &err), FRICREG_OK);
+    /* bounds changed half-way: the companion follows, as a structure run in two legs */
+    mun = 0.05;
+    ck_assert_int_eq(fricreg_structure_set_bounds(s, 1, &mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_run(s, 1e-2, 2.0), FRICREG_OK);
+    double D_err = 0.0, D = 0.0, Dc = 0.0;
+    ck_assert_int_eq(fricreg_structure_get_dissipation_error(s, 1, &D_err), FRICREG_OK);
+    fricreg_structure *c = oscillator(0.5e-2);
+    ck_assert_int_eq(fricreg_structure_run(c, 0.5e-2, 1.0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_bounds(c, 1, &mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_run(c, 0.5e-2, 2.0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_dissipation(s, 1, &D), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_dissipation(c, 1, &Dc), FRICREG_OK);
+    ck_assert_double_eq(D_err, 3.0 * fabs(D - Dc));
+    fricreg_structure_free(c);
+    /* a model setter in the run ends it; off discards it */
+    ck_assert_int_eq(fricreg_structure_set_stiffness(s, 1, &two), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_dissipation_error(s, 1, &err), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_structure_run(s, 1e-2, 3.0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_dissipation_error(s, 1, &err), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_structure_set_initial(s, 1, &one, &zero), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_step(s, 1e-2), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_dissipation_error(s, 1, &err), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_error_estimate(s, 0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_dissipation_error(s, 1, &err), FRICREG_EINVAL);
+    /* the peak since set_initial: |u0| = 1 here, then smaller */
+    ck_assert_int_eq(fricreg_structure_get_peak_displacement(s, 1, &err), FRICREG_OK);
+    ck_assert_double_eq(err, 1.0);
+    fricreg_structure_free(s);
+}
+END_TEST
+
+/* Bad arguments: status, and nothing written. */
+START_TEST(test_bad_arguments)
+{
+    double err[2] = {-1.0, -1.0};
+    fricreg_structure *s = oscillator(1e-2);
+    ck_assert_int_eq(fricreg_structure_set_error_estimate(NULL, 1), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_structure_set_error_estimate(s, 2), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_structure_errcode(s), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_structure_set_error_estimate(s, 1), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_step(s, 1e-2), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_dissipation_error(NULL, 1, err), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_structure_get_dissipation_error(s, 1, NULL), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_structure_get_dissipation_error(s, 2, err), FRICREG_ESIZE);
+    ck_assert_int_eq(fricreg_structure_get_peak_displacement_error(s, 0, err), FRICREG_ESIZE);
+    ck_assert_int_eq(fricreg_structure_get_peak_displacement(s, 2, err), FRICREG_ESIZE);
+    ck_assert_int_eq(fricreg_structure_get_peak_displacement(NULL, 1, err), FRICREG_ENULL);
+    ck_assert_double_eq(err[0], -1.0);
+    fricreg_structure_free(s);
+}
+END_TEST
+
+/* An observer that turns the estimate off, and reads it, from inside a run: both refused
+ * (the companion has not caught up). */
+struct meddling {
+    fricreg_structure *s;
+    int set_status, get_status;
+};
+
+static int meddle(void *user, double t, size_t n, const double u[], const double v[], size_t m,
+                  const double f[])
+{
+    (void)t, (void)n, (void)u, (void)v, (void)m, (void)f;
+    struct meddling *box = user;
+    double err;
+    box->set_status = fricreg_structure_set_error_estimate(box->s, 0);
+    box->get_status = fricreg_structure_get_dissipation_error(box->s, 1, &err);
+    return 1;
+}
+
+START_TEST(test_observer)
+{
+    struct meddling box = {oscillator(1e-2), 0, 0};
+    ck_assert_int_eq(fricreg_structure_set_error_estimate(box.s, 1), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_observer(box.s, meddle, &box), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_run(box.s, 1e-2, 1.0), FRICREG_OK);
+    ck_assert_int_eq(box.set_status, FRICREG_EINVAL);
+    ck_assert_int_eq(box.get_status, FRICREG_EINVAL);
+    /* stopped after one step: the companion followed to there */
+    double err = -1.0;
+    ck_assert_int_eq(fricreg_structure_get_dissipation_error(box.s, 1, &err), FRICREG_OK);
+    ck_assert(err >= 0.0 && isfinite(err));
+    fricreg_structure_free(box.s);
+}
+END_TEST
+
+/* The companion takes more adaptive steps (tolerances / 16): bounded at what the run itself
+ * needs, it fails; the run does not, its estimates are +infinity with a warning. An eps far
+ * too large (3 against the velocity 1) gives estimates above 10%: a warning too. */
+START_TEST(test_warnings)
+{
+    fricreg_structure *s = oscillator(1e-2);
+    ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_RKF45, 1e-2, 1e-8, 1e-10, 2.0),
+                     FRICREG_OK);
+    int64_t steps = 0;
+    ck_assert_int_eq(fricreg_structure_get_stat(s, FRICREG_SSTAT_STEPS, &steps), FRICREG_OK);
+    fricreg_structure_free(s);
+    s = oscillator(1e-2);
+    ck_assert_int_eq(fricreg_structure_set_error_estimate(s, 1), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_max_steps(s, steps), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_RKF45, 1e-2, 1e-8, 1e-10, 2.0),
+                     FRICREG_OK);
+    double err = 0.0;
+    ck_assert_int_eq(fricreg_structure_get_dissipation_error(s, 1, &err), FRICREG_OK);
+    ck_assert(isinf(err) && err > 0.0);
+    ck_assert_int_eq(fricreg_structure_get_peak_displacement_error(s, 1, &err), FRICREG_OK);
+    ck_assert(isinf(err) && err > 0.0);
+    ck_assert_uint_eq(fricreg_structure_warning_count(s), 1);
+    int code = -1;
+    ck_assert_int_eq(fricreg_structure_get_warning(s, 0, &code, NULL, 0), FRICREG_OK);
+    ck_assert_int_eq(code, FRICREG_WARN_ERROR_ESTIMATE);
+    ck_assert_ptr_nonnull(strstr(fricreg_structure_warning_message(s, 0), "adaptive steps"));
+    fricreg_structure_free(s);
+
+    s = oscillator(3.0);
+    ck_assert_int_eq(fricreg_structure_set_error_estimate(s, 1), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_run(s, 1e-2, T_END), FRICREG_OK);
+    ck_assert_uint_eq(fricreg_structure_warning_count(s), 1);
+    ck_assert_int_eq(fricreg_structure_get_warning(s, 0, &code, NULL, 0), FRICREG_OK);
+    ck_assert_int_eq(code, FRICREG_WARN_ERROR_ESTIMATE);
+    ck_assert_ptr_nonnull(strstr(fricreg_structure_warning_message(s, 0), "above 10%"));
+    fricreg_structure_free(s);
+}
+END_TEST
+
+int main(void)
+{
+    Suite *suite = suite_create("structure_error");
+    TCase *tc = tcase_create("core");
+    tcase_set_timeout(tc, 60);
+    tcase_add_test(tc, test_newmark_bounds);
+    tcase_add_test(tc, test_gsl_bounds);
+    tcase_add_test(tc, test_companion);
+    tcase_add_test(tc, test_life_cycle);
+    tcase_add_test(tc, test_bad_arguments);
+    tcase_add_test(tc, test_observer);
+    tcase_add_test(tc, test_warnings);
+    suite_add_tcase(suite, tc);
+    SRunner *sr = srunner_create(suite);
+    srunner_run_all(sr, CK_NORMAL);
+    int failed = srunner_ntests_failed(sr);
+    srunner_free(sr);
+    return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
