@@ -673,15 +673,14 @@ static const double ST_JE2[4] = {1.0, 0.0, 0.0, 1.0}, ST_JE2_VAL[2] = {1.0, 1.0}
 static const int64_t ST_JE2_PTR[3] = {0, 1, 2}, ST_JE2_IND[2] = {0, 1};
 static int w_st_set_jenkins_2d(void)
 {
-    return fricreg_structure_set_jenkins_2d(ST(), C(0, 1), Z(0, 2), A(1, ST_JE2, 4),
-                                            A(2, ST_KT, 1), A(3, ST_MUN, 1));
+    return fricreg_structure_set_jenkins_2d(ST(), C(0, 1), Z(0, 2), A(1, ST_JE2, 4), A(2, ST_KT, 1),
+                                            A(3, ST_MUN, 1));
 }
 static int w_st_set_jenkins_2d_csr(void)
 {
-    return fricreg_structure_set_jenkins_2d_csr(ST(), C(0, 1), Z(0, 2), N(0, 0),
-                                                I64(1, ST_JE2_PTR), I64(2, ST_JE2_IND),
-                                                A(3, ST_JE2_VAL, 2), A(4, ST_KT, 1),
-                                                A(5, ST_MUN, 1));
+    return fricreg_structure_set_jenkins_2d_csr(ST(), C(0, 1), Z(0, 2), N(0, 0), I64(1, ST_JE2_PTR),
+                                                I64(2, ST_JE2_IND), A(3, ST_JE2_VAL, 2),
+                                                A(4, ST_KT, 1), A(5, ST_MUN, 1));
 }
 static const double ST_IW_K[3] = {2.0, 1.0, 0.5}, ST_IW_PHI[3] = {0.1, 0.2, 0.3};
 static int w_st_set_iwan(void)
