@@ -560,7 +560,7 @@ FRICREG_API int fricreg_structure_set_jenkins_csr(fricreg_structure *s, size_t m
  *  u(t + dt), its guard on K + J_e^T diag(kt, kt, ...) J_e; fricreg_structure_run_ode refuses
  *  them. Energy: the springs' |f|^2/(2 kt) in FRICREG_SVALUE_STRAIN, the dissipation, sum over
  *  steps of (w(t+dt) - w(t)) . (f(t) + f(t+dt))/2, in FRICREG_SVALUE_JENKINS (the balance
- *  closes as in 1-D). The state: fricreg_structure_get_jenkins_state with f and w of 2 me.
+ *  closes as in 1-D). The state: fricreg_structure_get_jenkins_2d_state.
  *  An element whose motion stays on one axis is the 1-D element of set_jenkins on that row.
  *  Setting 2-D elements replaces the elements in force (Jenkins, Iwan or with a normal law).
  *
@@ -594,16 +594,29 @@ FRICREG_API int fricreg_structure_set_jenkins_2d_csr(fricreg_structure *s, size_
                                                      const int64_t colind[], const double values[],
                                                      const double kt[], const double mun[]);
 
+/** Copy the 2-D Jenkins elements' state (fricreg_structure_set_jenkins_2d) at the current
+ *  time: their forces f[2 me] (force units, f_i = kt_i (q_i - w_i) with |f_i| <= mun_i, element
+ *  i's (x, y) at f[2i], f[2i + 1] as the rows of J_e; -J_e^T f on the structure; 0 before the
+ *  first step), the committed slider positions w[2 me] (the units of q, laid out as f) and the
+ *  energy each has dissipated since set_initial (or since set_jenkins_2d) D[me] (energy units,
+ *  their sum FRICREG_SVALUE_JENKINS). Any of f, w, D may be NULL, not all three. Since 1.6
+ *  (FRICREG_1.6).
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if me is not the number of elements set;
+ *  FRICREG_EINVAL (me > 0) if they are 1-D elements (fricreg_structure_get_jenkins_state and
+ *  fricreg_structure_get_iwan_state read those). */
+FRICREG_API int fricreg_structure_get_jenkins_2d_state(const fricreg_structure *s, size_t me,
+                                                       double f[], double w[], double D[]);
+
 /** Copy the Jenkins elements' state at the current time: their forces f[me] (force units,
  *  fe = kt (q - w) on the element, -J_e^T fe on the structure; 0 before the first step), the
  *  committed slider positions w[me] (the units of q) and the energy each has dissipated since
  *  set_initial (or since set_jenkins) D[me] (energy units, as FRICREG_SVALUE_JENKINS). Any of
- *  f, w, D may be NULL, not all three. 2-D elements (fricreg_structure_set_jenkins_2d): f and
- *  w hold 2 me numbers, element i's (x, y) at 2i and 2i + 1 (as the rows of J_e); D stays
- *  [me]. Since 1.6 (FRICREG_1.6).
+ *  f, w, D may be NULL, not all three. Since 1.6 (FRICREG_1.6).
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if me is not the number of elements set,
  *  or w is not NULL and the elements are Iwan elements of ns > 1 sliders
- *  (fricreg_structure_get_iwan_state reads those). */
+ *  (fricreg_structure_get_iwan_state reads those); FRICREG_EINVAL (me > 0) if f or w is not
+ *  NULL and the elements are 2-D (fricreg_structure_get_jenkins_2d_state reads those; D alone
+ *  is read here too). */
 FRICREG_API int fricreg_structure_get_jenkins_state(const fricreg_structure *s, size_t me,
                                                     double f[], double w[], double D[]);
 

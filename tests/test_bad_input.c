@@ -717,6 +717,14 @@ static int w_st_get_jenkins_state(void)
 {
     return fricreg_structure_get_jenkins_state(ST(), Z(0, 0), OUTD(1), OUTD(2), OUTD(3));
 }
+static int w_st_get_jenkins_2d_state(void)
+{
+    return fricreg_structure_get_jenkins_2d_state(ST(), Z(0, 0), OUTD(1), OUTD(2), OUTD(3));
+}
+static int w_st_get_jenkins_2d_state_no_output(void)
+{
+    return fricreg_structure_get_jenkins_2d_state(ST(), 0, NULL, NULL, NULL);
+}
 static int w_st_get_jenkins_state_no_output(void)
 {
     return fricreg_structure_get_jenkins_state(ST(), 0, NULL, NULL, NULL);
@@ -1754,6 +1762,16 @@ static const struct row rows[] = {
      "0s",
      NONE,
      {HANDLE, SIZE(0, "osss"), PTR(1, "o"), PTR(2, "o"), PTR(3, "o")}},
+    {"fricreg_structure_get_jenkins_2d_state",
+     w_st_get_jenkins_2d_state,
+     "0s",
+     NONE,
+     {HANDLE, SIZE(0, "osss"), PTR(1, "o"), PTR(2, "o"), PTR(3, "o")}},
+    {"fricreg_structure_get_jenkins_2d_state (all outputs NULL)",
+     w_st_get_jenkins_2d_state_no_output,
+     "0s",
+     NONE,
+     {PTR(8, "0")}},
     {"fricreg_structure_get_jenkins_state (all outputs NULL)",
      w_st_get_jenkins_state_no_output,
      "0s",

@@ -80,7 +80,8 @@ START_TEST(one_axis_is_the_1d_element)
             double ua[2], ub[2], fa[2], wa[2], fb, wb;
             fricreg_structure_get_state(a, 2, ua, NULL, NULL);
             fricreg_structure_get_state(b, 2, ub, NULL, NULL);
-            ck_assert_int_eq(fricreg_structure_get_jenkins_state(a, 1, fa, wa, NULL), FRICREG_OK);
+            ck_assert_int_eq(fricreg_structure_get_jenkins_2d_state(a, 1, fa, wa, NULL),
+                             FRICREG_OK);
             ck_assert_int_eq(fricreg_structure_get_jenkins_state(b, 1, &fb, &wb, NULL), FRICREG_OK);
             ck_assert_double_eq(ua[1], 0.0);
             ck_assert_double_eq(fa[1], 0.0);
@@ -135,7 +136,7 @@ START_TEST(circle_closed_form)
                 ck_assert_int_eq(fricreg_structure_step(s, dt), FRICREG_OK);
                 double u[2], f[2];
                 fricreg_structure_get_state(s, 2, u, NULL, NULL);
-                fricreg_structure_get_jenkins_state(s, 1, f, NULL, NULL);
+                fricreg_structure_get_jenkins_2d_state(s, 1, f, NULL, NULL);
                 rsum += hypot(u[0], u[1]);
                 if (c > 1)
                     fworst = fmax(fworst, fabs(hypot(f[0], f[1]) - mun));
@@ -149,7 +150,7 @@ START_TEST(circle_closed_form)
             double dth = 2.0 * atan(0.5 * omega * dt), sh = sin(0.5 * dth);
             double rwd = -a * sh + sqrt(a * a * sh * sh - a * a + r * r);
             double discrete = N * 2.0 * rwd * sh * mun * 0.5 * (1.0 + cos(dth));
-            fricreg_structure_get_jenkins_state(s, 1, NULL, NULL, &D);
+            fricreg_structure_get_jenkins_2d_state(s, 1, NULL, NULL, &D);
             double got = D - Dprev, want = mun * 2.0 * PI * rw;
             Dprev = D;
             if (getenv("JENKINS_PRINT"))
@@ -213,7 +214,7 @@ START_TEST(standalone_at_the_structures_displacements)
             for (int r = 0; r < 4; r++)
                 for (int c = 0; c < 3; c++)
                     q[r] += Je[3 * r + c] * u[c];
-            ck_assert_int_eq(fricreg_structure_get_jenkins_state(s, 2, f, w, NULL), FRICREG_OK);
+            ck_assert_int_eq(fricreg_structure_get_jenkins_2d_state(s, 2, f, w, NULL), FRICREG_OK);
             ck_assert_int_eq(fricreg_jenkins_get_slider(j, 2, wprev), FRICREG_OK);
             ck_assert_int_eq(fricreg_jenkins_trial(j, 2, q, fr, NULL), FRICREG_OK);
             ck_assert_int_eq(fricreg_jenkins_commit(j), FRICREG_OK);
@@ -268,16 +269,26 @@ START_TEST(csr_and_refusals)
     ck_assert_int_eq(fricreg_structure_run(a, dt, 5.0), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_run(b, dt, 5.0), FRICREG_OK);
     double fa[2], wa[2], fb[2], wb[2];
-    fricreg_structure_get_jenkins_state(a, 1, fa, wa, NULL);
-    fricreg_structure_get_jenkins_state(b, 1, fb, wb, NULL);
+    fricreg_structure_get_jenkins_2d_state(a, 1, fa, wa, NULL);
+    fricreg_structure_get_jenkins_2d_state(b, 1, fb, wb, NULL);
     for (int r = 0; r < 2; r++) {
         ck_assert_double_eq(fa[r], fb[r]);
         ck_assert_double_eq(wa[r], wb[r]);
     }
     ck_assert(fabs(wa[0]) + fabs(wa[1]) > 0.0);
-    /* the Iwan getter refuses 2-D elements; run_ode refuses elements */
-    double f[2];
+    /* the 1-D getters refuse 2-D elements' f and w (of 2 me), the 2-D one 1-D elements; D
+     * alone is read by both; run_ode refuses elements */
+    double f[2] = {-1.0, -1.0}, D1 = -1.0, D2 = -2.0;
     ck_assert_int_eq(fricreg_structure_get_iwan_state(a, 1, 1, f, NULL, NULL), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_structure_get_jenkins_state(a, 1, f, NULL, NULL), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_structure_get_jenkins_state(a, 1, NULL, f, NULL), FRICREG_EINVAL);
+    ck_assert_double_eq(f[0], -1.0);
+    ck_assert_double_eq(f[1], -1.0);
+    ck_assert_int_eq(fricreg_structure_get_jenkins_state(a, 1, NULL, NULL, &D1), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_jenkins_2d_state(a, 1, NULL, NULL, &D2), FRICREG_OK);
+    ck_assert(D1 > 0.0 && D1 == D2);
+    ck_assert_int_eq(fricreg_structure_get_jenkins_2d_state(a, 2, f, NULL, NULL), FRICREG_ESIZE);
+    ck_assert_int_eq(fricreg_structure_get_jenkins_2d_state(a, 1, NULL, NULL, NULL), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_structure_get_normal_forces(a, 1, f), FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_structure_run_ode(a, FRICREG_INT_RK4, 0.01, 0.0, 0.0, 5.1),
                      FRICREG_EINVAL);
@@ -287,7 +298,7 @@ START_TEST(csr_and_refusals)
     ck_assert_ptr_nonnull(strstr(fricreg_structure_errmsg(a), "row 1 of J_e is zero"));
     ck_assert_int_eq(fricreg_structure_set_jenkins_2d(a, 1, 3, Je, &bad, &mun), FRICREG_EINVAL);
     double fa2[2];
-    ck_assert_int_eq(fricreg_structure_get_jenkins_state(a, 1, fa2, NULL, NULL), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_jenkins_2d_state(a, 1, fa2, NULL, NULL), FRICREG_OK);
     ck_assert_double_eq(fa2[0], fa[0]);
     /* the CSR setter reads 2 me rows: rowptr[2 me + 1] */
     int64_t short_ptr[3] = {0, 2, 2};
@@ -296,11 +307,13 @@ START_TEST(csr_and_refusals)
                      FRICREG_EINVAL);
     /* me = 0 removes them; 1-D elements replace them */
     ck_assert_int_eq(fricreg_structure_set_jenkins_2d(a, 0, 3, NULL, NULL, NULL), FRICREG_OK);
-    ck_assert_int_eq(fricreg_structure_get_jenkins_state(a, 1, f, NULL, NULL), FRICREG_ESIZE);
+    ck_assert_int_eq(fricreg_structure_get_jenkins_2d_state(a, 1, f, NULL, NULL), FRICREG_ESIZE);
+    ck_assert_int_eq(fricreg_structure_get_jenkins_2d_state(a, 0, f, NULL, NULL), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_step(a, dt), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_set_jenkins(b, 1, 3, Je, &kt, &mun), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_step(b, dt), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_get_iwan_state(b, 1, 1, f, NULL, NULL), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_jenkins_2d_state(b, 1, f, NULL, NULL), FRICREG_EINVAL);
     fricreg_structure_free(a);
     fricreg_structure_free(b);
 }

@@ -359,13 +359,34 @@ int fricreg_structure_get_jenkins_state(const fricreg_structure *s, size_t me, d
         return FRICREG_ENULL;
     if (me != s->el.me || (w != NULL && me > 0 && s->el.ns != 1))
         return FRICREG_ESIZE;
+    if (me > 0 && s->el.dim == 2 && (f != NULL || w != NULL))
+        return FRICREG_EINVAL; /* f and w of 2 me: get_jenkins_2d_state */
     if (me == 0)
         return FRICREG_OK;
-    size_t nf = me * (size_t)s->el.dim; /* 2-D: [2 me], element i's at 2i, 2i + 1 */
     if (f != NULL)
-        memcpy(f, s->el.fe, nf * sizeof *f);
+        memcpy(f, s->el.fe, me * sizeof *f);
     if (w != NULL)
-        memcpy(w, s->el.wc, nf * sizeof *w);
+        memcpy(w, s->el.wc, me * sizeof *w);
+    if (D != NULL)
+        memcpy(D, s->el.dissipation, me * sizeof *D);
+    return FRICREG_OK;
+}
+
+int fricreg_structure_get_jenkins_2d_state(const fricreg_structure *s, size_t me, double f[],
+                                           double w[], double D[])
+{
+    if (s == NULL || (f == NULL && w == NULL && D == NULL))
+        return FRICREG_ENULL;
+    if (me != s->el.me)
+        return FRICREG_ESIZE;
+    if (me == 0)
+        return FRICREG_OK;
+    if (s->el.dim != 2)
+        return FRICREG_EINVAL; /* 1-D elements: get_jenkins_state, get_iwan_state */
+    if (f != NULL)
+        memcpy(f, s->el.fe, 2 * me * sizeof *f);
+    if (w != NULL)
+        memcpy(w, s->el.wc, 2 * me * sizeof *w);
     if (D != NULL)
         memcpy(D, s->el.dissipation, me * sizeof *D);
     return FRICREG_OK;
@@ -379,7 +400,7 @@ int fricreg_structure_get_iwan_state(const fricreg_structure *s, size_t me, size
     if (me != s->el.me || (me > 0 && ns != s->el.ns))
         return FRICREG_ESIZE;
     if (me > 0 && s->el.dim == 2)
-        return FRICREG_EINVAL; /* 2-D Jenkins elements: get_jenkins_state */
+        return FRICREG_EINVAL; /* 2-D Jenkins elements: get_jenkins_2d_state */
     if (me == 0)
         return FRICREG_OK;
     if (f != NULL)

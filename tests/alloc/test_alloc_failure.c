@@ -1514,7 +1514,7 @@ static void see_structure_jenkins_2d(const fricreg_structure *s, struct view *v)
 {
     double f[2] = {-1, -1}, w[2] = {-1, -1}, D[1] = {-1}, value = -1.0;
     see_structure(s, v);
-    see(v, fricreg_structure_get_jenkins_state(s, 1, f, w, D));
+    see(v, fricreg_structure_get_jenkins_2d_state(s, 1, f, w, D));
     see_all(v, f, 2), see_all(v, w, 2), see_all(v, D, 1);
     see(v, fricreg_structure_get_value(s, FRICREG_SVALUE_JENKINS, &value));
     see(v, value);
