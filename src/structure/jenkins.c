@@ -16,6 +16,13 @@
  * q). The coordinates below are then (q, g) and the forces (fe, N): 2 me of them, J = J_e over
  * J_n, and the tangent T gains dfe/dg (slipping) and dN/dg = kn (closed).
  *
+ * 2-D elements (set_jenkins_2d; ns = 1, no normal law) have two coordinates each, rows 2i and
+ * 2i + 1 of J_e, nc = 2 me, and one 2-D slider returned radially onto its disk by the same
+ * slider.h: T is block diagonal, element i's 2x2 block kt I sticking and (mun/|d|)(I - n n^T)
+ * slipping, its diagonal in tan and its off-diagonal in tang (fr_elements_partner names the
+ * column: the other coordinate of the element). An element moving on one axis has a zero
+ * off-diagonal there and is the 1-D element.
+ *
  * Newmark / HHT-alpha: with the contacts' forces zero (every bound 0; beside contacts of bound
  * > 0 the step is joint_step.c's, one Newton over both forces), the step's equation K_eff x = b - w J_e^T fe1 (w = 1 + alpha) condenses onto the
  * elements: u1 = u_pred + beta dt^2 x gives
