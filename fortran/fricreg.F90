@@ -328,6 +328,8 @@ module fricreg
     procedure :: set_contacts => struct_set_contacts
     procedure :: set_jenkins => struct_set_jenkins
     procedure :: get_jenkins_state => struct_get_jenkins_state
+    procedure :: set_jenkins_2d => struct_set_jenkins_2d
+    procedure :: get_jenkins_2d_state => struct_get_jenkins_2d_state
     procedure :: set_iwan => struct_set_iwan
     procedure :: get_iwan_state => struct_get_iwan_state
     procedure :: set_jenkins_normal => struct_set_jenkins_normal
@@ -2484,6 +2486,64 @@ contains
                                                                  int(max(me, 0), c_size_t), &
                                                                  f, w, D))
   end function struct_get_jenkins_state
+
+  !> 2-D Jenkins elements (fricreg_structure_set_jenkins_2d): element i on rows 2i-1 and 2i of
+  !> Je(2 me, ndof) in Fortran's order, q_i = ((Je u)(2i-1), (Je u)(2i)), a spring kt(i) in
+  !> series with an isotropic slider of bound mun(i) (|f_i| <= mun(i)); me = size(kt), 0
+  !> removes them. FRICREG_ESIZE unless Je is (2 size(kt), ndof) and mun has size(kt) entries;
+  !> C's codes (FRICREG_EINVAL for a zero row, kt <= 0 or mun < 0, ...).
+  function struct_set_jenkins_2d(self, Je, kt, mun) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(in) :: Je(:, :), kt(:), mun(:)
+    integer(c_int) :: status
+    integer(c_size_t) :: me
+    me = int(size(kt), c_size_t)
+    status = self%ready('set_jenkins_2d', 'structure')
+    if (status == FRICREG_OK) status = self%check_size('set_jenkins_2d', 'Je, 1', size(Je, 1), &
+                                                       2 * me)
+    if (status == FRICREG_OK) status = self%check_size('set_jenkins_2d', 'Je, 2', size(Je, 2), &
+                                                       self%n)
+    if (status == FRICREG_OK) status = self%check_size('set_jenkins_2d', 'mun', size(mun), me)
+    if (status == FRICREG_OK) status = self%record( &
+                                       fricreg_structure_set_jenkins_2d(self%ptr, me, self%n, &
+                                                                        transpose(Je), kt, mun))
+  end function struct_set_jenkins_2d
+
+  !> The 2-D Jenkins elements' forces f(2, me), committed slider positions w(2, me) (element
+  !> i's (x, y) in column i) and dissipation D(me) (fricreg_structure_get_jenkins_2d_state);
+  !> each optional, at least one given, all of me elements. FRICREG_ESIZE (sizes, or f or w
+  !> without 2 rows); FRICREG_ENULL if none is given; FRICREG_EINVAL for 1-D elements.
+  function struct_get_jenkins_2d_state(self, f, w, D) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(inout), contiguous, optional :: f(:, :), w(:, :), D(:)
+    integer(c_int) :: status
+    integer :: me
+    status = self%ready('get_jenkins_2d_state', 'structure')
+    if (status /= FRICREG_OK) return
+    me = -1
+    if (present(f)) then
+      me = size(f, 2)
+      if (size(f, 1) /= 2) me = -2
+    end if
+    if (present(w)) then
+      if (me >= 0 .and. size(w, 2) /= me) me = -2
+      if (me == -1) me = size(w, 2)
+      if (size(w, 1) /= 2) me = -2
+    end if
+    if (present(D)) then
+      if (me >= 0 .and. size(D) /= me) me = -2
+      if (me == -1) me = size(D)
+    end if
+    if (me == -2) then
+      status = self%fail(FRICREG_ESIZE, &
+                         'get_jenkins_2d_state: f and w must be (2, me) and D (me)')
+      return
+    end if
+    status = self%unrecorded('get_jenkins_2d_state', &
+                             fricreg_structure_get_jenkins_2d_state(self%ptr, &
+                                                                    int(max(me, 0), c_size_t), &
+                                                                    f, w, D))
+  end function struct_get_jenkins_2d_state
 
   !> Iwan elements on the rows of Je(me, ndof) in Fortran's order (fricreg_structure_set_iwan:
   !> element i sees q_i = (Je u)_i, ns sliders in parallel, slider s a spring k(s, i) in series

@@ -542,6 +542,71 @@ FRICREG_API int fricreg_structure_set_jenkins_csr(fricreg_structure *s, size_t m
                                                   const int64_t colind[], const double values[],
                                                   const double kt[], const double mun[]);
 
+/** Attach me 2-D Jenkins elements (fricreg_jenkins.h's element of dim = 2: a tangential
+ *  spring kt in series with an isotropic Coulomb slider of bound mun, the friction disk
+ *  |f| <= mun) to the structure. Element i sees the 2-D relative displacement
+ *  q_i = ((J_e u)_2i, (J_e u)_2i+1), rows 2i and 2i + 1 of Je[2 me * ndof] (row-major;
+ *  dimensionless for displacement DOFs), and pushes back with f_i = kt_i (q_i - w_i),
+ *  |f_i| <= mun_i, by the exact radial return from its committed slider w_i
+ *  (fricreg_jenkins_trial with dim = 2; Simo & Hughes 1998, Ch. 3); the structure gets
+ *  -J_e^T f with f[2 me] stacked as q.
+ *
+ *  Everything else is fricreg_structure_set_jenkins's with 2 me coordinates: Newmark and
+ *  HHT-alpha solve the forces implicitly, the condensed Newton on E = J_e K_eff^-1 J_e^T
+ *  (2 me x 2 me) with the consistent tangent block diagonal, each element's 2x2 block kt I
+ *  sticking and (mun/|q - w_c|)(I - n n^T) slipping (n the slip direction), in
+ *  I + (1 + alpha) beta dt^2 T E; beside contacts of bound > 0 the joint Newton over m + 2 me
+ *  unknowns with the same blocks; the central difference evaluates the elements at
+ *  u(t + dt), its guard on K + J_e^T diag(kt, kt, ...) J_e; fricreg_structure_run_ode refuses
+ *  them. Energy: the springs' |f|^2/(2 kt) in FRICREG_SVALUE_STRAIN, the dissipation, sum over
+ *  steps of (w(t+dt) - w(t)) . (f(t) + f(t+dt))/2, in FRICREG_SVALUE_JENKINS (the balance
+ *  closes as in 1-D). The state: fricreg_structure_get_jenkins_2d_state.
+ *  An element whose motion stays on one axis is the 1-D element of set_jenkins on that row.
+ *  Setting 2-D elements replaces the elements in force (Jenkins, Iwan or with a normal law).
+ *
+ *  me           number of elements (0 removes them: Je, kt, mun may then be NULL); 2 me <= 2^26.
+ *  ndof         must be the structure's.
+ *  Je[2me*ndof] row-major, two rows per element.
+ *  kt[me]       stiffnesses > 0, finite (force per unit of q).
+ *  mun[me]      slip force magnitudes >= 0, finite (force units).
+ *
+ *  Copied; every slider at w = 0 and the dissipation at 0, as after
+ *  fricreg_structure_set_initial. Allocates O(me^2 + nnz(J_e)). Since 1.6 (FRICREG_1.6).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL (s, or Je, kt or mun with me > 0); FRICREG_ESIZE if ndof
+ *  is not the structure's; FRICREG_EINVAL if 2 me > 2^26, a row of J_e is zero (either axis of
+ *  an element), a kt_i <= 0 or a mun_i < 0, or the call comes from the observer;
+ *  FRICREG_ENONFINITE (an entry of Je, kt or mun); FRICREG_ENOMEM. On failure the elements in
+ *  force are unchanged. */
+FRICREG_API int fricreg_structure_set_jenkins_2d(fricreg_structure *s, size_t me, size_t ndof,
+                                                 const double Je[], const double kt[],
+                                                 const double mun[]);
+
+/** The same with J_e (2 me rows) from compressed sparse rows: rowptr[2 me + 1], colind[nnz],
+ *  values[nnz], flags FRICREG_SPARSE_ONE_BASED or 0, as fricreg_structure_set_jenkins_csr.
+ *  Since 1.6 (FRICREG_1.6).
+ *  Returns FRICREG_OK; FRICREG_ENULL (s, kt, mun, rowptr, or colind or values with nnz > 0);
+ *  FRICREG_ESIZE; FRICREG_EINVAL (flags, pointers, indices, a zero row, kt_i <= 0, mun_i < 0,
+ *  2 me > 2^26, from the observer); FRICREG_ENONFINITE; FRICREG_ENOMEM, as
+ *  fricreg_structure_set_jenkins_2d. */
+FRICREG_API int fricreg_structure_set_jenkins_2d_csr(fricreg_structure *s, size_t me, size_t ndof,
+                                                     int flags, const int64_t rowptr[],
+                                                     const int64_t colind[], const double values[],
+                                                     const double kt[], const double mun[]);
+
+/** Copy the 2-D Jenkins elements' state (fricreg_structure_set_jenkins_2d) at the current
+ *  time: their forces f[2 me] (force units, f_i = kt_i (q_i - w_i) with |f_i| <= mun_i, element
+ *  i's (x, y) at f[2i], f[2i + 1] as the rows of J_e; -J_e^T f on the structure; 0 before the
+ *  first step), the committed slider positions w[2 me] (the units of q, laid out as f) and the
+ *  energy each has dissipated since set_initial (or since set_jenkins_2d) D[me] (energy units,
+ *  their sum FRICREG_SVALUE_JENKINS). Any of f, w, D may be NULL, not all three. Since 1.6
+ *  (FRICREG_1.6).
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if me is not the number of elements set;
+ *  FRICREG_EINVAL (me > 0) if they are 1-D elements (fricreg_structure_get_jenkins_state and
+ *  fricreg_structure_get_iwan_state read those). */
+FRICREG_API int fricreg_structure_get_jenkins_2d_state(const fricreg_structure *s, size_t me,
+                                                       double f[], double w[], double D[]);
+
 /** Copy the Jenkins elements' state at the current time: their forces f[me] (force units,
  *  fe = kt (q - w) on the element, -J_e^T fe on the structure; 0 before the first step), the
  *  committed slider positions w[me] (the units of q) and the energy each has dissipated since
@@ -549,7 +614,9 @@ FRICREG_API int fricreg_structure_set_jenkins_csr(fricreg_structure *s, size_t m
  *  f, w, D may be NULL, not all three. Since 1.6 (FRICREG_1.6).
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if me is not the number of elements set,
  *  or w is not NULL and the elements are Iwan elements of ns > 1 sliders
- *  (fricreg_structure_get_iwan_state reads those). */
+ *  (fricreg_structure_get_iwan_state reads those); FRICREG_EINVAL (me > 0) if f or w is not
+ *  NULL and the elements are 2-D (fricreg_structure_get_jenkins_2d_state reads those; D alone
+ *  is read here too). */
 FRICREG_API int fricreg_structure_get_jenkins_state(const fricreg_structure *s, size_t me,
                                                     double f[], double w[], double D[]);
 
@@ -611,7 +678,8 @@ FRICREG_API int fricreg_structure_set_iwan_csr(fricreg_structure *s, size_t me, 
  *  (energy units, their sum FRICREG_SVALUE_JENKINS). Any of f, w, D may be NULL, not all
  *  three. Since 1.6 (FRICREG_1.6).
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if me is not the number of elements set,
- *  or (me > 0) ns is not their sliders per element. */
+ *  or (me > 0) ns is not their sliders per element; FRICREG_EINVAL (me > 0) if the elements
+ *  are 2-D (fricreg_structure_get_jenkins_state reads those). */
 FRICREG_API int fricreg_structure_get_iwan_state(const fricreg_structure *s, size_t me, size_t ns,
                                                  double f[], double w[], double D[]);
 

@@ -669,6 +669,19 @@ static int w_st_set_jenkins_csr(void)
                                              I64(2, ST_JE_IND), A(3, ST_JE, 1), A(4, ST_KT, 1),
                                              A(5, ST_MUN, 1));
 }
+static const double ST_JE2[4] = {1.0, 0.0, 0.0, 1.0}, ST_JE2_VAL[2] = {1.0, 1.0};
+static const int64_t ST_JE2_PTR[3] = {0, 1, 2}, ST_JE2_IND[2] = {0, 1};
+static int w_st_set_jenkins_2d(void)
+{
+    return fricreg_structure_set_jenkins_2d(ST(), C(0, 1), Z(0, 2), A(1, ST_JE2, 4), A(2, ST_KT, 1),
+                                            A(3, ST_MUN, 1));
+}
+static int w_st_set_jenkins_2d_csr(void)
+{
+    return fricreg_structure_set_jenkins_2d_csr(ST(), C(0, 1), Z(0, 2), N(0, 0), I64(1, ST_JE2_PTR),
+                                                I64(2, ST_JE2_IND), A(3, ST_JE2_VAL, 2),
+                                                A(4, ST_KT, 1), A(5, ST_MUN, 1));
+}
 static const double ST_IW_K[3] = {2.0, 1.0, 0.5}, ST_IW_PHI[3] = {0.1, 0.2, 0.3};
 static int w_st_set_iwan(void)
 {
@@ -703,6 +716,14 @@ static int w_st_get_normal_forces(void)
 static int w_st_get_jenkins_state(void)
 {
     return fricreg_structure_get_jenkins_state(ST(), Z(0, 0), OUTD(1), OUTD(2), OUTD(3));
+}
+static int w_st_get_jenkins_2d_state(void)
+{
+    return fricreg_structure_get_jenkins_2d_state(ST(), Z(0, 0), OUTD(1), OUTD(2), OUTD(3));
+}
+static int w_st_get_jenkins_2d_state_no_output(void)
+{
+    return fricreg_structure_get_jenkins_2d_state(ST(), 0, NULL, NULL, NULL);
 }
 static int w_st_get_jenkins_state_no_output(void)
 {
@@ -1708,6 +1729,18 @@ static const struct row rows[] = {
      ST_REC,
      {HANDLE, COUNT(0, "ooii"), SIZE(0, "ssss"), INT(0, "ioii"), PTR(1, "0"), PTR(2, "0"),
       PTR(3, "0"), ARR(3, "nnoioo"), PTR(4, "0"), ARR(4, "nniioo"), PTR(5, "0"), ARR(5, "nniooo")}},
+    {"fricreg_structure_set_jenkins_2d",
+     w_st_set_jenkins_2d,
+     "0snim",
+     ST_REC,
+     {HANDLE, COUNT(0, "ooii"), SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnoioo"), PTR(2, "0"),
+      ARR(2, "nniioo"), PTR(3, "0"), ARR(3, "nniooo")}},
+    {"fricreg_structure_set_jenkins_2d_csr",
+     w_st_set_jenkins_2d_csr,
+     "0snim",
+     ST_REC,
+     {HANDLE, COUNT(0, "ooii"), SIZE(0, "ssss"), INT(0, "ioii"), PTR(1, "0"), PTR(2, "0"),
+      PTR(3, "0"), ARR(3, "nnoioo"), PTR(4, "0"), ARR(4, "nniioo"), PTR(5, "0"), ARR(5, "nniooo")}},
     {"fricreg_structure_set_iwan",
      w_st_set_iwan,
      "0snim",
@@ -1753,6 +1786,16 @@ static const struct row rows[] = {
      "0s",
      NONE,
      {HANDLE, SIZE(0, "osss"), PTR(1, "o"), PTR(2, "o"), PTR(3, "o")}},
+    {"fricreg_structure_get_jenkins_2d_state",
+     w_st_get_jenkins_2d_state,
+     "0s",
+     NONE,
+     {HANDLE, SIZE(0, "osss"), PTR(1, "o"), PTR(2, "o"), PTR(3, "o")}},
+    {"fricreg_structure_get_jenkins_2d_state (all outputs NULL)",
+     w_st_get_jenkins_2d_state_no_output,
+     "0s",
+     NONE,
+     {PTR(8, "0")}},
     {"fricreg_structure_get_jenkins_state (all outputs NULL)",
      w_st_get_jenkins_state_no_output,
      "0s",

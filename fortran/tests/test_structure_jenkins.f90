@@ -1,6 +1,6 @@
 ! SPDX-License-Identifier: GPL-3.0-or-later
 ! test_structure_jenkins.f90 — Jenkins elements through type(fricreg_structure) (set_jenkins,
-! get_jenkins_state):
+! get_jenkins_state, set_jenkins_2d, get_jenkins_2d_state):
 !   - one mass (2.385 kg) on 217.3 N/m and a stuck element (kt 200 N/m, mu N 1e30 N) under a
 !     constant load P = -0.731 x 2.385 N: the spring 417.3 N/m, whose average-acceleration
 !     Newmark solution is u_n = (P/k)(1 - cos(W n dt)), W = (2/dt) atan(w dt/2): at dt = 0.01 s,
@@ -9,7 +9,9 @@
 !   - Fortran's size checks (FRICREG_ESIZE naming the array) and C's refusals (kt <= 0);
 !   - an Iwan element of two sliders (set_iwan, get_iwan_state) is two Jenkins elements on
 !     copies of its row: the same run to rounding;
-!   - a stuck, closed lift-off element (set_jenkins_normal, get_normal_forces): N = n0 + kn u.
+!   - a stuck, closed lift-off element (set_jenkins_normal, get_normal_forces): N = n0 + kn u;
+!   - a stuck 2-D element on two uncoupled masses is the spring kt on each axis: the closed form
+!     above on both.
 program test_structure_jenkins
   use fricreg
   use ftest
@@ -18,6 +20,10 @@ program test_structure_jenkins
   real(c_double) :: u(1), f(1), w(1), D(1), D2(2), residual, input, jenkins
   real(c_double) :: u2(1), w2(2, 1), fj(2), wj(2), Dj(2)
   real(c_double), parameter :: Je(1, 1) = reshape([1.0_c_double], [1, 1])
+  type(fricreg_structure) :: st2
+  real(c_double) :: uv(2), f2(2, 1), w2d(2, 1)
+  real(c_double), parameter :: Je2(2, 2) = reshape([1.0_c_double, 0.0_c_double, 0.0_c_double, &
+                                                    1.0_c_double], [2, 2])
 
   call check_status(st%create(1, 1), FRICREG_OK, 'create 1, 1')
   call check_status(st%set_mass(reshape([2.385_c_double], [1, 1])), FRICREG_OK, 'set_mass')
@@ -103,5 +109,40 @@ program test_structure_jenkins
                                           [200.0_c_double], [0.3_c_double], [0.5_c_double], &
                                           [100.0_c_double]), FRICREG_ESIZE, 'Jn of 2 rows')
   call check(index(st%errmsg(), 'Jn') > 0, 'the message names Jn')
+
+  ! ---- 2-D elements: two uncoupled masses as above, one stuck 2-D element on both ----------
+  ! (set_jenkins_2d, get_jenkins_2d_state): each axis is the spring kt, the same closed form
+  call check_status(st2%create(2, 1), FRICREG_OK, 'create 2, 1')
+  call check_status(st2%set_mass(reshape([2.385_c_double, 0.0_c_double, 0.0_c_double, &
+                                          2.385_c_double], [2, 2])), FRICREG_OK, 'set_mass 2')
+  call check_status(st2%set_stiffness(reshape([217.3_c_double, 0.0_c_double, 0.0_c_double, &
+                                               217.3_c_double], [2, 2])), FRICREG_OK, &
+                    'set_stiffness 2')
+  call check_status(st2%set_contacts(reshape([1.0_c_double, 0.0_c_double], [1, 2])), &
+                    FRICREG_OK, 'set_contacts 2')
+  call check_status(st2%set_bounds([0.0_c_double]), FRICREG_OK, 'set_bounds 2')
+  call check_status(st2%set_load([-0.731_c_double * 2.385_c_double, &
+                                  -0.731_c_double * 2.385_c_double]), FRICREG_OK, 'set_load 2')
+  call check_status(st2%set_jenkins_2d(Je2, [200.0_c_double], [1e30_c_double]), FRICREG_OK, &
+                    'set_jenkins_2d stuck')
+  call check_status(st2%run(0.01_c_double, 1.37_c_double), FRICREG_OK, 'run 2-D stuck')
+  call check_status(st2%get_state(u=uv), FRICREG_OK, 'get_state 2-D')
+  call check_close(uv(1), -0.00113279590437900_c_double, 2e-15_c_double, '2-D: u_x closed form')
+  call check_close(uv(2), -0.00113279590437900_c_double, 2e-15_c_double, '2-D: u_y closed form')
+  call check_status(st2%get_jenkins_2d_state(f=f2, w=w2d, D=D), FRICREG_OK, &
+                    'get_jenkins_2d_state')
+  call check_close(f2(1, 1), 200.0_c_double * uv(1), 1e-15_c_double, '2-D: f_x = kt u_x')
+  call check_close(f2(2, 1), 200.0_c_double * uv(2), 1e-15_c_double, '2-D: f_y = kt u_y')
+  call check(all(w2d == 0.0_c_double) .and. D(1) == 0.0_c_double, '2-D: the slider did not move')
+  call check_status(st2%set_jenkins_2d(Je2(1:1, :), [200.0_c_double], [0.05_c_double]), &
+                    FRICREG_ESIZE, 'Je2 of 1 row')
+  call check(index(st2%errmsg(), 'Je, 1') > 0, 'the message names Je')
+  call check_status(st2%get_jenkins_2d_state(f=f2, D=D2), FRICREG_ESIZE, &
+                    'f and D differ in elements')
+  call check_status(st2%get_jenkins_state(f=f), FRICREG_EINVAL, &
+                    'the 1-D getter refuses 2-D f')
+  call check_status(st%get_jenkins_2d_state(D=D), FRICREG_EINVAL, &
+                    'the 2-D getter refuses 1-D elements')
+  call st2%destroy()
   call finish('test_structure_jenkins')
 end program test_structure_jenkins

@@ -16,6 +16,13 @@
  * q). The coordinates below are then (q, g) and the forces (fe, N): 2 me of them, J = J_e over
  * J_n, and the tangent T gains dfe/dg (slipping) and dN/dg = kn (closed).
  *
+ * 2-D elements (set_jenkins_2d; ns = 1, no normal law) have two coordinates each, rows 2i and
+ * 2i + 1 of J_e, nc = 2 me, and one 2-D slider returned radially onto its disk by the same
+ * slider.h: T is block diagonal, element i's 2x2 block kt I sticking and (mun/|d|)(I - n n^T)
+ * slipping, its diagonal in tan and its off-diagonal in tang (fr_elements_partner names the
+ * column: the other coordinate of the element). An element moving on one axis has a zero
+ * off-diagonal there and is the 1-D element.
+ *
  * Newmark / HHT-alpha: with the contacts' forces zero (every bound 0; beside contacts of bound
  * > 0 the step is joint_step.c's, one Newton over both forces), the step's equation K_eff x = b - w J_e^T fe1 (w = 1 + alpha) condenses onto the
  * elements: u1 = u_pred + beta dt^2 x gives
@@ -60,11 +67,11 @@ void fr_elements_free(fricreg_structure *s)
     *e = (struct fr_elements){0};
 }
 
-/* The new elements' arrays into e (zeroed; e->me, ns, nc set, nc > me: with a normal law);
- * 0 when out of memory (e then partly filled: the caller frees it). */
-static int allocate(struct fr_elements *e)
+/* The new elements' arrays into e (zeroed; e->me, ns, nc, dim, n0 (non-NULL: with a normal
+ * law) set); 0 when out of memory (e then partly filled: the caller frees it). */
+static int allocate(struct fr_elements *e, int normal_law)
 {
-    size_t me = e->me, ns = e->ns, nc = e->nc;
+    size_t me = e->me, ns = e->ns * (size_t)e->dim, nc = e->nc;
     double **sliders[] = {&e->k,  &e->phi, &e->wc,      &e->wt,
                           &e->fs, &e->fs1, &e->wc_held, &e->fs_held};
     double **coordinates[] = {&e->kstick, &e->fe, &e->fe1, &e->fe_held, &e->q0,  &e->y,   &e->g,
@@ -76,9 +83,11 @@ static int allocate(struct fr_elements *e)
     for (size_t k = 0; k < sizeof coordinates / sizeof *coordinates; k++)
         if ((*coordinates[k] = calloc(nc, sizeof(double))) == NULL)
             return 0;
-    for (size_t k = 0; k < sizeof normal / sizeof *normal && nc > me; k++)
+    for (size_t k = 0; k < sizeof normal / sizeof *normal && normal_law; k++)
         if ((*normal[k] = calloc(me, sizeof(double))) == NULL)
             return 0;
+    if (e->dim == 2 && (e->tang = calloc(nc, sizeof(double))) == NULL)
+        return 0;
     e->dissipation = calloc(me, sizeof(double));
     e->E = calloc(nc * nc, sizeof(double));
     e->A = calloc(nc * nc, sizeof(double));
@@ -86,8 +95,9 @@ static int allocate(struct fr_elements *e)
     return e->dissipation != NULL && e->E != NULL && e->A != NULL && e->perm != NULL;
 }
 
-/* Every element moves: no zero column of J^T (me of J_e, then J_n's). */
-static int check_rows(fricreg_structure *s, const cholmod_sparse *Jt, size_t me, const char *who)
+/* Every element moves: no zero column of J^T (me of J_e, then J_n's; 2 me of J_e in 2-D). */
+static int check_rows(fricreg_structure *s, const cholmod_sparse *Jt, size_t me, int dim,
+                      const char *who)
 {
     const SuiteSparse_long *p = Jt->p;
     const double *x = Jt->x;
@@ -95,6 +105,11 @@ static int check_rows(fricreg_structure *s, const cholmod_sparse *Jt, size_t me,
         int moves = 0;
         for (SuiteSparse_long k = p[i]; k < p[i + 1]; k++)
             moves |= x[k] != 0.0;
+        if (!moves && dim == 2)
+            return fr_fail(s, FRICREG_EINVAL,
+                           "%s: row %zu of J_e is zero: element %zu does not move along its "
+                           "axis %zu",
+                           who, i, i / 2, i % 2);
         if (!moves)
             return fr_fail(s, FRICREG_EINVAL,
                            "%s: row %zu of %s is zero: element %zu does not move", who, i % me,
@@ -130,20 +145,22 @@ static int check_params(fricreg_structure *s, size_t me, size_t ns, enum kind ki
     return FRICREG_OK;
 }
 
-/* Takes J (nc x n: J_e, then J_n with a normal law n0, kn (else NULL); CHOLMOD's, freed here
- * on every path) and installs the elements of ns sliders each. */
-static int install(fricreg_structure *s, size_t me, size_t ns, cholmod_sparse *J, const double k[],
-                   const double phi[], const double n0[], const double kn[], const char *who)
+/* Takes J (nc x n: J_e, then J_n with a normal law n0, kn (else NULL); J_e of 2 me rows for
+ * dim 2; CHOLMOD's, freed here on every path) and installs the elements of ns sliders each. */
+static int install(fricreg_structure *s, size_t me, size_t ns, int dim, cholmod_sparse *J,
+                   const double k[], const double phi[], const double n0[], const double kn[],
+                   const char *who)
 {
     struct fr_elements e = {0};
     e.me = me;
     e.ns = ns;
-    e.nc = n0 != NULL ? 2 * me : me;
+    e.dim = dim;
+    e.nc = n0 != NULL || dim == 2 ? 2 * me : me;
     e.Jt = cholmod_l_transpose(J, 1, &s->cc);
     cholmod_l_free_sparse(&J, &s->cc);
-    int status = e.Jt == NULL || !allocate(&e)
+    int status = e.Jt == NULL || !allocate(&e, n0 != NULL)
                      ? fr_fail(s, FRICREG_ENOMEM, "%s: no memory for %zu elements", who, me)
-                     : check_rows(s, e.Jt, me, who);
+                     : check_rows(s, e.Jt, me, dim, who);
     if (status != FRICREG_OK) {
         struct fr_elements old = s->el;
         s->el = e;
@@ -155,7 +172,8 @@ static int install(fricreg_structure *s, size_t me, size_t ns, cholmod_sparse *J
     memcpy(e.phi, phi, me * ns * sizeof *phi);
     for (size_t i = 0; i < me; i++)
         for (size_t j = 0; j < ns; j++)
-            e.kstick[i] += k[i * ns + j];
+            for (int a = 0; a < dim; a++)
+                e.kstick[i * dim + a] += k[i * ns + j];
     if (n0 != NULL) {
         memcpy(e.n0, n0, me * sizeof *n0);
         memcpy(e.kn, kn, me * sizeof *kn);
@@ -168,7 +186,8 @@ static int install(fricreg_structure *s, size_t me, size_t ns, cholmod_sparse *J
     return FRICREG_OK;
 }
 
-static int start_setter(fricreg_structure *s, size_t me, size_t ns, size_t ndof, const char *who)
+static int start_setter(fricreg_structure *s, size_t me, size_t ns, int dim, size_t ndof,
+                        const char *who)
 {
     if (s->running)
         return fr_structure_busy(s, who);
@@ -176,9 +195,9 @@ static int start_setter(fricreg_structure *s, size_t me, size_t ns, size_t ndof,
         return fr_fail(s, FRICREG_ESIZE, "%s: ndof = %zu, the structure has %zu", who, ndof, s->n);
     if (ns == 0 && me > 0)
         return fr_fail(s, FRICREG_EINVAL, "%s: ns = 0: an Iwan element needs a slider", who);
-    if (me > MAX_ELEMENTS || (me > 0 && ns > MAX_ELEMENTS / me))
-        return fr_fail(s, FRICREG_EINVAL, "%s: me = %zu elements of %zu sliders exceed 2^26", who,
-                       me, ns);
+    if (me > MAX_ELEMENTS / (size_t)dim || (me > 0 && ns > MAX_ELEMENTS / me))
+        return fr_fail(s, FRICREG_EINVAL, "%s: me = %zu elements of %zu sliders exceed 2^%d", who,
+                       me, ns, dim == 2 ? 25 : 26);
     return FRICREG_OK;
 }
 
@@ -215,14 +234,14 @@ static int check_normal(fricreg_structure *s, size_t me, size_t ndof, const doub
     return FRICREG_OK;
 }
 
-/* The dense setters' body; Jn, n0, kn only with KIND_NORMAL. */
-static int set_dense(fricreg_structure *s, size_t me, size_t ndof, const double Je[],
+/* The dense setters' body; Jn, n0, kn only with KIND_NORMAL; dim 2: Je has 2 me rows. */
+static int set_dense(fricreg_structure *s, size_t me, int dim, size_t ndof, const double Je[],
                      const double Jn[], enum kind kind, size_t ns, const double k[],
                      const double phi[], const double n0[], const double kn[], const char *who)
 {
     if (s == NULL)
         return FRICREG_ENULL;
-    int status = start_setter(s, me, ns, ndof, who);
+    int status = start_setter(s, me, ns, dim, ndof, who);
     if (status != FRICREG_OK)
         return status;
     if (me == 0)
@@ -231,7 +250,7 @@ static int set_dense(fricreg_structure *s, size_t me, size_t ndof, const double 
         return fr_fail(s, FRICREG_ENULL, "%s: J_e is NULL", who);
     if ((status = check_params(s, me, ns, kind, k, phi, who)) != FRICREG_OK)
         return status;
-    for (size_t j = 0; j < me * ndof; j++)
+    for (size_t j = 0; j < (size_t)dim * me * ndof; j++)
         if (!isfinite(Je[j]))
             return fr_fail(s, FRICREG_ENONFINITE, "%s: J_e(%zu, %zu) is not finite", who, j / ndof,
                            j % ndof);
@@ -239,8 +258,8 @@ static int set_dense(fricreg_structure *s, size_t me, size_t ndof, const double 
         return status;
     cholmod_sparse *J = NULL;
     if (kind != KIND_NORMAL) {
-        status = fr_dense_to_cholmod(me, ndof, Je, 0, &s->cc, &J, &s->err, who);
-        return status != FRICREG_OK ? status : install(s, me, ns, J, k, phi, NULL, NULL, who);
+        status = fr_dense_to_cholmod((size_t)dim * me, ndof, Je, 0, &s->cc, &J, &s->err, who);
+        return status != FRICREG_OK ? status : install(s, me, ns, dim, J, k, phi, NULL, NULL, who);
     }
     double *stacked = malloc(2 * me * ndof * sizeof *stacked); /* J_e over J_n */
     if (stacked == NULL)
@@ -249,29 +268,29 @@ static int set_dense(fricreg_structure *s, size_t me, size_t ndof, const double 
     memcpy(stacked + me * ndof, Jn, me * ndof * sizeof *stacked);
     status = fr_dense_to_cholmod(2 * me, ndof, stacked, 0, &s->cc, &J, &s->err, who);
     free(stacked);
-    return status != FRICREG_OK ? status : install(s, me, ns, J, k, phi, n0, kn, who);
+    return status != FRICREG_OK ? status : install(s, me, ns, 1, J, k, phi, n0, kn, who);
 }
 
 /* The compressed setters' body, as set_dense. */
-static int set_csr(fricreg_structure *s, size_t me, size_t ndof, int flags, const int64_t rowptr[],
-                   const int64_t colind[], const double values[], enum kind kind, size_t ns,
-                   const double k[], const double phi[], const char *who)
+static int set_csr(fricreg_structure *s, size_t me, int dim, size_t ndof, int flags,
+                   const int64_t rowptr[], const int64_t colind[], const double values[],
+                   enum kind kind, size_t ns, const double k[], const double phi[], const char *who)
 {
     if (s == NULL)
         return FRICREG_ENULL;
-    int status = start_setter(s, me, ns, ndof, who);
+    int status = start_setter(s, me, ns, dim, ndof, who);
     if (status != FRICREG_OK)
         return status;
     if (me == 0)
         return remove_all(s);
     if ((status = check_params(s, me, ns, kind, k, phi, who)) != FRICREG_OK)
         return status;
-    struct fr_compressed a = {me, ndof, 0, flags, rowptr, colind, values};
+    struct fr_compressed a = {(size_t)dim * me, ndof, 0, flags, rowptr, colind, values};
     cholmod_sparse *J = NULL;
     status = fr_compressed_check(&a, 0, &s->err, who);
     if (status == FRICREG_OK)
         status = fr_compressed_to_cholmod(&a, 0, &s->cc, &J, &s->err, who);
-    return status != FRICREG_OK ? status : install(s, me, ns, J, k, phi, NULL, NULL, who);
+    return status != FRICREG_OK ? status : install(s, me, ns, dim, J, k, phi, NULL, NULL, who);
 }
 
 int fr_elements_clone(fricreg_structure *dst, const fricreg_structure *src)
@@ -288,21 +307,37 @@ int fr_elements_clone(fricreg_structure *dst, const fricreg_structure *src)
 int fricreg_structure_set_jenkins(fricreg_structure *s, size_t me, size_t ndof, const double Je[],
                                   const double kt[], const double mun[])
 {
-    return set_dense(s, me, ndof, Je, NULL, KIND_JENKINS, 1, kt, mun, NULL, NULL, "set_jenkins");
+    return set_dense(s, me, 1, ndof, Je, NULL, KIND_JENKINS, 1, kt, mun, NULL, NULL, "set_jenkins");
 }
 
 int fricreg_structure_set_jenkins_csr(fricreg_structure *s, size_t me, size_t ndof, int flags,
                                       const int64_t rowptr[], const int64_t colind[],
                                       const double values[], const double kt[], const double mun[])
 {
-    return set_csr(s, me, ndof, flags, rowptr, colind, values, KIND_JENKINS, 1, kt, mun,
+    return set_csr(s, me, 1, ndof, flags, rowptr, colind, values, KIND_JENKINS, 1, kt, mun,
                    "set_jenkins_csr");
+}
+
+int fricreg_structure_set_jenkins_2d(fricreg_structure *s, size_t me, size_t ndof,
+                                     const double Je[], const double kt[], const double mun[])
+{
+    return set_dense(s, me, 2, ndof, Je, NULL, KIND_JENKINS, 1, kt, mun, NULL, NULL,
+                     "set_jenkins_2d");
+}
+
+int fricreg_structure_set_jenkins_2d_csr(fricreg_structure *s, size_t me, size_t ndof, int flags,
+                                         const int64_t rowptr[], const int64_t colind[],
+                                         const double values[], const double kt[],
+                                         const double mun[])
+{
+    return set_csr(s, me, 2, ndof, flags, rowptr, colind, values, KIND_JENKINS, 1, kt, mun,
+                   "set_jenkins_2d_csr");
 }
 
 int fricreg_structure_set_iwan(fricreg_structure *s, size_t me, size_t ndof, const double Je[],
                                size_t ns, const double k[], const double phi[])
 {
-    return set_dense(s, me, ndof, Je, NULL, KIND_IWAN, ns, k, phi, NULL, NULL, "set_iwan");
+    return set_dense(s, me, 1, ndof, Je, NULL, KIND_IWAN, ns, k, phi, NULL, NULL, "set_iwan");
 }
 
 int fricreg_structure_set_iwan_csr(fricreg_structure *s, size_t me, size_t ndof, int flags,
@@ -310,7 +345,7 @@ int fricreg_structure_set_iwan_csr(fricreg_structure *s, size_t me, size_t ndof,
                                    const double values[], size_t ns, const double k[],
                                    const double phi[])
 {
-    return set_csr(s, me, ndof, flags, rowptr, colind, values, KIND_IWAN, ns, k, phi,
+    return set_csr(s, me, 1, ndof, flags, rowptr, colind, values, KIND_IWAN, ns, k, phi,
                    "set_iwan_csr");
 }
 
@@ -318,7 +353,7 @@ int fricreg_structure_set_jenkins_normal(fricreg_structure *s, size_t me, size_t
                                          const double Je[], const double Jn[], const double kt[],
                                          const double mu[], const double n0[], const double kn[])
 {
-    return set_dense(s, me, ndof, Je, Jn, KIND_NORMAL, 1, kt, mu, n0, kn, "set_jenkins_normal");
+    return set_dense(s, me, 1, ndof, Je, Jn, KIND_NORMAL, 1, kt, mu, n0, kn, "set_jenkins_normal");
 }
 
 int fricreg_structure_get_normal_forces(const fricreg_structure *s, size_t me, double N[])
@@ -342,12 +377,34 @@ int fricreg_structure_get_jenkins_state(const fricreg_structure *s, size_t me, d
         return FRICREG_ENULL;
     if (me != s->el.me || (w != NULL && me > 0 && s->el.ns != 1))
         return FRICREG_ESIZE;
+    if (me > 0 && s->el.dim == 2 && (f != NULL || w != NULL))
+        return FRICREG_EINVAL; /* f and w of 2 me: get_jenkins_2d_state */
     if (me == 0)
         return FRICREG_OK;
     if (f != NULL)
         memcpy(f, s->el.fe, me * sizeof *f);
     if (w != NULL)
         memcpy(w, s->el.wc, me * sizeof *w);
+    if (D != NULL)
+        memcpy(D, s->el.dissipation, me * sizeof *D);
+    return FRICREG_OK;
+}
+
+int fricreg_structure_get_jenkins_2d_state(const fricreg_structure *s, size_t me, double f[],
+                                           double w[], double D[])
+{
+    if (s == NULL || (f == NULL && w == NULL && D == NULL))
+        return FRICREG_ENULL;
+    if (me != s->el.me)
+        return FRICREG_ESIZE;
+    if (me == 0)
+        return FRICREG_OK;
+    if (s->el.dim != 2)
+        return FRICREG_EINVAL; /* 1-D elements: get_jenkins_state, get_iwan_state */
+    if (f != NULL)
+        memcpy(f, s->el.fe, 2 * me * sizeof *f);
+    if (w != NULL)
+        memcpy(w, s->el.wc, 2 * me * sizeof *w);
     if (D != NULL)
         memcpy(D, s->el.dissipation, me * sizeof *D);
     return FRICREG_OK;
@@ -360,6 +417,8 @@ int fricreg_structure_get_iwan_state(const fricreg_structure *s, size_t me, size
         return FRICREG_ENULL;
     if (me != s->el.me || (me > 0 && ns != s->el.ns))
         return FRICREG_ESIZE;
+    if (me > 0 && s->el.dim == 2)
+        return FRICREG_EINVAL; /* 2-D Jenkins elements: get_jenkins_2d_state */
     if (me == 0)
         return FRICREG_OK;
     if (f != NULL)
@@ -411,11 +470,37 @@ static double element(const struct fr_elements *e, size_t i, double q, double gn
     return F;
 }
 
+/* 2-D element i at q[2]: its force into fs1[2i..] and x[2] (x may be NULL), the trial slider
+ * into wt, and, with t (NULL: none), the 2x2 block's diagonal into t[0..1] and off-diagonal
+ * into t[2..3] (the rows' tan and tang). */
+static void element_2d(const struct fr_elements *e, size_t i, const double q[2], double x[2],
+                       double *tan, double *tang)
+{
+    double t[4];
+    fr_slider_return(e->k[i], e->phi[i], 0.0, 2, q, &e->wc[2 * i], &e->fs1[2 * i], &e->wt[2 * i],
+                     tan != NULL ? t : NULL, NULL);
+    if (x != NULL) {
+        x[0] = e->fs1[2 * i];
+        x[1] = e->fs1[2 * i + 1];
+    }
+    if (tan != NULL) {
+        tan[0] = t[0];
+        tan[1] = t[3];
+        tang[0] = t[1];
+        tang[1] = t[2];
+    }
+}
+
 /* The forces x[nc] at the coordinates y[nc] from the committed wc (the sliders' trial state as
  * element's): the elements', then the normal forces max(0, n0 + kn g). */
 static void map(const struct fr_elements *e, const double y[], double x[])
 {
     size_t me = e->me;
+    if (e->dim == 2) {
+        for (size_t i = 0; i < me; i++)
+            element_2d(e, i, y + 2 * i, x + 2 * i, NULL, NULL);
+        return;
+    }
     for (size_t i = 0; i < me; i++)
         x[i] = element(e, i, y[i], e->n0 != NULL ? y[me + i] : 0.0, NULL, NULL);
     for (size_t i = 0; i < e->nc - me; i++)
@@ -429,7 +514,7 @@ void fr_elements_equilibrium(fricreg_structure *s, gsl_vector *w)
         return;
     fr_csc_mult_t(e->Jt, s->u->data, e->q0);
     map(e, e->q0, e->fe);
-    size_t bytes = e->me * e->ns * sizeof(double); /* idempotent: a returned slider sticks */
+    size_t bytes = e->me * e->ns * (size_t)e->dim * sizeof(double); /* idempotent: sticks */
     memcpy(e->wc, e->wt, bytes);
     memcpy(e->fs, e->fs1, bytes);
     fr_csc_mult_add(e->Jt, -1.0, e->fe, w->data);
@@ -481,11 +566,17 @@ double fr_elements_residual(struct fr_elements *e, const double f[], double g[],
 {
     size_t me = e->me, nc = e->nc;
     double sum = 0.0, big = 0.0;
-    for (size_t i = 0; i < me; i++) {
+    for (size_t i = 0; i < me && e->dim == 2; i++) {
+        double x[2];
+        element_2d(e, i, e->y + 2 * i, x, &e->tan[2 * i], &e->tang[2 * i]);
+        g[2 * i] = f[2 * i] - x[0];
+        g[2 * i + 1] = f[2 * i + 1] - x[1];
+    }
+    for (size_t i = 0; i < me && e->dim == 1; i++) {
         double gn = e->n0 != NULL ? e->y[me + i] : 0.0;
         g[i] = f[i] - element(e, i, e->y[i], gn, &e->tan[i], e->n0 != NULL ? &e->tang[i] : NULL);
     }
-    for (size_t i = 0; i < nc - me; i++) {
+    for (size_t i = 0; i < (e->n0 != NULL ? me : 0); i++) {
         double N = e->n0[i] + e->kn[i] * e->y[me + i];
         e->tan[me + i] = N > 0.0 ? e->kn[i] : 0.0;
         g[me + i] = f[me + i] - fmax(0.0, N);
@@ -512,18 +603,19 @@ static double evaluate(struct fr_elements *e, double c, const double f[], double
     return fr_elements_residual(e, f, g, rinf);
 }
 
-/* df = -(I + c T E)^-1 g, T = diag(tan) plus dfe/dg's entries (row i, column me + i) with a
- * normal law, by GSL's QR with column pivoting (its LU allocates in GSL 2.7: a step must not);
+/* df = -(I + c T E)^-1 g, T = diag(tan) plus tang's entries (row i, column
+ * fr_elements_partner: dfe/dg with a normal law, a 2-D element's block), by GSL's QR with column pivoting (its LU allocates in GSL 2.7: a step must not);
  * 0 if the matrix is singular. */
 static int direction(struct fr_elements *e, double c)
 {
-    size_t me = e->me, nc = e->nc;
+    size_t nc = e->nc;
     for (size_t i = 0; i < nc; i++) {
+        size_t p = fr_elements_partner(e, i);
         for (size_t j = 0; j < nc; j++)
             e->A[i * nc + j] = c * e->tan[i] * e->E[i * nc + j];
-        if (i < me && e->n0 != NULL)
+        if (p < nc)
             for (size_t j = 0; j < nc; j++)
-                e->A[i * nc + j] += c * e->tang[i] * e->E[(me + i) * nc + j];
+                e->A[i * nc + j] += c * e->tang[i] * e->E[p * nc + j];
         e->A[i * nc + i] += 1.0;
         e->df[i] = -e->g[i];
     }
@@ -604,17 +696,18 @@ void fr_elements_commit(fricreg_structure *s)
     if (e->me == 0)
         return; /* no arrays: memcpy may not take NULL */
     e->crossed = 0;
-    for (size_t i = e->me; i < e->nc; i++)
+    for (size_t i = e->me; i < e->nc && e->n0 != NULL; i++)
         e->crossed |= (e->fe[i] > 0.0) != (e->fe1[i] > 0.0);
     memcpy(e->fe, e->fe1, e->nc * sizeof *e->fe);
-    memcpy(e->fs, e->fs1, e->me * e->ns * sizeof *e->fs);
-    memcpy(e->wc, e->wt, e->me * e->ns * sizeof *e->wc);
+    size_t slots = e->me * e->ns * (size_t)e->dim;
+    memcpy(e->fs, e->fs1, slots * sizeof *e->fs);
+    memcpy(e->wc, e->wt, slots * sizeof *e->wc);
 }
 
 void fr_elements_hold(fricreg_structure *s, int restore)
 {
     struct fr_elements *e = &s->el;
-    size_t bytes = e->nc * sizeof(double), sbytes = e->me * e->ns * sizeof(double);
+    size_t bytes = e->nc * sizeof(double), sbytes = e->me * e->ns * (size_t)e->dim * sizeof(double);
     if (e->me == 0)
         return;
     memcpy(restore ? e->fe : e->fe_held, restore ? e->fe_held : e->fe, bytes);
@@ -627,8 +720,8 @@ void fr_elements_reset(fricreg_structure *s)
     struct fr_elements *e = &s->el;
     if (e->me == 0)
         return;
-    memset(e->wc, 0, e->me * e->ns * sizeof *e->wc);
-    memset(e->fs, 0, e->me * e->ns * sizeof *e->fs);
+    memset(e->wc, 0, e->me * e->ns * (size_t)e->dim * sizeof *e->wc);
+    memset(e->fs, 0, e->me * e->ns * (size_t)e->dim * sizeof *e->fs);
     memset(e->fe, 0, e->nc * sizeof *e->fe);
 }
 
@@ -636,9 +729,9 @@ double fr_elements_strain(const fricreg_structure *s)
 {
     const struct fr_elements *e = &s->el;
     double energy = 0.0;
-    for (size_t j = 0; j < e->me * e->ns; j++)
-        energy += 0.5 * e->fs[j] * (e->fs[j] / e->k[j]);
-    for (size_t i = 0; i < e->nc - e->me; i++) /* the normal springs: N^2/(2 kn) */
+    for (size_t j = 0; j < e->me * e->ns * (size_t)e->dim; j++) /* 2-D: |f|^2/(2 kt) */
+        energy += 0.5 * e->fs[j] * (e->fs[j] / e->k[j / (size_t)e->dim]);
+    for (size_t i = 0; i < (e->n0 != NULL ? e->me : 0); i++) /* the normal springs: N^2/(2 kn) */
         energy += 0.5 * e->fe[e->me + i] * (e->fe[e->me + i] / e->kn[i]);
     return energy;
 }

@@ -225,7 +225,7 @@ static int direction(fricreg_structure *s)
 {
     struct fr_elements *e = &s->el;
     struct fr_joint *j = &e->joint;
-    size_t m = j->m, nc = j->nc, dim = j->dim, me = e->me;
+    size_t m = j->m, nc = j->nc, dim = j->dim;
     double w = 1.0 + s->alpha, c = w * s->gamma * s->step_dt,
            ce = w * s->beta * s->step_dt * s->step_dt;
     int status = FRICREG_OK;
@@ -233,12 +233,12 @@ static int direction(fricreg_structure *s)
         return status;
     for (size_t k = 0; k < nc; k++) { /* dfe - T_e ce (C^T df - E dfe) = -G_e */
         double *row = j->T + (m + k) * dim, t = e->tan[k];
-        double tg = k < me && e->n0 != NULL ? e->tang[k] : 0.0;
+        size_t p = fr_elements_partner(e, k); /* tang: dfe/dg, or the 2-D block's other entry */
+        double tg = p < nc ? e->tang[k] : 0.0;
         for (size_t i = 0; i < m; i++)
-            row[i] = -ce * (t * j->C[i * nc + k] + (tg != 0.0 ? tg * j->C[i * nc + me + k] : 0.0));
+            row[i] = -ce * (t * j->C[i * nc + k] + (tg != 0.0 ? tg * j->C[i * nc + p] : 0.0));
         for (size_t l = 0; l < nc; l++)
-            row[m + l] = ce *
-                         (t * e->E[k * nc + l] + (tg != 0.0 ? tg * e->E[(me + k) * nc + l] : 0.0));
+            row[m + l] = ce * (t * e->E[k * nc + l] + (tg != 0.0 ? tg * e->E[p * nc + l] : 0.0));
         row[m + k] += 1.0;
         j->rhs[m + k] = -j->ge[k];
     }

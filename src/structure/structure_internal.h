@@ -48,7 +48,10 @@ struct fr_energy {
  * With a normal law (n0 != NULL) element i also has the row i of J_n, g = J_n u, the normal
  * force N = max(0, n0 + kn g) and the bound phi_s N (phi holding mu): the element
  * coordinates are then (q, g), nc = 2 me of them, and the forces (fe, N), -J_n^T N acting on
- * the structure too; without, nc = me. */
+ * the structure too; without, nc = me.
+ * 2-D elements (dim = 2, ns = 1, no normal law) have two coordinates each, rows 2i and 2i + 1
+ * of J_e, nc = 2 me: per-slider arrays are then [me ns dim], the tangent a 2x2 block per
+ * element, its diagonal in tan and its off-diagonal in tang ([nc]). */
 /* The joint step's dense storage (joint_step.c), for elements beside contacts of bound > 0:
  * m contacts, nc element coordinates, dim = m + nc; row-major. */
 struct fr_joint {
@@ -69,6 +72,7 @@ struct fr_joint {
 
 struct fr_elements {
     size_t me, ns, nc;
+    int dim;                   /* 1, or 2: each element on two rows of J_e */
     cholmod_sparse *Jt;        /* n x nc: J_e^T, then J_n^T */
     double *k, *phi;           /* [me ns] */
     double *n0, *kn;           /* [me] the normal law, or NULL */
@@ -80,8 +84,8 @@ struct fr_elements {
     double *fe_held;           /* [nc] */
     double *dissipation;       /* [me] since set_initial */
     double *q0, *y, *g, *df, *ft, *gt, *tan; /* [nc] Newton's scratch */
-    double *tang;                            /* [me] dfe/dg (normal law), or NULL */
-    double *tau, *norm;                      /* [nc] the Newton matrix's QR (GSL's, pivoted) */
+    double *tang; /* [me] dfe/dg (normal law), [nc] the 2x2 blocks' off-diagonal (dim 2), or NULL */
+    double *tau, *norm; /* [nc] the Newton matrix's QR (GSL's, pivoted) */
     double *E, *A; /* [nc nc] J K_eff^-1 J^T for step_dt (J = J_e, or J_e over J_n), Newton's */
     size_t *perm;  /* [nc] its QR's permutation */
     int E_valid;   /* E is K_eff's at step_dt */
@@ -284,6 +288,14 @@ int fr_elements_compliance(fricreg_structure *s, int joint);
  * e->tan (and e->tang), the trial sliders into e->wt, e->fs1; returns ||G||_2, *rinf its
  * largest entry (NaN propagates). */
 double fr_elements_residual(struct fr_elements *e, const double fe[], double g[], double *rinf);
+/* The column of coordinate k's second tangent entry (tang[k]): its partner in a 2-D element,
+ * its normal coordinate under a normal law; nc if it has none. */
+static inline size_t fr_elements_partner(const struct fr_elements *e, size_t k)
+{
+    if (e->dim == 2)
+        return k ^ 1;
+    return k < e->me && e->n0 != NULL ? e->me + k : e->nc;
+}
 void fr_elements_equilibrium(fricreg_structure *s, gsl_vector *w);
 void fr_elements_explicit(fricreg_structure *s, const gsl_vector *u1, gsl_vector *w);
 int fr_elements_newmark(fricreg_structure *s, double dt, double scale, gsl_vector *b,

@@ -1574,6 +1574,61 @@ static const struct script structure_iwan_script = {"structure with Iwan element
                                                     structure_errcode,
                                                     structure_close};
 
+/* The same frame with one 2-D Jenkins element on J's two rows: set_jenkins_2d (dense)
+ * replaced by set_jenkins_2d_csr (other parameters); the contacts' bounds 0, or > 0 beside it
+ * (the joint step, Newmark and HHT-alpha only). */
+static int structure_2d_joint; /* the bounds > 0 */
+
+static void see_structure_jenkins_2d(const fricreg_structure *s, struct view *v)
+{
+    double f[2] = {-1, -1}, w[2] = {-1, -1}, D[1] = {-1}, value = -1.0;
+    see_structure(s, v);
+    see(v, fricreg_structure_get_jenkins_2d_state(s, 1, f, w, D));
+    see_all(v, f, 2), see_all(v, w, 2), see_all(v, D, 1);
+    see(v, fricreg_structure_get_value(s, FRICREG_SVALUE_JENKINS, &value));
+    see(v, value);
+}
+
+static void structure_jenkins_2d_observe(void *obj, struct view *v)
+{
+    double t = 0.0;
+    see_structure_jenkins_2d(obj, v);
+    fricreg_structure_get_value(obj, FRICREG_SVALUE_TIME, &t);
+    see(v, fricreg_structure_run(obj, ST_DT, t + 0.1));
+    see_structure_jenkins_2d(obj, v);
+}
+
+static const char *const structure_jenkins_2d_calls[] = {"set_mass",     "set_stiffness",
+                                                         "set_contacts", "set_bounds",
+                                                         "set_load(1)",  "set_jenkins_2d",
+                                                         "the scheme",   "set_jenkins_2d_csr",
+                                                         "run"};
+
+static int structure_jenkins_2d_call(void *obj, int i, struct view *v)
+{
+    switch (i) {
+    case 3:
+        return fricreg_structure_set_bounds(obj, 2, structure_2d_joint ? FRAME_MUN : FRAME_ZERO);
+    case 5: return fricreg_structure_set_jenkins_2d(obj, 1, 3, FRAME_J, FRAME_KT, FRAME_MUN_E);
+    case 7:
+        return fricreg_structure_set_jenkins_2d_csr(obj, 1, 3, 0, FRAME_JE_PTR, FRAME_JE_IND,
+                                                    FRAME_JE_VAL, FRAME_KT + 1, FRAME_MUN_E + 1);
+    default: return structure_jenkins_call(obj, i, v);
+    }
+}
+
+static const struct script structure_jenkins_2d_script = {"structure with 2-D Jenkins elements",
+                                                          9,
+                                                          structure_jenkins_2d_calls,
+                                                          1u << 5,
+                                                          0,
+                                                          structure_open,
+                                                          structure_jenkins_2d_call,
+                                                          NULL,
+                                                          structure_jenkins_2d_observe,
+                                                          structure_errcode,
+                                                          structure_close};
+
 /* The same frame with Jenkins elements under a normal load with lift-off
  * (set_jenkins_normal, then again with other parameters). */
 static const double FRAME_JN[6] = {0, 1, 0, 0, 0, 1}, FRAME_MU[2] = {0.3, 0.5},
@@ -2425,6 +2480,23 @@ START_TEST(test_structure_iwan_run)
 }
 END_TEST
 
+START_TEST(test_structure_jenkins_2d_run)
+{
+    static const char *const names[5] = {"structure newmark, 2-D Jenkins elements",
+                                         "structure hht, 2-D Jenkins elements",
+                                         "structure central difference, 2-D Jenkins elements",
+                                         "structure newmark, 2-D Jenkins elements beside contacts",
+                                         "structure hht, 2-D Jenkins elements beside contacts"};
+    current_scheme = _i % 3;
+    structure_2d_joint = _i >= 3;
+    struct script sc = structure_jenkins_2d_script;
+    sc.name = names[_i];
+    struct tally t = fail_each_allocation(&sc);
+    structure_2d_joint = 0;
+    ck_assert_int_ge(t.enomem, t.cases - 30); /* CHOLMOD's own fallbacks, as above */
+}
+END_TEST
+
 START_TEST(test_structure_normal_run)
 {
     static const char *const names[3] = {"structure newmark, lift-off elements",
@@ -2577,6 +2649,7 @@ static Suite *alloc_suite(void)
     tcase_add_loop_test(drivers, test_structure_jenkins_run, 0, 3);
     tcase_add_loop_test(drivers, test_structure_joint_run, 0, 2); /* implicit: the joint step */
     tcase_add_loop_test(drivers, test_structure_iwan_run, 0, 3);
+    tcase_add_loop_test(drivers, test_structure_jenkins_2d_run, 0, 5);
     tcase_add_loop_test(drivers, test_structure_normal_run, 0, 3);
     suite_add_tcase(s, drivers);
     return s;
