@@ -301,7 +301,7 @@ int fr_elements_clone(fricreg_structure *dst, const fricreg_structure *src)
     cholmod_sparse *J = cholmod_l_transpose(e->Jt, 1, &dst->cc);
     if (J == NULL)
         return fr_fail(dst, FRICREG_ENOMEM, "companion: no memory for %zu elements", e->me);
-    return install(dst, e->me, e->ns, J, e->k, e->phi, e->n0, e->kn, "companion");
+    return install(dst, e->me, e->ns, e->dim, J, e->k, e->phi, e->n0, e->kn, "companion");
 }
 
 int fricreg_structure_set_jenkins(fricreg_structure *s, size_t me, size_t ndof, const double Je[],
