@@ -159,6 +159,10 @@ void cli_print_warnings(const struct cli_warnings *w);
 /* ", \"warnings\": [{\"code\": NAME, \"message\": TEXT}, ...]" (JSON strings escaped). */
 void cli_json_warnings(FILE *out, const struct cli_warnings *w);
 
+/* json_out.c: a number as JSON, %.17g or null where it is not finite; ", \"NAME\": [a_0, ...]". */
+void cli_json_number(FILE *out, double x);
+void cli_json_array(FILE *out, const char *name, size_t n, const double a[]);
+
 /* output.c */
 void cli_write_summary(FILE *out, const struct cli_summary *s);
 int cli_run_summary(const struct cli_run *run, FILE *out);

@@ -83,23 +83,6 @@ static int execute(fricreg_sim *sim, const struct cli_run *run)
                             : fricreg_sim_run_cycles(sim, run->cycles);
 }
 
-/* A number, or null where it is not finite (JSON has no infinity: the estimate of a cycle an
- * extrapolation over a window did not extrapolate). */
-static void json_number(FILE *out, double x)
-{
-    isfinite(x) ? fprintf(out, "%.17g", x) : fprintf(out, "null");
-}
-
-static void json_array(FILE *out, const char *name, size_t n, const double a[])
-{
-    fprintf(out, ", \"%s\": [", name);
-    for (size_t i = 0; i < n; i++) {
-        fprintf(out, "%s", i ? ", " : "");
-        json_number(out, a[i]);
-    }
-    fprintf(out, "]");
-}
-
 /* "extrapolation": {…}; an observed order that could not be measured (NaN) is null. */
 static void write_extrapolation(FILE *out, const struct cli_extrapolation *x, size_t cycles)
 {
@@ -110,9 +93,9 @@ static void write_extrapolation(FILE *out, const struct cli_extrapolation *x, si
     fprintf(out, ", \"flagged_cycles\": %.0f, \"eps_finest\": %.17g, \"rhs_evals\": %.0f",
             x->flagged_cycles, x->eps_finest, x->rhs_evals);
     fprintf(out, ", \"dissipation\": %.17g, \"dissipation_error\": ", x->dissipation);
-    json_number(out, x->dissipation_error);
-    json_array(out, "dissipation_per_cycle", cycles, x->D);
-    json_array(out, "error_per_cycle", cycles, x->err);
+    cli_json_number(out, x->dissipation_error);
+    cli_json_array(out, "dissipation_per_cycle", cycles, x->D);
+    cli_json_array(out, "error_per_cycle", cycles, x->err);
     fprintf(out, "}");
 }
 
@@ -141,13 +124,13 @@ void cli_write_summary(FILE *out, const struct cli_summary *s)
     if (s->adaptive)
         fprintf(out, ", \"kinks\": %.0f", s->kinks);
     if (s->adaptive && s->atol_used != NULL) /* per component of y = (x, v, D) */
-        json_array(out, "atol_used", 2 * s->ndof + 1, s->atol_used);
-    json_array(out, "x", s->ndof, s->x);
-    json_array(out, "v", s->ndof, s->v);
-    json_array(out, "dissipation_per_cycle", s->cycles, s->D);
+        cli_json_array(out, "atol_used", 2 * s->ndof + 1, s->atol_used);
+    cli_json_array(out, "x", s->ndof, s->x);
+    cli_json_array(out, "v", s->ndof, s->v);
+    cli_json_array(out, "dissipation_per_cycle", s->cycles, s->D);
     if (s->D_err != NULL) /* an estimate that could not be formed is null */
-        json_array(out, "dissipation_error_estimate", s->cycles, s->D_err);
-    json_array(out, "stick_fraction", s->ncontacts, s->stick);
+        cli_json_array(out, "dissipation_error_estimate", s->cycles, s->D_err);
+    cli_json_array(out, "stick_fraction", s->ncontacts, s->stick);
     if (s->extrap != NULL)
         write_extrapolation(out, s->extrap, s->cycles);
     fprintf(out, ", \"cpu_seconds\": %.6f", s->cpu_seconds);

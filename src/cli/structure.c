@@ -280,14 +280,6 @@ static int64_t sstat(const fricreg_structure *s, int which)
     return v;
 }
 
-static void json_array(FILE *out, const char *name, size_t n, const double a[])
-{
-    fprintf(out, ", \"%s\": [", name);
-    for (size_t i = 0; i < n; i++)
-        fprintf(out, "%s%.17g", i ? ", " : "", a[i]);
-    fputc(']', out);
-}
-
 /* The library's warnings on the structure and its run (fricreg_structure_warning_count, judged
  * by the caller after the run), each printed once on stderr. */
 static void structure_warnings(fricreg_structure *s, struct cli_warnings *w)
@@ -331,26 +323,26 @@ static void write_summary(FILE *out, const struct structure_options *o,
             "\"eps\": %.17g, \"steps\": %lld, \"t\": %.17g, \"ndof\": %zu, "
             "\"ncontacts\": %zu",
             eps, (long long)steps, svalue(s, FRICREG_SVALUE_TIME), in->n, in->m);
-    json_array(out, "x", in->n, run->u);
-    json_array(out, "v", in->n, run->v);
-    json_array(out, "peak_displacement", in->n, run->peak);
+    cli_json_array(out, "x", in->n, run->u);
+    cli_json_array(out, "v", in->n, run->v);
+    cli_json_array(out, "peak_displacement", in->n, run->peak);
     if (est->peak_err != NULL)
-        json_array(out, "peak_displacement_error_estimate", in->n, est->peak_err);
-    json_array(out, "dissipation_per_contact", in->m, D);
+        cli_json_array(out, "peak_displacement_error_estimate", in->n, est->peak_err);
+    cli_json_array(out, "dissipation_per_contact", in->m, D);
     if (est->D_err != NULL)
-        json_array(out, "dissipation_per_contact_error_estimate", in->m, est->D_err);
+        cli_json_array(out, "dissipation_per_contact_error_estimate", in->m, est->D_err);
     const struct cli_elements *el = &in->el;
     if (el->m > 0) {
         fprintf(out, ", \"njenkins\": %zu", el->m);
         fricreg_structure_get_jenkins_state(s, el->m, NULL, NULL, run->De);
-        json_array(out, "dissipation_per_jenkins", el->m, run->De);
+        cli_json_array(out, "dissipation_per_jenkins", el->m, run->De);
         fprintf(out, ", \"jenkins_dissipation\": %.17g, \"element_kind\": \"%s\"",
                 svalue(s, FRICREG_SVALUE_JENKINS), cli_element_kind_name(el));
         if (el->kind == CLI_ELEMENTS_IWAN)
             fprintf(out, ", \"sliders_per_element\": %zu", el->ns);
         if (el->kind == CLI_ELEMENTS_NORMAL) {
             fricreg_structure_get_normal_forces(s, el->m, run->De);
-            json_array(out, "normal_forces", el->m, run->De);
+            cli_json_array(out, "normal_forces", el->m, run->De);
         }
     }
     fprintf(out,
