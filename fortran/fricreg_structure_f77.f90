@@ -7,8 +7,8 @@
 ! none), INTEGER STAT last (the C status, FRICREG_OK = 0; nothing stops the program), DOUBLE
 ! PRECISION reals, nothing changed on failure. NDOF and M are checked by the C library against
 ! the structure (FRICREG_ESIZE) before any array is read, but for the dense rows that are
-! transposed here first (FRSTJF's J, FRSTJK's, FRSTIW's and FRSTLO's JE and JN): those are read
-! as (M, NDOF) or (ME, NDOF) as given, so they must have those dimensions.
+! transposed here first (FRSTJF's J, FRSTJK's, FRSTJ2's, FRSTIW's and FRSTLO's JE and JN): those
+! are read as (M, NDOF), (ME, NDOF) or (2 ME, NDOF) as given, so they must have those dimensions.
 !
 ! Matrices. The model is sparse inside; a legacy code hands over the compressed sparse columns
 ! (CSC) it holds, one-based, as they are: INTEGER*8 COLPTR(NCOL + 1), the column pointers
@@ -52,19 +52,21 @@
 !   FRSTJK(H, ME, NDOF, JE, KT, MUN, STAT)       _set_jenkins (given JE transposed)
 !   FRSTIW(H, ME, NDOF, JE, NS, K, PHI, STAT)    _set_iwan (JE transposed, K(NS, ME))
 !   FRSTLO(H, ME, NDOF, JE, JN, KT, MU, N0, KN, STAT)   _set_jenkins_normal (JE, JN transposed)
+!   FRSTJ2(H, ME, NDOF, JE, KT, MUN, STAT)       _set_jenkins_2d (JE(2 ME, NDOF) transposed)
 !   FRSTJS(H, ME, F, W, D, STAT)                 _get_jenkins_state
+!   FRSTS2(H, ME, F, W, D, STAT)                 _get_jenkins_2d_state (F(2, ME), W(2, ME))
 !   FRSTIS(H, ME, NS, F, W, D, STAT)             _get_iwan_state (W(NS, ME))
 !   FRSTNF(H, ME, N, STAT)                       _get_normal_forces
 !   FRSTER(H, CODE, MSG, STAT)                   _errcode, _errmsg
 !   FRCSTP(H, M, ZS, ZP, AP, W, WEFF, C, TOL, MAXIT, FLAGS, F, ITERS, CONV, STAT)
 !                                                fricreg_ctx_solve_step, on a context H of
 !                                                FRCTXC (the user's own Newmark)
-! The getters (FRSTG*, FRSTJS, FRSTIS, FRSTNF) read a const structure: C records no failure
+! The getters (FRSTG*, FRSTJS, FRSTS2, FRSTIS, FRSTNF) read a const structure: C records no failure
 ! of theirs, so FRSTER still shows the failure before (their STAT is the answer). So do the
 ! few refusals made here,
 ! before C is called, of counts that would wrap into size_t: FRSTCR's NDOF or M below 1
 ! (there is no structure yet to record it), FRSTAG's and FRSTLD's N below 0, FRSTIW's and
-! FRSTIS's NS below 0 (FRICREG_EINVAL).
+! FRSTIS's NS below 0, FRSTJ2's ME above 2**25 (C's limit 2 ME <= 2**26; FRICREG_EINVAL).
 
 !> FRSTCR(NDOF, M, H, STAT): create a structure of NDOF >= 1 degrees of freedom and M >= 1
 !> contacts into H, with C's defaults (M = I, C = K = 0, J unset, law (4), eps = 1e-3,
@@ -584,6 +586,39 @@ subroutine frstlo(h, me, ndof, je, jn, kt, mu, n0, kn, stat)
                                                   int(ndof, c_size_t), ct, cn, kt, mu, n0, kn))
 end subroutine frstlo
 
+!> FRSTJ2(H, ME, NDOF, JE, KT, MUN, STAT): ME 2-D Jenkins elements instead (C's
+!> fricreg_structure_set_jenkins_2d): element I on rows 2I - 1 (x) and 2I (y) of JE(2 ME, NDOF)
+!> in Fortran's order, Q_I = (JE U) on those two rows, its force FE_I = KT(I) (Q_I - W_I) with
+!> |FE_I| <= MUN(I) (an isotropic slider, radial return), acting on the structure as -JE^T FE.
+!> KT(ME) > 0, MUN(ME) >= 0; ME = 0 removes them; ME above 2**25 is FRICREG_EINVAL here. JE is
+!> transposed into a scratch copy of 2 ME NDOF values (FRICREG_ENOMEM if that fails). Motion on
+!> one axis is FRSTJK's element on that row. Replaces the elements in force.
+subroutine frstj2(h, me, ndof, je, kt, mun, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: me, ndof
+  double precision, intent(in) :: je(2 * min(max(me, 0), 2**25), *), kt(*), mun(*)
+  integer, intent(out) :: stat
+  double precision, allocatable :: jt(:, :)
+  integer :: mr, nn, alloc
+  if (me > 2**25) then ! 2 ME would pass C's limit (and may wrap a default INTEGER)
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  mr = 2 * max(me, 0)
+  nn = max(ndof, 0)
+  allocate (jt(nn, mr), stat=alloc)
+  if (alloc /= 0) then
+    stat = int(FRICREG_ENOMEM)
+    return
+  end if
+  if (mr > 0 .and. nn > 0) jt = transpose(je(1:mr, 1:nn))
+  stat = int(fricreg_structure_set_jenkins_2d(fricreg_handle_to_ptr(h), int(me, c_size_t), &
+                                              int(ndof, c_size_t), jt, kt, mun))
+end subroutine frstj2
+
 !> FRSTJS(H, ME, F, W, D, STAT): the Jenkins elements' forces F(ME) (on the element; -JE^T F
 !> on the structure), committed sliders W(ME) and dissipation D(ME) since they were set (C's
 !> fricreg_structure_get_jenkins_state, all three). FRICREG_ESIZE if ME is not the number of
@@ -599,6 +634,23 @@ subroutine frstjs(h, me, f, w, d, stat)
   stat = int(fricreg_structure_get_jenkins_state(fricreg_handle_to_ptr(h), &
                                                  int(max(me, 0), c_size_t), f, w, d))
 end subroutine frstjs
+
+!> FRSTS2(H, ME, F, W, D, STAT): the 2-D elements' (FRSTJ2) forces F(2, ME) (element I's x at
+!> F(1, I), y at F(2, I), as JE's rows 2I - 1, 2I; -JE^T F on the structure), committed sliders
+!> W(2, ME) laid out as F and dissipation D(ME) (C's fricreg_structure_get_jenkins_2d_state, all
+!> three). FRICREG_ESIZE if ME is not the number of elements; FRICREG_EINVAL if they are 1-D
+!> (FRSTJS, FRSTIS read those).
+subroutine frsts2(h, me, f, w, d, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: me
+  double precision, intent(inout) :: f(*), w(*), d(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_get_jenkins_2d_state(fricreg_handle_to_ptr(h), &
+                                                    int(max(me, 0), c_size_t), f, w, d))
+end subroutine frsts2
 
 !> FRSTIS(H, ME, NS, F, W, D, STAT): the elements' forces F(ME), committed sliders W(NS, ME)
 !> (element I's slider S at W(S, I)) and dissipation D(ME) (C's
