@@ -33,7 +33,8 @@ expect_output() {
 }
 
 # expect_same TOL ARGS-A -- ARGS-B: two runs print the same JSON summary, every number within
-# TOL relative (of 1e-300 at least), all but cpu_seconds and the element kind and sliders.
+# TOL relative (of 1e-300 at least), all but cpu_seconds, the element kind and sliders and the
+# 2-D elements' forces (which a 1-D run does not print).
 expect_same() {
     total=$((total + 1))
     tol=$1; shift
@@ -43,6 +44,7 @@ expect_same() {
     for run in a b; do
         if [ $run = a ]; then "$sim" $first >"$tmp/$run" 2>"$tmp/err"; else "$sim" "$@" >"$tmp/$run" 2>"$tmp/err"; fi
         sed -e 's/"cpu_seconds": [0-9.e+-]*//; s/, "element_kind": "[^"]*"//; s/, "sliders_per_element": [0-9]*//' \
+            -e 's/, "jenkins_forces": \[[][0-9.e+, -]*\]//' \
             "$tmp/$run" | tr -s ',:[]{} ' '\n' >"$tmp/$run.tokens"
     done
     if [ ! -s "$tmp/a" ] || ! paste "$tmp/a.tokens" "$tmp/b.tokens" | awk -v tol="$tol" -F'\t' '
@@ -323,6 +325,27 @@ expect_usage_error "^fricreg-sim: --iwan-params $d/nosuch.txt: cannot open" $jk 
 expect_usage_error "^fricreg-sim: --iwan-params: give only one of" $jk --jenkins-params $d/P_slip.txt --iwan-params $d/I_slip.txt --integrator newmark
 echo "0.05 200.0 -1 0" >"$d/S_bad.txt"
 expect_usage_error "^fricreg-sim: --iwan-segalman $d/S_bad.txt: .*chi" $jk --iwan-segalman $d/S_bad.txt --integrator newmark
+# 2-D elements (--jenkins-2d: rows 2i-1, 2i the element's x and y): the oscillator above with a
+# second dof (m 1.0, k 100, outside the ground's influence, so at rest), the element's x on dof
+# 1 and y on dof 2, is the 1-D element on dof 1 (docs/joints.md: motion on one axis is the 1-D
+# element bit for bit), stuck and slipping; stuck, its force [kt x, 0] from the closed form
+# above (200.0 x -0.00113279590437900 = -0.2265591808758; printed -0.2265591808757984).
+mtx M22.mtx symmetric "2 2 2" "1 1 2.385" "2 2 1.0"
+mtx K22.mtx symmetric "2 2 2" "1 1 217.3" "2 2 100.0"
+mtx J12.mtx general "1 2 1" "1 1 1"
+mtx R2.mtx general "2 1 1" "1 1 1"
+mtx J2d.mtx general "2 2 2" "1 1 1" "2 2 1"
+jk2="structure --mass $d/M22.mtx --stiffness $d/K22.mtx --contacts $d/J12.mtx --mun $d/mun0.txt --ground-accel $d/ag_osc.txt --influence $d/R2.mtx --dt 0.01 --t-end 1.37"
+expect_same 0 $jk2 --jenkins $d/J12.mtx --jenkins-params $d/P_stuck.txt --integrator newmark -- $jk2 --jenkins-2d $d/J2d.mtx --jenkins-params $d/P_stuck.txt --integrator newmark
+expect_same 0 $jk2 --jenkins $d/J12.mtx --jenkins-params $d/P_slip.txt --integrator newmark -- $jk2 --jenkins-2d $d/J2d.mtx --jenkins-params $d/P_slip.txt --integrator newmark
+expect_same 0 $jk2 --jenkins $d/J12.mtx --jenkins-params $d/P_slip.txt --integrator central -- $jk2 --jenkins-2d $d/J2d.mtx --jenkins-params $d/P_slip.txt --integrator central
+expect_output '"x": \[-0\.00113279590437[89][0-9]*, 0\].*"njenkins": 1, "dissipation_per_jenkins": \[0\], "jenkins_dissipation": 0, "element_kind": "jenkins-2d", "jenkins_forces": \[\[-0\.226559180875(79|80)[0-9]*, 0\]\]' $jk2 --jenkins-2d $d/J2d.mtx --jenkins-params $d/P_stuck.txt --integrator newmark
+mtx J2odd.mtx general "3 2 3" "1 1 1" "2 2 1" "3 1 1"
+expect_usage_error "^fricreg-sim: --jenkins-2d $d/J2odd.mtx: 3 rows: a 2-D element takes two" $jk2 --jenkins-2d $d/J2odd.mtx --jenkins-params $d/P_stuck.txt --integrator newmark
+expect_usage_error "^fricreg-sim: --jenkins-2d: give --jenkins or --jenkins-2d, not both" $jk2 --jenkins $d/J12.mtx --jenkins-2d $d/J2d.mtx --jenkins-params $d/P_stuck.txt --integrator newmark
+expect_usage_error "^fricreg-sim: --jenkins-2d: 2-D elements take --jenkins-params only" $jk2 --jenkins-2d $d/J2d.mtx --iwan-params $d/I_slip.txt --integrator newmark
+expect_usage_error "^fricreg-sim: --jenkins-params: missing (--jenkins-2d goes with" $jk2 --jenkins-2d $d/J2d.mtx --integrator newmark
+expect_usage_error "^fricreg-sim: --jenkins-2d: Jenkins elements are integrated by newmark" $jk2 --jenkins-2d $d/J2d.mtx --jenkins-params $d/P_stuck.txt --integrator rk4
 expect_usage_error "^fricreg-sim: --iwan-sliders: only with --iwan-segalman" $jk --iwan-params $d/I_slip.txt --iwan-sliders 3 --integrator newmark
 expect_usage_error "^fricreg-sim: --iwan-resolution: must be < 1" $jk --iwan-segalman $d/S_slip.txt --iwan-resolution 1 --integrator newmark
 # Lift-off (--normal Jn.mtx --normal-params Q.txt, a line kt mu n0 kn per element): the
@@ -525,6 +548,7 @@ fi
 expect_output '^       fricreg-sim hb --mass M\.mtx --stiffness K\.mtx' --help
 expect_usage_error "^fricreg-sim: --omega-end: missing" hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --jenkins $d/J.mtx --jenkins-params $d/P.txt --omega-start 1
 expect_usage_error "^fricreg-sim: --jenkins-params: missing" hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --jenkins $d/J.mtx --omega-start 1 --omega-end 2
+expect_usage_error "^fricreg-sim: --jenkins-2d: harmonic balance has no 2-D elements" hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --jenkins-2d $d/J.mtx --jenkins-params $d/P.txt --omega-start 1 --omega-end 2
 expect_usage_error "^fricreg-sim: --jenkins-params $d/P1.txt: line 1: " hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --jenkins $d/J.mtx --jenkins-params $d/P1.txt --omega-start 1 --omega-end 2
 expect_usage_error "^fricreg-sim: --harmonics: " $hb --harmonics 41
 expect_usage_error "^fricreg-sim: --newton-tol: .*tol" $hb --newton-tol 2

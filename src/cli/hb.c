@@ -61,6 +61,9 @@ static int check_options(const struct hb_options *o)
     for (size_t k = 0; k < 3; k++)
         if (given[k] == NULL)
             return cli_usage_error(required[k], "missing (a file is required)");
+    if (o->elements.rows_2d != NULL) /* fricreg_hb's elements are 1-D */
+        return cli_usage_error("--jenkins-2d", "harmonic balance has no 2-D elements (fricreg-sim "
+                                               "structure takes them); give --jenkins");
     int status = cli_check_elements(&o->elements, 1);
     if (status != 0)
         return status;

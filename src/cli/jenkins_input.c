@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* jenkins_input.c — the joint elements' files that `fricreg-sim hb` and `fricreg-sim
  * structure` share (jenkins_input.h): Jenkins, Iwan (the caller's sliders or Segalman's
- * model) and lift-off elements. */
+ * model), lift-off and (structure only) 2-D Jenkins elements. */
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
@@ -36,6 +36,22 @@ int cli_check_elements(const struct cli_element_files *e, int required)
     if (given > 1)
         return cli_usage_error(names[last], "give only one of --jenkins-params, --iwan-params, "
                                             "--iwan-segalman or --normal-params");
+    if ((e->sliders_given || e->resolution_given) && e->segalman == NULL)
+        return cli_usage_error(e->sliders_given ? "--iwan-sliders" : "--iwan-resolution",
+                               "only with --iwan-segalman");
+    if (!(e->resolution < 1.0))
+        return cli_usage_error("--iwan-resolution", "must be < 1 (a fraction of phi_max)");
+    if (e->rows_2d != NULL && e->rows != NULL)
+        return cli_usage_error("--jenkins-2d", "give --jenkins or --jenkins-2d, not both");
+    if (e->rows_2d != NULL &&
+        (e->iwan != NULL || e->segalman != NULL || e->normal != NULL || e->normal_params != NULL))
+        return cli_usage_error("--jenkins-2d", "2-D elements take --jenkins-params only (no Iwan "
+                                               "or lift-off 2-D elements)");
+    if (e->rows_2d != NULL && e->jenkins == NULL)
+        return cli_usage_error("--jenkins-params", "missing (--jenkins-2d goes with "
+                                                   "--jenkins-params)");
+    if (e->rows_2d != NULL)
+        return 0;
     if (e->rows == NULL && (required || given > 0 || e->normal != NULL))
         return cli_usage_error("--jenkins", given > 0 || e->normal != NULL
                                                 ? "missing (the elements' rows go with their "
@@ -48,17 +64,12 @@ int cli_check_elements(const struct cli_element_files *e, int required)
     if ((e->normal == NULL) != (e->normal_params == NULL))
         return cli_usage_error(e->normal == NULL ? "--normal" : "--normal-params",
                                "missing (--normal and --normal-params go together)");
-    if ((e->sliders_given || e->resolution_given) && e->segalman == NULL)
-        return cli_usage_error(e->sliders_given ? "--iwan-sliders" : "--iwan-resolution",
-                               "only with --iwan-segalman");
-    if (!(e->resolution < 1.0))
-        return cli_usage_error("--iwan-resolution", "must be < 1 (a fraction of phi_max)");
     return 0;
 }
 
 const char *cli_element_kind_name(const struct cli_elements *el)
 {
-    static const char *const names[] = {"jenkins", "iwan", "lift-off"};
+    static const char *const names[] = {"jenkins", "iwan", "lift-off", "jenkins-2d"};
     return names[el->kind];
 }
 
@@ -262,8 +273,29 @@ static int read_normal(const struct cli_element_files *e, size_t n, struct cli_e
     return status;
 }
 
+/* --jenkins-2d and --jenkins-params: 2m rows (two per element) and m lines kt mun. */
+static int read_planar(const struct cli_element_files *e, size_t n, struct cli_elements *el)
+{
+    size_t rows = 0, cols = 0;
+    int status = read_dense("--jenkins-2d", e->rows_2d, 0, n, &rows, &cols, &el->J);
+    if (status != 0)
+        return status;
+    if (rows % 2 != 0)
+        return cli_file_error("--jenkins-2d", e->rows_2d, 0,
+                              "%zu rows: a 2-D element takes two (x, y), an even count", rows);
+    el->m = rows / 2;
+    el->ns = 1;
+    el->kind = CLI_ELEMENTS_JENKINS_2D;
+    el->option = "--jenkins-params";
+    el->path = e->jenkins;
+    return cli_read_pairs("--jenkins-params", e->jenkins, el->m,
+                          "elements (row pairs of --jenkins-2d)", &el->k, &el->phi);
+}
+
 int cli_read_elements(const struct cli_element_files *e, size_t n, struct cli_elements *el)
 {
+    if (e->rows_2d != NULL)
+        return read_planar(e, n, el);
     if (e->rows == NULL)
         return 0;
     size_t cols = 0;

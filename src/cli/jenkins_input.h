@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* jenkins_input.h — the joint elements of `fricreg-sim hb` (hb.c) and `fricreg-sim structure`
  * (structure_model.c), from their files: --jenkins J.mtx (Matrix Market, m x n: element i's
- * q_i = (J x)_i) and one parameter file, a line per element:
+ * q_i = (J x)_i), or for the structure --jenkins-2d J.mtx (2m x n: 2-D element i on rows 2i,
+ * 2i + 1, with --jenkins-params only), and one parameter file, a line per element:
  *   --jenkins-params P.txt   kt mun                       (Jenkins elements)
  *   --iwan-params P.txt      k_1 phi_1 ... k_ns phi_ns    (Iwan elements, ns sliders each)
  *   --iwan-segalman S.txt    F_S K_T chi beta             (Iwan elements, Segalman's model
@@ -16,6 +17,7 @@
 /* The element options as parsed (file options point into argv). */
 struct cli_element_files {
     const char *rows;                      /* --jenkins */
+    const char *rows_2d;                   /* --jenkins-2d (instead of --jenkins) */
     const char *jenkins, *iwan, *segalman; /* the parameter files: one of these ... */
     const char *normal, *normal_params;    /* ... or --normal with --normal-params */
     int sliders, sliders_given;            /* --iwan-sliders (Segalman's discretization) */
@@ -29,6 +31,7 @@ struct cli_element_files {
 /* clang-format off */
 #define CLI_ELEMENT_OPTIONS(e)                                                                \
     {"--jenkins", CLI_FILE, .slot = &(e)->rows},                                             \
+    {"--jenkins-2d", CLI_FILE, .slot = &(e)->rows_2d},                                       \
     {"--jenkins-params", CLI_FILE, .slot = &(e)->jenkins},                                   \
     {"--iwan-params", CLI_FILE, .slot = &(e)->iwan},                                         \
     {"--iwan-segalman", CLI_FILE, .slot = &(e)->segalman},                                   \
@@ -43,14 +46,21 @@ struct cli_element_files {
 /* The defaults: 50 sliders at resolution 1e-6 (docs/joints.md's rule for Segalman's model). */
 void cli_element_defaults(struct cli_element_files *e);
 
-/* Options that need or exclude others: --jenkins with exactly one parameter file (required:
- * both must be given), --normal with --normal-params, --iwan-sliders and --iwan-resolution
- * with --iwan-segalman only. 0, or CLI_EXIT_USAGE after one line naming the option. */
+/* Options that need or exclude others: --jenkins (or --jenkins-2d, not both) with exactly one
+ * parameter file (required: both must be given), --jenkins-2d with --jenkins-params only,
+ * --normal with --normal-params, --iwan-sliders and --iwan-resolution with --iwan-segalman
+ * only. 0, or CLI_EXIT_USAGE after one line naming the option. */
 int cli_check_elements(const struct cli_element_files *e, int required);
 
-enum cli_element_kind { CLI_ELEMENTS_JENKINS, CLI_ELEMENTS_IWAN, CLI_ELEMENTS_NORMAL };
+enum cli_element_kind {
+    CLI_ELEMENTS_JENKINS,
+    CLI_ELEMENTS_IWAN,
+    CLI_ELEMENTS_NORMAL,
+    CLI_ELEMENTS_JENKINS_2D
+};
 
-/* The elements as read: m elements on the rows of J (m x n, dense row-major); ns sliders each
+/* The elements as read: m elements on the rows of J (m x n, dense row-major; 2-D elements: 2m
+ * rows, element i's x on row 2i, y on 2i + 1); ns sliders each
  * (1 but for Iwan elements) of stiffness k[m ns] and slip force phi[m ns] (row-major, element
  * i's slider s at [i ns + s]; Jenkins elements: kt, mun); lift-off: kt in k, mu[m], n0[m],
  * kn[m] and the normal rows Jn (m x n). option and path name the parameter file. */
@@ -67,7 +77,7 @@ struct cli_elements {
 int cli_read_elements(const struct cli_element_files *e, size_t n, struct cli_elements *el);
 void cli_free_elements(struct cli_elements *el);
 
-/* "jenkins", "iwan" or "lift-off", the summaries' element_kind. */
+/* "jenkins", "iwan", "lift-off" or "jenkins-2d", the summaries' element_kind. */
 const char *cli_element_kind_name(const struct cli_elements *el);
 
 /* Two columns per row, one row per entity (rows of them: dofs or elements, named by what in

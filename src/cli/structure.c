@@ -80,8 +80,8 @@ static int check_options(const struct structure_options *o)
     int status = cli_check_elements(&o->elements, 0);
     if (status != 0)
         return status;
-    if (o->elements.rows != NULL && o->scheme == SCHEME_GSL)
-        return cli_usage_error("--jenkins",
+    if ((o->elements.rows != NULL || o->elements.rows_2d != NULL) && o->scheme == SCHEME_GSL)
+        return cli_usage_error(o->elements.rows != NULL ? "--jenkins" : "--jenkins-2d",
                                "Jenkins elements are integrated by newmark, hht or central only");
     if ((o->rtol > 0.0 || o->atol > 0.0) && o->scheme != SCHEME_GSL)
         return cli_usage_error(o->rtol > 0.0 ? "--rtol" : "--atol",
@@ -167,8 +167,8 @@ static int setup(const struct structure_options *o, const struct structure_input
 /* What a run collects beside the structure's own records. */
 struct structure_run {
     double *u, *v, *f, *peak; /* [n], [n], [m], [n] */
-    double *De;               /* [me] the elements' dissipation (NULL without elements) */
-    FILE *rows;               /* CSV rows, or NULL */
+    double *De; /* [2 me]: the elements' dissipation, the 2-D forces (NULL without elements) */
+    FILE *rows; /* CSV rows, or NULL */
 };
 
 static void csv_header(FILE *out, size_t n, size_t m)
@@ -340,6 +340,18 @@ static void write_summary(FILE *out, const struct structure_options *o,
                 svalue(s, FRICREG_SVALUE_JENKINS), cli_element_kind_name(el));
         if (el->kind == CLI_ELEMENTS_IWAN)
             fprintf(out, ", \"sliders_per_element\": %zu", el->ns);
+        if (el->kind == CLI_ELEMENTS_JENKINS_2D) { /* element i's [f_x, f_y], as J_e's rows */
+            fricreg_structure_get_jenkins_2d_state(s, el->m, run->De, NULL, NULL);
+            fputs(", \"jenkins_forces\": [", out);
+            for (size_t i = 0; i < el->m; i++) {
+                fputs(i > 0 ? ", [" : "[", out);
+                cli_json_number(out, run->De[2 * i]);
+                fputs(", ", out);
+                cli_json_number(out, run->De[2 * i + 1]);
+                fputs("]", out);
+            }
+            fputs("]", out);
+        }
         if (el->kind == CLI_ELEMENTS_NORMAL) {
             fricreg_structure_get_normal_forces(s, el->m, run->De);
             cli_json_array(out, "normal_forces", el->m, run->De);
@@ -412,7 +424,7 @@ static int run_structure(fricreg_structure *s, const struct structure_options *o
                          const struct structure_input *in, double eps, FILE *out)
 {
     struct structure_run run = {0};
-    double *buf = calloc(3 * in->n + in->m + in->el.m, sizeof *buf);
+    double *buf = calloc(3 * in->n + in->m + 2 * in->el.m, sizeof *buf);
     if (buf == NULL)
         return cli_usage_error("structure", "out of memory");
     run.u = buf;
