@@ -756,8 +756,8 @@ FRICREG_API int fricreg_structure_get_value(const fricreg_structure *s, int whic
  *  - it is made at the first stepping call (fricreg_structure_step, _run or _run_ode) after
  *    fricreg_structure_set_initial (or creation) with the estimate on, as a copy of everything
  *    set then (model, Rayleigh damping, influence, load and ground records, law with eps / 2,
- *    bounds, scheme, Newton's settings, the bound on adaptive steps, Jenkins or Iwan elements,
- *    the initial state); turned on later in a run, the estimate starts at the next set_initial;
+ *    bounds, scheme, Newton's settings, the bound on adaptive steps, the elements (Jenkins,
+ *    Iwan, 2-D, lift-off), the initial state); turned on later in a run, the estimate starts at the next set_initial;
  *  - at the end of every stepping call on s (successful, failed after some steps, or stopped by
  *    the observer) it is stepped from its time to s's: fricreg_structure_step(s, dt) and
  *    fricreg_structure_run(s, dt, t_end) by fricreg_structure_run(companion, dt / 2, t) (two
