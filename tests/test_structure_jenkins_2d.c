@@ -319,6 +319,42 @@ START_TEST(csr_and_refusals)
 }
 END_TEST
 
+/* The error estimate's companion (fricreg_structure_set_error_estimate) copies the 2-D elements
+ * with their two rows each: its estimates are 3 |q - q_c| bit for bit against a structure set up
+ * by hand at eps / 2 and run at dt / 2, the element beside a contact of bound > 0. */
+START_TEST(error_estimate_companion)
+{
+    const double M[4] = {1.3, 0.0, 0.0, 0.9}, K[4] = {2.385, 0.4, 0.4, 1.7}, p[2] = {0.6, 0.3},
+                 J2[4] = {1.0, 0.0, 0.0, 1.0}, J0[2] = {1.0, -1.0}, kt = 1.7, mun = 0.35,
+                 eps = 1e-2;
+    const double omega = 1.5, dt = 2.0 * PI / omega / 128;
+    const int nsteps = 128 * 4;
+    fricreg_structure *s = make(2, M, K, NULL, J0, 0.05, p, omega, dt, nsteps),
+                      *c = make(2, M, K, NULL, J0, 0.05, p, omega, dt, nsteps);
+    ck_assert_int_eq(fricreg_structure_set_law(s, FRICREG_LAW_QUINN, eps), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_law(c, FRICREG_LAW_QUINN, 0.5 * eps), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_jenkins_2d(s, 1, 2, J2, &kt, &mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_jenkins_2d(c, 1, 2, J2, &kt, &mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_error_estimate(s, 1), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_run(s, dt, nsteps * dt), FRICREG_OK);
+    double t = 0.0;
+    ck_assert_int_eq(fricreg_structure_get_value(s, FRICREG_SVALUE_TIME, &t), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_run(c, 0.5 * dt, t), FRICREG_OK);
+    double u[2], uc[2], err[2], w[2];
+    ck_assert_int_eq(fricreg_structure_get_peak_displacement(s, 2, u), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_peak_displacement(c, 2, uc), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_peak_displacement_error(s, 2, err), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_jenkins_2d_state(c, 1, NULL, w, NULL), FRICREG_OK);
+    ck_assert(fabs(w[0]) > 0.0 && fabs(w[1]) > 0.0); /* the companion's slider moved on both axes */
+    for (int i = 0; i < 2; i++) {
+        ck_assert(err[i] > 0.0);
+        ck_assert_double_eq(err[i], 3.0 * fabs(u[i] - uc[i]));
+    }
+    fricreg_structure_free(c);
+    fricreg_structure_free(s);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("structure_jenkins_2d");
@@ -328,6 +364,7 @@ static Suite *suite(void)
     tcase_add_test(tc, circle_closed_form);
     tcase_add_test(tc, standalone_at_the_structures_displacements);
     tcase_add_test(tc, csr_and_refusals);
+    tcase_add_test(tc, error_estimate_companion);
     suite_add_tcase(s, tc);
     return s;
 }
