@@ -826,8 +826,9 @@ FRICREG_API int fricreg_structure_get_value(const fricreg_structure *s, int whic
  *    and rtol / 16, atol / 16;
  *  - the setters a run may call between steps are passed on to it: set_bounds, set_law (eps / 2
  *    of the new eps), set_ground_accel and set_load (a caller who feeds the record step by step
- *    feeds the companion too: it reads its records at its own step ends, in between), set_newton
- *    and set_max_steps (each call of the companion's bounded as s's). Every other setter after
+ *    feeds the companion too: it reads its records at its own step ends, in between), set_newton,
+ *    set_max_steps (each call of the companion's bounded as s's) and set_ode_abs_tolerances
+ *    (applied at / 16 there, as run_ode's rule from eps). Every other setter after
  *    the companion was made (the model matrices, Rayleigh, influence, scheme, elements) ends the
  *    estimate until the next set_initial: the getters then return FRICREG_EINVAL.
  *  The peaks are sampled at every fixed step's end (step, run, run_ode with fixed steps) and at
