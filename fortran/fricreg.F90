@@ -357,6 +357,8 @@ module fricreg
     procedure :: step => struct_step
     procedure :: run => struct_run
     procedure :: run_ode => struct_run_ode
+    procedure :: set_ode_abs_tolerances => struct_set_ode_abs_tolerances
+    procedure :: get_ode_abs_tolerances => struct_get_ode_abs_tolerances
     procedure :: get_state => struct_get_state
     procedure :: get_forces => struct_get_forces
     procedure :: get_dissipation => struct_get_dissipation
@@ -3045,9 +3047,11 @@ contains
   end function struct_run
 
   !> Integrate to t_end with a GSL stepper (FRICREG_INT_*): fixed steps dt when rtol and atol
-  !> are absent or 0, else adaptive with dt the first step (see C's fricreg_structure_run_ode).
+  !> are absent or 0, else adaptive with dt the first step (see C's fricreg_structure_run_ode);
+  !> rtol > 0 without atol: the absolute tolerances from eps, FRICREG_ATOL_FROM_EPS (since 1.6;
+  !> before, an absent atol was 0: pass atol = 0 for that).
   !> FRICREG_EINVAL; FRICREG_ENONFINITE; FRICREG_ESTEP; FRICREG_ESINGULAR; FRICREG_EDIVERGED;
-  !> FRICREG_EINTEGRATOR; FRICREG_ENOMEM.
+  !> FRICREG_EINTEGRATOR; FRICREG_EWORK; FRICREG_ENOMEM.
   function struct_run_ode(self, integrator, dt, t_end, rtol, atol) result(status)
     class(fricreg_structure), intent(inout) :: self
     integer(c_int), intent(in) :: integrator
@@ -3055,15 +3059,55 @@ contains
     real(c_double), intent(in), optional :: rtol, atol
     integer(c_int) :: status
     real(c_double) :: r, a
+    ! FRICREG_ATOL_FROM_EPS of fricreg_sim.h, as in sim_set_integrator;
+    ! test_structure_type.f90 checks that an absent atol gives the rule's tolerances.
+    real(c_double), parameter :: atol_from_eps = -1.0_c_double
     r = 0.0_c_double
     a = 0.0_c_double
     if (present(rtol)) r = rtol
+    if (r > 0.0_c_double) a = atol_from_eps
     if (present(atol)) a = atol
     status = self%ready('run_ode', 'structure')
     if (status == FRICREG_OK) status = self%record( &
                                        fricreg_structure_run_ode(self%ptr, integrator, dt, r, a, &
                                                                  t_end))
   end function struct_run_ode
+
+  !> An absolute tolerance per component of run_ode's state y = (u, v, W_in, E_visc, D), size
+  !> 2 ndof + 2 + m: ndof displacements, ndof velocities, the input work, the viscous and each
+  !> contact's dissipation; each finite and > 0. Every later adaptive run_ode uses them in place
+  !> of its atol; a size-0 atol removes them (fricreg_structure_set_ode_abs_tolerances).
+  !> FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_EINVAL; FRICREG_ENOMEM. Since 1.6.
+  function struct_set_ode_abs_tolerances(self, atol) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(in), contiguous :: atol(:)
+    integer(c_int) :: status
+    real(c_double) :: none(1)
+    status = self%ready('set_ode_abs_tolerances', 'structure')
+    if (status /= FRICREG_OK) return
+    if (size(atol) == 0) then ! C takes n = 0 with any pointer; an empty array may have none
+      none = 0.0_c_double
+      status = self%record(fricreg_structure_set_ode_abs_tolerances(self%ptr, 0_c_size_t, none))
+    else
+      status = self%record(fricreg_structure_set_ode_abs_tolerances(self%ptr, &
+                                                                    int(size(atol), c_size_t), atol))
+    end if
+  end function struct_set_ode_abs_tolerances
+
+  !> The absolute tolerances of the last adaptive run_ode per component of
+  !> y = (u, v, W_in, E_visc, D), size 2 ndof + 2 + m: those set, the one atol, or the rule from
+  !> eps (zeros before any adaptive run_ode; fricreg_structure_get_ode_abs_tolerances).
+  !> FRICREG_ESIZE. Since 1.6.
+  function struct_get_ode_abs_tolerances(self, atol) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(inout), contiguous :: atol(:)
+    integer(c_int) :: status
+    status = struct_vector(self, 'get_ode_abs_tolerances', 'atol', atol, &
+                           2_c_size_t * self%n + 2_c_size_t + self%m)
+    if (status == FRICREG_OK) status = self%unrecorded('get_ode_abs_tolerances', &
+                                       fricreg_structure_get_ode_abs_tolerances(self%ptr, &
+                                       int(size(atol), c_size_t), atol))
+  end function struct_get_ode_abs_tolerances
 
   !> The state now: u(ndof), v(ndof), a(ndof), each optional (at least one). Written only on
   !> success. FRICREG_ESIZE; FRICREG_ENULL if all three are absent.

@@ -57,11 +57,15 @@
 !   FRSTS2(H, ME, F, W, D, STAT)                 _get_jenkins_2d_state (F(2, ME), W(2, ME))
 !   FRSTIS(H, ME, NS, F, W, D, STAT)             _get_iwan_state (W(NS, ME))
 !   FRSTNF(H, ME, N, STAT)                       _get_normal_forces
+!   FRSTEE(H, ON, STAT)                          _set_error_estimate (ON 1 or 0)
+!   FRSTPK(H, NDOF, PEAK, STAT)                  _get_peak_displacement
+!   FRSTPE(H, NDOF, ERR, STAT)                   _get_peak_displacement_error
+!   FRSTDE(H, M, ERR, STAT)                      _get_dissipation_error
 !   FRSTER(H, CODE, MSG, STAT)                   _errcode, _errmsg
 !   FRCSTP(H, M, ZS, ZP, AP, W, WEFF, C, TOL, MAXIT, FLAGS, F, ITERS, CONV, STAT)
 !                                                fricreg_ctx_solve_step, on a context H of
 !                                                FRCTXC (the user's own Newmark)
-! The getters (FRSTG*, FRSTJS, FRSTS2, FRSTIS, FRSTNF) read a const structure: C records no failure
+! The getters (FRSTG*, FRSTJS, FRSTS2, FRSTIS, FRSTNF, FRSTPK, FRSTPE, FRSTDE) read a const structure: C records no failure
 ! of theirs, so FRSTER still shows the failure before (their STAT is the answer). So do the
 ! few refusals made here,
 ! before C is called, of counts that would wrap into size_t: FRSTCR's NDOF or M below 1
@@ -465,6 +469,68 @@ subroutine frstgv(h, which, value, stat)
   integer, intent(out) :: stat
   stat = int(fricreg_structure_get_value(fricreg_handle_to_ptr(h), int(which, c_int), value))
 end subroutine frstgv
+
+!> FRSTEE(H, ON, STAT): estimate (ON = 1) or not (ON = 0, the default; 0 also discards the
+!> estimate made) the error of the peak displacements and of each contact's dissipation
+!> against eps -> 0, from a companion structure at eps/2 stepped alongside at half the step
+!> (or an adaptive run's tolerances/16): err = 3 |q - q_companion|, read by FRSTPE and FRSTDE
+!> (C's fricreg_structure_set_error_estimate: the companion is made at the first step after
+!> FRSTU0 or creation). FRICREG_EINVAL if ON is neither 0 nor 1.
+subroutine frstee(h, on, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: on
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_set_error_estimate(fricreg_handle_to_ptr(h), int(on, c_int)))
+end subroutine frstee
+
+!> FRSTPK(H, NDOF, PEAK, STAT): the peak displacements PEAK(NDOF) = max |u_i| since FRSTU0 (or
+!> creation), sampled at every fixed step's end (C's fricreg_structure_get_peak_displacement;
+!> tracked with the estimate on or off). FRICREG_ESIZE if NDOF is not the structure's.
+subroutine frstpk(h, ndof, peak, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: ndof
+  double precision, intent(inout) :: peak(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_get_peak_displacement(fricreg_handle_to_ptr(h), &
+                                                     int(max(ndof, 0), c_size_t), peak))
+end subroutine frstpk
+
+!> FRSTPE(H, NDOF, ERR, STAT): the error estimate ERR(NDOF) of each peak displacement (length
+!> units; +Inf where the companion failed; C's fricreg_structure_get_peak_displacement_error).
+!> FRICREG_EINVAL without an estimate (FRSTEE off, no step since FRSTU0 with it on, or ended by
+!> a setter of the model); FRICREG_ESIZE if NDOF is not the structure's.
+subroutine frstpe(h, ndof, err, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: ndof
+  double precision, intent(inout) :: err(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_get_peak_displacement_error(fricreg_handle_to_ptr(h), &
+                                                           int(max(ndof, 0), c_size_t), err))
+end subroutine frstpe
+
+!> FRSTDE(H, M, ERR, STAT): the error estimate ERR(M) of each contact's dissipation (energy
+!> units; +Inf where the companion failed; C's fricreg_structure_get_dissipation_error).
+!> FRICREG_EINVAL without an estimate; FRICREG_ESIZE if M is not the number of contacts.
+subroutine frstde(h, m, err, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m
+  double precision, intent(inout) :: err(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_get_dissipation_error(fricreg_handle_to_ptr(h), &
+                                                     int(max(m, 0), c_size_t), err))
+end subroutine frstde
 
 !> FRSTGT(H, WHICH, VALUE, STAT): one counter (FRICREG_SSTAT_*: steps, Newton iterations, ...)
 !> into INTEGER*8 VALUE.

@@ -400,7 +400,26 @@ FRICREG_API int fricreg_structure_set_max_steps(fricreg_structure *s, int64_t ma
  *  stepper's stick-zone bound (lambda = fricreg_ctx_stick_stiffness, the chord's for (1), (2)
  *  and Karnopp; c_max the largest eigenvalue of M^-1 C), dt omega_max within its bound on the
  *  imaginary axis and within 1/sqrt 2 (omega_max^2 the largest eigenvalue of M^-1 K).
- *  Otherwise adaptive, GSL's standard control (|error| <= atol + rtol |y|), dt the first step.
+ *  Otherwise adaptive, dt the first step, under GSL's standard control (|error_k| <= atol +
+ *  rtol |y_k| in every component k of y = (u, v, W_in, E_visc, D_1 ... D_m)), or under
+ *  absolute tolerances per component: those of fricreg_structure_set_ode_abs_tolerances
+ *  while set (in place of atol), or with atol = FRICREG_ATOL_FROM_EPS (-1) and rtol > 0
+ *  (since 1.6, FRICREG_1.6) the rule from eps, fricreg_sim's (fricreg_sim_set_integrator)
+ *  carried through J: law (4) reads the contact velocity zdot_i = sum_j J_ij v_j, which lies
+ *  inside its band |zdot_i| < eps at a stick while the v_j may be of order 1, so a relative
+ *  tolerance on v, or one atol >= eps, leaves the force of a stick uncontrolled. Each velocity
+ *  v_j that a contact reads (J_ij != 0) is held absolutely, with no relative part, to
+ *    atol_v_j = min(1e-3 eps min_{i: J_ij != 0} 1 / sum_k |J_ik|, rtol x 1 velocity unit),
+ *  which bounds every contact's velocity error by 1e-3 eps (velocity units, as J v); every
+ *  other component (the displacements, velocities no contact reads, W_in, E_visc and the D_i)
+ *  keeps rtol + rtol |y_k|, the standard level with atol = rtol in the model's units.
+ *  Contacts whose row of J is zero read nothing: with no contact reading any dof the rule is
+ *  the standard control with atol = rtol. Measured (tests/test_structure_ode_tolerances.c, a
+ *  3-dof chain with two contacts at eps = 1e-5, 4 load periods, rtol 1e-6): the two
+ *  contacts' dissipation errors against a converged run are 5.7e-3 and 1.7e-1 of it (msbdf)
+ *  and 1.1e-5, 1.3e-4 (rkf45) with atol = rtol, 1.0e-6, 1.1e-5 (msbdf) and 4.4e-8, 2.2e-9
+ *  (rkf45) with the rule (docs/structural.md). fricreg_structure_get_ode_abs_tolerances gives
+ *  the values.
  *  Implicit steppers use a forward-difference Jacobian (2 ndof + 3 + m right-hand sides).
  *  The load and ground records are read at every stage time (interpolated). Allocates the
  *  GSL driver and O((2 ndof + m)^2) doubles for the run. Counts GSL steps in
@@ -409,10 +428,12 @@ FRICREG_API int fricreg_structure_set_max_steps(fricreg_structure *s, int64_t ma
  *
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL for an unknown integrator or
  *  FRICREG_INT_CENTRAL or FRICREG_INT_CENTRAL_IMEX (fricreg_sim's only: use
- *  fricreg_structure_step's central difference), dt <= 0, rtol < 0, atol < 0, t_end not after
+ *  fricreg_structure_step's central difference), dt <= 0, rtol < 0, atol < 0 other than
+ *  FRICREG_ATOL_FROM_EPS, FRICREG_ATOL_FROM_EPS with rtol = 0, t_end not after
  *  the current time, more than 2^31 fixed steps, J never set, W out of range (as
  *  fricreg_structure_step), rtol > 0 with atol = 0 for rk1imp, rk2imp, rk4imp, msadams or msbdf
- *  (as fricreg_sim_set_integrator), or a stepper that solves its Newton matrix I - h c J by
+ *  (as fricreg_sim_set_integrator; not with tolerances per component), or a stepper that
+ *  solves its Newton matrix I - h c J by
  *  GSL's LU (rk1imp, rk2imp, rk4imp, bsimp, msbdf) where that matrix can be singular, which GSL
  *  would report to its error handler: on an unstable structure (K or C not positive
  *  semidefinite), or where the largest step (dt; t_end - t when adaptive) times the stiffest
@@ -431,6 +452,45 @@ FRICREG_API int fricreg_structure_set_max_steps(fricreg_structure *s, int64_t ma
  *  its forces) and may stop the run (FRICREG_OK); a call from the observer is FRICREG_EINVAL. */
 FRICREG_API int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt,
                                           double rtol, double atol, double t_end);
+
+/** Set an absolute tolerance per component of fricreg_structure_run_ode's state
+ *  y = (u, v, W_in, E_visc, D_1 ... D_m), as SUNDIALS' CVodeSVtolerances and
+ *  fricreg_sim_set_abs_tolerances: while set, every adaptive run_ode call (rtol > 0 or
+ *  atol != 0) accepts a step where |error_k| <= atol[k] + rtol |y_k| in every component k, in
+ *  place of its atol argument, which then only selects adaptive steps (any atol > 0 with
+ *  rtol = 0 runs on these alone); rtol = atol = 0 still takes fixed steps. The components:
+ *  ndof displacements u (length), ndof velocities v (length/time), the input work W_in, the
+ *  viscous dissipation E_visc and each contact's friction dissipation D_i (force x length),
+ *  n = 2 ndof + 2 + m. Passed on to the error estimate's companion, which runs at them / 16.
+ *  Since 1.6 (FRICREG_1.6).
+ *
+ *  s     in/out: the structure.
+ *  n     in: 2 ndof + 2 + m, or 0 to remove the tolerances set (run_ode's atol applies again).
+ *  atol  in: atol[n], each finite and > 0; copied. May be NULL with n = 0.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if s is NULL or atol is NULL with n > 0; FRICREG_ESIZE if
+ *  n is neither 0 nor 2 ndof + 2 + m; FRICREG_ENONFINITE for an entry not finite;
+ *  FRICREG_EINVAL for an entry <= 0, or when called from the observer during a run;
+ *  FRICREG_ENOMEM. On failure nothing is changed. */
+FRICREG_API int fricreg_structure_set_ode_abs_tolerances(fricreg_structure *s, size_t n,
+                                                         const double atol[]);
+
+/** Copy the absolute tolerances per component of y = (u, v, W_in, E_visc, D_1 ... D_m)
+ *  (fricreg_structure_set_ode_abs_tolerances) that the last adaptive
+ *  fricreg_structure_run_ode call asked for, evaluated now: those set (while set, even before
+ *  any call), the call's one atol in every component, or under FRICREG_ATOL_FROM_EPS the
+ *  rule's (fricreg_structure_run_ode: the call's rtol, the eps and J in use now; the entries
+ *  of the velocities that contacts read carry no relative part, the others rtol |y_k| on top);
+ *  zeros before any adaptive call. Since 1.6 (FRICREG_1.6).
+ *
+ *  s     in: the structure; not modified.
+ *  n     in: 2 ndof + 2 + m.
+ *  atol  out: atol[n]; written only on success.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if s or atol is NULL; FRICREG_ESIZE if n is not
+ *  2 ndof + 2 + m. */
+FRICREG_API int fricreg_structure_get_ode_abs_tolerances(const fricreg_structure *s, size_t n,
+                                                         double atol[]);
 
 /** Copy the state at the current time: displacements u[ndof], velocities v[ndof],
  *  accelerations a[ndof]; any of them may be NULL (not all three).
@@ -766,8 +826,9 @@ FRICREG_API int fricreg_structure_get_value(const fricreg_structure *s, int whic
  *    and rtol / 16, atol / 16;
  *  - the setters a run may call between steps are passed on to it: set_bounds, set_law (eps / 2
  *    of the new eps), set_ground_accel and set_load (a caller who feeds the record step by step
- *    feeds the companion too: it reads its records at its own step ends, in between), set_newton
- *    and set_max_steps (each call of the companion's bounded as s's). Every other setter after
+ *    feeds the companion too: it reads its records at its own step ends, in between), set_newton,
+ *    set_max_steps (each call of the companion's bounded as s's) and set_ode_abs_tolerances
+ *    (applied at / 16 there, as run_ode's rule from eps). Every other setter after
  *    the companion was made (the model matrices, Rayleigh, influence, scheme, elements) ends the
  *    estimate until the next set_initial: the getters then return FRICREG_EINVAL.
  *  The peaks are sampled at every fixed step's end (step, run, run_ode with fixed steps) and at

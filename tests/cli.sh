@@ -232,6 +232,14 @@ if "$sim" $block --integrator newmark --dt 0.01 --error-estimate off 2>&1 | grep
     echo "FAIL: structure --error-estimate off still estimates"; fails=$((fails + 1))
 fi
 expect_output '"peak_displacement": \[1\.95438123028[34][0-9]*\]' $block --integrator hht --alpha -0.1 --dt 0.01
+# GSL's adaptive steppers without --atol take the tolerances from eps
+# (FRICREG_ATOL_FROM_EPS): the velocity, which the contact reads, to min(1e-3 eps, rtol) =
+# 1e-9 m/s with no relative part, the others (u, W_in, E_visc, D) to rtol; --atol A gives A in
+# every component, as before 1.6. The block's motion stays exact under rkf45 either way.
+expect_output '"atol": "eps", .*"x": \[-1\.95438123028[34][0-9]*\], .*"atol_used": \[9\.9999999999999995e-07, 1\.0000000000000001e-09, 9\.9999999999999995e-07, 9\.9999999999999995e-07, 9\.9999999999999995e-07\]' $block --integrator rkf45 --dt 0.01 --rtol 1e-6
+expect_output '"atol": 9\.9999999999999995e-07, .*"atol_used": \[(9\.9999999999999995e-07(, )?){5}\]' $block --integrator rkf45 --dt 0.01 --rtol 1e-6 --atol 1e-6
+# msbdf needs atol > 0: without --atol it was refused, now it takes the rule
+expect_output '"atol": "eps"' $block --integrator msbdf --dt 0.01 --rtol 1e-6
 # Warnings (fricreg_structure_warning_count, docs/structural.md "Warnings"): the block in SI
 # units raises none (record peak 2.41 m/s^2 = 0.246 g inside 0.05 g .. 5 g; eps = 1e-6 m/s
 # inside 1e-9 .. 0.1 of the ground's peak velocity 12.05 m/s; mu N/m = 1.52 m/s^2 = 0.155 g

@@ -648,6 +648,16 @@ static int w_st_run_ode(void)
     return fricreg_structure_run_ode(ST(), N(0, FRICREG_INT_RKF45), D(0, 0.001), D(1, 1e-6),
                                      D(2, 1e-9), D(3, 0.05));
 }
+/* the fixture's run_ode state: 2 ndof + 2 + m = 7 components */
+static const double ST_ATOL7[7] = {1e-6, 1e-6, 1e-9, 1e-9, 1e-6, 1e-6, 1e-6};
+static int w_st_set_ode_abs_tolerances(void)
+{
+    return fricreg_structure_set_ode_abs_tolerances(ST(), Z(0, 7), A(1, ST_ATOL7, 7));
+}
+static int w_st_get_ode_abs_tolerances(void)
+{
+    return fricreg_structure_get_ode_abs_tolerances(ST(), Z(0, 7), OUTD(1));
+}
 static int w_st_get_state(void)
 {
     return fricreg_structure_get_state(ST(), Z(0, 2), OUTD(1), OUTD(2), OUTD(3));
@@ -1707,6 +1717,16 @@ static const struct row rows[] = {
      ST_REC,
      {HANDLE, INT(0, "iiii"), DBL(0, "nnfii**"), DBL(1, "nnfio**"), DBL(2, "nnfio**"),
       DBL(3, "nnfii**")}},
+    {"fricreg_structure_set_ode_abs_tolerances",
+     w_st_set_ode_abs_tolerances,
+     "0sinm",
+     ST_REC,
+     {HANDLE, SIZE(0, "osss"), PTR(1, "0"), ARR(1, "nniioo")}},
+    {"fricreg_structure_get_ode_abs_tolerances",
+     w_st_get_ode_abs_tolerances,
+     "0s",
+     NONE,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0")}},
     {"fricreg_structure_get_state",
      w_st_get_state,
      "0s",

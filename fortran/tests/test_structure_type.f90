@@ -60,6 +60,7 @@ program test_structure_type
   integer(c_int) :: wcode
   character(len=:), allocatable :: wmsg
   logical :: found
+  real(c_double) :: tol8(8)
 
   ! ---- The static load: J(i, k) = d zdot_i / d u'_k, ground slip and inter-storey slip ----
   M2 = reshape([1.7_c_double, 0.0_c_double, 0.0_c_double, 0.9_c_double], [2, 2])
@@ -94,6 +95,33 @@ program test_structure_type
   call check_status(st%set_observer(), FRICREG_OK, 'remove the observer')
   call check_status(st%set_max_steps(-1_c_int64_t), FRICREG_EINVAL, 'set_max_steps -1')
   call check_status(st%set_max_steps(0_c_int64_t), FRICREG_OK, 'set_max_steps 0: no bound')
+
+  ! ---- run_ode with rtol and no atol: the absolute tolerances from eps -----------------------
+  ! y = (u(2), v(2), W_in, E_visc, D(2)): v_1 is read by contact 1 (row (1, 0), sum |J| = 1)
+  ! and contact 2 (row (-1, 1), sum 2), v_2 by contact 2: both 1e-3 eps / 2 = 6.5e-6 (below
+  ! the cap rtol = 1e-4), no relative part; the rest rtol.
+  call check_status(st%get_ode_abs_tolerances(tol8), FRICREG_OK, 'get_ode_abs_tolerances')
+  call check(all(tol8 == 0.0_c_double), 'zeros before an adaptive run_ode')
+  call check_status(st%run_ode(FRICREG_INT_RKF45, 0.01_c_double, 1.2_c_double, &
+                               rtol=1e-4_c_double), FRICREG_OK, 'run_ode rkf45, rtol only')
+  call check_status(st%get_ode_abs_tolerances(tol8), FRICREG_OK, 'get_ode_abs_tolerances')
+  call check(all(tol8 == [1e-4_c_double, 1e-4_c_double, 1e-3_c_double * 0.013_c_double / 2, &
+                          1e-3_c_double * 0.013_c_double / 2, 1e-4_c_double, 1e-4_c_double, &
+                          1e-4_c_double, 1e-4_c_double]), 'the rule from eps and J')
+  call check_status(st%get_ode_abs_tolerances(tol8(1:7)), FRICREG_ESIZE, 'atol of 7')
+  call check_status(st%set_ode_abs_tolerances(tol8(1:7)), FRICREG_ESIZE, 'set atol of 7')
+  call check_status(st%set_ode_abs_tolerances([(1e-7_c_double * i, i = 1, 8)]), FRICREG_OK, &
+                    'set_ode_abs_tolerances')
+  call check_status(st%get_ode_abs_tolerances(tol8), FRICREG_OK, 'get the set ones')
+  call check(all(tol8 == [(1e-7_c_double * i, i = 1, 8)]), 'the set ones')
+  call check_status(st%set_ode_abs_tolerances(tol8(1:0)), FRICREG_OK, 'size 0 removes them')
+  call check_status(st%get_ode_abs_tolerances(tol8), FRICREG_OK, 'get after removal')
+  call check(tol8(3) == 1e-3_c_double * 0.013_c_double / 2, 'the rule again')
+  call check_status(st%run_ode(FRICREG_INT_RKF45, 0.01_c_double, 1.3_c_double, &
+                               rtol=1e-4_c_double, atol=1e-5_c_double), FRICREG_OK, &
+                    'run_ode rkf45, rtol and atol')
+  call check_status(st%get_ode_abs_tolerances(tol8), FRICREG_OK, 'get the one atol')
+  call check(all(tol8 == 1e-5_c_double), 'one atol in every component')
 
   ! ---- A frame of three DOFs and two contacts, against the C API ----------------------------
   M = reshape([2.31_c_double, 0.17_c_double, 0.0_c_double, 0.17_c_double, 1.43_c_double, &

@@ -12,9 +12,10 @@ enum scheme { SCHEME_NONE, SCHEME_NEWMARK, SCHEME_HHT, SCHEME_CENTRAL, SCHEME_GS
 struct structure_options {
     const char *mass, *stiffness, *damping, *contacts, *mun, *influence, *ground;
     struct cli_element_files elements; /* --jenkins with its parameters (jenkins_input.h) */
-    int rayleigh_given, alpha_given, law, integrator;
+    int rayleigh_given, alpha_given, atol_given, law, integrator;
     enum scheme scheme;
-    double a0, a1, eps, alpha, dt, t_end, rtol, atol;
+    double a0, a1, eps, alpha, dt, t_end, rtol;
+    double atol;        /* without --atol and with --rtol > 0: FRICREG_ATOL_FROM_EPS */
     int max_steps;      /* --max-steps: GSL's adaptive steps over the whole run (0: no bound; -1:
                     * not given, the library's bound on each sample's call) */
     int output;         /* enum cli_output, as an int: the option table writes ints */

@@ -59,6 +59,7 @@ static void usage(FILE *out)
     fputs("  --dt STEP        fixed step, or the first step when adaptive          [0.01]\n"
           "  --rtol R --atol A  adaptive step control (both 0: fixed step); without\n"
           "                     --atol, velocities to min(1e-3 eps, R), x and D to R  [0 eps]\n"
+          "                     (structure: 1e-3 eps / sum_k |J_ik| where read)\n"
           "  --eps EPS        regularization; default 2dt, or 10*omega*dt for chain\n"
           "  --t-end T | --cycles N   run length in time or forcing cycles         [--cycles 4]\n"
           "  --output summary|trajectory   JSON summary, or CSV row per step       [summary]\n"

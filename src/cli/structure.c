@@ -83,7 +83,7 @@ static int check_options(const struct structure_options *o)
     if ((o->elements.rows != NULL || o->elements.rows_2d != NULL) && o->scheme == SCHEME_GSL)
         return cli_usage_error(o->elements.rows != NULL ? "--jenkins" : "--jenkins-2d",
                                "Jenkins elements are integrated by newmark, hht or central only");
-    if ((o->rtol > 0.0 || o->atol > 0.0) && o->scheme != SCHEME_GSL)
+    if ((o->rtol > 0.0 || o->atol != 0.0) && o->scheme != SCHEME_GSL)
         return cli_usage_error(o->rtol > 0.0 ? "--rtol" : "--atol",
                                "only GSL's steppers are adaptive");
     return o->scheme == SCHEME_GSL ? cli_check_tolerances(o->integrator, o->rtol, o->atol) : 0;
@@ -116,11 +116,13 @@ int cli_parse_structure(int argc, char **argv, struct structure_options *o)
         {"--dt", CLI_POSITIVE, .slot = &o->dt},
         {"--t-end", CLI_POSITIVE, .slot = &o->t_end},
         {"--rtol", CLI_NONNEGATIVE, .slot = &o->rtol},
-        {"--atol", CLI_NONNEGATIVE, .slot = &o->atol},
+        {"--atol", CLI_NONNEGATIVE, .slot = &o->atol, .given = &o->atol_given},
         {"--alpha", CLI_NUMBER, .slot = &o->alpha, .given = &o->alpha_given},
         {"--max-steps", CLI_WHOLE, .slot = &o->max_steps, .lo = 0, .hi = 1e9},
         {"--error-estimate", CLI_CHOICE, .slot = &o->error_estimate, .words = on_off}};
     int status = cli_parse_options(argc, argv, opts, sizeof opts / sizeof opts[0], "structure");
+    if (!o->atol_given && o->rtol > 0.0) /* adaptive: the rule from eps, as the sim's runs */
+        o->atol = FRICREG_ATOL_FROM_EPS;
     return status != 0 ? status : check_options(o);
 }
 
@@ -231,7 +233,7 @@ static double svalue(const fricreg_structure *s, int which)
  * library's bound is per call, and the run makes one call per sample. */
 static void spend_steps(fricreg_structure *s, const struct structure_options *o, int64_t start)
 {
-    if (o->scheme != SCHEME_GSL || !(o->rtol > 0.0 || o->atol > 0.0) || o->max_steps <= 0)
+    if (o->scheme != SCHEME_GSL || !(o->rtol > 0.0 || o->atol != 0.0) || o->max_steps <= 0)
         return; /* fixed steps; the library's own bound per call (-1); no bound (0) */
     int64_t taken = 0;
     fricreg_structure_get_stat(s, FRICREG_SSTAT_STEPS, &taken);
@@ -317,14 +319,24 @@ static void write_summary(FILE *out, const struct structure_options *o,
             fricreg_law_name(o->law), scheme_name(o));
     if (o->scheme == SCHEME_HHT)
         fprintf(out, "\"alpha\": %.17g, ", o->alpha);
-    fprintf(out, "\"adaptive\": %s, \"dt\": %.17g, \"rtol\": %.17g, \"atol\": %.17g, ",
-            o->rtol > 0.0 || o->atol > 0.0 ? "true" : "false", o->dt, o->rtol, o->atol);
+    int adaptive = o->rtol > 0.0 || o->atol != 0.0;
+    fprintf(out, "\"adaptive\": %s, \"dt\": %.17g, \"rtol\": %.17g, \"atol\": ",
+            adaptive ? "true" : "false", o->dt, o->rtol);
+    if (o->atol == FRICREG_ATOL_FROM_EPS) /* as the sim's summaries (output.c) */
+        fprintf(out, "\"eps\", ");
+    else
+        fprintf(out, "%.17g, ", o->atol);
     fprintf(out,
             "\"eps\": %.17g, \"steps\": %lld, \"t\": %.17g, \"ndof\": %zu, "
             "\"ncontacts\": %zu",
             eps, (long long)steps, svalue(s, FRICREG_SVALUE_TIME), in->n, in->m);
     cli_json_array(out, "x", in->n, run->u);
     cli_json_array(out, "v", in->n, run->v);
+    size_t dim = 2 * in->n + 2 + in->m; /* run_ode's state (u, v, W_in, E_visc, D) */
+    double *atol = adaptive ? malloc(dim * sizeof *atol) : NULL;
+    if (atol != NULL && fricreg_structure_get_ode_abs_tolerances(s, dim, atol) == FRICREG_OK)
+        cli_json_array(out, "atol_used", dim, atol);
+    free(atol);
     cli_json_array(out, "peak_displacement", in->n, run->peak);
     if (est->peak_err != NULL)
         cli_json_array(out, "peak_displacement_error_estimate", in->n, est->peak_err);

@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "ctx/ctx_driver.h"
+#include "fricreg_sim.h"
 #include "structure_internal.h"
 
 #define FACTOR 3.0     /* fricreg_sim's: 2 at p = 1, with the calibration's margin */
@@ -92,6 +93,11 @@ static int copy_structure(fricreg_structure *c, const fricreg_structure *s)
     c->newton_tol = s->newton_tol;
     c->newton_max = s->newton_max;
     c->max_steps = s->max_steps;
+    c->tol_scale = s->tol_scale / TOL_SCALE; /* run_ode's rule from eps and set tolerances */
+    if (s->ode_atol != NULL)
+        status = fricreg_structure_set_ode_abs_tolerances(c, 2 * s->n + 2 + s->m, s->ode_atol);
+    if (status != FRICREG_OK)
+        return status;
     c->unguarded = s->unguarded;
     gsl_vector_memcpy(c->u, s->u);
     gsl_vector_memcpy(c->v, s->v);
@@ -123,8 +129,10 @@ void fr_estimate_follow(fricreg_structure *s, int integrator, double dt, double 
     int status;
     if (integrator == 0)
         status = fricreg_structure_run(c, 0.5 * dt, s->t);
-    else if (rtol > 0.0 || atol > 0.0)
-        status = fricreg_structure_run_ode(c, integrator, dt, rtol / TOL_SCALE, atol / TOL_SCALE,
+    else if (rtol > 0.0 || atol != 0.0) /* the rule's and the set levels: c->tol_scale */
+        status = fricreg_structure_run_ode(c, integrator, dt, rtol / TOL_SCALE,
+                                           atol == FRICREG_ATOL_FROM_EPS ? FRICREG_ATOL_FROM_EPS
+                                                                         : atol / TOL_SCALE,
                                            s->t);
     else
         status = fricreg_structure_run_ode(c, integrator, 0.5 * dt, 0.0, 0.0, s->t);

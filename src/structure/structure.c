@@ -49,6 +49,7 @@ void fricreg_structure_free(fricreg_structure *s)
     free(s->load.x);
     free(s->energy.per_contact);
     free(s->peak);
+    free(s->ode_atol);
     fricreg_structure_free(s->companion);
     free(s);
 }
@@ -116,6 +117,7 @@ int fricreg_structure_create(size_t ndof, size_t m, fricreg_structure **out)
     s->newton_tol = 1e-10;
     s->newton_max = 50;
     s->max_steps = -1; /* the law's default (fr_law_max_adaptive_steps) */
+    s->tol_scale = 1.0;
     s->fresh = 1;
     *out = s;
     return FRICREG_OK;

@@ -122,6 +122,13 @@ struct fricreg_structure {
     void *observer_user;
     int64_t max_steps; /* -1: the law's default (fr_law_max_adaptive_steps) */
     int running;
+    /* run_ode's absolute tolerances (ode_tolerances.c): those set per component (NULL: none),
+     * what the last adaptive call asked for (for the getter), and the factor on the rule's
+     * velocity level and on the set ones (1; the error estimate's companion: 1/16). */
+    double *ode_atol; /* [2 n + 2 + m] or NULL */
+    double ode_rtol;  /* the last adaptive run_ode call's rtol (0: none yet) */
+    double ode_atol1; /* its atol: a scalar >= 0 or FRICREG_ATOL_FROM_EPS */
+    double tol_scale;
 
     /* Derived at the first step after a model change (fr_structure_prepare). */
     int prepared;           /* Cd, the mass factor, W and Mr are current */
@@ -194,6 +201,13 @@ enum {
     FR_ESTIMATE_ACTIVE = 1, /* the companion follows the structure */
     FR_ESTIMATE_FAILED = 2  /* the companion failed: the estimates are +infinity */
 };
+
+/* ode_tolerances.c */
+/* The absolute tolerances atol[2 n + 2 + m] of an adaptive run_ode call with rtol and atol
+ * (a scalar or FRICREG_ATOL_FROM_EPS) and the weights w[2 n + 2 + m] of rtol per component:
+ * the set ones (w = 1), the rule from eps, or atol in every component (w = 1). w may be NULL. */
+void fr_ode_tolerances(const fricreg_structure *s, double rtol, double atol, double out[],
+                       double w[]);
 
 /* structure.c */
 /* The refusal of a call `who` made from the observer during a run: FRICREG_EINVAL, recorded. */

@@ -19,6 +19,7 @@
 #include "law/law.h"
 #include "ode/fd_jacobian.h"
 #include "ode/integrator.h"
+#include "fricreg_sim.h"
 #include "ode/ode_driver.h"
 #include "structure_internal.h"
 
@@ -215,15 +216,21 @@ int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, d
                        "fricreg_structure_step's schemes integrate");
     if (!isfinite(dt) || !isfinite(rtol) || !isfinite(atol) || !isfinite(t_end))
         return fr_fail(s, FRICREG_ENONFINITE, "run_ode: dt, rtol, atol or t_end not finite");
-    if (!(dt > 0.0) || rtol < 0.0 || atol < 0.0)
+    int from_eps = atol == FRICREG_ATOL_FROM_EPS;
+    if (!(dt > 0.0) || rtol < 0.0 || (atol < 0.0 && !from_eps))
         return fr_fail(s, FRICREG_EINVAL,
                        "run_ode: dt = %g must be > 0, rtol = %g and "
-                       "atol = %g >= 0",
+                       "atol = %g >= 0 (or atol = FRICREG_ATOL_FROM_EPS = -1)",
                        dt, rtol, atol);
+    if (from_eps && !(rtol > 0.0))
+        return fr_fail(s, FRICREG_EINVAL,
+                       "run_ode: atol = FRICREG_ATOL_FROM_EPS needs rtol > 0, got %g", rtol);
     if (!(t_end > s->t))
         return fr_fail(s, FRICREG_EINVAL, "run_ode: t_end = %g must be after t = %g", t_end, s->t);
-    int adaptive = rtol > 0.0 || atol > 0.0;
-    if (adaptive && atol == 0.0 && integ->atol_required)
+    int adaptive = rtol > 0.0 || atol != 0.0;
+    /* per component (the rule from eps, or set): every level > 0 */
+    int per_component = adaptive && (from_eps || s->ode_atol != NULL);
+    if (adaptive && atol == 0.0 && !per_component && integ->atol_required)
         return fr_fail(s, FRICREG_EINVAL,
                        "run_ode: %s needs atol > 0: its iteration converges to atol + rtol |y|, "
                        "which is 0 where a state component is 0 (a start at rest, the energies "
@@ -270,20 +277,34 @@ int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, d
                           .rhs_status = FRICREG_OK};
     double *y = malloc(run.dim * sizeof *y);
     run.jac_work = malloc(3 * run.dim * sizeof *run.jac_work);
-    if (y == NULL || run.jac_work == NULL) {
+    /* per component: the levels, then the weights of rtol (ode_tolerances.c) */
+    double *tol = per_component ? malloc(2 * run.dim * sizeof *tol) : NULL;
+    if (y == NULL || run.jac_work == NULL || (per_component && tol == NULL)) {
         free(y);
         free(run.jac_work);
+        free(tol);
         return fr_fail(s, FRICREG_ENOMEM, "run_ode: no memory for a state of %zu", run.dim);
     }
     gsl_odeiv2_system sys = {rhs, jacobian, run.dim, &run};
-    gsl_odeiv2_driver *d = fr_ode_driver_alloc(&sys, fr_integrator_stepper(integ, adaptive),
-                                               dt * integ->substeps,
-                                               adaptive ? atol : integ->fixed_tolerance,
-                                               adaptive ? rtol : 0.0);
+    const gsl_odeiv2_step_type *stepper = fr_integrator_stepper(integ, adaptive);
+    gsl_odeiv2_driver *d;
+    if (per_component) {
+        fr_ode_tolerances(s, rtol, atol, tol, tol + run.dim);
+        d = fr_ode_driver_alloc_vector(&sys, stepper, dt * integ->substeps, tol, tol + run.dim,
+                                       rtol);
+    } else {
+        d = fr_ode_driver_alloc(&sys, stepper, dt * integ->substeps,
+                                adaptive ? atol : integ->fixed_tolerance, adaptive ? rtol : 0.0);
+    }
+    free(tol);
     if (d == NULL) {
         free(y);
         free(run.jac_work);
         return fr_fail(s, FRICREG_ENOMEM, "run_ode: GSL driver allocation failed");
+    }
+    if (adaptive) { /* what fricreg_structure_get_ode_abs_tolerances reports */
+        s->ode_rtol = rtol;
+        s->ode_atol1 = atol;
     }
     memcpy(y, s->u->data, s->n * sizeof *y);
     memcpy(y + s->n, s->v->data, s->n * sizeof *y);

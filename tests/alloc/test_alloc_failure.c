@@ -1272,7 +1272,8 @@ static void structure_close(void *obj)
 static int structure_advance(fricreg_structure *s, double t_end)
 {
     return current_scheme == SCHEME_ODE
-               ? fricreg_structure_run_ode(s, FRICREG_INT_RKF45, ST_DT, 1e-6, 1e-8, t_end)
+               ? fricreg_structure_run_ode(s, FRICREG_INT_RKF45, ST_DT, 1e-6, FRICREG_ATOL_FROM_EPS,
+                                           t_end)
                : fricreg_structure_run(s, ST_DT, t_end);
 }
 
@@ -1367,6 +1368,9 @@ static void see_structure_estimate(const fricreg_structure *s, struct view *v)
     see_all(v, peak, 3);
     see(v, fricreg_structure_get_peak_displacement_error(s, 3, err));
     see(v, fricreg_structure_get_dissipation_error(s, 2, err));
+    double tol[10] = {-1, -1, -1, -1, -1, -1, -1, -1, -1, -1};
+    see(v, fricreg_structure_get_ode_abs_tolerances(s, 10, tol));
+    see_all(v, tol, 10);
 }
 
 static void structure_estimate_observe(void *obj, struct view *v)
@@ -1378,11 +1382,25 @@ static void structure_estimate_observe(void *obj, struct view *v)
     see_structure_estimate(obj, v);
 }
 
-static const char *const structure_estimate_calls[] = {
-    "set_mass",   "set_stiffness",       "set_contacts",
-    "set_bounds", "set_influence",       "set_ground_accel(A)",
-    "set_law",    "set_error_estimate",  "the scheme",
-    "run (half)", "set_ground_accel(B)", "run"};
+static const char *const structure_estimate_calls[] = {"set_mass",
+                                                       "set_stiffness",
+                                                       "set_contacts",
+                                                       "set_bounds",
+                                                       "set_influence",
+                                                       "set_ground_accel(A)",
+                                                       "set_law",
+                                                       "set_error_estimate",
+                                                       "set_ode_abs_tolerances(1)",
+                                                       "the scheme",
+                                                       "run (half)",
+                                                       "set_ode_abs_tolerances(2)",
+                                                       "set_ground_accel(B)",
+                                                       "run"};
+
+/* run_ode's tolerances per component (2 ndof + 2 + m = 10), set before the companion is made
+ * (it copies them) and again after (passed on to it); the first run's atol is replaced. */
+static const double FRAME_ATOL1[10] = {1e-6, 1e-6, 1e-6, 1e-8, 1e-8, 1e-8, 1e-6, 1e-6, 1e-6, 1e-6};
+static const double FRAME_ATOL2[10] = {1e-7, 1e-7, 1e-7, 1e-9, 1e-9, 1e-9, 1e-7, 1e-7, 1e-7, 1e-7};
 
 static int structure_estimate_call(void *obj, int i, struct view *v)
 {
@@ -1397,23 +1415,25 @@ static int structure_estimate_call(void *obj, int i, struct view *v)
     case 5: return fricreg_structure_set_ground_accel(obj, 0.0, 0.25, 4, GROUND_A);
     case 6: return fricreg_structure_set_law(obj, FRICREG_LAW_QUINN, 0.5);
     case 7: return fricreg_structure_set_error_estimate(obj, 1);
-    case 8:
+    case 8: return fricreg_structure_set_ode_abs_tolerances(obj, 10, FRAME_ATOL1);
+    case 9:
         switch (current_scheme) {
         case SCHEME_NEWMARK: return fricreg_structure_set_newmark(obj, 0.3025, 0.6);
         case SCHEME_HHT: return fricreg_structure_set_hht(obj, -0.1);
         case SCHEME_CENTRAL: return fricreg_structure_set_central_difference(obj);
         default: return fricreg_structure_set_initial(obj, 3, u0, v0);
         }
-    case 9: return structure_advance(obj, 0.5 * ST_T_END);
-    case 10: return fricreg_structure_set_ground_accel(obj, 0.0, 0.2, 5, GROUND_B);
+    case 10: return structure_advance(obj, 0.5 * ST_T_END);
+    case 11: return fricreg_structure_set_ode_abs_tolerances(obj, 10, FRAME_ATOL2);
+    case 12: return fricreg_structure_set_ground_accel(obj, 0.0, 0.2, 5, GROUND_B);
     default: return structure_advance(obj, ST_T_END);
     }
 }
 
 static const struct script structure_estimate_script = {"structure with the error estimate",
-                                                        12,
+                                                        14,
                                                         structure_estimate_calls,
-                                                        0,
+                                                        1u << 8, /* by call 11 */
                                                         0,
                                                         structure_open,
                                                         structure_estimate_call,
