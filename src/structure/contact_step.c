@@ -95,6 +95,34 @@ static cholmod_sparse *upper_of(const double A[], size_t m, cholmod_common *cc)
     return S;
 }
 
+/* A's upper triangle into S's values when its nonzeros (the diagonal kept) are S's pattern,
+ * the pattern upper_of(A) would build: 1, with *changed set if a value differs from S's; 0 at
+ * the first entry outside the pattern (S's values then partly overwritten: rebuild it). */
+static int refill(cholmod_sparse *S, const double A[], size_t m, int *changed)
+{
+    const SuiteSparse_long *Sp = S->p, *Si = S->i;
+    double *Sx = S->x;
+    SuiteSparse_long p = 0;
+    int differ = 0;
+    for (size_t j = 0; j < m; j++) {
+        if (Sp[j] != p)
+            return 0;
+        for (size_t i = 0; i <= j; i++) {
+            double a = A[i * m + j];
+            if (i != j && a == 0.0)
+                continue;
+            if (p == Sp[j + 1] || Si[p] != (SuiteSparse_long)i)
+                return 0;
+            differ |= Sx[p] != a;
+            Sx[p++] = a;
+        }
+    }
+    if (Sp[m] != p)
+        return 0;
+    *changed = differ;
+    return 1;
+}
+
 /* FRICREG_OK, FRICREG_ENOTSYM or FRICREG_ENOTPSD (a diagonal entry not above DBL_MIN). */
 static int check_symmetric(const double A[], size_t m)
 {
@@ -315,14 +343,44 @@ static int allocate(struct step_solver *s, const double W[], const double Weff[]
     return fr_newton_matrix_prepare(&s->nm, s->Weff, m <= DENSE_FALLBACK_MAX, &s->cc);
 }
 
-static void release(struct step_solver *s)
+static void release(void *p)
 {
+    struct step_solver *s = p;
     fr_newton_matrix_free(&s->nm, &s->cc);
     cholmod_l_free_sparse(&s->W, &s->cc);
     cholmod_l_free_sparse(&s->Weff, &s->cc);
     free(s->block);
     free(s->stopped);
     fr_cholmod_finish(&s->cc);
+    free(s);
+}
+
+/* The solver of the context's previous call when m and the patterns of W and W_eff are its
+ * (their values refilled, the analysis kept), else a new one, kept in the context; NULL when
+ * out of memory (the context then holds none). A refill that meets another pattern leaves
+ * the old solver's values half written: it is dropped either way. */
+static struct step_solver *solver_for(fricreg_ctx *ctx, size_t m, const double W[],
+                                      const double Weff[])
+{
+    struct step_solver *s = fr_ctx_workspace(ctx);
+    int w_changed = 0, weff_changed = 0;
+    if (s != NULL && s->m == m && refill(s->W, W, m, &w_changed) &&
+        refill(s->Weff, Weff, m, &weff_changed)) {
+        if (weff_changed)
+            s->nm.block.held = 0; /* the factor held is of the old values */
+        return s;
+    }
+    fr_ctx_drop_workspace(ctx);
+    s = calloc(1, sizeof *s);
+    if (s == NULL)
+        return NULL;
+    s->m = m;
+    if (allocate(s, W, Weff) != FRICREG_OK) {
+        release(s);
+        return NULL;
+    }
+    fr_ctx_keep_workspace(ctx, s, release);
+    return s;
 }
 
 int fricreg_ctx_solve_step(fricreg_ctx *ctx, size_t m, const double zdot_start[],
@@ -361,31 +419,26 @@ int fricreg_ctx_solve_step(fricreg_ctx *ctx, size_t m, const double zdot_start[]
                                 "solve_step: W_%zu%zu = %g, the context's coupling has %g", i, i,
                                 W[i * m + i], wd[i]);
 
-    struct step_solver s;
-    memset(&s, 0, sizeof s);
-    s.m = m;
-    s.ctx = ctx;
-    s.c = c;
-    s.z0 = zdot_pred;
-    s.a0 = a_pred;
-    s.mun = fr_ctx_bounds(ctx);
-    status = allocate(&s, W, Weff);
-    if (status != FRICREG_OK) {
-        release(&s);
-        return fail(ctx, status, "no memory");
-    }
-    memcpy(s.f0, f, m * sizeof *f);
+    struct step_solver *s = solver_for(ctx, m, W, Weff);
+    if (s == NULL)
+        return fail(ctx, FRICREG_ENOMEM, "no memory");
+    s->ctx = ctx;
+    s->c = c;
+    s->z0 = zdot_pred;
+    s->a0 = a_pred;
+    s->mun = fr_ctx_bounds(ctx);
+    memcpy(s->f0, f, m * sizeof *f);
     int converged = 0, iters = 0;
-    status = solve(&s, zdot_start, tol, max_iter, flags & FRICREG_STEP_PLAIN, &converged, &iters);
+    status = solve(s, zdot_start, tol, max_iter, flags & FRICREG_STEP_PLAIN, &converged, &iters);
     if (status == FRICREG_OK) {
-        memcpy(f, s.v[V_FK].data, m * sizeof *f);
+        memcpy(f, s->v[V_FK].data, m * sizeof *f);
         info[0] = iters;
         info[1] = converged;
     } else if (status == FRICREG_EDIVERGED) {
         fail(ctx, status, "the residual is not finite");
     } else if (status == FRICREG_ENOMEM) {
+        fr_ctx_drop_workspace(ctx); /* whatever failed half way is not kept */
         fail(ctx, status, "no memory for the dense Newton matrix");
     }
-    release(&s);
     return status;
 }
