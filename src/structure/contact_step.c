@@ -63,6 +63,7 @@ struct step_solver {
     double *f0, *zdot, *afree, *F, *b, *wg, *df;
     struct fr_compliance_pair at_start, at_k, at_t, at_df, at_guess;
     unsigned char *stopped;
+    SuiteSparse_long *next; /* [m] refill's cursor per column */
 };
 
 static int fail(fricreg_ctx *ctx, int code, const char *what)
@@ -97,44 +98,64 @@ static cholmod_sparse *upper_of(const double A[], size_t m, cholmod_common *cc)
 
 /* A's upper triangle into S's values when its nonzeros (the diagonal kept) are S's pattern,
  * the pattern upper_of(A) would build: 1, with *changed set if a value differs from S's; 0 at
- * the first entry outside the pattern (S's values then partly overwritten: rebuild it). */
-static int refill(cholmod_sparse *S, const double A[], size_t m, int *changed)
+ * the first entry outside the pattern (S's values then partly overwritten: rebuild it). A is
+ * read row by row, in the order it lies in memory (column by column, each entry m doubles
+ * from the last, made the refill of m = 2000 three times slower): next[m] holds each column's
+ * next entry of S. */
+static int refill(cholmod_sparse *S, const double A[], size_t m, SuiteSparse_long next[],
+                  int *changed)
 {
     const SuiteSparse_long *Sp = S->p, *Si = S->i;
     double *Sx = S->x;
-    SuiteSparse_long p = 0;
     int differ = 0;
-    for (size_t j = 0; j < m; j++) {
-        if (Sp[j] != p)
-            return 0;
-        for (size_t i = 0; i <= j; i++) {
-            double a = A[i * m + j];
-            if (i != j && a == 0.0)
+    memcpy(next, Sp, m * sizeof *next);
+    for (size_t i = 0; i < m; i++) {
+        const double *row = A + i * m;
+        for (size_t j = i; j < m; j++) {
+            double a = row[j];
+            if (j != i && a == 0.0)
                 continue;
+            SuiteSparse_long p = next[j]++;
             if (p == Sp[j + 1] || Si[p] != (SuiteSparse_long)i)
                 return 0;
             differ |= Sx[p] != a;
-            Sx[p++] = a;
+            Sx[p] = a;
         }
     }
-    if (Sp[m] != p)
-        return 0;
+    for (size_t j = 0; j < m; j++)
+        if (next[j] != Sp[j + 1])
+            return 0;
     *changed = differ;
     return 1;
 }
 
-/* FRICREG_OK, FRICREG_ENOTSYM or FRICREG_ENOTPSD (a diagonal entry not above DBL_MIN). */
-static int check_symmetric(const double A[], size_t m)
+#define SYM_TILE 32 /* the checks' tiles: A_ji a row of a tile away, not m doubles */
+
+/* A (m x m, row-major) read once, by tiles: FRICREG_ENONFINITE if an entry is NaN or
+ * infinite, else FRICREG_ENOTPSD if a diagonal entry is below DBL_MIN, else FRICREG_ENOTSYM
+ * if |A_ij - A_ji| > SYM_TOL sqrt(A_ii A_jj) somewhere, else FRICREG_OK. One pass for both
+ * checks: at m = 2000 the input's O(m^2) reading is most of a step's time. */
+static int check_matrix(const double A[], size_t m)
 {
-    for (size_t i = 0; i < m; i++)
+    int diagonal = FRICREG_OK, symmetric = FRICREG_OK;
+    for (size_t i = 0; i < m; i++) {
+        if (!isfinite(A[i * m + i]))
+            return FRICREG_ENONFINITE;
         if (!(A[i * m + i] >= 0x1p-1022))
-            return FRICREG_ENOTPSD;
-    for (size_t i = 0; i < m; i++)
-        for (size_t j = i + 1; j < m; j++)
-            if (fabs(A[i * m + j] - A[j * m + i]) >
-                SYM_TOL * sqrt(A[i * m + i]) * sqrt(A[j * m + j]))
-                return FRICREG_ENOTSYM;
-    return FRICREG_OK;
+            diagonal = FRICREG_ENOTPSD;
+    }
+    for (size_t i0 = 0; i0 < m; i0 += SYM_TILE)
+        for (size_t j0 = i0; j0 < m; j0 += SYM_TILE)
+            for (size_t i = i0; i < i0 + SYM_TILE && i < m; i++)
+                for (size_t j = j0 > i + 1 ? j0 : i + 1; j < j0 + SYM_TILE && j < m; j++) {
+                    double a = A[i * m + j], b = A[j * m + i];
+                    if (!isfinite(a) || !isfinite(b))
+                        return FRICREG_ENONFINITE;
+                    if (a != b && symmetric == FRICREG_OK && diagonal == FRICREG_OK &&
+                        fabs(a - b) > SYM_TOL * sqrt(A[i * m + i]) * sqrt(A[j * m + j]))
+                        symmetric = FRICREG_ENOTSYM;
+                }
+    return diagonal != FRICREG_OK ? diagonal : symmetric;
 }
 
 static int all_finite(const double x[], size_t n)
@@ -325,7 +346,9 @@ static int allocate(struct step_solver *s, const double W[], const double Weff[]
     s->Weff = upper_of(Weff, m, &s->cc);
     s->block = malloc(VECTORS * m * sizeof *s->block);
     s->stopped = malloc(m);
-    if (s->W == NULL || s->Weff == NULL || s->block == NULL || s->stopped == NULL)
+    s->next = malloc(m * sizeof *s->next);
+    if (s->W == NULL || s->Weff == NULL || s->block == NULL || s->stopped == NULL ||
+        s->next == NULL)
         return FRICREG_ENOMEM;
     for (size_t k = 0; k < VECTORS; k++)
         s->v[k] = (gsl_vector){.size = m, .stride = 1, .data = s->block + k * m};
@@ -351,6 +374,7 @@ static void release(void *p)
     cholmod_l_free_sparse(&s->Weff, &s->cc);
     free(s->block);
     free(s->stopped);
+    free(s->next);
     fr_cholmod_finish(&s->cc);
     free(s);
 }
@@ -364,8 +388,8 @@ static struct step_solver *solver_for(fricreg_ctx *ctx, size_t m, const double W
 {
     struct step_solver *s = fr_ctx_workspace(ctx);
     int w_changed = 0, weff_changed = 0;
-    if (s != NULL && s->m == m && refill(s->W, W, m, &w_changed) &&
-        refill(s->Weff, Weff, m, &weff_changed)) {
+    if (s != NULL && s->m == m && refill(s->W, W, m, s->next, &w_changed) &&
+        refill(s->Weff, Weff, m, s->next, &weff_changed)) {
         if (weff_changed)
             s->nm.block.held = 0; /* the factor held is of the old values */
         return s;
@@ -401,12 +425,12 @@ int fricreg_ctx_solve_step(fricreg_ctx *ctx, size_t m, const double zdot_start[]
         return fail(ctx, FRICREG_ENONFINITE, "c or tol is NaN or infinite");
     if (!(c > 0.0) || !(tol > 0.0) || max_iter < 1 || (flags & ~FRICREG_STEP_PLAIN) != 0)
         return fail(ctx, FRICREG_EINVAL, "needs c > 0, tol > 0, max_iter >= 1, known flags");
+    int status = check_matrix(W, m), status_eff = check_matrix(Weff, m);
     if (!all_finite(zdot_start, m) || !all_finite(zdot_pred, m) || !all_finite(a_pred, m) ||
-        !all_finite(f, m) || !all_finite(W, m * m) || !all_finite(Weff, m * m))
+        !all_finite(f, m) || status == FRICREG_ENONFINITE || status_eff == FRICREG_ENONFINITE)
         return fail(ctx, FRICREG_ENONFINITE, "an input array holds NaN or infinity");
-    int status = check_symmetric(W, m);
     if (status == FRICREG_OK)
-        status = check_symmetric(Weff, m);
+        status = status_eff;
     if (status != FRICREG_OK)
         return fail(ctx, status,
                     status == FRICREG_ENOTSYM ? "W or W_eff is not symmetric"
