@@ -20,6 +20,7 @@
 #include <gsl/gsl_linalg.h>
 #include <gsl/gsl_matrix.h>
 
+#include "ctx/ctx_driver.h" /* fr_ctx_workspace: the solver the context keeps */
 #include "fricreg.h"
 #include "fricreg_structure.h"
 
@@ -453,6 +454,51 @@ START_TEST(kept_solver_tanh)
 }
 END_TEST
 
+/* The header's promise on the kept solver's memory: kept by a call and reused by the next with
+ * the same patterns, kept through set_bounds, released by set_law and by a coupling setter
+ * (then built again by the next call). fr_ctx_workspace (ctx_driver.h) shows it. */
+START_TEST(kept_solver_released_by_setters)
+{
+    unsigned long state = 2385;
+    double W[MW * MW], Weff[MW * MW], mun[MW], z0[MW], zp[MW], ap[MW], f[MW];
+    banded_spd(MW, 3, 1.0, &state, W);
+    banded_spd(MW, 1, 0.05, &state, Weff);
+    for (size_t i = 0; i < MW; i++) {
+        mun[i] = 0.5 + uniform(&state);
+        z0[i] = zp[i] = 1e-3 * (2.0 * uniform(&state) - 1.0);
+        ap[i] = uniform(&state) - 0.5;
+    }
+    fricreg_ctx *ctx = run_context(FRICREG_LAW_QUINN, 0, W, mun);
+    int info[2];
+#define STEP()                                                                                     \
+    do {                                                                                           \
+        memcpy(f, mun, sizeof f);                                                                  \
+        ck_assert_int_eq(fricreg_ctx_solve_step(ctx, MW, z0, zp, ap, W, Weff, 0.005, 1e-10, 50, 0, \
+                                                f, info),                                          \
+                         FRICREG_OK);                                                              \
+    } while (0)
+    ck_assert_ptr_null(fr_ctx_workspace(ctx));
+    STEP();
+    void *kept = fr_ctx_workspace(ctx);
+    ck_assert_ptr_nonnull(kept);
+    Weff[0] *= 1.25; /* new values, same pattern */
+    STEP();
+    ck_assert_ptr_eq(fr_ctx_workspace(ctx), kept);
+    ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, MW, mun), FRICREG_OK);
+    ck_assert_ptr_eq(fr_ctx_workspace(ctx), kept);
+    ck_assert_int_eq(fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, 1e-3), FRICREG_OK);
+    ck_assert_ptr_null(fr_ctx_workspace(ctx));
+    STEP();
+    ck_assert_ptr_nonnull(fr_ctx_workspace(ctx));
+    ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, MW, W), FRICREG_OK);
+    ck_assert_ptr_null(fr_ctx_workspace(ctx));
+    STEP();
+    ck_assert_ptr_nonnull(fr_ctx_workspace(ctx));
+#undef STEP
+    fricreg_ctx_free(ctx); /* and the solver with it: valgrind, LeakSanitizer */
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("contact_step");
@@ -466,6 +512,7 @@ static Suite *suite(void)
     tcase_add_test(tc, kept_solver_quinn_coupled);
     tcase_add_test(tc, kept_solver_quinn_diagonal);
     tcase_add_test(tc, kept_solver_tanh);
+    tcase_add_test(tc, kept_solver_released_by_setters);
     suite_add_tcase(s, tc);
     return s;
 }
