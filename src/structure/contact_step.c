@@ -23,7 +23,7 @@
  * The solver (CHOLMOD's workspace, W's and W_eff's upper triangles, the Newton matrix with
  * W_eff's analysed pattern, the vectors) is kept in the context between calls
  * (fr_ctx_keep_workspace, ctx_driver.h): a caller steps thousands of times on one K_eff
- * pattern, and building it (the analysis above all) cost a third of a 10-contact step. A call
+ * pattern, and building it cost a third of a 10-contact step (bench/solve_step.c). A call
  * whose m and patterns are the kept solver's refills the values; a new W_eff also forgets
  * the factor the masked factor holds (masked_factor.h), which is otherwise kept across calls
  * as across iterations. Every vector is written before it is read within a call (valgrind
