@@ -2,8 +2,9 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # bench/run.sh — the whole benchmark, from the top of a fresh clone:
 #   builds with -DFRICREG_BENCH=ON in build-bench/, runs the work-precision, the scaling, the
-#   kernel and the structure-scaling benchmarks, writes every CSV, gnuplot script and PNG to bench-results/, prints
-#   the tables (the summary ends the work-precision part), and rewrites the dated results page
+#   kernel, the dense and sparse W, the solve_step and the structure-scaling benchmarks,
+#   writes every CSV, gnuplot script and PNG to bench-results/, prints the tables (the
+#   summary ends the work-precision part), and rewrites the dated results page
 #   docs/results.md and the README's summary table from them (commit both to publish a
 #   run). Not run by ctest: it takes minutes.
 # The event-driven baseline is built when SUNDIALS CVODE is installed (Debian:
@@ -38,6 +39,9 @@ echo
 ./build-bench/bench/fricreg-bench-dense "$out" | tee "$out/dense.txt"
 echo
 ./build-bench/bench/fricreg-bench-sparse "$out" | tee "$out/sparse.txt"
+echo
+# fricreg_ctx_solve_step with its solver kept in the context, against one built per call.
+./build-bench/bench/fricreg-bench-solve-step "$out" | tee "$out/solve_step.txt"
 # The 2-D context on stuck chains of 10^2 ... 10^5 contacts (10^6 with FRICREG_BENCH_BIG=1),
 # beside the 1-D context on the same data.
 ./build-bench/bench/fricreg-bench-disk-chain "$out" | tee "$out/disk_chain.txt"

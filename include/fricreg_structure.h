@@ -1035,9 +1035,19 @@ enum fricreg_step_flags {
  *  f[m]         in: the guess (the previous step's forces); out: the step's forces (force
  *               units); the best iterate when not converged (info[1] = 0).
  *  info[2]      out: info[0] the Newton iterations made, info[1] 1 if converged, else 0.
- *  Cost: two m x m dense inputs read and their nonzeros kept (O(m^2) per call), CHOLMOD's
- *  analysis of W_eff's pattern per call, then per iteration one eval, one tangent's rows and
- *  one sparse solve. Allocates per call (freed before it returns).
+ *  Cost: the two m x m dense inputs read (checked, and their nonzeros kept: O(m^2) per call),
+ *  then per iteration one eval, one tangent's rows and one sparse solve. The first call
+ *  allocates the step's solver (CHOLMOD, sparse copies of W's and W_eff's upper triangles,
+ *  the Newton matrix, a few dozen vectors of m) and runs CHOLMOD's analysis of W_eff's
+ *  pattern; the context keeps the solver. A later call with the same m and the same nonzero
+ *  patterns of W and W_eff (exact zeros outside them; the values may change every call)
+ *  refills the values and reuses it: no allocation, no analysis, and while W_eff's values and
+ *  a stick set are those of the last factorization, no refactorization either. Another
+ *  pattern rebuilds it, as the first call. The results are the same, bit for bit, whether the
+ *  solver was kept or built. Its memory (O(m + nnz(L)), L W_eff's Cholesky factor; a dense
+ *  m x m Newton matrix too for m <= 64) is held until fricreg_ctx_free, fricreg_ctx_set_law
+ *  or a coupling setter (fricreg_ctx_set_coupling_*); a call that fails with FRICREG_ENOMEM
+ *  releases it (the next call builds one).
  *
  *  Returns FRICREG_OK (converged or not: read info[1]); FRICREG_ENULL if ctx or an array is
  *  NULL; FRICREG_ESIZE if m differs from the context's; FRICREG_ENONFINITE if c, tol or an

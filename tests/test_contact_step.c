@@ -20,6 +20,7 @@
 #include <gsl/gsl_linalg.h>
 #include <gsl/gsl_matrix.h>
 
+#include "ctx/ctx_driver.h" /* fr_ctx_workspace: the solver the context keeps */
 #include "fricreg.h"
 #include "fricreg_structure.h"
 
@@ -320,6 +321,184 @@ START_TEST(plain_newton_cycles)
 }
 END_TEST
 
+/* ---- The solver kept between calls ------------------------------------------------------ */
+
+enum { MW = 12, RUN = 60 };
+
+/* A symmetric banded m x m matrix, row-major: off-diagonals within `band` uniform in
+ * [-0.3, 0.3) scale, diagonal scale (1 + 0.6 band + uniform): diagonally dominant, so positive
+ * definite (Gershgorin); exactly symmetric. */
+static void banded_spd(size_t m, size_t band, double scale, unsigned long *state, double A[])
+{
+    for (size_t i = 0; i < m; i++)
+        for (size_t j = i; j < m; j++) {
+            double a = j - i > band ? 0.0
+                       : i == j     ? scale * (1.0 + 0.6 * (double)band + uniform(state))
+                                    : scale * (0.6 * uniform(state) - 0.3);
+            A[i * m + j] = A[j * m + i] = a;
+        }
+}
+
+/* A context of MW contacts with the law, W (diagonal: its diagonal only) and the bounds. */
+static fricreg_ctx *run_context(int law, int diagonal, const double W[], const double mun[])
+{
+    fricreg_ctx *ctx = NULL;
+    double w[MW];
+    for (size_t i = 0; i < MW; i++)
+        w[i] = W[i * MW + i];
+    ck_assert_int_eq(fricreg_ctx_create(MW, &ctx), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_law(ctx, law, 1e-3), FRICREG_OK);
+    ck_assert_int_eq(diagonal ? fricreg_ctx_set_coupling_diagonal(ctx, MW, w)
+                              : fricreg_ctx_set_coupling_dense(ctx, MW, W),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, MW, mun), FRICREG_OK);
+    return ctx;
+}
+
+/* A run of steps on one context, whose solver is kept from call to call, against the same
+ * steps each made with a solver built for the call, as every call built one before the solver
+ * was kept: the same statuses, forces and info, bit for bit. The reference builds its solver
+ * on a new context per step (fresh), or (fresh = 0) on a second context that has made the
+ * same calls, whose solver fricreg_ctx_set_law drops before each: law (4) with a coupled W
+ * warm-starts its QP from the context's previous evaluation, so a new context's evaluations
+ * can differ from an old one's in the last bit (1.7e-16 at step 16 here), whatever the
+ * solver. W_eff's values change every third step (between, the factor of the last stick set
+ * is kept too), its pattern at steps 20 (a wider band: the solver is built again) and 40
+ * (back); step 30 is refused (a NaN), step 31 has free accelerations of 1e300 (law (4) with a
+ * coupled W fails inside the step: beyond its solve's range), and the steps after them are
+ * compared as the others. The velocities and accelerations change the stick set from step to
+ * step; each run's guess is its own previous forces. */
+static void kept_against_built(int law, int diagonal, int fresh)
+{
+    const double c = 0.005, tol = 1e-10;
+    unsigned long state = 615;
+    double W[MW * MW], Weff[MW * MW], mun[MW], f_kept[MW], f_built[MW];
+    banded_spd(MW, diagonal ? 0 : 3, 1.0, &state, W);
+    for (size_t i = 0; i < MW; i++)
+        mun[i] = f_kept[i] = f_built[i] = 0.5 + uniform(&state);
+    fricreg_ctx *kept = run_context(law, diagonal, W, mun);
+    fricreg_ctx *built = fresh ? NULL : run_context(law, diagonal, W, mun);
+    int converged = 0, held_min = MW, held_max = 0, failed_inside = 0;
+    for (int step = 0; step < RUN; step++) {
+        if (step % 3 == 0)
+            banded_spd(MW, step >= 20 && step < 40 ? 2 : 1, 0.05, &state, Weff);
+        double z0[MW], zp[MW], ap[MW];
+        for (size_t i = 0; i < MW; i++) {
+            z0[i] = 1e-3 * (6.0 * uniform(&state) - 3.0);
+            zp[i] = z0[i] + 1e-3 * (4.0 * uniform(&state) - 2.0);
+            ap[i] = 3.0 * uniform(&state) - 1.5;
+        }
+        if (step == 30)
+            zp[7] = NAN;
+        if (step == 31)
+            for (size_t i = 0; i < MW; i++)
+                ap[i] = i % 2 ? 1e300 : -1e300;
+        int info_kept[2] = {-7, -7}, info_built[2] = {-7, -7};
+        double f_before[MW];
+        memcpy(f_before, f_kept, sizeof f_kept);
+        int status_kept = fricreg_ctx_solve_step(kept, MW, z0, zp, ap, W, Weff, c, tol, 50, 0,
+                                                 f_kept, info_kept);
+        if (fresh)
+            built = run_context(law, diagonal, W, mun);
+        else
+            ck_assert_int_eq(fricreg_ctx_set_law(built, law, 1e-3), FRICREG_OK);
+        int status_built = fricreg_ctx_solve_step(built, MW, z0, zp, ap, W, Weff, c, tol, 50, 0,
+                                                  f_built, info_built);
+        if (fresh) {
+            fricreg_ctx_free(built);
+            built = NULL;
+        }
+        ck_assert_int_eq(status_kept, status_built);
+        ck_assert_msg(memcmp(f_kept, f_built, sizeof f_kept) == 0, "step %d: forces differ", step);
+        ck_assert_msg(memcmp(info_kept, info_built, sizeof info_kept) == 0,
+                      "step %d: info {%d, %d} against {%d, %d}", step, info_kept[0], info_kept[1],
+                      info_built[0], info_built[1]);
+        if (status_kept != FRICREG_OK) { /* nothing written */
+            ck_assert(step == 30 || step == 31);
+            failed_inside += step == 31;
+            ck_assert_int_eq(info_kept[0], -7);
+            ck_assert(memcmp(f_kept, f_before, sizeof f_kept) == 0);
+            continue;
+        }
+        converged += info_kept[1];
+        int held = 0;
+        for (size_t i = 0; i < MW; i++)
+            held += fabs(f_kept[i]) < 0.9 * mun[i]; /* well inside the band */
+        held_min = held < held_min ? held : held_min;
+        held_max = held > held_max ? held : held_max;
+    }
+    fricreg_ctx_free(kept);
+    fricreg_ctx_free(built);
+    /* The run means something: its steps converge, the contacts well inside their bands change, and with law (4) on
+     * a coupled W a step fails inside the solve. */
+    ck_assert_int_eq(converged, RUN - 1 - failed_inside);
+    ck_assert_int_lt(held_min, held_max);
+    ck_assert_int_eq(failed_inside, law == FRICREG_LAW_QUINN && !diagonal);
+}
+
+START_TEST(kept_solver_quinn_coupled)
+{
+    kept_against_built(FRICREG_LAW_QUINN, 0, 0);
+}
+END_TEST
+
+START_TEST(kept_solver_quinn_diagonal)
+{
+    kept_against_built(FRICREG_LAW_QUINN, 1, 1);
+}
+END_TEST
+
+START_TEST(kept_solver_tanh)
+{
+    kept_against_built(FRICREG_LAW_TANH, 0, 1);
+}
+END_TEST
+
+/* The header's promise on the kept solver's memory: kept by a call and reused by the next with
+ * the same patterns, kept through set_bounds, released by set_law and by a coupling setter
+ * (then built again by the next call). fr_ctx_workspace (ctx_driver.h) shows it. */
+START_TEST(kept_solver_released_by_setters)
+{
+    unsigned long state = 2385;
+    double W[MW * MW], Weff[MW * MW], mun[MW], z0[MW], zp[MW], ap[MW], f[MW];
+    banded_spd(MW, 3, 1.0, &state, W);
+    banded_spd(MW, 1, 0.05, &state, Weff);
+    for (size_t i = 0; i < MW; i++) {
+        mun[i] = 0.5 + uniform(&state);
+        z0[i] = zp[i] = 1e-3 * (2.0 * uniform(&state) - 1.0);
+        ap[i] = uniform(&state) - 0.5;
+    }
+    fricreg_ctx *ctx = run_context(FRICREG_LAW_QUINN, 0, W, mun);
+    int info[2];
+#define STEP()                                                                                     \
+    do {                                                                                           \
+        memcpy(f, mun, sizeof f);                                                                  \
+        ck_assert_int_eq(fricreg_ctx_solve_step(ctx, MW, z0, zp, ap, W, Weff, 0.005, 1e-10, 50, 0, \
+                                                f, info),                                          \
+                         FRICREG_OK);                                                              \
+    } while (0)
+    ck_assert_ptr_null(fr_ctx_workspace(ctx));
+    STEP();
+    void *kept = fr_ctx_workspace(ctx);
+    ck_assert_ptr_nonnull(kept);
+    Weff[0] *= 1.25; /* new values, same pattern */
+    STEP();
+    ck_assert_ptr_eq(fr_ctx_workspace(ctx), kept);
+    ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, MW, mun), FRICREG_OK);
+    ck_assert_ptr_eq(fr_ctx_workspace(ctx), kept);
+    ck_assert_int_eq(fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, 1e-3), FRICREG_OK);
+    ck_assert_ptr_null(fr_ctx_workspace(ctx));
+    STEP();
+    ck_assert_ptr_nonnull(fr_ctx_workspace(ctx));
+    ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, MW, W), FRICREG_OK);
+    ck_assert_ptr_null(fr_ctx_workspace(ctx));
+    STEP();
+    ck_assert_ptr_nonnull(fr_ctx_workspace(ctx));
+#undef STEP
+    fricreg_ctx_free(ctx); /* and the solver with it: valgrind, LeakSanitizer */
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("contact_step");
@@ -330,6 +509,10 @@ static Suite *suite(void)
     tcase_add_test(tc, law_tanh);
     tcase_add_test(tc, equals_structure_steps);
     tcase_add_test(tc, plain_newton_cycles);
+    tcase_add_test(tc, kept_solver_quinn_coupled);
+    tcase_add_test(tc, kept_solver_quinn_diagonal);
+    tcase_add_test(tc, kept_solver_tanh);
+    tcase_add_test(tc, kept_solver_released_by_setters);
     suite_add_tcase(s, tc);
     return s;
 }

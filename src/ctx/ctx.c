@@ -16,9 +16,32 @@
 #define SYMMETRY_RTOL 1e-12
 #define PSD_RTOL 1e-12
 
-/* Back to a diagonal W: the dense or sparse coupling and what it needs, released. */
+void *fr_ctx_workspace(const fricreg_ctx *ctx)
+{
+    return ctx->workspace;
+}
+
+void fr_ctx_drop_workspace(fricreg_ctx *ctx)
+{
+    if (ctx->workspace != NULL)
+        ctx->workspace_free(ctx->workspace);
+    ctx->workspace = NULL;
+    ctx->workspace_free = NULL;
+}
+
+void fr_ctx_keep_workspace(fricreg_ctx *ctx, void *workspace, void (*release)(void *))
+{
+    if (workspace != ctx->workspace)
+        fr_ctx_drop_workspace(ctx);
+    ctx->workspace = workspace;
+    ctx->workspace_free = release;
+}
+
+/* Back to a diagonal W: the dense or sparse coupling and what it needs, released; with it the
+ * drivers' workspace (sized for the scene of the old coupling). */
 void fr_ctx_free_coupling(fricreg_ctx *ctx)
 {
+    fr_ctx_drop_workspace(ctx);
     free(ctx->W);
     free(ctx->rhs);
     ctx->W = ctx->rhs = NULL;
@@ -138,6 +161,7 @@ int fricreg_ctx_set_law(fricreg_ctx *ctx, int law, double eps)
                        eps);
     ctx->law = law;
     ctx->eps = eps;
+    fr_ctx_drop_workspace(ctx);
     if (law != FRICREG_LAW_QUINN) /* Stribeck friction is (4) with its own bound */
         fr_stribeck_off(ctx);
     fr_stribeck_refresh(ctx); /* k(eps) for the new eps */

@@ -46,4 +46,14 @@ int fr_ctx_tangent_rows(fricreg_ctx *ctx, unsigned char implicit[], double coef[
  * (FRICREG_ENOMEM, recorded in ctx; stiffness.c). */
 int fr_stiffness_times_eps(fricreg_ctx *ctx, int chord, double *rate);
 
+/* A workspace a driver keeps in the context between its calls (fricreg_ctx_solve_step's
+ * solver, contact_step.c), so that a run of calls allocates and analyses once. The context
+ * holds one: fr_ctx_workspace returns it (NULL: none); fr_ctx_keep_workspace hands one over
+ * with the function that frees it (the one held before, if any, freed first);
+ * fr_ctx_drop_workspace frees it. The context drops it itself in fricreg_ctx_free and in the
+ * setters that change the law or the coupling (a new scene: the memory goes back). */
+void *fr_ctx_workspace(const fricreg_ctx *ctx);
+void fr_ctx_keep_workspace(fricreg_ctx *ctx, void *workspace, void (*release)(void *));
+void fr_ctx_drop_workspace(fricreg_ctx *ctx);
+
 #endif

@@ -69,6 +69,11 @@ struct fricreg_ctx {
     double *strib_keps;        /* [m] k(eps), refreshed when eps changes */
     double *strib_bound;       /* [m] the bound at the last zdot: B(|zdot|) or k(|zdot|) */
 
+    /* A driver's workspace kept between its calls (fricreg_ctx_solve_step's solver,
+     * contact_step.c), freed by the driver's own function: ctx_driver.h. */
+    void *workspace;
+    void (*workspace_free)(void *);
+
     int64_t stats[FR_NSTATS];
     struct fr_error err;
 };

@@ -18,7 +18,18 @@
  * the same kind of measure otherwise. With the plain 2-norm of G instead, the line search
  * stalled at the building's reversals (a stopped damper beside two sliding ones: 1 step of
  * 1500 unconverged at eps = 1e-3, 5 at 1e-4), where ||R|| weighs the dampers' differences.
- * The stopping rule reads max_i |G_i|, in force units. */
+ * The stopping rule reads max_i |G_i|, in force units.
+ *
+ * The solver (CHOLMOD's workspace, W's and W_eff's upper triangles, the Newton matrix with
+ * W_eff's analysed pattern, the vectors) is kept in the context between calls
+ * (fr_ctx_keep_workspace, ctx_driver.h): a caller steps thousands of times on one K_eff
+ * pattern, and building it cost a third of a 10-contact step (bench/solve_step.c). A call
+ * whose m and patterns are the kept solver's refills the values; a new W_eff also forgets
+ * the factor the masked factor holds (masked_factor.h), which is otherwise kept across calls
+ * as across iterations. Every vector is written before it is read within a call (valgrind
+ * holds the built solver to that), CHOLMOD's analysis depends on the pattern alone and its
+ * factorization on the values alone: a kept solver gives the built one's results, bit for
+ * bit (tests/test_contact_step.c). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -63,6 +74,7 @@ struct step_solver {
     double *f0, *zdot, *afree, *F, *b, *wg, *df;
     struct fr_compliance_pair at_start, at_k, at_t, at_df, at_guess;
     unsigned char *stopped;
+    SuiteSparse_long *next; /* [m] refill's cursor per column */
 };
 
 static int fail(fricreg_ctx *ctx, int code, const char *what)
@@ -95,18 +107,66 @@ static cholmod_sparse *upper_of(const double A[], size_t m, cholmod_common *cc)
     return S;
 }
 
-/* FRICREG_OK, FRICREG_ENOTSYM or FRICREG_ENOTPSD (a diagonal entry not above DBL_MIN). */
-static int check_symmetric(const double A[], size_t m)
+/* A's upper triangle into S's values when its nonzeros (the diagonal kept) are S's pattern,
+ * the pattern upper_of(A) would build: 1, with *changed set if a value differs from S's; 0 at
+ * the first entry outside the pattern (S's values then partly overwritten: rebuild it). A is
+ * read row by row, in the order it lies in memory (column by column, each entry m doubles
+ * from the last, made the refill of m = 2000 three times slower): next[m] holds each column's
+ * next entry of S. */
+static int refill(cholmod_sparse *S, const double A[], size_t m, SuiteSparse_long next[],
+                  int *changed)
 {
-    for (size_t i = 0; i < m; i++)
+    const SuiteSparse_long *Sp = S->p, *Si = S->i;
+    double *Sx = S->x;
+    int differ = 0;
+    memcpy(next, Sp, m * sizeof *next);
+    for (size_t i = 0; i < m; i++) {
+        const double *row = A + i * m;
+        for (size_t j = i; j < m; j++) {
+            double a = row[j];
+            if (j != i && a == 0.0)
+                continue;
+            SuiteSparse_long p = next[j]++;
+            if (p == Sp[j + 1] || Si[p] != (SuiteSparse_long)i)
+                return 0;
+            differ |= Sx[p] != a;
+            Sx[p] = a;
+        }
+    }
+    for (size_t j = 0; j < m; j++)
+        if (next[j] != Sp[j + 1])
+            return 0;
+    *changed = differ;
+    return 1;
+}
+
+#define SYM_TILE 32 /* the checks' tiles: A_ji a row of a tile away, not m doubles */
+
+/* A (m x m, row-major) read once, by tiles: FRICREG_ENONFINITE if an entry is NaN or
+ * infinite, else FRICREG_ENOTPSD if a diagonal entry is below DBL_MIN, else FRICREG_ENOTSYM
+ * if |A_ij - A_ji| > SYM_TOL sqrt(A_ii A_jj) somewhere, else FRICREG_OK. One pass for both
+ * checks: at m = 2000 the input's O(m^2) reading is most of a step's time. */
+static int check_matrix(const double A[], size_t m)
+{
+    int diagonal = FRICREG_OK, symmetric = FRICREG_OK;
+    for (size_t i = 0; i < m; i++) {
+        if (!isfinite(A[i * m + i]))
+            return FRICREG_ENONFINITE;
         if (!(A[i * m + i] >= 0x1p-1022))
-            return FRICREG_ENOTPSD;
-    for (size_t i = 0; i < m; i++)
-        for (size_t j = i + 1; j < m; j++)
-            if (fabs(A[i * m + j] - A[j * m + i]) >
-                SYM_TOL * sqrt(A[i * m + i]) * sqrt(A[j * m + j]))
-                return FRICREG_ENOTSYM;
-    return FRICREG_OK;
+            diagonal = FRICREG_ENOTPSD;
+    }
+    for (size_t i0 = 0; i0 < m; i0 += SYM_TILE)
+        for (size_t j0 = i0; j0 < m; j0 += SYM_TILE)
+            for (size_t i = i0; i < i0 + SYM_TILE && i < m; i++)
+                for (size_t j = j0 > i + 1 ? j0 : i + 1; j < j0 + SYM_TILE && j < m; j++) {
+                    double a = A[i * m + j], b = A[j * m + i];
+                    if (!isfinite(a) || !isfinite(b))
+                        return FRICREG_ENONFINITE;
+                    if (a != b && symmetric == FRICREG_OK && diagonal == FRICREG_OK &&
+                        fabs(a - b) > SYM_TOL * sqrt(A[i * m + i]) * sqrt(A[j * m + j]))
+                        symmetric = FRICREG_ENOTSYM;
+                }
+    return diagonal != FRICREG_OK ? diagonal : symmetric;
 }
 
 static int all_finite(const double x[], size_t n)
@@ -297,7 +357,9 @@ static int allocate(struct step_solver *s, const double W[], const double Weff[]
     s->Weff = upper_of(Weff, m, &s->cc);
     s->block = malloc(VECTORS * m * sizeof *s->block);
     s->stopped = malloc(m);
-    if (s->W == NULL || s->Weff == NULL || s->block == NULL || s->stopped == NULL)
+    s->next = malloc(m * sizeof *s->next);
+    if (s->W == NULL || s->Weff == NULL || s->block == NULL || s->stopped == NULL ||
+        s->next == NULL)
         return FRICREG_ENOMEM;
     for (size_t k = 0; k < VECTORS; k++)
         s->v[k] = (gsl_vector){.size = m, .stride = 1, .data = s->block + k * m};
@@ -315,14 +377,45 @@ static int allocate(struct step_solver *s, const double W[], const double Weff[]
     return fr_newton_matrix_prepare(&s->nm, s->Weff, m <= DENSE_FALLBACK_MAX, &s->cc);
 }
 
-static void release(struct step_solver *s)
+static void release(void *p)
 {
+    struct step_solver *s = p;
     fr_newton_matrix_free(&s->nm, &s->cc);
     cholmod_l_free_sparse(&s->W, &s->cc);
     cholmod_l_free_sparse(&s->Weff, &s->cc);
     free(s->block);
     free(s->stopped);
+    free(s->next);
     fr_cholmod_finish(&s->cc);
+    free(s);
+}
+
+/* The solver of the context's previous call when m and the patterns of W and W_eff are its
+ * (their values refilled, the analysis kept), else a new one, kept in the context; NULL when
+ * out of memory (the context then holds none). A refill that meets another pattern leaves
+ * the old solver's values half written: it is dropped either way. */
+static struct step_solver *solver_for(fricreg_ctx *ctx, size_t m, const double W[],
+                                      const double Weff[])
+{
+    struct step_solver *s = fr_ctx_workspace(ctx);
+    int w_changed = 0, weff_changed = 0;
+    if (s != NULL && s->m == m && refill(s->W, W, m, s->next, &w_changed) &&
+        refill(s->Weff, Weff, m, s->next, &weff_changed)) {
+        if (weff_changed)
+            s->nm.block.held = 0; /* the factor held is of the old values */
+        return s;
+    }
+    fr_ctx_drop_workspace(ctx);
+    s = calloc(1, sizeof *s);
+    if (s == NULL)
+        return NULL;
+    s->m = m;
+    if (allocate(s, W, Weff) != FRICREG_OK) {
+        release(s);
+        return NULL;
+    }
+    fr_ctx_keep_workspace(ctx, s, release);
+    return s;
 }
 
 int fricreg_ctx_solve_step(fricreg_ctx *ctx, size_t m, const double zdot_start[],
@@ -343,12 +436,12 @@ int fricreg_ctx_solve_step(fricreg_ctx *ctx, size_t m, const double zdot_start[]
         return fail(ctx, FRICREG_ENONFINITE, "c or tol is NaN or infinite");
     if (!(c > 0.0) || !(tol > 0.0) || max_iter < 1 || (flags & ~FRICREG_STEP_PLAIN) != 0)
         return fail(ctx, FRICREG_EINVAL, "needs c > 0, tol > 0, max_iter >= 1, known flags");
+    int status = check_matrix(W, m), status_eff = check_matrix(Weff, m);
     if (!all_finite(zdot_start, m) || !all_finite(zdot_pred, m) || !all_finite(a_pred, m) ||
-        !all_finite(f, m) || !all_finite(W, m * m) || !all_finite(Weff, m * m))
+        !all_finite(f, m) || status == FRICREG_ENONFINITE || status_eff == FRICREG_ENONFINITE)
         return fail(ctx, FRICREG_ENONFINITE, "an input array holds NaN or infinity");
-    int status = check_symmetric(W, m);
     if (status == FRICREG_OK)
-        status = check_symmetric(Weff, m);
+        status = status_eff;
     if (status != FRICREG_OK)
         return fail(ctx, status,
                     status == FRICREG_ENOTSYM ? "W or W_eff is not symmetric"
@@ -361,31 +454,26 @@ int fricreg_ctx_solve_step(fricreg_ctx *ctx, size_t m, const double zdot_start[]
                                 "solve_step: W_%zu%zu = %g, the context's coupling has %g", i, i,
                                 W[i * m + i], wd[i]);
 
-    struct step_solver s;
-    memset(&s, 0, sizeof s);
-    s.m = m;
-    s.ctx = ctx;
-    s.c = c;
-    s.z0 = zdot_pred;
-    s.a0 = a_pred;
-    s.mun = fr_ctx_bounds(ctx);
-    status = allocate(&s, W, Weff);
-    if (status != FRICREG_OK) {
-        release(&s);
-        return fail(ctx, status, "no memory");
-    }
-    memcpy(s.f0, f, m * sizeof *f);
+    struct step_solver *s = solver_for(ctx, m, W, Weff);
+    if (s == NULL)
+        return fail(ctx, FRICREG_ENOMEM, "no memory");
+    s->ctx = ctx;
+    s->c = c;
+    s->z0 = zdot_pred;
+    s->a0 = a_pred;
+    s->mun = fr_ctx_bounds(ctx);
+    memcpy(s->f0, f, m * sizeof *f);
     int converged = 0, iters = 0;
-    status = solve(&s, zdot_start, tol, max_iter, flags & FRICREG_STEP_PLAIN, &converged, &iters);
+    status = solve(s, zdot_start, tol, max_iter, flags & FRICREG_STEP_PLAIN, &converged, &iters);
     if (status == FRICREG_OK) {
-        memcpy(f, s.v[V_FK].data, m * sizeof *f);
+        memcpy(f, s->v[V_FK].data, m * sizeof *f);
         info[0] = iters;
         info[1] = converged;
     } else if (status == FRICREG_EDIVERGED) {
         fail(ctx, status, "the residual is not finite");
     } else if (status == FRICREG_ENOMEM) {
+        fr_ctx_drop_workspace(ctx); /* whatever failed half way is not kept */
         fail(ctx, status, "no memory for the dense Newton matrix");
     }
-    release(&s);
     return status;
 }

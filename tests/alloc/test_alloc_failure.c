@@ -532,12 +532,21 @@ static const struct script ctx_coupling = {
     "ctx set_coupling_dense", 5,    ctx_coupling_calls, 0,           0,        ctx_open,
     ctx_coupling_call,        NULL, ctx_observe,        ctx_errcode, ctx_close};
 
-/* fricreg_ctx_solve_step (fricreg_structure.h) on a coupled context: its scratch (CHOLMOD's
- * copies of W and W_eff, the Newton matrix, the vectors) is allocated per call, before any
- * evaluation, and freed before it returns; a failed call writes neither f nor info and leaves
- * the context's last evaluation as it was. */
-static const char *const ctx_solve_step_calls[] = {"set_coupling_dense", "set_bounds", "set_law",
-                                                   "solve_step"};
+/* fricreg_ctx_solve_step (fricreg_structure.h) on a coupled context: its solver (CHOLMOD's
+ * copies of W and W_eff, the analysis, the Newton matrix, the vectors) is built at the first
+ * call, before any evaluation, and kept in the context while W's and W_eff's patterns hold:
+ * the second call (new values, same patterns) reuses it and allocates nothing, the third
+ * (another pattern of W_eff) builds a new one, the fourth reuses that. A failed call writes
+ * neither f nor info, leaves the context's last evaluation as it was and keeps no solver, so
+ * that the next call builds one: its answer must be the warm solver's, bit for bit (the view
+ * of the script without the failed call). */
+static const char *const ctx_solve_step_calls[] = {"set_coupling_dense",
+                                                   "set_bounds",
+                                                   "set_law",
+                                                   "solve_step",
+                                                   "solve_step (reused)",
+                                                   "solve_step (new pattern)",
+                                                   "solve_step (reused again)"};
 
 static int ctx_solve_step_call(void *obj, int i, struct view *v)
 {
@@ -548,13 +557,18 @@ static int ctx_solve_step_call(void *obj, int i, struct view *v)
     case 1: return fricreg_ctx_set_bounds(obj, M_DENSE, MUN5);
     case 2: return fricreg_ctx_set_law(obj, FRICREG_LAW_QUINN, 0.02);
     default: {
+        /* calls 3, 4: W_eff tridiagonal as W, other values; 5, 6: diagonal */
+        double scale = i == 3 ? 0.05 : i == 4 ? 0.0625 : 0.04 + 0.01 * (i - 5);
         for (size_t k = 0; k < M_DENSE * M_DENSE; k++)
-            Weff[k] = 0.05 * W[k];
+            Weff[k] = i >= 5 && k % (M_DENSE + 1) != 0 ? 0.0 : scale * W[k];
         for (size_t k = 0; k < M_DENSE; k++)
             f[k] = 0.5 * MUN5[k];
         int info[2] = {-7, -7};
-        int status = fricreg_ctx_solve_step(obj, M_DENSE, ZDOT5[0], ZDOT5[2], AFREE5[0], W, Weff,
-                                            0.01, 1e-12, 50, 0, f, info);
+        long before = n_allocs;
+        int status = fricreg_ctx_solve_step(obj, M_DENSE, ZDOT5[0], ZDOT5[2], AFREE5[i % 3], W,
+                                            Weff, 0.01, 1e-12, 50, 0, f, info);
+        if ((i == 4 || i == 6) && v->status[i - 1] == FRICREG_OK && n_allocs != before)
+            NOTE("solve_step on a kept solver made %ld allocations", n_allocs - before);
         if (status != FRICREG_OK && (info[0] != -7 || info[1] != -7 || f[0] != 0.5 * MUN5[0]))
             NOTE("solve_step: status %d but f or info written", status);
         if (status == FRICREG_OK) {
@@ -568,7 +582,7 @@ static int ctx_solve_step_call(void *obj, int i, struct view *v)
 }
 
 static const struct script ctx_solve_step = {
-    "ctx solve_step",    4,    ctx_solve_step_calls, 0,           0,        ctx_open,
+    "ctx solve_step",    7,    ctx_solve_step_calls, 0,           0,        ctx_open,
     ctx_solve_step_call, NULL, ctx_observe,          ctx_errcode, ctx_close};
 
 /* The step guard's eigenvalue problem: the paper's partition with a dense W (stiffness.c). A
