@@ -194,6 +194,50 @@ START_TEST(test_set_tolerances)
 }
 END_TEST
 
+/* Whether the structure's checks raise `code` now. */
+static int warns(fricreg_structure *s, int code)
+{
+    size_t n = fricreg_structure_warning_count(s);
+    for (size_t k = 0; k < n; k++) {
+        int got = 0;
+        ck_assert_int_eq(fricreg_structure_get_warning(s, k, &got, NULL, 0), FRICREG_OK);
+        if (got == code)
+            return 1;
+    }
+    return 0;
+}
+
+/* FRICREG_WARN_TOL_LOOSE: contact 1 reads v_1 - v_2 (sum_j |J_1j| = 2), so one atol with rtol
+ * holds it to 2 (atol + rtol): 4e-6 at atol = rtol = 1e-6, above 0.01 eps = 1e-7 (the run
+ * that left D_1 0.17 off), and 4e-8 at 1e-8, below; the rule (1e-3 eps) never warns; set
+ * tolerances of 1e-6 with rtol = 0 hold it to 2e-6. */
+START_TEST(test_loose_tolerances_warn)
+{
+    fricreg_structure *s = chain();
+    double zero[NDOF] = {0}, t = T_END / 4.0, atol[DIM];
+    ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_MSBDF, 1e-3, 1e-6, 1e-6, t),
+                     FRICREG_OK);
+    ck_assert(warns(s, FRICREG_WARN_TOL_LOOSE));
+    ck_assert_int_eq(fricreg_structure_set_initial(s, NDOF, zero, zero), FRICREG_OK);
+    ck_assert(!warns(s, FRICREG_WARN_TOL_LOOSE)); /* set_initial starts the judged run anew */
+    ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_MSBDF, 1e-3, 1e-8, 1e-8, t),
+                     FRICREG_OK);
+    ck_assert(!warns(s, FRICREG_WARN_TOL_LOOSE));
+    ck_assert_int_eq(fricreg_structure_set_initial(s, NDOF, zero, zero), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_MSBDF, 1e-3, 1e-2,
+                                               FRICREG_ATOL_FROM_EPS, t),
+                     FRICREG_OK);
+    ck_assert(!warns(s, FRICREG_WARN_TOL_LOOSE));
+    for (size_t k = 0; k < DIM; k++)
+        atol[k] = 1e-6;
+    ck_assert_int_eq(fricreg_structure_set_ode_abs_tolerances(s, DIM, atol), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_MSBDF, 1e-3, 0.0, 1.0, 2.0 * t),
+                     FRICREG_OK);
+    ck_assert(warns(s, FRICREG_WARN_TOL_LOOSE));
+    fricreg_structure_free(s);
+}
+END_TEST
+
 /* The companion of the error estimate runs the rule at its eps / 2 with tolerances / 16, as
  * fricreg_sim's (rule_scale): its levels are the closed form at eps / 2 scaled by 1 / 16 (its
  * cap rtol / 16), and its dissipation equals, bit for bit, a structure at eps / 2 run by hand
@@ -249,6 +293,7 @@ int main(void)
     tcase_add_test(tc, test_rule_values);
     tcase_add_test(tc, test_set_tolerances);
     tcase_add_test(tc, test_companion);
+    tcase_add_test(tc, test_loose_tolerances_warn);
     suite_add_tcase(suite, tc);
     SRunner *sr = srunner_create(suite);
     srunner_run_all(sr, CK_NORMAL);

@@ -184,6 +184,8 @@ struct fricreg_structure {
     double peak_speed;     /* the largest |zdot_i| = |(J v)_i| at a step's end */
     double max_dt;         /* the longest fixed step (run_ode's adaptive ones aside) */
     int64_t inexact_steps; /* steps of a scheme whose energy balance is not exact */
+    double ode_tol_level;  /* the loosest contact velocity tolerance of an adaptive run_ode
+                            * call, max_i sum_j |J_ij| (atol_j + rtol w_j) (0: none) */
 
     /* The largest |u_i| at the sampled times since set_initial (fricreg_structure_get_peak_
      * displacement): every fixed step's end, every run_ode call's end. [n] */
@@ -289,6 +291,7 @@ int fr_structure_guard(fricreg_structure *s, const struct fr_integrator *integ, 
  * (set_initial). */
 void fr_warn_track_step(fricreg_structure *s, double dt, int ode);
 void fr_warn_track_reset(fricreg_structure *s);
+void fr_warn_track_ode_tolerances(fricreg_structure *s, double rtol, double atol);
 /* The ground record's peak velocity max |integral of a_g dt| (trapezoidal; 0 without one). */
 double fr_ground_pgv(const fricreg_structure *s);
 

@@ -305,6 +305,7 @@ int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, d
     if (adaptive) { /* what fricreg_structure_get_ode_abs_tolerances reports */
         s->ode_rtol = rtol;
         s->ode_atol1 = atol;
+        fr_warn_track_ode_tolerances(s, rtol, atol);
     }
     memcpy(y, s->u->data, s->n * sizeof *y);
     memcpy(y + s->n, s->v->data, s->n * sizeof *y);

@@ -31,6 +31,10 @@
  * acceleration's period error (omega dt)^2/12 is then 3.3 %). */
 #define STEPS_PER_PERIOD 10.0
 #define NEWTON_MEAN_MAX 5.0
+/* An adaptive run_ode's contact velocity tolerance against eps, fricreg_sim's threshold
+ * (src/sim/warnings.c, docs/integrators.md "Warnings"): law (4) reads zdot_i within its band
+ * |zdot_i| < eps at a stick, and a level of 1e-2 eps already moved D by 1.2e-4 there. */
+#define TOL_PER_EPS 1e-2
 #define ENERGY_RTOL 1e-6
 
 void fr_warn_track_reset(fricreg_structure *s)
@@ -38,6 +42,7 @@ void fr_warn_track_reset(fricreg_structure *s)
     s->peak_speed = 0.0;
     s->max_dt = 0.0;
     s->inexact_steps = 0;
+    s->ode_tol_level = 0.0;
 }
 
 /* Average-acceleration Newmark: the one scheme whose discrete energy balance is exact. */
@@ -61,6 +66,41 @@ void fr_warn_track_step(fricreg_structure *s, double dt, int ode)
     s->max_dt = fmax(s->max_dt, dt);
     if (ode || !balance_exact(s) || s->el.crossed) /* lift-off: the normal kink within a step */
         s->inexact_steps++;
+}
+
+/* The level to which an adaptive run_ode call with (rtol, atol) holds the contacts'
+ * velocities, each velocity v_j to atol_j + rtol x 1 velocity unit (no relative part under
+ * the rule from eps), summed through J: max over contacts with mun_i > 0 of
+ * sum_j |J_ij| (atol_j + rtol w_j). The rule itself holds them to 1e-3 eps and is not
+ * judged. */
+void fr_warn_track_ode_tolerances(fricreg_structure *s, double rtol, double atol)
+{
+    if (s->ode_atol == NULL && atol == FRICREG_ATOL_FROM_EPS)
+        return;
+    const SuiteSparse_long *Jp = s->Jt->p, *Ji = s->Jt->i;
+    const double *Jx = s->Jt->x;
+    for (size_t i = 0; i < s->m; i++) {
+        if (s->mun[i] == 0.0)
+            continue; /* no friction there */
+        double level = 0.0;
+        for (SuiteSparse_long p = Jp[i]; p < Jp[i + 1]; p++) {
+            size_t j = s->n + (size_t)Ji[p]; /* v_j's component of y = (u, v, ...) */
+            double atol_j = s->ode_atol != NULL ? s->ode_atol[j] * s->tol_scale : atol;
+            level += fabs(Jx[p]) * (atol_j + rtol);
+        }
+        s->ode_tol_level = fmax(s->ode_tol_level, level);
+    }
+}
+
+static void check_tolerances(fricreg_structure *s)
+{
+    double eps = fr_ctx_eps(s->ctx);
+    if (s->ode_tol_level > TOL_PER_EPS * eps)
+        fr_warn(&s->warnings, FRICREG_WARN_TOL_LOOSE,
+                "an adaptive run_ode held a contact velocity to %.3g (sum_j |J_ij| (atol_j + "
+                "rtol x 1)), above 0.01 eps = %.3g: inside the band |zdot| < eps law (4)'s force "
+                "is then uncontrolled; take atol FRICREG_ATOL_FROM_EPS (fricreg-sim: no --atol)",
+                s->ode_tol_level, TOL_PER_EPS * eps);
 }
 
 /* The record's peak |a_g| and its peak velocity |integral of a_g| (trapezoidal from 0). */
@@ -219,6 +259,7 @@ size_t fricreg_structure_warning_count(fricreg_structure *s)
     check_dt(s, period);
     check_newton(s);
     check_energy(s);
+    check_tolerances(s);
     fr_estimate_check(s);
     return s->warnings.n;
 }
