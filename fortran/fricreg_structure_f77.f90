@@ -61,11 +61,14 @@
 !   FRSTPK(H, NDOF, PEAK, STAT)                  _get_peak_displacement
 !   FRSTPE(H, NDOF, ERR, STAT)                   _get_peak_displacement_error
 !   FRSTDE(H, M, ERR, STAT)                      _get_dissipation_error
+!   FRSTOD(H, INTEG, DT, RTOL, ATOL, TEND, STAT) _run_ode (ATOL = -1: tolerances from eps)
+!   FRSTOT(H, N, ATOL, STAT)                     _set_ode_abs_tolerances (N = 0 removes them)
+!   FRSTOG(H, N, ATOL, STAT)                     _get_ode_abs_tolerances
 !   FRSTER(H, CODE, MSG, STAT)                   _errcode, _errmsg
 !   FRCSTP(H, M, ZS, ZP, AP, W, WEFF, C, TOL, MAXIT, FLAGS, F, ITERS, CONV, STAT)
 !                                                fricreg_ctx_solve_step, on a context H of
 !                                                FRCTXC (the user's own Newmark)
-! The getters (FRSTG*, FRSTJS, FRSTS2, FRSTIS, FRSTNF, FRSTPK, FRSTPE, FRSTDE) read a const structure: C records no failure
+! The getters (FRSTG*, FRSTJS, FRSTS2, FRSTIS, FRSTNF, FRSTPK, FRSTPE, FRSTDE, FRSTOG) read a const structure: C records no failure
 ! of theirs, so FRSTER still shows the failure before (their STAT is the answer). So do the
 ! few refusals made here,
 ! before C is called, of counts that would wrap into size_t: FRSTCR's NDOF or M below 1
@@ -531,6 +534,58 @@ subroutine frstde(h, m, err, stat)
   stat = int(fricreg_structure_get_dissipation_error(fricreg_handle_to_ptr(h), &
                                                      int(max(m, 0), c_size_t), err))
 end subroutine frstde
+
+!> FRSTOD(H, INTEG, DT, RTOL, ATOL, TEND, STAT): integrate to TEND with GSL's stepper INTEG
+!> (FRICREG_INT_*): fixed steps DT where RTOL = ATOL = 0, else adaptive with DT the first step;
+!> ATOL = -1 (FRICREG_ATOL_FROM_EPS) with RTOL > 0 holds each velocity a contact reads to
+!> min(1E-3 EPS / MAX_I SUM_K |J_IK|, RTOL) absolutely (C's fricreg_structure_run_ode, its
+!> errors).
+subroutine frstod(h, integ, dt, rtol, atol, tend, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: integ
+  double precision, intent(in) :: dt, rtol, atol, tend
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_run_ode(fricreg_handle_to_ptr(h), int(integ, c_int), dt, rtol, &
+                                       atol, tend))
+end subroutine frstod
+
+!> FRSTOT(H, N, ATOL, STAT): absolute tolerances ATOL(N) per component of FRSTOD's state
+!> (U(NDOF), V(NDOF), the input work, the viscous and each contact's dissipation: N = 2 NDOF +
+!> 2 + M), each finite and > 0, used by every later adaptive FRSTOD in place of its ATOL; N = 0
+!> removes them (ATOL is then not read). C's fricreg_structure_set_ode_abs_tolerances.
+subroutine frstot(h, n, atol, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: n
+  double precision, intent(in) :: atol(*)
+  integer, intent(out) :: stat
+  if (n < 0) then
+    stat = FRICREG_ESIZE
+    return
+  end if
+  stat = int(fricreg_structure_set_ode_abs_tolerances(fricreg_handle_to_ptr(h), &
+                                                      int(n, c_size_t), atol))
+end subroutine frstot
+
+!> FRSTOG(H, N, ATOL, STAT): the absolute tolerances ATOL(N), N = 2 NDOF + 2 + M, of the last
+!> adaptive FRSTOD (those of FRSTOT, its one ATOL, or the rule from eps; zeros before any).
+!> C's fricreg_structure_get_ode_abs_tolerances; FRICREG_ESIZE for another N.
+subroutine frstog(h, n, atol, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: n
+  double precision, intent(inout) :: atol(*)
+  integer, intent(out) :: stat
+  stat = int(fricreg_structure_get_ode_abs_tolerances(fricreg_handle_to_ptr(h), &
+                                                      int(max(n, 0), c_size_t), atol))
+end subroutine frstog
 
 !> FRSTGT(H, WHICH, VALUE, STAT): one counter (FRICREG_SSTAT_*: steps, Newton iterations, ...)
 !> into INTEGER*8 VALUE.
