@@ -10,19 +10,19 @@
 
 #include <gsl/gsl_odeiv2.h>
 
-/* The driver gsl_odeiv2_driver_alloc_y_new(sys, T, hstart, epsabs, epsrel) would make (the
- * standard control on y with a_y = 1, a_dydt = 0), or NULL if any allocation failed, with
- * nothing left allocated. epsabs, epsrel >= 0. Only gsl_odeiv2_step_alloc's failure reaches
- * GSL's error handler (docs/reliability.md). Free with gsl_odeiv2_driver_free. */
+/* The driver gsl_odeiv2_driver_alloc_y_new(sys, T, hstart, epsabs, epsrel) would make, with
+ * fricreg's control (step_control.h: GSL's standard one on y, a_y = 1, a_dydt = 0, and for
+ * GSL's explicit Runge-Kutta steppers no growth of the step right after a rejection), or NULL
+ * if any allocation failed, with nothing left allocated. epsabs, epsrel >= 0. Only gsl_odeiv2_step_alloc's failure reaches GSL's error
+ * handler (docs/reliability.md). Free with gsl_odeiv2_driver_free. */
 gsl_odeiv2_driver *fr_ode_driver_alloc(const gsl_odeiv2_system *sys, const gsl_odeiv2_step_type *T,
                                        double hstart, double epsabs, double epsrel);
 
-/* fr_ode_driver_alloc with tolerances per component: the control is GSL's standard one on y
- * (a_y = 1, a_dydt = 0) with the level atol[i] + w[i] epsrel |y_i| in component i, the
- * per-component tolerances of SUNDIALS' CVodeSVtolerances (GSL's gsl_odeiv2_control_scaled_new
- * with eps_abs = 1 is the same rule for w = 1, but allocates unchecked). atol[dim] > 0 and
- * rel_weight[dim] >= 0 (NULL: every w[i] = 1), copied; epsrel >= 0. NULL if any allocation
- * failed, nothing left allocated. */
+/* fr_ode_driver_alloc with tolerances per component: the level atol[i] + w[i] epsrel |y_i| in
+ * component i, the per-component tolerances of SUNDIALS' CVodeSVtolerances (GSL's
+ * gsl_odeiv2_control_scaled_new with eps_abs = 1 is the same rule for w = 1, but allocates
+ * unchecked). atol[dim] > 0 and rel_weight[dim] >= 0 (NULL: every w[i] = 1), copied;
+ * epsrel >= 0. NULL if any allocation failed, nothing left allocated. */
 gsl_odeiv2_driver *fr_ode_driver_alloc_vector(const gsl_odeiv2_system *sys,
                                               const gsl_odeiv2_step_type *T, double hstart,
                                               const double atol[], const double rel_weight[],
