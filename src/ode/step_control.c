@@ -4,7 +4,6 @@
  * no growth of the step after a rejected one. */
 #include <math.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_machine.h>
