@@ -13,8 +13,9 @@
 /* The driver gsl_odeiv2_driver_alloc_y_new(sys, T, hstart, epsabs, epsrel) would make, with
  * fricreg's control (step_control.h: GSL's standard one on y, a_y = 1, a_dydt = 0, and for
  * GSL's explicit Runge-Kutta steppers no growth of the step right after a rejection), or NULL
- * if any allocation failed, with nothing left allocated. epsabs, epsrel >= 0. Only gsl_odeiv2_step_alloc's failure reaches GSL's error
- * handler (docs/reliability.md). Free with gsl_odeiv2_driver_free. */
+ * if any allocation failed, with nothing left allocated. epsabs, epsrel >= 0. Only
+ * gsl_odeiv2_step_alloc's failure reaches GSL's error handler (docs/reliability.md). Free with
+ * gsl_odeiv2_driver_free. */
 gsl_odeiv2_driver *fr_ode_driver_alloc(const gsl_odeiv2_system *sys, const gsl_odeiv2_step_type *T,
                                        double hstart, double epsabs, double epsrel);
 

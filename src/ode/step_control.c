@@ -18,7 +18,7 @@
 struct step_control {
     double eps_rel;
     size_t dim;
-    double *atol;          /* [2 dim]: atol_i, then the weight w_i of eps_rel in component i */
+    double *levels;        /* [2 dim]: atol_i, then the weight w_i of eps_rel in component i */
     int hold_after_reject; /* the step after a rejected one does not grow */
     int after_reject;      /* the last step the control judged was rejected */
 };
@@ -42,8 +42,8 @@ static double error_ratio(const struct step_control *c, size_t dim, const double
 {
     double rmax = GSL_DBL_MIN;
     for (size_t i = 0; i < dim && i < c->dim; i++)
-        rmax = fmax(rmax,
-                    fabs(yerr[i]) / (c->atol[i] + c->atol[c->dim + i] * c->eps_rel * fabs(y[i])));
+        rmax = fmax(rmax, fabs(yerr[i]) /
+                              (c->levels[i] + c->levels[c->dim + i] * c->eps_rel * fabs(y[i])));
     return rmax;
 }
 
@@ -73,7 +73,7 @@ static int control_errlevel(void *vstate, const double y, const double dydt, con
     const struct step_control *c = vstate;
     (void)dydt, (void)h;
     size_t i = ind < c->dim ? ind : c->dim - 1;
-    *errlev = c->atol[i] + c->atol[c->dim + i] * c->eps_rel * fabs(y);
+    *errlev = c->levels[i] + c->levels[c->dim + i] * c->eps_rel * fabs(y);
     return GSL_SUCCESS;
 }
 
@@ -87,7 +87,7 @@ static void control_free(void *vstate)
 {
     struct step_control *c = vstate;
     if (c != NULL)
-        free(c->atol);
+        free(c->levels);
     free(c);
 }
 
@@ -115,7 +115,7 @@ gsl_odeiv2_control *fr_step_control_new(size_t dim, const double atol[], double 
     }
     *state = (struct step_control){.eps_rel = epsrel,
                                    .dim = dim,
-                                   .atol = levels,
+                                   .levels = levels,
                                    .hold_after_reject = hold_after_reject};
     *c = (gsl_odeiv2_control){.type = &control_type, .state = state};
     return c;
