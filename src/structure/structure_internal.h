@@ -185,7 +185,7 @@ struct fricreg_structure {
     double max_dt;         /* the longest fixed step (run_ode's adaptive ones aside) */
     int64_t inexact_steps; /* steps of a scheme whose energy balance is not exact */
     double ode_tol_level;  /* the loosest contact velocity tolerance of an adaptive run_ode
-                            * call, max_i sum_j |J_ij| (atol_j + rtol w_j) (0: none) */
+                            * call, max_i sum_j |J_ij| (atol_j + rtol) (0: none) */
 
     /* The largest |u_i| at the sampled times since set_initial (fricreg_structure_get_peak_
      * displacement): every fixed step's end, every run_ode call's end. [n] */

@@ -69,10 +69,10 @@ void fr_warn_track_step(fricreg_structure *s, double dt, int ode)
 }
 
 /* The level to which an adaptive run_ode call with (rtol, atol) holds the contacts'
- * velocities, each velocity v_j to atol_j + rtol x 1 velocity unit (no relative part under
- * the rule from eps), summed through J: max over contacts with mun_i > 0 of
- * sum_j |J_ij| (atol_j + rtol w_j). The rule itself holds them to 1e-3 eps and is not
- * judged. */
+ * velocities, each velocity v_j to atol_j + rtol x 1 velocity unit (the per-component atol
+ * of set_ode_abs_tolerances, or the call's one atol), summed through J: max over contacts
+ * with mun_i > 0 of sum_j |J_ij| (atol_j + rtol), as include/fricreg_structure.h documents
+ * FRICREG_WARN_TOL_LOOSE. The rule from eps holds them to 1e-3 eps and is not judged. */
 void fr_warn_track_ode_tolerances(fricreg_structure *s, double rtol, double atol)
 {
     if (s->ode_atol == NULL && atol == FRICREG_ATOL_FROM_EPS)
