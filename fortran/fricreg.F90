@@ -16,7 +16,8 @@
 !   - every C function by its C name, with an interface generated from its prototype
 !     (modules fricreg_c and fricreg_sim_c: scalars by value, arrays dimension(*) with the
 !     count passed, handles as type(c_ptr), omitted pointer arguments passed as NULL), the
-!     abstract interfaces fricreg_sim_observer and fricreg_structure_observer, and
+!     abstract interfaces fricreg_sim_observer, fricreg_structure_observer and
+!     fricreg_warning_handler, and
 !     fricreg_c_string, fricreg_ptr_to_handle,
 !     fricreg_handle_to_ptr;
 !   - the iso_c_binding names used with them: c_int, c_double, c_size_t, c_int64_t,
@@ -75,7 +76,7 @@ module fricreg
   public :: fricreg_aft_workspace
 #ifdef FRICREG_HAVE_SIM
   include 'fricreg_drivers_h_public.inc'
-  public :: fricreg_sim_observer, fricreg_structure_observer
+  public :: fricreg_sim_observer, fricreg_structure_observer, fricreg_warning_handler
   public :: fricreg_simulation, fricreg_exact_solution, fricreg_structure, &
             fricreg_integrator_string, fricreg_integrator_id
   public :: fricreg_hb_driver
@@ -272,6 +273,7 @@ module fricreg
     procedure :: set_partition => sim_set_partition
     procedure :: set_integrator => sim_set_integrator
     procedure :: set_observer => sim_set_observer
+    procedure :: set_warning_handler => sim_set_warning_handler
     procedure :: set_max_steps => sim_set_max_steps
     procedure :: set_kink_location => sim_set_kink_location
     procedure :: set_error_estimate => sim_set_error_estimate
@@ -353,6 +355,7 @@ module fricreg
     procedure :: set_central_difference => struct_set_central_difference
     procedure :: set_newton => struct_set_newton
     procedure :: set_observer => struct_set_observer
+    procedure :: set_warning_handler => struct_set_warning_handler
     procedure :: set_max_steps => struct_set_max_steps
     procedure :: step => struct_step
     procedure :: run => struct_run
@@ -1957,6 +1960,25 @@ contains
     if (status == FRICREG_OK) status = self%record(fricreg_sim_set_observer(self%ptr, fn, u))
   end function sim_set_observer
 
+  !> Route the simulation's warnings to a bind(C) subroutine with interface
+  !> fricreg_warning_handler, called once per warning at the end of every run
+  !> (fricreg_sim_set_warning_handler); user is passed back to it. With no handler, removes it.
+  function sim_set_warning_handler(self, fricreg_handler, user) result(status)
+    class(fricreg_simulation), intent(inout) :: self
+    procedure(fricreg_warning_handler), optional :: fricreg_handler
+    type(c_ptr), intent(in), optional :: user
+    integer(c_int) :: status
+    type(c_funptr) :: fn
+    type(c_ptr) :: u
+    fn = c_null_funptr
+    u = c_null_ptr
+    if (present(fricreg_handler)) fn = c_funloc(fricreg_handler)
+    if (present(user)) u = user
+    status = self%ready('set_warning_handler', 'simulation')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_sim_set_warning_handler(self%ptr, fn, u))
+  end function sim_set_warning_handler
+
   !> Bound the adaptive steps accepted in one forcing cycle (0: no bound; by default 10^4 for
   !> the laws that jump, 10^6 otherwise): a run that needs more returns FRICREG_EWORK
   !> (fricreg_sim_set_max_steps).
@@ -3011,6 +3033,26 @@ contains
     if (status == FRICREG_OK) &
       status = self%record(fricreg_structure_set_observer(self%ptr, fn, u))
   end function struct_set_observer
+
+  !> Route the structure's warnings to a bind(C) subroutine with interface
+  !> fricreg_warning_handler, called once per warning at the end of run and run_ode, and by
+  !> warning_count for new ones (fricreg_structure_set_warning_handler); user is passed back
+  !> to it. With no handler, removes it.
+  function struct_set_warning_handler(self, fricreg_handler, user) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    procedure(fricreg_warning_handler), optional :: fricreg_handler
+    type(c_ptr), intent(in), optional :: user
+    integer(c_int) :: status
+    type(c_funptr) :: fn
+    type(c_ptr) :: u
+    fn = c_null_funptr
+    u = c_null_ptr
+    if (present(fricreg_handler)) fn = c_funloc(fricreg_handler)
+    if (present(user)) u = user
+    status = self%ready('set_warning_handler', 'structure')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_structure_set_warning_handler(self%ptr, fn, u))
+  end function struct_set_warning_handler
 
   !> Bound the adaptive steps accepted by one run_ode call (0: no bound; by default 10^4 for the
   !> laws that jump, 10^6 otherwise): a call that needs more returns FRICREG_EWORK

@@ -12,15 +12,15 @@
 ! include/fricreg_exact.h apply unchanged. The idiomatic layer is types fricreg_simulation and
 ! fricreg_exact_solution in module fricreg. Built only with the drivers (FRICREG_DRIVERS).
 !
-! Public: the generated interfaces and the abstract interfaces fricreg_sim_observer and
-! fricreg_structure_observer.
+! Public: the generated interfaces and the abstract interfaces fricreg_sim_observer,
+! fricreg_structure_observer and fricreg_warning_handler.
 module fricreg_sim_c
   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_int64_t, c_ptr, &
                                          c_funptr, c_char
   implicit none
   private
   include 'fricreg_drivers_h_public.inc'
-  public :: fricreg_sim_observer, fricreg_structure_observer
+  public :: fricreg_sim_observer, fricreg_structure_observer, fricreg_warning_handler
 
   abstract interface
     !> An observer (fricreg_sim_observer): called after every accepted step, and once at t = 0,
@@ -51,6 +51,17 @@ module fricreg_sim_c
       real(c_double), intent(in) :: f(m)
       integer(c_int) :: stop_run
     end function
+    !> A warning handler (fricreg_warning_handler of fricreg.h): called once for each warning
+    !> of a run, with its code (FRICREG_WARN_*), its message as a C string (fricreg_c_string
+    !> converts it; valid during the call only) and user as given to set_warning_handler.
+    !> Write it as a bind(C) subroutine and pass it to the simulation's or the structure's
+    !> set_warning_handler.
+    subroutine fricreg_warning_handler(code, message, user) bind(C)
+      import :: c_int, c_ptr
+      integer(c_int), value :: code
+      type(c_ptr), value :: message
+      type(c_ptr), value :: user
+    end subroutine
   end interface
 
   interface

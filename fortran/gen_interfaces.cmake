@@ -48,9 +48,10 @@ function(read_header path out_var)
   set(${out_var} "${text}" PARENT_SCOPE)
 endfunction()
 
-# Callback types of any of the headers, `typedef R (*fricreg_name)(...)`: type(c_funptr).
+# Callback types of any of the headers, and of fricreg.h which every header includes (its
+# fricreg_warning_handler), `typedef R (*fricreg_name)(...)`: type(c_funptr).
 set(callbacks "")
-foreach(header IN LISTS HEADERS)
+foreach(header IN LISTS HEADERS ITEMS "${CMAKE_CURRENT_LIST_DIR}/../include/fricreg.h")
   read_header("${header}" text)
   string(REGEX MATCHALL "typedef [^#(]*\\( ?\\* ?fricreg_[a-z0-9_]+ ?\\)" typedefs "${text}")
   foreach(typedef IN LISTS typedefs)

@@ -113,6 +113,16 @@ enum fricreg_warning {
  *  gives "unknown". Thread safe. Since 1.6 (FRICREG_1.6). */
 FRICREG_API const char *fricreg_warning_name(int code);
 
+/** A warning handler (fricreg_sim_set_warning_handler, fricreg_structure_set_warning_handler),
+ *  as SUNDIALS' error handler functions: called by the object once for each warning its
+ *  checks raise (code of enum fricreg_warning; message the same English line that
+ *  *_get_warning gives, NUL-terminated, valid during the call only), with the user_data given
+ *  at installation. It runs on the calling thread, inside the fricreg call that judged the
+ *  checks; it may call the object's getters (a nested *_warning_count returns the list as it
+ *  is, judging and delivering nothing), but must not run, step, set or free the object.
+ *  Since 1.7 (FRICREG_1.7). */
+typedef void (*fricreg_warning_handler)(int code, const char *message, void *user_data);
+
 /* ---- Compressed sparse matrices ---------------------------------------------------------- */
 
 /** How a compressed sparse matrix is given to the _csr and _csc setters (since 1.6). Values

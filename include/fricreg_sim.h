@@ -606,6 +606,24 @@ FRICREG_API int fricreg_sim_get_warning(const fricreg_sim *sim, size_t k, int *c
  *  warning_count call. Since 1.6 (FRICREG_1.6). */
 FRICREG_API const char *fricreg_sim_warning_message(const fricreg_sim *sim, size_t k);
 
+/** Route the simulation's warnings to fn (fricreg_warning_handler of fricreg.h), as SUNDIALS'
+ *  CVodeSetErrHandlerFn: at the end of every fricreg_sim_run, _run_cycles, _run_extrapolated
+ *  and _run_extrapolated_window, failed or not, the checks of fricreg_sim_warning_count are
+ *  judged and fn is called once for each warning raised that it has not been given since the
+ *  run began; a later fricreg_sim_warning_count calls it for new ones only. A caller that
+ *  prints every message from fn sees what `fricreg-sim` prints. By default there is no handler
+ *  and the library says nothing: the warnings are read back with fricreg_sim_warning_count.
+ *
+ *  fn          the handler, or NULL to remove it.
+ *  user_data   passed back to fn unchanged; may be NULL.
+ *
+ *  The handler is the simulation's: runs on other simulations (the extrapolation's levels, the
+ *  error estimate's companion) do not call it. Returns FRICREG_OK; FRICREG_ENULL if sim is
+ *  NULL; FRICREG_EINVAL if called from the observer or the handler during a run (nothing
+ *  changed). Since 1.7 (FRICREG_1.7). */
+FRICREG_API int fricreg_sim_set_warning_handler(fricreg_sim *sim, fricreg_warning_handler fn,
+                                                void *user_data);
+
 /** Returns the status of the last failed call (FRICREG_OK if none or sim NULL). The getters, which take
  *  a const simulation, return their status without recording it. */
 FRICREG_API int fricreg_sim_errcode(const fricreg_sim *sim);

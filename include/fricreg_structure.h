@@ -970,6 +970,25 @@ FRICREG_API int fricreg_structure_get_warning(const fricreg_structure *s, size_t
  *  by s, valid until its next warning_count call. Since 1.6 (FRICREG_1.6). */
 FRICREG_API const char *fricreg_structure_warning_message(const fricreg_structure *s, size_t k);
 
+/** Route the structure's warnings to fn (fricreg_warning_handler of fricreg.h), as SUNDIALS'
+ *  CVodeSetErrHandlerFn: at the end of every fricreg_structure_run and _run_ode, failed or
+ *  not, the checks of fricreg_structure_warning_count are judged and fn is called once for
+ *  each warning raised that it has not been given since the last fricreg_structure_set_initial
+ *  (or since fn was installed). fricreg_structure_step judges nothing, since its callers step
+ *  in loops of their own: such a loop calls fricreg_structure_warning_count when it wants its
+ *  warnings judged (e.g. at its end), and fn receives the new ones. A caller that prints
+ *  every message from fn sees what `fricreg-sim structure` prints. By default there is no
+ *  handler and the library says nothing.
+ *
+ *  fn          the handler, or NULL to remove it.
+ *  user_data   passed back to fn unchanged; may be NULL.
+ *
+ *  The error estimate's companion structure does not call it. Returns FRICREG_OK;
+ *  FRICREG_ENULL if s is NULL; FRICREG_EINVAL if called from the observer or the handler during
+ *  a run (nothing changed). Since 1.7 (FRICREG_1.7). */
+FRICREG_API int fricreg_structure_set_warning_handler(fricreg_structure *s,
+                                                      fricreg_warning_handler fn, void *user_data);
+
 /* ---- Your own implicit integrator: the contact-space step on a context --------------------- */
 
 /** Flags of fricreg_ctx_solve_step (values fixed forever). */

@@ -521,6 +521,10 @@ static int w_sim_set_observer(void)
 {
     return fricreg_sim_set_observer(SIM(), NULL, NULL);
 }
+static int w_sim_set_warning_handler(void)
+{
+    return fricreg_sim_set_warning_handler(SIM(), NULL, NULL);
+}
 static int w_sim_run(void)
 {
     return fricreg_sim_run(SIM(), D(0, 1.0));
@@ -746,6 +750,10 @@ static int w_st_get_forces(void)
 static int w_st_get_dissipation(void)
 {
     return fricreg_structure_get_dissipation(ST(), Z(0, 1), OUTD(1));
+}
+static int w_st_set_warning_handler(void)
+{
+    return fricreg_structure_set_warning_handler(ST(), NULL, NULL);
 }
 static int w_st_set_error_estimate(void)
 {
@@ -1554,6 +1562,7 @@ static const struct row rows[] = {
      SIM_REC,
      {HANDLE, INT(0, "iiii"), DBL(0, "nnfiioo"), DBL(1, "nnfiooo"), DBL(2, "nnfiooo")}},
     {"fricreg_sim_set_observer", w_sim_set_observer, "0i", SIM_REC, {HANDLE}},
+    {"fricreg_sim_set_warning_handler", w_sim_set_warning_handler, "0i", SIM_REC, {HANDLE}},
     {"fricreg_sim_set_abs_tolerances",
      w_sim_set_abs_tolerances,
      "0sinm",
@@ -1700,6 +1709,7 @@ static const struct row rows[] = {
      ST_REC,
      {HANDLE}},
     {"fricreg_structure_set_max_steps", w_st_set_max_steps, "0i", ST_REC, {HANDLE, INT(0, "iooi")}},
+    {"fricreg_structure_set_warning_handler", w_st_set_warning_handler, "0i", ST_REC, {HANDLE}},
     {"fricreg_structure_set_newton",
      w_st_set_newton,
      "0ni",

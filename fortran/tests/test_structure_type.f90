@@ -10,6 +10,7 @@
 !   - its failures: sizes checked in Fortran (FRICREG_ESIZE naming the array, nothing
 !     written), an object not created (FRICREG_ENULL), C's own refusals with C's message;
 !   - its warnings (warning_count, get_warning): a ground record typed in g raises ground_peak;
+!     a handler (set_warning_handler, a bind(C) subroutine) hears it once, message and all;
 !   - an observer (a bind(C) function with interface fricreg_structure_observer) that stops
 !     the run after 10 of its 100 steps, and the bound on run_ode's adaptive steps;
 !   - the error estimate (set_error_estimate, get_peak_displacement, get_peak_displacement_error,
@@ -19,6 +20,8 @@ module step_watch
   implicit none
   real(c_double) :: watched_t = -1.0_c_double
   integer(c_size_t) :: watched_ndof = 0, watched_m = 0
+  integer(c_int) :: heard_code = 0
+  character(len=:), allocatable :: heard_message
 
 contains
 
@@ -41,6 +44,21 @@ contains
     stop_run = merge(1_c_int, 0_c_int, calls >= 10)
   end function stop_after_ten
 
+  !> A fricreg_warning_handler: counts its calls in the integer user points to, and keeps the
+  !> code and message of ground_peak.
+  subroutine hear_warning(code, message, user) bind(C)
+    use fricreg, only: fricreg_c_string, FRICREG_WARN_GROUND_PEAK
+    integer(c_int), value :: code
+    type(c_ptr), value :: message
+    type(c_ptr), value :: user
+    integer(c_int), pointer :: heard
+    call c_f_pointer(user, heard)
+    heard = heard + 1
+    if (code /= FRICREG_WARN_GROUND_PEAK) return
+    heard_code = code
+    heard_message = fricreg_c_string(message)
+  end subroutine hear_warning
+
 end module step_watch
 
 program test_structure_type
@@ -54,7 +72,7 @@ program test_structure_type
   real(c_double), parameter :: a0 = 0.0731_c_double, a1 = 0.00213_c_double
   real(c_double), parameter :: dt = 0.0137_c_double, t_end = 2.385_c_double
   integer(c_int64_t) :: count
-  integer(c_int), target :: calls
+  integer(c_int), target :: calls, heard
   real(c_double) :: t_now
   integer :: i, nwarn
   integer(c_int) :: wcode
@@ -138,7 +156,15 @@ program test_structure_type
   ! ---- Warnings: a ground record typed in g (peak 0.2457, below 0.05 g = 0.49 m/s^2) --------
   call check_status(st%set_ground_accel([0.2457_c_double, 0.2457_c_double], 0.01_c_double), &
                     FRICREG_OK, 'a ground record in g')
+  heard = 0
+  call check_status(st%set_warning_handler(hear_warning, c_loc(heard)), FRICREG_OK, &
+                    'set_warning_handler')
   nwarn = st%warning_count()
+  call check(heard == nwarn, 'the handler hears every warning judged')
+  call check(heard_code == FRICREG_WARN_GROUND_PEAK .and. &
+             index(heard_message, '0.2457 m/s^2') > 0, 'it hears ground_peak: ' // heard_message)
+  call check(st%warning_count() == nwarn .and. heard == nwarn, 'once')
+  call check_status(st%set_warning_handler(), FRICREG_OK, 'set_warning_handler(): removed')
   call check(nwarn >= 1, 'the record in g raises a warning')
   found = .false.
   do i = 1, nwarn
@@ -151,7 +177,7 @@ program test_structure_type
   call check_status(st%get_warning(0, wcode, wmsg), FRICREG_EINVAL, 'get_warning(0)')
   call check(wcode == FRICREG_WARN_NONE .and. len(wmsg) == 0, 'no warning 0')
   call check_status(st%get_warning(nwarn + 1, wcode, wmsg), FRICREG_EINVAL, 'beyond the count')
-  deallocate (wmsg) ! a main program's allocatable outlives it: released by hand (LeakSanitizer)
+  deallocate (wmsg, heard_message) ! they outlive the program: released by hand (LeakSanitizer)
 
   call check_status(st%create(3, 2), FRICREG_OK, 'create 3, 2 (replaces the first)')
   call check(st%ndof() == 3 .and. st%ncontacts() == 2, 'ndof 3, ncontacts 2')

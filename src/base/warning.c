@@ -34,6 +34,32 @@ void fr_warnings_clear(struct fr_warnings *list)
     list->n = 0;
 }
 
+void fr_warnings_set_handler(struct fr_warnings *list, fr_warning_handler fn, void *data)
+{
+    list->handler = fn;
+    list->handler_data = data;
+    list->delivered = 0;
+}
+
+void fr_warnings_forget_delivered(struct fr_warnings *list)
+{
+    list->delivered = 0;
+}
+
+void fr_warnings_deliver(struct fr_warnings *list)
+{
+    if (list->handler == NULL)
+        return;
+    for (size_t k = 0; k < list->n; k++) {
+        int code = list->w[k].code; /* enum fricreg_warning: 0 .. FR_WARN_MAX - 1 */
+        unsigned bit = code >= 0 && code < 32 ? 1u << code : 0u;
+        if (list->delivered & bit)
+            continue;
+        list->delivered |= bit;
+        list->handler(code, list->w[k].msg, list->handler_data);
+    }
+}
+
 void fr_warn(struct fr_warnings *list, int code, const char *fmt, ...)
 {
     for (size_t k = 0; k < list->n; k++)

@@ -274,7 +274,11 @@ int fricreg_sim_run_extrapolated_window(fricreg_sim *sim, double t_end, int leve
     if (status == FRICREG_OK && window < 0)
         status = fr_fail(sim, FRICREG_EINVAL,
                          "run_extrapolated_window: window = %d cycles must be >= 0", window);
-    return status == FRICREG_OK ? run_extrapolated(sim, t_end, levels, order, window) : status;
+    if (status != FRICREG_OK)
+        return status;
+    status = run_extrapolated(sim, t_end, levels, order, window);
+    fr_sim_judge_for_handler(sim); /* the estimate's warnings, after the levels */
+    return status;
 }
 
 int fricreg_sim_get_extrapolation(const fricreg_sim *sim, int which, double *value)

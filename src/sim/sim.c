@@ -120,7 +120,9 @@ static int reject_param(fricreg_sim *sim, int param, double value, const struct 
  * stepping: refused, and the run goes on. `who` names the call. */
 static int refuse_during_run(fricreg_sim *sim, const char *who)
 {
-    return fr_fail(sim, FRICREG_EINVAL, "%s: not allowed during a run (called from the observer)",
+    return fr_fail(sim, FRICREG_EINVAL,
+                   "%s: not allowed during a run (called from the observer or the warning "
+                   "handler)",
                    who);
 }
 
@@ -716,12 +718,23 @@ static const gsl_odeiv2_step_type *run_stepper(const fricreg_sim *sim,
     return fr_integrator_stepper(integ, adaptive(sim));
 }
 
+static int run(fricreg_sim *sim, double t_end);
+
+/* A run's warnings go to the handler once each, at the end, whether or not it failed. */
 int fricreg_sim_run(fricreg_sim *sim, double t_end)
 {
     if (sim == NULL)
         return FRICREG_ENULL;
     if (sim->running)
         return refuse_during_run(sim, "run");
+    fr_warnings_forget_delivered(&sim->warnings);
+    int status = run(sim, t_end);
+    fr_sim_judge_for_handler(sim);
+    return status;
+}
+
+static int run(fricreg_sim *sim, double t_end)
+{
     if (!isfinite(t_end))
         return fr_fail(sim, FRICREG_ENONFINITE, "run: t_end is not finite");
     const struct fr_integrator *integ = fr_integrator_find(sim->integrator);

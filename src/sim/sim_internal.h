@@ -133,4 +133,8 @@ void fr_sim_error_estimate(fricreg_sim *sim);
 double fr_sim_rule_atol_v(const fricreg_sim *sim, double eps);
 void fr_sim_check_estimate(fricreg_sim *sim);
 
+/* With a warning handler installed, judges the checks now (fricreg_sim_warning_count), which
+ * hands the handler the warnings it has not had since the run began (warnings.c). */
+void fr_sim_judge_for_handler(fricreg_sim *sim);
+
 #endif

@@ -50,11 +50,32 @@ size_t fricreg_sim_warning_count(fricreg_sim *sim)
     if (sim == NULL)
         return 0;
     if (sim->running)
-        return sim->warnings.n; /* from the observer: the list as last judged */
+        return sim->warnings.n; /* from the observer or the handler: the list as last judged */
     fr_warnings_clear(&sim->warnings);
     check_tolerances(sim);
     fr_sim_check_estimate(sim);
+    sim->running = 1; /* the handler may read, not change, the simulation */
+    fr_warnings_deliver(&sim->warnings);
+    sim->running = 0;
     return sim->warnings.n;
+}
+
+int fricreg_sim_set_warning_handler(fricreg_sim *sim, fricreg_warning_handler fn, void *user_data)
+{
+    if (sim == NULL)
+        return FRICREG_ENULL;
+    if (sim->running)
+        return fr_fail(sim, FRICREG_EINVAL,
+                       "set_warning_handler: not allowed during a run "
+                       "(called from the observer or the warning handler)");
+    fr_warnings_set_handler(&sim->warnings, fn, user_data);
+    return FRICREG_OK;
+}
+
+void fr_sim_judge_for_handler(fricreg_sim *sim)
+{
+    if (sim->warnings.handler != NULL)
+        fricreg_sim_warning_count(sim);
 }
 
 const char *fricreg_sim_warning_message(const fricreg_sim *sim, size_t k)

@@ -190,12 +190,22 @@ int fricreg_structure_step(fricreg_structure *s, double dt)
     return status;
 }
 
+static int run(fricreg_structure *s, double dt, double t_end);
+
+/* The run's warnings go to the handler at its end, whether or not it failed. */
 int fricreg_structure_run(fricreg_structure *s, double dt, double t_end)
 {
     if (s == NULL)
         return FRICREG_ENULL;
     if (s->running)
         return fr_structure_busy(s, "run");
+    int status = run(s, dt, t_end);
+    fr_structure_judge_for_handler(s);
+    return status;
+}
+
+static int run(fricreg_structure *s, double dt, double t_end)
+{
     int status = check_dt(s, "run", dt);
     if (status != FRICREG_OK)
         return status;

@@ -125,7 +125,9 @@ int fricreg_structure_create(size_t ndof, size_t m, fricreg_structure **out)
 
 int fr_structure_busy(fricreg_structure *s, const char *who)
 {
-    return fr_fail(s, FRICREG_EINVAL, "%s: not allowed during a run (called from the observer)",
+    return fr_fail(s, FRICREG_EINVAL,
+                   "%s: not allowed during a run (called from the observer or the warning "
+                   "handler)",
                    who);
 }
 
@@ -347,6 +349,7 @@ int fricreg_structure_set_initial(fricreg_structure *s, size_t ndof, const doubl
     fr_energy_reset(s);
     memset(s->stats, 0, sizeof s->stats);
     fr_warn_track_reset(s);
+    fr_warnings_forget_delivered(&s->warnings); /* a new run: its warnings are news */
     for (size_t i = 0; i < ndof; i++)
         s->peak[i] = fabs(u0[i]);
     fr_estimate_discard(s); /* a new run: a new companion at its first step */

@@ -214,6 +214,10 @@ void fr_ode_tolerances(const fricreg_structure *s, double rtol, double atol, dou
 /* structure.c */
 /* The refusal of a call `who` made from the observer during a run: FRICREG_EINVAL, recorded. */
 int fr_structure_busy(fricreg_structure *s, const char *who);
+
+/* With a warning handler installed, judges the checks now (fricreg_structure_warning_count),
+ * which hands the handler the warnings it has not had since set_initial (warnings.c). */
+void fr_structure_judge_for_handler(fricreg_structure *s);
 double fr_record_at(const struct fr_record *rec, double t);
 void fr_structure_effective_load(const fricreg_structure *s, double t, gsl_vector *ptil);
 

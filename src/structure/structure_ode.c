@@ -195,6 +195,10 @@ static int integrate(fricreg_structure *s, struct ode_run *run, gsl_odeiv2_drive
     return FRICREG_OK;
 }
 
+static int run_ode(fricreg_structure *s, int integrator, double dt, double rtol, double atol,
+                   double t_end);
+
+/* The run's warnings go to the handler at its end, whether or not it failed. */
 int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, double rtol,
                               double atol, double t_end)
 {
@@ -202,6 +206,14 @@ int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, d
         return FRICREG_ENULL;
     if (s->running)
         return fr_structure_busy(s, "run_ode");
+    int status = run_ode(s, integrator, dt, rtol, atol, t_end);
+    fr_structure_judge_for_handler(s);
+    return status;
+}
+
+static int run_ode(fricreg_structure *s, int integrator, double dt, double rtol, double atol,
+                   double t_end)
+{
     const struct fr_integrator *integ = fr_integrator_find(integrator);
     if (integ == NULL)
         return fr_fail(s, FRICREG_EINVAL, "run_ode: unknown integrator %d", integrator);

@@ -250,7 +250,7 @@ size_t fricreg_structure_warning_count(fricreg_structure *s)
     if (s == NULL)
         return 0;
     if (s->running)
-        return s->warnings.n; /* from the observer: the list as last judged */
+        return s->warnings.n; /* from the observer or the handler: the list as last judged */
     fr_warnings_clear(&s->warnings);
     double period = fundamental_period(s);
     check_ground(s);
@@ -261,7 +261,27 @@ size_t fricreg_structure_warning_count(fricreg_structure *s)
     check_energy(s);
     check_tolerances(s);
     fr_estimate_check(s);
+    s->running = 1; /* the handler may read, not change, the structure */
+    fr_warnings_deliver(&s->warnings);
+    s->running = 0;
     return s->warnings.n;
+}
+
+int fricreg_structure_set_warning_handler(fricreg_structure *s, fricreg_warning_handler fn,
+                                          void *user_data)
+{
+    if (s == NULL)
+        return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, "set_warning_handler");
+    fr_warnings_set_handler(&s->warnings, fn, user_data);
+    return FRICREG_OK;
+}
+
+void fr_structure_judge_for_handler(fricreg_structure *s)
+{
+    if (s->warnings.handler != NULL)
+        fricreg_structure_warning_count(s);
 }
 
 const char *fricreg_structure_warning_message(const fricreg_structure *s, size_t k)
