@@ -93,7 +93,7 @@ enum fricreg_warning {
     FRICREG_WARN_EPS_SMALL = 2,       /**< eps below 1e-9 x the ground's peak velocity */
     FRICREG_WARN_EPS_SPEED = 3,       /**< no contact slid faster than 10 eps in the run */
     FRICREG_WARN_GROUND_PEAK = 4,     /**< ground record's peak outside 0.05 g .. 5 g */
-    FRICREG_WARN_BOUND_SCALE = 5,     /**< mun_i W_ii outside 1e-3 g .. 10 g */
+    FRICREG_WARN_BOUND_SCALE = 5,     /**< sum of mun_i outside 1e-3 .. 10 x the weight */
     FRICREG_WARN_DT_COARSE = 6,       /**< dt above a tenth of the fundamental period */
     FRICREG_WARN_NEWTON_FAILURES = 7, /**< steps whose Newton iteration did not converge */
     FRICREG_WARN_NEWTON_SLOW = 8,     /**< more than 5 Newton iterations per step on average */
@@ -104,7 +104,10 @@ enum fricreg_warning {
     /** an error estimate (fricreg_sim_set_error_estimate, fricreg_structure_set_error_estimate)
      *  could not be formed, or is above 10% of its quantity, where it may not bound the error.
      *  Since 1.6. */
-    FRICREG_WARN_ERROR_ESTIMATE = 12
+    FRICREG_WARN_ERROR_ESTIMATE = 12,
+    /** a run far past the end of its ground or load record (10 times its duration): its time
+     *  step in ms where s was meant? Since 1.7. */
+    FRICREG_WARN_RECORD_SHORT = 13
 };
 
 /** Short fixed name of a warning code (enum fricreg_warning), e.g. "eps_large" for

@@ -928,8 +928,12 @@ FRICREG_API size_t fricreg_structure_errmsg_copy(const fricreg_structure *s, cha
  *  - FRICREG_WARN_EPS_SPEED: after a step, no contact's |zdot_i| at a step's end exceeded
  *    10 eps: the law never left its regularized band (the contacts held throughout, or eps,
  *    the excitation or the bounds are in the wrong units).
- *  - FRICREG_WARN_BOUND_SCALE: after a step, a contact with mun_i > 0 whose mun_i W_ii (the
- *    acceleration its bound gives its effective mass 1/W_ii) is outside 1e-3 g .. 10 g.
+ *  - FRICREG_WARN_BOUND_SCALE: after a step, the bounds' sum sum_i mun_i outside 1e-3 .. 10
+ *    times the structure's weight g 1^T M 1 (1^T M 1 the sum of M's entries: the total mass
+ *    once per translational direction). Changed in 1.7: it judged each contact's mun_i W_ii
+ *    against 1e-3 g .. 10 g, which flagged every refined mesh of a continuum.
+ *  - FRICREG_WARN_RECORD_SHORT: the run's time past the start of the ground or load record
+ *    above 10 times the record's duration (n - 1) dt: its time step in ms? Since 1.7.
  *  - FRICREG_WARN_DT_COARSE: after a fixed step (step, run, run_ode's fixed), the longest dt
  *    above a tenth of the fundamental period 2 pi/omega_1 (omega_1^2 the smallest positive
  *    eigenvalue of M^-1 K, computed here once per model up to 2048 degrees of freedom, O(ndof^3)

@@ -11,8 +11,11 @@
  *    in g it is at most 0.3 < 0.49: FRICREG_WARN_GROUND_PEAK;
  *  - eps = 0.01 PGV (fricreg-sim's default) is inside 1e-9 .. 0.1 PGV; in mm/s it is 10 PGV:
  *    FRICREG_WARN_EPS_LARGE; 1e-12 PGV: FRICREG_WARN_EPS_SMALL;
- *  - mun_i W_ii ranges over 0.05 g (10 - i) W_ii m: 0.1 g (top) .. 0.5 g (contact 0), inside
- *    1e-3 g .. 10 g; in kN, 1e-4 g .. 5e-4 g: FRICREG_WARN_BOUND_SCALE;
+ *  - the bounds sum to 0.05 g m (10 + 9 + ... + 1) = 2.75 g m against the weight g 1^T M 1 =
+ *    10 g m: 0.275, inside 1e-3 .. 10; in kN 2.75e-4, with masses in tonnes 275:
+ *    FRICREG_WARN_BOUND_SCALE;
+ *  - the record lasts 10 s and the runs 15 s; its dt in ms typed as s makes it 0.01 s, and a
+ *    run of 15 s is 1500 times past it: FRICREG_WARN_RECORD_SHORT;
  *  - omega_1 = 2 sqrt(k/m) sin(pi/42) = 4.726 rad/s, fundamental period 1.329 s: dt = 0.01 s is
  *    1/133 of it; masses in tonnes multiply omega_1 by sqrt(1000), the period 0.0420 s < 10 dt,
  *    and dt = 10 (ms typed as s) is above the period itself: FRICREG_WARN_DT_COARSE. */
@@ -266,6 +269,70 @@ START_TEST(observer_sees_the_list_as_judged)
 }
 END_TEST
 
+/* A bar refined into 200 elements with a consistent mass (the continuum's own mass matrix),
+ * fixed at one end, its tip on a friction contact carrying 0.3 of the bar's weight: correct SI
+ * units. The tip's effective mass 1/W_ii is about m_total / (3.46 n) (the inverse of the
+ * tridiagonal (m_e/6) (1, 4, 1), 2 at the tip), so the check by contact judged mun W_ii about
+ * 0.3 x 3.46 x 200 = 208 g and flagged it; the bounds against the weight give 0.3. */
+START_TEST(refined_mesh_raises_no_bound_scale)
+{
+    enum { NB = 200 };
+    const double m_total = 1000.0, k_total = 1e8, me = m_total / NB;
+    double *M = calloc(NB * NB, sizeof *M), *K = calloc(NB * NB, sizeof *K), J[NB] = {0};
+    ck_assert(M != NULL && K != NULL);
+    for (int e = 0; e < NB; e++) { /* element e joins dof e - 1 (the support when -1) and e */
+        int a = e - 1, b = e;
+        M[b * NB + b] += me / 3.0;
+        K[b * NB + b] += NB * k_total;
+        if (a < 0)
+            continue;
+        M[a * NB + a] += me / 3.0;
+        M[a * NB + b] = M[b * NB + a] = me / 6.0;
+        K[a * NB + a] += NB * k_total;
+        K[a * NB + b] = K[b * NB + a] = -NB * k_total;
+    }
+    J[NB - 1] = 1.0;
+    double mun = 0.3 * 9.80665 * m_total, p[NB] = {0};
+    p[NB - 1] = 0.5 * mun;
+    fricreg_structure *s = NULL;
+    ck_assert_int_eq(fricreg_structure_create(NB, 1, &s), FRICREG_OK);
+    ok(s, fricreg_structure_set_mass(s, NB, M));
+    ok(s, fricreg_structure_set_stiffness(s, NB, K));
+    ok(s, fricreg_structure_set_contacts(s, 1, NB, J));
+    ok(s, fricreg_structure_set_bounds(s, 1, &mun));
+    ok(s, fricreg_structure_set_load(s, NB, p, 0.0, 0.0, 0, NULL));
+    ok(s, fricreg_structure_set_law(s, FRICREG_LAW_QUINN, 1e-4));
+    ok(s, fricreg_structure_step(s, 1e-5));
+    ck_assert(!raised(s, fricreg_structure_warning_count(s), FRICREG_WARN_BOUND_SCALE));
+    double kn = 1e-3 * mun; /* the same bound in kN */
+    ok(s, fricreg_structure_set_bounds(s, 1, &kn));
+    ok(s, fricreg_structure_step(s, 1e-5));
+    ck_assert(raised(s, fricreg_structure_warning_count(s), FRICREG_WARN_BOUND_SCALE));
+    fricreg_structure_free(s);
+    free(M);
+    free(K);
+}
+END_TEST
+
+/* The building's record with its dt in ms typed as s (0.01 s long) under the run of 15 s. */
+START_TEST(record_in_ms_raises_record_short)
+{
+    fricreg_structure *s = building(&si);
+    double *ag = malloc(NREC * sizeof *ag);
+    ck_assert_ptr_nonnull(ag);
+    for (int k = 0; k < NREC; k++)
+        ag[k] = building_ground(k);
+    ok(s, fricreg_structure_set_ground_accel(s, 0.0, 1e-3 * building_record_dt, NREC, ag));
+    free(ag);
+    ok(s, fricreg_structure_run(s, 0.01, 0.1)); /* 10 times the record: not yet */
+    ck_assert(!raised(s, fricreg_structure_warning_count(s), FRICREG_WARN_RECORD_SHORT));
+    ok(s, fricreg_structure_run(s, 0.01, 15.0));
+    size_t count = fricreg_structure_warning_count(s);
+    ck_assert(raised(s, count, FRICREG_WARN_RECORD_SHORT));
+    fricreg_structure_free(s);
+}
+END_TEST
+
 START_TEST(names)
 {
     ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_NONE), "none");
@@ -273,8 +340,9 @@ START_TEST(names)
     ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_ENERGY), "energy");
     ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_STRIBECK_EPS), "stribeck_eps");
     ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_ERROR_ESTIMATE), "error_estimate");
-    ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_ERROR_ESTIMATE + 1), "unknown");
-    for (int c = FRICREG_WARN_EPS_LARGE; c <= FRICREG_WARN_ERROR_ESTIMATE; c++)
+    ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_RECORD_SHORT), "record_short");
+    ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_RECORD_SHORT + 1), "unknown");
+    for (int c = FRICREG_WARN_EPS_LARGE; c <= FRICREG_WARN_RECORD_SHORT; c++)
         for (int d = FRICREG_WARN_NONE; d < c; d++)
             ck_assert_str_ne(fricreg_warning_name(c), fricreg_warning_name(d));
 }
@@ -292,6 +360,8 @@ int main(void)
     tcase_add_test(tc, energy_residual);
     tcase_add_test(tc, warnings_change_nothing);
     tcase_add_test(tc, observer_sees_the_list_as_judged);
+    tcase_add_test(tc, refined_mesh_raises_no_bound_scale);
+    tcase_add_test(tc, record_in_ms_raises_record_short);
     tcase_add_test(tc, names);
     suite_add_tcase(suite, tc);
     SRunner *runner = srunner_create(suite);

@@ -6,7 +6,7 @@
 
 #include <stddef.h>
 
-/* Room for every code of enum fricreg_warning (FRICREG_WARN_ERROR_ESTIMATE = 12) and those to
+/* Room for every code of enum fricreg_warning (FRICREG_WARN_RECORD_SHORT = 13) and those to
  * come. */
 #define FR_WARN_MAX 16
 

@@ -24,7 +24,8 @@
 #define EPS_PGV_LO 1e-9
 /* eps against the run's fastest contact: below 10 eps the law is in its regularized band. */
 #define EPS_SPEED_RATIO 10.0
-/* mun_i W_ii, the acceleration the bound gives the contact's effective mass 1/W_ii. */
+/* The bounds together against the structure's weight, sum_i mun_i / (g 1^T M 1). */
+#define RECORD_RUN_RATIO 10.0
 #define BOUND_ACCEL_LO (1e-3 * G_STANDARD)
 #define BOUND_ACCEL_HI (10.0 * G_STANDARD)
 /* dt against the fundamental period 2 pi/omega_1: at least 10 steps per period (average
@@ -172,24 +173,59 @@ static void check_speed(fricreg_structure *s, double period)
                 EPS_SPEED_RATIO * eps, s->peak_speed);
 }
 
+/* 1^T M 1, the sum of M's entries (M is held by its upper triangle): the total mass once per
+ * translational direction, a scale of what the structure weighs. */
+static double mass_sum(const fricreg_structure *s)
+{
+    const SuiteSparse_long *Mp = s->M->p, *Mi = s->M->i;
+    const double *Mx = s->M->x;
+    double sum = 0.0;
+    for (size_t j = 0; j < s->n; j++)
+        for (SuiteSparse_long p = Mp[j]; p < Mp[j + 1]; p++)
+            sum += (size_t)Mi[p] == j ? Mx[p] : 2.0 * Mx[p];
+    return sum;
+}
+
+/* The bounds are judged together against the weight, not one by one against a node's own
+ * effective mass 1/W_ii: on a continuum that mass shrinks as the mesh is refined while the
+ * bound stays what the contact carries, and every refined mesh in correct units was flagged. */
 static void check_bounds(fricreg_structure *s)
 {
     if (!s->prepared)
         return;
-    const SuiteSparse_long *Wp = s->mass.D->p, *Wi = s->mass.D->i;
-    const double *Wx = s->mass.D->x;
-    for (size_t j = 0; j < s->m; j++)
-        for (SuiteSparse_long p = Wp[j]; p < Wp[j + 1]; p++) {
-            double accel = s->mun[j] * Wx[p];
-            if ((size_t)Wi[p] != j || s->mun[j] == 0.0 ||
-                (accel >= BOUND_ACCEL_LO && accel <= BOUND_ACCEL_HI))
-                continue;
-            fr_warn(&s->warnings, FRICREG_WARN_BOUND_SCALE,
-                    "contact %zu: its bound mun = %.4g N gives its effective mass 1/W_ii = %.4g "
-                    "kg %.3g g, outside 1e-3 g to 10 g: are mun in N and M in kg?",
-                    j, s->mun[j], 1.0 / Wx[p], accel / G_STANDARD);
-            return; /* one message names the first contact */
-        }
+    double bounds = 0.0, mass = mass_sum(s);
+    for (size_t i = 0; i < s->m; i++)
+        bounds += s->mun[i];
+    double accel = bounds / mass; /* the acceleration the bounds give the whole mass */
+    if (!(bounds > 0.0) || !(mass > 0.0) || (accel >= BOUND_ACCEL_LO && accel <= BOUND_ACCEL_HI))
+        return;
+    fr_warn(&s->warnings, FRICREG_WARN_BOUND_SCALE,
+            "the bounds sum to %.4g N, %.3g times the structure's weight g 1^T M 1 = %.4g N "
+            "(1^T M 1 = %.4g kg, M's entries summed), outside 1e-3 to 10: are mun in N and M in "
+            "kg?",
+            bounds, accel / G_STANDARD, G_STANDARD * mass, mass);
+}
+
+/* A run far past the end of its ground or load record: the record's time step is likely in ms
+ * where s was meant (a 20 s record read as 0.02 s is 1000 times too short). A run is often
+ * longer than its record (the free vibration after an earthquake), so only 10 times is
+ * judged. */
+static void check_record_length(fricreg_structure *s)
+{
+    const struct fr_record *records[2] = {&s->ground, &s->load};
+    const char *names[2] = {"ground acceleration", "load"};
+    for (int k = 0; k < 2; k++) {
+        const struct fr_record *rec = records[k];
+        double duration = rec->n > 1 ? (double)(rec->n - 1) * rec->dt : 0.0;
+        if (!(duration > 0.0) || !(s->t - rec->t0 > RECORD_RUN_RATIO * duration))
+            continue;
+        fr_warn(&s->warnings, FRICREG_WARN_RECORD_SHORT,
+                "the run reached t = %.4g s, more than 10 times past the start of its %s record, "
+                "which lasts %.4g s (%zu samples, dt = %.4g s): is the record's time step in s "
+                "(not ms)?",
+                s->t, names[k], duration, rec->n, rec->dt);
+        return;
+    }
 }
 
 /* The fundamental period 2 pi/omega_1 of the model in force, or 0 where it is not known (no
@@ -256,6 +292,7 @@ size_t fricreg_structure_warning_count(fricreg_structure *s)
     check_ground(s);
     check_speed(s, period);
     check_bounds(s);
+    check_record_length(s);
     check_dt(s, period);
     check_newton(s);
     check_energy(s);
