@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* hb_sparse.c — the harmonic-balance driver's sparse model (UMFPACK) against the dense one
- * (GSL's complex LU) on tests/support/hb_rod.h's rod with three Jenkins elements, H = 7: the
+ * (the complex LU of src/hb/lu.c) on tests/support/hb_rod.h's rod with three Jenkins elements, H = 7: the
  * time of one point solve (fricreg_hb_solve from the stuck guess, the factors at a new
  * frequency included) against the dofs, and the frequency response over the first resonance
  * (fricreg_hb_continue, 1.1 to 1.6 rad/s, Newton's tolerance 1e-7) at 10^4 dofs; wall-clock medians of repeats, the

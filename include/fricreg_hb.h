@@ -47,9 +47,10 @@
  * each, tangential and normal, and the same equations with F_h = (f_h, N_h) on both.
  *
  * Cost per frequency: H + 1 complex LU factors of ndof x ndof and (H + 1)(m + 1) solves, then
- * per Newton iteration m AFTs (O(H³) each) and a real LU of order m (2H + 1)
- * (gsl_linalg_LU_decomp). A dense model (the dense setters) is factored by GSL's
- * gsl_linalg_complex_LU_decomp, O(H ndof³): for small to medium ndof (at most 4096). A sparse
+ * per Newton iteration m AFTs (O(H³) each) and a real LU of order m (2H + 1). A dense model
+ * (the dense setters) is factored by a complex LU with partial pivoting, O(H ndof³): for small
+ * to medium ndof (at most 4096). Both dense LUs are fricreg's own, on memory allocated at
+ * create and by the element setters, so a dense solve allocates nothing. A sparse
  * model (any _csc setter; the only one above 4096 dofs) by SuiteSparse's UMFPACK, complex
  * (D_h is complex symmetric, not Hermitian, and indefinite above the first resonance: no
  * Cholesky): the pattern of D_h, the union of M's, C's and K's, is analysed once per pattern

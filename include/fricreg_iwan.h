@@ -74,7 +74,9 @@ typedef struct fricreg_iwan fricreg_iwan;
  *
  *  Defaults: every slider k_s = 1/ns and phi_s = 1/ns (each element a Jenkins element of
  *  kt = 1 and mun = 1), no normal law (N0 = 1, kn = 0: the slip forces as set), every slider at
- *  0 (committed and trial). All memory is allocated here: (2 + 2 dim) n ns + 2 n doubles.
+ *  0 (committed and trial). All memory is allocated here: (2 + 3 dim) n ns + (2 + 2 dim + dim²) n
+ *  doubles (the parameters, the committed, trial and next trial positions, the normal laws
+ *  and a trial's sums before they are checked).
  *
  *  dim  1 or 2.
  *  n    number of elements, >= 1.
@@ -82,8 +84,9 @@ typedef struct fricreg_iwan fricreg_iwan;
  *  out  out: the new object, released with fricreg_iwan_free. Written only on success.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if out is NULL; FRICREG_EINVAL if dim is not 1 or 2, n or
- *  ns is 0, or n ns > SIZE_MAX/64; FRICREG_ENOMEM. With no object to keep it, a failure has no
- *  message beyond its status, as for fricreg_ctx_create. Since 1.6. */
+ *  ns is 0, or n ns > SIZE_MAX/64; FRICREG_ENOMEM (also if those doubles exceed SIZE_MAX bytes).
+ *  With no object to keep it, a failure has no message beyond its status, as for
+ *  fricreg_ctx_create. Since 1.6. */
 FRICREG_API int fricreg_iwan_create(int dim, size_t n, size_t ns, fricreg_iwan **out);
 
 /** Release the elements. fricreg_iwan_free(NULL) does nothing. Since 1.6. */
@@ -208,9 +211,11 @@ FRICREG_API int fricreg_iwan_set_normal(fricreg_iwan *iw, size_t n, const double
  *             k_s I plus, in 2-D, sum over slipping ones of (phi_s/|u - w_s|)(I - n_s n_s^T).
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if iw, u or f is NULL; FRICREG_ESIZE if n differs from
- *  the element count; FRICREG_ENONFINITE if some u is NaN or infinite, or u - w_s overflows.
- *  All inputs are checked before any output is written. Cost O(n ns); no allocation.
- *  Since 1.6. */
+ *  the element count; FRICREG_ENONFINITE if some u is NaN or infinite, u - w_s overflows, or an
+ *  element's sum over its sliders overflows (each slider's force is finite, |f_s| <= phi_s,
+ *  but ns of them near DBL_MAX, or the stuck sliders' k_s in dfdu where it is asked for, can
+ *  sum beyond it). On failure nothing is written and the trial state is kept. Cost O(n ns);
+ *  no allocation. Since 1.6. */
 FRICREG_API int fricreg_iwan_trial(fricreg_iwan *iw, size_t n, const double u[], double f[],
                                    double dfdu[]);
 
@@ -229,8 +234,9 @@ FRICREG_API int fricreg_iwan_trial(fricreg_iwan *iw, size_t n, const double u[],
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if iw, u, g or f is NULL; FRICREG_ESIZE if n differs from
  *  the element count; FRICREG_ENONFINITE if some u or g is NaN or infinite, u - w_s overflows,
- *  or N0 + kn g or a scaled slip force overflows. All inputs are checked before any output is
- *  written. Cost O(n ns); no allocation. Since 1.6. */
+ *  or N0 + kn g or a scaled slip force overflows, or an element's sum over its sliders does
+ *  (as fricreg_iwan_trial; also df/dg where dfdg is asked for: phi_s kn/N0). On failure
+ *  nothing is written and the trial state is kept. Cost O(n ns); no allocation. Since 1.6. */
 FRICREG_API int fricreg_iwan_trial_normal(fricreg_iwan *iw, size_t n, const double u[],
                                           const double g[], double f[], double nf[], double dfdu[],
                                           double dfdg[]);

@@ -19,7 +19,10 @@
  *     continuous dissipation per cycle D(A) = 4 R A^(chi+3)/((chi+2)(chi+3)) for
  *     A <= phi_max (integrate 4 phi (A - phi) against R phi^chi from 0 to A).
  *   - lift-off: N = max(0, N0 + kn g), slip forces phi_s N/N0; separated: f = 0, tangents 0,
- *     sliders at u; df/dg = sum over slipping sliders of phi_s (kn/N0) sign. */
+ *     sliders at u; df/dg = sum over slipping sliders of phi_s (kn/N0) sign.
+ *   - sums near the double range: each slider's force is finite (|f_s| <= phi_s), so only
+ *     the element's sum can overflow; where every slider slips f = sum_s phi_s, where every
+ *     one sticks dF/du = sum_s k_s (the backbone above), compared with DBL_MAX. */
 #include <check.h>
 #include <float.h>
 #include <math.h>
@@ -641,6 +644,64 @@ START_TEST(bad_input)
 }
 END_TEST
 
+/* The sliders' sums overflow: two sliders of k = 1e300, phi = 1e308 at u = 1e10 both slip
+ * (k u = 1e310 > phi), f = 2e308 > DBL_MAX; FRICREG_OK with f = inf until the sums were
+ * checked. Now FRICREG_ENONFINITE, recorded with a message, the caller's arrays and the trial
+ * state untouched; a sum that stays finite (1e308 + 0.5e308 = 1.5e308 < DBL_MAX) still
+ * passes; and a tangent that overflows (two stuck sliders of k = 1e308: 2e308) fails the call
+ * only when the tangent is asked for. */
+START_TEST(sums_overflow)
+{
+    fricreg_iwan *iw = NULL;
+    ck_assert_int_eq(fricreg_iwan_create(1, 1, 2, &iw), FRICREG_OK);
+    const double k[2] = {1e300, 1e300}, phi[2] = {1e308, 1e308}, u[1] = {1e10}, g[1] = {0.0};
+    ck_assert_int_eq(fricreg_iwan_set_params(iw, 1, 2, k, phi), FRICREG_OK);
+    double f[1] = {SENTINEL}, t[1] = {SENTINEL}, nf[1] = {SENTINEL}, tg[1] = {SENTINEL};
+    ck_assert_int_eq(fricreg_iwan_trial(iw, 1, u, f, t), FRICREG_ENONFINITE);
+    ck_assert_int_eq(fricreg_iwan_errcode(iw), FRICREG_ENONFINITE);
+    ck_assert_ptr_nonnull(strstr(fricreg_iwan_errmsg(iw), "overflows"));
+    ck_assert_int_eq(fricreg_iwan_trial(iw, 1, u, f, NULL), FRICREG_ENONFINITE);
+    ck_assert_int_eq(fricreg_iwan_trial_normal(iw, 1, u, g, f, nf, t, tg), FRICREG_ENONFINITE);
+    ck_assert_int_eq(fricreg_iwan_trial_normal(iw, 1, u, g, f, NULL, NULL, NULL),
+                     FRICREG_ENONFINITE);
+    ck_assert_double_eq(f[0], SENTINEL);
+    ck_assert_double_eq(t[0], SENTINEL);
+    ck_assert_double_eq(nf[0], SENTINEL);
+    ck_assert_double_eq(tg[0], SENTINEL);
+    /* the failed trials left no trial state: commit keeps the sliders at 0 */
+    double w[2] = {SENTINEL, SENTINEL};
+    ck_assert_int_eq(fricreg_iwan_commit(iw), FRICREG_OK);
+    ck_assert_int_eq(fricreg_iwan_get_slider(iw, 1, 2, w), FRICREG_OK);
+    ck_assert_double_eq(w[0], 0.0);
+    ck_assert_double_eq(w[1], 0.0);
+    /* a finite sum: both slip, f = phi_0 + phi_1, the sliders at u - phi_s/k_s */
+    const double phi2[2] = {1e308, 0.5e308};
+    ck_assert_int_eq(fricreg_iwan_set_params(iw, 1, 2, k, phi2), FRICREG_OK);
+    ck_assert_int_eq(fricreg_iwan_trial(iw, 1, u, f, t), FRICREG_OK);
+    ck_assert_double_eq(f[0], 1e308 + 0.5e308);
+    ck_assert_double_eq(t[0], 0.0); /* 1-D slip: no stiffness */
+    /* the tangent's sum: stuck (k u = 1e-2 <= phi = 1) at u = 1e-310, dF/du = 2e308 */
+    const double kbig[2] = {1e308, 1e308}, one[2] = {1.0, 1.0}, us[1] = {1e-310};
+    ck_assert_int_eq(fricreg_iwan_set_params(iw, 1, 2, kbig, one), FRICREG_OK);
+    t[0] = SENTINEL;
+    ck_assert_int_eq(fricreg_iwan_trial(iw, 1, us, f, t), FRICREG_ENONFINITE);
+    ck_assert_double_eq(t[0], SENTINEL);
+    ck_assert_int_eq(fricreg_iwan_trial(iw, 1, us, f, NULL), FRICREG_OK);
+    ck_assert_double_eq(f[0], 1e308 * 1e-310 + 1e308 * 1e-310);
+    /* df/dg: kn/N0 = 1e300 (finite, accepted) times phi = 1e10 on a slipping slider */
+    const double n0[1] = {1.0}, kn[1] = {1e300}, k1[2] = {1.0, 1.0}, p1[2] = {1e10, 1.0};
+    const double ubig[1] = {1e11};
+    ck_assert_int_eq(fricreg_iwan_set_params(iw, 1, 2, k1, p1), FRICREG_OK);
+    ck_assert_int_eq(fricreg_iwan_set_normal(iw, 1, n0, kn), FRICREG_OK);
+    tg[0] = SENTINEL;
+    ck_assert_int_eq(fricreg_iwan_trial_normal(iw, 1, ubig, g, f, nf, t, tg), FRICREG_ENONFINITE);
+    ck_assert_double_eq(tg[0], SENTINEL);
+    ck_assert_int_eq(fricreg_iwan_trial_normal(iw, 1, ubig, g, f, nf, t, NULL), FRICREG_OK);
+    ck_assert_double_eq(f[0], 1e10 + 1.0);
+    fricreg_iwan_free(iw);
+}
+END_TEST
+
 static Suite *iwan_suite(void)
 {
     Suite *s = suite_create("iwan");
@@ -656,6 +717,7 @@ static Suite *iwan_suite(void)
     tcase_add_test(tc, segalman_microslip_dissipation);
     tcase_add_test(tc, lift_off);
     tcase_add_test(tc, bad_input);
+    tcase_add_test(tc, sums_overflow);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -1,16 +1,13 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* dynamic.c — the dynamic stiffnesses D_h(Ω) = K − (hΩ)² M + i hΩ C, h = 0..H, factored by
- * GSL's complex LU (partial pivoting; Golub & Van Loan, Matrix Computations, 4th ed., Alg.
- * 3.4.1), their solves Y_h = D_h^-1 [J^T | P_h], and the condensation on the elements:
+ * the complex LU of lu.c (partial pivoting; Golub & Van Loan, Matrix Computations, 4th ed., Alg.
+ * 3.4.1; on the driver's arrays: no allocation, no GSL), their solves Y_h = D_h^-1 [J^T | P_h], and the condensation on the elements:
  * G_h = J Y_h (the receptance between the elements' coordinates), ql_h = J D_h^-1 P_h (their
  * response with the elements removed), and with deriv their Ω derivatives,
  * d(J D^-1 B)/dΩ = −(J D^-1) D' (D^-1 B), where J D^-1 = (D^-1 J^T)^T because M, C, K (so D)
- * are symmetric: no second solve. A pivot is checked before GSL's solve sees it (GSL reports a
- * singular one to its error handler). */
+ * are symmetric: no second solve. Every pivot is checked before a solve divides by it. */
 #include <math.h>
 #include <string.h>
-
-#include <gsl/gsl_linalg.h>
 
 #include "hb_internal.h"
 
@@ -44,9 +41,7 @@ static int factor_one(fricreg_hb *hb, const char *fn, int h, double omega)
                        "%s: the dynamic stiffness D_%d overflows at Omega = %g (|K| + w^2 |M| + w "
                        "|C| beyond the double range)",
                        fn, h, omega);
-    gsl_matrix_complex_view D = gsl_matrix_complex_view_array(hb->D, n, n);
-    int signum;
-    gsl_linalg_complex_LU_decomp(&D.matrix, hb->perm, &signum);
+    fr_hb_zlu_factor(hb->D, n, hb->piv);
     for (size_t k = 0; k < n; k++) {
         double p = hypot(hb->D[2 * (k * n + k)], hb->D[2 * (k * n + k) + 1]);
         if (!(p > 1e-14 * dmax) || !isfinite(p))
@@ -63,19 +58,18 @@ static void solve_columns(fricreg_hb *hb, int h)
 {
     size_t n = hb->n, m = hb->m, w = m + 1;
     double *Y = hb->Y + 2 * (size_t)h * n * w;
-    gsl_matrix_complex_view D = gsl_matrix_complex_view_array(hb->D, n, n);
-    gsl_vector_complex_view b = gsl_vector_complex_view_array(hb->colw, n);
     for (size_t e = 0; e <= m; e++) {
-        gsl_vector_complex_view x = gsl_vector_complex_view_array_with_stride(Y + 2 * e, w, n);
-        if (e == m && h != 1) {
-            gsl_vector_complex_set_zero(&x.vector);
-            continue;
-        }
-        for (size_t k = 0; k < n; k++) {
+        int zero = e == m && h != 1;
+        for (size_t k = 0; k < n && !zero; k++) {
             hb->colw[2 * k] = e < m ? hb->J[e * n + k] : hb->pc[k];
             hb->colw[2 * k + 1] = e < m ? 0.0 : -hb->ps[k];
         }
-        gsl_linalg_complex_LU_solve(&D.matrix, hb->perm, &b.vector, &x.vector);
+        if (!zero)
+            fr_hb_zlu_solve_factored(hb->D, n, hb->piv, hb->colw);
+        for (size_t k = 0; k < n; k++) { /* column e of Y_h, row stride w */
+            Y[2 * (k * w + e)] = zero ? 0.0 : hb->colw[2 * k];
+            Y[2 * (k * w + e) + 1] = zero ? 0.0 : hb->colw[2 * k + 1];
+        }
     }
 }
 

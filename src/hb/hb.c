@@ -7,7 +7,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "base/gsl_mem.h"
 #include "base/sparse_factor.h"
 #include "hb_internal.h"
 
@@ -22,10 +21,11 @@ static void *alloc_doubles(size_t count)
 
 /* The buffers sized by the rows of J, for cap rows of me elements (at most cap/me rows each):
  * J's block (J [cap n], kt, mun [me], pc, ps [n]), Y, Z (with colw), G (with ql, dG, dql),
- * fq's block (fq, jq, A, R, rw, dy, qw, qt, tan, yp, qsol) and perm2. All or none. */
+ * fq's block (fq, jq, A, R, rw, dy, qw, qt, tan, yp, qsol) and piv2, Newton's LU pivots. All or
+ * none. */
 struct rows_buffers {
     double *J, *Y, *Z, *G, *fq;
-    gsl_permutation *perm2;
+    size_t *piv2;
 };
 
 static void free_rows(struct rows_buffers *b)
@@ -35,7 +35,7 @@ static void free_rows(struct rows_buffers *b)
     free(b->Z);
     free(b->G);
     free(b->fq);
-    free(b->perm2);
+    free(b->piv2);
 }
 
 static int alloc_rows(const fricreg_hb *hb, size_t cap, struct rows_buffers *b)
@@ -48,8 +48,8 @@ static int alloc_rows(const fricreg_hb *hb, size_t cap, struct rows_buffers *b)
     b->G = alloc_doubles(4 * H1 * cap * cap + 4 * H1 * cap);
     b->fq = alloc_doubles(nq + cap * (cap / me) * nc * nc + (nq + 1) * (nq + 1) + 8 * (nq + 1) +
                           nq);
-    b->perm2 = fr_gsl_permutation_new(nq + 1);
-    if (!b->J || !b->Y || !b->Z || !b->G || !b->fq || !b->perm2) {
+    b->piv2 = malloc((nq + 1) * sizeof *b->piv2);
+    if (!b->J || !b->Y || !b->Z || !b->G || !b->fq || !b->piv2) {
         free_rows(b);
         return FRICREG_ENOMEM;
     }
@@ -69,13 +69,13 @@ static void install_rows(fricreg_hb *hb, size_t cap, struct rows_buffers *b)
     free(hb->Z);
     free(hb->G);
     free(hb->fq);
-    free(hb->perm2);
+    free(hb->piv2);
     hb->J = b->J;
     hb->Y = b->Y;
     hb->Z = b->Z;
     hb->G = b->G;
     hb->fq = b->fq;
-    hb->perm2 = b->perm2;
+    hb->piv2 = b->piv2;
     hb->rows_cap = cap;
     hb->kt = hb->J + cap * n;
     hb->mun = hb->kt + me;
@@ -134,14 +134,14 @@ int fricreg_hb_create(size_t ndof, size_t m, int harmonics, fricreg_hb **out)
     int dense = n <= MAX_DENSE_DOFS;
     hb->M = dense ? calloc(3 * n * n, sizeof(double)) : NULL; /* untouched until set */
     hb->D = dense ? alloc_doubles(2 * n * n) : NULL;
-    hb->perm = dense ? fr_gsl_permutation_new(n) : NULL;
+    hb->piv = dense ? malloc(n * sizeof *hb->piv) : NULL;
     struct rows_buffers b;
     int rows = alloc_rows(hb, m, &b);
     if (rows == FRICREG_OK)
         install_rows(hb, m, &b);
     int status = fricreg_aft_create(harmonics, 0, &hb->aft);
     int started = fr_cholmod_start(&hb->cc) == FRICREG_OK;
-    if ((dense && (!hb->M || !hb->D || !hb->perm)) || rows != FRICREG_OK || status != FRICREG_OK ||
+    if ((dense && (!hb->M || !hb->D || !hb->piv)) || rows != FRICREG_OK || status != FRICREG_OK ||
         !started || (!dense && fr_hb_sparse_defaults(hb) != FRICREG_OK)) {
         fricreg_hb_free(hb);
         return FRICREG_ENOMEM;
@@ -168,8 +168,8 @@ void fricreg_hb_free(fricreg_hb *hb)
     free(hb->Z);
     free(hb->G);
     free(hb->fq);
-    free(hb->perm);
-    free(hb->perm2);
+    free(hb->piv);
+    free(hb->piv2);
     free(hb->pts);
     fricreg_aft_free(hb->aft);
     free(hb->sk);

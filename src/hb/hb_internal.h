@@ -11,7 +11,6 @@
 #include <stdint.h>
 
 #include <cholmod.h>
-#include <gsl/gsl_permutation.h>
 #include <umfpack.h>
 
 #include "base/error.h"
@@ -45,7 +44,7 @@ struct fricreg_hb {
     double factored_omega; /* NaN: none */
     int factored_deriv;    /* the Ω derivatives dG, dql are there too */
     double *D;             /* [n n] complex: one D_h at a time, LU-factored in place */
-    gsl_permutation *perm; /* [n] */
+    size_t *piv;           /* [n] its row interchanges (lu.c) */
     double *Y;             /* [(H+1) n (m+1)] complex: D_h^-1 [J^T | P_h], row k of harmonic h at
                      Y[(h n + k)(m+1)], column m the load (0 but for h = 1) */
     double *Z;             /* [n (m+1)] complex scratch: D_h' Y_h */
@@ -73,18 +72,18 @@ struct fricreg_hb {
     double lu_entries; /* nnz(L) + nnz(U) of the last factor */
 
     /* Newton (residual.c, newton.c, continuation.c) */
-    double *fq;             /* [nq] element force coefficients at the last evaluation */
-    double *jq;             /* [me (rpe nc)²] their Jacobians, one block per element */
-    double *R;              /* [nq + 1] residual (continuation: the arclength equation last) */
-    double *A;              /* [(nq + 1)^2] Newton's matrix, LU-factored in place */
-    double *rw;             /* [nq + 1] dR/dΩ, then scratch */
-    double *dy;             /* [nq + 1] Newton's step */
-    double *qw;             /* [nq + 1] iterate (continuation: Ω last) */
-    double *qt;             /* [nq + 1] line search trial */
-    double *tan;            /* [nq + 1] continuation tangent */
-    double *yp;             /* [nq + 1] continuation: last point, then predictor */
-    gsl_permutation *perm2; /* [nq + 1] */
-    int iterations;         /* of the last Newton solve */
+    double *fq;     /* [nq] element force coefficients at the last evaluation */
+    double *jq;     /* [me (rpe nc)²] their Jacobians, one block per element */
+    double *R;      /* [nq + 1] residual (continuation: the arclength equation last) */
+    double *A;      /* [(nq + 1)^2] Newton's matrix, LU-factored in place */
+    double *rw;     /* [nq + 1] dR/dΩ, then scratch */
+    double *dy;     /* [nq + 1] Newton's step */
+    double *qw;     /* [nq + 1] iterate (continuation: Ω last) */
+    double *qt;     /* [nq + 1] line search trial */
+    double *tan;    /* [nq + 1] continuation tangent */
+    double *yp;     /* [nq + 1] continuation: last point, then predictor */
+    size_t *piv2;   /* [nq + 1] A's row interchanges (lu.c) */
+    int iterations; /* of the last Newton solve */
 
     /* the last solution */
     int have_solution;
@@ -132,6 +131,15 @@ void fr_hb_sparse_free(fricreg_hb *hb);
 /* The dense setters' path on a sparse model: the checked, symmetric dense A installed as
  * matrix which (0 M, 1 C, 2 K). */
 int fr_hb_sparse_set_dense(fricreg_hb *hb, const char *fn, int which, const double *A);
+
+/* The dense LU factors (lu.c): A[n n] row-major (complex: (re, im) pairs) factored in place
+ * with partial pivoting, P A = L U, the row interchanges into piv[n]; no allocation, no GSL.
+ * The solves overwrite x[n] (complex: [2n]) with A^-1 x from the factor and piv; every pivot
+ * must be nonzero (the callers check them first). */
+void fr_hb_lu_factor(double *A, size_t n, size_t *piv);
+void fr_hb_lu_solve_factored(const double *LU, size_t n, const size_t *piv, double *x);
+void fr_hb_zlu_factor(double *A, size_t n, size_t *piv);
+void fr_hb_zlu_solve_factored(const double *LU, size_t n, const size_t *piv, double *x);
 
 /* The real LU solve of Newton's matrix A[nd nd] (factored in place) for rhs[nd] into sol[nd]
  * (may alias rhs). FRICREG_OK or FRICREG_ESINGULAR (a pivot below 1e-14 of the matrix's

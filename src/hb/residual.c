@@ -12,8 +12,6 @@
 #include <math.h>
 #include <string.h>
 
-#include <gsl/gsl_linalg.h>
-
 #include "hb_internal.h"
 
 /* out[nq] = G F − ql in the real form above, from the forces f[nq] and the complex G[(H+1) m m],
@@ -114,10 +112,7 @@ int fr_hb_lu_solve(fricreg_hb *hb, const char *fn, size_t nd, double *rhs, doubl
     double amax = 0.0;
     for (size_t k = 0; k < nd * nd; k++)
         amax = fmax(amax, fabs(hb->A[k]));
-    gsl_matrix_view A = gsl_matrix_view_array(hb->A, nd, nd);
-    gsl_permutation p = {.size = nd, .data = hb->perm2->data};
-    int signum;
-    gsl_linalg_LU_decomp(&A.matrix, &p, &signum);
+    fr_hb_lu_factor(hb->A, nd, hb->piv2);
     for (size_t k = 0; k < nd; k++) {
         double piv = fabs(hb->A[k * nd + k]);
         if (!(piv > 1e-14 * amax) || !isfinite(piv))
@@ -126,12 +121,9 @@ int fr_hb_lu_solve(fricreg_hb *hb, const char *fn, size_t nd, double *rhs, doubl
                            "largest entry %g)",
                            fn, k, piv, amax);
     }
-    gsl_vector_view b = gsl_vector_view_array(rhs, nd);
-    gsl_vector_view x = gsl_vector_view_array(sol, nd);
-    if (rhs == sol)
-        gsl_linalg_LU_svx(&A.matrix, &p, &x.vector);
-    else
-        gsl_linalg_LU_solve(&A.matrix, &p, &b.vector, &x.vector);
+    if (rhs != sol)
+        memcpy(sol, rhs, nd * sizeof *sol);
+    fr_hb_lu_solve_factored(hb->A, nd, hb->piv2, sol);
     return FRICREG_OK;
 }
 

@@ -171,9 +171,9 @@ static int install(fricreg_hb *hb, const char *fn, cholmod_sparse *X[3])
     if (!hb->sparse) { /* for good: the dense model's memory is not needed again */
         free(hb->M);
         free(hb->D);
-        free(hb->perm);
+        free(hb->piv);
         hb->M = hb->C = hb->K = hb->D = NULL;
-        hb->perm = NULL;
+        hb->piv = NULL;
         umfpack_zl_defaults(hb->control);
         hb->control[UMFPACK_PRL] = 0; /* nothing printed */
         hb->sparse = 1;

@@ -24,6 +24,8 @@ struct fricreg_iwan {
     double *n0, *kn; /* [n] each: the slip forces scale by max(0, n0 + kn g)/n0 */
     double *w_c;     /* committed slider positions [n ns dim] */
     double *w_tr;    /* the last trial's [n ns dim]; equal to w_c after commit, reset, setters */
+    double *w_new;   /* [n ns dim] a trial's positions until it succeeds (then swapped with w_tr) */
+    double *out;     /* [n (2 dim + dim dim)] a trial's sums (f, dfdu, dfdg) until all are finite */
     struct fr_error err;
 };
 
@@ -33,9 +35,13 @@ int fricreg_iwan_create(int dim, size_t n, size_t ns, fricreg_iwan **out)
         return FRICREG_ENULL;
     if ((dim != 1 && dim != 2) || n == 0 || ns == 0 || ns > MAX_SLIDERS / n)
         return FRICREG_EINVAL;
-    size_t m = n * ns;
+    size_t m = n * ns, d = (size_t)dim;
+    /* at most 8 m + 10 n <= 18 SIZE_MAX/64 doubles: the count fits, its bytes may not */
+    size_t count = (2 + 3 * d) * m + (2 + 2 * d + d * d) * n;
+    if (count > SIZE_MAX / sizeof(double))
+        return FRICREG_ENOMEM;
     fricreg_iwan *iw = calloc(1, sizeof *iw);
-    double *block = malloc(((2 + 2 * (size_t)dim) * m + 2 * n) * sizeof *block);
+    double *block = malloc(count * sizeof *block);
     if (iw == NULL || block == NULL) {
         free(iw);
         free(block);
@@ -47,9 +53,11 @@ int fricreg_iwan_create(int dim, size_t n, size_t ns, fricreg_iwan **out)
     iw->k = block;
     iw->phi = block + m;
     iw->w_c = block + 2 * m;
-    iw->w_tr = iw->w_c + (size_t)dim * m;
-    iw->n0 = iw->w_tr + (size_t)dim * m;
+    iw->w_tr = iw->w_c + d * m;
+    iw->w_new = iw->w_tr + d * m;
+    iw->n0 = iw->w_new + d * m;
     iw->kn = iw->n0 + n;
+    iw->out = iw->kn + n;
     for (size_t i = 0; i < m; i++)
         iw->k[i] = iw->phi[i] = 1.0 / (double)ns;
     for (size_t e = 0; e < n; e++) {
@@ -294,8 +302,8 @@ static int check_g(fricreg_iwan *iw, size_t e, double g)
     return FRICREG_OK;
 }
 
-/* One element e at u (dim) and normal displacement g: the sum of its sliders into f, t
- * (if not NULL) and tg (if not NULL), each written once at the end (f may alias u). */
+/* One element e at u (dim) and normal displacement g: the sums of its sliders into f[dim],
+ * t[dim dim] and tg[dim] (the trial's scratch), the sliders' trial positions into w_new. */
 static void element(fricreg_iwan *iw, size_t e, const double *u, double g, double *f, double *t,
                     double *tg)
 {
@@ -304,51 +312,78 @@ static void element(fricreg_iwan *iw, size_t e, const double *u, double g, doubl
     double nc = iw->n0[e] + iw->kn[e] * g, scale = fmax(0.0, nc) / iw->n0[e],
            dscale = iw->kn[e] / iw->n0[e];
     double ui[2] = {u[0], dim == 2 ? u[1] : 0.0}, fs[2], ts[4], tgs[2];
-    double fsum[2] = {0.0, 0.0}, tsum[4] = {0.0, 0.0, 0.0, 0.0}, tgsum[2] = {0.0, 0.0};
+    for (int a = 0; a < dim; a++)
+        f[a] = tg[a] = 0.0;
+    for (size_t a = 0; a < dd; a++)
+        t[a] = 0.0;
     for (size_t s = 0; s < ns; s++) {
         size_t i = ns * e + s;
-        double *w = &iw->w_tr[(size_t)dim * i];
+        double *w = &iw->w_new[(size_t)dim * i];
         if (nc < 0.0)
             fr_slider_separated(dim, ui, fs, w, ts, tgs);
         else
             fr_slider_return(iw->k[i], iw->phi[i] * scale, iw->phi[i] * dscale, dim, ui,
                              &iw->w_c[(size_t)dim * i], fs, w, ts, tgs);
         for (int a = 0; a < dim; a++) {
-            fsum[a] += fs[a];
-            tgsum[a] += tgs[a];
+            f[a] += fs[a];
+            tg[a] += tgs[a];
         }
         for (size_t a = 0; a < dd; a++)
-            tsum[a] += ts[a];
+            t[a] += ts[a];
     }
-    for (int a = 0; a < dim; a++) {
-        f[a] = fsum[a];
-        if (tg != NULL)
-            tg[a] = tgsum[a];
-    }
-    if (t != NULL)
-        memcpy(t, tsum, dd * sizeof *t);
 }
 
-/* The trial of every element, g NULL meaning g = 0 (fricreg_iwan_trial), inputs checked. */
+/* Whether x[0..count-1] are finite; the first one that is not into *bad. */
+static int all_finite(const double *x, size_t count, double *bad)
+{
+    for (size_t k = 0; k < count; k++)
+        if (!isfinite(x[k])) {
+            *bad = x[k];
+            return 0;
+        }
+    return 1;
+}
+
+/* The trial of every element, g NULL meaning g = 0 (fricreg_iwan_trial), inputs checked. The
+ * sums are formed in the object's scratch and the positions in w_new: each slider's force is
+ * finite (|f_s| <= its slip force, checked) but their sum, or the sum of the sticking sliders'
+ * stiffnesses or slip-force slopes, can overflow; a sum that did fails the call before any
+ * output or the trial state changes. */
 static int trial(fricreg_iwan *iw, const char *fn, size_t n, const double u[], const double g[],
                  double f[], double nf[], double dfdu[], double dfdg[])
 {
     if (check_n(iw, fn, n, 0, 0) != FRICREG_OK)
         return FRICREG_ESIZE;
-    size_t dim = (size_t)iw->dim;
+    size_t dim = (size_t)iw->dim, dd = dim * dim;
     for (size_t e = 0; e < n; e++) {
         if (check_u(iw, fn, e, &u[dim * e]) != FRICREG_OK)
             return iw->err.code;
         if (g != NULL && check_g(iw, e, g[e]) != FRICREG_OK)
             return iw->err.code;
     }
+    double *fo = iw->out, *to = fo + dim * n, *tgo = to + dd * n, bad = 0.0;
     for (size_t e = 0; e < n; e++) {
-        double ge = g ? g[e] : 0.0;
-        element(iw, e, &u[dim * e], ge, &f[dim * e], dfdu ? &dfdu[dim * dim * e] : NULL,
-                dfdg ? &dfdg[dim * e] : NULL);
-        if (nf != NULL)
-            nf[e] = fmax(0.0, iw->n0[e] + iw->kn[e] * ge);
+        element(iw, e, &u[dim * e], g ? g[e] : 0.0, &fo[dim * e], &to[dd * e], &tgo[dim * e]);
+        const char *what = !all_finite(&fo[dim * e], dim, &bad)                    ? "force"
+                           : dfdu != NULL && !all_finite(&to[dd * e], dd, &bad)    ? "tangent"
+                           : dfdg != NULL && !all_finite(&tgo[dim * e], dim, &bad) ? "df/dg"
+                                                                                   : NULL;
+        if (what != NULL)
+            return fr_fail(iw, FRICREG_ENONFINITE,
+                           "%s: element %zu's sliders sum to a %s of %g: the sum of %zu sliders "
+                           "overflows (their stiffnesses or slip forces near the double range)",
+                           fn, e, what, bad, iw->ns);
     }
+    double *w = iw->w_tr; /* the new trial positions become the trial state */
+    iw->w_tr = iw->w_new;
+    iw->w_new = w;
+    for (size_t e = 0; e < n && nf != NULL; e++)
+        nf[e] = fmax(0.0, iw->n0[e] + iw->kn[e] * (g ? g[e] : 0.0));
+    memcpy(f, fo, dim * n * sizeof *f); /* u read: f may alias it */
+    if (dfdu != NULL)
+        memcpy(dfdu, to, dd * n * sizeof *dfdu);
+    if (dfdg != NULL)
+        memcpy(dfdg, tgo, dim * n * sizeof *dfdg);
     return FRICREG_OK;
 }
 
@@ -386,7 +421,9 @@ int fricreg_iwan_reset(fricreg_iwan *iw)
 {
     if (iw == NULL)
         return FRICREG_ENULL;
-    memset(iw->w_c, 0, 2 * (size_t)iw->dim * iw->n * iw->ns * sizeof *iw->w_c);
+    size_t count = (size_t)iw->dim * iw->n * iw->ns;
+    memset(iw->w_c, 0, count * sizeof *iw->w_c);
+    memset(iw->w_tr, 0, count * sizeof *iw->w_tr);
     return FRICREG_OK;
 }
 

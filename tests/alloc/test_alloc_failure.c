@@ -31,8 +31,12 @@
  * reports to it, and a program that wants FRICREG_ENOMEM there instead of GSL's abort calls
  * gsl_set_error_handler_off() once at start (docs/reliability.md). This program does just that
  * in main(); the scenarios then count the handler's calls with a handler of their own, the
- * stepper allocation's apart. fricreg_ctx_eval, fricreg_disk_ctx_eval and _tangent, and a
- * structure's steps after the first must not allocate at all. Run under valgrind or ASan, the
+ * stepper allocation's apart. fricreg_ctx_eval, fricreg_disk_ctx_eval and _tangent, a
+ * structure's steps after the first, the AFT's evaluations, the Iwan elements' calls after
+ * create and a dense harmonic-balance driver's solve must not allocate at all. The
+ * harmonic-balance driver's solve, displacement and continue have a loop of their own
+ * (test_hb_solve_continue): every allocation inside them fails in turn, on a driver set up
+ * beforehand. Run under valgrind or ASan, the
  * same loops also check what the counting cannot: no invalid access on any failure path. */
 #include <check.h>
 #include <math.h>
@@ -1776,7 +1780,8 @@ static const struct script jk_create = {"jenkins create", 0,    NULL, 0,        
 /* create alone (its one block): a failure leaves no handle; the view is two 2-D elements of
  * three sliders after set_params, set_segalman and set_normal, two trials with a normal
  * displacement (the second committed) and the committed sliders. That trial and commit never
- * allocate is test_iwan_trial_does_not_allocate's. */
+ * allocate is test_iwan_trial_does_not_allocate's (every other call's:
+ * test_aft_iwan_calls_do_not_allocate). */
 static int iw_open(void **obj)
 {
     fricreg_iwan *iw = SENTINEL;
@@ -1828,7 +1833,8 @@ static const struct script iw_create = {"iwan create", 0,    NULL, 0,          0
 
 /* create alone (its blocks, GSL's Brent among them): a failure leaves no handle; the view is
  * both paths' coefficients and Jacobians of a Jenkins and an Iwan element. That the
- * evaluations never allocate is test_aft_eval_does_not_allocate's. */
+ * evaluations never allocate is test_aft_eval_does_not_allocate's (the lift-off ones too:
+ * test_aft_iwan_calls_do_not_allocate). */
 static int aft_open(void **obj)
 {
     fricreg_aft *a = SENTINEL;
@@ -1873,10 +1879,11 @@ static const struct script aft_create = {"aft create", 0,    NULL, 0,           
 
 /* ---- Harmonic balance ------------------------------------------------------------------------ */
 
-/* create alone (its blocks, the AFT workspace, GSL's permutations): a failure leaves no
- * handle; the view is a 2-dof model with one element solved at one frequency, its
- * displacement, and a short continuation's points (whose one allocation, the first 64 points'
- * room, the view makes: not failed here). */
+/* create alone (its blocks, the AFT workspace, the LU pivots): a failure leaves no handle; the
+ * view is a 2-dof model with one element solved at one frequency, its displacement, and a
+ * short continuation's points (whose one allocation, the first 64 points' room, the view
+ * makes: not failed here, but in test_hb_solve_continue, with every allocation of solve and
+ * continue). */
 static int hb_open(void **obj)
 {
     fricreg_hb *hb = SENTINEL;
@@ -2022,6 +2029,296 @@ static void hb_normal_observe(void *obj, struct view *v)
 static const struct script hb_normal = {
     "hb set_normal_elements", 2,    hb_normal_calls,   1,          0,       hb_iwan_open,
     hb_normal_call,           NULL, hb_normal_observe, hb_errcode, hb_close};
+
+/* ---- Harmonic balance: every allocation inside solve and continue ----------------------------
+ *
+ * The scripts above set the driver up under the failing allocator and solve in the view, which is
+ * not failed. Here the model is set up first (unarmed) and every allocation made inside
+ * fricreg_hb_solve, fricreg_hb_displacement and fricreg_hb_continue fails in turn: dense and
+ * sparse models (UMFPACK's analysis and factors), with Jenkins, Iwan and lift-off elements. A
+ * dense driver allocates nothing in solve and displacement (its LU factors are on its own
+ * arrays, lu.c: GSL 2.7's gsl_linalg_LU_decomp and gsl_linalg_complex_LU_decomp allocated their
+ * pivots at every call and crashed on a failed malloc) and only the continuation's room for
+ * points in continue; its branch here is long enough (more than 64 points) that the room
+ * doubles, so a failed realloc strikes in the middle of the branch. Each case must:
+ *   - return FRICREG_OK or FRICREG_ENOMEM from each call, a failure recorded in the driver;
+ *   - a call that returned OK: its results equal the run with no failure, bit for bit;
+ *   - a failed solve or displacement: the caller's array untouched; a failed continue: the
+ *     points reached so far kept, each equal to the run's with no failure (fricreg_hb.h);
+ *   - the same driver, run again with no failure, gives the reference run bit for bit;
+ *   - never call GSL's error handler, leave no block allocated. */
+
+enum { HB_JENKINS, HB_IWAN, HB_LIFTOFF };
+
+struct hb_case {
+    const char *name;
+    int sparse, kind;
+    double omega, omega0, omega1, ds, ds_max;
+    size_t max_points;
+};
+
+#define HB_MAX_POINTS 256
+#define HB_UNTOUCHED (-2.385e-7) /* what the caller's arrays hold before a call */
+
+struct hb_run {
+    int status[3]; /* solve, displacement, continue */
+    double q[14], x[14];
+    size_t npts;
+    double pts[3 * HB_MAX_POINTS]; /* Omega, rms[2] per point */
+};
+
+/* The 2-dof model of the scripts above (M, K, Rayleigh or, sparse, the _csc setters with C),
+ * H = 3, one element on dof 1 (with lift-off, its normal row on dof 0) and the excitation. */
+static fricreg_hb *hb_case_new(const struct hb_case *c)
+{
+    const double M[4] = {1.3, 0.0, 0.0, 0.9}, K[4] = {4.2, -1.7, -1.7, 2.385};
+    const double J[2] = {0.0, 1.0}, Jn[2] = {-1.0, 0.0}, kt[1] = {1.5}, mun[1] = {0.25};
+    const double k[3] = {1.5, 0.7, 0.4}, phi[3] = {0.25, 0.1, 0.05}, mu[1] = {0.4}, n0[1] = {0.5},
+                 kn[1] = {2.0}, pc[2] = {0.6, 0.0}, ps[2] = {0.0, 0.125};
+    fricreg_hb *hb = NULL;
+    if (fricreg_hb_create(2, 1, 3, &hb) != FRICREG_OK)
+        return NULL;
+    int status = FRICREG_OK;
+    for (int i = 0; i < 3 && c->sparse && status == FRICREG_OK; i++)
+        status = hb_sparse_call(hb, i, NULL);
+    if (!c->sparse && status == FRICREG_OK)
+        status = fricreg_hb_set_mass(hb, 2, M);
+    if (!c->sparse && status == FRICREG_OK)
+        status = fricreg_hb_set_stiffness(hb, 2, K);
+    if (!c->sparse && status == FRICREG_OK)
+        status = fricreg_hb_set_rayleigh(hb, 0.05, 0.01);
+    if (status == FRICREG_OK)
+        status = c->kind == HB_JENKINS ? fricreg_hb_set_elements(hb, 1, 2, J, kt, mun)
+                 : c->kind == HB_IWAN
+                     ? fricreg_hb_set_iwan(hb, 1, 2, J, 3, k, phi)
+                     : fricreg_hb_set_normal_elements(hb, 1, 2, J, Jn, kt, mu, n0, kn);
+    if (status == FRICREG_OK)
+        status = fricreg_hb_set_excitation(hb, 2, pc, ps);
+    if (status == FRICREG_OK)
+        status = fricreg_hb_set_continuation(hb, c->ds, 1e-6, c->ds_max, c->max_points);
+    if (status != FRICREG_OK) {
+        fricreg_hb_free(hb);
+        return NULL;
+    }
+    return hb;
+}
+
+static int hb_untouched(const double *x, size_t n)
+{
+    for (size_t k = 0; k < n; k++)
+        if (x[k] != HB_UNTOUCHED)
+            return 0;
+    return 1;
+}
+
+/* solve at omega (from the stuck guess), the displacement, then the branch omega0 .. omega1
+ * and its points; each failed call's status recorded in the driver (else a violation). */
+static void hb_play(fricreg_hb *hb, const struct hb_case *c, struct hb_run *r, long *solve_allocs)
+{
+    size_t nq = c->kind == HB_LIFTOFF ? 14 : 7;
+    memset(r, 0, sizeof *r);
+    for (size_t k = 0; k < 14; k++)
+        r->q[k] = r->x[k] = HB_UNTOUCHED;
+    r->status[0] = fricreg_hb_solve(hb, c->omega, nq, NULL, r->q);
+    r->status[1] = fricreg_hb_displacement(hb, 2, 7, r->x);
+    if (solve_allocs != NULL)
+        *solve_allocs = n_allocs;
+    r->status[2] = fricreg_hb_continue(hb, c->omega0, c->omega1, nq, NULL);
+    for (int i = 0; i < 3; i++)
+        if (r->status[i] != FRICREG_OK && fricreg_hb_errcode(hb) != r->status[i] && i == 2)
+            NOTE("continue returned %d, but %d recorded", r->status[i], fricreg_hb_errcode(hb));
+    int was_paused = paused;
+    paused = 1; /* the getters allocate nothing; reading them is not part of the case */
+    r->npts = fricreg_hb_points(hb);
+    if (r->npts > HB_MAX_POINTS)
+        NOTE("%zu points: more than the test keeps", r->npts);
+    for (size_t k = 0; k < r->npts && k < HB_MAX_POINTS; k++)
+        if (fricreg_hb_point(hb, k, &r->pts[3 * k], 2, &r->pts[3 * k + 1]) != FRICREG_OK)
+            NOTE("point %zu of %zu not readable", k, r->npts);
+    paused = was_paused;
+}
+
+static int same_bits(const double *a, const double *b, size_t n)
+{
+    return memcmp(a, b, n * sizeof *a) == 0;
+}
+
+/* What a failed case's run must show against the reference ref; "" if it does. */
+static const char *hb_judge(const struct hb_run *r, const struct hb_run *ref, size_t nq)
+{
+    for (int i = 0; i < 3; i++)
+        if (r->status[i] != FRICREG_OK && r->status[i] != FRICREG_ENOMEM &&
+            !(i == 1 && r->status[0] != FRICREG_OK && r->status[1] == FRICREG_EINVAL))
+            return "a call returned neither FRICREG_OK nor FRICREG_ENOMEM";
+    if (r->status[0] == FRICREG_OK ? !same_bits(r->q, ref->q, nq) : !hb_untouched(r->q, 14))
+        return r->status[0] == FRICREG_OK ? "solve: OK with other results"
+                                          : "solve failed but wrote q";
+    if (r->status[1] == FRICREG_OK ? !same_bits(r->x, ref->x, 14) : !hb_untouched(r->x, 14))
+        return r->status[1] == FRICREG_OK ? "displacement: OK with other results"
+                                          : "displacement failed but wrote x";
+    if (r->status[2] == FRICREG_OK && r->npts != ref->npts)
+        return "continue: OK with another number of points";
+    if (r->npts > ref->npts || !same_bits(r->pts, ref->pts, 3 * r->npts))
+        return "continue: the points kept differ from the run's with no failure";
+    return "";
+}
+
+static const struct hb_case hb_cases[] = {
+    /* dense: a branch of more than 64 points (the room for points doubles once) */
+    {"hb dense, Jenkins", 0, HB_JENKINS, 1.1, 1.0, 1.2, 0.01, 0.01, HB_MAX_POINTS},
+    {"hb dense, Iwan", 0, HB_IWAN, 1.1, 1.0, 1.2, 0.01, 0.01, HB_MAX_POINTS},
+    {"hb dense, lift-off", 0, HB_LIFTOFF, 1.1, 1.0, 1.2, 0.01, 0.01, HB_MAX_POINTS},
+    /* sparse: every factor allocates (UMFPACK), so a short branch, in few steps */
+    {"hb sparse, Jenkins", 1, HB_JENKINS, 1.1, 1.2, 1.0, 0.25, 0.5, HB_MAX_POINTS},
+    {"hb sparse, Iwan", 1, HB_IWAN, 1.1, 1.0, 1.2, 0.25, 0.5, HB_MAX_POINTS},
+    {"hb sparse, lift-off", 1, HB_LIFTOFF, 1.1, 1.0, 1.2, 0.25, 0.5, HB_MAX_POINTS},
+};
+
+START_TEST(test_hb_solve_continue)
+{
+    const struct hb_case *c = &hb_cases[_i];
+    size_t nq = c->kind == HB_LIFTOFF ? 14 : 7;
+    static struct hb_run ref, again, got;
+    gsl_set_error_handler(count_gsl_error);
+    gsl_handler_calls = 0;
+    violation[0] = '\0';
+    long live_before = live, solve_allocs = 0;
+    /* armed from the set-up to the free, so that the hook tracks every block; counted and
+     * failed only while not paused: the calls under test */
+    hook_arm(0);
+    paused = 1;
+    fricreg_hb *hb = hb_case_new(c);
+    if (hb == NULL) {
+        hook_disarm();
+        ck_abort_msg("%s: the set-up failed with no failure injected", c->name);
+    }
+    paused = 0;
+    hb_play(hb, c, &ref, &solve_allocs);
+    long n = n_allocs;
+    paused = 1;
+    hb_play(hb, c, &again, NULL); /* the same driver again: the same bits (the test's basis) */
+    fricreg_hb_free(hb);
+    hook_disarm();
+    for (int i = 0; i < 3; i++)
+        ck_assert_msg(ref.status[i] == FRICREG_OK, "%s: call %d returned %d with no failure",
+                      c->name, i, ref.status[i]);
+    ck_assert_msg(violation[0] == '\0', "%s: %s", c->name, violation);
+    ck_assert_msg(memcmp(&ref, &again, sizeof ref) == 0, "%s: a second run differs", c->name);
+    ck_assert_int_eq(live, live_before);
+    if (!c->sparse) {
+        ck_assert_msg(solve_allocs == 0, "%s: solve and displacement made %ld allocations", c->name,
+                      solve_allocs);
+        ck_assert_msg(ref.npts > 64, "%s: %zu points: the room for points does not grow", c->name,
+                      ref.npts);
+    }
+    ck_assert_msg(n > 0, "%s: allocates nothing, so the loop tests nothing", c->name);
+    long enomem = 0, ok = 0, broken = 0;
+    char first[512] = "";
+    for (long k = 1; k <= n; k++) {
+        live_before = live;
+        violation[0] = '\0';
+        gsl_handler_calls = 0;
+        hook_arm(k);
+        paused = 1;
+        hb = hb_case_new(c); /* not failed (paused): it worked above */
+        paused = 0;
+        hb_play(hb, c, &got, NULL);
+        paused = 1;
+        long failed = n_failed;
+        const char *why = hb_judge(&got, &ref, nq);
+        if (why[0] == '\0') {
+            hb_play(hb, c, &again, NULL); /* the driver still works, as before the failure */
+            if (memcmp(&again, &ref, sizeof ref) != 0)
+                why = "run again with no failure, the driver gives other results";
+        }
+        fricreg_hb_free(hb);
+        hook_disarm();
+        if (why[0] == '\0' && failed != 1)
+            why = "the allocation was not reached";
+        if (why[0] == '\0' && violation[0] != '\0')
+            why = violation;
+        if (why[0] == '\0' && gsl_handler_calls != 0)
+            why = gsl_handler_reason;
+        if (why[0] == '\0' && live != live_before)
+            why = "a block leaked";
+        int any = 0;
+        for (int i = 0; i < 3; i++)
+            any |= got.status[i] == FRICREG_ENOMEM;
+        enomem += any;
+        ok += !any;
+        if (why[0] != '\0' && broken++ == 0)
+            snprintf(first, sizeof first, "allocation %ld of %ld: %s (statuses %d %d %d)", k, n,
+                     why, got.status[0], got.status[1], got.status[2]);
+    }
+    printf("%s: %ld allocations in solve, displacement and continue (%ld in solve and "
+           "displacement), %zu points: %ld cases, %ld ENOMEM, %ld OK, %ld broken\n",
+           c->name, n, solve_allocs, ref.npts, n, enomem, ok, broken);
+    fflush(stdout);
+    ck_assert_msg(broken == 0, "%s: %ld broken, the first %s", c->name, broken, first);
+}
+END_TEST
+
+/* The AFT's six evaluations, each path, with and without the Jacobian, and the Iwan elements'
+ * setters, trials, commit, reset and getters, make no allocation at all (their headers: all
+ * memory is allocated at create), so no allocation can fail inside them; the create scripts
+ * above fail every allocation of the creates. */
+START_TEST(test_aft_iwan_calls_do_not_allocate)
+{
+    fricreg_aft *a = NULL;
+    ck_assert_int_eq(fricreg_aft_create(3, 64, &a), FRICREG_OK);
+    const double u[7] = {0.3, 1.2, -0.4, 0.1, 0.9, -0.7, 0.35}, k[2] = {2.385, 1.0},
+                 phi[2] = {0.7, 0.25}, g[7] = {0.2, 0.5, 0.1, -0.3, 0.05, 0.0, 0.1};
+    double f[7], nf[7], jac[49], jac2[196];
+    int st[12], c = 0;
+    gsl_set_error_handler(count_gsl_error);
+    gsl_handler_calls = 0;
+    hook_arm(1);
+    for (int j = 0; j < 2; j++) {
+        st[c++] = fricreg_aft_jenkins_exact(a, 2.385, 0.7, 7, u, f, j ? jac : NULL);
+        st[c++] = fricreg_aft_jenkins_sampled(a, 2.385, 0.7, 7, u, f, j ? jac : NULL);
+        st[c++] = fricreg_aft_iwan_exact(a, 2, k, phi, 7, u, f, j ? jac : NULL);
+        st[c++] = fricreg_aft_iwan_sampled(a, 2, k, phi, 7, u, f, j ? jac : NULL);
+        st[c++] = fricreg_aft_jenkins_normal_exact(a, 2.385, 0.4, 0.3, 2.0, 7, u, g, f, nf,
+                                                   j ? jac2 : NULL);
+        st[c++] = fricreg_aft_jenkins_normal_sampled(a, 2.385, 0.4, 0.3, 2.0, 7, u, g, f, nf,
+                                                     j ? jac2 : NULL);
+    }
+    hook_disarm();
+    for (int i = 0; i < c; i++)
+        ck_assert_msg(st[i] == FRICREG_OK, "AFT call %d: %s", i, fricreg_aft_errmsg(a));
+    ck_assert_msg(n_allocs == 0, "AFT evaluations made %ld allocations", n_allocs);
+    fricreg_aft_free(a);
+
+    for (int dim = 1; dim <= 2; dim++) {
+        fricreg_iwan *iw = NULL;
+        ck_assert_int_eq(fricreg_iwan_create(dim, 2, 3, &iw), FRICREG_OK);
+        const double ki[6] = {2.385, 1.0, 0.5, 1.5, 0.25, 3.0}, pi[6] = {0.7125, 0.25, 3, 1, 1, 1};
+        const double fs[2] = {2.385, 1.0}, kt[2] = {10.0, 4.0}, chi[2] = {-0.5, -0.2},
+                     beta[2] = {0.35, 0.0}, n0[2] = {1.5, 2.0}, kn[2] = {3.0, 0.0};
+        const double ui[4] = {0.5, -0.25, 1.5, 0.0}, gi[2] = {0.1, -0.2};
+        double fo[4], t[8], tg[4], nfo[2], w[12], kk[6], pp[6];
+        int s[10];
+        hook_arm(1);
+        s[0] = fricreg_iwan_set_params(iw, 2, 3, ki, pi);
+        s[1] = fricreg_iwan_get_params(iw, 2, 3, kk, pp);
+        s[2] = fricreg_iwan_trial(iw, 2, ui, fo, t);
+        s[3] = fricreg_iwan_commit(iw);
+        s[4] = fricreg_iwan_set_segalman(iw, 2, fs, kt, chi, beta, 1e-4);
+        s[5] = fricreg_iwan_set_normal(iw, 2, n0, kn);
+        s[6] = fricreg_iwan_trial_normal(iw, 2, ui, gi, fo, nfo, t, tg);
+        s[7] = fricreg_iwan_commit(iw);
+        s[8] = fricreg_iwan_get_slider(iw, 2, 3, w);
+        s[9] = fricreg_iwan_reset(iw);
+        hook_disarm();
+        for (int i = 0; i < 10; i++)
+            ck_assert_msg(s[i] == FRICREG_OK, "dim %d, Iwan call %d: %s", dim, i,
+                          fricreg_iwan_errmsg(iw));
+        ck_assert_msg(n_allocs == 0, "dim %d: Iwan calls made %ld allocations", dim, n_allocs);
+        fricreg_iwan_free(iw);
+    }
+    ck_assert_int_eq(gsl_handler_calls, 0);
+}
+END_TEST
 
 /* ---- The tests ------------------------------------------------------------------------------- */
 
@@ -2661,6 +2958,7 @@ static Suite *alloc_suite(void)
     tcase_add_test(core, test_iwan_trial_does_not_allocate);
     tcase_add_test(core, test_aft_create);
     tcase_add_test(core, test_aft_eval_does_not_allocate);
+    tcase_add_test(core, test_aft_iwan_calls_do_not_allocate);
     tcase_add_loop_test(core, test_disk_ctx_set_coupling, 0, 2);
     tcase_add_test(core, test_disk_eval_does_not_allocate);
     tcase_add_test(core, test_ctx_set_stribeck);
@@ -2686,6 +2984,9 @@ static Suite *alloc_suite(void)
     tcase_add_loop_test(drivers, test_structure_jenkins_2d_run, 0, 5);
     tcase_add_loop_test(drivers, test_structure_normal_run, 0, 3);
     suite_add_tcase(s, drivers);
+    TCase *hb = tcase_create("harmonic_balance"); /* alone: CK_RUN_CASE=harmonic_balance */
+    tcase_add_loop_test(hb, test_hb_solve_continue, 0, (int)(sizeof hb_cases / sizeof hb_cases[0]));
+    suite_add_tcase(s, hb);
     return s;
 }
 
