@@ -609,16 +609,16 @@ contains
     end if
   end function check_size
 
-  !> FRICREG_OK if an array of shape extents is expected x expected, else a recorded
-  !> FRICREG_ESIZE naming the array and the dimension.
-  function check_square(self, what, array, extents, expected) result(status)
+  !> FRICREG_OK if a is expected x expected, else a recorded FRICREG_ESIZE naming the array
+  !> and the dimension. Takes the array itself: shape(a) would be a temporary at each call.
+  function check_square(self, what, array, a, expected) result(status)
     class(fricreg_object), intent(inout) :: self
     character(len=*), intent(in) :: what, array
-    integer, intent(in) :: extents(2)
+    real(c_double), intent(in) :: a(:, :)
     integer(c_size_t), intent(in) :: expected
     integer(c_int) :: status
-    status = self%check_size(what, array // ', 1', extents(1), expected)
-    if (status == FRICREG_OK) status = self%check_size(what, array // ', 2', extents(2), expected)
+    status = self%check_size(what, array // ', 1', size(a, 1), expected)
+    if (status == FRICREG_OK) status = self%check_size(what, array // ', 2', size(a, 2), expected)
   end function check_square
 
   ! ---- Laws --------------------------------------------------------------------------------
@@ -855,7 +855,7 @@ contains
     integer(c_size_t) :: m
     m = fricreg_ctx_size(self%ptr)
     status = self%ready('set_coupling_dense', 'context')
-    if (status == FRICREG_OK) status = self%check_square('set_coupling_dense', 'W', shape(W), m)
+    if (status == FRICREG_OK) status = self%check_square('set_coupling_dense', 'W', W, m)
     if (status == FRICREG_OK) status = self%record(fricreg_ctx_set_coupling_dense(self%ptr, m, W))
   end function ctx_set_coupling_dense
 
@@ -899,9 +899,10 @@ contains
     integer(c_int64_t), intent(in), contiguous :: rowptr(:), colind(:)
     real(c_double), intent(in), contiguous :: values(:)
     integer(c_int) :: status
+    character(len=6), parameter :: names(3) = [character(len=6) :: 'rowptr', 'colind', 'values']
     status = self%ready('set_coupling_csr', 'context')
     if (status == FRICREG_OK) status = ctx_check_compressed(self, 'set_coupling_csr', &
-      [character(len=6) :: 'rowptr', 'colind', 'values'], flags, rowptr, colind, values)
+      names, flags, rowptr, colind, values)
     if (status == FRICREG_OK) status = self%record(fricreg_ctx_set_coupling_csr(self%ptr, &
       fricreg_ctx_size(self%ptr), flags, rowptr, colind, values))
   end function ctx_set_coupling_csr
@@ -917,9 +918,10 @@ contains
     integer(c_int64_t), intent(in), contiguous :: colptr(:), rowind(:)
     real(c_double), intent(in), contiguous :: values(:)
     integer(c_int) :: status
+    character(len=6), parameter :: names(3) = [character(len=6) :: 'colptr', 'rowind', 'values']
     status = self%ready('set_coupling_csc', 'context')
     if (status == FRICREG_OK) status = ctx_check_compressed(self, 'set_coupling_csc', &
-      [character(len=6) :: 'colptr', 'rowind', 'values'], flags, colptr, rowind, values)
+      names, flags, colptr, rowind, values)
     if (status == FRICREG_OK) status = self%record(fricreg_ctx_set_coupling_csc(self%ptr, &
       fricreg_ctx_size(self%ptr), flags, colptr, rowind, values))
   end function ctx_set_coupling_csc
@@ -995,9 +997,9 @@ contains
     m = fricreg_ctx_size(self%ptr)
     status = self%ready('tangent', 'context')
     if (status == FRICREG_OK .and. present(df_dzdot)) &
-      status = self%check_square('tangent', 'df_dzdot', shape(df_dzdot), m)
+      status = self%check_square('tangent', 'df_dzdot', df_dzdot, m)
     if (status == FRICREG_OK .and. present(df_dafree)) &
-      status = self%check_square('tangent', 'df_dafree', shape(df_dafree), m)
+      status = self%check_square('tangent', 'df_dafree', df_dafree, m)
     if (status == FRICREG_OK) &
       status = self%record(fricreg_ctx_tangent(self%ptr, m, df_dzdot, df_dafree))
     if (status /= FRICREG_OK) return
@@ -1057,8 +1059,8 @@ contains
     if (status == FRICREG_OK) status = self%check_size('solve_step', 'zdot_start', size(zdot_start), m)
     if (status == FRICREG_OK) status = self%check_size('solve_step', 'zdot_pred', size(zdot_pred), m)
     if (status == FRICREG_OK) status = self%check_size('solve_step', 'a_pred', size(a_pred), m)
-    if (status == FRICREG_OK) status = self%check_square('solve_step', 'W', shape(W), m)
-    if (status == FRICREG_OK) status = self%check_square('solve_step', 'Weff', shape(Weff), m)
+    if (status == FRICREG_OK) status = self%check_square('solve_step', 'W', W, m)
+    if (status == FRICREG_OK) status = self%check_square('solve_step', 'Weff', Weff, m)
     if (status == FRICREG_OK) status = self%check_size('solve_step', 'f', size(f), m)
     if (status == FRICREG_OK) &
       status = self%record(fricreg_ctx_solve_step(self%ptr, m, zdot_start, zdot_pred, a_pred, &
@@ -1239,7 +1241,7 @@ contains
     integer(c_size_t) :: m
     m = fricreg_disk_ctx_size(self%ptr)
     status = self%ready('set_coupling_dense', 'context')
-    if (status == FRICREG_OK) status = self%check_square('set_coupling_dense', 'W', shape(W), 2 * m)
+    if (status == FRICREG_OK) status = self%check_square('set_coupling_dense', 'W', W, 2 * m)
     if (status == FRICREG_OK) &
       status = self%record(fricreg_disk_ctx_set_coupling_dense(self%ptr, m, W))
   end function dctx_set_coupling_dense
@@ -1333,9 +1335,9 @@ contains
     m = fricreg_disk_ctx_size(self%ptr)
     status = self%ready('tangent', 'context')
     if (status == FRICREG_OK .and. present(df_dzdot)) &
-      status = self%check_square('tangent', 'df_dzdot', shape(df_dzdot), 2 * m)
+      status = self%check_square('tangent', 'df_dzdot', df_dzdot, 2 * m)
     if (status == FRICREG_OK .and. present(df_dafree)) &
-      status = self%check_square('tangent', 'df_dafree', shape(df_dafree), 2 * m)
+      status = self%check_square('tangent', 'df_dafree', df_dafree, 2 * m)
     if (status == FRICREG_OK) &
       status = self%record(fricreg_disk_ctx_tangent(self%ptr, m, df_dzdot, df_dafree))
     if (status /= FRICREG_OK) return
@@ -1389,7 +1391,10 @@ contains
   logical function jk_shaped(self, a)
     class(fricreg_jenkins_elements), intent(in) :: self
     real(c_double), intent(in) :: a(:, :)
-    jk_shaped = size(a, 1) == self%dim() .and. size(a, 2) == self%size()
+    integer :: d, n
+    d = self%dim()
+    n = self%size()
+    jk_shaped = size(a, 1) == d .and. size(a, 2) == n
   end function jk_shaped
 
   !> Stiffnesses kt(n) > 0 and slip bounds mun(n) >= 0 (a pending trial is discarded).
@@ -1417,13 +1422,15 @@ contains
     real(c_double), intent(inout), contiguous, optional :: dfdu(:, :, :)
     integer(c_int) :: status
     integer(c_size_t) :: n
+    integer :: d
     n = fricreg_jenkins_size(self%ptr)
     status = self%ready('trial', 'Jenkins elements')
     if (status == FRICREG_OK .and. .not. (jk_shaped(self, u) .and. jk_shaped(self, f))) &
       status = self%fail(FRICREG_ESIZE, 'trial: u and f must be (dim, n)')
     if (status == FRICREG_OK .and. present(dfdu)) then
-      if (size(dfdu, 1) /= self%dim() .or. size(dfdu, 2) /= self%dim() .or. &
-          size(dfdu, 3) /= self%size()) &
+      d = self%dim()
+      if (size(dfdu, 1) /= d .or. size(dfdu, 2) /= d .or. &
+          size(dfdu, 3) /= int(n)) &
         status = self%fail(FRICREG_ESIZE, 'trial: dfdu must be (dim, dim, n)')
     end if
     if (status == FRICREG_OK) status = self%record(fricreg_jenkins_trial(self%ptr, n, u, f, dfdu))
@@ -1783,7 +1790,7 @@ contains
     if (status == FRICREG_OK) status = self%check_size(what, 'u', size(u), n)
     if (status == FRICREG_OK) status = self%check_size(what, 'f', size(f), n)
     if (status == FRICREG_OK .and. present(jac)) &
-      status = self%check_square(what, 'jac', shape(jac), n)
+      status = self%check_square(what, 'jac', jac, n)
   end function aft_check
 
   !> Exact AFT of one Jenkins element of stiffness kt > 0 and bound mun >= 0: f(2H+1) and, if
@@ -2389,7 +2396,7 @@ contains
     real(c_double), intent(in) :: A(:, :)
     integer(c_int) :: status
     status = self%ready(what, 'structure')
-    if (status == FRICREG_OK) status = self%check_square(what, name, shape(A), self%n)
+    if (status == FRICREG_OK) status = self%check_square(what, name, A, self%n)
   end function struct_square
 
   !> FRICREG_OK if self is created and the vector x has n entries.
@@ -2454,12 +2461,14 @@ contains
     class(fricreg_structure), intent(inout) :: self
     real(c_double), intent(in) :: J(:, :)
     integer(c_int) :: status
+    real(c_double), allocatable :: Jc(:, :) ! J transposed: C's row-major J
     status = self%ready('set_contacts', 'structure')
     if (status == FRICREG_OK) status = self%check_size('set_contacts', 'J, 1', size(J, 1), self%m)
     if (status == FRICREG_OK) status = self%check_size('set_contacts', 'J, 2', size(J, 2), self%n)
+    if (status == FRICREG_OK) allocate (Jc, source=transpose(J))
     if (status == FRICREG_OK) status = self%record( &
                                        fricreg_structure_set_contacts(self%ptr, self%m, self%n, &
-                                                                      transpose(J)))
+                                                                      Jc))
   end function struct_set_contacts
 
   !> Jenkins elements on the rows of Je(me, ndof) in Fortran's order (fricreg_structure_set_jenkins:
@@ -2468,17 +2477,20 @@ contains
   !> me entries; C's codes (FRICREG_EINVAL for a zero row, kt <= 0 or mun < 0, ...).
   function struct_set_jenkins(self, Je, kt, mun) result(status)
     class(fricreg_structure), intent(inout) :: self
-    real(c_double), intent(in) :: Je(:, :), kt(:), mun(:)
+    real(c_double), intent(in) :: Je(:, :)
+    real(c_double), intent(in), contiguous :: kt(:), mun(:)
     integer(c_int) :: status
     integer(c_size_t) :: me
+    real(c_double), allocatable :: Jec(:, :) ! Je transposed: C's row-major Je
     me = int(size(Je, 1), c_size_t)
     status = self%ready('set_jenkins', 'structure')
     if (status == FRICREG_OK) status = self%check_size('set_jenkins', 'Je, 2', size(Je, 2), self%n)
     if (status == FRICREG_OK) status = self%check_size('set_jenkins', 'kt', size(kt), me)
     if (status == FRICREG_OK) status = self%check_size('set_jenkins', 'mun', size(mun), me)
+    if (status == FRICREG_OK) allocate (Jec, source=transpose(Je))
     if (status == FRICREG_OK) status = self%record( &
                                        fricreg_structure_set_jenkins(self%ptr, me, self%n, &
-                                                                     transpose(Je), kt, mun))
+                                                                     Jec, kt, mun))
   end function struct_set_jenkins
 
   !> The Jenkins elements' forces f(me), committed slider positions w(me) and dissipation
@@ -2518,9 +2530,11 @@ contains
   !> C's codes (FRICREG_EINVAL for a zero row, kt <= 0 or mun < 0, ...).
   function struct_set_jenkins_2d(self, Je, kt, mun) result(status)
     class(fricreg_structure), intent(inout) :: self
-    real(c_double), intent(in) :: Je(:, :), kt(:), mun(:)
+    real(c_double), intent(in) :: Je(:, :)
+    real(c_double), intent(in), contiguous :: kt(:), mun(:)
     integer(c_int) :: status
     integer(c_size_t) :: me
+    real(c_double), allocatable :: Jec(:, :) ! Je transposed: C's row-major Je
     me = int(size(kt), c_size_t)
     status = self%ready('set_jenkins_2d', 'structure')
     if (status == FRICREG_OK) status = self%check_size('set_jenkins_2d', 'Je, 1', size(Je, 1), &
@@ -2528,9 +2542,10 @@ contains
     if (status == FRICREG_OK) status = self%check_size('set_jenkins_2d', 'Je, 2', size(Je, 2), &
                                                        self%n)
     if (status == FRICREG_OK) status = self%check_size('set_jenkins_2d', 'mun', size(mun), me)
+    if (status == FRICREG_OK) allocate (Jec, source=transpose(Je))
     if (status == FRICREG_OK) status = self%record( &
                                        fricreg_structure_set_jenkins_2d(self%ptr, me, self%n, &
-                                                                        transpose(Je), kt, mun))
+                                                                        Jec, kt, mun))
   end function struct_set_jenkins_2d
 
   !> The 2-D Jenkins elements' forces f(2, me), committed slider positions w(2, me) (element
@@ -2576,9 +2591,11 @@ contains
   !> codes (FRICREG_EINVAL for a zero row, ns = 0, k <= 0 or phi < 0, ...).
   function struct_set_iwan(self, Je, k, phi) result(status)
     class(fricreg_structure), intent(inout) :: self
-    real(c_double), intent(in) :: Je(:, :), k(:, :), phi(:, :)
+    real(c_double), intent(in) :: Je(:, :)
+    real(c_double), intent(in), contiguous :: k(:, :), phi(:, :)
     integer(c_int) :: status
     integer(c_size_t) :: me
+    real(c_double), allocatable :: Jec(:, :) ! Je transposed: C's row-major Je
     me = int(size(Je, 1), c_size_t)
     status = self%ready('set_iwan', 'structure')
     if (status == FRICREG_OK) status = self%check_size('set_iwan', 'Je, 2', size(Je, 2), self%n)
@@ -2586,9 +2603,10 @@ contains
     if (status == FRICREG_OK) status = self%check_size('set_iwan', 'phi, 1', size(phi, 1), &
                                                        int(size(k, 1), c_size_t))
     if (status == FRICREG_OK) status = self%check_size('set_iwan', 'phi, 2', size(phi, 2), me)
+    if (status == FRICREG_OK) allocate (Jec, source=transpose(Je))
     if (status == FRICREG_OK) status = self%record( &
                                        fricreg_structure_set_iwan(self%ptr, me, self%n, &
-                                                                  transpose(Je), &
+                                                                  Jec, &
                                                                   int(size(k, 1), c_size_t), &
                                                                   k, phi))
   end function struct_set_iwan
@@ -2639,10 +2657,12 @@ contains
   !> with ndof columns and kt, mu, n0, kn me entries; C's codes otherwise.
   function struct_set_jenkins_normal(self, Je, Jn, kt, mu, n0, kn) result(status)
     class(fricreg_structure), intent(inout) :: self
-    real(c_double), intent(in) :: Je(:, :), Jn(:, :), kt(:), mu(:), n0(:), kn(:)
+    real(c_double), intent(in) :: Je(:, :), Jn(:, :)
+    real(c_double), intent(in), contiguous :: kt(:), mu(:), n0(:), kn(:)
     integer(c_int) :: status
     integer(c_size_t) :: me
     character(len=*), parameter :: who = 'set_jenkins_normal'
+    real(c_double), allocatable :: Jec(:, :), Jnc(:, :) ! transposed: C's row-major Je, Jn
     me = int(size(Je, 1), c_size_t)
     status = self%ready(who, 'structure')
     if (status == FRICREG_OK) status = self%check_size(who, 'Je, 2', size(Je, 2), self%n)
@@ -2652,11 +2672,13 @@ contains
     if (status == FRICREG_OK) status = self%check_size(who, 'mu', size(mu), me)
     if (status == FRICREG_OK) status = self%check_size(who, 'n0', size(n0), me)
     if (status == FRICREG_OK) status = self%check_size(who, 'kn', size(kn), me)
+    if (status == FRICREG_OK) allocate (Jec, source=transpose(Je))
+    if (status == FRICREG_OK) allocate (Jnc, source=transpose(Jn))
     if (status == FRICREG_OK) status = self%record( &
                                        fricreg_structure_set_jenkins_normal(self%ptr, me, &
                                                                             self%n, &
-                                                                            transpose(Je), &
-                                                                            transpose(Jn), kt, &
+                                                                            Jec, &
+                                                                            Jnc, kt, &
                                                                             mu, n0, kn))
   end function struct_set_jenkins_normal
 
@@ -3355,17 +3377,18 @@ contains
     if (c_associated(self%ptr)) hb_harmonics = int((self%nc - 1) / 2)
   end function hb_harmonics
 
-  !> FRICREG_OK if self is created and a has the extents (n1, n2), else a recorded failure.
-  function hb_shape(self, what, name, extents, n1, n2) result(status)
+  !> FRICREG_OK if self is created and a (rank 1 or 2) has the extents (n1, n2), else a
+  !> recorded failure. Takes the array itself: shape(a) would be a temporary at each call.
+  function hb_shape(self, what, name, a, n1, n2) result(status)
     class(fricreg_hb_driver), intent(inout) :: self
     character(len=*), intent(in) :: what, name
-    integer, intent(in) :: extents(:)
+    real(c_double), intent(in) :: a(..)
     integer(c_size_t), intent(in) :: n1, n2
     integer(c_int) :: status
     status = self%ready(what, 'HB driver')
-    if (status == FRICREG_OK) status = self%check_size(what, name // ', 1', extents(1), n1)
-    if (status == FRICREG_OK .and. size(extents) > 1) &
-      status = self%check_size(what, name // ', 2', extents(2), n2)
+    if (status == FRICREG_OK) status = self%check_size(what, name // ', 1', size(a, 1), n1)
+    if (status == FRICREG_OK .and. rank(a) > 1) &
+      status = self%check_size(what, name // ', 2', size(a, 2), n2)
   end function hb_shape
 
   !> Mass matrix M(ndof, ndof), symmetric (the same numbers in C's row order).
@@ -3374,7 +3397,7 @@ contains
     class(fricreg_hb_driver), intent(inout) :: self
     real(c_double), intent(in), contiguous :: M(:, :)
     integer(c_int) :: status
-    status = self%hb_shape('set_mass', 'M', shape(M), self%n, self%n)
+    status = self%hb_shape('set_mass', 'M', M, self%n, self%n)
     if (status == FRICREG_OK) status = self%record(fricreg_hb_set_mass(self%ptr, self%n, M))
   end function hb_set_mass
 
@@ -3383,7 +3406,7 @@ contains
     class(fricreg_hb_driver), intent(inout) :: self
     real(c_double), intent(in), contiguous :: K(:, :)
     integer(c_int) :: status
-    status = self%hb_shape('set_stiffness', 'K', shape(K), self%n, self%n)
+    status = self%hb_shape('set_stiffness', 'K', K, self%n, self%n)
     if (status == FRICREG_OK) status = self%record(fricreg_hb_set_stiffness(self%ptr, self%n, K))
   end function hb_set_stiffness
 
@@ -3392,7 +3415,7 @@ contains
     class(fricreg_hb_driver), intent(inout) :: self
     real(c_double), intent(in), contiguous :: C(:, :)
     integer(c_int) :: status
-    status = self%hb_shape('set_damping', 'C', shape(C), self%n, self%n)
+    status = self%hb_shape('set_damping', 'C', C, self%n, self%n)
     if (status == FRICREG_OK) status = self%record(fricreg_hb_set_damping(self%ptr, self%n, C))
   end function hb_set_damping
 
@@ -3414,11 +3437,13 @@ contains
     real(c_double), intent(in) :: J(:, :)
     real(c_double), intent(in), contiguous :: kt(:), mun(:)
     integer(c_int) :: status
-    status = self%hb_shape('set_elements', 'J', shape(J), self%m, self%n)
-    if (status == FRICREG_OK) status = self%hb_shape('set_elements', 'kt', shape(kt), self%m, 0_c_size_t)
-    if (status == FRICREG_OK) status = self%hb_shape('set_elements', 'mun', shape(mun), self%m, 0_c_size_t)
+    real(c_double), allocatable :: Jc(:, :) ! J transposed: C's row-major J
+    status = self%hb_shape('set_elements', 'J', J, self%m, self%n)
+    if (status == FRICREG_OK) status = self%hb_shape('set_elements', 'kt', kt, self%m, 0_c_size_t)
+    if (status == FRICREG_OK) status = self%hb_shape('set_elements', 'mun', mun, self%m, 0_c_size_t)
+    if (status == FRICREG_OK) allocate (Jc, source=transpose(J))
     if (status == FRICREG_OK) status = self%record(fricreg_hb_set_elements(self%ptr, self%m, &
-                                                     self%n, transpose(J), kt, mun))
+                                                     self%n, Jc, kt, mun))
     if (status == FRICREG_OK) self%rows = self%m
   end function hb_set_elements
 
@@ -3431,13 +3456,15 @@ contains
     real(c_double), intent(in) :: J(:, :)
     real(c_double), intent(in), contiguous :: k(:, :), phi(:, :)
     integer(c_int) :: status
-    status = self%hb_shape('set_iwan', 'J', shape(J), self%m, self%n)
-    if (status == FRICREG_OK) status = self%hb_shape('set_iwan', 'k', shape(k), &
+    real(c_double), allocatable :: Jc(:, :) ! J transposed: C's row-major J
+    status = self%hb_shape('set_iwan', 'J', J, self%m, self%n)
+    if (status == FRICREG_OK) status = self%hb_shape('set_iwan', 'k', k, &
                                                      int(size(k, 1), c_size_t), self%m)
-    if (status == FRICREG_OK) status = self%hb_shape('set_iwan', 'phi', shape(phi), &
+    if (status == FRICREG_OK) status = self%hb_shape('set_iwan', 'phi', phi, &
                                                      int(size(k, 1), c_size_t), self%m)
+    if (status == FRICREG_OK) allocate (Jc, source=transpose(J))
     if (status == FRICREG_OK) status = self%record(fricreg_hb_set_iwan(self%ptr, self%m, &
-                                                     self%n, transpose(J), &
+                                                     self%n, Jc, &
                                                      int(size(k, 1), c_size_t), k, phi))
     if (status == FRICREG_OK) self%rows = self%m
   end function hb_set_iwan
@@ -3454,15 +3481,18 @@ contains
     real(c_double), intent(in), contiguous :: kt(:), mu(:), n0(:), kn(:)
     integer(c_int) :: status
     character(len=*), parameter :: fn = 'set_normal_elements'
-    status = self%hb_shape(fn, 'Jt', shape(Jt), self%m, self%n)
-    if (status == FRICREG_OK) status = self%hb_shape(fn, 'Jn', shape(Jn), self%m, self%n)
-    if (status == FRICREG_OK) status = self%hb_shape(fn, 'kt', shape(kt), self%m, 0_c_size_t)
-    if (status == FRICREG_OK) status = self%hb_shape(fn, 'mu', shape(mu), self%m, 0_c_size_t)
-    if (status == FRICREG_OK) status = self%hb_shape(fn, 'n0', shape(n0), self%m, 0_c_size_t)
-    if (status == FRICREG_OK) status = self%hb_shape(fn, 'kn', shape(kn), self%m, 0_c_size_t)
+    real(c_double), allocatable :: Jtc(:, :), Jnc(:, :) ! transposed: C's row-major Jt, Jn
+    status = self%hb_shape(fn, 'Jt', Jt, self%m, self%n)
+    if (status == FRICREG_OK) status = self%hb_shape(fn, 'Jn', Jn, self%m, self%n)
+    if (status == FRICREG_OK) status = self%hb_shape(fn, 'kt', kt, self%m, 0_c_size_t)
+    if (status == FRICREG_OK) status = self%hb_shape(fn, 'mu', mu, self%m, 0_c_size_t)
+    if (status == FRICREG_OK) status = self%hb_shape(fn, 'n0', n0, self%m, 0_c_size_t)
+    if (status == FRICREG_OK) status = self%hb_shape(fn, 'kn', kn, self%m, 0_c_size_t)
+    if (status == FRICREG_OK) allocate (Jtc, source=transpose(Jt))
+    if (status == FRICREG_OK) allocate (Jnc, source=transpose(Jn))
     if (status == FRICREG_OK) &
       status = self%record(fricreg_hb_set_normal_elements(self%ptr, self%m, self%n, &
-                                                          transpose(Jt), transpose(Jn), kt, mu, &
+                                                          Jtc, Jnc, kt, mu, &
                                                           n0, kn))
     if (status == FRICREG_OK) self%rows = 2 * self%m
   end function hb_set_normal_elements
@@ -3473,8 +3503,8 @@ contains
     class(fricreg_hb_driver), intent(inout) :: self
     real(c_double), intent(in), contiguous :: pc(:), ps(:)
     integer(c_int) :: status
-    status = self%hb_shape('set_excitation', 'pc', shape(pc), self%n, 0_c_size_t)
-    if (status == FRICREG_OK) status = self%hb_shape('set_excitation', 'ps', shape(ps), self%n, 0_c_size_t)
+    status = self%hb_shape('set_excitation', 'pc', pc, self%n, 0_c_size_t)
+    if (status == FRICREG_OK) status = self%hb_shape('set_excitation', 'ps', ps, self%n, 0_c_size_t)
     if (status == FRICREG_OK) status = self%record(fricreg_hb_set_excitation(self%ptr, self%n, &
                                                      pc, ps))
   end function hb_set_excitation
@@ -3514,9 +3544,9 @@ contains
     real(c_double), intent(inout), contiguous :: q(:, :)
     real(c_double), intent(in), contiguous, optional :: q0(:, :)
     integer(c_int) :: status
-    status = self%hb_shape('solve', 'q', shape(q), self%nc, self%rows)
+    status = self%hb_shape('solve', 'q', q, self%nc, self%rows)
     if (status == FRICREG_OK .and. present(q0)) &
-      status = self%hb_shape('solve', 'q0', shape(q0), self%nc, self%rows)
+      status = self%hb_shape('solve', 'q0', q0, self%nc, self%rows)
     if (status == FRICREG_OK) &
       status = self%record(fricreg_hb_solve(self%ptr, omega, self%nc * self%rows, q0, q))
   end function hb_solve
@@ -3527,7 +3557,7 @@ contains
     class(fricreg_hb_driver), intent(inout) :: self
     real(c_double), intent(inout), contiguous :: x(:, :)
     integer(c_int) :: status
-    status = self%hb_shape('displacement', 'x', shape(x), self%nc, self%n)
+    status = self%hb_shape('displacement', 'x', x, self%nc, self%n)
     if (status == FRICREG_OK) &
       status = self%record(fricreg_hb_displacement(self%ptr, self%n, self%nc, x))
   end function hb_displacement
@@ -3541,7 +3571,7 @@ contains
     integer(c_int) :: status
     status = self%ready('continue', 'HB driver')
     if (status == FRICREG_OK .and. present(q0)) &
-      status = self%hb_shape('continue', 'q0', shape(q0), self%nc, self%rows)
+      status = self%hb_shape('continue', 'q0', q0, self%nc, self%rows)
     if (status == FRICREG_OK) status = self%record(fricreg_hb_continue(self%ptr, omega0, omega1, &
                                                      self%nc * self%rows, q0))
   end function hb_continue
@@ -3560,7 +3590,7 @@ contains
     real(c_double), intent(inout) :: omega
     real(c_double), intent(inout), contiguous :: rms(:)
     integer(c_int) :: status
-    status = self%hb_shape('point', 'rms', shape(rms), self%n, 0_c_size_t)
+    status = self%hb_shape('point', 'rms', rms, self%n, 0_c_size_t)
     if (status == FRICREG_OK .and. k < 1) &
       status = self%fail(FRICREG_EINVAL, 'point: k must be >= 1 (Fortran counts from 1)')
     if (status == FRICREG_OK) status = self%record(fricreg_hb_point(self%ptr, as_size(k - 1), &
