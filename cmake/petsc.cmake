@@ -22,8 +22,22 @@ if(NOT FRICREG_PETSC STREQUAL "OFF")
   endif()
 endif()
 
+# The MPI tests (label mpi: tests/petsc/, examples/petsc/) are registered only when
+# FRICREG_PETSC=ON asks for the adapter: a plain ctest, the quick tier, does not start mpiexec
+# because petsc-dev happens to be installed. The README's MPI command configures with
+# -DFRICREG_PETSC=ON and runs them with ctest -L mpi.
+set(FRICREG_MPI_TESTS OFF)
+if(FRICREG_PETSC_BUILT AND FRICREG_PETSC STREQUAL "ON")
+  set(FRICREG_MPI_TESTS ON)
+endif()
+
 if(FRICREG_PETSC_BUILT)
-  message(STATUS "PETSc ${PETSC_VERSION} and MPI found: building libfricreg_petsc")
+  if(FRICREG_MPI_TESTS)
+    message(STATUS "PETSc ${PETSC_VERSION} and MPI found: building libfricreg_petsc and its MPI tests")
+  else()
+    message(STATUS "PETSc ${PETSC_VERSION} and MPI found: building libfricreg_petsc (its MPI "
+                   "tests, label mpi, with -DFRICREG_PETSC=ON)")
+  endif()
   set(FRICREG_PETSC_VERSION_SCRIPT ${PROJECT_SOURCE_DIR}/src/petsc/fricreg_petsc.map)
   # error.c: the core's message record, compiled in (hidden in libfricreg, as rk4_classic.c in
   # the problems).

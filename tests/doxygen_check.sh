@@ -56,14 +56,14 @@ for header in "$@"; do
     fi
 done | sort -u >"$work/declared"
 [ -s "$work/declared" ] || fail "no declarations found in $*"
-while read -r name; do
-    checked=$((checked + 1))
-    groups=$(awk -v n="$name" '$2 == n {print $1}' "$work/members" | tr '\n' ' ')
-    case $groups in
-    "") fail "$name is in no group (add it to its object's \\{ ... \\} block)" ;;
-    *" "*" "*) fail "$name is in more than one group: $groups" ;;
-    esac
-done <"$work/declared"
+# Each declaration's groups, in one awk (an awk per declaration took seconds a run).
+awk 'FILENAME == ARGV[1] { groups[$2] = groups[$2] $1 " "; next }
+     !($0 in groups) { print "FAIL: " $0 " is in no group (add it to its object'"'"'s \\{ ... \\} block)" }
+     split(groups[$0], g, " ") > 1 { print "FAIL: " $0 " is in more than one group: " groups[$0] }' \
+    "$work/members" "$work/declared" >"$work/groups"
+cat "$work/groups"
+checked=$((checked + $(grep -c . "$work/declared")))
+fails=$((fails + $(grep -c '^FAIL' "$work/groups")))
 echo "$((checked - fails)) passed, $fails failed ($(wc -l <"$work/declared") declarations in \
 $(ls "$work"/xml/group__*.xml 2>/dev/null | wc -l) groups)"
 [ $fails -eq 0 ]

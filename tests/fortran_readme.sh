@@ -7,66 +7,93 @@
 # fricreg_joints_f77.f90, fricreg_structure_f77.f90, fricreg_hb_f77.f90, fricreg_f77_check.f90)
 # as `FRNAME(`, named once only across
 # the files (external names share one space: a second definition would fail at link time, or
-# silently take the first). Usage: fortran_readme.sh ROOT
+# silently take the first). One awk reads the README, the module and the F77 files: a grep per
+# name took half a minute. Usage: fortran_readme.sh ROOT
 root=$1
 readme=$root/fortran/README.md module=$root/fortran/fricreg.F90
-fails=0 checked=0
-fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
 [ -f "$readme" ] && [ -f "$module" ] || { echo "FAIL: no $readme or $module"; exit 1; }
 
-# "type procedure" for each public type-bound procedure (not `procedure, private`).
-bound=$(awk '/^ *type(, *(abstract|extends\([a-z_]*\)))* *:: *fricreg_[a-z_]*/ { t = $NF }
-             /^ *end type/ { t = "" }
-             t != "" && /^ *procedure *::/ { n = $0; sub(/^ *procedure *:: */, "", n)
-                                             sub(/[ =].*/, "", n); print t, n }' "$module")
-[ -n "$bound" ] || fail "no type-bound procedures found in $module"
-echo "$bound" | while read -r type name; do
-    [ -n "$type" ] || continue
-    # The type's rows: from the bold row naming `type(T)` or `T` to the next bold row.
-    rows=$(awk -v t="$type" 'index($0, "| **") == 1 { inside = (index($0, "(" t ")") || index($0, "`" t "`")); next }
-                             !/^\|/ { inside = 0 } inside' "$readme")
-    if [ -z "$rows" ]; then
-        echo "FAIL: $type has no rows in the table of fortran/README.md"
-    elif ! printf '%s\n' "$rows" | grep -q "[\`%]$name("; then
-        echo "FAIL: $type%$name is not in its type's rows of fortran/README.md"
-    else
-        echo "ok"
-    fi
-done >"${TMPDIR:-/tmp}/fortran_readme.$$"
-checked=$((checked + $(grep -c . "${TMPDIR:-/tmp}/fortran_readme.$$")))
-fails=$((fails + $(grep -c '^FAIL' "${TMPDIR:-/tmp}/fortran_readme.$$")))
-grep '^FAIL' "${TMPDIR:-/tmp}/fortran_readme.$$"
-rm -f "${TMPDIR:-/tmp}/fortran_readme.$$"
-
-# The module's public names, its `public ::` lists (the generated ones are the C functions').
-public=$(awk '/public *::/ { p = 1 }
-              p { line = $0; sub(/!.*/, "", line); sub(/.*public *:: */, "", line); print line
-                  p = (line ~ /&[ \t]*$/) }' "$module" | tr ',&' '\n\n' | tr -d ' ' | grep .)
-for name in $public; do
-    checked=$((checked + 1))
-    grep -q "\`[a-z_(]*$name[\`(]" "$readme" || fail "$name (public in module fricreg) is not in fortran/README.md"
-done
-
-# The F77 entry points.
+# The F77 files, in this order; a missing one fails (awk is given those that exist).
 f77_files="fricreg_f77.f90 fricreg_joints_f77.f90 fricreg_sim_f77.f90 fricreg_structure_f77.f90 fricreg_hb_f77.f90 fricreg_f77_check.f90"
+present= missing=
 for f in $f77_files; do
-    [ -f "$root/fortran/$f" ] || fail "no fortran/$f"
+    if [ -f "$root/fortran/$f" ]; then present="$present $root/fortran/$f"; else missing="$missing $f"; fi
 done
-for f in $f77_files; do
-    sed -n 's/^subroutine \(fr[a-z0-9]*\)(.*/\1/p' "$root/fortran/$f"
-done | tr 'a-z' 'A-Z' >"${TMPDIR:-/tmp}/fortran_f77.$$"
-[ -s "${TMPDIR:-/tmp}/fortran_f77.$$" ] || fail "no F77 entry points found"
-for name in $(sort "${TMPDIR:-/tmp}/fortran_f77.$$" | uniq -d); do
-    fail "F77 entry point $name is defined twice"
-done
-while read -r name; do
-    checked=$((checked + 1))
-    [ ${#name} -le 6 ] || fail "F77 entry point $name has more than six characters"
-done <"${TMPDIR:-/tmp}/fortran_f77.$$"
-while read -r name; do
-    checked=$((checked + 1))
-    grep -q "\`$name(" "$readme" || fail "F77 entry point $name is not in fortran/README.md"
-done <"${TMPDIR:-/tmp}/fortran_f77.$$"
-rm -f "${TMPDIR:-/tmp}/fortran_f77.$$"
-echo "$((checked - fails)) passed, $fails failed"
-[ $fails -eq 0 ]
+# shellcheck disable=SC2086 # the files are words
+awk -v missing="$missing" '
+function fail(what) { fails_text = fails_text "FAIL: " what "\n"; fails++ }
+FILENAME == ARGV[1] { readme[++nreadme] = $0; next }
+FILENAME == ARGV[2] {
+    # "type procedure" for each public type-bound procedure (not `procedure, private`)
+    if ($0 ~ /^ *type(, *(abstract|extends\([a-z_]*\)))* *:: *fricreg_[a-z_]*/) t = $NF
+    if ($0 ~ /^ *end type/) t = ""
+    if (t != "" && $0 ~ /^ *procedure *::/) {
+        n = $0; sub(/^ *procedure *:: */, "", n); sub(/[ =].*/, "", n)
+        bound_type[++nbound] = t; bound_name[nbound] = n
+    }
+    # the names of the `public ::` lists, continued lines (&) too
+    if ($0 ~ /public *::/) p = 1
+    if (p) {
+        line = $0; sub(/!.*/, "", line); sub(/.*public *:: */, "", line)
+        p = (line ~ /&[ \t]*$/)
+        k = split(line, parts, /[,& \t]+/)
+        for (i = 1; i <= k; i++) if (parts[i] != "") public[++npublic] = parts[i]
+    }
+    next
+}
+{ # an F77 file: its entry points, upper case
+    if ($0 ~ /^subroutine fr[a-z0-9]*\(/) {
+        n = $0; sub(/^subroutine /, "", n); sub(/\(.*/, "", n)
+        f77[++nf77] = toupper(n)
+    }
+}
+# The README names NAME as a regex on one of its lines (all lines, or the rows of a type).
+function readme_has(re,    i) { for (i = 1; i <= nreadme; i++) if (readme[i] ~ re) return 1; return 0 }
+function type_rows_have(t, name,    i, inside, any, line) {
+    inside = 0; any = 0
+    for (i = 1; i <= nreadme; i++) {
+        line = readme[i]
+        if (index(line, "| **") == 1) { inside = (index(line, "(" t ")") || index(line, "`" t "`")); continue }
+        if (line !~ /^\|/) inside = 0
+        if (!inside) continue
+        any = 1
+        if (index(line, "`" name "(") || index(line, "%" name "(")) return 1
+    }
+    return any ? 0 : -1
+}
+END {
+    if (nbound == 0) fail("no type-bound procedures found in " ARGV[2])
+    for (i = 1; i <= nbound; i++) {
+        checked++
+        r = type_rows_have(bound_type[i], bound_name[i])
+        if (r < 0) fail(bound_type[i] " has no rows in the table of fortran/README.md")
+        else if (r == 0) fail(bound_type[i] "%" bound_name[i] " is not in its type'\''s rows of fortran/README.md")
+    }
+    for (i = 1; i <= npublic; i++) {
+        checked++
+        if (!readme_has("`[a-z_(]*" public[i] "[`(]"))
+            fail(public[i] " (public in module fricreg) is not in fortran/README.md")
+    }
+    k = split(missing, parts, " ")
+    for (i = 1; i <= k; i++) fail("no fortran/" parts[i])
+    if (nf77 == 0) fail("no F77 entry points found")
+    for (i = 1; i <= nf77; i++) count[f77[i]]++
+    # the names defined twice, in sorted order (a simple insertion sort: a few hundred names)
+    for (name in count) if (count[name] > 1) twice[++ntwice] = name
+    for (i = 2; i <= ntwice; i++) for (j = i; j > 1 && twice[j - 1] > twice[j]; j--) {
+        tmp = twice[j]; twice[j] = twice[j - 1]; twice[j - 1] = tmp }
+    for (i = 1; i <= ntwice; i++) fail("F77 entry point " twice[i] " is defined twice")
+    for (i = 1; i <= nf77; i++) {
+        checked++
+        if (length(f77[i]) > 6) fail("F77 entry point " f77[i] " has more than six characters")
+    }
+    for (i = 1; i <= nf77; i++) {
+        checked++
+        if (!index_in_readme("`" f77[i] "(")) fail("F77 entry point " f77[i] " is not in fortran/README.md")
+    }
+    printf "%s", fails_text
+    printf "%d passed, %d failed\n", checked - fails, fails
+    exit fails > 0
+}
+function index_in_readme(s,    i) { for (i = 1; i <= nreadme; i++) if (index(readme[i], s)) return 1; return 0 }
+' "$readme" "$module" $present

@@ -15,6 +15,9 @@ fresh() { # a copy of the checked paths, outside any git tree
     done
     return 0
 }
+restore() { # FILE: the copy's FILE as in ROOT again (one copy of the tree serves every probe)
+    cp "$root/$1" "$work/tree/$1"
+}
 expect() { # NAME EXPECTED: the check on $work/tree must fail, naming EXPECTED
     sh "$check" "$work/tree" >"$work/out" 2>&1 && { echo "FAIL: $1: the check passed"; fails=$((fails + 1)); return; }
     if grep -q "FAIL: .*$2" "$work/out"; then
@@ -34,20 +37,19 @@ clean() { # NAME: the check on $work/tree must pass
 fresh
 clean "a copy of the tree"
 
-fresh
 echo '/* the batch of issue 12 */' >>"$work/tree/src/law/law.h"
 expect "issue N in a comment" "src/law/law.h:.*issue 12"
+restore src/law/law.h
 
-fresh
 printf '\n## Issue #3: the Fortran guide\n' >>"$work/tree/docs/usage.md"
 expect "Issue #N in a heading" "docs/usage.md:.*Issue #3"
+restore docs/usage.md
 
-fresh
 echo '#include "issue13.h"' >>"$work/tree/bench/bench.h"
 expect "issueN in a file name" "bench/bench.h:.*issue13"
+restore bench/bench.h
 
 if command -v git >/dev/null 2>&1; then
-    fresh
     (cd "$work/tree" && git init -q && git add -A) || { echo "FAIL: git init"; exit 1; }
     clean "a clean git tree"
     echo '! the module of issue-3' >>"$work/tree/fortran/fricreg_c.f90"

@@ -5,7 +5,9 @@
 # back up and every circle stays inside one folder. Also: every folder of src/ is in the table,
 # and ctx_internal.h is included only inside src/ctx/.
 # Includes are read from the sources; calls from the object files of a built tree (nm), when
-# BUILD_DIR is given. Usage: module_layers.sh SRC_DIR [BUILD_DIR]
+# BUILD_DIR is given. A fixed handful of processes (find, two nm, a few awk) however many
+# files, includes and symbols: an awk per lookup took a minute.
+# Usage: module_layers.sh SRC_DIR [BUILD_DIR]
 src=$1 build=${2:-}
 [ -z "$build" ] || build=$(cd "$build" && pwd) || exit 1
 cd "$src" || exit 1
@@ -17,49 +19,17 @@ awk -F'|' '/^\| *[0-9]+ *\| *`[a-z_]+\/` *\|/ {
     floor = $2; gsub(/ /, "", floor); module = $3; gsub(/[ `\/]/, "", module); print module, floor }' \
     README.md >"$work/floors"
 [ -s "$work/floors" ] || { echo "FAIL: src/README.md has no module table"; exit 1; }
-fails=0 checked=0
-fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
-floor_of() { awk -v m="$1" '$1 == m { print $2 }' "$work/floors"; }
 
-for dir in */; do
-    dir=${dir%/}
-    [ -n "$(floor_of "$dir")" ] || fail "src/$dir/ is not in src/README.md's module table"
-done
+# The folders, every file (an include next to its file must exist; a bare one is owned by the
+# module of the header of that name, the first found), and the sources, sorted.
+for dir in */; do [ -d "$dir" ] && echo "${dir%/}"; done >"$work/dirs"
+find . ! -type d | sed 's|^\./||' >"$work/files"
+grep -E '\.[ch]$' "$work/files" | sort >"$work/sources"
 
-# Each header's module, for bare includes reached through an include path (cli -> problems.h).
-find . -name '*.h' | sed 's|^\./||' | awk -F/ '{ print $NF, $1 }' >"$work/headers"
-
-# "file module included-module" for every include of an internal header.
-for file in $(find . -name '*.c' -o -name '*.h' | sed 's|^\./||' | sort); do
-    module=${file%%/*}
-    grep -o '^#include "[^"]*"' "$file" | sed 's/^#include "//; s/"$//' | while read -r inc; do
-        case $inc in
-        */*) echo "$file $module ${inc%%/*} $inc" ;;
-        *)
-            if [ -f "$(dirname "$file")/$inc" ]; then
-                echo "$file $module $module $inc"
-            else
-                owner=$(awk -v h="$inc" '$1 == h { print $2; exit }' "$work/headers")
-                [ -n "$owner" ] && echo "$file $module $owner $inc"
-            fi
-            ;;
-        esac
-    done
-done >"$work/includes"
-
-while read -r file module used inc; do
-    checked=$((checked + 1))
-    [ "$used" = "$module" ] && continue
-    mf=$(floor_of "$module") uf=$(floor_of "$used")
-    if [ -z "$uf" ] || [ "$uf" -ge "$mf" ]; then
-        fail "src/$file (floor $mf) includes $inc of $used/ (floor ${uf:-?})"
-    fi
-    case $inc in
-    *ctx_internal.h) fail "src/$file includes $inc outside src/ctx/" ;;
-    esac
-done <"$work/includes"
-
-# Calls: each object's undefined symbols, resolved to the module that defines them.
+# Calls: each object's undefined symbols, resolved to the module that defines them, as
+# "file module owner symbol".
+: >"$work/calls"
+nobjects=-
 if [ -n "$build" ]; then
     # the objects of the library, the problems and fricreg-sim whose source still exists (a
     # tree built before a move keeps the old objects)
@@ -69,25 +39,62 @@ if [ -n "$build" ]; then
             rel=${o#*.dir/src/}
             [ -f "${rel%.o}" ] && echo "$o"
         done)
-    [ -n "$objects" ] || fail "no object files of the library under $build/CMakeFiles"
-    for o in $objects; do
-        module=${o#*.dir/src/}
-        module=${module%%/*}
-        nm --defined-only -g "$o" | awk -v m="$module" 'NF == 3 { print $3, m }'
-    done | sort -u >"$work/defined"
-    for o in $objects; do
-        rel=${o#*.dir/src/}
-        module=${rel%%/*}
-        nm -u "$o" | awk '{ print $2 }' | while read -r sym; do
-            owner=$(awk -v s="$sym" '$1 == s { print $2; exit }' "$work/defined")
-            [ -n "$owner" ] && [ "$owner" != "$module" ] && echo "${rel%.o} $module $owner $sym"
-        done
-    done | sort -u >"$work/calls"
-    while read -r file module used sym; do
-        checked=$((checked + 1))
-        mf=$(floor_of "$module") uf=$(floor_of "$used")
-        [ "$uf" -lt "$mf" ] || fail "src/$file (floor $mf) calls $sym of $used/ (floor $uf)"
-    done <"$work/calls"
+    nobjects=$(echo "$objects" | grep -c .)
+    if [ "$nobjects" -gt 0 ]; then
+        # nm -A prefixes each line with "OBJECT:"; a symbol defined in two modules belongs to
+        # the first of them in sorted order
+        # shellcheck disable=SC2086 # the objects are words
+        { nm --defined-only -g -A $objects | sed 's/^/D /'; nm -u -A $objects | sed 's/^/U /'; } |
+            awk 'function rel(path,    p) { sub(/:[^:]*$/, "", path); p = index(path, ".dir/src/")
+                                             return substr(path, p + 9) }
+                 function module(r) { sub(/\/.*/, "", r); return r }
+                 $1 == "D" && NF == 4 { r = rel($2); m = module(r)
+                                         if (!($4 in owner) || m < owner[$4]) owner[$4] = m; next }
+                 $1 == "U" { r = rel($2); m = module(r); s = $NF
+                             if ((s in owner) && owner[s] != m) print substr(r, 1, length(r) - 2), m, owner[s], s }' |
+            sort -u >"$work/calls"
+    fi
 fi
-echo "$((checked - fails)) passed, $fails failed"
-[ $fails -eq 0 ]
+
+awk -v nobjects="$nobjects" -v build="$build" '
+function fail(what) { print "FAIL: " what; fails++ }
+function floor_of(m) { return (m in floor) ? floor[m] : "" }
+FILENAME == ARGV[1] { if (!($1 in floor)) floor[$1] = $2; next }
+FILENAME == ARGV[2] { if (floor_of($0) == "") fail("src/" $0 "/ is not in src/README.md'\''s module table"); next }
+FILENAME == ARGV[3] {
+    exists[$0] = 1
+    if ($0 ~ /\.h$/) { base = $0; sub(/.*\//, "", base); m = $0; sub(/\/.*/, "", m)
+                       if (!(base in owner)) owner[base] = m }
+    next
+}
+FILENAME == ARGV[4] { # includes of internal headers
+    file = $0; module = file; sub(/\/.*/, "", module)
+    dir = file; if (!sub(/\/[^\/]*$/, "", dir)) dir = ""
+    while ((getline line < file) > 0) {
+        if (!match(line, /^#include "[^"]*"/)) continue
+        inc = substr(line, 11, RLENGTH - 11)
+        if (inc ~ /\//) { used = inc; sub(/\/.*/, "", used) }
+        else if (((dir == "" ? "" : dir "/") inc) in exists) used = module
+        else if (inc in owner) used = owner[inc]
+        else continue
+        checked++
+        if (used == module) continue
+        mf = floor_of(module); uf = floor_of(used)
+        if (uf == "" || (mf != "" && uf + 0 >= mf + 0))
+            fail("src/" file " (floor " mf ") includes " inc " of " used "/ (floor " (uf == "" ? "?" : uf) ")")
+        if (inc ~ /ctx_internal\.h$/) fail("src/" file " includes " inc " outside src/ctx/")
+    }
+    close(file)
+    next
+}
+{ # calls: "file module owner symbol"
+    checked++
+    mf = floor_of($2); uf = floor_of($3)
+    if (!(uf != "" && mf != "" && uf + 0 < mf + 0))
+        fail("src/" $1 " (floor " mf ") calls " $4 " of " $3 "/ (floor " uf ")")
+}
+END {
+    if (nobjects == 0) fail("no object files of the library under " build "/CMakeFiles")
+    printf "%d passed, %d failed\n", checked - fails, fails
+    exit fails > 0
+}' "$work/floors" "$work/dirs" "$work/files" "$work/sources" "$work/calls"

@@ -17,10 +17,14 @@ for path in $listed; do
     checked=$((checked + 1))
     [ -e "$path" ] || { echo "FAIL: the Layout lists $path, which does not exist"; fails=$((fails + 1)); }
 done
+nl='
+'
 for entry in $top; do
     checked=$((checked + 1))
-    echo "$listed" | grep -qxF "$entry" ||
-        { echo "FAIL: top-level $entry is not in the README's Layout"; fails=$((fails + 1)); }
+    case "$nl$listed$nl" in # a whole line of the list (the shell's own match: no process per entry)
+    *"$nl$entry$nl"*) ;;
+    *) echo "FAIL: top-level $entry is not in the README's Layout"; fails=$((fails + 1)) ;;
+    esac
 done
 echo "$((checked - fails)) passed, $fails failed"
 [ $fails -eq 0 ]
