@@ -253,9 +253,9 @@ static size_t belt_table(struct belt_options *o, struct cli_option table[])
     struct prob_belt *b = &o->b;
     const struct cli_option rows[] = {
         {"--fs", CLI_POSITIVE, .slot = &b->fs, .meta = "FS",
-         .help = "static friction level: the kinetic curve at zero slip"},
+         .help = "static friction level, the curve at zero slip"},
         {"--fk", CLI_NONNEGATIVE, .slot = &b->fk, .meta = "FK",
-         .help = "kinetic friction level at fast slip, at most --fs"},
+         .help = "kinetic friction level at fast slip, <= --fs"},
         {"--vs", CLI_POSITIVE, .slot = &b->vs, .meta = "VS", .help = "Stribeck velocity"},
         {"--delta", CLI_POSITIVE, .slot = &b->delta, .meta = "DELTA",
          .help = "Stribeck exponent: k(s) = fk + (fs - fk) exp(-(s/vs)^delta)"},
