@@ -161,8 +161,8 @@ static size_t structure_table(struct structure_options *o, struct cli_option tab
         {"--rtol", CLI_NONNEGATIVE, .slot = &o->rtol, .meta = "R",
          .help = "GSL steppers only: relative tolerance of adaptive step control (0: fixed)"},
         {"--atol", CLI_NONNEGATIVE, .slot = &o->atol, .given = &o->atol_given, .meta = "A",
-         .help = "GSL steppers only: absolute tolerance; with --rtol and without it, from eps: "
-                 "1e-3 eps / sum_k |J_ik| where contact i reads dof k",
+         .help = "GSL steppers only: absolute tolerance; with --rtol R and without it, each "
+                 "velocity a contact reads gets min(1e-3 eps / max_i sum_k |J_ik|, R)",
          .dflt = "0, or from eps"},
         {"--alpha", CLI_NUMBER, .slot = &o->alpha, .given = &o->alpha_given, .meta = "A",
          .help = "hht's alpha, in [-1/3, 0]"},
