@@ -89,8 +89,12 @@ expect_usage_error "--law" oscillator --law sticky
 # The valid names come from the library (fricreg_law_name, fricreg_integrator_name).
 expect_usage_error "coulomb, force-balance, karnopp, velocity-limited, tanh, quinn" oscillator --law Quinn
 expect_usage_error "rk2, rk4, rkf45, rkck, rk8pd, rk1imp, rk2imp, rk4imp, bsimp, msadams, msbdf" chain --integrator rk45
-expect_output '^  --law coulomb\|force-balance\|karnopp\|velocity-limited\|tanh\|quinn +\[quinn\]$' --help
-expect_output '^  --integrator rk2\|rk4\|rkf45\|rkck\|rk8pd\|rk1imp\|rk2imp\|rk4imp\|bsimp\|msadams\|msbdf\|rk4-gsl\|central\|central-imex \[rk4\]$' --help
+# A command's help lists them too, from the same tables, with the parser's default.
+expect_output '^  --law coulomb\|force-balance\|karnopp\|velocity-limited\|tanh\|quinn$' oscillator --help
+expect_output '^ +the friction law .*\[quinn\]$' oscillator --help
+expect_output '^  --integrator rk2\|rk4\|rkf45\|rkck\|rk8pd\|rk1imp\|rk2imp\|rk4imp\|bsimp\|msadams\|$' chain --help
+expect_output '^ +msbdf\|rk4-gsl\|central\|central-imex$' chain --help
+expect_output '^ +\(docs/integrators\.md\) \[rk4\]$' chain --help
 for law in coulomb force-balance karnopp velocity-limited tanh quinn; do
     expect_output "\"law\": \"$law\"" oscillator --law "$law" --t-end 0.5
 done
@@ -271,7 +275,8 @@ expect_output '"input": 14\.930886285[0-9]*, "kinetic": 5\.4912249[0-9]*, "strai
 # reader refuses after the size line) read as the plain file does.
 printf '%%%%MatrixMarket matrix coordinate real symmetric\r\n%% mass\r\n\r\n1 1 1\r\n%% kg\r\n\r\n1 1 3.17\r\n\r\n' >"$d/M1crlf.mtx"
 expect_output '"x": \[-1\.95438123028[34][0-9]*\]' structure --mass $d/M1crlf.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_const.txt --eps 1e-6 --t-end 2.1 --integrator newmark --dt 0.01
-expect_output '^       fricreg-sim structure --mass M\.mtx --stiffness K\.mtx' --help
+expect_output '^usage: fricreg-sim structure --mass M\.mtx --stiffness K\.mtx' structure --help
+expect_output '^  structure   ' --help
 # The default eps is 1 % of the ground's peak velocity, here 2.41 m/s^2 * 5 s = 12.05 m/s (the
 # record's length), and 1e-3 without ground motion (docs/structural.md).
 expect_output '"eps": 0\.1205(0000+[0-9]*)?,' structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_const.txt --t-end 2.1 --integrator newmark --dt 0.01
@@ -553,7 +558,8 @@ if ! grep -q '"ndof": 5000, "elements": 1' "$d/big.json" ||
         awk '{ exit !($1 > 0.99 * 3.9284 && $1 < 1.01 * 3.9284 && $2 > 1.485 && $2 < 1.515) }'; then
     echo "FAIL: hb on 5000 dofs (sparse): $(head -c 300 "$d/big.json") $(cat "$d/err")"; fails=$((fails + 1))
 fi
-expect_output '^       fricreg-sim hb --mass M\.mtx --stiffness K\.mtx' --help
+expect_output '^usage: fricreg-sim hb --mass M\.mtx --stiffness K\.mtx' hb --help
+expect_output '^  hb          ' --help
 expect_usage_error "^fricreg-sim: --omega-end: missing" hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --jenkins $d/J.mtx --jenkins-params $d/P.txt --omega-start 1
 expect_usage_error "^fricreg-sim: --jenkins-params: missing" hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --jenkins $d/J.mtx --omega-start 1 --omega-end 2
 expect_usage_error "^fricreg-sim: --jenkins-2d: harmonic balance has no 2-D elements" hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --jenkins-2d $d/J.mtx --jenkins-params $d/P.txt --omega-start 1 --omega-end 2
@@ -699,15 +705,26 @@ expect_usage_error "--mu" disk --mu 1
 expect_usage_error "^fricreg-sim: --ref-eps: eps = 1e+308 is outside" disk --ref-eps 1e308
 expect_usage_error "^fricreg-sim: --dt: eps = 2e+300 is outside" disk --dt 1e300
 expect_usage_error "^fricreg-sim: --eps: eps = 1e+251 is outside" hold --eps 1e251
-# --help gives each problem's defaults, from the values the parsers use.
-expect_output '^hold: +--mu \[0\.5385\] --mass \[2\.385\]' --help
-expect_output '^belt: +--fs \[1\] --fk \[0\.5\] --vs \[0\.05\]' --help
-expect_output '^disk: +--law \[quinn\] --a \[2\] --omega \[0\.5\]' --help
-# --help (or -h) after any subcommand prints the usage, as before one (belt said "missing value").
-for command in oscillator chain twoblock exact reproduce structure hold belt disk; do
-    expect_output '^usage: fricreg-sim oscillator\|chain\|twoblock' "$command" --help
+# COMMAND --help gives each problem's defaults, from the values the parsers use.
+expect_output '^  --mu MU +friction coefficient \[0\.5385\]$' hold --help
+expect_output '^  --mass KG +the block.s mass, kg \[2\.385\]$' hold --help
+expect_output '^  --fs FS .* \[1\]$' belt --help
+expect_output '^  --fk FK .* \[0\.5\]$' belt --help
+expect_output '^  --vs VS .* \[0\.05\]$' belt --help
+expect_output '^  --law coulomb\|force-balance\|quinn\|quinn-lens\|quinn-nested$' disk --help
+expect_output '^ +the 2-D friction law .*\[quinn\]$' disk --help
+expect_output '^  --a A +forcing amplitude \[2\]$' disk --help
+expect_output '^  --omega W +forcing frequency \[0\.5\]$' disk --help
+# --help (or -h) anywhere after a subcommand prints that subcommand's help, exit 0 (belt said
+# "missing value"); --help alone, the overview naming each command.
+for command in oscillator chain twoblock exact reproduce structure hb hold belt disk; do
+    expect_output "^usage: fricreg-sim $command " "$command" --help
+    expect_output "^  $command +[a-z]" --help
 done
-expect_output '^belt: +--fs' belt --dt 0.01 -h
+expect_output '^  --fs FS' belt --dt 0.01 -h
+expect_output '^`fricreg-sim COMMAND --help` lists' --help
+expect_output 'man fricreg-sim' --help
+expect_usage_error "unknown command" frobnicate --help
 
 # ---- Reliability: no hang, exit codes as the usage says, no data lost ------------------------
 # expect NAME COMMAND...: a check that passes when COMMAND (a shell snippet) succeeds.

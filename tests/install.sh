@@ -5,7 +5,8 @@
 # Fortran interface was built) Fortran with the installed module, with pkg-config
 # fricreg-fortran, fixed-form F77 with -fdefault-integer-8 through fricreg-fortran-ilp64, and
 # with the installed module sources. Runs the installed fricreg-sim (when the drivers were
-# built) from its prefix, and from the prefix moved elsewhere, with no LD_LIBRARY_PATH.
+# built) from its prefix, and from the prefix moved elsewhere, with no LD_LIBRARY_PATH; checks
+# the documentation and fricreg-sim's man page are installed and man renders the page.
 # Usage: install.sh BUILD_DIR SOURCE_DIR C_COMPILER FORTRAN_COMPILER|-
 build=$1 src=$2 cc=$3 fc=$4
 work=$(mktemp -d "${TMPDIR:-/tmp}/fricreg-install.XXXXXX")
@@ -33,6 +34,32 @@ if [ -x "$prefix/bin/fricreg-sim" ]; then
     check "installed fricreg-sim runs from its prefix" sim_runs "$prefix"
 fi
 export LD_LIBRARY_PATH="$libdir${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+
+# 0b. The documentation and the man page under the prefix: README.md, CHANGELOG.md, LICENSE
+#     and every docs/*.md and figure in share/doc/fricreg (docs/ kept a folder, so README.md's
+#     links hold); fricreg-sim.1 in share/man/man1, which man finds from the prefix alone.
+docdir=$(dirname "$(find "$prefix" -path '*/doc/fricreg/LICENSE' | head -n 1)")
+docs_installed() {
+    for f in README.md CHANGELOG.md LICENSE; do cmp -s "$src/$f" "$docdir/$f" || return 1; done
+    for f in "$src"/docs/*.md "$src"/docs/*.png; do
+        cmp -s "$f" "$docdir/docs/$(basename "$f")" || { echo "missing: $f"; return 1; }
+    done
+}
+check "README.md, CHANGELOG.md, LICENSE and docs/ are installed" docs_installed
+if [ -x "$prefix/bin/fricreg-sim" ]; then
+    page=$(find "$prefix" -path '*/man1/fricreg-sim.1' | head -n 1)
+    check "the man page is installed in share/man/man1" test -f "$prefix/share/man/man1/fricreg-sim.1"
+    check "the installed man page is the installed program's" \
+        sh -c "env -u LD_LIBRARY_PATH '$prefix/bin/fricreg-sim' --man | cmp -s - '$page'"
+    if command -v man >/dev/null 2>&1; then
+        man_renders() { # man finds the page from the prefix's share/man, or reads it by path
+            MANWIDTH=80 man -M "$prefix/share/man" fricreg-sim >"$work/man.txt" 2>"$work/man.err" &&
+            grep -q '^FRICREG-SIM(1)' "$work/man.txt" && grep -q '^   hb$' "$work/man.txt" &&
+            MANWIDTH=80 man -l "$page" | cmp -s - "$work/man.txt" && [ ! -s "$work/man.err" ]
+        }
+        check "man -M PREFIX/share/man fricreg-sim renders the page" man_renders
+    fi
+fi
 
 # 1. CMake: find_package(fricreg CONFIG), shared and static.
 check "cmake configure" cmake -S "$src/tests/consumer" -B "$work/cmake" \

@@ -65,7 +65,10 @@ struct cli_word {
 extern const struct cli_word cli_output_words[]; /* summary, trajectory */
 
 /* One option: its name and kind first, the rest by field name, e.g.
- * {"--cycles", CLI_WHOLE, .slot = &run->cycles, .lo = 1, .hi = 1e7, .given = &cycles_given}. */
+ * {"--cycles", CLI_WHOLE, .slot = &run->cycles, .lo = 1, .hi = 1e7, .given = &cycles_given,
+ *  .meta = "N", .help = "run length in forcing cycles"}.
+ * The same rows give the parser, `fricreg-sim COMMAND --help` and the man page (help.c), so
+ * that the text cannot drift from what is accepted. */
 struct cli_option {
     const char *name; /* "--dt" */
     enum cli_option_kind kind;
@@ -77,7 +80,50 @@ struct cli_option {
     /* CLI_CUSTOM: parses text into row->slot (with row->arg); 0 or CLI_EXIT_USAGE (printed) */
     int (*parse)(const struct cli_option *row, const char *text);
     int arg;
+    /* The help: the value's placeholder ("STEP", "M.mtx"; NULL for CLI_NAME and CLI_CHOICE,
+     * whose names the help lists from the parser's own tables), what the option means with
+     * its units, and the default where the slot's value before parsing does not show it
+     * (derived, or a value meaning "not given"; "" shows none). */
+    const char *meta, *help, *dflt;
+    int hidden; /* known by name only to be refused with a reason: not in the help */
 };
+
+/* The most rows a table has (with room for a subcommand's further options). */
+#define CLI_MAX_ROWS 48
+
+/* Copies a subcommand's rows[n] into table[CLI_MAX_ROWS]; returns n (aborts if n is above
+ * CLI_MAX_ROWS: a table that outgrew the bound is a programming error). */
+size_t cli_copy_rows(struct cli_option table[], const struct cli_option rows[], size_t n);
+
+/* A subcommand as its help and the man page describe it (help.c lists them all). */
+struct cli_command {
+    const char *name;
+    const char *synopsis;    /* its arguments after "fricreg-sim NAME" */
+    const char *summary;     /* one line, for `fricreg-sim --help` */
+    const char *description; /* paragraphs, separated by blank lines ("\n\n") */
+    /* Its option table, as its parser builds it, over options of the command's own storage
+     * with their defaults set (so the help reads the defaults from the slots): fills
+     * table[CLI_MAX_ROWS], returns the number of rows. */
+    size_t (*table)(struct cli_option table[]);
+};
+
+/* Each subcommand's, next to its table (options.c: oscillator, chain, twoblock and exact;
+ * reproduce.c, structure.c, hb.c, problems.c). */
+extern const struct cli_command cli_oscillator_command, cli_chain_command, cli_twoblock_command,
+    cli_exact_command, cli_reproduce_command, cli_structure_command, cli_hb_command,
+    cli_hold_command, cli_belt_command, cli_disk_command;
+
+/* help.c: the subcommands in the order the help lists them, ending with NULL. */
+extern const struct cli_command *const cli_commands[];
+/* The command named name, or NULL. */
+const struct cli_command *cli_find_command(const char *name);
+/* `fricreg-sim --help`: the subcommands, one line each. */
+void cli_print_overview(FILE *out);
+/* `fricreg-sim COMMAND --help`: synopsis, description, and every option not hidden with its
+ * placeholder, meaning and default. */
+void cli_print_command_help(FILE *out, const struct cli_command *command);
+/* The man page fricreg-sim(1), in roff (man macros), from the same tables. */
+void cli_print_man(FILE *out);
 
 /* --rayleigh A0,A1 of `structure` and `hb`: two finite numbers >= 0, comma-separated (the
  * library names the range too; checked here first so that the message names the option).
@@ -118,8 +164,6 @@ int cli_parse_run(int system, int argc, char **argv, struct cli_run *run);
  * iteration needs atol > 0 (rk1imp, rk2imp, rk4imp, msadams, msbdf). */
 int cli_check_tolerances(int integrator, double rtol, double atol);
 const char *cli_system_name(int system);
-/* Each system's parameter options with the library's defaults, one line per system. */
-void cli_print_param_defaults(FILE *out);
 
 /* The extrapolation in eps of a run (fricreg_sim_run_extrapolated), for its summary. */
 struct cli_extrapolation {
@@ -182,8 +226,6 @@ int cli_structure(int argc, char **argv, FILE *out);
  * (src/problems/); argv after the subcommand. Returns the exit status, or -1 if command is
  * none of them. */
 int cli_problem(const char *command, int argc, char **argv, FILE *out);
-/* Their options' defaults, for the usage text. */
-void cli_print_problem_defaults(FILE *out);
 
 /* reproduce.c: the paper's experiments into dir, and the comparison table on stdout. */
 int cli_reproduce(int argc, char **argv);

@@ -78,7 +78,8 @@ static int check_options(const struct hb_options *o)
     return 0;
 }
 
-static int parse_hb(int argc, char **argv, struct hb_options *o)
+/* The rows over o, its defaults set: the parser's and the help's one table. */
+static size_t hb_table(struct hb_options *o, struct cli_option table[])
 {
     /* Newton's rule: the driver's defaults (fricreg_hb_set_newton) */
     *o = (struct hb_options){.harmonics = 7,
@@ -87,19 +88,41 @@ static int parse_hb(int argc, char **argv, struct hb_options *o)
                              .newton_max = 50};
     cli_element_defaults(&o->elements);
     const struct cli_option opts[] = {
-        {"--mass", CLI_FILE, .slot = &o->mass},
-        {"--stiffness", CLI_FILE, .slot = &o->stiffness},
-        {"--damping", CLI_FILE, .slot = &o->damping},
-        {"--excitation", CLI_FILE, .slot = &o->excitation},
-        CLI_ELEMENT_OPTIONS(&o->elements),
-        {"--rayleigh", CLI_CUSTOM, .slot = o, .parse = parse_rayleigh, .given = &o->rayleigh_given},
-        {"--harmonics", CLI_WHOLE, .slot = &o->harmonics, .lo = 1, .hi = FRICREG_HB_MAX_HARMONICS},
-        {"--omega-start", CLI_POSITIVE, .slot = &o->omega_start, .given = &o->omega_start_given},
-        {"--omega-end", CLI_POSITIVE, .slot = &o->omega_end, .given = &o->omega_end_given},
-        {"--newton-tol", CLI_POSITIVE, .slot = &o->newton_tol},
-        {"--newton-max", CLI_WHOLE, .slot = &o->newton_max, .lo = 1, .hi = 1000},
-        {"--output", CLI_CHOICE, .slot = &o->output, .words = hb_outputs}};
-    int status = cli_parse_options(argc, argv, opts, sizeof opts / sizeof opts[0], "hb");
+        {"--mass", CLI_FILE, .slot = &o->mass, .meta = "M.mtx",
+         .help = "mass matrix M, Matrix Market n x n, symmetric positive definite (required)"},
+        {"--stiffness", CLI_FILE, .slot = &o->stiffness, .meta = "K.mtx",
+         .help = "stiffness matrix K, n x n, symmetric (required)"},
+        {"--damping", CLI_FILE, .slot = &o->damping, .meta = "C.mtx",
+         .help = "damping matrix C, n x n, symmetric (or --rayleigh; none: undamped)"},
+        {"--excitation", CLI_FILE, .slot = &o->excitation, .meta = "F.txt",
+         .help = "the force's cosine and sine amplitudes, a line pc ps per dof (required)"},
+        CLI_ELEMENT_OPTIONS(&o->elements, 1),
+        {"--rayleigh", CLI_CUSTOM, .slot = o, .parse = parse_rayleigh, .given = &o->rayleigh_given,
+         .meta = "A0,A1", .help = "Rayleigh damping C = A0 M + A1 K (both >= 0)"},
+        {"--harmonics", CLI_WHOLE, .slot = &o->harmonics, .lo = 1, .hi = FRICREG_HB_MAX_HARMONICS,
+         .meta = "H", .help = "harmonics kept in the solution"},
+        {"--omega-start", CLI_POSITIVE, .slot = &o->omega_start, .given = &o->omega_start_given,
+         .meta = "W0",
+         .help = "excitation frequency the continuation starts at, from q = 0 "
+                 "(required)",
+         .dflt = ""},
+        {"--omega-end", CLI_POSITIVE, .slot = &o->omega_end, .given = &o->omega_end_given,
+         .meta = "W1", .help = "excitation frequency it ends at (required)", .dflt = ""},
+        {"--newton-tol", CLI_POSITIVE, .slot = &o->newton_tol, .meta = "TOL",
+         .help = "Newton's tolerance at each point"},
+        {"--newton-max", CLI_WHOLE, .slot = &o->newton_max, .lo = 1, .hi = 1000, .meta = "N",
+         .help = "Newton's iterations at most per point, 1 to 1000"},
+        {"--output", CLI_CHOICE, .slot = &o->output, .words = hb_outputs,
+         .help = "a JSON summary (each dof's peak RMS and its frequency), or the frequency "
+                 "response: a CSV row omega,rms_1,...,rms_n per point"}};
+    return cli_copy_rows(table, opts, sizeof opts / sizeof opts[0]);
+}
+
+static int parse_hb(int argc, char **argv, struct hb_options *o)
+{
+    struct cli_option table[CLI_MAX_ROWS];
+    size_t n = hb_table(o, table);
+    int status = cli_parse_options(argc, argv, table, n, "hb");
     return status != 0 ? status : check_options(o);
 }
 
@@ -272,3 +295,23 @@ int cli_hb(int argc, char **argv, FILE *out)
     free_model(&md);
     return status;
 }
+
+/* ---- The help (help.c) -------------------------------------------------------------------- */
+
+static size_t hb_help_table(struct cli_option table[])
+{
+    static struct hb_options o; /* the help's rows point here */
+    return hb_table(&o, table);
+}
+
+const struct cli_command cli_hb_command = {
+    "hb",
+    "--mass M.mtx --stiffness K.mtx [--damping C.mtx | --rayleigh A0,A1] --excitation F.txt "
+    "--jenkins J.mtx ELEMENTS --omega-start W0 --omega-end W1 [OPTION]...",
+    "frequency response of a structure with joints (harmonic balance)",
+    "The frequency response of a linear structure M x'' + C x' + K x + J^T f(q) = pc cos(omega t) "
+    "+ ps sin(omega t) with Jenkins, Iwan or lift-off elements on q = J x, by harmonic balance "
+    "(fricreg_hb.h), continued in omega from --omega-start to --omega-end (docs/joints.md).\n\n"
+    "ELEMENTS is one parameter file, a line per row of J.mtx: --jenkins-params, --iwan-params "
+    "or --iwan-segalman, or --normal with --normal-params (lift-off).",
+    hb_help_table};

@@ -26,21 +26,35 @@ struct cli_element_files {
 };
 
 /* The element options' rows of a subcommand's option table (cli.h's struct cli_option), e
- * a struct cli_element_files *. */
+ * a struct cli_element_files *; no_2d: --jenkins-2d is refused with a reason, not in the help
+ * (hb: harmonic balance has 1-D elements only). */
 /* (kept as written: clang-format would take the rows for one braced list) */
 /* clang-format off */
-#define CLI_ELEMENT_OPTIONS(e)                                                                \
-    {"--jenkins", CLI_FILE, .slot = &(e)->rows},                                             \
-    {"--jenkins-2d", CLI_FILE, .slot = &(e)->rows_2d},                                       \
-    {"--jenkins-params", CLI_FILE, .slot = &(e)->jenkins},                                   \
-    {"--iwan-params", CLI_FILE, .slot = &(e)->iwan},                                         \
-    {"--iwan-segalman", CLI_FILE, .slot = &(e)->segalman},                                   \
+#define CLI_ELEMENT_OPTIONS(e, no_2d)                                                         \
+    {"--jenkins", CLI_FILE, .slot = &(e)->rows, .meta = "J.mtx",                              \
+     .help = "joint elements' rows, Matrix Market m x n: element i's q_i = (J x)_i, with one " \
+             "parameter file below"},                                                         \
+    {"--jenkins-2d", CLI_FILE, .slot = &(e)->rows_2d, .meta = "J2.mtx", .hidden = (no_2d),    \
+     .help = "2-D Jenkins elements instead: element i on rows 2i-1 (x) and 2i (y), with "     \
+             "--jenkins-params (isotropic)"},                                                 \
+    {"--jenkins-params", CLI_FILE, .slot = &(e)->jenkins, .meta = "P.txt",                    \
+     .help = "Jenkins elements: a line kt mun per element (stiffness, slip force)"},          \
+    {"--iwan-params", CLI_FILE, .slot = &(e)->iwan, .meta = "P.txt",                          \
+     .help = "Iwan elements: a line k_1 phi_1 ... k_ns phi_ns per element, the same ns on "   \
+             "every line"},                                                                   \
+    {"--iwan-segalman", CLI_FILE, .slot = &(e)->segalman, .meta = "S.txt",                    \
+     .help = "Iwan elements from Segalman's model: a line F_S K_T chi beta per element"},    \
     {"--iwan-sliders", CLI_WHOLE, .slot = &(e)->sliders, .lo = 1, .hi = 1024,                \
-     .given = &(e)->sliders_given},                                                          \
+     .given = &(e)->sliders_given, .meta = "NS",                                              \
+     .help = "sliders per element of Segalman's model, 1 to 1024"},                           \
     {"--iwan-resolution", CLI_POSITIVE, .slot = &(e)->resolution,                            \
-     .given = &(e)->resolution_given},                                                       \
-    {"--normal", CLI_FILE, .slot = &(e)->normal},                                            \
-    {"--normal-params", CLI_FILE, .slot = &(e)->normal_params}
+     .given = &(e)->resolution_given, .meta = "R",                                            \
+     .help = "Segalman's model discretized down to R phi_max"},                               \
+    {"--normal", CLI_FILE, .slot = &(e)->normal, .meta = "Jn.mtx",                            \
+     .help = "lift-off elements: the normal rows, element i's gap g_i = (Jn x)_i, with "      \
+             "--normal-params"},                                                              \
+    {"--normal-params", CLI_FILE, .slot = &(e)->normal_params, .meta = "Q.txt",               \
+     .help = "lift-off elements: a line kt mu n0 kn per element; N = max(0, n0 + kn g)"}
 /* clang-format on */
 
 /* The defaults: 50 sliders at resolution 1e-6 (docs/joints.md's rule for Segalman's model). */

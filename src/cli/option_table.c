@@ -205,6 +205,17 @@ int cli_parse_value(const struct cli_option *row, const char *text)
     return parsers[row->kind](row, text);
 }
 
+size_t cli_copy_rows(struct cli_option table[], const struct cli_option rows[], size_t n)
+{
+    if (n > CLI_MAX_ROWS) {
+        fprintf(stderr, "fricreg-sim: an option table has %zu rows, more than %d\n", n,
+                CLI_MAX_ROWS);
+        abort();
+    }
+    memcpy(table, rows, n * sizeof rows[0]);
+    return n;
+}
+
 /* ---- The loop ----------------------------------------------------------------------------- */
 
 static const struct cli_option *find_row(const struct cli_option table[], size_t n,
@@ -227,7 +238,8 @@ int cli_parse_options(int argc, char **argv, const struct cli_option table[], si
         const struct cli_option *row = find_row(table, n, option);
         if (row == NULL) {
             char what[96];
-            snprintf(what, sizeof what, "unknown option for %s (see fricreg-sim --help)", command);
+            snprintf(what, sizeof what, "unknown option for %s (see fricreg-sim %s --help)",
+                     command, command);
             return cli_usage_error(option, what);
         }
         if ((status = cli_parse_value(row, value)) != 0)

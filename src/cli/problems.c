@@ -114,31 +114,56 @@ enum { H_MU, H_MASS, H_G, H_THETA, H_PHI, H_RATE, H_STEPS, H_DT, H_EPS, H_N };
 static const double hold_defaults[H_N] = {0.5385, 2.385, 9.81, 0.0, 35.4, 0.0, 1e7, 1e-4, 0.0};
 #define DISK_REF_EPS 2e-4
 
+/* hold's options as parsed: the values by H_*, and which were given. */
+struct hold_options {
+    double v[H_N];
+    int theta_given, steps_given, eps_given, output;
+};
+
+/* The rows over o, its defaults set: the parser's and the help's one table. */
+static size_t hold_table(struct hold_options *o, struct cli_option table[])
+{
+    *o = (struct hold_options){.output = CLI_SUMMARY};
+    memcpy(o->v, hold_defaults, sizeof o->v);
+    double *v = o->v;
+    const struct cli_option rows[] = {
+        {"--mu", CLI_POSITIVE, .slot = &v[H_MU], .meta = "MU", .help = "friction coefficient"},
+        {"--mass", CLI_POSITIVE, .slot = &v[H_MASS], .meta = "KG", .help = "the block's mass, kg"},
+        {"--g", CLI_POSITIVE, .slot = &v[H_G], .meta = "G", .help = "gravity, m/s^2"},
+        {"--theta-deg", CLI_NONNEGATIVE, .slot = &v[H_THETA], .given = &o->theta_given,
+         .meta = "DEG", .help = "the incline's tilt at t = 0, degrees, below 90",
+         .dflt = "atan(0.8 mu); with --tilt-rate 0.9 atan(mu)"},
+        {"--phi-deg", CLI_NUMBER, .slot = &v[H_PHI], .meta = "DEG",
+         .help = "the load's direction in the incline's plane, degrees"},
+        {"--tilt-rate", CLI_NONNEGATIVE, .slot = &v[H_RATE], .meta = "DEG_PER_S",
+         .help = "tilt rate, deg/s: 0 holds the tilt and measures the creep (m/s); above 0 "
+                 "tilts until the block breaks away"},
+        {"--steps", CLI_POSITIVE, .slot = &v[H_STEPS], .given = &o->steps_given, .meta = "N",
+         .help = "classical RK4 steps at most, even, 2 to 10^9",
+         .dflt = "1e7; with --tilt-rate to 90 deg and a second more"},
+        {"--dt", CLI_POSITIVE, .slot = &v[H_DT], .meta = "S", .help = "RK4 step, s"},
+        {"--eps", CLI_POSITIVE, .slot = &v[H_EPS], .given = &o->eps_given, .meta = "EPS",
+         .help = "the 2-D law's regularization, m/s", .dflt = "20 dt"},
+        {"--output", CLI_CHOICE, .slot = &o->output, .words = cli_output_words,
+         .help = "a JSON summary, or a CSV row per GSL step (2 dt)"}};
+    return cli_copy_rows(table, rows, sizeof rows / sizeof rows[0]);
+}
+
 int cli_parse_hold(int argc, char **argv, struct prob_hold *p, enum cli_output *output)
 {
-    double v[H_N];
-    memcpy(v, hold_defaults, sizeof v);
-    int theta_given = 0, steps_given = 0, eps_given = 0, out = CLI_SUMMARY;
-    const struct cli_option opts[] = {
-        {"--mu", CLI_POSITIVE, .slot = &v[H_MU]},
-        {"--mass", CLI_POSITIVE, .slot = &v[H_MASS]},
-        {"--g", CLI_POSITIVE, .slot = &v[H_G]},
-        {"--theta-deg", CLI_NONNEGATIVE, .slot = &v[H_THETA], .given = &theta_given},
-        {"--phi-deg", CLI_NUMBER, .slot = &v[H_PHI]},
-        {"--tilt-rate", CLI_NONNEGATIVE, .slot = &v[H_RATE]},
-        {"--steps", CLI_POSITIVE, .slot = &v[H_STEPS], .given = &steps_given},
-        {"--dt", CLI_POSITIVE, .slot = &v[H_DT]},
-        {"--eps", CLI_POSITIVE, .slot = &v[H_EPS], .given = &eps_given},
-        {"--output", CLI_CHOICE, .slot = &out, .words = cli_output_words}};
-    int status = cli_parse_options(argc, argv, opts, sizeof opts / sizeof opts[0], "hold");
+    struct hold_options o;
+    struct cli_option table[CLI_MAX_ROWS];
+    size_t n = hold_table(&o, table);
+    double *v = o.v;
+    int status = cli_parse_options(argc, argv, table, n, "hold");
     if (status != 0)
         return status;
-    *output = out;
-    if (!theta_given) /* inside the disk: tan(theta) = 0.8 mu, or 0.9 atan(mu) to tilt from */
+    *output = o.output;
+    if (!o.theta_given) /* inside the disk: tan(theta) = 0.8 mu, or 0.9 atan(mu) to tilt from */
         v[H_THETA] = (v[H_RATE] > 0.0 ? 0.9 * atan(v[H_MU]) : atan(0.8 * v[H_MU])) / DEG;
     if (v[H_THETA] >= 90.0)
         return cli_usage_error("--theta-deg", "must be below 90");
-    if (!steps_given && v[H_RATE] > 0.0) { /* to 90 degrees and a second more */
+    if (!o.steps_given && v[H_RATE] > 0.0) { /* to 90 degrees and a second more */
         v[H_STEPS] = 2.0 * ceil(((90.0 - v[H_THETA]) / v[H_RATE] + 1.0) / (2.0 * v[H_DT]));
         if (v[H_STEPS] > 1e9)
             return cli_usage_error("--tilt-rate", "more than 10^9 steps to 90 deg: give --steps");
@@ -147,9 +172,9 @@ int cli_parse_hold(int argc, char **argv, struct prob_hold *p, enum cli_output *
         return status;
     if (fmod(v[H_STEPS], 2.0) != 0.0)
         return cli_usage_error("--steps", "must be even (GSL's rk4 takes two classical steps)");
-    if (!eps_given)
+    if (!o.eps_given)
         v[H_EPS] = 20.0 * v[H_DT]; /* tests/test_hold.c: the stick zone's rate 0.49 / step */
-    if ((status = law_eps(eps_given ? "--eps" : "--dt", v[H_EPS], DISK_MAX)) != 0)
+    if ((status = law_eps(o.eps_given ? "--eps" : "--dt", v[H_EPS], DISK_MAX)) != 0)
         return status;
     *p = (struct prob_hold){.mass = v[H_MASS],
                             .g = v[H_G],
@@ -216,26 +241,49 @@ static int cli_hold(int argc, char **argv, FILE *out)
 
 /* ---- belt ------------------------------------------------------------------------------- */
 
+/* belt's options as parsed. */
+struct belt_options {
+    struct prob_belt b;
+    int eps_given, output;
+};
+
+static size_t belt_table(struct belt_options *o, struct cli_option table[])
+{
+    *o = (struct belt_options){.b = prob_belt_defaults(), .output = CLI_SUMMARY};
+    struct prob_belt *b = &o->b;
+    const struct cli_option rows[] = {
+        {"--fs", CLI_POSITIVE, .slot = &b->fs, .meta = "FS",
+         .help = "static friction level, the curve at zero slip"},
+        {"--fk", CLI_NONNEGATIVE, .slot = &b->fk, .meta = "FK",
+         .help = "kinetic friction level at fast slip, <= --fs"},
+        {"--vs", CLI_POSITIVE, .slot = &b->vs, .meta = "VS", .help = "Stribeck velocity"},
+        {"--delta", CLI_POSITIVE, .slot = &b->delta, .meta = "DELTA",
+         .help = "Stribeck exponent: k(s) = fk + (fs - fk) exp(-(s/vs)^delta)"},
+        {"--v-belt", CLI_POSITIVE, .slot = &b->v_belt, .meta = "V", .help = "belt speed"},
+        {"--dt", CLI_POSITIVE, .slot = &b->dt, .meta = "STEP",
+         .help = "the regularized run's RK4 step"},
+        {"--eps", CLI_POSITIVE, .slot = &b->eps, .given = &o->eps_given, .meta = "EPS",
+         .help = "the regularization, a velocity", .dflt = "2 dt"},
+        {"--cycles", CLI_WHOLE, .slot = &b->cycles, .lo = 2, .hi = 1000, .meta = "N",
+         .help = "the limit cycle measured: the N-th, 2 to 1000"},
+        {"--ref-dt", CLI_POSITIVE, .slot = &b->ref_dt, .meta = "STEP",
+         .help = "the event-driven reference's RK4 step in its slip phases"},
+        {"--output", CLI_CHOICE, .slot = &o->output, .words = cli_output_words,
+         .help = "a JSON summary, or a CSV row per GSL step of the measured cycle"}};
+    return cli_copy_rows(table, rows, sizeof rows / sizeof rows[0]);
+}
+
 int cli_parse_belt(int argc, char **argv, struct prob_belt *p, enum cli_output *output)
 {
-    struct prob_belt b = prob_belt_defaults();
-    int eps_given = 0, out = CLI_SUMMARY;
-    const struct cli_option opts[] = {{"--fs", CLI_POSITIVE, .slot = &b.fs},
-                                      {"--fk", CLI_NONNEGATIVE, .slot = &b.fk},
-                                      {"--vs", CLI_POSITIVE, .slot = &b.vs},
-                                      {"--delta", CLI_POSITIVE, .slot = &b.delta},
-                                      {"--v-belt", CLI_POSITIVE, .slot = &b.v_belt},
-                                      {"--dt", CLI_POSITIVE, .slot = &b.dt},
-                                      {"--eps", CLI_POSITIVE, .slot = &b.eps, .given = &eps_given},
-                                      {"--cycles", CLI_WHOLE, .slot = &b.cycles, .lo = 2,
-                                       .hi = 1000},
-                                      {"--ref-dt", CLI_POSITIVE, .slot = &b.ref_dt},
-                                      {"--output", CLI_CHOICE, .slot = &out,
-                                       .words = cli_output_words}};
-    int status = cli_parse_options(argc, argv, opts, sizeof opts / sizeof opts[0], "belt");
+    struct belt_options o;
+    struct cli_option table[CLI_MAX_ROWS];
+    size_t n = belt_table(&o, table);
+    int status = cli_parse_options(argc, argv, table, n, "belt");
     if (status != 0)
         return status;
-    *output = out;
+    *output = o.output;
+    struct prob_belt b = o.b;
+    int eps_given = o.eps_given;
     if (b.fk > b.fs)
         return cli_usage_error("--fk", "kinetic above static: must be <= --fs");
     if (!eps_given)
@@ -338,24 +386,47 @@ static int cli_belt(int argc, char **argv, FILE *out)
 
 /* ---- disk ------------------------------------------------------------------------------- */
 
+/* disk's options as parsed. */
+struct disk_options {
+    struct prob_disk d;
+    double reference;
+    int eps_given, output;
+};
+
+static size_t disk_table(struct disk_options *o, struct cli_option table[])
+{
+    *o = (struct disk_options){.d = prob_disk_defaults(),
+                               .reference = DISK_REF_EPS,
+                               .output = CLI_SUMMARY};
+    struct prob_disk *d = &o->d;
+    const struct cli_option rows[] = {
+        {"--a", CLI_POSITIVE, .slot = &d->a, .meta = "A", .help = "forcing amplitude"},
+        {"--omega", CLI_POSITIVE, .slot = &d->omega, .meta = "W", .help = "forcing frequency"},
+        {"--dt", CLI_POSITIVE, .slot = &d->dt, .meta = "STEP", .help = "RK4 step"},
+        {"--eps", CLI_POSITIVE, .slot = &d->eps, .given = &o->eps_given, .meta = "EPS",
+         .help = "the 2-D law's regularization, a speed", .dflt = "2 dt"},
+        {"--ref-eps", CLI_NONNEGATIVE, .slot = &o->reference, .meta = "EPS",
+         .help = "the reference run's eps, at dt = eps/2 (0: no reference run)"},
+        {"--law", CLI_NAME, .slot = &d->law, .names = &disk_law_names,
+         .help = "the 2-D friction law (docs/laws2d.md)"},
+        {"--output", CLI_CHOICE, .slot = &o->output, .words = cli_output_words,
+         .help = "a JSON summary, or a CSV row per GSL step of the measured turn"}};
+    return cli_copy_rows(table, rows, sizeof rows / sizeof rows[0]);
+}
+
 int cli_parse_disk(int argc, char **argv, struct prob_disk *p, double *ref_eps,
                    enum cli_output *output)
 {
-    struct prob_disk d = prob_disk_defaults();
-    double reference = DISK_REF_EPS;
-    int eps_given = 0, out = CLI_SUMMARY;
-    const struct cli_option opts[] = {{"--a", CLI_POSITIVE, .slot = &d.a},
-                                      {"--omega", CLI_POSITIVE, .slot = &d.omega},
-                                      {"--dt", CLI_POSITIVE, .slot = &d.dt},
-                                      {"--eps", CLI_POSITIVE, .slot = &d.eps, .given = &eps_given},
-                                      {"--ref-eps", CLI_NONNEGATIVE, .slot = &reference},
-                                      {"--law", CLI_NAME, .slot = &d.law, .names = &disk_law_names},
-                                      {"--output", CLI_CHOICE, .slot = &out,
-                                       .words = cli_output_words}};
-    int status = cli_parse_options(argc, argv, opts, sizeof opts / sizeof opts[0], "disk");
+    struct disk_options o;
+    struct cli_option table[CLI_MAX_ROWS];
+    size_t n = disk_table(&o, table);
+    int status = cli_parse_options(argc, argv, table, n, "disk");
     if (status != 0)
         return status;
-    *output = out;
+    *output = o.output;
+    struct prob_disk d = o.d;
+    double reference = o.reference;
+    int eps_given = o.eps_given;
     if (!eps_given)
         d.eps = 2.0 * d.dt; /* the paper's rule */
     *p = d;
@@ -425,24 +496,52 @@ static int cli_disk(int argc, char **argv, FILE *out)
     return status;
 }
 
-void cli_print_problem_defaults(FILE *out)
+/* ---- The help (help.c): the tables over options with the defaults set ------------------ */
+
+static size_t hold_help_table(struct cli_option table[])
 {
-    const double *h = hold_defaults;
-    const struct prob_belt b = prob_belt_defaults();
-    const struct prob_disk d = prob_disk_defaults();
-    fprintf(out,
-            "hold:       --mu [%g] --mass [%g] --g [%g] --phi-deg [%g] --dt [%g] --eps [20 dt]\n"
-            "            --theta-deg [atan(0.8 mu); with --tilt-rate 0.9 atan(mu)]\n"
-            "            --steps [%g; with --tilt-rate to 90 deg] --tilt-rate [0 deg/s: fixed]\n",
-            h[H_MU], h[H_MASS], h[H_G], h[H_PHI], h[H_DT], h[H_STEPS]);
-    fprintf(out,
-            "belt:       --fs [%g] --fk [%g] --vs [%g] --delta [%g] --v-belt [%g] --dt [%g]\n"
-            "            --eps [2 dt] --cycles [%d] --ref-dt [%g]\n",
-            b.fs, b.fk, b.vs, b.delta, b.v_belt, b.dt, b.cycles, b.ref_dt);
-    fprintf(out,
-            "disk:       --law [%s] --a [%g] --omega [%g] --dt [%g] --eps [2 dt] --ref-eps [%g]\n",
-            fricreg_disk_law_name(d.law), d.a, d.omega, d.dt, DISK_REF_EPS);
+    static struct hold_options o; /* the help's rows point here */
+    return hold_table(&o, table);
 }
+
+static size_t belt_help_table(struct cli_option table[])
+{
+    static struct belt_options o;
+    return belt_table(&o, table);
+}
+
+static size_t disk_help_table(struct cli_option table[])
+{
+    static struct disk_options o;
+    return disk_table(&o, table);
+}
+
+const struct cli_command cli_hold_command = {
+    "hold", "[--tilt-rate DEG_PER_S] [OPTION]...",
+    "a block on an incline: creep at a fixed tilt, or break-away",
+    "A block on an incline under gravity along a direction of the incline's plane, with the 2-D "
+    "law quinn (docs/laws2d.md, \"The hold test\"): at a fixed tilt inside the friction cone "
+    "the summary gives the creep speed (m/s) and displacement; with --tilt-rate the tilt grows "
+    "until the block slides, and the summary gives the break-away angle against the exact "
+    "atan(mu).",
+    hold_help_table};
+
+const struct cli_command cli_belt_command = {
+    "belt", "[--fs FS --fk FK --vs VS --delta DELTA --v-belt V] [OPTION]...",
+    "a belt-driven oscillator with Stribeck friction: its limit cycle",
+    "The oscillator x'' + x = f on a belt moving at V, with Stribeck friction (fricreg_stribeck.h):"
+    " the stick-slip limit cycle's period and amplitude by the regularized law, against an "
+    "event-driven reference whose stick phases are exact (docs/laws2d.md).",
+    belt_help_table};
+
+const struct cli_command cli_disk_command = {
+    "disk", "[--law L] [--a A] [--omega W] [--dt STEP] [OPTION]...",
+    "the 2-D oscillator under rotating forcing: dissipation per cycle",
+    "The 2-D oscillator x'' + x = f + a sin(omega t) (cos Omega t, sin Omega t), mu N = 1, with "
+    "a 2-D friction law (docs/laws2d.md, \"Comparison\"): the dissipation D per forcing cycle "
+    "over one turn of the forcing direction after three turns of transient, against a reference "
+    "run at --ref-eps.",
+    disk_help_table};
 
 int cli_problem(const char *command, int argc, char **argv, FILE *out)
 {

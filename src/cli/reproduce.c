@@ -461,11 +461,38 @@ static int check_out_dir(const char *dir)
     return cli_out_may_replace(dir, CLI_OUT_MANIFEST) ? 0 : CLI_EXIT_USAGE;
 }
 
+/* The rows over dir: the parser's and the help's one table. */
+static size_t reproduce_table(const char **dir, struct cli_option table[])
+{
+    *dir = NULL;
+    const struct cli_option opts[] = {
+        {"--out", CLI_FILE, .slot = dir, .meta = "DIR",
+         .help = "the folder for the CSV files, plots.gp, the PNGs (with gnuplot) and the "
+                 "manifest; created if absent, and no file in it not written by reproduce is "
+                 "replaced (required)"}};
+    return cli_copy_rows(table, opts, sizeof opts / sizeof opts[0]);
+}
+
+static size_t reproduce_help_table(struct cli_option table[])
+{
+    static const char *dir; /* the help's row points here */
+    return reproduce_table(&dir, table);
+}
+
+const struct cli_command cli_reproduce_command = {
+    "reproduce", "--out DIR", "the paper's experiments: CSVs, plots and a comparison table",
+    "Runs the experiments of Quinn (2004), Figs. 5, 6, 9 and 11, and the problems beyond the "
+    "paper (hold, belt, disk, hb): a CSV per figure in DIR, a PNG per figure when gnuplot is "
+    "installed, and on standard output a table of each paper number beside ours "
+    "(docs/reproduction.md).",
+    reproduce_help_table};
+
 int cli_reproduce(int argc, char **argv)
 {
     const char *dir = NULL;
-    const struct cli_option opts[] = {{"--out", CLI_FILE, .slot = &dir}};
-    int status = cli_parse_options(argc, argv, opts, sizeof opts / sizeof opts[0], "reproduce");
+    struct cli_option table[CLI_MAX_ROWS];
+    size_t rows = reproduce_table(&dir, table);
+    int status = cli_parse_options(argc, argv, table, rows, "reproduce");
     if (status == 0)
         status = check_out_dir(dir);
     if (status != 0)

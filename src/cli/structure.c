@@ -91,7 +91,30 @@ static int check_options(const struct structure_options *o)
 
 static const struct cli_word on_off[] = {{"on", 1}, {"off", 0}, {NULL, 0}};
 
-int cli_parse_structure(int argc, char **argv, struct structure_options *o)
+/* --integrator's placeholder: the schemes and the GSL steppers, as the parser takes them. */
+static const char *integrator_meta(void)
+{
+    static char meta[320];
+    if (meta[0] == '\0') {
+        char names[256];
+        gsl_stepper_names(names, sizeof names);
+        size_t used = 0;
+        for (size_t k = 0; schemes[k].word != NULL; k++)
+            used += (size_t)snprintf(meta + used, sizeof meta - used, "%s%s", k ? "|" : "",
+                                     schemes[k].word);
+        for (char *c = names; *c != '\0'; c++) /* ", rk2, rk4" -> "|rk2|rk4" */
+            if (*c == ',')
+                *c = '|';
+        for (const char *c = names; *c != '\0' && used + 1 < sizeof meta; c++)
+            if (*c != ' ')
+                meta[used++] = *c;
+        meta[used] = '\0';
+    }
+    return meta;
+}
+
+/* The rows over o, its defaults set: the parser's and the help's one table. */
+static size_t structure_table(struct structure_options *o, struct cli_option table[])
 {
     *o = (struct structure_options){.law = FRICREG_LAW_QUINN,
                                     .alpha = -0.05,
@@ -100,27 +123,62 @@ int cli_parse_structure(int argc, char **argv, struct structure_options *o)
                                     .error_estimate = 1};
     cli_element_defaults(&o->elements);
     const struct cli_option opts[] = {
-        {"--mass", CLI_FILE, .slot = &o->mass},
-        {"--stiffness", CLI_FILE, .slot = &o->stiffness},
-        {"--damping", CLI_FILE, .slot = &o->damping},
-        {"--contacts", CLI_FILE, .slot = &o->contacts},
-        {"--mun", CLI_FILE, .slot = &o->mun},
-        {"--influence", CLI_FILE, .slot = &o->influence},
-        {"--ground-accel", CLI_FILE, .slot = &o->ground},
-        CLI_ELEMENT_OPTIONS(&o->elements),
-        {"--rayleigh", CLI_CUSTOM, .slot = o, .parse = parse_rayleigh, .given = &o->rayleigh_given},
-        {"--integrator", CLI_CUSTOM, .slot = o, .parse = parse_integrator},
-        {"--law", CLI_NAME, .slot = &o->law, .names = &cli_law_names},
-        {"--output", CLI_CHOICE, .slot = &o->output, .words = cli_output_words},
-        {"--eps", CLI_POSITIVE, .slot = &o->eps},
-        {"--dt", CLI_POSITIVE, .slot = &o->dt},
-        {"--t-end", CLI_POSITIVE, .slot = &o->t_end},
-        {"--rtol", CLI_NONNEGATIVE, .slot = &o->rtol},
-        {"--atol", CLI_NONNEGATIVE, .slot = &o->atol, .given = &o->atol_given},
-        {"--alpha", CLI_NUMBER, .slot = &o->alpha, .given = &o->alpha_given},
-        {"--max-steps", CLI_WHOLE, .slot = &o->max_steps, .lo = 0, .hi = 1e9},
-        {"--error-estimate", CLI_CHOICE, .slot = &o->error_estimate, .words = on_off}};
-    int status = cli_parse_options(argc, argv, opts, sizeof opts / sizeof opts[0], "structure");
+        {"--mass", CLI_FILE, .slot = &o->mass, .meta = "M.mtx",
+         .help = "mass matrix M, Matrix Market n x n, symmetric positive definite (required)"},
+        {"--stiffness", CLI_FILE, .slot = &o->stiffness, .meta = "K.mtx",
+         .help = "stiffness matrix K, n x n, symmetric (required)"},
+        {"--damping", CLI_FILE, .slot = &o->damping, .meta = "C.mtx",
+         .help = "damping matrix C, n x n, symmetric (or --rayleigh; none: undamped)"},
+        {"--contacts", CLI_FILE, .slot = &o->contacts, .meta = "J.mtx",
+         .help = "contact rows, m x n: contact i's velocity is (J u')_i (required)"},
+        {"--mun", CLI_FILE, .slot = &o->mun, .meta = "MUN.txt",
+         .help = "the m contacts' friction bounds mu N_i >= 0, N (required)"},
+        {"--influence", CLI_FILE, .slot = &o->influence, .meta = "R.mtx",
+         .help = "the ground motion's influence vector r, n x 1",
+         .dflt = "1: every dof moves with the ground"},
+        {"--ground-accel", CLI_FILE, .slot = &o->ground, .meta = "FILE",
+         .help = "ground acceleration record: lines t a_g (s, m/s^2) on a uniform grid, linear "
+                 "between samples",
+         .dflt = "none"},
+        CLI_ELEMENT_OPTIONS(&o->elements, 0),
+        {"--rayleigh", CLI_CUSTOM, .slot = o, .parse = parse_rayleigh, .given = &o->rayleigh_given,
+         .meta = "A0,A1", .help = "Rayleigh damping C = A0 M + A1 K (A0 in 1/s, A1 in s, >= 0)"},
+        {"--integrator", CLI_CUSTOM, .slot = o, .parse = parse_integrator,
+         .meta = integrator_meta(),
+         .help = "newmark (average acceleration), hht (HHT-alpha, --alpha), central (explicit "
+                 "central difference), or a GSL stepper (required)"},
+        {"--law", CLI_NAME, .slot = &o->law, .names = &cli_law_names,
+         .help = "the contacts' friction law"},
+        {"--output", CLI_CHOICE, .slot = &o->output, .words = cli_output_words,
+         .help = "a JSON summary, or a CSV row per step"},
+        {"--eps", CLI_POSITIVE, .slot = &o->eps, .meta = "EPS",
+         .help = "the law's regularization, m/s",
+         .dflt = "1 % of the ground's peak velocity; 1e-3 without a record"},
+        {"--dt", CLI_POSITIVE, .slot = &o->dt, .meta = "STEP",
+         .help = "time step, s; with --rtol the first (required)", .dflt = ""},
+        {"--t-end", CLI_POSITIVE, .slot = &o->t_end, .meta = "T",
+         .help = "end time, s; the last step lands on it (required)", .dflt = ""},
+        {"--rtol", CLI_NONNEGATIVE, .slot = &o->rtol, .meta = "R",
+         .help = "GSL steppers only: relative tolerance of adaptive step control (0: fixed)"},
+        {"--atol", CLI_NONNEGATIVE, .slot = &o->atol, .given = &o->atol_given, .meta = "A",
+         .help = "GSL steppers only: absolute tolerance; with --rtol R and without it, each "
+                 "velocity a contact reads gets min(1e-3 eps / max_i sum_k |J_ik|, R)",
+         .dflt = "0, or from eps"},
+        {"--alpha", CLI_NUMBER, .slot = &o->alpha, .given = &o->alpha_given, .meta = "A",
+         .help = "hht's alpha, in [-1/3, 0]"},
+        {"--max-steps", CLI_WHOLE, .slot = &o->max_steps, .lo = 0, .hi = 1e9, .meta = "N",
+         .help = "GSL's adaptive steps over the whole run (0: no bound)",
+         .dflt = "the library's bound on each sample's call"},
+        {"--error-estimate", CLI_CHOICE, .slot = &o->error_estimate, .words = on_off,
+         .help = "a companion run at eps/2 adds an error estimate to the summary"}};
+    return cli_copy_rows(table, opts, sizeof opts / sizeof opts[0]);
+}
+
+int cli_parse_structure(int argc, char **argv, struct structure_options *o)
+{
+    struct cli_option table[CLI_MAX_ROWS];
+    size_t n = structure_table(o, table);
+    int status = cli_parse_options(argc, argv, table, n, "structure");
     if (!o->atol_given && o->rtol > 0.0) /* adaptive: the rule from eps, as the sim's runs */
         o->atol = FRICREG_ATOL_FROM_EPS;
     return status != 0 ? status : check_options(o);
@@ -499,3 +557,24 @@ int cli_structure(int argc, char **argv, FILE *out)
     cli_free_model(&in);
     return status;
 }
+
+/* ---- The help (help.c) -------------------------------------------------------------------- */
+
+static size_t structure_help_table(struct cli_option table[])
+{
+    static struct structure_options o; /* the help's rows point here */
+    return structure_table(&o, table);
+}
+
+const struct cli_command cli_structure_command = {
+    "structure",
+    "--mass M.mtx --stiffness K.mtx [--damping C.mtx | --rayleigh A0,A1] --contacts J.mtx "
+    "--mun MUN.txt [--ground-accel FILE] [ELEMENTS] --integrator I --dt STEP --t-end T "
+    "[OPTION]...",
+    "a structure from Matrix Market files: contacts, joint elements",
+    "A linear structure M u'' + C u' + K u = -M r a_g(t) + J^T f with friction contacts "
+    "(fricreg_structure.h), and optionally Jenkins, Iwan or lift-off elements (ELEMENTS: "
+    "--jenkins J.mtx with --jenkins-params, --iwan-params or --iwan-segalman, or --normal "
+    "with --normal-params), run with Newmark, HHT-alpha, central differences or a GSL stepper; "
+    "a JSON summary with the energy balance, or a CSV row per step (docs/structural.md).",
+    structure_help_table};
