@@ -409,6 +409,29 @@ FRICREG_API size_t fricreg_hb_points(const fricreg_hb *hb);
 FRICREG_API int fricreg_hb_point(fricreg_hb *hb, size_t k, double *omega, size_t ndof,
                                  double rms[]);
 
+/** The largest RMS of one dof along the last fricreg_hb_continue's branch, located between the
+ *  stored points rather than sampled at them: the stored point of the largest RMS and its two
+ *  neighbours bracket it, and Brent's minimization without derivatives (R. P. Brent,
+ *  "Algorithms for Minimization without Derivatives", 1973, Ch. 5: golden section and
+ *  successive parabolic interpolation) maximizes the RMS over the branch's points between them,
+ *  each solved by the continuation's corrector on a hyperplane normal to the neighbours' chord
+ *  (a fixed Ω would not do at a fold), to 1e-6 of the chord's length (the RMS then to about
+ *  1e-12 of itself, below Newton's tolerance). Typically 10 to 20 corrector solves. A largest
+ *  RMS at the branch's first or last point is that point's. The branch's points, the driver's
+ *  last solution (fricreg_hb_displacement) and its error record on success are not changed.
+ *
+ *  dof     the dof, 0 <= dof < ndof.
+ *  omega   out: the excitation frequency of the largest RMS, rad/s. Written only on success.
+ *  rms     out: that RMS over one period (as fricreg_hb_point's), displacement units.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb, omega or rms is NULL; FRICREG_EINVAL if dof is out
+ *  of range, or there is no branch (no fricreg_hb_continue yet, none of its points stored, or
+ *  the model or elements changed since; after a failed continuation the points reached
+ *  serve); FRICREG_EWORK if a corrector did not converge within the Newton settings'
+ *  iterations; FRICREG_ESINGULAR, FRICREG_EINTEGRATOR, FRICREG_ENOMEM as fricreg_hb_solve.
+ *  Since 1.7 (FRICREG_1.7). */
+FRICREG_API int fricreg_hb_peak(fricreg_hb *hb, size_t dof, double *omega, double *rms);
+
 /** Status of the last failed call on hb. Returns that code, or FRICREG_OK if none (or hb
  *  NULL). A successful call does not clear it. Since 1.6. */
 FRICREG_API int fricreg_hb_errcode(const fricreg_hb *hb);
