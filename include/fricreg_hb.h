@@ -314,12 +314,14 @@ FRICREG_API int fricreg_hb_set_newton(fricreg_hb *hb, double tol, int max_iter);
  *  ds_max), κ the contraction of the corrector's first two Newton steps, δ its first step, α
  *  the angle between the tangents at the last two points, its its iterations. A step is
  *  rejected and halved when the corrector fails, ends farther than 4 ds from the last point
- *  (it would have jumped along the branch, e.g. across a sharp peak), or turns the tangent by
- *  more than 30°, except at a kink of the branch (where the elements' stick/slip or contact
- *  pattern changes, the exact AFT's Jacobian is not smooth): a converged corrector whose
- *  tangent turned by less than 90° is accepted once halving ds did not lower the angle by a
- *  quarter, or when halving would take ds below ds_min. Below ds_min the step is tried once
- *  more along the secant of the last two points; then the continuation stops with
+ *  (it would have jumped along the branch, e.g. across a sharp peak), turns the chord by more
+ *  than twice the tangent's angle (it joined another part of the branch), turns the tangent
+ *  by more than 20° or contracts by more than 1/2 in its first two steps, except at a kink of
+ *  the branch (where the elements' stick/slip or contact pattern changes, the exact AFT's
+ *  Jacobian is not smooth): a converged corrector whose tangent turned by less than 90° is
+ *  accepted once halving ds did not lower the angle and the contraction by a quarter, or when
+ *  halving would take ds below ds_min. Below ds_min the step is tried once more along the
+ *  secant of the last two points; then the continuation stops with
  *  FRICREG_EINTEGRATOR. (Until 1.6: grown by 1.5 after at most 4 corrector iterations, halved
  *  after a failure or a corrector that ended farther than ds/2 from its predictor; the
  *  defaults are unchanged.)

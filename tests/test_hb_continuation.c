@@ -23,6 +23,11 @@
  *     (a smooth maximum's Omega is known to the square root of the RMS's accuracy).
  *   - the peak's convergence in H (the element forces' coefficients fall like h^-2): H = 9
  *     nearer H = 15 than H = 5 is.
+ *   - a branch that doubles back (the oscillator of damping ratio 1e-5, linear: its RMS in
+ *     closed form): every stored point on the closed form to 1e-6 of the peak (the corrector's
+ *     1e-10 amplified by Q = 5e4), Omega past the resonance
+ *     and the refused point (its Omega in the message) back below it, FRICREG_EWORK long
+ *     before max_points.
  *   - the contact pair's peak from three routes (up, down, and across 5 to 14 rad/s) agree to
  *     1e-8; at the peak, the steady state in time (tests/support/jenkins_newmark.h, 1024 steps a
  *     period, 400 periods, steady to 1e-6 and the contact asserted to open and close) against
@@ -352,6 +357,67 @@ START_TEST(contact_pair_time_domain)
 }
 END_TEST
 
+/* One mass m = 2 on k = 3 with a stuck element kt = 1.5 (mu N = 1e6: linear, stiffness 4.5),
+ * C = 2 zeta sqrt(4.5 m), forced by 0.5 cos(Omega t), H = 3: RMS in closed form. */
+static fricreg_hb *oscillator(double zeta)
+{
+    fricreg_hb *hb = NULL;
+    double M = 2.0, K = 3.0, C = 2.0 * zeta * sqrt(9.0), J = 1.0, kt = 1.5, mun = 1e6, pc = 0.5,
+           ps = 0.0;
+    ck_assert_int_eq(fricreg_hb_create(1, 1, 3, &hb), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_mass(hb, 1, &M), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 1, &K), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_damping(hb, 1, &C), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_elements(hb, 1, 1, &J, &kt, &mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_excitation(hb, 1, &pc, &ps), FRICREG_OK);
+    return hb;
+}
+
+/* A branch that doubles back stops with FRICREG_EWORK, long before max_points: on the
+ * oscillator of damping ratio 1e-5 the default step joins the two ends of the response circle
+ * (they meet at q = 0 a few 1e-3 rad/s apart) beyond the peak and runs back down the rising
+ * flank (1.6 reversed there again and again, to its 2000 points). Its points are the closed
+ * form's, and Omega reversed; at damping ratio 3e-5 the branch passes. */
+START_TEST(doubling_back_stops)
+{
+    fricreg_hb *hb = oscillator(1e-5);
+    int status = fricreg_hb_continue(hb, 0.5, 3.0, 7, NULL);
+    size_t np = fricreg_hb_points(hb);
+    if (getenv("HB_PRINT"))
+        fprintf(stderr, "zeta 1e-5: status %d, %zu points: %s\n", status, np,
+                fricreg_hb_errmsg(hb));
+    ck_assert_int_eq(status, FRICREG_EWORK);
+    ck_assert_ptr_nonnull(strstr(fricreg_hb_errmsg(hb), "doubles back"));
+    ck_assert_uint_lt(np, 400);
+    double om, rms, top = 0.0, last = 0.0, C = 2.0 * 1e-5 * 3.0, want[400], big = 0.0;
+    for (size_t k = 0; k < np; k++) {
+        ck_assert_int_eq(fricreg_hb_point(hb, k, &om, 1, &rms), FRICREG_OK);
+        double d = 4.5 - 2.0 * om * om, c = C * om;
+        want[k] = 0.5 / sqrt(d * d + c * c) / sqrt(2.0);
+        big = fmax(big, want[k]);
+    }
+    for (size_t k = 0; k < np; k++) {
+        ck_assert_int_eq(fricreg_hb_point(hb, k, &om, 1, &rms), FRICREG_OK);
+        ck_assert_double_le(fabs(rms - want[k]), 1e-6 * big);
+        top = fmax(top, om);
+        last = om;
+    }
+    /* the points past the resonance (1.5), the refused one (in the message) back below it */
+    double back = 0.0;
+    const char *at = strstr(fricreg_hb_errmsg(hb), "at Omega = ");
+    ck_assert_ptr_nonnull(at);
+    ck_assert_int_eq(sscanf(at, "at Omega = %lf", &back), 1);
+    ck_assert_double_gt(top, 1.5);
+    ck_assert_double_gt(last, 1.5);
+    ck_assert_double_lt(back, 1.5);
+    fricreg_hb_free(hb);
+    hb = oscillator(3e-5);
+    ck_assert_int_eq(fricreg_hb_continue(hb, 0.5, 3.0, 7, NULL), FRICREG_OK);
+    ck_assert_uint_le(fricreg_hb_points(hb), 400);
+    fricreg_hb_free(hb);
+}
+END_TEST
+
 START_TEST(peak_bad_input)
 {
     struct jenkins_model s = chain(0);
@@ -396,6 +462,7 @@ int main(void)
     tcase_add_test(tc, chain_coarse_ds_min);
     tcase_add_test(tc, peak_against_fixed_omega);
     tcase_add_test(tc, contact_pair_every_route);
+    tcase_add_test(tc, doubling_back_stops);
     tcase_add_test(tc, peak_bad_input);
     tcase_add_test(td, contact_pair_time_domain);
     suite_add_tcase(s, tc);

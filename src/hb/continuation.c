@@ -12,14 +12,16 @@
  * successive tangents, and the corrector's iterations (as NLvib's solve_and_continue, Krack &
  * Gross Ch. 4–5), the next step is ds / f, f = max(κ/κ0, (δ/ds)/δ0, α/α0, its/its0) within
  * [1/2, 2]. A step is rejected (ds halved) when the corrector fails, ends farther than 4 ds
- * from the last point (it jumped along the branch, e.g. across a sharp peak), or turns the
- * tangent by more than 30°. The exact AFT's Jacobian is not smooth where an element's
- * stick/slip or contact pattern changes, and there the branch has a kink: the tangent turns by
- * an angle that does not fall with ds. A converged corrector whose tangent turned by less than
- * 90° is accepted there, once halving ds no longer lowered the angle by a quarter, or when
- * halving would go below ds_min (a converged residual is a solution). Below ds_min the step is
- * predicted once more along the secant of the last two points before the continuation stops.
- * A branch that runs back along itself (a point near an earlier stretch, heading the same way)
+ * from the last point (it jumped along the branch, e.g. across a sharp peak), turns the chord
+ * by more than twice the tangent's angle (it joined another part of the branch: the flanks of
+ * a sharp peak meet at q = 0 a tiny Ω apart), turns the tangent by more than 20°, or
+ * contracts by more than 1/2 in its first steps. The exact AFT's Jacobian is not smooth where
+ * an element's stick/slip or contact pattern changes, and there the branch has a kink: the
+ * angle and the contraction do not fall with ds. A converged corrector whose tangent turned by
+ * less than 90° is accepted there, once halving ds no longer lowered them by a quarter, or
+ * when halving would go below ds_min (a converged residual is a solution). Below ds_min the
+ * step is predicted once more along the secant of the last two points before the
+ * continuation stops. A branch that runs back along itself (a point near an earlier stretch, heading the same way)
  * stops it. The points' Ω, RMS and unknowns are stored; fricreg_hb_peak locates each dof's
  * largest RMS between them. */
 #include <math.h>
@@ -32,14 +34,19 @@
 /* The step control's nominal values (Allgower & Georg give the form; these were chosen on
  * tests/test_hb_continuation.c's chains and lift-off pair): the corrector's contraction, its
  * first step relative to ds, the angle between successive tangents (rad), the iterations; the
- * bound on the angle (30°) and on the distance from the last point (4 ds: the hyperplane of a
- * kink of up to 75° meets the branch within ds / cos 75° < 4 ds). */
+ * bounds on the angle (20°; a kink's 90°), on the contraction (1/2: Newton's convergence is
+ * slow beyond) and on the distance from the last point (4 ds: the hyperplane of a kink of up
+ * to 75° meets the branch within ds / cos 75° < 4 ds); the chord's slack over twice the
+ * tangents' angle. */
 #define KAPPA0 0.25
 #define DELTA0 0.3
 #define ALPHA0 0.1745329251994330 /* 10° */
 #define ITS0 4.0
-#define ALPHA_MAX 0.5235987755982988 /* 30° */
+#define ALPHA_MAX 0.3490658503988659 /* 20° */
+#define KAPPA_MAX 0.5
+#define KINK_MAX 1.5707963267948966 /* 90°: a larger turn goes back along the branch */
 #define JUMP 4.0
+#define CHORD_SLACK 1e-3 /* rad: above the chord's rounding, about tol/ds_min = 1e-4 */
 
 struct branch {
     double qs, ws; /* the scales */
@@ -272,14 +279,17 @@ static int doubles_back(const fricreg_hb *hb, const struct branch *b, const doub
 
 /* One step's outcome from yc with ds along dir: 0 accepted (qw the point, tn its tangent,
  * *alpha the angle between the tangents), 1 rejected (the message in b->why), or a status
- * that ends the continuation (FRICREG_ENOMEM). */
+ * that ends the continuation (FRICREG_ENOMEM). *sev is the converged corrector's severity,
+ * max(κ/KAPPA_MAX, α/ALPHA_MAX) (above 1: rejected, unless a kink), 0 if it failed or left
+ * the branch; sev_before the last rejected attempt's from the same point at twice the step. */
 static int attempt(fricreg_hb *hb, const char *fn, struct branch *b, double ds, int *its,
-                   double *alpha, double alpha_before, int *kink)
+                   double *alpha, double *sev, double sev_before, int *kink)
 {
     size_t nq = hb->nq, ld = nq + 1;
     for (size_t j = 0; j < ld; j++)
         b->yp[j] = b->yc[j] + ds * hb->dir[j];
-    *alpha = 0.0;
+    *alpha = *sev = 0.0;
+    *kink = 0;
     int status = corrector(hb, fn, b, b->yp, b->yp, hb->dir, its);
     if (status == FRICREG_OK)
         status = tangent_from_matrix(hb, fn, hb->tn);
@@ -289,28 +299,45 @@ static int attempt(fricreg_hb *hb, const char *fn, struct branch *b, double ds, 
         snprintf(b->why, sizeof b->why, "%s", hb->err.msg);
         return -1;
     }
-    double h = dist(hb->qw, b->yc, ld);
+    double h = dist(hb->qw, b->yc, ld), deg = 57.29577951308232;
     *alpha = acos(fmax(-1.0, fmin(1.0, dot(hb->tn, hb->tan, ld))));
-    *kink = 0;
     if (h > JUMP * ds) {
-        *alpha = 0.0;
         snprintf(b->why, sizeof b->why,
                  "%s: the corrector ended %g from the last point, beyond %g ds = %g", fn, h, JUMP,
                  JUMP * ds);
         return -1;
     }
-    if (*alpha > ALPHA_MAX) {
-        /* on a smooth branch the angle falls in proportion to ds; one that does not fall
-         * (by a quarter at least) when ds was halved is a kink of the branch: accepted */
-        if (alpha_before > 0.0 && *alpha >= 0.75 * alpha_before && *alpha < 3.0 * ALPHA_MAX) {
-            *kink = 1;
-            return 0;
-        }
-        snprintf(b->why, sizeof b->why, "%s: the tangent turned by %.3g degrees, beyond 30", fn,
-                 *alpha * 57.29577951308232);
+    /* on a smooth arc the chord lies half way between the tangents, at a kink between them:
+     * a chord that turned by much more than the tangents did joined another part of the
+     * branch (two flanks of a sharp peak, nearly parallel, a tiny Ω apart) */
+    double chord = acos(
+        fmax(-1.0, fmin(1.0, (dot(hb->qw, hb->tan, ld) - dot(b->yc, hb->tan, ld)) / h)));
+    if (chord > 2.0 * *alpha + CHORD_SLACK) {
+        snprintf(b->why, sizeof b->why,
+                 "%s: the chord turned by %.3g degrees from the tangent, which turned by %.3g", fn,
+                 chord * deg, *alpha * deg);
         return -1;
     }
-    return 0;
+    /* a slow corrector (its first steps contract by more than KAPPA_MAX: the predictor was
+     * far from where Newton converges fast, or it converged to another part of the branch)
+     * or a tangent turned by more than ALPHA_MAX: the step was too long for the branch's
+     * curvature. On a smooth branch both fall in proportion to ds; if they did not fall by a
+     * quarter when ds was halved, this is a kink of the branch: accepted. */
+    *sev = fmax(*alpha / ALPHA_MAX, b->kappa / KAPPA_MAX);
+    if (*sev <= 1.0)
+        return 0;
+    if (sev_before > 0.0 && *sev >= 0.75 * sev_before && *alpha < KINK_MAX) {
+        *kink = 1;
+        return 0;
+    }
+    if (*alpha > ALPHA_MAX)
+        snprintf(b->why, sizeof b->why, "%s: the tangent turned by %.3g degrees, beyond %.3g", fn,
+                 *alpha * deg, ALPHA_MAX * deg);
+    else
+        snprintf(b->why, sizeof b->why,
+                 "%s: the corrector's first steps contracted by %.3g, beyond %.3g", fn, b->kappa,
+                 KAPPA_MAX);
+    return -1;
 }
 
 static int follow(fricreg_hb *hb, const char *fn, struct branch *b, double omega1)
@@ -333,7 +360,7 @@ static int follow(fricreg_hb *hb, const char *fn, struct branch *b, double omega
          * along the secant of the last two points (the tangent of a non-smooth Jacobian may
          * point off the branch), from the last accepted step */
         int its = 0, kink = 0, secant = 0, accepted = 0, last = 0;
-        double alpha = 0.0, alpha_before = 0.0, ds_start = ds;
+        double alpha = 0.0, sev = 0.0, sev_before = 0.0, ds_start = ds;
         memcpy(hb->dir, hb->tan, ld * sizeof(double));
         while (!accepted) {
             for (size_t j = 0; j <= nq; j++)
@@ -348,18 +375,18 @@ static int follow(fricreg_hb *hb, const char *fn, struct branch *b, double omega
                 snprintf(b->why, sizeof b->why, "%s", hb->err.msg);
                 last = 0;
             } else {
-                int r = attempt(hb, fn, b, ds, &its, &alpha, alpha_before, &kink);
+                int r = attempt(hb, fn, b, ds, &its, &alpha, &sev, sev_before, &kink);
                 if (r > 0)
                     return r;
                 if (r == 0) {
                     accepted = 1;
                     break;
                 }
-                alpha_before = alpha; /* 0 unless the corrector converged */
+                sev_before = sev; /* 0 unless the corrector converged near the branch */
             }
             /* a converged corrector near the last point whose tangent turned (but not
              * back) is a solution: accepted rather than the step halved below ds_min */
-            if (alpha > 0.0 && alpha < 3.0 * ALPHA_MAX && 0.5 * ds < hb->ds_min) {
+            if (sev > 0.0 && alpha < KINK_MAX && 0.5 * ds < hb->ds_min) {
                 kink = accepted = 1;
                 break;
             }
@@ -376,7 +403,7 @@ static int follow(fricreg_hb *hb, const char *fn, struct branch *b, double omega
             for (size_t j = 0; j < ld; j++)
                 hb->dir[j] = (b->yc[j] - b->yo[j]) / h;
             ds = ds_start;
-            alpha_before = 0.0;
+            sev_before = 0.0;
         }
         if (last) {
             status = store_point(hb, omega1);
