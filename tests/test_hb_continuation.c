@@ -418,6 +418,34 @@ START_TEST(doubling_back_stops)
 }
 END_TEST
 
+/* The stored unknowns follow nq: a branch with Jenkins elements (2 rows), then on the same
+ * driver one with lift-off elements (4 rows: nq doubles; kn = 0, N = N0 throughout): its points
+ * against a natural-parameter sweep; the peak refused in between (the elements changed). */
+START_TEST(elements_change_between_branches)
+{
+    struct jenkins_model s = chain(1);
+    const int H = 5;
+    fricreg_hb *hb = make(&s, H);
+    ck_assert_int_eq(fricreg_hb_continue(hb, 0.5, 2.0, 2 * 11, NULL), FRICREG_OK);
+    double om, r;
+    ck_assert_int_eq(fricreg_hb_peak(hb, 0, &om, &r), FRICREG_OK);
+    struct jenkins_model n = s;
+    n.normal = 1;
+    for (int e = 0; e < 2; e++) {
+        n.Jn[e * 3 + 2] = 1.0; /* g = x_3, no normal force: kn = 0, N0 = 1 */
+        n.mu[e] = 1.0, n.n0[e] = 1.0, n.kn[e] = 0.0;
+    }
+    ck_assert_int_eq(fricreg_hb_set_normal_elements(hb, 2, 3, n.J, n.Jn, n.kt, n.mu, n.n0, n.kn),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_peak(hb, 0, &om, &r), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_hb_continue(hb, 0.5, 2.0, 4 * 11, NULL), FRICREG_OK);
+    ck_assert_uint_le(fricreg_hb_points(hb), 400);
+    against_sweep(hb, &n, H);
+    ck_assert_int_eq(fricreg_hb_peak(hb, 0, &om, &r), FRICREG_OK);
+    fricreg_hb_free(hb);
+}
+END_TEST
+
 START_TEST(peak_bad_input)
 {
     struct jenkins_model s = chain(0);
@@ -463,6 +491,7 @@ int main(void)
     tcase_add_test(tc, peak_against_fixed_omega);
     tcase_add_test(tc, contact_pair_every_route);
     tcase_add_test(tc, doubling_back_stops);
+    tcase_add_test(tc, elements_change_between_branches);
     tcase_add_test(tc, peak_bad_input);
     tcase_add_test(td, contact_pair_time_domain);
     suite_add_tcase(s, tc);

@@ -58,20 +58,25 @@ struct branch {
     char why[256];       /* the last failed step's message */
 };
 
-/* Room for `want` points (at most max_points), kept on failure: FRICREG_ENOMEM. */
+/* Room for `want` points (at most max_points), kept on failure: FRICREG_ENOMEM. The unknowns'
+ * room follows nq, which the element setters change (1 or 2 rows per element). */
 static int reserve(fricreg_hb *hb, size_t want)
 {
+    size_t stride = hb->nq + 1;
     if (want > hb->max_points)
         want = hb->max_points;
-    if (want <= hb->cap)
+    if (want <= hb->cap && hb->qpts_stride == stride)
         return FRICREG_OK;
+    if (want < hb->cap)
+        want = hb->cap;
     double *p = realloc(hb->pts, want * (1 + hb->n) * sizeof(double));
     if (p != NULL)
         hb->pts = p;
-    double *q = p == NULL ? NULL : realloc(hb->qpts, want * (hb->nq + 1) * sizeof(double));
+    double *q = p == NULL ? NULL : realloc(hb->qpts, want * stride * sizeof(double));
     if (q == NULL)
         return fr_fail(hb, FRICREG_ENOMEM, "continue: no memory for %zu points", want);
     hb->qpts = q;
+    hb->qpts_stride = stride;
     hb->cap = want;
     return FRICREG_OK;
 }

@@ -99,7 +99,7 @@ struct fricreg_hb {
      * unknowns (q, then Ω) in qpts [npts (nq + 1)], for fricreg_hb_peak; the branch's scales,
      * and whether the model is still the branch's (cleared by a model change) */
     double *pts, *qpts;
-    size_t npts, cap;
+    size_t npts, cap, qpts_stride; /* qpts holds cap points of qpts_stride = nq + 1 */
     double branch_qs, branch_ws;
     int have_branch;
 
