@@ -404,6 +404,7 @@ module fricreg
     procedure :: continue => hb_continue
     procedure :: points => hb_points
     procedure :: point => hb_point
+    procedure :: peak => hb_peak
     procedure, private :: hb_shape
     final :: hb_final
   end type
@@ -3596,6 +3597,21 @@ contains
     if (status == FRICREG_OK) status = self%record(fricreg_hb_point(self%ptr, as_size(k - 1), &
                                                      omega, self%n, rms))
   end function hb_point
+
+  !> The largest RMS of dof `dof` (1 <= dof <= ndof) along the last continuation's branch,
+  !> located between its points (fricreg_hb_peak): its frequency omega and that RMS.
+  !> FRICREG_EINVAL for dof out of range or no branch.
+  function hb_peak(self, dof, omega, rms) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    integer, intent(in) :: dof
+    real(c_double), intent(inout) :: omega, rms
+    integer(c_int) :: status
+    status = self%ready('peak', 'HB driver')
+    if (status == FRICREG_OK .and. dof < 1) &
+      status = self%fail(FRICREG_EINVAL, 'peak: dof must be >= 1 (Fortran counts from 1)')
+    if (status == FRICREG_OK) status = self%record(fricreg_hb_peak(self%ptr, as_size(dof - 1), &
+                                                     omega, rms))
+  end function hb_peak
 #endif
 
 end module fricreg

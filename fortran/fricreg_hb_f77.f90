@@ -27,10 +27,11 @@
 !   FRHBGO(H, W0, W1, NQ, IGUESS, Q0, STAT)           _continue (IGUESS = 1: Q0 the guess)
 !   FRHBNP(H, NP, STAT)                               _points
 !   FRHBPT(H, K, OMEGA, NDOF, RMS, STAT)              _point (K from 1)
+!   FRHBPK(H, IDOF, OMEGA, RMS, STAT)                 _peak (IDOF from 1)
 !   FRHBER(H, CODE, MSG, STAT)                        _errcode, _errmsg
 ! Refused here, before C sees them, with FRICREG_EINVAL: FRHBCR's NDOF or M below 1, a
-! negative MAXPT, IGUESS other than 0 or 1, and a K below 1 (counts that would wrap into
-! size_t or C's 0-based index).
+! negative MAXPT, IGUESS other than 0 or 1, and a K or IDOF below 1 (counts that would wrap
+! into size_t or C's 0-based index).
 
 !> FRHBCR(NDOF, M, NH, H, STAT): a driver for NDOF >= 1 degrees of freedom, M >= 1 Jenkins
 !> elements and NH harmonics (1 <= NH <= FRICREG_HB_MAX_HARMONICS) into H.
@@ -331,6 +332,23 @@ subroutine frhbpt(h, k, omega, ndof, rms, stat)
   stat = int(fricreg_hb_point(fricreg_handle_to_ptr(h), int(k - 1, c_size_t), omega, &
                               int(ndof, c_size_t), rms))
 end subroutine frhbpt
+
+!> FRHBPK(H, IDOF, OMEGA, RMS, STAT): the largest RMS of dof IDOF (1 <= IDOF <= NDOF) along
+!> the last continuation's branch, located between its points, and its frequency OMEGA.
+subroutine frhbpk(h, idof, omega, rms, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: idof
+  double precision, intent(inout) :: omega, rms
+  integer, intent(out) :: stat
+  if (idof < 1) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  stat = int(fricreg_hb_peak(fricreg_handle_to_ptr(h), int(idof - 1, c_size_t), omega, rms))
+end subroutine frhbpk
 
 !> FRHBER(H, CODE, MSG, STAT): code and message of the driver's last failure.
 subroutine frhber(h, code, msg, stat)

@@ -308,19 +308,34 @@ FRICREG_API int fricreg_hb_set_newton(fricreg_hb *hb, double tol, int max_iter);
 
 /** The continuation's step control, in the arclength of the scaled unknowns (q divided by the
  *  largest |q| of the starting solution, raised to the largest |q| reached along the branch, Ω
- *  by |Ω1 − Ω0|, so ds = 0.01 is about a hundredth of the interval on a flat branch): start at ds, grow by 1.5 (up to ds_max) after a corrector
- *  that converged within 4 iterations, halve after one that failed or ended farther than ds/2
- *  from its predictor (it would have jumped along the branch, e.g. across a sharp peak); below ds_min the
- *  continuation stops with FRICREG_EINTEGRATOR.
+ *  by |Ω1 − Ω0|, so ds = 0.01 is about a hundredth of the interval on a flat branch). Since
+ *  1.7 the step follows the corrector's convergence and the branch's curvature (E. L. Allgower
+ *  and K. Georg, "Numerical Continuation Methods", Springer 1990, Ch. 6): after each point the
+ *  next step is ds / f, f = max(κ/0.25, (δ/ds)/0.3, α/10°, its/4) kept within [1/2, 2] (up to
+ *  ds_max), κ the contraction of the corrector's first two Newton steps, δ its first step, α
+ *  the angle between the tangents at the last two points, its its iterations. A step is
+ *  rejected and halved when the corrector fails, ends farther than 4 ds from the last point
+ *  (it would have jumped along the branch, e.g. across a sharp peak), turns the chord by more
+ *  than twice the tangent's angle (it joined another part of the branch), turns the tangent
+ *  by more than 20° or contracts by more than 1/2 in its first two steps, except at a kink of
+ *  the branch (where the elements' stick/slip or contact pattern changes, the exact AFT's
+ *  Jacobian is not smooth): a converged corrector whose tangent turned by less than 90° is
+ *  accepted once halving ds did not lower the angle and the contraction by a quarter, or when
+ *  halving would take ds below ds_min. Below ds_min the step is tried once more along the
+ *  secant of the last two points; then the continuation stops with
+ *  FRICREG_EINTEGRATOR. (Until 1.6: grown by 1.5 after at most 4 corrector iterations, halved
+ *  after a failure or a corrector that ended farther than ds/2 from its predictor; the
+ *  defaults are unchanged.)
  *
- *  ds          first step, ds_min <= ds <= ds_max (finite).
- *  ds_min      smallest step, > 0.
- *  ds_max      largest step, <= 1.
- *  max_points  bound on the points stored, >= 2; reaching it stops with FRICREG_EWORK.
+ *  ds          first step, ds_min <= ds <= ds_max (finite); default 0.02.
+ *  ds_min      smallest step, > 0; default 1e-6.
+ *  ds_max      largest step, <= 1; default 0.1.
+ *  max_points  bound on the points stored, >= 2; reaching it stops with FRICREG_EWORK;
+ *              default 2000.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if hb is NULL; FRICREG_ENONFINITE if ds, ds_min or
- *  ds_max is NaN or infinite; FRICREG_EINVAL if they are out of order or range or max_points
- *  < 2. Since 1.6. */
+ *  ds_max is NaN or infinite; FRICREG_EINVAL if they are out of order or range (ds <= 0
+ *  included) or max_points < 2. Since 1.6. */
 FRICREG_API int fricreg_hb_set_continuation(fricreg_hb *hb, double ds, double ds_min, double ds_max,
                                             size_t max_points);
 
@@ -368,14 +383,17 @@ FRICREG_API int fricreg_hb_displacement(fricreg_hb *hb, size_t ndof, size_t nc, 
 
 /** Follow the periodic response from omega0 to omega1 by pseudo-arclength continuation in Ω
  *  (Keller's, Krack & Gross Ch. 5): from the solution at omega0 (fricreg_hb_solve's, from q0
- *  or the stuck guess), a tangent predictor and a Newton corrector on (R) bordered by the
- *  arclength condition, with the step control of fricreg_hb_set_continuation (the
- *  parametrization passes turning points in Ω; none was met in the tests, where the Jenkins
- *  elements soften the resonances without folding them); the last point is solved at omega1
- *  exactly. Each point's Ω and the RMS of
- *  each dof over one period, rms_k² = x0² + (1/2) Σ_h (a_h² + b_h²) (all harmonics), are
- *  stored (fricreg_hb_points, fricreg_hb_point), replacing those of an earlier call; the last
- *  point is the one fricreg_hb_displacement gives.
+ *  or the stuck guess), a tangent predictor and a Newton corrector with a line search on (R)
+ *  bordered by the arclength condition, with the step control of fricreg_hb_set_continuation
+ *  (the parametrization passes turning points in Ω, and the kinks of the branch where the
+ *  elements' stick/slip or contact pattern changes); the last point is solved at omega1
+ *  exactly. Each point's Ω, the RMS of each dof over one period, rms_k² = x0² + (1/2) Σ_h
+ *  (a_h² + b_h²) (all harmonics), and its unknowns q are stored (fricreg_hb_points,
+ *  fricreg_hb_point, fricreg_hb_peak), replacing those of an earlier call; the last point is
+ *  the one fricreg_hb_displacement gives. A branch that doubles back on itself (a new point
+ *  within a tenth of a step of an earlier stretch of the branch, heading the same way, after a
+ *  way along the branch of more than 3 times the distance between them) would never reach
+ *  omega1: the continuation stops there with FRICREG_EWORK.
  *
  *  omega0, omega1  the interval's ends, > 0 (finite), omega0 != omega1 (either order), rad/s.
  *  nq, q0          as fricreg_hb_solve (q0 the guess at omega0, or NULL).
@@ -385,12 +403,14 @@ FRICREG_API int fricreg_hb_displacement(fricreg_hb *hb, size_t ndof, size_t nc, 
  *  q0[j] is NaN or infinite, or an intermediate overflows (as fricreg_hb_solve); FRICREG_ESIZE
  *  if nq is not fricreg_hb_solve's; FRICREG_ESINGULAR,
  *  FRICREG_EWORK, FRICREG_EINTEGRATOR as fricreg_hb_solve at omega0; FRICREG_EINTEGRATOR if
- *  the step fell below ds_min; FRICREG_EWORK if max_points were stored before omega1;
+ *  the step fell below ds_min; FRICREG_EWORK if max_points were stored before omega1, or the
+ *  branch doubled back on itself (the message says which);
  *  FRICREG_ENOMEM (for the first 64 points before anything changed; for more, later, with the
  *  points so far kept; or UMFPACK's, as fricreg_hb_solve, with the points so far kept). On
  *  failure the points reached so far are kept (fricreg_hb_points
  *  counts them; 0 if the solve at omega0 failed) and fricreg_hb_displacement gives the last
- *  solution. Allocates room for the points, 64 at first, doubling. Since 1.6. */
+ *  solution. Allocates room for the points, 64 at first, doubling: (1 + ndof + nq + 1)
+ *  doubles each. Since 1.6. */
 FRICREG_API int fricreg_hb_continue(fricreg_hb *hb, double omega0, double omega1, size_t nq,
                                     const double q0[]);
 
@@ -409,6 +429,29 @@ FRICREG_API size_t fricreg_hb_points(const fricreg_hb *hb);
  *  out of range; FRICREG_ESIZE if ndof is not the driver's. Since 1.6. */
 FRICREG_API int fricreg_hb_point(fricreg_hb *hb, size_t k, double *omega, size_t ndof,
                                  double rms[]);
+
+/** The largest RMS of one dof along the last fricreg_hb_continue's branch, located between the
+ *  stored points rather than sampled at them: the stored point of the largest RMS and its two
+ *  neighbours bracket it, and Brent's minimization without derivatives (R. P. Brent,
+ *  "Algorithms for Minimization without Derivatives", 1973, Ch. 5: golden section and
+ *  successive parabolic interpolation) maximizes the RMS over the branch's points between them,
+ *  each solved by the continuation's corrector on a hyperplane normal to the neighbours' chord
+ *  (a fixed Ω would not do at a fold), to 1e-6 of the chord's length (the RMS then to about
+ *  1e-12 of itself, below Newton's tolerance). Typically 10 to 20 corrector solves. A largest
+ *  RMS at the branch's first or last point is that point's. The branch's points, the driver's
+ *  last solution (fricreg_hb_displacement) and its error record on success are not changed.
+ *
+ *  dof     the dof, 0 <= dof < ndof.
+ *  omega   out: the excitation frequency of the largest RMS, rad/s. Written only on success.
+ *  rms     out: that RMS over one period (as fricreg_hb_point's), displacement units.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb, omega or rms is NULL; FRICREG_EINVAL if dof is out
+ *  of range, or there is no branch (no fricreg_hb_continue yet, none of its points stored, or
+ *  the model or elements changed since; after a failed continuation the points reached
+ *  serve); FRICREG_EWORK if a corrector did not converge within the Newton settings'
+ *  iterations; FRICREG_ESINGULAR, FRICREG_EINTEGRATOR, FRICREG_ENOMEM as fricreg_hb_solve.
+ *  Since 1.7 (FRICREG_1.7). */
+FRICREG_API int fricreg_hb_peak(fricreg_hb *hb, size_t dof, double *omega, double *rms);
 
 /** Status of the last failed call on hb. Returns that code, or FRICREG_OK if none (or hb
  *  NULL). A successful call does not clear it. Since 1.6. */

@@ -518,8 +518,8 @@ expect_output '"ndof": 5001, "ncontacts": 1, "x": \[-5\.3140(4999999|5000000)[0-
 # (mu N = 1e6): a linear oscillator of stiffness k + kt = 4.5, Rayleigh C = 0.02 K = 0.06, forced
 # by 0.5 cos(Omega t). Its RMS over a period is |X|/sqrt(2) with
 # |X| = 0.5/sqrt((4.5 - 2 Omega^2)^2 + (0.06 Omega)^2) (closed form): every row of --output frf
-# within 1e-8, and the summary's peak at the resonance sqrt(4.5/2) = 1.5, within the branch's
-# resolution (1 %), at an RMS within 1 % of 0.5/(0.06 x 1.5)/sqrt(2) = 3.928.
+# within 1e-8, and the summary's peak (located, fricreg_hb_peak) where d|X|/dOmega = 0,
+# Omega^2 = (4.5 - 0.06^2/4)/2, Omega = 1.49984999250, RMS 3.92856743987, both within 1e-8.
 d=$tmp/hb
 mkdir -p "$d"
 printf '%s\n' "%%MatrixMarket matrix coordinate real symmetric" "1 1 1" "1 1 2" >"$d/M.mtx"
@@ -538,12 +538,34 @@ if [ "$(head -n 1 "$d/frf.csv")" != "omega,rms_1" ] || ! awk -F, 'NR > 1 { w = $
 fi
 total=$((total + 1))
 "$sim" $hb >"$d/summary.json" 2>"$d/err"
-if ! sed 's/.*"peak_rms": \([^,]*\), "peak_omega": \([^}]*\)}.*/\1 \2/' "$d/summary.json" |
-        awk '{ exit !($1 > 0.99 * 3.9284 && $1 < 1.01 * 3.9284 && $2 > 1.485 && $2 < 1.515) }'; then
+if ! grep -q '"peaks": "located"' "$d/summary.json" ||
+        ! sed 's/.*"peak_rms": \([^,]*\), "peak_omega": \([^}]*\)}.*/\1 \2/' "$d/summary.json" |
+        awk '{ r = $1 / 3.92856743987 - 1; w = $2 / 1.49984999250 - 1
+            exit !(r < 1e-8 && r > -1e-8 && w < 1e-8 && w > -1e-8) }'; then
     echo "FAIL: hb summary peak: $(cat "$d/summary.json" "$d/err")"; fails=$((fails + 1))
 fi
+# The step control's options reach the driver: a finer one, the same peak; bad values exit 2;
+# a bound of 5 points stops the continuation (exit 1)
+total=$((total + 1))
+"$sim" $hb --ds 0.005 --ds-min 1e-5 --ds-max 0.01 --max-points 1000 >"$d/fine.json" 2>"$d/err"
+if ! sed 's/.*"points": \([0-9]*\),.*"peak_rms": \([^,]*\), "peak_omega": \([^}]*\)}.*/\1 \2 \3/' "$d/fine.json" |
+        awk '{ r = $2 / 3.92856743987 - 1; w = $3 / 1.49984999250 - 1
+            exit !($1 > 100 && r < 1e-8 && r > -1e-8 && w < 1e-8 && w > -1e-8) }'; then
+    echo "FAIL: hb --ds 0.005 --ds-max 0.01: $(cat "$d/fine.json" "$d/err")"; fails=$((fails + 1))
+fi
+expect_usage_error "^fricreg-sim: --ds: .*ds_max" $hb --ds 0.5
+expect_usage_error "^fricreg-sim: --ds-min: must be > 0" $hb --ds-min 0
+expect_usage_error "^fricreg-sim: --ds-min: .*ds_min = 0.05" $hb --ds-min 0.05
+expect_usage_error "^fricreg-sim: --ds-max: .*ds_max = 2" $hb --ds-max 2
+expect_usage_error "^fricreg-sim: --max-points: " $hb --max-points 1
+total=$((total + 1))
+if "$sim" $hb --max-points 5 >"$d/five.json" 2>"$d/err" || [ $? -ne 1 ] || [ -s "$d/five.json" ] ||
+        ! grep -q "5 points stored before" "$d/err"; then
+    echo "FAIL: hb --max-points 5: $(cat "$d/five.json" "$d/err")"; fails=$((fails + 1))
+fi
 # Beyond the dense driver's 4096 dofs, the files passed sparse: 5000 copies of that oscillator,
-# uncoupled, the element on dof 1 only, every dof forced alike; dof 1 peaks as above.
+# uncoupled, the element on dof 1 only, every dof forced alike; dof 1 peaks as above, within
+# the branch's resolution (1 %): beyond 256 dofs the summary's peaks are the largest points'.
 awk 'BEGIN { print "%%MatrixMarket matrix coordinate real symmetric"; print 5000, 5000, 5000
     for (i = 1; i <= 5000; i++) print i, i, 2 }' >"$d/Mbig.mtx"
 awk 'BEGIN { print "%%MatrixMarket matrix coordinate real symmetric"; print 5000, 5000, 5000
@@ -552,7 +574,7 @@ awk 'BEGIN { for (i = 1; i <= 5000; i++) print "0.5 0" }' >"$d/Fbig.txt"
 printf '%s\n' "%%MatrixMarket matrix coordinate real general" "1 5000 1" "1 1 1" >"$d/Jbig.mtx"
 total=$((total + 1))
 "$sim" hb --mass "$d/Mbig.mtx" --stiffness "$d/Kbig.mtx" --rayleigh 0,0.02 --excitation "$d/Fbig.txt" --jenkins "$d/Jbig.mtx" --jenkins-params "$d/P.txt" --harmonics 3 --omega-start 0.5 --omega-end 3 >"$d/big.json" 2>"$d/err"
-if ! grep -q '"ndof": 5000, "elements": 1' "$d/big.json" ||
+if ! grep -q '"ndof": 5000, "elements": 1' "$d/big.json" || ! grep -q '"peaks": "sampled"' "$d/big.json" ||
         ! grep -o '"dof": 1, "peak_rms": [^,]*, "peak_omega": [^}]*' "$d/big.json" |
         sed 's/.*"peak_rms": \([^,]*\), "peak_omega": \(.*\)/\1 \2/' |
         awk '{ exit !($1 > 0.99 * 3.9284 && $1 < 1.01 * 3.9284 && $2 > 1.485 && $2 < 1.515) }'; then
@@ -577,7 +599,7 @@ fi
 expect_usage_error "^fricreg-sim: --rayleigh: give --damping or --rayleigh" hb --mass $d/M.mtx --stiffness $d/K.mtx --damping $d/K.mtx --rayleigh 0,0.02 --excitation $d/F.txt --jenkins $d/J.mtx --jenkins-params $d/P.txt --omega-start 1 --omega-end 2
 expect_usage_error "^fricreg-sim: --excitation $d/J.mtx" hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/J.mtx --jenkins $d/J.mtx --jenkins-params $d/P.txt --omega-start 1 --omega-end 2
 # Iwan elements and lift-off in hb, against the element slipping (kt 1.5, mu N 0.3): two
-# sliders of 0.75 and 0.15 give the same branch to rounding; a lift-off element of mu 0.1,
+# sliders of 0.75 and 0.15 give the same branch to rounding (every point within 1e-12); a lift-off element of mu 0.1,
 # n0 3, kn 0 on the same row is the Jenkins element of mu N = 0.3 (fricreg_hb.h) but its
 # preload pushes the mass to x0 = -n0/k = -1 (the static term), so its RMS is
 # sqrt(rms_jenkins^2 + 1): at the first point (Omega = W0, solved from q = 0) within 1e-12,
@@ -586,7 +608,9 @@ hbs="hb --mass $d/M.mtx --stiffness $d/K.mtx --rayleigh 0,0.02 --excitation $d/F
 echo "1.5 0.3" >"$d/P_slip.txt"
 echo "0.75 0.15 0.75 0.15" >"$d/I_slip.txt"
 echo "1.5 0.1 3 0" >"$d/Q_kn0.txt"
-expect_same 1e-12 $hbs --omega-start 0.5 --omega-end 3 --jenkins-params $d/P_slip.txt -- $hbs --omega-start 0.5 --omega-end 3 --iwan-params $d/I_slip.txt
+expect_same 1e-12 $hbs --omega-start 0.5 --omega-end 3 --jenkins-params $d/P_slip.txt --output frf -- $hbs --omega-start 0.5 --omega-end 3 --iwan-params $d/I_slip.txt --output frf
+# the located peak's Omega is conditioned as the square root of the RMS's rounding: 1e-9
+expect_same 1e-9 $hbs --omega-start 0.5 --omega-end 3 --jenkins-params $d/P_slip.txt -- $hbs --omega-start 0.5 --omega-end 3 --iwan-params $d/I_slip.txt
 expect_output '"element_kind": "iwan", "sliders_per_element": 2' $hbs --omega-start 0.5 --omega-end 3 --iwan-params $d/I_slip.txt
 for w0 in 1.24 1.5; do
     total=$((total + 1))

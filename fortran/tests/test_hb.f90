@@ -6,7 +6,8 @@
 ! (mun = 1e6), Rayleigh C = 0.02 K = 0.06, forced by 0.5 cos(Omega t): a linear oscillator of
 ! stiffness 4.5 whose response X = 0.5/(d + i c), d = 4.5 - 2 Omega^2, c = 0.06 Omega, gives
 ! a_1 = 0.5 d/(d^2 + c^2), b_1 = 0.5 c/(d^2 + c^2) (X_h = a_h - i b_h, fricreg_hb.h) and the RMS
-! |X|/sqrt(2) (closed form). A two-mass chain with a slipping element, J in Fortran's order:
+! |X|/sqrt(2) (closed form), largest where d|X|/dOmega = 0: Omega^2 = (4.5 - 0.06^2/4)/2,
+! Omega = 1.49984999250, RMS 3.92856743987 (the located peak, hb%peak). A two-mass chain with a slipping element, J in Fortran's order:
 ! the type's solution equals the C functions' (called through bind(C), J transposed by hand)
 ! bit for bit.
 program test_hb
@@ -17,7 +18,7 @@ program test_hb
   type(c_ptr) :: p
   real(c_double), parameter :: w = 1.2_c_double
   real(c_double) :: q(7, 1), x(7, 1), d, c, rms(1), omega, big, qc(7, 1), q2(7, 1), bad(5, 1)
-  real(c_double) :: M2(2, 2), K2(2, 2), J2(1, 2), Jrow(2), Jn2(1, 2), qn(7, 2)
+  real(c_double) :: M2(2, 2), K2(2, 2), J2(1, 2), Jrow(2), Jn2(1, 2), qn(7, 2), pw, pr
   integer :: k
 
   call check_status(hb%create(1, 1, 3), FRICREG_OK, 'create')
@@ -52,6 +53,11 @@ program test_hb
   call check_close(omega, 0.5_c_double, 1e-15_c_double, 'the branch starts at omega0')
   call check_status(hb%point(hb%points(), omega, rms), FRICREG_OK, 'last point')
   call check_close(omega, 3.0_c_double, 1e-15_c_double, 'the branch ends at omega1')
+  call check_status(hb%peak(1, pw, pr), FRICREG_OK, 'peak')
+  call check_close(pw, 1.49984999250_c_double, 1e-8_c_double, 'the peak''s omega, closed form')
+  call check_close(pr, 3.92856743987_c_double, 4e-8_c_double, 'the peak''s RMS, closed form')
+  call check_status(hb%peak(0, pw, pr), FRICREG_EINVAL, 'peak of dof 0')
+  call check_status(hb%peak(2, pw, pr), FRICREG_EINVAL, 'peak of dof 2 of 1')
 
   ! errors: Fortran's shape checks, C's refusals, each with a message
   call check_status(hb%solve(w, bad), FRICREG_ESIZE, 'q of the wrong shape')

@@ -18,13 +18,18 @@
 #include "matrix_market.h"
 
 enum { HB_SUMMARY, HB_FRF };
+/* Up to this many dofs the summary's peaks are located (fricreg_hb_peak: 10 to 20 corrector
+ * solves each); beyond, the largest stored point's, so that a large model's summary costs no
+ * more than its continuation. */
+enum { HB_LOCATE_MAX = 256 };
 static const struct cli_word hb_outputs[] = {{"summary", HB_SUMMARY}, {"frf", HB_FRF}, {NULL, 0}};
 
 struct hb_options {
     const char *mass, *stiffness, *damping, *excitation;
     struct cli_element_files elements; /* --jenkins with its parameters (jenkins_input.h) */
     int rayleigh_given, harmonics, output, omega_start_given, omega_end_given, newton_max;
-    double a0, a1, omega_start, omega_end, newton_tol;
+    int max_points;
+    double a0, a1, omega_start, omega_end, newton_tol, ds, ds_min, ds_max;
 };
 
 /* The model: M, K, C (C.colptr NULL: Rayleigh or none) n x n as the files' compressed
@@ -81,11 +86,16 @@ static int check_options(const struct hb_options *o)
 /* The rows over o, its defaults set: the parser's and the help's one table. */
 static size_t hb_table(struct hb_options *o, struct cli_option table[])
 {
-    /* Newton's rule: the driver's defaults (fricreg_hb_set_newton) */
+    /* Newton's rule and the step control: the driver's defaults (fricreg_hb_set_newton,
+     * fricreg_hb_set_continuation) */
     *o = (struct hb_options){.harmonics = 7,
                              .output = HB_SUMMARY,
                              .newton_tol = 1e-10,
-                             .newton_max = 50};
+                             .newton_max = 50,
+                             .ds = 0.02,
+                             .ds_min = 1e-6,
+                             .ds_max = 0.1,
+                             .max_points = 2000};
     cli_element_defaults(&o->elements);
     const struct cli_option opts[] = {
         {"--mass", CLI_FILE, .slot = &o->mass, .meta = "M.mtx",
@@ -112,6 +122,14 @@ static size_t hb_table(struct hb_options *o, struct cli_option table[])
          .help = "Newton's tolerance at each point"},
         {"--newton-max", CLI_WHOLE, .slot = &o->newton_max, .lo = 1, .hi = 1000, .meta = "N",
          .help = "Newton's iterations at most per point, 1 to 1000"},
+        {"--ds", CLI_POSITIVE, .slot = &o->ds, .meta = "DS",
+         .help = "the continuation's first step, in the arclength of the scaled unknowns"},
+        {"--ds-min", CLI_POSITIVE, .slot = &o->ds_min, .meta = "DS",
+         .help = "its smallest step: below it the continuation stops"},
+        {"--ds-max", CLI_POSITIVE, .slot = &o->ds_max, .meta = "DS",
+         .help = "its largest step, <= 1"},
+        {"--max-points", CLI_WHOLE, .slot = &o->max_points, .lo = 2, .hi = 1e8, .meta = "N",
+         .help = "points stored at most: reaching it stops the continuation"},
         {"--output", CLI_CHOICE, .slot = &o->output, .words = hb_outputs,
          .help = "a JSON summary (each dof's peak RMS and its frequency), or the frequency "
                  "response: a CSV row omega,rms_1,...,rms_n per point"}};
@@ -190,6 +208,13 @@ static int set_model(const struct hb_options *o, const struct hb_model *md, fric
         return refused(hb, md->el.option, md->el.path);
     if (fricreg_hb_set_newton(hb, o->newton_tol, o->newton_max) != FRICREG_OK)
         return cli_usage_error("--newton-tol", fricreg_hb_errmsg(hb));
+    /* the library names the order: 0 < ds_min <= ds <= ds_max <= 1 */
+    if (fricreg_hb_set_continuation(hb, o->ds, o->ds_min, o->ds_max, (size_t)o->max_points) !=
+        FRICREG_OK)
+        return cli_usage_error(o->ds_max > 1.0     ? "--ds-max"
+                               : o->ds_min > o->ds ? "--ds-min"
+                                                   : "--ds",
+                               fricreg_hb_errmsg(hb));
     if (fricreg_hb_set_excitation(hb, n, md->pc, md->ps) != FRICREG_OK)
         return refused(hb, "--excitation", o->excitation);
     return 0;
@@ -224,8 +249,33 @@ static void write_frf(FILE *out, size_t n, size_t K, const double omega[], const
     }
 }
 
+/* Each dof's peak into peak_omega[n], peak_rms[n]: located by fricreg_hb_peak up to
+ * HB_LOCATE_MAX dofs, else the largest stored point's. 0, or CLI_EXIT_RUN after a line on
+ * stderr (a corrector that failed in the location). */
+static int peaks(fricreg_hb *hb, size_t n, size_t K, const double omega[], const double rms[],
+                 double peak_omega[], double peak_rms[])
+{
+    for (size_t i = 0; i < n; i++) {
+        if (n <= HB_LOCATE_MAX) {
+            if (fricreg_hb_peak(hb, i, &peak_omega[i], &peak_rms[i]) == FRICREG_OK)
+                continue;
+            fprintf(stderr, "fricreg-sim: hb: the peak of dof %zu: %s\n", i + 1,
+                    fricreg_hb_errmsg(hb));
+            return CLI_EXIT_RUN;
+        }
+        size_t best = 0;
+        for (size_t k = 1; k < K; k++)
+            if (rms[k * n + i] > rms[best * n + i])
+                best = k;
+        peak_omega[i] = omega[best];
+        peak_rms[i] = rms[best * n + i];
+    }
+    return 0;
+}
+
 static void write_summary(FILE *out, const struct hb_options *o, const struct hb_model *md,
-                          size_t K, const double omega[], const double rms[], double cpu)
+                          size_t K, const double omega[], const double peak_omega[],
+                          const double peak_rms[], double cpu)
 {
     size_t n = md->n;
     fprintf(out,
@@ -235,15 +285,11 @@ static void write_summary(FILE *out, const struct hb_options *o, const struct hb
     fprintf(out, ", \"element_kind\": \"%s\"", cli_element_kind_name(&md->el));
     if (md->el.kind == CLI_ELEMENTS_IWAN)
         fprintf(out, ", \"sliders_per_element\": %zu", md->el.ns);
-    fprintf(out, ", \"omega_reached\": %.17g, \"dofs\": [", K > 0 ? omega[K - 1] : o->omega_start);
-    for (size_t i = 0; i < n; i++) {
-        size_t best = 0;
-        for (size_t k = 1; k < K; k++)
-            if (rms[k * n + i] > rms[best * n + i])
-                best = k;
+    fprintf(out, ", \"omega_reached\": %.17g, \"peaks\": \"%s\", \"dofs\": [",
+            K > 0 ? omega[K - 1] : o->omega_start, n <= HB_LOCATE_MAX ? "located" : "sampled");
+    for (size_t i = 0; i < n; i++)
         fprintf(out, "%s{\"dof\": %zu, \"peak_rms\": %.17g, \"peak_omega\": %.17g}", i ? ", " : "",
-                i + 1, K > 0 ? rms[best * n + i] : 0.0, K > 0 ? omega[best] : o->omega_start);
-    }
+                i + 1, peak_rms[i], peak_omega[i]);
     fprintf(out, "], \"cpu_seconds\": %.6f}\n", cpu);
 }
 
@@ -260,15 +306,24 @@ static int run_hb(fricreg_hb *hb, const struct hb_options *o, const struct hb_mo
         fprintf(stderr, "fricreg-sim: hb: the continuation failed: %s\n", fricreg_hb_errmsg(hb));
         return CLI_EXIT_RUN;
     }
-    size_t K = 0;
-    double *omega = NULL, *rms = NULL;
-    status = collect(hb, md->n, &K, &omega, &rms);
-    if (status == 0 && o->output == HB_FRF)
-        write_frf(out, md->n, K, omega, rms);
-    else if (status == 0)
-        write_summary(out, o, md, K, omega, rms, cpu);
+    size_t K = 0, n = md->n;
+    double *omega = NULL, *rms = NULL, *peak = NULL;
+    status = collect(hb, n, &K, &omega, &rms);
+    if (status == 0 && o->output == HB_FRF) {
+        write_frf(out, n, K, omega, rms);
+    } else if (status == 0) {
+        if ((peak = malloc(2 * n * sizeof *peak)) == NULL)
+            status = cli_usage_error("hb", "out of memory");
+        if (status == 0)
+            status = peaks(hb, n, K, omega, rms, peak, peak + n);
+        /* the CPU time includes the peaks' location */
+        cpu = (double)(clock() - start) / CLOCKS_PER_SEC;
+        if (status == 0)
+            write_summary(out, o, md, K, omega, peak, peak + n, cpu);
+    }
     free(omega);
     free(rms);
+    free(peak);
     return status;
 }
 

@@ -2,11 +2,28 @@
 /* continuation.c — the frequency response by pseudo-arclength continuation (H. B. Keller,
  * "Numerical solution of bifurcation and nonlinear eigenvalue problems", 1977; Krack & Gross
  * 2019, Ch. 5) on the scaled unknowns y = (q/qs, Ω/ws), qs the starting solution's displacement
- * scale raised to the largest |q| the branch reaches, ws = |Ω1 − Ω0|: the tangent t from [R_q R_Ω; t_prev^T] t = [0; 1], normalized; the
- * predictor y + ds t; the corrector Newton's method on (R) bordered by t^T (y − y_pred) = 0; the
- * step grown by 1.5 after a quick corrector, halved after a failed one or one that ended
- * farther than ds/2 from its predictor. The points' Ω and RMS
- * are stored, and the getters. */
+ * scale raised to the largest |q| the branch reaches, ws = |Ω1 − Ω0|: the tangent t from
+ * [R_q R_Ω; d^T] t = [0; 1], normalized, d the previous direction; the predictor y + ds t; the
+ * corrector Newton's method on (R) bordered by t^T (y − y_pred) = 0, with a line search.
+ *
+ * The step control after E. L. Allgower and K. Georg, "Numerical Continuation Methods: An
+ * Introduction", Springer 1990, Ch. 6 (steplength adaptation by asymptotic estimates): from
+ * the corrector's first step δ, its contraction κ = |Δy_2|/|Δy_1|, the angle α between
+ * successive tangents, and the corrector's iterations (as NLvib's solve_and_continue, Krack &
+ * Gross Ch. 4–5), the next step is ds / f, f = max(κ/κ0, (δ/ds)/δ0, α/α0, its/its0) within
+ * [1/2, 2]. A step is rejected (ds halved) when the corrector fails, ends farther than 4 ds
+ * from the last point (it jumped along the branch, e.g. across a sharp peak), turns the chord
+ * by more than twice the tangent's angle (it joined another part of the branch: the flanks of
+ * a sharp peak meet at q = 0 a tiny Ω apart), turns the tangent by more than 20°, or
+ * contracts by more than 1/2 in its first steps. The exact AFT's Jacobian is not smooth where
+ * an element's stick/slip or contact pattern changes, and there the branch has a kink: the
+ * angle and the contraction do not fall with ds. A converged corrector whose tangent turned by
+ * less than 90° is accepted there, once halving ds no longer lowered them by a quarter, or
+ * when halving would go below ds_min (a converged residual is a solution). Below ds_min the
+ * step is predicted once more along the secant of the last two points before the
+ * continuation stops. A branch that runs back along itself (a point near an earlier stretch, heading the same way)
+ * stops it. The points' Ω, RMS and unknowns are stored; fricreg_hb_peak locates each dof's
+ * largest RMS between them. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,41 +31,88 @@
 
 #include "hb_internal.h"
 
+/* The step control's nominal values (Allgower & Georg give the form; these were chosen on
+ * tests/test_hb_continuation.c's chains and lift-off pair): the corrector's contraction, its
+ * first step relative to ds, the angle between successive tangents (rad), the iterations; the
+ * bounds on the angle (20°; a kink's 90°), on the contraction (1/2: Newton's convergence is
+ * slow beyond) and on the distance from the last point (4 ds: the hyperplane of a kink of up
+ * to 75° meets the branch within ds / cos 75° < 4 ds); the chord's slack over twice the
+ * tangents' angle. */
+#define KAPPA0 0.25
+#define DELTA0 0.3
+#define ALPHA0 0.1745329251994330 /* 10° */
+#define ITS0 4.0
+#define ALPHA_MAX 0.3490658503988659 /* 20° */
+#define KAPPA_MAX 0.5
+#define KINK_MAX 1.5707963267948966 /* 90°: a larger turn goes back along the branch */
+#define JUMP 4.0
+#define CHORD_SLACK 1e-3 /* rad: above the chord's rounding, about tol/ds_min = 1e-4 */
+
 struct branch {
     double qs, ws; /* the scales */
     double *yc;    /* [nq + 1] the last point, scaled */
     double *yp;    /* [nq + 1] the predictor */
-    char why[256]; /* the last failed step's message */
+    double *yo;    /* [nq + 1] the point before, scaled (have_prev) */
+    int have_prev;
+    double delta, kappa; /* the last corrector's first step and contraction */
+    char why[256];       /* the last failed step's message */
 };
 
-/* Room for `want` points (at most max_points), kept on failure: FRICREG_ENOMEM. */
+/* Room for `want` points (at most max_points), kept on failure: FRICREG_ENOMEM. The unknowns'
+ * room follows nq, which the element setters change (1 or 2 rows per element). */
 static int reserve(fricreg_hb *hb, size_t want)
 {
+    size_t stride = hb->nq + 1;
     if (want > hb->max_points)
         want = hb->max_points;
-    if (want <= hb->cap)
+    if (want <= hb->cap && hb->qpts_stride == stride)
         return FRICREG_OK;
+    if (want < hb->cap)
+        want = hb->cap;
     double *p = realloc(hb->pts, want * (1 + hb->n) * sizeof(double));
-    if (p == NULL)
+    if (p != NULL)
+        hb->pts = p;
+    double *q = p == NULL ? NULL : realloc(hb->qpts, want * stride * sizeof(double));
+    if (q == NULL)
         return fr_fail(hb, FRICREG_ENOMEM, "continue: no memory for %zu points", want);
-    hb->pts = p;
+    hb->qpts = q;
+    hb->qpts_stride = stride;
     hb->cap = want;
     return FRICREG_OK;
 }
 
+/* The point at qt (unscaled q, Ω = omega; the factors and forces fq at it) stored. */
 static int store_point(fricreg_hb *hb, double omega)
 {
-    size_t w = 1 + hb->n;
+    size_t w = 1 + hb->n, nq = hb->nq;
     int status = hb->npts < hb->cap ? FRICREG_OK : reserve(hb, 2 * hb->cap);
     if (status != FRICREG_OK)
         return status;
     hb->pts[hb->npts * w] = omega;
     fr_hb_rms(hb, hb->pts + hb->npts * w + 1);
+    memcpy(hb->qpts + hb->npts * (nq + 1), hb->qt, nq * sizeof(double));
+    hb->qpts[hb->npts * (nq + 1) + nq] = omega;
     hb->npts++;
-    memcpy(hb->qsol, hb->qt, hb->nq * sizeof(double));
+    memcpy(hb->qsol, hb->qt, nq * sizeof(double));
     hb->omega_sol = omega;
     hb->have_solution = 1;
     return FRICREG_OK;
+}
+
+static double dot(const double *a, const double *b, size_t n)
+{
+    double s = 0.0;
+    for (size_t j = 0; j < n; j++)
+        s += a[j] * b[j];
+    return s;
+}
+
+static double dist(const double *a, const double *b, size_t n)
+{
+    double s = 0.0;
+    for (size_t j = 0; j < n; j++)
+        s += (a[j] - b[j]) * (a[j] - b[j]);
+    return sqrt(s);
 }
 
 /* Residual (scaled) at y into R[nq + 1] (the arclength equation last, when yp is given) and
@@ -77,45 +141,56 @@ static int bordered(fricreg_hb *hb, const char *fn, const struct branch *b, cons
     return FRICREG_OK;
 }
 
-/* The unit tangent at yc into hb->tan, oriented along the previous one (hb->tan on entry). */
-static int tangent(fricreg_hb *hb, const char *fn, const struct branch *b)
+/* The unit tangent into t from the bordered matrix in A (its last row the border d, not yet
+ * factored): [R_q R_Ω; d^T] t = [0; 1], so d^T t > 0 orients it along d. */
+static int tangent_from_matrix(fricreg_hb *hb, const char *fn, double *t)
 {
-    size_t nq = hb->nq, ld = nq + 1;
-    memcpy(hb->dy, hb->tan, ld * sizeof(double)); /* the previous tangent, the border */
-    int status = bordered(hb, fn, b, b->yc, hb->dy);
+    size_t ld = hb->nq + 1;
+    memset(t, 0, ld * sizeof(double));
+    t[ld - 1] = 1.0;
+    int status = fr_hb_lu_solve(hb, fn, ld, t, t);
     if (status != FRICREG_OK)
         return status;
-    memset(hb->dy, 0, ld * sizeof(double));
-    hb->dy[nq] = 1.0;
-    if ((status = fr_hb_lu_solve(hb, fn, ld, hb->dy, hb->dy)) != FRICREG_OK)
-        return status;
-    double s = 0.0;
+    double s = sqrt(dot(t, t, ld));
     for (size_t j = 0; j < ld; j++)
-        s += hb->dy[j] * hb->dy[j];
-    for (size_t j = 0; j < ld; j++)
-        hb->tan[j] = hb->dy[j] / sqrt(s);
+        t[j] /= s;
     return FRICREG_OK;
 }
 
-/* Newton's method on the bordered system from the predictor yp into qw; *its its iterations. */
-static int corrector(fricreg_hb *hb, const char *fn, const struct branch *b, int *its)
+/* Newton's method on (R) bordered by border^T (y − anchor) = 0 from start into qw, with a
+ * backtracking line search on |R|² (Armijo's condition, halving down to 1/1024, as newton.c;
+ * past that the full step: the iteration bound ends it): at a kink of the branch, where the
+ * stick/slip or contact pattern changes, the plain iteration may cycle. *its the iterations,
+ * b->delta and b->kappa the first step's length and the second's ratio to it. On success A
+ * holds the bordered matrix at qw, unfactored (tangent_from_matrix). */
+static int corrector(fricreg_hb *hb, const char *fn, struct branch *b, const double *start,
+                     const double *anchor, const double *border, int *its)
 {
     size_t nq = hb->nq, ld = nq + 1;
-    memcpy(hb->qw, b->yp, ld * sizeof(double));
-    for (int it = 0;; it++) {
-        int status = bordered(hb, fn, b, hb->qw, hb->tan);
+    double *base = hb->yl, prev = INFINITY, lambda = 1.0;
+    memcpy(hb->qw, start, ld * sizeof(double));
+    b->delta = b->kappa = 0.0;
+    for (int it = 0;;) {
+        int status = bordered(hb, fn, b, hb->qw, border);
         if (status != FRICREG_OK)
             return status;
         double g = 0.0, r = 0.0;
         for (size_t j = 0; j < ld; j++)
-            g += hb->tan[j] * (hb->qw[j] - b->yp[j]);
+            g += border[j] * (hb->qw[j] - anchor[j]);
         hb->R[nq] = g;
         for (size_t j = 0; j < nq; j++)
             r = fmax(r, fabs(hb->R[j]));
-        double bound = hb->tol * fr_hb_scale(hb, hb->qt) / b->qs;
+        double bound = hb->tol * fr_hb_scale(hb, hb->qt) / b->qs,
+               norm = sqrt(dot(hb->R, hb->R, ld));
         if (it >= 1 && r <= bound && fabs(g) <= hb->tol) {
             *its = it;
             return FRICREG_OK;
+        }
+        if (it >= 1 && !(norm <= (1.0 - 1e-4 * lambda) * prev) && lambda > 1.0 / 1024) {
+            lambda *= 0.5;
+            for (size_t j = 0; j < ld; j++)
+                hb->qw[j] = base[j] + lambda * hb->dy[j];
+            continue;
         }
         if (it == hb->max_iter)
             return fr_fail(hb, FRICREG_EWORK, "%s: the corrector did not converge in %d iterations",
@@ -124,107 +199,240 @@ static int corrector(fricreg_hb *hb, const char *fn, const struct branch *b, int
             hb->dy[j] = -hb->R[j];
         if ((status = fr_hb_lu_solve(hb, fn, ld, hb->dy, hb->dy)) != FRICREG_OK)
             return status;
+        double step = sqrt(dot(hb->dy, hb->dy, ld));
+        if (it == 0)
+            b->delta = step;
+        else if (it == 1 && b->delta > 0.0)
+            b->kappa = step / b->delta;
+        memcpy(base, hb->qw, ld * sizeof(double));
+        prev = norm;
+        lambda = 1.0;
         for (size_t j = 0; j < ld; j++)
             hb->qw[j] += hb->dy[j];
+        it++;
     }
 }
 
-/* A corrector that ends farther than ds/2 from its predictor has left the branch's
- * neighbourhood (on a sharp peak the hyperplane t^T (y − y_pred) = 0 meets the branch again
- * beyond the peak, and Newton may go there): the step counts as failed, so it is halved. */
-static int close_to_predictor(fricreg_hb *hb, const char *fn, const struct branch *b, double ds)
-{
-    double d = 0.0;
-    for (size_t j = 0; j <= hb->nq; j++)
-        d += (hb->qw[j] - b->yp[j]) * (hb->qw[j] - b->yp[j]);
-    if (sqrt(d) > 0.5 * ds)
-        return fr_fail(hb, FRICREG_EWORK,
-                       "%s: the corrector ended %g from its predictor, beyond ds/2 = %g", fn,
-                       sqrt(d), 0.5 * ds);
-    return FRICREG_OK;
-}
-
-/* The last step: the point at omega1 by Newton at fixed Ω, from the tangent's line there. */
+/* The last step: the point at omega1 by Newton at fixed Ω, from the direction's line there. */
 static int final_point(fricreg_hb *hb, const char *fn, const struct branch *b, double omega1)
 {
     size_t nq = hb->nq;
-    double s = (omega1 / b->ws - b->yc[nq]) / hb->tan[nq];
+    double s = (omega1 / b->ws - b->yc[nq]) / hb->dir[nq];
     double *guess = hb->rw; /* free here; fr_hb_solve_at copies it before it uses rw */
     for (size_t j = 0; j < nq; j++)
-        guess[j] = (b->yc[j] + s * hb->tan[j]) * b->qs;
+        guess[j] = (b->yc[j] + s * hb->dir[j]) * b->qs;
     int status = fr_hb_solve_at(hb, fn, omega1, guess);
     if (status == FRICREG_OK)
         memcpy(hb->qt, hb->qw, nq * sizeof(double));
     return status;
 }
 
-/* Halves ds after a failed step; FRICREG_EINTEGRATOR below ds_min. */
-static int shrink(fricreg_hb *hb, const char *fn, struct branch *b, double *ds)
-{
-    snprintf(b->why, sizeof b->why, "%s", hb->err.msg);
-    *ds *= 0.5;
-    if (*ds < hb->ds_min)
-        return fr_fail(hb, FRICREG_EINTEGRATOR,
-                       "%s: the step fell below ds_min = %g at Omega = %g (last failure: %s)", fn,
-                       hb->ds_min, b->yc[hb->nq] * b->ws, b->why);
-    return FRICREG_OK;
-}
-
 /* The displacement scale follows the branch up: qs = the largest |q| so far, so that a branch
  * that starts far below a resonance takes steps in proportion to the amplitudes it reaches
- * (the point qw and the tangent converted to the new scale). */
+ * (the points qw, yo and the tangent converted to the new scale). */
 static void rescale(fricreg_hb *hb, struct branch *b)
 {
     size_t nq = hb->nq;
-    double top = 0.0, norm = 0.0;
+    double top = 0.0;
     for (size_t j = 0; j < nq; j++)
         top = fmax(top, fabs(hb->qw[j]));
     if (!(top > 1.0))
         return;
     for (size_t j = 0; j < nq; j++) {
         hb->qw[j] /= top;
+        b->yo[j] /= top;
         hb->tan[j] /= top;
     }
+    double norm = sqrt(dot(hb->tan, hb->tan, nq + 1));
     for (size_t j = 0; j <= nq; j++)
-        norm += hb->tan[j] * hb->tan[j];
-    for (size_t j = 0; j <= nq; j++)
-        hb->tan[j] /= sqrt(norm);
+        hb->tan[j] /= norm;
     b->qs *= top;
+}
+
+/* The new point y (scaled; yc the last point) runs back along the branch: within a tenth of
+ * a step of an earlier stretch [point k − 1, point k], heading the same way (cosine > 1/2),
+ * after a way along the branch since that stretch of more than 3 times the straight distance
+ * (so not the branch's latest stretches, however it curves). */
+static int doubles_back(const fricreg_hb *hb, const struct branch *b, const double *y)
+{
+    size_t nq = hb->nq, ld = nq + 1;
+    double cq = 1.0 / b->qs, cw = 1.0 / b->ws, hs = dist(y, b->yc, ld), arc = hs;
+    for (size_t k = hb->npts - 1; k >= 1; k--) {
+        const double *p0 = hb->qpts + (k - 1) * ld, *p1 = hb->qpts + k * ld;
+        double ll = 0.0, along = 0.0, same = 0.0, d0 = 0.0;
+        for (size_t j = 0; j < ld; j++) {
+            double c = j < nq ? cq : cw, e = (p1[j] - p0[j]) * c, r = y[j] - p0[j] * c;
+            ll += e * e;
+            along += e * r;
+            same += e * (y[j] - b->yc[j]);
+            d0 += r * r;
+        }
+        ll = sqrt(ll);
+        arc += ll;
+        if (!(ll > 0.0) || same <= 0.5 * ll * hs || arc <= 3.0 * (sqrt(d0) + ll))
+            continue;
+        double s = fmin(fmax(along / (ll * ll), 0.0), 1.0), d = 0.0;
+        for (size_t j = 0; j < ld; j++) {
+            double c = j < nq ? cq : cw, e = y[j] - (p0[j] + s * (p1[j] - p0[j])) * c;
+            d += e * e;
+        }
+        if (sqrt(d) <= 0.1 * fmax(ll, hs))
+            return 1;
+    }
+    return 0;
+}
+
+/* One step's outcome from yc with ds along dir: 0 accepted (qw the point, tn its tangent,
+ * *alpha the angle between the tangents), 1 rejected (the message in b->why), or a status
+ * that ends the continuation (FRICREG_ENOMEM). *sev is the converged corrector's severity,
+ * max(κ/KAPPA_MAX, α/ALPHA_MAX) (above 1: rejected, unless a kink), 0 if it failed or left
+ * the branch; sev_before the last rejected attempt's from the same point at twice the step. */
+static int attempt(fricreg_hb *hb, const char *fn, struct branch *b, double ds, int *its,
+                   double *alpha, double *sev, double sev_before, int *kink)
+{
+    size_t nq = hb->nq, ld = nq + 1;
+    for (size_t j = 0; j < ld; j++)
+        b->yp[j] = b->yc[j] + ds * hb->dir[j];
+    *alpha = *sev = 0.0;
+    *kink = 0;
+    int status = corrector(hb, fn, b, b->yp, b->yp, hb->dir, its);
+    if (status == FRICREG_OK)
+        status = tangent_from_matrix(hb, fn, hb->tn);
+    if (status == FRICREG_ENOMEM)
+        return status;
+    if (status != FRICREG_OK) {
+        snprintf(b->why, sizeof b->why, "%s", hb->err.msg);
+        return -1;
+    }
+    double h = dist(hb->qw, b->yc, ld), deg = 57.29577951308232;
+    *alpha = acos(fmax(-1.0, fmin(1.0, dot(hb->tn, hb->tan, ld))));
+    if (h > JUMP * ds) {
+        snprintf(b->why, sizeof b->why,
+                 "%s: the corrector ended %g from the last point, beyond %g ds = %g", fn, h, JUMP,
+                 JUMP * ds);
+        return -1;
+    }
+    /* on a smooth arc the chord lies half way between the tangents, at a kink between them:
+     * a chord that turned by much more than the tangents did joined another part of the
+     * branch (two flanks of a sharp peak, nearly parallel, a tiny Ω apart) */
+    double chord = acos(
+        fmax(-1.0, fmin(1.0, (dot(hb->qw, hb->tan, ld) - dot(b->yc, hb->tan, ld)) / h)));
+    if (chord > 2.0 * *alpha + CHORD_SLACK) {
+        snprintf(b->why, sizeof b->why,
+                 "%s: the chord turned by %.3g degrees from the tangent, which turned by %.3g", fn,
+                 chord * deg, *alpha * deg);
+        return -1;
+    }
+    /* a slow corrector (its first steps contract by more than KAPPA_MAX: the predictor was
+     * far from where Newton converges fast, or it converged to another part of the branch)
+     * or a tangent turned by more than ALPHA_MAX: the step was too long for the branch's
+     * curvature. On a smooth branch both fall in proportion to ds; if they did not fall by a
+     * quarter when ds was halved, this is a kink of the branch: accepted. */
+    *sev = fmax(*alpha / ALPHA_MAX, b->kappa / KAPPA_MAX);
+    if (*sev <= 1.0)
+        return 0;
+    if (sev_before > 0.0 && *sev >= 0.75 * sev_before && *alpha < KINK_MAX) {
+        *kink = 1;
+        return 0;
+    }
+    if (*alpha > ALPHA_MAX)
+        snprintf(b->why, sizeof b->why, "%s: the tangent turned by %.3g degrees, beyond %.3g", fn,
+                 *alpha * deg, ALPHA_MAX * deg);
+    else
+        snprintf(b->why, sizeof b->why,
+                 "%s: the corrector's first steps contracted by %.3g, beyond %.3g", fn, b->kappa,
+                 KAPPA_MAX);
+    return -1;
 }
 
 static int follow(fricreg_hb *hb, const char *fn, struct branch *b, double omega1)
 {
-    size_t nq = hb->nq;
+    size_t nq = hb->nq, ld = nq + 1;
     double ds = hb->ds0, dir = omega1 > b->yc[nq] * b->ws ? 1.0 : -1.0;
-    memset(hb->tan, 0, (nq + 1) * sizeof(double));
-    hb->tan[nq] = dir;
+    /* the first tangent, bordered by the direction of Ω1 */
+    memset(hb->dir, 0, ld * sizeof(double));
+    hb->dir[nq] = dir;
+    int status = bordered(hb, fn, b, b->yc, hb->dir);
+    if (status == FRICREG_OK)
+        status = tangent_from_matrix(hb, fn, hb->tan);
+    if (status != FRICREG_OK)
+        return status;
     for (;;) {
         if (hb->npts >= hb->max_points)
             return fr_fail(hb, FRICREG_EWORK, "%s: %zu points stored before Omega1 = %g", fn,
                            hb->npts, omega1);
-        int status = tangent(hb, fn, b), its = 0;
-        if (status != FRICREG_OK)
-            return status;
-        for (size_t j = 0; j <= nq; j++)
-            b->yp[j] = b->yc[j] + ds * hb->tan[j];
-        int last = dir * (b->yp[nq] * b->ws - omega1) >= 0.0;
-        status = last ? final_point(hb, fn, b, omega1) : corrector(hb, fn, b, &its);
-        if (status == FRICREG_OK && !last)
-            status = close_to_predictor(hb, fn, b, ds);
-        if (status == FRICREG_ENOMEM)
-            return status;
-        if (status != FRICREG_OK) {
-            if ((status = shrink(hb, fn, b, &ds)) != FRICREG_OK)
-                return status;
-            continue;
+        /* the step from yc: along the tangent, halved on rejection; below ds_min once more
+         * along the secant of the last two points (the tangent of a non-smooth Jacobian may
+         * point off the branch), from the last accepted step */
+        int its = 0, kink = 0, secant = 0, accepted = 0, last = 0;
+        double alpha = 0.0, sev = 0.0, sev_before = 0.0, ds_start = ds;
+        memcpy(hb->dir, hb->tan, ld * sizeof(double));
+        while (!accepted) {
+            for (size_t j = 0; j <= nq; j++)
+                b->yp[j] = b->yc[j] + ds * hb->dir[j];
+            last = dir * (b->yp[nq] * b->ws - omega1) >= 0.0;
+            if (last) {
+                status = final_point(hb, fn, b, omega1);
+                if (status == FRICREG_OK)
+                    break;
+                if (status == FRICREG_ENOMEM)
+                    return status;
+                snprintf(b->why, sizeof b->why, "%s", hb->err.msg);
+                last = 0;
+            } else {
+                int r = attempt(hb, fn, b, ds, &its, &alpha, &sev, sev_before, &kink);
+                if (r > 0)
+                    return r;
+                if (r == 0) {
+                    accepted = 1;
+                    break;
+                }
+                sev_before = sev; /* 0 unless the corrector converged near the branch */
+            }
+            /* a converged corrector near the last point whose tangent turned (but not
+             * back) is a solution: accepted rather than the step halved below ds_min */
+            if (sev > 0.0 && alpha < KINK_MAX && 0.5 * ds < hb->ds_min) {
+                kink = accepted = 1;
+                break;
+            }
+            ds *= 0.5;
+            if (ds >= hb->ds_min)
+                continue;
+            if (secant || !b->have_prev)
+                return fr_fail(hb, FRICREG_EINTEGRATOR,
+                               "%s: the step fell below ds_min = %g at Omega = %g (last failure: "
+                               "%s)",
+                               fn, hb->ds_min, b->yc[nq] * b->ws, b->why);
+            secant = 1;
+            double h = dist(b->yc, b->yo, ld);
+            for (size_t j = 0; j < ld; j++)
+                hb->dir[j] = (b->yc[j] - b->yo[j]) / h;
+            ds = ds_start;
+            sev_before = 0.0;
         }
-        double omega = last ? omega1 : hb->qw[nq] * b->ws;
-        if ((status = store_point(hb, omega)) != FRICREG_OK || last)
+        if (last) {
+            status = store_point(hb, omega1);
             return status;
+        }
+        if (doubles_back(hb, b, hb->qw))
+            return fr_fail(hb, FRICREG_EWORK,
+                           "%s: the branch doubles back on itself at Omega = %g (after %zu "
+                           "points): it would not reach Omega1 = %g",
+                           fn, hb->qw[nq] * b->ws, hb->npts, omega1);
+        /* bordered() left qt, the factors and the forces at qw */
+        double omega = hb->qw[nq] * b->ws;
+        if ((status = store_point(hb, omega)) != FRICREG_OK)
+            return status;
+        memcpy(b->yo, b->yc, ld * sizeof(double));
+        b->have_prev = 1;
+        memcpy(hb->tan, hb->tn, ld * sizeof(double));
         rescale(hb, b);
-        memcpy(b->yc, hb->qw, (nq + 1) * sizeof(double));
-        if (its <= 4)
-            ds = fmin(1.5 * ds, hb->ds_max);
+        memcpy(b->yc, hb->qw, ld * sizeof(double));
+        /* the next step: Allgower & Georg's factor on the corrector and the angle */
+        double f = fmax(fmax(b->kappa / KAPPA0, b->delta / (ds * DELTA0)),
+                        fmax(kink ? 0.0 : alpha / ALPHA0, its / ITS0));
+        f = fmin(fmax(f, 0.5), 2.0);
+        ds = fmin(fmax(ds / f, hb->ds_min), hb->ds_max);
     }
 }
 
@@ -243,9 +451,13 @@ int fricreg_hb_continue(fricreg_hb *hb, double omega0, double omega1, size_t nq,
     if (status != FRICREG_OK || (status = reserve(hb, 64)) != FRICREG_OK)
         return status;
     hb->npts = 0;
+    hb->have_branch = 1;
     if ((status = fr_hb_solve_at(hb, fn, omega0, q0)) != FRICREG_OK)
         return status;
-    struct branch b = {.ws = fabs(omega1 - omega0), .yc = hb->yp, .yp = hb->yp + nq + 1};
+    struct branch b = {.ws = fabs(omega1 - omega0),
+                       .yc = hb->yp,
+                       .yp = hb->yp + nq + 1,
+                       .yo = hb->yo};
     b.qs = fr_hb_scale(hb, hb->qw);
     memcpy(hb->qt, hb->qw, nq * sizeof(double));
     if ((status = store_point(hb, omega0)) != FRICREG_OK)
@@ -255,7 +467,10 @@ int fricreg_hb_continue(fricreg_hb *hb, double omega0, double omega1, size_t nq,
     b.yc[nq] = omega0 / b.ws;
     struct fr_error before = hb->err; /* a success keeps it: the halved steps' failures are not
                                          the call's */
-    if ((status = follow(hb, fn, &b, omega1)) == FRICREG_OK)
+    status = follow(hb, fn, &b, omega1);
+    hb->branch_qs = b.qs;
+    hb->branch_ws = b.ws;
+    if (status == FRICREG_OK)
         hb->err = before;
     return status;
 }
@@ -278,5 +493,139 @@ int fricreg_hb_point(fricreg_hb *hb, size_t k, double *omega, size_t ndof, doubl
     const double *p = hb->pts + k * (1 + hb->n);
     *omega = p[0];
     memcpy(rms, p + 1, hb->n * sizeof(double));
+    return FRICREG_OK;
+}
+
+/* Dof k's RMS at the branch's point on the hyperplane border^T (y − anchor) = 0, from start
+ * (scaled, b's scales); Ω into *omega. */
+static int rms_on_plane(fricreg_hb *hb, struct branch *b, size_t k, const double *start,
+                        const double *anchor, const double *border, double *omega, double *f)
+{
+    int its = 0, status = corrector(hb, "peak", b, start, anchor, border, &its);
+    if (status != FRICREG_OK)
+        return status;
+    *omega = hb->qw[hb->nq] * b->ws;
+    *f = fr_hb_rms_dof(hb, k); /* bordered() left the factors and forces at qw */
+    return FRICREG_OK;
+}
+
+/* The point of the branch at s in [0, 1] along the chord from ya to yc: its hyperplane (normal
+ * the chord, through ya + s (yc − ya)) and the quadratic through ya, yb, yc (at 0, sb, 1) as
+ * the corrector's start; dof k's RMS there. */
+static int rms_at(fricreg_hb *hb, struct branch *b, size_t k, const double *y3[3], double sb,
+                  double s, double *omega, double *f)
+{
+    size_t ld = hb->nq + 1;
+    double *normal = hb->dir, *anchor = hb->yo, *start = hb->tn, len = dist(y3[2], y3[0], ld);
+    double la = (s - sb) * (s - 1.0) / sb, lb = s * (s - 1.0) / (sb * (sb - 1.0)),
+           lc = s * (s - sb) / (1.0 - sb);
+    for (size_t j = 0; j < ld; j++) {
+        normal[j] = (y3[2][j] - y3[0][j]) / len;
+        anchor[j] = y3[0][j] + s * (y3[2][j] - y3[0][j]);
+        start[j] = la * y3[0][j] + lb * y3[1][j] + lc * y3[2][j];
+    }
+    return rms_on_plane(hb, b, k, start, anchor, normal, omega, f);
+}
+
+/* Brent's minimization without derivatives (R. P. Brent, "Algorithms for Minimization without
+ * Derivatives", Prentice-Hall 1973, Ch. 5: golden section and successive parabolic
+ * interpolation) of −RMS over s in [0, 1], from x = sb where RMS is at least its value at 0 and
+ * 1; s to 1e-6 (the RMS to about 1e-12 of itself, below Newton's tolerance). */
+static int brent_peak(fricreg_hb *hb, struct branch *b, size_t k, const double *y3[3], double sb,
+                      double fb, double *omega, double *rms)
+{
+    const double golden = 0.3819660112501051, tol1 = 1e-6;
+    double a = 0.0, c = 1.0, x = sb, w = sb, v = sb, fx = -fb, fw = fx, fv = fx, d = 0.0, e = 0.0;
+    for (int evals = 0; evals < 60; evals++) {
+        double xm = 0.5 * (a + c), tol2 = 2.0 * tol1;
+        if (fabs(x - xm) <= tol2 - 0.5 * (c - a))
+            break;
+        int parabolic = 0;
+        if (fabs(e) > tol1) {
+            double r = (x - w) * (fx - fv), q = (x - v) * (fx - fw), p = (x - v) * q - (x - w) * r;
+            q = 2.0 * (q - r);
+            if (q > 0.0)
+                p = -p;
+            q = fabs(q);
+            double last = e;
+            e = d;
+            if (fabs(p) < fabs(0.5 * q * last) && p > q * (a - x) && p < q * (c - x)) {
+                d = p / q;
+                parabolic = 1;
+                double u = x + d;
+                if (u - a < tol2 || c - u < tol2)
+                    d = xm >= x ? tol1 : -tol1;
+            }
+        }
+        if (!parabolic) {
+            e = x >= xm ? a - x : c - x;
+            d = golden * e;
+        }
+        double u = fabs(d) >= tol1 ? x + d : x + (d >= 0.0 ? tol1 : -tol1), om = 0.0, fu = 0.0;
+        int status = rms_at(hb, b, k, y3, sb, u, &om, &fu);
+        if (status != FRICREG_OK)
+            return status;
+        fu = -fu;
+        if (fu <= fx) {
+            if (u >= x)
+                a = x;
+            else
+                c = x;
+            v = w, fv = fw, w = x, fw = fx, x = u, fx = fu;
+            *omega = om;
+        } else {
+            if (u < x)
+                a = u;
+            else
+                c = u;
+            if (fu <= fw || w == x)
+                v = w, fv = fw, w = u, fw = fu;
+            else if (fu <= fv || v == x || v == w)
+                v = u, fv = fu;
+        }
+    }
+    *rms = -fx;
+    return FRICREG_OK;
+}
+
+int fricreg_hb_peak(fricreg_hb *hb, size_t dof, double *omega, double *rms)
+{
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    if (omega == NULL || rms == NULL)
+        return fr_fail(hb, FRICREG_ENULL, "peak: %s is NULL", omega == NULL ? "omega" : "rms");
+    if (dof >= hb->n)
+        return fr_fail(hb, FRICREG_EINVAL, "peak: dof = %zu, the driver has %zu", dof, hb->n);
+    if (hb->npts == 0 || !hb->have_branch)
+        return fr_fail(hb, FRICREG_EINVAL,
+                       "peak: no branch (no fricreg_hb_continue yet, or the model changed since)");
+    size_t w = 1 + hb->n, ld = hb->nq + 1, best = 0;
+    for (size_t k = 1; k < hb->npts; k++)
+        if (hb->pts[k * w + 1 + dof] > hb->pts[best * w + 1 + dof])
+            best = k;
+    double om = hb->pts[best * w], f = hb->pts[best * w + 1 + dof];
+    if (best > 0 && best + 1 < hb->npts) {
+        /* the three points around it, scaled */
+        struct branch b = {.qs = hb->branch_qs, .ws = hb->branch_ws};
+        double *y[3] = {hb->yp, hb->yp + ld, hb->tan};
+        for (int i = 0; i < 3; i++)
+            for (size_t j = 0; j < ld; j++)
+                y[i][j] = hb->qpts[(best - 1 + (size_t)i) * ld + j] / (j + 1 < ld ? b.qs : b.ws);
+        const double *y3[3] = {y[0], y[1], y[2]};
+        double len = dist(y[2], y[0], ld), sb = 0.0;
+        for (size_t j = 0; j < ld; j++)
+            sb += (y[1][j] - y[0][j]) * (y[2][j] - y[0][j]) / (len * len);
+        /* the middle point projects inside the chord (the tangent turns by less than 90° a
+         * step): otherwise the sampled point stands */
+        if (sb > 0.0 && sb < 1.0) {
+            struct fr_error before = hb->err;
+            int status = brent_peak(hb, &b, dof, y3, sb, f, &om, &f);
+            if (status != FRICREG_OK)
+                return status;
+            hb->err = before;
+        }
+    }
+    *omega = om;
+    *rms = f;
     return FRICREG_OK;
 }

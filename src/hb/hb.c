@@ -21,8 +21,8 @@ static void *alloc_doubles(size_t count)
 
 /* The buffers sized by the rows of J, for cap rows of me elements (at most cap/me rows each):
  * J's block (J [cap n], kt, mun [me], pc, ps [n]), Y, Z (with colw), G (with ql, dG, dql),
- * fq's block (fq, jq, A, R, rw, dy, qw, qt, tan, yp, qsol) and piv2, Newton's LU pivots. All or
- * none. */
+ * fq's block (fq, jq, A, R, rw, dy, qw, qt, tan, yp (two), yo, tn, dir, yl, qsol) and piv2,
+ * Newton's LU pivots. All or none. */
 struct rows_buffers {
     double *J, *Y, *Z, *G, *fq;
     size_t *piv2;
@@ -46,7 +46,7 @@ static int alloc_rows(const fricreg_hb *hb, size_t cap, struct rows_buffers *b)
     b->Y = alloc_doubles(2 * H1 * n * (cap + 1));
     b->Z = alloc_doubles(2 * n * (cap + 1) + 2 * n);
     b->G = alloc_doubles(4 * H1 * cap * cap + 4 * H1 * cap);
-    b->fq = alloc_doubles(nq + cap * (cap / me) * nc * nc + (nq + 1) * (nq + 1) + 8 * (nq + 1) +
+    b->fq = alloc_doubles(nq + cap * (cap / me) * nc * nc + (nq + 1) * (nq + 1) + 12 * (nq + 1) +
                           nq);
     b->piv2 = malloc((nq + 1) * sizeof *b->piv2);
     if (!b->J || !b->Y || !b->Z || !b->G || !b->fq || !b->piv2) {
@@ -104,7 +104,11 @@ static void set_rows(fricreg_hb *hb, size_t rpe)
     hb->qt = hb->qw + (nq + 1);
     hb->tan = hb->qt + (nq + 1);
     hb->yp = hb->tan + (nq + 1);
-    hb->qsol = hb->yp + 2 * (nq + 1);
+    hb->yo = hb->yp + 2 * (nq + 1);
+    hb->tn = hb->yo + (nq + 1);
+    hb->dir = hb->tn + (nq + 1);
+    hb->yl = hb->dir + (nq + 1);
+    hb->qsol = hb->yl + (nq + 1);
 }
 
 int fricreg_hb_create(size_t ndof, size_t m, int harmonics, fricreg_hb **out)
@@ -171,6 +175,7 @@ void fricreg_hb_free(fricreg_hb *hb)
     free(hb->piv);
     free(hb->piv2);
     free(hb->pts);
+    free(hb->qpts);
     fricreg_aft_free(hb->aft);
     free(hb->sk);
     free(hb->nl);
@@ -179,11 +184,12 @@ void fricreg_hb_free(fricreg_hb *hb)
     free(hb);
 }
 
-/* A model change: the factors and the kept solution no longer hold. */
+/* A model change: the factors, the kept solution and the branch's unknowns no longer hold. */
 static void invalidate(fricreg_hb *hb)
 {
     hb->factored_omega = NAN;
     hb->have_solution = 0;
+    hb->have_branch = 0;
 }
 
 static int check_ndof(fricreg_hb *hb, const char *fn, size_t ndof)

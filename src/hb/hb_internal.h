@@ -82,6 +82,10 @@ struct fricreg_hb {
     double *qt;     /* [nq + 1] line search trial */
     double *tan;    /* [nq + 1] continuation tangent */
     double *yp;     /* [nq + 1] continuation: last point, then predictor */
+    double *yo;     /* [nq + 1] continuation: the point before the last (the secant) */
+    double *tn;     /* [nq + 1] continuation: the tangent at the corrected point */
+    double *dir;    /* [nq + 1] continuation: the predictor's direction and border */
+    double *yl;     /* [nq + 1] continuation: the corrector's line search base */
     size_t *piv2;   /* [nq + 1] A's row interchanges (lu.c) */
     int iterations; /* of the last Newton solve */
 
@@ -90,9 +94,13 @@ struct fricreg_hb {
     double omega_sol;
     double *qsol; /* [nq] */
 
-    /* the continuation's points: [npts (1 + n)], Ω then the n RMS values */
-    double *pts;
-    size_t npts, cap;
+    /* the continuation's points: [npts (1 + n)], Ω then the n RMS values; each point's
+     * unknowns (q, then Ω) in qpts [npts (nq + 1)], for fricreg_hb_peak; the branch's scales,
+     * and whether the model is still the branch's (cleared by a model change) */
+    double *pts, *qpts;
+    size_t npts, cap, qpts_stride; /* qpts holds cap points of qpts_stride = nq + 1 */
+    double branch_qs, branch_ws;
+    int have_branch;
 
     struct fr_error err;
 };
@@ -179,5 +187,8 @@ void fr_hb_recover(const fricreg_hb *hb, double *x);
 
 /* Each dof's RMS over a period from the forces fq at the factored Ω, into rms[n]. */
 void fr_hb_rms(const fricreg_hb *hb, double *rms);
+
+/* Dof k's RMS over a period from the forces fq at the factored Ω. */
+double fr_hb_rms_dof(const fricreg_hb *hb, size_t k);
 
 #endif

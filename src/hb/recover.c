@@ -39,17 +39,21 @@ void fr_hb_recover(const fricreg_hb *hb, double *x)
         }
 }
 
+double fr_hb_rms_dof(const fricreg_hb *hb, size_t k)
+{
+    double s = 0.0;
+    for (int h = 0; h <= hb->H; h++) {
+        double X[2];
+        coefficient(hb, h, k, X);
+        s += h == 0 ? X[0] * X[0] : 0.5 * (X[0] * X[0] + X[1] * X[1]);
+    }
+    return sqrt(s);
+}
+
 void fr_hb_rms(const fricreg_hb *hb, double *rms)
 {
-    for (size_t k = 0; k < hb->n; k++) {
-        double s = 0.0;
-        for (int h = 0; h <= hb->H; h++) {
-            double X[2];
-            coefficient(hb, h, k, X);
-            s += h == 0 ? X[0] * X[0] : 0.5 * (X[0] * X[0] + X[1] * X[1]);
-        }
-        rms[k] = sqrt(s);
-    }
+    for (size_t k = 0; k < hb->n; k++)
+        rms[k] = fr_hb_rms_dof(hb, k);
 }
 
 int fricreg_hb_displacement(fricreg_hb *hb, size_t ndof, size_t nc, double x[])

@@ -180,6 +180,7 @@ static int install(fricreg_hb *hb, const char *fn, cholmod_sparse *X[3])
     }
     hb->factored_omega = NAN;
     hb->have_solution = 0;
+    hb->have_branch = 0;
     return FRICREG_OK;
 }
 
