@@ -24,8 +24,9 @@
 #define EPS_PGV_LO 1e-9
 /* eps against the run's fastest contact: below 10 eps the law is in its regularized band. */
 #define EPS_SPEED_RATIO 10.0
-/* The bounds together against the structure's weight, sum_i mun_i / (g 1^T M 1). */
+/* A run this many times its record's duration past the record's start: the record in ms? */
 #define RECORD_RUN_RATIO 10.0
+/* The bounds together against the structure's weight, sum_i mun_i / (g 1^T M 1). */
 #define BOUND_ACCEL_LO (1e-3 * G_STANDARD)
 #define BOUND_ACCEL_HI (10.0 * G_STANDARD)
 /* dt against the fundamental period 2 pi/omega_1: at least 10 steps per period (average
