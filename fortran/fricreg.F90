@@ -2906,8 +2906,8 @@ contains
     if (status == FRICREG_OK) status = self%record(fricreg_structure_set_law(self%ptr, law, eps))
   end function struct_set_law
 
-  !> Influence vector r(ndof) of the ground acceleration (load -M r a_g). FRICREG_ESIZE;
-  !> FRICREG_ENONFINITE.
+  !> Influence vector r(ndof) of the ground acceleration (load -M r a_g; default r = 1 at
+  !> every degree of freedom). FRICREG_ESIZE; FRICREG_ENONFINITE.
   function struct_set_influence(self, r) result(status)
     class(fricreg_structure), intent(inout) :: self
     real(c_double), intent(in), contiguous :: r(:)

@@ -289,7 +289,7 @@ subroutine frstlw(h, law, eps, stat)
 end subroutine frstlw
 
 !> FRSTIV(H, NDOF, R, STAT): influence vector R(NDOF) of the ground acceleration (load
-!> -M R a_g; R(K) = 1 for a degree of freedom that translates with the ground).
+!> -M R a_g; R(K) = 1 for a degree of freedom that translates with the ground, the default).
 subroutine frstiv(h, ndof, r, stat)
   use fricreg_c
   use fricreg_sim_c

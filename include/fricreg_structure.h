@@ -55,7 +55,8 @@ typedef struct fricreg_structure fricreg_structure;
 /** Create a structure of ndof >= 1 degrees of freedom and m >= 1 friction contacts.
  *
  *  Defaults: M = I, C = 0, K = 0, J unset (set_contacts before the first step), mun[i] = 1,
- *  law (4) with eps = 1e-3, r = 0, no load and no ground motion, u = u' = 0 at t = 0,
+ *  law (4) with eps = 1e-3, r = 1 (every DOF moves with the ground; since 1.7, r = 0
+ *  before), no load and no ground motion, u = u' = 0 at t = 0,
  *  average-acceleration Newmark (beta = 1/4, gamma = 1/2), Newton tolerance 1e-10 and at
  *  most 50 iterations. Allocates O(ndof + m) here. The setters copy what they are given; the
  *  first step after a model setter factors M and hands W to the contacts (its diagonal when
@@ -211,7 +212,8 @@ FRICREG_API int fricreg_structure_set_bounds(fricreg_structure *s, size_t m, con
 FRICREG_API int fricreg_structure_set_law(fricreg_structure *s, int law, double eps);
 
 /** Set the influence vector r[ndof] (dimensionless): the ground acceleration a_g loads the
- *  structure with -M r a_g (r_k = 1 for every DOF that translates with the ground).
+ *  structure with -M r a_g (r_k = 1 for every DOF that translates with the ground, 0 for one
+ *  that does not, e.g. a rotation). Default r = 1 at every DOF, as the CLI's.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE. */
 FRICREG_API int fricreg_structure_set_influence(fricreg_structure *s, size_t ndof,
                                                 const double r[]);

@@ -561,6 +561,42 @@ START_TEST(coupled_contacts_shaken)
 }
 END_TEST
 
+/* The default influence vector is r = 1 at every DOF (the CLI's): a run that never sets it
+ * equals, bit for bit, one that sets r = 1; r = 0 set explicitly leaves the storeys at rest. */
+static void shaken_default_run(const double *r, double u[2])
+{
+    const double M[4] = {1.7, 0.0, 0.0, 0.9}, K[4] = {30.2, -12.1, -12.1, 12.1};
+    const double J[4] = {1.0, 0.0, -1.0, 1.0}, mun[2] = {1.3, 0.45};
+    double ag[201];
+    for (int k = 0; k < 201; k++)
+        ag[k] = 2.1 * sin(3.7 * k * 0.005);
+    fricreg_structure *s = make(2, 2);
+    ok(s, fricreg_structure_set_mass(s, 2, M));
+    ok(s, fricreg_structure_set_stiffness(s, 2, K));
+    ok(s, fricreg_structure_set_contacts(s, 2, 2, J));
+    ok(s, fricreg_structure_set_bounds(s, 2, mun));
+    if (r != NULL)
+        ok(s, fricreg_structure_set_influence(s, 2, r));
+    ok(s, fricreg_structure_set_ground_accel(s, 0.0, 0.005, 201, ag));
+    ok(s, fricreg_structure_run(s, 0.01, 1.0));
+    ok(s, fricreg_structure_get_state(s, 2, u, NULL, NULL));
+    fricreg_structure_free(s);
+}
+
+START_TEST(default_influence_moves_every_dof_with_the_ground)
+{
+    const double ones[2] = {1.0, 1.0}, zeros[2] = {0.0, 0.0};
+    double u_default[2], u_ones[2], u_zeros[2];
+    shaken_default_run(NULL, u_default);
+    shaken_default_run(ones, u_ones);
+    shaken_default_run(zeros, u_zeros);
+    ck_assert_double_ne(u_ones[0], 0.0);
+    ck_assert_mem_eq(u_default, u_ones, sizeof u_ones);
+    ck_assert_double_eq(u_zeros[0], 0.0);
+    ck_assert_double_eq(u_zeros[1], 0.0);
+}
+END_TEST
+
 /* Every law on the shaken storeys: the continuous ones, (3), (4) and tanh, converge at every
  * step and close Newmark's balance; (1) and (2) jump at v = 0, so a step into a stick has no
  * root: failures are counted, not hidden, and the run goes on (as with Karnopp, which jumps
@@ -1702,6 +1738,7 @@ static Suite *structure_suite(void)
     tcase_add_loop_test(friction, every_law_on_coupled_contacts, FRICREG_LAW_COULOMB,
                         FRICREG_LAW_QUINN + 1);
     tcase_add_test(friction, ground_motion_step_by_step);
+    tcase_add_test(friction, default_influence_moves_every_dof_with_the_ground);
     tcase_add_test(friction, building_newton_at_small_eps);
     tcase_add_test(friction, sparse_setters_equal_dense);
     tcase_add_test(friction, compressed_setters_equal_dense);

@@ -221,25 +221,14 @@ static int set_square(fricreg_structure *s, const struct cli_sparse *A, const ch
     return status == FRICREG_OK ? 0 : model_error(s, status, option, path, A);
 }
 
-/* r, or without --influence every DOF moving with the ground (r = 1) when there is a record. */
+/* r from --influence; without it the library's default, every DOF moving with the ground. */
 static int set_influence(fricreg_structure *s, const struct structure_options *o,
                          const struct structure_input *in)
 {
-    if (in->r != NULL) {
-        int status = fricreg_structure_set_influence(s, in->n, in->r);
-        return status == FRICREG_OK ? 0 : model_error(s, status, "--influence", o->influence, NULL);
-    }
-    if (in->ag == NULL)
+    if (in->r == NULL)
         return 0;
-    double *ones = malloc(in->n * sizeof *ones);
-    if (ones == NULL)
-        return cli_usage_error("--ground-accel", "out of memory");
-    for (size_t k = 0; k < in->n; k++)
-        ones[k] = 1.0;
-    int status = fricreg_structure_set_influence(s, in->n, ones);
-    free(ones);
-    return status == FRICREG_OK ? 0
-                                : cli_usage_error("--ground-accel", fricreg_structure_errmsg(s));
+    int status = fricreg_structure_set_influence(s, in->n, in->r);
+    return status == FRICREG_OK ? 0 : model_error(s, status, "--influence", o->influence, NULL);
 }
 
 /* The elements (beside the contacts, whatever their bounds: one step solves both); what the

@@ -110,6 +110,7 @@ int fricreg_structure_create(size_t ndof, size_t m, fricreg_structure **out)
     }
     for (size_t i = 0; i < m; i++)
         s->mun[i] = 1.0;
+    gsl_vector_set_all(s->r, 1.0); /* every DOF moves with the ground, as the CLI's default */
     s->bound_scale = -1.0;
     s->alpha = 0.0;
     s->beta = 0.25;
