@@ -937,9 +937,11 @@ FRICREG_API size_t fricreg_structure_errmsg_copy(const fricreg_structure *s, cha
  *  - FRICREG_WARN_RECORD_SHORT: the run's time past the start of the ground or load record
  *    above 10 times the record's duration (n - 1) dt: its time step in ms? Since 1.7.
  *  - FRICREG_WARN_DT_COARSE: after a fixed step (step, run, run_ode's fixed), the longest dt
- *    above a tenth of the fundamental period 2 pi/omega_1 (omega_1^2 the smallest positive
- *    eigenvalue of M^-1 K, computed here once per model up to 2048 degrees of freedom, O(ndof^3)
- *    and an allocation; not judged beyond).
+ *    above a tenth of the fundamental period 2 pi/omega_1 (omega_1^2 the smallest eigenvalue
+ *    of M^-1 K with every element sticking, computed here once per model at any size by
+ *    inverse iteration on K's sparse Cholesky factor, O(nnz) an iteration, an allocation; not
+ *    judged where K has a rigid-body mode. Up to 1.6: a dense eigen-solve, O(ndof^3), up to
+ *    2048 degrees of freedom).
  *  - FRICREG_WARN_NEWTON_FAILURES: a step ended without Newton's convergence
  *    (FRICREG_SSTAT_NEWTON_FAILURES > 0); FRICREG_WARN_NEWTON_SLOW: more than 5 iterations per
  *    step on average.

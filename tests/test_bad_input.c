@@ -788,10 +788,12 @@ static int w_st_get_stat(void)
     return fricreg_structure_get_stat(ST(), N(0, FRICREG_SSTAT_STEPS), (int64_t *)O(1));
 }
 /* A warning to read: a ground record typed in g (peak 0.2457 < 0.05 g, FRICREG_WARN_GROUND_PEAK,
- * the only one: no step taken). */
+ * the only one: no step taken, and no DOF moving with the ground, r = 0, for eps to be judged
+ * against its velocity). */
 static int w_st_get_warning(void)
 {
-    const double ag[2] = {0.2457, 0.2457};
+    const double ag[2] = {0.2457, 0.2457}, r[2] = {0.0, 0.0};
+    fricreg_structure_set_influence(FX_->st, 2, r);
     fricreg_structure_set_ground_accel(FX_->st, 0.0, 0.01, 2, ag);
     fricreg_structure_warning_count(FX_->st);
     return fricreg_structure_get_warning(ST(), C(0, 0), (int *)O(1), (char *)O(2), 64);

@@ -21,6 +21,7 @@
  *    and dt = 10 (ms typed as s) is above the period itself: FRICREG_WARN_DT_COARSE. */
 #include <check.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -314,6 +315,70 @@ START_TEST(refined_mesh_raises_no_bound_scale)
 }
 END_TEST
 
+/* A fixed-free chain of NC unit masses and springs k, beyond the dense eigen-solve's 2048
+ * dofs: omega_1 = 2 sqrt(k/m) sin(pi/(2(2 NC + 1))) in closed form, found at every size (by
+ * inverse iteration on K's factor). dt at 0.09 and 0.11 of the period: only the second warns,
+ * and its message gives the period to its 4 digits. */
+static fricreg_structure *long_chain(int nc, double k)
+{
+    int64_t *cp = malloc((size_t)(nc + 1) * sizeof *cp), *ri = malloc(2 * (size_t)nc * sizeof *ri);
+    int64_t *mp = malloc((size_t)(nc + 1) * sizeof *mp), *mi = malloc((size_t)nc * sizeof *mi);
+    double *kv = malloc(2 * (size_t)nc * sizeof *kv), *mv = malloc((size_t)nc * sizeof *mv);
+    ck_assert(cp && ri && mp && mi && kv && mv);
+    int64_t nnz = 0;
+    cp[0] = 0;
+    for (int j = 0; j < nc; j++) { /* upper triangle: (j-1, j) and (j, j) */
+        mp[j] = j;
+        mi[j] = j;
+        mv[j] = 1.0;
+        if (j > 0) {
+            ri[nnz] = j - 1;
+            kv[nnz++] = -k;
+        }
+        ri[nnz] = j;
+        kv[nnz++] = j == nc - 1 ? k : 2.0 * k; /* the support at dof 0's left, free at the tip */
+        cp[j + 1] = nnz;
+    }
+    mp[nc] = nc;
+    int64_t jp[2] = {0, 1}, ji[1] = {nc - 1};
+    double jv[1] = {1.0}, mun = 1.0;
+    fricreg_structure *s = NULL;
+    ck_assert_int_eq(fricreg_structure_create((size_t)nc, 1, &s), FRICREG_OK);
+    ok(s, fricreg_structure_set_mass_csc(s, (size_t)nc, FRICREG_SPARSE_UPPER, mp, mi, mv));
+    ok(s, fricreg_structure_set_stiffness_csc(s, (size_t)nc, FRICREG_SPARSE_UPPER, cp, ri, kv));
+    ok(s, fricreg_structure_set_contacts_csr(s, 1, (size_t)nc, 0, jp, ji, jv));
+    ok(s, fricreg_structure_set_bounds(s, 1, &mun));
+    free(cp), free(ri), free(mp), free(mi), free(kv), free(mv);
+    return s;
+}
+
+START_TEST(fundamental_period_at_every_size)
+{
+    enum { NC = 3000 };
+    const double pi = acos(-1.0), k = 1e4, omega1 = 2.0 * sqrt(k) * sin(pi / (2.0 * (2 * NC + 1)));
+    const double period = 2.0 * pi / omega1;
+    for (int coarse = 0; coarse < 2; coarse++) {
+        fricreg_structure *s = long_chain(NC, k);
+        ok(s, fricreg_structure_step(s, (coarse ? 0.11 : 0.09) * period));
+        size_t count = fricreg_structure_warning_count(s);
+        ck_assert_int_eq(raised(s, count, FRICREG_WARN_DT_COARSE), coarse);
+        for (size_t w = 0; coarse && w < count; w++) {
+            int code = 0;
+            char msg[256];
+            ok(s, fricreg_structure_get_warning(s, w, &code, msg, sizeof msg));
+            if (code != FRICREG_WARN_DT_COARSE)
+                continue;
+            const char *at = strstr(msg, "fundamental period ");
+            ck_assert_ptr_nonnull(at);
+            double found = strtod(at + strlen("fundamental period "), NULL);
+            ck_assert_msg(fabs(found - period) <= 5e-4 * period,
+                          "period %.6g s, closed form %.6g s", found, period);
+        }
+        fricreg_structure_free(s);
+    }
+}
+END_TEST
+
 /* The building's record with its dt in ms typed as s (0.01 s long) under the run of 15 s. */
 START_TEST(record_in_ms_raises_record_short)
 {
@@ -361,6 +426,7 @@ int main(void)
     tcase_add_test(tc, warnings_change_nothing);
     tcase_add_test(tc, observer_sees_the_list_as_judged);
     tcase_add_test(tc, refined_mesh_raises_no_bound_scale);
+    tcase_add_test(tc, fundamental_period_at_every_size);
     tcase_add_test(tc, record_in_ms_raises_record_short);
     tcase_add_test(tc, names);
     suite_add_tcase(suite, tc);

@@ -47,10 +47,9 @@ static void congruence(fricreg_structure *s, const cholmod_sparse *X, struct fr_
  * -STABLE_RTOL times the largest magnitude (X positive semidefinite to rounding: a rigid-body
  * mode of K gives an eigenvalue of order 1e-16 of either sign). Where the matrix overflows
  * (K near DBL_MAX, or a mass far below K's scale), *max is +Inf (no fixed explicit step is
- * stable) and stability is not known: 0. The smallest eigenvalue above 1e-8 of the largest
- * into *min (0 if none: a rigid-body mode's rounding is of order 1e-16 of it). By fr_eigen_solve, whose scaling keeps GSL's
+ * stable) and stability is not known: 0. By fr_eigen_solve, whose scaling keeps GSL's
  * iteration from looping on such a matrix (fuzz finding). -1: no memory. */
-static int exact_rate(fricreg_structure *s, const cholmod_sparse *X, double *max, double *min)
+static int exact_rate(fricreg_structure *s, const cholmod_sparse *X, double *max)
 {
     struct fr_eigen e;
     if (fr_eigen_alloc(&e, s->n) != 0)
@@ -66,10 +65,6 @@ static int exact_rate(fricreg_structure *s, const cholmod_sparse *X, double *max
         }
         *max = fmax(hi, 0.0);
         psd = !(lo < -STABLE_RTOL * fmax(fabs(lo), fabs(hi)));
-        *min = 0.0;
-        for (size_t k = 0; k < s->n; k++)
-            if (e.eval[k] > 1e-8 * *max && (*min == 0.0 || e.eval[k] < *min))
-                *min = e.eval[k];
     }
     fr_eigen_free(&e);
     return psd;
@@ -122,9 +117,7 @@ static int bound_rate(fricreg_structure *s, const cholmod_sparse *X, double *max
     return xlo >= 0.0;
 }
 
-/* K + J^T diag(kstick) J, the stiffness with every element sticking and closed (its upper
- * triangle), or NULL when out of memory. */
-static cholmod_sparse *stick_stiffness(fricreg_structure *s)
+cholmod_sparse *fr_structure_stick_stiffness(fricreg_structure *s)
 {
     cholmod_sparse *B = cholmod_l_copy_sparse(s->el.Jt, &s->cc);
     if (B == NULL)
@@ -148,15 +141,15 @@ int fr_structure_rates(fricreg_structure *s, const char *who)
 {
     if (s->omega_valid)
         return FRICREG_OK;
-    double omega2 = 0.0, omega2_min = 0.0, unused = 0.0;
+    double omega2 = 0.0;
     int stiff_psd, damp_psd;
-    cholmod_sparse *K = s->el.me > 0 ? stick_stiffness(s) : s->K;
+    cholmod_sparse *K = s->el.me > 0 ? fr_structure_stick_stiffness(s) : s->K;
     if (K == NULL)
         return fr_fail(s, FRICREG_ENOMEM, "%s: no memory for the sticking elements' stiffness",
                        who);
     if (s->n <= DENSE_RATES_MAX) {
-        stiff_psd = exact_rate(s, K, &omega2, &omega2_min);
-        damp_psd = exact_rate(s, s->Cd, &s->damping_max, &unused);
+        stiff_psd = exact_rate(s, K, &omega2);
+        damp_psd = exact_rate(s, s->Cd, &s->damping_max);
     } else {
         stiff_psd = bound_rate(s, K, &omega2);
         damp_psd = bound_rate(s, s->Cd, &s->damping_max);
@@ -166,10 +159,15 @@ int fr_structure_rates(fricreg_structure *s, const char *who)
     if (stiff_psd < 0 || damp_psd < 0)
         return fr_fail(s, FRICREG_ENOMEM, "%s: no memory for the model's eigenvalues", who);
     s->omega_max = sqrt(omega2);
-    s->omega_min = sqrt(omega2_min); /* 0 beyond DENSE_RATES_MAX: not known */
     s->stable = stiff_psd && damp_psd;
     s->omega_valid = 1;
     return FRICREG_OK;
+}
+
+void fr_structure_rates_stale(fricreg_structure *s)
+{
+    s->omega_valid = 0;
+    s->fundamental_valid = 0;
 }
 
 int fr_structure_stable(const fricreg_structure *s)

@@ -182,7 +182,7 @@ static int install(fricreg_structure *s, size_t me, size_t ns, int dim, cholmod_
     fr_elements_free(s);
     s->el = e;
     fr_structure_model_changed(s); /* E = J_e K_eff^-1 J_e^T and the equilibrium anew */
-    s->omega_valid = 0;            /* the step guard's rates see the sticking springs */
+    fr_structure_rates_stale(s);   /* the rates see the sticking springs */
     return FRICREG_OK;
 }
 
@@ -205,7 +205,7 @@ static int remove_all(fricreg_structure *s)
 {
     fr_elements_free(s);
     fr_structure_model_changed(s);
-    s->omega_valid = 0;
+    fr_structure_rates_stale(s);
     return FRICREG_OK;
 }
 

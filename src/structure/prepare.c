@@ -158,7 +158,7 @@ int fr_structure_prepare(fricreg_structure *s)
     }
     fr_sym_mult(s->M, 1.0, s->r->data, 0.0, s->Mr->data);
     s->step_dt = 0.0;
-    s->omega_valid = 0;
+    fr_structure_rates_stale(s);
     s->prepared = 1;
     return FRICREG_OK;
 }

@@ -141,9 +141,10 @@ struct fricreg_structure {
     int omega_valid;    /* the step guard: omega_max, damping_max are current (reset by prepare) */
     double omega_max;   /* sqrt of the largest eigenvalue of M^-1 K (a bound for large models) */
     double damping_max; /* the largest eigenvalue of M^-1 C (a bound for large models) */
-    double omega_min;   /* sqrt of the smallest positive eigenvalue of M^-1 K (0: not known) */
-    int stable;         /* K and C positive semidefinite (to rounding; large models: shown so) */
-    int stick_valid;    /* the step guard: stick_rate is current (reset at equilibrium) */
+    int fundamental_valid; /* omega_min is current (reset with omega_valid) */
+    double omega_min;  /* sqrt of M^-1 K_stick's smallest eigenvalue (0: not known; the warnings) */
+    int stable;        /* K and C positive semidefinite (to rounding; large models: shown so) */
+    int stick_valid;   /* the step guard: stick_rate is current (reset at equilibrium) */
     double stick_rate; /* lambda * eps (fr_stiffness_times_eps): the chord's for a law that jumps */
 
     /* Newmark's step: K_eff's factor (step.D = W_eff) for step_dt, and the Newton matrix. */
@@ -281,6 +282,17 @@ struct fr_integrator;
 int fr_structure_rates(fricreg_structure *s, const char *who);
 double fr_structure_omega_max(const fricreg_structure *s);
 int fr_structure_stable(const fricreg_structure *s);
+/* K + J^T diag(kstick) J, the stiffness with every element sticking and closed (its upper
+ * triangle), or NULL when out of memory. */
+cholmod_sparse *fr_structure_stick_stiffness(fricreg_structure *s);
+/* Both caches above and the fundamental frequency's stale: the model or its elements changed. */
+void fr_structure_rates_stale(fricreg_structure *s);
+
+/* fundamental_frequency.c: omega_1 = sqrt of the smallest eigenvalue of K_stick x = lambda M x
+ * (every element sticking), rad/s, by inverse iteration on K_stick's Cholesky factor, cached
+ * until the model changes; 0 where not known (K_stick not positive definite: a rigid-body
+ * mode; no memory). For the warnings' dt check. */
+double fr_structure_fundamental_omega(fricreg_structure *s);
 /* A bound of the stiffest rate in the forward-difference Jacobian J of run_ode's first-order
  * system: omega_max + c_max + m max_i W_ii 2 mun_i / max(eps, sqrt(DBL_EPSILON)), the friction's
  * steepest slope as a forward difference of step >= sqrt(DBL_EPSILON) |y| sees it (a law's

@@ -229,16 +229,14 @@ static void check_record_length(fricreg_structure *s)
     }
 }
 
-/* The fundamental period 2 pi/omega_1 of the model in force, or 0 where it is not known (no
- * step yet, K without a positive eigenvalue, beyond 2048 degrees of freedom, no memory). */
+/* The fundamental period 2 pi/omega_1 of the model in force, every element sticking, or 0
+ * where it is not known (no step yet, a rigid-body mode, no memory). */
 static double fundamental_period(fricreg_structure *s)
 {
     if (!s->prepared)
         return 0.0;
-    struct fr_error kept = s->err; /* a failure here is no failure of the caller's */
-    int status = fr_structure_rates(s, "warning_count");
-    s->err = kept;
-    return status == FRICREG_OK && s->omega_min > 0.0 ? FR_TWO_PI / s->omega_min : 0.0;
+    double omega = fr_structure_fundamental_omega(s);
+    return omega > 0.0 ? FR_TWO_PI / omega : 0.0;
 }
 
 static void check_dt(fricreg_structure *s, double period)

@@ -1274,7 +1274,7 @@ static const struct script exact_solve_script = {
 static const double FRAME_M[9] = {2, 0, 0, 0, 2, 0, 0, 0, 1};
 static const double FRAME_K[9] = {400, -200, 0, -200, 400, -200, 0, -200, 200};
 static const double FRAME_J[6] = {1, 0, 0, -1, 1, 0}, FRAME_MUN[2] = {5, 3};
-static const double FRAME_R[3] = {1, 1, 1};
+static const double FRAME_R[3] = {1, 0.5, 1}; /* not the default r = 1, so that it is seen */
 static const double GROUND_A[4] = {0.5, -1.0, 0.75, 0.0}, GROUND_B[5] = {0.25, 1.0, -0.5, 0.3, 0};
 static const double LOAD_P1[3] = {0, 0, 1}, LOAD_G1[3] = {0, 40, 0};
 static const double LOAD_P2[3] = {0, 1, 0.5}, LOAD_G2[3] = {0, 30, 10};
