@@ -654,13 +654,13 @@ FRICREG_API int fricreg_structure_set_jenkins_2d_csr(fricreg_structure *s, size_
                                                      const int64_t colind[], const double values[],
                                                      const double kt[], const double mun[]);
 
-/** Copy the 2-D Jenkins elements' state (fricreg_structure_set_jenkins_2d, _2d_normal) at the current
- *  time: their forces f[2 me] (force units, f_i = kt_i (q_i - w_i) with |f_i| <= mun_i, element
- *  i's (x, y) at f[2i], f[2i + 1] as the rows of J_e; -J_e^T f on the structure; 0 before the
- *  first step), the committed slider positions w[2 me] (the units of q, laid out as f) and the
- *  energy each has dissipated since set_initial (or since set_jenkins_2d) D[me] (energy units,
- *  their sum FRICREG_SVALUE_JENKINS). Any of f, w, D may be NULL, not all three. Since 1.6
- *  (FRICREG_1.6).
+/** Copy the 2-D Jenkins elements' state (fricreg_structure_set_jenkins_2d, _2d_normal) at the
+ *  current time: their forces f[2 me] (force units, f_i = kt_i (q_i - w_i) with |f_i| <= mun_i,
+ *  element i's (x, y) at f[2i], f[2i + 1] as the rows of J_e; -J_e^T f on the structure; 0
+ *  before the first step), the committed slider positions w[2 me] (the units of q, laid out as
+ *  f) and the energy each has dissipated since set_initial (or since set_jenkins_2d) D[me]
+ *  (energy units, their sum FRICREG_SVALUE_JENKINS). Any of f, w, D may be NULL, not all
+ *  three. Since 1.6 (FRICREG_1.6).
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if me is not the number of elements set;
  *  FRICREG_EINVAL (me > 0) if they are 1-D elements (fricreg_structure_get_jenkins_state and
  *  fricreg_structure_get_iwan_state read those). */
@@ -846,8 +846,8 @@ FRICREG_API int fricreg_structure_set_jenkins_2d_normal(fricreg_structure *s, si
                                                         const double kn[]);
 
 /** Copy the normal forces N[me] (force units, max(0, n0 + kn g), 0 while separated) of the
- *  elements of fricreg_structure_set_jenkins_normal (or _2d_normal) at the current time (0 before the first
- *  step); their tangential forces, sliders and dissipation are
+ *  elements of fricreg_structure_set_jenkins_normal (or _2d_normal) at the current time (0
+ *  before the first step); their tangential forces, sliders and dissipation are
  *  fricreg_structure_get_jenkins_state's (_2d_state's). Since 1.6 (FRICREG_1.6).
  *  Returns FRICREG_OK; FRICREG_ENULL if s or N is NULL; FRICREG_ESIZE if me is not the number
  *  of elements set; FRICREG_EINVAL if they have no normal law. */

@@ -23,6 +23,12 @@
  * column: the other coordinate of the element). An element moving on one axis has a zero
  * off-diagonal there and is the 1-D element.
  *
+ * 3-D contact elements (set_jenkins_2d_normal) are 2-D elements with the normal law: the 2 me
+ * tangential coordinates, then the me normal ones (nc = 3 me, J = J_e over J_n), the bound
+ * mu max(0, n0 + kn g) and lift-off as in 1-D; a tangential row k has, beside its 2x2 block,
+ * dfe/dg = mu kn n (slipping) in tagn[k] at column fr_elements_normal_column, the normal row
+ * kn (closed) on its diagonal.
+ *
  * Newmark / HHT-alpha: with the contacts' forces zero (every bound 0; beside contacts of bound
  * > 0 the step is joint_step.c's, one Newton over both forces), the step's equation K_eff x = b - w J_e^T fe1 (w = 1 + alpha) condenses onto the
  * elements: u1 = u_pred + beta dt^2 x gives
