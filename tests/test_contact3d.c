@@ -16,7 +16,8 @@
  *   - lift-off: an independent time march of the rule (N = max(0, n0 + kn g), separated:
  *     w = u, f = 0; closed: the radial return) written here;
  *   - the exact tangent against centred differences of the force;
- *   - the structure against the standalone element driven by the structure's own q and g. */
+ *   - the structure against the standalone element driven by the structure's own q and g;
+ *   - the error estimate's companion against a structure set up by hand at eps/2, dt/2. */
 #include <check.h>
 #include <math.h>
 #include <stdint.h>
@@ -526,6 +527,45 @@ START_TEST(structure_refusals)
 }
 END_TEST
 
+/* The error estimate's companion copies the 3-D contact elements (two tangential rows and a
+ * normal row each): its estimates are 3 |u - u_c| bit for bit against a structure set up by
+ * hand at eps / 2 and run at dt / 2, the element beside a contact of bound > 0, opening and
+ * closing. */
+START_TEST(structure_error_estimate_companion)
+{
+    const double M[9] = {1.0, 0.0, 0.0, 0.0, 1.5, 0.0, 0.0, 0.0, 0.8},
+                 K[9] = {3.0, -1.0, 0.0, -1.0, 2.5, -0.7, 0.0, -0.7, 1.9},
+                 Je[6] = {1.0, -1.0, 0.0, 0.3, 0.5, 0.2}, Jn[3] = {-0.1, 0.2, 1.0},
+                 J0[3] = {0.0, 1.0, 0.0}, p[3] = {0.9, -0.6, 2.5}, kt = 3.0, mu = 0.4, n0 = 1.0,
+                 kn = 4.0, eps = 1e-2;
+    const double omega = 1.1, dt = 0.01;
+    const int nsteps = 1200;
+    fricreg_structure *s = make(M, K, NULL, J0, 0.1, p, omega, dt, nsteps, 0),
+                      *c = make(M, K, NULL, J0, 0.1, p, omega, dt, nsteps, 0);
+    ck_assert_int_eq(fricreg_structure_set_law(s, FRICREG_LAW_QUINN, eps), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_law(c, FRICREG_LAW_QUINN, 0.5 * eps), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_jenkins_2d_normal(s, 1, 3, Je, Jn, &kt, &mu, &n0, &kn),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_jenkins_2d_normal(c, 1, 3, Je, Jn, &kt, &mu, &n0, &kn),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_error_estimate(s, 1), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_run(s, dt, nsteps * dt), FRICREG_OK);
+    double t = 0.0;
+    ck_assert_int_eq(fricreg_structure_get_value(s, FRICREG_SVALUE_TIME, &t), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_run(c, 0.5 * dt, t), FRICREG_OK);
+    double u[3], uc[3], err[3];
+    ck_assert_int_eq(fricreg_structure_get_peak_displacement(s, 3, u), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_peak_displacement(c, 3, uc), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_peak_displacement_error(s, 3, err), FRICREG_OK);
+    for (int i = 0; i < 3; i++) {
+        ck_assert(err[i] > 0.0);
+        ck_assert_double_eq(err[i], 3.0 * fabs(u[i] - uc[i]));
+    }
+    fricreg_structure_free(c);
+    fricreg_structure_free(s);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("contact3d");
@@ -543,6 +583,7 @@ static Suite *suite(void)
     tcase_add_test(ts, structure_orbit);
     tcase_add_test(ts, structure_liftoff_standalone);
     tcase_add_test(ts, structure_refusals);
+    tcase_add_test(ts, structure_error_estimate_companion);
     suite_add_tcase(s, ts);
     return s;
 }
