@@ -335,6 +335,7 @@ module fricreg
     procedure :: set_iwan => struct_set_iwan
     procedure :: get_iwan_state => struct_get_iwan_state
     procedure :: set_jenkins_normal => struct_set_jenkins_normal
+    procedure :: set_jenkins_2d_normal => struct_set_jenkins_2d_normal
     procedure :: get_normal_forces => struct_get_normal_forces
     procedure :: set_mass_csr => struct_set_mass_csr
     procedure :: set_mass_csc => struct_set_mass_csc
@@ -2682,6 +2683,38 @@ contains
                                                                             Jnc, kt, &
                                                                             mu, n0, kn))
   end function struct_set_jenkins_normal
+
+  !> 3-D contact elements: 2-D Jenkins elements with a normal load and lift-off
+  !> (fricreg_structure_set_jenkins_2d_normal): element i's tangential rows 2i-1 (x) and 2i (y)
+  !> of Je(2 me, ndof) and its normal row i of Jn(me, ndof), both in Fortran's order;
+  !> N = max(0, n0 + kn g), g = (Jn u)_i, |f_i| <= mu N; me = size(Jn, 1). FRICREG_ESIZE unless
+  !> Je is (2 me, ndof), Jn (me, ndof) and kt, mu, n0, kn have me entries; C's codes otherwise.
+  !> Since 1.7.
+  function struct_set_jenkins_2d_normal(self, Je, Jn, kt, mu, n0, kn) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(in) :: Je(:, :), Jn(:, :)
+    real(c_double), intent(in), contiguous :: kt(:), mu(:), n0(:), kn(:)
+    integer(c_int) :: status
+    integer(c_size_t) :: me
+    character(len=*), parameter :: who = 'set_jenkins_2d_normal'
+    real(c_double), allocatable :: Jec(:, :), Jnc(:, :) ! transposed: C's row-major Je, Jn
+    me = int(size(Jn, 1), c_size_t)
+    status = self%ready(who, 'structure')
+    if (status == FRICREG_OK) status = self%check_size(who, 'Je, 1', size(Je, 1), 2 * me)
+    if (status == FRICREG_OK) status = self%check_size(who, 'Je, 2', size(Je, 2), self%n)
+    if (status == FRICREG_OK) status = self%check_size(who, 'Jn, 2', size(Jn, 2), self%n)
+    if (status == FRICREG_OK) status = self%check_size(who, 'kt', size(kt), me)
+    if (status == FRICREG_OK) status = self%check_size(who, 'mu', size(mu), me)
+    if (status == FRICREG_OK) status = self%check_size(who, 'n0', size(n0), me)
+    if (status == FRICREG_OK) status = self%check_size(who, 'kn', size(kn), me)
+    if (status == FRICREG_OK) allocate (Jec, source=transpose(Je))
+    if (status == FRICREG_OK) allocate (Jnc, source=transpose(Jn))
+    if (status == FRICREG_OK) status = self%record( &
+                                       fricreg_structure_set_jenkins_2d_normal(self%ptr, me, &
+                                                                               self%n, Jec, &
+                                                                               Jnc, kt, mu, &
+                                                                               n0, kn))
+  end function struct_set_jenkins_2d_normal
 
   !> The normal forces N(me) of set_jenkins_normal's elements
   !> (fricreg_structure_get_normal_forces). FRICREG_ESIZE; FRICREG_EINVAL without a normal law.

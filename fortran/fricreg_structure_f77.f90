@@ -53,6 +53,7 @@
 !   FRSTIW(H, ME, NDOF, JE, NS, K, PHI, STAT)    _set_iwan (JE transposed, K(NS, ME))
 !   FRSTLO(H, ME, NDOF, JE, JN, KT, MU, N0, KN, STAT)   _set_jenkins_normal (JE, JN transposed)
 !   FRSTJ2(H, ME, NDOF, JE, KT, MUN, STAT)       _set_jenkins_2d (JE(2 ME, NDOF) transposed)
+!   FRSTL2(H, ME, NDOF, JE, JN, KT, MU, N0, KN, STAT)   _set_jenkins_2d_normal (3-D contact)
 !   FRSTJS(H, ME, F, W, D, STAT)                 _get_jenkins_state
 !   FRSTS2(H, ME, F, W, D, STAT)                 _get_jenkins_2d_state (F(2, ME), W(2, ME))
 !   FRSTIS(H, ME, NS, F, W, D, STAT)             _get_iwan_state (W(NS, ME))
@@ -739,6 +740,44 @@ subroutine frstj2(h, me, ndof, je, kt, mun, stat)
   stat = int(fricreg_structure_set_jenkins_2d(fricreg_handle_to_ptr(h), int(me, c_size_t), &
                                               int(ndof, c_size_t), jt, kt, mun))
 end subroutine frstj2
+
+!> FRSTL2(H, ME, NDOF, JE, JN, KT, MU, N0, KN, STAT): ME 3-D contact elements instead, 2-D
+!> Jenkins elements with a normal load and lift-off (C's fricreg_structure_set_jenkins_2d_normal):
+!> element I's tangential rows 2I - 1 (x) and 2I (y) of JE(2 ME, NDOF) as FRSTJ2's, its normal
+!> row I of JN(ME, NDOF) as FRSTLO's; N_I = MAX(0, N0(I) + KN(I) G_I), G_I = (JN U)_I positive
+!> closing, |FE_I| <= MU(I) N_I (radial return; separated: FE_I = 0 and the slider follows).
+!> KT(ME) > 0, MU(ME) >= 0, N0(ME) finite, KN(ME) > 0; ME above 2**25 is FRICREG_EINVAL here.
+!> FRSTS2 reads FE, W, D and FRSTNF the normal forces. Since 1.7.
+subroutine frstl2(h, me, ndof, je, jn, kt, mu, n0, kn, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: me, ndof
+  double precision, intent(in) :: je(2 * min(max(me, 0), 2**25), *), jn(max(me, 0), *), kt(*), &
+                                  mu(*), n0(*), kn(*)
+  integer, intent(out) :: stat
+  double precision, allocatable :: ct(:, :), cn(:, :)
+  integer :: mm, nn, alloc
+  if (me > 2**25) then ! 2 ME would pass C's limit (and may wrap a default INTEGER)
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  mm = max(me, 0)
+  nn = max(ndof, 0)
+  allocate (ct(nn, 2 * mm), cn(nn, mm), stat=alloc)
+  if (alloc /= 0) then
+    stat = int(FRICREG_ENOMEM)
+    return
+  end if
+  if (mm > 0 .and. nn > 0) then
+    ct = transpose(je(1:2 * mm, 1:nn))
+    cn = transpose(jn(1:mm, 1:nn))
+  end if
+  stat = int(fricreg_structure_set_jenkins_2d_normal(fricreg_handle_to_ptr(h), &
+                                                     int(me, c_size_t), int(ndof, c_size_t), &
+                                                     ct, cn, kt, mu, n0, kn))
+end subroutine frstl2
 
 !> FRSTJS(H, ME, F, W, D, STAT): the Jenkins elements' forces F(ME) (on the element; -JE^T F
 !> on the structure), committed sliders W(ME) and dissipation D(ME) since they were set (C's

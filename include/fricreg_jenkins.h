@@ -38,6 +38,22 @@
  * (the slip force mu N n grows with N along the slip direction). At N0 + kn g = 0 exactly the
  * contact is closed with mun = 0 (the one-sided derivatives of the closed side).
  *
+ * The 3-D contact element (tmdsimpy's: one node of a bolted joint's contact patch) is the 2-D
+ * element with a normal law: its inputs are the relative displacement (u_x, u_y, g), g positive
+ * closing, its forces (f_x, f_y, N), its state the slider w in the tangential plane. One
+ * convention for the normal law, the preload N0 at g = 0 (a gap d is N0 = -kn d): there is no
+ * second way to give it, so nothing to reconcile. The tangential trial kt (u - w_c) returns
+ * radially onto the disk |f| <= mu N (isotropic Coulomb); separation resets the memory (w = u,
+ * f = 0), so that the first closed step starts from an unloaded spring at the last open
+ * position. Its exact 3x3 tangent, d(f_x, f_y, N)/d(u_x, u_y, g), assembled from
+ * fricreg_jenkins_trial_normal's dfdu (2x2) and dfdg (2), is
+ *
+ *     stick:  [kt I   0 ]    slip:  [kt (mu N/|f_tr|)(I - n n^T)   mu kn n]    open: 0
+ *             [0     kn ]           [0                             kn     ]
+ *
+ * (dN/du = 0; dN/dg = kn where N0 + kn g >= 0, else 0). fricreg_structure_set_jenkins_2d_normal
+ * puts these elements into a structure (docs/joints.md, "The 3-D contact element").
+ *
  * One object, a dimension argument: the 1-D element is the 2-D one restricted to a line (the
  * same state, parameters, protocol and equations, only the norm changes), so one object type
  * with dim = 1 or 2 serves both, with the same functions and one Fortran type, rather than two

@@ -656,13 +656,13 @@ FRICREG_API int fricreg_structure_set_jenkins_2d_csr(fricreg_structure *s, size_
                                                      const int64_t colind[], const double values[],
                                                      const double kt[], const double mun[]);
 
-/** Copy the 2-D Jenkins elements' state (fricreg_structure_set_jenkins_2d) at the current
- *  time: their forces f[2 me] (force units, f_i = kt_i (q_i - w_i) with |f_i| <= mun_i, element
- *  i's (x, y) at f[2i], f[2i + 1] as the rows of J_e; -J_e^T f on the structure; 0 before the
- *  first step), the committed slider positions w[2 me] (the units of q, laid out as f) and the
- *  energy each has dissipated since set_initial (or since set_jenkins_2d) D[me] (energy units,
- *  their sum FRICREG_SVALUE_JENKINS). Any of f, w, D may be NULL, not all three. Since 1.6
- *  (FRICREG_1.6).
+/** Copy the 2-D Jenkins elements' state (fricreg_structure_set_jenkins_2d, _2d_normal) at the
+ *  current time: their forces f[2 me] (force units, f_i = kt_i (q_i - w_i) with |f_i| <= mun_i,
+ *  element i's (x, y) at f[2i], f[2i + 1] as the rows of J_e; -J_e^T f on the structure; 0
+ *  before the first step), the committed slider positions w[2 me] (the units of q, laid out as
+ *  f) and the energy each has dissipated since set_initial (or since set_jenkins_2d) D[me]
+ *  (energy units, their sum FRICREG_SVALUE_JENKINS). Any of f, w, D may be NULL, not all
+ *  three. Since 1.6 (FRICREG_1.6).
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if me is not the number of elements set;
  *  FRICREG_EINVAL (me > 0) if they are 1-D elements (fricreg_structure_get_jenkins_state and
  *  fricreg_structure_get_iwan_state read those). */
@@ -787,10 +787,70 @@ FRICREG_API int fricreg_structure_set_jenkins_normal(fricreg_structure *s, size_
                                                      const double kt[], const double mu[],
                                                      const double n0[], const double kn[]);
 
+/** Attach me 3-D contact elements: 2-D Jenkins elements with a normal load and lift-off (the
+ *  element of fricreg_jenkins_create(2, ...) with fricreg_jenkins_set_normal's law; tmdsimpy's
+ *  3-D contact element). Element i sees the tangential relative displacement
+ *  q_i = ((J_e u)_2i, (J_e u)_2i+1), rows 2i and 2i + 1 of Je[2 me * ndof] (the tangential
+ *  plane's x and y, as fricreg_structure_set_jenkins_2d's Je), and the normal relative
+ *  displacement g_i = (J_n u)_i, row i of Jn[me * ndof] (positive closing; both row-major,
+ *  dimensionless for displacement DOFs). It carries the normal force and the tangential force
+ *
+ *      N_i = max(0, n0_i + kn_i g_i),
+ *      f_i = kt_i (q_i - w_i),  |f_i| <= mu_i N_i  (isotropic Coulomb: the friction disk),
+ *
+ *  f_i by the radial return from its committed slider w_i (fricreg_jenkins_trial_normal with
+ *  dim = 2; Simo & Hughes 1998, Ch. 3). While the element is separated (n0 + kn g < 0) f_i = 0,
+ *  N_i = 0 and the slider follows q (w = q: the tangential memory reset), so that on
+ *  re-contact the spring starts unloaded from where the surfaces meet again (a stick unless
+ *  the step's own tangential motion exceeds mu N / kt). One convention for the normal law: the
+ *  preload n0 at g = 0; a gap d is n0 = -kn d (open until g reaches d). Both forces act on the
+ *  structure, -J_e^T f - J_n^T N, as for fricreg_structure_set_jenkins_normal.
+ *
+ *  The element's coordinates are the 2 me tangential rows, then the me normal rows
+ *  (E = J K_eff^-1 J^T, J = J_e over J_n, 3 me x 3 me), and the exact tangent T is, per
+ *  element on its (x, y, n) coordinates,
+ *
+ *      stick:  [kt I   0 ]    slip:  [(mu N/|d|)(I - n n^T)   mu kn n]    open:  0
+ *              [0     kn ]           [0                       kn     ]
+ *
+ *  (d = q - w_c, n = d/|d| the slip direction; at n0 + kn g = 0 exactly the contact counts as
+ *  closed with bound 0), in the Newton matrix I + (1 + alpha) beta dt^2 T E of Newmark and
+ *  HHT-alpha, and beside contacts of bound > 0 in the joint Newton over m + 3 me unknowns. The
+ *  central difference evaluates the elements at u(t + dt), its step guard reading
+ *  K + J_e^T diag(kt, kt, ...) J_e + J_n^T diag(kn) J_n; fricreg_structure_run_ode refuses
+ *  them. Energy as fricreg_structure_set_jenkins_normal's: |f|^2/(2 kt) + N^2/(2 kn) in
+ *  FRICREG_SVALUE_STRAIN, the sliders' dissipation (w(t+dt) - w(t)) . (f(t) + f(t+dt))/2 in
+ *  FRICREG_SVALUE_JENKINS; exact over steps in which every element stays closed or open.
+ *  The state: fricreg_structure_get_jenkins_2d_state (f[2 me], w[2 me], D[me]) and
+ *  fricreg_structure_get_normal_forces (N[me]). A closed element with kn g = 0 whose motion
+ *  stays on one axis is the 1-D element of set_jenkins on that row, mun = mu n0. Copied;
+ *  every slider at w = 0; replaces the elements in force. me = 0 removes them (the arrays may
+ *  then be NULL). Since 1.7 (FRICREG_1.7).
+ *
+ *  me           number of elements; 2 me <= 2^26.
+ *  ndof         must be the structure's.
+ *  Je[2me*ndof] row-major, two tangential rows per element (x, y).
+ *  Jn[me*ndof]  row-major, one normal row per element.
+ *  kt[me]       tangential stiffness > 0 (finite), force per unit of q.
+ *  mu[me]       friction coefficient >= 0 (finite, nondimensional).
+ *  n0[me]       normal force at g = 0 (finite, force units; < 0: open at g = 0, a gap -n0/kn).
+ *  kn[me]       normal stiffness > 0 (finite), force per unit of g.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL (s, or Je, Jn, kt, mu, n0 or kn with me > 0);
+ *  FRICREG_ESIZE if ndof is not the structure's; FRICREG_EINVAL if 2 me > 2^26, a row of J_e
+ *  (either axis) or of J_n is zero, a kt <= 0, mu < 0 or kn <= 0, or the call comes from the
+ *  observer; FRICREG_ENONFINITE (an entry of Je, Jn, kt, mu, n0 or kn); FRICREG_ENOMEM. On
+ *  failure the elements in force are unchanged. */
+FRICREG_API int fricreg_structure_set_jenkins_2d_normal(fricreg_structure *s, size_t me,
+                                                        size_t ndof, const double Je[],
+                                                        const double Jn[], const double kt[],
+                                                        const double mu[], const double n0[],
+                                                        const double kn[]);
+
 /** Copy the normal forces N[me] (force units, max(0, n0 + kn g), 0 while separated) of the
- *  elements of fricreg_structure_set_jenkins_normal at the current time (0 before the first
- *  step); their tangential forces, sliders and dissipation are
- *  fricreg_structure_get_jenkins_state's. Since 1.6 (FRICREG_1.6).
+ *  elements of fricreg_structure_set_jenkins_normal (or _2d_normal) at the current time (0
+ *  before the first step); their tangential forces, sliders and dissipation are
+ *  fricreg_structure_get_jenkins_state's (_2d_state's). Since 1.6 (FRICREG_1.6).
  *  Returns FRICREG_OK; FRICREG_ENULL if s or N is NULL; FRICREG_ESIZE if me is not the number
  *  of elements set; FRICREG_EINVAL if they have no normal law. */
 FRICREG_API int fricreg_structure_get_normal_forces(const fricreg_structure *s, size_t me,

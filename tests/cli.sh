@@ -356,7 +356,7 @@ expect_output '"x": \[-0\.00113279590437[89][0-9]*, 0\].*"njenkins": 1, "dissipa
 mtx J2odd.mtx general "3 2 3" "1 1 1" "2 2 1" "3 1 1"
 expect_usage_error "^fricreg-sim: --jenkins-2d $d/J2odd.mtx: 3 rows: a 2-D element takes two" $jk2 --jenkins-2d $d/J2odd.mtx --jenkins-params $d/P_stuck.txt --integrator newmark
 expect_usage_error "^fricreg-sim: --jenkins-2d: give --jenkins or --jenkins-2d, not both" $jk2 --jenkins $d/J12.mtx --jenkins-2d $d/J2d.mtx --jenkins-params $d/P_stuck.txt --integrator newmark
-expect_usage_error "^fricreg-sim: --jenkins-2d: 2-D elements take --jenkins-params only" $jk2 --jenkins-2d $d/J2d.mtx --iwan-params $d/I_slip.txt --integrator newmark
+expect_usage_error "^fricreg-sim: --jenkins-2d: 2-D elements take --jenkins-params or --normal" $jk2 --jenkins-2d $d/J2d.mtx --iwan-params $d/I_slip.txt --integrator newmark
 expect_usage_error "^fricreg-sim: --jenkins-params: missing (--jenkins-2d goes with" $jk2 --jenkins-2d $d/J2d.mtx --integrator newmark
 expect_usage_error "^fricreg-sim: --jenkins-2d: Jenkins elements are integrated by newmark" $jk2 --jenkins-2d $d/J2d.mtx --jenkins-params $d/P_stuck.txt --integrator rk4
 expect_usage_error "^fricreg-sim: --iwan-sliders: only with --iwan-segalman" $jk --iwan-params $d/I_slip.txt --iwan-sliders 3 --integrator newmark
@@ -381,6 +381,21 @@ echo "200.0 1e27 1000" >"$d/Q_short.txt"
 expect_usage_error "^fricreg-sim: --normal-params $d/Q_short.txt: line 1: expected 4" $lo --normal-params $d/Q_short.txt
 expect_usage_error "^fricreg-sim: --normal-params: missing" $lo
 expect_usage_error "^fricreg-sim: --normal $d/J2e.mtx: the matrix is 2 x 1" ${lo%% --jenkins *} --jenkins $d/Jt2.mtx --normal $d/J2e.mtx --normal-params $d/Q_stuck.txt --integrator newmark --dt 0.01 --t-end 1
+# 3-D contact elements (--jenkins-2d with --normal and --normal-params: tangential x, y and
+# normal n): the lift-off case above (both its dofs shaken by the ground) with a dof at rest
+# (m 1.0, k 100, outside the ground's influence) under the element's y row: dof 1 and dof 3 are the closed forms above,
+# y stays 0, f = [kt x, 0] and N = 944.323934604756.
+mtx M3n.mtx symmetric "3 3 3" "1 1 2.385" "2 2 1.0" "3 3 1.3"
+mtx K3n.mtx symmetric "3 3 3" "1 1 217.3" "2 2 100.0" "3 3 80"
+mtx Jc3.mtx general "1 3 1" "1 1 1"
+mtx R3.mtx general "3 1 2" "1 1 1" "3 1 1"
+mtx J2d3.mtx general "2 3 2" "1 1 1" "2 2 1"
+mtx Jn3.mtx general "1 3 1" "1 3 1"
+c3="structure --mass $d/M3n.mtx --stiffness $d/K3n.mtx --contacts $d/Jc3.mtx --mun $d/mun0.txt --ground-accel $d/ag_osc.txt --influence $d/R3.mtx --jenkins-2d $d/J2d3.mtx --normal $d/Jn3.mtx --dt 0.01 --t-end 1.37 --integrator newmark"
+expect_output '"x": \[-0\.00113279590437[89][0-9]*, 0, -1\.391901634881(0[5-9]|1[0-7])[0-9]*\].*"element_kind": "contact-3d", "jenkins_forces": \[\[-0\.226559180875(79|80)[0-9]*, 0\]\], "normal_forces": \[944\.3239346047(5[4-9]|6[0-5])[0-9]*\]' $c3 --normal-params $d/Q_stuck.txt
+expect_usage_error "^fricreg-sim: --normal-params $d/Q_kn0.txt: .*kn > 0" $c3 --normal-params $d/Q_kn0.txt
+expect_usage_error "^fricreg-sim: --normal-params: missing" $c3
+expect_usage_error "^fricreg-sim: --jenkins-2d: 2-D elements take --jenkins-params or --normal" $c3 --iwan-params $d/I_slip.txt
 
 # Two storeys (m 1.7, 2.3 kg; k 311, 187 N/m), a damper on each drift, a shaken ground:
 # symmetric storage (lower triangle) and the full general matrix are the same model, and

@@ -723,6 +723,12 @@ static int w_st_set_jenkins_normal(void)
                                                 A(2, ST_JN, 2), A(3, ST_KT, 1), A(4, ST_MUN, 1),
                                                 A(5, ST_N0, 1), A(6, ST_KN, 1));
 }
+static int w_st_set_jenkins_2d_normal(void)
+{
+    return fricreg_structure_set_jenkins_2d_normal(ST(), C(0, 1), Z(0, 2), A(1, ST_JE2, 4),
+                                                   A(2, ST_JN, 2), A(3, ST_KT, 1), A(4, ST_MUN, 1),
+                                                   A(5, ST_N0, 1), A(6, ST_KN, 1));
+}
 static int w_st_get_normal_forces(void)
 {
     return fricreg_structure_get_normal_forces(ST(), Z(0, 0), OUTD(1));
@@ -1804,6 +1810,18 @@ static const struct row rows[] = {
       PTR(5, "0"), PTR(6, "0")}},
     {"fricreg_structure_set_jenkins_normal (array entries)",
      w_st_set_jenkins_normal,
+     "0snim",
+     ST_REC,
+     {ARR(1, "nnoioo"), ARR(2, "nnoooo"), ARR(3, "nniioo"), ARR(4, "nniooo"), ARR(5, "nnoooo"),
+      ARR(6, "nniioo")}},
+    {"fricreg_structure_set_jenkins_2d_normal",
+     w_st_set_jenkins_2d_normal,
+     "0snim",
+     ST_REC,
+     {HANDLE, COUNT(0, "ooii"), SIZE(0, "ssss"), PTR(1, "0"), PTR(2, "0"), PTR(3, "0"), PTR(4, "0"),
+      PTR(5, "0"), PTR(6, "0")}},
+    {"fricreg_structure_set_jenkins_2d_normal (array entries)",
+     w_st_set_jenkins_2d_normal,
      "0snim",
      ST_REC,
      {ARR(1, "nnoioo"), ARR(2, "nnoooo"), ARR(3, "nniioo"), ARR(4, "nniooo"), ARR(5, "nnoooo"),

@@ -11,7 +11,10 @@
 !     copies of its row: the same run to rounding;
 !   - a stuck, closed lift-off element (set_jenkins_normal, get_normal_forces): N = n0 + kn u;
 !   - a stuck 2-D element on two uncoupled masses is the spring kt on each axis: the closed form
-!     above on both.
+!     above on both;
+!   - a stuck, closed 3-D contact element (set_jenkins_2d_normal) on three uncoupled masses,
+!     kt = kn = 200 N/m: the same closed form on x, y, and on z with the load P + n0 (the preload
+!     n0 pushes back), N = n0 + kn u_z.
 program test_structure_jenkins
   use fricreg
   use ftest
@@ -20,7 +23,13 @@ program test_structure_jenkins
   real(c_double) :: u(1), f(1), w(1), D(1), D2(2), residual, input, jenkins
   real(c_double) :: u2(1), w2(2, 1), fj(2), wj(2), Dj(2)
   real(c_double), parameter :: Je(1, 1) = reshape([1.0_c_double], [1, 1])
-  type(fricreg_structure) :: st2
+  type(fricreg_structure) :: st2, st3
+  real(c_double) :: u3(3), f3(2, 1), N3(1)
+  real(c_double), parameter :: Jt3(2, 3) = reshape([1.0_c_double, 0.0_c_double, 0.0_c_double, &
+                                                    1.0_c_double, 0.0_c_double, 0.0_c_double], &
+                                                   [2, 3])
+  real(c_double), parameter :: Jn3(1, 3) = reshape([0.0_c_double, 0.0_c_double, 1.0_c_double], &
+                                                   [1, 3])
   real(c_double) :: uv(2), f2(2, 1), w2d(2, 1)
   real(c_double), parameter :: Je2(2, 2) = reshape([1.0_c_double, 0.0_c_double, 0.0_c_double, &
                                                     1.0_c_double], [2, 2])
@@ -144,5 +153,49 @@ program test_structure_jenkins
   call check_status(st%get_jenkins_2d_state(D=D), FRICREG_EINVAL, &
                     'the 2-D getter refuses 1-D elements')
   call st2%destroy()
+
+  ! ---- 3-D contact: three uncoupled masses, one stuck and closed element (x, y, n) ---------
+  call check_status(st3%create(3, 1), FRICREG_OK, 'create 3, 1')
+  call check_status(st3%set_mass(2.385_c_double * eye3()), FRICREG_OK, 'set_mass 3')
+  call check_status(st3%set_stiffness(217.3_c_double * eye3()), FRICREG_OK, 'set_stiffness 3')
+  call check_status(st3%set_contacts(reshape([1.0_c_double, 0.0_c_double, 0.0_c_double], &
+                                             [1, 3])), FRICREG_OK, 'set_contacts 3')
+  call check_status(st3%set_bounds([0.0_c_double]), FRICREG_OK, 'set_bounds 3')
+  call check_status(st3%set_load([-0.731_c_double * 2.385_c_double, &
+                                  -0.731_c_double * 2.385_c_double, &
+                                  -0.731_c_double * 2.385_c_double + 5.0_c_double]), &
+                    FRICREG_OK, 'set_load 3')
+  call check_status(st3%set_jenkins_2d_normal(Jt3, Jn3, [200.0_c_double], [1e20_c_double], &
+                                              [5.0_c_double], [200.0_c_double]), FRICREG_OK, &
+                    'set_jenkins_2d_normal stuck')
+  call check_status(st3%run(0.01_c_double, 1.37_c_double), FRICREG_OK, 'run 3-D stuck')
+  call check_status(st3%get_state(u=u3), FRICREG_OK, 'get_state 3-D')
+  call check_close(u3(1), -0.00113279590437900_c_double, 2e-15_c_double, '3-D: u_x closed form')
+  call check_close(u3(2), -0.00113279590437900_c_double, 2e-15_c_double, '3-D: u_y closed form')
+  call check_close(u3(3), -0.00113279590437900_c_double, 2e-14_c_double, '3-D: u_z closed form')
+  call check_status(st3%get_jenkins_2d_state(f=f3), FRICREG_OK, 'get_jenkins_2d_state 3-D')
+  call check_close(f3(1, 1), 200.0_c_double * u3(1), 1e-15_c_double, '3-D: f_x = kt u_x')
+  call check_status(st3%get_normal_forces(N3), FRICREG_OK, 'get_normal_forces 3-D')
+  call check_close(N3(1), 5.0_c_double + 200.0_c_double * u3(3), 1e-14_c_double, &
+                   '3-D: N = n0 + kn u_z')
+  call check_status(st3%set_jenkins_2d_normal(Jn3, Jn3, [200.0_c_double], [0.3_c_double], &
+                                              [5.0_c_double], [200.0_c_double]), FRICREG_ESIZE, &
+                    'Je of 1 row')
+  call check(index(st3%errmsg(), 'Je, 1') > 0, 'the message names Je')
+  call check_status(st3%set_jenkins_2d_normal(Jt3, Jn3, [200.0_c_double], [0.3_c_double], &
+                                              [5.0_c_double], [0.0_c_double]), FRICREG_EINVAL, &
+                    'kn = 0')
+  call st3%destroy()
   call finish('test_structure_jenkins')
+
+contains
+
+  pure function eye3() result(a)
+    real(c_double) :: a(3, 3)
+    integer :: i
+    a = 0.0_c_double
+    do i = 1, 3
+      a(i, i) = 1.0_c_double
+    end do
+  end function eye3
 end program test_structure_jenkins

@@ -43,13 +43,17 @@ int cli_check_elements(const struct cli_element_files *e, int required)
         return cli_usage_error("--iwan-resolution", "must be < 1 (a fraction of phi_max)");
     if (e->rows_2d != NULL && e->rows != NULL)
         return cli_usage_error("--jenkins-2d", "give --jenkins or --jenkins-2d, not both");
-    if (e->rows_2d != NULL &&
-        (e->iwan != NULL || e->segalman != NULL || e->normal != NULL || e->normal_params != NULL))
-        return cli_usage_error("--jenkins-2d", "2-D elements take --jenkins-params only (no Iwan "
-                                               "or lift-off 2-D elements)");
-    if (e->rows_2d != NULL && e->jenkins == NULL)
+    if (e->rows_2d != NULL && (e->iwan != NULL || e->segalman != NULL))
+        return cli_usage_error("--jenkins-2d", "2-D elements take --jenkins-params or --normal "
+                                               "with --normal-params (no Iwan 2-D elements)");
+    if (e->rows_2d != NULL && e->jenkins == NULL && e->normal == NULL && e->normal_params == NULL)
         return cli_usage_error("--jenkins-params", "missing (--jenkins-2d goes with "
-                                                   "--jenkins-params)");
+                                                   "--jenkins-params, or --normal with "
+                                                   "--normal-params)");
+    if (e->rows_2d != NULL && e->jenkins == NULL &&
+        (e->normal == NULL) != (e->normal_params == NULL))
+        return cli_usage_error(e->normal == NULL ? "--normal" : "--normal-params",
+                               "missing (--normal and --normal-params go together)");
     if (e->rows_2d != NULL)
         return 0;
     if (e->rows == NULL && (required || given > 0 || e->normal != NULL))
@@ -69,7 +73,7 @@ int cli_check_elements(const struct cli_element_files *e, int required)
 
 const char *cli_element_kind_name(const struct cli_elements *el)
 {
-    static const char *const names[] = {"jenkins", "iwan", "lift-off", "jenkins-2d"};
+    static const char *const names[] = {"jenkins", "iwan", "lift-off", "jenkins-2d", "contact-3d"};
     return names[el->kind];
 }
 
@@ -273,7 +277,8 @@ static int read_normal(const struct cli_element_files *e, size_t n, struct cli_e
     return status;
 }
 
-/* --jenkins-2d and --jenkins-params: 2m rows (two per element) and m lines kt mun. */
+/* --jenkins-2d and --jenkins-params: 2m rows (two per element) and m lines kt mun; or, with
+ * --normal and --normal-params, the 3-D contact elements: m normal rows, m lines kt mu n0 kn. */
 static int read_planar(const struct cli_element_files *e, size_t n, struct cli_elements *el)
 {
     size_t rows = 0, cols = 0;
@@ -285,6 +290,12 @@ static int read_planar(const struct cli_element_files *e, size_t n, struct cli_e
                               "%zu rows: a 2-D element takes two (x, y), an even count", rows);
     el->m = rows / 2;
     el->ns = 1;
+    if (e->normal != NULL) {
+        el->kind = CLI_ELEMENTS_CONTACT_3D;
+        el->option = "--normal-params";
+        el->path = e->normal_params;
+        return read_normal(e, n, el);
+    }
     el->kind = CLI_ELEMENTS_JENKINS_2D;
     el->option = "--jenkins-params";
     el->path = e->jenkins;

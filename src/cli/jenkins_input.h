@@ -2,7 +2,8 @@
 /* jenkins_input.h — the joint elements of `fricreg-sim hb` (hb.c) and `fricreg-sim structure`
  * (structure_model.c), from their files: --jenkins J.mtx (Matrix Market, m x n: element i's
  * q_i = (J x)_i), or for the structure --jenkins-2d J.mtx (2m x n: 2-D element i on rows 2i,
- * 2i + 1, with --jenkins-params only), and one parameter file, a line per element:
+ * 2i + 1, with --jenkins-params, or with --normal and --normal-params: the 3-D contact
+ * element, tangential x, y and normal n), and one parameter file, a line per element:
  *   --jenkins-params P.txt   kt mun                       (Jenkins elements)
  *   --iwan-params P.txt      k_1 phi_1 ... k_ns phi_ns    (Iwan elements, ns sliders each)
  *   --iwan-segalman S.txt    F_S K_T chi beta             (Iwan elements, Segalman's model
@@ -36,7 +37,7 @@ struct cli_element_files {
              "parameter file below"},                                                         \
     {"--jenkins-2d", CLI_FILE, .slot = &(e)->rows_2d, .meta = "J2.mtx", .hidden = (no_2d),    \
      .help = "2-D Jenkins elements instead: element i on rows 2i-1 (x) and 2i (y), with "     \
-             "--jenkins-params (isotropic)"},                                                 \
+             "--jenkins-params (isotropic), or --normal (3-D contact)"},                     \
     {"--jenkins-params", CLI_FILE, .slot = &(e)->jenkins, .meta = "P.txt",                    \
      .help = "Jenkins elements: a line kt mun per element (stiffness, slip force)"},          \
     {"--iwan-params", CLI_FILE, .slot = &(e)->iwan, .meta = "P.txt",                          \
@@ -61,7 +62,8 @@ struct cli_element_files {
 void cli_element_defaults(struct cli_element_files *e);
 
 /* Options that need or exclude others: --jenkins (or --jenkins-2d, not both) with exactly one
- * parameter file (required: both must be given), --jenkins-2d with --jenkins-params only,
+ * parameter file (required: both must be given), --jenkins-2d with --jenkins-params or with
+ * --normal and --normal-params,
  * --normal with --normal-params, --iwan-sliders and --iwan-resolution with --iwan-segalman
  * only. 0, or CLI_EXIT_USAGE after one line naming the option. */
 int cli_check_elements(const struct cli_element_files *e, int required);
@@ -70,7 +72,8 @@ enum cli_element_kind {
     CLI_ELEMENTS_JENKINS,
     CLI_ELEMENTS_IWAN,
     CLI_ELEMENTS_NORMAL,
-    CLI_ELEMENTS_JENKINS_2D
+    CLI_ELEMENTS_JENKINS_2D,
+    CLI_ELEMENTS_CONTACT_3D /* --jenkins-2d with --normal: 2-D elements with lift-off */
 };
 
 /* The elements as read: m elements on the rows of J (m x n, dense row-major; 2-D elements: 2m
@@ -91,7 +94,7 @@ struct cli_elements {
 int cli_read_elements(const struct cli_element_files *e, size_t n, struct cli_elements *el);
 void cli_free_elements(struct cli_elements *el);
 
-/* "jenkins", "iwan", "lift-off" or "jenkins-2d", the summaries' element_kind. */
+/* "jenkins", "iwan", "lift-off", "jenkins-2d" or "contact-3d", the summaries' element_kind. */
 const char *cli_element_kind_name(const struct cli_elements *el);
 
 /* Two columns per row, one row per entity (rows of them: dofs or elements, named by what in

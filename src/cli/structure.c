@@ -410,7 +410,8 @@ static void write_summary(FILE *out, const struct structure_options *o,
                 svalue(s, FRICREG_SVALUE_JENKINS), cli_element_kind_name(el));
         if (el->kind == CLI_ELEMENTS_IWAN)
             fprintf(out, ", \"sliders_per_element\": %zu", el->ns);
-        if (el->kind == CLI_ELEMENTS_JENKINS_2D) { /* element i's [f_x, f_y], as J_e's rows */
+        int planar = el->kind == CLI_ELEMENTS_JENKINS_2D || el->kind == CLI_ELEMENTS_CONTACT_3D;
+        if (planar) { /* element i's [f_x, f_y], as J_e's rows */
             fricreg_structure_get_jenkins_2d_state(s, el->m, run->De, NULL, NULL);
             fputs(", \"jenkins_forces\": [", out);
             for (size_t i = 0; i < el->m; i++) {
@@ -422,7 +423,7 @@ static void write_summary(FILE *out, const struct structure_options *o,
             }
             fputs("]", out);
         }
-        if (el->kind == CLI_ELEMENTS_NORMAL) {
+        if (el->kind == CLI_ELEMENTS_NORMAL || el->kind == CLI_ELEMENTS_CONTACT_3D) {
             fricreg_structure_get_normal_forces(s, el->m, run->De);
             cli_json_array(out, "normal_forces", el->m, run->De);
         }
@@ -575,6 +576,8 @@ const struct cli_command cli_structure_command = {
     "A linear structure M u'' + C u' + K u = -M r a_g(t) + J^T f with friction contacts "
     "(fricreg_structure.h), and optionally Jenkins, Iwan or lift-off elements (ELEMENTS: "
     "--jenkins J.mtx with --jenkins-params, --iwan-params or --iwan-segalman, or --normal "
-    "with --normal-params), run with Newmark, HHT-alpha, central differences or a GSL stepper; "
+    "with --normal-params; --jenkins-2d J2.mtx with --jenkins-params, or with --normal and "
+    "--normal-params for 3-D contact elements), run with Newmark, HHT-alpha, central differences "
+    "or a GSL stepper; "
     "a JSON summary with the energy balance, or a CSV row per step (docs/structural.md).",
     structure_help_table};

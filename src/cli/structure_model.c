@@ -240,6 +240,9 @@ static int set_elements(fricreg_structure *s, const struct structure_input *in)
     if (el->kind == CLI_ELEMENTS_NORMAL)
         status = fricreg_structure_set_jenkins_normal(s, el->m, in->n, el->J, el->Jn, el->k, el->mu,
                                                       el->n0, el->kn);
+    else if (el->kind == CLI_ELEMENTS_CONTACT_3D)
+        status = fricreg_structure_set_jenkins_2d_normal(s, el->m, in->n, el->J, el->Jn, el->k,
+                                                         el->mu, el->n0, el->kn);
     else if (el->kind == CLI_ELEMENTS_JENKINS_2D)
         status = fricreg_structure_set_jenkins_2d(s, el->m, in->n, el->J, el->k, el->phi);
     else if (el->kind == CLI_ELEMENTS_IWAN)

@@ -23,6 +23,12 @@
  * column: the other coordinate of the element). An element moving on one axis has a zero
  * off-diagonal there and is the 1-D element.
  *
+ * 3-D contact elements (set_jenkins_2d_normal) are 2-D elements with the normal law: the 2 me
+ * tangential coordinates, then the me normal ones (nc = 3 me, J = J_e over J_n), the bound
+ * mu max(0, n0 + kn g) and lift-off as in 1-D; a tangential row k has, beside its 2x2 block,
+ * dfe/dg = mu kn n (slipping) in tagn[k] at column fr_elements_normal_column, the normal row
+ * kn (closed) on its diagonal.
+ *
  * Newmark / HHT-alpha: with the contacts' forces zero (every bound 0; beside contacts of bound
  * > 0 the step is joint_step.c's, one Newton over both forces), the step's equation K_eff x = b - w J_e^T fe1 (w = 1 + alpha) condenses onto the
  * elements: u1 = u_pred + beta dt^2 x gives
@@ -58,7 +64,7 @@ void fr_elements_free(fricreg_structure *s)
     double *arrays[] = {e->k,           e->phi,  e->n0, e->kn,  e->kstick,  e->wc,      e->wt,
                         e->fs,          e->fs1,  e->fe, e->fe1, e->wc_held, e->fs_held, e->fe_held,
                         e->dissipation, e->q0,   e->y,  e->g,   e->df,      e->ft,      e->gt,
-                        e->tan,         e->tang, e->E,  e->A,   e->tau,     e->norm};
+                        e->tan,         e->tang, e->E,  e->A,   e->tau,     e->norm,    e->tagn};
     for (size_t k = 0; k < sizeof arrays / sizeof *arrays; k++)
         free(arrays[k]);
     free(e->perm);
@@ -76,7 +82,7 @@ static int allocate(struct fr_elements *e, int normal_law)
                           &e->fs, &e->fs1, &e->wc_held, &e->fs_held};
     double **coordinates[] = {&e->kstick, &e->fe, &e->fe1, &e->fe_held, &e->q0,  &e->y,   &e->g,
                               &e->df,     &e->ft, &e->gt,  &e->tan,     &e->tau, &e->norm};
-    double **normal[] = {&e->n0, &e->kn, &e->tang};
+    double **normal[] = {&e->n0, &e->kn};
     for (size_t k = 0; k < sizeof sliders / sizeof *sliders; k++)
         if ((*sliders[k] = calloc(me * ns, sizeof(double))) == NULL)
             return 0;
@@ -86,7 +92,10 @@ static int allocate(struct fr_elements *e, int normal_law)
     for (size_t k = 0; k < sizeof normal / sizeof *normal && normal_law; k++)
         if ((*normal[k] = calloc(me, sizeof(double))) == NULL)
             return 0;
-    if (e->dim == 2 && (e->tang = calloc(nc, sizeof(double))) == NULL)
+    if ((e->dim == 2 || normal_law) &&
+        (e->tang = calloc(e->dim == 2 ? nc : me, sizeof(double))) == NULL)
+        return 0;
+    if (e->dim == 2 && normal_law && (e->tagn = calloc(nc, sizeof(double))) == NULL)
         return 0;
     e->dissipation = calloc(me, sizeof(double));
     e->E = calloc(nc * nc, sizeof(double));
@@ -105,6 +114,10 @@ static int check_rows(fricreg_structure *s, const cholmod_sparse *Jt, size_t me,
         int moves = 0;
         for (SuiteSparse_long k = p[i]; k < p[i + 1]; k++)
             moves |= x[k] != 0.0;
+        if (!moves && dim == 2 && i >= 2 * me)
+            return fr_fail(s, FRICREG_EINVAL,
+                           "%s: row %zu of J_n is zero: element %zu does not move normally", who,
+                           i - 2 * me, i - 2 * me);
         if (!moves && dim == 2)
             return fr_fail(s, FRICREG_EINVAL,
                            "%s: row %zu of J_e is zero: element %zu does not move along its "
@@ -155,7 +168,7 @@ static int install(fricreg_structure *s, size_t me, size_t ns, int dim, cholmod_
     e.me = me;
     e.ns = ns;
     e.dim = dim;
-    e.nc = n0 != NULL || dim == 2 ? 2 * me : me;
+    e.nc = (size_t)dim * me + (n0 != NULL ? me : 0);
     e.Jt = cholmod_l_transpose(J, 1, &s->cc);
     cholmod_l_free_sparse(&J, &s->cc);
     int status = e.Jt == NULL || !allocate(&e, n0 != NULL)
@@ -177,7 +190,7 @@ static int install(fricreg_structure *s, size_t me, size_t ns, int dim, cholmod_
     if (n0 != NULL) {
         memcpy(e.n0, n0, me * sizeof *n0);
         memcpy(e.kn, kn, me * sizeof *kn);
-        memcpy(e.kstick + me, kn, me * sizeof *kn);
+        memcpy(e.kstick + (size_t)dim * me, kn, me * sizeof *kn);
     }
     fr_elements_free(s);
     s->el = e;
@@ -261,14 +274,15 @@ static int set_dense(fricreg_structure *s, size_t me, int dim, size_t ndof, cons
         status = fr_dense_to_cholmod((size_t)dim * me, ndof, Je, 0, &s->cc, &J, &s->err, who);
         return status != FRICREG_OK ? status : install(s, me, ns, dim, J, k, phi, NULL, NULL, who);
     }
-    double *stacked = malloc(2 * me * ndof * sizeof *stacked); /* J_e over J_n */
+    size_t nt = (size_t)dim * me; /* J_e's rows, then J_n's */
+    double *stacked = malloc((nt + me) * ndof * sizeof *stacked);
     if (stacked == NULL)
         return fr_fail(s, FRICREG_ENOMEM, "%s: no memory for %zu elements", who, me);
-    memcpy(stacked, Je, me * ndof * sizeof *stacked);
-    memcpy(stacked + me * ndof, Jn, me * ndof * sizeof *stacked);
-    status = fr_dense_to_cholmod(2 * me, ndof, stacked, 0, &s->cc, &J, &s->err, who);
+    memcpy(stacked, Je, nt * ndof * sizeof *stacked);
+    memcpy(stacked + nt * ndof, Jn, me * ndof * sizeof *stacked);
+    status = fr_dense_to_cholmod(nt + me, ndof, stacked, 0, &s->cc, &J, &s->err, who);
     free(stacked);
-    return status != FRICREG_OK ? status : install(s, me, ns, 1, J, k, phi, n0, kn, who);
+    return status != FRICREG_OK ? status : install(s, me, ns, dim, J, k, phi, n0, kn, who);
 }
 
 /* The compressed setters' body, as set_dense. */
@@ -356,6 +370,14 @@ int fricreg_structure_set_jenkins_normal(fricreg_structure *s, size_t me, size_t
     return set_dense(s, me, 1, ndof, Je, Jn, KIND_NORMAL, 1, kt, mu, n0, kn, "set_jenkins_normal");
 }
 
+int fricreg_structure_set_jenkins_2d_normal(fricreg_structure *s, size_t me, size_t ndof,
+                                            const double Je[], const double Jn[], const double kt[],
+                                            const double mu[], const double n0[], const double kn[])
+{
+    return set_dense(s, me, 2, ndof, Je, Jn, KIND_NORMAL, 1, kt, mu, n0, kn,
+                     "set_jenkins_2d_normal");
+}
+
 int fricreg_structure_get_normal_forces(const fricreg_structure *s, size_t me, double N[])
 {
     if (s == NULL || N == NULL)
@@ -366,7 +388,7 @@ int fricreg_structure_get_normal_forces(const fricreg_structure *s, size_t me, d
         return FRICREG_OK;
     if (s->el.n0 == NULL)
         return FRICREG_EINVAL;
-    memcpy(N, s->el.fe + me, me * sizeof *N);
+    memcpy(N, s->el.fe + (size_t)s->el.dim * me, me * sizeof *N);
     return FRICREG_OK;
 }
 
@@ -470,15 +492,24 @@ static double element(const struct fr_elements *e, size_t i, double q, double gn
     return F;
 }
 
-/* 2-D element i at q[2]: its force into fs1[2i..] and x[2] (x may be NULL), the trial slider
- * into wt, and, with t (NULL: none), the 2x2 block's diagonal into t[0..1] and off-diagonal
- * into t[2..3] (the rows' tan and tang). */
-static void element_2d(const struct fr_elements *e, size_t i, const double q[2], double x[2],
-                       double *tan, double *tang)
+/* 2-D element i at q[2] (and, with a normal law, at the normal displacement gn): its force
+ * into fs1[2i..] and x[2] (x may be NULL), the trial slider into wt (following q where
+ * separated), and, with tan (NULL: none), the 2x2 block's diagonal into tan[0..1], its
+ * off-diagonal into tang[0..1] and, with a normal law, dfe/dg into tagn[0..1]. */
+static void element_2d(const struct fr_elements *e, size_t i, const double q[2], double gn,
+                       double x[2], double *tan, double *tang, double *tagn)
 {
-    double t[4];
-    fr_slider_return(e->k[i], e->phi[i], 0.0, 2, q, &e->wc[2 * i], &e->fs1[2 * i], &e->wt[2 * i],
-                     tan != NULL ? t : NULL, NULL);
+    double t[4], b = e->phi[i], dbdg = 0.0, N = 1.0;
+    if (e->n0 != NULL) { /* the 3-D contact: bound mu max(0, n0 + kn g), phi holding mu */
+        N = e->n0[i] + e->kn[i] * gn;
+        b = e->phi[i] * fmax(0.0, N);
+        dbdg = e->phi[i] * e->kn[i];
+    }
+    if (N < 0.0)
+        fr_slider_separated(2, q, &e->fs1[2 * i], &e->wt[2 * i], tan != NULL ? t : NULL, tagn);
+    else
+        fr_slider_return(e->k[i], b, dbdg, 2, q, &e->wc[2 * i], &e->fs1[2 * i], &e->wt[2 * i],
+                         tan != NULL ? t : NULL, tagn);
     if (x != NULL) {
         x[0] = e->fs1[2 * i];
         x[1] = e->fs1[2 * i + 1];
@@ -495,16 +526,13 @@ static void element_2d(const struct fr_elements *e, size_t i, const double q[2],
  * element's): the elements', then the normal forces max(0, n0 + kn g). */
 static void map(const struct fr_elements *e, const double y[], double x[])
 {
-    size_t me = e->me;
-    if (e->dim == 2) {
-        for (size_t i = 0; i < me; i++)
-            element_2d(e, i, y + 2 * i, x + 2 * i, NULL, NULL);
-        return;
-    }
-    for (size_t i = 0; i < me; i++)
+    size_t me = e->me, nt = (size_t)e->dim * me;
+    for (size_t i = 0; i < me && e->dim == 2; i++)
+        element_2d(e, i, y + 2 * i, e->n0 != NULL ? y[nt + i] : 0.0, x + 2 * i, NULL, NULL, NULL);
+    for (size_t i = 0; i < me && e->dim == 1; i++)
         x[i] = element(e, i, y[i], e->n0 != NULL ? y[me + i] : 0.0, NULL, NULL);
-    for (size_t i = 0; i < e->nc - me; i++)
-        x[me + i] = fmax(0.0, e->n0[i] + e->kn[i] * y[me + i]);
+    for (size_t i = 0; i < e->nc - nt; i++)
+        x[nt + i] = fmax(0.0, e->n0[i] + e->kn[i] * y[nt + i]);
 }
 
 void fr_elements_equilibrium(fricreg_structure *s, gsl_vector *w)
@@ -564,11 +592,12 @@ int fr_elements_compliance(fricreg_structure *s, int joint)
 
 double fr_elements_residual(struct fr_elements *e, const double f[], double g[], double *rinf)
 {
-    size_t me = e->me, nc = e->nc;
+    size_t me = e->me, nc = e->nc, nt = (size_t)e->dim * me;
     double sum = 0.0, big = 0.0;
     for (size_t i = 0; i < me && e->dim == 2; i++) {
-        double x[2];
-        element_2d(e, i, e->y + 2 * i, x, &e->tan[2 * i], &e->tang[2 * i]);
+        double x[2], gn = e->n0 != NULL ? e->y[nt + i] : 0.0;
+        element_2d(e, i, e->y + 2 * i, gn, x, &e->tan[2 * i], &e->tang[2 * i],
+                   e->tagn != NULL ? &e->tagn[2 * i] : NULL);
         g[2 * i] = f[2 * i] - x[0];
         g[2 * i + 1] = f[2 * i + 1] - x[1];
     }
@@ -577,9 +606,9 @@ double fr_elements_residual(struct fr_elements *e, const double f[], double g[],
         g[i] = f[i] - element(e, i, e->y[i], gn, &e->tan[i], e->n0 != NULL ? &e->tang[i] : NULL);
     }
     for (size_t i = 0; i < (e->n0 != NULL ? me : 0); i++) {
-        double N = e->n0[i] + e->kn[i] * e->y[me + i];
-        e->tan[me + i] = N > 0.0 ? e->kn[i] : 0.0;
-        g[me + i] = f[me + i] - fmax(0.0, N);
+        double N = e->n0[i] + e->kn[i] * e->y[nt + i];
+        e->tan[nt + i] = N > 0.0 ? e->kn[i] : 0.0;
+        g[nt + i] = f[nt + i] - fmax(0.0, N);
     }
     for (size_t i = 0; i < nc; i++) {
         sum += g[i] * g[i];
@@ -610,12 +639,15 @@ static int direction(struct fr_elements *e, double c)
 {
     size_t nc = e->nc;
     for (size_t i = 0; i < nc; i++) {
-        size_t p = fr_elements_partner(e, i);
+        size_t p = fr_elements_partner(e, i), pn = fr_elements_normal_column(e, i);
         for (size_t j = 0; j < nc; j++)
             e->A[i * nc + j] = c * e->tan[i] * e->E[i * nc + j];
         if (p < nc)
             for (size_t j = 0; j < nc; j++)
                 e->A[i * nc + j] += c * e->tang[i] * e->E[p * nc + j];
+        if (pn < nc)
+            for (size_t j = 0; j < nc; j++)
+                e->A[i * nc + j] += c * e->tagn[i] * e->E[pn * nc + j];
         e->A[i * nc + i] += 1.0;
         e->df[i] = -e->g[i];
     }
@@ -696,7 +728,7 @@ void fr_elements_commit(fricreg_structure *s)
     if (e->me == 0)
         return; /* no arrays: memcpy may not take NULL */
     e->crossed = 0;
-    for (size_t i = e->me; i < e->nc && e->n0 != NULL; i++)
+    for (size_t i = e->me * (size_t)e->dim; i < e->nc && e->n0 != NULL; i++)
         e->crossed |= (e->fe[i] > 0.0) != (e->fe1[i] > 0.0);
     memcpy(e->fe, e->fe1, e->nc * sizeof *e->fe);
     size_t slots = e->me * e->ns * (size_t)e->dim;
@@ -731,7 +763,8 @@ double fr_elements_strain(const fricreg_structure *s)
     double energy = 0.0;
     for (size_t j = 0; j < e->me * e->ns * (size_t)e->dim; j++) /* 2-D: |f|^2/(2 kt) */
         energy += 0.5 * e->fs[j] * (e->fs[j] / e->k[j / (size_t)e->dim]);
+    size_t nt = e->me * (size_t)e->dim;
     for (size_t i = 0; i < (e->n0 != NULL ? e->me : 0); i++) /* the normal springs: N^2/(2 kn) */
-        energy += 0.5 * e->fe[e->me + i] * (e->fe[e->me + i] / e->kn[i]);
+        energy += 0.5 * e->fe[nt + i] * (e->fe[nt + i] / e->kn[i]);
     return energy;
 }

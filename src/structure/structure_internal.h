@@ -49,9 +49,12 @@ struct fr_energy {
  * force N = max(0, n0 + kn g) and the bound phi_s N (phi holding mu): the element
  * coordinates are then (q, g), nc = 2 me of them, and the forces (fe, N), -J_n^T N acting on
  * the structure too; without, nc = me.
- * 2-D elements (dim = 2, ns = 1, no normal law) have two coordinates each, rows 2i and 2i + 1
- * of J_e, nc = 2 me: per-slider arrays are then [me ns dim], the tangent a 2x2 block per
- * element, its diagonal in tan and its off-diagonal in tang ([nc]). */
+ * 2-D elements (dim = 2, ns = 1) have two coordinates each, rows 2i and 2i + 1 of J_e,
+ * nt = 2 me tangential coordinates (nt = me in 1-D): per-slider arrays are then [me ns dim], the
+ * tangent a 2x2 block per element, its diagonal in tan and its off-diagonal in tang ([nc]).
+ * With a normal law too (the 3-D contact element: x, y, n) the coordinates are the 2 me
+ * tangential ones, then the me normal ones (nc = 3 me), and a tangential row k also has
+ * dfe/dg in tagn[k] at column fr_elements_normal_column. */
 /* The joint step's dense storage (joint_step.c), for elements beside contacts of bound > 0:
  * m contacts, nc element coordinates, dim = m + nc; row-major. */
 struct fr_joint {
@@ -72,7 +75,7 @@ struct fr_joint {
 
 struct fr_elements {
     size_t me, ns, nc;
-    int dim;                   /* 1, or 2: each element on two rows of J_e */
+    int dim;                   /* 1, or 2: each element on two rows of J_e (nt = dim me) */
     cholmod_sparse *Jt;        /* n x nc: J_e^T, then J_n^T */
     double *k, *phi;           /* [me ns] */
     double *n0, *kn;           /* [me] the normal law, or NULL */
@@ -85,6 +88,7 @@ struct fr_elements {
     double *dissipation;       /* [me] since set_initial */
     double *q0, *y, *g, *df, *ft, *gt, *tan; /* [nc] Newton's scratch */
     double *tang; /* [me] dfe/dg (normal law), [nc] the 2x2 blocks' off-diagonal (dim 2), or NULL */
+    double *tagn; /* [nc] dfe/dg of 2-D elements with a normal law (rows < 2 me), or NULL */
     double *tau, *norm; /* [nc] the Newton matrix's QR (GSL's, pivoted) */
     double *E, *A; /* [nc nc] J K_eff^-1 J^T for step_dt (J = J_e, or J_e over J_n), Newton's */
     size_t *perm;  /* [nc] its QR's permutation */
@@ -326,8 +330,14 @@ double fr_elements_residual(struct fr_elements *e, const double fe[], double g[]
 static inline size_t fr_elements_partner(const struct fr_elements *e, size_t k)
 {
     if (e->dim == 2)
-        return k ^ 1;
+        return k < 2 * e->me ? k ^ 1 : e->nc;
     return k < e->me && e->n0 != NULL ? e->me + k : e->nc;
+}
+/* The column of coordinate k's dfe/dg entry (tagn[k]) in a 2-D element with a normal law: its
+ * element's normal coordinate; nc if it has none (1-D elements keep theirs in tang). */
+static inline size_t fr_elements_normal_column(const struct fr_elements *e, size_t k)
+{
+    return e->tagn != NULL && k < 2 * e->me ? 2 * e->me + k / 2 : e->nc;
 }
 void fr_elements_equilibrium(fricreg_structure *s, gsl_vector *w);
 void fr_elements_explicit(fricreg_structure *s, const gsl_vector *u1, gsl_vector *w);

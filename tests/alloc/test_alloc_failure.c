@@ -1736,6 +1736,57 @@ static const struct script structure_normal_script = {"structure with lift-off e
                                                       structure_errcode,
                                                       structure_close};
 
+/* The same frame with one 3-D contact element (a 2-D element on J's two rows with the normal
+ * row (0, 0, 1)): set_jenkins_2d_normal, then again with other parameters. */
+static void see_structure_contact_3d(const fricreg_structure *s, struct view *v)
+{
+    double N[1] = {-1};
+    see_structure_jenkins_2d(s, v);
+    see(v, fricreg_structure_get_normal_forces(s, 1, N));
+    see_all(v, N, 1);
+}
+
+static void structure_contact_3d_observe(void *obj, struct view *v)
+{
+    double t = 0.0;
+    see_structure_contact_3d(obj, v);
+    fricreg_structure_get_value(obj, FRICREG_SVALUE_TIME, &t);
+    see(v, fricreg_structure_run(obj, ST_DT, t + 0.1));
+    see_structure_contact_3d(obj, v);
+}
+
+static const char *const structure_contact_3d_calls[] = {"set_mass",     "set_stiffness",
+                                                         "set_contacts", "set_bounds (0)",
+                                                         "set_load(1)",  "set_jenkins_2d_normal",
+                                                         "the scheme",   "set_jenkins_2d_normal",
+                                                         "run"};
+
+static int structure_contact_3d_call(void *obj, int i, struct view *v)
+{
+    switch (i) {
+    case 5:
+        return fricreg_structure_set_jenkins_2d_normal(obj, 1, 3, FRAME_J, FRAME_JN + 3, FRAME_KT,
+                                                       FRAME_MU, FRAME_N0, FRAME_KN);
+    case 7:
+        return fricreg_structure_set_jenkins_2d_normal(obj, 1, 3, FRAME_J, FRAME_JN + 3,
+                                                       FRAME_KT + 1, FRAME_MU + 1, FRAME_N0 + 1,
+                                                       FRAME_KN + 1);
+    default: return structure_jenkins_call(obj, i, v);
+    }
+}
+
+static const struct script structure_contact_3d_script = {"structure with 3-D contact elements",
+                                                          9,
+                                                          structure_contact_3d_calls,
+                                                          1u << 5,
+                                                          0,
+                                                          structure_open,
+                                                          structure_contact_3d_call,
+                                                          NULL,
+                                                          structure_contact_3d_observe,
+                                                          structure_errcode,
+                                                          structure_close};
+
 /* A model for the tests of steps that make no allocation. */
 static int structure_model(fricreg_structure *s)
 {
@@ -2857,6 +2908,19 @@ START_TEST(test_structure_normal_run)
 }
 END_TEST
 
+START_TEST(test_structure_contact_3d_run)
+{
+    static const char *const names[3] = {"structure newmark, 3-D contact elements",
+                                         "structure hht, 3-D contact elements",
+                                         "structure central difference, 3-D contact elements"};
+    current_scheme = _i;
+    struct script sc = structure_contact_3d_script;
+    sc.name = names[_i];
+    struct tally t = fail_each_allocation(&sc);
+    ck_assert_int_ge(t.enomem, t.cases - 30); /* CHOLMOD's own fallbacks, as above */
+}
+END_TEST
+
 /* fricreg_structure.h: steps never allocate once the first step after the model's setters
  * has handed W to the contacts, for every scheme (GSL 2.7's gsl_linalg_LU_decomp allocated in
  * each Newton iteration until 1.3). */
@@ -2999,6 +3063,7 @@ static Suite *alloc_suite(void)
     tcase_add_loop_test(drivers, test_structure_iwan_run, 0, 3);
     tcase_add_loop_test(drivers, test_structure_jenkins_2d_run, 0, 5);
     tcase_add_loop_test(drivers, test_structure_normal_run, 0, 3);
+    tcase_add_loop_test(drivers, test_structure_contact_3d_run, 0, 3);
     suite_add_tcase(s, drivers);
     TCase *hb = tcase_create("harmonic_balance"); /* alone: CK_RUN_CASE=harmonic_balance */
     tcase_add_loop_test(hb, test_hb_solve_continue, 0, (int)(sizeof hb_cases / sizeof hb_cases[0]));
