@@ -202,9 +202,12 @@ static int reference(double eps0, int print, struct reference *ref)
             ref->peak_unc[j - M_C] = u + unc_dt[j];
         }
     }
-    if (print)
+    if (print) {
         for (int j = 0; j < M_C; j++)
-            printf("reference D%d %.9g +- %.2g\n", j + 1, ref->D[j], ref->D_unc[j]);
+            printf("reference D%d %.12g +- %.2g\n", j + 1, ref->D[j], ref->D_unc[j]);
+        for (int i = 0; i < NDOF; i++)
+            printf("reference peak%d %.12g +- %.2g\n", i + 1, ref->peak[i], ref->peak_unc[i]);
+    }
     return 0;
 }
 
