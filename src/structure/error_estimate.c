@@ -14,7 +14,9 @@
  * is SAFETY d1 2^p / (2^p - 1). Below the range (a stall: q and q2 agree on a wrong value; or
  * differences that grow or change sign) no order can be trusted: the estimate is the bound
  * OUT_FACTOR (|d1| + |d2|), what a geometric tail of the slowest accepted order would add to
- * the two differences seen, with FRICREG_WARN_NOT_ASYMPTOTIC. Above it (d2 much smaller than
+ * the two differences seen, with FRICREG_WARN_NOT_ASYMPTOTIC for a dissipation (a sampled
+ * peak converges with the phase of its samples, not at an order: it gets the bound without
+ * the warning). Above the range (d2 much smaller than
  * d1: a sampled peak's phase, or q2 and q4 at Newton's tolerance) the same bound, without the
  * warning: it is then about OUT_FACTOR |d1|, and a stall between the two companions is out
  * of any three-level estimator's sight. Differences both below NOISE of the quantity are
@@ -225,9 +227,12 @@ static const fricreg_structure *second(const fricreg_structure *s)
     return c->companion != NULL ? c->companion : c;
 }
 
-static double peak_estimate(const fricreg_structure *s, size_t i, int *outside)
+/* A sampled peak converges with the phase of its samples against the maximum, not at an
+ * order in eps: out of range it gets the safe bound, without the warning. */
+static double peak_estimate(const fricreg_structure *s, size_t i)
 {
-    return estimate_of(s, s->peak[i], s->companion->peak[i], second(s)->peak[i], outside);
+    int ignored = 0;
+    return estimate_of(s, s->peak[i], s->companion->peak[i], second(s)->peak[i], &ignored);
 }
 
 static double dissipation_estimate(const fricreg_structure *s, size_t j, int *outside)
@@ -236,39 +241,32 @@ static double dissipation_estimate(const fricreg_structure *s, size_t j, int *ou
                        second(s)->energy.per_contact[j], outside);
 }
 
-/* FRICREG_WARN_NOT_ASYMPTOTIC naming the quantity with the largest estimate relative
- * to itself among those outside the range. */
+/* FRICREG_WARN_NOT_ASYMPTOTIC naming the contact whose dissipation has the largest estimate
+ * relative to itself among those outside the range. */
 static void warn_not_asymptotic(fricreg_structure *s)
 {
-    const char *what = NULL;
-    size_t which = 0;
-    double worst = -1.0, q[3] = {0}, err = 0.0;
-    for (size_t k = 0; k < s->n + s->m; k++) {
+    const fricreg_structure *c = s->companion, *cc = second(s);
+    size_t worst = s->m;
+    double worst_rel = -1.0, worst_err = 0.0;
+    for (size_t j = 0; j < s->m; j++) {
         int outside = 0;
-        int is_peak = k < s->n;
-        size_t i = is_peak ? k : k - s->n;
-        double e = is_peak ? peak_estimate(s, i, &outside) : dissipation_estimate(s, i, &outside);
-        const fricreg_structure *c = s->companion, *cc = second(s);
-        double v[3] = {is_peak ? s->peak[i] : s->energy.per_contact[i],
-                       is_peak ? c->peak[i] : c->energy.per_contact[i],
-                       is_peak ? cc->peak[i] : cc->energy.per_contact[i]};
-        double rel = e / fmax(fabs(v[0]), DBL_MIN);
-        if (outside && rel > worst) {
-            worst = rel;
-            what = is_peak ? "the peak displacement of dof" : "the dissipation of contact";
-            which = i;
-            err = e;
-            memcpy(q, v, sizeof q);
+        double e = dissipation_estimate(s, j, &outside);
+        double rel = e / fmax(fabs(s->energy.per_contact[j]), DBL_MIN);
+        if (outside && rel > worst_rel) {
+            worst = j;
+            worst_rel = rel;
+            worst_err = e;
         }
     }
-    if (what == NULL)
+    if (worst == s->m)
         return;
+    double q = s->energy.per_contact[worst], q2 = c->energy.per_contact[worst],
+           q4 = cc->energy.per_contact[worst];
     fr_warn(&s->warnings, FRICREG_WARN_NOT_ASYMPTOTIC,
-            "the error estimate is outside its asymptotic range: %s %zu is %.8g, %.8g, %.8g at "
-            "eps, eps/2, eps/4 (differences %.3g, %.3g: no order in eps between %g and %g), so "
-            "the run and its companion may agree on a wrong value; its estimate is the safe "
-            "bound %.3g; halve eps and dt for a sharper one",
-            what, which, q[0], q[1], q[2], q[0] - q[1], q[1] - q[2], P_LO - BAND, P_HI + BAND, err);
+            "error estimate not asymptotic: contact %zu's dissipation %.7g, %.7g, %.7g at eps, "
+            "eps/2, eps/4 shows no order in eps (the run and its companion may agree on a wrong "
+            "value); its estimate is the safe bound %.3g: halve eps and dt",
+            worst, q, q2, q4, worst_err);
 }
 
 void fr_estimate_check(fricreg_structure *s)
@@ -284,7 +282,7 @@ void fr_estimate_check(fricreg_structure *s)
     int outside = 0;
     for (size_t i = 0; i < s->n; i++) {
         peak = fmax(peak, s->peak[i]);
-        peak_err = fmax(peak_err, peak_estimate(s, i, &outside));
+        peak_err = fmax(peak_err, peak_estimate(s, i));
     }
     for (size_t j = 0; j < s->m; j++) {
         D += fabs(s->energy.per_contact[j]);
@@ -344,8 +342,7 @@ int fricreg_structure_get_peak_displacement_error(const fricreg_structure *s, si
     if (status != FRICREG_OK)
         return status;
     for (size_t i = 0; i < ndof; i++)
-        err[i] = s->estimate_state == FR_ESTIMATE_FAILED ? INFINITY
-                                                         : peak_estimate(s, i, &(int){0});
+        err[i] = s->estimate_state == FR_ESTIMATE_FAILED ? INFINITY : peak_estimate(s, i);
     return FRICREG_OK;
 }
 
