@@ -193,7 +193,7 @@ struct fricreg_structure {
     /* The error estimate (error_estimate.c): a companion structure at eps / 2 stepped alongside
      * at half the step (or tolerances / 16), made at the run's first step; with two companions
      * (estimate_on = FRICREG_ESTIMATE_TWO_COMPANIONS) the companion has its own, at eps / 4. */
-    int estimate_on; /* enum fricreg_error_estimate */
+    int estimate_on;    /* enum fricreg_error_estimate */
     int estimate_state; /* FR_ESTIMATE_* */
     fricreg_structure *companion;
     char estimate_msg[256]; /* why the estimate failed (FR_ESTIMATE_FAILED) */
