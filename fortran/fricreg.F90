@@ -3245,11 +3245,14 @@ contains
   end function struct_get_dissipation
 
   !> Estimate the error of the peak displacements and of each contact's dissipation against
-  !> eps -> 0 (1) or not (0, the default), from a companion structure at eps/2 stepped alongside
-  !> at half the step, or an adaptive run's tolerances/16; err = 3 |q - q_companion|
+  !> eps -> 0 or not (0, the default): on = FRICREG_ESTIMATE_TWO_COMPANIONS (1) from companion
+  !> structures at eps/2 and eps/4 stepped alongside at half and a quarter of the step (or an
+  !> adaptive run's tolerances/16 and /256), the observed order's Richardson estimate or, out of
+  !> the asymptotic range, a safe bound with FRICREG_WARN_NOT_ASYMPTOTIC;
+  !> FRICREG_ESTIMATE_ONE_COMPANION (2), 1.6's err = 3 |q - q_companion|
   !> (fricreg_structure_set_error_estimate: made at the first step after set_initial, fed the
   !> setters of bounds, law, records, Newton and max_steps; another setter ends it).
-  !> FRICREG_EINVAL if on is not 0 or 1. Since 1.6.
+  !> FRICREG_EINVAL if on is not 0, 1 or 2. Since 1.6; two companions since 1.7.
   function struct_set_error_estimate(self, on) result(status)
     class(fricreg_structure), intent(inout) :: self
     integer(c_int), intent(in) :: on

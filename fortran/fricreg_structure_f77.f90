@@ -58,7 +58,7 @@
 !   FRSTS2(H, ME, F, W, D, STAT)                 _get_jenkins_2d_state (F(2, ME), W(2, ME))
 !   FRSTIS(H, ME, NS, F, W, D, STAT)             _get_iwan_state (W(NS, ME))
 !   FRSTNF(H, ME, N, STAT)                       _get_normal_forces
-!   FRSTEE(H, ON, STAT)                          _set_error_estimate (ON 1 or 0)
+!   FRSTEE(H, ON, STAT)                          _set_error_estimate (ON 1, 2 or 0)
 !   FRSTPK(H, NDOF, PEAK, STAT)                  _get_peak_displacement
 !   FRSTPE(H, NDOF, ERR, STAT)                   _get_peak_displacement_error
 !   FRSTDE(H, M, ERR, STAT)                      _get_dissipation_error
@@ -474,12 +474,14 @@ subroutine frstgv(h, which, value, stat)
   stat = int(fricreg_structure_get_value(fricreg_handle_to_ptr(h), int(which, c_int), value))
 end subroutine frstgv
 
-!> FRSTEE(H, ON, STAT): estimate (ON = 1) or not (ON = 0, the default; 0 also discards the
-!> estimate made) the error of the peak displacements and of each contact's dissipation
-!> against eps -> 0, from a companion structure at eps/2 stepped alongside at half the step
-!> (or an adaptive run's tolerances/16): err = 3 |q - q_companion|, read by FRSTPE and FRSTDE
-!> (C's fricreg_structure_set_error_estimate: the companion is made at the first step after
-!> FRSTU0 or creation). FRICREG_EINVAL if ON is neither 0 nor 1.
+!> FRSTEE(H, ON, STAT): estimate (ON = 1 or 2) or not (ON = 0, the default; 0 also discards
+!> the estimate made) the error of the peak displacements and of each contact's dissipation
+!> against eps -> 0, read by FRSTPE and FRSTDE: ON = 1 (FRICREG_ESTIMATE_TWO_COMPANIONS) from
+!> companions at eps/2 and eps/4 stepped alongside at half and a quarter of the step (or an
+!> adaptive run's tolerances/16 and /256), the observed order's estimate or a safe bound;
+!> ON = 2 (FRICREG_ESTIMATE_ONE_COMPANION) 1.6's err = 3 |q - q_companion| (C's
+!> fricreg_structure_set_error_estimate: the companions are made at the first step after
+!> FRSTU0 or creation). FRICREG_EINVAL if ON is not 0, 1 or 2.
 subroutine frstee(h, on, stat)
   use fricreg_c
   use fricreg_sim_c

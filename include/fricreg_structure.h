@@ -862,30 +862,49 @@ FRICREG_API int fricreg_structure_get_value(const fricreg_structure *s, int whic
 
 /* ---- Error estimate (since 1.6) ---------------------------------------------------------- */
 
-/** Whether the structure estimates the error of its peak displacements
+/** The estimators of fricreg_structure_set_error_estimate (its argument on). Values are fixed
+ *  forever. Since 1.7. */
+enum fricreg_error_estimate {
+    FRICREG_ESTIMATE_OFF = 0, /**< no estimate (the default) */
+    /** two companions, at eps / 2 and eps / 4, the observed order and a range test; 1 was one
+     *  companion until 1.6 */
+    FRICREG_ESTIMATE_TWO_COMPANIONS = 1,
+    FRICREG_ESTIMATE_ONE_COMPANION = 2 /**< 1.6's: one companion at eps / 2, 3 |q - q2| */
+};
+
+/** Whether and how the structure estimates the error of its peak displacements
  *  (fricreg_structure_get_peak_displacement) and of each contact's dissipation
  *  (fricreg_structure_get_dissipation) against the Coulomb problem, eps -> 0, where a run's
  *  results carry both the regularization error of the law and the discretization (or
  *  tolerance) error. Off by default (fricreg-sim structure turns it on). Since 1.6
- *  (FRICREG_1.6).
+ *  (FRICREG_1.6); two companions and on = 2 since 1.7.
  *
- *  The estimator is fricreg_sim_set_error_estimate's, with its calibration (docs/integrators.md,
- *  "Error estimate"): a companion run at eps / 2 and half the step, err = 3 |q - q_companion|
- *  (law (4)'s error is c eps^p, p = 1 or 2, and along dt / eps fixed a fixed step's error
- *  follows eps, so q(eps) - q(0) = (q(eps) - q(eps/2)) 2^p / (2^p - 1), at most twice the
- *  difference; 3 keeps the calibration's margin). Here the companion is a second structure,
- *  owned by s, stepped alongside it:
+ *  The estimator (docs/structural.md, "Error estimate"): companion runs along the path
+ *  (eps, dt) -> (eps / 2, dt / 2) -> (eps / 4, dt / 4) give q2 and q4 beside the run's q. Law
+ *  (4)'s error is c eps^p, p = 1 or 2, and along dt / eps fixed a fixed step's error follows
+ *  eps, so in the asymptotic range d1 = q - q2 and d2 = q2 - q4 have one sign and
+ *  d1 / d2 = 2^p. With on = FRICREG_ESTIMATE_TWO_COMPANIONS (1): where the observed order
+ *  p = log2(d1 / d2) is in [0.5, 2.5], err = 2 |d1| 2^p / (2^p - 1) (Richardson's correction
+ *  with the observed order, times 2); elsewhere (a stall: the run and the first companion
+ *  agree on a wrong value; or differences that grow or change sign) err = 6.83 (|d1| + |d2|)
+ *  and fricreg_structure_warning_count raises FRICREG_WARN_NOT_ASYMPTOTIC; d1 and d2
+ *  both below 1e-9 of q give |d1| + |d2|. With on = FRICREG_ESTIMATE_ONE_COMPANION (2), 1.6's
+ *  estimator: err = 3 |d1| (fricreg_sim_set_error_estimate's, with its calibration), which
+ *  cannot see a stall (bench/frame_estimate.c: a frame 5x under, no warning).
+ *  The companion is a second structure, owned by s, stepped alongside it; the second
+ *  companion is the first's own, made and stepped by it the same way:
  *  - it is made at the first stepping call (fricreg_structure_step, _run or _run_ode) after
  *    fricreg_structure_set_initial (or creation) with the estimate on, as a copy of everything
  *    set then (model, Rayleigh damping, influence, load and ground records, law with eps / 2,
  *    bounds, scheme, Newton's settings, the bound on adaptive steps, the elements (Jenkins,
- *    Iwan, 2-D, lift-off), the initial state); turned on later in a run, the estimate starts at the next set_initial;
+ *    Iwan, 2-D, lift-off), the initial state); turned on (or changed between 1 and 2) later
+ *    in a run, the estimate starts at the next set_initial;
  *  - at the end of every stepping call on s (successful, failed after some steps, or stopped by
  *    the observer) it is stepped from its time to s's: fricreg_structure_step(s, dt) and
  *    fricreg_structure_run(s, dt, t_end) by fricreg_structure_run(companion, dt / 2, t) (two
  *    steps per step of s, the last shortened as run's), fricreg_structure_run_ode with fixed
  *    steps by the same stepper at dt / 2, adaptive by the same stepper with dt as its first step
- *    and rtol / 16, atol / 16;
+ *    and rtol / 16, atol / 16 (the second companion: dt / 4, or the tolerances / 256);
  *  - the setters a run may call between steps are passed on to it: set_bounds, set_law (eps / 2
  *    of the new eps), set_ground_accel and set_load (a caller who feeds the record step by step
  *    feeds the companion too: it reads its records at its own step ends, in between), set_newton,
@@ -899,18 +918,20 @@ FRICREG_API int fricreg_structure_get_value(const fricreg_structure *s, int whic
  *  peaks' estimate includes the sampling error; an adaptive companion samples at the same
  *  times, so it does not (sample finer than the error sought: the test's oscillator sampled
  *  every 0.01 s misses its peak by 6.4e-7 with an estimate of 0).
- *  Where the companion fails (e.g. FRICREG_ESTEP or FRICREG_EWORK at its finer setting, or no
+ *  Where a companion fails (e.g. FRICREG_ESTEP or FRICREG_EWORK at its finer setting, or no
  *  memory) s's run still succeeds, the estimates become +infinity until the next set_initial, and
  *  fricreg_structure_warning_count raises FRICREG_WARN_ERROR_ESTIMATE with the companion's
  *  message; it raises it too where an estimate is above 10% of its quantity.
- *  Cost: the companion's run, about 2x s's for fixed steps (twice the steps, one more K_eff
- *  factor), 1.4x ... 3x for adaptive ones (fricreg_sim_set_error_estimate); one more structure in
- *  memory, allocated at the run's first step (a failed allocation is a failed estimate, not a
- *  failed step). So with the estimate on, a run costs about 3x.
+ *  Cost: each companion's run, about 2x and 4x s's for fixed steps (twice and four times the
+ *  steps), 1.4x ... 3x each for adaptive ones (fricreg_sim_set_error_estimate); one or two more
+ *  structures in memory, allocated at the run's first step (a failed allocation is a failed
+ *  estimate, not a failed step). So with two companions a run costs about 7x (the frame of
+ *  bench/frame_estimate.c, Newmark: 6.5x), with one about 3x.
  *
  *  s   in/out: the structure.
- *  on  in: 1 to estimate, 0 not to (default; 0 also discards the estimate made).
- *  Returns FRICREG_OK; FRICREG_ENULL if s is NULL; FRICREG_EINVAL if on is neither 0 nor 1, or
+ *  on  in: enum fricreg_error_estimate: 1 (two companions) or 2 (one) to estimate, 0 not to
+ *      (default; 0 also discards the estimate made).
+ *  Returns FRICREG_OK; FRICREG_ENULL if s is NULL; FRICREG_EINVAL if on is not 0, 1 or 2, or
  *  if called from the observer during a run. */
 FRICREG_API int fricreg_structure_set_error_estimate(fricreg_structure *s, int on);
 
@@ -925,8 +946,8 @@ FRICREG_API int fricreg_structure_get_peak_displacement(const fricreg_structure 
                                                         double peak[]);
 
 /** Copy the error estimate of each peak displacement (fricreg_structure_get_peak_displacement)
- *  into err[ndof]: err_i = 3 |peak_i - peak_i(companion)| (length units, >= 0; +infinity where
- *  the companion failed), fricreg_structure_set_error_estimate's estimator, at the current
+ *  into err[ndof] (length units, >= 0; +infinity where a companion failed),
+ *  fricreg_structure_set_error_estimate's estimator (the one chosen there), at the current
  *  time. Since 1.6 (FRICREG_1.6).
  *  s     in: the structure; not modified.
  *  ndof  in: the structure's degrees of freedom.
@@ -939,8 +960,8 @@ FRICREG_API int fricreg_structure_get_peak_displacement_error(const fricreg_stru
                                                               size_t ndof, double err[]);
 
 /** Copy the error estimate of each contact's dissipation (fricreg_structure_get_dissipation)
- *  into err[m]: err_j = 3 |D_j - D_j(companion)| (energy units, >= 0; +infinity where the
- *  companion failed), as fricreg_structure_get_peak_displacement_error. Since 1.6
+ *  into err[m] (energy units, >= 0; +infinity where a companion failed), as
+ *  fricreg_structure_get_peak_displacement_error. Since 1.6
  *  (FRICREG_1.6).
  *  Returns FRICREG_OK; FRICREG_ENULL if s or err is NULL; FRICREG_EINVAL when there is no
  *  estimate (as fricreg_structure_get_peak_displacement_error); FRICREG_ESIZE if m is not the

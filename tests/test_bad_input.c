@@ -2782,7 +2782,7 @@ START_TEST(non_status_functions)
     ck_assert_uint_eq(fricreg_sim_warning_count(NULL), 0);
     ck_assert_str_eq(fricreg_sim_warning_message(NULL, 0), "");
     ck_assert_str_eq(fricreg_warning_name(-1), "unknown");
-    ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_RECORD_SHORT + 1), "unknown");
+    ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_NOT_ASYMPTOTIC + 1), "unknown");
     ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_EPS_LARGE), "eps_large");
 
     /* errmsg_copy: buf NULL or len 0 gives 0 and writes nothing; a short buffer is truncated

@@ -120,17 +120,33 @@ START_TEST(test_gsl_bounds)
 }
 END_TEST
 
-/* The companion is a structure at eps / 2 stepped at dt / 2: the estimates are 3 |q - q_c|
- * bit for bit, for Newmark (run), step by step (step), and HHT. */
-static void check_companion(int by_steps, int hht)
+/* The documented estimate from q, q2 = q(eps / 2, dt / 2), q4 = q(eps / 4, dt / 4)
+ * (fricreg_structure_set_error_estimate): 2 |d1| r / (r - 1) for r = d1 / d2 in
+ * [2^0.5, 2^2.5], else 6.83 (|d1| + |d2|); *in_band whether r was in the band. */
+static double two_companions(double q, double q2, double q4, int *in_band)
+{
+    double d1 = q - q2, d2 = q2 - q4, r = d1 / d2;
+    *in_band = r >= sqrt(2.0) && r <= pow(2.0, 2.5);
+    return *in_band ? 2.0 * fabs(d1) * r / (r - 1.0)
+                    : 2.0 * 3.414213562373095 * (fabs(d1) + fabs(d2));
+}
+
+/* The companions are structures at eps / 2 stepped at dt / 2 and at eps / 4 stepped at
+ * dt / 4: the estimates are the documented ones bit for bit (two companions; and 3 |q - q2|
+ * with one), for Newmark (run), step by step (step), and HHT. */
+static void check_companion(int by_steps, int hht, int one)
 {
     const double eps = 1e-2, dt = 2e-2;
-    fricreg_structure *s = oscillator(eps), *c = oscillator(0.5 * eps);
+    fricreg_structure *s = oscillator(eps), *c = oscillator(0.5 * eps),
+                      *cc = oscillator(0.25 * eps);
     if (hht) {
         ck_assert_int_eq(fricreg_structure_set_hht(s, -0.1), FRICREG_OK);
         ck_assert_int_eq(fricreg_structure_set_hht(c, -0.1), FRICREG_OK);
+        ck_assert_int_eq(fricreg_structure_set_hht(cc, -0.1), FRICREG_OK);
     }
-    ck_assert_int_eq(fricreg_structure_set_error_estimate(s, 1), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_error_estimate(s, one ? FRICREG_ESTIMATE_ONE_COMPANION
+                                                                 : FRICREG_ESTIMATE_TWO_COMPANIONS),
+                     FRICREG_OK);
     if (by_steps) {
         for (int k = 0; k < 300; k++)
             ck_assert_int_eq(fricreg_structure_step(s, dt), FRICREG_OK);
@@ -139,36 +155,50 @@ static void check_companion(int by_steps, int hht)
     }
     double t = 0.0;
     ck_assert_int_eq(fricreg_structure_get_value(s, FRICREG_SVALUE_TIME, &t), FRICREG_OK);
-    /* by steps: each step's two half steps, as run(c, dt / 2, t + dt) takes them */
+    /* by steps: each step's two half steps, as run(c, dt / 2, t + dt) takes them, and each of
+     * those calls' four quarter steps, as c's own companion takes them */
     if (by_steps) {
         double tc = 0.0;
         for (int k = 0; k < 300; k++) {
             double t1 = tc + dt;
             ck_assert_int_eq(fricreg_structure_run(c, 0.5 * dt, t1), FRICREG_OK);
+            ck_assert_int_eq(fricreg_structure_run(cc, 0.25 * dt, t1), FRICREG_OK);
             tc = t1;
         }
     } else {
         ck_assert_int_eq(fricreg_structure_run(c, 0.5 * dt, t), FRICREG_OK);
+        ck_assert_int_eq(fricreg_structure_run(cc, 0.25 * dt, t), FRICREG_OK);
     }
-    double D, Dc, p, pc, D_err, p_err;
+    double D, Dc, Dcc, p, pc, pcc, D_err, p_err;
     ck_assert_int_eq(fricreg_structure_get_dissipation(s, 1, &D), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_get_dissipation(c, 1, &Dc), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_dissipation(cc, 1, &Dcc), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_get_peak_displacement(s, 1, &p), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_get_peak_displacement(c, 1, &pc), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_peak_displacement(cc, 1, &pcc), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_get_dissipation_error(s, 1, &D_err), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_get_peak_displacement_error(s, 1, &p_err), FRICREG_OK);
     ck_assert(D_err > 0.0 && p_err > 0.0);
-    ck_assert_double_eq(D_err, 3.0 * fabs(D - Dc));
-    ck_assert_double_eq(p_err, 3.0 * fabs(p - pc));
+    if (one) {
+        ck_assert_double_eq(D_err, 3.0 * fabs(D - Dc));
+        ck_assert_double_eq(p_err, 3.0 * fabs(p - pc));
+    } else {
+        int in_band = 0;
+        ck_assert_double_eq(D_err, two_companions(D, Dc, Dcc, &in_band));
+        ck_assert_double_eq(p_err, two_companions(p, pc, pcc, &in_band));
+    }
+    fricreg_structure_free(cc);
     fricreg_structure_free(c);
     fricreg_structure_free(s);
 }
 
 START_TEST(test_companion)
 {
-    check_companion(0, 0);
-    check_companion(1, 0);
-    check_companion(0, 1);
+    for (int one = 0; one <= 1; one++) {
+        check_companion(0, 0, one);
+        check_companion(1, 0, one);
+        check_companion(0, 1, one);
+    }
 }
 END_TEST
 
@@ -181,7 +211,9 @@ START_TEST(test_life_cycle)
     fricreg_structure *s = oscillator(1e-2);
     ck_assert_int_eq(fricreg_structure_run(s, 1e-2, 1.0), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_get_dissipation_error(s, 1, &err), FRICREG_EINVAL);
-    ck_assert_int_eq(fricreg_structure_set_error_estimate(s, 1), FRICREG_OK);
+    /* one companion: its estimate is checked against a structure at eps / 2 below */
+    ck_assert_int_eq(fricreg_structure_set_error_estimate(s, FRICREG_ESTIMATE_ONE_COMPANION),
+                     FRICREG_OK);
     /* turned on in a run: from the next set_initial */
     ck_assert_int_eq(fricreg_structure_run(s, 1e-2, 2.0), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_get_dissipation_error(s, 1, &err), FRICREG_EINVAL);
@@ -227,7 +259,8 @@ START_TEST(test_bad_arguments)
     double err[2] = {-1.0, -1.0};
     fricreg_structure *s = oscillator(1e-2);
     ck_assert_int_eq(fricreg_structure_set_error_estimate(NULL, 1), FRICREG_ENULL);
-    ck_assert_int_eq(fricreg_structure_set_error_estimate(s, 2), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_structure_set_error_estimate(s, 3), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_structure_set_error_estimate(s, -1), FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_structure_errcode(s), FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_structure_set_error_estimate(s, 1), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_step(s, 1e-2), FRICREG_OK);
@@ -304,14 +337,28 @@ START_TEST(test_warnings)
     ck_assert_ptr_nonnull(strstr(fricreg_structure_warning_message(s, 0), "adaptive steps"));
     fricreg_structure_free(s);
 
-    s = oscillator(3.0);
-    ck_assert_int_eq(fricreg_structure_set_error_estimate(s, 1), FRICREG_OK);
-    ck_assert_int_eq(fricreg_structure_run(s, 1e-2, T_END), FRICREG_OK);
-    ck_assert_uint_eq(fricreg_structure_warning_count(s), 1);
-    ck_assert_int_eq(fricreg_structure_get_warning(s, 0, &code, NULL, 0), FRICREG_OK);
-    ck_assert_int_eq(code, FRICREG_WARN_ERROR_ESTIMATE);
-    ck_assert_ptr_nonnull(strstr(fricreg_structure_warning_message(s, 0), "above 10%"));
-    fricreg_structure_free(s);
+    /* with one companion, the 10% warning alone; with two, also not_asymptotic (eps = 3 is
+     * nowhere near the asymptotic range: D at eps, eps/2, eps/4 does not converge at an
+     * order in eps) */
+    for (int on = FRICREG_ESTIMATE_TWO_COMPANIONS; on <= FRICREG_ESTIMATE_ONE_COMPANION; on++) {
+        s = oscillator(3.0);
+        ck_assert_int_eq(fricreg_structure_set_error_estimate(s, on), FRICREG_OK);
+        ck_assert_int_eq(fricreg_structure_run(s, 1e-2, T_END), FRICREG_OK);
+        size_t n = fricreg_structure_warning_count(s);
+        ck_assert_uint_eq(n, on == FRICREG_ESTIMATE_ONE_COMPANION ? 1 : 2);
+        int found = 0;
+        for (size_t k = 0; k < n; k++) {
+            ck_assert_int_eq(fricreg_structure_get_warning(s, k, &code, NULL, 0), FRICREG_OK);
+            if (code == FRICREG_WARN_ERROR_ESTIMATE) {
+                found = 1;
+                ck_assert_ptr_nonnull(strstr(fricreg_structure_warning_message(s, k), "above 10%"));
+            } else {
+                ck_assert_int_eq(code, FRICREG_WARN_NOT_ASYMPTOTIC);
+            }
+        }
+        ck_assert(found);
+        fricreg_structure_free(s);
+    }
 }
 END_TEST
 

@@ -406,8 +406,9 @@ START_TEST(names)
     ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_STRIBECK_EPS), "stribeck_eps");
     ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_ERROR_ESTIMATE), "error_estimate");
     ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_RECORD_SHORT), "record_short");
-    ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_RECORD_SHORT + 1), "unknown");
-    for (int c = FRICREG_WARN_EPS_LARGE; c <= FRICREG_WARN_RECORD_SHORT; c++)
+    ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_NOT_ASYMPTOTIC), "not_asymptotic");
+    ck_assert_str_eq(fricreg_warning_name(FRICREG_WARN_NOT_ASYMPTOTIC + 1), "unknown");
+    for (int c = FRICREG_WARN_EPS_LARGE; c <= FRICREG_WARN_NOT_ASYMPTOTIC; c++)
         for (int d = FRICREG_WARN_NONE; d < c; d++)
             ck_assert_str_ne(fricreg_warning_name(c), fricreg_warning_name(d));
 }

@@ -196,7 +196,7 @@ program test_structure_type
   call check_status(st%set_hht(-0.07_c_double), FRICREG_OK, 'set_hht')
   call check_status(st%set_newton(tol=1e-11_c_double), FRICREG_OK, 'set_newton, tol only')
   call check_status(st%get_dissipation_error(mun), FRICREG_EINVAL, 'no estimate yet')
-  call check_status(st%set_error_estimate(2_c_int), FRICREG_EINVAL, 'set_error_estimate 2')
+  call check_status(st%set_error_estimate(3_c_int), FRICREG_EINVAL, 'set_error_estimate 3')
   call check_status(st%set_error_estimate(1_c_int), FRICREG_OK, 'set_error_estimate')
   call check_status(st%run(dt, t_end), FRICREG_OK, 'run HHT')
   call compare_with_c(.false.)

@@ -24,6 +24,7 @@ const char *fricreg_warning_name(int code)
         [FRICREG_WARN_STRIBECK_EPS] = "stribeck_eps",
         [FRICREG_WARN_ERROR_ESTIMATE] = "error_estimate",
         [FRICREG_WARN_RECORD_SHORT] = "record_short",
+        [FRICREG_WARN_NOT_ASYMPTOTIC] = "not_asymptotic",
     };
     if (code < 0 || (size_t)code >= sizeof names / sizeof names[0] || names[code] == NULL)
         return "unknown";

@@ -6,7 +6,7 @@
 
 #include <stddef.h>
 
-/* Room for every code of enum fricreg_warning (FRICREG_WARN_RECORD_SHORT = 13) and those to
+/* Room for every code of enum fricreg_warning (FRICREG_WARN_NOT_ASYMPTOTIC = 14) and those to
  * come. */
 #define FR_WARN_MAX 16
 

@@ -19,7 +19,7 @@ struct structure_options {
     int max_steps;      /* --max-steps: GSL's adaptive steps over the whole run (0: no bound; -1:
                     * not given, the library's bound on each sample's call) */
     int output;         /* enum cli_output, as an int: the option table writes ints */
-    int error_estimate; /* --error-estimate on|off: a companion run at eps/2 (summary only) */
+    int error_estimate; /* --error-estimate on|off|one: enum fricreg_error_estimate (summary only) */
 };
 
 /* Parses argv (after the subcommand) into o, the file options as pointers into argv; checks

@@ -89,7 +89,11 @@ static int check_options(const struct structure_options *o)
     return o->scheme == SCHEME_GSL ? cli_check_tolerances(o->integrator, o->rtol, o->atol) : 0;
 }
 
-static const struct cli_word on_off[] = {{"on", 1}, {"off", 0}, {NULL, 0}};
+/* --error-estimate: enum fricreg_error_estimate's values */
+static const struct cli_word estimators[] = {{"on", FRICREG_ESTIMATE_TWO_COMPANIONS},
+                                             {"off", FRICREG_ESTIMATE_OFF},
+                                             {"one", FRICREG_ESTIMATE_ONE_COMPANION},
+                                             {NULL, 0}};
 
 /* --integrator's placeholder: the schemes and the GSL steppers, as the parser takes them. */
 static const char *integrator_meta(void)
@@ -169,8 +173,9 @@ static size_t structure_table(struct structure_options *o, struct cli_option tab
         {"--max-steps", CLI_WHOLE, .slot = &o->max_steps, .lo = 0, .hi = 1e9, .meta = "N",
          .help = "GSL's adaptive steps over the whole run (0: no bound)",
          .dflt = "the library's bound on each sample's call"},
-        {"--error-estimate", CLI_CHOICE, .slot = &o->error_estimate, .words = on_off,
-         .help = "a companion run at eps/2 adds an error estimate to the summary"}};
+        {"--error-estimate", CLI_CHOICE, .slot = &o->error_estimate, .words = estimators,
+         .help = "companion runs at eps/2 and eps/4 add an error estimate to the summary "
+                 "(one: 1.6's single companion at eps/2)"}};
     return cli_copy_rows(table, opts, sizeof opts / sizeof opts[0]);
 }
 
@@ -215,10 +220,11 @@ static int setup(const struct structure_options *o, const struct structure_input
     *eps = o->eps > 0.0 ? o->eps : default_eps(s);
     if (fricreg_structure_set_law(s, o->law, *eps) != FRICREG_OK)
         return cli_usage_error("--eps", fricreg_structure_errmsg(s));
-    /* The library's error estimate (a companion at eps / 2 and dt / 2, or an adaptive run's
-     * tolerances / 16): the summary's only, a trajectory has no place for it. */
+    /* The library's error estimate (companions at eps / 2 and eps / 4 along dt, or an adaptive
+     * run's tolerances; one with --error-estimate one): the summary's only, a trajectory has
+     * no place for it. */
     if (o->error_estimate && o->output == CLI_SUMMARY)
-        fricreg_structure_set_error_estimate(s, 1);
+        fricreg_structure_set_error_estimate(s, o->error_estimate);
     return set_scheme(s, o);
 }
 

@@ -196,8 +196,9 @@ struct fricreg_structure {
      * displacement): every fixed step's end, every run_ode call's end. [n] */
     double *peak;
     /* The error estimate (error_estimate.c): a companion structure at eps / 2 stepped alongside
-     * at half the step (or tolerances / 16), made at the run's first step. */
-    int estimate_on;
+     * at half the step (or tolerances / 16), made at the run's first step; with two companions
+     * (estimate_on = FRICREG_ESTIMATE_TWO_COMPANIONS) the companion has its own, at eps / 4. */
+    int estimate_on;    /* enum fricreg_error_estimate */
     int estimate_state; /* FR_ESTIMATE_* */
     fricreg_structure *companion;
     char estimate_msg[256]; /* why the estimate failed (FR_ESTIMATE_FAILED) */
