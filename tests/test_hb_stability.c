@@ -414,6 +414,62 @@ START_TEST(gap_pair_bifurcations)
 }
 END_TEST
 
+/* Every status of the three functions, nothing written on failure; a singular M fails the
+ * solve with FRICREG_ESINGULAR and leaves q as it was. */
+START_TEST(bad_input)
+{
+    struct model s = contact_pair();
+    fricreg_hb *hb = make(&s);
+    int stable = -7, type = -7;
+    double mu = -7.0, om = -7.0, rms[2] = {-7.0, -7.0}, q[2 * NC];
+    size_t k = 77;
+    ck_assert_int_eq(fricreg_hb_set_stability(NULL, 1), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_hb_set_stability(hb, 2), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_hb_point_stability(NULL, 0, &stable, &mu), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_hb_point_stability(hb, 0, NULL, &mu), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_hb_point_stability(hb, 0, &stable, NULL), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_hb_point_stability(hb, 0, &stable, &mu), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_hb_point_stability(hb, FRICREG_HB_SOLUTION, &stable, &mu),
+                     FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_hb_bifurcations(NULL), 0);
+    ck_assert_int_eq(fricreg_hb_bifurcation(NULL, 0, &type, &om, &k, 2, rms), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_hb_bifurcation(hb, 0, NULL, &om, &k, 2, rms), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_hb_bifurcation(hb, 0, &type, NULL, &k, 2, rms), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_hb_bifurcation(hb, 0, &type, &om, &k, 2, NULL), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_hb_bifurcation(hb, 0, &type, &om, &k, 2, rms), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_hb_continue(hb, 11.5, 11.6, 2 * NC, NULL), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_point_stability(hb, fricreg_hb_points(hb), &stable, &mu),
+                     FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_hb_bifurcations(hb), 0);
+    ck_assert_int_eq(fricreg_hb_bifurcation(hb, 0, &type, &om, &k, 3, rms), FRICREG_EINVAL);
+    ck_assert(stable == -7 && mu == -7.0 && type == -7 && om == -7.0 && k == 77);
+    ck_assert(rms[0] == -7.0 && rms[1] == -7.0);
+    /* a singular mass matrix: the solve fails, q untouched */
+    const double M0[4] = {1.0, 0.0, 0.0, 0.0};
+    ck_assert_int_eq(fricreg_hb_set_mass(hb, 2, M0), FRICREG_OK);
+    for (size_t j = 0; j < 2 * NC; j++)
+        q[j] = -7.0;
+    ck_assert_int_eq(fricreg_hb_solve(hb, 12.0, 2 * NC, NULL, q), FRICREG_ESINGULAR);
+    ck_assert(strstr(fricreg_hb_errmsg(hb), "mass matrix") != NULL);
+    ck_assert(q[0] == -7.0);
+    ck_assert_int_eq(fricreg_hb_set_stability(hb, 0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_point_stability(hb, 0, &stable, &mu), FRICREG_EINVAL);
+    fricreg_hb_free(hb);
+    /* too many coefficients for the dense companion, and a sparse model */
+    ck_assert_int_eq(fricreg_hb_create(40, 1, 15, &hb), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stability(hb, 1), FRICREG_EINVAL);
+    fricreg_hb_free(hb);
+    const int64_t cp[3] = {0, 1, 2}, ri[2] = {0, 1};
+    const double v[2] = {1.0, 1.0};
+    ck_assert_int_eq(fricreg_hb_create(2, 1, 3, &hb), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stability(hb, 1), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_mass_csc(hb, 2, 0, cp, ri, v), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stability(hb, 1), FRICREG_EINVAL);
+    fricreg_hb_free(hb);
+    fricreg_hb_free(NULL);
+}
+END_TEST
+
 Suite *hb_stability_suite(void)
 {
     Suite *s = suite_create("hb_stability");
@@ -423,6 +479,7 @@ Suite *hb_stability_suite(void)
     tcase_add_test(tc, jenkins_pair_against_shooting);
     tcase_add_test(tc, gap_pair_against_shooting);
     tcase_add_test(tc, gap_pair_bifurcations);
+    tcase_add_test(tc, bad_input);
     suite_add_tcase(s, tc);
     return s;
 }
