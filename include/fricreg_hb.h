@@ -480,8 +480,8 @@ FRICREG_API int fricreg_hb_peak(fricreg_hb *hb, size_t dof, double *omega, doubl
  *
  *  Cost per solution: the companion's O((ndof H)²) entries and GSL's QR, about 10 (2 ndof
  *  (2H + 1))³ flops (measured against a continuation point: bench/hb_stability.c, and
- *  docs/joints.md). Dense models only, with ndof (2H + 1) <= FRICREG_HB_MAX_HILL; a later _csc
- *  setter (the model turns sparse) turns it off. M must be nonsingular (checked at each
+ *  docs/joints.md). Dense or sparse models (the companion itself is dense), with ndof (2H + 1)
+ *  <= FRICREG_HB_MAX_HILL. M must be nonsingular (checked at each
  *  solution: FRICREG_ESINGULAR from the solve). Allocates the companion matrix and GSL's
  *  workspace here, 4 (ndof (2H + 1))² + O(ndof (2H + 1)) doubles (freed by enable = 0), and
  *  each stored point then keeps 4 + 4 ndof numbers; the solves allocate nothing more. Enabling
@@ -491,8 +491,8 @@ FRICREG_API int fricreg_hb_peak(fricreg_hb *hb, size_t dof, double *omega, doubl
  *  eigenvalue) through its error handler too; the balanced, finite matrix here has not been
  *  seen to fail, but a host that keeps GSL's default (aborting) handler should know.
  *
- *  Returns FRICREG_OK; FRICREG_ENULL if hb is NULL; FRICREG_EINVAL if enable is not 0 or 1, the
- *  model is sparse, or ndof (2H + 1) > FRICREG_HB_MAX_HILL; FRICREG_ENOMEM (nothing changed). */
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb is NULL; FRICREG_EINVAL if enable is not 0 or 1, or
+ *  ndof (2H + 1) > FRICREG_HB_MAX_HILL; FRICREG_ENOMEM (nothing changed). */
 FRICREG_API int fricreg_hb_set_stability(fricreg_hb *hb, int enable);
 
 /** The stability of a stored continuation point, or of the last solution.

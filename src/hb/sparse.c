@@ -177,8 +177,6 @@ static int install(fricreg_hb *hb, const char *fn, cholmod_sparse *X[3])
         umfpack_zl_defaults(hb->control);
         hb->control[UMFPACK_PRL] = 0; /* nothing printed */
         hb->sparse = 1;
-        fr_hb_hill_free(hb); /* Hill's method is for dense models: off for good */
-        hb->stability = 0;
     }
     hb->factored_omega = NAN;
     hb->have_solution = 0;

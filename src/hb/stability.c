@@ -20,6 +20,7 @@
  * The elements' stabilized hysteresis enters through its HB Jacobian, as in NLvib's Hill's
  * method: the sliders' offsets, forgotten once they slip, are no state of their own here. */
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -66,36 +67,58 @@ void fr_hb_hill_free(fricreg_hb *hb)
     hb->hill_piv = NULL;
 }
 
+/* The dense model's damping entry: C, or a0 M + a1 K. */
 static double damping(const fricreg_hb *hb, size_t idx)
 {
     return hb->rayleigh ? hb->a0 * hb->M[idx] + hb->a1 * hb->K[idx] : hb->C[idx];
 }
 
-/* The linear parts of S and Δ1 of (Q) into the companion's lower blocks (rows N.., columns
- * 0.. and N..): for dofs k, l and harmonic h, with w = hΩ, on (a_h, b_h):
- * S = [K − w² M, w C; −w C, K − w² M], Δ1 = [C, 2 w M; −2 w M, C]; h = 0: S = K, Δ1 = C. */
+/* The linear parts of S and Δ1 of (Q) for dofs k, l (M, C, K entries m, c, kk) into the
+ * companion's lower blocks (rows N.., columns 0.. and N..): for harmonic h, with w = hΩ, on
+ * (a_h, b_h): S = [K − w² M, w C; −w C, K − w² M], Δ1 = [C, 2 w M; −2 w M, C]; h = 0: S = K,
+ * Δ1 = C. */
+static void linear_entry(fricreg_hb *hb, double omega, size_t k, size_t l, double m, double c,
+                         double kk)
+{
+    size_t nc = hb->nc, N = hb->n * nc, r = N + k * nc, col = l * nc;
+    gsl_matrix *A = hb->hill;
+    *gsl_matrix_ptr(A, r, col) += kk;
+    *gsl_matrix_ptr(A, r, N + col) += c;
+    for (int h = 1; h <= hb->H; h++) {
+        size_t a = 2 * (size_t)h - 1, b = a + 1;
+        double w = h * omega, kd = kk - w * w * m;
+        *gsl_matrix_ptr(A, r + a, col + a) += kd;
+        *gsl_matrix_ptr(A, r + a, col + b) += w * c;
+        *gsl_matrix_ptr(A, r + b, col + b) += kd;
+        *gsl_matrix_ptr(A, r + b, col + a) -= w * c;
+        *gsl_matrix_ptr(A, r + a, N + col + a) += c;
+        *gsl_matrix_ptr(A, r + a, N + col + b) += 2.0 * w * m;
+        *gsl_matrix_ptr(A, r + b, N + col + b) += c;
+        *gsl_matrix_ptr(A, r + b, N + col + a) -= 2.0 * w * m;
+    }
+}
+
+/* Every entry of M, C, K (the dense arrays, or the sparse pattern of D_h with both triangles,
+ * sparse.c) through linear_entry, and M itself into hill_mlu [n n]. */
 static void linear_blocks(fricreg_hb *hb, double omega)
 {
-    size_t n = hb->n, nc = hb->nc, N = n * nc;
-    gsl_matrix *A = hb->hill;
-    for (size_t k = 0; k < n; k++)
-        for (size_t l = 0; l < n; l++) {
-            double Mk = hb->M[k * n + l], Kk = hb->K[k * n + l], Ck = damping(hb, k * n + l);
-            size_t r = N + k * nc, c = l * nc;
-            gsl_matrix_set(A, r, c, Kk);
-            gsl_matrix_set(A, r, N + c, Ck);
-            for (int h = 1; h <= hb->H; h++) {
-                size_t a = 2 * (size_t)h - 1, b = a + 1;
-                double w = h * omega, kd = Kk - w * w * Mk;
-                gsl_matrix_set(A, r + a, c + a, kd);
-                gsl_matrix_set(A, r + a, c + b, w * Ck);
-                gsl_matrix_set(A, r + b, c + b, kd);
-                gsl_matrix_set(A, r + b, c + a, -w * Ck);
-                gsl_matrix_set(A, r + a, N + c + a, Ck);
-                gsl_matrix_set(A, r + a, N + c + b, 2.0 * w * Mk);
-                gsl_matrix_set(A, r + b, N + c + b, Ck);
-                gsl_matrix_set(A, r + b, N + c + a, -2.0 * w * Mk);
+    size_t n = hb->n;
+    if (!hb->sparse) {
+        for (size_t k = 0; k < n; k++)
+            for (size_t l = 0; l < n; l++) {
+                size_t i = k * n + l;
+                linear_entry(hb, omega, k, l, hb->M[i], damping(hb, i), hb->K[i]);
+                hb->hill_mlu[i] = hb->M[i];
             }
+        return;
+    }
+    memset(hb->hill_mlu, 0, n * n * sizeof(double));
+    for (size_t l = 0; l < n; l++)
+        for (int64_t p = hb->Dp[l]; p < hb->Dp[l + 1]; p++) {
+            size_t k = (size_t)hb->Di[p];
+            double c = hb->rayleigh ? hb->a0 * hb->vM[p] + hb->a1 * hb->vK[p] : hb->vC[p];
+            linear_entry(hb, omega, k, l, hb->vM[p], c, hb->vK[p]);
+            hb->hill_mlu[k * n + l] = hb->vM[p];
         }
 }
 
@@ -128,9 +151,9 @@ static int companion(fricreg_hb *hb, const char *fn)
 {
     size_t n = hb->n, nc = hb->nc, N = n * nc;
     gsl_matrix *A = hb->hill;
-    double mmax = 0.0;
+    double mmax = 0.0; /* hill_mlu holds M (linear_blocks) */
     for (size_t k = 0; k < n * n; k++)
-        mmax = fmax(mmax, fabs(hb->hill_mlu[k] = hb->M[k]));
+        mmax = fmax(mmax, fabs(hb->hill_mlu[k]));
     fr_hb_lu_factor(hb->hill_mlu, n, hb->hill_piv);
     for (size_t k = 0; k < n; k++)
         if (!(fabs(hb->hill_mlu[k * n + k]) > 1e-14 * mmax))
@@ -239,9 +262,6 @@ int fricreg_hb_set_stability(fricreg_hb *hb, int enable)
         return FRICREG_ENULL;
     if (enable != 0 && enable != 1)
         return fr_fail(hb, FRICREG_EINVAL, "%s: enable = %d must be 0 or 1", fn, enable);
-    if (enable && hb->sparse)
-        return fr_fail(hb, FRICREG_EINVAL,
-                       "%s: the model is sparse; Hill's method is for dense models only", fn);
     if (enable && hb->n * hb->nc > FRICREG_HB_MAX_HILL)
         return fr_fail(hb, FRICREG_EINVAL,
                        "%s: ndof (2H + 1) = %zu, Hill's method is limited to %d coefficients", fn,
