@@ -406,6 +406,10 @@ module fricreg
     procedure :: points => hb_points
     procedure :: point => hb_point
     procedure :: peak => hb_peak
+    procedure :: set_stability => hb_set_stability
+    procedure :: stability => hb_stability
+    procedure :: bifurcations => hb_bifurcations
+    procedure :: bifurcation => hb_bifurcation
     procedure, private :: hb_shape
     final :: hb_final
   end type
@@ -3648,6 +3652,72 @@ contains
     if (status == FRICREG_OK) status = self%record(fricreg_hb_peak(self%ptr, as_size(dof - 1), &
                                                      omega, rms))
   end function hb_peak
+
+  !> Compute each solution's stability by Hill's method from now on (enable .true.), or stop
+  !> (fricreg_hb_set_stability). FRICREG_EINVAL (a sparse model, or too many coefficients);
+  !> FRICREG_ENOMEM.
+  function hb_set_stability(self, enable) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    logical, intent(in) :: enable
+    integer(c_int) :: status
+    integer(c_int) :: on
+    on = 0
+    if (enable) on = 1
+    status = self%ready('set_stability', 'HB driver')
+    if (status == FRICREG_OK) status = self%record(fricreg_hb_set_stability(self%ptr, on))
+  end function hb_set_stability
+
+  !> The stability of point k (1 <= k <= points()), or with k = 0 of the last solution
+  !> (fricreg_hb_point_stability): stable, and the largest |Floquet multiplier| mu_max.
+  !> FRICREG_EINVAL for stability off, k out of range or no solution.
+  function hb_stability(self, k, stable, mu_max) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    integer, intent(in) :: k
+    logical, intent(inout) :: stable
+    real(c_double), intent(inout) :: mu_max
+    integer(c_int) :: status, flag
+    integer(c_size_t) :: idx
+    status = self%ready('point_stability', 'HB driver')
+    if (status == FRICREG_OK .and. k < 0) &
+      status = self%fail(FRICREG_EINVAL, 'point_stability: k must be >= 0 (0: the last solution)')
+    if (status /= FRICREG_OK) return
+    idx = -1_c_size_t ! FRICREG_HB_SOLUTION, (size_t)-1
+    if (k > 0) idx = as_size(k - 1)
+    flag = 0
+    status = self%record(fricreg_hb_point_stability(self%ptr, idx, flag, mu_max))
+    if (status == FRICREG_OK) stable = flag /= 0
+  end function hb_stability
+
+  !> The number of bifurcations the last continuation located (fricreg_hb_bifurcations).
+  integer function hb_bifurcations(self)
+    class(fricreg_hb_driver), intent(in) :: self
+    hb_bifurcations = int(fricreg_hb_bifurcations(self%ptr))
+  end function hb_bifurcations
+
+  !> Bifurcation i (1 <= i <= bifurcations()): its type (FRICREG_HB_TP, _BP, _PD, _NS), its
+  !> frequency omega, the point (from 1) it follows, and the RMS of each dof, rms(ndof)
+  !> (fricreg_hb_bifurcation). FRICREG_EINVAL for i out of range; FRICREG_ESIZE.
+  function hb_bifurcation(self, i, type, omega, point, rms) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    integer, intent(in) :: i
+    integer, intent(inout) :: type, point
+    real(c_double), intent(inout) :: omega
+    real(c_double), intent(inout), contiguous :: rms(:)
+    integer(c_int) :: status, t
+    integer(c_size_t) :: k
+    status = self%hb_shape('bifurcation', 'rms', rms, self%n, 0_c_size_t)
+    if (status == FRICREG_OK .and. i < 1) &
+      status = self%fail(FRICREG_EINVAL, 'bifurcation: i must be >= 1 (Fortran counts from 1)')
+    if (status /= FRICREG_OK) return
+    t = 0
+    k = 0
+    status = self%record(fricreg_hb_bifurcation(self%ptr, as_size(i - 1), t, omega, k, self%n, &
+                                                rms))
+    if (status == FRICREG_OK) then
+      type = int(t)
+      point = int(k) + 1
+    end if
+  end function hb_bifurcation
 #endif
 
 end module fricreg

@@ -28,10 +28,14 @@
 !   FRHBNP(H, NP, STAT)                               _points
 !   FRHBPT(H, K, OMEGA, NDOF, RMS, STAT)              _point (K from 1)
 !   FRHBPK(H, IDOF, OMEGA, RMS, STAT)                 _peak (IDOF from 1)
+!   FRHBST(H, ION, STAT)                              _set_stability (ION 0 or 1)
+!   FRHBSB(H, K, ISTAB, MUMAX, STAT)                  _point_stability (K from 1; 0: solution)
+!   FRHBBN(H, NB, STAT)                               _bifurcations
+!   FRHBBF(H, I, ITYPE, OMEGA, K, NDOF, RMS, STAT)    _bifurcation (I, K from 1)
 !   FRHBER(H, CODE, MSG, STAT)                        _errcode, _errmsg
 ! Refused here, before C sees them, with FRICREG_EINVAL: FRHBCR's NDOF or M below 1, a
 ! negative MAXPT, IGUESS other than 0 or 1, and a K or IDOF below 1 (counts that would wrap
-! into size_t or C's 0-based index).
+! into size_t or C's 0-based index; FRHBSB's K below 0).
 
 !> FRHBCR(NDOF, M, NH, H, STAT): a driver for NDOF >= 1 degrees of freedom, M >= 1 Jenkins
 !> elements and NH harmonics (1 <= NH <= FRICREG_HB_MAX_HARMONICS) into H.
@@ -349,6 +353,79 @@ subroutine frhbpk(h, idof, omega, rms, stat)
   end if
   stat = int(fricreg_hb_peak(fricreg_handle_to_ptr(h), int(idof - 1, c_size_t), omega, rms))
 end subroutine frhbpk
+
+!> FRHBST(H, ION, STAT): Hill's stability of every solution from now on (ION = 1) or not (0).
+subroutine frhbst(h, ion, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: ion
+  integer, intent(out) :: stat
+  stat = int(fricreg_hb_set_stability(fricreg_handle_to_ptr(h), int(ion, c_int)))
+end subroutine frhbst
+
+!> FRHBSB(H, K, ISTAB, MUMAX, STAT): the stability of point K (1 <= K <= NP), or with K = 0 of
+!> the last solution: ISTAB 1 stable, 0 not, and the largest |Floquet multiplier| MUMAX.
+subroutine frhbsb(h, k, istab, mumax, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: k
+  integer, intent(inout) :: istab
+  double precision, intent(inout) :: mumax
+  integer, intent(out) :: stat
+  integer(c_int) :: flag
+  integer(c_size_t) :: idx
+  if (k < 0) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  idx = -1_c_size_t
+  if (k > 0) idx = int(k - 1, c_size_t)
+  flag = 0
+  stat = int(fricreg_hb_point_stability(fricreg_handle_to_ptr(h), idx, flag, mumax))
+  if (stat == FRICREG_OK) istab = int(flag)
+end subroutine frhbsb
+
+!> FRHBBN(H, NB, STAT): the number of bifurcations the last continuation located.
+subroutine frhbbn(h, nb, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(out) :: nb, stat
+  nb = int(fricreg_hb_bifurcations(fricreg_handle_to_ptr(h)))
+  stat = int(FRICREG_OK)
+end subroutine frhbbn
+
+!> FRHBBF(H, I, ITYPE, OMEGA, K, NDOF, RMS, STAT): bifurcation I (1 <= I <= NB): its type ITYPE
+!> (FRICREG_HB_TP, _BP, _PD, _NS), frequency OMEGA, the point K (from 1) it follows, RMS(NDOF).
+subroutine frhbbf(h, i, itype, omega, k, ndof, rms, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: i, ndof
+  integer, intent(inout) :: itype, k
+  double precision, intent(inout) :: omega, rms(*)
+  integer, intent(out) :: stat
+  integer(c_int) :: t
+  integer(c_size_t) :: kp
+  if (i < 1) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  t = 0
+  kp = 0
+  stat = int(fricreg_hb_bifurcation(fricreg_handle_to_ptr(h), int(i - 1, c_size_t), t, omega, &
+                                    kp, int(ndof, c_size_t), rms))
+  if (stat == FRICREG_OK) then
+    itype = int(t)
+    k = int(kp) + 1
+  end if
+end subroutine frhbbf
 
 !> FRHBER(H, CODE, MSG, STAT): code and message of the driver's last failure.
 subroutine frhber(h, code, msg, stat)

@@ -453,6 +453,102 @@ FRICREG_API int fricreg_hb_point(fricreg_hb *hb, size_t k, double *omega, size_t
  *  Since 1.7 (FRICREG_1.7). */
 FRICREG_API int fricreg_hb_peak(fricreg_hb *hb, size_t dof, double *omega, double *rms);
 
+/** Largest number of Fourier coefficients ndof (2H + 1) of Hill's method
+ *  (fricreg_hb_set_stability): its companion matrix, of order 2 ndof (2H + 1), is dense. */
+#define FRICREG_HB_MAX_HILL 1024
+
+/** The index of fricreg_hb_point_stability that names the driver's last solution (that of
+ *  fricreg_hb_solve, or the last point of fricreg_hb_continue) rather than a stored point. */
+#define FRICREG_HB_SOLUTION ((size_t)-1)
+
+/** Compute the stability of every solution from now on (enable = 1), by Hill's method, or stop
+ *  (0, the default). Since 1.7 (FRICREG_1.7).
+ *
+ *  A perturbation y(t) = e^{λt} p(t), p periodic, of a solution solves the quadratic
+ *  eigenproblem (λ² M⊗I + λ (C⊗I + 2 M⊗∇) + S) P = 0 in the Fourier coefficients P of p (the
+ *  full ndof (2H + 1) of them, not the condensed q), S the Jacobian of the HB equations (HB),
+ *  K − (hΩ)² M ± hΩ C per harmonic plus J^T (∂F/∂q) J from the elements' exact AFT Jacobians,
+ *  ∇ the derivative on one period's coefficients (Krack & Gross Sec. 5.3; G. W. Hill 1886).
+ *  Solved as the eigenproblem of its companion matrix of order 2 ndof (2H + 1) by GSL's
+ *  gsl_eigen_nonsymm; of its eigenvalues, each Floquet exponent repeated at λ + i k Ω, the
+ *  2 ndof of least |Im λ| (within ±Ω/2) are the Floquet exponents, μ = exp(2π λ/Ω) the
+ *  multipliers. A solution is stable when every exponent has Re λ 2π/Ω <= 1e-6 (|μ| <= 1 +
+ *  1e-6). The elements' sliders enter through their stabilized hysteresis's Jacobian: their
+ *  offsets, forgotten once they slip, are no state of their own (an element stuck over a
+ *  whole period would have a neutral one). A real multiplier below −1 appears as the pair
+ *  Re λ ± iΩ/2, both counted: then the 2 ndof may hold one multiplier twice.
+ *
+ *  Cost per solution: the companion's O((ndof H)²) entries and GSL's QR, about 10 (2 ndof
+ *  (2H + 1))³ flops (measured against a continuation point: bench/hb_stability.c, and
+ *  docs/joints.md). Dense or sparse models (the companion itself is dense), with ndof (2H + 1)
+ *  <= FRICREG_HB_MAX_HILL. M must be nonsingular (checked at each
+ *  solution: FRICREG_ESINGULAR from the solve). Allocates the companion matrix and GSL's
+ *  workspace here, 4 (ndof (2H + 1))² + O(ndof (2H + 1)) doubles (freed by enable = 0), and
+ *  each stored point then keeps 4 + 4 ndof numbers; the solves allocate nothing more. Enabling
+ *  or disabling drops the stored points and the last solution (they have no stability).
+ *
+ *  Stability needs GSL's QR to converge: GSL 2.7 reports a QR that does not (30 sweeps per
+ *  eigenvalue) through its error handler too; the balanced, finite matrix here has not been
+ *  seen to fail, but a host that keeps GSL's default (aborting) handler should know.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb is NULL; FRICREG_EINVAL if enable is not 0 or 1, or
+ *  ndof (2H + 1) > FRICREG_HB_MAX_HILL; FRICREG_ENOMEM (nothing changed). */
+FRICREG_API int fricreg_hb_set_stability(fricreg_hb *hb, int enable);
+
+/** The stability of a stored continuation point, or of the last solution.
+ *
+ *  k        the point's index, 0 <= k < fricreg_hb_points(hb), or FRICREG_HB_SOLUTION for the
+ *           last solution (fricreg_hb_solve's, or the last point of fricreg_hb_continue).
+ *  stable   out: 1 if every Floquet exponent has Re λ 2π/Ω <= 1e-6, else 0
+ *           (fricreg_hb_set_stability).
+ *  mu_max   out: the largest |Floquet multiplier|, exp(2π max Re λ/Ω), nondimensional.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb, stable or mu_max is NULL; FRICREG_EINVAL if
+ *  stability is off, k is out of range, or (FRICREG_HB_SOLUTION) there is no solution (none
+ *  since stability was turned on, or the model changed since). Since 1.7 (FRICREG_1.7). */
+FRICREG_API int fricreg_hb_point_stability(fricreg_hb *hb, size_t k, int *stable, double *mu_max);
+
+/** The kinds of bifurcation fricreg_hb_continue locates along a branch. */
+enum fricreg_hb_bifurcation_type {
+    FRICREG_HB_TP = 1, /**< turning point (fold in Ω): the tangent's Ω component changes sign */
+    FRICREG_HB_BP = 2, /**< branch point: the bordered Jacobian's determinant changes sign */
+    FRICREG_HB_PD = 3, /**< period doubling: a real multiplier crosses −1 (stability on) */
+    FRICREG_HB_NS = 4 /**< Neimark–Sacker: a complex pair crosses the unit circle (stability on) */
+};
+
+/** Number of bifurcations fricreg_hb_continue located along its branch (fricreg_hb_bifurcation);
+ *  0 if none or hb is NULL. Returns that number, not a status. Since 1.7 (FRICREG_1.7). */
+FRICREG_API size_t fricreg_hb_bifurcations(const fricreg_hb *hb);
+
+/** One located bifurcation of the last fricreg_hb_continue's branch, in the order of the branch.
+ *
+ *  Between two successive stored points, a sign change of a test function marks one: the
+ *  tangent's Ω component (FRICREG_HB_TP), the determinant of the bordered Jacobian
+ *  [R_q R_Ω; t^T] (FRICREG_HB_BP; it keeps its sign at a turning point), and with stability on
+ *  (fricreg_hb_set_stability) a change of the stable flag not so explained, labelled by the
+ *  exponent that crossed: Im λ at ±Ω/2 a period doubling (FRICREG_HB_PD), otherwise complex a
+ *  Neimark–Sacker bifurcation (FRICREG_HB_NS), real a branch point (FRICREG_HB_BP). Each is
+ *  located by bisection on its test function along the chord of the two points, each trial
+ *  point solved by the continuation's corrector on the hyperplane normal to the chord, to
+ *  1e-9 of the chord (so Ω to about 1e-9 |Ω1 − Ω0| at most, far less at a turning point where
+ *  Ω is stationary); a trial whose corrector fails ends the bisection at the bracket's
+ *  nearer stored point. One bifurcation per pair of points at most (the first test that
+ *  changed, in the order above).
+ *
+ *  i          index, 0 <= i < fricreg_hb_bifurcations(hb).
+ *  type       out: an enum fricreg_hb_bifurcation_type.
+ *  omega      out: its excitation frequency, rad/s.
+ *  point      out, or NULL: the index k of the stored point before it (it lies between k and
+ *             k + 1).
+ *  ndof       must equal the driver's degrees of freedom.
+ *  rms[ndof]  out: each dof's RMS there (as fricreg_hb_point's), displacement units.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb, type, omega or rms is NULL; FRICREG_EINVAL if i is
+ *  out of range; FRICREG_ESIZE if ndof is not the driver's. Nothing is written on failure.
+ *  Since 1.7 (FRICREG_1.7). */
+FRICREG_API int fricreg_hb_bifurcation(fricreg_hb *hb, size_t i, int *type, double *omega,
+                                       size_t *point, size_t ndof, double rms[]);
+
 /** Status of the last failed call on hb. Returns that code, or FRICREG_OK if none (or hb
  *  NULL). A successful call does not clear it. Since 1.6. */
 FRICREG_API int fricreg_hb_errcode(const fricreg_hb *hb);

@@ -533,7 +533,8 @@ expect_output '"ndof": 5001, "ncontacts": 1, "x": \[-5\.3140(4999999|5000000)[0-
 # (mu N = 1e6): a linear oscillator of stiffness k + kt = 4.5, Rayleigh C = 0.02 K = 0.06, forced
 # by 0.5 cos(Omega t). Its RMS over a period is |X|/sqrt(2) with
 # |X| = 0.5/sqrt((4.5 - 2 Omega^2)^2 + (0.06 Omega)^2) (closed form): every row of --output frf
-# within 1e-8, and the summary's peak (located, fricreg_hb_peak) where d|X|/dOmega = 0,
+# within 1e-8, every row stable (its Floquet exponents' real part is -c/(2m) = -0.015) with no
+# bifurcation, and the summary's peak (located, fricreg_hb_peak) where d|X|/dOmega = 0,
 # Omega^2 = (4.5 - 0.06^2/4)/2, Omega = 1.49984999250, RMS 3.92856743987, both within 1e-8.
 d=$tmp/hb
 mkdir -p "$d"
@@ -546,14 +547,15 @@ echo "1.5" >"$d/P1.txt"
 hb="hb --mass $d/M.mtx --stiffness $d/K.mtx --rayleigh 0,0.02 --excitation $d/F.txt --jenkins $d/J.mtx --jenkins-params $d/P.txt --harmonics 3 --omega-start 0.5 --omega-end 3"
 total=$((total + 1))
 "$sim" $hb --output frf >"$d/frf.csv" 2>"$d/err"
-if [ "$(head -n 1 "$d/frf.csv")" != "omega,rms_1" ] || ! awk -F, 'NR > 1 { w = $1; a = 4.5 - 2 * w * w; c = 0.06 * w
-        r = 0.5 / sqrt(a * a + c * c) / sqrt(2); e = ($2 - r) / r; if (e < 0) e = -e; if (e > big) big = e; rows++ }
-        END { exit !(rows >= 20 && big < 1e-8 && w == 3) }' "$d/frf.csv"; then
+if [ "$(head -n 1 "$d/frf.csv")" != "omega,rms_1,stable,bifurcation" ] || ! awk -F, 'NR > 1 { w = $1; a = 4.5 - 2 * w * w; c = 0.06 * w
+        r = 0.5 / sqrt(a * a + c * c) / sqrt(2); e = ($2 - r) / r; if (e < 0) e = -e; if (e > big) big = e; rows++
+        if ($3 != "1" || $4 != "") bad++ }
+        END { exit !(rows >= 20 && big < 1e-8 && w == 3 && !bad) }' "$d/frf.csv"; then
     echo "FAIL: hb frf against the linear closed form: $(head -n 3 "$d/frf.csv") $(cat "$d/err")"; fails=$((fails + 1))
 fi
 total=$((total + 1))
 "$sim" $hb >"$d/summary.json" 2>"$d/err"
-if ! grep -q '"peaks": "located"' "$d/summary.json" ||
+if ! grep -q '"peaks": "located"' "$d/summary.json" || ! grep -q '"bifurcations": \[\]' "$d/summary.json" ||
         ! sed 's/.*"peak_rms": \([^,]*\), "peak_omega": \([^}]*\)}.*/\1 \2/' "$d/summary.json" |
         awk '{ r = $1 / 3.92856743987 - 1; w = $2 / 1.49984999250 - 1
             exit !(r < 1e-8 && r > -1e-8 && w < 1e-8 && w > -1e-8) }'; then
@@ -631,8 +633,8 @@ for w0 in 1.24 1.5; do
     total=$((total + 1))
     "$sim" $hbs --omega-start $w0 --omega-end 3 --jenkins-params $d/P_slip.txt --output frf >"$d/j.csv" 2>"$d/err"
     "$sim" $hbs --omega-start $w0 --omega-end 3 --normal $d/J.mtx --normal-params $d/Q_kn0.txt --output frf >"$d/n.csv" 2>>"$d/err"
-    if ! paste -d, "$d/j.csv" "$d/n.csv" | awk -F, -v w0=$w0 'NR == 2 { e = (sqrt($4 * $4 - 1) - $2) / $2
-            exit !($1 == w0 && $3 == w0 && $2 > 0.3 && e < 1e-12 && e > -1e-12) } END { if (NR < 2) exit 1 }'; then
+    if ! paste -d, "$d/j.csv" "$d/n.csv" | awk -F, -v w0=$w0 'NR == 2 { e = (sqrt($6 * $6 - 1) - $2) / $2
+            exit !($1 == w0 && $5 == w0 && $2 > 0.3 && e < 1e-12 && e > -1e-12) } END { if (NR < 2) exit 1 }'; then
         echo "FAIL: hb lift-off kn = 0 against Jenkins at $w0: $(sed -n 2p "$d/j.csv") $(sed -n 2p "$d/n.csv") $(cat "$d/err")"
         fails=$((fails + 1))
     fi

@@ -19,7 +19,9 @@ program test_hb
   real(c_double), parameter :: w = 1.2_c_double
   real(c_double) :: q(7, 1), x(7, 1), d, c, rms(1), omega, big, qc(7, 1), q2(7, 1), bad(5, 1)
   real(c_double) :: M2(2, 2), K2(2, 2), J2(1, 2), Jrow(2), Jn2(1, 2), qn(7, 2), pw, pr
-  integer :: k
+  integer :: k, btype, bpoint
+  real(c_double) :: mu
+  logical :: stable
 
   call check_status(hb%create(1, 1, 3), FRICREG_OK, 'create')
   call check(hb%ndof() == 1 .and. hb%nelements() == 1 .and. hb%harmonics() == 3, 'sizes')
@@ -58,6 +60,19 @@ program test_hb
   call check_close(pr, 3.92856743987_c_double, 4e-8_c_double, 'the peak''s RMS, closed form')
   call check_status(hb%peak(0, pw, pr), FRICREG_EINVAL, 'peak of dof 0')
   call check_status(hb%peak(2, pw, pr), FRICREG_EINVAL, 'peak of dof 2 of 1')
+  ! Hill's stability: linear (the element stuck), so every multiplier has modulus
+  ! exp(-c/(2m) 2 pi/omega) = exp(-0.015 2 pi/omega), stable, and no bifurcation
+  call check_status(hb%stability(1, stable, mu), FRICREG_EINVAL, 'stability while off')
+  call check_status(hb%set_stability(.true.), FRICREG_OK, 'set_stability')
+  call check_status(hb%continue(0.5_c_double, 3.0_c_double), FRICREG_OK, 'continue with stability')
+  call check_status(hb%stability(hb%points(), stable, mu), FRICREG_OK, 'stability of the last point')
+  call check(stable, 'the last point is stable')
+  call check_close(mu, exp(-0.015_c_double * 2.0_c_double * acos(-1.0_c_double) / 3.0_c_double), &
+                   1e-9_c_double, 'mu_max, closed form')
+  call check_status(hb%stability(0, stable, mu), FRICREG_OK, 'stability of the last solution')
+  call check_status(hb%stability(-1, stable, mu), FRICREG_EINVAL, 'stability of k = -1')
+  call check(hb%bifurcations() == 0, 'no bifurcation on a linear branch')
+  call check_status(hb%bifurcation(1, btype, omega, bpoint, rms), FRICREG_EINVAL, 'bifurcation 1 of 0')
 
   ! errors: Fortran's shape checks, C's refusals, each with a message
   call check_status(hb%solve(w, bad), FRICREG_ESIZE, 'q of the wrong shape')

@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* hb.c — `fricreg-sim hb`: the frequency response of a linear structure with Jenkins, Iwan or
  * lift-off elements (jenkins_input.h) by harmonic balance (fricreg_hb.h) from Matrix Market
- * files, continued in the excitation frequency from --omega-start to --omega-end; a JSON
- * summary (per dof the peak RMS and its frequency) or a CSV row per continuation point on
- * stdout. Every bad option or file is one line on stderr naming it, exit 2, nothing on stdout;
+ * files, continued in the excitation frequency from --omega-start to --omega-end, each point's
+ * stability by Hill's method (fricreg_hb_set_stability, where allowed); a JSON summary (per dof
+ * the peak RMS and its frequency, the located bifurcations) or a CSV row per continuation point
+ * (and per bifurcation) on stdout. Every bad option or file is one line on stderr naming it, exit 2, nothing on stdout;
  * a continuation that fails, exit 1. */
 #include <math.h>
 #include <stdlib.h>
@@ -131,8 +132,10 @@ static size_t hb_table(struct hb_options *o, struct cli_option table[])
         {"--max-points", CLI_WHOLE, .slot = &o->max_points, .lo = 2, .hi = 1e8, .meta = "N",
          .help = "points stored at most: reaching it stops the continuation"},
         {"--output", CLI_CHOICE, .slot = &o->output, .words = hb_outputs,
-         .help = "a JSON summary (each dof's peak RMS and its frequency), or the frequency "
-                 "response: a CSV row omega,rms_1,...,rms_n per point"}};
+         .help = "a JSON summary (each dof's peak RMS and its frequency, the bifurcations), or the "
+                 "frequency response: a CSV row omega,rms_1,...,rms_n,stable,bifurcation per "
+                 "point (stable 1/0 by Hill's method where ndof (2H + 1) <= 1024, else empty), "
+                 "and a row at each located bifurcation labelled TP, BP, PD or NS"}};
     return cli_copy_rows(table, opts, sizeof opts / sizeof opts[0]);
 }
 
@@ -235,18 +238,80 @@ static int collect(fricreg_hb *hb, size_t n, size_t *npoints, double **omega, do
     return 0;
 }
 
-static void write_frf(FILE *out, size_t n, size_t K, const double omega[], const double rms[])
+/* A bifurcation type's label (enum fricreg_hb_bifurcation_type). */
+static const char *bifurcation_name(int type)
 {
+    static const char *const names[] = {"", "TP", "BP", "PD", "NS"};
+    return type >= 1 && type <= 4 ? names[type] : "";
+}
+
+/* A row omega, rms_1 .. rms_n, stable (1/0; empty where unknown), bifurcation (a label or
+ * empty). */
+static void write_row(FILE *out, size_t n, double omega, const double rms[], int stable,
+                      const char *label)
+{
+    fprintf(out, "%.17g", omega);
+    for (size_t i = 0; i < n; i++)
+        fprintf(out, ",%.17g", rms[i]);
+    if (stable >= 0)
+        fprintf(out, ",%d,%s\n", stable, label);
+    else
+        fprintf(out, ",,%s\n", label);
+}
+
+/* The points, each with its stability (when the driver computed it), and after point k a row
+ * inserted at each bifurcation located between points k and k + 1 (stable empty). */
+static int write_frf(fricreg_hb *hb, FILE *out, size_t n, size_t K, const double omega[],
+                     const double rms[])
+{
+    double *brms = malloc((n ? n : 1) * sizeof *brms);
+    if (brms == NULL)
+        return cli_usage_error("hb", "out of memory");
     fprintf(out, "omega");
     for (size_t i = 0; i < n; i++)
         fprintf(out, ",rms_%zu", i + 1);
-    fprintf(out, "\n");
+    fprintf(out, ",stable,bifurcation\n");
+    size_t nb = fricreg_hb_bifurcations(hb), b = 0;
     for (size_t k = 0; k < K; k++) {
-        fprintf(out, "%.17g", omega[k]);
-        for (size_t i = 0; i < n; i++)
-            fprintf(out, ",%.17g", rms[k * n + i]);
-        fprintf(out, "\n");
+        int stable = -1;
+        double mu = 0.0;
+        if (fricreg_hb_point_stability(hb, k, &stable, &mu) != FRICREG_OK)
+            stable = -1;
+        write_row(out, n, omega[k], &rms[k * n], stable, "");
+        for (; b < nb; b++) {
+            int type = 0;
+            double bw = 0.0;
+            size_t at = 0;
+            if (fricreg_hb_bifurcation(hb, b, &type, &bw, &at, n, brms) != FRICREG_OK || at != k)
+                break;
+            write_row(out, n, bw, brms, -1, bifurcation_name(type));
+        }
     }
+    free(brms);
+    return 0;
+}
+
+/* The located bifurcations as the summary's JSON array. */
+static int write_bifurcations(fricreg_hb *hb, FILE *out, size_t n)
+{
+    double *brms = malloc((n ? n : 1) * sizeof *brms);
+    if (brms == NULL)
+        return cli_usage_error("hb", "out of memory");
+    fprintf(out, ", \"bifurcations\": [");
+    for (size_t b = 0; b < fricreg_hb_bifurcations(hb); b++) {
+        int type = 0;
+        double bw = 0.0;
+        if (fricreg_hb_bifurcation(hb, b, &type, &bw, NULL, n, brms) != FRICREG_OK)
+            continue;
+        fprintf(out, "%s{\"omega\": %.17g, \"type\": \"%s\", \"dof_rms\": [", b ? ", " : "", bw,
+                bifurcation_name(type));
+        for (size_t i = 0; i < n; i++)
+            fprintf(out, "%s%.17g", i ? ", " : "", brms[i]);
+        fprintf(out, "]}");
+    }
+    fprintf(out, "]");
+    free(brms);
+    return 0;
 }
 
 /* Each dof's peak into peak_omega[n], peak_rms[n]: located by fricreg_hb_peak up to
@@ -273,9 +338,9 @@ static int peaks(fricreg_hb *hb, size_t n, size_t K, const double omega[], const
     return 0;
 }
 
-static void write_summary(FILE *out, const struct hb_options *o, const struct hb_model *md,
-                          size_t K, const double omega[], const double peak_omega[],
-                          const double peak_rms[], double cpu)
+static void write_summary(fricreg_hb *hb, FILE *out, const struct hb_options *o,
+                          const struct hb_model *md, size_t K, const double omega[],
+                          const double peak_omega[], const double peak_rms[], double cpu)
 {
     size_t n = md->n;
     fprintf(out,
@@ -290,7 +355,9 @@ static void write_summary(FILE *out, const struct hb_options *o, const struct hb
     for (size_t i = 0; i < n; i++)
         fprintf(out, "%s{\"dof\": %zu, \"peak_rms\": %.17g, \"peak_omega\": %.17g}", i ? ", " : "",
                 i + 1, peak_rms[i], peak_omega[i]);
-    fprintf(out, "], \"cpu_seconds\": %.6f}\n", cpu);
+    fprintf(out, "]");
+    write_bifurcations(hb, out, n);
+    fprintf(out, ", \"cpu_seconds\": %.6f}\n", cpu);
 }
 
 /* The continuation from omega_start (its solution from q = 0) to omega_end, and the output. */
@@ -300,6 +367,10 @@ static int run_hb(fricreg_hb *hb, const struct hb_options *o, const struct hb_mo
     /* lift-off elements: tangential and normal coefficients, 2 m rows */
     size_t rows = md->el.kind == CLI_ELEMENTS_NORMAL ? 2 * md->m : md->m;
     size_t nq = rows * (2 * (size_t)o->harmonics + 1);
+    /* each point's stability by Hill's method where its dense companion is allowed */
+    if (md->n * (2 * (size_t)o->harmonics + 1) <= FRICREG_HB_MAX_HILL &&
+        fricreg_hb_set_stability(hb, 1) != FRICREG_OK)
+        return cli_usage_error("hb", fricreg_hb_errmsg(hb));
     int status = fricreg_hb_continue(hb, o->omega_start, o->omega_end, nq, NULL);
     double cpu = (double)(clock() - start) / CLOCKS_PER_SEC;
     if (status != FRICREG_OK) {
@@ -310,7 +381,7 @@ static int run_hb(fricreg_hb *hb, const struct hb_options *o, const struct hb_mo
     double *omega = NULL, *rms = NULL, *peak = NULL;
     status = collect(hb, n, &K, &omega, &rms);
     if (status == 0 && o->output == HB_FRF) {
-        write_frf(out, n, K, omega, rms);
+        status = write_frf(hb, out, n, K, omega, rms);
     } else if (status == 0) {
         if ((peak = malloc(2 * n * sizeof *peak)) == NULL)
             status = cli_usage_error("hb", "out of memory");
@@ -319,7 +390,7 @@ static int run_hb(fricreg_hb *hb, const struct hb_options *o, const struct hb_mo
         /* the CPU time includes the peaks' location */
         cpu = (double)(clock() - start) / CLOCKS_PER_SEC;
         if (status == 0)
-            write_summary(out, o, md, K, omega, peak, peak + n, cpu);
+            write_summary(hb, out, o, md, K, omega, peak, peak + n, cpu);
     }
     free(omega);
     free(rms);

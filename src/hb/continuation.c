@@ -62,10 +62,10 @@ struct branch {
  * room follows nq, which the element setters change (1 or 2 rows per element). */
 static int reserve(fricreg_hb *hb, size_t want)
 {
-    size_t stride = hb->nq + 1;
+    size_t stride = hb->nq + 1, xw = FR_HB_XW(hb);
     if (want > hb->max_points)
         want = hb->max_points;
-    if (want <= hb->cap && hb->qpts_stride == stride)
+    if (want <= hb->cap && hb->qpts_stride == stride && hb->xpts_stride == xw)
         return FRICREG_OK;
     if (want < hb->cap)
         want = hb->cap;
@@ -73,21 +73,47 @@ static int reserve(fricreg_hb *hb, size_t want)
     if (p != NULL)
         hb->pts = p;
     double *q = p == NULL ? NULL : realloc(hb->qpts, want * stride * sizeof(double));
-    if (q == NULL)
+    if (q != NULL)
+        hb->qpts = q;
+    double *x = q == NULL ? NULL : realloc(hb->xpts, want * xw * sizeof(double));
+    if (x != NULL)
+        hb->xpts = x;
+    double *f = x == NULL ? NULL : realloc(hb->bifs, want * (3 + hb->n) * sizeof(double));
+    if (f == NULL)
         return fr_fail(hb, FRICREG_ENOMEM, "continue: no memory for %zu points", want);
-    hb->qpts = q;
+    hb->bifs = f;
     hb->qpts_stride = stride;
+    hb->xpts_stride = xw;
     hb->cap = want;
     return FRICREG_OK;
 }
 
-/* The point at qt (unscaled q, Ω = omega; the factors and forces fq at it) stored. */
-static int store_point(fricreg_hb *hb, double omega)
+/* The sign of the determinant of the LU factor in A (order ld, pivots piv2). */
+static double det_sign(const fricreg_hb *hb, size_t ld)
 {
-    size_t w = 1 + hb->n, nq = hb->nq;
+    double sign = 1.0;
+    for (size_t k = 0; k < ld; k++)
+        sign *= (hb->A[k * ld + k] < 0.0 ? -1.0 : 1.0) * (hb->piv2[k] != k ? -1.0 : 1.0);
+    return sign;
+}
+
+/* The point at qt (unscaled q, Ω = omega; the factors, forces fq and Jacobians jq at it)
+ * stored, with the tangent's Ω component tw and the bordered matrix's determinant sign det; its
+ * stability by Hill's method when on (already in xsol when hill_done: fr_hb_solve_at's). */
+static int store_point(fricreg_hb *hb, const char *fn, double omega, double tw, double det,
+                       int hill_done)
+{
+    size_t w = 1 + hb->n, nq = hb->nq, xw = FR_HB_XW(hb);
     int status = hb->npts < hb->cap ? FRICREG_OK : reserve(hb, 2 * hb->cap);
     if (status != FRICREG_OK)
         return status;
+    if (hb->stability && !hill_done && (status = fr_hb_hill(hb, fn, omega, hb->xsol + 2)))
+        return status;
+    double *x = hb->xpts + hb->npts * xw;
+    x[0] = tw;
+    x[1] = det;
+    if (hb->stability)
+        memcpy(x + 2, hb->xsol + 2, (xw - 2) * sizeof(double));
     hb->pts[hb->npts * w] = omega;
     fr_hb_rms(hb, hb->pts + hb->npts * w + 1);
     memcpy(hb->qpts + hb->npts * (nq + 1), hb->qt, nq * sizeof(double));
@@ -357,6 +383,8 @@ static int follow(fricreg_hb *hb, const char *fn, struct branch *b, double omega
         status = tangent_from_matrix(hb, fn, hb->tan);
     if (status != FRICREG_OK)
         return status;
+    hb->xpts[0] = hb->tan[nq]; /* the first point's tangent and determinant */
+    hb->xpts[1] = det_sign(hb, ld);
     for (;;) {
         if (hb->npts >= hb->max_points)
             return fr_fail(hb, FRICREG_EWORK, "%s: %zu points stored before Omega1 = %g", fn,
@@ -410,10 +438,9 @@ static int follow(fricreg_hb *hb, const char *fn, struct branch *b, double omega
             ds = ds_start;
             sev_before = 0.0;
         }
-        if (last) {
-            status = store_point(hb, omega1);
-            return status;
-        }
+        if (last) /* the direction's Ω sign and the last determinant's sign carried on */
+            return store_point(hb, fn, omega1, hb->dir[nq],
+                               hb->xpts[(hb->npts - 1) * hb->xpts_stride + 1], 1);
         if (doubles_back(hb, b, hb->qw))
             return fr_fail(hb, FRICREG_EWORK,
                            "%s: the branch doubles back on itself at Omega = %g (after %zu "
@@ -421,7 +448,7 @@ static int follow(fricreg_hb *hb, const char *fn, struct branch *b, double omega
                            fn, hb->qw[nq] * b->ws, hb->npts, omega1);
         /* bordered() left qt, the factors and the forces at qw */
         double omega = hb->qw[nq] * b->ws;
-        if ((status = store_point(hb, omega)) != FRICREG_OK)
+        if ((status = store_point(hb, fn, omega, hb->tn[nq], det_sign(hb, ld), 0)) != FRICREG_OK)
             return status;
         memcpy(b->yo, b->yc, ld * sizeof(double));
         b->have_prev = 1;
@@ -434,6 +461,144 @@ static int follow(fricreg_hb *hb, const char *fn, struct branch *b, double omega
         f = fmin(fmax(f, 0.5), 2.0);
         ds = fmin(fmax(ds / f, hb->ds_min), hb->ds_max);
     }
+}
+
+/* ---- Bifurcations between the stored points ---------------------------------------------- */
+
+/* A bifurcation's test: its type, and for a change of stability the exponents' kind it follows
+ * (fr_hb_hill_unstable). */
+struct test {
+    int type, kind;
+};
+
+/* The test's sign (0 or 1) at a point whose extras are x (xpts's layout) at omega. */
+static int test_sign(const fricreg_hb *hb, struct test t, const double *x, double omega)
+{
+    if (t.kind >= 0)
+        return fr_hb_hill_unstable(hb, omega, x + 4, t.kind);
+    return x[t.type == FRICREG_HB_TP ? 0 : 1] > 0.0;
+}
+
+/* The branch's point on the hyperplane normal to the chord ya → yb (scaled) through
+ * ya + s (yb − ya): its test sign, Ω, and the RMS of each dof into rms. */
+static int test_at(fricreg_hb *hb, struct branch *b, const double *ya, const double *yb, double s,
+                   struct test t, int *sign, double *omega, double *rms)
+{
+    static const char fn[] = "continue";
+    size_t nq = hb->nq, ld = nq + 1;
+    double *normal = hb->dir, *anchor = hb->yo, len = dist(yb, ya, ld);
+    for (size_t j = 0; j < ld; j++) {
+        normal[j] = (yb[j] - ya[j]) / len;
+        anchor[j] = ya[j] + s * (yb[j] - ya[j]);
+    }
+    int its = 0, status = corrector(hb, fn, b, anchor, anchor, normal, &its);
+    if (status != FRICREG_OK)
+        return status;
+    *omega = hb->qw[nq] * b->ws;
+    double tx[2], *x = t.kind >= 0 ? hb->hill_x : tx;
+    if (t.kind >= 0)
+        status = fr_hb_hill(hb, fn, *omega, x + 2);
+    else if ((status = tangent_from_matrix(hb, fn, hb->rw)) == FRICREG_OK) {
+        x[0] = hb->rw[nq];
+        x[1] = det_sign(hb, ld);
+    }
+    if (status != FRICREG_OK)
+        return status;
+    *sign = test_sign(hb, t, x, *omega);
+    fr_hb_rms(hb, rms); /* bordered() left the factors and forces at qw */
+    return FRICREG_OK;
+}
+
+/* Bisection on the test's sign between stored points k and k + 1, to 1e-9 of their chord; the
+ * bifurcation recorded at the last bracket's middle (or, should a trial fail, at the bracket's
+ * end nearer to the points' side it came from). */
+static void bisect(fricreg_hb *hb, struct branch *b, size_t k, struct test t)
+{
+    size_t ld = hb->nq + 1, n = hb->n, xw = hb->xpts_stride;
+    double *ya = hb->yp, *yb = hb->yp + ld, lo = 0.0, hi = 1.0;
+    for (size_t j = 0; j < ld; j++) {
+        double c = j < hb->nq ? b->qs : b->ws;
+        ya[j] = hb->qpts[k * ld + j] / c;
+        yb[j] = hb->qpts[(k + 1) * ld + j] / c;
+    }
+    int sa = test_sign(hb, t, hb->xpts + k * xw, hb->pts[k * (1 + n)]);
+    double *rec = hb->bifs + hb->nbif * (3 + n);
+    rec[0] = t.type;
+    rec[2] = (double)k;
+    double omega = 0.0;
+    int found = 0;
+    while (hi - lo > 1e-9) {
+        double s = 0.5 * (lo + hi);
+        int sign = 0;
+        if (test_at(hb, b, ya, yb, s, t, &sign, &omega, rec + 3) != FRICREG_OK)
+            break;
+        rec[1] = omega;
+        found = 1;
+        if (sign == sa)
+            lo = s;
+        else
+            hi = s;
+    }
+    if (!found) { /* the stored point nearer to the bracket */
+        size_t at = lo > 0.0 ? k + 1 : k;
+        rec[1] = hb->pts[at * (1 + n)];
+        memcpy(rec + 3, hb->pts + at * (1 + n) + 1, n * sizeof(double));
+    }
+    hb->nbif++;
+}
+
+/* Each pair of successive points: the first test whose sign changed, located. */
+static void locate_bifurcations(fricreg_hb *hb, struct branch *b)
+{
+    size_t xw = hb->xpts_stride, w = 1 + hb->n;
+    hb->nbif = 0;
+    for (size_t k = 0; k + 1 < hb->npts; k++) {
+        const double *x0 = hb->xpts + k * xw, *x1 = x0 + xw;
+        struct test t = {0, -1};
+        if ((x0[0] > 0.0) != (x1[0] > 0.0))
+            t.type = FRICREG_HB_TP;
+        else if (x0[1] * x1[1] < 0.0)
+            t.type = FRICREG_HB_BP;
+        else if (hb->stability && x0[2] != x1[2]) {
+            /* the exponent that crossed: the largest on the unstable side */
+            int up = x1[2] == 0.0;
+            const double *xu = up ? x1 : x0;
+            t.kind = fr_hb_hill_crossing(hb, hb->pts[(k + (size_t)up) * w], xu + 4);
+            t.type = t.kind == 1 ? FRICREG_HB_PD : t.kind == 2 ? FRICREG_HB_NS : FRICREG_HB_BP;
+        }
+        if (t.type != 0)
+            bisect(hb, b, k, t);
+    }
+}
+
+size_t fricreg_hb_bifurcations(const fricreg_hb *hb)
+{
+    return hb ? hb->nbif : 0;
+}
+
+int fricreg_hb_bifurcation(fricreg_hb *hb, size_t i, int *type, double *omega, size_t *point,
+                           size_t ndof, double rms[])
+{
+    static const char fn[] = "bifurcation";
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    if (type == NULL || omega == NULL || rms == NULL)
+        return fr_fail(hb, FRICREG_ENULL, "%s: %s is NULL", fn,
+                       type == NULL    ? "type"
+                       : omega == NULL ? "omega"
+                                       : "rms");
+    if (i >= hb->nbif)
+        return fr_fail(hb, FRICREG_EINVAL, "%s: i = %zu, %zu bifurcations located", fn, i,
+                       hb->nbif);
+    if (ndof != hb->n)
+        return fr_fail(hb, FRICREG_ESIZE, "%s: ndof = %zu, the driver has %zu", fn, ndof, hb->n);
+    const double *rec = hb->bifs + i * (3 + hb->n);
+    *type = (int)rec[0];
+    *omega = rec[1];
+    if (point != NULL)
+        *point = (size_t)rec[2];
+    memcpy(rms, rec + 3, hb->n * sizeof(double));
+    return FRICREG_OK;
 }
 
 int fricreg_hb_continue(fricreg_hb *hb, double omega0, double omega1, size_t nq, const double q0[])
@@ -451,6 +616,7 @@ int fricreg_hb_continue(fricreg_hb *hb, double omega0, double omega1, size_t nq,
     if (status != FRICREG_OK || (status = reserve(hb, 64)) != FRICREG_OK)
         return status;
     hb->npts = 0;
+    hb->nbif = 0;
     hb->have_branch = 1;
     if ((status = fr_hb_solve_at(hb, fn, omega0, q0)) != FRICREG_OK)
         return status;
@@ -460,7 +626,7 @@ int fricreg_hb_continue(fricreg_hb *hb, double omega0, double omega1, size_t nq,
                        .yo = hb->yo};
     b.qs = fr_hb_scale(hb, hb->qw);
     memcpy(hb->qt, hb->qw, nq * sizeof(double));
-    if ((status = store_point(hb, omega0)) != FRICREG_OK)
+    if ((status = store_point(hb, fn, omega0, 0.0, 0.0, 1)) != FRICREG_OK)
         return status;
     for (size_t j = 0; j < nq; j++)
         b.yc[j] = hb->qw[j] / b.qs;
@@ -470,8 +636,9 @@ int fricreg_hb_continue(fricreg_hb *hb, double omega0, double omega1, size_t nq,
     status = follow(hb, fn, &b, omega1);
     hb->branch_qs = b.qs;
     hb->branch_ws = b.ws;
-    if (status == FRICREG_OK)
-        hb->err = before;
+    struct fr_error after = hb->err; /* the bisections' failed trials are not the call's */
+    locate_bifurcations(hb, &b);
+    hb->err = status == FRICREG_OK ? before : after;
     return status;
 }
 

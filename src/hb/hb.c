@@ -176,6 +176,9 @@ void fricreg_hb_free(fricreg_hb *hb)
     free(hb->piv2);
     free(hb->pts);
     free(hb->qpts);
+    free(hb->xpts);
+    free(hb->bifs);
+    fr_hb_hill_free(hb);
     fricreg_aft_free(hb->aft);
     free(hb->sk);
     free(hb->nl);

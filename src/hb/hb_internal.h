@@ -13,6 +13,9 @@
 #include <cholmod.h>
 #include <umfpack.h>
 
+#include <gsl/gsl_eigen.h>
+#include <gsl/gsl_matrix.h>
+
 #include "base/error.h"
 #include "fricreg_aft.h"
 #include "fricreg_hb.h"
@@ -89,21 +92,44 @@ struct fricreg_hb {
     size_t *piv2;   /* [nq + 1] A's row interchanges (lu.c) */
     int iterations; /* of the last Newton solve */
 
-    /* the last solution */
+    /* the last solution, and its stability (stability.c) when that is on: XW(hb) numbers as a
+     * point's below */
     int have_solution;
     double omega_sol;
     double *qsol; /* [nq] */
+    double *xsol; /* [XW] */
+
+    /* Hill's method (stability.c), on with fricreg_hb_set_stability (dense models): N = n nc
+     * Fourier coefficients of x; the companion matrix of the quadratic eigenproblem [2N 2N],
+     * its eigenvalues [2N] complex, GSL's workspace; M's LU [n n] and pivots [n], a column [n] */
+    int stability;
+    gsl_matrix *hill;
+    double *hill_eval;
+    gsl_eigen_nonsymm_workspace *hill_work;
+    double *hill_mlu, *hill_col, *hill_x; /* hill_x [XW]: a trial point's, for bifurcations */
+    size_t *hill_piv;
 
     /* the continuation's points: [npts (1 + n)], Ω then the n RMS values; each point's
      * unknowns (q, then Ω) in qpts [npts (nq + 1)], for fricreg_hb_peak; the branch's scales,
      * and whether the model is still the branch's (cleared by a model change) */
     double *pts, *qpts;
     size_t npts, cap, qpts_stride; /* qpts holds cap points of qpts_stride = nq + 1 */
+    /* each point's extras [cap XW]: the tangent's Ω component, the sign of the bordered
+     * matrix's determinant, then (stability on) stable (1/0), the largest |multiplier|, and the
+     * 2n Floquet exponents (re, im); and the located bifurcations [cap (2 + n)]: the type
+     * (enum fricreg_hb_bifurcation_type), Ω, the n RMS values */
+    double *xpts, *bifs;
+    size_t xpts_stride, nbif;
     double branch_qs, branch_ws;
     int have_branch;
 
     struct fr_error err;
 };
+
+/* The numbers kept with each point (xpts) and the last solution: 2 (the tangent's Ω component,
+ * the determinant's sign), and with stability 2 + 4 n (stable, the largest |multiplier|, the 2n
+ * exponents). */
+#define FR_HB_XW(hb) ((hb)->stability ? 4 + 4 * (hb)->n : 2)
 
 /* Element e's sliders: their count, stiffnesses and slip forces (Jenkins: kt[e], mun[e]). */
 static inline size_t fr_hb_sliders(const fricreg_hb *hb, size_t e, const double **k,
@@ -184,6 +210,21 @@ int fr_hb_guess(fricreg_hb *hb, const char *fn, int stuck);
 
 /* The displacements' coefficients x[n nc] from the forces fq at the factored Ω. */
 void fr_hb_recover(const fricreg_hb *hb, double *x);
+
+/* Hill's method at the solution whose element Jacobians jq are in hb (the last residual's, with
+ * jac) at omega: into out[2n + 2] stable (1.0/0.0), the largest |Floquet multiplier| and the 2n
+ * exponents (re, im). FRICREG_OK, FRICREG_ESINGULAR (M), FRICREG_ENONFINITE, FRICREG_EINTEGRATOR
+ * (GSL's QR), messages recorded with fn. */
+int fr_hb_hill(fricreg_hb *hb, const char *fn, double omega, double *out);
+
+/* Whether some exponent of exps[4n] (re, im) at omega of kind which (0 real, 1 at ±Ω/2, 2
+ * complex; −1 any) is unstable; the kind of the exponent of largest real part. */
+int fr_hb_hill_unstable(const fricreg_hb *hb, double omega, const double *exps, int which);
+int fr_hb_hill_crossing(const fricreg_hb *hb, double omega, const double *exps);
+
+/* The workspaces of Hill's method allocated (on) or freed (off). */
+int fr_hb_hill_alloc(fricreg_hb *hb);
+void fr_hb_hill_free(fricreg_hb *hb);
 
 /* Each dof's RMS over a period from the forces fq at the factored Ω, into rms[n]. */
 void fr_hb_rms(const fricreg_hb *hb, double *rms);

@@ -139,6 +139,9 @@ int fr_hb_solve_at(fricreg_hb *hb, const char *fn, double omega, const double *q
         if ((status = fr_hb_newton(hb, fn)) == FRICREG_OK)
             break;
     }
+    /* the stability at the solution (the Jacobians jq of its last residual) */
+    if (status == FRICREG_OK && hb->stability)
+        status = fr_hb_hill(hb, fn, omega, hb->xsol + 2);
     if (status != FRICREG_OK)
         return status;
     memcpy(hb->qsol, hb->qw, hb->nq * sizeof(double));

@@ -2097,6 +2097,34 @@ static const struct script hb_normal = {
     "hb set_normal_elements", 2,    hb_normal_calls,   1,          0,       hb_iwan_open,
     hb_normal_call,           NULL, hb_normal_observe, hb_errcode, hb_close};
 
+/* Hill's method turned on: set_stability's allocations (the companion matrix, the eigenvalues,
+ * GSL's workspace on fricreg's memory, M's LU); the view solves with Jenkins elements and reads
+ * the solution's stability (FRICREG_EINVAL when set_stability failed: it stayed off). */
+static const char *const hb_stability_calls[] = {"set_elements", "set_stability"};
+
+static int hb_stability_call(void *obj, int i, struct view *v)
+{
+    (void)v;
+    const double J[2] = {0.0, 1.0}, kt[1] = {1.5}, mun[1] = {0.25};
+    return i == 0 ? fricreg_hb_set_elements(obj, 1, 2, J, kt, mun)
+                  : fricreg_hb_set_stability(obj, 1);
+}
+
+static void hb_stability_observe(void *obj, struct view *v)
+{
+    double q[7] = {0}, mu = 0.0;
+    int stable = -1;
+    see(v, fricreg_hb_solve(obj, 1.1, 7, NULL, q));
+    see_all(v, q, 7);
+    see(v, fricreg_hb_point_stability(obj, FRICREG_HB_SOLUTION, &stable, &mu));
+    see(v, stable);
+    see(v, mu);
+}
+
+static const struct script hb_stability = {
+    "hb set_stability", 2,    hb_stability_calls,   0,          0,       hb_iwan_open,
+    hb_stability_call,  NULL, hb_stability_observe, hb_errcode, hb_close};
+
 /* ---- Harmonic balance: every allocation inside solve and continue ----------------------------
  *
  * The scripts above set the driver up under the failing allocator and solve in the view, which is
@@ -2119,7 +2147,7 @@ enum { HB_JENKINS, HB_IWAN, HB_LIFTOFF };
 
 struct hb_case {
     const char *name;
-    int sparse, kind;
+    int sparse, kind, stability;
     double omega, omega0, omega1, ds, ds_max;
     size_t max_points;
 };
@@ -2130,8 +2158,9 @@ struct hb_case {
 struct hb_run {
     int status[3]; /* solve, displacement, continue */
     double q[14], x[14];
-    size_t npts;
-    double pts[3 * HB_MAX_POINTS]; /* Omega, rms[2] per point */
+    size_t npts, nbif;
+    double pts[3 * HB_MAX_POINTS];  /* Omega, rms[2] per point */
+    double stab[2 * HB_MAX_POINTS]; /* with stability: stable, mu_max per point */
 };
 
 /* The 2-dof model of the scripts above (M, K, Rayleigh or, sparse, the _csc setters with C),
@@ -2163,6 +2192,8 @@ static fricreg_hb *hb_case_new(const struct hb_case *c)
         status = fricreg_hb_set_excitation(hb, 2, pc, ps);
     if (status == FRICREG_OK)
         status = fricreg_hb_set_continuation(hb, c->ds, 1e-6, c->ds_max, c->max_points);
+    if (status == FRICREG_OK && c->stability)
+        status = fricreg_hb_set_stability(hb, 1);
     if (status != FRICREG_OK) {
         fricreg_hb_free(hb);
         return NULL;
@@ -2202,6 +2233,13 @@ static void hb_play(fricreg_hb *hb, const struct hb_case *c, struct hb_run *r, l
     for (size_t k = 0; k < r->npts && k < HB_MAX_POINTS; k++)
         if (fricreg_hb_point(hb, k, &r->pts[3 * k], 2, &r->pts[3 * k + 1]) != FRICREG_OK)
             NOTE("point %zu of %zu not readable", k, r->npts);
+    for (size_t k = 0; c->stability && k < r->npts && k < HB_MAX_POINTS; k++) {
+        int stable = -1;
+        if (fricreg_hb_point_stability(hb, k, &stable, &r->stab[2 * k + 1]) != FRICREG_OK)
+            NOTE("point %zu's stability not readable", k);
+        r->stab[2 * k] = stable;
+    }
+    r->nbif = fricreg_hb_bifurcations(hb);
     paused = was_paused;
 }
 
@@ -2225,20 +2263,24 @@ static const char *hb_judge(const struct hb_run *r, const struct hb_run *ref, si
                                           : "displacement failed but wrote x";
     if (r->status[2] == FRICREG_OK && r->npts != ref->npts)
         return "continue: OK with another number of points";
-    if (r->npts > ref->npts || !same_bits(r->pts, ref->pts, 3 * r->npts))
+    if (r->npts > ref->npts || !same_bits(r->pts, ref->pts, 3 * r->npts) ||
+        !same_bits(r->stab, ref->stab, 2 * r->npts))
         return "continue: the points kept differ from the run's with no failure";
     return "";
 }
 
 static const struct hb_case hb_cases[] = {
     /* dense: a branch of more than 64 points (the room for points doubles once) */
-    {"hb dense, Jenkins", 0, HB_JENKINS, 1.1, 1.0, 1.2, 0.01, 0.01, HB_MAX_POINTS},
-    {"hb dense, Iwan", 0, HB_IWAN, 1.1, 1.0, 1.2, 0.01, 0.01, HB_MAX_POINTS},
-    {"hb dense, lift-off", 0, HB_LIFTOFF, 1.1, 1.0, 1.2, 0.01, 0.01, HB_MAX_POINTS},
+    {"hb dense, Jenkins", 0, HB_JENKINS, 0, 1.1, 1.0, 1.2, 0.01, 0.01, HB_MAX_POINTS},
+    {"hb dense, Iwan", 0, HB_IWAN, 0, 1.1, 1.0, 1.2, 0.01, 0.01, HB_MAX_POINTS},
+    {"hb dense, lift-off", 0, HB_LIFTOFF, 0, 1.1, 1.0, 1.2, 0.01, 0.01, HB_MAX_POINTS},
+    /* Hill's method on: solve and continue allocate nothing more (the stored points' room
+     * grows with the points' extras) */
+    {"hb dense, lift-off, stability", 0, HB_LIFTOFF, 1, 1.1, 1.0, 1.2, 0.01, 0.01, HB_MAX_POINTS},
     /* sparse: every factor allocates (UMFPACK), so a short branch, in few steps */
-    {"hb sparse, Jenkins", 1, HB_JENKINS, 1.1, 1.2, 1.0, 0.25, 0.5, HB_MAX_POINTS},
-    {"hb sparse, Iwan", 1, HB_IWAN, 1.1, 1.0, 1.2, 0.25, 0.5, HB_MAX_POINTS},
-    {"hb sparse, lift-off", 1, HB_LIFTOFF, 1.1, 1.0, 1.2, 0.25, 0.5, HB_MAX_POINTS},
+    {"hb sparse, Jenkins", 1, HB_JENKINS, 0, 1.1, 1.2, 1.0, 0.25, 0.5, HB_MAX_POINTS},
+    {"hb sparse, Iwan", 1, HB_IWAN, 0, 1.1, 1.0, 1.2, 0.25, 0.5, HB_MAX_POINTS},
+    {"hb sparse, lift-off", 1, HB_LIFTOFF, 0, 1.1, 1.0, 1.2, 0.25, 0.5, HB_MAX_POINTS},
 };
 
 START_TEST(test_hb_solve_continue)
@@ -2596,6 +2638,14 @@ END_TEST
 START_TEST(test_hb_iwan)
 {
     struct tally t = fail_each_allocation(&hb_iwan);
+    ck_assert_int_eq(t.enomem, t.cases);
+}
+END_TEST
+
+/* set_stability's allocations fail cleanly: ENOMEM and stability still off */
+START_TEST(test_hb_stability)
+{
+    struct tally t = fail_each_allocation(&hb_stability);
     ck_assert_int_eq(t.enomem, t.cases);
 }
 END_TEST
@@ -3056,6 +3106,7 @@ static Suite *alloc_suite(void)
     tcase_add_test(drivers, test_hb_sparse);
     tcase_add_test(drivers, test_hb_iwan);
     tcase_add_test(drivers, test_hb_normal);
+    tcase_add_test(drivers, test_hb_stability);
     tcase_add_loop_test(drivers, test_structure_run, 0, N_SCHEMES);
     tcase_add_loop_test(drivers, test_structure_estimate_run, 0, N_SCHEMES);
     tcase_add_loop_test(drivers, test_structure_jenkins_run, 0, 3);

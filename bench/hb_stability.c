@@ -1,0 +1,115 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* hb_stability.c — the cost of Hill's stability (fricreg_hb_set_stability) per continuation
+ * point: the gap pair of tests/test_hb_stability.c (2 dofs, one lift-off element with a gap,
+ * H = 15: Hill's companion matrix of order 124) and the contact pair's three-mass chain
+ * variant at H = 7 (order 90), each branch followed with and without stability; the median over
+ * repeats of the time per stored point (the bifurcations' location included: it is part of
+ * fricreg_hb_continue; their count without/with stability printed), and the ratio
+ * with/without, target <= 3. Usage:
+ * fricreg-bench-hb-stability [repeats]. */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime */
+#include <stdio.h>
+#include <stdlib.h>
+#include <time.h>
+
+#include "bench.h"
+#include "fricreg_hb.h"
+
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+/* A model: n dofs, one element (lift-off when normal), H harmonics, the branch w0 .. w1. */
+struct model {
+    const char *name;
+    size_t n;
+    int H, normal;
+    double M[9], K[9], J[3], Jn[3], kt, mun, mu, n0, kn, pc[3], w0, w1;
+};
+
+/* Median seconds per stored point over repeats branches; the point count into *points. */
+static double per_point(const struct model *s, int stability, int repeats, size_t *points,
+                        size_t *bifs)
+{
+    double t[64], C[9], ps[3] = {0.0, 0.0, 0.0};
+    size_t n = s->n, nq = (s->normal ? 2 : 1) * (2 * (size_t)s->H + 1);
+    for (size_t i = 0; i < n * n; i++)
+        C[i] = 0.002 * s->K[i];
+    for (int k = 0; k < repeats; k++) {
+        fricreg_hb *hb = NULL;
+        if (fricreg_hb_create(n, 1, s->H, &hb) != FRICREG_OK)
+            return -1.0;
+        fricreg_hb_set_mass(hb, n, s->M);
+        fricreg_hb_set_stiffness(hb, n, s->K);
+        fricreg_hb_set_damping(hb, n, C);
+        if (s->normal)
+            fricreg_hb_set_normal_elements(hb, 1, n, s->J, s->Jn, &s->kt, &s->mu, &s->n0, &s->kn);
+        else
+            fricreg_hb_set_elements(hb, 1, n, s->J, &s->kt, &s->mun);
+        fricreg_hb_set_excitation(hb, n, s->pc, ps);
+        fricreg_hb_set_stability(hb, stability);
+        double t0 = now();
+        int status = fricreg_hb_continue(hb, s->w0, s->w1, nq, NULL);
+        double dt = now() - t0;
+        *points = fricreg_hb_points(hb);
+        *bifs = fricreg_hb_bifurcations(hb);
+        if (status != FRICREG_OK) {
+            fprintf(stderr, "%s: %s\n", s->name, fricreg_hb_errmsg(hb));
+            fricreg_hb_free(hb);
+            return -1.0;
+        }
+        t[k] = dt / (double)*points;
+        fricreg_hb_free(hb);
+    }
+    return bench_median(t, (size_t)repeats);
+}
+
+int main(int argc, char **argv)
+{
+    int repeats = argc > 1 ? atoi(argv[1]) : 7;
+    if (repeats < 1 || repeats > 64)
+        repeats = 7;
+    struct model gap = {.name = "gap pair, H = 15",
+                        .n = 2,
+                        .H = 15,
+                        .normal = 1,
+                        .M = {1, 0, 0, 1},
+                        .K = {140, -20, -20, 180},
+                        .J = {0, 1},
+                        .Jn = {-1, 0},
+                        .kt = 40.0,
+                        .mu = 0.01,
+                        .n0 = -10.0,
+                        .kn = 500.0,
+                        .pc = {2, 1},
+                        .w0 = 11.0,
+                        .w1 = 17.0};
+    struct model chain = {.name = "Jenkins chain, 3 dofs, H = 7",
+                          .n = 3,
+                          .H = 7,
+                          .M = {1, 0, 0, 0, 1, 0, 0, 0, 1},
+                          .K = {2, -1, 0, -1, 2, -1, 0, -1, 1},
+                          .J = {1, 0, 0},
+                          .kt = 20.0,
+                          .mun = 1.0,
+                          .pc = {0, 1, 0},
+                          .w0 = 0.5,
+                          .w1 = 2.0};
+    const struct model *models[2] = {&gap, &chain};
+    printf("# Hill's stability per continuation point: median of %d branches\n", repeats);
+    printf("%-30s %8s %6s %14s %14s %8s\n", "model", "points", "bifs", "without (ms)", "with (ms)",
+           "ratio");
+    for (int i = 0; i < 2; i++) {
+        size_t p0 = 0, p1 = 0, b0 = 0, b1 = 0;
+        double a = per_point(models[i], 0, repeats, &p0, &b0),
+               b = per_point(models[i], 1, repeats, &p1, &b1);
+        if (a < 0.0 || b < 0.0)
+            return EXIT_FAILURE;
+        printf("%-30s %8zu %2zu/%-3zu %14.3f %14.3f %8.2f\n", models[i]->name, p1, b0, b1, 1e3 * a,
+               1e3 * b, b / a);
+    }
+    return EXIT_SUCCESS;
+}

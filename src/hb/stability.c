@@ -1,0 +1,309 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* stability.c — the stability of a periodic solution by Hill's method (G. W. Hill 1886; Krack &
+ * Gross 2019, Sec. 5.3; L. Peletan et al., Nonlinear Dyn. 2013): a perturbation
+ * y(t) = e^{λt} p(t), p periodic with the real Fourier coefficients P (the layout of fricreg_hb.h,
+ * dof k's at P[nc k ..]), of M x'' + C x' + K x + J^T f(J x) = p(t) solves the quadratic
+ * eigenproblem
+ *
+ *     (λ² Δ2 + λ Δ1 + S) P = 0,   Δ2 = M ⊗ I,   Δ1 = C ⊗ I + 2 M ⊗ ∇,                      (Q)
+ *
+ * S the Jacobian of the full (not condensed) HB equations, K ⊗ I + C ⊗ Ω∇ + M ⊗ Ω²∇² +
+ * J^T (∂F/∂q) J with the elements' exact AFT Jacobians ∂F/∂q, and ∇ the derivative of one
+ * period's coefficients (a_h' = hΩ b_h, b_h' = −hΩ a_h; Ω folded into ∇ in Δ1). (Q) is solved
+ * as the eigenproblem of its companion matrix [0 I; −Δ2⁻¹ S, −Δ2⁻¹ Δ1] of order 2N, N = n nc, by
+ * GSL's gsl_eigen_nonsymm (balancing, Hessenberg reduction, Francis's double-shift QR). Its 2N
+ * eigenvalues hold each Floquet exponent λ many times over, λ + i k Ω, the truncation's error
+ * growing with |k|: the 2n of least |Im λ| (those within ±Ω/2, the imaginary-part criterion of
+ * Krack & Gross, Sec. 5.3.3) are taken as the exponents, the multipliers μ = e^{λ T}, T = 2π/Ω.
+ * A solution is stable when every exponent has Re λ T <= 1e-6 (|μ| <= 1 + 1e-6).
+ *
+ * The elements' stabilized hysteresis enters through its HB Jacobian, as in NLvib's Hill's
+ * method: the sliders' offsets, forgotten once they slip, are no state of their own here. */
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gsl/gsl_errno.h>
+
+#include "base/gsl_mem.h"
+#include "hb_internal.h"
+
+/* Re λ T above which a solution is unstable: the multipliers' rounding, far below the damping
+ * of any model worth a stability verdict. */
+#define STABLE_TOL 1e-6
+
+static const double TWO_PI = 6.283185307179586;
+
+int fr_hb_hill_alloc(fricreg_hb *hb)
+{
+    size_t n = hb->n, N2 = 2 * n * hb->nc;
+    fr_hb_hill_free(hb);
+    hb->hill = fr_gsl_matrix_new(N2, N2);
+    hb->hill_eval = malloc(2 * N2 * sizeof(double));
+    hb->hill_work = fr_gsl_eigen_nonsymm_new(N2);
+    hb->hill_mlu = malloc((n * n + n + 2 * (4 + 4 * n)) * sizeof(double));
+    hb->hill_piv = malloc(n * sizeof *hb->hill_piv);
+    if (!hb->hill || !hb->hill_eval || !hb->hill_work || !hb->hill_mlu || !hb->hill_piv) {
+        fr_hb_hill_free(hb);
+        return FRICREG_ENOMEM;
+    }
+    hb->hill_col = hb->hill_mlu + n * n;
+    hb->xsol = hb->hill_col + n;
+    hb->hill_x = hb->xsol + 4 + 4 * n;
+    return FRICREG_OK;
+}
+
+void fr_hb_hill_free(fricreg_hb *hb)
+{
+    free(hb->hill); /* one block each (gsl_mem.h) */
+    free(hb->hill_eval);
+    free(hb->hill_work);
+    free(hb->hill_mlu);
+    free(hb->hill_piv);
+    hb->hill = NULL;
+    hb->hill_eval = hb->hill_mlu = hb->hill_col = hb->xsol = hb->hill_x = NULL;
+    hb->hill_work = NULL;
+    hb->hill_piv = NULL;
+}
+
+/* The dense model's damping entry: C, or a0 M + a1 K. */
+static double damping(const fricreg_hb *hb, size_t idx)
+{
+    return hb->rayleigh ? hb->a0 * hb->M[idx] + hb->a1 * hb->K[idx] : hb->C[idx];
+}
+
+/* The linear parts of S and Δ1 of (Q) for dofs k, l (M, C, K entries m, c, kk) into the
+ * companion's lower blocks (rows N.., columns 0.. and N..): for harmonic h, with w = hΩ, on
+ * (a_h, b_h): S = [K − w² M, w C; −w C, K − w² M], Δ1 = [C, 2 w M; −2 w M, C]; h = 0: S = K,
+ * Δ1 = C. */
+static void linear_entry(fricreg_hb *hb, double omega, size_t k, size_t l, double m, double c,
+                         double kk)
+{
+    size_t nc = hb->nc, N = hb->n * nc, r = N + k * nc, col = l * nc;
+    gsl_matrix *A = hb->hill;
+    *gsl_matrix_ptr(A, r, col) += kk;
+    *gsl_matrix_ptr(A, r, N + col) += c;
+    for (int h = 1; h <= hb->H; h++) {
+        size_t a = 2 * (size_t)h - 1, b = a + 1;
+        double w = h * omega, kd = kk - w * w * m;
+        *gsl_matrix_ptr(A, r + a, col + a) += kd;
+        *gsl_matrix_ptr(A, r + a, col + b) += w * c;
+        *gsl_matrix_ptr(A, r + b, col + b) += kd;
+        *gsl_matrix_ptr(A, r + b, col + a) -= w * c;
+        *gsl_matrix_ptr(A, r + a, N + col + a) += c;
+        *gsl_matrix_ptr(A, r + a, N + col + b) += 2.0 * w * m;
+        *gsl_matrix_ptr(A, r + b, N + col + b) += c;
+        *gsl_matrix_ptr(A, r + b, N + col + a) -= 2.0 * w * m;
+    }
+}
+
+/* Every entry of M, C, K (the dense arrays, or the sparse pattern of D_h with both triangles,
+ * sparse.c) through linear_entry, and M itself into hill_mlu [n n]. */
+static void linear_blocks(fricreg_hb *hb, double omega)
+{
+    size_t n = hb->n;
+    if (!hb->sparse) {
+        for (size_t k = 0; k < n; k++)
+            for (size_t l = 0; l < n; l++) {
+                size_t i = k * n + l;
+                linear_entry(hb, omega, k, l, hb->M[i], damping(hb, i), hb->K[i]);
+                hb->hill_mlu[i] = hb->M[i];
+            }
+        return;
+    }
+    memset(hb->hill_mlu, 0, n * n * sizeof(double));
+    for (size_t l = 0; l < n; l++)
+        for (int64_t p = hb->Dp[l]; p < hb->Dp[l + 1]; p++) {
+            size_t k = (size_t)hb->Di[p];
+            double c = hb->rayleigh ? hb->a0 * hb->vM[p] + hb->a1 * hb->vK[p] : hb->vC[p];
+            linear_entry(hb, omega, k, l, hb->vM[p], c, hb->vK[p]);
+            hb->hill_mlu[k * n + l] = hb->vM[p];
+        }
+}
+
+/* J^T (∂F/∂q) J added to S: element e's Jacobian block (rows s nc + c, columns s2 nc + c2 of
+ * its rpe rows) between J's rows rpe e + s and rpe e + s2. */
+static void element_blocks(fricreg_hb *hb)
+{
+    size_t n = hb->n, nc = hb->nc, N = n * nc, rpe = hb->rpe, b = rpe * nc;
+    gsl_matrix *A = hb->hill;
+    for (size_t e = 0; e < hb->me; e++)
+        for (size_t s = 0; s < rpe; s++)
+            for (size_t s2 = 0; s2 < rpe; s2++) {
+                const double *Jr = hb->J + (rpe * e + s) * n, *Jr2 = hb->J + (rpe * e + s2) * n;
+                for (size_t c = 0; c < nc; c++)
+                    for (size_t c2 = 0; c2 < nc; c2++) {
+                        double v = hb->jq[e * b * b + (s * nc + c) * b + s2 * nc + c2];
+                        if (v == 0.0)
+                            continue;
+                        for (size_t k = 0; k < n; k++)
+                            for (size_t l = 0; l < n; l++)
+                                if (Jr[k] != 0.0 && Jr2[l] != 0.0)
+                                    *gsl_matrix_ptr(A, N + k * nc + c, l * nc + c2) += Jr[k] * v *
+                                                                                       Jr2[l];
+                    }
+            }
+}
+
+/* The lower blocks times −Δ2⁻¹ = −M⁻¹ ⊗ I (M's LU, checked), and the identity above. */
+static int companion(fricreg_hb *hb, const char *fn)
+{
+    size_t n = hb->n, nc = hb->nc, N = n * nc;
+    gsl_matrix *A = hb->hill;
+    double mmax = 0.0; /* hill_mlu holds M (linear_blocks) */
+    for (size_t k = 0; k < n * n; k++)
+        mmax = fmax(mmax, fabs(hb->hill_mlu[k]));
+    fr_hb_lu_factor(hb->hill_mlu, n, hb->hill_piv);
+    for (size_t k = 0; k < n; k++)
+        if (!(fabs(hb->hill_mlu[k * n + k]) > 1e-14 * mmax))
+            return fr_fail(hb, FRICREG_ESINGULAR,
+                           "%s: stability: the mass matrix is singular (pivot %zu of its LU "
+                           "factor: %g, largest entry %g): Hill's method needs M^-1",
+                           fn, k, hb->hill_mlu[k * n + k], mmax);
+    for (size_t j = 0; j < 2 * N; j++)
+        for (size_t c = 0; c < nc; c++) {
+            for (size_t k = 0; k < n; k++)
+                hb->hill_col[k] = gsl_matrix_get(A, N + k * nc + c, j);
+            fr_hb_lu_solve_factored(hb->hill_mlu, n, hb->hill_piv, hb->hill_col);
+            for (size_t k = 0; k < n; k++)
+                gsl_matrix_set(A, N + k * nc + c, j, -hb->hill_col[k]);
+        }
+    for (size_t j = 0; j < N; j++)
+        gsl_matrix_set(A, j, N + j, 1.0);
+    return FRICREG_OK;
+}
+
+/* The 2n eigenvalues of least |Im λ| (a selection, out of place) as (re, im) into out[4n]. */
+static void select_exponents(const fricreg_hb *hb, double *out)
+{
+    size_t N2 = 2 * hb->n * hb->nc, want = 2 * hb->n;
+    const double *ev = hb->hill_eval;
+    double last = -1.0;
+    size_t last_at = 0;
+    for (size_t i = 0; i < want; i++) {
+        /* the next by (|Im|, index): ties (conjugates, a real pair) in index order */
+        size_t best = N2;
+        for (size_t j = 0; j < N2; j++) {
+            double a = fabs(ev[2 * j + 1]);
+            if (a < last || (a == last && j <= last_at))
+                continue;
+            if (best == N2 || a < fabs(ev[2 * best + 1]))
+                best = j;
+        }
+        out[2 * i] = ev[2 * best];
+        out[2 * i + 1] = ev[2 * best + 1];
+        last = fabs(ev[2 * best + 1]);
+        last_at = best;
+    }
+}
+
+int fr_hb_hill(fricreg_hb *hb, const char *fn, double omega, double *out)
+{
+    size_t N2 = 2 * hb->n * hb->nc;
+    gsl_matrix_set_zero(hb->hill);
+    linear_blocks(hb, omega);
+    element_blocks(hb);
+    int status = companion(hb, fn);
+    if (status != FRICREG_OK)
+        return status;
+    for (size_t k = 0; k < N2 * N2; k++)
+        if (!isfinite(hb->hill->data[k]))
+            return fr_fail(hb, FRICREG_ENONFINITE,
+                           "%s: stability: Hill's matrix overflows at Omega = %g", fn, omega);
+    /* a QR iteration that does not converge (30 sweeps per eigenvalue) GSL 2.7 reports through
+     * its error handler as well as its status (francis.c), and the default handler aborts:
+     * the input is finite and balanced here, on which it has not been seen to fail */
+    gsl_vector_complex_view ev = gsl_vector_complex_view_array(hb->hill_eval, N2);
+    if (gsl_eigen_nonsymm(hb->hill, &ev.vector, hb->hill_work) != GSL_SUCCESS)
+        return fr_fail(hb, FRICREG_EINTEGRATOR,
+                       "%s: stability: the QR iteration on Hill's matrix did not converge at "
+                       "Omega = %g",
+                       fn, omega);
+    select_exponents(hb, out + 2);
+    double T = TWO_PI / omega, top = -INFINITY;
+    for (size_t i = 0; i < 2 * hb->n; i++)
+        top = fmax(top, out[2 + 2 * i] * T);
+    out[0] = top <= STABLE_TOL ? 1.0 : 0.0;
+    out[1] = exp(top);
+    return FRICREG_OK;
+}
+
+/* An exponent's kind: 0 real (a multiplier crossing +1: a fold or branch point), 1 at ±Ω/2 (a
+ * real negative multiplier: period doubling), 2 complex (Neimark–Sacker), to 1e-6 of Ω. */
+static int kind(double im, double omega)
+{
+    double a = fabs(im);
+    return a <= 1e-6 * omega ? 0 : a >= (0.5 - 1e-6) * omega ? 1 : 2;
+}
+
+int fr_hb_hill_unstable(const fricreg_hb *hb, double omega, const double *exps, int which)
+{
+    for (size_t i = 0; i < 2 * hb->n; i++)
+        if ((which < 0 || kind(exps[2 * i + 1], omega) == which) &&
+            exps[2 * i] * TWO_PI / omega > STABLE_TOL)
+            return 1;
+    return 0;
+}
+
+int fr_hb_hill_crossing(const fricreg_hb *hb, double omega, const double *exps)
+{
+    size_t top = 0;
+    for (size_t i = 1; i < 2 * hb->n; i++)
+        if (exps[2 * i] > exps[2 * top])
+            top = i;
+    return kind(exps[2 * top + 1], omega);
+}
+
+int fricreg_hb_set_stability(fricreg_hb *hb, int enable)
+{
+    static const char fn[] = "set_stability";
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    if (enable != 0 && enable != 1)
+        return fr_fail(hb, FRICREG_EINVAL, "%s: enable = %d must be 0 or 1", fn, enable);
+    if (enable && hb->n * hb->nc > FRICREG_HB_MAX_HILL)
+        return fr_fail(hb, FRICREG_EINVAL,
+                       "%s: ndof (2H + 1) = %zu, Hill's method is limited to %d coefficients", fn,
+                       hb->n * hb->nc, FRICREG_HB_MAX_HILL);
+    if (enable == hb->stability)
+        return FRICREG_OK;
+    if (enable && fr_hb_hill_alloc(hb) != FRICREG_OK)
+        return fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for Hill's matrix of order %zu", fn,
+                       2 * hb->n * hb->nc);
+    if (!enable)
+        fr_hb_hill_free(hb);
+    hb->stability = enable;
+    /* the stored points' and the last solution's extras have no stability (or another width) */
+    hb->have_solution = 0;
+    hb->have_branch = 0;
+    hb->npts = 0;
+    hb->nbif = 0;
+    return FRICREG_OK;
+}
+
+int fricreg_hb_point_stability(fricreg_hb *hb, size_t k, int *stable, double *mu_max)
+{
+    static const char fn[] = "point_stability";
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    if (stable == NULL || mu_max == NULL)
+        return fr_fail(hb, FRICREG_ENULL, "%s: %s is NULL", fn,
+                       stable == NULL ? "stable" : "mu_max");
+    if (!hb->stability)
+        return fr_fail(hb, FRICREG_EINVAL, "%s: stability is off (fricreg_hb_set_stability)", fn);
+    const double *x;
+    if (k == FRICREG_HB_SOLUTION) {
+        if (!hb->have_solution)
+            return fr_fail(hb, FRICREG_EINVAL,
+                           "%s: no solution (none yet, or the model changed since)", fn);
+        x = hb->xsol;
+    } else {
+        if (k >= hb->npts)
+            return fr_fail(hb, FRICREG_EINVAL, "%s: k = %zu, %zu points stored", fn, k, hb->npts);
+        x = hb->xpts + k * hb->xpts_stride;
+    }
+    *stable = x[2] != 0.0;
+    *mu_max = x[3];
+    return FRICREG_OK;
+}
