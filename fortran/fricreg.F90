@@ -410,6 +410,9 @@ module fricreg
     procedure :: stability => hb_stability
     procedure :: bifurcations => hb_bifurcations
     procedure :: bifurcation => hb_bifurcation
+    procedure :: nma => hb_nma
+    procedure :: nma_points => hb_nma_points
+    procedure :: nma_point => hb_nma_point
     procedure, private :: hb_shape
     final :: hb_final
   end type
@@ -3718,6 +3721,50 @@ contains
       point = int(k) + 1
     end if
   end function hb_bifurcation
+
+  !> The backbone of mode `mode` (1 <= mode <= ndof, by increasing linearized frequency) at
+  !> npoints modal amplitudes from a0 to a1 (fricreg_hb_nma: the extended periodic motion
+  !> concept); damping one of FRICREG_HB_NMA_DAMPING_MATRIX (absent) or _MODAL. Its statuses.
+  function hb_nma(self, mode, a0, a1, npoints, damping) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    integer, intent(in) :: mode, npoints
+    real(c_double), intent(in) :: a0, a1
+    integer(c_int), intent(in), optional :: damping
+    integer(c_int) :: status, d
+    d = FRICREG_HB_NMA_DAMPING_MATRIX
+    if (present(damping)) d = damping
+    status = self%ready('nma', 'HB driver')
+    if (status == FRICREG_OK .and. (mode < 1 .or. npoints < 0)) &
+      status = self%fail(FRICREG_EINVAL, 'nma: mode must be >= 1 (Fortran counts from 1), '// &
+                         'npoints >= 0')
+    if (status == FRICREG_OK) status = self%record(fricreg_hb_nma(self%ptr, as_size(mode - 1), d, &
+                                                     a0, a1, as_size(npoints)))
+  end function hb_nma
+
+  !> Number of points of the last backbone (0 if none).
+  integer function hb_nma_points(self)
+    class(fricreg_hb_driver), intent(in) :: self
+    hb_nma_points = int(fricreg_hb_nma_points(self%ptr))
+  end function hb_nma_points
+
+  !> Point i (1 <= i <= nma_points()) of the last backbone: its modal amplitude, natural
+  !> frequency omega (rad/s), damping ratio zeta and, if present, the displacements'
+  !> coefficients x(2H+1, ndof) (column k dof k), fricreg_hb_nma_point. Its statuses;
+  !> FRICREG_ESIZE.
+  function hb_nma_point(self, i, amplitude, omega, zeta, x) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    integer, intent(in) :: i
+    real(c_double), intent(inout) :: amplitude, omega, zeta
+    real(c_double), intent(inout), contiguous, optional :: x(:, :)
+    integer(c_int) :: status
+    status = self%ready('nma_point', 'HB driver')
+    if (status == FRICREG_OK .and. present(x)) &
+      status = self%hb_shape('nma_point', 'x', x, self%nc, self%n)
+    if (status == FRICREG_OK .and. i < 1) &
+      status = self%fail(FRICREG_EINVAL, 'nma_point: i must be >= 1 (Fortran counts from 1)')
+    if (status == FRICREG_OK) status = self%record(fricreg_hb_nma_point(self%ptr, as_size(i - 1), &
+                                                     amplitude, omega, zeta, self%n, self%nc, x))
+  end function hb_nma_point
 #endif
 
 end module fricreg

@@ -32,10 +32,14 @@
 !   FRHBSB(H, K, ISTAB, MUMAX, STAT)                  _point_stability (K from 1; 0: solution)
 !   FRHBBN(H, NB, STAT)                               _bifurcations
 !   FRHBBF(H, I, ITYPE, OMEGA, K, NDOF, RMS, STAT)    _bifurcation (I, K from 1)
+!   FRHBNM(H, MODE, IDAMP, A0, A1, NP, STAT)          _nma (MODE from 1)
+!   FRHBNN(H, NP, STAT)                               _nma_points
+!   FRHBNQ(H, I, A, OMEGA, ZETA, NDOF, NC, X, STAT)   _nma_point (I from 1)
 !   FRHBER(H, CODE, MSG, STAT)                        _errcode, _errmsg
 ! Refused here, before C sees them, with FRICREG_EINVAL: FRHBCR's NDOF or M below 1, a
 ! negative MAXPT, IGUESS other than 0 or 1, and a K or IDOF below 1 (counts that would wrap
-! into size_t or C's 0-based index; FRHBSB's K below 0).
+! into size_t or C's 0-based index; FRHBSB's K below 0), FRHBNM's MODE below 1 or negative NP,
+! FRHBNQ's I below 1.
 
 !> FRHBCR(NDOF, M, NH, H, STAT): a driver for NDOF >= 1 degrees of freedom, M >= 1 Jenkins
 !> elements and NH harmonics (1 <= NH <= FRICREG_HB_MAX_HARMONICS) into H.
@@ -426,6 +430,56 @@ subroutine frhbbf(h, i, itype, omega, k, ndof, rms, stat)
     k = int(kp) + 1
   end if
 end subroutine frhbbf
+
+!> FRHBNM(H, MODE, IDAMP, A0, A1, NP, STAT): the backbone of mode MODE (1 <= MODE <= NDOF, by
+!> increasing linearized frequency) at NP modal amplitudes from A0 to A1; IDAMP one of
+!> FRICREG_HB_NMA_DAMPING_MATRIX or _MODAL (fricreg_hb_nma).
+subroutine frhbnm(h, mode, idamp, a0, a1, np, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: mode, idamp, np
+  double precision, intent(in) :: a0, a1
+  integer, intent(out) :: stat
+  if (mode < 1 .or. np < 0) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  stat = int(fricreg_hb_nma(fricreg_handle_to_ptr(h), int(mode - 1, c_size_t), int(idamp, c_int), &
+                            a0, a1, int(np, c_size_t)))
+end subroutine frhbnm
+
+!> FRHBNN(H, NP, STAT): the number of points NP of the last backbone.
+subroutine frhbnn(h, np, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(out) :: np, stat
+  np = int(fricreg_hb_nma_points(fricreg_handle_to_ptr(h)))
+  stat = int(FRICREG_OK)
+end subroutine frhbnn
+
+!> FRHBNQ(H, I, A, OMEGA, ZETA, NDOF, NC, X, STAT): point I (from 1) of the last backbone: its
+!> modal amplitude A, natural frequency OMEGA, damping ratio ZETA and the displacements'
+!> coefficients X(NC, NDOF), NC = 2 NH + 1 (fricreg_hb_nma_point).
+subroutine frhbnq(h, i, a, omega, zeta, ndof, nc, x, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: i, ndof, nc
+  double precision, intent(inout) :: a, omega, zeta
+  double precision, intent(inout) :: x(*)
+  integer, intent(out) :: stat
+  if (i < 1 .or. ndof < 0 .or. nc < 0) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  stat = int(fricreg_hb_nma_point(fricreg_handle_to_ptr(h), int(i - 1, c_size_t), a, omega, zeta, &
+                                  int(ndof, c_size_t), int(nc, c_size_t), x))
+end subroutine frhbnq
 
 !> FRHBER(H, CODE, MSG, STAT): code and message of the driver's last failure.
 subroutine frhber(h, code, msg, stat)

@@ -381,6 +381,105 @@ FRICREG_API int fricreg_hb_solve(fricreg_hb *hb, double omega, size_t nq, const 
  *  call moved: they are redone, with UMFPACK's factors). Since 1.6. */
 FRICREG_API int fricreg_hb_displacement(fricreg_hb *hb, size_t ndof, size_t nc, double x[]);
 
+/** \name Nonlinear modes
+ *  The backbone of a mode: its natural frequency ω and damping ratio ζ as functions of its
+ *  amplitude, by the extended periodic motion concept (EPMC: M. Krack, "Nonlinear modal analysis
+ *  of nonconservative systems: extension of the periodic motion concept", Computers &
+ *  Structures 154, 2015, pp. 59–71), on the model, elements and Newton settings of the forced
+ *  response; the excitation is not used (nor changed). The periodic free motion with the
+ *  dissipation made up by an artificial negative mass-proportional damping ξ M,
+ *
+ *      M x'' + (C − ξ M) x' + K x + J^T f(J x) = 0,      ζ = ξ / (2 ω),
+ *
+ *  is solved by HB for its harmonics, ω and ξ, condensed on q = J x as (R) with no load and
+ *  D_h = K − (hω)² M + i hω (C − ξ M), closed by the amplitude and phase conditions on the
+ *  first harmonic along the mode's linear shape φ_k (mass-normalized, φ_k^T M φ_k = 1):
+ *  φ_k^T M X_1 = a (real), i.e. the modal coordinate is a cos ωt. The condensation needs each
+ *  D_h(ω, ξ) nonsingular along the backbone, as the forced response does: a mode that no
+ *  element takes part in (every element at a node of it) is a mode of the structure without
+ *  its elements, whose D_1 is singular there (FRICREG_ESINGULAR).
+ *  \{ */
+
+/** The linear damping in a nonlinear mode (fricreg_hb_nma). Values are fixed forever. Since
+ *  1.7. */
+enum fricreg_hb_nma_damping {
+    /** C (or Rayleigh's) as set: ζ includes it, exactly so for a mode of proportional damping. */
+    FRICREG_HB_NMA_DAMPING_MATRIX = 0,
+    /** C replaced by ξ_k M, ξ_k = φ_k^T C φ_k = 2 ζ_k ω_k the linear mode's: the mode's own
+     *  linear damping without its coupling to the others (Krack 2015, Sec. 3). */
+    FRICREG_HB_NMA_DAMPING_MODAL = 1
+};
+
+/** Follow the backbone of mode k from the modal amplitude a0 to a1 (EPMC, the section's
+ *  comment): npoints points at the amplitudes a_i = a0 (a1/a0)^(i/(npoints−1)), each solved by
+ *  Newton's method with the exact Jacobian (fricreg_hb_set_newton's tolerance and iterations, on (R) and
+ *  on the amplitude condition relative to a) on the unknowns q, ω, ξ (ω and ξ derivatives of the
+ *  condensation as for the continuation's). The march starts at the linear mode of the
+ *  structure with its elements stuck (K_0 = K + J^T diag(k) J, k the elements' stiffnesses: kt, the
+ *  sum of an Iwan element's sliders of nonzero slip force, with lift-off kt and kn where the
+ *  preload N0 > 0 closes the contact; K_0 φ = ω_k² M φ by GSL's symmetric eigensolver after
+ *  the Cholesky factor of M, mode 0 the lowest), at a0 or, if an element would slip (or open)
+ *  below a0, at half the amplitude where the first one does, where the mode is the linear one
+ *  exactly (ω = ω_k, ζ = ζ_k); it proceeds by natural-parameter continuation in log a, the
+ *  predictor the secant of the last two solutions in (q/a, ω, ξ), a step whose corrector fails
+ *  halved, down to 1/1024 of the grid's step. A friction-damped mode's backbone is monotone in
+ *  a (no fold: the amplitude is a natural parameter); a mode that folds in a (an internal
+ *  resonance) stops the march. The points are stored (fricreg_hb_nma_points,
+ *  fricreg_hb_nma_point), replacing those of an earlier call; the forced response's solution
+ *  and branch are not changed.
+ *
+ *  Cost per Newton iteration: the H + 1 factors of the forced response and a real LU of order
+ *  m (2H + 1) + 2; once per call a dense eigenproblem of order ndof (so ndof <= 4096: a sparse
+ *  model's matrices are densified for it).
+ *
+ *  mode     k, 0 <= k < ndof, in ascending order of the linearized natural frequencies.
+ *  damping  one of enum fricreg_hb_nma_damping.
+ *  a0, a1   modal amplitudes, 0 < a0 < a1 (finite): displacement units times the square root
+ *           of mass units (φ_k^T M X_1 with φ_k mass-normalized; for a unit mass, displacement).
+ *  npoints  points, 2 <= npoints <= the continuation's max_points (fricreg_hb_set_continuation).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb is NULL; FRICREG_EINVAL if the elements were not
+ *  set, mode >= ndof, damping is not an enumerator, not 0 < a0 < a1, npoints is out of range,
+ *  ndof > 4096, or the stuck structure's mode k has ω_k² <= 0; FRICREG_ENONFINITE if a0 or a1
+ *  is NaN or infinite, or an intermediate overflows (as fricreg_hb_solve); FRICREG_ENOTPSD if
+ *  M is not positive definite (a pivot of its Cholesky factor below 1e-14 of its largest
+ *  diagonal entry); FRICREG_ESINGULAR if some D_h(ω, ξ) or Newton's matrix is singular (as
+ *  fricreg_hb_solve); FRICREG_EWORK if Newton did not converge (the step halved ten times);
+ *  FRICREG_EINTEGRATOR as fricreg_hb_solve; FRICREG_ENOMEM. Allocates (npoints (nq + 3) +
+ *  (nq + 2)² + O(H m² + ndof)) doubles, and 4 ndof² doubles while the linear mode is found. On
+ *  failure after the arguments' checks the earlier points are gone and the points reached are
+ *  kept. Since 1.7 (FRICREG_1.7). */
+FRICREG_API int fricreg_hb_nma(fricreg_hb *hb, size_t mode, int damping, double a0, double a1,
+                               size_t npoints);
+
+/** Number of points stored by the last fricreg_hb_nma; 0 if none or hb is NULL. Returns that
+ *  number, not a status. Since 1.7 (FRICREG_1.7). */
+FRICREG_API size_t fricreg_hb_nma_points(const fricreg_hb *hb);
+
+/** One point of the last backbone (fricreg_hb_nma): its amplitude, natural frequency, damping
+ *  ratio and, if x is not NULL, the displacements' Fourier coefficients of the nonlinear mode's
+ *  periodic motion (the free motion of the section's equation, modal coordinate a cos ωt),
+ *  from (HB) with no load, X_h = −D_h^-1 J^T F_h (one factorization of every D_h).
+ *
+ *  i           point index, 0 <= i < fricreg_hb_nma_points(hb), by increasing amplitude.
+ *  amplitude   out: its modal amplitude a (fricreg_hb_nma's units).
+ *  omega       out: its natural frequency ω, rad/s.
+ *  zeta        out: its damping ratio ζ = ξ/(2ω), nondimensional.
+ *  ndof, nc    with x: the driver's degrees of freedom and 2H + 1; ignored when x is NULL.
+ *  x[ndof nc]  out, or NULL: dof k's coefficients (x0, a_1, b_1, ..., a_H, b_H) at x[nc k ..],
+ *              displacement units, as fricreg_hb_displacement's.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb, amplitude, omega or zeta is NULL; FRICREG_EINVAL
+ *  if i is out of range, or x is given and the model or elements changed since fricreg_hb_nma;
+ *  FRICREG_ESIZE if x is given and ndof or nc is not the driver's; FRICREG_ESINGULAR,
+ *  FRICREG_EINTEGRATOR as fricreg_hb_solve (not for a point that was solved: the same
+ *  evaluation succeeded there), FRICREG_ENOMEM (a sparse model: UMFPACK's factors). Nothing is
+ *  written on failure. Since 1.7 (FRICREG_1.7). */
+FRICREG_API int fricreg_hb_nma_point(fricreg_hb *hb, size_t i, double *amplitude, double *omega,
+                                     double *zeta, size_t ndof, size_t nc, double x[]);
+
+/** \} */
+
 /** Follow the periodic response from omega0 to omega1 by pseudo-arclength continuation in Ω
  *  (Keller's, Krack & Gross Ch. 5): from the solution at omega0 (fricreg_hb_solve's, from q0
  *  or the stuck guess), a tangent predictor and a Newton corrector with a line search on (R)

@@ -645,6 +645,39 @@ expect_usage_error "^fricreg-sim: --normal-params $d/Q_bad.txt: .*kn" $hbs --ome
 expect_usage_error "^fricreg-sim: --iwan-params $d/P1.txt: line 1: 1 numbers: give pairs" $hbs --omega-start 1 --omega-end 2 --iwan-params $d/P1.txt
 expect_usage_error "^fricreg-sim: --jenkins: missing (a file is required)" hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --omega-start 1 --omega-end 2
 
+# ---- nma: the backbone of a nonlinear mode (fricreg_hb_nma) from the files of hb.
+# One unit mass on a unit spring with a Jenkins element kt = 2, mu N = 3 at H = 1: stuck for
+# a <= 1.5 (omega^2 = 3, zeta = 0); beyond, with cos(beta) = 1 - 3/a, the describing function's
+# omega^2 = 1 + (2/pi)(beta - sin(2 beta)/2), zeta = 12 (a - 1.5) / (2 pi a^2 omega^2)
+# (tests/test_hb_nma.c derives it): every row of --output backbone within 1e-9.
+d=$tmp/nma
+mkdir -p "$d"
+printf '%s\n' "%%MatrixMarket matrix coordinate real symmetric" "1 1 1" "1 1 1" >"$d/M.mtx"
+printf '%s\n' "%%MatrixMarket matrix coordinate real general" "1 1 1" "1 1 1" >"$d/J.mtx"
+echo "2 3" >"$d/P.txt"
+nma="nma --mass $d/M.mtx --stiffness $d/M.mtx --jenkins $d/J.mtx --jenkins-params $d/P.txt --harmonics 1 --amplitude-start 0.5 --amplitude-end 500"
+total=$((total + 1))
+"$sim" $nma --points 12 --output backbone >"$d/backbone.csv" 2>"$d/err"
+if [ "$(head -n 1 "$d/backbone.csv")" != "amplitude,omega,zeta" ] || ! awk -F, 'NR > 1 { a = $1; w2 = 3; z = 0
+        if (a > 1.5) { c = 1 - 3 / a; b = atan2(sqrt(1 - c * c), c); pi = atan2(0, -1)
+            w2 = 1 + 2 / pi * (b - sin(2 * b) / 2); z = 12 * (a - 1.5) / (2 * pi * a * a * w2) }
+        e = ($2 * $2 - w2) / w2; if (e < 0) e = -e; if (e > big) big = e
+        e = $3 - z; if (e < 0) e = -e; if (e > 1e-9 * (z > 0 ? z : 1)) bad++; rows++ }
+        END { exit !(rows == 12 && big < 1e-9 && !bad) }' "$d/backbone.csv"; then
+    echo "FAIL: nma backbone against the closed form: $(head -n 4 "$d/backbone.csv") $(cat "$d/err")"; fails=$((fails + 1))
+fi
+total=$((total + 1))
+"$sim" $nma >"$d/summary.json" 2>"$d/err"
+if ! grep -q '"command": "nma".*"first": {"amplitude": 0.5, "omega": 1.73205080756887[0-9]*, "zeta": 0}' "$d/summary.json"; then
+    echo "FAIL: nma summary: $(cat "$d/summary.json" "$d/err")"; fails=$((fails + 1))
+fi
+expect_output '^usage: fricreg-sim nma --mass M\.mtx --stiffness K\.mtx' nma --help
+expect_output '^  nma         ' --help
+expect_usage_error "^fricreg-sim: --amplitude-end: missing" nma --mass $d/M.mtx --stiffness $d/M.mtx --jenkins $d/J.mtx --jenkins-params $d/P.txt --amplitude-start 1
+expect_usage_error "^fricreg-sim: --amplitude-end: must be above" $nma --amplitude-end 0.5
+expect_usage_error "^fricreg-sim: --mode: beyond" $nma --mode 2
+expect_usage_error "^fricreg-sim: --linear-damping: " $nma --linear-damping none
+
 # ---- hold, belt, disk: the reference problems beyond the paper (src/problems/, the code the
 # benchmarks run; docs/laws2d.md). Values against the bench and tests/test_hold.c.
 # num FIELD FILE: the number after "FIELD": in a JSON summary.

@@ -12,14 +12,14 @@ trap 'rm -rf "$tmp"' EXIT
 fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
 
 # Known to the parser only to be refused with a reason (the rows marked hidden): twoblock's
-# --partition elsewhere, the integration options of the closed-form exact, hb's --jenkins-2d.
+# --partition elsewhere, the integration options of the closed-form exact, hb's and nma's --jenkins-2d.
 refused_only() { # COMMAND OPTION
     case "$1 $2" in
     "oscillator --partition" | "chain --partition" | "exact --partition") return 0 ;;
     "exact --law" | "exact --integrator" | "exact --dt" | "exact --rtol" | "exact --atol") return 0 ;;
     "exact --eps" | "exact --extrapolate" | "exact --extrapolate-order") return 0 ;;
     "exact --extrapolate-window" | "exact --max-steps" | "exact --kink-location") return 0 ;;
-    "exact --error-estimate" | "hb --jenkins-2d") return 0 ;;
+    "exact --error-estimate" | "hb --jenkins-2d" | "nma --jenkins-2d") return 0 ;;
     esac
     return 1
 }

@@ -79,6 +79,24 @@ int fr_eigen_symm(gsl_matrix *A, gsl_vector *eval, gsl_eigen_symm_workspace *wor
     return status;
 }
 
+int fr_eigen_symmv(gsl_matrix *A, gsl_vector *eval, gsl_matrix *evec,
+                   gsl_eigen_symmv_workspace *work)
+{
+    for (size_t i = 0; i < A->size1; i++)
+        for (size_t j = 0; j < A->size2; j++)
+            if (!isfinite(gsl_matrix_get(A, i, j))) {
+                gsl_vector_set_all(eval, NAN);
+                return GSL_EDOM;
+            }
+    int exponent = normalize(A);
+    int status = gsl_eigen_symmv(A, eval, evec, work);
+    for (size_t i = 0; i < eval->size; i++)
+        gsl_vector_set(eval, i, ldexp(gsl_vector_get(eval, i), exponent));
+    if (status == GSL_SUCCESS)
+        status = gsl_eigen_symmv_sort(eval, evec, GSL_EIGEN_SORT_VAL_ASC);
+    return status;
+}
+
 int fr_eigen_solve(struct fr_eigen *e)
 {
     gsl_matrix_view A = gsl_matrix_view_array(e->a, e->m, e->m);

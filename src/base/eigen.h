@@ -40,4 +40,9 @@ int fr_eigen_solve(struct fr_eigen *e);
  * NaN or infinite; otherwise GSL's status. */
 int fr_eigen_symm(gsl_matrix *A, gsl_vector *eval, gsl_eigen_symm_workspace *work);
 
+/* The same with the eigenvectors (gsl_eigen_symmv: the columns of evec, orthonormal), the
+ * eigenvalues in ascending order with them (gsl_eigen_symmv_sort). */
+int fr_eigen_symmv(gsl_matrix *A, gsl_vector *eval, gsl_matrix *evec,
+                   gsl_eigen_symmv_workspace *work);
+
 #endif

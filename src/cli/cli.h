@@ -108,10 +108,10 @@ struct cli_command {
 };
 
 /* Each subcommand's, next to its table (options.c: oscillator, chain, twoblock and exact;
- * reproduce.c, structure.c, hb.c, problems.c). */
+ * reproduce.c, structure.c, hb.c, nma.c, problems.c). */
 extern const struct cli_command cli_oscillator_command, cli_chain_command, cli_twoblock_command,
     cli_exact_command, cli_reproduce_command, cli_structure_command, cli_hb_command,
-    cli_hold_command, cli_belt_command, cli_disk_command;
+    cli_nma_command, cli_hold_command, cli_belt_command, cli_disk_command;
 
 /* help.c: the subcommands in the order the help lists them, ending with NULL. */
 extern const struct cli_command *const cli_commands[];
@@ -240,5 +240,9 @@ int cli_reproduce_beyond(const char *dir);
 /* `fricreg-sim hb` (hb.c): the frequency response of a structure with Jenkins elements by
  * harmonic balance. Returns the exit status. */
 int cli_hb(int argc, char **argv, FILE *out);
+
+/* `fricreg-sim nma` (nma.c): the backbone of a nonlinear mode of a structure with joint elements
+ * by harmonic balance. Returns the exit status. */
+int cli_nma(int argc, char **argv, FILE *out);
 
 #endif

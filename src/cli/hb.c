@@ -12,11 +12,10 @@
 #include <time.h>
 
 #include "cli.h"
-#include "cli_input.h"
+#include "fricreg_hb.h"
+#include "hb_model.h"
 #include "input_line.h"
 #include "jenkins_input.h"
-#include "fricreg_hb.h"
-#include "matrix_market.h"
 
 enum { HB_SUMMARY, HB_FRF };
 /* Up to this many dofs the summary's peaks are located (fricreg_hb_peak: 10 to 20 corrector
@@ -26,61 +25,43 @@ enum { HB_LOCATE_MAX = 256 };
 static const struct cli_word hb_outputs[] = {{"summary", HB_SUMMARY}, {"frf", HB_FRF}, {NULL, 0}};
 
 struct hb_options {
-    const char *mass, *stiffness, *damping, *excitation;
-    struct cli_element_files elements; /* --jenkins with its parameters (jenkins_input.h) */
-    int rayleigh_given, harmonics, output, omega_start_given, omega_end_given, newton_max;
+    struct cli_hb_model_options model; /* the matrices and elements (hb_model.h) */
+    const char *excitation;
+    int harmonics, output, omega_start_given, omega_end_given, newton_max;
     int max_points;
-    double a0, a1, omega_start, omega_end, newton_tol, ds, ds_min, ds_max;
+    double omega_start, omega_end, newton_tol, ds, ds_min, ds_max;
 };
 
-/* The model: M, K, C (C.colptr NULL: Rayleigh or none) n x n as the files' compressed
- * columns, passed sparse to the driver (its _csc setters: nothing densified); the elements
- * (their rows dense, m <= 256), the excitation pc[n], ps[n]. */
+/* The model (hb_model.h: its matrices passed sparse to the driver, nothing densified) and the
+ * excitation pc[n], ps[n]. */
 struct hb_model {
+    struct cli_hb_model s;
     size_t n, m;
-    struct cli_sparse M, K, C;
-    struct cli_elements el;
+    struct cli_elements el; /* s.el's view, for the summary */
     double *pc, *ps;
 };
 
 static void free_model(struct hb_model *md)
 {
-    cli_free_elements(&md->el);
+    cli_hb_free_model(&md->s);
     free(md->pc);
     free(md->ps);
-    cli_sparse_free(&md->M);
-    cli_sparse_free(&md->K);
-    cli_sparse_free(&md->C);
     memset(md, 0, sizeof *md);
-}
-
-static int parse_rayleigh(const struct cli_option *row, const char *text)
-{
-    struct hb_options *o = row->slot;
-    return cli_parse_rayleigh(row->name, text, &o->a0, &o->a1);
 }
 
 static int check_options(const struct hb_options *o)
 {
-    static const char *const required[] = {"--mass", "--stiffness", "--excitation"};
-    const char *given[] = {o->mass, o->stiffness, o->excitation};
-    for (size_t k = 0; k < 3; k++)
-        if (given[k] == NULL)
-            return cli_usage_error(required[k], "missing (a file is required)");
-    if (o->elements.rows_2d != NULL) /* fricreg_hb's elements are 1-D */
-        return cli_usage_error("--jenkins-2d", "harmonic balance has no 2-D elements (fricreg-sim "
-                                               "structure takes them); give --jenkins");
-    int status = cli_check_elements(&o->elements, 1);
+    int status = cli_hb_check_model(&o->model);
     if (status != 0)
         return status;
+    if (o->excitation == NULL)
+        return cli_usage_error("--excitation", "missing (a file is required)");
     if (!o->omega_start_given)
         return cli_usage_error("--omega-start", "missing");
     if (!o->omega_end_given)
         return cli_usage_error("--omega-end", "missing");
     if (o->omega_end == o->omega_start)
         return cli_usage_error("--omega-end", "equals --omega-start: no branch to follow");
-    if (o->damping != NULL && o->rayleigh_given)
-        return cli_usage_error("--rayleigh", "give --damping or --rayleigh, not both");
     return 0;
 }
 
@@ -97,19 +78,11 @@ static size_t hb_table(struct hb_options *o, struct cli_option table[])
                              .ds_min = 1e-6,
                              .ds_max = 0.1,
                              .max_points = 2000};
-    cli_element_defaults(&o->elements);
+    cli_hb_model_defaults(&o->model);
     const struct cli_option opts[] = {
-        {"--mass", CLI_FILE, .slot = &o->mass, .meta = "M.mtx",
-         .help = "mass matrix M, Matrix Market n x n, symmetric positive definite (required)"},
-        {"--stiffness", CLI_FILE, .slot = &o->stiffness, .meta = "K.mtx",
-         .help = "stiffness matrix K, n x n, symmetric (required)"},
-        {"--damping", CLI_FILE, .slot = &o->damping, .meta = "C.mtx",
-         .help = "damping matrix C, n x n, symmetric (or --rayleigh; none: undamped)"},
+        CLI_HB_MODEL_OPTIONS(&o->model),
         {"--excitation", CLI_FILE, .slot = &o->excitation, .meta = "F.txt",
          .help = "the force's cosine and sine amplitudes, a line pc ps per dof (required)"},
-        CLI_ELEMENT_OPTIONS(&o->elements, 1),
-        {"--rayleigh", CLI_CUSTOM, .slot = o, .parse = parse_rayleigh, .given = &o->rayleigh_given,
-         .meta = "A0,A1", .help = "Rayleigh damping C = A0 M + A1 K (both >= 0)"},
         {"--harmonics", CLI_WHOLE, .slot = &o->harmonics, .lo = 1, .hi = FRICREG_HB_MAX_HARMONICS,
          .meta = "H", .help = "harmonics kept in the solution"},
         {"--omega-start", CLI_POSITIVE, .slot = &o->omega_start, .given = &o->omega_start_given,
@@ -149,66 +122,22 @@ static int parse_hb(int argc, char **argv, struct hb_options *o)
 
 static int read_model(const struct hb_options *o, struct hb_model *md)
 {
-    size_t n = 0, m = 0;
-    int status = cli_read_mtx("--mass", o->mass, 0, 0, &md->M);
-    n = md->M.rows;
-    if (status == 0 && n != md->M.cols)
-        status = cli_file_error("--mass", o->mass, 0, "%zu x %zu: not square", n, md->M.cols);
+    int status = cli_hb_read_model(&o->model, &md->s);
+    md->n = md->s.n;
+    md->m = md->s.m;
+    md->el = md->s.el;
     if (status == 0)
-        status = cli_read_mtx("--stiffness", o->stiffness, n, n, &md->K);
-    if (status == 0 && o->damping != NULL)
-        status = cli_read_mtx("--damping", o->damping, n, n, &md->C);
-    if (status == 0)
-        status = cli_read_elements(&o->elements, n, &md->el);
-    m = md->el.m;
-    md->n = n;
-    md->m = m;
-    if (status == 0)
-        status = cli_read_pairs("--excitation", o->excitation, n, "degrees of freedom", &md->pc,
+        status = cli_read_pairs("--excitation", o->excitation, md->n, "degrees of freedom", &md->pc,
                                 &md->ps);
     return status;
-}
-
-/* One refused setter: its option and file, and the library's reason. */
-static int refused(const fricreg_hb *hb, const char *option, const char *path)
-{
-    return cli_file_error(option, path, 0, "%s", fricreg_hb_errmsg(hb));
-}
-
-/* A matrix file's flags for the _csc setters: zero-based, whole or its lower triangle. */
-static int sparse_flags(const struct cli_sparse *A)
-{
-    return A->lower ? FRICREG_SPARSE_LOWER : 0;
-}
-
-/* The elements by their kind's setter: a status. */
-static int set_elements(fricreg_hb *hb, size_t n, const struct cli_elements *el)
-{
-    if (el->kind == CLI_ELEMENTS_NORMAL)
-        return fricreg_hb_set_normal_elements(hb, el->m, n, el->J, el->Jn, el->k, el->mu, el->n0,
-                                              el->kn);
-    if (el->kind == CLI_ELEMENTS_IWAN)
-        return fricreg_hb_set_iwan(hb, el->m, n, el->J, el->ns, el->k, el->phi);
-    return fricreg_hb_set_elements(hb, el->m, n, el->J, el->k, el->phi);
 }
 
 static int set_model(const struct hb_options *o, const struct hb_model *md, fricreg_hb *hb)
 {
     size_t n = md->n;
-    const struct cli_sparse *M = &md->M, *K = &md->K, *C = &md->C;
-    if (fricreg_hb_set_mass_csc(hb, n, sparse_flags(M), M->colptr, M->rowind, M->values) !=
-        FRICREG_OK)
-        return refused(hb, "--mass", o->mass);
-    if (fricreg_hb_set_stiffness_csc(hb, n, sparse_flags(K), K->colptr, K->rowind, K->values) !=
-        FRICREG_OK)
-        return refused(hb, "--stiffness", o->stiffness);
-    if (C->colptr != NULL && fricreg_hb_set_damping_csc(hb, n, sparse_flags(C), C->colptr,
-                                                        C->rowind, C->values) != FRICREG_OK)
-        return refused(hb, "--damping", o->damping);
-    if (o->rayleigh_given && fricreg_hb_set_rayleigh(hb, o->a0, o->a1) != FRICREG_OK)
-        return cli_usage_error("--rayleigh", fricreg_hb_errmsg(hb));
-    if (set_elements(hb, n, &md->el) != FRICREG_OK)
-        return refused(hb, md->el.option, md->el.path);
+    int status = cli_hb_set_model(&o->model, &md->s, hb);
+    if (status != 0)
+        return status;
     if (fricreg_hb_set_newton(hb, o->newton_tol, o->newton_max) != FRICREG_OK)
         return cli_usage_error("--newton-tol", fricreg_hb_errmsg(hb));
     /* the library names the order: 0 < ds_min <= ds <= ds_max <= 1 */
@@ -219,7 +148,7 @@ static int set_model(const struct hb_options *o, const struct hb_model *md, fric
                                                    : "--ds",
                                fricreg_hb_errmsg(hb));
     if (fricreg_hb_set_excitation(hb, n, md->pc, md->ps) != FRICREG_OK)
-        return refused(hb, "--excitation", o->excitation);
+        return cli_file_error("--excitation", o->excitation, 0, "%s", fricreg_hb_errmsg(hb));
     return 0;
 }
 
@@ -365,8 +294,7 @@ static int run_hb(fricreg_hb *hb, const struct hb_options *o, const struct hb_mo
 {
     clock_t start = clock();
     /* lift-off elements: tangential and normal coefficients, 2 m rows */
-    size_t rows = md->el.kind == CLI_ELEMENTS_NORMAL ? 2 * md->m : md->m;
-    size_t nq = rows * (2 * (size_t)o->harmonics + 1);
+    size_t nq = cli_hb_rows(&md->s) * (2 * (size_t)o->harmonics + 1);
     /* each point's stability by Hill's method where its dense companion is allowed */
     if (md->n * (2 * (size_t)o->harmonics + 1) <= FRICREG_HB_MAX_HILL &&
         fricreg_hb_set_stability(hb, 1) != FRICREG_OK)

@@ -18,10 +18,14 @@ static inline void cmac(double *out, double s, double a, double b, double c, dou
     out[1] += s * (a * d + b * c);
 }
 
-/* The damping in force: C, or a0 M + a1 K. */
+/* The damping in force: C, or a0 M + a1 K, less the nonlinear modes' xi M (C left out when
+ * no_c). */
 static double damping(const fricreg_hb *hb, size_t idx)
 {
-    return hb->rayleigh ? hb->a0 * hb->M[idx] + hb->a1 * hb->K[idx] : hb->C[idx];
+    double c = hb->no_c       ? 0.0
+               : hb->rayleigh ? hb->a0 * hb->M[idx] + hb->a1 * hb->K[idx]
+                              : hb->C[idx];
+    return c - hb->xi * hb->M[idx];
 }
 
 /* Forms and factors D_h in hb->D; FRICREG_ESINGULAR if a pivot is below 1e-14 of the largest
@@ -75,8 +79,8 @@ static void solve_columns(fricreg_hb *hb, int h)
 
 /* out[e (m+1) + c] (complex, c <= m) = s sum_k L(e, k) B[k (m+1) + c], L(e, k) = J(e, k)
  * (real) when left is NULL, else left[k (m+1) + e] (complex: a column of Y as a row). */
-static void project(const fricreg_hb *hb, const double *left, const double *B, double s, double *G,
-                    double *q)
+void fr_hb_project(const fricreg_hb *hb, const double *left, const double *B, double s, double *G,
+                   double *q)
 {
     size_t n = hb->n, m = hb->m, w = m + 1;
     for (size_t e = 0; e < m; e++)
@@ -148,7 +152,7 @@ int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv)
             return status;
         const double *Y = hb->Y + 2 * (size_t)h * n * w;
         double *G = hb->G + 2 * (size_t)h * m * m, *q = hb->ql + 2 * (size_t)h * m;
-        project(hb, NULL, Y, 1.0, G, q);
+        fr_hb_project(hb, NULL, Y, 1.0, G, q);
         double *dG = hb->dG + 2 * (size_t)h * m * m, *dq = hb->dql + 2 * (size_t)h * m;
         if (!deriv)
             continue;
@@ -161,7 +165,7 @@ int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv)
             fr_hb_sparse_derivative(hb, h, omega);
         else
             derivative_times_y(hb, h, omega);
-        project(hb, Y, hb->Z, -1.0, dG, dq);
+        fr_hb_project(hb, Y, hb->Z, -1.0, dG, dq);
     }
     if ((status = check_finite(hb, fn, omega)) != FRICREG_OK)
         return status;

@@ -182,6 +182,7 @@ void fricreg_hb_free(fricreg_hb *hb)
     fricreg_aft_free(hb->aft);
     free(hb->sk);
     free(hb->nl);
+    fr_hb_nma_free(hb->nma);
     fr_hb_sparse_free(hb);
     fr_cholmod_finish(&hb->cc);
     free(hb);
@@ -193,6 +194,7 @@ static void invalidate(fricreg_hb *hb)
     hb->factored_omega = NAN;
     hb->have_solution = 0;
     hb->have_branch = 0;
+    hb->have_backbone = 0;
 }
 
 static int check_ndof(fricreg_hb *hb, const char *fn, size_t ndof)

@@ -36,6 +36,15 @@ struct fricreg_hb {
     int have_elements;
     double *pc, *ps; /* [n] excitation of the fundamental */
 
+    /* The nonlinear modes (nma.c, fricreg_hb_nma): while one is solved, D_h's damping is
+     * C − xi M (C left out when no_c: the modal-damping option), and free_vibration says that
+     * the load column of Y_1 holds the normalization's M φ rather than a load: (R), its Ω
+     * derivative and the displacements leave it out. 0 otherwise. */
+    double xi;
+    int no_c, free_vibration;
+    struct fr_hb_nma *nma; /* the backbone's points and workspace, NULL: none yet */
+    int have_backbone;     /* the model is still the backbone's (cleared by a model change) */
+
     double tol;
     int max_iter;
     double ds0, ds_min, ds_max;
@@ -166,6 +175,15 @@ void fr_hb_sparse_free(fricreg_hb *hb);
  * matrix which (0 M, 1 C, 2 K). */
 int fr_hb_sparse_set_dense(fricreg_hb *hb, const char *fn, int which, const double *A);
 
+/* out[e (m+1) + c] (complex, c <= m) = s sum_k L(e, k) B[k (m+1) + c] into G (c < m) and q
+ * (c = m), L(e, k) = J(e, k) when left is NULL, else left[k (m+1) + e] (a column of Y as a row):
+ * the condensation J Y_h, or with left = Y_h the derivative −Y_h^T D' Y_h from Z = D' Y_h. */
+void fr_hb_project(const fricreg_hb *hb, const double *left, const double *B, double s, double *G,
+                   double *q);
+
+/* The nonlinear modes' state (nma.c), freed with the driver. */
+void fr_hb_nma_free(struct fr_hb_nma *nma);
+
 /* The dense LU factors (lu.c): A[n n] row-major (complex: (re, im) pairs) factored in place
  * with partial pivoting, P A = L U, the row interchanges into piv[n]; no allocation, no GSL.
  * The solves overwrite x[n] (complex: [2n]) with A^-1 x from the factor and piv; every pivot
@@ -190,6 +208,11 @@ void fr_hb_matrix(fricreg_hb *hb, const double *jac, double *A, size_t ld);
 
 /* dR/dΩ at the forces fq: dG F − dql, into out[nq] (needs the derivatives factored). */
 void fr_hb_domega(fricreg_hb *hb, double *out);
+
+/* out[nq] = G F − ql in (R)'s real form from the forces f[nq] and a complex G[(H+1) m m],
+ * ql[(H+1) m] (ql NULL: none), e.g. a derivative of the condensation. */
+void fr_hb_apply(const fricreg_hb *hb, const double *G, const double *ql, const double *f,
+                 double *out);
 
 /* The displacement scale of the convergence test: max(|q|_inf, |ql|_inf), or 1 if both 0. */
 double fr_hb_scale(const fricreg_hb *hb, const double *q);

@@ -12,7 +12,8 @@ static void coefficient(const fricreg_hb *hb, int h, size_t k, double *out)
 {
     size_t m = hb->m, w = m + 1, nc = hb->nc;
     const double *y = hb->Y + 2 * (((size_t)h * hb->n + k) * w);
-    double re = y[2 * m], im = y[2 * m + 1];
+    /* the load column, but in a nonlinear mode (the normalization's M φ there) */
+    double re = hb->free_vibration ? 0.0 : y[2 * m], im = hb->free_vibration ? 0.0 : y[2 * m + 1];
     for (size_t e = 0; e < m; e++) {
         double fa = h == 0 ? hb->fq[e * nc] : hb->fq[e * nc + 2 * (size_t)h - 1];
         double fb = h == 0 ? 0.0 : -hb->fq[e * nc + 2 * (size_t)h]; /* F = fa − i fb */

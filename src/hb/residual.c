@@ -15,15 +15,16 @@
 #include "hb_internal.h"
 
 /* out[nq] = G F − ql in the real form above, from the forces f[nq] and the complex G[(H+1) m m],
- * ql[(H+1) m] (the condensation or its Ω derivative). */
-static void apply(const fricreg_hb *hb, const double *G, const double *ql, const double *f,
-                  double *out)
+ * ql[(H+1) m] (the condensation or its Ω derivative; NULL: no load). */
+void fr_hb_apply(const fricreg_hb *hb, const double *G, const double *ql, const double *f,
+                 double *out)
 {
     size_t m = hb->m, nc = hb->nc;
     for (size_t e = 0; e < m; e++)
         for (int h = 0; h <= hb->H; h++) {
+            static const double none[2] = {0.0, 0.0};
             const double *g = G + 2 * ((size_t)h * m * m + e * m),
-                         *p = ql + 2 * ((size_t)h * m + e);
+                         *p = ql ? ql + 2 * ((size_t)h * m + e) : none;
             if (h == 0) {
                 double s = -p[0];
                 for (size_t e2 = 0; e2 < m; e2++)
@@ -65,7 +66,7 @@ int fr_hb_residual(fricreg_hb *hb, const char *fn, const double *q, double *R, i
             return fr_fail(hb, status, "%s: the AFT of element %zu failed: %s", fn, e,
                            fricreg_aft_errmsg(hb->aft));
     }
-    apply(hb, hb->G, hb->ql, hb->fq, R);
+    fr_hb_apply(hb, hb->G, hb->free_vibration ? NULL : hb->ql, hb->fq, R);
     for (size_t j = 0; j < hb->nq; j++)
         R[j] += q[j];
     return FRICREG_OK;
@@ -73,7 +74,7 @@ int fr_hb_residual(fricreg_hb *hb, const char *fn, const double *q, double *R, i
 
 void fr_hb_domega(fricreg_hb *hb, double *out)
 {
-    apply(hb, hb->dG, hb->dql, hb->fq, out);
+    fr_hb_apply(hb, hb->dG, hb->free_vibration ? NULL : hb->dql, hb->fq, out);
 }
 
 void fr_hb_matrix(fricreg_hb *hb, const double *jac, double *A, size_t ld)

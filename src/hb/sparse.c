@@ -290,9 +290,11 @@ int fricreg_hb_set_stiffness_csc(fricreg_hb *hb, size_t ndof, int flags, const i
 
 /* ---- The factor and the solves ------------------------------------------------------------- */
 
+/* The damping in force, less the nonlinear modes' xi M, as dynamic.c's. */
 static double damping(const fricreg_hb *hb, size_t p)
 {
-    return hb->rayleigh ? hb->a0 * hb->vM[p] + hb->a1 * hb->vK[p] : hb->vC[p];
+    double c = hb->no_c ? 0.0 : hb->rayleigh ? hb->a0 * hb->vM[p] + hb->a1 * hb->vK[p] : hb->vC[p];
+    return c - hb->xi * hb->vM[p];
 }
 
 static int umfpack_failed(fricreg_hb *hb, const char *fn, const char *what, int status)

@@ -1,0 +1,50 @@
+! SPDX-License-Identifier: GPL-3.0-or-later
+! test_hb_nma.f90 — nonlinear modes (fricreg_hb_nma) from Fortran: hb%nma, hb%nma_points,
+! hb%nma_point of the type fricreg_hb_driver.
+!
+! Values: the oscillator m = 1, k = 1 with one Jenkins element kt = 2, mu N = 3 at H = 1 (the
+! C suite's tests/test_hb_nma.c derives its closed form): stuck for a <= 1.5, omega^2 = 3,
+! zeta = 0; beyond, with cos(beta) = 1 - 3/a, omega^2 = 1 + (2/pi)(beta - sin(2 beta)/2) and
+! zeta = 12 (a - 1.5) / (2 pi a^2 omega^2).
+program test_hb_nma
+  use fricreg
+  use ftest
+  implicit none
+  type(fricreg_hb_driver) :: hb
+  real(c_double), parameter :: pi = 3.14159265358979323846_c_double
+  real(c_double) :: a, omega, zeta, beta, w2, z, x(3, 1), bad(3, 2)
+  integer :: i
+
+  call check_status(hb%create(1, 1, 1), FRICREG_OK, 'create')
+  call check_status(hb%set_stiffness(reshape([1.0_c_double], [1, 1])), FRICREG_OK, 'stiffness')
+  call check_status(hb%set_elements(reshape([1.0_c_double], [1, 1]), [2.0_c_double], &
+                                    [3.0_c_double]), FRICREG_OK, 'set_elements')
+  call check_status(hb%nma(1, 0.5_c_double, 200.0_c_double, 10), FRICREG_OK, 'nma')
+  call check(hb%nma_points() == 10, 'ten points')
+  do i = 1, hb%nma_points()
+    call check_status(hb%nma_point(i, a, omega, zeta, x), FRICREG_OK, 'nma_point')
+    w2 = 3.0_c_double
+    z = 0.0_c_double
+    if (a > 1.5_c_double) then
+      beta = acos(1.0_c_double - 3.0_c_double / a)
+      w2 = 1.0_c_double + 2.0_c_double / pi * (beta - 0.5_c_double * sin(2.0_c_double * beta))
+      z = 12.0_c_double * (a - 1.5_c_double) / (2.0_c_double * pi * a * a * w2)
+    end if
+    call check_close(omega * omega, w2, 1e-9_c_double * w2, 'omega^2, closed form')
+    call check_close(zeta, z, 1e-9_c_double * max(z, 1e-3_c_double), 'zeta, closed form')
+    call check_close(x(2, 1), a, 1e-9_c_double * a, 'x = a cos(theta)')
+  end do
+  call check_status(hb%nma_point(1, a, omega, zeta), FRICREG_OK, 'nma_point without x')
+  call check_close(omega, sqrt(3.0_c_double), 1e-12_c_double, 'the stuck mode')
+  call check_status(hb%nma_point(0, a, omega, zeta), FRICREG_EINVAL, 'point 0')
+  call check_status(hb%nma_point(11, a, omega, zeta), FRICREG_EINVAL, 'point 11 of 10')
+  call check_status(hb%nma_point(1, a, omega, zeta, bad), FRICREG_ESIZE, 'x(3, 2)')
+  call check_status(hb%nma(0, 0.5_c_double, 2.0_c_double, 4), FRICREG_EINVAL, 'mode 0')
+  call check_status(hb%nma(2, 0.5_c_double, 2.0_c_double, 4), FRICREG_EINVAL, 'mode 2 of 1')
+  call check_status(hb%nma(1, 2.0_c_double, 2.0_c_double, 4), FRICREG_EINVAL, 'a0 = a1')
+  call check_status(hb%nma(1, 0.5_c_double, 2.0_c_double, 4, FRICREG_HB_NMA_DAMPING_MODAL), &
+                    FRICREG_OK, 'modal damping')
+  call check(hb%nma_points() == 4, 'four points')
+  call hb%destroy()
+  call finish('test_hb_nma')
+end program test_hb_nma

@@ -1,0 +1,111 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* hb_model.c — the structure and its elements for `fricreg-sim hb` and `nma` (hb_model.h). */
+#include <string.h>
+
+#include "cli_input.h"
+#include "input_line.h"
+#include "hb_model.h"
+
+int cli_hb_parse_rayleigh(const struct cli_option *row, const char *text)
+{
+    struct cli_hb_model_options *o = row->slot;
+    return cli_parse_rayleigh(row->name, text, &o->a0, &o->a1);
+}
+
+void cli_hb_model_defaults(struct cli_hb_model_options *o)
+{
+    *o = (struct cli_hb_model_options){0};
+    cli_element_defaults(&o->elements);
+}
+
+int cli_hb_check_model(const struct cli_hb_model_options *o)
+{
+    if (o->mass == NULL)
+        return cli_usage_error("--mass", "missing (a file is required)");
+    if (o->stiffness == NULL)
+        return cli_usage_error("--stiffness", "missing (a file is required)");
+    if (o->elements.rows_2d != NULL) /* fricreg_hb's elements are 1-D */
+        return cli_usage_error("--jenkins-2d", "harmonic balance has no 2-D elements (fricreg-sim "
+                                               "structure takes them); give --jenkins");
+    int status = cli_check_elements(&o->elements, 1);
+    if (status != 0)
+        return status;
+    if (o->damping != NULL && o->rayleigh_given)
+        return cli_usage_error("--rayleigh", "give --damping or --rayleigh, not both");
+    return 0;
+}
+
+void cli_hb_free_model(struct cli_hb_model *md)
+{
+    cli_free_elements(&md->el);
+    cli_sparse_free(&md->M);
+    cli_sparse_free(&md->K);
+    cli_sparse_free(&md->C);
+    memset(md, 0, sizeof *md);
+}
+
+int cli_hb_read_model(const struct cli_hb_model_options *o, struct cli_hb_model *md)
+{
+    int status = cli_read_mtx("--mass", o->mass, 0, 0, &md->M);
+    size_t n = md->M.rows;
+    if (status == 0 && n != md->M.cols)
+        status = cli_file_error("--mass", o->mass, 0, "%zu x %zu: not square", n, md->M.cols);
+    if (status == 0)
+        status = cli_read_mtx("--stiffness", o->stiffness, n, n, &md->K);
+    if (status == 0 && o->damping != NULL)
+        status = cli_read_mtx("--damping", o->damping, n, n, &md->C);
+    if (status == 0)
+        status = cli_read_elements(&o->elements, n, &md->el);
+    md->n = n;
+    md->m = md->el.m;
+    return status;
+}
+
+/* One refused setter: its option and file, and the library's reason. */
+static int refused(const fricreg_hb *hb, const char *option, const char *path)
+{
+    return cli_file_error(option, path, 0, "%s", fricreg_hb_errmsg(hb));
+}
+
+/* A matrix file's flags for the _csc setters: zero-based, whole or its lower triangle. */
+static int sparse_flags(const struct cli_sparse *A)
+{
+    return A->lower ? FRICREG_SPARSE_LOWER : 0;
+}
+
+/* The elements by their kind's setter: a status. */
+static int set_elements(fricreg_hb *hb, size_t n, const struct cli_elements *el)
+{
+    if (el->kind == CLI_ELEMENTS_NORMAL)
+        return fricreg_hb_set_normal_elements(hb, el->m, n, el->J, el->Jn, el->k, el->mu, el->n0,
+                                              el->kn);
+    if (el->kind == CLI_ELEMENTS_IWAN)
+        return fricreg_hb_set_iwan(hb, el->m, n, el->J, el->ns, el->k, el->phi);
+    return fricreg_hb_set_elements(hb, el->m, n, el->J, el->k, el->phi);
+}
+
+int cli_hb_set_model(const struct cli_hb_model_options *o, const struct cli_hb_model *md,
+                     fricreg_hb *hb)
+{
+    size_t n = md->n;
+    const struct cli_sparse *M = &md->M, *K = &md->K, *C = &md->C;
+    if (fricreg_hb_set_mass_csc(hb, n, sparse_flags(M), M->colptr, M->rowind, M->values) !=
+        FRICREG_OK)
+        return refused(hb, "--mass", o->mass);
+    if (fricreg_hb_set_stiffness_csc(hb, n, sparse_flags(K), K->colptr, K->rowind, K->values) !=
+        FRICREG_OK)
+        return refused(hb, "--stiffness", o->stiffness);
+    if (C->colptr != NULL && fricreg_hb_set_damping_csc(hb, n, sparse_flags(C), C->colptr,
+                                                        C->rowind, C->values) != FRICREG_OK)
+        return refused(hb, "--damping", o->damping);
+    if (o->rayleigh_given && fricreg_hb_set_rayleigh(hb, o->a0, o->a1) != FRICREG_OK)
+        return cli_usage_error("--rayleigh", fricreg_hb_errmsg(hb));
+    if (set_elements(hb, n, &md->el) != FRICREG_OK)
+        return refused(hb, md->el.option, md->el.path);
+    return 0;
+}
+
+size_t cli_hb_rows(const struct cli_hb_model *md)
+{
+    return md->el.kind == CLI_ELEMENTS_NORMAL ? 2 * md->m : md->m;
+}

@@ -1,0 +1,68 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* hb_model.h — what `fricreg-sim hb` and `fricreg-sim nma` share: the structure's matrices
+ * (Matrix Market files, passed sparse to fricreg_hb's _csc setters) and its joint elements
+ * (jenkins_input.h), their option rows, their checks, their reading and the driver's setters. */
+#ifndef FRICREG_CLI_HB_MODEL_H
+#define FRICREG_CLI_HB_MODEL_H
+
+#include <stddef.h>
+
+#include "cli.h"
+#include "fricreg_hb.h"
+#include "jenkins_input.h"
+#include "matrix_market.h"
+
+struct cli_hb_model_options {
+    const char *mass, *stiffness, *damping;
+    struct cli_element_files elements; /* --jenkins with its parameters (jenkins_input.h) */
+    int rayleigh_given;
+    double a0, a1;
+};
+
+/* The model: M, K, C (C.colptr NULL: Rayleigh or none) n x n as the files' compressed columns;
+ * the elements (their rows dense, m <= 256). */
+struct cli_hb_model {
+    size_t n, m;
+    struct cli_sparse M, K, C;
+    struct cli_elements el;
+};
+
+/* --rayleigh's parser: the row's slot is the struct cli_hb_model_options. */
+int cli_hb_parse_rayleigh(const struct cli_option *row, const char *text);
+
+/* The model's option rows over o (a struct cli_hb_model_options *). */
+/* clang-format off */
+#define CLI_HB_MODEL_OPTIONS(o)                                                                 \
+    {"--mass", CLI_FILE, .slot = &(o)->mass, .meta = "M.mtx",                                  \
+     .help = "mass matrix M, Matrix Market n x n, symmetric positive definite (required)"},    \
+    {"--stiffness", CLI_FILE, .slot = &(o)->stiffness, .meta = "K.mtx",                        \
+     .help = "stiffness matrix K, n x n, symmetric (required)"},                               \
+    {"--damping", CLI_FILE, .slot = &(o)->damping, .meta = "C.mtx",                            \
+     .help = "damping matrix C, n x n, symmetric (or --rayleigh; none: undamped)"},            \
+    CLI_ELEMENT_OPTIONS(&(o)->elements, 1),                                                     \
+    {"--rayleigh", CLI_CUSTOM, .slot = (o), .parse = cli_hb_parse_rayleigh,                    \
+     .given = &(o)->rayleigh_given, .meta = "A0,A1",                                            \
+     .help = "Rayleigh damping C = A0 M + A1 K (both >= 0)"}
+/* clang-format on */
+
+/* The defaults (the elements'). */
+void cli_hb_model_defaults(struct cli_hb_model_options *o);
+
+/* --mass and --stiffness given, the elements' options consistent and 1-D, not both --damping
+ * and --rayleigh. 0, or CLI_EXIT_USAGE after one line on stderr. */
+int cli_hb_check_model(const struct cli_hb_model_options *o);
+
+/* Reads the files into md (freed by cli_hb_free_model, also on failure). 0, or CLI_EXIT_USAGE
+ * after one line on stderr naming the option and the file. */
+int cli_hb_read_model(const struct cli_hb_model_options *o, struct cli_hb_model *md);
+void cli_hb_free_model(struct cli_hb_model *md);
+
+/* The matrices, Rayleigh's damping and the elements into hb; 0, or CLI_EXIT_USAGE after one line
+ * on stderr with the library's reason. */
+int cli_hb_set_model(const struct cli_hb_model_options *o, const struct cli_hb_model *md,
+                     fricreg_hb *hb);
+
+/* Rows of J of the model's elements: m, or 2 m with lift-off (tangential and normal). */
+size_t cli_hb_rows(const struct cli_hb_model *md);
+
+#endif

@@ -1,0 +1,207 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* nma.c — `fricreg-sim nma`: the backbone of a nonlinear mode (its natural frequency and
+ * damping ratio against its modal amplitude) of a linear structure with Jenkins, Iwan or
+ * lift-off elements, by harmonic balance and the extended periodic motion concept
+ * (fricreg_hb_nma), from the Matrix Market files of `hb` (hb_model.h); a JSON summary or a CSV
+ * row amplitude,omega,zeta per point on stdout. Every bad option or file is one line on stderr
+ * naming it, exit 2, nothing on stdout; a backbone that fails, exit 1. */
+#include <stdlib.h>
+#include <time.h>
+
+#include "cli.h"
+#include "fricreg_hb.h"
+#include "hb_model.h"
+
+enum { NMA_SUMMARY, NMA_BACKBONE };
+static const struct cli_word nma_outputs[] = {{"summary", NMA_SUMMARY},
+                                              {"backbone", NMA_BACKBONE},
+                                              {NULL, 0}};
+static const struct cli_word nma_dampings[] = {{"matrix", FRICREG_HB_NMA_DAMPING_MATRIX},
+                                               {"modal", FRICREG_HB_NMA_DAMPING_MODAL},
+                                               {NULL, 0}};
+
+struct nma_options {
+    struct cli_hb_model_options model; /* the matrices and elements (hb_model.h) */
+    int harmonics, mode, points, linear_damping, output, newton_max;
+    int a0_given, a1_given;
+    double a0, a1, newton_tol;
+};
+
+static int check_options(const struct nma_options *o)
+{
+    int status = cli_hb_check_model(&o->model);
+    if (status != 0)
+        return status;
+    if (!o->a0_given)
+        return cli_usage_error("--amplitude-start", "missing");
+    if (!o->a1_given)
+        return cli_usage_error("--amplitude-end", "missing");
+    if (!(o->a1 > o->a0))
+        return cli_usage_error("--amplitude-end", "must be above --amplitude-start");
+    return 0;
+}
+
+/* The rows over o, its defaults set: the parser's and the help's one table. */
+static size_t nma_table(struct nma_options *o, struct cli_option table[])
+{
+    /* Newton's rule: the driver's defaults (fricreg_hb_set_newton) */
+    *o = (struct nma_options){.harmonics = 7,
+                              .mode = 1,
+                              .points = 20,
+                              .linear_damping = FRICREG_HB_NMA_DAMPING_MATRIX,
+                              .output = NMA_SUMMARY,
+                              .newton_tol = 1e-10,
+                              .newton_max = 50};
+    cli_hb_model_defaults(&o->model);
+    const struct cli_option opts[] = {
+        CLI_HB_MODEL_OPTIONS(&o->model),
+        {"--mode", CLI_WHOLE, .slot = &o->mode, .lo = 1, .hi = 1e8, .meta = "K",
+         .help = "the mode, from 1 in ascending order of the structure's natural frequencies "
+                 "with its elements stuck"},
+        {"--harmonics", CLI_WHOLE, .slot = &o->harmonics, .lo = 1, .hi = FRICREG_HB_MAX_HARMONICS,
+         .meta = "H", .help = "harmonics kept in the solution"},
+        {"--amplitude-start", CLI_POSITIVE, .slot = &o->a0, .given = &o->a0_given, .meta = "A0",
+         .help = "the smallest modal amplitude phi_k^T M x_1 (phi_k mass-normalized; for a unit "
+                 "mass a displacement) (required)",
+         .dflt = ""},
+        {"--amplitude-end", CLI_POSITIVE, .slot = &o->a1, .given = &o->a1_given, .meta = "A1",
+         .help = "the largest, above A0 (required)", .dflt = ""},
+        {"--points", CLI_WHOLE, .slot = &o->points, .lo = 2, .hi = 2000, .meta = "N",
+         .help = "points of the backbone, log-spaced in the amplitude from A0 to A1"},
+        {"--linear-damping", CLI_CHOICE, .slot = &o->linear_damping, .words = nma_dampings,
+         .help = "the linear damping in the mode: the matrix as given, or the linear mode's "
+                 "modal damping (C replaced by 2 zeta_k omega_k M)"},
+        {"--newton-tol", CLI_POSITIVE, .slot = &o->newton_tol, .meta = "TOL",
+         .help = "Newton's tolerance at each point"},
+        {"--newton-max", CLI_WHOLE, .slot = &o->newton_max, .lo = 1, .hi = 1000, .meta = "N",
+         .help = "Newton's iterations at most per point, 1 to 1000"},
+        {"--output", CLI_CHOICE, .slot = &o->output, .words = nma_outputs,
+         .help = "a JSON summary (the backbone's ends and its largest damping ratio), or the "
+                 "backbone: a CSV row amplitude,omega,zeta per point"}};
+    return cli_copy_rows(table, opts, sizeof opts / sizeof opts[0]);
+}
+
+static int parse_nma(int argc, char **argv, struct nma_options *o)
+{
+    struct cli_option table[CLI_MAX_ROWS];
+    size_t n = nma_table(o, table);
+    int status = cli_parse_options(argc, argv, table, n, "nma");
+    return status != 0 ? status : check_options(o);
+}
+
+/* The backbone's points: a[k], omega[k], zeta[k] at pts[3 k ..], into an array the caller
+ * frees. */
+static int collect(fricreg_hb *hb, size_t *npoints, double **pts)
+{
+    size_t K = fricreg_hb_nma_points(hb);
+    *pts = malloc((K > 0 ? 3 * K : 1) * sizeof **pts);
+    if (*pts == NULL)
+        return cli_usage_error("nma", "out of memory");
+    for (size_t k = 0; k < K; k++) {
+        double *p = *pts + 3 * k;
+        if (fricreg_hb_nma_point(hb, k, &p[0], &p[1], &p[2], 0, 0, NULL) != FRICREG_OK)
+            return cli_usage_error("nma", fricreg_hb_errmsg(hb));
+    }
+    *npoints = K;
+    return 0;
+}
+
+static void write_backbone(FILE *out, size_t K, const double pts[])
+{
+    fprintf(out, "amplitude,omega,zeta\n");
+    for (size_t k = 0; k < K; k++)
+        fprintf(out, "%.17g,%.17g,%.17g\n", pts[3 * k], pts[3 * k + 1], pts[3 * k + 2]);
+}
+
+static void write_summary(FILE *out, const struct nma_options *o, const struct cli_hb_model *md,
+                          size_t K, const double pts[], double cpu)
+{
+    size_t top = 0;
+    for (size_t k = 1; k < K; k++)
+        if (pts[3 * k + 2] > pts[3 * top + 2])
+            top = k;
+    fprintf(out,
+            "{\"command\": \"nma\", \"ndof\": %zu, \"elements\": %zu, \"element_kind\": \"%s\", "
+            "\"harmonics\": %d, \"mode\": %d, \"linear_damping\": \"%s\", \"points\": %zu",
+            md->n, md->m, cli_element_kind_name(&md->el), o->harmonics, o->mode,
+            o->linear_damping == FRICREG_HB_NMA_DAMPING_MODAL ? "modal" : "matrix", K);
+    const char *names[3] = {"first", "last", "zeta_max"};
+    size_t at[3] = {0, K - 1, top};
+    for (int j = 0; j < 3; j++)
+        fprintf(out, ", \"%s\": {\"amplitude\": %.17g, \"omega\": %.17g, \"zeta\": %.17g}",
+                names[j], pts[3 * at[j]], pts[3 * at[j] + 1], pts[3 * at[j] + 2]);
+    fprintf(out, ", \"cpu_seconds\": %.6f}\n", cpu);
+}
+
+static int run_nma(fricreg_hb *hb, const struct nma_options *o, const struct cli_hb_model *md,
+                   FILE *out)
+{
+    if ((size_t)o->mode > md->n)
+        return cli_usage_error("--mode", "beyond the structure's modes (one per dof)");
+    clock_t start = clock();
+    int status = fricreg_hb_nma(hb, (size_t)o->mode - 1, o->linear_damping, o->a0, o->a1,
+                                (size_t)o->points);
+    double cpu = (double)(clock() - start) / CLOCKS_PER_SEC;
+    if (status != FRICREG_OK) {
+        fprintf(stderr, "fricreg-sim: nma: the backbone failed: %s\n", fricreg_hb_errmsg(hb));
+        return CLI_EXIT_RUN;
+    }
+    size_t K = 0;
+    double *pts = NULL;
+    status = collect(hb, &K, &pts);
+    if (status == 0 && o->output == NMA_BACKBONE)
+        write_backbone(out, K, pts);
+    else if (status == 0)
+        write_summary(out, o, md, K, pts, cpu);
+    free(pts);
+    return status;
+}
+
+int cli_nma(int argc, char **argv, FILE *out)
+{
+    struct nma_options o;
+    int status = parse_nma(argc, argv, &o);
+    if (status != 0)
+        return status;
+    struct cli_hb_model md = {0};
+    if ((status = cli_hb_read_model(&o.model, &md)) != 0) {
+        cli_hb_free_model(&md);
+        return status;
+    }
+    fricreg_hb *hb = NULL;
+    if (fricreg_hb_create(md.n, md.m, o.harmonics, &hb) != FRICREG_OK) {
+        cli_hb_free_model(&md);
+        return cli_usage_error("nma", "cannot create the harmonic-balance driver (out of memory)");
+    }
+    status = cli_hb_set_model(&o.model, &md, hb);
+    if (status == 0 && fricreg_hb_set_newton(hb, o.newton_tol, o.newton_max) != FRICREG_OK)
+        status = cli_usage_error("--newton-tol", fricreg_hb_errmsg(hb));
+    if (status == 0)
+        status = run_nma(hb, &o, &md, out);
+    fricreg_hb_free(hb);
+    cli_hb_free_model(&md);
+    return status;
+}
+
+/* ---- The help (help.c) -------------------------------------------------------------------- */
+
+static size_t nma_help_table(struct cli_option table[])
+{
+    static struct nma_options o; /* the help's rows point here */
+    return nma_table(&o, table);
+}
+
+const struct cli_command cli_nma_command = {
+    "nma",
+    "--mass M.mtx --stiffness K.mtx [--damping C.mtx | --rayleigh A0,A1] --jenkins J.mtx "
+    "ELEMENTS --amplitude-start A0 --amplitude-end A1 [OPTION]...",
+    "backbone of a nonlinear mode of a structure with joints (EPMC)",
+    "The backbone of mode K of a linear structure M x'' + C x' + K x + J^T f(q) = 0 with "
+    "Jenkins, Iwan or lift-off elements on q = J x: its natural frequency omega and damping "
+    "ratio zeta against its modal amplitude, by harmonic balance and the extended periodic "
+    "motion concept (fricreg_hb_nma, fricreg_hb.h; docs/joints.md, Nonlinear modes), from the "
+    "linear mode with the elements stuck, at --points amplitudes log-spaced from "
+    "--amplitude-start to --amplitude-end.\n\n"
+    "ELEMENTS is one parameter file, a line per row of J.mtx: --jenkins-params, --iwan-params "
+    "or --iwan-segalman, or --normal with --normal-params (lift-off).",
+    nma_help_table};

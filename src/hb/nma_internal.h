@@ -1,0 +1,59 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* nma_internal.h — the nonlinear modes' state (fricreg_hb_nma, fricreg_hb.h): the linear mode
+ * the backbone starts from (nma_linear.c), the extended periodic motion concept's equations and
+ * their Newton solve (nma_solve.c), the backbone's points (nma.c). Included only inside
+ * src/hb/. */
+#ifndef FRICREG_HB_NMA_INTERNAL_H
+#define FRICREG_HB_NMA_INTERNAL_H
+
+#include "hb_internal.h"
+
+struct fr_hb_nma {
+    size_t n, nq, nd; /* dofs, the condensed unknowns q, nd = nq + 2 with ω and ξ */
+    int modal;        /* FRICREG_HB_NMA_DAMPING_MODAL: C replaced by ξ_k M */
+    double omega_k;   /* the linearized (elements stuck) mode's circular frequency */
+    double xi_k;      /* and φ_k^T C φ_k = 2 ζ_k ω_k */
+    double a_stick;   /* below this modal amplitude every element sticks (0: none does) */
+    double *phi;      /* [n] φ_k, mass-normalized */
+    double *w;        /* [n] M φ_k: the load column of Y_1 while a mode is solved */
+    double *zero;     /* [n] zeros: the load's sine part */
+    double *dGx;      /* [(H+1) m m] complex: dG_h/dξ */
+    double *dgx;      /* [(H+1) m] complex: d(J D_h^-1 M φ)/dξ */
+    double *A;        /* [nd nd] Newton's matrix, LU-factored in place */
+    size_t *piv;      /* [nd] its row interchanges */
+    double *y, *yt, *R, *Rt, *dy, *col; /* [nd] each: iterate, trial, residuals, step, column */
+    double *yc, *yo;  /* [nd] each: the march's last solution and the one before (nma.c) */
+    double amplitude; /* the amplitude of the solve under way */
+    double scale;     /* its displacement scale: the amplitude rows' weight is scale/amplitude */
+    double *saved_pc, *saved_ps; /* the driver's excitation, back after the solve */
+
+    /* the backbone: per point a, ω, ξ, then the unknowns q */
+    size_t npts, cap, stride;
+    double *pts;
+};
+
+/* The linearized structure's mode k (elements stuck: each row of J a spring of its elements'
+ * stiffness, fr_hb_nma_row): φ_k mass-normalized into nma->phi, ω_k, ξ_k, a_stick.
+ * FRICREG_OK, FRICREG_EINVAL (mode, or a sparse model beyond the dense eigensolver), FRICREG_ENOTPSD
+ * (M), FRICREG_ENOMEM (message recorded, with fn). */
+int fr_hb_nma_linear(fricreg_hb *hb, const char *fn, size_t mode, struct fr_hb_nma *nma);
+
+/* Row r of J's stiffness with its elements stuck and its amplitude of first slip (or opening):
+ * *k (0: the row carries no force at rest), *limit (infinite: none). */
+void fr_hb_nma_row(const fricreg_hb *hb, size_t r, double *k, double *limit);
+
+/* Sets up the driver for a mode's solves (the damping C − ξ M, the load column M φ) and back. */
+void fr_hb_nma_enter(fricreg_hb *hb, struct fr_hb_nma *nma);
+void fr_hb_nma_leave(fricreg_hb *hb, struct fr_hb_nma *nma);
+
+/* Newton's method on the extended periodic motion concept's equations at the amplitude a from
+ * nma->y (q, ω, ξ; the solution there). FRICREG_OK, FRICREG_EWORK, FRICREG_ESINGULAR,
+ * FRICREG_EINTEGRATOR, FRICREG_ENONFINITE, FRICREG_ENOMEM (message recorded, with fn). */
+int fr_hb_nma_newton(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, double a);
+
+/* The driver's factors, forces and (R) into R[nq] at the unknowns y (q, ω, ξ), with the forces'
+ * Jacobians: the displacements (fr_hb_recover) of a stored point follow. */
+int fr_hb_nma_evaluate(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, const double *y,
+                       double *R);
+
+#endif

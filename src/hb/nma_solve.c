@@ -1,0 +1,250 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* nma_solve.c — one point of a nonlinear mode by the extended periodic motion concept (M.
+ * Krack, "Nonlinear modal analysis of nonconservative systems: extension of the periodic motion
+ * concept", Computers & Structures 154, 2015): the autonomous HB problem
+ *
+ *     M x'' + (C − ξ M) x' + K x + J^T f(J x) = 0,
+ *
+ * condensed on q = J x as the forced response is (fricreg_hb.h): D_h = K − (hω)² M +
+ * i hω (C − ξ M), no load, so (R) reads R(q, ω, ξ) = q + G_h(ω, ξ) F_h(q) = 0, closed by the
+ * amplitude and phase conditions on the first harmonic X_1 = −D_1^-1 J^T F_1 along the
+ * mass-normalized linear mode φ:
+ *
+ *     s = φ^T M X_1 = −g^T F_1,   g = J D_1^-1 M φ,     Re s = a,  Im s = 0
+ *
+ * (the modal coordinate is a cos ωt). g is the condensation's load column with M φ as the load
+ * (fricreg_hb_nma_enter), so its ω derivative comes with the factors'. The ξ derivatives, from
+ * dD_h/dξ = −i hω M: dG_h/dξ = −Y_h^T (dD_h/dξ) Y_h (the same for g's column). Newton's method
+ * on the nq + 2 unknowns (q, ω, ξ) with the exact Jacobian
+ *
+ *     [ I + G ∂F/∂q    dG/dω F    dG/dξ F ]
+ *     [ −c Re g^T ∂F_1/∂q   −c Re dg/dω^T F_1   −c Re dg/dξ^T F_1 ]   (and the Im row)
+ *
+ * the amplitude rows weighted by c = (displacement scale)/a, and the backtracking line search of
+ * newton.c (Armijo on the weighted |R|, halving down to 1/1024). */
+#include <math.h>
+#include <string.h>
+
+#include "nma_internal.h"
+
+void fr_hb_nma_enter(fricreg_hb *hb, struct fr_hb_nma *nma)
+{
+    nma->saved_pc = hb->pc;
+    nma->saved_ps = hb->ps;
+    hb->pc = nma->w;
+    hb->ps = nma->zero;
+    hb->free_vibration = 1;
+    hb->no_c = nma->modal;
+    hb->factored_omega = NAN;
+}
+
+void fr_hb_nma_leave(fricreg_hb *hb, struct fr_hb_nma *nma)
+{
+    hb->pc = nma->saved_pc;
+    hb->ps = nma->saved_ps;
+    hb->free_vibration = 0;
+    hb->no_c = 0;
+    hb->xi = 0.0;
+    hb->factored_omega = NAN; /* the factors were the mode's */
+}
+
+/* Z = (dD_h/dξ) Y_h = −i hω M Y_h, dense or on the sparse pattern. */
+static void xi_times_y(fricreg_hb *hb, int h, double omega)
+{
+    size_t n = hb->n, w = hb->m + 1;
+    const double *Y = hb->Y + 2 * (size_t)h * n * w;
+    double s = -h * omega;
+    memset(hb->Z, 0, 2 * n * w * sizeof(double));
+    for (size_t j = 0; j < n; j++) {
+        int64_t p0 = hb->sparse ? hb->Dp[j] : 0, p1 = hb->sparse ? hb->Dp[j + 1] : (int64_t)n;
+        for (int64_t p = p0; p < p1; p++) {
+            size_t i = hb->sparse ? (size_t)hb->Di[p] : (size_t)p;
+            double mij = hb->sparse ? hb->vM[p] : hb->M[i * n + j];
+            if (mij == 0.0)
+                continue;
+            for (size_t c = 0; c < w; c++) { /* z += i s mij y */
+                const double *y = Y + 2 * (j * w + c);
+                double *z = hb->Z + 2 * (i * w + c);
+                z[0] -= s * mij * y[1];
+                z[1] += s * mij * y[0];
+            }
+        }
+    }
+}
+
+/* The ξ derivatives of the condensation, dGx and dgx, at the factored ω. */
+static void xi_derivatives(fricreg_hb *hb, struct fr_hb_nma *nma, double omega)
+{
+    size_t m = hb->m;
+    memset(nma->dGx, 0, 2 * m * m * sizeof(double)); /* h = 0: D_0 = K */
+    memset(nma->dgx, 0, 2 * m * sizeof(double));
+    for (int h = 1; h <= hb->H; h++) {
+        xi_times_y(hb, h, omega);
+        fr_hb_project(hb, hb->Y + 2 * (size_t)h * hb->n * (m + 1), hb->Z, -1.0,
+                      nma->dGx + 2 * (size_t)h * m * m, nma->dgx + 2 * (size_t)h * m);
+    }
+}
+
+/* −g^T F_1 (complex, into s[2]) for the first harmonic's column g[m] (complex) and the forces fq. */
+static void modal(const fricreg_hb *hb, const double *g, double *s)
+{
+    size_t nc = hb->nc;
+    s[0] = s[1] = 0.0;
+    for (size_t r = 0; r < hb->m; r++) { /* F = fa − i fb */
+        double gr = g[2 * r], gi = g[2 * r + 1], fa = hb->fq[r * nc + 1], fb = hb->fq[r * nc + 2];
+        s[0] -= gr * fa + gi * fb;
+        s[1] -= gi * fa - gr * fb;
+    }
+}
+
+int fr_hb_nma_evaluate(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, const double *y,
+                       double *R)
+{
+    size_t nq = nma->nq;
+    double omega = y[nq];
+    if (!isfinite(omega) || !(omega > 0.0) || !isfinite(y[nq + 1]))
+        return fr_fail(hb, FRICREG_EWORK, "%s: Newton left the frequencies (omega = %g, xi = %g)",
+                       fn, omega, y[nq + 1]);
+    hb->xi = y[nq + 1] - (nma->modal ? nma->xi_k : 0.0);
+    hb->factored_omega = NAN; /* ξ changed */
+    int status = fr_hb_factor(hb, fn, omega, 1);
+    if (status == FRICREG_OK)
+        status = fr_hb_residual(hb, fn, y, R, 1);
+    return status;
+}
+
+/* The residual (weighted amplitude rows last) into R[nd], and with jac Newton's matrix. */
+static int evaluate(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, const double *y,
+                    double *R, int jac)
+{
+    size_t nq = nma->nq, nd = nma->nd, m = hb->m;
+    int status = fr_hb_nma_evaluate(hb, fn, nma, y, R);
+    if (status != FRICREG_OK)
+        return status;
+    double c = nma->scale / nma->amplitude, s[2];
+    modal(hb, hb->ql + 2 * m, s);
+    R[nq] = c * (s[0] - nma->amplitude);
+    R[nq + 1] = c * s[1];
+    if (!jac)
+        return FRICREG_OK;
+    double *A = nma->A;
+    xi_derivatives(hb, nma, y[nq]);
+    fr_hb_matrix(hb, hb->jq, A, nd);
+    fr_hb_domega(hb, nma->col);
+    for (size_t j = 0; j < nq; j++)
+        A[j * nd + nq] = nma->col[j];
+    fr_hb_apply(hb, nma->dGx, NULL, hb->fq, nma->col);
+    for (size_t j = 0; j < nq; j++)
+        A[j * nd + nq + 1] = nma->col[j];
+    /* the amplitude rows: ∂s/∂ω, ∂s/∂ξ from g's derivatives, ∂s/∂q from the forces' Jacobian */
+    modal(hb, hb->dql + 2 * m, s);
+    A[nq * nd + nq] = c * s[0];
+    A[(nq + 1) * nd + nq] = c * s[1];
+    modal(hb, nma->dgx + 2 * m, s);
+    A[nq * nd + nq + 1] = c * s[0];
+    A[(nq + 1) * nd + nq + 1] = c * s[1];
+    size_t nc = hb->nc, rpe = hb->rpe, b = rpe * nc;
+    for (size_t j = 0; j < nq; j++)
+        A[nq * nd + j] = A[(nq + 1) * nd + j] = 0.0;
+    for (size_t r = 0; r < m; r++) {
+        size_t e = r / rpe, sr = r % rpe;
+        const double *g = hb->ql + 2 * (m + r), *Ja = hb->jq + e * b * b + (sr * nc + 1) * b,
+                     *Jb = Ja + b;
+        for (size_t j = 0; j < b; j++) { /* ∂(−g F)/∂q_j, F = fa − i fb */
+            A[nq * nd + e * b + j] -= c * (g[0] * Ja[j] + g[1] * Jb[j]);
+            A[(nq + 1) * nd + e * b + j] -= c * (g[1] * Ja[j] - g[0] * Jb[j]);
+        }
+    }
+    return FRICREG_OK;
+}
+
+static double norm2(const double *v, size_t n)
+{
+    double s = 0.0;
+    for (size_t j = 0; j < n; j++)
+        s += v[j] * v[j];
+    return sqrt(s);
+}
+
+/* Newton's step dy = −A^-1 R: FRICREG_ESINGULAR when a pivot of A's LU factor is below 1e-14 of
+ * its largest entry. */
+static int step(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma)
+{
+    size_t nd = nma->nd;
+    double amax = 0.0;
+    for (size_t k = 0; k < nd * nd; k++)
+        amax = fmax(amax, fabs(nma->A[k]));
+    fr_hb_lu_factor(nma->A, nd, nma->piv);
+    for (size_t k = 0; k < nd; k++) {
+        double p = fabs(nma->A[k * nd + k]);
+        if (!(p > 1e-14 * amax) || !isfinite(p))
+            return fr_fail(hb, FRICREG_ESINGULAR,
+                           "%s: the nonlinear mode's Newton matrix is singular at amplitude %g "
+                           "(pivot %zu: %g, largest entry %g)",
+                           fn, nma->amplitude, k, p, amax);
+    }
+    for (size_t j = 0; j < nd; j++)
+        nma->dy[j] = -nma->R[j];
+    fr_hb_lu_solve_factored(nma->A, nd, nma->piv, nma->dy);
+    return FRICREG_OK;
+}
+
+/* Backtracking along dy (Armijo's condition on |R|, as newton.c's); converged iterates take
+ * the full step. */
+static int line_search(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, int converged)
+{
+    size_t nd = nma->nd;
+    double r0 = norm2(nma->R, nd);
+    int status = FRICREG_OK;
+    for (double alpha = 1.0; alpha >= 1.0 / 1024; alpha *= 0.5) {
+        for (size_t j = 0; j < nd; j++)
+            nma->yt[j] = nma->y[j] + alpha * nma->dy[j];
+        status = evaluate(hb, fn, nma, nma->yt, nma->Rt, 0);
+        if (status == FRICREG_OK &&
+            (converged || norm2(nma->Rt, nd) <= (1.0 - 1e-4 * alpha) * r0)) {
+            memcpy(nma->y, nma->yt, nd * sizeof(double));
+            return FRICREG_OK;
+        }
+        if (status != FRICREG_OK && status != FRICREG_EWORK)
+            return status;
+    }
+    return status != FRICREG_OK ? status
+                                : fr_fail(hb, FRICREG_EWORK,
+                                          "%s: Newton's line search found no decrease of |R| = "
+                                          "%g at amplitude %g",
+                                          fn, r0, nma->amplitude);
+}
+
+int fr_hb_nma_newton(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, double a)
+{
+    size_t nq = nma->nq, nd = nma->nd;
+    nma->amplitude = a;
+    nma->scale = 0.0;
+    for (size_t j = 0; j < nq; j++)
+        nma->scale = fmax(nma->scale, fabs(nma->y[j]));
+    if (!(nma->scale > 0.0))
+        nma->scale = a;
+    for (int it = 0;; it++) {
+        int status = evaluate(hb, fn, nma, nma->y, nma->R, 1);
+        if (status != FRICREG_OK)
+            return status;
+        double r = 0.0, qs = 0.0;
+        for (size_t j = 0; j < nd; j++)
+            r = fmax(r, fabs(nma->R[j]));
+        for (size_t j = 0; j < nq; j++)
+            qs = fmax(qs, fabs(nma->y[j]));
+        double bound = hb->tol * fmax(qs, 1e-300);
+        if (it >= 1 && r <= bound) {
+            hb->iterations = it;
+            return FRICREG_OK;
+        }
+        if (it == hb->max_iter)
+            return fr_fail(hb, FRICREG_EWORK,
+                           "%s: Newton did not converge in %d iterations at amplitude %g (|R| = "
+                           "%g, tolerance %g)",
+                           fn, it, a, r, bound);
+        if ((status = step(hb, fn, nma)) != FRICREG_OK ||
+            (status = line_search(hb, fn, nma, r <= bound)) != FRICREG_OK)
+            return status;
+    }
+}
