@@ -548,7 +548,8 @@ START_TEST(structure_error_estimate_companion)
                      FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_set_jenkins_2d_normal(c, 1, 3, Je, Jn, &kt, &mu, &n0, &kn),
                      FRICREG_OK);
-    ck_assert_int_eq(fricreg_structure_set_error_estimate(s, 1), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_error_estimate(s, FRICREG_ESTIMATE_ONE_COMPANION),
+                     FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_run(s, dt, nsteps * dt), FRICREG_OK);
     double t = 0.0;
     ck_assert_int_eq(fricreg_structure_get_value(s, FRICREG_SVALUE_TIME, &t), FRICREG_OK);
