@@ -497,13 +497,18 @@ Suite *hb_stability_suite(void)
     Suite *s = suite_create("hb_stability");
     TCase *tc = tcase_create("core");
     tcase_set_timeout(tc, 300);
-    tcase_add_test(tc, contact_pair_against_shooting);
     tcase_add_test(tc, jenkins_pair_against_shooting);
     tcase_add_test(tc, gap_pair_against_shooting);
-    tcase_add_test(tc, gap_pair_bifurcations);
     tcase_add_test(tc, bad_input);
     tcase_add_test(tc, sparse_as_dense);
     suite_add_tcase(s, tc);
+
+    /* The long sweeps (the contact pair's 200 points, the bisections): native and ASan only. */
+    TCase *sweeps = tcase_create("sweeps");
+    tcase_set_timeout(sweeps, 300);
+    tcase_add_test(sweeps, contact_pair_against_shooting);
+    tcase_add_test(sweeps, gap_pair_bifurcations);
+    suite_add_tcase(s, sweeps);
     return s;
 }
 

@@ -143,9 +143,19 @@ if [ $check -eq 1 ]; then
     exit $?
 fi
 
-# the ctest names of the quick tier the list uses; their programs are test_<name>
+# The programs of quick-tier ctest names: test_<name>, and test_alloc_failure for
+# alloc_failure_<case> (one Check case each).
+programs_of() { # names...
+    for t in "$@"; do
+        case $t in alloc_failure_*) t=alloc_failure ;; esac
+        echo "test_$t"
+    done | sort -u | tr '\n' ' '
+}
+
+# the ctest names of the quick tier the list uses
 ctests=$(cat "$blocks"/*/tests | tr ' ' '\n' | grep -v '^tsan$' | grep . | sort -u)
-targets=$(for t in $ctests; do printf 'test_%s ' "$t"; done)
+# shellcheck disable=SC2086 # a list of words
+targets=$(programs_of $ctests)
 grep -q tsan "$blocks"/*/tests && targets="$targets test_threads"
 echo "building the copy: $targets"
 if ! cmake -S "$tree" -B "$build" -DCMAKE_C_COMPILER="$cc" -DFRICREG_FORTRAN=OFF >>"$log" 2>&1 ||
@@ -219,7 +229,8 @@ for dir in "$blocks"/*; do
     # shellcheck disable=SC2086 # a list of words
     split_tests $tests
     # what must compile natively: the tests' programs, and test_threads for a tsan mutant
-    programs=$(for t in $quick; do printf 'test_%s ' "$t"; done)
+    # shellcheck disable=SC2086 # a list of words
+    programs=$(programs_of $quick)
     [ $tsan -eq 1 ] && programs="$programs test_threads"
     verdict="" why=""
     echo "==== mutant $name ($file)" >>"$log"
