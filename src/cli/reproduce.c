@@ -115,13 +115,17 @@ static double last_cycle_dissipation(const fricreg_sim *sim)
 }
 
 /* Every file reproduce writes into --out (out_file.h), the manifest last. */
-static const char *const outputs[] = {
-    "fig5_unforced.csv",  "fig6_force.csv",       "fig9_chain.csv",       "fig11_twoblock.csv",
-    "hold_breakaway.csv", "belt_limit_cycle.csv", "disk_oscillator.csv",  "hb_frf.csv",
-    "plots.gp",           "fig5_unforced.png",    "fig6_force.png",       "fig9_chain.png",
-    "fig11_twoblock.png", "hold_breakaway.png",   "belt_limit_cycle.png", "disk_oscillator.png",
-    "hb_frf.png"};
-#define N_CSV 9 /* the CSVs and plots.gp come first in outputs[] */
+static const char *const outputs[] = {"fig5_unforced.csv",   "fig6_force.csv",
+                                      "fig9_chain.csv",      "fig11_twoblock.csv",
+                                      "hold_breakaway.csv",  "belt_limit_cycle.csv",
+                                      "disk_oscillator.csv", "hb_frf.csv",
+                                      "hb_overhang.csv",     "plots.gp",
+                                      "fig5_unforced.png",   "fig6_force.png",
+                                      "fig9_chain.png",      "fig11_twoblock.png",
+                                      "hold_breakaway.png",  "belt_limit_cycle.png",
+                                      "disk_oscillator.png", "hb_frf.png",
+                                      "hb_overhang.png"};
+#define N_CSV 10 /* the CSVs and plots.gp come first in outputs[] */
 #define N_OUTPUTS (sizeof outputs / sizeof outputs[0])
 
 /* Opens dir/name for writing (a temporary file until cli_out_commit): o->f, or NULL. */
@@ -388,6 +392,15 @@ static const char plot_script[] =
     "title 'Jenkins elements (stick-slip)', '' using ($1 == 2 ? $2 : NaN):3 with lines "
     "dashtype 3 title 'elements stuck'\n"
     "unset logscale y\n"
+    "set output outdir.'hb_overhang.png'\n"
+    "set title 'Harmonic balance, H = 15: gap pair (unilateral spring), Hill stability'\n"
+    "set key top left\n"
+    "set xlabel 'excitation frequency Omega (rad/s)'; set ylabel 'RMS displacement of mass 1'\n"
+    "plot 'hb_overhang.csv' using ($1 == 0 && $5 == 1 ? $2 : NaN):3 with lines lw 2 "
+    "title 'stable', '' using ($1 == 0 && $5 == 0 ? $2 : NaN):3 with lines dashtype 2 lw 2 "
+    "title 'unstable', '' using ($1 == 1 && $6 == 1 ? $2 : NaN):3 with points pt 7 ps 1.5 "
+    "title 'turning points', '' using ($1 == 1 && $6 != 1 ? $2 : NaN):3 with points pt 6 "
+    "ps 1.5 title 'other bifurcations (here Neimark-Sacker)'\n"
     "set size noratio\n";
 
 /* Moves the PNGs gnuplot made in the temporary directory tmp (inside dir) to dir, and removes

@@ -238,7 +238,90 @@ static int hb(const char *dir)
     return 0;
 }
 
+/* The gap pair of tests/test_hb_stability.c: two masses, K = [140 -20; -20 180], C = 0.002 K,
+ * a unilateral spring (kn = 500) behind a gap of 0.02 on dof 1 (normal gap -x_1, N0 = -10)
+ * with a weak friction (mu = 0.01) along dof 2, dof 1 excited at 2 cos, dof 2 at 1 cos. It
+ * hardens once the gap closes, so its branch from 11 to 17 rad/s overhangs between two
+ * turning points (at 16.0666439 rad/s: tests/test_hb_stability.c's fine continuation). */
+#define GAP_PAIR_FOLD 16.0666439
+
+static int hb_gap_pair(fricreg_hb **out)
+{
+    const double M[4] = {1, 0, 0, 1}, K[4] = {140, -20, -20, 180}, J[2] = {0, 1};
+    const double Jn[2] = {-1, 0}, kt = 40.0, mu = 0.01, n0 = -10.0, kn = 500.0;
+    const double pc[2] = {2.0, 1.0}, ps[2] = {0.0, 0.0};
+    double C[4];
+    for (int i = 0; i < 4; i++)
+        C[i] = 0.002 * K[i];
+    int status = fricreg_hb_create(2, 1, 15, out);
+    if (status == FRICREG_OK && (status = fricreg_hb_set_mass(*out, 2, M)) == FRICREG_OK &&
+        (status = fricreg_hb_set_stiffness(*out, 2, K)) == FRICREG_OK &&
+        (status = fricreg_hb_set_damping(*out, 2, C)) == FRICREG_OK &&
+        (status = fricreg_hb_set_normal_elements(*out, 1, 2, J, Jn, &kt, &mu, &n0, &kn)) ==
+            FRICREG_OK &&
+        (status = fricreg_hb_set_excitation(*out, 2, pc, ps)) == FRICREG_OK &&
+        (status = fricreg_hb_set_stability(*out, 1)) == FRICREG_OK)
+        status = fricreg_hb_continue(*out, 11.0, 17.0, 2 * 31, NULL);
+    return status;
+}
+
+/* The branch's rows (curve 0: omega, rms1, rms2, stable) and its bifurcations' (curve 1:
+ * omega, rms1, rms2, 1, type). The largest turning point's Omega into *fold. */
+static int overhang_rows(fricreg_hb *hb, struct rows *rows, double *fold)
+{
+    int status = FRICREG_OK;
+    for (size_t k = 0; status == FRICREG_OK && k < fricreg_hb_points(hb); k++) {
+        double w, rms[2], mu_max;
+        int stable = 0;
+        if ((status = fricreg_hb_point(hb, k, &w, 2, rms)) == FRICREG_OK &&
+            (status = fricreg_hb_point_stability(hb, k, &stable, &mu_max)) == FRICREG_OK) {
+            const double v[5] = {w, rms[0], rms[1], stable, 0.0};
+            if (keep(rows, v) != 0)
+                status = FRICREG_ENOMEM;
+        }
+    }
+    *fold = 0.0;
+    rows->curve = 1;
+    for (size_t i = 0; status == FRICREG_OK && i < fricreg_hb_bifurcations(hb); i++) {
+        int type;
+        double w, rms[2];
+        size_t k;
+        if ((status = fricreg_hb_bifurcation(hb, i, &type, &w, &k, 2, rms)) != FRICREG_OK)
+            break;
+        const double v[5] = {w, rms[0], rms[1], 1.0, type};
+        if (keep(rows, v) != 0)
+            status = FRICREG_ENOMEM;
+        if (type == FRICREG_HB_TP && w > *fold)
+            *fold = w;
+    }
+    return status;
+}
+
+/* An overhanging frequency response with its stability (Hill's method) and bifurcations. */
+static int hb_overhang(const char *dir)
+{
+    struct rows rows = {.every = 1};
+    fricreg_hb *hb = NULL;
+    double fold = 0.0;
+    int status = hb_gap_pair(&hb);
+    if (status == FRICREG_OK)
+        status = overhang_rows(hb, &rows, &fold);
+    fricreg_hb_free(hb);
+    const struct rows *sets[1] = {&rows};
+    int bad = status != FRICREG_OK ? failed("hb overhang", status)
+                                   : write_rows(dir, "hb_overhang.csv",
+                                                "curve,omega,rms1,rms2,stable,type", sets, 1, 0, 5);
+    free(rows.data);
+    if (bad)
+        return 1;
+    char diff[48];
+    snprintf(diff, sizeof diff, "%.1e", fold - GAP_PAIR_FOLD);
+    cli_table_row("HB", "gap pair, H = 15: upper turning point Omega", "16.0666439 (fine)", fold,
+                  diff);
+    return 0;
+}
+
 int cli_reproduce_beyond(const char *dir)
 {
-    return hold(dir) || belt(dir) || disk(dir) || hb(dir);
+    return hold(dir) || belt(dir) || disk(dir) || hb(dir) || hb_overhang(dir);
 }
