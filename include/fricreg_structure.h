@@ -1032,10 +1032,12 @@ FRICREG_API size_t fricreg_structure_errmsg_copy(const fricreg_structure *s, cha
  *    |initial| + |input|.
  *  - FRICREG_WARN_TOL_LOOSE: an adaptive fricreg_structure_run_ode call since set_initial held
  *    a contact's velocity zdot_i = (J v)_i (mun_i > 0) to a level above 0.01 eps, the level
- *    being sum_j |J_ij| (atol_j + rtol x 1 velocity unit) over its atol per component (the
- *    call's one atol, or those of fricreg_structure_set_ode_abs_tolerances): law (4)'s force
- *    inside its band is then uncontrolled (fricreg_sim's threshold). The rule from eps
- *    (FRICREG_ATOL_FROM_EPS, 1e-3 eps) never raises it. Since 1.6.
+ *    being max_i sum_j |J_ij| atol_j over its atol per component (the call's one atol, or
+ *    those of fricreg_structure_set_ode_abs_tolerances) plus the calls' largest rtol times the
+ *    run's largest sum_j |J_ij| |v_j| at a step's end (GSL's control holds v_j to
+ *    atol_j + rtol |v_j|): law (4)'s force inside its band is then uncontrolled (fricreg_sim's
+ *    threshold). The rule from eps (FRICREG_ATOL_FROM_EPS, 1e-3 eps) never raises it.
+ *    Since 1.6; since 1.7 the relative part takes the run's velocities, not 1 velocity unit.
  *  - FRICREG_WARN_ERROR_ESTIMATE: with fricreg_structure_set_error_estimate on, the companion
  *    failed (the estimates are +infinity; the message says why), or an estimate is above 10%
  *    of its quantity (the largest peak_err_i against the largest peak_i, or the sum of the

@@ -38,11 +38,15 @@
 #define T_END (4.0 * 2.0 * PI / OMEGA)
 #define DT_REC 0.005
 
-static fricreg_structure *chain(void)
+/* The chain with lengths in units of 1/L m (L = 1000: mm): u, v, eps and atol times L; M,
+ * C and K over L (forces in N); J, mun and rtol the same. */
+static fricreg_structure *chain_in(double L)
 {
     fricreg_structure *s = NULL;
     double M[NDOF * NDOF] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
     double K[NDOF * NDOF] = {2, -1, 0, -1, 2, -1, 0, -1, 1};
+    for (size_t k = 0; k < NDOF * NDOF; k++)
+        M[k] /= L, K[k] /= L;
     double J[NC * NDOF] = {1, 0, 0, 0, 1, -1}, mun[NC] = {0.5, 0.3}, p[NDOF] = {0, 0, 1};
     size_t nrec = (size_t)(T_END / DT_REC) + 3;
     double *g = malloc(nrec * sizeof *g);
@@ -55,10 +59,15 @@ static fricreg_structure *chain(void)
     ck_assert_int_eq(fricreg_structure_set_rayleigh(s, 0.0, 0.02), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_set_contacts(s, NC, NDOF, J), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_set_bounds(s, NC, mun), FRICREG_OK);
-    ck_assert_int_eq(fricreg_structure_set_law(s, FRICREG_LAW_QUINN, EPS), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_law(s, FRICREG_LAW_QUINN, L * EPS), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_set_load(s, NDOF, p, 0.0, DT_REC, nrec, g), FRICREG_OK);
     free(g);
     return s;
+}
+
+static fricreg_structure *chain(void)
+{
+    return chain_in(1.0);
 }
 
 /* Each contact's dissipation over the run by run_ode. */
@@ -211,6 +220,33 @@ static int warns(fricreg_structure *s, int code)
  * holds it to 2 (atol + rtol): 4e-6 at atol = rtol = 1e-6, above 0.01 eps = 1e-7 (the run
  * that left D_1 0.17 off), and 4e-8 at 1e-8, below; the rule (1e-3 eps) never warns; set
  * tolerances of 1e-6 with rtol = 0 hold it to 2e-6. */
+/* FRICREG_WARN_TOL_LOOSE's verdict does not depend on the unit of length: the chain in m and
+ * in mm (atol and eps times 1000, rtol the same) warns at rtol = 1e-6 and not at 1e-8, atol =
+ * 1e-10 m, as the level 2 atol + rtol max_i sum_j |J_ij| |v_j| says (the run's peak of that
+ * sum is 2.8 m/s). Taking rtol times 1 velocity unit instead, the chain in mm would not
+ * warn at 1e-6 (2 (1e-7 + 1e-6) against 1e-4). */
+START_TEST(test_loose_tolerances_any_unit)
+{
+    const double rtol[2] = {1e-6, 1e-8}, t = T_END / 4.0, atol_m = 1e-10;
+    for (int r = 0; r < 2; r++) {
+        int verdict[2];
+        for (int u = 0; u < 2; u++) {
+            double L = u == 0 ? 1.0 : 1000.0;
+            fricreg_structure *s = chain_in(L);
+            ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_RKF45, 1e-3, rtol[r],
+                                                       L * atol_m, t),
+                             FRICREG_OK);
+            verdict[u] = warns(s, FRICREG_WARN_TOL_LOOSE);
+            double level = 2.0 * L * atol_m + rtol[r] * s->peak_dof_speed;
+            ck_assert_int_eq(verdict[u], level > 1e-2 * L * EPS);
+            fricreg_structure_free(s);
+        }
+        ck_assert_int_eq(verdict[0], verdict[1]);
+        ck_assert_int_eq(verdict[0], r == 0);
+    }
+}
+END_TEST
+
 START_TEST(test_loose_tolerances_warn)
 {
     fricreg_structure *s = chain();
@@ -297,6 +333,7 @@ int main(void)
     tcase_add_test(tc, test_set_tolerances);
     tcase_add_test(tc, test_companion);
     tcase_add_test(tc, test_loose_tolerances_warn);
+    tcase_add_test(tc, test_loose_tolerances_any_unit);
     suite_add_tcase(suite, tc);
     SRunner *sr = srunner_create(suite);
     srunner_run_all(sr, CK_NORMAL);

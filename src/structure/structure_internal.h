@@ -187,10 +187,12 @@ struct fricreg_structure {
      * since set_initial showed them (reset by set_initial). */
     struct fr_warnings warnings;
     double peak_speed;     /* the largest |zdot_i| = |(J v)_i| at a step's end */
+    double peak_dof_speed; /* the largest sum_j |J_ij| |v_j| at a step's end */
     double max_dt;         /* the longest fixed step (run_ode's adaptive ones aside) */
     int64_t inexact_steps; /* steps of a scheme whose energy balance is not exact */
-    double ode_tol_level;  /* the loosest contact velocity tolerance of an adaptive run_ode
-                            * call, max_i sum_j |J_ij| (atol_j + rtol) (0: none) */
+    double ode_tol_level;  /* the loosest absolute part of a contact velocity's tolerance in
+                            * an adaptive run_ode call, max_i sum_j |J_ij| atol_j (0: none) */
+    double ode_rtol_max;   /* the largest rtol of those calls (0: none) */
 
     /* The largest |u_i| at the sampled times since set_initial (fricreg_structure_get_peak_
      * displacement): every fixed step's end, every run_ode call's end. [n] */

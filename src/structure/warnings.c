@@ -45,6 +45,8 @@ void fr_warn_track_reset(fricreg_structure *s)
     s->max_dt = 0.0;
     s->inexact_steps = 0;
     s->ode_tol_level = 0.0;
+    s->ode_rtol_max = 0.0;
+    s->peak_dof_speed = 0.0;
 }
 
 /* Average-acceleration Newmark: the one scheme whose discrete energy balance is exact. */
@@ -60,10 +62,13 @@ void fr_warn_track_step(fricreg_structure *s, double dt, int ode)
     for (size_t i = 0; i < s->m; i++) { /* zdot_i = (J v)_i: column i of J^T */
         if (s->mun[i] == 0.0)
             continue; /* no friction there: its speed says nothing of eps */
-        double z = 0.0;
-        for (SuiteSparse_long p = Jp[i]; p < Jp[i + 1]; p++)
+        double z = 0.0, w = 0.0;
+        for (SuiteSparse_long p = Jp[i]; p < Jp[i + 1]; p++) {
             z += Jx[p] * v[Ji[p]];
+            w += fabs(Jx[p] * v[Ji[p]]);
+        }
         s->peak_speed = fmax(s->peak_speed, fabs(z));
+        s->peak_dof_speed = fmax(s->peak_dof_speed, w);
     }
     s->max_dt = fmax(s->max_dt, dt);
     if (ode || !balance_exact(s) || s->el.crossed) /* lift-off: the normal kink within a step */
@@ -71,10 +76,12 @@ void fr_warn_track_step(fricreg_structure *s, double dt, int ode)
 }
 
 /* The level to which an adaptive run_ode call with (rtol, atol) holds the contacts'
- * velocities, each velocity v_j to atol_j + rtol x 1 velocity unit (the per-component atol
- * of set_ode_abs_tolerances, or the call's one atol), summed through J: max over contacts
- * with mun_i > 0 of sum_j |J_ij| (atol_j + rtol), as include/fricreg_structure.h documents
- * FRICREG_WARN_TOL_LOOSE. The rule from eps holds them to 1e-3 eps and is not judged. */
+ * velocities: each velocity v_j to atol_j + rtol |v_j| (GSL's control, the per-component atol
+ * of set_ode_abs_tolerances or the call's one atol), summed through J, so contact i's to
+ * sum_j |J_ij| (atol_j + rtol |v_j|). Kept as the absolute part, max over contacts with
+ * mun_i > 0 of sum_j |J_ij| atol_j, and rtol; check_tolerances adds rtol times the run's
+ * largest sum_j |J_ij| |v_j| (as include/fricreg_structure.h documents
+ * FRICREG_WARN_TOL_LOOSE). The rule from eps holds them to 1e-3 eps and is not judged. */
 void fr_warn_track_ode_tolerances(fricreg_structure *s, double rtol, double atol)
 {
     if (s->ode_atol == NULL && atol == FRICREG_ATOL_FROM_EPS)
@@ -88,21 +95,24 @@ void fr_warn_track_ode_tolerances(fricreg_structure *s, double rtol, double atol
         for (SuiteSparse_long p = Jp[i]; p < Jp[i + 1]; p++) {
             size_t j = s->n + (size_t)Ji[p]; /* v_j's component of y = (u, v, ...) */
             double atol_j = s->ode_atol != NULL ? s->ode_atol[j] * s->tol_scale : atol;
-            level += fabs(Jx[p]) * (atol_j + rtol);
+            level += fabs(Jx[p]) * atol_j;
         }
         s->ode_tol_level = fmax(s->ode_tol_level, level);
     }
+    s->ode_rtol_max = fmax(s->ode_rtol_max, rtol);
 }
 
 static void check_tolerances(fricreg_structure *s)
 {
     double eps = fr_ctx_eps(s->ctx);
-    if (s->ode_tol_level > TOL_PER_EPS * eps)
+    double level = s->ode_tol_level + s->ode_rtol_max * s->peak_dof_speed;
+    if (level > TOL_PER_EPS * eps)
         fr_warn(&s->warnings, FRICREG_WARN_TOL_LOOSE,
                 "an adaptive run_ode held a contact velocity to %.3g (sum_j |J_ij| (atol_j + "
-                "rtol x 1)), above 0.01 eps = %.3g: inside the band |zdot| < eps law (4)'s force "
-                "is then uncontrolled; take atol FRICREG_ATOL_FROM_EPS (fricreg-sim: no --atol)",
-                s->ode_tol_level, TOL_PER_EPS * eps);
+                "rtol |v_j|)), above 0.01 eps = %.3g: inside the band |zdot| < eps law (4)'s "
+                "force is then uncontrolled; take atol FRICREG_ATOL_FROM_EPS (fricreg-sim: no "
+                "--atol)",
+                level, TOL_PER_EPS * eps);
 }
 
 /* The record's peak |a_g| and its peak velocity |integral of a_g| (trapezoidal from 0). */
