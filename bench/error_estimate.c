@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* error_estimate.c — fricreg-bench-error-estimate: the calibration sweep of
- * fricreg_sim_set_error_estimate. Over every reference system (the chain at n = 32 and
+ * fricreg_sim_set_error_estimate with one companion (FRICREG_ESTIMATE_ONE_COMPANION: 3 |d1|,
+ * 1.6's estimator; the two-companion one shares fricreg_structure's). Over every reference system (the chain at n = 32 and
  * n = 1000 included), every integrator family (fixed rk4 and rk8pd, adaptive rkf45, rk8pd,
  * msadams and msbdf with tolerances 1e-3 … 1e-9 and atol from eps, central-imex), eps from
  * the paper's rule to 1e-8, it compares the estimate of the measured cycle's D with its true
@@ -88,7 +89,7 @@ static void run_one(const struct bench_problem *p, const struct bench_reference 
     if (status == FRICREG_OK)
         status = fricreg_sim_set_integrator(sim, c->integrator, c->dt, c->rtol, c->atol);
     if (status == FRICREG_OK)
-        status = fricreg_sim_set_error_estimate(sim, 1);
+        status = fricreg_sim_set_error_estimate(sim, FRICREG_ESTIMATE_ONE_COMPANION); /* 3 |d1| */
     double t0 = bench_cpu_seconds();
     if (status == FRICREG_OK)
         status = fricreg_sim_run_cycles(sim, p->cycle);

@@ -2018,8 +2018,9 @@ contains
       status = self%record(fricreg_sim_set_kink_location(self%ptr, on))
   end function sim_set_kink_location
 
-  !> Whether runs estimate the error of D per cycle against eps -> 0 with one companion run at
-  !> eps/2 (1) or not (0, the default) (fricreg_sim_set_error_estimate).
+  !> Whether runs estimate the error of D per cycle against eps -> 0: with companion runs at
+  !> eps/2 and eps/4 (1, FRICREG_ESTIMATE_TWO_COMPANIONS), 1.6's one at eps/2 (2,
+  !> FRICREG_ESTIMATE_ONE_COMPANION), or not (0, the default) (fricreg_sim_set_error_estimate).
   function sim_set_error_estimate(self, on) result(status)
     class(fricreg_simulation), intent(inout) :: self
     integer(c_int), intent(in) :: on

@@ -108,7 +108,8 @@ enum fricreg_warning {
     /** a run far past the end of its ground or load record (10 times its duration): its time
      *  step in ms where s was meant? Since 1.7. */
     FRICREG_WARN_RECORD_SHORT = 13,
-    /** a two-companion error estimate (fricreg_structure_set_error_estimate) found its three
+    /** a two-companion error estimate (fricreg_structure_set_error_estimate,
+     *  fricreg_sim_set_error_estimate, fricreg-sim's hold, belt and disk) found its three
      *  values at eps, eps/2, eps/4 outside the asymptotic range (no order in eps between 0.5
      *  and 2.5, or differences of opposite signs: the run and its companion may agree on a
      *  wrong value) and reports a safe bound instead. Since 1.7. */

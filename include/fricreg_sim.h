@@ -412,38 +412,55 @@ FRICREG_API int fricreg_sim_get_stick_fraction(const fricreg_sim *sim, size_t m,
 
 /* ---- Error estimate (since 1.6) ---------------------------------------------------------- */
 
+/** The estimators of fricreg_sim_set_error_estimate and fricreg_structure_set_error_estimate
+ *  (their argument on). Values are fixed forever. Since 1.7 (in fricreg_structure.h until
+ *  fricreg_sim took the same three). */
+enum fricreg_error_estimate {
+    FRICREG_ESTIMATE_OFF = 0, /**< no estimate (the default) */
+    /** two companions, at eps / 2 and eps / 4, the observed order and a range test; 1 was one
+     *  companion until 1.6 */
+    FRICREG_ESTIMATE_TWO_COMPANIONS = 1,
+    FRICREG_ESTIMATE_ONE_COMPANION = 2 /**< 1.6's: one companion at eps / 2, 3 |q - q2| */
+};
+
 /** Whether fricreg_sim_run (and fricreg_sim_run_cycles) estimates the error of D per cycle
  *  against the Coulomb problem, eps -> 0, where the run's D carries both the regularization
  *  error of law (4) (or of the law chosen) and the discretization or tolerance error. Off by
  *  default (fricreg-sim turns it on). The setting is kept across runs; the last run's
  *  results are kept.
  *
- *  The estimate: after a successful run, one companion run from t = 0 to the same time with
- *  every setting but eps / 2 and, for a fixed step, dt / 2 (the step-halving ladder of
- *  fricreg_sim_run_extrapolated, its level 1), or, for an adaptive run, the tolerances
- *  (rtol, atol, per component, and the velocities' tolerance of the rule from eps) / 16; the
- *  estimate of each cycle's D is err = 3 |D(eps) - D_companion|. Law (4)'s error in D is
- *  c eps^p, p = 1 or 2
- *  (fricreg_sim_run_extrapolated); along dt / eps fixed a fixed step's error follows eps, so
- *  D(eps) - D(0) = (D(eps) - D(eps/2)) 2^p / (2^p - 1): 2x the difference at p = 1, 4/3x at
- *  p = 2; the factor 3 is p = 1's with a margin the calibration asked for (the two blocks at
- *  eps = 1e-2 are p = 1 to 1%), 1.5x … 2.3x the error in the asymptotic range. An adaptive
- *  run's tolerance error is carried by the difference since the companion's is a fraction
- *  of it.
- *  Cost: one companion run, about 2x the run for a fixed step (twice the steps), 1.4x … 3x
- *  for an adaptive one (rk8pd … rkf45, msbdf; tolerances / 16 at eps / 2). So with the
- *  estimate on a run costs about 3x.
- *  Calibrated by bench/error_estimate.c (docs/integrators.md, "Error estimate") against the
- *  exact solver (the oscillator) and extrapolated references (chain of 32 and of 1000, two
- *  blocks) over fixed rk4 and rk8pd, central-imex and adaptive rkf45, rk8pd, msadams and
- *  msbdf, tolerances 1e-3 … 1e-9 and eps from the rule to 1e-8: in the fixed-step,
- *  central-imex and one-step adaptive runs the estimate bounded the error in 97.2% of 142
- *  runs and was within 10x of it in 96.5%; in msadams and msbdf runs in 99% (within 10x 95%) of 96; over
- *  all 238 runs 97.9% (95.8%). The error of msadams and msbdf does not follow their
- *  tolerances, so their runs always carry FRICREG_WARN_ERROR_ESTIMATE: the estimate, not
- *  rtol, is their error bar.
+ *  The estimate: after a successful run, companion runs from t = 0 to the same time with
+ *  every setting but eps / 2 and eps / 4 and, for a fixed step, dt / 2 and dt / 4 (the
+ *  step-halving ladder of fricreg_sim_run_extrapolated, its levels 1 and 2), or, for an
+ *  adaptive run, the tolerances (rtol, atol, per component, and the velocities' tolerance of
+ *  the rule from eps) / 16 and / 256; they give D2 and D4 beside the run's D, per cycle and in
+ *  total. Law (4)'s error in D is c eps^p, p = 1 or 2 (fricreg_sim_run_extrapolated); along
+ *  dt / eps fixed a fixed step's error follows eps, so in the asymptotic range d1 = D - D2 and
+ *  d2 = D2 - D4 have one sign and d1 / d2 = 2^p. An adaptive run's tolerance error is carried
+ *  by the differences since each companion's is a fraction of it. The estimator, the same as
+ *  fricreg_structure_set_error_estimate's:
+ *  - on = FRICREG_ESTIMATE_TWO_COMPANIONS (1): where the observed order p = log2(d1 / d2) is
+ *    in [0.5, 2.5], err = 2 |d1| 2^p / (2^p - 1) (Richardson's correction with the observed
+ *    order, times 2); elsewhere (a stall: the run and the first companion agree on a wrong
+ *    value; differences that grow or change sign; or d2 far below d1) the safe bound
+ *    err = 6.83 (|d1| + |d2|), and below the range fricreg_sim_warning_count raises
+ *    FRICREG_WARN_NOT_ASYMPTOTIC; d1 and d2 both below 1e-9 of D give |d1| + |d2|. On the
+ *    oscillator against the exact solver (tests/test_error_estimate.c) within 1x ... 10x of
+ *    the error in the asymptotic range.
+ *  - on = FRICREG_ESTIMATE_ONE_COMPANION (2), 1.6's estimator: the level-1 companion only,
+ *    err = 3 |d1|: 2x the difference is p = 1's factor, 3 the margin the calibration of
+ *    bench/error_estimate.c asked for (docs/integrators.md, "Error estimate": against the
+ *    exact solver and extrapolated references over fixed rk4 and rk8pd, central-imex and
+ *    adaptive rkf45, rk8pd, msadams and msbdf, tolerances 1e-3 ... 1e-9 and eps from the rule
+ *    to 1e-8, it bounded the error in 97.9% of 238 runs and was within 10x in 95.8%). It
+ *    cannot see a stall.
+ *  Cost: a companion's run is about 2x the run for a fixed step (twice the steps), 4x at
+ *  level 2, 1.4x ... 3x each for an adaptive one (rk8pd ... rkf45, msbdf). So with two
+ *  companions a run costs about 7x, with one about 3x. The error of msadams and msbdf does
+ *  not follow their tolerances, so their runs always carry FRICREG_WARN_ERROR_ESTIMATE: the
+ *  estimate, not rtol, is their error bar.
  *
- *  Where the companion fails (e.g. FRICREG_EWORK, FRICREG_ESTEP at dt / 2) the run still
+ *  Where a companion fails (e.g. FRICREG_EWORK, FRICREG_ESTEP at dt / 2) the run still
  *  succeeds, its estimates are +infinity, and fricreg_sim_warning_count raises
  *  FRICREG_WARN_ERROR_ESTIMATE with the companion's message; it raises it too where the last
  *  whole cycle's estimate (the total's without one) is above 10% of its D, outside the
@@ -454,9 +471,11 @@ FRICREG_API int fricreg_sim_get_stick_fraction(const fricreg_sim *sim, size_t m,
  *  fricreg_sim_run_extrapolated makes no companion run: its extrapolation is the estimate.
  *
  *  sim  in/out: the simulation.
- *  on   in: 1 to estimate, 0 not to (default).
- *  Returns FRICREG_OK; FRICREG_ENULL if sim is NULL; FRICREG_EINVAL if on is neither 0 nor 1,
- *  or if called from the observer during a run. Since 1.6 (FRICREG_1.6). */
+ *  on   in: enum fricreg_error_estimate: 1 (two companions) or 2 (one) to estimate, 0 not to
+ *       (default).
+ *  Returns FRICREG_OK; FRICREG_ENULL if sim is NULL; FRICREG_EINVAL if on is not 0, 1 or 2,
+ *  or if called from the observer during a run. Since 1.6 (FRICREG_1.6); two companions and
+ *  on = 2 since 1.7 (1 was one companion). */
 FRICREG_API int fricreg_sim_set_error_estimate(fricreg_sim *sim, int on);
 
 /** Copy the error estimate of each whole forcing cycle's D (fricreg_sim_get_dissipation) of

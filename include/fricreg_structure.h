@@ -862,16 +862,6 @@ FRICREG_API int fricreg_structure_get_value(const fricreg_structure *s, int whic
 
 /* ---- Error estimate (since 1.6) ---------------------------------------------------------- */
 
-/** The estimators of fricreg_structure_set_error_estimate (its argument on). Values are fixed
- *  forever. Since 1.7. */
-enum fricreg_error_estimate {
-    FRICREG_ESTIMATE_OFF = 0, /**< no estimate (the default) */
-    /** two companions, at eps / 2 and eps / 4, the observed order and a range test; 1 was one
-     *  companion until 1.6 */
-    FRICREG_ESTIMATE_TWO_COMPANIONS = 1,
-    FRICREG_ESTIMATE_ONE_COMPANION = 2 /**< 1.6's: one companion at eps / 2, 3 |q - q2| */
-};
-
 /** Whether and how the structure estimates the error of its peak displacements
  *  (fricreg_structure_get_peak_displacement) and of each contact's dissipation
  *  (fricreg_structure_get_dissipation) against the Coulomb problem, eps -> 0, where a run's

@@ -694,17 +694,20 @@ within() {
     fi
 }
 # hold: from rest inside the friction disk (tan theta = 0.8 mu), 10^7 steps: creep exactly 0 m/s
-# and no displacement at all (the law returns f_eq itself at v = 0).
-expect_output '"steps": 10000000, .*"creep": 0, "displacement": 0, "slides": false' hold
+# and no displacement at all (the law returns f_eq itself at v = 0). (The estimate off: its
+# reruns at dt/2 and dt/4 would take 6x the run; it is tested on the shorter run below.)
+expect_output '"steps": 10000000, .*"creep": 0, "displacement": 0, "slides": false' hold --error-estimate off
 # ... in another direction, just inside the bound (theta 1.8e-6 deg below atan(mu): |F| =
 # (1 - 7.5e-8) mu N): still exactly 0.
 expect_output '"creep": 0, "displacement": 0, "slides": false' hold --phi-deg 217.3 --theta-deg 28.3024623 --steps 100000
+# ... and so are its reruns at eps/2 and eps/4: error estimates 0, the Coulomb solution's error.
+expect_output '"creep_error_estimate": 0, "displacement_error_estimate": 0, "cpu_seconds": [0-9.]+, "warnings": \[\]' hold --phi-deg 217.3 --theta-deg 28.3024623 --steps 100000
 # ... and outside it (29 deg) the block slides at g (sin theta - mu cos theta) = 0.135641967
 # m/s^2 from the first step (in the band too the law gives -mu N u when f_eq is beyond the
 # disk along -u), which RK4 integrates exactly: 0.0271283934013776 m/s after 0.2 s.
 "$sim" hold --theta-deg 29 --steps 2000 >"$tmp/hold.json" 2>"$tmp/err"
 within "hold slides at the closed-form rate" "$tmp/hold.json" \
-    'creep > 0.02712839340137 && creep < 0.02712839340138'
+    'creep > 0.02712839340137 && creep < 0.02712839340138 && creep_error_estimate < 1e-12'
 expect_output '"slides": true' hold --theta-deg 29 --steps 2000
 # Tilting at 0.02 rad/s (1.1459156 deg/s) from 0.9 atan(mu): the block leaves rest in the step
 # whose tilts bracket atan(mu) = 28.3024640990 deg; the bracket's midpoint is within kappa dt of
@@ -712,9 +715,17 @@ expect_output '"slides": true' hold --theta-deg 29 --steps 2000
 "$sim" hold --tilt-rate 1.1459156 >"$tmp/hold.json" 2>"$tmp/err"
 within "hold break-away within kappa dt" "$tmp/hold.json" \
     'error_deg <= bound_deg && -error_deg <= bound_deg && bound_deg < 1.2e-4 && exact_deg > 28.30246409 && exact_deg < 28.30246410'
+# ... and its error estimate from the reruns at eps/2, dt/2 and eps/4, dt/4 bounds the error
+# against the exact atan(mu) (5.05e-5 deg; the estimate 5.9e-4: a break-away located at a
+# step's end shows no order in eps, the safe bound without a warning).
+within "hold break-away's estimate bounds its error" "$tmp/hold.json" \
+    'breakaway_deg_error_estimate >= error_deg && breakaway_deg_error_estimate >= -error_deg && breakaway_deg_error_estimate < 1e-3'
+if ! grep -q '"warnings": \[\]}$' "$tmp/hold.json" || [ -s "$tmp/err" ]; then
+    echo "FAIL: hold break-away warned: $(cat "$tmp/err" "$tmp/hold.json")"; fails=$((fails + 1))
+fi
 "$sim" hold --tilt-rate 0.3 --phi-deg 123 --dt 1e-3 >"$tmp/hold.json" 2>"$tmp/err"
 within "hold break-away within kappa dt (dt 1e-3)" "$tmp/hold.json" \
-    'error_deg <= bound_deg && -error_deg <= bound_deg && bound_deg > 2.9e-4 && bound_deg < 3.1e-4'
+    'error_deg <= bound_deg && -error_deg <= bound_deg && bound_deg > 2.9e-4 && bound_deg < 3.1e-4 && breakaway_deg_error_estimate >= error_deg && breakaway_deg_error_estimate >= -error_deg'
 expect_output '^t,theta,x1,x2,v1,v2$' hold --tilt-rate 5 --output trajectory
 expect_usage_error "--mu" hold --mu -1
 expect_usage_error "--theta-deg" hold --theta-deg 95
@@ -730,6 +741,11 @@ expect_usage_error "--fs" hold --fs 1
 expect_output '"reference": \{"method": "event-driven", "dt": 1(\.0+1)?e-05, "period": 9\.41541094[0-9]*, "amplitude": 0\.59198018[0-9]*,' belt --dt 0.0025
 within "belt within 1e-3 of the reference" "$tmp/belt.json" \
     'period_error < 1e-3 && amplitude_error < 1e-3 && period > 9.41 && period < 9.42'
+# ... the error estimates from reruns at eps/2, dt/2 and eps/4, dt/4 (absolute; period and
+# amplitude here are the reference's, the last given) bound the errors against the event-driven
+# reference within 10x (measured: 2.0x both).
+within "belt's estimates bound its errors" "$tmp/belt.json" \
+    'period_error_estimate >= period_error * period && period_error_estimate <= 10 * period_error * period && amplitude_error_estimate >= amplitude_error * amplitude && amplitude_error_estimate <= 10 * amplitude_error * amplitude'
 # ... second order in dt = eps/2: halving dt divides both errors by more than 3.
 "$sim" belt --dt 0.00125 >"$tmp/belt2.json" 2>"$tmp/err"
 total=$((total + 1))
@@ -766,6 +782,17 @@ expect_usage_error "--dt" belt --v-belt 1e-300
 "$sim" disk --dt 0.005 >"$tmp/disk.json" 2>"$tmp/err"
 within "disk D against its reference" "$tmp/disk.json" \
     'relative_error < 1e-4 && dissipation_per_cycle > 10.01 && dissipation_per_cycle < 10.02'
+# ... D's error estimate from reruns at eps/2, dt/2 and eps/4, dt/4 bounds its difference to the
+# reference run at eps = 2e-4 within 10x (dissipation_per_cycle here is the reference's, the
+# last given; measured 8.4e-6 against 4.2e-6); none with --error-estimate off; one companion's
+# 3 |D - D(eps/2)| with one.
+within "disk's estimate bounds its error" "$tmp/disk.json" \
+    'dissipation_per_cycle_error_estimate >= relative_error * dissipation_per_cycle && dissipation_per_cycle_error_estimate <= 10 * relative_error * dissipation_per_cycle'
+expect_output '"dissipation_per_cycle_error_estimate": [0-9.]+e-0[56], "cpu_seconds": [0-9.]+, "warnings": \[\]}$' disk --ref-eps 0 --error-estimate one
+total=$((total + 1))
+if "$sim" disk --ref-eps 0 --error-estimate off | grep -q error_estimate; then
+    echo "FAIL: disk --error-estimate off still estimates"; fails=$((fails + 1))
+fi
 expect_output '"law": "quinn-nested"' disk --law quinn-nested --ref-eps 0
 expect_output '"reference": null' disk --ref-eps 0
 expect_output '^t,x1,x2,v1,v2,f1,f2$' disk --output trajectory

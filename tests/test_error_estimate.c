@@ -1,17 +1,33 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* test_error_estimate.c — fricreg_sim_set_error_estimate: the estimate of D per cycle bounds
- * its error against the Coulomb problem, and is within 10x of it, on runs with a known
- * reference: the oscillator's exact solution (fricreg_exact.h), a = 2, omega = 0.5 (it sticks:
- * p = 2 in eps), and the non-sticking a = 0.5, omega = 1.5 (p = 1); and its warnings. The full
- * calibration is bench/error_estimate.c (docs/integrators.md, "Error estimate"). */
+/* test_error_estimate.c — fricreg_sim_set_error_estimate: the two-companion estimate of D per
+ * cycle bounds its error against the Coulomb problem, and is within 10x of it, on runs with a
+ * known reference: the oscillator's exact solution (fricreg_exact.h), a = 2, omega = 0.5 (it
+ * sticks: p = 2 in eps), and the non-sticking a = 0.5, omega = 1.5 (p = 1); both estimators
+ * are their formulas on companions run by hand; outside the asymptotic range (eps = 1) the
+ * safe bound with FRICREG_WARN_NOT_ASYMPTOTIC; and the other warnings. The one-companion
+ * estimator's calibration is bench/error_estimate.c (docs/integrators.md, "Error estimate"). */
 #include <check.h>
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "fricreg_exact.h"
 #include "fricreg_sim.h"
 
 #define CYCLES 4
+
+static fricreg_sim *oscillator_estimated(double a, double omega, int integrator, double dt,
+                                         double rtol, double atol, double eps, int estimator)
+{
+    fricreg_sim *sim = NULL;
+    ck_assert_int_eq(fricreg_sim_create(FRICREG_SYSTEM_OSCILLATOR, &sim), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_A, a), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_OMEGA, omega), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_QUINN, eps), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_integrator(sim, integrator, dt, rtol, atol), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_error_estimate(sim, estimator), FRICREG_OK);
+    return sim;
+}
 
 /* D per cycle of the exact Coulomb solution from (2.75, 0). */
 static void exact_dissipation(double a, double omega, double D[CYCLES])
@@ -26,14 +42,8 @@ static void exact_dissipation(double a, double omega, double D[CYCLES])
 static fricreg_sim *oscillator(double a, double omega, int integrator, double dt, double rtol,
                                double atol, double eps)
 {
-    fricreg_sim *sim = NULL;
-    ck_assert_int_eq(fricreg_sim_create(FRICREG_SYSTEM_OSCILLATOR, &sim), FRICREG_OK);
-    ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_A, a), FRICREG_OK);
-    ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_OMEGA, omega), FRICREG_OK);
-    ck_assert_int_eq(fricreg_sim_set_law(sim, FRICREG_LAW_QUINN, eps), FRICREG_OK);
-    ck_assert_int_eq(fricreg_sim_set_integrator(sim, integrator, dt, rtol, atol), FRICREG_OK);
-    ck_assert_int_eq(fricreg_sim_set_error_estimate(sim, 1), FRICREG_OK);
-    return sim;
+    return oscillator_estimated(a, omega, integrator, dt, rtol, atol, eps,
+                                FRICREG_ESTIMATE_TWO_COMPANIONS);
 }
 
 /* Every cycle after the first (the start's transient holds the most error for the least D):
@@ -96,7 +106,8 @@ START_TEST(test_off_and_refusals)
     ck_assert_int_eq(fricreg_sim_get_value(sim, FRICREG_VALUE_DISSIPATION_ERROR, &v),
                      FRICREG_EINVAL);
     ck_assert(err[0] == -1.0 && v == -1.0);
-    ck_assert_int_eq(fricreg_sim_set_error_estimate(sim, 2), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_sim_set_error_estimate(sim, 3), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_sim_set_error_estimate(sim, -1), FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_sim_set_error_estimate(NULL, 1), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_sim_set_error_estimate(sim, 1), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_run_cycles(sim, CYCLES), FRICREG_OK);
@@ -111,6 +122,73 @@ START_TEST(test_off_and_refusals)
     ck_assert_int_eq(fricreg_sim_get_value(sim, FRICREG_VALUE_PERIOD, &period), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_run_extrapolated(sim, CYCLES * period, 2, 0), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_get_dissipation_error(sim, CYCLES, err), FRICREG_EINVAL);
+    fricreg_sim_free(sim);
+}
+END_TEST
+
+/* D per cycle of a run without estimate at eps / 2^k, dt / 2^k (fixed rk4), a = 2, omega = 0.5. */
+static void companion_by_hand(double eps, double dt, int k, double D[CYCLES])
+{
+    double scale = ldexp(1.0, -k);
+    fricreg_sim *c = oscillator_estimated(2.0, 0.5, FRICREG_INT_RK4, dt * scale, 0.0, 0.0,
+                                          eps * scale, FRICREG_ESTIMATE_OFF);
+    ck_assert_int_eq(fricreg_sim_run_cycles(c, CYCLES), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_get_dissipation(c, CYCLES, D), FRICREG_OK);
+    fricreg_sim_free(c);
+}
+
+/* Both estimators are their formulas (fricreg_sim.h) on companions run by hand: one companion
+ * 3 |d1|; two, in the asymptotic range (the oscillator at eps = 0.02: d1 / d2 = 2^p with p in
+ * [0.5, 2.5]), 2 |d1| 2^p / (2^p - 1) with the observed 2^p = d1 / d2. */
+START_TEST(test_estimators_are_their_formulas)
+{
+    const double eps = 0.02, dt = 0.01;
+    double D[CYCLES], D2[CYCLES], D4[CYCLES], one[CYCLES], two[CYCLES];
+    companion_by_hand(eps, dt, 1, D2);
+    companion_by_hand(eps, dt, 2, D4);
+    fricreg_sim *sim = oscillator_estimated(2.0, 0.5, FRICREG_INT_RK4, dt, 0.0, 0.0, eps,
+                                            FRICREG_ESTIMATE_ONE_COMPANION);
+    ck_assert_int_eq(fricreg_sim_run_cycles(sim, CYCLES), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_get_dissipation(sim, CYCLES, D), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_get_dissipation_error(sim, CYCLES, one), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_error_estimate(sim, FRICREG_ESTIMATE_TWO_COMPANIONS),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run_cycles(sim, CYCLES), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_get_dissipation_error(sim, CYCLES, two), FRICREG_OK);
+    ck_assert_uint_eq(fricreg_sim_warning_count(sim), 0);
+    fricreg_sim_free(sim);
+    for (int c = 0; c < CYCLES; c++) {
+        double d1 = D[c] - D2[c], r = d1 / (D2[c] - D4[c]);
+        ck_assert_double_eq_tol(one[c], 3.0 * fabs(d1), 1e-14 * fabs(D[c]));
+        ck_assert_msg(r >= sqrt(2.0) && r <= 4.0 * sqrt(2.0), "cycle %d: d1/d2 = %g", c + 1, r);
+        ck_assert_double_eq_tol(two[c], 2.0 * fabs(d1) * r / (r - 1.0), 1e-14 * fabs(D[c]));
+    }
+}
+END_TEST
+
+/* Outside the asymptotic range: at eps = 1 (dt = 0.01) the third cycle's D at eps, eps/2, eps/4
+ * is 10.40408, 10.41445, 10.42547, differences that grow (d1 / d2 = 0.94, no order): the
+ * estimate is the safe bound 6.83 (|d1| + |d2|) = 0.146, 5.4x the error 0.0269 against the
+ * exact solution (one companion's 3 |d1| = 0.031 bounds it by 16% only), with
+ * FRICREG_WARN_NOT_ASYMPTOTIC naming the cycle. Every cycle's estimate still bounds its error. */
+START_TEST(test_not_asymptotic)
+{
+    double ref[CYCLES], D[CYCLES], err[CYCLES];
+    exact_dissipation(2.0, 0.5, ref);
+    fricreg_sim *sim = oscillator(2.0, 0.5, FRICREG_INT_RK4, 0.01, 0.0, 0.0, 1.0);
+    ck_assert_int_eq(fricreg_sim_run_cycles(sim, CYCLES), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_get_dissipation(sim, CYCLES, D), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_get_dissipation_error(sim, CYCLES, err), FRICREG_OK);
+    for (int c = 0; c < CYCLES; c++)
+        ck_assert_msg(err[c] >= fabs(D[c] - ref[c]), "cycle %d: error %.3g, estimate %.3g", c + 1,
+                      fabs(D[c] - ref[c]), err[c]);
+    ck_assert_double_eq_tol(err[2], 0.146, 0.001);
+    ck_assert_uint_eq(fricreg_sim_warning_count(sim), 1);
+    int code = -1;
+    char msg[300];
+    ck_assert_int_eq(fricreg_sim_get_warning(sim, 0, &code, msg, sizeof msg), FRICREG_OK);
+    ck_assert_int_eq(code, FRICREG_WARN_NOT_ASYMPTOTIC);
+    ck_assert_ptr_nonnull(strstr(msg, "cycle 3's"));
     fricreg_sim_free(sim);
 }
 END_TEST
@@ -157,6 +235,8 @@ int main(void)
     tcase_add_test(tc, test_central_imex);
     tcase_add_test(tc, test_off_and_refusals);
     tcase_add_test(tc, test_warnings);
+    tcase_add_test(tc, test_estimators_are_their_formulas);
+    tcase_add_test(tc, test_not_asymptotic);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);
     srunner_run_all(sr, CK_NORMAL);

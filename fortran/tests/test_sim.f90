@@ -157,8 +157,9 @@ program test_sim
   call check(index(sim%errmsg(), 'window') > 0, 'message: ' // sim%errmsg())
   ! The error estimate of a plain run bounds its distance to the extrapolation above.
   call check_status(sim%get_dissipation_error(Derr), FRICREG_EINVAL, 'no estimate made')
-  call check_status(sim%set_error_estimate(2_c_int), FRICREG_EINVAL, 'set_error_estimate 2')
-  call check_status(sim%set_error_estimate(1_c_int), FRICREG_OK, 'set_error_estimate 1')
+  call check_status(sim%set_error_estimate(3_c_int), FRICREG_EINVAL, 'set_error_estimate 3')
+  call check_status(sim%set_error_estimate(FRICREG_ESTIMATE_TWO_COMPANIONS), FRICREG_OK, &
+                    'set_error_estimate two companions')
   call check_status(sim%run_cycles(3), FRICREG_OK, 'run_cycles with an estimate')
   call check_status(sim%get_dissipation(D), FRICREG_OK, 'estimated: dissipation')
   call check_status(sim%get_dissipation_error(Derr), FRICREG_OK, 'get_dissipation_error')

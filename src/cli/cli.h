@@ -27,7 +27,7 @@ struct cli_run {
     int extrapolate_window; /* --extrapolate-window W (fricreg_sim_run_extrapolated_window) */
     int max_steps;          /* --max-steps N (fricreg_sim_set_max_steps); -1: the default */
     int kink_location;      /* --kink-location on|off (fricreg_sim_set_kink_location) */
-    int error_estimate;     /* --error-estimate on|off (fricreg_sim_set_error_estimate) */
+    int error_estimate;     /* --error-estimate on|off|one (fricreg_sim_set_error_estimate) */
     struct {
         int param;
         double value;
@@ -63,6 +63,8 @@ struct cli_word {
     int value;
 };
 extern const struct cli_word cli_output_words[]; /* summary, trajectory */
+/* --error-estimate on|off|one: enum fricreg_error_estimate's values (two companions, none, one) */
+extern const struct cli_word cli_estimator_words[];
 
 /* One option: its name and kind first, the rest by field name, e.g.
  * {"--cycles", CLI_WHOLE, .slot = &run->cycles, .lo = 1, .hi = 1e7, .given = &cycles_given,

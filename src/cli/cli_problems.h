@@ -9,10 +9,13 @@
 #include "cli.h"
 #include "problems.h"
 
-int cli_parse_hold(int argc, char **argv, struct prob_hold *p, enum cli_output *output);
-int cli_parse_belt(int argc, char **argv, struct prob_belt *p, enum cli_output *output);
+/* estimator: --error-estimate, enum fricreg_error_estimate. */
+int cli_parse_hold(int argc, char **argv, struct prob_hold *p, enum cli_output *output,
+                   int *estimator);
+int cli_parse_belt(int argc, char **argv, struct prob_belt *p, enum cli_output *output,
+                   int *estimator);
 /* ref_eps: the reference run's eps (--ref-eps), 0 for none. */
 int cli_parse_disk(int argc, char **argv, struct prob_disk *p, double *ref_eps,
-                   enum cli_output *output);
+                   enum cli_output *output, int *estimator);
 
 #endif

@@ -15,6 +15,10 @@ const struct cli_name_table cli_integrator_names = {"integrator", fricreg_integr
 const struct cli_word cli_output_words[] = {{"summary", CLI_SUMMARY},
                                             {"trajectory", CLI_TRAJECTORY},
                                             {NULL, 0}};
+const struct cli_word cli_estimator_words[] = {{"on", FRICREG_ESTIMATE_TWO_COMPANIONS},
+                                               {"off", FRICREG_ESTIMATE_OFF},
+                                               {"one", FRICREG_ESTIMATE_ONE_COMPANION},
+                                               {NULL, 0}};
 
 int cli_usage_error(const char *option, const char *what)
 {

@@ -225,7 +225,8 @@ int cli_run_summary(const struct cli_run *run, FILE *out)
     if (sim == NULL)
         return CLI_EXIT_USAGE;
     /* the summary's headline D with its error bar; an extrapolation carries its own */
-    fricreg_sim_set_error_estimate(sim, run->error_estimate && !run->extrapolate);
+    fricreg_sim_set_error_estimate(sim,
+                                   run->extrapolate ? FRICREG_ESTIMATE_OFF : run->error_estimate);
     clock_t start = clock();
     int status = execute(sim, run);
     double cpu_seconds = (double)(clock() - start) / CLOCKS_PER_SEC;

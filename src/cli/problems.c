@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* problems.c — `fricreg-sim hold|belt|disk`: the reference problems beyond the paper
  * (src/problems/, the same code the benchmarks run; docs/laws2d.md), each with a JSON summary
- * of what it measures against its reference, or a CSV row per GSL step (2 dt). Every bad
+ * of what it measures against its reference and its error estimate against eps -> 0
+ * (problem_estimate.h), or a CSV row per GSL step (2 dt). Every bad
  * option is one line on stderr naming it, exit 2, nothing on stdout; a run that fails (or does
  * not reach what it measures) exits 1. */
 #include <errno.h>
@@ -13,6 +14,7 @@
 
 #include "cli_problems.h"
 #include "fricreg_disk.h"
+#include "problem_estimate.h"
 
 #define PI 3.14159265358979323846
 #define DEG (PI / 180.0)
@@ -49,6 +51,15 @@ static int law_eps(const char *option, double eps, double upper)
              upper);
     return cli_usage_error(option, what);
 }
+
+/* --error-estimate, as fricreg-sim's other commands (the summary's only). */
+#define ESTIMATE_ROW(slot_)                                                                  \
+    {                                                                                        \
+        "--error-estimate", CLI_CHOICE,                                                      \
+            .slot = (slot_), .words = cli_estimator_words,                                   \
+            .help = "reruns at eps/2, dt/2 and eps/4, dt/4 add each headline number's "      \
+                    "*_error_estimate to the summary, about 7x the run; one: eps/2 only, 3x" \
+    }
 
 /* A failed run: exit 1 with the reason. */
 static int run_failed(const char *command, const char *what, int status)
@@ -117,13 +128,13 @@ static const double hold_defaults[H_N] = {0.5385, 2.385, 9.81, 0.0, 35.4, 0.0, 1
 /* hold's options as parsed: the values by H_*, and which were given. */
 struct hold_options {
     double v[H_N];
-    int theta_given, steps_given, eps_given, output;
+    int theta_given, steps_given, eps_given, output, estimator;
 };
 
 /* The rows over o, its defaults set: the parser's and the help's one table. */
 static size_t hold_table(struct hold_options *o, struct cli_option table[])
 {
-    *o = (struct hold_options){.output = CLI_SUMMARY};
+    *o = (struct hold_options){.output = CLI_SUMMARY, .estimator = FRICREG_ESTIMATE_TWO_COMPANIONS};
     memcpy(o->v, hold_defaults, sizeof o->v);
     double *v = o->v;
     const struct cli_option rows[] = {
@@ -144,12 +155,14 @@ static size_t hold_table(struct hold_options *o, struct cli_option table[])
         {"--dt", CLI_POSITIVE, .slot = &v[H_DT], .meta = "S", .help = "RK4 step, s"},
         {"--eps", CLI_POSITIVE, .slot = &v[H_EPS], .given = &o->eps_given, .meta = "EPS",
          .help = "the 2-D law's regularization, m/s", .dflt = "20 dt"},
+        ESTIMATE_ROW(&o->estimator),
         {"--output", CLI_CHOICE, .slot = &o->output, .words = cli_output_words,
          .help = "a JSON summary, or a CSV row per GSL step (2 dt)"}};
     return cli_copy_rows(table, rows, sizeof rows / sizeof rows[0]);
 }
 
-int cli_parse_hold(int argc, char **argv, struct prob_hold *p, enum cli_output *output)
+int cli_parse_hold(int argc, char **argv, struct prob_hold *p, enum cli_output *output,
+                   int *estimator)
 {
     struct hold_options o;
     struct cli_option table[CLI_MAX_ROWS];
@@ -159,6 +172,7 @@ int cli_parse_hold(int argc, char **argv, struct prob_hold *p, enum cli_output *
     if (status != 0)
         return status;
     *output = o.output;
+    *estimator = o.estimator;
     if (!o.theta_given) /* inside the disk: tan(theta) = 0.8 mu, or 0.9 atan(mu) to tilt from */
         v[H_THETA] = (v[H_RATE] > 0.0 ? 0.9 * atan(v[H_MU]) : atan(0.8 * v[H_MU])) / DEG;
     if (v[H_THETA] >= 90.0)
@@ -188,8 +202,45 @@ int cli_parse_hold(int argc, char **argv, struct prob_hold *p, enum cli_output *
     return stable_step(p->mu * p->g, p->dt, p->eps);
 }
 
+/* hold's headline numbers: at a fixed tilt the creep and the displacement (both 0 for
+ * Coulomb), tilting the break-away angle. */
+static size_t hold_numbers(const struct prob_hold *p, const struct prob_hold_result *r, double q[])
+{
+    if (p->kappa > 0.0) {
+        q[0] = 0.5 * (r->theta_rest + r->theta_moving) / DEG;
+        return 1;
+    }
+    q[0] = r->creep;
+    q[1] = r->displacement;
+    return 2;
+}
+
+static const char *const hold_names[2][2] = {{"creep", "displacement"}, {"breakaway_deg", ""}};
+
+/* The hold run at eps / 2^k, dt / 2^k over the same time (problem_estimate.h). */
+static int hold_level(const void *problem, int k, double q[])
+{
+    struct prob_hold p = *(const struct prob_hold *)problem;
+    struct prob_hold_result r;
+    double scale = ldexp(1.0, -k);
+    p.dt *= scale, p.eps *= scale, p.steps /= scale;
+    int status = prob_hold_run(&p, NULL, NULL, &r);
+    if (status == FRICREG_OK)
+        hold_numbers(&p, &r, q);
+    return status;
+}
+
+/* ", \"NAME_error_estimate\": err" for each of the n headline numbers; none when err is NULL. */
+static void estimate_fields(FILE *out, size_t n, const char *const names[], const double err[])
+{
+    for (size_t i = 0; err != NULL && i < n; i++) {
+        fprintf(out, ", \"%s_error_estimate\": ", names[i]);
+        cli_json_number(out, err[i]);
+    }
+}
+
 static void hold_summary(FILE *out, const struct prob_hold *p, const struct prob_hold_result *r,
-                         double cpu)
+                         double cpu, const double err[], const struct cli_warnings *warnings)
 {
     fprintf(out, "{\"system\": \"hold\", \"law\": \"%s\", \"integrator\": \"rk4\", ",
             fricreg_disk_law_name(FRICREG_DISK_QUINN));
@@ -209,7 +260,11 @@ static void hold_summary(FILE *out, const struct prob_hold *p, const struct prob
         fprintf(out, ", \"exact_deg\": %.17g, \"error_deg\": %.17g, \"bound_deg\": %.17g",
                 exact / DEG, (mid - exact) / DEG, p->kappa * p->dt / DEG);
     }
-    fprintf(out, ", \"cpu_seconds\": %.6f}\n", cpu);
+    double q[2];
+    estimate_fields(out, hold_numbers(p, r, q), hold_names[p->kappa > 0.0], err);
+    fprintf(out, ", \"cpu_seconds\": %.6f", cpu);
+    cli_json_warnings(out, warnings);
+    fputs("}\n", out);
 }
 
 static int cli_hold(int argc, char **argv, FILE *out)
@@ -217,7 +272,8 @@ static int cli_hold(int argc, char **argv, FILE *out)
     struct prob_hold p;
     struct prob_hold_result r;
     enum cli_output output = CLI_SUMMARY;
-    int status = cli_parse_hold(argc, argv, &p, &output);
+    int estimator = FRICREG_ESTIMATE_OFF;
+    int status = cli_parse_hold(argc, argv, &p, &output, &estimator);
     if (status != 0)
         return status;
     struct csv c;
@@ -225,7 +281,6 @@ static int cli_hold(int argc, char **argv, FILE *out)
         return status;
     clock_t start = clock();
     int run = prob_hold_run(&p, output == CLI_TRAJECTORY ? csv_row : NULL, &c, &r);
-    double cpu = cpu_since(start);
     if (run == FRICREG_EDIVERGED) {
         fprintf(stderr, "fricreg-sim: hold: no break-away within %.0f steps\n", p.steps);
         status = CLI_EXIT_RUN;
@@ -234,9 +289,17 @@ static int cli_hold(int argc, char **argv, FILE *out)
     }
     if (output == CLI_TRAJECTORY)
         return csv_close(&c, status, out);
-    if (status == 0)
-        hold_summary(out, &p, &r, cpu);
-    return status;
+    if (status != 0)
+        return status;
+    struct cli_warnings warnings = {0};
+    double q[2], err[2];
+    size_t n = hold_numbers(&p, &r, q);
+    if (estimator != FRICREG_ESTIMATE_OFF)
+        cli_problem_estimate(hold_level, &p, estimator, n, hold_names[p.kappa > 0.0], p.kappa > 0.0,
+                             q, err, &warnings);
+    cli_print_warnings(&warnings);
+    hold_summary(out, &p, &r, cpu_since(start), estimator ? err : NULL, &warnings);
+    return 0;
 }
 
 /* ---- belt ------------------------------------------------------------------------------- */
@@ -244,12 +307,14 @@ static int cli_hold(int argc, char **argv, FILE *out)
 /* belt's options as parsed. */
 struct belt_options {
     struct prob_belt b;
-    int eps_given, output;
+    int eps_given, output, estimator;
 };
 
 static size_t belt_table(struct belt_options *o, struct cli_option table[])
 {
-    *o = (struct belt_options){.b = prob_belt_defaults(), .output = CLI_SUMMARY};
+    *o = (struct belt_options){.b = prob_belt_defaults(),
+                               .output = CLI_SUMMARY,
+                               .estimator = FRICREG_ESTIMATE_TWO_COMPANIONS};
     struct prob_belt *b = &o->b;
     const struct cli_option rows[] = {
         {"--fs", CLI_POSITIVE, .slot = &b->fs, .meta = "FS",
@@ -268,12 +333,14 @@ static size_t belt_table(struct belt_options *o, struct cli_option table[])
          .help = "the limit cycle measured: the N-th, 2 to 1000"},
         {"--ref-dt", CLI_POSITIVE, .slot = &b->ref_dt, .meta = "STEP",
          .help = "the event-driven reference's RK4 step in its slip phases"},
+        ESTIMATE_ROW(&o->estimator),
         {"--output", CLI_CHOICE, .slot = &o->output, .words = cli_output_words,
          .help = "a JSON summary, or a CSV row per GSL step of the measured cycle"}};
     return cli_copy_rows(table, rows, sizeof rows / sizeof rows[0]);
 }
 
-int cli_parse_belt(int argc, char **argv, struct prob_belt *p, enum cli_output *output)
+int cli_parse_belt(int argc, char **argv, struct prob_belt *p, enum cli_output *output,
+                   int *estimator)
 {
     struct belt_options o;
     struct cli_option table[CLI_MAX_ROWS];
@@ -282,6 +349,7 @@ int cli_parse_belt(int argc, char **argv, struct prob_belt *p, enum cli_output *
     if (status != 0)
         return status;
     *output = o.output;
+    *estimator = o.estimator;
     struct prob_belt b = o.b;
     int eps_given = o.eps_given;
     if (b.fk > b.fs)
@@ -333,8 +401,29 @@ static void belt_warnings(const struct prob_belt *p, struct cli_warnings *w)
     }
 }
 
+static const char *const belt_names[2] = {"period", "amplitude"};
+
+/* The regularized belt at eps / 2^k, dt / 2^k, its period measured at the level the run's
+ * was (problem_estimate.h). */
+struct belt_level {
+    struct prob_belt p;
+    double level;
+};
+
+static int belt_level(const void *problem, int k, double q[])
+{
+    const struct belt_level *b = problem;
+    struct prob_belt p = b->p;
+    struct prob_belt_cycle c;
+    double scale = ldexp(1.0, -k);
+    p.dt *= scale, p.eps *= scale;
+    int status = prob_belt_regularized(&p, b->level, NULL, NULL, &c);
+    q[0] = c.period, q[1] = c.amplitude;
+    return status;
+}
+
 static void belt_summary(FILE *out, const struct prob_belt *p, const struct prob_belt_cycle *c,
-                         const struct prob_belt_cycle *ref, double cpu,
+                         const struct prob_belt_cycle *ref, double cpu, const double err[],
                          const struct cli_warnings *warnings)
 {
     fprintf(out, "{\"system\": \"belt\", \"law\": \"stribeck\", \"integrator\": \"rk4\", ");
@@ -348,6 +437,7 @@ static void belt_summary(FILE *out, const struct prob_belt *p, const struct prob
     cycle_fields(out, ref);
     fprintf(out, "}, \"period_error\": %.17g, \"amplitude_error\": %.17g",
             fabs(c->period / ref->period - 1.0), fabs(c->amplitude / ref->amplitude - 1.0));
+    estimate_fields(out, 2, belt_names, err);
     fprintf(out, ", \"cpu_seconds\": %.6f", cpu);
     cli_json_warnings(out, warnings);
     fputs("}\n", out);
@@ -358,7 +448,8 @@ static int cli_belt(int argc, char **argv, FILE *out)
     struct prob_belt p;
     struct prob_belt_cycle ref, c;
     enum cli_output output = CLI_SUMMARY;
-    int status = cli_parse_belt(argc, argv, &p, &output);
+    int estimator = FRICREG_ESTIMATE_OFF;
+    int status = cli_parse_belt(argc, argv, &p, &output, &estimator);
     if (status != 0)
         return status;
     clock_t start = clock();
@@ -368,20 +459,23 @@ static int cli_belt(int argc, char **argv, FILE *out)
     struct csv csv;
     if (output == CLI_TRAJECTORY && (status = csv_open(&csv, "t,x,v,f")) != 0)
         return status;
-    run = prob_belt_regularized(&p, 0.5 * (ref.x_min + ref.x_max),
-                                output == CLI_TRAJECTORY ? csv_row : NULL, &csv, &c);
-    double cpu = cpu_since(start);
+    struct belt_level level = {p, 0.5 * (ref.x_min + ref.x_max)};
+    run = prob_belt_regularized(&p, level.level, output == CLI_TRAJECTORY ? csv_row : NULL, &csv,
+                                &c);
     if (run != FRICREG_OK)
         status = run_failed("belt", "the regularized run found no limit cycle", run);
     if (output == CLI_TRAJECTORY)
         return csv_close(&csv, status, out);
-    if (status == 0) {
-        struct cli_warnings warnings;
-        belt_warnings(&p, &warnings);
-        cli_print_warnings(&warnings);
-        belt_summary(out, &p, &c, &ref, cpu, &warnings);
-    }
-    return status;
+    if (status != 0)
+        return status;
+    struct cli_warnings warnings;
+    belt_warnings(&p, &warnings);
+    double q[2] = {c.period, c.amplitude}, err[2];
+    if (estimator != FRICREG_ESTIMATE_OFF)
+        cli_problem_estimate(belt_level, &level, estimator, 2, belt_names, 0, q, err, &warnings);
+    cli_print_warnings(&warnings);
+    belt_summary(out, &p, &c, &ref, cpu_since(start), estimator ? err : NULL, &warnings);
+    return 0;
 }
 
 /* ---- disk ------------------------------------------------------------------------------- */
@@ -390,14 +484,15 @@ static int cli_belt(int argc, char **argv, FILE *out)
 struct disk_options {
     struct prob_disk d;
     double reference;
-    int eps_given, output;
+    int eps_given, output, estimator;
 };
 
 static size_t disk_table(struct disk_options *o, struct cli_option table[])
 {
     *o = (struct disk_options){.d = prob_disk_defaults(),
                                .reference = DISK_REF_EPS,
-                               .output = CLI_SUMMARY};
+                               .output = CLI_SUMMARY,
+                               .estimator = FRICREG_ESTIMATE_TWO_COMPANIONS};
     struct prob_disk *d = &o->d;
     const struct cli_option rows[] = {
         {"--a", CLI_POSITIVE, .slot = &d->a, .meta = "A", .help = "forcing amplitude"},
@@ -409,13 +504,14 @@ static size_t disk_table(struct disk_options *o, struct cli_option table[])
          .help = "the reference run's eps, at dt = eps/2 (0: no reference run)"},
         {"--law", CLI_NAME, .slot = &d->law, .names = &disk_law_names,
          .help = "the 2-D friction law (docs/laws2d.md)"},
+        ESTIMATE_ROW(&o->estimator),
         {"--output", CLI_CHOICE, .slot = &o->output, .words = cli_output_words,
          .help = "a JSON summary, or a CSV row per GSL step of the measured turn"}};
     return cli_copy_rows(table, rows, sizeof rows / sizeof rows[0]);
 }
 
 int cli_parse_disk(int argc, char **argv, struct prob_disk *p, double *ref_eps,
-                   enum cli_output *output)
+                   enum cli_output *output, int *estimator)
 {
     struct disk_options o;
     struct cli_option table[CLI_MAX_ROWS];
@@ -424,6 +520,7 @@ int cli_parse_disk(int argc, char **argv, struct prob_disk *p, double *ref_eps,
     if (status != 0)
         return status;
     *output = o.output;
+    *estimator = o.estimator;
     struct prob_disk d = o.d;
     double reference = o.reference;
     int eps_given = o.eps_given;
@@ -442,8 +539,23 @@ int cli_parse_disk(int argc, char **argv, struct prob_disk *p, double *ref_eps,
     return stable_step(1.0, p->dt, p->eps);
 }
 
+static const char *const disk_names[1] = {"dissipation_per_cycle"};
+
+/* The disk at eps / 2^k, dt / 2^k (problem_estimate.h). */
+static int disk_level(const void *problem, int k, double q[])
+{
+    struct prob_disk p = *(const struct prob_disk *)problem;
+    struct prob_disk_result r;
+    double scale = ldexp(1.0, -k);
+    p.dt *= scale, p.eps *= scale;
+    int status = prob_disk_run(&p, NULL, NULL, &r);
+    q[0] = r.dissipation;
+    return status;
+}
+
 static void disk_summary(FILE *out, const struct prob_disk *p, const struct prob_disk_result *r,
-                         double ref_eps, const struct prob_disk_result *ref, double cpu)
+                         double ref_eps, const struct prob_disk_result *ref, double cpu,
+                         const double err[], const struct cli_warnings *warnings)
 {
     fprintf(out, "{\"system\": \"disk\", \"law\": \"%s\", \"integrator\": \"rk4\", ",
             fricreg_disk_law_name(p->law));
@@ -463,7 +575,10 @@ static void disk_summary(FILE *out, const struct prob_disk *p, const struct prob
     } else {
         fprintf(out, "null, \"relative_error\": null");
     }
-    fprintf(out, ", \"cpu_seconds\": %.6f}\n", cpu);
+    estimate_fields(out, 1, disk_names, err);
+    fprintf(out, ", \"cpu_seconds\": %.6f", cpu);
+    cli_json_warnings(out, warnings);
+    fputs("}\n", out);
 }
 
 static int cli_disk(int argc, char **argv, FILE *out)
@@ -472,7 +587,8 @@ static int cli_disk(int argc, char **argv, FILE *out)
     struct prob_disk_result r, ref = {0};
     double ref_eps;
     enum cli_output output = CLI_SUMMARY;
-    int status = cli_parse_disk(argc, argv, &p, &ref_eps, &output);
+    int estimator = FRICREG_ESTIMATE_OFF;
+    int status = cli_parse_disk(argc, argv, &p, &ref_eps, &output, &estimator);
     if (status != 0)
         return status;
     struct csv c;
@@ -491,9 +607,16 @@ static int cli_disk(int argc, char **argv, FILE *out)
         if (run != FRICREG_OK)
             status = run_failed("disk", "the reference run", run);
     }
-    if (status == 0)
-        disk_summary(out, &p, &r, ref_eps, &ref, cpu_since(start));
-    return status;
+    if (status != 0)
+        return status;
+    struct cli_warnings warnings = {0};
+    double err[1];
+    if (estimator != FRICREG_ESTIMATE_OFF)
+        cli_problem_estimate(disk_level, &p, estimator, 1, disk_names, 0, &r.dissipation, err,
+                             &warnings);
+    cli_print_warnings(&warnings);
+    disk_summary(out, &p, &r, ref_eps, &ref, cpu_since(start), estimator ? err : NULL, &warnings);
+    return 0;
 }
 
 /* ---- The help (help.c): the tables over options with the defaults set ------------------ */

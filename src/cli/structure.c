@@ -89,12 +89,6 @@ static int check_options(const struct structure_options *o)
     return o->scheme == SCHEME_GSL ? cli_check_tolerances(o->integrator, o->rtol, o->atol) : 0;
 }
 
-/* --error-estimate: enum fricreg_error_estimate's values */
-static const struct cli_word estimators[] = {{"on", FRICREG_ESTIMATE_TWO_COMPANIONS},
-                                             {"off", FRICREG_ESTIMATE_OFF},
-                                             {"one", FRICREG_ESTIMATE_ONE_COMPANION},
-                                             {NULL, 0}};
-
 /* --integrator's placeholder: the schemes and the GSL steppers, as the parser takes them. */
 static const char *integrator_meta(void)
 {
@@ -173,7 +167,7 @@ static size_t structure_table(struct structure_options *o, struct cli_option tab
         {"--max-steps", CLI_WHOLE, .slot = &o->max_steps, .lo = 0, .hi = 1e9, .meta = "N",
          .help = "GSL's adaptive steps over the whole run (0: no bound)",
          .dflt = "the library's bound on each sample's call"},
-        {"--error-estimate", CLI_CHOICE, .slot = &o->error_estimate, .words = estimators,
+        {"--error-estimate", CLI_CHOICE, .slot = &o->error_estimate, .words = cli_estimator_words,
          .help = "companion runs at eps/2 and eps/4 add an error estimate to the summary "
                  "(one: 1.6's single companion at eps/2)"}};
     return cli_copy_rows(table, opts, sizeof opts / sizeof opts[0]);

@@ -1,27 +1,28 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* error_estimate.c — fricreg_sim_set_error_estimate: an a-posteriori estimate of the error of
- * D per cycle against the Coulomb problem (eps -> 0), from one companion run at level 1 of
- * the extrapolation's ladder (extrapolate.c, fr_sim_level): eps / 2 with, for fixed steps,
- * dt / 2, and for adaptive ones the tolerances / TOL_SCALE.
+ * D per cycle against the Coulomb problem (eps -> 0), from companion runs on the extrapolation's
+ * ladder (extrapolate.c, fr_sim_level): level 1, eps / 2 with, for fixed steps, dt / 2, and for
+ * adaptive ones the tolerances / TOL_SCALE; with two companions (the default) level 2 too,
+ * eps / 4 and dt / 4 or the tolerances / TOL_SCALE^2.
  *
  * Law (4)'s regularization error in D is c eps^p with p = 1 or 2 (fricreg_sim.h,
  * fricreg_sim_run_extrapolated); along dt / eps fixed a fixed step's error is a function of
- * eps alone and follows it. So D(eps) - D(0) = (D(eps) - D(eps/2)) 2^p / (2^p - 1), at most
- * twice the companion's difference (p = 1): the estimate is FACTOR |D - D_companion|, an
- * upper bound for either order. An adaptive run's tolerance error is not a function of eps:
- * the companion's tolerances are tightened so that its own tolerance error is a fraction of
- * the run's, and the difference then carries the run's. The calibration sweep
- * (bench/error_estimate.c; docs/integrators.md, "Error estimate") measured FACTOR. */
+ * eps alone and follows it. An adaptive run's tolerance error is not a function of eps: each
+ * companion's tolerances are tightened so that its own tolerance error is a fraction of the
+ * run's, and the differences then carry the run's. From D, D2, D4 the estimate is
+ * base/companion_estimate.c's, fricreg_structure's too: Richardson's correction with the
+ * observed order, or a safe bound and FRICREG_WARN_NOT_ASYMPTOTIC where the three show none;
+ * with one companion (1.6's) 3 |D - D2|, calibrated by bench/error_estimate.c
+ * (docs/integrators.md, "Error estimate"). */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "base/companion_estimate.h"
 #include "sim_internal.h"
 
-/* D(eps) - D(0) = 2 (D(eps) - D(eps/2)) at p = 1; the calibration found 2 at the edge (the
- * two blocks at eps = 1e-2 are p = 1 to 1%: ratios 0.99 … 1.01) and takes 3. */
-#define FACTOR 3.0
-#define TOL_SCALE 16.0 /* the companion's tolerances: rtol / 16 (rk8pd: ~1.4x the steps) */
+#define TOL_SCALE 16.0 /* a companion's tolerances: rtol / 16 a level (rk8pd: ~1.4x the steps) */
 #define TOO_LARGE 0.1  /* an estimate above 10% of |D|: eps is out of the asymptotic range */
 
 int fricreg_sim_set_error_estimate(fricreg_sim *sim, int on)
@@ -31,8 +32,10 @@ int fricreg_sim_set_error_estimate(fricreg_sim *sim, int on)
     if (sim->running)
         return fr_fail(sim, FRICREG_EINVAL,
                        "set_error_estimate: not allowed during a run (called from the observer)");
-    if (on != 0 && on != 1)
-        return fr_fail(sim, FRICREG_EINVAL, "set_error_estimate: on = %d must be 0 or 1", on);
+    if (on != FRICREG_ESTIMATE_OFF && on != FRICREG_ESTIMATE_TWO_COMPANIONS &&
+        on != FRICREG_ESTIMATE_ONE_COMPANION)
+        return fr_fail(sim, FRICREG_EINVAL,
+                       "set_error_estimate: on = %d must be 0, 1 (two companions) or 2 (one)", on);
     sim->error_estimate = on;
     return FRICREG_OK;
 }
@@ -51,10 +54,51 @@ static void estimate_failed(fricreg_sim *sim, const char *msg)
     sim->total_err = INFINITY;
 }
 
+/* The companion run at level k of the ladder from t = 0 to sim's time into *out (NULL and
+ * the estimate failed, with its message, on failure). */
+static fricreg_sim *companion_run(fricreg_sim *sim, int k)
+{
+    fricreg_sim *companion = NULL;
+    double tol_scale = adaptive(sim) ? pow(TOL_SCALE, -k) : 1.0;
+    if (fr_sim_level(sim, k, tol_scale, &companion) != FRICREG_OK) {
+        estimate_failed(sim, "out of memory");
+        return NULL;
+    }
+    companion->start_cycle = sim->start_cycle;
+    companion->start_y = sim->start_y;
+    int status = fricreg_sim_run(companion, sim->t);
+    if (status == FRICREG_OK && companion->cycles == sim->cycles)
+        return companion;
+    char msg[sizeof sim->estimate_msg];
+    snprintf(msg, sizeof msg, "the companion run at eps = %g failed: %s", companion->eps,
+             status == FRICREG_OK ? "it completed another number of cycles"
+                                  : fricreg_sim_errmsg(companion));
+    estimate_failed(sim, msg);
+    fricreg_sim_free(companion);
+    return NULL;
+}
+
+/* The estimate of q (cycle `cycle`, or the total at sim->cycles) from q2, q4; records the
+ * cycle whose estimate, relative to its q, is the largest of those that show no order. */
+static double estimate_of(fricreg_sim *sim, size_t cycle, double q, double q2, double q4)
+{
+    int outside = 0;
+    double err = fr_companion_estimate(sim->error_estimate, q, q2, q4, &outside);
+    double rel = err / fmax(fabs(q), DBL_MIN);
+    if (outside && rel > sim->outside_rel) {
+        sim->outside_rel = rel;
+        sim->outside_cycle = cycle;
+        sim->outside_q[0] = q, sim->outside_q[1] = q2, sim->outside_q[2] = q4;
+        sim->outside_q[3] = err;
+    }
+    return err;
+}
+
 void fr_sim_error_estimate(fricreg_sim *sim)
 {
     free(sim->D_err);
     sim->D_err = malloc((sim->cycles + 1) * sizeof *sim->D_err);
+    sim->outside_rel = -1.0;
     if (sim->D_err == NULL) {
         estimate_failed(sim, "out of memory");
         return;
@@ -63,30 +107,18 @@ void fr_sim_error_estimate(fricreg_sim *sim)
         sim->total_err = 0.0;
         return;
     }
-    fricreg_sim *companion = NULL;
-    int status = fr_sim_level(sim, 1, adaptive(sim) ? 1.0 / TOL_SCALE : 1.0, &companion);
-    if (status != FRICREG_OK) {
-        estimate_failed(sim, "out of memory");
-        return;
-    }
-    companion->start_cycle = sim->start_cycle;
-    companion->start_y = sim->start_y;
-    status = fricreg_sim_run(companion, sim->t);
-    if (status == FRICREG_OK && companion->cycles != sim->cycles)
-        status = FRICREG_EINTEGRATOR;
-    if (status != FRICREG_OK) {
-        char msg[sizeof sim->estimate_msg];
-        snprintf(msg, sizeof msg, "the companion run at eps = %g failed: %s", companion->eps,
-                 status == FRICREG_EINTEGRATOR && companion->cycles != sim->cycles
-                     ? "it completed another number of cycles"
-                     : fricreg_sim_errmsg(companion));
-        estimate_failed(sim, msg);
-    } else {
+    fricreg_sim *c2 = companion_run(sim, 1), *c4 = c2; /* c4 is ignored with one companion */
+    if (c2 != NULL && sim->error_estimate == FRICREG_ESTIMATE_TWO_COMPANIONS)
+        c4 = companion_run(sim, 2);
+    if (c2 != NULL && c4 != NULL) {
         for (size_t c = 0; c < sim->cycles; c++)
-            sim->D_err[c] = FACTOR * fabs(sim->D[c] - companion->D[c]);
-        sim->total_err = FACTOR * fabs(sim->y[2 * sim->ndof] - companion->y[2 * sim->ndof]);
+            sim->D_err[c] = estimate_of(sim, c, sim->D[c], c2->D[c], c4->D[c]);
+        size_t i = 2 * sim->ndof; /* the total D, the last component of y */
+        sim->total_err = estimate_of(sim, sim->cycles, sim->y[i], c2->y[i], c4->y[i]);
     }
-    fricreg_sim_free(companion);
+    if (c4 != c2)
+        fricreg_sim_free(c4);
+    fricreg_sim_free(c2);
 }
 
 /* GSL's multistep steppers, whose error in D the calibration found not to follow their
@@ -107,6 +139,17 @@ void fr_sim_check_estimate(fricreg_sim *sim)
     }
     if (sim->D_err == NULL)
         return;
+    if (sim->outside_rel >= 0.0) {
+        char which[40] = "the total";
+        if (sim->outside_cycle < sim->cycles)
+            snprintf(which, sizeof which, "cycle %zu's", sim->outside_cycle + 1);
+        const double *q = sim->outside_q;
+        fr_warn(&sim->warnings, FRICREG_WARN_NOT_ASYMPTOTIC,
+                "error estimate not asymptotic: %s dissipation %.7g, %.7g, %.7g at eps, eps/2, "
+                "eps/4 shows no order in eps (the run and its companion may agree on a wrong "
+                "value); its estimate is the safe bound %.3g: halve eps and dt",
+                which, q[0], q[1], q[2], q[3]);
+    }
     /* The last whole cycle's D, else the total: the headline quantity. */
     double D = sim->cycles > 0 ? sim->D[sim->cycles - 1] : sim->y[2 * sim->ndof];
     double err = sim->cycles > 0 ? sim->D_err[sim->cycles - 1] : sim->total_err;

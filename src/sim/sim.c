@@ -51,6 +51,7 @@ static void free_run(fricreg_sim *sim)
     sim->D_err = NULL;
     sim->total_err = NAN;
     sim->estimate_failed = 0;
+    sim->outside_rel = -1.0;
     sim->jac_work = NULL;
     sim->jac = NULL;
     sim->ctx = NULL;

@@ -5,23 +5,11 @@
  * path (eps, dt) -> (eps / 2, dt / 2) -> (eps / 4, dt / 4) (an adaptive GSL run: its
  * tolerances / TOL_SCALE at each level).
  *
- * Two companions (the default): q, q2 = q(eps / 2), q4 = q(eps / 4), d1 = q - q2,
- * d2 = q2 - q4, the observed order p = log2(d1 / d2). Law (4)'s error is c eps^p with p = 1
- * or 2 and along dt / eps fixed a fixed step's error follows eps (fricreg_sim's estimator,
- * src/sim/error_estimate.c), so in the asymptotic range d1 / d2 = 2^p with p in [P_LO, P_HI]
- * and q - q(0) = d1 2^p / (2^p - 1), Richardson's correction with the observed order. The
- * range test: d1 and d2 of one sign and p within BAND of [P_LO, P_HI]; in range the estimate
- * is SAFETY d1 2^p / (2^p - 1). Below the range (a stall: q and q2 agree on a wrong value; or
- * differences that grow or change sign) no order can be trusted: the estimate is the bound
- * OUT_FACTOR (|d1| + |d2|), what a geometric tail of the slowest accepted order would add to
- * the two differences seen, with FRICREG_WARN_NOT_ASYMPTOTIC for a dissipation (a sampled
- * peak converges with the phase of its samples, not at an order: it gets the bound without
- * the warning). Above the range (d2 much smaller than
- * d1: a sampled peak's phase, or q2 and q4 at Newton's tolerance) the same bound, without the
- * warning: it is then about OUT_FACTOR |d1|, and a stall between the two companions is out
- * of any three-level estimator's sight. Differences both below NOISE of the quantity are
- * Newton's tolerance, not an order: their sum.
- * One companion (FRICREG_ESTIMATE_ONE_COMPANION, 1.6's estimator): FACTOR_ONE |d1|.
+ * The estimate of each quantity from q, q2 = q(eps / 2), q4 = q(eps / 4) is
+ * base/companion_estimate.c's, fricreg_sim's too: Richardson's correction with the observed
+ * order in range, a safe bound below it (FRICREG_WARN_NOT_ASYMPTOTIC for a dissipation: a
+ * sampled peak converges with the phase of its samples, not at an order, and gets the bound
+ * without the warning) and above it; one companion (1.6's): 3 |q - q2|.
  *
  * The second companion is the first's own companion: the first runs with the estimate on and
  * one companion, so every setter passed on to the first reaches the second the same way. It
@@ -38,22 +26,13 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "base/companion_estimate.h"
 #include "ctx/ctx_driver.h"
 #include "fricreg_sim.h"
 #include "structure_internal.h"
 
-#define FACTOR_ONE 3.0 /* one companion: fricreg_sim's, 2 at p = 1 with the calibration's margin */
 #define TOL_SCALE 16.0 /* the companion's tolerances (fricreg_sim's) */
 #define TOO_LARGE 0.1  /* an estimate above 10% of its quantity: outside the asymptotic range */
-#define P_LO 1.0       /* law (4)'s orders in eps along dt / eps fixed */
-#define P_HI 2.0
-#define BAND 0.5 /* the observed order accepted in [P_LO - BAND, P_HI + BAND] */
-/* On the observed order's Richardson correction: at 2 the frame of bench/frame_estimate.c is
- * bounded at every dt and scheme, the oscillator of tests/test_structure_error.c within 10x. */
-#define SAFETY 2.0
-/* Out of range: SAFETY 2^p / (2^p - 1) at the band's lowest order p = 0.5, 6.83. */
-#define OUT_FACTOR (SAFETY * 3.414213562373095)
-#define NOISE 1e-9 /* relative differences below this are Newton's tolerance (1e-10) */
 
 void fr_peak_sample(fricreg_structure *s)
 {
@@ -188,35 +167,12 @@ void fr_estimate_forwarded(fricreg_structure *s, int status, const char *who)
                         fricreg_structure_errmsg(s->companion));
 }
 
-/* The error estimate of q from its values at eps / 2 (q2) and eps / 4 (q4): the head
- * comment's. *outside is set to 1 when the three show a stall or no order (d1 / d2 below the
- * band, or of opposite signs): the case the warning names. Faster convergence than the band
- * (d1 / d2 above it, or d2 at the noise) gets the safe bound too, without a warning. */
-static double two_level(double q, double q2, double q4, int *outside)
-{
-    double d1 = q - q2, d2 = q2 - q4;
-    double floor = NOISE * fmax(fabs(q), fmax(fabs(q2), fabs(q4)));
-    if (fabs(d1) <= floor && fabs(d2) <= floor)
-        return fabs(d1) + fabs(d2);
-    double bound = OUT_FACTOR * (fabs(d1) + fabs(d2));
-    if (fabs(d2) <= floor)
-        return bound;
-    double r = d1 / d2;
-    if (r > exp2(P_HI + BAND))
-        return bound;
-    if (r >= exp2(P_LO - BAND))
-        return SAFETY * fabs(d1) * r / (r - 1.0);
-    *outside = 1;
-    return bound;
-}
-
 /* The estimate of one quantity from its values on s, its companion and (with two) the
- * second companion; *outside as two_level's. */
+ * second companion (base/companion_estimate.h, shared with fricreg_sim): *outside is set when
+ * the three show no order in eps. */
 static double estimate_of(const fricreg_structure *s, double q, double q2, double q4, int *outside)
 {
-    if (s->estimate_on == FRICREG_ESTIMATE_ONE_COMPANION)
-        return FACTOR_ONE * fabs(q - q2);
-    return two_level(q, q2, q4, outside);
+    return fr_companion_estimate(s->estimate_on, q, q2, q4, outside);
 }
 
 /* The three structures along the path (the second companion is the first when there is one

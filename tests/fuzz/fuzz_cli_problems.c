@@ -91,29 +91,33 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     static struct fuzz_argv a;
     fuzz_argv_split(data, size, 1, &a);
     enum cli_output output = CLI_SUMMARY;
+    int estimator = FRICREG_ESTIMATE_OFF;
     int status;
     switch (data[0] % 3) {
     case 0: {
         struct prob_hold p;
-        if ((status = cli_parse_hold(a.argc, a.argv, &p, &output)) == 0)
+        if ((status = cli_parse_hold(a.argc, a.argv, &p, &output, &estimator)) == 0)
             check_hold(&p);
         break;
     }
     case 1: {
         struct prob_belt p;
-        if ((status = cli_parse_belt(a.argc, a.argv, &p, &output)) == 0)
+        if ((status = cli_parse_belt(a.argc, a.argv, &p, &output, &estimator)) == 0)
             check_belt(&p);
         break;
     }
     default: {
         struct prob_disk p;
         double ref_eps = -1.0;
-        if ((status = cli_parse_disk(a.argc, a.argv, &p, &ref_eps, &output)) == 0)
+        if ((status = cli_parse_disk(a.argc, a.argv, &p, &ref_eps, &output, &estimator)) == 0)
             check_disk(&p, ref_eps);
     }
     }
     FUZZ_REQUIRE(status == 0 || status == CLI_EXIT_USAGE, "parse: status %d", status);
     FUZZ_REQUIRE(status != 0 || output == CLI_SUMMARY || output == CLI_TRAJECTORY, "output %d",
                  (int)output);
+    FUZZ_REQUIRE(status != 0 || (estimator >= FRICREG_ESTIMATE_OFF &&
+                                 estimator <= FRICREG_ESTIMATE_ONE_COMPANION),
+                 "estimator %d", estimator);
     return 0;
 }
