@@ -1236,8 +1236,7 @@ FRICREG_API int fricreg_ctx_solve_step_csr(fricreg_ctx *ctx, size_t m, const dou
                                            const double zdot_pred[], const double a_pred[],
                                            int sparse_flags, const int64_t w_rowptr[],
                                            const int64_t w_colind[], const double w_values[],
-                                           const int64_t weff_rowptr[],
-                                           const int64_t weff_colind[],
+                                           const int64_t weff_rowptr[], const int64_t weff_colind[],
                                            const double weff_values[], double c, double tol,
                                            int max_iter, int flags, double f[], int info[]);
 
@@ -1263,8 +1262,7 @@ FRICREG_API int fricreg_ctx_solve_step_csc(fricreg_ctx *ctx, size_t m, const dou
                                            const double zdot_pred[], const double a_pred[],
                                            int sparse_flags, const int64_t w_colptr[],
                                            const int64_t w_rowind[], const double w_values[],
-                                           const int64_t weff_colptr[],
-                                           const int64_t weff_rowind[],
+                                           const int64_t weff_colptr[], const int64_t weff_rowind[],
                                            const double weff_values[], double c, double tol,
                                            int max_iter, int flags, double f[], int info[]);
 

@@ -458,11 +458,10 @@ static void kept_against_built(int law, int diagonal, int fresh, int sparse)
         int info_kept[2] = {-7, -7}, info_built[2] = {-7, -7};
         double f_before[MW];
         memcpy(f_before, f_kept, sizeof f_kept);
-        int status_kept =
-            sparse ? solve_step_sparse(kept, MW, z0, zp, ap, W, Weff, c, tol, 50, 0, f_kept,
-                                       info_kept, 0)
-                   : fricreg_ctx_solve_step(kept, MW, z0, zp, ap, W, Weff, c, tol, 50, 0, f_kept,
-                                            info_kept);
+        int status_kept = sparse ? solve_step_sparse(kept, MW, z0, zp, ap, W, Weff, c, tol, 50, 0,
+                                                     f_kept, info_kept, 0)
+                                 : fricreg_ctx_solve_step(kept, MW, z0, zp, ap, W, Weff, c, tol, 50,
+                                                          0, f_kept, info_kept);
         if (fresh)
             built = run_context(law, diagonal, W, mun);
         else
@@ -603,7 +602,7 @@ START_TEST(sparse_kept_and_refused)
     compressed(MW, W, 0, 0, wp, wi, wv);
     compressed(MW, Weff, 0, 0, ep, ei, ev);
     int info[2];
-#define SPARSE_STEP()                                                                              \
+#define SPARSE_STEP()                                                                            \
     fricreg_ctx_solve_step_csr(ctx, MW, z0, zp, ap, 0, wp, wi, wv, ep, ei, ev, 0.005, 1e-10, 50, \
                                0, f, info)
     memcpy(f, mun, sizeof f);

@@ -76,7 +76,7 @@ struct step_solver {
     double *f0, *zdot, *afree, *F, *b, *wg, *df;
     struct fr_compliance_pair at_start, at_k, at_t, at_df, at_guess;
     unsigned char *stopped;
-    SuiteSparse_long *next; /* [m] refill's cursor per column */
+    SuiteSparse_long *next;           /* [m] refill's cursor per column */
     struct fr_step_pattern pw, pweff; /* the compressed inputs' maps (_csr, _csc calls only) */
 };
 
@@ -475,14 +475,13 @@ static int check_coupling_diagonal(fricreg_ctx *ctx, const char *who, size_t i, 
     if (fabs(w_ii - wd[i]) <= SYM_TOL * wd[i])
         return FRICREG_OK;
     return fr_error_set(fr_ctx_error(ctx), FRICREG_EINVAL,
-                        "%s: W_%zu%zu = %g, the context's coupling has %g", who, i, i, w_ii,
-                        wd[i]);
+                        "%s: W_%zu%zu = %g, the context's coupling has %g", who, i, i, w_ii, wd[i]);
 }
 
 /* The step on the solver s, its matrices filled and checked. */
 static int run(fricreg_ctx *ctx, struct step_solver *s, const char *who, const double zdot_start[],
-               const double zdot_pred[], const double a_pred[], double c, double tol,
-               int max_iter, int flags, double f[], int info[])
+               const double zdot_pred[], const double a_pred[], double c, double tol, int max_iter,
+               int flags, double f[], int info[])
 {
     size_t m = s->m;
     s->ctx = ctx;
@@ -492,8 +491,8 @@ static int run(fricreg_ctx *ctx, struct step_solver *s, const char *who, const d
     s->mun = fr_ctx_bounds(ctx);
     memcpy(s->f0, f, m * sizeof *f);
     int converged = 0, iters = 0;
-    int status =
-        solve(s, zdot_start, tol, max_iter, flags & FRICREG_STEP_PLAIN, &converged, &iters);
+    int status = solve(s, zdot_start, tol, max_iter, flags & FRICREG_STEP_PLAIN, &converged,
+                       &iters);
     if (status == FRICREG_OK) {
         memcpy(f, s->v[V_FK].data, m * sizeof *f);
         info[0] = iters;
@@ -567,8 +566,9 @@ static int store_compressed(fricreg_ctx *ctx, struct step_solver *s, const struc
                             name, (long long)i + base, (long long)j + base, name,
                             (long long)j + base, (long long)i + base);
     for (size_t k = 0; k < s->m; k++)
-        if ((status = check_coupling_diagonal(ctx, who, k, fr_step_pattern_diagonal(
-                                                               &s->pw, s->W, k))) != FRICREG_OK)
+        if ((status = check_coupling_diagonal(ctx, who, k,
+                                              fr_step_pattern_diagonal(&s->pw, s->W, k))) !=
+            FRICREG_OK)
             return status;
     fr_step_pattern_store(&s->pw, s->W);
     if (fr_step_pattern_store(&s->pweff, s->Weff))
@@ -617,9 +617,9 @@ int fricreg_ctx_solve_step_csr(fricreg_ctx *ctx, size_t m, const double zdot_sta
                                const int64_t weff_colind[], const double weff_values[], double c,
                                double tol, int max_iter, int flags, double f[], int info[])
 {
-    return solve_step_compressed(ctx, m, 0, zdot_start, zdot_pred, a_pred, sparse_flags,
-                                 w_rowptr, w_colind, w_values, weff_rowptr, weff_colind,
-                                 weff_values, c, tol, max_iter, flags, f, info, "solve_step_csr");
+    return solve_step_compressed(ctx, m, 0, zdot_start, zdot_pred, a_pred, sparse_flags, w_rowptr,
+                                 w_colind, w_values, weff_rowptr, weff_colind, weff_values, c, tol,
+                                 max_iter, flags, f, info, "solve_step_csr");
 }
 
 int fricreg_ctx_solve_step_csc(fricreg_ctx *ctx, size_t m, const double zdot_start[],
@@ -629,7 +629,7 @@ int fricreg_ctx_solve_step_csc(fricreg_ctx *ctx, size_t m, const double zdot_sta
                                const int64_t weff_rowind[], const double weff_values[], double c,
                                double tol, int max_iter, int flags, double f[], int info[])
 {
-    return solve_step_compressed(ctx, m, 1, zdot_start, zdot_pred, a_pred, sparse_flags,
-                                 w_colptr, w_rowind, w_values, weff_colptr, weff_rowind,
-                                 weff_values, c, tol, max_iter, flags, f, info, "solve_step_csc");
+    return solve_step_compressed(ctx, m, 1, zdot_start, zdot_pred, a_pred, sparse_flags, w_colptr,
+                                 w_rowind, w_values, weff_colptr, weff_rowind, weff_values, c, tol,
+                                 max_iter, flags, f, info, "solve_step_csc");
 }

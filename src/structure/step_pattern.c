@@ -21,8 +21,7 @@ static int64_t base_of(int flags)
 }
 
 /* Entry (row, col) of a's k-th row (CSR) or column (CSC) at index idx. */
-static void position(const struct fr_compressed *a, size_t k, int64_t idx, size_t *row,
-                     size_t *col)
+static void position(const struct fr_compressed *a, size_t k, int64_t idx, size_t *row, size_t *col)
 {
     *row = a->by_columns ? (size_t)idx : k;
     *col = a->by_columns ? k : (size_t)idx;
@@ -52,7 +51,9 @@ int fr_step_pattern_build(struct fr_step_pattern *p, const struct fr_compressed 
     struct fr_error err = {0};
     if ((a->flags & TRIANGLES) == 0)
         folded.flags |= FRICREG_SPARSE_UPPER; /* pattern only: no symmetry check here */
-    *p = (struct fr_step_pattern){.flags = a->flags, .by_columns = a->by_columns, .m = m,
+    *p = (struct fr_step_pattern){.flags = a->flags,
+                                  .by_columns = a->by_columns,
+                                  .m = m,
                                   .nnz = nnz};
     if (fr_compressed_to_cholmod(&folded, 1, cc, S, &err, "solve_step") != FRICREG_OK)
         return FRICREG_ENOMEM;
