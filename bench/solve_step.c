@@ -18,7 +18,11 @@
  * set changes from step to step; W_eff's values change every step on the large run (a
  * structure whose K_eff changes, the worst case for the kept factor) and are constant on the
  * small one (a linear structure at a fixed dt). Each context's guess is its previous forces.
- * Prints the median per-call time of each and their ratio; with OUTDIR, writes
+ * A third context makes the same calls by fricreg_ctx_solve_step_csr ("sparse", its solver kept
+ * too), W and W_eff given by their nonzeros, whole, in CSR: the caller's arrays, built outside
+ * the timing (a code that assembles sparse matrices has them), its forces checked bit for bit
+ * against the dense call's. The dense call reads 2 m^2 doubles a call, the sparse one
+ * O(nnz). Prints the median per-call time of each and their ratios; with OUTDIR, writes
  * solve_step.csv there. */
 #include <math.h>
 #include <stdio.h>
@@ -77,6 +81,52 @@ static void make_weff(const struct size_case *sc, int k, double Weff[])
         }
 }
 
+/* A's nonzeros (and its diagonal), whole, zero-based CSR; val and ind hold nnz(A). */
+static void to_csr(size_t m, const double A[], int64_t ptr[], int64_t ind[], double val[])
+{
+    int64_t p = 0;
+    for (size_t i = 0; i < m; i++) {
+        ptr[i] = p;
+        for (size_t j = 0; j < m; j++)
+            if (i == j || A[i * m + j] != 0.0) {
+                ind[p] = (int64_t)j;
+                val[p++] = A[i * m + j];
+            }
+    }
+    ptr[m] = p;
+}
+
+static size_t nonzeros(size_t m, const double A[])
+{
+    size_t n = 0;
+    for (size_t i = 0; i < m; i++)
+        for (size_t j = 0; j < m; j++)
+            n += i == j || A[i * m + j] != 0.0;
+    return n;
+}
+
+/* The sparse side's arrays: W's and W_eff's CSR. */
+struct csr_pair {
+    int64_t *wp, *wi, *ep, *ei;
+    double *wv, *ev;
+};
+
+static int csr_alloc(struct csr_pair *c, size_t m, size_t nnz_w, size_t nnz_eff)
+{
+    c->wp = malloc((m + 1) * sizeof *c->wp);
+    c->ep = malloc((m + 1) * sizeof *c->ep);
+    c->wi = malloc(nnz_w * sizeof *c->wi);
+    c->ei = malloc(nnz_eff * sizeof *c->ei);
+    c->wv = malloc(nnz_w * sizeof *c->wv);
+    c->ev = malloc(nnz_eff * sizeof *c->ev);
+    return c->wp && c->ep && c->wi && c->ei && c->wv && c->ev;
+}
+
+static void csr_free(struct csr_pair *c)
+{
+    free(c->wp), free(c->ep), free(c->wi), free(c->ei), free(c->wv), free(c->ev);
+}
+
 static fricreg_ctx *context(const struct size_case *sc, const double W[], const double mun[])
 {
     size_t m = sc->m;
@@ -99,10 +149,10 @@ static fricreg_ctx *context(const struct size_case *sc, const double W[], const 
     return ctx;
 }
 
-/* One size: the two contexts step by step; medians into *kept, *built; the steps whose
- * forces or info differ into *differ. 0 on success. */
-static int run_case(const struct size_case *sc, double *kept, double *built, int *differ,
-                    double *iters)
+/* One size: the three contexts step by step; medians into *kept, *built, *sparse; the steps
+ * whose forces or info differ (built or sparse against kept) into *differ. 0 on success. */
+static int run_case(const struct size_case *sc, double *kept, double *built, double *sparse,
+                    int *differ, double *iters)
 {
     size_t m = sc->m;
     int steps = sc->steps;
@@ -110,20 +160,26 @@ static int run_case(const struct size_case *sc, double *kept, double *built, int
     double *vec = malloc(7 * m * sizeof *vec);
     double *t_kept = malloc((size_t)steps * sizeof *t_kept);
     double *t_built = malloc((size_t)steps * sizeof *t_built);
-    if (!W || !Weff || !vec || !t_kept || !t_built) {
-        free(W), free(Weff), free(vec), free(t_kept), free(t_built);
+    double *t_sparse = malloc((size_t)steps * sizeof *t_sparse);
+    struct csr_pair csr = {0};
+    if (!W || !Weff || !vec || !t_kept || !t_built || !t_sparse) {
+        free(W), free(Weff), free(vec), free(t_kept), free(t_built), free(t_sparse);
         return 1;
     }
     double *mun = vec, *z0 = vec + m, *zp = vec + 2 * m, *ap = vec + 3 * m;
-    double *f_kept = vec + 4 * m, *f_built = vec + 5 * m;
+    double *f_kept = vec + 4 * m, *f_built = vec + 5 * m, *f_sparse = vec + 6 * m;
     make_w(sc, W);
+    make_weff(sc, 0, Weff); /* its pattern is every step's */
+    int status = !csr_alloc(&csr, m, nonzeros(m, W), nonzeros(m, Weff));
+    if (status == 0)
+        to_csr(m, W, csr.wp, csr.wi, csr.wv);
     for (size_t i = 0; i < m; i++) {
         mun[i] = 0.8 + 0.4 * (double)(i % 5) / 4.0;
-        f_kept[i] = f_built[i] = 0.0;
+        f_kept[i] = f_built[i] = f_sparse[i] = 0.0;
         z0[i] = 0.0;
     }
-    fricreg_ctx *a = context(sc, W, mun), *b = context(sc, W, mun);
-    int status = a == NULL || b == NULL;
+    fricreg_ctx *a = context(sc, W, mun), *b = context(sc, W, mun), *c = context(sc, W, mun);
+    status |= a == NULL || b == NULL || c == NULL;
     *differ = 0;
     long total_iters = 0;
     for (int k = 0; k < steps && status == 0; k++) {
@@ -133,7 +189,8 @@ static int run_case(const struct size_case *sc, double *kept, double *built, int
             zp[i] = 3.0 * STEP_EPS * sin(phase);
             ap[i] = 1.5 * cos(phase + 0.5);
         }
-        int info_a[2], info_b[2];
+        to_csr(m, Weff, csr.ep, csr.ei, csr.ev);
+        int info_a[2], info_b[2], info_c[2];
         double t0 = bench_cpu_seconds();
         int sa = fricreg_ctx_solve_step(a, m, z0, zp, ap, W, Weff, 0.005, 1e-10, 50, 0, f_kept,
                                         info_a);
@@ -143,27 +200,38 @@ static int run_case(const struct size_case *sc, double *kept, double *built, int
         int sb = fricreg_ctx_solve_step(b, m, z0, zp, ap, W, Weff, 0.005, 1e-10, 50, 0, f_built,
                                         info_b);
         double t3 = bench_cpu_seconds();
-        if (sa != FRICREG_OK || sb != FRICREG_OK) {
+        int sc_ = fricreg_ctx_solve_step_csr(c, m, z0, zp, ap, 0, csr.wp, csr.wi, csr.wv, csr.ep,
+                                             csr.ei, csr.ev, 0.005, 1e-10, 50, 0, f_sparse, info_c);
+        double t4 = bench_cpu_seconds();
+        if (sa != FRICREG_OK || sb != FRICREG_OK || sc_ != FRICREG_OK) {
             fprintf(stderr, "fricreg-bench-solve-step: step %d: %s\n", k,
-                    fricreg_ctx_errmsg(sa != FRICREG_OK ? a : b));
+                    fricreg_ctx_errmsg(sa != FRICREG_OK   ? a
+                                       : sb != FRICREG_OK ? b
+                                                          : c));
             status = 1;
             break;
         }
         t_kept[k] = t1 - t0;
         t_built[k] = t3 - t2;
+        t_sparse[k] = t4 - t3;
         total_iters += info_a[0];
         *differ += memcmp(f_kept, f_built, m * sizeof *f_kept) != 0 ||
-                   memcmp(info_a, info_b, sizeof info_a) != 0;
+                   memcmp(info_a, info_b, sizeof info_a) != 0 ||
+                   memcmp(f_kept, f_sparse, m * sizeof *f_kept) != 0 ||
+                   memcmp(info_a, info_c, sizeof info_a) != 0;
         memcpy(z0, zp, m * sizeof *z0); /* the next step starts where this one ended */
     }
     if (status == 0) {
         *kept = bench_median(t_kept, (size_t)steps);
         *built = bench_median(t_built, (size_t)steps);
+        *sparse = bench_median(t_sparse, (size_t)steps);
         *iters = (double)total_iters / steps;
     }
     fricreg_ctx_free(a);
     fricreg_ctx_free(b);
-    free(W), free(Weff), free(vec), free(t_kept), free(t_built);
+    fricreg_ctx_free(c);
+    csr_free(&csr);
+    free(W), free(Weff), free(vec), free(t_kept), free(t_built), free(t_sparse);
     return status;
 }
 
@@ -174,25 +242,29 @@ int main(int argc, char **argv)
     if (argc > 1 && csv == NULL)
         return 1;
     if (csv != NULL)
-        fprintf(csv, "case,m,steps,kept_us,built_us,ratio,newton_iters,steps_differing\n");
+        fprintf(csv, "case,m,steps,kept_us,built_us,ratio,sparse_us,kept_over_sparse,"
+                     "newton_iters,steps_differing\n");
     printf("fricreg_ctx_solve_step per call: the solver kept in the context against one built "
-           "per call (median CPU time)\n");
-    printf("%-34s %6s %12s %12s %8s %8s %8s\n", "case", "steps", "kept (us)", "built (us)",
-           "built/kept", "iters", "differ");
+           "per call, and fricreg_ctx_solve_step_csr (kept) on the same matrices (median CPU "
+           "time)\n");
+    printf("%-34s %6s %12s %12s %8s %12s %11s %8s %8s\n", "case", "steps", "kept (us)",
+           "built (us)", "built/kept", "sparse (us)", "kept/sparse", "iters", "differ");
     int status = 0;
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
-        double kept = 0.0, built = 0.0, iters = 0.0;
+        double kept = 0.0, built = 0.0, sparse = 0.0, iters = 0.0;
         int differ = 0;
-        if (run_case(&cases[c], &kept, &built, &differ, &iters) != 0) {
+        if (run_case(&cases[c], &kept, &built, &sparse, &differ, &iters) != 0) {
             status = 1;
             continue;
         }
-        printf("%-34s %6d %12.2f %12.2f %8.2f %8.2f %8d\n", cases[c].name, cases[c].steps,
-               1e6 * kept, 1e6 * built, built / kept, iters, differ);
+        printf("%-34s %6d %12.2f %12.2f %8.2f %12.2f %11.2f %8.2f %8d\n", cases[c].name,
+               cases[c].steps, 1e6 * kept, 1e6 * built, built / kept, 1e6 * sparse, kept / sparse,
+               iters, differ);
         if (csv != NULL)
-            fprintf(csv, "\"%s\",%zu,%d,%.4g,%.4g,%.4g,%.4g,%d\n", cases[c].name, cases[c].m,
-                    cases[c].steps, 1e6 * kept, 1e6 * built, built / kept, iters, differ);
-        status |= differ != 0; /* the kept solver must give the built one's forces */
+            fprintf(csv, "\"%s\",%zu,%d,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%d\n", cases[c].name,
+                    cases[c].m, cases[c].steps, 1e6 * kept, 1e6 * built, built / kept, 1e6 * sparse,
+                    kept / sparse, iters, differ);
+        status |= differ != 0; /* kept, built and sparse must give the same forces */
     }
     if (csv != NULL)
         fclose(csv);

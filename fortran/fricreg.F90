@@ -134,6 +134,8 @@ module fricreg
     procedure :: tangent_apply => ctx_tangent_apply
 #ifdef FRICREG_HAVE_SIM
     procedure :: solve_step => ctx_solve_step
+    procedure :: solve_step_csr => ctx_solve_step_csr
+    procedure :: solve_step_csc => ctx_solve_step_csc
 #endif
     procedure :: switching => ctx_switching
     procedure :: switching_count => ctx_switching_count
@@ -1079,6 +1081,121 @@ contains
     if (present(iterations)) iterations = int(info(1))
     if (present(converged)) converged = info(2) /= 0
   end function ctx_solve_step
+
+  !> solve_step with W and Weff in compressed sparse rows (C's fricreg_ctx_solve_step_csr):
+  !> O(nnz) per call where the dense one reads m x m arrays; the same forces on the same
+  !> matrices. sparse_flags from fricreg_sparse_flags for both (FRICREG_SPARSE_ONE_BASED for
+  !> Fortran's indices, _UPPER or _LOWER for one triangle); w_rowptr(m + 1), w_colind(nnz),
+  !> w_values(nnz) and weff_rowptr(m + 1), weff_colind(nnz_eff), weff_values(nnz_eff), the
+  !> indices of kind c_int64_t. A later call with the same index arrays reuses the step's
+  !> solver. The other arguments and the statuses as solve_step's; FRICREG_ESIZE unless the
+  !> pointer arrays have m + 1 elements and the others at least nnz; FRICREG_EINVAL (flags,
+  !> pointers, indices) as set_coupling_csr.
+  function ctx_solve_step_csr(self, zdot_start, zdot_pred, a_pred, sparse_flags, w_rowptr, &
+                              w_colind, w_values, weff_rowptr, weff_colind, weff_values, c, &
+                              tol, max_iter, f, iterations, converged, flags) result(status)
+    class(fricreg_context), intent(inout) :: self
+    real(c_double), intent(in), contiguous :: zdot_start(:), zdot_pred(:), a_pred(:)
+    integer(c_int), intent(in) :: sparse_flags
+    integer(c_int64_t), intent(in), contiguous :: w_rowptr(:), w_colind(:), weff_rowptr(:), &
+                                                  weff_colind(:)
+    real(c_double), intent(in), contiguous :: w_values(:), weff_values(:)
+    real(c_double), intent(in) :: c, tol
+    integer, intent(in) :: max_iter
+    real(c_double), intent(inout), contiguous :: f(:)
+    integer, intent(out), optional :: iterations
+    logical, intent(out), optional :: converged
+    integer, intent(in), optional :: flags
+    integer(c_int) :: status
+    status = ctx_solve_step_compressed(self, .false., zdot_start, zdot_pred, a_pred, &
+                                       sparse_flags, w_rowptr, w_colind, w_values, &
+                                       weff_rowptr, weff_colind, weff_values, c, tol, &
+                                       max_iter, f, iterations, converged, flags)
+  end function ctx_solve_step_csr
+
+  !> solve_step with W and Weff in compressed sparse columns (C's fricreg_ctx_solve_step_csc),
+  !> what a Fortran code usually holds: w_colptr(m + 1), w_rowind(nnz), w_values(nnz) and the
+  !> same for Weff; being symmetric, their CSC arrays are their CSR arrays, the upper triangle
+  !> of one the lower of the other. Arguments and statuses as solve_step_csr's.
+  function ctx_solve_step_csc(self, zdot_start, zdot_pred, a_pred, sparse_flags, w_colptr, &
+                              w_rowind, w_values, weff_colptr, weff_rowind, weff_values, c, &
+                              tol, max_iter, f, iterations, converged, flags) result(status)
+    class(fricreg_context), intent(inout) :: self
+    real(c_double), intent(in), contiguous :: zdot_start(:), zdot_pred(:), a_pred(:)
+    integer(c_int), intent(in) :: sparse_flags
+    integer(c_int64_t), intent(in), contiguous :: w_colptr(:), w_rowind(:), weff_colptr(:), &
+                                                  weff_rowind(:)
+    real(c_double), intent(in), contiguous :: w_values(:), weff_values(:)
+    real(c_double), intent(in) :: c, tol
+    integer, intent(in) :: max_iter
+    real(c_double), intent(inout), contiguous :: f(:)
+    integer, intent(out), optional :: iterations
+    logical, intent(out), optional :: converged
+    integer, intent(in), optional :: flags
+    integer(c_int) :: status
+    status = ctx_solve_step_compressed(self, .true., zdot_start, zdot_pred, a_pred, &
+                                       sparse_flags, w_colptr, w_rowind, w_values, &
+                                       weff_colptr, weff_rowind, weff_values, c, tol, &
+                                       max_iter, f, iterations, converged, flags)
+  end function ctx_solve_step_csc
+
+  !> The two above: the shapes checked (ctx_check_compressed, as the coupling setters'), then
+  !> the C call by rows or by columns.
+  function ctx_solve_step_compressed(self, by_columns, zdot_start, zdot_pred, a_pred, &
+                                     sparse_flags, w_ptr, w_ind, w_values, weff_ptr, weff_ind, &
+                                     weff_values, c, tol, max_iter, f, iterations, converged, &
+                                     flags) result(status)
+    class(fricreg_context), intent(inout) :: self
+    logical, intent(in) :: by_columns
+    real(c_double), intent(in), contiguous :: zdot_start(:), zdot_pred(:), a_pred(:)
+    integer(c_int), intent(in) :: sparse_flags
+    integer(c_int64_t), intent(in), contiguous :: w_ptr(:), w_ind(:), weff_ptr(:), weff_ind(:)
+    real(c_double), intent(in), contiguous :: w_values(:), weff_values(:)
+    real(c_double), intent(in) :: c, tol
+    integer, intent(in) :: max_iter
+    real(c_double), intent(inout), contiguous :: f(:)
+    integer, intent(out), optional :: iterations
+    logical, intent(out), optional :: converged
+    integer, intent(in), optional :: flags
+    integer(c_int) :: status, info(2), how
+    integer(c_size_t) :: m
+    character(len=14) :: what
+    character(len=11) :: wnames(3), enames(3)
+    if (by_columns) then
+      what = 'solve_step_csc'
+      wnames = [character(len=11) :: 'w_colptr', 'w_rowind', 'w_values']
+      enames = [character(len=11) :: 'weff_colptr', 'weff_rowind', 'weff_values']
+    else
+      what = 'solve_step_csr'
+      wnames = [character(len=11) :: 'w_rowptr', 'w_colind', 'w_values']
+      enames = [character(len=11) :: 'weff_rowptr', 'weff_colind', 'weff_values']
+    end if
+    m = fricreg_ctx_size(self%ptr)
+    how = 0
+    if (present(flags)) how = int(flags, c_int)
+    status = self%ready(what, 'context')
+    if (status == FRICREG_OK) status = self%check_size(what, 'zdot_start', size(zdot_start), m)
+    if (status == FRICREG_OK) status = self%check_size(what, 'zdot_pred', size(zdot_pred), m)
+    if (status == FRICREG_OK) status = self%check_size(what, 'a_pred', size(a_pred), m)
+    if (status == FRICREG_OK) status = self%check_size(what, 'f', size(f), m)
+    if (status == FRICREG_OK) status = ctx_check_compressed(self, what, wnames, sparse_flags, &
+                                                            w_ptr, w_ind, w_values)
+    if (status == FRICREG_OK) status = ctx_check_compressed(self, what, enames, sparse_flags, &
+                                                            weff_ptr, weff_ind, weff_values)
+    if (status /= FRICREG_OK) return
+    if (by_columns) then
+      status = self%record(fricreg_ctx_solve_step_csc(self%ptr, m, zdot_start, zdot_pred, &
+                           a_pred, sparse_flags, w_ptr, w_ind, w_values, weff_ptr, weff_ind, &
+                           weff_values, c, tol, int(max_iter, c_int), how, f, info))
+    else
+      status = self%record(fricreg_ctx_solve_step_csr(self%ptr, m, zdot_start, zdot_pred, &
+                           a_pred, sparse_flags, w_ptr, w_ind, w_values, weff_ptr, weff_ind, &
+                           weff_values, c, tol, int(max_iter, c_int), how, f, info))
+    end if
+    if (status /= FRICREG_OK) return
+    if (present(iterations)) iterations = int(info(1))
+    if (present(converged)) converged = info(2) /= 0
+  end function ctx_solve_step_compressed
 #endif
 
   !> The switching functions (C's fricreg_ctx_switching): g(k + 1, i) is component k

@@ -69,6 +69,8 @@
 !   FRCSTP(H, M, ZS, ZP, AP, W, WEFF, C, TOL, MAXIT, FLAGS, F, ITERS, CONV, STAT)
 !                                                fricreg_ctx_solve_step, on a context H of
 !                                                FRCTXC (the user's own Newmark)
+!   FRCSTR(H, M, ZS, ZP, AP, SFLAGS, WP, WI, WV, EP, EI, EV, C, TOL, MAXIT, FLAGS, F, ITERS,
+!          CONV, STAT)                           fricreg_ctx_solve_step_csr (FRCSTC: _csc)
 ! The getters (FRSTG*, FRSTJS, FRSTS2, FRSTIS, FRSTNF, FRSTPK, FRSTPE, FRSTDE, FRSTOG) read a const structure: C records no failure
 ! of theirs, so FRSTER still shows the failure before (their STAT is the answer). So do the
 ! few refusals made here,
@@ -879,3 +881,56 @@ subroutine frcstp(h, m, zs, zp, ap, w, weff, c, tol, maxit, flags, f, iters, con
   iters = int(info(1))
   conv = int(info(2))
 end subroutine frcstp
+
+!> FRCSTR(H, M, ZS, ZP, AP, SFLAGS, WP, WI, WV, EP, EI, EV, C, TOL, MAXIT, FLAGS, F, ITERS, CONV,
+!> STAT): FRCSTP with W and WEFF in compressed sparse rows (fricreg_ctx_solve_step_csr): INTEGER*8
+!> WP(M + 1), WI(NNZ), WV(NNZ) for W and EP(M + 1), EI(NNZ_EFF), EV(NNZ_EFF) for WEFF; SFLAGS
+!> the FRICREG_SPARSE_* constants for both (FRICREG_SPARSE_ONE_BASED for Fortran's indices).
+!> The same forces as FRCSTP on the same matrices, O(NNZ) a call. The rest as FRCSTP.
+subroutine frcstr(h, m, zs, zp, ap, sflags, wp, wi, wv, ep, ei, ev, c, tol, maxit, flags, f, &
+                  iters, conv, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h, wp(*), wi(*), ep(*), ei(*)
+  integer, intent(in) :: m, sflags, maxit, flags
+  double precision, intent(in) :: zs(*), zp(*), ap(*), wv(*), ev(*), c, tol
+  double precision, intent(inout) :: f(*)
+  integer, intent(inout) :: iters, conv
+  integer, intent(out) :: stat
+  integer(c_int) :: info(2)
+  stat = int(fricreg_ctx_solve_step_csr(fricreg_handle_to_ptr(h), int(max(m, 0), c_size_t), zs, &
+             zp, ap, int(min(max(sflags, -int(huge(0_c_int))), int(huge(0_c_int))), c_int), &
+             wp, wi, wv, ep, ei, ev, c, tol, &
+             int(min(max(maxit, -int(huge(0_c_int))), int(huge(0_c_int))), c_int), &
+             int(min(max(flags, -int(huge(0_c_int))), int(huge(0_c_int))), c_int), f, info))
+  if (stat /= FRICREG_OK) return
+  iters = int(info(1))
+  conv = int(info(2))
+end subroutine frcstr
+
+!> FRCSTC(H, M, ZS, ZP, AP, SFLAGS, WP, WI, WV, EP, EI, EV, C, TOL, MAXIT, FLAGS, F, ITERS, CONV,
+!> STAT): FRCSTR in compressed sparse columns, what Fortran codes hold: one-based INTEGER*8
+!> column pointers WP, EP and row indices WI, EI with SFLAGS = FRICREG_SPARSE_ONE_BASED
+!> (fricreg_ctx_solve_step_csc; W and WEFF being symmetric, the same arrays as by rows).
+subroutine frcstc(h, m, zs, zp, ap, sflags, wp, wi, wv, ep, ei, ev, c, tol, maxit, flags, f, &
+                  iters, conv, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h, wp(*), wi(*), ep(*), ei(*)
+  integer, intent(in) :: m, sflags, maxit, flags
+  double precision, intent(in) :: zs(*), zp(*), ap(*), wv(*), ev(*), c, tol
+  double precision, intent(inout) :: f(*)
+  integer, intent(inout) :: iters, conv
+  integer, intent(out) :: stat
+  integer(c_int) :: info(2)
+  stat = int(fricreg_ctx_solve_step_csc(fricreg_handle_to_ptr(h), int(max(m, 0), c_size_t), zs, &
+             zp, ap, int(min(max(sflags, -int(huge(0_c_int))), int(huge(0_c_int))), c_int), &
+             wp, wi, wv, ep, ei, ev, c, tol, &
+             int(min(max(maxit, -int(huge(0_c_int))), int(huge(0_c_int))), c_int), &
+             int(min(max(flags, -int(huge(0_c_int))), int(huge(0_c_int))), c_int), f, info))
+  if (stat /= FRICREG_OK) return
+  iters = int(info(1))
+  conv = int(info(2))
+end subroutine frcstc

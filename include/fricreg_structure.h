@@ -1170,6 +1170,92 @@ FRICREG_API int fricreg_ctx_solve_step(fricreg_ctx *ctx, size_t m, const double 
                                        const double W[], const double Weff[], double c, double tol,
                                        int max_iter, int flags, double f[], int info[]);
 
+/** fricreg_ctx_solve_step with W and W_eff in compressed sparse rows (since 1.7, FRICREG_1.7):
+ *  the same step, the same method and the same forces, for the models whose contacts couple
+ *  only to their neighbours. The dense call reads two m x m arrays on every call, O(m^2): at
+ *  m = 10^4 1.5 GiB and seconds a step however sparse W and W_eff are; here every call is
+ *  O(nnz) in its inputs (bench/solve_step.c). The step solves on their upper triangles either
+ *  way, so on the same matrices (an input's entries the dense one's nonzeros, W and W_eff
+ *  exactly symmetric) the results are the dense call's, bit for bit.
+ *
+ *  ctx, m, zdot_start[m], zdot_pred[m], a_pred[m], c, tol, max_iter, flags, f[m], info[2]:
+ *               as fricreg_ctx_solve_step's (velocity, acceleration, time and force units).
+ *  sparse_flags enum fricreg_sparse_flags (fricreg.h), for both matrices:
+ *               FRICREG_SPARSE_ONE_BASED when the indices count from 1; each matrix given
+ *               whole (default) or by one triangle with its diagonal, FRICREG_SPARSE_UPPER
+ *               (column >= row) or FRICREG_SPARSE_LOWER (column <= row).
+ *  w_rowptr[m + 1], w_colind[nnz], w_values[nnz]
+ *               W = J M^-1 J^T (acceleration per force), the coupling the context holds,
+ *               in CSR as fricreg_ctx_set_coupling_csr takes it: rowptr[0] = base,
+ *               non-decreasing; entries in any order within a row, duplicates summed,
+ *               explicit zeros kept (they belong to the pattern). Its diagonal is checked
+ *               against the context's (to 1e-12 relative), its semidefiniteness is not.
+ *  weff_rowptr[m + 1], weff_colind[nnz_eff], weff_values[nnz_eff]
+ *               W_eff = J K_eff^-1 J^T, symmetric positive definite, the same way.
+ *  Read on every call, copied into the step's solver; the caller keeps its arrays.
+ *
+ *  Checked as the coupling setters check their arrays (flags, pointers, indices, the triangle
+ *  left out, finite values), then as the dense call checks its matrices: every diagonal entry
+ *  present and >= DBL_MIN; given whole, symmetric as |A_ij - A_ji| <= 1e-12 sqrt(A_ii A_jj),
+ *  its symmetric part (A + A^T)/2 then used (the dense call uses its upper triangle: the same
+ *  for a symmetric A).
+ *
+ *  Cost: O(m + nnz + nnz_eff) per call to read, check and store the inputs, then per
+ *  iteration what the dense call's costs. The step's solver is the dense call's, kept in the
+ *  context by the same rule: a later call with the same m, sparse_flags and index arrays of
+ *  both matrices (the same rowptr and colind, entry for entry; the values may change every
+ *  call) refills the values: no allocation, no analysis, and while W_eff's values and a stick
+ *  set are those of the last factorization, no refactorization; other arrays build it again
+ *  (first call: the analysis of W_eff's pattern, memory O(m + nnz + nnz_eff + nnz(L))). The
+ *  results are the same, bit for bit, whether the solver was kept or built. Released as the
+ *  dense call's (fricreg_ctx_free, fricreg_ctx_set_law, a coupling setter, FRICREG_ENOMEM).
+ *
+ *  Returns FRICREG_OK (converged or not: read info[1]); FRICREG_ENULL if ctx, a vector, f,
+ *  info or a pointer array is NULL, or an index or value array while its nnz > 0;
+ *  FRICREG_ESIZE if m differs from the context's; FRICREG_ENONFINITE if c, tol, a vector
+ *  entry or a matrix entry is NaN or infinite; FRICREG_EINVAL if c <= 0, tol <= 0,
+ *  max_iter < 1, flags has an unknown bit, sparse_flags are unknown or name both triangles, a
+ *  pointer array does not start at the base or decreases, an index lies outside
+ *  base .. m - 1 + base, an entry lies in the triangle left out, or W's diagonal is not the
+ *  context's coupling's; FRICREG_ENOTPSD if a diagonal entry of W or W_eff is missing or below
+ *  DBL_MIN; FRICREG_ENOTSYM if W or W_eff, given whole, is not symmetric; FRICREG_ENOMEM;
+ *  FRICREG_EDIVERGED and the context's fricreg_ctx_eval statuses as fricreg_ctx_solve_step.
+ *  The failure is recorded in the context (fricreg_ctx_errmsg); on failure f and info are not
+ *  written. */
+FRICREG_API int fricreg_ctx_solve_step_csr(fricreg_ctx *ctx, size_t m, const double zdot_start[],
+                                           const double zdot_pred[], const double a_pred[],
+                                           int sparse_flags, const int64_t w_rowptr[],
+                                           const int64_t w_colind[], const double w_values[],
+                                           const int64_t weff_rowptr[], const int64_t weff_colind[],
+                                           const double weff_values[], double c, double tol,
+                                           int max_iter, int flags, double f[], int info[]);
+
+/** fricreg_ctx_solve_step_csr with W and W_eff in compressed sparse columns (since 1.7,
+ *  FRICREG_1.7): colptr[m + 1] the column pointers and rowind[nnz] each entry's row, as
+ *  fricreg_ctx_set_coupling_csc takes them. One-based CSC (FRICREG_SPARSE_ONE_BASED) is what
+ *  Fortran codes hold; W and W_eff being symmetric, their CSC arrays are their CSR arrays,
+ *  FRICREG_SPARSE_UPPER of one being FRICREG_SPARSE_LOWER of the other.
+ *
+ *  ctx, m, zdot_start[m], zdot_pred[m], a_pred[m], c, tol, max_iter, flags, f[m], info[2]:
+ *               as fricreg_ctx_solve_step's.
+ *  sparse_flags enum fricreg_sparse_flags (base, whole or one triangle), for both matrices.
+ *  w_colptr[m + 1], w_rowind[nnz], w_values[nnz]: W = J M^-1 J^T, as the context's coupling.
+ *  weff_colptr[m + 1], weff_rowind[nnz_eff], weff_values[nnz_eff]: W_eff = J K_eff^-1 J^T.
+ *  Checked, solved, kept and costed as by fricreg_ctx_solve_step_csr.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_EINVAL
+ *  (c, tol, max_iter, flags, sparse_flags, pointers, indices, an entry in the triangle left
+ *  out, W's diagonal); FRICREG_ENOTPSD; FRICREG_ENOTSYM; FRICREG_ENOMEM; FRICREG_EDIVERGED
+ *  and the context's fricreg_ctx_eval statuses, as fricreg_ctx_solve_step_csr. On failure f
+ *  and info are not written. */
+FRICREG_API int fricreg_ctx_solve_step_csc(fricreg_ctx *ctx, size_t m, const double zdot_start[],
+                                           const double zdot_pred[], const double a_pred[],
+                                           int sparse_flags, const int64_t w_colptr[],
+                                           const int64_t w_rowind[], const double w_values[],
+                                           const int64_t weff_colptr[], const int64_t weff_rowind[],
+                                           const double weff_values[], double c, double tol,
+                                           int max_iter, int flags, double f[], int info[]);
+
 /** \} */
 
 #ifdef __cplusplus

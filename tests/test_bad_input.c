@@ -837,6 +837,26 @@ static int w_ctx_solve_step(void)
                                   A(4, W2B, 4), A(5, weff, 4), D(0, 0.005), D(1, 1e-10), N(0, 50),
                                   N(1, 0), (double *)A(6, f0, 2), (int *)O(0));
 }
+/* The same step with W and W_eff by compressed rows (or columns: the same arrays), whole,
+ * zero-based, their patterns full so that the square-matrix classes replace their values;
+ * the index arrays are pointer slots 10 to 13. */
+static int w_ctx_solve_step_sparse(int by_columns)
+{
+    const double z0[2] = {0.0004, -0.0002}, zp[2] = {0.0011, -0.0007}, ap[2] = {0.213, -0.347};
+    const double weff[4] = {0.0081, -0.0023, -0.0023, 0.0097}, f0[2] = {0.1, -0.05};
+    return (by_columns ? fricreg_ctx_solve_step_csc : fricreg_ctx_solve_step_csr)(
+        CTX(), Z(0, 2), A(1, z0, 2), A(2, zp, 2), A(3, ap, 2), N(0, 0), I64(10, W2B_PTR),
+        I64(11, W2B_IND), A(4, W2B, 4), I64(12, W2B_PTR), I64(13, W2B_IND), A(5, weff, 4),
+        D(0, 0.005), D(1, 1e-10), N(1, 50), N(2, 0), (double *)A(6, f0, 2), (int *)O(0));
+}
+static int w_ctx_solve_step_csr(void)
+{
+    return w_ctx_solve_step_sparse(0);
+}
+static int w_ctx_solve_step_csc(void)
+{
+    return w_ctx_solve_step_sparse(1);
+}
 /* The fixture's two blocks (a dense W, so f is read) at a state near stick. */
 static int w_ctx_switching(void)
 {
@@ -1217,6 +1237,40 @@ static const struct row rows[] = {
      CTX_REC,
      {PTR(4, "0"), MAT(4, "iiypi"), ARR(4, "nnpppi"), PTR(5, "0"), MAT(5, "ooypo"),
       ARR(5, "nnpppo"), DBL(0, "nnniioo"), DBL(1, "nnniioo"), INT(0, "iioi"), INT(1, "ioii")}},
+    {"fricreg_ctx_solve_step_csr (arrays)",
+     w_ctx_solve_step_csr,
+     "0snimypge",
+     CTX_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnoooo"), PTR(2, "0"), ARR(2, "nnoooo"),
+      PTR(3, "0"), ARR(3, "nnooof"), PTR(6, "0"), ARR(6, "nnooof"), PTR(0, "0")}},
+    {"fricreg_ctx_solve_step_csr (matrices)",
+     w_ctx_solve_step_csr,
+     "0snimypge",
+     CTX_REC,
+     {INT(0, "ioii"), PTR(10, "0"), PTR(11, "0"), PTR(4, "0"), MAT(4, "iiypi"), ARR(4, "nnpppi"),
+      PTR(12, "0"), PTR(13, "0"), PTR(5, "0"), MAT(5, "ooypo"), ARR(5, "nnpppo")}},
+    {"fricreg_ctx_solve_step_csr (scalars)",
+     w_ctx_solve_step_csr,
+     "0snimypge",
+     CTX_REC,
+     {DBL(0, "nnniioo"), DBL(1, "nnniioo"), INT(1, "iioi"), INT(2, "ioii")}},
+    {"fricreg_ctx_solve_step_csc (arrays)",
+     w_ctx_solve_step_csc,
+     "0snimypge",
+     CTX_REC,
+     {HANDLE, SIZE(0, "ssss"), PTR(1, "0"), ARR(1, "nnoooo"), PTR(2, "0"), ARR(2, "nnoooo"),
+      PTR(3, "0"), ARR(3, "nnooof"), PTR(6, "0"), ARR(6, "nnooof"), PTR(0, "0")}},
+    {"fricreg_ctx_solve_step_csc (matrices)",
+     w_ctx_solve_step_csc,
+     "0snimypge",
+     CTX_REC,
+     {INT(0, "ioii"), PTR(10, "0"), PTR(11, "0"), PTR(4, "0"), MAT(4, "iiypi"), ARR(4, "nnpppi"),
+      PTR(12, "0"), PTR(13, "0"), PTR(5, "0"), MAT(5, "ooypo"), ARR(5, "nnpppo")}},
+    {"fricreg_ctx_solve_step_csc (scalars)",
+     w_ctx_solve_step_csc,
+     "0snimypge",
+     CTX_REC,
+     {DBL(0, "nnniioo"), DBL(1, "nnniioo"), INT(1, "iioi"), INT(2, "ioii")}},
     {"fricreg_ctx_switching",
      w_ctx_switching,
      "0sn",

@@ -24,12 +24,60 @@
 #include "fricreg.h"
 #include "fricreg_structure.h"
 
-#define MMAX 8
+#define MMAX 16
 
 static double uniform(unsigned long *state)
 {
     *state = *state * 6364136223846793005UL + 1442695040888963407UL;
     return (double)(*state >> 11) / 9007199254740992.0; /* [0, 1) */
+}
+
+/* A's nonzeros (m x m, row-major, symmetric) in compressed form: the row-major order read as
+ * CSR, or (by_columns) as CSC, which for a symmetric A is the same arrays; whole, or the upper
+ * (FRICREG_SPARSE_UPPER) or lower triangle; ONE_BASED adds 1 to the indices. For by_columns
+ * the triangle flag names the triangle of the CSC reading: the other of the CSR's. */
+static void compressed(size_t m, const double A[], int flags, int by_columns, int64_t ptr[],
+                       int64_t ind[], double val[])
+{
+    int64_t base = (flags & FRICREG_SPARSE_ONE_BASED) ? 1 : 0, p = 0;
+    int upper = (flags & FRICREG_SPARSE_UPPER) != 0, lower = (flags & FRICREG_SPARSE_LOWER) != 0;
+    if (by_columns) { /* the CSC's upper triangle is the CSR reading's lower one */
+        int t = upper;
+        upper = lower;
+        lower = t;
+    }
+    for (size_t i = 0; i < m; i++) {
+        ptr[i] = p + base;
+        for (size_t j = 0; j < m; j++)
+            if ((i == j || A[i * m + j] != 0.0) && !(upper && j < i) && !(lower && j > i)) {
+                ind[p] = (int64_t)j + base;
+                val[p++] = A[i * m + j];
+            }
+    }
+    ptr[m] = p + base;
+}
+
+/* The four ways a caller may give a matrix, in turn: CSR whole zero-based, CSR upper
+ * one-based, CSC lower zero-based, CSC whole one-based. */
+static const int way_flags[4] = {0, FRICREG_SPARSE_UPPER | FRICREG_SPARSE_ONE_BASED,
+                                 FRICREG_SPARSE_LOWER, FRICREG_SPARSE_ONE_BASED};
+
+/* fricreg_ctx_solve_step_csr or _csc (way k % 4) on the dense W and Weff's nonzeros. */
+static int solve_step_sparse(fricreg_ctx *ctx, size_t m, const double z0[], const double zp[],
+                             const double ap[], const double W[], const double Weff[], double c,
+                             double tol, int max_iter, int flags, double f[], int info[], int k)
+{
+    enum { CAP = 16 * 16 };
+    int64_t wp[17], wi[CAP], ep[17], ei[CAP];
+    double wv[CAP], ev[CAP];
+    int sf = way_flags[k % 4], by_columns = k % 4 >= 2;
+    ck_assert_int_le(m, 16);
+    compressed(m, W, sf, by_columns, wp, wi, wv);
+    compressed(m, Weff, sf, by_columns, ep, ei, ev);
+    return by_columns ? fricreg_ctx_solve_step_csc(ctx, m, z0, zp, ap, sf, wp, wi, wv, ep, ei, ev,
+                                                   c, tol, max_iter, flags, f, info)
+                      : fricreg_ctx_solve_step_csr(ctx, m, z0, zp, ap, sf, wp, wi, wv, ep, ei, ev,
+                                                   c, tol, max_iter, flags, f, info);
 }
 
 /* A = B B^T / m + shift I, B uniform in [-1, 1): symmetric positive definite, row-major. */
@@ -74,9 +122,11 @@ static void random_steps(int law, int diagonal)
     enum { M = 6, STEPS = 200 };
     const double eps = 1e-3, c = 0.005, tol = 1e-10;
     unsigned long state = 2385;
-    fricreg_ctx *ctx = NULL;
+    fricreg_ctx *ctx = NULL, *twin = NULL; /* twin: the same calls by the sparse entries */
     ck_assert_int_eq(fricreg_ctx_create(M, &ctx), FRICREG_OK);
     ck_assert_int_eq(fricreg_ctx_set_law(ctx, law, eps), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_create(M, &twin), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_law(twin, law, eps), FRICREG_OK);
     int converged = 0, iterations = 0;
     for (int step = 0; step < STEPS; step++) {
         double W[M * M], Weff[M * M], mun[M], z0[M], zp[M], ap[M], f[M], wd[M];
@@ -88,8 +138,10 @@ static void random_steps(int law, int diagonal)
                     W[i * M + j] = i == j ? wd[i] : 0.0;
             }
             ck_assert_int_eq(fricreg_ctx_set_coupling_diagonal(ctx, M, wd), FRICREG_OK);
+            ck_assert_int_eq(fricreg_ctx_set_coupling_diagonal(twin, M, wd), FRICREG_OK);
         } else {
             ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, M, W), FRICREG_OK);
+            ck_assert_int_eq(fricreg_ctx_set_coupling_dense(twin, M, W), FRICREG_OK);
         }
         random_spd(M, 0.05, 0.2, &state, Weff); /* K_eff stiffer than M: W_eff << W */
         for (size_t i = 0; i < M; i++) {
@@ -100,9 +152,18 @@ static void random_steps(int law, int diagonal)
             f[i] = mun[i] * (2.0 * uniform(&state) - 1.0);
         }
         ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, M, mun), FRICREG_OK);
-        int info[2] = {-1, -1};
+        ck_assert_int_eq(fricreg_ctx_set_bounds(twin, M, mun), FRICREG_OK);
+        int info[2] = {-1, -1}, info_sparse[2] = {-2, -2};
+        double f_sparse[M];
+        memcpy(f_sparse, f, sizeof f);
         int status = fricreg_ctx_solve_step(ctx, M, z0, zp, ap, W, Weff, c, tol, 50, 0, f, info);
         ck_assert_msg(status == FRICREG_OK, "%s", fricreg_ctx_errmsg(ctx));
+        /* The sparse entries on the same matrices: the dense call's forces, bit for bit. */
+        status = solve_step_sparse(twin, M, z0, zp, ap, W, Weff, c, tol, 50, 0, f_sparse,
+                                   info_sparse, step);
+        ck_assert_msg(status == FRICREG_OK, "%s", fricreg_ctx_errmsg(twin));
+        ck_assert_msg(memcmp(f, f_sparse, sizeof f) == 0, "step %d: sparse forces differ", step);
+        ck_assert(memcmp(info, info_sparse, sizeof info) == 0);
         ck_assert_int_ge(info[0], 0);
         if (info[1]) {
             converged++;
@@ -114,6 +175,7 @@ static void random_steps(int law, int diagonal)
     ck_assert_int_eq(converged, STEPS);
     ck_assert_int_le(iterations, 6 * STEPS);
     fricreg_ctx_free(ctx);
+    fricreg_ctx_free(twin);
 }
 
 START_TEST(law_quinn_coupled)
@@ -368,7 +430,7 @@ static fricreg_ctx *run_context(int law, int diagonal, const double W[], const d
  * coupled W fails inside the step: beyond its solve's range), and the steps after them are
  * compared as the others. The velocities and accelerations change the stick set from step to
  * step; each run's guess is its own previous forces. */
-static void kept_against_built(int law, int diagonal, int fresh)
+static void kept_against_built(int law, int diagonal, int fresh, int sparse)
 {
     const double c = 0.005, tol = 1e-10;
     unsigned long state = 615;
@@ -396,8 +458,10 @@ static void kept_against_built(int law, int diagonal, int fresh)
         int info_kept[2] = {-7, -7}, info_built[2] = {-7, -7};
         double f_before[MW];
         memcpy(f_before, f_kept, sizeof f_kept);
-        int status_kept = fricreg_ctx_solve_step(kept, MW, z0, zp, ap, W, Weff, c, tol, 50, 0,
-                                                 f_kept, info_kept);
+        int status_kept = sparse ? solve_step_sparse(kept, MW, z0, zp, ap, W, Weff, c, tol, 50, 0,
+                                                     f_kept, info_kept, 0)
+                                 : fricreg_ctx_solve_step(kept, MW, z0, zp, ap, W, Weff, c, tol, 50,
+                                                          0, f_kept, info_kept);
         if (fresh)
             built = run_context(law, diagonal, W, mun);
         else
@@ -438,19 +502,34 @@ static void kept_against_built(int law, int diagonal, int fresh)
 
 START_TEST(kept_solver_quinn_coupled)
 {
-    kept_against_built(FRICREG_LAW_QUINN, 0, 0);
+    kept_against_built(FRICREG_LAW_QUINN, 0, 0, 0);
 }
 END_TEST
 
 START_TEST(kept_solver_quinn_diagonal)
 {
-    kept_against_built(FRICREG_LAW_QUINN, 1, 1);
+    kept_against_built(FRICREG_LAW_QUINN, 1, 1, 0);
 }
 END_TEST
 
 START_TEST(kept_solver_tanh)
 {
-    kept_against_built(FRICREG_LAW_TANH, 0, 1);
+    kept_against_built(FRICREG_LAW_TANH, 0, 1, 0);
+}
+END_TEST
+
+/* The sparse entry's kept solver (CSR, its values refilled while W_eff's pattern stays, built
+ * again at steps 20 and 40) against the dense call's solver built for each step: the same
+ * statuses, forces and info, bit for bit. */
+START_TEST(kept_sparse_quinn_coupled)
+{
+    kept_against_built(FRICREG_LAW_QUINN, 0, 0, 1);
+}
+END_TEST
+
+START_TEST(kept_sparse_tanh)
+{
+    kept_against_built(FRICREG_LAW_TANH, 0, 1, 1);
 }
 END_TEST
 
@@ -499,6 +578,82 @@ START_TEST(kept_solver_released_by_setters)
 }
 END_TEST
 
+/* The sparse entry's kept solver: reused (the same workspace, nothing allocated) by a call with
+ * the same index arrays and new values, dropped by the dense call's setters alike; and its
+ * refusals, each leaving f and info as they were: a W_eff given whole whose (0, 1) and (1, 0)
+ * differ by 2e-12 sqrt(W_00 W_11) (ENOTSYM; 0.5e-12 passes), a missing diagonal entry
+ * (ENOTPSD), an entry below the diagonal with FRICREG_SPARSE_UPPER and W_00 not the context's
+ * (EINVAL). */
+START_TEST(sparse_kept_and_refused)
+{
+    enum { CAP = MW * MW };
+    unsigned long state = 2385;
+    double W[CAP], Weff[CAP], mun[MW], z0[MW], zp[MW], ap[MW], f[MW], g[MW];
+    banded_spd(MW, 3, 1.0, &state, W);
+    banded_spd(MW, 1, 0.05, &state, Weff);
+    for (size_t i = 0; i < MW; i++) {
+        mun[i] = 0.5 + uniform(&state);
+        z0[i] = zp[i] = 1e-3 * (2.0 * uniform(&state) - 1.0);
+        ap[i] = uniform(&state) - 0.5;
+    }
+    fricreg_ctx *ctx = run_context(FRICREG_LAW_QUINN, 0, W, mun);
+    int64_t wp[MW + 1], wi[CAP], ep[MW + 1], ei[CAP];
+    double wv[CAP], ev[CAP];
+    compressed(MW, W, 0, 0, wp, wi, wv);
+    compressed(MW, Weff, 0, 0, ep, ei, ev);
+    int info[2];
+#define SPARSE_STEP()                                                                            \
+    fricreg_ctx_solve_step_csr(ctx, MW, z0, zp, ap, 0, wp, wi, wv, ep, ei, ev, 0.005, 1e-10, 50, \
+                               0, f, info)
+    memcpy(f, mun, sizeof f);
+    ck_assert_int_eq(SPARSE_STEP(), FRICREG_OK);
+    void *kept = fr_ctx_workspace(ctx);
+    ck_assert_ptr_nonnull(kept);
+    for (size_t k = 0; k < (size_t)ep[MW]; k++)
+        ev[k] *= 1.25; /* new values, same pattern */
+    memcpy(f, mun, sizeof f);
+    ck_assert_int_eq(SPARSE_STEP(), FRICREG_OK);
+    ck_assert_ptr_eq(fr_ctx_workspace(ctx), kept);
+    ck_assert_int_eq(info[1], 1);
+    for (size_t i = 0; i < MW; i++)
+        for (size_t j = 0; j < MW; j++)
+            Weff[i * MW + j] *= 1.25;
+    ck_assert_double_le(law_residual(ctx, MW, zp, ap, W, Weff, 0.005, f), 2e-10);
+    ck_assert_int_eq(fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, 1e-3), FRICREG_OK);
+    ck_assert_ptr_null(fr_ctx_workspace(ctx));
+
+    /* Refusals: ev[1] is W_eff(0, 1), ev[ep[1]] W_eff(1, 0) (bands of 1). */
+    memcpy(g, mun, sizeof g);
+    memcpy(f, g, sizeof f);
+    info[0] = info[1] = -7;
+    double unit = sqrt(Weff[0]) * sqrt(Weff[MW + 1]), e01 = ev[1];
+    ck_assert_int_eq(ei[1], 1);
+    ck_assert_int_eq(ei[ep[1]], 0);
+    ev[1] = e01 + 2e-12 * unit;
+    ck_assert_int_eq(SPARSE_STEP(), FRICREG_ENOTSYM);
+    ev[1] = e01 + 0.5e-12 * unit;
+    ck_assert_int_eq(SPARSE_STEP(), FRICREG_OK);
+    memcpy(f, g, sizeof f);
+    info[0] = info[1] = -7;
+    ev[1] = e01;
+    int64_t diag_1 = wi[wp[1] + 1]; /* W's row 1 starts at column 0: (1, 1) second */
+    ck_assert_int_eq(diag_1, 1);
+    wi[wp[1] + 1] = 2; /* (1, 2) twice, (1, 1) missing */
+    ck_assert_int_eq(SPARSE_STEP(), FRICREG_ENOTPSD);
+    wi[wp[1] + 1] = 1;
+    ck_assert_int_eq(fricreg_ctx_solve_step_csr(ctx, MW, z0, zp, ap, FRICREG_SPARSE_UPPER, wp, wi,
+                                                wv, ep, ei, ev, 0.005, 1e-10, 50, 0, f, info),
+                     FRICREG_EINVAL);
+    wv[0] *= 1.0 + 1e-9;
+    ck_assert_int_eq(SPARSE_STEP(), FRICREG_EINVAL);
+    ck_assert(memcmp(f, g, sizeof f) == 0);
+    ck_assert_int_eq(info[0], -7);
+    ck_assert_int_eq(info[1], -7);
+#undef SPARSE_STEP
+    fricreg_ctx_free(ctx);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("contact_step");
@@ -513,6 +668,9 @@ static Suite *suite(void)
     tcase_add_test(tc, kept_solver_quinn_diagonal);
     tcase_add_test(tc, kept_solver_tanh);
     tcase_add_test(tc, kept_solver_released_by_setters);
+    tcase_add_test(tc, kept_sparse_quinn_coupled);
+    tcase_add_test(tc, kept_sparse_tanh);
+    tcase_add_test(tc, sparse_kept_and_refused);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -149,8 +149,11 @@ C     REFUSAL OF A SIZE THAT IS NOT THE CONTEXT'S.
       IMPLICIT NONE
       INCLUDE 'fricreg.fi'
       INTEGER NFAIL, IST, ITERS, ICONV
-      INTEGER*8 HC
-      DOUBLE PRECISION W(1), WEFF(1), ZS(1), ZP(1), AP(1), F(1)
+      INTEGER*8 HC, IP(2), II(1)
+      DOUBLE PRECISION W(1), WEFF(1), ZS(1), ZP(1), AP(1), F(1), FD
+      IP(1) = 1
+      IP(2) = 2
+      II(1) = 1
       W(1) = 2.0D0
       WEFF(1) = 1.0D0
       ZS(1) = 0.001D0
@@ -171,6 +174,25 @@ C     REFUSAL OF A SIZE THAT IS NOT THE CONTEXT'S.
       CALL CHK(IST .EQ. FRICREG_OK .AND. ICONV .EQ. 1 .AND.
      &         ITERS .LE. 3 .AND. ABS(F(1) + 0.3D0 / 21.0D0) .LE. 1D-14,
      &         'FRCSTP: THE BAND''S FORCE', NFAIL)
+C     THE SAME STEP BY FRCSTC AND FRCSTR (ONE-BASED 1 X 1 ARRAYS): THE
+C     DENSE CALL'S FORCE, BIT FOR BIT.
+      FD = F(1)
+      F(1) = -1.0D0
+      CALL FRCSTC(HC, 1, ZS, ZP, AP, FRICREG_SPARSE_ONE_BASED,
+     &            IP, II, W, IP, II, WEFF, 0.005D0, 1.0D-12, 50, 0,
+     &            F, ITERS, ICONV, IST)
+      CALL CHK(IST .EQ. FRICREG_OK .AND. ICONV .EQ. 1 .AND.
+     &         F(1) .EQ. FD, 'FRCSTC: FRCSTP''S FORCE', NFAIL)
+      F(1) = -1.0D0
+      CALL FRCSTR(HC, 1, ZS, ZP, AP, FRICREG_SPARSE_ONE_BASED,
+     &            IP, II, W, IP, II, WEFF, 0.005D0, 1.0D-12, 50, 0,
+     &            F, ITERS, ICONV, IST)
+      CALL CHK(IST .EQ. FRICREG_OK .AND. ICONV .EQ. 1 .AND.
+     &         F(1) .EQ. FD, 'FRCSTR: FRCSTP''S FORCE', NFAIL)
+      CALL FRCSTR(HC, 1, ZS, ZP, AP, 0, IP, II, W, IP, II, WEFF,
+     &            0.005D0, 1.0D-12, 50, 0, F, ITERS, ICONV, IST)
+      CALL CHK(IST .EQ. FRICREG_EINVAL, 'FRCSTR: ZERO-BASED, IP(1) = 1',
+     &         NFAIL)
       CALL FRCSTP(HC, 2, ZS, ZP, AP, W, WEFF, 0.005D0, 1.0D-12, 50,
      &            0, F, ITERS, ICONV, IST)
       CALL CHK(IST .EQ. FRICREG_ESIZE, 'FRCSTP M = 2', NFAIL)

@@ -35,12 +35,14 @@
 #include <string.h>
 
 #include "base/error.h"
+#include "base/matrix_input.h"
 #include "base/sparse_factor.h"
 #include "base/sparse_ops.h"
 #include "ctx/ctx_driver.h"
 #include "fricreg_structure.h"
 #include "newton_matrix.h"
 #include "step_newton.h"
+#include "step_pattern.h"
 
 #define SYM_TOL 1e-12 /* |A_ij - A_ji| <= SYM_TOL sqrt(A_ii A_jj), as the context's setters */
 #define DENSE_FALLBACK_MAX 64
@@ -74,12 +76,24 @@ struct step_solver {
     double *f0, *zdot, *afree, *F, *b, *wg, *df;
     struct fr_compliance_pair at_start, at_k, at_t, at_df, at_guess;
     unsigned char *stopped;
-    SuiteSparse_long *next; /* [m] refill's cursor per column */
+    SuiteSparse_long *next;           /* [m] refill's cursor per column */
+    struct fr_step_pattern pw, pweff; /* the compressed inputs' maps (_csr, _csc calls only) */
 };
+
+/* W and W_eff as the caller gave them: dense row-major, or compressed (then dense is NULL). */
+struct step_inputs {
+    const double *W, *Weff;
+    const struct fr_compressed *sw, *sweff;
+};
+
+static int fail_as(fricreg_ctx *ctx, int code, const char *who, const char *what)
+{
+    return fr_error_set(fr_ctx_error(ctx), code, "%s: %s", who, what);
+}
 
 static int fail(fricreg_ctx *ctx, int code, const char *what)
 {
-    return fr_error_set(fr_ctx_error(ctx), code, "solve_step: %s", what);
+    return fail_as(ctx, code, "solve_step", what);
 }
 
 /* A's upper triangle (m x m, row-major) as CHOLMOD's symmetric upper form, the diagonal kept
@@ -348,18 +362,29 @@ static int solve(struct step_solver *s, const double zstart[], double tol, int m
     return isfinite(phi) ? FRICREG_OK : FRICREG_EDIVERGED;
 }
 
-static int allocate(struct step_solver *s, const double W[], const double Weff[])
+/* The upper triangles of the inputs into s->W and s->Weff, their values those of a dense
+ * input (a compressed one's are stored by the caller once checked). */
+static int build_matrices(struct step_solver *s, const struct step_inputs *in)
+{
+    if (in->sw == NULL) {
+        s->W = upper_of(in->W, s->m, &s->cc);
+        s->Weff = upper_of(in->Weff, s->m, &s->cc);
+        return s->W != NULL && s->Weff != NULL ? FRICREG_OK : FRICREG_ENOMEM;
+    }
+    int status = fr_step_pattern_build(&s->pw, in->sw, &s->cc, &s->W);
+    return status == FRICREG_OK ? fr_step_pattern_build(&s->pweff, in->sweff, &s->cc, &s->Weff)
+                                : status;
+}
+
+static int allocate(struct step_solver *s, const struct step_inputs *in)
 {
     size_t m = s->m;
-    if (fr_cholmod_start(&s->cc) != FRICREG_OK)
+    if (fr_cholmod_start(&s->cc) != FRICREG_OK || build_matrices(s, in) != FRICREG_OK)
         return FRICREG_ENOMEM;
-    s->W = upper_of(W, m, &s->cc);
-    s->Weff = upper_of(Weff, m, &s->cc);
     s->block = malloc(VECTORS * m * sizeof *s->block);
     s->stopped = malloc(m);
     s->next = malloc(m * sizeof *s->next);
-    if (s->W == NULL || s->Weff == NULL || s->block == NULL || s->stopped == NULL ||
-        s->next == NULL)
+    if (s->block == NULL || s->stopped == NULL || s->next == NULL)
         return FRICREG_ENOMEM;
     for (size_t k = 0; k < VECTORS; k++)
         s->v[k] = (gsl_vector){.size = m, .stride = 1, .data = s->block + k * m};
@@ -386,21 +411,26 @@ static void release(void *p)
     free(s->block);
     free(s->stopped);
     free(s->next);
+    fr_step_pattern_free(&s->pw);
+    fr_step_pattern_free(&s->pweff);
     fr_cholmod_finish(&s->cc);
     free(s);
 }
 
 /* The solver of the context's previous call when m and the patterns of W and W_eff are its
- * (their values refilled, the analysis kept), else a new one, kept in the context; NULL when
- * out of memory (the context then holds none). A refill that meets another pattern leaves
- * the old solver's values half written: it is dropped either way. */
-static struct step_solver *solver_for(fricreg_ctx *ctx, size_t m, const double W[],
-                                      const double Weff[])
+ * (a dense input's values refilled, the analysis kept), else a new one, kept in the context;
+ * NULL when out of memory (the context then holds none). A compressed input's values are
+ * stored by the caller (store_compressed). A refill that meets another pattern leaves the old
+ * solver's values half written: it is dropped either way. */
+static struct step_solver *solver_for(fricreg_ctx *ctx, size_t m, const struct step_inputs *in)
 {
     struct step_solver *s = fr_ctx_workspace(ctx);
+    if (s != NULL && s->m == m && in->sw != NULL && fr_step_pattern_same(&s->pw, in->sw) &&
+        fr_step_pattern_same(&s->pweff, in->sweff))
+        return s;
     int w_changed = 0, weff_changed = 0;
-    if (s != NULL && s->m == m && refill(s->W, W, m, s->next, &w_changed) &&
-        refill(s->Weff, Weff, m, s->next, &weff_changed)) {
+    if (s != NULL && s->m == m && in->sw == NULL && refill(s->W, in->W, m, s->next, &w_changed) &&
+        refill(s->Weff, in->Weff, m, s->next, &weff_changed)) {
         if (weff_changed)
             s->nm.block.held = 0; /* the factor held is of the old values */
         return s;
@@ -410,12 +440,70 @@ static struct step_solver *solver_for(fricreg_ctx *ctx, size_t m, const double W
     if (s == NULL)
         return NULL;
     s->m = m;
-    if (allocate(s, W, Weff) != FRICREG_OK) {
+    if (allocate(s, in) != FRICREG_OK) {
         release(s);
         return NULL;
     }
     fr_ctx_keep_workspace(ctx, s, release);
     return s;
+}
+
+/* Checks of what every entry point takes alike, in the dense call's order: the vectors and
+ * the outputs NULL, m, then c, tol, max_iter and flags. */
+static int check_arguments(fricreg_ctx *ctx, const char *who, size_t m, const double zdot_start[],
+                           const double zdot_pred[], const double a_pred[], double c, double tol,
+                           int max_iter, int flags, const double f[], const int info[])
+{
+    if (zdot_start == NULL || zdot_pred == NULL || a_pred == NULL || f == NULL || info == NULL)
+        return fail_as(ctx, FRICREG_ENULL, who, "a required array is NULL");
+    if (m != fricreg_ctx_size(ctx))
+        return fr_error_set(fr_ctx_error(ctx), FRICREG_ESIZE,
+                            "%s: m = %zu, the context has %zu contacts", who, m,
+                            fricreg_ctx_size(ctx));
+    if (!isfinite(c) || !isfinite(tol))
+        return fail_as(ctx, FRICREG_ENONFINITE, who, "c or tol is NaN or infinite");
+    if (!(c > 0.0) || !(tol > 0.0) || max_iter < 1 || (flags & ~FRICREG_STEP_PLAIN) != 0)
+        return fail_as(ctx, FRICREG_EINVAL, who,
+                       "needs c > 0, tol > 0, max_iter >= 1, known flags");
+    return FRICREG_OK;
+}
+
+/* W's diagonal against the context's coupling's (to 1e-12 relative); w_ii one of them. */
+static int check_coupling_diagonal(fricreg_ctx *ctx, const char *who, size_t i, double w_ii)
+{
+    const double *wd = fr_ctx_coupling_diagonal(ctx);
+    if (fabs(w_ii - wd[i]) <= SYM_TOL * wd[i])
+        return FRICREG_OK;
+    return fr_error_set(fr_ctx_error(ctx), FRICREG_EINVAL,
+                        "%s: W_%zu%zu = %g, the context's coupling has %g", who, i, i, w_ii, wd[i]);
+}
+
+/* The step on the solver s, its matrices filled and checked. */
+static int run(fricreg_ctx *ctx, struct step_solver *s, const char *who, const double zdot_start[],
+               const double zdot_pred[], const double a_pred[], double c, double tol, int max_iter,
+               int flags, double f[], int info[])
+{
+    size_t m = s->m;
+    s->ctx = ctx;
+    s->c = c;
+    s->z0 = zdot_pred;
+    s->a0 = a_pred;
+    s->mun = fr_ctx_bounds(ctx);
+    memcpy(s->f0, f, m * sizeof *f);
+    int converged = 0, iters = 0;
+    int status = solve(s, zdot_start, tol, max_iter, flags & FRICREG_STEP_PLAIN, &converged,
+                       &iters);
+    if (status == FRICREG_OK) {
+        memcpy(f, s->v[V_FK].data, m * sizeof *f);
+        info[0] = iters;
+        info[1] = converged;
+    } else if (status == FRICREG_EDIVERGED) {
+        fail_as(ctx, status, who, "the residual is not finite");
+    } else if (status == FRICREG_ENOMEM) {
+        fr_ctx_drop_workspace(ctx); /* whatever failed half way is not kept */
+        fail_as(ctx, status, who, "no memory for the dense Newton matrix");
+    }
+    return status;
 }
 
 int fricreg_ctx_solve_step(fricreg_ctx *ctx, size_t m, const double zdot_start[],
@@ -425,18 +513,14 @@ int fricreg_ctx_solve_step(fricreg_ctx *ctx, size_t m, const double zdot_start[]
 {
     if (ctx == NULL)
         return FRICREG_ENULL;
-    if (zdot_start == NULL || zdot_pred == NULL || a_pred == NULL || W == NULL || Weff == NULL ||
-        f == NULL || info == NULL)
+    if (W == NULL || Weff == NULL)
         return fail(ctx, FRICREG_ENULL, "a required array is NULL");
-    if (m != fricreg_ctx_size(ctx))
-        return fr_error_set(fr_ctx_error(ctx), FRICREG_ESIZE,
-                            "solve_step: m = %zu, the context has %zu contacts", m,
-                            fricreg_ctx_size(ctx));
-    if (!isfinite(c) || !isfinite(tol))
-        return fail(ctx, FRICREG_ENONFINITE, "c or tol is NaN or infinite");
-    if (!(c > 0.0) || !(tol > 0.0) || max_iter < 1 || (flags & ~FRICREG_STEP_PLAIN) != 0)
-        return fail(ctx, FRICREG_EINVAL, "needs c > 0, tol > 0, max_iter >= 1, known flags");
-    int status = check_matrix(W, m), status_eff = check_matrix(Weff, m);
+    int status = check_arguments(ctx, "solve_step", m, zdot_start, zdot_pred, a_pred, c, tol,
+                                 max_iter, flags, f, info);
+    if (status != FRICREG_OK)
+        return status;
+    status = check_matrix(W, m);
+    int status_eff = check_matrix(Weff, m);
     if (!all_finite(zdot_start, m) || !all_finite(zdot_pred, m) || !all_finite(a_pred, m) ||
         !all_finite(f, m) || status == FRICREG_ENONFINITE || status_eff == FRICREG_ENONFINITE)
         return fail(ctx, FRICREG_ENONFINITE, "an input array holds NaN or infinity");
@@ -446,34 +530,106 @@ int fricreg_ctx_solve_step(fricreg_ctx *ctx, size_t m, const double zdot_start[]
         return fail(ctx, status,
                     status == FRICREG_ENOTSYM ? "W or W_eff is not symmetric"
                                               : "W or W_eff has a diagonal entry below DBL_MIN");
-
-    const double *wd = fr_ctx_coupling_diagonal(ctx);
     for (size_t i = 0; i < m; i++)
-        if (!(fabs(W[i * m + i] - wd[i]) <= SYM_TOL * wd[i]))
-            return fr_error_set(fr_ctx_error(ctx), FRICREG_EINVAL,
-                                "solve_step: W_%zu%zu = %g, the context's coupling has %g", i, i,
-                                W[i * m + i], wd[i]);
+        if ((status = check_coupling_diagonal(ctx, "solve_step", i, W[i * m + i])) != FRICREG_OK)
+            return status;
 
-    struct step_solver *s = solver_for(ctx, m, W, Weff);
+    struct step_inputs in = {W, Weff, NULL, NULL};
+    struct step_solver *s = solver_for(ctx, m, &in);
     if (s == NULL)
         return fail(ctx, FRICREG_ENOMEM, "no memory");
-    s->ctx = ctx;
-    s->c = c;
-    s->z0 = zdot_pred;
-    s->a0 = a_pred;
-    s->mun = fr_ctx_bounds(ctx);
-    memcpy(s->f0, f, m * sizeof *f);
-    int converged = 0, iters = 0;
-    status = solve(s, zdot_start, tol, max_iter, flags & FRICREG_STEP_PLAIN, &converged, &iters);
+    return run(ctx, s, "solve_step", zdot_start, zdot_pred, a_pred, c, tol, max_iter, flags, f,
+               info);
+}
+
+/* The compressed inputs' values summed, checked as the dense call's and stored in s. */
+static int store_compressed(fricreg_ctx *ctx, struct step_solver *s, const struct step_inputs *in,
+                            const char *who)
+{
+    size_t i = 0, j = 0, ie = 0, je = 0;
+    int status = fr_step_pattern_values(&s->pw, in->sw, s->W, &i, &j);
+    int status_eff = fr_step_pattern_values(&s->pweff, in->sweff, s->Weff, &ie, &je);
+    const char *name = status != FRICREG_OK ? "W" : "W_eff";
     if (status == FRICREG_OK) {
-        memcpy(f, s->v[V_FK].data, m * sizeof *f);
-        info[0] = iters;
-        info[1] = converged;
-    } else if (status == FRICREG_EDIVERGED) {
-        fail(ctx, status, "the residual is not finite");
-    } else if (status == FRICREG_ENOMEM) {
-        fr_ctx_drop_workspace(ctx); /* whatever failed half way is not kept */
-        fail(ctx, status, "no memory for the dense Newton matrix");
+        status = status_eff;
+        i = ie;
+        j = je;
     }
-    return status;
+    long long base = (in->sw->flags & FRICREG_SPARSE_ONE_BASED) ? 1 : 0;
+    if (status == FRICREG_ENOTPSD)
+        return fr_error_set(fr_ctx_error(ctx), status,
+                            "%s: %s(%lld, %lld) is missing or below DBL_MIN", who, name,
+                            (long long)i + base, (long long)i + base);
+    if (status == FRICREG_ENOTSYM)
+        return fr_error_set(fr_ctx_error(ctx), status,
+                            "%s: %s(%lld, %lld) and %s(%lld, %lld) differ: not symmetric", who,
+                            name, (long long)i + base, (long long)j + base, name,
+                            (long long)j + base, (long long)i + base);
+    for (size_t k = 0; k < s->m; k++)
+        if ((status = check_coupling_diagonal(ctx, who, k,
+                                              fr_step_pattern_diagonal(&s->pw, s->W, k))) !=
+            FRICREG_OK)
+            return status;
+    fr_step_pattern_store(&s->pw, s->W);
+    if (fr_step_pattern_store(&s->pweff, s->Weff))
+        s->nm.block.held = 0; /* the factor held is of the old values */
+    return FRICREG_OK;
+}
+
+/* The _csr and _csc entries: the arrays checked as the coupling setters check theirs
+ * (fr_compressed_check), the values as the dense call's. */
+static int solve_step_compressed(fricreg_ctx *ctx, size_t m, int by_columns,
+                                 const double zdot_start[], const double zdot_pred[],
+                                 const double a_pred[], int sparse_flags, const int64_t w_ptr[],
+                                 const int64_t w_ind[], const double w_values[],
+                                 const int64_t weff_ptr[], const int64_t weff_ind[],
+                                 const double weff_values[], double c, double tol, int max_iter,
+                                 int flags, double f[], int info[], const char *who)
+{
+    if (ctx == NULL)
+        return FRICREG_ENULL;
+    int status = check_arguments(ctx, who, m, zdot_start, zdot_pred, a_pred, c, tol, max_iter,
+                                 flags, f, info);
+    if (status != FRICREG_OK)
+        return status;
+    struct fr_compressed sw = {m, m, by_columns, sparse_flags, w_ptr, w_ind, w_values};
+    struct fr_compressed sweff = {m, m, by_columns, sparse_flags, weff_ptr, weff_ind, weff_values};
+    if ((status = fr_compressed_check(&sw, 1, fr_ctx_error(ctx), who)) != FRICREG_OK ||
+        (status = fr_compressed_check(&sweff, 1, fr_ctx_error(ctx), who)) != FRICREG_OK)
+        return status;
+    if (!all_finite(zdot_start, m) || !all_finite(zdot_pred, m) || !all_finite(a_pred, m) ||
+        !all_finite(f, m))
+        return fail_as(ctx, FRICREG_ENONFINITE, who, "an input array holds NaN or infinity");
+
+    struct step_inputs in = {NULL, NULL, &sw, &sweff};
+    struct step_solver *s = solver_for(ctx, m, &in);
+    if (s == NULL)
+        return fail_as(ctx, FRICREG_ENOMEM, who, "no memory");
+    if ((status = store_compressed(ctx, s, &in, who)) != FRICREG_OK)
+        return status;
+    return run(ctx, s, who, zdot_start, zdot_pred, a_pred, c, tol, max_iter, flags, f, info);
+}
+
+int fricreg_ctx_solve_step_csr(fricreg_ctx *ctx, size_t m, const double zdot_start[],
+                               const double zdot_pred[], const double a_pred[], int sparse_flags,
+                               const int64_t w_rowptr[], const int64_t w_colind[],
+                               const double w_values[], const int64_t weff_rowptr[],
+                               const int64_t weff_colind[], const double weff_values[], double c,
+                               double tol, int max_iter, int flags, double f[], int info[])
+{
+    return solve_step_compressed(ctx, m, 0, zdot_start, zdot_pred, a_pred, sparse_flags, w_rowptr,
+                                 w_colind, w_values, weff_rowptr, weff_colind, weff_values, c, tol,
+                                 max_iter, flags, f, info, "solve_step_csr");
+}
+
+int fricreg_ctx_solve_step_csc(fricreg_ctx *ctx, size_t m, const double zdot_start[],
+                               const double zdot_pred[], const double a_pred[], int sparse_flags,
+                               const int64_t w_colptr[], const int64_t w_rowind[],
+                               const double w_values[], const int64_t weff_colptr[],
+                               const int64_t weff_rowind[], const double weff_values[], double c,
+                               double tol, int max_iter, int flags, double f[], int info[])
+{
+    return solve_step_compressed(ctx, m, 1, zdot_start, zdot_pred, a_pred, sparse_flags, w_colptr,
+                                 w_rowind, w_values, weff_colptr, weff_rowind, weff_values, c, tol,
+                                 max_iter, flags, f, info, "solve_step_csc");
 }
