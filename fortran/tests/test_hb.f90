@@ -125,7 +125,8 @@ program test_hb
                     'set_normal_elements')
   call check_status(chain%solve(1.1_c_double, qc), FRICREG_ESIZE, 'q with m columns')
   call check_status(chain%solve(1.1_c_double, qn), FRICREG_OK, 'lift-off solve')
-  call check(maxval(abs(qn(2:7, 1) - q2(2:7, 1))) <= 1e-12_c_double * maxval(abs(q2)), &
+  ! (each solved to Newton's 1e-10 of the scale, along its own continuation in the level)
+  call check(maxval(abs(qn(2:7, 1) - q2(2:7, 1))) <= 1e-9_c_double * maxval(abs(q2)), &
              'kn = 0 is the Jenkins element of mun = mu N0')
   call check_status(chain%set_normal_elements(J2, Jn2, [4.0_c_double], [-0.2_c_double], &
                                               [0.5_c_double], [0.0_c_double]), FRICREG_EINVAL, &
