@@ -724,10 +724,53 @@ int fricreg_hb_continue_level(fricreg_hb *hb, double omega, double level0, doubl
  * the response, reaches rounding. */
 #define LEVEL_START 1e-3
 
+/* Whether the old start's solution q1 at λ = 1 lies on the branch from the linear regime:
+ * with q0 the solution at λ = 0 (every element in its regime of no load: stuck, or closed
+ * under a preload, or open across a gap), the line q0 + λ (q1 − q0) solves (R) at λ = 1e-3 to
+ * Newton's tolerance, so the elements are in that same regime at both ends; a regime is a set
+ * of linear inequalities in λ along the line (|kt (u − w)| <= mu N for some w, N0 + kn g >= 0
+ * or <= 0), so it holds between them, and the line is the branch. Scratch: tan, tn. */
+static int on_linear_branch(fricreg_hb *hb, const char *fn, double omega, int *yes)
+{
+    size_t nq = hb->nq;
+    double *q0 = hb->tan, *q1 = hb->tn, s0, s1;
+    *yes = 0;
+    hb->level = 0.0;
+    int status = fr_hb_solve_at(hb, fn, omega, NULL, 0);
+    if (status != FRICREG_OK)
+        return status;
+    memcpy(q0, hb->qw, nq * sizeof(double));
+    s0 = fr_hb_scale(hb, q0);
+    hb->level = 1.0;
+    if ((status = fr_hb_solve_at(hb, fn, omega, NULL, 0)) != FRICREG_OK)
+        return status;
+    memcpy(q1, hb->qw, nq * sizeof(double));
+    s1 = fr_hb_scale(hb, q1);
+    hb->level = LEVEL_START;
+    for (size_t j = 0; j < nq; j++)
+        hb->qt[j] = q0[j] + LEVEL_START * (q1[j] - q0[j]);
+    if ((status = fr_hb_residual(hb, fn, hb->qt, hb->R, 0)) != FRICREG_OK)
+        return status;
+    /* (R) there is (1 − λ) R(q0) + λ R(q1) when the forces are affine along the line */
+    double r = 0.0, bound = hb->tol *
+                            ((1.0 - LEVEL_START) * s0 + LEVEL_START * s1 + fr_hb_scale(hb, hb->qt));
+    for (size_t j = 0; j < nq; j++)
+        r = fmax(r, fabs(hb->R[j]));
+    *yes = r <= bound;
+    return FRICREG_OK;
+}
+
 int fr_hb_level_start(fricreg_hb *hb, const char *fn, double omega)
 {
+    /* the old start, when its solution is the branch's: its Newton once more to keep it */
+    int linear = 0, status = on_linear_branch(hb, fn, omega, &linear);
+    hb->level = 1.0;
+    if (status == FRICREG_OK && linear)
+        return fr_hb_solve_at(hb, fn, omega, hb->tn, 1);
+    if (status == FRICREG_ENOMEM)
+        return status;
     struct branch b = {.level = 1, .omega = omega, .par = "level"};
-    int status = run(hb, fn, &b, LEVEL_START, 1.0, NULL);
+    status = run(hb, fn, &b, LEVEL_START, 1.0, NULL);
     hb->level = 1.0;
     return status;
 }
