@@ -405,13 +405,16 @@ module fricreg
     procedure :: solve => hb_solve
     procedure :: displacement => hb_displacement
     procedure :: continue => hb_continue
+    procedure :: continue_level => hb_continue_level
     procedure :: points => hb_points
     procedure :: point => hb_point
+    procedure :: point_level => hb_point_level
     procedure :: peak => hb_peak
     procedure :: set_stability => hb_set_stability
     procedure :: stability => hb_stability
     procedure :: bifurcations => hb_bifurcations
     procedure :: bifurcation => hb_bifurcation
+    procedure :: bifurcation_level => hb_bifurcation_level
     procedure :: nma => hb_nma
     procedure :: nma_points => hb_nma_points
     procedure :: nma_point => hb_nma_point
@@ -3738,6 +3741,22 @@ contains
                                                      self%nc * self%rows, q0))
   end function hb_continue
 
+  !> Follow the response at the frequency omega from the excitation level level0 to level1
+  !> (the excitation times λ; fricreg_hb_continue_level), from the guess q0(2H+1, m) at level0
+  !> or, absent, the stuck response. Its statuses; FRICREG_ESIZE.
+  function hb_continue_level(self, omega, level0, level1, q0) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    real(c_double), intent(in) :: omega, level0, level1
+    real(c_double), intent(in), contiguous, optional :: q0(:, :)
+    integer(c_int) :: status
+    status = self%ready('continue_level', 'HB driver')
+    if (status == FRICREG_OK .and. present(q0)) &
+      status = self%hb_shape('continue_level', 'q0', q0, self%nc, self%rows)
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_hb_continue_level(self%ptr, omega, level0, level1, &
+                                                     self%nc * self%rows, q0))
+  end function hb_continue_level
+
   !> Number of points of the last continuation (0 if none).
   integer function hb_points(self)
     class(fricreg_hb_driver), intent(in) :: self
@@ -3758,6 +3777,20 @@ contains
     if (status == FRICREG_OK) status = self%record(fricreg_hb_point(self%ptr, as_size(k - 1), &
                                                      omega, self%n, rms))
   end function hb_point
+
+  !> The excitation level λ of point k (1 <= k <= points()): a level branch's parameter, 1 on
+  !> an Ω branch (fricreg_hb_point_level). FRICREG_EINVAL for k out of range.
+  function hb_point_level(self, k, level) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    integer, intent(in) :: k
+    real(c_double), intent(inout) :: level
+    integer(c_int) :: status
+    status = self%ready('point_level', 'HB driver')
+    if (status == FRICREG_OK .and. k < 1) &
+      status = self%fail(FRICREG_EINVAL, 'point_level: k must be >= 1 (Fortran counts from 1)')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_hb_point_level(self%ptr, as_size(k - 1), level))
+  end function hb_point_level
 
   !> The largest RMS of dof `dof` (1 <= dof <= ndof) along the last continuation's branch,
   !> located between its points (fricreg_hb_peak): its frequency omega and that RMS.
@@ -3839,6 +3872,21 @@ contains
       point = int(k) + 1
     end if
   end function hb_bifurcation
+
+  !> The excitation level λ of bifurcation i (1 <= i <= bifurcations()), 1 on an Ω branch
+  !> (fricreg_hb_bifurcation_level). FRICREG_EINVAL for i out of range.
+  function hb_bifurcation_level(self, i, level) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    integer, intent(in) :: i
+    real(c_double), intent(inout) :: level
+    integer(c_int) :: status
+    status = self%ready('bifurcation_level', 'HB driver')
+    if (status == FRICREG_OK .and. i < 1) &
+      status = self%fail(FRICREG_EINVAL, &
+                         'bifurcation_level: i must be >= 1 (Fortran counts from 1)')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_hb_bifurcation_level(self%ptr, as_size(i - 1), level))
+  end function hb_bifurcation_level
 
   !> The backbone of mode `mode` (1 <= mode <= ndof, by increasing linearized frequency) at
   !> npoints modal amplitudes from a0 to a1 (fricreg_hb_nma: the extended periodic motion

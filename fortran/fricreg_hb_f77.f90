@@ -312,6 +312,30 @@ subroutine frhbgo(h, w0, w1, nq, iguess, q0, stat)
   end if
 end subroutine frhbgo
 
+!> FRHBGL(H, OMEGA, L0, L1, NQ, IGUESS, Q0, STAT): follow the response at the frequency OMEGA
+!> from the excitation level L0 to L1 (the excitation times the level) by continuation; with
+!> IGUESS = 1 from the guess Q0(NC, M) at L0, with 0 from the stuck response (Q0 not read).
+subroutine frhbgl(h, omega, l0, l1, nq, iguess, q0, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  double precision, intent(in) :: omega, l0, l1, q0(*)
+  integer, intent(in) :: nq, iguess
+  integer, intent(out) :: stat
+  if (iguess /= 0 .and. iguess /= 1) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  if (iguess == 1) then
+    stat = int(fricreg_hb_continue_level(fricreg_handle_to_ptr(h), omega, l0, l1, &
+                                         int(nq, c_size_t), q0))
+  else
+    stat = int(fricreg_hb_continue_level(fricreg_handle_to_ptr(h), omega, l0, l1, &
+                                         int(nq, c_size_t)))
+  end if
+end subroutine frhbgl
+
 !> FRHBNP(H, NP, STAT): the number of points NP of the last continuation (0 if none).
 subroutine frhbnp(h, np, stat)
   use fricreg_c
@@ -340,6 +364,23 @@ subroutine frhbpt(h, k, omega, ndof, rms, stat)
   stat = int(fricreg_hb_point(fricreg_handle_to_ptr(h), int(k - 1, c_size_t), omega, &
                               int(ndof, c_size_t), rms))
 end subroutine frhbpt
+
+!> FRHBPL(H, K, LEVEL, STAT): the excitation level LEVEL of point K (1 <= K <= NP): a level
+!> branch's parameter, 1 on a frequency branch.
+subroutine frhbpl(h, k, level, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: k
+  double precision, intent(inout) :: level
+  integer, intent(out) :: stat
+  if (k < 1) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  stat = int(fricreg_hb_point_level(fricreg_handle_to_ptr(h), int(k - 1, c_size_t), level))
+end subroutine frhbpl
 
 !> FRHBPK(H, IDOF, OMEGA, RMS, STAT): the largest RMS of dof IDOF (1 <= IDOF <= NDOF) along
 !> the last continuation's branch, located between its points, and its frequency OMEGA.
@@ -430,6 +471,24 @@ subroutine frhbbf(h, i, itype, omega, k, ndof, rms, stat)
     k = int(kp) + 1
   end if
 end subroutine frhbbf
+
+!> FRHBBL(H, I, LEVEL, STAT): the excitation level LEVEL of bifurcation I (1 <= I <= NB), 1 on
+!> a frequency branch.
+subroutine frhbbl(h, i, level, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: i
+  double precision, intent(inout) :: level
+  integer, intent(out) :: stat
+  if (i < 1) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  stat = int(fricreg_hb_bifurcation_level(fricreg_handle_to_ptr(h), int(i - 1, c_size_t), &
+                                          level))
+end subroutine frhbbl
 
 !> FRHBNM(H, MODE, IDAMP, A0, A1, NP, STAT): the backbone of mode MODE (1 <= MODE <= NDOF, by
 !> increasing linearized frequency) at NP modal amplitudes from A0 to A1; IDAMP one of

@@ -340,9 +340,23 @@ FRICREG_API int fricreg_hb_set_continuation(fricreg_hb *hb, double ds, double ds
                                             size_t max_points);
 
 /** Solve the HB equations (R) at the excitation frequency omega by Newton's method with a
- *  backtracking line search on |R|², from the guess q0 or, if q0 is NULL, from the response
- *  with every element stuck (then, should that fail, with every element slipping freely).
- *  The solution is kept for fricreg_hb_displacement.
+ *  backtracking line search on |R|², from the guess q0 or, if q0 is NULL, the solution reached
+ *  continuously from the linear regime along the branch in the excitation level λ at omega
+ *  (on an S-curve in λ, the lower branch). First the start until 1.6: Newton at λ = 0 and at
+ *  λ = 1 from the response with every element stuck (then, should that fail, with every
+ *  element slipping freely); if the line between the two solutions solves (R) at λ = 1e-3
+ *  (Newton's tolerance), every element keeps to one linear regime along it (stuck, closed or
+ *  open: each a set of inequalities linear in λ), the line is the branch and its end is
+ *  returned. Otherwise fricreg_hb_continue_level's continuation from λ = 1e-3 to 1, its points
+ *  not stored (the branch of fricreg_hb_continue and its bifurcations are kept), and should
+ *  that fail, the start until 1.6's solution at λ = 1 if it had one. To have the start until
+ *  1.6 alone, pass a zero q0 (Newton's first step from zero, where the elements are stuck, is
+ *  the stuck response). The solution is kept for fricreg_hb_displacement and, with stability
+ *  on (fricreg_hb_set_stability), its stability for fricreg_hb_point_stability with
+ *  FRICREG_HB_SOLUTION. Cost without a guess: three Newton solves on the linear branch;
+ *  otherwise the continuation's points (75 to 170 on bench/hb_level.c's gap pair, 30 to 200
+ *  times the old start's time), each a few Newton iterations at the one factorization of
+ *  omega; Hill's method at the solution only.
  *
  *  omega        excitation circular frequency Ω > 0 (finite), 1/time (rad/s).
  *  nq           must equal m (2H + 1), or 2 m (2H + 1) with fricreg_hb_set_normal_elements.
@@ -513,14 +527,47 @@ FRICREG_API int fricreg_hb_nma_point(fricreg_hb *hb, size_t i, double *amplitude
 FRICREG_API int fricreg_hb_continue(fricreg_hb *hb, double omega0, double omega1, size_t nq,
                                     const double q0[]);
 
-/** Number of points stored by the last fricreg_hb_continue; 0 if none or hb is NULL. Returns
- *  that number, not a status. Since 1.6. */
+/** Follow the periodic response at the fixed excitation frequency omega from the excitation
+ *  level λ = level0 to level1, the excitation being λ times fricreg_hb_set_excitation's (p_c,
+ *  p_s): the S-curve of the amplitude against the level. The engine of fricreg_hb_continue
+ *  with λ as the continued parameter in place of Ω: (R) is linear in the load, so
+ *  R_λ = −J D_h^-1 P_h (one factorization of every D_h at omega serves the whole branch), the
+ *  scaled unknowns (q/qs, λ/|level1 − level0|), the same step control, turning points in λ
+ *  passed and located. Each point's RMS and unknowns are stored as fricreg_hb_continue's
+ *  (replacing those of an earlier call): fricreg_hb_point gives its omega (the same for every
+ *  point) and RMS, fricreg_hb_point_level its λ; fricreg_hb_point_stability its stability
+ *  (stability on); the last point, at level1, is the one fricreg_hb_displacement gives.
+ *  Bifurcations are located as along an Ω branch (fricreg_hb_bifurcation), FRICREG_HB_TP
+ *  then meaning a fold in λ (the tangent's λ component changes sign), and
+ *  fricreg_hb_bifurcation_level gives their λ. fricreg_hb_peak does not apply to such a branch.
+ *  Later solves use the excitation as set (λ = 1).
+ *
+ *  omega           excitation frequency Ω > 0 (finite), rad/s.
+ *  level0, level1  the levels' ends, >= 0 (finite), level0 != level1 (either order),
+ *                  nondimensional.
+ *  nq, q0          as fricreg_hb_solve (q0 the guess at level0, or NULL: the stuck guess,
+ *                  then the slipping one, at level0).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb is NULL; FRICREG_EINVAL if omega <= 0, level0 or
+ *  level1 < 0, they are equal, or the elements were not set; FRICREG_ENONFINITE if omega,
+ *  level0, level1 or some q0[j] is NaN or infinite, or an intermediate overflows (as
+ *  fricreg_hb_solve); FRICREG_ESIZE if nq is not fricreg_hb_solve's; FRICREG_ESINGULAR,
+ *  FRICREG_EWORK, FRICREG_EINTEGRATOR as fricreg_hb_solve at level0; FRICREG_EINTEGRATOR if the
+ *  step fell below ds_min; FRICREG_EWORK if max_points were stored before level1, or the
+ *  branch doubled back on itself; FRICREG_ENOMEM; the points reached kept on failure, all as
+ *  fricreg_hb_continue. Allocates as fricreg_hb_continue. Since 1.7 (FRICREG_1.7). */
+FRICREG_API int fricreg_hb_continue_level(fricreg_hb *hb, double omega, double level0,
+                                          double level1, size_t nq, const double q0[]);
+
+/** Number of points stored by the last fricreg_hb_continue or fricreg_hb_continue_level; 0 if
+ *  none or hb is NULL. Returns that number, not a status. Since 1.6. */
 FRICREG_API size_t fricreg_hb_points(const fricreg_hb *hb);
 
 /** One stored continuation point: its frequency and the RMS of each dof.
  *
  *  k           point index, 0 <= k < fricreg_hb_points(hb), in the order of the branch.
- *  omega       out: its excitation frequency Ω, rad/s.
+ *  omega       out: its excitation frequency Ω, rad/s (on a branch of
+ *              fricreg_hb_continue_level, its fixed Ω: fricreg_hb_point_level gives λ).
  *  ndof        must equal the driver's degrees of freedom.
  *  rms[ndof]   out: each dof's RMS over one period (fricreg_hb_continue), displacement units.
  *
@@ -528,6 +575,16 @@ FRICREG_API size_t fricreg_hb_points(const fricreg_hb *hb);
  *  out of range; FRICREG_ESIZE if ndof is not the driver's. Since 1.6. */
 FRICREG_API int fricreg_hb_point(fricreg_hb *hb, size_t k, double *omega, size_t ndof,
                                  double rms[]);
+
+/** The excitation level λ of a stored continuation point: the continued parameter of
+ *  fricreg_hb_continue_level's branch, 1 on fricreg_hb_continue's.
+ *
+ *  k      point index, 0 <= k < fricreg_hb_points(hb).
+ *  level  out: λ, nondimensional (the excitation is λ (p_c, p_s)).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb or level is NULL; FRICREG_EINVAL if k is out of
+ *  range. Since 1.7 (FRICREG_1.7). */
+FRICREG_API int fricreg_hb_point_level(fricreg_hb *hb, size_t k, double *level);
 
 /** The largest RMS of one dof along the last fricreg_hb_continue's branch, located between the
  *  stored points rather than sampled at them: the stored point of the largest RMS and its two
@@ -548,8 +605,9 @@ FRICREG_API int fricreg_hb_point(fricreg_hb *hb, size_t k, double *omega, size_t
  *  of range, or there is no branch (no fricreg_hb_continue yet, none of its points stored, or
  *  the model or elements changed since; after a failed continuation the points reached
  *  serve); FRICREG_EWORK if a corrector did not converge within the Newton settings'
- *  iterations; FRICREG_ESINGULAR, FRICREG_EINTEGRATOR, FRICREG_ENOMEM as fricreg_hb_solve.
- *  Since 1.7 (FRICREG_1.7). */
+ *  iterations; FRICREG_ESINGULAR, FRICREG_EINTEGRATOR, FRICREG_ENOMEM as fricreg_hb_solve;
+ *  FRICREG_EINVAL if the branch is fricreg_hb_continue_level's (in λ, not Ω). Since 1.7
+ *  (FRICREG_1.7). */
 FRICREG_API int fricreg_hb_peak(fricreg_hb *hb, size_t dof, double *omega, double *rms);
 
 /** Largest number of Fourier coefficients ndof (2H + 1) of Hill's method
@@ -636,7 +694,8 @@ FRICREG_API size_t fricreg_hb_bifurcations(const fricreg_hb *hb);
  *
  *  i          index, 0 <= i < fricreg_hb_bifurcations(hb).
  *  type       out: an enum fricreg_hb_bifurcation_type.
- *  omega      out: its excitation frequency, rad/s.
+ *  omega      out: its excitation frequency, rad/s (on a branch of fricreg_hb_continue_level,
+ *             its fixed Ω: fricreg_hb_bifurcation_level gives λ).
  *  point      out, or NULL: the index k of the stored point before it (it lies between k and
  *             k + 1).
  *  ndof       must equal the driver's degrees of freedom.
@@ -647,6 +706,18 @@ FRICREG_API size_t fricreg_hb_bifurcations(const fricreg_hb *hb);
  *  Since 1.7 (FRICREG_1.7). */
 FRICREG_API int fricreg_hb_bifurcation(fricreg_hb *hb, size_t i, int *type, double *omega,
                                        size_t *point, size_t ndof, double rms[]);
+
+/** The excitation level λ of a located bifurcation (fricreg_hb_bifurcation): where it lies
+ *  on a branch of fricreg_hb_continue_level (located to 1e-9 of the chord, as Ω is along an Ω
+ *  branch; at a fold in λ, FRICREG_HB_TP, λ is stationary and far better); 1 on
+ *  fricreg_hb_continue's.
+ *
+ *  i      index, 0 <= i < fricreg_hb_bifurcations(hb).
+ *  level  out: λ, nondimensional.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb or level is NULL; FRICREG_EINVAL if i is out of
+ *  range. Since 1.7 (FRICREG_1.7). */
+FRICREG_API int fricreg_hb_bifurcation_level(fricreg_hb *hb, size_t i, double *level);
 
 /** Status of the last failed call on hb. Returns that code, or FRICREG_OK if none (or hb
  *  NULL). A successful call does not clear it. Since 1.6. */

@@ -580,6 +580,29 @@ if "$sim" $hb --max-points 5 >"$d/five.json" 2>"$d/err" || [ $? -ne 1 ] || [ -s 
         ! grep -q "5 points stored before" "$d/err"; then
     echo "FAIL: hb --max-points 5: $(cat "$d/five.json" "$d/err")"; fails=$((fails + 1))
 fi
+# --continue-in level: the same oscillator at Omega = 1.2, the level L from 0.5 to 2: linear,
+# every row's RMS L times the closed form's at Omega = 1.2 within 1e-8; the summary's peak the
+# last point's (level 2); the frequency options do not apply, the level's are required.
+lv="hb --mass $d/M.mtx --stiffness $d/K.mtx --rayleigh 0,0.02 --excitation $d/F.txt --jenkins $d/J.mtx --jenkins-params $d/P.txt --harmonics 3 --continue-in level --omega 1.2"
+total=$((total + 1))
+"$sim" $lv --level-start 0.5 --level-end 2 --output frf >"$d/level.csv" 2>"$d/err"
+if [ "$(head -n 1 "$d/level.csv")" != "level,rms_1,stable,bifurcation" ] || ! awk -F, 'NR > 1 { l = $1; w = 1.2; a = 4.5 - 2 * w * w; c = 0.06 * w
+        r = l * 0.5 / sqrt(a * a + c * c) / sqrt(2); e = ($2 - r) / r; if (e < 0) e = -e; if (e > big) big = e; rows++
+        if ($3 != "1" || $4 != "") bad++ }
+        END { exit !(rows >= 3 && big < 1e-8 && l == 2 && !bad) }' "$d/level.csv"; then
+    echo "FAIL: hb --continue-in level against the linear closed form: $(head -n 3 "$d/level.csv") $(cat "$d/err")"; fails=$((fails + 1))
+fi
+total=$((total + 1))
+"$sim" $lv --level-start 0.5 --level-end 2 >"$d/level.json" 2>"$d/err"
+if ! grep -q '"continue_in": "level", "omega": 1.2, "level_start": 0.5, "level_end": 2,' "$d/level.json" ||
+        ! grep -q '"level_reached": 2, "peaks": "sampled"' "$d/level.json" || ! grep -q '"peak_level": 2}' "$d/level.json"; then
+    echo "FAIL: hb --continue-in level summary: $(cat "$d/level.json" "$d/err")"; fails=$((fails + 1))
+fi
+expect_usage_error "^fricreg-sim: --level-start: missing" $lv --level-end 2
+expect_usage_error "^fricreg-sim: --level-end: equals --level-start" $lv --level-start 1 --level-end 1
+expect_usage_error "^fricreg-sim: --omega-start: applies to --continue-in omega" $lv --level-start 0.5 --level-end 2 --omega-start 1
+expect_usage_error "^fricreg-sim: --omega: applies to --continue-in level" $hb --omega 1.2
+expect_usage_error "^fricreg-sim: --level-start: must be >= 0" $lv --level-start -1 --level-end 2
 # Beyond the dense driver's 4096 dofs, the files passed sparse: 5000 copies of that oscillator,
 # uncoupled, the element on dof 1 only, every dof forced alike; dof 1 peaks as above, within
 # the branch's resolution (1 %): beyond 256 dofs the summary's peaks are the largest points'.

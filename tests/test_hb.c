@@ -427,9 +427,12 @@ START_TEST(bad_input)
     double q0[14] = {0};
     q0[3] = INFINITY;
     ck_assert_int_eq(fricreg_hb_solve(hb, 1.0, nq, q0, q), FRICREG_ENONFINITE);
-    /* Newton with one iteration cannot reach a slipping solution from either guess */
+    /* Newton with one iteration cannot reach a slipping solution from the stuck response (a
+     * zero guess's first step): nor, then, from the guesses the level's continuation falls
+     * back on */
     ck_assert_int_eq(fricreg_hb_set_newton(hb, 1e-10, 1), FRICREG_OK);
-    ck_assert_int_eq(fricreg_hb_solve(hb, 1.05, nq, NULL, q), FRICREG_EWORK);
+    double zero[14] = {0};
+    ck_assert_int_eq(fricreg_hb_solve(hb, 1.05, nq, zero, q), FRICREG_EWORK);
     for (int i = 0; i < 14; i++)
         ck_assert_double_eq(q[i], SENTINEL);
     ck_assert_int_eq(fricreg_hb_displacement(hb, 3, 7, x), FRICREG_EINVAL);

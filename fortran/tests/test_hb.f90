@@ -17,7 +17,7 @@ program test_hb
   type(fricreg_hb_driver) :: hb, chain
   type(c_ptr) :: p
   real(c_double), parameter :: w = 1.2_c_double
-  real(c_double) :: q(7, 1), x(7, 1), d, c, rms(1), omega, big, qc(7, 1), q2(7, 1), bad(5, 1)
+  real(c_double) :: lev, q(7, 1), x(7, 1), d, c, rms(1), omega, big, qc(7, 1), q2(7, 1), bad(5, 1)
   real(c_double) :: M2(2, 2), K2(2, 2), J2(1, 2), Jrow(2), Jn2(1, 2), qn(7, 2), pw, pr
   integer :: k, btype, bpoint
   real(c_double) :: mu
@@ -73,6 +73,21 @@ program test_hb
   call check_status(hb%stability(-1, stable, mu), FRICREG_EINVAL, 'stability of k = -1')
   call check(hb%bifurcations() == 0, 'no bifurcation on a linear branch')
   call check_status(hb%bifurcation(1, btype, omega, bpoint, rms), FRICREG_EINVAL, 'bifurcation 1 of 0')
+  call check_status(hb%bifurcation_level(1, lev), FRICREG_EINVAL, 'bifurcation_level 1 of 0')
+  ! the branch in the level at w: linear, every point's RMS lambda 0.5/(sqrt(2) |d + i c|)
+  call check_status(hb%continue_level(w, 0.5_c_double, 2.0_c_double), FRICREG_OK, 'continue_level')
+  d = 4.5_c_double - 2.0_c_double * w * w
+  c = 0.06_c_double * w
+  big = 0.0_c_double
+  do k = 1, hb%points()
+    call check_status(hb%point(k, omega, rms), FRICREG_OK, 'level point')
+    call check_status(hb%point_level(k, lev), FRICREG_OK, 'point_level')
+    big = max(big, abs(rms(1) * sqrt(2.0_c_double) * sqrt(d * d + c * c) / (0.5_c_double * lev) &
+                       - 1.0_c_double))
+  end do
+  call check(big < 1e-9_c_double .and. omega == w .and. lev == 2.0_c_double, &
+             'RMS along the level branch against the closed form')
+  call check_status(hb%point_level(0, lev), FRICREG_EINVAL, 'point_level 0')
 
   ! errors: Fortran's shape checks, C's refusals, each with a message
   call check_status(hb%solve(w, bad), FRICREG_ESIZE, 'q of the wrong shape')
@@ -125,7 +140,8 @@ program test_hb
                     'set_normal_elements')
   call check_status(chain%solve(1.1_c_double, qc), FRICREG_ESIZE, 'q with m columns')
   call check_status(chain%solve(1.1_c_double, qn), FRICREG_OK, 'lift-off solve')
-  call check(maxval(abs(qn(2:7, 1) - q2(2:7, 1))) <= 1e-12_c_double * maxval(abs(q2)), &
+  ! (each solved to Newton's 1e-10 of the scale, along its own continuation in the level)
+  call check(maxval(abs(qn(2:7, 1) - q2(2:7, 1))) <= 1e-9_c_double * maxval(abs(q2)), &
              'kn = 0 is the Jenkins element of mun = mu N0')
   call check_status(chain%set_normal_elements(J2, Jn2, [4.0_c_double], [-0.2_c_double], &
                                               [0.5_c_double], [0.0_c_double]), FRICREG_EINVAL, &

@@ -1,7 +1,9 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* hb.c — `fricreg-sim hb`: the frequency response of a linear structure with Jenkins, Iwan or
  * lift-off elements (jenkins_input.h) by harmonic balance (fricreg_hb.h) from Matrix Market
- * files, continued in the excitation frequency from --omega-start to --omega-end, each point's
+ * files, continued in the excitation frequency from --omega-start to --omega-end (or, with
+ * --continue-in level, in the excitation level from --level-start to --level-end at --omega),
+ * each point's
  * stability by Hill's method (fricreg_hb_set_stability, where allowed); a JSON summary (per dof
  * the peak RMS and its frequency, the located bifurcations) or a CSV row per continuation point
  * (and per bifurcation) on stdout. Every bad option or file is one line on stderr naming it, exit 2, nothing on stdout;
@@ -18,18 +20,23 @@
 #include "jenkins_input.h"
 
 enum { HB_SUMMARY, HB_FRF };
+enum { HB_IN_OMEGA, HB_IN_LEVEL };
 /* Up to this many dofs the summary's peaks are located (fricreg_hb_peak: 10 to 20 corrector
  * solves each); beyond, the largest stored point's, so that a large model's summary costs no
  * more than its continuation. */
 enum { HB_LOCATE_MAX = 256 };
 static const struct cli_word hb_outputs[] = {{"summary", HB_SUMMARY}, {"frf", HB_FRF}, {NULL, 0}};
+static const struct cli_word hb_parameters[] = {{"omega", HB_IN_OMEGA},
+                                                {"level", HB_IN_LEVEL},
+                                                {NULL, 0}};
 
 struct hb_options {
     struct cli_hb_model_options model; /* the matrices and elements (hb_model.h) */
     const char *excitation;
     int harmonics, output, omega_start_given, omega_end_given, newton_max;
-    int max_points;
+    int max_points, continue_in, omega_given, level_start_given, level_end_given;
     double omega_start, omega_end, newton_tol, ds, ds_min, ds_max;
+    double omega, level_start, level_end; /* --continue-in level */
 };
 
 /* The model (hb_model.h: its matrices passed sparse to the driver, nothing densified) and the
@@ -56,6 +63,25 @@ static int check_options(const struct hb_options *o)
         return status;
     if (o->excitation == NULL)
         return cli_usage_error("--excitation", "missing (a file is required)");
+    if (o->continue_in == HB_IN_LEVEL) {
+        if (o->omega_start_given || o->omega_end_given)
+            return cli_usage_error(o->omega_start_given ? "--omega-start" : "--omega-end",
+                                   "applies to --continue-in omega (the level's branch is at "
+                                   "--omega)");
+        if (!o->omega_given)
+            return cli_usage_error("--omega", "missing (--continue-in level)");
+        if (!o->level_start_given || !o->level_end_given)
+            return cli_usage_error(o->level_start_given ? "--level-end" : "--level-start",
+                                   "missing (--continue-in level)");
+        if (o->level_end == o->level_start)
+            return cli_usage_error("--level-end", "equals --level-start: no branch to follow");
+        return 0;
+    }
+    if (o->omega_given || o->level_start_given || o->level_end_given)
+        return cli_usage_error(o->omega_given         ? "--omega"
+                               : o->level_start_given ? "--level-start"
+                                                      : "--level-end",
+                               "applies to --continue-in level");
     if (!o->omega_start_given)
         return cli_usage_error("--omega-start", "missing");
     if (!o->omega_end_given)
@@ -92,6 +118,21 @@ static size_t hb_table(struct hb_options *o, struct cli_option table[])
          .dflt = ""},
         {"--omega-end", CLI_POSITIVE, .slot = &o->omega_end, .given = &o->omega_end_given,
          .meta = "W1", .help = "excitation frequency it ends at (required)", .dflt = ""},
+        {"--continue-in", CLI_CHOICE, .slot = &o->continue_in, .words = hb_parameters,
+         .help = "the continued parameter: the excitation frequency, or the excitation level "
+                 "(the excitation times a factor) at the fixed --omega"},
+        {"--omega", CLI_POSITIVE, .slot = &o->omega, .given = &o->omega_given, .meta = "W",
+         .help = "the excitation frequency of the level's branch (required with --continue-in "
+                 "level)",
+         .dflt = ""},
+        {"--level-start", CLI_NONNEGATIVE, .slot = &o->level_start, .given = &o->level_start_given,
+         .meta = "L0",
+         .help = "excitation level the level's branch starts at (required with --continue-in "
+                 "level)",
+         .dflt = ""},
+        {"--level-end", CLI_NONNEGATIVE, .slot = &o->level_end, .given = &o->level_end_given,
+         .meta = "L1", .help = "excitation level it ends at (required with --continue-in level)",
+         .dflt = ""},
         {"--newton-tol", CLI_POSITIVE, .slot = &o->newton_tol, .meta = "TOL",
          .help = "Newton's tolerance at each point"},
         {"--newton-max", CLI_WHOLE, .slot = &o->newton_max, .lo = 1, .hi = 1000, .meta = "N",
@@ -108,7 +149,9 @@ static size_t hb_table(struct hb_options *o, struct cli_option table[])
          .help = "a JSON summary (each dof's peak RMS and its frequency, the bifurcations), or the "
                  "frequency response: a CSV row omega,rms_1,...,rms_n,stable,bifurcation per "
                  "point (stable 1/0 by Hill's method where ndof (2H + 1) <= 1024, else empty), "
-                 "and a row at each located bifurcation labelled TP, BP, PD or NS"}};
+                 "and a row at each located bifurcation labelled TP, BP, PD or NS; with "
+                 "--continue-in level the first column is the level and the summary's peaks "
+                 "are the largest points' (peak_level)"}};
     return cli_copy_rows(table, opts, sizeof opts / sizeof opts[0]);
 }
 
@@ -152,8 +195,10 @@ static int set_model(const struct hb_options *o, const struct hb_model *md, fric
     return 0;
 }
 
-/* The branch's points: omega[k] and rms[k n + i] of dof i, into arrays the caller frees. */
-static int collect(fricreg_hb *hb, size_t n, size_t *npoints, double **omega, double **rms)
+/* The branch's points: their parameter omega[k] (Ω, or a level branch's λ) and rms[k n + i]
+ * of dof i, into arrays the caller frees. */
+static int collect(fricreg_hb *hb, int level, size_t n, size_t *npoints, double **omega,
+                   double **rms)
 {
     size_t K = fricreg_hb_points(hb);
     *omega = malloc((K > 0 ? K : 1) * sizeof **omega);
@@ -161,7 +206,8 @@ static int collect(fricreg_hb *hb, size_t n, size_t *npoints, double **omega, do
     if (*omega == NULL || *rms == NULL)
         return cli_usage_error("hb", "out of memory");
     for (size_t k = 0; k < K; k++)
-        if (fricreg_hb_point(hb, k, &(*omega)[k], n, &(*rms)[k * n]) != FRICREG_OK)
+        if (fricreg_hb_point(hb, k, &(*omega)[k], n, &(*rms)[k * n]) != FRICREG_OK ||
+            (level && fricreg_hb_point_level(hb, k, &(*omega)[k]) != FRICREG_OK))
             return cli_usage_error("hb", fricreg_hb_errmsg(hb));
     *npoints = K;
     return 0;
@@ -190,13 +236,13 @@ static void write_row(FILE *out, size_t n, double omega, const double rms[], int
 
 /* The points, each with its stability (when the driver computed it), and after point k a row
  * inserted at each bifurcation located between points k and k + 1 (stable empty). */
-static int write_frf(fricreg_hb *hb, FILE *out, size_t n, size_t K, const double omega[],
+static int write_frf(fricreg_hb *hb, FILE *out, int level, size_t n, size_t K, const double omega[],
                      const double rms[])
 {
     double *brms = malloc((n ? n : 1) * sizeof *brms);
     if (brms == NULL)
         return cli_usage_error("hb", "out of memory");
-    fprintf(out, "omega");
+    fprintf(out, level ? "level" : "omega");
     for (size_t i = 0; i < n; i++)
         fprintf(out, ",rms_%zu", i + 1);
     fprintf(out, ",stable,bifurcation\n");
@@ -211,7 +257,8 @@ static int write_frf(fricreg_hb *hb, FILE *out, size_t n, size_t K, const double
             int type = 0;
             double bw = 0.0;
             size_t at = 0;
-            if (fricreg_hb_bifurcation(hb, b, &type, &bw, &at, n, brms) != FRICREG_OK || at != k)
+            if (fricreg_hb_bifurcation(hb, b, &type, &bw, &at, n, brms) != FRICREG_OK || at != k ||
+                (level && fricreg_hb_bifurcation_level(hb, b, &bw) != FRICREG_OK))
                 break;
             write_row(out, n, bw, brms, -1, bifurcation_name(type));
         }
@@ -221,7 +268,7 @@ static int write_frf(fricreg_hb *hb, FILE *out, size_t n, size_t K, const double
 }
 
 /* The located bifurcations as the summary's JSON array. */
-static int write_bifurcations(fricreg_hb *hb, FILE *out, size_t n)
+static int write_bifurcations(fricreg_hb *hb, FILE *out, int level, size_t n)
 {
     double *brms = malloc((n ? n : 1) * sizeof *brms);
     if (brms == NULL)
@@ -230,10 +277,14 @@ static int write_bifurcations(fricreg_hb *hb, FILE *out, size_t n)
     for (size_t b = 0; b < fricreg_hb_bifurcations(hb); b++) {
         int type = 0;
         double bw = 0.0;
-        if (fricreg_hb_bifurcation(hb, b, &type, &bw, NULL, n, brms) != FRICREG_OK)
+        double lv = 1.0;
+        if (fricreg_hb_bifurcation(hb, b, &type, &bw, NULL, n, brms) != FRICREG_OK ||
+            fricreg_hb_bifurcation_level(hb, b, &lv) != FRICREG_OK)
             continue;
-        fprintf(out, "%s{\"omega\": %.17g, \"type\": \"%s\", \"dof_rms\": [", b ? ", " : "", bw,
-                bifurcation_name(type));
+        fprintf(out, "%s{\"omega\": %.17g, ", b ? ", " : "", bw);
+        if (level)
+            fprintf(out, "\"level\": %.17g, ", lv);
+        fprintf(out, "\"type\": \"%s\", \"dof_rms\": [", bifurcation_name(type));
         for (size_t i = 0; i < n; i++)
             fprintf(out, "%s%.17g", i ? ", " : "", brms[i]);
         fprintf(out, "]}");
@@ -246,11 +297,11 @@ static int write_bifurcations(fricreg_hb *hb, FILE *out, size_t n)
 /* Each dof's peak into peak_omega[n], peak_rms[n]: located by fricreg_hb_peak up to
  * HB_LOCATE_MAX dofs, else the largest stored point's. 0, or CLI_EXIT_RUN after a line on
  * stderr (a corrector that failed in the location). */
-static int peaks(fricreg_hb *hb, size_t n, size_t K, const double omega[], const double rms[],
-                 double peak_omega[], double peak_rms[])
+static int peaks(fricreg_hb *hb, int locate, size_t n, size_t K, const double omega[],
+                 const double rms[], double peak_omega[], double peak_rms[])
 {
     for (size_t i = 0; i < n; i++) {
-        if (n <= HB_LOCATE_MAX) {
+        if (locate && n <= HB_LOCATE_MAX) {
             if (fricreg_hb_peak(hb, i, &peak_omega[i], &peak_rms[i]) == FRICREG_OK)
                 continue;
             fprintf(stderr, "fricreg-sim: hb: the peak of dof %zu: %s\n", i + 1,
@@ -272,20 +323,29 @@ static void write_summary(fricreg_hb *hb, FILE *out, const struct hb_options *o,
                           const double peak_omega[], const double peak_rms[], double cpu)
 {
     size_t n = md->n;
-    fprintf(out,
-            "{\"command\": \"hb\", \"ndof\": %zu, \"elements\": %zu, \"harmonics\": %d, "
-            "\"omega_start\": %.17g, \"omega_end\": %.17g, \"points\": %zu",
-            n, md->m, o->harmonics, o->omega_start, o->omega_end, K);
+    int level = o->continue_in == HB_IN_LEVEL;
+    fprintf(out, "{\"command\": \"hb\", \"ndof\": %zu, \"elements\": %zu, \"harmonics\": %d, ", n,
+            md->m, o->harmonics);
+    if (level)
+        fprintf(out,
+                "\"continue_in\": \"level\", \"omega\": %.17g, \"level_start\": %.17g, "
+                "\"level_end\": %.17g, \"points\": %zu",
+                o->omega, o->level_start, o->level_end, K);
+    else
+        fprintf(out, "\"omega_start\": %.17g, \"omega_end\": %.17g, \"points\": %zu",
+                o->omega_start, o->omega_end, K);
     fprintf(out, ", \"element_kind\": \"%s\"", cli_element_kind_name(&md->el));
     if (md->el.kind == CLI_ELEMENTS_IWAN)
         fprintf(out, ", \"sliders_per_element\": %zu", md->el.ns);
-    fprintf(out, ", \"omega_reached\": %.17g, \"peaks\": \"%s\", \"dofs\": [",
-            K > 0 ? omega[K - 1] : o->omega_start, n <= HB_LOCATE_MAX ? "located" : "sampled");
+    fprintf(out, ", \"%s_reached\": %.17g, \"peaks\": \"%s\", \"dofs\": [",
+            level ? "level" : "omega",
+            K > 0 ? omega[K - 1] : (level ? o->level_start : o->omega_start),
+            !level && n <= HB_LOCATE_MAX ? "located" : "sampled");
     for (size_t i = 0; i < n; i++)
-        fprintf(out, "%s{\"dof\": %zu, \"peak_rms\": %.17g, \"peak_omega\": %.17g}", i ? ", " : "",
-                i + 1, peak_rms[i], peak_omega[i]);
+        fprintf(out, "%s{\"dof\": %zu, \"peak_rms\": %.17g, \"peak_%s\": %.17g}", i ? ", " : "",
+                i + 1, peak_rms[i], level ? "level" : "omega", peak_omega[i]);
     fprintf(out, "]");
-    write_bifurcations(hb, out, n);
+    write_bifurcations(hb, out, level, n);
     fprintf(out, ", \"cpu_seconds\": %.6f}\n", cpu);
 }
 
@@ -299,7 +359,10 @@ static int run_hb(fricreg_hb *hb, const struct hb_options *o, const struct hb_mo
     if (md->n * (2 * (size_t)o->harmonics + 1) <= FRICREG_HB_MAX_HILL &&
         fricreg_hb_set_stability(hb, 1) != FRICREG_OK)
         return cli_usage_error("hb", fricreg_hb_errmsg(hb));
-    int status = fricreg_hb_continue(hb, o->omega_start, o->omega_end, nq, NULL);
+    int level = o->continue_in == HB_IN_LEVEL;
+    int status = level ? fricreg_hb_continue_level(hb, o->omega, o->level_start, o->level_end, nq,
+                                                   NULL)
+                       : fricreg_hb_continue(hb, o->omega_start, o->omega_end, nq, NULL);
     double cpu = (double)(clock() - start) / CLOCKS_PER_SEC;
     if (status != FRICREG_OK) {
         fprintf(stderr, "fricreg-sim: hb: the continuation failed: %s\n", fricreg_hb_errmsg(hb));
@@ -307,14 +370,14 @@ static int run_hb(fricreg_hb *hb, const struct hb_options *o, const struct hb_mo
     }
     size_t K = 0, n = md->n;
     double *omega = NULL, *rms = NULL, *peak = NULL;
-    status = collect(hb, n, &K, &omega, &rms);
+    status = collect(hb, level, n, &K, &omega, &rms);
     if (status == 0 && o->output == HB_FRF) {
-        status = write_frf(hb, out, n, K, omega, rms);
+        status = write_frf(hb, out, level, n, K, omega, rms);
     } else if (status == 0) {
         if ((peak = malloc(2 * n * sizeof *peak)) == NULL)
             status = cli_usage_error("hb", "out of memory");
         if (status == 0)
-            status = peaks(hb, n, K, omega, rms, peak, peak + n);
+            status = peaks(hb, !level, n, K, omega, rms, peak, peak + n);
         /* the CPU time includes the peaks' location */
         cpu = (double)(clock() - start) / CLOCKS_PER_SEC;
         if (status == 0)
@@ -361,11 +424,14 @@ static size_t hb_help_table(struct cli_option table[])
 const struct cli_command cli_hb_command = {
     "hb",
     "--mass M.mtx --stiffness K.mtx [--damping C.mtx | --rayleigh A0,A1] --excitation F.txt "
-    "--jenkins J.mtx ELEMENTS --omega-start W0 --omega-end W1 [OPTION]...",
+    "--jenkins J.mtx ELEMENTS {--omega-start W0 --omega-end W1 | --continue-in level --omega W "
+    "--level-start L0 --level-end L1} [OPTION]...",
     "frequency response of a structure with joints (harmonic balance)",
     "The frequency response of a linear structure M x'' + C x' + K x + J^T f(q) = pc cos(omega t) "
     "+ ps sin(omega t) with Jenkins, Iwan or lift-off elements on q = J x, by harmonic balance "
-    "(fricreg_hb.h), continued in omega from --omega-start to --omega-end (docs/joints.md).\n\n"
+    "(fricreg_hb.h), continued in omega from --omega-start to --omega-end, or with "
+    "--continue-in level in the excitation level (the excitation times a factor) from "
+    "--level-start to --level-end at --omega (docs/joints.md).\n\n"
     "ELEMENTS is one parameter file, a line per row of J.mtx: --jenkins-params, --iwan-params "
     "or --iwan-segalman, or --normal with --normal-params (lift-off).",
     hb_help_table};

@@ -49,10 +49,15 @@
 #define CHORD_SLACK 1e-3 /* rad: above the chord's rounding, about tol/ds_min = 1e-4 */
 
 struct branch {
-    double qs, ws; /* the scales */
-    double *yc;    /* [nq + 1] the last point, scaled */
-    double *yp;    /* [nq + 1] the predictor */
-    double *yo;    /* [nq + 1] the point before, scaled (have_prev) */
+    int level;       /* the parameter p is the excitation level λ at the fixed Ω omega, else Ω */
+    double omega;    /* a level branch's Ω */
+    const char *par; /* the parameter's name in messages */
+    int keep;        /* the points are stored (a public continuation), else only counted */
+    size_t count;    /* the points reached */
+    double qs, ws;   /* the scales: y = (q/qs, p/ws) */
+    double *yc;      /* [nq + 1] the last point, scaled */
+    double *yp;      /* [nq + 1] the predictor */
+    double *yo;      /* [nq + 1] the point before, scaled (have_prev) */
     int have_prev;
     double delta, kappa; /* the last corrector's first step and contraction */
     char why[256];       /* the last failed step's message */
@@ -78,7 +83,7 @@ static int reserve(fricreg_hb *hb, size_t want)
     double *x = q == NULL ? NULL : realloc(hb->xpts, want * xw * sizeof(double));
     if (x != NULL)
         hb->xpts = x;
-    double *f = x == NULL ? NULL : realloc(hb->bifs, want * (3 + hb->n) * sizeof(double));
+    double *f = x == NULL ? NULL : realloc(hb->bifs, want * (4 + hb->n) * sizeof(double));
     if (f == NULL)
         return fr_fail(hb, FRICREG_ENOMEM, "continue: no memory for %zu points", want);
     hb->bifs = f;
@@ -97,13 +102,24 @@ static double det_sign(const fricreg_hb *hb, size_t ld)
     return sign;
 }
 
-/* The point at qt (unscaled q, Ω = omega; the factors, forces fq and Jacobians jq at it)
- * stored, with the tangent's Ω component tw and the bordered matrix's determinant sign det; its
- * stability by Hill's method when on (already in xsol when hill_done: fr_hb_solve_at's). */
-static int store_point(fricreg_hb *hb, const char *fn, double omega, double tw, double det,
-                       int hill_done)
+/* The Ω of the branch's point of parameter p. */
+static double omega_of(const struct branch *b, double p)
+{
+    return b->level ? b->omega : p;
+}
+
+/* The point at qt (unscaled q, parameter p; the factors, forces fq and Jacobians jq at it, the
+ * level in force) stored, with the tangent's parameter component tw and the bordered matrix's
+ * determinant sign det; its stability by Hill's method when on (already in xsol when
+ * hill_done: fr_hb_solve_at's). Only counted when the branch keeps no points. */
+static int store_point(fricreg_hb *hb, const char *fn, struct branch *b, double p, double tw,
+                       double det, int hill_done)
 {
     size_t w = 1 + hb->n, nq = hb->nq, xw = FR_HB_XW(hb);
+    double omega = omega_of(b, p);
+    b->count++;
+    if (!b->keep)
+        return FRICREG_OK;
     int status = hb->npts < hb->cap ? FRICREG_OK : reserve(hb, 2 * hb->cap);
     if (status != FRICREG_OK)
         return status;
@@ -117,10 +133,11 @@ static int store_point(fricreg_hb *hb, const char *fn, double omega, double tw, 
     hb->pts[hb->npts * w] = omega;
     fr_hb_rms(hb, hb->pts + hb->npts * w + 1);
     memcpy(hb->qpts + hb->npts * (nq + 1), hb->qt, nq * sizeof(double));
-    hb->qpts[hb->npts * (nq + 1) + nq] = omega;
+    hb->qpts[hb->npts * (nq + 1) + nq] = p;
     hb->npts++;
     memcpy(hb->qsol, hb->qt, nq * sizeof(double));
     hb->omega_sol = omega;
+    hb->level_sol = hb->level;
     hb->have_solution = 1;
     return FRICREG_OK;
 }
@@ -142,22 +159,29 @@ static double dist(const double *a, const double *b, size_t n)
 }
 
 /* Residual (scaled) at y into R[nq + 1] (the arclength equation last, when yp is given) and
- * the bordered matrix into A: [R_q, R_Ω ws/qs; row^T]. qt holds the unscaled q. */
+ * the bordered matrix into A: [R_q, R_p ws/qs; row^T], p = Ω (R_Ω from the factors'
+ * derivatives) or λ (R_λ = −ql: the load enters (R) linearly). qt holds the unscaled q, and
+ * a level branch's λ is the level in force. */
 static int bordered(fricreg_hb *hb, const char *fn, const struct branch *b, const double *y,
                     const double *row)
 {
     size_t nq = hb->nq, ld = nq + 1;
-    double omega = y[nq] * b->ws;
+    double omega = omega_of(b, y[nq] * b->ws);
     if (!(omega > 0.0))
         return fr_fail(hb, FRICREG_EINVAL, "%s: the branch reached Omega = %g <= 0", fn, omega);
-    int status = fr_hb_factor(hb, fn, omega, 1);
+    if (b->level)
+        hb->level = y[nq] * b->ws;
+    int status = fr_hb_factor(hb, fn, omega, !b->level);
     for (size_t j = 0; j < nq; j++)
         hb->qt[j] = y[j] * b->qs;
     if (status == FRICREG_OK)
         status = fr_hb_residual(hb, fn, hb->qt, hb->R, 1);
     if (status != FRICREG_OK)
         return status;
-    fr_hb_domega(hb, hb->rw);
+    if (b->level)
+        fr_hb_dlevel(hb, hb->rw);
+    else
+        fr_hb_domega(hb, hb->rw);
     fr_hb_matrix(hb, hb->jq, hb->A, ld);
     for (size_t j = 0; j < nq; j++) {
         hb->R[j] /= b->qs;
@@ -239,15 +263,18 @@ static int corrector(fricreg_hb *hb, const char *fn, struct branch *b, const dou
     }
 }
 
-/* The last step: the point at omega1 by Newton at fixed Ω, from the direction's line there. */
-static int final_point(fricreg_hb *hb, const char *fn, const struct branch *b, double omega1)
+/* The last step: the point at p1 by Newton at fixed parameter, from the direction's line
+ * there; kept as the driver's solution. */
+static int final_point(fricreg_hb *hb, const char *fn, const struct branch *b, double p1)
 {
     size_t nq = hb->nq;
-    double s = (omega1 / b->ws - b->yc[nq]) / hb->dir[nq];
+    double s = (p1 / b->ws - b->yc[nq]) / hb->dir[nq];
     double *guess = hb->rw; /* free here; fr_hb_solve_at copies it before it uses rw */
     for (size_t j = 0; j < nq; j++)
         guess[j] = (b->yc[j] + s * hb->dir[j]) * b->qs;
-    int status = fr_hb_solve_at(hb, fn, omega1, guess);
+    if (b->level)
+        hb->level = p1;
+    int status = fr_hb_solve_at(hb, fn, omega_of(b, p1), guess, 1);
     if (status == FRICREG_OK)
         memcpy(hb->qt, hb->qw, nq * sizeof(double));
     return status;
@@ -371,11 +398,11 @@ static int attempt(fricreg_hb *hb, const char *fn, struct branch *b, double ds, 
     return -1;
 }
 
-static int follow(fricreg_hb *hb, const char *fn, struct branch *b, double omega1)
+static int follow(fricreg_hb *hb, const char *fn, struct branch *b, double p1)
 {
     size_t nq = hb->nq, ld = nq + 1;
-    double ds = hb->ds0, dir = omega1 > b->yc[nq] * b->ws ? 1.0 : -1.0;
-    /* the first tangent, bordered by the direction of Ω1 */
+    double ds = hb->ds0, dir = p1 > b->yc[nq] * b->ws ? 1.0 : -1.0;
+    /* the first tangent, bordered by the direction of p1 */
     memset(hb->dir, 0, ld * sizeof(double));
     hb->dir[nq] = dir;
     int status = bordered(hb, fn, b, b->yc, hb->dir);
@@ -383,12 +410,14 @@ static int follow(fricreg_hb *hb, const char *fn, struct branch *b, double omega
         status = tangent_from_matrix(hb, fn, hb->tan);
     if (status != FRICREG_OK)
         return status;
-    hb->xpts[0] = hb->tan[nq]; /* the first point's tangent and determinant */
-    hb->xpts[1] = det_sign(hb, ld);
+    if (b->keep) { /* the first point's tangent and determinant */
+        hb->xpts[0] = hb->tan[nq];
+        hb->xpts[1] = det_sign(hb, ld);
+    }
     for (;;) {
-        if (hb->npts >= hb->max_points)
-            return fr_fail(hb, FRICREG_EWORK, "%s: %zu points stored before Omega1 = %g", fn,
-                           hb->npts, omega1);
+        if (b->count >= hb->max_points)
+            return fr_fail(hb, FRICREG_EWORK, "%s: %zu points stored before %s1 = %g", fn, b->count,
+                           b->par, p1);
         /* the step from yc: along the tangent, halved on rejection; below ds_min once more
          * along the secant of the last two points (the tangent of a non-smooth Jacobian may
          * point off the branch), from the last accepted step */
@@ -398,9 +427,9 @@ static int follow(fricreg_hb *hb, const char *fn, struct branch *b, double omega
         while (!accepted) {
             for (size_t j = 0; j <= nq; j++)
                 b->yp[j] = b->yc[j] + ds * hb->dir[j];
-            last = dir * (b->yp[nq] * b->ws - omega1) >= 0.0;
+            last = dir * (b->yp[nq] * b->ws - p1) >= 0.0;
             if (last) {
-                status = final_point(hb, fn, b, omega1);
+                status = final_point(hb, fn, b, p1);
                 if (status == FRICREG_OK)
                     break;
                 if (status == FRICREG_ENOMEM)
@@ -428,9 +457,8 @@ static int follow(fricreg_hb *hb, const char *fn, struct branch *b, double omega
                 continue;
             if (secant || !b->have_prev)
                 return fr_fail(hb, FRICREG_EINTEGRATOR,
-                               "%s: the step fell below ds_min = %g at Omega = %g (last failure: "
-                               "%s)",
-                               fn, hb->ds_min, b->yc[nq] * b->ws, b->why);
+                               "%s: the step fell below ds_min = %g at %s = %g (last failure: %s)",
+                               fn, hb->ds_min, b->par, b->yc[nq] * b->ws, b->why);
             secant = 1;
             double h = dist(b->yc, b->yo, ld);
             for (size_t j = 0; j < ld; j++)
@@ -438,17 +466,17 @@ static int follow(fricreg_hb *hb, const char *fn, struct branch *b, double omega
             ds = ds_start;
             sev_before = 0.0;
         }
-        if (last) /* the direction's Ω sign and the last determinant's sign carried on */
-            return store_point(hb, fn, omega1, hb->dir[nq],
-                               hb->xpts[(hb->npts - 1) * hb->xpts_stride + 1], 1);
-        if (doubles_back(hb, b, hb->qw))
+        if (last) /* the direction's sign and the last determinant's sign carried on */
+            return store_point(hb, fn, b, p1, hb->dir[nq],
+                               b->keep ? hb->xpts[(hb->npts - 1) * hb->xpts_stride + 1] : 0.0, 1);
+        if (b->keep && doubles_back(hb, b, hb->qw))
             return fr_fail(hb, FRICREG_EWORK,
-                           "%s: the branch doubles back on itself at Omega = %g (after %zu "
-                           "points): it would not reach Omega1 = %g",
-                           fn, hb->qw[nq] * b->ws, hb->npts, omega1);
-        /* bordered() left qt, the factors and the forces at qw */
-        double omega = hb->qw[nq] * b->ws;
-        if ((status = store_point(hb, fn, omega, hb->tn[nq], det_sign(hb, ld), 0)) != FRICREG_OK)
+                           "%s: the branch doubles back on itself at %s = %g (after %zu "
+                           "points): it would not reach %s1 = %g",
+                           fn, b->par, hb->qw[nq] * b->ws, hb->npts, b->par, p1);
+        /* bordered() left qt, the factors, the forces and the level at qw */
+        status = store_point(hb, fn, b, hb->qw[nq] * b->ws, hb->tn[nq], det_sign(hb, ld), 0);
+        if (status != FRICREG_OK)
             return status;
         memcpy(b->yo, b->yc, ld * sizeof(double));
         b->have_prev = 1;
@@ -494,7 +522,7 @@ static int test_at(fricreg_hb *hb, struct branch *b, const double *ya, const dou
     int its = 0, status = corrector(hb, fn, b, anchor, anchor, normal, &its);
     if (status != FRICREG_OK)
         return status;
-    *omega = hb->qw[nq] * b->ws;
+    *omega = omega_of(b, hb->qw[nq] * b->ws);
     double tx[2], *x = t.kind >= 0 ? hb->hill_x : tx;
     if (t.kind >= 0)
         status = fr_hb_hill(hb, fn, *omega, x + 2);
@@ -522,7 +550,7 @@ static void bisect(fricreg_hb *hb, struct branch *b, size_t k, struct test t)
         yb[j] = hb->qpts[(k + 1) * ld + j] / c;
     }
     int sa = test_sign(hb, t, hb->xpts + k * xw, hb->pts[k * (1 + n)]);
-    double *rec = hb->bifs + hb->nbif * (3 + n);
+    double *rec = hb->bifs + hb->nbif * (4 + n);
     rec[0] = t.type;
     rec[2] = (double)k;
     double omega = 0.0;
@@ -530,9 +558,10 @@ static void bisect(fricreg_hb *hb, struct branch *b, size_t k, struct test t)
     while (hi - lo > 1e-9) {
         double s = 0.5 * (lo + hi);
         int sign = 0;
-        if (test_at(hb, b, ya, yb, s, t, &sign, &omega, rec + 3) != FRICREG_OK)
+        if (test_at(hb, b, ya, yb, s, t, &sign, &omega, rec + 4) != FRICREG_OK)
             break;
         rec[1] = omega;
+        rec[3] = hb->level; /* corrector() left the trial's */
         found = 1;
         if (sign == sa)
             lo = s;
@@ -542,7 +571,8 @@ static void bisect(fricreg_hb *hb, struct branch *b, size_t k, struct test t)
     if (!found) { /* the stored point nearer to the bracket */
         size_t at = lo > 0.0 ? k + 1 : k;
         rec[1] = hb->pts[at * (1 + n)];
-        memcpy(rec + 3, hb->pts + at * (1 + n) + 1, n * sizeof(double));
+        rec[3] = b->level ? hb->qpts[at * ld + hb->nq] : 1.0;
+        memcpy(rec + 4, hb->pts + at * (1 + n) + 1, n * sizeof(double));
     }
     hb->nbif++;
 }
@@ -592,13 +622,61 @@ int fricreg_hb_bifurcation(fricreg_hb *hb, size_t i, int *type, double *omega, s
                        hb->nbif);
     if (ndof != hb->n)
         return fr_fail(hb, FRICREG_ESIZE, "%s: ndof = %zu, the driver has %zu", fn, ndof, hb->n);
-    const double *rec = hb->bifs + i * (3 + hb->n);
+    const double *rec = hb->bifs + i * (4 + hb->n);
     *type = (int)rec[0];
     *omega = rec[1];
     if (point != NULL)
         *point = (size_t)rec[2];
-    memcpy(rms, rec + 3, hb->n * sizeof(double));
+    memcpy(rms, rec + 4, hb->n * sizeof(double));
     return FRICREG_OK;
+}
+
+/* The branch of b's parameter from p0 to p1 (b's kind, Ω and keep set), its first point solved
+ * from q0 (NULL: fr_hb_solve_at's guesses); with keep the points stored (the earlier ones
+ * dropped) and the bifurcations between them located. The scales: qs the first point's
+ * displacement scale (raised along the branch), ws = |p1 − p0|. */
+static int run(fricreg_hb *hb, const char *fn, struct branch *b, double p0, double p1,
+               const double *q0)
+{
+    size_t nq = hb->nq;
+    /* the first 64 points' room before anything changes: a failure here changes nothing */
+    int status = b->keep ? reserve(hb, 64) : FRICREG_OK;
+    if (status != FRICREG_OK)
+        return status;
+    if (b->keep) {
+        hb->npts = 0;
+        hb->nbif = 0;
+        hb->have_branch = 1;
+        hb->branch_level = b->level;
+    }
+    if (b->level)
+        hb->level = p0;
+    if ((status = fr_hb_solve_at(hb, fn, omega_of(b, p0), q0, b->keep)) != FRICREG_OK)
+        return status;
+    b->ws = fabs(p1 - p0);
+    b->yc = hb->yp;
+    b->yp = hb->yp + nq + 1;
+    b->yo = hb->yo;
+    b->qs = fr_hb_scale(hb, hb->qw);
+    memcpy(hb->qt, hb->qw, nq * sizeof(double));
+    if ((status = store_point(hb, fn, b, p0, 0.0, 0.0, 1)) != FRICREG_OK)
+        return status;
+    for (size_t j = 0; j < nq; j++)
+        b->yc[j] = hb->qw[j] / b->qs;
+    b->yc[nq] = p0 / b->ws;
+    struct fr_error before = hb->err; /* a success keeps it: the halved steps' failures are not
+                                         the call's */
+    status = follow(hb, fn, b, p1);
+    if (b->keep) {
+        hb->branch_qs = b->qs;
+        hb->branch_ws = b->ws;
+        struct fr_error after = hb->err; /* the bisections' failed trials are not the call's */
+        locate_bifurcations(hb, b);
+        hb->err = after;
+    }
+    if (status == FRICREG_OK)
+        hb->err = before;
+    return status;
 }
 
 int fricreg_hb_continue(fricreg_hb *hb, double omega0, double omega1, size_t nq, const double q0[])
@@ -612,33 +690,88 @@ int fricreg_hb_continue(fricreg_hb *hb, double omega0, double omega1, size_t nq,
     if (status == FRICREG_OK && (!(omega1 > 0.0) || omega1 == omega0))
         status = fr_fail(hb, FRICREG_EINVAL, "%s: Omega1 = %g must be > 0 and differ from %g", fn,
                          omega1, omega0);
-    /* the first 64 points' room before anything changes: a failure here changes nothing */
-    if (status != FRICREG_OK || (status = reserve(hb, 64)) != FRICREG_OK)
+    if (status != FRICREG_OK)
         return status;
-    hb->npts = 0;
-    hb->nbif = 0;
-    hb->have_branch = 1;
-    if ((status = fr_hb_solve_at(hb, fn, omega0, q0)) != FRICREG_OK)
+    struct branch b = {.par = "Omega", .keep = 1};
+    return run(hb, fn, &b, omega0, omega1, q0);
+}
+
+int fricreg_hb_continue_level(fricreg_hb *hb, double omega, double level0, double level1, size_t nq,
+                              const double q0[])
+{
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    const char *fn = "continue_level";
+    int status = fr_hb_check_start(hb, fn, omega, nq, q0);
+    if (status == FRICREG_OK && (!isfinite(level0) || !isfinite(level1)))
+        status = fr_fail(hb, FRICREG_ENONFINITE, "%s: level0 = %g, level1 = %g", fn, level0,
+                         level1);
+    if (status == FRICREG_OK && (!(level0 >= 0.0) || !(level1 >= 0.0) || level0 == level1))
+        status = fr_fail(hb, FRICREG_EINVAL,
+                         "%s: level0 = %g and level1 = %g must be >= 0 and differ", fn, level0,
+                         level1);
+    if (status != FRICREG_OK)
         return status;
-    struct branch b = {.ws = fabs(omega1 - omega0),
-                       .yc = hb->yp,
-                       .yp = hb->yp + nq + 1,
-                       .yo = hb->yo};
-    b.qs = fr_hb_scale(hb, hb->qw);
-    memcpy(hb->qt, hb->qw, nq * sizeof(double));
-    if ((status = store_point(hb, fn, omega0, 0.0, 0.0, 1)) != FRICREG_OK)
+    struct branch b = {.level = 1, .omega = omega, .par = "level", .keep = 1};
+    status = run(hb, fn, &b, level0, level1, q0);
+    hb->level = 1.0; /* the excitation as set, for the calls to come */
+    return status;
+}
+
+/* The excitation level where fricreg_hb_solve's start begins: small enough for every element
+ * to stay in the regime of the stuck guess (a Jenkins element slips once kt |q| > mu N, its
+ * q proportional to λ there), not so small that the first point's tolerance, relative to
+ * the response, reaches rounding. */
+#define LEVEL_START 1e-3
+
+/* Whether the old start's solution q1 at λ = 1 lies on the branch from the linear regime:
+ * with q0 the solution at λ = 0 (every element in its regime of no load: stuck, or closed
+ * under a preload, or open across a gap), the line q0 + λ (q1 − q0) solves (R) at λ = 1e-3 to
+ * Newton's tolerance, so the elements are in that same regime at both ends; a regime is a set
+ * of linear inequalities in λ along the line (|kt (u − w)| <= mu N for some w, N0 + kn g >= 0
+ * or <= 0), so it holds between them, and the line is the branch. Scratch: tan, tn. */
+static int on_linear_branch(fricreg_hb *hb, const char *fn, double omega, int *yes)
+{
+    size_t nq = hb->nq;
+    double *q0 = hb->tan, *q1 = hb->tn, s0, s1;
+    *yes = 0;
+    hb->level = 0.0;
+    int status = fr_hb_solve_at(hb, fn, omega, NULL, 0);
+    if (status != FRICREG_OK)
         return status;
+    memcpy(q0, hb->qw, nq * sizeof(double));
+    s0 = fr_hb_scale(hb, q0);
+    hb->level = 1.0;
+    if ((status = fr_hb_solve_at(hb, fn, omega, NULL, 0)) != FRICREG_OK)
+        return status;
+    memcpy(q1, hb->qw, nq * sizeof(double));
+    s1 = fr_hb_scale(hb, q1);
+    hb->level = LEVEL_START;
     for (size_t j = 0; j < nq; j++)
-        b.yc[j] = hb->qw[j] / b.qs;
-    b.yc[nq] = omega0 / b.ws;
-    struct fr_error before = hb->err; /* a success keeps it: the halved steps' failures are not
-                                         the call's */
-    status = follow(hb, fn, &b, omega1);
-    hb->branch_qs = b.qs;
-    hb->branch_ws = b.ws;
-    struct fr_error after = hb->err; /* the bisections' failed trials are not the call's */
-    locate_bifurcations(hb, &b);
-    hb->err = status == FRICREG_OK ? before : after;
+        hb->qt[j] = q0[j] + LEVEL_START * (q1[j] - q0[j]);
+    if ((status = fr_hb_residual(hb, fn, hb->qt, hb->R, 0)) != FRICREG_OK)
+        return status;
+    /* (R) there is (1 − λ) R(q0) + λ R(q1) when the forces are affine along the line */
+    double r = 0.0, bound = hb->tol *
+                            ((1.0 - LEVEL_START) * s0 + LEVEL_START * s1 + fr_hb_scale(hb, hb->qt));
+    for (size_t j = 0; j < nq; j++)
+        r = fmax(r, fabs(hb->R[j]));
+    *yes = r <= bound;
+    return FRICREG_OK;
+}
+
+int fr_hb_level_start(fricreg_hb *hb, const char *fn, double omega)
+{
+    /* the old start, when its solution is the branch's: its Newton once more to keep it */
+    int linear = 0, status = on_linear_branch(hb, fn, omega, &linear);
+    hb->level = 1.0;
+    if (status == FRICREG_OK && linear)
+        return fr_hb_solve_at(hb, fn, omega, hb->tn, 1);
+    if (status == FRICREG_ENOMEM)
+        return status;
+    struct branch b = {.level = 1, .omega = omega, .par = "level"};
+    status = run(hb, fn, &b, LEVEL_START, 1.0, NULL);
+    hb->level = 1.0;
     return status;
 }
 
@@ -660,6 +793,31 @@ int fricreg_hb_point(fricreg_hb *hb, size_t k, double *omega, size_t ndof, doubl
     const double *p = hb->pts + k * (1 + hb->n);
     *omega = p[0];
     memcpy(rms, p + 1, hb->n * sizeof(double));
+    return FRICREG_OK;
+}
+
+int fricreg_hb_point_level(fricreg_hb *hb, size_t k, double *level)
+{
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    if (level == NULL)
+        return fr_fail(hb, FRICREG_ENULL, "point_level: level is NULL");
+    if (k >= hb->npts)
+        return fr_fail(hb, FRICREG_EINVAL, "point_level: k = %zu, %zu points stored", k, hb->npts);
+    *level = hb->branch_level ? hb->qpts[k * hb->qpts_stride + hb->qpts_stride - 1] : 1.0;
+    return FRICREG_OK;
+}
+
+int fricreg_hb_bifurcation_level(fricreg_hb *hb, size_t i, double *level)
+{
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    if (level == NULL)
+        return fr_fail(hb, FRICREG_ENULL, "bifurcation_level: level is NULL");
+    if (i >= hb->nbif)
+        return fr_fail(hb, FRICREG_EINVAL, "bifurcation_level: i = %zu, %zu bifurcations located",
+                       i, hb->nbif);
+    *level = hb->bifs[i * (4 + hb->n) + 3];
     return FRICREG_OK;
 }
 
@@ -766,6 +924,10 @@ int fricreg_hb_peak(fricreg_hb *hb, size_t dof, double *omega, double *rms)
     if (hb->npts == 0 || !hb->have_branch)
         return fr_fail(hb, FRICREG_EINVAL,
                        "peak: no branch (no fricreg_hb_continue yet, or the model changed since)");
+    if (hb->branch_level)
+        return fr_fail(hb, FRICREG_EINVAL,
+                       "peak: the branch is in the excitation level (fricreg_hb_continue_level), "
+                       "not in Omega");
     size_t w = 1 + hb->n, ld = hb->nq + 1, best = 0;
     for (size_t k = 1; k < hb->npts; k++)
         if (hb->pts[k * w + 1 + dof] > hb->pts[best * w + 1 + dof])

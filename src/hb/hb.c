@@ -133,6 +133,8 @@ int fricreg_hb_create(size_t ndof, size_t m, int harmonics, fricreg_hb **out)
                        .ds_min = 1e-6,
                        .ds_max = 0.1,
                        .max_points = 2000,
+                       .level = 1.0,
+                       .level_sol = 1.0,
                        .factored_omega = NAN};
     /* up to 4096 dofs the dense model, as the dense setters leave it; beyond, sparse only */
     int dense = n <= MAX_DENSE_DOFS;

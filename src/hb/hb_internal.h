@@ -35,6 +35,10 @@ struct fricreg_hb {
     double *nl; /* set_normal_elements' [4 me]: kt, mu, n0, kn; NULL: none */
     int have_elements;
     double *pc, *ps; /* [n] excitation of the fundamental */
+    /* the excitation's factor in force, λ: 1 but along a continuation in the level
+     * (fricreg_hb_continue_level, and fricreg_hb_solve's start), where (R)'s load J D_h^-1 P_h,
+     * its Ω derivative and the displacements' load term are multiplied by it (fr_hb_load) */
+    double level;
 
     /* The nonlinear modes (nma.c, fricreg_hb_nma): while one is solved, D_h's damping is
      * C − xi M (C left out when no_c: the modal-damping option), and free_vibration says that
@@ -104,9 +108,9 @@ struct fricreg_hb {
     /* the last solution, and its stability (stability.c) when that is on: XW(hb) numbers as a
      * point's below */
     int have_solution;
-    double omega_sol;
-    double *qsol; /* [nq] */
-    double *xsol; /* [XW] */
+    double omega_sol, level_sol; /* its Ω and excitation level λ */
+    double *qsol;                /* [nq] */
+    double *xsol;                /* [XW] */
 
     /* Hill's method (stability.c), on with fricreg_hb_set_stability (dense models): N = n nc
      * Fourier coefficients of x; the companion matrix of the quadratic eigenproblem [2N 2N],
@@ -127,10 +131,11 @@ struct fricreg_hb {
      * matrix's determinant, then (stability on) stable (1/0), the largest |multiplier|, and the
      * 2n Floquet exponents (re, im); and the located bifurcations [cap (2 + n)]: the type
      * (enum fricreg_hb_bifurcation_type), Ω, the n RMS values */
-    double *xpts, *bifs;
+    double *xpts, *bifs; /* bifs [cap (4 + n)]: type, Ω, the point before, λ, the n RMS */
     size_t xpts_stride, nbif;
     double branch_qs, branch_ws;
     int have_branch;
+    int branch_level; /* the branch is in the level λ at fixed Ω (qpts's last entry is λ) */
 
     struct fr_error err;
 };
@@ -209,10 +214,19 @@ void fr_hb_matrix(fricreg_hb *hb, const double *jac, double *A, size_t ld);
 /* dR/dΩ at the forces fq: dG F − dql, into out[nq] (needs the derivatives factored). */
 void fr_hb_domega(fricreg_hb *hb, double *out);
 
-/* out[nq] = G F − ql in (R)'s real form from the forces f[nq] and a complex G[(H+1) m m],
- * ql[(H+1) m] (ql NULL: none), e.g. a derivative of the condensation. */
-void fr_hb_apply(const fricreg_hb *hb, const double *G, const double *ql, const double *f,
-                 double *out);
+/* out[nq] = G F − load ql in (R)'s real form from the forces f[nq] and a complex
+ * G[(H+1) m m], ql[(H+1) m] (ql NULL: none), e.g. a derivative of the condensation. */
+void fr_hb_apply(const fricreg_hb *hb, const double *G, const double *ql, double load,
+                 const double *f, double *out);
+
+/* The load's factor in (R) and the displacements: λ, 0 in a nonlinear mode (no load). */
+static inline double fr_hb_load(const fricreg_hb *hb)
+{
+    return hb->free_vibration ? 0.0 : hb->level;
+}
+
+/* dR/dλ = −ql in (R)'s real form, into out[nq] (the excitation level's derivative). */
+void fr_hb_dlevel(const fricreg_hb *hb, double *out);
 
 /* The displacement scale of the convergence test: max(|q|_inf, |ql|_inf), or 1 if both 0. */
 double fr_hb_scale(const fricreg_hb *hb, const double *q);
@@ -225,8 +239,13 @@ int fr_hb_newton(fricreg_hb *hb, const char *fn);
 int fr_hb_check_start(fricreg_hb *hb, const char *fn, double omega, size_t nq, const double *q0);
 
 /* Factors at omega and solves (R) from q0, or from the stuck guess and then the slipping one:
- * the solution in qw (R, fq, jq at it), kept as the driver's last solution. */
-int fr_hb_solve_at(fricreg_hb *hb, const char *fn, double omega, const double *q0);
+ * the solution in qw (R, fq, jq at it), with keep its stability computed (when on) and kept as
+ * the driver's last solution (at the level in force). */
+int fr_hb_solve_at(fricreg_hb *hb, const char *fn, double omega, const double *q0, int keep);
+
+/* fricreg_hb_solve's start without a guess (continuation.c): the branch in the excitation
+ * level at omega from the linear regime to λ = 1, the solution kept as fr_hb_solve_at's. */
+int fr_hb_level_start(fricreg_hb *hb, const char *fn, double omega);
 
 /* The starting guess into qw: every element stuck (stuck) or slipping freely (F = 0). */
 int fr_hb_guess(fricreg_hb *hb, const char *fn, int stuck);

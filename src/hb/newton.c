@@ -125,8 +125,8 @@ int fr_hb_check_start(fricreg_hb *hb, const char *fn, double omega, size_t nq, c
 }
 
 /* Solves at omega from q0, or from the stuck guess and then the slipping one; the solution in
- * qw (and R, fq, jq at it), kept as the driver's last. */
-int fr_hb_solve_at(fricreg_hb *hb, const char *fn, double omega, const double *q0)
+ * qw (and R, fq, jq at it), with keep its stability (when on) and kept as the driver's last. */
+int fr_hb_solve_at(fricreg_hb *hb, const char *fn, double omega, const double *q0, int keep)
 {
     int status = fr_hb_factor(hb, fn, omega, 0);
     if (status != FRICREG_OK)
@@ -139,6 +139,8 @@ int fr_hb_solve_at(fricreg_hb *hb, const char *fn, double omega, const double *q
         if ((status = fr_hb_newton(hb, fn)) == FRICREG_OK)
             break;
     }
+    if (!keep)
+        return status;
     /* the stability at the solution (the Jacobians jq of its last residual) */
     if (status == FRICREG_OK && hb->stability)
         status = fr_hb_hill(hb, fn, omega, hb->xsol + 2);
@@ -146,6 +148,7 @@ int fr_hb_solve_at(fricreg_hb *hb, const char *fn, double omega, const double *q
         return status;
     memcpy(hb->qsol, hb->qw, hb->nq * sizeof(double));
     hb->omega_sol = omega;
+    hb->level_sol = hb->level;
     hb->have_solution = 1;
     return FRICREG_OK;
 }
@@ -159,8 +162,15 @@ int fricreg_hb_solve(fricreg_hb *hb, double omega, size_t nq, const double q0[],
     struct fr_error before = hb->err; /* a success keeps it: a first guess's failure is not
                                          the call's */
     int status = fr_hb_check_start(hb, "solve", omega, nq, q0);
-    if (status == FRICREG_OK)
-        status = fr_hb_solve_at(hb, "solve", omega, q0);
+    if (status == FRICREG_OK && q0 != NULL)
+        status = fr_hb_solve_at(hb, "solve", omega, q0, 1);
+    else if (status == FRICREG_OK) {
+        /* without a guess, the branch in the level from the linear regime; should that fail,
+         * the guesses at the level itself */
+        status = fr_hb_level_start(hb, "solve", omega);
+        if (status != FRICREG_OK && status != FRICREG_ENOMEM)
+            status = fr_hb_solve_at(hb, "solve", omega, NULL, 1);
+    }
     if (status == FRICREG_OK) {
         memcpy(q, hb->qsol, nq * sizeof(double));
         hb->err = before;

@@ -133,7 +133,7 @@ static int evaluate(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, const
     fr_hb_domega(hb, nma->col);
     for (size_t j = 0; j < nq; j++)
         A[j * nd + nq] = nma->col[j];
-    fr_hb_apply(hb, nma->dGx, NULL, hb->fq, nma->col);
+    fr_hb_apply(hb, nma->dGx, NULL, 0.0, hb->fq, nma->col);
     for (size_t j = 0; j < nq; j++)
         A[j * nd + nq + 1] = nma->col[j];
     /* the amplitude rows: ∂s/∂ω, ∂s/∂ξ from g's derivatives, ∂s/∂q from the forces' Jacobian */

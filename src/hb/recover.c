@@ -12,8 +12,9 @@ static void coefficient(const fricreg_hb *hb, int h, size_t k, double *out)
 {
     size_t m = hb->m, w = m + 1, nc = hb->nc;
     const double *y = hb->Y + 2 * (((size_t)h * hb->n + k) * w);
-    /* the load column, but in a nonlinear mode (the normalization's M φ there) */
-    double re = hb->free_vibration ? 0.0 : y[2 * m], im = hb->free_vibration ? 0.0 : y[2 * m + 1];
+    /* the load column at the level in force, but in a nonlinear mode (the normalization's M φ
+     * there) */
+    double load = fr_hb_load(hb), re = load * y[2 * m], im = load * y[2 * m + 1];
     for (size_t e = 0; e < m; e++) {
         double fa = h == 0 ? hb->fq[e * nc] : hb->fq[e * nc + 2 * (size_t)h - 1];
         double fb = h == 0 ? 0.0 : -hb->fq[e * nc + 2 * (size_t)h]; /* F = fa − i fb */
@@ -73,9 +74,11 @@ int fricreg_hb_displacement(fricreg_hb *hb, size_t ndof, size_t nc, double x[])
     /* the factors and forces of the solution's frequency: a later failed call may have moved
      * them */
     int status = fr_hb_factor(hb, "displacement", hb->omega_sol, 0);
+    hb->level = hb->level_sol; /* a level branch's last point */
     if (status == FRICREG_OK)
         status = fr_hb_residual(hb, "displacement", hb->qsol, hb->rw, 0);
     if (status == FRICREG_OK)
         fr_hb_recover(hb, x);
+    hb->level = 1.0;
     return status;
 }

@@ -14,10 +14,10 @@
 
 #include "hb_internal.h"
 
-/* out[nq] = G F − ql in the real form above, from the forces f[nq] and the complex G[(H+1) m m],
- * ql[(H+1) m] (the condensation or its Ω derivative; NULL: no load). */
-void fr_hb_apply(const fricreg_hb *hb, const double *G, const double *ql, const double *f,
-                 double *out)
+/* out[nq] = G F − load ql in the real form above, from the forces f[nq] and the complex
+ * G[(H+1) m m], ql[(H+1) m] (the condensation or its Ω derivative; NULL: no load). */
+void fr_hb_apply(const fricreg_hb *hb, const double *G, const double *ql, double load,
+                 const double *f, double *out)
 {
     size_t m = hb->m, nc = hb->nc;
     for (size_t e = 0; e < m; e++)
@@ -26,14 +26,14 @@ void fr_hb_apply(const fricreg_hb *hb, const double *G, const double *ql, const 
             const double *g = G + 2 * ((size_t)h * m * m + e * m),
                          *p = ql ? ql + 2 * ((size_t)h * m + e) : none;
             if (h == 0) {
-                double s = -p[0];
+                double s = -load * p[0];
                 for (size_t e2 = 0; e2 < m; e2++)
                     s += g[2 * e2] * f[e2 * nc];
                 out[e * nc] = s;
                 continue;
             }
             size_t ca = 2 * (size_t)h - 1, cb = ca + 1;
-            double ra = -p[0], rb = p[1];
+            double ra = -load * p[0], rb = load * p[1];
             for (size_t e2 = 0; e2 < m; e2++) {
                 double gr = g[2 * e2], gi = g[2 * e2 + 1], fa = f[e2 * nc + ca],
                        fb = f[e2 * nc + cb];
@@ -66,7 +66,7 @@ int fr_hb_residual(fricreg_hb *hb, const char *fn, const double *q, double *R, i
             return fr_fail(hb, status, "%s: the AFT of element %zu failed: %s", fn, e,
                            fricreg_aft_errmsg(hb->aft));
     }
-    fr_hb_apply(hb, hb->G, hb->free_vibration ? NULL : hb->ql, hb->fq, R);
+    fr_hb_apply(hb, hb->G, hb->ql, fr_hb_load(hb), hb->fq, R);
     for (size_t j = 0; j < hb->nq; j++)
         R[j] += q[j];
     return FRICREG_OK;
@@ -74,7 +74,22 @@ int fr_hb_residual(fricreg_hb *hb, const char *fn, const double *q, double *R, i
 
 void fr_hb_domega(fricreg_hb *hb, double *out)
 {
-    fr_hb_apply(hb, hb->dG, hb->free_vibration ? NULL : hb->dql, hb->fq, out);
+    fr_hb_apply(hb, hb->dG, hb->dql, fr_hb_load(hb), hb->fq, out);
+}
+
+void fr_hb_dlevel(const fricreg_hb *hb, double *out)
+{
+    size_t m = hb->m, nc = hb->nc;
+    for (size_t e = 0; e < m; e++)
+        for (int h = 0; h <= hb->H; h++) { /* −ql in the real form of fr_hb_apply */
+            const double *p = hb->ql + 2 * ((size_t)h * m + e);
+            if (h == 0) {
+                out[e * nc] = -p[0];
+                continue;
+            }
+            out[e * nc + 2 * (size_t)h - 1] = -p[0];
+            out[e * nc + 2 * (size_t)h] = p[1];
+        }
 }
 
 void fr_hb_matrix(fricreg_hb *hb, const double *jac, double *A, size_t ld)
@@ -133,7 +148,9 @@ double fr_hb_scale(const fricreg_hb *hb, const double *q)
     double s = 0.0;
     for (size_t j = 0; j < hb->nq; j++)
         s = fmax(s, fabs(q[j]));
+    /* the load's response at the level in force (a nonlinear mode's normalization: whole) */
+    double load = hb->free_vibration ? 1.0 : fabs(hb->level);
     for (size_t j = 0; j < 2 * ((size_t)hb->H + 1) * hb->m; j++)
-        s = fmax(s, fabs(hb->ql[j]));
+        s = fmax(s, load * fabs(hb->ql[j]));
     return s > 0.0 ? s : 1.0;
 }
