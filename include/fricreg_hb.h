@@ -375,7 +375,8 @@ FRICREG_API int fricreg_hb_set_continuation(fricreg_hb *hb, double ds, double ds
  *  warning; header comment), or Newton's matrix is; FRICREG_ENOMEM (a sparse model: UMFPACK's
  *  analysis or factor); FRICREG_EWORK if Newton did not converge within max_iter iterations
  *  (or its line search found no decrease); FRICREG_EINTEGRATOR if the AFT's root solver
- *  failed (fricreg_aft_jenkins_exact). On failure q and the kept solution are untouched. Since
+ *  failed (fricreg_aft_jenkins_exact) or, stability on, GSL's QR on Hill's matrix did not
+ *  converge (fricreg_hb_set_stability). On failure q and the kept solution are untouched. Since
  *  1.6. */
 FRICREG_API int fricreg_hb_solve(fricreg_hb *hb, double omega, size_t nq, const double q0[],
                                  double q[]);
@@ -455,7 +456,8 @@ enum fricreg_hb_nma_damping {
  *  Returns FRICREG_OK; FRICREG_ENULL if hb is NULL; FRICREG_EINVAL if the elements were not
  *  set, mode >= ndof, damping is not an enumerator, not 0 < a0 < a1, npoints is out of range,
  *  ndof > 4096, or the stuck structure's mode k has ω_k² <= 0; FRICREG_ENONFINITE if a0 or a1
- *  is NaN or infinite, or an intermediate overflows (as fricreg_hb_solve); FRICREG_ENOTPSD if
+ *  is NaN or infinite, or an intermediate overflows (as fricreg_hb_solve; or L^-1 K_0 L^-T of
+ *  the linear mode, M = L L^T, with M and K of scales too far apart); FRICREG_ENOTPSD if
  *  M is not positive definite (a pivot of its Cholesky factor below 1e-14 of its largest
  *  diagonal entry); FRICREG_ESINGULAR if some D_h(ω, ξ) or Newton's matrix is singular (as
  *  fricreg_hb_solve); FRICREG_EWORK if Newton did not converge (the step halved ten times);
@@ -645,8 +647,11 @@ FRICREG_API int fricreg_hb_peak(fricreg_hb *hb, size_t dof, double *omega, doubl
  *  or disabling drops the stored points and the last solution (they have no stability).
  *
  *  Stability needs GSL's QR to converge: GSL 2.7 reports a QR that does not (30 sweeps per
- *  eigenvalue) through its error handler too; the balanced, finite matrix here has not been
- *  seen to fail, but a host that keeps GSL's default (aborting) handler should know.
+ *  eigenvalue) through its error handler too, and has no variant that only returns the
+ *  status; the balanced, finite matrix here has not been seen to fail, but a host that keeps
+ *  GSL's default (aborting) handler should know. Where the handler returns (a handler of the
+ *  host's, or gsl_set_error_handler_off), the solve or continuation returns
+ *  FRICREG_EINTEGRATOR with a message naming Ω, the kept solution and points untouched.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if hb is NULL; FRICREG_EINVAL if enable is not 0 or 1, or
  *  ndof (2H + 1) > FRICREG_HB_MAX_HILL; FRICREG_ENOMEM (nothing changed). */

@@ -342,7 +342,9 @@ FRICREG_API int fricreg_structure_set_newton(fricreg_structure *s, double tol, i
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL if dt <= 0, t + dt rounds to t, dt
  *  is so large that K_eff's entries overflow, J was never set, or W = J M^-1 J^T has an entry beyond the double range or a W_ii below
  *  DBL_MIN ~ 2.2e-308 (J and M of scales too far apart); FRICREG_ENONFINITE if dt is not
- *  finite; FRICREG_ENOTSYM or
+ *  finite, or an element's sliders' force (or, where Newton needs it, stiffness) sums to
+ *  beyond the double range (fricreg_structure_set_iwan; the message names the element, as
+ *  fricreg_iwan_trial's); FRICREG_ENOTSYM or
  *  FRICREG_ENOTPSD if the context refuses W (not expected: W is formed symmetric from a
  *  positive definite M and non-zero rows of J); FRICREG_ENOTPSD if K_eff is not positive
  *  definite (K or C indefinite, an unstable structure, at too large a dt: the message says

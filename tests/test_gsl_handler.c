@@ -23,7 +23,9 @@
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
+#include <gsl/gsl_eigen.h>
 #include <gsl/gsl_errno.h>
 
 #include "fricreg_aft.h"
@@ -60,6 +62,23 @@ gsl_error_handler_t *gsl_set_error_handler_off(void)
     set_handler_off_fn *real = (set_handler_off_fn *)dlsym(RTLD_NEXT, "gsl_set_error_handler_off");
     ck_assert_ptr_nonnull(real);
     return real();
+}
+
+/* GSL 2.7's gsl_eigen_nonsymm reports a QR that does not converge to the handler, then
+ * returns GSL_EMAXITER: no finite balanced matrix is known to provoke it, so this program's
+ * interposed copy (exported, as the pair above) returns that status without converging when
+ * nonsymm_fails is set, as GSL does after a handler that returns; otherwise it passes on. */
+static int nonsymm_fails;
+
+typedef int nonsymm_fn(gsl_matrix *, gsl_vector_complex *, gsl_eigen_nonsymm_workspace *);
+
+int gsl_eigen_nonsymm(gsl_matrix *A, gsl_vector_complex *eval, gsl_eigen_nonsymm_workspace *w)
+{
+    if (nonsymm_fails)
+        return GSL_EMAXITER;
+    nonsymm_fn *real = (nonsymm_fn *)dlsym(RTLD_NEXT, "gsl_eigen_nonsymm");
+    ck_assert_ptr_nonnull(real);
+    return real(A, eval, w);
 }
 
 static void users_handler(const char *reason, const char *file, int line, int gsl_errno)
@@ -150,6 +169,58 @@ START_TEST(harmonic_balance)
     ck_assert_int_eq(fricreg_hb_displacement(hb, 2, 11, x), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_continue(hb, 0.3, 2.5, 11, NULL), FRICREG_OK);
     assert_handler_intact("fricreg_hb_continue");
+    fricreg_hb_free(hb);
+}
+END_TEST
+
+/* Hill's stability and the nonlinear modes' linear mode: a solve and a continuation with
+ * stability on; the QR's failure (interposed above) comes back as FRICREG_EINTEGRATOR with a
+ * message, the kept solution's stability untouched; a linear mode whose reduced stiffness
+ * overflows (M = 1e-300, K = 1e300: L^-1 K L^-T = 1e600) is FRICREG_ENONFINITE, as is
+ * (before it reaches GSL) its NaN. */
+START_TEST(hill_and_modes)
+{
+    fricreg_hb *hb = NULL;
+    ck_assert_int_eq(fricreg_hb_create(2, 1, 3, &hb), FRICREG_OK);
+    const double J[2] = {1.0, -1.0}, kt[1] = {2.385}, mun[1] = {0.3}, pc[2] = {0.7, 0.0},
+                 ps[2] = {0.0, 0.0}, K[4] = {3.1, -1.2, -1.2, 1.2};
+    double q[7];
+    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 2, K), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_rayleigh(hb, 0.02, 0.01), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_elements(hb, 1, 2, J, kt, mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_excitation(hb, 2, pc, ps), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stability(hb, 1), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_solve(hb, 1.3, 7, NULL, q), FRICREG_OK);
+    assert_handler_intact("fricreg_hb_solve, stability on");
+    int stable = -1, stable2 = -1;
+    double mu = -1.0, mu2 = -1.0;
+    ck_assert_int_eq(fricreg_hb_point_stability(hb, FRICREG_HB_SOLUTION, &stable, &mu), FRICREG_OK);
+    ck_assert_int_eq(stable, 1); /* damped (Rayleigh): |mu| < 1 */
+    ck_assert(mu < 1.0);
+    nonsymm_fails = 1;
+    ck_assert_int_eq(fricreg_hb_solve(hb, 1.5, 7, NULL, q), FRICREG_EINTEGRATOR);
+    ck_assert_int_eq(fricreg_hb_errcode(hb), FRICREG_EINTEGRATOR);
+    ck_assert_ptr_nonnull(
+        strstr(fricreg_hb_errmsg(hb), "Hill's matrix did not converge at Omega = 1.5"));
+    ck_assert_int_eq(fricreg_hb_point_stability(hb, FRICREG_HB_SOLUTION, &stable2, &mu2),
+                     FRICREG_OK);
+    ck_assert_int_eq(stable2, stable);
+    ck_assert_double_eq(mu2, mu); /* the solution at 1.3 is kept */
+    ck_assert_int_eq(fricreg_hb_continue(hb, 0.3, 2.5, 7, NULL), FRICREG_EINTEGRATOR);
+    nonsymm_fails = 0;
+    ck_assert_int_eq(fricreg_hb_continue(hb, 0.3, 2.5, 7, NULL), FRICREG_OK);
+    assert_handler_intact("fricreg_hb_continue, stability on");
+    fricreg_hb_free(hb);
+
+    ck_assert_int_eq(fricreg_hb_create(1, 1, 1, &hb), FRICREG_OK);
+    const double tiny = 1e-300, huge = 1e300, one = 1.0, kt1 = 2.0, mun1 = 3.0;
+    ck_assert_int_eq(fricreg_hb_set_mass(hb, 1, &tiny), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 1, &huge), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_elements(hb, 1, 1, &one, &kt1, &mun1), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_nma(hb, 0, FRICREG_HB_NMA_DAMPING_MATRIX, 0.5, 10.0, 4),
+                     FRICREG_ENONFINITE);
+    ck_assert_ptr_nonnull(strstr(fricreg_hb_errmsg(hb), "overflows"));
+    assert_handler_intact("fricreg_hb_nma, reduced stiffness overflows");
     fricreg_hb_free(hb);
 }
 END_TEST
@@ -533,6 +604,7 @@ static Suite *handler_suite(void)
     tcase_add_test(tc, laws);
     tcase_add_test(tc, aft);
     tcase_add_test(tc, harmonic_balance);
+    tcase_add_test(tc, hill_and_modes);
     tcase_add_test(tc, contexts);
     tcase_add_test(tc, disk_contexts);
     tcase_add_test(tc, disk_contexts_refused_and_singular);

@@ -112,6 +112,40 @@ START_TEST(oscillator_h7_starts_linear)
 }
 END_TEST
 
+/* (d) modal damping: two dofs, M = I, K = [2 -1; -1 2], a non-proportional C = diag(0.1, 0),
+ * a Jenkins element on dof 0 (kt = 1, mu N = 100: stuck at a = 0.1). The stuck structure's
+ * K_0 = [3 -1; -1 2] has λ_1 = (5 − √5)/2 and φ = (1, 3 − λ_1)/norm, so with
+ * FRICREG_HB_NMA_DAMPING_MODAL (C replaced by ξ_1 M, ξ_1 = φ^T C φ = 0.1 φ_0²) the linear
+ * mode is exact: ω = √λ_1, ζ = ξ_1/(2ω), to 1e-9. With the matrix C the mode couples to the
+ * second one: ω and ζ move by 4.5e-4 and 1.3e-3 (measured), so the option must reach the
+ * solve. */
+START_TEST(modal_damping_closed_form)
+{
+    const double M[4] = {1, 0, 0, 1}, K[4] = {2, -1, -1, 2}, C[4] = {0.1, 0, 0, 0}, J[2] = {1, 0},
+                 kt = 1.0, mun = 100.0;
+    const double lambda = 0.5 * (5.0 - sqrt(5.0)), v1 = 3.0 - lambda;
+    const double omega_ref = sqrt(lambda), zeta_ref = 0.1 / (1.0 + v1 * v1) / (2.0 * omega_ref);
+    double omega[2], zeta[2];
+    for (int modal = 0; modal < 2; modal++) {
+        fricreg_hb *hb = NULL;
+        ck_assert_int_eq(fricreg_hb_create(2, 1, 3, &hb), FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_set_mass(hb, 2, M), FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 2, K), FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_set_damping(hb, 2, C), FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_set_elements(hb, 1, 2, J, &kt, &mun), FRICREG_OK);
+        int damping = modal ? FRICREG_HB_NMA_DAMPING_MODAL : FRICREG_HB_NMA_DAMPING_MATRIX;
+        ck_assert_int_eq(fricreg_hb_nma(hb, 0, damping, 0.1, 1.0, 3), FRICREG_OK);
+        double a;
+        ck_assert_int_eq(fricreg_hb_nma_point(hb, 0, &a, &omega[modal], &zeta[modal], 0, 0, NULL),
+                         FRICREG_OK);
+        fricreg_hb_free(hb);
+    }
+    ck_assert_double_eq_tol(omega[1], omega_ref, 1e-9 * omega_ref);
+    ck_assert_double_eq_tol(zeta[1], zeta_ref, 1e-9 * zeta_ref);
+    ck_assert_double_gt(fabs(omega[0] - omega_ref), 1e-4 * omega_ref);
+}
+END_TEST
+
 /* (c) bad input: each status, nothing written, the points of an earlier call kept by a refused
  * one; the forced response unchanged by a backbone. */
 START_TEST(bad_input)
@@ -178,6 +212,7 @@ int main(void)
     tcase_add_test(tc, oscillator_closed_form);
     tcase_add_test(tc, oscillator_h7_starts_linear);
     tcase_add_test(tc, bad_input);
+    tcase_add_test(tc, modal_damping_closed_form);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);
     srunner_run_all(sr, CK_NORMAL);

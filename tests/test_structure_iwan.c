@@ -329,6 +329,68 @@ START_TEST(csr_and_sizes)
 }
 END_TEST
 
+/* The sliders' sums overflow, as in test_iwan's sums_overflow: two sliders of k = 1e300,
+ * phi = 1e308 both slip beyond q = 1e8 (k q > phi), their force 2e308 > DBL_MAX. Each slider's
+ * force is finite; until the sums were checked the step failed with the friction law's or
+ * Newton's complaint of an infinite number (or, on the central difference, handed it on).
+ * M = 1e300 keeps the stuck frequency sqrt(2e300/1e300) = 1.41 rad/s within the central
+ * difference's bound at dt = 0.1. Each path fails with FRICREG_ENONFINITE naming the element,
+ * the state unchanged: the equilibrium at t = 0 (u0 = 1e10), Newmark's Newton on the step's
+ * end (v0 = 1e12: u_pred = 1e11), the central difference's explicit forces (the same). A sum
+ * that stays finite (1e308 + 0.5e308 = 1.5e308 < DBL_MAX at t = 0, a = -1.5e308/M) still
+ * steps, unloading from that sum (on the central difference: Newton's residual 2-norm squares forces, beyond 1e154 it
+ * overflows on its own). */
+static fricreg_structure *overflowing(double phi1, double u0, double v0, int central)
+{
+    fricreg_structure *s = NULL;
+    const double big_m = 1e300, one = 1.0, zero = 0.0;
+    const double k[2] = {1e300, 1e300}, phi[2] = {1e308, phi1};
+    ck_assert_int_eq(fricreg_structure_create(1, 1, &s), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_mass(s, 1, &big_m), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_stiffness(s, 1, &one), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_contacts(s, 1, 1, &one), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_bounds(s, 1, &zero), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_iwan(s, 1, 1, &one, 2, k, phi), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_initial(s, 1, &u0, &v0), FRICREG_OK);
+    if (central)
+        ck_assert_int_eq(fricreg_structure_set_central_difference(s), FRICREG_OK);
+    return s;
+}
+
+START_TEST(sums_overflow)
+{
+    const double cases[3][3] = {{1e10, 0.0, 0}, {0.0, 1e12, 0}, {0.0, 1e12, 1}};
+    const char *when[3] = {"at t = 0:", "at t = 0.1:", "at t = 0.1:"};
+    for (int c = 0; c < 3; c++) {
+        fricreg_structure *s = overflowing(1e308, cases[c][0], cases[c][1], (int)cases[c][2]);
+        ck_assert_int_eq(fricreg_structure_step(s, 0.1), FRICREG_ENONFINITE);
+        ck_assert_int_eq(fricreg_structure_errcode(s), FRICREG_ENONFINITE);
+        const char *msg = fricreg_structure_errmsg(s);
+        ck_assert_msg(strstr(msg, "element 0's sliders sum to a force of inf") != NULL &&
+                          strstr(msg, when[c]) != NULL && strstr(msg, "overflows") != NULL,
+                      "case %d: %s", c, msg);
+        double u, v, a, f = -1.0, w[2] = {-1.0, -1.0};
+        ck_assert_int_eq(fricreg_structure_get_state(s, 1, &u, &v, &a), FRICREG_OK);
+        ck_assert_double_eq(u, cases[c][0]);
+        ck_assert_double_eq(v, cases[c][1]);
+        ck_assert_int_eq(fricreg_structure_get_iwan_state(s, 1, 2, &f, w, NULL), FRICREG_OK);
+        ck_assert_double_eq(f, 0.0);
+        ck_assert_double_eq(w[0], 0.0);
+        ck_assert_double_eq(w[1], 0.0);
+        fricreg_structure_free(s);
+    }
+    fricreg_structure *s = overflowing(0.5e308, 1e10, 0.0, 1);
+    ck_assert_msg(fricreg_structure_step(s, 0.1) == FRICREG_OK, "%s", fricreg_structure_errmsg(s));
+    double f, u, v, a;
+    ck_assert_int_eq(fricreg_structure_get_iwan_state(s, 1, 2, &f, NULL, NULL), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_state(s, 1, &u, &v, &a), FRICREG_OK);
+    /* both slipped at t = 0, then unload elastically by k (u0 - u1): u1 = u0 - dt^2 a/2 */
+    ck_assert_double_eq_tol(u, 1e10 - 0.005 * 1.5e8, 1.0);
+    ck_assert_double_eq_tol(f, 1.5e308 - 2e300 * (1e10 - u), 1e-9 * 1.5e308);
+    fricreg_structure_free(s);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("structure_iwan");
@@ -338,6 +400,7 @@ static Suite *suite(void)
     tcase_add_test(tc, dissipation_closed_form);
     tcase_add_test(tc, oscillator_against_hb);
     tcase_add_test(tc, csr_and_sizes);
+    tcase_add_test(tc, sums_overflow);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -153,6 +153,15 @@ static int eigen_mode(fricreg_hb *hb, const char *fn, double *A, const double *L
     gsl_matrix_view Av = gsl_matrix_view_array(A, n, n), Vv = gsl_matrix_view_array(V, n, n);
     gsl_vector_view ev = gsl_vector_view_array(work, n);
     gsl_eigen_symmv_workspace ws = {n, work + n, work + 2 * n, work + 3 * n, work + 4 * n};
+    /* finite M and K of scales far apart (K 1e300, M 1e-300) overflow in L^-1 K_0 L^-T; the
+     * eigensolver would refuse it (GSL_EDOM) without saying why */
+    for (size_t e = 0; e < n * n; e++)
+        if (!isfinite(A[e]))
+            return fr_fail(hb, FRICREG_ENONFINITE,
+                           "%s: L^-1 K_0 L^-T (M = L L^T) overflows: entry (%zu, %zu) = %g "
+                           "(M and K of scales too far apart)",
+                           fn, e / n, e % n, A[e]);
+    /* on finite input gsl_eigen_symmv fails only on sizes, which match here */
     if (fr_eigen_symmv(&Av.matrix, &ev.vector, &Vv.matrix, &ws) != 0)
         return fr_fail(hb, FRICREG_EINVAL, "%s: the linearized eigenproblem failed", fn);
     *lambda = work[k];

@@ -26,7 +26,9 @@ int fr_central_solve(fricreg_structure *s, double dt)
         vp[k] = fr_central_predicted_velocity(dt, v[k], a[k]);
     }
     fr_structure_net_force(s, s->ptil1, s->u1, s->vp, s->work);
-    fr_elements_explicit(s, s->u1, s->work); /* the elements at the known displacement */
+    status = fr_elements_explicit(s, s->u1, s->work, s->t + dt); /* at the known displacement */
+    if (status != FRICREG_OK)
+        return status;
     status = fr_structure_motion(s, s->work, s->vp, s->f1, s->x); /* f1 and a1 */
     if (status != FRICREG_OK)
         return fr_fail(s, status, "step: friction at t = %g: %s", s->t + dt,

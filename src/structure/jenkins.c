@@ -535,27 +535,65 @@ static void map(const struct fr_elements *e, const double y[], double x[])
         x[nt + i] = fmax(0.0, e->n0[i] + e->kn[i] * y[nt + i]);
 }
 
-void fr_elements_equilibrium(fricreg_structure *s, gsl_vector *w)
+/* Each slider's force is finite (|f_s| <= phi_s N) but the sum of ns of them, or of the
+ * sticking sliders' stiffnesses, can overflow (as fricreg_iwan_trial's): FRICREG_ENONFINITE
+ * naming the element, as the standalone element does, rather than an infinite force that
+ * the friction law or Newton's residual would refuse without saying why. */
+static int overflowed(fricreg_structure *s, size_t i, const char *what, double sum, double t)
+{
+    return fr_fail(s, FRICREG_ENONFINITE,
+                   "step: element %zu's sliders sum to a %s of %g at t = %g: the sum of %zu "
+                   "sliders overflows (their stiffnesses or slip forces near the double range)",
+                   i, what, sum, t, s->el.ns);
+}
+
+/* map, then FRICREG_ENONFINITE if an element's force x[i] overflowed. */
+static int map_checked(fricreg_structure *s, const double y[], double x[], double t)
+{
+    const struct fr_elements *e = &s->el;
+    map(e, y, x);
+    for (size_t i = 0; i < e->nc; i++)
+        if (!isfinite(x[i]))
+            return overflowed(s, i < e->dim * e->me ? i / (size_t)e->dim : i - e->dim * e->me,
+                              "force", x[i], t);
+    return FRICREG_OK;
+}
+
+int fr_elements_overflow(fricreg_structure *s, double t)
+{
+    const struct fr_elements *e = &s->el;
+    if (e->overflow == 0)
+        return FRICREG_OK;
+    return overflowed(s, e->overflow - 1, e->overflow_what, e->overflow_sum, t);
+}
+
+int fr_elements_equilibrium(fricreg_structure *s, gsl_vector *w)
 {
     struct fr_elements *e = &s->el;
     if (e->me == 0)
-        return;
+        return FRICREG_OK;
     fr_csc_mult_t(e->Jt, s->u->data, e->q0);
-    map(e, e->q0, e->fe);
+    int status = map_checked(s, e->q0, e->fe, s->t); /* fe is held by the caller */
+    if (status != FRICREG_OK)
+        return status;
     size_t bytes = e->me * e->ns * (size_t)e->dim * sizeof(double); /* idempotent: sticks */
     memcpy(e->wc, e->wt, bytes);
     memcpy(e->fs, e->fs1, bytes);
     fr_csc_mult_add(e->Jt, -1.0, e->fe, w->data);
+    return FRICREG_OK;
 }
 
-void fr_elements_explicit(fricreg_structure *s, const gsl_vector *u1, gsl_vector *w)
+int fr_elements_explicit(fricreg_structure *s, const gsl_vector *u1, gsl_vector *w, double t)
 {
     struct fr_elements *e = &s->el;
     if (e->me == 0)
-        return;
+        return FRICREG_OK;
     fr_csc_mult_t(e->Jt, u1->data, e->q0);
-    map(e, e->q0, e->fe1);
+    int status = map_checked(s, e->q0, e->fe1, t);
+    if (status != FRICREG_OK)
+        return status;
     fr_csc_mult_add(e->Jt, -1.0, e->fe1, w->data);
+    return FRICREG_OK;
 }
 
 int fr_elements_compliance(fricreg_structure *s, int joint)
@@ -601,9 +639,22 @@ double fr_elements_residual(struct fr_elements *e, const double f[], double g[],
         g[2 * i] = f[2 * i] - x[0];
         g[2 * i + 1] = f[2 * i + 1] - x[1];
     }
+    e->overflow = 0;
     for (size_t i = 0; i < me && e->dim == 1; i++) {
-        double gn = e->n0 != NULL ? e->y[me + i] : 0.0;
-        g[i] = f[i] - element(e, i, e->y[i], gn, &e->tan[i], e->n0 != NULL ? &e->tang[i] : NULL);
+        double gn = e->n0 != NULL ? e->y[me + i] : 0.0, tg = 0.0;
+        double x = element(e, i, e->y[i], gn, &e->tan[i], &tg);
+        if (e->n0 != NULL)
+            e->tang[i] = tg;
+        const char *what = !isfinite(x)           ? "force"
+                           : !isfinite(e->tan[i]) ? "tangent"
+                           : !isfinite(tg)        ? "df/dg"
+                                                  : NULL;
+        if (what != NULL && e->overflow == 0) {
+            e->overflow = i + 1;
+            e->overflow_what = what;
+            e->overflow_sum = !isfinite(x) ? x : !isfinite(e->tan[i]) ? e->tan[i] : tg;
+        }
+        g[i] = f[i] - x;
     }
     for (size_t i = 0; i < (e->n0 != NULL ? me : 0); i++) {
         double N = e->n0[i] + e->kn[i] * e->y[nt + i];
@@ -688,7 +739,7 @@ int fr_elements_newmark(fricreg_structure *s, double dt, double scale, gsl_vecto
     double phi = evaluate(e, c, f, e->g, &rinf);
     int done = 0;
     while (rinf != 0.0 && (done == 0 || rinf > tol) && *iters < s->newton_max && isfinite(phi)) {
-        if (!direction(e, c))
+        if (e->overflow != 0 || !direction(e, c)) /* no direction from an infinite tangent */
             break;
         ++*iters;
         ++done;
@@ -714,6 +765,8 @@ int fr_elements_newmark(fricreg_structure *s, double dt, double scale, gsl_vecto
             break;
         }
     }
+    if (e->overflow != 0 && !(rinf <= tol)) /* at the last iterate: its force or the tangent */
+        return fr_elements_overflow(s, s->t + dt);
     if (!isfinite(phi))
         return fr_fail(s, FRICREG_EDIVERGED, "step: the elements' residual at t = %g is not finite",
                        s->t + dt);

@@ -85,8 +85,10 @@ int fr_structure_equilibrium(fricreg_structure *s)
 {
     fr_structure_effective_load(s, s->t, s->ptil);
     fr_structure_net_force(s, s->ptil, s->u, s->v, s->work);
-    fr_elements_equilibrium(s, s->work);
-    int status = fr_structure_motion(s, s->work, s->v, s->f, s->a);
+    int status = fr_elements_equilibrium(s, s->work);
+    if (status != FRICREG_OK)
+        return status;
+    status = fr_structure_motion(s, s->work, s->v, s->f, s->a);
     if (status != FRICREG_OK)
         return fr_fail(s, status, "step: friction at t = %g: %s", s->t, fricreg_ctx_errmsg(s->ctx));
     s->stick_valid = 0; /* bounds, law or model may have changed */

@@ -96,6 +96,12 @@ struct fr_elements {
     int crossed;   /* the last committed step opened or closed an element: its energy is not
                       exact (warnings.c) */
     struct fr_joint joint; /* beside contacts of bound > 0 (joint_step.c) */
+
+    /* The first 1-D element whose sliders' sums overflowed at the last fr_elements_residual:
+     * 1 + its index (0: none), which sum ("force", "tangent" or "df/dg") and its value. */
+    size_t overflow;
+    const char *overflow_what;
+    double overflow_sum;
 };
 
 struct fricreg_structure {
@@ -320,13 +326,15 @@ double fr_ground_pgv(const fricreg_structure *s);
 
 /* jenkins.c: the elements' part of the step. elements_equilibrium: fe at q = J_e u from wc
  * (committed: the mapping is idempotent), w -= J_e^T fe. elements_explicit: fe1, wt at
- * J_e u1, w -= J_e^T fe1 (central difference). elements_newmark: Newton on fe1 with b[n] the
+ * J_e u1, w -= J_e^T fe1 (central difference); both FRICREG_ENONFINITE where an element's
+ * sliders' sum overflows. elements_newmark: Newton on fe1 with b[n] the
  * step's right-hand side K_eff x = b - w J_e^T fe1 (before the forward solve), until max |G|
  * is within newton_tol times the larger of scale and max |fe|; then b -= (1 + alpha) J_e^T fe1. elements_commit after an accepted step. */
 int fr_elements_compliance(fricreg_structure *s, int joint);
 /* G = fe - F(y) at the coordinates e->y (formed by the caller), into g[nc]; the tangents into
  * e->tan (and e->tang), the trial sliders into e->wt, e->fs1; returns ||G||_2, *rinf its
- * largest entry (NaN propagates). */
+ * largest entry (NaN propagates). An element whose sliders' sums overflow is recorded in
+ * e->overflow (fr_elements_overflow reports it). */
 double fr_elements_residual(struct fr_elements *e, const double fe[], double g[], double *rinf);
 /* The column of coordinate k's second tangent entry (tang[k]): its partner in a 2-D element,
  * its normal coordinate under a normal law; nc if it has none. */
@@ -342,11 +350,14 @@ static inline size_t fr_elements_normal_column(const struct fr_elements *e, size
 {
     return e->tagn != NULL && k < 2 * e->me ? 2 * e->me + k / 2 : e->nc;
 }
-void fr_elements_equilibrium(fricreg_structure *s, gsl_vector *w);
-void fr_elements_explicit(fricreg_structure *s, const gsl_vector *u1, gsl_vector *w);
+int fr_elements_equilibrium(fricreg_structure *s, gsl_vector *w);
+int fr_elements_explicit(fricreg_structure *s, const gsl_vector *u1, gsl_vector *w, double t);
 int fr_elements_newmark(fricreg_structure *s, double dt, double scale, gsl_vector *b,
                         int *converged, int *iters);
 void fr_elements_commit(fricreg_structure *s);
+/* FRICREG_ENONFINITE with a message naming the element whose sums overflowed at the last
+ * fr_elements_residual (at time t), or FRICREG_OK if none did. */
+int fr_elements_overflow(fricreg_structure *s, double t);
 /* fe and wc into their held copies (restore = 0), or back (restore = 1). */
 void fr_elements_hold(fricreg_structure *s, int restore);
 void fr_elements_reset(fricreg_structure *s);
