@@ -342,16 +342,15 @@ FRICREG_API int fricreg_hb_set_continuation(fricreg_hb *hb, double ds, double ds
 /** Solve the HB equations (R) at the excitation frequency omega by Newton's method with a
  *  backtracking line search on |R|², from the guess q0 or, if q0 is NULL, the solution reached
  *  continuously from the linear regime along the branch in the excitation level λ at omega
- *  (on an S-curve in λ, the lower branch). First the start until 1.6: Newton at λ = 0 and at
- *  λ = 1 from the response with every element stuck (then, should that fail, with every
- *  element slipping freely); if the line between the two solutions solves (R) at λ = 1e-3
- *  (Newton's tolerance), every element keeps to one linear regime along it (stuck, closed or
- *  open: each a set of inequalities linear in λ), the line is the branch and its end is
- *  returned. Otherwise fricreg_hb_continue_level's continuation from λ = 1e-3 to 1, its points
- *  not stored (the branch of fricreg_hb_continue and its bifurcations are kept), and should
- *  that fail, the start until 1.6's solution at λ = 1 if it had one. To have the start until
- *  1.6 alone, pass a zero q0 (Newton's first step from zero, where the elements are stuck, is
- *  the stuck response). The solution is kept for fricreg_hb_displacement and, with stability
+ *  (on an S-curve in λ, the lower branch). First, 1.6's start: Newton at λ = 0 and at λ = 1
+ *  from the response with every element stuck (then, should that fail, with every element
+ *  slipping freely); if the line between the two solutions solves (R) at λ = 1e-3 (Newton's
+ *  tolerance), every element keeps to one linear regime along it (stuck, closed or open: each
+ *  a set of inequalities linear in λ), the line is the branch and its end is returned.
+ *  Otherwise fricreg_hb_continue_level's continuation from λ = 1e-3 to 1, its points not
+ *  stored (the branch of fricreg_hb_continue and its bifurcations are kept), and should that
+ *  fail, 1.6's solution at λ = 1 if it had one. For 1.6's start alone, pass a zero q0
+ *  (Newton's first step from zero, where the elements are stuck, is the stuck response). The solution is kept for fricreg_hb_displacement and, with stability
  *  on (fricreg_hb_set_stability), its stability for fricreg_hb_point_stability with
  *  FRICREG_HB_SOLUTION. Cost without a guess: three Newton solves on the linear branch;
  *  otherwise the continuation's points (75 to 170 on bench/hb_level.c's gap pair, 30 to 200
