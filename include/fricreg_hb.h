@@ -350,8 +350,9 @@ FRICREG_API int fricreg_hb_set_continuation(fricreg_hb *hb, double ds, double ds
  *  Otherwise fricreg_hb_continue_level's continuation from λ = 1e-3 to 1, its points not
  *  stored (the branch of fricreg_hb_continue and its bifurcations are kept), and should that
  *  fail, 1.6's solution at λ = 1 if it had one. For 1.6's start alone, pass a zero q0
- *  (Newton's first step from zero, where the elements are stuck, is the stuck response). The solution is kept for fricreg_hb_displacement and, with stability
- *  on (fricreg_hb_set_stability), its stability for fricreg_hb_point_stability with
+ *  (Newton's first step from zero, where the elements are stuck, is the stuck response).
+ *  The solution is kept for fricreg_hb_displacement and, with stability on
+ *  (fricreg_hb_set_stability), its stability for fricreg_hb_point_stability with
  *  FRICREG_HB_SOLUTION. Cost without a guess: three Newton solves on the linear branch;
  *  otherwise the continuation's points (75 to 170 on bench/hb_level.c's gap pair, 30 to 200
  *  times the old start's time), each a few Newton iterations at the one factorization of
