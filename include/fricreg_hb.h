@@ -464,7 +464,8 @@ enum fricreg_hb_nma_damping {
  *  FRICREG_EINTEGRATOR as fricreg_hb_solve; FRICREG_ENOMEM. Allocates (npoints (nq + 3) +
  *  (nq + 2)² + O(H m² + ndof)) doubles, and 4 ndof² doubles while the linear mode is found. On
  *  failure after the arguments' checks the earlier points are gone and the points reached are
- *  kept. Since 1.7 (FRICREG_1.7). */
+ *  kept, except when the first allocation (the backbone's own state) fails: then the earlier
+ *  points stay. Since 1.7 (FRICREG_1.7). */
 FRICREG_API int fricreg_hb_nma(fricreg_hb *hb, size_t mode, int damping, double a0, double a1,
                                size_t npoints);
 

@@ -2367,6 +2367,172 @@ START_TEST(test_hb_solve_continue)
 }
 END_TEST
 
+/* ---- Harmonic balance: every allocation inside a backbone and a level continuation -----------
+ *
+ * As test_hb_solve_continue, for fricreg_hb_nma (its state, the linear mode's eigenproblem, a
+ * sparse model's factors), fricreg_hb_nma_point with the harmonics (a sparse model refactors)
+ * and fricreg_hb_continue_level, on hb_case_new's models. Each failed case must:
+ *   - return FRICREG_OK or FRICREG_ENOMEM from each call, the failure recorded in the driver;
+ *   - a failed backbone: the points reached kept (fricreg_hb.h), each equal to the run's with
+ *     no failure, bit for bit; a failed point: the caller's x untouched; a failed level branch:
+ *     its points reached kept, likewise;
+ *   - a call that returned OK: its results equal the run's with no failure, bit for bit;
+ *   - the same driver, run again with no failure, gives the reference run bit for bit;
+ *   - never call GSL's error handler, leave no block allocated. */
+
+#define NMA_POINTS 6
+#define NMA_X_POINT 3         /* the point whose harmonics are read: the element slips there */
+#define HB_NOT_CALLED (-1000) /* the point's status when the backbone has no such point */
+
+struct hb_mode_run {
+    int status[3]; /* nma, nma_point(NMA_X_POINT, with x), continue_level */
+    size_t nnma, npts;
+    double nma[3 * NMA_POINTS];     /* amplitude, omega, zeta per point */
+    double x[14];                   /* the harmonics of point NMA_X_POINT, 2 dofs, H = 3 */
+    double pts[4 * HB_MAX_POINTS]; /* omega, level, rms[2] per point */
+};
+
+/* The backbone of mode 0 through the element's slip (it slips from a = 0.17), the harmonics
+ * of one of its points, then the S-curve at Omega = 1.1 from level 0.5 to 2.5. */
+static void hb_mode_play(fricreg_hb *hb, const struct hb_case *c, struct hb_mode_run *r)
+{
+    size_t nq = c->kind == HB_LIFTOFF ? 14 : 7;
+    memset(r, 0, sizeof *r);
+    for (size_t k = 0; k < 14; k++)
+        r->x[k] = HB_UNTOUCHED;
+    r->status[0] = fricreg_hb_nma(hb, 0, FRICREG_HB_NMA_DAMPING_MATRIX, 0.05, 1.0, NMA_POINTS);
+    int was_paused = paused;
+    paused = 1; /* the getters without x allocate nothing */
+    r->nnma = fricreg_hb_nma_points(hb);
+    for (size_t k = 0; k < r->nnma && k < NMA_POINTS; k++)
+        if (fricreg_hb_nma_point(hb, k, &r->nma[3 * k], &r->nma[3 * k + 1], &r->nma[3 * k + 2], 0,
+                                 0, NULL) != FRICREG_OK)
+            NOTE("backbone point %zu of %zu not readable", k, r->nnma);
+    paused = was_paused;
+    double a, w, z;
+    r->status[1] = r->nnma > NMA_X_POINT
+                       ? fricreg_hb_nma_point(hb, NMA_X_POINT, &a, &w, &z, 2, 7, r->x)
+                       : HB_NOT_CALLED;
+    r->status[2] = fricreg_hb_continue_level(hb, 1.1, 0.5, 2.5, nq, NULL);
+    for (int i = 0; i < 3; i++)
+        if (r->status[i] != FRICREG_OK && r->status[i] != HB_NOT_CALLED &&
+            fricreg_hb_errcode(hb) != r->status[i] && i != 1)
+            NOTE("call %d returned %d, but %d recorded", i, r->status[i], fricreg_hb_errcode(hb));
+    paused = 1;
+    r->npts = fricreg_hb_points(hb);
+    if (r->npts > HB_MAX_POINTS)
+        NOTE("%zu points: more than the test keeps", r->npts);
+    for (size_t k = 0; k < r->npts && k < HB_MAX_POINTS; k++)
+        if (fricreg_hb_point(hb, k, &r->pts[4 * k], 2, &r->pts[4 * k + 2]) != FRICREG_OK ||
+            fricreg_hb_point_level(hb, k, &r->pts[4 * k + 1]) != FRICREG_OK)
+            NOTE("level point %zu of %zu not readable", k, r->npts);
+    paused = was_paused;
+}
+
+/* What a failed case's run must show against the reference ref; "" if it does. */
+static const char *hb_mode_judge(const struct hb_mode_run *r, const struct hb_mode_run *ref)
+{
+    for (int i = 0; i < 3; i++)
+        if (r->status[i] != FRICREG_OK && r->status[i] != FRICREG_ENOMEM &&
+            !(i == 1 && r->status[i] == HB_NOT_CALLED && r->nnma <= NMA_X_POINT))
+            return "a call returned neither FRICREG_OK nor FRICREG_ENOMEM";
+    if (r->status[0] == FRICREG_OK && r->nnma != ref->nnma)
+        return "nma: OK with another number of points";
+    if (r->nnma > ref->nnma || !same_bits(r->nma, ref->nma, 3 * r->nnma))
+        return "nma: the points kept differ from the run's with no failure";
+    if (r->status[1] == FRICREG_OK ? !same_bits(r->x, ref->x, 14) : !hb_untouched(r->x, 14))
+        return r->status[1] == FRICREG_OK ? "nma_point: OK with other harmonics"
+                                          : "nma_point failed but wrote x";
+    if (r->status[2] == FRICREG_OK && r->npts != ref->npts)
+        return "continue_level: OK with another number of points";
+    if (r->npts > ref->npts || !same_bits(r->pts, ref->pts, 4 * r->npts))
+        return "continue_level: the points kept differ from the run's with no failure";
+    return "";
+}
+
+static const struct hb_case hb_mode_cases[] = {
+    {"hb modes, dense, Jenkins", 0, HB_JENKINS, 0, 1.1, 1.0, 1.2, 0.05, 0.05, HB_MAX_POINTS},
+    {"hb modes, dense, lift-off", 0, HB_LIFTOFF, 0, 1.1, 1.0, 1.2, 0.05, 0.05, HB_MAX_POINTS},
+    {"hb modes, sparse, Iwan", 1, HB_IWAN, 0, 1.1, 1.0, 1.2, 0.5, 1.0, HB_MAX_POINTS},
+};
+
+START_TEST(test_hb_nma_level)
+{
+    const struct hb_case *c = &hb_mode_cases[_i];
+    static struct hb_mode_run ref, again, got;
+    gsl_set_error_handler(count_gsl_error);
+    gsl_handler_calls = 0;
+    violation[0] = '\0';
+    long live_before = live;
+    hook_arm(0);
+    paused = 1;
+    fricreg_hb *hb = hb_case_new(c);
+    if (hb == NULL) {
+        hook_disarm();
+        ck_abort_msg("%s: the set-up failed with no failure injected", c->name);
+    }
+    paused = 0;
+    hb_mode_play(hb, c, &ref);
+    long n = n_allocs;
+    paused = 1;
+    hb_mode_play(hb, c, &again);
+    fricreg_hb_free(hb);
+    hook_disarm();
+    for (int i = 0; i < 3; i++)
+        ck_assert_msg(ref.status[i] == FRICREG_OK, "%s: call %d returned %d with no failure",
+                      c->name, i, ref.status[i]);
+    ck_assert_msg(ref.nnma == NMA_POINTS && ref.npts > 2, "%s: %zu backbone points, %zu level",
+                  c->name, ref.nnma, ref.npts);
+    ck_assert_msg(violation[0] == '\0', "%s: %s", c->name, violation);
+    ck_assert_msg(memcmp(&ref, &again, sizeof ref) == 0, "%s: a second run differs", c->name);
+    ck_assert_int_eq(live, live_before);
+    ck_assert_msg(n > 0, "%s: allocates nothing, so the loop tests nothing", c->name);
+    long enomem = 0, ok = 0, broken = 0;
+    char first[512] = "";
+    for (long k = 1; k <= n; k = next_failure(k, n)) {
+        live_before = live;
+        violation[0] = '\0';
+        gsl_handler_calls = 0;
+        hook_arm(k);
+        paused = 1;
+        hb = hb_case_new(c);
+        paused = 0;
+        hb_mode_play(hb, c, &got);
+        paused = 1;
+        long failed = n_failed;
+        const char *why = hb_mode_judge(&got, &ref);
+        if (why[0] == '\0') {
+            hb_mode_play(hb, c, &again);
+            if (memcmp(&again, &ref, sizeof ref) != 0)
+                why = "run again with no failure, the driver gives other results";
+        }
+        fricreg_hb_free(hb);
+        hook_disarm();
+        if (why[0] == '\0' && failed != 1)
+            why = "the allocation was not reached";
+        if (why[0] == '\0' && violation[0] != '\0')
+            why = violation;
+        if (why[0] == '\0' && gsl_handler_calls != 0)
+            why = gsl_handler_reason;
+        if (why[0] == '\0' && live != live_before)
+            why = "a block leaked";
+        int any = 0;
+        for (int i = 0; i < 3; i++)
+            any |= got.status[i] == FRICREG_ENOMEM;
+        enomem += any;
+        ok += !any;
+        if (why[0] != '\0' && broken++ == 0)
+            snprintf(first, sizeof first, "allocation %ld of %ld: %s (statuses %d %d %d)", k, n,
+                     why, got.status[0], got.status[1], got.status[2]);
+    }
+    printf("%s: %ld allocations in nma, nma_point and continue_level, %zu + %zu points: %ld "
+           "ENOMEM, %ld OK, %ld broken\n",
+           c->name, n, ref.nnma, ref.npts, enomem, ok, broken);
+    fflush(stdout);
+    ck_assert_msg(broken == 0, "%s: %ld broken, the first %s", c->name, broken, first);
+}
+END_TEST
+
 /* The AFT's six evaluations, each path, with and without the Jacobian, and the Iwan elements'
  * setters, trials, commit, reset and getters, make no allocation at all (their headers: all
  * memory is allocated at create), so no allocation can fail inside them; the create scripts
@@ -3119,6 +3285,10 @@ static Suite *alloc_suite(void)
     TCase *hb = tcase_create("harmonic_balance"); /* alone: CK_RUN_CASE=harmonic_balance */
     tcase_add_loop_test(hb, test_hb_solve_continue, 0, (int)(sizeof hb_cases / sizeof hb_cases[0]));
     suite_add_tcase(s, hb);
+    TCase *modes = tcase_create("harmonic_balance_modes"); /* backbones, level branches */
+    tcase_add_loop_test(modes, test_hb_nma_level, 0,
+                        (int)(sizeof hb_mode_cases / sizeof hb_mode_cases[0]));
+    suite_add_tcase(s, modes);
     return s;
 }
 
