@@ -53,7 +53,7 @@ static const double pi = 3.14159265358979323846;
 static void half_cycle(double A, double *A_next, double *duration)
 {
     const double w = A - DELTA, xe = KT * w / (K + KT), ws = sqrt(K + KT);
-    const double x1 = A - 2.0 * DELTA; /* the force reaches −mu N */
+    const double x1 = A - 2.0 * DELTA;     /* the force reaches −mu N */
     ck_assert_double_lt(2.0 * xe - A, x1); /* the stuck cosine reaches it: the element slips */
     const double stuck = acos((x1 - xe) / (A - xe)) / ws;
     const double v1 = -(A - xe) * ws * sin(ws * stuck);
@@ -128,7 +128,7 @@ static fricreg_hb *oscillator(int harmonics)
 /* The backbone at a = 100, 200, 400 (H = 7) against the exact decay's envelope.
  *
  * The decay's own accuracy first: est(m) − est(1) grows as m² (a centred window), checked by
- * est(4) − est(2) being 3 to 5 times est(2) − est(1) (4 for an exact m²; measured 4.0–4.5);
+ * est(4) − est(2) being 3 to 5 times est(2) − est(1) (4 for an exact m²; measured 4.00–4.04);
  * so acc = |est(2) − est(1)| is three times the bias of est(1). Measured acc: ω 4.8e-6, 4.5e-7,
  * 4.0e-8; ζ 1.6e-5, 2.1e-6, 2.6e-7.
  *
