@@ -2387,8 +2387,8 @@ END_TEST
 struct hb_mode_run {
     int status[3]; /* nma, nma_point(NMA_X_POINT, with x), continue_level */
     size_t nnma, npts;
-    double nma[3 * NMA_POINTS];     /* amplitude, omega, zeta per point */
-    double x[14];                   /* the harmonics of point NMA_X_POINT, 2 dofs, H = 3 */
+    double nma[3 * NMA_POINTS];    /* amplitude, omega, zeta per point */
+    double x[14];                  /* the harmonics of point NMA_X_POINT, 2 dofs, H = 3 */
     double pts[4 * HB_MAX_POINTS]; /* omega, level, rms[2] per point */
 };
 
