@@ -2381,7 +2381,7 @@ END_TEST
  *   - never call GSL's error handler, leave no block allocated. */
 
 #define NMA_POINTS 6
-#define NMA_X_POINT 3         /* the point whose harmonics are read: the element slips there */
+#define NMA_X_POINT 4         /* the point whose harmonics are read: the element slips there */
 #define HB_NOT_CALLED (-1000) /* the point's status when the backbone has no such point */
 
 struct hb_mode_run {
@@ -2392,15 +2392,17 @@ struct hb_mode_run {
     double pts[4 * HB_MAX_POINTS]; /* omega, level, rms[2] per point */
 };
 
-/* The backbone of mode 0 through the element's slip (it slips from a = 0.17), the harmonics
- * of one of its points, then the S-curve at Omega = 1.1 from level 0.5 to 2.5. */
+/* The backbone of mode 0 through the element's first slip (between a = 0.17 and 0.26), to
+ * a = 1 (sparse: 0.4, for fewer factors), the harmonics of its fifth point (slipping), then
+ * the S-curve at Omega = 1.1 from level 0.5 to 2.5. */
 static void hb_mode_play(fricreg_hb *hb, const struct hb_case *c, struct hb_mode_run *r)
 {
     size_t nq = c->kind == HB_LIFTOFF ? 14 : 7;
     memset(r, 0, sizeof *r);
     for (size_t k = 0; k < 14; k++)
         r->x[k] = HB_UNTOUCHED;
-    r->status[0] = fricreg_hb_nma(hb, 0, FRICREG_HB_NMA_DAMPING_MATRIX, 0.05, 1.0, NMA_POINTS);
+    r->status[0] = fricreg_hb_nma(hb, 0, FRICREG_HB_NMA_DAMPING_MATRIX, 0.05, c->sparse ? 0.4 : 1.0,
+                                  NMA_POINTS);
     int was_paused = paused;
     paused = 1; /* the getters without x allocate nothing */
     r->nnma = fricreg_hb_nma_points(hb);
