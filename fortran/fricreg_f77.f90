@@ -38,6 +38,18 @@ subroutine frstre(code, msg, stat)
   stat = FRICREG_OK
 end subroutine frstre
 
+!> FRWARN(CODE, NAME, STAT): short fixed name of warning code CODE (FRICREG_WARN_*: 'eps_large',
+!> ...; 'unknown' if unknown), blank-padded or truncated (fricreg_warning_name).
+subroutine frwarn(code, name, stat)
+  use fricreg_c
+  implicit none
+  integer, intent(in) :: code
+  character(len=*), intent(out) :: name
+  integer, intent(out) :: stat
+  name = fricreg_c_string(fricreg_warning_name(int(code, c_int)))
+  stat = FRICREG_OK
+end subroutine frwarn
+
 !> FRLAWE(LAW, V, FEQ, MUN, EPS, F, STAT): one law at one contact (fricreg_law_eval).
 subroutine frlawe(law, v, feq, mun, eps, f, stat)
   use fricreg_c

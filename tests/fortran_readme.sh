@@ -4,7 +4,8 @@
 # (fricreg.F90) in its type's rows of the table (those from the row that names the type in bold
 # to the next bold row), as `name(` or `obj%name(`; each name of the module's `public ::`
 # lists (types, procedures, the iso_c_binding names it passes on); and each F77 entry point (fricreg_f77.f90, fricreg_sim_f77.f90,
-# fricreg_joints_f77.f90, fricreg_structure_f77.f90, fricreg_hb_f77.f90, fricreg_f77_check.f90)
+# fricreg_joints_f77.f90, fricreg_structure_f77.f90, fricreg_hb_f77.f90, fricreg_f77_check.f90,
+# fricreg_warnings_f77.f90)
 # as `FRNAME(`, named once only across
 # the files (external names share one space: a second definition would fail at link time, or
 # silently take the first). One awk reads the README, the module and the F77 files: a grep per
@@ -14,7 +15,7 @@ readme=$root/fortran/README.md module=$root/fortran/fricreg.F90
 [ -f "$readme" ] && [ -f "$module" ] || { echo "FAIL: no $readme or $module"; exit 1; }
 
 # The F77 files, in this order; a missing one fails (awk is given those that exist).
-f77_files="fricreg_f77.f90 fricreg_joints_f77.f90 fricreg_sim_f77.f90 fricreg_structure_f77.f90 fricreg_hb_f77.f90 fricreg_f77_check.f90"
+f77_files="fricreg_f77.f90 fricreg_joints_f77.f90 fricreg_sim_f77.f90 fricreg_structure_f77.f90 fricreg_hb_f77.f90 fricreg_f77_check.f90 fricreg_warnings_f77.f90"
 present= missing=
 for f in $f77_files; do
     if [ -f "$root/fortran/$f" ]; then present="$present $root/fortran/$f"; else missing="$missing $f"; fi
