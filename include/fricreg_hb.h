@@ -498,8 +498,9 @@ FRICREG_API int fricreg_hb_nma_point(fricreg_hb *hb, size_t i, double *amplitude
 /** \} */
 
 /** Follow the periodic response from omega0 to omega1 by pseudo-arclength continuation in Ω
- *  (Keller's, Krack & Gross Ch. 5): from the solution at omega0 (fricreg_hb_solve's, from q0
- *  or the stuck guess), a tangent predictor and a Newton corrector with a line search on (R)
+ *  (Keller's, Krack & Gross Ch. 5): from the solution at omega0 (fricreg_hb_solve's: from q0,
+ *  or without one the solution reached from the linear regime along the excitation level, as
+ *  fricreg_hb_solve's with q0 NULL; a zero q0 gives 1.6's start), a tangent predictor and a Newton corrector with a line search on (R)
  *  bordered by the arclength condition, with the step control of fricreg_hb_set_continuation
  *  (the parametrization passes turning points in Ω, and the kinks of the branch where the
  *  elements' stick/slip or contact pattern changes); the last point is solved at omega1

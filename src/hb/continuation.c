@@ -692,8 +692,21 @@ int fricreg_hb_continue(fricreg_hb *hb, double omega0, double omega1, size_t nq,
                          omega1, omega0);
     if (status != FRICREG_OK)
         return status;
+    struct fr_error before = hb->err; /* a success keeps it: a failed start is not the call's */
+    if (q0 == NULL) {
+        /* from fricreg_hb_solve's solution without a guess: the branch reached from the
+         * linear regime; should that fail, the guesses at omega0 itself */
+        status = fr_hb_level_start(hb, fn, omega0);
+        if (status == FRICREG_ENOMEM)
+            return status;
+        if (status == FRICREG_OK)
+            q0 = hb->qsol;
+    }
     struct branch b = {.par = "Omega", .keep = 1};
-    return run(hb, fn, &b, omega0, omega1, q0);
+    status = run(hb, fn, &b, omega0, omega1, q0);
+    if (status == FRICREG_OK)
+        hb->err = before;
+    return status;
 }
 
 int fricreg_hb_continue_level(fricreg_hb *hb, double omega, double level0, double level1, size_t nq,
