@@ -246,6 +246,12 @@ START_TEST(point_solve_follows_the_level)
     /* Omega = 14: Newton from the stuck response finds nothing; the level's branch does */
     ck_assert_int_eq(fricreg_hb_solve(hb, 14.0, 2 * NC, zero, q), FRICREG_EWORK);
     solve_is_continuation(hb, 14.0, &rms);
+    /* a branch without a guess begins at that solution */
+    double w0 = 0.0, r0[2];
+    ck_assert_int_eq(fricreg_hb_continue(hb, 14.0, 14.05, 2 * NC, NULL), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_point(hb, 0, &w0, 2, r0), FRICREG_OK);
+    ck_assert_double_eq(w0, 14.0);
+    ck_assert_double_le(fabs(r0[0] - rms), 1e-8 * rms);
     /* Omega = 15.2: three solutions at λ = 1 on the S-curve; the solve returns the lowest */
     solve_is_continuation(hb, 15.2, &rms);
     ck_assert_int_eq(fricreg_hb_continue_level(hb, 15.2, 0.05, 2.0, 2 * NC, NULL), FRICREG_OK);
