@@ -339,6 +339,67 @@ FRICREG_API int fricreg_hb_set_newton(fricreg_hb *hb, double tol, int max_iter);
 FRICREG_API int fricreg_hb_set_continuation(fricreg_hb *hb, double ds, double ds_min, double ds_max,
                                             size_t max_points);
 
+/** \name Monitoring and stopping a solve
+ *  Every solving call (fricreg_hb_solve, fricreg_hb_continue, fricreg_hb_continue_level,
+ *  fricreg_hb_peak, fricreg_hb_nma) spends its work in Newton iterations: at one frequency,
+ *  in the continuation's corrector (its points, fricreg_hb_solve's start without a guess, the
+ *  bifurcations' bisection, the peak's location) and in a nonlinear mode's points. Before each
+ *  Newton step the driver counts it and calls the monitor (fricreg_hb_set_monitor); a
+ *  nonzero return, or more steps in one call than fricreg_hb_set_max_iterations allows, stops
+ *  the call there.
+ *
+ *  A stopped call returns FRICREG_EWORK, its message "<function>: stopped by the monitor after
+ *  N Newton iterations" (or naming the bound), and leaves what its other failures leave: no
+ *  solution is written (fricreg_hb_solve's q and the kept solution are untouched, as
+ *  fricreg_hb_peak's omega and rms); a continuation keeps the points reached, which are the
+ *  first points of the same call unstopped, bit for bit, with no bifurcations located
+ *  (fricreg_hb_bifurcations is 0); fricreg_hb_nma keeps the backbone's points reached. No
+ *  fallback or retry of the call runs after a stop. Between two Newton steps the work is
+ *  bounded (a residual, a real LU of order m (2H + 1) + 2, at most 11 residuals of the line
+ *  search, and at a new frequency the H + 1 factors and at a stored point Hill's method), so a
+ *  bound on the steps bounds the call.
+ *  \{ */
+
+/** Called before each Newton step of a solving call (the group's comment).
+ *
+ *  user        fricreg_hb_set_monitor's, unchanged.
+ *  iterations  the Newton steps of this call so far, this one included: 1 at the first call,
+ *              one more at each.
+ *  parameter   the continued parameter at the iterate: Ω (rad/s) in fricreg_hb_continue and
+ *              fricreg_hb_peak; the excitation level λ in fricreg_hb_continue_level and in
+ *              fricreg_hb_solve (1 with a guess; along its start's branch in λ without one);
+ *              the modal amplitude a in fricreg_hb_nma.
+ *  residual    the iterate's largest residual entry over Newton's bound (fricreg_hb_set_newton:
+ *              converged at most 1), nondimensional.
+ *
+ *  Return 0 to go on, nonzero to stop the call (FRICREG_EWORK). The monitor may call the
+ *  getters (fricreg_hb_points, fricreg_hb_point, fricreg_hb_point_level,
+ *  fricreg_hb_point_stability, fricreg_hb_bifurcations, fricreg_hb_bifurcation,
+ *  fricreg_hb_bifurcation_level, fricreg_hb_nma_points, fricreg_hb_nma_point without x, the
+ *  error getters); any other call on the driver from it returns FRICREG_EINVAL and changes
+ *  nothing; it must not free the driver. Since 1.7 (FRICREG_1.7). */
+typedef int (*fricreg_hb_monitor)(void *user, int64_t iterations, double parameter,
+                                  double residual);
+
+/** Install the monitor of the solving calls (NULL, the default, removes it); user is passed
+ *  back unchanged. Without a monitor the calls' results are those of 1.6 bit for bit, and a
+ *  monitor that always returns 0 does not change them either.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb is NULL; FRICREG_EINVAL if called from the monitor.
+ *  Since 1.7 (FRICREG_1.7). */
+FRICREG_API int fricreg_hb_set_monitor(fricreg_hb *hb, fricreg_hb_monitor fn, void *user);
+
+/** Bound the Newton steps one solving call may take (the group's comment) at total >= 1, or
+ *  remove the bound with 0 (the default). A call that would take more returns FRICREG_EWORK
+ *  as if the monitor had stopped it, its message naming the bound; the count restarts at each
+ *  call.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb is NULL; FRICREG_EINVAL if total < 0 or called
+ *  from the monitor. Since 1.7 (FRICREG_1.7). */
+FRICREG_API int fricreg_hb_set_max_iterations(fricreg_hb *hb, int64_t total);
+
+/** \} */
+
 /** Solve the HB equations (R) at the excitation frequency omega by Newton's method with a
  *  backtracking line search on |R|², from the guess q0 or, if q0 is NULL, the solution reached
  *  continuously from the linear regime along the branch in the excitation level λ at omega
