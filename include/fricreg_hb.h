@@ -65,7 +65,10 @@
  * Conventions are those of fricreg.h: int results are fricreg_status codes, nothing is
  * printed, a failed call leaves the caller's arrays untouched, one object per thread. The
  * object keeps the status and a message of its last failed call (fricreg_hb_errcode,
- * fricreg_hb_errmsg, fricreg_hb_errmsg_copy). Since 1.6 (FRICREG_1.6).
+ * fricreg_hb_errmsg, fricreg_hb_errmsg_copy). Since 1.7 every solving call can be watched and
+ * stopped (fricreg_hb_set_monitor, fricreg_hb_set_max_iterations: FRICREG_EWORK, the group
+ * "Monitoring and stopping a solve"), and from the monitor every call but the getters returns
+ * FRICREG_EINVAL and changes nothing: that code is in no list below. Since 1.6 (FRICREG_1.6).
  */
 #ifndef FRICREG_HB_H
 #define FRICREG_HB_H
@@ -382,8 +385,8 @@ typedef int (*fricreg_hb_monitor)(void *user, int64_t iterations, double paramet
                                   double residual);
 
 /** Install the monitor of the solving calls (NULL, the default, removes it); user is passed
- *  back unchanged. Without a monitor the calls' results are those of 1.6 bit for bit, and a
- *  monitor that always returns 0 does not change them either.
+ *  back unchanged. A monitor that returns 0 changes no result: the calls' results are those
+ *  without one, bit for bit.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if hb is NULL; FRICREG_EINVAL if called from the monitor.
  *  Since 1.7 (FRICREG_1.7). */
@@ -437,8 +440,9 @@ FRICREG_API int fricreg_hb_set_max_iterations(fricreg_hb *hb, int64_t total);
  *  analysis or factor); FRICREG_EWORK if Newton did not converge within max_iter iterations
  *  (or its line search found no decrease); FRICREG_EINTEGRATOR if the AFT's root solver
  *  failed (fricreg_aft_jenkins_exact) or, stability on, GSL's QR on Hill's matrix did not
- *  converge (fricreg_hb_set_stability). On failure q and the kept solution are untouched. Since
- *  1.6. */
+ *  converge (fricreg_hb_set_stability); FRICREG_EWORK if stopped by the monitor or
+ *  fricreg_hb_set_max_iterations's bound ("Monitoring and stopping a solve": nothing written). On failure q and the kept solution are
+ *  untouched. Since 1.6. */
 FRICREG_API int fricreg_hb_solve(fricreg_hb *hb, double omega, size_t nq, const double q0[],
                                  double q[]);
 
@@ -583,7 +587,9 @@ FRICREG_API int fricreg_hb_nma_point(fricreg_hb *hb, size_t i, double *amplitude
  *  the step fell below ds_min; FRICREG_EWORK if max_points were stored before omega1, or the
  *  branch doubled back on itself (the message says which);
  *  FRICREG_ENOMEM (for the first 64 points before anything changed; for more, later, with the
- *  points so far kept; or UMFPACK's, as fricreg_hb_solve, with the points so far kept). On
+ *  points so far kept; or UMFPACK's, as fricreg_hb_solve, with the points so far kept);
+ *  FRICREG_EWORK if stopped by the monitor or fricreg_hb_set_max_iterations's bound (the points
+ *  reached kept, no bifurcations located: "Monitoring and stopping a solve"). On
  *  failure the points reached so far are kept (fricreg_hb_points
  *  counts them; 0 if the solve at omega0 failed) and fricreg_hb_displacement gives the last
  *  solution. Allocates room for the points, 64 at first, doubling: (1 + ndof + nq + 1)
@@ -618,8 +624,9 @@ FRICREG_API int fricreg_hb_continue(fricreg_hb *hb, double omega0, double omega1
  *  fricreg_hb_solve); FRICREG_ESIZE if nq is not fricreg_hb_solve's; FRICREG_ESINGULAR,
  *  FRICREG_EWORK, FRICREG_EINTEGRATOR as fricreg_hb_solve at level0; FRICREG_EINTEGRATOR if the
  *  step fell below ds_min; FRICREG_EWORK if max_points were stored before level1, or the
- *  branch doubled back on itself; FRICREG_ENOMEM; the points reached kept on failure, all as
- *  fricreg_hb_continue. Allocates as fricreg_hb_continue. Since 1.7 (FRICREG_1.7). */
+ *  branch doubled back on itself, or it was stopped by the monitor or
+ *  fricreg_hb_set_max_iterations's bound; FRICREG_ENOMEM; the points reached kept on failure,
+ *  all as fricreg_hb_continue. Allocates as fricreg_hb_continue. Since 1.7 (FRICREG_1.7). */
 FRICREG_API int fricreg_hb_continue_level(fricreg_hb *hb, double omega, double level0,
                                           double level1, size_t nq, const double q0[]);
 
@@ -669,7 +676,9 @@ FRICREG_API int fricreg_hb_point_level(fricreg_hb *hb, size_t k, double *level);
  *  of range, or there is no branch (no fricreg_hb_continue yet, none of its points stored, or
  *  the model or elements changed since; after a failed continuation the points reached
  *  serve); FRICREG_EWORK if a corrector did not converge within the Newton settings'
- *  iterations; FRICREG_ESINGULAR, FRICREG_EINTEGRATOR, FRICREG_ENOMEM as fricreg_hb_solve;
+ *  iterations, or the location was stopped by the monitor or fricreg_hb_set_max_iterations's
+ *  bound (omega and rms not written); FRICREG_ESINGULAR, FRICREG_EINTEGRATOR, FRICREG_ENOMEM as
+ *  fricreg_hb_solve;
  *  FRICREG_EINVAL if the branch is fricreg_hb_continue_level's (in λ, not Ω). Since 1.7
  *  (FRICREG_1.7). */
 FRICREG_API int fricreg_hb_peak(fricreg_hb *hb, size_t dof, double *omega, double *rms);
