@@ -254,8 +254,8 @@ START_TEST(nma_stopped)
                      FRICREG_OK);
     ck_assert_uint_eq(fricreg_hb_nma_points(hb), NP);
     for (size_t i = 0; i < NP; i++)
-        ck_assert_int_eq(fricreg_hb_nma_point(hb, i, &ref[3 * i], &ref[3 * i + 1],
-                                              &ref[3 * i + 2], 0, 0, NULL),
+        ck_assert_int_eq(fricreg_hb_nma_point(hb, i, &ref[3 * i], &ref[3 * i + 1], &ref[3 * i + 2],
+                                              0, 0, NULL),
                          FRICREG_OK);
     struct watch w = watching(hb, 0);
     ck_assert_int_eq(fricreg_hb_set_monitor(hb, monitor, &w), FRICREG_OK);
@@ -264,8 +264,8 @@ START_TEST(nma_stopped)
     ck_assert(w.increasing);
     ck_assert(fabs(w.last_parameter - 5.0) < 1e-12); /* the amplitude, exp(log a1) */
     for (size_t i = 0; i < NP; i++) {
-        ck_assert_int_eq(fricreg_hb_nma_point(hb, i, &got[3 * i], &got[3 * i + 1],
-                                              &got[3 * i + 2], 0, 0, NULL),
+        ck_assert_int_eq(fricreg_hb_nma_point(hb, i, &got[3 * i], &got[3 * i + 1], &got[3 * i + 2],
+                                              0, 0, NULL),
                          FRICREG_OK);
     }
     ck_assert_mem_eq(got, ref, sizeof ref);
@@ -279,8 +279,8 @@ START_TEST(nma_stopped)
     size_t K = fricreg_hb_nma_points(hb);
     ck_assert(K >= 1 && K < NP);
     for (size_t i = 0; i < K; i++) {
-        ck_assert_int_eq(fricreg_hb_nma_point(hb, i, &got[3 * i], &got[3 * i + 1],
-                                              &got[3 * i + 2], 0, 0, NULL),
+        ck_assert_int_eq(fricreg_hb_nma_point(hb, i, &got[3 * i], &got[3 * i + 1], &got[3 * i + 2],
+                                              0, 0, NULL),
                          FRICREG_OK);
         ck_assert_mem_eq(&got[3 * i], &ref[3 * i], 3 * sizeof(double));
     }

@@ -39,7 +39,7 @@ int cli_deadline_report(const struct cli_deadline *d, const char *command, const
 {
     if (!d->passed)
         return 0;
-    fprintf(stderr, "fricreg-sim: %s: --max-seconds %g passed: stopped (%s)\n", command,
-            d->seconds, progress);
+    fprintf(stderr, "fricreg-sim: %s: --max-seconds %g passed: stopped (%s)\n", command, d->seconds,
+            progress);
     return 1;
 }

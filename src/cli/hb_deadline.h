@@ -16,12 +16,14 @@ struct cli_deadline {
 };
 
 /* --max-seconds's row over d (a struct cli_deadline *). */
-#define CLI_DEADLINE_OPTION(d)                                                                 \
-    {"--max-seconds", CLI_NONNEGATIVE, .slot = &(d)->seconds, .given = &(d)->given,           \
-     .meta = "S",                                                                             \
-     .help = "stop after S seconds of wall-clock time, at the next Newton step, with a "      \
-             "message and exit status 1 (nothing on stdout); 0 stops at the first step",      \
-     .dflt = "none"}
+#define CLI_DEADLINE_OPTION(d)                                                                  \
+    {                                                                                           \
+        "--max-seconds", CLI_NONNEGATIVE,                                                       \
+            .slot = &(d)->seconds, .given = &(d)->given, .meta = "S",                           \
+            .help = "stop after S seconds of wall-clock time, at the next Newton step, with a " \
+                    "message and exit status 1 (nothing on stdout); 0 stops at the first step", \
+            .dflt = "none"                                                                      \
+    }
 
 /* Starts the clock now and installs the monitor on hb, when --max-seconds was given. */
 void cli_deadline_start(struct cli_deadline *d, fricreg_hb *hb);

@@ -136,8 +136,7 @@ static void write_summary(FILE *out, const struct nma_options *o, const struct c
     fprintf(out, ", \"cpu_seconds\": %.6f}\n", cpu);
 }
 
-static int run_nma(fricreg_hb *hb, struct nma_options *o, const struct cli_hb_model *md,
-                   FILE *out)
+static int run_nma(fricreg_hb *hb, struct nma_options *o, const struct cli_hb_model *md, FILE *out)
 {
     if ((size_t)o->mode > md->n)
         return cli_usage_error("--mode", "beyond the structure's modes (one per dof)");
