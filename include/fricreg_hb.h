@@ -65,7 +65,10 @@
  * Conventions are those of fricreg.h: int results are fricreg_status codes, nothing is
  * printed, a failed call leaves the caller's arrays untouched, one object per thread. The
  * object keeps the status and a message of its last failed call (fricreg_hb_errcode,
- * fricreg_hb_errmsg, fricreg_hb_errmsg_copy). Since 1.6 (FRICREG_1.6).
+ * fricreg_hb_errmsg, fricreg_hb_errmsg_copy). Since 1.7 every solving call can be watched and
+ * stopped (fricreg_hb_set_monitor, fricreg_hb_set_max_iterations: FRICREG_EWORK, the group
+ * "Monitoring and stopping a solve"), and from the monitor every call but the getters returns
+ * FRICREG_EINVAL and changes nothing: that code is in no list below. Since 1.6 (FRICREG_1.6).
  */
 #ifndef FRICREG_HB_H
 #define FRICREG_HB_H
@@ -339,6 +342,67 @@ FRICREG_API int fricreg_hb_set_newton(fricreg_hb *hb, double tol, int max_iter);
 FRICREG_API int fricreg_hb_set_continuation(fricreg_hb *hb, double ds, double ds_min, double ds_max,
                                             size_t max_points);
 
+/** \name Monitoring and stopping a solve
+ *  Every solving call (fricreg_hb_solve, fricreg_hb_continue, fricreg_hb_continue_level,
+ *  fricreg_hb_peak, fricreg_hb_nma) spends its work in Newton iterations: at one frequency,
+ *  in the continuation's corrector (its points, fricreg_hb_solve's start without a guess, the
+ *  bifurcations' bisection, the peak's location) and in a nonlinear mode's points. Before each
+ *  Newton step the driver counts it and calls the monitor (fricreg_hb_set_monitor); a
+ *  nonzero return, or more steps in one call than fricreg_hb_set_max_iterations allows, stops
+ *  the call there.
+ *
+ *  A stopped call returns FRICREG_EWORK, its message "<function>: stopped by the monitor after
+ *  N Newton iterations" (or naming the bound), and leaves what its other failures leave: no
+ *  solution is written (fricreg_hb_solve's q and the kept solution are untouched, as
+ *  fricreg_hb_peak's omega and rms); a continuation keeps the points reached, which are the
+ *  first points of the same call unstopped, bit for bit, with no bifurcations located
+ *  (fricreg_hb_bifurcations is 0); fricreg_hb_nma keeps the backbone's points reached. No
+ *  fallback or retry of the call runs after a stop. Between two Newton steps the work is
+ *  bounded (a residual, a real LU of order m (2H + 1) + 2, at most 11 residuals of the line
+ *  search, and at a new frequency the H + 1 factors and at a stored point Hill's method), so a
+ *  bound on the steps bounds the call.
+ *  \{ */
+
+/** Called before each Newton step of a solving call (the group's comment).
+ *
+ *  user        fricreg_hb_set_monitor's, unchanged.
+ *  iterations  the Newton steps of this call so far, this one included: 1 at the first call,
+ *              one more at each.
+ *  parameter   the continued parameter at the iterate: Ω (rad/s) in fricreg_hb_continue and
+ *              fricreg_hb_peak; the excitation level λ in fricreg_hb_continue_level and in
+ *              fricreg_hb_solve (1 with a guess; along its start's branch in λ without one);
+ *              the modal amplitude a in fricreg_hb_nma.
+ *  residual    the iterate's largest residual entry over Newton's bound (fricreg_hb_set_newton:
+ *              converged at most 1), nondimensional.
+ *
+ *  Return 0 to go on, nonzero to stop the call (FRICREG_EWORK). The monitor may call the
+ *  getters (fricreg_hb_points, fricreg_hb_point, fricreg_hb_point_level,
+ *  fricreg_hb_point_stability, fricreg_hb_bifurcations, fricreg_hb_bifurcation,
+ *  fricreg_hb_bifurcation_level, fricreg_hb_nma_points, fricreg_hb_nma_point without x, the
+ *  error getters); any other call on the driver from it returns FRICREG_EINVAL and changes
+ *  nothing; it must not free the driver. Since 1.7 (FRICREG_1.7). */
+typedef int (*fricreg_hb_monitor)(void *user, int64_t iterations, double parameter,
+                                  double residual);
+
+/** Install the monitor of the solving calls (NULL, the default, removes it); user is passed
+ *  back unchanged. A monitor that returns 0 changes no result: the calls' results are those
+ *  without one, bit for bit.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb is NULL; FRICREG_EINVAL if called from the monitor.
+ *  Since 1.7 (FRICREG_1.7). */
+FRICREG_API int fricreg_hb_set_monitor(fricreg_hb *hb, fricreg_hb_monitor fn, void *user);
+
+/** Bound the Newton steps one solving call may take (the group's comment) at total >= 1, or
+ *  remove the bound with 0 (the default). A call that would take more returns FRICREG_EWORK
+ *  as if the monitor had stopped it, its message naming the bound; the count restarts at each
+ *  call.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb is NULL; FRICREG_EINVAL if total < 0 or called
+ *  from the monitor. Since 1.7 (FRICREG_1.7). */
+FRICREG_API int fricreg_hb_set_max_iterations(fricreg_hb *hb, int64_t total);
+
+/** \} */
+
 /** Solve the HB equations (R) at the excitation frequency omega by Newton's method with a
  *  backtracking line search on |R|², from the guess q0 or, if q0 is NULL, the solution reached
  *  continuously from the linear regime along the branch in the excitation level λ at omega
@@ -376,8 +440,9 @@ FRICREG_API int fricreg_hb_set_continuation(fricreg_hb *hb, double ds, double ds
  *  analysis or factor); FRICREG_EWORK if Newton did not converge within max_iter iterations
  *  (or its line search found no decrease); FRICREG_EINTEGRATOR if the AFT's root solver
  *  failed (fricreg_aft_jenkins_exact) or, stability on, GSL's QR on Hill's matrix did not
- *  converge (fricreg_hb_set_stability). On failure q and the kept solution are untouched. Since
- *  1.6. */
+ *  converge (fricreg_hb_set_stability); FRICREG_EWORK if stopped by the monitor or
+ *  fricreg_hb_set_max_iterations's bound ("Monitoring and stopping a solve": nothing written). On failure q and the kept solution are
+ *  untouched. Since 1.6. */
 FRICREG_API int fricreg_hb_solve(fricreg_hb *hb, double omega, size_t nq, const double q0[],
                                  double q[]);
 
@@ -523,7 +588,9 @@ FRICREG_API int fricreg_hb_nma_point(fricreg_hb *hb, size_t i, double *amplitude
  *  the step fell below ds_min; FRICREG_EWORK if max_points were stored before omega1, or the
  *  branch doubled back on itself (the message says which);
  *  FRICREG_ENOMEM (for the first 64 points before anything changed; for more, later, with the
- *  points so far kept; or UMFPACK's, as fricreg_hb_solve, with the points so far kept). On
+ *  points so far kept; or UMFPACK's, as fricreg_hb_solve, with the points so far kept);
+ *  FRICREG_EWORK if stopped by the monitor or fricreg_hb_set_max_iterations's bound (the points
+ *  reached kept, no bifurcations located: "Monitoring and stopping a solve"). On
  *  failure the points reached so far are kept (fricreg_hb_points
  *  counts them; 0 if the solve at omega0 failed) and fricreg_hb_displacement gives the last
  *  solution. Allocates room for the points, 64 at first, doubling: (1 + ndof + nq + 1)
@@ -558,8 +625,9 @@ FRICREG_API int fricreg_hb_continue(fricreg_hb *hb, double omega0, double omega1
  *  fricreg_hb_solve); FRICREG_ESIZE if nq is not fricreg_hb_solve's; FRICREG_ESINGULAR,
  *  FRICREG_EWORK, FRICREG_EINTEGRATOR as fricreg_hb_solve at level0; FRICREG_EINTEGRATOR if the
  *  step fell below ds_min; FRICREG_EWORK if max_points were stored before level1, or the
- *  branch doubled back on itself; FRICREG_ENOMEM; the points reached kept on failure, all as
- *  fricreg_hb_continue. Allocates as fricreg_hb_continue. Since 1.7 (FRICREG_1.7). */
+ *  branch doubled back on itself, or it was stopped by the monitor or
+ *  fricreg_hb_set_max_iterations's bound; FRICREG_ENOMEM; the points reached kept on failure,
+ *  all as fricreg_hb_continue. Allocates as fricreg_hb_continue. Since 1.7 (FRICREG_1.7). */
 FRICREG_API int fricreg_hb_continue_level(fricreg_hb *hb, double omega, double level0,
                                           double level1, size_t nq, const double q0[]);
 
@@ -609,7 +677,9 @@ FRICREG_API int fricreg_hb_point_level(fricreg_hb *hb, size_t k, double *level);
  *  of range, or there is no branch (no fricreg_hb_continue yet, none of its points stored, or
  *  the model or elements changed since; after a failed continuation the points reached
  *  serve); FRICREG_EWORK if a corrector did not converge within the Newton settings'
- *  iterations; FRICREG_ESINGULAR, FRICREG_EINTEGRATOR, FRICREG_ENOMEM as fricreg_hb_solve;
+ *  iterations, or the location was stopped by the monitor or fricreg_hb_set_max_iterations's
+ *  bound (omega and rms not written); FRICREG_ESINGULAR, FRICREG_EINTEGRATOR, FRICREG_ENOMEM as
+ *  fricreg_hb_solve;
  *  FRICREG_EINVAL if the branch is fricreg_hb_continue_level's (in λ, not Ω). Since 1.7
  *  (FRICREG_1.7). */
 FRICREG_API int fricreg_hb_peak(fricreg_hb *hb, size_t dof, double *omega, double *rms);

@@ -580,6 +580,23 @@ if "$sim" $hb --max-points 5 >"$d/five.json" 2>"$d/err" || [ $? -ne 1 ] || [ -s 
         ! grep -q "5 points stored before" "$d/err"; then
     echo "FAIL: hb --max-points 5: $(cat "$d/five.json" "$d/err")"; fails=$((fails + 1))
 fi
+# --max-seconds: 0 stops at the first Newton step whatever the machine's speed (the monotonic
+# clock never runs back), exit 1, one line naming the option, nothing on stdout; a limit far
+# above the run's need gives the unlimited run's summary but its CPU time; a negative one is
+# refused.
+total=$((total + 1))
+if "$sim" $hb --max-seconds 0 >"$d/stopped.json" 2>"$d/err" || [ $? -ne 1 ] || [ -s "$d/stopped.json" ] ||
+        ! grep -q "^fricreg-sim: hb: --max-seconds 0 passed: stopped (the continuation from omega = 0.5 had reached 0 points)$" "$d/err"; then
+    echo "FAIL: hb --max-seconds 0: $(cat "$d/stopped.json" "$d/err")"; fails=$((fails + 1))
+fi
+total=$((total + 1))
+"$sim" $hb >"$d/unlimited.json" 2>"$d/err"
+"$sim" $hb --max-seconds 1e6 >"$d/limited.json" 2>>"$d/err"
+if [ "$(sed 's/, "cpu_seconds".*//' "$d/unlimited.json")" != "$(sed 's/, "cpu_seconds".*//' "$d/limited.json")" ] ||
+        [ ! -s "$d/limited.json" ]; then
+    echo "FAIL: hb --max-seconds 1e6 changed the summary: $(cat "$d/limited.json" "$d/err")"; fails=$((fails + 1))
+fi
+expect_usage_error "^fricreg-sim: --max-seconds: must be >= 0" $hb --max-seconds -1
 # --continue-in level: the same oscillator at Omega = 1.2, the level L from 0.5 to 2: linear,
 # every row's RMS L times the closed form's at Omega = 1.2 within 1e-8; the summary's peak the
 # last point's (level 2); the frequency options do not apply, the level's are required.
@@ -597,6 +614,11 @@ total=$((total + 1))
 if ! grep -q '"continue_in": "level", "omega": 1.2, "level_start": 0.5, "level_end": 2,' "$d/level.json" ||
         ! grep -q '"level_reached": 2, "peaks": "sampled"' "$d/level.json" || ! grep -q '"peak_level": 2}' "$d/level.json"; then
     echo "FAIL: hb --continue-in level summary: $(cat "$d/level.json" "$d/err")"; fails=$((fails + 1))
+fi
+total=$((total + 1))
+if "$sim" $lv --level-start 0.5 --level-end 2 --max-seconds 0 >"$d/stopped.csv" 2>"$d/err" || [ $? -ne 1 ] ||
+        [ -s "$d/stopped.csv" ] || ! grep -q "^fricreg-sim: hb: --max-seconds 0 passed: stopped (the continuation from level = 0.5" "$d/err"; then
+    echo "FAIL: hb --continue-in level --max-seconds 0: $(cat "$d/stopped.csv" "$d/err")"; fails=$((fails + 1))
 fi
 expect_usage_error "^fricreg-sim: --level-start: missing" $lv --level-end 2
 expect_usage_error "^fricreg-sim: --level-end: equals --level-start" $lv --level-start 1 --level-end 1
@@ -688,6 +710,11 @@ if [ "$(head -n 1 "$d/backbone.csv")" != "amplitude,omega,zeta" ] || ! awk -F, '
         e = $3 - z; if (e < 0) e = -e; if (e > 1e-9 * (z > 0 ? z : 1)) bad++; rows++ }
         END { exit !(rows == 12 && big < 1e-9 && !bad) }' "$d/backbone.csv"; then
     echo "FAIL: nma backbone against the closed form: $(head -n 4 "$d/backbone.csv") $(cat "$d/err")"; fails=$((fails + 1))
+fi
+total=$((total + 1))
+if "$sim" $nma --max-seconds 0 >"$d/stopped.json" 2>"$d/err" || [ $? -ne 1 ] || [ -s "$d/stopped.json" ] ||
+        ! grep -q "^fricreg-sim: nma: --max-seconds 0 passed: stopped (the backbone had reached 0 of its 20 points)$" "$d/err"; then
+    echo "FAIL: nma --max-seconds 0: $(cat "$d/stopped.json" "$d/err")"; fails=$((fails + 1))
 fi
 total=$((total + 1))
 "$sim" $nma >"$d/summary.json" 2>"$d/err"

@@ -15,6 +15,7 @@
 
 #include "cli.h"
 #include "fricreg_hb.h"
+#include "hb_deadline.h"
 #include "hb_model.h"
 #include "input_line.h"
 #include "jenkins_input.h"
@@ -37,6 +38,7 @@ struct hb_options {
     int max_points, continue_in, omega_given, level_start_given, level_end_given;
     double omega_start, omega_end, newton_tol, ds, ds_min, ds_max;
     double omega, level_start, level_end; /* --continue-in level */
+    struct cli_deadline deadline;         /* --max-seconds */
 };
 
 /* The model (hb_model.h: its matrices passed sparse to the driver, nothing densified) and the
@@ -143,6 +145,7 @@ static size_t hb_table(struct hb_options *o, struct cli_option table[])
          .help = "its smallest step: below it the continuation stops"},
         {"--ds-max", CLI_POSITIVE, .slot = &o->ds_max, .meta = "DS",
          .help = "its largest step, <= 1"},
+        CLI_DEADLINE_OPTION(&o->deadline),
         {"--max-points", CLI_WHOLE, .slot = &o->max_points, .lo = 2, .hi = 1e8, .meta = "N",
          .help = "points stored at most: reaching it stops the continuation"},
         {"--output", CLI_CHOICE, .slot = &o->output, .words = hb_outputs,
@@ -297,15 +300,16 @@ static int write_bifurcations(fricreg_hb *hb, FILE *out, int level, size_t n)
 /* Each dof's peak into peak_omega[n], peak_rms[n]: located by fricreg_hb_peak up to
  * HB_LOCATE_MAX dofs, else the largest stored point's. 0, or CLI_EXIT_RUN after a line on
  * stderr (a corrector that failed in the location). */
-static int peaks(fricreg_hb *hb, int locate, size_t n, size_t K, const double omega[],
-                 const double rms[], double peak_omega[], double peak_rms[])
+static int peaks(fricreg_hb *hb, const struct cli_deadline *d, int locate, size_t n, size_t K,
+                 const double omega[], const double rms[], double peak_omega[], double peak_rms[])
 {
     for (size_t i = 0; i < n; i++) {
         if (locate && n <= HB_LOCATE_MAX) {
             if (fricreg_hb_peak(hb, i, &peak_omega[i], &peak_rms[i]) == FRICREG_OK)
                 continue;
-            fprintf(stderr, "fricreg-sim: hb: the peak of dof %zu: %s\n", i + 1,
-                    fricreg_hb_errmsg(hb));
+            if (!cli_deadline_report(d, "hb", "locating the peaks"))
+                fprintf(stderr, "fricreg-sim: hb: the peak of dof %zu: %s\n", i + 1,
+                        fricreg_hb_errmsg(hb));
             return CLI_EXIT_RUN;
         }
         size_t best = 0;
@@ -350,7 +354,7 @@ static void write_summary(fricreg_hb *hb, FILE *out, const struct hb_options *o,
 }
 
 /* The continuation from omega_start (its solution from q = 0) to omega_end, and the output. */
-static int run_hb(fricreg_hb *hb, const struct hb_options *o, const struct hb_model *md, FILE *out)
+static int run_hb(fricreg_hb *hb, struct hb_options *o, const struct hb_model *md, FILE *out)
 {
     clock_t start = clock();
     /* lift-off elements: tangential and normal coefficients, 2 m rows */
@@ -360,12 +364,19 @@ static int run_hb(fricreg_hb *hb, const struct hb_options *o, const struct hb_mo
         fricreg_hb_set_stability(hb, 1) != FRICREG_OK)
         return cli_usage_error("hb", fricreg_hb_errmsg(hb));
     int level = o->continue_in == HB_IN_LEVEL;
+    cli_deadline_start(&o->deadline, hb);
     int status = level ? fricreg_hb_continue_level(hb, o->omega, o->level_start, o->level_end, nq,
                                                    NULL)
                        : fricreg_hb_continue(hb, o->omega_start, o->omega_end, nq, NULL);
     double cpu = (double)(clock() - start) / CLOCKS_PER_SEC;
     if (status != FRICREG_OK) {
-        fprintf(stderr, "fricreg-sim: hb: the continuation failed: %s\n", fricreg_hb_errmsg(hb));
+        char progress[128];
+        snprintf(progress, sizeof progress, "the continuation from %s = %g had reached %zu points",
+                 level ? "level" : "omega", level ? o->level_start : o->omega_start,
+                 fricreg_hb_points(hb));
+        if (!cli_deadline_report(&o->deadline, "hb", progress))
+            fprintf(stderr, "fricreg-sim: hb: the continuation failed: %s\n",
+                    fricreg_hb_errmsg(hb));
         return CLI_EXIT_RUN;
     }
     size_t K = 0, n = md->n;
@@ -377,7 +388,7 @@ static int run_hb(fricreg_hb *hb, const struct hb_options *o, const struct hb_mo
         if ((peak = malloc(2 * n * sizeof *peak)) == NULL)
             status = cli_usage_error("hb", "out of memory");
         if (status == 0)
-            status = peaks(hb, !level, n, K, omega, rms, peak, peak + n);
+            status = peaks(hb, &o->deadline, !level, n, K, omega, rms, peak, peak + n);
         /* the CPU time includes the peaks' location */
         cpu = (double)(clock() - start) / CLOCKS_PER_SEC;
         if (status == 0)

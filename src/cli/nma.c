@@ -10,6 +10,7 @@
 
 #include "cli.h"
 #include "fricreg_hb.h"
+#include "hb_deadline.h"
 #include "hb_model.h"
 
 enum { NMA_SUMMARY, NMA_BACKBONE };
@@ -25,6 +26,7 @@ struct nma_options {
     int harmonics, mode, points, linear_damping, output, newton_max;
     int a0_given, a1_given;
     double a0, a1, newton_tol;
+    struct cli_deadline deadline; /* --max-seconds */
 };
 
 static int check_options(const struct nma_options *o)
@@ -75,6 +77,7 @@ static size_t nma_table(struct nma_options *o, struct cli_option table[])
          .help = "Newton's tolerance at each point"},
         {"--newton-max", CLI_WHOLE, .slot = &o->newton_max, .lo = 1, .hi = 1000, .meta = "N",
          .help = "Newton's iterations at most per point, 1 to 1000"},
+        CLI_DEADLINE_OPTION(&o->deadline),
         {"--output", CLI_CHOICE, .slot = &o->output, .words = nma_outputs,
          .help = "a JSON summary (the backbone's ends and its largest damping ratio), or the "
                  "backbone: a CSV row amplitude,omega,zeta per point"}};
@@ -133,17 +136,21 @@ static void write_summary(FILE *out, const struct nma_options *o, const struct c
     fprintf(out, ", \"cpu_seconds\": %.6f}\n", cpu);
 }
 
-static int run_nma(fricreg_hb *hb, const struct nma_options *o, const struct cli_hb_model *md,
-                   FILE *out)
+static int run_nma(fricreg_hb *hb, struct nma_options *o, const struct cli_hb_model *md, FILE *out)
 {
     if ((size_t)o->mode > md->n)
         return cli_usage_error("--mode", "beyond the structure's modes (one per dof)");
     clock_t start = clock();
+    cli_deadline_start(&o->deadline, hb);
     int status = fricreg_hb_nma(hb, (size_t)o->mode - 1, o->linear_damping, o->a0, o->a1,
                                 (size_t)o->points);
     double cpu = (double)(clock() - start) / CLOCKS_PER_SEC;
     if (status != FRICREG_OK) {
-        fprintf(stderr, "fricreg-sim: nma: the backbone failed: %s\n", fricreg_hb_errmsg(hb));
+        char progress[96];
+        snprintf(progress, sizeof progress, "the backbone had reached %zu of its %d points",
+                 fricreg_hb_nma_points(hb), o->points);
+        if (!cli_deadline_report(&o->deadline, "nma", progress))
+            fprintf(stderr, "fricreg-sim: nma: the backbone failed: %s\n", fricreg_hb_errmsg(hb));
         return CLI_EXIT_RUN;
     }
     size_t K = 0;

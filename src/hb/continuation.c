@@ -242,6 +242,9 @@ static int corrector(fricreg_hb *hb, const char *fn, struct branch *b, const dou
                 hb->qw[j] = base[j] + lambda * hb->dy[j];
             continue;
         }
+        status = fr_hb_tick(hb, fn, fr_hb_parameter(hb), fmax(r / bound, fabs(g) / hb->tol));
+        if (status != FRICREG_OK)
+            return status;
         if (it == hb->max_iter)
             return fr_fail(hb, FRICREG_EWORK, "%s: the corrector did not converge in %d iterations",
                            fn, it);
@@ -351,7 +354,7 @@ static int attempt(fricreg_hb *hb, const char *fn, struct branch *b, double ds, 
     int status = corrector(hb, fn, b, b->yp, b->yp, hb->dir, its);
     if (status == FRICREG_OK)
         status = tangent_from_matrix(hb, fn, hb->tn);
-    if (status == FRICREG_ENOMEM)
+    if (status == FRICREG_ENOMEM || hb->stopped)
         return status;
     if (status != FRICREG_OK) {
         snprintf(b->why, sizeof b->why, "%s", hb->err.msg);
@@ -432,7 +435,7 @@ static int follow(fricreg_hb *hb, const char *fn, struct branch *b, double p1)
                 status = final_point(hb, fn, b, p1);
                 if (status == FRICREG_OK)
                     break;
-                if (status == FRICREG_ENOMEM)
+                if (status == FRICREG_ENOMEM || hb->stopped)
                     return status;
                 snprintf(b->why, sizeof b->why, "%s", hb->err.msg);
                 last = 0;
@@ -558,8 +561,11 @@ static void bisect(fricreg_hb *hb, struct branch *b, size_t k, struct test t)
     while (hi - lo > 1e-9) {
         double s = 0.5 * (lo + hi);
         int sign = 0;
-        if (test_at(hb, b, ya, yb, s, t, &sign, &omega, rec + 4) != FRICREG_OK)
+        if (test_at(hb, b, ya, yb, s, t, &sign, &omega, rec + 4) != FRICREG_OK) {
+            if (hb->stopped) /* no bifurcation recorded: the call ends */
+                return;
             break;
+        }
         rec[1] = omega;
         rec[3] = hb->level; /* corrector() left the trial's */
         found = 1;
@@ -582,7 +588,7 @@ static void locate_bifurcations(fricreg_hb *hb, struct branch *b)
 {
     size_t xw = hb->xpts_stride, w = 1 + hb->n;
     hb->nbif = 0;
-    for (size_t k = 0; k + 1 < hb->npts; k++) {
+    for (size_t k = 0; k + 1 < hb->npts && !hb->stopped; k++) {
         const double *x0 = hb->xpts + k * xw, *x1 = x0 + xw;
         struct test t = {0, -1};
         if ((x0[0] > 0.0) != (x1[0] > 0.0))
@@ -684,6 +690,8 @@ int fricreg_hb_continue(fricreg_hb *hb, double omega0, double omega1, size_t nq,
     if (hb == NULL)
         return FRICREG_ENULL;
     const char *fn = "continue";
+    if (hb->busy)
+        return fr_hb_busy(hb, fn);
     int status = fr_hb_check_start(hb, fn, omega0, nq, q0);
     if (status == FRICREG_OK && !isfinite(omega1))
         status = fr_fail(hb, FRICREG_ENONFINITE, "%s: Omega1 = %g", fn, omega1);
@@ -693,17 +701,18 @@ int fricreg_hb_continue(fricreg_hb *hb, double omega0, double omega1, size_t nq,
     if (status != FRICREG_OK)
         return status;
     struct fr_error before = hb->err; /* a success keeps it: a failed start is not the call's */
+    fr_hb_begin(hb, 1);
     if (q0 == NULL) {
         /* from fricreg_hb_solve's solution without a guess: the branch reached from the
          * linear regime; should that fail, the guesses at omega0 itself */
         status = fr_hb_level_start(hb, fn, omega0);
         if (status == FRICREG_ENOMEM)
-            return status;
+            return fr_hb_end(hb, status);
         if (status == FRICREG_OK)
             q0 = hb->qsol;
     }
     struct branch b = {.par = "Omega", .keep = 1};
-    status = run(hb, fn, &b, omega0, omega1, q0);
+    status = fr_hb_end(hb, run(hb, fn, &b, omega0, omega1, q0));
     if (status == FRICREG_OK)
         hb->err = before;
     return status;
@@ -715,6 +724,8 @@ int fricreg_hb_continue_level(fricreg_hb *hb, double omega, double level0, doubl
     if (hb == NULL)
         return FRICREG_ENULL;
     const char *fn = "continue_level";
+    if (hb->busy)
+        return fr_hb_busy(hb, fn);
     int status = fr_hb_check_start(hb, fn, omega, nq, q0);
     if (status == FRICREG_OK && (!isfinite(level0) || !isfinite(level1)))
         status = fr_fail(hb, FRICREG_ENONFINITE, "%s: level0 = %g, level1 = %g", fn, level0,
@@ -726,9 +737,10 @@ int fricreg_hb_continue_level(fricreg_hb *hb, double omega, double level0, doubl
     if (status != FRICREG_OK)
         return status;
     struct branch b = {.level = 1, .omega = omega, .par = "level", .keep = 1};
+    fr_hb_begin(hb, 0);
     status = run(hb, fn, &b, level0, level1, q0);
     hb->level = 1.0; /* the excitation as set, for the calls to come */
-    return status;
+    return fr_hb_end(hb, status);
 }
 
 /* The excitation level where fricreg_hb_solve's start begins: small enough for every element
@@ -780,7 +792,7 @@ int fr_hb_level_start(fricreg_hb *hb, const char *fn, double omega)
     hb->level = 1.0;
     if (status == FRICREG_OK && linear)
         return fr_hb_solve_at(hb, fn, omega, hb->tn, 1);
-    if (status == FRICREG_ENOMEM)
+    if (status == FRICREG_ENOMEM || hb->stopped)
         return status;
     struct branch b = {.level = 1, .omega = omega, .par = "level"};
     status = run(hb, fn, &b, LEVEL_START, 1.0, NULL);
@@ -932,6 +944,8 @@ int fricreg_hb_peak(fricreg_hb *hb, size_t dof, double *omega, double *rms)
         return FRICREG_ENULL;
     if (omega == NULL || rms == NULL)
         return fr_fail(hb, FRICREG_ENULL, "peak: %s is NULL", omega == NULL ? "omega" : "rms");
+    if (hb->busy)
+        return fr_hb_busy(hb, "peak");
     if (dof >= hb->n)
         return fr_fail(hb, FRICREG_EINVAL, "peak: dof = %zu, the driver has %zu", dof, hb->n);
     if (hb->npts == 0 || !hb->have_branch)
@@ -961,7 +975,8 @@ int fricreg_hb_peak(fricreg_hb *hb, size_t dof, double *omega, double *rms)
          * step): otherwise the sampled point stands */
         if (sb > 0.0 && sb < 1.0) {
             struct fr_error before = hb->err;
-            int status = brent_peak(hb, &b, dof, y3, sb, f, &om, &f);
+            fr_hb_begin(hb, 1);
+            int status = fr_hb_end(hb, brent_peak(hb, &b, dof, y3, sb, f, &om, &f));
             if (status != FRICREG_OK)
                 return status;
             hb->err = before;

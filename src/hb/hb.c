@@ -213,6 +213,8 @@ static int set_symmetric(fricreg_hb *hb, const char *fn, size_t ndof, const doub
 {
     if (hb == NULL)
         return FRICREG_ENULL;
+    if (hb->busy)
+        return fr_hb_busy(hb, fn);
     if (A == NULL)
         return fr_fail(hb, FRICREG_ENULL, "%s: the matrix is NULL", fn);
     if (check_ndof(hb, fn, ndof) != FRICREG_OK)
@@ -266,6 +268,8 @@ int fricreg_hb_set_rayleigh(fricreg_hb *hb, double a0, double a1)
 {
     if (hb == NULL)
         return FRICREG_ENULL;
+    if (hb->busy)
+        return fr_hb_busy(hb, "set_rayleigh");
     if (!isfinite(a0) || !isfinite(a1))
         return fr_fail(hb, FRICREG_ENONFINITE, "set_rayleigh: a0 = %g, a1 = %g", a0, a1);
     if (a0 < 0.0 || a1 < 0.0)
@@ -328,6 +332,8 @@ int fricreg_hb_set_elements(fricreg_hb *hb, size_t m, size_t ndof, const double 
 {
     if (hb == NULL)
         return FRICREG_ENULL;
+    if (hb->busy)
+        return fr_hb_busy(hb, "set_elements");
     if (J == NULL || kt == NULL || mun == NULL)
         return fr_fail(hb, FRICREG_ENULL, "set_elements: %s is NULL",
                        J == NULL    ? "J"
@@ -356,6 +362,8 @@ int fricreg_hb_set_iwan(fricreg_hb *hb, size_t m, size_t ndof, const double J[],
     static const char fn[] = "set_iwan";
     if (hb == NULL)
         return FRICREG_ENULL;
+    if (hb->busy)
+        return fr_hb_busy(hb, fn);
     if (J == NULL || k == NULL || phi == NULL)
         return fr_fail(hb, FRICREG_ENULL, "%s: %s is NULL", fn,
                        J == NULL   ? "J"
@@ -391,6 +399,8 @@ int fricreg_hb_set_normal_elements(fricreg_hb *hb, size_t m, size_t ndof, const 
     static const char fn[] = "set_normal_elements";
     if (hb == NULL)
         return FRICREG_ENULL;
+    if (hb->busy)
+        return fr_hb_busy(hb, fn);
     const void *args[6] = {Jt, Jn, kt, mu, n0, kn};
     static const char *const names[6] = {"Jt", "Jn", "kt", "mu", "n0", "kn"};
     for (int a = 0; a < 6; a++)
@@ -443,6 +453,8 @@ int fricreg_hb_set_excitation(fricreg_hb *hb, size_t ndof, const double pc[], co
 {
     if (hb == NULL)
         return FRICREG_ENULL;
+    if (hb->busy)
+        return fr_hb_busy(hb, "set_excitation");
     if (pc == NULL || ps == NULL)
         return fr_fail(hb, FRICREG_ENULL, "set_excitation: %s is NULL", pc == NULL ? "pc" : "ps");
     if (check_ndof(hb, "set_excitation", ndof) != FRICREG_OK)
@@ -461,6 +473,8 @@ int fricreg_hb_set_newton(fricreg_hb *hb, double tol, int max_iter)
 {
     if (hb == NULL)
         return FRICREG_ENULL;
+    if (hb->busy)
+        return fr_hb_busy(hb, "set_newton");
     if (!isfinite(tol))
         return fr_fail(hb, FRICREG_ENONFINITE, "set_newton: tol = %g", tol);
     if (!(tol > 0.0 && tol < 1.0) || max_iter < 1 || max_iter > 1000)
@@ -477,6 +491,8 @@ int fricreg_hb_set_continuation(fricreg_hb *hb, double ds, double ds_min, double
 {
     if (hb == NULL)
         return FRICREG_ENULL;
+    if (hb->busy)
+        return fr_hb_busy(hb, "set_continuation");
     if (!isfinite(ds) || !isfinite(ds_min) || !isfinite(ds_max))
         return fr_fail(hb, FRICREG_ENONFINITE,
                        "set_continuation: ds = %g, ds_min = %g, ds_max = %g", ds, ds_min, ds_max);

@@ -137,6 +137,17 @@ struct fricreg_hb {
     int have_branch;
     int branch_level; /* the branch is in the level λ at fixed Ω (qpts's last entry is λ) */
 
+    /* The monitor (monitor.c, fricreg_hb_set_monitor) and the bound on one call's Newton
+     * iterations (0: none); while a solving call runs, busy (only the getters are allowed: the
+     * monitor's calls), its iterations so far, and stopped once the monitor or the bound ended
+     * it (its error record kept in stop_err: every retry and fallback then gives up). */
+    fricreg_hb_monitor monitor;
+    void *monitor_user;
+    int64_t max_iterations, call_iterations;
+    int busy, stopped;
+    int report_omega; /* the monitor's parameter is the factored Ω, else the level λ */
+    struct fr_error stop_err;
+
     struct fr_error err;
 };
 
@@ -234,6 +245,24 @@ double fr_hb_scale(const fricreg_hb *hb, const double *q);
 /* Newton's method at the factored Ω from qw (in place), tolerance relative to the scale.
  * FRICREG_OK, FRICREG_ESINGULAR, FRICREG_EWORK, FRICREG_EINTEGRATOR (message recorded). */
 int fr_hb_newton(fricreg_hb *hb, const char *fn);
+
+/* The monitor's hook (monitor.c), called at every Newton iterate of every solve: counts it,
+ * enforces fricreg_hb_set_max_iterations's bound and calls the monitor with the continued
+ * parameter's value and the iterate's residual relative to Newton's bound. FRICREG_OK, or
+ * FRICREG_EWORK with hb->stopped set (message recorded, with fn): the call is over. */
+int fr_hb_tick(fricreg_hb *hb, const char *fn, double parameter, double residual);
+
+/* The monitor's parameter at the factored iterate of fr_hb_newton and the corrector: Ω or λ
+ * (fr_hb_begin's report_omega). */
+double fr_hb_parameter(const fricreg_hb *hb);
+
+/* A solving call's start (busy, its count reset, the parameter the monitor sees) and end: the status it returns, FRICREG_EWORK
+ * with the stop's message once stopped, whatever a fallback made of it. */
+void fr_hb_begin(fricreg_hb *hb, int report_omega);
+int fr_hb_end(fricreg_hb *hb, int status);
+
+/* FRICREG_EINVAL (message recorded, with fn) for a call from the monitor during a solve. */
+int fr_hb_busy(fricreg_hb *hb, const char *fn);
 
 /* The checks of omega, nq and q0 that fricreg_hb_solve and fricreg_hb_continue share. */
 int fr_hb_check_start(fricreg_hb *hb, const char *fn, double omega, size_t nq, const double *q0);

@@ -91,6 +91,8 @@ int fr_hb_newton(fricreg_hb *hb, const char *fn)
             hb->iterations = it;
             return FRICREG_OK;
         }
+        if ((status = fr_hb_tick(hb, fn, fr_hb_parameter(hb), r / bound)) != FRICREG_OK)
+            return status;
         if (it == hb->max_iter)
             return fr_fail(hb, FRICREG_EWORK,
                            "%s: Newton did not converge in %d iterations (|R| = %g, tolerance %g)",
@@ -136,7 +138,7 @@ int fr_hb_solve_at(fricreg_hb *hb, const char *fn, double omega, const double *q
             memcpy(hb->qw, q0, hb->nq * sizeof(double));
         else if ((status = fr_hb_guess(hb, fn, attempt == 0)) != FRICREG_OK)
             continue;
-        if ((status = fr_hb_newton(hb, fn)) == FRICREG_OK)
+        if ((status = fr_hb_newton(hb, fn)) == FRICREG_OK || hb->stopped)
             break;
     }
     if (!keep)
@@ -159,19 +161,24 @@ int fricreg_hb_solve(fricreg_hb *hb, double omega, size_t nq, const double q0[],
         return FRICREG_ENULL;
     if (q == NULL)
         return fr_fail(hb, FRICREG_ENULL, "solve: q is NULL");
+    if (hb->busy)
+        return fr_hb_busy(hb, "solve");
     struct fr_error before = hb->err; /* a success keeps it: a first guess's failure is not
                                          the call's */
     int status = fr_hb_check_start(hb, "solve", omega, nq, q0);
-    if (status == FRICREG_OK && q0 != NULL)
+    if (status != FRICREG_OK)
+        return status;
+    fr_hb_begin(hb, 0); /* Ω is fixed: the monitor sees the level of the start's branch */
+    if (q0 != NULL)
         status = fr_hb_solve_at(hb, "solve", omega, q0, 1);
-    else if (status == FRICREG_OK) {
+    else {
         /* without a guess, the branch in the level from the linear regime; should that fail,
          * the guesses at the level itself */
         status = fr_hb_level_start(hb, "solve", omega);
-        if (status != FRICREG_OK && status != FRICREG_ENOMEM)
+        if (status != FRICREG_OK && status != FRICREG_ENOMEM && !hb->stopped)
             status = fr_hb_solve_at(hb, "solve", omega, NULL, 1);
     }
-    if (status == FRICREG_OK) {
+    if ((status = fr_hb_end(hb, status)) == FRICREG_OK) {
         memcpy(q, hb->qsol, nq * sizeof(double));
         hb->err = before;
     }

@@ -120,7 +120,7 @@ static int advance(fricreg_hb *hb, const char *fn, struct fr_hb_nma *s, struct m
         double tn = fmin(mc->tc + h, t);
         predict(s, tn, mc->tc, mc->to, mc->have_prev);
         int status = fr_hb_nma_newton(hb, fn, s, exp(tn));
-        if (status == FRICREG_ENOMEM || status == FRICREG_ENONFINITE)
+        if (status == FRICREG_ENOMEM || status == FRICREG_ENONFINITE || hb->stopped)
             return status;
         if (status != FRICREG_OK) {
             if ((h *= 0.5) < hmin)
@@ -172,6 +172,8 @@ int fricreg_hb_nma(fricreg_hb *hb, size_t mode, int damping, double a0, double a
     static const char fn[] = "nma";
     if (hb == NULL)
         return FRICREG_ENULL;
+    if (hb->busy)
+        return fr_hb_busy(hb, fn);
     int status = check_args(hb, fn, mode, damping, a0, a1, npoints);
     if (status != FRICREG_OK)
         return status;
@@ -187,7 +189,8 @@ int fricreg_hb_nma(fricreg_hb *hb, size_t mode, int damping, double a0, double a
     if ((status = fr_hb_nma_linear(hb, fn, mode, s)) != FRICREG_OK)
         return status;
     fr_hb_nma_enter(hb, s);
-    status = backbone(hb, fn, s, a0, a1, npoints);
+    fr_hb_begin(hb, 0);
+    status = fr_hb_end(hb, backbone(hb, fn, s, a0, a1, npoints));
     fr_hb_nma_leave(hb, s);
     if (status == FRICREG_OK)
         hb->err = before;
@@ -218,6 +221,8 @@ int fricreg_hb_nma_point(fricreg_hb *hb, size_t i, double *amplitude, double *om
         return fr_fail(hb, FRICREG_ESIZE,
                        "%s: ndof = %zu, nc = %zu, the driver has %zu and 2H + 1 = %zu", fn, ndof,
                        nc, hb->n, hb->nc);
+    if (x != NULL && hb->busy) /* the evaluation would move the solve's factors */
+        return fr_hb_busy(hb, fn);
     if (x != NULL && (!hb->have_backbone || s->nq != hb->nq))
         return fr_fail(hb, FRICREG_EINVAL, "%s: the model changed since fricreg_hb_nma", fn);
     const double *p = s->pts + i * s->stride;

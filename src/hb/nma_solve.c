@@ -238,6 +238,8 @@ int fr_hb_nma_newton(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, doub
             hb->iterations = it;
             return FRICREG_OK;
         }
+        if ((status = fr_hb_tick(hb, fn, a, r / bound)) != FRICREG_OK)
+            return status;
         if (it == hb->max_iter)
             return fr_fail(hb, FRICREG_EWORK,
                            "%s: Newton did not converge in %d iterations at amplitude %g (|R| = "

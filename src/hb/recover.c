@@ -62,6 +62,8 @@ int fricreg_hb_displacement(fricreg_hb *hb, size_t ndof, size_t nc, double x[])
 {
     if (hb == NULL)
         return FRICREG_ENULL;
+    if (hb->busy)
+        return fr_hb_busy(hb, "displacement");
     if (x == NULL)
         return fr_fail(hb, FRICREG_ENULL, "displacement: x is NULL");
     if (ndof != hb->n || nc != hb->nc)

@@ -257,6 +257,8 @@ static int set_csc(fricreg_hb *hb, const char *fn, int which, size_t ndof, int f
 {
     if (hb == NULL)
         return FRICREG_ENULL;
+    if (hb->busy)
+        return fr_hb_busy(hb, fn);
     if (ndof != hb->n)
         return fr_fail(hb, FRICREG_ESIZE, "%s: ndof = %zu, the driver has %zu", fn, ndof, hb->n);
     struct fr_compressed a = {ndof, ndof, 1, flags, colptr, rowind, values};

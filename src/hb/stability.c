@@ -260,6 +260,8 @@ int fricreg_hb_set_stability(fricreg_hb *hb, int enable)
     static const char fn[] = "set_stability";
     if (hb == NULL)
         return FRICREG_ENULL;
+    if (hb->busy)
+        return fr_hb_busy(hb, fn);
     if (enable != 0 && enable != 1)
         return fr_fail(hb, FRICREG_EINVAL, "%s: enable = %d must be 0 or 1", fn, enable);
     if (enable && hb->n * hb->nc > FRICREG_HB_MAX_HILL)
