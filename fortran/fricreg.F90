@@ -77,6 +77,7 @@ module fricreg
 #ifdef FRICREG_HAVE_SIM
   include 'fricreg_drivers_h_public.inc'
   public :: fricreg_sim_observer, fricreg_structure_observer, fricreg_warning_handler
+  public :: fricreg_hb_monitor
   public :: fricreg_simulation, fricreg_exact_solution, fricreg_structure, &
             fricreg_integrator_string, fricreg_integrator_id
   public :: fricreg_hb_driver
@@ -402,6 +403,8 @@ module fricreg
     procedure :: set_excitation => hb_set_excitation
     procedure :: set_newton => hb_set_newton
     procedure :: set_continuation => hb_set_continuation
+    procedure :: set_monitor => hb_set_monitor
+    procedure :: set_max_iterations => hb_set_max_iterations
     procedure :: solve => hb_solve
     procedure :: displacement => hb_displacement
     procedure :: continue => hb_continue
@@ -3685,6 +3688,37 @@ contains
     if (status == FRICREG_OK) &
       status = self%record(fricreg_hb_set_newton(self%ptr, tol, int(max_iter, c_int)))
   end function hb_set_newton
+
+  !> Install a monitor (a bind(C) function with interface fricreg_hb_monitor), called before
+  !> every Newton step of every solve; user is passed back to it. With no monitor, removes it
+  !> (fricreg_hb_set_monitor). A nonzero return stops the call with FRICREG_EWORK, the points
+  !> reached kept; from the monitor only the getters may be called (FRICREG_EINVAL).
+  function hb_set_monitor(self, fricreg_monitor, user) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    procedure(fricreg_hb_monitor), optional :: fricreg_monitor
+    type(c_ptr), intent(in), optional :: user
+    integer(c_int) :: status
+    type(c_funptr) :: fn
+    type(c_ptr) :: u
+    fn = c_null_funptr
+    u = c_null_ptr
+    if (present(fricreg_monitor)) fn = c_funloc(fricreg_monitor)
+    if (present(user)) u = user
+    status = self%ready('set_monitor', 'HB driver')
+    if (status == FRICREG_OK) status = self%record(fricreg_hb_set_monitor(self%ptr, fn, u))
+  end function hb_set_monitor
+
+  !> Bound the Newton steps of one solving call at total (0: no bound, the default;
+  !> fricreg_hb_set_max_iterations); a call that needs more returns FRICREG_EWORK.
+  !> FRICREG_EINVAL if total < 0 or called from the monitor.
+  function hb_set_max_iterations(self, total) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    integer(c_int64_t), intent(in) :: total
+    integer(c_int) :: status
+    status = self%ready('set_max_iterations', 'HB driver')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_hb_set_max_iterations(self%ptr, total))
+  end function hb_set_max_iterations
 
   !> The continuation's step control (fricreg_hb_set_continuation). FRICREG_EINVAL;
   !> FRICREG_ENONFINITE; FRICREG_ENOMEM.

@@ -21,6 +21,7 @@ module fricreg_sim_c
   private
   include 'fricreg_drivers_h_public.inc'
   public :: fricreg_sim_observer, fricreg_structure_observer, fricreg_warning_handler
+  public :: fricreg_hb_monitor
 
   abstract interface
     !> An observer (fricreg_sim_observer): called after every accepted step, and once at t = 0,
@@ -62,6 +63,18 @@ module fricreg_sim_c
       type(c_ptr), value :: message
       type(c_ptr), value :: user
     end subroutine
+    !> A harmonic-balance driver's monitor (fricreg_hb_monitor of fricreg_hb.h): called before
+    !> every Newton step of a solve with the steps taken in this call so far, the continued
+    !> parameter (Omega, the level or the modal amplitude) and the largest residual entry over
+    !> Newton's bound. Return 0 to go on, nonzero to stop the call (FRICREG_EWORK). Write it as
+    !> a bind(C) function and pass it to the driver's set_monitor.
+    function fricreg_hb_monitor(user, iterations, parameter, residual) bind(C) result(stop_solve)
+      import :: c_int, c_int64_t, c_double, c_ptr
+      type(c_ptr), value :: user
+      integer(c_int64_t), value :: iterations
+      real(c_double), value :: parameter, residual
+      integer(c_int) :: stop_solve
+    end function
   end interface
 
   interface
