@@ -35,11 +35,23 @@
 !   FRHBNM(H, MODE, IDAMP, A0, A1, NP, STAT)          _nma (MODE from 1)
 !   FRHBNN(H, NP, STAT)                               _nma_points
 !   FRHBNQ(H, I, A, OMEGA, ZETA, NDOF, NC, X, STAT)   _nma_point (I from 1)
+!   FRHBGL(H, OMEGA, L0, L1, NQ, IGUESS, Q0, STAT)    _continue_level (IGUESS = 1: Q0 the guess)
+!   FRHBPL(H, K, LEVEL, STAT)                         _point_level (K from 1)
+!   FRHBBL(H, I, LEVEL, STAT)                         _bifurcation_level (I from 1)
+!   FRHBMS(H, MONITR, STAT), FRHBMU(H, STAT)          _set_monitor (MONITR below; FRHBMU removes it)
+!   FRHBMI(H, MAXIT, STAT)                            _set_max_iterations (INTEGER*8 MAXIT)
 !   FRHBER(H, CODE, MSG, STAT)                        _errcode, _errmsg
 ! Refused here, before C sees them, with FRICREG_EINVAL: FRHBCR's NDOF or M below 1, a
 ! negative MAXPT, IGUESS other than 0 or 1, and a K or IDOF below 1 (counts that would wrap
 ! into size_t or C's 0-based index; FRHBSB's K below 0), FRHBNM's MODE below 1 or negative NP,
 ! FRHBNQ's I below 1.
+!
+! A monitor is the caller's INTEGER FUNCTION MONITR(ITERS, PARAM, RESID), INTEGER*8 ITERS (the
+! Newton steps of this call so far), DOUBLE PRECISION PARAM (the continued parameter), RESID
+! (the residual over Newton's bound); a nonzero value stops the call (STAT FRICREG_EWORK). C
+! calls the bind(C) relay below, which calls MONITR, whose address C keeps as user: nothing is
+! allocated, as for the warning handlers (fricreg_warnings_f77.f90 says why the address may
+! pass through a void*).
 
 !> FRHBCR(NDOF, M, NH, H, STAT): a driver for NDOF >= 1 degrees of freedom, M >= 1 Jenkins
 !> elements and NH harmonics (1 <= NH <= FRICREG_HB_MAX_HARMONICS) into H.
@@ -539,6 +551,78 @@ subroutine frhbnq(h, i, a, omega, zeta, ndof, nc, x, stat)
   stat = int(fricreg_hb_nma_point(fricreg_handle_to_ptr(h), int(i - 1, c_size_t), a, omega, zeta, &
                                   int(ndof, c_size_t), int(nc, c_size_t), x))
 end subroutine frhbnq
+
+!> The C monitor of FRHBMS: calls the caller's MONITR, whose address user holds, with copies
+!> of the arguments. Not for callers: FRHBMS installs it.
+function fricreg_f77_hb_monitor_relay(user, iterations, parameter, residual) &
+    bind(C, name='fricreg_f77_hb_monitor_relay') result(stop_solve)
+  use fricreg_c
+  use, intrinsic :: iso_c_binding, only: c_null_funptr, c_f_procpointer
+  implicit none
+  type(c_ptr), value :: user
+  integer(c_int64_t), value :: iterations
+  real(c_double), value :: parameter, residual
+  integer(c_int) :: stop_solve
+  interface
+    integer function monitr(iters, param, resid)
+      import :: c_int64_t
+      integer(c_int64_t) :: iters
+      double precision :: param, resid
+    end function monitr
+  end interface
+  procedure(monitr), pointer :: caller
+  integer(c_int64_t) :: iters
+  double precision :: param, resid
+  call c_f_procpointer(transfer(user, c_null_funptr), caller)
+  iters = iterations ! copies: an F77 function may write to its arguments
+  param = parameter
+  resid = residual
+  stop_solve = 0
+  if (caller(iters, param, resid) /= 0) stop_solve = 1
+end function fricreg_f77_hb_monitor_relay
+
+!> FRHBMS(H, MONITR, STAT): install the caller's EXTERNAL MONITR (the file's comment), called
+!> before every Newton step of every solve; a second call replaces it.
+subroutine frhbms(h, monitr, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  interface
+    integer function monitr(iters, param, resid)
+      import :: c_int64_t
+      integer(c_int64_t) :: iters
+      double precision :: param, resid
+    end function monitr
+  end interface
+  integer, intent(out) :: stat
+  procedure(fricreg_hb_monitor), bind(C, name='fricreg_f77_hb_monitor_relay') :: relay
+  stat = int(fricreg_hb_set_monitor(fricreg_handle_to_ptr(h), c_funloc(relay), &
+                                    transfer(c_funloc(monitr), c_null_ptr)))
+end subroutine frhbms
+
+!> FRHBMU(H, STAT): remove the monitor (an F77 code cannot pass a null EXTERNAL).
+subroutine frhbmu(h, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  use, intrinsic :: iso_c_binding, only: c_null_funptr
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(out) :: stat
+  stat = int(fricreg_hb_set_monitor(fricreg_handle_to_ptr(h), c_null_funptr, c_null_ptr))
+end subroutine frhbmu
+
+!> FRHBMI(H, MAXIT, STAT): bound the Newton steps of one solving call at INTEGER*8 MAXIT (0: no
+!> bound, the default); a call that needs more returns FRICREG_EWORK. FRICREG_EINVAL if
+!> MAXIT < 0.
+subroutine frhbmi(h, maxit, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h, maxit
+  integer, intent(out) :: stat
+  stat = int(fricreg_hb_set_max_iterations(fricreg_handle_to_ptr(h), maxit))
+end subroutine frhbmi
 
 !> FRHBER(H, CODE, MSG, STAT): code and message of the driver's last failure.
 subroutine frhber(h, code, msg, stat)
