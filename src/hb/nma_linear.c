@@ -89,8 +89,9 @@ static void orient(double *phi, size_t n)
     for (size_t i = 1; i < n; i++)
         if (fabs(phi[i]) > fabs(phi[big]))
             big = i;
-    for (size_t i = 0; i < n && phi[big] < 0.0; i++)
-        phi[i] = -phi[i];
+    if (phi[big] < 0.0) /* tested once: flipping φ[big] on the way must not stop the loop */
+        for (size_t i = 0; i < n; i++)
+            phi[i] = -phi[i];
 }
 
 /* The eigenvector of mode k from the reduced A (destroyed): φ = L^-T v; ω² into *lambda. */
