@@ -197,8 +197,7 @@ START_TEST(sparse_against_dense)
         double z0 = 0.0, z1 = 0.0;
         for (size_t i = 0; i < np; i++) {
             double ad, wd, zd, as, ws, zs;
-            ck_assert_int_eq(fricreg_hb_nma_point(dense, i, &ad, &wd, &zd, 0, 0, NULL),
-                             FRICREG_OK);
+            ck_assert_int_eq(fricreg_hb_nma_point(dense, i, &ad, &wd, &zd, 0, 0, NULL), FRICREG_OK);
             ck_assert_int_eq(fricreg_hb_nma_point(sparse, i, &as, &ws, &zs, 0, 0, NULL),
                              FRICREG_OK);
             ck_assert_double_eq(ad, as);
@@ -260,10 +259,9 @@ START_TEST(not_positive_definite)
         ck_assert_int_eq(fricreg_hb_create(3, 1, 3, &hb), FRICREG_OK);
         ck_assert_int_eq(fricreg_hb_set_stiffness_csc(hb, 3, FRICREG_SPARSE_UPPER, p, i, K),
                          FRICREG_OK);
-        int status = c == 0 ? fricreg_hb_set_mass_csc(hb, 3, FRICREG_SPARSE_UPPER, p, i,
-                                                      masses[c])
-                            : fricreg_hb_set_mass_csc(hb, 3, FRICREG_SPARSE_UPPER, pd, pd,
-                                                      masses[c]);
+        int status = c == 0
+                         ? fricreg_hb_set_mass_csc(hb, 3, FRICREG_SPARSE_UPPER, p, i, masses[c])
+                         : fricreg_hb_set_mass_csc(hb, 3, FRICREG_SPARSE_UPPER, pd, pd, masses[c]);
         ck_assert_int_eq(status, FRICREG_OK);
         ck_assert_int_eq(fricreg_hb_set_elements(hb, 1, 3, J, &kt, &mun), FRICREG_OK);
         ck_assert_int_eq(fricreg_hb_nma(hb, 0, modal, 0.1, 1.0, 4), FRICREG_ENOTPSD);

@@ -68,7 +68,7 @@ int fr_hb_nma_symmv(double *A, double *V, double *work, size_t n, size_t *bad)
     gsl_eigen_symmv_workspace ws = {n, work + n, work + 2 * n, work + 3 * n, work + 4 * n};
     /* on finite input gsl_eigen_symmv fails only on sizes, which match here */
     return fr_eigen_symmv(&Av.matrix, &ev.vector, &Vv.matrix, &ws) != 0 ? FRICREG_EINVAL
-                                                                         : FRICREG_OK;
+                                                                        : FRICREG_OK;
 }
 
 void fr_hb_nma_back(const double *L, const double *V, size_t n, size_t c, double *phi)

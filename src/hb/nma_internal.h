@@ -43,8 +43,7 @@ int fr_hb_nma_linear(fricreg_hb *hb, const char *fn, size_t mode, struct fr_hb_n
  * (nma_sparse_mode.c): φ [n] mass-normalized (its sign not set), λ = ω_k². FRICREG_OK,
  * FRICREG_ENOTPSD (M), FRICREG_EINVAL (K_0 not positive definite), FRICREG_ENONFINITE,
  * FRICREG_EWORK (not converged), FRICREG_ENOMEM (message recorded, with fn). */
-int fr_hb_nma_sparse_mode(fricreg_hb *hb, const char *fn, size_t mode, double *phi,
-                          double *lambda);
+int fr_hb_nma_sparse_mode(fricreg_hb *hb, const char *fn, size_t mode, double *phi, double *lambda);
 
 /* The dense generalized symmetric eigenproblem K φ = λ M φ (nma_eigen.c), n x n row-major.
  * fr_hb_nma_cholesky: M = L L^T in place (the lower triangle, the upper zeroed); FRICREG_OK, or

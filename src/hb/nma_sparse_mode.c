@@ -35,11 +35,11 @@
 /* The iteration's arrays, all or nothing: n x p blocks column-major (column c at c n). */
 struct subspace {
     size_t n, p;
-    double *X, *Y, *Yb;        /* [n p] each: Ritz vectors, M X, M X̄ */
-    double *Kr, *Mr, *V, *Q;   /* [p p] each, row-major */
-    double *work;              /* [5 p] the eigensolver's */
-    double *lam, *lam_old;     /* [p] each: Ritz values */
-    double *eps;               /* [p] the vectors' inverse-iteration residuals */
+    double *X, *Y, *Yb;      /* [n p] each: Ritz vectors, M X, M X̄ */
+    double *Kr, *Mr, *V, *Q; /* [p p] each, row-major */
+    double *work;            /* [5 p] the eigensolver's */
+    double *lam, *lam_old;   /* [p] each: Ritz values */
+    double *eps;             /* [p] the vectors' inverse-iteration residuals */
 };
 
 static void subspace_free(struct subspace *s)
@@ -125,8 +125,8 @@ static cholmod_sparse *stuck_stiffness(fricreg_hb *hb, int64_t *cols)
             return NULL; /* a dense row of J on a huge model: beyond any memory */
         count += nz * (nz + 1) / 2;
     }
-    cholmod_triplet *T =
-        cholmod_l_allocate_triplet(n, n, count ? count : 1, 1, CHOLMOD_REAL, &hb->cc);
+    cholmod_triplet *T = cholmod_l_allocate_triplet(n, n, count ? count : 1, 1, CHOLMOD_REAL,
+                                                    &hb->cc);
     if (T == NULL)
         return NULL;
     SuiteSparse_long *Ti = T->i, *Tj = T->j;
@@ -304,13 +304,18 @@ static int iterate(fricreg_hb *hb, cholmod_factor *L0, struct subspace *s, size_
                    int *iterations)
 {
     size_t n = s->n, p = s->p;
-    cholmod_dense B = {.nrow = n, .ncol = p, .nzmax = n * p, .d = n, .x = s->Y,
-                       .xtype = CHOLMOD_REAL, .dtype = CHOLMOD_DOUBLE};
+    cholmod_dense B = {.nrow = n,
+                       .ncol = p,
+                       .nzmax = n * p,
+                       .d = n,
+                       .x = s->Y,
+                       .xtype = CHOLMOD_REAL,
+                       .dtype = CHOLMOD_DOUBLE};
     for (int it = 0; it < MAX_ITERATIONS; it++) {
         cholmod_dense *Xb = cholmod_l_solve(CHOLMOD_A, L0, &B, &hb->cc); /* K_0 X̄ = M X */
         if (Xb == NULL)
             return fr_cholmod_status(hb->cc.status) == FRICREG_ENOMEM ? FRICREG_ENOMEM
-                                                                       : FRICREG_EINVAL;
+                                                                      : FRICREG_EINVAL;
         const double *xb = Xb->x;
         for (size_t c = 0; c < p; c++)
             pattern_apply(hb, hb->vM, xb + c * n, s->Yb + c * n);
@@ -394,8 +399,8 @@ static int solve(fricreg_hb *hb, const char *fn, cholmod_factor *L0, size_t mode
                 "iterations (Ritz values to %g, vectors to %g)",
                 fn, mode, p, iterations, RITZ_TOL, VECTOR_TOL);
     else if (status == FRICREG_ENONFINITE)
-        fr_fail(hb, status, "%s: the subspace iteration overflows (M and K of scales too far apart)",
-                fn);
+        fr_fail(hb, status,
+                "%s: the subspace iteration overflows (M and K of scales too far apart)", fn);
     else
         fr_fail(hb, status, "%s: %s in the subspace iteration's solves", fn,
                 status == FRICREG_ENOMEM ? "no memory" : "CHOLMOD failed");
@@ -403,8 +408,7 @@ static int solve(fricreg_hb *hb, const char *fn, cholmod_factor *L0, size_t mode
     return status;
 }
 
-int fr_hb_nma_sparse_mode(fricreg_hb *hb, const char *fn, size_t mode, double *phi,
-                          double *lambda)
+int fr_hb_nma_sparse_mode(fricreg_hb *hb, const char *fn, size_t mode, double *phi, double *lambda)
 {
     int status = check_mass(hb, fn);
     if (status != FRICREG_OK)
