@@ -497,8 +497,11 @@ enum fricreg_hb_nma_damping {
  *  condensation as for the continuation's). The march starts at the linear mode of the
  *  structure with its elements stuck (K_0 = K + J^T diag(k) J, k the elements' stiffnesses: kt, the
  *  sum of an Iwan element's sliders of nonzero slip force, with lift-off kt and kn where the
- *  preload N0 > 0 closes the contact; K_0 φ = ω_k² M φ by GSL's symmetric eigensolver after
- *  the Cholesky factor of M, mode 0 the lowest), at a0 or, if an element would slip (or open)
+ *  preload N0 > 0 closes the contact; K_0 φ = ω_k² M φ, mode 0 the lowest: on a dense model by
+ *  GSL's symmetric eigensolver after the Cholesky factor of M, on a sparse model by shift-invert
+ *  subspace iteration with Rayleigh–Ritz on CHOLMOD's factor of K_0 (K. J. Bathe, Finite
+ *  Element Procedures, Sec. 11.6; max(2(k+1), k+9) vectors, Ritz values to 1e-12 and vectors
+ *  to 1e-10 relative), at a0 or, if an element would slip (or open)
  *  below a0, at half the amplitude where the first one does, where the mode is the linear one
  *  exactly (ω = ω_k, ζ = ζ_k); it proceeds by natural-parameter continuation in log a, the
  *  predictor the secant of the last two solutions in (q/a, ω, ξ), a step whose corrector fails
@@ -509,8 +512,11 @@ enum fricreg_hb_nma_damping {
  *  and branch are not changed.
  *
  *  Cost per Newton iteration: the H + 1 factors of the forced response and a real LU of order
- *  m (2H + 1) + 2; once per call a dense eigenproblem of order ndof (so ndof <= 4096: a sparse
- *  model's matrices are densified for it).
+ *  m (2H + 1) + 2; once per call the linear mode: a dense model's dense eigenproblem of order
+ *  ndof (O(ndof³)); a sparse model's sparse Cholesky factors of K_0 and of M, and per
+ *  iteration (typically 5 to 40) a solve with p = max(2(k+1), k+9) right-hand sides and
+ *  O(ndof p²) dense work. A sparse model's J rows should be sparse (an element's dofs): K_0
+ *  holds the products of each row's nonzeros.
  *
  *  mode     k, 0 <= k < ndof, in ascending order of the linearized natural frequencies.
  *  damping  one of enum fricreg_hb_nma_damping.
@@ -520,14 +526,18 @@ enum fricreg_hb_nma_damping {
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if hb is NULL; FRICREG_EINVAL if the elements were not
  *  set, mode >= ndof, damping is not an enumerator, not 0 < a0 < a1, npoints is out of range,
- *  ndof > 4096, or the stuck structure's mode k has ω_k² <= 0; FRICREG_ENONFINITE if a0 or a1
- *  is NaN or infinite, or an intermediate overflows (as fricreg_hb_solve; or L^-1 K_0 L^-T of
- *  the linear mode, M = L L^T, with M and K of scales too far apart); FRICREG_ENOTPSD if
- *  M is not positive definite (a pivot of its Cholesky factor below 1e-14 of its largest
- *  diagonal entry); FRICREG_ESINGULAR if some D_h(ω, ξ) or Newton's matrix is singular (as
- *  fricreg_hb_solve); FRICREG_EWORK if Newton did not converge (the step halved ten times);
+ *  or the stuck structure's mode k has ω_k² <= 0 (a sparse model: any of its modes, K_0 not
+ *  positive definite); FRICREG_ENONFINITE if a0 or a1 is NaN or infinite, or an intermediate
+ *  overflows (as fricreg_hb_solve; or the linear mode's reduced matrices, L^-1 K_0 L^-T with
+ *  M = L L^T or the subspace's projections, with M and K of scales too far apart);
+ *  FRICREG_ENOTPSD if M is not positive definite (a pivot of its Cholesky factor below 1e-14
+ *  of its largest diagonal entry); FRICREG_ESINGULAR if some D_h(ω, ξ) or Newton's matrix is
+ *  singular (as fricreg_hb_solve); FRICREG_EWORK if Newton did not converge (the step halved
+ *  ten times), or a sparse model's subspace iteration did not converge in 300 iterations (or
+ *  its mode's backward error ‖K_0 φ − λ M φ‖ / ((‖K_0‖_1 + λ ‖M‖_1) ‖φ‖) is above 1e-10);
  *  FRICREG_EINTEGRATOR as fricreg_hb_solve; FRICREG_ENOMEM. Allocates (npoints (nq + 3) +
- *  (nq + 2)² + O(H m² + ndof)) doubles, and 4 ndof² doubles while the linear mode is found. On
+ *  (nq + 2)² + O(H m² + ndof)) doubles, and while the linear mode is found 4 ndof² doubles
+ *  (a dense model) or K_0's and M's sparse factors and 3 ndof p doubles (a sparse one). On
  *  failure after the arguments' checks the earlier points are gone and the points reached are
  *  kept, except when the first allocation (the backbone's own state) fails: then the earlier
  *  points stay. Since 1.7 (FRICREG_1.7). */

@@ -34,9 +34,28 @@ struct fr_hb_nma {
 
 /* The linearized structure's mode k (elements stuck: each row of J a spring of its elements'
  * stiffness, fr_hb_nma_row): φ_k mass-normalized into nma->phi, ω_k, ξ_k, a_stick.
- * FRICREG_OK, FRICREG_EINVAL (mode, or a sparse model beyond the dense eigensolver), FRICREG_ENOTPSD
- * (M), FRICREG_ENOMEM (message recorded, with fn). */
+ * FRICREG_OK, FRICREG_EINVAL (ω_k² <= 0), FRICREG_ENOTPSD (M), FRICREG_ENONFINITE (overflow),
+ * FRICREG_EWORK (a sparse model's iteration did not converge), FRICREG_ENOMEM (message
+ * recorded, with fn). */
 int fr_hb_nma_linear(fricreg_hb *hb, const char *fn, size_t mode, struct fr_hb_nma *nma);
+
+/* A sparse model's mode k of K_0 φ = λ M φ by shift-invert subspace iteration
+ * (nma_sparse_mode.c): φ [n] mass-normalized (its sign not set), λ = ω_k². FRICREG_OK,
+ * FRICREG_ENOTPSD (M), FRICREG_EINVAL (K_0 not positive definite), FRICREG_ENONFINITE,
+ * FRICREG_EWORK (not converged), FRICREG_ENOMEM (message recorded, with fn). */
+int fr_hb_nma_sparse_mode(fricreg_hb *hb, const char *fn, size_t mode, double *phi, double *lambda);
+
+/* The dense generalized symmetric eigenproblem K φ = λ M φ (nma_eigen.c), n x n row-major.
+ * fr_hb_nma_cholesky: M = L L^T in place (the lower triangle, the upper zeroed); FRICREG_OK, or
+ * FRICREG_ENOTPSD when a pivot is not above 1e-14 of M's largest diagonal entry.
+ * fr_hb_nma_reduce: K <- L^-1 K L^-T in place. fr_hb_nma_symmv: the eigenvalues of the reduced
+ * A (destroyed) ascending into work[0..n) (work: 5 n), the eigenvectors v as V's columns;
+ * FRICREG_OK, FRICREG_ENONFINITE (*bad: A's first entry that is not finite) or FRICREG_EINVAL.
+ * fr_hb_nma_back: φ = L^-T v of V's column c (φ^T M φ = 1). */
+int fr_hb_nma_cholesky(double *M, size_t n);
+void fr_hb_nma_reduce(const double *L, double *K, size_t n);
+int fr_hb_nma_symmv(double *A, double *V, double *work, size_t n, size_t *bad);
+void fr_hb_nma_back(const double *L, const double *V, size_t n, size_t c, double *phi);
 
 /* Row r of J's stiffness with its elements stuck and its amplitude of first slip (or opening):
  * *k (0: the row carries no force at rest), *limit (infinite: none). */
