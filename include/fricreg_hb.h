@@ -534,8 +534,10 @@ enum fricreg_hb_nma_damping {
  *  of its largest diagonal entry); FRICREG_ESINGULAR if some D_h(ω, ξ) or Newton's matrix is
  *  singular (as fricreg_hb_solve); FRICREG_EWORK if Newton did not converge (the step halved
  *  ten times), or a sparse model's subspace iteration did not converge in 300 iterations (or
- *  its mode's backward error ‖K_0 φ − λ M φ‖ / ((‖K_0‖_1 + λ ‖M‖_1) ‖φ‖) is above 1e-10);
- *  FRICREG_EINTEGRATOR as fricreg_hb_solve; FRICREG_ENOMEM. Allocates (npoints (nq + 3) +
+ *  its mode's backward error ‖K_0 φ − λ M φ‖ / ((‖K_0‖_1 + λ ‖M‖_1) ‖φ‖) is above 1e-10),
+ *  or the monitor or fricreg_hb_set_max_iterations's bound stopped it (the points reached
+ *  kept); FRICREG_EINVAL also if called from the monitor; FRICREG_EINTEGRATOR as
+ *  fricreg_hb_solve; FRICREG_ENOMEM. Allocates (npoints (nq + 3) +
  *  (nq + 2)² + O(H m² + ndof)) doubles, and while the linear mode is found 4 ndof² doubles
  *  (a dense model) or K_0's and M's sparse factors and 3 ndof p doubles (a sparse one). On
  *  failure after the arguments' checks the earlier points are gone and the points reached are
