@@ -205,8 +205,8 @@ static void select_exponents(const fricreg_hb *hb, double omega, double *out)
         for (size_t j = 0; j < N2; j++) {
             int second;
             double a = selection_key(ev[2 * j + 1], omega, &second);
-            if (a < last || (a == last && (second < last_second ||
-                                           (second == last_second && j <= last_at))))
+            if (a < last ||
+                (a == last && (second < last_second || (second == last_second && j <= last_at))))
                 continue;
             if (best == N2 || a < best_a || (a == best_a && second < best_second))
                 best = j, best_a = a, best_second = second;
