@@ -718,8 +718,11 @@ FRICREG_API int fricreg_hb_peak(fricreg_hb *hb, size_t dof, double *omega, doubl
  *  multipliers. A solution is stable when every exponent has Re λ 2π/Ω <= 1e-6 (|μ| <= 1 +
  *  1e-6). The elements' sliders enter through their stabilized hysteresis's Jacobian: their
  *  offsets, forgotten once they slip, are no state of their own (an element stuck over a
- *  whole period would have a neutral one). A real multiplier below −1 appears as the pair
- *  Re λ ± iΩ/2, both counted: then the 2 ndof may hold one multiplier twice.
+ *  whole period would have a neutral one). A real negative multiplier appears as the pair
+ *  Re λ ± iΩ/2; those of Im λ > 0 are selected before their conjugates, so each is counted
+ *  once (two of them, as after a pair's collision on the negative real axis, give four
+ *  exponents of one |Im λ|, of which |Im λ| alone could take the smaller twice); only a lone
+ *  one is completed by its conjugate, counted twice.
  *
  *  Cost per solution: the companion's O((ndof H)²) entries and GSL's QR, about 10 (2 ndof
  *  (2H + 1))³ flops (measured against a continuation point: bench/hb_stability.c, and

@@ -8,6 +8,8 @@
  *     0.002 K, one lift-off element kt = 40, mu = 0.3, N0 = 2, kn = 100, tangential along dof 1,
  *     normal g = −x_2, p_c = (2, 1), H = 15, Omega = 11.5 .. 12.5 (with these parameters the
  *     branch does not overhang: scaled forcings 0.05 .. 8 were tried, every solution stable).
+ *   - the bilinear oscillator (bilinear_oscillator): one dof and a unilateral spring, no
+ *     friction, Omega = 2.2 .. 5.
  *   - the Jenkins pair: 2 unit masses, K = [2 −1; −1 2], C = 0.05 K, one Jenkins element kt =
  *     3, mu N = 0.4 on dof 1 against the ground, p_c = (1, 0), H = 15, Omega = 0.6 .. 2.2.
  *
@@ -29,6 +31,12 @@
  *   - the turning points of the gap pair against a fine continuation's fold (ds_max 1e-3, the
  *     vertex of the parabola through the extreme point and its neighbours); the stable flag
  *     flips across every located bifurcation.
+ *   - the period doublings of the bilinear oscillator and the Neimark–Sacker bifurcations of the
+ *     gap pair against a fine sweep (fine_crossing: point solves on a 1e-3 grid in Omega, the
+ *     sign change of log mu_max refined by Brent's root finder) and against the shooting's
+ *     crossing of |mu| = 1 (the same root finder on the monodromy's largest |eigenvalue|). On
+ *     the bilinear oscillator's period-doubled stretch (two real negative multipliers) mu_max
+ *     agrees with the shooting's to 6e-4.
  */
 #include <check.h>
 #include <math.h>
@@ -39,6 +47,7 @@
 #include <gsl/gsl_complex_math.h>
 #include <gsl/gsl_eigen.h>
 #include <gsl/gsl_linalg.h>
+#include <gsl/gsl_roots.h>
 
 #include "fricreg_hb.h"
 
@@ -89,6 +98,23 @@ static struct model gap_pair(void)
     s.J[0] = 0.0, s.J[1] = 1.0;
     s.Jn[0] = -1.0, s.Jn[1] = 0.0;
     s.mu = 0.01, s.n0 = -10.0, s.kn = 500.0;
+    return s;
+}
+
+/* The bilinear oscillator: one unit mass, k = 1, c = 0.04 (zeta = 0.02), and a unilateral spring
+ * kn = 9 that engages at x < 0 without a gap or preload (the normal element on g = −x, N0 = 0;
+ * mu = 0: no friction), so the stiffness is 1 for x > 0 and 10 for x < 0 (Shaw & Holmes's
+ * piecewise linear oscillator, J. Sound Vib. 90, 1983); p_c = 1. Being piecewise linear and
+ * homogeneous, its response scales with p_c and its multipliers do not depend on it. Its
+ * T-periodic orbit loses stability by period doubling near Omega = 2.348: a real multiplier
+ * through −1 (the shooting's too), and regains it near 4.908. */
+static struct model bilinear_oscillator(void)
+{
+    struct model s = {.n = 1, .normal = 1};
+    s.M[0] = 1.0, s.K[0] = 1.0, s.C[0] = 0.04;
+    s.J[0] = 1.0, s.Jn[0] = -1.0;
+    s.kt = 1.0, s.mu = 0.0, s.n0 = 0.0, s.kn = 9.0;
+    s.pc[0] = 1.0;
     return s;
 }
 
@@ -344,6 +370,98 @@ START_TEST(gap_pair_against_shooting)
 }
 END_TEST
 
+/* ---- Crossings of the unit circle against independent references ------------------------- */
+
+/* log mu_max of the point solve at omega, warm-started from and updating q: the test function
+ * of the fine sweep (crossing) and of the shooting (shooting_crossing). */
+struct crossing {
+    const struct model *s;
+    fricreg_hb *hb;
+    double q[2 * NC], z[MAXZ], level;
+};
+
+static double hb_log_mu(double omega, void *p)
+{
+    struct crossing *c = p;
+    int stable;
+    double mu;
+    ck_assert_int_eq(fricreg_hb_solve(c->hb, omega, 2 * NC, c->q, c->q), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_point_stability(c->hb, FRICREG_HB_SOLUTION, &stable, &mu),
+                     FRICREG_OK);
+    return log(mu) - c->level;
+}
+
+static double shooting_log_mu(double omega, void *p)
+{
+    struct crossing *c = p;
+    return log(shooting_mu_max(c->s, omega, c->z));
+}
+
+/* The root of fn in [a, b] by Brent's method (gsl_root_fsolver_brent) to 1e-12 in Omega. */
+static double brent(double (*fn)(double, void *), void *p, double a, double b)
+{
+    gsl_function f = {fn, p};
+    gsl_root_fsolver *r = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    ck_assert_int_eq(gsl_root_fsolver_set(r, &f, a, b), GSL_SUCCESS);
+    for (int it = 0;; it++) {
+        ck_assert_int_lt(it, 100);
+        ck_assert_int_eq(gsl_root_fsolver_iterate(r), GSL_SUCCESS);
+        a = gsl_root_fsolver_x_lower(r), b = gsl_root_fsolver_x_upper(r);
+        if (b - a <= 1e-12)
+            break;
+    }
+    double x = gsl_root_fsolver_root(r);
+    gsl_root_fsolver_free(r);
+    return x;
+}
+
+/* The fine sweep's crossing near omega: point solves (fixed Omega, warm-started along the grid,
+ * the first without a guess) on a grid of step 1e-3 over omega ± 0.02, whose sign change of
+ * log mu_max − level nearest omega brackets the root, which Brent's method narrows to 1e-12.
+ * level 0 is the unit circle; level 1e-6 fricreg's threshold of instability (|mu| > 1 +
+ * 1e-6, fricreg_hb_set_stability), where its stable flag, and so its bisection, flips. */
+static double fine_crossing(const struct model *s, double omega, double level)
+{
+    struct crossing c = {.s = s, .hb = make(s), .level = level};
+    ck_assert_int_eq(fricreg_hb_solve(c.hb, omega - 0.02, 2 * NC, NULL, c.q), FRICREG_OK);
+    double prev = hb_log_mu(omega - 0.02, &c), lo = 0.0, dist = INFINITY, q[2 * NC];
+    for (int i = 1; i <= 40; i++) {
+        double w = omega - 0.02 + 1e-3 * i, g = hb_log_mu(w, &c);
+        if ((g > 0.0) != (prev > 0.0) && fabs(w - 5e-4 - omega) < dist)
+            dist = fabs(w - 5e-4 - omega), lo = w - 1e-3, memcpy(q, c.q, sizeof q);
+        prev = g;
+    }
+    ck_assert(dist < 0.02);
+    memcpy(c.q, q, sizeof q);
+    double root = brent(hb_log_mu, &c, lo, lo + 1e-3);
+    fricreg_hb_free(c.hb);
+    return root;
+}
+
+/* The shooting's crossing of |mu| = 1 in [a, b] (Brent on log of shooting_mu_max's largest
+ * |eigenvalue| of the monodromy, 4000 RK4 steps a period), from the state z of an orbit
+ * nearby. */
+static double shooting_crossing(const struct model *s, const double *z, double a, double b)
+{
+    struct crossing c = {.s = s};
+    memcpy(c.z, z, sizeof c.z);
+    return brent(shooting_log_mu, &c, a, b);
+}
+
+/* The bilinear oscillator across its period-doubled stretch, where two real negative
+ * multipliers make four Hill exponents of |Im| = Omega/2 (fricreg_hb_set_stability): mu_max
+ * to 2e-2 of the shooting's and the verdict at every point from 2.3 to 4.0 (measured 6e-4). */
+START_TEST(bilinear_against_shooting)
+{
+    struct model s = bilinear_oscillator();
+    fricreg_hb *hb = make(&s);
+    double q[2 * NC];
+    ck_assert_int_eq(fricreg_hb_solve(hb, 2.3, 2 * NC, NULL, q), FRICREG_OK);
+    ck_assert_int_ge(sweep_against_shooting(hb, &s, q, 2.3, 0.1, 18, 0.02), 15);
+    fricreg_hb_free(hb);
+}
+END_TEST
+
 /* The fold of a fine continuation (ds_max 1e-3, no stability) near omega: among its points the
  * extreme of Omega nearest to omega (a local maximum when top, else minimum), and the vertex of
  * the parabola Omega(rms of dof 0) through it and its neighbours (rms runs monotonically
@@ -377,8 +495,13 @@ static double fine_fold(const struct model *s, double omega, int top)
 /* The gap pair's branch from 11 to 17 rad/s overhangs: two turning points located against the
  * fine continuation's fold (measured: 3e-13 at the upper fold at 16.0666, asserted 1e-6; 1.5e-6
  * at the lower one at 15.0296, asserted 5e-6: unresolved whether the reference's parabola or
- * the bisection is off there, a finer reference sweep took over 5 minutes), the stable flag flipping across each; a Neimark–Sacker
- * bifurcation at each end of the unstable stretch that the shooting confirms (13.5 .. 14.5). */
+ * the bisection is off there, a finer reference sweep took over 5 minutes), the stable flag
+ * flipping across each; a Neimark–Sacker bifurcation at each end of the unstable stretch,
+ * against the fine sweep's crossing of fricreg's threshold to 1e-6 (measured 1.1e-10 at
+ * 13.5816833 and at 14.4257264), of the unit circle to 5e-6 (2.4e-7, 3.0e-6: the threshold
+ * |mu| = 1 + 1e-6 where the stable flag flips lies 1e-6 / (d log mu/dOmega) past the circle,
+ * and the upper crossing is flat), and against the shooting's to 2e-3 (5.1e-4, 7.0e-4; the
+ * shooting's own scatter between 4000 and 8000 steps a period is 5e-4 and 1.6e-4). */
 START_TEST(gap_pair_bifurcations)
 {
     struct model s = gap_pair();
@@ -405,12 +528,66 @@ START_TEST(gap_pair_bifurcations)
         } else {
             ck_assert_int_eq(type, FRICREG_HB_NS);
             ck_assert(om > 13.5 && om < 14.6);
+            double fine = fine_crossing(&s, om, 1e-6), circle = fine_crossing(&s, om, 0.0);
+            double q[2 * NC], z[MAXZ];
+            ck_assert_int_eq(fricreg_hb_solve(hb, om, 2 * NC, NULL, q), FRICREG_OK);
+            hb_state(hb, &s, om, z);
+            double shot = shooting_crossing(&s, z, om - 0.02, om + 0.02);
+            if (getenv("HB_PRINT"))
+                fprintf(stderr,
+                        "  fine sweep %.10f (%.2e), unit circle %.10f (%.2e), shooting %.10f "
+                        "(%.2e)\n",
+                        fine, om - fine, circle, om - circle, shot, om - shot);
+            ck_assert_double_le(fabs(om - fine), 1e-6);
+            ck_assert_double_le(fabs(om - circle), 5e-6);
+            ck_assert_double_le(fabs(om - shot), 2e-3);
             ns++;
         }
     }
     ck_assert_uint_eq(tps, 2);
     ck_assert_uint_eq(ns, 2);
     fricreg_hb_free(hb);
+}
+END_TEST
+
+/* The bilinear oscillator's period doublings at either end of its unstable stretch: each
+ * located by the continuation where a real multiplier crosses −1 (FRICREG_HB_PD), the stable
+ * flag flipping across it, to 1e-6 of the fine sweep's crossing of fricreg's threshold
+ * (measured 4e-12 at 2.3482257, 2e-11 at 4.9083827) and of the unit circle (3e-8, 5e-8);
+ * against the shooting's crossing to 1e-3 (measured 2.4e-4, 2.6e-4: the shooting's own
+ * scatter, its RK4 stepping across the spring's kink unlocated, is 3e-4 between 4000, 8000 and
+ * 16000 steps a period; the HB's H = 15 against H = 40, 9e-5 and 1.2e-5). */
+START_TEST(bilinear_period_doubling)
+{
+    struct model s = bilinear_oscillator();
+    const double ends[2][2] = {{2.2, 2.5}, {4.8, 5.0}};
+    for (int e = 0; e < 2; e++) {
+        fricreg_hb *hb = make(&s);
+        ck_assert_int_eq(fricreg_hb_continue(hb, ends[e][0], ends[e][1], 2 * NC, NULL), FRICREG_OK);
+        ck_assert_uint_eq(fricreg_hb_bifurcations(hb), 1);
+        int type = 0, s0 = -1, s1 = -1;
+        double om = 0.0, rms, mu, z[MAXZ], q[2 * NC];
+        size_t k = 0;
+        ck_assert_int_eq(fricreg_hb_bifurcation(hb, 0, &type, &om, &k, s.n, &rms), FRICREG_OK);
+        ck_assert_int_eq(type, FRICREG_HB_PD);
+        ck_assert_int_eq(fricreg_hb_point_stability(hb, k, &s0, &mu), FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_point_stability(hb, k + 1, &s1, &mu), FRICREG_OK);
+        ck_assert_int_eq(s0, e == 0);
+        ck_assert_int_eq(s1, e == 1);
+        double fine = fine_crossing(&s, om, 1e-6), circle = fine_crossing(&s, om, 0.0);
+        ck_assert_int_eq(fricreg_hb_solve(hb, om, 2 * NC, NULL, q), FRICREG_OK);
+        hb_state(hb, &s, om, z);
+        double shot = shooting_crossing(&s, z, om - 0.02, om + 0.02);
+        if (getenv("HB_PRINT"))
+            fprintf(stderr,
+                    "PD at Omega %.10f: fine sweep %.10f (%.2e), unit circle %.10f (%.2e), "
+                    "shooting %.10f (%.2e)\n",
+                    om, fine, om - fine, circle, om - circle, shot, om - shot);
+        ck_assert_double_le(fabs(om - fine), 1e-6);
+        ck_assert_double_le(fabs(om - circle), 1e-6);
+        ck_assert_double_le(fabs(om - shot), 1e-3);
+        fricreg_hb_free(hb);
+    }
 }
 END_TEST
 
@@ -499,6 +676,7 @@ Suite *hb_stability_suite(void)
     tcase_set_timeout(tc, 300);
     tcase_add_test(tc, jenkins_pair_against_shooting);
     tcase_add_test(tc, gap_pair_against_shooting);
+    tcase_add_test(tc, bilinear_against_shooting);
     tcase_add_test(tc, bad_input);
     tcase_add_test(tc, sparse_as_dense);
     suite_add_tcase(s, tc);
@@ -508,6 +686,7 @@ Suite *hb_stability_suite(void)
     tcase_set_timeout(sweeps, 300);
     tcase_add_test(sweeps, contact_pair_against_shooting);
     tcase_add_test(sweeps, gap_pair_bifurcations);
+    tcase_add_test(sweeps, bilinear_period_doubling);
     suite_add_tcase(s, sweeps);
     return s;
 }

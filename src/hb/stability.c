@@ -174,26 +174,47 @@ static int companion(fricreg_hb *hb, const char *fn)
     return FRICREG_OK;
 }
 
-/* The 2n eigenvalues of least |Im λ| (a selection, out of place) as (re, im) into out[4n]. */
-static void select_exponents(const fricreg_hb *hb, double *out)
+/* An eigenvalue's place in the selection: |Im λ|, except that on the line |Im λ| = Ω/2 (to
+ * 1e-6 of Ω, as kind()) the conjugate with Im λ < 0 comes after every one with Im λ > 0. A real
+ * negative multiplier μ = −e^{rT} appears there as the conjugates r ± iΩ/2; two of them (as
+ * after a pair's collision on the negative real axis: det Φ > 0 makes them come in pairs) give
+ * four eigenvalues of one |Im λ|, and by |Im λ| alone the tie could take the smaller multiplier
+ * twice and drop the larger (measured: |μ| 0.36 for the shooting's 2.54 on a bilinear
+ * oscillator). Each multiplier is then taken once, its Im λ > 0 representative. */
+static double selection_key(double im, double omega, int *second)
+{
+    double a = fabs(im);
+    *second = a >= (0.5 - 1e-6) * omega && im < 0.0;
+    return a >= (0.5 - 1e-6) * omega ? 0.5 * omega : a;
+}
+
+/* The 2n eigenvalues of least selection_key (a selection, out of place) as (re, im) into
+ * out[4n]: ties (conjugates, a real pair) in index order. */
+static void select_exponents(const fricreg_hb *hb, double omega, double *out)
 {
     size_t N2 = 2 * hb->n * hb->nc, want = 2 * hb->n;
     const double *ev = hb->hill_eval;
     double last = -1.0;
+    int last_second = 0;
     size_t last_at = 0;
     for (size_t i = 0; i < want; i++) {
-        /* the next by (|Im|, index): ties (conjugates, a real pair) in index order */
+        /* the next by (key, second, index) */
         size_t best = N2;
+        double best_a = 0.0;
+        int best_second = 0;
         for (size_t j = 0; j < N2; j++) {
-            double a = fabs(ev[2 * j + 1]);
-            if (a < last || (a == last && j <= last_at))
+            int second;
+            double a = selection_key(ev[2 * j + 1], omega, &second);
+            if (a < last ||
+                (a == last && (second < last_second || (second == last_second && j <= last_at))))
                 continue;
-            if (best == N2 || a < fabs(ev[2 * best + 1]))
-                best = j;
+            if (best == N2 || a < best_a || (a == best_a && second < best_second))
+                best = j, best_a = a, best_second = second;
         }
         out[2 * i] = ev[2 * best];
         out[2 * i + 1] = ev[2 * best + 1];
-        last = fabs(ev[2 * best + 1]);
+        last = best_a;
+        last_second = best_second;
         last_at = best;
     }
 }
@@ -220,7 +241,7 @@ int fr_hb_hill(fricreg_hb *hb, const char *fn, double omega, double *out)
                        "%s: stability: the QR iteration on Hill's matrix did not converge at "
                        "Omega = %g",
                        fn, omega);
-    select_exponents(hb, out + 2);
+    select_exponents(hb, omega, out + 2);
     double T = TWO_PI / omega, top = -INFINITY;
     for (size_t i = 0; i < 2 * hb->n; i++)
         top = fmax(top, out[2 + 2 * i] * T);
