@@ -552,7 +552,10 @@ static void bisect(fricreg_hb *hb, struct branch *b, size_t k, struct test t)
         ya[j] = hb->qpts[k * ld + j] / c;
         yb[j] = hb->qpts[(k + 1) * ld + j] / c;
     }
-    int sa = test_sign(hb, t, hb->xpts + k * xw, hb->pts[k * (1 + n)]);
+    /* a change of stability's side at point k is its verdict's (an exponent within the
+     * verdict's margin of the unit circle there puts the crossing at k itself) */
+    const double *xk = hb->xpts + k * xw;
+    int sa = t.kind >= 0 ? xk[2] == 0.0 : test_sign(hb, t, xk, hb->pts[k * (1 + n)]);
     double *rec = hb->bifs + hb->nbif * (4 + n);
     rec[0] = t.type;
     rec[2] = (double)k;
