@@ -105,8 +105,11 @@ int fr_hb_nma_evaluate(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, co
     if (!isfinite(omega) || !(omega > 0.0) || !isfinite(y[nq + 1]))
         return fr_fail(hb, FRICREG_EWORK, "%s: Newton left the frequencies (omega = %g, xi = %g)",
                        fn, omega, y[nq + 1]);
-    hb->xi = y[nq + 1] - (nma->modal ? nma->xi_k : 0.0);
-    hb->factored_omega = NAN; /* ξ changed */
+    double xi = y[nq + 1] - (nma->modal ? nma->xi_k : 0.0);
+    if (xi != hb->xi) { /* D_h(ω, ξ): the factors at this ω are another ξ's */
+        hb->xi = xi;
+        hb->factored_omega = NAN;
+    }
     int status = fr_hb_factor(hb, fn, omega, 1);
     if (status == FRICREG_OK)
         status = fr_hb_residual(hb, fn, y, R, 1);
