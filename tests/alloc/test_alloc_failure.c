@@ -2283,6 +2283,41 @@ static const struct hb_case hb_cases[] = {
     {"hb sparse, lift-off", 1, HB_LIFTOFF, 0, 1.1, 1.0, 1.2, 0.25, 0.5, HB_MAX_POINTS},
 };
 
+/* A failed case's tally: cases that ended FRICREG_ENOMEM somewhere, all OK, broken. */
+struct hb_tally {
+    long enomem, ok, broken;
+    char first[512]; /* the first broken case, described */
+};
+
+/* What the allocator saw of a failed case once its driver is freed: why (the judge's verdict,
+ * "" if it held) or the first broken promise: the failure not reached (exactly one), a
+ * violation, a call to GSL's handler, a leak. */
+static const char *hb_unkept(const char *why, long failed, long live_before)
+{
+    if (why[0] != '\0')
+        return why;
+    if (failed != 1)
+        return "the allocation was not reached";
+    if (violation[0] != '\0')
+        return violation;
+    if (gsl_handler_calls != 0)
+        return gsl_handler_reason;
+    return live != live_before ? "a block leaked" : "";
+}
+
+/* Counts failure k of n, whose three calls returned status[3], into *t. */
+static void hb_count(struct hb_tally *t, const char *why, const int status[3], long k, long n)
+{
+    int any = 0;
+    for (int i = 0; i < 3; i++)
+        any |= status[i] == FRICREG_ENOMEM;
+    t->enomem += any;
+    t->ok += !any;
+    if (why[0] != '\0' && t->broken++ == 0)
+        snprintf(t->first, sizeof t->first, "allocation %ld of %ld: %s (statuses %d %d %d)", k, n,
+                 why, status[0], status[1], status[2]);
+}
+
 START_TEST(test_hb_solve_continue)
 {
     const struct hb_case *c = &hb_cases[_i];
@@ -2321,8 +2356,7 @@ START_TEST(test_hb_solve_continue)
                       ref.npts);
     }
     ck_assert_msg(n > 0, "%s: allocates nothing, so the loop tests nothing", c->name);
-    long enomem = 0, ok = 0, broken = 0;
-    char first[512] = "";
+    struct hb_tally t = {0};
     for (long k = 1; k <= n; k = next_failure(k, n)) {
         live_before = live;
         violation[0] = '\0';
@@ -2342,28 +2376,13 @@ START_TEST(test_hb_solve_continue)
         }
         fricreg_hb_free(hb);
         hook_disarm();
-        if (why[0] == '\0' && failed != 1)
-            why = "the allocation was not reached";
-        if (why[0] == '\0' && violation[0] != '\0')
-            why = violation;
-        if (why[0] == '\0' && gsl_handler_calls != 0)
-            why = gsl_handler_reason;
-        if (why[0] == '\0' && live != live_before)
-            why = "a block leaked";
-        int any = 0;
-        for (int i = 0; i < 3; i++)
-            any |= got.status[i] == FRICREG_ENOMEM;
-        enomem += any;
-        ok += !any;
-        if (why[0] != '\0' && broken++ == 0)
-            snprintf(first, sizeof first, "allocation %ld of %ld: %s (statuses %d %d %d)", k, n,
-                     why, got.status[0], got.status[1], got.status[2]);
+        hb_count(&t, hb_unkept(why, failed, live_before), got.status, k, n);
     }
     printf("%s: %ld allocations in solve, displacement and continue (%ld in solve and "
            "displacement), %zu points: %ld cases, %ld ENOMEM, %ld OK, %ld broken\n",
-           c->name, n, solve_allocs, ref.npts, n, enomem, ok, broken);
+           c->name, n, solve_allocs, ref.npts, n, t.enomem, t.ok, t.broken);
     fflush(stdout);
-    ck_assert_msg(broken == 0, "%s: %ld broken, the first %s", c->name, broken, first);
+    ck_assert_msg(t.broken == 0, "%s: %ld broken, the first %s", c->name, t.broken, t.first);
 }
 END_TEST
 
@@ -2489,8 +2508,7 @@ START_TEST(test_hb_nma_level)
     ck_assert_msg(memcmp(&ref, &again, sizeof ref) == 0, "%s: a second run differs", c->name);
     ck_assert_int_eq(live, live_before);
     ck_assert_msg(n > 0, "%s: allocates nothing, so the loop tests nothing", c->name);
-    long enomem = 0, ok = 0, broken = 0;
-    char first[512] = "";
+    struct hb_tally t = {0};
     for (long k = 1; k <= n; k = next_failure(k, n)) {
         live_before = live;
         violation[0] = '\0';
@@ -2510,28 +2528,13 @@ START_TEST(test_hb_nma_level)
         }
         fricreg_hb_free(hb);
         hook_disarm();
-        if (why[0] == '\0' && failed != 1)
-            why = "the allocation was not reached";
-        if (why[0] == '\0' && violation[0] != '\0')
-            why = violation;
-        if (why[0] == '\0' && gsl_handler_calls != 0)
-            why = gsl_handler_reason;
-        if (why[0] == '\0' && live != live_before)
-            why = "a block leaked";
-        int any = 0;
-        for (int i = 0; i < 3; i++)
-            any |= got.status[i] == FRICREG_ENOMEM;
-        enomem += any;
-        ok += !any;
-        if (why[0] != '\0' && broken++ == 0)
-            snprintf(first, sizeof first, "allocation %ld of %ld: %s (statuses %d %d %d)", k, n,
-                     why, got.status[0], got.status[1], got.status[2]);
+        hb_count(&t, hb_unkept(why, failed, live_before), got.status, k, n);
     }
     printf("%s: %ld allocations in nma, nma_point and continue_level, %zu + %zu points: %ld "
            "ENOMEM, %ld OK, %ld broken\n",
-           c->name, n, ref.nnma, ref.npts, enomem, ok, broken);
+           c->name, n, ref.nnma, ref.npts, t.enomem, t.ok, t.broken);
     fflush(stdout);
-    ck_assert_msg(broken == 0, "%s: %ld broken, the first %s", c->name, broken, first);
+    ck_assert_msg(t.broken == 0, "%s: %ld broken, the first %s", c->name, t.broken, t.first);
 }
 END_TEST
 
