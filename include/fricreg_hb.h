@@ -780,9 +780,9 @@ FRICREG_API size_t fricreg_hb_bifurcations(const fricreg_hb *hb);
  *  located by bisection on its test function (a change of stability: that exponent's
  *  crossing of the unit circle, |μ| = 1, not the flag's margin) along the chord of the two
  *  points, each trial point solved by the continuation's corrector on the hyperplane normal
- *  to the chord, to 1e-9 of the chord (so Ω to about 1e-9 |Ω1 − Ω0| at most, far less at a turning point where
- *  Ω is stationary); a trial whose corrector fails ends the bisection at the bracket's
- *  nearer stored point. One bifurcation per pair of points at most (the first test that
+ *  to the chord, to 1e-9 of the chord (so Ω to about 1e-9 |Ω1 − Ω0| at most, far less at a
+ *  turning point where Ω is stationary); a trial whose corrector fails ends the bisection at
+ *  the bracket's nearer stored point. One bifurcation per pair of points at most (the first test that
  *  changed, in the order above).
  *
  *  i          index, 0 <= i < fricreg_hb_bifurcations(hb).
