@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* hb_sparse.c — the harmonic-balance driver's sparse model (UMFPACK) against the dense one
+/* hb_sparse.c — the harmonic-balance driver's sparse model (KLU) against the dense one
  * (the complex LU of src/hb/lu.c) on tests/support/hb_rod.h's rod with three Jenkins elements, H = 7: the
  * time of one point solve (fricreg_hb_solve from the stuck guess, the factors at a new
  * frequency included) against the dofs, and the frequency response over the first resonance

@@ -53,7 +53,8 @@
 module fricreg
   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_int64_t, c_intptr_t, &
                                          c_ptr, c_funptr, c_char, c_null_ptr, c_null_funptr, &
-                                         c_null_char, c_associated, c_f_pointer, c_loc, c_funloc
+                                         c_null_char, c_associated, c_f_pointer, c_loc, c_funloc, &
+                                         c_int8_t
   use fricreg_c
 #ifdef FRICREG_HAVE_SIM
   use fricreg_sim_c
@@ -377,6 +378,8 @@ module fricreg
     procedure :: get_stat => struct_get_stat
     procedure :: warning_count => struct_warning_count
     procedure :: get_warning => struct_get_warning
+    procedure :: save => struct_save
+    procedure :: restore => struct_restore
     final :: struct_final
   end type
 
@@ -415,6 +418,7 @@ module fricreg
     procedure :: peak => hb_peak
     procedure :: set_stability => hb_set_stability
     procedure :: stability => hb_stability
+    procedure :: truncation_error => hb_truncation_error
     procedure :: bifurcations => hb_bifurcations
     procedure :: bifurcation => hb_bifurcation
     procedure :: bifurcation_level => hb_bifurcation_level
@@ -3355,6 +3359,48 @@ contains
       status = self%unrecorded('get_state', fricreg_structure_get_state(self%ptr, self%n, u, v, a))
   end function struct_get_state
 
+  !> Save everything the run carries from one step to the next (fricreg_structure_save) into
+  !> blob, (re)allocated to the checkpoint's length in bytes, for restore into a structure set
+  !> up the same way, in this build on this machine (a file: write it with
+  !> access='stream', form='unformatted'). FRICREG_EINVAL (from the observer; more than 64
+  !> coupled contacts); FRICREG_ENOMEM.
+  function struct_save(self, blob) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    integer(c_int8_t), allocatable, target, intent(inout) :: blob(:)
+    integer(c_int) :: status
+    integer(c_size_t) :: len
+    integer :: stat
+    status = self%ready('save', 'structure')
+    if (status /= FRICREG_OK) return
+    len = 0
+    status = self%record(fricreg_structure_save(self%ptr, c_null_ptr, len))
+    if (status /= FRICREG_OK) return
+    if (allocated(blob)) deallocate(blob)
+    allocate(blob(len), stat=stat)
+    if (stat /= 0) then
+      status = self%fail(FRICREG_ENOMEM, 'save: no memory for the checkpoint')
+      return
+    end if
+    status = self%record(fricreg_structure_save(self%ptr, c_loc(blob), len))
+  end function struct_save
+
+  !> Restore a checkpoint of save (fricreg_structure_restore): the run continues bit for bit as
+  !> the saved one would. FRICREG_EINVAL (not a checkpoint, truncated, corrupted, another build
+  !> or another model: the message names the first difference); the set-up's statuses.
+  function struct_restore(self, blob) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    integer(c_int8_t), intent(in), target, contiguous :: blob(:)
+    integer(c_int) :: status
+    status = self%ready('restore', 'structure')
+    if (status /= FRICREG_OK) return
+    if (size(blob) == 0) then
+      status = self%fail(FRICREG_EINVAL, 'restore: the checkpoint is empty')
+      return
+    end if
+    status = self%record(fricreg_structure_restore(self%ptr, c_loc(blob), &
+                                                   int(size(blob), c_size_t)))
+  end function struct_restore
+
   !> Friction forces f(m) of the current state (force units). FRICREG_ESIZE.
   function struct_get_forces(self, f) result(status)
     class(fricreg_structure), intent(inout) :: self
@@ -3875,6 +3921,30 @@ contains
     status = self%record(fricreg_hb_point_stability(self%ptr, idx, flag, mu_max))
     if (status == FRICREG_OK) stable = flag /= 0
   end function hb_stability
+
+  !> The estimate of each dof's error from truncating at H harmonics, rms_error(ndof), and of
+  !> its fundamental's amplitude, amplitude_error(ndof) (optional), at point k (1 <= k <=
+  !> points()) or with k = 0 of the last solution (fricreg_hb_truncation_error: one solve at
+  !> 2H + 1). FRICREG_EINVAL for k out of range, no solution or H > 19; FRICREG_ESIZE; the
+  !> statuses of the solve at 2H + 1.
+  function hb_truncation_error(self, k, rms_error, amplitude_error) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    integer, intent(in) :: k
+    real(c_double), intent(inout), contiguous :: rms_error(:)
+    real(c_double), intent(inout), contiguous, optional :: amplitude_error(:)
+    integer(c_int) :: status
+    integer(c_size_t) :: idx
+    status = self%hb_shape('truncation_error', 'rms_error', rms_error, self%n, 0_c_size_t)
+    if (status == FRICREG_OK .and. present(amplitude_error)) status = &
+      self%hb_shape('truncation_error', 'amplitude_error', amplitude_error, self%n, 0_c_size_t)
+    if (status == FRICREG_OK .and. k < 0) status = self%fail(FRICREG_EINVAL, &
+      'truncation_error: k must be >= 0 (0: the last solution)')
+    if (status /= FRICREG_OK) return
+    idx = -1_c_size_t ! FRICREG_HB_SOLUTION, (size_t)-1
+    if (k > 0) idx = as_size(k - 1)
+    status = self%record(fricreg_hb_truncation_error(self%ptr, idx, self%n, rms_error, &
+                                                     amplitude_error))
+  end function hb_truncation_error
 
   !> The number of bifurcations the last continuation located (fricreg_hb_bifurcations).
   integer function hb_bifurcations(self)

@@ -21,7 +21,7 @@
 #   const char *, char *                character(kind=c_char) (*), intent(in) / intent(inout)
 #   fricreg_X *, const fricreg_X *      type(c_ptr), value (the handle; c_null_ptr for NULL)
 #   fricreg_X **                        type(c_ptr), intent(inout) (create writes it)
-#   void *                              type(c_ptr), value
+#   void *, const void *                type(c_ptr), value (bytes: c_loc of the caller's array)
 #   a callback type of the header       type(c_funptr), value (c_funloc of a bind(C) function):
 #     (`typedef R (*fricreg_name)(...)`, such as fricreg_sim_observer)
 # Every pointer argument but a handle is `optional`: omitting it passes NULL, as C allows for
@@ -86,7 +86,7 @@ function(fortran_of kind ctype out_var)
     set(decl "integer(c_size_t), value")
   elseif(ctype STREQUAL "int64_t")
     set(decl "integer(c_int64_t), value")
-  elseif(ctype STREQUAL "void *")
+  elseif(ctype STREQUAL "void *" OR ctype STREQUAL "const void *")
     set(decl "type(c_ptr), value")
   elseif(ctype IN_LIST callbacks)
     set(decl "type(c_funptr), value")

@@ -51,13 +51,18 @@
  * (the dense setters) is factored by a complex LU with partial pivoting, O(H ndof³): for small
  * to medium ndof (at most 4096). Both dense LUs are fricreg's own, on memory allocated at
  * create and by the element setters, so a dense solve allocates nothing. A sparse
- * model (any _csc setter; the only one above 4096 dofs) by SuiteSparse's UMFPACK, complex
+ * model (any _csc setter; the only one above 4096 dofs) by SuiteSparse's KLU, complex
  * (D_h is complex symmetric, not Hermitian, and indefinite above the first resonance: no
  * Cholesky): the pattern of D_h, the union of M's, C's and K's, is analysed once per pattern
- * (umfpack_zl_symbolic), each D_h factored per frequency (umfpack_zl_numeric) and freed once
- * its solves Y_h = D_h^-1 [J^T | P_h] are done, so one factor, O(nnz(L + U)), lives at a time;
- * Y_h of every harmonic, (H + 1) ndof (m + 1) complex numbers, is kept (the displacements need
- * no factor). Its cost follows the factors' fill, O(H ndof) on a banded model (measured:
+ * (klu_l_analyze: AMD), each D_h factored with partial pivoting (klu_zl_factor) and, at later
+ * frequencies, refactored on the same pivots (klu_zl_refactor) while their pivot growth stays
+ * within a hundredfold of a fresh factor's. The H + 1 factors are kept from one frequency to
+ * the next within a call (its Newton iterations, continuation points) while they hold at most
+ * 2^24 entries in all, and freed when it returns, so that a call's results do not depend on
+ * the calls before it; a larger model frees each once its solves Y_h = D_h^-1 [J^T | P_h] are
+ * done, so one factor, O(nnz(L + U)), lives at a time. Y_h of
+ * every harmonic, (H + 1) ndof (m + 1) complex numbers, is kept (the displacements need no
+ * factor). Its cost follows the factors' fill, O(H ndof) on a banded model (measured:
  * docs/joints.md). The solves' forward error grows with the condition of D_h (on a rod of
  * ndof elements as ndof²: about 3e-8 of q at 10^4 dofs): Newton's tolerance must lie above it
  * for a continuation to converge (fricreg_hb_set_newton: 1e-7 there).
@@ -109,7 +114,7 @@ typedef struct fricreg_hb fricreg_hb;
  *  time; the solves Y_h of every harmonic); a _csc setter turns it sparse for good (its dense
  *  matrices converted, then freed). Beyond 4096 dofs the model is sparse from the start (M = I,
  *  C = K = 0 as sparse matrices), O(H m ndof + (m H)²) doubles here, and the sparse setters
- *  and solves allocate the pattern and UMFPACK's factors (header comment).
+ *  and solves allocate the pattern and KLU's factors (header comment).
  *
  *  ndof       degrees of freedom, 1 <= ndof <= 2^24.
  *  m          Jenkins elements, 1 <= m <= 256.
@@ -157,7 +162,7 @@ FRICREG_API int fricreg_hb_set_damping(fricreg_hb *hb, size_t ndof, const double
  *  one-based with FRICREG_SPARSE_ONE_BASED; given whole (then symmetric to 1e-12 of the rows'
  *  scales as fricreg_hb_set_mass, its symmetric part kept) or by one triangle
  *  (FRICREG_SPARSE_UPPER, row <= column, or FRICREG_SPARSE_LOWER); duplicates summed. Copied.
- *  The model becomes sparse: from then on D_h is factored by UMFPACK (header comment), the
+ *  The model becomes sparse: from then on D_h is factored by KLU (header comment), the
  *  dense setters convert their matrices to it, and a dense model's other two matrices are
  *  converted now (their non-zero entries). Since 1.6 (FRICREG_1.6).
  *
@@ -344,12 +349,12 @@ FRICREG_API int fricreg_hb_set_continuation(fricreg_hb *hb, double ds, double ds
 
 /** \name Monitoring and stopping a solve
  *  Every solving call (fricreg_hb_solve, fricreg_hb_continue, fricreg_hb_continue_level,
- *  fricreg_hb_peak, fricreg_hb_nma) spends its work in Newton iterations: at one frequency,
- *  in the continuation's corrector (its points, fricreg_hb_solve's start without a guess, the
- *  bifurcations' bisection, the peak's location) and in a nonlinear mode's points. Before each
- *  Newton step the driver counts it and calls the monitor (fricreg_hb_set_monitor); a
- *  nonzero return, or more steps in one call than fricreg_hb_set_max_iterations allows, stops
- *  the call there.
+ *  fricreg_hb_peak, fricreg_hb_nma, fricreg_hb_truncation_error) spends its work in Newton
+ *  iterations: at one frequency, in the continuation's corrector (its points,
+ *  fricreg_hb_solve's start without a guess, the bifurcations' bisection, the peak's
+ *  location) and in a nonlinear mode's points. Before each Newton step the driver counts it
+ *  and calls the monitor (fricreg_hb_set_monitor); a nonzero return, or more steps in one call
+ *  than fricreg_hb_set_max_iterations allows, stops the call there.
  *
  *  A stopped call returns FRICREG_EWORK, its message "<function>: stopped by the monitor after
  *  N Newton iterations" (or naming the bound), and leaves what its other failures leave: no
@@ -368,9 +373,9 @@ FRICREG_API int fricreg_hb_set_continuation(fricreg_hb *hb, double ds, double ds
  *  user        fricreg_hb_set_monitor's, unchanged.
  *  iterations  the Newton steps of this call so far, this one included: 1 at the first call,
  *              one more at each.
- *  parameter   the continued parameter at the iterate: Ω (rad/s) in fricreg_hb_continue and
- *              fricreg_hb_peak; the excitation level λ in fricreg_hb_continue_level and in
- *              fricreg_hb_solve (1 with a guess; along its start's branch in λ without one);
+ *  parameter   the continued parameter at the iterate: Ω (rad/s) in fricreg_hb_continue,
+ *              fricreg_hb_peak and fricreg_hb_truncation_error; the excitation level λ in
+ *              fricreg_hb_continue_level and in fricreg_hb_solve (1 with a guess; along its start's branch in λ without one);
  *              the modal amplitude a in fricreg_hb_nma.
  *  residual    the iterate's largest residual entry over Newton's bound (fricreg_hb_set_newton:
  *              converged at most 1), nondimensional.
@@ -435,8 +440,8 @@ FRICREG_API int fricreg_hb_set_max_iterations(fricreg_hb *hb, int64_t total);
  *  D_h itself or its solves, or fricreg_aft_jenkins_exact's bound on 8 kt sum |q|);
  *  FRICREG_ESIZE if nq is not m (2H + 1) (2 m (2H + 1) with lift-off); FRICREG_ESINGULAR if
  *  K or some D_h(Ω) is singular (dense: a pivot of its LU factor below 1e-14 of the largest entry of |K| + (hΩ)² |M| +
- *  hΩ |C|; sparse: UMFPACK's smallest over largest pivot below 1e-14, or its singular
- *  warning; header comment), or Newton's matrix is; FRICREG_ENOMEM (a sparse model: UMFPACK's
+ *  hΩ |C|; sparse: KLU's smallest over largest pivot magnitude below 1e-14, or a zero
+ *  pivot; header comment), or Newton's matrix is; FRICREG_ENOMEM (a sparse model: KLU's
  *  analysis or factor); FRICREG_EWORK if Newton did not converge within max_iter iterations
  *  (or its line search found no decrease); FRICREG_EINTEGRATOR if the AFT's root solver
  *  failed (fricreg_aft_jenkins_exact) or, stability on, GSL's QR on Hill's matrix did not
@@ -458,8 +463,59 @@ FRICREG_API int fricreg_hb_solve(fricreg_hb *hb, double omega, size_t nq, const 
  *  the driver's; FRICREG_EINVAL if there is no solution yet (or the model changed since);
  *  FRICREG_EINTEGRATOR as fricreg_hb_solve (FRICREG_ENONFINITE cannot arise: the solution's
  *  evaluation succeeded before); FRICREG_ENOMEM (a sparse model whose solves a later failed
- *  call moved: they are redone, with UMFPACK's factors). Since 1.6. */
+ *  call moved: they are redone, with KLU's factors). Since 1.6. */
 FRICREG_API int fricreg_hb_displacement(fricreg_hb *hb, size_t ndof, size_t nc, double x[]);
+
+/** An error estimate of the truncation of the Fourier series at H harmonics, for the RMS of
+ *  each dof and the amplitude of its fundamental, of the last solution or of a stored
+ *  continuation point: the same model (matrices dense or sparse, damping, elements,
+ *  excitation, Newton's settings) solved by Galerkin at H' = 2H + 1 harmonics in a companion
+ *  driver made for the call, by Newton's method from the H solution padded with zeros (Krack
+ *  & Gross Sec. 2.4: the convergence check by more harmonics), and
+ *
+ *      rms_error[k] = 2 |rms_k(H') − rms_k(H)|,  amplitude_error[k] = 2 ||X_1,k(H')| − |X_1,k(H)||
+ *
+ *  with rms_k as fricreg_hb_point's (all harmonics) and X_1,k dof k's fundamental (a_1, b_1 of
+ *  fricreg_hb_displacement). The factor 2 makes it a bound on the error against the converged
+ *  series, |rms_k(H) − rms_k(∞)|, whenever H' harmonics at least halve that error (so at most
+ *  3 times it then): friction's kinked forces give algebraic convergence, about H^-3 to H^-4
+ *  on the oscillator and the 3-dof chain of tests/test_hb_truncation.c, where the estimate is
+ *  1.6 to 2.6 times the error against H = 40 for H = 3 .. 19 (and 0, to rounding, where every
+ *  element sticks: the response is the linear one, a single harmonic). The driver's solution,
+ *  points, factors and error record are not changed on success; the companion is freed before the call returns.
+ *
+ *  Cost: the companion's creation and H' + 1 factors of D_h at the point's Ω, and its Newton
+ *  solve at order m (2H' + 1) = m (4H + 3), which from the padded start takes typically 2
+ *  iterations (1 where every element sticks): its first step is the classical "one Newton
+ *  step" estimate, the second confirms it. Each iteration costs about 8 times one at H (an LU
+ *  of twice the order; m AFTs at twice the harmonics). Measured (bench/hb_truncation.c, H = 3
+ *  to 19, on the 3-dof chain and a 200-dof sparse rod): 2.4 to 6.3 times a continuation step
+ *  at H (fricreg_hb_solve from the solution at Ω − 0.01: the H + 1 factors and its Newton
+ *  iterations), and 0.007 to 0.4 times fricreg_hb_solve without a guess. Allocates the companion
+ *  (fricreg_hb_create's memory at H', and a sparse model's copy, analysis and factors) and
+ *  4 ndof doubles, all freed before it returns. Watched by the monitor as a solving call
+ *  ("Monitoring and stopping a solve", the parameter Ω).
+ *
+ *  k                  the point's index, 0 <= k < fricreg_hb_points(hb) (its Ω and, on a
+ *                     branch of fricreg_hb_continue_level, its level λ), or
+ *                     FRICREG_HB_SOLUTION for the last solution (fricreg_hb_solve's, or the
+ *                     last point of a continuation).
+ *  ndof               must equal the driver's degrees of freedom.
+ *  rms_error[ndof]    out: each dof's estimate, displacement units, >= 0.
+ *  amplitude_error[ndof]  out, or NULL: each dof's estimate for |X_1|, displacement units, >= 0.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb or rms_error is NULL; FRICREG_ESIZE if ndof is not
+ *  the driver's; FRICREG_EINVAL if 2H + 1 > FRICREG_HB_MAX_HARMONICS (H > 19), if there is no
+ *  solution (k = FRICREG_HB_SOLUTION: none yet, or the model changed since), if k is out of
+ *  range, or if the model or elements changed since the branch, or if called from the
+ *  monitor; FRICREG_ENOMEM. When the solve at 2H + 1 fails, its status: FRICREG_ESINGULAR,
+ *  FRICREG_EWORK (Newton did not converge, or stopped by the monitor or
+ *  fricreg_hb_set_max_iterations's bound), FRICREG_EINTEGRATOR, FRICREG_ENONFINITE, as
+ *  fricreg_hb_solve's, the message saying it was the solve at 2H + 1 and why. On failure
+ *  rms_error and amplitude_error are untouched and so is the driver but for its error
+ *  record. Since 1.7 (FRICREG_1.7). */
+FRICREG_API int fricreg_hb_truncation_error(fricreg_hb *hb, size_t k, size_t ndof,
+                                            double rms_error[], double amplitude_error[]);
 
 /** \name Nonlinear modes
  *  The backbone of a mode: its natural frequency ω and damping ratio ζ as functions of its
@@ -567,7 +623,7 @@ FRICREG_API size_t fricreg_hb_nma_points(const fricreg_hb *hb);
  *  if i is out of range, or x is given and the model or elements changed since fricreg_hb_nma;
  *  FRICREG_ESIZE if x is given and ndof or nc is not the driver's; FRICREG_ESINGULAR,
  *  FRICREG_EINTEGRATOR as fricreg_hb_solve (not for a point that was solved: the same
- *  evaluation succeeded there), FRICREG_ENOMEM (a sparse model: UMFPACK's factors). Nothing is
+ *  evaluation succeeded there), FRICREG_ENOMEM (a sparse model: KLU's factors). Nothing is
  *  written on failure. Since 1.7 (FRICREG_1.7). */
 FRICREG_API int fricreg_hb_nma_point(fricreg_hb *hb, size_t i, double *amplitude, double *omega,
                                      double *zeta, size_t ndof, size_t nc, double x[]);
@@ -600,7 +656,7 @@ FRICREG_API int fricreg_hb_nma_point(fricreg_hb *hb, size_t i, double *amplitude
  *  the step fell below ds_min; FRICREG_EWORK if max_points were stored before omega1, or the
  *  branch doubled back on itself (the message says which);
  *  FRICREG_ENOMEM (for the first 64 points before anything changed; for more, later, with the
- *  points so far kept; or UMFPACK's, as fricreg_hb_solve, with the points so far kept);
+ *  points so far kept; or KLU's, as fricreg_hb_solve, with the points so far kept);
  *  FRICREG_EWORK if stopped by the monitor or fricreg_hb_set_max_iterations's bound (the points
  *  reached kept, no bifurcations located: "Monitoring and stopping a solve"). On
  *  failure the points reached so far are kept (fricreg_hb_points

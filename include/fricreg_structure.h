@@ -358,7 +358,12 @@ FRICREG_API int fricreg_structure_set_newton(fricreg_structure *s, double tol, i
 FRICREG_API int fricreg_structure_step(fricreg_structure *s, double dt);
 
 /** Step from the current time to t_end with steps of dt, the last one shortened to land on
- *  t_end (step k ends at t_start + k dt exactly, no accumulated rounding). The observer
+ *  t_end (step k ends at t_start + k dt exactly, no accumulated rounding). A call with the
+ *  same dt that starts where the last run ended, on one of its step times t_0 + K dt (no
+ *  step, run_ode or set_initial between), continues its grid: its steps end at
+ *  t_0 + (K + k) dt, so that a run split into two calls (or continued after
+ *  fricreg_structure_restore) takes the steps of one call, bit for bit (since 1.7; before,
+ *  at t_start + k dt of each call). The observer
  *  (fricreg_structure_set_observer) sees every step and may stop the run.
  *  Returns FRICREG_OK (also when the observer stopped it) or the codes of
  *  fricreg_structure_step, and FRICREG_EINVAL if t_end is not after the current time, needs
@@ -1071,6 +1076,79 @@ FRICREG_API const char *fricreg_structure_warning_message(const fricreg_structur
  *  a run (nothing changed). Since 1.7 (FRICREG_1.7). */
 FRICREG_API int fricreg_structure_set_warning_handler(fricreg_structure *s,
                                                       fricreg_warning_handler fn, void *user_data);
+
+/* ---- Checkpoints: a run saved and continued in another process ----------------------------- */
+
+/** Save everything the structure carries from one step to the next into buf[*size], so that
+ *  fricreg_structure_restore into a structure set up the same way continues the run bit for
+ *  bit as this one would (since 1.7, FRICREG_1.7). The two-call idiom of sqlite3_serialize:
+ *  with buf NULL, *size receives the bytes needed and nothing else happens; then a buffer of
+ *  that size is filled.
+ *
+ *  What is saved: the time t and the grid of the last fricreg_structure_run (so that a run
+ *  continued after a restore takes the steps an uninterrupted one takes), u, v, a, p~ and the
+ *  friction forces at t with whether they hold the equation of motion there (Newmark's a is its
+ *  step's, not the equilibrium's), the dt K_eff was factored for (a run's steps within 1e-9 of
+ *  it are taken with it), the energy balance, each contact's dissipation, the counters, the
+ *  peak displacements, the warnings' trackers, list and what the handler was given, the
+ *  elements' committed and trial sliders, forces and dissipation, the context's warm start and
+ *  cached factor (a coupled W), and the error estimate with its companions, each saved the same
+ *  way, nested. What is not: the model and the settings (checked by restore against a
+ *  fingerprint: sizes, kinds, scheme, law and their parameters one by one, the matrices, the
+ *  records, the bounds and the set tolerances hashed), the observer and the warning handler,
+ *  the bound on adaptive steps (fricreg_structure_set_max_steps: the restored structure's own)
+ *  and the last error. GSL's steppers carry nothing between fricreg_structure_run_ode calls
+ *  (each call starts its driver anew), so a checkpoint between two calls continues an adaptive
+ *  run exactly too.
+ *
+ *  The blob is for the same build on the same machine: native byte order and type sizes, with
+ *  a header (magic, format version, byte-order mark, the library version, the payload's length
+ *  and hash) that fricreg_structure_restore checks. Its size is about 8 (6 ndof + 4 m) bytes
+ *  plus the elements' state, a few kB of fixed fields (the warnings' messages) and, with a
+ *  coupled dense W, 8 m^2 at most; each companion adds its own.
+ *
+ *  s     in: the structure (not changed but for its last error).
+ *  buf   out: the checkpoint, *size bytes; NULL to ask for the size.
+ *  size  in: buf's length in bytes; out: the checkpoint's length (also when it does not fit).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if s or size is NULL; FRICREG_ESIZE if *size is below the
+ *  checkpoint's length (then *size is that length, buf untouched); FRICREG_EINVAL if called
+ *  from the observer or the warning handler during a run, or for a structure whose contacts
+ *  couple through a sparse W (more than 64 contacts not on separate degrees of freedom, with
+ *  the model set up by a step): the context's factor, updated row by row by CHOLMOD, is not
+ *  carried (not supported; the message says so). Allocates nothing. */
+FRICREG_API int fricreg_structure_save(fricreg_structure *s, void *buf, size_t *size);
+
+/** Restore a checkpoint of fricreg_structure_save into s, which must be set up as the saved
+ *  structure was when it was saved: the same sizes, model matrices, influence, load pattern,
+ *  records, bounds, law and eps, scheme and its parameters, Newton's settings, elements,
+ *  error estimate (on or off) and run_ode tolerances set (since 1.7, FRICREG_1.7). Its state
+ *  then becomes the saved one (fricreg_structure_save lists it), whatever it was, and a run
+ *  from here gives, bit for bit, what the saved structure would have given. With the steps of
+ *  fricreg_structure_run that is also the uninterrupted run: a run of dt to T1, saved,
+ *  restored and run to T2 takes the steps of one run to T2 where T1 is one of its step times
+ *  (the rounded k dt equals T1, e.g. dt = 0.01, T1 = 0.5), and is then the same to the last
+ *  bit, its error estimate included. The observer, the warning handler and the bound on
+ *  adaptive steps stay s's own.
+ *
+ *  s     in/out: a structure set up as the saved one.
+ *  buf   in: size bytes from fricreg_structure_save, of the same build on the same machine.
+ *
+ *  Cost: the set-up of the model (M's factor, W) and K_eff's factor at the saved dt, as the
+ *  first step after a model setter (they allocate), and with the error estimate on, the
+ *  companions made as a run's first step makes them.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if s or buf is NULL; FRICREG_EINVAL if buf is not a
+ *  checkpoint (magic), is truncated or corrupted (length, hash or a field out of range), was
+ *  written by another format, library version, byte order or type size, or if s is not set up
+ *  as the saved structure (the message names the first difference: e.g. "the checkpoint's
+ *  structure has ndof = 3, this one 4", or the model or the excitation as a whole), or when
+ *  called from the observer or the warning handler during a run; the statuses of the set-up
+ *  and of K_eff's factor (FRICREG_ENOMEM, FRICREG_ENOTPSD, ... as fricreg_structure_step); a
+ *  companion's failure (its message after "the error estimate's companion: "). On failure the
+ *  state of s is unchanged (the set-up and K_eff's factor may have been made: they are what
+ *  its next step makes). */
+FRICREG_API int fricreg_structure_restore(fricreg_structure *s, const void *buf, size_t size);
 
 /* ---- Your own implicit integrator: the contact-space step on a context --------------------- */
 

@@ -317,6 +317,44 @@ expect_output '"x": \[-1\.95438123028[34][0-9]*\].*"dissipation_per_contact": \[
 expect_output '"dissipation_per_contact": \[9\.[0-9]+\],.*"njenkins": 1, "dissipation_per_jenkins": \[0\.09[0-9]+\].*"residual": -?[0-9.]+e-(1[3-9]|[2-9][0-9])' $block --jenkins $d/J1.mtx --jenkins-params $d/P_slip.txt --integrator newmark --dt 0.01
 echo "-1 0.05" >"$d/P_bad.txt"
 expect_usage_error "^fricreg-sim: --jenkins-params $d/P_bad.txt: .*kt > 0" $jk --jenkins-params $d/P_bad.txt --integrator newmark
+# Checkpoints (--checkpoint-out, --checkpoint-in; fricreg_structure_save/_restore): the run to
+# 0.5 s saved and continued to 1 s in another process is the run to 1 s, byte for byte: its
+# trajectory (the continued run's rows after its first, which repeats the checkpoint's time) and
+# its summary with the error estimate's companions (but the CPU time). 0.5 is a step time of
+# dt = 0.01 (the rounded 50 dt is 0.5), so the uninterrupted run steps through it. The scene
+# slips and sticks: a contact of 0.3 N beside a slipping Jenkins element under the step of
+# 0.731 m/s^2 slides back and forth through 0.5 s and sticks from 0.62 s (eps = 1e-3 m/s; the
+# explicit schemes need 0.05 for their step guard).
+echo 0.3 >"$d/mun_ck.txt"
+ck="structure --mass $d/M2.mtx --stiffness $d/K2a.mtx --contacts $d/J1.mtx --mun $d/mun_ck.txt --ground-accel $d/ag_osc.txt --dt 0.01"
+for integ in "newmark --eps 1e-3 --jenkins $d/J1.mtx --jenkins-params $d/P_slip.txt" \
+    "hht --eps 1e-3 --jenkins $d/J1.mtx --jenkins-params $d/P_slip.txt" \
+    "central --eps 0.05 --jenkins $d/J1.mtx --jenkins-params $d/P_slip.txt" "rk4 --eps 0.05" \
+    "rkf45 --eps 1e-3 --rtol 1e-6"; do
+    for out in trajectory summary; do
+        rm -f "$tmp/ck.bin"
+        "$sim" $ck --integrator $integ --output $out --t-end 1 >"$tmp/full" 2>/dev/null &&
+        "$sim" $ck --integrator $integ --output $out --t-end 0.5 --checkpoint-out "$tmp/ck.bin" >"$tmp/part1" 2>/dev/null &&
+        "$sim" $ck --integrator $integ --output $out --t-end 1 --checkpoint-in "$tmp/ck.bin" >"$tmp/part2" 2>"$tmp/err"
+        status=$?
+        if [ $out = trajectory ]; then
+            { cat "$tmp/part1"; tail -n +3 "$tmp/part2"; } >"$tmp/split"
+        else
+            sed 's/"cpu_seconds": [0-9.]*//' "$tmp/part2" >"$tmp/split"
+            sed -i 's/"cpu_seconds": [0-9.]*//' "$tmp/full"
+        fi
+        if [ $status -ne 0 ] || [ ! -s "$tmp/full" ] || ! cmp -s "$tmp/full" "$tmp/split"; then
+            echo "FAIL: structure --integrator $integ --output $out: split at 0.5 s != the run to 1 s (status $status: $(cat "$tmp/err"))"; fails=$((fails + 1))
+        fi
+    done
+done
+"$sim" $ck --integrator newmark --t-end 0.5 --checkpoint-out "$tmp/ck.bin" >/dev/null 2>&1
+expect_usage_error "^fricreg-sim: --checkpoint-in $d/none.bin: cannot open" $ck --integrator newmark --t-end 1 --checkpoint-in "$d/none.bin"
+expect_usage_error "^fricreg-sim: --checkpoint-in $tmp/ck.bin: restore: .*bounds mun .* not the checkpoint's" structure --mass $d/M2.mtx --stiffness $d/K2a.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_osc.txt --dt 0.01 --integrator newmark --t-end 1 --checkpoint-in "$tmp/ck.bin"
+expect_usage_error "^fricreg-sim: --checkpoint-in $tmp/ck.bin: restore: .*alpha" $ck --integrator hht --t-end 1 --checkpoint-in "$tmp/ck.bin"
+expect_usage_error "^fricreg-sim: --t-end: must be after the checkpoint's time 0.5" $ck --integrator newmark --t-end 0.4 --checkpoint-in "$tmp/ck.bin"
+head -c 100 "$tmp/ck.bin" >"$tmp/ck_cut.bin"
+expect_usage_error "^fricreg-sim: --checkpoint-in $tmp/ck_cut.bin: restore: .*truncated" $ck --integrator newmark --t-end 1 --checkpoint-in "$tmp/ck_cut.bin"
 # Iwan elements (--iwan-params: a line k_1 phi_1 ... k_ns phi_ns per element): four equal
 # sliders of 50.0 and 0.0125 N are the slipping Jenkins element of 200.0 and 0.05 N above, to
 # rounding; Segalman's model (--iwan-segalman: F_S K_T chi beta) in one slider with beta = 0 is
@@ -560,6 +598,29 @@ if ! grep -q '"peaks": "located"' "$d/summary.json" || ! grep -q '"bifurcations"
         awk '{ r = $1 / 3.92856743987 - 1; w = $2 / 1.49984999250 - 1
             exit !(r < 1e-8 && r > -1e-8 && w < 1e-8 && w > -1e-8) }'; then
     echo "FAIL: hb summary peak: $(cat "$d/summary.json" "$d/err")"; fails=$((fails + 1))
+fi
+# The peak's truncation error estimate (fricreg_hb_truncation_error at the largest stored point):
+# rounding where the slider sticks (the response is the linear one, a single harmonic); with
+# mu N = 0.1 it slips, and the estimate at H = 3 bounds the peak RMS's difference from H = 19's
+# (whose own error is far smaller: the errors fall as about H^-3.5) and is within 10 times it;
+# null beyond H = 19 (2H + 1 > 40 harmonics).
+echo "1.5 0.1" >"$d/Pslip.txt"
+total=$((total + 1))
+if ! grep -q '"peak_rms_error_estimate": \[[0-9.e-]*\]' "$d/summary.json" ||
+        ! sed 's/.*"peak_rms_error_estimate": \[\([^]]*\)\].*/\1/' "$d/summary.json" |
+        awk '{ exit !($1 >= 0 && $1 < 1e-9) }'; then
+    echo "FAIL: hb summary's error estimate, stuck: $(cat "$d/summary.json" "$d/err")"; fails=$((fails + 1))
+fi
+total=$((total + 1))
+"$sim" $hb --jenkins-params "$d/Pslip.txt" >"$d/slip3.json" 2>"$d/err"
+"$sim" $hb --jenkins-params "$d/Pslip.txt" --harmonics 19 >"$d/slip19.json" 2>>"$d/err"
+"$sim" $hb --jenkins-params "$d/Pslip.txt" --harmonics 20 >"$d/slip20.json" 2>>"$d/err"
+if ! { sed 's/.*"peak_rms": \([^,]*\),.*"peak_rms_error_estimate": \[\([^]]*\)\].*/\1 \2/' "$d/slip3.json"
+        sed 's/.*"peak_rms": \([^,]*\),.*/\1/' "$d/slip19.json"; } |
+        awk 'NR == 1 { r = $1; e = $2 } NR == 2 { t = r - $1; if (t < 0) t = -t
+            exit !(t > 1e-6 && e >= t && e <= 10 * t) }' ||
+        ! grep -q '"peak_rms_error_estimate": \[null\]' "$d/slip20.json"; then
+    echo "FAIL: hb summary's error estimate, slipping: $(cat "$d/slip3.json" "$d/slip19.json" "$d/slip20.json" "$d/err")"; fails=$((fails + 1))
 fi
 # The step control's options reach the driver: a finer one, the same peak; bad values exit 2;
 # a bound of 5 points stops the continuation (exit 1)

@@ -40,44 +40,6 @@
 #define MAXM JENKINS_MODEL_MAXM
 static const double PI = 3.14159265358979323846;
 
-/* One dof on a spring to ground with a Jenkins element to ground. */
-static struct jenkins_model oscillator(void)
-{
-    struct jenkins_model s = {.n = 1, .m = 1};
-    s.M[0] = 1.3;
-    s.K[0] = 2.385;
-    s.C[0] = 0.12;
-    s.J[0] = 1.0;
-    s.kt[0] = 1.7;
-    s.mun[0] = 0.35;
-    s.pc[0] = 0.6;
-    s.ps[0] = 0.0;
-    return s;
-}
-
-/* Three masses in a chain on springs (ground–1, 1–2, 2–3), Rayleigh damping a0 M + a1 K;
- * element 0 between mass 3 and ground, element 1 between masses 1 and 2; mass 1 excited. */
-static struct jenkins_model chain(void)
-{
-    struct jenkins_model s = {.n = 3, .m = 2};
-    const double mass[3] = {1.1, 0.9, 1.25}, k[3] = {3.2, 2.1, 1.6};
-    for (int i = 0; i < 3; i++)
-        s.M[4 * i] = mass[i];
-    s.K[0] = k[0] + k[1];
-    s.K[1] = s.K[3] = -k[1];
-    s.K[4] = k[1] + k[2];
-    s.K[5] = s.K[7] = -k[2];
-    s.K[8] = k[2];
-    for (int i = 0; i < 9; i++)
-        s.C[i] = 0.03 * s.M[i] + 0.01 * s.K[i];
-    s.J[2] = 1.0;                /* q_0 = x_3 */
-    s.J[3] = -1.0, s.J[4] = 1.0; /* q_1 = x_2 − x_1 */
-    s.kt[0] = 2.5, s.kt[1] = 1.4;
-    s.mun[0] = 0.3, s.mun[1] = 0.12;
-    s.pc[0] = 0.8, s.ps[0] = 0.25;
-    return s;
-}
-
 static fricreg_hb *make(const struct jenkins_model *s, int H, int rayleigh)
 {
     fricreg_hb *hb = NULL;
@@ -138,7 +100,7 @@ static void linear_response(const struct jenkins_model *s, double omega, double 
 START_TEST(linear_stuck_closed_form)
 {
     for (int which = 0; which < 2; which++) {
-        struct jenkins_model s = which ? chain() : oscillator();
+        struct jenkins_model s = which ? jenkins_model_chain() : jenkins_model_oscillator();
         for (size_t e = 0; e < s.m; e++)
             s.mun[e] = 1e6;
         const int Hs[2] = {1, 3};
@@ -202,7 +164,7 @@ static void against_time_domain(const struct jenkins_model *s, const double *ome
 
 START_TEST(oscillator_against_time_domain)
 {
-    struct jenkins_model s = oscillator();
+    struct jenkins_model s = jenkins_model_oscillator();
     const double omegas[5] = {1.2, 1.35, 1.5, 1.7, 2.1};
     against_time_domain(&s, omegas, 5, 100);
 }
@@ -210,7 +172,7 @@ END_TEST
 
 START_TEST(chain_against_time_domain)
 {
-    struct jenkins_model s = chain();
+    struct jenkins_model s = jenkins_model_chain();
     const double omegas[5] = {1.0, 1.15, 1.3, 1.45, 1.6};
     against_time_domain(&s, omegas, 5, 100);
 }
@@ -221,7 +183,7 @@ END_TEST
  * 2.8e-7) and H = 7 within 2e-4 (6.5e-5, 3.2e-5). */
 START_TEST(harmonics_converge)
 {
-    struct jenkins_model s = chain();
+    struct jenkins_model s = jenkins_model_chain();
     const double omegas[2] = {1.0, 1.6};
     for (int w = 0; w < 2; w++) {
         double r40[MAXN], r21[MAXN], r7[MAXN];
@@ -263,7 +225,7 @@ static double first_frequency(const struct jenkins_model *s, const double *kts)
 
 START_TEST(continuation_over_resonance)
 {
-    struct jenkins_model s = chain();
+    struct jenkins_model s = jenkins_model_chain();
     const int H = 7;
     const double zero[MAXM] = {0.0, 0.0};
     double w_slip = first_frequency(&s, zero), w_stick = first_frequency(&s, s.kt);
@@ -333,7 +295,7 @@ END_TEST
 
 START_TEST(bad_input)
 {
-    struct jenkins_model s = chain();
+    struct jenkins_model s = jenkins_model_chain();
     fricreg_hb *hb = NULL;
     ck_assert_int_eq(fricreg_hb_create(3, 2, 3, NULL), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_hb_create(0, 2, 3, &hb), FRICREG_EINVAL);
@@ -458,7 +420,7 @@ START_TEST(bad_input)
     ck_assert_int_eq(fricreg_hb_displacement(hb, 3, 7, x), FRICREG_OK);
     /* a corrector allowed one iteration never converges (the stuck start does, being linear
      * in q): the step halves below ds_min */
-    struct jenkins_model lin = chain();
+    struct jenkins_model lin = jenkins_model_chain();
     lin.mun[0] = lin.mun[1] = 1e6;
     fricreg_hb *hl = make(&lin, 3, 1);
     ck_assert_int_eq(fricreg_hb_set_newton(hl, 1e-10, 1), FRICREG_OK);

@@ -18,7 +18,7 @@
  *     two frequencies where the element opens and closes in every period (asserted on the time
  *     series: the separation wipes out the slider's memory, so the periodic state is unique).
  *     HB at H = 21 within 1e-3 relative in each dof's RMS.
- *   - the sparse model (UMFPACK) against the dense one (GSL's LU), to 1e-12. */
+ *   - the sparse model (KLU) against the dense one (GSL's LU), to 1e-12. */
 #include <check.h>
 #include <math.h>
 #include <stdio.h>
@@ -252,7 +252,7 @@ START_TEST(partial_liftoff_against_time_domain)
 }
 END_TEST
 
-/* The sparse model (UMFPACK, fricreg_hb_set_*_csc) gives the dense model's solution with
+/* The sparse model (KLU, fricreg_hb_set_*_csc) gives the dense model's solution with
  * lift-off too: its solves take the 2 m columns of J^T. K given whole (both triangles). */
 START_TEST(sparse_model_equals_dense)
 {

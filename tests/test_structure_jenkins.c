@@ -33,14 +33,9 @@ static const double PI = 3.14159265358979323846;
  * of motion's (a(0) = 0, as the reference assumes). */
 static struct jenkins_model oscillator(void)
 {
-    struct jenkins_model s = {.n = 1, .m = 1};
-    s.M[0] = 1.3;
-    s.K[0] = 2.385;
-    s.C[0] = 0.12;
-    s.J[0] = 1.0;
-    s.kt[0] = 1.7;
-    s.mun[0] = 0.35;
-    s.ps[0] = 0.6;
+    struct jenkins_model s = jenkins_model_oscillator();
+    s.ps[0] = s.pc[0];
+    s.pc[0] = 0.0;
     return s;
 }
 
@@ -167,22 +162,8 @@ END_TEST
  * against the hand-written Newmark to rounding over 60 periods, every dof. */
 START_TEST(chain_against_reference)
 {
-    struct jenkins_model m = {.n = 3, .m = 2};
-    const double mass[3] = {1.1, 0.9, 1.25}, k[3] = {3.2, 2.1, 1.6};
-    for (int i = 0; i < 3; i++)
-        m.M[4 * i] = mass[i];
-    m.K[0] = k[0] + k[1];
-    m.K[1] = m.K[3] = -k[1];
-    m.K[4] = k[1] + k[2];
-    m.K[5] = m.K[7] = -k[2];
-    m.K[8] = k[2];
-    for (int i = 0; i < 9; i++)
-        m.C[i] = 0.03 * m.M[i] + 0.01 * m.K[i];
-    m.J[2] = 1.0;
-    m.J[3] = -1.0, m.J[4] = 1.0;
-    m.kt[0] = 2.5, m.kt[1] = 1.4;
-    m.mun[0] = 0.3, m.mun[1] = 0.12;
-    m.ps[0] = 0.8;
+    struct jenkins_model m = jenkins_model_chain();
+    m.pc[0] = 0.0, m.ps[0] = 0.8; /* sine forcing only */
     const int N = 512, periods = 60, nsteps = N * periods;
     const double omega = 1.3, dt = 2.0 * PI / omega / N;
     double *ref = malloc(3 * (size_t)nsteps * sizeof *ref), rms[3], prev[3], x[3];

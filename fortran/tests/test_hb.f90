@@ -9,7 +9,7 @@
 ! |X|/sqrt(2) (closed form), largest where d|X|/dOmega = 0: Omega^2 = (4.5 - 0.06^2/4)/2,
 ! Omega = 1.49984999250, RMS 3.92856743987 (the located peak, hb%peak). A two-mass chain with a slipping element, J in Fortran's order:
 ! the type's solution equals the C functions' (called through bind(C), J transposed by hand)
-! bit for bit.
+! bit for bit, and so does the truncation error's estimate.
 program test_hb
   use fricreg
   use ftest
@@ -19,6 +19,7 @@ program test_hb
   real(c_double), parameter :: w = 1.2_c_double
   real(c_double) :: lev, q(7, 1), x(7, 1), d, c, rms(1), omega, big, qc(7, 1), q2(7, 1), bad(5, 1)
   real(c_double) :: M2(2, 2), K2(2, 2), J2(1, 2), Jrow(2), Jn2(1, 2), qn(7, 2), pw, pr
+  real(c_double) :: ec(2), ea(2), et(2), eat(2)
   integer :: k, btype, bpoint
   real(c_double) :: mu
   logical :: stable
@@ -122,8 +123,19 @@ program test_hb
   call check_status(fricreg_hb_set_excitation(p, 2_c_size_t, [1.0_c_double, 0.0_c_double], &
                                               [0.0_c_double, 0.0_c_double]), FRICREG_OK, 'C p')
   call check_status(fricreg_hb_solve(p, 1.1_c_double, 7_c_size_t, q=qc), FRICREG_OK, 'C solve')
+  call check_status(fricreg_hb_truncation_error(p, -1_c_size_t, 2_c_size_t, ec, ea), FRICREG_OK, &
+                    'C truncation_error')
   call fricreg_hb_free(p)
   call check(all(q2 == qc), 'the type equals C bit for bit')
+  ! the truncation error's estimate of the last solution (k = 0): C's, bit for bit; an element
+  ! that slips gives harmonics beyond H = 3, so an estimate above rounding
+  call check_status(chain%truncation_error(0, et, eat), FRICREG_OK, 'truncation_error')
+  call check(all(et == ec) .and. all(eat == ea), 'the estimate equals C''s bit for bit')
+  call check(minval(et) > 1e-9_c_double, 'a slipping element: an estimate above rounding')
+  call check_status(chain%truncation_error(0, et), FRICREG_OK, 'truncation_error without amplitudes')
+  call check(all(et == ec), 'the same without amplitudes')
+  call check_status(chain%truncation_error(-1, et), FRICREG_EINVAL, 'truncation_error of k = -1')
+  call check_status(chain%truncation_error(0, rms), FRICREG_ESIZE, 'rms_error of the wrong size')
   call check(abs(q2(2, 1)) + abs(q2(3, 1)) > 0.1_c_double / 4.0_c_double, 'the element slips')
   ! an Iwan element of one slider is the Jenkins element, to the bit; k and phi are (ns, m)
   call check_status(chain%set_iwan(J2, reshape([4.0_c_double], [1, 1]), &

@@ -11,6 +11,7 @@ enum scheme { SCHEME_NONE, SCHEME_NEWMARK, SCHEME_HHT, SCHEME_CENTRAL, SCHEME_GS
 
 struct structure_options {
     const char *mass, *stiffness, *damping, *contacts, *mun, *influence, *ground;
+    const char *checkpoint_in, *checkpoint_out; /* fricreg_structure_save's blob, or NULL */
     struct cli_element_files elements; /* --jenkins with its parameters (jenkins_input.h) */
     int rayleigh_given, alpha_given, atol_given, law, integrator;
     enum scheme scheme;

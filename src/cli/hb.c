@@ -5,7 +5,7 @@
  * --continue-in level, in the excitation level from --level-start to --level-end at --omega),
  * each point's
  * stability by Hill's method (fricreg_hb_set_stability, where allowed); a JSON summary (per dof
- * the peak RMS and its frequency, the located bifurcations) or a CSV row per continuation point
+ * the peak RMS and its frequency, its truncation error estimate, the located bifurcations) or a CSV row per continuation point
  * (and per bifurcation) on stdout. Every bad option or file is one line on stderr naming it, exit 2, nothing on stdout;
  * a continuation that fails, exit 1. */
 #include <math.h>
@@ -149,7 +149,10 @@ static size_t hb_table(struct hb_options *o, struct cli_option table[])
         {"--max-points", CLI_WHOLE, .slot = &o->max_points, .lo = 2, .hi = 1e8, .meta = "N",
          .help = "points stored at most: reaching it stops the continuation"},
         {"--output", CLI_CHOICE, .slot = &o->output, .words = hb_outputs,
-         .help = "a JSON summary (each dof's peak RMS and its frequency, the bifurcations), or the "
+         .help = "a JSON summary (each dof's peak RMS and its frequency, the estimate of its "
+                 "error from truncating at H harmonics at the largest stored point, by a solve "
+                 "at 2H + 1 harmonics: null where H > 19 or that solve failed, the "
+                 "bifurcations), or the "
                  "frequency response: a CSV row omega,rms_1,...,rms_n,stable,bifurcation per "
                  "point (stable 1/0 by Hill's method where ndof (2H + 1) <= 1024, else empty), "
                  "and a row at each located bifurcation labelled TP, BP, PD or NS; with "
@@ -322,9 +325,42 @@ static int peaks(fricreg_hb *hb, const struct cli_deadline *d, int locate, size_
     return 0;
 }
 
+/* Each dof's truncation error estimate (fricreg_hb_truncation_error: the solve at 2H + 1) at its
+ * largest stored point into err[n], each distinct point solved once; +infinity (null in the
+ * JSON) where it could not be formed: H > 19, or the solve at 2H + 1 failed. */
+static int truncation_errors(fricreg_hb *hb, size_t n, size_t K, const double rms[], double err[])
+{
+    size_t *best = malloc(n * sizeof *best);
+    double *e = malloc(n * sizeof *e);
+    if (best == NULL || e == NULL) {
+        free(best);
+        free(e);
+        return cli_usage_error("hb", "out of memory");
+    }
+    for (size_t i = 0; i < n; i++) {
+        best[i] = 0;
+        for (size_t k = 1; k < K; k++)
+            if (rms[k * n + i] > rms[best[i] * n + i])
+                best[i] = k;
+        err[i] = NAN; /* not yet */
+    }
+    for (size_t i = 0; i < n; i++) {
+        if (!isnan(err[i]))
+            continue;
+        int ok = K > 0 && fricreg_hb_truncation_error(hb, best[i], n, e, NULL) == FRICREG_OK;
+        for (size_t j = i; j < n; j++)
+            if (best[j] == best[i])
+                err[j] = ok ? e[j] : INFINITY;
+    }
+    free(best);
+    free(e);
+    return 0;
+}
+
 static void write_summary(fricreg_hb *hb, FILE *out, const struct hb_options *o,
                           const struct hb_model *md, size_t K, const double omega[],
-                          const double peak_omega[], const double peak_rms[], double cpu)
+                          const double peak_omega[], const double peak_rms[],
+                          const double peak_err[], double cpu)
 {
     size_t n = md->n;
     int level = o->continue_in == HB_IN_LEVEL;
@@ -349,6 +385,7 @@ static void write_summary(fricreg_hb *hb, FILE *out, const struct hb_options *o,
         fprintf(out, "%s{\"dof\": %zu, \"peak_rms\": %.17g, \"peak_%s\": %.17g}", i ? ", " : "",
                 i + 1, peak_rms[i], level ? "level" : "omega", peak_omega[i]);
     fprintf(out, "]");
+    cli_json_array(out, "peak_rms_error_estimate", n, peak_err);
     write_bifurcations(hb, out, level, n);
     fprintf(out, ", \"cpu_seconds\": %.6f}\n", cpu);
 }
@@ -385,14 +422,16 @@ static int run_hb(fricreg_hb *hb, struct hb_options *o, const struct hb_model *m
     if (status == 0 && o->output == HB_FRF) {
         status = write_frf(hb, out, level, n, K, omega, rms);
     } else if (status == 0) {
-        if ((peak = malloc(2 * n * sizeof *peak)) == NULL)
+        if ((peak = malloc(3 * n * sizeof *peak)) == NULL)
             status = cli_usage_error("hb", "out of memory");
         if (status == 0)
             status = peaks(hb, &o->deadline, !level, n, K, omega, rms, peak, peak + n);
-        /* the CPU time includes the peaks' location */
+        if (status == 0)
+            status = truncation_errors(hb, n, K, rms, peak + 2 * n);
+        /* the CPU time includes the peaks' location and their error estimates */
         cpu = (double)(clock() - start) / CLOCKS_PER_SEC;
         if (status == 0)
-            write_summary(hb, out, o, md, K, omega, peak, peak + n, cpu);
+            write_summary(hb, out, o, md, K, omega, peak, peak + n, peak + 2 * n, cpu);
     }
     free(omega);
     free(rms);

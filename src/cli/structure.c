@@ -3,6 +3,7 @@
  * (fricreg_structure.h) from Matrix Market files, run with Newmark, HHT-alpha, central
  * difference or one of GSL's steppers; a JSON summary or a CSV row per step on stdout.
  * Every bad option or file is one line on stderr naming it, exit 2, nothing on stdout. */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -10,6 +11,7 @@
 #include <time.h>
 
 #include "cli_structure.h"
+#include "input_line.h"
 #include "structure_model.h"
 
 /* --rayleigh A0,A1: two numbers >= 0 (cli_parse_rayleigh). */
@@ -167,6 +169,13 @@ static size_t structure_table(struct structure_options *o, struct cli_option tab
         {"--max-steps", CLI_WHOLE, .slot = &o->max_steps, .lo = 0, .hi = 1e9, .meta = "N",
          .help = "GSL's adaptive steps over the whole run (0: no bound)",
          .dflt = "the library's bound on each sample's call"},
+        {"--checkpoint-in", CLI_FILE, .slot = &o->checkpoint_in, .meta = "FILE",
+         .help = "continue the run saved by --checkpoint-out, set up with the same options, "
+                 "from its time to --t-end",
+         .dflt = "none: from t = 0"},
+        {"--checkpoint-out", CLI_FILE, .slot = &o->checkpoint_out, .meta = "FILE",
+         .help = "save the run's state at --t-end into FILE (this build and machine only)",
+         .dflt = "none"},
         {"--error-estimate", CLI_CHOICE, .slot = &o->error_estimate, .words = cli_estimator_words,
          .help = "companion runs at eps/2 and eps/4 add an error estimate to the summary "
                  "(one: 1.6's single companion at eps/2)"}};
@@ -313,12 +322,19 @@ static int advance(fricreg_structure *s, const struct structure_options *o,
         return fricreg_structure_run(s, o->dt, o->t_end);
     }
     double steps = ceil(o->t_end / o->dt * (1.0 - 1e-12)); /* <= 2^31: check_options */
+    /* --max-steps counts from t = 0: a run restored from --checkpoint-in counts the steps
+     * before its checkpoint too, as the uninterrupted run does. */
     int64_t nsteps = steps < 1.0 ? 1 : (int64_t)steps, start = 0;
-    fricreg_structure_get_stat(s, FRICREG_SSTAT_STEPS, &start);
     /* The structure's time, kept here: each call ends on its t1 exactly, and asking the
      * library (fricreg_structure_get_value) costs its energies, O(nnz), every step. */
     double t = svalue(s, FRICREG_SVALUE_TIME);
-    for (int64_t k = 1; k <= nsteps; k++) {
+    /* the samples k dt after a checkpoint's time, as the uninterrupted run's */
+    int64_t first = t > o->dt ? (int64_t)(t / o->dt) : 1;
+    while (first > 1 && (double)(first - 1) * o->dt > t)
+        first--;
+    while (first < nsteps && !((double)first * o->dt > t))
+        first++;
+    for (int64_t k = first; k <= nsteps; k++) {
         spend_steps(s, o, start);
         double t1 = k == nsteps ? o->t_end : (double)k * o->dt;
         /* One step of exactly t1 - t: k dt - (k - 1) dt may exceed dt by a rounding, which
@@ -489,6 +505,69 @@ static void copy_stream(FILE *from, FILE *to)
         fwrite(chunk, 1, got, to);
 }
 
+/* ---- Checkpoints (fricreg_structure_save / _restore) ---------------------------------------- */
+
+/* --checkpoint-in: the blob read whole and restored into the set-up structure, whose time must
+ * then be before --t-end. 0, or a message naming the file and exit 2. */
+static int checkpoint_in(fricreg_structure *s, const struct structure_options *o)
+{
+    const char *path = o->checkpoint_in;
+    FILE *f = fopen(path, "rb");
+    if (f == NULL)
+        return cli_file_error("--checkpoint-in", path, 0, "cannot open: %s", strerror(errno));
+    size_t len = 0, cap = 1 << 16;
+    unsigned char *buf = malloc(cap);
+    for (size_t got = 1; buf != NULL && got > 0;) {
+        got = fread(buf + len, 1, cap - len, f);
+        len += got;
+        unsigned char *more = len == cap ? realloc(buf, cap *= 2) : buf;
+        if (more == NULL)
+            free(buf);
+        buf = more;
+    }
+    int read_error = ferror(f);
+    fclose(f);
+    if (buf == NULL || read_error) {
+        free(buf);
+        return cli_file_error("--checkpoint-in", path, 0, "%s",
+                              read_error ? "cannot read" : "out of memory");
+    }
+    int status = fricreg_structure_restore(s, buf, len);
+    free(buf);
+    if (status != FRICREG_OK)
+        return cli_file_error("--checkpoint-in", path, 0, "%s", fricreg_structure_errmsg(s));
+    double t = svalue(s, FRICREG_SVALUE_TIME);
+    if (!(o->t_end > t)) {
+        char what[96];
+        snprintf(what, sizeof what, "must be after the checkpoint's time %.17g", t);
+        return cli_usage_error("--t-end", what);
+    }
+    return 0;
+}
+
+/* --checkpoint-out: the state at the run's end into the file. 0, or a message naming it and
+ * exit 2. */
+static int checkpoint_out(fricreg_structure *s, const char *path)
+{
+    size_t len = 0;
+    unsigned char *buf = NULL;
+    int status = fricreg_structure_save(s, NULL, &len);
+    if (status == FRICREG_OK && (buf = malloc(len)) == NULL)
+        return cli_file_error("--checkpoint-out", path, 0, "out of memory");
+    if (status == FRICREG_OK)
+        status = fricreg_structure_save(s, buf, &len);
+    if (status != FRICREG_OK) {
+        free(buf);
+        return cli_file_error("--checkpoint-out", path, 0, "%s", fricreg_structure_errmsg(s));
+    }
+    FILE *f = fopen(path, "wb");
+    int ok = f != NULL && fwrite(buf, 1, len, f) == len;
+    int err = errno;
+    ok = f != NULL && fclose(f) == 0 && ok;
+    free(buf);
+    return ok ? 0 : cli_file_error("--checkpoint-out", path, 0, "cannot write: %s", strerror(err));
+}
+
 /* Runs the set-up structure; the trajectory goes to a temporary file first, so that a failed
  * run writes nothing to out. */
 static int run_structure(fricreg_structure *s, const struct structure_options *o,
@@ -522,9 +601,11 @@ static int run_structure(fricreg_structure *s, const struct structure_options *o
         read_estimate(s, in, &est);
     if (status != FRICREG_OK)
         status = run_failed(s, status);
-    else if (run.rows != NULL)
+    else if (o->checkpoint_out != NULL) /* the run's output only with its checkpoint */
+        status = checkpoint_out(s, o->checkpoint_out);
+    if (status == 0 && run.rows != NULL)
         copy_stream(run.rows, out);
-    else
+    else if (status == 0)
         write_summary(out, o, in, s, &run, eps, cpu_seconds, &warnings, &est);
     free(est.peak_err);
     if (run.rows != NULL)
@@ -552,6 +633,8 @@ int cli_structure(int argc, char **argv, FILE *out)
     double eps = 0.0;
     status = setup(&o, &in, s, &eps);
     cli_free_matrices(&in);
+    if (status == 0 && o.checkpoint_in != NULL)
+        status = checkpoint_in(s, &o);
     if (status == 0)
         status = run_structure(s, &o, &in, eps, out);
     fricreg_structure_free(s);

@@ -56,4 +56,14 @@ void *fr_ctx_workspace(const fricreg_ctx *ctx);
 void fr_ctx_keep_workspace(fricreg_ctx *ctx, void *workspace, void (*release)(void *));
 void fr_ctx_drop_workspace(fricreg_ctx *ctx);
 
+/* What the context carries from one evaluation to the next that a later evaluation's rounding
+ * depends on (ctx_carried.c), for a driver's checkpoint: the warm start, and with factor set the
+ * cached factor of a dense W (the coupling in force is the driver's model's). Its size in bytes
+ * (0 with factor and a sparse W, whose cached factor is not carried: no checkpoint), a copy
+ * into out[size], and its restore from in[len] into a context of the same coupling kind and size
+ * (FRICREG_OK; FRICREG_EINVAL, nothing changed, if len or an entry does not fit: not recorded). */
+size_t fr_ctx_carried_size(const fricreg_ctx *ctx, int factor);
+void fr_ctx_carried_save(const fricreg_ctx *ctx, int factor, unsigned char out[]);
+int fr_ctx_carried_restore(fricreg_ctx *ctx, const unsigned char in[], size_t len, int factor);
+
 #endif

@@ -190,6 +190,53 @@ void fricreg_hb_free(fricreg_hb *hb)
     free(hb);
 }
 
+/* A driver at harmonics H with src's model (dense or sparse M, C, K, Rayleigh damping),
+ * elements (Jenkins, Iwan or lift-off), excitation, Newton's settings, monitor and bound: the
+ * companion of fricreg_hb_truncation_error. Nothing of src changes. */
+int fr_hb_clone(const fricreg_hb *src, int harmonics, fricreg_hb **out)
+{
+    fricreg_hb *hb = NULL;
+    size_t n = src->n, me = src->me;
+    int status = fricreg_hb_create(n, me, harmonics, &hb);
+    if (status != FRICREG_OK)
+        return status;
+    struct rows_buffers b = {0};
+    double *nl = src->nl ? malloc(4 * me * sizeof *nl) : NULL;
+    double *sk = src->sk ? malloc(2 * me * src->ns * sizeof *sk) : NULL;
+    if ((src->nl && (!nl || alloc_rows(hb, 2 * me, &b) != FRICREG_OK)) || (src->sk && !sk) ||
+        (src->sparse && fr_hb_sparse_copy(hb, src) != FRICREG_OK)) {
+        free(nl);
+        free(sk);
+        fricreg_hb_free(hb);
+        return FRICREG_ENOMEM;
+    }
+    if (b.J != NULL)
+        install_rows(hb, 2 * me, &b);
+    if (!src->sparse) /* M, C, K: one block */
+        memcpy(hb->M, src->M, 3 * n * n * sizeof(double));
+    hb->rayleigh = src->rayleigh;
+    hb->a0 = src->a0;
+    hb->a1 = src->a1;
+    memcpy(hb->J, src->J, src->m * n * sizeof(double));
+    memcpy(hb->kt, src->kt, (2 * me + 2 * n) * sizeof(double)); /* kt, mun, pc, ps */
+    if (nl != NULL)
+        memcpy(nl, src->nl, 4 * me * sizeof *nl);
+    if (sk != NULL)
+        memcpy(sk, src->sk, 2 * me * src->ns * sizeof *sk);
+    hb->nl = nl;
+    hb->sk = sk;
+    hb->ns = src->ns;
+    set_rows(hb, src->rpe);
+    hb->have_elements = src->have_elements;
+    hb->tol = src->tol;
+    hb->max_iter = src->max_iter;
+    hb->monitor = src->monitor;
+    hb->monitor_user = src->monitor_user;
+    hb->max_iterations = src->max_iterations;
+    *out = hb;
+    return FRICREG_OK;
+}
+
 /* A model change: the factors, the kept solution and the branch's unknowns no longer hold. */
 static void invalidate(fricreg_hb *hb)
 {

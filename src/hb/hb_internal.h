@@ -11,7 +11,7 @@
 #include <stdint.h>
 
 #include <cholmod.h>
-#include <umfpack.h>
+#include <klu.h>
 
 #include <gsl/gsl_eigen.h>
 #include <gsl/gsl_matrix.h>
@@ -19,6 +19,8 @@
 #include "base/error.h"
 #include "fricreg_aft.h"
 #include "fricreg_hb.h"
+
+struct fr_hb_lu; /* sparse.c: one harmonic's LU factor */
 
 struct fricreg_hb {
     size_t n, m;       /* dofs, rows of J (the condensation's coordinates) */
@@ -63,7 +65,8 @@ struct fricreg_hb {
     size_t *piv;           /* [n] its row interchanges (lu.c) */
     double *Y;             /* [(H+1) n (m+1)] complex: D_h^-1 [J^T | P_h], row k of harmonic h at
                      Y[(h n + k)(m+1)], column m the load (0 but for h = 1) */
-    double *Z;             /* [n (m+1)] complex scratch: D_h' Y_h */
+    double *Z;             /* [n (m+1)] complex scratch: D_h' Y_h, or (sparse.c) the right-hand
+                              sides of Y_h, solved in place */
     double *G;             /* [(H+1) m m] complex: G_h = J D_h^-1 J^T */
     double *ql;            /* [(H+1) m] complex: J D_h^-1 P_h */
     double *dG;            /* [(H+1) m m] complex: dG_h/dΩ */
@@ -72,20 +75,18 @@ struct fricreg_hb {
 
     /* The sparse model (sparse.c): M, C, K as the upper triangles of their symmetric parts,
      * and D_h's pattern, the union of theirs with both triangles (compressed columns, rows
-     * sorted), with each matrix's values on it; UMFPACK's analysis of that pattern (once per
-     * pattern) and one numeric factor at a time (per harmonic and frequency). */
+     * sorted), with each matrix's values on it; KLU's analysis of that pattern (once per
+     * pattern) and each harmonic's LU factor, refactored at the next frequency of a call. */
     int sparse;                   /* the model is sparse: dense setters convert to it */
     cholmod_common cc;            /* fr_cholmod_start's: the setters' conversions */
     cholmod_sparse *Ms, *Cs, *Ks; /* upper triangles (stype 1) */
     int64_t *Dp, *Di;             /* [n + 1], [dnz]: the pattern of D_h */
     size_t dnz;
-    double *vM, *vC, *vK; /* [dnz] each: M, C, K on that pattern */
-    double *Dx, *Dz;      /* [dnz] each: D_h's real and imaginary parts */
-    int64_t *Wi;          /* [n] umfpack_zl_wsolve's workspace */
-    double *W;            /* [10 n] its workspace, then Bx, Bz, Xx, Xz [n] each */
-    void *symbolic;       /* umfpack_zl_symbolic's, NULL: none yet */
-    double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
-    double lu_entries; /* nnz(L) + nnz(U) of the last factor */
+    double *vM, *vC, *vK;     /* [dnz] each: M, C, K on that pattern */
+    double *Dv;               /* [2 dnz]: D_h, complex interleaved (KLU's layout) */
+    klu_l_common klu;         /* KLU's settings and last status */
+    klu_l_symbolic *symbolic; /* klu_l_analyze's, NULL: none yet */
+    struct fr_hb_lu *lu;      /* [H + 1]: each harmonic's factor (sparse.c) */
 
     /* Newton (residual.c, newton.c, continuation.c) */
     double *fq;     /* [nq] element force coefficients at the last evaluation */
@@ -186,6 +187,18 @@ void fr_hb_sparse_derivative(fricreg_hb *hb, int h, double omega);
  * defaults for a sparse-only one; frees the sparse state. */
 int fr_hb_sparse_defaults(fricreg_hb *hb);
 void fr_hb_sparse_free(fricreg_hb *hb);
+/* Frees the harmonics' LU factors (kept from one frequency to the next within a solving call),
+ * so that a call's results do not depend on the pivots of the calls before it. */
+void fr_hb_sparse_release(fricreg_hb *hb);
+
+/* dst's model becomes a copy of the sparse src's M, C, K (dst turned sparse): FRICREG_OK or
+ * FRICREG_ENOMEM, dst's model unchanged then. */
+int fr_hb_sparse_copy(fricreg_hb *dst, const fricreg_hb *src);
+
+/* A new driver at harmonics H (1 <= H <= FRICREG_HB_MAX_HARMONICS) with src's model, elements,
+ * excitation, Newton's settings, monitor and bound (hb.c); no solution, stability off.
+ * FRICREG_OK or FRICREG_ENOMEM. */
+int fr_hb_clone(const fricreg_hb *src, int harmonics, fricreg_hb **out);
 
 /* The dense setters' path on a sparse model: the checked, symmetric dense A installed as
  * matrix which (0 M, 1 C, 2 K). */
@@ -299,6 +312,10 @@ void fr_hb_hill_free(fricreg_hb *hb);
 
 /* Each dof's RMS over a period from the forces fq at the factored Ω, into rms[n]. */
 void fr_hb_rms(const fricreg_hb *hb, double *rms);
+
+/* As fr_hb_rms over the harmonics 0..harmonics (<= H) only, and each dof's amplitude of the
+ * fundamental |X_1| into amplitude[n] (NULL: not wanted). */
+void fr_hb_rms_upto(const fricreg_hb *hb, int harmonics, double *rms, double *amplitude);
 
 /* Dof k's RMS over a period from the forces fq at the factored Ω. */
 double fr_hb_rms_dof(const fricreg_hb *hb, size_t k);

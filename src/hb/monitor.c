@@ -50,6 +50,8 @@ void fr_hb_begin(fricreg_hb *hb, int report_omega)
 int fr_hb_end(fricreg_hb *hb, int status)
 {
     hb->busy = 0;
+    if (hb->sparse) /* the next call factors afresh: its results are its own */
+        fr_hb_sparse_release(hb);
     if (!hb->stopped)
         return status;
     hb->err = hb->stop_err; /* a fallback's or a restored record is not the call's */

@@ -41,21 +41,34 @@ void fr_hb_recover(const fricreg_hb *hb, double *x)
         }
 }
 
-double fr_hb_rms_dof(const fricreg_hb *hb, size_t k)
+/* Dof k's RMS over the harmonics 0..harmonics; its |X_1| into *amplitude (NULL: not wanted). */
+static double rms_upto(const fricreg_hb *hb, size_t k, int harmonics, double *amplitude)
 {
     double s = 0.0;
-    for (int h = 0; h <= hb->H; h++) {
+    for (int h = 0; h <= harmonics; h++) {
         double X[2];
         coefficient(hb, h, k, X);
         s += h == 0 ? X[0] * X[0] : 0.5 * (X[0] * X[0] + X[1] * X[1]);
+        if (h == 1 && amplitude != NULL)
+            *amplitude = hypot(X[0], X[1]);
     }
     return sqrt(s);
 }
 
-void fr_hb_rms(const fricreg_hb *hb, double *rms)
+double fr_hb_rms_dof(const fricreg_hb *hb, size_t k)
+{
+    return rms_upto(hb, k, hb->H, NULL);
+}
+
+void fr_hb_rms_upto(const fricreg_hb *hb, int harmonics, double *rms, double *amplitude)
 {
     for (size_t k = 0; k < hb->n; k++)
-        rms[k] = fr_hb_rms_dof(hb, k);
+        rms[k] = rms_upto(hb, k, harmonics, amplitude ? &amplitude[k] : NULL);
+}
+
+void fr_hb_rms(const fricreg_hb *hb, double *rms)
+{
+    fr_hb_rms_upto(hb, hb->H, rms, NULL);
 }
 
 int fricreg_hb_displacement(fricreg_hb *hb, size_t ndof, size_t nc, double x[])

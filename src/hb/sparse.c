@@ -2,12 +2,13 @@
 /* sparse.c — the harmonic-balance driver's sparse model (fricreg_hb.h): the _csc setters, the
  * pattern of the dynamic stiffness D_h = K − (hΩ)² M + i hΩ C (the union of M's, C's and
  * K's, both triangles, assembled once per pattern with each matrix's values on it), and its
- * factorization by SuiteSparse's UMFPACK, complex (umfpack_zl_*: D_h is complex symmetric,
- * not Hermitian, and indefinite above the first resonance, so CHOLMOD's Cholesky does not
- * apply): the analysis once per pattern, a numeric LU per harmonic and frequency, freed once
- * Y_h = D_h^-1 [J^T | P_h] is solved (Y_h is what the displacements need later). UMFPACK
- * prints nothing (print level 0) and its solves use a workspace held here (umfpack_zl_wsolve,
- * which does not allocate); its analysis and factors allocate through SuiteSparse_config. */
+ * factorization by SuiteSparse's KLU, complex (klu_zl_*: D_h is complex symmetric, not
+ * Hermitian, and indefinite above the first resonance, so CHOLMOD's Cholesky does not apply):
+ * the analysis (AMD) once per pattern, and per harmonic an LU with partial pivoting that is
+ * kept and, at the next frequency, refactored on its pivot sequence (klu_zl_refactor), with a
+ * fresh factor whenever that sequence's pivot growth is a hundred times the fresh one's. KLU
+ * prints nothing; it solves Y_h = D_h^-1 [J^T | P_h] in place in a block held here (no
+ * allocation); its analysis and factors allocate through SuiteSparse_config. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -36,9 +37,15 @@ static int by_row(const void *a, const void *b)
 struct pattern {
     int64_t *Dp, *Di;
     size_t dnz;
-    double *v; /* vM, vC, vK, Dx, Dz: [5 dnz] */
-    int64_t *Wi;
-    double *W; /* [14 n] */
+    double *v;           /* vM, vC, vK [dnz] each, Dv [2 dnz] */
+    struct fr_hb_lu *lu; /* [H + 1] */
+};
+
+/* One harmonic's LU factor of D_h, and the reciprocal pivot growth (klu_zl_rgrowth) of its
+ * last fresh factorization, against which a refactor on the same pivots is judged. */
+struct fr_hb_lu {
+    klu_l_numeric *numeric; /* NULL: none */
+    double fresh_rgrowth;
 };
 
 static void pattern_free(struct pattern *p)
@@ -46,13 +53,12 @@ static void pattern_free(struct pattern *p)
     free(p->Dp);
     free(p->Di);
     free(p->v);
-    free(p->Wi);
-    free(p->W);
+    free(p->lu);
 }
 
 /* The union of X[0..2]'s patterns (upper triangles, stype 1) with both triangles, rows sorted
  * in each column, and each matrix's values on it. FRICREG_OK or FRICREG_ENOMEM. */
-static int build_pattern(size_t n, cholmod_sparse *const X[3], struct pattern *p)
+static int build_pattern(size_t n, int H, cholmod_sparse *const X[3], struct pattern *p)
 {
     *p = (struct pattern){0};
     size_t total = 0;
@@ -108,9 +114,8 @@ static int build_pattern(size_t n, cholmod_sparse *const X[3], struct pattern *p
     p->Dp = malloc((n + 1) * sizeof *p->Dp);
     p->Di = malloc((dnz ? dnz : 1) * sizeof *p->Di);
     p->v = calloc(5 * (dnz ? dnz : 1), sizeof *p->v);
-    p->Wi = malloc(n * sizeof *p->Wi);
-    p->W = malloc(14 * n * sizeof *p->W);
-    if (!p->Dp || !p->Di || !p->v || !p->Wi || !p->W) {
+    p->lu = calloc((size_t)H + 1, sizeof *p->lu);
+    if (!p->Dp || !p->Di || !p->v || !p->lu) {
         free(start);
         free(e);
         pattern_free(p);
@@ -131,6 +136,22 @@ static int build_pattern(size_t n, cholmod_sparse *const X[3], struct pattern *p
     return FRICREG_OK;
 }
 
+/* Frees the pattern, its analysis and the factors on it. */
+static void free_factors(fricreg_hb *hb)
+{
+    if (hb->lu != NULL)
+        for (int h = 0; h <= hb->H; h++)
+            klu_zl_free_numeric(&hb->lu[h].numeric, &hb->klu);
+    klu_l_free_symbolic(&hb->symbolic, &hb->klu);
+    free(hb->Dp);
+    free(hb->Di);
+    free(hb->vM);
+    free(hb->lu);
+    hb->Dp = hb->Di = NULL;
+    hb->vM = hb->vC = hb->vK = hb->Dv = NULL;
+    hb->lu = NULL;
+}
+
 /* Installs the matrices X[0..2] (M, C, K; each either the driver's own or new) with their
  * pattern: the driver's old matrices not kept are freed. On failure the new ones are freed
  * and nothing changes. */
@@ -138,7 +159,7 @@ static int install(fricreg_hb *hb, const char *fn, cholmod_sparse *X[3])
 {
     cholmod_sparse **own[3] = {&hb->Ms, &hb->Cs, &hb->Ks};
     struct pattern p;
-    int status = build_pattern(hb->n, X, &p);
+    int status = build_pattern(hb->n, hb->H, X, &p);
     if (status != FRICREG_OK) {
         for (int x = 0; x < 3; x++)
             if (X[x] != *own[x])
@@ -150,11 +171,16 @@ static int install(fricreg_hb *hb, const char *fn, cholmod_sparse *X[3])
             cholmod_l_free_sparse(own[x], &hb->cc);
             *own[x] = X[x];
         }
-    free(hb->Dp);
-    free(hb->Di);
-    free(hb->vM);
-    free(hb->Wi);
-    free(hb->W);
+    if (!hb->sparse) { /* for good: the dense model's memory is not needed again */
+        free(hb->M);
+        free(hb->D);
+        free(hb->piv);
+        hb->M = hb->C = hb->K = hb->D = NULL;
+        hb->piv = NULL;
+        klu_l_defaults(&hb->klu);
+        hb->sparse = 1;
+    }
+    free_factors(hb);
     hb->Dp = p.Dp;
     hb->Di = p.Di;
     hb->dnz = p.dnz;
@@ -162,29 +188,12 @@ static int install(fricreg_hb *hb, const char *fn, cholmod_sparse *X[3])
     hb->vM = p.v;
     hb->vC = p.v + d;
     hb->vK = p.v + 2 * d;
-    hb->Dx = p.v + 3 * d;
-    hb->Dz = p.v + 4 * d;
-    hb->Wi = p.Wi;
-    hb->W = p.W;
-    if (hb->symbolic != NULL)
-        umfpack_zl_free_symbolic(&hb->symbolic);
-    if (!hb->sparse) { /* for good: the dense model's memory is not needed again */
-        free(hb->M);
-        free(hb->D);
-        free(hb->piv);
-        hb->M = hb->C = hb->K = hb->D = NULL;
-        hb->piv = NULL;
-        umfpack_zl_defaults(hb->control);
-        hb->control[UMFPACK_PRL] = 0; /* nothing printed */
-        /* D_h is complex symmetric (K − (hΩ)² M + i hΩ C): AMD on its pattern and diagonal
-         * pivots first, a quarter faster than the unsymmetric default on a 10^4-dof rod
-         * (bench/nma_sparse.c), where every Newton step refactors H + 1 of them */
-        hb->control[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_SYMMETRIC;
-        hb->sparse = 1;
-    }
+    hb->Dv = p.v + 3 * d;
+    hb->lu = p.lu;
     hb->factored_omega = NAN;
     hb->have_solution = 0;
     hb->have_branch = 0;
+    hb->have_backbone = 0;
     return FRICREG_OK;
 }
 
@@ -193,13 +202,7 @@ void fr_hb_sparse_free(fricreg_hb *hb)
     cholmod_l_free_sparse(&hb->Ms, &hb->cc);
     cholmod_l_free_sparse(&hb->Cs, &hb->cc);
     cholmod_l_free_sparse(&hb->Ks, &hb->cc);
-    free(hb->Dp);
-    free(hb->Di);
-    free(hb->vM);
-    free(hb->Wi);
-    free(hb->W);
-    if (hb->symbolic != NULL)
-        umfpack_zl_free_symbolic(&hb->symbolic);
+    free_factors(hb);
 }
 
 /* A zero n x n upper triangle, or the identity. */
@@ -221,6 +224,19 @@ int fr_hb_sparse_defaults(fricreg_hb *hb)
         return FRICREG_ENOMEM;
     }
     return install(hb, "create", X);
+}
+
+int fr_hb_sparse_copy(fricreg_hb *dst, const fricreg_hb *src)
+{
+    cholmod_sparse *X[3] = {cholmod_l_copy_sparse(src->Ms, &dst->cc),
+                            cholmod_l_copy_sparse(src->Cs, &dst->cc),
+                            cholmod_l_copy_sparse(src->Ks, &dst->cc)};
+    if (!X[0] || !X[1] || !X[2]) {
+        for (int x = 0; x < 3; x++)
+            cholmod_l_free_sparse(&X[x], &dst->cc);
+        return FRICREG_ENOMEM;
+    }
+    return install(dst, "truncation_error", X);
 }
 
 /* The dense driver's matrix which (checked when it was set) as an upper triangle. */
@@ -296,6 +312,13 @@ int fricreg_hb_set_stiffness_csc(fricreg_hb *hb, size_t ndof, int flags, const i
 
 /* ---- The factor and the solves ------------------------------------------------------------- */
 
+void fr_hb_sparse_release(fricreg_hb *hb)
+{
+    if (hb->lu != NULL)
+        for (int h = 0; h <= hb->H; h++)
+            klu_zl_free_numeric(&hb->lu[h].numeric, &hb->klu);
+}
+
 /* The damping in force, less the nonlinear modes' xi M, as dynamic.c's. */
 static double damping(const fricreg_hb *hb, size_t p)
 {
@@ -303,75 +326,115 @@ static double damping(const fricreg_hb *hb, size_t p)
     return c - hb->xi * hb->vM[p];
 }
 
-static int umfpack_failed(fricreg_hb *hb, const char *fn, const char *what, int status)
+/* A refactor on the last fresh factor's pivots is kept while its reciprocal pivot growth is at
+ * least this fraction of the fresh one's (at most a hundredfold more growth, so the backward
+ * error stays near a fresh factor's; below it the pivots are chosen afresh). */
+#define REFACTOR_RGROWTH_MIN 1e-2
+/* The factors of all H + 1 harmonics are kept from one frequency to the next (within a call:
+ * fr_hb_sparse_release at its end) while they hold at most
+ * this many entries in all (2^24 complex entries: 256 MiB of values, about three harmonics'
+ * factors of a 9·10^4-dof 2-D grid); a larger model frees each after its solves, so one factor
+ * lives at a time and every frequency factors afresh. */
+#define KEPT_LU_ENTRIES_MAX 16777216.0
+
+static int klu_failed(fricreg_hb *hb, const char *fn, const char *what)
 {
-    if (status == UMFPACK_ERROR_out_of_memory)
-        return fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for UMFPACK's %s of D_h", fn, what);
-    return fr_fail(hb, FRICREG_EINVAL, "%s: UMFPACK's %s of D_h failed (status %d)", fn, what,
-                   status);
+    if (hb->klu.status == KLU_OUT_OF_MEMORY)
+        return fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for KLU's %s of D_h", fn, what);
+    return fr_fail(hb, FRICREG_EINVAL, "%s: KLU's %s of D_h failed (status %ld)", fn, what,
+                   (long)hb->klu.status);
+}
+
+/* A fresh LU factor of D_h (hb->Dv), partial pivoting: FRICREG_OK, or FRICREG_ENOMEM /
+ * FRICREG_EINVAL as klu_failed. A singular D_h gives FRICREG_OK with no factor (KLU stops at
+ * its first zero pivot: status KLU_SINGULAR). */
+static int factor_fresh(fricreg_hb *hb, const char *fn, struct fr_hb_lu *lu)
+{
+    SuiteSparse_long *Dp = (SuiteSparse_long *)hb->Dp, *Di = (SuiteSparse_long *)hb->Di;
+    klu_zl_free_numeric(&lu->numeric, &hb->klu);
+    lu->numeric = klu_zl_factor(Dp, Di, hb->Dv, hb->symbolic, &hb->klu);
+    if (lu->numeric == NULL)
+        return hb->klu.status == KLU_SINGULAR ? FRICREG_OK : klu_failed(hb, fn, "LU factor");
+    if (!klu_zl_rgrowth(Dp, Di, hb->Dv, hb->symbolic, lu->numeric, &hb->klu))
+        return klu_failed(hb, fn, "pivot growth");
+    lu->fresh_rgrowth = hb->klu.rgrowth;
+    return FRICREG_OK;
+}
+
+/* D_h (hb->Dv) factored in lu: refactored on the kept pivots if their growth stays within
+ * REFACTOR_RGROWTH_MIN of the fresh factor's, afresh otherwise. */
+static int factor(fricreg_hb *hb, const char *fn, struct fr_hb_lu *lu)
+{
+    SuiteSparse_long *Dp = (SuiteSparse_long *)hb->Dp, *Di = (SuiteSparse_long *)hb->Di;
+    if (lu->numeric != NULL &&
+        klu_zl_refactor(Dp, Di, hb->Dv, hb->symbolic, lu->numeric, &hb->klu) &&
+        hb->klu.status == KLU_OK &&
+        klu_zl_rgrowth(Dp, Di, hb->Dv, hb->symbolic, lu->numeric, &hb->klu) &&
+        hb->klu.rgrowth >= REFACTOR_RGROWTH_MIN * lu->fresh_rgrowth)
+        return FRICREG_OK;
+    return factor_fresh(hb, fn, lu);
+}
+
+/* Y_h = D_h^-1 [J^T | P_h] (column m the load, zero but for h = 1) from D_h's factor, the
+ * right-hand sides solved in place in the scratch Z. */
+static void solve(fricreg_hb *hb, int h, struct fr_hb_lu *lu)
+{
+    size_t n = hb->n, m = hb->m, w = m + 1, nrhs = h == 1 ? w : m;
+    double *Y = hb->Y + 2 * (size_t)h * n * w, *B = hb->Z;
+    for (size_t e = 0; e < nrhs; e++)
+        for (size_t k = 0; k < n; k++) {
+            B[2 * (e * n + k)] = e < m ? hb->J[e * n + k] : hb->pc[k];
+            B[2 * (e * n + k) + 1] = e < m ? 0.0 : -hb->ps[k];
+        }
+    if (nrhs > 0)
+        klu_zl_solve(hb->symbolic, lu->numeric, (SuiteSparse_long)n, (SuiteSparse_long)nrhs, B,
+                     &hb->klu);
+    for (size_t k = 0; k < n; k++)
+        for (size_t e = 0; e < w; e++) {
+            Y[2 * (k * w + e)] = e < nrhs ? B[2 * (e * n + k)] : 0.0;
+            Y[2 * (k * w + e) + 1] = e < nrhs ? B[2 * (e * n + k) + 1] : 0.0;
+        }
 }
 
 int fr_hb_sparse_solve(fricreg_hb *hb, const char *fn, int h, double omega)
 {
-    size_t n = hb->n, m = hb->m, w = m + 1;
     double wh = h * omega, dmax = 0.0;
     for (size_t p = 0; p < hb->dnz; p++) {
-        hb->Dx[p] = hb->vK[p] - wh * wh * hb->vM[p];
-        hb->Dz[p] = wh * damping(hb, p);
-        dmax = fmax(dmax, fabs(hb->vK[p]) + wh * wh * fabs(hb->vM[p]) + fabs(hb->Dz[p]));
+        double im = wh * damping(hb, p);
+        hb->Dv[2 * p] = hb->vK[p] - wh * wh * hb->vM[p];
+        hb->Dv[2 * p + 1] = im;
+        dmax = fmax(dmax, fabs(hb->vK[p]) + wh * wh * fabs(hb->vM[p]) + fabs(im));
     }
     if (!isfinite(dmax))
         return fr_fail(hb, FRICREG_ENONFINITE,
                        "%s: the dynamic stiffness D_%d overflows at Omega = %g (|K| + w^2 |M| + w "
                        "|C| beyond the double range)",
                        fn, h, omega);
-    const SuiteSparse_long *Dp = (const SuiteSparse_long *)hb->Dp,
-                           *Di = (const SuiteSparse_long *)hb->Di;
-    int status;
     if (hb->symbolic == NULL) {
-        status = (int)umfpack_zl_symbolic((SuiteSparse_long)n, (SuiteSparse_long)n, Dp, Di, NULL,
-                                          NULL, &hb->symbolic, hb->control, hb->info);
-        if (status != UMFPACK_OK) {
-            hb->symbolic = NULL;
-            return umfpack_failed(hb, fn, "analysis", status);
-        }
+        hb->symbolic = klu_l_analyze((SuiteSparse_long)hb->n, (SuiteSparse_long *)hb->Dp,
+                                     (SuiteSparse_long *)hb->Di, &hb->klu);
+        if (hb->symbolic == NULL)
+            return klu_failed(hb, fn, "analysis");
     }
-    void *numeric = NULL;
-    status = (int)umfpack_zl_numeric(Dp, Di, hb->Dx, hb->Dz, hb->symbolic, &numeric, hb->control,
-                                     hb->info);
-    if (status != UMFPACK_OK && status != UMFPACK_WARNING_singular_matrix) {
-        umfpack_zl_free_numeric(&numeric);
-        return umfpack_failed(hb, fn, "LU factor", status);
-    }
-    double rcond = hb->info[UMFPACK_RCOND];
-    if (status == UMFPACK_WARNING_singular_matrix || !(rcond > 1e-14)) {
-        umfpack_zl_free_numeric(&numeric);
+    struct fr_hb_lu *lu = &hb->lu[h];
+    int status = factor(hb, fn, lu);
+    if (status != FRICREG_OK)
+        return status;
+    int singular = lu->numeric == NULL || hb->klu.status == KLU_SINGULAR;
+    if (!singular && !klu_zl_rcond(hb->symbolic, lu->numeric, &hb->klu))
+        return klu_failed(hb, fn, "pivot ratio");
+    double rcond = singular ? 0.0 : hb->klu.rcond;
+    if (!(rcond > 1e-14)) {
+        klu_zl_free_numeric(&lu->numeric, &hb->klu);
         return fr_fail(hb, FRICREG_ESINGULAR,
-                       "%s: %s is singular at Omega = %g (UMFPACK's LU factor: smallest over "
-                       "largest pivot %g)",
+                       "%s: %s is singular at Omega = %g (KLU's LU factor: smallest over largest "
+                       "pivot %g)",
                        fn, h == 0 ? "K" : "the dynamic stiffness D_h", omega, rcond);
     }
-    hb->lu_entries = hb->info[UMFPACK_LNZ] + hb->info[UMFPACK_UNZ];
-    double *Y = hb->Y + 2 * (size_t)h * n * w;
-    double *Bx = hb->W + 10 * n, *Bz = Bx + n, *Xx = Bz + n, *Xz = Xx + n;
-    for (size_t e = 0; e <= m; e++) {
-        if (e == m && h != 1) {
-            for (size_t k = 0; k < n; k++)
-                Y[2 * (k * w + e)] = Y[2 * (k * w + e) + 1] = 0.0;
-            continue;
-        }
-        for (size_t k = 0; k < n; k++) {
-            Bx[k] = e < m ? hb->J[e * n + k] : hb->pc[k];
-            Bz[k] = e < m ? 0.0 : -hb->ps[k];
-        }
-        umfpack_zl_wsolve(UMFPACK_A, Dp, Di, hb->Dx, hb->Dz, Xx, Xz, Bx, Bz, numeric, hb->control,
-                          hb->info, (SuiteSparse_long *)hb->Wi, hb->W);
-        for (size_t k = 0; k < n; k++) {
-            Y[2 * (k * w + e)] = Xx[k];
-            Y[2 * (k * w + e) + 1] = Xz[k];
-        }
-    }
-    umfpack_zl_free_numeric(&numeric);
+    solve(hb, h, lu);
+    double entries = (double)(lu->numeric->lnz + lu->numeric->unz) * (hb->H + 1);
+    if (entries > KEPT_LU_ENTRIES_MAX)
+        klu_zl_free_numeric(&lu->numeric, &hb->klu);
     return FRICREG_OK;
 }
 

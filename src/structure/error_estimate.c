@@ -115,21 +115,35 @@ static int copy_structure(fricreg_structure *c, const fricreg_structure *s)
     return FRICREG_OK;
 }
 
+int fr_estimate_companion(const fricreg_structure *s, fricreg_structure **out, char msg[])
+{
+    fricreg_structure *c = NULL;
+    if (fricreg_structure_create(s->n, s->m, &c) != FRICREG_OK) {
+        snprintf(msg, 256, "no memory for the companion structure");
+        return FRICREG_ENOMEM;
+    }
+    int status = copy_structure(c, s);
+    if (status != FRICREG_OK) {
+        snprintf(msg, 256, "the companion could not be made: %s", fricreg_structure_errmsg(c));
+        fricreg_structure_free(c);
+        return status;
+    }
+    if (s->estimate_on == FRICREG_ESTIMATE_TWO_COMPANIONS) /* the second: c's own */
+        c->estimate_on = FRICREG_ESTIMATE_ONE_COMPANION;
+    *out = c;
+    return FRICREG_OK;
+}
+
 void fr_estimate_begin(fricreg_structure *s)
 {
     if (!s->estimate_on || s->estimate_state != FR_ESTIMATE_NONE || !s->fresh)
         return;
-    fricreg_structure *c = NULL;
-    if (fricreg_structure_create(s->n, s->m, &c) != FRICREG_OK) {
-        estimate_failed(s, "no memory for the companion structure");
+    char msg[256];
+    if (fr_estimate_companion(s, &s->companion, msg) != FRICREG_OK) {
+        estimate_failed(s, "%s", msg);
         return;
     }
-    s->companion = c;
     s->estimate_state = FR_ESTIMATE_ACTIVE;
-    if (copy_structure(c, s) != FRICREG_OK)
-        estimate_failed(s, "the companion could not be made: %s", fricreg_structure_errmsg(c));
-    else if (s->estimate_on == FRICREG_ESTIMATE_TWO_COMPANIONS) /* the second: c's own */
-        c->estimate_on = FRICREG_ESTIMATE_ONE_COMPANION;
 }
 
 void fr_estimate_follow(fricreg_structure *s, int integrator, double dt, double rtol, double atol)

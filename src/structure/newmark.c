@@ -121,6 +121,13 @@ static int form_step_factor(fricreg_structure *s, double dt)
     return FRICREG_OK;
 }
 
+int fr_newmark_factor(fricreg_structure *s, double dt)
+{
+    if (s->step_dt != dt)
+        s->step_dt = 0.0; /* within STEP_RTOL is not enough: the factor of dt itself */
+    return form_step_factor(s, dt);
+}
+
 /* The largest entry of |J|^T mun, on the degrees of freedom J touches (through s->spread):
  * formed once for J and the bounds (s->bound_scale). */
 static double bound_scale(fricreg_structure *s)

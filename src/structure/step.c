@@ -188,6 +188,8 @@ int fricreg_structure_step(fricreg_structure *s, double dt)
         return fr_fail(s, FRICREG_EINVAL, "step: dt = %g is lost against t = %g", dt, s->t);
     fr_estimate_begin(s);
     status = step_to(s, t1);
+    if (status == FRICREG_OK)
+        s->clock_k = 0; /* off any run's grid */
     fr_estimate_follow(s, 0, dt, 0.0, 0.0);
     return status;
 }
@@ -206,6 +208,21 @@ int fricreg_structure_run(fricreg_structure *s, double dt, double t_end)
     return status;
 }
 
+/* The grid a run of dt steps on: the last run's when it ended where this one starts with the
+ * same dt (its origin into *t0, the steps it took into *k0), so that a run split into several
+ * calls (or continued after fricreg_structure_restore) takes the steps of one call; else one
+ * from the current time. */
+static void run_grid(const fricreg_structure *s, double dt, double *t0, int64_t *k0)
+{
+    *t0 = s->t;
+    *k0 = 0;
+    if (s->clock_k > 0 && s->clock_k < ((int64_t)1 << 53) && s->clock_dt == dt &&
+        s->t == s->clock_t0 + (double)s->clock_k * s->clock_dt) {
+        *t0 = s->clock_t0;
+        *k0 = s->clock_k;
+    }
+}
+
 static int run(fricreg_structure *s, double dt, double t_end)
 {
     int status = check_dt(s, "run", dt);
@@ -213,24 +230,31 @@ static int run(fricreg_structure *s, double dt, double t_end)
         return status;
     if (!isfinite(t_end))
         return fr_fail(s, FRICREG_ENONFINITE, "run: t_end is not finite");
-    double t0 = s->t;
-    if (!(t_end > t0))
-        return fr_fail(s, FRICREG_EINVAL, "run: t_end = %g must be after t = %g", t_end, t0);
+    if (!(t_end > s->t))
+        return fr_fail(s, FRICREG_EINVAL, "run: t_end = %g must be after t = %g", t_end, s->t);
+    double t0;
+    int64_t k0;
+    run_grid(s, dt, &t0, &k0);
     /* Steps that end within 1e-12 dt, or within rounding of the times (4 ulps of t), of t_end
      * land on it: no sliver of a last step. */
     double slack = 4.0 * DBL_EPSILON * fmax(fabs(t0), fabs(t_end)) / dt;
-    double steps = ceil((t_end - t0) / dt * (1.0 - 1e-12) - slack);
+    double steps = ceil((t_end - t0) / dt * (1.0 - 1e-12) - slack) - (double)k0;
     if (steps > MAX_RUN_STEPS)
         return fr_fail(s, FRICREG_EINVAL, "run: %g steps of dt = %g exceed 2^31", steps, dt);
-    int64_t nsteps = steps < 1.0 ? 1 : (int64_t)steps;
+    int64_t nsteps = k0 + (steps < 1.0 ? 1 : (int64_t)steps);
     fr_estimate_begin(s);
     s->running = 1;
-    for (int64_t k = 1; k <= nsteps && status == FRICREG_OK; k++) {
+    for (int64_t k = k0 + 1; k <= nsteps && status == FRICREG_OK; k++) {
         double t1 = k == nsteps ? t_end : t0 + (double)k * dt;
         if (!(t1 > s->t))
             status = fr_fail(s, FRICREG_EINVAL, "run: dt = %g is lost against t = %g", dt, s->t);
         else
             status = step_to(s, t1);
+        if (status == FRICREG_OK) {
+            s->clock_t0 = t0;
+            s->clock_dt = dt;
+            s->clock_k = k;
+        }
         if (status == FRICREG_OK &&
             fr_structure_observe(s, s->t, s->u->data, s->v->data, s->f->data))
             break; /* the observer asked to stop: not an error */

@@ -345,6 +345,7 @@ int fricreg_structure_set_initial(fricreg_structure *s, size_t ndof, const doubl
     gsl_vector_set_zero(s->f);
     fr_elements_reset(s);
     s->t = 0.0;
+    s->clock_k = 0;
     s->ready = 0;
     s->fresh = 1;
     fr_energy_reset(s);

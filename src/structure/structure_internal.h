@@ -172,6 +172,11 @@ struct fricreg_structure {
                                   * if one is NaN): the divergence check's */
     int ready;
     int fresh; /* set_initial since the last step: the balance starts here */
+    /* The grid of the last fricreg_structure_run: its step k ended at clock_t0 + k clock_dt,
+     * clock_k the last one taken (0: no run to continue, after step, run_ode or set_initial).
+     * A run of the same dt that starts where that one ended continues its grid (step.c). */
+    double clock_t0, clock_dt;
+    int64_t clock_k;
 
     /* Step scratch, allocated at create: [n] ... */
     gsl_vector *x, *u1, *v1, *ptil1, *hist, *up, *vp, *work, *yb, *dx, *xt;
@@ -281,6 +286,9 @@ static inline double fr_max_abs(double m, double x)
 
 /* newmark.c: u1, v1, x (= a1), f1 and end_max of one Newmark / HHT-alpha step by Newton. */
 int fr_newmark_solve(fricreg_structure *s, double dt, int *converged, int *iters);
+/* K_eff's factor for dt, exactly (a restored structure's, checkpoint.c): FRICREG_OK or the
+ * factorization's failure (recorded). */
+int fr_newmark_factor(fricreg_structure *s, double dt);
 
 /* central_difference.c: the same, explicit; FRICREG_ESTEP beyond its stability bounds. */
 int fr_central_solve(fricreg_structure *s, double dt);
@@ -397,6 +405,10 @@ double fr_energy_strain(const fricreg_structure *s);
  * records, Newton, the adaptive bound); a failure makes the estimate a failed one. */
 void fr_peak_sample(fricreg_structure *s);
 void fr_estimate_begin(fricreg_structure *s);
+/* A new companion of s, a copy of its configuration and state as fr_estimate_begin makes it,
+ * into *out: FRICREG_OK, or FRICREG_ENOMEM and the companion's failure's message into
+ * msg[256] (nothing made). */
+int fr_estimate_companion(const fricreg_structure *s, fricreg_structure **out, char msg[]);
 void fr_estimate_follow(fricreg_structure *s, int integrator, double dt, double rtol, double atol);
 void fr_estimate_discard(fricreg_structure *s);
 void fr_estimate_forwarded(fricreg_structure *s, int status, const char *who);

@@ -338,7 +338,8 @@ static int run_ode(fricreg_structure *s, int integrator, double dt, double rtol,
     if (s->fresh)
         s->energy.initial = initial;
     s->fresh = 0;
-    s->ready = 0; /* the next step takes its acceleration from the equation of motion */
+    s->ready = 0;   /* the next step takes its acceleration from the equation of motion */
+    s->clock_k = 0; /* off fricreg_structure_run's grid */
     fr_estimate_follow(s, integrator, dt, rtol, atol);
     if (status == FRICREG_OK)
         return fr_structure_equilibrium(s);

@@ -14,6 +14,44 @@
 #define MAXM JENKINS_MODEL_MAXM
 static const double PI = 3.14159265358979323846;
 
+/* One dof on a spring to ground with a Jenkins element to ground. */
+struct jenkins_model jenkins_model_oscillator(void)
+{
+    struct jenkins_model s = {.n = 1, .m = 1};
+    s.M[0] = 1.3;
+    s.K[0] = 2.385;
+    s.C[0] = 0.12;
+    s.J[0] = 1.0;
+    s.kt[0] = 1.7;
+    s.mun[0] = 0.35;
+    s.pc[0] = 0.6;
+    s.ps[0] = 0.0;
+    return s;
+}
+
+/* Three masses in a chain on springs (ground–1, 1–2, 2–3), Rayleigh damping a0 M + a1 K;
+ * element 0 between mass 3 and ground, element 1 between masses 1 and 2; mass 1 excited. */
+struct jenkins_model jenkins_model_chain(void)
+{
+    struct jenkins_model s = {.n = 3, .m = 2};
+    const double mass[3] = {1.1, 0.9, 1.25}, k[3] = {3.2, 2.1, 1.6};
+    for (int i = 0; i < 3; i++)
+        s.M[4 * i] = mass[i];
+    s.K[0] = k[0] + k[1];
+    s.K[1] = s.K[3] = -k[1];
+    s.K[4] = k[1] + k[2];
+    s.K[5] = s.K[7] = -k[2];
+    s.K[8] = k[2];
+    for (int i = 0; i < 9; i++)
+        s.C[i] = 0.03 * s.M[i] + 0.01 * s.K[i];
+    s.J[2] = 1.0;                /* q_0 = x_3 */
+    s.J[3] = -1.0, s.J[4] = 1.0; /* q_1 = x_2 − x_1 */
+    s.kt[0] = 2.5, s.kt[1] = 1.4;
+    s.mun[0] = 0.3, s.mun[1] = 0.12;
+    s.pc[0] = 0.8, s.ps[0] = 0.25;
+    return s;
+}
+
 int jenkins_newmark_rms(const struct jenkins_model *s, double omega, int N, int periods,
                         double *rms, double *prev, double *hist)
 {

@@ -28,6 +28,13 @@ struct jenkins_model {
         n0[JENKINS_MODEL_MAXM], kn[JENKINS_MODEL_MAXM];
 };
 
+/* The harmonic-balance suites' models (test_hb, test_hb_truncation): one dof on a spring to
+ * ground with a Jenkins element to ground, cosine forcing; and three masses in a chain on
+ * springs (ground–1, 1–2, 2–3), C = 0.03 M + 0.01 K, element 0 between mass 3 and ground,
+ * element 1 between masses 1 and 2, mass 1 excited. */
+struct jenkins_model jenkins_model_oscillator(void);
+struct jenkins_model jenkins_model_chain(void);
+
 /* periods periods of N steps each from rest at Omega = omega: the RMS of each dof over the last
  * period into rms[n] and over the one before into prev[n]; x after every step into
  * hist[step * n + k] (step 0 .. periods N - 1) where hist is not NULL. Returns whether every

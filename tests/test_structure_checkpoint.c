@@ -1,0 +1,362 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* test_structure_checkpoint.c — Check suite for fricreg_structure_save / _restore.
+ *
+ * Where the numbers come from: an uninterrupted run to T2 is the reference. The same set-up run
+ * to T1, saved, freed, and restored into a new structure set up the same way, then run to T2,
+ * must agree with it bit for bit (memcmp) in everything a getter shows: u, v, a, the forces,
+ * each contact's dissipation, the energies, the counters, the peaks, the elements' state, the
+ * error estimates and the warnings. T1 = 0.5 is a step time of dt = 0.01 (the rounded 50 dt is
+ * 0.5, and so are 100 dt/2 and 200 dt/4 of the companions), so the uninterrupted run passes
+ * through it. The scene sticks and slips: a load of amplitude 1.1 against bounds 0.35 and 0.5
+ * (the contacts' dissipation grows in both halves, checked), with a Jenkins element that slips
+ * (its dissipation too). A restore into another model fails with FRICREG_EINVAL and leaves the
+ * structure as it was; so does a truncated or corrupted blob. */
+#include <check.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fricreg.h"
+#include "fricreg_structure.h"
+
+#define N 3
+#define MC 2
+
+static const double DT = 0.01, T1 = 0.5, T2 = 1.0;
+
+enum scheme { NEWMARK, HHT, CENTRAL, RK4_FIXED, RKF45_ADAPTIVE };
+
+struct setup {
+    enum scheme scheme;
+    int coupled;  /* a consistent mass: W couples the contacts (the context's dense factor) */
+    int jenkins;  /* a Jenkins element on dof 2 */
+    int estimate; /* enum fricreg_error_estimate */
+    double k22;   /* K(2, 2): another model where it differs */
+};
+
+static fricreg_structure *make(const struct setup *c)
+{
+    double M[N * N] = {1.0, 0.0, 0.0, 0.0, 0.8, 0.0, 0.0, 0.0, 1.3};
+    if (c->coupled) {
+        M[1] = M[3] = 0.1;
+        M[5] = M[7] = 0.07;
+    }
+    double K[N * N] = {40.0, -15.0, 0.0, -15.0, 35.0, -20.0, 0.0, -20.0, c->k22};
+    double J[MC * N] = {1.0, 0.0, 0.0, 0.0, 1.0, -0.5};
+    double mun[MC] = {0.35, 0.5};
+    double p[N] = {1.1, -0.4, 0.7};
+    double g[101];
+    for (size_t k = 0; k < 101; k++)
+        g[k] = sin(7.3 * 0.01 * (double)k) + 0.3 * sin(19.1 * 0.01 * (double)k);
+    fricreg_structure *s = NULL;
+    ck_assert_int_eq(fricreg_structure_create(N, MC, &s), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_mass(s, N, M), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_stiffness(s, N, K), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_rayleigh(s, 0.05, 0.002), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_contacts(s, MC, N, J), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_bounds(s, MC, mun), FRICREG_OK);
+    /* the explicit schemes' step guard: dt times the stick zone's stiffness 2 W_ii mun_i/eps */
+    int explicit_scheme = c->scheme == CENTRAL || c->scheme == RK4_FIXED;
+    double eps = explicit_scheme ? 0.05 : 2e-3;
+    ck_assert_int_eq(fricreg_structure_set_law(s, FRICREG_LAW_QUINN, eps), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_load(s, N, p, 0.0, 0.01, 101, g), FRICREG_OK);
+    if (c->jenkins) {
+        double Je[N] = {0.0, 0.0, 1.0}, kt = 25.0, slip = 0.3;
+        ck_assert_int_eq(fricreg_structure_set_jenkins(s, 1, N, Je, &kt, &slip), FRICREG_OK);
+    }
+    if (c->scheme == HHT)
+        ck_assert_int_eq(fricreg_structure_set_hht(s, -0.1), FRICREG_OK);
+    if (c->scheme == CENTRAL)
+        ck_assert_int_eq(fricreg_structure_set_central_difference(s), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_error_estimate(s, c->estimate), FRICREG_OK);
+    return s;
+}
+
+/* From the structure's time to t_end: one run (the structure's schemes), or run_ode from
+ * sample to sample k dt as fricreg-sim does (GSL's). */
+static void advance(fricreg_structure *s, const struct setup *c, double t_end)
+{
+    if (c->scheme <= CENTRAL) {
+        ck_assert_int_eq(fricreg_structure_run(s, DT, t_end), FRICREG_OK);
+        return;
+    }
+    double t = 0.0;
+    fricreg_structure_get_value(s, FRICREG_SVALUE_TIME, &t);
+    int integ = c->scheme == RK4_FIXED ? FRICREG_INT_RK4 : FRICREG_INT_RKF45;
+    double rtol = c->scheme == RK4_FIXED ? 0.0 : 1e-6;
+    double atol = c->scheme == RK4_FIXED ? 0.0 : FRICREG_ATOL_FROM_EPS;
+    for (int k = 1; (double)k * DT <= t_end * (1.0 + 1e-12); k++) {
+        double t1 = (double)k * DT;
+        if (!(t1 > t))
+            continue;
+        ck_assert_int_eq(fricreg_structure_run_ode(s, integ, t1 - t, rtol, atol, t1), FRICREG_OK);
+        t = t1;
+    }
+}
+
+/* Everything a getter shows, in one array of doubles (the counters and the warnings' codes
+ * as doubles: exact). */
+#define OUT_LEN 128
+
+static size_t outputs(fricreg_structure *s, const struct setup *c, double out[OUT_LEN])
+{
+    size_t k = 0;
+    memset(out, 0, OUT_LEN * sizeof *out);
+    ck_assert_int_eq(fricreg_structure_get_state(s, N, out, out + N, out + 2 * N), FRICREG_OK);
+    k += 3 * N;
+    ck_assert_int_eq(fricreg_structure_get_forces(s, MC, out + k), FRICREG_OK);
+    k += MC;
+    ck_assert_int_eq(fricreg_structure_get_dissipation(s, MC, out + k), FRICREG_OK);
+    k += MC;
+    for (int v = FRICREG_SVALUE_TIME; v <= FRICREG_SVALUE_JENKINS; v++)
+        ck_assert_int_eq(fricreg_structure_get_value(s, v, &out[k++]), FRICREG_OK);
+    for (int st = FRICREG_SSTAT_STEPS; st <= FRICREG_SSTAT_LINE_SEARCH_CUTS; st++) {
+        int64_t x = 0;
+        ck_assert_int_eq(fricreg_structure_get_stat(s, st, &x), FRICREG_OK);
+        out[k++] = (double)x;
+    }
+    ck_assert_int_eq(fricreg_structure_get_peak_displacement(s, N, out + k), FRICREG_OK);
+    k += N;
+    if (c->jenkins) {
+        ck_assert_int_eq(fricreg_structure_get_jenkins_state(s, 1, out + k, out + k + 1,
+                                                             out + k + 2),
+                         FRICREG_OK);
+        k += 3;
+    }
+    if (c->estimate) {
+        ck_assert_int_eq(fricreg_structure_get_peak_displacement_error(s, N, out + k), FRICREG_OK);
+        k += N;
+        ck_assert_int_eq(fricreg_structure_get_dissipation_error(s, MC, out + k), FRICREG_OK);
+        k += MC;
+    }
+    size_t nw = fricreg_structure_warning_count(s);
+    out[k++] = (double)nw;
+    for (size_t w = 0; w < nw; w++) {
+        int code = -1;
+        ck_assert_int_eq(fricreg_structure_get_warning(s, w, &code, NULL, 0), FRICREG_OK);
+        out[k++] = code;
+    }
+    ck_assert_uint_le(k, OUT_LEN);
+    return k;
+}
+
+/* The run to T1 saved (the blob into *len bytes, malloc'd). */
+static unsigned char *saved_at_t1(const struct setup *c, size_t *len, double dissipation[MC])
+{
+    fricreg_structure *s = make(c);
+    advance(s, c, T1);
+    ck_assert_int_eq(fricreg_structure_get_dissipation(s, MC, dissipation), FRICREG_OK);
+    *len = 0;
+    ck_assert_int_eq(fricreg_structure_save(s, NULL, len), FRICREG_OK);
+    ck_assert_uint_gt(*len, 0);
+    unsigned char *blob = malloc(*len);
+    ck_assert_ptr_nonnull(blob);
+    size_t small = *len - 1;
+    ck_assert_int_eq(fricreg_structure_save(s, blob, &small), FRICREG_ESIZE);
+    ck_assert_uint_eq(small, *len);
+    size_t cap = *len + 16;
+    ck_assert_int_eq(fricreg_structure_save(s, blob, &cap), FRICREG_OK);
+    ck_assert_uint_eq(cap, *len);
+    fricreg_structure_free(s);
+    return blob;
+}
+
+static void split_equals_uninterrupted(const struct setup *c)
+{
+    double full[OUT_LEN], split[OUT_LEN], d1[MC];
+    fricreg_structure *s = make(c);
+    advance(s, c, T2);
+    size_t n_full = outputs(s, c, full);
+    fricreg_structure_free(s);
+
+    size_t len = 0;
+    unsigned char *blob = saved_at_t1(c, &len, d1);
+    fricreg_structure *r = make(c);
+    ck_assert_int_eq(fricreg_structure_restore(r, blob, len), FRICREG_OK);
+    double t = 0.0;
+    fricreg_structure_get_value(r, FRICREG_SVALUE_TIME, &t);
+    ck_assert(t == T1);
+    advance(r, c, T2);
+    size_t n_split = outputs(r, c, split);
+    fricreg_structure_free(r);
+    free(blob);
+
+    ck_assert_uint_eq(n_split, n_full);
+    for (size_t k = 0; k < n_full; k++)
+        ck_assert_msg(memcmp(&full[k], &split[k], sizeof(double)) == 0,
+                      "output %zu: %.17g uninterrupted, %.17g split", k, full[k], split[k]);
+    /* stick-slip in both halves: the contacts dissipate before T1 and after it */
+    for (size_t i = 0; i < MC; i++) {
+        ck_assert_double_gt(d1[i], 1e-5);
+        ck_assert_double_gt(full[3 * N + MC + i], d1[i] * (1.0 + 1e-3));
+    }
+}
+
+START_TEST(test_newmark_contacts_jenkins)
+{
+    struct setup c = {NEWMARK, 0, 1, FRICREG_ESTIMATE_TWO_COMPANIONS, 30.0};
+    split_equals_uninterrupted(&c);
+}
+END_TEST
+
+START_TEST(test_hht_contacts_jenkins)
+{
+    struct setup c = {HHT, 0, 1, FRICREG_ESTIMATE_ONE_COMPANION, 30.0};
+    split_equals_uninterrupted(&c);
+}
+END_TEST
+
+START_TEST(test_central_contacts_jenkins)
+{
+    struct setup c = {CENTRAL, 0, 1, FRICREG_ESTIMATE_TWO_COMPANIONS, 30.0};
+    split_equals_uninterrupted(&c);
+}
+END_TEST
+
+/* A consistent mass couples the contacts: the context's warm start and its updated factor. */
+START_TEST(test_newmark_coupled)
+{
+    struct setup c = {NEWMARK, 1, 1, FRICREG_ESTIMATE_OFF, 30.0};
+    split_equals_uninterrupted(&c);
+}
+END_TEST
+
+START_TEST(test_rk4_fixed)
+{
+    struct setup c = {RK4_FIXED, 0, 0, FRICREG_ESTIMATE_TWO_COMPANIONS, 30.0};
+    split_equals_uninterrupted(&c);
+}
+END_TEST
+
+/* GSL's adaptive driver starts anew at each run_ode call: nothing to carry between calls. */
+START_TEST(test_rkf45_adaptive)
+{
+    struct setup c = {RKF45_ADAPTIVE, 0, 0, FRICREG_ESTIMATE_ONE_COMPANION, 30.0};
+    split_equals_uninterrupted(&c);
+}
+END_TEST
+
+/* A failed restore leaves the structure as it was: its outputs bit for bit. */
+static void refused(fricreg_structure *s, const struct setup *c, const void *blob, size_t len,
+                    const char *why)
+{
+    double before[OUT_LEN], after[OUT_LEN];
+    size_t n = outputs(s, c, before);
+    ck_assert_int_eq(fricreg_structure_restore(s, blob, len), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_structure_errcode(s), FRICREG_EINVAL);
+    ck_assert_msg(strstr(fricreg_structure_errmsg(s), why) != NULL, "message: %s",
+                  fricreg_structure_errmsg(s));
+    ck_assert_uint_eq(outputs(s, c, after), n);
+    ck_assert_int_eq(memcmp(before, after, n * sizeof *before), 0);
+}
+
+START_TEST(test_mismatched_model)
+{
+    struct setup c = {NEWMARK, 0, 1, FRICREG_ESTIMATE_OFF, 30.0};
+    double d1[MC];
+    size_t len = 0;
+    unsigned char *blob = saved_at_t1(&c, &len, d1);
+    struct setup other = c;
+    other.k22 = 31.0;
+    fricreg_structure *s = make(&other);
+    advance(s, &other, 0.2); /* a state of its own to keep */
+    refused(s, &other, blob, len, "model");
+    fricreg_structure_free(s);
+    other = c;
+    other.scheme = HHT;
+    s = make(&other);
+    refused(s, &other, blob, len, "alpha");
+    fricreg_structure_free(s);
+    other = c;
+    other.jenkins = 0;
+    s = make(&other);
+    refused(s, &other, blob, len, "elements");
+    fricreg_structure_free(s);
+    fricreg_structure *small = NULL;
+    ck_assert_int_eq(fricreg_structure_create(N - 1, MC, &small), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_restore(small, blob, len), FRICREG_EINVAL);
+    ck_assert_ptr_nonnull(strstr(fricreg_structure_errmsg(small), "ndof = 3"));
+    fricreg_structure_free(small);
+    free(blob);
+}
+END_TEST
+
+START_TEST(test_truncated_corrupted)
+{
+    struct setup c = {NEWMARK, 0, 1, FRICREG_ESTIMATE_TWO_COMPANIONS, 30.0};
+    double d1[MC];
+    size_t len = 0;
+    unsigned char *blob = saved_at_t1(&c, &len, d1);
+    fricreg_structure *s = make(&c);
+    advance(s, &c, 0.2);
+    /* every length short of the whole: the header's, then the length check */
+    for (size_t cut = 0; cut < len; cut += 1 + cut / 7)
+        refused(s, &c, blob, cut, cut < 40 ? "" : "truncated");
+    /* one byte flipped anywhere: the magic, the header's fields or the hash */
+    for (size_t k = 0; k < len; k += 1 + k / 5) {
+        blob[k] ^= 0x5a;
+        refused(s, &c, blob, len, "");
+        blob[k] ^= 0x5a;
+    }
+    ck_assert_int_eq(fricreg_structure_restore(s, NULL, len), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_structure_restore(NULL, blob, len), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_structure_save(s, blob, NULL), FRICREG_ENULL);
+    size_t n = 0;
+    ck_assert_int_eq(fricreg_structure_save(NULL, NULL, &n), FRICREG_ENULL);
+    /* intact, it restores */
+    ck_assert_int_eq(fricreg_structure_restore(s, blob, len), FRICREG_OK);
+    fricreg_structure_free(s);
+    free(blob);
+}
+END_TEST
+
+/* A checkpoint of a structure never stepped restores to the same start. */
+START_TEST(test_before_first_step)
+{
+    struct setup c = {NEWMARK, 1, 1, FRICREG_ESTIMATE_TWO_COMPANIONS, 30.0};
+    double full[OUT_LEN], split[OUT_LEN];
+    fricreg_structure *s = make(&c);
+    size_t len = 0;
+    ck_assert_int_eq(fricreg_structure_save(s, NULL, &len), FRICREG_OK);
+    unsigned char *blob = malloc(len);
+    ck_assert_int_eq(fricreg_structure_save(s, blob, &len), FRICREG_OK);
+    advance(s, &c, T1);
+    size_t n = outputs(s, &c, full);
+    fricreg_structure *r = make(&c);
+    advance(r, &c, 0.2);
+    ck_assert_int_eq(fricreg_structure_restore(r, blob, len), FRICREG_OK);
+    advance(r, &c, T1);
+    ck_assert_uint_eq(outputs(r, &c, split), n);
+    ck_assert_int_eq(memcmp(full, split, n * sizeof *full), 0);
+    fricreg_structure_free(s);
+    fricreg_structure_free(r);
+    free(blob);
+}
+END_TEST
+
+static Suite *checkpoint_suite(void)
+{
+    Suite *s = suite_create("structure_checkpoint");
+    TCase *tc = tcase_create("checkpoint");
+    tcase_add_test(tc, test_newmark_contacts_jenkins);
+    tcase_add_test(tc, test_hht_contacts_jenkins);
+    tcase_add_test(tc, test_central_contacts_jenkins);
+    tcase_add_test(tc, test_newmark_coupled);
+    tcase_add_test(tc, test_rk4_fixed);
+    tcase_add_test(tc, test_rkf45_adaptive);
+    tcase_add_test(tc, test_mismatched_model);
+    tcase_add_test(tc, test_truncated_corrupted);
+    tcase_add_test(tc, test_before_first_step);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+int main(void)
+{
+    SRunner *sr = srunner_create(checkpoint_suite());
+    srunner_run_all(sr, CK_NORMAL);
+    int failed = srunner_ntests_failed(sr);
+    srunner_free(sr);
+    return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
