@@ -336,32 +336,38 @@ END_TEST
  * M = 1e300 keeps the stuck frequency sqrt(2e300/1e300) = 1.41 rad/s within the central
  * difference's bound at dt = 0.1. Each path fails with FRICREG_ENONFINITE naming the element,
  * the state unchanged: the equilibrium at t = 0 (u0 = 1e10), Newmark's Newton on the step's
- * end (v0 = 1e12: u_pred = 1e11), the central difference's explicit forces (the same). A sum
- * that stays finite (1e308 + 0.5e308 = 1.5e308 < DBL_MAX at t = 0, a = -1.5e308/M) still
- * steps, unloading from that sum (on the central difference: Newton's residual 2-norm squares forces, beyond 1e154 it
- * overflows on its own). */
-static fricreg_structure *overflowing(double phi1, double u0, double v0, int central)
+ * end (v0 = 1e12: u_pred = 1e11), the central difference's explicit forces (the same), and
+ * the joint path's Newton (a friction contact of bound 1 beside the element: joint_step.c).
+ * A sum that stays finite (1e308 + 0.5e308 = 1.5e308 < DBL_MAX at t = 0, a = -1.5e308/M)
+ * still steps on every path, unloading from that sum: Newton's merit, a sum of squares of
+ * forces, no longer overflows beyond 1e154 on its own (Newmark's and the joint path's). */
+enum { NEWMARK, CENTRAL, JOINT };
+
+static fricreg_structure *overflowing(double phi1, double u0, double v0, int path)
 {
     fricreg_structure *s = NULL;
-    const double big_m = 1e300, one = 1.0, zero = 0.0;
+    const double big_m = 1e300, one = 1.0, bound = path == JOINT ? 1.0 : 0.0;
     const double k[2] = {1e300, 1e300}, phi[2] = {1e308, phi1};
     ck_assert_int_eq(fricreg_structure_create(1, 1, &s), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_set_mass(s, 1, &big_m), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_set_stiffness(s, 1, &one), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_set_contacts(s, 1, 1, &one), FRICREG_OK);
-    ck_assert_int_eq(fricreg_structure_set_bounds(s, 1, &zero), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_bounds(s, 1, &bound), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_set_iwan(s, 1, 1, &one, 2, k, phi), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_set_initial(s, 1, &u0, &v0), FRICREG_OK);
-    if (central)
+    if (path == CENTRAL)
         ck_assert_int_eq(fricreg_structure_set_central_difference(s), FRICREG_OK);
     return s;
 }
 
 START_TEST(sums_overflow)
 {
-    const double cases[3][3] = {{1e10, 0.0, 0}, {0.0, 1e12, 0}, {0.0, 1e12, 1}};
-    const char *when[3] = {"at t = 0:", "at t = 0.1:", "at t = 0.1:"};
-    for (int c = 0; c < 3; c++) {
+    const double cases[4][3] = {{1e10, 0.0, NEWMARK},
+                                {0.0, 1e12, NEWMARK},
+                                {0.0, 1e12, CENTRAL},
+                                {0.0, 1e12, JOINT}};
+    const char *when[4] = {"at t = 0:", "at t = 0.1:", "at t = 0.1:", "at t = 0.1:"};
+    for (int c = 0; c < 4; c++) {
         fricreg_structure *s = overflowing(1e308, cases[c][0], cases[c][1], (int)cases[c][2]);
         ck_assert_int_eq(fricreg_structure_step(s, 0.1), FRICREG_ENONFINITE);
         ck_assert_int_eq(fricreg_structure_errcode(s), FRICREG_ENONFINITE);
@@ -379,15 +385,21 @@ START_TEST(sums_overflow)
         ck_assert_double_eq(w[1], 0.0);
         fricreg_structure_free(s);
     }
-    fricreg_structure *s = overflowing(0.5e308, 1e10, 0.0, 1);
-    ck_assert_msg(fricreg_structure_step(s, 0.1) == FRICREG_OK, "%s", fricreg_structure_errmsg(s));
-    double f, u, v, a;
-    ck_assert_int_eq(fricreg_structure_get_iwan_state(s, 1, 2, &f, NULL, NULL), FRICREG_OK);
-    ck_assert_int_eq(fricreg_structure_get_state(s, 1, &u, &v, &a), FRICREG_OK);
-    /* both slipped at t = 0, then unload elastically by k (u0 - u1): u1 = u0 - dt^2 a/2 */
-    ck_assert_double_eq_tol(u, 1e10 - 0.005 * 1.5e8, 1.0);
-    ck_assert_double_eq_tol(f, 1.5e308 - 2e300 * (1e10 - u), 1e-9 * 1.5e308);
-    fricreg_structure_free(s);
+    for (int path = NEWMARK; path <= JOINT; path++) {
+        fricreg_structure *s = overflowing(0.5e308, 1e10, 0.0, path);
+        ck_assert_msg(fricreg_structure_step(s, 0.1) == FRICREG_OK, "path %d: %s", path,
+                      fricreg_structure_errmsg(s));
+        double f, u, v, a;
+        ck_assert_int_eq(fricreg_structure_get_iwan_state(s, 1, 2, &f, NULL, NULL), FRICREG_OK);
+        ck_assert_int_eq(fricreg_structure_get_state(s, 1, &u, &v, &a), FRICREG_OK);
+        /* both slipped at t = 0, then unload elastically by k (u0 - u1): u1 = u0 - dt^2 a/2
+         * (the central difference; Newmark's average acceleration takes a quarter of dt^2 at
+         * each end, the same to 1e-5 of the step's travel: k dt^2 / 4M = 0.005) */
+        double tol = path == CENTRAL ? 1.0 : 1e-2 * 0.005 * 1.5e8;
+        ck_assert_msg(fabs(u - (1e10 - 0.005 * 1.5e8)) <= tol, "path %d: u = %.17g", path, u);
+        ck_assert_double_eq_tol(f, 1.5e308 - 2e300 * (1e10 - u), 1e-9 * 1.5e308);
+        fricreg_structure_free(s);
+    }
 }
 END_TEST
 

@@ -631,7 +631,8 @@ int fr_elements_compliance(fricreg_structure *s, int joint)
 double fr_elements_residual(struct fr_elements *e, const double f[], double g[], double *rinf)
 {
     size_t me = e->me, nc = e->nc, nt = (size_t)e->dim * me;
-    double sum = 0.0, big = 0.0;
+    struct fr_sumsq sum = {0.0, 0.0};
+    double big = 0.0;
     for (size_t i = 0; i < me && e->dim == 2; i++) {
         double x[2], gn = e->n0 != NULL ? e->y[nt + i] : 0.0;
         element_2d(e, i, e->y + 2 * i, gn, x, &e->tan[2 * i], &e->tang[2 * i],
@@ -662,12 +663,12 @@ double fr_elements_residual(struct fr_elements *e, const double f[], double g[],
         g[nt + i] = f[nt + i] - fmax(0.0, N);
     }
     for (size_t i = 0; i < nc; i++) {
-        sum += g[i] * g[i];
+        fr_sumsq_add(&sum, g[i]);
         if (!(fabs(g[i]) <= big))
             big = fabs(g[i]);
     }
     *rinf = big;
-    return sqrt(sum);
+    return fr_sumsq_root(&sum);
 }
 
 /* At the forces f[nc]: the coordinates y = q0 - c E f, then fr_elements_residual. */

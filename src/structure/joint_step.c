@@ -145,7 +145,7 @@ static int evaluate(fricreg_structure *s, const double z[], double gc[], double 
         e->y[k] = e->q0[k] + ce * q;
     }
     double phi_e = fr_elements_residual(e, fe, ge, &rinf_e);
-    *phi = sqrt(phi_c * phi_c + phi_e * phi_e);
+    *phi = fr_merit_pair(phi_c, phi_e);
     *rinf = isnan(rinf_e) || rinf_c <= rinf_e ? rinf_e : rinf_c; /* NaN propagates */
     return FRICREG_OK;
 }
@@ -304,8 +304,9 @@ static void iterate(fricreg_structure *s, double tol, int stops, double *phi, do
     struct fr_joint *j = &s->el.joint;
     int done = 0;
     while (*rinf != 0.0 && (done == 0 || *rinf > tol) && *iters < s->newton_max && isfinite(*phi)) {
-        if (direction(s) != FRICREG_OK)
-            break; /* a singular tangent: the step ends on this iterate, a failure counted */
+        if (s->el.overflow != 0 || direction(s) != FRICREG_OK)
+            break; /* an overflowed element (no direction from an infinite tangent) or a
+                    * singular tangent: the step ends on this iterate */
         ++*iters;
         ++done;
         if (!line_search(s, stops, phi, rinf)) {
@@ -353,6 +354,8 @@ static int solve(fricreg_structure *s, double tol, const double guess[], int *co
             return status;
         iterate(s, tol, 0, &phi, &rinf, iters);
     }
+    if (s->el.overflow != 0 && !(rinf <= tol)) /* at the last iterate: its force or tangent */
+        return fr_elements_overflow(s, s->t + s->step_dt);
     if (!isfinite(phi))
         return fr_fail(s, FRICREG_EDIVERGED, "step: the residual at t = %g is not finite",
                        s->t + s->step_dt);

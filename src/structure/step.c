@@ -53,17 +53,18 @@ void fr_structure_spread_norms(fricreg_structure *s, double scale, const gsl_vec
     double *r = s->spread->data;
     const SuiteSparse_long *Jp = s->Jt->p, *Ji = s->Jt->i;
     fr_csc_mult_add(s->Jt, scale, G->data, r);
-    double sum = 0.0, big = 0.0;
+    struct fr_sumsq sum = {0.0, 0.0};
+    double big = 0.0;
     /* Each touched entry once: read and zeroed at its first visit. */
     for (size_t i = 0; i < s->m; i++)
         for (SuiteSparse_long p = Jp[i]; p < Jp[i + 1]; p++) {
             double x = r[Ji[p]];
             r[Ji[p]] = 0.0;
-            sum += x * x;
+            fr_sumsq_add(&sum, x);
             if (!(fabs(x) <= big)) /* NaN propagates */
                 big = fabs(x);
         }
-    *norm2 = sqrt(sum);
+    *norm2 = fr_sumsq_root(&sum);
     *norm_inf = big;
 }
 

@@ -7,6 +7,7 @@
 #ifndef FRICREG_STRUCTURE_INTERNAL_H
 #define FRICREG_STRUCTURE_INTERNAL_H
 
+#include <math.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -254,6 +255,34 @@ void fr_structure_model_changed(fricreg_structure *s);
  * out of memory. */
 int fr_structure_prepare(fricreg_structure *s);
 cholmod_sparse *fr_structure_combine(fricreg_structure *s, double am, double ac, double ak);
+
+/* Newton's merit, a sum of squares of forces, that overflows only where its square root does:
+ * the plain sum (bit for bit the merit's old value) while it is finite, else the sum of the
+ * entries scaled by 2^-600 (exact: a power of two), so that forces beyond 1e154 N still give
+ * a finite merit. NaN propagates. */
+struct fr_sumsq {
+    double sum, scaled;
+};
+
+static inline void fr_sumsq_add(struct fr_sumsq *a, double x)
+{
+    double y = x * 0x1p-600;
+    a->sum += x * x;
+    a->scaled += y * y;
+}
+
+/* The square root of the sum: sqrt(sum), or sqrt(scaled) 2^600 where sum overflowed. */
+static inline double fr_sumsq_root(const struct fr_sumsq *a)
+{
+    return isinf(a->sum) ? sqrt(a->scaled) * 0x1p600 : sqrt(a->sum);
+}
+
+/* sqrt(a^2 + b^2) as sqrt of the sum while that is finite (the old bits), else hypot. */
+static inline double fr_merit_pair(double a, double b)
+{
+    double sum = a * a + b * b;
+    return isinf(sum) ? hypot(a, b) : sqrt(sum);
+}
 
 /* step.c */
 double fr_norm_inf(const gsl_vector *x);
