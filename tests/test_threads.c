@@ -9,7 +9,9 @@
  * friction (both partitions), a 2-D context with Stribeck friction (dense W, then anisotropic
  * blocks: eval and tangent), a structure (Newmark or HHT-alpha, then run_ode with rkf45 or
  * rk4), a simulation (a different system and stepper family per thread: fricreg's rk4, GSL's
- * rkf45, rk4imp, msbdf) and an exact solution; every result and status must equal, bit for
+ * rkf45, rk4imp, msbdf), an exact solution, a harmonic-balance driver (dense or sparse, with
+ * Hill's stability, a monitor, a continuation, the truncation error and a backbone), an Iwan
+ * element and an AFT object; every result and status must equal, bit for
  * bit, the same work done before in one thread, and every status the one expected. Meanwhile a ninth
  * thread provokes GSL_ERRORS errors of its own (Cholesky of an indefinite matrix) and its
  * handler must see every one: a library that switches GSL's process-wide handler off around
@@ -17,6 +19,7 @@
  * handler must still be the program's at the end. Built with -fsanitize=thread by
  * tests/tsan.sh (ctest tsan), which fails on any ThreadSanitizer report. */
 #include <check.h>
+#include <math.h>
 #include <pthread.h>
 #include <stdatomic.h>
 #include <stdlib.h>
@@ -26,15 +29,18 @@
 #include <gsl/gsl_linalg.h>
 
 #include "fricreg_disk_ctx.h"
+#include "fricreg_aft.h"
 #include "fricreg_exact.h"
+#include "fricreg_hb.h"
+#include "fricreg_iwan.h"
 #include "fricreg_sim.h"
 #include "fricreg_stribeck.h"
 #include "fricreg_structure.h"
 
 #define NTHREADS 8
 #define ROUNDS 3
-#define NRESULTS 320
-#define NSTATUS 96
+#define NRESULTS 400
+#define NSTATUS 160
 #define GSL_ERRORS 2000
 
 struct results {
@@ -297,6 +303,89 @@ static void exact_work(int k, struct results *r)
     fricreg_exact_free(ex);
 }
 
+/* The monitor of hb_work: counts its calls (each thread its own counter). */
+static int count_steps(void *user, int64_t iterations, double parameter, double residual)
+{
+    (void)iterations, (void)parameter, (void)residual;
+    ++*(int *)user;
+    return 0;
+}
+
+/* A harmonic-balance driver k: three masses in a chain with two Jenkins elements, H = 3,
+ * dense (even k) or sparse (odd k: K by its upper triangle, KLU's factors kept within each
+ * call), Hill's stability on for k % 4 < 2, a counting monitor: a point solve without a
+ * guess, its displacement and truncation error, a continuation over the first resonance, and
+ * three points of mode 1's backbone. */
+static void hb_work(int k, struct results *r)
+{
+    enum { N = 3, ME = 2, H = 3, NC = 2 * H + 1 };
+    const double M[9] = {1.1, 0, 0, 0, 0.9, 0, 0, 0, 1.25};
+    const double K[9] = {5.3, -2.1, 0, -2.1, 3.7, -1.6, 0, -1.6, 1.6};
+    const int64_t Kp[4] = {0, 1, 3, 5}, Ki[5] = {0, 0, 1, 1, 2};
+    const double Kx[5] = {5.3, -2.1, 3.7, -1.6, 1.6};
+    const double J[6] = {0, 0, 1, -1, 1, 0}, kt[2] = {2.5, 1.4}, mun[2] = {0.3 + 0.01 * k, 0.12};
+    const double pc[3] = {0.8, 0, 0}, ps[3] = {0.25, 0, 0};
+    double q[ME * NC], x[N * NC], rms[N], err[N], omega = 0.0;
+    int steps = 0;
+    fricreg_hb *hb = NULL;
+    expect(r, fricreg_hb_create(N, ME, H, &hb), FRICREG_OK);
+    expect(r, fricreg_hb_set_mass(hb, N, M), FRICREG_OK);
+    if (k % 2)
+        expect(r, fricreg_hb_set_stiffness_csc(hb, N, FRICREG_SPARSE_UPPER, Kp, Ki, Kx),
+               FRICREG_OK);
+    else
+        expect(r, fricreg_hb_set_stiffness(hb, N, K), FRICREG_OK);
+    expect(r, fricreg_hb_set_rayleigh(hb, 0.03, 0.01), FRICREG_OK);
+    expect(r, fricreg_hb_set_elements(hb, ME, N, J, kt, mun), FRICREG_OK);
+    expect(r, fricreg_hb_set_excitation(hb, N, pc, ps), FRICREG_OK);
+    expect(r, fricreg_hb_set_stability(hb, k % 4 < 2), FRICREG_OK);
+    expect(r, fricreg_hb_set_monitor(hb, count_steps, &steps), FRICREG_OK);
+    expect(r, fricreg_hb_solve(hb, 1.2 + 0.02 * k, ME * NC, NULL, q), FRICREG_OK);
+    expect(r, fricreg_hb_displacement(hb, N, NC, x), FRICREG_OK);
+    expect(r, fricreg_hb_truncation_error(hb, FRICREG_HB_SOLUTION, N, err, NULL), FRICREG_OK);
+    put_all(r, q, 4), put_all(r, x, 3), put_all(r, err, N);
+    expect(r, fricreg_hb_continue(hb, 1.0, 1.5, ME * NC, NULL), FRICREG_OK);
+    size_t npts = fricreg_hb_points(hb);
+    expect(r, fricreg_hb_point(hb, npts - 1, &omega, N, rms), FRICREG_OK);
+    put(r, (double)npts), put(r, omega), put_all(r, rms, N);
+    expect(r, fricreg_hb_nma(hb, 0, FRICREG_HB_NMA_DAMPING_MODAL, 0.1, 1.0, 3), FRICREG_OK);
+    double a, w, zeta;
+    expect(r, fricreg_hb_nma_point(hb, 2, &a, &w, &zeta, 0, 0, NULL), FRICREG_OK);
+    put(r, w), put(r, zeta), put(r, (double)steps);
+    fricreg_hb_free(hb);
+}
+
+/* The joints' own objects k: a 2-D Iwan element of 4 sliders stepped round a circle (trial,
+ * commit), and an AFT object's exact Jenkins, Iwan and lift-off forces with their Jacobians. */
+static void joint_work(int k, struct results *r)
+{
+    const double ks[4] = {1.0, 2.0, 3.0, 4.0 + k}, phi[4] = {0.1, 0.2, 0.3, 0.4};
+    fricreg_iwan *iw = NULL;
+    expect(r, fricreg_iwan_create(2, 1, 4, &iw), FRICREG_OK);
+    expect(r, fricreg_iwan_set_params(iw, 1, 4, ks, phi), FRICREG_OK);
+    for (int step = 0; step < 40; step++) {
+        double u[2] = {0.3 * cos(0.2 * step), 0.3 * sin(0.2 * step)}, f[2], dfdu[4];
+        expect(r, fricreg_iwan_trial(iw, 1, u, f, dfdu), FRICREG_OK);
+        expect(r, fricreg_iwan_commit(iw), FRICREG_OK);
+        if (step % 10 == 9)
+            put_all(r, f, 2);
+    }
+    fricreg_iwan_free(iw);
+    enum { H = 5, NC = 2 * H + 1 };
+    fricreg_aft *aft = NULL;
+    double u[NC] = {0.01 * k, 0.4, -0.1, 0.05}, g[NC] = {0.2, 0.3}, f[NC], nf[NC];
+    double jac[4 * NC * NC];
+    expect(r, fricreg_aft_create(H, 64, &aft), FRICREG_OK);
+    expect(r, fricreg_aft_jenkins_exact(aft, 2.0, 0.3, NC, u, f, jac), FRICREG_OK);
+    put_all(r, f, 3), put(r, jac[0]);
+    expect(r, fricreg_aft_iwan_exact(aft, 4, ks, phi, NC, u, f, jac), FRICREG_OK);
+    put_all(r, f, 3), put(r, jac[0]);
+    expect(r, fricreg_aft_jenkins_normal_exact(aft, 2.0, 0.3, 0.5, 1.0, NC, u, g, f, nf, jac),
+           FRICREG_OK);
+    put_all(r, f, 3), put_all(r, nf, 3), put(r, jac[0]);
+    fricreg_aft_free(aft);
+}
+
 static void work(int k, struct results *r)
 {
     memset(r, 0, sizeof *r);
@@ -307,6 +396,8 @@ static void work(int k, struct results *r)
     structure_work(k, r);
     sim_work(k, r);
     exact_work(k, r);
+    hb_work(k, r);
+    joint_work(k, r);
 }
 
 static struct results reference[NTHREADS];
@@ -355,8 +446,10 @@ START_TEST(threads_match_one_thread)
         /* results per thread: context 3 f + 3 Fz_ii + lambda = 7; sparse context 2 x 12 f +
          * 12 df + lambda = 37; Stribeck context 3 f + 2 x 9 tangent + lambda + 3 f = 25; 2-D
          * context 2 x (6 f + 2 x 36 tangent) = 156; structure 2 x (2 u + 2 v + D) + the
-         * residual = 11; simulation 4; exact 7 */
-        ck_assert_int_eq(reference[k].n, 7 + 37 + 25 + 156 + 11 + 4 + 7);
+         * residual = 11; simulation 4; exact 7; harmonic balance 4 q + 3 x + 3 errors +
+         * points + Omega + 3 rms + omega + zeta + monitor's calls = 18; Iwan 4 x 2 f and AFT
+         * 3 x (3 f + jac) + 3 nf = 23 */
+        ck_assert_int_eq(reference[k].n, 7 + 37 + 25 + 156 + 11 + 4 + 7 + 18 + 23);
         ck_assert_msg(reference[k].unexpected == 0, "thread %d: %d unexpected statuses", k,
                       reference[k].unexpected);
     }

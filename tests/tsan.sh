@@ -3,7 +3,8 @@
 # ThreadSanitizer: a third tree with the library and test_threads only, built with
 # -fsanitize=thread (which cannot be combined with ASan, so not in sanitize.sh's tree), and
 # test_threads run in it: 8 threads with their own objects of every kind (1-D and 2-D contexts,
-# Stribeck friction, structures, simulations, exact solutions) beside a thread using GSL with
+# Stribeck friction, structures, simulations, exact solutions, harmonic-balance drivers, Iwan
+# elements, AFT objects) beside a thread using GSL with
 # its own error handler. Any ThreadSanitizer report fails the
 # test: reports go to files, which must stay absent. Exits 77 (ctest: skipped) when the
 # compiler cannot build and run with -fsanitize=thread.
