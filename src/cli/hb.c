@@ -14,14 +14,13 @@
 #include <time.h>
 
 #include "cli.h"
+#include "cli_hb.h"
 #include "fricreg_hb.h"
 #include "hb_deadline.h"
 #include "hb_model.h"
 #include "input_line.h"
 #include "jenkins_input.h"
 
-enum { HB_SUMMARY, HB_FRF };
-enum { HB_IN_OMEGA, HB_IN_LEVEL };
 /* Up to this many dofs the summary's peaks are located (fricreg_hb_peak: 10 to 20 corrector
  * solves each); beyond, the largest stored point's, so that a large model's summary costs no
  * more than its continuation. */
@@ -30,16 +29,6 @@ static const struct cli_word hb_outputs[] = {{"summary", HB_SUMMARY}, {"frf", HB
 static const struct cli_word hb_parameters[] = {{"omega", HB_IN_OMEGA},
                                                 {"level", HB_IN_LEVEL},
                                                 {NULL, 0}};
-
-struct hb_options {
-    struct cli_hb_model_options model; /* the matrices and elements (hb_model.h) */
-    const char *excitation;
-    int harmonics, output, omega_start_given, omega_end_given, newton_max;
-    int max_points, continue_in, omega_given, level_start_given, level_end_given;
-    double omega_start, omega_end, newton_tol, ds, ds_min, ds_max;
-    double omega, level_start, level_end; /* --continue-in level */
-    struct cli_deadline deadline;         /* --max-seconds */
-};
 
 /* The model (hb_model.h: its matrices passed sparse to the driver, nothing densified) and the
  * excitation pc[n], ps[n]. */
@@ -161,7 +150,7 @@ static size_t hb_table(struct hb_options *o, struct cli_option table[])
     return cli_copy_rows(table, opts, sizeof opts / sizeof opts[0]);
 }
 
-static int parse_hb(int argc, char **argv, struct hb_options *o)
+int cli_parse_hb(int argc, char **argv, struct hb_options *o)
 {
     struct cli_option table[CLI_MAX_ROWS];
     size_t n = hb_table(o, table);
@@ -442,7 +431,7 @@ static int run_hb(fricreg_hb *hb, struct hb_options *o, const struct hb_model *m
 int cli_hb(int argc, char **argv, FILE *out)
 {
     struct hb_options o;
-    int status = parse_hb(argc, argv, &o);
+    int status = cli_parse_hb(argc, argv, &o);
     if (status != 0)
         return status;
     struct hb_model md = {0};

@@ -9,25 +9,17 @@
 #include <time.h>
 
 #include "cli.h"
+#include "cli_hb.h"
 #include "fricreg_hb.h"
 #include "hb_deadline.h"
 #include "hb_model.h"
 
-enum { NMA_SUMMARY, NMA_BACKBONE };
 static const struct cli_word nma_outputs[] = {{"summary", NMA_SUMMARY},
                                               {"backbone", NMA_BACKBONE},
                                               {NULL, 0}};
 static const struct cli_word nma_dampings[] = {{"matrix", FRICREG_HB_NMA_DAMPING_MATRIX},
                                                {"modal", FRICREG_HB_NMA_DAMPING_MODAL},
                                                {NULL, 0}};
-
-struct nma_options {
-    struct cli_hb_model_options model; /* the matrices and elements (hb_model.h) */
-    int harmonics, mode, points, linear_damping, output, newton_max;
-    int a0_given, a1_given;
-    double a0, a1, newton_tol;
-    struct cli_deadline deadline; /* --max-seconds */
-};
 
 static int check_options(const struct nma_options *o)
 {
@@ -84,7 +76,7 @@ static size_t nma_table(struct nma_options *o, struct cli_option table[])
     return cli_copy_rows(table, opts, sizeof opts / sizeof opts[0]);
 }
 
-static int parse_nma(int argc, char **argv, struct nma_options *o)
+int cli_parse_nma(int argc, char **argv, struct nma_options *o)
 {
     struct cli_option table[CLI_MAX_ROWS];
     size_t n = nma_table(o, table);
@@ -167,7 +159,7 @@ static int run_nma(fricreg_hb *hb, struct nma_options *o, const struct cli_hb_mo
 int cli_nma(int argc, char **argv, FILE *out)
 {
     struct nma_options o;
-    int status = parse_nma(argc, argv, &o);
+    int status = cli_parse_nma(argc, argv, &o);
     if (status != 0)
         return status;
     struct cli_hb_model md = {0};
