@@ -144,10 +144,13 @@ if [ $check -eq 1 ]; then
 fi
 
 # The programs of quick-tier ctest names: test_<name>, and test_alloc_failure for
-# alloc_failure_<case> (one Check case each).
+# alloc_failure_<case>, test_hb_stability for hb_stability_sweeps (one Check case each).
 programs_of() { # names...
     for t in "$@"; do
-        case $t in alloc_failure_*) t=alloc_failure ;; esac
+        case $t in
+        alloc_failure_*) t=alloc_failure ;;
+        hb_stability_sweeps) t=hb_stability ;;
+        esac
         echo "test_$t"
     done | sort -u | tr '\n' ' '
 }
