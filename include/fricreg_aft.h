@@ -244,8 +244,12 @@ FRICREG_API int fricreg_aft_jenkins_normal_sampled(fricreg_aft *aft, double kt, 
  *  otherwise marched from the maximum of u with the slider at the positive bound until the
  *  state there repeats to the bit (up to 16 periods); a period with no slip, or slips one way
  *  only, takes the centred slider w = (max u + min u)/2 where it keeps |f| <= mu N
- *  throughout (else the marched one).
- *  With kn = 0 and N0 >= 0 it is fricreg_aft_jenkins_exact at mun = mu N0 (to rounding).
+ *  throughout (else the marched one). Where the bound is far below the rounding of u
+ *  (mu (|N0| + kn sum |g_j|) <= 1e-12 kt sum |u_j|: a stick would last below 1e-6 rad and its
+ *  end would be lost in the rounding of u − w), sticks take no time: the slider follows u and
+ *  f = s mu P on the slips, so |f(θ)| <= mu max N still holds (since 1.7).
+ *  With kn = 0 and N0 >= 0 it is fricreg_aft_jenkins_exact at mun = mu N0 (to rounding; to
+ *  1e-6 of mu N0 where the sticks take no time).
  *
  *  The Jacobian is exact (f and N are continuous at the switch points, whose motion adds
  *  nothing): slip, ∂f/∂g_j = s mu kn φ_j(θ); stick after a slip ended at θw,

@@ -76,6 +76,61 @@ START_TEST(constant_preload_is_jenkins_exact)
 }
 END_TEST
 
+/* A bound far below the rounding of u (mu N0 = 1e-200 to 1e-14 against |u| = 1 to 1e10): the
+ * force stays within its bound, |f_0| <= mu max N and |f_h| <= 2 mu max N, and with kn = 0 it
+ * is fricreg_aft_jenkins_exact's to 1e-6 of mu N0 (it was 6e-15 against mu N0 = 1e-200: the
+ * sticks' ends found in the rounding of u − w; the sticks that take no time last below
+ * 1e-6 rad, so that is the most they leave out); with kn > 0 (N0 + kn g, g of 1e-3 N0) the
+ * same bound on mu (N0 + kn sum |g_j|), and the Fourier coefficients of the pure slip
+ * f = mu P sgn(u') (u = 0.5 + cos θ + 0.3 cos 2θ + 0.1 sin 2θ, times 1 to 1e10) to 1e-4 of that
+ * bound (the midpoint rule's error at the jumps). */
+START_TEST(bound_far_below_the_rounding_of_u)
+{
+    fricreg_aft *a = make(H, 0);
+    const double mus[2] = {1.0, 0.3}, n0s[4] = {1e-200, 1e-100, 1e-20, 1e-14};
+    const double bigs[3] = {1.0, 1e5, 1e10};
+    for (int c = 0; c < 24; c++) {
+        double mu = mus[c % 2], n0 = n0s[c / 2 % 4], big = bigs[c / 8];
+        double u[NC] = {0.5 * big, big, 0.0, 0.3 * big, 0.1 * big}, g[NC] = {0}, f[NC], nf[NC],
+               fj[NC];
+        ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 2.0, mu, n0, 0.0, NC, u, g, f, nf,
+                                                          NULL),
+                         FRICREG_OK);
+        ck_assert_int_eq(fricreg_aft_jenkins_exact(a, 2.0, mu * n0, NC, u, fj, NULL), FRICREG_OK);
+        for (int i = 0; i < NC; i++) {
+            ck_assert_msg(fabs(f[i]) <= (i == 0 ? 1.0 : 2.0) * mu * n0, "case %d: f[%d] = %g", c, i,
+                          f[i]);
+            ck_assert_double_eq_tol(f[i], fj[i], 1e-6 * mu * n0);
+        }
+        /* a moving normal force: P = N0 (1 + 1e-3 cos θ) through kn = 1, never open */
+        g[1] = 1e-3 * n0;
+        double pmax = n0 * (1.0 + 1e-3), slip[NC] = {0};
+        ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 2.0, mu, n0, 1.0, NC, u, g, f, nf,
+                                                          NULL),
+                         FRICREG_OK);
+        /* the pure slip's coefficients by the midpoint rule on 2^16 points (f is smooth
+         * between u's four reversals, which the rule's O(1/N) error at the jumps bounds) */
+        const int N = 1 << 16;
+        for (int k = 0; k < N; k++) {
+            double th = 2.0 * PI * (k + 0.5) / N,
+                   du = -sin(th) - 0.6 * sin(2 * th) + 0.2 * cos(2 * th);
+            double fs = (du > 0.0 ? 1.0 : -1.0) * mu * n0 * (1.0 + 1e-3 * cos(th));
+            slip[0] += fs / N;
+            for (int h = 1; h <= H; h++) {
+                slip[2 * h - 1] += 2.0 * fs * cos(h * th) / N;
+                slip[2 * h] += 2.0 * fs * sin(h * th) / N;
+            }
+        }
+        for (int i = 0; i < NC; i++) {
+            ck_assert_msg(fabs(f[i]) <= (i == 0 ? 1.0 : 2.0) * mu * pmax, "case %d: f[%d] = %g", c,
+                          i, f[i]);
+            ck_assert_double_eq_tol(f[i], slip[i], 1e-4 * mu * pmax);
+        }
+    }
+    fricreg_aft_free(a);
+}
+END_TEST
+
 START_TEST(open_throughout_and_no_friction)
 {
     const double u[NC] = {0.3, 1.0, 0.0, 0.0, 0.2, 0.9, -0.1}, g[NC] = {0.0, 0.2, 0.1, 0, 0, 0, 0};
@@ -252,6 +307,7 @@ int main(void)
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, constant_preload_is_jenkins_exact);
     tcase_add_test(tc, open_throughout_and_no_friction);
+    tcase_add_test(tc, bound_far_below_the_rounding_of_u);
     tcase_add_test(tc, slip_starting_on_a_reversal);
     tcase_add_test(tc, jacobian_against_differences);
     tcase_add_test(tc, outputs_may_alias_inputs);

@@ -66,7 +66,17 @@ struct march {
     struct changes v[2], p;    /* v[0]: v+, v[1]: v-; p: the gap */
     double *jac;               /* 2nc x 2nc or NULL */
     int moved;                 /* the period's slips: 1 positive, 2 negative, 3 both */
+    int unresolved;            /* sticks below the rounding of u: they take no time */
 };
+
+/* A stick moves the slider's spring by at most 2 mu max P / kt before it slips, but u(θ) − w
+ * is evaluated to about DBL_EPSILON sum |u_j|: below this fraction of it (a stick of 1e-6 rad
+ * at most) the stick's end would be found in rounding noise and its force, up to
+ * DBL_EPSILON kt sum |u_j|, would exceed the bound mu N by orders of magnitude (the lift-off
+ * AFT returned 6e-15 against mu N0 = 1e-200). Such sticks take no time: the slider follows u
+ * and f = s mu P on the slips, which is the limit (the constant-bound path finds the same:
+ * its onsets fall on the reversals by rounding). */
+#define UNRESOLVED_STICK 1e-12
 
 /* The first sign change of c after th (strictly), with the sign want after it (0: any), as an
  * absolute angle; its index into *k. INFINITY if none. */
@@ -116,6 +126,20 @@ static double onset(struct march *s, int dir, double w, double th, double lim)
         pos = end;
     }
     return INFINITY;
+}
+
+/* The slip that starts at th where sticks take no time: the direction d whose slider velocity
+ * v_d has the sign d on the arc after th (0 if neither: the onsets then decide). */
+static int slip_at_once(const struct march *s, double th)
+{
+    for (int d = 1; d >= -1; d -= 2) {
+        const struct changes *v = &s->v[d > 0 ? 0 : 1];
+        int k = 0;
+        next_change(v, 0, th, &k);
+        if (d * (v->m > 0 ? -v->d[k] : v->sign) > 0)
+            return d;
+    }
+    return 0;
 }
 
 /* A stick piece [al, be] of the slider st. */
@@ -182,6 +206,9 @@ static void period(struct march *s, struct state *st, double th0)
                 return;
             *st = (struct state){STICK, 0, 1, eval(s, s->u, t), t};
             th = t;
+        } else if (st->mode == STICK && s->unresolved && slip_at_once(s, th) != 0) {
+            st->dir = slip_at_once(s, th);
+            st->mode = SLIP;
         } else if (st->mode == STICK) {
             double t_open = fmin(next_change(&s->p, -1, th, &k), the);
             double tp = onset(s, 1, st->w, th, t_open), tm = onset(s, -1, st->w, th, t_open);
@@ -301,7 +328,7 @@ int fr_aft_exact_normal(fricreg_aft *a, const char *fn, double kt, double mu, do
            *gc = uc + nc;
     memcpy(uc, u, nc * sizeof *uc);
     memcpy(gc, g, nc * sizeof *gc);
-    struct march s = {a, kt, mu, n0, kn, uc, gc, gap, cs, {{0}}, {0}, NULL, 0};
+    struct march s = {a, kt, mu, n0, kn, uc, gc, gap, cs, {{0}}, {0}, NULL, 0, 0};
     for (size_t j = 0; j < nc; j++)
         cs[j] = kn * gc[j];
     cs[0] += n0;
@@ -329,6 +356,12 @@ int fr_aft_exact_normal(fricreg_aft *a, const char *fn, double kt, double mu, do
     }
     if (status != FRICREG_OK)
         return status;
+    double psum = 0.0, usum = 0.0;
+    for (size_t j = 0; j < nc; j++) {
+        psum += fabs(gap[j]);
+        usum += fabs(uc[j]);
+    }
+    s.unresolved = mu * psum <= UNRESOLVED_STICK * kt * usum;
     /* nothing fails from here on: the outputs are written directly (u, g were copied) */
     s.jac = jac;
     if (jac != NULL)
