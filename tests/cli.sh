@@ -266,6 +266,11 @@ expect_output '"x": \[-1\.95438123028[34][0-9]*\]' structure --mass $d/M1.mtx --
 expect_output '"x": \[-1\.95438123028[34][0-9]*\]' structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_const.txt --eps 0.01 --t-end 2.1 --integrator central --dt 0.002
 # A record's subnormal sample (a ground acceleration of 1e-310 at t = 5, after the run's end)
 # is the number written, as on the command line, not "not finite": the same run.
+# A record whose times are subnormal (0, 1e-310, 2e-310 s): the default eps, 1 % of its peak
+# ground velocity (2e-310 m/s), is below DBL_MIN; the message names the record, not --eps,
+# which was not given.
+printf '0 1\n1e-310 1\n2e-310 1\n' >"$d/ag_subnormal_times.txt"
+expect_usage_error '^fricreg-sim: --ground-accel: the default eps, 1 % of the record.s peak ground velocity, is 2e-312' structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_subnormal_times.txt --t-end 1 --integrator newmark --dt 0.01
 printf '# t a_g\n0 2.41\n2.5 2.41\n5 1e-310\n' >"$d/ag_subnormal.txt"
 expect_output '"x": \[-1\.95438123028[34][0-9]*\]' structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_subnormal.txt --eps 1e-6 --t-end 2.1 --integrator newmark --dt 0.01
 # Its energy balance: input m A |u| = 14.9308862850 J, kinetic m (0.886341 T)^2/2 = 5.49122494 J.

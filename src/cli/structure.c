@@ -221,8 +221,17 @@ static int setup(const struct structure_options *o, const struct structure_input
     if (status != 0)
         return status;
     *eps = o->eps > 0.0 ? o->eps : default_eps(s);
-    if (fricreg_structure_set_law(s, o->law, *eps) != FRICREG_OK)
+    int law_status = fricreg_structure_set_law(s, o->law, *eps);
+    if (law_status != FRICREG_OK && o->eps > 0.0)
         return cli_usage_error("--eps", fricreg_structure_errmsg(s));
+    if (law_status != FRICREG_OK) { /* the default, from the record: name the record */
+        char why[320];
+        snprintf(why, sizeof why,
+                 "the default eps, 1 %% of the record's peak ground velocity, is %g, which the "
+                 "law refuses (%s): check the record's times, or give --eps",
+                 *eps, fricreg_structure_errmsg(s));
+        return cli_usage_error("--ground-accel", why);
+    }
     /* The library's error estimate (companions at eps / 2 and eps / 4 along dt, or an adaptive
      * run's tolerances; one with --error-estimate one): the summary's only, a trajectory has
      * no place for it. */
