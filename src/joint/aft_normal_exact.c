@@ -339,9 +339,14 @@ int fr_aft_exact_normal(fricreg_aft *a, const char *fn, double kt, double mu, do
     double thmax = 0.0, thmin = 0.0;
     int open_throughout = s.p.m == 0 && s.p.sign <= 0, slides = mu > 0.0 && !open_throughout;
     if (status == FRICREG_OK && slides) {
+        /* kt v_± / 64 = (kt u' ∓ mu kn g') / 64, whose sign changes are v_±'s: every product
+         * stays finite under the input checks (8 kt sum |u_j| and 8 (1 + mu) kn sum |g_j|
+         * finite; h <= 40), where h g_h mu kn / kt overflowed for g_h near DBL_MAX with a
+         * subnormal kn, and the slider's velocity came out infinite */
         for (int h = 1; h <= H; h++) {
-            double dub = h * uc[2 * h], dua = -h * uc[2 * h - 1];
-            double dgb = h * gc[2 * h] * mu * kn / kt, dga = -h * gc[2 * h - 1] * mu * kn / kt;
+            double dub = h * (kt * (uc[2 * h] / 64.0)), dua = -h * (kt * (uc[2 * h - 1] / 64.0));
+            double dgb = h * (kn * gc[2 * h] * mu / 64.0),
+                   dga = -h * (kn * gc[2 * h - 1] * mu / 64.0);
             vp[2 * h - 1] = dub - dgb;
             vp[2 * h] = dua - dga;
             vm[2 * h - 1] = dub + dgb;
