@@ -182,10 +182,13 @@ static int check(fricreg_aft *a, const char *fn, int sampled, size_t ns, const d
             return fr_fail(a, FRICREG_ENONFINITE, "%s: u[%zu] = %g", fn, j, u[j]);
         usum += fabs(u[j]);
     }
-    /* the pieces' integrals reach 2 pi kt sum |u[j]| before they cancel to |f| <= mun */
-    if (!isfinite(8.0 * ksum * usum))
+    /* the pieces' integrals reach 2 pi kt sum |u[j]| before they cancel to |f| <= mun, and
+     * u(θ), its range and its derivative's coefficients (h u_h, h <= 40) reach 8 sum |u[j]|
+     * (with a subnormal kt, u near DBL_MAX passed the first and its range overflowed) */
+    if (!isfinite(8.0 * fmax(1.0, ksum) * usum))
         return fr_fail(a, FRICREG_ENONFINITE,
-                       "%s: 8 x stiffness %g x the sum of |u[j]| %g overflows", fn, ksum, usum);
+                       "%s: 8 x max(1, stiffness %g) x the sum of |u[j]| %g overflows", fn, ksum,
+                       usum);
     return FRICREG_OK;
 }
 

@@ -71,11 +71,12 @@ static unsigned allowed(const struct call *c, size_t N)
                 codes |= 1u << FRICREG_EINVAL;
             ksum += fabs(c->k[s]);
         }
-        if (!isfinite(8.0 * ksum * sum_abs(u, n)))
+        if (!isfinite(8.0 * fmax(1.0, ksum) * sum_abs(u, n)))
             codes |= 1u << FRICREG_ENONFINITE;
         return codes;
     }
-    if (!isfinite(c->kt) || !isfinite(c->mu) || !isfinite(8.0 * c->kt * sum_abs(u, n)))
+    if (!isfinite(c->kt) || !isfinite(c->mu) ||
+        !isfinite(8.0 * fmax(1.0, fabs(c->kt)) * sum_abs(u, n)))
         codes |= 1u << FRICREG_ENONFINITE;
     if (!(c->kt > 0.0) || !(c->mu >= 0.0))
         codes |= 1u << FRICREG_EINVAL;
