@@ -93,7 +93,7 @@ enum fricreg_warning {
     FRICREG_WARN_EPS_SMALL = 2,       /**< eps below 1e-9 x the ground's peak velocity */
     FRICREG_WARN_EPS_SPEED = 3,       /**< no contact slid faster than 10 eps in the run */
     FRICREG_WARN_GROUND_PEAK = 4,     /**< ground record's peak outside 0.05 g .. 5 g */
-    FRICREG_WARN_BOUND_SCALE = 5,     /**< sum of mun_i outside 1e-3 .. 10 x the weight */
+    FRICREG_WARN_BOUND_SCALE = 5,     /**< sum of mun_i |J_i| outside 1e-3 .. 10 x the weight */
     FRICREG_WARN_DT_COARSE = 6,       /**< dt above a tenth of the fundamental period */
     FRICREG_WARN_NEWTON_FAILURES = 7, /**< steps whose Newton iteration did not converge */
     FRICREG_WARN_NEWTON_SLOW = 8,     /**< more than 5 Newton iterations per step on average */

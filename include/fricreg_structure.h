@@ -119,6 +119,10 @@ FRICREG_API int fricreg_structure_set_rayleigh(fricreg_structure *s, double a0, 
  *  f_i acts on the structure as J^T f. Copied. Each contact must move (a non-zero row):
  *  W = J M^-1 J^T then has W_ii > 0; redundant contacts (dependent rows) make W singular,
  *  which the friction evaluation reports as FRICREG_ESINGULAR when they stick together.
+ *  A row scaled by c is the same contact with its bound's force on the structure c mun_i
+ *  and its band eps/c in u': any finite scale is taken (W within the double range: see
+ *  fricreg_structure_step), and one far from 1 (J = 1e100 beside mun = 1 N is a bound of
+ *  1e100 N) is judged, bound times |J|, by FRICREG_WARN_BOUND_SCALE.
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if m or ndof is not the structure's;
  *  FRICREG_ENONFINITE; FRICREG_EINVAL if a row is zero; FRICREG_ENOMEM. */
 FRICREG_API int fricreg_structure_set_contacts(fricreg_structure *s, size_t m, size_t ndof,
@@ -1008,10 +1012,13 @@ FRICREG_API size_t fricreg_structure_errmsg_copy(const fricreg_structure *s, cha
  *  - FRICREG_WARN_EPS_SPEED: after a step, no contact's |zdot_i| at a step's end exceeded
  *    10 eps: the law never left its regularized band (the contacts held throughout, or eps,
  *    the excitation or the bounds are in the wrong units).
- *  - FRICREG_WARN_BOUND_SCALE: after a step, the bounds' sum sum_i mun_i outside 1e-3 .. 10
- *    times the structure's weight g 1^T M 1 (1^T M 1 the sum of M's entries: the total mass
- *    once per translational direction). Changed in 1.7: it judged each contact's mun_i W_ii
- *    against 1e-3 g .. 10 g, which flagged every refined mesh of a continuum.
+ *  - FRICREG_WARN_BOUND_SCALE: after a step, the bounds on the structure,
+ *    sum_i mun_i max_k |J_ik| (mun_i for rows of +-1), outside 1e-3 .. 10 times the
+ *    structure's weight g 1^T M 1 (1^T M 1 the sum of M's entries: the total mass once per
+ *    translational direction); the message names the largest contact, its mun_i and |J|.
+ *    Changed in 1.7: it judged each contact's mun_i W_ii against 1e-3 g .. 10 g, which
+ *    flagged every refined mesh of a continuum; J's scale counts since 1.7 too (a row of 1e100
+ *    beside mun = 1 slid as a bound of 1e100 N does, unflagged).
  *  - FRICREG_WARN_RECORD_SHORT: the run's time past the start of the ground or load record
  *    above 10 times the record's duration (n - 1) dt: its time step in ms? Since 1.7.
  *  - FRICREG_WARN_DT_COARSE: after a fixed step (step, run, run_ode's fixed), the longest dt

@@ -315,6 +315,63 @@ START_TEST(refined_mesh_raises_no_bound_scale)
 }
 END_TEST
 
+/* A contact row of J scaled by c is the contact of bound c mun on the structure (J^T f with
+ * |f| <= mun): J = 1e100 beside mun = 1 on M = 1 kg, K = 1 N/m, sliding from v0 = 1 m/s,
+ * breaks the steps as mun = 1e100 beside J = 1 does (1e100 N stops the mass in 1e-100 s: the
+ * steps' accelerations of 1e100 leave no digit of the structure's own forces; measured, both
+ * runs return FRICREG_OK with Newton failing on most steps and an energy residual beyond
+ * 1e100 J against the initial 0.5 J). bound_scale judged mun alone (1 N, 0.102 of the weight
+ * g 1 kg = 9.80665 N: inside 1e-3 .. 10) and flagged only the second (reliability probe of
+ * the structure driver); it now judges mun_i max_k |J_ik|: 1e100 N, 1.02e99 times the weight,
+ * for both. J = 1e100 beside mun = 1e-100 is the contact of 1 N: not flagged, as J = 1 beside
+ * mun = 1. */
+static fricreg_structure *sliding_contact(double J, double mun, size_t *count)
+{
+    const double one = 1.0, u0 = 0.0, v0 = 1.0;
+    fricreg_structure *s = NULL;
+    ck_assert_int_eq(fricreg_structure_create(1, 1, &s), FRICREG_OK);
+    ok(s, fricreg_structure_set_mass(s, 1, &one));
+    ok(s, fricreg_structure_set_stiffness(s, 1, &one));
+    ok(s, fricreg_structure_set_contacts(s, 1, 1, &J));
+    ok(s, fricreg_structure_set_bounds(s, 1, &mun));
+    ok(s, fricreg_structure_set_law(s, FRICREG_LAW_QUINN, 1e-3));
+    ok(s, fricreg_structure_set_initial(s, 1, &u0, &v0));
+    ok(s, fricreg_structure_run(s, 0.01, 1.0));
+    *count = fricreg_structure_warning_count(s);
+    return s;
+}
+
+START_TEST(contact_scale_counts_in_bound_scale)
+{
+    const double big[2][2] = {{1e100, 1.0}, {1.0, 1e100}}; /* {J, mun} */
+    for (int k = 0; k < 2; k++) {
+        size_t count;
+        fricreg_structure *s = sliding_contact(big[k][0], big[k][1], &count);
+        double residual = 0.0, initial = 0.0;
+        ok(s, fricreg_structure_get_value(s, FRICREG_SVALUE_RESIDUAL, &residual));
+        ok(s, fricreg_structure_get_value(s, FRICREG_SVALUE_INITIAL, &initial));
+        ck_assert_double_eq(initial, 0.5);
+        ck_assert(!(fabs(residual) <= initial)); /* the balance lost: more than 100 % */
+        ck_assert(raised(s, count, FRICREG_WARN_ENERGY));
+        ck_assert(raised(s, count, FRICREG_WARN_BOUND_SCALE));
+        const char *want = k == 0 ? "contact 0, mun = 1 N times |J| = 1e+100"
+                                  : "contact 0, mun = 1e+100 N times |J| = 1)";
+        int found = 0;
+        for (size_t w = 0; w < count; w++)
+            found |= strstr(fricreg_structure_warning_message(s, w), want) != NULL;
+        ck_assert_msg(found, "no warning names %s", want);
+        fricreg_structure_free(s);
+    }
+    const double fine[2][2] = {{1.0, 1.0}, {1e100, 1e-100}}; /* the contact of 1 N */
+    for (int k = 0; k < 2; k++) {
+        size_t count;
+        fricreg_structure *s = sliding_contact(fine[k][0], fine[k][1], &count);
+        ck_assert(!raised(s, count, FRICREG_WARN_BOUND_SCALE));
+        fricreg_structure_free(s);
+    }
+}
+END_TEST
+
 /* A fixed-free chain of NC unit masses and springs k, beyond the dense eigen-solve's 2048
  * dofs: omega_1 = 2 sqrt(k/m) sin(pi/(2(2 NC + 1))) in closed form, found at every size (by
  * inverse iteration on K's factor). dt at 0.09 and 0.11 of the period: only the second warns,
@@ -462,6 +519,7 @@ int main(void)
     tcase_add_test(tc, warnings_change_nothing);
     tcase_add_test(tc, observer_sees_the_list_as_judged);
     tcase_add_test(tc, refined_mesh_raises_no_bound_scale);
+    tcase_add_test(tc, contact_scale_counts_in_bound_scale);
     tcase_add_test(tc, fundamental_period_at_every_size);
     tcase_add_test(tc, fundamental_period_of_close_modes);
     tcase_add_test(tc, record_in_ms_raises_record_short);

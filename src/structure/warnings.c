@@ -26,7 +26,7 @@
 #define EPS_SPEED_RATIO 10.0
 /* A run this many times its record's duration past the record's start: the record in ms? */
 #define RECORD_RUN_RATIO 10.0
-/* The bounds together against the structure's weight, sum_i mun_i / (g 1^T M 1). */
+/* The bounds together against the structure's weight, sum_i mun_i max_k |J_ik| / (g 1^T M 1). */
 #define BOUND_ACCEL_LO (1e-3 * G_STANDARD)
 #define BOUND_ACCEL_HI (10.0 * G_STANDARD)
 /* dt against the fundamental period 2 pi/omega_1: at least 10 steps per period (average
@@ -197,24 +197,46 @@ static double mass_sum(const fricreg_structure *s)
     return sum;
 }
 
+/* Row i's largest |J_ik|: the contact's bound acts on the structure as J^T f, up to
+ * mun_i max_k |J_ik| on one degree of freedom. */
+static double row_scale(const fricreg_structure *s, size_t i)
+{
+    const SuiteSparse_long *Jp = s->Jt->p;
+    const double *Jx = s->Jt->x;
+    double big = 0.0;
+    for (SuiteSparse_long p = Jp[i]; p < Jp[i + 1]; p++)
+        big = fmax(big, fabs(Jx[p]));
+    return big;
+}
+
 /* The bounds are judged together against the weight, not one by one against a node's own
  * effective mass 1/W_ii: on a continuum that mass shrinks as the mesh is refined while the
- * bound stays what the contact carries, and every refined mesh in correct units was flagged. */
+ * bound stays what the contact carries, and every refined mesh in correct units was flagged.
+ * Each bound counts as the force it puts on the structure, mun_i max_k |J_ik| (mun_i for the
+ * usual rows of +-1): a row of J scaled by c is the contact of bound c mun_i, and J = 1e100
+ * beside mun = 1 broke the steps as mun = 1e100 does (a 100 % energy residual) unflagged. */
 static void check_bounds(fricreg_structure *s)
 {
     if (!s->prepared)
         return;
-    double bounds = 0.0, mass = mass_sum(s);
-    for (size_t i = 0; i < s->m; i++)
-        bounds += s->mun[i];
+    double bounds = 0.0, mass = mass_sum(s), largest = -1.0;
+    size_t at = 0;
+    for (size_t i = 0; i < s->m; i++) {
+        double bound = s->mun[i] * row_scale(s, i);
+        bounds += bound;
+        if (bound > largest) {
+            largest = bound;
+            at = i;
+        }
+    }
     double accel = bounds / mass; /* the acceleration the bounds give the whole mass */
     if (!(bounds > 0.0) || !(mass > 0.0) || (accel >= BOUND_ACCEL_LO && accel <= BOUND_ACCEL_HI))
         return;
     fr_warn(&s->warnings, FRICREG_WARN_BOUND_SCALE,
-            "the bounds sum to %.4g N, %.3g times the structure's weight g 1^T M 1 = %.4g N "
-            "(1^T M 1 = %.4g kg, M's entries summed), outside 1e-3 to 10: are mun in N and M in "
-            "kg?",
-            bounds, accel / G_STANDARD, G_STANDARD * mass, mass);
+            "the bounds mun_i max_k |J_ik| sum to %.4g N, %.3g times the weight g 1^T M 1 = "
+            "%.4g N, outside 1e-3 to 10 (largest: contact %zu, mun = %.4g N times |J| = %.4g): "
+            "are mun in N, M in kg, J dimensionless?",
+            bounds, accel / G_STANDARD, G_STANDARD * mass, at, s->mun[at], row_scale(s, at));
 }
 
 /* A run far past the end of its ground or load record: the record's time step is likely in ms
