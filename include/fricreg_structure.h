@@ -562,7 +562,9 @@ enum fricreg_structure_value {
  *  pivoted QR of I + (1 + alpha) beta dt^2 diag(tangent) E per iteration and a line search
  *  halving the direction until the residual's 2-norm decreases (fricreg_structure_set_newton's
  *  tolerance on max |fe - F(q)| times the step's force scale, its iterations counted with the
- *  contacts'). The
+ *  contacts'). The forces the step ends on, which act on the structure and the getters report,
+ *  are Newton's (within that tolerance of kt (q - w)) held to the bound: |fe_i| <= mun_i (with
+ *  a normal law mu N_i, N_i >= 0; a 2-D element's radially) to rounding (since 1.7). The
  *  central difference evaluates them at the explicit displacement u(t + dt), its step guard
  *  reading the largest frequency of M^-1 (K + J_e^T diag(kt) J_e) (all elements sticking).
  *  fricreg_structure_run_ode refuses elements (FRICREG_EINVAL).
@@ -668,7 +670,8 @@ FRICREG_API int fricreg_structure_set_jenkins_2d_csr(fricreg_structure *s, size_
                                                      const double kt[], const double mun[]);
 
 /** Copy the 2-D Jenkins elements' state (fricreg_structure_set_jenkins_2d, _2d_normal) at the
- *  current time: their forces f[2 me] (force units, f_i = kt_i (q_i - w_i) with |f_i| <= mun_i,
+ *  current time: their forces f[2 me] (force units, f_i = kt_i (q_i - w_i) to Newton's
+ *  tolerance, |f_i| <= mun_i (mu N_i under the normal law) to rounding,
  *  element i's (x, y) at f[2i], f[2i + 1] as the rows of J_e; -J_e^T f on the structure; 0
  *  before the first step), the committed slider positions w[2 me] (the units of q, laid out as
  *  f) and the energy each has dissipated since set_initial (or since set_jenkins_2d) D[me]

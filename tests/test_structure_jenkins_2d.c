@@ -250,6 +250,59 @@ START_TEST(standalone_at_the_structures_displacements)
 }
 END_TEST
 
+/* Newton stops within its tolerance of the radial return's force, which is on the circle while
+ * the element slips: its iterate lies on the tangent and so outside the disk (by 1e-9 relative
+ * here, at any tolerance from 1e-2 to 1e-8: one Newton step is taken). The force the structure
+ * feels and reports is held to the bound, |f| <= mun (resp. mu N, N from get_normal_forces)
+ * to rounding, at every step of a slipping run with a loose tolerance: Newmark and the joint
+ * step, the 2-D element and the 3-D contact. */
+START_TEST(slipping_force_within_its_bound)
+{
+    const double M[4] = {1.0, 0.0, 0.0, 1.2}, K[4] = {2.0, 0.3, 0.3, 1.5}, J0[2] = {1.0, -1.0},
+                 p[2] = {0.9, 0.6}, J[4] = {1.0, 0.0, 0.0, 1.0}, Jn[2] = {0.0, 0.5}, kt = 3.0,
+                 mun = 0.3, n0 = 1.0, kn = 5.0, eps = 2.220446049250313e-16;
+    const double omega = 1.3, dt = 0.02;
+    const int nsteps = 3000;
+    for (int scheme = 0; scheme < 4; scheme++) { /* bit 0: beside a contact; bit 1: normal law */
+        int normal = scheme >= 2;
+        fricreg_structure *s = make(2, M, K, NULL, J0, scheme % 2 ? 0.05 : 0.0, p, omega, dt,
+                                    nsteps);
+        ck_assert_int_eq(fricreg_structure_set_newton(s, 1e-4, 50), FRICREG_OK);
+        if (normal)
+            ck_assert_int_eq(fricreg_structure_set_jenkins_2d_normal(s, 1, 2, J, Jn, &kt, &mun, &n0,
+                                                                     &kn),
+                             FRICREG_OK);
+        else
+            ck_assert_int_eq(fricreg_structure_set_jenkins_2d(s, 1, 2, J, &kt, &mun), FRICREG_OK);
+        double worst = 0.0;
+        int slipping = 0, separated = 0;
+        for (int k = 1; k <= nsteps; k++) {
+            ck_assert_int_eq(fricreg_structure_step(s, dt), FRICREG_OK);
+            double f[2], N = 1.0;
+            ck_assert_int_eq(fricreg_structure_get_jenkins_2d_state(s, 1, f, NULL, NULL),
+                             FRICREG_OK);
+            if (normal)
+                ck_assert_int_eq(fricreg_structure_get_normal_forces(s, 1, &N), FRICREG_OK);
+            double bound = mun * N, r = hypot(f[0], f[1]);
+            ck_assert(N >= 0.0); /* 0: lifted off, and then f = 0 */
+            ck_assert_msg(r <= bound * (1.0 + 4.0 * eps),
+                          "scheme %d, step %d: |f| = %.17g beyond its bound %.17g by %.2e", scheme,
+                          k, r, bound, r / bound - 1.0);
+            worst = bound > 0.0 ? fmax(worst, r / bound - 1.0) : worst;
+            slipping += bound > 0.0 && r >= bound * (1.0 - 1e-12);
+            separated += N == 0.0;
+        }
+        if (getenv("JENKINS_PRINT"))
+            fprintf(
+                stderr,
+                "bound, scheme %d: %d steps slipping, %d separated, worst |f|/bound - 1 = %.2e\n",
+                scheme, slipping, separated, worst);
+        ck_assert_int_ge(slipping, 100);
+        fricreg_structure_free(s);
+    }
+}
+END_TEST
+
 /* The CSR setter builds the same elements as the dense one; refusals and getters. */
 START_TEST(csr_and_refusals)
 {
@@ -366,6 +419,7 @@ static Suite *suite(void)
     tcase_add_test(tc, one_axis_is_the_1d_element);
     tcase_add_test(tc, circle_closed_form);
     tcase_add_test(tc, standalone_at_the_structures_displacements);
+    tcase_add_test(tc, slipping_force_within_its_bound);
     tcase_add_test(tc, csr_and_refusals);
     tcase_add_test(tc, error_estimate_companion);
     suite_add_tcase(s, tc);

@@ -716,6 +716,28 @@ static int direction(struct fr_elements *e, double c)
     return gsl_linalg_QRPT_svx(&A.matrix, &tau.vector, &perm, &b.vector) == GSL_SUCCESS;
 }
 
+void fr_elements_bound(const struct fr_elements *e, double f[])
+{
+    size_t me = e->me, nt = (size_t)e->dim * me;
+    for (size_t i = 0; i < me; i++) {
+        double bound = 0.0;
+        for (size_t j = i * e->ns; j < (i + 1) * e->ns; j++)
+            bound += e->phi[j];
+        if (e->n0 != NULL) { /* the normal law's range N >= 0, then the bound mu N */
+            if (f[nt + i] < 0.0)
+                f[nt + i] = 0.0;
+            bound *= f[nt + i];
+        }
+        if (e->dim == 1 && fabs(f[i]) > bound)
+            f[i] = copysign(bound, f[i]);
+        double r = e->dim == 2 ? hypot(f[2 * i], f[2 * i + 1]) : 0.0;
+        if (r > bound) { /* radially onto the disk, as the slider's return */
+            f[2 * i] *= bound / r;
+            f[2 * i + 1] *= bound / r;
+        }
+    }
+}
+
 int fr_elements_newmark(fricreg_structure *s, double dt, double scale, gsl_vector *b,
                         int *converged, int *iters)
 {
@@ -772,6 +794,7 @@ int fr_elements_newmark(fricreg_structure *s, double dt, double scale, gsl_vecto
         return fr_fail(s, FRICREG_EDIVERGED, "step: the elements' residual at t = %g is not finite",
                        s->t + dt);
     *converged = rinf <= tol;
+    fr_elements_bound(e, f);
     fr_csc_mult_add(e->Jt, -w, f, b->data);
     return FRICREG_OK;
 }

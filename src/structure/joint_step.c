@@ -376,5 +376,6 @@ int fr_joint_newton(fricreg_structure *s, double tol, const double guess[], int 
     memset(s->stopped, 0, j->m * sizeof *s->stopped);
     memcpy(s->fk->data, j->z, j->m * sizeof *j->z);
     memcpy(e->fe1, j->z + j->m, j->nc * sizeof *e->fe1);
+    fr_elements_bound(e, e->fe1);
     return status;
 }

@@ -392,6 +392,13 @@ int fr_elements_explicit(fricreg_structure *s, const gsl_vector *u1, gsl_vector 
 int fr_elements_newmark(fricreg_structure *s, double dt, double scale, gsl_vector *b,
                         int *converged, int *iters);
 void fr_elements_commit(fricreg_structure *s);
+/* Newton's forces f[nc] onto the elements' bounds: |f_i| <= sum phi_s N_i (N_i = 1 without a
+ * normal law, else f's normal force, first raised to 0 if below), radially for a 2-D element.
+ * Newton stops within tol of the return mapping's F_e(q), which is on the bound while slipping
+ * (a 2-D iterate on the circle's tangent, outside it): the iterate can be beyond the bound.
+ * Projecting onto the convex bound moves it towards F_e(q) (with a normal law, to within the
+ * tolerance of N), and leaves a force within its bound bit for bit. */
+void fr_elements_bound(const struct fr_elements *e, double f[]);
 /* FRICREG_ENONFINITE with a message naming the element whose sums overflowed at the last
  * fr_elements_residual (at time t), or FRICREG_OK if none did. */
 int fr_elements_overflow(fricreg_structure *s, double t);
