@@ -223,7 +223,7 @@ FRICREG_API int fricreg_aft_iwan_sampled(fricreg_aft *aft, size_t ns, const doub
  *  Returns FRICREG_OK; FRICREG_ENULL if aft, u, g, f or nf is NULL; FRICREG_EINVAL if the
  *  object was created with N = 0, kt <= 0, mu < 0 or kn < 0; FRICREG_ESIZE if n is not
  *  2H + 1; FRICREG_ENONFINITE if kt, mu, n0, kn, some u[j] or g[j] is NaN or infinite, or the
- *  scales 8 max(1, kt) sum |u[j]| or 8 (1 + mu)(|n0| + kn sum |g[j]|) overflow. All inputs
+ *  scales 8 max(1, kt) sum |u[j]| or 8 (1 + mu)(|n0| + kn (1 + sum |g[j]|)) overflow. All inputs
  *  are checked before anything is computed or written. Cost O(N H) per period marched for f
  *  and N (up to 16 periods), O(N H log N) with jac (6H FFTs of length N); no allocation.
  *  Measured at H = 40 on a loaded 2-core machine: N = 2^16, 0.07 s, 3.2 s with jac; N = 2^18,

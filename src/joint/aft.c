@@ -251,10 +251,11 @@ static int check_normal(fricreg_aft *a, const char *fn, double mu, double n0, do
             return fr_fail(a, FRICREG_ENONFINITE, "%s: g[%zu] = %g", fn, j, g[j]);
         gsum += fabs(g[j]);
     }
-    /* the normal force reaches |n0| + kn sum |g[j]|, and its Fourier integrals 8 times that */
-    if (!isfinite(8.0 * (1.0 + mu) * (fabs(n0) + kn * gsum)))
+    /* the normal force reaches |n0| + kn sum |g[j]|, and its Fourier integrals 8 times that;
+     * the Jacobian's df/dg and dN/dg reach (1 + mu) kn */
+    if (!isfinite(8.0 * (1.0 + mu) * (fabs(n0) + kn * (1.0 + gsum))))
         return fr_fail(a, FRICREG_ENONFINITE,
-                       "%s: the normal force |n0| + kn x the sum of |g[j]| overflows", fn);
+                       "%s: the normal force |n0| + kn x the sum of |g[j]|, or kn, overflows", fn);
     return FRICREG_OK;
 }
 

@@ -31,15 +31,20 @@ double fr_aft_sample_basis(const fricreg_aft *a, size_t j, size_t n)
     return (j % 2) ? a->ctab[idx] : a->stab[idx];
 }
 
-/* Called with N a power of two (checked at create): GSL has nothing to report. */
+/* Called with N a power of two (checked at create): GSL has nothing to report. The samples
+ * are divided by N before the transform, not its sums after: exact either way (a power of
+ * two), but the sums of N samples near DBL_MAX (a Jacobian column of kn = 1.8e308) overflowed. */
 void fr_aft_sample_coefficients(const fricreg_aft *a, double *x, double *out, size_t stride)
 {
     size_t N = a->N;
+    double scale = 1.0 / (double)N;
+    for (size_t n = 0; n < N; n++)
+        x[n] *= scale;
     gsl_fft_real_radix2_transform(x, 1, N);
-    out[0] = x[0] / (double)N;
+    out[0] = x[0];
     for (int h = 1; h <= a->H; h++) {
-        out[(size_t)(2 * h - 1) * stride] = 2.0 * x[h] / (double)N;
-        out[(size_t)(2 * h) * stride] = -2.0 * x[N - (size_t)h] / (double)N;
+        out[(size_t)(2 * h - 1) * stride] = 2.0 * x[h];
+        out[(size_t)(2 * h) * stride] = -2.0 * x[N - (size_t)h];
     }
 }
 

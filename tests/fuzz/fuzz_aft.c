@@ -86,7 +86,8 @@ static unsigned allowed(const struct call *c, size_t N)
         codes |= 1u << FRICREG_EINVAL;
     if (c->kind == LIFTOFF) {
         if (!isfinite(c->n0) || !isfinite(c->kn) || !fuzz_all_finite(c->g, n) ||
-            !isfinite(8.0 * (1.0 + fabs(c->mu)) * (fabs(c->n0) + fabs(c->kn) * sum_abs(c->g, n))))
+            !isfinite(8.0 * (1.0 + fabs(c->mu)) *
+                      (fabs(c->n0) + fabs(c->kn) * (1.0 + sum_abs(c->g, n)))))
             codes |= 1u << FRICREG_ENONFINITE;
         if (!(c->kn >= 0.0))
             codes |= 1u << FRICREG_EINVAL;
