@@ -131,6 +131,31 @@ START_TEST(bound_far_below_the_rounding_of_u)
 }
 END_TEST
 
+/* A constant load at any scale: kt and mu of 1e-304 and 1e-200 (u of order 1, N0 = 1; kt
+ * (max u - min u) just above 2 mu N0, so that the element slips briefly at each reversal)
+ * give fricreg_aft_jenkins_exact's coefficients to 1e-12 of mu N0, as at scale 1. The margins
+ * there are near DBL_MIN and their product underflowed to -0: the onsets' brackets were taken
+ * for none, the slips lost, and the element returned stuck, 4 % of mu N0 off (fuzz target aft). */
+START_TEST(constant_preload_at_tiny_scales)
+{
+    fricreg_aft *a = make(H, 0);
+    const double scales[3] = {1e-304, 1e-200, 1.0};
+    double u[NC] = {0.0, 0.0, 0.0, 0.0, -5.9454345703125e-09, -1.0, 0.0}, g[NC] = {0};
+    for (int c = 0; c < 3; c++) {
+        double kt = 8.204292331087753 * scales[c], mu = 7.294689145408909 * scales[c];
+        double f[NC], nf[NC], fj[NC];
+        ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, kt, mu, 1.0, 0.0, NC, u, g, f, nf,
+                                                          NULL),
+                         FRICREG_OK);
+        ck_assert_int_eq(fricreg_aft_jenkins_exact(a, kt, mu, NC, u, fj, NULL), FRICREG_OK);
+        for (int i = 0; i < NC; i++)
+            ck_assert_msg(fabs(f[i] - fj[i]) <= 1e-12 * mu, "scale %g: f[%d] = %g, plain %g",
+                          scales[c], i, f[i], fj[i]);
+    }
+    fricreg_aft_free(a);
+}
+END_TEST
+
 START_TEST(open_throughout_and_no_friction)
 {
     const double u[NC] = {0.3, 1.0, 0.0, 0.0, 0.2, 0.9, -0.1}, g[NC] = {0.0, 0.2, 0.1, 0, 0, 0, 0};
@@ -308,6 +333,7 @@ int main(void)
     tcase_add_test(tc, constant_preload_is_jenkins_exact);
     tcase_add_test(tc, open_throughout_and_no_friction);
     tcase_add_test(tc, bound_far_below_the_rounding_of_u);
+    tcase_add_test(tc, constant_preload_at_tiny_scales);
     tcase_add_test(tc, slip_starting_on_a_reversal);
     tcase_add_test(tc, jacobian_against_differences);
     tcase_add_test(tc, outputs_may_alias_inputs);

@@ -166,6 +166,13 @@ static double onset_gap(double th, void *params)
  * 4 log2(2 pi/eps) evaluations); the final bracket into *lo, *hi. The function is finite
  * (inputs checked) and the bracket is checked to straddle 0 with this very function, so GSL
  * has nothing to report to its error handler. */
+/* x and y of opposite signs, by their signs: x y < 0 underflows to -0 for values near DBL_MIN
+ * (a margin of 1e-303 against 1e-304 at kt, mu of 1e-304) and took a bracket for none. */
+static int opposite_signs(double x, double y)
+{
+    return (x < 0.0 && y > 0.0) || (x > 0.0 && y < 0.0);
+}
+
 static double brent_root(fricreg_aft *a, const double *co, double target, double *lo, double *hi)
 {
     struct onset_probe p = {a->H, co, target};
@@ -174,7 +181,7 @@ static double brent_root(fricreg_aft *a, const double *co, double target, double
     /* a bracket decided by values computed another way (the grid's rotated angles) may not
      * straddle 0 here by rounding: an end is then a root to rounding, and GSL, which would
      * call its error handler, is not asked */
-    if (!(flo * fhi < 0.0))
+    if (!opposite_signs(flo, fhi))
         return fabs(flo) <= fabs(fhi) ? *lo : *hi;
     if (gsl_root_fsolver_set(a->brent, &F, *lo, *hi) == GSL_SUCCESS)
         for (int it = 0; it < 100; it++) {
@@ -252,7 +259,7 @@ static int isolate_interval(struct isolation *iso, struct sample p, struct sampl
     double w = q.t - p.t;
     if (keeps_sign(p.g, p.d, q.g, q.d, iso->B1, iso->B2, w))
         return 0;
-    if (p.g * q.g < 0.0 && keeps_sign(p.d, p.dd, q.d, q.dd, iso->B2, iso->B3, w)) {
+    if (opposite_signs(p.g, q.g) && keeps_sign(p.d, p.dd, q.d, q.dd, iso->B2, iso->B3, w)) {
         if (iso->count >= 2 * iso->a->H)
             return -1; /* more sign changes than the degree allows: rounding, not roots */
         double lo = p.t, hi = q.t, th = brent_root(iso->a, iso->co, 0.0, &lo, &hi);
