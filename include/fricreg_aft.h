@@ -252,7 +252,8 @@ FRICREG_API int fricreg_aft_jenkins_normal_sampled(fricreg_aft *aft, double kt, 
  *  throughout (else the marched one). Where the bound is far below the rounding of u
  *  (mu (|N0| + kn sum |g_j|) <= 1e-12 kt sum |u_j|: a stick would last below 1e-6 rad and its
  *  end would be lost in the rounding of u − w), sticks take no time: the slider follows u and
- *  f = s mu P on the slips, so |f(θ)| <= mu max N still holds (since 1.7).
+ *  f = s mu P on the slips, so |f(θ)| <= mu max N still holds; and where that bound
+ *  underflows to 0 (mu (|N0| + kn sum |g_j|) == 0 in double precision), f = 0 (since 1.7).
  *  With kn = 0 and N0 >= 0 it is fricreg_aft_jenkins_exact at mun = mu N0 (to rounding; to
  *  1e-6 of mu N0 where the sticks take no time).
  *

@@ -336,8 +336,17 @@ int fr_aft_exact_normal(fricreg_aft *a, const char *fn, double kt, double mu, do
     for (size_t j = 0; j < nc; j++)
         gap[j] = kn * gc[j];
     gap[0] += n0;
+    double psum = 0.0, usum = 0.0;
+    for (size_t j = 0; j < nc; j++) {
+        psum += fabs(gap[j]);
+        usum += fabs(uc[j]);
+    }
+    /* a bound mu max P that underflows to 0 (mu 1e-270 against P of 1e-323) is 0: f = 0, as
+     * for mu = 0 (the stick and slip decisions on numbers below the subnormals' spacing gave
+     * forces of kt u's order against a bound of 0) */
     double thmax = 0.0, thmin = 0.0;
-    int open_throughout = s.p.m == 0 && s.p.sign <= 0, slides = mu > 0.0 && !open_throughout;
+    int open_throughout = s.p.m == 0 && s.p.sign <= 0;
+    int slides = mu * psum > 0.0 && !open_throughout;
     if (status == FRICREG_OK && slides) {
         /* kt v_± / 64 = (kt u' ∓ mu kn g') / 64, whose sign changes are v_±'s: every product
          * stays finite under the input checks (8 kt sum |u_j| and 8 (1 + mu) kn sum |g_j|
@@ -361,11 +370,6 @@ int fr_aft_exact_normal(fricreg_aft *a, const char *fn, double kt, double mu, do
     }
     if (status != FRICREG_OK)
         return status;
-    double psum = 0.0, usum = 0.0;
-    for (size_t j = 0; j < nc; j++) {
-        psum += fabs(gap[j]);
-        usum += fabs(uc[j]);
-    }
     s.unresolved = mu * psum <= UNRESOLVED_STICK * kt * usum;
     /* nothing fails from here on: the outputs are written directly (u, g were copied) */
     s.jac = jac;
