@@ -370,7 +370,8 @@ int fr_aft_exact_normal(fricreg_aft *a, const char *fn, double kt, double mu, do
     }
     if (status != FRICREG_OK)
         return status;
-    s.unresolved = mu * psum <= UNRESOLVED_STICK * kt * usum;
+    /* kt sum |u_j| first: 1e-12 kt underflowed for a subnormal kt */
+    s.unresolved = mu * psum <= UNRESOLVED_STICK * (kt * usum);
     /* nothing fails from here on: the outputs are written directly (u, g were copied) */
     s.jac = jac;
     if (jac != NULL)
