@@ -138,8 +138,11 @@ FRICREG_API size_t fricreg_aft_samples(const fricreg_aft *aft);
  *  times the sum of |u[j]| overflows; FRICREG_EINVAL if kt <= 0 or mun < 0;
  *  FRICREG_EINTEGRATOR if GSL's polynomial root solver did not converge (30 QR iterations
  *  on one root; GSL then also calls its error handler: not seen on any input so far). All
- *  inputs are checked before anything is computed. Cost O(H^3) for the reversals (one root
- *  solve), O(H^2) per reversal for the rest; no allocation. Since 1.6. */
+ *  inputs are checked before anything is computed. Where mun is far below the rounding of u
+ *  (mun <= 1e-12 kt sum |u[j]|: a stick's end would be lost in the rounding of u), sticks take
+ *  no time: f = ±mun between the reversals, within |f| <= mun (since 1.7). Cost O(H^3) for
+ *  the reversals (one root solve), O(H^2) per reversal for the rest; no allocation. Since
+ *  1.6. */
 FRICREG_API int fricreg_aft_jenkins_exact(fricreg_aft *aft, double kt, double mun, size_t n,
                                           const double u[], double f[], double jac[]);
 

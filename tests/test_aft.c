@@ -91,6 +91,30 @@ START_TEST(full_slip_square_wave)
 }
 END_TEST
 
+/* A bound far below the rounding of u: mun = 5.5e-306 against u with an offset of 2e183 and
+ * a harmonic of 1e93 (kt = 5e-324): the sticks take no time and f is the square wave's,
+ * within |f_0| <= mun, |f_h| <= 2 mun (it was 5e-231, fuzz target aft); and the Iwan element
+ * of two such sliders the sum of theirs. */
+START_TEST(bound_far_below_the_rounding_of_u)
+{
+    fricreg_aft *a = make(4, 0);
+    const double kt = 4.9406564584124654e-324, mun = 5.485e-306;
+    double u[9] = {-2.2573364773858325e+183, 0, 0, 239196.77734375, 239196.77734375, 0, 0,
+                   -1.0429624198832568e+93,  0},
+           f[9], fi[9];
+    ck_assert_int_eq(fricreg_aft_jenkins_exact(a, kt, mun, 9, u, f, NULL), FRICREG_OK);
+    for (int j = 0; j < 9; j++)
+        ck_assert_msg(fabs(f[j]) <= (j == 0 ? 1.0 : 2.0) * mun, "f[%d] = %g", j, f[j]);
+    /* u = -1e93 cos 4θ: u' > 0 where sin 4θ > 0, the square wave mun sgn(sin 4θ), 4 mun/pi on b_4 */
+    ck_assert_double_eq_tol(f[8], 4.0 * mun / PI, 1e-9 * mun);
+    const double k2[2] = {kt, kt}, phi2[2] = {mun, mun};
+    ck_assert_int_eq(fricreg_aft_iwan_exact(a, 2, k2, phi2, 9, u, fi, NULL), FRICREG_OK);
+    for (int j = 0; j < 9; j++)
+        ck_assert_double_eq_tol(fi[j], 2.0 * f[j], 1e-12 * mun);
+    fricreg_aft_free(a);
+}
+END_TEST
+
 START_TEST(full_stick_linear)
 {
     fricreg_aft *a = make(2, 64);
@@ -399,6 +423,7 @@ int main(void)
     TCase *tc = tcase_create("core");
     tcase_add_test(tc, single_harmonic_closed_form);
     tcase_add_test(tc, full_slip_square_wave);
+    tcase_add_test(tc, bound_far_below_the_rounding_of_u);
     tcase_add_test(tc, full_stick_linear);
     tcase_add_test(tc, stick_threshold_continuous);
     tcase_add_test(tc, sampled_converges_at_second_order);

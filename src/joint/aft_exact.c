@@ -469,6 +469,13 @@ void fr_aft_add_stick(fricreg_aft *a, double kt, const double *u, double wv, dou
 }
 
 /* A slip piece [al, be], f = fs constant. */
+/* A stick moves the slider's spring by at most 2 mun / kt, but u(θ) is evaluated to about
+ * DBL_EPSILON sum |u_j|: below this fraction of it a stick's end would be found in rounding
+ * noise and its force, up to DBL_EPSILON kt sum |u_j|, would exceed mun by orders of magnitude
+ * (5e-231 against mun = 5.5e-306 with u of 2e183). Such sticks take no time: f = dir mun
+ * between the reversals (as aft_normal_exact.c's, and the limit). */
+#define UNRESOLVED_STICK 1e-12
+
 static void add_slip(fricreg_aft *a, double fs, double al, double be)
 {
     fr_aft_gram(a, al, be);
@@ -522,10 +529,20 @@ int fr_aft_exact(fricreg_aft *a, const char *fn, size_t ns, const double *k, con
     }
     double thmax = a->rev[imax], thmin = a->rev[imin];
     double umax = trig_eval(a->H, u, thmax, &d), umin = trig_eval(a->H, u, thmin, &d);
+    double usum = 0.0;
+    for (size_t j = 0; j < w; j++)
+        usum += fabs(u[j]);
     for (size_t s = 0; s < ns; s++) {
         double kt = k[s], mun = phi[s], r = mun / kt;
         if (mun == 0.0)
             continue;
+        if (mun <= UNRESOLVED_STICK * (kt * usum)) { /* sticks in the rounding of u: none */
+            for (int i = 0; i < m; i++) {
+                double al = a->rev[i], be = a->rev[(i + 1) % m];
+                add_slip(a, a->rdir[i] * mun, al, be <= al ? be + FR_TWO_PI : be);
+            }
+            continue;
+        }
         if (kt * (umax - umin) <= 2.0 * mun) { /* stuck: the centred slider */
             double wc = 0.5 * (umax + umin);
             a->fout[0] += kt * (u[0] - wc);
