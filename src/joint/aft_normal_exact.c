@@ -74,8 +74,8 @@ struct march {
  * at most) the stick's end would be found in rounding noise and its force, up to
  * DBL_EPSILON kt sum |u_j|, would exceed the bound mu N by orders of magnitude (the lift-off
  * AFT returned 6e-15 against mu N0 = 1e-200). Such sticks take no time: the slider follows u
- * and f = s mu P on the slips, which is the limit (the constant-bound path finds the same:
- * its onsets fall on the reversals by rounding). */
+ * and f = s mu P on the slips, which is the limit (aft_exact.c's constant-bound path takes
+ * the same rule). */
 #define UNRESOLVED_STICK 1e-12
 
 /* The first sign change of c after th (strictly), with the sign want after it (0: any), as an
@@ -349,9 +349,10 @@ int fr_aft_exact_normal(fricreg_aft *a, const char *fn, double kt, double mu, do
     int slides = mu * psum > 0.0 && !open_throughout;
     if (status == FRICREG_OK && slides) {
         /* kt v_± / 64 = (kt u' ∓ mu kn g') / 64, whose sign changes are v_±'s: every product
-         * stays finite under the input checks (8 kt sum |u_j| and 8 (1 + mu) kn sum |g_j|
-         * finite; h <= 40), where h g_h mu kn / kt overflowed for g_h near DBL_MAX with a
-         * subnormal kn, and the slider's velocity came out infinite */
+         * stays finite under the input checks (8 max(1, kt) sum |u_j| and
+         * 8 (1 + mu)(|n0| + kn (1 + sum |g_j|)) finite; h <= 40), where h g_h mu kn / kt
+         * overflowed for g_h near DBL_MAX with a subnormal kn, and the slider's velocity came
+         * out infinite */
         for (int h = 1; h <= H; h++) {
             double dub = h * (kt * (uc[2 * h] / 64.0)), dua = -h * (kt * (uc[2 * h - 1] / 64.0));
             double dgb = h * (kn * gc[2 * h] * mu / 64.0),
