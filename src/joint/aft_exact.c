@@ -469,13 +469,6 @@ void fr_aft_add_stick(fricreg_aft *a, double kt, const double *u, double wv, dou
 }
 
 /* A slip piece [al, be], f = fs constant. */
-/* A stick moves the slider's spring by at most 2 mun / kt, but u(θ) is evaluated to about
- * DBL_EPSILON sum |u_j|: below this fraction of it a stick's end would be found in rounding
- * noise and its force, up to DBL_EPSILON kt sum |u_j|, would exceed mun by orders of magnitude
- * (5e-231 against mun = 5.5e-306 with u of 2e183). Such sticks take no time: f = dir mun
- * between the reversals (as aft_normal_exact.c's, and the limit). */
-#define UNRESOLVED_STICK 1e-12
-
 static void add_slip(fricreg_aft *a, double fs, double al, double be)
 {
     fr_aft_gram(a, al, be);

@@ -123,4 +123,13 @@ double fr_aft_sample_basis(const fricreg_aft *a, size_t j, size_t n);
  * out[i * stride], i = 0 .. 2H: f0 = X_0/N, fa_h = 2 Re X_h/N, fb_h = -2 Im X_h/N. */
 void fr_aft_sample_coefficients(const fricreg_aft *a, double *x, double *out, size_t stride);
 
+/* The exact paths' sticks below the rounding of u. A stick moves the slider's spring by at
+ * most 2 mu N / kt before it slips, but u(θ) − w is evaluated to about DBL_EPSILON sum |u_j|:
+ * where mu max N <= UNRESOLVED_STICK kt sum |u_j| (a stick of 1e-6 rad at most) its end would
+ * be found in rounding noise and its force, up to DBL_EPSILON kt sum |u_j|, would exceed
+ * mu N by orders of magnitude (6e-15 against 1e-200 with lift-off, 5e-231 against 5.5e-306
+ * without). Such sticks take no time: the slider follows u and f = ±mu N between the
+ * reversals, which is the limit. */
+#define UNRESOLVED_STICK 1e-12
+
 #endif

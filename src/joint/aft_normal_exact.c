@@ -69,15 +69,6 @@ struct march {
     int unresolved;            /* sticks below the rounding of u: they take no time */
 };
 
-/* A stick moves the slider's spring by at most 2 mu max P / kt before it slips, but u(θ) − w
- * is evaluated to about DBL_EPSILON sum |u_j|: below this fraction of it (a stick of 1e-6 rad
- * at most) the stick's end would be found in rounding noise and its force, up to
- * DBL_EPSILON kt sum |u_j|, would exceed the bound mu N by orders of magnitude (the lift-off
- * AFT returned 6e-15 against mu N0 = 1e-200). Such sticks take no time: the slider follows u
- * and f = s mu P on the slips, which is the limit (aft_exact.c's constant-bound path takes
- * the same rule). */
-#define UNRESOLVED_STICK 1e-12
-
 /* The first sign change of c after th (strictly), with the sign want after it (0: any), as an
  * absolute angle; its index into *k. INFINITY if none. */
 static double next_change(const struct changes *c, int want, double th, int *k)
