@@ -15,6 +15,7 @@
  * slip ∂f_n/∂u_j = 0 (the 1-D tangent of slider.c); centred, φ_j(θ_m) is replaced by the mean
  * of φ_j at the sampled maximum and minimum. Each column, summed over the sliders, goes
  * through the same FFT as f. */
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -31,20 +32,26 @@ double fr_aft_sample_basis(const fricreg_aft *a, size_t j, size_t n)
     return (j % 2) ? a->ctab[idx] : a->stab[idx];
 }
 
-/* Called with N a power of two (checked at create): GSL has nothing to report. The samples
- * are divided by N before the transform, not its sums after: exact either way (a power of
- * two), but the sums of N samples near DBL_MAX (a Jacobian column of kn = 1.8e308) overflowed. */
+/* Called with N a power of two (checked at create): GSL has nothing to report. The transform's
+ * sums are divided by N after it, except where N samples could overflow them (a Jacobian
+ * column of kn = 1.8e308 did): then the samples are divided before. Exact either way (a power
+ * of two) but in the subnormals, where dividing first would lose the small samples' digits. */
 void fr_aft_sample_coefficients(const fricreg_aft *a, double *x, double *out, size_t stride)
 {
     size_t N = a->N;
-    double scale = 1.0 / (double)N;
+    double big = 0.0, scale = 1.0 / (double)N, after = scale;
     for (size_t n = 0; n < N; n++)
-        x[n] *= scale;
+        big = fmax(big, fabs(x[n]));
+    if (big > 0.25 * DBL_MAX * scale) {
+        for (size_t n = 0; n < N; n++)
+            x[n] *= scale;
+        after = 1.0;
+    }
     gsl_fft_real_radix2_transform(x, 1, N);
-    out[0] = x[0];
+    out[0] = x[0] * after;
     for (int h = 1; h <= a->H; h++) {
-        out[(size_t)(2 * h - 1) * stride] = 2.0 * x[h];
-        out[(size_t)(2 * h) * stride] = -2.0 * x[N - (size_t)h];
+        out[(size_t)(2 * h - 1) * stride] = 2.0 * x[h] * after;
+        out[(size_t)(2 * h) * stride] = -2.0 * x[N - (size_t)h] * after;
     }
 }
 
