@@ -164,10 +164,10 @@ static void add_slip(struct march *s, int dir, double al, double be)
     fr_aft_gram(a, al, be);
     const double *G = a->gram;
     for (size_t i = 0; i < nc; i++) {
-        double v = 0.0;
+        double v = 0.0; /* mu P's integral: mu first, which a subnormal N0 (5e-324) needs */
         for (size_t j = 0; j < nc; j++)
-            v += G[nc * i + j] * s->gap[j];
-        a->fout[i] += fr_aft_weight(i) * dir * s->mu * v;
+            v += G[nc * i + j] * (s->mu * s->gap[j]);
+        a->fout[i] += fr_aft_weight(i) * dir * v;
         if (s->jac != NULL)
             for (size_t j = 0; j < nc; j++)
                 s->jac[2 * nc * i + nc + j] += fr_aft_weight(i) * dir * s->mu * s->kn *
