@@ -156,6 +156,30 @@ START_TEST(constant_preload_at_tiny_scales)
 }
 END_TEST
 
+/* A spring far weaker than its bound: kt of 5e-324 and 1e-300 against mu P up to 1e10, the
+ * contact opening briefly once a period (P = 1e10 (1 + cos θ) - 1e-2 sin 3θ). The element
+ * barely strains, f = kt (u - w) of kt's order, while the slider after a slip stands at
+ * w = u - mu P/kt, beyond the double range: it is carried as the force kt w, and f comes out
+ * finite and within 1e-15 of mu max P (f was not finite; fuzz target aft). */
+START_TEST(spring_far_weaker_than_its_bound)
+{
+    fricreg_aft *a = make(H, 0);
+    const double kts[2] = {5e-324, 1e-300};
+    double u[NC] = {1.0, 1.0, -10.0, 0.0, 0.0, -1.0, 0.0};
+    double g[NC] = {1e10, 1e10, 0.0, 0.0, 0.0, 0.0, -1e-2}, f[NC], nf[NC], jac[4 * NC * NC];
+    for (int c = 0; c < 2; c++) {
+        ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, kts[c], 0.5, 0.0, 1.0, NC, u, g, f,
+                                                          nf, jac),
+                         FRICREG_OK);
+        for (int i = 0; i < NC; i++)
+            ck_assert_msg(fabs(f[i]) <= 1e-15 * 0.5 * 2e10, "kt %g: f[%d] = %g", kts[c], i, f[i]);
+        for (int i = 0; i < 4 * NC * NC; i++)
+            ck_assert_msg(isfinite(jac[i]), "kt %g: jac[%d] = %g", kts[c], i, jac[i]);
+    }
+    fricreg_aft_free(a);
+}
+END_TEST
+
 START_TEST(open_throughout_and_no_friction)
 {
     const double u[NC] = {0.3, 1.0, 0.0, 0.0, 0.2, 0.9, -0.1}, g[NC] = {0.0, 0.2, 0.1, 0, 0, 0, 0};
@@ -334,6 +358,7 @@ int main(void)
     tcase_add_test(tc, open_throughout_and_no_friction);
     tcase_add_test(tc, bound_far_below_the_rounding_of_u);
     tcase_add_test(tc, constant_preload_at_tiny_scales);
+    tcase_add_test(tc, spring_far_weaker_than_its_bound);
     tcase_add_test(tc, slip_starting_on_a_reversal);
     tcase_add_test(tc, jacobian_against_differences);
     tcase_add_test(tc, outputs_may_alias_inputs);

@@ -447,18 +447,18 @@ double fr_aft_weight(size_t i)
     return i == 0 ? 1.0 / FR_TWO_PI : 2.0 / FR_TWO_PI;
 }
 
-/* A stick piece [al, be], f = kt (u − w), the slider stopped at thw. */
-void fr_aft_add_stick(fricreg_aft *a, double kt, const double *u, double wv, double thw, double al,
+/* A stick piece [al, be], f = kt u − kw (kw = kt w), the slider stopped at thw. */
+void fr_aft_add_stick(fricreg_aft *a, double kt, const double *u, double kw, double thw, double al,
                       double be, int want_jac)
 {
     size_t w = a->nc;
     fr_aft_gram(a, al, be);
     const double *G = a->gram;
     for (size_t i = 0; i < w; i++) {
-        double s = G[w * i] * (u[0] - wv);
-        for (size_t j = 1; j < w; j++)
+        double s = 0.0;
+        for (size_t j = 0; j < w; j++)
             s += G[w * i + j] * u[j];
-        a->fout[i] += fr_aft_weight(i) * kt * s;
+        a->fout[i] += fr_aft_weight(i) * (kt * s - G[w * i] * kw);
     }
     if (!want_jac)
         return;
@@ -561,11 +561,11 @@ int fr_aft_exact(fricreg_aft *a, const char *fn, size_t ns, const double *k, con
                 be += FR_TWO_PI;
             double target = wv + dir * r, ub = trig_eval(a->H, u, be, &d), th;
             if (dir * (ub - target) <= 0.0) { /* sticks to the next reversal */
-                fr_aft_add_stick(a, kt, u, wv, thw, al, be, want_jac);
+                fr_aft_add_stick(a, kt, u, kt * wv, thw, al, be, want_jac);
                 continue;
             }
             th = slip_onset(a, u, target, dir, al, be);
-            fr_aft_add_stick(a, kt, u, wv, thw, al, th, want_jac);
+            fr_aft_add_stick(a, kt, u, kt * wv, thw, al, th, want_jac);
             add_slip(a, dir * mun, th, be);
             wv = ub - dir * r;
             thw = be;

@@ -92,9 +92,10 @@ void fr_aft_gram(fricreg_aft *a, double al, double be);
 /* Weight of coefficient i: 1/(2 pi) for the mean, 1/pi for the harmonics. */
 double fr_aft_weight(size_t i);
 
-/* A stick piece [al, be] of f = kt (u - wv), the slider anchored at thw (dw/du_j =
+/* A stick piece [al, be] of f = kt u - kw, the slider w anchored at thw as the force kw = kt w
+ * (finite where w is not: w = u - mu P/kt overflows for a subnormal kt; dw/du_j =
  * phi_j(thw)), added to fout and, when want_jac, to jout (nc x nc, row stride nc). */
-void fr_aft_add_stick(fricreg_aft *a, double kt, const double *u, double wv, double thw, double al,
+void fr_aft_add_stick(fricreg_aft *a, double kt, const double *u, double kw, double thw, double al,
                       double be, int want_jac);
 
 /* Exact AFT of one Jenkins element under normal load with lift-off (aft_normal_exact.c), the

@@ -42,12 +42,13 @@
 
 enum mode { OPEN, STICK, SLIP };
 
-/* The march's state: the mode, the slip direction or the anchor's, the slider, and where it
- * was anchored (a slip's end, or a touchdown when touch is set). */
+/* The march's state: the mode, the slip direction or the anchor's, the slider as the force
+ * kw = kt w (w = u − mu P/kt overflows for a subnormal kt, kt u − mu P does not), and where
+ * it was anchored (a slip's end, or a touchdown when touch is set). */
 struct state {
     enum mode mode;
     int dir, touch;
-    double w, th;
+    double kw, th;
 };
 
 /* A set of sign changes: angles in [0, 2pi), the sign after each, and the sign throughout when
@@ -94,20 +95,20 @@ static double eval(const struct march *s, const double *co, double th)
     return fr_aft_trig_eval(s->a->H, co, th, &d);
 }
 
-/* The margin c_dir = dir kt (u − w) − mu P as coefficients into s->cs. */
-static void margin(struct march *s, int dir, double w)
+/* The margin c_dir = dir (kt u − kw) − mu P as coefficients into s->cs. */
+static void margin(struct march *s, int dir, double kw)
 {
     for (size_t j = 0; j < s->a->nc; j++)
         s->cs[j] = dir * s->kt * s->u[j] - s->mu * s->gap[j];
-    s->cs[0] -= dir * s->kt * w;
+    s->cs[0] -= dir * kw;
 }
 
 /* The first stick→slip onset in direction dir after th and before lim (INFINITY if none): in
  * the arcs of v_dir where c_dir rises, the first whose end has c_dir > 0. */
-static double onset(struct march *s, int dir, double w, double th, double lim)
+static double onset(struct march *s, int dir, double kw, double th, double lim)
 {
     const struct changes *v = &s->v[dir > 0 ? 0 : 1];
-    margin(s, dir, w);
+    margin(s, dir, kw);
     for (double pos = th; pos < lim;) {
         int k = 0;
         double t = next_change(v, 0, pos, &k), end = fmin(t, lim);
@@ -138,7 +139,7 @@ static void add_stick(struct march *s, const struct state *st, double al, double
 {
     fricreg_aft *a = s->a;
     size_t nc = a->nc;
-    fr_aft_add_stick(a, s->kt, s->u, st->w, st->th, al, be, s->jac != NULL);
+    fr_aft_add_stick(a, s->kt, s->u, st->kw, st->th, al, be, s->jac != NULL);
     if (s->jac == NULL)
         return;
     double c;
@@ -195,14 +196,14 @@ static void period(struct march *s, struct state *st, double th0)
             double t = next_change(&s->p, 1, th, &k);
             if (t >= the)
                 return;
-            *st = (struct state){STICK, 0, 1, eval(s, s->u, t), t};
+            *st = (struct state){STICK, 0, 1, s->kt * eval(s, s->u, t), t};
             th = t;
         } else if (st->mode == STICK && s->unresolved && slip_at_once(s, th) != 0) {
             st->dir = slip_at_once(s, th);
             st->mode = SLIP;
         } else if (st->mode == STICK) {
             double t_open = fmin(next_change(&s->p, -1, th, &k), the);
-            double tp = onset(s, 1, st->w, th, t_open), tm = onset(s, -1, st->w, th, t_open);
+            double tp = onset(s, 1, st->kw, th, t_open), tm = onset(s, -1, st->kw, th, t_open);
             double t_slip = fmin(tp, tm), t = fmin(t_open, t_slip);
             if (t > th)
                 add_stick(s, st, th, t);
@@ -229,8 +230,8 @@ static void period(struct march *s, struct state *st, double th0)
             if (t < the && t_open <= t_stop) {
                 st->mode = OPEN;
             } else if (t < the || t_stop == the) {
-                double w = eval(s, s->u, t) - st->dir * s->mu * eval(s, s->gap, t) / s->kt;
-                *st = (struct state){STICK, st->dir, 0, w, t};
+                double kw = s->kt * eval(s, s->u, t) - st->dir * s->mu * eval(s, s->gap, t);
+                *st = (struct state){STICK, st->dir, 0, kw, t};
             }
             th = t;
         }
@@ -271,7 +272,7 @@ static int centred_holds(struct march *s, double wc)
 {
     for (int i = 0; i < 2; i++) {
         int dir = i == 0 ? 1 : -1;
-        margin(s, dir, wc);
+        margin(s, dir, s->kt * wc);
         if (s->v[i].m == 0 && eval(s, s->cs, 0.0) > 0.0)
             return 0;
         for (int k = 0; k < s->v[i].m; k++)
@@ -381,15 +382,15 @@ int fr_aft_exact_normal(fricreg_aft *a, const char *fn, double kt, double mu, do
         for (int k = s.p.m - 1; k >= 0; k--)
             if (s.p.d[k] > 0)
                 t0 = s.p.r[k];
-        struct state st = {STICK, 0, 1, eval(&s, uc, t0), t0};
+        struct state st = {STICK, 0, 1, kt * eval(&s, uc, t0), t0};
         period(&s, &st, t0);
     } else if (slides) {
-        struct state st = {STICK, 1, 0, eval(&s, uc, thmax) - mu * eval(&s, gap, thmax) / kt,
+        struct state st = {STICK, 1, 0, kt * eval(&s, uc, thmax) - mu * eval(&s, gap, thmax),
                            thmax};
         for (int p = 0; p < MAX_PERIODS; p++) {
             struct state st0 = st;
             period(&s, &st, thmax);
-            if (st.mode == st0.mode && st.dir == st0.dir && st.w == st0.w)
+            if (st.mode == st0.mode && st.dir == st0.dir && st.kw == st0.kw)
                 break;
         }
         int constant_u = 1;
