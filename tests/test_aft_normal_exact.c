@@ -168,8 +168,8 @@ START_TEST(spring_far_weaker_than_its_bound)
     double u[NC] = {1.0, 1.0, -10.0, 0.0, 0.0, -1.0, 0.0};
     double g[NC] = {1e10, 1e10, 0.0, 0.0, 0.0, 0.0, -1e-2}, f[NC], nf[NC], jac[4 * NC * NC];
     for (int c = 0; c < 2; c++) {
-        ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, kts[c], 0.5, 0.0, 1.0, NC, u, g, f,
-                                                          nf, jac),
+        ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, kts[c], 0.5, 0.0, 1.0, NC, u, g, f, nf,
+                                                          jac),
                          FRICREG_OK);
         for (int i = 0; i < NC; i++)
             ck_assert_msg(fabs(f[i]) <= 1e-15 * 0.5 * 2e10, "kt %g: f[%d] = %g", kts[c], i, f[i]);

@@ -24,10 +24,10 @@
 #include <math.h>
 #include <string.h>
 
+#include "base/line_search.h"
 #include "disk_ctx_internal.h"
 
-#define ARMIJO 1e-4 /* the fraction of the first-order decrease a step must achieve */
-#define HALVINGS 30
+#define MAX_HALVINGS 29  /* 30 trials, alpha down to 2^-29 */
 #define ACTIVE_ZONE 1e-3 /* the largest zone of the active set, relative to the radius */
 
 /* acc_i = g_i + sum over near-stick j != i of W_ij f_j and the gradient
@@ -263,30 +263,44 @@ static double objective_change(fricreg_disk_ctx *ctx, double *slope)
     return lin + 0.5 * quad;
 }
 
-/* Armijo's rule along the projection arc, alpha = 1, 1/2, ...: on success f = trial, 1. A
- * full step that leaves every contact inside its disk with none on its circle is the
- * unconstrained minimizer on the set, accepted as it is. */
+/* A trial at alpha along the projection arc; accepted by Armijo's rule on the objective's
+ * change, or at once when it is the full step and leaves every contact inside its disk with
+ * none on its circle (the unconstrained minimizer on the set): then f = trial. */
+struct disk_trial {
+    fricreg_disk_ctx *ctx;
+    const struct fr_line_search *ls;
+    int circle;
+};
+
+static int disk_trial(void *user, double alpha, int *accept)
+{
+    struct disk_trial *t = user;
+    fricreg_disk_ctx *ctx = t->ctx;
+    struct fr_disk_coupled *cpl = ctx->cpl;
+    int clipped = project_trial(ctx, alpha);
+    double slope = 0.0, change = 0.0;
+    *accept = alpha == 1.0 && !t->circle && !clipped;
+    if (!*accept) {
+        change = objective_change(ctx, &slope);
+        *accept = fr_armijo_holds(t->ls, change, slope);
+    }
+    if (*accept)
+        for (size_t k = 0; k < ctx->n_near; k++) {
+            size_t i = ctx->near[k];
+            ctx->f[2 * i] = cpl->trial[2 * i];
+            ctx->f[2 * i + 1] = cpl->trial[2 * i + 1];
+        }
+    return FRICREG_OK;
+}
+
+/* Armijo's rule along the projection arc, alpha = 1, 1/2, ...: on success f = trial, 1. */
 static int line_search(fricreg_disk_ctx *ctx, int circle)
 {
-    struct fr_disk_coupled *cpl = ctx->cpl;
-    for (int h = 0; h < HALVINGS; h++) {
-        int clipped = project_trial(ctx, ldexp(1.0, -h));
-        double slope = 0.0, change = 0.0;
-        int accept = h == 0 && !circle && !clipped;
-        if (!accept) {
-            change = objective_change(ctx, &slope);
-            accept = slope < 0.0 && change <= ARMIJO * slope;
-        }
-        if (accept) {
-            for (size_t k = 0; k < ctx->n_near; k++) {
-                size_t i = ctx->near[k];
-                ctx->f[2 * i] = cpl->trial[2 * i];
-                ctx->f[2 * i + 1] = cpl->trial[2 * i + 1];
-            }
-            return 1;
-        }
-    }
-    return 0;
+    struct fr_line_search ls = {FR_ARMIJO, MAX_HALVINGS, NULL};
+    struct disk_trial t = {ctx, &ls, circle};
+    int accepted;
+    fr_line_search(&ls, 1.0, disk_trial, &t, &accepted); /* the trials cannot fail */
+    return accepted;
 }
 
 /* f onto the disks: a warm start (the last evaluation's forces) may lie outside the disks of

@@ -29,6 +29,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/line_search.h"
 #include "hb_internal.h"
 
 /* The step control's nominal values (Allgower & Georg give the form; these were chosen on
@@ -207,42 +208,75 @@ static int tangent_from_matrix(fricreg_hb *hb, const char *fn, double *t)
     return FRICREG_OK;
 }
 
-/* Newton's method on (R) bordered by border^T (y − anchor) = 0 from start into qw, with a
- * backtracking line search on |R|² (Armijo's condition, halving down to 1/1024, as newton.c;
- * past that the full step: the iteration bound ends it): at a kink of the branch, where the
- * stick/slip or contact pattern changes, the plain iteration may cycle. *its the iterations,
- * b->delta and b->kappa the first step's length and the second's ratio to it. On success A
- * holds the bordered matrix at qw, unfactored (tangent_from_matrix). */
+/* The corrector's iterate qw evaluated: R (the border's equation g last) and the bordered
+ * matrix (bordered), the largest |R_j| r against its bound, |R| in norm; converged when both
+ * equations are within their tolerances. */
+struct corrector_iterate {
+    fricreg_hb *hb;
+    const char *fn;
+    const struct branch *b;
+    const double *anchor, *border, *base; /* base: the iterate the direction dy starts from */
+    const struct fr_line_search *ls;
+    double g, r, bound, norm, prev; /* prev: |R| at base */
+    int converged;
+};
+
+static int corrector_evaluate(struct corrector_iterate *c)
+{
+    fricreg_hb *hb = c->hb;
+    size_t nq = hb->nq, ld = nq + 1;
+    int status = bordered(hb, c->fn, c->b, hb->qw, c->border);
+    if (status != FRICREG_OK)
+        return status;
+    c->g = 0.0;
+    c->r = 0.0;
+    for (size_t j = 0; j < ld; j++)
+        c->g += c->border[j] * (hb->qw[j] - c->anchor[j]);
+    hb->R[nq] = c->g;
+    for (size_t j = 0; j < nq; j++)
+        c->r = fmax(c->r, fabs(hb->R[j]));
+    c->bound = hb->tol * fr_hb_scale(hb, hb->qt) / c->b->qs;
+    c->norm = sqrt(dot(hb->R, hb->R, ld));
+    c->converged = c->r <= c->bound && fabs(c->g) <= hb->tol;
+    return FRICREG_OK;
+}
+
+/* A trial base + lambda dy, evaluated into qw; accepted when converged or by Armijo on |R|. */
+static int corrector_trial(void *user, double lambda, int *accept)
+{
+    struct corrector_iterate *c = user;
+    fricreg_hb *hb = c->hb;
+    for (size_t j = 0; j < hb->nq + 1; j++)
+        hb->qw[j] = c->base[j] + lambda * hb->dy[j];
+    int status = corrector_evaluate(c);
+    *accept = status == FRICREG_OK &&
+              (c->converged || fr_armijo_decrease(c->ls, c->prev, c->norm, lambda));
+    return status;
+}
+
+/* Newton's method on (R) bordered by border^T (y − anchor) = 0 from start into qw, with the
+ * backtracking line search on |R| (Armijo's condition, FR_HB_HALVINGS halvings, as newton.c;
+ * past them the shortest trial: the iteration bound ends it): at a kink of the branch, where
+ * the stick/slip or contact pattern changes, the plain iteration may cycle. *its the
+ * iterations, b->delta and b->kappa the first step's length and the second's ratio to it. On
+ * success A holds the bordered matrix at qw, unfactored (tangent_from_matrix). */
 static int corrector(fricreg_hb *hb, const char *fn, struct branch *b, const double *start,
                      const double *anchor, const double *border, int *its)
 {
-    size_t nq = hb->nq, ld = nq + 1;
-    double *base = hb->yl, prev = INFINITY, lambda = 1.0;
+    size_t ld = hb->nq + 1;
+    struct fr_line_search ls = {FR_ARMIJO, FR_HB_HALVINGS, NULL};
+    struct corrector_iterate c = {hb, fn, b, anchor, border, hb->yl, &ls, 0, 0, 0, 0, 0, 0};
     memcpy(hb->qw, start, ld * sizeof(double));
     b->delta = b->kappa = 0.0;
-    for (int it = 0;;) {
-        int status = bordered(hb, fn, b, hb->qw, border);
+    int status = corrector_evaluate(&c);
+    for (int it = 0;; it++) {
         if (status != FRICREG_OK)
             return status;
-        double g = 0.0, r = 0.0;
-        for (size_t j = 0; j < ld; j++)
-            g += border[j] * (hb->qw[j] - anchor[j]);
-        hb->R[nq] = g;
-        for (size_t j = 0; j < nq; j++)
-            r = fmax(r, fabs(hb->R[j]));
-        double bound = hb->tol * fr_hb_scale(hb, hb->qt) / b->qs,
-               norm = sqrt(dot(hb->R, hb->R, ld));
-        if (it >= 1 && r <= bound && fabs(g) <= hb->tol) {
+        if (it >= 1 && c.converged) {
             *its = it;
             return FRICREG_OK;
         }
-        if (it >= 1 && !(norm <= (1.0 - 1e-4 * lambda) * prev) && lambda > 1.0 / 1024) {
-            lambda *= 0.5;
-            for (size_t j = 0; j < ld; j++)
-                hb->qw[j] = base[j] + lambda * hb->dy[j];
-            continue;
-        }
-        status = fr_hb_tick(hb, fn, fr_hb_parameter(hb), fmax(r / bound, fabs(g) / hb->tol));
+        status = fr_hb_tick(hb, fn, fr_hb_parameter(hb), fmax(c.r / c.bound, fabs(c.g) / hb->tol));
         if (status != FRICREG_OK)
             return status;
         if (it == hb->max_iter)
@@ -257,12 +291,10 @@ static int corrector(fricreg_hb *hb, const char *fn, struct branch *b, const dou
             b->delta = step;
         else if (it == 1 && b->delta > 0.0)
             b->kappa = step / b->delta;
-        memcpy(base, hb->qw, ld * sizeof(double));
-        prev = norm;
-        lambda = 1.0;
-        for (size_t j = 0; j < ld; j++)
-            hb->qw[j] += hb->dy[j];
-        it++;
+        memcpy(hb->yl, hb->qw, ld * sizeof(double));
+        c.prev = c.norm;
+        int accepted; /* none: on from the shortest trial, evaluated in qw */
+        status = fr_line_search(&ls, 1.0, corrector_trial, &c, &accepted);
     }
 }
 

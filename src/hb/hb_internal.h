@@ -20,6 +20,13 @@
 #include "fricreg_aft.h"
 #include "fricreg_hb.h"
 
+/* The halvings of one Newton direction in every HB Newton (base/line_search.h), alpha down to
+ * 1/1024, where the structure's steps take 30: each trial costs every element's AFT, and a
+ * direction cut below 1/1024 of its length has stopped helping (a point solve reports the
+ * stall, FRICREG_EWORK; the continuation's corrector goes on from the shortest trial, its
+ * iteration bound ending it). */
+#define FR_HB_HALVINGS 10
+
 struct fr_hb_lu; /* sparse.c: one harmonic's LU factor */
 
 struct fricreg_hb {

@@ -6,6 +6,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "base/line_search.h"
 #include "hb_internal.h"
 
 static double norm2(const double *v, size_t n)
@@ -58,27 +59,46 @@ int fr_hb_guess(fricreg_hb *hb, const char *fn, int stuck)
     return fr_hb_lu_solve(hb, fn, nq, hb->qw, hb->qw);
 }
 
+/* A trial qw + alpha dy into qt and its residual rw; accepted by Armijo on |R| (or at once
+ * when converged), they become qw and R (with fq, jq at it). */
+struct hb_trial {
+    fricreg_hb *hb;
+    const char *fn;
+    const struct fr_line_search *ls;
+    int converged;
+    double r0;
+};
+
+static int hb_trial(void *user, double alpha, int *accept)
+{
+    struct hb_trial *t = user;
+    fricreg_hb *hb = t->hb;
+    size_t nq = hb->nq;
+    for (size_t j = 0; j < nq; j++)
+        hb->qt[j] = hb->qw[j] + alpha * hb->dy[j];
+    int status = fr_hb_residual(hb, t->fn, hb->qt, hb->rw, 1);
+    if (status != FRICREG_OK)
+        return status;
+    *accept = t->converged || fr_armijo_decrease(t->ls, t->r0, norm2(hb->rw, nq), alpha);
+    if (*accept) {
+        memcpy(hb->qw, hb->qt, nq * sizeof(double));
+        memcpy(hb->R, hb->rw, nq * sizeof(double));
+    }
+    return FRICREG_OK;
+}
+
 /* Backtracking from qw along dy: the first of alpha = 1, 1/2, ..., 1/1024 whose residual
  * meets Armijo's condition on |R| becomes qw (with R, fq, jq at it). Converged iterates
  * (|R| within the tolerance already) take the full step: rounding decides there. */
 static int line_search(fricreg_hb *hb, const char *fn, int converged)
 {
-    size_t nq = hb->nq;
-    double r0 = norm2(hb->R, nq);
-    for (double alpha = 1.0; alpha >= 1.0 / 1024; alpha *= 0.5) {
-        for (size_t j = 0; j < nq; j++)
-            hb->qt[j] = hb->qw[j] + alpha * hb->dy[j];
-        int status = fr_hb_residual(hb, fn, hb->qt, hb->rw, 1);
-        if (status != FRICREG_OK)
-            return status;
-        if (converged || norm2(hb->rw, nq) <= (1.0 - 1e-4 * alpha) * r0) {
-            memcpy(hb->qw, hb->qt, nq * sizeof(double));
-            memcpy(hb->R, hb->rw, nq * sizeof(double));
-            return FRICREG_OK;
-        }
-    }
+    struct fr_line_search ls = {FR_ARMIJO, FR_HB_HALVINGS, NULL};
+    struct hb_trial t = {hb, fn, &ls, converged, norm2(hb->R, hb->nq)};
+    int accepted, status = fr_line_search(&ls, 1.0, hb_trial, &t, &accepted);
+    if (status != FRICREG_OK || accepted)
+        return status;
     return fr_fail(hb, FRICREG_EWORK, "%s: Newton's line search found no decrease of |R| = %g", fn,
-                   r0);
+                   t.r0);
 }
 
 int fr_hb_newton(fricreg_hb *hb, const char *fn)

@@ -25,6 +25,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "base/line_search.h"
 #include "nma_internal.h"
 
 void fr_hb_nma_enter(fricreg_hb *hb, struct fr_hb_nma *nma)
@@ -192,30 +193,47 @@ static int step(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma)
     return FRICREG_OK;
 }
 
+/* A trial y + alpha dy into yt, evaluated into Rt; accepted by Armijo on |R| (or at once when
+ * converged), it becomes y. A trial the evaluation refuses (FRICREG_EWORK) is rejected, its
+ * status kept in last for the report. */
+struct nma_trial {
+    fricreg_hb *hb;
+    const char *fn;
+    struct fr_hb_nma *nma;
+    const struct fr_line_search *ls;
+    int converged, last;
+    double r0;
+};
+
+static int nma_trial(void *user, double alpha, int *accept)
+{
+    struct nma_trial *t = user;
+    struct fr_hb_nma *nma = t->nma;
+    size_t nd = nma->nd;
+    for (size_t j = 0; j < nd; j++)
+        nma->yt[j] = nma->y[j] + alpha * nma->dy[j];
+    t->last = evaluate(t->hb, t->fn, nma, nma->yt, nma->Rt, 0);
+    *accept = t->last == FRICREG_OK &&
+              (t->converged || fr_armijo_decrease(t->ls, t->r0, norm2(nma->Rt, nd), alpha));
+    if (*accept)
+        memcpy(nma->y, nma->yt, nd * sizeof(double));
+    return t->last == FRICREG_EWORK ? FRICREG_OK : t->last;
+}
+
 /* Backtracking along dy (Armijo's condition on |R|, as newton.c's); converged iterates take
  * the full step. */
 static int line_search(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, int converged)
 {
-    size_t nd = nma->nd;
-    double r0 = norm2(nma->R, nd);
-    int status = FRICREG_OK;
-    for (double alpha = 1.0; alpha >= 1.0 / 1024; alpha *= 0.5) {
-        for (size_t j = 0; j < nd; j++)
-            nma->yt[j] = nma->y[j] + alpha * nma->dy[j];
-        status = evaluate(hb, fn, nma, nma->yt, nma->Rt, 0);
-        if (status == FRICREG_OK &&
-            (converged || norm2(nma->Rt, nd) <= (1.0 - 1e-4 * alpha) * r0)) {
-            memcpy(nma->y, nma->yt, nd * sizeof(double));
-            return FRICREG_OK;
-        }
-        if (status != FRICREG_OK && status != FRICREG_EWORK)
-            return status;
-    }
-    return status != FRICREG_OK ? status
+    struct fr_line_search ls = {FR_ARMIJO, FR_HB_HALVINGS, NULL};
+    struct nma_trial t = {hb, fn, nma, &ls, converged, FRICREG_OK, norm2(nma->R, nma->nd)};
+    int accepted, status = fr_line_search(&ls, 1.0, nma_trial, &t, &accepted);
+    if (status != FRICREG_OK || accepted)
+        return status;
+    return t.last != FRICREG_OK ? t.last
                                 : fr_fail(hb, FRICREG_EWORK,
                                           "%s: Newton's line search found no decrease of |R| = "
                                           "%g at amplitude %g",
-                                          fn, r0, nma->amplitude);
+                                          fn, t.r0, nma->amplitude);
 }
 
 int fr_hb_nma_newton(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, double a)

@@ -49,14 +49,13 @@
 
 #include <gsl/gsl_linalg.h>
 
+#include "base/line_search.h"
 #include "base/matrix_input.h"
 #include "base/sparse_ops.h"
 #include "joint/slider.h"
 #include "structure_internal.h"
 
 #define MAX_ELEMENTS ((size_t)1 << 26)
-#define ARMIJO 1e-4 /* sufficient decrease of ||G||_2 */
-#define MAX_CUTS 30 /* halvings of one Newton direction */
 
 void fr_elements_free(fricreg_structure *s)
 {
@@ -738,6 +737,32 @@ void fr_elements_bound(const struct fr_elements *e, double f[])
     }
 }
 
+/* A trial f + lambda df into ft and its residual gt; accepted by Armijo on ||G||_2, they
+ * become f's and g's. */
+struct element_trial {
+    struct fr_elements *e;
+    const struct fr_line_search *ls;
+    double c, *f, *phi, *rinf;
+};
+
+static int element_trial(void *user, double lambda, int *accept)
+{
+    struct element_trial *t = user;
+    struct fr_elements *e = t->e;
+    size_t nc = e->nc;
+    for (size_t i = 0; i < nc; i++)
+        e->ft[i] = t->f[i] + lambda * e->df[i];
+    double rinf_t, phi_t = evaluate(e, t->c, e->ft, e->gt, &rinf_t);
+    *accept = fr_armijo_decrease(t->ls, *t->phi, phi_t, lambda);
+    if (*accept) {
+        memcpy(t->f, e->ft, nc * sizeof *t->f);
+        memcpy(e->g, e->gt, nc * sizeof *e->g);
+        *t->phi = phi_t;
+        *t->rinf = rinf_t;
+    }
+    return FRICREG_OK;
+}
+
 int fr_elements_newmark(fricreg_structure *s, double dt, double scale, gsl_vector *b,
                         int *converged, int *iters)
 {
@@ -757,32 +782,20 @@ int fr_elements_newmark(fricreg_structure *s, double dt, double scale, gsl_vecto
         scale = fmax(scale, fabs(e->fe[i]));
     double tol = s->newton_tol * (scale > 0.0 ? scale : 1e-300);
 
-    double *f = e->fe1, rinf, rinf_t;
+    double *f = e->fe1, rinf;
     memcpy(f, e->fe, nc * sizeof *f);
     double phi = evaluate(e, c, f, e->g, &rinf);
+    struct fr_line_search ls = {FR_ARMIJO, FR_STEP_HALVINGS,
+                                &s->stats[FRICREG_SSTAT_LINE_SEARCH_CUTS]};
+    struct element_trial t = {e, &ls, c, f, &phi, &rinf};
     int done = 0;
     while (rinf != 0.0 && (done == 0 || rinf > tol) && *iters < s->newton_max && isfinite(phi)) {
         if (e->overflow != 0 || !direction(e, c)) /* no direction from an infinite tangent */
             break;
         ++*iters;
         ++done;
-        double lambda = 1.0;
-        int accepted = 0;
-        for (int cut = 0; cut <= MAX_CUTS && !accepted; cut++) {
-            for (size_t i = 0; i < nc; i++)
-                e->ft[i] = f[i] + lambda * e->df[i];
-            double phi_t = evaluate(e, c, e->ft, e->gt, &rinf_t);
-            if (phi_t <= (1.0 - ARMIJO * lambda) * phi) {
-                memcpy(f, e->ft, nc * sizeof *f);
-                memcpy(e->g, e->gt, nc * sizeof *e->g);
-                phi = phi_t;
-                rinf = rinf_t;
-                accepted = 1;
-            } else {
-                s->stats[FRICREG_SSTAT_LINE_SEARCH_CUTS]++;
-                lambda *= 0.5;
-            }
-        }
+        int accepted;
+        fr_line_search(&ls, 1.0, element_trial, &t, &accepted); /* the trials cannot fail */
         if (!accepted) {
             phi = evaluate(e, c, f, e->g, &rinf); /* back to f: the best point */
             break;

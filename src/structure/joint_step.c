@@ -33,12 +33,10 @@
 
 #include <gsl/gsl_linalg.h>
 
+#include "base/line_search.h"
 #include "base/sparse_ops.h"
 #include "ctx/ctx_driver.h"
 #include "structure_internal.h"
-
-#define ARMIJO 1e-4 /* sufficient decrease of the merit */
-#define MAX_CUTS 30 /* halvings of one Newton direction */
 
 void fr_joint_free(struct fr_joint *j)
 {
@@ -261,13 +259,41 @@ static int direction(fricreg_structure *s)
     return FRICREG_OK;
 }
 
+/* A trial z + lambda d into zt and its residuals; accepted by Armijo on the merit, they become
+ * z's (every evaluation's by-products are then at z). */
+struct joint_trial {
+    fricreg_structure *s;
+    const struct fr_line_search *ls;
+    double *phi, *rinf;
+};
+
+static int joint_trial(void *user, double lambda, int *accept)
+{
+    struct joint_trial *t = user;
+    struct fr_joint *j = &t->s->el.joint;
+    size_t dim = j->dim;
+    for (size_t i = 0; i < dim; i++)
+        j->zt[i] = j->z[i] + lambda * j->d[i];
+    double phi_t, rinf_t;
+    *accept = evaluate(t->s, j->zt, j->gct, j->get, &phi_t, &rinf_t) == FRICREG_OK &&
+              fr_armijo_decrease(t->ls, *t->phi, phi_t, lambda);
+    if (*accept) {
+        memcpy(j->z, j->zt, dim * sizeof *j->z);
+        memcpy(j->gc, j->gct, j->m * sizeof *j->gc);
+        memcpy(j->ge, j->get, j->nc * sizeof *j->ge);
+        *t->phi = phi_t;
+        *t->rinf = rinf_t;
+    }
+    return FRICREG_OK;
+}
+
 /* Backtracking along d from z (stops: from the contacts' first stop); on success z, its
  * residuals and every evaluation's by-products are at the accepted point. 0 if no cut
  * decreased the merit. */
 static int line_search(fricreg_structure *s, int stops, double *phi, double *rinf)
 {
     struct fr_joint *j = &s->el.joint;
-    size_t m = j->m, nc = j->nc, dim = j->dim;
+    size_t m = j->m, nc = j->nc;
     double lambda = 1.0, c = (1.0 + s->alpha) * s->gamma * s->step_dt;
     if (stops) { /* the velocities' change over the full step, over c */
         fr_cfactor_compliance(&s->step, j->d, j->dzc);
@@ -277,23 +303,12 @@ static int line_search(fricreg_structure *s, int stops, double *phi, double *rin
         lambda = fr_newton_first_stop(m, s->zdot->data, j->dzc, c, fr_ctx_eps(s->ctx), s->mun,
                                       j->fz, s->stopped);
     }
-    for (int cut = 0; cut <= MAX_CUTS; cut++) {
-        for (size_t i = 0; i < dim; i++)
-            j->zt[i] = j->z[i] + lambda * j->d[i];
-        double phi_t, rinf_t;
-        if (evaluate(s, j->zt, j->gct, j->get, &phi_t, &rinf_t) == FRICREG_OK &&
-            phi_t <= (1.0 - ARMIJO * lambda) * *phi) {
-            memcpy(j->z, j->zt, dim * sizeof *j->z);
-            memcpy(j->gc, j->gct, m * sizeof *j->gc);
-            memcpy(j->ge, j->get, nc * sizeof *j->ge);
-            *phi = phi_t;
-            *rinf = rinf_t;
-            return 1;
-        }
-        s->stats[FRICREG_SSTAT_LINE_SEARCH_CUTS]++;
-        lambda *= 0.5;
-    }
-    return 0;
+    struct fr_line_search ls = {FR_ARMIJO, FR_STEP_HALVINGS,
+                                &s->stats[FRICREG_SSTAT_LINE_SEARCH_CUTS]};
+    struct joint_trial t = {s, &ls, phi, rinf};
+    int accepted;
+    fr_line_search(&ls, lambda, joint_trial, &t, &accepted); /* the trials cannot fail */
+    return accepted;
 }
 
 /* Newton from z (evaluated) until rinf <= tol (at least one iteration unless rinf is 0), the

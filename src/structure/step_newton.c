@@ -6,10 +6,8 @@
 
 #include <gsl/gsl_blas.h>
 
+#include "base/line_search.h"
 #include "step_newton.h"
-
-#define ARMIJO 1e-4 /* sufficient decrease of the merit */
-#define MAX_CUTS 30 /* halvings of one Newton direction */
 
 void fr_step_combine(const struct fr_compliance_pair *a, double lambda,
                      const struct fr_compliance_pair *b, struct fr_compliance_pair *p)
@@ -18,6 +16,37 @@ void fr_step_combine(const struct fr_compliance_pair *a, double lambda,
         p->weff->data[i] = a->weff->data[i] + lambda * b->weff->data[i];
         p->w->data[i] = a->w->data[i] + lambda * b->w->data[i];
     }
+}
+
+/* A trial fk + lambda df: its products and residual into ft, at_t, Gt; accepted (search: by
+ * Armijo on the merit; plain: whenever its residual is evaluated), they become the iterate's. */
+struct step_trial {
+    struct fr_step_newton *e;
+    const struct fr_line_search *ls;
+    int search;
+    double *phi, *rinf;
+};
+
+static int step_trial(void *user, double lambda, int *accept)
+{
+    struct step_trial *t = user;
+    struct fr_step_newton *e = t->e;
+    gsl_vector_memcpy(e->ft, e->fk);
+    gsl_blas_daxpy(lambda, e->df, e->ft);
+    fr_step_combine(e->at_k, lambda, e->at_df, e->at_t);
+    double phi_t, rinf_t;
+    *accept = e->residual(e->user, e->ft, e->at_t, e->Gt, &phi_t, &rinf_t) == FRICREG_OK &&
+              (!t->search || fr_armijo_decrease(t->ls, *t->phi, phi_t, lambda));
+    if (*accept) {
+        struct fr_compliance_pair accepted = *e->at_t;
+        *e->at_t = *e->at_k;
+        *e->at_k = accepted;
+        gsl_vector_memcpy(e->fk, e->ft);
+        gsl_vector_memcpy(e->G, e->Gt);
+        *t->phi = phi_t;
+        *t->rinf = rinf_t;
+    }
+    return FRICREG_OK;
 }
 
 /* Backtracking on the merit along df from fk, from the first trial (stops) or the full step;
@@ -29,27 +58,11 @@ static int line_search(struct fr_step_newton *e, int stops, int search, double *
     if (stops)
         lambda = fr_newton_first_stop(e->m, e->zdot->data, e->at_df->weff->data, e->coef, e->eps,
                                       e->mun, e->nm->fz, e->stopped);
-    for (int cut = 0; cut <= (search ? MAX_CUTS : 0); cut++) {
-        gsl_vector_memcpy(e->ft, e->fk);
-        gsl_blas_daxpy(lambda, e->df, e->ft);
-        fr_step_combine(e->at_k, lambda, e->at_df, e->at_t);
-        double phi_t, rinf_t;
-        if (e->residual(e->user, e->ft, e->at_t, e->Gt, &phi_t, &rinf_t) == FRICREG_OK &&
-            (!search || phi_t <= (1.0 - ARMIJO * lambda) * *phi)) {
-            struct fr_compliance_pair accepted = *e->at_t;
-            *e->at_t = *e->at_k;
-            *e->at_k = accepted;
-            gsl_vector_memcpy(e->fk, e->ft);
-            gsl_vector_memcpy(e->G, e->Gt);
-            *phi = phi_t;
-            *rinf = rinf_t;
-            return 1;
-        }
-        if (e->cuts != NULL)
-            ++*e->cuts;
-        lambda *= 0.5;
-    }
-    return 0;
+    struct fr_line_search ls = {FR_ARMIJO, search ? FR_STEP_HALVINGS : 0, e->cuts};
+    struct step_trial t = {e, &ls, search, phi, rinf};
+    int accepted;
+    fr_line_search(&ls, lambda, step_trial, &t, &accepted); /* the trials cannot fail */
+    return accepted;
 }
 
 int fr_step_newton_iterate(struct fr_step_newton *e, double tol, int stops, int search, double *phi,

@@ -7,7 +7,7 @@
  * (newton_matrix.h), Newton solves G(f) = f - F(zdot(f), a_free(f)) = 0. Each iteration: the
  * direction df = -T^-1 G (fr_newton_direction), then a backtracking line search along it,
  * from the first trial (a slipping contact stopped at zdot = 0, fr_newton_first_stop) or the
- * full step, halved at most MAX_CUTS times until the caller's merit phi decreases by Armijo's
+ * full step, halved at most FR_STEP_HALVINGS times until the caller's merit phi decreases by Armijo's
  * 1e-4; plain (no search): the full step, whatever it gives. The caller supplies the products
  * (W_eff x, W x) and the residual (G, its merit phi and its largest entry rinf), which is
  * where the two callers differ: the structure measures R = w J^T G on its degrees of freedom,
@@ -23,6 +23,10 @@
 
 #include "fricreg.h"
 #include "newton_matrix.h"
+
+/* The halvings of one Newton direction in the structure's steps, contacts and elements alike
+ * (base/line_search.h). */
+#define FR_STEP_HALVINGS 30
 
 /* W_eff f and W f, [m] each, at one set of contact forces f. */
 struct fr_compliance_pair {
