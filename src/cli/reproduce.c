@@ -134,12 +134,6 @@ static FILE *open_in(const char *dir, const char *name, struct cli_out *o)
     return cli_out_open(o, dir, name) == 0 ? o->f : NULL;
 }
 
-void cli_table_row(const char *figure, const char *quantity, const char *paper, double ours,
-                   const char *difference)
-{
-    printf("%-7s %-44s %-16s %-12.6f %s\n", figure, quantity, paper, ours, difference);
-}
-
 static void table_row_vs(const char *figure, const char *quantity, double paper, double ours,
                          int relative)
 {

@@ -7,14 +7,6 @@
 
 #include "hb_internal.h"
 
-int fr_hb_busy(fricreg_hb *hb, const char *fn)
-{
-    return fr_fail(hb, FRICREG_EINVAL,
-                   "%s: not allowed from the monitor while a solve is under way (only the "
-                   "getters are)",
-                   fn);
-}
-
 int fricreg_hb_set_monitor(fricreg_hb *hb, fricreg_hb_monitor fn, void *user)
 {
     if (hb == NULL)

@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* newton.c — the HB equations (R) at one frequency: the starting guesses (every element stuck,
- * or slipping freely) and Newton's method with a backtracking line search on |R|² (Armijo's
+ * or slipping freely) and Newton's method with a backtracking line search on |R| (Armijo's
  * condition with c = 1e-4, halving down to 1/1024; Nocedal & Wright, Numerical Optimization,
- * 2nd ed., Alg. 3.1 on the merit function of their Sec. 11.2), and fricreg_hb_solve. */
+ * 2nd ed., Alg. 3.1 on the merit function of their Sec. 11.2; base/line_search.h). */
 #include <math.h>
 #include <string.h>
 
@@ -173,34 +173,4 @@ int fr_hb_solve_at(fricreg_hb *hb, const char *fn, double omega, const double *q
     hb->level_sol = hb->level;
     hb->have_solution = 1;
     return FRICREG_OK;
-}
-
-int fricreg_hb_solve(fricreg_hb *hb, double omega, size_t nq, const double q0[], double q[])
-{
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    if (q == NULL)
-        return fr_fail(hb, FRICREG_ENULL, "solve: q is NULL");
-    if (hb->busy)
-        return fr_hb_busy(hb, "solve");
-    struct fr_error before = hb->err; /* a success keeps it: a first guess's failure is not
-                                         the call's */
-    int status = fr_hb_check_start(hb, "solve", omega, nq, q0);
-    if (status != FRICREG_OK)
-        return status;
-    fr_hb_begin(hb, 0); /* Ω is fixed: the monitor sees the level of the start's branch */
-    if (q0 != NULL)
-        status = fr_hb_solve_at(hb, "solve", omega, q0, 1);
-    else {
-        /* without a guess, the branch in the level from the linear regime; should that fail,
-         * the guesses at the level itself */
-        status = fr_hb_level_start(hb, "solve", omega);
-        if (status != FRICREG_OK && status != FRICREG_ENOMEM && !hb->stopped)
-            status = fr_hb_solve_at(hb, "solve", omega, NULL, 1);
-    }
-    if ((status = fr_hb_end(hb, status)) == FRICREG_OK) {
-        memcpy(q, hb->qsol, nq * sizeof(double));
-        hb->err = before;
-    }
-    return status;
 }

@@ -14,31 +14,6 @@
 
 #define MAX_DENSE_DOFS 4096
 
-void fr_hb_nma_row(const fricreg_hb *hb, size_t r, double *k, double *limit)
-{
-    size_t e = r / hb->rpe;
-    *k = 0.0;
-    *limit = INFINITY;
-    if (hb->nl != NULL) { /* kt, mu, n0, kn: closed at rest when N0 > 0 */
-        size_t me = hb->me;
-        double kt = hb->nl[e], mu = hb->nl[me + e], n0 = hb->nl[2 * me + e],
-               kn = hb->nl[3 * me + e];
-        int normal = r % 2 == 1;
-        if (n0 > 0.0) {
-            *k = normal ? kn : mu > 0.0 ? kt : 0.0;
-            *limit = normal ? (kn > 0.0 ? n0 / kn : INFINITY) : mu > 0.0 ? mu * n0 / kt : INFINITY;
-        }
-        return;
-    }
-    const double *ks, *phi;
-    size_t ns = fr_hb_sliders(hb, e, &ks, &phi);
-    for (size_t s = 0; s < ns; s++)
-        if (phi[s] > 0.0) { /* a slider of slip force 0 carries nothing */
-            *k += ks[s];
-            *limit = fmin(*limit, phi[s] / ks[s]);
-        }
-}
-
 /* The dense model's M, K and damping C (or Rayleigh's) as n x n, row-major. */
 static void densify(const fricreg_hb *hb, double *M, double *K, double *C)
 {
