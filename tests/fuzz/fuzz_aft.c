@@ -7,11 +7,11 @@
  * for the inputs (EINVAL, ENONFINITE, EINTEGRATOR; ESIZE cannot arise, n is right), recorded
  * with a message; on failure the outputs are untouched; on success they are finite and the
  * force keeps its bound: |f_0| <= B and |f_h| <= 2 B for the pointwise bound B (mun, the
- * sliders' sum of phi, or mu (|N0| + kn sum |g_j|)), up to 1e-9 B, 1e-12 of the elastic scale
- * kt sum |u_j| and 64 subnormal quanta (rounding); the normal force 0 <= N <= |N0| +
- * kn sum |g_j| likewise; and a constant normal load (kn = 0, N0 >= 0) gives the plain
- * element's coefficients at mun = mu N0, to 1e-6 mu N0 plus that rounding
- * (fricreg_aft_jenkins_normal_exact's docstring). */
+ * sliders' sum of phi, or mu (|N0| + kn sum |g_j|)), up to 1e-9 B, the rounding of kt u
+ * (1e-12 of kt sum |u_j|, and 4 kt n subnormal quanta: fricreg_aft.h) and 64 subnormal
+ * quanta; the normal force 0 <= N <= |N0| + kn sum |g_j| likewise; and a constant normal load
+ * (kn = 0, N0 >= 0) gives the plain element's coefficients at mun = mu N0, to 1e-6 mu N0 plus
+ * that rounding (fricreg_aft_jenkins_normal_exact's docstring). */
 #include "fuzz_input.h"
 
 #include "fricreg_aft.h"
@@ -118,9 +118,11 @@ static void check_success(fricreg_aft *a, const struct call *c, const double *f,
         for (size_t s = 0; s < c->ns; s++)
             kts += c->k[s], B += c->phi[s];
     }
-    /* kt sum |u_j| first: 1e-12 kt underflowed for a subnormal kt (1e-314 against u of 2e19,
+    /* the rounding of kt u: relative, and absolute in the subnormals (u of 5e-324 in every
+     * coefficient gives forces of kt n quanta, whatever the bound; the header's rounding).
+     * kt sum |u_j| first: 1e-12 kt underflowed for a subnormal kt (1e-314 against u of 2e19,
      * whose sticks are below the rounding of u: the two exact paths resolve them differently) */
-    double slack = 1e-12 * (kts * sum_abs(c->u, n));
+    double slack = 1e-12 * (kts * sum_abs(c->u, n)) + kts * (4.0 * (double)n * SUBNORMAL_QUANTUM);
     if (c->kind == LIFTOFF) {
         double pmax = fmax(0.0, fabs(c->n0) + c->kn * sum_abs(c->g, n));
         FUZZ_REQUIRE(fuzz_all_finite(nf, n), "nf not finite");
