@@ -66,7 +66,7 @@ static fricreg_sim *companion_run(fricreg_sim *sim, int k)
     }
     companion->start_cycle = sim->start_cycle;
     companion->start_y = sim->start_y;
-    int status = fricreg_sim_run(companion, sim->t);
+    int status = fr_sim_run_plain(companion, sim->t);
     if (status == FRICREG_OK && companion->cycles == sim->cycles)
         return companion;
     char msg[sizeof sim->estimate_msg];

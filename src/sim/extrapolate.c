@@ -14,64 +14,6 @@
 #include "richardson.h"
 #include "sim_internal.h"
 
-struct fr_extrap {
-    int levels;
-    size_t cycles;
-    double *D, *D_err; /* [cycles] */
-    struct fr_richardson total;
-    size_t first;    /* the first extrapolated cycle (0 unless a window) */
-    int order;       /* of the last whole cycle (else of the total) */
-    double observed; /* likewise */
-    size_t flagged;  /* whole cycles flagged */
-    double eps_finest;
-    int64_t rhs_evals; /* all levels */
-};
-
-void fr_extrap_free(struct fr_extrap *x)
-{
-    if (x == NULL)
-        return;
-    free(x->D);
-    free(x->D_err);
-    free(x);
-}
-
-/* sim_internal.h. Keep this list in step with the settings of struct fricreg_sim. */
-int fr_sim_level(const fricreg_sim *sim, int k, double tol_scale, fricreg_sim **out)
-{
-    fricreg_sim *level = NULL;
-    int status = fricreg_sim_create(sim->sys.type->id, &level);
-    if (status != FRICREG_OK)
-        return status;
-    double scale = ldexp(1.0, -k);
-    int adaptive = sim->rtol > 0.0 || sim->atol > 0.0 || sim->atol_from_eps || sim->atol_vec;
-    level->sys = sim->sys;
-    level->law = sim->law;
-    level->partition = sim->partition;
-    level->unguarded = sim->unguarded;
-    level->eps_set = sim->eps * scale;
-    level->integrator = sim->integrator;
-    level->dt = adaptive ? sim->dt : sim->dt * scale;
-    level->rtol = sim->rtol * tol_scale;
-    level->atol = sim->atol * tol_scale;
-    level->atol_from_eps = sim->atol_from_eps; /* the rule at the level's own eps */
-    level->rule_scale = sim->rule_scale * tol_scale;
-    if (sim->atol_vec != NULL) {
-        level->atol_vec = malloc(sim->atol_n * sizeof *level->atol_vec);
-        if (level->atol_vec == NULL) {
-            fricreg_sim_free(level);
-            return FRICREG_ENOMEM;
-        }
-        for (size_t i = 0; i < sim->atol_n; i++)
-            level->atol_vec[i] = sim->atol_vec[i] * tol_scale;
-        level->atol_n = sim->atol_n;
-    }
-    level->kink_location = sim->kink_location;
-    level->max_steps = sim->max_steps; /* the caller's bound holds on every level */
-    *out = level;
-    return FRICREG_OK;
-}
-
 /* Runs level k to t_end into D[k * ncycles …] and total[k]; a failure is reported on sim.
  * With first > 0 (a window) it starts at the end of cycle `first` from level 0's state there,
  * start_y, and fills the cycles from `first` on. */

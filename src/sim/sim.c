@@ -32,6 +32,16 @@
 
 /* ---- Life cycle and settings ------------------------------------------------------------- */
 
+/* extrapolate.c's results, held by the simulation until its next run. */
+void fr_extrap_free(struct fr_extrap *x)
+{
+    if (x == NULL)
+        return;
+    free(x->D);
+    free(x->D_err);
+    free(x);
+}
+
 static void free_run(fricreg_sim *sim)
 {
     fricreg_ctx_free(sim->ctx);
@@ -117,9 +127,7 @@ static int reject_param(fricreg_sim *sim, int param, double value, const struct 
     return fr_fail(sim, FRICREG_EINVAL, "set_param: %s = %g %s", label, value, spec->rule);
 }
 
-/* A setter or a run called from the observer would free or replace the state the run is
- * stepping: refused, and the run goes on. `who` names the call. */
-static int refuse_during_run(fricreg_sim *sim, const char *who)
+int fr_sim_refuse_during_run(fricreg_sim *sim, const char *who)
 {
     return fr_fail(sim, FRICREG_EINVAL,
                    "%s: not allowed during a run (called from the observer or the warning "
@@ -132,7 +140,7 @@ int fricreg_sim_set_param(fricreg_sim *sim, int param, double value)
     if (sim == NULL)
         return FRICREG_ENULL;
     if (sim->running)
-        return refuse_during_run(sim, "set_param");
+        return fr_sim_refuse_during_run(sim, "set_param");
     size_t slot = 0;
     const struct fr_param_spec *spec = fr_system_param(sim->sys.type, param, &slot);
     if (spec == NULL || !isfinite(value) || (spec->valid && !spec->valid(value)))
@@ -158,7 +166,7 @@ int fricreg_sim_set_law(fricreg_sim *sim, int law, double eps)
     if (sim == NULL)
         return FRICREG_ENULL;
     if (sim->running)
-        return refuse_during_run(sim, "set_law");
+        return fr_sim_refuse_during_run(sim, "set_law");
     if (!fr_law_known(law))
         return fr_fail(sim, FRICREG_EINVAL, "set_law: unknown law %d", law);
     if (!isfinite(eps))
@@ -176,7 +184,7 @@ int fricreg_sim_set_partition(fricreg_sim *sim, int partition)
     if (sim == NULL)
         return FRICREG_ENULL;
     if (sim->running)
-        return refuse_during_run(sim, "set_partition");
+        return fr_sim_refuse_during_run(sim, "set_partition");
     if (partition != FRICREG_PARTITION_CONSISTENT && partition != FRICREG_PARTITION_PAPER)
         return fr_fail(sim, FRICREG_EINVAL, "set_partition: unknown partition %d", partition);
     free_run(sim);
@@ -190,7 +198,7 @@ int fricreg_sim_set_integrator(fricreg_sim *sim, int integrator, double dt, doub
     if (sim == NULL)
         return FRICREG_ENULL;
     if (sim->running)
-        return refuse_during_run(sim, "set_integrator");
+        return fr_sim_refuse_during_run(sim, "set_integrator");
     if (fr_integrator_find(integrator) == NULL)
         return fr_fail(sim, FRICREG_EINVAL, "set_integrator: unknown integrator %d", integrator);
     if (!isfinite(dt) || !isfinite(rtol) || !isfinite(atol))
@@ -234,7 +242,7 @@ int fricreg_sim_set_abs_tolerances(fricreg_sim *sim, size_t n, const double atol
         return sim ? fr_fail(sim, FRICREG_ENULL, "set_abs_tolerances: atol is NULL")
                    : FRICREG_ENULL;
     if (sim->running)
-        return refuse_during_run(sim, "set_abs_tolerances");
+        return fr_sim_refuse_during_run(sim, "set_abs_tolerances");
     size_t dim = 2 * fricreg_sim_ndof(sim) + 1;
     if (n != dim)
         return fr_fail(sim, FRICREG_ESIZE,
@@ -271,7 +279,7 @@ int fricreg_sim_set_max_steps(fricreg_sim *sim, int64_t max_steps)
     if (sim == NULL)
         return FRICREG_ENULL;
     if (sim->running)
-        return refuse_during_run(sim, "set_max_steps");
+        return fr_sim_refuse_during_run(sim, "set_max_steps");
     if (max_steps < 0)
         return fr_fail(sim, FRICREG_EINVAL,
                        "set_max_steps: max_steps = %lld must be >= 0 (0: no bound)",
@@ -285,7 +293,7 @@ int fricreg_sim_set_kink_location(fricreg_sim *sim, int on)
     if (sim == NULL)
         return FRICREG_ENULL;
     if (sim->running)
-        return refuse_during_run(sim, "set_kink_location");
+        return fr_sim_refuse_during_run(sim, "set_kink_location");
     if (on != 0 && on != 1)
         return fr_fail(sim, FRICREG_EINVAL, "set_kink_location: on = %d must be 0 or 1", on);
     sim->kink_location = on;
@@ -297,7 +305,7 @@ int fricreg_sim_set_observer(fricreg_sim *sim, fricreg_sim_observer fn, void *us
     if (sim == NULL)
         return FRICREG_ENULL;
     if (sim->running)
-        return refuse_during_run(sim, "set_observer");
+        return fr_sim_refuse_during_run(sim, "set_observer");
     sim->observer = fn;
     sim->observer_user = user;
     return FRICREG_OK;
@@ -380,18 +388,7 @@ int fricreg_sim_get_abs_tolerances(const fricreg_sim *sim, size_t n, double atol
     return FRICREG_OK;
 }
 
-/* ---- Right-hand side for GSL (its Jacobian: sim_jacobian.c) ----------------------------- */
-
-/* Contact kinematics and friction at (t, x, v), into sim->zdot, a_free, f (and f_eq). */
-static int eval_friction(fricreg_sim *sim, double t, const double y[], int want_feq)
-{
-    const double *x = y, *v = y + sim->ndof;
-    sim->zdot = sim->sys.type->contacts(&sim->sys, t, x, v, sim->zdot_buf, sim->a_free);
-    if (sim->unchecked_eval && !want_feq)
-        return fr_ctx_eval_unchecked(sim->ctx, sim->zdot, sim->a_free, sim->f);
-    return fricreg_ctx_eval(sim->ctx, sim->m, sim->zdot, sim->a_free, sim->f,
-                            want_feq ? sim->f_eq : NULL);
-}
+/* ---- The run's state checks -------------------------------------------------------------- */
 
 /* The first component of y that has diverged: not finite or beyond FR_SIM_STATE_LIMIT, which no
  * motion of these systems comes near, so an unstable step on its way to overflow. dim if
@@ -415,15 +412,6 @@ static size_t first_diverged(const double y[], size_t dim)
     return diverged > 0.0 ? k : dim;
 }
 
-/* The first contact whose kinematics overflowed: a stage of an unstable step. */
-static size_t first_nonfinite_contact(const fricreg_sim *sim)
-{
-    size_t i = 0;
-    while (i < sim->m && isfinite(sim->zdot[i]) && isfinite(sim->a_free[i]))
-        i++;
-    return i;
-}
-
 /* Names component k of the state y = (x, v, D), e.g. "velocity of body 7". */
 static const char *state_part(const fricreg_sim *sim, size_t k, char *buf, size_t len)
 {
@@ -433,25 +421,6 @@ static const char *state_part(const fricreg_sim *sim, size_t k, char *buf, size_
     else
         snprintf(buf, len, "%s of body %zu", k < n ? "position" : "velocity", k % n);
     return buf;
-}
-
-/* The ODE's right-hand side for GSL (sim_internal.h): the contacts, the friction through the
- * context, and the system's bodies pass, which also gives the power for D'. */
-int fr_sim_rhs(double t, const double y[], double dydt[], void *params)
-{
-    fricreg_sim *sim = params;
-    size_t n = sim->ndof;
-    sim->rhs_evals++;
-    int status = eval_friction(sim, t, y, 0);
-    if (status != FRICREG_OK) {
-        sim->rhs_status = status;
-        sim->bad_contact = first_nonfinite_contact(sim);
-        return GSL_EBADFUNC; /* GSL stops the step at once */
-    }
-    double power = sim->sys.type->bodies(&sim->sys, t, y, y + n, sim->zdot, sim->a_free, sim->f,
-                                         dydt);
-    dydt[2 * n] = -sim->sys.type->dissipation_weight(&sim->sys) * power;
-    return GSL_SUCCESS;
 }
 
 /* ---- Running ----------------------------------------------------------------------------- */
@@ -513,7 +482,7 @@ static int check_step(fricreg_sim *sim, const struct fr_integrator *integ)
 
 static int observe(fricreg_sim *sim)
 {
-    int status = eval_friction(sim, sim->t, sim->y, 1);
+    int status = fr_sim_eval_friction(sim, sim->t, sim->y, 1);
     if (status != FRICREG_OK)
         return fr_fail(sim, status, "run: t = %.17g: %s", sim->t, fricreg_ctx_errmsg(sim->ctx));
     const double *x = sim->y, *v = sim->y + sim->ndof;
@@ -719,22 +688,7 @@ static const gsl_odeiv2_step_type *run_stepper(const fricreg_sim *sim,
     return fr_integrator_stepper(integ, adaptive(sim));
 }
 
-static int run(fricreg_sim *sim, double t_end);
-
-/* A run's warnings go to the handler once each, at the end, whether or not it failed. */
-int fricreg_sim_run(fricreg_sim *sim, double t_end)
-{
-    if (sim == NULL)
-        return FRICREG_ENULL;
-    if (sim->running)
-        return refuse_during_run(sim, "run");
-    fr_warnings_forget_delivered(&sim->warnings);
-    int status = run(sim, t_end);
-    fr_sim_judge_for_handler(sim);
-    return status;
-}
-
-static int run(fricreg_sim *sim, double t_end)
+int fr_sim_run_plain(fricreg_sim *sim, double t_end)
 {
     if (!isfinite(t_end))
         return fr_fail(sim, FRICREG_ENONFINITE, "run: t_end is not finite");
@@ -811,18 +765,7 @@ static int run(fricreg_sim *sim, double t_end)
     fr_kinks_free(sim->locate);
     sim->locate = NULL;
     gsl_odeiv2_driver_free(d);
-    if (status == FRICREG_OK && sim->error_estimate && !sim->estimate_skip)
-        fr_sim_error_estimate(sim);
     return status;
-}
-
-int fricreg_sim_run_cycles(fricreg_sim *sim, int cycles)
-{
-    if (sim == NULL)
-        return FRICREG_ENULL;
-    if (cycles < 1)
-        return fr_fail(sim, FRICREG_EINVAL, "run_cycles: cycles = %d must be >= 1", cycles);
-    return fricreg_sim_run(sim, cycles * period(sim));
 }
 
 /* ---- Results ----------------------------------------------------------------------------- */

@@ -10,6 +10,7 @@
 #include "base/error.h"
 #include "base/warning.h"
 #include "fricreg_sim.h"
+#include "richardson.h"
 #include "system.h"
 
 /* |state| beyond this: diverged, an unstable step on its way to overflow (sim.c's after-step
@@ -104,10 +105,24 @@ struct fricreg_sim {
     struct fr_warnings warnings; /* the checks of plausibility, as last judged (warnings.c) */
 };
 
-/* sim.c: the right-hand side of the ODE y = (x, v, D) for gsl_odeiv2_system (params: the
+/* rhs.c: the right-hand side of the ODE y = (x, v, D) for gsl_odeiv2_system (params: the
  * fricreg_sim). Leaves the contacts' zdot, a_free and f of (t, y) in the simulation and the
  * context. GSL_EBADFUNC, with sim->rhs_status set, if the context refuses the state. */
 int fr_sim_rhs(double t, const double y[], double dydt[], void *params);
+
+/* rhs.c: the contacts' kinematics and friction at (t, x, v) into sim->zdot, a_free, f (and
+ * f_eq with want_feq); the context's status. */
+int fr_sim_eval_friction(fricreg_sim *sim, double t, const double y[], int want_feq);
+
+/* sim.c: one run to t_end from the initial state, its results in sim: fricreg_sim_run without
+ * the error estimate and the warnings' delivery (run.c), for the companions and levels that
+ * have neither. */
+int fr_sim_run_plain(fricreg_sim *sim, double t_end);
+
+/* sim.c: a setter or a run called from the observer would free or replace the state the run
+ * is stepping: refused (FRICREG_EINVAL, recorded), and the run goes on. `who` names the
+ * call. */
+int fr_sim_refuse_during_run(fricreg_sim *sim, const char *who);
 
 /* sim_jacobian.c: the Jacobian dfdy [dim x dim, row-major] and dfdt [dim] of fr_sim_rhs, for
  * gsl_odeiv2_system, dim = 2 ndof + 1. fr_sim_jacobian is analytic (the system's linear maps
@@ -120,11 +135,25 @@ int fr_sim_jacobian(double t, const double y[], double *dfdy, double dfdt[], voi
 int fr_sim_jacobian_fd(double t, const double y[], double *dfdy, double dfdt[], void *params);
 void fr_jacobian_free(struct fr_jacobian *J);
 
-/* extrapolate.c: releases an extrapolation (NULL: nothing), as free_run discards it. */
-struct fr_extrap;
+/* An extrapolation's results (extrapolate.c fills them), held by the simulation until its
+ * next run. */
+struct fr_extrap {
+    int levels;
+    size_t cycles;
+    double *D, *D_err; /* [cycles] */
+    struct fr_richardson total;
+    size_t first;    /* the first extrapolated cycle (0 unless a window) */
+    int order;       /* of the last whole cycle (else of the total) */
+    double observed; /* likewise */
+    size_t flagged;  /* whole cycles flagged */
+    double eps_finest;
+    int64_t rhs_evals; /* all levels */
+};
+
+/* sim.c: releases an extrapolation (NULL: nothing), as free_run discards it. */
 void fr_extrap_free(struct fr_extrap *x);
 
-/* extrapolate.c: a new simulation with every setting of sim at level k: eps / 2^k, a fixed
+/* level.c: a new simulation with every setting of sim at level k: eps / 2^k, a fixed
  * step dt / 2^k, and an adaptive run's tolerances (rtol, atol, per component) times
  * tol_scale with its first step kept. FRICREG_OK or FRICREG_ENOMEM; *out is then the
  * caller's. */
