@@ -229,8 +229,10 @@ FRICREG_API int fricreg_aft_iwan_sampled(fricreg_aft *aft, size_t ns, const doub
  *  Returns FRICREG_OK; FRICREG_ENULL if aft, u, g, f or nf is NULL; FRICREG_EINVAL if the
  *  object was created with N = 0, kt <= 0, mu < 0 or kn < 0; FRICREG_ESIZE if n is not
  *  2H + 1; FRICREG_ENONFINITE if kt, mu, n0, kn, some u[j] or g[j] is NaN or infinite, or the
- *  scales 8 max(1, kt) sum |u[j]| or 8 (1 + mu)(|n0| + kn (1 + sum |g[j]|)) overflow. All inputs
- *  are checked before anything is computed or written. Cost O(N H) per period marched for f
+ *  scales 8 max(1, kt) sum |u[j]| or 8 (1 + mu)(|n0| + kn (1 + sum |g[j]|)) overflow, or the
+ *  slider's excursion 8 mu (|n0| + kn (1 + sum |g[j]|))/kt overflows (a spring far weaker than
+ *  its bound, since 1.7: the march holds the slider's place; the exact path takes such a kt).
+ *  All inputs are checked before anything is computed or written. Cost O(N H) per period marched for f
  *  and N (up to 16 periods), O(N H log N) with jac (6H FFTs of length N); no allocation.
  *  Measured at H = 40 on a loaded 2-core machine: N = 2^16, 0.07 s, 3.2 s with jac; N = 2^18,
  *  0.65 s, 28 s with jac; about half an hour with jac at the largest N = 2^24 (the exact
@@ -275,7 +277,8 @@ FRICREG_API int fricreg_aft_jenkins_normal_sampled(fricreg_aft *aft, double kt, 
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if aft, u, g, f or nf is NULL; FRICREG_EINVAL if
  *  kt <= 0, mu < 0 or kn < 0; FRICREG_ESIZE if n is not 2H + 1; FRICREG_ENONFINITE as
- *  fricreg_aft_jenkins_normal_sampled; FRICREG_EINTEGRATOR as fricreg_aft_jenkins_exact (the
+ *  fricreg_aft_jenkins_normal_sampled but for the slider's excursion (the slider is carried as
+ *  the force kt w: any kt > 0 is taken); FRICREG_EINTEGRATOR as fricreg_aft_jenkins_exact (the
  *  outputs then untouched). All inputs are checked before anything is computed or written.
  *  Cost O(H^2) per sign change (three polynomials) and per piece, O(H^3) where the
  *  companion matrix is needed; no allocation. Since 1.6. */

@@ -111,6 +111,22 @@ START_TEST(bad_input)
         ck_assert_double_eq(f[i], SENTINEL);
         ck_assert_double_eq(nf[i], SENTINEL);
     }
+    /* a spring far weaker than its bound: the sampled march's slider u - mu N/kt would leave
+     * the double range (kt = 5e-324 against mu N up to 2); the exact path takes it */
+    const double uk[NC] = {1.0, 1.0, 0, 0, 0, 0, 0}, gk[NC] = {1.0, 1.0, 0, 0, 0, 0, 0};
+    for (int i = 0; i < NC; i++)
+        f[i] = nf[i] = SENTINEL;
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(a, 5e-324, 1, 0, 1, NC, uk, gk, f, nf, jac),
+                     FRICREG_ENONFINITE);
+    ck_assert_ptr_nonnull(strstr(fricreg_aft_errmsg(a), "slider's excursion"));
+    for (int i = 0; i < NC; i++) {
+        ck_assert_double_eq(f[i], SENTINEL);
+        ck_assert_double_eq(nf[i], SENTINEL);
+    }
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, 5e-324, 1, 0, 1, NC, uk, gk, f, nf, jac),
+                     FRICREG_OK);
+    for (int i = 0; i < NC; i++)
+        ck_assert(isfinite(f[i]) && fabs(f[i]) <= 2.0 * 2.0);
     fricreg_aft_free(exact_only);
     fricreg_aft_free(a);
 }

@@ -195,6 +195,16 @@ int fricreg_aft_iwan_sampled(fricreg_aft *aft, size_t ns, const double k[], cons
     return evaluate(aft, "iwan_sampled", 1, ns, k, phi, n, u, f, jac);
 }
 
+/* The scale of the normal force and of its Jacobian, |n0| + kn (1 + sum |g[j]|): the force
+ * reaches |n0| + kn sum |g[j]|, dN/dg reaches kn. */
+static double normal_scale(const fricreg_aft *a, double n0, double kn, const double *g)
+{
+    double gsum = 0.0;
+    for (size_t j = 0; j < a->nc; j++)
+        gsum += fabs(g[j]);
+    return fabs(n0) + kn * (1.0 + gsum);
+}
+
 /* The normal law's checks beyond check()'s: g, mu, n0, kn, and the overflow of the bound. */
 static int check_normal(fricreg_aft *a, const char *fn, double mu, double n0, double kn,
                         const double *g, const double *nf)
@@ -205,15 +215,12 @@ static int check_normal(fricreg_aft *a, const char *fn, double mu, double n0, do
         return fr_fail(a, FRICREG_ENONFINITE, "%s: mu = %g, n0 = %g, kn = %g", fn, mu, n0, kn);
     if (!(mu >= 0.0) || !(kn >= 0.0))
         return fr_fail(a, FRICREG_EINVAL, "%s: mu = %g and kn = %g must be >= 0", fn, mu, kn);
-    double gsum = 0.0;
-    for (size_t j = 0; j < a->nc; j++) {
+    for (size_t j = 0; j < a->nc; j++)
         if (!isfinite(g[j]))
             return fr_fail(a, FRICREG_ENONFINITE, "%s: g[%zu] = %g", fn, j, g[j]);
-        gsum += fabs(g[j]);
-    }
-    /* the normal force reaches |n0| + kn sum |g[j]|, and its Fourier integrals 8 times that;
-     * the Jacobian's df/dg and dN/dg reach (1 + mu) kn */
-    if (!isfinite(8.0 * (1.0 + mu) * (fabs(n0) + kn * (1.0 + gsum))))
+    /* the Fourier integrals of the normal force reach 8 times its scale, and the Jacobian's
+     * df/dg and dN/dg (1 + mu) kn */
+    if (!isfinite(8.0 * (1.0 + mu) * normal_scale(a, n0, kn, g)))
         return fr_fail(a, FRICREG_ENONFINITE,
                        "%s: the normal force |n0| + kn x the sum of |g[j]|, or kn, overflows", fn);
     return FRICREG_OK;
@@ -232,6 +239,14 @@ int fricreg_aft_jenkins_normal_sampled(fricreg_aft *aft, double kt, double mu, d
         status = check_normal(aft, fn, mu, n0, kn, g, nf);
     if (status != FRICREG_OK)
         return status;
+    /* the march holds the slider's place w = u - mu N/kt (slider.c), beyond the double range
+     * for a spring far weaker than its bound (kt = 5e-324 against mu N = 2 gave f not finite);
+     * the exact path carries the slider as the force kt w and takes such a kt */
+    if (!isfinite(8.0 * mu * normal_scale(aft, n0, kn, g) / kt))
+        return fr_fail(aft, FRICREG_ENONFINITE,
+                       "%s: the slider's excursion mu (|n0| + kn (1 + sum |g[j]|))/kt = %g/%g "
+                       "overflows",
+                       fn, mu * normal_scale(aft, n0, kn, g), kt);
     fr_aft_sampled_normal(aft, kt, mu, n0, kn, u, g, f, nf, jac);
     return FRICREG_OK;
 }

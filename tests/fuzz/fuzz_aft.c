@@ -91,6 +91,9 @@ static unsigned allowed(const struct call *c, size_t N)
             codes |= 1u << FRICREG_ENONFINITE;
         if (!(c->kn >= 0.0))
             codes |= 1u << FRICREG_EINVAL;
+        if (!c->exact &&
+            !isfinite(8.0 * c->mu * (fabs(c->n0) + c->kn * (1.0 + sum_abs(c->g, n))) / c->kt))
+            codes |= 1u << FRICREG_ENONFINITE; /* the sampled march's slider excursion */
     }
     return codes;
 }
