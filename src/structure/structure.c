@@ -124,14 +124,6 @@ int fricreg_structure_create(size_t ndof, size_t m, fricreg_structure **out)
     return FRICREG_OK;
 }
 
-int fr_structure_busy(fricreg_structure *s, const char *who)
-{
-    return fr_fail(s, FRICREG_EINVAL,
-                   "%s: not allowed during a run (called from the observer or the warning "
-                   "handler)",
-                   who);
-}
-
 int fricreg_structure_set_observer(fricreg_structure *s, fricreg_structure_observer fn, void *user)
 {
     if (s == NULL)
