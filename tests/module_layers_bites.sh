@@ -1,8 +1,8 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-3.0-or-later
 # The layering check can fail: on copies of src/ with one arrow run back up (an include, a
-# call), ctx_internal.h included outside src/ctx/, or a folder missing from the module table,
-# it must fail and name the break. Usage: module_layers_bites.sh CHECK SRC_DIR C_COMPILER
+# call), ctx_internal.h included outside src/ctx/, a folder missing from the module table, or
+# a circle of calls inside a folder, it must fail and name the break. Usage: module_layers_bites.sh CHECK SRC_DIR C_COMPILER
 check=$1 src=$2 cc=$3
 work=$(mktemp -d "${TMPDIR:-/tmp}/fricreg-layers-bites.XXXXXX")
 trap 'rm -rf "$work"' EXIT
@@ -45,6 +45,19 @@ mkdir -p "$objects/base" "$objects/sim"
     "$cc" -c "$work/src/sim/layers_up.c" -o "$objects/sim/layers_up.c.o" ||
     { echo "FAIL: $cc did not compile the probe"; exit 1; }
 expect "a call back up" "src/base/layers_base.c (floor 0) calls fr_layers_up of sim/" "$work/build"
+
+# A circle of calls between two files of one folder.
+fresh
+printf 'int fr_circle_b(void);\nint fr_circle_a(int k) { return k ? fr_circle_b() : 0; }\n' \
+    >"$work/src/base/circle_a.c"
+printf 'int fr_circle_a(int k);\nint fr_circle_b(void) { return fr_circle_a(0); }\n' \
+    >"$work/src/base/circle_b.c"
+objects=$work/build/CMakeFiles/fricreg_objects.dir/src
+mkdir -p "$objects/base"
+"$cc" -c "$work/src/base/circle_a.c" -o "$objects/base/circle_a.c.o" &&
+    "$cc" -c "$work/src/base/circle_b.c" -o "$objects/base/circle_b.c.o" ||
+    { echo "FAIL: $cc did not compile the probe"; exit 1; }
+expect "a circle inside a folder" "src/base/circle_a.c is on a circle of calls in base/ (it calls base/circle_b.c)" "$work/build"
 
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]
