@@ -269,7 +269,9 @@ FRICREG_API int fricreg_aft_jenkins_normal_sampled(fricreg_aft *aft, double kt, 
  *  nothing): slip, ∂f/∂g_j = s mu kn φ_j(θ); stick after a slip ended at θw,
  *  ∂f/∂u_j = kt (φ_j(θ) − φ_j(θw)) and ∂f/∂g_j = s mu kn φ_j(θw); stick after a touchdown at
  *  θt, ∂f/∂u_j = kt (φ_j(θ) − φ_j(θt)) and ∂f/∂g_j = kt u'(θt) φ_j(θt)/g'(θt) (the touchdown
- *  moves with g; the sampled path, whose touchdown sits on a sample, has 0 there);
+ *  moves with g; the sampled path, whose touchdown sits on a sample, has 0 there, and so has
+ *  a touchdown that grazes: g'(θt) = 0, or kt u'(θt)/g'(θt) beyond DBL_MAX/(8 (2H + 1)),
+ *  since 1.7);
  *  ∂N/∂g_j = kn φ_j(θ) while closed. φ_j is the basis 1, cos θ, sin θ, cos 2θ, ...
  *
  *  Arguments, layouts, units and aliasing as fricreg_aft_jenkins_normal_sampled; the object

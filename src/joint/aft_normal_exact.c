@@ -32,6 +32,7 @@
  * ∂f/∂g_j = s mu kn φ_j(θw). Stick after a touchdown at θt (w = u(θt), θt moving with g by
  * ∂θt/∂g_j = −φ_j(θt)/g'(θt)): ∂f/∂u_j = kt (φ_j − φ_j(θt)), ∂f/∂g_j = kt u'(θt) φ_j(θt)/g'(θt).
  * N = P on the closed arcs: ∂N/∂g_j = kn φ_j there. */
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -148,7 +149,12 @@ static void add_stick(struct march *s, const struct state *st, double al, double
         double du, dg;
         fr_aft_trig_eval(a->H, s->u, st->th, &du);
         fr_aft_trig_eval(a->H, s->g, st->th, &dg);
+        /* a touchdown that grazes, g' = 0 or kt u'/g' beyond DBL_MAX / (8 nc) (whose
+         * contributions, summed over the pieces, overflowed), moves with g without bound: 0,
+         * as the sampled path's touchdown on a sample */
         c = dg != 0.0 ? s->kt * du / dg : 0.0;
+        if (!(fabs(c) <= DBL_MAX / (8.0 * (double)nc)))
+            c = 0.0;
     } else {
         c = st->dir * s->mu * s->kn;
     }
