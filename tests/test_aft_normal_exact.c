@@ -180,6 +180,27 @@ START_TEST(spring_far_weaker_than_its_bound)
 }
 END_TEST
 
+/* A touchdown that all but grazes: P = kn (1 - 1e-8 cos 3θ - sin 3θ) opens for an instant at
+ * each maximum of sin 3θ, where g' is of 1e-8 against kt u' of 1e302 (mu and u of 1e300): the
+ * term kt u'(θt)/g'(θt) of df/dg leaves the double range, and such a touchdown contributes 0,
+ * as one with g' = 0 (the Jacobian was not finite; fuzz target aft). H = 6 as found. */
+START_TEST(touchdown_that_grazes)
+{
+    enum { H6 = 6, NC6 = 2 * H6 + 1 };
+    fricreg_aft *a = make(H6, 0);
+    double u[NC6] = {0}, g[NC6] = {0}, f[NC6], nf[NC6], jac[4 * NC6 * NC6];
+    u[1] = 1e300;
+    g[5] = -9.99969482421875e-09;
+    g[6] = -1.0;
+    const double k = 215.667724609375;
+    ck_assert_int_eq(fricreg_aft_jenkins_normal_exact(a, k, 1e300, k, k, NC6, u, g, f, nf, jac),
+                     FRICREG_OK);
+    for (int i = 0; i < 4 * NC6 * NC6; i++)
+        ck_assert_msg(isfinite(jac[i]), "jac[%d] = %g", i, jac[i]);
+    fricreg_aft_free(a);
+}
+END_TEST
+
 START_TEST(open_throughout_and_no_friction)
 {
     const double u[NC] = {0.3, 1.0, 0.0, 0.0, 0.2, 0.9, -0.1}, g[NC] = {0.0, 0.2, 0.1, 0, 0, 0, 0};
@@ -359,6 +380,7 @@ int main(void)
     tcase_add_test(tc, bound_far_below_the_rounding_of_u);
     tcase_add_test(tc, constant_preload_at_tiny_scales);
     tcase_add_test(tc, spring_far_weaker_than_its_bound);
+    tcase_add_test(tc, touchdown_that_grazes);
     tcase_add_test(tc, slip_starting_on_a_reversal);
     tcase_add_test(tc, jacobian_against_differences);
     tcase_add_test(tc, outputs_may_alias_inputs);
