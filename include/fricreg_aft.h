@@ -263,7 +263,9 @@ FRICREG_API int fricreg_aft_jenkins_normal_sampled(fricreg_aft *aft, double kt, 
  *  f = s mu P on the slips, so |f(θ)| <= mu max N still holds; and where that bound
  *  underflows to 0 (mu (|N0| + kn sum |g_j|) == 0 in double precision), f = 0 (since 1.7).
  *  With kn = 0 and N0 >= 0 it is fricreg_aft_jenkins_exact at mun = mu N0 (to rounding; to
- *  1e-6 of mu N0 where the sticks take no time).
+ *  1e-6 of mu N0 where the sticks take no time; where u's oscillation is below the rounding
+ *  of u itself, sum_{j>=1} |u[j]| <= 1e-12 sum |u[j]|, no motion is resolved and the two
+ *  only share the bound).
  *
  *  The Jacobian is exact (f and N are continuous at the switch points, whose motion adds
  *  nothing): slip, ∂f/∂g_j = s mu kn φ_j(θ); stick after a slip ended at θw,
