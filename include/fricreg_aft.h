@@ -46,7 +46,9 @@
  *     rounding, that of kt u(θ): about DBL_EPSILON kt sum |u[j]|, and for u in the
  *     subnormals, whose spacing 2^-1074 is absolute, about kt (2H + 1) 2^-1074, which a
  *     bound mun below it does not shrink (u of 5e-324 in every coefficient, kt = 216, against
- *     mu N0 = 1e-321 with lift-off gives |f_0| = 8.6e-321). The Jacobian is exact too: f is continuous at the switch points, so their
+ *     mu N0 = 1e-321 with lift-off gives |f_0| = 8.6e-321); forces that are themselves
+ *     subnormal carry a quantum from each product, up to (2H + 1)^2 per piece (kt = 5e-315
+ *     beside u of 2e-8 and mu N0 = 2e-323 gives |f_0| = 5.8e-322). The Jacobian is exact too: f is continuous at the switch points, so their
  *     motion adds nothing; in a stick ∂f/∂u[j] = kt (φ_j(θ) − φ_j(θ_w)), θ_w the reversal where
  *     the slider stopped (u'(θ_w) = 0), and in a slip 0.
  *   - sampled (fricreg_aft_jenkins_sampled, fricreg_aft_iwan_sampled): u at N equidistant

@@ -8,8 +8,8 @@
  * with a message; on failure the outputs are untouched; on success they are finite and the
  * force keeps its bound: |f_0| <= B and |f_h| <= 2 B for the pointwise bound B (mun, the
  * sliders' sum of phi, or mu (|N0| + kn sum |g_j|)), up to 1e-9 B, the rounding of kt u
- * (1e-12 of kt sum |u_j|, and 4 kt n subnormal quanta: fricreg_aft.h) and 64 subnormal
- * quanta; the normal force 0 <= N <= |N0| + kn sum |g_j| likewise; and a constant normal load
+ * (1e-12 of kt sum |u_j|, and 4 kt n subnormal quanta: fricreg_aft.h) and 64 n^2 subnormal
+ * quanta (forces computed in the subnormals); the normal force 0 <= N <= |N0| + kn sum |g_j| likewise; and a constant normal load
  * (kn = 0, N0 >= 0) gives the plain element's coefficients at mun = mu N0, to 1e-6 mu N0 plus
  * that rounding, where u's oscillation is resolved at all (fricreg_aft_jenkins_normal_exact's
  * docstring). */
@@ -22,6 +22,10 @@ enum { MAX_H = 6, MAX_NC = 2 * MAX_H + 1, MAX_SLIDERS = 4 };
 /* The spacing of the subnormals: a bound that underflows (mu N0 = 1e-265 x 5e-324) leaves
  * forces of a few of them, the rounding of products in that range. */
 #define SUBNORMAL_QUANTUM 4.9406564584124654e-324
+/* The absolute floor of a force computed in the subnormals: each product kt u_j, G_ij x_j
+ * there rounds to a quantum, about n^2 of them per piece (a subnormal kt of 5e-315 beside u of
+ * 2e-8 and a bound of 4 quanta gave f_0 of 117 quanta; fricreg_aft.h's rounding) */
+#define SUBNORMAL_FLOOR(n) (64.0 * (double)((n) * (n)) * SUBNORMAL_QUANTUM)
 
 enum { JENKINS, IWAN, LIFTOFF, KINDS };
 
@@ -104,7 +108,7 @@ static void check_bound(const struct call *c, const char *what, const double *x,
 {
     for (size_t j = 0; j < c->n; j++)
         FUZZ_REQUIRE(fabs(x[j]) <= (j == 0 ? 1.0 : 2.0) * bound * (1.0 + 1e-9) + slack +
-                                       64.0 * SUBNORMAL_QUANTUM,
+                                       SUBNORMAL_FLOOR(c->n),
                      "kind %d exact %d H %d: %s[%zu] = %g beyond its bound %g (slack %g; kt %g "
                      "mu %g n0 %g kn %g u0 %g u1 %g)",
                      c->kind, c->exact, c->H, what, j, x[j], bound, slack, c->kt, c->mu, c->n0,
@@ -150,7 +154,7 @@ static void check_success(fricreg_aft *a, const struct call *c, const double *f,
         if (status == FRICREG_OK)
             for (size_t j = 0; j < n; j++)
                 FUZZ_REQUIRE(fabs(f[j] - fj[j]) <=
-                                 1e-6 * c->mu * c->n0 + slack + 64.0 * SUBNORMAL_QUANTUM,
+                                 1e-6 * c->mu * c->n0 + slack + SUBNORMAL_FLOOR(n),
                              "f[%zu] = %.17g, the plain element's %.17g", j, f[j], fj[j]);
     }
 }
