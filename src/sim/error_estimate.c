@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* error_estimate.c — fricreg_sim_set_error_estimate: an a-posteriori estimate of the error of
  * D per cycle against the Coulomb problem (eps -> 0), from companion runs on the extrapolation's
- * ladder (extrapolate.c, fr_sim_level): level 1, eps / 2 with, for fixed steps, dt / 2, and for
+ * ladder (level.c, fr_sim_level): level 1, eps / 2 with, for fixed steps, dt / 2, and for
  * adaptive ones the tolerances / TOL_SCALE; with two companions (the default) level 2 too,
  * eps / 4 and dt / 4 or the tolerances / TOL_SCALE^2.
  *
