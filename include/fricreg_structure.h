@@ -909,7 +909,8 @@ FRICREG_API int fricreg_structure_get_value(const fricreg_structure *s, int whic
  *    steps per step of s, the last shortened as run's), fricreg_structure_run_ode with fixed
  *    steps by the same stepper at dt / 2, adaptive by the same stepper with dt as its first step
  *    and rtol / 16, atol / 16 (the second companion: dt / 4, or the tolerances / 256);
- *  - the setters a run may call between steps are passed on to it: set_bounds, set_law (eps / 2
+ *  - the setters a run may call between steps are passed on to it (before it steps next, so a
+ *    refusal there fails the estimate at the next stepping call): set_bounds, set_law (eps / 2
  *    of the new eps), set_ground_accel and set_load (a caller who feeds the record step by step
  *    feeds the companion too: it reads its records at its own step ends, in between), set_newton,
  *    set_max_steps (each call of the companion's bounded as s's) and set_ode_abs_tolerances
@@ -957,7 +958,7 @@ FRICREG_API int fricreg_structure_get_peak_displacement(const fricreg_structure 
  *  ndof  in: the structure's degrees of freedom.
  *  err   out: err[ndof]; written only on success.
  *  Returns FRICREG_OK; FRICREG_ENULL if s or err is NULL; FRICREG_EINVAL when there is no
- *  estimate (the estimate off, no stepping call since set_initial with it on, a setter ended it
+ *  estimate (the estimate off, no step taken since set_initial with it on, a setter ended it
  *  (fricreg_structure_set_error_estimate), or called from the observer during a run, when the
  *  companion has not caught up); FRICREG_ESIZE if ndof is not the structure's. */
 FRICREG_API int fricreg_structure_get_peak_displacement_error(const fricreg_structure *s,

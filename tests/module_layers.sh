@@ -4,8 +4,8 @@
 # object file may call, only its own module and the modules on lower floors. So no arrow runs
 # back up and every circle stays inside one folder; and inside a folder, no circle of calls
 # between its files either (a file calls only files that do not call it back, directly or
-# round about), but in the folders of known_circles below. Also: every folder of src/ is in
-# the table, and ctx_internal.h is included only inside src/ctx/.
+# round about). Also: every folder of src/ is in the table, and ctx_internal.h is included
+# only inside src/ctx/.
 # Includes are read from the sources; calls from the object files of a built tree (nm), when
 # BUILD_DIR is given. A fixed handful of processes (find, two nm, a few awk) however many
 # files, includes and symbols: an awk per lookup took a minute.
@@ -108,12 +108,8 @@ END {
 
 # Circles of calls between the files of one folder: the files left once every file that calls
 # no file still left, or that no file still left calls, is taken away, round after round, are
-# those on a circle; each is named with the files it calls among them. structure/: its error estimate's
-# companions are driven through the public setters and runs from inside the run, which the
-# setters forward to; until that is untangled its circle may not grow beyond its twelve files.
-known_circles="structure:12"
-sort -u "$work/edges" | awk -v known="$known_circles" '
-function module(r) { sub(/\/.*/, "", r); return r }
+# those on a circle; each is named with the files it calls among them.
+sort -u "$work/edges" | awk '
 { out[$1] = out[$1] " " $2; node[$1] = 1; node[$2] = 1; from[NR] = $1; to_[NR] = $2 }
 END {
     do {
@@ -124,18 +120,11 @@ END {
         for (f in node)
             if (calls[f] == 0 || called[f] == 0) { delete node[f]; removed++ }
     } while (removed > 0)
-    split(known, pairs, " ")
-    for (i in pairs) { split(pairs[i], kv, ":"); allowed[kv[1]] = kv[2] }
-    for (f in node) count[module(f)]++
-    for (m in count) {
-        if ((m in allowed) && count[m] <= allowed[m]) continue
-        for (f in node) {
-            if (module(f) != m) continue
-            list = ""; k = split(out[f], to, " ")
-            for (i = 1; i <= k; i++) if (to[i] in node) list = list " " to[i]
-            print "FAIL: src/" f " is on a circle of calls in " m "/ (it calls" list ")"
-            fails++
-        }
+    for (f in node) {
+        list = ""; k = split(out[f], to, " ")
+        for (i = 1; i <= k; i++) if (to[i] in node) list = list " " to[i]
+        print "FAIL: src/" f " is on a circle of calls (it calls" list ")"
+        fails++
     }
     exit fails > 0
 }' || status=1

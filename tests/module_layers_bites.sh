@@ -57,7 +57,7 @@ mkdir -p "$objects/base"
 "$cc" -c "$work/src/base/circle_a.c" -o "$objects/base/circle_a.c.o" &&
     "$cc" -c "$work/src/base/circle_b.c" -o "$objects/base/circle_b.c.o" ||
     { echo "FAIL: $cc did not compile the probe"; exit 1; }
-expect "a circle inside a folder" "src/base/circle_a.c is on a circle of calls in base/ (it calls base/circle_b.c)" "$work/build"
+expect "a circle inside a folder" "src/base/circle_a.c is on a circle of calls (it calls base/circle_b.c)" "$work/build"
 
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]

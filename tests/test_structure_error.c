@@ -202,7 +202,7 @@ START_TEST(test_companion)
 }
 END_TEST
 
-/* The estimate's life: none while off, before a run, or after a model setter in a run; the
+/* The estimate's life: none while off, before a step, or after a model setter in a run; the
  * setters of a run between steps keep it (the companion got them: the same estimate as a
  * structure given them from the start); set_initial starts a new one. */
 START_TEST(test_life_cycle)
@@ -218,6 +218,9 @@ START_TEST(test_life_cycle)
     ck_assert_int_eq(fricreg_structure_run(s, 1e-2, 2.0), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_get_dissipation_error(s, 1, &err), FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_structure_set_initial(s, 1, &zero, &v0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_peak_displacement_error(s, 1, &err), FRICREG_EINVAL);
+    /* a call that takes no step makes no estimate */
+    ck_assert_int_eq(fricreg_structure_run(s, -1e-2, 1.0), FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_structure_get_peak_displacement_error(s, 1, &err), FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_structure_run(s, 1e-2, 1.0), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_get_peak_displacement_error(s, 1, &err), FRICREG_OK);

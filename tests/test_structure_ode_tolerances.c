@@ -310,11 +310,14 @@ START_TEST(test_companion)
     ck_assert_int_eq(fricreg_structure_get_dissipation(c, NC, Dc), FRICREG_OK);
     for (size_t i = 0; i < NC; i++)
         ck_assert_double_eq(err[i], 3.0 * fabs(D[i] - Dc[i]));
-    /* set tolerances reach the companion, applied at / 16 there */
+    /* set tolerances reach the companion at the next call, applied at / 16 there */
     double mine[DIM];
     for (size_t k = 0; k < DIM; k++)
         mine[k] = 1e-7 * (double)(k + 1);
     ck_assert_int_eq(fricreg_structure_set_ode_abs_tolerances(s, DIM, mine), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_MSBDF, 1e-3, 1e-6,
+                                               FRICREG_ATOL_FROM_EPS, 1.01 * T_END),
+                     FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_get_ode_abs_tolerances(s->companion, DIM, got), FRICREG_OK);
     for (size_t k = 0; k < DIM; k++)
         ck_assert_double_eq(got[k], mine[k] / 16.0);

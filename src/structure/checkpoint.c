@@ -303,7 +303,7 @@ static void put_companion(const fricreg_structure *s, void *out, size_t len)
 static size_t companion_bytes(const fricreg_structure *s)
 {
     size_t len = 0;
-    if (s->companion != NULL)
+    if (s->estimate_state == FR_ESTIMATE_ACTIVE) /* a stale one is not the run's */
         fricreg_structure_save(s->companion, NULL, &len);
     return len;
 }
@@ -396,7 +396,9 @@ int fricreg_structure_save(fricreg_structure *s, void *buf, size_t *size)
                        "sparse W (more than 64 coupled contacts): the context's factor, updated "
                        "row by row, is not carried",
                        s->m);
-    if (s->companion != NULL && fr_ctx_carried_size(s->companion->ctx, s->companion->prepared) == 0)
+    fr_estimate_sync(s); /* the companion takes the setters' changes it has not had */
+    if (s->estimate_state == FR_ESTIMATE_ACTIVE &&
+        fr_ctx_carried_size(s->companion->ctx, s->companion->prepared) == 0)
         return fr_fail(s, FRICREG_EINVAL, "save: not supported for this structure's companion");
     struct nested found;
     struct fingerprint fp;
@@ -539,5 +541,6 @@ int fricreg_structure_restore(fricreg_structure *s, const void *buf, size_t size
     s->stick_valid = 0;
     fricreg_structure_free(s->companion);
     s->companion = companion;
+    s->companion_pending = 0; /* the saved companion had every change (save passed them on) */
     return FRICREG_OK;
 }

@@ -12,14 +12,17 @@
  * without the warning) and above it; one companion (1.6's): 3 |q - q2|.
  *
  * The second companion is the first's own companion: the first runs with the estimate on and
- * one companion, so every setter passed on to the first reaches the second the same way. It
+ * one companion, so every change passed on to the first reaches the second the same way. It
  * cannot be run only where the first shows a problem: a stall is exactly a first companion
  * that agrees with the run.
  *
  * The companion is a copy of the structure (model, excitation, law at eps / 2, bounds, scheme,
  * Newton, elements, initial state) made at the first stepping call after set_initial with the
- * estimate on; the setters a run calls between steps are passed on to it (structure.c), those
- * that change what it copied end the estimate (fr_estimate_discard). */
+ * estimate on (run.c). The setters mark what they change (changed.c): a change of what it
+ * copied (the model, the scheme, the start) ends the estimate until the next run's start; the
+ * others (bounds, law, records, Newton, the step bound, the adaptive tolerances) are passed on
+ * to it before it follows the structure (fr_estimate_sync). It is stepped by the plain runs
+ * (step.c, structure_ode.c), beneath the public ones. */
 #include <float.h>
 #include <math.h>
 #include <stdarg.h>
@@ -33,13 +36,6 @@
 
 #define TOL_SCALE 16.0 /* the companion's tolerances (fricreg_sim's) */
 #define TOO_LARGE 0.1  /* an estimate above 10% of its quantity: outside the asymptotic range */
-
-void fr_peak_sample(fricreg_structure *s)
-{
-    const double *u = s->u->data;
-    for (size_t i = 0; i < s->n; i++)
-        s->peak[i] = fmax(s->peak[i], fabs(u[i]));
-}
 
 static void companion_free(fricreg_structure *s)
 {
@@ -136,6 +132,8 @@ int fr_estimate_companion(const fricreg_structure *s, fricreg_structure **out, c
 
 void fr_estimate_begin(fricreg_structure *s)
 {
+    if (s->estimate_state == FR_ESTIMATE_NONE && s->companion != NULL)
+        companion_free(s); /* stale: a setter changed what it copied */
     if (!s->estimate_on || s->estimate_state != FR_ESTIMATE_NONE || !s->fresh)
         return;
     char msg[256];
@@ -143,42 +141,82 @@ void fr_estimate_begin(fricreg_structure *s)
         estimate_failed(s, "%s", msg);
         return;
     }
+    s->companion_pending = 0; /* the copy has them */
     s->estimate_state = FR_ESTIMATE_ACTIVE;
+}
+
+/* The status of a setter passed on to the companion: a refusal ends the estimate. */
+static int passed_on(fricreg_structure *s, int status, const char *who)
+{
+    if (status != FRICREG_OK)
+        estimate_failed(s, "the companion refused %s: %s", who,
+                        fricreg_structure_errmsg(s->companion));
+    return status;
+}
+
+void fr_estimate_sync(fricreg_structure *s)
+{
+    unsigned what = s->companion_pending;
+    s->companion_pending = 0;
+    if (s->estimate_state != FR_ESTIMATE_ACTIVE || what == 0)
+        return;
+    fricreg_structure *c = s->companion;
+    int status = FRICREG_OK;
+    if (what & FR_CHANGED_BOUNDS)
+        status = passed_on(s, fricreg_structure_set_bounds(c, s->m, s->mun), "set_bounds");
+    if (status == FRICREG_OK && (what & FR_CHANGED_LAW)) /* the companion's eps: half */
+        status = passed_on(s,
+                           fricreg_structure_set_law(c, fr_ctx_law(s->ctx),
+                                                     0.5 * fr_ctx_eps(s->ctx)),
+                           "set_law");
+    if (status == FRICREG_OK && (what & FR_CHANGED_GROUND))
+        status = passed_on(s,
+                           fricreg_structure_set_ground_accel(c, s->ground.t0, s->ground.dt,
+                                                              s->ground.n, s->ground.x),
+                           "set_ground_accel");
+    if (status == FRICREG_OK && (what & FR_CHANGED_LOAD))
+        status = passed_on(s,
+                           fricreg_structure_set_load(c, s->n, s->p->data, s->load.t0, s->load.dt,
+                                                      s->load.n, s->load.x),
+                           "set_load");
+    if (status == FRICREG_OK && (what & FR_CHANGED_NEWTON))
+        status = passed_on(s, fricreg_structure_set_newton(c, s->newton_tol, s->newton_max),
+                           "set_newton");
+    if (status == FRICREG_OK && (what & FR_CHANGED_MAX_STEPS))
+        status = passed_on(s, fricreg_structure_set_max_steps(c, s->max_steps), "set_max_steps");
+    if (status == FRICREG_OK && (what & FR_CHANGED_ODE_ATOL)) /* at its tolerances / 16 */
+        passed_on(s,
+                  fricreg_structure_set_ode_abs_tolerances(
+                      c, s->ode_atol != NULL ? 2 * s->n + 2 + s->m : 0, s->ode_atol),
+                  "set_ode_abs_tolerances");
 }
 
 void fr_estimate_follow(fricreg_structure *s, int integrator, double dt, double rtol, double atol)
 {
-    fricreg_structure *c = s->companion;
-    if (s->estimate_state != FR_ESTIMATE_ACTIVE || !(s->t > c->t))
+    if (s->estimate_state != FR_ESTIMATE_ACTIVE || !(s->t > s->companion->t))
         return;
-    int status;
-    if (integrator == 0)
-        status = fricreg_structure_run(c, 0.5 * dt, s->t);
-    else if (rtol > 0.0 || atol != 0.0) /* the rule's and the set levels: c->tol_scale */
-        status = fricreg_structure_run_ode(c, integrator, dt, rtol / TOL_SCALE,
-                                           atol == FRICREG_ATOL_FROM_EPS ? FRICREG_ATOL_FROM_EPS
-                                                                         : atol / TOL_SCALE,
-                                           s->t);
-    else
-        status = fricreg_structure_run_ode(c, integrator, 0.5 * dt, 0.0, 0.0, s->t);
+    fr_estimate_sync(s);
+    if (s->estimate_state != FR_ESTIMATE_ACTIVE)
+        return;
+    fricreg_structure *c = s->companion;
+    /* The companion's call: fixed steps of dt / 2, or an adaptive run at the tolerances / 16
+     * (the rule's and the set levels: c->tol_scale). */
+    double c_dt = 0.5 * dt, c_rtol = 0.0, c_atol = 0.0;
+    if (integrator != 0 && (rtol > 0.0 || atol != 0.0)) {
+        c_dt = dt;
+        c_rtol = rtol / TOL_SCALE;
+        c_atol = atol == FRICREG_ATOL_FROM_EPS ? FRICREG_ATOL_FROM_EPS : atol / TOL_SCALE;
+    }
+    fr_estimate_begin(c); /* the second companion, at the first's first step */
+    int status = integrator == 0
+                     ? fr_structure_run_plain(c, c_dt, s->t)
+                     : fr_structure_run_ode_plain(c, integrator, c_dt, c_rtol, c_atol, s->t);
+    fr_estimate_follow(c, integrator, c_dt, c_rtol, c_atol);
     if (status != FRICREG_OK)
         estimate_failed(s, "the companion run at eps = %g failed: %s", fr_ctx_eps(c->ctx),
                         fricreg_structure_errmsg(c));
     else if (c->estimate_state == FR_ESTIMATE_FAILED) /* the second companion's failure */
         estimate_failed(s, "%s", c->estimate_msg);
-}
-
-void fr_estimate_discard(fricreg_structure *s)
-{
-    companion_free(s);
-    s->estimate_state = FR_ESTIMATE_NONE;
-}
-
-void fr_estimate_forwarded(fricreg_structure *s, int status, const char *who)
-{
-    if (status != FRICREG_OK)
-        estimate_failed(s, "the companion refused %s: %s", who,
-                        fricreg_structure_errmsg(s->companion));
 }
 
 /* The estimate of one quantity from its values on s, its companion and (with two) the
@@ -194,7 +232,7 @@ static double estimate_of(const fricreg_structure *s, double q, double q2, doubl
 static const fricreg_structure *second(const fricreg_structure *s)
 {
     const fricreg_structure *c = s->companion;
-    return c->companion != NULL ? c->companion : c;
+    return c->estimate_state == FR_ESTIMATE_ACTIVE ? c->companion : c;
 }
 
 /* A sampled peak converges with the phase of its samples against the maximum, not at an
@@ -278,8 +316,10 @@ int fricreg_structure_set_error_estimate(fricreg_structure *s, int on)
         on != FRICREG_ESTIMATE_ONE_COMPANION)
         return fr_fail(s, FRICREG_EINVAL,
                        "set_error_estimate: on = %d must be 0, 1 (two companions) or 2 (one)", on);
-    if (on != s->estimate_on) /* a companion made for another estimator */
-        fr_estimate_discard(s);
+    if (on != s->estimate_on) { /* a companion made for another estimator */
+        companion_free(s);
+        s->estimate_state = FR_ESTIMATE_NONE;
+    }
     s->estimate_on = on;
     return FRICREG_OK;
 }
@@ -300,8 +340,8 @@ static int estimate_ready(const fricreg_structure *s, size_t len, size_t expecte
 {
     if (s == NULL || out == NULL)
         return FRICREG_ENULL;
-    if (s->estimate_state == FR_ESTIMATE_NONE || s->running)
-        return FRICREG_EINVAL;
+    if (s->estimate_state == FR_ESTIMATE_NONE || s->fresh || s->running)
+        return FRICREG_EINVAL; /* no step since set_initial with the estimate on, or in a run */
     return len == expected ? FRICREG_OK : FRICREG_ESIZE;
 }
 

@@ -193,8 +193,8 @@ static int install(fricreg_structure *s, size_t me, size_t ns, int dim, cholmod_
     }
     fr_elements_free(s);
     s->el = e;
-    fr_structure_model_changed(s); /* E = J_e K_eff^-1 J_e^T and the equilibrium anew */
-    fr_structure_rates_stale(s);   /* the rates see the sticking springs */
+    fr_structure_changed(s, FR_CHANGED_MODEL); /* E = J_e K_eff^-1 J_e^T and the equilibrium anew */
+    fr_structure_rates_stale(s);               /* the rates see the sticking springs */
     return FRICREG_OK;
 }
 
@@ -216,7 +216,7 @@ static int start_setter(fricreg_structure *s, size_t me, size_t ns, int dim, siz
 static int remove_all(fricreg_structure *s)
 {
     fr_elements_free(s);
-    fr_structure_model_changed(s);
+    fr_structure_changed(s, FR_CHANGED_MODEL);
     fr_structure_rates_stale(s);
     return FRICREG_OK;
 }

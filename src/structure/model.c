@@ -10,15 +10,6 @@
 #include "base/sparse_factor.h"
 #include "structure_internal.h"
 
-void fr_structure_model_changed(fricreg_structure *s)
-{
-    s->prepared = 0;
-    s->ready = 0;
-    s->bound_scale = -1.0;  /* J may have changed */
-    s->step_dt = 0.0;       /* K_eff and W_eff are the model's too */
-    fr_estimate_discard(s); /* the run's companion copied the model it started with */
-}
-
 /* M is positive definite: CHOLMOD's Cholesky factor exists (a pivot that is not positive is
  * CHOLMOD_NOT_POSDEF). Analysed and factored here, then released: the first step factors the
  * model it gets. */
@@ -82,7 +73,7 @@ int fr_structure_install(fricreg_structure *s, int which, cholmod_sparse *A, con
         s->rayleigh = 0;
     if (which == FR_CONTACTS)
         s->contacts_set = 1;
-    fr_structure_model_changed(s);
+    fr_structure_changed(s, FR_CHANGED_MODEL);
     return FRICREG_OK;
 }
 

@@ -106,9 +106,7 @@ int fricreg_structure_set_ode_abs_tolerances(fricreg_structure *s, size_t n, con
     }
     free(s->ode_atol);
     s->ode_atol = copy;
-    if (s->companion != NULL) /* its own scale (tol_scale) applies them at tolerances / 16 */
-        fr_estimate_forwarded(s, fricreg_structure_set_ode_abs_tolerances(s->companion, n, atol),
-                              "set_ode_abs_tolerances");
+    fr_structure_changed(s, FR_CHANGED_ODE_ATOL);
     return FRICREG_OK;
 }
 

@@ -1,100 +1,21 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* step.c — stepping a fricreg_structure: the equilibrium acceleration at the start, one
  * step of the selected scheme (newmark.c, central_difference.c), the energy balance
- * (energy.c) and the counters; fricreg_structure_step and fricreg_structure_run. */
+ * (energy.c), the peaks and the counters; a single step and a run of fixed steps, plain: the
+ * public calls (run.c) add the error estimate's companions and the warning handler. */
 #include <float.h>
 #include <math.h>
 
-#include "base/sparse_ops.h"
 #include "structure_internal.h"
 
 #define STATE_LIMIT 1e100 /* |state| beyond this: diverged */
 #define MAX_RUN_STEPS 2147483648.0
 
-double fr_norm_inf(const gsl_vector *x)
+void fr_peak_sample(fricreg_structure *s)
 {
-    double m = 0.0;
-    const double *d = x->data; /* the structure's vectors are contiguous */
-    for (size_t k = 0; k < x->size; k++) {
-        double a = fabs(d[k]);
-        if (!(a <= m)) /* NaN propagates */
-            m = a;
-    }
-    return m;
-}
-
-int fr_structure_contact_forces(fricreg_structure *s, gsl_vector *f)
-{
-    int status = fricreg_ctx_eval(s->ctx, s->m, s->zdot->data, s->afree->data, f->data, NULL);
-    /* The context's inputs are the structure's own state, from validated data: one that is
-     * not finite (or an f_eq beyond range) means the state overflowed, e.g. a finite dt of
-     * 1e200 (tests/test_bad_input.c), which the headers call FRICREG_EDIVERGED. */
-    return status == FRICREG_ENONFINITE ? FRICREG_EDIVERGED : status;
-}
-
-int fr_structure_motion(fricreg_structure *s, const gsl_vector *w, const gsl_vector *v,
-                        gsl_vector *f, gsl_vector *a)
-{
-    double *y = s->yb->data;
-    fr_cfactor_forward(&s->mass, w->data, y, &s->cc);
-    fr_cfactor_project(&s->mass, y, s->afree->data, &s->cc); /* J M^-1 w */
-    fr_csc_mult_t(s->Jt, v->data, s->zdot->data);
-    int status = fr_structure_contact_forces(s, f);
-    if (status != FRICREG_OK)
-        return status;
-    fr_cfactor_lift(&s->mass, 1.0, f->data, y, &s->cc); /* M^-1 (w + J^T f) */
-    fr_cfactor_backward(&s->mass, y, a->data, &s->cc);
-    return FRICREG_OK;
-}
-
-void fr_structure_spread_norms(fricreg_structure *s, double scale, const gsl_vector *G,
-                               double *norm2, double *norm_inf)
-{
-    double *r = s->spread->data;
-    const SuiteSparse_long *Jp = s->Jt->p, *Ji = s->Jt->i;
-    fr_csc_mult_add(s->Jt, scale, G->data, r);
-    struct fr_sumsq sum = {0.0, 0.0};
-    double big = 0.0;
-    /* Each touched entry once: read and zeroed at its first visit. */
-    for (size_t i = 0; i < s->m; i++)
-        for (SuiteSparse_long p = Jp[i]; p < Jp[i + 1]; p++) {
-            double x = r[Ji[p]];
-            r[Ji[p]] = 0.0;
-            fr_sumsq_add(&sum, x);
-            if (!(fabs(x) <= big)) /* NaN propagates */
-                big = fabs(x);
-        }
-    *norm2 = fr_sumsq_root(&sum);
-    *norm_inf = big;
-}
-
-/* w = p~ - C v - K u; with Rayleigh's C, p~ - K (u + a1 v) - a0 M v: one pass over K, not
- * two (with a lumped M the second product is a diagonal's). */
-void fr_structure_net_force(const fricreg_structure *s, const gsl_vector *ptil, const gsl_vector *u,
-                            const gsl_vector *v, gsl_vector *w)
-{
-    if (!s->rayleigh) {
-        fr_sym_mult_pair(ptil->data, s->Cd, -1.0, v->data, s->K, -1.0, u->data, w->data);
-        return;
-    }
-    fr_sym_mult_combined(ptil->data, s->K, -1.0, u->data, -s->a1, v->data, w->data);
-    if (s->a0 != 0.0)
-        fr_sym_mult(s->M, -s->a0, v->data, 1.0, w->data);
-}
-
-int fr_structure_equilibrium(fricreg_structure *s)
-{
-    fr_structure_effective_load(s, s->t, s->ptil);
-    fr_structure_net_force(s, s->ptil, s->u, s->v, s->work);
-    int status = fr_elements_equilibrium(s, s->work);
-    if (status != FRICREG_OK)
-        return status;
-    status = fr_structure_motion(s, s->work, s->v, s->f, s->a);
-    if (status != FRICREG_OK)
-        return fr_fail(s, status, "step: friction at t = %g: %s", s->t, fricreg_ctx_errmsg(s->ctx));
-    s->stick_valid = 0; /* bounds, law or model may have changed */
-    s->ready = 1;
-    return FRICREG_OK;
+    const double *u = s->u->data;
+    for (size_t i = 0; i < s->n; i++)
+        s->peak[i] = fmax(s->peak[i], fabs(u[i]));
 }
 
 static void swap(gsl_vector **x, gsl_vector **y)
@@ -175,37 +96,17 @@ static int check_dt(fricreg_structure *s, const char *name, double dt)
     return FRICREG_OK;
 }
 
-int fricreg_structure_step(fricreg_structure *s, double dt)
+int fr_structure_step_plain(fricreg_structure *s, double dt)
 {
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, "step");
     int status = check_dt(s, "step", dt);
     if (status != FRICREG_OK)
         return status;
     double t1 = s->t + dt;
     if (!(t1 > s->t))
         return fr_fail(s, FRICREG_EINVAL, "step: dt = %g is lost against t = %g", dt, s->t);
-    fr_estimate_begin(s);
     status = step_to(s, t1);
     if (status == FRICREG_OK)
         s->clock_k = 0; /* off any run's grid */
-    fr_estimate_follow(s, 0, dt, 0.0, 0.0);
-    return status;
-}
-
-static int run(fricreg_structure *s, double dt, double t_end);
-
-/* The run's warnings go to the handler at its end, whether or not it failed. */
-int fricreg_structure_run(fricreg_structure *s, double dt, double t_end)
-{
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, "run");
-    int status = run(s, dt, t_end);
-    fr_structure_judge_for_handler(s);
     return status;
 }
 
@@ -224,7 +125,7 @@ static void run_grid(const fricreg_structure *s, double dt, double *t0, int64_t 
     }
 }
 
-static int run(fricreg_structure *s, double dt, double t_end)
+int fr_structure_run_plain(fricreg_structure *s, double dt, double t_end)
 {
     int status = check_dt(s, "run", dt);
     if (status != FRICREG_OK)
@@ -243,7 +144,6 @@ static int run(fricreg_structure *s, double dt, double t_end)
     if (steps > MAX_RUN_STEPS)
         return fr_fail(s, FRICREG_EINVAL, "run: %g steps of dt = %g exceed 2^31", steps, dt);
     int64_t nsteps = k0 + (steps < 1.0 ? 1 : (int64_t)steps);
-    fr_estimate_begin(s);
     s->running = 1;
     for (int64_t k = k0 + 1; k <= nsteps && status == FRICREG_OK; k++) {
         double t1 = k == nsteps ? t_end : t0 + (double)k * dt;
@@ -261,7 +161,6 @@ static int run(fricreg_structure *s, double dt, double t_end)
             break; /* the observer asked to stop: not an error */
     }
     s->running = 0;
-    fr_estimate_follow(s, 0, dt, 0.0, 0.0); /* to where the run ended, failed or stopped */
     return status;
 }
 

@@ -146,9 +146,7 @@ int fricreg_structure_set_max_steps(fricreg_structure *s, int64_t max_steps)
                        "set_max_steps: max_steps = %lld must be >= 0 (0: no bound)",
                        (long long)max_steps);
     s->max_steps = max_steps;
-    if (s->companion != NULL)
-        fr_estimate_forwarded(s, fricreg_structure_set_max_steps(s->companion, max_steps),
-                              "set_max_steps");
+    fr_structure_changed(s, FR_CHANGED_MAX_STEPS);
     return FRICREG_OK;
 }
 
@@ -180,7 +178,7 @@ int fricreg_structure_set_rayleigh(fricreg_structure *s, double a0, double a1)
     s->rayleigh = 1;
     s->a0 = a0;
     s->a1 = a1;
-    fr_structure_model_changed(s);
+    fr_structure_changed(s, FR_CHANGED_MODEL);
     return FRICREG_OK;
 }
 
@@ -201,10 +199,7 @@ int fricreg_structure_set_bounds(fricreg_structure *s, size_t m, const double mu
     if (status != FRICREG_OK)
         return ctx_failed(s, status);
     memcpy(s->mun, mun, m * sizeof *mun);
-    s->bound_scale = -1.0;
-    s->ready = 0; /* W is unchanged: only the equilibrium at t is recomputed */
-    if (s->companion != NULL)
-        fr_estimate_forwarded(s, fricreg_structure_set_bounds(s->companion, m, mun), "set_bounds");
+    fr_structure_changed(s, FR_CHANGED_BOUNDS);
     return FRICREG_OK;
 }
 
@@ -217,10 +212,7 @@ int fricreg_structure_set_law(fricreg_structure *s, int law, double eps)
     int status = fricreg_ctx_set_law(s->ctx, law, eps);
     if (status != FRICREG_OK)
         return ctx_failed(s, status);
-    s->ready = 0;
-    if (s->companion != NULL) /* the companion's eps stays half the structure's */
-        fr_estimate_forwarded(s, fricreg_structure_set_law(s->companion, law, 0.5 * eps),
-                              "set_law");
+    fr_structure_changed(s, FR_CHANGED_LAW);
     return FRICREG_OK;
 }
 
@@ -247,7 +239,7 @@ int fricreg_structure_set_influence(fricreg_structure *s, size_t ndof, const dou
     if (status != FRICREG_OK)
         return status;
     memcpy(s->r->data, r, ndof * sizeof *r);
-    fr_structure_model_changed(s);
+    fr_structure_changed(s, FR_CHANGED_MODEL);
     return FRICREG_OK;
 }
 
@@ -291,10 +283,8 @@ int fricreg_structure_set_ground_accel(fricreg_structure *s, double t0, double d
     /* The step's start keeps the load it began with (a holds the equation there): the
      * record is read at step ends only, so a caller may feed it step by step. */
     int status = set_record(s, "set_ground_accel", &s->ground, t0, dt_rec, n, ag);
-    if (status == FRICREG_OK && s->companion != NULL)
-        fr_estimate_forwarded(s,
-                              fricreg_structure_set_ground_accel(s->companion, t0, dt_rec, n, ag),
-                              "set_ground_accel");
+    if (status == FRICREG_OK)
+        fr_structure_changed(s, FR_CHANGED_GROUND);
     return status;
 }
 
@@ -312,10 +302,7 @@ int fricreg_structure_set_load(fricreg_structure *s, size_t ndof, const double p
     if (status != FRICREG_OK)
         return status;
     memcpy(s->p->data, p, ndof * sizeof *p);
-    if (s->companion != NULL)
-        fr_estimate_forwarded(s,
-                              fricreg_structure_set_load(s->companion, ndof, p, t0, dt_rec, n, g),
-                              "set_load");
+    fr_structure_changed(s, FR_CHANGED_LOAD);
     return FRICREG_OK; /* read at step ends only, as the ground motion */
 }
 
@@ -346,7 +333,7 @@ int fricreg_structure_set_initial(fricreg_structure *s, size_t ndof, const doubl
     fr_warnings_forget_delivered(&s->warnings); /* a new run: its warnings are news */
     for (size_t i = 0; i < ndof; i++)
         s->peak[i] = fabs(u0[i]);
-    fr_estimate_discard(s); /* a new run: a new companion at its first step */
+    fr_structure_changed(s, FR_CHANGED_INITIAL); /* a new companion at its first step */
     return FRICREG_OK;
 }
 
@@ -370,8 +357,7 @@ int fricreg_structure_set_newmark(fricreg_structure *s, double beta, double gamm
     s->alpha = 0.0;
     s->beta = beta;
     s->gamma = gamma;
-    s->step_dt = 0.0;
-    fr_estimate_discard(s);
+    fr_structure_changed(s, FR_CHANGED_SCHEME);
     return FRICREG_OK;
 }
 
@@ -389,8 +375,7 @@ int fricreg_structure_set_hht(fricreg_structure *s, double alpha)
     s->alpha = alpha;
     s->beta = (1.0 - alpha) * (1.0 - alpha) / 4.0;
     s->gamma = 0.5 - alpha;
-    s->step_dt = 0.0;
-    fr_estimate_discard(s);
+    fr_structure_changed(s, FR_CHANGED_SCHEME);
     return FRICREG_OK;
 }
 
@@ -401,7 +386,7 @@ int fricreg_structure_set_central_difference(fricreg_structure *s)
     if (s->running)
         return fr_structure_busy(s, "set_central_difference");
     s->scheme = FR_SCHEME_CENTRAL;
-    fr_estimate_discard(s);
+    fr_structure_changed(s, FR_CHANGED_SCHEME);
     return FRICREG_OK;
 }
 
@@ -420,9 +405,7 @@ int fricreg_structure_set_newton(fricreg_structure *s, double tol, int max_iter)
                        tol, max_iter);
     s->newton_tol = tol;
     s->newton_max = max_iter;
-    if (s->companion != NULL)
-        fr_estimate_forwarded(s, fricreg_structure_set_newton(s->companion, tol, max_iter),
-                              "set_newton");
+    fr_structure_changed(s, FR_CHANGED_NEWTON);
     return FRICREG_OK;
 }
 
@@ -442,6 +425,19 @@ double fr_record_at(const struct fr_record *rec, double t)
         return rec->x[rec->n - 1];
     double w = pos - (double)k;
     return (1.0 - w) * rec->x[k] + w * rec->x[k + 1];
+}
+
+/* The record's peak |a_g| and its peak velocity |integral of a_g| (trapezoidal from 0). */
+void fr_record_peaks(const struct fr_record *rec, double *pga, double *pgv)
+{
+    double v = 0.0;
+    *pga = rec->n > 0 ? fabs(rec->x[0]) : 0.0;
+    *pgv = 0.0;
+    for (size_t k = 1; k < rec->n; k++) {
+        v += 0.5 * (rec->x[k - 1] + rec->x[k]) * rec->dt;
+        *pga = fmax(*pga, fabs(rec->x[k]));
+        *pgv = fmax(*pgv, fabs(v));
+    }
 }
 
 void fr_structure_effective_load(const fricreg_structure *s, double t, gsl_vector *ptil)
@@ -508,7 +504,7 @@ int fricreg_structure_get_value(const fricreg_structure *s, int which, double *v
         *value = e->initial + e->input - kinetic - strain - e->viscous - e->friction - e->jenkins;
         break;
     case FRICREG_SVALUE_INITIAL: *value = e->initial; break;
-    case FRICREG_SVALUE_GROUND_PGV: *value = fr_ground_pgv(s); break;
+    case FRICREG_SVALUE_GROUND_PGV: fr_record_peaks(&s->ground, &(double){0}, value); break;
     case FRICREG_SVALUE_JENKINS: *value = e->jenkins; break;
     default: return FRICREG_EINVAL;
     }

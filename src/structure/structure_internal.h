@@ -1,9 +1,15 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* structure_internal.h — the structure's layout, shared by its files: structure.c (life cycle,
- * setters, getters), model.c (the model matrices), prepare.c (the set-up of a model),
- * newmark.c and newton_matrix.c (the implicit step), central_difference.c, step.c (stepping),
- * structure_ode.c (GSL's steppers), guard.c (the step guard), energy.c (the balance),
- * jenkins.c (Jenkins elements) and joint_step.c (elements beside contacts). */
+/* structure_internal.h — the structure's layout, shared by its files. Each calls only files
+ * above it in this list, never one below (tests/module_layers.sh): busy.c, changed.c (the
+ * setters' one hook), contact_factor.c, joint_storage.c, masked_factor.c, step_pattern.c,
+ * warn_track.c (what the warnings judge, as the run steps); guard.c (the step guard), model.c
+ * (the model matrices), newton_matrix.c, ode_tolerances.c; fundamental_frequency.c, jenkins.c
+ * (Jenkins elements), prepare.c (the set-up of a model), step_newton.c, structure_gsl.c;
+ * contact_step.c, energy.c (the balance); structure.c (life cycle, setters, getters);
+ * forces.c (the forces of a state); central_difference.c, joint_step.c (elements beside
+ * contacts); newmark.c; step.c (stepping, plain); structure_ode.c (GSL's steppers, plain);
+ * error_estimate.c (the companions, stepped plain); checkpoint.c, warnings.c (the checks);
+ * run.c (the public stepping calls). */
 #ifndef FRICREG_STRUCTURE_INTERNAL_H
 #define FRICREG_STRUCTURE_INTERNAL_H
 
@@ -56,7 +62,7 @@ struct fr_energy {
  * With a normal law too (the 3-D contact element: x, y, n) the coordinates are the 2 me
  * tangential ones, then the me normal ones (nc = 3 me), and a tangential row k also has
  * dfe/dg in tagn[k] at column fr_elements_normal_column. */
-/* The joint step's dense storage (joint_step.c), for elements beside contacts of bound > 0:
+/* The joint step's dense storage (joint_storage.c), for elements beside contacts of bound > 0:
  * m contacts, nc element coordinates, dim = m + nc; row-major. */
 struct fr_joint {
     size_t m, nc, dim;
@@ -212,10 +218,11 @@ struct fricreg_structure {
     /* The error estimate (error_estimate.c): a companion structure at eps / 2 stepped alongside
      * at half the step (or tolerances / 16), made at the run's first step; with two companions
      * (estimate_on = FRICREG_ESTIMATE_TWO_COMPANIONS) the companion has its own, at eps / 4. */
-    int estimate_on;    /* enum fricreg_error_estimate */
-    int estimate_state; /* FR_ESTIMATE_* */
-    fricreg_structure *companion;
-    char estimate_msg[256]; /* why the estimate failed (FR_ESTIMATE_FAILED) */
+    int estimate_on;              /* enum fricreg_error_estimate */
+    int estimate_state;           /* FR_ESTIMATE_* */
+    fricreg_structure *companion; /* while ACTIVE; else NULL, or stale until the next step */
+    char estimate_msg[256];       /* why the estimate failed (FR_ESTIMATE_FAILED) */
+    unsigned companion_pending;   /* enum fr_change: set since the companion last followed */
 };
 
 enum {
@@ -239,6 +246,9 @@ int fr_structure_busy(fricreg_structure *s, const char *who);
  * which hands the handler the warnings it has not had since set_initial (warnings.c). */
 void fr_structure_judge_for_handler(fricreg_structure *s);
 double fr_record_at(const struct fr_record *rec, double t);
+/* A record's peak |x| and the peak of its integral (trapezoidal from t0): for the ground
+ * acceleration, the peak ground acceleration and velocity; 0 without samples. */
+void fr_record_peaks(const struct fr_record *rec, double *peak, double *peak_integral);
 void fr_structure_effective_load(const fricreg_structure *s, double t, gsl_vector *ptil);
 
 /* model.c: installs A as the model matrix `which` (FR_MASS, FR_STIFFNESS, FR_DAMPING: n x n,
@@ -246,9 +256,25 @@ void fr_structure_effective_load(const fricreg_structure *s, double t, gsl_vecto
  * positive definite, every contact moving); takes A, freed on failure too. The message of a
  * failure is led by who. */
 int fr_structure_install(fricreg_structure *s, int which, cholmod_sparse *A, const char *who);
-/* After every model change: the set-up, the equilibrium at t and K_eff are redone at the next
- * step. */
-void fr_structure_model_changed(fricreg_structure *s);
+
+/* changed.c: what a setter changed, for fr_structure_changed. The changes to what the error
+ * estimate's companion copied (FR_CHANGES_RECOPIED) end the estimate until the next run's start;
+ * the others are passed on to the companion at the next stepping call (fr_estimate_sync). */
+enum fr_change {
+    FR_CHANGED_MODEL = 1u << 0,   /* M, K, C, J, Rayleigh, the elements: the set-up anew */
+    FR_CHANGED_SCHEME = 1u << 1,  /* Newmark, HHT or central difference: K_eff anew */
+    FR_CHANGED_INITIAL = 1u << 2, /* set_initial: a new run */
+    FR_CHANGED_BOUNDS = 1u << 3,  /* the equilibrium at t anew */
+    FR_CHANGED_LAW = 1u << 4,     /* the equilibrium at t anew; the companion's eps is half */
+    FR_CHANGED_NEWTON = 1u << 5,  /* and those below: read at the next step */
+    FR_CHANGED_MAX_STEPS = 1u << 6,
+    FR_CHANGED_ODE_ATOL = 1u << 7,
+    FR_CHANGED_GROUND = 1u << 8,
+    FR_CHANGED_LOAD = 1u << 9
+};
+#define FR_CHANGES_RECOPIED (FR_CHANGED_MODEL | FR_CHANGED_SCHEME | FR_CHANGED_INITIAL)
+/* The one hook of every setter that changes the structure: `what` an OR of enum fr_change. */
+void fr_structure_changed(fricreg_structure *s, unsigned what);
 
 /* prepare.c: the set-up of a model at its first step (the damping in force, M's factor, W into
  * the context, M r, the force scale); and am M + ac C + ak K, the upper triangle, or NULL when
@@ -284,11 +310,23 @@ static inline double fr_merit_pair(double a, double b)
     return isinf(sum) ? hypot(a, b) : sqrt(sum);
 }
 
-/* step.c */
-double fr_norm_inf(const gsl_vector *x);
+/* step.c: one step of dt, and a run of fixed steps dt to t_end, plain: the public calls'
+ * checks and results but the error estimate and the warning handler (run.c). peak_sample:
+ * the peaks take in the current state. */
+int fr_structure_step_plain(fricreg_structure *s, double dt);
+int fr_structure_run_plain(fricreg_structure *s, double dt, double t_end);
+void fr_peak_sample(fricreg_structure *s);
 /* The observer (if any) at time t with u[n], v[n], f[m]: 1 if it asks to stop. */
 int fr_structure_observe(fricreg_structure *s, double t, const double u[], const double v[],
                          const double f[]);
+/* structure_ode.c: fricreg_structure_run_ode, plain (as step.c's). */
+int fr_structure_run_ode_plain(fricreg_structure *s, int integrator, double dt, double rtol,
+                               double atol, double t_end);
+
+/* forces.c */
+double fr_norm_inf(const gsl_vector *x);
+/* The acceleration and friction at t from the equation of motion (the elements' forces at
+ * equilibrium with the state): a step's start after set_initial, a setter or run_ode. */
 int fr_structure_equilibrium(fricreg_structure *s);
 /* The context's forces f[m] at s->zdot and s->afree: FRICREG_OK, or the context's status (an
  * input that is not finite, which the structure's own state made: FRICREG_EDIVERGED). */
@@ -352,14 +390,12 @@ double fr_structure_newton_rate(const fricreg_structure *s);
 int fr_structure_guard(fricreg_structure *s, const struct fr_integrator *integ, double dt,
                        const char *who);
 
-/* warnings.c: what a step of length dt (0: an adaptive one) shows the checks, ode for one of
- * run_ode's (GSL's schemes: their energy balance is not exact); reset with the run
- * (set_initial). */
+/* warn_track.c: what a step of length dt (0: an adaptive one) shows the checks (warnings.c),
+ * ode for one of run_ode's (GSL's schemes: their energy balance is not exact); reset with the
+ * run (set_initial). */
 void fr_warn_track_step(fricreg_structure *s, double dt, int ode);
 void fr_warn_track_reset(fricreg_structure *s);
 void fr_warn_track_ode_tolerances(fricreg_structure *s, double rtol, double atol);
-/* The ground record's peak velocity max |integral of a_g dt| (trapezoidal; 0 without one). */
-double fr_ground_pgv(const fricreg_structure *s);
 
 /* jenkins.c: the elements' part of the step. elements_equilibrium: fe at q = J_e u from wc
  * (committed: the mapping is idempotent), w -= J_e^T fe. elements_explicit: fe1, wt at
@@ -410,18 +446,19 @@ double fr_elements_strain(const fricreg_structure *s);
 /* Some contact has a bound > 0 beside elements: the step is joint_step.c's. */
 int fr_elements_joint(const fricreg_structure *s);
 
-/* joint_step.c: the step's Newton over the contacts' and the elements' forces together, with
- * newmark.c's predictor formed at (f = 0, fe = fe at t): z0, a0, e->q0. allocate: the dense
- * storage for m contacts and nc coordinates (kept if the sizes hold), 0 when out of memory;
- * compliances: W_eff and W dense from the factors (C and E are jenkins.c's); newton: from the
- * forces at t, or guess[m] (the contacts' stick guess, NULL: none) with the elements' at t,
- * until both residuals' largest entries are within tol; the forces into s->fk and e->fe1, the
- * law's at them into s->f1, the sliders' trial state at them. */
+/* joint_storage.c: allocate: the dense storage for m contacts and nc coordinates (kept if the
+ * sizes hold), 0 when out of memory; compliances: W_eff and W dense from the factors (C and E
+ * are jenkins.c's). */
 int fr_joint_allocate(struct fr_joint *j, size_t m, size_t nc);
 void fr_joint_compliances(fricreg_structure *s);
+void fr_joint_free(struct fr_joint *j);
+/* joint_step.c: the step's Newton over the contacts' and the elements' forces together, with
+ * newmark.c's predictor formed at (f = 0, fe = fe at t): z0, a0, e->q0; from the forces at t,
+ * or guess[m] (the contacts' stick guess, NULL: none) with the elements' at t, until both
+ * residuals' largest entries are within tol; the forces into s->fk and e->fe1, the law's at
+ * them into s->f1, the sliders' trial state at them. */
 int fr_joint_newton(fricreg_structure *s, double tol, const double guess[], int *converged,
                     int *iters);
-void fr_joint_free(struct fr_joint *j);
 
 /* energy.c */
 void fr_energy_reset(fricreg_structure *s);
@@ -431,23 +468,19 @@ void fr_energy_step(fricreg_structure *s, const gsl_vector *u1, const gsl_vector
 double fr_energy_kinetic(const fricreg_structure *s);
 double fr_energy_strain(const fricreg_structure *s);
 
-/* error_estimate.c. peak_sample: the peaks take in the current state. estimate_begin: at a
- * stepping call's start, makes the companion if the estimate is on and the run starts there.
- * estimate_follow: at the call's end, steps the companion to the structure's time with the
- * call's scheme: fixed steps dt / 2 (integrator 0: the structure's own scheme), an adaptive
- * GSL run the tolerances / 16. estimate_discard: set_initial, or a setter that changed what
- * the companion copied (the model, the scheme): no estimate until the next run's start.
- * estimate_forwarded: the companion's status of a setter passed on to it (bounds, law,
- * records, Newton, the adaptive bound); a failure makes the estimate a failed one. */
-void fr_peak_sample(fricreg_structure *s);
+/* error_estimate.c. estimate_begin: at a stepping call's start, makes the companion if the
+ * estimate is on and the run starts there (and frees a stale one). estimate_follow: at the
+ * call's end, passes the setters' changes on (estimate_sync) and steps the companion to the
+ * structure's time with the call's scheme: fixed steps dt / 2 (integrator 0: the structure's
+ * own scheme), an adaptive GSL run the tolerances / 16; a refusal or a failure makes the
+ * estimate a failed one. estimate_sync: checkpoint.c's too, before a save. */
 void fr_estimate_begin(fricreg_structure *s);
 /* A new companion of s, a copy of its configuration and state as fr_estimate_begin makes it,
  * into *out: FRICREG_OK, or FRICREG_ENOMEM and the companion's failure's message into
  * msg[256] (nothing made). */
 int fr_estimate_companion(const fricreg_structure *s, fricreg_structure **out, char msg[]);
 void fr_estimate_follow(fricreg_structure *s, int integrator, double dt, double rtol, double atol);
-void fr_estimate_discard(fricreg_structure *s);
-void fr_estimate_forwarded(fricreg_structure *s, int status, const char *who);
+void fr_estimate_sync(fricreg_structure *s);
 void fr_estimate_check(fricreg_structure *s); /* warnings.c's check of the estimate */
 /* jenkins.c: a copy of src's elements on dst (the companion), sliders at w = 0. */
 int fr_elements_clone(fricreg_structure *dst, const fricreg_structure *src);

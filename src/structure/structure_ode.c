@@ -195,24 +195,8 @@ static int integrate(fricreg_structure *s, struct ode_run *run, gsl_odeiv2_drive
     return FRICREG_OK;
 }
 
-static int run_ode(fricreg_structure *s, int integrator, double dt, double rtol, double atol,
-                   double t_end);
-
-/* The run's warnings go to the handler at its end, whether or not it failed. */
-int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, double rtol,
-                              double atol, double t_end)
-{
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, "run_ode");
-    int status = run_ode(s, integrator, dt, rtol, atol, t_end);
-    fr_structure_judge_for_handler(s);
-    return status;
-}
-
-static int run_ode(fricreg_structure *s, int integrator, double dt, double rtol, double atol,
-                   double t_end)
+int fr_structure_run_ode_plain(fricreg_structure *s, int integrator, double dt, double rtol,
+                               double atol, double t_end)
 {
     const struct fr_integrator *integ = fr_integrator_find(integrator);
     if (integ == NULL)
@@ -325,7 +309,6 @@ static int run_ode(fricreg_structure *s, int integrator, double dt, double rtol,
     y[2 * s->n + 1] = s->energy.viscous;
     memcpy(y + 2 * s->n + 2, s->energy.per_contact, s->m * sizeof *y);
 
-    fr_estimate_begin(s);
     s->running = 1;
     status = integrate(s, &run, d, integ, adaptive, dt, t_end, y);
     s->running = 0;
@@ -340,7 +323,6 @@ static int run_ode(fricreg_structure *s, int integrator, double dt, double rtol,
     s->fresh = 0;
     s->ready = 0;   /* the next step takes its acceleration from the equation of motion */
     s->clock_k = 0; /* off fricreg_structure_run's grid */
-    fr_estimate_follow(s, integrator, dt, rtol, atol);
     if (status == FRICREG_OK)
         return fr_structure_equilibrium(s);
     /* Failed after some steps: the state is the last accepted step's, and so are a and f, the
