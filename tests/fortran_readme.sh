@@ -1,9 +1,11 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-3.0-or-later
-# fortran/README.md names every binding: each type-bound procedure of module fricreg
-# (fricreg.F90) in its type's rows of the table (those from the row that names the type in bold
-# to the next bold row), as `name(` or `obj%name(`; each name of the module's `public ::`
-# lists (types, procedures, the iso_c_binding names it passes on); and each F77 entry point (fricreg_f77.f90, fricreg_sim_f77.f90,
+# fortran/README.md names every binding: each type-bound procedure of module fricreg (its
+# types are in the object files fortran/*.F90 beside fricreg.F90, which re-exports them) in its
+# type's rows of the table (those from the row that names the type in bold to the next bold
+# row), as `name(` or `obj%name(`; each name of the `public ::` lists of module fricreg
+# (fricreg.F90: types, procedures, the iso_c_binding names it passes on); and each F77 entry
+# point (fricreg_f77.f90, fricreg_sim_f77.f90,
 # fricreg_joints_f77.f90, fricreg_structure_f77.f90, fricreg_hb_f77.f90, fricreg_f77_check.f90,
 # fricreg_warnings_f77.f90)
 # as `FRNAME(`, named once only across
@@ -13,6 +15,10 @@
 root=$1
 readme=$root/fortran/README.md module=$root/fortran/fricreg.F90
 [ -f "$readme" ] && [ -f "$module" ] || { echo "FAIL: no $readme or $module"; exit 1; }
+# The object files of module fricreg, after fricreg.F90: every other .F90 of fortran/.
+objects=
+for f in "$root"/fortran/*.F90; do [ "$f" = "$module" ] || objects="$objects $f"; done
+nmodule=$(($(echo "$objects" | wc -w) + 1))
 
 # The F77 files, in this order; a missing one fails (awk is given those that exist).
 f77_files="fricreg_f77.f90 fricreg_joints_f77.f90 fricreg_sim_f77.f90 fricreg_structure_f77.f90 fricreg_hb_f77.f90 fricreg_f77_check.f90 fricreg_warnings_f77.f90"
@@ -21,19 +27,21 @@ for f in $f77_files; do
     if [ -f "$root/fortran/$f" ]; then present="$present $root/fortran/$f"; else missing="$missing $f"; fi
 done
 # shellcheck disable=SC2086 # the files are words
-awk -v missing="$missing" '
+awk -v missing="$missing" -v nmodule="$nmodule" '
 function fail(what) { fails_text = fails_text "FAIL: " what "\n"; fails++ }
-FILENAME == ARGV[1] { readme[++nreadme] = $0; next }
-FILENAME == ARGV[2] {
-    # "type procedure" for each public type-bound procedure (not `procedure, private`)
+FNR == 1 { nfile++ }
+nfile == 1 { readme[++nreadme] = $0; next }
+nfile <= 1 + nmodule {
+    # "type procedure" for each public type-bound procedure (not `procedure, private`, nor the
+    # `procedure, non_overridable` helpers of fricreg_object, public for the object files only)
     if ($0 ~ /^ *type(, *(abstract|extends\([a-z_]*\)))* *:: *fricreg_[a-z_]*/) t = $NF
     if ($0 ~ /^ *end type/) t = ""
     if (t != "" && $0 ~ /^ *procedure *::/) {
         n = $0; sub(/^ *procedure *:: */, "", n); sub(/[ =].*/, "", n)
         bound_type[++nbound] = t; bound_name[nbound] = n
     }
-    # the names of the `public ::` lists, continued lines (&) too
-    if ($0 ~ /public *::/) p = 1
+    # the names of the `public ::` lists of module fricreg, continued lines (&) too
+    if (nfile == 2 && $0 ~ /public *::/) p = 1
     if (p) {
         line = $0; sub(/!.*/, "", line); sub(/.*public *:: */, "", line)
         p = (line ~ /&[ \t]*$/)
@@ -63,7 +71,7 @@ function type_rows_have(t, name,    i, inside, any, line) {
     return any ? 0 : -1
 }
 END {
-    if (nbound == 0) fail("no type-bound procedures found in " ARGV[2])
+    if (nbound == 0) fail("no type-bound procedures found in " ARGV[2] " and the object files")
     for (i = 1; i <= nbound; i++) {
         checked++
         r = type_rows_have(bound_type[i], bound_name[i])
@@ -97,4 +105,4 @@ END {
     exit fails > 0
 }
 function index_in_readme(s,    i) { for (i = 1; i <= nreadme; i++) if (index(readme[i], s)) return 1; return 0 }
-' "$readme" "$module" $present
+' "$readme" "$module" $objects $present

@@ -109,10 +109,13 @@ if [ "$fc" != "-" ]; then
     # 4. Fortran from the installed module sources, compiled in the order fortran/README.md
     #    gives, as a compiler that cannot read the installed .mod files would.
     fsrc=$prefix/include/fricreg/src
-    order="fricreg_constants.f90 fricreg_c.f90 fricreg.F90 fricreg_f77.f90"
+    objects="fricreg_base.F90 fricreg_laws.F90 fricreg_ctx.F90 fricreg_disk_ctx.F90"
+    objects="$objects fricreg_jenkins.F90 fricreg_iwan.F90 fricreg_aft.F90"
+    order="fricreg_constants.f90 fricreg_c.f90 $objects fricreg.F90 fricreg_f77.f90"
     order="$order fricreg_f77_check.f90 fricreg_joints_f77.f90" sim=""
     if [ -f "$fsrc/fricreg_sim_c.f90" ]; then
-        order="fricreg_constants.f90 fricreg_c.f90 fricreg_sim_c.f90 fricreg.F90"
+        objects="$objects fricreg_sim.F90 fricreg_exact.F90 fricreg_structure.F90 fricreg_hb.F90"
+        order="fricreg_constants.f90 fricreg_c.f90 fricreg_sim_c.f90 $objects fricreg.F90"
         order="$order fricreg_f77.f90 fricreg_f77_check.f90 fricreg_joints_f77.f90"
         order="$order fricreg_sim_f77.f90"
         order="$order fricreg_structure_f77.f90 fricreg_hb_f77.f90 fricreg_warnings_f77.f90"
