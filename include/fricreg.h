@@ -155,6 +155,25 @@ enum fricreg_sparse_flags {
     FRICREG_SPARSE_LOWER = 4       /**< symmetric, given by its lower triangle (column <= row) */
 };
 
+/** How a matrix is stored for the one setter of each model matrix, fricreg_structure_set_matrix
+ *  and fricreg_hb_set_matrix: one of these in the format argument, the compressed ones
+ *  combined with | with enum fricreg_sparse_flags (FRICREG_MATRIX_CSC | FRICREG_SPARSE_ONE_BASED
+ *  is what Fortran codes hold). Since 1.7; values fixed forever. */
+enum fricreg_matrix_format {
+    FRICREG_MATRIX_DENSE = 0, /**< values[nrows ncols] row-major; ptr and ind NULL */
+    FRICREG_MATRIX_CSR = 8,   /**< compressed sparse rows: ptr[nrows + 1], ind[nnz] columns */
+    FRICREG_MATRIX_CSC = 16   /**< compressed sparse columns: ptr[ncols + 1], ind[nnz] rows */
+};
+
+/** Which model matrix fricreg_structure_set_matrix and fricreg_hb_set_matrix set. Since 1.7;
+ *  values fixed forever. */
+enum fricreg_model_matrix {
+    FRICREG_MASS = 1,      /**< M, ndof x ndof, symmetric positive definite (mass units) */
+    FRICREG_STIFFNESS = 2, /**< K, ndof x ndof, symmetric (force per length) */
+    FRICREG_DAMPING = 3,   /**< C, ndof x ndof, symmetric (force per velocity) */
+    FRICREG_CONTACTS = 4   /**< J, m x ndof: contact i's velocity J_i v (a structure's only) */
+};
+
 /** \} */
 
 /* ---- Friction laws ----------------------------------------------------------------------- */

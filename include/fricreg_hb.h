@@ -196,6 +196,32 @@ FRICREG_API int fricreg_hb_set_damping_csc(fricreg_hb *hb, size_t ndof, int flag
                                            const int64_t colptr[], const int64_t rowind[],
                                            const double values[]);
 
+/** Set one model matrix, in any storage: the one setter of M, K and C, as
+ *  fricreg_structure_set_matrix's (the same arguments, the structure's J aside), of which
+ *  fricreg_hb_set_mass, _set_stiffness, _set_damping and their _csc forms are each one case
+ *  (same checks and results; their messages name them, this one's "set_matrix"). A compressed
+ *  matrix makes the model sparse, as fricreg_hb_set_mass_csc. Copied. Since 1.7 (FRICREG_1.7).
+ *  hb      in/out: the driver; on failure the model is the one before the call.
+ *  which   enum fricreg_model_matrix: FRICREG_MASS, FRICREG_STIFFNESS (nonsingular, as
+ *          fricreg_hb_set_stiffness) or FRICREG_DAMPING (replaces Rayleigh damping); each
+ *          symmetric to 1e-12 of the rows' scales, its symmetric part kept.
+ *  nrows, ncols  both the driver's ndof.
+ *  format  enum fricreg_matrix_format: FRICREG_MATRIX_DENSE (values[ndof ndof] row-major, ptr
+ *          and ind NULL, no flag), or FRICREG_MATRIX_CSR or FRICREG_MATRIX_CSC, each combined
+ *          with | with enum fricreg_sparse_flags (base; whole or by one triangle).
+ *  ptr     compressed: ptr[ndof + 1], from the base.
+ *  ind     compressed: ind[nnz], the column (CSR) or row (CSC) of each entry.
+ *  values  values[ndof ndof] (dense) or values[nnz] (compressed), the matrix's units.
+ *  Returns FRICREG_OK; FRICREG_ENULL (hb, values, ptr of a compressed matrix, or ind or values
+ *  with nnz > 0); FRICREG_EINVAL (which or format unknown, FRICREG_CONTACTS, flags with a
+ *  dense matrix or both CSR and CSC, ptr or ind with a dense one, ptr not from the base or
+ *  decreasing, an index out of range, an entry outside the triangle given; during a solve);
+ *  FRICREG_ESIZE if nrows or ncols is not ndof; FRICREG_ENONFINITE; FRICREG_ENOTSYM;
+ *  FRICREG_ENOMEM. The message names the array and the entry. */
+FRICREG_API int fricreg_hb_set_matrix(fricreg_hb *hb, int which, size_t nrows, size_t ncols,
+                                      int format, const int64_t ptr[], const int64_t ind[],
+                                      const double values[]);
+
 /** Rayleigh damping C = a0 M + a1 K (a0 in 1/s, a1 in s, both >= 0), formed from the M and K
  *  in force at each frequency, so it follows later set_mass and set_stiffness calls; replaces
  *  a damping matrix. Mode k of circular frequency w_k gets the damping ratio
@@ -221,6 +247,13 @@ FRICREG_API int fricreg_hb_set_rayleigh(fricreg_hb *hb, double a0, double a1);
  *  changes. Since 1.6. */
 FRICREG_API int fricreg_hb_set_elements(fricreg_hb *hb, size_t m, size_t ndof, const double J[],
                                         const double kt[], const double mun[]);
+
+/** fricreg_hb_set_elements under the structure's name (fricreg_structure_set_jenkins: the
+ *  same arguments and meaning), its messages naming set_jenkins. Since 1.7 (FRICREG_1.7).
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_EINVAL, as
+ *  fricreg_hb_set_elements. */
+FRICREG_API int fricreg_hb_set_jenkins(fricreg_hb *hb, size_t m, size_t ndof, const double J[],
+                                       const double kt[], const double mun[]);
 
 /** Set Iwan elements instead: element i is ns Jenkins sliders in parallel on row i of J
  *  (fricreg_iwan.h in 1-D: slider s of stiffness k[ns i + s] and slip force phi[ns i + s]),
@@ -291,6 +324,16 @@ FRICREG_API int fricreg_hb_set_normal_elements(fricreg_hb *hb, size_t m, size_t 
                                                const double Jt[], const double Jn[],
                                                const double kt[], const double mu[],
                                                const double n0[], const double kn[]);
+
+/** fricreg_hb_set_normal_elements under the structure's name
+ *  (fricreg_structure_set_jenkins_normal: the same arguments and meaning), its messages naming
+ *  set_jenkins_normal. Since 1.7 (FRICREG_1.7).
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_EINVAL;
+ *  FRICREG_ENOMEM, as fricreg_hb_set_normal_elements. */
+FRICREG_API int fricreg_hb_set_jenkins_normal(fricreg_hb *hb, size_t m, size_t ndof,
+                                              const double Jt[], const double Jn[],
+                                              const double kt[], const double mu[],
+                                              const double n0[], const double kn[]);
 
 /** Set the harmonic excitation of the fundamental, p(t) = pc cos Ωt + ps sin Ωt.
  *

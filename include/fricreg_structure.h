@@ -128,6 +128,35 @@ FRICREG_API int fricreg_structure_set_rayleigh(fricreg_structure *s, double a0, 
 FRICREG_API int fricreg_structure_set_contacts(fricreg_structure *s, size_t m, size_t ndof,
                                                const double J[]);
 
+/** Set one model matrix, in any storage: the one setter of M, K, C and J, of which
+ *  fricreg_structure_set_mass, _set_stiffness, _set_damping, _set_contacts and their _csr and
+ *  _csc forms are each one case (same checks, same results bit for bit; their messages name
+ *  them, this one's "set_matrix"). Copied. Since 1.7 (FRICREG_1.7).
+ *  s       in/out: the structure; unchanged on failure.
+ *  which   enum fricreg_model_matrix: FRICREG_MASS (positive definite: CHOLMOD's Cholesky
+ *          factor must exist), FRICREG_STIFFNESS, FRICREG_DAMPING (each symmetric to 1e-12 of
+ *          the rows' scales, its symmetric part taken; C replaces Rayleigh's), or
+ *          FRICREG_CONTACTS (J: no zero row, as fricreg_structure_set_contacts).
+ *  nrows   ndof, or m for J.
+ *  ncols   ndof.
+ *  format  enum fricreg_matrix_format: FRICREG_MATRIX_DENSE (values[nrows ncols] row-major,
+ *          ptr and ind NULL, no flag), or FRICREG_MATRIX_CSR or FRICREG_MATRIX_CSC, each
+ *          combined with | with enum fricreg_sparse_flags (base; a symmetric matrix whole or
+ *          by one triangle, not J).
+ *  ptr     compressed: ptr[nrows + 1] (CSR) or ptr[ncols + 1] (CSC), from the base.
+ *  ind     compressed: ind[nnz], the column (CSR) or row (CSC) of each entry.
+ *  values  values[nrows ncols] (dense) or values[nnz] (compressed), the matrix's units.
+ *  Returns FRICREG_OK; FRICREG_ENULL (s, values, ptr of a compressed matrix, or ind or values
+ *  with nnz > 0); FRICREG_EINVAL (which or format unknown, flags with a dense matrix or both
+ *  CSR and CSC, ptr or ind given with a dense one, a triangle for J, ptr not from the base or
+ *  decreasing, an index out of range, an entry outside the triangle given, a zero row of J;
+ *  called from the observer); FRICREG_ESIZE if nrows or ncols is not the structure's;
+ *  FRICREG_ENONFINITE; FRICREG_ENOTSYM; FRICREG_ENOTPSD (M); FRICREG_ENOMEM. The message names
+ *  the array and the entry. */
+FRICREG_API int fricreg_structure_set_matrix(fricreg_structure *s, int which, size_t nrows,
+                                             size_t ncols, int format, const int64_t ptr[],
+                                             const int64_t ind[], const double values[]);
+
 /** Set the mass matrix from compressed sparse rows: ndof x ndof, rowptr[ndof + 1],
  *  colind[nnz], values[nnz] (mass units), as enum fricreg_sparse_flags of fricreg.h describes
  *  (zero- or one-based; whole, then symmetric to 1e-12 of the rows' scales as

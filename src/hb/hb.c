@@ -311,6 +311,39 @@ int fricreg_hb_set_damping(fricreg_hb *hb, size_t ndof, const double C[])
     return status;
 }
 
+int fricreg_hb_set_matrix(fricreg_hb *hb, int which, size_t nrows, size_t ncols, int format,
+                          const int64_t ptr[], const int64_t ind[], const double values[])
+{
+    static const char fn[] = "set_matrix";
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    if (hb->busy)
+        return fr_hb_busy(hb, fn);
+    if (!(which >= FRICREG_MASS && which <= FRICREG_DAMPING))
+        return fr_fail(hb, FRICREG_EINVAL,
+                       "%s: which = %d is not a model matrix of the driver (FRICREG_MASS, "
+                       "FRICREG_STIFFNESS or FRICREG_DAMPING)",
+                       fn, which);
+    int slot = which == FRICREG_MASS ? 0 : which == FRICREG_DAMPING ? 1 : 2;
+    if (nrows != ncols)
+        return fr_fail(hb, FRICREG_ESIZE, "%s: the matrix is %zu x %zu, not square", fn, nrows,
+                       ncols);
+    int layout = format & (FRICREG_MATRIX_CSR | FRICREG_MATRIX_CSC);
+    if (layout == (FRICREG_MATRIX_CSR | FRICREG_MATRIX_CSC))
+        return fr_fail(hb, FRICREG_EINVAL, "%s: format %d is both CSR and CSC", fn, format);
+    if (layout != FRICREG_MATRIX_DENSE)
+        return fr_hb_set_compressed(hb, fn, slot, nrows, layout == FRICREG_MATRIX_CSC,
+                                    format & ~layout, ptr, ind, values);
+    if (format != FRICREG_MATRIX_DENSE || ptr != NULL || ind != NULL)
+        return fr_fail(hb, FRICREG_EINVAL,
+                       "%s: a dense matrix takes no sparse flags (format %d), ptr or ind", fn,
+                       format);
+    int status = set_symmetric(hb, fn, nrows, values, slot);
+    if (status == FRICREG_OK && slot == 1)
+        hb->rayleigh = 0;
+    return status;
+}
+
 int fricreg_hb_set_rayleigh(fricreg_hb *hb, double a0, double a1)
 {
     if (hb == NULL)
@@ -374,21 +407,22 @@ static int check_sliders(fricreg_hb *hb, const char *fn, size_t count, const dou
     return FRICREG_OK;
 }
 
-int fricreg_hb_set_elements(fricreg_hb *hb, size_t m, size_t ndof, const double J[],
-                            const double kt[], const double mun[])
+/* fricreg_hb_set_jenkins, its messages naming fn. */
+static int set_jenkins(fricreg_hb *hb, const char *fn, size_t m, size_t ndof, const double J[],
+                       const double kt[], const double mun[])
 {
     if (hb == NULL)
         return FRICREG_ENULL;
     if (hb->busy)
-        return fr_hb_busy(hb, "set_elements");
+        return fr_hb_busy(hb, fn);
     if (J == NULL || kt == NULL || mun == NULL)
-        return fr_fail(hb, FRICREG_ENULL, "set_elements: %s is NULL",
+        return fr_fail(hb, FRICREG_ENULL, "%s: %s is NULL", fn,
                        J == NULL    ? "J"
                        : kt == NULL ? "kt"
                                     : "mun");
-    int status = check_rows(hb, "set_elements", m, ndof, J, "J");
+    int status = check_rows(hb, fn, m, ndof, J, "J");
     if (status == FRICREG_OK)
-        status = check_sliders(hb, "set_elements", m, kt, mun, "kt", "mun");
+        status = check_sliders(hb, fn, m, kt, mun, "kt", "mun");
     if (status != FRICREG_OK)
         return status;
     memcpy(hb->J, J, m * ndof * sizeof *J);
@@ -401,6 +435,18 @@ int fricreg_hb_set_elements(fricreg_hb *hb, size_t m, size_t ndof, const double 
     hb->have_elements = 1;
     invalidate(hb);
     return FRICREG_OK;
+}
+
+int fricreg_hb_set_jenkins(fricreg_hb *hb, size_t m, size_t ndof, const double J[],
+                           const double kt[], const double mun[])
+{
+    return set_jenkins(hb, "set_jenkins", m, ndof, J, kt, mun);
+}
+
+int fricreg_hb_set_elements(fricreg_hb *hb, size_t m, size_t ndof, const double J[],
+                            const double kt[], const double mun[])
+{
+    return set_jenkins(hb, "set_elements", m, ndof, J, kt, mun);
 }
 
 int fricreg_hb_set_iwan(fricreg_hb *hb, size_t m, size_t ndof, const double J[], size_t ns,
@@ -439,11 +485,11 @@ int fricreg_hb_set_iwan(fricreg_hb *hb, size_t m, size_t ndof, const double J[],
     return FRICREG_OK;
 }
 
-int fricreg_hb_set_normal_elements(fricreg_hb *hb, size_t m, size_t ndof, const double Jt[],
-                                   const double Jn[], const double kt[], const double mu[],
-                                   const double n0[], const double kn[])
+/* fricreg_hb_set_jenkins_normal, its messages naming fn. */
+static int set_jenkins_normal(fricreg_hb *hb, const char *fn, size_t m, size_t ndof,
+                              const double Jt[], const double Jn[], const double kt[],
+                              const double mu[], const double n0[], const double kn[])
 {
-    static const char fn[] = "set_normal_elements";
     if (hb == NULL)
         return FRICREG_ENULL;
     if (hb->busy)
@@ -494,6 +540,20 @@ int fricreg_hb_set_normal_elements(fricreg_hb *hb, size_t m, size_t ndof, const 
     hb->have_elements = 1;
     invalidate(hb);
     return FRICREG_OK;
+}
+
+int fricreg_hb_set_jenkins_normal(fricreg_hb *hb, size_t m, size_t ndof, const double Jt[],
+                                  const double Jn[], const double kt[], const double mu[],
+                                  const double n0[], const double kn[])
+{
+    return set_jenkins_normal(hb, "set_jenkins_normal", m, ndof, Jt, Jn, kt, mu, n0, kn);
+}
+
+int fricreg_hb_set_normal_elements(fricreg_hb *hb, size_t m, size_t ndof, const double Jt[],
+                                   const double Jn[], const double kt[], const double mu[],
+                                   const double n0[], const double kn[])
+{
+    return set_jenkins_normal(hb, "set_normal_elements", m, ndof, Jt, Jn, kt, mu, n0, kn);
 }
 
 int fricreg_hb_set_excitation(fricreg_hb *hb, size_t ndof, const double pc[], const double ps[])

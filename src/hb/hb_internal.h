@@ -210,6 +210,12 @@ int fr_hb_clone(const fricreg_hb *src, int harmonics, fricreg_hb **out);
 /* The dense setters' path on a sparse model: the checked, symmetric dense A installed as
  * matrix which (0 M, 1 C, 2 K). */
 int fr_hb_sparse_set_dense(fricreg_hb *hb, const char *fn, int which, const double *A);
+/* A model matrix (which: 0 M, 1 C, 2 K) from compressed sparse columns (by_columns) or rows,
+ * with enum fricreg_sparse_flags; C replaces Rayleigh's. The checks and results of
+ * fricreg_hb_set_mass_csc, whose messages name fn. */
+int fr_hb_set_compressed(fricreg_hb *hb, const char *fn, int which, size_t ndof, int by_columns,
+                         int flags, const int64_t ptr[], const int64_t ind[],
+                         const double values[]);
 
 /* out[e (m+1) + c] (complex, c <= m) = s sum_k L(e, k) B[k (m+1) + c] into G (c < m) and q
  * (c = m), L(e, k) = J(e, k) when left is NULL, else left[k (m+1) + e] (a column of Y as a row):

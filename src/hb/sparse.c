@@ -272,8 +272,8 @@ int fr_hb_sparse_set_dense(fricreg_hb *hb, const char *fn, int which, const doub
     return status != FRICREG_OK ? status : replace(hb, fn, which, S);
 }
 
-static int set_csc(fricreg_hb *hb, const char *fn, int which, size_t ndof, int flags,
-                   const int64_t colptr[], const int64_t rowind[], const double values[])
+int fr_hb_set_compressed(fricreg_hb *hb, const char *fn, int which, size_t ndof, int by_columns,
+                         int flags, const int64_t ptr[], const int64_t ind[], const double values[])
 {
     if (hb == NULL)
         return FRICREG_ENULL;
@@ -281,33 +281,34 @@ static int set_csc(fricreg_hb *hb, const char *fn, int which, size_t ndof, int f
         return fr_hb_busy(hb, fn);
     if (ndof != hb->n)
         return fr_fail(hb, FRICREG_ESIZE, "%s: ndof = %zu, the driver has %zu", fn, ndof, hb->n);
-    struct fr_compressed a = {ndof, ndof, 1, flags, colptr, rowind, values};
+    struct fr_compressed a = {ndof, ndof, by_columns, flags, ptr, ind, values};
     int status = fr_compressed_check(&a, 1, &hb->err, fn);
     cholmod_sparse *S = NULL;
     if (status == FRICREG_OK)
         status = fr_compressed_to_cholmod(&a, 1, &hb->cc, &S, &hb->err, fn);
-    return status != FRICREG_OK ? status : replace(hb, fn, which, S);
+    if (status == FRICREG_OK)
+        status = replace(hb, fn, which, S);
+    if (status == FRICREG_OK && which == 1)
+        hb->rayleigh = 0; /* C replaces Rayleigh's */
+    return status;
 }
 
 int fricreg_hb_set_mass_csc(fricreg_hb *hb, size_t ndof, int flags, const int64_t colptr[],
                             const int64_t rowind[], const double values[])
 {
-    return set_csc(hb, "set_mass_csc", 0, ndof, flags, colptr, rowind, values);
+    return fr_hb_set_compressed(hb, "set_mass_csc", 0, ndof, 1, flags, colptr, rowind, values);
 }
 
 int fricreg_hb_set_damping_csc(fricreg_hb *hb, size_t ndof, int flags, const int64_t colptr[],
                                const int64_t rowind[], const double values[])
 {
-    int status = set_csc(hb, "set_damping_csc", 1, ndof, flags, colptr, rowind, values);
-    if (status == FRICREG_OK)
-        hb->rayleigh = 0;
-    return status;
+    return fr_hb_set_compressed(hb, "set_damping_csc", 1, ndof, 1, flags, colptr, rowind, values);
 }
 
 int fricreg_hb_set_stiffness_csc(fricreg_hb *hb, size_t ndof, int flags, const int64_t colptr[],
                                  const int64_t rowind[], const double values[])
 {
-    return set_csc(hb, "set_stiffness_csc", 2, ndof, flags, colptr, rowind, values);
+    return fr_hb_set_compressed(hb, "set_stiffness_csc", 2, ndof, 1, flags, colptr, rowind, values);
 }
 
 /* ---- The factor and the solves ------------------------------------------------------------- */

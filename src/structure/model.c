@@ -77,138 +77,164 @@ int fr_structure_install(fricreg_structure *s, int which, cholmod_sparse *A, con
     return FRICREG_OK;
 }
 
-/* ---- Dense -------------------------------------------------------------------------------- */
+/* ---- The one setter ---------------------------------------------------------------------- */
 
-static int set_dense(fricreg_structure *s, int which, const char *who, size_t ndof,
+static int set_dense(fricreg_structure *s, int which, const char *who, size_t nrows, size_t ncols,
                      const double A[])
 {
     if (s == NULL)
         return FRICREG_ENULL;
     if (s->running)
         return fr_structure_busy(s, who);
+    int contacts = which == FR_CONTACTS;
     if (A == NULL)
-        return fr_fail(s, FRICREG_ENULL, "%s: the matrix is NULL", who);
-    if (ndof != s->n)
-        return fr_fail(s, FRICREG_ESIZE, "%s: ndof = %zu, the structure has %zu", who, ndof, s->n);
+        return fr_fail(s, FRICREG_ENULL, contacts ? "%s: J is NULL" : "%s: the matrix is NULL",
+                       who);
+    if (contacts && (nrows != s->m || ncols != s->n))
+        return fr_fail(s, FRICREG_ESIZE, "%s: J is %zu x %zu, the structure needs %zu x %zu", who,
+                       nrows, ncols, s->m, s->n);
+    if (!contacts && (nrows != s->n || ncols != s->n))
+        return fr_fail(s, FRICREG_ESIZE, "%s: ndof = %zu, the structure has %zu", who,
+                       nrows != s->n ? nrows : ncols, s->n);
     cholmod_sparse *S = NULL;
-    int status = fr_dense_to_cholmod(ndof, ndof, A, 1, &s->cc, &S, &s->err, who);
+    int status = fr_dense_to_cholmod(nrows, ncols, A, !contacts, &s->cc, &S, &s->err, who);
     return status != FRICREG_OK ? status : fr_structure_install(s, which, S, who);
 }
 
+/* by_columns: CSC, else CSR; flags: enum fricreg_sparse_flags. */
+static int set_compressed(fricreg_structure *s, int which, const char *who, size_t nrows,
+                          size_t ncols, int by_columns, int flags, const int64_t ptr[],
+                          const int64_t ind[], const double values[])
+{
+    if (s == NULL)
+        return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, who);
+    size_t need = which == FR_CONTACTS ? s->m : s->n;
+    if (nrows != need || ncols != s->n)
+        return fr_fail(s, FRICREG_ESIZE,
+                       "%s: the matrix is %zu x %zu, the structure needs %zu x %zu", who, nrows,
+                       ncols, need, s->n);
+    struct fr_compressed a = {nrows, ncols, by_columns, flags, ptr, ind, values};
+    int symmetric = which != FR_CONTACTS;
+    int status = fr_compressed_check(&a, symmetric, &s->err, who);
+    cholmod_sparse *S = NULL;
+    if (status == FRICREG_OK)
+        status = fr_compressed_to_cholmod(&a, symmetric, &s->cc, &S, &s->err, who);
+    return status != FRICREG_OK ? status : fr_structure_install(s, which, S, who);
+}
+
+int fricreg_structure_set_matrix(fricreg_structure *s, int which, size_t nrows, size_t ncols,
+                                 int format, const int64_t ptr[], const int64_t ind[],
+                                 const double values[])
+{
+    static const int slot[] = {[FRICREG_MASS] = FR_MASS,
+                               [FRICREG_STIFFNESS] = FR_STIFFNESS,
+                               [FRICREG_DAMPING] = FR_DAMPING,
+                               [FRICREG_CONTACTS] = FR_CONTACTS};
+    const char *who = "set_matrix";
+    if (s == NULL)
+        return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, who);
+    if (!(which >= FRICREG_MASS && which <= FRICREG_CONTACTS))
+        return fr_fail(s, FRICREG_EINVAL,
+                       "%s: which = %d is not a model matrix (FRICREG_MASS, FRICREG_STIFFNESS, "
+                       "FRICREG_DAMPING or FRICREG_CONTACTS)",
+                       who, which);
+    int layout = format & (FRICREG_MATRIX_CSR | FRICREG_MATRIX_CSC);
+    if (layout == (FRICREG_MATRIX_CSR | FRICREG_MATRIX_CSC))
+        return fr_fail(s, FRICREG_EINVAL, "%s: format %d is both CSR and CSC", who, format);
+    if (layout != FRICREG_MATRIX_DENSE)
+        return set_compressed(s, slot[which], who, nrows, ncols, layout == FRICREG_MATRIX_CSC,
+                              format & ~layout, ptr, ind, values);
+    if (format != FRICREG_MATRIX_DENSE || ptr != NULL || ind != NULL)
+        return fr_fail(s, FRICREG_EINVAL,
+                       "%s: a dense matrix takes no sparse flags (format %d), ptr or ind", who,
+                       format);
+    return set_dense(s, slot[which], who, nrows, ncols, values);
+}
+
+/* ---- The setters of one matrix in one storage: cases of fricreg_structure_set_matrix ------ */
+
 int fricreg_structure_set_mass(fricreg_structure *s, size_t ndof, const double M[])
 {
-    return set_dense(s, FR_MASS, "set_mass", ndof, M);
+    return set_dense(s, FR_MASS, "set_mass", ndof, ndof, M);
 }
 
 int fricreg_structure_set_stiffness(fricreg_structure *s, size_t ndof, const double K[])
 {
-    return set_dense(s, FR_STIFFNESS, "set_stiffness", ndof, K);
+    return set_dense(s, FR_STIFFNESS, "set_stiffness", ndof, ndof, K);
 }
 
 int fricreg_structure_set_damping(fricreg_structure *s, size_t ndof, const double C[])
 {
-    return set_dense(s, FR_DAMPING, "set_damping", ndof, C);
+    return set_dense(s, FR_DAMPING, "set_damping", ndof, ndof, C);
 }
 
 int fricreg_structure_set_contacts(fricreg_structure *s, size_t m, size_t ndof, const double J[])
 {
-    const char *who = "set_contacts";
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, who);
-    if (J == NULL)
-        return fr_fail(s, FRICREG_ENULL, "%s: J is NULL", who);
-    if (m != s->m || ndof != s->n)
-        return fr_fail(s, FRICREG_ESIZE, "%s: J is %zu x %zu, the structure needs %zu x %zu", who,
-                       m, ndof, s->m, s->n);
-    cholmod_sparse *S = NULL;
-    int status = fr_dense_to_cholmod(m, ndof, J, 0, &s->cc, &S, &s->err, who);
-    return status != FRICREG_OK ? status : fr_structure_install(s, FR_CONTACTS, S, who);
-}
-
-/* ---- Compressed rows and columns ---------------------------------------------------------- */
-
-static int set_compressed(fricreg_structure *s, int which, const char *who, size_t nrows,
-                          size_t ncols, const struct fr_compressed *a)
-{
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, who);
-    if (a->nrows != nrows || a->ncols != ncols)
-        return fr_fail(s, FRICREG_ESIZE,
-                       "%s: the matrix is %zu x %zu, the structure needs %zu x %zu", who, a->nrows,
-                       a->ncols, nrows, ncols);
-    int symmetric = which != FR_CONTACTS;
-    int status = fr_compressed_check(a, symmetric, &s->err, who);
-    cholmod_sparse *S = NULL;
-    if (status == FRICREG_OK)
-        status = fr_compressed_to_cholmod(a, symmetric, &s->cc, &S, &s->err, who);
-    return status != FRICREG_OK ? status : fr_structure_install(s, which, S, who);
-}
-
-static int set_square(fricreg_structure *s, int which, const char *who, size_t ndof, int flags,
-                      int by_columns, const int64_t ptr[], const int64_t ind[], const double val[])
-{
-    struct fr_compressed a = {ndof, ndof, by_columns, flags, ptr, ind, val};
-    return set_compressed(s, which, who, s ? s->n : 0, s ? s->n : 0, &a);
+    return set_dense(s, FR_CONTACTS, "set_contacts", m, ndof, J);
 }
 
 int fricreg_structure_set_mass_csr(fricreg_structure *s, size_t ndof, int flags,
                                    const int64_t rowptr[], const int64_t colind[],
                                    const double values[])
 {
-    return set_square(s, FR_MASS, "set_mass_csr", ndof, flags, 0, rowptr, colind, values);
+    return set_compressed(s, FR_MASS, "set_mass_csr", ndof, ndof, 0, flags, rowptr, colind, values);
 }
 
 int fricreg_structure_set_mass_csc(fricreg_structure *s, size_t ndof, int flags,
                                    const int64_t colptr[], const int64_t rowind[],
                                    const double values[])
 {
-    return set_square(s, FR_MASS, "set_mass_csc", ndof, flags, 1, colptr, rowind, values);
+    return set_compressed(s, FR_MASS, "set_mass_csc", ndof, ndof, 1, flags, colptr, rowind, values);
 }
 
 int fricreg_structure_set_stiffness_csr(fricreg_structure *s, size_t ndof, int flags,
                                         const int64_t rowptr[], const int64_t colind[],
                                         const double values[])
 {
-    return set_square(s, FR_STIFFNESS, "set_stiffness_csr", ndof, flags, 0, rowptr, colind, values);
+    return set_compressed(s, FR_STIFFNESS, "set_stiffness_csr", ndof, ndof, 0, flags, rowptr,
+                          colind, values);
 }
 
 int fricreg_structure_set_stiffness_csc(fricreg_structure *s, size_t ndof, int flags,
                                         const int64_t colptr[], const int64_t rowind[],
                                         const double values[])
 {
-    return set_square(s, FR_STIFFNESS, "set_stiffness_csc", ndof, flags, 1, colptr, rowind, values);
+    return set_compressed(s, FR_STIFFNESS, "set_stiffness_csc", ndof, ndof, 1, flags, colptr,
+                          rowind, values);
 }
 
 int fricreg_structure_set_damping_csr(fricreg_structure *s, size_t ndof, int flags,
                                       const int64_t rowptr[], const int64_t colind[],
                                       const double values[])
 {
-    return set_square(s, FR_DAMPING, "set_damping_csr", ndof, flags, 0, rowptr, colind, values);
+    return set_compressed(s, FR_DAMPING, "set_damping_csr", ndof, ndof, 0, flags, rowptr, colind,
+                          values);
 }
 
 int fricreg_structure_set_damping_csc(fricreg_structure *s, size_t ndof, int flags,
                                       const int64_t colptr[], const int64_t rowind[],
                                       const double values[])
 {
-    return set_square(s, FR_DAMPING, "set_damping_csc", ndof, flags, 1, colptr, rowind, values);
+    return set_compressed(s, FR_DAMPING, "set_damping_csc", ndof, ndof, 1, flags, colptr, rowind,
+                          values);
 }
 
 int fricreg_structure_set_contacts_csr(fricreg_structure *s, size_t m, size_t ndof, int flags,
                                        const int64_t rowptr[], const int64_t colind[],
                                        const double values[])
 {
-    struct fr_compressed a = {m, ndof, 0, flags, rowptr, colind, values};
-    return set_compressed(s, FR_CONTACTS, "set_contacts_csr", s ? s->m : 0, s ? s->n : 0, &a);
+    return set_compressed(s, FR_CONTACTS, "set_contacts_csr", m, ndof, 0, flags, rowptr, colind,
+                          values);
 }
 
 int fricreg_structure_set_contacts_csc(fricreg_structure *s, size_t m, size_t ndof, int flags,
                                        const int64_t colptr[], const int64_t rowind[],
                                        const double values[])
 {
-    struct fr_compressed a = {m, ndof, 1, flags, colptr, rowind, values};
-    return set_compressed(s, FR_CONTACTS, "set_contacts_csc", s ? s->m : 0, s ? s->n : 0, &a);
+    return set_compressed(s, FR_CONTACTS, "set_contacts_csc", m, ndof, 1, flags, colptr, rowind,
+                          values);
 }
