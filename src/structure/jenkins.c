@@ -53,6 +53,7 @@
 #include "base/matrix_input.h"
 #include "base/sparse_ops.h"
 #include "joint/slider.h"
+#include "newton_loop.h"
 #include "structure_internal.h"
 
 #define MAX_ELEMENTS ((size_t)1 << 26)
@@ -763,6 +764,36 @@ static int element_trial(void *user, double lambda, int *accept)
     return FRICREG_OK;
 }
 
+/* The loop's view of the elements' Newton at c (newton_loop.h): the iterate f. */
+struct element_loop {
+    struct fr_elements *e;
+    double c, *f;
+    struct fr_line_search ls;
+};
+
+static int element_direction(void *user)
+{
+    struct element_loop *l = user;
+    if (l->e->overflow != 0 || !direction(l->e, l->c)) /* none from an infinite tangent */
+        return FRICREG_ESINGULAR;
+    return FRICREG_OK;
+}
+
+static int element_search(void *user, double *phi, double *rinf)
+{
+    struct element_loop *l = user;
+    struct element_trial t = {l->e, &l->ls, l->c, l->f, phi, rinf};
+    int accepted;
+    fr_line_search(&l->ls, 1.0, element_trial, &t, &accepted); /* the trials cannot fail */
+    return accepted;
+}
+
+static void element_restore(void *user, double *phi, double *rinf)
+{
+    struct element_loop *l = user;
+    *phi = evaluate(l->e, l->c, l->f, l->e->g, rinf);
+}
+
 int fr_elements_newmark(fricreg_structure *s, double dt, double scale, gsl_vector *b,
                         int *converged, int *iters)
 {
@@ -785,23 +816,12 @@ int fr_elements_newmark(fricreg_structure *s, double dt, double scale, gsl_vecto
     double *f = e->fe1, rinf;
     memcpy(f, e->fe, nc * sizeof *f);
     double phi = evaluate(e, c, f, e->g, &rinf);
-    struct fr_line_search ls = {FR_ARMIJO, FR_STEP_HALVINGS,
-                                &s->stats[FRICREG_SSTAT_LINE_SEARCH_CUTS]};
-    struct element_trial t = {e, &ls, c, f, &phi, &rinf};
-    int done = 0;
-    while (rinf != 0.0 && (done == 0 || rinf > tol) && *iters < s->newton_max && isfinite(phi)) {
-        if (e->overflow != 0 || !direction(e, c)) /* no direction from an infinite tangent */
-            break;
-        ++*iters;
-        ++done;
-        int accepted;
-        fr_line_search(&ls, 1.0, element_trial, &t, &accepted); /* the trials cannot fail */
-        if (!accepted) {
-            phi = evaluate(e, c, f, e->g, &rinf); /* back to f: the best point */
-            break;
-        }
-    }
-    if (e->overflow != 0 && !(rinf <= tol)) /* at the last iterate: its force or the tangent */
+    struct element_loop l = {
+        e, c, f, {FR_ARMIJO, FR_STEP_HALVINGS, &s->stats[FRICREG_SSTAT_LINE_SEARCH_CUTS]}};
+    struct fr_newton_loop nl = {
+        tol, s->newton_max, &l, element_direction, element_search, element_restore};
+    fr_newton_loop_run(&nl, &phi, &rinf, iters); /* its end is the step's: judged below */
+    if (e->overflow != 0 && !(rinf <= tol))      /* at the last iterate: its force or the tangent */
         return fr_elements_overflow(s, s->t + dt);
     if (!isfinite(phi))
         return fr_fail(s, FRICREG_EDIVERGED, "step: the elements' residual at t = %g is not finite",

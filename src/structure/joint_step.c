@@ -36,6 +36,7 @@
 #include "base/line_search.h"
 #include "base/sparse_ops.h"
 #include "ctx/ctx_driver.h"
+#include "newton_loop.h"
 #include "structure_internal.h"
 
 /* The contacts' velocities and free accelerations (s->zdot, s->afree), their law's forces
@@ -248,24 +249,41 @@ static int line_search(fricreg_structure *s, int stops, double *phi, double *rin
     return accepted;
 }
 
-/* Newton from z (evaluated) until rinf <= tol (at least one iteration unless rinf is 0), the
- * iterations run out, the tangent is singular or the line search stalls (back to z). */
+/* The loop's view of the joint Newton (newton_loop.h). */
+struct joint_loop {
+    fricreg_structure *s;
+    int stops;
+};
+
+static int joint_direction(void *user)
+{
+    fricreg_structure *s = ((struct joint_loop *)user)->s;
+    if (s->el.overflow != 0) /* no direction from an infinite tangent */
+        return FRICREG_ENONFINITE;
+    return direction(s);
+}
+
+static int joint_search(void *user, double *phi, double *rinf)
+{
+    struct joint_loop *l = user;
+    return line_search(l->s, l->stops, phi, rinf);
+}
+
+static void joint_restore(void *user, double *phi, double *rinf)
+{
+    struct fr_joint *j = &((struct joint_loop *)user)->s->el.joint;
+    evaluate(((struct joint_loop *)user)->s, j->z, j->gc, j->ge, phi, rinf);
+}
+
+/* Newton from z (evaluated) until rinf <= tol, the iterations run out, an element overflowed,
+ * the tangent is singular or the line search stalls (back to z): newton_loop.h's. */
 static void iterate(fricreg_structure *s, double tol, int stops, double *phi, double *rinf,
                     int *iters)
 {
-    struct fr_joint *j = &s->el.joint;
-    int done = 0;
-    while (*rinf != 0.0 && (done == 0 || *rinf > tol) && *iters < s->newton_max && isfinite(*phi)) {
-        if (s->el.overflow != 0 || direction(s) != FRICREG_OK)
-            break; /* an overflowed element (no direction from an infinite tangent) or a
-                    * singular tangent: the step ends on this iterate */
-        ++*iters;
-        ++done;
-        if (!line_search(s, stops, phi, rinf)) {
-            evaluate(s, j->z, j->gc, j->ge, phi, rinf); /* back to z: the best point */
-            break;
-        }
-    }
+    struct joint_loop l = {s, stops};
+    struct fr_newton_loop nl = {tol,          s->newton_max, &l, joint_direction,
+                                joint_search, joint_restore};
+    fr_newton_loop_run(&nl, phi, rinf, iters); /* its end is the step's: judged by solve */
 }
 
 /* z = (f, fe0) evaluated. */

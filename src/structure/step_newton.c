@@ -7,6 +7,7 @@
 #include <gsl/gsl_blas.h>
 
 #include "base/line_search.h"
+#include "newton_loop.h"
 #include "step_newton.h"
 
 void fr_step_combine(const struct fr_compliance_pair *a, double lambda,
@@ -65,26 +66,39 @@ static int line_search(struct fr_step_newton *e, int stops, int search, double *
     return accepted;
 }
 
+/* The loop's view of one contacts' Newton (newton_loop.h). */
+struct step_loop {
+    struct fr_step_newton *e;
+    int stops, search;
+};
+
+static int step_direction(void *user)
+{
+    struct fr_step_newton *e = ((struct step_loop *)user)->e;
+    int status = fr_newton_direction(e->nm, e->ctx, e->coef, e->W, e->Weff, e->G->data, e->df->data,
+                                     e->cc);
+    if (status == FRICREG_OK)
+        e->products(e->user, e->df->data, e->at_df);
+    return status;
+}
+
+static int step_search(void *user, double *phi, double *rinf)
+{
+    struct step_loop *l = user;
+    return line_search(l->e, l->stops, l->search, phi, rinf);
+}
+
+static void step_restore(void *user, double *phi, double *rinf)
+{
+    struct fr_step_newton *e = ((struct step_loop *)user)->e;
+    e->residual(e->user, e->fk, e->at_k, e->G, phi, rinf);
+}
+
 int fr_step_newton_iterate(struct fr_step_newton *e, double tol, int stops, int search, double *phi,
                            double *rinf, int *iters)
 {
-    int done = 0;
-    while (*rinf != 0.0 && (done == 0 || *rinf > tol) && *iters < e->max_iter) {
-        if (!isfinite(*phi))
-            break;
-        int status = fr_newton_direction(e->nm, e->ctx, e->coef, e->W, e->Weff, e->G->data,
-                                         e->df->data, e->cc);
-        if (status == FRICREG_ENOMEM)
-            return status;
-        if (status != FRICREG_OK)
-            break; /* a singular tangent: the step ends on this iterate, a failure counted */
-        ++*iters;
-        ++done;
-        e->products(e->user, e->df->data, e->at_df);
-        if (!line_search(e, stops, search, phi, rinf)) {
-            e->residual(e->user, e->fk, e->at_k, e->G, phi, rinf); /* back to fk: the best */
-            break;
-        }
-    }
-    return FRICREG_OK;
+    struct step_loop l = {e, stops, search};
+    struct fr_newton_loop nl = {tol, e->max_iter, &l, step_direction, step_search, step_restore};
+    int status = fr_newton_loop_run(&nl, phi, rinf, iters);
+    return status == FRICREG_ENOMEM ? status : FRICREG_OK; /* else a singular tangent */
 }

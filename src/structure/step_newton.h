@@ -4,7 +4,8 @@
  * fricreg_ctx_solve_step (contact_step.c).
  *
  * With the step's contact velocities and free accelerations affine in the forces f
- * (newton_matrix.h), Newton solves G(f) = f - F(zdot(f), a_free(f)) = 0. Each iteration: the
+ * (newton_matrix.h), Newton solves G(f) = f - F(zdot(f), a_free(f)) = 0, by the structure's
+ * one Newton iteration (newton_loop.h). Each iteration: the
  * direction df = -T^-1 G (fr_newton_direction), then a backtracking line search along it,
  * from the first trial (a slipping contact stopped at zdot = 0, fr_newton_first_stop) or the
  * full step, halved at most FR_STEP_HALVINGS times until the caller's merit phi decreases by Armijo's
