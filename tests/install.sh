@@ -118,7 +118,8 @@ if [ "$fc" != "-" ]; then
         order="fricreg_constants.f90 fricreg_c.f90 fricreg_sim_c.f90 $objects fricreg.F90"
         order="$order fricreg_f77.f90 fricreg_f77_check.f90 fricreg_joints_f77.f90"
         order="$order fricreg_sim_f77.f90"
-        order="$order fricreg_structure_f77.f90 fricreg_hb_f77.f90 fricreg_warnings_f77.f90"
+        order="$order fricreg_structure_f77.f90 fricreg_structure_f77_generated.f90"
+        order="$order fricreg_hb_f77.f90 fricreg_warnings_f77.f90"
         sim=-DFRICREG_HAVE_SIM
     fi
     mkdir -p "$work/fsrc"
