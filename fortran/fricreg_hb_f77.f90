@@ -52,6 +52,11 @@
 ! calls the bind(C) relay below, which calls MONITR, whose address C keeps as user: nothing is
 ! allocated, as for the warning handlers (fricreg_warnings_f77.f90 says why the address may
 ! pass through a void*).
+!
+! Generated, not here: the entry points that are one C call (FRHBMF, FRHBKF, FRHBCF, FRHBCA,
+! FRHBPF, FRHBNT, FRHBXD, FRHBST) are a line each, with their doc comments, in the table
+! fricreg_hb_f77.txt, which fortran/gen_f77.cmake turns into fricreg_hb_f77_generated.f90 at build
+! time; those below have logic of their own.
 
 !> FRHBCR(NDOF, M, NH, H, STAT): a driver for NDOF >= 1 degrees of freedom, M >= 1 Jenkins
 !> elements and NH harmonics (1 <= NH <= FRICREG_HB_MAX_HARMONICS) into H.
@@ -81,53 +86,6 @@ subroutine frhbfr(h, stat)
   integer, intent(out) :: stat
   stat = fricreg_f77_release(h, fricreg_hb_free)
 end subroutine frhbfr
-
-!> FRHBMF(H, NDOF, A, STAT): the mass matrix A(NDOF, NDOF), symmetric.
-subroutine frhbmf(h, ndof, a, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: ndof
-  double precision, intent(in) :: a(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_hb_set_mass(fricreg_handle_to_ptr(h), int(ndof, c_size_t), a))
-end subroutine frhbmf
-
-!> FRHBKF(H, NDOF, A, STAT): the stiffness matrix A(NDOF, NDOF), symmetric and nonsingular.
-subroutine frhbkf(h, ndof, a, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: ndof
-  double precision, intent(in) :: a(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_hb_set_stiffness(fricreg_handle_to_ptr(h), int(ndof, c_size_t), a))
-end subroutine frhbkf
-
-!> FRHBCF(H, NDOF, A, STAT): the damping matrix A(NDOF, NDOF), symmetric; replaces Rayleigh.
-subroutine frhbcf(h, ndof, a, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: ndof
-  double precision, intent(in) :: a(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_hb_set_damping(fricreg_handle_to_ptr(h), int(ndof, c_size_t), a))
-end subroutine frhbcf
-
-!> FRHBCA(H, A0, A1, STAT): Rayleigh damping C = A0 M + A1 K (A0 in 1/s, A1 in s, >= 0).
-subroutine frhbca(h, a0, a1, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  double precision, intent(in) :: a0, a1
-  integer, intent(out) :: stat
-  stat = int(fricreg_hb_set_rayleigh(fricreg_handle_to_ptr(h), a0, a1))
-end subroutine frhbca
 
 !> FRHBJF(H, M, NDOF, J, KT, MUN, STAT): the elements, Fortran's J(M, NDOF) (row I element
 !> I's relative displacement), stiffnesses KT(M) > 0 and slip forces MUN(M) >= 0.
@@ -215,31 +173,6 @@ subroutine frhblo(h, m, ndof, jt, jn, kt, mu, n0, kn, stat)
                                             int(ndof, c_size_t), ct, cn, kt, mu, n0, kn))
 end subroutine frhblo
 
-!> FRHBPF(H, NDOF, PC, PS, STAT): the excitation PC(NDOF) cos(OMEGA t) + PS(NDOF)
-!> sin(OMEGA t), force units.
-subroutine frhbpf(h, ndof, pc, ps, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: ndof
-  double precision, intent(in) :: pc(*), ps(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_hb_set_excitation(fricreg_handle_to_ptr(h), int(ndof, c_size_t), pc, ps))
-end subroutine frhbpf
-
-!> FRHBNT(H, TOL, MAXIT, STAT): Newton's tolerance and iteration bound.
-subroutine frhbnt(h, tol, maxit, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  double precision, intent(in) :: tol
-  integer, intent(in) :: maxit
-  integer, intent(out) :: stat
-  stat = int(fricreg_hb_set_newton(fricreg_handle_to_ptr(h), tol, int(maxit, c_int)))
-end subroutine frhbnt
-
 !> FRHBCT(H, DS, DSMIN, DSMAX, MAXPT, STAT): the continuation's step control and its most
 !> points MAXPT >= 1.
 subroutine frhbct(h, ds, dsmin, dsmax, maxpt, stat)
@@ -287,20 +220,6 @@ subroutine frhbsv(h, omega, nq, iguess, q, stat)
     stat = int(fricreg_hb_solve(fricreg_handle_to_ptr(h), omega, int(nq, c_size_t), q=q))
   end if
 end subroutine frhbsv
-
-!> FRHBXD(H, NDOF, NC, X, STAT): the displacements' coefficients X(NC, NDOF) of the last
-!> solution.
-subroutine frhbxd(h, ndof, nc, x, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: ndof, nc
-  double precision, intent(inout) :: x(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_hb_displacement(fricreg_handle_to_ptr(h), int(ndof, c_size_t), &
-                                     int(nc, c_size_t), x))
-end subroutine frhbxd
 
 !> FRHBGO(H, W0, W1, NQ, IGUESS, Q0, STAT): follow the response from W0 to W1 by
 !> continuation; with IGUESS = 1 from the guess Q0(NC, M) at W0, with 0 from the linear
@@ -410,17 +329,6 @@ subroutine frhbpk(h, idof, omega, rms, stat)
   end if
   stat = int(fricreg_hb_peak(fricreg_handle_to_ptr(h), int(idof - 1, c_size_t), omega, rms))
 end subroutine frhbpk
-
-!> FRHBST(H, ION, STAT): Hill's stability of every solution from now on (ION = 1) or not (0).
-subroutine frhbst(h, ion, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: ion
-  integer, intent(out) :: stat
-  stat = int(fricreg_hb_set_stability(fricreg_handle_to_ptr(h), int(ion, c_int)))
-end subroutine frhbst
 
 !> FRHBSB(H, K, ISTAB, MUMAX, STAT): the stability of point K (1 <= K <= NP), or with K = 0 of
 !> the last solution: ISTAB 1 stable, 0 not, and the largest |Floquet multiplier| MUMAX.

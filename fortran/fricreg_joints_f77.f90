@@ -46,6 +46,12 @@
 !   FRAFER(H, CODE, MSG, STAT)                       _errcode, _errmsg
 ! The creators refuse a negative count before C sees it (it would wrap into size_t), with
 ! FRICREG_EINVAL and no object to record it.
+!
+! Generated, not here: the entry points that are one C call (FRJKPA, FRJKNL, FRJKTR, FRJKTN,
+! FRJKCM, FRJKRS, FRJKSL, FRIWPA, FRIWSG, FRIWNL, FRIWTR, FRIWTN, FRIWCM, FRIWRS, FRIWSL) are a
+! line each, with their doc comments, in the table fricreg_joints_f77.txt, which
+! fortran/gen_f77.cmake turns into fricreg_joints_f77_generated.f90 at build time; those below
+! have logic of their own.
 
 ! ---- Jenkins elements (fricreg_jenkins.h) ----------------------------------------------------
 
@@ -74,85 +80,6 @@ subroutine frjkfr(h, stat)
   integer, intent(out) :: stat
   stat = fricreg_f77_release(h, fricreg_jenkins_free)
 end subroutine frjkfr
-
-!> FRJKPA(H, N, KT, MUN, STAT): spring stiffnesses KT(N) > 0 and slip forces MUN(N) >= 0.
-subroutine frjkpa(h, n, kt, mun, stat)
-  use fricreg_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: n
-  double precision, intent(in) :: kt(*), mun(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_jenkins_set_params(fricreg_handle_to_ptr(h), int(n, c_size_t), kt, mun))
-end subroutine frjkpa
-
-!> FRJKNL(H, N, MU, N0, KN, STAT): normal load with lift-off, bound MU(I) max(0, N0(I) +
-!> KN(I) G) for FRJKTN's normal displacements G.
-subroutine frjknl(h, n, mu, n0, kn, stat)
-  use fricreg_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: n
-  double precision, intent(in) :: mu(*), n0(*), kn(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_jenkins_set_normal(fricreg_handle_to_ptr(h), int(n, c_size_t), mu, n0, kn))
-end subroutine frjknl
-
-!> FRJKTR(H, N, U, F, DFDU, STAT): trial at the relative displacements U(DIM, N): the forces
-!> F(DIM, N) and tangents DFDU(DIM, DIM, N); the committed sliders do not change.
-subroutine frjktr(h, n, u, f, dfdu, stat)
-  use fricreg_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: n
-  double precision, intent(in) :: u(*)
-  double precision, intent(inout) :: f(*), dfdu(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_jenkins_trial(fricreg_handle_to_ptr(h), int(n, c_size_t), u, f, dfdu))
-end subroutine frjktr
-
-!> FRJKTN(H, N, U, G, F, NF, DFDU, DFDG, STAT): trial with normal displacements G(N) (positive
-!> pressing): F(DIM, N), normal forces NF(N), DFDU(DIM, DIM, N), DFDG(DIM, N).
-subroutine frjktn(h, n, u, g, f, nf, dfdu, dfdg, stat)
-  use fricreg_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: n
-  double precision, intent(in) :: u(*), g(*)
-  double precision, intent(inout) :: f(*), nf(*), dfdu(*), dfdg(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_jenkins_trial_normal(fricreg_handle_to_ptr(h), int(n, c_size_t), u, g, f, &
-                                          nf, dfdu, dfdg))
-end subroutine frjktn
-
-!> FRJKCM(H, STAT): commit the last trial's sliders (a converged step).
-subroutine frjkcm(h, stat)
-  use fricreg_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(out) :: stat
-  stat = int(fricreg_jenkins_commit(fricreg_handle_to_ptr(h)))
-end subroutine frjkcm
-
-!> FRJKRS(H, STAT): every slider back at 0.
-subroutine frjkrs(h, stat)
-  use fricreg_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(out) :: stat
-  stat = int(fricreg_jenkins_reset(fricreg_handle_to_ptr(h)))
-end subroutine frjkrs
-
-!> FRJKSL(H, N, W, STAT): the committed sliders W(DIM, N).
-subroutine frjksl(h, n, w, stat)
-  use fricreg_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: n
-  double precision, intent(inout) :: w(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_jenkins_get_slider(fricreg_handle_to_ptr(h), int(n, c_size_t), w))
-end subroutine frjksl
 
 !> FRJKER(H, CODE, MSG, STAT): code and message of the elements' last failure.
 subroutine frjker(h, code, msg, stat)
@@ -195,102 +122,6 @@ subroutine friwfr(h, stat)
   integer, intent(out) :: stat
   stat = fricreg_f77_release(h, fricreg_iwan_free)
 end subroutine friwfr
-
-!> FRIWPA(H, N, NS, K, PHI, STAT): slider stiffnesses K(NS, N) > 0 and slip forces
-!> PHI(NS, N) >= 0.
-subroutine friwpa(h, n, ns, k, phi, stat)
-  use fricreg_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: n, ns
-  double precision, intent(in) :: k(*), phi(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_iwan_set_params(fricreg_handle_to_ptr(h), int(n, c_size_t), &
-                                     int(ns, c_size_t), k, phi))
-end subroutine friwpa
-
-!> FRIWSG(H, N, FS, KT, CHI, BETA, RES, STAT): Segalman's four-parameter model per element
-!> (FS(N), KT(N), CHI(N), BETA(N)) discretized on the object's NS sliders with the grid
-!> parameter RES (fricreg_iwan_set_segalman).
-subroutine friwsg(h, n, fs, kt, chi, beta, res, stat)
-  use fricreg_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: n
-  double precision, intent(in) :: fs(*), kt(*), chi(*), beta(*), res
-  integer, intent(out) :: stat
-  stat = int(fricreg_iwan_set_segalman(fricreg_handle_to_ptr(h), int(n, c_size_t), fs, kt, chi, &
-                                       beta, res))
-end subroutine friwsg
-
-!> FRIWNL(H, N, N0, KN, STAT): normal load with lift-off: preloads N0(N) and normal
-!> stiffnesses KN(N) (the slip forces scale with max(0, N0 + KN G)/N0; fricreg_iwan_set_normal
-!> gives their ranges).
-subroutine friwnl(h, n, n0, kn, stat)
-  use fricreg_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: n
-  double precision, intent(in) :: n0(*), kn(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_iwan_set_normal(fricreg_handle_to_ptr(h), int(n, c_size_t), n0, kn))
-end subroutine friwnl
-
-!> FRIWTR(H, N, U, F, DFDU, STAT): trial at U(DIM, N): F(DIM, N), DFDU(DIM, DIM, N).
-subroutine friwtr(h, n, u, f, dfdu, stat)
-  use fricreg_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: n
-  double precision, intent(in) :: u(*)
-  double precision, intent(inout) :: f(*), dfdu(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_iwan_trial(fricreg_handle_to_ptr(h), int(n, c_size_t), u, f, dfdu))
-end subroutine friwtr
-
-!> FRIWTN(H, N, U, G, F, NF, DFDU, DFDG, STAT): trial with normal displacements G(N), as
-!> FRJKTN.
-subroutine friwtn(h, n, u, g, f, nf, dfdu, dfdg, stat)
-  use fricreg_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: n
-  double precision, intent(in) :: u(*), g(*)
-  double precision, intent(inout) :: f(*), nf(*), dfdu(*), dfdg(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_iwan_trial_normal(fricreg_handle_to_ptr(h), int(n, c_size_t), u, g, f, nf, &
-                                       dfdu, dfdg))
-end subroutine friwtn
-
-!> FRIWCM(H, STAT): commit the last trial's sliders.
-subroutine friwcm(h, stat)
-  use fricreg_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(out) :: stat
-  stat = int(fricreg_iwan_commit(fricreg_handle_to_ptr(h)))
-end subroutine friwcm
-
-!> FRIWRS(H, STAT): every slider back at 0.
-subroutine friwrs(h, stat)
-  use fricreg_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(out) :: stat
-  stat = int(fricreg_iwan_reset(fricreg_handle_to_ptr(h)))
-end subroutine friwrs
-
-!> FRIWSL(H, N, NS, W, STAT): the committed sliders, W(NS, N) in 1-D (W(DIM, NS, N) in 2-D).
-subroutine friwsl(h, n, ns, w, stat)
-  use fricreg_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: n, ns
-  double precision, intent(inout) :: w(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_iwan_get_slider(fricreg_handle_to_ptr(h), int(n, c_size_t), &
-                                     int(ns, c_size_t), w))
-end subroutine friwsl
 
 !> FRIWER(H, CODE, MSG, STAT): code and message of the elements' last failure.
 subroutine friwer(h, code, msg, stat)

@@ -77,6 +77,14 @@
 ! before C is called, of counts that would wrap into size_t: FRSTCR's NDOF or M below 1
 ! (there is no structure yet to record it), FRSTAG's and FRSTLD's N below 0, FRSTIW's and
 ! FRSTIS's NS below 0, FRSTJ2's ME above 2**25 (C's limit 2 ME <= 2**26; FRICREG_EINVAL).
+!
+! Generated, not here: the entry points that are one C call (FRSTMC, FRSTKC, FRSTCC, FRSTJC,
+! FRSTJR, FRSTMF, FRSTKF, FRSTCF, FRSTCA, FRSTBD, FRSTLW, FRSTIV, FRSTU0, FRSTNM, FRSTHH,
+! FRSTCD, FRSTNT, FRSTSP, FRSTTE, FRSTGS, FRSTGF, FRSTGD, FRSTGV, FRSTEE, FRSTPK, FRSTPE,
+! FRSTDE, FRSTOD, FRSTOG, FRSTGT, FRSTJS, FRSTS2, FRSTNF) are a line each, with their doc
+! comments, in the table fricreg_structure_f77.txt, which fortran/gen_f77.cmake turns into
+! fricreg_structure_f77_generated.f90 at build time. Those below have logic of their own: a
+! handle made or released, a refused count, J transposed into a scratch copy, the message.
 
 !> FRSTCR(NDOF, M, H, STAT): create a structure of NDOF >= 1 degrees of freedom and M >= 1
 !> contacts into H, with C's defaults (M = I, C = K = 0, J unset, law (4), eps = 1e-3,
@@ -108,126 +116,6 @@ subroutine frstfr(h, stat)
   stat = fricreg_f77_release(h, fricreg_structure_free)
 end subroutine frstfr
 
-!> FRSTMC(H, NDOF, FLAGS, COLPTR, ROWIND, VALUES, STAT): mass matrix M (NDOF x NDOF) in
-!> compressed sparse columns, 1-based with FLAGS = FRICREG_SPARSE_ONE_BASED: INTEGER*8
-!> COLPTR(NDOF + 1) column pointers, INTEGER*8 ROWIND(NNZ) row indices, VALUES(NNZ),
-!> NNZ = COLPTR(NDOF + 1) - 1. Whole and symmetric, or one triangle (+ FRICREG_SPARSE_LOWER or
-!> _UPPER); positive definite. A lumped M is COLPTR(K) = K, ROWIND(K) = K.
-subroutine frstmc(h, ndof, flags, colptr, rowind, values, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h, colptr(*), rowind(*)
-  integer, intent(in) :: ndof, flags
-  double precision, intent(in) :: values(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_set_mass_csc(fricreg_handle_to_ptr(h), int(ndof, c_size_t), &
-                                            int(flags, c_int), colptr, rowind, values))
-end subroutine frstmc
-
-!> FRSTKC(H, NDOF, FLAGS, COLPTR, ROWIND, VALUES, STAT): stiffness matrix K in compressed
-!> sparse columns, the arrays and FLAGS as FRSTMC (1-based COLPTR(NDOF + 1), ROWIND(NNZ),
-!> VALUES(NNZ)); symmetric, need not be definite.
-subroutine frstkc(h, ndof, flags, colptr, rowind, values, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h, colptr(*), rowind(*)
-  integer, intent(in) :: ndof, flags
-  double precision, intent(in) :: values(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_set_stiffness_csc(fricreg_handle_to_ptr(h), &
-                                                 int(ndof, c_size_t), int(flags, c_int), &
-                                                 colptr, rowind, values))
-end subroutine frstkc
-
-!> FRSTCC(H, NDOF, FLAGS, COLPTR, ROWIND, VALUES, STAT): damping matrix C in compressed sparse
-!> columns, as FRSTKC (1-based COLPTR(NDOF + 1), ROWIND(NNZ), VALUES(NNZ)); replaces Rayleigh
-!> damping.
-subroutine frstcc(h, ndof, flags, colptr, rowind, values, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h, colptr(*), rowind(*)
-  integer, intent(in) :: ndof, flags
-  double precision, intent(in) :: values(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_set_damping_csc(fricreg_handle_to_ptr(h), int(ndof, c_size_t), &
-                                               int(flags, c_int), colptr, rowind, values))
-end subroutine frstcc
-
-!> FRSTJC(H, M, NDOF, FLAGS, COLPTR, ROWIND, VALUES, STAT): contact matrix J (M x NDOF,
-!> J(I, K) = d zdot_I / d u'_K) by its compressed columns, one per degree of freedom: 1-based
-!> INTEGER*8 COLPTR(NDOF + 1), INTEGER*8 ROWIND(NNZ) contact numbers 1..M, VALUES(NNZ). FLAGS
-!> FRICREG_SPARSE_ONE_BASED or 0 (J is not symmetric: a triangle flag is FRICREG_EINVAL).
-!> Each contact must have a nonzero entry.
-subroutine frstjc(h, m, ndof, flags, colptr, rowind, values, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h, colptr(*), rowind(*)
-  integer, intent(in) :: m, ndof, flags
-  double precision, intent(in) :: values(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_set_contacts_csc(fricreg_handle_to_ptr(h), int(m, c_size_t), &
-                                                int(ndof, c_size_t), int(flags, c_int), &
-                                                colptr, rowind, values))
-end subroutine frstjc
-
-!> FRSTJR(H, M, NDOF, FLAGS, ROWPTR, COLIND, VALUES, STAT): J by its compressed rows, one per
-!> contact, as codes that assemble contact by contact hold it: 1-based INTEGER*8 ROWPTR(M + 1),
-!> INTEGER*8 COLIND(NNZ) degrees of freedom 1..NDOF, VALUES(NNZ); FLAGS as FRSTJC.
-subroutine frstjr(h, m, ndof, flags, rowptr, colind, values, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h, rowptr(*), colind(*)
-  integer, intent(in) :: m, ndof, flags
-  double precision, intent(in) :: values(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_set_contacts_csr(fricreg_handle_to_ptr(h), int(m, c_size_t), &
-                                                int(ndof, c_size_t), int(flags, c_int), &
-                                                rowptr, colind, values))
-end subroutine frstjr
-
-!> FRSTMF(H, NDOF, A, STAT): dense mass matrix A(NDOF, NDOF), symmetric (so Fortran's column
-!> order is C's row order), positive definite; its zeros are left out.
-subroutine frstmf(h, ndof, a, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: ndof
-  double precision, intent(in) :: a(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_set_mass(fricreg_handle_to_ptr(h), int(ndof, c_size_t), a))
-end subroutine frstmf
-
-!> FRSTKF(H, NDOF, A, STAT): dense stiffness matrix A(NDOF, NDOF), symmetric.
-subroutine frstkf(h, ndof, a, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: ndof
-  double precision, intent(in) :: a(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_set_stiffness(fricreg_handle_to_ptr(h), int(ndof, c_size_t), a))
-end subroutine frstkf
-
-!> FRSTCF(H, NDOF, A, STAT): dense damping matrix A(NDOF, NDOF), symmetric; replaces Rayleigh
-!> damping.
-subroutine frstcf(h, ndof, a, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: ndof
-  double precision, intent(in) :: a(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_set_damping(fricreg_handle_to_ptr(h), int(ndof, c_size_t), a))
-end subroutine frstcf
-
 !> FRSTJF(H, M, NDOF, J, STAT): dense contact matrix J(M, NDOF) in Fortran's order,
 !> J(I, K) = d zdot_I / d u'_K. J is not symmetric and C reads it row-major, so it is
 !> transposed into a scratch copy of M*NDOF values here (FRICREG_ENOMEM if that fails).
@@ -253,56 +141,6 @@ subroutine frstjf(h, m, ndof, j, stat)
   stat = int(fricreg_structure_set_contacts(fricreg_handle_to_ptr(h), int(m, c_size_t), &
                                             int(ndof, c_size_t), jt))
 end subroutine frstjf
-
-!> FRSTCA(H, A0, A1, STAT): Rayleigh damping C = A0 M + A1 K (A0 in 1/s, A1 in s, both >= 0),
-!> following later changes of M and K; replaces a C given before.
-subroutine frstca(h, a0, a1, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  double precision, intent(in) :: a0, a1
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_set_rayleigh(fricreg_handle_to_ptr(h), a0, a1))
-end subroutine frstca
-
-!> FRSTBD(H, M, MUN, STAT): friction bounds MUN(M) = mu_I N_I >= 0 (force units); may change
-!> between steps.
-subroutine frstbd(h, m, mun, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: m
-  double precision, intent(in) :: mun(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_set_bounds(fricreg_handle_to_ptr(h), int(m, c_size_t), mun))
-end subroutine frstbd
-
-!> FRSTLW(H, LAW, EPS, STAT): friction law (FRICREG_LAW_*) and eps > 0 (velocity units).
-subroutine frstlw(h, law, eps, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: law
-  double precision, intent(in) :: eps
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_set_law(fricreg_handle_to_ptr(h), int(law, c_int), eps))
-end subroutine frstlw
-
-!> FRSTIV(H, NDOF, R, STAT): influence vector R(NDOF) of the ground acceleration (load
-!> -M R a_g; R(K) = 1 for a degree of freedom that translates with the ground, the default).
-subroutine frstiv(h, ndof, r, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: ndof
-  double precision, intent(in) :: r(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_set_influence(fricreg_handle_to_ptr(h), int(ndof, c_size_t), r))
-end subroutine frstiv
 
 !> FRSTAG(H, T0, DTREC, N, AG, STAT): ground acceleration record AG(N), N >= 2, AG(K) at
 !> T0 + (K - 1) DTREC, linear between samples and zero outside; N = 0 removes it (AG not read).
@@ -340,223 +178,6 @@ subroutine frstld(h, ndof, p, t0, dtrec, n, g, stat)
                                         dtrec, int(n, c_size_t), g))
 end subroutine frstld
 
-!> FRSTU0(H, NDOF, U0, V0, STAT): restart at t = 0 from U0(NDOF), V0(NDOF); clears the energy
-!> balance, the dissipation and the counters.
-subroutine frstu0(h, ndof, u0, v0, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: ndof
-  double precision, intent(in) :: u0(*), v0(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_set_initial(fricreg_handle_to_ptr(h), int(ndof, c_size_t), &
-                                           u0, v0))
-end subroutine frstu0
-
-!> FRSTNM(H, BETA, GAMMA, STAT): Newmark's method, 0 < BETA <= 1/2, 1/2 <= GAMMA <= 1
-!> (0.25D0, 0.5D0: average acceleration, the default).
-subroutine frstnm(h, beta, gamma, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  double precision, intent(in) :: beta, gamma
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_set_newmark(fricreg_handle_to_ptr(h), beta, gamma))
-end subroutine frstnm
-
-!> FRSTHH(H, ALPHA, STAT): HHT-alpha, -1/3 <= ALPHA <= 0.
-subroutine frsthh(h, alpha, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  double precision, intent(in) :: alpha
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_set_hht(fricreg_handle_to_ptr(h), alpha))
-end subroutine frsthh
-
-!> FRSTCD(H, STAT): explicit central difference (each step refused, FRICREG_ESTEP, beyond its
-!> stability bound).
-subroutine frstcd(h, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_set_central_difference(fricreg_handle_to_ptr(h)))
-end subroutine frstcd
-
-!> FRSTNT(H, TOL, MAXIT, STAT): Newton's tolerance 0 < TOL < 1 and at most 1 <= MAXIT <= 1000
-!> iterations per step.
-subroutine frstnt(h, tol, maxit, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  double precision, intent(in) :: tol
-  integer, intent(in) :: maxit
-  integer, intent(out) :: stat
-  ! C takes an int: an ILP64 caller's count beyond its range is clamped, not wrapped into
-  ! range, so that C refuses it (and records why).
-  stat = int(fricreg_structure_set_newton(fricreg_handle_to_ptr(h), tol, &
-             int(min(max(maxit, -int(huge(0_c_int))), int(huge(0_c_int))), c_int)))
-end subroutine frstnt
-
-!> FRSTSP(H, DT, STAT): one step of DT > 0 with the selected scheme.
-subroutine frstsp(h, dt, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  double precision, intent(in) :: dt
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_step(fricreg_handle_to_ptr(h), dt))
-end subroutine frstsp
-
-!> FRSTTE(H, DT, TEND, STAT): steps of DT from the current time to TEND, the last one shortened
-!> to land on it; on failure the state is the last successful step's.
-subroutine frstte(h, dt, tend, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  double precision, intent(in) :: dt, tend
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_run(fricreg_handle_to_ptr(h), dt, tend))
-end subroutine frstte
-
-!> FRSTGS(H, NDOF, U, V, A, STAT): displacements U(NDOF), velocities V(NDOF), accelerations
-!> A(NDOF) at the current time.
-subroutine frstgs(h, ndof, u, v, a, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: ndof
-  double precision, intent(inout) :: u(*), v(*), a(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_get_state(fricreg_handle_to_ptr(h), int(ndof, c_size_t), u, v, a))
-end subroutine frstgs
-
-!> FRSTGF(H, M, F, STAT): friction forces F(M) of the current state.
-subroutine frstgf(h, m, f, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: m
-  double precision, intent(inout) :: f(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_get_forces(fricreg_handle_to_ptr(h), int(m, c_size_t), f))
-end subroutine frstgf
-
-!> FRSTGD(H, M, D, STAT): energy D(M) dissipated by each contact since the start.
-subroutine frstgd(h, m, d, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: m
-  double precision, intent(inout) :: d(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_get_dissipation(fricreg_handle_to_ptr(h), int(m, c_size_t), d))
-end subroutine frstgd
-
-!> FRSTGV(H, WHICH, VALUE, STAT): one quantity (FRICREG_SVALUE_*: time, energies) into VALUE.
-subroutine frstgv(h, which, value, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: which
-  double precision, intent(inout) :: value
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_get_value(fricreg_handle_to_ptr(h), int(which, c_int), value))
-end subroutine frstgv
-
-!> FRSTEE(H, ON, STAT): estimate (ON = 1 or 2) or not (ON = 0, the default; 0 also discards
-!> the estimate made) the error of the peak displacements and of each contact's dissipation
-!> against eps -> 0, read by FRSTPE and FRSTDE: ON = 1 (FRICREG_ESTIMATE_TWO_COMPANIONS) from
-!> companions at eps/2 and eps/4 stepped alongside at half and a quarter of the step (or an
-!> adaptive run's tolerances/16 and /256), the observed order's estimate or a safe bound;
-!> ON = 2 (FRICREG_ESTIMATE_ONE_COMPANION) 1.6's err = 3 |q - q_companion| (C's
-!> fricreg_structure_set_error_estimate: the companions are made at the first step after
-!> FRSTU0 or creation). FRICREG_EINVAL if ON is not 0, 1 or 2.
-subroutine frstee(h, on, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: on
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_set_error_estimate(fricreg_handle_to_ptr(h), int(on, c_int)))
-end subroutine frstee
-
-!> FRSTPK(H, NDOF, PEAK, STAT): the peak displacements PEAK(NDOF) = max |u_i| since FRSTU0 (or
-!> creation), sampled at every fixed step's end (C's fricreg_structure_get_peak_displacement;
-!> tracked with the estimate on or off). FRICREG_ESIZE if NDOF is not the structure's.
-subroutine frstpk(h, ndof, peak, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: ndof
-  double precision, intent(inout) :: peak(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_get_peak_displacement(fricreg_handle_to_ptr(h), &
-                                                     int(max(ndof, 0), c_size_t), peak))
-end subroutine frstpk
-
-!> FRSTPE(H, NDOF, ERR, STAT): the error estimate ERR(NDOF) of each peak displacement (length
-!> units; +Inf where the companion failed; C's fricreg_structure_get_peak_displacement_error).
-!> FRICREG_EINVAL without an estimate (FRSTEE off, no step since FRSTU0 with it on, or ended by
-!> a setter of the model); FRICREG_ESIZE if NDOF is not the structure's.
-subroutine frstpe(h, ndof, err, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: ndof
-  double precision, intent(inout) :: err(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_get_peak_displacement_error(fricreg_handle_to_ptr(h), &
-                                                           int(max(ndof, 0), c_size_t), err))
-end subroutine frstpe
-
-!> FRSTDE(H, M, ERR, STAT): the error estimate ERR(M) of each contact's dissipation (energy
-!> units; +Inf where the companion failed; C's fricreg_structure_get_dissipation_error).
-!> FRICREG_EINVAL without an estimate; FRICREG_ESIZE if M is not the number of contacts.
-subroutine frstde(h, m, err, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: m
-  double precision, intent(inout) :: err(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_get_dissipation_error(fricreg_handle_to_ptr(h), &
-                                                     int(max(m, 0), c_size_t), err))
-end subroutine frstde
-
-!> FRSTOD(H, INTEG, DT, RTOL, ATOL, TEND, STAT): integrate to TEND with GSL's stepper INTEG
-!> (FRICREG_INT_*): fixed steps DT where RTOL = ATOL = 0, else adaptive with DT the first step;
-!> ATOL = -1 (FRICREG_ATOL_FROM_EPS) with RTOL > 0 holds each velocity a contact reads to
-!> min(1E-3 EPS / MAX_I SUM_K |J_IK|, RTOL) absolutely (C's fricreg_structure_run_ode, its
-!> errors).
-subroutine frstod(h, integ, dt, rtol, atol, tend, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: integ
-  double precision, intent(in) :: dt, rtol, atol, tend
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_run_ode(fricreg_handle_to_ptr(h), int(integ, c_int), dt, rtol, &
-                                       atol, tend))
-end subroutine frstod
-
 !> FRSTOT(H, N, ATOL, STAT): absolute tolerances ATOL(N) per component of FRSTOD's state
 !> (U(NDOF), V(NDOF), the input work, the viscous and each contact's dissipation: N = 2 NDOF +
 !> 2 + M), each finite and > 0, used by every later adaptive FRSTOD in place of its ATOL; N = 0
@@ -576,34 +197,6 @@ subroutine frstot(h, n, atol, stat)
   stat = int(fricreg_structure_set_ode_abs_tolerances(fricreg_handle_to_ptr(h), &
                                                       int(n, c_size_t), atol))
 end subroutine frstot
-
-!> FRSTOG(H, N, ATOL, STAT): the absolute tolerances ATOL(N), N = 2 NDOF + 2 + M, of the last
-!> adaptive FRSTOD (those of FRSTOT, its one ATOL, or the rule from eps; zeros before any).
-!> C's fricreg_structure_get_ode_abs_tolerances; FRICREG_ESIZE for another N.
-subroutine frstog(h, n, atol, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: n
-  double precision, intent(inout) :: atol(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_get_ode_abs_tolerances(fricreg_handle_to_ptr(h), &
-                                                      int(max(n, 0), c_size_t), atol))
-end subroutine frstog
-
-!> FRSTGT(H, WHICH, VALUE, STAT): one counter (FRICREG_SSTAT_*: steps, Newton iterations, ...)
-!> into INTEGER*8 VALUE.
-subroutine frstgt(h, which, value, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: which
-  integer(c_int64_t), intent(inout) :: value
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_get_stat(fricreg_handle_to_ptr(h), int(which, c_int), value))
-end subroutine frstgt
 
 !> FRSTER(H, CODE, MSG, STAT): status CODE and message MSG of the structure's last failed call
 !> (FRICREG_OK and blanks if none; 'NULL structure' for H = 0); MSG blank-padded or truncated.
@@ -783,39 +376,6 @@ subroutine frstl2(h, me, ndof, je, jn, kt, mu, n0, kn, stat)
                                                      ct, cn, kt, mu, n0, kn))
 end subroutine frstl2
 
-!> FRSTJS(H, ME, F, W, D, STAT): the Jenkins elements' forces F(ME) (on the element; -JE^T F
-!> on the structure), committed sliders W(ME) and dissipation D(ME) since they were set (C's
-!> fricreg_structure_get_jenkins_state, all three). FRICREG_ESIZE if ME is not the number of
-!> elements, or they are Iwan elements of NS > 1 (FRSTIS reads those).
-subroutine frstjs(h, me, f, w, d, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: me
-  double precision, intent(inout) :: f(*), w(*), d(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_get_jenkins_state(fricreg_handle_to_ptr(h), &
-                                                 int(max(me, 0), c_size_t), f, w, d))
-end subroutine frstjs
-
-!> FRSTS2(H, ME, F, W, D, STAT): the 2-D elements' (FRSTJ2) forces F(2, ME) (element I's x at
-!> F(1, I), y at F(2, I), as JE's rows 2I - 1, 2I; -JE^T F on the structure), committed sliders
-!> W(2, ME) laid out as F and dissipation D(ME) (C's fricreg_structure_get_jenkins_2d_state, all
-!> three). FRICREG_ESIZE if ME is not the number of elements; FRICREG_EINVAL if they are 1-D
-!> (FRSTJS, FRSTIS read those).
-subroutine frsts2(h, me, f, w, d, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: me
-  double precision, intent(inout) :: f(*), w(*), d(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_get_jenkins_2d_state(fricreg_handle_to_ptr(h), &
-                                                    int(max(me, 0), c_size_t), f, w, d))
-end subroutine frsts2
-
 !> FRSTIS(H, ME, NS, F, W, D, STAT): the elements' forces F(ME), committed sliders W(NS, ME)
 !> (element I's slider S at W(S, I)) and dissipation D(ME) (C's
 !> fricreg_structure_get_iwan_state; Jenkins elements with NS = 1). FRICREG_ESIZE if ME or NS
@@ -836,21 +396,6 @@ subroutine frstis(h, me, ns, f, w, d, stat)
                                               int(max(me, 0), c_size_t), int(ns, c_size_t), f, &
                                               w, d))
 end subroutine frstis
-
-!> FRSTNF(H, ME, N, STAT): the normal forces N(ME) of FRSTLO's elements (C's
-!> fricreg_structure_get_normal_forces; 0 while separated). FRICREG_ESIZE if ME is not the
-!> number of elements; FRICREG_EINVAL if they have no normal law.
-subroutine frstnf(h, me, n, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: me
-  double precision, intent(inout) :: n(*)
-  integer, intent(out) :: stat
-  stat = int(fricreg_structure_get_normal_forces(fricreg_handle_to_ptr(h), &
-                                                 int(max(me, 0), c_size_t), n))
-end subroutine frstnf
 
 !> FRCSTP(H, M, ZS, ZP, AP, W, WEFF, C, TOL, MAXIT, FLAGS, F, ITERS, CONV, STAT): the forces of
 !> one implicit step of the caller's own integrator on a context H (FRCTXC), C's

@@ -7,7 +7,8 @@
 # (fricreg.F90: types, procedures, the iso_c_binding names it passes on); and each F77 entry
 # point (fricreg_f77.f90, fricreg_sim_f77.f90,
 # fricreg_joints_f77.f90, fricreg_structure_f77.f90, fricreg_hb_f77.f90, fricreg_f77_check.f90,
-# fricreg_warnings_f77.f90)
+# fricreg_warnings_f77.f90, and the tables fortran/*_f77.txt whose wrappers gen_f77.cmake
+# writes at build time)
 # as `FRNAME(`, named once only across
 # the files (external names share one space: a second definition would fail at link time, or
 # silently take the first). One awk reads the README, the module and the F77 files: a grep per
@@ -26,6 +27,8 @@ present= missing=
 for f in $f77_files; do
     if [ -f "$root/fortran/$f" ]; then present="$present $root/fortran/$f"; else missing="$missing $f"; fi
 done
+# The tables of the generated entry points: a line `frname fricreg_function ARG:KIND...` each.
+for f in "$root"/fortran/*_f77.txt; do [ -f "$f" ] && present="$present $f"; done
 # shellcheck disable=SC2086 # the files are words
 awk -v missing="$missing" -v nmodule="$nmodule" '
 function fail(what) { fails_text = fails_text "FAIL: " what "\n"; fails++ }
@@ -55,6 +58,7 @@ nfile <= 1 + nmodule {
         n = $0; sub(/^subroutine /, "", n); sub(/\(.*/, "", n)
         f77[++nf77] = toupper(n)
     }
+    if (FILENAME ~ /\.txt$/ && $0 ~ /^fr[a-z0-9]* +fricreg_/) f77[++nf77] = toupper($1)
 }
 # The README names NAME as a regex on one of its lines (all lines, or the rows of a type).
 function readme_has(re,    i) { for (i = 1; i <= nreadme; i++) if (readme[i] ~ re) return 1; return 0 }

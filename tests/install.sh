@@ -111,14 +111,16 @@ if [ "$fc" != "-" ]; then
     fsrc=$prefix/include/fricreg/src
     objects="fricreg_base.F90 fricreg_laws.F90 fricreg_ctx.F90 fricreg_disk_ctx.F90"
     objects="$objects fricreg_jenkins.F90 fricreg_iwan.F90 fricreg_aft.F90"
-    order="fricreg_constants.f90 fricreg_c.f90 $objects fricreg.F90 fricreg_f77.f90"
-    order="$order fricreg_f77_check.f90 fricreg_joints_f77.f90" sim=""
+    # each F77 file's generated entry points (fortran/*_f77.txt) right after it
+    f77="fricreg_f77.f90 fricreg_f77_generated.f90 fricreg_f77_check.f90"
+    f77="$f77 fricreg_joints_f77.f90 fricreg_joints_f77_generated.f90"
+    order="fricreg_constants.f90 fricreg_c.f90 $objects fricreg.F90 $f77" sim=""
     if [ -f "$fsrc/fricreg_sim_c.f90" ]; then
         objects="$objects fricreg_sim.F90 fricreg_exact.F90 fricreg_structure.F90 fricreg_hb.F90"
         order="fricreg_constants.f90 fricreg_c.f90 fricreg_sim_c.f90 $objects fricreg.F90"
-        order="$order fricreg_f77.f90 fricreg_f77_check.f90 fricreg_joints_f77.f90"
-        order="$order fricreg_sim_f77.f90"
-        order="$order fricreg_structure_f77.f90 fricreg_hb_f77.f90 fricreg_warnings_f77.f90"
+        order="$order $f77 fricreg_sim_f77.f90 fricreg_sim_f77_generated.f90"
+        order="$order fricreg_structure_f77.f90 fricreg_structure_f77_generated.f90"
+        order="$order fricreg_hb_f77.f90 fricreg_hb_f77_generated.f90 fricreg_warnings_f77.f90"
         sim=-DFRICREG_HAVE_SIM
     fi
     mkdir -p "$work/fsrc"
