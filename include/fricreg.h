@@ -160,7 +160,7 @@ enum fricreg_sparse_flags {
  *  combined with | with enum fricreg_sparse_flags (FRICREG_MATRIX_CSC | FRICREG_SPARSE_ONE_BASED
  *  is what Fortran codes hold). Since 1.7; values fixed forever. */
 enum fricreg_matrix_format {
-    FRICREG_MATRIX_DENSE = 0, /**< values[nrows ncols] row-major; ptr and ind NULL */
+    FRICREG_MATRIX_DENSE = 0, /**< values[nrows ncols] row-major; ptr and ind not read */
     FRICREG_MATRIX_CSR = 8,   /**< compressed sparse rows: ptr[nrows + 1], ind[nnz] columns */
     FRICREG_MATRIX_CSC = 16   /**< compressed sparse columns: ptr[ncols + 1], ind[nnz] rows */
 };

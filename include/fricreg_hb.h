@@ -206,15 +206,16 @@ FRICREG_API int fricreg_hb_set_damping_csc(fricreg_hb *hb, size_t ndof, int flag
  *          fricreg_hb_set_stiffness) or FRICREG_DAMPING (replaces Rayleigh damping); each
  *          symmetric to 1e-12 of the rows' scales, its symmetric part kept.
  *  nrows, ncols  both the driver's ndof.
- *  format  enum fricreg_matrix_format: FRICREG_MATRIX_DENSE (values[ndof ndof] row-major, ptr
- *          and ind NULL, no flag), or FRICREG_MATRIX_CSR or FRICREG_MATRIX_CSC, each combined
- *          with | with enum fricreg_sparse_flags (base; whole or by one triangle).
+ *  format  enum fricreg_matrix_format: FRICREG_MATRIX_DENSE (values[ndof ndof] row-major, no
+ *          flag; ptr and ind not read, NULL from C), or FRICREG_MATRIX_CSR or
+ *          FRICREG_MATRIX_CSC, each combined with | with enum fricreg_sparse_flags (base; whole
+ *          or by one triangle).
  *  ptr     compressed: ptr[ndof + 1], from the base.
  *  ind     compressed: ind[nnz], the column (CSR) or row (CSC) of each entry.
  *  values  values[ndof ndof] (dense) or values[nnz] (compressed), the matrix's units.
  *  Returns FRICREG_OK; FRICREG_ENULL (hb, values, ptr of a compressed matrix, or ind or values
  *  with nnz > 0); FRICREG_EINVAL (which or format unknown, FRICREG_CONTACTS, flags with a
- *  dense matrix or both CSR and CSC, ptr or ind with a dense one, ptr not from the base or
+ *  dense matrix or both CSR and CSC, ptr not from the base or
  *  decreasing, an index out of range, an entry outside the triangle given; during a solve);
  *  FRICREG_ESIZE if nrows or ncols is not ndof; FRICREG_ENONFINITE; FRICREG_ENOTSYM;
  *  FRICREG_ENOMEM. The message names the array and the entry. */

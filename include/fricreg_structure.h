@@ -140,15 +140,15 @@ FRICREG_API int fricreg_structure_set_contacts(fricreg_structure *s, size_t m, s
  *  nrows   ndof, or m for J.
  *  ncols   ndof.
  *  format  enum fricreg_matrix_format: FRICREG_MATRIX_DENSE (values[nrows ncols] row-major,
- *          ptr and ind NULL, no flag), or FRICREG_MATRIX_CSR or FRICREG_MATRIX_CSC, each
- *          combined with | with enum fricreg_sparse_flags (base; a symmetric matrix whole or
- *          by one triangle, not J).
+ *          no flag; ptr and ind not read, NULL from C), or FRICREG_MATRIX_CSR or
+ *          FRICREG_MATRIX_CSC, each combined with | with enum fricreg_sparse_flags (base; a
+ *          symmetric matrix whole or by one triangle, not J).
  *  ptr     compressed: ptr[nrows + 1] (CSR) or ptr[ncols + 1] (CSC), from the base.
  *  ind     compressed: ind[nnz], the column (CSR) or row (CSC) of each entry.
  *  values  values[nrows ncols] (dense) or values[nnz] (compressed), the matrix's units.
  *  Returns FRICREG_OK; FRICREG_ENULL (s, values, ptr of a compressed matrix, or ind or values
  *  with nnz > 0); FRICREG_EINVAL (which or format unknown, flags with a dense matrix or both
- *  CSR and CSC, ptr or ind given with a dense one, a triangle for J, ptr not from the base or
+ *  CSR and CSC, a triangle for J, ptr not from the base or
  *  decreasing, an index out of range, an entry outside the triangle given, a zero row of J;
  *  called from the observer); FRICREG_ESIZE if nrows or ncols is not the structure's;
  *  FRICREG_ENONFINITE; FRICREG_ENOTSYM; FRICREG_ENOTPSD (M); FRICREG_ENOMEM. The message names

@@ -334,10 +334,9 @@ int fricreg_hb_set_matrix(fricreg_hb *hb, int which, size_t nrows, size_t ncols,
     if (layout != FRICREG_MATRIX_DENSE)
         return fr_hb_set_compressed(hb, fn, slot, nrows, layout == FRICREG_MATRIX_CSC,
                                     format & ~layout, ptr, ind, values);
-    if (format != FRICREG_MATRIX_DENSE || ptr != NULL || ind != NULL)
-        return fr_fail(hb, FRICREG_EINVAL,
-                       "%s: a dense matrix takes no sparse flags (format %d), ptr or ind", fn,
-                       format);
+    if (format != FRICREG_MATRIX_DENSE) /* ptr and ind are not read: Fortran cannot pass NULL */
+        return fr_fail(hb, FRICREG_EINVAL, "%s: a dense matrix takes no sparse flags (format %d)",
+                       fn, format);
     int status = set_symmetric(hb, fn, nrows, values, slot);
     if (status == FRICREG_OK && slot == 1)
         hb->rayleigh = 0;

@@ -148,10 +148,9 @@ int fricreg_structure_set_matrix(fricreg_structure *s, int which, size_t nrows, 
     if (layout != FRICREG_MATRIX_DENSE)
         return set_compressed(s, slot[which], who, nrows, ncols, layout == FRICREG_MATRIX_CSC,
                               format & ~layout, ptr, ind, values);
-    if (format != FRICREG_MATRIX_DENSE || ptr != NULL || ind != NULL)
-        return fr_fail(s, FRICREG_EINVAL,
-                       "%s: a dense matrix takes no sparse flags (format %d), ptr or ind", who,
-                       format);
+    if (format != FRICREG_MATRIX_DENSE) /* ptr and ind are not read: Fortran cannot pass NULL */
+        return fr_fail(s, FRICREG_EINVAL, "%s: a dense matrix takes no sparse flags (format %d)",
+                       who, format);
     return set_dense(s, slot[which], who, nrows, ncols, values);
 }
 
