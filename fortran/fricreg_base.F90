@@ -5,8 +5,8 @@
 ! One of the modules of module fricreg (fricreg.F90), the one users `use`, which re-exports what
 ! callers need from here and whose header states the conventions every type follows.
 module fricreg_base_m
-  use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_ptr, c_null_ptr, &
-                                         c_null_char, c_associated
+  use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_int64_t, c_ptr, &
+                                         c_null_ptr, c_null_char, c_associated
   use fricreg_c
   implicit none
   private
@@ -49,7 +49,7 @@ module fricreg_base_m
     procedure, private :: object_assign
     generic :: assignment(=) => object_assign
     procedure, non_overridable :: adopt, ready, fail, record, unrecorded, check_size, &
-                                  check_square
+                                  check_square, check_sparse
   end type
 
 contains
@@ -270,5 +270,33 @@ contains
     status = self%check_size(what, array // ', 1', size(a, 1), expected)
     if (status == FRICREG_OK) status = self%check_size(what, array // ', 2', size(a, 2), expected)
   end function check_square
+
+  !> FRICREG_OK if ptr has n + 1 elements and ind and values hold at least the
+  !> nnz = ptr(n + 1) - base entries ptr says (base 1 with FRICREG_SPARSE_ONE_BASED in flags,
+  !> else 0), else a recorded FRICREG_ESIZE naming the array: C reads nnz of each, which it
+  !> cannot check. ptr_name and ind_name name the first two arrays in the message; a
+  !> ptr(n + 1) below base is left to C (FRICREG_EINVAL).
+  function check_sparse(self, what, ptr_name, ind_name, flags, n, ptr, ind, values) &
+      result(status)
+    class(fricreg_object), intent(inout) :: self
+    character(len=*), intent(in) :: what, ptr_name, ind_name
+    integer(c_int), intent(in) :: flags
+    integer(c_size_t), intent(in) :: n
+    integer(c_int64_t), intent(in) :: ptr(:), ind(:)
+    real(c_double), intent(in) :: values(:)
+    integer(c_int) :: status
+    integer(c_int64_t) :: nnz
+    character(len=64) :: buf
+    status = self%check_size(what, ptr_name, size(ptr), n + 1)
+    if (status /= FRICREG_OK) return
+    nnz = ptr(n + 1) - merge(1_c_int64_t, 0_c_int64_t, iand(flags, FRICREG_SPARSE_ONE_BASED) /= 0)
+    if (int(size(ind), c_int64_t) < nnz) then
+      write (buf, '(a, i0, a, i0)') ') = ', size(ind), ', expected at least ', nnz
+      status = self%fail(FRICREG_ESIZE, what // ': size(' // ind_name // trim(buf))
+    else if (int(size(values), c_int64_t) < nnz) then
+      write (buf, '(a, i0, a, i0)') ') = ', size(values), ', expected at least ', nnz
+      status = self%fail(FRICREG_ESIZE, what // ': size(values' // trim(buf))
+    end if
+  end function check_sparse
 
 end module fricreg_base_m

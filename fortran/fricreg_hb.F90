@@ -34,6 +34,10 @@ module fricreg_hb_m
     procedure :: set_elements => hb_set_elements
     procedure :: set_iwan => hb_set_iwan
     procedure :: set_normal_elements => hb_set_normal_elements
+    procedure :: set_jenkins => hb_set_jenkins
+    procedure :: set_jenkins_normal => hb_set_jenkins_normal
+    procedure, private :: hb_set_matrix_dense, hb_set_matrix_compressed
+    generic :: set_matrix => hb_set_matrix_dense, hb_set_matrix_compressed
     procedure :: set_excitation => hb_set_excitation
     procedure :: set_newton => hb_set_newton
     procedure :: set_continuation => hb_set_continuation
@@ -177,15 +181,39 @@ contains
     real(c_double), intent(in) :: J(:, :)
     real(c_double), intent(in), contiguous :: kt(:), mun(:)
     integer(c_int) :: status
-    real(c_double), allocatable :: Jc(:, :) ! J transposed: C's row-major J
-    status = self%hb_shape('set_elements', 'J', J, self%m, self%n)
-    if (status == FRICREG_OK) status = self%hb_shape('set_elements', 'kt', kt, self%m, 0_c_size_t)
-    if (status == FRICREG_OK) status = self%hb_shape('set_elements', 'mun', mun, self%m, 0_c_size_t)
-    if (status == FRICREG_OK) allocate (Jc, source=transpose(J))
-    if (status == FRICREG_OK) status = self%record(fricreg_hb_set_elements(self%ptr, self%m, &
-                                                     self%n, Jc, kt, mun))
-    if (status == FRICREG_OK) self%rows = self%m
+    status = hb_jenkins(self, 'set_elements', J, kt, mun)
   end function hb_set_elements
+
+  !> set_elements under the structure's name (fricreg_structure%set_jenkins: the same
+  !> arguments), binding C's fricreg_hb_set_jenkins, whose messages name set_jenkins. Since 1.7.
+  function hb_set_jenkins(self, J, kt, mun) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    real(c_double), intent(in) :: J(:, :)
+    real(c_double), intent(in), contiguous :: kt(:), mun(:)
+    integer(c_int) :: status
+    status = hb_jenkins(self, 'set_jenkins', J, kt, mun)
+  end function hb_set_jenkins
+
+  !> set_elements and set_jenkins, fn their name: the shapes checked, J transposed for C.
+  function hb_jenkins(self, fn, J, kt, mun) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    character(len=*), intent(in) :: fn
+    real(c_double), intent(in) :: J(:, :)
+    real(c_double), intent(in), contiguous :: kt(:), mun(:)
+    integer(c_int) :: status
+    real(c_double), allocatable :: Jc(:, :) ! J transposed: C's row-major J
+    status = self%hb_shape(fn, 'J', J, self%m, self%n)
+    if (status == FRICREG_OK) status = self%hb_shape(fn, 'kt', kt, self%m, 0_c_size_t)
+    if (status == FRICREG_OK) status = self%hb_shape(fn, 'mun', mun, self%m, 0_c_size_t)
+    if (status /= FRICREG_OK) return
+    allocate (Jc, source=transpose(J))
+    if (fn == 'set_jenkins') then
+      status = self%record(fricreg_hb_set_jenkins(self%ptr, self%m, self%n, Jc, kt, mun))
+    else
+      status = self%record(fricreg_hb_set_elements(self%ptr, self%m, self%n, Jc, kt, mun))
+    end if
+    if (status == FRICREG_OK) self%rows = self%m
+  end function hb_jenkins
 
   !> Iwan elements instead: J(m, ndof) as set_elements; element i's ns sliders have the
   !> stiffnesses k(:, i) > 0 and slip forces phi(:, i) >= 0, k and phi (ns, m) (C's row-major
@@ -220,7 +248,28 @@ contains
     real(c_double), intent(in) :: Jt(:, :), Jn(:, :)
     real(c_double), intent(in), contiguous :: kt(:), mu(:), n0(:), kn(:)
     integer(c_int) :: status
-    character(len=*), parameter :: fn = 'set_normal_elements'
+    status = hb_jenkins_normal(self, 'set_normal_elements', Jt, Jn, kt, mu, n0, kn)
+  end function hb_set_normal_elements
+
+  !> set_normal_elements under the structure's name (fricreg_structure%set_jenkins_normal: the
+  !> same arguments), binding C's fricreg_hb_set_jenkins_normal, whose messages name
+  !> set_jenkins_normal. Since 1.7.
+  function hb_set_jenkins_normal(self, Jt, Jn, kt, mu, n0, kn) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    real(c_double), intent(in) :: Jt(:, :), Jn(:, :)
+    real(c_double), intent(in), contiguous :: kt(:), mu(:), n0(:), kn(:)
+    integer(c_int) :: status
+    status = hb_jenkins_normal(self, 'set_jenkins_normal', Jt, Jn, kt, mu, n0, kn)
+  end function hb_set_jenkins_normal
+
+  !> set_normal_elements and set_jenkins_normal, fn their name: the shapes checked, Jt and Jn
+  !> transposed for C.
+  function hb_jenkins_normal(self, fn, Jt, Jn, kt, mu, n0, kn) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    character(len=*), intent(in) :: fn
+    real(c_double), intent(in) :: Jt(:, :), Jn(:, :)
+    real(c_double), intent(in), contiguous :: kt(:), mu(:), n0(:), kn(:)
+    integer(c_int) :: status
     real(c_double), allocatable :: Jtc(:, :), Jnc(:, :) ! transposed: C's row-major Jt, Jn
     status = self%hb_shape(fn, 'Jt', Jt, self%m, self%n)
     if (status == FRICREG_OK) status = self%hb_shape(fn, 'Jn', Jn, self%m, self%n)
@@ -228,14 +277,76 @@ contains
     if (status == FRICREG_OK) status = self%hb_shape(fn, 'mu', mu, self%m, 0_c_size_t)
     if (status == FRICREG_OK) status = self%hb_shape(fn, 'n0', n0, self%m, 0_c_size_t)
     if (status == FRICREG_OK) status = self%hb_shape(fn, 'kn', kn, self%m, 0_c_size_t)
-    if (status == FRICREG_OK) allocate (Jtc, source=transpose(Jt))
-    if (status == FRICREG_OK) allocate (Jnc, source=transpose(Jn))
-    if (status == FRICREG_OK) &
-      status = self%record(fricreg_hb_set_normal_elements(self%ptr, self%m, self%n, &
-                                                          Jtc, Jnc, kt, mu, &
-                                                          n0, kn))
+    if (status /= FRICREG_OK) return
+    allocate (Jtc, source=transpose(Jt))
+    allocate (Jnc, source=transpose(Jn))
+    if (fn == 'set_jenkins_normal') then
+      status = self%record(fricreg_hb_set_jenkins_normal(self%ptr, self%m, self%n, Jtc, Jnc, &
+                                                         kt, mu, n0, kn))
+    else
+      status = self%record(fricreg_hb_set_normal_elements(self%ptr, self%m, self%n, Jtc, Jnc, &
+                                                          kt, mu, n0, kn))
+    end if
     if (status == FRICREG_OK) self%rows = 2 * self%m
-  end function hb_set_normal_elements
+  end function hb_jenkins_normal
+
+  !> One setter of M, K and C, in any storage (C's fricreg_hb_set_matrix), a generic of two
+  !> forms, as fricreg_structure's set_matrix (the contacts aside: J is set with the elements):
+  !>   hb%set_matrix(which, values)                          dense values(ndof, ndof)
+  !>   hb%set_matrix(which, format, ptr, ind, values, flags) compressed, values(:)
+  !> which: FRICREG_MASS, FRICREG_STIFFNESS or FRICREG_DAMPING (replaces Rayleigh damping).
+  !> Dense: each the set_mass, set_stiffness or set_damping of the same numbers (symmetric:
+  !> passed as they are); the same checks and results, C's message naming set_matrix.
+  !> FRICREG_ESIZE unless values is ndof x ndof; C's codes (FRICREG_EINVAL for FRICREG_CONTACTS
+  !> or an unknown which, with no size checked here).
+  function hb_set_matrix_dense(self, which, values) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    integer(c_int), intent(in) :: which
+    real(c_double), intent(in), contiguous :: values(:, :)
+    integer(c_int) :: status
+    status = self%ready('set_matrix', 'HB driver')
+    if (status == FRICREG_OK .and. which >= FRICREG_MASS .and. which <= FRICREG_DAMPING) &
+      status = self%hb_shape('set_matrix', 'values', values, self%n, self%n)
+    if (status == FRICREG_OK) status = self%record(fricreg_hb_set_matrix(self%ptr, which, &
+                                                   self%n, self%n, FRICREG_MATRIX_DENSE, &
+                                                   values=values))
+  end function hb_set_matrix_dense
+
+  !> The compressed form of set_matrix, which makes the model sparse (C's
+  !> fricreg_hb_set_mass_csc): format FRICREG_MATRIX_CSR or FRICREG_MATRIX_CSC, ptr(ndof + 1)
+  !> and ind(nnz) of kind c_int64_t, values(nnz), flags (fricreg_sparse_flags; absent,
+  !> FRICREG_SPARSE_ONE_BASED; + FRICREG_SPARSE_LOWER or _UPPER for one triangle); C is given
+  !> ior(format, flags). FRICREG_ESIZE unless ptr has ndof + 1 elements and ind and values at
+  !> least nnz; FRICREG_EINVAL for a format that is neither (a dense matrix is values(:, :)),
+  !> and C's codes (FRICREG_EINVAL for FRICREG_CONTACTS, an unknown which or both formats,
+  !> with no size checked here; FRICREG_ENOTSYM; ...).
+  function hb_set_matrix_compressed(self, which, format, ptr, ind, values, flags) &
+      result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    integer(c_int), intent(in) :: which, format
+    integer(c_int64_t), intent(in), contiguous :: ptr(:), ind(:)
+    real(c_double), intent(in), contiguous :: values(:)
+    integer(c_int), intent(in), optional :: flags
+    integer(c_int) :: status, f, layout
+    character(len=64) :: buf
+    f = ior(format, FRICREG_SPARSE_ONE_BASED)
+    if (present(flags)) f = ior(format, flags)
+    layout = iand(f, ior(FRICREG_MATRIX_CSR, FRICREG_MATRIX_CSC))
+    status = self%ready('set_matrix', 'HB driver')
+    if (status /= FRICREG_OK) return
+    if (layout == FRICREG_MATRIX_DENSE) then
+      write (buf, '(a, i0)') 'set_matrix: format = ', format
+      status = self%fail(FRICREG_EINVAL, trim(buf) // ' is neither FRICREG_MATRIX_CSR nor ' // &
+                         'FRICREG_MATRIX_CSC (a dense matrix is values(:, :))')
+      return
+    end if
+    if (which >= FRICREG_MASS .and. which <= FRICREG_DAMPING .and. &
+        layout /= ior(FRICREG_MATRIX_CSR, FRICREG_MATRIX_CSC)) &
+      status = self%check_sparse('set_matrix', 'ptr', 'ind', f, self%n, ptr, ind, values)
+    ! else C refuses which or format before reading anything
+    if (status == FRICREG_OK) status = self%record(fricreg_hb_set_matrix(self%ptr, which, &
+                                                   self%n, self%n, f, ptr, ind, values))
+  end function hb_set_matrix_compressed
 
   !> The excitation of the fundamental, p(t) = pc cos(Omega t) + ps sin(Omega t): pc(ndof),
   !> ps(ndof), force units. FRICREG_ESIZE; FRICREG_ENONFINITE.

@@ -15,6 +15,8 @@
 !   FRHBCR(NDOF, M, NH, H, STAT)                      _create
 !   FRHBFR(H, STAT)                                   _free, then H = 0
 !   FRHBMF(H, NDOF, A, STAT), FRHBKF, FRHBCF          _set_mass, _set_stiffness, _set_damping
+!   FRHBMX(H, WHICH, NROWS, NCOLS, FORMAT, PTR, IND, VALUES, STAT)
+!                                                     _set_matrix (M, K, C; dense or compressed)
 !   FRHBCA(H, A0, A1, STAT)                           _set_rayleigh
 !   FRHBJF(H, M, NDOF, J, KT, MUN, STAT)              _set_elements (given J transposed)
 !   FRHBIW(H, M, NDOF, J, NS, K, PHI, STAT)           _set_iwan (J transposed, K(NS, M))
@@ -53,10 +55,10 @@
 ! allocated, as for the warning handlers (fricreg_warnings_f77.f90 says why the address may
 ! pass through a void*).
 !
-! Generated, not here: the entry points that are one C call (FRHBMF, FRHBKF, FRHBCF, FRHBCA,
-! FRHBPF, FRHBNT, FRHBXD, FRHBST) are a line each, with their doc comments, in the table
-! fricreg_hb_f77.txt, which fortran/gen_f77.cmake turns into fricreg_hb_f77_generated.f90 at build
-! time; those below have logic of their own.
+! Generated, not here: the entry points that are one C call (FRHBMF, FRHBKF, FRHBCF, FRHBMX,
+! FRHBCA, FRHBPF, FRHBNT, FRHBXD, FRHBST) are a line each, with their doc comments, in the table
+! fricreg_hb_f77.txt, which fortran/gen_f77.cmake turns into fricreg_hb_f77_generated.f90 at
+! build time; those below have logic of their own.
 
 !> FRHBCR(NDOF, M, NH, H, STAT): a driver for NDOF >= 1 degrees of freedom, M >= 1 Jenkins
 !> elements and NH harmonics (1 <= NH <= FRICREG_HB_MAX_HARMONICS) into H.

@@ -50,6 +50,8 @@ module fricreg_structure_m
     procedure :: set_damping_csc => struct_set_damping_csc
     procedure :: set_contacts_csr => struct_set_contacts_csr
     procedure :: set_contacts_csc => struct_set_contacts_csc
+    procedure, private :: struct_set_matrix_dense, struct_set_matrix_compressed
+    generic :: set_matrix => struct_set_matrix_dense, struct_set_matrix_compressed
     procedure :: set_bounds => struct_set_bounds
     procedure :: set_law => struct_set_law
     procedure :: set_influence => struct_set_influence
@@ -487,10 +489,7 @@ contains
   end function struct_sparse_flags
 
   !> FRICREG_OK if self is created, ptr has n + 1 elements and ind and values hold at least the
-  !> nnz = ptr(n + 1) - base entries ptr says (base 1 with FRICREG_SPARSE_ONE_BASED in flags,
-  !> else 0), else a recorded FRICREG_ESIZE naming the array: C reads nnz of each, which it
-  !> cannot check. ptr_name and ind_name name the first two arrays in the message; a
-  !> ptr(n + 1) below base is left to C (FRICREG_EINVAL).
+  !> nnz entries ptr says (fricreg_object's check_sparse), else a recorded failure.
   function struct_compressed(self, what, ptr_name, ind_name, flags, n, ptr, ind, values) &
       result(status)
     class(fricreg_structure), intent(inout) :: self
@@ -500,19 +499,9 @@ contains
     integer(c_int64_t), intent(in) :: ptr(:), ind(:)
     real(c_double), intent(in) :: values(:)
     integer(c_int) :: status
-    integer(c_int64_t) :: nnz
-    character(len=64) :: buf
     status = self%ready(what, 'structure')
-    if (status == FRICREG_OK) status = self%check_size(what, ptr_name, size(ptr), n + 1)
-    if (status /= FRICREG_OK) return
-    nnz = ptr(n + 1) - merge(1_c_int64_t, 0_c_int64_t, iand(flags, FRICREG_SPARSE_ONE_BASED) /= 0)
-    if (int(size(ind), c_int64_t) < nnz) then
-      write (buf, '(a, i0, a, i0)') ') = ', size(ind), ', expected at least ', nnz
-      status = self%fail(FRICREG_ESIZE, what // ': size(' // ind_name // trim(buf))
-    else if (int(size(values), c_int64_t) < nnz) then
-      write (buf, '(a, i0, a, i0)') ') = ', size(values), ', expected at least ', nnz
-      status = self%fail(FRICREG_ESIZE, what // ': size(values' // trim(buf))
-    end if
+    if (status == FRICREG_OK) &
+      status = self%check_sparse(what, ptr_name, ind_name, flags, n, ptr, ind, values)
   end function struct_compressed
 
   !> Mass matrix M (ndof x ndof) from compressed sparse rows (C's
@@ -662,6 +651,86 @@ contains
                                                    self%ptr, self%m, self%n, f, colptr, rowind, &
                                                    values))
   end function struct_set_contacts_csc
+
+  !> One setter of every model matrix, in any storage (C's fricreg_structure_set_matrix), a
+  !> generic of two forms told apart by their arguments:
+  !>   st%set_matrix(which, values)                          dense values(:, :)
+  !>   st%set_matrix(which, format, ptr, ind, values, flags) compressed, values(:)
+  !> which: FRICREG_MASS, FRICREG_STIFFNESS, FRICREG_DAMPING or FRICREG_CONTACTS. Each call is
+  !> the older setter of that matrix and storage (set_mass, set_contacts, set_mass_csc,
+  !> set_contacts_csr, ...): the same checks and results, C's message naming set_matrix.
+  !> Dense: values in Fortran's natural shape, (ndof, ndof) for M, K, C (symmetric: passed as
+  !> they are, as set_mass) or J(m, ndof) (passed transposed, as set_contacts).
+  !> FRICREG_ESIZE unless values has that shape; C's codes (FRICREG_EINVAL for an unknown which,
+  !> with no size checked here).
+  function struct_set_matrix_dense(self, which, values) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    integer(c_int), intent(in) :: which
+    real(c_double), intent(in), contiguous :: values(:, :)
+    integer(c_int) :: status
+    character(len=*), parameter :: fn = 'set_matrix'
+    real(c_double), allocatable :: Jc(:, :) ! J transposed: C's row-major J
+    status = self%ready(fn, 'structure')
+    if (status /= FRICREG_OK) return
+    if (which == FRICREG_CONTACTS) then
+      status = self%check_size(fn, 'values, 1', size(values, 1), self%m)
+      if (status == FRICREG_OK) status = self%check_size(fn, 'values, 2', size(values, 2), self%n)
+      if (status == FRICREG_OK) allocate (Jc, source=transpose(values))
+      if (status == FRICREG_OK) status = self%record(fricreg_structure_set_matrix(self%ptr, &
+                                                     which, self%m, self%n, &
+                                                     FRICREG_MATRIX_DENSE, values=Jc))
+    else if (which >= FRICREG_MASS .and. which <= FRICREG_DAMPING) then
+      status = self%check_square(fn, 'values', values, self%n)
+      if (status == FRICREG_OK) status = self%record(fricreg_structure_set_matrix(self%ptr, &
+                                                     which, self%n, self%n, &
+                                                     FRICREG_MATRIX_DENSE, values=values))
+    else ! C refuses which before reading anything
+      status = self%record(fricreg_structure_set_matrix(self%ptr, which, self%n, self%n, &
+                                                        FRICREG_MATRIX_DENSE, values=values))
+    end if
+  end function struct_set_matrix_dense
+
+  !> The compressed form of set_matrix: format FRICREG_MATRIX_CSR (ptr(nrows + 1) row pointers,
+  !> ind(nnz) columns) or FRICREG_MATRIX_CSC (ptr(ndof + 1) column pointers, ind(nnz) rows),
+  !> of kind c_int64_t, values(nnz); nrows ndof, or m for J. flags (fricreg_sparse_flags) as
+  !> set_mass_csr: absent, FRICREG_SPARSE_ONE_BASED; C is given ior(format, flags). A
+  !> symmetric M, K or C may be given by one triangle (+ FRICREG_SPARSE_LOWER or _UPPER), J not.
+  !> FRICREG_ESIZE unless ptr has its n + 1 elements and ind and values at least nnz;
+  !> FRICREG_EINVAL for a format that is neither (a dense matrix is values(:, :)), and C's codes
+  !> (FRICREG_EINVAL for an unknown which or both formats, with no size checked here).
+  function struct_set_matrix_compressed(self, which, format, ptr, ind, values, flags) &
+      result(status)
+    class(fricreg_structure), intent(inout) :: self
+    integer(c_int), intent(in) :: which, format
+    integer(c_int64_t), intent(in), contiguous :: ptr(:), ind(:)
+    real(c_double), intent(in), contiguous :: values(:)
+    integer(c_int), intent(in), optional :: flags
+    integer(c_int) :: status, f, layout
+    integer(c_size_t) :: nrows
+    character(len=*), parameter :: fn = 'set_matrix'
+    character(len=64) :: buf
+    f = ior(format, struct_sparse_flags(flags))
+    layout = iand(f, ior(FRICREG_MATRIX_CSR, FRICREG_MATRIX_CSC))
+    status = self%ready(fn, 'structure')
+    if (status /= FRICREG_OK) return
+    if (layout == FRICREG_MATRIX_DENSE) then
+      write (buf, '(a, i0)') 'set_matrix: format = ', format
+      status = self%fail(FRICREG_EINVAL, trim(buf) // ' is neither FRICREG_MATRIX_CSR nor ' // &
+                         'FRICREG_MATRIX_CSC (a dense matrix is values(:, :))')
+      return
+    end if
+    nrows = merge(self%m, self%n, which == FRICREG_CONTACTS)
+    if (which >= FRICREG_MASS .and. which <= FRICREG_CONTACTS .and. &
+        layout /= ior(FRICREG_MATRIX_CSR, FRICREG_MATRIX_CSC)) then
+      if (layout == FRICREG_MATRIX_CSR) then
+        status = self%check_sparse(fn, 'ptr', 'ind', f, nrows, ptr, ind, values)
+      else
+        status = self%check_sparse(fn, 'ptr', 'ind', f, self%n, ptr, ind, values)
+      end if
+    end if ! else C refuses which or format before reading anything
+    if (status == FRICREG_OK) status = self%record(fricreg_structure_set_matrix(self%ptr, &
+                                                   which, nrows, self%n, f, ptr, ind, values))
+  end function struct_set_matrix_compressed
 
   !> Friction bounds mun(m) = mu_i N_i >= 0 (force units); may change between steps.
   !> FRICREG_ESIZE; FRICREG_EINVAL if one is negative; FRICREG_ENONFINITE.

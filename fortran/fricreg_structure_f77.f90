@@ -32,6 +32,8 @@
 !   FRSTJR(H, M, NDOF, FLAGS, ROWPTR, COLIND, VALUES, STAT) _set_contacts_csr (J's rows)
 !   FRSTMF(H, NDOF, A, STAT), FRSTKF, FRSTCF     _set_mass, _set_stiffness, _set_damping
 !   FRSTJF(H, M, NDOF, J, STAT)                  _set_contacts (given J transposed)
+!   FRSTMX(H, WHICH, NROWS, NCOLS, FORMAT, PTR, IND, VALUES, STAT)
+!                                                _set_matrix (a dense J as JT(NDOF, M))
 !   FRSTCA(H, A0, A1, STAT)                      _set_rayleigh: C = A0 M + A1 K
 !   FRSTBD(H, M, MUN, STAT)                      _set_bounds
 !   FRSTLW(H, LAW, EPS, STAT)                    _set_law
@@ -79,7 +81,7 @@
 ! FRSTIS's NS below 0, FRSTJ2's ME above 2**25 (C's limit 2 ME <= 2**26; FRICREG_EINVAL).
 !
 ! Generated, not here: the entry points that are one C call (FRSTMC, FRSTKC, FRSTCC, FRSTJC,
-! FRSTJR, FRSTMF, FRSTKF, FRSTCF, FRSTCA, FRSTBD, FRSTLW, FRSTIV, FRSTU0, FRSTNM, FRSTHH,
+! FRSTJR, FRSTMX, FRSTMF, FRSTKF, FRSTCF, FRSTCA, FRSTBD, FRSTLW, FRSTIV, FRSTU0, FRSTNM, FRSTHH,
 ! FRSTCD, FRSTNT, FRSTSP, FRSTTE, FRSTGS, FRSTGF, FRSTGD, FRSTGV, FRSTEE, FRSTPK, FRSTPE,
 ! FRSTDE, FRSTOD, FRSTOG, FRSTGT, FRSTJS, FRSTS2, FRSTNF) are a line each, with their doc
 ! comments, in the table fricreg_structure_f77.txt, which fortran/gen_f77.cmake turns into

@@ -3,8 +3,9 @@
 # fortran/README.md names every binding: each type-bound procedure of module fricreg (its
 # types are in the object files fortran/*.F90 beside fricreg.F90, which re-exports them) in its
 # type's rows of the table (those from the row that names the type in bold to the next bold
-# row), as `name(` or `obj%name(`; each name of the `public ::` lists of module fricreg
-# (fricreg.F90: types, procedures, the iso_c_binding names it passes on); and each F77 entry
+# row), as `name(` or `obj%name(`, and each named generic binding likewise; each name of the
+# `public ::` lists of module fricreg (fricreg.F90: types, procedures, the iso_c_binding names
+# it passes on); and each F77 entry
 # point (fricreg_f77.f90, fricreg_sim_f77.f90,
 # fricreg_joints_f77.f90, fricreg_structure_f77.f90, fricreg_hb_f77.f90, fricreg_f77_check.f90,
 # fricreg_warnings_f77.f90, and the tables fortran/*_f77.txt whose wrappers gen_f77.cmake
@@ -41,6 +42,11 @@ nfile <= 1 + nmodule {
     if ($0 ~ /^ *end type/) t = ""
     if (t != "" && $0 ~ /^ *procedure *::/) {
         n = $0; sub(/^ *procedure *:: */, "", n); sub(/[ =].*/, "", n)
+        bound_type[++nbound] = t; bound_name[nbound] = n
+    }
+    # a named generic (set_matrix), its specifics `procedure, private`; not assignment(=)
+    if (t != "" && $0 ~ /^ *generic *:: *[a-z_0-9]+ *=>/) {
+        n = $0; sub(/^ *generic *:: */, "", n); sub(/[ =].*/, "", n)
         bound_type[++nbound] = t; bound_name[nbound] = n
     }
     # the names of the `public ::` lists of module fricreg, continued lines (&) too

@@ -9,7 +9,10 @@
 ! |X|/sqrt(2) (closed form), largest where d|X|/dOmega = 0: Omega^2 = (4.5 - 0.06^2/4)/2,
 ! Omega = 1.49984999250, RMS 3.92856743987 (the located peak, hb%peak). A two-mass chain with a slipping element, J in Fortran's order:
 ! the type's solution equals the C functions' (called through bind(C), J transposed by hand)
-! bit for bit, and so does the truncation error's estimate.
+! bit for bit, and so does the truncation error's estimate. set_jenkins and set_jenkins_normal,
+! the structure's names, give set_elements' and set_normal_elements' solutions bit for bit;
+! set_matrix dense gives set_mass's and set_stiffness's bit for bit, compressed (a sparse model)
+! to Newton's tolerance; which = FRICREG_CONTACTS, 0 and a dense format with values(:) refused.
 program test_hb
   use fricreg
   use ftest
@@ -19,7 +22,8 @@ program test_hb
   real(c_double), parameter :: w = 1.2_c_double
   real(c_double) :: lev, q(7, 1), x(7, 1), d, c, rms(1), omega, big, qc(7, 1), q2(7, 1), bad(5, 1)
   real(c_double) :: M2(2, 2), K2(2, 2), J2(1, 2), Jrow(2), Jn2(1, 2), qn(7, 2), pw, pr
-  real(c_double) :: ec(2), ea(2), et(2), eat(2)
+  real(c_double) :: ec(2), ea(2), et(2), eat(2), qn2(7, 2)
+  type(fricreg_hb_driver) :: sparse
   integer :: k, btype, bpoint
   real(c_double) :: mu
   logical :: stable
@@ -165,6 +169,73 @@ program test_hb
                     'back to Jenkins elements')
   call check_status(chain%solve(1.1_c_double, qc), FRICREG_OK, 'Jenkins solve again')
   call check(all(q2 == qc), 'back to m columns, the Jenkins solution bit for bit')
+  ! the structure's names: the same elements, the same solutions bit for bit, C's messages
+  ! naming them
+  call check_status(chain%set_jenkins_normal(J2, Jn2, [4.0_c_double], [0.2_c_double], &
+                                             [0.5_c_double], [0.0_c_double]), FRICREG_OK, &
+                    'set_jenkins_normal')
+  call check_status(chain%solve(1.1_c_double, qn2), FRICREG_OK, 'set_jenkins_normal solve')
+  call check(all(qn2 == qn), 'set_jenkins_normal is set_normal_elements bit for bit')
+  call check_status(chain%set_jenkins_normal(J2, Jn2, [4.0_c_double], [-0.2_c_double], &
+                                             [0.5_c_double], [0.0_c_double]), FRICREG_EINVAL, &
+                    'set_jenkins_normal: mu < 0')
+  call check(index(chain%errmsg(), 'set_jenkins_normal: ') == 1, 'message: ' // chain%errmsg())
+  call check_status(chain%set_jenkins(J2, [4.0_c_double], [0.1_c_double]), FRICREG_OK, &
+                    'set_jenkins')
+  call check_status(chain%solve(1.1_c_double, qc), FRICREG_OK, 'set_jenkins solve')
+  call check(all(q2 == qc), 'set_jenkins is set_elements bit for bit')
+  call check_status(chain%set_jenkins(J2, [-4.0_c_double], [0.1_c_double]), FRICREG_EINVAL, &
+                    'set_jenkins: kt < 0')
+  call check(index(chain%errmsg(), 'set_jenkins: ') == 1, 'message: ' // chain%errmsg())
+  call check_status(chain%set_jenkins(J2, [4.0_c_double, 1.0_c_double], [0.1_c_double]), &
+                    FRICREG_ESIZE, 'set_jenkins: kt(2)')
+  ! set_matrix, dense: set_mass's and set_stiffness's path, bit for bit
+  call check_status(chain%set_matrix(FRICREG_MASS, M2), FRICREG_OK, 'set_matrix(FRICREG_MASS, M)')
+  call check_status(chain%set_matrix(FRICREG_STIFFNESS, K2), FRICREG_OK, &
+                    'set_matrix(FRICREG_STIFFNESS, K)')
+  call check_status(chain%solve(1.1_c_double, qc), FRICREG_OK, 'set_matrix dense solve')
+  call check(all(q2 == qc), 'set_matrix dense is set_mass, set_stiffness bit for bit')
+  ! refusals, the model kept: J is not the driver's matrix, which = 0, values(:) as dense
+  call check_status(chain%set_matrix(FRICREG_CONTACTS, M2), FRICREG_EINVAL, &
+                    'set_matrix(FRICREG_CONTACTS)')
+  call check(index(chain%errmsg(), 'set_matrix: which = 4 is not a model matrix') == 1, &
+             'message: ' // chain%errmsg())
+  call check_status(chain%set_matrix(0_c_int, FRICREG_MATRIX_CSC, [1_c_int64_t, 2_c_int64_t, &
+                                     3_c_int64_t], [1_c_int64_t, 2_c_int64_t], &
+                                     [1.0_c_double, 2.0_c_double]), FRICREG_EINVAL, &
+                    'set_matrix(which = 0, CSC)')
+  call check(index(chain%errmsg(), 'set_matrix: which = 0 is not a model matrix') == 1, &
+             'message: ' // chain%errmsg())
+  call check_status(chain%set_matrix(FRICREG_MASS, FRICREG_MATRIX_DENSE, [1_c_int64_t], &
+                                     [1_c_int64_t], [1.0_c_double, 2.0_c_double]), &
+                    FRICREG_EINVAL, 'set_matrix(FRICREG_MATRIX_DENSE, values(:))')
+  call check_status(chain%set_matrix(FRICREG_MASS, bad), FRICREG_ESIZE, 'set_matrix(M (5, 1))')
+  call check_status(chain%set_matrix(FRICREG_MASS, FRICREG_MATRIX_CSC, [1_c_int64_t, &
+                                     2_c_int64_t, 3_c_int64_t], [1_c_int64_t], [1.0_c_double]), &
+                    FRICREG_ESIZE, 'set_matrix(FRICREG_MASS, CSC), rowind shorter than nnz')
+  call check_status(chain%solve(1.1_c_double, qc), FRICREG_OK, 'solve after the refusals')
+  call check(all(q2 == qc), 'the refusals changed nothing')
+  ! set_matrix, compressed: M diagonal (flags absent, one-based), K by its lower triangle's
+  ! columns; the model sparse, its solution the dense one's to Newton's tolerance
+  call check_status(sparse%create(2, 1, 3), FRICREG_OK, 'sparse create')
+  call check_status(sparse%set_matrix(FRICREG_MASS, FRICREG_MATRIX_CSC, [1_c_int64_t, &
+                                      2_c_int64_t, 3_c_int64_t], [1_c_int64_t, 2_c_int64_t], &
+                                      [1.0_c_double, 2.0_c_double]), FRICREG_OK, &
+                    'set_matrix(FRICREG_MASS, CSC)')
+  call check_status(sparse%set_matrix(FRICREG_STIFFNESS, FRICREG_MATRIX_CSC, [1_c_int64_t, &
+                                      3_c_int64_t, 4_c_int64_t], [1_c_int64_t, 2_c_int64_t, &
+                                      2_c_int64_t], [5.0_c_double, -2.0_c_double, 3.0_c_double], &
+                                      FRICREG_SPARSE_ONE_BASED + FRICREG_SPARSE_LOWER), &
+                    FRICREG_OK, 'set_matrix(FRICREG_STIFFNESS, CSC lower)')
+  call check_status(sparse%set_rayleigh(0.05_c_double, 0.0_c_double), FRICREG_OK, 'sparse C')
+  call check_status(sparse%set_jenkins(J2, [4.0_c_double], [0.1_c_double]), FRICREG_OK, &
+                    'sparse J')
+  call check_status(sparse%set_excitation([1.0_c_double, 0.0_c_double], &
+                                          [0.0_c_double, 0.0_c_double]), FRICREG_OK, 'sparse p')
+  call check_status(sparse%solve(1.1_c_double, qc), FRICREG_OK, 'sparse solve')
+  call check(maxval(abs(qc - q2)) <= 1e-9_c_double * maxval(abs(q2)), &
+             'set_matrix compressed: the dense solution to Newton''s tolerance')
+  call sparse%destroy()
   call chain%destroy()
   call finish('test_hb')
 end program test_hb

@@ -1,7 +1,7 @@
 ! SPDX-License-Identifier: GPL-3.0-or-later
 ! test_structure_sparse.f90 — the structure's compressed sparse setters through type
 ! fricreg_structure: set_mass_csc, set_stiffness_csc, set_damping_csc, set_contacts_csc and
-! their _csr twins.
+! their _csr twins, and set_matrix, the one setter of which they and the dense ones are cases.
 !
 ! A chain of three degrees of freedom with two contacts (ground slip of dof 1, slip between
 ! dofs 2 and 3): a consistent (tridiagonal) M, K and a damping matrix C, J(2, 3) in Fortran's
@@ -11,12 +11,15 @@
 !   - by one-based compressed columns, M, K and C by their lower triangle, J whole (the arrays
 !     a Fortran code holds), the flags given and, for J, absent (one-based);
 !   - by compressed rows: M zero-based and whole, K one-based by its upper triangle, C with
-!     the flags absent (one-based, whole), J zero-based.
+!     the flags absent (one-based, whole), J zero-based;
+!   - by set_matrix's dense form (values(:, :), J in Fortran's order);
+!   - by set_matrix's compressed form, CSC and CSR mixed, flags given and absent.
 ! Every displacement, velocity, acceleration and force equals the dense path's bit for bit:
 ! the three make the same CHOLMOD matrices (a symmetric matrix's symmetric part is itself).
 ! Then the refusals: array sizes checked in Fortran (FRICREG_ESIZE naming the array), C's
 ! refusals of a bad column pointer, a wrong base, a triangle flag for J and a zero row of J
-! (FRICREG_EINVAL with C's message), an object not created (FRICREG_ENULL); the model after
+! (FRICREG_EINVAL with C's message), an object not created (FRICREG_ENULL), set_matrix's
+! which = 0, a dense format in its compressed form and a J of the wrong shape; the model after
 ! them is still the one set before (the run equals the dense one again).
 program test_structure_sparse
   use fricreg
@@ -105,6 +108,45 @@ program test_structure_sparse
   end do
   call st%destroy()
 
+  ! ---- set_matrix, dense: values in Fortran's order, J (m, ndof) as set_contacts ------------
+  call check_status(st%create(ndof, ncontacts), FRICREG_OK, 'set_matrix dense: create')
+  call check_status(st%set_matrix(FRICREG_MASS, M), FRICREG_OK, 'set_matrix(FRICREG_MASS, M)')
+  call check_status(st%set_matrix(FRICREG_STIFFNESS, K), FRICREG_OK, &
+                    'set_matrix(FRICREG_STIFFNESS, K)')
+  call check_status(st%set_matrix(FRICREG_DAMPING, C), FRICREG_OK, &
+                    'set_matrix(FRICREG_DAMPING, C)')
+  call check_status(st%set_matrix(FRICREG_CONTACTS, J), FRICREG_OK, &
+                    'set_matrix(FRICREG_CONTACTS, J)')
+  call run(st, 'set_matrix dense', got)
+  do i = 1, size(ref)
+    call check_bits(got(i), ref(i), 'set_matrix dense: number ' // str(i) // &
+                    ' as the dense setters''')
+  end do
+  call st%destroy()
+
+  ! ---- set_matrix, compressed: CSC and CSR, flags given and absent -------------------------
+  call check_status(st%create(ndof, ncontacts), FRICREG_OK, 'set_matrix compressed: create')
+  call compress(M, .true., 1, -1, ptr, ind, val)
+  call check_status(st%set_matrix(FRICREG_MASS, FRICREG_MATRIX_CSC, ptr, ind, val, &
+                                  FRICREG_SPARSE_ONE_BASED + FRICREG_SPARSE_LOWER), &
+                    FRICREG_OK, 'set_matrix(FRICREG_MASS, CSC), one-based lower triangle')
+  call compress(K, .false., 0, 1, ptr, ind, val)
+  call check_status(st%set_matrix(FRICREG_STIFFNESS, FRICREG_MATRIX_CSR, ptr, ind, val, &
+                                  FRICREG_SPARSE_ZERO_BASED + FRICREG_SPARSE_UPPER), &
+                    FRICREG_OK, 'set_matrix(FRICREG_STIFFNESS, CSR), zero-based upper triangle')
+  call compress(C, .true., 1, 0, ptr, ind, val)
+  call check_status(st%set_matrix(FRICREG_DAMPING, FRICREG_MATRIX_CSC, ptr, ind, val), &
+                    FRICREG_OK, 'set_matrix(FRICREG_DAMPING, CSC), flags absent (one-based)')
+  call compress(J, .false., 1, 0, ptr, ind, val)
+  call check_status(st%set_matrix(FRICREG_CONTACTS, FRICREG_MATRIX_CSR, ptr, ind, val), &
+                    FRICREG_OK, 'set_matrix(FRICREG_CONTACTS, CSR), rowptr(m + 1)')
+  call run(st, 'set_matrix compressed', got)
+  do i = 1, size(ref)
+    call check_bits(got(i), ref(i), 'set_matrix compressed: number ' // str(i) // &
+                    ' as the dense setters''')
+  end do
+  call st%destroy()
+
   ! ---- Refusals: each recorded with its message, the model kept ----------------------------
   call check_status(st%create(ndof, ncontacts), FRICREG_OK, 'refusals: create')
   call check_status(st%set_mass(M), FRICREG_OK, 'refusals: set_mass')
@@ -157,6 +199,35 @@ program test_structure_sparse
                     FRICREG_EINVAL, 'set_contacts_csr: a zero row')
   call check(index(st%errmsg(), 'set_contacts_csr: row 1 of J is zero') == 1, &
              'message (C counts from 0): ' // st%errmsg())
+  ! set_matrix: which not a model matrix (C's refusal, before it reads anything), both forms.
+  call check_status(st%set_matrix(0_c_int, M), FRICREG_EINVAL, 'set_matrix(which = 0, M)')
+  call check(index(st%errmsg(), 'set_matrix: which = 0 is not a model matrix') == 1, &
+             'message: ' // st%errmsg())
+  call check_status(st%set_matrix(0_c_int, FRICREG_MATRIX_CSR, ptr, ind, val), FRICREG_EINVAL, &
+                    'set_matrix(which = 0, CSR)')
+  call check(index(st%errmsg(), 'set_matrix: which = 0 is not a model matrix') == 1, &
+             'message: ' // st%errmsg())
+  ! A dense format in the compressed form (refused here: values(:) is no dense matrix).
+  call check_status(st%set_matrix(FRICREG_CONTACTS, FRICREG_MATRIX_DENSE, ptr, ind, val, &
+                                  FRICREG_SPARSE_ZERO_BASED), FRICREG_EINVAL, &
+                    'set_matrix(FRICREG_MATRIX_DENSE, ptr, ind, values(:))')
+  call check(index(st%errmsg(), 'set_matrix: format = 0 is neither') == 1, &
+             'message: ' // st%errmsg())
+  ! J given as ndof x ndof, and CSR J's rowptr of ndof + 1 elements.
+  call check_status(st%set_matrix(FRICREG_CONTACTS, M), FRICREG_ESIZE, &
+                    'set_matrix(FRICREG_CONTACTS, ndof x ndof)')
+  call check(st%errmsg() == 'set_matrix: size(values, 1) = 3, expected 2', &
+             'message: ' // st%errmsg())
+  call compress(J, .true., 1, 0, ptr, ind, val)
+  call check_status(st%set_matrix(FRICREG_CONTACTS, FRICREG_MATRIX_CSR, ptr, ind, val), &
+                    FRICREG_ESIZE, 'set_matrix(FRICREG_CONTACTS, CSR) given the column pointers')
+  call check(st%errmsg() == 'set_matrix: size(ptr) = 4, expected 3', 'message: ' // st%errmsg())
+  ! J is not symmetric: a triangle flag is refused by C.
+  call check_status(st%set_matrix(FRICREG_CONTACTS, FRICREG_MATRIX_CSC, ptr, ind, val, &
+                                  FRICREG_SPARSE_ONE_BASED + FRICREG_SPARSE_LOWER), &
+                    FRICREG_EINVAL, 'set_matrix(FRICREG_CONTACTS, CSC) with a triangle flag')
+  call check(index(st%errmsg(), 'set_matrix: ') == 1, 'message: ' // st%errmsg())
+  call check_status(empty%set_matrix(FRICREG_MASS, M), FRICREG_ENULL, 'set_matrix, not created')
   ! Not created.
   call check_status(empty%set_mass_csc(ptr, ind, val), FRICREG_ENULL, 'set_mass_csc, not created')
   call check(empty%errmsg() == 'set_mass_csc: the structure is not created (call create)', &
