@@ -87,6 +87,21 @@ static int check_entries(const struct fr_compressed *a, int64_t base, size_t out
     return FRICREG_OK;
 }
 
+int fr_matrix_format(int format, int *compressed, int *by_columns, int *flags, struct fr_error *err,
+                     const char *who)
+{
+    int layout = format & (FRICREG_MATRIX_CSR | FRICREG_MATRIX_CSC);
+    if (layout == (FRICREG_MATRIX_CSR | FRICREG_MATRIX_CSC))
+        return fr_error_set(err, FRICREG_EINVAL, "%s: format %d is both CSR and CSC", who, format);
+    if (layout == FRICREG_MATRIX_DENSE && format != FRICREG_MATRIX_DENSE)
+        return fr_error_set(err, FRICREG_EINVAL,
+                            "%s: a dense matrix takes no sparse flags (format %d)", who, format);
+    *compressed = layout != FRICREG_MATRIX_DENSE;
+    *by_columns = layout == FRICREG_MATRIX_CSC;
+    *flags = format & ~layout;
+    return FRICREG_OK;
+}
+
 int fr_compressed_check(const struct fr_compressed *a, int symmetric, struct fr_error *err,
                         const char *who)
 {

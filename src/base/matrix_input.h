@@ -22,6 +22,13 @@ struct fr_compressed {
     const double *val;
 };
 
+/* The storage a one-setter format asks for (fricreg.h's enum fricreg_matrix_format, the
+ * compressed ones OR'ed with enum fricreg_sparse_flags): *compressed (else dense), *by_columns
+ * (CSC, else CSR) and the sparse *flags, which fr_compressed_check judges. FRICREG_OK;
+ * FRICREG_EINVAL (both CSR and CSC, or flags with a dense matrix), recorded in err after who. */
+int fr_matrix_format(int format, int *compressed, int *by_columns, int *flags, struct fr_error *err,
+                     const char *who);
+
 /* Checks a's arrays; symmetric says whether the matrix must be symmetric (then square; the
  * triangle flags are allowed). FRICREG_OK; FRICREG_ENULL (ptr, or ind or val while nnz > 0);
  * FRICREG_EINVAL (unknown flags, both triangles, a triangle for a matrix that need not be

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/matrix_input.h"
 #include "base/sparse_factor.h"
 #include "hb_internal.h"
 
@@ -328,16 +329,13 @@ int fricreg_hb_set_matrix(fricreg_hb *hb, int which, size_t nrows, size_t ncols,
     if (nrows != ncols)
         return fr_fail(hb, FRICREG_ESIZE, "%s: the matrix is %zu x %zu, not square", fn, nrows,
                        ncols);
-    int layout = format & (FRICREG_MATRIX_CSR | FRICREG_MATRIX_CSC);
-    if (layout == (FRICREG_MATRIX_CSR | FRICREG_MATRIX_CSC))
-        return fr_fail(hb, FRICREG_EINVAL, "%s: format %d is both CSR and CSC", fn, format);
-    if (layout != FRICREG_MATRIX_DENSE)
-        return fr_hb_set_compressed(hb, fn, slot, nrows, layout == FRICREG_MATRIX_CSC,
-                                    format & ~layout, ptr, ind, values);
-    if (format != FRICREG_MATRIX_DENSE) /* ptr and ind are not read: Fortran cannot pass NULL */
-        return fr_fail(hb, FRICREG_EINVAL, "%s: a dense matrix takes no sparse flags (format %d)",
-                       fn, format);
-    int status = set_symmetric(hb, fn, nrows, values, slot);
+    int compressed, by_columns, flags; /* a dense matrix's ptr and ind are not read */
+    int status = fr_matrix_format(format, &compressed, &by_columns, &flags, &hb->err, fn);
+    if (status != FRICREG_OK)
+        return status;
+    if (compressed)
+        return fr_hb_set_compressed(hb, fn, slot, nrows, by_columns, flags, ptr, ind, values);
+    status = set_symmetric(hb, fn, nrows, values, slot);
     if (status == FRICREG_OK && slot == 1)
         hb->rayleigh = 0;
     return status;

@@ -142,15 +142,13 @@ int fricreg_structure_set_matrix(fricreg_structure *s, int which, size_t nrows, 
                        "%s: which = %d is not a model matrix (FRICREG_MASS, FRICREG_STIFFNESS, "
                        "FRICREG_DAMPING or FRICREG_CONTACTS)",
                        who, which);
-    int layout = format & (FRICREG_MATRIX_CSR | FRICREG_MATRIX_CSC);
-    if (layout == (FRICREG_MATRIX_CSR | FRICREG_MATRIX_CSC))
-        return fr_fail(s, FRICREG_EINVAL, "%s: format %d is both CSR and CSC", who, format);
-    if (layout != FRICREG_MATRIX_DENSE)
-        return set_compressed(s, slot[which], who, nrows, ncols, layout == FRICREG_MATRIX_CSC,
-                              format & ~layout, ptr, ind, values);
-    if (format != FRICREG_MATRIX_DENSE) /* ptr and ind are not read: Fortran cannot pass NULL */
-        return fr_fail(s, FRICREG_EINVAL, "%s: a dense matrix takes no sparse flags (format %d)",
-                       who, format);
+    int compressed, by_columns, flags; /* a dense matrix's ptr and ind are not read */
+    int status = fr_matrix_format(format, &compressed, &by_columns, &flags, &s->err, who);
+    if (status != FRICREG_OK)
+        return status;
+    if (compressed)
+        return set_compressed(s, slot[which], who, nrows, ncols, by_columns, flags, ptr, ind,
+                              values);
     return set_dense(s, slot[which], who, nrows, ncols, values);
 }
 
