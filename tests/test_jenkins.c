@@ -33,6 +33,7 @@
 #include <string.h>
 
 #include "fricreg_jenkins.h"
+#include "quiet_check.h"
 
 #define SENTINEL (-777.125)
 static const double KT = 2.385, MUN = 0.7125, PI = 3.14159265358979323846;
@@ -264,8 +265,8 @@ static double orbit_2d(double A, int N, int rev, double *fnorm_err)
     double D = 0.0, up[2] = {0, 0}, fp[2] = {0, 0}, worst = 0.0;
     for (long k = 0; k <= (long)N * (rev + 1); k++) {
         double u[2] = {A * cos(h * (double)k), A * sin(h * (double)k)}, f[2];
-        ck_assert_int_eq(fricreg_jenkins_trial(j, 1, u, f, NULL), FRICREG_OK);
-        ck_assert_int_eq(fricreg_jenkins_commit(j), FRICREG_OK);
+        QUIET_OK(fricreg_jenkins_trial(j, 1, u, f, NULL));
+        QUIET_OK(fricreg_jenkins_commit(j));
         if (k > (long)N * rev) {
             D += 0.5 * ((f[0] + fp[0]) * (u[0] - up[0]) + (f[1] + fp[1]) * (u[1] - up[1]));
             worst = fmax(worst, fabs(hypot(f[0], f[1]) - MUN));

@@ -22,6 +22,7 @@
 
 #include "fricreg_hb.h"
 #include "fricreg_structure.h"
+#include "quiet_check.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -237,8 +238,8 @@ START_TEST(oscillator_against_hb)
     double rms = 0.0, x;
     for (int k = 1; k <= nsteps; k++) {
         double t0;
-        ck_assert_int_eq(fricreg_structure_get_value(s, FRICREG_SVALUE_TIME, &t0), FRICREG_OK);
-        ck_assert_int_eq(fricreg_structure_step(s, k * dt - t0), FRICREG_OK);
+        QUIET_OK(fricreg_structure_get_value(s, FRICREG_SVALUE_TIME, &t0));
+        QUIET_OK(fricreg_structure_step(s, k * dt - t0));
         if (k > nsteps - N) {
             fricreg_structure_get_state(s, 1, &x, NULL, NULL);
             rms += x * x;

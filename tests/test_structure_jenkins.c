@@ -26,6 +26,7 @@
 #include "fricreg_hb.h"
 #include "fricreg_structure.h"
 #include "jenkins_newmark.h"
+#include "quiet_check.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -90,9 +91,9 @@ START_TEST(oscillator_against_reference_and_hb)
     double amp = 0.0, diff = 0.0;
     for (int k = 1; k <= nsteps; k++) {
         double t1 = k * dt, t0;
-        ck_assert_int_eq(fricreg_structure_get_value(s, FRICREG_SVALUE_TIME, &t0), FRICREG_OK);
-        ck_assert_int_eq(fricreg_structure_step(s, t1 - t0), FRICREG_OK);
-        ck_assert_int_eq(fricreg_structure_get_state(s, 1, &got[k - 1], NULL, NULL), FRICREG_OK);
+        QUIET_OK(fricreg_structure_get_value(s, FRICREG_SVALUE_TIME, &t0));
+        QUIET_OK(fricreg_structure_step(s, t1 - t0));
+        QUIET_OK(fricreg_structure_get_state(s, 1, &got[k - 1], NULL, NULL));
         amp = fmax(amp, fabs(ref[k - 1]));
         diff = fmax(diff, fabs(got[k - 1] - ref[k - 1]));
     }
@@ -173,9 +174,9 @@ START_TEST(chain_against_reference)
     double amp = 0.0, diff = 0.0;
     for (int k = 1; k <= nsteps; k++) {
         double t0;
-        ck_assert_int_eq(fricreg_structure_get_value(s, FRICREG_SVALUE_TIME, &t0), FRICREG_OK);
-        ck_assert_int_eq(fricreg_structure_step(s, k * dt - t0), FRICREG_OK);
-        ck_assert_int_eq(fricreg_structure_get_state(s, 3, x, NULL, NULL), FRICREG_OK);
+        QUIET_OK(fricreg_structure_get_value(s, FRICREG_SVALUE_TIME, &t0));
+        QUIET_OK(fricreg_structure_step(s, k * dt - t0));
+        QUIET_OK(fricreg_structure_get_state(s, 3, x, NULL, NULL));
         for (int i = 0; i < 3; i++) {
             amp = fmax(amp, fabs(ref[3 * (size_t)(k - 1) + i]));
             diff = fmax(diff, fabs(x[i] - ref[3 * (size_t)(k - 1) + i]));

@@ -22,6 +22,7 @@
 
 #include "fricreg_jenkins.h"
 #include "fricreg_structure.h"
+#include "quiet_check.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -75,17 +76,16 @@ START_TEST(one_axis_is_the_1d_element)
         }
         double amp = 0.0, du = 0.0, df = 0.0, dw = 0.0, wmax = 0.0;
         for (int k = 1; k <= nsteps; k++) {
-            ck_assert_int_eq(fricreg_structure_step(a, dt), FRICREG_OK);
-            ck_assert_int_eq(fricreg_structure_step(b, dt), FRICREG_OK);
+            QUIET_OK(fricreg_structure_step(a, dt));
+            QUIET_OK(fricreg_structure_step(b, dt));
             double ua[2], ub[2], fa[2], wa[2], fb, wb;
             fricreg_structure_get_state(a, 2, ua, NULL, NULL);
             fricreg_structure_get_state(b, 2, ub, NULL, NULL);
-            ck_assert_int_eq(fricreg_structure_get_jenkins_2d_state(a, 1, fa, wa, NULL),
-                             FRICREG_OK);
-            ck_assert_int_eq(fricreg_structure_get_jenkins_state(b, 1, &fb, &wb, NULL), FRICREG_OK);
-            ck_assert_double_eq(ua[1], 0.0);
-            ck_assert_double_eq(fa[1], 0.0);
-            ck_assert_double_eq(wa[1], 0.0);
+            QUIET_OK(fricreg_structure_get_jenkins_2d_state(a, 1, fa, wa, NULL));
+            QUIET_OK(fricreg_structure_get_jenkins_state(b, 1, &fb, &wb, NULL));
+            QUIET_CHECK(ua[1] == 0.0);
+            QUIET_CHECK(fa[1] == 0.0);
+            QUIET_CHECK(wa[1] == 0.0);
             amp = fmax(amp, fabs(ub[0]));
             wmax = fmax(wmax, fabs(wb));
             du = fmax(du, fabs(ua[0] - ub[0]));

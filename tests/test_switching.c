@@ -30,6 +30,7 @@
 #include "fricreg.h"
 #include "fricreg_stribeck.h"
 #include "random.h"
+#include "quiet_check.h"
 
 enum { PER = FRICREG_SWITCH_PER_CONTACT };
 #define SENTINEL (-777.125)
@@ -55,14 +56,14 @@ static fricreg_ctx *one_contact(int law, double eps, double mun, double w)
 static double force(fricreg_ctx *ctx, double w, double v, double feq)
 {
     double a = -feq * w, f;
-    ck_assert_int_eq(fricreg_ctx_eval(ctx, 1, &v, &a, &f, NULL), FRICREG_OK);
+    QUIET_OK(fricreg_ctx_eval(ctx, 1, &v, &a, &f, NULL));
     return f;
 }
 
 static void switching(fricreg_ctx *ctx, double w, double v, double feq, double g[PER])
 {
     double a = -feq * w;
-    ck_assert_int_eq(fricreg_ctx_switching(ctx, 1, &v, &a, NULL, g, PER), FRICREG_OK);
+    QUIET_OK(fricreg_ctx_switching(ctx, 1, &v, &a, NULL, g, PER));
 }
 
 /* A path s -> (v, f_eq) = (v0 + s dv, f0 + s df), s in [0, 1]. */

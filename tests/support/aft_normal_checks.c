@@ -7,6 +7,7 @@
 
 #include "aft_normal_checks.h"
 #include "fricreg_jenkins.h"
+#include "quiet_check.h"
 
 #define MAX_NC 15 /* the suites' 2H + 1, and room for more */
 static const double PI = 3.14159265358979323846;
@@ -34,9 +35,8 @@ void aft_normal_time_domain(int harmonics, size_t ns, double kt, double mu, doub
         for (size_t n = 0; n < ns; n++) {
             double th = 2.0 * PI * (double)n / (double)ns, fn, nn;
             double un = aft_normal_at(harmonics, u, th), gn = aft_normal_at(harmonics, g, th);
-            ck_assert_int_eq(fricreg_jenkins_trial_normal(j, 1, &un, &gn, &fn, &nn, NULL, NULL),
-                             FRICREG_OK);
-            ck_assert_int_eq(fricreg_jenkins_commit(j), FRICREG_OK);
+            QUIET_OK(fricreg_jenkins_trial_normal(j, 1, &un, &gn, &fn, &nn, NULL, NULL));
+            QUIET_OK(fricreg_jenkins_commit(j));
             if (p < 2)
                 continue;
             f[0] += fn / (double)ns;
