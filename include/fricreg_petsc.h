@@ -38,6 +38,11 @@
  * (mun, f) and accelerations as fricreg.h says. One object per TS; like PETSc objects, not to
  * be used from two threads at once.
  *
+ * Options and profiling. fricreg_petsc_set_from_options reads -fricreg_law, -fricreg_eps and
+ * -fricreg_mun from the options database. The entry points that evaluate the contacts are log
+ * events, FricregRhsAdd, FricregResidAdd and FricregJacAdd, registered by the first
+ * fricreg_petsc_create: -log_view shows friction's share of a run beside PETSc's own events.
+ *
  * This header includes PETSc's (petscmat.h: Vec, Mat, PetscInt, PetscReal): it is a PETSc
  * adapter, called from code that holds those objects. fricreg's own headers include no PETSc.
  */
@@ -121,6 +126,31 @@ FRICREG_API int fricreg_petsc_set_law(fricreg_petsc *fp, int law, double eps);
  *  Returns FRICREG_OK; FRICREG_ENULL if fp is NULL, or mun while m > 0; FRICREG_ESIZE if m
  *  differs from the object's; FRICREG_EINVAL if some mun[k] < 0; FRICREG_ENONFINITE. */
 FRICREG_API int fricreg_petsc_set_bounds(fricreg_petsc *fp, size_t m, const double mun[]);
+
+/** Read the adapter's settings from a PETSc options database, as a PETSc object's
+ *  SetFromOptions does (PetscOptionsGetString/Real, so -options_left counts them as used):
+ *
+ *    -fricreg_law NAME   the friction law by its fricreg_law_name: coulomb, force-balance,
+ *                        karnopp, velocity-limited, tanh or quinn (fricreg_petsc_set_law)
+ *    -fricreg_eps EPS    the regularization eps > 0 (velocity units)
+ *    -fricreg_mun MUN    one bound mu_k N_k >= 0 for every contact of this rank (force units;
+ *                        fricreg_petsc_set_bounds)
+ *
+ *  An option not given keeps the current setting (a law without -fricreg_eps keeps the eps last
+ *  set, 1e-3 by default). Every value is checked before any is applied, so a refusal changes
+ *  nothing. -help does not list these options (the library never prints): this docstring and
+ *  docs/distributed.md do. Not collective.
+ *
+ *  options  the database; NULL for PETSc's global one.
+ *  prefix   prepended to each name after its '-' (e.g. "beam_" reads -beam_fricreg_law), as
+ *           PETSc objects' prefixes are; NULL for none.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if fp is NULL; FRICREG_EINVAL if -fricreg_law names no law,
+ *  -fricreg_eps is not > 0 or -fricreg_mun is negative; FRICREG_ENONFINITE if a number is NaN
+ *  or infinite; FRICREG_PETSC_EPETSC if PETSc fails to read a value (e.g. "-fricreg_eps abc").
+ *  Since 1.7 (FRICREG_PETSC_1.1). */
+FRICREG_API int fricreg_petsc_set_from_options(fricreg_petsc *fp, PetscOptions options,
+                                               const char *prefix);
 
 /** The fricreg context that evaluates the contacts, for the settings this header does not
  *  repeat (Stribeck friction: fricreg_stribeck.h). Owned by fp; NULL when the rank has no

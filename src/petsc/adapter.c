@@ -156,8 +156,11 @@ int fricreg_petsc_create(Vec mass, size_t m, const PetscInt node[], const PetscI
     PetscPushErrorHandler(PetscReturnErrorHandler, NULL);
     if (fp != NULL) {
         fp->m = m;
+        fp->law = FRICREG_LAW_QUINN, fp->eps = 1e-3; /* the context's defaults */
         status = setup(fp, mass, node, other);
     }
+    if (status == FRICREG_OK && fr_petsc_events_register())
+        status = fr_fail(fp, FRICREG_PETSC_EPETSC, "create: registering the log events failed");
     /* Every rank agrees: the largest status of any rank. */
     MPI_Comm comm = PetscObjectComm((PetscObject)mass);
     int all = status;
@@ -201,11 +204,16 @@ int fricreg_petsc_set_law(fricreg_petsc *fp, int law, double eps)
         if (status == FRICREG_OK)
             status = fricreg_ctx_set_law(probe, law, eps);
         fricreg_ctx_free(probe);
-        return status == FRICREG_OK ? FRICREG_OK
-                                    : fr_fail(fp, status, "set_law: %s", fricreg_strerror(status));
+        if (status != FRICREG_OK)
+            return fr_fail(fp, status, "set_law: %s", fricreg_strerror(status));
+        fp->law = law, fp->eps = eps;
+        return FRICREG_OK;
     }
     fp->evaluated = 0;
-    return pass_on(fp, fricreg_ctx_set_law(fp->ctx, law, eps), "set_law");
+    int status = pass_on(fp, fricreg_ctx_set_law(fp->ctx, law, eps), "set_law");
+    if (status == FRICREG_OK)
+        fp->law = law, fp->eps = eps;
+    return status;
 }
 
 int fricreg_petsc_set_bounds(fricreg_petsc *fp, size_t m, const double mun[])

@@ -96,7 +96,9 @@ int fricreg_petsc_rhs_add(fricreg_petsc *fp, Vec X, Vec G, double *power)
     if (fp == NULL)
         return FRICREG_ENULL;
     PetscPushErrorHandler(PetscReturnErrorHandler, NULL);
+    (void)PetscLogEventBegin(fr_petsc_events.rhs_add, 0, 0, 0, 0);
     int status = add_forces(fp, "rhs_add", X, G, G, 1, power);
+    (void)PetscLogEventEnd(fr_petsc_events.rhs_add, 0, 0, 0, 0);
     PetscPopErrorHandler();
     return status;
 }
@@ -108,7 +110,9 @@ int fricreg_petsc_residual_add(fricreg_petsc *fp, Vec V, Vec Ffree, Vec R, doubl
     if (R == Ffree && R != NULL)
         return fr_fail(fp, FRICREG_EINVAL, "residual_add: R and Ffree are one Vec");
     PetscPushErrorHandler(PetscReturnErrorHandler, NULL);
+    (void)PetscLogEventBegin(fr_petsc_events.residual_add, 0, 0, 0, 0);
     int status = add_forces(fp, "residual_add", V, Ffree, R, 0, power);
+    (void)PetscLogEventEnd(fr_petsc_events.residual_add, 0, 0, 0, 0);
     PetscPopErrorHandler();
     return status;
 }

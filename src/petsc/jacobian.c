@@ -149,6 +149,7 @@ int fricreg_petsc_jacobian_add(fricreg_petsc *fp, Vec V, Vec Ffree, PetscReal ma
     if (!isfinite(mass_shift) || !isfinite(velocity_shift))
         status = fr_fail(fp, FRICREG_ENONFINITE, "jacobian_add: a shift is not finite");
     PetscPushErrorHandler(PetscReturnErrorHandler, NULL);
+    (void)PetscLogEventBegin(fr_petsc_events.jacobian_add, 0, 0, 0, 0);
     if (status == FRICREG_OK)
         status = forces_and_tangent(fp, V, Ffree);
     if (status == FRICREG_OK)
@@ -159,6 +160,7 @@ int fricreg_petsc_jacobian_add(fricreg_petsc *fp, Vec V, Vec Ffree, PetscReal ma
         ierr = MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY);
     if (ierr && status == FRICREG_OK)
         status = fr_petsc_fail(fp, ierr, "jacobian_add: MatAssembly");
+    (void)PetscLogEventEnd(fr_petsc_events.jacobian_add, 0, 0, 0, 0);
     PetscPopErrorHandler();
     return status;
 }

@@ -27,7 +27,18 @@ struct fricreg_petsc {
     PetscInt *cols;    /* the Jacobian's row buffer: columns */
     PetscScalar *vals; /* and values, cap entries each */
     size_t cap;
+    int law;    /* the law and eps last set (fricreg_petsc_set_from_options keeps */
+    double eps; /* the one it is not given) */
 };
+
+/* The adapter's log events (events.c): -1 until fr_petsc_events_register. */
+struct fr_petsc_events {
+    PetscLogEvent rhs_add, residual_add, jacobian_add;
+};
+extern struct fr_petsc_events fr_petsc_events;
+
+/* Finds or registers the log events; called by fricreg_petsc_create. */
+PetscErrorCode fr_petsc_events_register(void);
 
 /* Records PETSc's error ierr from the call named `what` as fp's FRICREG_PETSC_EPETSC. */
 int fr_petsc_fail(fricreg_petsc *fp, PetscErrorCode ierr, const char *what);

@@ -4,7 +4,10 @@
  *    whole residual R = M A - F_free - J^T f of a spring chain with a lumped mass, TSALPHA2's
  *    shifts, contacts sliding, in law (4)'s zone and against the ground and between two nodes;
  *  - a contact on another rank's degree of freedom is refused on every rank with
- *    FRICREG_PETSC_EREMOTE (2 ranks), a shared degree of freedom with FRICREG_EINVAL.
+ *    FRICREG_PETSC_EREMOTE (2 ranks), a shared degree of freedom with FRICREG_EINVAL;
+ *  - set_from_options: -<prefix>fricreg_law, _eps, _mun give the forces of fricreg_law_eval
+ *    with those settings; a bad value is refused with its status and changes nothing;
+ *  - rhs_add and jacobian_add are counted by their log events (PetscLogDefaultBegin).
  * Prints "ok" lines and exits 0, or names the failure and exits 1. */
 #include <math.h>
 #include <stdio.h>
@@ -242,12 +245,114 @@ static void test_refusals(void)
     VecDestroy(&mass);
 }
 
+/* The forces of one contact per owned node against the ground (mass 2, velocity 0.3 + 0.1 k,
+ * free acceleration 0) after set_from_options with opts and prefix: its status, and f[0..m). */
+static int forces_after_options(fricreg_petsc *fp, Vec X, Vec G, PetscOptions opts,
+                                const char *prefix, size_t m, double f[])
+{
+    int status = fricreg_petsc_set_from_options(fp, opts, prefix);
+    VecSet(G, 0.0);
+    if (fricreg_petsc_rhs_add(fp, X, G, NULL) != FRICREG_OK ||
+        fricreg_petsc_get_forces(fp, m, f) != FRICREG_OK)
+        check(0, "rhs_add after set_from_options");
+    return status;
+}
+
+static void test_options(void)
+{
+    Vec mass, X, G;
+    VecCreateMPI(PETSC_COMM_WORLD, 4, PETSC_DETERMINE, &mass);
+    VecSet(mass, 2.0);
+    VecDuplicate(mass, &X), VecDuplicate(mass, &G);
+    PetscInt rs, re, node[4];
+    VecGetOwnershipRange(mass, &rs, &re);
+    for (PetscInt k = 0; k < 4; k++) {
+        node[k] = rs + k;
+        VecSetValue(X, rs + k, 0.3 + 0.1 * (double)k - 0.35, INSERT_VALUES);
+    }
+    VecAssemblyBegin(X), VecAssemblyEnd(X);
+    fricreg_petsc *fp = NULL;
+    check(fricreg_petsc_create(mass, 4, node, NULL, &fp) == FRICREG_OK, "create for the options");
+    PetscOptions opts;
+    PetscOptionsCreate(&opts);
+    PetscOptionsSetValue(opts, "-beam_fricreg_law", "tanh");
+    PetscOptionsSetValue(opts, "-beam_fricreg_eps", "0.05");
+    PetscOptionsSetValue(opts, "-beam_fricreg_mun", "0.7");
+    double f[4], want[4], before[4];
+    int status = forces_after_options(fp, X, G, opts, "beam_", 4, f);
+    check(status == FRICREG_OK, "set_from_options: -beam_fricreg_law tanh, _eps 0.05, _mun 0.7");
+    int same = 1;
+    for (int k = 0; k < 4; k++) {
+        fricreg_law_eval(FRICREG_LAW_TANH, 0.3 + 0.1 * k - 0.35, 0.0, 0.7, 0.05, &want[k]);
+        same &= fabs(f[k] - want[k]) <= 1e-15 * 0.7;
+    }
+    check(same, "the forces are fricreg_law_eval's with the options' law, eps and bound");
+    PetscBool used = PETSC_FALSE;
+    PetscOptionsUsed(opts, "beam_fricreg_mun", &used); /* names stored without the - */
+    check(used == PETSC_TRUE, "the options read are marked used (-options_left)");
+    /* -fricreg_eps alone keeps the law; without the prefix nothing is read */
+    PetscOptionsSetValue(opts, "-beam_fricreg_eps", "0.2");
+    PetscOptionsClearValue(opts, "-beam_fricreg_law");
+    forces_after_options(fp, X, G, opts, "beam_", 4, f);
+    fricreg_law_eval(FRICREG_LAW_TANH, -0.05, 0.0, 0.7, 0.2, &want[0]);
+    check(fabs(f[0] - want[0]) <= 1e-15 * 0.7, "-fricreg_eps alone keeps the law (tanh)");
+    memcpy(before, f, sizeof f);
+    forces_after_options(fp, X, G, opts, NULL, 4, f);
+    check(memcmp(before, f, sizeof f) == 0,
+          "without the prefix, the prefixed options are not read");
+    /* refusals: the status, and the forces as before */
+    const char *bad[4][2] = {{"-beam_fricreg_law", "sliding"},
+                             {"-beam_fricreg_eps", "-1"},
+                             {"-beam_fricreg_mun", "-0.5"},
+                             {"-beam_fricreg_eps", "abc"}};
+    const int codes[4] = {FRICREG_EINVAL, FRICREG_EINVAL, FRICREG_EINVAL, FRICREG_PETSC_EPETSC};
+    for (int b = 0; b < 4; b++) {
+        PetscOptions one;
+        PetscOptionsCreate(&one);
+        PetscOptionsSetValue(one, "-beam_fricreg_mun", "5"); /* valid, must not be applied */
+        PetscOptionsSetValue(one, bad[b][0], bad[b][1]);
+        status = forces_after_options(fp, X, G, one, "beam_", 4, f);
+        char what[160];
+        snprintf(what, sizeof what, "%s %s: status %d (want %d), forces unchanged", bad[b][0],
+                 bad[b][1], status, codes[b]);
+        check(status == codes[b] && memcmp(before, f, sizeof f) == 0, what);
+        PetscOptionsDestroy(&one);
+    }
+    check(fricreg_petsc_set_from_options(NULL, opts, NULL) == FRICREG_ENULL, "NULL: ENULL");
+    PetscOptionsDestroy(&opts);
+    fricreg_petsc_free(fp);
+    VecDestroy(&mass), VecDestroy(&X), VecDestroy(&G);
+}
+
+/* The log events count the calls: FricregRhsAdd at least test_options' 7 rhs_add calls,
+ * FricregJacAdd test_jacobian's one at least. */
+static void test_log_events(void)
+{
+    const char *names[2] = {"FricregRhsAdd", "FricregJacAdd"};
+    const int least[2] = {7, 1};
+    for (int e = 0; e < 2; e++) {
+        PetscLogEvent ev = -1;
+        PetscEventPerfInfo info;
+        memset(&info, 0, sizeof info);
+        PetscLogEventGetId(names[e], &ev);
+        if (ev >= 0)
+            PetscLogEventGetPerfInfo(PETSC_DETERMINE, ev, &info);
+        char what[120];
+        snprintf(what, sizeof what, "log event %s: %d calls (>= %d)", names[e], info.count,
+                 least[e]);
+        check(ev >= 0 && info.count >= least[e], what);
+    }
+}
+
 int main(int argc, char **argv)
 {
     if (PetscInitialize(&argc, &argv, NULL, NULL))
         return 1;
+    PetscLogDefaultBegin();
     test_jacobian();
     test_refusals();
+    test_options();
+    test_log_events();
     int all;
     MPI_Allreduce(&fails, &all, 1, MPI_INT, MPI_SUM, PETSC_COMM_WORLD);
     PetscFinalize();
