@@ -301,12 +301,12 @@ static void test_options(void)
     check(memcmp(before, f, sizeof f) == 0,
           "without the prefix, the prefixed options are not read");
     /* refusals: the status, and the forces as before */
-    const char *bad[4][2] = {{"-beam_fricreg_law", "sliding"},
-                             {"-beam_fricreg_eps", "-1"},
-                             {"-beam_fricreg_mun", "-0.5"},
-                             {"-beam_fricreg_eps", "abc"}};
-    const int codes[4] = {FRICREG_EINVAL, FRICREG_EINVAL, FRICREG_EINVAL, FRICREG_PETSC_EPETSC};
-    for (int b = 0; b < 4; b++) {
+    const char *bad[6][2] = {{"-beam_fricreg_law", "sliding"}, {"-beam_fricreg_eps", "-1"},
+                             {"-beam_fricreg_mun", "-0.5"},    {"-beam_fricreg_eps", "abc"},
+                             {"-beam_fricreg_eps", "inf"},     {"-beam_fricreg_mun", "nan"}};
+    const int codes[6] = {FRICREG_EINVAL,       FRICREG_EINVAL,     FRICREG_EINVAL,
+                          FRICREG_PETSC_EPETSC, FRICREG_ENONFINITE, FRICREG_ENONFINITE};
+    for (int b = 0; b < 6; b++) {
         PetscOptions one;
         PetscOptionsCreate(&one);
         PetscOptionsSetValue(one, "-beam_fricreg_mun", "5"); /* valid, must not be applied */
@@ -324,12 +324,12 @@ static void test_options(void)
     VecDestroy(&mass), VecDestroy(&X), VecDestroy(&G);
 }
 
-/* The log events count the calls: FricregRhsAdd at least test_options' 7 rhs_add calls,
+/* The log events count the calls: FricregRhsAdd at least test_options' 9 rhs_add calls,
  * FricregJacAdd test_jacobian's one at least. */
 static void test_log_events(void)
 {
     const char *names[2] = {"FricregRhsAdd", "FricregJacAdd"};
-    const int least[2] = {7, 1};
+    const int least[2] = {9, 1};
     for (int e = 0; e < 2; e++) {
         PetscLogEvent ev = -1;
         PetscEventPerfInfo info;
