@@ -21,9 +21,9 @@
 #   size          INTEGER, intent(in)                   int(x, c_size_t)
 #   size0         INTEGER, intent(in)                   int(max(x, 0), c_size_t): a negative
 #                   count reaches C as 0, a size it refuses, not as a huge one (the getters)
-#   int           INTEGER, intent(in)                   int(x, c_int)
-#   int_clamped   INTEGER, intent(in)                   int(x, c_int) clamped to +-huge(c_int):
-#                   an ILP64 caller's value beyond an int is refused by C, not wrapped into range
+#   int           INTEGER, intent(in)                   int(x, c_int) clamped to +-huge(c_int):
+#                   an ILP64 caller's value beyond an int reaches C as the nearest int (refused
+#                   where C bounds it), not wrapped into range (2**32 + 5 would be 5)
 #   double        DOUBLE PRECISION, intent(in)          as it is
 #   double(*)     DOUBLE PRECISION array, intent(in)    as it is
 #   double_out    DOUBLE PRECISION, intent(inout)       as it is (C writes it only on success,
@@ -62,9 +62,6 @@ function(f77_arg name kind decl_var pass_var)
     set(decl "integer, intent(in) :: ${name}")
     set(pass "int(max(${name}, 0), c_size_t)")
   elseif(kind STREQUAL "int")
-    set(decl "integer, intent(in) :: ${name}")
-    set(pass "int(${name}, c_int)")
-  elseif(kind STREQUAL "int_clamped")
     set(decl "integer, intent(in) :: ${name}")
     set(pass "int(min(max(${name}, -int(huge(0_c_int))), int(huge(0_c_int))), c_int)")
   elseif(kind STREQUAL "double")
