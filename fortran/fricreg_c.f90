@@ -26,6 +26,7 @@ module fricreg_c
   public :: c_int, c_double, c_size_t, c_int64_t, c_intptr_t, c_ptr, c_funptr, c_char, &
             c_null_ptr, c_null_char, c_associated, c_f_pointer, c_loc, c_funloc
   public :: fricreg_c_string, fricreg_ptr_to_handle, fricreg_handle_to_ptr, fricreg_transpose
+  public :: fricreg_f77_transposed_rows
   ! For module fricreg and the F77 entry points (module fricreg does not re-export them).
   public :: fricreg_free_fn, fricreg_errcode_fn, fricreg_errmsg_fn, fricreg_f77_created, &
             fricreg_f77_release, fricreg_f77_last_error
@@ -115,6 +116,24 @@ contains
   ! Statuses and codes are integer(c_int) here, never default INTEGER: the entry points are also
   ! compiled with -fdefault-integer-8 (libfricreg_fortran_ilp64) against this one module, and
   ! convert on assignment to their own STAT and CODE.
+
+  !> The tangential rows a and normal rows b of elements with a normal law, in Fortran's order,
+  !> transposed into at and bt (C's row-major), allocated here. Returns FRICREG_OK, or
+  !> FRICREG_ENOMEM with nothing allocated, for STAT.
+  integer(c_int) function fricreg_f77_transposed_rows(a, b, at, bt) result(stat)
+    real(c_double), intent(in) :: a(:, :), b(:, :)
+    real(c_double), allocatable, intent(out) :: at(:, :), bt(:, :)
+    integer :: alloc
+    allocate (at(size(a, 2), size(a, 1)), bt(size(b, 2), size(b, 1)), stat=alloc)
+    if (alloc /= 0) then
+      if (allocated(at)) deallocate (at)
+      stat = FRICREG_ENOMEM
+      return
+    end if
+    at = transpose(a)
+    bt = transpose(b)
+    stat = FRICREG_OK
+  end function fricreg_f77_transposed_rows
 
   !> After a create that returned status with the new object p: h takes p only on success.
   !> Returns the status, for STAT.

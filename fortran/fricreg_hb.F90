@@ -36,6 +36,7 @@ module fricreg_hb_m
     procedure :: set_normal_elements => hb_set_normal_elements
     procedure :: set_jenkins => hb_set_jenkins
     procedure :: set_jenkins_normal => hb_set_jenkins_normal
+    procedure :: set_iwan_normal => hb_set_iwan_normal
     procedure, private :: hb_set_matrix_dense, hb_set_matrix_compressed
     generic :: set_matrix => hb_set_matrix_dense, hb_set_matrix_compressed
     procedure :: set_excitation => hb_set_excitation
@@ -289,6 +290,34 @@ contains
     end if
     if (status == FRICREG_OK) self%rows = 2 * self%m
   end function hb_jenkins_normal
+
+  !> Iwan elements under a normal load with lift-off instead (fricreg_hb_set_iwan_normal):
+  !> Jt(m, ndof), Jn(m, ndof) as set_normal_elements's; element i's ns sliders have the
+  !> stiffnesses k(:, i) > 0 and friction coefficients mu(:, i) >= 0, k and mu (ns, m); n0(m),
+  !> kn(m) >= 0 the normal law. q has 2 m columns, as set_normal_elements's, which is the case
+  !> ns = 1. FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_EINVAL; FRICREG_ENOMEM. Since 1.7.
+  function hb_set_iwan_normal(self, Jt, Jn, k, mu, n0, kn) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    real(c_double), intent(in) :: Jt(:, :), Jn(:, :)
+    real(c_double), intent(in), contiguous :: k(:, :), mu(:, :), n0(:), kn(:)
+    integer(c_int) :: status
+    character(len=*), parameter :: fn = 'set_iwan_normal'
+    real(c_double), allocatable :: Jtc(:, :), Jnc(:, :) ! transposed: C's row-major Jt, Jn
+    status = self%hb_shape(fn, 'Jt', Jt, self%m, self%n)
+    if (status == FRICREG_OK) status = self%hb_shape(fn, 'Jn', Jn, self%m, self%n)
+    if (status == FRICREG_OK) status = self%hb_shape(fn, 'k', k, int(size(k, 1), c_size_t), &
+                                                     self%m)
+    if (status == FRICREG_OK) status = self%hb_shape(fn, 'mu', mu, int(size(k, 1), c_size_t), &
+                                                     self%m)
+    if (status == FRICREG_OK) status = self%hb_shape(fn, 'n0', n0, self%m, 0_c_size_t)
+    if (status == FRICREG_OK) status = self%hb_shape(fn, 'kn', kn, self%m, 0_c_size_t)
+    if (status /= FRICREG_OK) return
+    allocate (Jtc, source=transpose(Jt))
+    allocate (Jnc, source=transpose(Jn))
+    status = self%record(fricreg_hb_set_iwan_normal(self%ptr, self%m, self%n, Jtc, Jnc, &
+                                                    int(size(k, 1), c_size_t), k, mu, n0, kn))
+    if (status == FRICREG_OK) self%rows = 2 * self%m
+  end function hb_set_iwan_normal
 
   !> One setter of M, K and C, in any storage (C's fricreg_hb_set_matrix), a generic of two
   !> forms, as fricreg_structure's set_matrix (the contacts aside: J is set with the elements):

@@ -21,6 +21,7 @@
 !   FRHBJF(H, M, NDOF, J, KT, MUN, STAT)              _set_elements (given J transposed)
 !   FRHBIW(H, M, NDOF, J, NS, K, PHI, STAT)           _set_iwan (J transposed, K(NS, M))
 !   FRHBLO(H, M, NDOF, JT, JN, KT, MU, N0, KN, STAT)  _set_normal_elements (JT, JN transposed)
+!   FRHBIL(H, M, NDOF, JT, JN, NS, K, MU, N0, KN, STAT)  _set_iwan_normal (K, MU (NS, M))
 !   FRHBPF(H, NDOF, PC, PS, STAT)                     _set_excitation
 !   FRHBNT(H, TOL, MAXIT, STAT)                       _set_newton
 !   FRHBCT(H, DS, DSMIN, DSMAX, MAXPT, STAT)          _set_continuation
@@ -45,7 +46,8 @@
 !   FRHBER(H, CODE, MSG, STAT)                        _errcode, _errmsg
 ! Refused here, before C sees them, with FRICREG_EINVAL: FRHBCR's NDOF or M below 1, a
 ! negative MAXPT, IGUESS other than 0 or 1, and a K or IDOF below 1 (counts that would wrap
-! into size_t or C's 0-based index; FRHBSB's K below 0), FRHBNM's MODE below 1 or negative NP,
+! into size_t or C's 0-based index; FRHBSB's K below 0), FRHBIW's and FRHBIL's NS below 1,
+! FRHBNM's MODE below 1 or negative NP,
 ! FRHBNQ's I below 1.
 !
 ! A monitor is the caller's INTEGER FUNCTION MONITR(ITERS, PARAM, RESID), INTEGER*8 ITERS (the
@@ -158,22 +160,43 @@ subroutine frhblo(h, m, ndof, jt, jn, kt, mu, n0, kn, stat)
   double precision, intent(in) :: jt(max(m, 0), *), jn(max(m, 0), *), kt(*), mu(*), n0(*), kn(*)
   integer, intent(out) :: stat
   double precision, allocatable :: ct(:, :), cn(:, :)
-  integer :: mm, nn, alloc
+  integer :: mm, nn
   ! Sizes that cannot be the driver's copy nothing: C answers FRICREG_ESIZE.
   mm = max(m, 0)
   nn = max(ndof, 0)
-  allocate (ct(nn, mm), cn(nn, mm), stat=alloc)
-  if (alloc /= 0) then
-    stat = int(FRICREG_ENOMEM)
-    return
-  end if
-  if (mm > 0 .and. nn > 0) then
-    ct = transpose(jt(1:mm, 1:nn))
-    cn = transpose(jn(1:mm, 1:nn))
-  end if
+  stat = int(fricreg_f77_transposed_rows(jt(1:mm, 1:nn), jn(1:mm, 1:nn), ct, cn))
+  if (stat /= FRICREG_OK) return
   stat = int(fricreg_hb_set_normal_elements(fricreg_handle_to_ptr(h), int(m, c_size_t), &
                                             int(ndof, c_size_t), ct, cn, kt, mu, n0, kn))
 end subroutine frhblo
+
+!> FRHBIL(H, M, NDOF, JT, JN, NS, K, MU, N0, KN, STAT): Iwan elements under a normal load with
+!> lift-off instead, JT, JN, N0, KN as FRHBLO's, element I's NS sliders the stiffnesses
+!> K(1:NS, I) > 0 bounded by MU(1:NS, I) N (MU >= 0; C's row-major K[M NS], the same numbers).
+!> Q has 2 M columns as FRHBLO's, which is the case NS = 1.
+subroutine frhbil(h, m, ndof, jt, jn, ns, k, mu, n0, kn, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m, ndof, ns
+  double precision, intent(in) :: jt(max(m, 0), *), jn(max(m, 0), *), k(*), mu(*), n0(*), kn(*)
+  integer, intent(out) :: stat
+  double precision, allocatable :: ct(:, :), cn(:, :)
+  integer :: mm, nn
+  ! Sizes that cannot be the driver's copy nothing: C answers FRICREG_ESIZE.
+  mm = max(m, 0)
+  nn = max(ndof, 0)
+  if (ns < 1) then ! would wrap into size_t
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  stat = int(fricreg_f77_transposed_rows(jt(1:mm, 1:nn), jn(1:mm, 1:nn), ct, cn))
+  if (stat /= FRICREG_OK) return
+  stat = int(fricreg_hb_set_iwan_normal(fricreg_handle_to_ptr(h), int(m, c_size_t), &
+                                        int(ndof, c_size_t), ct, cn, int(ns, c_size_t), k, mu, &
+                                        n0, kn))
+end subroutine frhbil
 
 !> FRHBCT(H, DS, DSMIN, DSMAX, MAXPT, STAT): the continuation's step control and its most
 !> points MAXPT >= 1.

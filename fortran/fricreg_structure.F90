@@ -40,6 +40,7 @@ module fricreg_structure_m
     procedure :: set_iwan => struct_set_iwan
     procedure :: get_iwan_state => struct_get_iwan_state
     procedure :: set_jenkins_normal => struct_set_jenkins_normal
+    procedure :: set_iwan_normal => struct_set_iwan_normal
     procedure :: set_jenkins_2d_normal => struct_set_jenkins_2d_normal
     procedure :: get_normal_forces => struct_get_normal_forces
     procedure :: set_mass_csr => struct_set_mass_csr
@@ -430,6 +431,40 @@ contains
                                                                             Jnc, kt, &
                                                                             mu, n0, kn))
   end function struct_set_jenkins_normal
+
+  !> Iwan elements with a normal load and lift-off (fricreg_structure_set_iwan_normal): rows of
+  !> Je(me, ndof) and Jn(me, ndof) in Fortran's order, ns = size(k, 1) sliders each, slider s of
+  !> element i a spring k(s, i) bounded by mu(s, i) N, N = max(0, n0 + kn g), g = (Jn u)_i;
+  !> me = size(Je, 1). FRICREG_ESIZE unless Je and Jn have one shape with ndof columns, k and mu
+  !> are (ns, me) arrays of one shape and n0, kn have me entries; C's codes otherwise. Since 1.7.
+  function struct_set_iwan_normal(self, Je, Jn, k, mu, n0, kn) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(in) :: Je(:, :), Jn(:, :)
+    real(c_double), intent(in), contiguous :: k(:, :), mu(:, :), n0(:), kn(:)
+    integer(c_int) :: status
+    integer(c_size_t) :: me
+    character(len=*), parameter :: who = 'set_iwan_normal'
+    real(c_double), allocatable :: Jec(:, :), Jnc(:, :) ! transposed: C's row-major Je, Jn
+    me = int(size(Je, 1), c_size_t)
+    status = self%ready(who, 'structure')
+    if (status == FRICREG_OK) status = self%check_size(who, 'Je, 2', size(Je, 2), self%n)
+    if (status == FRICREG_OK) status = self%check_size(who, 'Jn, 1', size(Jn, 1), me)
+    if (status == FRICREG_OK) status = self%check_size(who, 'Jn, 2', size(Jn, 2), self%n)
+    if (status == FRICREG_OK) status = self%check_size(who, 'k, 2', size(k, 2), me)
+    if (status == FRICREG_OK) status = self%check_size(who, 'mu, 1', size(mu, 1), &
+                                                       int(size(k, 1), c_size_t))
+    if (status == FRICREG_OK) status = self%check_size(who, 'mu, 2', size(mu, 2), me)
+    if (status == FRICREG_OK) status = self%check_size(who, 'n0', size(n0), me)
+    if (status == FRICREG_OK) status = self%check_size(who, 'kn', size(kn), me)
+    if (status == FRICREG_OK) allocate (Jec, source=transpose(Je))
+    if (status == FRICREG_OK) allocate (Jnc, source=transpose(Jn))
+    if (status == FRICREG_OK) status = self%record( &
+                                       fricreg_structure_set_iwan_normal(self%ptr, me, self%n, &
+                                                                         Jec, Jnc, &
+                                                                         int(size(k, 1), &
+                                                                             c_size_t), &
+                                                                         k, mu, n0, kn))
+  end function struct_set_iwan_normal
 
   !> 3-D contact elements: 2-D Jenkins elements with a normal load and lift-off
   !> (fricreg_structure_set_jenkins_2d_normal): element i's tangential rows 2i-1 (x) and 2i (y)

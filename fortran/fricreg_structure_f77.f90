@@ -7,7 +7,7 @@
 ! none), INTEGER STAT last (the C status, FRICREG_OK = 0; nothing stops the program), DOUBLE
 ! PRECISION reals, nothing changed on failure. NDOF and M are checked by the C library against
 ! the structure (FRICREG_ESIZE) before any array is read, but for the dense rows that are
-! transposed here first (FRSTJF's J, FRSTJK's, FRSTJ2's, FRSTIW's and FRSTLO's JE and JN): those
+! transposed here first (FRSTJF's J, FRSTJK's, FRSTJ2's, FRSTIW's, FRSTLO's and FRSTIL's JE and JN): those
 ! are read as (M, NDOF), (ME, NDOF) or (2 ME, NDOF) as given, so they must have those dimensions.
 !
 ! Matrices. The model is sparse inside; a legacy code hands over the compressed sparse columns
@@ -54,6 +54,7 @@
 !   FRSTJK(H, ME, NDOF, JE, KT, MUN, STAT)       _set_jenkins (given JE transposed)
 !   FRSTIW(H, ME, NDOF, JE, NS, K, PHI, STAT)    _set_iwan (JE transposed, K(NS, ME))
 !   FRSTLO(H, ME, NDOF, JE, JN, KT, MU, N0, KN, STAT)   _set_jenkins_normal (JE, JN transposed)
+!   FRSTIL(H, ME, NDOF, JE, JN, NS, K, MU, N0, KN, STAT)   _set_iwan_normal (K, MU (NS, ME))
 !   FRSTJ2(H, ME, NDOF, JE, KT, MUN, STAT)       _set_jenkins_2d (JE(2 ME, NDOF) transposed)
 !   FRSTL2(H, ME, NDOF, JE, JN, KT, MU, N0, KN, STAT)   _set_jenkins_2d_normal (3-D contact)
 !   FRSTJS(H, ME, F, W, D, STAT)                 _get_jenkins_state
@@ -77,8 +78,8 @@
 ! of theirs, so FRSTER still shows the failure before (their STAT is the answer). So do the
 ! few refusals made here,
 ! before C is called, of counts that would wrap into size_t: FRSTCR's NDOF or M below 1
-! (there is no structure yet to record it), FRSTAG's and FRSTLD's N below 0, FRSTIW's and
-! FRSTIS's NS below 0, FRSTJ2's ME above 2**25 (C's limit 2 ME <= 2**26; FRICREG_EINVAL).
+! (there is no structure yet to record it), FRSTAG's and FRSTLD's N below 0, FRSTIW's,
+! FRSTIL's and FRSTIS's NS below 0, FRSTJ2's ME above 2**25 (C's limit 2 ME <= 2**26; FRICREG_EINVAL).
 !
 ! Generated, not here: the entry points that are one C call (FRSTMC, FRSTKC, FRSTCC, FRSTJC,
 ! FRSTJR, FRSTMX, FRSTMF, FRSTKF, FRSTCF, FRSTCA, FRSTBD, FRSTLW, FRSTIV, FRSTU0, FRSTNM, FRSTHH,
@@ -291,21 +292,43 @@ subroutine frstlo(h, me, ndof, je, jn, kt, mu, n0, kn, stat)
                                   kn(*)
   integer, intent(out) :: stat
   double precision, allocatable :: ct(:, :), cn(:, :)
-  integer :: mm, nn, alloc
+  integer :: mm, nn
   mm = max(me, 0)
   nn = max(ndof, 0)
-  allocate (ct(nn, mm), cn(nn, mm), stat=alloc)
-  if (alloc /= 0) then
-    stat = int(FRICREG_ENOMEM)
-    return
-  end if
-  if (mm > 0 .and. nn > 0) then
-    ct = transpose(je(1:mm, 1:nn))
-    cn = transpose(jn(1:mm, 1:nn))
-  end if
+  stat = int(fricreg_f77_transposed_rows(je(1:mm, 1:nn), jn(1:mm, 1:nn), ct, cn))
+  if (stat /= FRICREG_OK) return
   stat = int(fricreg_structure_set_jenkins_normal(fricreg_handle_to_ptr(h), int(me, c_size_t), &
                                                   int(ndof, c_size_t), ct, cn, kt, mu, n0, kn))
 end subroutine frstlo
+
+!> FRSTIL(H, ME, NDOF, JE, JN, NS, K, MU, N0, KN, STAT): ME Iwan elements with a normal load and
+!> lift-off instead (C's fricreg_structure_set_iwan_normal): JE(ME, NDOF), JN(ME, NDOF) as
+!> FRSTLO's, element I's NS sliders the stiffnesses K(1:NS, I) > 0 bounded by MU(1:NS, I) N_I
+!> (MU >= 0; C's row-major K[ME NS], the same numbers), N_I = MAX(0, N0(I) + KN(I) G_I) with
+!> KN(ME) > 0. FRSTLO is the case NS = 1; NS below 0 is FRICREG_EINVAL here.
+subroutine frstil(h, me, ndof, je, jn, ns, k, mu, n0, kn, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: me, ndof, ns
+  double precision, intent(in) :: je(max(me, 0), *), jn(max(me, 0), *), k(*), mu(*), n0(*), &
+                                  kn(*)
+  integer, intent(out) :: stat
+  double precision, allocatable :: ct(:, :), cn(:, :)
+  integer :: mm, nn
+  mm = max(me, 0)
+  nn = max(ndof, 0)
+  if (ns < 0) then ! would wrap into size_t
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  stat = int(fricreg_f77_transposed_rows(je(1:mm, 1:nn), jn(1:mm, 1:nn), ct, cn))
+  if (stat /= FRICREG_OK) return
+  stat = int(fricreg_structure_set_iwan_normal(fricreg_handle_to_ptr(h), int(me, c_size_t), &
+                                               int(ndof, c_size_t), ct, cn, int(ns, c_size_t), &
+                                               k, mu, n0, kn))
+end subroutine frstil
 
 !> FRSTJ2(H, ME, NDOF, JE, KT, MUN, STAT): ME 2-D Jenkins elements instead (C's
 !> fricreg_structure_set_jenkins_2d): element I on rows 2I - 1 (x) and 2I (y) of JE(2 ME, NDOF)
@@ -357,22 +380,15 @@ subroutine frstl2(h, me, ndof, je, jn, kt, mu, n0, kn, stat)
                                   mu(*), n0(*), kn(*)
   integer, intent(out) :: stat
   double precision, allocatable :: ct(:, :), cn(:, :)
-  integer :: mm, nn, alloc
+  integer :: mm, nn
   if (me > 2**25) then ! 2 ME would pass C's limit (and may wrap a default INTEGER)
     stat = int(FRICREG_EINVAL)
     return
   end if
   mm = max(me, 0)
   nn = max(ndof, 0)
-  allocate (ct(nn, 2 * mm), cn(nn, mm), stat=alloc)
-  if (alloc /= 0) then
-    stat = int(FRICREG_ENOMEM)
-    return
-  end if
-  if (mm > 0 .and. nn > 0) then
-    ct = transpose(je(1:2 * mm, 1:nn))
-    cn = transpose(jn(1:mm, 1:nn))
-  end if
+  stat = int(fricreg_f77_transposed_rows(je(1:2 * mm, 1:nn), jn(1:mm, 1:nn), ct, cn))
+  if (stat /= FRICREG_OK) return
   stat = int(fricreg_structure_set_jenkins_2d_normal(fricreg_handle_to_ptr(h), &
                                                      int(me, c_size_t), int(ndof, c_size_t), &
                                                      ct, cn, kt, mu, n0, kn))

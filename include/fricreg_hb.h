@@ -336,6 +336,47 @@ FRICREG_API int fricreg_hb_set_jenkins_normal(fricreg_hb *hb, size_t m, size_t n
                                               const double kt[], const double mu[],
                                               const double n0[], const double kn[]);
 
+/** Set Iwan elements under a normal load with lift-off instead: element i is ns sliders in
+ *  parallel on the tangential row Jt_i (as fricreg_hb_set_iwan), slider s of stiffness
+ *  k[ns i + s] bounded by mu[ns i + s] N_i, with the normal force N_i = max(0, N0_i + kn_i g_i)
+ *  of fricreg_hb_set_normal_elements on the normal row Jn_i (the law of
+ *  fricreg_structure_set_iwan_normal and of fricreg_iwan_trial_normal with phi_s = mu_s N0).
+ *  In the residual each slider's force coefficients and exact Jacobian come from
+ *  fricreg_aft_jenkins_normal_exact (the stabilized hysteresis of fricreg_aft.h, slider by
+ *  slider, each forgetting its place while the element is open): the element's tangential
+ *  force and the tangential rows of its Jacobian are the sums over its sliders, its normal
+ *  force and normal rows the normal law's. The layout of the unknowns (2 m rows of J,
+ *  nq = 2 m (2H + 1)) and everything else are fricreg_hb_set_normal_elements's, which is this
+ *  call with ns = 1 (k = kt, bit for bit). Stability, continuation, the nonlinear modes (the
+ *  stuck stiffness the sum of the sliders' k of mu > 0 while N0 > 0) and the truncation
+ *  estimate take them as they take those. Every element has the same ns (give a slider
+ *  mu = 0 to drop it).
+ *
+ *  m            must equal the driver's element count.
+ *  ndof         must equal the driver's degrees of freedom.
+ *  Jt[m ndof]   row-major, tangential rows: finite, each row non-zero.
+ *  Jn[m ndof]   row-major, normal rows, likewise.
+ *  ns           sliders per element, 1 <= ns <= FRICREG_HB_MAX_SLIDERS.
+ *  k[m ns]      row-major (element i's sliders at k[ns i .. ns i + ns − 1]): stiffnesses > 0
+ *               (finite), force per unit displacement.
+ *  mu[m ns]     same layout: friction coefficients >= 0 (finite), nondimensional.
+ *  n0[m]        preloads N0 (finite), force units: N at g = 0 (negative: a gap −N0/kn).
+ *  kn[m]        normal stiffnesses >= 0 (finite), force per unit displacement.
+ *
+ *  Allocates 4 m + 2 m ns + 2 (2H + 1) + 4 (2H + 1)² doubles (ns > 1: the sliders and one
+ *  slider's AFT), and the first time the buffers for 2 m rows as fricreg_hb_set_normal_elements
+ *  (the previous set's freed on success). Cost of a residual with its Jacobian: ns times a
+ *  lift-off Jenkins element's.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb, Jt, Jn, k, mu, n0 or kn is NULL; FRICREG_ESIZE if m
+ *  or ndof is not the driver's; FRICREG_ENONFINITE if an entry is NaN or infinite;
+ *  FRICREG_EINVAL if a row of Jt or Jn is zero, ns is out of its range, some k <= 0, mu < 0 or
+ *  kn < 0; FRICREG_ENOMEM. All inputs are checked before anything changes, and nothing changes
+ *  on failure. Since 1.7 (FRICREG_1.7). */
+FRICREG_API int fricreg_hb_set_iwan_normal(fricreg_hb *hb, size_t m, size_t ndof, const double Jt[],
+                                           const double Jn[], size_t ns, const double k[],
+                                           const double mu[], const double n0[], const double kn[]);
+
 /** Set the harmonic excitation of the fundamental, p(t) = pc cos Ωt + ps sin Ωt.
  *
  *  ndof      must equal the driver's degrees of freedom.

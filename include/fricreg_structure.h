@@ -830,6 +830,55 @@ FRICREG_API int fricreg_structure_set_jenkins_normal(fricreg_structure *s, size_
                                                      const double kt[], const double mu[],
                                                      const double n0[], const double kn[]);
 
+/** Attach me Iwan elements with a normal load and lift-off: element i is ns sliders in
+ *  parallel on row i of Je[me*ndof] (as fricreg_structure_set_iwan), each bounded by its own
+ *  friction coefficient times the element's normal force, which the normal row i of
+ *  Jn[me*ndof] gives as fricreg_structure_set_jenkins_normal's does:
+ *
+ *      N_i = max(0, n0_i + kn_i g_i),   g_i = (J_n u)_i (positive closing),
+ *      fe_i = sum_s k_is (q_i - w_is),   |k_is (q_i - w_is)| <= mu_is N_i,
+ *
+ *  each slider by the exact return mapping from its committed position (the slider of
+ *  fricreg_iwan_trial_normal with phi_s = mu_s n0 at the reference N0 = n0); while the
+ *  element is separated (n0 + kn g < 0) fe_i = 0, N_i = 0 and every slider follows q (the
+ *  tangential memory reset). Both forces act on the structure, -J_e^T fe - J_n^T N. The step
+ *  keeps 2 me unknowns (fe, N) whatever ns is: the exact tangent of an element is, on (q, g),
+ *
+ *      [sum of the sticking sliders' k,   kn sum of the slipping sliders' mu sign(f_s)]
+ *      [0,                                kn (closed)                                ]
+ *
+ *  and everything else (the schemes, the contacts beside the elements, the central
+ *  difference's step guard on K + J_e^T diag(sum_s k) J_e + J_n^T diag(kn) J_n, run_ode
+ *  refusing elements, the energy: the sliders' springs and N^2/(2 kn) in
+ *  FRICREG_SVALUE_STRAIN, their dissipation in FRICREG_SVALUE_JENKINS, exact over steps in
+ *  which every element stays closed or open) is fricreg_structure_set_jenkins_normal's, which
+ *  is this call with ns = 1 (bit for bit). The state: fricreg_structure_get_iwan_state and
+ *  fricreg_structure_get_normal_forces. Copied; every slider at w = 0; replaces the elements
+ *  in force. me = 0 removes them (the arrays may then be NULL). Since 1.7 (FRICREG_1.7).
+ *
+ *  me          number of elements; me ns <= 2^26.
+ *  ndof        must be the structure's.
+ *  Je[me*ndof] row-major, one tangential row per element.
+ *  Jn[me*ndof] row-major, one normal row per element.
+ *  ns          sliders per element, >= 1.
+ *  k[me*ns]    slider stiffnesses > 0 (finite), force per unit of q; element i's slider s at
+ *              k[i ns + s] (Fortran: a (ns, me) array).
+ *  mu[me*ns]   slider friction coefficients >= 0 (finite, nondimensional), laid out as k; the
+ *              element's slip force at N is N sum_s mu_s (an Iwan element's slip forces phi_s
+ *              at the normal force N0 are mu_s = phi_s / N0).
+ *  n0[me]      normal force at g = 0 (finite, force units; < 0: open at g = 0, a gap -n0/kn).
+ *  kn[me]      normal stiffness > 0 (finite), force per unit of g.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL (s, or Je, Jn, k, mu, n0 or kn with me > 0);
+ *  FRICREG_ESIZE if ndof is not the structure's; FRICREG_EINVAL if ns = 0 with me > 0,
+ *  me ns > 2^26, a row of J_e or J_n is zero, a k <= 0, mu < 0 or kn <= 0, or the call comes
+ *  from the observer; FRICREG_ENONFINITE (an entry of Je, Jn, k, mu, n0 or kn);
+ *  FRICREG_ENOMEM. On failure the elements in force are unchanged. */
+FRICREG_API int fricreg_structure_set_iwan_normal(fricreg_structure *s, size_t me, size_t ndof,
+                                                  const double Je[], const double Jn[], size_t ns,
+                                                  const double k[], const double mu[],
+                                                  const double n0[], const double kn[]);
+
 /** Attach me 3-D contact elements: 2-D Jenkins elements with a normal load and lift-off (the
  *  element of fricreg_jenkins_create(2, ...) with fricreg_jenkins_set_normal's law; tmdsimpy's
  *  3-D contact element). Element i sees the tangential relative displacement

@@ -433,6 +433,16 @@ echo "200.0 1e27 1000" >"$d/Q_short.txt"
 expect_usage_error "^fricreg-sim: --normal-params $d/Q_short.txt: line 1: expected 4" $lo --normal-params $d/Q_short.txt
 expect_usage_error "^fricreg-sim: --normal-params: missing" $lo
 expect_usage_error "^fricreg-sim: --normal $d/J2e.mtx: the matrix is 2 x 1" ${lo%% --jenkins *} --jenkins $d/Jt2.mtx --normal $d/J2e.mtx --normal-params $d/Q_stuck.txt --integrator newmark --dt 0.01 --t-end 1
+# Iwan elements with lift-off (--iwan-normal-params, a line n0 kn k_1 mu_1 ... per element):
+# two stuck sliders of 150 and 50 N/m are the element above, the same closed forms.
+echo "1000 40 150 1e27 50 1e27" >"$d/QI_stuck.txt"
+expect_output '"x": \[-0\.00113279590437[89][0-9]*, -1\.391901634881(0[5-9]|1[0-7])[0-9]*\].*"element_kind": "iwan-lift-off", "sliders_per_element": 2, "normal_forces": \[944\.3239346047(5[4-9]|6[0-5])[0-9]*\]' $lo --iwan-normal-params $d/QI_stuck.txt
+echo "1000 40 150" >"$d/QI_odd.txt"
+expect_usage_error "^fricreg-sim: --iwan-normal-params $d/QI_odd.txt: line 1: 3 numbers: give n0 kn, then pairs k_s mu_s" $lo --iwan-normal-params $d/QI_odd.txt
+echo "1000 0 150 1e27 50 1e27" >"$d/QI_kn0.txt"
+expect_usage_error "^fricreg-sim: --iwan-normal-params $d/QI_kn0.txt: .*kn > 0" $lo --iwan-normal-params $d/QI_kn0.txt
+expect_usage_error "^fricreg-sim: --normal: missing (--normal goes with --normal-params or --iwan-normal-params)" ${lo%% --jenkins *} --jenkins $d/Jt2.mtx --iwan-normal-params $d/QI_stuck.txt --integrator newmark --dt 0.01 --t-end 1
+expect_usage_error "^fricreg-sim: --iwan-normal-params: give only one of" $lo --normal-params $d/Q_stuck.txt --iwan-normal-params $d/QI_stuck.txt
 # 3-D contact elements (--jenkins-2d with --normal and --normal-params: tangential x, y and
 # normal n): the lift-off case above (both its dofs shaken by the ground) with a dof at rest
 # (m 1.0, k 100, outside the ground's influence) under the element's y row: dof 1 and dof 3 are the closed forms above,
@@ -760,6 +770,10 @@ for w0 in 1.24 1.5; do
     fi
 done
 expect_output '"element_kind": "lift-off"' $hbs --omega-start 0.5 --omega-end 3 --normal $d/J.mtx --normal-params $d/Q_kn0.txt
+# Iwan elements with lift-off: two halves of that element (kt/2, mu/2 each) are it
+echo "3 0 0.75 0.05 0.75 0.05" >"$d/QI_kn0.txt"
+expect_same 1e-12 $hbs --omega-start 0.5 --omega-end 3 --normal $d/J.mtx --normal-params $d/Q_kn0.txt --output frf -- $hbs --omega-start 0.5 --omega-end 3 --normal $d/J.mtx --iwan-normal-params $d/QI_kn0.txt --output frf
+expect_output '"element_kind": "iwan-lift-off", "sliders_per_element": 2' $hbs --omega-start 0.5 --omega-end 3 --normal $d/J.mtx --iwan-normal-params $d/QI_kn0.txt
 echo "1.5 0.1 3 -1" >"$d/Q_bad.txt"
 expect_usage_error "^fricreg-sim: --normal-params $d/Q_bad.txt: .*kn" $hbs --omega-start 1 --omega-end 2 --normal $d/J.mtx --normal-params $d/Q_bad.txt
 expect_usage_error "^fricreg-sim: --iwan-params $d/P1.txt: line 1: 1 numbers: give pairs" $hbs --omega-start 1 --omega-end 2 --iwan-params $d/P1.txt

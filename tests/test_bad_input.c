@@ -723,6 +723,13 @@ static int w_st_set_jenkins_normal(void)
                                                 A(2, ST_JN, 2), A(3, ST_KT, 1), A(4, ST_MUN, 1),
                                                 A(5, ST_N0, 1), A(6, ST_KN, 1));
 }
+static const double ST_IW_MU[3] = {0.1, 0.2, 0.05};
+static int w_st_set_iwan_normal(void)
+{
+    return fricreg_structure_set_iwan_normal(ST(), C(0, 1), Z(0, 2), A(1, ST_JE, 2), A(2, ST_JN, 2),
+                                             C(1, 3), A(3, ST_IW_K, 3), A(4, ST_IW_MU, 3),
+                                             A(5, ST_N0, 1), A(6, ST_KN, 1));
+}
 static int w_st_set_jenkins_2d_normal(void)
 {
     return fricreg_structure_set_jenkins_2d_normal(ST(), C(0, 1), Z(0, 2), A(1, ST_JE2, 4),
@@ -1030,6 +1037,15 @@ static int w_hb_set_normal_elements(void)
     fricreg_hb *hb = is(K_PTR, 9) ? NULL : FX_->hb;
     return fricreg_hb_set_normal_elements(hb, Z(0, 1), Z(1, 2), A(1, Jt, 2), A(2, Jn, 2),
                                           A(3, kt, 1), A(4, mu, 1), A(5, n0, 1), A(6, kn, 1));
+}
+
+static int w_hb_set_iwan_normal(void)
+{
+    const double Jt[2] = {1.0, 0.5}, Jn[2] = {0.25, -1.0}, k[2] = {1.2, 0.5}, mu[2] = {0.3, 0.2},
+                 n0[1] = {0.6}, kn[1] = {3.0};
+    fricreg_hb *hb = is(K_PTR, 9) ? NULL : FX_->hb;
+    return fricreg_hb_set_iwan_normal(hb, Z(0, 1), Z(1, 2), A(1, Jt, 2), A(2, Jn, 2), C(0, 2),
+                                      A(3, k, 2), A(4, mu, 2), A(5, n0, 1), A(6, kn, 1));
 }
 
 /* ---- The table ---------------------------------------------------------------------------- */
@@ -1562,6 +1578,18 @@ static const struct row rows[] = {
      {HANDLE, SIZE(0, "ssss"), SIZE(1, "ssss"), PTR(1, "0"), PTR(2, "0"), PTR(3, "0"),
       ARR(3, "nniioo"), PTR(4, "0"), ARR(4, "nniooo"), PTR(5, "0"), ARR(5, "nnoooo"), PTR(6, "0"),
       ARR(6, "nniooo")}},
+    {"fricreg_hb_set_iwan_normal",
+     w_hb_set_iwan_normal,
+     "0snim",
+     HB_REC,
+     {HANDLE, SIZE(0, "ssss"), SIZE(1, "ssss"), PTR(1, "0"), PTR(2, "0"), COUNT(0, "ioii"),
+      PTR(3, "0"), PTR(4, "0"), PTR(5, "0"), PTR(6, "0")}},
+    {"fricreg_hb_set_iwan_normal (array entries)",
+     w_hb_set_iwan_normal,
+     "0snim",
+     HB_REC,
+     {ARR(1, "nnoooo"), ARR(2, "nnoooo"), ARR(3, "nniioo"), ARR(4, "nniooo"), ARR(5, "nnoooo"),
+      ARR(6, "nniooo")}},
     /* fricreg_exact.h */
     {"fricreg_exact_solve",
      w_exact_solve,
@@ -1865,6 +1893,18 @@ static const struct row rows[] = {
       PTR(5, "0"), PTR(6, "0")}},
     {"fricreg_structure_set_jenkins_normal (array entries)",
      w_st_set_jenkins_normal,
+     "0snim",
+     ST_REC,
+     {ARR(1, "nnoioo"), ARR(2, "nnoooo"), ARR(3, "nniioo"), ARR(4, "nniooo"), ARR(5, "nnoooo"),
+      ARR(6, "nniioo")}},
+    {"fricreg_structure_set_iwan_normal",
+     w_st_set_iwan_normal,
+     "0snim",
+     ST_REC,
+     {HANDLE, COUNT(0, "ooii"), SIZE(0, "ssss"), PTR(1, "0"), PTR(2, "0"), COUNT(1, "ioii"),
+      PTR(3, "0"), PTR(4, "0"), PTR(5, "0"), PTR(6, "0")}},
+    {"fricreg_structure_set_iwan_normal (array entries)",
+     w_st_set_iwan_normal,
      "0snim",
      ST_REC,
      {ARR(1, "nnoioo"), ARR(2, "nnoooo"), ARR(3, "nniioo"), ARR(4, "nniooo"), ARR(5, "nnoooo"),

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* test_hb_liftoff.c — Check suite for Jenkins elements under a normal load with lift-off in the
- * harmonic-balance driver (fricreg_hb_set_normal_elements, fricreg_hb.h).
+/* test_hb_liftoff.c — Check suite for Jenkins and Iwan elements under a normal load with
+ * lift-off in the harmonic-balance driver (fricreg_hb_set_normal_elements,
+ * fricreg_hb_set_iwan_normal, fricreg_hb.h).
  *
  * Where the numbers come from:
  *   - kn = 0: N = N0 whatever g, so the element is fricreg_hb_set_elements's with mun = mu N0
@@ -18,7 +19,11 @@
  *     two frequencies where the element opens and closes in every period (asserted on the time
  *     series: the separation wipes out the slider's memory, so the periodic state is unique).
  *     HB at H = 21 within 1e-3 relative in each dof's RMS.
- *   - the sparse model (KLU) against the dense one (GSL's LU), to 1e-12. */
+ *   - the sparse model (KLU) against the dense one (GSL's LU), to 1e-12.
+ *   - Iwan elements: one slider is the Jenkins element bit for bit, four equal sliders it to
+ *     1e-12; three sliders against fricreg_structure_set_iwan_normal's Newmark (1024 steps a
+ *     period, 100 periods from rest, steady to 1e-7 asserted, lift-off and each slider's slip
+ *     in the last period asserted) within 1e-3 relative in each dof's RMS at H = 21. */
 #include <check.h>
 #include <math.h>
 #include <stdio.h>
@@ -28,6 +33,7 @@
 #include <gsl/gsl_linalg.h>
 
 #include "fricreg_hb.h"
+#include "fricreg_structure.h"
 #include "jenkins_newmark.h"
 
 #define SENTINEL (-777.125)
@@ -218,6 +224,30 @@ START_TEST(closed_stuck_is_linear)
 }
 END_TEST
 
+/* HB's RMS of each dof (from its coefficients x[n (2H + 1)]) within 1e-3 of the time domain's
+ * steady ref[n], which must agree with the period before, prev[n], to 1e-7. */
+static void agrees_with_time_domain(const char *label, const struct jenkins_model *s, int H,
+                                    double omega, const double *x, const double *ref,
+                                    const double *prev)
+{
+    size_t nc = 2 * (size_t)H + 1;
+    for (size_t k = 0; k < s->n; k++) {
+        double r = x[k * nc] * x[k * nc];
+        for (size_t c = 1; c < nc; c++)
+            r += 0.5 * x[k * nc + c] * x[k * nc + c];
+        double rms = sqrt(r);
+        if (getenv("HB_PRINT"))
+            fprintf(stderr, "%sOmega %g dof %zu: HB %.9g Newmark %.9g rel %.2e steady %.2e\n",
+                    label, omega, k, rms, ref[k], fabs(rms / ref[k] - 1.0),
+                    fabs(prev[k] / ref[k] - 1.0));
+        ck_assert_msg(fabs(ref[k] - prev[k]) <= 1e-7 * ref[k],
+                      "Omega = %g dof %zu: the reference is not steady (%.9g, %.9g)", omega, k,
+                      prev[k], ref[k]);
+        ck_assert_msg(fabs(rms - ref[k]) <= 1e-3 * ref[k],
+                      "Omega = %g dof %zu: HB %.9g, Newmark %.9g", omega, k, rms, ref[k]);
+    }
+}
+
 START_TEST(partial_liftoff_against_time_domain)
 {
     struct jenkins_model s = contact();
@@ -226,27 +256,12 @@ START_TEST(partial_liftoff_against_time_domain)
     fricreg_hb *hb = make(&s, H, 1);
     const double omegas[2] = {1.1, 1.45};
     for (int w = 0; w < 2; w++) {
-        double rms[MAXN], prev[MAXN], ref[MAXN], q[2 * 43], x[MAXN * 43];
+        double prev[MAXN], ref[MAXN], q[2 * 43], x[MAXN * 43];
         int flips = jenkins_newmark_rms(&s, omegas[w], 1024, 100, ref, prev, NULL);
         ck_assert_msg(flips, "Omega = %g: the contact does not open and close in the reference",
                       omegas[w]);
         hb_solve(hb, &s, H, 2, omegas[w], q, x);
-        for (size_t k = 0; k < s.n; k++) {
-            double r = x[k * nc] * x[k * nc];
-            for (size_t c = 1; c < nc; c++)
-                r += 0.5 * x[k * nc + c] * x[k * nc + c];
-            rms[k] = sqrt(r);
-            if (getenv("HB_PRINT"))
-                fprintf(stderr, "Omega %g dof %zu: HB %.9g Newmark %.9g rel %.2e steady %.2e\n",
-                        omegas[w], k, rms[k], ref[k], fabs(rms[k] / ref[k] - 1.0),
-                        fabs(prev[k] / ref[k] - 1.0));
-            ck_assert_msg(fabs(ref[k] - prev[k]) <= 1e-7 * ref[k],
-                          "Omega = %g dof %zu: the reference is not steady (%.9g, %.9g)", omegas[w],
-                          k, prev[k], ref[k]);
-            ck_assert_msg(fabs(rms[k] - ref[k]) <= 1e-3 * ref[k],
-                          "Omega = %g dof %zu: HB %.9g, Newmark %.9g", omegas[w], k, rms[k],
-                          ref[k]);
-        }
+        agrees_with_time_domain("", &s, H, omegas[w], x, ref, prev);
     }
     fricreg_hb_free(hb);
 }
@@ -273,6 +288,152 @@ START_TEST(sparse_model_equals_dense)
         ck_assert_double_eq_tol(xs[j], xd[j], 1e-12 * amax);
     fricreg_hb_free(hd);
     fricreg_hb_free(hs);
+}
+END_TEST
+
+/* Iwan elements with lift-off (fricreg_hb_set_iwan_normal) on contact()'s rows: three sliders
+ * whose stiffnesses sum to its kt = 1.7 and friction coefficients to its mu = 0.5, slipping at
+ * mu_s N0/k_s = 0.067, 0.18 and 0.5 under the preload. */
+static const double IWAN_K[3] = {0.9, 0.5, 0.3}, IWAN_MU[3] = {0.1, 0.15, 0.25};
+
+static fricreg_hb *make_iwan(const struct jenkins_model *s, int H, size_t ns, const double *k,
+                             const double *mu)
+{
+    fricreg_hb *hb = make(s, H, 0);
+    ck_assert_int_eq(fricreg_hb_set_iwan_normal(hb, s->m, s->n, s->J, s->Jn, ns, k, mu, s->n0,
+                                                s->kn),
+                     FRICREG_OK);
+    return hb;
+}
+
+/* One slider is the Jenkins element with lift-off, bit for bit; four equal sliders (kt/4,
+ * mu/4 each: each carries a quarter of the force and slips with it) are it to rounding. */
+START_TEST(iwan_normal_is_jenkins_normal)
+{
+    struct jenkins_model s = contact();
+    const int H = 9;
+    size_t nc = 2 * (size_t)H + 1;
+    double k4[4], mu4[4];
+    for (int j = 0; j < 4; j++) {
+        k4[j] = s.kt[0] / 4.0;
+        mu4[j] = s.mu[0] / 4.0;
+    }
+    fricreg_hb *hj = make(&s, H, 1), *h1 = make_iwan(&s, H, 1, s.kt, s.mu),
+               *h4 = make_iwan(&s, H, 4, k4, mu4);
+    const double omegas[2] = {1.1, 1.45};
+    for (int w = 0; w < 2; w++) {
+        double qj[2 * 19], xj[MAXN * 19], q1[2 * 19], x1[MAXN * 19], q4[2 * 19], x4[MAXN * 19];
+        double amax = 0.0;
+        hb_solve(hj, &s, H, 2, omegas[w], qj, xj);
+        hb_solve(h1, &s, H, 2, omegas[w], q1, x1);
+        hb_solve(h4, &s, H, 2, omegas[w], q4, x4);
+        ck_assert_mem_eq(q1, qj, 2 * nc * sizeof *qj);
+        ck_assert_mem_eq(x1, xj, s.n * nc * sizeof *xj);
+        for (size_t j = 0; j < 2 * nc; j++)
+            amax = fmax(amax, fabs(qj[j]));
+        for (size_t j = 0; j < 2 * nc; j++)
+            ck_assert_msg(fabs(q4[j] - qj[j]) <= 1e-12 * amax, "Omega %g: q[%zu] %.17g, %.17g",
+                          omegas[w], j, q4[j], qj[j]);
+    }
+    /* the truncation estimate's companion at 2H + 1 takes the sliders and their scratch */
+    double ej[MAXN], e4[MAXN];
+    ck_assert_int_eq(fricreg_hb_truncation_error(hj, FRICREG_HB_SOLUTION, s.n, ej, NULL),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_truncation_error(h4, FRICREG_HB_SOLUTION, s.n, e4, NULL),
+                     FRICREG_OK);
+    for (size_t k = 0; k < s.n; k++)
+        ck_assert_double_eq_tol(e4[k], ej[k], 1e-9 * fmax(ej[0], ej[1]));
+    fricreg_hb_free(hj);
+    fricreg_hb_free(h1);
+    fricreg_hb_free(h4);
+}
+END_TEST
+
+/* The steady state in time: fricreg_structure_set_iwan_normal's Newmark (average acceleration,
+ * 1024 steps a period, from rest for 100 periods; the element the standalone fricreg_iwan's
+ * to 1e-10, test_structure_liftoff) under the load pc cos(Omega t): each dof's RMS over the
+ * last period, the one before into prev, and whether the element opened and closed and every
+ * slider slipped in the last period. */
+static int iwan_newmark_rms(const struct jenkins_model *s, double omega, double *rms, double *prev)
+{
+    const int N = 1024, periods = 100, total = N * periods;
+    const double dt = 6.283185307179586 / omega / N, zero = 0.0, J[2] = {1.0, 0.0};
+    fricreg_structure *st = NULL;
+    ck_assert_int_eq(fricreg_structure_create(s->n, 1, &st), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_mass(st, s->n, s->M), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_stiffness(st, s->n, s->K), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_damping(st, s->n, s->C), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_contacts(st, 1, s->n, J), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_bounds(st, 1, &zero), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_iwan_normal(st, 1, s->n, s->J, s->Jn, 3, IWAN_K, IWAN_MU,
+                                                       s->n0, s->kn),
+                     FRICREG_OK);
+    double *g = malloc(((size_t)total + 1) * sizeof *g);
+    ck_assert_ptr_nonnull(g);
+    for (int k = 0; k <= total; k++)
+        g[k] = cos(omega * k * dt);
+    ck_assert_int_eq(fricreg_structure_set_load(st, s->n, s->pc, 0.0, dt, (size_t)total + 1, g),
+                     FRICREG_OK);
+    free(g);
+    ck_assert_int_eq(fricreg_structure_set_newton(st, 1e-13, 50), FRICREG_OK);
+    double sum[MAXN] = {0.0}, wmin[3], wmax[3];
+    int open = 0, closed = 0;
+    for (int k = 1; k <= total; k++) {
+        double t0, x[MAXN], w[3], N0;
+        ck_assert_int_eq(fricreg_structure_get_value(st, FRICREG_SVALUE_TIME, &t0), FRICREG_OK);
+        ck_assert_int_eq(fricreg_structure_step(st, k * dt - t0), FRICREG_OK);
+        if (k <= total - 2 * N)
+            continue;
+        fricreg_structure_get_state(st, s->n, x, NULL, NULL);
+        fricreg_structure_get_iwan_state(st, 1, 3, NULL, w, NULL);
+        fricreg_structure_get_normal_forces(st, 1, &N0);
+        for (size_t i = 0; i < s->n; i++)
+            sum[i] += x[i] * x[i];
+        if (k == total - N) { /* the period before the last */
+            for (size_t i = 0; i < s->n; i++) {
+                prev[i] = sqrt(sum[i] / N);
+                sum[i] = 0.0;
+            }
+            memcpy(wmin, w, sizeof wmin);
+            memcpy(wmax, w, sizeof wmax);
+        }
+        for (int j = 0; j < 3 && k > total - N; j++) {
+            wmin[j] = fmin(wmin[j], w[j]);
+            wmax[j] = fmax(wmax[j], w[j]);
+        }
+        open += k > total - N && N0 == 0.0;
+        closed += k > total - N && N0 > 0.0;
+    }
+    for (size_t i = 0; i < s->n; i++)
+        rms[i] = sqrt(sum[i] / N);
+    fricreg_structure_free(st);
+    int slipped = 1;
+    for (int j = 0; j < 3; j++)
+        slipped &= wmax[j] - wmin[j] > 1e-3;
+    return open > 0 && closed > 0 && slipped;
+}
+
+/* HB at H = 21 against the time domain, where the element opens and closes and each slider
+ * slips in every period: within 1e-3 relative in each dof's RMS, as the Jenkins element's. */
+START_TEST(iwan_partial_liftoff_against_time_domain)
+{
+    struct jenkins_model s = contact();
+    s.ps[1] = 0.0; /* the structure's load is one vector times a time series */
+    const int H = 21;
+    size_t nc = 2 * (size_t)H + 1;
+    fricreg_hb *hb = make_iwan(&s, H, 3, IWAN_K, IWAN_MU);
+    const double omegas[2] = {1.2, 1.45}; /* at 1.1 the time series is not periodic */
+    for (int w = 0; w < 2; w++) {
+        double prev[MAXN], ref[MAXN], q[2 * 43], x[MAXN * 43];
+        int flips = iwan_newmark_rms(&s, omegas[w], ref, prev);
+        ck_assert_msg(flips,
+                      "Omega = %g: the element does not open, close and slip on every "
+                      "slider in the reference",
+                      omegas[w]);
+        hb_solve(hb, &s, H, 2, omegas[w], q, x);
+        agrees_with_time_domain("Iwan, ", &s, H, omegas[w], x, ref, prev);
+    }
+    fricreg_hb_free(hb);
 }
 END_TEST
 
@@ -316,6 +477,20 @@ START_TEST(bad_input)
     ck_assert_int_eq(fricreg_hb_solve(hb, 1.2, 5, NULL, q), FRICREG_ESIZE);
     ck_assert_double_eq(q[0], SENTINEL);
     ck_assert_int_eq(fricreg_hb_solve(hb, 1.2, 10, NULL, q), FRICREG_OK);
+    /* Iwan elements: no slider, a negative mu, a NULL k; the lift-off elements kept */
+    const double k2[2] = {1.0, 0.5}, mu2[2] = {0.2, -0.1};
+    ck_assert_int_eq(fricreg_hb_set_iwan_normal(hb, 1, 2, J, Jn, 0, k2, mu2, n0, kn),
+                     FRICREG_EINVAL);
+    ck_assert_ptr_nonnull(strstr(fricreg_hb_errmsg(hb), "ns = 0"));
+    ck_assert_int_eq(fricreg_hb_set_iwan_normal(hb, 1, 2, J, Jn, 2, k2, mu2, n0, kn),
+                     FRICREG_EINVAL);
+    ck_assert_ptr_nonnull(strstr(fricreg_hb_errmsg(hb), "mu[1]"));
+    ck_assert_int_eq(fricreg_hb_set_iwan_normal(hb, 1, 2, J, Jn, 2, NULL, mu2, n0, kn),
+                     FRICREG_ENULL);
+    ck_assert_ptr_nonnull(strstr(fricreg_hb_errmsg(hb), "k is NULL"));
+    ck_assert_int_eq(fricreg_hb_set_iwan_normal(hb, 1, 2, J, Jn, 2, k2, k2, n0, neg),
+                     FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_hb_solve(hb, 1.2, 10, NULL, q), FRICREG_OK);
     fricreg_hb_free(hb);
 }
 END_TEST
@@ -329,6 +504,8 @@ int main(void)
     tcase_add_test(tc, closed_stuck_is_linear);
     tcase_add_test(tc, partial_liftoff_against_time_domain);
     tcase_add_test(tc, sparse_model_equals_dense);
+    tcase_add_test(tc, iwan_normal_is_jenkins_normal);
+    tcase_add_test(tc, iwan_partial_liftoff_against_time_domain);
     tcase_add_test(tc, bad_input);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);

@@ -10,7 +10,8 @@
 ! Omega = 1.49984999250, RMS 3.92856743987 (the located peak, hb%peak). A two-mass chain with a slipping element, J in Fortran's order:
 ! the type's solution equals the C functions' (called through bind(C), J transposed by hand)
 ! bit for bit, and so does the truncation error's estimate. set_jenkins and set_jenkins_normal,
-! the structure's names, give set_elements' and set_normal_elements' solutions bit for bit;
+! the structure's names, give set_elements' and set_normal_elements' solutions bit for bit
+! (set_iwan_normal with one slider too, with two halves of the slider to 1e-12);
 ! set_matrix dense gives set_mass's and set_stiffness's bit for bit, compressed (a sparse model)
 ! to Newton's tolerance; which = FRICREG_CONTACTS, 0 and a dense format with values(:) refused.
 program test_hb
@@ -176,6 +177,24 @@ program test_hb
                     'set_jenkins_normal')
   call check_status(chain%solve(1.1_c_double, qn2), FRICREG_OK, 'set_jenkins_normal solve')
   call check(all(qn2 == qn), 'set_jenkins_normal is set_normal_elements bit for bit')
+  ! Iwan elements with lift-off: one slider is the Jenkins element bit for bit, two halves of
+  ! it (kt/2, mu/2 each) it to rounding; k and mu are (ns, m)
+  call check_status(chain%set_iwan_normal(J2, Jn2, reshape([4.0_c_double], [1, 1]), &
+                                          reshape([0.2_c_double], [1, 1]), [0.5_c_double], &
+                                          [0.0_c_double]), FRICREG_OK, 'set_iwan_normal ns = 1')
+  call check_status(chain%solve(1.1_c_double, qn2), FRICREG_OK, 'set_iwan_normal solve')
+  call check(all(qn2 == qn), 'set_iwan_normal of one slider is set_normal_elements bit for bit')
+  call check_status(chain%set_iwan_normal(J2, Jn2, reshape([2.0_c_double, 2.0_c_double], [2, 1]), &
+                                          reshape([0.1_c_double, 0.1_c_double], [2, 1]), &
+                                          [0.5_c_double], [0.0_c_double]), FRICREG_OK, &
+                    'set_iwan_normal ns = 2')
+  call check_status(chain%solve(1.1_c_double, qn2), FRICREG_OK, 'set_iwan_normal ns = 2 solve')
+  call check(maxval(abs(qn2 - qn)) <= 1e-12_c_double * maxval(abs(qn)), &
+             'two half sliders are the Jenkins element')
+  call check_status(chain%set_iwan_normal(J2, Jn2, reshape([2.0_c_double, 2.0_c_double], [2, 1]), &
+                                          reshape([0.1_c_double], [1, 1]), [0.5_c_double], &
+                                          [0.0_c_double]), FRICREG_ESIZE, 'set_iwan_normal: mu (1, 1)')
+  call check(index(chain%errmsg(), 'mu') > 0, 'message: ' // chain%errmsg())
   call check_status(chain%set_jenkins_normal(J2, Jn2, [4.0_c_double], [-0.2_c_double], &
                                              [0.5_c_double], [0.0_c_double]), FRICREG_EINVAL, &
                     'set_jenkins_normal: mu < 0')

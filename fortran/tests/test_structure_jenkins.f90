@@ -10,6 +10,8 @@
 !   - an Iwan element of two sliders (set_iwan, get_iwan_state) is two Jenkins elements on
 !     copies of its row: the same run to rounding;
 !   - a stuck, closed lift-off element (set_jenkins_normal, get_normal_forces): N = n0 + kn u;
+!     an Iwan element of two stuck sliders with the same normal law (set_iwan_normal) runs the
+!     same to rounding;
 !   - a stuck 2-D element on two uncoupled masses is the spring kt on each axis: the closed form
 !     above on both;
 !   - a stuck, closed 3-D contact element (set_jenkins_2d_normal) on three uncoupled masses,
@@ -118,6 +120,22 @@ program test_structure_jenkins
                                           [200.0_c_double], [0.3_c_double], [0.5_c_double], &
                                           [100.0_c_double]), FRICREG_ESIZE, 'Jn of 2 rows')
   call check(index(st%errmsg(), 'Jn') > 0, 'the message names Jn')
+  ! the same stuck, closed run by an Iwan element of two sliders (150 + 50 N/m, set_iwan_normal)
+  call check_status(st%set_iwan_normal(Je, Je, reshape([150.0_c_double, 50.0_c_double], [2, 1]), &
+                                       reshape([1e20_c_double, 1e20_c_double], [2, 1]), &
+                                       [2.0_c_double], [100.0_c_double]), FRICREG_OK, &
+                    'set_iwan_normal')
+  call check_status(st%set_initial([0.0_c_double], [0.0_c_double]), FRICREG_OK, 'set_initial')
+  call check_status(st%run(0.01_c_double, 1.37_c_double), FRICREG_OK, 'run Iwan lift-off')
+  call check_status(st%get_state(u=u2), FRICREG_OK, 'get_state Iwan lift-off')
+  call check_close(u2(1), u(1), 1e-13_c_double, 'Iwan lift-off: the Jenkins run')
+  call check_status(st%get_normal_forces(D), FRICREG_OK, 'get_normal_forces Iwan')
+  call check_close(D(1), 2.0_c_double + 100.0_c_double * u2(1), 1e-13_c_double, &
+                   'Iwan: N = n0 + kn u')
+  call check_status(st%set_iwan_normal(Je, Je, reshape([150.0_c_double, 50.0_c_double], [2, 1]), &
+                                       reshape([0.3_c_double], [1, 1]), [2.0_c_double], &
+                                       [100.0_c_double]), FRICREG_ESIZE, 'mu (1, 1)')
+  call check(index(st%errmsg(), 'mu, 1') > 0, 'the message names mu')
 
   ! ---- 2-D elements: two uncoupled masses as above, one stuck 2-D element on both ----------
   ! (set_jenkins_2d, get_jenkins_2d_state): each axis is the spring kt, the same closed form

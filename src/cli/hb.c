@@ -364,7 +364,7 @@ static void write_summary(fricreg_hb *hb, FILE *out, const struct hb_options *o,
         fprintf(out, "\"omega_start\": %.17g, \"omega_end\": %.17g, \"points\": %zu",
                 o->omega_start, o->omega_end, K);
     fprintf(out, ", \"element_kind\": \"%s\"", cli_element_kind_name(&md->el));
-    if (md->el.kind == CLI_ELEMENTS_IWAN)
+    if (md->el.kind == CLI_ELEMENTS_IWAN || md->el.kind == CLI_ELEMENTS_IWAN_NORMAL)
         fprintf(out, ", \"sliders_per_element\": %zu", md->el.ns);
     fprintf(out, ", \"%s_reached\": %.17g, \"peaks\": \"%s\", \"dofs\": [",
             level ? "level" : "omega",

@@ -79,6 +79,9 @@ static int set_elements(fricreg_hb *hb, size_t n, const struct cli_elements *el)
     if (el->kind == CLI_ELEMENTS_NORMAL)
         return fricreg_hb_set_normal_elements(hb, el->m, n, el->J, el->Jn, el->k, el->mu, el->n0,
                                               el->kn);
+    if (el->kind == CLI_ELEMENTS_IWAN_NORMAL)
+        return fricreg_hb_set_iwan_normal(hb, el->m, n, el->J, el->Jn, el->ns, el->k, el->mu,
+                                          el->n0, el->kn);
     if (el->kind == CLI_ELEMENTS_IWAN)
         return fricreg_hb_set_iwan(hb, el->m, n, el->J, el->ns, el->k, el->phi);
     return fricreg_hb_set_elements(hb, el->m, n, el->J, el->k, el->phi);
@@ -107,5 +110,6 @@ int cli_hb_set_model(const struct cli_hb_model_options *o, const struct cli_hb_m
 
 size_t cli_hb_rows(const struct cli_hb_model *md)
 {
-    return md->el.kind == CLI_ELEMENTS_NORMAL ? 2 * md->m : md->m;
+    int normal = md->el.kind == CLI_ELEMENTS_NORMAL || md->el.kind == CLI_ELEMENTS_IWAN_NORMAL;
+    return normal ? 2 * md->m : md->m;
 }

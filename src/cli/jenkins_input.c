@@ -24,18 +24,19 @@ void cli_element_defaults(struct cli_element_files *e)
 
 int cli_check_elements(const struct cli_element_files *e, int required)
 {
-    const char *params[] = {e->jenkins, e->iwan, e->segalman, e->normal_params};
+    const char *params[] = {e->jenkins, e->iwan, e->segalman, e->normal_params, e->iwan_normal};
     static const char *const names[] = {"--jenkins-params", "--iwan-params", "--iwan-segalman",
-                                        "--normal-params"};
+                                        "--normal-params", "--iwan-normal-params"};
     size_t given = 0, last = 0;
-    for (size_t k = 0; k < 4; k++)
+    for (size_t k = 0; k < 5; k++)
         if (params[k] != NULL) {
             given++;
             last = k;
         }
     if (given > 1)
         return cli_usage_error(names[last], "give only one of --jenkins-params, --iwan-params, "
-                                            "--iwan-segalman or --normal-params");
+                                            "--iwan-segalman, --normal-params or "
+                                            "--iwan-normal-params");
     if ((e->sliders_given || e->resolution_given) && e->segalman == NULL)
         return cli_usage_error(e->sliders_given ? "--iwan-sliders" : "--iwan-resolution",
                                "only with --iwan-segalman");
@@ -43,7 +44,7 @@ int cli_check_elements(const struct cli_element_files *e, int required)
         return cli_usage_error("--iwan-resolution", "must be < 1 (a fraction of phi_max)");
     if (e->rows_2d != NULL && e->rows != NULL)
         return cli_usage_error("--jenkins-2d", "give --jenkins or --jenkins-2d, not both");
-    if (e->rows_2d != NULL && (e->iwan != NULL || e->segalman != NULL))
+    if (e->rows_2d != NULL && (e->iwan != NULL || e->segalman != NULL || e->iwan_normal != NULL))
         return cli_usage_error("--jenkins-2d", "2-D elements take --jenkins-params or --normal "
                                                "with --normal-params (no Iwan 2-D elements)");
     if (e->rows_2d != NULL && e->jenkins == NULL && e->normal == NULL && e->normal_params == NULL)
@@ -64,16 +65,20 @@ int cli_check_elements(const struct cli_element_files *e, int required)
     if (e->rows != NULL && given == 0 && e->normal == NULL)
         return cli_usage_error("--jenkins-params",
                                "missing (--jenkins goes with --jenkins-params, --iwan-params, "
-                               "--iwan-segalman or --normal with --normal-params)");
-    if ((e->normal == NULL) != (e->normal_params == NULL))
+                               "--iwan-segalman or --normal with --normal-params or "
+                               "--iwan-normal-params)");
+    const char *normal_params = e->normal_params != NULL ? e->normal_params : e->iwan_normal;
+    if ((e->normal == NULL) != (normal_params == NULL))
         return cli_usage_error(e->normal == NULL ? "--normal" : "--normal-params",
-                               "missing (--normal and --normal-params go together)");
+                               "missing (--normal goes with --normal-params or "
+                               "--iwan-normal-params)");
     return 0;
 }
 
 const char *cli_element_kind_name(const struct cli_elements *el)
 {
-    static const char *const names[] = {"jenkins", "iwan", "lift-off", "jenkins-2d", "contact-3d"};
+    static const char *const names[] = {"jenkins",    "iwan",       "lift-off",
+                                        "jenkins-2d", "contact-3d", "iwan-lift-off"};
     return names[el->kind];
 }
 
@@ -166,11 +171,12 @@ static int line_numbers(const char *option, const char *path, long line, char *p
     return 0;
 }
 
-/* --iwan-params: m lines of k_1 phi_1 ... k_ns phi_ns, the same ns on each, into k[m ns] and
- * phi[m ns]. */
-static int read_sliders(const char *path, size_t m, size_t *ns, double **k, double **phi)
+/* --iwan-params (lead 0: m lines of k_1 phi_1 ... k_ns phi_ns) or --iwan-normal-params (lead
+ * 2: n0 kn, then k_1 mu_1 ... k_ns mu_ns), the same ns on each line: the pairs into k[m ns] and
+ * phi[m ns], the lead numbers into head[m lead] (lead > 0). */
+static int read_sliders(const char *option, const char *path, size_t m, size_t lead, size_t *ns,
+                        double **k, double **phi, double **head)
 {
-    static const char option[] = "--iwan-params";
     FILE *f = fopen(path, "r");
     if (f == NULL)
         return cli_file_error(option, path, 0, "cannot open: %s", strerror(errno));
@@ -180,7 +186,8 @@ static int read_sliders(const char *path, size_t m, size_t *ns, double **k, doub
     long line = 0, first = 0;
     int too_long = 0, status = 0;
     size_t rows = 0, width = 0;
-    if (buf == NULL || v == NULL)
+    if (buf == NULL || v == NULL ||
+        (lead > 0 && (*head = malloc(m * lead * sizeof **head)) == NULL))
         status = cli_file_error(option, path, 0, "out of memory");
     while (status == 0 && cli_next_line(f, buf, SLIDER_LINE_MAX, &line, &too_long)) {
         if (buf[0] == '#' || buf[0] == '%' || cli_blank(buf))
@@ -188,29 +195,32 @@ static int read_sliders(const char *path, size_t m, size_t *ns, double **k, doub
         size_t count = 0;
         if ((status = line_numbers(option, path, line, buf, v, cap, &count)) != 0)
             break;
-        if (count % 2 != 0)
+        if (count < lead + 2 || (count - lead) % 2 != 0)
             status = cli_file_error(option, path, line,
-                                    "%zu numbers: give pairs k_s phi_s, one per slider", count);
+                                    "%zu numbers: give %spairs k_s %s, one per slider", count,
+                                    lead > 0 ? "n0 kn, then " : "", lead > 0 ? "mu_s" : "phi_s");
         else if (rows == m)
             status = cli_file_error(option, path, line,
                                     "more lines than the %zu elements (rows of --jenkins)", m);
-        else if (rows > 0 && count != 2 * width)
+        else if (rows > 0 && count - lead != 2 * width)
             status = cli_file_error(option, path, line,
                                     "%zu sliders, line %ld has %zu: every element needs the same "
-                                    "number of sliders (give a slider phi = 0 to drop it)",
-                                    count / 2, first, width);
+                                    "number of sliders (give a slider %s = 0 to drop it)",
+                                    (count - lead) / 2, first, width, lead > 0 ? "mu" : "phi");
         else {
             if (rows == 0) {
-                width = count / 2;
+                width = (count - lead) / 2;
                 first = line;
                 *k = malloc(m * width * sizeof **k);
                 *phi = malloc(m * width * sizeof **phi);
                 if (*k == NULL || *phi == NULL)
                     status = cli_file_error(option, path, line, "out of memory");
             }
-            for (size_t s = 0; status == 0 && s < width; s++) {
-                (*k)[rows * width + s] = v[2 * s];
-                (*phi)[rows * width + s] = v[2 * s + 1];
+            for (size_t c = 0; status == 0 && c < lead; c++)
+                (*head)[rows * lead + c] = v[c];
+            for (size_t sl = 0; status == 0 && sl < width; sl++) {
+                (*k)[rows * width + sl] = v[lead + 2 * sl];
+                (*phi)[rows * width + sl] = v[lead + 2 * sl + 1];
             }
             rows++;
         }
@@ -277,6 +287,21 @@ static int read_normal(const struct cli_element_files *e, size_t n, struct cli_e
     return status;
 }
 
+/* --normal and --iwan-normal-params: the normal rows and m lines n0 kn k_1 mu_1 ... */
+static int read_iwan_normal(const struct cli_element_files *e, size_t n, struct cli_elements *el)
+{
+    size_t m = el->m, rows = 0, cols = 0;
+    double *head = NULL;
+    int status = read_dense("--normal", e->normal, m, n, &rows, &cols, &el->Jn);
+    if (status == 0)
+        status = read_sliders("--iwan-normal-params", e->iwan_normal, m, 2, &el->ns, &el->k,
+                              &el->mu, &head);
+    if (status == 0 && !(column(head, m, 2, 0, &el->n0) && column(head, m, 2, 1, &el->kn)))
+        status = cli_file_error("--iwan-normal-params", e->iwan_normal, 0, "out of memory");
+    free(head);
+    return status;
+}
+
 /* --jenkins-2d and --jenkins-params: 2m rows (two per element) and m lines kt mun; or, with
  * --normal and --normal-params, the 3-D contact elements: m normal rows, m lines kt mu n0 kn. */
 static int read_planar(const struct cli_element_files *e, size_t n, struct cli_elements *el)
@@ -314,6 +339,12 @@ int cli_read_elements(const struct cli_element_files *e, size_t n, struct cli_el
     if (status != 0)
         return status;
     el->ns = 1;
+    if (e->iwan_normal != NULL) {
+        el->kind = CLI_ELEMENTS_IWAN_NORMAL;
+        el->option = "--iwan-normal-params";
+        el->path = e->iwan_normal;
+        return read_iwan_normal(e, n, el);
+    }
     if (e->normal != NULL) {
         el->kind = CLI_ELEMENTS_NORMAL;
         el->option = "--normal-params";
@@ -324,7 +355,7 @@ int cli_read_elements(const struct cli_element_files *e, size_t n, struct cli_el
         el->kind = CLI_ELEMENTS_IWAN;
         el->option = "--iwan-params";
         el->path = e->iwan;
-        return read_sliders(e->iwan, el->m, &el->ns, &el->k, &el->phi);
+        return read_sliders("--iwan-params", e->iwan, el->m, 0, &el->ns, &el->k, &el->phi, NULL);
     }
     if (e->segalman != NULL) {
         el->kind = CLI_ELEMENTS_IWAN;

@@ -9,7 +9,9 @@
  *   --iwan-segalman S.txt    F_S K_T chi beta             (Iwan elements, Segalman's model
  *                            discretized into --iwan-sliders NS at --iwan-resolution R)
  *   --normal-params Q.txt    kt mu n0 kn                  (lift-off, with --normal Jn.mtx:
- *                            element i's normal g_i = (Jn x)_i) */
+ *                            element i's normal g_i = (Jn x)_i)
+ *   --iwan-normal-params Q.txt  n0 kn k_1 mu_1 ... k_ns mu_ns  (Iwan elements with lift-off,
+ *                            with --normal Jn.mtx: slider s bounded by mu_s N) */
 #ifndef FRICREG_CLI_JENKINS_INPUT_H
 #define FRICREG_CLI_JENKINS_INPUT_H
 
@@ -20,7 +22,8 @@ struct cli_element_files {
     const char *rows;                      /* --jenkins */
     const char *rows_2d;                   /* --jenkins-2d (instead of --jenkins) */
     const char *jenkins, *iwan, *segalman; /* the parameter files: one of these ... */
-    const char *normal, *normal_params;    /* ... or --normal with --normal-params */
+    const char *normal, *normal_params;    /* ... or --normal with --normal-params, */
+    const char *iwan_normal;               /* ... or with --iwan-normal-params */
     int sliders, sliders_given;            /* --iwan-sliders (Segalman's discretization) */
     double resolution;                     /* --iwan-resolution */
     int resolution_given;
@@ -55,7 +58,10 @@ struct cli_element_files {
      .help = "lift-off elements: the normal rows, element i's gap g_i = (Jn x)_i, with "      \
              "--normal-params"},                                                              \
     {"--normal-params", CLI_FILE, .slot = &(e)->normal_params, .meta = "Q.txt",               \
-     .help = "lift-off elements: a line kt mu n0 kn per element; N = max(0, n0 + kn g)"}
+     .help = "lift-off elements: a line kt mu n0 kn per element; N = max(0, n0 + kn g)"},     \
+    {"--iwan-normal-params", CLI_FILE, .slot = &(e)->iwan_normal, .meta = "Q.txt",            \
+     .help = "Iwan elements with lift-off, with --normal: a line n0 kn k_1 mu_1 ... k_ns "     \
+             "mu_ns per element, slider s bounded by mu_s N"}
 /* clang-format on */
 
 /* The defaults: 50 sliders at resolution 1e-6 (docs/joints.md's rule for Segalman's model). */
@@ -64,8 +70,8 @@ void cli_element_defaults(struct cli_element_files *e);
 /* Options that need or exclude others: --jenkins (or --jenkins-2d, not both) with exactly one
  * parameter file (required: both must be given), --jenkins-2d with --jenkins-params or with
  * --normal and --normal-params,
- * --normal with --normal-params, --iwan-sliders and --iwan-resolution with --iwan-segalman
- * only. 0, or CLI_EXIT_USAGE after one line naming the option. */
+ * --normal with --normal-params or --iwan-normal-params (--jenkins only), --iwan-sliders and
+ * --iwan-resolution with --iwan-segalman only. 0, or CLI_EXIT_USAGE after one line naming the option. */
 int cli_check_elements(const struct cli_element_files *e, int required);
 
 enum cli_element_kind {
@@ -73,14 +79,16 @@ enum cli_element_kind {
     CLI_ELEMENTS_IWAN,
     CLI_ELEMENTS_NORMAL,
     CLI_ELEMENTS_JENKINS_2D,
-    CLI_ELEMENTS_CONTACT_3D /* --jenkins-2d with --normal: 2-D elements with lift-off */
+    CLI_ELEMENTS_CONTACT_3D, /* --jenkins-2d with --normal: 2-D elements with lift-off */
+    CLI_ELEMENTS_IWAN_NORMAL /* --iwan-normal-params: Iwan elements with lift-off */
 };
 
 /* The elements as read: m elements on the rows of J (m x n, dense row-major; 2-D elements: 2m
  * rows, element i's x on row 2i, y on 2i + 1); ns sliders each
  * (1 but for Iwan elements) of stiffness k[m ns] and slip force phi[m ns] (row-major, element
  * i's slider s at [i ns + s]; Jenkins elements: kt, mun); lift-off: kt in k, mu[m], n0[m],
- * kn[m] and the normal rows Jn (m x n). option and path name the parameter file. */
+ * kn[m] and the normal rows Jn (m x n); Iwan elements with lift-off: k[m ns], mu[m ns], n0[m],
+ * kn[m], Jn. option and path name the parameter file. */
 struct cli_elements {
     enum cli_element_kind kind;
     size_t m, ns;
@@ -94,7 +102,8 @@ struct cli_elements {
 int cli_read_elements(const struct cli_element_files *e, size_t n, struct cli_elements *el);
 void cli_free_elements(struct cli_elements *el);
 
-/* "jenkins", "iwan", "lift-off", "jenkins-2d" or "contact-3d", the summaries' element_kind. */
+/* "jenkins", "iwan", "lift-off", "jenkins-2d", "contact-3d" or "iwan-lift-off", the
+ * summaries' element_kind. */
 const char *cli_element_kind_name(const struct cli_elements *el);
 
 /* Two columns per row, one row per entity (rows of them: dofs or elements, named by what in

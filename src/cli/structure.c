@@ -433,7 +433,7 @@ static void write_summary(FILE *out, const struct structure_options *o,
         cli_json_array(out, "dissipation_per_jenkins", el->m, run->De);
         fprintf(out, ", \"jenkins_dissipation\": %.17g, \"element_kind\": \"%s\"",
                 svalue(s, FRICREG_SVALUE_JENKINS), cli_element_kind_name(el));
-        if (el->kind == CLI_ELEMENTS_IWAN)
+        if (el->kind == CLI_ELEMENTS_IWAN || el->kind == CLI_ELEMENTS_IWAN_NORMAL)
             fprintf(out, ", \"sliders_per_element\": %zu", el->ns);
         int planar = el->kind == CLI_ELEMENTS_JENKINS_2D || el->kind == CLI_ELEMENTS_CONTACT_3D;
         if (planar) { /* element i's [f_x, f_y], as J_e's rows */
@@ -448,7 +448,8 @@ static void write_summary(FILE *out, const struct structure_options *o,
             }
             fputs("]", out);
         }
-        if (el->kind == CLI_ELEMENTS_NORMAL || el->kind == CLI_ELEMENTS_CONTACT_3D) {
+        if (el->kind == CLI_ELEMENTS_NORMAL || el->kind == CLI_ELEMENTS_CONTACT_3D ||
+            el->kind == CLI_ELEMENTS_IWAN_NORMAL) {
             fricreg_structure_get_normal_forces(s, el->m, run->De);
             cli_json_array(out, "normal_forces", el->m, run->De);
         }

@@ -245,6 +245,9 @@ static int set_elements(fricreg_structure *s, const struct structure_input *in)
                                                          el->mu, el->n0, el->kn);
     else if (el->kind == CLI_ELEMENTS_JENKINS_2D)
         status = fricreg_structure_set_jenkins_2d(s, el->m, in->n, el->J, el->k, el->phi);
+    else if (el->kind == CLI_ELEMENTS_IWAN_NORMAL)
+        status = fricreg_structure_set_iwan_normal(s, el->m, in->n, el->J, el->Jn, el->ns, el->k,
+                                                   el->mu, el->n0, el->kn);
     else if (el->kind == CLI_ELEMENTS_IWAN)
         status = fricreg_structure_set_iwan(s, el->m, in->n, el->J, el->ns, el->k, el->phi);
     else

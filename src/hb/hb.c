@@ -203,7 +203,8 @@ int fr_hb_clone(const fricreg_hb *src, int harmonics, fricreg_hb **out)
         return status;
     struct rows_buffers b = {0};
     double *nl = src->nl ? malloc(4 * me * sizeof *nl) : NULL;
-    double *sk = src->sk ? malloc(2 * me * src->ns * sizeof *sk) : NULL;
+    size_t sliders = fr_hb_slider_doubles(me, src->ns, src->nl != NULL, 2 * (size_t)harmonics + 1);
+    double *sk = src->sk ? malloc(sliders * sizeof *sk) : NULL;
     if ((src->nl && (!nl || alloc_rows(hb, 2 * me, &b) != FRICREG_OK)) || (src->sk && !sk) ||
         (src->sparse && fr_hb_sparse_copy(hb, src) != FRICREG_OK)) {
         free(nl);
@@ -482,40 +483,101 @@ int fricreg_hb_set_iwan(fricreg_hb *hb, size_t m, size_t ndof, const double J[],
     return FRICREG_OK;
 }
 
-/* fricreg_hb_set_jenkins_normal, its messages naming fn. */
-static int set_jenkins_normal(fricreg_hb *hb, const char *fn, size_t m, size_t ndof,
-                              const double Jt[], const double Jn[], const double kt[],
-                              const double mu[], const double n0[], const double kn[])
+/* The normal law's n0 finite and kn >= 0, finite, for Iwan elements (the Jenkins elements'
+ * one message names kt and mu as well). */
+static int check_normal_law(fricreg_hb *hb, const char *fn, size_t m, const double n0[],
+                            const double kn[])
+{
+    for (size_t i = 0; i < m; i++) {
+        if (!isfinite(n0[i]) || !isfinite(kn[i]))
+            return fr_fail(hb, FRICREG_ENONFINITE, "%s: n0[%zu] = %g, kn[%zu] = %g", fn, i, n0[i],
+                           i, kn[i]);
+        if (!(kn[i] >= 0.0))
+            return fr_fail(hb, FRICREG_EINVAL, "%s: kn[%zu] = %g must be >= 0", fn, i, kn[i]);
+    }
+    return FRICREG_OK;
+}
+
+/* Jenkins elements' (ns = 1) or Iwan elements' (ns sliders) parameters with a normal law. */
+static int check_normal_sliders(fricreg_hb *hb, const char *fn, size_t m, size_t ns,
+                                const double k[], const double mu[], const double n0[],
+                                const double kn[])
+{
+    if (ns > 1) {
+        int status = check_sliders(hb, fn, m * ns, k, mu, "k", "mu");
+        return status != FRICREG_OK ? status : check_normal_law(hb, fn, m, n0, kn);
+    }
+    for (size_t i = 0; i < m; i++) {
+        if (!isfinite(k[i]) || !isfinite(mu[i]) || !isfinite(n0[i]) || !isfinite(kn[i]))
+            return fr_fail(hb, FRICREG_ENONFINITE,
+                           "%s: kt[%zu] = %g, mu[%zu] = %g, n0[%zu] = %g, kn[%zu] = %g", fn, i,
+                           k[i], i, mu[i], i, n0[i], i, kn[i]);
+        if (!(k[i] > 0.0) || !(mu[i] >= 0.0) || !(kn[i] >= 0.0))
+            return fr_fail(hb, FRICREG_EINVAL,
+                           "%s: kt[%zu] = %g must be > 0, mu[%zu] = %g >= 0, kn[%zu] = %g >= 0", fn,
+                           i, k[i], i, mu[i], i, kn[i]);
+    }
+    return FRICREG_OK;
+}
+
+/* The normal law's [4 m] kt, mu, n0, kn: an Iwan element's kt the sum of its sliders' k (its
+ * stuck stiffness) and mu the sum of theirs. */
+static void normal_parameters(double *nl, size_t m, size_t ns, const double k[], const double mu[],
+                              const double n0[], const double kn[])
+{
+    for (size_t i = 0; i < m; i++) {
+        double ksum = 0.0, musum = 0.0;
+        for (size_t j = i * ns; j < (i + 1) * ns; j++) {
+            ksum += k[j];
+            musum += mu[j];
+        }
+        nl[i] = ksum;
+        nl[m + i] = musum;
+    }
+    memcpy(nl + 2 * m, n0, m * sizeof *nl);
+    memcpy(nl + 3 * m, kn, m * sizeof *nl);
+}
+
+size_t fr_hb_slider_doubles(size_t me, size_t ns, int normal, size_t nc)
+{
+    return 2 * me * ns + (normal && ns > 1 ? 2 * nc + 4 * nc * nc : 0);
+}
+
+/* fricreg_hb_set_jenkins_normal (ns = 1: k = kt) and fricreg_hb_set_iwan_normal, their
+ * messages naming fn. */
+static int set_normal(fricreg_hb *hb, const char *fn, size_t m, size_t ndof, const double Jt[],
+                      const double Jn[], size_t ns, const double k[], const double mu[],
+                      const double n0[], const double kn[])
 {
     if (hb == NULL)
         return FRICREG_ENULL;
     if (hb->busy)
         return fr_hb_busy(hb, fn);
-    const void *args[6] = {Jt, Jn, kt, mu, n0, kn};
+    const void *args[6] = {Jt, Jn, k, mu, n0, kn};
     static const char *const names[6] = {"Jt", "Jn", "kt", "mu", "n0", "kn"};
     for (int a = 0; a < 6; a++)
         if (args[a] == NULL)
-            return fr_fail(hb, FRICREG_ENULL, "%s: %s is NULL", fn, names[a]);
+            return fr_fail(hb, FRICREG_ENULL, "%s: %s is NULL", fn,
+                           a == 2 && ns > 1 ? "k" : names[a]);
     int status = check_rows(hb, fn, m, ndof, Jt, "Jt");
     if (status == FRICREG_OK)
         status = check_rows(hb, fn, m, ndof, Jn, "Jn");
     if (status != FRICREG_OK)
         return status;
-    for (size_t i = 0; i < m; i++) {
-        if (!isfinite(kt[i]) || !isfinite(mu[i]) || !isfinite(n0[i]) || !isfinite(kn[i]))
-            return fr_fail(hb, FRICREG_ENONFINITE,
-                           "%s: kt[%zu] = %g, mu[%zu] = %g, n0[%zu] = %g, kn[%zu] = %g", fn, i,
-                           kt[i], i, mu[i], i, n0[i], i, kn[i]);
-        if (!(kt[i] > 0.0) || !(mu[i] >= 0.0) || !(kn[i] >= 0.0))
-            return fr_fail(hb, FRICREG_EINVAL,
-                           "%s: kt[%zu] = %g must be > 0, mu[%zu] = %g >= 0, kn[%zu] = %g >= 0", fn,
-                           i, kt[i], i, mu[i], i, kn[i]);
-    }
+    if (ns < 1 || ns > FRICREG_HB_MAX_SLIDERS)
+        return fr_fail(hb, FRICREG_EINVAL, "%s: ns = %zu sliders, must be in [1, %d]", fn, ns,
+                       FRICREG_HB_MAX_SLIDERS);
+    if ((status = check_normal_sliders(hb, fn, m, ns, k, mu, n0, kn)) != FRICREG_OK)
+        return status;
     /* two rows an element: the buffers sized by the rows grow once (and stay) */
     struct rows_buffers b = {0};
-    double *nl = malloc(4 * m * sizeof *nl);
-    if (nl == NULL || (hb->rows_cap < 2 * m && alloc_rows(hb, 2 * m, &b) != FRICREG_OK)) {
+    double *nl = malloc(4 * m * sizeof *nl), *sk = NULL;
+    if (ns > 1) /* the sliders, and room for one slider's AFT (residual.c) */
+        sk = malloc(fr_hb_slider_doubles(m, ns, 1, hb->nc) * sizeof *sk);
+    if (nl == NULL || (ns > 1 && sk == NULL) ||
+        (hb->rows_cap < 2 * m && alloc_rows(hb, 2 * m, &b) != FRICREG_OK)) {
         free(nl);
+        free(sk);
         return fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for %zu elements with lift-off", fn, m);
     }
     if (b.J != NULL)
@@ -524,15 +586,16 @@ static int set_jenkins_normal(fricreg_hb *hb, const char *fn, size_t m, size_t n
         memcpy(hb->J + 2 * i * ndof, Jt + i * ndof, ndof * sizeof *Jt);
         memcpy(hb->J + (2 * i + 1) * ndof, Jn + i * ndof, ndof * sizeof *Jn);
     }
-    memcpy(nl, kt, m * sizeof *nl);
-    memcpy(nl + m, mu, m * sizeof *nl);
-    memcpy(nl + 2 * m, n0, m * sizeof *nl);
-    memcpy(nl + 3 * m, kn, m * sizeof *nl);
+    normal_parameters(nl, m, ns, k, mu, n0, kn);
+    if (sk != NULL) {
+        memcpy(sk, k, m * ns * sizeof *sk);
+        memcpy(sk + m * ns, mu, m * ns * sizeof *sk);
+    }
     free(hb->nl);
     hb->nl = nl;
     free(hb->sk);
-    hb->sk = NULL;
-    hb->ns = 1;
+    hb->sk = sk;
+    hb->ns = ns;
     set_rows(hb, 2);
     hb->have_elements = 1;
     invalidate(hb);
@@ -543,14 +606,21 @@ int fricreg_hb_set_jenkins_normal(fricreg_hb *hb, size_t m, size_t ndof, const d
                                   const double Jn[], const double kt[], const double mu[],
                                   const double n0[], const double kn[])
 {
-    return set_jenkins_normal(hb, "set_jenkins_normal", m, ndof, Jt, Jn, kt, mu, n0, kn);
+    return set_normal(hb, "set_jenkins_normal", m, ndof, Jt, Jn, 1, kt, mu, n0, kn);
 }
 
 int fricreg_hb_set_normal_elements(fricreg_hb *hb, size_t m, size_t ndof, const double Jt[],
                                    const double Jn[], const double kt[], const double mu[],
                                    const double n0[], const double kn[])
 {
-    return set_jenkins_normal(hb, "set_normal_elements", m, ndof, Jt, Jn, kt, mu, n0, kn);
+    return set_normal(hb, "set_normal_elements", m, ndof, Jt, Jn, 1, kt, mu, n0, kn);
+}
+
+int fricreg_hb_set_iwan_normal(fricreg_hb *hb, size_t m, size_t ndof, const double Jt[],
+                               const double Jn[], size_t ns, const double k[], const double mu[],
+                               const double n0[], const double kn[])
+{
+    return set_normal(hb, "set_iwan_normal", m, ndof, Jt, Jn, ns, k, mu, n0, kn);
 }
 
 int fricreg_hb_set_excitation(fricreg_hb *hb, size_t ndof, const double pc[], const double ps[])

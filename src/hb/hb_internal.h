@@ -40,8 +40,11 @@ struct fricreg_hb {
     double a0, a1;
     double *J, *kt, *mun; /* [m n] (room for rows_cap rows), [me], [me] */
     size_t ns;            /* sliders per element: 1 (Jenkins, kt and mun) or set_iwan's */
-    double *sk; /* set_iwan's [me ns] stiffnesses then [me ns] slip forces; NULL: Jenkins */
-    double *nl; /* set_normal_elements' [4 me]: kt, mu, n0, kn; NULL: none */
+    double *sk; /* set_iwan's [me ns] stiffnesses then [me ns] slip forces (set_iwan_normal's:
+                   friction coefficients, then one slider's AFT, fr_hb_slider_doubles); NULL:
+                   Jenkins elements */
+    double *nl; /* set_normal_elements' [4 me]: kt, mu, n0, kn (Iwan: kt and mu summed over the
+                   sliders); NULL: none */
     int have_elements;
     double *pc, *ps; /* [n] excitation of the fundamental */
     /* the excitation's factor in force, λ: 1 but along a continuation in the level
@@ -177,6 +180,10 @@ static inline size_t fr_hb_sliders(const fricreg_hb *hb, size_t e, const double 
     *phi = hb->sk + (hb->me + e) * hb->ns;
     return hb->ns;
 }
+
+/* The doubles of sk: me elements of ns sliders, with a normal law (normal) room for one
+ * slider's forces and Jacobian at nc coefficients, 2 nc + (2 nc)^2, when ns > 1. */
+size_t fr_hb_slider_doubles(size_t me, size_t ns, int normal, size_t nc);
 
 /* Factors D_h(omega) for h = 0..H and forms Y, G, ql (and dG, dql when deriv); keeps them
  * while omega stays. FRICREG_OK or FRICREG_ESINGULAR (message recorded, with fn). */

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* nma_stuck.c — the elements at rest, where a backbone starts (nma_internal.h): each row of J's
  * stiffness with its elements stuck (the lift-off element's kt, or kn on its normal row, when
- * closed by N0 > 0; an Iwan element's sliders of positive slip force) and the amplitude at which
+ * closed by N0 > 0; an Iwan element's sliders of positive slip force, with lift-off when closed) and the amplitude at which
  * it first slips or opens. Used by the dense linear mode (nma_linear.c) and the sparse one
  * (nma_sparse_mode.c) alike. */
 #include <math.h>
@@ -13,22 +13,30 @@ void fr_hb_nma_row(const fricreg_hb *hb, size_t r, double *k, double *limit)
     size_t e = r / hb->rpe;
     *k = 0.0;
     *limit = INFINITY;
+    double scale = 1.0;   /* a slider's slip force per unit of phi */
     if (hb->nl != NULL) { /* kt, mu, n0, kn: closed at rest when N0 > 0 */
         size_t me = hb->me;
         double kt = hb->nl[e], mu = hb->nl[me + e], n0 = hb->nl[2 * me + e],
                kn = hb->nl[3 * me + e];
-        int normal = r % 2 == 1;
-        if (n0 > 0.0) {
-            *k = normal ? kn : mu > 0.0 ? kt : 0.0;
-            *limit = normal ? (kn > 0.0 ? n0 / kn : INFINITY) : mu > 0.0 ? mu * n0 / kt : INFINITY;
+        if (!(n0 > 0.0))
+            return;
+        if (r % 2 == 1) {
+            *k = kn;
+            *limit = kn > 0.0 ? n0 / kn : INFINITY;
+            return;
         }
-        return;
+        if (hb->sk == NULL) {
+            *k = mu > 0.0 ? kt : 0.0;
+            *limit = mu > 0.0 ? mu * n0 / kt : INFINITY;
+            return;
+        }
+        scale = n0; /* Iwan sliders: phi holds mu */
     }
     const double *ks, *phi;
     size_t ns = fr_hb_sliders(hb, e, &ks, &phi);
     for (size_t s = 0; s < ns; s++)
         if (phi[s] > 0.0) { /* a slider of slip force 0 carries nothing */
             *k += ks[s];
-            *limit = fmin(*limit, phi[s] / ks[s]);
+            *limit = fmin(*limit, scale * phi[s] / ks[s]);
         }
 }

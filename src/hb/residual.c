@@ -8,7 +8,8 @@
  * and R_0 = q0 + sum_e' G_0 f0 − ql_0 (real), e, e' rows of J. The forces and their exact
  * Jacobians come from fricreg_aft_iwan_exact (a Jenkins element is one slider), or with lift-off
  * fricreg_aft_jenkins_normal_exact (two rows: the tangential force f on u, the normal force N on
- * g, one Jacobian block coupling them), one element at a time. */
+ * g, one Jacobian block coupling them; an Iwan element's sliders summed on the tangential row),
+ * one element at a time. */
 #include <math.h>
 #include <string.h>
 
@@ -45,12 +46,40 @@ void fr_hb_apply(const fricreg_hb *hb, const double *G, const double *ql, double
         }
 }
 
+/* Iwan element e with lift-off at its coefficients u[2 nc] (u, then g): its sliders' forces
+ * summed into f[nc] and their Jacobians' tangential rows into jac (NULL: none), the normal
+ * force (the same for every slider) into f[nc ..] and the normal rows from the first slider,
+ * each slider by fricreg_aft_jenkins_normal_exact into the scratch after the sliders. */
+static int iwan_normal(fricreg_hb *hb, size_t e, const double *u, double *f, double *jac)
+{
+    size_t nc = hb->nc, me = hb->me, b = 2 * nc;
+    const double *k, *mu;
+    size_t ns = fr_hb_sliders(hb, e, &k, &mu);
+    double *fs = hb->sk + 2 * me * ns, *js = fs + b;
+    for (size_t s = 0; s < ns; s++) {
+        int status = fricreg_aft_jenkins_normal_exact(hb->aft, k[s], mu[s], hb->nl[2 * me + e],
+                                                      hb->nl[3 * me + e], nc, u, u + nc, fs,
+                                                      fs + nc, jac ? js : NULL);
+        if (status != FRICREG_OK)
+            return status;
+        size_t rows = s == 0 ? b : nc; /* the normal rows once */
+        for (size_t i = 0; i < rows; i++)
+            f[i] = s == 0 ? fs[i] : f[i] + fs[i];
+        for (size_t i = 0; jac != NULL && i < rows * b; i++)
+            jac[i] = s == 0 ? js[i] : jac[i] + js[i];
+    }
+    return FRICREG_OK;
+}
+
 int fr_hb_residual(fricreg_hb *hb, const char *fn, const double *q, double *R, int jac)
 {
     size_t nc = hb->nc, me = hb->me;
     for (size_t e = 0; e < me; e++) {
         int status;
-        if (hb->nl != NULL) {
+        if (hb->nl != NULL && hb->sk != NULL) {
+            status = iwan_normal(hb, e, q + 2 * e * nc, hb->fq + 2 * e * nc,
+                                 jac ? hb->jq + 4 * e * nc * nc : NULL);
+        } else if (hb->nl != NULL) {
             const double *u = q + 2 * e * nc, *p = hb->nl;
             double *f = hb->fq + 2 * e * nc;
             status = fricreg_aft_jenkins_normal_exact(hb->aft, p[e], p[me + e], p[2 * me + e],

@@ -10,8 +10,9 @@
  * tangent sum of the sticking sliders' k: the condensed Newton below keeps me unknowns whatever
  * ns is.
  *
- * With a normal law (set_jenkins_normal) element i also has a row of J_n, g_i = (J_n u)_i,
- * N_i = max(0, n0_i + kn_i g_i) acting as -J_n^T N on the structure, and the bound phi N
+ * With a normal law (set_jenkins_normal, set_iwan_normal) element i also has a row of J_n,
+ * g_i = (J_n u)_i, N_i = max(0, n0_i + kn_i g_i) acting as -J_n^T N on the structure, and each
+ * slider's bound phi N (phi holding the slider's friction coefficient)
  * (fricreg_jenkins_trial_normal's law; separated, N_i < 0 before the max, the sliders follow
  * q). The coordinates below are then (q, g) and the forces (fe, N): 2 me of them, J = J_e over
  * J_n, and the tangent T gains dfe/dg (slipping) and dN/dg = kn (closed).
@@ -132,16 +133,20 @@ static int check_rows(fricreg_structure *s, const cholmod_sparse *Jt, size_t me,
 }
 
 /* What a setter attaches: Jenkins elements (ns = 1, kt and mun), Iwan elements (k and phi per
- * slider), or Jenkins elements with a normal law (kt and mu, n0 and kn, J_n). */
-enum kind { KIND_JENKINS, KIND_IWAN, KIND_NORMAL };
+ * slider), or either with a normal law (kt or k, and mu per slider; n0 and kn, J_n). */
+enum kind { KIND_JENKINS, KIND_IWAN, KIND_NORMAL, KIND_IWAN_NORMAL };
+
+static int normal_law(enum kind kind)
+{
+    return kind == KIND_NORMAL || kind == KIND_IWAN_NORMAL;
+}
 
 /* k > 0 and phi >= 0, finite, per slider (ns of them per element), named after the kind. */
 static int check_params(fricreg_structure *s, size_t me, size_t ns, enum kind kind,
                         const double k[], const double phi[], const char *who)
 {
-    const char *kn = kind == KIND_IWAN ? "k" : "kt", *pn = kind == KIND_IWAN     ? "phi"
-                                                           : kind == KIND_NORMAL ? "mu"
-                                                                                 : "mun";
+    const char *kn = kind == KIND_IWAN || kind == KIND_IWAN_NORMAL ? "k" : "kt";
+    const char *pn = kind == KIND_IWAN ? "phi" : normal_law(kind) ? "mu" : "mun";
     if (k == NULL || phi == NULL)
         return fr_fail(s, FRICREG_ENULL, "%s: %s or %s is NULL", who, kn, pn);
     for (size_t j = 0; j < me * ns; j++) {
@@ -247,7 +252,7 @@ static int check_normal(fricreg_structure *s, size_t me, size_t ndof, const doub
     return FRICREG_OK;
 }
 
-/* The dense setters' body; Jn, n0, kn only with KIND_NORMAL; dim 2: Je has 2 me rows. */
+/* The dense setters' body; Jn, n0, kn only with a normal law; dim 2: Je has 2 me rows. */
 static int set_dense(fricreg_structure *s, size_t me, int dim, size_t ndof, const double Je[],
                      const double Jn[], enum kind kind, size_t ns, const double k[],
                      const double phi[], const double n0[], const double kn[], const char *who)
@@ -267,10 +272,10 @@ static int set_dense(fricreg_structure *s, size_t me, int dim, size_t ndof, cons
         if (!isfinite(Je[j]))
             return fr_fail(s, FRICREG_ENONFINITE, "%s: J_e(%zu, %zu) is not finite", who, j / ndof,
                            j % ndof);
-    if (kind == KIND_NORMAL && (status = check_normal(s, me, ndof, Jn, n0, kn, who)) != FRICREG_OK)
+    if (normal_law(kind) && (status = check_normal(s, me, ndof, Jn, n0, kn, who)) != FRICREG_OK)
         return status;
     cholmod_sparse *J = NULL;
-    if (kind != KIND_NORMAL) {
+    if (!normal_law(kind)) {
         status = fr_dense_to_cholmod((size_t)dim * me, ndof, Je, 0, &s->cc, &J, &s->err, who);
         return status != FRICREG_OK ? status : install(s, me, ns, dim, J, k, phi, NULL, NULL, who);
     }
@@ -368,6 +373,15 @@ int fricreg_structure_set_jenkins_normal(fricreg_structure *s, size_t me, size_t
                                          const double mu[], const double n0[], const double kn[])
 {
     return set_dense(s, me, 1, ndof, Je, Jn, KIND_NORMAL, 1, kt, mu, n0, kn, "set_jenkins_normal");
+}
+
+int fricreg_structure_set_iwan_normal(fricreg_structure *s, size_t me, size_t ndof,
+                                      const double Je[], const double Jn[], size_t ns,
+                                      const double k[], const double mu[], const double n0[],
+                                      const double kn[])
+{
+    return set_dense(s, me, 1, ndof, Je, Jn, KIND_IWAN_NORMAL, ns, k, mu, n0, kn,
+                     "set_iwan_normal");
 }
 
 int fricreg_structure_set_jenkins_2d_normal(fricreg_structure *s, size_t me, size_t ndof,

@@ -1802,6 +1802,61 @@ static const struct script structure_normal_script = {"structure with lift-off e
                                                       structure_errcode,
                                                       structure_close};
 
+/* The same frame with Iwan elements of two sliders under that normal law (set_iwan_normal,
+ * then again with other friction coefficients). */
+static const double FRAME_IWAN_K[4] = {100, 50, 60, 30}, FRAME_IWAN_MU[4] = {0.1, 0.2, 0.3, 0.2},
+                    FRAME_IWAN_MU2[4] = {0.2, 0.2, 0.1, 0.4};
+
+static const char *const structure_iwan_normal_calls[] = {"set_mass",     "set_stiffness",
+                                                          "set_contacts", "set_bounds (0)",
+                                                          "set_load(1)",  "set_iwan_normal",
+                                                          "the scheme",   "set_iwan_normal",
+                                                          "run"};
+
+static int structure_iwan_normal_call(void *obj, int i, struct view *v)
+{
+    switch (i) {
+    case 5:
+    case 7:
+        return fricreg_structure_set_iwan_normal(obj, 2, 3, FRAME_J, FRAME_JN, 2, FRAME_IWAN_K,
+                                                 i == 5 ? FRAME_IWAN_MU : FRAME_IWAN_MU2, FRAME_N0,
+                                                 FRAME_KN);
+    default: return structure_jenkins_call(obj, i, v);
+    }
+}
+
+static void see_structure_iwan_normal(const fricreg_structure *s, struct view *v)
+{
+    double f[2] = {-1, -1}, w[4] = {-1, -1, -1, -1}, D[2] = {-1, -1}, N[2] = {-1, -1};
+    see(v, fricreg_structure_get_iwan_state(s, 2, 2, f, w, D));
+    see_all(v, f, 2);
+    see_all(v, w, 4);
+    see_all(v, D, 2);
+    see(v, fricreg_structure_get_normal_forces(s, 2, N));
+    see_all(v, N, 2);
+}
+
+static void structure_iwan_normal_observe(void *obj, struct view *v)
+{
+    double t = 0.0;
+    see_structure_iwan_normal(obj, v);
+    fricreg_structure_get_value(obj, FRICREG_SVALUE_TIME, &t);
+    see(v, fricreg_structure_run(obj, ST_DT, t + 0.1));
+    see_structure_iwan_normal(obj, v);
+}
+
+static const struct script structure_iwan_normal_script = {"structure with Iwan lift-off elements",
+                                                           9,
+                                                           structure_iwan_normal_calls,
+                                                           1u << 5,
+                                                           0,
+                                                           structure_open,
+                                                           structure_iwan_normal_call,
+                                                           NULL,
+                                                           structure_iwan_normal_observe,
+                                                           structure_errcode,
+                                                           structure_close};
+
 /* The same frame with one 3-D contact element (a 2-D element on J's two rows with the normal
  * row (0, 0, 1)): set_jenkins_2d_normal, then again with other parameters. */
 static void see_structure_contact_3d(const fricreg_structure *s, struct view *v)
@@ -2162,6 +2217,24 @@ static void hb_normal_observe(void *obj, struct view *v)
 static const struct script hb_normal = {
     "hb set_normal_elements", 2,    hb_normal_calls,   1,          0,       hb_iwan_open,
     hb_normal_call,           NULL, hb_normal_observe, hb_errcode, hb_close};
+
+/* Iwan elements with lift-off: set_iwan_normal twice (the first grows the buffers sized by the
+ * rows of J and allocates the normal law and the sliders with one slider's AFT scratch, the
+ * second those two only); the view solves at one frequency (nq = 2 (2H + 1)). */
+static const char *const hb_iwan_normal_calls[] = {"set_iwan_normal(grows, 2 sliders)",
+                                                   "set_iwan_normal(3 sliders)"};
+
+static int hb_iwan_normal_call(void *obj, int i, struct view *v)
+{
+    (void)v;
+    const double Jt[2] = {0.0, 1.0}, Jn[2] = {-1.0, 0.0}, k[3] = {0.9, 0.4, 0.2},
+                 mu[3] = {0.2, 0.1, 0.1}, n0[1] = {0.5}, kn[1] = {2.0};
+    return fricreg_hb_set_iwan_normal(obj, 1, 2, Jt, Jn, i == 0 ? 2 : 3, k, mu, n0, kn);
+}
+
+static const struct script hb_iwan_normal = {
+    "hb set_iwan_normal", 2,    hb_iwan_normal_calls, 1,          0,       hb_iwan_open,
+    hb_iwan_normal_call,  NULL, hb_normal_observe,    hb_errcode, hb_close};
 
 /* Hill's method turned on: set_stability's allocations (the companion matrix, the eigenvalues,
  * GSL's workspace on fricreg's memory, M's LU); the view solves with Jenkins elements and reads
@@ -2896,6 +2969,14 @@ START_TEST(test_hb_normal)
 }
 END_TEST
 
+/* set_iwan_normal's allocations fail cleanly: ENOMEM and the elements as before */
+START_TEST(test_hb_iwan_normal)
+{
+    struct tally t = fail_each_allocation(&hb_iwan_normal);
+    ck_assert_int_eq(t.enomem, t.cases);
+}
+END_TEST
+
 START_TEST(test_aft_eval_does_not_allocate)
 {
     fricreg_aft *a = NULL;
@@ -3209,6 +3290,16 @@ START_TEST(test_structure_normal_run)
 }
 END_TEST
 
+/* Newmark only: the other schemes' allocations are set_jenkins_normal's (the same setter body
+ * and step, test_structure_normal_run) */
+START_TEST(test_structure_iwan_normal_run)
+{
+    current_scheme = SCHEME_NEWMARK;
+    struct tally t = fail_each_allocation(&structure_iwan_normal_script);
+    ck_assert_int_ge(t.enomem, t.cases - 30); /* CHOLMOD's own fallbacks, as above */
+}
+END_TEST
+
 START_TEST(test_structure_contact_3d_run)
 {
     static const char *const names[3] = {"structure newmark, 3-D contact elements",
@@ -3357,6 +3448,7 @@ static Suite *alloc_suite(void)
     tcase_add_test(drivers, test_hb_sparse);
     tcase_add_test(drivers, test_hb_iwan);
     tcase_add_test(drivers, test_hb_normal);
+    tcase_add_test(drivers, test_hb_iwan_normal);
     tcase_add_test(drivers, test_hb_stability);
     tcase_add_loop_test(drivers, test_structure_run, 0, N_SCHEMES);
     tcase_add_loop_test(drivers, test_structure_estimate_run, 0, N_SCHEMES);
@@ -3366,6 +3458,7 @@ static Suite *alloc_suite(void)
     tcase_add_loop_test(drivers, test_structure_jenkins_2d_run, 0, 5);
     tcase_add_loop_test(drivers, test_structure_normal_run, 0, 3);
     tcase_add_loop_test(drivers, test_structure_contact_3d_run, 0, 3);
+    tcase_add_test(drivers, test_structure_iwan_normal_run);
     suite_add_tcase(s, drivers);
     TCase *checkpoint = tcase_create("structure_checkpoint"); /* restore: ~2000 each */
     tcase_add_loop_test(checkpoint, test_structure_checkpoint_run, 0, N_SCHEMES);
