@@ -41,8 +41,9 @@ if(FRICREG_PETSC_BUILT)
   set(FRICREG_PETSC_VERSION_SCRIPT ${PROJECT_SOURCE_DIR}/src/petsc/fricreg_petsc.map)
   # error.c: the core's message record, compiled in (hidden in libfricreg, as rk4_classic.c in
   # the problems).
-  add_library(fricreg_petsc SHARED src/petsc/adapter.c src/petsc/eval.c src/petsc/events.c
-                                   src/petsc/jacobian.c src/petsc/options.c src/base/error.c)
+  add_library(fricreg_petsc SHARED src/petsc/adapter.c src/petsc/coupling.c src/petsc/eval.c
+                                   src/petsc/events.c src/petsc/jacobian.c src/petsc/options.c
+                                   src/base/error.c)
   add_library(fricreg::fricreg_petsc ALIAS fricreg_petsc)
   target_include_directories(fricreg_petsc PUBLIC ${FRICREG_INCLUDE_DIRS}
                              PRIVATE ${PROJECT_SOURCE_DIR}/src)

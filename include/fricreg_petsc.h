@@ -17,18 +17,22 @@
  * b = other[k]: its relative velocity is zdot_k = v_a - v_b (v_a alone against the ground),
  * and its friction force f_k acts on a and, reversed, on b. The ground is at rest: ground
  * motion is modelled in relative coordinates (an effective force -M r a_g, as fricreg_structure
- * does). Hence W = J M^-1 J^T (the paper's R, Sec. 3.3) is W_kk = 1/m_a + 1/m_b.
+ * does). Hence W = J M^-1 J^T (the paper's R, Sec. 3.3) is W_kk = 1/m_a + 1/m_b, and two
+ * contacts that share a degree of freedom d (coupled contacts: the rows of an interface whose
+ * nodes carry several contacts) are coupled by W_kl = +-1/m_d (+ where d is on the same side of
+ * both). Such a W goes to the context in compressed rows and its near-stick solve couples
+ * them (the consistent law of fricreg.h); without a shared degree of freedom W is diagonal, as
+ * before.
  *
  * What is supported across ranks. Both degrees of freedom of a contact must be owned by the
- * calling rank (in its ownership range of the Vec: not a ghost, not another rank's), and no
- * degree of freedom may belong to two contacts: W is then diagonal and block-local, each rank
- * evaluates its contacts with no communication at all, and f_eq needs no solve across ranks.
- * A contact that touches a degree of freedom of another rank is refused at creation with
- * FRICREG_PETSC_EREMOTE, on every rank at once (creation is collective), and never reaches an
- * evaluation; coupled contacts (a degree of freedom shared, W with off-diagonal entries) are
- * refused with FRICREG_EINVAL. Partition the mesh so that a contact pair stays on one rank
- * (DMPlex: a contact's two sides in one cell closure, or PetscPartitioner weights); contacts to
- * the ground never cross ranks.
+ * calling rank (in its ownership range of the Vec: not a ghost, not another rank's), so W is
+ * block-local: each rank evaluates its contacts with no communication at all, and f_eq needs
+ * no solve across ranks, coupled contacts included (they are coupled through their shared,
+ * owned degrees of freedom only). A contact that touches a degree of freedom of another rank
+ * is refused at creation with FRICREG_PETSC_EREMOTE, on every rank at once (creation is
+ * collective), and never reaches an evaluation. Partition the mesh so that a contact pair, and
+ * a group of coupled contacts, stays on one rank (DMPlex: a contact's two sides in one cell
+ * closure, or PetscPartitioner weights); contacts to the ground never cross ranks.
  *
  * Conventions: those of fricreg.h. Every function returns FRICREG_OK or a status, the object
  * keeps its last error and a message (fricreg_petsc_errmsg); the library never prints, exits
@@ -97,10 +101,16 @@ FRICREG_API const char *fricreg_petsc_strerror(int status);
  *            of freedom b, a global index owned by this rank, or -1 for the ground.
  *  out       out: the new object, released with fricreg_petsc_free. Written only on success.
  *
+ *  Contacts may share degrees of freedom (the header's coupled contacts): W = J M^-1 J^T then
+ *  has its off-diagonal entries, and creation allocates O(nnz(W) + sum |G|^2) for it and for
+ *  the tangent's blocks, G the groups of contacts W connects. More contacts in a group than
+ *  the degrees of freedom they move make W singular (redundant contacts): accepted here, an
+ *  evaluation whose near-stick set is singular fails with FRICREG_ESINGULAR.
+ *
  *  Returns FRICREG_OK; FRICREG_ENULL if out or mass is NULL, or node while m > 0;
- *  FRICREG_EINVAL if m > 2^26 on some rank, a contact has a = b, a degree of freedom is in two
- *  contacts (coupled contacts), or a mass at a contact is not > 0; FRICREG_ENONFINITE if such
- *  a mass is NaN or infinite; FRICREG_PETSC_EREMOTE if an index is outside this rank's
+ *  FRICREG_EINVAL if m > 2^26 on some rank, a contact has a = b, or a mass at a contact is not
+ *  > 0; FRICREG_ENONFINITE if such a mass is NaN or infinite; the context's refusal of a
+ *  coupled W (which J M^-1 J^T, semidefinite, only meets through memory: FRICREG_ENOMEM); FRICREG_PETSC_EREMOTE if an index is outside this rank's
  *  ownership range (another rank's degree of freedom, or none at all);
  *  FRICREG_PETSC_EPETSC; FRICREG_ENOMEM. The failing rank's status wins on the others (the
  *  largest code when several fail); without an object, a failure has no message beyond it. */
@@ -154,7 +164,8 @@ FRICREG_API int fricreg_petsc_set_from_options(fricreg_petsc *fp, PetscOptions o
 
 /** The fricreg context that evaluates the contacts, for the settings this header does not
  *  repeat (Stribeck friction: fricreg_stribeck.h). Owned by fp; NULL when the rank has no
- *  contacts. Its coupling is the adapter's (W = diag(1/m_a + 1/m_b)): do not set another.
+ *  contacts. Its coupling is the adapter's (W = J M^-1 J^T, diagonal unless contacts share
+ *  degrees of freedom): do not set another.
  *  Returns the context, not a status; NULL if fp is NULL. */
 FRICREG_API fricreg_ctx *fricreg_petsc_get_ctx(fricreg_petsc *fp);
 
@@ -206,7 +217,11 @@ FRICREG_API int fricreg_petsc_residual_add(fricreg_petsc *fp, Vec V, Vec Ffree, 
  *  its kinks as fricreg_ctx_tangent says), row a gains
  *  -(g_v velocity_shift + g_a mass_shift)(e_a - e_b) + (g_a/m_a) P_a - (g_a/m_b) P_b, row b
  *  its negative: the contact's row stays in its stencil (a contact between a and b needs row
- *  a's pattern to cover row b's columns and back; against the ground nothing new).
+ *  a's pattern to cover row b's columns and back; against the ground nothing new). Coupled
+ *  contacts: g_v and g_a become the tangent's blocks over each group G of contacts W connects
+ *  (read by 2 |G| probing products with fricreg_ctx_tangent_apply for the largest group), and
+ *  row a gains the same terms summed over its group, so the rows of a group's degrees of
+ *  freedom must each cover the columns of all of them.
  *  The forces are evaluated afresh at (V, Ffree), whatever was evaluated before.
  *
  *  V, Ffree        in: as fricreg_petsc_residual_add, at the Newton iterate.

@@ -42,6 +42,7 @@ void fricreg_petsc_free(fricreg_petsc *fp)
     free(fp->a), free(fp->b), free(fp->inv_ma), free(fp->inv_mb);
     free(fp->zdot), free(fp->afree), free(fp->f), free(fp->gv), free(fp->ga), free(fp->ones);
     free(fp->cols), free(fp->vals);
+    fr_petsc_coupling_free(&fp->coupling);
     free(fp);
 }
 
@@ -65,12 +66,10 @@ static PetscInt owned(const fricreg_petsc *fp, PetscInt g)
     return g >= fp->rstart && g < fp->rstart + fp->nlocal ? g - fp->rstart : -1;
 }
 
-/* The contacts' offsets, checked: owned, a != b, no degree of freedom in two contacts. */
+/* The contacts' offsets, checked: owned, a != b (contacts may share degrees of freedom:
+ * coupling.c). */
 static int place_contacts(fricreg_petsc *fp, const PetscInt node[], const PetscInt other[])
 {
-    unsigned char *used = calloc(fp->nlocal > 0 ? (size_t)fp->nlocal : 1, 1);
-    if (used == NULL)
-        return FRICREG_ENOMEM;
     int status = FRICREG_OK;
     for (size_t k = 0; k < fp->m && status == FRICREG_OK; k++) {
         PetscInt gb = other != NULL ? other[k] : -1;
@@ -85,22 +84,12 @@ static int place_contacts(fricreg_petsc *fp, const PetscInt node[], const PetscI
         else if (fp->a[k] == fp->b[k])
             status = fr_fail(fp, FRICREG_EINVAL, "create: contact %zu joins %lld to itself", k,
                              (long long)node[k]);
-        else if (used[fp->a[k]] || (fp->b[k] >= 0 && used[fp->b[k]]))
-            status = fr_fail(fp, FRICREG_EINVAL,
-                             "create: contact %zu shares a degree of freedom with an earlier "
-                             "contact: coupled contacts are not supported by the adapter",
-                             k);
-        if (status != FRICREG_OK)
-            break;
-        used[fp->a[k]] = 1;
-        if (fp->b[k] >= 0)
-            used[fp->b[k]] = 1;
     }
-    free(used);
     return status;
 }
 
-/* 1/m at the contacts, from the owned entries of mass; W = diag(1/m_a + 1/m_b). */
+/* 1/m at the contacts, from the owned entries of mass; W = diag(1/m_a + 1/m_b), or with
+ * shared degrees of freedom coupling.c's. */
 static int read_masses(fricreg_petsc *fp, Vec mass)
 {
     const PetscScalar *mv;
@@ -122,7 +111,9 @@ static int read_masses(fricreg_petsc *fp, Vec mass)
         }
     }
     VecRestoreArrayRead(mass, &mv);
-    if (status == FRICREG_OK && fp->m > 0 &&
+    if (status == FRICREG_OK)
+        status = fr_petsc_coupling_setup(fp);
+    if (status == FRICREG_OK && fp->m > 0 && !fp->coupled &&
         fricreg_ctx_set_coupling_diagonal(fp->ctx, fp->m, fp->zdot) != FRICREG_OK)
         status = fr_fail(fp, fricreg_ctx_errcode(fp->ctx), "create: %s",
                          fricreg_ctx_errmsg(fp->ctx));

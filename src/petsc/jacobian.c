@@ -2,12 +2,14 @@
 /* jacobian.c — the exact Jacobian of the friction term of the residual R = M A - F_free - J^T f.
  *
  * f_k = f(zdot_k, a_free,k) with zdot_k = V_a - V_b and a_free,k = F_a/m_a - F_b/m_b, so with
- * g_v, g_a its slopes (the context's tangent, diagonal since W is) and X the Newton unknown,
+ * g_v, g_a its slopes (the context's tangent, diagonal when W is) and X the Newton unknown,
  *   df_k/dX = g_v s_v (e_a - e_b) + g_a (dF_a/dX / m_a - dF_b/dX / m_b),
  * s_v = dV/dX. The free forces' rows come from the caller's Jacobian P = s_m M - dF/dX in the
  * contact rows (s_m = dA/dX): dF_a/dX = s_m m_a e_a - P_a. Row a of the residual loses df_k/dX,
- * row b gains it. Reading the rows first and adding after keeps every read on the caller's P
- * (no degree of freedom is in two contacts, so no row is read after it has been changed). */
+ * row b gains it. Coupled contacts (a shared degree of freedom) sum the same terms over their
+ * group, with the tangent's blocks (coupling.c) for g_v, g_a. Every contact's rows are read
+ * into the buffer before any is added, so every read is of the caller's P, even where a row
+ * belongs to two contacts. */
 #include <math.h>
 #include <stdlib.h>
 
@@ -49,10 +51,43 @@ static int append_row(fricreg_petsc *fp, Mat P, PetscInt row, double scale, size
     return status;
 }
 
+/* Coupled contacts: -df_k/dX = sum over k's group of l of (T^a_kl / m_a) P_a - (T^a_kl / m_b)
+ * P_b - (T^z_kl s_v + T^a_kl s_m)(e_a - e_b), a and b contact l's, into the buffer. */
+static int coupled_row(fricreg_petsc *fp, Mat P, size_t k, double s_m, double s_v, size_t *len)
+{
+    const struct fr_petsc_coupling *c = &fp->coupling;
+    size_t g = c->group[k], first = c->first[g], size = c->first[g + 1] - first;
+    const double *tz = c->tz + c->block[g] + c->place[k] * size,
+                 *ta = c->ta + c->block[g] + c->place[k] * size;
+    int status = FRICREG_OK;
+    for (size_t i = 0; i < size && status == FRICREG_OK; i++) {
+        size_t l = c->members[first + i];
+        if (ta[i] != 0.0)
+            status = append_row(fp, P, fp->rstart + fp->a[l], ta[i] * fp->inv_ma[l], len);
+        if (status == FRICREG_OK && ta[i] != 0.0 && fp->b[l] >= 0)
+            status = append_row(fp, P, fp->rstart + fp->b[l], -ta[i] * fp->inv_mb[l], len);
+    }
+    for (size_t i = 0; i < size && status == FRICREG_OK; i++) {
+        size_t l = c->members[first + i];
+        double diag = tz[i] * s_v + ta[i] * s_m;
+        if (diag == 0.0 || (status = reserve(fp, *len + 2)) != FRICREG_OK)
+            continue;
+        fp->cols[*len] = fp->rstart + fp->a[l];
+        fp->vals[(*len)++] = -diag;
+        if (fp->b[l] >= 0) {
+            fp->cols[*len] = fp->rstart + fp->b[l];
+            fp->vals[(*len)++] = diag;
+        }
+    }
+    return status;
+}
+
 /* The change of contact k's row a, -df_k/dX, into the buffer from *len (its length added);
  * row b's is its negative. */
 static int contact_row(fricreg_petsc *fp, Mat P, size_t k, double s_m, double s_v, size_t *len)
 {
+    if (fp->coupled)
+        return coupled_row(fp, P, k, s_m, s_v, len);
     PetscInt ga = fp->rstart + fp->a[k], gb = fp->rstart + fp->b[k];
     double diag = fp->gv[k] * s_v + fp->ga[k] * s_m;
     int status = append_row(fp, P, ga, fp->ga[k] * fp->inv_ma[k], len);
@@ -135,7 +170,9 @@ static int forces_and_tangent(fricreg_petsc *fp, Vec V, Vec Ffree)
         VecRestoreArrayRead(Ffree, &F);
     if (v != NULL)
         VecRestoreArrayRead(V, &v);
-    return status == FRICREG_OK ? tangent_diagonal(fp) : status;
+    if (status != FRICREG_OK)
+        return status;
+    return fp->coupled ? fr_petsc_coupling_tangent(fp) : tangent_diagonal(fp);
 }
 
 int fricreg_petsc_jacobian_add(fricreg_petsc *fp, Vec V, Vec Ffree, PetscReal mass_shift,
