@@ -375,6 +375,15 @@ static void abs_tolerances(const fricreg_sim *sim, double eps, double atol[])
     rule_tolerances(sim, eps, atol, NULL);
 }
 
+double fr_sim_dissipation_tolerance(const fricreg_sim *sim, double D)
+{
+    size_t i = 2 * fricreg_sim_ndof(sim); /* D, the last component of y */
+    double atol = sim->atol_vec != NULL ? sim->atol_vec[i]
+                  : sim->atol_from_eps  ? sim->rtol /* rule_tolerances' D */
+                                        : sim->atol;
+    return atol + sim->rtol * fabs(D);
+}
+
 int fricreg_sim_get_abs_tolerances(const fricreg_sim *sim, size_t n, double atol[])
 {
     if (sim == NULL || atol == NULL)

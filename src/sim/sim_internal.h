@@ -165,6 +165,8 @@ int fr_sim_level(const fricreg_sim *sim, int k, double tol_scale, fricreg_sim **
 void fr_sim_error_estimate(fricreg_sim *sim);
 /* The rule from eps's absolute tolerance of a velocity at eps (sim.c). */
 double fr_sim_rule_atol_v(const fricreg_sim *sim, double eps);
+/* What an adaptive run's tolerances ask of the dissipation D: atol_D + rtol |D| (sim.c). */
+double fr_sim_dissipation_tolerance(const fricreg_sim *sim, double D);
 void fr_sim_check_estimate(fricreg_sim *sim);
 
 /* With a warning handler installed, judges the checks now (fricreg_sim_warning_count), which
