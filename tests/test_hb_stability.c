@@ -10,6 +10,8 @@
  *     branch does not overhang: scaled forcings 0.05 .. 8 were tried, every solution stable).
  *   - the bilinear oscillator (bilinear_oscillator): one dof and a unilateral spring, no
  *     friction, Omega = 2.2 .. 5.
+ *   - the coupled bilinear pair (coupled_bilinear_pair): two bilinear oscillators joined by a
+ *     spring, forced alike, Omega = 1.5 .. 1.9.
  *   - the Jenkins pair: 2 unit masses, K = [2 −1; −1 2], C = 0.05 K, one Jenkins element kt =
  *     3, mu N = 0.4 on dof 1 against the ground, p_c = (1, 0), H = 15, Omega = 0.6 .. 2.2.
  *
@@ -37,6 +39,9 @@
  *     crossing of |mu| = 1 (the same root finder on the monodromy's largest |eigenvalue|). On
  *     the bilinear oscillator's period-doubled stretch (two real negative multipliers) mu_max
  *     agrees with the shooting's to 6e-4.
+ *   - the branch points of the coupled bilinear pair likewise (the fine sweep walked to from
+ *     1.9 by warm starts: a point solve without a guess fails there), and the shooting's
+ *     largest multiplier between them real and above +1.
  */
 #include <check.h>
 #include <math.h>
@@ -55,37 +60,48 @@
 #define H 15
 #define NC (2 * H + 1)
 #define MAXN 2
-#define MAXZ (2 * MAXN + 1)
+#define MAXE 2
+#define MAXZ (2 * MAXN + MAXE)
+#define MAXQ (2 * MAXE * NC)
 static const double PI = 3.14159265358979323846;
 
+/* n dofs and ne elements, J and Jn row-major ne x n. */
 struct model {
-    size_t n;
+    size_t n, ne;
     int normal;
-    double M[4], C[4], K[4], J[2], Jn[2], kt, mun, mu, n0, kn, pc[2], ps[2];
+    double M[4], C[4], K[4], J[MAXE * MAXN], Jn[MAXE * MAXN], kt[MAXE], mun[MAXE], mu[MAXE],
+        n0[MAXE], kn[MAXE], pc[2], ps[2];
+    double sweep_tol; /* > 0: the fine sweep's Newton tolerance (fricreg_hb_set_newton) */
 };
+
+/* The HB unknowns' count: (2 if normal) ne (2H + 1). */
+static size_t unknowns(const struct model *s)
+{
+    return (s->normal ? 2 : 1) * s->ne * NC;
+}
 
 static struct model contact_pair(void)
 {
-    struct model s = {.n = 2, .normal = 1};
+    struct model s = {.n = 2, .ne = 1, .normal = 1};
     const double K[4] = {140, -20, -20, 180};
     for (int i = 0; i < 4; i++)
         s.K[i] = K[i], s.C[i] = 0.002 * K[i];
     s.M[0] = s.M[3] = 1.0;
     s.J[0] = 1.0, s.Jn[1] = -1.0;
-    s.kt = 40.0, s.mu = 0.3, s.n0 = 2.0, s.kn = 100.0;
+    s.kt[0] = 40.0, s.mu[0] = 0.3, s.n0[0] = 2.0, s.kn[0] = 100.0;
     s.pc[0] = 2.0, s.pc[1] = 1.0;
     return s;
 }
 
 static struct model jenkins_pair(void)
 {
-    struct model s = {.n = 2};
+    struct model s = {.n = 2, .ne = 1};
     const double K[4] = {2, -1, -1, 2};
     for (int i = 0; i < 4; i++)
         s.K[i] = K[i], s.C[i] = 0.05 * K[i];
     s.M[0] = s.M[3] = 1.0;
     s.J[0] = 1.0;
-    s.kt = 3.0, s.mun = 0.4;
+    s.kt[0] = 3.0, s.mun[0] = 0.4;
     s.pc[0] = 1.0;
     return s;
 }
@@ -98,7 +114,7 @@ static struct model gap_pair(void)
     struct model s = contact_pair();
     s.J[0] = 0.0, s.J[1] = 1.0;
     s.Jn[0] = -1.0, s.Jn[1] = 0.0;
-    s.mu = 0.01, s.n0 = -10.0, s.kn = 500.0;
+    s.mu[0] = 0.01, s.n0[0] = -10.0, s.kn[0] = 500.0;
     return s;
 }
 
@@ -111,27 +127,49 @@ static struct model gap_pair(void)
  * through −1 (the shooting's too), and regains it near 4.908. */
 static struct model bilinear_oscillator(void)
 {
-    struct model s = {.n = 1, .normal = 1};
+    struct model s = {.n = 1, .ne = 1, .normal = 1};
     s.M[0] = 1.0, s.K[0] = 1.0, s.C[0] = 0.04;
     s.J[0] = 1.0, s.Jn[0] = -1.0;
-    s.kt = 1.0, s.mu = 0.0, s.n0 = 0.0, s.kn = 9.0;
+    s.kt[0] = 1.0, s.mu[0] = 0.0, s.n0[0] = 0.0, s.kn[0] = 9.0;
     s.pc[0] = 1.0;
+    return s;
+}
+
+/* The coupled bilinear pair: two bilinear oscillators joined by a spring kc = 0.2, forced
+ * alike (p_c = (1, 1)). Its symmetric response x_1 = x_2 is the single oscillator's (the joining
+ * spring idle); an antisymmetric perturbation sees the stiffness 1 + 2 kc, and 9 more while the
+ * orbit has x < 0: Hill's equation, whose principal tongue lies near the antisymmetric motion's
+ * bilinear frequency 2 / (1/sqrt(1.4) + 1/sqrt(10.4)) = 1.731. There a real multiplier passes
+ * through +1 at each end of a stretch where the symmetric branch is unstable: two
+ * symmetry-breaking pitchforks, branch points of the symmetric branch. */
+static struct model coupled_bilinear_pair(void)
+{
+    struct model s = {.n = 2, .ne = 2, .normal = 1};
+    const double kc = 0.2;
+    for (size_t i = 0; i < 2; i++) {
+        s.M[3 * i] = 1.0, s.C[3 * i] = 0.04, s.K[3 * i] = 1.0 + kc;
+        s.J[3 * i] = 1.0, s.Jn[3 * i] = -1.0;
+        s.kt[i] = 1.0, s.mu[i] = 0.0, s.n0[i] = 0.0, s.kn[i] = 9.0;
+        s.pc[i] = 1.0;
+    }
+    s.K[1] = s.K[2] = -kc;
+    s.sweep_tol = 1e-6;
     return s;
 }
 
 static fricreg_hb *make(const struct model *s)
 {
     fricreg_hb *hb = NULL;
-    ck_assert_int_eq(fricreg_hb_create(s->n, 1, H, &hb), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_create(s->n, s->ne, H, &hb), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_set_mass(hb, s->n, s->M), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_set_stiffness(hb, s->n, s->K), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_set_damping(hb, s->n, s->C), FRICREG_OK);
     if (s->normal)
-        ck_assert_int_eq(fricreg_hb_set_normal_elements(hb, 1, s->n, s->J, s->Jn, &s->kt, &s->mu,
-                                                        &s->n0, &s->kn),
+        ck_assert_int_eq(fricreg_hb_set_normal_elements(hb, s->ne, s->n, s->J, s->Jn, s->kt, s->mu,
+                                                        s->n0, s->kn),
                          FRICREG_OK);
     else
-        ck_assert_int_eq(fricreg_hb_set_elements(hb, 1, s->n, s->J, &s->kt, &s->mun), FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_set_elements(hb, s->ne, s->n, s->J, s->kt, s->mun), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_set_excitation(hb, s->n, s->pc, s->ps), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_set_stability(hb, 1), FRICREG_OK);
     return hb;
@@ -139,34 +177,40 @@ static fricreg_hb *make(const struct model *s)
 
 /* ---- The time-domain reference ------------------------------------------------------------- */
 
-/* The element's forces at x with the slider's offset w held: the tangential f (the trial
+/* Element e's forces at x with its slider's offset w held: the tangential f (the trial
  * kt (q − w) clipped to its bound) and the normal N; whether it slips. */
-static int element(const struct model *s, const double *x, double w, double *f, double *N)
+static int element(const struct model *s, size_t e, const double *x, double w, double *f, double *N,
+                   double *q)
 {
-    double q = 0.0, g = 0.0;
+    const double *J = s->J + e * s->n, *Jn = s->Jn + e * s->n;
+    double g = 0.0;
+    *q = 0.0;
     for (size_t k = 0; k < s->n; k++)
-        q += s->J[k] * x[k], g += s->Jn[k] * x[k];
-    double bound = s->mun;
+        *q += J[k] * x[k], g += Jn[k] * x[k];
+    double bound = s->mun[e];
     *N = 0.0;
     if (s->normal) {
-        *N = fmax(0.0, s->n0 + s->kn * g);
-        bound = s->mu * *N;
+        *N = fmax(0.0, s->n0[e] + s->kn[e] * g);
+        bound = s->mu[e] * *N;
     }
-    double trial = s->kt * (q - w);
+    double trial = s->kt[e] * (*q - w);
     *f = fmax(-bound, fmin(bound, trial));
     return fabs(trial) > bound;
 }
 
-/* z' = (v, M^-1 (p − C v − K x − J^T f − Jn^T N)) with w held (M diagonal here). */
-static void rhs(const struct model *s, double omega, double t, const double *z, double w,
+/* z' = (v, M^-1 (p − C v − K x − J^T f − Jn^T N)) with the sliders' w held (M diagonal
+ * here). */
+static void rhs(const struct model *s, double omega, double t, const double *z, const double *w,
                 double *dz)
 {
     size_t n = s->n;
-    double f, N;
-    element(s, z, w, &f, &N);
+    double f[MAXE], N[MAXE], q;
+    for (size_t e = 0; e < s->ne; e++)
+        element(s, e, z, w[e], &f[e], &N[e], &q);
     for (size_t i = 0; i < n; i++) {
-        double a = s->pc[i] * cos(omega * t) + s->ps[i] * sin(omega * t) - s->J[i] * f -
-                   s->Jn[i] * N;
+        double a = s->pc[i] * cos(omega * t) + s->ps[i] * sin(omega * t);
+        for (size_t e = 0; e < s->ne; e++)
+            a -= s->J[e * n + i] * f[e] + s->Jn[e * n + i] * N[e];
         for (size_t k = 0; k < n; k++)
             a -= s->C[i * n + k] * z[n + k] + s->K[i * n + k] * z[k];
         dz[i] = z[n + i];
@@ -174,14 +218,14 @@ static void rhs(const struct model *s, double omega, double t, const double *z, 
     }
 }
 
-/* One period from z = (x, v, w) by RK4, steps steps, the slider's return mapping after each. */
+/* One period from z = (x, v, w) by RK4, steps steps, the sliders' return mapping after each. */
 static void period(const struct model *s, double omega, int steps, const double *z0, double *z)
 {
     size_t n = s->n, d = 2 * n;
-    double dt = 2.0 * PI / omega / steps, k1[4], k2[4], k3[4], k4[4], y[4];
-    memcpy(z, z0, (d + 1) * sizeof *z);
+    double dt = 2.0 * PI / omega / steps, k1[MAXZ], k2[MAXZ], k3[MAXZ], k4[MAXZ], y[MAXZ];
+    memcpy(z, z0, (d + s->ne) * sizeof *z);
     for (int i = 0; i < steps; i++) {
-        double t = i * dt, w = z[d];
+        double t = i * dt, *w = z + d;
         rhs(s, omega, t, z, w, k1);
         for (size_t j = 0; j < d; j++)
             y[j] = z[j] + 0.5 * dt * k1[j];
@@ -194,11 +238,10 @@ static void period(const struct model *s, double omega, int steps, const double 
         rhs(s, omega, t + dt, y, w, k4);
         for (size_t j = 0; j < d; j++)
             z[j] += dt / 6.0 * (k1[j] + 2.0 * k2[j] + 2.0 * k3[j] + k4[j]);
-        double f, N, q = 0.0;
-        if (element(s, z, w, &f, &N)) {
-            for (size_t k = 0; k < n; k++)
-                q += s->J[k] * z[k];
-            z[d] = q - f / s->kt;
+        for (size_t e = 0; e < s->ne; e++) {
+            double f, N, q;
+            if (element(s, e, z, w[e], &f, &N, &q))
+                w[e] = q - f / s->kt[e];
         }
     }
 }
@@ -207,7 +250,7 @@ static void period(const struct model *s, double omega, int steps, const double 
 static void monodromy(const struct model *s, double omega, int steps, const double *z, double *Phi,
                       double scale)
 {
-    size_t dz = 2 * s->n + 1;
+    size_t dz = 2 * s->n + s->ne;
     double zp[MAXZ], zm[MAXZ], fp[MAXZ], fm[MAXZ];
     for (size_t j = 0; j < dz; j++) {
         double h = 1e-6 * scale;
@@ -221,12 +264,12 @@ static void monodromy(const struct model *s, double omega, int steps, const doub
     }
 }
 
-/* Newton's shooting on z = period(z) from z, in place; then the largest |eigenvalue| of the
- * monodromy at the orbit. */
-static double shooting_mu_max(const struct model *s, double omega, double *z)
+/* Newton's shooting on z = period(z) from z, in place; then the eigenvalue of the monodromy at
+ * the orbit of the largest modulus. */
+static gsl_complex shooting_multiplier(const struct model *s, double omega, double *z)
 {
     const int steps = 4000;
-    size_t dz = 2 * s->n + 1;
+    size_t dz = 2 * s->n + s->ne;
     double scale = 0.0, Phi[MAXZ * MAXZ], r[MAXZ], zn[MAXZ], dx[MAXZ];
     for (size_t j = 0; j < dz; j++)
         scale = fmax(scale, fabs(z[j]));
@@ -256,16 +299,23 @@ static double shooting_mu_max(const struct model *s, double omega, double *z)
     gsl_vector_complex *ev = gsl_vector_complex_alloc(dz);
     gsl_eigen_nonsymm_workspace *w = gsl_eigen_nonsymm_alloc(dz);
     ck_assert_int_eq(gsl_eigen_nonsymm(&A.matrix, ev, w), 0);
-    double top = 0.0;
-    for (size_t j = 0; j < dz; j++)
-        top = fmax(top, gsl_complex_abs(gsl_vector_complex_get(ev, j)));
+    gsl_complex top = gsl_vector_complex_get(ev, 0);
+    for (size_t j = 1; j < dz; j++)
+        if (gsl_complex_abs(gsl_vector_complex_get(ev, j)) > gsl_complex_abs(top))
+            top = gsl_vector_complex_get(ev, j);
     gsl_eigen_nonsymm_free(w);
     gsl_vector_complex_free(ev);
     return top;
 }
 
-/* The state (x, v, w) at t = 0 of the last HB solution: x and v from its coefficients, w from
- * the slider's return mapping run over two periods of its q(t) (from stuck). */
+/* The largest |eigenvalue| of the monodromy at the orbit shooting_multiplier finds. */
+static double shooting_mu_max(const struct model *s, double omega, double *z)
+{
+    return gsl_complex_abs(shooting_multiplier(s, omega, z));
+}
+
+/* The state (x, v, w) at t = 0 of the last HB solution: x and v from its coefficients, each
+ * slider's w from its return mapping run over two periods of its q(t) (from stuck). */
 static void hb_state(fricreg_hb *hb, const struct model *s, double omega, double *z)
 {
     size_t n = s->n;
@@ -279,21 +329,21 @@ static void hb_state(fricreg_hb *hb, const struct model *s, double omega, double
         }
     }
     const int samples = 4000;
-    double w = 0.0;
+    double *w = z + 2 * n;
     for (int i = 0; i <= 2 * samples; i++) {
-        double th = 2.0 * PI * i / samples, xt[MAXN], f, N, q = 0.0;
+        double th = 2.0 * PI * i / samples, xt[MAXN], f, N, q;
         for (size_t k = 0; k < n; k++) {
             xt[k] = x[k * NC];
             for (int h = 1; h <= H; h++)
                 xt[k] += x[k * NC + 2 * h - 1] * cos(h * th) + x[k * NC + 2 * h] * sin(h * th);
-            q += s->J[k] * xt[k];
         }
-        if (i == 0)
-            w = q;
-        if (element(s, xt, w, &f, &N))
-            w = q - f / s->kt;
+        for (size_t e = 0; e < s->ne; e++) {
+            if (i == 0) /* stuck where q starts */
+                element(s, e, xt, 0.0, &f, &N, &w[e]);
+            if (element(s, e, xt, w[e], &f, &N, &q))
+                w[e] = q - f / s->kt[e];
+        }
     }
-    z[2 * n] = w;
 }
 
 /* A sweep by fixed-Omega solves from q (warm starts) over count frequencies from w0 by dw:
@@ -304,7 +354,7 @@ static int sweep_against_shooting(fricreg_hb *hb, const struct model *s, double 
                                   double dw, int count, double tol)
 {
     int compared = 0;
-    size_t nq = (s->normal ? 2 : 1) * NC;
+    size_t nq = unknowns(s);
     for (int i = 0; i < count; i++) {
         double omega = w0 + i * dw, mu = 0.0, z[MAXZ];
         int stable = -1;
@@ -378,7 +428,7 @@ END_TEST
 struct crossing {
     const struct model *s;
     fricreg_hb *hb;
-    double q[2 * NC], z[MAXZ], level;
+    double q[MAXQ], z[MAXZ], level;
 };
 
 static double hb_log_mu(double omega, void *p)
@@ -386,7 +436,7 @@ static double hb_log_mu(double omega, void *p)
     struct crossing *c = p;
     int stable;
     double mu;
-    ck_assert_int_eq(fricreg_hb_solve(c->hb, omega, 2 * NC, c->q, c->q), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_solve(c->hb, omega, unknowns(c->s), c->q, c->q), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_point_stability(c->hb, FRICREG_HB_SOLUTION, &stable, &mu),
                      FRICREG_OK);
     return log(mu) - c->level;
@@ -416,16 +466,29 @@ static double brent(double (*fn)(double, void *), void *p, double a, double b)
     return x;
 }
 
+/* The solution at to, in q: a point solve without a guess at from, then warm-started ones in
+ * steps of at most 0.01 to to (a branch that does not overhang between them). */
+static void walk(fricreg_hb *hb, const struct model *s, double from, double to, double *q)
+{
+    int steps = (int)ceil(fabs(to - from) / 0.01);
+    ck_assert_int_eq(fricreg_hb_solve(hb, from, unknowns(s), NULL, q), FRICREG_OK);
+    for (int i = 1; i <= steps; i++)
+        ck_assert_int_eq(fricreg_hb_solve(hb, from + (to - from) * i / steps, unknowns(s), q, q),
+                         FRICREG_OK);
+}
+
 /* The fine sweep's crossing near omega: point solves (fixed Omega, warm-started along the grid,
- * the first without a guess) on a grid of step 1e-3 over omega ± 0.02, whose sign change of
+ * the first walked from from) on a grid of step 1e-3 over omega ± 0.02, whose sign change of
  * log mu_max − level nearest omega brackets the root, which Brent's method narrows to 1e-12.
  * level 0 is the unit circle, where the continuation's bisection puts a change of stability
  * (its stable flag flips at a margin, |mu| > 1 + 1e-6, fricreg_hb_set_stability). */
-static double fine_crossing(const struct model *s, double omega, double level)
+static double fine_crossing(const struct model *s, double omega, double level, double from)
 {
     struct crossing c = {.s = s, .hb = make(s), .level = level};
-    ck_assert_int_eq(fricreg_hb_solve(c.hb, omega - 0.02, 2 * NC, NULL, c.q), FRICREG_OK);
-    double prev = hb_log_mu(omega - 0.02, &c), lo = 0.0, dist = INFINITY, q[2 * NC];
+    if (s->sweep_tol > 0.0)
+        ck_assert_int_eq(fricreg_hb_set_newton(c.hb, s->sweep_tol, 50), FRICREG_OK);
+    walk(c.hb, s, from, omega - 0.02, c.q);
+    double prev = hb_log_mu(omega - 0.02, &c), lo = 0.0, dist = INFINITY, q[MAXQ];
     for (int i = 1; i <= 40; i++) {
         double w = omega - 0.02 + 1e-3 * i, g = hb_log_mu(w, &c);
         if ((g > 0.0) != (prev > 0.0) && fabs(w - 5e-4 - omega) < dist)
@@ -534,7 +597,7 @@ START_TEST(gap_pair_bifurcations)
         } else {
             ck_assert_int_eq(type, FRICREG_HB_NS);
             ck_assert(om > 13.5 && om < 14.6);
-            double circle = fine_crossing(&s, om, 0.0);
+            double circle = fine_crossing(&s, om, 0.0, om - 0.02);
             double q[2 * NC], z[MAXZ];
             ck_assert_int_eq(fricreg_hb_solve(hb, om, 2 * NC, NULL, q), FRICREG_OK);
             hb_state(hb, &s, om, z);
@@ -578,7 +641,7 @@ START_TEST(bilinear_period_doubling)
         ck_assert_int_eq(fricreg_hb_point_stability(hb, k + 1, &s1, &mu), FRICREG_OK);
         ck_assert_int_eq(s0, e == 0);
         ck_assert_int_eq(s1, e == 1);
-        double circle = fine_crossing(&s, om, 0.0);
+        double circle = fine_crossing(&s, om, 0.0, om - 0.02);
         ck_assert_int_eq(fricreg_hb_solve(hb, om, 2 * NC, NULL, q), FRICREG_OK);
         hb_state(hb, &s, om, z);
         double shot = shooting_crossing(&s, z, om - 0.02, om + 0.02);
@@ -589,6 +652,56 @@ START_TEST(bilinear_period_doubling)
         ck_assert_double_le(fabs(om - shot), 1e-3);
         fricreg_hb_free(hb);
     }
+}
+END_TEST
+
+/* The coupled bilinear pair's branch points at either end of its unstable stretch: each
+ * located by the continuation where a real multiplier crosses +1 off a turning point
+ * (FRICREG_HB_BP), the stable flag flipping across it, the branch symmetric; to 1e-6 of the
+ * fine sweep's crossing of the unit circle, and against the shooting's crossing (two elements,
+ * six states); between them the shooting's largest multiplier is real and above +1 (a
+ * pitchfork's, not a period doubling's −1 nor a Neimark–Sacker pair). */
+START_TEST(coupled_pair_branch_points)
+{
+    struct model s = coupled_bilinear_pair();
+    fricreg_hb *hb = make(&s);
+    ck_assert_int_eq(fricreg_hb_continue(hb, 1.5, 1.9, unknowns(&s), NULL), FRICREG_OK);
+    ck_assert_uint_eq(fricreg_hb_bifurcations(hb), 2);
+    double at[2];
+    for (size_t i = 0; i < 2; i++) {
+        int type = 0, s0 = -1, s1 = -1;
+        double om = 0.0, rms[2], mu, z[MAXZ], q[MAXQ];
+        size_t k = 0;
+        ck_assert_int_eq(fricreg_hb_bifurcation(hb, i, &type, &om, &k, s.n, rms), FRICREG_OK);
+        ck_assert_int_eq(type, FRICREG_HB_BP);
+        ck_assert_double_le(fabs(rms[0] - rms[1]), 1e-5 * rms[0]);
+        ck_assert_int_eq(fricreg_hb_point_stability(hb, k, &s0, &mu), FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_point_stability(hb, k + 1, &s1, &mu), FRICREG_OK);
+        ck_assert_int_eq(s0, i == 0);
+        ck_assert_int_eq(s1, i == 1);
+        double circle = fine_crossing(&s, om, 0.0, 1.9);
+        walk(hb, &s, 1.9, om, q);
+        hb_state(hb, &s, om, z);
+        double shot = shooting_crossing(&s, z, om - 0.02, om + 0.02);
+        if (getenv("HB_PRINT"))
+            fprintf(stderr,
+                    "BP at Omega %.10f (rms %.2e apart): unit circle %.10f (%.2e), shooting "
+                    "%.10f (%.2e)\n",
+                    om, rms[0] / rms[1] - 1.0, circle, om - circle, shot, om - shot);
+        ck_assert_double_le(fabs(om - circle), 1e-6);
+        ck_assert_double_le(fabs(om - shot), 1e-3);
+        at[i] = om;
+    }
+    double q[MAXQ], z[MAXZ], mid = 0.5 * (at[0] + at[1]);
+    walk(hb, &s, 1.9, mid, q);
+    hb_state(hb, &s, mid, z);
+    gsl_complex top = shooting_multiplier(&s, mid, z);
+    if (getenv("HB_PRINT"))
+        fprintf(stderr, "shooting's multiplier at %.4f: %.6f %+.2e i\n", mid, GSL_REAL(top),
+                GSL_IMAG(top));
+    ck_assert_double_gt(GSL_REAL(top), 1.01);
+    ck_assert_double_le(fabs(GSL_IMAG(top)), 1e-9);
+    fricreg_hb_free(hb);
 }
 END_TEST
 
@@ -688,6 +801,7 @@ Suite *hb_stability_suite(void)
     tcase_add_test(sweeps, contact_pair_against_shooting);
     tcase_add_test(sweeps, gap_pair_bifurcations);
     tcase_add_test(sweeps, bilinear_period_doubling);
+    tcase_add_test(sweeps, coupled_pair_branch_points);
     suite_add_tcase(s, sweeps);
     return s;
 }
