@@ -503,8 +503,13 @@ FRICREG_API int fricreg_hb_set_max_iterations(fricreg_hb *hb, int64_t total);
  *  a set of inequalities linear in λ), the line is the branch and its end is returned.
  *  Otherwise fricreg_hb_continue_level's continuation from λ = 1e-3 to 1, its points not
  *  stored (the branch of fricreg_hb_continue and its bifurcations are kept), and should that
- *  fail, 1.6's solution at λ = 1 if it had one. For 1.6's start alone, pass a zero q0
- *  (Newton's first step from zero, where the elements are stuck, is the stuck response).
+ *  fail, 1.6's solution at λ = 1 if it had one. Should that fail too (a response homogeneous
+ *  in the forcing, e.g. a unilateral spring without gap or preload, whose level branch is a
+ *  ray no easier than its end), the continuation in Ω to omega, points not stored, from the
+ *  nearest of Ω (1 + d) and Ω / (1 + d), d = 0.05, 0.1, 0.2, 0.4, 0.8, where 1.6's start
+ *  converges (since 1.7); on its failure too, 1.6's start's error is returned. For 1.6's
+ *  start alone, pass a zero q0 (Newton's first step from zero, where the elements are stuck,
+ *  is the stuck response).
  *  The solution is kept for fricreg_hb_displacement and, with stability on
  *  (fricreg_hb_set_stability), its stability for fricreg_hb_point_stability with
  *  FRICREG_HB_SOLUTION. Cost without a guess: three Newton solves on the linear branch;

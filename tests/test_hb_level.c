@@ -12,6 +12,7 @@
  *     H = 7. Above its linear resonance (Omega = 15.2) the amplitude against the level is an
  *     S-curve: folds near λ = 1.05 and 0.25; at Omega = 14 the branch from the linear regime
  *     folds twice below λ = 1.
+ *   - the bilinear oscillator (bilinear_oscillator), H = 7, Omega = 1.6.
  *
  * Where the numbers come from:
  *   - stuck (mu N = 1e6): (R) is linear, so every point's RMS is λ times the RMS at λ = 1
@@ -28,7 +29,10 @@
  *     Omega = 14 Newton from a zero guess (the stuck response, the start until 1.6) finds no
  *     solution (the issue: point solves failed where the continuation passed), at 15.2 the
  *     solve returns the lowest of the three solutions at λ = 1, the one reached from the linear
- *     regime. */
+ *     regime.
+ *   - the bilinear oscillator's point solve without a guess against warm-started point solves
+ *     walked down from 2 rad/s (its response is homogeneous in the forcing: the level's branch
+ *     does not reach it, the branch in Omega from a nearby frequency does). */
 #include <check.h>
 #include <math.h>
 #include <stdlib.h>
@@ -276,6 +280,47 @@ START_TEST(point_solve_follows_the_level)
 }
 END_TEST
 
+/* The bilinear oscillator of test_hb_stability.c: m = 1, k = 1, c = 0.04, a unilateral spring
+ * kn = 9 at x < 0 without gap or preload (mu = 0), p_c = 1. Its response is homogeneous in
+ * the forcing, so the level's branch is a ray that is no easier to follow than its end. */
+static fricreg_hb *bilinear_oscillator(void)
+{
+    fricreg_hb *hb = NULL;
+    const double one = 1.0, c = 0.04, Jn = -1.0, mu = 0.0, n0 = 0.0, kn = 9.0, zero = 0.0;
+    ck_assert_int_eq(fricreg_hb_create(1, 1, H, &hb), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_mass(hb, 1, &one), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 1, &one), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_damping(hb, 1, &c), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_normal_elements(hb, 1, 1, &one, &Jn, &one, &mu, &n0, &kn),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_excitation(hb, 1, &one, &zero), FRICREG_OK);
+    return hb;
+}
+
+/* Near the bilinear oscillator's resonance (1.52 rad/s) Newton fails from the plain guesses
+ * (stuck or free: here closed or open) and along the level's ray; the solve without a guess
+ * then follows the branch in Omega from a nearby frequency where they converge. Its solution
+ * against warm-started point solves walked down from 2 rad/s in steps of 0.01, to 1e-8 of q;
+ * a continuation without a guess starts from it. */
+START_TEST(homogeneous_response_from_a_nearby_frequency)
+{
+    fricreg_hb *hb = bilinear_oscillator();
+    const double omega = 1.6;
+    double q[2 * NC], walked[2 * NC], zero[2 * NC] = {0};
+    ck_assert_int_eq(fricreg_hb_solve(hb, omega, 2 * NC, zero, q), FRICREG_EWORK);
+    ck_assert_int_eq(fricreg_hb_solve(hb, omega, 2 * NC, NULL, q), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_solve(hb, 2.0, 2 * NC, NULL, walked), FRICREG_OK);
+    for (int i = 1; i <= 40; i++)
+        ck_assert_int_eq(fricreg_hb_solve(hb, 2.0 - 0.01 * i, 2 * NC, walked, walked), FRICREG_OK);
+    double scale = 0.0, diff = 0.0;
+    for (int j = 0; j < 2 * NC; j++)
+        scale = fmax(scale, fabs(walked[j])), diff = fmax(diff, fabs(q[j] - walked[j]));
+    ck_assert_double_le(diff, 1e-8 * scale);
+    ck_assert_int_eq(fricreg_hb_continue(hb, omega, 1.65, 2 * NC, NULL), FRICREG_OK);
+    fricreg_hb_free(hb);
+}
+END_TEST
+
 START_TEST(bad_input)
 {
     fricreg_hb *hb = oscillator(0.5);
@@ -322,6 +367,7 @@ static Suite *suite(void)
     tcase_add_test(tc, jenkins_against_point_solves);
     tcase_add_test(tc, fold_in_level);
     tcase_add_test(tc, point_solve_follows_the_level);
+    tcase_add_test(tc, homogeneous_response_from_a_nearby_frequency);
     tcase_add_test(tc, bad_input);
     suite_add_tcase(s, tc);
     return s;

@@ -738,9 +738,9 @@ int fricreg_hb_continue(fricreg_hb *hb, double omega0, double omega1, size_t nq,
     struct fr_error before = hb->err; /* a success keeps it: a failed start is not the call's */
     fr_hb_begin(hb, 1);
     if (q0 == NULL) {
-        /* from fricreg_hb_solve's solution without a guess: the branch reached from the
-         * linear regime; should that fail, the guesses at omega0 itself */
-        status = fr_hb_level_start(hb, fn, omega0);
+        /* from fricreg_hb_solve's solution without a guess; should that fail, the plain
+         * guesses at omega0 once more, for their message */
+        status = fr_hb_default_start(hb, fn, omega0);
         if (status == FRICREG_ENOMEM)
             return fr_hb_end(hb, status);
         if (status == FRICREG_OK)
@@ -820,7 +820,9 @@ static int on_linear_branch(fricreg_hb *hb, const char *fn, double omega, int *y
     return FRICREG_OK;
 }
 
-int fr_hb_level_start(fricreg_hb *hb, const char *fn, double omega)
+/* The branch in the excitation level at omega from the linear regime to λ = 1, the solution
+ * kept as fr_hb_solve_at's (fricreg_hb_solve's docstring). */
+static int level_start(fricreg_hb *hb, const char *fn, double omega)
 {
     /* the old start, when its solution is the branch's: its Newton once more to keep it */
     int linear = 0, status = on_linear_branch(hb, fn, omega, &linear);
@@ -833,6 +835,48 @@ int fr_hb_level_start(fricreg_hb *hb, const char *fn, double omega)
     status = run(hb, fn, &b, LEVEL_START, 1.0, NULL);
     hb->level = 1.0;
     return status;
+}
+
+/* The nearby frequencies of the frequency start, omega (1 + d) then omega / (1 + d) for each
+ * d, nearest first: far enough apart that a resonance's width (ζ of a few per cent) is left. */
+static const double START_OFFSETS[] = {0.05, 0.1, 0.2, 0.4, 0.8};
+#define START_TRIALS (2 * sizeof START_OFFSETS / sizeof START_OFFSETS[0])
+
+/* The branch in Ω to omega from the nearest frequency of START_OFFSETS where the plain guesses
+ * converge: for a response homogeneous in the forcing (a unilateral spring without gap or
+ * preload) the level's branch is a ray, its every point as hard to reach as its end. One
+ * continuation at most, its points not stored. */
+static int frequency_start(fricreg_hb *hb, const char *fn, double omega)
+{
+    int status = FRICREG_EWORK;
+    for (size_t i = 0; i < START_TRIALS; i++) {
+        double d = START_OFFSETS[i / 2], from = i % 2 ? omega / (1.0 + d) : omega * (1.0 + d);
+        status = fr_hb_solve_at(hb, fn, from, NULL, 0);
+        if (status == FRICREG_ENOMEM || hb->stopped)
+            return status;
+        if (status == FRICREG_OK) {
+            struct branch b = {.par = "Omega"};
+            return run(hb, fn, &b, from, omega, NULL);
+        }
+    }
+    return status;
+}
+
+int fr_hb_default_start(fricreg_hb *hb, const char *fn, double omega)
+{
+    int status = level_start(hb, fn, omega);
+    if (status == FRICREG_OK || status == FRICREG_ENOMEM || hb->stopped)
+        return status;
+    if ((status = fr_hb_solve_at(hb, fn, omega, NULL, 1)) == FRICREG_OK ||
+        status == FRICREG_ENOMEM || hb->stopped)
+        return status;
+    struct fr_error plain = hb->err; /* the failure reported should all three fail */
+    int plain_status = status;
+    if ((status = frequency_start(hb, fn, omega)) == FRICREG_OK || status == FRICREG_ENOMEM ||
+        hb->stopped)
+        return status;
+    hb->err = plain;
+    return plain_status;
 }
 
 size_t fricreg_hb_points(const fricreg_hb *hb)

@@ -305,9 +305,11 @@ int fr_hb_check_start(fricreg_hb *hb, const char *fn, double omega, size_t nq, c
  * the driver's last solution (at the level in force). */
 int fr_hb_solve_at(fricreg_hb *hb, const char *fn, double omega, const double *q0, int keep);
 
-/* fricreg_hb_solve's start without a guess (continuation.c): the branch in the excitation
- * level at omega from the linear regime to λ = 1, the solution kept as fr_hb_solve_at's. */
-int fr_hb_level_start(fricreg_hb *hb, const char *fn, double omega);
+/* The start without a guess of fricreg_hb_solve and fricreg_hb_continue (continuation.c): the
+ * level start; should it fail, the plain guesses at omega; then the branch in Ω from a nearby
+ * frequency where those converge. The solution kept as fr_hb_solve_at's; on failure the plain
+ * guesses' error. */
+int fr_hb_default_start(fricreg_hb *hb, const char *fn, double omega);
 
 /* The starting guess into qw: every element stuck (stuck) or slipping freely (F = 0). */
 int fr_hb_guess(fricreg_hb *hb, const char *fn, int stuck);

@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* solve.c — fricreg_hb_solve: one periodic solution at a fixed Omega, Newton (newton.c) from
- * the caller's guess, or without one from the branch in the excitation level that starts in
- * the linear regime (continuation.c's level start), the plain guesses at the level itself
- * should that fail. Above both. */
+ * the caller's guess, or without one continuation.c's default start (the branch in the
+ * excitation level from the linear regime, the plain guesses, the branch in Omega from a
+ * nearby frequency). Above both. */
 #include <string.h>
 
 #include "hb_internal.h"
@@ -23,13 +23,8 @@ int fricreg_hb_solve(fricreg_hb *hb, double omega, size_t nq, const double q0[],
     fr_hb_begin(hb, 0); /* Ω is fixed: the monitor sees the level of the start's branch */
     if (q0 != NULL)
         status = fr_hb_solve_at(hb, "solve", omega, q0, 1);
-    else {
-        /* without a guess, the branch in the level from the linear regime; should that fail,
-         * the guesses at the level itself */
-        status = fr_hb_level_start(hb, "solve", omega);
-        if (status != FRICREG_OK && status != FRICREG_ENOMEM && !hb->stopped)
-            status = fr_hb_solve_at(hb, "solve", omega, NULL, 1);
-    }
+    else
+        status = fr_hb_default_start(hb, "solve", omega);
     if ((status = fr_hb_end(hb, status)) == FRICREG_OK) {
         memcpy(q, hb->qsol, nq * sizeof(double));
         hb->err = before;
