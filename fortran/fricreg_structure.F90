@@ -78,6 +78,7 @@ module fricreg_structure_m
     procedure :: get_peak_displacement => struct_get_peak_displacement
     procedure :: get_peak_displacement_error => struct_get_peak_displacement_error
     procedure :: get_dissipation_error => struct_get_dissipation_error
+    procedure :: get_jenkins_dissipation_error => struct_get_jenkins_dissipation_error
     procedure :: get_value => struct_get_value
     procedure :: get_stat => struct_get_stat
     procedure :: warning_count => struct_warning_count
@@ -1192,6 +1193,23 @@ contains
                                        fricreg_structure_get_dissipation_error(self%ptr, &
                                                                                self%m, err))
   end function struct_get_dissipation_error
+
+  !> The error estimate of each joint element's dissipation, err(me) (energy units; +Inf where
+  !> a companion failed), me = size(err) the number of elements set,
+  !> fricreg_structure_get_jenkins_dissipation_error. FRICREG_EINVAL without an estimate;
+  !> FRICREG_ESIZE. Since 1.7.
+  function struct_get_jenkins_dissipation_error(self, err) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(inout), contiguous :: err(:)
+    integer(c_int) :: status
+    status = self%ready('get_jenkins_dissipation_error', 'structure')
+    if (status /= FRICREG_OK) return
+    status = self%unrecorded('get_jenkins_dissipation_error', &
+                             fricreg_structure_get_jenkins_dissipation_error(self%ptr, &
+                                                                             size(err, &
+                                                                                  kind=c_size_t), &
+                                                                             err))
+  end function struct_get_jenkins_dissipation_error
 
   !> One quantity (FRICREG_SVALUE_*: time, energies, the balance's residual) into value.
   !> FRICREG_EINVAL for an unknown one.

@@ -65,6 +65,7 @@
 !   FRSTPK(H, NDOF, PEAK, STAT)                  _get_peak_displacement
 !   FRSTPE(H, NDOF, ERR, STAT)                   _get_peak_displacement_error
 !   FRSTDE(H, M, ERR, STAT)                      _get_dissipation_error
+!   FRSTJE(H, ME, ERR, STAT)                     _get_jenkins_dissipation_error
 !   FRSTOD(H, INTEG, DT, RTOL, ATOL, TEND, STAT) _run_ode (ATOL = -1: tolerances from eps)
 !   FRSTOT(H, N, ATOL, STAT)                     _set_ode_abs_tolerances (N = 0 removes them)
 !   FRSTOG(H, N, ATOL, STAT)                     _get_ode_abs_tolerances
@@ -74,17 +75,17 @@
 !                                                FRCTXC (the user's own Newmark)
 !   FRCSTR(H, M, ZS, ZP, AP, SFLAGS, WP, WI, WV, EP, EI, EV, C, TOL, MAXIT, FLAGS, F, ITERS,
 !          CONV, STAT)                           fricreg_ctx_solve_step_csr (FRCSTC: _csc)
-! The getters (FRSTG*, FRSTJS, FRSTS2, FRSTIS, FRSTNF, FRSTPK, FRSTPE, FRSTDE, FRSTOG) read a const structure: C records no failure
-! of theirs, so FRSTER still shows the failure before (their STAT is the answer). So do the
-! few refusals made here,
-! before C is called, of counts that would wrap into size_t: FRSTCR's NDOF or M below 1
-! (there is no structure yet to record it), FRSTAG's and FRSTLD's N below 0, FRSTIW's,
-! FRSTIL's and FRSTIS's NS below 0, FRSTJ2's ME above 2**25 (C's limit 2 ME <= 2**26; FRICREG_EINVAL).
+! The getters (FRSTG*, FRSTJS, FRSTS2, FRSTIS, FRSTNF, FRSTPK, FRSTPE, FRSTDE, FRSTJE,
+! FRSTOG) read a const structure: C records no failure of theirs, so FRSTER still shows the
+! failure before (their STAT is the answer). So do the few refusals made here, before C is
+! called, of counts that would wrap into size_t: FRSTCR's NDOF or M below 1 (there is no
+! structure yet to record it), FRSTAG's and FRSTLD's N below 0, FRSTIW's, FRSTIL's and
+! FRSTIS's NS below 0, FRSTJ2's ME above 2**25 (C's limit 2 ME <= 2**26; FRICREG_EINVAL).
 !
 ! Generated, not here: the entry points that are one C call (FRSTMC, FRSTKC, FRSTCC, FRSTJC,
 ! FRSTJR, FRSTMX, FRSTMF, FRSTKF, FRSTCF, FRSTCA, FRSTBD, FRSTLW, FRSTIV, FRSTU0, FRSTNM, FRSTHH,
 ! FRSTCD, FRSTNT, FRSTSP, FRSTTE, FRSTGS, FRSTGF, FRSTGD, FRSTGV, FRSTEE, FRSTPK, FRSTPE,
-! FRSTDE, FRSTOD, FRSTOG, FRSTGT, FRSTJS, FRSTS2, FRSTNF) are a line each, with their doc
+! FRSTDE, FRSTJE, FRSTOD, FRSTOG, FRSTGT, FRSTJS, FRSTS2, FRSTNF) are a line each, with their doc
 ! comments, in the table fricreg_structure_f77.txt, which fortran/gen_f77.cmake turns into
 ! fricreg_structure_f77_generated.f90 at build time. Those below have logic of their own: a
 ! handle made or released, a refused count, J transposed into a scratch copy, the message.

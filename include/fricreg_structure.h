@@ -1052,6 +1052,24 @@ FRICREG_API int fricreg_structure_get_peak_displacement_error(const fricreg_stru
 FRICREG_API int fricreg_structure_get_dissipation_error(const fricreg_structure *s, size_t m,
                                                         double err[]);
 
+/** Copy the error estimate of each joint element's dissipation (the D[me] of
+ *  fricreg_structure_get_jenkins_state: Jenkins, Iwan, 2-D and lift-off elements alike) into
+ *  err[me] (energy units, >= 0; +infinity where a companion failed), as
+ *  fricreg_structure_get_dissipation_error: from the companions' runs along the same path
+ *  (dt / 2, dt / 4 and eps with it; an element has no eps, so its error is the scheme's in dt),
+ *  the estimator of fricreg_structure_set_error_estimate. An element whose three dissipations
+ *  show no order along the path gets the safe bound and, with the contacts', raises
+ *  FRICREG_WARN_NOT_ASYMPTOTIC naming it; their sum enters the warning of an estimate above 10%
+ *  of its quantity (FRICREG_WARN_ERROR_ESTIMATE). Since 1.7 (FRICREG_1.7).
+ *  s     in: the structure; not modified.
+ *  me    in: the number of elements set (0: nothing to write).
+ *  err   out: err[me]; written only on success.
+ *  Returns FRICREG_OK; FRICREG_ENULL if s or err is NULL; FRICREG_EINVAL when there is no
+ *  estimate (as fricreg_structure_get_peak_displacement_error); FRICREG_ESIZE if me is not the
+ *  number of elements set. */
+FRICREG_API int fricreg_structure_get_jenkins_dissipation_error(const fricreg_structure *s,
+                                                                size_t me, double err[]);
+
 /** Counters since creation or set_initial, for fricreg_structure_get_stat. Fixed forever. */
 enum fricreg_structure_stat {
     FRICREG_SSTAT_STEPS = 0,             /**< steps taken */

@@ -792,6 +792,11 @@ static int w_st_get_dissipation_error(void)
     st_estimated();
     return fricreg_structure_get_dissipation_error(ST(), Z(0, 1), OUTD(1));
 }
+static int w_st_get_jenkins_dissipation_error(void)
+{
+    st_estimated();
+    return fricreg_structure_get_jenkins_dissipation_error(ST(), Z(0, 0), OUTD(1));
+}
 static int w_st_get_value(void)
 {
     return fricreg_structure_get_value(ST(), N(0, FRICREG_SVALUE_TIME), OUTD(1));
@@ -1976,6 +1981,11 @@ static const struct row rows[] = {
      "0is",
      NONE,
      {HANDLE, SIZE(0, "ssss"), PTR(1, "0")}},
+    {"fricreg_structure_get_jenkins_dissipation_error",
+     w_st_get_jenkins_dissipation_error,
+     "0is",
+     NONE,
+     {HANDLE, SIZE(0, "osss"), PTR(1, "0")}},
     {"fricreg_structure_get_value",
      w_st_get_value,
      "0i",

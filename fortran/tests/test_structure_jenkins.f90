@@ -5,7 +5,8 @@
 !     constant load P = -0.731 x 2.385 N: the spring 417.3 N/m, whose average-acceleration
 !     Newmark solution is u_n = (P/k)(1 - cos(W n dt)), W = (2/dt) atan(w dt/2): at dt = 0.01 s,
 !     u(1.37 s) = -0.00113279590437900 m (tests/cli.sh's), the element's force kt u;
-!   - the element slipping (mu N = 0.05 N): it dissipates, and the energy balance closes;
+!   - the element slipping (mu N = 0.05 N): it dissipates, and the energy balance closes; the
+!     error estimate of its dissipation (get_jenkins_dissipation_error) is the C call's;
 !   - Fortran's size checks (FRICREG_ESIZE naming the array) and C's refusals (kt <= 0);
 !   - an Iwan element of two sliders (set_iwan, get_iwan_state) is two Jenkins elements on
 !     copies of its row: the same run to rounding;
@@ -22,7 +23,7 @@ program test_structure_jenkins
   use ftest
   implicit none
   type(fricreg_structure) :: st
-  real(c_double) :: u(1), f(1), w(1), D(1), D2(2), residual, input, jenkins
+  real(c_double) :: u(1), f(1), w(1), D(1), D2(2), residual, input, jenkins, De(1), Dc(1)
   real(c_double) :: u2(1), w2(2, 1), fj(2), wj(2), Dj(2)
   real(c_double), parameter :: Je(1, 1) = reshape([1.0_c_double], [1, 1])
   type(fricreg_structure) :: st2, st3
@@ -65,6 +66,21 @@ program test_structure_jenkins
   call check_status(st%get_value(FRICREG_SVALUE_INPUT, input), FRICREG_OK, 'input')
   call check(D(1) > 0.0_c_double .and. D(1) == jenkins, 'the element dissipated')
   call check(abs(residual) <= 1e-9_c_double * abs(input), 'the balance closes')
+  ! the error estimate of its dissipation (get_jenkins_dissipation_error): the C call's, bit for
+  ! bit, positive and finite; none before a step; Fortran's size is C's me
+  call check_status(st%set_error_estimate(FRICREG_ESTIMATE_TWO_COMPANIONS), FRICREG_OK, &
+                    'set_error_estimate')
+  call check_status(st%set_initial([0.0_c_double], [0.0_c_double]), FRICREG_OK, 'set_initial')
+  call check_status(st%get_jenkins_dissipation_error(De), FRICREG_EINVAL, 'no estimate yet')
+  call check_status(st%run(0.01_c_double, 1.37_c_double), FRICREG_OK, 'run with the estimate')
+  call check_status(st%get_jenkins_dissipation_error(De), FRICREG_OK, &
+                    'get_jenkins_dissipation_error')
+  call check_status(fricreg_structure_get_jenkins_dissipation_error(st%ptr, 1_c_size_t, Dc), &
+                    FRICREG_OK, 'the C call')
+  call check(De(1) == Dc(1) .and. De(1) > 0.0_c_double .and. De(1) < huge(De), &
+             'the estimate: positive, finite, the C call''s')
+  call check_status(st%get_jenkins_dissipation_error(D2), FRICREG_ESIZE, 'err of 2')
+  call check_status(st%set_error_estimate(FRICREG_ESTIMATE_OFF), FRICREG_OK, 'estimate off')
 
   ! ---- refusals --------------------------------------------------------------------------------
   call check_status(st%set_jenkins(Je, [200.0_c_double, 1.0_c_double], [0.05_c_double]), &

@@ -386,7 +386,7 @@ static const char *scheme_name(const struct structure_options *o)
  * (fricreg_structure_set_error_estimate: a companion at eps / 2 and dt / 2, or tolerances / 16,
  * err = 3 |q - q_companion|; docs/structural.md, "Error estimate"). NULL arrays: none made. */
 struct structure_estimate {
-    double *peak_err, *D_err; /* [n], [m]; +infinity where the companion failed */
+    double *peak_err, *D_err, *De_err; /* [n], [m], [me]; +infinity where a companion failed */
 };
 
 static void write_summary(FILE *out, const struct structure_options *o,
@@ -431,6 +431,8 @@ static void write_summary(FILE *out, const struct structure_options *o,
         fprintf(out, ", \"njenkins\": %zu", el->m);
         fricreg_structure_get_jenkins_state(s, el->m, NULL, NULL, run->De);
         cli_json_array(out, "dissipation_per_jenkins", el->m, run->De);
+        if (est->De_err != NULL)
+            cli_json_array(out, "dissipation_per_jenkins_error_estimate", el->m, est->De_err);
         fprintf(out, ", \"jenkins_dissipation\": %.17g, \"element_kind\": \"%s\"",
                 svalue(s, FRICREG_SVALUE_JENKINS), cli_element_kind_name(el));
         if (el->kind == CLI_ELEMENTS_IWAN || el->kind == CLI_ELEMENTS_IWAN_NORMAL)
@@ -478,11 +480,14 @@ static void write_summary(FILE *out, const struct structure_options *o,
 static void read_estimate(const fricreg_structure *s, const struct structure_input *in,
                           struct structure_estimate *est)
 {
-    double *buf = malloc((in->n + in->m) * sizeof *buf);
+    size_t me = in->el.m;
+    double *buf = malloc((in->n + in->m + me + 1) * sizeof *buf);
     if (buf != NULL && fricreg_structure_get_peak_displacement_error(s, in->n, buf) == FRICREG_OK &&
-        fricreg_structure_get_dissipation_error(s, in->m, buf + in->n) == FRICREG_OK) {
+        fricreg_structure_get_dissipation_error(s, in->m, buf + in->n) == FRICREG_OK &&
+        fricreg_structure_get_jenkins_dissipation_error(s, me, buf + in->n + in->m) == FRICREG_OK) {
         est->peak_err = buf;
         est->D_err = buf + in->n;
+        est->De_err = buf + in->n + in->m;
     } else {
         free(buf);
     }

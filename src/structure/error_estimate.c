@@ -249,32 +249,51 @@ static double dissipation_estimate(const fricreg_structure *s, size_t j, int *ou
                        second(s)->energy.per_contact[j], outside);
 }
 
-/* FRICREG_WARN_NOT_ASYMPTOTIC naming the contact whose dissipation has the largest estimate
- * relative to itself among those outside the range. */
+/* The estimate of joint element i's dissipation (the elements have no eps: their error is
+ * dt's, along the same path). */
+static double element_dissipation_estimate(const fricreg_structure *s, size_t i, int *outside)
+{
+    return estimate_of(s, s->el.dissipation[i], s->companion->el.dissipation[i],
+                       second(s)->el.dissipation[i], outside);
+}
+
+/* Among the dissipations q[count] of s, its companion and the second (contacts' or elements'),
+ * the one outside the range with the largest estimate relative to itself, if it beats *rel. */
+struct worst {
+    const char *what;
+    size_t index;
+    double rel, err, q[3];
+};
+
+static void find_worst(const double *q, const double *q2, const double *q4, size_t count,
+                       const fricreg_structure *s, const char *what, struct worst *w)
+{
+    for (size_t j = 0; j < count; j++) {
+        int outside = 0;
+        double e = estimate_of(s, q[j], q2[j], q4[j], &outside);
+        double rel = e / fmax(fabs(q[j]), DBL_MIN);
+        if (outside && rel > w->rel)
+            *w = (struct worst){what, j, rel, e, {q[j], q2[j], q4[j]}};
+    }
+}
+
+/* FRICREG_WARN_NOT_ASYMPTOTIC naming the contact or joint element whose dissipation has the
+ * largest estimate relative to itself among those outside the range. */
 static void warn_not_asymptotic(fricreg_structure *s)
 {
     const fricreg_structure *c = s->companion, *cc = second(s);
-    size_t worst = s->m;
-    double worst_rel = -1.0, worst_err = 0.0;
-    for (size_t j = 0; j < s->m; j++) {
-        int outside = 0;
-        double e = dissipation_estimate(s, j, &outside);
-        double rel = e / fmax(fabs(s->energy.per_contact[j]), DBL_MIN);
-        if (outside && rel > worst_rel) {
-            worst = j;
-            worst_rel = rel;
-            worst_err = e;
-        }
-    }
-    if (worst == s->m)
+    struct worst w = {.rel = -1.0};
+    find_worst(s->energy.per_contact, c->energy.per_contact, cc->energy.per_contact, s->m, s,
+               "contact", &w);
+    find_worst(s->el.dissipation, c->el.dissipation, cc->el.dissipation, s->el.me, s,
+               "joint element", &w);
+    if (w.what == NULL)
         return;
-    double q = s->energy.per_contact[worst], q2 = c->energy.per_contact[worst],
-           q4 = cc->energy.per_contact[worst];
     fr_warn(&s->warnings, FRICREG_WARN_NOT_ASYMPTOTIC,
-            "error estimate not asymptotic: contact %zu's dissipation %.7g, %.7g, %.7g at eps, "
+            "error estimate not asymptotic: %s %zu's dissipation %.7g, %.7g, %.7g at eps, "
             "eps/2, eps/4 shows no order in eps (the run and its companion may agree on a wrong "
             "value); its estimate is the safe bound %.3g: halve eps and dt",
-            worst, q, q2, q4, worst_err);
+            w.what, w.index, w.q[0], w.q[1], w.q[2], w.err);
 }
 
 void fr_estimate_check(fricreg_structure *s)
@@ -295,6 +314,10 @@ void fr_estimate_check(fricreg_structure *s)
     for (size_t j = 0; j < s->m; j++) {
         D += fabs(s->energy.per_contact[j]);
         D_err += dissipation_estimate(s, j, &outside);
+    }
+    for (size_t i = 0; i < s->el.me; i++) { /* the joint elements' beside the contacts' */
+        D += fabs(s->el.dissipation[i]);
+        D_err += element_dissipation_estimate(s, i, &outside);
     }
     if (outside)
         warn_not_asymptotic(s);
@@ -364,5 +387,18 @@ int fricreg_structure_get_dissipation_error(const fricreg_structure *s, size_t m
     for (size_t j = 0; j < m; j++)
         err[j] = s->estimate_state == FR_ESTIMATE_FAILED ? INFINITY
                                                          : dissipation_estimate(s, j, &(int){0});
+    return FRICREG_OK;
+}
+
+int fricreg_structure_get_jenkins_dissipation_error(const fricreg_structure *s, size_t me,
+                                                    double err[])
+{
+    int status = estimate_ready(s, me, s != NULL ? s->el.me : 0, err);
+    if (status != FRICREG_OK)
+        return status;
+    for (size_t i = 0; i < me; i++)
+        err[i] = s->estimate_state == FR_ESTIMATE_FAILED
+                     ? INFINITY
+                     : element_dissipation_estimate(s, i, &(int){0});
     return FRICREG_OK;
 }
