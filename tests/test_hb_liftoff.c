@@ -415,6 +415,61 @@ static int iwan_newmark_rms(const struct jenkins_model *s, double omega, double 
 
 /* HB at H = 21 against the time domain, where the element opens and closes and each slider
  * slips in every period: within 1e-3 relative in each dof's RMS, as the Jenkins element's. */
+/* The backbone of mode 0 (fricreg_hb_nma, modal damping) from stuck and closed through slip and
+ * lift-off: one Iwan slider is the Jenkins element with lift-off, bit for bit; four equal
+ * sliders are it to 1e-10. Up to a = 0.03 every element is stuck and closed (they slip from
+ * a = 0.05 or so): omega is the linear mode's of K + kt e0 e0^T + kn e1 e1^T against M
+ * (nma_stuck.c's stiffness of the rows: kt, the sliders' sum, and kn), the root of
+ * det(K_0 − lambda M) = 0 in closed form, to 1e-12; beyond, omega never rises (the contact
+ * softens). The march once jumped at a = 0.0146 to omega = 1.96 (a 16-point grid from 0.01),
+ * its predictor scaling the normal row's mean, the preload's static deflection, with a. */
+START_TEST(iwan_normal_backbone_is_jenkins_normal)
+{
+    struct jenkins_model s = contact();
+    const int H = 9;
+    const size_t np = 16;
+    double k4[4], mu4[4];
+    for (int j = 0; j < 4; j++) {
+        k4[j] = s.kt[0] / 4.0;
+        mu4[j] = s.mu[0] / 4.0;
+    }
+    fricreg_hb *hb[3] = {make(&s, H, 1), make_iwan(&s, H, 1, s.kt, s.mu),
+                         make_iwan(&s, H, 4, k4, mu4)};
+    for (int i = 0; i < 3; i++) {
+        ck_assert_int_eq(fricreg_hb_nma(hb[i], 0, FRICREG_HB_NMA_DAMPING_MODAL, 0.01, 3.0, np),
+                         FRICREG_OK);
+        ck_assert_uint_eq(fricreg_hb_nma_points(hb[i]), np);
+    }
+    /* det(K_0 − lambda M) = a lambda^2 − b lambda + c, K_0 = K + diag(kt, kn), M diagonal */
+    double k00 = s.K[0] + s.kt[0], k11 = s.K[3] + s.kn[0], qa = s.M[0] * s.M[3],
+           qb = k00 * s.M[3] + k11 * s.M[0], qc = k00 * k11 - s.K[1] * s.K[2];
+    double omega_stuck = sqrt((qb - sqrt(qb * qb - 4.0 * qa * qc)) / (2.0 * qa));
+    double first = 0.0, last = 0.0;
+    for (size_t k = 0; k < np; k++) {
+        double a[3], w[3], z[3];
+        for (int i = 0; i < 3; i++)
+            ck_assert_int_eq(fricreg_hb_nma_point(hb[i], k, &a[i], &w[i], &z[i], 0, 0, NULL),
+                             FRICREG_OK);
+        if (getenv("HB_PRINT"))
+            fprintf(stderr, "a %.6g omega %.9f zeta %.6g | a4 %.6g omega4 %.9f\n", a[0], w[0], z[0],
+                    a[2], w[2]);
+        ck_assert(a[1] == a[0] && w[1] == w[0] && z[1] == z[0]);
+        ck_assert_double_le(fabs(w[2] - w[0]), 1e-10 * w[0]);
+        ck_assert_double_le(fabs(z[2] - z[0]), 1e-10 * fmax(z[0], 1e-3));
+        if (a[0] <= 0.03)
+            ck_assert_double_le(fabs(w[0] - omega_stuck), 1e-12 * omega_stuck);
+        if (k == 0)
+            first = w[0];
+        else
+            ck_assert_double_le(w[0], last);
+        last = w[0];
+    }
+    ck_assert_double_lt(last, 0.99 * first); /* it softened: the element slipped or opened */
+    for (int i = 0; i < 3; i++)
+        fricreg_hb_free(hb[i]);
+}
+END_TEST
+
 START_TEST(iwan_partial_liftoff_against_time_domain)
 {
     struct jenkins_model s = contact();
@@ -505,6 +560,7 @@ int main(void)
     tcase_add_test(tc, partial_liftoff_against_time_domain);
     tcase_add_test(tc, sparse_model_equals_dense);
     tcase_add_test(tc, iwan_normal_is_jenkins_normal);
+    tcase_add_test(tc, iwan_normal_backbone_is_jenkins_normal);
     tcase_add_test(tc, iwan_partial_liftoff_against_time_domain);
     tcase_add_test(tc, bad_input);
     suite_add_tcase(s, tc);

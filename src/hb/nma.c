@@ -4,7 +4,8 @@
  * linear mode of the structure with its elements stuck (nma_linear.c): below the smallest
  * amplitude at which an element slips (or opens) the mode is that linear mode exactly, so the
  * march starts there (or at a0 if smaller) and each step's predictor is the secant of the last
- * two solutions in (q/a, ω, ξ) against log a (the first step's the last solution's shape). A
+ * two solutions in (q/a, ω, ξ) against log a, each row's mean in itself (the first step's the
+ * last solution's shape). A
  * step whose corrector fails is halved, down to 1/1024 of the grid's step. The backbone of a
  * friction-damped mode is monotone in a (no turning point: ω falls and ζ changes smoothly as
  * the elements slip more), which is what a natural parameter needs; a mode that folds in a (an
@@ -36,7 +37,8 @@ static struct fr_hb_nma *alloc_state(const fricreg_hb *hb, size_t npoints)
     struct fr_hb_nma *s = calloc(1, sizeof *s);
     if (s == NULL)
         return NULL;
-    *s = (struct fr_hb_nma){.n = n, .nq = nq, .nd = nd, .cap = npoints, .stride = nq + 3};
+    *s = (struct fr_hb_nma){
+        .n = n, .nq = nq, .nd = nd, .nc = hb->nc, .cap = npoints, .stride = nq + 3};
     s->phi = calloc(3 * n, sizeof(double));
     s->dGx = malloc((2 * H1 * m * m + 2 * H1 * m) * sizeof(double));
     s->A = malloc((nd * nd + 10 * nd) * sizeof(double));
@@ -95,15 +97,18 @@ static void linear_guess(const fricreg_hb *hb, struct fr_hb_nma *s, double a)
 }
 
 /* The predictor at log-amplitude t from the last solution yc (at tc) and the one before, yo
- * (at to; have_prev), in (q/a, ω, ξ). */
+ * (at to; have_prev), in (q/a, ω, ξ): the harmonics scale with a, but each row's mean does
+ * not (a preload's static deflection is there at every amplitude), so it is extrapolated as
+ * itself, as ω and ξ are. */
 static void predict(struct fr_hb_nma *s, double t, double tc, double to, int have_prev)
 {
     size_t nq = s->nq;
     double r = have_prev ? (t - tc) / (tc - to) : 0.0, ac = exp(tc), ao = exp(to), a = exp(t);
     for (size_t j = 0; j < s->nd; j++) {
-        double uc = j < nq ? s->yc[j] / ac : s->yc[j], uo = j < nq ? s->yo[j] / ao : s->yo[j];
+        int scaled = j < nq && j % s->nc != 0;
+        double uc = scaled ? s->yc[j] / ac : s->yc[j], uo = scaled ? s->yo[j] / ao : s->yo[j];
         double u = have_prev ? uc + r * (uc - uo) : uc;
-        s->y[j] = j < nq ? a * u : u;
+        s->y[j] = scaled ? a * u : u;
     }
 }
 

@@ -10,6 +10,7 @@
 
 struct fr_hb_nma {
     size_t n, nq, nd; /* dofs, the condensed unknowns q, nd = nq + 2 with ω and ξ */
+    size_t nc;        /* 2H + 1 coefficients a row of q, the mean first */
     int modal;        /* FRICREG_HB_NMA_DAMPING_MODAL: C replaced by ξ_k M */
     double omega_k;   /* the linearized (elements stuck) mode's circular frequency */
     double xi_k;      /* and φ_k^T C φ_k = 2 ζ_k ω_k */
