@@ -10,8 +10,10 @@
  * problem). It prints one CSV line per run and the fractions: bounded (estimate + the
  * reference's uncertainty >= error) and within 10x (estimate <= 10 max(error, uncertainty)).
  * A second part sweeps the caller's atol (1e-2 … 1e-10) and counts runs that neither meet
- * their estimate nor warn. Usage: fricreg-bench-error-estimate [--quick | --atol-only]: about
- * 15 minutes (the chain of 1000's adaptive runs most of them); --atol-only the second part. */
+ * their estimate nor warn. Usage: fricreg-bench-error-estimate [--quick | --atol-only]
+ * [--two-companions]: about 15 minutes (the chain of 1000's adaptive runs most of them);
+ * --atol-only the second part; --two-companions runs the default estimator of 1.7
+ * (FRICREG_ESTIMATE_TWO_COMPANIONS, about twice the time) instead of 1.6's. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -21,6 +23,9 @@
 #include "reference.h"
 
 enum { NPROB = 5 };
+
+/* The estimator calibrated: 1.6's one companion, or with --two-companions 1.7's default. */
+static int estimator = FRICREG_ESTIMATE_ONE_COMPANION;
 
 static const struct bench_problem problems[NPROB] = {
     {"osc_stick", "oscillator a = 2, omega = 0.5", FRICREG_SYSTEM_OSCILLATOR, 2.0, 0.5, 0, 4, 1e-4,
@@ -89,7 +94,7 @@ static void run_one(const struct bench_problem *p, const struct bench_reference 
     if (status == FRICREG_OK)
         status = fricreg_sim_set_integrator(sim, c->integrator, c->dt, c->rtol, c->atol);
     if (status == FRICREG_OK)
-        status = fricreg_sim_set_error_estimate(sim, FRICREG_ESTIMATE_ONE_COMPANION); /* 3 |d1| */
+        status = fricreg_sim_set_error_estimate(sim, estimator);
     double t0 = bench_cpu_seconds();
     if (status == FRICREG_OK)
         status = fricreg_sim_run_cycles(sim, p->cycle);
@@ -248,8 +253,23 @@ static int extrapolated_reference(const struct bench_problem *p, struct bench_re
 
 int main(int argc, char **argv)
 {
-    int quick = argc > 1 && strcmp(argv[1], "--quick") == 0;
-    int atol_only = argc > 1 && strcmp(argv[1], "--atol-only") == 0; /* the second part */
+    int quick = 0, atol_only = 0; /* atol_only: the second part */
+    for (int i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "--quick") == 0)
+            quick = 1;
+        else if (strcmp(argv[i], "--atol-only") == 0)
+            atol_only = 1;
+        else if (strcmp(argv[i], "--two-companions") == 0)
+            estimator = FRICREG_ESTIMATE_TWO_COMPANIONS;
+        else {
+            fprintf(stderr, "usage: fricreg-bench-error-estimate [--quick | --atol-only] "
+                            "[--two-companions]\n");
+            return 2;
+        }
+    }
+    printf("# estimator: %s\n", estimator == FRICREG_ESTIMATE_TWO_COMPANIONS
+                                    ? "two companions (1.7's default)"
+                                    : "one companion (1.6's)");
     struct bench_reference refs[NPROB];
     for (int k = 0; k < NPROB; k++) {
         if (atol_only && k != 0 && k != 2)
