@@ -201,6 +201,7 @@ START_TEST(test_jenkins_bounds)
     const int steps[] = {300, 450, 675, 1000, 1500, 2250, 3375, 5000, 7500, 11250};
     enum { RUNS = 2 * sizeof steps / sizeof steps[0] };
     double ratio[RUNS];
+    int warned = 0;
     for (int r = 0; r < RUNS; r++) {
         fricreg_structure *s = jenkins_oscillator();
         double dt = T_END / steps[r / 2], D, err;
@@ -212,6 +213,7 @@ START_TEST(test_jenkins_bounds)
         ck_assert_int_eq(fricreg_structure_get_jenkins_dissipation_error(s, 1, &err), FRICREG_OK);
         double e = fabs(D - D_ref);
         ratio[r] = err / e;
+        warned += fricreg_structure_warning_count(s) > 0;
         for (size_t k = 0; k < fricreg_structure_warning_count(s); k++) {
             int code = 0;
             ck_assert_int_eq(fricreg_structure_get_warning(s, k, &code, NULL, 0), FRICREG_OK);
@@ -226,6 +228,7 @@ START_TEST(test_jenkins_bounds)
                       e, err);
         fricreg_structure_free(s);
     }
+    ck_assert_int_ge(warned, RUNS / 4); /* the element is judged: 12 of the 20 warn */
     qsort(ratio, RUNS, sizeof ratio[0], by_value);
     ck_assert_double_le(0.5 * (ratio[RUNS / 2 - 1] + ratio[RUNS / 2]), 10.0);
 }
