@@ -343,45 +343,38 @@ double fr_sim_rule_atol_v(const fricreg_sim *sim, double eps)
     return fmin(FR_SIM_ATOL_V_PER_EPS * eps * sim->rule_scale, sim->rtol);
 }
 
+/* Component i of the rule from eps at eps for y = (x, v, D): fr_sim_rule_atol_v on the
+ * velocities, rtol on the positions and on D. */
+static double rule_tolerance(const fricreg_sim *sim, double eps, size_t i)
+{
+    size_t n = fricreg_sim_ndof(sim);
+    return i >= n && i < 2 * n ? fr_sim_rule_atol_v(sim, eps) : sim->rtol;
+}
+
 /* The rule from eps at eps: absolute tolerances atol[2 ndof + 1] of y = (x, v, D) and the
  * weights w[2 ndof + 1] of rtol in each component (w NULL: not asked for). */
 static void rule_tolerances(const fricreg_sim *sim, double eps, double atol[], double w[])
 {
     size_t n = fricreg_sim_ndof(sim);
-    double atol_v = fr_sim_rule_atol_v(sim, eps), atol_x = sim->rtol;
-    for (size_t i = 0; i < n; i++) {
-        atol[i] = atol_x;
-        atol[n + i] = atol_v;
-    }
-    atol[2 * n] = sim->rtol;
+    for (size_t i = 0; i < 2 * n + 1; i++)
+        atol[i] = rule_tolerance(sim, eps, i);
     for (size_t i = 0; w != NULL && i < 2 * n + 1; i++)
         w[i] = i >= n && i < 2 * n ? 0.0 : 1.0;
 }
 
-/* The absolute tolerances of an adaptive run at eps, into atol[2 ndof + 1] for y = (x, v, D):
- * the rule from eps, the caller's, or atol in every component. */
-static void abs_tolerances(const fricreg_sim *sim, double eps, double atol[])
+/* Component i of the absolute tolerances of an adaptive run at eps, y = (x, v, D): the
+ * caller's, atol in every component, or the rule from eps. */
+static double abs_tolerance(const fricreg_sim *sim, double eps, size_t i)
 {
-    size_t n = fricreg_sim_ndof(sim), dim = 2 * n + 1;
-    if (sim->atol_vec != NULL) {
-        memcpy(atol, sim->atol_vec, dim * sizeof *atol);
-        return;
-    }
-    if (!sim->atol_from_eps) {
-        for (size_t i = 0; i < dim; i++)
-            atol[i] = sim->atol;
-        return;
-    }
-    rule_tolerances(sim, eps, atol, NULL);
+    if (sim->atol_vec != NULL)
+        return sim->atol_vec[i];
+    return sim->atol_from_eps ? rule_tolerance(sim, eps, i) : sim->atol;
 }
 
 double fr_sim_dissipation_tolerance(const fricreg_sim *sim, double D)
 {
     size_t i = 2 * fricreg_sim_ndof(sim); /* D, the last component of y */
-    double atol = sim->atol_vec != NULL ? sim->atol_vec[i]
-                  : sim->atol_from_eps  ? sim->rtol /* rule_tolerances' D */
-                                        : sim->atol;
-    return atol + sim->rtol * fabs(D);
+    return abs_tolerance(sim, eps_in_use(sim), i) + sim->rtol * fabs(D);
 }
 
 int fricreg_sim_get_abs_tolerances(const fricreg_sim *sim, size_t n, double atol[])
@@ -390,10 +383,9 @@ int fricreg_sim_get_abs_tolerances(const fricreg_sim *sim, size_t n, double atol
         return FRICREG_ENULL;
     if (n != 2 * fricreg_sim_ndof(sim) + 1 || (sim->atol_vec != NULL && sim->atol_n != n))
         return FRICREG_ESIZE;
-    if (adaptive(sim))
-        abs_tolerances(sim, eps_in_use(sim), atol);
-    else
-        memset(atol, 0, n * sizeof *atol);
+    double eps = eps_in_use(sim); /* fixed steps: no tolerances, zeros */
+    for (size_t i = 0; i < n; i++)
+        atol[i] = adaptive(sim) ? abs_tolerance(sim, eps, i) : 0.0;
     return FRICREG_OK;
 }
 
