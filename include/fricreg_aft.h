@@ -62,7 +62,8 @@
  *     velocity-only law of fricreg.h needs only f(u'(θ)) at the samples); here it serves the
  *     Jenkins and Iwan elements, beside the exact path, for comparison.
  * Lift-off (a normal displacement): both paths, fricreg_aft_jenkins_normal_exact and
- * fricreg_aft_jenkins_normal_sampled; 2-D elements: neither path yet.
+ * fricreg_aft_jenkins_normal_sampled; the 3-D contact element (2-D tangential, normal lift-off):
+ * the sampled path, fricreg_aft_jenkins_2d_normal_sampled (since 1.7).
  *
  * One object for both paths, with the harmonics H and the samples N fixed at create: it holds
  * every buffer an evaluation needs (the companion matrix, the roots, the pieces, the samples,
@@ -104,7 +105,8 @@ typedef struct fricreg_aft fricreg_aft;
 
 /** Create an AFT workspace for harmonics 0..H and, for the sampled path, N samples a period.
  *
- *  All memory is allocated here: O(H^2 + N H) doubles.
+ *  All memory is allocated here: O(H^2 + N H) doubles (since 1.7 8 N more, for the 3-D
+ *  contact element).
  *
  *  harmonics  H, 1 <= H <= FRICREG_AFT_MAX_HARMONICS.
  *  samples    N: 0 (the exact path only: the sampled functions then fail with
@@ -292,6 +294,61 @@ FRICREG_API int fricreg_aft_jenkins_normal_exact(fricreg_aft *aft, double kt, do
                                                  double kn, size_t n, const double u[],
                                                  const double g[], double f[], double nf[],
                                                  double jac[]);
+
+/** Sampled AFT of one 3-D contact element: a 2-D Jenkins element in the tangential plane (an
+ *  isotropic Coulomb disk |f| <= mu N with the radial return of fricreg_jenkins.h, dim = 2)
+ *  under the normal law N = max(0, N0 + kn g) with lift-off (fricreg_jenkins_set_normal; the
+ *  element of fricreg_structure_set_jenkins_2d_normal), for tangential displacements ux, uy and
+ *  a normal one g (positive pressing) given by their coefficients. Returns the coefficients of
+ *  the tangential forces fx, fy and of the normal force N over the periodic response, and
+ *  their Jacobian, from the return mapping at N samples a period and GSL's FFT.
+ *
+ *  The periodic response (src/joint/aft_2d.c): where the contact opens in the period the
+ *  slider follows u there, so one period from the last opening is periodic. Otherwise the
+ *  march starts from the centre of the smallest circle enclosing the sampled orbit (ux, uy)
+ *  (1-D: the centred slider (max u + min u)/2 of the header comment, so f is continuous across
+ *  the threshold of slip): a period without slip is the periodic state (a stick throughout);
+ *  a slip is marched until the slider at the period's start repeats to the bit (4 periods),
+ *  then found by Newton's method on w = Phi(w), the period's map, whose 2 x 2 derivative is a
+ *  contraction wherever the element slips. The Jacobian is the chain rule through the samples,
+ *  with the slider at the periodic start differentiated through w = Phi(w) (exact for the
+ *  sampled map); where a stick throughout follows slips of the first periods, the stuck
+ *  slider's motion with u is left out (the tangent of a held slider). With uy = 0 and kn = 0,
+ *  fx, N and their Jacobian's (u, g) block equal fricreg_aft_jenkins_normal_sampled's (the
+ *  forces to the bit where the element slips or the centred slider holds; tests/test_aft_2d.c).
+ *  Sampling error: the return mapping at the samples drags the slider along chords of a
+ *  curved orbit, one sample behind the continuous element (as a time-stepped element is one
+ *  step behind), so the error is first order in 1/N where the slip turns: a circular orbit of
+ *  radius r > r_b = mu N0/kt under the constant normal force N0 (kn = 0) dissipates
+ *  2 pi r_w mu N0 per period, r_w = sqrt(r^2 - r_b^2), and the value at N samples lies
+ *  2 pi^2 mu N0 r_b / N below it at every r (to 6 %); slips on a line keep the O(N^-2) of the
+ *  kinks. fricreg_hb_set_jenkins_2d_normal
+ *  takes N = 64 (2H + 1) rounded up to a power of two.
+ *
+ *  kt     tangential stiffness > 0 (finite), force per unit displacement.
+ *  mu     friction coefficient >= 0 (finite), nondimensional.
+ *  n0     preload N0 (finite), force units: the normal force at g = 0 (negative: open at g = 0).
+ *  kn     normal stiffness >= 0 (finite), force per unit displacement.
+ *  n      must equal 2H + 1.
+ *  u[2n]  tangential displacement coefficients: ux's n (u0, a_1, b_1, ...), then uy's; finite.
+ *  g[n]   normal displacement coefficients, same layout, finite.
+ *  f[2n]  out: tangential force coefficients, fx's then fy's, force units.
+ *  nf[n]  out: normal force coefficients of N(θ), force units.
+ *  jac[3n 3n]  out, or NULL if not wanted: row-major, rows (fx, fy, nf), columns (ux, uy, g):
+ *         jac[3n i + j] = ∂(fx, fy, nf)[i]/∂(ux, uy, g)[j]; ∂nf/∂u = 0.
+ *  The outputs are written after u and g are read: they may alias them.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if aft, u, g, f or nf is NULL; FRICREG_EINVAL if the
+ *  object was created with N = 0, kt <= 0, mu < 0 or kn < 0; FRICREG_ESIZE if n is not
+ *  2H + 1; FRICREG_ENONFINITE if kt, mu, n0, kn, some u[j] or g[j] is NaN or infinite, or the
+ *  scales of fricreg_aft_jenkins_normal_sampled overflow (either axis for u). All inputs are
+ *  checked before anything is computed or written. Cost O(N H) per period marched (up to 4,
+ *  then up to 40 Newton steps, each a period), O(N H log N) with jac (9H FFTs of length N and
+ *  two or three marches per column); no allocation. Since 1.7 (FRICREG_1.7). */
+FRICREG_API int fricreg_aft_jenkins_2d_normal_sampled(fricreg_aft *aft, double kt, double mu,
+                                                      double n0, double kn, size_t n,
+                                                      const double u[], const double g[],
+                                                      double f[], double nf[], double jac[]);
 
 /** Status of the last failed call on aft. Returns that code, or FRICREG_OK if none (or aft
  *  NULL). A successful call does not clear it. Since 1.6. */

@@ -40,7 +40,7 @@ int fricreg_aft_create(int harmonics, size_t samples, fricreg_aft **out)
     if (a->brent != NULL)
         *a->brent = (gsl_root_fsolver){.type = gsl_root_fsolver_brent, .state = state};
     if (N != 0) {
-        a->ctab = malloc((5 * N + nc * N) * sizeof(double));
+        a->ctab = malloc((13 * N + nc * N) * sizeof(double));
         a->anchor = malloc(N * sizeof(size_t));
     }
     if (a->brent == NULL)
@@ -68,6 +68,7 @@ int fricreg_aft_create(int harmonics, size_t samples, fricreg_aft **out)
         a->fs = a->us + N;
         a->ts = a->fs + N;
         a->ds = a->ts + N;
+        a->s2 = a->ds + nc * N;
         for (size_t n = 0; n < N; n++) {
             double th = 6.283185307179586 * (double)n / (double)N;
             a->ctab[n] = cos(th);
@@ -248,6 +249,30 @@ int fricreg_aft_jenkins_normal_sampled(fricreg_aft *aft, double kt, double mu, d
                        "overflows",
                        fn, mu * normal_scale(aft, n0, kn, g), kt);
     fr_aft_sampled_normal(aft, kt, mu, n0, kn, u, g, f, nf, jac);
+    return FRICREG_OK;
+}
+
+int fricreg_aft_jenkins_2d_normal_sampled(fricreg_aft *aft, double kt, double mu, double n0,
+                                          double kn, size_t n, const double u[], const double g[],
+                                          double f[], double nf[], double jac[])
+{
+    static const char fn[] = "jenkins_2d_normal_sampled";
+    if (aft == NULL)
+        return FRICREG_ENULL;
+    double unit = 1.0; /* check() reads a slider bound: the normal law is checked apart */
+    int status = check(aft, fn, 1, 1, &kt, &unit, n, u, f);
+    if (status == FRICREG_OK) /* uy, as ux */
+        status = check(aft, fn, 1, 1, &kt, &unit, n, u + n, f);
+    if (status == FRICREG_OK)
+        status = check_normal(aft, fn, mu, n0, kn, g, nf);
+    if (status != FRICREG_OK)
+        return status;
+    if (!isfinite(8.0 * mu * normal_scale(aft, n0, kn, g) / kt))
+        return fr_fail(aft, FRICREG_ENONFINITE,
+                       "%s: the slider's excursion mu (|n0| + kn (1 + sum |g[j]|))/kt = %g/%g "
+                       "overflows",
+                       fn, mu * normal_scale(aft, n0, kn, g), kt);
+    fr_aft_sampled_2d_normal(aft, kt, mu, n0, kn, u, g, f, nf, jac);
     return FRICREG_OK;
 }
 

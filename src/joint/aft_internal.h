@@ -48,6 +48,7 @@ struct fricreg_aft {
                             stopped, or N for the centred stick (aft_sampled.c) */
     double *ds;          /* [nc N] the Jacobian's columns in time, column j at [N j], summed
                             over the sliders, then transformed in place */
+    double *s2;          /* [8 N] the 2-D element's samples and record (aft_2d.c) */
 
     /* results, copied out on success */
     double *fout; /* [nc] */
@@ -115,6 +116,16 @@ void fr_aft_sampled(fricreg_aft *aft, size_t ns, const double *k, const double *
  * fail on checked inputs; the outputs are written last, so they may alias u and g. */
 void fr_aft_sampled_normal(fricreg_aft *aft, double kt, double mu, double n0, double kn,
                            const double *u, const double *g, double *f, double *nf, double *jac);
+
+/* Sampled AFT of the 3-D contact element (aft_2d.c): from the checked u[2 nc] (ux, then uy)
+ * and g[nc], the coefficients of fx, fy into f[2 nc] and of N into nf[nc] and, with jac not
+ * NULL, the Jacobian jac[3nc x 3nc] (fricreg_aft_jenkins_2d_normal_sampled). Cannot fail on
+ * checked inputs; the outputs are written after u and g are read. */
+void fr_aft_sampled_2d_normal(fricreg_aft *aft, double kt, double mu, double n0, double kn,
+                              const double *u, const double *g, double *f, double *nf, double *jac);
+
+/* The samples of the trigonometric polynomial c[nc] into x[N]. */
+void fr_aft_sample_values(const fricreg_aft *a, const double *c, double *x);
 
 /* phi_j at sample n of the sampled path, by the tables: cos, sin of h theta_n at index
  * h n mod N. */

@@ -30,8 +30,7 @@
 #define MAX_PERIODS 16 /* periods marched in search of the periodic state without opening */
 #define OPEN (-1.0)    /* a sample's tangent mark when the contact is open */
 
-/* The samples of the trigonometric polynomial c[nc] into x[N]. */
-static void sample(const fricreg_aft *a, const double *c, double *x)
+void fr_aft_sample_values(const fricreg_aft *a, const double *c, double *x)
 {
     for (size_t n = 0; n < a->N; n++) {
         double v = c[0];
@@ -164,8 +163,8 @@ void fr_aft_sampled_normal(fricreg_aft *a, double kt, double mu, double n0, doub
     size_t N = a->N, nc = a->nc;
     /* ds holds nc >= 3 columns of N: the gap N0 + kn g, the normal force, and a column */
     double *gap = a->ds, *load = a->ds + N, *col = a->ds + 2 * N;
-    sample(a, u, a->us);
-    sample(a, g, gap);
+    fr_aft_sample_values(a, u, a->us);
+    fr_aft_sample_values(a, g, gap);
     for (size_t n = 0; n < N; n++) {
         gap[n] = n0 + kn * gap[n];
         load[n] = fmax(0.0, gap[n]);

@@ -1,0 +1,407 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* aft_2d.c — the sampled AFT of the 3-D contact element (fricreg_aft_jenkins_2d_normal_sampled):
+ * a 2-D Jenkins element in the tangential plane (isotropic Coulomb disk, radial return; slider.c)
+ * under the normal law N = max(0, N0 + kn g) with lift-off, the tangential displacement (ux, uy)
+ * and the normal one g at N equidistant samples, the element marched to its periodic state, and
+ * the coefficients of fx, fy and N by GSL's real radix-2 FFT (aft_sampled.c's).
+ *
+ * The periodic state. The radial return is the projection of the slider onto the disk of
+ * radius mu N_n / kt about u_n, so a period is a cycle of projections onto convex sets: where
+ * the disks have a common point the march ends in a stick throughout (any common point is a
+ * periodic state), otherwise in a unique periodic slip.
+ *   - The contact opens in the period: the slider follows u while open, so one period from the
+ *     last open sample is periodic (as aft_normal.c).
+ *   - Closed throughout: the march starts from the centre of the smallest circle enclosing the
+ *     sampled orbit of u (the stuck state of every sample at the threshold of slip, and in 1-D
+ *     the centred slider of aft_normal.c, so that the force is continuous across that
+ *     threshold) and marches up to PLAIN periods. A period without slip ends it (stuck). A
+ *     slip that has not repeated to the bit by then is a slow contraction (a slip barely past
+ *     the threshold), and Newton's method on the slider at the period's start, w = Phi(w)
+ *     with Phi's 2 x 2 derivative from the chain below, finds it.
+ *
+ * The Jacobian by the chain rule through the samples, carrying dw, the slider's derivative
+ * along one input column (a coefficient of ux, uy or g): open, dw = du, df = 0; stick,
+ * df = kt (du - dw); slip, with d = u - w, e = d/|d| and T = (mu N/|d|)(I - e e^T) (slider.c),
+ * df = T (du - dw) + mu kn dg e and dw = du - df/kt; dN = kn dg where closed. At a periodic
+ * slip, dw at the start solves (I - Psi) dw = Phi_u (Psi = dPhi/dw, the product of the slips'
+ * T/kt, a contraction); a march opened in the period starts at du of the last open sample; a
+ * stuck one from the derivative of the enclosing circle's centre, through the periods marched.
+ * One-sided at the samples' switches, as aft_normal.c's. */
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "aft_internal.h"
+#include "slider.h"
+
+#define PLAIN 4       /* periods marched from the enclosing circle's centre before Newton */
+#define MAX_NEWTON 40 /* Newton steps on the periodic slider */
+
+enum { STICK, SLIP, OPEN };
+
+/* The samples of one call, in the workspace's buffers (aft.c: 9 N beside the 1-D ones). */
+struct samples {
+    const double *ux, *uy, *gap, *load; /* u, N0 + kn g, N */
+    double *fx, *fy;                    /* the forces of the last period marched */
+    double *ex, *ey, *sl;               /* a slip's direction e and mu N/|d| */
+    double *kind;                       /* STICK, SLIP or OPEN */
+};
+
+struct law {
+    double kt, mu, kn;
+};
+
+static struct samples views(const fricreg_aft *a)
+{
+    double *b = a->s2;
+    size_t N = a->N;
+    return (struct samples){.ux = a->us,
+                            .uy = b,
+                            .gap = b + N,
+                            .load = b + 2 * N,
+                            .fx = a->fs,
+                            .fy = b + 3 * N,
+                            .ex = b + 4 * N,
+                            .ey = b + 5 * N,
+                            .sl = b + 6 * N,
+                            .kind = b + 7 * N};
+}
+
+/* One sample of the march from the slider w (updated): forces and the record of sample n. */
+static int step(const struct samples *s, const struct law *p, size_t n, double *w)
+{
+    double u[2] = {s->ux[n], s->uy[n]}, f[2], wn[2];
+    if (s->gap[n] < 0.0) { /* open: the slider follows u, the memory reset */
+        fr_slider_separated(2, u, f, wn, NULL, NULL);
+        s->kind[n] = OPEN;
+    } else {
+        double b = p->mu * s->load[n], d[2] = {u[0] - w[0], u[1] - w[1]};
+        double r = fr_slider_norm(d, 2);
+        fr_slider_return(p->kt, b, 0.0, 2, u, w, f, wn, NULL, NULL);
+        s->kind[n] = p->kt * r <= b ? STICK : SLIP; /* slider.c's test */
+        if (s->kind[n] == SLIP) {
+            s->ex[n] = d[0] / r;
+            s->ey[n] = d[1] / r;
+            s->sl[n] = b / r;
+        }
+    }
+    s->fx[n] = f[0];
+    s->fy[n] = f[1];
+    w[0] = wn[0];
+    w[1] = wn[1];
+    return (int)s->kind[n];
+}
+
+/* March one period from sample start (exclusive) around to it (inclusive); returns whether the
+ * slider slipped. */
+static int period(const fricreg_aft *a, const struct samples *s, const struct law *p, size_t start,
+                  double *w)
+{
+    int slipped = 0;
+    for (size_t i = 1; i <= a->N; i++)
+        slipped |= step(s, p, (start + i) % a->N, w) == SLIP;
+    return slipped;
+}
+
+/* One input column: the derivatives of u and g at sample n along column j of the 3 nc inputs
+ * (ux, uy, g); j = SIZE_MAX: none (the slider's own sensitivity). */
+static void input(const fricreg_aft *a, size_t j, size_t n, double du[2], double *dg)
+{
+    size_t nc = a->nc;
+    double phi = j == SIZE_MAX ? 0.0 : fr_aft_sample_basis(a, j % nc, n);
+    du[0] = j < nc ? phi : 0.0;
+    du[1] = j >= nc && j < 2 * nc ? phi : 0.0;
+    *dg = j >= 2 * nc && j != SIZE_MAX ? phi : 0.0;
+}
+
+/* The derivative of one period along column j from dw (updated) at sample start, on the
+ * record of the last period marched; with out, dfx, dfy, dN into out[0, N, 2N]. */
+static void chain(const fricreg_aft *a, const struct samples *s, const struct law *p, size_t start,
+                  size_t j, double *dw, double *out)
+{
+    size_t N = a->N;
+    for (size_t i = 1; i <= N; i++) {
+        size_t n = (start + i) % N;
+        double du[2], dg, df[2] = {0.0, 0.0};
+        input(a, j, n, du, &dg);
+        if (s->kind[n] == OPEN) {
+            dw[0] = du[0];
+            dw[1] = du[1];
+        } else if (s->kind[n] == STICK) {
+            df[0] = p->kt * (du[0] - dw[0]);
+            df[1] = p->kt * (du[1] - dw[1]);
+        } else {
+            double e[2] = {s->ex[n], s->ey[n]}, v[2] = {du[0] - dw[0], du[1] - dw[1]};
+            double ev = e[0] * v[0] + e[1] * v[1], dmu = p->mu * p->kn * dg;
+            for (int c = 0; c < 2; c++) {
+                df[c] = s->sl[n] * (v[c] - e[c] * ev) + dmu * e[c];
+                dw[c] = du[c] - df[c] / p->kt;
+            }
+        }
+        if (out != NULL) {
+            out[n] = df[0];
+            out[N + n] = df[1];
+            out[2 * N + n] = s->kind[n] == OPEN ? 0.0 : p->kn * dg;
+        }
+    }
+}
+
+/* Psi = dPhi/dw of the last period marched, row-major 2 x 2. */
+static void monodromy(const fricreg_aft *a, const struct samples *s, const struct law *p,
+                      size_t start, double psi[4])
+{
+    for (int c = 0; c < 2; c++) {
+        double dw[2] = {c == 0, c == 1};
+        chain(a, s, p, start, SIZE_MAX, dw, NULL);
+        psi[c] = dw[0];
+        psi[2 + c] = dw[1];
+    }
+}
+
+/* x = (I - psi)^-1 r; psi a contraction (a slip in the period): I - psi is invertible. */
+static void solve_periodic(const double psi[4], const double r[2], double x[2])
+{
+    double a = 1.0 - psi[0], b = -psi[1], c = -psi[2], d = 1.0 - psi[3];
+    double det = a * d - b * c;
+    x[0] = (d * r[0] - b * r[1]) / det;
+    x[1] = (a * r[1] - c * r[0]) / det;
+}
+
+/* ---- the smallest enclosing circle of the sampled orbit ------------------------------- */
+
+struct circle {
+    double c[2], r2;
+    size_t sup[3]; /* the samples on it that define it */
+    int nsup;
+};
+
+static double dist2(const struct samples *s, size_t n, const double c[2])
+{
+    double dx = s->ux[n] - c[0], dy = s->uy[n] - c[1];
+    return dx * dx + dy * dy;
+}
+
+static struct circle through2(const struct samples *s, size_t i, size_t j)
+{
+    struct circle k = {.c = {0.5 * (s->ux[i] + s->ux[j]), 0.5 * (s->uy[i] + s->uy[j])},
+                       .sup = {i, j},
+                       .nsup = 2};
+    k.r2 = fmax(dist2(s, i, k.c), dist2(s, j, k.c));
+    return k;
+}
+
+/* The circle through three samples; nearly collinear, the widest pair's. */
+static struct circle through3(const struct samples *s, size_t i, size_t j, size_t k)
+{
+    double bx = s->ux[j] - s->ux[i], by = s->uy[j] - s->uy[i];
+    double cx = s->ux[k] - s->ux[i], cy = s->uy[k] - s->uy[i];
+    double det = 2.0 * (bx * cy - by * cx), b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+    if (!(fabs(det) > 1e-12 * (b2 + c2))) {
+        struct circle p = through2(s, i, j), q = through2(s, i, k), t = through2(s, j, k);
+        return p.r2 >= q.r2 && p.r2 >= t.r2 ? p : q.r2 >= t.r2 ? q : t;
+    }
+    struct circle out = {.c = {s->ux[i] + (cy * b2 - by * c2) / det,
+                               s->uy[i] + (bx * c2 - cx * b2) / det},
+                         .sup = {i, j, k},
+                         .nsup = 3};
+    out.r2 = fmax(dist2(s, i, out.c), fmax(dist2(s, j, out.c), dist2(s, k, out.c)));
+    return out;
+}
+
+static int outside(const struct samples *s, size_t n, const struct circle *k)
+{
+    return dist2(s, n, k->c) > k->r2 * (1.0 + 1e-12);
+}
+
+/* Welzl's incremental algorithm (expected O(N) in a random order) in the scrambled order
+ * n -> (n * 2654435761) mod N, a permutation for N a power of two. */
+static struct circle enclosing_circle(const fricreg_aft *a, const struct samples *s)
+{
+    size_t N = a->N;
+#define ORDER(i) (((size_t)(i) * (size_t)2654435761u) & (N - 1))
+    struct circle k = {.c = {s->ux[0], s->uy[0]}, .r2 = 0.0, .sup = {0}, .nsup = 1};
+    for (size_t i = 1; i < N; i++) {
+        size_t pi = ORDER(i);
+        if (!outside(s, pi, &k))
+            continue;
+        k = (struct circle){.c = {s->ux[pi], s->uy[pi]}, .r2 = 0.0, .sup = {pi}, .nsup = 1};
+        for (size_t j = 0; j < i; j++) {
+            size_t pj = ORDER(j);
+            if (!outside(s, pj, &k))
+                continue;
+            k = through2(s, pi, pj);
+            for (size_t l = 0; l < j; l++)
+                if (outside(s, ORDER(l), &k))
+                    k = through3(s, pi, pj, ORDER(l));
+        }
+    }
+#undef ORDER
+    return k;
+}
+
+/* The centre's derivative along column j: the support points move with u. */
+static void circle_derivative(const fricreg_aft *a, const struct samples *s, const struct circle *k,
+                              size_t j, double dc[2])
+{
+    double dp[3][2], dg;
+    for (int i = 0; i < k->nsup; i++)
+        input(a, j, k->sup[i], dp[i], &dg);
+    if (k->nsup == 1) {
+        dc[0] = dp[0][0];
+        dc[1] = dp[0][1];
+        return;
+    }
+    if (k->nsup == 2) {
+        dc[0] = 0.5 * (dp[0][0] + dp[1][0]);
+        dc[1] = 0.5 * (dp[0][1] + dp[1][1]);
+        return;
+    }
+    /* |c - p_i|^2 equal for the three: (p_b - p_a).dc = (c - p_a).dp_a - (c - p_b).dp_b */
+    double A[4], rhs[2];
+    for (int r = 0; r < 2; r++) {
+        size_t pa = k->sup[0], pb = k->sup[r + 1];
+        A[2 * r] = s->ux[pb] - s->ux[pa];
+        A[2 * r + 1] = s->uy[pb] - s->uy[pa];
+        rhs[r] = (k->c[0] - s->ux[pa]) * dp[0][0] + (k->c[1] - s->uy[pa]) * dp[0][1] -
+                 (k->c[0] - s->ux[pb]) * dp[r + 1][0] - (k->c[1] - s->uy[pb]) * dp[r + 1][1];
+    }
+    double det = A[0] * A[3] - A[1] * A[2];
+    dc[0] = (A[3] * rhs[0] - A[1] * rhs[1]) / det;
+    dc[1] = (A[0] * rhs[1] - A[2] * rhs[0]) / det;
+}
+
+/* ---- the periodic march ------------------------------------------------------------------ */
+
+enum start_kind { FROM_OPENING, STUCK_FROM_CIRCLE, STUCK_ELSEWHERE, PERIODIC_SLIP };
+
+struct periodic {
+    enum start_kind kind;
+    size_t start; /* the sample the recorded period starts after */
+    double w[2];  /* the slider there */
+    int periods;  /* STUCK_FROM_CIRCLE: periods marched from the centre */
+    struct circle circle;
+};
+
+/* Newton's method on the slider at the start of a period, from w (the PLAIN periods' end). */
+static enum start_kind newton(const fricreg_aft *a, const struct samples *s, const struct law *p,
+                              double scale, double w[2])
+{
+    double last = INFINITY;
+    for (int it = 0; it < MAX_NEWTON; it++) {
+        double w0[2] = {w[0], w[1]}, psi[4], dx[2];
+        if (!period(a, s, p, a->N - 1, w))
+            return STUCK_ELSEWHERE;
+        double r[2] = {w[0] - w0[0], w[1] - w0[1]}, norm = fmax(fabs(r[0]), fabs(r[1]));
+        if (norm <= 4.0 * DBL_EPSILON * scale)
+            break;
+        if (norm < last) { /* Newton's step; where it did not help, the period's own (w = Phi) */
+            monodromy(a, s, p, a->N - 1, psi);
+            solve_periodic(psi, r, dx);
+            w[0] = w0[0] + dx[0];
+            w[1] = w0[1] + dx[1];
+        }
+        last = norm;
+    }
+    double w0[2] = {w[0], w[1]}; /* the recorded period from the slider found */
+    int slipped = period(a, s, p, a->N - 1, w);
+    w[0] = w0[0];
+    w[1] = w0[1];
+    return slipped ? PERIODIC_SLIP : STUCK_ELSEWHERE;
+}
+
+static struct periodic march(const fricreg_aft *a, const struct samples *s, const struct law *p)
+{
+    size_t N = a->N, open = N;
+    double scale = 0.0;
+    for (size_t n = 0; n < N; n++) {
+        if (s->gap[n] < 0.0)
+            open = n;
+        scale = fmax(scale, fabs(s->ux[n]) + fabs(s->uy[n]) + p->mu * s->load[n] / p->kt);
+    }
+    struct periodic out = {.start = open};
+    if (open < N) {
+        out.kind = FROM_OPENING;
+        out.w[0] = s->ux[open];
+        out.w[1] = s->uy[open];
+        double w[2] = {out.w[0], out.w[1]};
+        period(a, s, p, open, w);
+        return out;
+    }
+    out.start = N - 1;
+    out.circle = enclosing_circle(a, s);
+    double w[2] = {out.circle.c[0], out.circle.c[1]};
+    for (out.periods = 1; out.periods <= PLAIN; out.periods++) {
+        double w0[2] = {w[0], w[1]};
+        if (!period(a, s, p, N - 1, w)) {
+            out.kind = STUCK_FROM_CIRCLE;
+            return out;
+        }
+        if (w[0] == w0[0] && w[1] == w0[1]) { /* repeated to the bit */
+            out.kind = PERIODIC_SLIP;
+            out.w[0] = w0[0];
+            out.w[1] = w0[1];
+            return out;
+        }
+    }
+    out.kind = newton(a, s, p, scale, w);
+    out.w[0] = w[0];
+    out.w[1] = w[1];
+    return out;
+}
+
+/* The slider's derivative at the recorded period's start along column j. */
+static void start_derivative(const fricreg_aft *a, const struct samples *s, const struct law *p,
+                             const struct periodic *pm, size_t j, double dw[2])
+{
+    double dg;
+    switch (pm->kind) {
+    case FROM_OPENING: input(a, j, pm->start, dw, &dg); return;
+    case STUCK_ELSEWHERE: /* a stick reached by Newton's steps: the slider held */
+        dw[0] = dw[1] = 0.0;
+        return;
+    case STUCK_FROM_CIRCLE: circle_derivative(a, s, &pm->circle, j, dw); return;
+    case PERIODIC_SLIP: {
+        double psi[4], phi_u[2] = {0.0, 0.0};
+        monodromy(a, s, p, pm->start, psi);
+        chain(a, s, p, pm->start, j, phi_u, NULL);
+        solve_periodic(psi, phi_u, dw);
+        return;
+    }
+    }
+}
+
+void fr_aft_sampled_2d_normal(fricreg_aft *a, double kt, double mu, double n0, double kn,
+                              const double *u, const double *g, double *f, double *nf, double *jac)
+{
+    size_t N = a->N, nc = a->nc, w3 = 3 * nc;
+    struct samples s = views(a);
+    struct law p = {.kt = kt, .mu = mu, .kn = kn};
+    fr_aft_sample_values(a, u, a->us);
+    fr_aft_sample_values(a, u + nc, (double *)s.uy);
+    fr_aft_sample_values(a, g, (double *)s.gap);
+    for (size_t n = 0; n < N; n++) {
+        ((double *)s.gap)[n] = n0 + kn * s.gap[n];
+        ((double *)s.load)[n] = fmax(0.0, s.gap[n]);
+    }
+    struct periodic pm = march(a, &s, &p);
+    if (pm.kind == STUCK_FROM_CIRCLE && pm.periods > 1)
+        pm.kind = STUCK_ELSEWHERE; /* the slips before the stuck period are not in its record */
+    if (jac != NULL) {
+        double *col = a->ds; /* 3 N of the nc N */
+        for (size_t j = 0; j < w3; j++) {
+            double dw[2];
+            start_derivative(a, &s, &p, &pm, j, dw);
+            chain(a, &s, &p, pm.start, j, dw, col);
+            for (int r = 0; r < 3; r++)
+                fr_aft_sample_coefficients(a, col + (size_t)r * N, &jac[(size_t)r * nc * w3 + j],
+                                           w3);
+        }
+    }
+    double *col = a->ds;
+    memcpy(col, s.load, N * sizeof *col);
+    memcpy(col + N, s.fy, N * sizeof *col);
+    fr_aft_sample_coefficients(a, col, nf, 1);
+    fr_aft_sample_coefficients(a, col + N, f + nc, 1);
+    fr_aft_sample_coefficients(a, s.fx, f, 1);
+}
