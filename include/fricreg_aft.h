@@ -322,8 +322,8 @@ FRICREG_API int fricreg_aft_jenkins_normal_exact(fricreg_aft *aft, double kt, do
  *  radius r > r_b = mu N0/kt under the constant normal force N0 (kn = 0) dissipates
  *  2 pi r_w mu N0 per period, r_w = sqrt(r^2 - r_b^2), and the value at N samples lies
  *  2 pi^2 mu N0 r_b / N below it at every r (to 6 %); slips on a line keep the O(N^-2) of the
- *  kinks. fricreg_hb_set_jenkins_2d_normal
- *  takes N = 64 (2H + 1) rounded up to a power of two.
+ *  kinks. fricreg_hb_set_jenkins_2d_normal takes N = 64 (2H + 1) rounded up to a power of two
+ *  and N/2, and extrapolates 2 F(N) − F(N/2), which removes the first-order term.
  *
  *  kt     tangential stiffness > 0 (finite), force per unit displacement.
  *  mu     friction coefficient >= 0 (finite), nondimensional.

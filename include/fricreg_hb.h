@@ -44,7 +44,8 @@
  * a structure without damping has no finite response where hΩ is one of its own (the
  * elements removed) natural frequencies; give C (or Rayleigh damping) at least a little.
  * Elements with a normal load and lift-off (fricreg_hb_set_normal_elements) have two rows of J
- * each, tangential and normal, and the same equations with F_h = (f_h, N_h) on both.
+ * each, tangential and normal, and the same equations with F_h = (f_h, N_h) on both; 3-D
+ * contact elements (fricreg_hb_set_jenkins_2d_normal) three, with F_h = (fx_h, fy_h, N_h).
  *
  * Cost per frequency: H + 1 complex LU factors of ndof x ndof and (H + 1)(m + 1) solves, then
  * per Newton iteration m AFTs (O(H³) each) and a real LU of order m (2H + 1). A dense model
@@ -376,6 +377,54 @@ FRICREG_API int fricreg_hb_set_jenkins_normal(fricreg_hb *hb, size_t m, size_t n
 FRICREG_API int fricreg_hb_set_iwan_normal(fricreg_hb *hb, size_t m, size_t ndof, const double Jt[],
                                            const double Jn[], size_t ns, const double k[],
                                            const double mu[], const double n0[], const double kn[]);
+
+/** Set 3-D contact elements instead: element i is a 2-D Jenkins element on its two tangential
+ *  rows of Je (an isotropic Coulomb disk |f_i| <= mu_i N_i with the radial return) under the
+ *  normal law N_i = max(0, N0_i + kn_i g_i) on its normal row of Jn, lifting off where
+ *  N0 + kn g < 0 with the tangential memory reset: the element of
+ *  fricreg_structure_set_jenkins_2d_normal (the same arguments and layouts), in the frequency
+ *  domain. In the residual each element's force coefficients (fx, fy, N) and their Jacobian
+ *  come from fricreg_aft_jenkins_2d_normal_sampled at N = 64 (2H + 1) samples rounded up to a
+ *  power of two and at N/2, extrapolated as 2 F(N) − F(N/2) (Richardson): the return mapping
+ *  at samples lags the continuous element by a first-order term in 1/N where the slip turns
+ *  (fricreg_aft.h), which this removes (at H = 15, N = 2048: a lag of 7.7e-4 of the RMS at
+ *  N = 1024 without it). The driver's AFT workspaces grow to these samples here. Each element
+ *  has three rows of J (x, y, normal: the unknowns nq = 3 m (2H + 1), element i's at
+ *  3 i (2H + 1): ux's coefficients, uy's, g's); everything else is
+ *  fricreg_hb_set_jenkins_normal's: stability, continuation in Ω or the level, the nonlinear
+ *  modes (stuck stiffness kt on both tangential rows and kn on the normal one while N0 > 0)
+ *  and the truncation estimate take them as they take those. A closed element with kn = 0
+ *  whose motion stays on the x axis is the lift-off Jenkins element of
+ *  fricreg_hb_set_jenkins_normal on that row, up to the sampling of the kinks (1.3e-5 of the
+ *  RMS at H = 7). On a 2-dof mass sliding on an inclined contact at H = 15 the RMS agrees with
+ *  a long Newmark integration of fricreg_structure_set_jenkins_2d_normal, extrapolated in dt,
+ *  to 2.6e-6 (closed, slipping on a curved path) and 7.4e-7 (lifting off in every period),
+ *  within the truncation estimate and the reference's own error (tests/test_hb_contact_3d.c).
+ *
+ *  m            must equal the driver's element count.
+ *  ndof         must equal the driver's degrees of freedom.
+ *  Je[2m ndof]  row-major, two tangential rows per element (x, y): finite, each row non-zero.
+ *  Jn[m ndof]   row-major, one normal row per element, likewise.
+ *  kt[m]        tangential stiffnesses > 0 (finite), force per unit displacement.
+ *  mu[m]        friction coefficients >= 0 (finite), nondimensional.
+ *  n0[m]        preloads N0 (finite), force units: N at g = 0 (negative: a gap −N0/kn).
+ *  kn[m]        normal stiffnesses >= 0 (finite), force per unit displacement.
+ *
+ *  Allocates 4 m doubles, the first time the buffers for 3 m rows (as
+ *  fricreg_hb_set_normal_elements does for 2 m), and two AFT workspaces of O(N H) doubles (the
+ *  previous one freed on success). Cost of a residual with its Jacobian: per element and per
+ *  each of its 3 (2H + 1) unknowns two marches of N and N/2 samples and 7/3 FFTs of each
+ *  length on average: about 20 ms at H = 15 on one core of the development machine.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb, Je, Jn, kt, mu, n0 or kn is NULL; FRICREG_ESIZE if m
+ *  or ndof is not the driver's; FRICREG_ENONFINITE if an entry is NaN or infinite;
+ *  FRICREG_EINVAL if a row of Je or Jn is zero, some kt <= 0, mu < 0 or kn < 0; FRICREG_ENOMEM.
+ *  All inputs are checked before anything changes, and nothing changes on failure. Since 1.7
+ *  (FRICREG_1.7). */
+FRICREG_API int fricreg_hb_set_jenkins_2d_normal(fricreg_hb *hb, size_t m, size_t ndof,
+                                                 const double Je[], const double Jn[],
+                                                 const double kt[], const double mu[],
+                                                 const double n0[], const double kn[]);
 
 /** Set the harmonic excitation of the fundamental, p(t) = pc cos Ωt + ps sin Ωt.
  *

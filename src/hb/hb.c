@@ -14,6 +14,8 @@
 #define MAX_DENSE_DOFS 4096
 #define MAX_DOFS ((size_t)1 << 24)
 #define MAX_ELEMENTS 256
+/* samples of the 3-D contact element's AFT per coefficient (fr_hb_contact_samples) */
+#define CONTACT_SAMPLES 64
 
 static void *alloc_doubles(size_t count)
 {
@@ -183,6 +185,8 @@ void fricreg_hb_free(fricreg_hb *hb)
     free(hb->bifs);
     fr_hb_hill_free(hb);
     fricreg_aft_free(hb->aft);
+    fricreg_aft_free(hb->aft_half);
+    free(hb->half);
     free(hb->sk);
     free(hb->nl);
     fr_hb_nma_free(hb->nma);
@@ -192,7 +196,7 @@ void fricreg_hb_free(fricreg_hb *hb)
 }
 
 /* A driver at harmonics H with src's model (dense or sparse M, C, K, Rayleigh damping),
- * elements (Jenkins, Iwan or lift-off), excitation, Newton's settings, monitor and bound: the
+ * elements (Jenkins, Iwan, lift-off or 3-D contact), excitation, Newton's settings, monitor and bound: the
  * companion of fricreg_hb_truncation_error. Nothing of src changes. */
 int fr_hb_clone(const fricreg_hb *src, int harmonics, fricreg_hb **out)
 {
@@ -205,7 +209,8 @@ int fr_hb_clone(const fricreg_hb *src, int harmonics, fricreg_hb **out)
     double *nl = src->nl ? malloc(4 * me * sizeof *nl) : NULL;
     size_t sliders = fr_hb_slider_doubles(me, src->ns, src->nl != NULL, 2 * (size_t)harmonics + 1);
     double *sk = src->sk ? malloc(sliders * sizeof *sk) : NULL;
-    if ((src->nl && (!nl || alloc_rows(hb, 2 * me, &b) != FRICREG_OK)) || (src->sk && !sk) ||
+    if ((src->nl && (!nl || alloc_rows(hb, src->rpe * me, &b) != FRICREG_OK)) || (src->sk && !sk) ||
+        (src->rpe == 3 && fr_hb_sampled_aft(hb) != FRICREG_OK) ||
         (src->sparse && fr_hb_sparse_copy(hb, src) != FRICREG_OK)) {
         free(nl);
         free(sk);
@@ -213,7 +218,7 @@ int fr_hb_clone(const fricreg_hb *src, int harmonics, fricreg_hb **out)
         return FRICREG_ENOMEM;
     }
     if (b.J != NULL)
-        install_rows(hb, 2 * me, &b);
+        install_rows(hb, src->rpe * me, &b);
     if (!src->sparse) /* M, C, K: one block */
         memcpy(hb->M, src->M, 3 * n * n * sizeof(double));
     hb->rayleigh = src->rayleigh;
@@ -360,15 +365,11 @@ int fricreg_hb_set_rayleigh(fricreg_hb *hb, double a0, double a1)
     return FRICREG_OK;
 }
 
-/* The checks the element setters share: the sizes and J (finite, no zero row), named name. */
-static int check_rows(fricreg_hb *hb, const char *fn, size_t m, size_t ndof, const double *J,
-                      const char *name)
+/* J's rows[ndof]: finite, none zero, named name. */
+static int check_entries(fricreg_hb *hb, const char *fn, size_t rows, size_t ndof, const double *J,
+                         const char *name)
 {
-    if (m != hb->me)
-        return fr_fail(hb, FRICREG_ESIZE, "%s: m = %zu, the driver has %zu", fn, m, hb->me);
-    if (check_ndof(hb, fn, ndof) != FRICREG_OK)
-        return FRICREG_ESIZE;
-    for (size_t i = 0; i < m; i++) {
+    for (size_t i = 0; i < rows; i++) {
         double norm = 0.0;
         for (size_t k = 0; k < ndof; k++) {
             if (!isfinite(J[i * ndof + k]))
@@ -380,6 +381,18 @@ static int check_rows(fricreg_hb *hb, const char *fn, size_t m, size_t ndof, con
             return fr_fail(hb, FRICREG_EINVAL, "%s: row %zu of %s is zero", fn, i, name);
     }
     return FRICREG_OK;
+}
+
+/* The checks the element setters share: the sizes and J (rows_per_element m rows), named
+ * name. */
+static int check_rows(fricreg_hb *hb, const char *fn, size_t m, size_t rows_per_element,
+                      size_t ndof, const double *J, const char *name)
+{
+    if (m != hb->me)
+        return fr_fail(hb, FRICREG_ESIZE, "%s: m = %zu, the driver has %zu", fn, m, hb->me);
+    if (check_ndof(hb, fn, ndof) != FRICREG_OK)
+        return FRICREG_ESIZE;
+    return check_entries(hb, fn, rows_per_element * m, ndof, J, name);
 }
 
 /* Jenkins or Iwan elements: one row each, the normal elements' parameters dropped. */
@@ -418,7 +431,7 @@ static int set_jenkins(fricreg_hb *hb, const char *fn, size_t m, size_t ndof, co
                        J == NULL    ? "J"
                        : kt == NULL ? "kt"
                                     : "mun");
-    int status = check_rows(hb, fn, m, ndof, J, "J");
+    int status = check_rows(hb, fn, m, 1, ndof, J, "J");
     if (status == FRICREG_OK)
         status = check_sliders(hb, fn, m, kt, mun, "kt", "mun");
     if (status != FRICREG_OK)
@@ -460,7 +473,7 @@ int fricreg_hb_set_iwan(fricreg_hb *hb, size_t m, size_t ndof, const double J[],
                        J == NULL   ? "J"
                        : k == NULL ? "k"
                                    : "phi");
-    int status = check_rows(hb, fn, m, ndof, J, "J");
+    int status = check_rows(hb, fn, m, 1, ndof, J, "J");
     if (status != FRICREG_OK)
         return status;
     if (ns < 1 || ns > FRICREG_HB_MAX_SLIDERS)
@@ -559,9 +572,9 @@ static int set_normal(fricreg_hb *hb, const char *fn, size_t m, size_t ndof, con
         if (args[a] == NULL)
             return fr_fail(hb, FRICREG_ENULL, "%s: %s is NULL", fn,
                            a == 2 && ns > 1 ? "k" : names[a]);
-    int status = check_rows(hb, fn, m, ndof, Jt, "Jt");
+    int status = check_rows(hb, fn, m, 1, ndof, Jt, "Jt");
     if (status == FRICREG_OK)
-        status = check_rows(hb, fn, m, ndof, Jn, "Jn");
+        status = check_rows(hb, fn, m, 1, ndof, Jn, "Jn");
     if (status != FRICREG_OK)
         return status;
     if (ns < 1 || ns > FRICREG_HB_MAX_SLIDERS)
@@ -621,6 +634,86 @@ int fricreg_hb_set_iwan_normal(fricreg_hb *hb, size_t m, size_t ndof, const doub
                                const double n0[], const double kn[])
 {
     return set_normal(hb, "set_iwan_normal", m, ndof, Jt, Jn, ns, k, mu, n0, kn);
+}
+
+size_t fr_hb_contact_samples(int harmonics)
+{
+    size_t want = CONTACT_SAMPLES * (2 * (size_t)harmonics + 1), N = 1;
+    while (N < want)
+        N *= 2;
+    return N;
+}
+
+/* hb's AFT workspace with the 3-D contact element's samples at its harmonics (kept if it has
+ * them). FRICREG_OK or FRICREG_ENOMEM, hb unchanged. */
+int fr_hb_sampled_aft(fricreg_hb *hb)
+{
+    size_t N = fr_hb_contact_samples(hb->H), nc = hb->nc;
+    if (fricreg_aft_samples(hb->aft) == N && hb->aft_half != NULL)
+        return FRICREG_OK;
+    fricreg_aft *aft = NULL, *half = NULL;
+    double *results = malloc((3 * nc + 9 * nc * nc) * sizeof *results);
+    if (results == NULL || fricreg_aft_create(hb->H, N, &aft) != FRICREG_OK ||
+        fricreg_aft_create(hb->H, N / 2, &half) != FRICREG_OK) {
+        free(results);
+        fricreg_aft_free(aft);
+        return FRICREG_ENOMEM;
+    }
+    fricreg_aft_free(hb->aft);
+    fricreg_aft_free(hb->aft_half);
+    free(hb->half);
+    hb->aft = aft;
+    hb->aft_half = half;
+    hb->half = results;
+    return FRICREG_OK;
+}
+
+int fricreg_hb_set_jenkins_2d_normal(fricreg_hb *hb, size_t m, size_t ndof, const double Je[],
+                                     const double Jn[], const double kt[], const double mu[],
+                                     const double n0[], const double kn[])
+{
+    static const char fn[] = "set_jenkins_2d_normal";
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    if (hb->busy)
+        return fr_hb_busy(hb, fn);
+    const void *args[6] = {Je, Jn, kt, mu, n0, kn};
+    static const char *const names[6] = {"Je", "Jn", "kt", "mu", "n0", "kn"};
+    for (int a = 0; a < 6; a++)
+        if (args[a] == NULL)
+            return fr_fail(hb, FRICREG_ENULL, "%s: %s is NULL", fn, names[a]);
+    int status = check_rows(hb, fn, m, 2, ndof, Je, "Je");
+    if (status == FRICREG_OK)
+        status = check_rows(hb, fn, m, 1, ndof, Jn, "Jn");
+    if (status == FRICREG_OK)
+        status = check_normal_sliders(hb, fn, m, 1, kt, mu, n0, kn);
+    if (status != FRICREG_OK)
+        return status;
+    /* three rows an element (x, y, n), the sampled AFT: the buffers grow once (and stay) */
+    struct rows_buffers b = {0};
+    double *nl = malloc(4 * m * sizeof *nl);
+    if (nl == NULL || (hb->rows_cap < 3 * m && alloc_rows(hb, 3 * m, &b) != FRICREG_OK) ||
+        fr_hb_sampled_aft(hb) != FRICREG_OK) {
+        free(nl);
+        free_rows(&b);
+        return fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for %zu 3-D contact elements", fn, m);
+    }
+    if (b.J != NULL)
+        install_rows(hb, 3 * m, &b);
+    for (size_t i = 0; i < m; i++) {
+        memcpy(hb->J + 3 * i * ndof, Je + 2 * i * ndof, 2 * ndof * sizeof *Je);
+        memcpy(hb->J + (3 * i + 2) * ndof, Jn + i * ndof, ndof * sizeof *Jn);
+    }
+    normal_parameters(nl, m, 1, kt, mu, n0, kn);
+    free(hb->nl);
+    hb->nl = nl;
+    free(hb->sk);
+    hb->sk = NULL;
+    hb->ns = 1;
+    set_rows(hb, 3);
+    hb->have_elements = 1;
+    invalidate(hb);
+    return FRICREG_OK;
 }
 
 int fricreg_hb_set_excitation(fricreg_hb *hb, size_t ndof, const double pc[], const double ps[])

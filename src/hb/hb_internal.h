@@ -31,8 +31,10 @@ struct fr_hb_lu; /* sparse.c: one harmonic's LU factor */
 
 struct fricreg_hb {
     size_t n, m;       /* dofs, rows of J (the condensation's coordinates) */
-    size_t me, rpe;    /* elements, rows per element: 1, or 2 (tangential, normal) on lift-off */
-    size_t rows_cap;   /* rows the buffers below hold: me, 2 me once normal elements were set */
+    size_t me, rpe;    /* elements, rows per element: 1, 2 (tangential, normal) on lift-off, or
+                          3 (x, y, normal) for the 3-D contact element */
+    size_t rows_cap;   /* rows the buffers below hold: me, or rpe me once elements of rpe rows
+                          were set */
     int H;             /* harmonics */
     size_t nc, nq;     /* 2H + 1 coefficients, m nc unknowns */
     double *M, *C, *K; /* [n n] each, row-major, symmetric (dense models; NULL above 4096) */
@@ -43,8 +45,8 @@ struct fricreg_hb {
     double *sk; /* set_iwan's [me ns] stiffnesses then [me ns] slip forces (set_iwan_normal's:
                    friction coefficients, then one slider's AFT, fr_hb_slider_doubles); NULL:
                    Jenkins elements */
-    double *nl; /* set_normal_elements' [4 me]: kt, mu, n0, kn (Iwan: kt and mu summed over the
-                   sliders); NULL: none */
+    double *nl; /* set_normal_elements' and set_jenkins_2d_normal's [4 me]: kt, mu, n0, kn (Iwan:
+                   kt and mu summed over the sliders); NULL: none */
     int have_elements;
     double *pc, *ps; /* [n] excitation of the fundamental */
     /* the excitation's factor in force, λ: 1 but along a continuation in the level
@@ -66,7 +68,11 @@ struct fricreg_hb {
     double ds0, ds_min, ds_max;
     size_t max_points;
 
-    fricreg_aft *aft;
+    fricreg_aft *aft; /* exact paths; with fr_hb_contact_samples' N once 3-D elements were set */
+    /* the 3-D contact element's AFT at N/2 samples and its results, [3 nc + 9 nc²]: the
+     * residual extrapolates 2 F(N) − F(N/2) (residual.c); NULL: no 3-D elements yet */
+    fricreg_aft *aft_half;
+    double *half;
 
     /* The factors of one frequency (dynamic.c), valid while factored_omega is that Ω. */
     double factored_omega; /* NaN: none */
@@ -184,6 +190,14 @@ static inline size_t fr_hb_sliders(const fricreg_hb *hb, size_t e, const double 
 /* The doubles of sk: me elements of ns sliders, with a normal law (normal) room for one
  * slider's forces and Jacobian at nc coefficients, 2 nc + (2 nc)^2, when ns > 1. */
 size_t fr_hb_slider_doubles(size_t me, size_t ns, int normal, size_t nc);
+
+/* The samples of the 3-D contact element's AFT at H harmonics: 64 (2H + 1) rounded up to a
+ * power of two, and half as many for the extrapolation (residual.c). */
+size_t fr_hb_contact_samples(int harmonics);
+
+/* hb->aft replaced by one with fr_hb_contact_samples(hb->H) samples, and aft_half, half
+ * allocated, unless they are there. FRICREG_OK, or FRICREG_ENOMEM with hb unchanged. */
+int fr_hb_sampled_aft(fricreg_hb *hb);
 
 /* Factors D_h(omega) for h = 0..H and forms Y, G, ql (and dG, dql when deriv); keeps them
  * while omega stays. FRICREG_OK or FRICREG_ESINGULAR (message recorded, with fn). */

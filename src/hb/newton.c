@@ -40,12 +40,13 @@ int fr_hb_guess(fricreg_hb *hb, const char *fn, int stuck)
      * closed too, N = N0 + kn g on every harmonic */
     size_t b = hb->rpe * nc, me = hb->me;
     memset(hb->jq, 0, me * b * b * sizeof(double));
+    size_t normal_row = hb->rpe - 1; /* with lift-off, the last row of each element */
     for (size_t e = 0; e < me && hb->nl != NULL; e++)
-        for (size_t c = 0; c < nc; c++) {
-            if (c > 0)
-                hb->jq[e * b * b + c * b + c] = hb->nl[e];
-            hb->jq[e * b * b + (nc + c) * b + nc + c] = hb->nl[3 * me + e];
-        }
+        for (size_t r = 0; r < hb->rpe; r++)
+            for (size_t c = r == normal_row ? 0 : 1; c < nc; c++) {
+                size_t i = r * nc + c;
+                hb->jq[e * b * b + i * b + i] = r == normal_row ? hb->nl[3 * me + e] : hb->nl[e];
+            }
     for (size_t e = 0; e < me && hb->nl == NULL; e++) {
         const double *k, *phi;
         size_t ns = fr_hb_sliders(hb, e, &k, &phi);

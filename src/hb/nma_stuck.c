@@ -20,7 +20,7 @@ void fr_hb_nma_row(const fricreg_hb *hb, size_t r, double *k, double *limit)
                kn = hb->nl[3 * me + e];
         if (!(n0 > 0.0))
             return;
-        if (r % 2 == 1) {
+        if (r % hb->rpe == hb->rpe - 1) { /* the normal row */
             *k = kn;
             *limit = kn > 0.0 ? n0 / kn : INFINITY;
             return;

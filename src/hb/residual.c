@@ -9,7 +9,8 @@
  * Jacobians come from fricreg_aft_iwan_exact (a Jenkins element is one slider), or with lift-off
  * fricreg_aft_jenkins_normal_exact (two rows: the tangential force f on u, the normal force N on
  * g, one Jacobian block coupling them; an Iwan element's sliders summed on the tangential row),
- * one element at a time. */
+ * one element at a time; the 3-D contact element's (three rows: x, y, normal) from
+ * fricreg_aft_jenkins_2d_normal_sampled. */
 #include <math.h>
 #include <string.h>
 
@@ -71,12 +72,40 @@ static int iwan_normal(fricreg_hb *hb, size_t e, const double *u, double *f, dou
     return FRICREG_OK;
 }
 
+/* 3-D contact element e at its coefficients u[3 nc] (ux, uy, g): forces f[3 nc] and, with jac,
+ * their Jacobian [3nc x 3nc] by Richardson's extrapolation of the sampled AFT over N and N/2
+ * samples, 2 F(N) - F(N/2): the return mapping at samples lags the continuous element by a
+ * first-order term in 1/N where the slip turns (fricreg_aft.h), which this removes. */
+static int contact_3d(fricreg_hb *hb, size_t e, const double *u, double *f, double *jac)
+{
+    size_t nc = hb->nc, me = hb->me, w = 3 * nc;
+    const double *p = hb->nl;
+    double *fh = hb->half, *jh = hb->half + w;
+    int status = fricreg_aft_jenkins_2d_normal_sampled(hb->aft, p[e], p[me + e], p[2 * me + e],
+                                                       p[3 * me + e], nc, u, u + 2 * nc, f,
+                                                       f + 2 * nc, jac);
+    if (status == FRICREG_OK)
+        status = fricreg_aft_jenkins_2d_normal_sampled(hb->aft_half, p[e], p[me + e], p[2 * me + e],
+                                                       p[3 * me + e], nc, u, u + 2 * nc, fh,
+                                                       fh + 2 * nc, jac ? jh : NULL);
+    if (status != FRICREG_OK)
+        return status;
+    for (size_t i = 0; i < w; i++)
+        f[i] = 2.0 * f[i] - fh[i];
+    for (size_t i = 0; jac != NULL && i < w * w; i++)
+        jac[i] = 2.0 * jac[i] - jh[i];
+    return FRICREG_OK;
+}
+
 int fr_hb_residual(fricreg_hb *hb, const char *fn, const double *q, double *R, int jac)
 {
     size_t nc = hb->nc, me = hb->me;
     for (size_t e = 0; e < me; e++) {
         int status;
-        if (hb->nl != NULL && hb->sk != NULL) {
+        if (hb->rpe == 3) {
+            status = contact_3d(hb, e, q + 3 * e * nc, hb->fq + 3 * e * nc,
+                                jac ? hb->jq + 9 * e * nc * nc : NULL);
+        } else if (hb->nl != NULL && hb->sk != NULL) {
             status = iwan_normal(hb, e, q + 2 * e * nc, hb->fq + 2 * e * nc,
                                  jac ? hb->jq + 4 * e * nc * nc : NULL);
         } else if (hb->nl != NULL) {

@@ -100,7 +100,7 @@ static int period(const fricreg_aft *a, const struct samples *s, const struct la
 {
     int slipped = 0;
     for (size_t i = 1; i <= a->N; i++)
-        slipped |= step(s, p, (start + i) % a->N, w) == SLIP;
+        slipped |= step(s, p, (start + i) & (a->N - 1), w) == SLIP;
     return slipped;
 }
 
@@ -122,7 +122,7 @@ static void chain(const fricreg_aft *a, const struct samples *s, const struct la
 {
     size_t N = a->N;
     for (size_t i = 1; i <= N; i++) {
-        size_t n = (start + i) % N;
+        size_t n = (start + i) & (N - 1); /* N is a power of two */
         double du[2], dg, df[2] = {0.0, 0.0};
         input(a, j, n, du, &dg);
         if (s->kind[n] == OPEN) {
@@ -350,9 +350,10 @@ static struct periodic march(const fricreg_aft *a, const struct samples *s, cons
     return out;
 }
 
-/* The slider's derivative at the recorded period's start along column j. */
+/* The slider's derivative at the recorded period's start along column j; psi the recorded
+ * period's monodromy (PERIODIC_SLIP). */
 static void start_derivative(const fricreg_aft *a, const struct samples *s, const struct law *p,
-                             const struct periodic *pm, size_t j, double dw[2])
+                             const struct periodic *pm, const double psi[4], size_t j, double dw[2])
 {
     double dg;
     switch (pm->kind) {
@@ -362,8 +363,7 @@ static void start_derivative(const fricreg_aft *a, const struct samples *s, cons
         return;
     case STUCK_FROM_CIRCLE: circle_derivative(a, s, &pm->circle, j, dw); return;
     case PERIODIC_SLIP: {
-        double psi[4], phi_u[2] = {0.0, 0.0};
-        monodromy(a, s, p, pm->start, psi);
+        double phi_u[2] = {0.0, 0.0};
         chain(a, s, p, pm->start, j, phi_u, NULL);
         solve_periodic(psi, phi_u, dw);
         return;
@@ -388,14 +388,20 @@ void fr_aft_sampled_2d_normal(fricreg_aft *a, double kt, double mu, double n0, d
     if (pm.kind == STUCK_FROM_CIRCLE && pm.periods > 1)
         pm.kind = STUCK_ELSEWHERE; /* the slips before the stuck period are not in its record */
     if (jac != NULL) {
-        double *col = a->ds; /* 3 N of the nc N */
+        double *col = a->ds, psi[4] = {0.0}; /* 3 N of the nc N */
+        if (pm.kind == PERIODIC_SLIP)
+            monodromy(a, &s, &p, pm.start, psi);
         for (size_t j = 0; j < w3; j++) {
             double dw[2];
-            start_derivative(a, &s, &p, &pm, j, dw);
+            start_derivative(a, &s, &p, &pm, psi, j, dw);
             chain(a, &s, &p, pm.start, j, dw, col);
-            for (int r = 0; r < 3; r++)
-                fr_aft_sample_coefficients(a, col + (size_t)r * N, &jac[(size_t)r * nc * w3 + j],
-                                           w3);
+            /* N moves with g alone: its rows in the u columns are 0 */
+            for (size_t r = 0; r < 3; r++)
+                if (r < 2 || j >= 2 * nc)
+                    fr_aft_sample_coefficients(a, col + r * N, &jac[r * nc * w3 + j], w3);
+                else
+                    for (size_t i = 0; i < nc; i++)
+                        jac[(r * nc + i) * w3 + j] = 0.0;
         }
     }
     double *col = a->ds;

@@ -35,7 +35,7 @@ void fr_aft_sample_values(const fricreg_aft *a, const double *c, double *x)
     for (size_t n = 0; n < a->N; n++) {
         double v = c[0];
         for (int h = 1; h <= a->H; h++) {
-            size_t idx = ((size_t)h * n) % a->N;
+            size_t idx = ((size_t)h * n) & (a->N - 1); /* N is a power of two */
             v += c[2 * h - 1] * a->ctab[idx] + c[2 * h] * a->stab[idx];
         }
         x[n] = v;

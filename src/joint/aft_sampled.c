@@ -28,7 +28,7 @@ double fr_aft_sample_basis(const fricreg_aft *a, size_t j, size_t n)
 {
     if (j == 0)
         return 1.0;
-    size_t h = (j + 1) / 2, idx = (h * n) % a->N;
+    size_t h = (j + 1) / 2, idx = (h * n) & (a->N - 1); /* N is a power of two */
     return (j % 2) ? a->ctab[idx] : a->stab[idx];
 }
 
@@ -40,8 +40,8 @@ void fr_aft_sample_coefficients(const fricreg_aft *a, double *x, double *out, si
 {
     size_t N = a->N;
     double big = 0.0, scale = 1.0 / (double)N, after = scale;
-    for (size_t n = 0; n < N; n++)
-        big = fmax(big, fabs(x[n]));
+    for (size_t n = 0; n < N; n++) /* x is finite: a comparison, not libm's fmax */
+        big = fabs(x[n]) > big ? fabs(x[n]) : big;
     if (big > 0.25 * DBL_MAX * scale) {
         for (size_t n = 0; n < N; n++)
             x[n] *= scale;
