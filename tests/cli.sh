@@ -738,7 +738,7 @@ expect_output '^usage: fricreg-sim hb --mass M\.mtx --stiffness K\.mtx' hb --hel
 expect_output '^  hb          ' --help
 expect_usage_error "^fricreg-sim: --omega-end: missing" hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --jenkins $d/J.mtx --jenkins-params $d/P.txt --omega-start 1
 expect_usage_error "^fricreg-sim: --jenkins-params: missing" hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --jenkins $d/J.mtx --omega-start 1 --omega-end 2
-expect_usage_error "^fricreg-sim: --jenkins-2d: harmonic balance has no 2-D elements" hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --jenkins-2d $d/J.mtx --jenkins-params $d/P.txt --omega-start 1 --omega-end 2
+expect_usage_error "^fricreg-sim: --jenkins-2d: harmonic balance has 2-D elements with a normal law only" hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --jenkins-2d $d/J.mtx --jenkins-params $d/P.txt --omega-start 1 --omega-end 2
 expect_usage_error "^fricreg-sim: --jenkins-params $d/P1.txt: line 1: " hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --jenkins $d/J.mtx --jenkins-params $d/P1.txt --omega-start 1 --omega-end 2
 expect_usage_error "^fricreg-sim: --harmonics: " $hb --harmonics 41
 expect_usage_error "^fricreg-sim: --newton-tol: .*tol" $hb --newton-tol 2
@@ -781,6 +781,22 @@ expect_output '"element_kind": "lift-off"' $hbs --omega-start 0.5 --omega-end 3 
 echo "3 0 0.75 0.05 0.75 0.05" >"$d/QI_kn0.txt"
 expect_same 1e-12 $hbs --omega-start 0.5 --omega-end 3 --normal $d/J.mtx --normal-params $d/Q_kn0.txt --output frf -- $hbs --omega-start 0.5 --omega-end 3 --normal $d/J.mtx --iwan-normal-params $d/QI_kn0.txt --output frf
 expect_output '"element_kind": "iwan-lift-off", "sliders_per_element": 2' $hbs --omega-start 0.5 --omega-end 3 --normal $d/J.mtx --iwan-normal-params $d/QI_kn0.txt
+# the 3-D contact element (--jenkins-2d with --normal), stuck and closed with both tangential
+# rows and the normal row on the one dof: the springs kt = 0.75 twice and kn = 2 on the
+# harmonics (the slider at the centre of the orbit), the preload's static deflection
+# x0 = -n0/(k + kn) = -6 (N0 = 30 keeps the contact closed at the resonance): every row's RMS
+# sqrt(x0^2 + |X|^2/2), |X| = 0.5/|6.5 - 2 Omega^2 + 0.06 i Omega|, within 1e-9
+printf '%s\n' "%%MatrixMarket matrix coordinate real general" "2 1 2" "1 1 1" "2 1 1" >"$d/J2.mtx"
+echo "0.75 1e6 30 2" >"$d/Q3.txt"
+hb3="hb --mass $d/M.mtx --stiffness $d/K.mtx --rayleigh 0,0.02 --excitation $d/F.txt --harmonics 3 --omega-start 0.5 --omega-end 3 --normal $d/J.mtx"
+total=$((total + 1))
+"$sim" $hb3 --jenkins-2d $d/J2.mtx --normal-params $d/Q3.txt --output frf >"$d/frf3.csv" 2>"$d/err"
+if ! awk -F, 'NR > 1 { w = $1; a = 6.5 - 2 * w * w; c = 0.06 * w; x = 0.5 / sqrt(a * a + c * c)
+        r = sqrt(36 + x * x / 2); e = ($2 - r) / r; if (e < 0) e = -e; if (e > big) big = e; rows++ }
+        END { exit !(rows >= 20 && big < 1e-9 && w == 3) }' "$d/frf3.csv"; then
+    echo "FAIL: hb 3-D contact against the linear closed form: $(head -n 3 "$d/frf3.csv") $(cat "$d/err")"; fails=$((fails + 1))
+fi
+expect_output '"element_kind": "contact-3d"' $hb3 --jenkins-2d $d/J2.mtx --normal-params $d/Q3.txt
 echo "1.5 0.1 3 -1" >"$d/Q_bad.txt"
 expect_usage_error "^fricreg-sim: --normal-params $d/Q_bad.txt: .*kn" $hbs --omega-start 1 --omega-end 2 --normal $d/J.mtx --normal-params $d/Q_bad.txt
 expect_usage_error "^fricreg-sim: --iwan-params $d/P1.txt: line 1: 1 numbers: give pairs" $hbs --omega-start 1 --omega-end 2 --iwan-params $d/P1.txt

@@ -24,9 +24,11 @@ int cli_hb_check_model(const struct cli_hb_model_options *o)
         return cli_usage_error("--mass", "missing (a file is required)");
     if (o->stiffness == NULL)
         return cli_usage_error("--stiffness", "missing (a file is required)");
-    if (o->elements.rows_2d != NULL) /* fricreg_hb's elements are 1-D */
-        return cli_usage_error("--jenkins-2d", "harmonic balance has no 2-D elements (fricreg-sim "
-                                               "structure takes them); give --jenkins");
+    if (o->elements.rows_2d != NULL && o->elements.normal == NULL) /* 2-D: the 3-D contact only */
+        return cli_usage_error("--jenkins-2d",
+                               "harmonic balance has 2-D elements with a normal law "
+                               "only (--normal with --normal-params: the 3-D "
+                               "contact); fricreg-sim structure takes the others");
     int status = cli_check_elements(&o->elements, 1);
     if (status != 0)
         return status;
@@ -84,6 +86,9 @@ static int set_elements(fricreg_hb *hb, size_t n, const struct cli_elements *el)
                                           el->n0, el->kn);
     if (el->kind == CLI_ELEMENTS_IWAN)
         return fricreg_hb_set_iwan(hb, el->m, n, el->J, el->ns, el->k, el->phi);
+    if (el->kind == CLI_ELEMENTS_CONTACT_3D)
+        return fricreg_hb_set_jenkins_2d_normal(hb, el->m, n, el->J, el->Jn, el->k, el->mu, el->n0,
+                                                el->kn);
     return fricreg_hb_set_elements(hb, el->m, n, el->J, el->k, el->phi);
 }
 
@@ -110,6 +115,8 @@ int cli_hb_set_model(const struct cli_hb_model_options *o, const struct cli_hb_m
 
 size_t cli_hb_rows(const struct cli_hb_model *md)
 {
+    if (md->el.kind == CLI_ELEMENTS_CONTACT_3D)
+        return 3 * md->m;
     int normal = md->el.kind == CLI_ELEMENTS_NORMAL || md->el.kind == CLI_ELEMENTS_IWAN_NORMAL;
     return normal ? 2 * md->m : md->m;
 }

@@ -30,15 +30,14 @@ struct cli_element_files {
 };
 
 /* The element options' rows of a subcommand's option table (cli.h's struct cli_option), e
- * a struct cli_element_files *; no_2d: --jenkins-2d is refused with a reason, not in the help
- * (hb: harmonic balance has 1-D elements only). */
+ * a struct cli_element_files *. */
 /* (kept as written: clang-format would take the rows for one braced list) */
 /* clang-format off */
-#define CLI_ELEMENT_OPTIONS(e, no_2d)                                                         \
+#define CLI_ELEMENT_OPTIONS(e)                                                                \
     {"--jenkins", CLI_FILE, .slot = &(e)->rows, .meta = "J.mtx",                              \
      .help = "joint elements' rows, Matrix Market m x n: element i's q_i = (J x)_i, with one " \
              "parameter file below"},                                                         \
-    {"--jenkins-2d", CLI_FILE, .slot = &(e)->rows_2d, .meta = "J2.mtx", .hidden = (no_2d),    \
+    {"--jenkins-2d", CLI_FILE, .slot = &(e)->rows_2d, .meta = "J2.mtx",                       \
      .help = "2-D Jenkins elements instead: element i on rows 2i-1 (x) and 2i (y), with "     \
              "--jenkins-params (isotropic), or --normal (3-D contact)"},                     \
     {"--jenkins-params", CLI_FILE, .slot = &(e)->jenkins, .meta = "P.txt",                    \

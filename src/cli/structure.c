@@ -140,7 +140,7 @@ static size_t structure_table(struct structure_options *o, struct cli_option tab
          .help = "ground acceleration record: lines t a_g (s, m/s^2) on a uniform grid, linear "
                  "between samples",
          .dflt = "none"},
-        CLI_ELEMENT_OPTIONS(&o->elements, 0),
+        CLI_ELEMENT_OPTIONS(&o->elements),
         {"--rayleigh", CLI_CUSTOM, .slot = o, .parse = parse_rayleigh, .given = &o->rayleigh_given,
          .meta = "A0,A1", .help = "Rayleigh damping C = A0 M + A1 K (A0 in 1/s, A1 in s, >= 0)"},
         {"--integrator", CLI_CUSTOM, .slot = o, .parse = parse_integrator,
