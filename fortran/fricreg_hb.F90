@@ -21,7 +21,7 @@ module fricreg_hb_m
   type, extends(fricreg_object) :: fricreg_hb_driver
     private
     integer(c_size_t) :: n = 0, m = 0, nc = 0 ! C has no size getters: kept from create
-    integer(c_size_t) :: rows = 0 ! q's columns: m, or 2 m with set_normal_elements
+    integer(c_size_t) :: rows = 0 ! q's columns: m, 2 m with set_normal_elements, 3 m in 3-D
   contains
     procedure :: create => hb_create
     procedure :: ndof => hb_ndof
@@ -37,6 +37,7 @@ module fricreg_hb_m
     procedure :: set_jenkins => hb_set_jenkins
     procedure :: set_jenkins_normal => hb_set_jenkins_normal
     procedure :: set_iwan_normal => hb_set_iwan_normal
+    procedure :: set_jenkins_2d_normal => hb_set_jenkins_2d_normal
     procedure, private :: hb_set_matrix_dense, hb_set_matrix_compressed
     generic :: set_matrix => hb_set_matrix_dense, hb_set_matrix_compressed
     procedure :: set_excitation => hb_set_excitation
@@ -318,6 +319,32 @@ contains
                                                     int(size(k, 1), c_size_t), k, mu, n0, kn))
     if (status == FRICREG_OK) self%rows = 2 * self%m
   end function hb_set_iwan_normal
+
+  !> 3-D contact elements instead (fricreg_hb_set_jenkins_2d_normal, the structure's
+  !> set_jenkins_2d_normal's arguments): element i's tangential rows 2i-1 (x) and 2i (y) of
+  !> Je(2 m, ndof) and its normal row i of Jn(m, ndof), both in Fortran's order; kt(m) > 0,
+  !> mu(m) >= 0, n0(m), kn(m) >= 0. q then has 3 m columns: 3i - 2 element i's ux, 3i - 1 its
+  !> uy, 3i its g. FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_EINVAL; FRICREG_ENOMEM. Since 1.7.
+  function hb_set_jenkins_2d_normal(self, Je, Jn, kt, mu, n0, kn) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    real(c_double), intent(in) :: Je(:, :), Jn(:, :)
+    real(c_double), intent(in), contiguous :: kt(:), mu(:), n0(:), kn(:)
+    integer(c_int) :: status
+    character(len=*), parameter :: fn = 'set_jenkins_2d_normal'
+    real(c_double), allocatable :: Jec(:, :), Jnc(:, :) ! transposed: C's row-major Je, Jn
+    status = self%hb_shape(fn, 'Je', Je, 2 * self%m, self%n)
+    if (status == FRICREG_OK) status = self%hb_shape(fn, 'Jn', Jn, self%m, self%n)
+    if (status == FRICREG_OK) status = self%hb_shape(fn, 'kt', kt, self%m, 0_c_size_t)
+    if (status == FRICREG_OK) status = self%hb_shape(fn, 'mu', mu, self%m, 0_c_size_t)
+    if (status == FRICREG_OK) status = self%hb_shape(fn, 'n0', n0, self%m, 0_c_size_t)
+    if (status == FRICREG_OK) status = self%hb_shape(fn, 'kn', kn, self%m, 0_c_size_t)
+    if (status /= FRICREG_OK) return
+    allocate (Jec, source=transpose(Je))
+    allocate (Jnc, source=transpose(Jn))
+    status = self%record(fricreg_hb_set_jenkins_2d_normal(self%ptr, self%m, self%n, Jec, Jnc, &
+                                                          kt, mu, n0, kn))
+    if (status == FRICREG_OK) self%rows = 3 * self%m
+  end function hb_set_jenkins_2d_normal
 
   !> One setter of M, K and C, in any storage (C's fricreg_hb_set_matrix), a generic of two
   !> forms, as fricreg_structure's set_matrix (the contacts aside: J is set with the elements):

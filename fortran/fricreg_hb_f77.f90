@@ -22,6 +22,7 @@
 !   FRHBIW(H, M, NDOF, J, NS, K, PHI, STAT)           _set_iwan (J transposed, K(NS, M))
 !   FRHBLO(H, M, NDOF, JT, JN, KT, MU, N0, KN, STAT)  _set_normal_elements (JT, JN transposed)
 !   FRHBIL(H, M, NDOF, JT, JN, NS, K, MU, N0, KN, STAT)  _set_iwan_normal (K, MU (NS, M))
+!   FRHBL2(H, M, NDOF, JE, JN, KT, MU, N0, KN, STAT)  _set_jenkins_2d_normal (JE(2M, NDOF))
 !   FRHBPF(H, NDOF, PC, PS, STAT)                     _set_excitation
 !   FRHBNT(H, TOL, MAXIT, STAT)                       _set_newton
 !   FRHBCT(H, DS, DSMIN, DSMAX, MAXPT, STAT)          _set_continuation
@@ -169,6 +170,34 @@ subroutine frhblo(h, m, ndof, jt, jn, kt, mu, n0, kn, stat)
   stat = int(fricreg_hb_set_normal_elements(fricreg_handle_to_ptr(h), int(m, c_size_t), &
                                             int(ndof, c_size_t), ct, cn, kt, mu, n0, kn))
 end subroutine frhblo
+
+!> FRHBL2(H, M, NDOF, JE, JN, KT, MU, N0, KN, STAT): 3-D contact elements instead (C's
+!> fricreg_hb_set_jenkins_2d_normal): element I's tangential rows 2I - 1 (x) and 2I (y) of
+!> JE(2 M, NDOF), its normal row I of JN(M, NDOF), KT, MU, N0, KN as FRHBLO's. Q then has 3 M
+!> columns (NQ = 3 M NC): 3I - 2 element I's UX, 3I - 1 its UY, 3I its G. Since 1.7.
+subroutine frhbl2(h, m, ndof, je, jn, kt, mu, n0, kn, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: m, ndof
+  double precision, intent(in) :: je(2 * min(max(m, 0), 2**25), *), jn(max(m, 0), *), kt(*), &
+                                  mu(*), n0(*), kn(*)
+  integer, intent(out) :: stat
+  double precision, allocatable :: ct(:, :), cn(:, :)
+  integer :: mm, nn
+  if (m > 2**25) then ! 2 M would wrap a default INTEGER (C answers FRICREG_ESIZE for any M
+    stat = int(FRICREG_ESIZE) ! other than the driver's)
+    return
+  end if
+  ! Sizes that cannot be the driver's copy nothing: C answers FRICREG_ESIZE.
+  mm = max(m, 0)
+  nn = max(ndof, 0)
+  stat = int(fricreg_f77_transposed_rows(je(1:2 * mm, 1:nn), jn(1:mm, 1:nn), ct, cn))
+  if (stat /= FRICREG_OK) return
+  stat = int(fricreg_hb_set_jenkins_2d_normal(fricreg_handle_to_ptr(h), int(m, c_size_t), &
+                                              int(ndof, c_size_t), ct, cn, kt, mu, n0, kn))
+end subroutine frhbl2
 
 !> FRHBIL(H, M, NDOF, JT, JN, NS, K, MU, N0, KN, STAT): Iwan elements under a normal load with
 !> lift-off instead, JT, JN, N0, KN as FRHBLO's, element I's NS sliders the stiffnesses

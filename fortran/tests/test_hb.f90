@@ -14,6 +14,8 @@
 ! (set_iwan_normal with one slider too, with two halves of the slider to 1e-12);
 ! set_matrix dense gives set_mass's and set_stiffness's bit for bit, compressed (a sparse model)
 ! to Newton's tolerance; which = FRICREG_CONTACTS, 0 and a dense format with values(:) refused.
+! set_jenkins_2d_normal (Je(2, 2) in Fortran's order, q with 3 columns) equals C's function
+! called through bind(C) with Je's rows by hand, bit for bit.
 program test_hb
   use fricreg
   use ftest
@@ -23,7 +25,7 @@ program test_hb
   real(c_double), parameter :: w = 1.2_c_double
   real(c_double) :: lev, q(7, 1), x(7, 1), d, c, rms(1), omega, big, qc(7, 1), q2(7, 1), bad(5, 1)
   real(c_double) :: M2(2, 2), K2(2, 2), J2(1, 2), Jrow(2), Jn2(1, 2), qn(7, 2), pw, pr
-  real(c_double) :: ec(2), ea(2), et(2), eat(2), qn2(7, 2)
+  real(c_double) :: ec(2), ea(2), et(2), eat(2), qn2(7, 2), q3(7, 3), q3c(7, 3), Je2(2, 2)
   type(fricreg_hb_driver) :: sparse
   integer :: k, btype, bpoint
   real(c_double) :: mu
@@ -195,6 +197,36 @@ program test_hb
                                           reshape([0.1_c_double], [1, 1]), [0.5_c_double], &
                                           [0.0_c_double]), FRICREG_ESIZE, 'set_iwan_normal: mu (1, 1)')
   call check(index(chain%errmsg(), 'mu') > 0, 'message: ' // chain%errmsg())
+  ! the 3-D contact element: x on J2's row, y on dof 2, normal Jn2; against C's function with
+  ! Je's rows by hand (row-major: x's row, then y's)
+  Je2(1, :) = J2(1, :)
+  Je2(2, :) = [0.0_c_double, 1.0_c_double]
+  call check_status(chain%set_jenkins_2d_normal(Je2, Jn2, [4.0_c_double], [0.2_c_double], &
+                                                [0.5_c_double], [0.3_c_double]), FRICREG_OK, &
+                    'set_jenkins_2d_normal')
+  call check_status(chain%solve(1.1_c_double, qn2), FRICREG_ESIZE, 'q with 2 m columns')
+  call check_status(chain%solve(1.1_c_double, q3), FRICREG_OK, '3-D solve')
+  p = c_null_ptr
+  call check_status(fricreg_hb_create(2_c_size_t, 1_c_size_t, 3_c_int, p), FRICREG_OK, 'C create')
+  call check_status(fricreg_hb_set_mass(p, 2_c_size_t, M2), FRICREG_OK, 'C M')
+  call check_status(fricreg_hb_set_stiffness(p, 2_c_size_t, K2), FRICREG_OK, 'C K')
+  call check_status(fricreg_hb_set_rayleigh(p, 0.05_c_double, 0.0_c_double), FRICREG_OK, 'C C')
+  call check_status(fricreg_hb_set_jenkins_2d_normal(p, 1_c_size_t, 2_c_size_t, &
+                                                     [1.0_c_double, -1.0_c_double, &
+                                                      0.0_c_double, 1.0_c_double], &
+                                                     [0.0_c_double, 1.0_c_double], [4.0_c_double], &
+                                                     [0.2_c_double], [0.5_c_double], &
+                                                     [0.3_c_double]), FRICREG_OK, 'C 3-D')
+  call check_status(fricreg_hb_set_excitation(p, 2_c_size_t, [1.0_c_double, 0.0_c_double], &
+                                              [0.0_c_double, 0.0_c_double]), FRICREG_OK, 'C p')
+  call check_status(fricreg_hb_solve(p, 1.1_c_double, 21_c_size_t, q=q3c), FRICREG_OK, 'C solve')
+  call fricreg_hb_free(p)
+  call check(all(q3 == q3c), 'the 3-D element: the type equals C bit for bit')
+  call check(maxval(abs(q3(2:7, 2))) > 1e-3_c_double, 'the element moves on y')
+  call check_status(chain%set_jenkins_2d_normal(J2, Jn2, [4.0_c_double], [0.2_c_double], &
+                                                [0.5_c_double], [0.3_c_double]), FRICREG_ESIZE, &
+                    'set_jenkins_2d_normal: Je (1, 2)')
+  call check(index(chain%errmsg(), 'Je') > 0, 'message: ' // chain%errmsg())
   call check_status(chain%set_jenkins_normal(J2, Jn2, [4.0_c_double], [-0.2_c_double], &
                                              [0.5_c_double], [0.0_c_double]), FRICREG_EINVAL, &
                     'set_jenkins_normal: mu < 0')

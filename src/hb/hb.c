@@ -31,6 +31,7 @@ struct rows_buffers {
     size_t *piv2;
 };
 
+/* Frees b and empties it (a second call does nothing). */
 static void free_rows(struct rows_buffers *b)
 {
     free(b->J);
@@ -39,6 +40,7 @@ static void free_rows(struct rows_buffers *b)
     free(b->G);
     free(b->fq);
     free(b->piv2);
+    *b = (struct rows_buffers){0};
 }
 
 static int alloc_rows(const fricreg_hb *hb, size_t cap, struct rows_buffers *b)

@@ -2236,6 +2236,32 @@ static const struct script hb_iwan_normal = {
     "hb set_iwan_normal", 2,    hb_iwan_normal_calls, 1,          0,       hb_iwan_open,
     hb_iwan_normal_call,  NULL, hb_normal_observe,    hb_errcode, hb_close};
 
+/* 3-D contact elements: set_jenkins_2d_normal twice (the first grows the buffers sized by the
+ * rows of J to three rows an element and allocates the normal law, the two sampled AFT
+ * workspaces and their results; the second only the normal law); the view solves at one
+ * frequency (nq = 3 (2H + 1)). */
+static const char *const hb_contact_3d_calls[] = {"set_jenkins_2d_normal(grows)",
+                                                  "set_jenkins_2d_normal(again)"};
+
+static int hb_contact_3d_call(void *obj, int i, struct view *v)
+{
+    (void)v;
+    const double Je[4] = {1.0, 0.0, 0.0, 1.0}, Jn[2] = {0.4, -0.3}, kt[1] = {1.5}, mu[1] = {0.4},
+                 n0[2] = {0.5, 0.3}, kn[1] = {2.0};
+    return fricreg_hb_set_jenkins_2d_normal(obj, 1, 2, Je, Jn, kt, mu, n0 + i, kn);
+}
+
+static void hb_contact_3d_observe(void *obj, struct view *v)
+{
+    double q[21] = {0}; /* a failed call leaves it: the view must read the same */
+    see(v, fricreg_hb_solve(obj, 1.1, 21, NULL, q));
+    see_all(v, q, 21);
+}
+
+static const struct script hb_contact_3d = {
+    "hb set_jenkins_2d_normal", 2,    hb_contact_3d_calls,   1,          0,       hb_iwan_open,
+    hb_contact_3d_call,         NULL, hb_contact_3d_observe, hb_errcode, hb_close};
+
 /* Hill's method turned on: set_stability's allocations (the companion matrix, the eigenvalues,
  * GSL's workspace on fricreg's memory, M's LU); the view solves with Jenkins elements and reads
  * the solution's stability (FRICREG_EINVAL when set_stability failed: it stayed off). */
@@ -2977,6 +3003,14 @@ START_TEST(test_hb_iwan_normal)
 }
 END_TEST
 
+/* set_jenkins_2d_normal's allocations fail cleanly: ENOMEM and the elements as before */
+START_TEST(test_hb_contact_3d)
+{
+    struct tally t = fail_each_allocation(&hb_contact_3d);
+    ck_assert_int_eq(t.enomem, t.cases);
+}
+END_TEST
+
 START_TEST(test_aft_eval_does_not_allocate)
 {
     fricreg_aft *a = NULL;
@@ -2984,14 +3018,17 @@ START_TEST(test_aft_eval_does_not_allocate)
     const double u[7] = {0.3, 1.2, -0.4, 0.1, 0.9, -0.7, 0.35}, k[2] = {2.385, 1.0},
                  phi[2] = {0.7, 0.25};
     double f[7], jac[49];
-    int st[4];
+    int st[5];
     hook_arm(1);
     st[0] = fricreg_aft_jenkins_exact(a, 2.385, 0.7, 7, u, f, jac);
     st[1] = fricreg_aft_jenkins_sampled(a, 2.385, 0.7, 7, u, f, jac);
     st[2] = fricreg_aft_iwan_exact(a, 2, k, phi, 7, u, f, jac);
     st[3] = fricreg_aft_iwan_sampled(a, 2, k, phi, 7, u, f, jac);
+    double u2[14] = {0.3, 1.2, -0.4, 0.1, 0.9, -0.7, 0.35, 0.0, 0.2, 0.8}, g[7] = {0.1, 0.3};
+    double f2[14], nf[7], jac3[441];
+    st[4] = fricreg_aft_jenkins_2d_normal_sampled(a, 2.385, 0.3, 1.0, 2.0, 7, u2, g, f2, nf, jac3);
     hook_disarm();
-    for (int i = 0; i < 4; i++)
+    for (int i = 0; i < 5; i++)
         ck_assert_int_eq(st[i], FRICREG_OK);
     ck_assert_msg(n_allocs == 0, "AFT evaluations made %ld allocations", n_allocs);
     fricreg_aft_free(a);
@@ -3449,6 +3486,7 @@ static Suite *alloc_suite(void)
     tcase_add_test(drivers, test_hb_iwan);
     tcase_add_test(drivers, test_hb_normal);
     tcase_add_test(drivers, test_hb_iwan_normal);
+    tcase_add_test(drivers, test_hb_contact_3d);
     tcase_add_test(drivers, test_hb_stability);
     tcase_add_loop_test(drivers, test_structure_run, 0, N_SCHEMES);
     tcase_add_loop_test(drivers, test_structure_estimate_run, 0, N_SCHEMES);
