@@ -5,17 +5,22 @@
  * Where the numbers come from:
  *   - on one tangential axis with a constant normal force the element is the lift-off Jenkins
  *     element of fricreg_hb_set_jenkins_normal, whose AFT is exact: the responses agree to the
- *     sampled AFT's error on a line, O(N^-2) (asserted 1e-5 of the RMS);
+ *     sampled AFT's error on a line, O(N^-2) (asserted (2 pi/N)^2 = 4e-5 of the RMS at
+ *     N = 1024; measured 2e-7 … 1.3e-5);
  *   - closed and stuck (N0 large, mu large): the element is the springs kt, kt, kn on its
  *     rows with the preload, a linear response (GSL's complex LU), to 1e-10;
  *   - a 2-dof mass sliding in the plane on an inclined contact (the normal row couples x and
- *     y), shaken so that the element slips along a curved path and lifts off in every period:
+ *     y), at Omega = 1 closed and slipping along a curved path, at 1.35 lifting off in every
+ *     period (both asserted on the time series):
  *     the steady state of fricreg_structure_set_jenkins_2d_normal under Newmark (average
  *     acceleration, 100 periods from HB's state, steady to 1e-7 asserted: the state is unique),
  *     at 2048 and 4096 steps a period, extrapolated to dt -> 0 as the radial return's first
  *     order allows. HB at H = 15 agrees within its own truncation estimate
- *     (fricreg_hb_truncation_error) plus the reference's last refinement (measured: 1e-6 of
- *     the RMS and below). */
+ *     (fricreg_hb_truncation_error) plus the reference's last refinement (measured: 3e-6 of
+ *     the RMS and below), and Hill's method calls it stable (the march settles on it);
+ *   - the backbone of the nonlinear mode starts at the stuck linear mode (closed form, 1e-12)
+ *     and softens;
+ *   - a continuation through the lift-off with Hill's stability passes the point solves. */
 #include <check.h>
 #include <math.h>
 #include <stdio.h>
@@ -185,12 +190,19 @@ START_TEST(against_a_long_time_integration)
     const double omegas[] = {1.0, 1.35};
     const int lifts[] = {0, 1};
     fricreg_hb *hb = make(&s, H);
+    ck_assert_int_eq(fricreg_hb_set_stability(hb, 1), FRICREG_OK);
     for (size_t w = 0; w < sizeof omegas / sizeof *omegas; w++) {
         double r4[N], p4[N], r8[N], p8[N], q[3 * 31], x[N * 31], err[N], aerr[N], x0[N], v0[N];
         solve_h15(&s, omegas[w], q, x);
         ck_assert_int_eq(fricreg_hb_solve(hb, omegas[w], 3 * nc, q, q), FRICREG_OK);
         ck_assert_int_eq(fricreg_hb_truncation_error(hb, FRICREG_HB_SOLUTION, N, err, aerr),
                          FRICREG_OK);
+        /* the march below settles on it from a nearby state: Hill's method must call it stable */
+        int stable = 0;
+        double mu_max;
+        ck_assert_int_eq(fricreg_hb_point_stability(hb, FRICREG_HB_SOLUTION, &stable, &mu_max),
+                         FRICREG_OK);
+        ck_assert_msg(stable == 1, "Omega %g: unstable (%g)", omegas[w], mu_max);
         /* started at HB's state (the steady state is unique: asserted steady below) */
         initial_state(x, nc, omegas[w], x0, v0);
         newmark_rms(&s, omegas[w], 2048, x0, v0, r4, p4);
@@ -357,6 +369,47 @@ START_TEST(continuation_passes_the_point_solves)
 }
 END_TEST
 
+/* The backbone of mode 0 (modal damping): at small amplitudes the element is stuck and closed
+ * (the nonlinear modes' stuck rows: kt on x and y, kn on the normal row), so omega is the
+ * linear mode's of K_0 = K + kt Je^T Je + kn Jn^T Jn against M, the root of
+ * det(K_0 - lambda M) = 0 in closed form, to 1e-12; beyond, omega never rises and falls by
+ * 1 % at least (the element slips and opens). */
+START_TEST(backbone_starts_at_the_stuck_mode)
+{
+    struct plane s = inclined();
+    const size_t np = 12;
+    fricreg_hb *hb = make(&s, 5);
+    ck_assert_int_eq(fricreg_hb_nma(hb, 0, FRICREG_HB_NMA_DAMPING_MODAL, 0.001, 3.0, np),
+                     FRICREG_OK);
+    ck_assert_uint_eq(fricreg_hb_nma_points(hb), np);
+    double K0[N * N];
+    for (size_t i = 0; i < N; i++)
+        for (size_t k = 0; k < N; k++)
+            K0[i * N + k] = s.K[i * N + k] +
+                            s.kt * (s.Je[i] * s.Je[k] + s.Je[N + i] * s.Je[N + k]) +
+                            s.kn * s.Jn[i] * s.Jn[k];
+    double qa = s.M[0] * s.M[3], qb = K0[0] * s.M[3] + K0[3] * s.M[0],
+           qc = K0[0] * K0[3] - K0[1] * K0[2];
+    double omega_stuck = sqrt((qb - sqrt(qb * qb - 4.0 * qa * qc)) / (2.0 * qa));
+    double first = 0.0, last = 0.0;
+    for (size_t k = 0; k < np; k++) {
+        double a, w, z;
+        ck_assert_int_eq(fricreg_hb_nma_point(hb, k, &a, &w, &z, 0, 0, NULL), FRICREG_OK);
+        if (getenv("HB_PRINT"))
+            fprintf(stderr, "backbone: a %.6g omega %.12f (stuck %.12f) zeta %.6g\n", a, w,
+                    omega_stuck, z);
+        if (k == 0)
+            ck_assert_double_le(fabs(w - omega_stuck), 1e-12 * omega_stuck);
+        else
+            ck_assert_double_le(w, last * (1.0 + 1e-12));
+        first = k == 0 ? w : first;
+        last = w;
+    }
+    ck_assert_double_lt(last, 0.99 * first);
+    fricreg_hb_free(hb);
+}
+END_TEST
+
 START_TEST(bad_input)
 {
     struct plane s = inclined();
@@ -400,6 +453,7 @@ int main(void)
     tcase_add_test(tc, one_axis_is_the_liftoff_element);
     tcase_add_test(tc, closed_stuck_is_linear);
     tcase_add_test(tc, continuation_passes_the_point_solves);
+    tcase_add_test(tc, backbone_starts_at_the_stuck_mode);
     tcase_add_test(tc, bad_input);
     tcase_add_test(tc, against_a_long_time_integration);
     suite_add_tcase(s, tc);
