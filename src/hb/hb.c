@@ -198,8 +198,8 @@ void fricreg_hb_free(fricreg_hb *hb)
 }
 
 /* A driver at harmonics H with src's model (dense or sparse M, C, K, Rayleigh damping),
- * elements (Jenkins, Iwan, lift-off or 3-D contact), excitation, Newton's settings, monitor and bound: the
- * companion of fricreg_hb_truncation_error. Nothing of src changes. */
+ * elements (Jenkins, Iwan, lift-off or 3-D contact), excitation, Newton's settings, monitor and
+ * bound: the companion of fricreg_hb_truncation_error. Nothing of src changes. */
 int fr_hb_clone(const fricreg_hb *src, int harmonics, fricreg_hb **out)
 {
     fricreg_hb *hb = NULL;

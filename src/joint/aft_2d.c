@@ -25,7 +25,8 @@
  * df = T (du - dw) + mu kn dg e and dw = du - df/kt; dN = kn dg where closed. At a periodic
  * slip, dw at the start solves (I - Psi) dw = Phi_u (Psi = dPhi/dw, the product of the slips'
  * T/kt, a contraction); a march opened in the period starts at du of the last open sample; a
- * stuck one from the derivative of the enclosing circle's centre, through the periods marched.
+ * stick from the first period on at the derivative of the enclosing circle's centre; a stick
+ * reached after slips holds its slider (dw = 0: the slips that placed it are not differentiated).
  * One-sided at the samples' switches, as aft_normal.c's. */
 #include <float.h>
 #include <math.h>
@@ -40,7 +41,7 @@
 
 enum { STICK, SLIP, OPEN };
 
-/* The samples of one call, in the workspace's buffers (aft.c: 9 N beside the 1-D ones). */
+/* The samples of one call, in the workspace's buffers (aft.c: 8 N beside the 1-D ones). */
 struct samples {
     const double *ux, *uy, *gap, *load; /* u, N0 + kn g, N */
     double *fx, *fy;                    /* the forces of the last period marched */
@@ -278,12 +279,12 @@ enum start_kind { FROM_OPENING, STUCK_FROM_CIRCLE, STUCK_ELSEWHERE, PERIODIC_SLI
 struct periodic {
     enum start_kind kind;
     size_t start; /* the sample the recorded period starts after */
-    double w[2];  /* the slider there */
     int periods;  /* STUCK_FROM_CIRCLE: periods marched from the centre */
     struct circle circle;
 };
 
-/* Newton's method on the slider at the start of a period, from w (the PLAIN periods' end). */
+/* Newton's method on the slider at the start of a period, from w (the PLAIN periods' end),
+ * left in w; the last period marched from it is recorded. */
 static enum start_kind newton(const fricreg_aft *a, const struct samples *s, const struct law *p,
                               double scale, double w[2])
 {
@@ -322,9 +323,7 @@ static struct periodic march(const fricreg_aft *a, const struct samples *s, cons
     struct periodic out = {.start = open};
     if (open < N) {
         out.kind = FROM_OPENING;
-        out.w[0] = s->ux[open];
-        out.w[1] = s->uy[open];
-        double w[2] = {out.w[0], out.w[1]};
+        double w[2] = {s->ux[open], s->uy[open]};
         period(a, s, p, open, w);
         return out;
     }
@@ -339,14 +338,10 @@ static struct periodic march(const fricreg_aft *a, const struct samples *s, cons
         }
         if (w[0] == w0[0] && w[1] == w0[1]) { /* repeated to the bit */
             out.kind = PERIODIC_SLIP;
-            out.w[0] = w0[0];
-            out.w[1] = w0[1];
             return out;
         }
     }
     out.kind = newton(a, s, p, scale, w);
-    out.w[0] = w[0];
-    out.w[1] = w[1];
     return out;
 }
 
@@ -375,15 +370,16 @@ void fr_aft_sampled_2d_normal(fricreg_aft *a, double kt, double mu, double n0, d
                               const double *u, const double *g, double *f, double *nf, double *jac)
 {
     size_t N = a->N, nc = a->nc, w3 = 3 * nc;
+    double *uy = a->s2, *gap = a->s2 + N, *load = a->s2 + 2 * N; /* views()'s layout */
+    fr_aft_sample_values(a, u, a->us);
+    fr_aft_sample_values(a, u + nc, uy);
+    fr_aft_sample_values(a, g, gap);
+    for (size_t n = 0; n < N; n++) {
+        gap[n] = n0 + kn * gap[n];
+        load[n] = fmax(0.0, gap[n]);
+    }
     struct samples s = views(a);
     struct law p = {.kt = kt, .mu = mu, .kn = kn};
-    fr_aft_sample_values(a, u, a->us);
-    fr_aft_sample_values(a, u + nc, (double *)s.uy);
-    fr_aft_sample_values(a, g, (double *)s.gap);
-    for (size_t n = 0; n < N; n++) {
-        ((double *)s.gap)[n] = n0 + kn * s.gap[n];
-        ((double *)s.load)[n] = fmax(0.0, s.gap[n]);
-    }
     struct periodic pm = march(a, &s, &p);
     if (pm.kind == STUCK_FROM_CIRCLE && pm.periods > 1)
         pm.kind = STUCK_ELSEWHERE; /* the slips before the stuck period are not in its record */
