@@ -312,8 +312,9 @@ FRICREG_API int fricreg_aft_jenkins_normal_exact(fricreg_aft *aft, double kt, do
  *  then found by Newton's method on w = Phi(w), the period's map, whose 2 x 2 derivative is a
  *  contraction wherever the element slips. The Jacobian is the chain rule through the samples,
  *  with the slider at the periodic start differentiated through w = Phi(w) (exact for the
- *  sampled map); where a stick throughout follows slips of the first periods, the stuck
- *  slider's motion with u is left out (the tangent of a held slider). With uy = 0 and kn = 0,
+ *  sampled map); a stick throughout that slips of the first periods placed is differentiated
+ *  through them (the march run again for each column), one that Newton's steps reached holds
+ *  its slider (the tangent of a held slider). With uy = 0 and kn = 0,
  *  fx, N and their Jacobian's (u, g) block equal fricreg_aft_jenkins_normal_sampled's (the
  *  forces to the bit where the element slips or the centred slider holds; tests/test_aft_2d.c).
  *  Sampling error: the return mapping at the samples drags the slider along chords of a

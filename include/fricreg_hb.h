@@ -415,8 +415,8 @@ FRICREG_API int fricreg_hb_set_iwan_normal(fricreg_hb *hb, size_t m, size_t ndof
  *  fricreg_hb_set_normal_elements does for 2 m), and two AFT workspaces of O(N H) doubles (the
  *  previous one freed on success). Cost of a residual with its Jacobian: per element and per
  *  each of its 3 (2H + 1) unknowns two marches of N and N/2 samples and 7/3 FFTs of each
- *  length on average: 8.8 ms a Newton step at H = 15 for one element, 65 times the exact AFT
- *  of fricreg_hb_set_jenkins_normal's element (bench/hb_contact_3d.c).
+ *  length on average: 66 ms a continuation point at H = 15 for one element, about 100 times
+ *  fricreg_hb_set_jenkins_normal's element with its exact AFT (bench/hb_contact_3d.c).
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if hb, Je, Jn, kt, mu, n0 or kn is NULL; FRICREG_ESIZE if m
  *  or ndof is not the driver's; FRICREG_ENONFINITE if an entry is NaN or infinite;

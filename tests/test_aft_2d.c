@@ -15,7 +15,8 @@
  *   - against the time-domain element (fricreg_jenkins, dim 2, fricreg_jenkins_trial_normal
  *     and commit at the same samples), marched from a relaxed slider until the slider repeats,
  *     the last period's forces by a plain DFT written here: an elliptic orbit that slips, one
- *     that lifts off, a bound moving with g, and a stuck orbit about its own centre;
+ *     that lifts off, a bound moving with g, a stuck orbit about its own centre, a slip barely
+ *     past the threshold, and a stick that slips of the first periods placed;
  *   - the Jacobian against central differences of the same function (step 1e-6). */
 #include <check.h>
 #include <math.h>
@@ -205,6 +206,11 @@ static const struct contact marched[] = {
     /* a slip barely past the threshold (r_b = 0.0375): the slider contracts slowly onto its
      * periodic state, which Newton's steps find */
     {40.0, 0.3, 5.0, 0.0, {0.0, 0.0385, 0.0, 0.001, 0, 0, 0, 0, 0.0, 0.0385}, {0.0}, "barely"},
+    /* a bound moving with g that the centre of the orbit's enclosing circle misses (0.7 from
+     * u at theta = pi, where mu N / kt = 0.5) but a slider beside it clears: the first periods
+     * slip, then the element sticks throughout (an ellipse: the circle's support is one
+     * diameter, a regular polygon of samples would leave it undefined) */
+    {1.0, 1.0, 1.0, 1.0, {0.0, 0.7, 0.0, 0, 0, 0, 0, 0, 0.0, 0.4}, {0.0, 0.5}, "placed"},
 };
 
 START_TEST(against_the_time_domain_element)

@@ -25,9 +25,10 @@
  * df = T (du - dw) + mu kn dg e and dw = du - df/kt; dN = kn dg where closed. At a periodic
  * slip, dw at the start solves (I - Psi) dw = Phi_u (Psi = dPhi/dw, the product of the slips'
  * T/kt, a contraction); a march opened in the period starts at du of the last open sample; a
- * stick from the first period on at the derivative of the enclosing circle's centre; a stick
- * reached after slips holds its slider (dw = 0: the slips that placed it are not differentiated).
- * One-sided at the samples' switches, as aft_normal.c's. */
+ * stick from the circle's centre at that centre's derivative, carried through the slips of the
+ * periods before it where there were some (the march is run again for each column); a stick
+ * that Newton's steps reached holds its slider (dw = 0). One-sided at the samples' switches,
+ * as aft_normal.c's. */
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
@@ -116,6 +117,37 @@ static void input(const fricreg_aft *a, size_t j, size_t n, double du[2], double
     *dg = j >= 2 * nc && j != SIZE_MAX ? phi : 0.0;
 }
 
+/* The derivative at sample n along column j on its record: dw updated, df (fx, fy, N) out. */
+static void chain_sample(const fricreg_aft *a, const struct samples *s, const struct law *p,
+                         size_t n, size_t j, double *dw, double df[3])
+{
+    double du[2], dg;
+    input(a, j, n, du, &dg);
+    df[0] = df[1] = 0.0;
+    df[2] = s->kind[n] == OPEN ? 0.0 : p->kn * dg;
+    if (s->kind[n] == OPEN) {
+        dw[0] = du[0];
+        dw[1] = du[1];
+    } else if (s->kind[n] == STICK) {
+        df[0] = p->kt * (du[0] - dw[0]);
+        df[1] = p->kt * (du[1] - dw[1]);
+    } else {
+        double e[2] = {s->ex[n], s->ey[n]}, v[2] = {du[0] - dw[0], du[1] - dw[1]};
+        double ev = e[0] * v[0] + e[1] * v[1], dmu = p->mu * p->kn * dg;
+        for (int c = 0; c < 2; c++) {
+            df[c] = s->sl[n] * (v[c] - e[c] * ev) + dmu * e[c];
+            dw[c] = du[c] - df[c] / p->kt;
+        }
+    }
+}
+
+static void put(size_t N, size_t n, const double df[3], double *out)
+{
+    out[n] = df[0];
+    out[N + n] = df[1];
+    out[2 * N + n] = df[2];
+}
+
 /* The derivative of one period along column j from dw (updated) at sample start, on the
  * record of the last period marched; with out, dfx, dfy, dN into out[0, N, 2N]. */
 static void chain(const fricreg_aft *a, const struct samples *s, const struct law *p, size_t start,
@@ -124,27 +156,10 @@ static void chain(const fricreg_aft *a, const struct samples *s, const struct la
     size_t N = a->N;
     for (size_t i = 1; i <= N; i++) {
         size_t n = (start + i) & (N - 1); /* N is a power of two */
-        double du[2], dg, df[2] = {0.0, 0.0};
-        input(a, j, n, du, &dg);
-        if (s->kind[n] == OPEN) {
-            dw[0] = du[0];
-            dw[1] = du[1];
-        } else if (s->kind[n] == STICK) {
-            df[0] = p->kt * (du[0] - dw[0]);
-            df[1] = p->kt * (du[1] - dw[1]);
-        } else {
-            double e[2] = {s->ex[n], s->ey[n]}, v[2] = {du[0] - dw[0], du[1] - dw[1]};
-            double ev = e[0] * v[0] + e[1] * v[1], dmu = p->mu * p->kn * dg;
-            for (int c = 0; c < 2; c++) {
-                df[c] = s->sl[n] * (v[c] - e[c] * ev) + dmu * e[c];
-                dw[c] = du[c] - df[c] / p->kt;
-            }
-        }
-        if (out != NULL) {
-            out[n] = df[0];
-            out[N + n] = df[1];
-            out[2 * N + n] = s->kind[n] == OPEN ? 0.0 : p->kn * dg;
-        }
+        double df[3];
+        chain_sample(a, s, p, n, j, dw, df);
+        if (out != NULL)
+            put(N, n, df, out);
     }
 }
 
@@ -353,7 +368,7 @@ static void start_derivative(const fricreg_aft *a, const struct samples *s, cons
     double dg;
     switch (pm->kind) {
     case FROM_OPENING: input(a, j, pm->start, dw, &dg); return;
-    case STUCK_ELSEWHERE: /* a stick reached by Newton's steps: the slider held */
+    case STUCK_ELSEWHERE: /* a stick Newton's steps reached: the slider held */
         dw[0] = dw[1] = 0.0;
         return;
     case STUCK_FROM_CIRCLE: circle_derivative(a, s, &pm->circle, j, dw); return;
@@ -364,6 +379,24 @@ static void start_derivative(const fricreg_aft *a, const struct samples *s, cons
         return;
     }
     }
+}
+
+/* A stick reached after slips of the first periods: the march from the circle's centre run
+ * again with the derivative along column j (the slips placed the slider), the last period's
+ * derivatives into out. Rewrites each sample's record and forces with the same values. */
+static void remarch(const fricreg_aft *a, const struct samples *s, const struct law *p,
+                    const struct periodic *pm, size_t j, double *out)
+{
+    size_t N = a->N;
+    double w[2] = {pm->circle.c[0], pm->circle.c[1]}, dw[2], df[3];
+    circle_derivative(a, s, &pm->circle, j, dw);
+    for (int period = 1; period <= pm->periods; period++)
+        for (size_t n = 0; n < N; n++) {
+            step(s, p, n, w);
+            chain_sample(a, s, p, n, j, dw, df);
+            if (period == pm->periods)
+                put(N, n, df, out);
+        }
 }
 
 void fr_aft_sampled_2d_normal(fricreg_aft *a, double kt, double mu, double n0, double kn,
@@ -381,16 +414,19 @@ void fr_aft_sampled_2d_normal(fricreg_aft *a, double kt, double mu, double n0, d
     struct samples s = views(a);
     struct law p = {.kt = kt, .mu = mu, .kn = kn};
     struct periodic pm = march(a, &s, &p);
-    if (pm.kind == STUCK_FROM_CIRCLE && pm.periods > 1)
-        pm.kind = STUCK_ELSEWHERE; /* the slips before the stuck period are not in its record */
+    int placed = pm.kind == STUCK_FROM_CIRCLE && pm.periods > 1; /* a stick after slips */
     if (jac != NULL) {
         double *col = a->ds, psi[4] = {0.0}; /* 3 N of the nc N */
         if (pm.kind == PERIODIC_SLIP)
             monodromy(a, &s, &p, pm.start, psi);
         for (size_t j = 0; j < w3; j++) {
             double dw[2];
-            start_derivative(a, &s, &p, &pm, psi, j, dw);
-            chain(a, &s, &p, pm.start, j, dw, col);
+            if (placed) {
+                remarch(a, &s, &p, &pm, j, col);
+            } else {
+                start_derivative(a, &s, &p, &pm, psi, j, dw);
+                chain(a, &s, &p, pm.start, j, dw, col);
+            }
             /* N moves with g alone: its rows in the u columns are 0 */
             for (size_t r = 0; r < 3; r++)
                 if (r < 2 || j >= 2 * nc)
