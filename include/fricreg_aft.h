@@ -344,8 +344,9 @@ FRICREG_API int fricreg_aft_jenkins_normal_exact(fricreg_aft *aft, double kt, do
  *  2H + 1; FRICREG_ENONFINITE if kt, mu, n0, kn, some u[j] or g[j] is NaN or infinite, or the
  *  scales of fricreg_aft_jenkins_normal_sampled overflow (either axis for u). All inputs are
  *  checked before anything is computed or written. Cost O(N H) per period marched (up to 4,
- *  then up to 40 Newton steps, each a period), O(N H log N) with jac (9H FFTs of length N and
- *  two or three marches per column); no allocation. Since 1.7 (FRICREG_1.7). */
+ *  then up to 40 Newton steps, each a period), O(N H log N) with jac (for each of the 6H + 3
+ *  columns one to three marches of a period, up to five where slips placed a stick, and 2 FFTs
+ *  of length N for a column of u, 3 for one of g); no allocation. Since 1.7 (FRICREG_1.7). */
 FRICREG_API int fricreg_aft_jenkins_2d_normal_sampled(fricreg_aft *aft, double kt, double mu,
                                                       double n0, double kn, size_t n,
                                                       const double u[], const double g[],

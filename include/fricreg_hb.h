@@ -387,10 +387,10 @@ FRICREG_API int fricreg_hb_set_iwan_normal(fricreg_hb *hb, size_t m, size_t ndof
  *  come from fricreg_aft_jenkins_2d_normal_sampled at N = 64 (2H + 1) samples rounded up to a
  *  power of two and at N/2, extrapolated as 2 F(N) − F(N/2) (Richardson): the return mapping
  *  at samples lags the continuous element by a first-order term in 1/N where the slip turns
- *  (fricreg_aft.h), which this removes (at H = 15, N = 2048: a lag of 7.7e-4 of the RMS at
- *  N = 1024 without it). The driver's AFT workspaces grow to these samples here. Each element
- *  has three rows of J (x, y, normal: the unknowns nq = 3 m (2H + 1), element i's at
- *  3 i (2H + 1): ux's coefficients, uy's, g's); everything else is
+ *  (fricreg_aft.h), which this removes (the AFT at N = 1024 alone put the test's lift-off case
+ *  7.7e-4 of the RMS off at H = 15). The driver's AFT workspaces grow to these samples here.
+ *  Each element has three rows of J (x, y, normal: the unknowns nq = 3 m (2H + 1), element i's
+ *  at 3 i (2H + 1): ux's coefficients, uy's, g's); everything else is
  *  fricreg_hb_set_jenkins_normal's: stability, continuation in Ω or the level, the nonlinear
  *  modes (stuck stiffness kt on both tangential rows and kn on the normal one while N0 > 0)
  *  and the truncation estimate take them as they take those. A closed element with kn = 0
@@ -413,10 +413,11 @@ FRICREG_API int fricreg_hb_set_iwan_normal(fricreg_hb *hb, size_t m, size_t ndof
  *
  *  Allocates 4 m doubles, the first time the buffers for 3 m rows (as
  *  fricreg_hb_set_normal_elements does for 2 m), and two AFT workspaces of O(N H) doubles (the
- *  previous one freed on success). Cost of a residual with its Jacobian: per element and per
- *  each of its 3 (2H + 1) unknowns two marches of N and N/2 samples and 7/3 FFTs of each
- *  length on average: 66 ms a continuation point at H = 15 for one element, about 100 times
- *  fricreg_hb_set_jenkins_normal's element with its exact AFT (bench/hb_contact_3d.c).
+ *  previous one freed on success). Cost of a residual with its Jacobian: per element, for each
+ *  of its 3 (2H + 1) unknowns, one to three marches of a period (more where slips placed a
+ *  stick) and 7/3 FFTs on average, at N and at N/2 samples: 66 ms a continuation point at
+ *  H = 15 for one element, about 100 times fricreg_hb_set_jenkins_normal's element with its
+ *  exact AFT (bench/hb_contact_3d.c).
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if hb, Je, Jn, kt, mu, n0 or kn is NULL; FRICREG_ESIZE if m
  *  or ndof is not the driver's; FRICREG_ENONFINITE if an entry is NaN or infinite;

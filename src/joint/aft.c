@@ -261,7 +261,10 @@ int fricreg_aft_jenkins_2d_normal_sampled(fricreg_aft *aft, double kt, double mu
         return FRICREG_ENULL;
     double unit = 1.0; /* check() reads a slider bound: the normal law is checked apart */
     int status = check(aft, fn, 1, 1, &kt, &unit, n, u, f);
-    if (status == FRICREG_OK) /* uy, as ux */
+    for (size_t j = n; status == FRICREG_OK && j < 2 * n; j++) /* uy, named by its place in u */
+        if (!isfinite(u[j]))
+            status = fr_fail(aft, FRICREG_ENONFINITE, "%s: u[%zu] = %g", fn, j, u[j]);
+    if (status == FRICREG_OK) /* uy's scale, as ux's */
         status = check(aft, fn, 1, 1, &kt, &unit, n, u + n, f);
     if (status == FRICREG_OK)
         status = check_normal(aft, fn, mu, n0, kn, g, nf);
