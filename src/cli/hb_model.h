@@ -39,7 +39,7 @@ int cli_hb_parse_rayleigh(const struct cli_option *row, const char *text);
      .help = "stiffness matrix K, n x n, symmetric (required)"},                               \
     {"--damping", CLI_FILE, .slot = &(o)->damping, .meta = "C.mtx",                            \
      .help = "damping matrix C, n x n, symmetric (or --rayleigh; none: undamped)"},            \
-    CLI_ELEMENT_OPTIONS(&(o)->elements),                                                     \
+    CLI_ELEMENT_OPTIONS(&(o)->elements),                                                        \
     {"--rayleigh", CLI_CUSTOM, .slot = (o), .parse = cli_hb_parse_rayleigh,                    \
      .given = &(o)->rayleigh_given, .meta = "A0,A1",                                            \
      .help = "Rayleigh damping C = A0 M + A1 K (both >= 0)"}
