@@ -151,7 +151,7 @@ END_TEST
 static void time_domain(const struct contact *k, double *f, double *nf)
 {
     fricreg_jenkins *j = NULL;
-    double one = 1.0, w[2], wl[2] = {INFINITY, INFINITY};
+    double one = 1.0, w[2] = {INFINITY, INFINITY}, wl[2]; /* no slider read yet */
     ck_assert_int_eq(fricreg_jenkins_create(2, 1, &j), FRICREG_OK);
     ck_assert_int_eq(fricreg_jenkins_set_params(j, 1, &k->kt, &one), FRICREG_OK);
     ck_assert_int_eq(fricreg_jenkins_set_normal(j, 1, &k->mu, &k->n0, &k->kn), FRICREG_OK);
