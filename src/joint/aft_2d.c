@@ -175,13 +175,23 @@ static void monodromy(const fricreg_aft *a, const struct samples *s, const struc
     }
 }
 
-/* x = (I - psi)^-1 r; psi a contraction (a slip in the period): I - psi is invertible. */
+/* x = (I - psi)^-1 r. psi is a contraction wherever the period slips, but a slip along a
+ * line leaves the direction across it neutral (each slip's T/kt is 1 there to rounding when
+ * |d| sits at the bound): I - psi then has rank one to rounding, and x is the pseudo-inverse's
+ * solution (A^T r / |A|_F^2 for a rank-one A), the neutral component left out. */
 static void solve_periodic(const double psi[4], const double r[2], double x[2])
 {
     double a = 1.0 - psi[0], b = -psi[1], c = -psi[2], d = 1.0 - psi[3];
-    double det = a * d - b * c;
-    x[0] = (d * r[0] - b * r[1]) / det;
-    x[1] = (a * r[1] - c * r[0]) / det;
+    double det = a * d - b * c, fro2 = a * a + b * b + c * c + d * d;
+    if (fabs(det) > 1e-9 * fro2) {
+        x[0] = (d * r[0] - b * r[1]) / det;
+        x[1] = (a * r[1] - c * r[0]) / det;
+    } else if (fro2 > 0.0) {
+        x[0] = (a * r[0] + c * r[1]) / fro2;
+        x[1] = (b * r[0] + d * r[1]) / fro2;
+    } else {
+        x[0] = x[1] = 0.0;
+    }
 }
 
 /* ---- the smallest enclosing circle of the sampled orbit ------------------------------- */
@@ -373,6 +383,10 @@ static void start_derivative(const fricreg_aft *a, const struct samples *s, cons
         return;
     case STUCK_FROM_CIRCLE: circle_derivative(a, s, &pm->circle, j, dw); return;
     case PERIODIC_SLIP: {
+        if (j == 0 || j == a->nc) { /* u's mean moves the whole state with it: dw = du */
+            input(a, j, pm->start, dw, &dg);
+            return;
+        }
         double phi_u[2] = {0.0, 0.0};
         chain(a, s, p, pm->start, j, phi_u, NULL);
         solve_periodic(psi, phi_u, dw);

@@ -1,7 +1,9 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* fuzz_aft.c — fuzz target: the AFT of the joint elements (include/fricreg_aft.h): the exact
- * and sampled force coefficients of a Jenkins element, an Iwan element of up to four sliders
- * and a Jenkins element under a normal load with lift-off, with and without the Jacobian, at
+ * and sampled force coefficients of a Jenkins element, an Iwan element of up to four sliders,
+ * a Jenkins element under a normal load with lift-off and (sampled) the 3-D contact element,
+ * the last chosen by a byte after the coefficients (so that inputs written before it keep
+ * their meaning), with and without the Jacobian, at
  * H = 1..6 and N = 0 or a power of two up to 1024, on parameters and coefficients from the
  * input (moderate, special or any bits). Contract: the status is OK or one the docstring names
  * for the inputs (EINVAL, ENONFINITE, EINTEGRATOR; ESIZE cannot arise, n is right), recorded
@@ -30,9 +32,9 @@ enum { MAX_H = 6, MAX_NC = 2 * MAX_H + 1, MAX_SLIDERS = 4 };
 enum { JENKINS, IWAN, LIFTOFF, KINDS };
 
 struct call {
-    int kind, exact, want_jac, H;
+    int kind, exact, want_jac, H, planar; /* planar: LIFTOFF as the 3-D contact element */
     size_t n, ns;
-    double kt, mu, n0, kn, k[MAX_SLIDERS], phi[MAX_SLIDERS], u[MAX_NC], g[MAX_NC];
+    double kt, mu, n0, kn, k[MAX_SLIDERS], phi[MAX_SLIDERS], u[2 * MAX_NC], g[MAX_NC];
 };
 
 static double sum_abs(const double *x, size_t n)
@@ -54,6 +56,9 @@ static int run(fricreg_aft *a, const struct call *c, double *f, double *nf, doub
         return c->exact ? fricreg_aft_iwan_exact(a, c->ns, c->k, c->phi, c->n, c->u, f, J)
                         : fricreg_aft_iwan_sampled(a, c->ns, c->k, c->phi, c->n, c->u, f, J);
     default:
+        if (c->planar)
+            return fricreg_aft_jenkins_2d_normal_sampled(a, c->kt, c->mu, c->n0, c->kn, c->n, c->u,
+                                                         c->g, f, nf, J);
         return c->exact ? fricreg_aft_jenkins_normal_exact(a, c->kt, c->mu, c->n0, c->kn, c->n,
                                                            c->u, c->g, f, nf, J)
                         : fricreg_aft_jenkins_normal_sampled(a, c->kt, c->mu, c->n0, c->kn, c->n,
@@ -65,8 +70,11 @@ static int run(fricreg_aft *a, const struct call *c, double *f, double *nf, doub
 static unsigned allowed(const struct call *c, size_t N)
 {
     unsigned codes = 1u << FRICREG_EINTEGRATOR; /* GSL's root solver (exact paths) */
-    if (!c->exact && N == 0)
+    if ((!c->exact || c->planar) && N == 0)
         codes |= 1u << FRICREG_EINVAL;
+    if (c->planar && (!fuzz_all_finite(c->u + c->n, c->n) ||
+                      !isfinite(8.0 * fmax(1.0, fabs(c->kt)) * sum_abs(c->u + c->n, c->n))))
+        codes |= 1u << FRICREG_ENONFINITE; /* uy, checked as ux */
     const double *u = c->u;
     size_t n = c->n;
     if (!fuzz_all_finite(u, n))
@@ -96,7 +104,7 @@ static unsigned allowed(const struct call *c, size_t N)
             codes |= 1u << FRICREG_ENONFINITE;
         if (!(c->kn >= 0.0))
             codes |= 1u << FRICREG_EINVAL;
-        if (!c->exact &&
+        if ((!c->exact || c->planar) &&
             !isfinite(8.0 * c->mu * (fabs(c->n0) + c->kn * (1.0 + sum_abs(c->g, n))) / c->kt))
             codes |= 1u << FRICREG_ENONFINITE; /* the sampled march's slider excursion */
     }
@@ -138,10 +146,17 @@ static void check_success(fricreg_aft *a, const struct call *c, const double *f,
         B = c->mu * pmax;
     }
     check_bound(c, "f", f, B, slack);
+    if (c->planar) { /* fy, and the rounding of kt uy */
+        double slack_y = slack + 1e-12 * (kts * sum_abs(c->u + n, n));
+        FUZZ_REQUIRE(fuzz_all_finite(f + n, n), "fy not finite");
+        check_bound(c, "fy", f + n, B, slack_y);
+    }
     if (c->want_jac) {
-        size_t w = c->kind == LIFTOFF ? 2 * n : n;
+        size_t w = c->kind == LIFTOFF ? (c->planar ? 3 : 2) * n : n;
         FUZZ_REQUIRE(fuzz_all_finite(jac, w * w), "jac not finite");
     }
+    if (c->planar)
+        return;
     /* u's oscillation below the rounding of u itself (5e-324 beside a mean of 2e-307): no
      * motion is resolved, and the two paths may stick and slip differently within the bound */
     double swing = sum_abs(c->u + 1, n - 1);
@@ -191,9 +206,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         c.u[j] = fuzz_double(&in);
         c.g[j] = fuzz_double(&in);
     }
+    c.planar = c.kind == LIFTOFF && fuzz_byte(&in) % 2;
+    for (size_t j = 0; c.planar && j < c.n; j++)
+        c.u[c.n + j] = fuzz_double(&in); /* uy */
     fricreg_aft *a = NULL;
     FUZZ_REQUIRE(fricreg_aft_create(c.H, N, &a) == FRICREG_OK, "create H %d N %zu", c.H, N);
-    static double f[MAX_NC], nf[MAX_NC], jac[4 * MAX_NC * MAX_NC];
+    static double f[2 * MAX_NC], nf[MAX_NC], jac[9 * MAX_NC * MAX_NC];
     fuzz_fill(f, sizeof f);
     fuzz_fill(nf, sizeof nf);
     fuzz_fill(jac, sizeof jac);
