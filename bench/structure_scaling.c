@@ -11,9 +11,8 @@
  * and a lumped M, W is diagonal and both coincide), eps = 1e-3 m/s, average-acceleration
  * Newmark, dt = 0.005 s (dt omega_max = 1).
  *
- * The baseline is written here with CHOLMOD alone: K_eff = M + gamma dt C + beta dt^2 K
- * factored with the ordering the structure uses, then per step u_pred, v_pred, the right-hand
- * side p~ - C v_pred - K u_pred and one solve. Each figure is the median over repeats of the
+ * The baseline is Newmark written with CHOLMOD alone (linear_newmark.h): K_eff factored with
+ * the ordering the structure uses, one solve a step. Each figure is the median over repeats of the
  * mean time per step of a batch (process CPU time), after a warm-up batch that factors.
  *
  *   usage: fricreg-bench-structure-scaling N K [STEPS [REPEATS]]
@@ -24,9 +23,8 @@
 #include <string.h>
 #include <sys/resource.h>
 
-#include <cholmod.h>
-
 #include "bench.h"
+#include "linear_newmark.h"
 #include "fricreg_structure.h"
 
 #define MASS 1.0
@@ -35,8 +33,6 @@
 #define GROUND_A 3.0
 #define DT 0.005
 #define EPS 1e-3
-#define BETA 0.25
-#define GAMMA 0.5
 #define TWO_PI 6.283185307179586
 
 struct chain {
@@ -158,111 +154,10 @@ static double fricreg_batch(fricreg_structure *s, size_t steps)
     return (bench_cpu_seconds() - t0) / (double)steps;
 }
 
-/* ---- The baseline: a linear Newmark step with CHOLMOD --------------------------------------- */
-
-struct linear {
-    cholmod_common cc;
-    cholmod_sparse *K, *C;
-    cholmod_factor *L;
-    cholmod_dense *X, *Y, *E, *B;
-    double *u, *v, *a, *up, *vp, t;
-};
-
-static cholmod_sparse *upper(const struct chain *c, double scale, cholmod_common *cc)
+/* The ground acceleration of the baseline, the record's function. */
+static double ground_accel(double t)
 {
-    cholmod_sparse *A = cholmod_l_allocate_sparse(c->n, c->n, (size_t)c->kp[c->n], 1, 1, 1,
-                                                  CHOLMOD_REAL, cc);
-    memcpy(A->p, c->kp, (c->n + 1) * sizeof *c->kp);
-    memcpy(A->i, c->ki, (size_t)c->kp[c->n] * sizeof *c->ki);
-    for (int64_t q = 0; q < c->kp[c->n]; q++)
-        ((double *)A->x)[q] = scale * c->kx[q];
-    return A;
-}
-
-/* y = A x for the upper triangle A (the chain's K or C). */
-static void sym_mult(const cholmod_sparse *A, const double x[], double y[])
-{
-    const SuiteSparse_long *p = A->p, *i = A->i;
-    const double *ax = A->x;
-    memset(y, 0, A->ncol * sizeof *y);
-    for (size_t j = 0; j < A->ncol; j++)
-        for (SuiteSparse_long q = p[j]; q < p[j + 1]; q++) {
-            y[j] += ax[q] * x[i[q]];
-            if ((size_t)i[q] != j)
-                y[i[q]] += ax[q] * x[j];
-        }
-}
-
-static void linear_start(struct linear *l, const struct chain *c)
-{
-    size_t n = c->n;
-    cholmod_l_start(&l->cc);
-    l->cc.final_ll = 1;
-    l->cc.nmethods = 1;
-    l->cc.method[0].ordering = n >= 4096 ? CHOLMOD_NESDIS : CHOLMOD_AMD;
-    l->K = upper(c, 1.0, &l->cc);
-    l->C = upper(c, RAYLEIGH_A1, &l->cc);
-    cholmod_sparse *I = cholmod_l_speye(n, n, CHOLMOD_REAL, &l->cc);
-    I->stype = 1;
-    double one[2] = {MASS, 0}, kc[2] = {GAMMA * DT * RAYLEIGH_A1 + BETA * DT * DT, 0};
-    cholmod_sparse *Keff = cholmod_l_add(I, l->K, one, kc, 1, 1, &l->cc);
-    l->L = cholmod_l_analyze(Keff, &l->cc);
-    cholmod_l_factorize(Keff, l->L, &l->cc);
-    cholmod_l_free_sparse(&Keff, &l->cc);
-    cholmod_l_free_sparse(&I, &l->cc);
-    l->B = cholmod_l_zeros(n, 1, CHOLMOD_REAL, &l->cc);
-    l->u = calloc(n, sizeof *l->u);
-    l->v = calloc(n, sizeof *l->v);
-    l->a = calloc(n, sizeof *l->a);
-    l->up = calloc(n, sizeof *l->up);
-    l->vp = calloc(n, sizeof *l->vp);
-    l->t = 0.0;
-}
-
-static void linear_step(struct linear *l, size_t n)
-{
-    double *b = l->B->x;
-    for (size_t i = 0; i < n; i++) {
-        l->up[i] = l->u[i] + DT * l->v[i] + (0.5 - BETA) * DT * DT * l->a[i];
-        l->vp[i] = l->v[i] + (1.0 - GAMMA) * DT * l->a[i];
-    }
-    l->t += DT;
-    double ag = GROUND_A * sin(TWO_PI * l->t);
-    sym_mult(l->C, l->vp, b);
-    sym_mult(l->K, l->up, l->a); /* a as scratch */
-    for (size_t i = 0; i < n; i++)
-        b[i] = -MASS * ag - b[i] - l->a[i];
-    cholmod_l_solve2(CHOLMOD_A, l->L, l->B, NULL, &l->X, NULL, &l->Y, &l->E, &l->cc);
-    const double *x = l->X->x;
-    for (size_t i = 0; i < n; i++) {
-        l->a[i] = x[i];
-        l->u[i] = l->up[i] + BETA * DT * DT * x[i];
-        l->v[i] = l->vp[i] + GAMMA * DT * x[i];
-    }
-}
-
-static void linear_free(struct linear *l)
-{
-    cholmod_l_free_sparse(&l->K, &l->cc);
-    cholmod_l_free_sparse(&l->C, &l->cc);
-    cholmod_l_free_factor(&l->L, &l->cc);
-    cholmod_dense **d[] = {&l->X, &l->Y, &l->E, &l->B};
-    for (size_t i = 0; i < 4; i++)
-        cholmod_l_free_dense(d[i], &l->cc);
-    cholmod_l_finish(&l->cc);
-    free(l->u);
-    free(l->v);
-    free(l->a);
-    free(l->up);
-    free(l->vp);
-}
-
-static double linear_batch(struct linear *l, size_t n, size_t steps)
-{
-    double t0 = bench_cpu_seconds();
-    for (size_t i = 0; i < steps; i++)
-        linear_step(l, n);
-    return (bench_cpu_seconds() - t0) / (double)steps;
+    return GROUND_A * sin(TWO_PI * t);
 }
 
 int main(int argc, char **argv)
@@ -294,12 +189,12 @@ int main(int argc, char **argv)
     double peak = peak_mib();
     fricreg_structure_free(s);
 
-    struct linear l;
-    linear_start(&l, &c);
-    linear_batch(&l, c.n, 1);
+    struct linear_newmark l;
+    linear_newmark_start(&l, c.n, c.kp, c.ki, c.kx, MASS, RAYLEIGH_A1, DT);
+    linear_newmark_batch(&l, ground_accel, 1);
     for (size_t r = 0; r < repeats; r++)
-        lin[r] = linear_batch(&l, c.n, steps);
-    linear_free(&l);
+        lin[r] = linear_newmark_batch(&l, ground_accel, steps);
+    linear_newmark_free(&l);
     chain_free(&c);
 
     double f = bench_median(fr, repeats), b = bench_median(lin, repeats);
