@@ -17,7 +17,9 @@
  *     the last period's forces by a plain DFT written here: an elliptic orbit that slips, one
  *     that lifts off, a bound moving with g, a stuck orbit about its own centre, a slip barely
  *     past the threshold, and a stick that slips of the first periods placed;
- *   - the Jacobian against central differences of the same function (step 1e-6). */
+ *   - the Jacobian against central differences of the same function (step 1e-6);
+ *   - a slip along a line barely past the bound, all but neutral across the line: the stuck
+ *     element's forces, u's means (translations) with zero columns, every entry finite. */
 #include <check.h>
 #include <math.h>
 #include <string.h>
@@ -268,6 +270,41 @@ START_TEST(jacobian_against_differences)
 }
 END_TEST
 
+/* A slip along a line, barely past the bound (by 1e-12 of r_b = mu N0/kt), beside the line's
+ * direction (uy's mean only): across the line the slider is all but neutral over a period (its
+ * deviation shrinks by r_b/|u - w| at each sliding sample, 1 - 3e-13 over the period here),
+ * so that I - Psi is singular to 1e-9 and the periodic slider's derivatives take the
+ * pseudo-inverse (aft_2d.c, solve_periodic), whose output must stay finite: a NaN there is
+ * what fuzz_aft once found. Closed form: under a constant N the element is
+ * translation-invariant, so the columns of u's two means vanish, and the forces are the
+ * stuck element's, kt (u - mean u) along x and 0 along y, to the slip's 1e-12. */
+START_TEST(slip_along_a_line_is_neutral_across_it)
+{
+    const double kt = 40.0, mu = 0.3, n0 = 5.0, rb = mu * n0 / kt;
+    double u[2 * NC] = {0.01, rb * (1.0 + 1e-12)}, g[NC] = {0.0};
+    u[NC] = 0.02;
+    double f[2 * NC], nf[NC], jac[9 * NC * NC];
+    fricreg_aft *a = make(H, NS);
+    ck_assert_int_eq(fricreg_aft_jenkins_2d_normal_sampled(a, kt, mu, n0, 0.0, NC, u, g, f, nf,
+                                                           jac),
+                     FRICREG_OK);
+    for (int i = 0; i < 2 * NC; i++) {
+        double stuck = i == 1 ? kt * u[1] : 0.0;
+        ck_assert_msg(fabs(f[i] - stuck) <= 1e-9 * mu * n0, "f[%d] = %.15g, stuck %.15g", i, f[i],
+                      stuck);
+    }
+    for (int i = 0; i < 3 * NC; i++)
+        for (int j = 0; j < 3 * NC; j++) {
+            double d = jac[3 * NC * i + j];
+            ck_assert_msg(isfinite(d), "d out[%d]/d in[%d] = %g", i, j, d);
+            if (i < 2 * NC && (j == 0 || j == NC)) /* u's means */
+                ck_assert_msg(fabs(d) <= 1e-9 * kt, "d f[%d]/d u[%d] = %g, not a translation", i, j,
+                              d);
+        }
+    fricreg_aft_free(a);
+}
+END_TEST
+
 START_TEST(bad_input)
 {
     const double u[2 * NC] = {0.3, 1.0, 0, 0, 0, 0, 0, 0.1, 0.0, 0.5}, g[NC] = {0.1, 0.2};
@@ -321,6 +358,7 @@ int main(void)
     tcase_add_test(tc, circular_orbit_dissipation);
     tcase_add_test(tc, against_the_time_domain_element);
     tcase_add_test(tc, jacobian_against_differences);
+    tcase_add_test(tc, slip_along_a_line_is_neutral_across_it);
     tcase_add_test(tc, bad_input);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);
