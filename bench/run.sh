@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # bench/run.sh — the whole benchmark, from the top of a fresh clone:
 #   builds with -DFRICREG_BENCH=ON in build-bench/, runs the work-precision, the scaling, the
-#   kernel, the dense and sparse W, the solve_step and the structure-scaling benchmarks,
+#   kernel, the dense and sparse W, the solve_step, the structure-scaling and the membrane's
+#   coupled-contact benchmarks,
 #   writes every CSV, gnuplot script and PNG to bench-results/, prints the tables (the
 #   summary ends the work-precision part), and rewrites the dated results page
 #   docs/results.md and the README's summary table from them (commit both to publish a
@@ -53,6 +54,11 @@ echo
 # A structure's Newmark step from 10^2 to 10^6 degrees of freedom (about 3 minutes).
 sh bench/structure_scaling.sh ./build-bench/bench/fricreg-bench-structure-scaling "$out" |
     tee "$out/structure_scaling.txt"
+echo
+# Coupled contacts on a membrane's edge against a frictionless run (about 4 minutes; the
+# 10^6-dof membrane with FRICREG_BENCH_BIG=1).
+sh bench/membrane_contacts.sh ./build-bench/bench/fricreg-bench-membrane-contacts "$out" |
+    tee "$out/membrane_contacts.txt"
 echo
 # The chain at n = 1000 and 10^4 against CVODE: minutes of CPU, so only when asked.
 if [ "${FRICREG_BENCH_BIG:-0}" = 1 ]; then
