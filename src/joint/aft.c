@@ -227,6 +227,21 @@ static int check_normal(fricreg_aft *a, const char *fn, double mu, double n0, do
     return FRICREG_OK;
 }
 
+/* The sampled marches hold the slider's place w = u - mu N/kt (slider.c), beyond the double
+ * range for a spring far weaker than its bound (kt = 5e-324 against mu N = 2 gave f not
+ * finite); the exact path carries the slider as the force kt w and takes such a kt. */
+static int check_excursion(fricreg_aft *a, const char *fn, double kt, double mu, double n0,
+                           double kn, const double *g)
+{
+    double bound = mu * normal_scale(a, n0, kn, g);
+    if (!isfinite(8.0 * bound / kt))
+        return fr_fail(a, FRICREG_ENONFINITE,
+                       "%s: the slider's excursion mu (|n0| + kn (1 + sum |g[j]|))/kt = %g/%g "
+                       "overflows",
+                       fn, bound, kt);
+    return FRICREG_OK;
+}
+
 int fricreg_aft_jenkins_normal_sampled(fricreg_aft *aft, double kt, double mu, double n0, double kn,
                                        size_t n, const double u[], const double g[], double f[],
                                        double nf[], double jac[])
@@ -240,14 +255,8 @@ int fricreg_aft_jenkins_normal_sampled(fricreg_aft *aft, double kt, double mu, d
         status = check_normal(aft, fn, mu, n0, kn, g, nf);
     if (status != FRICREG_OK)
         return status;
-    /* the march holds the slider's place w = u - mu N/kt (slider.c), beyond the double range
-     * for a spring far weaker than its bound (kt = 5e-324 against mu N = 2 gave f not finite);
-     * the exact path carries the slider as the force kt w and takes such a kt */
-    if (!isfinite(8.0 * mu * normal_scale(aft, n0, kn, g) / kt))
-        return fr_fail(aft, FRICREG_ENONFINITE,
-                       "%s: the slider's excursion mu (|n0| + kn (1 + sum |g[j]|))/kt = %g/%g "
-                       "overflows",
-                       fn, mu * normal_scale(aft, n0, kn, g), kt);
+    if ((status = check_excursion(aft, fn, kt, mu, n0, kn, g)) != FRICREG_OK)
+        return status;
     fr_aft_sampled_normal(aft, kt, mu, n0, kn, u, g, f, nf, jac);
     return FRICREG_OK;
 }
@@ -270,11 +279,8 @@ int fricreg_aft_jenkins_2d_normal_sampled(fricreg_aft *aft, double kt, double mu
         status = check_normal(aft, fn, mu, n0, kn, g, nf);
     if (status != FRICREG_OK)
         return status;
-    if (!isfinite(8.0 * mu * normal_scale(aft, n0, kn, g) / kt))
-        return fr_fail(aft, FRICREG_ENONFINITE,
-                       "%s: the slider's excursion mu (|n0| + kn (1 + sum |g[j]|))/kt = %g/%g "
-                       "overflows",
-                       fn, mu * normal_scale(aft, n0, kn, g), kt);
+    if ((status = check_excursion(aft, fn, kt, mu, n0, kn, g)) != FRICREG_OK)
+        return status;
     fr_aft_sampled_2d_normal(aft, kt, mu, n0, kn, u, g, f, nf, jac);
     return FRICREG_OK;
 }
