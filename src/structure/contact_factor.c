@@ -52,7 +52,7 @@ static int factor(struct fr_cfactor *f, cholmod_sparse *A, cholmod_common *c, st
 
 /* Appends column j of Y: contact j's column of P J^T solved with L on its reach. B (dense,
  * zero) and Bset are scratch; iperm the inverse of perm. */
-static int y_column(struct fr_cfactor *f, const cholmod_sparse *Jt, size_t j,
+static int y_column(struct fr_cfactor *f, cholmod_factor *Ls, const cholmod_sparse *Jt, size_t j,
                     const SuiteSparse_long *iperm, cholmod_dense *B, cholmod_sparse *Bset,
                     cholmod_sparse **Xset, cholmod_dense **X, cholmod_dense **Yw,
                     cholmod_dense **Ew, cholmod_common *c)
@@ -69,7 +69,7 @@ static int y_column(struct fr_cfactor *f, const cholmod_sparse *Jt, size_t j,
     }
     bp[0] = 0;
     bp[1] = len;
-    int ok = cholmod_l_solve2(CHOLMOD_L, f->L, B, Bset, X, Xset, Yw, Ew, c);
+    int ok = cholmod_l_solve2(CHOLMOD_L, Ls, B, Bset, X, Xset, Yw, Ew, c);
     for (SuiteSparse_long k = 0; k < len; k++)
         b[bset[k]] = 0.0;
     if (!ok)
@@ -120,9 +120,15 @@ static int form_y(struct fr_cfactor *f, cholmod_sparse *Jt, cholmod_common *c)
         ((SuiteSparse_long *)f->Y->p)[0] = 0;
         Xset->itype = CHOLMOD_PATTERN; /* see above */
     }
+    /* the sparse solves convert a supernodal factor to a simplicial one (CHOLMOD's Bset path):
+     * they take a copy, so that the steps' solves keep the supernodal factor's BLAS */
+    cholmod_factor *Ls = ok && f->L->is_super ? cholmod_l_copy_factor(f->L, c) : f->L;
+    ok = ok && Ls != NULL;
     for (size_t j = 0; ok && j < m; j++)
-        ok = y_column(f, Jt, j, f->perm ? iperm : NULL, B, Bset, &Xset, &X, &Yw, &Ew, c);
+        ok = y_column(f, Ls, Jt, j, f->perm ? iperm : NULL, B, Bset, &Xset, &X, &Yw, &Ew, c);
     ok = ok && cholmod_l_sort(f->Y, c);
+    if (Ls != f->L)
+        cholmod_l_free_factor(&Ls, c);
     if (Xset != NULL)
         Xset->itype = CHOLMOD_LONG;
     cholmod_l_free(n, sizeof *iperm, iperm, c);
