@@ -1,0 +1,211 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* test_contact_factor.c — Check suite for the structure's factor with its contacts
+ * (src/structure/contact_factor.h), white box on the static library:
+ *   - D = Y^T Y is J A^-1 J^T: every 7th column (both rows of contacts), each entry against
+ *     J x_j, x_j = A^-1 J^T e_j by the factor's two halves, to 1e-12 of sqrt(D_ii D_jj)
+ *     (drop = 0: D exact);
+ *   - project and lift are J A^-1 b and A^-1 (b + J^T g) through the halves;
+ *   - forming Y leaves the factor as CHOLMOD made it: a supernodal factor stays supernodal
+ *     (CHOLMOD's sparse right-hand-side solve converts the factor it is given to a simplicial
+ *     one in place; Y is formed on a copy, so that the steps' solves keep the BLAS).
+ * The matrix is a membrane's K_eff on a 150 x 150 grid, A = I + 0.25 L (L the grid's graph
+ * Laplacian plus the identity), ordered by nested dissection (22 500 >= FR_CFACTOR_NESTED_FROM)
+ * and supernodal, with contacts on the edge row against the ground and on the next row
+ * against the edge. */
+#include <check.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/error.h"
+#include "base/sparse_factor.h"
+#include "fricreg.h"
+#include "structure/contact_factor.h"
+
+#define SIDE 150
+#define N (SIDE * SIDE)
+#define M (2 * SIDE)
+
+/* A's upper triangle: column j holds the nodes above and left of it, then itself. */
+static cholmod_sparse *membrane(cholmod_common *c)
+{
+    cholmod_sparse *A = cholmod_l_allocate_sparse(N, N, 3 * N, 1, 1, 1, CHOLMOD_REAL, c);
+    SuiteSparse_long *Ap = A->p, *Ai = A->i, q = 0;
+    double *Ax = A->x;
+    for (SuiteSparse_long j = 0; j < N; j++) {
+        SuiteSparse_long r = j / SIDE, col = j % SIDE;
+        double degree = (r > 0) + (r + 1 < SIDE) + (col > 0) + (col + 1 < SIDE);
+        Ap[j] = q;
+        if (r > 0) {
+            Ai[q] = j - SIDE;
+            Ax[q++] = -0.25;
+        }
+        if (col > 0) {
+            Ai[q] = j - 1;
+            Ax[q++] = -0.25;
+        }
+        Ai[q] = j;
+        Ax[q++] = 1.0 + 0.25 * (degree + 1.0);
+    }
+    Ap[N] = q;
+    return A;
+}
+
+/* J^T (N x M): contact j < SIDE on node j, contact SIDE + c on node SIDE + c against node c. */
+static cholmod_sparse *contacts(cholmod_common *c)
+{
+    cholmod_sparse *Jt = cholmod_l_allocate_sparse(N, M, 2 * M, 1, 1, 0, CHOLMOD_REAL, c);
+    SuiteSparse_long *Jp = Jt->p, *Ji = Jt->i, q = 0;
+    double *Jx = Jt->x;
+    for (SuiteSparse_long j = 0; j < M; j++) {
+        Jp[j] = q;
+        if (j >= SIDE) {
+            Ji[q] = j - SIDE;
+            Jx[q++] = -1.0;
+        }
+        Ji[q] = j;
+        Jx[q++] = 1.0;
+    }
+    Jp[M] = q;
+    return Jt;
+}
+
+struct setup {
+    cholmod_common c;
+    cholmod_sparse *A, *Jt;
+    struct fr_cfactor f;
+    struct fr_error err;
+};
+
+static void set_up(struct setup *s)
+{
+    memset(s, 0, sizeof *s);
+    ck_assert_int_eq(fr_cholmod_start(&s->c), FRICREG_OK);
+    s->A = membrane(&s->c);
+    s->Jt = contacts(&s->c);
+    ck_assert_int_eq(fr_cfactor_build(&s->f, s->A, s->Jt, 0.0, &s->c, &s->err, "test", "A"),
+                     FRICREG_OK);
+}
+
+static void tear_down(struct setup *s)
+{
+    fr_cfactor_free(&s->f, &s->c);
+    cholmod_l_free_sparse(&s->A, &s->c);
+    cholmod_l_free_sparse(&s->Jt, &s->c);
+    fr_cholmod_finish(&s->c);
+}
+
+/* out[M] = J x[N]. */
+static void times_j(const cholmod_sparse *Jt, const double x[], double out[])
+{
+    const SuiteSparse_long *Jp = Jt->p, *Ji = Jt->i;
+    const double *Jx = Jt->x;
+    for (size_t j = 0; j < M; j++) {
+        out[j] = 0.0;
+        for (SuiteSparse_long q = Jp[j]; q < Jp[j + 1]; q++)
+            out[j] += Jx[q] * x[Ji[q]];
+    }
+}
+
+/* x[N] += alpha J^T g[M]. */
+static void add_jt(const cholmod_sparse *Jt, double alpha, const double g[], double x[])
+{
+    const SuiteSparse_long *Jp = Jt->p, *Ji = Jt->i;
+    const double *Jx = Jt->x;
+    for (size_t j = 0; j < M; j++)
+        for (SuiteSparse_long q = Jp[j]; q < Jp[j + 1]; q++)
+            x[Ji[q]] += alpha * Jx[q] * g[j];
+}
+
+static double d_entry(const cholmod_sparse *D, size_t i, size_t j)
+{
+    if (i > j) {
+        size_t t = i;
+        i = j;
+        j = t;
+    }
+    const SuiteSparse_long *Dp = D->p, *Di = D->i;
+    for (SuiteSparse_long q = Dp[j]; q < Dp[j + 1]; q++)
+        if ((size_t)Di[q] == i)
+            return ((const double *)D->x)[q];
+    return 0.0;
+}
+
+START_TEST(compliance_is_j_a_inverse_jt)
+{
+    struct setup s;
+    set_up(&s);
+    static double b[N], x[N], col[M], diag[M];
+    for (size_t j = 0; j < M; j++)
+        diag[j] = d_entry(s.f.D, j, j);
+    for (size_t j = 0; j < M; j += 7) {
+        double e[M] = {0.0};
+        e[j] = 1.0;
+        memset(b, 0, sizeof b);
+        add_jt(s.Jt, 1.0, e, b);
+        fr_cfactor_solve(&s.f, b, x, &s.c);
+        times_j(s.Jt, x, col);
+        for (size_t i = 0; i < M; i++)
+            ck_assert_msg(fabs(d_entry(s.f.D, i, j) - col[i]) <= 1e-12 * sqrt(diag[i] * diag[j]),
+                          "D[%zu][%zu] = %.17g, J A^-1 J^T %.17g", i, j, d_entry(s.f.D, i, j),
+                          col[i]);
+    }
+    tear_down(&s);
+}
+END_TEST
+
+START_TEST(project_and_lift_through_the_halves)
+{
+    struct setup s;
+    set_up(&s);
+    static double b[N], y[N], x[N], ref[N];
+    double g[M], out[M], want[M];
+    for (size_t k = 0; k < N; k++)
+        b[k] = sin(0.37 * (double)k) + 0.1;
+    for (size_t j = 0; j < M; j++)
+        g[j] = cos(1.3 * (double)j);
+    fr_cfactor_solve(&s.f, b, ref, &s.c); /* J A^-1 b */
+    times_j(s.Jt, ref, want);
+    fr_cfactor_forward(&s.f, b, y, &s.c);
+    fr_cfactor_project(&s.f, y, out, &s.c);
+    for (size_t j = 0; j < M; j++)
+        ck_assert_double_eq_tol(out[j], want[j], 1e-12 * (1.0 + fabs(want[j])));
+    memcpy(x, b, sizeof x); /* A^-1 (b + J^T g) */
+    add_jt(s.Jt, 1.0, g, x);
+    fr_cfactor_solve(&s.f, x, ref, &s.c);
+    fr_cfactor_lift(&s.f, 1.0, g, y, &s.c);
+    fr_cfactor_backward(&s.f, y, x, &s.c);
+    for (size_t k = 0; k < N; k++)
+        ck_assert_double_eq_tol(x[k], ref[k], 1e-12 * (1.0 + fabs(ref[k])));
+    tear_down(&s);
+}
+END_TEST
+
+START_TEST(forming_y_keeps_the_factor_supernodal)
+{
+    struct setup s;
+    set_up(&s);
+    fr_cholmod_ordering(&s.c, CHOLMOD_NESDIS, 0); /* the build's analysis, done again */
+    cholmod_factor *L = cholmod_l_analyze(s.A, &s.c);
+    ck_assert_ptr_nonnull(L);
+    ck_assert_msg(L->is_super, "CHOLMOD chose a simplicial factor: the grid is too small here");
+    ck_assert_int_eq(s.f.L->is_super, 1);
+    cholmod_l_free_factor(&L, &s.c);
+    tear_down(&s);
+}
+END_TEST
+
+int main(void)
+{
+    Suite *s = suite_create("contact_factor");
+    TCase *tc = tcase_create("core");
+    tcase_add_test(tc, compliance_is_j_a_inverse_jt);
+    tcase_add_test(tc, project_and_lift_through_the_halves);
+    tcase_add_test(tc, forming_y_keeps_the_factor_supernodal);
+    suite_add_tcase(s, tc);
+    SRunner *sr = srunner_create(s);
+    srunner_run_all(sr, CK_NORMAL);
+    int failed = srunner_ntests_failed(sr);
+    srunner_free(sr);
+    return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
