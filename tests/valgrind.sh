@@ -10,8 +10,10 @@ program=$1
 shift
 # Programs that replace malloc themselves (test_exact fails its calloc on demand) keep theirs:
 # valgrind intercepts only the C library's (somalloc=nouserintercepts).
+# tests/valgrind.supp: libgomp's thread pool (CHOLMOD's supernodal factorizations).
+supp=$(dirname "$0")/valgrind.supp
 run() {
-    CK_FORK=no valgrind -q --error-exitcode=1 --leak-check=full \
+    CK_FORK=no valgrind -q --error-exitcode=1 --leak-check=full --suppressions="$supp" \
         --soname-synonyms=somalloc=nouserintercepts "$program"
 }
 [ $# -eq 0 ] && { run; exit $?; }
