@@ -1154,8 +1154,9 @@ contains
       status = self%record(fricreg_structure_set_error_estimate(self%ptr, on))
   end function struct_set_error_estimate
 
-  !> The peak displacements max |u_i| since set_initial, peak(ndof) (length units), sampled at
-  !> every fixed step's end and every run_ode call's end (fricreg_structure_get_peak_displacement).
+  !> The peak displacements max |u_i| since set_initial, peak(ndof) (length units): every fixed
+  !> step's end and the turning points inside it, every adaptive run_ode call's end
+  !> (fricreg_structure_get_peak_displacement).
   !> FRICREG_ESIZE. Since 1.6.
   function struct_get_peak_displacement(self, peak) result(status)
     class(fricreg_structure), intent(inout) :: self

@@ -1019,9 +1019,12 @@ FRICREG_API int fricreg_structure_get_value(const fricreg_structure *s, int whic
 FRICREG_API int fricreg_structure_set_error_estimate(fricreg_structure *s, int on);
 
 /** Copy the peak displacements since fricreg_structure_set_initial (or creation),
- *  peak[i] = max |u_i| over the sampled times: the initial state, every fixed step's end
- *  (fricreg_structure_step, _run, _run_ode with fixed steps) and every fricreg_structure_run_ode
- *  call's end (its adaptive steps in between are not sampled), into peak[ndof] (length units).
+ *  peak[i] = max |u_i| over: the initial state; every fixed step (fricreg_structure_step, _run,
+ *  _run_ode with fixed steps), its end and the turning points of u_i inside it, on the cubic
+ *  Hermite interpolant of the step's ends (u and u' at both; for Newmark's average
+ *  acceleration the scheme's own quadratic), so the peak converges at the scheme's order
+ *  (since 1.7; 1.6 took the step ends only); every adaptive fricreg_structure_run_ode call's
+ *  end (its adaptive steps in between are not sampled); into peak[ndof] (length units).
  *  Tracked whether or not the error estimate is on. Since 1.6 (FRICREG_1.6).
  *  Returns FRICREG_OK; FRICREG_ENULL if s or peak is NULL; FRICREG_ESIZE if ndof is not the
  *  structure's. */

@@ -100,7 +100,7 @@ static void check_bounds(int integrator, double eps, double dt, double rtol, dou
 }
 
 /* Newmark at dt = eps and dt = eps / 10, eps = 1e-2 and 1e-3: D's error 1.7e-4 ... 1.8e-5,
- * ratios 1.4 ... 1.6; the peak's 3.4e-6 ... 3.1e-8, ratios 2.3 ... 3.0. */
+ * ratios 1.9 ... 2.5; the peak's 5.7e-6 ... 5.8e-8, ratios 2.0. */
 START_TEST(test_newmark_bounds)
 {
     check_bounds(0, 1e-2, 1e-2, 0.0, 0.0, 1);

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* step.c — stepping a fricreg_structure: the equilibrium acceleration at the start, one
  * step of the selected scheme (newmark.c, central_difference.c), the energy balance
- * (energy.c), the peaks and the counters; a single step and a run of fixed steps, plain: the
+ * (energy.c), the peaks (peak.c) and the counters; a single step and a run of fixed steps, plain: the
  * public calls (run.c) add the error estimate's companions and the warning handler. */
 #include <float.h>
 #include <math.h>
@@ -10,13 +10,6 @@
 
 #define STATE_LIMIT 1e100 /* |state| beyond this: diverged */
 #define MAX_RUN_STEPS 2147483648.0
-
-void fr_peak_sample(fricreg_structure *s)
-{
-    const double *u = s->u->data;
-    for (size_t i = 0; i < s->n; i++)
-        s->peak[i] = fmax(s->peak[i], fabs(u[i]));
-}
 
 static void swap(gsl_vector **x, gsl_vector **y)
 {
@@ -68,6 +61,7 @@ static int step_to(fricreg_structure *s, double t1)
         fr_energy_start(s);
     fr_energy_step(s, s->u1, s->v1, s->ptil1, s->f1);
     fr_elements_commit(s);
+    fr_peak_step(s, s->u1->data, s->v1->data, dt);
     /* The step's end becomes the state: the vectors trade places, nothing is copied. */
     swap(&s->u, &s->u1);
     swap(&s->v, &s->v1);
@@ -83,7 +77,6 @@ static int step_to(fricreg_structure *s, double t1)
     if (!converged)
         s->stats[FRICREG_SSTAT_NEWTON_FAILURES]++;
     fr_warn_track_step(s, dt, 0);
-    fr_peak_sample(s);
     return FRICREG_OK;
 }
 

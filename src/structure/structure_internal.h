@@ -213,8 +213,9 @@ struct fricreg_structure {
                             * an adaptive run_ode call, max_i sum_j |J_ij| atol_j (0: none) */
     double ode_rtol_max;   /* the largest rtol of those calls (0: none) */
 
-    /* The largest |u_i| at the sampled times since set_initial (fricreg_structure_get_peak_
-     * displacement): every fixed step's end, every run_ode call's end. [n] */
+    /* The largest |u_i| since set_initial (fricreg_structure_get_peak_displacement): every
+     * fixed step's end and its turning points between the ends (peak.c), every adaptive
+     * run_ode call's end. [n] */
     double *peak;
     /* The error estimate (error_estimate.c): a companion structure at eps / 2 stepped alongside
      * at half the step (or tolerances / 16), made at the run's first step; with two companions
@@ -312,11 +313,13 @@ static inline double fr_merit_pair(double a, double b)
 }
 
 /* step.c: one step of dt, and a run of fixed steps dt to t_end, plain: the public calls'
- * checks and results but the error estimate and the warning handler (run.c). peak_sample:
- * the peaks take in the current state. */
+ * checks and results but the error estimate and the warning handler (run.c). */
 int fr_structure_step_plain(fricreg_structure *s, double dt);
 int fr_structure_run_plain(fricreg_structure *s, double dt, double t_end);
+/* peak.c: the peaks take in the current state (sample), or a fixed step of length h from the
+ * current state to u1[n], v1[n], its turning points included (step). */
 void fr_peak_sample(fricreg_structure *s);
+void fr_peak_step(fricreg_structure *s, const double u1[], const double v1[], double h);
 /* The observer (if any) at time t with u[n], v[n], f[m]: 1 if it asks to stop. */
 int fr_structure_observe(fricreg_structure *s, double t, const double u[], const double v[],
                          const double f[]);

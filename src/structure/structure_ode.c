@@ -174,6 +174,8 @@ static int integrate(fricreg_structure *s, struct ode_run *run, gsl_odeiv2_drive
                            "1e100: the step is unstable; reduce dt",
                            t);
         /* accept: the structure's state follows the integration */
+        if (!adaptive)
+            fr_peak_step(s, y, y + s->n, t - s->t);
         memcpy(s->u->data, y, s->n * sizeof *y);
         memcpy(s->v->data, y + s->n, s->n * sizeof *y);
         s->energy.input = y[2 * s->n];
@@ -186,8 +188,6 @@ static int integrate(fricreg_structure *s, struct ode_run *run, gsl_odeiv2_drive
         s->t = t;
         s->stats[FRICREG_SSTAT_STEPS] += adaptive ? 1 : integ->substeps;
         fr_warn_track_step(s, adaptive ? 0.0 : dt, 1); /* a fixed step's length: dt_coarse */
-        if (!adaptive)
-            fr_peak_sample(s);
         if (s->observer != NULL && rhs(t, y, run->jac_work, run) == GSL_SUCCESS &&
             fr_structure_observe(s, t, y, y + s->n, s->f1->data))
             break; /* the observer asked to stop (its forces at (t, y)): not an error */
