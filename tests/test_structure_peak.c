@@ -37,8 +37,7 @@ static double peak_error(int integrator, int steps_per_period)
     if (integrator == 0)
         ck_assert_int_eq(fricreg_structure_run(s, dt, T_END), FRICREG_OK);
     else
-        ck_assert_int_eq(fricreg_structure_run_ode(s, integrator, dt, 0.0, 0.0, T_END),
-                         FRICREG_OK);
+        ck_assert_int_eq(fricreg_structure_run_ode(s, integrator, dt, 0.0, 0.0, T_END), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_get_peak_displacement(s, 1, &peak), FRICREG_OK);
     fricreg_structure_free(s);
     return peak * OMEGA - 1.0;
@@ -66,8 +65,8 @@ START_TEST(test_rk4_hermite)
         double h = 2.0 * OMEGA / steps_per_period[i];
         double err = peak_error(FRICREG_INT_RK4, steps_per_period[i]);
         double bound = pow(h, 4) / 384.0 + pow(h, 5) / 100.0; /* RK4's own error: O(h^5) */
-        ck_assert_msg(fabs(err) <= bound, "%d steps a period: |%g| above %g",
-                      steps_per_period[i], err, bound);
+        ck_assert_msg(fabs(err) <= bound, "%d steps a period: |%g| above %g", steps_per_period[i],
+                      err, bound);
     }
 }
 END_TEST
