@@ -440,11 +440,12 @@ enum fricreg_error_estimate {
  *  by the differences since each companion's is a fraction of it. The estimator, the same as
  *  fricreg_structure_set_error_estimate's:
  *  - on = FRICREG_ESTIMATE_TWO_COMPANIONS (1): where the observed order p = log2(d1 / d2) is
- *    in [0.5, 2.5], err = 2 |d1| 2^p / (2^p - 1) (Richardson's correction with the observed
- *    order, times 2); elsewhere (a stall: the run and the first companion agree on a wrong
- *    value; differences that grow or change sign; or d2 far below d1) the safe bound
- *    err = 6.83 (|d1| + |d2|), and below the range fricreg_sim_warning_count raises
- *    FRICREG_WARN_NOT_ASYMPTOTIC; d1 and d2 both below 1e-9 of D give |d1| + |d2|. On the
+ *    at least 0.5, err = 2 |d1| 2^p / (2^p - 1) (Richardson's correction with the observed
+ *    order, times 2; about 2 |d1| where p is above the law's orders); below (a stall: the run
+ *    and the first companion agree on a wrong value; or differences that grow or change
+ *    sign) the safe bound err = 6.83 (|d1| + |d2|), and fricreg_sim_warning_count raises
+ *    FRICREG_WARN_NOT_ASYMPTOTIC; d2 below 1e-9 of D gives 2 |d1| + |d2|, d1 and d2 both
+ *    below it |d1| + |d2|. On the
  *    oscillator against the exact solver (tests/test_error_estimate.c) within 1x ... 10x of
  *    the error in the asymptotic range.
  *  - on = FRICREG_ESTIMATE_ONE_COMPANION (2), 1.6's estimator: the level-1 companion only,

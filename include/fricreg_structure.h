@@ -966,11 +966,12 @@ FRICREG_API int fricreg_structure_get_value(const fricreg_structure *s, int whic
  *  (4)'s error is c eps^p, p = 1 or 2, and along dt / eps fixed a fixed step's error follows
  *  eps, so in the asymptotic range d1 = q - q2 and d2 = q2 - q4 have one sign and
  *  d1 / d2 = 2^p. With on = FRICREG_ESTIMATE_TWO_COMPANIONS (1): where the observed order
- *  p = log2(d1 / d2) is in [0.5, 2.5], err = 2 |d1| 2^p / (2^p - 1) (Richardson's correction
- *  with the observed order, times 2); elsewhere (a stall: the run and the first companion
- *  agree on a wrong value; or differences that grow or change sign) err = 6.83 (|d1| + |d2|)
- *  and fricreg_structure_warning_count raises FRICREG_WARN_NOT_ASYMPTOTIC; d1 and d2
- *  both below 1e-9 of q give |d1| + |d2|. With on = FRICREG_ESTIMATE_ONE_COMPANION (2), 1.6's
+ *  p = log2(d1 / d2) is at least 0.5, err = 2 |d1| 2^p / (2^p - 1) (Richardson's correction
+ *  with the observed order, times 2; about 2 |d1| where p is above the law's orders, since
+ *  1.7.0); below (a stall: the run and the first companion agree on a wrong value; or
+ *  differences that grow or change sign) err = 6.83 (|d1| + |d2|) and
+ *  fricreg_structure_warning_count raises FRICREG_WARN_NOT_ASYMPTOTIC; d2 below 1e-9 of q
+ *  gives 2 |d1| + |d2|, d1 and d2 both below it |d1| + |d2|. With on = FRICREG_ESTIMATE_ONE_COMPANION (2), 1.6's
  *  estimator: err = 3 |d1| (fricreg_sim_set_error_estimate's, with its calibration), which
  *  cannot see a stall (bench/frame_estimate.c: a frame 5x under, no warning).
  *  The companion is a second structure, owned by s, stepped alongside it; the second

@@ -2,12 +2,12 @@
 /* test_companion_estimate.c — the one decision of the a-posteriori error estimates
  * (src/base/companion_estimate.h), white box on the static library, against the formulas of
  * its header comment on quantities q(eps) = q0 + c eps^p whose error q - q0 is known:
- *   - in the range (d1 / d2 = 2^p, p in [1/2, 5/2]): Richardson's correction with the observed
- *     order times the safety factor 2, unflagged; at p = 1 and 2, twice the true error;
+ *   - in the range (d1 / d2 = 2^p, p >= 1/2): Richardson's correction with the observed order
+ *     times the safety factor 2, unflagged; at p = 1 and 2, and at p = 4 (faster than the
+ *     law's orders), twice the true error; with d2 below 1e-9 of the quantity, 2 |d1| + |d2|;
  *   - below it (a stall, 1 <= d1 / d2 < 2^(1/2), or differences of opposite signs): the bound
  *     6.83 (|d1| + |d2|), flagged not asymptotic;
- *   - above it (d1 / d2 > 2^(5/2)): the same bound, unflagged;
- *   - differences below 1e-9 of the quantity: their sum, unflagged;
+ *   - differences both below 1e-9 of the quantity: their sum, unflagged;
  *   - one companion: 3 |d1|. */
 #include <check.h>
 #include <math.h>
@@ -55,13 +55,16 @@ START_TEST(a_stall_gets_the_flagged_bound)
 }
 END_TEST
 
-START_TEST(above_the_range_the_bound_unflagged)
+START_TEST(above_the_law_s_orders_still_richardson)
 {
     int flag;
     double e = estimate(FRICREG_ESTIMATE_TWO_COMPANIONS, 2.0, 0.3, 4.0, &flag); /* r = 16 */
     ck_assert_int_eq(flag, 0);
-    double d1 = 0.3 * (1.0 - 1.0 / 16), d2 = 0.3 * (1.0 / 16 - 1.0 / 256);
-    ck_assert_double_eq_tol(e, OUT_BOUND * (d1 + d2), 1e-12);
+    ck_assert_double_eq_tol(e, 2.0 * 0.3, 1e-12); /* twice the true error */
+    /* q2 and q4 equal to 1e-9 of q: the limit of r -> infinity, plus the difference left */
+    e = fr_companion_estimate(FRICREG_ESTIMATE_TWO_COMPANIONS, 1.5, 1.0 + 4e-10, 1.0, &flag);
+    ck_assert_int_eq(flag, 0);
+    ck_assert_double_eq_tol(e, 2.0 * (0.5 - 4e-10) + 4e-10, 1e-15);
 }
 END_TEST
 
@@ -90,7 +93,7 @@ int main(void)
     TCase *tc = tcase_create("core");
     tcase_add_test(tc, in_range_it_is_richardson_times_two);
     tcase_add_test(tc, a_stall_gets_the_flagged_bound);
-    tcase_add_test(tc, above_the_range_the_bound_unflagged);
+    tcase_add_test(tc, above_the_law_s_orders_still_richardson);
     tcase_add_test(tc, noise_is_the_sum_of_the_differences);
     tcase_add_test(tc, one_companion_is_three_times_the_difference);
     suite_add_tcase(s, tc);

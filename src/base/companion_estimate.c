@@ -4,16 +4,17 @@
  *
  * Law (4)'s error is c eps^p with p = 1 or 2, and along dt / eps fixed a fixed step's error
  * follows eps (fricreg_sim_run_extrapolated), so in the asymptotic range d1 = q - q2 and
- * d2 = q2 - q4 have one sign and d1 / d2 = 2^p with p in [P_LO, P_HI]; then
+ * d2 = q2 - q4 have one sign and d1 / d2 = 2^p with p in [1, 2]; then
  * q - q(0) = d1 2^p / (2^p - 1), Richardson's correction with the observed order. The range
- * test: d1 / d2 in [2^(P_LO - BAND), 2^(P_HI + BAND)]; in range the estimate is
- * SAFETY d1 2^p / (2^p - 1). Below the range (a stall: q and q2 agree on a wrong value; or
- * differences that grow or change sign) no order can be trusted: the bound OUT_FACTOR
- * (|d1| + |d2|), what a geometric tail of the slowest accepted order would add to the two
- * differences seen, flagged not asymptotic. Above it (d2 much smaller than d1: a sampled
- * peak's phase, or q2 and q4 at a solver's tolerance) the same bound, unflagged: it is then
- * about OUT_FACTOR |d1|. Differences both below NOISE of the quantity are a solver's
- * tolerance, not an order: their sum. One companion (1.6's estimator): FACTOR_ONE |d1|. */
+ * test: d1 / d2 at least 2^(P_LO - BAND); there the estimate is SAFETY d1 2^p / (2^p - 1).
+ * That holds above the law's orders too (d2 far below d1: the companions converged faster, a
+ * slip's end inside a step, or q2 and q4 at a solver's tolerance): q2 is then much nearer the
+ * limit than q, and the estimate tends to SAFETY |d1|. Below the range (a stall: q and q2
+ * agree on a wrong value; or differences that grow or change sign) no order can be trusted:
+ * the bound OUT_FACTOR (|d1| + |d2|), what a geometric tail of the slowest accepted order
+ * would add to the two differences seen, flagged not asymptotic. Differences both below NOISE
+ * of the quantity are a solver's tolerance, not an order: their sum. One companion (1.6's
+ * estimator): FACTOR_ONE |d1|. */
 #include "companion_estimate.h"
 
 #include <math.h>
@@ -21,13 +22,12 @@
 /* One companion: 2 at p = 1 (D(eps) - D(0) = 2 (D(eps) - D(eps/2))) with the margin the
  * calibration of bench/error_estimate.c asked for (docs/integrators.md, "Error estimate"). */
 #define FACTOR_ONE 3.0
-#define P_LO 1.0 /* law (4)'s orders in eps along dt / eps fixed */
-#define P_HI 2.0
-#define BAND 0.5 /* the observed order accepted in [P_LO - BAND, P_HI + BAND] */
+#define P_LO 1.0 /* law (4)'s lower order in eps along dt / eps fixed */
+#define BAND 0.5 /* the observed order accepted from P_LO - BAND on */
 /* On the observed order's Richardson correction: at 2 the frame of bench/frame_estimate.c is
  * bounded at every dt and scheme, the oscillator of tests/test_structure_error.c within 10x. */
 #define SAFETY 2.0
-/* Out of range: SAFETY 2^p / (2^p - 1) at the band's lowest order p = 0.5, 6.83. */
+/* Below the range: SAFETY 2^p / (2^p - 1) at the band's lowest order p = 0.5, 6.83. */
 #define OUT_FACTOR (SAFETY * 3.414213562373095)
 #define NOISE 1e-9 /* relative differences below this are a solver's tolerance (Newton: 1e-10) */
 
@@ -37,16 +37,13 @@ static double two_companions(double q, double q2, double q4, int *not_asymptotic
     double floor = NOISE * fmax(fabs(q), fmax(fabs(q2), fabs(q4)));
     if (fabs(d1) <= floor && fabs(d2) <= floor)
         return fabs(d1) + fabs(d2);
-    double bound = OUT_FACTOR * (fabs(d1) + fabs(d2));
-    if (fabs(d2) <= floor)
-        return bound;
+    if (fabs(d2) <= floor) /* q2 and q4 agree to a solver's tolerance: Richardson's limit */
+        return SAFETY * fabs(d1) + fabs(d2);
     double r = d1 / d2;
-    if (r > exp2(P_HI + BAND))
-        return bound;
     if (r >= exp2(P_LO - BAND))
         return SAFETY * fabs(d1) * r / (r - 1.0);
     *not_asymptotic = 1;
-    return bound;
+    return OUT_FACTOR * (fabs(d1) + fabs(d2));
 }
 
 double fr_companion_estimate(int estimator, double q, double q2, double q4, int *not_asymptotic)
