@@ -445,9 +445,8 @@ enum fricreg_error_estimate {
  *    and the first companion agree on a wrong value; or differences that grow or change
  *    sign) the safe bound err = 6.83 (|d1| + |d2|), and fricreg_sim_warning_count raises
  *    FRICREG_WARN_NOT_ASYMPTOTIC; d2 below 1e-9 of D gives 2 |d1| + |d2|, d1 and d2 both
- *    below it |d1| + |d2|. On the
- *    oscillator against the exact solver (tests/test_error_estimate.c) within 1x ... 10x of
- *    the error in the asymptotic range.
+ *    below it |d1| + |d2|. On the oscillator against the exact solver
+ *    (tests/test_error_estimate.c) within 1x ... 10x of the error in the asymptotic range.
  *  - on = FRICREG_ESTIMATE_ONE_COMPANION (2), 1.6's estimator: the level-1 companion only,
  *    err = 3 |d1|: 2x the difference is p = 1's factor, 3 the margin the calibration of
  *    bench/error_estimate.c asked for (docs/integrators.md, "Error estimate": against the

@@ -967,13 +967,13 @@ FRICREG_API int fricreg_structure_get_value(const fricreg_structure *s, int whic
  *  eps, so in the asymptotic range d1 = q - q2 and d2 = q2 - q4 have one sign and
  *  d1 / d2 = 2^p. With on = FRICREG_ESTIMATE_TWO_COMPANIONS (1): where the observed order
  *  p = log2(d1 / d2) is at least 0.5, err = 2 |d1| 2^p / (2^p - 1) (Richardson's correction
- *  with the observed order, times 2; about 2 |d1| where p is above the law's orders, since
- *  1.7.0); below (a stall: the run and the first companion agree on a wrong value; or
- *  differences that grow or change sign) err = 6.83 (|d1| + |d2|) and
- *  fricreg_structure_warning_count raises FRICREG_WARN_NOT_ASYMPTOTIC; d2 below 1e-9 of q
- *  gives 2 |d1| + |d2|, d1 and d2 both below it |d1| + |d2|. With on = FRICREG_ESTIMATE_ONE_COMPANION (2), 1.6's
- *  estimator: err = 3 |d1| (fricreg_sim_set_error_estimate's, with its calibration), which
- *  cannot see a stall (bench/frame_estimate.c: a frame 5x under, no warning).
+ *  with the observed order, times 2; about 2 |d1| where p is above the law's orders); below
+ *  (a stall: the run and the first companion agree on a wrong value; or differences that
+ *  grow or change sign) err = 6.83 (|d1| + |d2|) and fricreg_structure_warning_count raises
+ *  FRICREG_WARN_NOT_ASYMPTOTIC; d2 below 1e-9 of q gives 2 |d1| + |d2|, d1 and d2 both below
+ *  it |d1| + |d2|. With on = FRICREG_ESTIMATE_ONE_COMPANION (2), 1.6's estimator:
+ *  err = 3 |d1| (fricreg_sim_set_error_estimate's, with its calibration), which cannot see a
+ *  stall (bench/frame_estimate.c: a frame 5x under, no warning).
  *  The companion is a second structure, owned by s, stepped alongside it; the second
  *  companion is the first's own, made and stepped by it the same way:
  *  - it is made at the first stepping call (fricreg_structure_step, _run or _run_ode) after

@@ -9,8 +9,7 @@
  * base/companion_estimate.c's, fricreg_sim's too: Richardson's correction with the observed
  * order in range, a safe bound below it (FRICREG_WARN_NOT_ASYMPTOTIC for a dissipation; a
  * peak gets the bound without the warning: an adaptive run's is sampled at its calls' ends,
- * with the phase of the samples, not at an order) and above it; one companion (1.6's):
- * 3 |q - q2|.
+ * with the phase of the samples, not at an order); one companion (1.6's): 3 |q - q2|.
  *
  * The second companion is the first's own companion: the first runs with the estimate on and
  * one companion, so every change passed on to the first reaches the second the same way. It

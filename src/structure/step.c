@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* step.c — stepping a fricreg_structure: the equilibrium acceleration at the start, one
  * step of the selected scheme (newmark.c, central_difference.c), the energy balance
- * (energy.c), the peaks (peak.c) and the counters; a single step and a run of fixed steps, plain: the
- * public calls (run.c) add the error estimate's companions and the warning handler. */
+ * (energy.c), the peaks (peak.c) and the counters; a single step and a run of fixed steps,
+ * plain: the public calls (run.c) add the error estimate's companions and the warning
+ * handler. */
 #include <float.h>
 #include <math.h>
 
