@@ -16,6 +16,7 @@
 #define FRICREG_SIM_H
 
 #include "fricreg.h"
+#include "fricreg_types.h" /* enum fricreg_integrator, enum fricreg_error_estimate */
 
 #ifdef __cplusplus
 extern "C" {
@@ -59,45 +60,6 @@ enum fricreg_param {
     FRICREG_PARAM_MU2 = 9,        /**< upper interface bound mu2 N >= 0 (twoblock) */
     FRICREG_PARAM_BELT_AMP = 10,  /**< belt displacement amplitude (twoblock) */
     FRICREG_PARAM_BELT_OMEGA = 11 /**< belt frequency > 0 (twoblock) */
-};
-
-/** Integrators: our own numbering of GSL's gsl_odeiv2 steppers. Values are fixed forever. */
-enum fricreg_integrator {
-    FRICREG_INT_RK2 = 1, /**< explicit embedded Runge–Kutta (2, 3) */
-    /** explicit classical 4th-order Runge–Kutta (the paper's). Adaptive: GSL's rk4 (error by
-     *  step doubling). Fixed steps: fricreg's own gsl_odeiv2 step type on GSL rk4's grid, the
-     *  same numbers to rounding for 4 right-hand sides per step instead of 6. */
-    FRICREG_INT_RK4 = 2,
-    FRICREG_INT_RKF45 = 3,    /**< explicit Runge–Kutta–Fehlberg (4, 5) */
-    FRICREG_INT_RKCK = 4,     /**< explicit Runge–Kutta Cash–Karp (4, 5) */
-    FRICREG_INT_RK8PD = 5,    /**< explicit Runge–Kutta Prince–Dormand (8, 9) */
-    FRICREG_INT_RK1IMP = 6,   /**< implicit Euler */
-    FRICREG_INT_RK2IMP = 7,   /**< implicit Gaussian 2nd order */
-    FRICREG_INT_RK4IMP = 8,   /**< implicit Gaussian 4th order */
-    FRICREG_INT_BSIMP = 9,    /**< implicit Bulirsch–Stoer (Bader–Deuflhard) */
-    FRICREG_INT_MSADAMS = 10, /**< variable-order Adams, explicit-implicit */
-    FRICREG_INT_MSBDF = 11,   /**< variable-order BDF, for stiff problems */
-    /** GSL's rk4 in fixed steps too (6 right-hand sides per step), to compare with
-     *  FRICREG_INT_RK4. */
-    FRICREG_INT_RK4_GSL = 12,
-    /** explicit central differences (Newmark beta = 0, gamma = 1/2), fricreg's own, fixed steps
-     *  only: x1 = x + dt v + dt^2/2 a, a1 = a(x1, v*) with the velocity predictor
-     *  v* = v + dt a seen by the friction, v1 = v + dt (a + a1)/2; one right-hand side per
-     *  step, second order (src/sim/central_step.c). Stable for (dt omega/2)^2 + dt lambda < 1;
-     *  the guard takes 0.9 (fricreg_sim_run). Not for fricreg_structure_run_ode (the structure has its own
-     *  central difference). Since 1.3.0. */
-    FRICREG_INT_CENTRAL = 13,
-    /** FRICREG_INT_CENTRAL with the friction of the step's end implicit (IMEX: springs
-     *  explicit, friction implicit): a1 = a_free(x1) + W f1 and v1 = v + dt (a + a1)/2 with
-     *  f1 = law (4) at (v1, f_eq(x1)), solved exactly contact by contact (law (4) is piecewise
-     *  linear in v: no iteration; src/sim/central_imex.c). The trapezoid on the friction is
-     *  A-stable, so the stick zone bounds no step: the guard is the springs',
-     *  (dt omega/2)^2 < 0.9, and, where dt lambda >= 0.9 (eps below about 2.2 dt mun W_ii:
-     *  law (4)'s band is crossed within one step, as a law that jumps), also
-     *  dt omega <= 1/sqrt 2 (fricreg_sim_run). Second order, one right-hand side per step. Law (4) only, on systems whose contacts are the bodies with a diagonal W (the
-     *  oscillator and the chain); fricreg_sim_run refuses anything else with FRICREG_EINVAL.
-     *  Fixed steps only. Since 1.5.0. */
-    FRICREG_INT_CENTRAL_IMEX = 14
 };
 
 /** The name of an integrator: GSL's ("rk4", "msbdf", …), "rk4-gsl" for FRICREG_INT_RK4_GSL,
@@ -411,17 +373,6 @@ FRICREG_API int fricreg_sim_get_dissipation(const fricreg_sim *sim, size_t ncycl
 FRICREG_API int fricreg_sim_get_stick_fraction(const fricreg_sim *sim, size_t m, double frac[]);
 
 /* ---- Error estimate (since 1.6) ---------------------------------------------------------- */
-
-/** The estimators of fricreg_sim_set_error_estimate and fricreg_structure_set_error_estimate
- *  (their argument on). Values are fixed forever. Since 1.7 (in fricreg_structure.h until
- *  fricreg_sim took the same three). */
-enum fricreg_error_estimate {
-    FRICREG_ESTIMATE_OFF = 0, /**< no estimate (the default) */
-    /** two companions, at eps / 2 and eps / 4, the observed order and a range test; 1 was one
-     *  companion until 1.6 */
-    FRICREG_ESTIMATE_TWO_COMPANIONS = 1,
-    FRICREG_ESTIMATE_ONE_COMPANION = 2 /**< 1.6's: one companion at eps / 2, 3 |q - q2| */
-};
 
 /** Whether fricreg_sim_run (and fricreg_sim_run_cycles) estimates the error of D per cycle
  *  against the Coulomb problem, eps -> 0, where the run's D carries both the regularization

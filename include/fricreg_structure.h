@@ -36,7 +36,9 @@
 #define FRICREG_STRUCTURE_H
 
 #include "fricreg.h"
-#include "fricreg_sim.h" /* enum fricreg_integrator, for fricreg_structure_run_ode */
+#include "fricreg_types.h" /* enum fricreg_integrator, enum fricreg_error_estimate */
+/* Programs that got fricreg_sim.h's declarations through this header (1.7 and before) keep them. */
+#include "fricreg_sim.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -431,7 +433,7 @@ FRICREG_API int fricreg_structure_set_observer(fricreg_structure *s, fricreg_str
 FRICREG_API int fricreg_structure_set_max_steps(fricreg_structure *s, int64_t max_steps);
 
 /** Integrate from the current time to t_end with one of GSL's steppers (enum
- *  fricreg_integrator of fricreg_sim.h), as the reference systems' drivers do: the
+ *  fricreg_integrator of fricreg_types.h), as the reference systems' drivers do: the
  *  first-order system u' = v, M v' = p~ - C v - K u + J^T f, with the input work, the viscous
  *  and each contact's friction dissipation integrated by the same scheme as extra states
  *  (so the balance's residual measures the scheme's energy error).
