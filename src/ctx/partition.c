@@ -40,11 +40,14 @@ void fr_split_contacts(fricreg_ctx *ctx, const double zdot[])
 {
     size_t n_stick = 0;
     const double eps = ctx->eps, *mun = ctx->bound;
-    switch (ctx->law) {
+    FR_LAWS_LISTED(6);
+    switch ((enum fricreg_law)ctx->law) {
     case FRICREG_LAW_QUINN: /* outside |v| < eps both are (1), whatever f_eq is */
     case FRICREG_LAW_KARNOPP: SPLIT_LOOP(fabs(v) < eps, fr_coulomb(v, mun[i])) break;
     case FRICREG_LAW_FORCE_BALANCE: SPLIT_LOOP(v == 0.0, fr_coulomb(v, mun[i])) break;
-    default: /* (1), (3), tanh: f_eq is never needed, S is empty, no list to write */
+    case FRICREG_LAW_COULOMB:
+    case FRICREG_LAW_VELOCITY_LIMITED:
+    case FRICREG_LAW_TANH: /* f_eq is never needed, S is empty, no list to write */
         fr_law_batch(ctx->law, eps, ctx->m, zdot, NULL, mun, ctx->f);
         break;
     }
@@ -126,12 +129,14 @@ FR_KERNEL_BODY size_t diagonal_loops(int law, double eps, size_t m, const double
     uint64_t n_near = 0, band = bits_of(law == FRICREG_LAW_FORCE_BALANCE ? 0x1p-1074 : eps);
     double k = fr_band_scale(eps), dc = law == FRICREG_LAW_QUINN ? 2.0 / eps : 0.0;
     int keep = last_afree != NULL, coded = last_zdot == NULL;
-    switch (law) {
+    FR_LAWS_LISTED(6);
+    switch ((enum fricreg_law)law) {
     case FRICREG_LAW_QUINN: DIAGONAL_CASE(fabs(v) < eps, fr_quinn_band(v * k, feq, mun[i])) break;
     case FRICREG_LAW_KARNOPP: DIAGONAL_CASE(fabs(v) < eps, fr_karnopp(v, feq, mun[i], eps)) break;
-    default: /* the only other law that reads f_eq */
-        DIAGONAL_CASE(v == 0.0, fr_force_balance(v, feq, mun[i]))
-        break;
+    case FRICREG_LAW_FORCE_BALANCE: DIAGONAL_CASE(v == 0.0, fr_force_balance(v, feq, mun[i])) break;
+    case FRICREG_LAW_COULOMB:
+    case FRICREG_LAW_VELOCITY_LIMITED:
+    case FRICREG_LAW_TANH: break; /* they read no f_eq: not called for them */
     }
     return (size_t)n_near;
 }

@@ -75,10 +75,14 @@ static int solve_feq(fricreg_ctx *ctx, const double a_free[])
 static void apply_law_on_stick_set(fricreg_ctx *ctx, const double zdot[])
 {
     const double eps = ctx->eps, *mun = ctx->bound;
-    switch (ctx->law) {
+    FR_LAWS_LISTED(6);
+    switch ((enum fricreg_law)ctx->law) {
     case FRICREG_LAW_QUINN: STICK_LOOP(fr_quinn(v, feq, mun[i], eps)) break;
     case FRICREG_LAW_KARNOPP: STICK_LOOP(fr_karnopp(v, feq, mun[i], eps)) break;
-    default: STICK_LOOP(fr_force_balance(v, feq, mun[i])) break; /* the only other with S */
+    case FRICREG_LAW_FORCE_BALANCE: STICK_LOOP(fr_force_balance(v, feq, mun[i])) break;
+    case FRICREG_LAW_COULOMB:
+    case FRICREG_LAW_VELOCITY_LIMITED:
+    case FRICREG_LAW_TANH: break; /* their stick set S is empty */
     }
 }
 

@@ -20,17 +20,14 @@
 #include "ctx_internal.h"
 #include "sparse_coupling.h"
 #include "base/eigen.h"
+#include "law/law.h"
 
 /* The slope of the law at v = 0 times eps (so finite whatever eps): s_i eps, with s_i the
- * slope of f_i = -s_i v near v = 0. */
+ * slope of f_i = -s_i v near v = 0 (law_table.c; 0 for (1), (2) and Karnopp: no velocity
+ * feedback at rest). */
 static double law_slope_times_eps(int law, double mun)
 {
-    switch (law) {
-    case FRICREG_LAW_QUINN: return 2.0 * mun; /* (4a): 2 mun/eps */
-    case FRICREG_LAW_VELOCITY_LIMITED:
-    case FRICREG_LAW_TANH: return mun; /* (3), tanh'(0) = 1: mun/eps */
-    default: return 0.0;               /* (1), (2), Karnopp: no velocity feedback at rest */
-    }
+    return fr_law_table[law].slope_at_rest * mun;
 }
 
 static double diagonal_rate(const fricreg_ctx *ctx, int law)

@@ -29,16 +29,17 @@ struct live {
 
 static struct live live_components(const fricreg_ctx *ctx)
 {
-    int law = ctx->law, strib = ctx->stribeck;
-    int paper_jumps = fr_coupled(ctx) && ctx->partition == FRICREG_PARTITION_PAPER &&
-                      (law == FRICREG_LAW_QUINN || law == FRICREG_LAW_KARNOPP);
+    const struct fr_law_row *law = &fr_law_table[ctx->law];
+    int strib = ctx->stribeck, feq_band = (law->kinks & FR_KINK_FEQ_BAND) != 0;
+    /* the paper's partition changes its stick set where a law reads f_eq over a band */
+    int paper_jumps = fr_coupled(ctx) && ctx->partition == FRICREG_PARTITION_PAPER && feq_band;
     return (struct live){
-        .band = law == FRICREG_LAW_KARNOPP || law == FRICREG_LAW_VELOCITY_LIMITED || strib,
+        .band = (law->kinks & FR_KINK_BAND) || strib,
         .band_always = paper_jumps,
-        .rest = law == FRICREG_LAW_COULOMB || law == FRICREG_LAW_FORCE_BALANCE || strib,
-        .zone = law == FRICREG_LAW_QUINN,
-        .sat = law == FRICREG_LAW_QUINN || law == FRICREG_LAW_KARNOPP,
-        .h_sat = law == FRICREG_LAW_KARNOPP ? ctx->eps : 0.5 * ctx->eps,
+        .rest = (law->kinks & FR_KINK_REST) || strib,
+        .zone = (law->kinks & FR_KINK_ZONE) != 0,
+        .sat = feq_band,
+        .h_sat = feq_band ? law->feq_half_band * ctx->eps : 0.5 * ctx->eps,
     };
 }
 

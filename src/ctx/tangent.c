@@ -27,7 +27,8 @@
 /* d f/d zdot of a contact that does not read f_eq at zdot = v. */
 static double slip_slope(int law, double v, double mun, double eps)
 {
-    switch (law) {
+    FR_LAWS_LISTED(6);
+    switch ((enum fricreg_law)law) {
     case FRICREG_LAW_VELOCITY_LIMITED: return fabs(v) < eps ? -mun / eps : 0.0;
     case FRICREG_LAW_TANH: {
         /* sech^2 is 0 far out, where mun/eps may overflow: Inf * 0 gave NaN (mun = 1.8e308,
@@ -35,8 +36,12 @@ static double slip_slope(int law, double v, double mun, double eps)
         double t = tanh(v / eps), sech2 = 1.0 - t * t;
         return sech2 == 0.0 ? 0.0 : -(mun / eps) * sech2;
     }
-    default: return 0.0; /* (1), and (2), (4), Karnopp outside their bands */
+    case FRICREG_LAW_COULOMB:
+    case FRICREG_LAW_FORCE_BALANCE:
+    case FRICREG_LAW_KARNOPP:
+    case FRICREG_LAW_QUINN: break; /* (1), and (2), (4), Karnopp outside their bands */
     }
+    return 0.0;
 }
 
 /* d bound_i/d zdot_i at v: 0, but for Stribeck friction (ctx_stribeck.c), whose bound moves

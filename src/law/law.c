@@ -55,7 +55,8 @@ static int bad_batch_inputs(size_t m, const double v[], const double f_eq[], con
 FR_KERNEL_BODY void law_batch_loops(int law, double eps, size_t m, const double v[],
                                     const double f_eq[], const double mun[], double f[])
 {
-    switch (law) {
+    FR_LAWS_LISTED(6);
+    switch ((enum fricreg_law)law) {
     case FRICREG_LAW_COULOMB:
         for (size_t i = 0; i < m; i++)
             f[i] = fr_coulomb(v[i], mun[i]);
@@ -76,7 +77,7 @@ FR_KERNEL_BODY void law_batch_loops(int law, double eps, size_t m, const double 
         for (size_t i = 0; i < m; i++)
             f[i] = fr_tanh(v[i], mun[i], eps);
         break;
-    default:
+    case FRICREG_LAW_QUINN:
         for (size_t i = 0; i < m; i++)
             f[i] = fr_quinn(v[i], f_eq[i], mun[i], eps);
         break;

@@ -9,6 +9,36 @@
 
 #include "fricreg.h"
 
+/* The laws are enum fricreg_law's 1 .. FR_LAW_COUNT. */
+enum { FR_LAW_COUNT = FRICREG_LAW_QUINN };
+
+/* What the code that is not a law's kernel asks of a law (law_table.c), one row per law. */
+struct fr_law_row {
+    const char *name;     /* lowercase, as fricreg-sim's --law takes it */
+    int reads_feq;        /* reads f_eq for some v: the partition's stick set S (Sec. 3.3) */
+    int jumps;            /* the force jumps (by 2 mun at zdot = 0, or at Karnopp's band edge):
+                           * a fixed step's guard then takes the chord as the law's stiffness */
+    double slope_at_rest; /* -df/dv at v = 0 in units of mun/eps: the step guard's stiffness */
+    unsigned kinks;       /* enum fr_law_kinks: where the law is not smooth (switching.c) */
+    double feq_half_band; /* the half-width, in units of eps, of the band where it reads f_eq
+                           * (FR_KINK_FEQ_BAND laws): f_eq saturates at +-mun on its segments */
+};
+
+/* The kinds of kink of a law in the (v, f_eq) plane (fricreg_ctx_switching's components). */
+enum fr_law_kinks {
+    FR_KINK_BAND = 1,    /* the band's edges |v| = eps */
+    FR_KINK_REST = 2,    /* rest, v = 0 */
+    FR_KINK_ZONE = 4,    /* the edges of law (4)'s linear zone, v - xi = +-eps/2 */
+    FR_KINK_FEQ_BAND = 8 /* f_eq = +-mun inside a band where the law reads f_eq */
+};
+extern const struct fr_law_row fr_law_table[FR_LAW_COUNT + 1];
+
+/* Every switch on a law lists every law by name, with no default, on (enum fricreg_law): the
+ * compiler's -Wswitch names a switch that misses a law added later (an error under
+ * FRICREG_WERROR), and FR_LAWS_LISTED(n) beside it, n the laws its author listed, stops the
+ * build until each is read again for the new law. */
+#define FR_LAWS_LISTED(n) ((void)sizeof(char[(n) == FR_LAW_COUNT ? 1 : -1]))
+
 /* clamp(x, lo, hi) = min(max(x, lo), hi) for lo <= hi, written in the operand order of the
  * maxsd/minsd instructions and their packed forms, so the compiler emits selects, never
  * branches, and vectorizes the loops around it. A NaN x gives a bound (see fr_quinn_band). */
@@ -141,20 +171,27 @@ static inline void fr_box_slopes(double c, double mun, double *dlo, double *dhi)
 /* Whether the law reads f_eq at velocity v: the near-stick test of Sec. 3.3. */
 static inline int fr_needs_feq(int law, double v, double eps)
 {
-    switch (law) {
+    FR_LAWS_LISTED(6);
+    switch ((enum fricreg_law)law) {
     case FRICREG_LAW_FORCE_BALANCE: return v == 0.0;
     case FRICREG_LAW_KARNOPP:
     case FRICREG_LAW_QUINN: return fabs(v) < eps;
-    default: return 0;
+    case FRICREG_LAW_COULOMB:
+    case FRICREG_LAW_VELOCITY_LIMITED:
+    case FRICREG_LAW_TANH: return 0;
     }
+    return 0; /* not a law */
 }
 
-/* Whether the law's force jumps (by 2 mun at zdot = 0, or at Karnopp's band edge): (1), (2),
- * Karnopp. A fixed step's guard then takes the chord of the jump as the law's stiffness. */
+static inline int fr_law_known(int law)
+{
+    return law >= FRICREG_LAW_COULOMB && law <= FR_LAW_COUNT;
+}
+
+/* Whether the law's force jumps (law_table.c); law must be known. */
 static inline int fr_law_jumps(int law)
 {
-    return law == FRICREG_LAW_COULOMB || law == FRICREG_LAW_FORCE_BALANCE ||
-           law == FRICREG_LAW_KARNOPP;
+    return fr_law_table[law].jumps;
 }
 
 /* The default bound on a run's adaptive steps (one forcing cycle of a simulation, one
@@ -168,11 +205,10 @@ static inline int64_t fr_law_max_adaptive_steps(int law)
     return fr_law_jumps(law) ? 10000 : 1000000;
 }
 
-/* Whether the law reads f_eq at all (for any v). */
+/* Whether the law reads f_eq at all (for any v); law must be known. */
 static inline int fr_law_uses_feq(int law)
 {
-    return law == FRICREG_LAW_FORCE_BALANCE || law == FRICREG_LAW_KARNOPP ||
-           law == FRICREG_LAW_QUINN;
+    return fr_law_table[law].reads_feq;
 }
 
 /* eps must be a normal positive number: below DBL_MIN, 2/eps overflows and (4) would give
@@ -182,22 +218,19 @@ static inline int fr_eps_valid(double eps)
     return eps >= DBL_MIN;
 }
 
-static inline int fr_law_known(int law)
-{
-    return law >= FRICREG_LAW_COULOMB && law <= FRICREG_LAW_QUINN;
-}
-
 /* One evaluation; law must be known (checked by the caller). */
 static inline double fr_law(int law, double v, double f_eq, double mun, double eps)
 {
-    switch (law) {
+    FR_LAWS_LISTED(6);
+    switch ((enum fricreg_law)law) {
     case FRICREG_LAW_COULOMB: return fr_coulomb(v, mun);
     case FRICREG_LAW_FORCE_BALANCE: return fr_force_balance(v, f_eq, mun);
     case FRICREG_LAW_KARNOPP: return fr_karnopp(v, f_eq, mun, eps);
     case FRICREG_LAW_VELOCITY_LIMITED: return fr_velocity_limited(v, mun, eps);
     case FRICREG_LAW_TANH: return fr_tanh(v, mun, eps);
-    default: return fr_quinn(v, f_eq, mun, eps);
+    case FRICREG_LAW_QUINN: break;
     }
+    return fr_quinn(v, f_eq, mun, eps);
 }
 
 /* Sums over many terms (box_qp.c, partition_paper.c) are added in FR_LANES explicit partial
