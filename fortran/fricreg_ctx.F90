@@ -36,6 +36,7 @@ module fricreg_ctx_m
     procedure :: solve_step => ctx_solve_step
     procedure :: solve_step_csr => ctx_solve_step_csr
     procedure :: solve_step_csc => ctx_solve_step_csc
+    procedure :: solve_step_matrix => ctx_solve_step_matrix
 #endif
     procedure :: switching => ctx_switching
     procedure :: switching_count => ctx_switching_count
@@ -434,6 +435,71 @@ contains
                                        weff_colptr, weff_rowind, weff_values, c, tol, &
                                        max_iter, f, iterations, converged, flags)
   end function ctx_solve_step_csc
+
+  !> solve_step with W and Weff in the storage format names (C's fricreg_ctx_solve_step_matrix):
+  !> FRICREG_MATRIX_DENSE, w_values(m * m) and weff_values(m * m) the symmetric matrices (a
+  !> W(m, m) array's elements in order), w_ptr ... weff_ind absent; or FRICREG_MATRIX_CSR or
+  !> FRICREG_MATRIX_CSC plus (ior) the FRICREG_SPARSE_* flags, the arrays as solve_step_csr's
+  !> or solve_step_csc's (w_ptr(m + 1), w_ind(nnz), w_values(nnz), the same for Weff). The same
+  !> forces as those on the same matrices. FRICREG_ENULL if a compressed format lacks an index
+  !> array; FRICREG_ESIZE unless the arrays have those sizes; FRICREG_EINVAL for a format both
+  !> CSR and CSC, or dense with a sparse flag; the rest as solve_step's.
+  function ctx_solve_step_matrix(self, zdot_start, zdot_pred, a_pred, format, w_values, &
+                                 weff_values, c, tol, max_iter, f, w_ptr, w_ind, weff_ptr, &
+                                 weff_ind, iterations, converged, flags) result(status)
+    class(fricreg_context), intent(inout) :: self
+    real(c_double), intent(in), contiguous :: zdot_start(:), zdot_pred(:), a_pred(:)
+    integer(c_int), intent(in) :: format
+    real(c_double), intent(in), contiguous :: w_values(:), weff_values(:)
+    real(c_double), intent(in) :: c, tol
+    integer, intent(in) :: max_iter
+    real(c_double), intent(inout), contiguous :: f(:)
+    integer(c_int64_t), intent(in), contiguous, optional :: w_ptr(:), w_ind(:), weff_ptr(:), &
+                                                            weff_ind(:)
+    integer, intent(out), optional :: iterations
+    logical, intent(out), optional :: converged
+    integer, intent(in), optional :: flags
+    integer(c_int) :: status, info(2), how, layout
+    integer(c_int64_t) :: unread(1)
+    integer(c_size_t) :: m
+    layout = iand(format, ior(FRICREG_MATRIX_CSR, FRICREG_MATRIX_CSC))
+    if (layout == FRICREG_MATRIX_CSR .or. layout == FRICREG_MATRIX_CSC) then
+      if (.not. (present(w_ptr) .and. present(w_ind) .and. present(weff_ptr) .and. &
+                 present(weff_ind))) then
+        status = self%fail(FRICREG_ENULL, 'solve_step_matrix: a compressed format needs ' // &
+                           'w_ptr, w_ind, weff_ptr and weff_ind')
+        return
+      end if
+      status = ctx_solve_step_compressed(self, layout == FRICREG_MATRIX_CSC, zdot_start, &
+                                         zdot_pred, a_pred, iand(format, not(layout)), w_ptr, &
+                                         w_ind, w_values, weff_ptr, weff_ind, weff_values, c, &
+                                         tol, max_iter, f, iterations, converged, flags)
+      return
+    end if
+    m = fricreg_ctx_size(self%ptr)
+    how = 0
+    if (present(flags)) how = int(flags, c_int)
+    status = self%ready('solve_step_matrix', 'context')
+    if (status == FRICREG_OK) status = self%check_size('solve_step_matrix', 'zdot_start', &
+                                                       size(zdot_start), m)
+    if (status == FRICREG_OK) status = self%check_size('solve_step_matrix', 'zdot_pred', &
+                                                       size(zdot_pred), m)
+    if (status == FRICREG_OK) status = self%check_size('solve_step_matrix', 'a_pred', &
+                                                       size(a_pred), m)
+    if (status == FRICREG_OK) status = self%check_size('solve_step_matrix', 'f', size(f), m)
+    if (status == FRICREG_OK .and. layout == FRICREG_MATRIX_DENSE) &
+      status = self%check_size('solve_step_matrix', 'w_values', size(w_values), m * m)
+    if (status == FRICREG_OK .and. layout == FRICREG_MATRIX_DENSE) &
+      status = self%check_size('solve_step_matrix', 'weff_values', size(weff_values), m * m)
+    if (status /= FRICREG_OK) return
+    unread = 0
+    status = self%record(fricreg_ctx_solve_step_matrix(self%ptr, m, zdot_start, zdot_pred, &
+                         a_pred, format, unread, unread, w_values, unread, unread, weff_values, &
+                         c, tol, int(max_iter, c_int), how, f, info))
+    if (status /= FRICREG_OK) return
+    if (present(iterations)) iterations = int(info(1))
+    if (present(converged)) converged = info(2) /= 0
+  end function ctx_solve_step_matrix
 
   !> The two above: the shapes checked (ctx_check_compressed, as the coupling setters'), then
   !> the C call by rows or by columns.

@@ -75,6 +75,8 @@
 !                                                FRCTXC (the user's own Newmark)
 !   FRCSTR(H, M, ZS, ZP, AP, SFLAGS, WP, WI, WV, EP, EI, EV, C, TOL, MAXIT, FLAGS, F, ITERS,
 !          CONV, STAT)                           fricreg_ctx_solve_step_csr (FRCSTC: _csc)
+!   FRCSTM(H, M, ZS, ZP, AP, FORMAT, WP, WI, WV, EP, EI, EV, C, TOL, MAXIT, FLAGS, F, ITERS,
+!          CONV, STAT)                           fricreg_ctx_solve_step_matrix (any storage)
 ! The getters (FRSTG*, FRSTJS, FRSTS2, FRSTIS, FRSTNF, FRSTPK, FRSTPE, FRSTDE, FRSTJE,
 ! FRSTOG) read a const structure: C records no failure of theirs, so FRSTER still shows the
 ! failure before (their STAT is the answer). So do the few refusals made here, before C is
@@ -498,3 +500,32 @@ subroutine frcstc(h, m, zs, zp, ap, sflags, wp, wi, wv, ep, ei, ev, c, tol, maxi
   iters = int(info(1))
   conv = int(info(2))
 end subroutine frcstc
+
+!> FRCSTM(H, M, ZS, ZP, AP, FORMAT, WP, WI, WV, EP, EI, EV, C, TOL, MAXIT, FLAGS, F, ITERS, CONV,
+!> STAT): FRCSTP with W and WEFF in the storage FORMAT names (fricreg_ctx_solve_step_matrix):
+!> FRICREG_MATRIX_DENSE, WV(M, M) and EV(M, M) as FRCSTP's W and WEFF, WP, WI, EP, EI not read
+!> (any INTEGER*8 array); or FRICREG_MATRIX_CSR or FRICREG_MATRIX_CSC plus the
+!> FRICREG_SPARSE_* constants (FRICREG_SPARSE_ONE_BASED for Fortran's indices), the arrays as
+!> FRCSTR's or FRCSTC's. The same forces as those on the same matrices; FRICREG_EINVAL for a
+!> format both CSR and CSC, or dense with a sparse flag. The rest as FRCSTP.
+subroutine frcstm(h, m, zs, zp, ap, format, wp, wi, wv, ep, ei, ev, c, tol, maxit, flags, f, &
+                  iters, conv, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h, wp(*), wi(*), ep(*), ei(*)
+  integer, intent(in) :: m, format, maxit, flags
+  double precision, intent(in) :: zs(*), zp(*), ap(*), wv(*), ev(*), c, tol
+  double precision, intent(inout) :: f(*)
+  integer, intent(inout) :: iters, conv
+  integer, intent(out) :: stat
+  integer(c_int) :: info(2)
+  stat = int(fricreg_ctx_solve_step_matrix(fricreg_handle_to_ptr(h), int(max(m, 0), c_size_t), &
+             zs, zp, ap, int(min(max(format, -int(huge(0_c_int))), int(huge(0_c_int))), c_int), &
+             wp, wi, wv, ep, ei, ev, c, tol, &
+             int(min(max(maxit, -int(huge(0_c_int))), int(huge(0_c_int))), c_int), &
+             int(min(max(flags, -int(huge(0_c_int))), int(huge(0_c_int))), c_int), f, info))
+  if (stat /= FRICREG_OK) return
+  iters = int(info(1))
+  conv = int(info(2))
+end subroutine frcstm

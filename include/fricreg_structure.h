@@ -1363,7 +1363,8 @@ FRICREG_API int fricreg_ctx_solve_step(fricreg_ctx *ctx, size_t m, const double 
                                        const double W[], const double Weff[], double c, double tol,
                                        int max_iter, int flags, double f[], int info[]);
 
-/** fricreg_ctx_solve_step with W and W_eff in compressed sparse rows (since 1.7, FRICREG_1.7):
+/** fricreg_ctx_solve_step with W and W_eff in compressed sparse rows (since 1.7, FRICREG_1.7;
+ *  fricreg_ctx_solve_step_matrix's FRICREG_MATRIX_CSR case):
  *  the same step, the same method and the same forces, for the models whose contacts couple
  *  only to their neighbours. The dense call reads two m x m arrays on every call, O(m^2): at
  *  m = 10^4 1.5 GiB and seconds a step however sparse W and W_eff are; here every call is
@@ -1424,7 +1425,7 @@ FRICREG_API int fricreg_ctx_solve_step_csr(fricreg_ctx *ctx, size_t m, const dou
                                            int max_iter, int flags, double f[], int info[]);
 
 /** fricreg_ctx_solve_step_csr with W and W_eff in compressed sparse columns (since 1.7,
- *  FRICREG_1.7): colptr[m + 1] the column pointers and rowind[nnz] each entry's row, as
+ *  FRICREG_1.7; fricreg_ctx_solve_step_matrix's FRICREG_MATRIX_CSC case): colptr[m + 1] the column pointers and rowind[nnz] each entry's row, as
  *  fricreg_ctx_set_coupling_csc takes them. One-based CSC (FRICREG_SPARSE_ONE_BASED) is what
  *  Fortran codes hold; W and W_eff being symmetric, their CSC arrays are their CSR arrays,
  *  FRICREG_SPARSE_UPPER of one being FRICREG_SPARSE_LOWER of the other.
@@ -1448,6 +1449,45 @@ FRICREG_API int fricreg_ctx_solve_step_csc(fricreg_ctx *ctx, size_t m, const dou
                                            const int64_t weff_colptr[], const int64_t weff_rowind[],
                                            const double weff_values[], double c, double tol,
                                            int max_iter, int flags, double f[], int info[]);
+
+/** fricreg_ctx_solve_step with W and W_eff in any storage, the format an argument as
+ *  fricreg_structure_set_matrix takes it (since 1.8, FRICREG_1.8): dense, compressed sparse
+ *  rows or compressed sparse columns. The same step, the same method and, on the same
+ *  matrices, the same forces bit for bit as fricreg_ctx_solve_step (dense) and
+ *  fricreg_ctx_solve_step_csr / _csc (compressed), which are its cases; the step's solver is
+ *  kept in the context by their rule.
+ *
+ *  ctx, m, zdot_start[m], zdot_pred[m], a_pred[m], c, tol, max_iter, flags, f[m], info[2]:
+ *               as fricreg_ctx_solve_step's (velocity, acceleration, time and force units).
+ *  format       enum fricreg_matrix_format (fricreg.h), for both matrices:
+ *               FRICREG_MATRIX_DENSE (no flag; w_values[m*m] and weff_values[m*m] row-major,
+ *               symmetric, so Fortran may pass its arrays; the pointer and index arrays are
+ *               not read, NULL from C), or FRICREG_MATRIX_CSR or FRICREG_MATRIX_CSC, each
+ *               combined with | with enum fricreg_sparse_flags (FRICREG_SPARSE_ONE_BASED;
+ *               each matrix whole, or by one triangle with its diagonal, FRICREG_SPARSE_UPPER
+ *               or FRICREG_SPARSE_LOWER).
+ *  w_ptr, w_ind, w_values
+ *               W = J M^-1 J^T (acceleration per force), the coupling the context holds:
+ *               compressed, w_ptr[m + 1] (row or column pointers from the base), w_ind[nnz]
+ *               (each entry's column in CSR, row in CSC) and w_values[nnz], as
+ *               fricreg_ctx_solve_step_csr / _csc read them; dense, w_values[m*m].
+ *  weff_ptr, weff_ind, weff_values
+ *               W_eff = J K_eff^-1 J^T, symmetric positive definite, the same way.
+ *
+ *  Returns FRICREG_OK (converged or not: read info[1]); FRICREG_EINVAL if format names both
+ *  CSR and CSC, or is dense with a sparse flag; otherwise each status of the case it names,
+ *  fricreg_ctx_solve_step (dense) or fricreg_ctx_solve_step_csr / _csc (compressed):
+ *  FRICREG_ENULL, FRICREG_ESIZE, FRICREG_ENONFINITE, FRICREG_EINVAL, FRICREG_ENOTSYM,
+ *  FRICREG_ENOTPSD, FRICREG_ENOMEM, FRICREG_EDIVERGED and the context's fricreg_ctx_eval
+ *  statuses. The failure is recorded in the context (fricreg_ctx_errmsg); on failure f and
+ *  info are not written. */
+FRICREG_API int fricreg_ctx_solve_step_matrix(fricreg_ctx *ctx, size_t m, const double zdot_start[],
+                                              const double zdot_pred[], const double a_pred[],
+                                              int format, const int64_t w_ptr[],
+                                              const int64_t w_ind[], const double w_values[],
+                                              const int64_t weff_ptr[], const int64_t weff_ind[],
+                                              const double weff_values[], double c, double tol,
+                                              int max_iter, int flags, double f[], int info[]);
 
 /** \} */
 

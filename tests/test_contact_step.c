@@ -62,7 +62,8 @@ static void compressed(size_t m, const double A[], int flags, int by_columns, in
 static const int way_flags[4] = {0, FRICREG_SPARSE_UPPER | FRICREG_SPARSE_ONE_BASED,
                                  FRICREG_SPARSE_LOWER, FRICREG_SPARSE_ONE_BASED};
 
-/* fricreg_ctx_solve_step_csr or _csc (way k % 4) on the dense W and Weff's nonzeros. */
+/* fricreg_ctx_solve_step_csr or _csc (way k % 4) on the dense W and Weff's nonzeros; for
+ * k % 8 >= 4, the same through fricreg_ctx_solve_step_matrix. */
 static int solve_step_sparse(fricreg_ctx *ctx, size_t m, const double z0[], const double zp[],
                              const double ap[], const double W[], const double Weff[], double c,
                              double tol, int max_iter, int flags, double f[], int info[], int k)
@@ -74,6 +75,10 @@ static int solve_step_sparse(fricreg_ctx *ctx, size_t m, const double z0[], cons
     ck_assert_int_le(m, 16);
     compressed(m, W, sf, by_columns, wp, wi, wv);
     compressed(m, Weff, sf, by_columns, ep, ei, ev);
+    if (k % 8 >= 4)
+        return fricreg_ctx_solve_step_matrix(
+            ctx, m, z0, zp, ap, (by_columns ? FRICREG_MATRIX_CSC : FRICREG_MATRIX_CSR) | sf, wp, wi,
+            wv, ep, ei, ev, c, tol, max_iter, flags, f, info);
     return by_columns ? fricreg_ctx_solve_step_csc(ctx, m, z0, zp, ap, sf, wp, wi, wv, ep, ei, ev,
                                                    c, tol, max_iter, flags, f, info)
                       : fricreg_ctx_solve_step_csr(ctx, m, z0, zp, ap, sf, wp, wi, wv, ep, ei, ev,
@@ -156,7 +161,13 @@ static void random_steps(int law, int diagonal)
         int info[2] = {-1, -1}, info_sparse[2] = {-2, -2};
         double f_sparse[M];
         memcpy(f_sparse, f, sizeof f);
-        int status = fricreg_ctx_solve_step(ctx, M, z0, zp, ap, W, Weff, c, tol, 50, 0, f, info);
+        /* the dense call, every third step through fricreg_ctx_solve_step_matrix */
+        int status = step % 3 == 0
+                         ? fricreg_ctx_solve_step_matrix(ctx, M, z0, zp, ap, FRICREG_MATRIX_DENSE,
+                                                         NULL, NULL, W, NULL, NULL, Weff, c, tol,
+                                                         50, 0, f, info)
+                         : fricreg_ctx_solve_step(ctx, M, z0, zp, ap, W, Weff, c, tol, 50, 0, f,
+                                                  info);
         ck_assert_msg(status == FRICREG_OK, "%s", fricreg_ctx_errmsg(ctx));
         /* The sparse entries on the same matrices: the dense call's forces, bit for bit. */
         status = solve_step_sparse(twin, M, z0, zp, ap, W, Weff, c, tol, 50, 0, f_sparse,
@@ -654,6 +665,41 @@ START_TEST(sparse_kept_and_refused)
 }
 END_TEST
 
+/* fricreg_ctx_solve_step_matrix's own refusals (its cases' are the dense and sparse calls'),
+ * f and info untouched: a format both CSR and CSC, a dense one with a sparse flag, a dense
+ * one without its values, no context. */
+START_TEST(matrix_form_refusals)
+{
+    enum { M = 2 };
+    double W[M * M] = {1.0, 0.0, 0.0, 1.0}, Weff[M * M] = {0.1, 0.0, 0.0, 0.1};
+    double mun[M] = {1.0, 1.0}, z0[M] = {0.0, 0.0}, ap[M] = {0.5, -0.5}, f[M] = {0.25, -0.25};
+    int info[2] = {-7, -7};
+    fricreg_ctx *ctx = NULL;
+    ck_assert_int_eq(fricreg_ctx_create(M, &ctx), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, 1e-3), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, M, W), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, M, mun), FRICREG_OK);
+#define MATRIX_STEP(FORMAT, WV, EV)                                                           \
+    fricreg_ctx_solve_step_matrix(ctx, M, z0, z0, ap, FORMAT, NULL, NULL, WV, NULL, NULL, EV, \
+                                  0.005, 1e-10, 50, 0, f, info)
+    ck_assert_int_eq(MATRIX_STEP(FRICREG_MATRIX_CSR | FRICREG_MATRIX_CSC, W, Weff), FRICREG_EINVAL);
+    ck_assert_ptr_nonnull(strstr(fricreg_ctx_errmsg(ctx), "both CSR and CSC"));
+    ck_assert_int_eq(MATRIX_STEP(FRICREG_MATRIX_DENSE | FRICREG_SPARSE_ONE_BASED, W, Weff),
+                     FRICREG_EINVAL);
+    ck_assert_int_eq(MATRIX_STEP(FRICREG_MATRIX_DENSE, W, NULL), FRICREG_ENULL);
+    ck_assert_int_eq(MATRIX_STEP(FRICREG_MATRIX_CSR, W, Weff), FRICREG_ENULL); /* no w_ptr */
+    ck_assert(f[0] == 0.25 && f[1] == -0.25 && info[0] == -7 && info[1] == -7);
+    ck_assert_int_eq(fricreg_ctx_solve_step_matrix(NULL, M, z0, z0, ap, FRICREG_MATRIX_DENSE, NULL,
+                                                   NULL, W, NULL, NULL, Weff, 0.005, 1e-10, 50, 0,
+                                                   f, info),
+                     FRICREG_ENULL);
+    ck_assert_int_eq(MATRIX_STEP(FRICREG_MATRIX_DENSE, W, Weff), FRICREG_OK);
+    ck_assert_int_eq(info[1], 1);
+#undef MATRIX_STEP
+    fricreg_ctx_free(ctx);
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("contact_step");
@@ -671,6 +717,7 @@ static Suite *suite(void)
     tcase_add_test(tc, kept_sparse_quinn_coupled);
     tcase_add_test(tc, kept_sparse_tanh);
     tcase_add_test(tc, sparse_kept_and_refused);
+    tcase_add_test(tc, matrix_form_refusals);
     suite_add_tcase(s, tc);
     return s;
 }

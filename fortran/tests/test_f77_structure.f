@@ -195,6 +195,29 @@ C     DENSE CALL'S FORCE, BIT FOR BIT.
      &            F, ITERS, ICONV, IST)
       CALL CHK(IST .EQ. FRICREG_OK .AND. ICONV .EQ. 1 .AND.
      &         F(1) .EQ. FD, 'FRCSTR: FRCSTP''S FORCE', NFAIL)
+C     AND BY FRCSTM, IN CSC AND DENSE: THE SAME FORCE; BOTH CSR AND CSC
+C     REFUSED, F KEPT.
+      F(1) = -1.0D0
+      CALL FRCSTM(HC, 1, ZS, ZP, AP,
+     &            FRICREG_MATRIX_CSC + FRICREG_SPARSE_ONE_BASED,
+     &            IP, II, W, IP, II, WEFF, 0.005D0, 1.0D-12, 50, 0,
+     &            F, ITERS, ICONV, IST)
+      CALL CHK(IST .EQ. FRICREG_OK .AND. ICONV .EQ. 1 .AND.
+     &         F(1) .EQ. FD, 'FRCSTM CSC: FRCSTP''S FORCE', NFAIL)
+      F(1) = -1.0D0
+      CALL FRCSTM(HC, 1, ZS, ZP, AP, FRICREG_MATRIX_DENSE,
+     &            IP, II, W, IP, II, WEFF, 0.005D0, 1.0D-12, 50, 0,
+     &            F, ITERS, ICONV, IST)
+      CALL CHK(IST .EQ. FRICREG_OK .AND. ICONV .EQ. 1 .AND.
+     &         F(1) .EQ. FD, 'FRCSTM DENSE: FRCSTP''S FORCE', NFAIL)
+      F(1) = -1.0D0
+      CALL FRCSTM(HC, 1, ZS, ZP, AP,
+     &            FRICREG_MATRIX_CSC + FRICREG_MATRIX_CSR,
+     &            IP, II, W, IP, II, WEFF, 0.005D0, 1.0D-12, 50, 0,
+     &            F, ITERS, ICONV, IST)
+      CALL CHK(IST .EQ. FRICREG_EINVAL .AND. F(1) .EQ. -1.0D0,
+     &         'FRCSTM CSR AND CSC', NFAIL)
+      F(1) = FD
       CALL FRCSTR(HC, 1, ZS, ZP, AP, 0, IP, II, W, IP, II, WEFF,
      &            0.005D0, 1.0D-12, 50, 0, F, ITERS, ICONV, IST)
       CALL CHK(IST .EQ. FRICREG_EINVAL, 'FRCSTR: ZERO-BASED, IP(1) = 1',

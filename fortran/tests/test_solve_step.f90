@@ -1,6 +1,7 @@
 ! SPDX-License-Identifier: GPL-3.0-or-later
 ! test_solve_step.f90 — the user's own implicit step on a context through the module:
-! ctx%solve_step, ctx%solve_step_csr, ctx%solve_step_csc (C's fricreg_ctx_solve_step, _csr, _csc).
+! ctx%solve_step, ctx%solve_step_csr, ctx%solve_step_csc, ctx%solve_step_matrix (C's
+! fricreg_ctx_solve_step, _csr, _csc, _matrix).
 !
 ! The closed form of test_f77_structure.f's FRCSTP, on two uncoupled contacts: W = diag(2, 2),
 ! Weff = diag(1, 1), c = 0.005, law (4) with eps = 1e-3 and mun = 1, zdot_pred = 0,
@@ -75,6 +76,20 @@ program test_solve_step
   call check_bits(f(1), fd(1), 'solve_step_csr: f(1) bit for bit')
   call check_bits(f(2), fd(2), 'solve_step_csr: f(2) bit for bit')
 
+  f = f0
+  call check_status(ctx%solve_step_matrix(zs, zp, ap, int(FRICREG_MATRIX_CSC + &
+                                          FRICREG_SPARSE_ONE_BASED + FRICREG_SPARSE_UPPER, &
+                                          c_int), wu, weu, c, tol, 50, f, colptr, rowind, &
+                                          colptr, rowind), FRICREG_OK, 'solve_step_matrix, CSC')
+  call check_bits(f(1), fd(1), 'solve_step_matrix CSC: f(1) bit for bit')
+  call check_bits(f(2), fd(2), 'solve_step_matrix CSC: f(2) bit for bit')
+  f = f0
+  call check_status(ctx%solve_step_matrix(zs, zp, ap, int(FRICREG_MATRIX_DENSE, c_int), ww, &
+                                          wew, c, tol, 50, f), FRICREG_OK, &
+                    'solve_step_matrix, dense')
+  call check_bits(f(1), fd(1), 'solve_step_matrix dense: f(1) bit for bit')
+  call check_bits(f(2), fd(2), 'solve_step_matrix dense: f(2) bit for bit')
+
   ! Refusals: the forces kept.
   f = f0
   call check_status(ctx%solve_step_csr(zs, zp, ap, int(FRICREG_SPARSE_ZERO_BASED, c_int), &
@@ -83,6 +98,15 @@ program test_solve_step
   call check_status(ctx%solve_step_csr(zs, zp, ap, int(FRICREG_SPARSE_ONE_BASED, c_int), &
                                        rowptr, colind, ww, rowptr, colind, wew, c, tol, 50, f), &
                     FRICREG_EINVAL, 'solve_step_csr, zero-based pointers called one-based')
+  call check_status(ctx%solve_step_matrix(zs, zp, ap, int(FRICREG_MATRIX_CSR, c_int), ww, wew, &
+                                          c, tol, 50, f), FRICREG_ENULL, &
+                    'solve_step_matrix, CSR without its index arrays')
+  call check_status(ctx%solve_step_matrix(zs, zp, ap, int(FRICREG_MATRIX_DENSE, c_int), wu, &
+                                          wew, c, tol, 50, f), FRICREG_ESIZE, &
+                    'solve_step_matrix, dense W of 3 elements for m = 2')
+  call check_status(ctx%solve_step_matrix(zs, zp, ap, int(FRICREG_MATRIX_CSR + &
+                                          FRICREG_MATRIX_CSC, c_int), ww, wew, c, tol, 50, f), &
+                    FRICREG_EINVAL, 'solve_step_matrix, both CSR and CSC')
   call check(all(f == f0), 'refused: f unchanged')
   call ctx%destroy()
   call finish('test_solve_step')

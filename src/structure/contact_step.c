@@ -622,6 +622,28 @@ int fricreg_ctx_solve_step_csr(fricreg_ctx *ctx, size_t m, const double zdot_sta
                                  max_iter, flags, f, info, "solve_step_csr");
 }
 
+int fricreg_ctx_solve_step_matrix(fricreg_ctx *ctx, size_t m, const double zdot_start[],
+                                  const double zdot_pred[], const double a_pred[], int format,
+                                  const int64_t w_ptr[], const int64_t w_ind[],
+                                  const double w_values[], const int64_t weff_ptr[],
+                                  const int64_t weff_ind[], const double weff_values[], double c,
+                                  double tol, int max_iter, int flags, double f[], int info[])
+{
+    if (ctx == NULL)
+        return FRICREG_ENULL;
+    int compressed = 0, by_columns = 0, sparse_flags = 0;
+    int status = fr_matrix_format(format, &compressed, &by_columns, &sparse_flags,
+                                  fr_ctx_error(ctx), "solve_step_matrix");
+    if (status != FRICREG_OK)
+        return status;
+    if (!compressed)
+        return fricreg_ctx_solve_step(ctx, m, zdot_start, zdot_pred, a_pred, w_values, weff_values,
+                                      c, tol, max_iter, flags, f, info);
+    return solve_step_compressed(ctx, m, by_columns, zdot_start, zdot_pred, a_pred, sparse_flags,
+                                 w_ptr, w_ind, w_values, weff_ptr, weff_ind, weff_values, c, tol,
+                                 max_iter, flags, f, info, "solve_step_matrix");
+}
+
 int fricreg_ctx_solve_step_csc(fricreg_ctx *ctx, size_t m, const double zdot_start[],
                                const double zdot_pred[], const double a_pred[], int sparse_flags,
                                const int64_t w_colptr[], const int64_t w_rowind[],
