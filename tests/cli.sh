@@ -315,6 +315,48 @@ printf '0 0.731\n10 0.731\n' >"$d/ag_osc.txt"
 expect_output '"x": \[-0\.00113279590437[89][0-9]*\]' structure --mass $d/M2.mtx --stiffness $d/K2.mtx --contacts $d/J1.mtx --mun $d/mun0.txt --ground-accel $d/ag_osc.txt --integrator newmark --dt 0.01 --t-end 1.37
 # ... its energy balance closes (input = kinetic + strain) to Newton's tolerance.
 expect_output '"residual": -?[0-9.]+e-(1[3-9]|[2-9][0-9])' structure --mass $d/M2.mtx --stiffness $d/K2.mtx --contacts $d/J1.mtx --mun $d/mun0.txt --ground-accel $d/ag_osc.txt --integrator newmark --dt 0.01 --t-end 1.37
+# The same oscillator without --contacts and --mun: no friction contacts, plain linear
+# dynamics. Its trajectory has no force columns, and every row is the discrete closed form
+# above to 1e-11 of A/w^2 (rounding over 137 steps), and within (A/w^2) (w - W) t of the
+# continuous u(t) = -(A/w^2)(1 - cos(w t)) (the scheme's second-order phase error,
+# w - W = w^3 dt^2/12 + O(dt^4) = 1.93e-3/s).
+# osc_check FILE P_OVER_K: FILE's rows (t, u1, v1) against u = P_OVER_K (1 - cos(w t)).
+osc_check() {
+    total=$((total + 1))
+    if [ "$(head -n 1 "$1")" != "t,u1,v1" ] || [ "$(wc -l <"$1")" -ne 139 ] ||
+       ! awk -F, -v s="$2" 'NR > 1 { w = sqrt(417.3 / 2.385); W = 2 / 0.01 * atan2(w * 0.01 / 2, 1)
+            d = $2 - s * (1 - cos(W * $1)); c = $2 - s * (1 - cos(w * $1)); a = s < 0 ? -s : s
+            if (d > 1e-11 * a || d < -1e-11 * a || c > a * (w - W) * $1 || c < -a * (w - W) * $1) exit 1 }' "$1"; then
+        echo "FAIL: $1 is not the oscillator's closed form (P/k = $2): $(head -n 3 "$1") ... $(wc -l <"$1") lines"; fails=$((fails + 1))
+    fi
+}
+osc="structure --mass $d/M2.mtx --stiffness $d/K2.mtx --integrator newmark --dt 0.01 --t-end 1.37"
+expect_output '"ncontacts": 0, "x": \[-0\.00113279590437[89][0-9]*\],.*"dissipation_per_contact": \[\]' $osc --ground-accel $d/ag_osc.txt
+"$sim" $osc --ground-accel $d/ag_osc.txt --output trajectory >"$d/osc_free.csv" 2>"$tmp/err"
+osc_check "$d/osc_free.csv" "$(awk 'BEGIN { printf "%.17g", -0.731 * 2.385 / 417.3 }')"
+# An external load p(t) = P g(t) (--load, --load-history): P = 1.93 N, a step g = 1 from t = 0,
+# gives u = (P/k)(1 - cos(w t)) by the same closed forms; without --load-history g = 1 at all
+# times, the same rows; and P = m A beside the ground's A cancels it: p - M r a_g = 0, u = 0
+# to the rounding of m A (1e-16 of u's scale A/w^2 = 4e-3 m: 4e-19 m).
+mtx P2.mtx general "1 1 1" "1 1 1.93"
+mtx PmA.mtx general "1 1 1" "1 1 1.743435"
+printf '# t g\n0 1\n10 1\n' >"$d/g_step.txt"
+"$sim" $osc --load $d/P2.mtx --load-history $d/g_step.txt --output trajectory >"$d/osc_load.csv" 2>"$tmp/err"
+osc_check "$d/osc_load.csv" "$(awk 'BEGIN { printf "%.17g", 1.93 / 417.3 }')"
+"$sim" $osc --load $d/P2.mtx --output trajectory >"$d/osc_const.csv" 2>"$tmp/err"
+total=$((total + 1))
+if [ ! -s "$d/osc_const.csv" ] || ! cmp -s "$d/osc_load.csv" "$d/osc_const.csv"; then
+    echo "FAIL: a load without --load-history is not g = 1: $(head -n 3 "$d/osc_const.csv")"; fails=$((fails + 1))
+fi
+expect_output '"x": \[(0|-?[0-9.]+e-(19|[2-9][0-9]))\]' $osc --load $d/PmA.mtx --ground-accel $d/ag_osc.txt --error-estimate off
+expect_usage_error "^fricreg-sim: --load-history: .*give both" $osc --load-history $d/g_step.txt
+mtx P21.mtx general "2 1 1" "1 1 1.93"
+printf '0 1\n' >"$d/g_one.txt"
+expect_usage_error "^fricreg-sim: --load $d/P21.mtx: the matrix is 2 x 1, expected 1 x 1" $osc --load $d/P21.mtx
+expect_usage_error "^fricreg-sim: --load-history $d/g_one.txt: 1 samples" $osc --load $d/P2.mtx --load-history $d/g_one.txt
+expect_usage_error "^fricreg-sim: --mun: missing: --contacts and --mun come together" $osc --contacts $d/J1.mtx
+expect_usage_error "^fricreg-sim: --contacts: missing: --contacts and --mun come together" $osc --mun $d/mun0.txt
+expect_usage_error "^fricreg-sim: --eps: .*without --contacts there is none" $osc --eps 0.01
 # The same with 200.0 of the 417.3 N/m a stuck Jenkins element (--jenkins, mu N = 1e30 N): a
 # spring kt, so the same closed form; with mu N = 0.05 N it slips (its dissipation > 0) and the
 # balance still closes.
@@ -499,6 +541,31 @@ total=$((total + 1))
 if [ "$(head -n 1 "$d/traj.csv")" != "t,u1,u2,v1,v2,f1,f2" ] || [ "$(wc -l <"$d/traj.csv")" -ne 1002 ]; then
     echo "FAIL: structure trajectory: $(head -n 2 "$d/traj.csv"), $(wc -l <"$d/traj.csv") lines"; fails=$((fails + 1))
 fi
+
+# --output-dofs LIST and --output-every K: the columns of the dofs listed, in its order, and the
+# rows at the steps k dt with k a multiple of K plus the last: 0, 7, ..., 994 and 1000, 144
+# rows, each the full trajectory's; the summary's per-dof arrays the same dofs, named.
+"$sim" structure $two --stiffness "$d/K3s.mtx" --output trajectory --output-dofs 2 --output-every 7 >"$d/traj_sel.csv" 2>&1
+total=$((total + 1))
+awk -F, 'NR == 1 || (NR - 2) % 7 == 0 || NR == 1002 { print $1 "," $3 "," $5 "," $6 "," $7 }' "$d/traj.csv" >"$d/traj_cut.csv"
+if [ "$(head -n 1 "$d/traj_sel.csv")" != "t,u2,v2,f1,f2" ] || [ "$(wc -l <"$d/traj_sel.csv")" -ne 145 ] ||
+   ! cmp -s "$d/traj_sel.csv" "$d/traj_cut.csv"; then
+    echo "FAIL: structure --output-dofs 2 --output-every 7: $(head -n 2 "$d/traj_sel.csv"), $(wc -l <"$d/traj_sel.csv") lines"; fails=$((fails + 1))
+fi
+x_of() { grep '^{' "$1" | sed -e 's/.*"x": \[\([^]]*\)\].*"peak_displacement": \[\([^]]*\)\].*/\1 \2/' -e 's/,//g'; }
+"$sim" structure $two --stiffness "$d/K3s.mtx" --rayleigh 0.4,0.0031 --output-dofs 2,1 >"$d/sel.json" 2>/dev/null
+total=$((total + 1))
+if ! grep -q '"output_dofs": \[2, 1\], "x": ' "$d/sel.json" ||
+   [ "$(x_of "$d/sel.json" | awk '{ print $2, $1, $4, $3 }')" != "$(x_of "$d/sym.json")" ]; then
+    echo "FAIL: structure --output-dofs 2,1: $(head -c 400 "$d/sel.json")"; fails=$((fails + 1))
+fi
+expect_usage_error "^fricreg-sim: --output-dofs: dof 3 is beyond the model's 2" structure $two --stiffness "$d/K3s.mtx" --output-dofs 1-3
+expect_usage_error "^fricreg-sim: --output-dofs: dof 2 is named twice" structure $two --stiffness "$d/K3s.mtx" --output-dofs 1-2,2
+expect_usage_error "^fricreg-sim: --output-dofs: range '2-1' runs backwards" structure $two --stiffness "$d/K3s.mtx" --output-dofs 2-1
+expect_usage_error "^fricreg-sim: --output-dofs: '1x' is not a dof" structure $two --stiffness "$d/K3s.mtx" --output-dofs 1x
+expect_usage_error "^fricreg-sim: --output-dofs: '' is not a dof" structure $two --stiffness "$d/K3s.mtx" --output-dofs 1,
+expect_usage_error "^fricreg-sim: --output-every: must be a whole number" structure $two --stiffness "$d/K3s.mtx" --output trajectory --output-every 0
+expect_usage_error "^fricreg-sim: --output-every: only --output trajectory" structure $two --stiffness "$d/K3s.mtx" --output-every 2
 
 # Bad files: one line naming the option, the file and the line or entry; exit 2, no stdout.
 ok="--stiffness $d/K3s.mtx --contacts $d/J3.mtx --mun $d/mun3.txt --integrator newmark --dt 0.01 --t-end 1"

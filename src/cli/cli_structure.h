@@ -11,9 +11,11 @@ enum scheme { SCHEME_NONE, SCHEME_NEWMARK, SCHEME_HHT, SCHEME_CENTRAL, SCHEME_GS
 
 struct structure_options {
     const char *mass, *stiffness, *damping, *contacts, *mun, *influence, *ground;
+    const char *load, *load_history; /* --load P.mtx and its time function g (NULL: g = 1) */
+    const char *output_dofs;         /* --output-dofs LIST as given (dof_list.h), or NULL */
     const char *checkpoint_in, *checkpoint_out; /* fricreg_structure_save's blob, or NULL */
     struct cli_element_files elements; /* --jenkins with its parameters (jenkins_input.h) */
-    int rayleigh_given, alpha_given, atol_given, law, integrator;
+    int rayleigh_given, alpha_given, atol_given, law_given, eps_given, law, integrator;
     enum scheme scheme;
     double a0, a1, eps, alpha, dt, t_end, rtol;
     double atol;        /* without --atol and with --rtol > 0: FRICREG_ATOL_FROM_EPS */
@@ -21,6 +23,8 @@ struct structure_options {
                     * not given, the library's bound on each sample's call) */
     int output;         /* enum cli_output, as an int: the option table writes ints */
     int error_estimate; /* --error-estimate on|off|one: enum fricreg_error_estimate (summary only) */
+    int output_every;   /* --output-every K: the trajectory's every K-th step (1: every step) */
+    int output_every_given;
 };
 
 /* Parses argv (after the subcommand) into o, the file options as pointers into argv; checks

@@ -11,6 +11,7 @@
 #include <time.h>
 
 #include "cli_structure.h"
+#include "dof_list.h"
 #include "input_line.h"
 #include "structure_model.h"
 
@@ -59,14 +60,34 @@ static int parse_integrator(const struct cli_option *row, const char *text)
     return 0;
 }
 
+/* --output-dofs LIST: its syntax now, its range once the model is read (dof_list.h). */
+static int parse_output_dofs(const struct cli_option *row, const char *text)
+{
+    struct structure_options *o = row->slot;
+    o->output_dofs = text;
+    return cli_check_dof_list(row->name, text);
+}
+
 /* Options that need others, or exclude them. */
 static int check_options(const struct structure_options *o)
 {
-    static const char *const required[] = {"--mass", "--stiffness", "--contacts", "--mun"};
-    const char *given[] = {o->mass, o->stiffness, o->contacts, o->mun};
-    for (size_t k = 0; k < 4; k++)
+    static const char *const required[] = {"--mass", "--stiffness"};
+    const char *given[] = {o->mass, o->stiffness};
+    for (size_t k = 0; k < 2; k++)
         if (given[k] == NULL)
             return cli_usage_error(required[k], "missing (a file is required)");
+    if ((o->contacts == NULL) != (o->mun == NULL))
+        return cli_usage_error(o->contacts == NULL ? "--contacts" : "--mun",
+                               "missing: --contacts and --mun come together (neither: no "
+                               "friction contacts)");
+    if (o->contacts == NULL && (o->eps_given || o->law_given))
+        return cli_usage_error(o->eps_given ? "--eps" : "--law",
+                               "the friction law of the contacts: without --contacts there is "
+                               "none");
+    if (o->load_history != NULL && o->load == NULL)
+        return cli_usage_error("--load-history", "the time function of --load P.mtx: give both");
+    if (o->output_every_given && o->output != CLI_TRAJECTORY)
+        return cli_usage_error("--output-every", "only --output trajectory writes rows");
     if (o->scheme == SCHEME_NONE)
         return cli_usage_error("--integrator", "missing (newmark, hht, central or a GSL stepper)");
     if (o->dt == 0.0)
@@ -120,7 +141,8 @@ static size_t structure_table(struct structure_options *o, struct cli_option tab
                                     .alpha = -0.05,
                                     .output = CLI_SUMMARY,
                                     .max_steps = -1,
-                                    .error_estimate = 1};
+                                    .error_estimate = 1,
+                                    .output_every = 1};
     cli_element_defaults(&o->elements);
     const struct cli_option opts[] = {
         {"--mass", CLI_FILE, .slot = &o->mass, .meta = "M.mtx",
@@ -130,9 +152,11 @@ static size_t structure_table(struct structure_options *o, struct cli_option tab
         {"--damping", CLI_FILE, .slot = &o->damping, .meta = "C.mtx",
          .help = "damping matrix C, n x n, symmetric (or --rayleigh; none: undamped)"},
         {"--contacts", CLI_FILE, .slot = &o->contacts, .meta = "J.mtx",
-         .help = "contact rows, m x n: contact i's velocity is (J u')_i (required)"},
+         .help = "contact rows, m x n: contact i's velocity is (J u')_i (with --mun)",
+         .dflt = "none: no friction contacts, plain linear dynamics (and the elements)"},
         {"--mun", CLI_FILE, .slot = &o->mun, .meta = "MUN.txt",
-         .help = "the m contacts' friction bounds mu N_i >= 0, N (required)"},
+         .help = "the m contacts' friction bounds mu N_i >= 0, N (with --contacts)",
+         .dflt = "none"},
         {"--influence", CLI_FILE, .slot = &o->influence, .meta = "R.mtx",
          .help = "the ground motion's influence vector r, n x 1",
          .dflt = "1: every dof moves with the ground"},
@@ -140,6 +164,13 @@ static size_t structure_table(struct structure_options *o, struct cli_option tab
          .help = "ground acceleration record: lines t a_g (s, m/s^2) on a uniform grid, linear "
                  "between samples",
          .dflt = "none"},
+        {"--load", CLI_FILE, .slot = &o->load, .meta = "P.mtx",
+         .help = "external load p(t) = P g(t): its pattern P, Matrix Market n x 1, N",
+         .dflt = "none"},
+        {"--load-history", CLI_FILE, .slot = &o->load_history, .meta = "FILE",
+         .help = "the load's time function g: lines t g (s, dimensionless) on a uniform grid, "
+                 "linear between samples, 0 outside, as --ground-accel",
+         .dflt = "g = 1 at all times: a constant load from t = 0"},
         CLI_ELEMENT_OPTIONS(&o->elements),
         {"--rayleigh", CLI_CUSTOM, .slot = o, .parse = parse_rayleigh, .given = &o->rayleigh_given,
          .meta = "A0,A1", .help = "Rayleigh damping C = A0 M + A1 K (A0 in 1/s, A1 in s, >= 0)"},
@@ -147,11 +178,19 @@ static size_t structure_table(struct structure_options *o, struct cli_option tab
          .meta = integrator_meta(),
          .help = "newmark (average acceleration), hht (HHT-alpha, --alpha), central (explicit "
                  "central difference), or a GSL stepper (required)"},
-        {"--law", CLI_NAME, .slot = &o->law, .names = &cli_law_names,
+        {"--law", CLI_NAME, .slot = &o->law, .names = &cli_law_names, .given = &o->law_given,
          .help = "the contacts' friction law"},
         {"--output", CLI_CHOICE, .slot = &o->output, .words = cli_output_words,
          .help = "a JSON summary, or a CSV row per step"},
-        {"--eps", CLI_POSITIVE, .slot = &o->eps, .meta = "EPS",
+        {"--output-dofs", CLI_CUSTOM, .slot = o, .parse = parse_output_dofs, .meta = "LIST",
+         .help = "the dofs the trajectory's columns and the summary's per-dof arrays show, "
+                 "numbered from 1, e.g. 1-10,57 (in the order given, each once)",
+         .dflt = "all"},
+        {"--output-every", CLI_WHOLE, .slot = &o->output_every, .lo = 1, .hi = 1e9,
+         .given = &o->output_every_given, .meta = "K",
+         .help = "trajectory only: a row every K-th step (step times k dt, k a multiple of K), "
+                 "and always the run's first and last"},
+        {"--eps", CLI_POSITIVE, .slot = &o->eps, .given = &o->eps_given, .meta = "EPS",
          .help = "the law's regularization, m/s",
          .dflt = "1 % of the ground's peak velocity; 1e-3 without a record"},
         {"--dt", CLI_POSITIVE, .slot = &o->dt, .meta = "STEP",
@@ -187,8 +226,11 @@ int cli_parse_structure(int argc, char **argv, struct structure_options *o)
     struct cli_option table[CLI_MAX_ROWS];
     size_t n = structure_table(o, table);
     int status = cli_parse_options(argc, argv, table, n, "structure");
-    if (!o->atol_given && o->rtol > 0.0) /* adaptive: the rule from eps, as the sim's runs */
-        o->atol = FRICREG_ATOL_FROM_EPS;
+    /* adaptive: the rule from eps, as the sim's runs; with no contact reading a dof the rule
+     * is atol = rtol (fricreg_structure_run_ode), which the one contact of bound 0 standing in
+     * for none (structure_model.h) would change */
+    if (!o->atol_given && o->rtol > 0.0)
+        o->atol = o->contacts != NULL ? FRICREG_ATOL_FROM_EPS : o->rtol;
     return status != 0 ? status : check_options(o);
 }
 
@@ -244,35 +286,61 @@ static int setup(const struct structure_options *o, const struct structure_input
 
 /* What a run collects beside the structure's own records. */
 struct structure_run {
-    double *u, *v, *f, *peak; /* [n], [n], [m], [n] */
+    double *u, *v, *f, *peak; /* [n], [n], [mlib], [n] */
     double *De; /* [2 me]: the elements' dissipation, the 2-D forces (NULL without elements) */
     FILE *rows; /* CSV rows, or NULL */
+    /* What the output shows: the dofs dof[ndof] (0-based; NULL: all n in order) and the m
+     * contacts of the files (0 without --contacts: not the one of bound 0 standing in). */
+    const size_t *dof;
+    size_t ndof, m;
+    /* --output-every K: a row at step times k dt with k a multiple of every, and at the run's
+     * first (rows = 0) and last (t = t_end) */
+    double dt, t_end;
+    int64_t every, rows_written;
 };
 
-static void csv_header(FILE *out, size_t n, size_t m)
+/* The k-th dof shown: the selection's, or k itself. */
+static size_t shown(const struct structure_run *run, size_t k)
 {
+    return run->dof != NULL ? run->dof[k] : k;
+}
+
+static void csv_header(const struct structure_run *run)
+{
+    FILE *out = run->rows;
     fputs("t", out);
-    for (size_t i = 0; i < n; i++)
-        fprintf(out, ",u%zu", i + 1);
-    for (size_t i = 0; i < n; i++)
-        fprintf(out, ",v%zu", i + 1);
-    for (size_t i = 0; i < m; i++)
+    for (size_t k = 0; k < run->ndof; k++)
+        fprintf(out, ",u%zu", shown(run, k) + 1);
+    for (size_t k = 0; k < run->ndof; k++)
+        fprintf(out, ",v%zu", shown(run, k) + 1);
+    for (size_t i = 0; i < run->m; i++)
         fprintf(out, ",f%zu", i + 1);
     fputc('\n', out);
 }
 
-/* A CSV row of the state (t, u[n], v[n], f[m]). */
-static void csv_row(FILE *out, double t, size_t n, const double u[], const double v[], size_t m,
+/* Whether the state at t gets a row: the first, the last, and every K-th step time k dt
+ * (k = t / dt rounded: a run's steps end on k dt, the last one on t_end; GSL's samples too). */
+static int row_due(const struct structure_run *run, double t)
+{
+    if (run->every <= 1 || run->rows_written == 0 || !(t < run->t_end))
+        return 1;
+    return (int64_t)floor(t / run->dt + 0.5) % run->every == 0;
+}
+
+/* A CSV row of the state (t, u and v at the dofs shown, f[m]). */
+static void csv_row(struct structure_run *run, double t, const double u[], const double v[],
                     const double f[])
 {
+    FILE *out = run->rows;
     fprintf(out, "%.17g", t);
-    for (size_t i = 0; i < n; i++)
-        fprintf(out, ",%.17g", u[i]);
-    for (size_t i = 0; i < n; i++)
-        fprintf(out, ",%.17g", v[i]);
-    for (size_t i = 0; i < m; i++)
+    for (size_t k = 0; k < run->ndof; k++)
+        fprintf(out, ",%.17g", u[shown(run, k)]);
+    for (size_t k = 0; k < run->ndof; k++)
+        fprintf(out, ",%.17g", v[shown(run, k)]);
+    for (size_t i = 0; i < run->m; i++)
         fprintf(out, ",%.17g", f[i]);
     fputc('\n', out);
+    run->rows_written++;
 }
 
 /* A row of the current state, after a call of GSL's steppers (and at the start). */
@@ -283,17 +351,22 @@ static void observe(const fricreg_structure *s, const struct structure_input *in
         return; /* the peaks are the library's (fricreg_structure_get_peak_displacement) */
     double t = 0.0;
     fricreg_structure_get_value(s, FRICREG_SVALUE_TIME, &t);
+    if (!row_due(run, t))
+        return;
     fricreg_structure_get_state(s, in->n, run->u, run->v, NULL);
-    fricreg_structure_get_forces(s, in->m, run->f);
-    csv_row(run->rows, t, in->n, run->u, run->v, in->m, run->f);
+    fricreg_structure_get_forces(s, in->mlib, run->f);
+    csv_row(run, t, run->u, run->v, run->f);
 }
 
-/* The observer of fricreg_structure_run: a row per step. */
+/* The observer of fricreg_structure_run: a row per step (every K-th). */
 static int observe_step(void *user, double t, size_t n, const double u[], const double v[],
                         size_t m, const double f[])
 {
+    (void)n;
+    (void)m;
     struct structure_run *run = user;
-    csv_row(run->rows, t, n, u, v, m, f);
+    if (row_due(run, t))
+        csv_row(run, t, u, v, f);
     return 0;
 }
 
@@ -389,6 +462,46 @@ struct structure_estimate {
     double *peak_err, *D_err, *De_err; /* [n], [m], [me]; +infinity where a companion failed */
 };
 
+/* "name": [a at the dofs shown], as cli_json_array. */
+static void json_shown(FILE *out, const char *name, const struct structure_run *run,
+                       const double a[])
+{
+    if (run->dof == NULL) {
+        cli_json_array(out, name, run->ndof, a);
+        return;
+    }
+    fprintf(out, ", \"%s\": [", name);
+    for (size_t k = 0; k < run->ndof; k++) {
+        fputs(k > 0 ? ", " : "", out);
+        cli_json_number(out, a[run->dof[k]]);
+    }
+    fputs("]", out);
+}
+
+/* run_ode's tolerances per component (u, v, W_in, E_visc, D_1 .. D_m), the dofs' entries
+ * those shown, the contacts' the files' (none of the one standing in for none). */
+static void json_atol(FILE *out, const struct structure_input *in, const fricreg_structure *s,
+                      const struct structure_run *run)
+{
+    size_t dim = 2 * in->n + 2 + in->mlib;
+    double *atol = malloc(dim * sizeof *atol);
+    if (atol == NULL || fricreg_structure_get_ode_abs_tolerances(s, dim, atol) != FRICREG_OK) {
+        free(atol);
+        return;
+    }
+    fputs(", \"atol_used\": [", out);
+    for (size_t k = 0; k < 2 * run->ndof; k++) {
+        fputs(k > 0 ? ", " : "", out);
+        cli_json_number(out, atol[shown(run, k % run->ndof) + (k < run->ndof ? 0 : in->n)]);
+    }
+    for (size_t k = 2 * in->n; k < 2 * in->n + 2 + in->m; k++) {
+        fputs(", ", out);
+        cli_json_number(out, atol[k]);
+    }
+    fputs("]", out);
+    free(atol);
+}
+
 static void write_summary(FILE *out, const struct structure_options *o,
                           const struct structure_input *in, const fricreg_structure *s,
                           const struct structure_run *run, double eps, double cpu_seconds,
@@ -396,7 +509,7 @@ static void write_summary(FILE *out, const struct structure_options *o,
 {
     int64_t steps = sstat(s, FRICREG_SSTAT_STEPS);
     double *D = run->f; /* the forces are not needed any more */
-    fricreg_structure_get_dissipation(s, in->m, D);
+    fricreg_structure_get_dissipation(s, in->mlib, D);
     fricreg_structure_get_state(s, in->n, run->u, run->v, NULL);
     fprintf(out, "{\"system\": \"structure\", \"law\": \"%s\", \"integrator\": \"%s\", ",
             fricreg_law_name(o->law), scheme_name(o));
@@ -413,16 +526,19 @@ static void write_summary(FILE *out, const struct structure_options *o,
             "\"eps\": %.17g, \"steps\": %lld, \"t\": %.17g, \"ndof\": %zu, "
             "\"ncontacts\": %zu",
             eps, (long long)steps, svalue(s, FRICREG_SVALUE_TIME), in->n, in->m);
-    cli_json_array(out, "x", in->n, run->u);
-    cli_json_array(out, "v", in->n, run->v);
-    size_t dim = 2 * in->n + 2 + in->m; /* run_ode's state (u, v, W_in, E_visc, D) */
-    double *atol = adaptive ? malloc(dim * sizeof *atol) : NULL;
-    if (atol != NULL && fricreg_structure_get_ode_abs_tolerances(s, dim, atol) == FRICREG_OK)
-        cli_json_array(out, "atol_used", dim, atol);
-    free(atol);
-    cli_json_array(out, "peak_displacement", in->n, run->peak);
+    if (run->dof != NULL) { /* --output-dofs: the dofs the per-dof arrays show, from 1 */
+        fputs(", \"output_dofs\": [", out);
+        for (size_t k = 0; k < run->ndof; k++)
+            fprintf(out, "%s%zu", k > 0 ? ", " : "", run->dof[k] + 1);
+        fputs("]", out);
+    }
+    json_shown(out, "x", run, run->u);
+    json_shown(out, "v", run, run->v);
+    if (adaptive)
+        json_atol(out, in, s, run);
+    json_shown(out, "peak_displacement", run, run->peak);
     if (est->peak_err != NULL)
-        cli_json_array(out, "peak_displacement_error_estimate", in->n, est->peak_err);
+        json_shown(out, "peak_displacement_error_estimate", run, est->peak_err);
     cli_json_array(out, "dissipation_per_contact", in->m, D);
     if (est->D_err != NULL)
         cli_json_array(out, "dissipation_per_contact_error_estimate", in->m, est->D_err);
@@ -481,13 +597,14 @@ static void read_estimate(const fricreg_structure *s, const struct structure_inp
                           struct structure_estimate *est)
 {
     size_t me = in->el.m;
-    double *buf = malloc((in->n + in->m + me + 1) * sizeof *buf);
+    double *buf = malloc((in->n + in->mlib + me + 1) * sizeof *buf);
     if (buf != NULL && fricreg_structure_get_peak_displacement_error(s, in->n, buf) == FRICREG_OK &&
-        fricreg_structure_get_dissipation_error(s, in->m, buf + in->n) == FRICREG_OK &&
-        fricreg_structure_get_jenkins_dissipation_error(s, me, buf + in->n + in->m) == FRICREG_OK) {
+        fricreg_structure_get_dissipation_error(s, in->mlib, buf + in->n) == FRICREG_OK &&
+        fricreg_structure_get_jenkins_dissipation_error(s, me, buf + in->n + in->mlib) ==
+            FRICREG_OK) {
         est->peak_err = buf;
         est->D_err = buf + in->n;
-        est->De_err = buf + in->n + in->m;
+        est->De_err = buf + in->n + in->mlib;
     } else {
         free(buf);
     }
@@ -588,22 +705,33 @@ static int checkpoint_out(fricreg_structure *s, const char *path)
 static int run_structure(fricreg_structure *s, const struct structure_options *o,
                          const struct structure_input *in, double eps, FILE *out)
 {
-    struct structure_run run = {0};
-    double *buf = calloc(3 * in->n + in->m + 2 * in->el.m, sizeof *buf);
-    if (buf == NULL)
+    struct structure_run run = {
+        .ndof = in->n, .m = in->m, .dt = o->dt, .t_end = o->t_end, .every = o->output_every};
+    size_t *dof = NULL;
+    if (o->output_dofs != NULL) {
+        int status = cli_expand_dof_list("--output-dofs", o->output_dofs, in->n, &run.ndof, &dof);
+        if (status != 0)
+            return status;
+        run.dof = dof;
+    }
+    double *buf = calloc(3 * in->n + in->mlib + 2 * in->el.m, sizeof *buf);
+    if (buf == NULL) {
+        free(dof);
         return cli_usage_error("structure", "out of memory");
+    }
     run.u = buf;
     run.v = buf + in->n;
     run.peak = buf + 2 * in->n;
     run.f = buf + 3 * in->n;
-    run.De = in->el.m > 0 ? buf + 3 * in->n + in->m : NULL;
+    run.De = in->el.m > 0 ? buf + 3 * in->n + in->mlib : NULL;
     if (o->output == CLI_TRAJECTORY) {
         if ((run.rows = tmpfile()) == NULL) {
             free(buf);
+            free(dof);
             fprintf(stderr, "fricreg-sim: cannot create a temporary file\n");
             return CLI_EXIT_RUN;
         }
-        csv_header(run.rows, in->n, in->m);
+        csv_header(&run);
     }
     clock_t start = clock();
     int status = advance(s, o, in, &run);
@@ -626,6 +754,7 @@ static int run_structure(fricreg_structure *s, const struct structure_options *o
     if (run.rows != NULL)
         fclose(run.rows);
     free(buf);
+    free(dof);
     return status;
 }
 
@@ -641,7 +770,7 @@ int cli_structure(int argc, char **argv, FILE *out)
         return status;
     }
     fricreg_structure *s = NULL;
-    if (fricreg_structure_create(in.n, in.m, &s) != FRICREG_OK) {
+    if (fricreg_structure_create(in.n, in.mlib, &s) != FRICREG_OK) {
         cli_free_model(&in);
         return cli_usage_error("structure", "cannot create the structure (out of memory)");
     }
@@ -667,15 +796,18 @@ static size_t structure_help_table(struct cli_option table[])
 
 const struct cli_command cli_structure_command = {
     "structure",
-    "--mass M.mtx --stiffness K.mtx [--damping C.mtx | --rayleigh A0,A1] --contacts J.mtx "
-    "--mun MUN.txt [--ground-accel FILE] [ELEMENTS] --integrator I --dt STEP --t-end T "
-    "[OPTION]...",
+    "--mass M.mtx --stiffness K.mtx [--damping C.mtx | --rayleigh A0,A1] [--contacts J.mtx "
+    "--mun MUN.txt] [--ground-accel FILE] [--load P.mtx [--load-history FILE]] [ELEMENTS] "
+    "--integrator I --dt STEP --t-end T [OPTION]...",
     "a structure from Matrix Market files: contacts, joint elements",
-    "A linear structure M u'' + C u' + K u = -M r a_g(t) + J^T f with friction contacts "
-    "(fricreg_structure.h), and optionally Jenkins, Iwan or lift-off elements (ELEMENTS: "
+    "A linear structure M u'' + C u' + K u = P g(t) - M r a_g(t) + J^T f with friction contacts "
+    "(fricreg_structure.h; none without --contacts: plain linear dynamics), an external load "
+    "P g(t) and a ground motion a_g(t), and optionally Jenkins, Iwan or lift-off elements "
+    "(ELEMENTS: "
     "--jenkins J.mtx with --jenkins-params, --iwan-params or --iwan-segalman, or --normal "
     "with --normal-params; --jenkins-2d J2.mtx with --jenkins-params, or with --normal and "
     "--normal-params for 3-D contact elements), run with Newmark, HHT-alpha, central differences "
     "or a GSL stepper; "
-    "a JSON summary with the energy balance, or a CSV row per step (docs/structural.md).",
+    "a JSON summary with the energy balance, or a CSV row per step (--output-dofs and "
+    "--output-every select the columns and the rows; docs/structural.md).",
     structure_help_table};

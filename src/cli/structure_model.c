@@ -28,19 +28,21 @@ void cli_free_model(struct structure_input *in)
     free(in->mun);
     free(in->r);
     free(in->ag);
+    free(in->p);
+    free(in->g);
     cli_free_elements(&in->el);
 }
 
-/* --influence: an n x 1 file as the vector r[n]. */
-static int read_influence(const char *path, size_t n, double **r)
+/* --influence or --load: an n x 1 file as the vector r[n]. */
+static int read_vector(const char *option, const char *path, size_t n, double **r)
 {
     struct cli_sparse R = {0};
-    int status = cli_read_mtx("--influence", path, n, 1, &R);
+    int status = cli_read_mtx(option, path, n, 1, &R);
     if (status != 0)
         return status;
     *r = calloc(n, sizeof **r);
     if (*r == NULL)
-        status = cli_usage_error("--influence", "out of memory");
+        status = cli_usage_error(option, "out of memory");
     for (int64_t p = 0; status == 0 && p < R.colptr[1]; p++)
         (*r)[R.rowind[p]] = R.values[p];
     cli_sparse_free(&R);
@@ -72,16 +74,22 @@ int cli_read_model(const struct structure_options *o, struct structure_input *in
         status = cli_read_mtx("--stiffness", o->stiffness, in->n, in->n, &in->K);
     if (status == 0 && o->damping != NULL)
         status = cli_read_mtx("--damping", o->damping, in->n, in->n, &in->C);
-    if (status == 0)
+    if (status == 0 && o->contacts != NULL)
         status = cli_read_mtx("--contacts", o->contacts, 0, in->n, &in->J);
     in->m = in->J.rows;
+    in->mlib = in->m > 0 ? in->m : 1;
     if (status == 0 && o->influence != NULL)
-        status = read_influence(o->influence, in->n, &in->r);
-    if (status == 0)
+        status = read_vector("--influence", o->influence, in->n, &in->r);
+    if (status == 0 && o->contacts != NULL)
         status = read_bounds(o->mun, o->contacts, in->m, &in->mun);
     if (status == 0 && o->ground != NULL)
         status = cli_read_record("--ground-accel", o->ground, &in->t0, &in->dt_rec, &in->nrec,
                                  &in->ag);
+    if (status == 0 && o->load != NULL)
+        status = read_vector("--load", o->load, in->n, &in->p);
+    if (status == 0 && o->load_history != NULL)
+        status = cli_read_record("--load-history", o->load_history, &in->load_t0, &in->load_dt,
+                                 &in->nload, &in->g);
     if (status == 0)
         status = cli_read_elements(&o->elements, in->n, &in->el);
     return status;
@@ -257,6 +265,19 @@ static int set_elements(fricreg_structure *s, const struct structure_input *in)
     return 0;
 }
 
+/* Without --contacts: the library's structure has at least one contact (fricreg_structure.h:
+ * "a structure without friction: one contact with mun = 0, whose force is exactly 0"), here
+ * on dof 1, J = e_1^T by one compressed row. */
+static int set_no_contacts(fricreg_structure *s, size_t n)
+{
+    const int64_t rowptr[] = {0, 1}, colind[] = {0};
+    const double one[] = {1.0}, zero[] = {0.0};
+    if (fricreg_structure_set_contacts_csr(s, 1, n, 0, rowptr, colind, one) != FRICREG_OK ||
+        fricreg_structure_set_bounds(s, 1, zero) != FRICREG_OK)
+        return cli_usage_error("structure", fricreg_structure_errmsg(s));
+    return 0;
+}
+
 int cli_set_model(const struct structure_options *o, const struct structure_input *in,
                   fricreg_structure *s)
 {
@@ -268,11 +289,13 @@ int cli_set_model(const struct structure_options *o, const struct structure_inpu
         status = set_square(s, &in->C, "--damping", o->damping, fricreg_structure_set_damping_csc);
     if (status == 0 && o->rayleigh_given && fricreg_structure_set_rayleigh(s, o->a0, o->a1) != 0)
         return cli_usage_error("--rayleigh", fricreg_structure_errmsg(s));
-    if (status == 0 && (status = check_contacts(o->contacts, &in->J)) == 0 &&
+    if (status == 0 && in->m == 0)
+        status = set_no_contacts(s, in->n);
+    if (status == 0 && in->m > 0 && (status = check_contacts(o->contacts, &in->J)) == 0 &&
         (status = fricreg_structure_set_contacts_csc(s, in->m, in->n, 0, in->J.colptr, in->J.rowind,
                                                      in->J.values)) != FRICREG_OK)
         status = model_error(s, status, "--contacts", o->contacts, NULL);
-    if (status == 0 && (status = check_bounds(o->mun, in->m, in->mun)) == 0 &&
+    if (status == 0 && in->m > 0 && (status = check_bounds(o->mun, in->m, in->mun)) == 0 &&
         (status = fricreg_structure_set_bounds(s, in->m, in->mun)) != FRICREG_OK)
         status = model_error(s, status, "--mun", o->mun, NULL);
     if (status == 0)
@@ -280,6 +303,11 @@ int cli_set_model(const struct structure_options *o, const struct structure_inpu
     if (status == 0 && in->ag != NULL &&
         fricreg_structure_set_ground_accel(s, in->t0, in->dt_rec, in->nrec, in->ag) != 0)
         status = model_error(s, FRICREG_EINVAL, "--ground-accel", o->ground, NULL);
+    if (status == 0 && in->p != NULL &&
+        (status = fricreg_structure_set_load(s, in->n, in->p, in->load_t0, in->load_dt, in->nload,
+                                             in->g)) != FRICREG_OK)
+        status = model_error(s, status, o->load_history != NULL ? "--load-history" : "--load",
+                             o->load_history != NULL ? o->load_history : o->load, NULL);
     if (status == 0 && in->el.m > 0)
         status = set_elements(s, in);
     return status;
