@@ -18,8 +18,8 @@
  * set changes from step to step; W_eff's values change every step on the large run (a
  * structure whose K_eff changes, the worst case for the kept factor) and are constant on the
  * small one (a linear structure at a fixed dt). Each context's guess is its previous forces.
- * A third context makes the same calls by fricreg_ctx_solve_step_csr ("sparse", its solver kept
- * too), W and W_eff given by their nonzeros, whole, in CSR: the caller's arrays, built outside
+ * A third context makes the same calls by fricreg_ctx_solve_step_matrix ("sparse", its solver
+ * kept too), W and W_eff given by their nonzeros, whole, in CSR: the caller's arrays, built outside
  * the timing (a code that assembles sparse matrices has them), its forces checked bit for bit
  * against the dense call's. The dense call reads 2 m^2 doubles a call, the sparse one
  * O(nnz). Prints the median per-call time of each and their ratios; with OUTDIR, writes
@@ -200,8 +200,9 @@ static int run_case(const struct size_case *sc, double *kept, double *built, dou
         int sb = fricreg_ctx_solve_step(b, m, z0, zp, ap, W, Weff, 0.005, 1e-10, 50, 0, f_built,
                                         info_b);
         double t3 = bench_cpu_seconds();
-        int sc_ = fricreg_ctx_solve_step_csr(c, m, z0, zp, ap, 0, csr.wp, csr.wi, csr.wv, csr.ep,
-                                             csr.ei, csr.ev, 0.005, 1e-10, 50, 0, f_sparse, info_c);
+        int sc_ = fricreg_ctx_solve_step_matrix(c, m, z0, zp, ap, FRICREG_MATRIX_CSR, csr.wp,
+                                                csr.wi, csr.wv, csr.ep, csr.ei, csr.ev, 0.005,
+                                                1e-10, 50, 0, f_sparse, info_c);
         double t4 = bench_cpu_seconds();
         if (sa != FRICREG_OK || sb != FRICREG_OK || sc_ != FRICREG_OK) {
             fprintf(stderr, "fricreg-bench-solve-step: step %d: %s\n", k,
@@ -245,7 +246,8 @@ int main(int argc, char **argv)
         fprintf(csv, "case,m,steps,kept_us,built_us,ratio,sparse_us,kept_over_sparse,"
                      "newton_iters,steps_differing\n");
     printf("fricreg_ctx_solve_step per call: the solver kept in the context against one built "
-           "per call, and fricreg_ctx_solve_step_csr (kept) on the same matrices (median CPU "
+           "per call, and fricreg_ctx_solve_step_matrix in CSR (kept) on the same matrices (median "
+           "CPU "
            "time)\n");
     printf("%-34s %6s %12s %12s %8s %12s %11s %8s %8s\n", "case", "steps", "kept (us)",
            "built (us)", "built/kept", "sparse (us)", "kept/sparse", "iters", "differ");

@@ -70,9 +70,11 @@ static int refused(const fricreg_hb *hb, const char *option, const char *path)
 }
 
 /* A matrix file's flags for the _csc setters: zero-based, whole or its lower triangle. */
-static int sparse_flags(const struct cli_sparse *A)
+/* M, K or C (which) by its columns, the lower triangle of symmetric storage as such: a status. */
+static int set_square(fricreg_hb *hb, int which, size_t n, const struct cli_sparse *A)
 {
-    return A->lower ? FRICREG_SPARSE_LOWER : 0;
+    int format = FRICREG_MATRIX_CSC | (A->lower ? FRICREG_SPARSE_LOWER : 0);
+    return fricreg_hb_set_matrix(hb, which, n, n, format, A->colptr, A->rowind, A->values);
 }
 
 /* The elements by their kind's setter: a status. */
@@ -97,14 +99,11 @@ int cli_hb_set_model(const struct cli_hb_model_options *o, const struct cli_hb_m
 {
     size_t n = md->n;
     const struct cli_sparse *M = &md->M, *K = &md->K, *C = &md->C;
-    if (fricreg_hb_set_mass_csc(hb, n, sparse_flags(M), M->colptr, M->rowind, M->values) !=
-        FRICREG_OK)
+    if (set_square(hb, FRICREG_MASS, n, M) != FRICREG_OK)
         return refused(hb, "--mass", o->mass);
-    if (fricreg_hb_set_stiffness_csc(hb, n, sparse_flags(K), K->colptr, K->rowind, K->values) !=
-        FRICREG_OK)
+    if (set_square(hb, FRICREG_STIFFNESS, n, K) != FRICREG_OK)
         return refused(hb, "--stiffness", o->stiffness);
-    if (C->colptr != NULL && fricreg_hb_set_damping_csc(hb, n, sparse_flags(C), C->colptr,
-                                                        C->rowind, C->values) != FRICREG_OK)
+    if (C->colptr != NULL && set_square(hb, FRICREG_DAMPING, n, C) != FRICREG_OK)
         return refused(hb, "--damping", o->damping);
     if (o->rayleigh_given && fricreg_hb_set_rayleigh(hb, o->a0, o->a1) != FRICREG_OK)
         return cli_usage_error("--rayleigh", fricreg_hb_errmsg(hb));

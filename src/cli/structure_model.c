@@ -218,14 +218,14 @@ static int check_bounds(const char *path, size_t m, const double mun[])
 
 /* ---- Setting ------------------------------------------------------------------------------ */
 
-/* M, K or C by its columns: the lower triangle of symmetric storage as such. */
+/* M, K or C (which) by its columns: the lower triangle of symmetric storage as such. */
 static int set_square(fricreg_structure *s, const struct cli_sparse *A, const char *option,
-                      const char *path,
-                      int (*set)(fricreg_structure *, size_t, int, const int64_t[], const int64_t[],
-                                 const double[]))
+                      const char *path, int which)
 {
     int flags = A->lower ? FRICREG_SPARSE_LOWER : FRICREG_SPARSE_ZERO_BASED;
-    int status = set(s, A->cols, flags, A->colptr, A->rowind, A->values);
+    int status = fricreg_structure_set_matrix(s, which, A->cols, A->cols,
+                                              FRICREG_MATRIX_CSC | flags, A->colptr, A->rowind,
+                                              A->values);
     return status == FRICREG_OK ? 0 : model_error(s, status, option, path, A);
 }
 
@@ -272,7 +272,8 @@ static int set_no_contacts(fricreg_structure *s, size_t n)
 {
     const int64_t rowptr[] = {0, 1}, colind[] = {0};
     const double one[] = {1.0}, zero[] = {0.0};
-    if (fricreg_structure_set_contacts_csr(s, 1, n, 0, rowptr, colind, one) != FRICREG_OK ||
+    if (fricreg_structure_set_matrix(s, FRICREG_CONTACTS, 1, n, FRICREG_MATRIX_CSR, rowptr, colind,
+                                     one) != FRICREG_OK ||
         fricreg_structure_set_bounds(s, 1, zero) != FRICREG_OK)
         return cli_usage_error("structure", fricreg_structure_errmsg(s));
     return 0;
@@ -281,19 +282,19 @@ static int set_no_contacts(fricreg_structure *s, size_t n)
 int cli_set_model(const struct structure_options *o, const struct structure_input *in,
                   fricreg_structure *s)
 {
-    int status = set_square(s, &in->M, "--mass", o->mass, fricreg_structure_set_mass_csc);
+    int status = set_square(s, &in->M, "--mass", o->mass, FRICREG_MASS);
     if (status == 0)
-        status = set_square(s, &in->K, "--stiffness", o->stiffness,
-                            fricreg_structure_set_stiffness_csc);
+        status = set_square(s, &in->K, "--stiffness", o->stiffness, FRICREG_STIFFNESS);
     if (status == 0 && o->damping != NULL)
-        status = set_square(s, &in->C, "--damping", o->damping, fricreg_structure_set_damping_csc);
+        status = set_square(s, &in->C, "--damping", o->damping, FRICREG_DAMPING);
     if (status == 0 && o->rayleigh_given && fricreg_structure_set_rayleigh(s, o->a0, o->a1) != 0)
         return cli_usage_error("--rayleigh", fricreg_structure_errmsg(s));
     if (status == 0 && in->m == 0)
         status = set_no_contacts(s, in->n);
     if (status == 0 && in->m > 0 && (status = check_contacts(o->contacts, &in->J)) == 0 &&
-        (status = fricreg_structure_set_contacts_csc(s, in->m, in->n, 0, in->J.colptr, in->J.rowind,
-                                                     in->J.values)) != FRICREG_OK)
+        (status = fricreg_structure_set_matrix(s, FRICREG_CONTACTS, in->m, in->n,
+                                               FRICREG_MATRIX_CSC, in->J.colptr, in->J.rowind,
+                                               in->J.values)) != FRICREG_OK)
         status = model_error(s, status, "--contacts", o->contacts, NULL);
     if (status == 0 && in->m > 0 && (status = check_bounds(o->mun, in->m, in->mun)) == 0 &&
         (status = fricreg_structure_set_bounds(s, in->m, in->mun)) != FRICREG_OK)
