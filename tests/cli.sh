@@ -564,6 +564,20 @@ expect_usage_error "^fricreg-sim: --output-dofs: dof 2 is named twice" structure
 expect_usage_error "^fricreg-sim: --output-dofs: range '2-1' runs backwards" structure $two --stiffness "$d/K3s.mtx" --output-dofs 2-1
 expect_usage_error "^fricreg-sim: --output-dofs: '1x' is not a dof" structure $two --stiffness "$d/K3s.mtx" --output-dofs 1x
 expect_usage_error "^fricreg-sim: --output-dofs: '' is not a dof" structure $two --stiffness "$d/K3s.mtx" --output-dofs 1,
+# --output-contacts LIST or none: the force columns of the contacts listed, in its order (the
+# full trajectory's), or none: 21 columns for 10 dofs, as on the big model of structural.md.
+"$sim" structure $two --stiffness "$d/K3s.mtx" --output trajectory --output-contacts 2 >"$d/traj_c2.csv" 2>&1
+"$sim" structure $two --stiffness "$d/K3s.mtx" --output trajectory --output-dofs 1 --output-contacts none >"$d/traj_c0.csv" 2>&1
+total=$((total + 1))
+awk -F, '{ print $1 "," $2 "," $3 "," $4 "," $5 "," $7 }' "$d/traj.csv" >"$d/traj_c2_cut.csv"
+awk -F, '{ print $1 "," $2 "," $4 }' "$d/traj.csv" >"$d/traj_c0_cut.csv"
+if [ "$(head -n 1 "$d/traj_c2.csv")" != "t,u1,u2,v1,v2,f2" ] || ! cmp -s "$d/traj_c2.csv" "$d/traj_c2_cut.csv" ||
+   [ "$(head -n 1 "$d/traj_c0.csv")" != "t,u1,v1" ] || ! cmp -s "$d/traj_c0.csv" "$d/traj_c0_cut.csv"; then
+    echo "FAIL: structure --output-contacts 2 / none: $(head -n 2 "$d/traj_c2.csv") / $(head -n 2 "$d/traj_c0.csv")"; fails=$((fails + 1))
+fi
+expect_usage_error "^fricreg-sim: --output-contacts: contact 3 is beyond the model's 2 (--contacts has 2 rows)" structure $two --stiffness "$d/K3s.mtx" --output trajectory --output-contacts 3
+expect_usage_error "^fricreg-sim: --output-contacts: 'nothing' is not a contact" structure $two --stiffness "$d/K3s.mtx" --output trajectory --output-contacts nothing
+expect_usage_error "^fricreg-sim: --output-contacts: only --output trajectory" structure $two --stiffness "$d/K3s.mtx" --output-contacts 1
 expect_usage_error "^fricreg-sim: --output-every: must be a whole number" structure $two --stiffness "$d/K3s.mtx" --output trajectory --output-every 0
 expect_usage_error "^fricreg-sim: --output-every: only --output trajectory" structure $two --stiffness "$d/K3s.mtx" --output-every 2
 

@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* dof_list.c — the list of --output-dofs (dof_list.h): "A" or "A-B" items between commas,
+/* dof_list.c — the lists of --output-dofs and --output-contacts (dof_list.h): "A" or "A-B"
+ * items between commas,
  * whole numbers from 1 written in decimal digits only (no sign, no blank), read by strtoull.
  * Checked twice: its syntax when the options are parsed, its range against the model once
  * the mass matrix has said how many dofs there are. */
@@ -11,6 +12,9 @@
 
 #include "cli.h"
 #include "dof_list.h"
+
+const struct cli_list_kind cli_dof_list = {"dof", "(--mass is %zu x %zu)"},
+                           cli_contact_list = {"contact", "(--contacts has %zu rows)"};
 
 /* One number at *text, digits only, >= 1; *text moved past it. 1 if read, else 0. */
 static int read_dof(const char **text, unsigned long long *value)
@@ -27,8 +31,8 @@ static int read_dof(const char **text, unsigned long long *value)
 
 /* The next item "A" or "A-B" at *text into [*lo, *hi]; *text moved to the comma after it or
  * the end. 0, or CLI_EXIT_USAGE with a message naming the item. */
-static int read_item(const char *option, const char **text, unsigned long long *lo,
-                     unsigned long long *hi)
+static int read_item(const char *option, const struct cli_list_kind *kind, const char **text,
+                     unsigned long long *lo, unsigned long long *hi)
 {
     const char *start = *text;
     int ok = read_dof(text, lo);
@@ -45,8 +49,8 @@ static int read_item(const char *option, const char **text, unsigned long long *
     char what[128];
     if (!ok) {
         snprintf(what, sizeof what,
-                 "'%.*s' is not a dof from 1 or a range A-B of them (LIST: e.g. 1-10,57)", len,
-                 start);
+                 "'%.*s' is not a %s from 1 or a range A-B of them (LIST: e.g. 1-10,57)", len,
+                 start, kind->noun);
         return cli_usage_error(option, what);
     }
     if (*lo > *hi) {
@@ -56,11 +60,11 @@ static int read_item(const char *option, const char **text, unsigned long long *
     return 0;
 }
 
-int cli_check_dof_list(const char *option, const char *text)
+int cli_check_dof_list(const char *option, const struct cli_list_kind *kind, const char *text)
 {
     unsigned long long lo, hi;
     for (const char *c = text;; c++) {
-        int status = read_item(option, &c, &lo, &hi);
+        int status = read_item(option, kind, &c, &lo, &hi);
         if (status != 0)
             return status;
         if (*c == '\0')
@@ -68,8 +72,8 @@ int cli_check_dof_list(const char *option, const char *text)
     }
 }
 
-int cli_expand_dof_list(const char *option, const char *text, size_t n, size_t *count,
-                        size_t **dofs)
+int cli_expand_dof_list(const char *option, const struct cli_list_kind *kind, const char *text,
+                        size_t n, size_t *count, size_t **items)
 {
     unsigned char *named = calloc(n, 1);
     size_t used = 0, cap = 16;
@@ -78,17 +82,19 @@ int cli_expand_dof_list(const char *option, const char *text, size_t n, size_t *
     char what[160];
     unsigned long long lo = 0, hi = 0;
     for (const char *c = text; status == 0; c++) {
-        if ((status = read_item(option, &c, &lo, &hi)) != 0)
+        if ((status = read_item(option, kind, &c, &lo, &hi)) != 0)
             break;
         if (hi > n) {
-            snprintf(what, sizeof what, "dof %llu is beyond the model's %zu (--mass is %zu x %zu)",
-                     hi, n, n, n);
+            char size[64];
+            snprintf(size, sizeof size, kind->size_says, n, n);
+            snprintf(what, sizeof what, "%s %llu is beyond the model's %zu %s", kind->noun, hi, n,
+                     size);
             status = cli_usage_error(option, what);
             break;
         }
         for (size_t k = (size_t)lo - 1; status == 0 && k < (size_t)hi; k++) {
             if (named[k]) {
-                snprintf(what, sizeof what, "dof %zu is named twice", k + 1);
+                snprintf(what, sizeof what, "%s %zu is named twice", kind->noun, k + 1);
                 status = cli_usage_error(option, what);
             } else if (used == cap) { /* at most n entries: each dof once */
                 size_t *more = realloc(list, 2 * cap * sizeof *list);
@@ -113,6 +119,6 @@ int cli_expand_dof_list(const char *option, const char *text, size_t n, size_t *
         return status;
     }
     *count = used;
-    *dofs = list;
+    *items = list;
     return 0;
 }

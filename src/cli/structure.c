@@ -65,7 +65,15 @@ static int parse_output_dofs(const struct cli_option *row, const char *text)
 {
     struct structure_options *o = row->slot;
     o->output_dofs = text;
-    return cli_check_dof_list(row->name, text);
+    return cli_check_dof_list(row->name, &cli_dof_list, text);
+}
+
+/* --output-contacts LIST or none: its syntax now, its range once J is read. */
+static int parse_output_contacts(const struct cli_option *row, const char *text)
+{
+    struct structure_options *o = row->slot;
+    o->output_contacts = text;
+    return strcmp(text, "none") == 0 ? 0 : cli_check_dof_list(row->name, &cli_contact_list, text);
 }
 
 /* Options that need others, or exclude them. */
@@ -88,6 +96,9 @@ static int check_options(const struct structure_options *o)
         return cli_usage_error("--load-history", "the time function of --load P.mtx: give both");
     if (o->output_every_given && o->output != CLI_TRAJECTORY)
         return cli_usage_error("--output-every", "only --output trajectory writes rows");
+    if (o->output_contacts != NULL && o->output != CLI_TRAJECTORY)
+        return cli_usage_error("--output-contacts",
+                               "only --output trajectory writes force columns");
     if (o->scheme == SCHEME_NONE)
         return cli_usage_error("--integrator", "missing (newmark, hht, central or a GSL stepper)");
     if (o->dt == 0.0)
@@ -185,6 +196,10 @@ static size_t structure_table(struct structure_options *o, struct cli_option tab
         {"--output-dofs", CLI_CUSTOM, .slot = o, .parse = parse_output_dofs, .meta = "LIST",
          .help = "the dofs the trajectory's columns and the summary's per-dof arrays show, "
                  "numbered from 1, e.g. 1-10,57 (in the order given, each once)",
+         .dflt = "all"},
+        {"--output-contacts", CLI_CUSTOM, .slot = o, .parse = parse_output_contacts, .meta = "LIST",
+         .help = "the contacts (rows of J) whose force columns the trajectory shows, numbered "
+                 "from 1 as --output-dofs's dofs, or none",
          .dflt = "all"},
         {"--output-every", CLI_WHOLE, .slot = &o->output_every, .lo = 1, .hi = 1e9,
          .given = &o->output_every_given, .meta = "K",
@@ -289,10 +304,11 @@ struct structure_run {
     double *u, *v, *f, *peak; /* [n], [n], [mlib], [n] */
     double *De; /* [2 me]: the elements' dissipation, the 2-D forces (NULL without elements) */
     FILE *rows; /* CSV rows, or NULL */
-    /* What the output shows: the dofs dof[ndof] (0-based; NULL: all n in order) and the m
-     * contacts of the files (0 without --contacts: not the one of bound 0 standing in). */
-    const size_t *dof;
-    size_t ndof, m;
+    /* What the output shows: the dofs dof[ndof] (0-based; NULL: all n in order), and in the
+     * trajectory the contacts contact[ncontact] (NULL: all m in order) of the m of the files
+     * (0 without --contacts: not the one of bound 0 standing in). */
+    const size_t *dof, *contact;
+    size_t ndof, ncontact, m;
     /* --output-every K: a row at step times k dt with k a multiple of every, and at the run's
      * first (rows = 0) and last (t = t_end) */
     double dt, t_end;
@@ -305,6 +321,12 @@ static size_t shown(const struct structure_run *run, size_t k)
     return run->dof != NULL ? run->dof[k] : k;
 }
 
+/* The k-th contact shown in the trajectory: the selection's, or k itself. */
+static size_t contact_shown(const struct structure_run *run, size_t k)
+{
+    return run->contact != NULL ? run->contact[k] : k;
+}
+
 static void csv_header(const struct structure_run *run)
 {
     FILE *out = run->rows;
@@ -313,8 +335,8 @@ static void csv_header(const struct structure_run *run)
         fprintf(out, ",u%zu", shown(run, k) + 1);
     for (size_t k = 0; k < run->ndof; k++)
         fprintf(out, ",v%zu", shown(run, k) + 1);
-    for (size_t i = 0; i < run->m; i++)
-        fprintf(out, ",f%zu", i + 1);
+    for (size_t k = 0; k < run->ncontact; k++)
+        fprintf(out, ",f%zu", contact_shown(run, k) + 1);
     fputc('\n', out);
 }
 
@@ -337,8 +359,8 @@ static void csv_row(struct structure_run *run, double t, const double u[], const
         fprintf(out, ",%.17g", u[shown(run, k)]);
     for (size_t k = 0; k < run->ndof; k++)
         fprintf(out, ",%.17g", v[shown(run, k)]);
-    for (size_t i = 0; i < run->m; i++)
-        fprintf(out, ",%.17g", f[i]);
+    for (size_t k = 0; k < run->ncontact; k++)
+        fprintf(out, ",%.17g", f[contact_shown(run, k)]);
     fputc('\n', out);
     run->rows_written++;
 }
@@ -700,23 +722,49 @@ static int checkpoint_out(fricreg_structure *s, const char *path)
     return ok ? 0 : cli_file_error("--checkpoint-out", path, 0, "cannot write: %s", strerror(err));
 }
 
+/* The dofs and contacts the output shows (--output-dofs, --output-contacts) into run, their
+ * lists into *dof and *contact (the caller frees them; NULL: all). 0 or a usage error. */
+static int select_output(const struct structure_options *o, const struct structure_input *in,
+                         struct structure_run *run, size_t **dof, size_t **contact)
+{
+    int status = 0;
+    if (o->output_dofs != NULL)
+        status = cli_expand_dof_list("--output-dofs", &cli_dof_list, o->output_dofs, in->n,
+                                     &run->ndof, dof);
+    if (status == 0 && o->output_contacts != NULL && strcmp(o->output_contacts, "none") == 0)
+        run->ncontact = 0;
+    else if (status == 0 && o->output_contacts != NULL)
+        status = cli_expand_dof_list("--output-contacts", &cli_contact_list, o->output_contacts,
+                                     in->m, &run->ncontact, contact);
+    if (status != 0) {
+        free(*dof);
+        *dof = NULL;
+        return status;
+    }
+    run->dof = *dof;
+    run->contact = *contact;
+    return 0;
+}
+
 /* Runs the set-up structure; the trajectory goes to a temporary file first, so that a failed
  * run writes nothing to out. */
 static int run_structure(fricreg_structure *s, const struct structure_options *o,
                          const struct structure_input *in, double eps, FILE *out)
 {
-    struct structure_run run = {
-        .ndof = in->n, .m = in->m, .dt = o->dt, .t_end = o->t_end, .every = o->output_every};
-    size_t *dof = NULL;
-    if (o->output_dofs != NULL) {
-        int status = cli_expand_dof_list("--output-dofs", o->output_dofs, in->n, &run.ndof, &dof);
-        if (status != 0)
-            return status;
-        run.dof = dof;
-    }
+    struct structure_run run = {.ndof = in->n,
+                                .ncontact = in->m,
+                                .m = in->m,
+                                .dt = o->dt,
+                                .t_end = o->t_end,
+                                .every = o->output_every};
+    size_t *dof = NULL, *contact = NULL;
+    int listed = select_output(o, in, &run, &dof, &contact);
+    if (listed != 0)
+        return listed;
     double *buf = calloc(3 * in->n + in->mlib + 2 * in->el.m, sizeof *buf);
     if (buf == NULL) {
         free(dof);
+        free(contact);
         return cli_usage_error("structure", "out of memory");
     }
     run.u = buf;
@@ -728,6 +776,7 @@ static int run_structure(fricreg_structure *s, const struct structure_options *o
         if ((run.rows = tmpfile()) == NULL) {
             free(buf);
             free(dof);
+            free(contact);
             fprintf(stderr, "fricreg-sim: cannot create a temporary file\n");
             return CLI_EXIT_RUN;
         }
@@ -755,6 +804,7 @@ static int run_structure(fricreg_structure *s, const struct structure_options *o
         fclose(run.rows);
     free(buf);
     free(dof);
+    free(contact);
     return status;
 }
 
@@ -808,6 +858,7 @@ const struct cli_command cli_structure_command = {
     "with --normal-params; --jenkins-2d J2.mtx with --jenkins-params, or with --normal and "
     "--normal-params for 3-D contact elements), run with Newmark, HHT-alpha, central differences "
     "or a GSL stepper; "
-    "a JSON summary with the energy balance, or a CSV row per step (--output-dofs and "
-    "--output-every select the columns and the rows; docs/structural.md).",
+    "a JSON summary with the energy balance, or a CSV row per step (--output-dofs, "
+    "--output-contacts and --output-every select the columns and the rows; "
+    "docs/structural.md).",
     structure_help_table};
