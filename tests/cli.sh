@@ -528,6 +528,12 @@ expect_usage_error "^fricreg-sim: --mass $d/singular.mtx: the mass matrix is sin
 expect_usage_error "^fricreg-sim: --stiffness $d/asym.mtx: not symmetric: entry (2, 1) = -186 but (1, 2) = -187$" structure --mass "$d/M3.mtx" --stiffness "$d/asym.mtx" --contacts $d/J3.mtx --mun $d/mun3.txt --integrator newmark --dt 0.01 --t-end 1
 expect_usage_error "^fricreg-sim: --stiffness $d/K33.mtx: the matrix is 3 x 3, expected 2 x 2$" structure --mass "$d/M3.mtx" --stiffness "$d/K33.mtx" --contacts $d/J3.mtx --mun $d/mun3.txt --integrator newmark --dt 0.01 --t-end 1
 expect_usage_error "^fricreg-sim: --contacts $d/J13.mtx: the matrix is 1 x 3, expected 1 x 2$" structure --mass "$d/M3.mtx" --stiffness "$d/K3s.mtx" --contacts $d/J13.mtx --mun $d/mun3.txt --integrator newmark --dt 0.01 --t-end 1
+# A mass matrix whose size line says 3 x 3 while its entries end at 2 x 2 is that file's fault,
+# not that of the 2 x 2 stiffness or 2-column contacts read against its n = 3: named there, at
+# its size line (line 3). A 3 x 3 stiffness against a 2 x 2 mass stays the stiffness's (above).
+mtx M3big.mtx symmetric "3 3 2" "1 1 1.7" "2 2 2.3"
+expect_usage_error "^fricreg-sim: --mass $d/M3big.mtx: line 3: the size line says 3 x 3, but no entry is beyond row and column 2, and --stiffness $d/K3s.mtx is 2 x 2$" structure --mass "$d/M3big.mtx" $ok
+expect_usage_error "^fricreg-sim: --mass $d/M3big.mtx: line 3: the size line says 3 x 3, but no entry is beyond row and column 2, and --contacts $d/J3.mtx is 2 x 2$" structure --mass "$d/M3big.mtx" --stiffness "$d/K33.mtx" --contacts $d/J3.mtx --mun $d/mun3.txt --integrator newmark --dt 0.01 --t-end 1
 expect_usage_error "^fricreg-sim: --contacts $d/Jzero.mtx: row 2 is zero" structure --mass "$d/M3.mtx" --stiffness "$d/K3s.mtx" --contacts $d/Jzero.mtx --mun $d/mun3.txt --integrator newmark --dt 0.01 --t-end 1
 expect_usage_error "^fricreg-sim: --mun $d/mun1.txt: 1 bounds, $d/J3.mtx has 2 contacts" structure --mass "$d/M3.mtx" --stiffness "$d/K3s.mtx" --contacts $d/J3.mtx --mun $d/mun1.txt --integrator newmark --dt 0.01 --t-end 1
 printf '0.93\n-0.41\n' >"$d/munneg.txt"
@@ -614,6 +620,10 @@ echo "0.5 0" >"$d/F.txt"
 echo "1.5 1e6" >"$d/P.txt"
 echo "1.5" >"$d/P1.txt"
 hb="hb --mass $d/M.mtx --stiffness $d/K.mtx --rayleigh 0,0.02 --excitation $d/F.txt --jenkins $d/J.mtx --jenkins-params $d/P.txt --harmonics 3 --omega-start 0.5 --omega-end 3"
+# hb reads its stiffness against the mass matrix's n as structure does: a mass file whose size
+# line says 2 x 2 over one entry is named at its size line (line 2), not the 1 x 1 stiffness.
+printf '%s\n' "%%MatrixMarket matrix coordinate real symmetric" "2 2 1" "1 1 2" >"$d/M2big.mtx"
+expect_usage_error "^fricreg-sim: --mass $d/M2big.mtx: line 2: the size line says 2 x 2, but no entry is beyond row and column 1, and --stiffness $d/K.mtx is 1 x 1$" hb --mass $d/M2big.mtx --stiffness $d/K.mtx --rayleigh 0,0.02 --excitation $d/F.txt --jenkins $d/J.mtx --jenkins-params $d/P.txt --omega-start 0.5 --omega-end 3
 total=$((total + 1))
 "$sim" $hb --output frf >"$d/frf.csv" 2>"$d/err"
 if [ "$(head -n 1 "$d/frf.csv")" != "omega,rms_1,stable,bifurcation" ] || ! awk -F, 'NR > 1 { w = $1; a = 4.5 - 2 * w * w; c = 0.06 * w
