@@ -53,10 +53,15 @@ if(FRICREG_PETSC_BUILT)
     target_link_options(fricreg_petsc PRIVATE
                         "LINKER:--version-script=${FRICREG_PETSC_VERSION_SCRIPT}")
   endif()
+  # Installed next to libfricreg (both in CMAKE_INSTALL_LIBDIR), it finds it by RUNPATH $ORIGIN:
+  # a consumer whose own RUNPATH names only the adapter's directory (a RUNPATH is not
+  # inherited by the libraries it loads) starts without LD_LIBRARY_PATH, in any prefix
+  # (tests/install_petsc.sh).
   set_target_properties(fricreg_petsc PROPERTIES
     VERSION ${PROJECT_VERSION}
     SOVERSION ${FRICREG_PETSC_SOVERSION}
     C_VISIBILITY_PRESET hidden
+    INSTALL_RPATH "$ORIGIN"
     LINK_DEPENDS ${FRICREG_PETSC_VERSION_SCRIPT})
   # Installed with its own export set: its link interface names PkgConfig::PETSC and
   # MPI::MPI_C, which only a consumer that asks for the component (find_package(fricreg

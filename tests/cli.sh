@@ -9,14 +9,16 @@ tmp=${TMPDIR:-/tmp}/fricreg-cli.$$
 mkdir -p "$tmp"
 trap 'rm -rf "$tmp"' EXIT
 
-# expect_usage_error OPTION-NAMED-IN-MESSAGE ARGS...
+# expect_usage_error OPTION-NAMED-IN-MESSAGE ARGS... (an option given twice is refused first:
+# the message must say so only where the pattern does, so that no case tests that by mistake)
 expect_usage_error() {
     total=$((total + 1))
     named=$1; shift
     "$sim" "$@" >"$tmp/out" 2>"$tmp/err"
     rc=$?
     if [ $rc -ne 2 ] || [ -s "$tmp/out" ] || [ "$(wc -l <"$tmp/err")" -ne 1 ] ||
-       ! grep -q -- "$named" "$tmp/err"; then
+       ! grep -q -- "$named" "$tmp/err" ||
+       { grep -q 'given twice' "$tmp/err" && ! expr "$named" : '.*given twice' >/dev/null; }; then
         echo "FAIL: fricreg-sim $* -> exit $rc, stdout $(wc -c <"$tmp/out") bytes, stderr: $(cat "$tmp/err")"
         fails=$((fails + 1))
     fi
@@ -119,7 +121,17 @@ expect_usage_error "--mun" oscillator --mun -1
 expect_usage_error "--cycles" twoblock --cycles 1.5
 expect_usage_error "--t-end" oscillator --t-end 5 --cycles 2
 expect_usage_error "--output" oscillator --output xml
-expect_usage_error "--a" oscillator --a
+expect_usage_error "^fricreg-sim: --a: missing value$" oscillator --a
+# An unknown option is unknown also as the last argument (it was a "missing value"), and one
+# given twice is refused by name, whichever value was meant, before any file is read.
+expect_usage_error "^fricreg-sim: --frobnicate: unknown option for oscillator" oscillator --frobnicate
+expect_usage_error "^fricreg-sim: --frobnicate: unknown option for oscillator" oscillator --dt 0.01 --frobnicate
+expect_usage_error "^fricreg-sim: --frobnicate: unknown option for structure" structure --mass none.mtx --frobnicate
+expect_usage_error "^fricreg-sim: --dt: given twice" oscillator --dt 0.01 --dt 0.02
+expect_usage_error "^fricreg-sim: --dt: given twice" oscillator --dt=0.01 --t-end 5 --dt=0.01
+expect_usage_error "^fricreg-sim: --cycles: given twice" exact --cycles 2 --cycles 3
+expect_usage_error "^fricreg-sim: --mass: given twice" structure --mass none.mtx --mass none2.mtx
+expect_usage_error "^fricreg-sim: --omega-start: given twice" hb --omega-start 1 --omega-start 2
 expect_usage_error "--rtol" oscillator --rtol -1e-6
 # strtod's underflow (ERANGE with a subnormal or zero) is the number written; its overflow
 # (ERANGE with HUGE_VAL) is refused. The stuck oscillator keeps a subnormal x0 as it is.
@@ -609,6 +621,12 @@ expect_usage_error "^fricreg-sim: --mass $d/singular.mtx: the mass matrix is sin
 expect_usage_error "^fricreg-sim: --stiffness $d/asym.mtx: not symmetric: entry (2, 1) = -186 but (1, 2) = -187$" structure --mass "$d/M3.mtx" --stiffness "$d/asym.mtx" --contacts $d/J3.mtx --mun $d/mun3.txt --integrator newmark --dt 0.01 --t-end 1
 expect_usage_error "^fricreg-sim: --stiffness $d/K33.mtx: the matrix is 3 x 3, expected 2 x 2$" structure --mass "$d/M3.mtx" --stiffness "$d/K33.mtx" --contacts $d/J3.mtx --mun $d/mun3.txt --integrator newmark --dt 0.01 --t-end 1
 expect_usage_error "^fricreg-sim: --contacts $d/J13.mtx: the matrix is 1 x 3, expected 1 x 2$" structure --mass "$d/M3.mtx" --stiffness "$d/K3s.mtx" --contacts $d/J13.mtx --mun $d/mun3.txt --integrator newmark --dt 0.01 --t-end 1
+# A mass matrix whose size line says 3 x 3 while its entries end at 2 x 2 is that file's fault,
+# not that of the 2 x 2 stiffness or 2-column contacts read against its n = 3: named there, at
+# its size line (line 3). A 3 x 3 stiffness against a 2 x 2 mass stays the stiffness's (above).
+mtx M3big.mtx symmetric "3 3 2" "1 1 1.7" "2 2 2.3"
+expect_usage_error "^fricreg-sim: --mass $d/M3big.mtx: line 3: the size line says 3 x 3, but no entry is beyond row and column 2, and --stiffness $d/K3s.mtx is 2 x 2$" structure --mass "$d/M3big.mtx" $ok
+expect_usage_error "^fricreg-sim: --mass $d/M3big.mtx: line 3: the size line says 3 x 3, but no entry is beyond row and column 2, and --contacts $d/J3.mtx is 2 x 2$" structure --mass "$d/M3big.mtx" --stiffness "$d/K33.mtx" --contacts $d/J3.mtx --mun $d/mun3.txt --integrator newmark --dt 0.01 --t-end 1
 expect_usage_error "^fricreg-sim: --contacts $d/Jzero.mtx: row 2 is zero" structure --mass "$d/M3.mtx" --stiffness "$d/K3s.mtx" --contacts $d/Jzero.mtx --mun $d/mun3.txt --integrator newmark --dt 0.01 --t-end 1
 expect_usage_error "^fricreg-sim: --mun $d/mun1.txt: 1 bounds, $d/J3.mtx has 2 contacts" structure --mass "$d/M3.mtx" --stiffness "$d/K3s.mtx" --contacts $d/J3.mtx --mun $d/mun1.txt --integrator newmark --dt 0.01 --t-end 1
 printf '0.93\n-0.41\n' >"$d/munneg.txt"
@@ -623,11 +641,12 @@ expect_usage_error "^fricreg-sim: --ground-accel $d/ag_one.txt: 1 samples" struc
 expect_usage_error "^fricreg-sim: --influence $d/R3.mtx: the matrix is 2 x 1, expected 1 x 1" structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --influence $d/R3.mtx --integrator newmark --dt 0.01 --t-end 1
 # Bad options.
 expect_usage_error "--mass" structure $ok
-expect_usage_error "--integrator" structure --mass $d/M3.mtx --stiffness $d/K3s.mtx --contacts $d/J3.mtx --mun $d/mun3.txt --dt 0.01 --t-end 1
-expect_usage_error "newmark, hht, central, rk2, rk4" structure $good --integrator verlet
+base="--mass $d/M3.mtx --stiffness $d/K3s.mtx --contacts $d/J3.mtx --mun $d/mun3.txt"
+expect_usage_error "--integrator" structure $base --dt 0.01 --t-end 1
+expect_usage_error "newmark, hht, central, rk2, rk4" structure $base --dt 0.01 --t-end 1 --integrator verlet
 # "central" is the structure's own central differences: listed once, not again as a stepper.
 total=$((total + 1))
-"$sim" structure $good --integrator verlet >/dev/null 2>"$tmp/err"
+"$sim" structure $base --dt 0.01 --t-end 1 --integrator verlet >/dev/null 2>"$tmp/err"
 if [ "$(grep -o 'central' "$tmp/err" | wc -l)" -ne 1 ] || ! grep -q 'msbdf, rk4-gsl)$' "$tmp/err"; then
     echo "FAIL: structure's integrators not each named once: $(cat "$tmp/err")"; fails=$((fails + 1))
 fi
@@ -635,11 +654,11 @@ expect_usage_error "--rayleigh" structure $good --damping "$d/C3.mtx" --rayleigh
 expect_usage_error "--rayleigh" structure $good --rayleigh 0.4
 expect_usage_error "--rayleigh" structure $good --rayleigh 0.4,-1
 expect_usage_error "--alpha" structure $good --alpha -0.1
-expect_usage_error "^fricreg-sim: --alpha: .*alpha = -0.5 must be in \[-1/3, 0\]" structure $good --integrator hht --alpha -0.5
+expect_usage_error "^fricreg-sim: --alpha: .*alpha = -0.5 must be in \[-1/3, 0\]" structure $base --dt 0.01 --t-end 1 --integrator hht --alpha -0.5
 expect_usage_error "--rtol" structure $good --rtol 1e-6
 expect_usage_error "--t-end" structure --mass $d/M3.mtx --stiffness $d/K3s.mtx --contacts $d/J3.mtx --mun $d/mun3.txt --integrator newmark --dt 0.01
 expect_usage_error "--eps" structure $good --eps 0
-expect_usage_error "^fricreg-sim: --dt: more than 2^31 steps" structure $good --dt 1e-12 --t-end 1
+expect_usage_error "^fricreg-sim: --dt: more than 2^31 steps" structure $base --integrator newmark --dt 1e-12 --t-end 1
 
 # The reader keeps files sparse (src/cli/matrix_market.c): symmetric storage goes to the
 # library as its lower triangle, a general file whole, and the two give the same run to the
@@ -695,6 +714,10 @@ echo "0.5 0" >"$d/F.txt"
 echo "1.5 1e6" >"$d/P.txt"
 echo "1.5" >"$d/P1.txt"
 hb="hb --mass $d/M.mtx --stiffness $d/K.mtx --rayleigh 0,0.02 --excitation $d/F.txt --jenkins $d/J.mtx --jenkins-params $d/P.txt --harmonics 3 --omega-start 0.5 --omega-end 3"
+# hb reads its stiffness against the mass matrix's n as structure does: a mass file whose size
+# line says 2 x 2 over one entry is named at its size line (line 2), not the 1 x 1 stiffness.
+printf '%s\n' "%%MatrixMarket matrix coordinate real symmetric" "2 2 1" "1 1 2" >"$d/M2big.mtx"
+expect_usage_error "^fricreg-sim: --mass $d/M2big.mtx: line 2: the size line says 2 x 2, but no entry is beyond row and column 1, and --stiffness $d/K.mtx is 1 x 1$" hb --mass $d/M2big.mtx --stiffness $d/K.mtx --rayleigh 0,0.02 --excitation $d/F.txt --jenkins $d/J.mtx --jenkins-params $d/P.txt --omega-start 0.5 --omega-end 3
 total=$((total + 1))
 "$sim" $hb --output frf >"$d/frf.csv" 2>"$d/err"
 if [ "$(head -n 1 "$d/frf.csv")" != "omega,rms_1,stable,bifurcation" ] || ! awk -F, 'NR > 1 { w = $1; a = 4.5 - 2 * w * w; c = 0.06 * w
@@ -724,9 +747,10 @@ if ! grep -q '"peak_rms_error_estimate": \[[0-9.e-]*\]' "$d/summary.json" ||
     echo "FAIL: hb summary's error estimate, stuck: $(cat "$d/summary.json" "$d/err")"; fails=$((fails + 1))
 fi
 total=$((total + 1))
-"$sim" $hb --jenkins-params "$d/Pslip.txt" >"$d/slip3.json" 2>"$d/err"
-"$sim" $hb --jenkins-params "$d/Pslip.txt" --harmonics 19 >"$d/slip19.json" 2>>"$d/err"
-"$sim" $hb --jenkins-params "$d/Pslip.txt" --harmonics 20 >"$d/slip20.json" 2>>"$d/err"
+slip="${hb%% --jenkins-params *} --jenkins-params $d/Pslip.txt --omega-start 0.5 --omega-end 3"
+"$sim" $slip --harmonics 3 >"$d/slip3.json" 2>"$d/err"
+"$sim" $slip --harmonics 19 >"$d/slip19.json" 2>>"$d/err"
+"$sim" $slip --harmonics 20 >"$d/slip20.json" 2>>"$d/err"
 if ! { sed 's/.*"peak_rms": \([^,]*\),.*"peak_rms_error_estimate": \[\([^]]*\)\].*/\1 \2/' "$d/slip3.json"
         sed 's/.*"peak_rms": \([^,]*\),.*/\1/' "$d/slip19.json"; } |
         awk 'NR == 1 { r = $1; e = $2 } NR == 2 { t = r - $1; if (t < 0) t = -t
@@ -821,7 +845,7 @@ expect_usage_error "^fricreg-sim: --omega-end: missing" hb --mass $d/M.mtx --sti
 expect_usage_error "^fricreg-sim: --jenkins-params: missing" hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --jenkins $d/J.mtx --omega-start 1 --omega-end 2
 expect_usage_error "^fricreg-sim: --jenkins-2d: harmonic balance has 2-D elements with a normal law only" hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --jenkins-2d $d/J.mtx --jenkins-params $d/P.txt --omega-start 1 --omega-end 2
 expect_usage_error "^fricreg-sim: --jenkins-params $d/P1.txt: line 1: " hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --jenkins $d/J.mtx --jenkins-params $d/P1.txt --omega-start 1 --omega-end 2
-expect_usage_error "^fricreg-sim: --harmonics: " $hb --harmonics 41
+expect_usage_error "^fricreg-sim: --harmonics: " ${hb%% --harmonics *} --omega-start 0.5 --omega-end 3 --harmonics 41
 expect_usage_error "^fricreg-sim: --newton-tol: .*tol" $hb --newton-tol 2
 expect_usage_error "^fricreg-sim: --newton-max: " $hb --newton-max 0
 # A looser Newton tolerance reaches the same peak: the rule is passed on (1e-6 of q's scale)
@@ -917,7 +941,7 @@ fi
 expect_output '^usage: fricreg-sim nma --mass M\.mtx --stiffness K\.mtx' nma --help
 expect_output '^  nma         ' --help
 expect_usage_error "^fricreg-sim: --amplitude-end: missing" nma --mass $d/M.mtx --stiffness $d/M.mtx --jenkins $d/J.mtx --jenkins-params $d/P.txt --amplitude-start 1
-expect_usage_error "^fricreg-sim: --amplitude-end: must be above" $nma --amplitude-end 0.5
+expect_usage_error "^fricreg-sim: --amplitude-end: must be above" ${nma% --amplitude-end 500} --amplitude-end 0.5
 expect_usage_error "^fricreg-sim: --mode: beyond" $nma --mode 2
 expect_usage_error "^fricreg-sim: --linear-damping: " $nma --linear-damping none
 

@@ -6,7 +6,8 @@
 # fricreg-fortran, fixed-form F77 with -fdefault-integer-8 through fricreg-fortran-ilp64, and
 # with the installed module sources. Runs the installed fricreg-sim (when the drivers were
 # built) from its prefix, and from the prefix moved elsewhere, with no LD_LIBRARY_PATH; checks
-# the documentation and fricreg-sim's man page are installed and man renders the page.
+# the documentation (with fortran/README.md and the example sources its links and paths name)
+# and fricreg-sim's man page are installed and man renders the page.
 # Usage: install.sh BUILD_DIR SOURCE_DIR C_COMPILER FORTRAN_COMPILER|-
 build=$1 src=$2 cc=$3 fc=$4
 work=$(mktemp -d "${TMPDIR:-/tmp}/fricreg-install.XXXXXX")
@@ -46,6 +47,31 @@ docs_installed() {
     done
 }
 check "README.md, CHANGELOG.md, LICENSE and docs/ are installed" docs_installed
+# 0c. The installed documents' references hold in the doc folder: fortran/README.md and the
+#     example sources (examples/, as the tree lays them out) are installed, every relative
+#     Markdown link of README.md, docs/*.md and fortran/README.md names a file there (but
+#     src/README.md, the source tree's module map, which is not installed without the
+#     sources), and every example file they name (examples/....c, .h, .f90, .f, .sh) is there.
+links_hold() {
+    bad=0
+    cmp -s "$src/fortran/README.md" "$docdir/fortran/README.md" || { echo "missing: fortran/README.md"; bad=1; }
+    for f in $(cd "$src" && find examples -name '*.c' -o -name '*.h' -o -name '*.f90' -o -name '*.f' -o -name '*.sh'); do
+        cmp -s "$src/$f" "$docdir/$f" || { echo "missing: $f"; bad=1; }
+    done
+    for md in "$docdir/README.md" "$docdir"/docs/*.md "$docdir/fortran/README.md"; do
+        [ -f "$md" ] || continue # reported above
+        dir=$(dirname "$md")
+        for link in $(grep -o '](\([^)#: ]*\)' "$md" | sed 's/^](//' | sort -u); do
+            case $link in "" | *src/README.md) continue ;; esac
+            [ -e "$dir/$link" ] || { echo "${md#"$docdir"/}: link $link dangles"; bad=1; }
+        done
+        for ex in $(grep -oE 'examples/[A-Za-z0-9_/.-]*\.(c|h|f90|f|sh)' "$md" | sort -u); do
+            [ -f "$docdir/$ex" ] || { echo "${md#"$docdir"/}: $ex is not installed"; bad=1; }
+        done
+    done
+    return $bad
+}
+check "the installed documents' links and example paths hold" links_hold
 if [ -x "$prefix/bin/fricreg-sim" ]; then
     page=$(find "$prefix" -path '*/man1/fricreg-sim.1' | head -n 1)
     check "the man page is installed in share/man/man1" test -f "$prefix/share/man/man1/fricreg-sim.1"

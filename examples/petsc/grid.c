@@ -13,7 +13,9 @@
  * A omega by default.
  *
  * Options: -nx, -ny nodes [64] (1000 x 1000: 10^6 dof), -cycles ground cycles [2],
- * -steps_per_cycle [50], -eps_ratio eps/(A omega) [1e-3], and every TS/SNES/KSP option.
+ * -steps_per_cycle [50], -eps_ratio eps/(A omega) [1e-3], the adapter's -fricreg_law,
+ * -fricreg_eps (eps itself, over -eps_ratio) and -fricreg_mun (fricreg_petsc_set_from_options,
+ * read after the settings above, so they override them), and every TS/SNES/KSP option.
  * Prints, on rank 0, the steps, the Newton iterations per step, the failed steps, the seconds
  * and the rank count. */
 #include <math.h>
@@ -154,10 +156,12 @@ static PetscErrorCode make_contacts(struct grid *g, double eps)
         status = fricreg_petsc_set_law(g->fp, FRICREG_LAW_QUINN, eps);
     if (status == FRICREG_OK)
         status = fricreg_petsc_set_bounds(g->fp, (size_t)m, mun);
+    if (status == FRICREG_OK) /* -fricreg_law, -fricreg_eps, -fricreg_mun override */
+        status = fricreg_petsc_set_from_options(g->fp, NULL, NULL);
     PetscCall(PetscFree2(node, mun));
     PetscCall(VecDestroy(&mass));
     PetscCheck(status == FRICREG_OK, PETSC_COMM_SELF, PETSC_ERR_LIB, "fricreg: %s",
-               fricreg_petsc_strerror(status));
+               g->fp != NULL ? fricreg_petsc_errmsg(g->fp) : fricreg_petsc_strerror(status));
     PetscFunctionReturn(0);
 }
 

@@ -132,9 +132,10 @@ void cli_print_man(FILE *out);
  * 0, or CLI_EXIT_USAGE after one line on stderr. */
 int cli_parse_rayleigh(const char *option, const char *text, double *a0, double *a1);
 
-/* Parses argv (after the subcommand) against table[n]: each option's value by its row, a
- * repeated option's last value kept. Returns 0, or CLI_EXIT_USAGE after one line on stderr
- * naming the option (for an unknown one, "unknown option for COMMAND"). */
+/* Parses argv (after the subcommand) against table[n] (n <= CLI_MAX_ROWS): each option's
+ * value by its row, each option at most once. Returns 0, or CLI_EXIT_USAGE after one line on
+ * stderr naming the option: "unknown option for COMMAND" (also as the last argument), "given
+ * twice", "missing value", or its value's fault. */
 int cli_parse_options(int argc, char **argv, const struct cli_option table[], size_t n,
                       const char *command);
 /* One value by its row's kind, as cli_parse_options does (for a custom parse to build on). */
@@ -145,8 +146,9 @@ int cli_parse_number(const char *option, const char *text, double *value);
 int cli_check_whole(const char *option, double value, double lo, double hi);
 /* Prints "fricreg-sim: OPTION: WHAT" on stderr and returns CLI_EXIT_USAGE. */
 int cli_usage_error(const char *option, const char *what);
-/* The option at argv[*k] and its value ("--name=value", or the next argument, advancing *k).
- * Returns 0, or CLI_EXIT_USAGE (message printed) for a non-option or a missing value. */
+/* The option at argv[*k] and its value ("--name=value", or the next argument, advancing *k;
+ * NULL when none follows, for the caller to report once it knows the option). Returns 0, or
+ * CLI_EXIT_USAGE (message printed) for a non-option. */
 int cli_next_option(int argc, char **argv, int *k, char **option, char **value);
 /* The library's names name_of(1), name_of(2), … up to the first NULL (fricreg_law_name,
  * fricreg_integrator_name), joined by sep into buf[len] (truncated to fit); returns buf. */

@@ -52,10 +52,11 @@ int cli_hb_read_model(const struct cli_hb_model_options *o, struct cli_hb_model 
     size_t n = md->M.rows;
     if (status == 0 && n != md->M.cols)
         status = cli_file_error("--mass", o->mass, 0, "%zu x %zu: not square", n, md->M.cols);
+    const struct cli_mtx_size mass = {"--mass", o->mass, &md->M}; /* n's file */
     if (status == 0)
-        status = cli_read_mtx("--stiffness", o->stiffness, n, n, &md->K);
+        status = cli_read_mtx_sized("--stiffness", o->stiffness, n, n, &mass, &md->K);
     if (status == 0 && o->damping != NULL)
-        status = cli_read_mtx("--damping", o->damping, n, n, &md->C);
+        status = cli_read_mtx_sized("--damping", o->damping, n, n, &mass, &md->C);
     if (status == 0)
         status = cli_read_elements(&o->elements, n, &md->el);
     md->n = n;

@@ -309,7 +309,7 @@ void cli_print_man(FILE *out)
           "regularized friction laws of libfricreg, and prints a JSON summary (one object) or\n"
           "CSV rows on standard output.\n"
           "Options are written \\fB\\-\\-name\\fR \\fIvalue\\fR or \\fB\\-\\-name=\\fR"
-          "\\fIvalue\\fR; a repeated option keeps its last value.\n"
+          "\\fIvalue\\fR, each at most once.\n"
           "Defaults are given in brackets.\n"
           ".PP\n"
           "Every bad option or value is one line on standard error naming the option, and\n"

@@ -39,9 +39,11 @@ struct column_entry {
 
 struct reading {
     const char *option, *path;
-    size_t want_rows, want_cols; /* 0: any */
+    size_t want_rows, want_cols;     /* 0: any */
+    const struct cli_mtx_size *from; /* where they came from; NULL: the caller */
     int symmetric;
     long rows, cols, declared; /* the size line; rows = 0 before it */
+    long size_line;
     struct entry *entries;
     size_t n, cap;
     long bad_line;  /* the first line at fault (0: none), stopping the pass */
@@ -80,9 +82,52 @@ static int read_banner(struct reading *r, const char *banner)
     return 0;
 }
 
+/* 1 + the largest row or column of a nonzero entry of A, 0 if it has none. */
+static size_t extent(const struct cli_sparse *A)
+{
+    size_t u = 0;
+    for (size_t j = 0; j < A->cols; j++)
+        for (int64_t p = A->colptr[j]; p < A->colptr[j + 1]; p++) {
+            size_t i = (size_t)A->rowind[p];
+            u = i + 1 > u ? i + 1 : u;
+            u = j + 1 > u ? j + 1 : u;
+        }
+    return u;
+}
+
+/* One size wanted against the size declared, the size wanted being n (the from file's) or not:
+ * 1 if they agree or the declared is the extent u < n of from's entries (from's size line at
+ * fault), 0 if it is not, -1 if the size wanted was not n. */
+static int from_extent(size_t want, long declared, size_t n, size_t u)
+{
+    if (want == 0 || (size_t)declared == want)
+        return 1; /* not differing: no verdict */
+    if (want != n)
+        return -1;
+    return (size_t)declared == u ? 1 : 0;
+}
+
+/* The size line's sizes differ from those wanted: whose fault it is, reported. */
+static int size_differs(const struct reading *r)
+{
+    if (r->from != NULL && r->from->A->rows == r->from->A->cols) {
+        size_t n = r->from->A->rows, u = extent(r->from->A);
+        if (u > 0 && u < n && from_extent(r->want_rows, r->rows, n, u) == 1 &&
+            from_extent(r->want_cols, r->cols, n, u) == 1)
+            return cli_file_error(r->from->option, r->from->path, r->from->A->size_line,
+                                  "the size line says %zu x %zu, but no entry is beyond row and "
+                                  "column %zu, and %s %s is %ld x %ld",
+                                  n, n, u, r->option, r->path, r->rows, r->cols);
+    }
+    return cli_file_error(r->option, r->path, 0, "the matrix is %ld x %ld, expected %zu x %zu",
+                          r->rows, r->cols, r->want_rows ? r->want_rows : (size_t)r->rows,
+                          r->want_cols ? r->want_cols : (size_t)r->cols);
+}
+
 /* The size line "rows columns entries", checked against the size wanted. */
 static int read_size(struct reading *r, char *text, long line)
 {
+    r->size_line = line;
     char *end;
     if (!cli_read_index(text, &end, CLI_MTX_MAX_DIM, &r->rows) ||
         !cli_read_index(end, &end, CLI_MTX_MAX_DIM, &r->cols) ||
@@ -96,9 +141,7 @@ static int read_size(struct reading *r, char *text, long line)
                               r->rows, r->cols);
     if ((r->want_rows && (size_t)r->rows != r->want_rows) ||
         (r->want_cols && (size_t)r->cols != r->want_cols))
-        return cli_file_error(r->option, r->path, 0, "the matrix is %ld x %ld, expected %zu x %zu",
-                              r->rows, r->cols, r->want_rows ? r->want_rows : (size_t)r->rows,
-                              r->want_cols ? r->want_cols : (size_t)r->cols);
+        return size_differs(r);
     return 0;
 }
 
@@ -243,7 +286,8 @@ static int compress(const struct reading *r, int64_t colptr[], const struct colu
         start = colptr[j + 1];
         colptr[j + 1] = q;
     }
-    *A = (struct cli_sparse){(size_t)r->rows, cols, r->symmetric, colptr, rowind, values};
+    *A = (struct cli_sparse){(size_t)r->rows, cols,   r->symmetric, colptr,
+                             rowind,          values, r->size_line};
     return 1;
 }
 
@@ -281,10 +325,17 @@ static int finish(struct reading *r, struct cli_sparse *A)
 int cli_read_mtx(const char *option, const char *path, size_t rows, size_t cols,
                  struct cli_sparse *A)
 {
+    return cli_read_mtx_sized(option, path, rows, cols, NULL, A);
+}
+
+int cli_read_mtx_sized(const char *option, const char *path, size_t rows, size_t cols,
+                       const struct cli_mtx_size *from, struct cli_sparse *A)
+{
     FILE *f = fopen(path, "r");
     if (f == NULL)
         return cli_file_error(option, path, 0, "cannot open: %s", strerror(errno));
-    struct reading r = {.option = option, .path = path, .want_rows = rows, .want_cols = cols};
+    struct reading r = {
+        .option = option, .path = path, .want_rows = rows, .want_cols = cols, .from = from};
     char buf[CLI_LINE_MAX];
     long line = 0;
     int too_long = 0, status;

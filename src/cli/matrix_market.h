@@ -22,6 +22,14 @@ struct cli_sparse {
     int64_t *colptr; /* [cols + 1] */
     int64_t *rowind; /* [colptr[cols]] */
     double *values;  /* [colptr[cols]] */
+    long size_line;  /* the file's line that gave rows and cols */
+};
+
+/* The file whose size line set the size a later file must have (the mass matrix, whose size
+ * line sets n): its option, path and matrix. */
+struct cli_mtx_size {
+    const char *option, *path;
+    const struct cli_sparse *A;
 };
 
 /* Reads "%%MatrixMarket matrix coordinate real|integer general|symmetric" from path into *A:
@@ -35,6 +43,15 @@ struct cli_sparse {
  * cli_sparse_free. */
 int cli_read_mtx(const char *option, const char *path, size_t rows, size_t cols,
                  struct cli_sparse *A);
+
+/* cli_read_mtx, with rows and cols (those of 0 excepted) taken from the n x n matrix of
+ * from->path (NULL: as cli_read_mtx). A size line that differs from n is that file's fault, as
+ * cli_read_mtx reports it, unless each differing size is the extent of from's entries (the
+ * largest row or column of a nonzero entry) and that extent is below n: then from's own size
+ * line declared more than its entries hold, and the line reported is that one, in from's
+ * file. */
+int cli_read_mtx_sized(const char *option, const char *path, size_t rows, size_t cols,
+                       const struct cli_mtx_size *from, struct cli_sparse *A);
 
 /* Frees A's arrays and zeroes it; a zeroed A is left as it is. */
 void cli_sparse_free(struct cli_sparse *A);

@@ -29,6 +29,7 @@ int cli_usage_error(const char *option, const char *what)
 int cli_next_option(int argc, char **argv, int *k, char **option, char **value)
 {
     *option = argv[*k];
+    *value = NULL; /* none follows: the caller says so once it knows the option */
     if (strncmp(*option, "--", 2) != 0)
         return cli_usage_error(*option, "unexpected argument");
     char *eq = strchr(*option, '=');
@@ -37,8 +38,6 @@ int cli_next_option(int argc, char **argv, int *k, char **option, char **value)
         *value = eq + 1;
     } else if (*k + 1 < argc) {
         *value = argv[++*k];
-    } else {
-        return cli_usage_error(*option, "missing value");
     }
     return 0;
 }
@@ -231,9 +230,12 @@ static const struct cli_option *find_row(const struct cli_option table[], size_t
     return NULL;
 }
 
+/* An option is looked up before its value is asked for, so that an unknown one is called
+ * unknown also as the last argument; one given twice is refused, whichever value was meant. */
 int cli_parse_options(int argc, char **argv, const struct cli_option table[], size_t n,
                       const char *command)
 {
+    unsigned char seen[CLI_MAX_ROWS] = {0};
     for (int k = 0; k < argc; k++) {
         char *option = NULL, *value = NULL;
         int status = cli_next_option(argc, argv, &k, &option, &value);
@@ -246,6 +248,13 @@ int cli_parse_options(int argc, char **argv, const struct cli_option table[], si
                      command, command);
             return cli_usage_error(option, what);
         }
+        size_t index = (size_t)(row - table);
+        if (index < CLI_MAX_ROWS && seen[index])
+            return cli_usage_error(option, "given twice (give each option once)");
+        if (index < CLI_MAX_ROWS)
+            seen[index] = 1;
+        if (value == NULL)
+            return cli_usage_error(option, "missing value");
         if ((status = cli_parse_value(row, value)) != 0)
             return status;
         if (row->given != NULL)

@@ -33,11 +33,12 @@ void cli_free_model(struct structure_input *in)
     cli_free_elements(&in->el);
 }
 
-/* --influence or --load: an n x 1 file as the vector r[n]. */
-static int read_vector(const char *option, const char *path, size_t n, double **r)
+/* --influence or --load: an n x 1 file as the vector r[n], n from the mass matrix's file. */
+static int read_vector(const char *option, const char *path, const struct cli_mtx_size *mass,
+                       size_t n, double **r)
 {
     struct cli_sparse R = {0};
-    int status = cli_read_mtx(option, path, n, 1, &R);
+    int status = cli_read_mtx_sized(option, path, n, 1, mass, &R);
     if (status != 0)
         return status;
     *r = calloc(n, sizeof **r);
@@ -70,23 +71,24 @@ int cli_read_model(const struct structure_options *o, struct structure_input *in
         status = CLI_EXIT_USAGE;
     }
     in->n = in->M.rows;
+    const struct cli_mtx_size mass = {"--mass", o->mass, &in->M}; /* n's file */
     if (status == 0)
-        status = cli_read_mtx("--stiffness", o->stiffness, in->n, in->n, &in->K);
+        status = cli_read_mtx_sized("--stiffness", o->stiffness, in->n, in->n, &mass, &in->K);
     if (status == 0 && o->damping != NULL)
-        status = cli_read_mtx("--damping", o->damping, in->n, in->n, &in->C);
+        status = cli_read_mtx_sized("--damping", o->damping, in->n, in->n, &mass, &in->C);
     if (status == 0 && o->contacts != NULL)
-        status = cli_read_mtx("--contacts", o->contacts, 0, in->n, &in->J);
+        status = cli_read_mtx_sized("--contacts", o->contacts, 0, in->n, &mass, &in->J);
     in->m = in->J.rows;
     in->mlib = in->m > 0 ? in->m : 1;
     if (status == 0 && o->influence != NULL)
-        status = read_vector("--influence", o->influence, in->n, &in->r);
+        status = read_vector("--influence", o->influence, &mass, in->n, &in->r);
     if (status == 0 && o->contacts != NULL)
         status = read_bounds(o->mun, o->contacts, in->m, &in->mun);
     if (status == 0 && o->ground != NULL)
         status = cli_read_record("--ground-accel", o->ground, &in->t0, &in->dt_rec, &in->nrec,
                                  &in->ag);
     if (status == 0 && o->load != NULL)
-        status = read_vector("--load", o->load, in->n, &in->p);
+        status = read_vector("--load", o->load, &mass, in->n, &in->p);
     if (status == 0 && o->load_history != NULL)
         status = cli_read_record("--load-history", o->load_history, &in->load_t0, &in->load_dt,
                                  &in->nload, &in->g);
