@@ -187,18 +187,6 @@ static inline size_t fr_hb_sliders(const fricreg_hb *hb, size_t e, const double 
     return hb->ns;
 }
 
-/* The doubles of sk: me elements of ns sliders, with a normal law (normal) room for one
- * slider's forces and Jacobian at nc coefficients, 2 nc + (2 nc)^2, when ns > 1. */
-size_t fr_hb_slider_doubles(size_t me, size_t ns, int normal, size_t nc);
-
-/* The samples of the 3-D contact element's AFT at H harmonics: 64 (2H + 1) rounded up to a
- * power of two, and half as many for the extrapolation (residual.c). */
-size_t fr_hb_contact_samples(int harmonics);
-
-/* hb->aft replaced by one with fr_hb_contact_samples(hb->H) samples, and aft_half, half
- * allocated, unless they are there. FRICREG_OK, or FRICREG_ENOMEM with hb unchanged. */
-int fr_hb_sampled_aft(fricreg_hb *hb);
-
 /* Factors D_h(omega) for h = 0..H and forms Y, G, ql (and dG, dql when deriv); keeps them
  * while omega stays. FRICREG_OK or FRICREG_ESINGULAR (message recorded, with fn). */
 int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv);
