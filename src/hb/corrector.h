@@ -10,6 +10,8 @@
 
 #include "hb_internal.h"
 
+/* A branch being followed: its parameter and scales, and the points the loop moves along it
+ * (views into the driver's yp and yo); the peak search sets only the scales. */
 struct fr_hb_branch {
     int level;       /* the parameter p is the excitation level λ at the fixed Ω omega, else Ω */
     double omega;    /* a level branch's Ω */
