@@ -4,7 +4,9 @@
 # object file may call, only its own module and the modules on lower floors. So no arrow runs
 # back up and every circle stays inside one folder; and inside a folder, no circle of calls
 # between its files either (a file calls only files that do not call it back, directly or
-# round about). Also: every folder of src/ is in the table, and ctx_internal.h is included
+# round about); and a folder that lists its files by floor (src/README.md's second table) lists
+# every .c of it, and its files include the headers of, and call, only its files on lower
+# floors. Also: every folder of src/ is in the table, and ctx_internal.h is included
 # only inside src/ctx/.
 # Includes are read from the sources; calls from the object files of a built tree (nm), when
 # BUILD_DIR is given. A fixed handful of processes (find, two nm, a few awk) however many
@@ -21,6 +23,12 @@ awk -F'|' '/^\| *[0-9]+ *\| *`[a-z_]+\/` *\|/ {
     floor = $2; gsub(/ /, "", floor); module = $3; gsub(/[ `\/]/, "", module); print module, floor }' \
     README.md >"$work/floors"
 [ -s "$work/floors" ] || { echo "FAIL: src/README.md has no module table"; exit 1; }
+# "module/file floor" per row of the files' table: | `hb/` | 3 | `newton` `corrector` |
+awk -F'|' '/^\| *`[a-z_]+\/` *\| *[0-9]+ *\|/ {
+    module = $2; gsub(/[ `]/, "", module); floor = $3; gsub(/ /, "", floor)
+    n = split($4, names, /[ `]+/)
+    for (i = 1; i <= n; i++) if (names[i] != "") print module names[i], floor }' \
+    README.md >"$work/inner"
 
 # The folders, every file (an include next to its file must exist; a bare one is owned by the
 # module of the header of that name, the first found), and the sources, sorted.
@@ -63,15 +71,24 @@ if [ -n "$build" ]; then
     fi
 fi
 
-awk -v nobjects="$nobjects" -v build="$build" '
+awk -v nobjects="$nobjects" -v build="$build" -v inner="$work/inner" '
 function fail(what) { print "FAIL: " what; fails++ }
 function floor_of(m) { return (m in floor) ? floor[m] : "" }
+function stem(path) { sub(/\.[ch]$/, "", path); return path }
+BEGIN { # the files by floor inside a module: "hb/newton" -> 3; listed[module] once it lists any
+    while ((getline line < inner) > 0) {
+        split(line, w, " "); infloor[w[1]] = w[2]; m = w[1]; sub(/\/.*/, "", m); listed[m] = 1 }
+    close(inner)
+}
 FILENAME == ARGV[1] { if (!($1 in floor)) floor[$1] = $2; next }
 FILENAME == ARGV[2] { if (floor_of($0) == "") fail("src/" $0 "/ is not in src/README.md'\''s module table"); next }
 FILENAME == ARGV[3] {
     exists[$0] = 1
     if ($0 ~ /\.h$/) { base = $0; sub(/.*\//, "", base); m = $0; sub(/\/.*/, "", m)
                        if (!(base in owner)) owner[base] = m }
+    m = $0; sub(/\/.*/, "", m)
+    if ($0 ~ /\.c$/ && (m in listed) && !(stem($0) in infloor))
+        fail("src/" $0 " is not in src/README.md" "\047" "s table of " m "/" "\047" "s files")
     next
 }
 FILENAME == ARGV[4] { # includes of internal headers
@@ -85,13 +102,28 @@ FILENAME == ARGV[4] { # includes of internal headers
         else if (inc in owner) used = owner[inc]
         else continue
         checked++
-        if (used == module) continue
+        if (used == module) {
+            own = stem(file); hdr = (dir == "" ? "" : dir "/") stem(inc)
+            if ((own in infloor) && (hdr in infloor) && hdr != own && infloor[hdr] + 0 >= infloor[own] + 0)
+                fail("src/" file " (" module "/ floor " infloor[own] ") includes " inc " of " hdr " (floor " infloor[hdr] ")")
+            continue
+        }
         mf = floor_of(module); uf = floor_of(used)
         if (uf == "" || (mf != "" && uf + 0 >= mf + 0))
             fail("src/" file " (floor " mf ") includes " inc " of " used "/ (floor " (uf == "" ? "?" : uf) ")")
         if (inc ~ /ctx_internal\.h$/) fail("src/" file " includes " inc " outside src/ctx/")
     }
     close(file)
+    next
+}
+FILENAME == ARGV[6] { # calls between the files of one folder: "file.c file.c"
+    caller = stem($1); callee = stem($2); m = caller; sub(/\/.*/, "", m)
+    if ((caller in infloor) && (callee in infloor) && !(($1 " " $2) in seen)) {
+        seen[$1 " " $2] = 1
+        checked++
+        if (infloor[callee] + 0 >= infloor[caller] + 0)
+            fail("src/" $1 " (" m "/ floor " infloor[caller] ") calls src/" $2 " (floor " infloor[callee] ")")
+    }
     next
 }
 { # calls: "file module owner symbol"
@@ -104,7 +136,7 @@ END {
     if (nobjects == 0) fail("no object files of the library under " build "/CMakeFiles")
     printf "%d passed, %d failed\n", checked - fails, fails
     exit fails > 0
-}' "$work/floors" "$work/dirs" "$work/files" "$work/sources" "$work/calls" || status=1
+}' "$work/floors" "$work/dirs" "$work/files" "$work/sources" "$work/calls" "$work/edges" || status=1
 
 # Circles of calls between the files of one folder: the files left once every file that calls
 # no file still left, or that no file still left calls, is taken away, round after round, are

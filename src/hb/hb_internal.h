@@ -2,7 +2,7 @@
 /* hb_internal.h — the harmonic-balance driver's layout (fricreg_hb.h) and the kernels its files
  * share: dynamic.c factors the dynamic stiffnesses and condenses them on the elements
  * (G_h = J D_h^-1 J^T), residual.c evaluates (R), its Jacobian and its Ω derivative, newton.c
- * solves at one Ω, continuation.c follows a branch, recover.c gives the displacements. Complex
+ * solves at one Ω, arclength.c follows a branch, recover.c gives the displacements. Complex
  * numbers are stored as (re, im) pairs of doubles. Included only inside src/hb/. */
 #ifndef FRICREG_HB_INTERNAL_H
 #define FRICREG_HB_INTERNAL_H
@@ -104,7 +104,7 @@ struct fricreg_hb {
     klu_l_symbolic *symbolic; /* klu_l_analyze's, NULL: none yet */
     struct fr_hb_lu *lu;      /* [H + 1]: each harmonic's factor (sparse.c) */
 
-    /* Newton (residual.c, newton.c, continuation.c) */
+    /* Newton (residual.c, newton.c, corrector.c, arclength.c) */
     double *fq;     /* [nq] element force coefficients at the last evaluation */
     double *jq;     /* [me (rpe nc)²] their Jacobians, one block per element */
     double *R;      /* [nq + 1] residual (continuation: the arclength equation last) */
@@ -186,18 +186,6 @@ static inline size_t fr_hb_sliders(const fricreg_hb *hb, size_t e, const double 
     *phi = hb->sk + (hb->me + e) * hb->ns;
     return hb->ns;
 }
-
-/* The doubles of sk: me elements of ns sliders, with a normal law (normal) room for one
- * slider's forces and Jacobian at nc coefficients, 2 nc + (2 nc)^2, when ns > 1. */
-size_t fr_hb_slider_doubles(size_t me, size_t ns, int normal, size_t nc);
-
-/* The samples of the 3-D contact element's AFT at H harmonics: 64 (2H + 1) rounded up to a
- * power of two, and half as many for the extrapolation (residual.c). */
-size_t fr_hb_contact_samples(int harmonics);
-
-/* hb->aft replaced by one with fr_hb_contact_samples(hb->H) samples, and aft_half, half
- * allocated, unless they are there. FRICREG_OK, or FRICREG_ENOMEM with hb unchanged. */
-int fr_hb_sampled_aft(fricreg_hb *hb);
 
 /* Factors D_h(omega) for h = 0..H and forms Y, G, ql (and dG, dql when deriv); keeps them
  * while omega stays. FRICREG_OK or FRICREG_ESINGULAR (message recorded, with fn). */
@@ -318,12 +306,6 @@ int fr_hb_check_start(fricreg_hb *hb, const char *fn, double omega, size_t nq, c
  * the solution in qw (R, fq, jq at it), with keep its stability computed (when on) and kept as
  * the driver's last solution (at the level in force). */
 int fr_hb_solve_at(fricreg_hb *hb, const char *fn, double omega, const double *q0, int keep);
-
-/* The start without a guess of fricreg_hb_solve and fricreg_hb_continue (continuation.c): the
- * level start; should it fail, the plain guesses at omega; then the branch in Ω from a nearby
- * frequency where those converge. The solution kept as fr_hb_solve_at's; on failure the plain
- * guesses' error. */
-int fr_hb_default_start(fricreg_hb *hb, const char *fn, double omega);
 
 /* The starting guess into qw: every element stuck (stuck) or slipping freely (F = 0). */
 int fr_hb_guess(fricreg_hb *hb, const char *fn, int stuck);

@@ -1,11 +1,12 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* solve.c — fricreg_hb_solve: one periodic solution at a fixed Omega, Newton (newton.c) from
- * the caller's guess, or without one continuation.c's default start (the branch in the
+ * the caller's guess, or without one start.c's default start (the branch in the
  * excitation level from the linear regime, the plain guesses, the branch in Omega from a
  * nearby frequency). Above both. */
 #include <string.h>
 
 #include "hb_internal.h"
+#include "start.h"
 
 int fricreg_hb_solve(fricreg_hb *hb, double omega, size_t nq, const double q0[], double q[])
 {

@@ -1,0 +1,160 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* corrector.c — the corrector of the pseudo-arclength continuation (H. B. Keller, "Numerical
+ * solution of bifurcation and nonlinear eigenvalue problems", 1977; Krack & Gross 2019, Ch. 5)
+ * on the scaled unknowns y = (q/qs, p/ws): the bordered system [R_q R_p; d^T], its tangent t
+ * from [R_q R_p; d^T] t = [0; 1], and Newton's method on (R) bordered by a hyperplane, with a
+ * line search. One file for it because three jobs solve on it: the continuation loop
+ * (arclength.c), the bifurcations' bisection (bifurcations.c) and the peak search (peak.c). */
+#include <math.h>
+#include <string.h>
+
+#include "base/line_search.h"
+#include "corrector.h"
+
+/* The sign of the determinant of the LU factor in A (order ld, pivots piv2). */
+double fr_hb_det_sign(const fricreg_hb *hb, size_t ld)
+{
+    double sign = 1.0;
+    for (size_t k = 0; k < ld; k++)
+        sign *= (hb->A[k * ld + k] < 0.0 ? -1.0 : 1.0) * (hb->piv2[k] != k ? -1.0 : 1.0);
+    return sign;
+}
+
+/* Residual (scaled) at y into R[nq + 1] (the arclength equation last, when yp is given) and
+ * the bordered matrix into A: [R_q, R_p ws/qs; row^T], p = Ω (R_Ω from the factors'
+ * derivatives) or λ (R_λ = −ql: the load enters (R) linearly). qt holds the unscaled q, and
+ * a level branch's λ is the level in force. */
+int fr_hb_bordered(fricreg_hb *hb, const char *fn, const struct fr_hb_branch *b, const double *y,
+                   const double *row)
+{
+    size_t nq = hb->nq, ld = nq + 1;
+    double omega = fr_hb_branch_omega(b, y[nq] * b->ws);
+    if (!(omega > 0.0))
+        return fr_fail(hb, FRICREG_EINVAL, "%s: the branch reached Omega = %g <= 0", fn, omega);
+    if (b->level)
+        hb->level = y[nq] * b->ws;
+    int status = fr_hb_factor(hb, fn, omega, !b->level);
+    for (size_t j = 0; j < nq; j++)
+        hb->qt[j] = y[j] * b->qs;
+    if (status == FRICREG_OK)
+        status = fr_hb_residual(hb, fn, hb->qt, hb->R, 1);
+    if (status != FRICREG_OK)
+        return status;
+    if (b->level)
+        fr_hb_dlevel(hb, hb->rw);
+    else
+        fr_hb_domega(hb, hb->rw);
+    fr_hb_matrix(hb, hb->jq, hb->A, ld);
+    for (size_t j = 0; j < nq; j++) {
+        hb->R[j] /= b->qs;
+        hb->A[j * ld + nq] = hb->rw[j] * b->ws / b->qs;
+    }
+    memcpy(hb->A + nq * ld, row, ld * sizeof(double));
+    return FRICREG_OK;
+}
+
+/* The unit tangent into t from the bordered matrix in A (its last row the border d, not yet
+ * factored): [R_q R_Ω; d^T] t = [0; 1], so d^T t > 0 orients it along d. */
+int fr_hb_tangent(fricreg_hb *hb, const char *fn, double *t)
+{
+    size_t ld = hb->nq + 1;
+    memset(t, 0, ld * sizeof(double));
+    t[ld - 1] = 1.0;
+    int status = fr_hb_lu_solve(hb, fn, ld, t, t);
+    if (status != FRICREG_OK)
+        return status;
+    double s = sqrt(fr_hb_dot(t, t, ld));
+    for (size_t j = 0; j < ld; j++)
+        t[j] /= s;
+    return FRICREG_OK;
+}
+
+/* The corrector's iterate qw evaluated: R (the border's equation g last) and the bordered
+ * matrix (bordered), the largest |R_j| r against its bound, |R| in norm; converged when both
+ * equations are within their tolerances. */
+struct corrector_iterate {
+    fricreg_hb *hb;
+    const char *fn;
+    const struct fr_hb_branch *b;
+    const double *anchor, *border, *base; /* base: the iterate the direction dy starts from */
+    const struct fr_line_search *ls;
+    double g, r, bound, norm, prev; /* prev: |R| at base */
+    int converged;
+};
+
+static int corrector_evaluate(struct corrector_iterate *c)
+{
+    fricreg_hb *hb = c->hb;
+    size_t nq = hb->nq, ld = nq + 1;
+    int status = fr_hb_bordered(hb, c->fn, c->b, hb->qw, c->border);
+    if (status != FRICREG_OK)
+        return status;
+    c->g = 0.0;
+    c->r = 0.0;
+    for (size_t j = 0; j < ld; j++)
+        c->g += c->border[j] * (hb->qw[j] - c->anchor[j]);
+    hb->R[nq] = c->g;
+    for (size_t j = 0; j < nq; j++)
+        c->r = fmax(c->r, fabs(hb->R[j]));
+    c->bound = hb->tol * fr_hb_scale(hb, hb->qt) / c->b->qs;
+    c->norm = sqrt(fr_hb_dot(hb->R, hb->R, ld));
+    c->converged = c->r <= c->bound && fabs(c->g) <= hb->tol;
+    return FRICREG_OK;
+}
+
+/* A trial base + lambda dy, evaluated into qw; accepted when converged or by Armijo on |R|. */
+static int corrector_trial(void *user, double lambda, int *accept)
+{
+    struct corrector_iterate *c = user;
+    fricreg_hb *hb = c->hb;
+    for (size_t j = 0; j < hb->nq + 1; j++)
+        hb->qw[j] = c->base[j] + lambda * hb->dy[j];
+    int status = corrector_evaluate(c);
+    *accept = status == FRICREG_OK &&
+              (c->converged || fr_armijo_decrease(c->ls, c->prev, c->norm, lambda));
+    return status;
+}
+
+/* Newton's method on (R) bordered by border^T (y − anchor) = 0 from start into qw, with the
+ * backtracking line search on |R| (Armijo's condition, FR_HB_HALVINGS halvings, as newton.c;
+ * past them the shortest trial: the iteration bound ends it): at a kink of the branch, where
+ * the stick/slip or contact pattern changes, the plain iteration may cycle. *its the
+ * iterations, b->delta and b->kappa the first step's length and the second's ratio to it. On
+ * success A holds the bordered matrix at qw, unfactored (fr_hb_tangent). */
+int fr_hb_corrector(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, const double *start,
+                    const double *anchor, const double *border, int *its)
+{
+    size_t ld = hb->nq + 1;
+    struct fr_line_search ls = {FR_ARMIJO, FR_HB_HALVINGS, NULL};
+    struct corrector_iterate c = {hb, fn, b, anchor, border, hb->yl, &ls, 0, 0, 0, 0, 0, 0};
+    memcpy(hb->qw, start, ld * sizeof(double));
+    b->delta = b->kappa = 0.0;
+    int status = corrector_evaluate(&c);
+    for (int it = 0;; it++) {
+        if (status != FRICREG_OK)
+            return status;
+        if (it >= 1 && c.converged) {
+            *its = it;
+            return FRICREG_OK;
+        }
+        status = fr_hb_tick(hb, fn, fr_hb_parameter(hb), fmax(c.r / c.bound, fabs(c.g) / hb->tol));
+        if (status != FRICREG_OK)
+            return status;
+        if (it == hb->max_iter)
+            return fr_fail(hb, FRICREG_EWORK, "%s: the corrector did not converge in %d iterations",
+                           fn, it);
+        for (size_t j = 0; j < ld; j++)
+            hb->dy[j] = -hb->R[j];
+        if ((status = fr_hb_lu_solve(hb, fn, ld, hb->dy, hb->dy)) != FRICREG_OK)
+            return status;
+        double step = sqrt(fr_hb_dot(hb->dy, hb->dy, ld));
+        if (it == 0)
+            b->delta = step;
+        else if (it == 1 && b->delta > 0.0)
+            b->kappa = step / b->delta;
+        memcpy(hb->yl, hb->qw, ld * sizeof(double));
+        c.prev = c.norm;
+        int accepted; /* none: on from the shortest trial, evaluated in qw */
+        status = fr_line_search(&ls, 1.0, corrector_trial, &c, &accepted);
+    }
+}

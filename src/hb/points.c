@@ -1,0 +1,107 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* points.c — the continuation's points: the getters of fricreg_hb.h (fricreg_hb_points,
+ * fricreg_hb_point, fricreg_hb_point_level), then the store they read. Each point keeps its Ω
+ * and RMS (pts), its unknowns and parameter (qpts: the peak search and the bisections start
+ * from them) and its extras (xpts: the bifurcation tests). A file apart from the loop that
+ * fills it, since the getters, the bifurcations and the peak search read it too. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "points.h"
+
+size_t fricreg_hb_points(const fricreg_hb *hb)
+{
+    return hb ? hb->npts : 0;
+}
+
+int fricreg_hb_point(fricreg_hb *hb, size_t k, double *omega, size_t ndof, double rms[])
+{
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    if (omega == NULL || rms == NULL)
+        return fr_fail(hb, FRICREG_ENULL, "point: %s is NULL", omega == NULL ? "omega" : "rms");
+    if (k >= hb->npts)
+        return fr_fail(hb, FRICREG_EINVAL, "point: k = %zu, %zu points stored", k, hb->npts);
+    if (ndof != hb->n)
+        return fr_fail(hb, FRICREG_ESIZE, "point: ndof = %zu, the driver has %zu", ndof, hb->n);
+    const double *p = hb->pts + k * (1 + hb->n);
+    *omega = p[0];
+    memcpy(rms, p + 1, hb->n * sizeof(double));
+    return FRICREG_OK;
+}
+
+int fricreg_hb_point_level(fricreg_hb *hb, size_t k, double *level)
+{
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    if (level == NULL)
+        return fr_fail(hb, FRICREG_ENULL, "point_level: level is NULL");
+    if (k >= hb->npts)
+        return fr_fail(hb, FRICREG_EINVAL, "point_level: k = %zu, %zu points stored", k, hb->npts);
+    *level = hb->branch_level ? hb->qpts[k * hb->qpts_stride + hb->qpts_stride - 1] : 1.0;
+    return FRICREG_OK;
+}
+
+/* Room for `want` points (at most max_points), kept on failure: FRICREG_ENOMEM. The unknowns'
+ * room follows nq, which the element setters change (1 or 2 rows per element). */
+int fr_hb_points_reserve(fricreg_hb *hb, size_t want)
+{
+    size_t stride = hb->nq + 1, xw = FR_HB_XW(hb);
+    if (want > hb->max_points)
+        want = hb->max_points;
+    if (want <= hb->cap && hb->qpts_stride == stride && hb->xpts_stride == xw)
+        return FRICREG_OK;
+    if (want < hb->cap)
+        want = hb->cap;
+    double *p = realloc(hb->pts, want * (1 + hb->n) * sizeof(double));
+    if (p != NULL)
+        hb->pts = p;
+    double *q = p == NULL ? NULL : realloc(hb->qpts, want * stride * sizeof(double));
+    if (q != NULL)
+        hb->qpts = q;
+    double *x = q == NULL ? NULL : realloc(hb->xpts, want * xw * sizeof(double));
+    if (x != NULL)
+        hb->xpts = x;
+    double *f = x == NULL ? NULL : realloc(hb->bifs, want * (4 + hb->n) * sizeof(double));
+    if (f == NULL)
+        return fr_fail(hb, FRICREG_ENOMEM, "continue: no memory for %zu points", want);
+    hb->bifs = f;
+    hb->qpts_stride = stride;
+    hb->xpts_stride = xw;
+    hb->cap = want;
+    return FRICREG_OK;
+}
+
+/* The point at qt (unscaled q, parameter p; the factors, forces fq and Jacobians jq at it, the
+ * level in force) stored, with the tangent's parameter component tw and the bordered matrix's
+ * determinant sign det; its stability by Hill's method when on (already in xsol when
+ * hill_done: fr_hb_solve_at's). Only counted when the branch keeps no points. */
+int fr_hb_store_point(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, double p, double tw,
+                      double det, int hill_done)
+{
+    size_t w = 1 + hb->n, nq = hb->nq, xw = FR_HB_XW(hb);
+    double omega = fr_hb_branch_omega(b, p);
+    b->count++;
+    if (!b->keep)
+        return FRICREG_OK;
+    int status = hb->npts < hb->cap ? FRICREG_OK : fr_hb_points_reserve(hb, 2 * hb->cap);
+    if (status != FRICREG_OK)
+        return status;
+    if (hb->stability && !hill_done && (status = fr_hb_hill(hb, fn, omega, hb->xsol + 2)))
+        return status;
+    double *x = hb->xpts + hb->npts * xw;
+    x[0] = tw;
+    x[1] = det;
+    if (hb->stability)
+        memcpy(x + 2, hb->xsol + 2, (xw - 2) * sizeof(double));
+    hb->pts[hb->npts * w] = omega;
+    fr_hb_rms(hb, hb->pts + hb->npts * w + 1);
+    memcpy(hb->qpts + hb->npts * (nq + 1), hb->qt, nq * sizeof(double));
+    hb->qpts[hb->npts * (nq + 1) + nq] = p;
+    hb->npts++;
+    memcpy(hb->qsol, hb->qt, nq * sizeof(double));
+    hb->omega_sol = omega;
+    hb->level_sol = hb->level;
+    hb->have_solution = 1;
+    return FRICREG_OK;
+}

@@ -1,0 +1,112 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* start.c — the start without a guess of fricreg_hb_solve and fricreg_hb_continue: the
+ * solution at Ω followed in the excitation level from the linear regime (where the stuck guess
+ * holds) up to λ = 1, or the plain guesses, or a branch in Ω from a nearby frequency. Its own
+ * file because it is a client of the continuation loop (arclength.c), not a part of it: its
+ * continuations store no points. */
+#include <math.h>
+#include <string.h>
+
+#include "arclength.h"
+#include "start.h"
+
+/* The excitation level where fricreg_hb_solve's start begins: small enough for every element
+ * to stay in the regime of the stuck guess (a Jenkins element slips once kt |q| > mu N, its
+ * q proportional to λ there), not so small that the first point's tolerance, relative to
+ * the response, reaches rounding. */
+#define LEVEL_START 1e-3
+
+/* Whether the old start's solution q1 at λ = 1 lies on the branch from the linear regime:
+ * with q0 the solution at λ = 0 (every element in its regime of no load: stuck, or closed
+ * under a preload, or open across a gap), the line q0 + λ (q1 − q0) solves (R) at λ = 1e-3 to
+ * Newton's tolerance, so the elements are in that same regime at both ends; a regime is a set
+ * of linear inequalities in λ along the line (|kt (u − w)| <= mu N for some w, N0 + kn g >= 0
+ * or <= 0), so it holds between them, and the line is the branch. Scratch: tan, tn. */
+static int on_linear_branch(fricreg_hb *hb, const char *fn, double omega, int *yes)
+{
+    size_t nq = hb->nq;
+    double *q0 = hb->tan, *q1 = hb->tn, s0, s1;
+    *yes = 0;
+    hb->level = 0.0;
+    int status = fr_hb_solve_at(hb, fn, omega, NULL, 0);
+    if (status != FRICREG_OK)
+        return status;
+    memcpy(q0, hb->qw, nq * sizeof(double));
+    s0 = fr_hb_scale(hb, q0);
+    hb->level = 1.0;
+    if ((status = fr_hb_solve_at(hb, fn, omega, NULL, 0)) != FRICREG_OK)
+        return status;
+    memcpy(q1, hb->qw, nq * sizeof(double));
+    s1 = fr_hb_scale(hb, q1);
+    hb->level = LEVEL_START;
+    for (size_t j = 0; j < nq; j++)
+        hb->qt[j] = q0[j] + LEVEL_START * (q1[j] - q0[j]);
+    if ((status = fr_hb_residual(hb, fn, hb->qt, hb->R, 0)) != FRICREG_OK)
+        return status;
+    /* (R) there is (1 − λ) R(q0) + λ R(q1) when the forces are affine along the line */
+    double r = 0.0, bound = hb->tol *
+                            ((1.0 - LEVEL_START) * s0 + LEVEL_START * s1 + fr_hb_scale(hb, hb->qt));
+    for (size_t j = 0; j < nq; j++)
+        r = fmax(r, fabs(hb->R[j]));
+    *yes = r <= bound;
+    return FRICREG_OK;
+}
+
+/* The branch in the excitation level at omega from the linear regime to λ = 1, the solution
+ * kept as fr_hb_solve_at's (fricreg_hb_solve's docstring). */
+static int level_start(fricreg_hb *hb, const char *fn, double omega)
+{
+    /* the old start, when its solution is the branch's: its Newton once more to keep it */
+    int linear = 0, status = on_linear_branch(hb, fn, omega, &linear);
+    hb->level = 1.0;
+    if (status == FRICREG_OK && linear)
+        return fr_hb_solve_at(hb, fn, omega, hb->tn, 1);
+    if (status == FRICREG_ENOMEM || hb->stopped)
+        return status;
+    struct fr_hb_branch b = {.level = 1, .omega = omega, .par = "level"};
+    status = fr_hb_arclength(hb, fn, &b, LEVEL_START, 1.0, NULL);
+    hb->level = 1.0;
+    return status;
+}
+
+/* The nearby frequencies of the frequency start, omega (1 + d) then omega / (1 + d) for each
+ * d, nearest first: far enough apart that a resonance's width (ζ of a few per cent) is left. */
+static const double START_OFFSETS[] = {0.05, 0.1, 0.2, 0.4, 0.8};
+#define START_TRIALS (2 * sizeof START_OFFSETS / sizeof START_OFFSETS[0])
+
+/* The branch in Ω to omega from the nearest frequency of START_OFFSETS where the plain guesses
+ * converge: for a response homogeneous in the forcing (a unilateral spring without gap or
+ * preload) the level's branch is a ray, its every point as hard to reach as its end. One
+ * continuation at most, its points not stored. */
+static int frequency_start(fricreg_hb *hb, const char *fn, double omega)
+{
+    int status = FRICREG_EWORK;
+    for (size_t i = 0; i < START_TRIALS; i++) {
+        double d = START_OFFSETS[i / 2], from = i % 2 ? omega / (1.0 + d) : omega * (1.0 + d);
+        status = fr_hb_solve_at(hb, fn, from, NULL, 0);
+        if (status == FRICREG_ENOMEM || hb->stopped)
+            return status;
+        if (status == FRICREG_OK) {
+            struct fr_hb_branch b = {.par = "Omega"};
+            return fr_hb_arclength(hb, fn, &b, from, omega, NULL);
+        }
+    }
+    return status;
+}
+
+int fr_hb_default_start(fricreg_hb *hb, const char *fn, double omega)
+{
+    int status = level_start(hb, fn, omega);
+    if (status == FRICREG_OK || status == FRICREG_ENOMEM || hb->stopped)
+        return status;
+    if ((status = fr_hb_solve_at(hb, fn, omega, NULL, 1)) == FRICREG_OK ||
+        status == FRICREG_ENOMEM || hb->stopped)
+        return status;
+    struct fr_error plain = hb->err; /* the failure reported should all three fail */
+    int plain_status = status;
+    if ((status = frequency_start(hb, fn, omega)) == FRICREG_OK || status == FRICREG_ENOMEM ||
+        hb->stopped)
+        return status;
+    hb->err = plain;
+    return plain_status;
+}

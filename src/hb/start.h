@@ -1,0 +1,13 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* start.h — the start without a guess of fricreg_hb_solve and fricreg_hb_continue (start.c). */
+#ifndef FRICREG_HB_START_H
+#define FRICREG_HB_START_H
+
+#include "hb_internal.h"
+
+/* The level start; should it fail, the plain guesses at omega; then the branch in Ω from a
+ * nearby frequency where those converge. The solution kept as fr_hb_solve_at's; on failure the
+ * plain guesses' error. */
+int fr_hb_default_start(fricreg_hb *hb, const char *fn, double omega);
+
+#endif
