@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "base/line_search.h"
+#include "base/newton_loop.h"
 #include "corrector.h"
 
 /* The sign of the determinant of the LU factor in A (order ld, pivots piv2). */
@@ -121,6 +122,62 @@ static int corrector_trial(void *user, double lambda, int *accept)
  * the stick/slip or contact pattern changes, the plain iteration may cycle. *its the
  * iterations, b->delta and b->kappa the first step's length and the second's ratio to it. On
  * success A holds the bordered matrix at qw, unfactored (fr_hb_tangent). */
+/* The loop's view of the corrector (base/newton_loop.h): the iterate c's, its iterations it. */
+struct corrector_loop {
+    struct corrector_iterate *c;
+    struct fr_hb_branch *b; /* delta and kappa written */
+    struct fr_line_search *ls;
+    int it;
+};
+
+static int corrector_converged(void *user)
+{
+    return ((struct corrector_loop *)user)->c->converged;
+}
+
+static int corrector_progress(void *user, double rinf)
+{
+    struct corrector_iterate *c = ((struct corrector_loop *)user)->c;
+    (void)rinf; /* the monitor's measure: the worse of the two equations against its bound */
+    return fr_hb_tick(c->hb, c->fn, fr_hb_parameter(c->hb),
+                      fmax(c->r / c->bound, fabs(c->g) / c->hb->tol));
+}
+
+/* Newton's step from qw; its length sets delta (the first) and kappa (the second's ratio). */
+static int corrector_direction(void *user)
+{
+    struct corrector_loop *l = user;
+    struct corrector_iterate *c = l->c;
+    fricreg_hb *hb = c->hb;
+    size_t ld = hb->nq + 1;
+    for (size_t j = 0; j < ld; j++)
+        hb->dy[j] = -hb->R[j];
+    int status = fr_hb_lu_solve(hb, c->fn, ld, hb->dy, hb->dy);
+    if (status != FRICREG_OK)
+        return status;
+    double step = sqrt(fr_hb_dot(hb->dy, hb->dy, ld));
+    if (l->it == 0)
+        l->b->delta = step;
+    else if (l->it == 1 && l->b->delta > 0.0)
+        l->b->kappa = step / l->b->delta;
+    l->it++;
+    return FRICREG_OK;
+}
+
+/* Always on: where no trial decreases |R|, from the shortest (evaluated in qw). */
+static int corrector_search(void *user, double *phi, double *rinf, int *accepted)
+{
+    struct corrector_loop *l = user;
+    struct corrector_iterate *c = l->c;
+    (void)phi;
+    (void)rinf;
+    memcpy(c->hb->yl, c->hb->qw, (c->hb->nq + 1) * sizeof(double));
+    c->prev = c->norm;
+    int found; /* none: on from the shortest trial, evaluated in qw */
+    *accepted = 1;
+    return fr_line_search(l->ls, 1.0, corrector_trial, c, &found);
+}
+
 int fr_hb_corrector(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, const double *start,
                     const double *anchor, const double *border, int *its)
 {
@@ -130,31 +187,19 @@ int fr_hb_corrector(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, cons
     memcpy(hb->qw, start, ld * sizeof(double));
     b->delta = b->kappa = 0.0;
     int status = corrector_evaluate(&c);
-    for (int it = 0;; it++) {
-        if (status != FRICREG_OK)
-            return status;
-        if (it >= 1 && c.converged) {
-            *its = it;
-            return FRICREG_OK;
-        }
-        status = fr_hb_tick(hb, fn, fr_hb_parameter(hb), fmax(c.r / c.bound, fabs(c.g) / hb->tol));
-        if (status != FRICREG_OK)
-            return status;
-        if (it == hb->max_iter)
-            return fr_fail(hb, FRICREG_EWORK, "%s: the corrector did not converge in %d iterations",
-                           fn, it);
-        for (size_t j = 0; j < ld; j++)
-            hb->dy[j] = -hb->R[j];
-        if ((status = fr_hb_lu_solve(hb, fn, ld, hb->dy, hb->dy)) != FRICREG_OK)
-            return status;
-        double step = sqrt(fr_hb_dot(hb->dy, hb->dy, ld));
-        if (it == 0)
-            b->delta = step;
-        else if (it == 1 && b->delta > 0.0)
-            b->kappa = step / b->delta;
-        memcpy(hb->yl, hb->qw, ld * sizeof(double));
-        c.prev = c.norm;
-        int accepted; /* none: on from the shortest trial, evaluated in qw */
-        status = fr_line_search(&ls, 1.0, corrector_trial, &c, &accepted);
-    }
+    if (status != FRICREG_OK)
+        return status;
+    struct corrector_loop l = {&c, b, &ls, 0};
+    struct fr_newton_loop nl = {1.0,  hb->max_iter,        1,
+                                &l,   corrector_direction, corrector_search,
+                                NULL, corrector_progress,  corrector_converged};
+    double phi = 0.0, rinf = 0.0; /* the loop's measures unused: the iterate's test decides */
+    int iters = 0;
+    if ((status = fr_newton_loop_run(&nl, &phi, &rinf, &iters)) != FRICREG_OK)
+        return status;
+    if (iters == 0 || !c.converged)
+        return fr_fail(hb, FRICREG_EWORK, "%s: the corrector did not converge in %d iterations", fn,
+                       iters);
+    *its = iters;
+    return FRICREG_OK;
 }

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "base/line_search.h"
+#include "base/newton_loop.h"
 #include "hb_internal.h"
 
 static double norm2(const double *v, size_t n)
@@ -102,30 +103,75 @@ static int line_search(fricreg_hb *hb, const char *fn, int converged)
                    t.r0);
 }
 
+/* The loop's view of Newton at one frequency (base/newton_loop.h): the iterate qw, converged
+ * once |R|_inf <= bound, bound = tol times the iterate's scale. */
+struct hb_loop {
+    fricreg_hb *hb;
+    const char *fn;
+    double r, bound; /* the iterate's |R|_inf and bound */
+};
+
+static void measure(struct hb_loop *l)
+{
+    l->r = norm_inf(l->hb->R, l->hb->nq);
+    l->bound = l->hb->tol * fr_hb_scale(l->hb, l->hb->qw);
+}
+
+static int hb_converged(void *user)
+{
+    struct hb_loop *l = user;
+    return l->r <= l->bound;
+}
+
+static int hb_progress(void *user, double rinf)
+{
+    struct hb_loop *l = user;
+    (void)rinf; /* the monitor's measure is |R|_inf / bound */
+    return fr_hb_tick(l->hb, l->fn, fr_hb_parameter(l->hb), l->r / l->bound);
+}
+
+static int hb_direction(void *user)
+{
+    struct hb_loop *l = user;
+    fricreg_hb *hb = l->hb;
+    fr_hb_matrix(hb, hb->jq, hb->A, hb->nq);
+    for (size_t j = 0; j < hb->nq; j++)
+        hb->dy[j] = -hb->R[j];
+    return fr_hb_lu_solve(hb, l->fn, hb->nq, hb->dy, hb->dy);
+}
+
+/* A search that accepts nothing is a failure here (FRICREG_EWORK, line_search). */
+static int hb_search(void *user, double *phi, double *rinf, int *accepted)
+{
+    struct hb_loop *l = user;
+    (void)phi;
+    (void)rinf;
+    int status = line_search(l->hb, l->fn, hb_converged(l));
+    *accepted = status == FRICREG_OK;
+    if (status == FRICREG_OK)
+        measure(l);
+    return status;
+}
+
 int fr_hb_newton(fricreg_hb *hb, const char *fn)
 {
-    size_t nq = hb->nq;
     int status = fr_hb_residual(hb, fn, hb->qw, hb->R, 1);
-    for (int it = 0; status == FRICREG_OK; it++) {
-        double r = norm_inf(hb->R, nq), bound = hb->tol * fr_hb_scale(hb, hb->qw);
-        if (it >= 1 && r <= bound) {
-            hb->iterations = it;
-            return FRICREG_OK;
-        }
-        if ((status = fr_hb_tick(hb, fn, fr_hb_parameter(hb), r / bound)) != FRICREG_OK)
-            return status;
-        if (it == hb->max_iter)
-            return fr_fail(hb, FRICREG_EWORK,
-                           "%s: Newton did not converge in %d iterations (|R| = %g, tolerance %g)",
-                           fn, it, r, bound);
-        fr_hb_matrix(hb, hb->jq, hb->A, nq);
-        for (size_t j = 0; j < nq; j++)
-            hb->dy[j] = -hb->R[j];
-        status = fr_hb_lu_solve(hb, fn, nq, hb->dy, hb->dy);
-        if (status == FRICREG_OK)
-            status = line_search(hb, fn, r <= bound);
-    }
-    return status;
+    if (status != FRICREG_OK)
+        return status;
+    struct hb_loop l = {hb, fn, 0.0, 0.0};
+    struct fr_newton_loop nl = {1.0,       hb->max_iter, 1,           &l,          hb_direction,
+                                hb_search, NULL,         hb_progress, hb_converged};
+    double phi = 0.0, rinf = 0.0; /* the loop's measures unused: hb_converged decides */
+    int iters = 0;
+    measure(&l);
+    if ((status = fr_newton_loop_run(&nl, &phi, &rinf, &iters)) != FRICREG_OK)
+        return status;
+    if (iters == 0 || !hb_converged(&l))
+        return fr_fail(hb, FRICREG_EWORK,
+                       "%s: Newton did not converge in %d iterations (|R| = %g, tolerance %g)", fn,
+                       iters, l.r, l.bound);
+    hb->iterations = iters;
+    return FRICREG_OK;
 }
 
 /* The arguments every solve shares: omega, nq, q0. */

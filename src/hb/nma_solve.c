@@ -26,6 +26,7 @@
 #include <string.h>
 
 #include "base/line_search.h"
+#include "base/newton_loop.h"
 #include "nma_internal.h"
 
 void fr_hb_nma_enter(fricreg_hb *hb, struct fr_hb_nma *nma)
@@ -236,38 +237,87 @@ static int line_search(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, in
                                           fn, t.r0, nma->amplitude);
 }
 
+/* The loop's view of a nonlinear mode's Newton at amplitude a (base/newton_loop.h): the
+ * iterate y, converged once the largest |R_j| of its nd equations r <= bound, bound = tol
+ * times the largest |y_j| of its nq harmonics. */
+struct nma_loop {
+    fricreg_hb *hb;
+    const char *fn;
+    struct fr_hb_nma *nma;
+    double r, bound;
+};
+
+/* y evaluated (R and the Newton matrix) and measured. */
+static int nma_evaluate(struct nma_loop *l)
+{
+    struct fr_hb_nma *nma = l->nma;
+    int status = evaluate(l->hb, l->fn, nma, nma->y, nma->R, 1);
+    if (status != FRICREG_OK)
+        return status;
+    double r = 0.0, qs = 0.0;
+    for (size_t j = 0; j < nma->nd; j++)
+        r = fmax(r, fabs(nma->R[j]));
+    for (size_t j = 0; j < nma->nq; j++)
+        qs = fmax(qs, fabs(nma->y[j]));
+    l->r = r;
+    l->bound = l->hb->tol * fmax(qs, 1e-300);
+    return FRICREG_OK;
+}
+
+static int nma_converged(void *user)
+{
+    struct nma_loop *l = user;
+    return l->r <= l->bound;
+}
+
+static int nma_progress(void *user, double rinf)
+{
+    struct nma_loop *l = user;
+    (void)rinf; /* the monitor's measure is r / bound */
+    return fr_hb_tick(l->hb, l->fn, l->nma->amplitude, l->r / l->bound);
+}
+
+static int nma_direction(void *user)
+{
+    struct nma_loop *l = user;
+    return step(l->hb, l->fn, l->nma);
+}
+
+/* A search that accepts nothing is a failure here (line_search); the accepted y evaluated. */
+static int nma_search(void *user, double *phi, double *rinf, int *accepted)
+{
+    struct nma_loop *l = user;
+    (void)phi;
+    (void)rinf;
+    int status = line_search(l->hb, l->fn, l->nma, nma_converged(l));
+    *accepted = status == FRICREG_OK;
+    return status == FRICREG_OK ? nma_evaluate(l) : status;
+}
+
 int fr_hb_nma_newton(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, double a)
 {
-    size_t nq = nma->nq, nd = nma->nd;
+    size_t nq = nma->nq;
     nma->amplitude = a;
     nma->scale = 0.0;
     for (size_t j = 0; j < nq; j++)
         nma->scale = fmax(nma->scale, fabs(nma->y[j]));
     if (!(nma->scale > 0.0))
         nma->scale = a;
-    for (int it = 0;; it++) {
-        int status = evaluate(hb, fn, nma, nma->y, nma->R, 1);
-        if (status != FRICREG_OK)
-            return status;
-        double r = 0.0, qs = 0.0;
-        for (size_t j = 0; j < nd; j++)
-            r = fmax(r, fabs(nma->R[j]));
-        for (size_t j = 0; j < nq; j++)
-            qs = fmax(qs, fabs(nma->y[j]));
-        double bound = hb->tol * fmax(qs, 1e-300);
-        if (it >= 1 && r <= bound) {
-            hb->iterations = it;
-            return FRICREG_OK;
-        }
-        if ((status = fr_hb_tick(hb, fn, a, r / bound)) != FRICREG_OK)
-            return status;
-        if (it == hb->max_iter)
-            return fr_fail(hb, FRICREG_EWORK,
-                           "%s: Newton did not converge in %d iterations at amplitude %g (|R| = "
-                           "%g, tolerance %g)",
-                           fn, it, a, r, bound);
-        if ((status = step(hb, fn, nma)) != FRICREG_OK ||
-            (status = line_search(hb, fn, nma, r <= bound)) != FRICREG_OK)
-            return status;
-    }
+    struct nma_loop l = {hb, fn, nma, 0.0, 0.0};
+    int status = nma_evaluate(&l);
+    if (status != FRICREG_OK)
+        return status;
+    struct fr_newton_loop nl = {1.0,          hb->max_iter, 1, &l, nma_direction, nma_search, NULL,
+                                nma_progress, nma_converged};
+    double phi = 0.0, rinf = 0.0; /* the loop's measures unused: nma_converged decides */
+    int iters = 0;
+    if ((status = fr_newton_loop_run(&nl, &phi, &rinf, &iters)) != FRICREG_OK)
+        return status;
+    if (iters == 0 || !nma_converged(&l))
+        return fr_fail(hb, FRICREG_EWORK,
+                       "%s: Newton did not converge in %d iterations at amplitude %g (|R| = %g, "
+                       "tolerance %g)",
+                       fn, iters, a, l.r, l.bound);
+    hb->iterations = iters;
+    return FRICREG_OK;
 }

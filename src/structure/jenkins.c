@@ -54,7 +54,7 @@
 #include "base/matrix_input.h"
 #include "base/sparse_ops.h"
 #include "joint/slider.h"
-#include "newton_loop.h"
+#include "base/newton_loop.h"
 #include "structure_internal.h"
 
 #define MAX_ELEMENTS ((size_t)1 << 26)
@@ -793,13 +793,12 @@ static int element_direction(void *user)
     return FRICREG_OK;
 }
 
-static int element_search(void *user, double *phi, double *rinf)
+static int element_search(void *user, double *phi, double *rinf, int *accepted)
 {
     struct element_loop *l = user;
     struct element_trial t = {l->e, &l->ls, l->c, l->f, phi, rinf};
-    int accepted;
-    fr_line_search(&l->ls, 1.0, element_trial, &t, &accepted); /* the trials cannot fail */
-    return accepted;
+    fr_line_search(&l->ls, 1.0, element_trial, &t, accepted); /* the trials cannot fail */
+    return FRICREG_OK;
 }
 
 static void element_restore(void *user, double *phi, double *rinf)
@@ -833,7 +832,7 @@ int fr_elements_newmark(fricreg_structure *s, double dt, double scale, gsl_vecto
     struct element_loop l = {
         e, c, f, {FR_ARMIJO, FR_STEP_HALVINGS, &s->stats[FRICREG_SSTAT_LINE_SEARCH_CUTS]}};
     struct fr_newton_loop nl = {
-        tol, s->newton_max, &l, element_direction, element_search, element_restore};
+        tol, s->newton_max, 0, &l, element_direction, element_search, element_restore, NULL, NULL};
     fr_newton_loop_run(&nl, &phi, &rinf, iters); /* its end is the step's: judged below */
     if (e->overflow != 0 && !(rinf <= tol))      /* at the last iterate: its force or the tangent */
         return fr_elements_overflow(s, s->t + dt);

@@ -36,7 +36,7 @@
 #include "base/line_search.h"
 #include "base/sparse_ops.h"
 #include "ctx/ctx_driver.h"
-#include "newton_loop.h"
+#include "base/newton_loop.h"
 #include "structure_internal.h"
 
 /* The contacts' velocities and free accelerations (s->zdot, s->afree), their law's forces
@@ -263,10 +263,11 @@ static int joint_direction(void *user)
     return direction(s);
 }
 
-static int joint_search(void *user, double *phi, double *rinf)
+static int joint_search(void *user, double *phi, double *rinf, int *accepted)
 {
     struct joint_loop *l = user;
-    return line_search(l->s, l->stops, phi, rinf);
+    *accepted = line_search(l->s, l->stops, phi, rinf);
+    return FRICREG_OK;
 }
 
 static void joint_restore(void *user, double *phi, double *rinf)
@@ -281,8 +282,8 @@ static void iterate(fricreg_structure *s, double tol, int stops, double *phi, do
                     int *iters)
 {
     struct joint_loop l = {s, stops};
-    struct fr_newton_loop nl = {tol,          s->newton_max, &l, joint_direction,
-                                joint_search, joint_restore};
+    struct fr_newton_loop nl = {tol,          s->newton_max, 0,    &l,  joint_direction,
+                                joint_search, joint_restore, NULL, NULL};
     fr_newton_loop_run(&nl, phi, rinf, iters); /* its end is the step's: judged by solve */
 }
 

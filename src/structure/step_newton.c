@@ -7,7 +7,7 @@
 #include <gsl/gsl_blas.h>
 
 #include "base/line_search.h"
-#include "newton_loop.h"
+#include "base/newton_loop.h"
 #include "step_newton.h"
 
 void fr_step_combine(const struct fr_compliance_pair *a, double lambda,
@@ -82,10 +82,11 @@ static int step_direction(void *user)
     return status;
 }
 
-static int step_search(void *user, double *phi, double *rinf)
+static int step_search(void *user, double *phi, double *rinf, int *accepted)
 {
     struct step_loop *l = user;
-    return line_search(l->e, l->stops, l->search, phi, rinf);
+    *accepted = line_search(l->e, l->stops, l->search, phi, rinf);
+    return FRICREG_OK;
 }
 
 static void step_restore(void *user, double *phi, double *rinf)
@@ -98,7 +99,8 @@ int fr_step_newton_iterate(struct fr_step_newton *e, double tol, int stops, int 
                            double *rinf, int *iters)
 {
     struct step_loop l = {e, stops, search};
-    struct fr_newton_loop nl = {tol, e->max_iter, &l, step_direction, step_search, step_restore};
+    struct fr_newton_loop nl = {tol,         e->max_iter,  0,    &l,  step_direction,
+                                step_search, step_restore, NULL, NULL};
     int status = fr_newton_loop_run(&nl, phi, rinf, iters);
     return status == FRICREG_ENOMEM ? status : FRICREG_OK; /* else a singular tangent */
 }

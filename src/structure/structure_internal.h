@@ -1,8 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* structure_internal.h — the structure's layout, shared by its files. Each calls only files
  * above it in this list, never one below (tests/module_layers.sh): busy.c, changed.c (the
- * setters' one hook), contact_factor.c, joint_storage.c, masked_factor.c, newton_loop.c (the
- * one Newton iteration of the three implicit problems), step_pattern.c,
+ * setters' one hook), contact_factor.c, joint_storage.c, masked_factor.c, step_pattern.c,
  * warn_track.c (what the warnings judge, as the run steps); guard.c (the step guard), model.c
  * (the model matrices), newton_matrix.c, ode_tolerances.c; fundamental_frequency.c, jenkins.c
  * (Jenkins elements), prepare.c (the set-up of a model), step_newton.c, structure_gsl.c;
