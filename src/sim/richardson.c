@@ -39,7 +39,7 @@ static int converged(const double v[], int levels)
 
 void fr_richardson(const double v[], int levels, int declared, struct fr_richardson *out)
 {
-    double t[FR_RICHARDSON_MAX_LEVELS];
+    double t[FR_RICHARDSON_MAX_LEVELS] = {0}; /* levels >= 2 fill what is read */
     int fallback = declared >= 1 ? declared : 1;
     out->observed = NAN;
     out->flagged = 0;
