@@ -24,7 +24,8 @@
 !     c_intptr_t, c_ptr, c_funptr, c_char, c_null_ptr, c_null_funptr, c_null_char,
 !     c_associated, c_f_pointer, c_loc, c_funloc;
 !   - the idiomatic layer below: the types fricreg_context, fricreg_disk_context,
-!     fricreg_jenkins_elements, fricreg_iwan_elements, fricreg_aft_workspace, fricreg_simulation,
+!     fricreg_jenkins_elements, fricreg_iwan_elements, fricreg_element (an element type of
+!     fricreg_element.h: no C object behind it), fricreg_aft_workspace, fricreg_simulation,
 !     fricreg_exact_solution, fricreg_structure and fricreg_hb_driver (the last four with the
 !     drivers), their
 !     common parent fricreg_object, the generics law_eval, disk_eval, stribeck_eval and
@@ -54,8 +55,8 @@
 ! Its source is one file per object, each a module of its own that this one uses and re-exports
 ! (modules fricreg_<file>_m): fricreg_base.F90 (fricreg_object, its error record, the string
 ! helpers), fricreg_laws.F90 (the law generics), fricreg_ctx.F90, fricreg_disk_ctx.F90,
-! fricreg_jenkins.F90, fricreg_iwan.F90, fricreg_aft.F90 and, with the drivers, fricreg_sim.F90,
-! fricreg_exact.F90, fricreg_structure.F90 and fricreg_hb.F90. Callers use this module only:
+! fricreg_jenkins.F90, fricreg_iwan.F90, fricreg_element.F90, fricreg_aft.F90 and, with the
+! drivers, fricreg_sim.F90, fricreg_exact.F90, fricreg_structure.F90 and fricreg_hb.F90. Callers use this module only:
 ! the names of those are not an interface, nor are fricreg_object's component ptr and its
 ! helper bindings (adopt, ready, fail, ...), public for the object modules alone.
 module fricreg
@@ -72,6 +73,7 @@ module fricreg
   use fricreg_disk_ctx_m
   use fricreg_jenkins_m
   use fricreg_iwan_m
+  use fricreg_element_m
   use fricreg_aft_m
 #ifdef FRICREG_HAVE_SIM
   use fricreg_sim_m
@@ -94,6 +96,7 @@ module fricreg
   public :: disk_eval, stribeck_eval, stribeck_disk_eval, fricreg_disk_law_string, &
             fricreg_disk_law_id
   public :: fricreg_disk_context, fricreg_jenkins_elements, fricreg_iwan_elements
+  public :: fricreg_element
   public :: fricreg_aft_workspace
 #ifdef FRICREG_HAVE_SIM
   include 'fricreg_drivers_h_public.inc'

@@ -29,7 +29,7 @@ module fricreg_c
   public :: fricreg_f77_transposed_rows
   ! For module fricreg and the F77 entry points (module fricreg does not re-export them).
   public :: fricreg_free_fn, fricreg_errcode_fn, fricreg_errmsg_fn, fricreg_f77_created, &
-            fricreg_f77_release, fricreg_f77_last_error
+            fricreg_f77_release, fricreg_f77_last_error, fricreg_f77_element_type
 
   interface
     include 'fricreg_h.inc'
@@ -144,6 +144,17 @@ contains
     stat = status
     if (status == FRICREG_OK) h = fricreg_ptr_to_handle(p)
   end function fricreg_f77_created
+
+  !> The element type of F77 code itype (fricreg_element_at's index + 1) with ns sliders;
+  !> c_null_ptr if there is none.
+  !> (64-bit arguments: the F77 entries are compiled with 4- and 8-byte INTEGER, this once.)
+  function fricreg_f77_element_type(itype, ns) result(t)
+    integer(c_int64_t), intent(in) :: itype, ns
+    type(c_ptr) :: t
+    t = c_null_ptr
+    if (itype < 1 .or. ns < 1) return
+    t = fricreg_element_sliders(fricreg_element_at(int(itype - 1, c_size_t)), int(ns, c_size_t))
+  end function fricreg_f77_element_type
 
   !> Release the object of handle h with free (its C release; h = 0 does nothing) and set
   !> h = 0. Returns FRICREG_OK, for STAT.

@@ -27,7 +27,8 @@
 # Every pointer argument but a handle is `optional`: omitting it passes NULL, as C allows for
 # any pointer (the library answers FRICREG_ENULL where it needs one; f_eq and sticks may be
 # NULL on purpose). Results: int, size_t, double by value; const char * as type(c_ptr)
-# (fricreg_c_string converts it); void makes a subroutine.
+# (fricreg_c_string converts it), and a handle (const fricreg_element_type *) as type(c_ptr);
+# void makes a subroutine.
 cmake_minimum_required(VERSION 3.25)
 foreach(var HEADERS OUT PUBLIC_OUT)
   if(NOT DEFINED ${var})
@@ -73,7 +74,7 @@ function(fortran_of kind ctype out_var)
       set(decl "integer(c_int64_t)")
     elseif(ctype STREQUAL "double")
       set(decl "real(c_double)")
-    elseif(ctype STREQUAL "const char *")
+    elseif(ctype STREQUAL "const char *" OR ctype MATCHES "^(const )?fricreg_[a-z0-9_]+ \\*$")
       set(decl "type(c_ptr)")
     else()
       set(decl "")

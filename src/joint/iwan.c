@@ -13,6 +13,7 @@
 
 #include "base/error.h"
 #include "fricreg_iwan.h"
+#include "segalman.h"
 #include "slider.h"
 
 #define MAX_SLIDERS (SIZE_MAX / 64)
@@ -146,38 +147,6 @@ int fricreg_iwan_get_params(fricreg_iwan *iw, size_t n, size_t ns, double k[], d
     return FRICREG_OK;
 }
 
-/* Grid point j of m (fricreg_iwan.h), in units of phi_max: x_0 = 0, x_j =
- * resolution^((m - j)/(m - 1)), x_m = 1. */
-static double grid(double resolution, size_t m, size_t j)
-{
-    if (j == 0)
-        return 0.0;
-    return m == 1 ? 1.0 : pow(resolution, (double)(m - j) / (double)(m - 1));
-}
-
-/* Slider s (0-based) of Segalman's model for one element, on the moment rule's geometric grid
- * (fricreg_iwan.h). With a = chi + 1, b = chi + 2 and the grid x_j in units of phi_max,
- * slider j - 1 has k = Kc (x_j^a - x_(j-1)^a), phi = Fc (x_j^b - x_(j-1)^b), where
- * Kc = K_T/(1 + beta) = R phi_max^a/a and Fc = R phi_max^b/b = F_S - S phi_max; the delta's
- * slider (the last, if beta > 0) has k = S = beta Kc, phi = S phi_max. Both sums telescope to
- * Kc + S = K_T and Fc + S phi_max = F_S. */
-static void segalman_slider(double fs, double kt, double chi, double beta, double resolution,
-                            size_t ns, size_t s, double *k, double *phi)
-{
-    double a = chi + 1.0, b = chi + 2.0, r = a / b;
-    double kc = kt / (1.0 + beta), fc = fs * r / (beta + r);
-    size_t m = beta > 0.0 ? ns - 1 : ns;
-    if (s == m) { /* the delta at phi_max */
-        double phimax = fs * (1.0 + beta) / (kt * (beta + r));
-        *k = beta * kc;
-        *phi = *k * phimax;
-        return;
-    }
-    double x1 = grid(resolution, m, s + 1), x0 = grid(resolution, m, s);
-    *k = kc * (pow(x1, a) - pow(x0, a));
-    *phi = fc * (pow(x1, b) - pow(x0, b));
-}
-
 int fricreg_iwan_set_segalman(fricreg_iwan *iw, size_t n, const double fs[], const double kt[],
                               const double chi[], const double beta[], double resolution)
 {
@@ -192,48 +161,26 @@ int fricreg_iwan_set_segalman(fricreg_iwan *iw, size_t n, const double fs[], con
     if (check_n(iw, "set_segalman", n, 0, 0) != FRICREG_OK)
         return FRICREG_ESIZE;
     size_t ns = iw->ns;
+    char why[160];
     if (!isfinite(resolution))
         return fr_fail(iw, FRICREG_ENONFINITE, "set_segalman: resolution = %g", resolution);
     for (size_t e = 0; e < n; e++) {
-        if (!isfinite(fs[e]) || !isfinite(kt[e]) || !isfinite(chi[e]) || !isfinite(beta[e]))
-            return fr_fail(iw, FRICREG_ENONFINITE,
-                           "set_segalman: element %zu: fs = %g, kt = %g, chi = %g, beta = %g", e,
-                           fs[e], kt[e], chi[e], beta[e]);
-        if (!(fs[e] > 0.0) || !(kt[e] > 0.0) || !(chi[e] > -1.0 && chi[e] <= 1.0) ||
-            !(beta[e] >= 0.0))
-            return fr_fail(iw, FRICREG_EINVAL,
-                           "set_segalman: element %zu: fs = %g and kt = %g must be > 0, "
-                           "-1 < chi = %g <= 1, beta = %g >= 0",
-                           e, fs[e], kt[e], chi[e], beta[e]);
-        if (beta[e] > 0.0 && ns < 2)
-            return fr_fail(iw, FRICREG_EINVAL,
-                           "set_segalman: element %zu: beta = %g > 0 needs ns >= 2 (ns = 1)", e,
-                           beta[e]);
-        size_t m = beta[e] > 0.0 ? ns - 1 : ns;
-        if (m >= 2 && !(resolution > 0.0 && resolution < 1.0))
-            return fr_fail(iw, FRICREG_EINVAL, "set_segalman: resolution = %g must be in (0, 1)",
-                           resolution);
+        int status = fr_segalman_check_params(fs[e], kt[e], chi[e], beta[e], resolution, ns, why,
+                                              sizeof why);
+        if (status != FRICREG_OK)
+            return fr_fail(iw, status, "set_segalman: element %zu: %s", e, why);
     }
     /* the sliders, checked before any is stored (computed twice: set-up, not the trial) */
-    for (size_t e = 0; e < n; e++)
-        for (size_t s = 0; s < ns; s++) {
-            double k, phi;
-            segalman_slider(fs[e], kt[e], chi[e], beta[e], resolution, ns, s, &k, &phi);
-            if (!isfinite(k) || !isfinite(phi))
-                return fr_fail(iw, FRICREG_ENONFINITE,
-                               "set_segalman: element %zu's slider %zu: k = %g, phi = %g "
-                               "(extreme parameters)",
-                               e, s, k, phi);
-            if (!(k > 0.0) || !(phi >= 0.0))
-                return fr_fail(iw, FRICREG_EINVAL,
-                               "set_segalman: element %zu's slider %zu: k = %g underflows (chi = "
-                               "%g near -1, or resolution = %g too small)",
-                               e, s, k, chi[e], resolution);
-        }
+    for (size_t e = 0; e < n; e++) {
+        int status = fr_segalman_check_sliders(fs[e], kt[e], chi[e], beta[e], resolution, ns, why,
+                                               sizeof why);
+        if (status != FRICREG_OK)
+            return fr_fail(iw, status, "set_segalman: element %zu's %s", e, why);
+    }
     for (size_t e = 0; e < n; e++)
         for (size_t s = 0; s < ns; s++)
-            segalman_slider(fs[e], kt[e], chi[e], beta[e], resolution, ns, s, &iw->k[ns * e + s],
-                            &iw->phi[ns * e + s]);
+            fr_segalman_slider(fs[e], kt[e], chi[e], beta[e], resolution, ns, s, &iw->k[ns * e + s],
+                               &iw->phi[ns * e + s]);
     discard_trial(iw);
     return FRICREG_OK;
 }

@@ -11,14 +11,19 @@
 
 double fr_slider_norm(const double *d, int dim)
 {
+    if (dim == 3)
+        return hypot(hypot(d[0], d[1]), d[2]);
     return dim == 1 ? fabs(d[0]) : hypot(d[0], d[1]);
 }
 
-void fr_slider_return(double kt, double b, double dbdg, int dim, const double *u, const double *wc,
-                      double *f, double *w, double *t, double *dfdg)
+int fr_slider_return(double kt, double b, double dbdg, int dim, const double *u, const double *wc,
+                     double *f, double *w, double *t, double *dfdg)
 {
-    double d[2] = {u[0] - wc[0], dim == 2 ? u[1] - wc[1] : 0.0},
-           ui[2] = {u[0], dim == 2 ? u[1] : 0.0};
+    double d[3] = {0.0, 0.0, 0.0}, ui[3] = {0.0, 0.0, 0.0};
+    for (int a = 0; a < dim; a++) {
+        d[a] = u[a] - wc[a];
+        ui[a] = u[a];
+    }
     double r = fr_slider_norm(d, dim);
     if (kt * r <= b) { /* stick: f = kt d, tangent kt I */
         for (int a = 0; a < dim; a++) {
@@ -30,9 +35,9 @@ void fr_slider_return(double kt, double b, double dbdg, int dim, const double *u
         if (t != NULL)
             for (int a = 0; a < dim * dim; a++)
                 t[a] = (a % (dim + 1) == 0) ? kt : 0.0;
-        return;
+        return 0;
     }
-    double nrm[2] = {d[0] / r, d[1] / r}, s = b / r;
+    double nrm[3] = {d[0] / r, d[1] / r, d[2] / r}, s = b / r;
     for (int a = 0; a < dim; a++) {
         f[a] = b * nrm[a];
         w[a] = ui[a] - f[a] / kt;
@@ -43,6 +48,7 @@ void fr_slider_return(double kt, double b, double dbdg, int dim, const double *u
         for (int a = 0; a < dim; a++)
             for (int c = 0; c < dim; c++)
                 t[dim * a + c] = dim == 1 ? 0.0 : s * ((a == c) - nrm[a] * nrm[c]);
+    return 1;
 }
 
 void fr_slider_separated(int dim, const double *u, double *f, double *w, double *t, double *dfdg)

@@ -1,0 +1,46 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* element_kind.h — what an element type is inside (fricreg_element.h): a kind, one law's row
+ * of the element table (element_table.c), and the number of sliders of its member. A new law
+ * is one file defining its fr_element_kind and one line of the table. */
+#ifndef FRICREG_JOINT_ELEMENT_KIND_H
+#define FRICREG_JOINT_ELEMENT_KIND_H
+
+#include <stddef.h>
+
+#include "fricreg_element.h"
+
+/* One law. check and eval see only arrays of the sizes nparams and nstate give for the type's
+ * ns; check has vetted eval's inputs, so eval cannot fail. */
+struct fr_element_kind {
+    const char *name;
+    int dim;    /* components of u and f */
+    int normal; /* 1: u's last component is the normal displacement g, f's the force N */
+    int family; /* 1: a family of 1..FRICREG_ELEMENT_MAX_SLIDERS sliders in parallel */
+    size_t (*nparams)(size_t ns);
+    size_t (*nstate)(size_t ns);
+    /* The status of eval on these inputs (state and u NULL: the parameters alone; u NULL: the
+     * parameters and state), a message into msg[len] where msg is not NULL. */
+    int (*check)(const fricreg_element_type *type, const double *params, const double *state,
+                 const double *u, char *msg, size_t len);
+    /* f, dfdu (or NULL), dfdp (or NULL), state_out (may be state_in) from checked inputs. */
+    void (*eval)(const fricreg_element_type *type, const double *params, const double *state_in,
+                 const double *u, double *f, double *dfdu, double *dfdp, double *state_out);
+};
+
+/* A type: its kind, its sliders and, for a family, its first member (the type of 1 slider,
+ * whose array holds the members in the order of ns). */
+struct fricreg_element_type {
+    const struct fr_element_kind *kind;
+    size_t ns;
+    const struct fricreg_element_type *family;
+};
+
+/* Writes the message of a failed check into msg[len] (nothing if msg is NULL or len is 0) and
+ * returns status. */
+int fr_element_say(int status, char *msg, size_t len, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 4, 5)))
+#endif
+    ;
+
+#endif

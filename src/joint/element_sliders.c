@@ -1,0 +1,247 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* element_sliders.c — the element types made of Jenkins sliders (fricreg_element.h): jenkins,
+ * jenkins_2d, jenkins_3d, jenkins_normal, contact_3d and the Iwan families, all ns sliders in
+ * parallel on the tangential components, each slider slider.c's return mapping, with or
+ * without the normal law of lift-off. The sums run over the sliders in order, as fricreg_iwan
+ * and the structure's elements sum them, so that their answers agree bit for bit. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "element_kind.h"
+#include "slider.h"
+
+static size_t params_plain(size_t ns)
+{
+    return 2 * ns;
+}
+
+static size_t params_normal(size_t ns)
+{
+    return 2 * ns + 3;
+}
+
+static size_t state_1(size_t ns)
+{
+    return ns;
+}
+
+static size_t state_2(size_t ns)
+{
+    return 2 * ns;
+}
+
+static size_t state_3(size_t ns)
+{
+    return 3 * ns;
+}
+
+/* The name of parameter j of the type, into buf[32]: kt, mun (mu), or k[s], phi[s] (mu[s]) of
+ * a family, then kn, n0, gap. */
+static const char *param_name(const fricreg_element_type *type, size_t j, char buf[32])
+{
+    static const char *const normal_law[3] = {"kn", "n0", "gap"};
+    const struct fr_element_kind *kind = type->kind;
+    size_t ns = type->ns;
+    if (j >= 2 * ns)
+        return normal_law[j - 2 * ns];
+    const char *bound = kind->normal ? "mu" : (kind->family ? "phi" : "mun");
+    const char *base = j < ns ? (kind->family ? "k" : "kt") : bound;
+    if (kind->family)
+        snprintf(buf, 32, "%s[%zu]", base, j % ns);
+    else
+        snprintf(buf, 32, "%s", base);
+    return buf;
+}
+
+/* The parameters: finite, in range, and sums that stay finite. */
+static int check_params(const fricreg_element_type *type, const double *p, char *msg, size_t len)
+{
+    const struct fr_element_kind *kind = type->kind;
+    size_t ns = type->ns, np = kind->nparams(ns);
+    char buf[32], buf2[32];
+    for (size_t j = 0; j < np; j++)
+        if (!isfinite(p[j]))
+            return fr_element_say(FRICREG_ENONFINITE, msg, len, "%s: %s = %g (params[%zu])",
+                                  kind->name, param_name(type, j, buf), p[j], j);
+    double sum_k = 0.0, sum_b = 0.0;
+    for (size_t s = 0; s < ns; s++) {
+        if (!(p[s] > 0.0) || !(p[ns + s] >= 0.0))
+            return fr_element_say(FRICREG_EINVAL, msg, len,
+                                  "%s: %s = %g must be > 0 and %s = %g >= 0", kind->name,
+                                  param_name(type, s, buf), p[s], param_name(type, ns + s, buf2),
+                                  p[ns + s]);
+        sum_k += p[s];
+        sum_b += p[ns + s];
+    }
+    if (!isfinite(sum_k) || !isfinite(sum_b))
+        return fr_element_say(FRICREG_ENONFINITE, msg, len,
+                              "%s: the sliders' stiffnesses or bounds sum beyond the largest "
+                              "double",
+                              kind->name);
+    if (!kind->normal)
+        return FRICREG_OK;
+    double kn = p[2 * ns], n0 = p[2 * ns + 1], gap = p[2 * ns + 2];
+    if (!(kn >= 0.0))
+        return fr_element_say(FRICREG_EINVAL, msg, len, "%s: kn = %g must be >= 0", kind->name, kn);
+    if (n0 != 0.0 && gap != 0.0)
+        return fr_element_say(FRICREG_EINVAL, msg, len,
+                              "%s: n0 = %g and gap = %g: a preload or a gap, not both", kind->name,
+                              n0, gap);
+    if (!isfinite(sum_b * kn))
+        return fr_element_say(FRICREG_ENONFINITE, msg, len,
+                              "%s: the bounds' slope sum(mu) kn = %g overflows", kind->name,
+                              sum_b * kn);
+    return FRICREG_OK;
+}
+
+/* The displacement and its intermediates: u finite, each u_t - w_s, the normal force and the
+ * scaled bounds finite. */
+static int check_u(const fricreg_element_type *type, const double *p, const double *w,
+                   const double *u, char *msg, size_t len)
+{
+    const struct fr_element_kind *kind = type->kind;
+    int dim = kind->dim, td = dim - kind->normal;
+    size_t ns = type->ns;
+    for (int a = 0; a < dim; a++)
+        if (!isfinite(u[a]))
+            return fr_element_say(FRICREG_ENONFINITE, msg, len, "%s: u[%d] = %g", kind->name, a,
+                                  u[a]);
+    for (size_t s = 0; s < ns; s++) {
+        double d[3];
+        for (int a = 0; a < td; a++)
+            d[a] = u[a] - w[(size_t)td * s + (size_t)a];
+        if (!isfinite(fr_slider_norm(d, td)))
+            return fr_element_say(FRICREG_ENONFINITE, msg, len,
+                                  "%s: u - w of slider %zu overflows (u[0] = %g, w = %g)",
+                                  kind->name, s, u[0], w[(size_t)td * s]);
+    }
+    if (!kind->normal)
+        return FRICREG_OK;
+    double kn = p[2 * ns], n0 = p[2 * ns + 1], gap = p[2 * ns + 2], gg = u[td] - gap;
+    double nc = n0 + kn * gg, sum_b = 0.0;
+    for (size_t s = 0; s < ns; s++)
+        sum_b += p[ns + s];
+    if (!isfinite(gg) || !isfinite(nc) || !isfinite(sum_b * fmax(0.0, nc)) ||
+        !isfinite(sum_b * fabs(gg)))
+        return fr_element_say(FRICREG_ENONFINITE, msg, len,
+                              "%s: the normal force n0 + kn (g - gap) = %g (g = %g) or the "
+                              "bounds mu N overflow",
+                              kind->name, nc, u[td]);
+    return FRICREG_OK;
+}
+
+static int check(const fricreg_element_type *type, const double *params, const double *state,
+                 const double *u, char *msg, size_t len)
+{
+    int status = check_params(type, params, msg, len);
+    if (status != FRICREG_OK || state == NULL)
+        return status;
+    size_t nstate = type->kind->nstate(type->ns);
+    for (size_t i = 0; i < nstate; i++)
+        if (!isfinite(state[i]))
+            return fr_element_say(FRICREG_ENONFINITE, msg, len, "%s: state[%zu] = %g",
+                                  type->kind->name, i, state[i]);
+    return u == NULL ? FRICREG_OK : check_u(type, params, state, u, msg, len);
+}
+
+/* The normal law's columns of dfdp (kn, n0, gap) from sum_n = sum over slipping sliders of
+ * mu_s n_s, while closed. */
+static void normal_columns(const double *p, size_t ns, int td, double gg, const double *sum_n,
+                           double *dfdp)
+{
+    size_t np = 2 * ns + 3, j = 2 * ns;
+    double kn = p[j];
+    for (int a = 0; a <= td; a++) {
+        double dn0 = a < td ? sum_n[a] : 1.0;
+        dfdp[np * (size_t)a + j] = gg * dn0;
+        dfdp[np * (size_t)a + j + 1] = dn0;
+        dfdp[np * (size_t)a + j + 2] = -kn * dn0;
+    }
+}
+
+static void eval(const fricreg_element_type *type, const double *p, const double *state_in,
+                 const double *u, double *f, double *dfdu, double *dfdp, double *state_out)
+{
+    const struct fr_element_kind *kind = type->kind;
+    int dim = kind->dim, td = dim - kind->normal;
+    size_t ns = type->ns, np = kind->nparams(ns), nstate = kind->nstate(ns);
+    double N = 1.0, kn = 0.0, gg = 0.0;
+    int open = 0;
+    if (kind->normal) {
+        kn = p[2 * ns];
+        gg = u[td] - p[2 * ns + 2];
+        double nc = p[2 * ns + 1] + kn * gg;
+        open = nc < 0.0;
+        N = fmax(0.0, nc);
+    }
+    double ft[3] = {0.0, 0.0, 0.0}, t[9] = {0.0}, tg[3] = {0.0, 0.0, 0.0},
+           sum_n[3] = {0.0, 0.0, 0.0};
+    double w_new[3 * FRICREG_ELEMENT_MAX_SLIDERS];
+    if (dfdp != NULL)
+        memset(dfdp, 0, (size_t)dim * np * sizeof *dfdp);
+    for (size_t s = 0; s < ns; s++) {
+        const double *wc = &state_in[(size_t)td * s];
+        double fs[3], ts[9], tgs[3];
+        if (open) {
+            fr_slider_separated(td, u, fs, &w_new[(size_t)td * s], ts, tgs);
+        } else {
+            double b = kind->normal ? p[ns + s] * N : p[ns + s];
+            double dbdg = kind->normal ? p[ns + s] * kn : 0.0;
+            int slip = fr_slider_return(p[s], b, dbdg, td, u, wc, fs, &w_new[(size_t)td * s], ts,
+                                        tgs);
+            if (dfdp != NULL) {
+                double d[3] = {0.0, 0.0, 0.0};
+                for (int a = 0; a < td; a++)
+                    d[a] = u[a] - wc[a];
+                double r = fr_slider_norm(d, td);
+                for (int a = 0; a < td; a++) {
+                    if (slip) {
+                        dfdp[np * (size_t)a + ns + s] = kind->normal ? N * (d[a] / r) : d[a] / r;
+                        sum_n[a] += p[ns + s] * (d[a] / r);
+                    } else {
+                        dfdp[np * (size_t)a + s] = d[a];
+                    }
+                }
+            }
+        }
+        for (int a = 0; a < td; a++) {
+            ft[a] += fs[a];
+            tg[a] += tgs[a];
+        }
+        for (int a = 0; a < td * td; a++)
+            t[a] += ts[a];
+    }
+    if (dfdp != NULL && kind->normal && !open)
+        normal_columns(p, ns, td, gg, sum_n, dfdp);
+    for (int a = 0; a < td; a++)
+        f[a] = ft[a];
+    if (kind->normal)
+        f[td] = N;
+    if (dfdu != NULL) {
+        memset(dfdu, 0, (size_t)(dim * dim) * sizeof *dfdu);
+        for (int a = 0; a < td; a++) {
+            for (int c = 0; c < td; c++)
+                dfdu[dim * a + c] = t[td * a + c];
+            if (kind->normal)
+                dfdu[dim * a + td] = tg[a];
+        }
+        if (kind->normal)
+            dfdu[dim * td + td] = open ? 0.0 : kn;
+    }
+    memcpy(state_out, w_new, nstate * sizeof *state_out);
+}
+
+/* One kind per line: name, dim, normal, family, sizes. */
+#define FR_SLIDER_KIND(id, dim, normal, family, params, state)                     \
+    const struct fr_element_kind fr_element_##id = {#id,    dim,   normal, family, \
+                                                    params, state, check,  eval};
+
+FR_SLIDER_KIND(jenkins, 1, 0, 0, params_plain, state_1)
+FR_SLIDER_KIND(jenkins_2d, 2, 0, 0, params_plain, state_2)
+FR_SLIDER_KIND(jenkins_3d, 3, 0, 0, params_plain, state_3)
+FR_SLIDER_KIND(jenkins_normal, 2, 1, 0, params_normal, state_1)
+FR_SLIDER_KIND(contact_3d, 3, 1, 0, params_normal, state_2)
+FR_SLIDER_KIND(iwan, 1, 0, 1, params_plain, state_1)
+FR_SLIDER_KIND(iwan_2d, 2, 0, 1, params_plain, state_2)
+FR_SLIDER_KIND(iwan_normal, 2, 1, 1, params_normal, state_1)
