@@ -919,23 +919,42 @@ printf '%s\n' "%%MatrixMarket matrix coordinate real general" "1 1 1" "1 1 1" >"
 echo "2 3" >"$d/P.txt"
 nma="nma --mass $d/M.mtx --stiffness $d/M.mtx --jenkins $d/J.mtx --jenkins-params $d/P.txt --harmonics 1 --amplitude-start 0.5 --amplitude-end 500"
 total=$((total + 1))
-"$sim" $nma --points 12 --output backbone >"$d/backbone.csv" 2>"$d/err"
-if [ "$(head -n 1 "$d/backbone.csv")" != "amplitude,omega,zeta" ] || ! awk -F, 'NR > 1 { a = $1; w2 = 3; z = 0
+# closed_form_rows FILE ROWS: FILE is the backbone's CSV with ROWS rows, each on the closed form.
+closed_form_rows() {
+    [ "$(head -n 1 "$1")" = "amplitude,omega,zeta" ] && awk -F, -v want="$2" 'NR > 1 { a = $1; w2 = 3; z = 0
         if (a > 1.5) { c = 1 - 3 / a; b = atan2(sqrt(1 - c * c), c); pi = atan2(0, -1)
             w2 = 1 + 2 / pi * (b - sin(2 * b) / 2); z = 12 * (a - 1.5) / (2 * pi * a * a * w2) }
         e = ($2 * $2 - w2) / w2; if (e < 0) e = -e; if (e > big) big = e
         e = $3 - z; if (e < 0) e = -e; if (e > 1e-9 * (z > 0 ? z : 1)) bad++; rows++ }
-        END { exit !(rows == 12 && big < 1e-9 && !bad) }' "$d/backbone.csv"; then
+        END { exit !(rows == want && big < 1e-9 && !bad) }' "$1"
+}
+"$sim" $nma --points 12 --output backbone >"$d/backbone.csv" 2>"$d/err"
+if ! closed_form_rows "$d/backbone.csv" 12; then
     echo "FAIL: nma backbone against the closed form: $(head -n 4 "$d/backbone.csv") $(cat "$d/err")"; fails=$((fails + 1))
 fi
 total=$((total + 1))
-if "$sim" $nma --max-seconds 0 >"$d/stopped.json" 2>"$d/err" || [ $? -ne 1 ] || [ -s "$d/stopped.json" ] ||
+# A march that fails writes what it reached: no point here, the summary saying so.
+if "$sim" $nma --max-seconds 0 >"$d/stopped.json" 2>"$d/err" || [ $? -ne 1 ] ||
+        ! grep -q '"points": 0, "complete": false, "error": "nma: stopped' "$d/stopped.json" ||
         ! grep -q "^fricreg-sim: nma: --max-seconds 0 passed: stopped (the backbone had reached 0 of its 20 points)$" "$d/err"; then
     echo "FAIL: nma --max-seconds 0: $(cat "$d/stopped.json" "$d/err")"; fails=$((fails + 1))
 fi
+# Two Newton iterations a point reach 4 of 12 points (the fifth, at a = 3.29, needs more): those
+# four rows, each on the closed form, then the failure on stderr and exit status 1.
+total=$((total + 1))
+if "$sim" $nma --points 12 --newton-max 2 --output backbone >"$d/part.csv" 2>"$d/err" || [ $? -ne 1 ] ||
+        ! closed_form_rows "$d/part.csv" 4 ||
+        ! grep -q "^fricreg-sim: nma: the backbone failed after 4 of its 12 points: nma: Newton did not converge in 2 iterations" "$d/err"; then
+    echo "FAIL: nma --newton-max 2, the points reached: $(cat "$d/part.csv" "$d/err")"; fails=$((fails + 1))
+fi
+total=$((total + 1))
+if "$sim" $nma --points 12 --newton-max 2 >"$d/part.json" 2>"$d/err" || [ $? -ne 1 ] ||
+        ! grep -q '"points": 4, "first": {"amplitude": 0.5,.*"complete": false, "error": "nma: Newton did not converge' "$d/part.json"; then
+    echo "FAIL: nma --newton-max 2, the summary: $(cat "$d/part.json" "$d/err")"; fails=$((fails + 1))
+fi
 total=$((total + 1))
 "$sim" $nma >"$d/summary.json" 2>"$d/err"
-if ! grep -q '"command": "nma".*"first": {"amplitude": 0.5, "omega": 1.73205080756887[0-9]*, "zeta": 0}' "$d/summary.json"; then
+if ! grep -q '"command": "nma".*"first": {"amplitude": 0.5, "omega": 1.73205080756887[0-9]*, "zeta": 0}.*"complete": true, "cpu' "$d/summary.json"; then
     echo "FAIL: nma summary: $(cat "$d/summary.json" "$d/err")"; fails=$((fails + 1))
 fi
 expect_output '^usage: fricreg-sim nma --mass M\.mtx --stiffness K\.mtx' nma --help

@@ -210,6 +210,8 @@ void cli_json_warnings(FILE *out, const struct cli_warnings *w);
 /* json_out.c: a number as JSON, %.17g or null where it is not finite; ", \"NAME\": [a_0, ...]". */
 void cli_json_number(FILE *out, double x);
 void cli_json_array(FILE *out, const char *name, size_t n, const double a[]);
+/* TEXT as a JSON string, quoted, its quotes, backslashes and control characters escaped. */
+void cli_json_string(FILE *out, const char *text);
 
 /* output.c */
 void cli_write_summary(FILE *out, const struct cli_summary *s);

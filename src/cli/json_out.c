@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* json_out.c — the numbers of fricreg-sim's JSON summaries (cli.h). */
+/* json_out.c — the numbers and strings of fricreg-sim's JSON summaries (cli.h). */
 #include <math.h>
 #include <stdio.h>
 
@@ -20,4 +20,20 @@ void cli_json_array(FILE *out, const char *name, size_t n, const double a[])
         cli_json_number(out, a[i]);
     }
     fprintf(out, "]");
+}
+
+/* The library's messages are plain text, but quotes, backslashes and control characters are
+ * escaped all the same. */
+void cli_json_string(FILE *out, const char *text)
+{
+    fputc('"', out);
+    for (const unsigned char *c = (const unsigned char *)text; *c; c++) {
+        if (*c == '"' || *c == '\\')
+            fprintf(out, "\\%c", *c);
+        else if (*c < 0x20)
+            fprintf(out, "\\u%04x", *c);
+        else
+            fputc(*c, out);
+    }
+    fputc('"', out);
 }

@@ -108,8 +108,10 @@ static void write_backbone(FILE *out, size_t K, const double pts[])
         fprintf(out, "%.17g,%.17g,%.17g\n", pts[3 * k], pts[3 * k + 1], pts[3 * k + 2]);
 }
 
+/* The summary; error is NULL for a complete backbone, else the failure's message (the points
+ * are those reached). */
 static void write_summary(FILE *out, const struct nma_options *o, const struct cli_hb_model *md,
-                          size_t K, const double pts[], double cpu)
+                          size_t K, const double pts[], double cpu, const char *error)
 {
     size_t top = 0;
     for (size_t k = 1; k < K; k++)
@@ -122,37 +124,45 @@ static void write_summary(FILE *out, const struct nma_options *o, const struct c
             o->linear_damping == FRICREG_HB_NMA_DAMPING_MODAL ? "modal" : "matrix", K);
     const char *names[3] = {"first", "last", "zeta_max"};
     size_t at[3] = {0, K - 1, top};
-    for (int j = 0; j < 3; j++)
+    for (int j = 0; j < 3 && K > 0; j++)
         fprintf(out, ", \"%s\": {\"amplitude\": %.17g, \"omega\": %.17g, \"zeta\": %.17g}",
                 names[j], pts[3 * at[j]], pts[3 * at[j] + 1], pts[3 * at[j] + 2]);
+    fprintf(out, ", \"complete\": %s", error == NULL ? "true" : "false");
+    if (error != NULL) {
+        fputs(", \"error\": ", out);
+        cli_json_string(out, error);
+    }
     fprintf(out, ", \"cpu_seconds\": %.6f}\n", cpu);
 }
 
+/* The backbone, written whole or, when the march fails, up to the failure (the points the
+ * library kept), the failure then said on stderr and in the summary. */
 static int run_nma(fricreg_hb *hb, struct nma_options *o, const struct cli_hb_model *md, FILE *out)
 {
     if ((size_t)o->mode > md->n)
         return cli_usage_error("--mode", "beyond the structure's modes (one per dof)");
     clock_t start = clock();
     cli_deadline_start(&o->deadline, hb);
-    int status = fricreg_hb_nma(hb, (size_t)o->mode - 1, o->linear_damping, o->a0, o->a1,
-                                (size_t)o->points);
+    int run = fricreg_hb_nma(hb, (size_t)o->mode - 1, o->linear_damping, o->a0, o->a1,
+                             (size_t)o->points);
     double cpu = (double)(clock() - start) / CLOCKS_PER_SEC;
-    if (status != FRICREG_OK) {
-        char progress[96];
-        snprintf(progress, sizeof progress, "the backbone had reached %zu of its %d points",
-                 fricreg_hb_nma_points(hb), o->points);
-        if (!cli_deadline_report(&o->deadline, "nma", progress))
-            fprintf(stderr, "fricreg-sim: nma: the backbone failed: %s\n", fricreg_hb_errmsg(hb));
-        return CLI_EXIT_RUN;
-    }
     size_t K = 0;
     double *pts = NULL;
-    status = collect(hb, &K, &pts);
+    int status = collect(hb, &K, &pts);
     if (status == 0 && o->output == NMA_BACKBONE)
         write_backbone(out, K, pts);
     else if (status == 0)
-        write_summary(out, o, md, K, pts, cpu);
+        write_summary(out, o, md, K, pts, cpu, run == FRICREG_OK ? NULL : fricreg_hb_errmsg(hb));
     free(pts);
+    if (status == 0 && run != FRICREG_OK) {
+        char progress[96];
+        snprintf(progress, sizeof progress, "the backbone had reached %zu of its %d points", K,
+                 o->points);
+        if (!cli_deadline_report(&o->deadline, "nma", progress))
+            fprintf(stderr, "fricreg-sim: nma: the backbone failed after %zu of its %d points: %s\n",
+                    K, o->points, fricreg_hb_errmsg(hb));
+        status = CLI_EXIT_RUN;
+    }
     return status;
 }
 

@@ -5,30 +5,14 @@
 
 #include "cli.h"
 
-/* A JSON string: the library's messages are plain text, but quotes, backslashes and control
- * characters are escaped all the same. */
-static void json_string(FILE *out, const char *text)
-{
-    fputc('"', out);
-    for (const unsigned char *c = (const unsigned char *)text; *c; c++) {
-        if (*c == '"' || *c == '\\')
-            fprintf(out, "\\%c", *c);
-        else if (*c < 0x20)
-            fprintf(out, "\\u%04x", *c);
-        else
-            fputc(*c, out);
-    }
-    fputc('"', out);
-}
-
 void cli_json_warnings(FILE *out, const struct cli_warnings *w)
 {
     fputs(", \"warnings\": [", out);
     for (size_t k = 0; w != NULL && k < w->n; k++) {
         fprintf(out, "%s{\"code\": ", k ? ", " : "");
-        json_string(out, fricreg_warning_name(w->code[k]));
+        cli_json_string(out, fricreg_warning_name(w->code[k]));
         fputs(", \"message\": ", out);
-        json_string(out, w->message[k]);
+        cli_json_string(out, w->message[k]);
         fputc('}', out);
     }
     fputc(']', out);
