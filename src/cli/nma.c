@@ -159,8 +159,9 @@ static int run_nma(fricreg_hb *hb, struct nma_options *o, const struct cli_hb_mo
         snprintf(progress, sizeof progress, "the backbone had reached %zu of its %d points", K,
                  o->points);
         if (!cli_deadline_report(&o->deadline, "nma", progress))
-            fprintf(stderr, "fricreg-sim: nma: the backbone failed after %zu of its %d points: %s\n",
-                    K, o->points, fricreg_hb_errmsg(hb));
+            fprintf(stderr,
+                    "fricreg-sim: nma: the backbone failed after %zu of its %d points: %s\n", K,
+                    o->points, fricreg_hb_errmsg(hb));
         status = CLI_EXIT_RUN;
     }
     return status;
