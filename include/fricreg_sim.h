@@ -396,7 +396,7 @@ FRICREG_API int fricreg_sim_get_stick_fraction(const fricreg_sim *sim, size_t m,
  *    and the first companion agree on a wrong value; or differences that grow or change
  *    sign) the safe bound err = 6.83 (|d1| + |d2|), and fricreg_sim_warning_count raises
  *    FRICREG_WARN_NOT_ASYMPTOTIC; d2 below 1e-9 of D gives 2 |d1| + |d2|, d1 and d2 both
- *    below it |d1| + |d2|. On the oscillator against the exact solver
+ *    below it 4 (|d1| + |d2|) (the factor 2 and p = 1's tail; their bare sum before 1.8). On the oscillator against the exact solver
  *    (tests/test_error_estimate.c) within 1x ... 10x of the error in the asymptotic range.
  *  - on = FRICREG_ESTIMATE_ONE_COMPANION (2), 1.6's estimator: the level-1 companion only,
  *    err = 3 |d1|: 2x the difference is p = 1's factor, 3 the margin the calibration of

@@ -973,7 +973,7 @@ FRICREG_API int fricreg_structure_get_value(const fricreg_structure *s, int whic
  *  (a stall: the run and the first companion agree on a wrong value; or differences that
  *  grow or change sign) err = 6.83 (|d1| + |d2|) and fricreg_structure_warning_count raises
  *  FRICREG_WARN_NOT_ASYMPTOTIC; d2 below 1e-9 of q gives 2 |d1| + |d2|, d1 and d2 both below
- *  it |d1| + |d2|. With on = FRICREG_ESTIMATE_ONE_COMPANION (2), 1.6's estimator:
+ *  it 4 (|d1| + |d2|) (the factor 2 and p = 1's tail; their bare sum before 1.8). With on = FRICREG_ESTIMATE_ONE_COMPANION (2), 1.6's estimator:
  *  err = 3 |d1| (fricreg_sim_set_error_estimate's, with its calibration), which cannot see a
  *  stall (bench/frame_estimate.c: a frame 5x under, no warning).
  *  The companion is a second structure, owned by s, stepped alongside it; the second
