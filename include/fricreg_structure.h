@@ -998,12 +998,12 @@ FRICREG_API int fricreg_structure_get_value(const fricreg_structure *s, int whic
  *    (applied at / 16 there, as run_ode's rule from eps). Every other setter after
  *    the companion was made (the model matrices, Rayleigh, influence, scheme, elements) ends the
  *    estimate until the next set_initial: the getters then return FRICREG_EINVAL.
- *  The peaks are sampled at every fixed step's end (step, run, run_ode with fixed steps) and at
- *  each run_ode call's end (adaptive: call run_ode once per sampling interval, as CVODE's tout,
- *  to sample every interval). With fixed steps the companion samples twice as often, so the
- *  peaks' estimate includes the sampling error; an adaptive companion samples at the same
- *  times, so it does not (sample finer than the error sought: the test's oscillator sampled
- *  every 0.01 s misses its peak by 6.4e-7 with an estimate of 0).
+ *  The peaks take in every step, fixed or adaptive, with the turning points inside it
+ *  (fricreg_structure_get_peak_displacement), so they converge at the scheme's order or the
+ *  adaptive tolerance and not with the phase of the samples; before 1.8 an adaptive run was
+ *  sampled at its run_ode calls' ends only, which its companions shared: the estimate missed
+ *  that sampling error (the frame of bench/frame_estimate.c under rkf45 at rtol 1e-6 called
+ *  every 0.02 s: storey 1's peak 1.25e-5 off, now 7.6e-8, whatever the interval).
  *  Where a companion fails (e.g. FRICREG_ESTEP or FRICREG_EWORK at its finer setting, or no
  *  memory) s's run still succeeds, the estimates become +infinity until the next set_initial, and
  *  fricreg_structure_warning_count raises FRICREG_WARN_ERROR_ESTIMATE with the companion's
@@ -1026,8 +1026,9 @@ FRICREG_API int fricreg_structure_set_error_estimate(fricreg_structure *s, int o
  *  _run_ode with fixed steps), its end and the turning points of u_i inside it, on the cubic
  *  Hermite interpolant of the step's ends (u and u' at both; for Newmark's average
  *  acceleration the scheme's own quadratic), so the peak converges at the scheme's order
- *  (since 1.7; 1.6 took the step ends only); every adaptive fricreg_structure_run_ode call's
- *  end (its adaptive steps in between are not sampled); into peak[ndof] (length units).
+ *  (since 1.7; 1.6 took the step ends only); every adaptive step of fricreg_structure_run_ode
+ *  likewise, its end and its turning points on that step's Hermite interpolant (since 1.8;
+ *  before, only each run_ode call's end); into peak[ndof] (length units).
  *  Tracked whether or not the error estimate is on. Since 1.6 (FRICREG_1.6).
  *  Returns FRICREG_OK; FRICREG_ENULL if s or peak is NULL; FRICREG_ESIZE if ndof is not the
  *  structure's. */

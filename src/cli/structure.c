@@ -209,7 +209,9 @@ static size_t structure_table(struct structure_options *o, struct cli_option tab
          .help = "the law's regularization, m/s",
          .dflt = "1 % of the ground's peak velocity; 1e-3 without a record"},
         {"--dt", CLI_POSITIVE, .slot = &o->dt, .meta = "STEP",
-         .help = "time step, s; with --rtol the first (required)", .dflt = ""},
+         .help = "time step, s; with --rtol the output interval, the GSL stepper's first step "
+                 "(its steps in between are adaptive) (required)",
+         .dflt = ""},
         {"--t-end", CLI_POSITIVE, .slot = &o->t_end, .meta = "T",
          .help = "end time, s; the last step lands on it (required)", .dflt = ""},
         {"--rtol", CLI_NONNEGATIVE, .slot = &o->rtol, .meta = "R",

@@ -8,8 +8,8 @@
  * The estimate of each quantity from q, q2 = q(eps / 2), q4 = q(eps / 4) is
  * base/companion_estimate.c's, fricreg_sim's too: Richardson's correction with the observed
  * order in range, a safe bound below it (FRICREG_WARN_NOT_ASYMPTOTIC for a dissipation; a
- * peak gets the bound without the warning: an adaptive run's is sampled at its calls' ends,
- * with the phase of the samples, not at an order); one companion (1.6's): 3 |q - q2|.
+ * peak gets the bound without the warning, see peak_estimate); one companion (1.6's):
+ * 3 |q - q2|.
  *
  * The second companion is the first's own companion: the first runs with the estimate on and
  * one companion, so every change passed on to the first reaches the second the same way. It
@@ -235,9 +235,10 @@ static const fricreg_structure *second(const fricreg_structure *s)
     return c->estimate_state == FR_ESTIMATE_ACTIVE ? c->companion : c;
 }
 
-/* A peak out of range gets the safe bound without the warning: a fixed step's peak takes in
- * the turning points between the ends (peak.c) and converges at the scheme's order, but an
- * adaptive run's is sampled at its calls' ends, with the samples' phase, not at an order. */
+/* A peak out of range gets the safe bound without the warning. Every step's peak takes in
+ * the turning points between its ends (peak.c), so a peak converges at an order as a
+ * dissipation does; its order test is not yet a warning because the warning itself is to
+ * become the estimate's kind (asymptotic or bound) rather than an alarm. */
 static double peak_estimate(const fricreg_structure *s, size_t i)
 {
     int ignored = 0;

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* peak.c — the peak displacements max_t |u_i(t)| (fricreg_structure_get_peak_displacement):
- * a step's end, and inside a fixed step the turning point of u_i on the cubic Hermite
+ * a step's end, and inside a step (fixed or adaptive) the turning point of u_i on the cubic Hermite
  * interpolant of its ends (u, v at both), where v_i changes sign.
  *
  * Why between the samples: a maximum taken at the step ends alone falls short of the

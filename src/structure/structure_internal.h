@@ -213,8 +213,7 @@ struct fricreg_structure {
     double ode_rtol_max;   /* the largest rtol of those calls (0: none) */
 
     /* The largest |u_i| since set_initial (fricreg_structure_get_peak_displacement): every
-     * fixed step's end and its turning points between the ends (peak.c), every adaptive
-     * run_ode call's end. [n] */
+     * step's end, fixed or adaptive, and its turning points between the ends (peak.c). [n] */
     double *peak;
     /* The error estimate (error_estimate.c): a companion structure at eps / 2 stepped alongside
      * at half the step (or tolerances / 16), made at the run's first step; with two companions

@@ -173,9 +173,9 @@ static int integrate(fricreg_structure *s, struct ode_run *run, gsl_odeiv2_drive
                            "run_ode: the state at t = %.17g is beyond "
                            "1e100: the step is unstable; reduce dt",
                            t);
-        /* accept: the structure's state follows the integration */
-        if (!adaptive)
-            fr_peak_step(s, y, y + s->n, t - s->t);
+        /* accept: the structure's state follows the integration; the peaks take in the step's
+         * end and its turning points, adaptive steps as fixed ones (peak.c) */
+        fr_peak_step(s, y, y + s->n, t - s->t);
         memcpy(s->u->data, y, s->n * sizeof *y);
         memcpy(s->v->data, y + s->n, s->n * sizeof *y);
         s->energy.input = y[2 * s->n];
@@ -317,7 +317,6 @@ int fr_structure_run_ode_plain(fricreg_structure *s, int integrator, double dt, 
     free(run.jac_work);
     if (s->t == t_start)
         return status; /* nothing accepted (and a run ends after its start) */
-    fr_peak_sample(s); /* an adaptive run is sampled at the call's end (a fixed one each step) */
     if (s->fresh)
         s->energy.initial = initial;
     s->fresh = 0;
