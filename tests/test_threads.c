@@ -11,7 +11,7 @@
  * rk4), a simulation (a different system and stepper family per thread: fricreg's rk4, GSL's
  * rkf45, rk4imp, msbdf), an exact solution, a harmonic-balance driver (dense or sparse, with
  * Hill's stability, a monitor, a continuation, the truncation error and a backbone), an Iwan
- * element and an AFT object; every result and status must equal, bit for
+ * element, an AFT object and an element type on the thread's own arrays; every result and status must equal, bit for
  * bit, the same work done before in one thread, and every status the one expected. Meanwhile a ninth
  * thread provokes GSL_ERRORS errors of its own (Cholesky of an indefinite matrix) and its
  * handler must see every one: a library that switches GSL's process-wide handler off around
@@ -30,6 +30,7 @@
 
 #include "fricreg_disk_ctx.h"
 #include "fricreg_aft.h"
+#include "fricreg_element.h"
 #include "fricreg_exact.h"
 #include "fricreg_hb.h"
 #include "fricreg_iwan.h"
@@ -356,7 +357,8 @@ static void hb_work(int k, struct results *r)
 }
 
 /* The joints' own objects k: a 2-D Iwan element of 4 sliders stepped round a circle (trial,
- * commit), and an AFT object's exact Jenkins, Iwan and lift-off forces with their Jacobians. */
+ * commit), an AFT object's exact Jenkins, Iwan and lift-off forces with their Jacobians, and
+ * the contact_3d element type stepped on the thread's own state. */
 static void joint_work(int k, struct results *r)
 {
     const double ks[4] = {1.0, 2.0, 3.0, 4.0 + k}, phi[4] = {0.1, 0.2, 0.3, 0.4};
@@ -384,6 +386,17 @@ static void joint_work(int k, struct results *r)
            FRICREG_OK);
     put_all(r, f, 3), put_all(r, nf, 3), put(r, jac[0]);
     fricreg_aft_free(aft);
+    /* an element type on the thread's own arrays (fricreg_element.h: pure, any thread):
+     * contact_3d round a circle, lifting off and closing again */
+    const fricreg_element_type *ct = fricreg_element_lookup("contact_3d");
+    double pc[5] = {10.0, 0.5, 4.0, 1.0 + 0.1 * k, 0.0}, w[2] = {0.0, 0.0}, fc[3], tc[9];
+    int failed = 0;
+    for (int step = 0; step < 40; step++) {
+        double uc[3] = {0.3 * cos(0.2 * step), 0.3 * sin(0.2 * step), 0.3 * sin(0.1 * step)};
+        failed += fricreg_element_eval(ct, pc, w, uc, fc, tc, NULL, w) != FRICREG_OK;
+    }
+    expect(r, failed, 0);
+    put_all(r, fc, 3);
 }
 
 static void work(int k, struct results *r)
@@ -447,9 +460,9 @@ START_TEST(threads_match_one_thread)
          * 12 df + lambda = 37; Stribeck context 3 f + 2 x 9 tangent + lambda + 3 f = 25; 2-D
          * context 2 x (6 f + 2 x 36 tangent) = 156; structure 2 x (2 u + 2 v + D) + the
          * residual = 11; simulation 4; exact 7; harmonic balance 4 q + 3 x + 3 errors +
-         * points + Omega + 3 rms + omega + zeta + monitor's calls = 18; Iwan 4 x 2 f and AFT
-         * 3 x (3 f + jac) + 3 nf = 23 */
-        ck_assert_int_eq(reference[k].n, 7 + 37 + 25 + 156 + 11 + 4 + 7 + 18 + 23);
+         * points + Omega + 3 rms + omega + zeta + monitor's calls = 18; Iwan 4 x 2 f, AFT
+         * 3 x (3 f + jac) + 3 nf and contact_3d's 3 f = 26 */
+        ck_assert_int_eq(reference[k].n, 7 + 37 + 25 + 156 + 11 + 4 + 7 + 18 + 26);
         ck_assert_msg(reference[k].unexpected == 0, "thread %d: %d unexpected statuses", k,
                       reference[k].unexpected);
     }
