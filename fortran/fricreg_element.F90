@@ -124,8 +124,10 @@ contains
     real(c_double), intent(in), contiguous :: params(:)
     real(c_double), intent(inout), contiguous :: state(:)
     integer(c_int) :: status
+    integer :: nst
+    nst = self%nstate()
     status = el_ready(self, 'init', params)
-    if (status == FRICREG_OK .and. size(state) /= self%nstate()) then
+    if (status == FRICREG_OK .and. size(state) /= nst) then
       status = FRICREG_ESIZE
       self%msg = 'init: state must have nstate numbers'
     end if
@@ -145,13 +147,14 @@ contains
     real(c_double), intent(inout), contiguous, optional :: dfdu(:, :), dfdp(:, :)
     integer(c_int) :: status
     real(c_double), allocatable :: tu(:), tp(:)
-    integer :: d, np
+    integer :: d, np, nst, a
     status = el_ready(self, 'eval', params)
     if (status /= FRICREG_OK) return
     d = self%dim()
     np = self%nparams()
-    if (size(state_in) /= self%nstate() .or. size(state_out) /= self%nstate() .or. &
-        size(u) /= d .or. size(f) /= d) status = FRICREG_ESIZE
+    nst = self%nstate()
+    if (size(state_in) /= nst .or. size(state_out) /= nst .or. size(u) /= d .or. &
+        size(f) /= d) status = FRICREG_ESIZE
     if (present(dfdu)) then
       if (size(dfdu, 1) /= d .or. size(dfdu, 2) /= d) status = FRICREG_ESIZE
     end if
@@ -176,9 +179,11 @@ contains
       status = el_explained(self, 'eval', params, state_in, u)
       return
     end if
-    ! C's row-major (a, c) at c + d (a - 1) is Fortran's transpose
-    if (present(dfdu)) dfdu = transpose(reshape(tu, [d, d]))
-    if (present(dfdp)) dfdp = transpose(reshape(tp, [np, d]))
+    ! C's row-major (a, c) sits at c + d (a - 1): Fortran's transpose
+    do a = 1, d
+      if (present(dfdu)) dfdu(a, :) = tu(d * (a - 1) + 1:d * a)
+      if (present(dfdp)) dfdp(a, :) = tp(np * (a - 1) + 1:np * a)
+    end do
   end function el_eval
 
   !> The message of the last failed call ('' if none failed).
