@@ -12,12 +12,13 @@
 #include "base/newton_loop.h"
 #include "corrector.h"
 
-/* The sign of the determinant of the LU factor in A (order ld, pivots piv2). */
+/* The sign of the determinant of the LU factor in A (order ld, pivots piv2): det A = det A^T,
+ * U's diagonal's signs times -1 for each interchange (LAPACK's pivots count from 1). */
 double fr_hb_det_sign(const fricreg_hb *hb, size_t ld)
 {
     double sign = 1.0;
     for (size_t k = 0; k < ld; k++)
-        sign *= (hb->A[k * ld + k] < 0.0 ? -1.0 : 1.0) * (hb->piv2[k] != k ? -1.0 : 1.0);
+        sign *= (hb->A[k * ld + k] < 0.0 ? -1.0 : 1.0) * (hb->piv2[k] != (int)k + 1 ? -1.0 : 1.0);
     return sign;
 }
 

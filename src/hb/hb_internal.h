@@ -78,7 +78,7 @@ struct fricreg_hb {
     double factored_omega; /* NaN: none */
     int factored_deriv;    /* the Ω derivatives dG, dql are there too */
     double *D;             /* [n n] complex: one D_h at a time, LU-factored in place */
-    size_t *piv;           /* [n] its row interchanges (lu.c) */
+    int *piv;              /* [n] its row interchanges (lu.c: LAPACK's) */
     double *Y;             /* [(H+1) n (m+1)] complex: D_h^-1 [J^T | P_h], row k of harmonic h at
                      Y[(h n + k)(m+1)], column m the load (0 but for h = 1) */
     double *Z;             /* [n (m+1)] complex scratch: D_h' Y_h, or (sparse.c) the right-hand
@@ -119,7 +119,7 @@ struct fricreg_hb {
     double *tn;     /* [nq + 1] continuation: the tangent at the corrected point */
     double *dir;    /* [nq + 1] continuation: the predictor's direction and border */
     double *yl;     /* [nq + 1] continuation: the corrector's line search base */
-    size_t *piv2;   /* [nq + 1] A's row interchanges (lu.c) */
+    int *piv2;      /* [nq + 1] A's row interchanges (lu.c: LAPACK's) */
     int iterations; /* of the last Newton solve */
 
     /* the last solution, and its stability (stability.c) when that is on: XW(hb) numbers as a
@@ -137,7 +137,7 @@ struct fricreg_hb {
     double *hill_eval;
     gsl_eigen_nonsymm_workspace *hill_work;
     double *hill_mlu, *hill_col, *hill_x; /* hill_x [XW]: a trial point's, for bifurcations */
-    size_t *hill_piv;
+    int *hill_piv;
 
     /* the continuation's points: [npts (1 + n)], Ω then the n RMS values; each point's
      * unknowns (q, then Ω) in qpts [npts (nq + 1)], for fricreg_hb_peak; the branch's scales,
@@ -235,14 +235,15 @@ void fr_hb_project(const fricreg_hb *hb, const double *left, const double *B, do
 /* The nonlinear modes' state (nma.c), freed with the driver. */
 void fr_hb_nma_free(struct fr_hb_nma *nma);
 
-/* The dense LU factors (lu.c): A[n n] row-major (complex: (re, im) pairs) factored in place
- * with partial pivoting, P A = L U, the row interchanges into piv[n]; no allocation, no GSL.
- * The solves overwrite x[n] (complex: [2n]) with A^-1 x from the factor and piv; every pivot
- * must be nonzero (the callers check them first). */
-void fr_hb_lu_factor(double *A, size_t n, size_t *piv);
-void fr_hb_lu_solve_factored(const double *LU, size_t n, const size_t *piv, double *x);
-void fr_hb_zlu_factor(double *A, size_t n, size_t *piv);
-void fr_hb_zlu_solve_factored(const double *LU, size_t n, const size_t *piv, double *x);
+/* The dense LU factors (lu.c, LAPACK's getrf): A[n n] row-major (complex: (re, im) pairs)
+ * factored in place with partial pivoting, its pivots U_kk at A's diagonal, the row
+ * interchanges into piv[n]; no allocation, no GSL; n < 2^31. The solves overwrite x[n]
+ * (complex: [2n]) with A^-1 x from the factor and piv; every pivot must be nonzero (the callers
+ * check them first). */
+void fr_hb_lu_factor(double *A, size_t n, int *piv);
+void fr_hb_lu_solve_factored(const double *LU, size_t n, const int *piv, double *x);
+void fr_hb_zlu_factor(double *A, size_t n, int *piv);
+void fr_hb_zlu_solve_factored(const double *LU, size_t n, const int *piv, double *x);
 
 /* The real LU solve of Newton's matrix A[nd nd] (factored in place) for rhs[nd] into sol[nd]
  * (may alias rhs). FRICREG_OK or FRICREG_ESINGULAR (a pivot below 1e-14 of the matrix's

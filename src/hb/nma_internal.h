@@ -21,7 +21,7 @@ struct fr_hb_nma {
     double *dGx;      /* [(H+1) m m] complex: dG_h/dξ */
     double *dgx;      /* [(H+1) m] complex: d(J D_h^-1 M φ)/dξ */
     double *A;        /* [nd nd] Newton's matrix, LU-factored in place */
-    size_t *piv;      /* [nd] its row interchanges */
+    int *piv;         /* [nd] its row interchanges (LAPACK's) */
     double *y, *yt, *R, *Rt, *dy, *col; /* [nd] each: iterate, trial, residuals, step, column */
     double *yc, *yo;  /* [nd] each: the march's last solution and the one before (nma.c) */
     double amplitude; /* the amplitude of the solve under way */

@@ -15,7 +15,7 @@
  * Newton's LU pivots. All or none. */
 struct fr_hb_rows {
     double *J, *Y, *Z, *G, *fq;
-    size_t *piv2;
+    int *piv2;
 };
 
 /* b allocated for cap rows of hb's elements: FRICREG_OK, or FRICREG_ENOMEM with b empty. */
