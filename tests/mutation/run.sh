@@ -11,12 +11,20 @@
 # tests/tsan.sh, run on the copy with its own ThreadSanitizer tree (skipped, and its mutants
 # with it, where the compiler has no ThreadSanitizer).
 #
+# With --changed-since REF only the mutants that guard what changed since REF run
+# (tests/mutation/select.sh: their file, their tests' sources or their entry changed); the
+# release tier's changed scope (FRICREG_RELEASE_SCOPE=changed) passes "release", the last
+# release (tests/changed_files.sh). The run says which ran and why; with no git, a shallow
+# clone or a REF not found, every mutant runs.
+#
 # Usage: tests/mutation/run.sh [--src DIR] [--work DIR] [--cc CC] [--list FILE] [--only NAME]...
+#                              [--changed-since REF|release]
 #   --src   the tree to mutate (default: this script's tree)
 #   --work  scratch folder, reused between runs (default: ${TMPDIR:-/tmp}/fricreg-mutation)
 #   --cc    C compiler (default: $CC or cc)
 #   --list  the mutants (default: tests/mutation/mutants.txt beside this script)
 #   --only  run this mutant only (repeatable)
+#   --changed-since  only the mutants that guard a change since REF (a commit, or "release")
 #   --check only check that every mutant applies to the source (no build): after an edit
 # Exit status 0 if every mutant was caught, 1 otherwise, 2 on a usage or set-up error.
 set -u
@@ -26,6 +34,7 @@ work=${TMPDIR:-/tmp}/fricreg-mutation
 cc=${CC:-cc}
 list=$here/mutants.txt
 only=""
+since=""
 check=0
 limit=900 # seconds per mutant's tests: a loosened bound may turn a refusal into a long run
 while [ $# -gt 0 ]; do
@@ -40,6 +49,7 @@ while [ $# -gt 0 ]; do
     --cc) cc=$2 ;;
     --list) list=$2 ;;
     --only) only="$only $2" ;;
+    --changed-since) since=$2 ;;
     -h | --help)
         sed -n '2,/^set -u/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//'
         exit 0
@@ -99,6 +109,32 @@ for dir in "$blocks"/*; do
         }
     done
 done
+
+# ---- The changed scope: the mutants that guard what changed since $since -------------------
+if [ -n "$since" ] && [ $check -eq 0 ]; then
+    if sh "$here/select.sh" "$src" "$list" "$since" >"$work/selected" 2>"$work/since"; then
+        echo "changed scope: the mutants guarding a change $(cat "$work/since"):"
+        kept=0
+        for dir in "$blocks"/*; do
+            name=$(cat "$dir/name")
+            why=$(awk -F '\t' -v n="$name" '$1 == n {print $2; exit}' "$work/selected")
+            if [ -n "$why" ]; then
+                kept=$((kept + 1))
+                printf '  %-38s %s\n' "$name" "$why"
+            else
+                rm -rf "$dir"
+            fi
+        done
+        echo "changed scope: $kept of $n mutants run; the others guard files unchanged since" \
+            "(all of them: FRICREG_RELEASE_SCOPE=full, or run.sh without --changed-since)"
+        if [ $kept -eq 0 ]; then
+            echo "0 mutants: none guards a change; $(($(date +%s) - start)) s"
+            exit 0
+        fi
+    else
+        echo "changed scope: $(cat "$work/since"): every mutant runs"
+    fi
+fi
 
 # ---- The scratch copy and its build ----------------------------------------------------------
 # Extracted with fresh times (tar -m): newer than any object a mutant left in the reused build.

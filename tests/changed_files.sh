@@ -1,0 +1,56 @@
+#!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
+# The files changed since a reference commit, one per line (paths from the top of the tree):
+# the commits since, and what the work tree adds (changed, staged or untracked files). The
+# release tier's changed scope (FRICREG_RELEASE_SCOPE=changed) runs its slow parts only where
+# they guard these files (tests/mutation/run.sh --changed-since).
+#
+# REF "release" is the last release, found without tags (a CI clone may have none): the newest
+# commit that set CMakeLists.txt's project VERSION to a release number (a patch below 90; the
+# development versions are X.Y.90 and up, docs/contributing.md). A release commits its VERSION
+# before or with its tag, so this commit is the tag's or older: the list is the tag's or longer.
+#
+# Usage: changed_files.sh ROOT REF
+# Prints "since COMMIT (WHY)" (the full hash) on stderr and the files on stdout; exits 0. Exits 1, with the
+# reason on stderr and nothing on stdout, when there is no git, the clone is shallow, or REF
+# cannot be found: the caller then runs in full.
+root=$1 ref=$2
+git -C "$root" rev-parse --is-inside-work-tree >/dev/null 2>&1 || {
+    echo "no git repository at $root" >&2
+    exit 1
+}
+if [ "$(git -C "$root" rev-parse --is-shallow-repository 2>/dev/null)" != false ]; then
+    echo "a shallow clone: its history may not reach the release" >&2
+    exit 1
+fi
+why=$ref
+if [ "$ref" = release ]; then
+    commit=""
+    for c in $(git -C "$root" log --format=%H -G'^project\(fricreg VERSION' -- CMakeLists.txt); do
+        version=$(git -C "$root" show "$c:CMakeLists.txt" |
+            sed -n 's/^project(fricreg VERSION \([0-9]*\.[0-9]*\.[0-9]*\).*/\1/p')
+        case $version in
+        *.*.[0-9] | *.*.[0-8][0-9])
+            commit=$c why="release $version"
+            break
+            ;;
+        esac
+    done
+    [ -n "$commit" ] || {
+        echo "no commit sets a release VERSION in CMakeLists.txt" >&2
+        exit 1
+    }
+else
+    commit=$(git -C "$root" rev-parse -q --verify "$ref^{commit}") || {
+        echo "no commit $ref" >&2
+        exit 1
+    }
+fi
+files=$(git -C "$root" diff --name-only "$commit" --) &&
+    untracked=$(git -C "$root" ls-files --others --exclude-standard) || {
+    echo "git diff against $commit failed" >&2
+    exit 1
+}
+echo "since $commit ($why)" >&2
+printf '%s\n%s\n' "$files" "$untracked" | grep . | sort -u
+exit 0

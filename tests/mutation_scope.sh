@@ -1,0 +1,67 @@
+#!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
+# The release tier's changed scope picks its mutants by rules that bite: on a small git tree of
+# its own (no tags), tests/changed_files.sh finds the last release by its VERSION (not a
+# development X.Y.90), and tests/mutation/select.sh selects a mutant when its file changed,
+# when its test's source changed, when its entry is new, and no other; it gives up (the run is
+# then full) without git, in a shallow clone and without a release.
+# Usage: mutation_scope.sh SOURCE_DIR
+command -v git >/dev/null 2>&1 || { echo "SKIP: no git"; exit 77; }
+src=$1
+select=$src/tests/mutation/select.sh
+work=$(mktemp -d "${TMPDIR:-/tmp}/fricreg-scope.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+fails=0 checks=0
+check() { # what, expected, actual
+    checks=$((checks + 1))
+    if [ "$2" != "$3" ]; then
+        echo "FAIL: $1: expected '$2', got '$3'"
+        fails=$((fails + 1))
+    fi
+}
+t=$work/tree
+mkdir -p "$t/src" "$t/tests/mutation"
+g() { git -C "$t" -c user.name=t -c user.email=t@t -c commit.gpgsign=false "$@" >/dev/null; }
+version() { echo "project(fricreg VERSION $1 LANGUAGES C)" >"$t/CMakeLists.txt"; }
+entry() { printf 'mutant %s\ntests %s\nfile %s\nsed s/x/y/\n\n' "$1" "$2" "$3"; }
+g init -q
+version 1.0.0
+echo a >"$t/src/a.c" && echo b >"$t/src/b.c" && echo y >"$t/tests/test_y.c"
+{ echo "# the list"; entry m-a x src/a.c; entry m-b y src/b.c; } >"$t/tests/mutation/mutants.txt"
+g add -A && g commit -q -m "release 1.0.0"
+release=$(git -C "$t" rev-parse HEAD)
+version 1.0.90 && g commit -q -am "development"
+selected() { # REF: the names selected, space-separated, or "full" when select.sh gives up
+    out=$(sh "$select" "$1" "$1/tests/mutation/mutants.txt" "${2:-release}" 2>/dev/null) ||
+        { echo full; return; }
+    printf '%s\n' "$out" | cut -f1 | tr '\n' ' ' | sed 's/ $//'
+}
+check "nothing changed" "" "$(selected "$t")"
+check "the release found without tags, past 1.0.90" "since $release (release 1.0.0)" \
+    "$(sh "$src/tests/changed_files.sh" "$t" release 2>&1 >/dev/null)"
+echo a2 >"$t/src/a.c" && g commit -q -am "a changed"
+check "a changed file selects its mutant" "m-a" "$(selected "$t")"
+check "the reason" "its file src/a.c changed" \
+    "$(sh "$select" "$t" "$t/tests/mutation/mutants.txt" release 2>/dev/null | cut -f2)"
+echo y2 >"$t/tests/test_y.c"
+check "a changed test source selects its mutants (uncommitted)" "m-a m-b" "$(selected "$t")"
+git -C "$t" checkout -q -- tests/test_y.c
+entry m-c z src/b.c >>"$t/tests/mutation/mutants.txt"
+check "a new entry is selected" "m-a m-c" "$(selected "$t")"
+sed -i 's#^sed s/x/y/$#sed s/x/z/#' "$t/tests/mutation/mutants.txt"
+check "an edited entry is selected" "m-a m-b m-c" "$(selected "$t")"
+g checkout -q -- tests/mutation/mutants.txt
+check "a commit as REF" "" "$(selected "$t" HEAD)"
+check "an unknown REF: full" full "$(selected "$t" no-such-ref)"
+version 1.1.0 && g commit -q -am "release 1.1.0"
+check "the newest release" "" "$(selected "$t")"
+# no git: the tree's files without .git
+mkdir "$work/plain" && cp -r "$t/src" "$t/tests" "$t/CMakeLists.txt" "$work/plain/"
+check "no git: full" full "$(selected "$work/plain")"
+git clone -q --depth 1 "file://$t" "$work/shallow" 2>/dev/null
+check "a shallow clone: full" full "$(selected "$work/shallow")"
+# no release: only development versions
+rm -rf "$t/.git" && g init -q && version 1.0.90 && g add -A && g commit -q -m dev
+check "no release: full" full "$(selected "$t")"
+echo "$((checks - fails)) passed, $fails failed"
+[ $fails -eq 0 ]
