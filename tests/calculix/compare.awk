@@ -15,7 +15,8 @@
 # " -1" records are cut at those widths, all other lines compared as words but the header's
 # date and time.
 # Usage: awk -v tol=1e-6 -v name=LABEL -f compare.awk STOCK PATCHED
-# Prints the largest difference as a fraction of its range, and "N passed, M failed".
+# Prints the largest difference as a fraction of its range, how many numbers passed only by the
+# printed digit's unit, and "N passed, M failed".
 function isreal(w) { return w ~ /^[-+]?[0-9]*\.[0-9]*([EeDd][-+]?[0-9]+)?$/ && w ~ /[0-9]/ }
 function isint(w) { return w ~ /^[-+]?[0-9]+$/ }
 # the words of a line: .frd records cut at their fixed widths
@@ -72,6 +73,7 @@ frd && /^ +1U(DATE|TIME) / { next } # the run's own date and time
             u = unit(abs(s[k] + 0) > abs(w[k] + 0) ? s[k] : w[k])
             compared++
             if (range > 0 && diff / range > worst) { worst = diff / range; where = FNR ": " s[k] " / " w[k] }
+            if (diff > tol * range && diff <= tol * range + u * 1.000001) digit++
             if (diff > tol * range + u * 1.000001) {
                 fail("line " FNR ", word " k ": " s[k] " (stock) and " w[k] ": differ by " diff ", range " range)
             }
@@ -83,8 +85,9 @@ frd && /^ +1U(DATE|TIME) / { next } # the run's own date and time
 function fail(msg) { if (++fails <= 10) print "FAIL: " name ": " msg }
 END {
     if (lines1 != lines2) fail(lines1 " lines in the stock output, " lines2 " here")
-    printf "%s: %d numbers compared, the largest difference %.3g of its range (line %s)\n",
+    printf "%s: %d numbers compared, the largest difference %.3g of its range (line %s)",
            name, compared, worst, where == "" ? "-" : where
+    printf "; %d within the last printed digit only\n", digit
     printf "%d passed, %d failed\n", fails ? 0 : 1, fails ? 1 : 0
     exit fails > 0
 }
