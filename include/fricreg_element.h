@@ -157,6 +157,10 @@ FRICREG_API int fricreg_element_init(const fricreg_element_type *type, const dou
  *  state_out[nstate] out: the state at the end of the increment. May be state_in (the same
  *                   array, not a partial overlap); no other output may overlap an input.
  *
+ *  Rounding: |f_t| <= sum_s b_s (times N) to 1e-12 of it and, where u - w falls below DBL_MIN
+ *  (2.2e-308, where a norm keeps only absolute precision), to a few k_s times the smallest
+ *  subnormal, 4.9e-324 (fuzz target fuzz_element).
+ *
  *  Returns FRICREG_OK; FRICREG_ENULL if type, params, state_in, u, f or state_out is NULL;
  *  FRICREG_ENONFINITE if a parameter, state or u is NaN or infinite, or an intermediate
  *  overflows (u - w, n0 + kn (g - gap), a sum over the sliders: numbers near 1e308);

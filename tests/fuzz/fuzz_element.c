@@ -6,7 +6,7 @@
  * ENONFINITE; ENULL cannot arise), and fricreg_element_explain returns the same with a
  * message naming the type; on failure nothing is written; on success every output is finite,
  * the tangential force keeps its bound |f_t| <= sum_s b_s (times N with a normal law, N >= 0
- * and 0 while open) up to 1e-12 of it (the sum's rounding), and the same call again (the
+ * and 0 while open) up to its rounding (tangential_bound), and the same call again (the
  * state given as state_out too) gives the same bits. */
 #include "fuzz_input.h"
 
@@ -14,15 +14,24 @@
 
 enum { MAX_SLIDERS = 8, MAX_PARAMS = 2 * MAX_SLIDERS + 3, MAX_STATE = 3 * MAX_SLIDERS };
 
-/* The bound of the tangential force: sum_s b_s, times N with a normal law (f[dim - 1]). */
+#define SUBNORMAL_QUANTUM 4.9406564584124654e-324
+
+/* The bound of the tangential force: sum_s b_s, times N with a normal law (f[dim - 1]), plus
+ * its rounding (fricreg_element_eval's docstring): 1e-12 of it, and 4 k_s subnormal quanta a
+ * slider (|u - w| below DBL_MIN keeps only absolute precision: a stick judged on it may hold
+ * k_s |u - w| a few quanta of k_s above b_s, as fricreg_aft.h's rounding of kt u). */
 static double tangential_bound(const fricreg_element_type *t, const double *p, const double *f,
                                int normal)
 {
     size_t ns = fricreg_element_nsliders(t);
-    double b = 0.0;
-    for (size_t s = 0; s < ns; s++)
+    double b = 0.0, k = 0.0;
+    for (size_t s = 0; s < ns; s++) {
         b += p[ns + s];
-    return normal ? b * f[fricreg_element_dim(t) - 1] : b;
+        k += p[s];
+    }
+    if (normal)
+        b *= f[fricreg_element_dim(t) - 1];
+    return b * (1.0 + 1e-12) + 4.0 * k * SUBNORMAL_QUANTUM + 64.0 * SUBNORMAL_QUANTUM;
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -70,8 +79,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         ft = hypot(ft, f[a]);
     double bound = tangential_bound(t, p, f, normal);
     FUZZ_REQUIRE(!normal || f[dim - 1] >= 0.0, "N = %g", f[dim - 1]);
-    FUZZ_REQUIRE(ft <= bound * (1.0 + 1e-12) + 4.9406564584124654e-324 * 64.0,
-                 "%s: |f_t| = %g above its bound %g", fricreg_element_name(t), ft, bound);
+    FUZZ_REQUIRE(ft <= bound, "%s: |f_t| = %.17g above its bound %.17g", fricreg_element_name(t),
+                 ft, bound);
     /* pure: again, in place */
     double f2[3], d2[9], q2[3 * MAX_PARAMS], w2[MAX_STATE];
     memcpy(w2, w, nst * sizeof *w);
