@@ -5,8 +5,9 @@
 ! Conventions of fricreg_f77.f90: external subroutines, every argument by reference, INTEGER
 ! STAT last (the C status, FRICREG_OK = 0), DOUBLE PRECISION reals, nothing written on failure.
 !
-! A type is its code ITYPE, fixed forever (new types get new codes), and its number of
-! sliders NS (1 but for the Iwan types):
+! A type is its code ITYPE, fixed forever (new types get new codes; fricreg.fi names them
+! FRICREG_ELEMENT_JENKINS, ... as C's enum fricreg_element_code), and its number of sliders NS
+! (1 but for the Iwan types):
 !   1 jenkins   2 jenkins_2d   3 contact_3d   4 iwan   5 iwan_normal   6 jenkins_3d
 !   7 jenkins_normal   8 iwan_2d
 ! (ITYPE - 1 is fricreg_element_at's index). A code out of range or an NS the type does not

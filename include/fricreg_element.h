@@ -88,6 +88,20 @@ typedef struct fricreg_element_type fricreg_element_type;
 /** The most sliders of an Iwan type (fricreg_element_sliders). */
 #define FRICREG_ELEMENT_MAX_SLIDERS 256
 
+/** The types' codes: code - 1 is the type's index in fricreg_element_at's list, and the code
+ *  names it in the Fortran 77 entries (FRELEV's ITYPE; fricreg.fi has these names). Fixed
+ *  forever: a new type gets the next code. Since 1.8. */
+enum fricreg_element_code {
+    FRICREG_ELEMENT_JENKINS = 1,        /**< jenkins */
+    FRICREG_ELEMENT_JENKINS_2D = 2,     /**< jenkins_2d */
+    FRICREG_ELEMENT_CONTACT_3D = 3,     /**< contact_3d */
+    FRICREG_ELEMENT_IWAN = 4,           /**< iwan */
+    FRICREG_ELEMENT_IWAN_NORMAL = 5,    /**< iwan_normal */
+    FRICREG_ELEMENT_JENKINS_3D = 6,     /**< jenkins_3d */
+    FRICREG_ELEMENT_JENKINS_NORMAL = 7, /**< jenkins_normal */
+    FRICREG_ELEMENT_IWAN_2D = 8         /**< iwan_2d */
+};
+
 /** The type called name (the table at the top of this header; the Iwan types with ns = 1).
  *  Returns NULL if name is NULL or no type has that name. Since 1.8. */
 FRICREG_API const fricreg_element_type *fricreg_element_lookup(const char *name);
@@ -97,7 +111,8 @@ FRICREG_API const fricreg_element_type *fricreg_element_lookup(const char *name)
 FRICREG_API size_t fricreg_element_count(void);
 
 /** The type at index in the library's list (ns = 1 for the Iwan types). The list's order is
- *  fixed forever, new types appended: index + 1 is the type's code in the Fortran 77 entries
+ *  fixed forever, new types appended: index + 1 is the type's code (enum
+ *  fricreg_element_code), which names it in the Fortran 77 entries
  *  (fortran/fricreg_element_f77.f90). Returns NULL if index >= fricreg_element_count().
  *  Since 1.8. */
 FRICREG_API const fricreg_element_type *fricreg_element_at(size_t index);

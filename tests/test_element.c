@@ -89,9 +89,16 @@ START_TEST(test_table)
     /* the list: every type once, found by its name; the F77 codes of fricreg_element_f77.f90 */
     static const char *const codes[] = {"jenkins",     "jenkins_2d", "contact_3d",     "iwan",
                                         "iwan_normal", "jenkins_3d", "jenkins_normal", "iwan_2d"};
+    static const int code_of[] = {FRICREG_ELEMENT_JENKINS,        FRICREG_ELEMENT_JENKINS_2D,
+                                  FRICREG_ELEMENT_CONTACT_3D,     FRICREG_ELEMENT_IWAN,
+                                  FRICREG_ELEMENT_IWAN_NORMAL,    FRICREG_ELEMENT_JENKINS_3D,
+                                  FRICREG_ELEMENT_JENKINS_NORMAL, FRICREG_ELEMENT_IWAN_2D};
     ck_assert_uint_ge(fricreg_element_count(), NTYPES);
-    for (size_t i = 0; i < sizeof codes / sizeof codes[0]; i++)
+    for (size_t i = 0; i < sizeof codes / sizeof codes[0]; i++) {
         ck_assert_str_eq(fricreg_element_name(fricreg_element_at(i)), codes[i]);
+        ck_assert_str_eq(fricreg_element_name(fricreg_element_at((size_t)code_of[i] - 1)),
+                         codes[i]);
+    }
     for (size_t i = 0; i < fricreg_element_count(); i++) {
         const fricreg_element_type *t = fricreg_element_at(i);
         ck_assert_ptr_eq(fricreg_element_lookup(fricreg_element_name(t)), t);
