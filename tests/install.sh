@@ -136,10 +136,10 @@ if [ "$fc" != "-" ]; then
     #    gives, as a compiler that cannot read the installed .mod files would.
     fsrc=$prefix/include/fricreg/src
     objects="fricreg_base.F90 fricreg_laws.F90 fricreg_ctx.F90 fricreg_disk_ctx.F90"
-    objects="$objects fricreg_jenkins.F90 fricreg_iwan.F90 fricreg_aft.F90"
+    objects="$objects fricreg_jenkins.F90 fricreg_iwan.F90 fricreg_element.F90 fricreg_aft.F90"
     # each F77 file's generated entry points (fortran/*_f77.txt) right after it
     f77="fricreg_f77.f90 fricreg_f77_generated.f90 fricreg_f77_check.f90"
-    f77="$f77 fricreg_joints_f77.f90 fricreg_joints_f77_generated.f90"
+    f77="$f77 fricreg_joints_f77.f90 fricreg_joints_f77_generated.f90 fricreg_element_f77.f90"
     order="fricreg_constants.f90 fricreg_c.f90 $objects fricreg.F90 $f77" sim=""
     if [ -f "$fsrc/fricreg_sim_c.f90" ]; then
         objects="$objects fricreg_sim.F90 fricreg_exact.F90 fricreg_structure.F90 fricreg_hb.F90"
