@@ -5,6 +5,8 @@
 # release tier's changed scope (FRICREG_RELEASE_SCOPE=changed) runs its slow parts only where
 # they guard these files (tests/mutation/run.sh --changed-since).
 #
+# REF "landed" is the last stop that landed, named in .ci/landed (a commit on the way to
+# HEAD; a stale one only widens the list); when it names none, REF is "release".
 # REF "release" is the last release, found without tags (a CI clone may have none): the newest
 # commit that set CMakeLists.txt's project VERSION to a release number (a patch below 90; the
 # development versions are X.Y.90 and up, docs/contributing.md). A release commits its VERSION
@@ -24,6 +26,15 @@ if [ "$(git -C "$root" rev-parse --is-shallow-repository 2>/dev/null)" != false 
     exit 1
 fi
 why=$ref
+if [ "$ref" = landed ]; then
+    landed=$(grep -E -o -m 1 '^[0-9a-f]{7,40}' "$root/.ci/landed" 2>/dev/null)
+    commit=$(git -C "$root" rev-parse -q --verify "${landed:-none}^{commit}" 2>/dev/null) &&
+        git -C "$root" merge-base --is-ancestor "$commit" HEAD 2>/dev/null && why="the stop that landed"
+    if [ "$why" = landed ]; then
+        echo "note: .ci/landed names no commit on the way to HEAD: since the last release" >&2
+        ref=release
+    fi
+fi
 if [ "$ref" = release ]; then
     commit=""
     for c in $(git -C "$root" log --format=%H -G'^project\(fricreg VERSION' -- CMakeLists.txt); do
@@ -40,7 +51,7 @@ if [ "$ref" = release ]; then
         echo "no commit sets a release VERSION in CMakeLists.txt" >&2
         exit 1
     }
-else
+elif [ "$ref" != landed ]; then
     commit=$(git -C "$root" rev-parse -q --verify "$ref^{commit}") || {
         echo "no commit $ref" >&2
         exit 1

@@ -2,9 +2,10 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # The release tier's changed scope picks its mutants by rules that bite: on a small git tree of
 # its own (no tags), tests/changed_files.sh finds the last release by its VERSION (not a
-# development X.Y.90), and tests/mutation/select.sh selects a mutant when its file changed,
-# when its test's source changed, when its entry is new, and no other; it gives up (the run is
-# then full) without git, in a shallow clone and without a release.
+# development X.Y.90) and the stop that landed by .ci/landed (the release when it names no
+# commit on the way to HEAD), and tests/mutation/select.sh selects a mutant when its file
+# changed, when its test's source changed, when its entry is new, and no other; it gives up
+# (the run is then full) without git, in a shallow clone and without a release.
 # Usage: mutation_scope.sh SOURCE_DIR
 command -v git >/dev/null 2>&1 || { echo "SKIP: no git"; exit 77; }
 src=$1
@@ -52,6 +53,18 @@ sed -i 's#^sed s/x/y/$#sed s/x/z/#' "$t/tests/mutation/mutants.txt"
 check "an edited entry is selected" "m-a m-b m-c" "$(selected "$t")"
 g checkout -q -- tests/mutation/mutants.txt
 check "a commit as REF" "" "$(selected "$t" HEAD)"
+# "landed": the commit .ci/landed names, else the release
+mkdir -p "$t/.ci"
+check "landed: no .ci/landed, since the release" "m-a" "$(selected "$t" landed)"
+echo "# the stop that landed" >"$t/.ci/landed" && git -C "$t" rev-parse HEAD >>"$t/.ci/landed"
+g add .ci/landed && g commit -q -m "landed"
+check "landed: since the commit it names" "" "$(selected "$t" landed)"
+echo a3 >"$t/src/a.c" && g commit -q -am "a changed again"
+check "landed: a change since it" "m-a" "$(selected "$t" landed)"
+echo 0123456789abcdef0123456789abcdef01234567 >"$t/.ci/landed"
+check "landed: a commit not on the way to HEAD, since the release" \
+    "since $release (release 1.0.0)" "$(sh "$src/tests/changed_files.sh" "$t" landed 2>&1 >/dev/null | grep "^since")"
+git -C "$t" checkout -q -- .ci/landed
 check "an unknown REF: full" full "$(selected "$t" no-such-ref)"
 version 1.1.0 && g commit -q -am "release 1.1.0"
 check "the newest release" "" "$(selected "$t")"

@@ -1,7 +1,7 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-3.0-or-later
-# The mutants of a list that guard what changed since REF (tests/changed_files.sh: a commit, or
-# "release", the last release): those whose file changed, whose tests' sources changed
+# The mutants of a list that guard what changed since REF (tests/changed_files.sh: a commit,
+# "landed", the last stop that landed, or "release", the last release): those whose file changed, whose tests' sources changed
 # (tests/test_<name>.c; tests/alloc/test_alloc_failure.c for alloc_failure_*; tests/tsan.sh and
 # tests/test_threads.c for tsan), or whose entry in the list is new or edited since REF (its
 # lines, comments aside, are not in the list as it was at REF). tests/mutation/run.sh
@@ -13,10 +13,11 @@
 # the caller then runs every mutant.
 here=$(cd "$(dirname "$0")" && pwd)
 src=$1 list=$2 ref=$3
-changes=$(sh "$here/../changed_files.sh" "$src" "$ref") || exit 1
-commit=$(git -C "$src" rev-parse -q --verify "${ref}^{commit}" 2>/dev/null)
-[ "$ref" = release ] && commit=$(sh "$here/../changed_files.sh" "$src" release 2>&1 >/dev/null |
-    sed -n 's/^since \([0-9a-f]*\) .*/\1/p')
+since=$(mktemp "${TMPDIR:-/tmp}/fricreg-since.XXXXXX") || exit 1
+trap 'rm -f "$since"' EXIT
+changes=$(sh "$here/../changed_files.sh" "$src" "$ref" 2>"$since") || { cat "$since" >&2; exit 1; }
+cat "$since" >&2
+commit=$(sed -n 's/^since \([0-9a-f]*\) .*/\1/p' "$since")
 
 # One line per entry of a list: its lines in order, comments and blank lines left out,
 # tab-separated (an entry's identity).
