@@ -3,8 +3,19 @@
 # valgrind memcheck over one C test program, in one process (CK_FORK=no, so that valgrind sees
 # every test and its leaks): any error or leak fails. With CASE names, only those Check cases
 # run, one valgrind run each, and each must run at least one check (a renamed case fails here
-# rather than testing nothing). Exits 77 (ctest: skipped) without valgrind.
-# Usage: valgrind.sh PROGRAM [CASE...]
+# rather than testing nothing). Exits 77 (ctest: skipped) without valgrind. With
+# --changed-since REF ROOT SOURCE (the release tier's changed scope, a stop), it runs only when
+# the program guards a change since REF (tests/valgrind_scope.sh; SOURCE is its source file
+# from the tree's top ROOT) and else exits 77 saying why.
+# Usage: valgrind.sh [--changed-since REF ROOT SOURCE] PROGRAM [CASE...]
+if [ "${1:-}" = --changed-since ]; then
+    why=$(sh "$(dirname "$0")/valgrind_scope.sh" "$3" "$2" "$4") || {
+        echo "SKIP: $why (FRICREG_RELEASE_SCOPE=full runs it)"
+        exit 77
+    }
+    echo "runs: $why"
+    shift 4
+fi
 command -v valgrind >/dev/null 2>&1 || { echo "SKIP: valgrind not found"; exit 77; }
 program=$1
 shift

@@ -9,7 +9,7 @@
 #    not read: a new source file is a change of its module, a new test a new source; a link
 #    or flag change that breaks memory is ASan's and UBSan's to see at the same stop;
 #  - the program's source changed, or a file of the tree it includes (its test headers, an
-#    example's model), followed through their own includes;
+#    example's model) or the .c beside such a header, followed through their own includes;
 #  - a module it exercises changed (a file of src/M/, or include/'s header of M). A program
 #    exercises the modules whose headers it includes (a public header names its module in
 #    the table below; "M/x.h" and a bare "x.h" found in src/M/ name M) and every module on a
@@ -52,21 +52,29 @@ while [ -n "$todo" ]; do
         fricreg_structure.h | fricreg_structure_gsl.h) modules="$modules structure" ;;
         fricreg_petsc.h) modules="$modules petsc" ;;
         fricreg*.h) modules="$modules unknown" ;;
-        */*) [ -f "$root/src/$name" ] && modules="$modules ${name%%/*}" ;;
         esac
-        for dir in "$(dirname "$file")" tests tests/support; do
+        for dir in "$(dirname "$file")" tests tests/support src; do
             if [ -z "$found" ] && [ -f "$root/$dir/$name" ]; then
                 found=$(cd "$root" && realpath --relative-to=. "$dir/$name")
             fi
         done
         if [ -z "$found" ] && [ "${name#*/}" = "$name" ] && [ "${name#fricreg}" = "$name" ]; then
-            owner=$(cd "$root/src" && ls -d -- */"$name" 2>/dev/null | head -n 1)
-            [ -n "$owner" ] && modules="$modules ${owner%%/*}"
+            found=$(cd "$root" && ls -d -- src/*/"$name" 2>/dev/null | head -n 1)
         fi
-        if [ -n "$found" ] && ! printf '%s\n' $files | grep -qxF "$found"; then
-            files="$files $found"
-            todo="$todo $found"
-        fi
+        case $found in
+        src/*/*) # a module's header: the module
+            m=${found#src/}
+            modules="$modules ${m%%/*}"
+            ;;
+        ?*) # a test header or an example's model, and its .c beside it: followed
+            for f in "$found" "${found%.h}.c"; do
+                if [ -f "$root/$f" ] && ! printf '%s\n' $files | grep -qxF "$f"; then
+                    files="$files $f"
+                    todo="$todo $f"
+                fi
+            done
+            ;;
+        esac
     done
 done
 for file in $files; do
