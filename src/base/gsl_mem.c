@@ -56,28 +56,3 @@ gsl_eigen_symm_workspace *fr_gsl_eigen_symm_new(size_t n)
     }
     return w;
 }
-
-/* One block: the workspace, Francis's workspace, the two vectors (balancing's diagonal and the
- * Hessenberg reduction's Householder coefficients) and their data, the fields as GSL 2.7's
- * gsl_eigen_nonsymm_alloc and gsl_eigen_francis_alloc set them (gsl_eigen.h publishes both
- * layouts). */
-gsl_eigen_nonsymm_workspace *fr_gsl_eigen_nonsymm_new(size_t n)
-{
-    struct nonsymm_block {
-        gsl_eigen_nonsymm_workspace w;
-        gsl_eigen_francis_workspace f;
-        gsl_vector diag, tau;
-    };
-    if (n > SIZE_MAX / 2)
-        return NULL;
-    struct nonsymm_block *b = block(sizeof *b, 2 * n);
-    if (b == NULL)
-        return NULL;
-    double *d = (double *)(b + 1);
-    b->diag = (gsl_vector){.size = n, .stride = 1, .data = d};
-    b->tau = (gsl_vector){.size = n, .stride = 1, .data = d + n};
-    b->f = (gsl_eigen_francis_workspace){0}; /* compute_t 0: eigenvalues only */
-    b->w = (gsl_eigen_nonsymm_workspace){
-        .size = n, .diag = &b->diag, .tau = &b->tau, .do_balance = 1, .francis_workspace_p = &b->f};
-    return &b->w;
-}

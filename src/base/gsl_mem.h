@@ -25,8 +25,4 @@ gsl_permutation *fr_gsl_permutation_new(size_t n);
 /* The workspace gsl_eigen_symm needs for an n x n matrix, or NULL. */
 gsl_eigen_symm_workspace *fr_gsl_eigen_symm_new(size_t n);
 
-/* The workspace gsl_eigen_nonsymm needs for an n x n matrix, eigenvalues only, with balancing
- * (as gsl_eigen_nonsymm_alloc and gsl_eigen_nonsymm_params(0, 1, w) leave it), or NULL. */
-gsl_eigen_nonsymm_workspace *fr_gsl_eigen_nonsymm_new(size_t n);
-
 #endif

@@ -131,11 +131,12 @@ struct fricreg_hb {
 
     /* Hill's method (stability.c), on with fricreg_hb_set_stability (dense models): N = n nc
      * Fourier coefficients of x; the companion matrix of the quadratic eigenproblem [2N 2N],
-     * its eigenvalues [2N] complex, GSL's workspace; M's LU [n n] and pivots [n], a column [n] */
+     * its eigenvalues [2N] complex, LAPACK's workspace; M's LU [n n] and pivots [n], a column [n] */
     int stability;
     gsl_matrix *hill;
     double *hill_eval;
-    gsl_eigen_nonsymm_workspace *hill_work;
+    double *hill_work; /* [hill_lwork] LAPACK dgeev's workspace, then [2N2] its wr, wi */
+    size_t hill_lwork;
     double *hill_mlu, *hill_col, *hill_x; /* hill_x [XW]: a trial point's, for bifurcations */
     int *hill_piv;
 
@@ -241,6 +242,13 @@ void fr_hb_nma_free(struct fr_hb_nma *nma);
  * (complex: [2n]) with A^-1 x from the factor and piv; every pivot must be nonzero (the callers
  * check them first). */
 void fr_hb_lu_factor(double *A, size_t n, int *piv);
+/* The eigenvalues of a dense real matrix (eigenvalues.c, LAPACK's dgeev): A[n n] row-major,
+ * destroyed; the real and imaginary parts into wr[n] and wi[n] (a complex pair together, the
+ * positive imaginary part first); work[lwork] with lwork = fr_hb_eigenvalues_work(n) (at least
+ * 3n, LAPACK's optimum where it says). Returns dgeev's INFO: 0, or > 0 when the QR iteration
+ * did not converge (wr, wi then hold only the eigenvalues from INFO on); n < 2^31. */
+size_t fr_hb_eigenvalues_work(size_t n);
+int fr_hb_eigenvalues(double *A, size_t n, double *wr, double *wi, double *work, size_t lwork);
 void fr_hb_lu_solve_factored(const double *LU, size_t n, const int *piv, double *x);
 void fr_hb_zlu_factor(double *A, size_t n, int *piv);
 void fr_hb_zlu_solve_factored(const double *LU, size_t n, const int *piv, double *x);

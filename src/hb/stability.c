@@ -11,7 +11,7 @@
  * J^T (∂F/∂q) J with the elements' exact AFT Jacobians ∂F/∂q, and ∇ the derivative of one
  * period's coefficients (a_h' = hΩ b_h, b_h' = −hΩ a_h; Ω folded into ∇ in Δ1). (Q) is solved
  * as the eigenproblem of its companion matrix [0 I; −Δ2⁻¹ S, −Δ2⁻¹ Δ1] of order 2N, N = n nc, by
- * GSL's gsl_eigen_nonsymm (balancing, Hessenberg reduction, Francis's double-shift QR). Its 2N
+ * LAPACK's dgeev (eigenvalues.c: balancing, Hessenberg reduction, multishift QR). Its 2N
  * eigenvalues hold each Floquet exponent λ many times over, λ + i k Ω, the truncation's error
  * growing with |k|: the 2n of least |Im λ| (those within ±Ω/2, the imaginary-part criterion of
  * Krack & Gross, Sec. 5.3.3) are taken as the exponents, the multipliers μ = e^{λ T}, T = 2π/Ω.
@@ -23,8 +23,6 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-
-#include <gsl/gsl_errno.h>
 
 #include "base/gsl_mem.h"
 #include "hb_internal.h"
@@ -41,7 +39,8 @@ int fr_hb_hill_alloc(fricreg_hb *hb)
     fr_hb_hill_free(hb);
     hb->hill = fr_gsl_matrix_new(N2, N2);
     hb->hill_eval = malloc(2 * N2 * sizeof(double));
-    hb->hill_work = fr_gsl_eigen_nonsymm_new(N2);
+    hb->hill_lwork = fr_hb_eigenvalues_work(N2);
+    hb->hill_work = malloc((hb->hill_lwork + 2 * N2) * sizeof(double));
     hb->hill_mlu = malloc((n * n + n + 2 * (4 + 4 * n)) * sizeof(double));
     hb->hill_piv = malloc(n * sizeof *hb->hill_piv);
     if (!hb->hill || !hb->hill_eval || !hb->hill_work || !hb->hill_mlu || !hb->hill_piv) {
@@ -175,7 +174,7 @@ static int companion(fricreg_hb *hb, const char *fn)
 }
 
 /* An eigenvalue's place in the selection: |Im λ|, except that on the line |Im λ| = Ω/2 (to
- * 1e-6 of Ω, as kind()) the conjugate with Im λ < 0 comes after every one with Im λ > 0. A real
+ * 1e-6 of Ω) the conjugate with Im λ < 0 comes after every one with Im λ > 0 of the line. A real
  * negative multiplier μ = −e^{rT} appears there as the conjugates r ± iΩ/2; two of them (as
  * after a pair's collision on the negative real axis: det Φ > 0 makes them come in pairs) give
  * four eigenvalues of one |Im λ|, and by |Im λ| alone the tie could take the smaller multiplier
@@ -184,8 +183,12 @@ static int companion(fricreg_hb *hb, const char *fn)
 static double selection_key(double im, double omega, int *second)
 {
     double a = fabs(im);
-    *second = a >= (0.5 - 1e-6) * omega && im < 0.0;
-    return a >= (0.5 - 1e-6) * omega ? 0.5 * omega : a;
+    /* the line only: above it, the copies λ + i k Ω keep their |Im λ| (1.7 put them all on
+     * the line, and GSL's order of the eigenvalues hid it; LAPACK's order took copies at
+     * |Im λ| = 15.8 Ω/2 for a period doubling's exponents on a bilinear oscillator) */
+    int on_line = fabs(a - 0.5 * omega) <= 1e-6 * omega;
+    *second = on_line && im < 0.0;
+    return on_line ? 0.5 * omega : a;
 }
 
 /* The 2n eigenvalues of least selection_key (a selection, out of place) as (re, im) into
@@ -232,15 +235,16 @@ int fr_hb_hill(fricreg_hb *hb, const char *fn, double omega, double *out)
         if (!isfinite(hb->hill->data[k]))
             return fr_fail(hb, FRICREG_ENONFINITE,
                            "%s: stability: Hill's matrix overflows at Omega = %g", fn, omega);
-    /* a QR iteration that does not converge (30 sweeps per eigenvalue) GSL 2.7 reports through
-     * its error handler as well as its status (francis.c), and the default handler aborts:
-     * the input is finite and balanced here, on which it has not been seen to fail */
-    gsl_vector_complex_view ev = gsl_vector_complex_view_array(hb->hill_eval, N2);
-    if (gsl_eigen_nonsymm(hb->hill, &ev.vector, hb->hill_work) != GSL_SUCCESS)
+    double *wr = hb->hill_work + hb->hill_lwork, *wi = wr + N2;
+    if (fr_hb_eigenvalues(hb->hill->data, N2, wr, wi, hb->hill_work, hb->hill_lwork) != 0)
         return fr_fail(hb, FRICREG_EINTEGRATOR,
                        "%s: stability: the QR iteration on Hill's matrix did not converge at "
                        "Omega = %g",
                        fn, omega);
+    for (size_t i = 0; i < N2; i++) { /* (re, im) pairs, as select_exponents reads them */
+        hb->hill_eval[2 * i] = wr[i];
+        hb->hill_eval[2 * i + 1] = wi[i];
+    }
     select_exponents(hb, omega, out + 2);
     double T = TWO_PI / omega, top = -INFINITY;
     for (size_t i = 0; i < 2 * hb->n; i++)
