@@ -1142,7 +1142,7 @@ contains
   !> eps -> 0 or not (0, the default): on = FRICREG_ESTIMATE_TWO_COMPANIONS (1) from companion
   !> structures at eps/2 and eps/4 stepped alongside at half and a quarter of the step (or an
   !> adaptive run's tolerances/16 and /256), the observed order's Richardson estimate or, out of
-  !> the asymptotic range, a safe bound with FRICREG_WARN_NOT_ASYMPTOTIC;
+  !> the asymptotic range, a safe bound (the kind, get_error_kind: asymptotic or bound);
   !> FRICREG_ESTIMATE_ONE_COMPANION (2), 1.6's err = 3 |q - q_companion|
   !> (fricreg_structure_set_error_estimate: made at the first step after set_initial, fed the
   !> setters of bounds, law, records, Newton and max_steps; another setter ends it).
