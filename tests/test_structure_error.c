@@ -595,6 +595,9 @@ START_TEST(test_warnings)
         ck_assert_int_eq(fricreg_structure_set_answer_rtol(s, 1e3), FRICREG_OK);
         check_answer_warning(s, 1e3);
         ck_assert_uint_eq(fricreg_structure_warning_count(s), 0);
+        /* a refused tolerance changes nothing */
+        ck_assert_int_eq(fricreg_structure_set_answer_rtol(s, 0.0), FRICREG_EINVAL);
+        ck_assert_uint_eq(fricreg_structure_warning_count(s), 0);
         fricreg_structure_free(s);
     }
     /* in the range (eps = 1e-2, dt = 1e-3): the estimates below 1%, no warning */
@@ -605,6 +608,12 @@ START_TEST(test_warnings)
     check_answer_warning(s, 1e-2);
     /* and a tolerance below them warns: judged on the tolerance in force */
     ck_assert_int_eq(fricreg_structure_set_answer_rtol(s, 1e-9), FRICREG_OK);
+    check_answer_warning(s, 1e-9);
+    ck_assert(exceeds(s, 1e-9));
+    /* kept across set_initial and runs */
+    double zero = 0.0, v0 = 1.0;
+    ck_assert_int_eq(fricreg_structure_set_initial(s, 1, &zero, &v0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_run(s, 1e-3, T_END), FRICREG_OK);
     check_answer_warning(s, 1e-9);
     ck_assert(exceeds(s, 1e-9));
     fricreg_structure_free(s);
