@@ -28,6 +28,7 @@ module fricreg_sim_m
     procedure :: set_max_steps => sim_set_max_steps
     procedure :: set_kink_location => sim_set_kink_location
     procedure :: set_error_estimate => sim_set_error_estimate
+    procedure :: set_answer_rtol => sim_set_answer_rtol
     procedure :: set_abs_tolerances => sim_set_abs_tolerances
     procedure :: get_abs_tolerances => sim_get_abs_tolerances
     procedure :: run => sim_run
@@ -40,6 +41,7 @@ module fricreg_sim_m
     procedure :: get_state => sim_get_state
     procedure :: get_dissipation => sim_get_dissipation
     procedure :: get_dissipation_error => sim_get_dissipation_error
+    procedure :: get_dissipation_error_kind => sim_get_dissipation_error_kind
     procedure :: get_stick_fraction => sim_get_stick_fraction
     procedure :: run_extrapolated => sim_run_extrapolated
     procedure :: get_extrapolation => sim_get_extrapolation
@@ -216,6 +218,18 @@ contains
       status = self%record(fricreg_sim_set_error_estimate(self%ptr, on))
   end function sim_set_error_estimate
 
+  !> The answer tolerance rtol (finite, > 0; default 1e-2): FRICREG_WARN_ERROR_ESTIMATE where
+  !> the last whole cycle's error estimate exceeds rtol |D|, whatever its kind; kept across runs
+  !> (fricreg_sim_set_answer_rtol). FRICREG_EINVAL otherwise, nothing changed. Since 1.8.
+  function sim_set_answer_rtol(self, rtol) result(status)
+    class(fricreg_simulation), intent(inout) :: self
+    real(c_double), intent(in) :: rtol
+    integer(c_int) :: status
+    status = self%ready('set_answer_rtol', 'simulation')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_sim_set_answer_rtol(self%ptr, rtol))
+  end function sim_set_answer_rtol
+
   !> An absolute tolerance per component of the state y = (x, v, D), size 2 ndof + 1: ndof
   !> positions, ndof velocities, then D; each finite and > 0; replaces set_integrator's atol
   !> until the next set_integrator (fricreg_sim_set_abs_tolerances).
@@ -362,6 +376,28 @@ contains
     status = self%unrecorded('get_dissipation_error', status)
     if (status == FRICREG_OK) err = tmp(1:int(cycles))
   end function sim_get_dissipation_error
+
+  !> The kind of each whole cycle's error estimate of the last run
+  !> (fricreg_sim_get_dissipation_error_kind): kinds is (re)allocated to the number of cycles,
+  !> each FRICREG_EST_KIND_ASYMPTOTIC, _BOUND or _ASSUMED; FRICREG_EINVAL when the run made no
+  !> estimate. Since 1.8.
+  function sim_get_dissipation_error_kind(self, kinds) result(status)
+    class(fricreg_simulation), intent(inout) :: self
+    integer(c_int), allocatable, intent(inout) :: kinds(:)
+    integer(c_int) :: status
+    real(c_double) :: cycles
+    integer(c_int), allocatable :: tmp(:)
+    cycles = 0.0_c_double
+    status = self%ready('get_dissipation_error_kind', 'simulation')
+    if (status /= FRICREG_OK) return
+    status = fricreg_sim_get_value(self%ptr, FRICREG_VALUE_CYCLES, cycles)
+    if (status == FRICREG_OK) then
+      allocate (tmp(max(1, int(cycles))))
+      status = fricreg_sim_get_dissipation_error_kind(self%ptr, int(cycles, c_size_t), tmp)
+    end if
+    status = self%unrecorded('get_dissipation_error_kind', status)
+    if (status == FRICREG_OK) kinds = tmp(1:int(cycles))
+  end function sim_get_dissipation_error_kind
 
   !> Per contact, the fraction of the last whole cycle with |zdot_i| < eps: frac(ncontacts).
   function sim_get_stick_fraction(self, frac) result(status)

@@ -5,9 +5,10 @@
 ! reals, nothing changed on failure. Built only with the drivers (FRICREG_DRIVERS).
 !
 ! Generated, not here: the entry points that are one C call (FRSIMP, FRSIML, FRSIMI, FRSIMR,
-! FRSIMY, FRSIMV, FRSIMX, FRSIMD, FRSIMS) are a line each, with their doc comments, in the table
-! fricreg_sim_f77.txt, which fortran/gen_f77.cmake turns into fricreg_sim_f77_generated.f90 at
-! build time; those below have logic of their own.
+! FRSIMY, FRSIMV, FRSIMX, FRSIMD, FRSIMS, FRSIMT, FRSIMA) are a line each, with their doc comments, in
+! the table fricreg_sim_f77.txt, which fortran/gen_f77.cmake turns into
+! fricreg_sim_f77_generated.f90 at build time; those below have logic of their own (FRSIMK:
+! C's ints copied into the caller's INTEGER).
 
 !> FRSIMC(SYSTEM, H, STAT): create a simulation of SYSTEM (FRICREG_SYSTEM_*) into H, with the
 !> paper's parameters, law (4), RK4, dt = 0.01 and the paper's eps (fricreg_sim_create).
@@ -64,3 +65,29 @@ subroutine frsime(h, code, msg, stat)
   stat = fricreg_f77_last_error(h, fricreg_sim_errcode, fricreg_sim_errmsg, last, msg)
   code = last
 end subroutine frsime
+
+!> FRSIMK(H, NCYC, KINDS, STAT): the kind KINDS(NCYC) of each whole cycle's error estimate of
+!> the last run, FRICREG_EST_KIND_ASYMPTOTIC, _BOUND or _ASSUMED (C's
+!> fricreg_sim_get_dissipation_error_kind; C's ints copied into the caller's INTEGER, of any
+!> size); NCYC must be the number completed. FRICREG_EINVAL when the run made no estimate;
+!> FRICREG_ESIZE for another NCYC; KINDS written only on success. Since 1.8.
+subroutine frsimk(h, ncyc, kinds, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: ncyc
+  integer, intent(inout) :: kinds(*)
+  integer, intent(out) :: stat
+  integer(c_int), allocatable :: tmp(:)
+  integer :: astat
+  allocate (tmp(max(ncyc, 1)), stat=astat)
+  if (astat /= 0) then
+    stat = int(FRICREG_ENOMEM)
+    return
+  end if
+  ! a negative count reaches C as 0, a size it refuses, not as a huge one
+  stat = int(fricreg_sim_get_dissipation_error_kind(fricreg_handle_to_ptr(h), &
+                                                    int(max(ncyc, 0), c_size_t), tmp))
+  if (stat == FRICREG_OK .and. ncyc > 0) kinds(1:ncyc) = int(tmp(1:ncyc))
+end subroutine frsimk

@@ -75,10 +75,12 @@ module fricreg_structure_m
     procedure :: get_forces => struct_get_forces
     procedure :: get_dissipation => struct_get_dissipation
     procedure :: set_error_estimate => struct_set_error_estimate
+    procedure :: set_answer_rtol => struct_set_answer_rtol
     procedure :: get_peak_displacement => struct_get_peak_displacement
     procedure :: get_peak_displacement_error => struct_get_peak_displacement_error
     procedure :: get_dissipation_error => struct_get_dissipation_error
     procedure :: get_jenkins_dissipation_error => struct_get_jenkins_dissipation_error
+    procedure :: get_error_kind => struct_get_error_kind
     procedure :: get_value => struct_get_value
     procedure :: get_stat => struct_get_stat
     procedure :: warning_count => struct_warning_count
@@ -1140,7 +1142,7 @@ contains
   !> eps -> 0 or not (0, the default): on = FRICREG_ESTIMATE_TWO_COMPANIONS (1) from companion
   !> structures at eps/2 and eps/4 stepped alongside at half and a quarter of the step (or an
   !> adaptive run's tolerances/16 and /256), the observed order's Richardson estimate or, out of
-  !> the asymptotic range, a safe bound with FRICREG_WARN_NOT_ASYMPTOTIC;
+  !> the asymptotic range, a safe bound (the kind, get_error_kind: asymptotic or bound);
   !> FRICREG_ESTIMATE_ONE_COMPANION (2), 1.6's err = 3 |q - q_companion|
   !> (fricreg_structure_set_error_estimate: made at the first step after set_initial, fed the
   !> setters of bounds, law, records, Newton and max_steps; another setter ends it).
@@ -1153,6 +1155,19 @@ contains
     if (status == FRICREG_OK) &
       status = self%record(fricreg_structure_set_error_estimate(self%ptr, on))
   end function struct_set_error_estimate
+
+  !> The answer tolerance rtol (finite, > 0; default 1e-2): FRICREG_WARN_ERROR_ESTIMATE where
+  !> the largest peak's estimate exceeds rtol times the largest peak, or the dissipations'
+  !> summed estimate rtol times their summed magnitudes, whatever the kinds; kept across runs
+  !> (fricreg_structure_set_answer_rtol). FRICREG_EINVAL otherwise, nothing changed. Since 1.8.
+  function struct_set_answer_rtol(self, rtol) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(in) :: rtol
+    integer(c_int) :: status
+    status = self%ready('set_answer_rtol', 'structure')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_structure_set_answer_rtol(self%ptr, rtol))
+  end function struct_set_answer_rtol
 
   !> The peak displacements max |u_i| since set_initial, peak(ndof) (length units): every fixed
   !> step's end and the turning points inside it, every adaptive run_ode call's end
@@ -1211,6 +1226,23 @@ contains
                                                                                   kind=c_size_t), &
                                                                              err))
   end function struct_get_jenkins_dissipation_error
+
+  !> The kind of each error estimate of quantity (FRICREG_EST_PEAK_DISPLACEMENT: kinds(ndof),
+  !> FRICREG_EST_DISSIPATION: kinds(m), FRICREG_EST_ELEMENT_DISSIPATION: kinds(me), me the
+  !> number of joint elements set), each FRICREG_EST_KIND_ASYMPTOTIC, _BOUND or _ASSUMED,
+  !> parallel to the *_error getters' err (fricreg_structure_get_error_kind). FRICREG_EINVAL for
+  !> an unknown quantity or without an estimate; FRICREG_ESIZE. Since 1.8.
+  function struct_get_error_kind(self, quantity, kinds) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    integer(c_int), intent(in) :: quantity
+    integer(c_int), intent(inout), contiguous :: kinds(:)
+    integer(c_int) :: status
+    status = self%ready('get_error_kind', 'structure')
+    if (status /= FRICREG_OK) return
+    status = self%unrecorded('get_error_kind', &
+                             fricreg_structure_get_error_kind(self%ptr, quantity, &
+                                                              size(kinds, kind=c_size_t), kinds))
+  end function struct_get_error_kind
 
   !> One quantity (FRICREG_SVALUE_*: time, energies, the balance's residual) into value.
   !> FRICREG_EINVAL for an unknown one.

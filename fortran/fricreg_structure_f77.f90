@@ -66,6 +66,8 @@
 !   FRSTPE(H, NDOF, ERR, STAT)                   _get_peak_displacement_error
 !   FRSTDE(H, M, ERR, STAT)                      _get_dissipation_error
 !   FRSTJE(H, ME, ERR, STAT)                     _get_jenkins_dissipation_error
+!   FRSTEK(H, QUANT, N, KINDS, STAT)             _get_error_kind
+!   FRSTAR(H, RTOL, STAT)                        _set_answer_rtol
 !   FRSTOD(H, INTEG, DT, RTOL, ATOL, TEND, STAT) _run_ode (ATOL = -1: tolerances from eps)
 !   FRSTOT(H, N, ATOL, STAT)                     _set_ode_abs_tolerances (N = 0 removes them)
 !   FRSTOG(H, N, ATOL, STAT)                     _get_ode_abs_tolerances
@@ -78,7 +80,7 @@
 !   FRCSTM(H, M, ZS, ZP, AP, FORMAT, WP, WI, WV, EP, EI, EV, C, TOL, MAXIT, FLAGS, F, ITERS,
 !          CONV, STAT)                           fricreg_ctx_solve_step_matrix (any storage)
 ! The getters (FRSTG*, FRSTJS, FRSTS2, FRSTIS, FRSTNF, FRSTPK, FRSTPE, FRSTDE, FRSTJE,
-! FRSTOG) read a const structure: C records no failure of theirs, so FRSTER still shows the
+! FRSTEK, FRSTOG) read a const structure: C records no failure of theirs, so FRSTER still shows the
 ! failure before (their STAT is the answer). So do the few refusals made here, before C is
 ! called, of counts that would wrap into size_t: FRSTCR's NDOF or M below 1 (there is no
 ! structure yet to record it), FRSTAG's and FRSTLD's N below 0, FRSTIW's, FRSTIL's and
@@ -87,10 +89,11 @@
 ! Generated, not here: the entry points that are one C call (FRSTMC, FRSTKC, FRSTCC, FRSTJC,
 ! FRSTJR, FRSTMX, FRSTMF, FRSTKF, FRSTCF, FRSTCA, FRSTBD, FRSTLW, FRSTIV, FRSTU0, FRSTNM, FRSTHH,
 ! FRSTCD, FRSTNT, FRSTSP, FRSTTE, FRSTGS, FRSTGF, FRSTGD, FRSTGV, FRSTEE, FRSTPK, FRSTPE,
-! FRSTDE, FRSTJE, FRSTOD, FRSTOG, FRSTGT, FRSTJS, FRSTS2, FRSTNF) are a line each, with their doc
+! FRSTDE, FRSTJE, FRSTAR, FRSTOD, FRSTOG, FRSTGT, FRSTJS, FRSTS2, FRSTNF) are a line each, with their doc
 ! comments, in the table fricreg_structure_f77.txt, which fortran/gen_f77.cmake turns into
 ! fricreg_structure_f77_generated.f90 at build time. Those below have logic of their own: a
-! handle made or released, a refused count, J transposed into a scratch copy, the message.
+! handle made or released, a refused count, J transposed into a scratch copy, the message, C's
+! ints copied into the caller's INTEGER (FRSTEK).
 
 !> FRSTCR(NDOF, M, H, STAT): create a structure of NDOF >= 1 degrees of freedom and M >= 1
 !> contacts into H, with C's defaults (M = I, C = K = 0, J unset, law (4), eps = 1e-3,
@@ -417,6 +420,36 @@ subroutine frstis(h, me, ns, f, w, d, stat)
                                               int(max(me, 0), c_size_t), int(ns, c_size_t), f, &
                                               w, d))
 end subroutine frstis
+
+!> FRSTEK(H, QUANT, N, KINDS, STAT): the kind KINDS(N) of each error estimate of QUANT
+!> (FRICREG_EST_PEAK_DISPLACEMENT: N = NDOF; FRICREG_EST_DISSIPATION: N = M;
+!> FRICREG_EST_ELEMENT_DISSIPATION: N = the joint elements set), each
+!> FRICREG_EST_KIND_ASYMPTOTIC, _BOUND or _ASSUMED, parallel to FRSTPE's, FRSTDE's and FRSTJE's
+!> ERR (C's fricreg_structure_get_error_kind; C's ints copied into the caller's INTEGER, of any
+!> size). FRICREG_EINVAL for an unknown QUANT or without an estimate; FRICREG_ESIZE if N is not
+!> QUANT's length; KINDS written only on success. Since 1.8.
+subroutine frstek(h, quant, n, kinds, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: quant, n
+  integer, intent(inout) :: kinds(*)
+  integer, intent(out) :: stat
+  integer(c_int), allocatable :: tmp(:)
+  integer :: astat
+  allocate (tmp(max(n, 1)), stat=astat)
+  if (astat /= 0) then
+    stat = int(FRICREG_ENOMEM)
+    return
+  end if
+  ! an ILP64 caller's QUANT beyond an int is clamped (refused by C); a negative N reaches C as
+  ! 0, a size it refuses, not as a huge one
+  stat = int(fricreg_structure_get_error_kind(fricreg_handle_to_ptr(h), &
+             int(min(max(quant, -int(huge(0_c_int))), int(huge(0_c_int))), c_int), &
+             int(max(n, 0), c_size_t), tmp))
+  if (stat == FRICREG_OK .and. n > 0) kinds(1:n) = int(tmp(1:n))
+end subroutine frstek
 
 !> FRCSTP(H, M, ZS, ZP, AP, W, WEFF, C, TOL, MAXIT, FLAGS, F, ITERS, CONV, STAT): the forces of
 !> one implicit step of the caller's own integrator on a context H (FRCTXC), C's

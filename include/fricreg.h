@@ -102,8 +102,10 @@ enum fricreg_warning {
     FRICREG_WARN_STRIBECK_EPS = 11,   /**< Stribeck delta < 1: band error (fs-fk)/fs (eps/vs)^delta
                                        *   above 1e-2 */
     /** an error estimate (fricreg_sim_set_error_estimate, fricreg_structure_set_error_estimate)
-     *  could not be formed, or is above 10% of its quantity, where it may not bound the error.
-     *  Since 1.6. */
+     *  could not be formed, or exceeds the run's answer tolerance (fricreg_sim_set_answer_rtol,
+     *  fricreg_structure_set_answer_rtol: 1e-2 of its quantity by default, whatever the
+     *  estimate's kind; 10% until 1.7), or (msadams, msbdf) what the tolerances ask. Since
+     *  1.6. */
     FRICREG_WARN_ERROR_ESTIMATE = 12,
     /** a run far past the end of its ground or load record (10 times its duration): its time
      *  step in ms where s was meant? Since 1.7. */
@@ -112,7 +114,9 @@ enum fricreg_warning {
      *  fricreg_sim_set_error_estimate, fricreg-sim's hold, belt and disk) found its three
      *  values at eps, eps/2, eps/4 outside the asymptotic range (no order in eps between 0.5
      *  and 2.5, or differences of opposite signs: the run and its companion may agree on a
-     *  wrong value) and reports a safe bound instead. Since 1.7. */
+     *  wrong value) and reports a safe bound instead. Since 1.7; not raised since 1.8: the
+     *  kind tells (enum fricreg_estimate_kind, FRICREG_EST_KIND_BOUND where it was
+     *  raised). The value stays, fixed forever. */
     FRICREG_WARN_NOT_ASYMPTOTIC = 14
 };
 

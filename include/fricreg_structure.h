@@ -971,11 +971,14 @@ FRICREG_API int fricreg_structure_get_value(const fricreg_structure *s, int whic
  *  p = log2(d1 / d2) is at least 0.5, err = 2 |d1| 2^p / (2^p - 1) (Richardson's correction
  *  with the observed order, times 2; about 2 |d1| where p is above the law's orders); below
  *  (a stall: the run and the first companion agree on a wrong value; or differences that
- *  grow or change sign) err = 6.83 (|d1| + |d2|) and fricreg_structure_warning_count raises
- *  FRICREG_WARN_NOT_ASYMPTOTIC; d2 below 1e-9 of q gives 2 |d1| + |d2|, d1 and d2 both below
- *  it 4 (|d1| + |d2|) (the factor 2 and p = 1's tail; their bare sum before 1.8). With on = FRICREG_ESTIMATE_ONE_COMPANION (2), 1.6's estimator:
- *  err = 3 |d1| (fricreg_sim_set_error_estimate's, with its calibration), which cannot see a
- *  stall (bench/frame_estimate.c: a frame 5x under, no warning).
+ *  grow or change sign) err = 6.83 (|d1| + |d2|); d2 below 1e-9 of q gives 2 |d1| + |d2|, d1
+ *  and d2 both below it 4 (|d1| + |d2|) (the factor 2 and p = 1's tail; their bare sum before
+ *  1.8). With on = FRICREG_ESTIMATE_ONE_COMPANION (2), 1.6's estimator: err = 3 |d1|
+ *  (fricreg_sim_set_error_estimate's, with its calibration), which cannot see a stall
+ *  (bench/frame_estimate.c: a frame 5x under, no warning). Each estimate has a kind
+ *  (fricreg_structure_get_error_kind, enum fricreg_estimate_kind): ASYMPTOTIC where the order
+ *  was seen, BOUND below the range (until 1.7 a dissipation's raised
+ *  FRICREG_WARN_NOT_ASYMPTOTIC, no longer raised), ASSUMED with one companion.
  *  The companion is a second structure, owned by s, stepped alongside it; the second
  *  companion is the first's own, made and stepped by it the same way:
  *  - it is made at the first stepping call (fricreg_structure_step, _run or _run_ode) after
@@ -1007,7 +1010,11 @@ FRICREG_API int fricreg_structure_get_value(const fricreg_structure *s, int whic
  *  Where a companion fails (e.g. FRICREG_ESTEP or FRICREG_EWORK at its finer setting, or no
  *  memory) s's run still succeeds, the estimates become +infinity until the next set_initial, and
  *  fricreg_structure_warning_count raises FRICREG_WARN_ERROR_ESTIMATE with the companion's
- *  message; it raises it too where an estimate is above 10% of its quantity.
+ *  message; it raises it too, whatever the kinds, where the largest peak's estimate exceeds
+ *  the answer tolerance times the largest peak (max_i err_i > rtol max_i peak_i), or the
+ *  dissipations' summed estimates (contacts' and joint elements' together) the tolerance times
+ *  their summed magnitudes (fricreg_structure_set_answer_rtol: rtol = 1e-2 by default; 10%
+ *  until 1.7).
  *  Cost: each companion's run, about 2x and 4x s's for fixed steps (twice and four times the
  *  steps), 1.4x ... 3x each for adaptive ones (fricreg_sim_set_error_estimate); one or two more
  *  structures in memory, allocated at the run's first step (a failed allocation is a failed
@@ -1065,9 +1072,9 @@ FRICREG_API int fricreg_structure_get_dissipation_error(const fricreg_structure 
  *  fricreg_structure_get_dissipation_error: from the companions' runs along the same path
  *  (dt / 2, dt / 4 and eps with it; an element has no eps, so its error is the scheme's in dt),
  *  the estimator of fricreg_structure_set_error_estimate. An element whose three dissipations
- *  show no order along the path gets the safe bound and, with the contacts', raises
- *  FRICREG_WARN_NOT_ASYMPTOTIC naming it; their sum enters the warning of an estimate above 10%
- *  of its quantity (FRICREG_WARN_ERROR_ESTIMATE). Since 1.7 (FRICREG_1.7).
+ *  show no order along the path gets the safe bound (kind BOUND, fricreg_structure_get_error_kind);
+ *  their sum, with the contacts', enters the warning of an estimate above the answer tolerance
+ *  (FRICREG_WARN_ERROR_ESTIMATE). Since 1.7 (FRICREG_1.7).
  *  s     in: the structure; not modified.
  *  me    in: the number of elements set (0: nothing to write).
  *  err   out: err[me]; written only on success.
@@ -1076,6 +1083,50 @@ FRICREG_API int fricreg_structure_get_dissipation_error(const fricreg_structure 
  *  number of elements set. */
 FRICREG_API int fricreg_structure_get_jenkins_dissipation_error(const fricreg_structure *s,
                                                                 size_t me, double err[]);
+
+/** The quantities whose error fricreg_structure_set_error_estimate estimates, for
+ *  fricreg_structure_get_error_kind. Values are fixed forever. Since 1.8 (FRICREG_1.8). */
+enum fricreg_estimated_quantity {
+    /** the peak displacements, n = ndof (fricreg_structure_get_peak_displacement_error) */
+    FRICREG_EST_PEAK_DISPLACEMENT = 1,
+    /** the contacts' dissipations, n = m (fricreg_structure_get_dissipation_error) */
+    FRICREG_EST_DISSIPATION = 2,
+    /** the joint elements' dissipations, n = the number of elements set
+     *  (fricreg_structure_get_jenkins_dissipation_error) */
+    FRICREG_EST_ELEMENT_DISSIPATION = 3
+};
+
+/** Copy the kind of each error estimate of `quantity` into kind[n]: enum
+ *  fricreg_estimate_kind, FRICREG_EST_KIND_ASYMPTOTIC (1: q, q2, q4 showed the law's
+ *  order, the estimate Richardson's with the observed order, expected 1 ... 3x the error),
+ *  _BOUND (2: they did not, or a companion failed and the estimate is +infinity: a safe upper
+ *  bound) or _ASSUMED (3: one companion, the order assumed), the decision of
+ *  src/base/companion_estimate.c (fricreg_structure_set_error_estimate), at the current time.
+ *  s         in: the structure; not modified.
+ *  quantity  in: enum fricreg_estimated_quantity: FRICREG_EST_PEAK_DISPLACEMENT (n =
+ *            ndof), FRICREG_EST_DISSIPATION (n = m contacts) or
+ *            FRICREG_EST_ELEMENT_DISSIPATION (n = the joint elements set).
+ *  n         in: the length of kind, as above.
+ *  kind      out: kind[n], parallel to the *_error getter's err[n]; written only on success.
+ *  Returns FRICREG_OK; FRICREG_ENULL if s or kind is NULL; FRICREG_EINVAL for an unknown
+ *  quantity, or when there is no estimate (as fricreg_structure_get_peak_displacement_error);
+ *  FRICREG_ESIZE if n is not the quantity's length. Since 1.8 (FRICREG_1.8). */
+FRICREG_API int fricreg_structure_get_error_kind(const fricreg_structure *s, int quantity, size_t n,
+                                                 int kind[]);
+
+/** Set the run's answer tolerance: fricreg_structure_warning_count raises
+ *  FRICREG_WARN_ERROR_ESTIMATE where max_i peak_err_i > rtol max_i |peak_i| or
+ *  sum_j D_err_j > rtol sum_j |D_j| (contacts and joint elements together), whatever the
+ *  estimates' kinds (fricreg_structure_set_error_estimate; the relative error a caller
+ *  accepts in the answer, dimensionless). Default 1e-2; until 1.7 a fixed 10%, which
+ *  rtol = 0.1 roughly restores. Kept across runs and set_initial; not passed to the
+ *  companions (they raise no warning); it changes no result, only the warning, judged on the
+ *  value in force when the warnings are judged (fricreg_structure_warning_count).
+ *  s     in/out: the structure.
+ *  rtol  in: the tolerance, finite and > 0.
+ *  Returns FRICREG_OK; FRICREG_ENULL if s is NULL; FRICREG_EINVAL if rtol is not finite or
+ *  not > 0 (nothing changed). Since 1.8 (FRICREG_1.8). */
+FRICREG_API int fricreg_structure_set_answer_rtol(fricreg_structure *s, double rtol);
 
 /** Counters since creation or set_initial, for fricreg_structure_get_stat. Fixed forever. */
 enum fricreg_structure_stat {

@@ -69,6 +69,26 @@ enum fricreg_error_estimate {
     FRICREG_ESTIMATE_ONE_COMPANION = 2 /**< 1.6's: one companion at eps / 2, 3 |q - q2| */
 };
 
+/** The kind of an error estimate (fricreg_sim_get_dissipation_error_kind,
+ *  fricreg_structure_get_error_kind): what the three values q, q2 = q(eps / 2),
+ *  q4 = q(eps / 4) of the two-companion estimator showed (src/base/companion_estimate.c), and so
+ *  how far the estimate is from the error. Values are fixed forever; the names are short
+ *  for Fortran's 31 characters. Since 1.8 (FRICREG_1.8);
+ *  they replace FRICREG_WARN_NOT_ASYMPTOTIC, raised where the kind is BOUND until 1.7. */
+enum fricreg_estimate_kind {
+    /** the three values show the law's order (d1 / d2 >= 2^0.5 with d1 = q - q2,
+     *  d2 = q2 - q4, or d2 at the solver's noise with d1 above it): Richardson's correction
+     *  with the observed order, times 2, expected 1 ... 3x the error */
+    FRICREG_EST_KIND_ASYMPTOTIC = 1,
+    /** they do not (an order below the range, differences of opposite signs, or both at the
+     *  solver's noise level), or the estimate could not be formed (+infinity): a safe upper
+     *  bound, not an estimate of the error's size */
+    FRICREG_EST_KIND_BOUND = 2,
+    /** one companion (1.6's estimator, FRICREG_ESTIMATE_ONE_COMPANION): the law's lower order
+     *  assumed, not checked */
+    FRICREG_EST_KIND_ASSUMED = 3
+};
+
 /** \} */
 
 #ifdef __cplusplus

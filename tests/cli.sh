@@ -218,6 +218,12 @@ if [ -s "$tmp/err" ] ||
    grep -q 'error_estimate' "$tmp/off"; then
     echo "FAIL: error estimate: $(cat "$tmp/err") $(cat "$tmp/out") $(cat "$tmp/off")"; fails=$((fails + 1))
 fi
+# ... each with its kind, and their count; --answer-rtol X warns where the last cycle's estimate
+# exceeds X |D| (fricreg_sim_set_answer_rtol), naming it and its kind (cycle 1: 3.6e-5 of D;
+# the oscillator sticks after it, D = 0 is exact); X finite and > 0.
+expect_output '"dissipation_error_kind": \["(asymptotic|bound)", "(asymptotic|bound)", "(asymptotic|bound)"\], .*"error_estimate_kinds": \{"asymptotic": [0-3], "bound": [0-3], "assumed": 0\}, "cpu_seconds": [0-9.]+, "warnings": \[\]' oscillator --cycles 3
+expect_output '"code": "error_estimate", "message": "the error estimate [0-9.e-]+ of cycle 1.s dissipation [0-9.]+ \(asymptotic\) exceeds the answer tolerance 1e-05 of it: halve eps and dt, or raise --answer-rtol' oscillator --cycles 1 --answer-rtol 1e-5
+expect_usage_error "--answer-rtol" oscillator --answer-rtol 0
 # msbdf warns only when its estimate exceeds what the tolerances ask of D (atol + rtol |D|): at
 # rtol 1e-6 the estimate 7.1e-5 is above 2.4e-6; at rtol 1e-4, 4.1e-5 is below 2.4e-4.
 total=$((total + 1))
@@ -256,8 +262,14 @@ expect_output '"x": \[-1\.95438123028[34][0-9]*\]' $block --integrator newmark -
 expect_output '"dissipation_per_contact": \[9\.4396613422[67][0-9]*\]' $block --integrator newmark --dt 0.01
 # The error estimates of the peak displacement and the dissipation (a companion run at eps/2,
 # dt/2): the block's motion is exact in every scheme, so they are at rounding level (a
-# companion that moved would show); none with --error-estimate off.
-expect_output '"peak_displacement_error_estimate": \[[0-9.]+e-1[3-9]\], "dissipation_per_contact": \[9\.4396613422[67][0-9]*\], "dissipation_per_contact_error_estimate": \[[0-9.]+e-1[2-9]\]' $block --integrator newmark --dt 0.01
+# companion that moved would show), of kind bound (no order is read from rounding), and the
+# summary counts them; none with --error-estimate off.
+expect_output '"peak_displacement_error_estimate": \[[0-9.]+e-1[3-9]\], "peak_displacement_error_kind": \["bound"\], "dissipation_per_contact": \[9\.4396613422[67][0-9]*\], "dissipation_per_contact_error_estimate": \[[0-9.]+e-1[2-9]\], "dissipation_per_contact_error_kind": \["bound"\], "error_estimate_kinds": \{"asymptotic": 0, "bound": 2, "assumed": 0\}.*"warnings": \[\]' $block --integrator newmark --dt 0.01
+# --answer-rtol (fricreg_structure_set_answer_rtol): an estimate above X times its quantity
+# warns error_estimate whatever its kind, here rounding against X = 1e-15; X finite and > 0.
+expect_output '"code": "error_estimate", "message": "the error estimate [0-9.e-]+ of the largest peak displacement [0-9.]+ \(kind bound\) exceeds the answer tolerance 1e-15 of it: halve eps and dt, or raise --answer-rtol' $block --integrator newmark --dt 0.01 --answer-rtol 1e-15
+expect_usage_error "--answer-rtol" $block --integrator newmark --dt 0.01 --answer-rtol 0
+expect_usage_error "--answer-rtol" $block --integrator newmark --dt 0.01 --answer-rtol inf
 total=$((total + 1))
 if "$sim" $block --integrator newmark --dt 0.01 --error-estimate off 2>&1 | grep -q error_estimate; then
     echo "FAIL: structure --error-estimate off still estimates"; fails=$((fails + 1))
@@ -465,7 +477,7 @@ jk2="structure --mass $d/M22.mtx --stiffness $d/K22.mtx --contacts $d/J12.mtx --
 expect_same 0 $jk2 --jenkins $d/J12.mtx --jenkins-params $d/P_stuck.txt --integrator newmark -- $jk2 --jenkins-2d $d/J2d.mtx --jenkins-params $d/P_stuck.txt --integrator newmark
 expect_same 0 $jk2 --jenkins $d/J12.mtx --jenkins-params $d/P_slip.txt --integrator newmark -- $jk2 --jenkins-2d $d/J2d.mtx --jenkins-params $d/P_slip.txt --integrator newmark
 expect_same 0 $jk2 --jenkins $d/J12.mtx --jenkins-params $d/P_slip.txt --integrator central -- $jk2 --jenkins-2d $d/J2d.mtx --jenkins-params $d/P_slip.txt --integrator central
-expect_output '"x": \[-0\.00113279590437[89][0-9]*, 0\].*"njenkins": 1, "dissipation_per_jenkins": \[0\], "dissipation_per_jenkins_error_estimate": \[0\], "jenkins_dissipation": 0, "element_kind": "jenkins-2d", "jenkins_forces": \[\[-0\.226559180875(79|80)[0-9]*, 0\]\]' $jk2 --jenkins-2d $d/J2d.mtx --jenkins-params $d/P_stuck.txt --integrator newmark
+expect_output '"x": \[-0\.00113279590437[89][0-9]*, 0\].*"njenkins": 1, "dissipation_per_jenkins": \[0\], "dissipation_per_jenkins_error_estimate": \[0\], "dissipation_per_jenkins_error_kind": \["bound"\], "jenkins_dissipation": 0, "element_kind": "jenkins-2d", "jenkins_forces": \[\[-0\.226559180875(79|80)[0-9]*, 0\]\]' $jk2 --jenkins-2d $d/J2d.mtx --jenkins-params $d/P_stuck.txt --integrator newmark
 mtx J2odd.mtx general "3 2 3" "1 1 1" "2 2 1" "3 1 1"
 expect_usage_error "^fricreg-sim: --jenkins-2d $d/J2odd.mtx: 3 rows: a 2-D element takes two" $jk2 --jenkins-2d $d/J2odd.mtx --jenkins-params $d/P_stuck.txt --integrator newmark
 expect_usage_error "^fricreg-sim: --jenkins-2d: give --jenkins or --jenkins-2d, not both" $jk2 --jenkins $d/J12.mtx --jenkins-2d $d/J2d.mtx --jenkins-params $d/P_stuck.txt --integrator newmark
@@ -987,7 +999,9 @@ expect_output '"steps": 10000000, .*"creep": 0, "displacement": 0, "slides": fal
 # (1 - 7.5e-8) mu N): still exactly 0.
 expect_output '"creep": 0, "displacement": 0, "slides": false' hold --phi-deg 217.3 --theta-deg 28.3024623 --steps 100000
 # ... and so are its reruns at eps/2 and eps/4: error estimates 0, the Coulomb solution's error.
-expect_output '"creep_error_estimate": 0, "displacement_error_estimate": 0, "cpu_seconds": [0-9.]+, "warnings": \[\]' hold --phi-deg 217.3 --theta-deg 28.3024623 --steps 100000
+# Their kind: bound (three equal values show no order).
+expect_output '"creep_error_estimate": 0, "creep_error_kind": "bound", "displacement_error_estimate": 0, "displacement_error_kind": "bound", "error_estimate_kinds": \{"asymptotic": 0, "bound": 2, "assumed": 0\}, "cpu_seconds": [0-9.]+, "warnings": \[\]' hold --phi-deg 217.3 --theta-deg 28.3024623 --steps 100000
+expect_usage_error "--answer-rtol" hold --answer-rtol -1
 # ... and outside it (29 deg) the block slides at g (sin theta - mu cos theta) = 0.135641967
 # m/s^2 from the first step (in the band too the law gives -mu N u when f_eq is beyond the
 # disk along -u), which RK4 integrates exactly: 0.0271283934013776 m/s after 0.2 s.
@@ -1074,7 +1088,9 @@ within "disk D against its reference" "$tmp/disk.json" \
 # 3 |D - D(eps/2)| with one.
 within "disk's estimate bounds its error" "$tmp/disk.json" \
     'dissipation_per_cycle_error_estimate >= relative_error * dissipation_per_cycle && dissipation_per_cycle_error_estimate <= 10 * relative_error * dissipation_per_cycle'
-expect_output '"dissipation_per_cycle_error_estimate": [0-9.]+e-0[56], "cpu_seconds": [0-9.]+, "warnings": \[\]}$' disk --ref-eps 0 --error-estimate one
+expect_output '"dissipation_per_cycle_error_estimate": [0-9.]+e-0[56], "dissipation_per_cycle_error_kind": "assumed", "error_estimate_kinds": \{"asymptotic": 0, "bound": 0, "assumed": 1\}, "cpu_seconds": [0-9.]+, "warnings": \[\]}$' disk --ref-eps 0 --error-estimate one
+# ... its estimate, 4e-6 of D, exceeds an answer tolerance of 1e-6: the warning, kind named.
+expect_output '"code": "error_estimate", "message": "the error estimate [0-9.e-]+ of dissipation_per_cycle 10\.0[0-9]* \(assumed\) exceeds the answer tolerance 1e-06 of it: halve eps and dt, or raise --answer-rtol"' disk --ref-eps 0 --error-estimate one --answer-rtol 1e-6
 total=$((total + 1))
 if "$sim" disk --ref-eps 0 --error-estimate off | grep -q error_estimate; then
     echo "FAIL: disk --error-estimate off still estimates"; fails=$((fails + 1))

@@ -19,7 +19,8 @@ refused_only() { # COMMAND OPTION
     "exact --law" | "exact --integrator" | "exact --dt" | "exact --rtol" | "exact --atol") return 0 ;;
     "exact --eps" | "exact --extrapolate" | "exact --extrapolate-order") return 0 ;;
     "exact --extrapolate-window" | "exact --max-steps" | "exact --kink-location") return 0 ;;
-    "exact --error-estimate" | "hb --jenkins-2d" | "nma --jenkins-2d") return 0 ;;
+    "exact --error-estimate" | "exact --answer-rtol") return 0 ;;
+    "hb --jenkins-2d" | "nma --jenkins-2d") return 0 ;;
     esac
     return 1
 }

@@ -4,7 +4,8 @@
  * known reference: the oscillator's exact solution (fricreg_exact.h), a = 2, omega = 0.5 (it
  * sticks: p = 2 in eps), and the non-sticking a = 0.5, omega = 1.5 (p = 1); both estimators
  * are their formulas on companions run by hand; outside the asymptotic range (eps = 1) the
- * safe bound with FRICREG_WARN_NOT_ASYMPTOTIC; and the other warnings. The one-companion
+ * safe bound of kind FRICREG_EST_KIND_BOUND; the answer tolerance's warning and the others;
+ * the kinds' getters and the answer tolerance's setter, every error. The one-companion
  * estimator's calibration is bench/error_estimate.c (docs/integrators.md, "Error estimate"). */
 #include <check.h>
 #include <math.h>
@@ -151,10 +152,21 @@ START_TEST(test_estimators_are_their_formulas)
     ck_assert_int_eq(fricreg_sim_run_cycles(sim, CYCLES), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_get_dissipation(sim, CYCLES, D), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_get_dissipation_error(sim, CYCLES, one), FRICREG_OK);
+    int kind[CYCLES];
+    double total_kind = 0.0;
+    ck_assert_int_eq(fricreg_sim_get_dissipation_error_kind(sim, CYCLES, kind), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_get_value(sim, FRICREG_VALUE_DISS_ERROR_KIND, &total_kind),
+                     FRICREG_OK);
+    ck_assert(total_kind == FRICREG_EST_KIND_ASSUMED);
+    for (int c = 0; c < CYCLES; c++)
+        ck_assert_int_eq(kind[c], FRICREG_EST_KIND_ASSUMED);
     ck_assert_int_eq(fricreg_sim_set_error_estimate(sim, FRICREG_ESTIMATE_TWO_COMPANIONS),
                      FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_run_cycles(sim, CYCLES), FRICREG_OK);
     ck_assert_int_eq(fricreg_sim_get_dissipation_error(sim, CYCLES, two), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_get_dissipation_error_kind(sim, CYCLES, kind), FRICREG_OK);
+    for (int c = 0; c < CYCLES; c++) /* d1 / d2 in the range (below) */
+        ck_assert_int_eq(kind[c], FRICREG_EST_KIND_ASYMPTOTIC);
     ck_assert_uint_eq(fricreg_sim_warning_count(sim), 0);
     fricreg_sim_free(sim);
     for (int c = 0; c < CYCLES; c++) {
@@ -169,9 +181,11 @@ END_TEST
 /* Outside the asymptotic range: at eps = 1 (dt = 0.01) the third cycle's D at eps, eps/2, eps/4
  * is 10.40408, 10.41445, 10.42547, differences that grow (d1 / d2 = 0.94, no order): the
  * estimate is the safe bound 6.83 (|d1| + |d2|) = 0.146, 5.4x the error 0.0269 against the
- * exact solution (one companion's 3 |d1| = 0.031 bounds it by 16% only), with
- * FRICREG_WARN_NOT_ASYMPTOTIC naming the cycle. Every cycle's estimate still bounds its error. */
-START_TEST(test_not_asymptotic)
+ * exact solution (one companion's 3 |d1| = 0.031 bounds it by 16% only), of kind BOUND (until
+ * 1.7 FRICREG_WARN_NOT_ASYMPTOTIC, no longer raised). Every cycle's estimate still bounds its
+ * error. The last cycle's estimate is above 1% of its D: FRICREG_WARN_ERROR_ESTIMATE at the
+ * default answer tolerance, naming it, and none at 10%. */
+START_TEST(test_bound_kind)
 {
     double ref[CYCLES], D[CYCLES], err[CYCLES];
     exact_dissipation(2.0, 0.5, ref);
@@ -183,12 +197,29 @@ START_TEST(test_not_asymptotic)
         ck_assert_msg(err[c] >= fabs(D[c] - ref[c]), "cycle %d: error %.3g, estimate %.3g", c + 1,
                       fabs(D[c] - ref[c]), err[c]);
     ck_assert_double_eq_tol(err[2], 0.146, 0.001);
+    int kind[CYCLES] = {0};
+    ck_assert_int_eq(fricreg_sim_get_dissipation_error_kind(sim, CYCLES, kind), FRICREG_OK);
+    ck_assert_int_eq(kind[2], FRICREG_EST_KIND_BOUND);
+    ck_assert_msg(err[3] > 0.01 * fabs(D[3]) && err[3] < 0.1 * fabs(D[3]), "cycle 4: %g of %g",
+                  err[3], D[3]);
     ck_assert_uint_eq(fricreg_sim_warning_count(sim), 1);
     int code = -1;
     char msg[300];
     ck_assert_int_eq(fricreg_sim_get_warning(sim, 0, &code, msg, sizeof msg), FRICREG_OK);
-    ck_assert_int_eq(code, FRICREG_WARN_NOT_ASYMPTOTIC);
-    ck_assert_ptr_nonnull(strstr(msg, "cycle 3's"));
+    ck_assert_int_eq(code, FRICREG_WARN_ERROR_ESTIMATE);
+    ck_assert_ptr_nonnull(strstr(msg, "cycle 4's"));
+    ck_assert_ptr_nonnull(strstr(msg, "answer tolerance 0.01"));
+    ck_assert_ptr_nonnull(
+        strstr(msg, kind[3] == FRICREG_EST_KIND_BOUND ? "(bound)" : "(asymptotic)"));
+    ck_assert_ptr_nonnull(strstr(msg, "halve eps and dt, or raise --answer-rtol"));
+    /* judged on the tolerance in force: at 10% the same run warns of nothing */
+    ck_assert_int_eq(fricreg_sim_set_answer_rtol(sim, 0.1), FRICREG_OK);
+    ck_assert_uint_eq(fricreg_sim_warning_count(sim), 0);
+    /* a refused tolerance changes nothing; the tolerance is kept across runs */
+    ck_assert_int_eq(fricreg_sim_set_answer_rtol(sim, NAN), FRICREG_EINVAL);
+    ck_assert_uint_eq(fricreg_sim_warning_count(sim), 0);
+    ck_assert_int_eq(fricreg_sim_run_cycles(sim, CYCLES), FRICREG_OK);
+    ck_assert_uint_eq(fricreg_sim_warning_count(sim), 0);
     fricreg_sim_free(sim);
 }
 END_TEST
@@ -225,6 +256,42 @@ START_TEST(test_warnings)
 }
 END_TEST
 
+/* fricreg_sim_get_dissipation_error_kind's errors as fricreg_sim_get_dissipation_error's,
+ * FRICREG_VALUE_DISS_ERROR_KIND's, and fricreg_sim_set_answer_rtol's: each refusal leaves the
+ * output and the tolerance as they were. */
+START_TEST(test_kind_and_rtol_refusals)
+{
+    fricreg_sim *sim = NULL;
+    int kind[CYCLES] = {-1};
+    double v = -1.0;
+    ck_assert_int_eq(fricreg_sim_create(FRICREG_SYSTEM_OSCILLATOR, &sim), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_get_dissipation_error_kind(NULL, 0, kind), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_sim_get_dissipation_error_kind(sim, 0, NULL), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_sim_run_cycles(sim, 1), FRICREG_OK); /* the estimate off */
+    ck_assert_int_eq(fricreg_sim_get_dissipation_error_kind(sim, 1, kind), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_sim_get_value(sim, FRICREG_VALUE_DISS_ERROR_KIND, &v), FRICREG_EINVAL);
+    ck_assert(kind[0] == -1 && v == -1.0);
+    ck_assert_int_eq(fricreg_sim_set_error_estimate(sim, FRICREG_ESTIMATE_TWO_COMPANIONS),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run_cycles(sim, 1), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_get_dissipation_error_kind(sim, 1, NULL), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_sim_get_dissipation_error_kind(sim, 2, kind), FRICREG_ESIZE);
+    ck_assert_int_eq(kind[0], -1);
+    ck_assert_int_eq(fricreg_sim_get_dissipation_error_kind(sim, 1, kind), FRICREG_OK);
+    ck_assert(kind[0] >= FRICREG_EST_KIND_ASYMPTOTIC && kind[0] <= FRICREG_EST_KIND_BOUND);
+    ck_assert_int_eq(fricreg_sim_get_value(sim, FRICREG_VALUE_DISS_ERROR_KIND, &v), FRICREG_OK);
+    ck_assert(v == FRICREG_EST_KIND_ASYMPTOTIC || v == FRICREG_EST_KIND_BOUND);
+
+    ck_assert_int_eq(fricreg_sim_set_answer_rtol(NULL, 0.1), FRICREG_ENULL);
+    const double bad[4] = {0.0, -1e-3, INFINITY, NAN};
+    for (int k = 0; k < 4; k++) {
+        ck_assert_int_eq(fricreg_sim_set_answer_rtol(sim, bad[k]), FRICREG_EINVAL);
+        ck_assert_ptr_nonnull(strstr(fricreg_sim_errmsg(sim), "set_answer_rtol"));
+    }
+    fricreg_sim_free(sim);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("error_estimate");
@@ -236,7 +303,8 @@ int main(void)
     tcase_add_test(tc, test_off_and_refusals);
     tcase_add_test(tc, test_warnings);
     tcase_add_test(tc, test_estimators_are_their_formulas);
-    tcase_add_test(tc, test_not_asymptotic);
+    tcase_add_test(tc, test_bound_kind);
+    tcase_add_test(tc, test_kind_and_rtol_refusals);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);
     srunner_run_all(sr, CK_NORMAL);

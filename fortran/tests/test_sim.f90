@@ -44,6 +44,7 @@ program test_sim
   implicit none
   type(fricreg_simulation) :: sim
   real(c_double), allocatable :: D(:), Derr(:)
+  integer(c_int), allocatable :: kinds(:)
   real(c_double) :: x(1), v(1), x2(2), value, frac(32), atol3(3)
   integer(c_int), target :: calls
   integer(c_int64_t) :: count
@@ -166,6 +167,25 @@ program test_sim
   call check(size(Derr) == 3, 'three estimates')
   call check(abs(D(3) - 10.410028667845459_c_double) <= Derr(3), 'D within its error estimate')
   call check(Derr(3) <= 10 * abs(D(3) - 10.410028667845459_c_double), 'estimate within 10x')
+  ! Each estimate's kind (get_dissipation_error_kind), and the answer tolerance's setter.
+  call check_status(sim%get_dissipation_error_kind(kinds), FRICREG_OK, 'get_dissipation_error_kind')
+  call check(size(kinds) == 3, 'three kinds')
+  call check(all(kinds == FRICREG_EST_KIND_ASYMPTOTIC .or. kinds == FRICREG_EST_KIND_BOUND), &
+             'kinds asymptotic or bound with two companions')
+  call check_status(sim%set_answer_rtol(0.0_c_double), FRICREG_EINVAL, 'set_answer_rtol 0')
+  call check(index(sim%errmsg(), 'set_answer_rtol') > 0, 'message: ' // sim%errmsg())
+  call check_status(sim%set_answer_rtol(1e-12_c_double), FRICREG_OK, 'set_answer_rtol 1e-12')
+  call check(fricreg_sim_warning_count(sim%handle()) == 1, 'the estimate above 1e-12 of D warns')
+  call check_status(sim%set_answer_rtol(0.1_c_double), FRICREG_OK, 'set_answer_rtol 0.1')
+  call check(fricreg_sim_warning_count(sim%handle()) == 0, 'nor above 10%')
+  call check_status(sim%set_error_estimate(FRICREG_ESTIMATE_ONE_COMPANION), FRICREG_OK, &
+                    'set_error_estimate one companion')
+  call check_status(sim%run_cycles(3), FRICREG_OK, 'run_cycles with one companion')
+  call check_status(sim%get_dissipation_error_kind(kinds), FRICREG_OK, 'kinds: one companion')
+  call check(all(kinds == FRICREG_EST_KIND_ASSUMED), 'one companion: kind assumed')
+  call check_status(sim%set_error_estimate(FRICREG_ESTIMATE_OFF), FRICREG_OK, 'estimate off')
+  call check_status(sim%run_cycles(1), FRICREG_OK, 'run_cycles without an estimate')
+  call check_status(sim%get_dissipation_error_kind(kinds), FRICREG_EINVAL, 'no kinds without')
 
   ! The chain of Sec. 3.2, the paper's defaults: D per cycle converges to 0.0105.
   call check_status(sim%create(FRICREG_SYSTEM_CHAIN), FRICREG_OK, 'create chain (replaces)')

@@ -244,6 +244,7 @@ contains
     type(c_ptr) :: s
     real(c_double) :: uf(3), vf(3), af(3), uc(3), vc(3), ac(3), ff(2), fc(2), Df(2), Dc(2)
     real(c_double) :: wf, wc, pf(3), pc(3), pef(3), pec(3), Def(2), Dec(2)
+    integer(c_int) :: kf(3), kc(3)
     integer(c_int64_t) :: nf, nc
     integer(c_int) :: which
     character(len=8) :: tag
@@ -315,6 +316,30 @@ contains
     do i = 1, 2
       call check_bits(Def(i), Dec(i), trim(tag) // ': D error')
     end do
+    ! the estimates' kinds, the same as C's; an unknown quantity and a wrong size refused
+    call check_status(st%get_error_kind(FRICREG_EST_PEAK_DISPLACEMENT, kf), FRICREG_OK, &
+                      'get_error_kind peaks ' // tag)
+    call check_status(fricreg_structure_get_error_kind(s, FRICREG_EST_PEAK_DISPLACEMENT, &
+                                                       3_c_size_t, kc), FRICREG_OK, 'C kinds')
+    call check(all(kf == kc), trim(tag) // ': peak kinds as C''s')
+    call check_status(st%get_error_kind(FRICREG_EST_DISSIPATION, kf(1:2)), FRICREG_OK, &
+                      'get_error_kind dissipations ' // tag)
+    call check_status(fricreg_structure_get_error_kind(s, FRICREG_EST_DISSIPATION, 2_c_size_t, &
+                                                       kc), FRICREG_OK, 'C D kinds')
+    call check(all(kf(1:2) == kc(1:2)), trim(tag) // ': D kinds as C''s')
+    call check(all(kf(1:2) == FRICREG_EST_KIND_ASYMPTOTIC .or. &
+                   kf(1:2) == FRICREG_EST_KIND_BOUND), trim(tag) // ': two companions')
+    call check_status(st%get_error_kind(FRICREG_EST_DISSIPATION, kf), FRICREG_ESIZE, &
+                      'kinds of 3 contacts')
+    call check_status(st%get_error_kind(0_c_int, kf), FRICREG_EINVAL, 'kinds of quantity 0')
+    ! the answer tolerance: at 1e-15 the estimates exceed it (a warning), at 1 they do not
+    call check_status(st%set_answer_rtol(-1.0_c_double), FRICREG_EINVAL, 'set_answer_rtol -1')
+    call check(index(st%errmsg(), 'set_answer_rtol') > 0, 'message: ' // st%errmsg())
+    call check_status(st%set_answer_rtol(1e-15_c_double), FRICREG_OK, 'set_answer_rtol 1e-15')
+    call check(count_code(FRICREG_WARN_ERROR_ESTIMATE) >= 1, trim(tag) // ': 1e-15 warns')
+    call check_status(st%set_answer_rtol(1.0_c_double), FRICREG_OK, 'set_answer_rtol 1')
+    call check(count_code(FRICREG_WARN_ERROR_ESTIMATE) == 0, trim(tag) // ': 1 does not')
+    call check_status(st%set_answer_rtol(1e-2_c_double), FRICREG_OK, 'set_answer_rtol back')
     do which = FRICREG_SVALUE_TIME, FRICREG_SVALUE_INITIAL
       call check_status(st%get_value(which, wf), FRICREG_OK, 'get_value')
       call check_status(fricreg_structure_get_value(s, which, wc), FRICREG_OK, 'C get_value')
@@ -327,5 +352,19 @@ contains
     end do
     call fricreg_structure_free(s)
   end subroutine compare_with_c
+
+  !> How many of st's warnings, judged now, have the code `code`.
+  integer function count_code(code)
+    integer(c_int), intent(in) :: code
+    integer(c_int) :: c
+    character(len=:), allocatable :: message
+    integer :: k
+    count_code = 0
+    do k = 1, st%warning_count()
+      if (st%get_warning(k, c, message) == FRICREG_OK) then
+        if (c == code) count_code = count_code + 1
+      end if
+    end do
+  end function count_code
 
 end program test_structure_type

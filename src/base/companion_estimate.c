@@ -12,11 +12,11 @@
  * limit than q, and the estimate tends to SAFETY |d1|. Below the range (a stall: q and q2
  * agree on a wrong value; or differences that grow or change sign) no order can be trusted:
  * the bound OUT_FACTOR (|d1| + |d2|), what a geometric tail of the slowest accepted order
- * would add to the two differences seen, flagged not asymptotic. Differences both below NOISE
- * of the quantity are a solver's tolerance, not an order: no order is read from them, but the
- * safety factor and the tail of the law's lower order still apply, NOISE_FACTOR (|d1| + |d2|)
- * (their bare sum was 0.997x the error on the disk of bench/estimate_unseen.sh). One companion
- * (1.6's estimator): FACTOR_ONE |d1|. */
+ * would add to the two differences seen, of kind BOUND. Differences both below NOISE of the
+ * quantity are a solver's tolerance, not an order: no order is read from them, but the safety
+ * factor and the tail of the law's lower order still apply, NOISE_FACTOR (|d1| + |d2|) (their
+ * bare sum was 0.997x the error on the disk of bench/estimate_unseen.sh), of kind BOUND too.
+ * One companion (1.6's estimator): FACTOR_ONE |d1|, of kind ASSUMED. */
 #include "companion_estimate.h"
 
 #include <math.h>
@@ -35,24 +35,43 @@
 /* The noise branch: SAFETY times p = P_LO's Richardson tail 2^P_LO / (2^P_LO - 1) = 2. */
 #define NOISE_FACTOR (SAFETY * 2.0)
 
-static double two_companions(double q, double q2, double q4, int *not_asymptotic)
+static double two_companions(double q, double q2, double q4, int *kind)
 {
     double d1 = q - q2, d2 = q2 - q4;
     double floor = NOISE * fmax(fabs(q), fmax(fabs(q2), fabs(q4)));
-    if (fabs(d1) <= floor && fabs(d2) <= floor)
+    *kind = FRICREG_EST_KIND_BOUND;
+    if (fabs(d1) <= floor && fabs(d2) <= floor) /* no order can be read from noise */
         return NOISE_FACTOR * (fabs(d1) + fabs(d2));
-    if (fabs(d2) <= floor) /* q2 and q4 agree to a solver's tolerance: Richardson's limit */
+    if (fabs(d2) <= floor) { /* q2 and q4 agree to a solver's tolerance: Richardson's limit */
+        *kind = FRICREG_EST_KIND_ASYMPTOTIC;
         return SAFETY * fabs(d1) + fabs(d2);
+    }
     double r = d1 / d2;
-    if (r >= exp2(P_LO - BAND))
+    if (r >= exp2(P_LO - BAND)) {
+        *kind = FRICREG_EST_KIND_ASYMPTOTIC;
         return SAFETY * fabs(d1) * r / (r - 1.0);
-    *not_asymptotic = 1;
+    }
     return OUT_FACTOR * (fabs(d1) + fabs(d2));
 }
 
-double fr_companion_estimate(int estimator, double q, double q2, double q4, int *not_asymptotic)
+double fr_companion_estimate(int estimator, double q, double q2, double q4, int *kind)
 {
-    if (estimator == FRICREG_ESTIMATE_ONE_COMPANION)
+    if (estimator == FRICREG_ESTIMATE_ONE_COMPANION) {
+        *kind = FRICREG_EST_KIND_ASSUMED;
         return FACTOR_ONE * fabs(q - q2);
-    return two_companions(q, q2, q4, not_asymptotic);
+    }
+    double err = two_companions(q, q2, q4, kind);
+    if (!(err < INFINITY)) /* a difference overflowed or was NaN: no order was seen */
+        *kind = FRICREG_EST_KIND_BOUND;
+    return err;
+}
+
+const char *fr_estimate_kind_name(int kind)
+{
+    switch (kind) {
+    case FRICREG_EST_KIND_ASYMPTOTIC: return "asymptotic";
+    case FRICREG_EST_KIND_BOUND: return "bound";
+    case FRICREG_EST_KIND_ASSUMED: return "assumed";
+    default: return "unknown";
+    }
 }

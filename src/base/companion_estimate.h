@@ -9,11 +9,21 @@
 
 #include "fricreg_sim.h" /* enum fricreg_error_estimate */
 
+/* The default answer tolerance (fricreg_sim_set_answer_rtol, fricreg_structure_set_answer_rtol,
+ * fricreg-sim's --answer-rtol): FRICREG_WARN_ERROR_ESTIMATE where an estimate exceeds 1% of its
+ * quantity. */
+#define FR_ANSWER_RTOL 1e-2
+
 /* The error estimate of q by `estimator` (FRICREG_ESTIMATE_TWO_COMPANIONS or _ONE_COMPANION)
  * from its companions' values q2 (eps/2) and q4 (eps/4; ignored with one companion): >= 0,
- * in q's units. *not_asymptotic is set to 1 (never cleared) when the three show no order in
- * eps (d1/d2 below 2^0.5, or of opposite signs): a stall, where the estimate is the safe
- * bound and FRICREG_WARN_NOT_ASYMPTOTIC is due. */
-double fr_companion_estimate(int estimator, double q, double q2, double q4, int *not_asymptotic);
+ * in q's units. *kind is always set (enum fricreg_estimate_kind): ASYMPTOTIC where the three
+ * show the law's order, BOUND where they show none (d1/d2 below 2^0.5, of opposite signs, or
+ * both differences at a solver's noise: a stall, where the estimate is the safe bound) or
+ * where no estimate could be formed (+infinity), ASSUMED with one companion. */
+double fr_companion_estimate(int estimator, double q, double q2, double q4, int *kind);
+
+/* The JSON and messages' name of an enum fricreg_estimate_kind: "asymptotic", "bound",
+ * "assumed"; "unknown" for another value. */
+const char *fr_estimate_kind_name(int kind);
 
 #endif

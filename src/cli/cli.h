@@ -28,6 +28,7 @@ struct cli_run {
     int max_steps;          /* --max-steps N (fricreg_sim_set_max_steps); -1: the default */
     int kink_location;      /* --kink-location on|off (fricreg_sim_set_kink_location) */
     int error_estimate;     /* --error-estimate on|off|one (fricreg_sim_set_error_estimate) */
+    double answer_rtol;     /* --answer-rtol X (fricreg_sim_set_answer_rtol) */
     struct {
         int param;
         double value;
@@ -65,6 +66,14 @@ struct cli_word {
 extern const struct cli_word cli_output_words[]; /* summary, trajectory */
 /* --error-estimate on|off|one: enum fricreg_error_estimate's values (two companions, none, one) */
 extern const struct cli_word cli_estimator_words[];
+/* --answer-rtol's default: the library's (fricreg_sim_set_answer_rtol) */
+#define CLI_ANSWER_RTOL 1e-2
+
+/* --error-estimate and --answer-rtol of hold, belt and disk. */
+struct cli_estimate_options {
+    int estimator;      /* enum fricreg_error_estimate */
+    double answer_rtol; /* an estimate above answer_rtol |q| warns */
+};
 
 /* One option: its name and kind first, the rest by field name, e.g.
  * {"--cycles", CLI_WHOLE, .slot = &run->cycles, .lo = 1, .hi = 1e7, .given = &cycles_given,
@@ -188,6 +197,7 @@ struct cli_summary {
     const double *D;     /* [cycles] dissipation per cycle */
     const double *D_err; /* [cycles] its error estimate (fricreg_sim_get_dissipation_error), or
                           * NULL: none made */
+    const int *D_kind;   /* [cycles] the estimates' kinds, with D_err */
     const double *stick; /* [ncontacts] stick fraction of the last whole cycle */
     const struct cli_extrapolation *extrap; /* NULL: not extrapolated */
     const struct cli_warnings *warnings;    /* NULL: none judged (an empty list) */
@@ -212,6 +222,15 @@ void cli_json_number(FILE *out, double x);
 void cli_json_array(FILE *out, const char *name, size_t n, const double a[]);
 /* TEXT as a JSON string, quoted, its quotes, backslashes and control characters escaped. */
 void cli_json_string(FILE *out, const char *text);
+/* ", \"NAME\": [\"asymptotic\", ...]": each kind (enum fricreg_estimate_kind) by name. */
+void cli_json_kinds(FILE *out, const char *name, size_t n, const int kind[]);
+/* A summary's count of its estimates by kind: n[kind] for the kinds 1 .. 3. */
+struct cli_kind_counts {
+    size_t n[4];
+};
+void cli_count_kinds(struct cli_kind_counts *c, size_t n, const int kind[]);
+/* ", \"error_estimate_kinds\": {\"asymptotic\": A, \"bound\": B, \"assumed\": C}" */
+void cli_json_kind_counts(FILE *out, const struct cli_kind_counts *c);
 
 /* output.c */
 void cli_write_summary(FILE *out, const struct cli_summary *s);

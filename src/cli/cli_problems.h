@@ -9,13 +9,13 @@
 #include "cli.h"
 #include "problems.h"
 
-/* estimator: --error-estimate, enum fricreg_error_estimate. */
+/* estimate: --error-estimate (enum fricreg_error_estimate) and --answer-rtol. */
 int cli_parse_hold(int argc, char **argv, struct prob_hold *p, enum cli_output *output,
-                   int *estimator);
+                   struct cli_estimate_options *estimate);
 int cli_parse_belt(int argc, char **argv, struct prob_belt *p, enum cli_output *output,
-                   int *estimator);
+                   struct cli_estimate_options *estimate);
 /* ref_eps: the reference run's eps (--ref-eps), 0 for none. */
 int cli_parse_disk(int argc, char **argv, struct prob_disk *p, double *ref_eps,
-                   enum cli_output *output, int *estimator);
+                   enum cli_output *output, struct cli_estimate_options *estimate);
 
 #endif

@@ -3,6 +3,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "base/companion_estimate.h" /* fr_estimate_kind_name */
 #include "cli.h"
 
 /* JSON has no infinity and no NaN: an estimate that could not be formed (+infinity in the
@@ -36,4 +37,28 @@ void cli_json_string(FILE *out, const char *text)
             fputc(*c, out);
     }
     fputc('"', out);
+}
+
+void cli_json_kinds(FILE *out, const char *name, size_t n, const int kind[])
+{
+    fprintf(out, ", \"%s\": [", name);
+    for (size_t i = 0; i < n; i++)
+        fprintf(out, "%s\"%s\"", i ? ", " : "", fr_estimate_kind_name(kind[i]));
+    fprintf(out, "]");
+}
+
+void cli_count_kinds(struct cli_kind_counts *c, size_t n, const int kind[])
+{
+    for (size_t i = 0; i < n; i++)
+        if (kind[i] >= FRICREG_EST_KIND_ASYMPTOTIC && kind[i] <= FRICREG_EST_KIND_ASSUMED)
+            c->n[kind[i]]++;
+}
+
+void cli_json_kind_counts(FILE *out, const struct cli_kind_counts *c)
+{
+    fprintf(out,
+            ", \"error_estimate_kinds\": {\"asymptotic\": %zu, \"bound\": %zu, "
+            "\"assumed\": %zu}",
+            c->n[FRICREG_EST_KIND_ASYMPTOTIC], c->n[FRICREG_EST_KIND_BOUND],
+            c->n[FRICREG_EST_KIND_ASSUMED]);
 }

@@ -148,7 +148,10 @@ static size_t run_table(struct cli_run *run, int exact, int *cycles_given,
         {"--error-estimate", CLI_CHOICE, .slot = &run->error_estimate, .words = cli_estimator_words,
          .help = "companion runs at eps/2 and eps/4 (dt/2 and dt/4, or tolerances/16 and /256) "
                  "add dissipation_error_estimate per cycle to the summary, about 7x the cost; "
-                 "one: 1.6's single companion at eps/2, 3x"}};
+                 "one: 1.6's single companion at eps/2, 3x"},
+        {"--answer-rtol", CLI_POSITIVE, .slot = &run->answer_rtol, .meta = "X",
+         .help = "warn (error_estimate) where the last whole cycle's estimate exceeds X |D|, "
+                 "whatever its kind"}};
     const struct cli_option run_length_and_output[] = {
         {"--t-end", CLI_POSITIVE, .slot = &run->t_end, .meta = "T",
          .help = "run length in time (instead of --cycles)", .dflt = ""},
@@ -218,6 +221,7 @@ static void run_defaults(int system, struct cli_run *run)
                             .max_steps = -1,
                             .kink_location = 1,
                             .error_estimate = 1,
+                            .answer_rtol = CLI_ANSWER_RTOL,
                             .atol = ATOL_NOT_GIVEN};
 }
 

@@ -56,6 +56,8 @@ fricreg_sim *cli_make_sim(const struct cli_run *run)
         status = fricreg_sim_set_max_steps(sim, run->max_steps);
     if (status == FRICREG_OK)
         status = fricreg_sim_set_kink_location(sim, run->kink_location);
+    if (status == FRICREG_OK)
+        status = fricreg_sim_set_answer_rtol(sim, run->answer_rtol);
     for (int k = 0; status == FRICREG_OK && k < run->nparams; k++)
         status = fricreg_sim_set_param(sim, run->params[k].param, run->params[k].value);
     if (status != FRICREG_OK) {
@@ -128,11 +130,17 @@ void cli_write_summary(FILE *out, const struct cli_summary *s)
     cli_json_array(out, "x", s->ndof, s->x);
     cli_json_array(out, "v", s->ndof, s->v);
     cli_json_array(out, "dissipation_per_cycle", s->cycles, s->D);
-    if (s->D_err != NULL) /* an estimate that could not be formed is null */
+    struct cli_kind_counts kinds = {{0}};
+    if (s->D_err != NULL) { /* an estimate that could not be formed is null */
         cli_json_array(out, "dissipation_error_estimate", s->cycles, s->D_err);
+        cli_json_kinds(out, "dissipation_error_kind", s->cycles, s->D_kind);
+        cli_count_kinds(&kinds, s->cycles, s->D_kind);
+    }
     cli_json_array(out, "stick_fraction", s->ncontacts, s->stick);
     if (s->extrap != NULL)
         write_extrapolation(out, s->extrap, s->cycles);
+    if (s->D_err != NULL)
+        cli_json_kind_counts(out, &kinds);
     fprintf(out, ", \"cpu_seconds\": %.6f", s->cpu_seconds);
     cli_json_warnings(out, s->warnings);
     fputs("}\n", out);
@@ -189,7 +197,10 @@ static void write_summary(FILE *out, const struct cli_run *run, const fricreg_si
     if (run->extrapolate)
         read_extrapolation(sim, cycles, D + cycles, &extrap);
     double *D_err = D + 3 * cycles;
-    int estimated = fricreg_sim_get_dissipation_error(sim, cycles, D_err) == FRICREG_OK;
+    int *D_kind = malloc((cycles + 1) * sizeof *D_kind);
+    int estimated = D_kind != NULL &&
+                    fricreg_sim_get_dissipation_error(sim, cycles, D_err) == FRICREG_OK &&
+                    fricreg_sim_get_dissipation_error_kind(sim, cycles, D_kind) == FRICREG_OK;
     struct cli_summary s = {.system = cli_system_name(run->system),
                             .law = fricreg_law_name(run->law),
                             .integrator = fricreg_integrator_name(run->integrator),
@@ -212,10 +223,12 @@ static void write_summary(FILE *out, const struct cli_run *run, const fricreg_si
                             .v = v,
                             .D = D,
                             .D_err = estimated ? D_err : NULL,
+                            .D_kind = D_kind,
                             .stick = stick,
                             .extrap = run->extrapolate ? &extrap : NULL,
                             .warnings = warnings};
     cli_write_summary(out, &s);
+    free(D_kind);
     free(buf);
 }
 

@@ -10,8 +10,6 @@
 
 #include "base/companion_estimate.h"
 
-#define TOO_LARGE 0.1 /* an estimate above 10% of its quantity: outside the asymptotic range */
-
 /* A free slot of w for a warning of `code`, or NULL when w is full. */
 static char *slot(struct cli_warnings *w, int code)
 {
@@ -21,17 +19,18 @@ static char *slot(struct cli_warnings *w, int code)
     return w->message[w->n++];
 }
 
-void cli_problem_estimate(cli_problem_level run, const void *problem, int estimator, size_t n,
-                          const char *const names[], int sampled, const double q[], double err[],
+void cli_problem_estimate(cli_problem_level run, const void *problem,
+                          const struct cli_estimate_options *opt, size_t n,
+                          const char *const names[], const double q[], double err[], int kind[],
                           struct cli_warnings *w)
 {
     double q2[CLI_ESTIMATE_MAX], q4[CLI_ESTIMATE_MAX];
     int status = run(problem, 1, q2);
-    if (status == FRICREG_OK && estimator == FRICREG_ESTIMATE_TWO_COMPANIONS)
+    if (status == FRICREG_OK && opt->estimator == FRICREG_ESTIMATE_TWO_COMPANIONS)
         status = run(problem, 2, q4);
     if (status != FRICREG_OK) {
         for (size_t i = 0; i < n; i++)
-            err[i] = INFINITY;
+            err[i] = INFINITY, kind[i] = FRICREG_EST_KIND_BOUND;
         char *m = slot(w, FRICREG_WARN_ERROR_ESTIMATE);
         if (m != NULL)
             snprintf(m, sizeof w->message[0],
@@ -41,21 +40,13 @@ void cli_problem_estimate(cli_problem_level run, const void *problem, int estima
         return;
     }
     for (size_t i = 0; i < n; i++) {
-        int outside = 0;
-        err[i] = fr_companion_estimate(estimator, q[i], q2[i], q4[i], &outside);
+        err[i] = fr_companion_estimate(opt->estimator, q[i], q2[i], q4[i], &kind[i]);
         char *m = NULL;
-        if (outside && !sampled && (m = slot(w, FRICREG_WARN_NOT_ASYMPTOTIC)) != NULL)
+        if (err[i] > opt->answer_rtol * fabs(q[i]) && q[i] != 0.0 &&
+            (m = slot(w, FRICREG_WARN_ERROR_ESTIMATE)) != NULL)
             snprintf(m, sizeof w->message[0],
-                     "error estimate not asymptotic: %s %.7g, %.7g, %.7g at eps, eps/2, eps/4 "
-                     "shows no order in eps (the run and its companion may agree on a wrong "
-                     "value); its estimate is the safe bound %.3g: halve eps and dt",
-                     names[i], q[i], q2[i], q4[i], err[i]);
-        else if (!outside && err[i] > TOO_LARGE * fabs(q[i]) && q[i] != 0.0 &&
-                 (m = slot(w, FRICREG_WARN_ERROR_ESTIMATE)) != NULL)
-            snprintf(m, sizeof w->message[0],
-                     "the error estimate of %s, %.3g, is above 10%% of it, %.3g: eps or dt is "
-                     "too coarse for the estimate, which may then not bound the error; halve "
-                     "them",
-                     names[i], err[i], q[i]);
+                     "the error estimate %.3g of %s %.7g (%s) exceeds the answer tolerance %.3g "
+                     "of it: halve eps and dt, or raise --answer-rtol",
+                     err[i], names[i], q[i], fr_estimate_kind_name(kind[i]), opt->answer_rtol);
     }
 }

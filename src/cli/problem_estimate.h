@@ -16,15 +16,16 @@
  * status. */
 typedef int (*cli_problem_level)(const void *problem, int k, double q[]);
 
-/* The estimate of q[n] (named names[n] in the warnings) by `estimator` (enum
- * fricreg_error_estimate, not off) into err[n]: +infinity where a companion failed, with
- * FRICREG_WARN_ERROR_ESTIMATE; FRICREG_WARN_NOT_ASYMPTOTIC naming a quantity that shows no
- * order in eps unless it is `sampled` (a number located at a step's end, as hold's break-away
- * angle, converges with the phase of its steps, not at an order: the safe bound without the
- * warning, as fricreg_structure's peaks), FRICREG_WARN_ERROR_ESTIMATE for an estimate above 10%
- * of a nonzero quantity: appended to w. */
-void cli_problem_estimate(cli_problem_level run, const void *problem, int estimator, size_t n,
-                          const char *const names[], int sampled, const double q[], double err[],
+/* The estimate of q[n] (named names[n] in the warnings) by opt->estimator (enum
+ * fricreg_error_estimate, not off) into err[n] and its kind (enum fricreg_estimate_kind) into
+ * kind[n]: +infinity, of kind BOUND, where a companion failed, with
+ * FRICREG_WARN_ERROR_ESTIMATE; FRICREG_WARN_ERROR_ESTIMATE too for an estimate above
+ * opt->answer_rtol of a nonzero quantity, whatever its kind (a number located at a step's end,
+ * as hold's break-away angle, converges with the phase of its steps, not at an order: it is
+ * told by its kind, BOUND, as any other): appended to w. */
+void cli_problem_estimate(cli_problem_level run, const void *problem,
+                          const struct cli_estimate_options *opt, size_t n,
+                          const char *const names[], const double q[], double err[], int kind[],
                           struct cli_warnings *w);
 
 #endif

@@ -14,6 +14,7 @@
 
 #include "cli_problems.h"
 #include "fricreg_disk.h"
+#include "base/companion_estimate.h" /* fr_estimate_kind_name */
 #include "problem_estimate.h"
 
 #define PI 3.14159265358979323846
@@ -59,6 +60,15 @@ static int law_eps(const char *option, double eps, double upper)
             .slot = (slot_), .words = cli_estimator_words,                                   \
             .help = "reruns at eps/2, dt/2 and eps/4, dt/4 add each headline number's "      \
                     "*_error_estimate to the summary, about 7x the run; one: eps/2 only, 3x" \
+    }
+
+/* --answer-rtol, as fricreg-sim's other commands. */
+#define ANSWER_RTOL_ROW(slot_)                                                            \
+    {                                                                                     \
+        "--answer-rtol", CLI_POSITIVE,                                                    \
+            .slot = (slot_), .meta = "X",                                                 \
+            .help = "warn (error_estimate) where a headline number's estimate exceeds X " \
+                    "times the number, whatever its kind"                                 \
     }
 
 /* A failed run: exit 1 with the reason. */
@@ -128,13 +138,15 @@ static const double hold_defaults[H_N] = {0.5385, 2.385, 9.81, 0.0, 35.4, 0.0, 1
 /* hold's options as parsed: the values by H_*, and which were given. */
 struct hold_options {
     double v[H_N];
-    int theta_given, steps_given, eps_given, output, estimator;
+    int theta_given, steps_given, eps_given, output;
+    struct cli_estimate_options estimate;
 };
 
 /* The rows over o, its defaults set: the parser's and the help's one table. */
 static size_t hold_table(struct hold_options *o, struct cli_option table[])
 {
-    *o = (struct hold_options){.output = CLI_SUMMARY, .estimator = FRICREG_ESTIMATE_TWO_COMPANIONS};
+    *o = (struct hold_options){.output = CLI_SUMMARY,
+                               .estimate = {FRICREG_ESTIMATE_TWO_COMPANIONS, CLI_ANSWER_RTOL}};
     memcpy(o->v, hold_defaults, sizeof o->v);
     double *v = o->v;
     const struct cli_option rows[] = {
@@ -155,14 +167,15 @@ static size_t hold_table(struct hold_options *o, struct cli_option table[])
         {"--dt", CLI_POSITIVE, .slot = &v[H_DT], .meta = "S", .help = "RK4 step, s"},
         {"--eps", CLI_POSITIVE, .slot = &v[H_EPS], .given = &o->eps_given, .meta = "EPS",
          .help = "the 2-D law's regularization, m/s", .dflt = "20 dt"},
-        ESTIMATE_ROW(&o->estimator),
+        ESTIMATE_ROW(&o->estimate.estimator),
+        ANSWER_RTOL_ROW(&o->estimate.answer_rtol),
         {"--output", CLI_CHOICE, .slot = &o->output, .words = cli_output_words,
          .help = "a JSON summary, or a CSV row per GSL step (2 dt)"}};
     return cli_copy_rows(table, rows, sizeof rows / sizeof rows[0]);
 }
 
 int cli_parse_hold(int argc, char **argv, struct prob_hold *p, enum cli_output *output,
-                   int *estimator)
+                   struct cli_estimate_options *estimate)
 {
     struct hold_options o;
     struct cli_option table[CLI_MAX_ROWS];
@@ -172,7 +185,7 @@ int cli_parse_hold(int argc, char **argv, struct prob_hold *p, enum cli_output *
     if (status != 0)
         return status;
     *output = o.output;
-    *estimator = o.estimator;
+    *estimate = o.estimate;
     if (!o.theta_given) /* inside the disk: tan(theta) = 0.8 mu, or 0.9 atan(mu) to tilt from */
         v[H_THETA] = (v[H_RATE] > 0.0 ? 0.9 * atan(v[H_MU]) : atan(0.8 * v[H_MU])) / DEG;
     if (v[H_THETA] >= 90.0)
@@ -230,17 +243,32 @@ static int hold_level(const void *problem, int k, double q[])
     return status;
 }
 
-/* ", \"NAME_error_estimate\": err" for each of the n headline numbers; none when err is NULL. */
-static void estimate_fields(FILE *out, size_t n, const char *const names[], const double err[])
+/* The headline numbers' estimates and their kinds (cli_problem_estimate). */
+struct problem_estimate {
+    double err[CLI_ESTIMATE_MAX];
+    int kind[CLI_ESTIMATE_MAX];
+};
+
+/* ", \"NAME_error_estimate\": err, \"NAME_error_kind\": KIND" for each of the n headline
+ * numbers, then their kinds' counts; none when e is NULL. */
+static void estimate_fields(FILE *out, size_t n, const char *const names[],
+                            const struct problem_estimate *e)
 {
-    for (size_t i = 0; err != NULL && i < n; i++) {
+    if (e == NULL)
+        return;
+    for (size_t i = 0; i < n; i++) {
         fprintf(out, ", \"%s_error_estimate\": ", names[i]);
-        cli_json_number(out, err[i]);
+        cli_json_number(out, e->err[i]);
+        fprintf(out, ", \"%s_error_kind\": \"%s\"", names[i], fr_estimate_kind_name(e->kind[i]));
     }
+    struct cli_kind_counts counts = {{0}};
+    cli_count_kinds(&counts, n, e->kind);
+    cli_json_kind_counts(out, &counts);
 }
 
 static void hold_summary(FILE *out, const struct prob_hold *p, const struct prob_hold_result *r,
-                         double cpu, const double err[], const struct cli_warnings *warnings)
+                         double cpu, const struct problem_estimate *err,
+                         const struct cli_warnings *warnings)
 {
     fprintf(out, "{\"system\": \"hold\", \"law\": \"%s\", \"integrator\": \"rk4\", ",
             fricreg_disk_law_name(FRICREG_DISK_QUINN));
@@ -272,8 +300,8 @@ static int cli_hold(int argc, char **argv, FILE *out)
     struct prob_hold p;
     struct prob_hold_result r;
     enum cli_output output = CLI_SUMMARY;
-    int estimator = FRICREG_ESTIMATE_OFF;
-    int status = cli_parse_hold(argc, argv, &p, &output, &estimator);
+    struct cli_estimate_options estimate;
+    int status = cli_parse_hold(argc, argv, &p, &output, &estimate);
     if (status != 0)
         return status;
     struct csv c;
@@ -292,13 +320,14 @@ static int cli_hold(int argc, char **argv, FILE *out)
     if (status != 0)
         return status;
     struct cli_warnings warnings = {0};
-    double q[2], err[2];
+    double q[2];
+    struct problem_estimate e;
     size_t n = hold_numbers(&p, &r, q);
-    if (estimator != FRICREG_ESTIMATE_OFF)
-        cli_problem_estimate(hold_level, &p, estimator, n, hold_names[p.kappa > 0.0], p.kappa > 0.0,
-                             q, err, &warnings);
+    if (estimate.estimator != FRICREG_ESTIMATE_OFF)
+        cli_problem_estimate(hold_level, &p, &estimate, n, hold_names[p.kappa > 0.0], q, e.err,
+                             e.kind, &warnings);
     cli_print_warnings(&warnings);
-    hold_summary(out, &p, &r, cpu_since(start), estimator ? err : NULL, &warnings);
+    hold_summary(out, &p, &r, cpu_since(start), estimate.estimator ? &e : NULL, &warnings);
     return 0;
 }
 
@@ -307,14 +336,15 @@ static int cli_hold(int argc, char **argv, FILE *out)
 /* belt's options as parsed. */
 struct belt_options {
     struct prob_belt b;
-    int eps_given, output, estimator;
+    int eps_given, output;
+    struct cli_estimate_options estimate;
 };
 
 static size_t belt_table(struct belt_options *o, struct cli_option table[])
 {
     *o = (struct belt_options){.b = prob_belt_defaults(),
                                .output = CLI_SUMMARY,
-                               .estimator = FRICREG_ESTIMATE_TWO_COMPANIONS};
+                               .estimate = {FRICREG_ESTIMATE_TWO_COMPANIONS, CLI_ANSWER_RTOL}};
     struct prob_belt *b = &o->b;
     const struct cli_option rows[] = {
         {"--fs", CLI_POSITIVE, .slot = &b->fs, .meta = "FS",
@@ -333,14 +363,15 @@ static size_t belt_table(struct belt_options *o, struct cli_option table[])
          .help = "the limit cycle measured: the N-th, 2 to 1000"},
         {"--ref-dt", CLI_POSITIVE, .slot = &b->ref_dt, .meta = "STEP",
          .help = "the event-driven reference's RK4 step in its slip phases"},
-        ESTIMATE_ROW(&o->estimator),
+        ESTIMATE_ROW(&o->estimate.estimator),
+        ANSWER_RTOL_ROW(&o->estimate.answer_rtol),
         {"--output", CLI_CHOICE, .slot = &o->output, .words = cli_output_words,
          .help = "a JSON summary, or a CSV row per GSL step of the measured cycle"}};
     return cli_copy_rows(table, rows, sizeof rows / sizeof rows[0]);
 }
 
 int cli_parse_belt(int argc, char **argv, struct prob_belt *p, enum cli_output *output,
-                   int *estimator)
+                   struct cli_estimate_options *estimate)
 {
     struct belt_options o;
     struct cli_option table[CLI_MAX_ROWS];
@@ -349,7 +380,7 @@ int cli_parse_belt(int argc, char **argv, struct prob_belt *p, enum cli_output *
     if (status != 0)
         return status;
     *output = o.output;
-    *estimator = o.estimator;
+    *estimate = o.estimate;
     struct prob_belt b = o.b;
     int eps_given = o.eps_given;
     if (b.fk > b.fs)
@@ -423,8 +454,8 @@ static int belt_level(const void *problem, int k, double q[])
 }
 
 static void belt_summary(FILE *out, const struct prob_belt *p, const struct prob_belt_cycle *c,
-                         const struct prob_belt_cycle *ref, double cpu, const double err[],
-                         const struct cli_warnings *warnings)
+                         const struct prob_belt_cycle *ref, double cpu,
+                         const struct problem_estimate *err, const struct cli_warnings *warnings)
 {
     fprintf(out, "{\"system\": \"belt\", \"law\": \"stribeck\", \"integrator\": \"rk4\", ");
     fprintf(out, "\"dt\": %.17g, \"eps\": %.17g, \"steps\": %.0f, \"t\": %.17g, ", p->dt, p->eps,
@@ -448,8 +479,8 @@ static int cli_belt(int argc, char **argv, FILE *out)
     struct prob_belt p;
     struct prob_belt_cycle ref, c;
     enum cli_output output = CLI_SUMMARY;
-    int estimator = FRICREG_ESTIMATE_OFF;
-    int status = cli_parse_belt(argc, argv, &p, &output, &estimator);
+    struct cli_estimate_options estimate;
+    int status = cli_parse_belt(argc, argv, &p, &output, &estimate);
     if (status != 0)
         return status;
     clock_t start = clock();
@@ -470,11 +501,13 @@ static int cli_belt(int argc, char **argv, FILE *out)
         return status;
     struct cli_warnings warnings;
     belt_warnings(&p, &warnings);
-    double q[2] = {c.period, c.amplitude}, err[2];
-    if (estimator != FRICREG_ESTIMATE_OFF)
-        cli_problem_estimate(belt_level, &level, estimator, 2, belt_names, 0, q, err, &warnings);
+    double q[2] = {c.period, c.amplitude};
+    struct problem_estimate e;
+    if (estimate.estimator != FRICREG_ESTIMATE_OFF)
+        cli_problem_estimate(belt_level, &level, &estimate, 2, belt_names, q, e.err, e.kind,
+                             &warnings);
     cli_print_warnings(&warnings);
-    belt_summary(out, &p, &c, &ref, cpu_since(start), estimator ? err : NULL, &warnings);
+    belt_summary(out, &p, &c, &ref, cpu_since(start), estimate.estimator ? &e : NULL, &warnings);
     return 0;
 }
 
@@ -484,7 +517,8 @@ static int cli_belt(int argc, char **argv, FILE *out)
 struct disk_options {
     struct prob_disk d;
     double reference;
-    int eps_given, output, estimator;
+    int eps_given, output;
+    struct cli_estimate_options estimate;
 };
 
 static size_t disk_table(struct disk_options *o, struct cli_option table[])
@@ -492,7 +526,7 @@ static size_t disk_table(struct disk_options *o, struct cli_option table[])
     *o = (struct disk_options){.d = prob_disk_defaults(),
                                .reference = DISK_REF_EPS,
                                .output = CLI_SUMMARY,
-                               .estimator = FRICREG_ESTIMATE_TWO_COMPANIONS};
+                               .estimate = {FRICREG_ESTIMATE_TWO_COMPANIONS, CLI_ANSWER_RTOL}};
     struct prob_disk *d = &o->d;
     const struct cli_option rows[] = {
         {"--a", CLI_POSITIVE, .slot = &d->a, .meta = "A", .help = "forcing amplitude"},
@@ -504,14 +538,15 @@ static size_t disk_table(struct disk_options *o, struct cli_option table[])
          .help = "the reference run's eps, at dt = eps/2 (0: no reference run)"},
         {"--law", CLI_NAME, .slot = &d->law, .names = &disk_law_names,
          .help = "the 2-D friction law (docs/laws2d.md)"},
-        ESTIMATE_ROW(&o->estimator),
+        ESTIMATE_ROW(&o->estimate.estimator),
+        ANSWER_RTOL_ROW(&o->estimate.answer_rtol),
         {"--output", CLI_CHOICE, .slot = &o->output, .words = cli_output_words,
          .help = "a JSON summary, or a CSV row per GSL step of the measured turn"}};
     return cli_copy_rows(table, rows, sizeof rows / sizeof rows[0]);
 }
 
 int cli_parse_disk(int argc, char **argv, struct prob_disk *p, double *ref_eps,
-                   enum cli_output *output, int *estimator)
+                   enum cli_output *output, struct cli_estimate_options *estimate)
 {
     struct disk_options o;
     struct cli_option table[CLI_MAX_ROWS];
@@ -520,7 +555,7 @@ int cli_parse_disk(int argc, char **argv, struct prob_disk *p, double *ref_eps,
     if (status != 0)
         return status;
     *output = o.output;
-    *estimator = o.estimator;
+    *estimate = o.estimate;
     struct prob_disk d = o.d;
     double reference = o.reference;
     int eps_given = o.eps_given;
@@ -555,7 +590,7 @@ static int disk_level(const void *problem, int k, double q[])
 
 static void disk_summary(FILE *out, const struct prob_disk *p, const struct prob_disk_result *r,
                          double ref_eps, const struct prob_disk_result *ref, double cpu,
-                         const double err[], const struct cli_warnings *warnings)
+                         const struct problem_estimate *err, const struct cli_warnings *warnings)
 {
     fprintf(out, "{\"system\": \"disk\", \"law\": \"%s\", \"integrator\": \"rk4\", ",
             fricreg_disk_law_name(p->law));
@@ -587,8 +622,8 @@ static int cli_disk(int argc, char **argv, FILE *out)
     struct prob_disk_result r, ref = {0};
     double ref_eps;
     enum cli_output output = CLI_SUMMARY;
-    int estimator = FRICREG_ESTIMATE_OFF;
-    int status = cli_parse_disk(argc, argv, &p, &ref_eps, &output, &estimator);
+    struct cli_estimate_options estimate;
+    int status = cli_parse_disk(argc, argv, &p, &ref_eps, &output, &estimate);
     if (status != 0)
         return status;
     struct csv c;
@@ -610,12 +645,13 @@ static int cli_disk(int argc, char **argv, FILE *out)
     if (status != 0)
         return status;
     struct cli_warnings warnings = {0};
-    double err[1];
-    if (estimator != FRICREG_ESTIMATE_OFF)
-        cli_problem_estimate(disk_level, &p, estimator, 1, disk_names, 0, &r.dissipation, err,
-                             &warnings);
+    struct problem_estimate e;
+    if (estimate.estimator != FRICREG_ESTIMATE_OFF)
+        cli_problem_estimate(disk_level, &p, &estimate, 1, disk_names, &r.dissipation, e.err,
+                             e.kind, &warnings);
     cli_print_warnings(&warnings);
-    disk_summary(out, &p, &r, ref_eps, &ref, cpu_since(start), estimator ? err : NULL, &warnings);
+    disk_summary(out, &p, &r, ref_eps, &ref, cpu_since(start), estimate.estimator ? &e : NULL,
+                 &warnings);
     return 0;
 }
 

@@ -10,6 +10,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "base/companion_estimate.h" /* fr_estimate_kind_name */
 #include "cli_structure.h"
 #include "dof_list.h"
 #include "input_line.h"
@@ -153,6 +154,7 @@ static size_t structure_table(struct structure_options *o, struct cli_option tab
                                     .output = CLI_SUMMARY,
                                     .max_steps = -1,
                                     .error_estimate = 1,
+                                    .answer_rtol = CLI_ANSWER_RTOL,
                                     .output_every = 1};
     cli_element_defaults(&o->elements);
     const struct cli_option opts[] = {
@@ -234,7 +236,11 @@ static size_t structure_table(struct structure_options *o, struct cli_option tab
          .dflt = "none"},
         {"--error-estimate", CLI_CHOICE, .slot = &o->error_estimate, .words = cli_estimator_words,
          .help = "companion runs at eps/2 and eps/4 add an error estimate to the summary "
-                 "(one: 1.6's single companion at eps/2)"}};
+                 "(one: 1.6's single companion at eps/2)"},
+        {"--answer-rtol", CLI_POSITIVE, .slot = &o->answer_rtol, .meta = "X",
+         .help = "warn (error_estimate) where the largest peak's estimate exceeds X times the "
+                 "largest peak, or the dissipations' summed estimate X times their sum, "
+                 "whatever the kinds"}};
     return cli_copy_rows(table, opts, sizeof opts / sizeof opts[0]);
 }
 
@@ -296,6 +302,7 @@ static int setup(const struct structure_options *o, const struct structure_input
      * no place for it. */
     if (o->error_estimate && o->output == CLI_SUMMARY)
         fricreg_structure_set_error_estimate(s, o->error_estimate);
+    fricreg_structure_set_answer_rtol(s, o->answer_rtol); /* > 0 and finite: the parser's */
     return set_scheme(s, o);
 }
 
@@ -484,6 +491,7 @@ static const char *scheme_name(const struct structure_options *o)
  * err = 3 |q - q_companion|; docs/structural.md, "Error estimate"). NULL arrays: none made. */
 struct structure_estimate {
     double *peak_err, *D_err, *De_err; /* [n], [m], [me]; +infinity where a companion failed */
+    int *peak_kind, *D_kind, *De_kind; /* their kinds (enum fricreg_estimate_kind) */
 };
 
 /* "name": [a at the dofs shown], as cli_json_array. */
@@ -498,6 +506,24 @@ static void json_shown(FILE *out, const char *name, const struct structure_run *
     for (size_t k = 0; k < run->ndof; k++) {
         fputs(k > 0 ? ", " : "", out);
         cli_json_number(out, a[run->dof[k]]);
+    }
+    fputs("]", out);
+}
+
+/* ", \"NAME\": [the kinds at the dofs shown]", as json_shown; counted into *c. */
+static void kinds_shown(FILE *out, const char *name, const struct structure_run *run,
+                        const int kind[], struct cli_kind_counts *c)
+{
+    if (run->dof == NULL) {
+        cli_json_kinds(out, name, run->ndof, kind);
+        cli_count_kinds(c, run->ndof, kind);
+        return;
+    }
+    fprintf(out, ", \"%s\": [", name);
+    for (size_t k = 0; k < run->ndof; k++) {
+        const int *shown = &kind[run->dof[k]];
+        cli_count_kinds(c, 1, shown);
+        fprintf(out, "%s\"%s\"", k > 0 ? ", " : "", fr_estimate_kind_name(*shown));
     }
     fputs("]", out);
 }
@@ -561,18 +587,27 @@ static void write_summary(FILE *out, const struct structure_options *o,
     if (adaptive)
         json_atol(out, in, s, run);
     json_shown(out, "peak_displacement", run, run->peak);
-    if (est->peak_err != NULL)
+    struct cli_kind_counts kinds = {{0}};
+    if (est->peak_err != NULL) {
         json_shown(out, "peak_displacement_error_estimate", run, est->peak_err);
+        kinds_shown(out, "peak_displacement_error_kind", run, est->peak_kind, &kinds);
+    }
     cli_json_array(out, "dissipation_per_contact", in->m, D);
-    if (est->D_err != NULL)
+    if (est->D_err != NULL) {
         cli_json_array(out, "dissipation_per_contact_error_estimate", in->m, est->D_err);
+        cli_json_kinds(out, "dissipation_per_contact_error_kind", in->m, est->D_kind);
+        cli_count_kinds(&kinds, in->m, est->D_kind);
+    }
     const struct cli_elements *el = &in->el;
     if (el->m > 0) {
         fprintf(out, ", \"njenkins\": %zu", el->m);
         fricreg_structure_get_jenkins_state(s, el->m, NULL, NULL, run->De);
         cli_json_array(out, "dissipation_per_jenkins", el->m, run->De);
-        if (est->De_err != NULL)
+        if (est->De_err != NULL) {
             cli_json_array(out, "dissipation_per_jenkins_error_estimate", el->m, est->De_err);
+            cli_json_kinds(out, "dissipation_per_jenkins_error_kind", el->m, est->De_kind);
+            cli_count_kinds(&kinds, el->m, est->De_kind);
+        }
         fprintf(out, ", \"jenkins_dissipation\": %.17g, \"element_kind\": \"%s\"",
                 svalue(s, FRICREG_SVALUE_JENKINS), cli_element_kind_name(el));
         if (el->kind == CLI_ELEMENTS_IWAN || el->kind == CLI_ELEMENTS_IWAN_NORMAL)
@@ -596,6 +631,8 @@ static void write_summary(FILE *out, const struct structure_options *o,
             cli_json_array(out, "normal_forces", el->m, run->De);
         }
     }
+    if (est->peak_err != NULL)
+        cli_json_kind_counts(out, &kinds);
     fprintf(out,
             ", \"energy_balance\": {\"initial\": %.17g, \"input\": %.17g, "
             "\"kinetic\": %.17g, \"strain\": %.17g, \"viscous\": %.17g, \"friction\": %.17g, ",
@@ -616,21 +653,26 @@ static void write_summary(FILE *out, const struct structure_options *o,
     fputs("}\n", out);
 }
 
-/* The library's estimates into est (one allocation, at est->peak_err), if it made them. */
+/* The library's estimates into est (one allocation, at est->peak_err, and one of their kinds,
+ * at est->peak_kind), if it made them. */
 static void read_estimate(const fricreg_structure *s, const struct structure_input *in,
                           struct structure_estimate *est)
 {
-    size_t me = in->el.m;
-    double *buf = malloc((in->n + in->mlib + me + 1) * sizeof *buf);
-    if (buf != NULL && fricreg_structure_get_peak_displacement_error(s, in->n, buf) == FRICREG_OK &&
-        fricreg_structure_get_dissipation_error(s, in->mlib, buf + in->n) == FRICREG_OK &&
-        fricreg_structure_get_jenkins_dissipation_error(s, me, buf + in->n + in->mlib) ==
+    size_t n = in->n, m = in->mlib, me = in->el.m;
+    double *buf = malloc((n + m + me + 1) * sizeof *buf);
+    int *kind = malloc((n + m + me + 1) * sizeof *kind);
+    if (buf != NULL && kind != NULL &&
+        fricreg_structure_get_peak_displacement_error(s, n, buf) == FRICREG_OK &&
+        fricreg_structure_get_dissipation_error(s, m, buf + n) == FRICREG_OK &&
+        fricreg_structure_get_jenkins_dissipation_error(s, me, buf + n + m) == FRICREG_OK &&
+        fricreg_structure_get_error_kind(s, FRICREG_EST_PEAK_DISPLACEMENT, n, kind) == FRICREG_OK &&
+        fricreg_structure_get_error_kind(s, FRICREG_EST_DISSIPATION, m, kind + n) == FRICREG_OK &&
+        fricreg_structure_get_error_kind(s, FRICREG_EST_ELEMENT_DISSIPATION, me, kind + n + m) ==
             FRICREG_OK) {
-        est->peak_err = buf;
-        est->D_err = buf + in->n;
-        est->De_err = buf + in->n + in->mlib;
+        *est = (struct structure_estimate){buf, buf + n, buf + n + m, kind, kind + n, kind + n + m};
     } else {
         free(buf);
+        free(kind);
     }
 }
 
@@ -802,6 +844,7 @@ static int run_structure(fricreg_structure *s, const struct structure_options *o
     else if (status == 0)
         write_summary(out, o, in, s, &run, eps, cpu_seconds, &warnings, &est);
     free(est.peak_err);
+    free(est.peak_kind);
     if (run.rows != NULL)
         fclose(run.rows);
     free(buf);

@@ -11,10 +11,10 @@
  * companion's tolerances are tightened so that its own tolerance error is a fraction of the
  * run's, and the differences then carry the run's. From D, D2, D4 the estimate is
  * base/companion_estimate.c's, fricreg_structure's too: Richardson's correction with the
- * observed order, or a safe bound and FRICREG_WARN_NOT_ASYMPTOTIC where the three show none;
- * with one companion (1.6's) 3 |D - D2|, calibrated by bench/error_estimate.c
- * (docs/integrators.md, "Error estimate"). */
-#include <float.h>
+ * observed order (kind ASYMPTOTIC), or a safe bound where the three show none (kind BOUND);
+ * with one companion (1.6's) 3 |D - D2| (kind ASSUMED), calibrated by bench/error_estimate.c
+ * (docs/integrators.md, "Error estimate"). FRICREG_WARN_ERROR_ESTIMATE where the headline
+ * estimate exceeds the answer tolerance (fricreg_sim_set_answer_rtol), whatever its kind. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -23,7 +23,6 @@
 #include "sim_internal.h"
 
 #define TOL_SCALE 16.0 /* a companion's tolerances: rtol / 16 a level (rk8pd: ~1.4x the steps) */
-#define TOO_LARGE 0.1  /* an estimate above 10% of |D|: eps is out of the asymptotic range */
 
 int fricreg_sim_set_error_estimate(fricreg_sim *sim, int on)
 {
@@ -40,6 +39,17 @@ int fricreg_sim_set_error_estimate(fricreg_sim *sim, int on)
     return FRICREG_OK;
 }
 
+int fricreg_sim_set_answer_rtol(fricreg_sim *sim, double rtol)
+{
+    if (sim == NULL)
+        return FRICREG_ENULL;
+    if (!(rtol > 0.0 && rtol < INFINITY)) /* NaN fails both */
+        return fr_fail(sim, FRICREG_EINVAL, "set_answer_rtol: rtol = %g must be finite and > 0",
+                       rtol);
+    sim->answer_rtol = rtol;
+    return FRICREG_OK;
+}
+
 static int adaptive(const fricreg_sim *sim)
 {
     return sim->rtol > 0.0 || sim->atol > 0.0 || sim->atol_from_eps || sim->atol_vec != NULL;
@@ -49,8 +59,10 @@ static void estimate_failed(fricreg_sim *sim, const char *msg)
 {
     sim->estimate_failed = 1;
     snprintf(sim->estimate_msg, sizeof sim->estimate_msg, "%s", msg);
-    for (size_t c = 0; sim->D_err != NULL && c < sim->cycles; c++)
+    for (size_t c = 0; sim->D_err != NULL && c <= sim->cycles; c++) {
         sim->D_err[c] = INFINITY;
+        sim->D_kind[c] = FRICREG_EST_KIND_BOUND; /* no estimate: the only safe bound */
+    }
     sim->total_err = INFINITY;
 }
 
@@ -78,33 +90,38 @@ static fricreg_sim *companion_run(fricreg_sim *sim, int k)
     return NULL;
 }
 
-/* The estimate of q (cycle `cycle`, or the total at sim->cycles) from q2, q4; records the
- * cycle whose estimate, relative to its q, is the largest of those that show no order. */
+/* The estimate of q (cycle `cycle`, or the total at sim->cycles) from q2, q4, its kind into
+ * D_kind[cycle]. */
 static double estimate_of(fricreg_sim *sim, size_t cycle, double q, double q2, double q4)
 {
-    int outside = 0;
-    double err = fr_companion_estimate(sim->error_estimate, q, q2, q4, &outside);
-    double rel = err / fmax(fabs(q), DBL_MIN);
-    if (outside && rel > sim->outside_rel) {
-        sim->outside_rel = rel;
-        sim->outside_cycle = cycle;
-        sim->outside_q[0] = q, sim->outside_q[1] = q2, sim->outside_q[2] = q4;
-        sim->outside_q[3] = err;
-    }
-    return err;
+    return fr_companion_estimate(sim->error_estimate, q, q2, q4, &sim->D_kind[cycle]);
+}
+
+/* D_err and D_kind for the run's cycles and its total; 0, both NULL, on failure. */
+static int allocate_estimate(fricreg_sim *sim)
+{
+    free(sim->D_err);
+    free(sim->D_kind);
+    sim->D_err = malloc((sim->cycles + 1) * sizeof *sim->D_err);
+    sim->D_kind = malloc((sim->cycles + 1) * sizeof *sim->D_kind);
+    if (sim->D_err != NULL && sim->D_kind != NULL)
+        return 1;
+    free(sim->D_err);
+    free(sim->D_kind);
+    sim->D_err = NULL;
+    sim->D_kind = NULL;
+    return 0;
 }
 
 void fr_sim_error_estimate(fricreg_sim *sim)
 {
-    free(sim->D_err);
-    sim->D_err = malloc((sim->cycles + 1) * sizeof *sim->D_err);
-    sim->outside_rel = -1.0;
-    if (sim->D_err == NULL) {
+    if (!allocate_estimate(sim)) {
         estimate_failed(sim, "out of memory");
         return;
     }
     if (!(sim->t > 0.0)) { /* the observer stopped the run at t = 0: nothing to estimate */
         sim->total_err = 0.0;
+        sim->D_kind[0] = FRICREG_EST_KIND_BOUND; /* 0 bounds the nothing done, no order */
         return;
     }
     fricreg_sim *c2 = companion_run(sim, 1), *c4 = c2; /* c4 is ignored with one companion */
@@ -139,27 +156,19 @@ void fr_sim_check_estimate(fricreg_sim *sim)
     }
     if (sim->D_err == NULL)
         return;
-    if (sim->outside_rel >= 0.0) {
-        char which[40] = "the total";
-        if (sim->outside_cycle < sim->cycles)
-            snprintf(which, sizeof which, "cycle %zu's", sim->outside_cycle + 1);
-        const double *q = sim->outside_q;
-        fr_warn(&sim->warnings, FRICREG_WARN_NOT_ASYMPTOTIC,
-                "error estimate not asymptotic: %s dissipation %.7g, %.7g, %.7g at eps, eps/2, "
-                "eps/4 shows no order in eps (the run and its companion may agree on a wrong "
-                "value); its estimate is the safe bound %.3g: halve eps and dt",
-                which, q[0], q[1], q[2], q[3]);
-    }
     /* The last whole cycle's D, else the total: the headline quantity. */
-    double D = sim->cycles > 0 ? sim->D[sim->cycles - 1] : sim->y[2 * sim->ndof];
-    double err = sim->cycles > 0 ? sim->D_err[sim->cycles - 1] : sim->total_err;
-    if (err > TOO_LARGE * fabs(D))
+    size_t c = sim->cycles > 0 ? sim->cycles - 1 : sim->cycles;
+    double D = sim->cycles > 0 ? sim->D[c] : sim->y[2 * sim->ndof];
+    double err = sim->cycles > 0 ? sim->D_err[c] : sim->total_err;
+    if (err > sim->answer_rtol * fabs(D)) {
+        char which[48] = "the total dissipation";
+        if (sim->cycles > 0)
+            snprintf(which, sizeof which, "cycle %zu's dissipation", sim->cycles);
         fr_warn(&sim->warnings, FRICREG_WARN_ERROR_ESTIMATE,
-                "the error estimate of D, %.3g, is above 10%% of D = %.3g: eps (or dt, or the "
-                "tolerances) is too coarse for the estimate's asymptotic form, which may then "
-                "not bound the error; halve eps",
-                err, D);
-    else if (multistep(sim) && err > fr_sim_dissipation_tolerance(sim, D))
+                "the error estimate %.3g of %s %.7g (%s) exceeds the answer tolerance %.3g of "
+                "it: halve eps and dt, or raise --answer-rtol (set_answer_rtol)",
+                err, which, D, fr_estimate_kind_name(sim->D_kind[c]), sim->answer_rtol);
+    } else if (multistep(sim) && err > fr_sim_dissipation_tolerance(sim, D))
         fr_warn(&sim->warnings, FRICREG_WARN_ERROR_ESTIMATE,
                 "the error of msadams and msbdf does not follow their tolerances (the two "
                 "blocks: about 1e-5 from rtol 1e-3 to 1e-9): the error estimate of D, %.3g, is "
@@ -179,5 +188,18 @@ int fricreg_sim_get_dissipation_error(const fricreg_sim *sim, size_t ncycles, do
         return FRICREG_ESIZE;
     for (size_t c = 0; c < ncycles; c++)
         err[c] = sim->D_err[c];
+    return FRICREG_OK;
+}
+
+int fricreg_sim_get_dissipation_error_kind(const fricreg_sim *sim, size_t ncycles, int kind[])
+{
+    if (sim == NULL || (kind == NULL && ncycles > 0))
+        return FRICREG_ENULL;
+    if (sim->D_kind == NULL)
+        return FRICREG_EINVAL;
+    if (ncycles != sim->cycles)
+        return FRICREG_ESIZE;
+    for (size_t c = 0; c < ncycles; c++)
+        kind[c] = sim->D_kind[c];
     return FRICREG_OK;
 }

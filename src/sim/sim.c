@@ -14,6 +14,7 @@
 #include <gsl/gsl_math.h>
 #include <gsl/gsl_odeiv2.h>
 
+#include "base/companion_estimate.h" /* FR_ANSWER_RTOL */
 #include "base/fr_math.h"
 #include "central_imex.h"
 #include "central_step.h"
@@ -58,10 +59,11 @@ static void free_run(fricreg_sim *sim)
     fr_extrap_free(sim->extrap);
     sim->extrap = NULL;
     free(sim->D_err);
+    free(sim->D_kind);
     sim->D_err = NULL;
+    sim->D_kind = NULL;
     sim->total_err = NAN;
     sim->estimate_failed = 0;
-    sim->outside_rel = -1.0;
     sim->jac_work = NULL;
     sim->jac = NULL;
     sim->ctx = NULL;
@@ -102,6 +104,7 @@ int fricreg_sim_create(int system, fricreg_sim **out)
     sim->rule_scale = 1.0;
     sim->kink_location = 1;
     sim->total_err = NAN;
+    sim->answer_rtol = FR_ANSWER_RTOL;
     *out = sim;
     return FRICREG_OK;
 }
@@ -798,6 +801,11 @@ int fricreg_sim_get_value(const fricreg_sim *sim, int which, double *value)
         if (sim->D_err == NULL)
             return FRICREG_EINVAL;
         *value = sim->total_err;
+        break;
+    case FRICREG_VALUE_DISS_ERROR_KIND:
+        if (sim->D_kind == NULL)
+            return FRICREG_EINVAL;
+        *value = sim->D_kind[sim->cycles];
         break;
     default: return FRICREG_EINVAL;
     }

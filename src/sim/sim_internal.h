@@ -75,13 +75,10 @@ struct fricreg_sim {
     int estimate_skip; /* set by extrapolate.c for its level 0: the extrapolation estimates */
     double *D_err;
     double total_err;
+    int *D_kind; /* [cycles + 1] with D_err: enum fricreg_estimate_kind, per cycle, the total's */
     int estimate_failed;
     char estimate_msg[200];
-    /* the estimate that showed no order in eps with the largest relative size (outside_rel,
-     * -1 for none): its cycle (cycles: the total) and D, D2, D4 and the estimate */
-    double outside_rel;
-    size_t outside_cycle;
-    double outside_q[4];
+    double answer_rtol; /* fricreg_sim_set_answer_rtol: the estimate's warning level */
     /* Set by a step that made the after-step checks in its own last pass (central_step.c):
      * it counted the diverged components into step_diverged and added the step to
      * stick_time, so after_step skips its two passes over the state. */

@@ -7,9 +7,10 @@
  *
  * The estimate of each quantity from q, q2 = q(eps / 2), q4 = q(eps / 4) is
  * base/companion_estimate.c's, fricreg_sim's too: Richardson's correction with the observed
- * order in range, a safe bound below it (FRICREG_WARN_NOT_ASYMPTOTIC for a dissipation; a
- * peak gets the bound without the warning, see peak_estimate); one companion (1.6's):
- * 3 |q - q2|.
+ * order in range (kind ASYMPTOTIC), a safe bound below it (kind BOUND); one companion (1.6's):
+ * 3 |q - q2| (kind ASSUMED). FRICREG_WARN_ERROR_ESTIMATE where the largest peak's or the summed
+ * dissipations' estimate exceeds the answer tolerance (fricreg_structure_set_answer_rtol),
+ * whatever the kind.
  *
  * The second companion is the first's own companion: the first runs with the estimate on and
  * one companion, so every change passed on to the first reaches the second the same way. It
@@ -23,7 +24,6 @@
  * others (bounds, law, records, Newton, the step bound, the adaptive tolerances) are passed on
  * to it before it follows the structure (fr_estimate_sync). It is stepped by the plain runs
  * (step.c, structure_ode.c), beneath the public ones. */
-#include <float.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -35,7 +35,6 @@
 #include "structure_internal.h"
 
 #define TOL_SCALE 16.0 /* the companion's tolerances (fricreg_sim's) */
-#define TOO_LARGE 0.1  /* an estimate above 10% of its quantity: outside the asymptotic range */
 
 static void companion_free(fricreg_structure *s)
 {
@@ -220,11 +219,10 @@ void fr_estimate_follow(fricreg_structure *s, int integrator, double dt, double 
 }
 
 /* The estimate of one quantity from its values on s, its companion and (with two) the
- * second companion (base/companion_estimate.h, shared with fricreg_sim): *outside is set when
- * the three show no order in eps. */
-static double estimate_of(const fricreg_structure *s, double q, double q2, double q4, int *outside)
+ * second companion (base/companion_estimate.h, shared with fricreg_sim), its kind into *kind. */
+static double estimate_of(const fricreg_structure *s, double q, double q2, double q4, int *kind)
 {
-    return fr_companion_estimate(s->estimate_on, q, q2, q4, outside);
+    return fr_companion_estimate(s->estimate_on, q, q2, q4, kind);
 }
 
 /* The three structures along the path (the second companion is the first when there is one
@@ -235,67 +233,48 @@ static const fricreg_structure *second(const fricreg_structure *s)
     return c->estimate_state == FR_ESTIMATE_ACTIVE ? c->companion : c;
 }
 
-/* A peak out of range gets the safe bound without the warning. Every step's peak takes in
- * the turning points between its ends (peak.c), so a peak converges at an order as a
- * dissipation does; its order test is not yet a warning because the warning itself is to
- * become the estimate's kind (asymptotic or bound) rather than an alarm. */
-static double peak_estimate(const fricreg_structure *s, size_t i)
+/* Every step's peak takes in the turning points between its ends (peak.c), so a peak
+ * converges at an order as a dissipation does, and its kind is read the same way. */
+static double peak_estimate(const fricreg_structure *s, size_t i, int *kind)
 {
-    int ignored = 0;
-    return estimate_of(s, s->peak[i], s->companion->peak[i], second(s)->peak[i], &ignored);
+    return estimate_of(s, s->peak[i], s->companion->peak[i], second(s)->peak[i], kind);
 }
 
-static double dissipation_estimate(const fricreg_structure *s, size_t j, int *outside)
+static double dissipation_estimate(const fricreg_structure *s, size_t j, int *kind)
 {
     return estimate_of(s, s->energy.per_contact[j], s->companion->energy.per_contact[j],
-                       second(s)->energy.per_contact[j], outside);
+                       second(s)->energy.per_contact[j], kind);
 }
 
 /* The estimate of joint element i's dissipation (the elements have no eps: their error is
  * dt's, along the same path). */
-static double element_dissipation_estimate(const fricreg_structure *s, size_t i, int *outside)
+static double element_dissipation_estimate(const fricreg_structure *s, size_t i, int *kind)
 {
     return estimate_of(s, s->el.dissipation[i], s->companion->el.dissipation[i],
-                       second(s)->el.dissipation[i], outside);
+                       second(s)->el.dissipation[i], kind);
 }
 
-/* Among the dissipations q[count] of s, its companion and the second (contacts' or elements'),
- * the one outside the range with the largest estimate relative to itself, if it beats *rel. */
-struct worst {
-    const char *what;
-    size_t index;
-    double rel, err, q[3];
+/* One of the warning's two quantities: its value, its estimate, and the kind of the largest
+ * estimate in it (the one that weighs most in a sum). */
+struct judged {
+    double q, err, largest;
+    int kind;
 };
 
-static void find_worst(const double *q, const double *q2, const double *q4, size_t count,
-                       const fricreg_structure *s, const char *what, struct worst *w)
+static void add_estimate(struct judged *sum, double q, double err, int kind)
 {
-    for (size_t j = 0; j < count; j++) {
-        int outside = 0;
-        double e = estimate_of(s, q[j], q2[j], q4[j], &outside);
-        double rel = e / fmax(fabs(q[j]), DBL_MIN);
-        if (outside && rel > w->rel)
-            *w = (struct worst){what, j, rel, e, {q[j], q2[j], q4[j]}};
-    }
+    sum->q += fabs(q);
+    sum->err += err;
+    if (err > sum->largest || sum->kind == 0)
+        sum->largest = err, sum->kind = kind;
 }
 
-/* FRICREG_WARN_NOT_ASYMPTOTIC naming the contact or joint element whose dissipation has the
- * largest estimate relative to itself among those outside the range. */
-static void warn_not_asymptotic(fricreg_structure *s)
+static void warn_above_tolerance(fricreg_structure *s, const char *what, const struct judged *x)
 {
-    const fricreg_structure *c = s->companion, *cc = second(s);
-    struct worst w = {.rel = -1.0};
-    find_worst(s->energy.per_contact, c->energy.per_contact, cc->energy.per_contact, s->m, s,
-               "contact", &w);
-    find_worst(s->el.dissipation, c->el.dissipation, cc->el.dissipation, s->el.me, s,
-               "joint element", &w);
-    if (w.what == NULL)
-        return;
-    fr_warn(&s->warnings, FRICREG_WARN_NOT_ASYMPTOTIC,
-            "error estimate not asymptotic: %s %zu's dissipation %.7g, %.7g, %.7g at eps, "
-            "eps/2, eps/4 shows no order in eps (the run and its companion may agree on a wrong "
-            "value); its estimate is the safe bound %.3g: halve eps and dt",
-            w.what, w.index, w.q[0], w.q[1], w.q[2], w.err);
+    fr_warn(&s->warnings, FRICREG_WARN_ERROR_ESTIMATE,
+            "the error estimate %.3g of %s %.7g (kind %s) exceeds the answer "
+            "tolerance %.3g of it: halve eps and dt, or raise --answer-rtol (set_answer_rtol)",
+            x->err, what, x->q, fr_estimate_kind_name(x->kind), s->answer_rtol);
 }
 
 void fr_estimate_check(fricreg_structure *s)
@@ -307,28 +286,41 @@ void fr_estimate_check(fricreg_structure *s)
     }
     if (s->estimate_state != FR_ESTIMATE_ACTIVE)
         return;
-    double peak = 0.0, peak_err = 0.0, D = 0.0, D_err = 0.0;
-    int outside = 0;
+    /* The peaks: the largest estimate against the largest peak (a building's drift is read at
+     * its largest storey); the dissipations, contacts' and joint elements', summed. */
+    struct judged peak = {0}, D = {0};
     for (size_t i = 0; i < s->n; i++) {
-        peak = fmax(peak, s->peak[i]);
-        peak_err = fmax(peak_err, peak_estimate(s, i));
+        int kind;
+        double err = peak_estimate(s, i, &kind);
+        peak.q = fmax(peak.q, fabs(s->peak[i]));
+        if (err > peak.err || peak.kind == 0)
+            peak.err = err, peak.kind = kind;
     }
     for (size_t j = 0; j < s->m; j++) {
-        D += fabs(s->energy.per_contact[j]);
-        D_err += dissipation_estimate(s, j, &outside);
+        int kind;
+        double err = dissipation_estimate(s, j, &kind);
+        add_estimate(&D, s->energy.per_contact[j], err, kind);
     }
-    for (size_t i = 0; i < s->el.me; i++) { /* the joint elements' beside the contacts' */
-        D += fabs(s->el.dissipation[i]);
-        D_err += element_dissipation_estimate(s, i, &outside);
+    for (size_t i = 0; i < s->el.me; i++) {
+        int kind;
+        double err = element_dissipation_estimate(s, i, &kind);
+        add_estimate(&D, s->el.dissipation[i], err, kind);
     }
-    if (outside)
-        warn_not_asymptotic(s);
-    if (peak_err > TOO_LARGE * peak || D_err > TOO_LARGE * D)
-        fr_warn(&s->warnings, FRICREG_WARN_ERROR_ESTIMATE,
-                "an error estimate is above 10%% of its quantity (peak %.3g +- %.3g, "
-                "dissipation %.3g +- %.3g): eps or dt is too coarse for the estimate, which may "
-                "then not bound the error; halve them",
-                peak, peak_err, D, D_err);
+    if (peak.err > s->answer_rtol * peak.q)
+        warn_above_tolerance(s, "the largest peak displacement", &peak);
+    if (D.err > s->answer_rtol * D.q)
+        warn_above_tolerance(s, "the summed dissipation", &D);
+}
+
+int fricreg_structure_set_answer_rtol(fricreg_structure *s, double rtol)
+{
+    if (s == NULL)
+        return FRICREG_ENULL;
+    if (!(rtol > 0.0 && rtol < INFINITY)) /* NaN fails both */
+        return fr_fail(s, FRICREG_EINVAL, "set_answer_rtol: rtol = %g must be finite and > 0",
+                       rtol);
+    s->answer_rtol = rtol;
+    return FRICREG_OK;
 }
 
 int fricreg_structure_set_error_estimate(fricreg_structure *s, int on)
@@ -360,8 +352,7 @@ int fricreg_structure_get_peak_displacement(const fricreg_structure *s, size_t n
 }
 
 /* FRICREG_OK when the estimate can be read (a run made one, the companion at s's time). */
-static int estimate_ready(const fricreg_structure *s, size_t len, size_t expected,
-                          const double out[])
+static int estimate_ready(const fricreg_structure *s, size_t len, size_t expected, const void *out)
 {
     if (s == NULL || out == NULL)
         return FRICREG_ENULL;
@@ -377,7 +368,8 @@ int fricreg_structure_get_peak_displacement_error(const fricreg_structure *s, si
     if (status != FRICREG_OK)
         return status;
     for (size_t i = 0; i < ndof; i++)
-        err[i] = s->estimate_state == FR_ESTIMATE_FAILED ? INFINITY : peak_estimate(s, i);
+        err[i] = s->estimate_state == FR_ESTIMATE_FAILED ? INFINITY
+                                                         : peak_estimate(s, i, &(int){0});
     return FRICREG_OK;
 }
 
@@ -402,5 +394,39 @@ int fricreg_structure_get_jenkins_dissipation_error(const fricreg_structure *s, 
         err[i] = s->estimate_state == FR_ESTIMATE_FAILED
                      ? INFINITY
                      : element_dissipation_estimate(s, i, &(int){0});
+    return FRICREG_OK;
+}
+
+/* The kind of quantity `quantity`'s i-th estimate (enum fricreg_estimated_quantity). */
+static int kind_of(const fricreg_structure *s, int quantity, size_t i)
+{
+    int kind = FRICREG_EST_KIND_BOUND; /* a failed estimate: +infinity, a bound */
+    if (s->estimate_state == FR_ESTIMATE_FAILED)
+        return kind;
+    if (quantity == FRICREG_EST_PEAK_DISPLACEMENT)
+        peak_estimate(s, i, &kind);
+    else if (quantity == FRICREG_EST_DISSIPATION)
+        dissipation_estimate(s, i, &kind);
+    else
+        element_dissipation_estimate(s, i, &kind);
+    return kind;
+}
+
+int fricreg_structure_get_error_kind(const fricreg_structure *s, int quantity, size_t n, int kind[])
+{
+    if (s == NULL || kind == NULL)
+        return FRICREG_ENULL; /* before the quantity is read, as the *_error getters */
+    size_t expected;
+    switch (quantity) {
+    case FRICREG_EST_PEAK_DISPLACEMENT: expected = s->n; break;
+    case FRICREG_EST_DISSIPATION: expected = s->m; break;
+    case FRICREG_EST_ELEMENT_DISSIPATION: expected = s->el.me; break;
+    default: return FRICREG_EINVAL;
+    }
+    int status = estimate_ready(s, n, expected, kind);
+    if (status != FRICREG_OK)
+        return status;
+    for (size_t i = 0; i < n; i++)
+        kind[i] = kind_of(s, quantity, i);
     return FRICREG_OK;
 }

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/companion_estimate.h" /* FR_ANSWER_RTOL */
 #include "base/gsl_mem.h"
 #include "base/sparse_factor.h"
 #include "law/law.h"
@@ -119,6 +120,7 @@ int fricreg_structure_create(size_t ndof, size_t m, fricreg_structure **out)
     s->newton_max = 50;
     s->max_steps = -1; /* the law's default (fr_law_max_adaptive_steps) */
     s->tol_scale = 1.0;
+    s->answer_rtol = FR_ANSWER_RTOL;
     s->fresh = 1;
     *out = s;
     return FRICREG_OK;

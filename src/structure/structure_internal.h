@@ -223,6 +223,7 @@ struct fricreg_structure {
     fricreg_structure *companion; /* while ACTIVE; else NULL, or stale until the next step */
     char estimate_msg[256];       /* why the estimate failed (FR_ESTIMATE_FAILED) */
     unsigned companion_pending;   /* enum fr_change: set since the companion last followed */
+    double answer_rtol; /* fricreg_structure_set_answer_rtol: the estimate's warning level */
 };
 
 enum {

@@ -9,6 +9,8 @@
  * RK4 step is inside the stick zone's stability bound (dt 2 bound/(m eps) <= 2.78), and eps
  * is one the library's laws take (DBL_MIN <= eps, and eps <= 1e250 for the 2-D laws of hold
  * and disk), so that no run is refused by the library for a value the parser let through. */
+#include <math.h>
+
 #include "fuzz_argv.h"
 #include "fuzz_input.h"
 
@@ -91,33 +93,36 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     static struct fuzz_argv a;
     fuzz_argv_split(data, size, 1, &a);
     enum cli_output output = CLI_SUMMARY;
-    int estimator = FRICREG_ESTIMATE_OFF;
+    struct cli_estimate_options estimate = {FRICREG_ESTIMATE_OFF, 0.0};
     int status;
     switch (data[0] % 3) {
     case 0: {
         struct prob_hold p;
-        if ((status = cli_parse_hold(a.argc, a.argv, &p, &output, &estimator)) == 0)
+        if ((status = cli_parse_hold(a.argc, a.argv, &p, &output, &estimate)) == 0)
             check_hold(&p);
         break;
     }
     case 1: {
         struct prob_belt p;
-        if ((status = cli_parse_belt(a.argc, a.argv, &p, &output, &estimator)) == 0)
+        if ((status = cli_parse_belt(a.argc, a.argv, &p, &output, &estimate)) == 0)
             check_belt(&p);
         break;
     }
     default: {
         struct prob_disk p;
         double ref_eps = -1.0;
-        if ((status = cli_parse_disk(a.argc, a.argv, &p, &ref_eps, &output, &estimator)) == 0)
+        if ((status = cli_parse_disk(a.argc, a.argv, &p, &ref_eps, &output, &estimate)) == 0)
             check_disk(&p, ref_eps);
     }
     }
     FUZZ_REQUIRE(status == 0 || status == CLI_EXIT_USAGE, "parse: status %d", status);
     FUZZ_REQUIRE(status != 0 || output == CLI_SUMMARY || output == CLI_TRAJECTORY, "output %d",
                  (int)output);
-    FUZZ_REQUIRE(status != 0 || (estimator >= FRICREG_ESTIMATE_OFF &&
-                                 estimator <= FRICREG_ESTIMATE_ONE_COMPANION),
-                 "estimator %d", estimator);
+    FUZZ_REQUIRE(status != 0 || (estimate.estimator >= FRICREG_ESTIMATE_OFF &&
+                                 estimate.estimator <= FRICREG_ESTIMATE_ONE_COMPANION),
+                 "estimator %d", estimate.estimator);
+    /* the library's setters take the answer tolerance finite and > 0 */
+    FUZZ_REQUIRE(status != 0 || (estimate.answer_rtol > 0.0 && isfinite(estimate.answer_rtol)),
+                 "answer_rtol %g", estimate.answer_rtol);
     return 0;
 }
