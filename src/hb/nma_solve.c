@@ -118,9 +118,8 @@ int fr_hb_nma_evaluate(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, co
     return status;
 }
 
-/* The residual (weighted amplitude rows last) into R[nd], and with jac Newton's matrix. */
-static int evaluate(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, const double *y,
-                    double *R, int jac)
+int fr_hb_nma_system(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, const double *y,
+                     double *R, int jac)
 {
     size_t nq = nma->nq, nd = nma->nd, m = hb->m;
     int status = fr_hb_nma_evaluate(hb, fn, nma, y, R);
@@ -213,7 +212,7 @@ static int nma_trial(void *user, double alpha, int *accept)
     size_t nd = nma->nd;
     for (size_t j = 0; j < nd; j++)
         nma->yt[j] = nma->y[j] + alpha * nma->dy[j];
-    t->last = evaluate(t->hb, t->fn, nma, nma->yt, nma->Rt, 0);
+    t->last = fr_hb_nma_system(t->hb, t->fn, nma, nma->yt, nma->Rt, 0);
     *accept = t->last == FRICREG_OK &&
               (t->converged || fr_armijo_decrease(t->ls, t->r0, norm2(nma->Rt, nd), alpha));
     if (*accept)
@@ -251,7 +250,7 @@ struct nma_loop {
 static int nma_evaluate(struct nma_loop *l)
 {
     struct fr_hb_nma *nma = l->nma;
-    int status = evaluate(l->hb, l->fn, nma, nma->y, nma->R, 1);
+    int status = fr_hb_nma_system(l->hb, l->fn, nma, nma->y, nma->R, 1);
     if (status != FRICREG_OK)
         return status;
     double r = 0.0, qs = 0.0;
