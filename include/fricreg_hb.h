@@ -778,9 +778,9 @@ FRICREG_API int fricreg_hb_nma_point(fricreg_hb *hb, size_t i, double *amplitude
  *  start and the model are fricreg_hb_nma's (the extended periodic motion concept; the mode at
  *  a0 reached by its natural-parameter march from the linear mode, cheaper where the backbone
  *  is the linear mode); then the branch is followed in the scaled unknowns z = (q_h / (a u_s),
- *  q_0 / (a0 u_s), ω/ω_k, ξ/ω_k, log(a/a0)) (q_h the harmonics, q_0 the rows'
- *  means, u_s the largest |q_h|/a at a0, ω_k the stuck linear mode's frequency) by a tangent
- *  predictor and a Newton corrector with a line search on the equations bordered by the
+ *  q_0 / (a0 u_s), ω/ω_k, ξ/ω_k, log(a/a0)) (q_h the harmonics, q_0 the rows' means, u_s the
+ *  largest |q|/a so far, from a0's: raised along the branch as fricreg_hb_continue's scale;
+ *  ω_k the stuck linear mode's frequency) by a tangent predictor and a Newton corrector with a line search on the equations bordered by the
  *  arclength's hyperplane, with the step control of fricreg_hb_set_continuation (ds, ds_min,
  *  ds_max in z; a step rejected and halved when the corrector fails, ends beyond 4 ds, or the
  *  tangent turns by more than 20° or the corrector contracts by more than 1/2 in its first

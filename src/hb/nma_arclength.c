@@ -6,7 +6,7 @@
  * march in log a (nma.c) stops.
  *
  * The unknowns, scaled: z = (u, ω/ω_k, ξ/ω_k, log(a/a0)) with u the harmonics of q
- * over a u_s (u_s the largest |q|/a of the start, so u is the normalized shape, O(1)) and each
+ * over a u_s (u_s the largest |q|/a so far, so u is the normalized shape, O(1)) and each
  * row's mean over a0 u_s; the equations those of the extended periodic motion concept
  * (fr_hb_nma_system), (R) over a u_s and the amplitude rows over a, nondimensional; the
  * Jacobian the chain rule on fr_hb_nma_system's, its log-amplitude column from
@@ -338,6 +338,30 @@ static int step(struct bb *b, double *ds, int *last)
     }
 }
 
+/* The shape's scale follows the branch up, as the forced response's (arclength.c): u_s the
+ * largest |q|/a so far, so that a shape that grows along the branch (a joint near a node of
+ * the stuck mode, free once it slips) does not stretch the arclength; the new point w, its
+ * tangent tn and the points kept converted to the new scale. */
+static void rescale(struct bb *b)
+{
+    size_t nq = b->s->nq, st = b->nz + 1;
+    double top = 0.0;
+    for (size_t j = 0; j < nq; j++)
+        top = fmax(top, fabs(b->w[j]));
+    if (!(top > 1.0))
+        return;
+    for (size_t j = 0; j < nq; j++) {
+        b->w[j] /= top;
+        b->tn[j] /= top;
+        for (size_t i = 0; i < b->npts; i++)
+            b->pts[i * st + j] /= top;
+    }
+    double n = sqrt(fr_hb_dot(b->tn, b->tn, b->nz));
+    for (size_t j = 0; j < b->nz; j++)
+        b->tn[j] /= n;
+    b->us *= top;
+}
+
 static int follow(struct bb *b)
 {
     size_t nz = b->nz, nd = b->s->nd;
@@ -359,6 +383,7 @@ static int follow(struct bb *b)
         int last = 0, status = step(b, &ds, &last);
         if (status != FRICREG_OK)
             return status;
+        rescale(b);
         keep_point(b, b->w, b->tn[nd]);
         if (last)
             return FRICREG_OK;
