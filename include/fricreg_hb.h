@@ -692,7 +692,11 @@ enum fricreg_hb_nma_damping {
  *  comment): npoints points at the amplitudes a_i = a0 (a1/a0)^(i/(npoints−1)), each solved by
  *  Newton's method with the exact Jacobian (fricreg_hb_set_newton's tolerance and iterations, on (R) and
  *  on the amplitude condition relative to a) on the unknowns q, ω, ξ (ω and ξ derivatives of the
- *  condensation as for the continuation's). The march starts at the linear mode of the
+ *  condensation as for the continuation's). Where its line search finds no decrease of |R| but
+ *  its own step is within the tolerance of the unknowns (each q's change within tol times the
+ *  largest |q|, ω's and ξ's within tol times ω), |R| is at the rounding level of the model's
+ *  scale (D_h's condition times the unit roundoff: a stiff model in SI units) and the point
+ *  is converged (since 1.8; 1.7 returned FRICREG_EWORK there). The march starts at the linear mode of the
  *  structure with its elements stuck (K_0 = K + J^T diag(k) J, k the elements' stiffnesses: kt, the
  *  sum of an Iwan element's sliders of nonzero slip force, with lift-off kt and kn where the
  *  preload N0 > 0 closes the contact; K_0 φ = ω_k² M φ, mode 0 the lowest: on a dense model by

@@ -44,7 +44,7 @@ struct bb {
     double *pts; /* the branch: per point z and the tangent's log a component */
     size_t npts, cap;
     double delta, kappa, r, bound; /* the corrector's first step and contraction; its measure */
-    int converged;
+    int converged, tiny;           /* tiny: Newton's last step within the tolerance of z */
 };
 
 static int harmonic(const struct bb *b, size_t j)
@@ -173,7 +173,14 @@ static int bb_direction(void *user)
     int status = solve(b, b->dz);
     if (status != FRICREG_OK)
         return status;
-    double step = sqrt(fr_hb_dot(b->dz, b->dz, b->nz));
+    double step = sqrt(fr_hb_dot(b->dz, b->dz, b->nz)), qs = 0.0, dq = 0.0, tol = b->hb->tol;
+    size_t nq = b->s->nq, nd = b->s->nd;
+    for (size_t j = 0; j < nq; j++) {
+        qs = fmax(qs, fabs(b->w[j]));
+        dq = fmax(dq, fabs(b->dz[j]));
+    }
+    b->tiny = dq <= tol * qs && fabs(b->dz[nq]) <= tol * fabs(b->w[nq]) &&
+              fabs(b->dz[nq + 1]) <= tol * fabs(b->w[nq]) && fabs(b->dz[nd]) <= tol;
     if (l->it == 0)
         b->delta = step;
     else if (l->it == 1 && b->delta > 0.0)
@@ -195,7 +202,9 @@ static int bb_trial(void *user, double lambda, int *accept)
     return status;
 }
 
-/* As corrector.c's: where no trial decreases |F|, on from the shortest. */
+/* As corrector.c's: where no trial decreases |F|, on from the shortest; converged there if
+ * Newton's own step was within the tolerance of z (|F| at the rounding floor of the model's
+ * scale, as fr_hb_nma_newton's). */
 static int bb_search(void *user, double *phi, double *rinf, int *accepted)
 {
     struct bb_loop *l = user;
@@ -204,9 +213,11 @@ static int bb_search(void *user, double *phi, double *rinf, int *accepted)
     (void)rinf;
     memcpy(b->base, b->w, b->nz * sizeof(double));
     l->prev = sqrt(fr_hb_dot(b->F, b->F, b->nz));
-    int found;
+    int found, status = fr_line_search(&l->ls, 1.0, bb_trial, l, &found);
     *accepted = 1;
-    return fr_line_search(&l->ls, 1.0, bb_trial, l, &found);
+    if (status == FRICREG_OK && !found && b->tiny)
+        b->converged = 1;
+    return status;
 }
 
 /* From start onto the branch, on the hyperplane row^T (z − anchor) = 0, into w; *its its
