@@ -513,7 +513,7 @@ FRICREG_API int fricreg_hb_set_continuation(fricreg_hb *hb, double ds, double ds
  *  parameter   the continued parameter at the iterate: Ω (rad/s) in fricreg_hb_continue,
  *              fricreg_hb_peak and fricreg_hb_truncation_error; the excitation level λ in
  *              fricreg_hb_continue_level and in fricreg_hb_solve (1 with a guess; along its start's branch in λ without one);
- *              the modal amplitude a in fricreg_hb_nma.
+ *              the modal amplitude a in fricreg_hb_nma and fricreg_hb_nma_continue.
  *  residual    the iterate's largest residual entry over Newton's bound (fricreg_hb_set_newton:
  *              converged at most 1), nondimensional.
  *
@@ -692,7 +692,11 @@ enum fricreg_hb_nma_damping {
  *  comment): npoints points at the amplitudes a_i = a0 (a1/a0)^(i/(npoints−1)), each solved by
  *  Newton's method with the exact Jacobian (fricreg_hb_set_newton's tolerance and iterations, on (R) and
  *  on the amplitude condition relative to a) on the unknowns q, ω, ξ (ω and ξ derivatives of the
- *  condensation as for the continuation's). The march starts at the linear mode of the
+ *  condensation as for the continuation's). Where its line search finds no decrease of |R| but
+ *  its own step is within the tolerance of the unknowns (each q's change within tol times the
+ *  largest |q|, ω's and ξ's within tol times ω), |R| is at the rounding level of the model's
+ *  scale (D_h's condition times the unit roundoff: a stiff model in SI units) and the point
+ *  is converged (since 1.8; 1.7 returned FRICREG_EWORK there). The march starts at the linear mode of the
  *  structure with its elements stuck (K_0 = K + J^T diag(k) J, k the elements' stiffnesses: kt, the
  *  sum of an Iwan element's sliders of nonzero slip force, with lift-off kt and kn where the
  *  preload N0 > 0 closes the contact; K_0 φ = ω_k² M φ, mode 0 the lowest: on a dense model by
@@ -703,11 +707,11 @@ enum fricreg_hb_nma_damping {
  *  below a0, at half the amplitude where the first one does, where the mode is the linear one
  *  exactly (ω = ω_k, ζ = ζ_k); it proceeds by natural-parameter continuation in log a, the
  *  predictor the secant of the last two solutions in (q/a, ω, ξ), a step whose corrector fails
- *  halved, down to 1/1024 of the grid's step. A friction-damped mode's backbone is monotone in
- *  a (no fold: the amplitude is a natural parameter); a mode that folds in a (an internal
- *  resonance) stops the march. The points are stored (fricreg_hb_nma_points,
- *  fricreg_hb_nma_point), replacing those of an earlier call; the forced response's solution
- *  and branch are not changed.
+ *  halved, down to 1/1024 of the grid's step. The amplitude is a natural parameter where the
+ *  backbone is monotone in a; a backbone that folds in a (an internal resonance: a harmonic
+ *  k ω meeting another mode's frequency) stops the march (fricreg_hb_nma_continue passes
+ *  it). The points are stored (fricreg_hb_nma_points, fricreg_hb_nma_point), replacing those
+ *  of an earlier call; the forced response's solution and branch are not changed.
  *
  *  Cost per Newton iteration: the H + 1 factors of the forced response and a real LU of order
  *  m (2H + 1) + 2; once per call the linear mode: a dense model's dense eigenproblem of order
@@ -753,7 +757,8 @@ FRICREG_API size_t fricreg_hb_nma_points(const fricreg_hb *hb);
  *  periodic motion (the free motion of the section's equation, modal coordinate a cos ωt),
  *  from (HB) with no load, X_h = −D_h^-1 J^T F_h (one factorization of every D_h).
  *
- *  i           point index, 0 <= i < fricreg_hb_nma_points(hb), by increasing amplitude.
+ *  i           point index, 0 <= i < fricreg_hb_nma_points(hb): by increasing amplitude after
+ *              fricreg_hb_nma, in the branch's order after fricreg_hb_nma_continue.
  *  amplitude   out: its modal amplitude a (fricreg_hb_nma's units).
  *  omega       out: its natural frequency ω, rad/s.
  *  zeta        out: its damping ratio ζ = ξ/(2ω), nondimensional.
@@ -769,6 +774,72 @@ FRICREG_API size_t fricreg_hb_nma_points(const fricreg_hb *hb);
  *  written on failure. Since 1.7 (FRICREG_1.7). */
 FRICREG_API int fricreg_hb_nma_point(fricreg_hb *hb, size_t i, double *amplitude, double *omega,
                                      double *zeta, size_t ndof, size_t nc, double x[]);
+
+/** The backbone of mode k from the modal amplitude a0 to a1 by pseudo-arclength continuation
+ *  (Keller's, Krack & Gross Ch. 5, as fricreg_hb_continue's), so that it passes the folds of
+ *  the backbone in the amplitude (an S in a(ω): an internal resonance, where a harmonic k ω of
+ *  the mode meets another mode's frequency), where fricreg_hb_nma stops. The equations, the
+ *  start and the model are fricreg_hb_nma's (the extended periodic motion concept; the mode at
+ *  a0 reached by its natural-parameter march from the linear mode, cheaper where the backbone
+ *  is the linear mode); then the branch is followed in the scaled unknowns z = (q_h / (a u_s),
+ *  q_0 / (a0 u_s), ω/ω_k, ξ/ω_k, log(a/a0)) (q_h the harmonics, q_0 the rows' means, u_s the
+ *  largest |q|/a so far, from a0's: raised along the branch as fricreg_hb_continue's scale;
+ *  ω_k the stuck linear mode's frequency) by a tangent predictor and a Newton corrector with a line search on the equations bordered by the
+ *  arclength's hyperplane, with the step control of fricreg_hb_set_continuation (ds, ds_min,
+ *  ds_max in z; a step rejected and halved when the corrector fails, ends beyond 4 ds, or the
+ *  tangent turns by more than 20° or the corrector contracts by more than 1/2 in its first
+ *  steps, unless halving no longer helps), until the amplitude a1, solved there exactly. Each
+ *  point converges as fricreg_hb_nma's (fricreg_hb_set_newton's tolerance on (R) relative to
+ *  the largest |q|, and on the amplitude and phase conditions relative to a).
+ *
+ *  A fold is where the tangent's log a component changes sign between two points; it is
+ *  located by the linear interpolation of that component there, the point corrected onto the
+ *  branch (on the hyperplane normal to the chord), and stored (fricreg_hb_nma_folds,
+ *  fricreg_hb_nma_fold). The stored points (fricreg_hb_nma_points, fricreg_hb_nma_point, in
+ *  arclength order: the amplitude falls between two folds) are npoints at equal arclength in z
+ *  along the branch, the first at a0 and the last at a1 the branch's own, the others each
+ *  corrected onto the branch on the hyperplane normal to its stretch (so each a solution to
+ *  Newton's tolerance; where that corrector fails, the nearer point of the branch). They replace
+ *  those of an earlier fricreg_hb_nma or fricreg_hb_nma_continue, the folds too; the forced
+ *  response's solution and branch are not changed.
+ *
+ *  Cost: per corrector iteration fricreg_hb_nma's (the H + 1 factors and a real LU of order
+ *  m (2H + 1) + 3); the points of the branch as the step control takes them (at most
+ *  max_points), then npoints correctors more.
+ *
+ *  mode, damping, a0, a1  as fricreg_hb_nma.
+ *  npoints  the points stored, 2 <= npoints <= max_points (fricreg_hb_set_continuation): the
+ *           density of the output along the branch, not the continuation's steps.
+ *
+ *  Returns FRICREG_OK and what fricreg_hb_nma returns, for the same reasons, and also
+ *  FRICREG_EINTEGRATOR if the step fell below ds_min (the message names the amplitude and the
+ *  last failure); FRICREG_EWORK if max_points points of the branch were taken before a1 (a
+ *  branch that folds back for ever), or the monitor or fricreg_hb_set_max_iterations's bound
+ *  stopped it; FRICREG_ESINGULAR if the bordered matrix is singular (a pivot below 1e-14 of its
+ *  largest entry) at the start; FRICREG_ENOMEM. Allocates fricreg_hb_nma's and (max_points +
+ *  nz + 13) nz doubles, nz = m (2H + 1) + 3, during the call. On failure after the linear mode
+ *  the branch reached is kept: up to npoints of its points (resampled as above if it has more),
+ *  and its folds. Since 1.8 (FRICREG_1.8). */
+FRICREG_API int fricreg_hb_nma_continue(fricreg_hb *hb, size_t mode, int damping, double a0,
+                                        double a1, size_t npoints);
+
+/** Number of folds of the backbone found by the last fricreg_hb_nma_continue (0 after
+ *  fricreg_hb_nma, if none, or hb is NULL). Returns that number, not a status. Since 1.8
+ *  (FRICREG_1.8). */
+FRICREG_API size_t fricreg_hb_nma_folds(const fricreg_hb *hb);
+
+/** Fold i of the last fricreg_hb_nma_continue, in arclength order: the point of the branch
+ *  where its amplitude turns (fricreg_hb_nma_continue's comment says how it is located).
+ *
+ *  i           0 <= i < fricreg_hb_nma_folds(hb).
+ *  amplitude   out: its modal amplitude a (fricreg_hb_nma's units).
+ *  omega       out: its natural frequency ω, rad/s.
+ *  zeta        out: its damping ratio ζ = ξ/(2ω), nondimensional.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb, amplitude, omega or zeta is NULL; FRICREG_EINVAL
+ *  if i is out of range. Nothing is written on failure. Since 1.8 (FRICREG_1.8). */
+FRICREG_API int fricreg_hb_nma_fold(fricreg_hb *hb, size_t i, double *amplitude, double *omega,
+                                    double *zeta);
 
 /** \} */
 

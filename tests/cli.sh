@@ -947,20 +947,21 @@ fi
 total=$((total + 1))
 # A march that fails writes what it reached: no point here, the summary saying so.
 if "$sim" $nma --max-seconds 0 >"$d/stopped.json" 2>"$d/err" || [ $? -ne 1 ] ||
-        ! grep -q '"points": 0, "complete": false, "error": "nma: stopped' "$d/stopped.json" ||
+        ! grep -q '"points": 0, "folds": \[\], "complete": false, "error": "nma_continue: stopped' "$d/stopped.json" ||
         ! grep -q "^fricreg-sim: nma: --max-seconds 0 passed: stopped (the backbone had reached 0 of its 20 points)$" "$d/err"; then
     echo "FAIL: nma --max-seconds 0: $(cat "$d/stopped.json" "$d/err")"; fails=$((fails + 1))
 fi
-# Two Newton iterations a point reach 4 of 12 points (the fifth, at a = 3.29, needs more): those
-# four rows, each on the closed form, then the failure on stderr and exit status 1.
+# 1.7's march (--continuation natural): two Newton iterations a point reach 4 of 12 points (the
+# fifth, at a = 3.29, needs more): those four rows, each on the closed form, then the failure on
+# stderr and exit status 1.
 total=$((total + 1))
-if "$sim" $nma --points 12 --newton-max 2 --output backbone >"$d/part.csv" 2>"$d/err" || [ $? -ne 1 ] ||
+if "$sim" $nma --continuation natural --points 12 --newton-max 2 --output backbone >"$d/part.csv" 2>"$d/err" || [ $? -ne 1 ] ||
         ! closed_form_rows "$d/part.csv" 4 ||
         ! grep -q "^fricreg-sim: nma: the backbone failed after 4 of its 12 points: nma: Newton did not converge in 2 iterations" "$d/err"; then
     echo "FAIL: nma --newton-max 2, the points reached: $(cat "$d/part.csv" "$d/err")"; fails=$((fails + 1))
 fi
 total=$((total + 1))
-if "$sim" $nma --points 12 --newton-max 2 >"$d/part.json" 2>"$d/err" || [ $? -ne 1 ] ||
+if "$sim" $nma --continuation natural --points 12 --newton-max 2 >"$d/part.json" 2>"$d/err" || [ $? -ne 1 ] ||
         ! grep -q '"points": 4, "first": {"amplitude": 0.5,.*"complete": false, "error": "nma: Newton did not converge' "$d/part.json"; then
     echo "FAIL: nma --newton-max 2, the summary: $(cat "$d/part.json" "$d/err")"; fails=$((fails + 1))
 fi
@@ -968,6 +969,30 @@ total=$((total + 1))
 "$sim" $nma >"$d/summary.json" 2>"$d/err"
 if ! grep -q '"command": "nma".*"first": {"amplitude": 0.5, "omega": 1.73205080756887[0-9]*, "zeta": 0}.*"complete": true, "cpu' "$d/summary.json"; then
     echo "FAIL: nma summary: $(cat "$d/summary.json" "$d/err")"; fails=$((fails + 1))
+fi
+total=$((total + 1))
+"$sim" $nma --continuation natural --points 12 --output backbone >"$d/natural.csv" 2>"$d/err"
+if ! closed_form_rows "$d/natural.csv" 12; then
+    echo "FAIL: nma --continuation natural against the closed form: $(cat "$d/natural.csv" "$d/err")"; fails=$((fails + 1))
+fi
+# A backbone that folds (tests/test_hb_nma_fold.c's two masses, a Jenkins element on dof 2: an
+# internal resonance through the third harmonic at a = 4.43): the summary lists its two folds,
+# and the written points go back in the amplitude between them; 1.7's march stops there.
+printf '%s\n' "%%MatrixMarket matrix coordinate real symmetric" "2 2 2" "1 1 1" "2 2 1" >"$d/M2.mtx"
+printf '%s\n' "%%MatrixMarket matrix coordinate real symmetric" "2 2 3" "1 1 1.25" "2 1 -0.25" "2 2 0.45" >"$d/K2.mtx"
+printf '%s\n' "%%MatrixMarket matrix coordinate real general" "1 2 1" "1 2 1" >"$d/J2.mtx"
+echo "10 1" >"$d/P2.txt"
+fold="nma --mass $d/M2.mtx --stiffness $d/K2.mtx --jenkins $d/J2.mtx --jenkins-params $d/P2.txt --harmonics 3 --amplitude-start 2 --amplitude-end 10"
+total=$((total + 1))
+if ! "$sim" $fold >"$d/fold.json" 2>"$d/err" ||
+        ! grep -q '"folds": \[{"amplitude": 4\.43[0-9]*, "omega": 1\.1143[0-9]*, "zeta": 0\.003[0-9]*}, {"amplitude": 4\.41[0-9]*, "omega": 1\.1148[0-9]*, "zeta": 0\.008[0-9]*}\], "complete": true' "$d/fold.json"; then
+    echo "FAIL: nma through a fold, the summary: $(cat "$d/fold.json" "$d/err")"; fails=$((fails + 1))
+fi
+total=$((total + 1))
+if ! "$sim" $fold --points 200 --output backbone >"$d/fold.csv" 2>"$d/err" ||
+        ! awk -F, 'NR > 2 && $1 < prev { back++ } NR > 1 { prev = $1; rows++ } END { exit !(rows == 200 && back > 0) }' "$d/fold.csv" ||
+        "$sim" $fold --continuation natural >/dev/null 2>&1; then
+    echo "FAIL: nma through a fold, the backbone: $(head -n 3 "$d/fold.csv") $(cat "$d/err")"; fails=$((fails + 1))
 fi
 expect_output '^usage: fricreg-sim nma --mass M\.mtx --stiffness K\.mtx' nma --help
 expect_output '^  nma         ' --help

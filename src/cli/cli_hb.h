@@ -26,6 +26,7 @@ enum { NMA_SUMMARY, NMA_BACKBONE };
 struct nma_options {
     struct cli_hb_model_options model; /* the matrices and elements (hb_model.h) */
     int harmonics, mode, points, linear_damping, output, newton_max;
+    int continuation; /* NMA_ARCLENGTH (fricreg_hb_nma_continue) or NMA_NATURAL (fricreg_hb_nma) */
     int a0_given, a1_given;
     double a0, a1, newton_tol;
     struct cli_deadline deadline; /* --max-seconds */

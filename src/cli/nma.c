@@ -17,6 +17,10 @@
 static const struct cli_word nma_outputs[] = {{"summary", NMA_SUMMARY},
                                               {"backbone", NMA_BACKBONE},
                                               {NULL, 0}};
+enum { NMA_ARCLENGTH = 0, NMA_NATURAL = 1 };
+static const struct cli_word nma_continuations[] = {{"arclength", NMA_ARCLENGTH},
+                                                    {"natural", NMA_NATURAL},
+                                                    {NULL, 0}};
 static const struct cli_word nma_dampings[] = {{"matrix", FRICREG_HB_NMA_DAMPING_MATRIX},
                                                {"modal", FRICREG_HB_NMA_DAMPING_MODAL},
                                                {NULL, 0}};
@@ -42,6 +46,7 @@ static size_t nma_table(struct nma_options *o, struct cli_option table[])
     *o = (struct nma_options){.harmonics = 7,
                               .mode = 1,
                               .points = 20,
+                              .continuation = NMA_ARCLENGTH,
                               .linear_damping = FRICREG_HB_NMA_DAMPING_MATRIX,
                               .output = NMA_SUMMARY,
                               .newton_tol = 1e-10,
@@ -61,7 +66,13 @@ static size_t nma_table(struct nma_options *o, struct cli_option table[])
         {"--amplitude-end", CLI_POSITIVE, .slot = &o->a1, .given = &o->a1_given, .meta = "A1",
          .help = "the largest, above A0 (required)", .dflt = ""},
         {"--points", CLI_WHOLE, .slot = &o->points, .lo = 2, .hi = 2000, .meta = "N",
-         .help = "points of the backbone, log-spaced in the amplitude from A0 to A1"},
+         .help = "points of the backbone written: at equal arclength along the branch from A0 to "
+                 "A1 (arclength; each a solution, not an interpolation), or log-spaced in the "
+                 "amplitude (natural)"},
+        {"--continuation", CLI_CHOICE, .slot = &o->continuation, .words = nma_continuations,
+         .help = "the backbone by pseudo-arclength continuation, passing its folds in the "
+                 "amplitude (internal resonances), or by the natural-parameter march in log a "
+                 "of 1.7, which stops at a fold"},
         {"--linear-damping", CLI_CHOICE, .slot = &o->linear_damping, .words = nma_dampings,
          .help = "the linear damping in the mode: the matrix as given, or the linear mode's "
                  "modal damping (C replaced by 2 zeta_k omega_k M)"},
@@ -71,8 +82,9 @@ static size_t nma_table(struct nma_options *o, struct cli_option table[])
          .help = "Newton's iterations at most per point, 1 to 1000"},
         CLI_DEADLINE_OPTION(&o->deadline),
         {"--output", CLI_CHOICE, .slot = &o->output, .words = nma_outputs,
-         .help = "a JSON summary (the backbone's ends and its largest damping ratio), or the "
-                 "backbone: a CSV row amplitude,omega,zeta per point"}};
+         .help = "a JSON summary (the backbone's ends, its largest damping ratio and its folds), "
+                 "or the backbone: a CSV row amplitude,omega,zeta per point, in the branch's "
+                 "order"}};
     return cli_copy_rows(table, opts, sizeof opts / sizeof opts[0]);
 }
 
@@ -84,20 +96,23 @@ int cli_parse_nma(int argc, char **argv, struct nma_options *o)
     return status != 0 ? status : check_options(o);
 }
 
-/* The backbone's points: a[k], omega[k], zeta[k] at pts[3 k ..], into an array the caller
- * frees. */
-static int collect(fricreg_hb *hb, size_t *npoints, double **pts)
+/* The backbone's points: a[k], omega[k], zeta[k] at pts[3 k ..], then its folds' the same
+ * way, into one array the caller frees. */
+static int collect(fricreg_hb *hb, size_t *npoints, size_t *nfolds, double **pts)
 {
-    size_t K = fricreg_hb_nma_points(hb);
-    *pts = malloc((K > 0 ? 3 * K : 1) * sizeof **pts);
+    size_t K = fricreg_hb_nma_points(hb), F = fricreg_hb_nma_folds(hb);
+    *pts = malloc((K + F > 0 ? 3 * (K + F) : 1) * sizeof **pts);
     if (*pts == NULL)
         return cli_usage_error("nma", "out of memory");
-    for (size_t k = 0; k < K; k++) {
+    for (size_t k = 0; k < K + F; k++) {
         double *p = *pts + 3 * k;
-        if (fricreg_hb_nma_point(hb, k, &p[0], &p[1], &p[2], 0, 0, NULL) != FRICREG_OK)
+        int status = k < K ? fricreg_hb_nma_point(hb, k, &p[0], &p[1], &p[2], 0, 0, NULL)
+                           : fricreg_hb_nma_fold(hb, k - K, &p[0], &p[1], &p[2]);
+        if (status != FRICREG_OK)
             return cli_usage_error("nma", fricreg_hb_errmsg(hb));
     }
     *npoints = K;
+    *nfolds = F;
     return 0;
 }
 
@@ -109,9 +124,10 @@ static void write_backbone(FILE *out, size_t K, const double pts[])
 }
 
 /* The summary; error is NULL for a complete backbone, else the failure's message (the points
- * are those reached). */
+ * are those reached); the folds (a, omega, zeta each) found, in the branch's order. */
 static void write_summary(FILE *out, const struct nma_options *o, const struct cli_hb_model *md,
-                          size_t K, const double pts[], double cpu, const char *error)
+                          size_t K, const double pts[], size_t nfolds, const double folds[],
+                          double cpu, const char *error)
 {
     size_t top = 0;
     for (size_t k = 1; k < K; k++)
@@ -127,6 +143,11 @@ static void write_summary(FILE *out, const struct nma_options *o, const struct c
     for (int j = 0; j < 3 && K > 0; j++)
         fprintf(out, ", \"%s\": {\"amplitude\": %.17g, \"omega\": %.17g, \"zeta\": %.17g}",
                 names[j], pts[3 * at[j]], pts[3 * at[j] + 1], pts[3 * at[j] + 2]);
+    fputs(", \"folds\": [", out);
+    for (size_t i = 0; i < nfolds; i++)
+        fprintf(out, "%s{\"amplitude\": %.17g, \"omega\": %.17g, \"zeta\": %.17g}", i ? ", " : "",
+                folds[3 * i], folds[3 * i + 1], folds[3 * i + 2]);
+    fputs("]", out);
     fprintf(out, ", \"complete\": %s", error == NULL ? "true" : "false");
     if (error != NULL) {
         fputs(", \"error\": ", out);
@@ -143,16 +164,19 @@ static int run_nma(fricreg_hb *hb, struct nma_options *o, const struct cli_hb_mo
         return cli_usage_error("--mode", "beyond the structure's modes (one per dof)");
     clock_t start = clock();
     cli_deadline_start(&o->deadline, hb);
-    int run = fricreg_hb_nma(hb, (size_t)o->mode - 1, o->linear_damping, o->a0, o->a1,
-                             (size_t)o->points);
+    int run = (o->continuation == NMA_NATURAL ? fricreg_hb_nma
+                                              : fricreg_hb_nma_continue)(hb, (size_t)o->mode - 1,
+                                                                         o->linear_damping, o->a0,
+                                                                         o->a1, (size_t)o->points);
     double cpu = (double)(clock() - start) / CLOCKS_PER_SEC;
-    size_t K = 0;
+    size_t K = 0, F = 0;
     double *pts = NULL;
-    int status = collect(hb, &K, &pts);
+    int status = collect(hb, &K, &F, &pts);
     if (status == 0 && o->output == NMA_BACKBONE)
         write_backbone(out, K, pts);
     else if (status == 0)
-        write_summary(out, o, md, K, pts, cpu, run == FRICREG_OK ? NULL : fricreg_hb_errmsg(hb));
+        write_summary(out, o, md, K, pts, F, pts + 3 * K, cpu,
+                      run == FRICREG_OK ? NULL : fricreg_hb_errmsg(hb));
     free(pts);
     if (status == 0 && run != FRICREG_OK) {
         char progress[96];
@@ -209,9 +233,12 @@ const struct cli_command cli_nma_command = {
     "The backbone of mode K of a linear structure M x'' + C x' + K x + J^T f(q) = 0 with "
     "Jenkins, Iwan or lift-off elements on q = J x: its natural frequency omega and damping "
     "ratio zeta against its modal amplitude, by harmonic balance and the extended periodic "
-    "motion concept (fricreg_hb_nma, fricreg_hb.h; docs/joints.md, Nonlinear modes), from the "
-    "linear mode with the elements stuck, at --points amplitudes log-spaced from "
-    "--amplitude-start to --amplitude-end.\n\n"
+    "motion concept (fricreg_hb_nma_continue, fricreg_hb.h; docs/joints.md, Nonlinear modes), "
+    "from the linear mode with the elements stuck, followed from --amplitude-start to "
+    "--amplitude-end by pseudo-arclength continuation: it passes the folds of the backbone in "
+    "the amplitude (internal resonances), which the summary lists (\"folds\"), and writes "
+    "--points points at equal arclength along the branch, in its order (--continuation natural: "
+    "1.7's march, at --points amplitudes log-spaced, stopping at a fold).\n\n"
     "ELEMENTS is one parameter file, a line per row of J.mtx: --jenkins-params, --iwan-params "
     "or --iwan-segalman, or --normal with --normal-params (lift-off).",
     nma_help_table};

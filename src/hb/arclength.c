@@ -26,23 +26,6 @@
 #include "bifurcations.h"
 #include "points.h"
 
-/* The step control's nominal values (Allgower & Georg give the form; these were chosen on
- * tests/test_hb_continuation.c's chains and lift-off pair): the corrector's contraction, its
- * first step relative to ds, the angle between successive tangents (rad), the iterations; the
- * bounds on the angle (20°; a kink's 90°), on the contraction (1/2: Newton's convergence is
- * slow beyond) and on the distance from the last point (4 ds: the hyperplane of a kink of up
- * to 75° meets the branch within ds / cos 75° < 4 ds); the chord's slack over twice the
- * tangents' angle. */
-#define KAPPA0 0.25
-#define DELTA0 0.3
-#define ALPHA0 0.1745329251994330 /* 10° */
-#define ITS0 4.0
-#define ALPHA_MAX 0.3490658503988659 /* 20° */
-#define KAPPA_MAX 0.5
-#define KINK_MAX 1.5707963267948966 /* 90°: a larger turn goes back along the branch */
-#define JUMP 4.0
-#define CHORD_SLACK 1e-3 /* rad: above the chord's rounding, about tol/ds_min = 1e-4 */
-
 /* The last step: the point at p1 by Newton at fixed parameter, from the direction's line
  * there; kept as the driver's solution. */
 static int final_point(fricreg_hb *hb, const char *fn, const struct fr_hb_branch *b, double p1)
@@ -267,10 +250,7 @@ static int follow(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, double
         rescale(hb, b);
         memcpy(b->yc, hb->qw, ld * sizeof(double));
         /* the next step: Allgower & Georg's factor on the corrector and the angle */
-        double f = fmax(fmax(b->kappa / KAPPA0, b->delta / (ds * DELTA0)),
-                        fmax(kink ? 0.0 : alpha / ALPHA0, its / ITS0));
-        f = fmin(fmax(f, 0.5), 2.0);
-        ds = fmin(fmax(ds / f, hb->ds_min), hb->ds_max);
+        ds = fr_hb_next_step(hb, ds, b->kappa, b->delta, kink ? 0.0 : alpha, its);
     }
 }
 

@@ -27,6 +27,7 @@ void fr_hb_nma_free(struct fr_hb_nma *nma)
     free(nma->A);
     free(nma->piv);
     free(nma->pts);
+    free(nma->folds);
     free(nma);
 }
 
@@ -151,9 +152,9 @@ static void store(struct fr_hb_nma *s, double a)
     s->npts++;
 }
 
-/* The march: the linear mode below the first slip, then each grid amplitude in turn. */
-static int backbone(fricreg_hb *hb, const char *fn, struct fr_hb_nma *s, double a0, double a1,
-                    size_t npoints)
+/* The march's start: the linear mode below the first slip, then on to a0 (yc the solution). */
+static int march_start(fricreg_hb *hb, const char *fn, struct fr_hb_nma *s, struct march *mc,
+                       double a0)
 {
     double a_start = fmin(a0, 0.5 * s->a_stick);
     linear_guess(hb, s, a_start);
@@ -161,7 +162,24 @@ static int backbone(fricreg_hb *hb, const char *fn, struct fr_hb_nma *s, double 
     if (status != FRICREG_OK)
         return status;
     memcpy(s->yc, s->y, s->nd * sizeof(double));
-    struct march mc = {.tc = log(a_start)};
+    *mc = (struct march){.tc = log(a_start)};
+    return log(a0) > mc->tc ? advance(hb, fn, s, mc, log(a0)) : FRICREG_OK;
+}
+
+int fr_hb_nma_march_to(fricreg_hb *hb, const char *fn, struct fr_hb_nma *s, double a0)
+{
+    struct march mc;
+    return march_start(hb, fn, s, &mc, a0);
+}
+
+/* The march: the linear mode below the first slip, then each grid amplitude in turn. */
+static int backbone(fricreg_hb *hb, const char *fn, struct fr_hb_nma *s, double a0, double a1,
+                    size_t npoints)
+{
+    struct march mc;
+    int status = march_start(hb, fn, s, &mc, a0);
+    if (status != FRICREG_OK)
+        return status;
     for (size_t i = 0; i < npoints; i++) {
         double t = i + 1 == npoints ? log(a1)
                                     : log(a0) + (log(a1) - log(a0)) * (double)i / (npoints - 1);
@@ -172,9 +190,9 @@ static int backbone(fricreg_hb *hb, const char *fn, struct fr_hb_nma *s, double 
     return FRICREG_OK;
 }
 
-int fricreg_hb_nma(fricreg_hb *hb, size_t mode, int damping, double a0, double a1, size_t npoints)
+int fr_hb_nma_run(fricreg_hb *hb, const char *fn, size_t mode, int damping, double a0, double a1,
+                  size_t npoints, fr_hb_nma_backbone body)
 {
-    static const char fn[] = "nma";
     if (hb == NULL)
         return FRICREG_ENULL;
     if (hb->busy)
@@ -195,11 +213,16 @@ int fricreg_hb_nma(fricreg_hb *hb, size_t mode, int damping, double a0, double a
         return status;
     fr_hb_nma_enter(hb, s);
     fr_hb_begin(hb, 0);
-    status = fr_hb_end(hb, backbone(hb, fn, s, a0, a1, npoints));
+    status = fr_hb_end(hb, body(hb, fn, s, a0, a1, npoints));
     fr_hb_nma_leave(hb, s);
     if (status == FRICREG_OK)
         hb->err = before;
     return status;
+}
+
+int fricreg_hb_nma(fricreg_hb *hb, size_t mode, int damping, double a0, double a1, size_t npoints)
+{
+    return fr_hb_nma_run(hb, "nma", mode, damping, a0, a1, npoints, backbone);
 }
 
 size_t fricreg_hb_nma_points(const fricreg_hb *hb)

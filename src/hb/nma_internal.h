@@ -31,6 +31,9 @@ struct fr_hb_nma {
     /* the backbone: per point a, ω, ξ, then the unknowns q */
     size_t npts, cap, stride;
     double *pts;
+    /* the folds of the last continuation (nma_arclength.c): per fold a, ω, ξ */
+    size_t nfolds;
+    double *folds;
 };
 
 /* The linearized structure's mode k (elements stuck: each row of J a spring of its elements'
@@ -71,9 +74,28 @@ void fr_hb_nma_leave(fricreg_hb *hb, struct fr_hb_nma *nma);
  * FRICREG_EINTEGRATOR, FRICREG_ENONFINITE, FRICREG_ENOMEM (message recorded, with fn). */
 int fr_hb_nma_newton(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, double a);
 
+/* The extended periodic motion concept's equations at y (q, ω, ξ) and the amplitude
+ * nma->amplitude: (R) into R[nq], the amplitude and phase rows, weighted by
+ * nma->scale/nma->amplitude, into R[nq], R[nq + 1]; with jac Newton's matrix (∂/∂(q, ω, ξ))
+ * into nma->A, row-major nd x nd. Statuses as fr_hb_nma_evaluate's. */
+int fr_hb_nma_system(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, const double *y,
+                     double *R, int jac);
+
 /* The driver's factors, forces and (R) into R[nq] at the unknowns y (q, ω, ξ), with the forces'
  * Jacobians: the displacements (fr_hb_recover) of a stored point follow. */
 int fr_hb_nma_evaluate(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, const double *y,
                        double *R);
+
+/* The march from the linear mode to the amplitude a0 (nma.c): nma->yc the solution there. */
+int fr_hb_nma_march_to(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, double a0);
+
+/* A backbone's job after the linear mode (the march's in nma.c, the continuation's in
+ * nma_arclength.c), and the public calls' common frame around it (nma.c): the arguments'
+ * checks, the state (replacing the earlier backbone), the linear mode, then body with the
+ * driver set up for the mode, the call's error record kept on success. */
+typedef int (*fr_hb_nma_backbone)(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, double a0,
+                                  double a1, size_t npoints);
+int fr_hb_nma_run(fricreg_hb *hb, const char *fn, size_t mode, int damping, double a0, double a1,
+                  size_t npoints, fr_hb_nma_backbone body);
 
 #endif

@@ -118,9 +118,8 @@ int fr_hb_nma_evaluate(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, co
     return status;
 }
 
-/* The residual (weighted amplitude rows last) into R[nd], and with jac Newton's matrix. */
-static int evaluate(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, const double *y,
-                    double *R, int jac)
+int fr_hb_nma_system(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, const double *y,
+                     double *R, int jac)
 {
     size_t nq = nma->nq, nd = nma->nd, m = hb->m;
     int status = fr_hb_nma_evaluate(hb, fn, nma, y, R);
@@ -213,7 +212,7 @@ static int nma_trial(void *user, double alpha, int *accept)
     size_t nd = nma->nd;
     for (size_t j = 0; j < nd; j++)
         nma->yt[j] = nma->y[j] + alpha * nma->dy[j];
-    t->last = evaluate(t->hb, t->fn, nma, nma->yt, nma->Rt, 0);
+    t->last = fr_hb_nma_system(t->hb, t->fn, nma, nma->yt, nma->Rt, 0);
     *accept = t->last == FRICREG_OK &&
               (t->converged || fr_armijo_decrease(t->ls, t->r0, norm2(nma->Rt, nd), alpha));
     if (*accept)
@@ -222,14 +221,17 @@ static int nma_trial(void *user, double alpha, int *accept)
 }
 
 /* Backtracking along dy (Armijo's condition on |R|, as newton.c's); converged iterates take
- * the full step. */
-static int line_search(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, int converged)
+ * the full step. *flat: no trial decreased |R| (each was evaluated). */
+static int line_search(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, int converged,
+                       int *flat)
 {
     struct fr_line_search ls = {FR_ARMIJO, FR_HB_HALVINGS, NULL};
     struct nma_trial t = {hb, fn, nma, &ls, converged, FRICREG_OK, norm2(nma->R, nma->nd)};
     int accepted, status = fr_line_search(&ls, 1.0, nma_trial, &t, &accepted);
+    *flat = 0;
     if (status != FRICREG_OK || accepted)
         return status;
+    *flat = t.last == FRICREG_OK;
     return t.last != FRICREG_OK ? t.last
                                 : fr_fail(hb, FRICREG_EWORK,
                                           "%s: Newton's line search found no decrease of |R| = "
@@ -245,13 +247,14 @@ struct nma_loop {
     const char *fn;
     struct fr_hb_nma *nma;
     double r, bound;
+    int floor; /* converged at the rounding floor (nma_search) */
 };
 
 /* y evaluated (R and the Newton matrix) and measured. */
 static int nma_evaluate(struct nma_loop *l)
 {
     struct fr_hb_nma *nma = l->nma;
-    int status = evaluate(l->hb, l->fn, nma, nma->y, nma->R, 1);
+    int status = fr_hb_nma_system(l->hb, l->fn, nma, nma->y, nma->R, 1);
     if (status != FRICREG_OK)
         return status;
     double r = 0.0, qs = 0.0;
@@ -267,7 +270,21 @@ static int nma_evaluate(struct nma_loop *l)
 static int nma_converged(void *user)
 {
     struct nma_loop *l = user;
-    return l->r <= l->bound;
+    return l->r <= l->bound || l->floor;
+}
+
+/* Newton's own step dy within the tolerance of the unknowns: each q's change within tol
+ * times the largest |q|, ω's and ξ's within tol times ω. */
+static int step_within_tol(const struct nma_loop *l)
+{
+    const struct fr_hb_nma *nma = l->nma;
+    size_t nq = nma->nq;
+    double qs = 0.0, dq = 0.0, w = fabs(nma->y[nq]), tol = l->hb->tol;
+    for (size_t j = 0; j < nq; j++) {
+        qs = fmax(qs, fabs(nma->y[j]));
+        dq = fmax(dq, fabs(nma->dy[j]));
+    }
+    return dq <= tol * qs && fabs(nma->dy[nq]) <= tol * w && fabs(nma->dy[nq + 1]) <= tol * w;
 }
 
 static int nma_progress(void *user, double rinf)
@@ -283,14 +300,22 @@ static int nma_direction(void *user)
     return step(l->hb, l->fn, l->nma);
 }
 
-/* A search that accepts nothing is a failure here (line_search); the accepted y evaluated. */
+/* A search that accepts nothing is a failure here (line_search), unless Newton's own step is
+ * within the tolerance of the unknowns: then |R| is at the rounding level of the model's scale
+ * (its D_h's condition times the unit roundoff, which a tolerance on |R| relative to |q| does
+ * not see), the iterate as good as the arithmetic gives, and converged there (the loop ends
+ * on it). The accepted y evaluated. */
 static int nma_search(void *user, double *phi, double *rinf, int *accepted)
 {
     struct nma_loop *l = user;
     (void)phi;
     (void)rinf;
-    int status = line_search(l->hb, l->fn, l->nma, nma_converged(l));
+    int flat, status = line_search(l->hb, l->fn, l->nma, nma_converged(l), &flat);
     *accepted = status == FRICREG_OK;
+    if (flat && step_within_tol(l)) {
+        l->floor = 1;
+        return FRICREG_OK;
+    }
     return status == FRICREG_OK ? nma_evaluate(l) : status;
 }
 
@@ -303,7 +328,7 @@ int fr_hb_nma_newton(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, doub
         nma->scale = fmax(nma->scale, fabs(nma->y[j]));
     if (!(nma->scale > 0.0))
         nma->scale = a;
-    struct nma_loop l = {hb, fn, nma, 0.0, 0.0};
+    struct nma_loop l = {hb, fn, nma, 0.0, 0.0, 0};
     int status = nma_evaluate(&l);
     if (status != FRICREG_OK)
         return status;
