@@ -21,8 +21,8 @@ size_t fr_hb_eigenvalues_work(size_t n)
 {
     int order = (int)n, query = -1, one = 1, info = 0;
     double a = 0.0, wr = 0.0, wi = 0.0, best = 0.0;
-    dgeev_("N", "N", &order, &a, &order, &wr, &wi, NULL, &one, NULL, &one, &best, &query, &info,
-           1, 1);
+    dgeev_("N", "N", &order, &a, &order, &wr, &wi, NULL, &one, NULL, &one, &best, &query, &info, 1,
+           1);
     size_t least = 3 * n > 1 ? 3 * n : 1; /* dgeev's minimum without eigenvectors */
     return info == 0 && best > (double)least && best < (double)INT_MAX ? (size_t)best : least;
 }
