@@ -981,8 +981,8 @@ FRICREG_API int fricreg_hb_peak(fricreg_hb *hb, size_t dof, double *omega, doubl
  *  full ndof (2H + 1) of them, not the condensed q), S the Jacobian of the HB equations (HB),
  *  K − (hΩ)² M ± hΩ C per harmonic plus J^T (∂F/∂q) J from the elements' exact AFT Jacobians,
  *  ∇ the derivative on one period's coefficients (Krack & Gross Sec. 5.3; G. W. Hill 1886).
- *  Solved as the eigenproblem of its companion matrix of order 2 ndof (2H + 1) by GSL's
- *  gsl_eigen_nonsymm; of its eigenvalues, each Floquet exponent repeated at λ + i k Ω, the
+ *  Solved as the eigenproblem of its companion matrix of order 2 ndof (2H + 1) by LAPACK's
+ *  dgeev (since 1.8; GSL's gsl_eigen_nonsymm before); of its eigenvalues, each Floquet exponent repeated at λ + i k Ω, the
  *  2 ndof of least |Im λ| (within ±Ω/2) are the Floquet exponents, μ = exp(2π λ/Ω) the
  *  multipliers. A solution is stable when every exponent has Re λ 2π/Ω <= 1e-6 (|μ| <= 1 +
  *  1e-6). The elements' sliders enter through their stabilized hysteresis's Jacobian: their
