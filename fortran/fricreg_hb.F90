@@ -62,6 +62,9 @@ module fricreg_hb_m
     procedure :: nma => hb_nma
     procedure :: nma_points => hb_nma_points
     procedure :: nma_point => hb_nma_point
+    procedure :: nma_continue => hb_nma_continue
+    procedure :: nma_folds => hb_nma_folds
+    procedure :: nma_fold => hb_nma_fold
     procedure, private :: hb_shape
     final :: hb_final
   end type
@@ -728,5 +731,47 @@ contains
     if (status == FRICREG_OK) status = self%record(fricreg_hb_nma_point(self%ptr, as_size(i - 1), &
                                                      amplitude, omega, zeta, self%n, self%nc, x))
   end function hb_nma_point
+
+  !> The backbone of mode `mode` (1 <= mode <= ndof) from the modal amplitude a0 to a1 by
+  !> pseudo-arclength continuation, through its folds in the amplitude (an internal
+  !> resonance), npoints stored at equal arclength (fricreg_hb_nma_continue); damping as nma's.
+  !> Its statuses.
+  function hb_nma_continue(self, mode, a0, a1, npoints, damping) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    integer, intent(in) :: mode, npoints
+    real(c_double), intent(in) :: a0, a1
+    integer(c_int), intent(in), optional :: damping
+    integer(c_int) :: status, d
+    d = FRICREG_HB_NMA_DAMPING_MATRIX
+    if (present(damping)) d = damping
+    status = self%ready('nma_continue', 'HB driver')
+    if (status == FRICREG_OK .and. (mode < 1 .or. npoints < 0)) &
+      status = self%fail(FRICREG_EINVAL, 'nma_continue: mode must be >= 1 (Fortran counts '// &
+                         'from 1), npoints >= 0')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_hb_nma_continue(self%ptr, as_size(mode - 1), d, a0, a1, &
+                                                   as_size(npoints)))
+  end function hb_nma_continue
+
+  !> Number of folds of the last nma_continue's backbone (0 if none).
+  integer function hb_nma_folds(self)
+    class(fricreg_hb_driver), intent(in) :: self
+    hb_nma_folds = int(fricreg_hb_nma_folds(self%ptr))
+  end function hb_nma_folds
+
+  !> Fold i (1 <= i <= nma_folds()) of the last nma_continue, in arclength order: its modal
+  !> amplitude, natural frequency omega (rad/s) and damping ratio zeta (fricreg_hb_nma_fold).
+  !> Its statuses.
+  function hb_nma_fold(self, i, amplitude, omega, zeta) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    integer, intent(in) :: i
+    real(c_double), intent(inout) :: amplitude, omega, zeta
+    integer(c_int) :: status
+    status = self%ready('nma_fold', 'HB driver')
+    if (status == FRICREG_OK .and. i < 1) &
+      status = self%fail(FRICREG_EINVAL, 'nma_fold: i must be >= 1 (Fortran counts from 1)')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_hb_nma_fold(self%ptr, as_size(i - 1), amplitude, omega, zeta))
+  end function hb_nma_fold
 
 end module fricreg_hb_m

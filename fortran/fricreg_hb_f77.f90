@@ -39,6 +39,9 @@
 !   FRHBNM(H, MODE, IDAMP, A0, A1, NP, STAT)          _nma (MODE from 1)
 !   FRHBNN(H, NP, STAT)                               _nma_points
 !   FRHBNQ(H, I, A, OMEGA, ZETA, NDOF, NC, X, STAT)   _nma_point (I from 1)
+!   FRHBNC(H, MODE, IDAMP, A0, A1, NP, STAT)          _nma_continue (MODE from 1)
+!   FRHBNF(H, NF, STAT)                               _nma_folds
+!   FRHBNG(H, I, A, OMEGA, ZETA, STAT)                _nma_fold (I from 1)
 !   FRHBGL(H, OMEGA, L0, L1, NQ, IGUESS, Q0, STAT)    _continue_level (IGUESS = 1: Q0 the guess)
 !   FRHBPL(H, K, LEVEL, STAT)                         _point_level (K from 1)
 !   FRHBBL(H, I, LEVEL, STAT)                         _bifurcation_level (I from 1)
@@ -513,6 +516,53 @@ subroutine frhbnq(h, i, a, omega, zeta, ndof, nc, x, stat)
   stat = int(fricreg_hb_nma_point(fricreg_handle_to_ptr(h), int(i - 1, c_size_t), a, omega, zeta, &
                                   int(ndof, c_size_t), int(nc, c_size_t), x))
 end subroutine frhbnq
+
+!> FRHBNC(H, MODE, IDAMP, A0, A1, NP, STAT): the backbone of mode MODE (from 1) from A0 to A1
+!> by pseudo-arclength continuation, through its folds in the amplitude, NP points stored at
+!> equal arclength; IDAMP as FRHBNM's (fricreg_hb_nma_continue).
+subroutine frhbnc(h, mode, idamp, a0, a1, np, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: mode, idamp, np
+  double precision, intent(in) :: a0, a1
+  integer, intent(out) :: stat
+  if (mode < 1 .or. np < 0) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  stat = int(fricreg_hb_nma_continue(fricreg_handle_to_ptr(h), int(mode - 1, c_size_t), &
+                                     int(idamp, c_int), a0, a1, int(np, c_size_t)))
+end subroutine frhbnc
+
+!> FRHBNF(H, NF, STAT): the number of folds NF of the last FRHBNC's backbone.
+subroutine frhbnf(h, nf, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(out) :: nf, stat
+  nf = int(fricreg_hb_nma_folds(fricreg_handle_to_ptr(h)))
+  stat = int(FRICREG_OK)
+end subroutine frhbnf
+
+!> FRHBNG(H, I, A, OMEGA, ZETA, STAT): fold I (from 1) of the last FRHBNC, in arclength order:
+!> its modal amplitude A, natural frequency OMEGA and damping ratio ZETA (fricreg_hb_nma_fold).
+subroutine frhbng(h, i, a, omega, zeta, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: i
+  double precision, intent(inout) :: a, omega, zeta
+  integer, intent(out) :: stat
+  if (i < 1) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  stat = int(fricreg_hb_nma_fold(fricreg_handle_to_ptr(h), int(i - 1, c_size_t), a, omega, zeta))
+end subroutine frhbng
 
 !> The C monitor of FRHBMS: calls the caller's MONITR, whose address user holds, with copies
 !> of the arguments. Not for callers: FRHBMS installs it.

@@ -1,6 +1,7 @@
 ! SPDX-License-Identifier: GPL-3.0-or-later
-! test_hb_nma.f90 — nonlinear modes (fricreg_hb_nma) from Fortran: hb%nma, hb%nma_points,
-! hb%nma_point of the type fricreg_hb_driver.
+! test_hb_nma.f90 — nonlinear modes (fricreg_hb_nma, fricreg_hb_nma_continue) from Fortran:
+! hb%nma, hb%nma_points, hb%nma_point, hb%nma_continue, hb%nma_folds, hb%nma_fold of the type
+! fricreg_hb_driver.
 !
 ! Values: the oscillator m = 1, k = 1 with one Jenkins element kt = 2, mu N = 3 at H = 1 (the
 ! C suite's tests/test_hb_nma.c derives its closed form): stuck for a <= 1.5, omega^2 = 3,
@@ -45,6 +46,39 @@ program test_hb_nma
   call check_status(hb%nma(1, 0.5_c_double, 2.0_c_double, 4, FRICREG_HB_NMA_DAMPING_MODAL), &
                     FRICREG_OK, 'modal damping')
   call check(hb%nma_points() == 4, 'four points')
+
+  ! The backbone by arclength: no fold on this one, each stored point a solution
+  call check_status(hb%nma_continue(1, 0.5_c_double, 200.0_c_double, 10), FRICREG_OK, &
+                    'nma_continue')
+  call check(hb%nma_points() == 10 .and. hb%nma_folds() == 0, 'ten points, no fold')
+  do i = 1, hb%nma_points()
+    call check_status(hb%nma_point(i, a, omega, zeta), FRICREG_OK, 'nma_point, continued')
+    w2 = 3.0_c_double
+    if (a > 1.5_c_double) then
+      beta = acos(1.0_c_double - 3.0_c_double / a)
+      w2 = 1.0_c_double + 2.0_c_double / pi * (beta - 0.5_c_double * sin(2.0_c_double * beta))
+    end if
+    call check_close(omega * omega, w2, 1e-9_c_double * w2, 'omega^2 continued, closed form')
+  end do
+  call check_status(hb%nma_fold(1, a, omega, zeta), FRICREG_EINVAL, 'fold 1 of 0')
+  call hb%destroy()
+
+  ! tests/test_hb_nma_fold.c's two masses (k1 = 1, kc = 0.25, k2 = 0.2; kt = 10, mu N = 1 on
+  ! dof 2) at H = 3: 3 omega meets the second mode, an S in a(omega) with two folds
+  call check_status(hb%create(2, 1, 3), FRICREG_OK, 'create, two masses')
+  call check_status(hb%set_stiffness(reshape([1.25_c_double, -0.25_c_double, -0.25_c_double, &
+                                              0.45_c_double], [2, 2])), FRICREG_OK, 'K')
+  call check_status(hb%set_elements(reshape([0.0_c_double, 1.0_c_double], [1, 2]), &
+                                    [10.0_c_double], [1.0_c_double]), FRICREG_OK, 'element')
+  call check_status(hb%nma_continue(1, 0.05_c_double, 1e4_c_double, 60), FRICREG_OK, &
+                    'nma_continue through the folds')
+  call check(hb%nma_folds() == 2, 'two folds')
+  call check_status(hb%nma_fold(1, a, omega, zeta), FRICREG_OK, 'fold 1')
+  call check_close(a, 4.4324_c_double, 2e-3_c_double * 4.4324_c_double, 'fold 1 amplitude')
+  call check_status(hb%nma_fold(2, a, omega, zeta), FRICREG_OK, 'fold 2')
+  call check_close(a, 4.4168_c_double, 2e-3_c_double * 4.4168_c_double, 'fold 2 amplitude')
+  call check_status(hb%nma_fold(0, a, omega, zeta), FRICREG_EINVAL, 'fold 0')
+  call check_status(hb%nma_fold(3, a, omega, zeta), FRICREG_EINVAL, 'fold 3 of 2')
   call hb%destroy()
   call finish('test_hb_nma')
 end program test_hb_nma
