@@ -226,7 +226,7 @@ program test_sim
   call sim%destroy()
   call check_status(sim%run(1.0_c_double), FRICREG_ENULL, 'run after destroy')
   call check(sim%ndof() == 0, 'ndof 0 after destroy')
-  deallocate (D, Derr) ! the main program's arrays are never freed: LeakSanitizer would report it
+  deallocate (D, Derr, kinds) ! the main program's arrays are never freed: LeakSanitizer would report it
   call finish('test_sim')
 
 end program test_sim
