@@ -30,6 +30,7 @@
  *   contact_3d       3   kt, mu, kn, n0, gap (5)                    w (2)
  *   iwan             1   k[ns], phi[ns] (2 ns)                      w[ns]
  *   iwan_2d          2   k[ns], phi[ns] (2 ns)                      w[2 ns], slider s at 2 s
+ *   iwan_3d          3   k[ns], phi[ns] (2 ns)                      w[3 ns], slider s at 3 s
  *   iwan_normal      2   k[ns], mu[ns], kn, n0, gap (2 ns + 3)      w[ns]
  *
  * Every one is ns Jenkins sliders in parallel (ns = 1 but for the Iwan types; their ns is
@@ -99,7 +100,8 @@ enum fricreg_element_code {
     FRICREG_ELEMENT_IWAN_NORMAL = 5,    /**< iwan_normal */
     FRICREG_ELEMENT_JENKINS_3D = 6,     /**< jenkins_3d */
     FRICREG_ELEMENT_JENKINS_NORMAL = 7, /**< jenkins_normal */
-    FRICREG_ELEMENT_IWAN_2D = 8         /**< iwan_2d */
+    FRICREG_ELEMENT_IWAN_2D = 8,        /**< iwan_2d */
+    FRICREG_ELEMENT_IWAN_3D = 9         /**< iwan_3d (the ball of jenkins_3d per slider) */
 };
 
 /** The type called name (the table at the top of this header; the Iwan types with ns = 1).
@@ -117,8 +119,9 @@ FRICREG_API size_t fricreg_element_count(void);
  *  Since 1.8. */
 FRICREG_API const fricreg_element_type *fricreg_element_at(size_t index);
 
-/** The type of type's family with ns sliders in parallel: for iwan, iwan_2d and iwan_normal,
- *  1 <= ns <= FRICREG_ELEMENT_MAX_SLIDERS; for the others ns = 1 only (the type itself).
+/** The type of type's family with ns sliders in parallel: for iwan, iwan_2d, iwan_3d and
+ *  iwan_normal, 1 <= ns <= FRICREG_ELEMENT_MAX_SLIDERS; for the others ns = 1 only (the type
+ *  itself).
  *  Returns NULL if type is NULL or ns is out of that range. Since 1.8. */
 FRICREG_API const fricreg_element_type *fricreg_element_sliders(const fricreg_element_type *type,
                                                                 size_t ns);
@@ -207,7 +210,7 @@ FRICREG_API int fricreg_element_explain(const fricreg_element_type *type, const 
  *  the delta's weight beta, on a grid whose smallest breakpoint is resolution phi_max.
  *
  *  k[ns], phi[ns]  out: the sliders' stiffnesses and slip forces, params[0 .. 2 ns - 1] of
- *                  iwan or iwan_2d (iwan_normal's mu_s are phi_s / N at the normal force N
+ *                  iwan, iwan_2d or iwan_3d (iwan_normal's mu_s are phi_s / N at the normal force N
  *                  the model was fitted at). Written only on success.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if k or phi is NULL; FRICREG_ENONFINITE if a parameter is

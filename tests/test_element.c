@@ -71,9 +71,11 @@ static const struct {
     const char *name;
     int dim;
     size_t ns, nparams, nstate;
-} TYPES[] = {{"jenkins", 1, 1, 2, 1},        {"jenkins_2d", 2, 1, 2, 2}, {"jenkins_3d", 3, 1, 2, 3},
-             {"jenkins_normal", 2, 1, 5, 1}, {"contact_3d", 3, 1, 5, 2}, {"iwan", 1, 3, 6, 3},
-             {"iwan_2d", 2, 3, 6, 6},        {"iwan_normal", 2, 3, 9, 3}};
+} TYPES[] = {{"jenkins", 1, 1, 2, 1},    {"jenkins_2d", 2, 1, 2, 2},
+             {"jenkins_3d", 3, 1, 2, 3}, {"jenkins_normal", 2, 1, 5, 1},
+             {"contact_3d", 3, 1, 5, 2}, {"iwan", 1, 3, 6, 3},
+             {"iwan_2d", 2, 3, 6, 6},    {"iwan_normal", 2, 3, 9, 3},
+             {"iwan_3d", 3, 3, 6, 9}};
 #define NTYPES (sizeof TYPES / sizeof TYPES[0])
 
 START_TEST(test_table)
@@ -87,12 +89,14 @@ START_TEST(test_table)
         ck_assert_uint_eq(fricreg_element_nsliders(t), TYPES[i].ns);
     }
     /* the list: every type once, found by its name; the F77 codes of fricreg_element_f77.f90 */
-    static const char *const codes[] = {"jenkins",     "jenkins_2d", "contact_3d",     "iwan",
-                                        "iwan_normal", "jenkins_3d", "jenkins_normal", "iwan_2d"};
+    static const char *const codes[] = {"jenkins",        "jenkins_2d",  "contact_3d",
+                                        "iwan",           "iwan_normal", "jenkins_3d",
+                                        "jenkins_normal", "iwan_2d",     "iwan_3d"};
     static const int code_of[] = {FRICREG_ELEMENT_JENKINS,        FRICREG_ELEMENT_JENKINS_2D,
                                   FRICREG_ELEMENT_CONTACT_3D,     FRICREG_ELEMENT_IWAN,
                                   FRICREG_ELEMENT_IWAN_NORMAL,    FRICREG_ELEMENT_JENKINS_3D,
-                                  FRICREG_ELEMENT_JENKINS_NORMAL, FRICREG_ELEMENT_IWAN_2D};
+                                  FRICREG_ELEMENT_JENKINS_NORMAL, FRICREG_ELEMENT_IWAN_2D,
+                                  FRICREG_ELEMENT_IWAN_3D};
     ck_assert_uint_ge(fricreg_element_count(), NTYPES);
     for (size_t i = 0; i < sizeof codes / sizeof codes[0]; i++) {
         ck_assert_str_eq(fricreg_element_name(fricreg_element_at(i)), codes[i]);
@@ -589,6 +593,56 @@ START_TEST(test_jenkins_3d_plane)
 }
 END_TEST
 
+/* iwan_3d on u = (u1, u2, 0) is iwan_2d on (u1, u2), bit for bit (the ball's norm of
+ * (d1, d2, 0) is the disk's exactly: hypot(r, 0) = r), with f3 = 0 and each slider's third
+ * state component 0; on a tilted plane, f and the sliders' state stay in it. */
+START_TEST(test_iwan_3d)
+{
+    const size_t ns = 5;
+    const fricreg_element_type *t3 = type_of("iwan_3d", ns), *t2 = type_of("iwan_2d", ns);
+    double p[2 * 5], w3[3 * 5] = {0.0}, w2[2 * 5] = {0.0};
+    unsigned long seed = 33;
+    for (size_t s = 0; s < ns; s++) {
+        p[s] = uniform(&seed, 0.5, 3.0);
+        p[ns + s] = uniform(&seed, 0.05, 0.4);
+    }
+    double u[3] = {0.0, 0.0, 0.0};
+    for (int step = 0; step < 300; step++) {
+        u[0] += uniform(&seed, -0.3, 0.3);
+        u[1] += uniform(&seed, -0.3, 0.3);
+        double f3[3], t3m[9], o3[3 * 5], f2[2], t2m[4], o2[2 * 5];
+        QUIET_OK(fricreg_element_eval(t3, p, w3, u, f3, t3m, NULL, o3));
+        QUIET_OK(fricreg_element_eval(t2, p, w2, u, f2, t2m, NULL, o2));
+        QUIET_CHECK(f3[0] == f2[0] && f3[1] == f2[1] && f3[2] == 0.0);
+        QUIET_CHECK(t3m[0] == t2m[0] && t3m[1] == t2m[1] && t3m[3] == t2m[2] && t3m[4] == t2m[3]);
+        for (size_t s = 0; s < ns; s++)
+            QUIET_CHECK(o3[3 * s] == o2[2 * s] && o3[3 * s + 1] == o2[2 * s + 1] &&
+                        o3[3 * s + 2] == 0.0);
+        memcpy(w3, o3, sizeof w3);
+        memcpy(w2, o2, sizeof w2);
+    }
+    /* a tilted plane through 0, normal nrm: the sums of sliders kept in it */
+    const double nrm[3] = {0.48, -0.6, 0.64}; /* |nrm| = 1 */
+    const double e1[3] = {0.8, 0.64, 0.0},
+                 e2[3] = {nrm[1] * e1[2] - nrm[2] * e1[1], nrm[2] * e1[0] - nrm[0] * e1[2],
+                          nrm[0] * e1[1] - nrm[1] * e1[0]};
+    memset(w3, 0, sizeof w3);
+    for (int step = 0; step < 200; step++) {
+        double x = uniform(&seed, -1.0, 1.0), y = uniform(&seed, -1.0, 1.0), f[3], o[3 * 5];
+        for (int a = 0; a < 3; a++)
+            u[a] = x * e1[a] + y * e2[a];
+        QUIET_OK(fricreg_element_eval(t3, p, w3, u, f, NULL, NULL, o));
+        double fn = f[0] * nrm[0] + f[1] * nrm[1] + f[2] * nrm[2];
+        QUIET_ASSERT(fabs(fn) <= 1e-14, "out of plane: f.n = %g", fn);
+        for (size_t s = 0; s < ns; s++) {
+            double wn = o[3 * s] * nrm[0] + o[3 * s + 1] * nrm[1] + o[3 * s + 2] * nrm[2];
+            QUIET_ASSERT(fabs(wn) <= 1e-14, "slider %zu out of plane: w.n = %g", s, wn);
+        }
+        memcpy(w3, o, sizeof w3);
+    }
+}
+END_TEST
+
 static Suite *element_suite(void)
 {
     Suite *s = suite_create("element");
@@ -603,6 +657,7 @@ static Suite *element_suite(void)
     tcase_add_test(tc, test_errors);
     tcase_add_test(tc, test_contact_3d);
     tcase_add_test(tc, test_jenkins_3d_plane);
+    tcase_add_test(tc, test_iwan_3d);
     suite_add_tcase(s, tc);
     return s;
 }

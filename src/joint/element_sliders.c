@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* element_sliders.c — the element types made of Jenkins sliders (fricreg_element.h): jenkins,
- * jenkins_2d, jenkins_3d, jenkins_normal, contact_3d and the Iwan families, all ns sliders in
- * parallel on the tangential components, each slider slider.c's return mapping, with or
- * without the normal law of lift-off. The sums run over the sliders in order, as fricreg_iwan
+ * jenkins_2d, jenkins_3d, jenkins_normal, contact_3d and the Iwan families (iwan, iwan_2d,
+ * iwan_3d, iwan_normal), all ns sliders in parallel on the tangential components, each slider
+ * slider.c's return mapping, with or without the normal law of lift-off. The sums run over the sliders in order, as fricreg_iwan
  * and the structure's elements sum them, so that their answers agree bit for bit. */
 #include <math.h>
 #include <stdio.h>
@@ -244,4 +244,5 @@ FR_SLIDER_KIND(jenkins_normal, 2, 1, 0, params_normal, state_1)
 FR_SLIDER_KIND(contact_3d, 3, 1, 0, params_normal, state_2)
 FR_SLIDER_KIND(iwan, 1, 0, 1, params_plain, state_1)
 FR_SLIDER_KIND(iwan_2d, 2, 0, 1, params_plain, state_2)
+FR_SLIDER_KIND(iwan_3d, 3, 0, 1, params_plain, state_3)
 FR_SLIDER_KIND(iwan_normal, 2, 1, 1, params_normal, state_1)
