@@ -973,44 +973,55 @@ FRICREG_API int fricreg_hb_peak(fricreg_hb *hb, size_t dof, double *omega, doubl
  *  fricreg_hb_solve, or the last point of fricreg_hb_continue) rather than a stored point. */
 #define FRICREG_HB_SOLUTION ((size_t)-1)
 
-/** Compute the stability of every solution from now on (enable = 1), by Hill's method, or stop
- *  (0, the default). Since 1.7 (FRICREG_1.7).
+/** Compute the stability of every solution from now on (enable = 1), or stop (0, the default),
+ *  by the method of fricreg_hb_set_stability_method: the exact monodromy of the orbit where
+ *  every element is piecewise linear, Hill's method otherwise. Since 1.7 (FRICREG_1.7).
  *
- *  A perturbation y(t) = e^{λt} p(t), p periodic, of a solution solves the quadratic
- *  eigenproblem (λ² M⊗I + λ (C⊗I + 2 M⊗∇) + S) P = 0 in the Fourier coefficients P of p (the
- *  full ndof (2H + 1) of them, not the condensed q), S the Jacobian of the HB equations (HB),
- *  K − (hΩ)² M ± hΩ C per harmonic plus J^T (∂F/∂q) J from the elements' exact AFT Jacobians,
- *  ∇ the derivative on one period's coefficients (Krack & Gross Sec. 5.3; G. W. Hill 1886).
- *  Solved as the eigenproblem of its companion matrix of order 2 ndof (2H + 1) by LAPACK's
- *  dgeev (since 1.8; GSL's gsl_eigen_nonsymm before); of its eigenvalues, each Floquet exponent repeated at λ + i k Ω, the
- *  2 ndof of least |Im λ| (within ±Ω/2) are the Floquet exponents, μ = exp(2π λ/Ω) the
- *  multipliers. A solution is stable when every exponent has Re λ 2π/Ω <= 1e-6 (|μ| <= 1 +
- *  1e-6). The elements' sliders enter through their stabilized hysteresis's Jacobian: their
- *  offsets, forgotten once they slip, are no state of their own (an element stuck over a
- *  whole period would have a neutral one). A real negative multiplier appears as the pair
- *  Re λ ± iΩ/2; those of Im λ > 0 are selected before their conjugates, so each is counted
- *  once (two of them, as after a pair's collision on the negative real axis, give four
- *  exponents of one |Im λ|, of which |Im λ| alone could take the smaller twice); only a lone
- *  one is completed by its conjugate, counted twice.
+ *  Hill's method (the only one before 1.8). A perturbation y(t) = e^{λt} p(t), p periodic, of
+ *  a solution solves the quadratic eigenproblem (λ² M⊗I + λ (C⊗I + 2 M⊗∇) + S) P = 0 in the
+ *  Fourier coefficients P of p (the full ndof (2H + 1) of them, not the condensed q), S the
+ *  Jacobian of the HB equations (HB), K − (hΩ)² M ± hΩ C per harmonic plus J^T (∂F/∂q) J from
+ *  the elements' exact AFT Jacobians, ∇ the derivative on one period's coefficients (Krack &
+ *  Gross Sec. 5.3; G. W. Hill 1886). Solved as the eigenproblem of its companion matrix of
+ *  order 2 ndof (2H + 1) by LAPACK's dgeev (since 1.8; GSL's gsl_eigen_nonsymm before); of
+ *  its eigenvalues, each Floquet exponent repeated at λ + i k Ω, the 2 ndof of least |Im λ|
+ *  (within ±Ω/2) are the Floquet exponents, μ = exp(2π λ/Ω) the multipliers. The elements'
+ *  sliders enter through their stabilized hysteresis's Jacobian: their offsets, forgotten once
+ *  they slip, are no state of their own, so beyond the verdict its multipliers are not the
+ *  orbit's (on a Jenkins pair the largest is off by up to 0.44). A real negative multiplier
+ *  appears as the pair Re λ ± iΩ/2; those of Im λ > 0 are selected before their conjugates, so
+ *  each is counted once (two of them, as after a pair's collision on the negative real axis,
+ *  give four exponents of one |Im λ|, of which |Im λ| alone could take the smaller twice);
+ *  only a lone one is completed by its conjugate, counted twice. Cost per solution: about
+ *  10 (2 ndof (2H + 1))³ flops, with ndof (2H + 1) <= FRICREG_HB_MAX_HILL; its matrices, 4
+ *  (ndof (2H + 1))² + O(ndof (2H + 1)) doubles.
  *
- *  Cost per solution: the companion's O((ndof H)²) entries and GSL's QR, about 10 (2 ndof
- *  (2H + 1))³ flops (measured against a continuation point: bench/hb_stability.c, and
- *  docs/joints.md). Dense or sparse models (the companion itself is dense), with ndof (2H + 1)
- *  <= FRICREG_HB_MAX_HILL. M must be nonsingular (checked at each
- *  solution: FRICREG_ESINGULAR from the solve). Allocates the companion matrix and GSL's
- *  workspace here, 4 (ndof (2H + 1))² + O(ndof (2H + 1)) doubles (freed by enable = 0), and
- *  each stored point then keeps 4 + 4 ndof numbers; the solves allocate nothing more. Enabling
- *  or disabling drops the stored points and the last solution (they have no stability).
+ *  The exact monodromy (since 1.8), for 1-D Jenkins and Iwan elements without lift-off: between
+ *  the sliders' switches, which the exact AFT locates on the solution, the equations of
+ *  motion linearized on the state (x, x', the offsets of the sliders that switch) are linear
+ *  and time-invariant, so the monodromy matrix is the product Φ = e^{A_K Δt_K} S_K ⋯ S_1
+ *  e^{A_1 Δt_1} of the pieces' exponentials (Padé, scaling and squaring) and the saltation
+ *  matrices S_k of the slip onsets, where a slider's offset starts following its element's
+ *  displacement (R. I. Leine, H. Nijmeijer 2004, Ch. 7). A slider stuck over the whole period
+ *  has a neutral multiplier 1, which is left out (like HB's offset ambiguity); one that slips
+ *  once adds a 0, dropped. The 2 ndof left are the multipliers μ, λ = log μ Ω/2π the exponents
+ *  (Im λ in (−Ω/2, Ω/2]). They are the orbit's own multipliers: a time integration's
+ *  monodromy converges to them (tests/test_hb_stability.c). Cost per solution: a few (2 ndof +
+ *  sliders)³ flops per switch, M^-1 applied once; no size limit but memory, 14 (2 ndof +
+ *  sliders)² doubles.
  *
- *  Stability needs GSL's QR to converge: GSL 2.7 reports a QR that does not (30 sweeps per
- *  eigenvalue) through its error handler too, and has no variant that only returns the
- *  status; the balanced, finite matrix here has not been seen to fail, but a host that keeps
- *  GSL's default (aborting) handler should know. Where the handler returns (a handler of the
- *  host's, or gsl_set_error_handler_off), the solve or continuation returns
+ *  Either way a solution is stable when every multiplier has |μ| <= 1 + 1e-6 (Re λ 2π/Ω <=
+ *  1e-6), and each stored point then keeps 4 + 4 ndof numbers. The workspace of the method in
+ *  force is allocated here, so the solves allocate nothing; elements set later that change the
+ *  automatic choice have the other's made at the next solution. M must be nonsingular (checked
+ *  at each solution: FRICREG_ESINGULAR from the solve). Enabling or disabling drops the stored
+ *  points and the last solution (they have no stability). LAPACK reports a QR iteration that
+ *  does not converge by a status, which the solve or continuation returns as
  *  FRICREG_EINTEGRATOR with a message naming Ω, the kept solution and points untouched.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if hb is NULL; FRICREG_EINVAL if enable is not 0 or 1, or
- *  ndof (2H + 1) > FRICREG_HB_MAX_HILL; FRICREG_ENOMEM (nothing changed). */
+ *  the method in force is Hill's and ndof (2H + 1) > FRICREG_HB_MAX_HILL (the same from a
+ *  solve where the elements changed since); FRICREG_ENOMEM (nothing changed). */
 FRICREG_API int fricreg_hb_set_stability(fricreg_hb *hb, int enable);
 
 /** The stability of a stored continuation point, or of the last solution.
@@ -1025,6 +1036,38 @@ FRICREG_API int fricreg_hb_set_stability(fricreg_hb *hb, int enable);
  *  stability is off, k is out of range, or (FRICREG_HB_SOLUTION) there is no solution (none
  *  since stability was turned on, or the model changed since). Since 1.7 (FRICREG_1.7). */
 FRICREG_API int fricreg_hb_point_stability(fricreg_hb *hb, size_t k, int *stable, double *mu_max);
+
+/** How fricreg_hb_set_stability computes a solution's stability. */
+enum fricreg_hb_stability_method {
+    FRICREG_HB_STABILITY_AUTO = 0,     /**< the exact monodromy where every element is piecewise
+                                            linear (1-D Jenkins and Iwan elements without
+                                            lift-off), Hill's method otherwise (the default) */
+    FRICREG_HB_STABILITY_HILL = 1,     /**< Hill's method, for any element */
+    FRICREG_HB_STABILITY_MONODROMY = 2 /**< the exact monodromy of the orbit */
+};
+
+/** Choose how the stability of the next solutions is computed (fricreg_hb_set_stability);
+ *  points already stored keep theirs. The default, FRICREG_HB_STABILITY_AUTO, takes the exact
+ *  monodromy where the elements allow it, which differs from 1.7's Hill's method beyond the
+ *  verdict (the multipliers are the orbit's own); FRICREG_HB_STABILITY_HILL gives 1.7's
+ *  results. Since 1.8 (FRICREG_1.8).
+ *
+ *  method   enum fricreg_hb_stability_method.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb is NULL; FRICREG_EINVAL if method is none of the
+ *  enum, or when called from the monitor during a solve. A solve with
+ *  FRICREG_HB_STABILITY_MONODROMY on elements that are not piecewise linear (lift-off, 3-D
+ *  contact) returns FRICREG_EINVAL with a message. */
+FRICREG_API int fricreg_hb_set_stability_method(fricreg_hb *hb, int method);
+
+/** The method that computes the next solution's stability: FRICREG_HB_STABILITY_HILL or
+ *  FRICREG_HB_STABILITY_MONODROMY, the automatic choice made for the elements set now (whether
+ *  stability is on or not). Since 1.8 (FRICREG_1.8).
+ *
+ *  method   out: enum fricreg_hb_stability_method, never FRICREG_HB_STABILITY_AUTO.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb or method is NULL. */
+FRICREG_API int fricreg_hb_get_stability_method(fricreg_hb *hb, int *method);
 
 /** The kinds of bifurcation fricreg_hb_continue locates along a branch. */
 enum fricreg_hb_bifurcation_type {

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "bifurcations.h"
+#include "stability_method.h"
 
 size_t fricreg_hb_bifurcations(const fricreg_hb *hb)
 {
@@ -84,7 +85,7 @@ static int test_at(fricreg_hb *hb, struct fr_hb_branch *b, const double *ya, con
     *omega = fr_hb_branch_omega(b, hb->qw[nq] * b->ws);
     double tx[2], *x = t.kind >= 0 ? hb->hill_x : tx;
     if (t.kind >= 0)
-        status = fr_hb_hill(hb, fn, *omega, x + 2);
+        status = fr_hb_stability(hb, fn, *omega, x + 2);
     else if ((status = fr_hb_tangent(hb, fn, hb->rw)) == FRICREG_OK) {
         x[0] = hb->rw[nq];
         x[1] = fr_hb_det_sign(hb, ld);

@@ -11,6 +11,7 @@
 #include "elements.h"
 #include "hb_internal.h"
 #include "rows.h"
+#include "stability_method.h"
 
 #define MAX_DENSE_DOFS 4096
 #define MAX_DOFS ((size_t)1 << 24)
@@ -85,7 +86,7 @@ void fricreg_hb_free(fricreg_hb *hb)
     free(hb->qpts);
     free(hb->xpts);
     free(hb->bifs);
-    fr_hb_hill_free(hb);
+    fr_hb_stability_free(hb);
     fricreg_aft_free(hb->aft);
     fricreg_aft_free(hb->aft_half);
     free(hb->half);

@@ -27,7 +27,12 @@
  * iteration bound ending it). */
 #define FR_HB_HALVINGS 10
 
-struct fr_hb_lu; /* sparse.c: one harmonic's LU factor */
+/* Re λ T above which a solution is unstable (log |μ|, Hill's and the monodromy's alike): the
+ * multipliers' rounding, far below the damping of any model worth a stability verdict. */
+#define FR_HB_STABLE_TOL 1e-6
+
+struct fr_hb_lu;   /* sparse.c: one harmonic's LU factor */
+struct fr_hb_mono; /* monodromy.c: the exact monodromy's workspace */
 
 struct fricreg_hb {
     size_t n, m;       /* dofs, rows of J (the condensation's coordinates) */
@@ -119,6 +124,7 @@ struct fricreg_hb {
     double *tn;     /* [nq + 1] continuation: the tangent at the corrected point */
     double *dir;    /* [nq + 1] continuation: the predictor's direction and border */
     double *yl;     /* [nq + 1] continuation: the corrector's line search base */
+    double *qjac;   /* [nq] the q of the last residual with Jacobians (the monodromy's orbit) */
     int *piv2;      /* [nq + 1] A's row interchanges (lu.c: LAPACK's) */
     int iterations; /* of the last Newton solve */
 
@@ -129,16 +135,22 @@ struct fricreg_hb {
     double *qsol;                /* [nq] */
     double *xsol;                /* [XW] */
 
-    /* Hill's method (stability.c), on with fricreg_hb_set_stability (dense models): N = n nc
-     * Fourier coefficients of x; the companion matrix of the quadratic eigenproblem [2N 2N],
-     * its eigenvalues [2N] complex, LAPACK's workspace; M's LU [n n] and pivots [n], a column [n] */
+    /* Stability, on with fricreg_hb_set_stability. Hill's method (stability.c), its matrices
+     * made at the first solution that needs them: N = n nc Fourier coefficients of x; the
+     * companion matrix of the quadratic eigenproblem [2N 2N], its eigenvalues [2N] complex,
+     * LAPACK's workspace; M's LU [n n] and pivots [n], a column [n] */
     int stability;
     gsl_matrix *hill;
     double *hill_eval;
     double *hill_work; /* [hill_lwork] LAPACK dgeev's workspace, then [2N2] its wr, wi */
     size_t hill_lwork;
-    double *hill_mlu, *hill_col, *hill_x; /* hill_x [XW]: a trial point's, for bifurcations */
+    double *hill_mlu, *hill_col;
+    double *hill_x; /* [XW]: a trial point's stability, for bifurcations (xsol's block) */
     int *hill_piv;
+    /* how (enum fricreg_hb_stability_method, stability_method.c): Hill's, or the exact monodromy
+     * (monodromy.c) with its workspace, grown at the first solution that needs more */
+    int stability_method;
+    struct fr_hb_mono *mono;
 
     /* the continuation's points: [npts (1 + n)], Ω then the n RMS values; each point's
      * unknowns (q, then Ω) in qpts [npts (nq + 1)], for fricreg_hb_peak; the branch's scales,
@@ -324,8 +336,9 @@ void fr_hb_recover(const fricreg_hb *hb, double *x);
 
 /* Hill's method at the solution whose element Jacobians jq are in hb (the last residual's, with
  * jac) at omega: into out[2n + 2] stable (1.0/0.0), the largest |Floquet multiplier| and the 2n
- * exponents (re, im). FRICREG_OK, FRICREG_ESINGULAR (M), FRICREG_ENONFINITE, FRICREG_EINTEGRATOR
- * (GSL's QR), messages recorded with fn. */
+ * exponents (re, im); its matrices made at the first call. FRICREG_OK, FRICREG_EINVAL (ndof
+ * (2H + 1) > FRICREG_HB_MAX_HILL), FRICREG_ENOMEM, FRICREG_ESINGULAR (M), FRICREG_ENONFINITE,
+ * FRICREG_EINTEGRATOR (LAPACK's QR), messages recorded with fn. */
 int fr_hb_hill(fricreg_hb *hb, const char *fn, double omega, double *out);
 
 /* Whether some exponent of exps[4n] (re, im) at omega of kind which (0 real, 1 at ±Ω/2, 2
@@ -333,8 +346,9 @@ int fr_hb_hill(fricreg_hb *hb, const char *fn, double omega, double *out);
 int fr_hb_hill_unstable(const fricreg_hb *hb, double omega, const double *exps, int which);
 int fr_hb_hill_crossing(const fricreg_hb *hb, double omega, const double *exps);
 
-/* The workspaces of Hill's method allocated (on) or freed (off). */
-int fr_hb_hill_alloc(fricreg_hb *hb);
+/* Hill's matrices made (if not yet): FRICREG_OK or FRICREG_ENOMEM (message recorded, with fn;
+ * nothing allocated then); freed (a second call does nothing). */
+int fr_hb_hill_reserve(fricreg_hb *hb, const char *fn);
 void fr_hb_hill_free(fricreg_hb *hb);
 
 /* Each dof's RMS over a period from the forces fq at the factored Ω, into rms[n]. */

@@ -9,6 +9,7 @@
 #include "base/line_search.h"
 #include "base/newton_loop.h"
 #include "hb_internal.h"
+#include "stability_method.h"
 
 static double norm2(const double *v, size_t n)
 {
@@ -212,7 +213,7 @@ int fr_hb_solve_at(fricreg_hb *hb, const char *fn, double omega, const double *q
         return status;
     /* the stability at the solution (the Jacobians jq of its last residual) */
     if (status == FRICREG_OK && hb->stability)
-        status = fr_hb_hill(hb, fn, omega, hb->xsol + 2);
+        status = fr_hb_stability(hb, fn, omega, hb->xsol + 2);
     if (status != FRICREG_OK)
         return status;
     memcpy(hb->qsol, hb->qw, hb->nq * sizeof(double));

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "points.h"
+#include "stability_method.h"
 
 size_t fricreg_hb_points(const fricreg_hb *hb)
 {
@@ -87,7 +88,7 @@ int fr_hb_store_point(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, do
     int status = hb->npts < hb->cap ? FRICREG_OK : fr_hb_points_reserve(hb, 2 * hb->cap);
     if (status != FRICREG_OK)
         return status;
-    if (hb->stability && !hill_done && (status = fr_hb_hill(hb, fn, omega, hb->xsol + 2)))
+    if (hb->stability && !hill_done && (status = fr_hb_stability(hb, fn, omega, hb->xsol + 2)))
         return status;
     double *x = hb->xpts + hb->npts * xw;
     x[0] = tw;

@@ -124,6 +124,8 @@ int fr_hb_residual(fricreg_hb *hb, const char *fn, const double *q, double *R, i
             return fr_fail(hb, status, "%s: the AFT of element %zu failed: %s", fn, e,
                            fricreg_aft_errmsg(hb->aft));
     }
+    if (jac) /* the orbit whose Jacobians these are, for the monodromy */
+        memmove(hb->qjac, q, hb->nq * sizeof *q);
     fr_hb_apply(hb, hb->G, hb->ql, fr_hb_load(hb), hb->fq, R);
     for (size_t j = 0; j < hb->nq; j++)
         R[j] += q[j];

@@ -34,7 +34,7 @@ int fr_hb_rows_alloc(const fricreg_hb *hb, size_t cap, struct fr_hb_rows *b)
     b->Z = alloc_doubles(2 * n * (cap + 1) + 2 * n);
     b->G = alloc_doubles(4 * H1 * cap * cap + 4 * H1 * cap);
     b->fq = alloc_doubles(nq + cap * (cap / me) * nc * nc + (nq + 1) * (nq + 1) + 12 * (nq + 1) +
-                          nq);
+                          2 * nq);
     b->piv2 = malloc((nq + 1) * sizeof *b->piv2);
     if (!b->J || !b->Y || !b->Z || !b->G || !b->fq || !b->piv2) {
         fr_hb_rows_free(b);
@@ -96,4 +96,5 @@ void fr_hb_rows_set(fricreg_hb *hb, size_t rpe)
     hb->dir = hb->tn + (nq + 1);
     hb->yl = hb->dir + (nq + 1);
     hb->qsol = hb->yl + (nq + 1);
+    hb->qjac = hb->qsol + nq;
 }

@@ -27,29 +27,25 @@
 #include "base/gsl_mem.h"
 #include "hb_internal.h"
 
-/* Re λ T above which a solution is unstable: the multipliers' rounding, far below the damping
- * of any model worth a stability verdict. */
-#define STABLE_TOL 1e-6
-
 static const double TWO_PI = 6.283185307179586;
 
-int fr_hb_hill_alloc(fricreg_hb *hb)
+int fr_hb_hill_reserve(fricreg_hb *hb, const char *fn)
 {
     size_t n = hb->n, N2 = 2 * n * hb->nc;
-    fr_hb_hill_free(hb);
+    if (hb->hill != NULL)
+        return FRICREG_OK;
     hb->hill = fr_gsl_matrix_new(N2, N2);
     hb->hill_eval = malloc(2 * N2 * sizeof(double));
     hb->hill_lwork = fr_hb_eigenvalues_work(N2);
     hb->hill_work = malloc((hb->hill_lwork + 2 * N2) * sizeof(double));
-    hb->hill_mlu = malloc((n * n + n + 2 * (4 + 4 * n)) * sizeof(double));
+    hb->hill_mlu = malloc((n * n + n) * sizeof(double));
     hb->hill_piv = malloc(n * sizeof *hb->hill_piv);
     if (!hb->hill || !hb->hill_eval || !hb->hill_work || !hb->hill_mlu || !hb->hill_piv) {
         fr_hb_hill_free(hb);
-        return FRICREG_ENOMEM;
+        return fr_fail(hb, FRICREG_ENOMEM,
+                       "%s: stability: no memory for Hill's matrix of order %zu", fn, N2);
     }
     hb->hill_col = hb->hill_mlu + n * n;
-    hb->xsol = hb->hill_col + n;
-    hb->hill_x = hb->xsol + 4 + 4 * n;
     return FRICREG_OK;
 }
 
@@ -61,7 +57,7 @@ void fr_hb_hill_free(fricreg_hb *hb)
     free(hb->hill_mlu);
     free(hb->hill_piv);
     hb->hill = NULL;
-    hb->hill_eval = hb->hill_mlu = hb->hill_col = hb->xsol = hb->hill_x = NULL;
+    hb->hill_eval = hb->hill_mlu = hb->hill_col = NULL;
     hb->hill_work = NULL;
     hb->hill_piv = NULL;
 }
@@ -225,10 +221,18 @@ static void select_exponents(const fricreg_hb *hb, double omega, double *out)
 int fr_hb_hill(fricreg_hb *hb, const char *fn, double omega, double *out)
 {
     size_t N2 = 2 * hb->n * hb->nc;
+    if (hb->n * hb->nc > FRICREG_HB_MAX_HILL)
+        return fr_fail(hb, FRICREG_EINVAL,
+                       "%s: stability: ndof (2H + 1) = %zu, Hill's method is limited to %d "
+                       "coefficients (the exact monodromy is not: piecewise-linear elements)",
+                       fn, hb->n * hb->nc, FRICREG_HB_MAX_HILL);
+    int status = fr_hb_hill_reserve(hb, fn);
+    if (status != FRICREG_OK)
+        return status;
     gsl_matrix_set_zero(hb->hill);
     linear_blocks(hb, omega);
     element_blocks(hb);
-    int status = companion(hb, fn);
+    status = companion(hb, fn);
     if (status != FRICREG_OK)
         return status;
     for (size_t k = 0; k < N2 * N2; k++)
@@ -249,7 +253,7 @@ int fr_hb_hill(fricreg_hb *hb, const char *fn, double omega, double *out)
     double T = TWO_PI / omega, top = -INFINITY;
     for (size_t i = 0; i < 2 * hb->n; i++)
         top = fmax(top, out[2 + 2 * i] * T);
-    out[0] = top <= STABLE_TOL ? 1.0 : 0.0;
+    out[0] = top <= FR_HB_STABLE_TOL ? 1.0 : 0.0;
     out[1] = exp(top);
     return FRICREG_OK;
 }
@@ -279,59 +283,4 @@ int fr_hb_hill_crossing(const fricreg_hb *hb, double omega, const double *exps)
         if (exps[2 * i] > exps[2 * top])
             top = i;
     return kind(exps[2 * top + 1], omega);
-}
-
-int fricreg_hb_set_stability(fricreg_hb *hb, int enable)
-{
-    static const char fn[] = "set_stability";
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    if (hb->busy)
-        return fr_hb_busy(hb, fn);
-    if (enable != 0 && enable != 1)
-        return fr_fail(hb, FRICREG_EINVAL, "%s: enable = %d must be 0 or 1", fn, enable);
-    if (enable && hb->n * hb->nc > FRICREG_HB_MAX_HILL)
-        return fr_fail(hb, FRICREG_EINVAL,
-                       "%s: ndof (2H + 1) = %zu, Hill's method is limited to %d coefficients", fn,
-                       hb->n * hb->nc, FRICREG_HB_MAX_HILL);
-    if (enable == hb->stability)
-        return FRICREG_OK;
-    if (enable && fr_hb_hill_alloc(hb) != FRICREG_OK)
-        return fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for Hill's matrix of order %zu", fn,
-                       2 * hb->n * hb->nc);
-    if (!enable)
-        fr_hb_hill_free(hb);
-    hb->stability = enable;
-    /* the stored points' and the last solution's extras have no stability (or another width) */
-    hb->have_solution = 0;
-    hb->have_branch = 0;
-    hb->npts = 0;
-    hb->nbif = 0;
-    return FRICREG_OK;
-}
-
-int fricreg_hb_point_stability(fricreg_hb *hb, size_t k, int *stable, double *mu_max)
-{
-    static const char fn[] = "point_stability";
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    if (stable == NULL || mu_max == NULL)
-        return fr_fail(hb, FRICREG_ENULL, "%s: %s is NULL", fn,
-                       stable == NULL ? "stable" : "mu_max");
-    if (!hb->stability)
-        return fr_fail(hb, FRICREG_EINVAL, "%s: stability is off (fricreg_hb_set_stability)", fn);
-    const double *x;
-    if (k == FRICREG_HB_SOLUTION) {
-        if (!hb->have_solution)
-            return fr_fail(hb, FRICREG_EINVAL,
-                           "%s: no solution (none yet, or the model changed since)", fn);
-        x = hb->xsol;
-    } else {
-        if (k >= hb->npts)
-            return fr_fail(hb, FRICREG_EINVAL, "%s: k = %zu, %zu points stored", fn, k, hb->npts);
-        x = hb->xpts + k * hb->xpts_stride;
-    }
-    *stable = x[2] != 0.0;
-    *mu_max = x[3];
-    return FRICREG_OK;
 }

@@ -45,6 +45,7 @@
 #include <gsl/gsl_roots.h>
 
 #include "aft_internal.h"
+#include "aft_slips.h"
 #include "base/fr_math.h"
 
 /* g(θ) and g'(θ) of the trigonometric polynomial with coefficients co[2H+1] in the layout of
@@ -496,6 +497,91 @@ static double slip_onset(fricreg_aft *a, const double *u, double target, int dir
     return polish(a->H, co, th, lo, hi);
 }
 
+/* Where one slider's march puts its pieces: into the force and, with want_jac, the Jacobian
+ * (slips NULL), or as slip intervals into slips (fr_aft_exact_slips). */
+struct march_sink {
+    int want_jac;
+    struct fr_aft_slips *slips;
+};
+
+/* The reversals of u's global maximum (imax) and minimum (imin). */
+static void extreme_reversals(fricreg_aft *a, const double *u, int m, int *imax, int *imin)
+{
+    double d;
+    *imax = *imin = 0;
+    for (int i = 1; i < m; i++) {
+        if (trig_eval(a->H, u, a->rev[i], &d) > trig_eval(a->H, u, a->rev[*imax], &d))
+            *imax = i;
+        if (trig_eval(a->H, u, a->rev[i], &d) < trig_eval(a->H, u, a->rev[*imin], &d))
+            *imin = i;
+    }
+}
+
+/* A slip piece [th, be] recorded, its angles reduced to [0, 2 pi). */
+static void record_slip(struct fr_aft_slips *slips, double th, double be)
+{
+    slips->on[slips->count] = th >= FR_TWO_PI ? th - FR_TWO_PI : th;
+    slips->off[slips->count] = be >= FR_TWO_PI ? be - FR_TWO_PI : be;
+    slips->count++;
+}
+
+/* The stabilized march of one slider (kt, mun > 0 resolved, not stuck: kt (umax − umin) >
+ * 2 mun) over the m reversals from the global maximum imax. */
+static void slider_march(fricreg_aft *a, const double *u, int m, int imax, double kt, double mun,
+                         struct march_sink sink)
+{
+    double d, r = mun / kt, thw = a->rev[imax], wv = trig_eval(a->H, u, thw, &d) - r;
+    for (int i = 0; i < m; i++) {
+        int ia = (imax + i) % m, ib = (ia + 1) % m, dir = a->rdir[ia];
+        double al = a->rev[ia], be = a->rev[ib];
+        if (be <= al)
+            be += FR_TWO_PI;
+        double target = wv + dir * r, ub = trig_eval(a->H, u, be, &d), th = be;
+        int slips = dir * (ub - target) > 0.0; /* else sticks to the next reversal */
+        if (slips)
+            th = slip_onset(a, u, target, dir, al, be);
+        if (sink.slips == NULL)
+            fr_aft_add_stick(a, kt, u, kt * wv, thw, al, th, sink.want_jac);
+        if (!slips)
+            continue;
+        if (sink.slips != NULL)
+            record_slip(sink.slips, th, be);
+        else
+            add_slip(a, dir * mun, th, be);
+        wv = ub - dir * r;
+        thw = be;
+    }
+}
+
+/* The sliders that stick in the rounding of u (UNRESOLVED_STICK): they slip throughout. */
+static int unresolved(const double *u, size_t nc, double kt, double mun)
+{
+    double usum = 0.0;
+    for (size_t j = 0; j < nc; j++)
+        usum += fabs(u[j]);
+    return mun <= UNRESOLVED_STICK * (kt * usum);
+}
+
+/* The centred slider stuck over the whole period: f = kt (u − (umax + umin)/2). */
+static void add_stuck(fricreg_aft *a, double kt, const double *u, double thmax, double thmin,
+                      double umax, double umin, int want_jac)
+{
+    size_t w = a->nc;
+    a->fout[0] += kt * (u[0] - 0.5 * (umax + umin));
+    for (size_t j = 1; j < w; j++)
+        a->fout[j] += kt * u[j];
+    if (!want_jac)
+        return;
+    fr_aft_basis(a->H, thmax, a->phw);
+    for (size_t j = 1; j < w; j++)
+        a->jout[j] -= 0.5 * kt * a->phw[j];
+    fr_aft_basis(a->H, thmin, a->phw);
+    for (size_t j = 1; j < w; j++) {
+        a->jout[j] -= 0.5 * kt * a->phw[j];
+        a->jout[w * j + j] += kt;
+    }
+}
+
 int fr_aft_exact(fricreg_aft *a, const char *fn, size_t ns, const double *k, const double *phi,
                  const double *u, int want_jac)
 {
@@ -505,7 +591,6 @@ int fr_aft_exact(fricreg_aft *a, const char *fn, size_t ns, const double *k, con
     int m, status = reversals(a, fn, u, &m);
     if (status != FRICREG_OK)
         return status;
-    double d;
     if (m == 0) { /* constant u: f = 0, the stick tangent on the harmonics */
         for (size_t s = 0; s < ns; s++)
             if (phi[s] > 0.0)
@@ -513,63 +598,48 @@ int fr_aft_exact(fricreg_aft *a, const char *fn, size_t ns, const double *k, con
                     a->jout[w * j + j] += k[s];
         return FRICREG_OK;
     }
-    int imax = 0, imin = 0;
-    for (int i = 1; i < m; i++) {
-        if (trig_eval(a->H, u, a->rev[i], &d) > trig_eval(a->H, u, a->rev[imax], &d))
-            imax = i;
-        if (trig_eval(a->H, u, a->rev[i], &d) < trig_eval(a->H, u, a->rev[imin], &d))
-            imin = i;
-    }
-    double thmax = a->rev[imax], thmin = a->rev[imin];
+    int imax, imin;
+    extreme_reversals(a, u, m, &imax, &imin);
+    double d, thmax = a->rev[imax], thmin = a->rev[imin];
     double umax = trig_eval(a->H, u, thmax, &d), umin = trig_eval(a->H, u, thmin, &d);
-    double usum = 0.0;
-    for (size_t j = 0; j < w; j++)
-        usum += fabs(u[j]);
     for (size_t s = 0; s < ns; s++) {
-        double kt = k[s], mun = phi[s], r = mun / kt;
+        double kt = k[s], mun = phi[s];
         if (mun == 0.0)
             continue;
-        if (mun <= UNRESOLVED_STICK * (kt * usum)) { /* sticks in the rounding of u: none */
+        if (unresolved(u, w, kt, mun)) { /* sticks in the rounding of u: none */
             for (int i = 0; i < m; i++) {
                 double al = a->rev[i], be = a->rev[(i + 1) % m];
                 add_slip(a, a->rdir[i] * mun, al, be <= al ? be + FR_TWO_PI : be);
             }
-            continue;
-        }
-        if (kt * (umax - umin) <= 2.0 * mun) { /* stuck: the centred slider */
-            double wc = 0.5 * (umax + umin);
-            a->fout[0] += kt * (u[0] - wc);
-            for (size_t j = 1; j < w; j++)
-                a->fout[j] += kt * u[j];
-            if (!want_jac)
-                continue;
-            fr_aft_basis(a->H, thmax, a->phw);
-            for (size_t j = 1; j < w; j++)
-                a->jout[j] -= 0.5 * kt * a->phw[j];
-            fr_aft_basis(a->H, thmin, a->phw);
-            for (size_t j = 1; j < w; j++) {
-                a->jout[j] -= 0.5 * kt * a->phw[j];
-                a->jout[w * j + j] += kt;
-            }
-            continue;
-        }
-        double wv = umax - r, thw = thmax;
-        for (int i = 0; i < m; i++) {
-            int ia = (imax + i) % m, ib = (ia + 1) % m, dir = a->rdir[ia];
-            double al = a->rev[ia], be = a->rev[ib];
-            if (be <= al)
-                be += FR_TWO_PI;
-            double target = wv + dir * r, ub = trig_eval(a->H, u, be, &d), th;
-            if (dir * (ub - target) <= 0.0) { /* sticks to the next reversal */
-                fr_aft_add_stick(a, kt, u, kt * wv, thw, al, be, want_jac);
-                continue;
-            }
-            th = slip_onset(a, u, target, dir, al, be);
-            fr_aft_add_stick(a, kt, u, kt * wv, thw, al, th, want_jac);
-            add_slip(a, dir * mun, th, be);
-            wv = ub - dir * r;
-            thw = be;
+        } else if (kt * (umax - umin) <= 2.0 * mun) {
+            add_stuck(a, kt, u, thmax, thmin, umax, umin, want_jac);
+        } else {
+            slider_march(a, u, m, imax, kt, mun, (struct march_sink){want_jac, NULL});
         }
     }
+    return FRICREG_OK;
+}
+
+int fr_aft_exact_slips(fricreg_aft *a, const char *fn, double kt, double mun, const double *u,
+                       struct fr_aft_slips *slips)
+{
+    int m, status = reversals(a, fn, u, &m);
+    if (status != FRICREG_OK)
+        return status;
+    slips->count = 0;
+    if (mun == 0.0 || (m > 0 && unresolved(u, a->nc, kt, mun))) {
+        slips->kind = FR_AFT_SLIDES;
+        return FRICREG_OK;
+    }
+    slips->kind = FR_AFT_STUCK;
+    if (m == 0)
+        return FRICREG_OK;
+    int imax, imin;
+    extreme_reversals(a, u, m, &imax, &imin);
+    double d, umax = trig_eval(a->H, u, a->rev[imax], &d);
+    if (kt * (umax - trig_eval(a->H, u, a->rev[imin], &d)) <= 2.0 * mun)
+        return FRICREG_OK;
+    slider_march(a, u, m, imax, kt, mun, (struct march_sink){0, slips});
+    slips->kind = slips->count > 0 ? FR_AFT_SLIPS : FR_AFT_STUCK;
     return FRICREG_OK;
 }

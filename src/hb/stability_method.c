@@ -1,0 +1,134 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* stability_method.c — the stability of periodic solutions (fricreg_hb_set_stability,
+ * fricreg_hb_set_stability_method): on or off, and by which method, the exact monodromy of
+ * the orbit (monodromy.c) where every element is piecewise linear and Hill's method
+ * (stability.c) elsewhere, unless chosen; the one entry point of the solves, the points and
+ * the bifurcations; the points' stability. */
+#include <stdlib.h>
+
+#include "monodromy.h"
+#include "stability_method.h"
+
+int fr_hb_stability_in_force(const fricreg_hb *hb)
+{
+    if (hb->stability_method != FRICREG_HB_STABILITY_AUTO)
+        return hb->stability_method;
+    return fr_hb_monodromy_applies(hb) ? FRICREG_HB_STABILITY_MONODROMY : FRICREG_HB_STABILITY_HILL;
+}
+
+int fr_hb_stability(fricreg_hb *hb, const char *fn, double omega, double *out)
+{
+    if (fr_hb_stability_in_force(hb) == FRICREG_HB_STABILITY_HILL)
+        return fr_hb_hill(hb, fn, omega, out);
+    if (!fr_hb_monodromy_applies(hb))
+        return fr_fail(hb, FRICREG_EINVAL,
+                       "%s: stability: the exact monodromy needs piecewise-linear elements (1-D "
+                       "Jenkins or Iwan elements without lift-off); these are not: choose "
+                       "FRICREG_HB_STABILITY_HILL or _AUTO",
+                       fn);
+    return fr_hb_monodromy(hb, fn, omega, out);
+}
+
+void fr_hb_stability_free(fricreg_hb *hb)
+{
+    fr_hb_hill_free(hb);
+    fr_hb_monodromy_free(hb);
+    free(hb->xsol);
+    hb->xsol = hb->hill_x = NULL;
+}
+
+int fricreg_hb_set_stability(fricreg_hb *hb, int enable)
+{
+    static const char fn[] = "set_stability";
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    if (hb->busy)
+        return fr_hb_busy(hb, fn);
+    if (enable != 0 && enable != 1)
+        return fr_fail(hb, FRICREG_EINVAL, "%s: enable = %d must be 0 or 1", fn, enable);
+    if (enable && fr_hb_stability_in_force(hb) == FRICREG_HB_STABILITY_HILL &&
+        hb->n * hb->nc > FRICREG_HB_MAX_HILL)
+        return fr_fail(hb, FRICREG_EINVAL,
+                       "%s: ndof (2H + 1) = %zu, Hill's method is limited to %d coefficients", fn,
+                       hb->n * hb->nc, FRICREG_HB_MAX_HILL);
+    if (enable == hb->stability)
+        return FRICREG_OK;
+    if (enable) {
+        /* the last solution's and a trial point's, and the workspace of the method in force:
+         * the solves then allocate nothing unless the elements change the method */
+        size_t xw = 4 + 4 * hb->n;
+        if ((hb->xsol = malloc(2 * xw * sizeof(double))) == NULL)
+            return fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for the stability of %zu dofs", fn,
+                           hb->n);
+        hb->hill_x = hb->xsol + xw;
+        int status = fr_hb_stability_in_force(hb) == FRICREG_HB_STABILITY_HILL
+                         ? fr_hb_hill_reserve(hb, fn)
+                         : fr_hb_monodromy_reserve(hb, fn);
+        if (status != FRICREG_OK) {
+            fr_hb_stability_free(hb);
+            return status;
+        }
+    } else {
+        fr_hb_stability_free(hb);
+    }
+    hb->stability = enable;
+    /* the stored points' and the last solution's extras have no stability (or another width) */
+    hb->have_solution = 0;
+    hb->have_branch = 0;
+    hb->npts = 0;
+    hb->nbif = 0;
+    return FRICREG_OK;
+}
+
+int fricreg_hb_set_stability_method(fricreg_hb *hb, int method)
+{
+    static const char fn[] = "set_stability_method";
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    if (hb->busy)
+        return fr_hb_busy(hb, fn);
+    if (method != FRICREG_HB_STABILITY_AUTO && method != FRICREG_HB_STABILITY_HILL &&
+        method != FRICREG_HB_STABILITY_MONODROMY)
+        return fr_fail(hb, FRICREG_EINVAL,
+                       "%s: method = %d is none of FRICREG_HB_STABILITY_AUTO (0), _HILL (1), "
+                       "_MONODROMY (2)",
+                       fn, method);
+    hb->stability_method = method;
+    return FRICREG_OK;
+}
+
+int fricreg_hb_get_stability_method(fricreg_hb *hb, int *method)
+{
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    if (method == NULL)
+        return fr_fail(hb, FRICREG_ENULL, "get_stability_method: method is NULL");
+    *method = fr_hb_stability_in_force(hb);
+    return FRICREG_OK;
+}
+
+int fricreg_hb_point_stability(fricreg_hb *hb, size_t k, int *stable, double *mu_max)
+{
+    static const char fn[] = "point_stability";
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    if (stable == NULL || mu_max == NULL)
+        return fr_fail(hb, FRICREG_ENULL, "%s: %s is NULL", fn,
+                       stable == NULL ? "stable" : "mu_max");
+    if (!hb->stability)
+        return fr_fail(hb, FRICREG_EINVAL, "%s: stability is off (fricreg_hb_set_stability)", fn);
+    const double *x;
+    if (k == FRICREG_HB_SOLUTION) {
+        if (!hb->have_solution)
+            return fr_fail(hb, FRICREG_EINVAL,
+                           "%s: no solution (none yet, or the model changed since)", fn);
+        x = hb->xsol;
+    } else {
+        if (k >= hb->npts)
+            return fr_fail(hb, FRICREG_EINVAL, "%s: k = %zu, %zu points stored", fn, k, hb->npts);
+        x = hb->xpts + k * hb->xpts_stride;
+    }
+    *stable = x[2] != 0.0;
+    *mu_max = x[3];
+    return FRICREG_OK;
+}
