@@ -1,11 +1,12 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* hb_stability.c — the cost of Hill's stability (fricreg_hb_set_stability) per continuation
- * point: the gap pair of tests/test_hb_stability.c (2 dofs, one lift-off element with a gap,
- * H = 15: Hill's companion matrix of order 124) and the contact pair's three-mass chain
- * variant at H = 7 (order 90), each branch followed with and without stability; the median over
- * repeats of the time per stored point (the bifurcations' location included: it is part of
- * fricreg_hb_continue; their count without/with stability printed), and the ratio
- * with/without, target <= 3. Usage:
+/* hb_stability.c — the cost of stability (fricreg_hb_set_stability) per continuation point, by
+ * Hill's method and by the exact monodromy (fricreg_hb_set_stability_method): the gap pair of
+ * tests/test_hb_stability.c (2 dofs, one lift-off element with a gap, H = 15: Hill's companion
+ * matrix of order 124; not piecewise linear in the monodromy's sense, so Hill's only) and a
+ * three-mass Jenkins chain at H = 7 and 15 (orders 90 and 186), each branch followed without
+ * stability and with each method; the median over repeats of the time per stored point (the
+ * bifurcations' location included: it is part of fricreg_hb_continue; their count without/with
+ * printed), and the ratios with/without, target <= 1.5 for the monodromy. Usage:
  * fricreg-bench-hb-stability [repeats]. */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime */
 #include <stdio.h>
@@ -30,8 +31,9 @@ struct model {
     double M[9], K[9], J[3], Jn[3], kt, mun, mu, n0, kn, pc[3], w0, w1;
 };
 
-/* Median seconds per stored point over repeats branches; the point count into *points. */
-static double per_point(const struct model *s, int stability, int repeats, size_t *points,
+/* Median seconds per stored point over repeats branches, without stability (method < 0) or by
+ * the method (enum fricreg_hb_stability_method); the point count into *points. */
+static double per_point(const struct model *s, int method, int repeats, size_t *points,
                         size_t *bifs)
 {
     double t[64], C[9], ps[3] = {0.0, 0.0, 0.0};
@@ -50,7 +52,10 @@ static double per_point(const struct model *s, int stability, int repeats, size_
         else
             fricreg_hb_set_elements(hb, 1, n, s->J, &s->kt, &s->mun);
         fricreg_hb_set_excitation(hb, n, s->pc, ps);
-        fricreg_hb_set_stability(hb, stability);
+        if (method >= 0) {
+            fricreg_hb_set_stability_method(hb, method);
+            fricreg_hb_set_stability(hb, 1);
+        }
         double t0 = now();
         int status = fricreg_hb_continue(hb, s->w0, s->w1, nq, NULL);
         double dt = now() - t0;
@@ -98,18 +103,25 @@ int main(int argc, char **argv)
                           .pc = {0, 1, 0},
                           .w0 = 0.5,
                           .w1 = 2.0};
-    const struct model *models[2] = {&gap, &chain};
-    printf("# Hill's stability per continuation point: median of %d branches\n", repeats);
-    printf("%-30s %8s %6s %14s %14s %8s\n", "model", "points", "bifs", "without (ms)", "with (ms)",
-           "ratio");
-    for (int i = 0; i < 2; i++) {
-        size_t p0 = 0, p1 = 0, b0 = 0, b1 = 0;
-        double a = per_point(models[i], 0, repeats, &p0, &b0),
-               b = per_point(models[i], 1, repeats, &p1, &b1);
-        if (a < 0.0 || b < 0.0)
+    struct model chain15 = chain;
+    chain15.name = "Jenkins chain, 3 dofs, H = 15";
+    chain15.H = 15;
+    const struct model *models[3] = {&gap, &chain, &chain15};
+    printf("# Stability per continuation point: median of %d branches; ratios to without\n",
+           repeats);
+    printf("%-30s %8s %8s %12s %10s %10s %8s %8s\n", "model", "points", "bifs", "without (ms)",
+           "Hill", "monodromy", "ratio H", "ratio M");
+    for (int i = 0; i < 3; i++) {
+        size_t p0 = 0, p1 = 0, p2 = 0, b0 = 0, b1 = 0, b2 = 0;
+        double a = per_point(models[i], -1, repeats, &p0, &b0),
+               b = per_point(models[i], FRICREG_HB_STABILITY_HILL, repeats, &p1, &b1),
+               c = models[i]->normal
+                       ? 0.0
+                       : per_point(models[i], FRICREG_HB_STABILITY_MONODROMY, repeats, &p2, &b2);
+        if (a < 0.0 || b < 0.0 || c < 0.0)
             return EXIT_FAILURE;
-        printf("%-30s %8zu %2zu/%-3zu %14.3f %14.3f %8.2f\n", models[i]->name, p1, b0, b1, 1e3 * a,
-               1e3 * b, b / a);
+        printf("%-30s %8zu %2zu/%zu/%zu %12.3f %10.3f %10.3f %8.2f %8.2f\n", models[i]->name, p1,
+               b0, b1, b2, 1e3 * a, 1e3 * b, 1e3 * c, b / a, c / a);
     }
     return EXIT_SUCCESS;
 }
