@@ -1037,13 +1037,20 @@ FRICREG_API int fricreg_hb_set_stability(fricreg_hb *hb, int enable);
  *  since stability was turned on, or the model changed since). Since 1.7 (FRICREG_1.7). */
 FRICREG_API int fricreg_hb_point_stability(fricreg_hb *hb, size_t k, int *stable, double *mu_max);
 
+/** Largest order 2 ndof + sliders of the exact monodromy that FRICREG_HB_STABILITY_AUTO takes
+ *  (fricreg_hb_set_stability_method): its matrices are dense, each switch costing a few times
+ *  that order cubed. */
+#define FRICREG_HB_MAX_MONODROMY 512
+
 /** How fricreg_hb_set_stability computes a solution's stability. */
 enum fricreg_hb_stability_method {
     FRICREG_HB_STABILITY_AUTO = 0,     /**< the exact monodromy where every element is piecewise
                                             linear (1-D Jenkins and Iwan elements without
-                                            lift-off), Hill's method otherwise (the default) */
+                                            lift-off) and its order 2 ndof + sliders is at most
+                                            FRICREG_HB_MAX_MONODROMY, Hill's method otherwise
+                                            (the default) */
     FRICREG_HB_STABILITY_HILL = 1,     /**< Hill's method, for any element */
-    FRICREG_HB_STABILITY_MONODROMY = 2 /**< the exact monodromy of the orbit */
+    FRICREG_HB_STABILITY_MONODROMY = 2 /**< the exact monodromy of the orbit, at any order */
 };
 
 /** Choose how the stability of the next solutions is computed (fricreg_hb_set_stability);

@@ -808,6 +808,50 @@ START_TEST(bad_input)
 }
 END_TEST
 
+/* The method's choice: Hill's for lift-off (not piecewise linear in the monodromy's sense), the
+ * monodromy refused there when chosen, bad methods and NULLs refused with nothing changed, and
+ * no size limit for the monodromy (40 dofs at H = 15: 1240 coefficients, over Hill's 1024). */
+START_TEST(method_choice)
+{
+    struct model s = contact_pair();
+    fricreg_hb *hb = make(&s);
+    int method = -7;
+    double q[2 * NC];
+    ck_assert_int_eq(fricreg_hb_get_stability_method(hb, &method), FRICREG_OK);
+    ck_assert_int_eq(method, FRICREG_HB_STABILITY_HILL);
+    ck_assert_int_eq(fricreg_hb_set_stability_method(hb, 3), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_hb_set_stability_method(hb, -1), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_hb_set_stability_method(NULL, 0), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_hb_get_stability_method(NULL, &method), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_hb_get_stability_method(hb, NULL), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_hb_get_stability_method(hb, &method), FRICREG_OK);
+    ck_assert_int_eq(method, FRICREG_HB_STABILITY_HILL);
+    ck_assert_int_eq(fricreg_hb_set_stability_method(hb, FRICREG_HB_STABILITY_MONODROMY),
+                     FRICREG_OK);
+    for (size_t j = 0; j < 2 * NC; j++)
+        q[j] = -7.0;
+    ck_assert_int_eq(fricreg_hb_solve(hb, 12.0, 2 * NC, NULL, q), FRICREG_EINVAL);
+    ck_assert(strstr(fricreg_hb_errmsg(hb), "piecewise-linear") != NULL);
+    ck_assert(q[0] == -7.0);
+    fricreg_hb_free(hb);
+
+    size_t n = 40;
+    double *K = calloc(n * n, sizeof *K), J[40] = {1.0}, kt = 1.0, mun = 0.1;
+    ck_assert_ptr_nonnull(K);
+    for (size_t i = 0; i < n; i++)
+        K[i * n + i] = 1.0;
+    ck_assert_int_eq(fricreg_hb_create(n, 1, 15, &hb), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, n, K), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_elements(hb, 1, n, J, &kt, &mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stability_method(hb, FRICREG_HB_STABILITY_HILL), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stability(hb, 1), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_hb_set_stability_method(hb, FRICREG_HB_STABILITY_AUTO), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stability(hb, 1), FRICREG_OK);
+    fricreg_hb_free(hb);
+    free(K);
+}
+END_TEST
+
 Suite *hb_stability_suite(void)
 {
     Suite *s = suite_create("hb_stability");
@@ -818,6 +862,7 @@ Suite *hb_stability_suite(void)
     tcase_add_test(tc, gap_pair_against_shooting);
     tcase_add_test(tc, bilinear_against_shooting);
     tcase_add_test(tc, bad_input);
+    tcase_add_test(tc, method_choice);
     tcase_add_test(tc, sparse_as_dense);
     suite_add_tcase(s, tc);
 

@@ -10,12 +10,15 @@
 
 enum { HB_SUMMARY, HB_FRF };
 enum { HB_IN_OMEGA, HB_IN_LEVEL };
+/* --stability: off, or a method (enum fricreg_hb_stability_method) */
+enum { HB_STABILITY_OFF = -1 };
 
 struct hb_options {
     struct cli_hb_model_options model; /* the matrices and elements (hb_model.h) */
     const char *excitation;
     int harmonics, output, omega_start_given, omega_end_given, newton_max;
     int max_points, continue_in, omega_given, level_start_given, level_end_given;
+    int stability; /* HB_STABILITY_OFF or enum fricreg_hb_stability_method */
     double omega_start, omega_end, newton_tol, ds, ds_min, ds_max;
     double omega, level_start, level_end; /* --continue-in level */
     struct cli_deadline deadline;         /* --max-seconds */

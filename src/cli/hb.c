@@ -4,7 +4,8 @@
  * files, continued in the excitation frequency from --omega-start to --omega-end (or, with
  * --continue-in level, in the excitation level from --level-start to --level-end at --omega),
  * each point's
- * stability by Hill's method (fricreg_hb_set_stability, where allowed); a JSON summary (per dof
+ * stability (fricreg_hb_set_stability: the exact monodromy or Hill's method, --stability); a JSON
+ * summary (per dof
  * the peak RMS and its frequency, its truncation error estimate, the located bifurcations) or a CSV row per continuation point
  * (and per bifurcation) on stdout. Every bad option or file is one line on stderr naming it, exit 2, nothing on stdout;
  * a continuation that fails, exit 1. */
@@ -29,6 +30,11 @@ static const struct cli_word hb_outputs[] = {{"summary", HB_SUMMARY}, {"frf", HB
 static const struct cli_word hb_parameters[] = {{"omega", HB_IN_OMEGA},
                                                 {"level", HB_IN_LEVEL},
                                                 {NULL, 0}};
+static const struct cli_word hb_stabilities[] = {{"auto", FRICREG_HB_STABILITY_AUTO},
+                                                 {"hill", FRICREG_HB_STABILITY_HILL},
+                                                 {"monodromy", FRICREG_HB_STABILITY_MONODROMY},
+                                                 {"off", HB_STABILITY_OFF},
+                                                 {NULL, 0}};
 
 /* The model (hb_model.h: its matrices passed sparse to the driver, nothing densified) and the
  * excitation pc[n], ps[n]. */
@@ -94,7 +100,8 @@ static size_t hb_table(struct hb_options *o, struct cli_option table[])
                              .ds = 0.02,
                              .ds_min = 1e-6,
                              .ds_max = 0.1,
-                             .max_points = 2000};
+                             .max_points = 2000,
+                             .stability = FRICREG_HB_STABILITY_AUTO};
     cli_hb_model_defaults(&o->model);
     const struct cli_option opts[] = {
         CLI_HB_MODEL_OPTIONS(&o->model),
@@ -137,14 +144,20 @@ static size_t hb_table(struct hb_options *o, struct cli_option table[])
         CLI_DEADLINE_OPTION(&o->deadline),
         {"--max-points", CLI_WHOLE, .slot = &o->max_points, .lo = 2, .hi = 1e8, .meta = "N",
          .help = "points stored at most: reaching it stops the continuation"},
+        {"--stability", CLI_CHOICE, .slot = &o->stability, .words = hb_stabilities,
+         .help = "each point's stability: by the exact monodromy of the orbit (1-D Jenkins and "
+                 "Iwan elements without lift-off), by Hill's method (any element, ndof (2H + 1) "
+                 "<= 1024), auto (the monodromy where the elements allow it, else Hill's where "
+                 "the size allows it, else none), or off"},
         {"--output", CLI_CHOICE, .slot = &o->output, .words = hb_outputs,
          .help = "a JSON summary (each dof's peak RMS and its frequency, the estimate of its "
                  "error from truncating at H harmonics at the largest stored point, by a solve "
                  "at 2H + 1 harmonics: null where H > 19 or that solve failed, the "
                  "bifurcations), or the "
-                 "frequency response: a CSV row omega,rms_1,...,rms_n,stable,bifurcation per "
-                 "point (stable 1/0 by Hill's method where ndof (2H + 1) <= 1024, else empty), "
-                 "and a row at each located bifurcation labelled TP, BP, PD or NS; with "
+                 "frequency response: a CSV row omega,rms_1,...,rms_n,stable,bifurcation,mu_max "
+                 "per point (stable 1/0 and mu_max the largest |Floquet multiplier| by "
+                 "--stability's method, empty without), and a row at each located bifurcation "
+                 "labelled TP, BP, PD or NS; with "
                  "--continue-in level the first column is the level and the summary's peaks "
                  "are the largest points' (peak_level)"}};
     return cli_copy_rows(table, opts, sizeof opts / sizeof opts[0]);
@@ -218,15 +231,15 @@ static const char *bifurcation_name(int type)
 /* A row omega, rms_1 .. rms_n, stable (1/0; empty where unknown), bifurcation (a label or
  * empty). */
 static void write_row(FILE *out, size_t n, double omega, const double rms[], int stable,
-                      const char *label)
+                      double mu_max, const char *label)
 {
     fprintf(out, "%.17g", omega);
     for (size_t i = 0; i < n; i++)
         fprintf(out, ",%.17g", rms[i]);
     if (stable >= 0)
-        fprintf(out, ",%d,%s\n", stable, label);
+        fprintf(out, ",%d,%s,%.17g\n", stable, label, mu_max);
     else
-        fprintf(out, ",,%s\n", label);
+        fprintf(out, ",,%s,\n", label);
 }
 
 /* The points, each with its stability (when the driver computed it), and after point k a row
@@ -240,14 +253,14 @@ static int write_frf(fricreg_hb *hb, FILE *out, int level, size_t n, size_t K, c
     fprintf(out, level ? "level" : "omega");
     for (size_t i = 0; i < n; i++)
         fprintf(out, ",rms_%zu", i + 1);
-    fprintf(out, ",stable,bifurcation\n");
+    fprintf(out, ",stable,bifurcation,mu_max\n");
     size_t nb = fricreg_hb_bifurcations(hb), b = 0;
     for (size_t k = 0; k < K; k++) {
         int stable = -1;
         double mu = 0.0;
         if (fricreg_hb_point_stability(hb, k, &stable, &mu) != FRICREG_OK)
             stable = -1;
-        write_row(out, n, omega[k], &rms[k * n], stable, "");
+        write_row(out, n, omega[k], &rms[k * n], stable, mu, "");
         for (; b < nb; b++) {
             int type = 0;
             double bw = 0.0;
@@ -255,7 +268,7 @@ static int write_frf(fricreg_hb *hb, FILE *out, int level, size_t n, size_t K, c
             if (fricreg_hb_bifurcation(hb, b, &type, &bw, &at, n, brms) != FRICREG_OK || at != k ||
                 (level && fricreg_hb_bifurcation_level(hb, b, &bw) != FRICREG_OK))
                 break;
-            write_row(out, n, bw, brms, -1, bifurcation_name(type));
+            write_row(out, n, bw, brms, -1, 0.0, bifurcation_name(type));
         }
     }
     free(brms);
@@ -346,6 +359,39 @@ static int truncation_errors(fricreg_hb *hb, size_t n, size_t K, const double rm
     return 0;
 }
 
+/* Each point's stability by --stability's method; auto takes none where the automatic choice is
+ * Hill's and its dense companion is too large. 0, or CLI_EXIT_USAGE after a line on stderr. */
+static int set_stability(fricreg_hb *hb, const struct hb_options *o, size_t n)
+{
+    int method = FRICREG_HB_STABILITY_HILL;
+    if (o->stability == HB_STABILITY_OFF)
+        return 0;
+    if (fricreg_hb_set_stability_method(hb, o->stability) != FRICREG_OK ||
+        fricreg_hb_get_stability_method(hb, &method) != FRICREG_OK)
+        return cli_usage_error("--stability", fricreg_hb_errmsg(hb));
+    size_t coefficients = n * (2 * (size_t)o->harmonics + 1);
+    if (o->stability == FRICREG_HB_STABILITY_AUTO && method == FRICREG_HB_STABILITY_HILL &&
+        coefficients > FRICREG_HB_MAX_HILL)
+        return 0;
+    if (o->stability == FRICREG_HB_STABILITY_MONODROMY && method != o->stability)
+        return cli_usage_error("--stability", "monodromy needs 1-D Jenkins or Iwan elements "
+                                              "without lift-off");
+    if (fricreg_hb_set_stability(hb, 1) != FRICREG_OK)
+        return cli_usage_error("--stability", fricreg_hb_errmsg(hb));
+    return 0;
+}
+
+/* The stability's method as the summary names it: "monodromy", "hill" or "off". */
+static const char *stability_name(fricreg_hb *hb)
+{
+    int stable = 0, method = 0;
+    double mu = 0.0;
+    if (fricreg_hb_point_stability(hb, FRICREG_HB_SOLUTION, &stable, &mu) != FRICREG_OK ||
+        fricreg_hb_get_stability_method(hb, &method) != FRICREG_OK)
+        return "off";
+    return method == FRICREG_HB_STABILITY_MONODROMY ? "monodromy" : "hill";
+}
+
 static void write_summary(fricreg_hb *hb, FILE *out, const struct hb_options *o,
                           const struct hb_model *md, size_t K, const double omega[],
                           const double peak_omega[], const double peak_rms[],
@@ -366,6 +412,7 @@ static void write_summary(fricreg_hb *hb, FILE *out, const struct hb_options *o,
     fprintf(out, ", \"element_kind\": \"%s\"", cli_element_kind_name(&md->el));
     if (md->el.kind == CLI_ELEMENTS_IWAN || md->el.kind == CLI_ELEMENTS_IWAN_NORMAL)
         fprintf(out, ", \"sliders_per_element\": %zu", md->el.ns);
+    fprintf(out, ", \"stability_method\": \"%s\"", stability_name(hb));
     fprintf(out, ", \"%s_reached\": %.17g, \"peaks\": \"%s\", \"dofs\": [",
             level ? "level" : "omega",
             K > 0 ? omega[K - 1] : (level ? o->level_start : o->omega_start),
@@ -385,15 +432,13 @@ static int run_hb(fricreg_hb *hb, struct hb_options *o, const struct hb_model *m
     clock_t start = clock();
     /* lift-off elements: tangential and normal coefficients, 2 m rows */
     size_t nq = cli_hb_rows(&md->s) * (2 * (size_t)o->harmonics + 1);
-    /* each point's stability by Hill's method where its dense companion is allowed */
-    if (md->n * (2 * (size_t)o->harmonics + 1) <= FRICREG_HB_MAX_HILL &&
-        fricreg_hb_set_stability(hb, 1) != FRICREG_OK)
-        return cli_usage_error("hb", fricreg_hb_errmsg(hb));
+    int status = set_stability(hb, o, md->n);
+    if (status != 0)
+        return status;
     int level = o->continue_in == HB_IN_LEVEL;
     cli_deadline_start(&o->deadline, hb);
-    int status = level ? fricreg_hb_continue_level(hb, o->omega, o->level_start, o->level_end, nq,
-                                                   NULL)
-                       : fricreg_hb_continue(hb, o->omega_start, o->omega_end, nq, NULL);
+    status = level ? fricreg_hb_continue_level(hb, o->omega, o->level_start, o->level_end, nq, NULL)
+                   : fricreg_hb_continue(hb, o->omega_start, o->omega_end, nq, NULL);
     double cpu = (double)(clock() - start) / CLOCKS_PER_SEC;
     if (status != FRICREG_OK) {
         char progress[128];
