@@ -18,16 +18,16 @@
  * - the crossings: ω_1 = sqrt(λ_1(K_0)) in the same closed form, the backbone's ω at its stored
  *   points (fricreg_hb_nma_point).
  *
- * Measured on the fold model (kt = 10, 400 points from a = 0.05 to 1e4): the third harmonic's
- * share is 0 while the element sticks (the mode is linear), rises through the S to its largest,
- * 5.24e-4, at a = 4.47 (just past the lower fold; 3.4e-4 and 4.8e-4 at the points nearest the
- * upper and the lower fold), and falls to 1.13e-10 at a = 1e4 (the element slips nearly all
- * the time: its force a square wave of fixed height against a motion that grows as a); all of
- * it is in mode 1 (the element's dof: 1 − 4e-6). But 3ω never crosses ω_1 of the stuck structure: 3ω runs from 3.3450 (stuck) down to 3.3431 at
- * the folds and up to 3.4490, always above ω_1 = 3.2337 (the ratio ω_1/ω_0 = 2.90): the fold is
- * near, not at, a 3:1 resonance with the stuck mode, and no crossing is reported there. With
- * kt = 11, ω_1 = 3.3847 lies inside 3ω's range, and the crossing is found at a = 5.04,
- * ω = 1.12823 (after that model's S, at a = 4.49). */
+ * Measured on the fold model (kt = 10, 400 points from a = 0.05 to 1e4): the third harmonic's share
+ * is 0 while the element sticks (the mode is linear), rises through the S to its largest, 5.24e-4,
+ * at a = 4.47 (just past the lower fold; 3.4e-4 and 4.8e-4 at the points nearest the upper and the
+ * lower fold), and falls to 1.13e-10 at a = 1e4 (the element slips nearly all the time: its force a
+ * square wave of fixed height against a motion that grows as a); all of it is in mode 1 (the
+ * element's dof: 1 − 4e-6). But 3ω never crosses ω_1 of the stuck structure: 3ω runs from 3.3450
+ * (stuck) down to 3.3431 at the folds and up to 3.4490, always above ω_1 = 3.2337 (the ratio
+ * ω_1/ω_0 = 2.90): the fold is near, not at, a 3:1 resonance with the stuck mode, and no crossing
+ * is reported there. With kt = 11, ω_1 = 3.3847 lies inside 3ω's range, and the crossing is found
+ * at a = 5.04, ω = 1.12823 (after that model's S, at a = 4.49). */
 #include <check.h>
 #include <math.h>
 #include <stdint.h>

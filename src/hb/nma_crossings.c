@@ -1,15 +1,15 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* nma_crossings.c — where along a nonlinear mode's backbone a harmonic k ω of the mode crosses
  * another linear mode's frequency ω_r (fricreg_hb_nma_crossings, fricreg_hb.h): the place an
- * internal resonance can start (Krack & Gross 2019, "Harmonic Balance for Nonlinear Vibration Problems": a harmonic of the nonlinear mode
- * meeting a natural frequency of another mode). The frequencies ω_r are those of the
- * structure with its elements stuck, K_0 φ = ω² M φ, which the backbone starts from
- * (nma_linear.c: a dense model's eigensolve gives all of them at no extra cost; a sparse
- * model's subspace iteration only its own mode's, so a sparse model's are found by a dense
- * solve up to FR_HB_NMA_SPARSE_ALL_MODES dofs, and above it has none). Between two consecutive
- * stored points i and i + 1 a crossing of (k, r) is a change of sign of g = k ω − ω_r (g >= 0
- * at one, g < 0 at the other: a zero counts once); it is placed at the fraction
- * t = g_i / (g_i − g_{i+1}) of the stretch, a and ω linear in t (the stretch's arclength for
+ * internal resonance can start (a harmonic of the nonlinear mode meeting a natural frequency of
+ * another mode; Krack & Gross 2019, "Harmonic Balance for Nonlinear Vibration Problems"). The
+ * frequencies ω_r are those of the structure with its elements stuck, K_0 φ = ω² M φ, which the
+ * backbone starts from (nma_linear.c: a dense model's eigensolve gives all of them at no extra
+ * cost; a sparse model's subspace iteration only its own mode's, so a sparse model's are found by a
+ * dense solve up to FR_HB_NMA_SPARSE_ALL_MODES dofs, and above it has none). Between two
+ * consecutive stored points i and i + 1 a crossing of (k, r) is a change of sign of g = k ω − ω_r
+ * (g >= 0 at one, g < 0 at the other: a zero counts once); it is placed at the fraction t = g_i /
+ * (g_i − g_{i+1}) of the stretch, a and ω linear in t (the stretch's arclength for
  * fricreg_hb_nma_continue, its log a for fricreg_hb_nma, both to the chord's accuracy). */
 #include <math.h>
 #include <stdlib.h>
