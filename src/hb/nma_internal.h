@@ -76,8 +76,8 @@ void fr_hb_nma_back(const double *L, const double *V, size_t n, size_t c, double
  * sparse model has neither. */
 #define FR_HB_NMA_SPARSE_ALL_MODES 256
 
-/* Every mode of a dense (or small sparse) model's stuck structure (as fr_hb_nma_linear's mode k): φ_r
- * mass-normalized into Phi's row r (n x n, row-major), ascending in ω_r. FRICREG_OK,
+/* Every mode of a dense (or small sparse) model's stuck structure (as fr_hb_nma_linear's mode
+ * k): φ_r mass-normalized into Phi's row r (n x n, row-major), ascending in ω_r. FRICREG_OK,
  * FRICREG_ENOTPSD, FRICREG_ENONFINITE, FRICREG_EINVAL, FRICREG_ENOMEM (message recorded, with
  * fn). */
 int fr_hb_nma_modes(fricreg_hb *hb, const char *fn, double *Phi);
