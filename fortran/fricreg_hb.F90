@@ -65,6 +65,10 @@ module fricreg_hb_m
     procedure :: nma_continue => hb_nma_continue
     procedure :: nma_folds => hb_nma_folds
     procedure :: nma_fold => hb_nma_fold
+    procedure :: nma_harmonic_energy => hb_nma_harmonic_energy
+    procedure :: nma_modal_participation => hb_nma_modal_participation
+    procedure :: nma_crossings => hb_nma_crossings
+    procedure :: nma_crossing => hb_nma_crossing
     procedure, private :: hb_shape
     final :: hb_final
   end type
@@ -773,5 +777,70 @@ contains
     if (status == FRICREG_OK) &
       status = self%record(fricreg_hb_nma_fold(self%ptr, as_size(i - 1), amplitude, omega, zeta))
   end function hb_nma_fold
+
+  !> The share of each harmonic in the kinetic energy of point i (1 <= i <= nma_points()) of the
+  !> last backbone: fraction(h + 1) harmonic h's, h = 0..H (size H + 1; fraction(1), the mean's,
+  !> is 0), adding up to 1 (fricreg_hb_nma_harmonic_energy). Its statuses.
+  function hb_nma_harmonic_energy(self, i, fraction) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    integer, intent(in) :: i
+    real(c_double), intent(inout), contiguous :: fraction(:)
+    integer(c_int) :: status
+    status = self%ready('nma_harmonic_energy', 'HB driver')
+    if (status == FRICREG_OK .and. i < 1) &
+      status = self%fail(FRICREG_EINVAL, 'nma_harmonic_energy: i must be >= 1 (Fortran counts '// &
+                         'from 1)')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_hb_nma_harmonic_energy(self%ptr, as_size(i - 1), &
+                                                          as_size(size(fraction)), fraction))
+  end function hb_nma_harmonic_energy
+
+  !> The share of each linear mode of the structure with its elements stuck in harmonic
+  !> `harmonic` (0..H; 0 the mean) of the displacements at point i (1 <= i <= nma_points()):
+  !> fraction(r) mode r's (size ndof, mode 1 the lowest), adding up to 1; dense models and
+  !> sparse ones up to 256 dofs (fricreg_hb_nma_modal_participation). Its statuses.
+  function hb_nma_modal_participation(self, i, harmonic, fraction) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    integer, intent(in) :: i, harmonic
+    real(c_double), intent(inout), contiguous :: fraction(:)
+    integer(c_int) :: status
+    status = self%ready('nma_modal_participation', 'HB driver')
+    if (status == FRICREG_OK .and. i < 1) &
+      status = self%fail(FRICREG_EINVAL, 'nma_modal_participation: i must be >= 1 (Fortran '// &
+                         'counts from 1)')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_hb_nma_modal_participation(self%ptr, as_size(i - 1), &
+                                                              int(harmonic, c_int), &
+                                                              as_size(size(fraction)), fraction))
+  end function hb_nma_modal_participation
+
+  !> Number of crossings of a harmonic k omega (k >= 2) with another linear mode's frequency
+  !> along the last backbone (0 if none; fricreg_hb_nma_crossings).
+  integer function hb_nma_crossings(self)
+    class(fricreg_hb_driver), intent(in) :: self
+    hb_nma_crossings = int(fricreg_hb_nma_crossings(self%ptr))
+  end function hb_nma_crossings
+
+  !> Crossing i (1 <= i <= nma_crossings()) of the last backbone: the harmonic k, the linear
+  !> mode crossed (from 1, as nma's mode), the modal amplitude and the backbone's omega (rad/s)
+  !> there, k omega = omega_mode (fricreg_hb_nma_crossing). Its statuses.
+  function hb_nma_crossing(self, i, harmonic, mode, amplitude, omega) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    integer, intent(in) :: i
+    integer, intent(inout) :: harmonic, mode
+    real(c_double), intent(inout) :: amplitude, omega
+    integer(c_int) :: status, k
+    integer(c_size_t) :: r
+    status = self%ready('nma_crossing', 'HB driver')
+    if (status == FRICREG_OK .and. i < 1) &
+      status = self%fail(FRICREG_EINVAL, 'nma_crossing: i must be >= 1 (Fortran counts from 1)')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_hb_nma_crossing(self%ptr, as_size(i - 1), k, r, amplitude, &
+                                                   omega))
+    if (status == FRICREG_OK) then
+      harmonic = int(k)
+      mode = int(r) + 1
+    end if
+  end function hb_nma_crossing
 
 end module fricreg_hb_m

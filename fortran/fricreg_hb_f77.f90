@@ -42,6 +42,10 @@
 !   FRHBNC(H, MODE, IDAMP, A0, A1, NP, STAT)          _nma_continue (MODE from 1)
 !   FRHBNF(H, NF, STAT)                               _nma_folds
 !   FRHBNG(H, I, A, OMEGA, ZETA, STAT)                _nma_fold (I from 1)
+!   FRHBNE(H, I, NH, FRAC, STAT)                      _nma_harmonic_energy (I from 1)
+!   FRHBNR(H, I, IHARM, NM, FRAC, STAT)               _nma_modal_participation (I from 1)
+!   FRHBNX(H, NX, STAT)                               _nma_crossings
+!   FRHBNY(H, I, K, MODE, A, OMEGA, STAT)             _nma_crossing (I, MODE from 1)
 !   FRHBGL(H, OMEGA, L0, L1, NQ, IGUESS, Q0, STAT)    _continue_level (IGUESS = 1: Q0 the guess)
 !   FRHBPL(H, K, LEVEL, STAT)                         _point_level (K from 1)
 !   FRHBBL(H, I, LEVEL, STAT)                         _bifurcation_level (I from 1)
@@ -649,3 +653,80 @@ subroutine frhber(h, code, msg, stat)
   stat = fricreg_f77_last_error(h, fricreg_hb_errcode, fricreg_hb_errmsg, last, msg)
   code = last
 end subroutine frhber
+
+!> FRHBNE(H, I, NH, FRAC, STAT): the share FRAC(J + 1) of harmonic J = 0..H in the kinetic
+!> energy of point I (from 1) of the last backbone, NH = H + 1 (FRAC(1) = 0), adding up to 1
+!> (fricreg_hb_nma_harmonic_energy).
+subroutine frhbne(h, i, nh, frac, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: i, nh
+  double precision, intent(inout) :: frac(*)
+  integer, intent(out) :: stat
+  if (i < 1 .or. nh < 0) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  stat = int(fricreg_hb_nma_harmonic_energy(fricreg_handle_to_ptr(h), int(i - 1, c_size_t), &
+                                            int(nh, c_size_t), frac))
+end subroutine frhbne
+
+!> FRHBNR(H, I, IHARM, NM, FRAC, STAT): the share FRAC(R) of the stuck structure's mode R
+!> (from 1, NM = NDOF of them) in harmonic IHARM (0..H; 0 the mean) of point I (from 1) of the
+!> last backbone, adding up to 1; dense models, sparse ones up to 256 dofs
+!> (fricreg_hb_nma_modal_participation).
+subroutine frhbnr(h, i, iharm, nm, frac, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: i, iharm, nm
+  double precision, intent(inout) :: frac(*)
+  integer, intent(out) :: stat
+  if (i < 1 .or. nm < 0) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  stat = int(fricreg_hb_nma_modal_participation(fricreg_handle_to_ptr(h), int(i - 1, c_size_t), &
+                                                int(iharm, c_int), int(nm, c_size_t), frac))
+end subroutine frhbnr
+
+!> FRHBNX(H, NX, STAT): the number NX of crossings of a harmonic K OMEGA with another linear
+!> mode's frequency along the last backbone (fricreg_hb_nma_crossings).
+subroutine frhbnx(h, nx, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(out) :: nx, stat
+  nx = int(fricreg_hb_nma_crossings(fricreg_handle_to_ptr(h)))
+  stat = int(FRICREG_OK)
+end subroutine frhbnx
+
+!> FRHBNY(H, I, K, MODE, A, OMEGA, STAT): crossing I (from 1) of the last backbone: harmonic K,
+!> the linear mode MODE crossed (from 1), the modal amplitude A and the backbone's OMEGA there,
+!> K OMEGA = OMEGA_MODE (fricreg_hb_nma_crossing).
+subroutine frhbny(h, i, k, mode, a, omega, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: i
+  integer, intent(inout) :: k, mode
+  double precision, intent(inout) :: a, omega
+  integer, intent(out) :: stat
+  integer(c_int) :: kc
+  integer(c_size_t) :: rc
+  if (i < 1) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  stat = int(fricreg_hb_nma_crossing(fricreg_handle_to_ptr(h), int(i - 1, c_size_t), kc, rc, a, &
+                                     omega))
+  if (stat == FRICREG_OK) then
+    k = int(kc)
+    mode = int(rc) + 1
+  end if
+end subroutine frhbny

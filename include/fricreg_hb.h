@@ -711,7 +711,10 @@ enum fricreg_hb_nma_damping {
  *  backbone is monotone in a; a backbone that folds in a (an internal resonance: a harmonic
  *  k ω meeting another mode's frequency) stops the march (fricreg_hb_nma_continue passes
  *  it). The points are stored (fricreg_hb_nma_points, fricreg_hb_nma_point), replacing those
- *  of an earlier call; the forced response's solution and branch are not changed.
+ *  of an earlier call; the forced response's solution and branch are not changed. Since 1.8
+ *  the crossings of a harmonic k ω with another stuck mode's frequency are found on the stored
+ *  points (fricreg_hb_nma_crossings; a sparse model of at most 256 dofs then solves its dense
+ *  eigenproblem too).
  *
  *  Cost per Newton iteration: the H + 1 factors of the forced response and a real LU of order
  *  m (2H + 1) + 2; once per call the linear mode: a dense model's dense eigenproblem of order
@@ -840,6 +843,96 @@ FRICREG_API size_t fricreg_hb_nma_folds(const fricreg_hb *hb);
  *  if i is out of range. Nothing is written on failure. Since 1.8 (FRICREG_1.8). */
 FRICREG_API int fricreg_hb_nma_fold(fricreg_hb *hb, size_t i, double *amplitude, double *omega,
                                     double *zeta);
+
+/** The share of each harmonic in the kinetic energy of point i of the last backbone
+ *  (fricreg_hb_nma or fricreg_hb_nma_continue): where it rises above the fundamental's
+ *  neighbourhood, energy flows into a higher harmonic (an internal resonance; Krack & Gross
+ *  2019). The measure is the kinetic energy averaged over a period, which the
+ *  harmonics share without cross terms (they are orthogonal over a period: Parseval), unlike
+ *  its peak or the potential energy (which the elements' hysteresis does not define per
+ *  harmonic): with X_h = a_h cos(hωt) + b_h sin(hωt) the displacements' harmonic h
+ *  (fricreg_hb_nma_point),
+ *
+ *      T_h = (hω)²/4 (a_h^T M a_h + b_h^T M b_h),   fraction[h] = T_h / Σ_{j=1..H} T_j,
+ *
+ *  so fraction[0] = 0 (the mean does not move) and the fractions add up to 1 (to rounding).
+ *  Evaluates the point as fricreg_hb_nma_point with x does.
+ *
+ *  i            point index, 0 <= i < fricreg_hb_nma_points(hb), as fricreg_hb_nma_point's.
+ *  nh           H + 1, the harmonics of the driver and the mean.
+ *  fraction[nh] out: fraction[h] the share of harmonic h, 0 <= h <= H, nondimensional.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb or fraction is NULL; FRICREG_ESIZE if nh is not
+ *  H + 1; FRICREG_EINVAL if i is out of range, the model or elements changed since the
+ *  backbone, or called from the monitor; FRICREG_ENONFINITE if the energy is not finite and
+ *  positive (an overflow); FRICREG_ESINGULAR, FRICREG_EINTEGRATOR, FRICREG_ENOMEM as
+ *  fricreg_hb_nma_point; FRICREG_ENOMEM (ndof (2H + 4) doubles during the call). Nothing is
+ *  written on failure. Since 1.8 (FRICREG_1.8). */
+FRICREG_API int fricreg_hb_nma_harmonic_energy(fricreg_hb *hb, size_t i, size_t nh,
+                                               double fraction[]);
+
+/** The share of each linear mode of the structure with its elements stuck (K_0 φ_r = ω_r² M φ_r,
+ *  the linearization the backbone starts from: fricreg_hb_nma's comment; every mode r, φ_r
+ *  mass-normalized, ascending in ω_r, numbered as the backbone's mode argument) in harmonic h of
+ *  the displacements at point i of the last backbone: which mode a harmonic excites (near an
+ *  internal resonance, a higher harmonic moves mostly another mode). With a_h, b_h as
+ *  fricreg_hb_nma_harmonic_energy's (h = 0: the mean x_0, b_0 = 0),
+ *
+ *      p_r = (φ_r^T M a_h)² + (φ_r^T M b_h)²,   fraction[r] = p_r / Σ_s p_s,
+ *
+ *  which adds up to 1 (Σ_s p_s = a_h^T M a_h + b_h^T M b_h: the modes are M-orthonormal and
+ *  complete), every fraction 0 where harmonic h is exactly zero. The modes are solved once per
+ *  backbone, at the first call (the dense eigenproblem of order ndof, O(ndof³), and ndof²
+ *  doubles kept with the backbone); a sparse model's too, densified, up to 256 dofs (its
+ *  subspace iteration finds its own mode only; above, FRICREG_EINVAL).
+ *
+ *  i                 point index, as fricreg_hb_nma_point's.
+ *  harmonic          h, 0 <= h <= H (0: the mean, 1: the fundamental).
+ *  nmodes            ndof: every mode of the stuck structure.
+ *  fraction[nmodes]  out: fraction[r] the share of mode r (from 0, the lowest), nondimensional.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb or fraction is NULL; FRICREG_ESIZE if nmodes is not
+ *  ndof; FRICREG_EINVAL if i or harmonic is out of range, the model is sparse with more than
+ *  256 dofs, the model or elements changed since the backbone, or called from the monitor;
+ *  FRICREG_ENOTPSD,
+ *  FRICREG_ENONFINITE as fricreg_hb_nma's linear mode; FRICREG_ESINGULAR,
+ *  FRICREG_EINTEGRATOR, FRICREG_ENOMEM as fricreg_hb_nma_point; FRICREG_ENOMEM (the modes'
+ *  ndof² doubles, 4 ndof² during their solve, ndof (2H + 4) during the call). Nothing is
+ *  written on failure. Since 1.8 (FRICREG_1.8). */
+FRICREG_API int fricreg_hb_nma_modal_participation(fricreg_hb *hb, size_t i, int harmonic,
+                                                   size_t nmodes, double fraction[]);
+
+/** Number of crossings found along the last backbone (fricreg_hb_nma or
+ *  fricreg_hb_nma_continue, on the points it stored, also when it failed): places where a
+ *  harmonic k ω of the mode (k = 2..H) crosses the frequency ω_r of another linear mode r of the
+ *  structure with its elements stuck (fricreg_hb_nma_modal_participation's modes, r not the
+ *  backbone's mode), where an internal resonance can start. Between two consecutive stored
+ *  points a crossing is a change of sign of g = k ω − ω_r (g >= 0 at one, g < 0 at the other),
+ *  placed at the fraction t = g_i / (g_i − g_{i+1}) of the stretch with a and ω linear in t
+ *  (along the stretch's arclength after fricreg_hb_nma_continue, its log a after
+ *  fricreg_hb_nma: the chord's accuracy, so k ω = ω_r there to rounding while a is off by the
+ *  branch's curvature times the stretch²). Found at the backbone's end, in the points' order,
+ *  by k then r within a stretch. A sparse model's ω_r are found densified up to 256 dofs (its
+ *  subspace iteration finds its own mode only; fricreg_hb_nma and fricreg_hb_nma_continue then
+ *  also allocate 4 ndof² doubles and solve the dense eigenproblem, O(ndof³)); above, it has
+ *  none. 0 if none, no backbone or hb is NULL. Returns that number, not a status. Since 1.8
+ *  (FRICREG_1.8). */
+FRICREG_API size_t fricreg_hb_nma_crossings(const fricreg_hb *hb);
+
+/** Crossing i of the last backbone (fricreg_hb_nma_crossings says where they are found).
+ *
+ *  i           0 <= i < fricreg_hb_nma_crossings(hb).
+ *  harmonic    out: k, 2 <= k <= H.
+ *  mode        out: r, the linear mode crossed, from 0 in ascending order of ω_r (as the
+ *              backbone's mode argument).
+ *  amplitude   out: the modal amplitude a there (fricreg_hb_nma's units).
+ *  omega       out: the backbone's natural frequency ω there, rad/s (k ω = ω_r).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb, harmonic, mode, amplitude or omega is NULL;
+ *  FRICREG_EINVAL if i is out of range. Nothing is written on failure. Since 1.8
+ *  (FRICREG_1.8). */
+FRICREG_API int fricreg_hb_nma_crossing(fricreg_hb *hb, size_t i, int *harmonic, size_t *mode,
+                                        double *amplitude, double *omega);
 
 /** \} */
 

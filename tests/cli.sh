@@ -949,9 +949,11 @@ printf '%s\n' "%%MatrixMarket matrix coordinate real general" "1 1 1" "1 1 1" >"
 echo "2 3" >"$d/P.txt"
 nma="nma --mass $d/M.mtx --stiffness $d/M.mtx --jenkins $d/J.mtx --jenkins-params $d/P.txt --harmonics 1 --amplitude-start 0.5 --amplitude-end 500"
 total=$((total + 1))
-# closed_form_rows FILE ROWS: FILE is the backbone's CSV with ROWS rows, each on the closed form.
+# closed_form_rows FILE ROWS: FILE is the backbone's CSV with ROWS rows, each on the closed form
+# (at H = 1 the one harmonic carries all the kinetic energy: e_h1 = 1).
 closed_form_rows() {
-    [ "$(head -n 1 "$1")" = "amplitude,omega,zeta" ] && awk -F, -v want="$2" 'NR > 1 { a = $1; w2 = 3; z = 0
+    [ "$(head -n 1 "$1")" = "amplitude,omega,zeta,e_h1" ] && awk -F, -v want="$2" 'NR > 1 { a = $1; w2 = 3; z = 0
+        if ($4 != 1) bad++
         if (a > 1.5) { c = 1 - 3 / a; b = atan2(sqrt(1 - c * c), c); pi = atan2(0, -1)
             w2 = 1 + 2 / pi * (b - sin(2 * b) / 2); z = 12 * (a - 1.5) / (2 * pi * a * a * w2) }
         e = ($2 * $2 - w2) / w2; if (e < 0) e = -e; if (e > big) big = e
@@ -965,7 +967,7 @@ fi
 total=$((total + 1))
 # A march that fails writes what it reached: no point here, the summary saying so.
 if "$sim" $nma --max-seconds 0 >"$d/stopped.json" 2>"$d/err" || [ $? -ne 1 ] ||
-        ! grep -q '"points": 0, "folds": \[\], "complete": false, "error": "nma_continue: stopped' "$d/stopped.json" ||
+        ! grep -q '"points": 0, "folds": \[\], "crossings": \[\], "complete": false, "error": "nma_continue: stopped' "$d/stopped.json" ||
         ! grep -q "^fricreg-sim: nma: --max-seconds 0 passed: stopped (the backbone had reached 0 of its 20 points)$" "$d/err"; then
     echo "FAIL: nma --max-seconds 0: $(cat "$d/stopped.json" "$d/err")"; fails=$((fails + 1))
 fi
@@ -995,7 +997,9 @@ if ! closed_form_rows "$d/natural.csv" 12; then
 fi
 # A backbone that folds (tests/test_hb_nma_fold.c's two masses, a Jenkins element on dof 2: an
 # internal resonance through the third harmonic at a = 4.43): the summary lists its two folds,
-# and the written points go back in the amplitude between them; 1.7's march stops there.
+# and the written points go back in the amplitude between them; 1.7's march stops there. No
+# crossing: 3 omega stays above the second stuck mode's 3.2337 (tests/test_hb_nma_energy.c); the
+# third harmonic's share of the kinetic energy peaks near the folds (5.2e-4 at a = 4.47).
 printf '%s\n' "%%MatrixMarket matrix coordinate real symmetric" "2 2 2" "1 1 1" "2 2 1" >"$d/M2.mtx"
 printf '%s\n' "%%MatrixMarket matrix coordinate real symmetric" "2 2 3" "1 1 1.25" "2 1 -0.25" "2 2 0.45" >"$d/K2.mtx"
 printf '%s\n' "%%MatrixMarket matrix coordinate real general" "1 2 1" "1 2 1" >"$d/J2.mtx"
@@ -1003,14 +1007,25 @@ echo "10 1" >"$d/P2.txt"
 fold="nma --mass $d/M2.mtx --stiffness $d/K2.mtx --jenkins $d/J2.mtx --jenkins-params $d/P2.txt --harmonics 3 --amplitude-start 2 --amplitude-end 10"
 total=$((total + 1))
 if ! "$sim" $fold >"$d/fold.json" 2>"$d/err" ||
-        ! grep -q '"folds": \[{"amplitude": 4\.43[0-9]*, "omega": 1\.1143[0-9]*, "zeta": 0\.003[0-9]*}, {"amplitude": 4\.41[0-9]*, "omega": 1\.1148[0-9]*, "zeta": 0\.008[0-9]*}\], "complete": true' "$d/fold.json"; then
+        ! grep -q '"folds": \[{"amplitude": 4\.43[0-9]*, "omega": 1\.1143[0-9]*, "zeta": 0\.003[0-9]*}, {"amplitude": 4\.41[0-9]*, "omega": 1\.1148[0-9]*, "zeta": 0\.008[0-9]*}\], "crossings": \[\], "complete": true' "$d/fold.json"; then
     echo "FAIL: nma through a fold, the summary: $(cat "$d/fold.json" "$d/err")"; fails=$((fails + 1))
 fi
 total=$((total + 1))
 if ! "$sim" $fold --points 200 --output backbone >"$d/fold.csv" 2>"$d/err" ||
-        ! awk -F, 'NR > 2 && $1 < prev { back++ } NR > 1 { prev = $1; rows++ } END { exit !(rows == 200 && back > 0) }' "$d/fold.csv" ||
+        [ "$(head -n 1 "$d/fold.csv")" != "amplitude,omega,zeta,e_h1,e_h2,e_h3" ] ||
+        ! awk -F, 'NR > 2 && $1 < prev { back++ } NR > 1 { prev = $1; rows++; s = $4 + $5 + $6 - 1; if (s < 0) s = -s; if (s > 1e-12) bad++
+            if ($6 > top) { top = $6; at = $1 } } END { exit !(rows == 200 && back > 0 && !bad && top > 4e-4 && at > 4.3 && at < 4.6) }' "$d/fold.csv" ||
         "$sim" $fold --continuation natural >/dev/null 2>&1; then
     echo "FAIL: nma through a fold, the backbone: $(head -n 3 "$d/fold.csv") $(cat "$d/err")"; fails=$((fails + 1))
+fi
+# With kt = 11 the second stuck mode's frequency, sqrt(6.35 + sqrt(5.1^2 + 0.25^2)) = 3.38469,
+# lies in 3 omega's range: the summary names the crossing, mode 2 (from 1, as --mode), at
+# a = 5.04, omega = 3.384690/3 = 1.128230 (tests/test_hb_nma_energy.c).
+echo "11 1" >"$d/P3.txt"
+total=$((total + 1))
+if ! "$sim" ${fold%% --jenkins-params *} --jenkins-params $d/P3.txt --harmonics 3 --amplitude-start 2 --amplitude-end 10 --points 60 >"$d/cross.json" 2>"$d/err" ||
+        ! grep -q '"crossings": \[{"harmonic": 3, "mode": 2, "amplitude": 5\.0[0-9]*, "omega": 1\.128229[0-9]*}\]' "$d/cross.json"; then
+    echo "FAIL: nma, a crossing 3 omega = omega_2: $(cat "$d/cross.json" "$d/err")"; fails=$((fails + 1))
 fi
 expect_output '^usage: fricreg-sim nma --mass M\.mtx --stiffness K\.mtx' nma --help
 expect_output '^  nma         ' --help

@@ -2,9 +2,10 @@
 /* nma.c — `fricreg-sim nma`: the backbone of a nonlinear mode (its natural frequency and
  * damping ratio against its modal amplitude) of a linear structure with Jenkins, Iwan or
  * lift-off elements, by harmonic balance and the extended periodic motion concept
- * (fricreg_hb_nma), from the Matrix Market files of `hb` (hb_model.h); a JSON summary or a CSV
- * row amplitude,omega,zeta per point on stdout. Every bad option or file is one line on stderr
- * naming it, exit 2, nothing on stdout; a backbone that fails, exit 1. */
+ * (fricreg_hb_nma), from the Matrix Market files of `hb` (hb_model.h); a JSON summary (with the
+ * folds and the crossings k omega = omega_r) or a CSV row amplitude,omega,zeta,e_h1..e_hH (the
+ * harmonics' kinetic energy shares) per point on stdout. Every bad option or file is one line
+ * on stderr naming it, exit 2, nothing on stdout; a backbone that fails, exit 1. */
 #include <stdlib.h>
 #include <time.h>
 
@@ -82,9 +83,11 @@ static size_t nma_table(struct nma_options *o, struct cli_option table[])
          .help = "Newton's iterations at most per point, 1 to 1000"},
         CLI_DEADLINE_OPTION(&o->deadline),
         {"--output", CLI_CHOICE, .slot = &o->output, .words = nma_outputs,
-         .help = "a JSON summary (the backbone's ends, its largest damping ratio and its folds), "
-                 "or the backbone: a CSV row amplitude,omega,zeta per point, in the branch's "
-                 "order"}};
+         .help = "a JSON summary (the backbone's ends, its largest damping ratio, its folds "
+                 "and its crossings: where a harmonic k omega crosses another linear mode's "
+                 "frequency, that mode counted from 1 as --mode), or the backbone: a CSV row "
+                 "amplitude,omega,zeta,e_h1,...,e_hH per point, in the branch's order, e_hk the "
+                 "share of harmonic k in the mode's kinetic energy (they add up to 1)"}};
     return cli_copy_rows(table, opts, sizeof opts / sizeof opts[0]);
 }
 
@@ -96,18 +99,24 @@ int cli_parse_nma(int argc, char **argv, struct nma_options *o)
     return status != 0 ? status : check_options(o);
 }
 
-/* The backbone's points: a[k], omega[k], zeta[k] at pts[3 k ..], then its folds' the same
- * way, into one array the caller frees. */
-static int collect(fricreg_hb *hb, size_t *npoints, size_t *nfolds, double **pts)
+/* The backbone's points: per point a, omega, zeta and the shares e_h1..e_hH of the harmonics
+ * in its kinetic energy (fricreg_hb_nma_harmonic_energy; e_h0 is 0 by definition), stride
+ * 3 + H, then its folds' a, omega, zeta, stride 3, into one array the caller frees. */
+static int collect(fricreg_hb *hb, int H, size_t *npoints, size_t *nfolds, double **pts)
 {
-    size_t K = fricreg_hb_nma_points(hb), F = fricreg_hb_nma_folds(hb);
-    *pts = malloc((K + F > 0 ? 3 * (K + F) : 1) * sizeof **pts);
+    size_t K = fricreg_hb_nma_points(hb), F = fricreg_hb_nma_folds(hb), w = 3 + (size_t)H;
+    *pts = malloc((K * w + 3 * F + (size_t)H + 2) * sizeof **pts);
     if (*pts == NULL)
         return cli_usage_error("nma", "out of memory");
+    double *e = *pts + K * w + 3 * F; /* H + 1 shares */
     for (size_t k = 0; k < K + F; k++) {
-        double *p = *pts + 3 * k;
+        double *p = k < K ? *pts + w * k : *pts + K * w + 3 * (k - K);
         int status = k < K ? fricreg_hb_nma_point(hb, k, &p[0], &p[1], &p[2], 0, 0, NULL)
                            : fricreg_hb_nma_fold(hb, k - K, &p[0], &p[1], &p[2]);
+        if (status == FRICREG_OK && k < K &&
+            (status = fricreg_hb_nma_harmonic_energy(hb, k, (size_t)H + 1, e)) == FRICREG_OK)
+            for (int h = 1; h <= H; h++)
+                p[2 + h] = e[h];
         if (status != FRICREG_OK)
             return cli_usage_error("nma", fricreg_hb_errmsg(hb));
     }
@@ -116,22 +125,44 @@ static int collect(fricreg_hb *hb, size_t *npoints, size_t *nfolds, double **pts
     return 0;
 }
 
-static void write_backbone(FILE *out, size_t K, const double pts[])
+static void write_backbone(FILE *out, int H, size_t K, const double pts[])
 {
-    fprintf(out, "amplitude,omega,zeta\n");
+    size_t w = 3 + (size_t)H;
+    fprintf(out, "amplitude,omega,zeta");
+    for (int h = 1; h <= H; h++)
+        fprintf(out, ",e_h%d", h);
+    fputc('\n', out);
     for (size_t k = 0; k < K; k++)
-        fprintf(out, "%.17g,%.17g,%.17g\n", pts[3 * k], pts[3 * k + 1], pts[3 * k + 2]);
+        for (size_t j = 0; j < w; j++)
+            fprintf(out, "%.17g%c", pts[w * k + j], j + 1 < w ? ',' : '\n');
+}
+
+/* The crossings of a harmonic k omega with another linear mode's frequency, the mode from 1 as
+ * --mode (fricreg_hb_nma_crossings). */
+static void write_crossings(FILE *out, fricreg_hb *hb)
+{
+    fputs(", \"crossings\": [", out);
+    for (size_t i = 0; i < fricreg_hb_nma_crossings(hb); i++) {
+        int k;
+        size_t r;
+        double a, w;
+        if (fricreg_hb_nma_crossing(hb, i, &k, &r, &a, &w) == FRICREG_OK)
+            fprintf(out,
+                    "%s{\"harmonic\": %d, \"mode\": %zu, \"amplitude\": %.17g, \"omega\": %.17g}",
+                    i ? ", " : "", k, r + 1, a, w);
+    }
+    fputs("]", out);
 }
 
 /* The summary; error is NULL for a complete backbone, else the failure's message (the points
  * are those reached); the folds (a, omega, zeta each) found, in the branch's order. */
-static void write_summary(FILE *out, const struct nma_options *o, const struct cli_hb_model *md,
-                          size_t K, const double pts[], size_t nfolds, const double folds[],
-                          double cpu, const char *error)
+static void write_summary(FILE *out, fricreg_hb *hb, const struct nma_options *o,
+                          const struct cli_hb_model *md, size_t K, const double pts[],
+                          size_t nfolds, const double folds[], double cpu, const char *error)
 {
-    size_t top = 0;
+    size_t top = 0, w = 3 + (size_t)o->harmonics;
     for (size_t k = 1; k < K; k++)
-        if (pts[3 * k + 2] > pts[3 * top + 2])
+        if (pts[w * k + 2] > pts[w * top + 2])
             top = k;
     fprintf(out,
             "{\"command\": \"nma\", \"ndof\": %zu, \"elements\": %zu, \"element_kind\": \"%s\", "
@@ -142,12 +173,13 @@ static void write_summary(FILE *out, const struct nma_options *o, const struct c
     size_t at[3] = {0, K - 1, top};
     for (int j = 0; j < 3 && K > 0; j++)
         fprintf(out, ", \"%s\": {\"amplitude\": %.17g, \"omega\": %.17g, \"zeta\": %.17g}",
-                names[j], pts[3 * at[j]], pts[3 * at[j] + 1], pts[3 * at[j] + 2]);
+                names[j], pts[w * at[j]], pts[w * at[j] + 1], pts[w * at[j] + 2]);
     fputs(", \"folds\": [", out);
     for (size_t i = 0; i < nfolds; i++)
         fprintf(out, "%s{\"amplitude\": %.17g, \"omega\": %.17g, \"zeta\": %.17g}", i ? ", " : "",
                 folds[3 * i], folds[3 * i + 1], folds[3 * i + 2]);
     fputs("]", out);
+    write_crossings(out, hb);
     fprintf(out, ", \"complete\": %s", error == NULL ? "true" : "false");
     if (error != NULL) {
         fputs(", \"error\": ", out);
@@ -171,11 +203,11 @@ static int run_nma(fricreg_hb *hb, struct nma_options *o, const struct cli_hb_mo
     double cpu = (double)(clock() - start) / CLOCKS_PER_SEC;
     size_t K = 0, F = 0;
     double *pts = NULL;
-    int status = collect(hb, &K, &F, &pts);
+    int status = collect(hb, o->harmonics, &K, &F, &pts);
     if (status == 0 && o->output == NMA_BACKBONE)
-        write_backbone(out, K, pts);
+        write_backbone(out, o->harmonics, K, pts);
     else if (status == 0)
-        write_summary(out, o, md, K, pts, F, pts + 3 * K, cpu,
+        write_summary(out, hb, o, md, K, pts, F, pts + (3 + (size_t)o->harmonics) * K, cpu,
                       run == FRICREG_OK ? NULL : fricreg_hb_errmsg(hb));
     free(pts);
     if (status == 0 && run != FRICREG_OK) {
@@ -238,7 +270,12 @@ const struct cli_command cli_nma_command = {
     "--amplitude-end by pseudo-arclength continuation: it passes the folds of the backbone in "
     "the amplitude (internal resonances), which the summary lists (\"folds\"), and writes "
     "--points points at equal arclength along the branch, in its order (--continuation natural: "
-    "1.7's march, at --points amplitudes log-spaced, stopping at a fold).\n\n"
+    "1.7's march, at --points amplitudes log-spaced, stopping at a fold). Each point says what "
+    "it is made of: the share of each harmonic in its kinetic energy (e_h1..e_hH: a higher "
+    "harmonic's share rising is energy flowing into it, fricreg_hb_nma_harmonic_energy); the "
+    "summary lists where a harmonic k omega (k >= 2) crosses the frequency of another mode of "
+    "the structure with its elements stuck (\"crossings\", sparse models up to 256 dofs: "
+    "fricreg_hb_nma_crossings).\n\n"
     "ELEMENTS is one parameter file, a line per row of J.mtx: --jenkins-params, --iwan-params "
     "or --iwan-segalman, or --normal with --normal-params (lift-off).",
     nma_help_table};

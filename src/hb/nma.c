@@ -28,6 +28,8 @@ void fr_hb_nma_free(struct fr_hb_nma *nma)
     free(nma->piv);
     free(nma->pts);
     free(nma->folds);
+    free(nma->cross);
+    free(nma->modes);
     free(nma);
 }
 
@@ -40,7 +42,7 @@ static struct fr_hb_nma *alloc_state(const fricreg_hb *hb, size_t npoints)
         return NULL;
     *s = (struct fr_hb_nma){
         .n = n, .nq = nq, .nd = nd, .nc = hb->nc, .cap = npoints, .stride = nq + 3};
-    s->phi = calloc(3 * n, sizeof(double));
+    s->phi = calloc(4 * n, sizeof(double));
     s->dGx = malloc((2 * H1 * m * m + 2 * H1 * m) * sizeof(double));
     s->A = malloc((nd * nd + 10 * nd) * sizeof(double));
     s->piv = malloc(nd * sizeof *s->piv);
@@ -51,6 +53,7 @@ static struct fr_hb_nma *alloc_state(const fricreg_hb *hb, size_t npoints)
     }
     s->w = s->phi + n;
     s->zero = s->w + n;
+    s->lambda = s->zero + n;
     s->dgx = s->dGx + 2 * H1 * m * m;
     double *v = s->A + nd * nd;
     double **vecs[8] = {&s->y, &s->yt, &s->R, &s->Rt, &s->dy, &s->col, &s->yc, &s->yo};
@@ -207,6 +210,7 @@ int fr_hb_nma_run(fricreg_hb *hb, const char *fn, size_t mode, int damping, doub
     hb->nma = s;
     hb->have_backbone = 1;
     s->modal = damping == FRICREG_HB_NMA_DAMPING_MODAL;
+    s->mode = mode;
     struct fr_error before = hb->err; /* a success keeps it: halved steps' failures are not
                                          the call's */
     if ((status = fr_hb_nma_linear(hb, fn, mode, s)) != FRICREG_OK)
@@ -215,6 +219,8 @@ int fr_hb_nma_run(fricreg_hb *hb, const char *fn, size_t mode, int damping, doub
     fr_hb_begin(hb, 0);
     status = fr_hb_end(hb, body(hb, fn, s, a0, a1, npoints));
     fr_hb_nma_leave(hb, s);
+    if (fr_hb_nma_find_crossings(s) != FRICREG_OK && status == FRICREG_OK) /* points reached */
+        status = fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for the backbone's crossings", fn);
     if (status == FRICREG_OK)
         hb->err = before;
     return status;

@@ -14,10 +14,24 @@
 
 #define MAX_DENSE_DOFS 4096
 
-/* The dense model's M, K and damping C (or Rayleigh's) as n x n, row-major. */
+/* The model's M, K and damping C (or Rayleigh's) as n x n, row-major: a dense model's copied, a
+ * sparse one's (its pattern holds both triangles) spread out. */
 static void densify(const fricreg_hb *hb, double *M, double *K, double *C)
 {
     size_t n = hb->n;
+    if (hb->sparse) {
+        memset(M, 0, n * n * sizeof *M);
+        memset(K, 0, n * n * sizeof *K);
+        memset(C, 0, n * n * sizeof *C);
+        for (size_t j = 0; j < n; j++)
+            for (int64_t p = hb->Dp[j]; p < hb->Dp[j + 1]; p++) {
+                size_t i = (size_t)hb->Di[p];
+                M[i * n + j] = hb->vM[p];
+                K[i * n + j] = hb->vK[p];
+                C[i * n + j] = hb->rayleigh ? hb->a0 * hb->vM[p] + hb->a1 * hb->vK[p] : hb->vC[p];
+            }
+        return;
+    }
     memcpy(M, hb->M, n * n * sizeof *M);
     memcpy(K, hb->K, n * n * sizeof *K);
     memcpy(C, hb->C, n * n * sizeof *C);
@@ -99,7 +113,50 @@ static int dense_mode(fricreg_hb *hb, const char *fn, size_t mode, double *buf,
     if (status != FRICREG_OK)
         return fr_fail(hb, status, "%s: M is not positive definite", fn);
     fr_hb_nma_reduce(M, K, n);
-    return eigen_mode(hb, fn, K, M, V, work, mode, nma->phi, lambda);
+    status = eigen_mode(hb, fn, K, M, V, work, mode, nma->phi, lambda);
+    if (status == FRICREG_OK) { /* every mode's ω², for the crossings (nma_crossings.c) */
+        memcpy(nma->lambda, work, n * sizeof *work);
+        nma->nlambda = n;
+    }
+    return status;
+}
+
+/* Every stuck mode, densified: φ_r into Phi's row r if Phi is not NULL, ω_r² into lambda[n]. */
+static int all_modes(fricreg_hb *hb, const char *fn, double *Phi, double *lambda)
+{
+    size_t n = hb->n;
+    double *buf = malloc((4 * n * n + 5 * n) * sizeof *buf);
+    if (buf == NULL)
+        return fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for the linear modes of %zu dofs", fn, n);
+    double *M = buf, *K = M + n * n, *C = K + n * n, *V = C + n * n, *work = V + n * n;
+    densify(hb, M, K, C);
+    add_stuck(hb, K);
+    int status = fr_hb_nma_cholesky(M, n);
+    if (status != FRICREG_OK)
+        status = fr_fail(hb, status, "%s: M is not positive definite", fn);
+    else {
+        double l0;
+        fr_hb_nma_reduce(M, K, n);
+        status = eigen_mode(hb, fn, K, M, V, work, 0, Phi != NULL ? Phi : C, &l0);
+    }
+    if (status == FRICREG_OK)
+        memcpy(lambda, work, n * sizeof *work);
+    for (size_t r = 0; r < n && status == FRICREG_OK && Phi != NULL; r++) {
+        fr_hb_nma_back(M, V, n, r, Phi + r * n);
+        orient(Phi + r * n, n);
+    }
+    free(buf);
+    return status;
+}
+
+int fr_hb_nma_modes(fricreg_hb *hb, const char *fn, double *Phi)
+{
+    double *lambda = malloc(hb->n * sizeof *lambda);
+    if (lambda == NULL)
+        return fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for %zu modes", fn, hb->n);
+    int status = all_modes(hb, fn, Phi, lambda);
+    free(lambda);
+    return status;
 }
 
 /* w = M φ and ξ_k = φ^T C φ (C or Rayleigh's a0 M + a1 K) on the sparse pattern. */
@@ -163,5 +220,8 @@ int fr_hb_nma_linear(fricreg_hb *hb, const char *fn, size_t mode, struct fr_hb_n
         nma->a_stick = stick_amplitude(hb, phi);
     }
     free(buf);
+    if (status == FRICREG_OK && hb->sparse && n <= FR_HB_NMA_SPARSE_ALL_MODES &&
+        (status = all_modes(hb, fn, NULL, nma->lambda)) == FRICREG_OK)
+        nma->nlambda = n; /* a small sparse model's every mode, for the crossings */
     return status;
 }
