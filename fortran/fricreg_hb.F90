@@ -54,6 +54,8 @@ module fricreg_hb_m
     procedure :: point_level => hb_point_level
     procedure :: peak => hb_peak
     procedure :: set_stability => hb_set_stability
+    procedure :: set_stability_method => hb_set_stability_method
+    procedure :: stability_method => hb_stability_method
     procedure :: stability => hb_stability
     procedure :: truncation_error => hb_truncation_error
     procedure :: bifurcations => hb_bifurcations
@@ -587,9 +589,9 @@ contains
                                                      omega, rms))
   end function hb_peak
 
-  !> Compute each solution's stability by Hill's method from now on (enable .true.), or stop
-  !> (fricreg_hb_set_stability). FRICREG_EINVAL (a sparse model, or too many coefficients);
-  !> FRICREG_ENOMEM.
+  !> Compute each solution's stability from now on (enable .true.), or stop
+  !> (fricreg_hb_set_stability), by the method of set_stability_method. FRICREG_EINVAL (Hill's
+  !> method in force with too many coefficients); FRICREG_ENOMEM.
   function hb_set_stability(self, enable) result(status)
     class(fricreg_hb_driver), intent(inout) :: self
     logical, intent(in) :: enable
@@ -600,6 +602,31 @@ contains
     status = self%ready('set_stability', 'HB driver')
     if (status == FRICREG_OK) status = self%record(fricreg_hb_set_stability(self%ptr, on))
   end function hb_set_stability
+
+  !> How the stability of the next solutions is computed (fricreg_hb_set_stability_method):
+  !> FRICREG_HB_STABILITY_AUTO (the default: the exact monodromy where the elements are piecewise
+  !> linear, Hill's method otherwise), _HILL or _MONODROMY. FRICREG_EINVAL for another value.
+  !> Since 1.8.
+  function hb_set_stability_method(self, method) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    integer, intent(in) :: method
+    integer(c_int) :: status
+    status = self%ready('set_stability_method', 'HB driver')
+    if (status == FRICREG_OK) status = self%record(fricreg_hb_set_stability_method(self%ptr, &
+                                                     int(method, c_int)))
+  end function hb_set_stability_method
+
+  !> The method that computes the next solution's stability, FRICREG_HB_STABILITY_HILL or
+  !> _MONODROMY (the automatic choice resolved; fricreg_hb_get_stability_method). Since 1.8.
+  function hb_stability_method(self, method) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    integer, intent(inout) :: method
+    integer(c_int) :: status, m
+    status = self%ready('get_stability_method', 'HB driver')
+    m = 0
+    if (status == FRICREG_OK) status = self%record(fricreg_hb_get_stability_method(self%ptr, m))
+    if (status == FRICREG_OK) method = int(m)
+  end function hb_stability_method
 
   !> The stability of point k (1 <= k <= points()), or with k = 0 of the last solution
   !> (fricreg_hb_point_stability): stable, and the largest |Floquet multiplier| mu_max.

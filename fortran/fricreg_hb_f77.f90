@@ -33,6 +33,8 @@
 !   FRHBPT(H, K, OMEGA, NDOF, RMS, STAT)              _point (K from 1)
 !   FRHBPK(H, IDOF, OMEGA, RMS, STAT)                 _peak (IDOF from 1)
 !   FRHBST(H, ION, STAT)                              _set_stability (ION 0 or 1)
+!   FRHBSM(H, METHOD, STAT)                           _set_stability_method
+!   FRHBGM(H, METHOD, STAT)                           _get_stability_method
 !   FRHBSB(H, K, ISTAB, MUMAX, STAT)                  _point_stability (K from 1; 0: solution)
 !   FRHBBN(H, NB, STAT)                               _bifurcations
 !   FRHBBF(H, I, ITYPE, OMEGA, K, NDOF, RMS, STAT)    _bifurcation (I, K from 1)
@@ -550,6 +552,21 @@ subroutine frhbnf(h, nf, stat)
   nf = int(fricreg_hb_nma_folds(fricreg_handle_to_ptr(h)))
   stat = int(FRICREG_OK)
 end subroutine frhbnf
+
+!> FRHBGM(H, METHOD, STAT): the method that computes the next solution's stability,
+!> FRICREG_HB_STABILITY_HILL or _MONODROMY (fricreg_hb_get_stability_method). Since 1.8.
+subroutine frhbgm(h, method, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(inout) :: method
+  integer, intent(out) :: stat
+  integer(c_int) :: m
+  m = 0
+  stat = int(fricreg_hb_get_stability_method(fricreg_handle_to_ptr(h), m))
+  if (stat == FRICREG_OK) method = int(m)
+end subroutine frhbgm
 
 !> FRHBNG(H, I, A, OMEGA, ZETA, STAT): fold I (from 1) of the last FRHBNC, in arclength order:
 !> its modal amplitude A, natural frequency OMEGA and damping ratio ZETA (fricreg_hb_nma_fold).

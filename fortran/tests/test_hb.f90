@@ -27,7 +27,7 @@ program test_hb
   real(c_double) :: M2(2, 2), K2(2, 2), J2(1, 2), Jrow(2), Jn2(1, 2), qn(7, 2), pw, pr
   real(c_double) :: ec(2), ea(2), et(2), eat(2), qn2(7, 2), q3(7, 3), q3c(7, 3), Je2(2, 2)
   type(fricreg_hb_driver) :: sparse
-  integer :: k, btype, bpoint
+  integer :: k, btype, bpoint, method
   real(c_double) :: mu
   logical :: stable
 
@@ -78,6 +78,19 @@ program test_hb
   call check_close(mu, exp(-0.015_c_double * 2.0_c_double * acos(-1.0_c_double) / 3.0_c_double), &
                    1e-9_c_double, 'mu_max, closed form')
   call check_status(hb%stability(0, stable, mu), FRICREG_OK, 'stability of the last solution')
+  ! by the exact monodromy (the automatic choice for a Jenkins element), then by Hill's method:
+  ! the same closed form
+  call check_status(hb%stability_method(method), FRICREG_OK, 'stability_method')
+  call check(method == FRICREG_HB_STABILITY_MONODROMY, 'the monodromy for a Jenkins element')
+  call check_status(hb%set_stability_method(7), FRICREG_EINVAL, 'set_stability_method 7')
+  call check_status(hb%set_stability_method(FRICREG_HB_STABILITY_HILL), FRICREG_OK, &
+                    'set_stability_method Hill')
+  call check_status(hb%stability_method(method), FRICREG_OK, 'stability_method Hill')
+  call check(method == FRICREG_HB_STABILITY_HILL, 'Hill''s method chosen')
+  call check_status(hb%solve(3.0_c_double, q), FRICREG_OK, 'solve by Hill''s method')
+  call check_status(hb%stability(0, stable, mu), FRICREG_OK, 'Hill''s stability')
+  call check_close(mu, exp(-0.015_c_double * 2.0_c_double * acos(-1.0_c_double) / 3.0_c_double), &
+                   1e-9_c_double, 'Hill''s mu_max, closed form')
   call check_status(hb%stability(-1, stable, mu), FRICREG_EINVAL, 'stability of k = -1')
   call check(hb%bifurcations() == 0, 'no bifurcation on a linear branch')
   call check_status(hb%bifurcation(1, btype, omega, bpoint, rms), FRICREG_EINVAL, 'bifurcation 1 of 0')
