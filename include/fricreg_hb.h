@@ -709,7 +709,7 @@ enum fricreg_hb_nma_damping {
  *  predictor the secant of the last two solutions in (q/a, ω, ξ), a step whose corrector fails
  *  halved, down to 1/1024 of the grid's step. The amplitude is a natural parameter where the
  *  backbone is monotone in a; a backbone that folds in a (an internal resonance: a harmonic
- *  k ω meeting another mode's frequency) stops the march (fricreg_hb_nma_continue passes
+ *  k ω near another mode's frequency) stops the march (fricreg_hb_nma_continue passes
  *  it). The points are stored (fricreg_hb_nma_points, fricreg_hb_nma_point), replacing those
  *  of an earlier call; the forced response's solution and branch are not changed. Since 1.8
  *  the crossings of a harmonic k ω with another stuck mode's frequency are found on the stored

@@ -8,8 +8,9 @@
  * damping. Stuck, K_0 = [[5/4, −1/4], [−1/4, 10.45]]: mode 0 (mostly dof 1) at ω_0 = 1.11499,
  * mode 1 (dof 2) at 3.2337, the ratio 2.90. Mode 0 moves dof 2 by φ_2 = 0.0272 of its modal
  * amplitude, so the element slips from a = δ/φ_2 = 3.68 (δ = mu N/kt); slipping, it softens
- * dof 2 towards k2 + kc = 0.45, and mode 1's frequency falls through 3 ω of mode 0: there the
- * element's third harmonic drives mode 1 and the backbone of mode 0 folds in the amplitude (at
+ * dof 2 towards k2 + kc = 0.45. Near the 3:1 ratio the element's third harmonic drives mode 1
+ * (3 ω = 3.34 there, 3 % above mode 1's 3.2337: near, never crossing, as test_hb_nma_energy
+ * measures) and the backbone of mode 0 folds in the amplitude (at
  * a ≈ 4.43, 20 % above the slip onset: found first by a scan of this family, where
  * fricreg_hb_nma stops with "line search found no decrease" at a = 4.4325).
  *

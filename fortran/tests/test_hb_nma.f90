@@ -65,7 +65,7 @@ program test_hb_nma
   call hb%destroy()
 
   ! tests/test_hb_nma_fold.c's two masses (k1 = 1, kc = 0.25, k2 = 0.2; kt = 10, mu N = 1 on
-  ! dof 2) at H = 3: 3 omega meets the second mode, an S in a(omega) with two folds
+  ! dof 2) at H = 3: 3 omega near the second mode (3:1), an S in a(omega) with two folds
   call check_status(hb%create(2, 1, 3), FRICREG_OK, 'create, two masses')
   call check_status(hb%set_stiffness(reshape([1.25_c_double, -0.25_c_double, -0.25_c_double, &
                                               0.45_c_double], [2, 2])), FRICREG_OK, 'K')
