@@ -2,12 +2,16 @@
 /* masked_factor.h — internal: solves with principal blocks of one symmetric positive definite
  * m x m matrix W (a step's W_eff), refactored as often as the block changes without allocating.
  *
- * A block W_SS (plus a diagonal shift) is factored as the whole m x m matrix whose rows and
- * columns outside S are the identity's: one pattern, W's, for every S. The pattern is ordered
- * once (AMD) and stored permuted, so that each numeric factorization is CHOLMOD's simplicial
- * one on a matrix in natural order, which allocates nothing (cholmod_l_factorize permutes a
- * matrix in any other order into new storage every call). A solve on the block and shifts of
- * the last factorization makes none. */
+ * Two storages, chosen once per W (fr_masked_factor_prepare). Sparse: a block W_SS (plus a
+ * diagonal shift) is factored as the whole m x m matrix whose rows and columns outside S are the
+ * identity's: one pattern, W's, for every S. The pattern is ordered once (AMD) and stored
+ * permuted, so that each numeric factorization is CHOLMOD's simplicial one on a matrix in natural
+ * order, which allocates nothing (cholmod_l_factorize permutes a matrix in any other order into
+ * new storage every call). Dense: W_SS is copied into a column-major buffer of m x m doubles
+ * allocated here and factored there by LAPACK's dpotrf (blocked, BLAS 3), solved by dpotrs.
+ * CHOLMOD's simplicial factor uses no BLAS and works on the whole pattern whatever S is; where
+ * W's factor fills, the dense one of W_SS alone is cheaper (measured: docs/benchmark.md).
+ * A solve on the block and shifts of the last factorization makes none. */
 #ifndef FRICREG_MASKED_FACTOR_H
 #define FRICREG_MASKED_FACTOR_H
 
@@ -15,14 +19,28 @@
 
 #include <cholmod.h>
 
+/* The storage of the blocks: chosen by the fill rule (fr_masked_factor_prepare), or forced
+ * (the tests compare the two). */
+enum fr_block_storage { FR_BLOCK_CHOSEN = 0, FR_BLOCK_SPARSE, FR_BLOCK_DENSE };
+
+/* The fill rule: dense where CHOLMOD's factor of W in its AMD order would hold at least half the
+ * entries of a dense triangle, nnz(L) >= m (m + 1) / 4. Then the simplicial factor does at
+ * least 3/16 of a dense one's m^3 / 3 flops (sum_j c_j^2 >= (sum_j c_j)^2 / m, c_j L's column
+ * counts), without the BLAS and on all of W whatever the block, while dpotrf works on W_SS
+ * alone. */
+#define FR_BLOCK_DENSE_FILL 0.5
+
 struct fr_masked_factor {
     size_t m;
+    int dense;              /* the blocks in D by LAPACK, not in A, L by CHOLMOD */
     cholmod_sparse *A;      /* P W P^T's upper triangle, its values filled per solve */
     SuiteSparse_long *src;  /* [nnz(A)] entry of A -> its entry of W */
     SuiteSparse_long *perm; /* [m] row k of P W P^T is row perm[k] of W */
     cholmod_factor *L;
     cholmod_dense *X, *Yw, *Ew;
-    double *b; /* [m] */
+    double *b;            /* [m] */
+    double *D;            /* dense: [m * m] W_SS + diag(shift_S), column-major, then its factor */
+    SuiteSparse_long *at; /* dense: [m] row i of W is row at[i] of W_SS, -1 outside S */
     /* The block and shifts of the last factorization: a solve on the same ones reuses it
      * (a stick set that holds from one Newton iteration, or one step, to the next). */
     unsigned char *held_set; /* [m] */
@@ -30,11 +48,12 @@ struct fr_masked_factor {
     int held;
 };
 
-/* Ready for blocks of W (m x m, upper triangle, sorted): ordered, permuted, analysed, and one
- * solve made to size the workspaces. f must be zeroed or freed. FRICREG_OK or FRICREG_ENOMEM
- * (f then freed). */
+/* Ready for blocks of W (m x m, upper triangle, sorted) in the storage asked (FR_BLOCK_CHOSEN:
+ * by the fill rule, FR_BLOCK_DENSE_FILL): sparse, ordered, permuted, analysed, and one solve
+ * made to size the workspaces; dense, the buffer allocated. f must be zeroed or freed.
+ * FRICREG_OK or FRICREG_ENOMEM (f then freed). */
 int fr_masked_factor_prepare(struct fr_masked_factor *f, const cholmod_sparse *W,
-                             cholmod_common *c);
+                             enum fr_block_storage storage, cholmod_common *c);
 
 void fr_masked_factor_free(struct fr_masked_factor *f, cholmod_common *c);
 

@@ -20,7 +20,9 @@ void fr_newton_matrix_free(struct fr_newton_matrix *nm, cholmod_common *c)
     for (size_t k = 0; k < sizeof blocks / sizeof *blocks; k++)
         free(blocks[k]); /* gsl_mem.h: one block each */
     fr_masked_factor_free(&nm->block, c);
+    enum fr_block_storage storage = nm->storage; /* a setting, not storage: it stays */
     memset(nm, 0, sizeof *nm);
+    nm->storage = storage;
 }
 
 /* ---- Products with a symmetric sparse matrix (upper triangle, CSC) ------------------------- */
@@ -166,7 +168,7 @@ int fr_newton_matrix_prepare(struct fr_newton_matrix *nm, const cholmod_sparse *
     }
     if (dense && !dense_allocate(nm))
         return FRICREG_ENOMEM;
-    return fr_masked_factor_prepare(&nm->block, Weff, c);
+    return fr_masked_factor_prepare(&nm->block, Weff, nm->storage, c);
 }
 
 /* Each row of T df = -G from the context's rows (fr_ctx_tangent_rows), into N's shifts and

@@ -17,11 +17,12 @@
  * and with every s_i <= 0 and 1 + c k_i > 0 (every law but a falling Stribeck branch) the
  * rows of N (implicit, or s_i < 0) are (W_eff,NN + diag(shift_N)) df_N = b_N - W_eff,NR df_R,
  * shift_i = 1 / (c |s_i|) on the explicit rows and 0 on the implicit ones: symmetric positive
- * definite, CHOLMOD's sparse Cholesky on W_eff's pattern (analysed once per K_eff), whose
- * other rows and columns are set to the identity; the rest, R (s_i = 0: sliding contacts), is
- * df_i = -G_i. Nothing is O(m^2): W_eff's pattern makes it cheap, contacts far apart on a
- * structure barely interacting over a step (contact_factor.c leaves out entries below the
- * rounding of the diagonal). Otherwise dense: T_NN from the context's dense tangent, by GSL's
+ * definite, a Cholesky factor of the block (masked_factor.h): CHOLMOD's sparse one on W_eff's
+ * pattern (analysed once per K_eff), whose other rows and columns are set to the identity,
+ * where W_eff's factor is sparse (contacts far apart on a structure barely interacting over a
+ * step: contact_factor.c leaves out entries below the rounding of the diagonal), LAPACK's
+ * dpotrf on the block alone where it fills; the rest, R (s_i = 0: sliding contacts), is
+ * df_i = -G_i. Otherwise (T not of that form) dense: T_NN from the context's dense tangent, by GSL's
  * QR with column pivoting (which allocates nothing; GSL 2.7's LU allocates its pivots on
  * every call), O(|N|^3). */
 #ifndef FRICREG_NEWTON_MATRIX_H
@@ -52,10 +53,11 @@ struct fr_newton_matrix {
     unsigned char *in_n;       /* [m] */
     double *b;                 /* [m] */
     struct fr_masked_factor block; /* W_eff's principal blocks (shifted) */
+    enum fr_block_storage storage; /* the blocks' (FR_BLOCK_CHOSEN unless a test forces one) */
 };
 
-/* Ready for the contacts of a new K_eff: the blocks of W_eff (m x m, upper, sorted) ordered
- * and analysed, and with dense set the dense form allocated (otherwise it is allocated at its
+/* Ready for the contacts of a new K_eff: the blocks of W_eff (m x m, upper, sorted) ready in
+ * nm->storage (masked_factor.h), and with dense set the dense form allocated (otherwise it is allocated at its
  * first use, a falling Stribeck branch). FRICREG_OK or
  * FRICREG_ENOMEM. */
 int fr_newton_matrix_prepare(struct fr_newton_matrix *nm, const cholmod_sparse *Weff, int dense,

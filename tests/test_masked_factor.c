@@ -1,0 +1,308 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* test_masked_factor.c — Check suite for the principal blocks of W_eff (src/structure/
+ * masked_factor.h) in their two storages, CHOLMOD's sparse factor and LAPACK's dense one, white
+ * box on the static library:
+ *   - the fill rule: a full W goes dense, a tridiagonal one (its factor bidiagonal, 2m - 1 of
+ *     m (m + 1) / 2 entries) stays sparse;
+ *   - the same solves both ways, to 1e-10 of the largest |x|: blocks of a W with holes in its
+ *     pattern, with and without shifts, refactored and held;
+ *   - a block that is not positive definite (indefinite, or singular: a zero pivot) is
+ *     FRICREG_ESINGULAR both ways, x untouched, and the next block is factored afresh;
+ *   - fricreg_structure's steps on a stiff membrane's edge (W_eff dense, the rule's choice) give
+ *     the same forces and displacements with either storage forced, to 1e-10 relative. */
+#include <check.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/sparse_factor.h"
+#include "fricreg.h"
+#include "fricreg_structure.h"
+#include "structure/masked_factor.h"
+#include "structure/structure_internal.h"
+
+#define MMAX 48
+
+static double uniform(unsigned long *state)
+{
+    *state = *state * 6364136223846793005UL + 1442695040888963407UL;
+    return (double)(*state >> 11) / 9007199254740992.0; /* [0, 1) */
+}
+
+/* W's upper triangle (CSC) from a dense symmetric m x m row-major A, its nonzeros only. */
+static cholmod_sparse *upper(size_t m, const double A[], cholmod_common *c)
+{
+    size_t nnz = 0;
+    for (size_t j = 0; j < m; j++)
+        for (size_t i = 0; i <= j; i++)
+            nnz += A[i * m + j] != 0.0;
+    cholmod_sparse *W = cholmod_l_allocate_sparse(m, m, nnz, 1, 1, 1, CHOLMOD_REAL, c);
+    ck_assert_ptr_nonnull(W);
+    SuiteSparse_long *Wp = W->p, *Wi = W->i;
+    double *Wx = W->x;
+    size_t p = 0;
+    for (size_t j = 0; j < m; j++) {
+        Wp[j] = (SuiteSparse_long)p;
+        for (size_t i = 0; i <= j; i++)
+            if (A[i * m + j] != 0.0) {
+                Wi[p] = (SuiteSparse_long)i;
+                Wx[p++] = A[i * m + j];
+            }
+    }
+    Wp[m] = (SuiteSparse_long)p;
+    return W;
+}
+
+/* A symmetric, diagonally dominant (so positive definite) m x m matrix, each entry off the
+ * diagonal present with probability density, in [-1, 1]. */
+static void dominant(size_t m, double density, unsigned long *state, double A[])
+{
+    memset(A, 0, m * m * sizeof *A);
+    for (size_t i = 0; i < m; i++)
+        for (size_t j = i + 1; j < m; j++)
+            if (uniform(state) < density)
+                A[i * m + j] = A[j * m + i] = 2.0 * uniform(state) - 1.0;
+    for (size_t i = 0; i < m; i++) {
+        double sum = 0.0;
+        for (size_t j = 0; j < m; j++)
+            sum += fabs(A[i * m + j]);
+        A[i * m + i] = sum + 0.385 + uniform(state);
+    }
+}
+
+static int chosen_dense(size_t m, const double A[])
+{
+    cholmod_common c;
+    ck_assert_int_eq(fr_cholmod_start(&c), FRICREG_OK);
+    cholmod_sparse *W = upper(m, A, &c);
+    struct fr_masked_factor f;
+    ck_assert_int_eq(fr_masked_factor_prepare(&f, W, FR_BLOCK_CHOSEN, &c), FRICREG_OK);
+    int dense = f.dense;
+    fr_masked_factor_free(&f, &c);
+    cholmod_l_free_sparse(&W, &c);
+    fr_cholmod_finish(&c);
+    return dense;
+}
+
+START_TEST(fill_rule_picks_the_storage)
+{
+    enum { M = 40 };
+    static double A[M * M];
+    unsigned long state = 2385;
+    dominant(M, 1.0, &state, A);
+    ck_assert(chosen_dense(M, A));
+    memset(A, 0, sizeof A);
+    for (size_t i = 0; i < M; i++) {
+        A[i * M + i] = 2.385;
+        if (i > 0)
+            A[i * M + i - 1] = A[(i - 1) * M + i] = -1.0;
+    }
+    ck_assert(!chosen_dense(M, A));
+}
+END_TEST
+
+START_TEST(dense_solves_equal_sparse_ones)
+{
+    const size_t m = 37;
+    static double A[MMAX * MMAX];
+    unsigned long state = 7411;
+    dominant(m, 0.4, &state, A);
+    cholmod_common c;
+    ck_assert_int_eq(fr_cholmod_start(&c), FRICREG_OK);
+    cholmod_sparse *W = upper(m, A, &c);
+    struct fr_masked_factor sparse, dense;
+    ck_assert_int_eq(fr_masked_factor_prepare(&sparse, W, FR_BLOCK_SPARSE, &c), FRICREG_OK);
+    ck_assert_int_eq(fr_masked_factor_prepare(&dense, W, FR_BLOCK_DENSE, &c), FRICREG_OK);
+    ck_assert(!sparse.dense && dense.dense);
+    double b[MMAX], shift[MMAX], xs[MMAX], xd[MMAX];
+    unsigned char set[MMAX];
+    for (int trial = 0; trial < 24; trial++) {
+        int same = trial % 3 == 2; /* the last block again: the factors held */
+        for (size_t i = 0; i < m && !same; i++) {
+            set[i] = uniform(&state) < 0.3 + 0.6 * (trial % 4) / 3.0;
+            shift[i] = trial % 2 ? 0.0 : 10.0 * uniform(&state);
+        }
+        for (size_t i = 0; i < m; i++) {
+            b[i] = 4.0 * uniform(&state) - 2.0;
+            xs[i] = xd[i] = -7.5; /* outside the block: untouched */
+        }
+        const double *sh = trial % 2 ? NULL : shift;
+        ck_assert_int_eq(fr_masked_factor_solve(&sparse, W, set, sh, b, xs, &c), FRICREG_OK);
+        ck_assert_int_eq(fr_masked_factor_solve(&dense, W, set, sh, b, xd, &c), FRICREG_OK);
+        double scale = 0.0;
+        for (size_t i = 0; i < m; i++)
+            scale = fmax(scale, fabs(xs[i]));
+        for (size_t i = 0; i < m; i++) {
+            ck_assert_double_eq_tol(xd[i], xs[i], 1e-10 * scale);
+            if (!set[i])
+                ck_assert_double_eq(xd[i], -7.5);
+        }
+    }
+    fr_masked_factor_free(&sparse, &c);
+    fr_masked_factor_free(&dense, &c);
+    cholmod_l_free_sparse(&W, &c);
+    fr_cholmod_finish(&c);
+}
+END_TEST
+
+/* W: rows 0, 1 an indefinite block [[1, 2], [2, 1]] (eigenvalues 3, -1); rows 2, 3 a singular
+ * one [[1.5, 1.5], [1.5, 1.5]] (the second pivot exactly 0); row 4 couples weakly to both. */
+START_TEST(not_positive_definite_is_esingular_both_ways)
+{
+    const size_t m = 5;
+    const double A[25] = {1.0, 2.0, 0.0, 0.0, 0.1, 2.0, 1.0, 0.0, 0.0, 0.1, 0.0, 0.0,  1.5,
+                          1.5, 0.1, 0.0, 0.0, 1.5, 1.5, 0.1, 0.1, 0.1, 0.1, 0.1, 2.385};
+    const unsigned char indefinite[5] = {1, 1, 0, 0, 0}, singular[5] = {0, 0, 1, 1, 0},
+                        good[5] = {1, 0, 1, 0, 1};
+    const double b[5] = {0.3, -1.2, 0.7, 2.1, -0.4};
+    cholmod_common c;
+    ck_assert_int_eq(fr_cholmod_start(&c), FRICREG_OK);
+    cholmod_sparse *W = upper(m, A, &c);
+    const enum fr_block_storage storages[2] = {FR_BLOCK_SPARSE, FR_BLOCK_DENSE};
+    double x[2][5];
+    for (int k = 0; k < 2; k++) {
+        struct fr_masked_factor f;
+        ck_assert_int_eq(fr_masked_factor_prepare(&f, W, storages[k], &c), FRICREG_OK);
+        for (size_t i = 0; i < m; i++)
+            x[k][i] = 9.25;
+        ck_assert_int_eq(fr_masked_factor_solve(&f, W, indefinite, NULL, b, x[k], &c),
+                         FRICREG_ESINGULAR);
+        ck_assert_int_eq(fr_masked_factor_solve(&f, W, good, NULL, b, x[k], &c), FRICREG_OK);
+        ck_assert_int_eq(fr_masked_factor_solve(&f, W, singular, NULL, b, x[k], &c),
+                         FRICREG_ESINGULAR);
+        ck_assert_double_eq(x[k][1], 9.25); /* failed blocks write nothing */
+        ck_assert_double_eq(x[k][3], 9.25);
+        /* the failed block is not held: a shift makes it positive definite */
+        const double shift[5] = {0.0, 0.0, 0.25, 0.25, 0.0};
+        ck_assert_int_eq(fr_masked_factor_solve(&f, W, singular, shift, b, x[k], &c), FRICREG_OK);
+        fr_masked_factor_free(&f, &c);
+    }
+    for (size_t i = 0; i < m; i++)
+        ck_assert_double_eq_tol(x[1][i], x[0][i], 1e-12 * fabs(x[0][i]) + 1e-300);
+    cholmod_l_free_sparse(&W, &c);
+    fr_cholmod_finish(&c);
+}
+END_TEST
+
+/* ---- A structure's steps ------------------------------------------------------------------ */
+
+/* bench/membrane_contacts.c in small: a SIDE x SIDE grid of 1 kg nodes, springs of 3e6 N/m
+ * between neighbours and 10^3 N/m to the ground, C = 0.002 s K, shaken at 0.35 g, 4 Hz; contacts
+ * on the edge row against the ground (mu N = 20 N) and on the next row against the edge
+ * (4 N). At this stiffness (dt omega_max = 24) W_eff of the 2 SIDE contacts is dense. */
+#define SIDE 8
+#define NDOF (SIDE * SIDE)
+#define NCON (2 * SIDE)
+#define STEPS 120
+
+static fricreg_structure *membrane(void)
+{
+    static double K[NDOF * NDOF], M[NDOF * NDOF], J[NCON * NDOF];
+    double mun[NCON], r[NDOF], ag[2 * STEPS + 1];
+    memset(K, 0, sizeof K);
+    memset(M, 0, sizeof M);
+    memset(J, 0, sizeof J);
+    for (int a = 0; a < NDOF; a++) {
+        int row = a / SIDE, col = a % SIDE;
+        M[a * NDOF + a] = 1.0;
+        K[a * NDOF + a] += 1e3;
+        r[a] = 1.0;
+        int nb[2] = {col + 1 < SIDE ? a + 1 : -1, row + 1 < SIDE ? a + SIDE : -1};
+        for (int k = 0; k < 2; k++)
+            if (nb[k] >= 0) {
+                K[a * NDOF + a] += 3e6;
+                K[nb[k] * NDOF + nb[k]] += 3e6;
+                K[a * NDOF + nb[k]] -= 3e6;
+                K[nb[k] * NDOF + a] -= 3e6;
+            }
+    }
+    for (int c = 0; c < SIDE; c++) {
+        J[c * NDOF + c] = 1.0; /* edge node c against the ground */
+        mun[c] = 20.0;
+        J[(SIDE + c) * NDOF + SIDE + c] = 1.0; /* the next row's node against the edge's */
+        J[(SIDE + c) * NDOF + c] = -1.0;
+        mun[SIDE + c] = 4.0;
+    }
+    for (int k = 0; k <= 2 * STEPS; k++)
+        ag[k] = 0.35 * 9.81 * sin(6.283185307179586 * 4.0 * k * 0.0025);
+    fricreg_structure *s = NULL;
+    ck_assert_int_eq(fricreg_structure_create(NDOF, NCON, &s), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_mass(s, NDOF, M), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_stiffness(s, NDOF, K), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_rayleigh(s, 0.0, 0.002), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_contacts(s, NCON, NDOF, J), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_bounds(s, NCON, mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_law(s, FRICREG_LAW_QUINN, 1e-3), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_influence(s, NDOF, r), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_ground_accel(s, 0.0, 0.0025, 2 * STEPS + 1, ag),
+                     FRICREG_OK);
+    return s;
+}
+
+/* Forces f[STEPS][NCON] and displacements u[STEPS][NDOF] of STEPS steps of 5 ms in the
+ * storage given; the count of contact-steps stuck (|f_i| < 0.999 mu N_i) and whether the
+ * blocks were dense. */
+static void membrane_run(enum fr_block_storage storage, double (*f)[NCON], double (*u)[NDOF],
+                         int *stuck, int *dense)
+{
+    fricreg_structure *s = membrane();
+    s->newton.storage = storage;
+    *stuck = 0;
+    for (int step = 0; step < STEPS; step++) {
+        int status = fricreg_structure_step(s, 0.005);
+        ck_assert_msg(status == FRICREG_OK, "step %d: %s", step, fricreg_structure_errmsg(s));
+        ck_assert_int_eq(fricreg_structure_get_forces(s, NCON, f[step]), FRICREG_OK);
+        ck_assert_int_eq(fricreg_structure_get_state(s, NDOF, u[step], NULL, NULL), FRICREG_OK);
+        for (int i = 0; i < NCON; i++)
+            *stuck += fabs(f[step][i]) < 0.999 * (i < SIDE ? 20.0 : 4.0);
+    }
+    *dense = s->newton.block.dense;
+    fricreg_structure_free(s);
+}
+
+START_TEST(structure_steps_equal_in_both_storages)
+{
+    static double f[3][STEPS][NCON], u[3][STEPS][NDOF];
+    const enum fr_block_storage storages[3] = {FR_BLOCK_SPARSE, FR_BLOCK_DENSE, FR_BLOCK_CHOSEN};
+    int stuck[3], dense[3];
+    for (int k = 0; k < 3; k++)
+        membrane_run(storages[k], f[k], u[k], &stuck[k], &dense[k]);
+    ck_assert(!dense[0] && dense[1]);
+    ck_assert(dense[2]);                           /* the rule's choice on a stiff interface */
+    ck_assert_int_gt(stuck[0], STEPS * NCON / 10); /* the near-stick blocks are exercised */
+    double umax = 0.0;
+    for (int step = 0; step < STEPS; step++)
+        for (int a = 0; a < NDOF; a++)
+            umax = fmax(umax, fabs(u[0][step][a]));
+    double worst_f = 0.0, worst_u = 0.0;
+    for (int k = 1; k < 3; k++)
+        for (int step = 0; step < STEPS; step++) {
+            for (int i = 0; i < NCON; i++)
+                worst_f = fmax(worst_f,
+                               fabs(f[k][step][i] - f[0][step][i]) / (i < SIDE ? 20.0 : 4.0));
+            for (int a = 0; a < NDOF; a++)
+                worst_u = fmax(worst_u, fabs(u[k][step][a] - u[0][step][a]) / umax);
+        }
+    printf("membrane %d x %d, %d contacts, %d steps: %d stuck contact-steps; dense against "
+           "sparse: max |df| / mu N = %.2e, max |du| / max |u| = %.2e\n",
+           SIDE, SIDE, NCON, STEPS, stuck[0], worst_f, worst_u);
+    ck_assert_double_le(worst_f, 1e-10);
+    ck_assert_double_le(worst_u, 1e-10);
+}
+END_TEST
+
+int main(void)
+{
+    Suite *s = suite_create("masked_factor");
+    TCase *tc = tcase_create("core");
+    tcase_add_test(tc, fill_rule_picks_the_storage);
+    tcase_add_test(tc, dense_solves_equal_sparse_ones);
+    tcase_add_test(tc, not_positive_definite_is_esingular_both_ways);
+    tcase_add_test(tc, structure_steps_equal_in_both_storages);
+    suite_add_tcase(s, tc);
+    SRunner *sr = srunner_create(s);
+    srunner_run_all(sr, CK_NORMAL);
+    int failed = srunner_ntests_failed(sr);
+    srunner_free(sr);
+    return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
