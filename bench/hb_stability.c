@@ -2,7 +2,7 @@
 /* hb_stability.c — the cost of stability (fricreg_hb_set_stability) per continuation point, by
  * Hill's method and by the exact monodromy (fricreg_hb_set_stability_method): the gap pair of
  * tests/test_hb_stability.c (2 dofs, one lift-off element with a gap, H = 15: Hill's companion
- * matrix of order 124; not piecewise linear in the monodromy's sense, so Hill's only) and a
+ * matrix of order 124) and a
  * three-mass Jenkins chain at H = 7 and 15 (orders 90 and 186), each branch followed without
  * stability and with each method; the median over repeats of the time per stored point (the
  * bifurcations' location included: it is part of fricreg_hb_continue; their count without/with
@@ -115,9 +115,7 @@ int main(int argc, char **argv)
         size_t p0 = 0, p1 = 0, p2 = 0, b0 = 0, b1 = 0, b2 = 0;
         double a = per_point(models[i], -1, repeats, &p0, &b0),
                b = per_point(models[i], FRICREG_HB_STABILITY_HILL, repeats, &p1, &b1),
-               c = models[i]->normal
-                       ? 0.0
-                       : per_point(models[i], FRICREG_HB_STABILITY_MONODROMY, repeats, &p2, &b2);
+               c = per_point(models[i], FRICREG_HB_STABILITY_MONODROMY, repeats, &p2, &b2);
         if (a < 0.0 || b < 0.0 || c < 0.0)
             return EXIT_FAILURE;
         printf("%-30s %8zu %2zu/%zu/%zu %12.3f %10.3f %10.3f %8.2f %8.2f\n", models[i]->name, p1,

@@ -1089,13 +1089,14 @@ FRICREG_API int fricreg_hb_peak(fricreg_hb *hb, size_t dof, double *omega, doubl
  *  10 (2 ndof (2H + 1))³ flops, with ndof (2H + 1) <= FRICREG_HB_MAX_HILL; its matrices, 4
  *  (ndof (2H + 1))² + O(ndof (2H + 1)) doubles.
  *
- *  The exact monodromy (since 1.8), for 1-D Jenkins and Iwan elements without lift-off: between
- *  the sliders' switches, which the exact AFT locates on the solution, the equations of
- *  motion linearized on the state (x, x', the offsets of the sliders that switch) are linear
- *  and time-invariant, so the monodromy matrix is the product Φ = e^{A_K Δt_K} S_K ⋯ S_1
- *  e^{A_1 Δt_1} of the pieces' exponentials (Padé, scaling and squaring) and the saltation
- *  matrices S_k of the slip onsets, where a slider's offset starts following its element's
- *  displacement (R. I. Leine, H. Nijmeijer 2004, Ch. 7). A slider stuck over the whole period
+ *  The exact monodromy (since 1.8), for 1-D Jenkins and Iwan elements, with or without lift-off
+ *  (not the 3-D contact element): between the switches, which the exact AFT locates on the
+ *  solution (slip onsets, stops, openings, touchdowns), the equations of motion linearized on
+ *  the state (x, x', the offsets of the sliders that switch) are linear and time-invariant, so
+ *  the monodromy matrix is the product Φ = e^{A_K Δt_K} S_K ⋯ S_1 e^{A_1 Δt_1} of the pieces'
+ *  exponentials (Padé, scaling and squaring) and the saltation matrices S_k of the onsets and
+ *  touchdowns, where a slider's offset starts following its element's displacement (R. I.
+ *  Leine, H. Nijmeijer 2004, Ch. 7). A slider stuck over the whole period
  *  has a neutral multiplier 1, which is left out (like HB's offset ambiguity); one that slips
  *  once adds a 0, dropped. The 2 ndof left are the multipliers μ, λ = log μ Ω/2π the exponents
  *  (Im λ in (−Ω/2, Ω/2]). They are the orbit's own multipliers: a time integration's
@@ -1138,8 +1139,9 @@ FRICREG_API int fricreg_hb_point_stability(fricreg_hb *hb, size_t k, int *stable
 /** How fricreg_hb_set_stability computes a solution's stability. */
 enum fricreg_hb_stability_method {
     FRICREG_HB_STABILITY_AUTO = 0,     /**< the exact monodromy where every element is piecewise
-                                            linear (1-D Jenkins and Iwan elements without
-                                            lift-off) and its order 2 ndof + sliders is at most
+                                            linear (1-D Jenkins and Iwan elements, with or
+                                            without lift-off) and its order 2 ndof + sliders is
+                                            at most
                                             FRICREG_HB_MAX_MONODROMY, Hill's method otherwise
                                             (the default) */
     FRICREG_HB_STABILITY_HILL = 1,     /**< Hill's method, for any element */
@@ -1156,8 +1158,8 @@ enum fricreg_hb_stability_method {
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if hb is NULL; FRICREG_EINVAL if method is none of the
  *  enum, or when called from the monitor during a solve. A solve with
- *  FRICREG_HB_STABILITY_MONODROMY on elements that are not piecewise linear (lift-off, 3-D
- *  contact) returns FRICREG_EINVAL with a message. */
+ *  FRICREG_HB_STABILITY_MONODROMY on elements that are not piecewise linear (the 3-D contact
+ *  element) returns FRICREG_EINVAL with a message. */
 FRICREG_API int fricreg_hb_set_stability_method(fricreg_hb *hb, int method);
 
 /** The method that computes the next solution's stability: FRICREG_HB_STABILITY_HILL or

@@ -73,6 +73,7 @@ struct model {
     double M[4], C[4], K[4], J[MAXE * MAXN], Jn[MAXE * MAXN], kt[MAXE], mun[MAXE], mu[MAXE],
         n0[MAXE], kn[MAXE], pc[2], ps[2];
     double sweep_tol; /* > 0: the fine sweep's Newton tolerance (fricreg_hb_set_newton) */
+    int method;       /* the stability's method (0: FRICREG_HB_STABILITY_AUTO) */
 };
 
 /* The HB unknowns' count: (2 if normal) ne (2H + 1). */
@@ -174,6 +175,7 @@ static fricreg_hb *make(const struct model *s)
     else
         ck_assert_int_eq(fricreg_hb_set_elements(hb, s->ne, s->n, s->J, s->kt, s->mun), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_set_excitation(hb, s->n, s->pc, s->ps), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stability_method(hb, s->method), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_set_stability(hb, 1), FRICREG_OK);
     return hb;
 }
@@ -689,6 +691,10 @@ END_TEST
 START_TEST(coupled_pair_branch_points)
 {
     struct model s = coupled_bilinear_pair();
+    /* Hill's method, whose multiplier crosses +1 where the HB Jacobian is singular, at the
+     * branch point itself; the exact monodromy's (the orbit's) crosses 1.8e-4 away, the HB's
+     * truncation error at the unilateral spring's kink (H = 15) */
+    s.method = FRICREG_HB_STABILITY_HILL;
     fricreg_hb *hb = make(&s);
     ck_assert_int_eq(fricreg_hb_continue(hb, 1.5, 1.9, unknowns(&s), NULL), FRICREG_OK);
     ck_assert_uint_eq(fricreg_hb_bifurcations(hb), 2);
@@ -808,15 +814,30 @@ START_TEST(bad_input)
 }
 END_TEST
 
-/* The method's choice: Hill's for lift-off (not piecewise linear in the monodromy's sense), the
- * monodromy refused there when chosen, bad methods and NULLs refused with nothing changed, and
- * no size limit for the monodromy (40 dofs at H = 15: 1240 coefficients, over Hill's 1024). */
+/* The method's choice: the monodromy for lift-off, Hill's for the 3-D contact element (not
+ * piecewise linear in the monodromy's sense: a disk), the monodromy refused there when chosen,
+ * bad methods and NULLs refused with nothing changed, and no size limit for the monodromy (40
+ * dofs at H = 15: 1240 coefficients, over Hill's 1024). */
 START_TEST(method_choice)
 {
     struct model s = contact_pair();
     fricreg_hb *hb = make(&s);
     int method = -7;
-    double q[2 * NC];
+    ck_assert_int_eq(fricreg_hb_get_stability_method(hb, &method), FRICREG_OK);
+    ck_assert_int_eq(method, FRICREG_HB_STABILITY_MONODROMY);
+    fricreg_hb_free(hb);
+    /* one dof, k = 1, m = 1, a 3-D contact element on it (both tangential rows), H = 3 */
+    const double one = 1.0, c = 0.02, Je[2] = {1.0, 1.0}, Jn[1] = {-1.0}, kt = 1.0, mu = 0.3,
+                 n0 = 2.0, kn = 1.0, pc = 0.5, ps = 0.0;
+    double q[3 * 7];
+    ck_assert_int_eq(fricreg_hb_create(1, 1, 3, &hb), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_mass(hb, 1, &one), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 1, &one), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_damping(hb, 1, &c), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_jenkins_2d_normal(hb, 1, 1, Je, Jn, &kt, &mu, &n0, &kn),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_excitation(hb, 1, &pc, &ps), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stability(hb, 1), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_get_stability_method(hb, &method), FRICREG_OK);
     ck_assert_int_eq(method, FRICREG_HB_STABILITY_HILL);
     ck_assert_int_eq(fricreg_hb_set_stability_method(hb, 3), FRICREG_EINVAL);
@@ -826,23 +847,24 @@ START_TEST(method_choice)
     ck_assert_int_eq(fricreg_hb_get_stability_method(hb, NULL), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_hb_get_stability_method(hb, &method), FRICREG_OK);
     ck_assert_int_eq(method, FRICREG_HB_STABILITY_HILL);
+    ck_assert_int_eq(fricreg_hb_solve(hb, 0.5, 3 * 7, NULL, q), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_set_stability_method(hb, FRICREG_HB_STABILITY_MONODROMY),
                      FRICREG_OK);
-    for (size_t j = 0; j < 2 * NC; j++)
+    for (size_t j = 0; j < 3 * 7; j++)
         q[j] = -7.0;
-    ck_assert_int_eq(fricreg_hb_solve(hb, 12.0, 2 * NC, NULL, q), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_hb_solve(hb, 0.5, 3 * 7, NULL, q), FRICREG_EINVAL);
     ck_assert(strstr(fricreg_hb_errmsg(hb), "piecewise-linear") != NULL);
     ck_assert(q[0] == -7.0);
     fricreg_hb_free(hb);
 
     size_t n = 40;
-    double *K = calloc(n * n, sizeof *K), J[40] = {1.0}, kt = 1.0, mun = 0.1;
+    double *K = calloc(n * n, sizeof *K), J[40] = {1.0}, k40 = 1.0, mun40 = 0.1;
     ck_assert_ptr_nonnull(K);
     for (size_t i = 0; i < n; i++)
         K[i * n + i] = 1.0;
     ck_assert_int_eq(fricreg_hb_create(n, 1, 15, &hb), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_set_stiffness(hb, n, K), FRICREG_OK);
-    ck_assert_int_eq(fricreg_hb_set_elements(hb, 1, n, J, &kt, &mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_elements(hb, 1, n, J, &k40, &mun40), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_set_stability_method(hb, FRICREG_HB_STABILITY_HILL), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_set_stability(hb, 1), FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_hb_set_stability_method(hb, FRICREG_HB_STABILITY_AUTO), FRICREG_OK);

@@ -146,7 +146,8 @@ static size_t hb_table(struct hb_options *o, struct cli_option table[])
          .help = "points stored at most: reaching it stops the continuation"},
         {"--stability", CLI_CHOICE, .slot = &o->stability, .words = hb_stabilities,
          .help = "each point's stability: by the exact monodromy of the orbit (1-D Jenkins and "
-                 "Iwan elements without lift-off), by Hill's method (any element, ndof (2H + 1) "
+                 "Iwan elements, with or without lift-off), by Hill's method (any element, ndof "
+                 "(2H + 1) "
                  "<= 1024), auto (the monodromy where the elements allow it, else Hill's where "
                  "the size allows it, else none), or off"},
         {"--output", CLI_CHOICE, .slot = &o->output, .words = hb_outputs,
@@ -374,8 +375,8 @@ static int set_stability(fricreg_hb *hb, const struct hb_options *o, size_t n)
         coefficients > FRICREG_HB_MAX_HILL)
         return 0;
     if (o->stability == FRICREG_HB_STABILITY_MONODROMY && method != o->stability)
-        return cli_usage_error("--stability", "monodromy needs 1-D Jenkins or Iwan elements "
-                                              "without lift-off");
+        return cli_usage_error("--stability", "monodromy needs 1-D Jenkins or Iwan elements (with "
+                                              "or without lift-off), not the 3-D contact");
     if (fricreg_hb_set_stability(hb, 1) != FRICREG_OK)
         return cli_usage_error("--stability", fricreg_hb_errmsg(hb));
     return 0;

@@ -143,7 +143,20 @@ static void bisect(fricreg_hb *hb, struct fr_hb_branch *b, size_t k, struct test
     hb->nbif++;
 }
 
-/* Each pair of successive points: the first test whose sign changed, located. */
+/* Whether the tangent's Ω component or the determinant's sign changes between points i and
+ * i + 1 (a turning or branch point there; i may be out of the branch's range: no). */
+static int jacobian_test_changes(const fricreg_hb *hb, size_t i)
+{
+    if (i + 1 >= hb->npts)
+        return 0;
+    const double *x0 = hb->xpts + i * hb->xpts_stride, *x1 = x0 + hb->xpts_stride;
+    return (x0[0] > 0.0) != (x1[0] > 0.0) || x0[1] * x1[1] < 0.0;
+}
+
+/* Each pair of successive points: the first test whose sign changed, located. A real multiplier
+ * through +1 next to a turning or branch point is that point's: the exact monodromy's multiplier
+ * (the orbit's) crosses within the HB's truncation error of the Jacobian's singularity, which
+ * may fall in the neighbouring interval (Hill's, from the Jacobian itself, in the same one). */
 void fr_hb_locate_bifurcations(fricreg_hb *hb, struct fr_hb_branch *b)
 {
     size_t xw = hb->xpts_stride, w = 1 + hb->n;
@@ -161,6 +174,9 @@ void fr_hb_locate_bifurcations(fricreg_hb *hb, struct fr_hb_branch *b)
             const double *xu = up ? x1 : x0;
             t.kind = fr_hb_hill_crossing(hb, hb->pts[(k + (size_t)up) * w], xu + 4);
             t.type = t.kind == 1 ? FRICREG_HB_PD : t.kind == 2 ? FRICREG_HB_NS : FRICREG_HB_BP;
+            if (t.kind == 0 &&
+                ((k > 0 && jacobian_test_changes(hb, k - 1)) || jacobian_test_changes(hb, k + 1)))
+                t.type = 0;
         }
         if (t.type != 0)
             bisect(hb, b, k, t);

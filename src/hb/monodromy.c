@@ -3,17 +3,20 @@
  * its orbit, for elements that are piecewise linear (R. I. Leine, H. Nijmeijer, Dynamics and
  * Bifurcations of Non-Smooth Mechanical Systems, Springer 2004, Ch. 7: saltation matrices).
  *
- * With 1-D Jenkins and Iwan sliders under a constant normal load, M x'' + C x' + K x + J^T f =
- * p(t) is linear between the sliders' switches, which the exact AFT locates on the solution's
- * q(t) = J x(t) (joint/aft_slips.h). A perturbation z = (δx, δv, δw), δw the offsets of the
- * sliders that switch, follows z' = A_k z on each piece k:
+ * With 1-D Jenkins and Iwan sliders, under a constant normal load or a linear normal law with
+ * lift-off (N = max(0, N0 + kn g)), M x'' + C x' + K x + J^T f = p(t) is linear between the
+ * switches (switches.c: the exact AFT's, on the solution's q(t) = J x(t)). A perturbation z =
+ * (δx, δv, δw), δw the offsets of the sliders that switch, follows z' = A_k z on each piece k:
  *
- *     δx' = δv,   M δv' = −C δv − (K + Σ_stuck k_s J_e^T J_e) δx + Σ_stuck k_s J_e^T δw_s,
- *     δw_s' = J_e δv while slider s (of element e) slips, 0 while it sticks,
+ *     δx' = δv,   M δv' = −C δv − K δx − Σ J_t^T δf − Σ_closed kn J_n^T J_n δx,
+ *     stick: δf = k (J_t δx − δw), δw' = 0;   slip in direction d: δf = d mu kn J_n δx,
+ *     δw' = (J_t − d (mu kn/k) J_n) δv;   open: δf = 0,
  *
- * a slipping slider's force ±φ_s being fixed. At a slip onset the perturbed orbit switches when
- * its own force reaches the bound, so its offset then follows q: the saltation δw_s ← J_e δx (x
- * and v stay continuous, as f does); at a stop (q' = 0) nothing jumps. Hence
+ * J_t, J_n an element's tangential and normal rows (kn = 0, no J_n, under a constant load). At
+ * a slip onset the perturbed orbit switches when its own force reaches the bound, so the offset
+ * then follows the slip's: the saltation δw ← (J_t − d (mu kn/k) J_n) δx; at a touchdown (the
+ * offset set to u there, the instant moving with g) δw ← (J_t − (u'/g') J_n) δx; x and v stay
+ * continuous, as f and N do, and at a stop or an opening nothing jumps. Hence
  *
  *     Φ = e^{A_K Δt_K} S_K ⋯ S_1 e^{A_1 Δt_1},   Δt_k the pieces of θ = Ω t over [0, 2π),    (Φ)
  *
@@ -32,29 +35,19 @@
 #include "expm.h"
 #include "joint/aft_slips.h"
 #include "monodromy.h"
+#include "switches.h"
 
-/* One switch of a slider in z: its angle, the slider's place among z's sliders, onset or stop. */
-struct switch_event {
-    double theta;
-    size_t slider;
-    int onset;
-};
-
-/* The workspace, sized for n dofs, S sliders and H harmonics; column-major matrices of the
- * order P = 2n + S at most. */
+/* The workspace, sized for n dofs, m rows of J, S sliders and H harmonics; column-major
+ * matrices of the order P = 2n + S at most. */
 struct fr_hb_mono {
-    size_t n, S, P, me;
+    size_t n, m, S, P;
     int H;
-    double *Mlu, *MiK, *MiC, *MiJ; /* [n n] each, MiJ [n me]: M's LU, M^-1 K, M^-1 C, M^-1 J^T */
+    double *Mlu, *MiK, *MiC, *MiJ; /* [n n] each, MiJ [n m]: M's LU, M^-1 K, M^-1 C, M^-1 J^T */
     double *A, *E, *Phi, *T, *expm_work; /* [P P] each, expm's [6 P P] */
     double *eig_work, *wr, *wi;          /* [lwork], [P], [P] */
     size_t lwork;
-    double *on, *off;            /* [2H] one slider's slip intervals */
-    double *k;                   /* [S] the stiffness of each slider in z */
-    size_t *element;             /* [S] its element */
-    int *slipping;               /* [S] whether it slips now */
-    int *piv;                    /* [P] */
-    struct switch_event *events; /* [2 S 2H] */
+    int *piv; /* [P] */
+    struct fr_hb_schedule sc;
 };
 
 void fr_hb_monodromy_free(fricreg_hb *hb)
@@ -64,69 +57,51 @@ void fr_hb_monodromy_free(fricreg_hb *hb)
         return;
     free(w->Mlu);
     free(w->eig_work);
-    free(w->element);
-    free(w->slipping);
     free(w->piv);
-    free(w->events);
+    fr_hb_schedule_free(&w->sc);
     free(w);
     hb->mono = NULL;
 }
 
 int fr_hb_monodromy_reserve(fricreg_hb *hb, const char *fn)
 {
-    size_t n = hb->n, me = hb->me, S = hb->me * hb->ns, P = 2 * n + S, H2 = 2 * (size_t)hb->H;
+    size_t n = hb->n, m = hb->rpe * hb->me, S = hb->me * hb->ns, P = 2 * n + S;
     struct fr_hb_mono *w = hb->mono;
-    if (w != NULL && w->n == n && w->me == me && w->S >= S && w->H == hb->H)
+    if (w != NULL && w->n == n && w->m == m && w->S == S && w->H == hb->H)
         return FRICREG_OK;
     fr_hb_monodromy_free(hb);
     w = calloc(1, sizeof *w);
-    size_t lwork = fr_hb_eigenvalues_work(P), mats = 3 * n * n + n * me + 10 * P * P;
-    if (w != NULL) {
-        w->Mlu = malloc((mats + 2 * H2) * sizeof(double));
-        w->eig_work = malloc((lwork + 2 * P + S + 1) * sizeof(double));
-        w->element = malloc((S + 1) * sizeof *w->element);
-        w->slipping = malloc((S + 1) * sizeof *w->slipping);
+    size_t lwork = fr_hb_eigenvalues_work(P), mats = 3 * n * n + n * m + 10 * P * P;
+    int ok = w != NULL;
+    if (ok) {
+        *w = (struct fr_hb_mono){.n = n, .m = m, .S = S, .P = P, .H = hb->H, .lwork = lwork};
+        w->Mlu = malloc(mats * sizeof(double));
+        w->eig_work = malloc((lwork + 2 * P) * sizeof(double));
         w->piv = malloc(P * sizeof *w->piv);
-        w->events = malloc((2 * S * H2 + 1) * sizeof *w->events);
+        ok = w->Mlu && w->eig_work && w->piv && fr_hb_schedule_alloc(hb, &w->sc) == FRICREG_OK;
     }
     hb->mono = w;
-    if (w == NULL || !w->Mlu || !w->eig_work || !w->element || !w->slipping || !w->piv ||
-        !w->events) {
+    if (!ok) {
         fr_hb_monodromy_free(hb);
         return fr_fail(hb, FRICREG_ENOMEM,
                        "%s: stability: no memory for the monodromy of order %zu", fn, P);
     }
-    *w = (struct fr_hb_mono){.n = n,
-                             .S = S,
-                             .P = P,
-                             .me = me,
-                             .H = hb->H,
-                             .lwork = lwork,
-                             .Mlu = w->Mlu,
-                             .eig_work = w->eig_work,
-                             .element = w->element,
-                             .slipping = w->slipping,
-                             .piv = w->piv,
-                             .events = w->events};
     w->MiK = w->Mlu + n * n;
     w->MiC = w->MiK + n * n;
     w->MiJ = w->MiC + n * n;
-    w->A = w->MiJ + n * me;
+    w->A = w->MiJ + n * m;
     w->E = w->A + P * P;
     w->Phi = w->E + P * P;
     w->T = w->Phi + P * P;
     w->expm_work = w->T + P * P;
-    w->on = w->expm_work + fr_hb_expm_work(P);
-    w->off = w->on + H2;
     w->wr = w->eig_work + lwork;
     w->wi = w->wr + P;
-    w->k = w->wi + P;
     return FRICREG_OK;
 }
 
 int fr_hb_monodromy_applies(const fricreg_hb *hb)
 {
-    return hb->have_elements && hb->rpe == 1 && hb->nl == NULL;
+    return hb->have_elements && (hb->rpe == 1 || hb->rpe == 2);
 }
 
 /* The model's M, C (or Rayleigh's a0 M + a1 K) and K into Mlu, MiC, MiK, dense (symmetric:
@@ -169,100 +144,79 @@ static int mass_solves(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w)
         fr_hb_lu_solve_factored(w->Mlu, n, w->piv, w->MiK + l * n);
         fr_hb_lu_solve_factored(w->Mlu, n, w->piv, w->MiC + l * n);
     }
-    for (size_t e = 0; e < hb->me; e++) {
-        memcpy(w->MiJ + e * n, hb->J + e * n, n * sizeof(double));
-        fr_hb_lu_solve_factored(w->Mlu, n, w->piv, w->MiJ + e * n);
+    for (size_t r = 0; r < hb->m; r++) {
+        memcpy(w->MiJ + r * n, hb->J + r * n, n * sizeof(double));
+        fr_hb_lu_solve_factored(w->Mlu, n, w->piv, w->MiJ + r * n);
     }
     return FRICREG_OK;
 }
 
-/* K += k J_e^T J_e in M^-1's image: MiK += k (M^-1 J_e^T) J_e. */
-static void add_stuck_stiffness(const fricreg_hb *hb, struct fr_hb_mono *w, size_t e, double k)
+/* out[n n] −= k (M^-1 J_a^T) J_b, rows a and b of J (the spring k J_a^T J_b in M^-1's image). */
+static void sub_rank_one(const fricreg_hb *hb, const struct fr_hb_mono *w, size_t a, size_t b,
+                         double k, double *out, size_t ld)
 {
     size_t n = hb->n;
-    const double *Je = hb->J + e * n, *mj = w->MiJ + e * n;
+    const double *Jb = hb->J + b * n, *ma = w->MiJ + a * n;
     for (size_t l = 0; l < n; l++)
-        if (Je[l] != 0.0)
+        if (Jb[l] != 0.0)
             for (size_t i = 0; i < n; i++)
-                w->MiK[l * n + i] += k * Je[l] * mj[i];
+                out[l * ld + i] -= k * Jb[l] * ma[i];
 }
 
-static int by_angle(const void *x, const void *y)
+/* The row J_t − r J_n of element e (r = 0 or no normal row: J_t) into out[n]. */
+static void slider_row(const fricreg_hb *hb, size_t e, double r, double *out)
 {
-    double a = ((const struct switch_event *)x)->theta, b = ((const struct switch_event *)y)->theta;
-    return (a > b) - (a < b);
+    size_t n = hb->n, rpe = hb->rpe;
+    const double *Jt = hb->J + rpe * e * n;
+    for (size_t l = 0; l < n; l++)
+        out[l] = Jt[l] - (rpe == 2 && r != 0.0 ? r * Jt[n + l] : 0.0);
 }
 
-/* Every slider's slip intervals on q at the solution: the ones stuck all period into MiK, the
- * ones that switch into z (their stiffness, element, state at θ = 0) with their switches in
- * events, sorted by angle; the count of z's sliders into *S and of events into *count. */
-static int schedule(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w, size_t *S, size_t *count)
+/* dt A of the piece with the schedule's sliders and contacts in their current states,
+ * column-major [P P]; the x rows of the velocity block in A's columns 0..n-1. */
+static void piece_matrix(const fricreg_hb *hb, struct fr_hb_mono *w, double dt)
 {
-    size_t nc = hb->nc;
-    *S = *count = 0;
-    for (size_t e = 0; e < hb->me; e++) {
-        const double *k, *phi;
-        size_t ns = fr_hb_sliders(hb, e, &k, &phi);
-        for (size_t s = 0; s < ns; s++) {
-            struct fr_aft_slips sl = {.on = w->on, .off = w->off};
-            int status = fr_aft_exact_slips(hb->aft, fn, k[s], phi[s], hb->qjac + e * nc, &sl);
-            if (status != FRICREG_OK)
-                return fr_fail(hb, status, "%s: stability: the AFT of element %zu failed: %s", fn,
-                               e, fricreg_aft_errmsg(hb->aft));
-            if (sl.kind == FR_AFT_STUCK)
-                add_stuck_stiffness(hb, w, e, k[s]);
-            if (sl.kind != FR_AFT_SLIPS)
-                continue;
-            size_t j = (*S)++;
-            w->k[j] = k[s];
-            w->element[j] = e;
-            w->slipping[j] = 0;
-            for (int i = 0; i < sl.count; i++) {
-                w->slipping[j] |= sl.off[i] < sl.on[i]; /* across θ = 0 */
-                w->events[(*count)++] = (struct switch_event){sl.on[i], j, 1};
-                w->events[(*count)++] = (struct switch_event){sl.off[i], j, 0};
-            }
-        }
-    }
-    qsort(w->events, *count, sizeof *w->events, by_angle);
-    return FRICREG_OK;
-}
-
-/* dt A of the piece with z's S sliders in their current state, column-major [P P]. */
-static void piece_matrix(const fricreg_hb *hb, struct fr_hb_mono *w, size_t S, double dt)
-{
-    size_t n = hb->n, P = 2 * n + S;
-    double *A = w->A;
+    const struct fr_hb_schedule *sc = &w->sc;
+    size_t n = hb->n, S = sc->S, P = 2 * n + S, rpe = hb->rpe;
+    double *A = w->A, *row = w->wr; /* wr: free until the eigenvalues */
     memset(A, 0, P * P * sizeof *A);
     for (size_t i = 0; i < n; i++)
-        A[(n + i) * P + i] = dt;
+        A[(n + i) * P + i] = 1.0;
     for (size_t l = 0; l < n; l++)
         for (size_t i = 0; i < n; i++) {
-            A[l * P + n + i] = -dt * w->MiK[l * n + i];
-            A[(n + l) * P + n + i] = -dt * w->MiC[l * n + i];
+            A[l * P + n + i] = -w->MiK[l * n + i];
+            A[(n + l) * P + n + i] = -w->MiC[l * n + i];
         }
+    for (size_t e = 0; e < hb->me; e++) /* the closed contacts' normal springs */
+        if (rpe == 2 && sc->closed[e])
+            sub_rank_one(hb, w, 2 * e + 1, 2 * e + 1, sc->kn[e], A + n, P);
     for (size_t j = 0; j < S; j++) {
-        size_t e = w->element[j];
-        const double *Je = hb->J + e * n, *mj = w->MiJ + e * n;
-        if (w->slipping[j]) {
-            for (size_t l = 0; l < n; l++)
-                A[(n + l) * P + 2 * n + j] = dt * Je[l];
+        size_t e = sc->element[j], t = rpe * e;
+        double k = sc->k[j];
+        if (!sc->closed[e] || sc->mode[j] == FR_AFT_OPEN)
+            continue;
+        if (sc->mode[j] == FR_AFT_STICK) { /* k (J_t δx − δw) */
+            sub_rank_one(hb, w, t, t, k, A + n, P);
+            for (size_t i = 0; i < n; i++)
+                A[(2 * n + j) * P + n + i] = k * w->MiJ[t * n + i];
             continue;
         }
-        for (size_t i = 0; i < n; i++) /* the stuck slider's spring k (J_e δx − δw) */
-            A[(2 * n + j) * P + n + i] = dt * w->k[j] * mj[i];
+        double d = sc->dir[j], c = sc->c[j]; /* slip: d mu kn J_n δx, the offset following */
+        if (c != 0.0)
+            sub_rank_one(hb, w, t, t + 1, d * c, A + n, P);
+        slider_row(hb, e, d * c / k, row);
         for (size_t l = 0; l < n; l++)
-            if (Je[l] != 0.0)
-                for (size_t i = 0; i < n; i++)
-                    A[l * P + n + i] -= dt * w->k[j] * Je[l] * mj[i];
+            A[(n + l) * P + 2 * n + j] = row[l];
     }
+    for (size_t i = 0; i < P * P; i++)
+        A[i] *= dt;
 }
 
 /* Φ = e^{dt A} Φ over a piece of the period. */
-static int advance(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w, size_t S, double dt)
+static int advance(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w, double dt)
 {
-    size_t P = 2 * hb->n + S;
-    piece_matrix(hb, w, S, dt);
+    size_t P = 2 * hb->n + w->sc.S;
+    piece_matrix(hb, w, dt);
     int info = fr_hb_expm(w->A, P, w->E, w->expm_work, w->piv);
     if (info != 0)
         return fr_fail(hb, FRICREG_ENONFINITE,
@@ -275,50 +229,57 @@ static int advance(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w, size_t 
     return FRICREG_OK;
 }
 
-/* The saltation of slider j's onset: its offset's row becomes J_e δx. */
-static void onset(const fricreg_hb *hb, struct fr_hb_mono *w, size_t S, size_t j)
+/* A switch applied: the slider's or contact's new state, and a reset's saltation, the offset's
+ * row of Φ becoming (J_t − r J_n) δx. */
+static void apply(const fricreg_hb *hb, struct fr_hb_mono *w, const struct fr_hb_switch *s)
 {
-    size_t n = hb->n, P = 2 * n + S;
-    const double *Je = hb->J + w->element[j] * n;
+    struct fr_hb_schedule *sc = &w->sc;
+    if (s->contact) {
+        sc->closed[s->index] = s->mode;
+        return;
+    }
+    size_t j = s->index, n = hb->n, P = 2 * n + sc->S;
+    sc->mode[j] = s->mode;
+    sc->dir[j] = s->dir;
+    if (s->reset == FR_AFT_KEEP)
+        return;
+    double r = s->reset == FR_AFT_TOUCHDOWN ? s->ratio : s->dir * sc->c[j] / sc->k[j], *row = w->wr;
+    slider_row(hb, sc->element[j], r, row);
     for (size_t c = 0; c < P; c++) {
-        double s = 0.0;
+        double v = 0.0;
         for (size_t l = 0; l < n; l++)
-            s += Je[l] * w->Phi[c * P + l];
-        w->Phi[c * P + 2 * n + j] = s;
+            v += row[l] * w->Phi[c * P + l];
+        w->Phi[c * P + 2 * n + j] = v;
     }
 }
 
 /* (Φ) over the period T = 2π/Ω from the sorted switches. */
-static int monodromy_matrix(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w, size_t S,
-                            size_t count, double omega)
+static int monodromy_matrix(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w, double omega)
 {
-    size_t P = 2 * hb->n + S;
+    const struct fr_hb_schedule *sc = &w->sc;
+    size_t P = 2 * hb->n + sc->S;
     memset(w->Phi, 0, P * P * sizeof(double));
     for (size_t i = 0; i < P; i++)
         w->Phi[i * P + i] = 1.0;
     double theta = 0.0;
-    for (size_t i = 0; i <= count; i++) {
-        double next = i < count ? w->events[i].theta : FR_TWO_PI;
-        int status = next > theta ? advance(hb, fn, w, S, (next - theta) / omega) : FRICREG_OK;
+    for (size_t i = 0; i <= sc->count; i++) {
+        double next = i < sc->count ? sc->sw[i].theta : FR_TWO_PI;
+        int status = next > theta ? advance(hb, fn, w, (next - theta) / omega) : FRICREG_OK;
         if (status != FRICREG_OK)
             return status;
         theta = fmax(theta, next);
-        if (i == count)
-            break;
-        size_t j = w->events[i].slider;
-        w->slipping[j] = w->events[i].onset;
-        if (w->events[i].onset)
-            onset(hb, w, S, j);
+        if (i < sc->count)
+            apply(hb, w, &sc->sw[i]);
     }
     return FRICREG_OK;
 }
 
 /* The 2n multipliers of Φ [P P] (destroyed) as exponents into out[2 + 4n], with the verdict and
  * the largest |μ| in out[0], out[1]: the S smallest |μ|, the sliders' zeros, dropped. */
-static int multipliers(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w, size_t S, double omega,
+static int multipliers(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w, double omega,
                        double *out)
 {
-    size_t P = 2 * hb->n + S;
+    size_t S = w->sc.S, P = 2 * hb->n + S;
     for (size_t i = 0; i < P * P; i++)
         if (!isfinite(w->Phi[i]))
             return fr_fail(hb, FRICREG_ENONFINITE,
@@ -358,11 +319,15 @@ int fr_hb_monodromy(fricreg_hb *hb, const char *fn, double omega, double *out)
     if (status != FRICREG_OK)
         return status;
     struct fr_hb_mono *w = hb->mono;
-    size_t S, count;
     dense_model(hb, w);
     if ((status = mass_solves(hb, fn, w)) != FRICREG_OK ||
-        (status = schedule(hb, fn, w, &S, &count)) != FRICREG_OK ||
-        (status = monodromy_matrix(hb, fn, w, S, count, omega)) != FRICREG_OK)
+        (status = fr_hb_schedule(hb, fn, &w->sc)) != FRICREG_OK)
         return status;
-    return multipliers(hb, fn, w, S, omega, out);
+    for (size_t i = 0; i < w->sc.nstuck; i++) { /* the sliders stuck throughout: springs */
+        size_t t = hb->rpe * w->sc.stuck_element[i];
+        sub_rank_one(hb, w, t, t, -w->sc.stuck_k[i], w->MiK, hb->n);
+    }
+    if ((status = monodromy_matrix(hb, fn, w, omega)) != FRICREG_OK)
+        return status;
+    return multipliers(hb, fn, w, omega, out);
 }

@@ -7,7 +7,8 @@
 #include "hb_internal.h"
 
 /* Whether the elements are piecewise linear in the sense of the monodromy: 1-D Jenkins and
- * Iwan elements under a constant normal load (no lift-off, no 3-D contact), and some set. */
+ * Iwan elements under a constant normal load or with lift-off (not the 3-D contact), and some
+ * set. */
 int fr_hb_monodromy_applies(const fricreg_hb *hb);
 
 /* The exact monodromy at the solution whose coefficients q are those of the last residual with

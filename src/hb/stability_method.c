@@ -26,7 +26,7 @@ int fr_hb_stability(fricreg_hb *hb, const char *fn, double omega, double *out)
     if (!fr_hb_monodromy_applies(hb))
         return fr_fail(hb, FRICREG_EINVAL,
                        "%s: stability: the exact monodromy needs piecewise-linear elements (1-D "
-                       "Jenkins or Iwan elements without lift-off); these are not: choose "
+                       "Jenkins or Iwan elements, with or without lift-off); these are not: choose "
                        "FRICREG_HB_STABILITY_HILL or _AUTO",
                        fn);
     return fr_hb_monodromy(hb, fn, omega, out);

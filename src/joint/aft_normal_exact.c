@@ -37,6 +37,7 @@
 #include <string.h>
 
 #include "aft_internal.h"
+#include "aft_slips.h"
 #include "base/fr_math.h"
 
 #define MAX_PERIODS 16 /* periods marched in search of the periodic state without opening */
@@ -63,13 +64,37 @@ struct changes {
 struct march {
     fricreg_aft *a;
     double kt, mu, n0, kn;
-    const double *u, *g, *gap; /* coefficients (copies), and of P = N0 + kn g */
-    double *cs;                /* coefficients of a margin c_s */
-    struct changes v[2], p;    /* v[0]: v+, v[1]: v-; p: the gap */
-    double *jac;               /* 2nc x 2nc or NULL */
-    int moved;                 /* the period's slips: 1 positive, 2 negative, 3 both */
-    int unresolved;            /* sticks below the rounding of u: they take no time */
+    const double *u, *g, *gap;  /* coefficients (copies), and of P = N0 + kn g */
+    double *cs;                 /* coefficients of a margin c_s */
+    struct changes v[2], p;     /* v[0]: v+, v[1]: v-; p: the gap */
+    double *jac;                /* 2nc x 2nc or NULL */
+    int moved;                  /* the period's slips: 1 positive, 2 negative, 3 both */
+    int unresolved;             /* sticks below the rounding of u: they take no time */
+    struct fr_aft_liftoff *rec; /* the period's switches recorded (NULL: not) */
 };
+
+/* The switch into st at th recorded (when recording), with its reset. */
+static void record(struct march *s, const struct state *st, double th, int reset)
+{
+    struct fr_aft_liftoff *lo = s->rec;
+    if (lo == NULL)
+        return;
+    if (lo->nsw >= lo->cap) {
+        lo->nsw = lo->cap + 1; /* overflowed: the caller fails */
+        return;
+    }
+    double ratio = 0.0;
+    if (reset == FR_AFT_TOUCHDOWN) {
+        double du, dg;
+        fr_aft_trig_eval(s->a->H, s->u, th, &du);
+        fr_aft_trig_eval(s->a->H, s->g, th, &dg);
+        ratio = dg != 0.0 ? du / dg : 0.0; /* a grazing touchdown: 0, as the AFT's Jacobian */
+        if (!(fabs(ratio) <= 1e150))
+            ratio = 0.0;
+    }
+    int mode = st->mode == OPEN ? FR_AFT_OPEN : st->mode == STICK ? FR_AFT_STICK : FR_AFT_SLIP;
+    lo->sw[lo->nsw++] = (struct fr_aft_switch){th, ratio, mode, st->dir, reset};
+}
 
 /* The first sign change of c after th (strictly), with the sign want after it (0: any), as an
  * absolute angle; its index into *k. INFINITY if none. */
@@ -197,6 +222,9 @@ static void period(struct march *s, struct state *st, double th0)
     s->moved = 0;
     double th = th0, the = th0 + FR_TWO_PI;
     int k = 0;
+    if (s->rec != NULL)
+        s->rec->nsw = 0;
+    record(s, st, th0, st->mode == STICK && st->touch && st->th == th0 ? FR_AFT_TOUCHDOWN : 0);
     while (th < the) {
         if (st->mode == OPEN) {
             double t = next_change(&s->p, 1, th, &k);
@@ -204,9 +232,11 @@ static void period(struct march *s, struct state *st, double th0)
                 return;
             *st = (struct state){STICK, 0, 1, s->kt * eval(s, s->u, t), t};
             th = t;
+            record(s, st, t, FR_AFT_TOUCHDOWN);
         } else if (st->mode == STICK && s->unresolved && slip_at_once(s, th) != 0) {
             st->dir = slip_at_once(s, th);
             st->mode = SLIP;
+            record(s, st, th, FR_AFT_ONSET);
         } else if (st->mode == STICK) {
             double t_open = fmin(next_change(&s->p, -1, th, &k), the);
             double tp = onset(s, 1, st->kw, th, t_open), tm = onset(s, -1, st->kw, th, t_open);
@@ -214,11 +244,14 @@ static void period(struct march *s, struct state *st, double th0)
             if (t > th)
                 add_stick(s, st, th, t);
             if (t_open <= t_slip) { /* an opening first (or the period's end) */
-                if (t < the)
+                if (t < the) {
                     st->mode = OPEN;
+                    record(s, st, t, FR_AFT_KEEP);
+                }
             } else {
                 st->mode = SLIP;
                 st->dir = tp <= tm ? 1 : -1;
+                record(s, st, t, FR_AFT_ONSET);
             }
             th = t;
         } else {
@@ -235,9 +268,12 @@ static void period(struct march *s, struct state *st, double th0)
                 add_slip(s, st->dir, th, t);
             if (t < the && t_open <= t_stop) {
                 st->mode = OPEN;
+                record(s, st, t, FR_AFT_KEEP);
             } else if (t < the || t_stop == the) {
                 double kw = s->kt * eval(s, s->u, t) - st->dir * s->mu * eval(s, s->gap, t);
                 *st = (struct state){STICK, st->dir, 0, kw, t};
+                if (t < the)
+                    record(s, st, t, FR_AFT_KEEP);
             }
             th = t;
         }
@@ -317,8 +353,11 @@ static void normal_force(struct march *s, double *nf)
     }
 }
 
-int fr_aft_exact_normal(fricreg_aft *a, const char *fn, double kt, double mu, double n0, double kn,
-                        const double *u, const double *g, double *f, double *nf, double *jac)
+/* fr_aft_exact_normal, its march's switches recorded into rec when not NULL (its kind and the
+ * contact's schedule set by the caller from the march). */
+static int exact_normal(fricreg_aft *a, const char *fn, double kt, double mu, double n0, double kn,
+                        const double *u, const double *g, double *f, double *nf, double *jac,
+                        struct fr_aft_liftoff *rec)
 {
     int H = a->H;
     size_t nc = a->nc;
@@ -326,7 +365,7 @@ int fr_aft_exact_normal(fricreg_aft *a, const char *fn, double kt, double mu, do
            *gc = uc + nc;
     memcpy(uc, u, nc * sizeof *uc);
     memcpy(gc, g, nc * sizeof *gc);
-    struct march s = {a, kt, mu, n0, kn, uc, gc, gap, cs, {{0}}, {0}, NULL, 0, 0};
+    struct march s = {a, kt, mu, n0, kn, uc, gc, gap, cs, {{0}}, {0}, NULL, 0, 0, rec};
     for (size_t j = 0; j < nc; j++)
         cs[j] = kn * gc[j];
     cs[0] += n0;
@@ -377,6 +416,14 @@ int fr_aft_exact_normal(fricreg_aft *a, const char *fn, double kt, double mu, do
         memset(jac, 0, 4 * nc * nc * sizeof *jac);
     memset(a->fout, 0, nc * sizeof *a->fout);
     memset(a->jout, 0, nc * nc * sizeof *a->jout);
+    if (rec != NULL) { /* the contact's schedule, and no tangential force unless it slides */
+        rec->count = s.p.m;
+        rec->sign = s.p.sign;
+        memcpy(rec->at, s.p.r, (size_t)s.p.m * sizeof *rec->at);
+        memcpy(rec->dir, s.p.d, (size_t)s.p.m * sizeof *rec->dir);
+        rec->kind = slides ? FR_AFT_SLIPS : FR_AFT_SLIDES;
+        rec->nsw = 0;
+    }
     if (open_throughout) {
         memset(f, 0, nc * sizeof *f);
         memset(nf, 0, nc * sizeof *nf);
@@ -407,6 +454,8 @@ int fr_aft_exact_normal(fricreg_aft *a, const char *fn, double kt, double mu, do
          * the slider touches the bound, its place a leftover of the start): the centred
          * slider where it holds */
         if (s.moved != 3 && centred_holds(&s, wc)) {
+            if (rec != NULL)
+                rec->kind = FR_AFT_STUCK;
             a->fout[0] = kt * (uc[0] - wc);
             for (size_t j = 1; j < nc; j++)
                 a->fout[j] = kt * uc[j];
@@ -430,4 +479,22 @@ int fr_aft_exact_normal(fricreg_aft *a, const char *fn, double kt, double mu, do
         for (size_t i = 0; i < nc; i++)
             memcpy(&jac[2 * nc * i], &a->jout[nc * i], nc * sizeof *jac);
     return FRICREG_OK;
+}
+
+int fr_aft_exact_normal(fricreg_aft *a, const char *fn, double kt, double mu, double n0, double kn,
+                        const double *u, const double *g, double *f, double *nf, double *jac)
+{
+    return exact_normal(a, fn, kt, mu, n0, kn, u, g, f, nf, jac, NULL);
+}
+
+int fr_aft_exact_normal_switches(fricreg_aft *a, const char *fn, double kt, double mu, double n0,
+                                 double kn, const double *u, const double *g, double *scratch,
+                                 struct fr_aft_liftoff *lo)
+{
+    size_t nc = a->nc;
+    int status = exact_normal(a, fn, kt, mu, n0, kn, u, g, scratch, scratch + nc, NULL, lo);
+    if (status == FRICREG_OK && lo->nsw > lo->cap)
+        return fr_fail(a, FRICREG_EINTEGRATOR,
+                       "%s: the slider switches more than %d times in a period", fn, lo->cap);
+    return status;
 }
