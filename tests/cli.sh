@@ -932,6 +932,25 @@ if ! awk -F, 'NR > 1 { w = $1; a = 6.5 - 2 * w * w; c = 0.06 * w; x = 0.5 / sqrt
     echo "FAIL: hb 3-D contact against the linear closed form: $(head -n 3 "$d/frf3.csv") $(cat "$d/err")"; fails=$((fails + 1))
 fi
 expect_output '"element_kind": "contact-3d"' $hb3 --jenkins-2d $d/J2.mtx --normal-params $d/Q3.txt
+# The lift-off pair of tests/test_hb_continuation.c (2 unit masses, K = [140 -20; -20 180],
+# C = 0.002 K, kt 40, mu 0.3, N0 2, kn 100, u = x_1, g = -x_2, p_c = (2, 1)) from 11.5 to 12.5
+# rad/s with every default: the start without a guess is on the stable branch that the
+# continuations from 12.5 down and from 5 up reach (the library test, to 1e-8), rms_2 =
+# 0.0422997417 at 11.5 (measured), and every point stable.
+printf '%s\n' "%%MatrixMarket matrix coordinate real general" "2 2 2" "1 1 1" "2 2 1" >"$d/lpM.mtx"
+printf '%s\n' "%%MatrixMarket matrix coordinate real general" "2 2 4" "1 1 140" "1 2 -20" "2 1 -20" "2 2 180" >"$d/lpK.mtx"
+printf '%s\n' "%%MatrixMarket matrix coordinate real general" "1 2 1" "1 1 1" >"$d/lpJ.mtx"
+printf '%s\n' "%%MatrixMarket matrix coordinate real general" "1 2 1" "1 2 -1" >"$d/lpJn.mtx"
+printf '%s\n' "2 0" "1 0" >"$d/lpF.txt"
+echo "40 0.3 2 100" >"$d/lpQ.txt"
+lp="hb --mass $d/lpM.mtx --stiffness $d/lpK.mtx --rayleigh 0,0.002 --excitation $d/lpF.txt --jenkins $d/lpJ.mtx --normal $d/lpJn.mtx --normal-params $d/lpQ.txt --omega-start 11.5 --omega-end 12.5"
+expect_output '"omega_reached": 12.5, ' $lp
+total=$((total + 1))
+"$sim" $lp --output frf >"$d/lp.csv" 2>"$d/err"
+if [ $? -ne 0 ] || ! awk -F, 'NR == 2 { ok = $1 == 11.5 && $3 > 0.04229974 && $3 < 0.04229975 }
+        NR > 1 && $5 == "" { rows++; if ($4 != 1) bad++ } END { exit !(ok && rows > 10 && !bad) }' "$d/lp.csv"; then
+    echo "FAIL: hb lift-off pair 11.5 to 12.5 by default: $(head -n 3 "$d/lp.csv") $(cat "$d/err")"; fails=$((fails + 1))
+fi
 echo "1.5 0.1 3 -1" >"$d/Q_bad.txt"
 expect_usage_error "^fricreg-sim: --normal-params $d/Q_bad.txt: .*kn" $hbs --omega-start 1 --omega-end 2 --normal $d/J.mtx --normal-params $d/Q_bad.txt
 expect_usage_error "^fricreg-sim: --iwan-params $d/P1.txt: line 1: 1 numbers: give pairs" $hbs --omega-start 1 --omega-end 2 --iwan-params $d/P1.txt

@@ -31,7 +31,10 @@
  *   - the contact pair's peak from three routes (up, down, and across 5 to 14 rad/s) agree to
  *     1e-8; at the peak, the steady state in time (tests/support/jenkins_newmark.h, 1024 steps a
  *     period, 400 periods, steady to 1e-6 and the contact asserted to open and close) against
- *     H = 15 within 2e-3. */
+ *     H = 15 within 2e-3.
+ *   - the contact pair's start without a guess at H = 7 (the CLI's default) from 11.5 to 12.5:
+ *     its first point stable (Hill's method) and that of the continuations from 12.5 down and
+ *     from 5 up to 1e-8. */
 #include <check.h>
 #include <math.h>
 #include <stdio.h>
@@ -329,6 +332,59 @@ START_TEST(contact_pair_every_route)
 }
 END_TEST
 
+/* The contact pair's point at omega reached from w0 at H with stability on (every point from
+ * 11.5 rad/s up stable), dof k's RMS into rms[k]; the driver returned. */
+static fricreg_hb *stable_route(const struct jenkins_model *s, int H, double w0, double omega,
+                                double *rms)
+{
+    fricreg_hb *hb = make(s, H);
+    ck_assert_int_eq(fricreg_hb_set_stability(hb, 1), FRICREG_OK);
+    size_t nq = rows(s) * (2 * (size_t)H + 1);
+    ck_assert_msg(fricreg_hb_continue(hb, w0, omega, nq, NULL) == FRICREG_OK, "%g -> %g: %s", w0,
+                  omega, fricreg_hb_errmsg(hb));
+    size_t np = fricreg_hb_points(hb), at = w0 == omega ? 0 : np - 1;
+    for (size_t k = 0; k < np; k++) {
+        int stable = 0;
+        double mu_max, om, r[MAXN];
+        ck_assert_int_eq(fricreg_hb_point_stability(hb, k, &stable, &mu_max), FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_point(hb, k, &om, s->n, r), FRICREG_OK);
+        ck_assert_msg(stable || om < 11.5, "%g -> %g: point %zu at Omega %.10g unstable, mu_max %g",
+                      w0, omega, k, om, mu_max);
+    }
+    double om;
+    ck_assert_int_eq(fricreg_hb_point(hb, at, &om, s->n, rms), FRICREG_OK);
+    ck_assert_double_eq(om, omega);
+    return hb;
+}
+
+/* The start without a guess at the CLI's defaults (H = 7) from 11.5 to 12.5 rad/s lands on the
+ * stable branch that the continuations from 12.5 down and from 5 up follow: every point of
+ * the three from 11.5 up stable, the first point at 11.5 theirs to 1e-8 (measured: 1.1e-10
+ * from 12.5, 1e-12 from 5; rms_2 = 0.0423, mu_max = 0.903; 3000 random guesses at 11.5 found
+ * no other solution). Below, from 5 up, the branch is unstable between two Neimark-Sacker
+ * points near 10.67 and 10.82 rad/s (mu_max 1.084 at 10.73, the same at H = 7, 11 and 15). */
+START_TEST(contact_pair_default_start_stable)
+{
+    struct jenkins_model s = contact_pair();
+    const int H = 7;
+    double first[MAXN], down[MAXN], up[MAXN];
+    fricreg_hb *hb = stable_route(&s, H, 11.5, 12.5, down); /* its last point, unused */
+    double om;
+    ck_assert_int_eq(fricreg_hb_point(hb, 0, &om, s.n, first), FRICREG_OK);
+    ck_assert_double_eq(om, 11.5);
+    fricreg_hb_free(hb);
+    fricreg_hb_free(stable_route(&s, H, 12.5, 11.5, down));
+    fricreg_hb_free(stable_route(&s, H, 5.0, 11.5, up));
+    for (size_t k = 0; k < s.n; k++) {
+        if (getenv("HB_PRINT"))
+            fprintf(stderr, "dof %zu at 11.5: start %.12g, from 12.5 %.12g, from 5 %.12g\n", k,
+                    first[k], down[k], up[k]);
+        ck_assert_double_le(fabs(first[k] / down[k] - 1.0), 1e-8);
+        ck_assert_double_le(fabs(first[k] / up[k] - 1.0), 1e-8);
+    }
+}
+END_TEST
+
 /* At the located peak, the steady state in time: the contact opens and closes there. */
 START_TEST(contact_pair_time_domain)
 {
@@ -490,6 +546,7 @@ int main(void)
     tcase_add_test(tc, chain_coarse_ds_min);
     tcase_add_test(tc, peak_against_fixed_omega);
     tcase_add_test(tc, contact_pair_every_route);
+    tcase_add_test(tc, contact_pair_default_start_stable);
     tcase_add_test(tc, doubling_back_stops);
     tcase_add_test(tc, elements_change_between_branches);
     tcase_add_test(tc, peak_bad_input);
