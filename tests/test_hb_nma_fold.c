@@ -253,7 +253,24 @@ START_TEST(fold_h7)
 }
 END_TEST
 
-/* (f) The getters' statuses; a fold out of range writes nothing. */
+/* (f) H = 15: the same S, its folds within 1 % of H = 3's amplitude (measured 4.4560 and
+ * 4.4427; test_hb_nma_shooting checks its frequencies against the time domain). */
+START_TEST(fold_h15)
+{
+    fricreg_hb *hb = model(15);
+    ck_assert_int_eq(fricreg_hb_nma_continue(hb, 0, FRICREG_HB_NMA_DAMPING_MATRIX, 0.05, 100.0, 50),
+                     FRICREG_OK);
+    ck_assert_uint_eq(fricreg_hb_nma_folds(hb), 2);
+    double a, omega, zeta, a_lower;
+    ck_assert_int_eq(fricreg_hb_nma_fold(hb, 0, &a, &omega, &zeta), FRICREG_OK);
+    ck_assert_double_eq_tol(a, 4.4324, 0.01 * 4.4324);
+    ck_assert_int_eq(fricreg_hb_nma_fold(hb, 1, &a_lower, &omega, &zeta), FRICREG_OK);
+    ck_assert_double_lt(a_lower, a);
+    fricreg_hb_free(hb);
+}
+END_TEST
+
+/* (g) The getters' statuses; a fold out of range writes nothing. */
 START_TEST(fold_getters)
 {
     double a = -1.0, omega = -1.0, zeta = -1.0;
@@ -282,6 +299,7 @@ int main(void)
     tcase_add_test(tc, limits_closed_form);
     tcase_add_test(tc, march_agrees_before_fold);
     tcase_add_test(tc, fold_h7);
+    tcase_add_test(tc, fold_h15);
     tcase_add_test(tc, fold_getters);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);
