@@ -3,7 +3,8 @@
  * Hill's method and by the exact monodromy (fricreg_hb_set_stability_method): the gap pair of
  * tests/test_hb_stability.c (2 dofs, one lift-off element with a gap, H = 15: Hill's companion
  * matrix of order 124) and a
- * three-mass Jenkins chain at H = 7 and 15 (orders 90 and 186), each branch followed without
+ * three-mass Jenkins chain at H = 7 and 15 (orders 90 and 186), the Jenkins pair and the
+ * lift-off pair of the same test (Hill's orders 124), each branch followed without
  * stability and with each method; the median over repeats of the time per stored point (the
  * bifurcations' location included: it is part of fricreg_hb_continue; their count without/with
  * printed), and the ratios with/without, target <= 1.5 for the monodromy. Usage:
@@ -29,6 +30,7 @@ struct model {
     size_t n;
     int H, normal;
     double M[9], K[9], J[3], Jn[3], kt, mun, mu, n0, kn, pc[3], w0, w1;
+    double c; /* C = c K */
 };
 
 /* Median seconds per stored point over repeats branches, without stability (method < 0) or by
@@ -39,7 +41,7 @@ static double per_point(const struct model *s, int method, int repeats, size_t *
     double t[64], C[9], ps[3] = {0.0, 0.0, 0.0};
     size_t n = s->n, nq = (s->normal ? 2 : 1) * (2 * (size_t)s->H + 1);
     for (size_t i = 0; i < n * n; i++)
-        C[i] = 0.002 * s->K[i];
+        C[i] = s->c * s->K[i];
     for (int k = 0; k < repeats; k++) {
         fricreg_hb *hb = NULL;
         if (fricreg_hb_create(n, 1, s->H, &hb) != FRICREG_OK)
@@ -91,7 +93,8 @@ int main(int argc, char **argv)
                         .kn = 500.0,
                         .pc = {2, 1},
                         .w0 = 11.0,
-                        .w1 = 17.0};
+                        .w1 = 17.0,
+                        .c = 0.002};
     struct model chain = {.name = "Jenkins chain, 3 dofs, H = 7",
                           .n = 3,
                           .H = 7,
@@ -102,16 +105,35 @@ int main(int argc, char **argv)
                           .mun = 1.0,
                           .pc = {0, 1, 0},
                           .w0 = 0.5,
-                          .w1 = 2.0};
+                          .w1 = 2.0,
+                          .c = 0.002};
     struct model chain15 = chain;
     chain15.name = "Jenkins chain, 3 dofs, H = 15";
     chain15.H = 15;
-    const struct model *models[3] = {&gap, &chain, &chain15};
+    struct model pair = {.name = "Jenkins pair, H = 15",
+                         .n = 2,
+                         .H = 15,
+                         .M = {1, 0, 0, 1},
+                         .K = {2, -1, -1, 2},
+                         .J = {1, 0},
+                         .kt = 3.0,
+                         .mun = 0.4,
+                         .pc = {1, 0},
+                         .w0 = 0.3,
+                         .w1 = 2.5,
+                         .c = 0.05};
+    struct model liftoff = gap;
+    liftoff.name = "lift-off pair, H = 15";
+    liftoff.J[0] = 1.0, liftoff.J[1] = 0.0;
+    liftoff.Jn[0] = 0.0, liftoff.Jn[1] = -1.0;
+    liftoff.mu = 0.3, liftoff.n0 = 2.0, liftoff.kn = 100.0;
+    liftoff.w0 = 5.0, liftoff.w1 = 12.5;
+    const struct model *models[5] = {&gap, &chain, &chain15, &pair, &liftoff};
     printf("# Stability per continuation point: median of %d branches; ratios to without\n",
            repeats);
     printf("%-30s %8s %8s %12s %10s %10s %8s %8s\n", "model", "points", "bifs", "without (ms)",
            "Hill", "monodromy", "ratio H", "ratio M");
-    for (int i = 0; i < 3; i++) {
+    for (int i = 0; i < 5; i++) {
         size_t p0 = 0, p1 = 0, p2 = 0, b0 = 0, b1 = 0, b2 = 0;
         double a = per_point(models[i], -1, repeats, &p0, &b0),
                b = per_point(models[i], FRICREG_HB_STABILITY_HILL, repeats, &p1, &b1),
