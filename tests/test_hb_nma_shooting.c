@@ -9,7 +9,7 @@
  *
  * The reference: a point's free motion x'' − ξ x' + K x + e_2 f = 0 (the extended periodic
  * motion concept's equation, ξ = 2 ζ ω the point's) is periodic at one period T near 2π/ω; it
- * is found by Newton's shooting (jenkins_pair_events.h: GSL's rk8pd between the switches,
+ * is found by Newton's shooting (jenkins_events.h: GSL's rk8pd between the switches,
  * located to 1e-14 T) on (x_2, v_1, v_2, w, T) with x_1 held at the HB orbit's value where the
  * slider is deepest in a stick (the phase condition), from the HB orbit. ξ is monotone across
  * the S (0.0029 to 0.0079 of ζ between the folds), so the point at a given ξ is one of the
@@ -24,7 +24,7 @@
 #include <gsl/gsl_linalg.h>
 
 #include "fricreg_hb.h"
-#include "jenkins_pair_events.h"
+#include "jenkins_events.h"
 
 #define NPOINTS 50
 
@@ -44,24 +44,24 @@ static fricreg_hb *model(int harmonics)
 }
 
 /* The free motion at ξ and Ω = omega (period 2π/Ω). */
-static struct jenkins_pair free_motion(double xi, double omega)
+static struct jenkins_system free_motion(double xi, double omega)
 {
-    struct jenkins_pair s = {.K = {1.25, -0.25, -0.25, 0.45},
-                             .C = {-xi, 0, 0, -xi},
-                             .kt = 10.0,
-                             .mun = 1.0,
-                             .dof = 1,
-                             .force = 0.0,
-                             .omega = omega};
+    struct jenkins_system s = {.n = 2,
+                               .K = {1.25, -0.25, -0.25, 0.45},
+                               .C = {-xi, 0, 0, -xi},
+                               .J = {0, 1},
+                               .kt = 10.0,
+                               .mun = 1.0,
+                               .omega = omega};
     return s;
 }
 
 /* r[5] = period(z) − z at the unknowns u = (x2, v1, v2, w, Ω), x1 = z[0] held. */
 static void defect(double xi, const double z0[5], const double u[5], double r[5])
 {
-    struct jenkins_pair s = free_motion(xi, u[4]);
+    struct jenkins_system s = free_motion(xi, u[4]);
     double z[5] = {z0[0], u[0], u[1], u[2], u[3]}, zn[5];
-    jenkins_pair_period(&s, 0.0, z, zn);
+    jenkins_period(&s, 0.0, z, zn);
     for (int j = 0; j < 5; j++)
         r[j] = zn[j] - z[j];
 }
@@ -115,8 +115,8 @@ static double worst_frequency_error(int H, double a_min, double a_max)
         if (a < a_min || a > a_max)
             continue;
         double xi = 2.0 * zeta * omega;
-        struct jenkins_pair s = free_motion(xi, omega);
-        jenkins_pair_start(&s, H, x, &t0, z);
+        struct jenkins_system s = free_motion(xi, omega);
+        jenkins_start(&s, H, x, &t0, z);
         double err = fabs(omega / shoot(xi, z, omega) - 1.0);
         if (getenv("HB_PRINT"))
             fprintf(stderr, "H = %d a = %.5f omega = %.8f zeta = %.5f: %.2e\n", H, a, omega, zeta,
