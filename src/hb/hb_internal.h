@@ -264,6 +264,10 @@ int fr_hb_eigenvalues(double *A, size_t n, double *wr, double *wi, double *work,
 void fr_hb_lu_solve_factored(const double *LU, size_t n, const int *piv, double *x);
 void fr_hb_zlu_factor(double *A, size_t n, int *piv);
 void fr_hb_zlu_solve_factored(const double *LU, size_t n, const int *piv, double *x);
+/* The stability's M^-1 (lu.c): Mlu[n n] holding M factored in place into piv[n], every pivot
+ * above 1e-14 of M's largest entry; else FRICREG_ESINGULAR, the message naming the method that
+ * needs it. */
+int fr_hb_mass_lu(fricreg_hb *hb, const char *fn, const char *method, double *Mlu, int *piv);
 
 /* The real LU solve of Newton's matrix A[nd nd] (factored in place) for rhs[nd] into sol[nd]
  * (may alias rhs). FRICREG_OK or FRICREG_ESINGULAR (a pivot below 1e-14 of the matrix's

@@ -11,6 +11,7 @@
  * conjugated). A zero pivot leaves the factor complete with info > 0 (the callers check every
  * pivot before a solve). */
 #include <limits.h>
+#include <math.h>
 #include <stddef.h>
 
 #include "hb_internal.h"
@@ -47,4 +48,20 @@ void fr_hb_zlu_solve_factored(const double *LU, size_t n, const int *piv, double
 {
     int order = (int)n, one = 1, info;
     zgetrs_("T", &order, &one, LU, &order, piv, x, &order, &info, 1);
+}
+
+int fr_hb_mass_lu(fricreg_hb *hb, const char *fn, const char *method, double *Mlu, int *piv)
+{
+    size_t n = hb->n;
+    double mmax = 0.0;
+    for (size_t i = 0; i < n * n; i++)
+        mmax = fmax(mmax, fabs(Mlu[i]));
+    fr_hb_lu_factor(Mlu, n, piv);
+    for (size_t k = 0; k < n; k++)
+        if (!(fabs(Mlu[k * n + k]) > 1e-14 * mmax))
+            return fr_fail(hb, FRICREG_ESINGULAR,
+                           "%s: stability: the mass matrix is singular (pivot %zu of its LU "
+                           "factor: %g, largest entry %g): %s needs M^-1",
+                           fn, k, Mlu[k * n + k], mmax, method);
+    return FRICREG_OK;
 }

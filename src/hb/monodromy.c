@@ -130,16 +130,9 @@ static void dense_model(const fricreg_hb *hb, struct fr_hb_mono *w)
 static int mass_solves(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w)
 {
     size_t n = hb->n;
-    double mmax = 0.0;
-    for (size_t i = 0; i < n * n; i++)
-        mmax = fmax(mmax, fabs(w->Mlu[i]));
-    fr_hb_lu_factor(w->Mlu, n, w->piv);
-    for (size_t k = 0; k < n; k++)
-        if (!(fabs(w->Mlu[k * n + k]) > 1e-14 * mmax))
-            return fr_fail(hb, FRICREG_ESINGULAR,
-                           "%s: stability: the mass matrix is singular (pivot %zu of its LU "
-                           "factor: %g, largest entry %g): the monodromy needs M^-1",
-                           fn, k, w->Mlu[k * n + k], mmax);
+    int status = fr_hb_mass_lu(hb, fn, "the monodromy", w->Mlu, w->piv);
+    if (status != FRICREG_OK)
+        return status;
     for (size_t l = 0; l < n; l++) { /* columns; K, C symmetric */
         fr_hb_lu_solve_factored(w->Mlu, n, w->piv, w->MiK + l * n);
         fr_hb_lu_solve_factored(w->Mlu, n, w->piv, w->MiC + l * n);

@@ -29,7 +29,7 @@
 #include "base/newton_loop.h"
 #include "nma_internal.h"
 
-struct bb {
+struct backbone {
     fricreg_hb *hb;
     const char *fn;
     struct fr_hb_nma *s;
@@ -47,14 +47,14 @@ struct bb {
     int converged, tiny;           /* tiny: Newton's last step within the tolerance of z */
 };
 
-static int harmonic(const struct bb *b, size_t j)
+static int harmonic(const struct backbone *b, size_t j)
 {
     return j < b->s->nq && j % b->s->nc != 0;
 }
 
 /* The unknowns y (q, ω, ξ) at z and the column scales dy/dz into cs; returns the amplitude
  * (a0 and a1 exactly at the ends). */
-static double unscale(const struct bb *b, const double *z, double *y, double *cs)
+static double unscale(const struct backbone *b, const double *z, double *y, double *cs)
 {
     size_t nq = b->s->nq;
     double t = z[b->s->nd], a0 = b->a0;
@@ -71,7 +71,7 @@ static double unscale(const struct bb *b, const double *z, double *y, double *cs
 
 /* F (the border's equation last) and the bordered matrix B at the iterate w, its border row
  * b->row through b->anchor; the convergence measure. */
-static int bordered(struct bb *b)
+static int bordered(struct backbone *b)
 {
     struct fr_hb_nma *s = b->s;
     size_t nq = s->nq, nd = s->nd, nz = b->nz;
@@ -110,7 +110,7 @@ static int bordered(struct bb *b)
 
 /* B factored and x solved in place: FRICREG_ESINGULAR when a pivot is below 1e-14 of B's
  * largest entry (nma_solve.c's rule). */
-static int solve(struct bb *b, double *x)
+static int solve(struct backbone *b, double *x)
 {
     size_t nz = b->nz;
     double amax = 0.0;
@@ -130,7 +130,7 @@ static int solve(struct bb *b, double *x)
 
 /* The unit tangent into t at the iterate (B evaluated, its border row the last), oriented
  * along the border. */
-static int tangent(struct bb *b, double *t)
+static int tangent(struct backbone *b, double *t)
 {
     memset(t, 0, b->nz * sizeof(double));
     t[b->nz - 1] = 1.0;
@@ -145,8 +145,8 @@ static int tangent(struct bb *b, double *t)
 
 /* ---- The corrector: Newton's method bordered by row^T (z − anchor) = 0 (corrector.c's). ---- */
 
-struct bb_loop {
-    struct bb *b;
+struct backbone_loop {
+    struct backbone *b;
     struct fr_line_search ls;
     double prev;
     int it;
@@ -154,20 +154,20 @@ struct bb_loop {
 
 static int bb_converged(void *user)
 {
-    return ((struct bb_loop *)user)->b->converged;
+    return ((struct backbone_loop *)user)->b->converged;
 }
 
 static int bb_progress(void *user, double rinf)
 {
-    struct bb *b = ((struct bb_loop *)user)->b;
+    struct backbone *b = ((struct backbone_loop *)user)->b;
     (void)rinf;
     return fr_hb_tick(b->hb, b->fn, b->s->amplitude, b->r / b->bound);
 }
 
 static int bb_direction(void *user)
 {
-    struct bb_loop *l = user;
-    struct bb *b = l->b;
+    struct backbone_loop *l = user;
+    struct backbone *b = l->b;
     for (size_t j = 0; j < b->nz; j++)
         b->dz[j] = -b->F[j];
     int status = solve(b, b->dz);
@@ -191,8 +191,8 @@ static int bb_direction(void *user)
 
 static int bb_trial(void *user, double lambda, int *accept)
 {
-    struct bb_loop *l = user;
-    struct bb *b = l->b;
+    struct backbone_loop *l = user;
+    struct backbone *b = l->b;
     for (size_t j = 0; j < b->nz; j++)
         b->w[j] = b->base[j] + lambda * b->dz[j];
     int status = bordered(b);
@@ -207,8 +207,8 @@ static int bb_trial(void *user, double lambda, int *accept)
  * scale, as fr_hb_nma_newton's). */
 static int bb_search(void *user, double *phi, double *rinf, int *accepted)
 {
-    struct bb_loop *l = user;
-    struct bb *b = l->b;
+    struct backbone_loop *l = user;
+    struct backbone *b = l->b;
     (void)phi;
     (void)rinf;
     memcpy(b->base, b->w, b->nz * sizeof(double));
@@ -222,8 +222,8 @@ static int bb_search(void *user, double *phi, double *rinf, int *accepted)
 
 /* From start onto the branch, on the hyperplane row^T (z − anchor) = 0, into w; *its its
  * iterations. On success B holds the bordered matrix at w, unfactored. */
-static int corrector(struct bb *b, const double *start, const double *anchor, const double *row,
-                     int *its)
+static int corrector(struct backbone *b, const double *start, const double *anchor,
+                     const double *row, int *its)
 {
     memcpy(b->w, start, b->nz * sizeof(double));
     if (anchor != b->anchor)
@@ -234,7 +234,7 @@ static int corrector(struct bb *b, const double *start, const double *anchor, co
     int status = bordered(b);
     if (status != FRICREG_OK)
         return status;
-    struct bb_loop l = {b, {FR_ARMIJO, FR_HB_HALVINGS, NULL}, 0.0, 0};
+    struct backbone_loop l = {b, {FR_ARMIJO, FR_HB_HALVINGS, NULL}, 0.0, 0};
     struct fr_newton_loop nl = {1.0,  b->hb->max_iter, 1,           &l, bb_direction, bb_search,
                                 NULL, bb_progress,     bb_converged};
     double phi = 0.0, rinf = 0.0;
@@ -251,7 +251,7 @@ static int corrector(struct bb *b, const double *start, const double *anchor, co
 
 /* ---- The continuation: steps along the tangent, the points, the folds, the output. ---- */
 
-static void keep_point(struct bb *b, const double *z, double tau)
+static void keep_point(struct backbone *b, const double *z, double tau)
 {
     double *p = b->pts + b->npts * (b->nz + 1);
     memcpy(p, z, b->nz * sizeof(double));
@@ -261,8 +261,8 @@ static void keep_point(struct bb *b, const double *z, double tau)
 
 /* One step from zc along tan by ds: 0 accepted (w the point, tn its tangent), -1 rejected, or
  * a status that ends the continuation (no memory, stopped). *sev as arclength.c's attempt. */
-static int attempt(struct bb *b, double ds, int *its, double *alpha, double *sev, double sev_before,
-                   int *kink)
+static int attempt(struct backbone *b, double ds, int *its, double *alpha, double *sev,
+                   double sev_before, int *kink)
 {
     size_t nz = b->nz;
     for (size_t j = 0; j < nz; j++)
@@ -295,7 +295,7 @@ static int attempt(struct bb *b, double ds, int *its, double *alpha, double *sev
 }
 
 /* The last point, at a1 exactly (z's log a component 1), from the predictor zp. */
-static int final_point(struct bb *b)
+static int final_point(struct backbone *b)
 {
     size_t nd = b->s->nd;
     int its;
@@ -312,7 +312,7 @@ static int final_point(struct bb *b)
 }
 
 /* One accepted step from zc into w (*last: the point at a1), or a status that ends it. */
-static int step(struct bb *b, double *ds, int *last)
+static int step(struct backbone *b, double *ds, int *last)
 {
     size_t nz = b->nz, nd = b->s->nd;
     double sev_before = 0.0;
@@ -353,7 +353,7 @@ static int step(struct bb *b, double *ds, int *last)
  * largest |q|/a so far, so that a shape that grows along the branch (a joint near a node of
  * the stuck mode, free once it slips) does not stretch the arclength; the new point w, its
  * tangent tn and the points kept converted to the new scale. */
-static void rescale(struct bb *b)
+static void rescale(struct backbone *b)
 {
     size_t nq = b->s->nq, st = b->nz + 1;
     double top = 0.0;
@@ -373,7 +373,7 @@ static void rescale(struct bb *b)
     b->us *= top;
 }
 
-static int follow(struct bb *b)
+static int follow(struct backbone *b)
 {
     size_t nz = b->nz, nd = b->s->nd;
     memcpy(b->w, b->zc, nz * sizeof(double));
@@ -404,7 +404,7 @@ static int follow(struct bb *b)
 }
 
 /* A point z stored as the backbone's i-th: a, ω, ξ, q. */
-static void store_point(struct bb *b, const double *z, double *p)
+static void store_point(struct backbone *b, const double *z, double *p)
 {
     struct fr_hb_nma *s = b->s;
     double *y = b->y;
@@ -416,7 +416,7 @@ static void store_point(struct bb *b, const double *z, double *p)
 
 /* The branch's point between its points i and i + 1 at the fraction th, corrected onto the
  * branch normal to that stretch into w (else, if the corrector fails, the nearer point). */
-static void between(struct bb *b, size_t i, double th)
+static void between(struct backbone *b, size_t i, double th)
 {
     size_t nz = b->nz, st = nz + 1;
     const double *p0 = b->pts + i * st, *p1 = p0 + st;
@@ -433,7 +433,7 @@ static void between(struct bb *b, size_t i, double th)
 
 /* The folds: where the tangent's log a component changes sign between two points, located
  * by its linear interpolation there. */
-static int find_folds(struct bb *b)
+static int find_folds(struct backbone *b)
 {
     struct fr_hb_nma *s = b->s;
     size_t st = b->nz + 1;
@@ -456,7 +456,7 @@ static int find_folds(struct bb *b)
 }
 
 /* n points at equal arclength (in z) along the branch, the ends its own. */
-static int resample(struct bb *b, size_t n)
+static int resample(struct backbone *b, size_t n)
 {
     struct fr_hb_nma *s = b->s;
     size_t st = b->nz + 1, k = 0;
@@ -484,14 +484,14 @@ static int resample(struct bb *b, size_t n)
     return FRICREG_OK;
 }
 
-static void bb_free(struct bb *b)
+static void bb_free(struct backbone *b)
 {
     free(b->B);
     free(b->piv);
     free(b->pts);
 }
 
-static int bb_alloc(struct bb *b)
+static int bb_alloc(struct backbone *b)
 {
     size_t nz = b->nz;
     b->B = malloc((nz * nz + 13 * nz) * sizeof(double));
@@ -510,7 +510,7 @@ static int bb_alloc(struct bb *b)
 }
 
 /* The start's point (nma->yc at a0) scaled: the shape's scale from its harmonics. */
-static void start_point(struct bb *b, double a0)
+static void start_point(struct backbone *b, double a0)
 {
     struct fr_hb_nma *s = b->s;
     double qmax = 0.0;
@@ -530,16 +530,16 @@ static void start_point(struct bb *b, double a0)
 static int arclength(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, double a0, double a1,
                      size_t npoints)
 {
-    struct bb b = {.hb = hb,
-                   .fn = fn,
-                   .s = nma,
-                   .nz = nma->nd + 1,
-                   .t0 = log(a0),
-                   .tw = 1.0,
-                   .zend = log(a1 / a0),
-                   .a0 = a0,
-                   .a1 = a1,
-                   .cap = hb->max_points};
+    struct backbone b = {.hb = hb,
+                         .fn = fn,
+                         .s = nma,
+                         .nz = nma->nd + 1,
+                         .t0 = log(a0),
+                         .tw = 1.0,
+                         .zend = log(a1 / a0),
+                         .a0 = a0,
+                         .a1 = a1,
+                         .cap = hb->max_points};
     if (bb_alloc(&b) != FRICREG_OK)
         return fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for %zu points of the branch", fn, b.cap);
     int status = fr_hb_nma_march_to(hb, fn, nma, a0);

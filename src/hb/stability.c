@@ -146,16 +146,10 @@ static int companion(fricreg_hb *hb, const char *fn)
 {
     size_t n = hb->n, nc = hb->nc, N = n * nc;
     gsl_matrix *A = hb->hill;
-    double mmax = 0.0; /* hill_mlu holds M (linear_blocks) */
-    for (size_t k = 0; k < n * n; k++)
-        mmax = fmax(mmax, fabs(hb->hill_mlu[k]));
-    fr_hb_lu_factor(hb->hill_mlu, n, hb->hill_piv);
-    for (size_t k = 0; k < n; k++)
-        if (!(fabs(hb->hill_mlu[k * n + k]) > 1e-14 * mmax))
-            return fr_fail(hb, FRICREG_ESINGULAR,
-                           "%s: stability: the mass matrix is singular (pivot %zu of its LU "
-                           "factor: %g, largest entry %g): Hill's method needs M^-1",
-                           fn, k, hb->hill_mlu[k * n + k], mmax);
+    /* hill_mlu holds M (linear_blocks) */
+    int status = fr_hb_mass_lu(hb, fn, "Hill's method", hb->hill_mlu, hb->hill_piv);
+    if (status != FRICREG_OK)
+        return status;
     for (size_t j = 0; j < 2 * N; j++)
         for (size_t c = 0; c < nc; c++) {
             for (size_t k = 0; k < n; k++)
