@@ -7,7 +7,9 @@
  * 0.05 K, one Jenkins element kt = 3, mu N = 0.4 on dof 1 against the ground, p = (cos Ω t,
  * 0)) at Ω = 0.68, where Hill's largest multiplier was 0.148 and a step-resolved shooting's
  * 0.589, and at 1.2 and 1.9 rad/s; the 3-dof Jenkins chain of bench/hb_stability.c at 0.6 and
- * 1.8 rad/s.
+ * 1.8 rad/s; a 60-dof chain with 10 Jenkins elements at 0.1 rad/s, against the contraction of
+ * a time integration's transient (fricreg_structure's Newmark: another code, the elements'
+ * return mapping at every step).
  *
  * The reference: the periodic orbit by Newton's shooting on an event-driven integration of the
  * state (x, v, w), w the slider's offset (tests/support/jenkins_events.h: GSL's rk8pd between
@@ -25,6 +27,7 @@
 #include <gsl/gsl_eigen.h>
 
 #include "fricreg_hb.h"
+#include "fricreg_structure.h"
 #include "jenkins_events.h"
 #include "quiet_check.h"
 
@@ -172,6 +175,122 @@ START_TEST(frequencies_converge_in_h)
 }
 END_TEST
 
+/* The 60-dof chain: unit masses on unit springs (ground–1–…–60, the last free), C = 0.002 (K +
+ * M), 10 Jenkins elements kt = 0.2, mu N = 0.02 grounding dofs 3, 9, …, 57, a force 0.05 cos Ωt
+ * on the last dof; M, K, C [60 60] and J [10 60] row-major, p [60]. */
+#define CHAIN_N 60
+#define CHAIN_M 10
+static const double PI = 3.14159265358979323846;
+static const double CHAIN_KT = 0.2, CHAIN_MUN = 0.02;
+
+static void long_chain(double *M, double *K, double *C, double *J, double *p)
+{
+    const size_t n = CHAIN_N;
+    memset(M, 0, n * n * sizeof *M);
+    memset(K, 0, n * n * sizeof *K);
+    memset(J, 0, CHAIN_M * n * sizeof *J);
+    memset(p, 0, n * sizeof *p);
+    for (size_t i = 0; i < n; i++) {
+        M[i * n + i] = 1.0;
+        K[i * n + i] = i + 1 < n ? 2.0 : 1.0;
+        if (i > 0)
+            K[i * n + i - 1] = K[(i - 1) * n + i] = -1.0;
+    }
+    for (size_t i = 0; i < n * n; i++)
+        C[i] = 0.002 * (K[i] + M[i]);
+    for (size_t e = 0; e < CHAIN_M; e++)
+        J[e * n + 6 * e + 3] = 1.0;
+    p[n - 1] = 0.05;
+}
+
+/* The HB's largest multiplier of the chain at Ω (H = 3, the monodromy). */
+static double long_chain_hb(double omega)
+{
+    static double M[CHAIN_N * CHAIN_N], K[CHAIN_N * CHAIN_N], C[CHAIN_N * CHAIN_N],
+        J[CHAIN_M * CHAIN_N], p[CHAIN_N], ps[CHAIN_N];
+    double kt[CHAIN_M], mun[CHAIN_M], q[CHAIN_M * 7], mu = 0.0;
+    int stable = 0;
+    long_chain(M, K, C, J, p);
+    for (size_t e = 0; e < CHAIN_M; e++)
+        kt[e] = CHAIN_KT, mun[e] = CHAIN_MUN;
+    fricreg_hb *hb = NULL;
+    ck_assert_int_eq(fricreg_hb_create(CHAIN_N, CHAIN_M, 3, &hb), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_mass(hb, CHAIN_N, M), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, CHAIN_N, K), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_damping(hb, CHAIN_N, C), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_elements(hb, CHAIN_M, CHAIN_N, J, kt, mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_excitation(hb, CHAIN_N, p, ps), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stability(hb, 1), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_solve(hb, omega, CHAIN_M * 7, NULL, q), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_point_stability(hb, FRICREG_HB_SOLUTION, &stable, &mu), FRICREG_OK);
+    ck_assert_int_eq(stable, mu <= 1.0);
+    fricreg_hb_free(hb);
+    return mu;
+}
+
+/* The chain in the time domain from rest (fricreg_structure: Newmark's average acceleration, the
+ * elements' return mapping; 1000 steps a period, the load's cosine sampled as often): the
+ * contraction per period of the change of the state over a period, from period 20 to 150, as
+ * the transient dies out. */
+static double long_chain_contraction(double omega)
+{
+    static double M[CHAIN_N * CHAIN_N], K[CHAIN_N * CHAIN_N], C[CHAIN_N * CHAIN_N],
+        J[CHAIN_M * CHAIN_N], p[CHAIN_N];
+    const int spp = 1000, periods = 150;
+    const double T = 2.0 * PI / omega, dt = T / spp, b0 = 0.0;
+    double kt[CHAIN_M], mun[CHAIN_M], Jc[CHAIN_N] = {1.0}, u[CHAIN_N], v[CHAIN_N],
+                                      z0[2 * CHAIN_N] = {0}, d20 = 0.0, d = 0.0;
+    size_t ns = (size_t)periods * spp + 2;
+    double *g = malloc(ns * sizeof *g);
+    ck_assert_ptr_nonnull(g);
+    for (size_t k = 0; k < ns; k++)
+        g[k] = cos(omega * (double)k * dt);
+    long_chain(M, K, C, J, p);
+    for (size_t e = 0; e < CHAIN_M; e++)
+        kt[e] = CHAIN_KT, mun[e] = CHAIN_MUN;
+    fricreg_structure *s = NULL;
+    ck_assert_int_eq(fricreg_structure_create(CHAIN_N, 1, &s), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_mass(s, CHAIN_N, M), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_stiffness(s, CHAIN_N, K), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_damping(s, CHAIN_N, C), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_contacts(s, 1, CHAIN_N, Jc), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_bounds(s, 1, &b0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_jenkins(s, CHAIN_M, CHAIN_N, J, kt, mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_load(s, CHAIN_N, p, 0.0, dt, ns, g), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_error_estimate(s, 0), FRICREG_OK);
+    for (int k = 1; k <= periods; k++) {
+        ck_assert_int_eq(fricreg_structure_run(s, dt, k * T), FRICREG_OK);
+        ck_assert_int_eq(fricreg_structure_get_state(s, CHAIN_N, u, v, NULL), FRICREG_OK);
+        d = 0.0;
+        for (size_t i = 0; i < CHAIN_N; i++) {
+            double du = u[i] - z0[i], dv = (v[i] - z0[CHAIN_N + i]) / omega;
+            d += du * du + dv * dv;
+            z0[i] = u[i], z0[CHAIN_N + i] = v[i];
+        }
+        d = sqrt(d);
+        if (k == 20)
+            d20 = d;
+    }
+    fricreg_structure_free(s);
+    free(g);
+    return pow(d / d20, 1.0 / (periods - 20));
+}
+
+/* (c) The 60-dof chain at Ω = 0.1 (H = 3): the monodromy's largest multiplier 0.921, and the
+ * time domain's transient contracts by 0.913 a period (measured) to a periodic steady state:
+ * stable, the rate within 3e-2 of the multiplier. (Hill's method says 7.14 there, unstable:
+ * its exponents' selection is not reliable for the chain's higher modes at H = 3; docs/joints.md.) */
+START_TEST(long_chain_against_time_domain)
+{
+    double mu = long_chain_hb(0.1), rate = long_chain_contraction(0.1);
+    if (getenv("HB_PRINT"))
+        fprintf(stderr, "60-dof chain, Omega = 0.1: monodromy %.6f, time domain %.6f\n", mu, rate);
+    ck_assert_double_lt(mu, 1.0);
+    ck_assert_double_lt(rate, 1.0);
+    ck_assert_double_eq_tol(rate, mu, 3e-2);
+}
+END_TEST
+
 Suite *hb_monodromy_suite(void)
 {
     Suite *s = suite_create("hb_monodromy");
@@ -179,6 +298,7 @@ Suite *hb_monodromy_suite(void)
     tcase_set_timeout(tc, 300);
     tcase_add_test(tc, jenkins_pair_converges_in_h);
     tcase_add_test(tc, frequencies_converge_in_h);
+    tcase_add_test(tc, long_chain_against_time_domain);
     suite_add_tcase(s, tc);
     return s;
 }
