@@ -107,8 +107,9 @@ static fricreg_hb *model(int H, double mun)
     return hb;
 }
 
-/* The backbone of mode 0 at H, slip force mun, from a = 1e-7 mun to 1e-2 mun (m √kg): stuck
- * to slipping over all but 1e-4 of the element's travel. */
+/* The backbone of mode 0 at H, slip force mun, from a = 1e-7 mun (m √kg; stuck: the slip
+ * onset lies between 3.3e-6 and 4.1e-6 mun) to 1e-2 mun (slipping over nearly all the
+ * element's travel). */
 static fricreg_hb *backbone(int H, double mun)
 {
     fricreg_hb *hb = model(H, mun);
@@ -121,8 +122,7 @@ static fricreg_hb *backbone(int H, double mun)
 /* (a) At H = 7 and 15, mu N = 10, 100, 1000 N, the defaults: every backbone runs, each the
  * 10 N one scaled (a by s, ω and ζ the same, to 1e-8 relative; measured at most 4.1e-10,
  * 2.8e-11 and 1.8e-10); its ends the closed-form limits (stuck: ω and ζ = 0.008 to 1e-10,
- * measured 2.7e-13; slipped: ω to 1e-5 of the free beam's, measured 3.9e-6, the element's
- * force 1e-4 of the beam's there). */
+ * measured 2.7e-13; slipped: ω to 1e-5 of the free beam's, measured 3.9e-6). */
 START_TEST(backbones_scale)
 {
     const int Hs[2] = {7, 15};
