@@ -8,8 +8,9 @@
  * Nonlinear Vibration Problems", Springer 2019; there mu N = 1 N): steel (E = 185 GPa, ρ = 7830 kg/m³), 0.7 m long, a 0.03 m square
  * section, 7 Hermite elements (14 dofs: a translation and a rotation per free node), a Jenkins
  * element kt = 1.3e6 N/m, slip force mu N on the translation of the third free node, Rayleigh
- * damping of 0.8 % and 0.2 % in the stuck beam's first two modes. Stiffnesses of 1e5–1e9 N/m,
- * masses of 1e-4–1e-1 kg; mu N = 10, 100 and 1000 N, the slip onset at 7.7e-6 to 7.7e-4 m.
+ * damping of 0.8 % and 0.2 % in the stuck beam's first two modes. The entries of K from 5e5 to
+ * 3e8, of M from 7e-5 to 0.5 (SI units: N/m, kg and their rotational kin); mu N = 10, 100 and
+ * 1000 N, the element's slip at 7.7e-6 to 7.7e-4 m.
  *
  * Where the numbers come from:
  * - similarity: the beam is linear and the element's force homogeneous of degree one in (u,
