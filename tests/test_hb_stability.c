@@ -823,34 +823,10 @@ START_TEST(bad_input)
 }
 END_TEST
 
-/* The automatic method for n unit masses on unit springs, one Jenkins element on dof 0, at
- * harmonics, once stability is on (which must succeed). */
-static int auto_method(size_t n, int harmonics)
-{
-    double *K = calloc(n * n, sizeof *K), *J = calloc(n, sizeof *J), kt = 1.0, mun = 0.1;
-    ck_assert_ptr_nonnull(K);
-    ck_assert_ptr_nonnull(J);
-    for (size_t i = 0; i < n; i++)
-        K[i * n + i] = 1.0;
-    J[0] = 1.0;
-    fricreg_hb *hb = NULL;
-    int method = -1;
-    ck_assert_int_eq(fricreg_hb_create(n, 1, harmonics, &hb), FRICREG_OK);
-    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, n, K), FRICREG_OK);
-    ck_assert_int_eq(fricreg_hb_set_elements(hb, 1, n, J, &kt, &mun), FRICREG_OK);
-    ck_assert_int_eq(fricreg_hb_set_stability(hb, 1), FRICREG_OK);
-    ck_assert_int_eq(fricreg_hb_get_stability_method(hb, &method), FRICREG_OK);
-    fricreg_hb_free(hb);
-    free(K);
-    free(J);
-    return method;
-}
-
 /* The method's choice: the monodromy for lift-off, Hill's for the 3-D contact element (not
  * piecewise linear in the monodromy's sense: a disk), the monodromy refused there when chosen,
  * bad methods and NULLs refused with nothing changed, and no size limit for the monodromy (40
- * dofs at H = 15: 1240 coefficients, over Hill's 1024); the automatic choice past the
- * monodromy's bound. */
+ * dofs at H = 15: 1240 coefficients, over Hill's 1024). */
 START_TEST(method_choice)
 {
     struct model s = contact_pair();
@@ -904,11 +880,6 @@ START_TEST(method_choice)
     ck_assert_int_eq(fricreg_hb_set_stability(hb, 1), FRICREG_OK);
     fricreg_hb_free(hb);
     free(K);
-    /* past the monodromy's automatic bound (2 ndof + 1 > FRICREG_HB_MAX_MONODROMY): Hill's where
-     * it fits (260 dofs at H = 1: 780 coefficients), the monodromy where it does not (300 dofs
-     * at H = 3: 2100), rather than no stability */
-    ck_assert_int_eq(auto_method(260, 1), FRICREG_HB_STABILITY_HILL);
-    ck_assert_int_eq(auto_method(300, 3), FRICREG_HB_STABILITY_MONODROMY);
 }
 END_TEST
 

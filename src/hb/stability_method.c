@@ -13,12 +13,10 @@ int fr_hb_stability_in_force(const fricreg_hb *hb)
 {
     if (hb->stability_method != FRICREG_HB_STABILITY_AUTO)
         return hb->stability_method;
-    /* the monodromy is dense in 2n + sliders: past its bound, Hill's (dense in n (2H + 1)),
-     * unless that is past its own limit too: a slow answer rather than none */
+    /* the monodromy is dense in 2n + sliders: past its bound, Hill's (dense in n (2H + 1)) */
     int small = 2 * hb->n + hb->me * hb->ns <= FRICREG_HB_MAX_MONODROMY;
-    int hill_too_big = hb->n * hb->nc > FRICREG_HB_MAX_HILL;
-    return fr_hb_monodromy_applies(hb) && (small || hill_too_big) ? FRICREG_HB_STABILITY_MONODROMY
-                                                                  : FRICREG_HB_STABILITY_HILL;
+    return fr_hb_monodromy_applies(hb) && small ? FRICREG_HB_STABILITY_MONODROMY
+                                                : FRICREG_HB_STABILITY_HILL;
 }
 
 int fr_hb_stability(fricreg_hb *hb, const char *fn, double omega, double *out)
