@@ -119,9 +119,10 @@ static const char *const count_names[] = {"ndof",
                                           "element coordinates",
                                           "element dimension",
                                           "elements with a normal law"};
-static const char *const flag_names[] = {"J set",          "Rayleigh damping",  "scheme",
-                                         "friction law",   "Newton's max_iter", "error estimate",
-                                         "unguarded steps"};
+static const char *const flag_names[] = {
+    "J set",          "Rayleigh damping",  "scheme",
+    "friction law",   "Newton's max_iter", "error estimate (on + 4 x companions)",
+    "unguarded steps"};
 static const char *const param_names[] = {"alpha",       "beta",           "gamma",
                                           "eps",         "Newton's tol",   "Rayleigh a0",
                                           "Rayleigh a1", "tolerance scale"};
