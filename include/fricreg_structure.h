@@ -580,9 +580,10 @@ enum fricreg_structure_value {
                                           stepping the error estimate's companions since they
                                           were made (fricreg_structure_set_error_estimate: the
                                           first stepping call after set_initial), the second
-                                          companion's inside the first's; 0 without an
-                                          estimate. The estimate's cost beside the run's own
-                                          (since 1.8) */
+                                          companion's inside the first's; 0 until an
+                                          estimate is made, the last one's after it ends
+                                          until the next is made. The estimate's cost beside
+                                          the run's own (since 1.8) */
 };
 
 /** Attach me Jenkins elements (fricreg_jenkins.h's 1-D element: a spring kt in series with a
