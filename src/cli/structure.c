@@ -121,7 +121,8 @@ static int check_options(const struct structure_options *o)
     if ((o->rtol > 0.0 || o->atol != 0.0) && o->scheme != SCHEME_GSL)
         return cli_usage_error(o->rtol > 0.0 ? "--rtol" : "--atol",
                                "only GSL's steppers are adaptive");
-    if (o->error_companions == FRICREG_COMPANIONS_COARSER && o->scheme == SCHEME_GSL &&
+    if (o->error_companions == FRICREG_COMPANIONS_COARSER && o->error_estimate &&
+        o->output == CLI_SUMMARY && o->scheme == SCHEME_GSL &&
         !(o->rtol > 0.0 || o->atol != 0.0)) /* a call per --dt: the companions' 4 dt never fits */
         return cli_usage_error("--error-companions",
                                "coarser companions need 4 steps per call; GSL's fixed steps are "
@@ -245,8 +246,8 @@ static size_t structure_table(struct structure_options *o, struct cli_option tab
         {"--error-companions", CLI_CHOICE, .slot = &o->error_companions,
          .words = cli_companions_words,
          .help = "where the estimate's companions sit: finer (eps/2 at dt/2, eps/4 at dt/4) or "
-                 "coarser (2 eps at 2 dt, 4 eps at 4 dt: cheaper, not yet calibrated; fixed "
-                 "GSL steps refuse it)"},
+                 "coarser (2 eps at 2 dt, 4 eps at 4 dt: about 0.7x the run's cost instead of "
+                 "6x, bounding the error less often; not with GSL's fixed steps)"},
         {"--answer-rtol", CLI_POSITIVE, .slot = &o->answer_rtol, .meta = "X",
          .help = "warn (error_estimate) where the largest peak's estimate exceeds X times the "
                  "largest peak, or the dissipations' summed estimate X times their sum, "
