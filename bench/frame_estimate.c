@@ -19,6 +19,10 @@
  *
  *   fricreg-bench-frame-estimate [--mun F]            the table (seconds)
  *   fricreg-bench-frame-estimate [--mun F] --ladder   the reference's runs only
+ *   fricreg-bench-frame-estimate [--mun F] --companions   finer against coarser companions
+ *     (fricreg_structure_set_error_companions): per mode, the estimates that bound the error,
+ *     the median estimate / error (all, and of kind asymptotic), the warnings, and the CPU of
+ *     a run with each against one without, all in this process
  *   FRAME_GRID=1 fricreg-bench-frame-estimate         D on a grid of eps and dt */
 #include <math.h>
 #include <stdio.h>
@@ -42,9 +46,11 @@
 #define NREC 32001 /* T_END / REC_DT + 1 */
 #define PI 3.14159265358979323846
 
-enum { NEWMARK = 0, HHT = 1 };
+enum { NEWMARK = 0, HHT = 1, RKF45 = 2 }; /* RKF45: adaptive, rtol 1e-6, called every dt */
+#define RKF45_RTOL 1e-6
 
-static double mun_fraction = 0.3; /* mu N / (m g) per damper (--mun) */
+static double mun_fraction = 0.3;                 /* mu N / (m g) per damper (--mun) */
+static int companions = FRICREG_COMPANIONS_FINER; /* the runs' (--companions switches) */
 #define MUN (mun_fraction * MASS * G)
 
 struct frame_run {
@@ -53,6 +59,8 @@ struct frame_run {
     int warned;                        /* FRICREG_WARN_ERROR_ESTIMATE raised */
     int bound;                         /* a dissipation's estimate of kind BOUND (1.7: the
                                         * "not asymptotic" warning) */
+    int D_kind[M_C], peak_kind[NDOF];  /* every estimate's kind */
+    double companion_cpu;              /* FRICREG_SVALUE_COMPANION_CPU */
     double cpu;                        /* seconds */
 };
 
@@ -125,9 +133,15 @@ static int run(int scheme, double eps, double dt, int estimate, struct frame_run
         status = fricreg_structure_set_hht(s, -0.05); /* the CLI's alpha */
     if (status == FRICREG_OK)
         status = fricreg_structure_set_error_estimate(s, estimate);
-    double t0 = cpu_now();
     if (status == FRICREG_OK)
+        status = fricreg_structure_set_error_companions(s, companions);
+    double t0 = cpu_now();
+    if (status == FRICREG_OK && scheme != RKF45)
         status = fricreg_structure_run(s, dt, T_END);
+    for (long k = 1, n = lround(T_END / dt); scheme == RKF45 && status == FRICREG_OK && k <= n;
+         k++) /* sampled every dt, as fricreg-sim's adaptive runs: the tolerances from eps */
+        status = fricreg_structure_run_ode(s, FRICREG_INT_RKF45, dt, RKF45_RTOL,
+                                           FRICREG_ATOL_FROM_EPS, k == n ? T_END : (double)k * dt);
     r->cpu = cpu_now() - t0;
     if (status == FRICREG_OK) {
         fricreg_structure_get_dissipation(s, M_C, r->D);
@@ -142,10 +156,11 @@ static int run(int scheme, double eps, double dt, int estimate, struct frame_run
             fricreg_structure_get_warning(s, k, &code, NULL, 0);
             r->warned |= code == FRICREG_WARN_ERROR_ESTIMATE;
         }
-        int kind[M_C] = {0};
-        fricreg_structure_get_error_kind(s, FRICREG_EST_DISSIPATION, M_C, kind);
+        fricreg_structure_get_error_kind(s, FRICREG_EST_DISSIPATION, M_C, r->D_kind);
+        fricreg_structure_get_error_kind(s, FRICREG_EST_PEAK_DISPLACEMENT, NDOF, r->peak_kind);
         for (int j = 0; j < M_C; j++)
-            r->bound |= kind[j] == FRICREG_EST_KIND_BOUND;
+            r->bound |= r->D_kind[j] == FRICREG_EST_KIND_BOUND;
+        fricreg_structure_get_value(s, FRICREG_SVALUE_COMPANION_CPU, &r->companion_cpu);
     }
     if (status != FRICREG_OK)
         fprintf(stderr, "run eps %g dt %g: %s\n", eps, dt, fricreg_structure_errmsg(s));
@@ -221,7 +236,7 @@ static void row(const char *name, double truth, double unc, double old, double e
            est / truth, warned ? "yes" : "no");
 }
 
-static const char *const scheme_names[] = {"Newmark", "HHT"};
+static const char *const scheme_names[] = {"Newmark", "HHT", "rkf45"};
 
 /* One scheme and step: a row per quantity, the old (one companion) and new (two) estimates. */
 static int table_rows(int scheme, double eps0, double dt, const struct reference *ref)
@@ -245,14 +260,75 @@ static int table_rows(int scheme, double eps0, double dt, const struct reference
     return 0;
 }
 
+/* --companions: each mode's estimates on the table's runs (Newmark and HHT at 10, 5, 2.5 ms)
+ * and adaptive RKF45 sampled at 20, 10, 5 ms against the reference, and its cost against no
+ * estimate (Newmark at 2.5 ms, medians of interleaved runs). */
+static int compare_companions(double eps0, const struct reference *ref)
+{
+    static const char *const names[] = {"finer", "coarser"};
+    const double dts[] = {1e-2, 5e-3, 2.5e-3};
+    const double samples[] = {2e-2, 1e-2, 5e-3}; /* RKF45's */
+    enum { RUNS = 3 * 3, REPS = 7 };
+    printf("\n| companions | estimates | bounded | median est/err | asymptotic | median "
+           "est/err (asymptotic) | runs warned | cost / run without |\n"
+           "|---|---|---|---|---|---|---|---|\n");
+    double cost[3][REPS];
+    for (int k = 0; k < REPS; k++)
+        for (int e = -1; e <= FRICREG_COMPANIONS_COARSER; e++) {
+            struct frame_run r;
+            companions = e < 0 ? FRICREG_COMPANIONS_FINER : e;
+            run(NEWMARK, eps0, 2.5e-3, e < 0 ? 0 : 1, &r);
+            cost[e + 1][k] = r.cpu;
+        }
+    for (int e = 0; e < 3; e++)
+        qsort(cost[e], REPS, sizeof cost[e][0], by_value);
+    for (int mode = FRICREG_COMPANIONS_FINER; mode <= FRICREG_COMPANIONS_COARSER; mode++) {
+        double ratio[RUNS * NQ], asym[RUNS * NQ];
+        int n = 0, na = 0, bounded = 0, warned = 0;
+        companions = mode;
+        for (int scheme = NEWMARK; scheme <= RKF45; scheme++)
+            for (int k = 0; k < 3; k++) {
+                struct frame_run r;
+                double dt = scheme == RKF45 ? samples[k] : dts[k];
+                if (run(scheme, eps0, dt, 1, &r) != FRICREG_OK)
+                    return 1;
+                warned += r.warned;
+                for (int j = 0; j < NQ; j++) {
+                    double err = j < M_C ? fabs(r.D[j] - ref->D[j])
+                                         : fabs(r.peak[j - M_C] - ref->peak[j - M_C]);
+                    double est = j < M_C ? r.D_err[j] : r.peak_err[j - M_C];
+                    int kind = j < M_C ? r.D_kind[j] : r.peak_kind[j - M_C];
+                    ratio[n++] = est / err;
+                    bounded += est >= err;
+                    if (kind == FRICREG_EST_KIND_ASYMPTOTIC)
+                        asym[na++] = est / err;
+                    if (getenv("FRAME_PRINT") != NULL)
+                        printf("%s %s %g ms q%d: error %.3g estimate %.3g (%.3g) %s\n", names[mode],
+                               scheme_names[scheme], 1e3 * dt, j, err, est, est / err,
+                               kind == FRICREG_EST_KIND_ASYMPTOTIC ? "asymptotic" : "bound");
+                }
+            }
+        qsort(ratio, (size_t)n, sizeof ratio[0], by_value);
+        qsort(asym, (size_t)na, sizeof asym[0], by_value);
+        printf("| %s | %d | %d | %.3g | %d | %.3g | %d of %d | %.2f |\n", names[mode], n, bounded,
+               ratio[n / 2], na, na > 0 ? asym[na / 2] : NAN, warned, RUNS,
+               cost[mode + 1][REPS / 2] / cost[0][REPS / 2]);
+    }
+    printf("\ncost: Newmark at 2.5 ms, median of %d interleaved runs: none %.4f s\n", REPS,
+           cost[0][REPS / 2]);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     double eps0 = default_eps();
     struct reference ref;
-    int ladder = 0;
+    int ladder = 0, compare = 0;
     for (int k = 1; k < argc; k++) {
         if (strcmp(argv[k], "--ladder") == 0)
             ladder = 1;
+        else if (strcmp(argv[k], "--companions") == 0)
+            compare = 1;
         else if (strcmp(argv[k], "--mun") == 0 && k + 1 < argc)
             mun_fraction = atof(argv[++k]);
     }
@@ -287,6 +363,8 @@ int main(int argc, char **argv)
     }
     if (ladder)
         return 0;
+    if (compare)
+        return compare_companions(eps0, &ref);
     printf("\n| case | true error | old estimate | new estimate | new / error | warned or bound |\n"
            "|---|---|---|---|---|---|\n");
     const double dts[] = {1e-2, 5e-3, 2.5e-3};

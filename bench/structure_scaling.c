@@ -15,8 +15,13 @@
  * the ordering the structure uses, one solve a step. Each figure is the median over repeats of the
  * mean time per step of a batch (process CPU time), after a warm-up batch that factors.
  *
- *   usage: fricreg-bench-structure-scaling N K [STEPS [REPEATS]]
- * Prints one line: n k steps setup_s fricreg_step_s linear_step_s ratio newton_mean peak_MiB. */
+ *   usage: fricreg-bench-structure-scaling N K [STEPS [REPEATS [estimate]]]
+ * Prints one line: n k steps setup_s fricreg_step_s linear_step_s ratio newton_mean peak_MiB.
+ * With `estimate`, the error estimate's cost instead: three structures, without an estimate,
+ * with finer and with coarser companions (fricreg_structure_set_error_companions), each a
+ * first batch from the start (the companions made and factored there), then batches
+ * interleaved; one line: n k steps, each one's CPU seconds per step (median of the batches,
+ * the first batch's apart) and the ratios against none. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -160,6 +165,36 @@ static double ground_accel(double t)
     return GROUND_A * sin(TWO_PI * t);
 }
 
+/* The estimate's cost: CPU per step without an estimate, with finer and with coarser
+ * companions, measured in turns in this one process. */
+static int estimate_cost(const struct chain *c, size_t steps, size_t repeats)
+{
+    fricreg_structure *s[3];
+    double first[3], per[3][64], med[3];
+    for (int e = 0; e < 3; e++) {
+        s[e] = structure(c);
+        if (e > 0 && (fricreg_structure_set_error_estimate(s[e], 1) != FRICREG_OK ||
+                      fricreg_structure_set_error_companions(s[e], e - 1) != FRICREG_OK))
+            die("estimate", s[e]);
+        first[e] = fricreg_batch(s[e], steps); /* the set-up and the companions' */
+    }
+    for (size_t r = 0; r < repeats; r++)
+        for (int e = 0; e < 3; e++)
+            per[e][r] = fricreg_batch(s[e], steps);
+    double cpu[3] = {0};
+    for (int e = 0; e < 3; e++) {
+        med[e] = bench_median(per[e], repeats);
+        fricreg_structure_get_value(s[e], FRICREG_SVALUE_COMPANION_CPU, &cpu[e]);
+        fricreg_structure_free(s[e]);
+    }
+    printf("n %zu k %zu steps %zu: per step none %.4g s, finer %.4g s (%.2fx), coarser %.4g s "
+           "(%.2fx); first batch none %.4g, finer %.4g, coarser %.4g s/step; companions' CPU "
+           "finer %.3g s, coarser %.3g s\n",
+           c->n, c->k, steps, med[0], med[1], med[1] / med[0], med[2], med[2] / med[0], first[0],
+           first[1], first[2], cpu[1], cpu[2]);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 3) {
@@ -175,6 +210,11 @@ int main(int argc, char **argv)
     }
     chain_stiffness(&c);
     chain_contacts(&c);
+    if (argc > 5 && strcmp(argv[5], "estimate") == 0) {
+        int status = estimate_cost(&c, steps, repeats);
+        chain_free(&c);
+        return status;
+    }
 
     double t0 = bench_cpu_seconds();
     fricreg_structure *s = structure(&c);

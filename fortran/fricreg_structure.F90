@@ -76,6 +76,7 @@ module fricreg_structure_m
     procedure :: get_dissipation => struct_get_dissipation
     procedure :: set_error_estimate => struct_set_error_estimate
     procedure :: set_answer_rtol => struct_set_answer_rtol
+    procedure :: set_error_companions => struct_set_error_companions
     procedure :: get_peak_displacement => struct_get_peak_displacement
     procedure :: get_peak_displacement_error => struct_get_peak_displacement_error
     procedure :: get_dissipation_error => struct_get_dissipation_error
@@ -1168,6 +1169,20 @@ contains
     if (status == FRICREG_OK) &
       status = self%record(fricreg_structure_set_answer_rtol(self%ptr, rtol))
   end function struct_set_answer_rtol
+
+  !> Where the error estimate's companions sit: FRICREG_COMPANIONS_FINER (0, the default:
+  !> eps/2 at dt/2, eps/4 at dt/4) or FRICREG_COMPANIONS_COARSER (1: 2 eps at 2 dt, 4 eps at
+  !> 4 dt, about 0.75x the run's cost; fixed steps need calls spanning 4 dt)
+  !> (fricreg_structure_set_error_companions). A change ends the estimate made until the next
+  !> set_initial. FRICREG_EINVAL if which is not 0 or 1, nothing changed. Since 1.8.
+  function struct_set_error_companions(self, which) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    integer(c_int), intent(in) :: which
+    integer(c_int) :: status
+    status = self%ready('set_error_companions', 'structure')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_structure_set_error_companions(self%ptr, which))
+  end function struct_set_error_companions
 
   !> The peak displacements max |u_i| since set_initial, peak(ndof) (length units): every fixed
   !> step's end and the turning points inside it, every adaptive run_ode call's end

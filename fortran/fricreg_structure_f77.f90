@@ -68,6 +68,7 @@
 !   FRSTJE(H, ME, ERR, STAT)                     _get_jenkins_dissipation_error
 !   FRSTEK(H, QUANT, N, KINDS, STAT)             _get_error_kind
 !   FRSTAR(H, RTOL, STAT)                        _set_answer_rtol
+!   FRSTEC(H, WHICH, STAT)                       _set_error_companions (0 finer, 1 coarser)
 !   FRSTOD(H, INTEG, DT, RTOL, ATOL, TEND, STAT) _run_ode (ATOL = -1: tolerances from eps)
 !   FRSTOT(H, N, ATOL, STAT)                     _set_ode_abs_tolerances (N = 0 removes them)
 !   FRSTOG(H, N, ATOL, STAT)                     _get_ode_abs_tolerances

@@ -560,21 +560,30 @@ FRICREG_API int fricreg_structure_get_dissipation(const fricreg_structure *s, si
  *  Newmark makes the residual vanish to Newton's tolerance (its discrete balance is exact);
  *  HHT-alpha's numerical damping shows in it. */
 enum fricreg_structure_value {
-    FRICREG_SVALUE_TIME = 0,       /**< time reached */
-    FRICREG_SVALUE_INPUT = 1,      /**< work of p - M r a_g since t = 0 */
-    FRICREG_SVALUE_KINETIC = 2,    /**< kinetic energy now */
-    FRICREG_SVALUE_STRAIN = 3,     /**< strain energy now */
-    FRICREG_SVALUE_VISCOUS = 4,    /**< energy dissipated by C since t = 0 */
-    FRICREG_SVALUE_FRICTION = 5,   /**< energy dissipated by all contacts since t = 0 */
-    FRICREG_SVALUE_RESIDUAL = 6,   /**< the balance's residual */
-    FRICREG_SVALUE_INITIAL = 7,    /**< kinetic + strain energy at t = 0 */
-    FRICREG_SVALUE_GROUND_PGV = 8, /**< the ground record's peak velocity max |integral of a_g
+    FRICREG_SVALUE_TIME = 0,          /**< time reached */
+    FRICREG_SVALUE_INPUT = 1,         /**< work of p - M r a_g since t = 0 */
+    FRICREG_SVALUE_KINETIC = 2,       /**< kinetic energy now */
+    FRICREG_SVALUE_STRAIN = 3,        /**< strain energy now */
+    FRICREG_SVALUE_VISCOUS = 4,       /**< energy dissipated by C since t = 0 */
+    FRICREG_SVALUE_FRICTION = 5,      /**< energy dissipated by all contacts since t = 0 */
+    FRICREG_SVALUE_RESIDUAL = 6,      /**< the balance's residual */
+    FRICREG_SVALUE_INITIAL = 7,       /**< kinetic + strain energy at t = 0 */
+    FRICREG_SVALUE_GROUND_PGV = 8,    /**< the ground record's peak velocity max |integral of a_g
                                        dt| (trapezoidal from the record's start; 0 without a
                                        record): the scale of fricreg-sim's default eps and of
                                        the eps warnings (since 1.6) */
-    FRICREG_SVALUE_JENKINS = 9     /**< energy dissipated by all Jenkins or Iwan elements
+    FRICREG_SVALUE_JENKINS = 9,       /**< energy dissipated by all Jenkins or Iwan elements
                                        since t = 0 (fricreg_structure_get_jenkins_state,
                                        fricreg_structure_get_iwan_state; since 1.6) */
+    FRICREG_SVALUE_COMPANION_CPU = 10 /**< CPU seconds (C's clock(): the process's, other
+                                          threads' work in the same intervals included) spent
+                                          stepping the error estimate's companions since they
+                                          were made (fricreg_structure_set_error_estimate: the
+                                          first stepping call after set_initial), the second
+                                          companion's inside the first's; 0 until an
+                                          estimate is made, the last one's after it ends
+                                          until the next is made. The estimate's cost beside
+                                          the run's own (since 1.8) */
 };
 
 /** Attach me Jenkins elements (fricreg_jenkins.h's 1-D element: a spring kt in series with a
@@ -1027,6 +1036,46 @@ FRICREG_API int fricreg_structure_get_value(const fricreg_structure *s, int whic
  *  Returns FRICREG_OK; FRICREG_ENULL if s is NULL; FRICREG_EINVAL if on is not 0, 1 or 2, or
  *  if called from the observer during a run. */
 FRICREG_API int fricreg_structure_set_error_estimate(fricreg_structure *s, int on);
+
+/** Where the error estimate's companions sit on the path (fricreg_structure_set_error_companions). */
+enum fricreg_estimate_companions {
+    /** eps / 2 at dt / 2 and eps / 4 at dt / 4 (adaptive: the tolerances / 16, / 256): the
+     *  default, calibrated (docs/structural.md, "Error estimate"); about 6.5x a run's cost */
+    FRICREG_COMPANIONS_FINER = 0,
+    /** 2 eps at 2 dt and 4 eps at 4 dt (adaptive: the tolerances x 16, x 256): the run's error
+     *  from the coarser levels, about 0.7x a run's cost; bounds the error less often (the
+     *  frame of bench/frame_estimate.c: 83 of 90 against 90), so not the default */
+    FRICREG_COMPANIONS_COARSER = 1
+};
+
+/** Choose where the error estimate's companions (fricreg_structure_set_error_estimate) sit:
+ *  finer than the run (FRICREG_COMPANIONS_FINER, the default) or coarser
+ *  (FRICREG_COMPANIONS_COARSER). Since 1.8 (FRICREG_1.8).
+ *
+ *  Coarser: the companions run at (2 eps, 2 dt) and (4 eps, 4 dt), adaptive ones at the same
+ *  output interval with rtol, atol x 16 and x 256 (the rule from eps, or the set tolerances,
+ *  likewise), every other rule of the companions as set_error_estimate says. From the run's q
+ *  and the companions' q2, q4, with d1 = q - q2 and d2 = q2 - q4: in the asymptotic range
+ *  d2 / d1 = 2^p (law (4)'s error c eps^p along dt / eps fixed), so the run's own error is
+ *  Richardson's from the coarser levels, |d1| / (2^p - 1); where r = d2 / d1 lies in
+ *  [2^0.5, 2^3] the estimate is 2 |d1| / (r - 1) (the factor 2 the finer estimator's), kind
+ *  FRICREG_EST_KIND_ASYMPTOTIC; otherwise (a stall: d1 small against d2; an order above the
+ *  range, which a stall imitates; differences that change sign) 4.83 (|d1| + |d2|), kind
+ *  FRICREG_EST_KIND_BOUND (both differences below 1e-9 of q: 4 (|d1| + |d2|)); with one
+ *  companion (FRICREG_ESTIMATE_ONE_COMPANION) 3 |d1|, ASSUMED. The run's results are
+ *  unchanged: the estimate only costs less, the coarser levels being further from the
+ *  asymptotic range (more BOUND kinds). Fixed steps need each stepping call (step, run,
+ *  run_ode without tolerances) to span 4 dt, the coarsest companion's step (2 dt with one
+ *  companion): a shorter call fails the estimate (+infinity, FRICREG_WARN_ERROR_ESTIMATE
+ *  saying why), since a companion stepping one call of dt at 2 dt would take s's own step.
+ *  A change ends the estimate made, which starts anew at the next set_initial, as a change
+ *  of on (set_error_estimate).
+ *
+ *  s      in/out: the structure.
+ *  which  in: enum fricreg_estimate_companions, 0 (finer) or 1 (coarser).
+ *  Returns FRICREG_OK; FRICREG_ENULL if s is NULL; FRICREG_EINVAL, s unchanged, if which is
+ *  not 0 or 1, or if called from the observer during a run. */
+FRICREG_API int fricreg_structure_set_error_companions(fricreg_structure *s, int which);
 
 /** Copy the peak displacements since fricreg_structure_set_initial (or creation),
  *  peak[i] = max |u_i| over: the initial state; every fixed step (fricreg_structure_step, _run,

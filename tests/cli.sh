@@ -44,8 +44,9 @@ expect_in() {
 }
 
 # expect_same TOL ARGS-A -- ARGS-B: two runs print the same JSON summary, every number within
-# TOL relative (of 1e-300 at least), all but cpu_seconds, the element kind and sliders and the
-# 2-D elements' forces (which a 1-D run does not print).
+# TOL relative (of 1e-300 at least), all but the CPU seconds (cpu_seconds,
+# companion_cpu_seconds), the element kind and sliders and the 2-D elements' forces (which a
+# 1-D run does not print).
 expect_same() {
     total=$((total + 1))
     tol=$1; shift
@@ -54,7 +55,7 @@ expect_same() {
     shift
     for run in a b; do
         if [ $run = a ]; then "$sim" $first >"$tmp/$run" 2>"$tmp/err"; else "$sim" "$@" >"$tmp/$run" 2>"$tmp/err"; fi
-        sed -e 's/"cpu_seconds": [0-9.e+-]*//; s/, "element_kind": "[^"]*"//; s/, "sliders_per_element": [0-9]*//' \
+        sed -e 's/"cpu_seconds": [0-9.e+-]*//; s/"companion_cpu_seconds": [0-9.e+-]*//; s/, "element_kind": "[^"]*"//; s/, "sliders_per_element": [0-9]*//' \
             -e 's/, "jenkins_forces": \[[][0-9.e+, -]*\]//' \
             "$tmp/$run" | tr -s ',:[]{} ' '\n' >"$tmp/$run.tokens"
     done
@@ -270,6 +271,29 @@ expect_output '"peak_displacement_error_estimate": \[[0-9.]+e-1[3-9]\], "peak_di
 expect_output '"code": "error_estimate", "message": "the error estimate [0-9.e-]+ of the largest peak displacement [0-9.]+ \(kind bound\) exceeds the answer tolerance 1e-15 of it: halve eps and dt, or raise --answer-rtol' $block --integrator newmark --dt 0.01 --answer-rtol 1e-15
 expect_usage_error "--answer-rtol" $block --integrator newmark --dt 0.01 --answer-rtol 0
 expect_usage_error "--answer-rtol" $block --integrator newmark --dt 0.01 --answer-rtol inf
+# The companions' CPU seconds (FRICREG_SVALUE_COMPANION_CPU) and where they sit
+# (--error-companions, fricreg_structure_set_error_companions), beside cpu_seconds: a share of
+# the run's CPU time, so never above it; neither without an estimate. Coarser companions step
+# 4 dt per call at least: GSL's fixed steps, called per --dt, are refused.
+for companions in finer coarser; do
+    expect_output "\"cpu_seconds\": [0-9.]+, \"error_companions\": \"$companions\", \"companion_cpu_seconds\": [0-9.]+, \"warnings\"" $block --integrator newmark --dt 0.01 --error-companions $companions
+    total=$((total + 1))
+    if ! "$sim" $block --integrator newmark --dt 0.001 --error-companions $companions >"$tmp/out" ||
+       ! sed 's/.*"cpu_seconds": \([0-9.]*\).*"companion_cpu_seconds": \([0-9.]*\).*/\1 \2/' "$tmp/out" |
+         awk '{ exit !($2 > 0 && $2 <= $1) }'; then
+        echo "FAIL: structure --error-companions $companions: companion_cpu_seconds not within cpu_seconds: $(tail -c 160 "$tmp/out")"; fails=$((fails + 1))
+    fi
+done
+total=$((total + 1))
+if "$sim" $block --integrator newmark --dt 0.01 --error-estimate off | grep -q companion_cpu_seconds; then
+    echo "FAIL: structure --error-estimate off reports companion_cpu_seconds"; fails=$((fails + 1))
+fi
+expect_usage_error "--error-companions" $block --integrator rk4 --dt 0.01 --error-companions coarser
+# without an estimate the choice is moot, so not refused: the block's x = -(2.41 - 4.83/3.17)
+# t^2 / 2 = -0.0044317 at 0.1 s, no estimate fields
+expect_output '"x": \[-0\.0044317[0-9]*\], .*"cpu_seconds": [0-9.]+, "warnings"' structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_const.txt --eps 1e-2 --t-end 0.1 --integrator rk4 --dt 1e-3 --error-companions coarser --error-estimate off
+expect_usage_error "--error-companions" $block --integrator newmark --dt 0.01 --error-companions coarse
+expect_output '"error_companions": "coarser"' $block --integrator rkf45 --dt 0.01 --rtol 1e-6 --error-companions coarser
 total=$((total + 1))
 if "$sim" $block --integrator newmark --dt 0.01 --error-estimate off 2>&1 | grep -q error_estimate; then
     echo "FAIL: structure --error-estimate off still estimates"; fails=$((fails + 1))
@@ -427,8 +451,8 @@ for integ in "newmark --eps 1e-3 --jenkins $d/J1.mtx --jenkins-params $d/P_slip.
         if [ $out = trajectory ]; then
             { cat "$tmp/part1"; tail -n +3 "$tmp/part2"; } >"$tmp/split"
         else
-            sed 's/"cpu_seconds": [0-9.]*//' "$tmp/part2" >"$tmp/split"
-            sed -i 's/"cpu_seconds": [0-9.]*//' "$tmp/full"
+            sed 's/"cpu_seconds": [0-9.]*//; s/"companion_cpu_seconds": [0-9.]*//' "$tmp/part2" >"$tmp/split"
+            sed -i 's/"cpu_seconds": [0-9.]*//; s/"companion_cpu_seconds": [0-9.]*//' "$tmp/full"
         fi
         if [ $status -ne 0 ] || [ ! -s "$tmp/full" ] || ! cmp -s "$tmp/full" "$tmp/split"; then
             echo "FAIL: structure --integrator $integ --output $out: split at 0.5 s != the run to 1 s (status $status: $(cat "$tmp/err"))"; fails=$((fails + 1))
@@ -687,7 +711,7 @@ three="--contacts $d/Jc.mtx --mun $d/munc.txt --ground-accel $d/ag3.txt --eps 0.
 "$sim" structure --mass "$d/Mc.mtx" --stiffness "$d/Kc.mtx" --damping "$d/Cc.mtx" $three >"$d/lower.json" 2>&1
 "$sim" structure --mass "$d/Mcg.mtx" --stiffness "$d/Kcg.mtx" --damping "$d/Ccg.mtx" $three >"$d/whole.json" 2>&1
 total=$((total + 1))
-same_run() { sed -e 's/"cpu_seconds": [0-9.]*//' "$1"; }
+same_run() { sed -e 's/"cpu_seconds": [0-9.]*//; s/"companion_cpu_seconds": [0-9.]*//' "$1"; }
 if ! grep -q '"ndof": 3, "ncontacts": 2' "$d/lower.json" || [ "$(same_run "$d/lower.json")" != "$(same_run "$d/whole.json")" ]; then
     echo "FAIL: a lower triangle and the whole matrix differ: $(cat "$d/lower.json" "$d/whole.json")"; fails=$((fails + 1))
 fi

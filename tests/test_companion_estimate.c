@@ -11,7 +11,12 @@
  *   - differences both below 1e-9 of the quantity: 4 (|d1| + |d2|) (the factor 2 and p = 1's
  *     Richardson tail 2), of kind BOUND (no order read from noise);
  *   - one companion: 3 |d1|, of kind ASSUMED;
- *   - an estimate that could not be formed (a non-finite value): BOUND. */
+ *   - an estimate that could not be formed (a non-finite value): BOUND;
+ *   - coarser companions, q2 = q(2 eps), q4 = q(4 eps): r = d2 / d1 = 2^p in [2^(1/2), 2^3]
+ *     gives 2 |d1| / (r - 1), twice the run's own error, of kind ASYMPTOTIC; outside it (a
+ *     stall below, where d1 is small against d2; an order above 3, which a stall imitates;
+ *     opposite signs) 4.83 (|d1| + |d2|), BOUND; noise 4 (|d1| + |d2|), BOUND; one companion
+ *     3 |d1|, ASSUMED. */
 #include <check.h>
 #include <math.h>
 #include <stdlib.h>
@@ -92,6 +97,70 @@ START_TEST(one_companion_is_three_times_the_difference)
 }
 END_TEST
 
+#define OUT_COARSER 4.82842712474619 /* 2 / (2^(1/2) - 1) */
+
+/* q0 + c eps^p at eps, 2 eps, 4 eps through the coarser estimator. */
+static double coarser(int estimator, double q0, double c, double p, int *flag)
+{
+    double q = q0 + c, q2 = q0 + c * pow(2.0, p), q4 = q0 + c * pow(4.0, p);
+    *flag = 0;
+    return fr_companion_estimate_coarser(estimator, q, q2, q4, flag);
+}
+
+START_TEST(coarser_in_range_is_richardson_times_two)
+{
+    const double orders[4] = {0.6, 1.0, 2.0, 2.9}; /* inside the band [1/2, 3] */
+    for (int k = 0; k < 4; k++) {
+        int flag;
+        double c = 0.013, e = coarser(FRICREG_ESTIMATE_TWO_COMPANIONS, -3.0, c, orders[k], &flag);
+        ck_assert_int_eq(flag, FRICREG_EST_KIND_ASYMPTOTIC);
+        ck_assert_double_eq_tol(e, 2.0 * c, 1e-12 * c);
+    }
+}
+END_TEST
+
+START_TEST(coarser_out_of_range_is_the_bound)
+{
+    int flag;
+    /* order 4 (r = 16): above the band, what a stall at the fine levels looks like */
+    double e = coarser(FRICREG_ESTIMATE_TWO_COMPANIONS, 2.0, 0.01, 4.0, &flag);
+    ck_assert_int_eq(flag, FRICREG_EST_KIND_BOUND);
+    ck_assert_double_eq_tol(e, OUT_COARSER * (0.01 * 15.0 + 0.01 * 240.0), 1e-12);
+    /* order 0.26 (r = 1.2): below it */
+    e = coarser(FRICREG_ESTIMATE_TWO_COMPANIONS, 2.0, 0.01, log2(1.2), &flag);
+    ck_assert_int_eq(flag, FRICREG_EST_KIND_BOUND);
+    ck_assert_double_eq_tol(e, OUT_COARSER * (0.01 * 0.2 + 0.01 * 0.24), 1e-12);
+    /* the run and its nearer companion equal to 1e-9, the farther off: a stall, bounded */
+    flag = 0;
+    e = fr_companion_estimate_coarser(FRICREG_ESTIMATE_TWO_COMPANIONS, 1.0, 1.0 + 3e-10, 1.2,
+                                      &flag);
+    ck_assert_int_eq(flag, FRICREG_EST_KIND_BOUND);
+    ck_assert_double_eq_tol(e, OUT_COARSER * (3e-10 + (0.2 - 3e-10)), 1e-12);
+    /* opposite signs */
+    flag = 0;
+    e = fr_companion_estimate_coarser(FRICREG_ESTIMATE_TWO_COMPANIONS, 1.0, 1.1, 1.05, &flag);
+    ck_assert_int_eq(flag, FRICREG_EST_KIND_BOUND);
+    ck_assert_double_eq_tol(e, OUT_COARSER * (0.1 + 0.05), 1e-12);
+}
+END_TEST
+
+START_TEST(coarser_noise_one_companion_and_no_estimate)
+{
+    int flag = 0;
+    double e = fr_companion_estimate_coarser(FRICREG_ESTIMATE_TWO_COMPANIONS, 1.0 + 4e-10,
+                                             1.0 - 3e-10, 1.0, &flag);
+    ck_assert_int_eq(flag, FRICREG_EST_KIND_BOUND);
+    ck_assert_double_eq_tol(e, 4.0 * (7e-10 + 3e-10), 1e-15);
+    e = coarser(FRICREG_ESTIMATE_ONE_COMPANION, 5.0, 0.4, 1.0, &flag);
+    ck_assert_int_eq(flag, FRICREG_EST_KIND_ASSUMED);
+    ck_assert_double_eq_tol(e, 3.0 * 0.4, 1e-12);
+    flag = 0;
+    e = fr_companion_estimate_coarser(FRICREG_ESTIMATE_TWO_COMPANIONS, NAN, 1.0, 1.0, &flag);
+    ck_assert(!(e < INFINITY));
+    ck_assert_int_eq(flag, FRICREG_EST_KIND_BOUND);
+}
+END_TEST
+
 START_TEST(no_estimate_is_a_bound)
 {
     int flag = 0;
@@ -115,6 +184,9 @@ int main(void)
     tcase_add_test(tc, noise_keeps_the_factor_and_the_tail);
     tcase_add_test(tc, one_companion_is_three_times_the_difference);
     tcase_add_test(tc, no_estimate_is_a_bound);
+    tcase_add_test(tc, coarser_in_range_is_richardson_times_two);
+    tcase_add_test(tc, coarser_out_of_range_is_the_bound);
+    tcase_add_test(tc, coarser_noise_one_companion_and_no_estimate);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);
     srunner_run_all(sr, CK_NORMAL);

@@ -340,6 +340,13 @@ contains
     call check_status(st%set_answer_rtol(1.0_c_double), FRICREG_OK, 'set_answer_rtol 1')
     call check(count_code(FRICREG_WARN_ERROR_ESTIMATE) == 0, trim(tag) // ': 1 does not')
     call check_status(st%set_answer_rtol(1e-2_c_double), FRICREG_OK, 'set_answer_rtol back')
+    ! the companions' place: 2 refused, the estimate kept; the CPU seconds they took
+    call check_status(st%set_error_companions(2_c_int), FRICREG_EINVAL, 'set_error_companions 2')
+    call check_status(st%get_dissipation_error(Def), FRICREG_OK, 'kept after a refusal ' // tag)
+    call check_status(st%get_value(FRICREG_SVALUE_COMPANION_CPU, wf), FRICREG_OK, 'companion cpu')
+    call check_status(fricreg_structure_get_value(s, FRICREG_SVALUE_COMPANION_CPU, wc), &
+                      FRICREG_OK, 'C companion cpu')
+    call check(wf > 0.0_c_double .and. wc > 0.0_c_double, trim(tag) // ': companions took time')
     do which = FRICREG_SVALUE_TIME, FRICREG_SVALUE_INITIAL
       call check_status(st%get_value(which, wf), FRICREG_OK, 'get_value')
       call check_status(fricreg_structure_get_value(s, which, wc), FRICREG_OK, 'C get_value')

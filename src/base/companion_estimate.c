@@ -66,6 +66,45 @@ double fr_companion_estimate(int estimator, double q, double q2, double q4, int 
     return err;
 }
 
+/* Coarser companions: q2 = q(2 eps), q4 = q(4 eps) along 2 dt, 4 dt. In the asymptotic range
+ * d1 = q - q2 = -c eps^p (2^p - 1) and d2 = q2 - q4 = 2^p d1, so r = d2 / d1 = 2^p and the
+ * run's own error is Richardson's from the coarser levels, |d1| / (r - 1). The range is
+ * bounded on both sides: r far above the law's orders is the run and its nearer companion
+ * agreeing much better than the levels above them, which a stall does too (finer companions
+ * read that case from d1 itself; here d1 is the smaller difference). */
+#define P_HI 2.0    /* law (4)'s higher order */
+#define BAND_HI 1.0 /* the observed order accepted up to P_HI + BAND_HI */
+#define OUT_COARSER (SAFETY * 2.414213562373095) /* SAFETY / (2^0.5 - 1): the band's lowest p */
+
+static double two_coarser(double q, double q2, double q4, int *kind)
+{
+    double d1 = q - q2, d2 = q2 - q4;
+    double floor = NOISE * fmax(fabs(q), fmax(fabs(q2), fabs(q4)));
+    *kind = FRICREG_EST_KIND_BOUND;
+    if (fabs(d1) <= floor && fabs(d2) <= floor) /* no order can be read from noise */
+        return NOISE_FACTOR * (fabs(d1) + fabs(d2));
+    if (fabs(d1) > floor) {
+        double r = d2 / d1;
+        if (r >= exp2(P_LO - BAND) && r <= exp2(P_HI + BAND_HI)) {
+            *kind = FRICREG_EST_KIND_ASYMPTOTIC;
+            return SAFETY * fabs(d1) / (r - 1.0);
+        }
+    }
+    return OUT_COARSER * (fabs(d1) + fabs(d2)); /* d1 at noise, d2 not: a stall, or no order */
+}
+
+double fr_companion_estimate_coarser(int estimator, double q, double q2, double q4, int *kind)
+{
+    if (estimator == FRICREG_ESTIMATE_ONE_COMPANION) { /* p = 1's error is |d1|: margin 3 */
+        *kind = FRICREG_EST_KIND_ASSUMED;
+        return FACTOR_ONE * fabs(q - q2);
+    }
+    double err = two_coarser(q, q2, q4, kind);
+    if (!(err < INFINITY))
+        *kind = FRICREG_EST_KIND_BOUND;
+    return err;
+}
+
 const char *fr_estimate_kind_name(int kind)
 {
     switch (kind) {

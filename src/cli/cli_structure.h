@@ -24,8 +24,9 @@ struct structure_options {
                     * not given, the library's bound on each sample's call) */
     int output;         /* enum cli_output, as an int: the option table writes ints */
     int error_estimate; /* --error-estimate on|off|one: enum fricreg_error_estimate (summary only) */
-    double answer_rtol; /* --answer-rtol X (fricreg_structure_set_answer_rtol) */
-    int output_every;   /* --output-every K: the trajectory's every K-th step (1: every step) */
+    double answer_rtol;   /* --answer-rtol X (fricreg_structure_set_answer_rtol) */
+    int error_companions; /* --error-companions: enum fricreg_estimate_companions */
+    int output_every;     /* --output-every K: the trajectory's every K-th step (1: every step) */
     int output_every_given;
 };
 

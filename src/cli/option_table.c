@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "fricreg_structure.h" /* enum fricreg_estimate_companions */
 
 const struct cli_name_table cli_law_names = {"law", fricreg_law_from_name, fricreg_law_name};
 const struct cli_name_table cli_integrator_names = {"integrator", fricreg_integrator_from_name,
@@ -19,6 +20,9 @@ const struct cli_word cli_estimator_words[] = {{"on", FRICREG_ESTIMATE_TWO_COMPA
                                                {"off", FRICREG_ESTIMATE_OFF},
                                                {"one", FRICREG_ESTIMATE_ONE_COMPANION},
                                                {NULL, 0}};
+const struct cli_word cli_companions_words[] = {{"finer", FRICREG_COMPANIONS_FINER},
+                                                {"coarser", FRICREG_COMPANIONS_COARSER},
+                                                {NULL, 0}};
 
 int cli_usage_error(const char *option, const char *what)
 {

@@ -119,9 +119,10 @@ static const char *const count_names[] = {"ndof",
                                           "element coordinates",
                                           "element dimension",
                                           "elements with a normal law"};
-static const char *const flag_names[] = {"J set",          "Rayleigh damping",  "scheme",
-                                         "friction law",   "Newton's max_iter", "error estimate",
-                                         "unguarded steps"};
+static const char *const flag_names[] = {
+    "J set",          "Rayleigh damping",  "scheme",
+    "friction law",   "Newton's max_iter", "error estimate (on + 4 x companions)",
+    "unguarded steps"};
 static const char *const param_names[] = {"alpha",       "beta",           "gamma",
                                           "eps",         "Newton's tol",   "Rayleigh a0",
                                           "Rayleigh a1", "tolerance scale"};
@@ -141,8 +142,9 @@ static void fingerprint_of(const fricreg_structure *s, struct fingerprint *fp)
     const struct fr_elements *e = &s->el;
     memset(fp, 0, sizeof *fp);
     uint64_t counts[NCOUNTS] = {s->n, s->m, e->me, e->ns, e->nc, (uint64_t)e->dim, e->n0 != NULL};
-    int32_t flags[NFLAGS] = {s->contacts_set, s->rayleigh,    s->scheme,   fr_ctx_law(s->ctx),
-                             s->newton_max,   s->estimate_on, s->unguarded};
+    int32_t flags[NFLAGS] = {s->contacts_set,    s->rayleigh,   s->scheme,
+                             fr_ctx_law(s->ctx), s->newton_max, s->estimate_on | s->companions << 2,
+                             s->unguarded}; /* on: 0 .. 2, companions above it */
     double params[NPARAMS] = {s->alpha,      s->beta, s->gamma, fr_ctx_eps(s->ctx),
                               s->newton_tol, s->a0,   s->a1,    s->tol_scale};
     memcpy(fp->count, counts, sizeof counts);

@@ -28,6 +28,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
+#include <time.h>
 
 #include "base/companion_estimate.h"
 #include "ctx/ctx_driver.h"
@@ -35,6 +36,13 @@
 #include "structure_internal.h"
 
 #define TOL_SCALE 16.0 /* the companion's tolerances (fricreg_sim's) */
+
+/* The factor from s's eps and dt to its companion's: 1/2 finer, 2 coarser
+ * (fricreg_structure_set_error_companions). */
+static double level(const fricreg_structure *s)
+{
+    return s->companions == FRICREG_COMPANIONS_COARSER ? 2.0 : 0.5;
+}
 
 static void companion_free(fricreg_structure *s)
 {
@@ -79,7 +87,7 @@ static int copy_structure(fricreg_structure *c, const fricreg_structure *s)
         status = fricreg_structure_set_load(c, s->n, s->p->data, s->load.t0, s->load.dt, s->load.n,
                                             s->load.x);
     if (status == FRICREG_OK)
-        status = fricreg_structure_set_law(c, fr_ctx_law(s->ctx), 0.5 * fr_ctx_eps(s->ctx));
+        status = fricreg_structure_set_law(c, fr_ctx_law(s->ctx), level(s) * fr_ctx_eps(s->ctx));
     if (status == FRICREG_OK)
         status = fricreg_structure_set_bounds(c, s->m, s->mun);
     if (status == FRICREG_OK)
@@ -97,7 +105,8 @@ static int copy_structure(fricreg_structure *c, const fricreg_structure *s)
     c->newton_tol = s->newton_tol;
     c->newton_max = s->newton_max;
     c->max_steps = s->max_steps;
-    c->tol_scale = s->tol_scale / TOL_SCALE; /* run_ode's rule from eps and set tolerances */
+    /* run_ode's rule from eps and set tolerances: / 16 finer, x 16 coarser */
+    c->tol_scale = s->tol_scale * (level(s) > 1.0 ? TOL_SCALE : 1.0 / TOL_SCALE);
     if (s->ode_atol != NULL)
         status = fricreg_structure_set_ode_abs_tolerances(c, 2 * s->n + 2 + s->m, s->ode_atol);
     if (status != FRICREG_OK)
@@ -125,6 +134,7 @@ int fr_estimate_companion(const fricreg_structure *s, fricreg_structure **out, c
     }
     if (s->estimate_on == FRICREG_ESTIMATE_TWO_COMPANIONS) /* the second: c's own */
         c->estimate_on = FRICREG_ESTIMATE_ONE_COMPANION;
+    c->companions = s->companions;
     *out = c;
     return FRICREG_OK;
 }
@@ -142,6 +152,7 @@ void fr_estimate_begin(fricreg_structure *s)
     }
     s->companion_pending = 0; /* the copy has them */
     s->estimate_state = FR_ESTIMATE_ACTIVE;
+    s->companion_cpu = 0.0;
 }
 
 /* The status of a setter passed on to the companion: a refusal ends the estimate. */
@@ -163,10 +174,10 @@ void fr_estimate_sync(fricreg_structure *s)
     int status = FRICREG_OK;
     if (what & FR_CHANGED_BOUNDS)
         status = passed_on(s, fricreg_structure_set_bounds(c, s->m, s->mun), "set_bounds");
-    if (status == FRICREG_OK && (what & FR_CHANGED_LAW)) /* the companion's eps: half */
+    if (status == FRICREG_OK && (what & FR_CHANGED_LAW)) /* the companion's eps: half, twice */
         status = passed_on(s,
                            fricreg_structure_set_law(c, fr_ctx_law(s->ctx),
-                                                     0.5 * fr_ctx_eps(s->ctx)),
+                                                     level(s) * fr_ctx_eps(s->ctx)),
                            "set_law");
     if (status == FRICREG_OK && (what & FR_CHANGED_GROUND))
         status = passed_on(s,
@@ -190,21 +201,33 @@ void fr_estimate_sync(fricreg_structure *s)
                   "set_ode_abs_tolerances");
 }
 
-void fr_estimate_follow(fricreg_structure *s, int integrator, double dt, double rtol, double atol)
+/* Coarser fixed steps need a call spanning the coarsest companion's step: a shorter one (a
+ * step per call) would step the companions at s's own dt, off the path. */
+static int span_too_short(const fricreg_structure *s, double c_dt)
 {
-    if (s->estimate_state != FR_ESTIMATE_ACTIVE || !(s->t > s->companion->t))
-        return;
-    fr_estimate_sync(s);
-    if (s->estimate_state != FR_ESTIMATE_ACTIVE)
-        return;
+    double coarsest = s->estimate_on == FRICREG_ESTIMATE_TWO_COMPANIONS ? 2.0 * c_dt : c_dt;
+    return s->companions == FRICREG_COMPANIONS_COARSER &&
+           s->t - s->companion->t < coarsest * (1.0 - 1e-9);
+}
+
+static void follow(fricreg_structure *s, int integrator, double dt, double rtol, double atol)
+{
     fricreg_structure *c = s->companion;
-    /* The companion's call: fixed steps of dt / 2, or an adaptive run at the tolerances / 16
-     * (the rule's and the set levels: c->tol_scale). */
-    double c_dt = 0.5 * dt, c_rtol = 0.0, c_atol = 0.0;
+    /* The companion's call: fixed steps of dt / 2 (coarser: 2 dt), or an adaptive run at the
+     * tolerances / 16 (x 16; the rule's and the set levels: c->tol_scale). */
+    double c_dt = level(s) * dt, c_rtol = 0.0, c_atol = 0.0;
     if (integrator != 0 && (rtol > 0.0 || atol != 0.0)) {
+        double scale = level(s) > 1.0 ? TOL_SCALE : 1.0 / TOL_SCALE;
         c_dt = dt;
-        c_rtol = rtol / TOL_SCALE;
-        c_atol = atol == FRICREG_ATOL_FROM_EPS ? FRICREG_ATOL_FROM_EPS : atol / TOL_SCALE;
+        c_rtol = rtol * scale;
+        c_atol = atol == FRICREG_ATOL_FROM_EPS ? FRICREG_ATOL_FROM_EPS : atol * scale;
+    } else if (span_too_short(s, c_dt)) {
+        estimate_failed(s,
+                        "coarser companions need each stepping call to span their largest step, "
+                        "4 dt (this one spanned %g s at dt = %g): run to t_end in one call, or "
+                        "use finer companions",
+                        s->t - c->t, dt);
+        return;
     }
     fr_estimate_begin(c); /* the second companion, at the first's first step */
     int status = integrator == 0
@@ -218,10 +241,24 @@ void fr_estimate_follow(fricreg_structure *s, int integrator, double dt, double 
         estimate_failed(s, "%s", c->estimate_msg);
 }
 
+void fr_estimate_follow(fricreg_structure *s, int integrator, double dt, double rtol, double atol)
+{
+    if (s->estimate_state != FR_ESTIMATE_ACTIVE || !(s->t > s->companion->t))
+        return;
+    fr_estimate_sync(s);
+    if (s->estimate_state != FR_ESTIMATE_ACTIVE)
+        return;
+    clock_t start = clock(); /* the second companion's inside the first's */
+    follow(s, integrator, dt, rtol, atol);
+    s->companion_cpu += (double)(clock() - start) / CLOCKS_PER_SEC;
+}
+
 /* The estimate of one quantity from its values on s, its companion and (with two) the
  * second companion (base/companion_estimate.h, shared with fricreg_sim), its kind into *kind. */
 static double estimate_of(const fricreg_structure *s, double q, double q2, double q4, int *kind)
 {
+    if (s->companions == FRICREG_COMPANIONS_COARSER)
+        return fr_companion_estimate_coarser(s->estimate_on, q, q2, q4, kind);
     return fr_companion_estimate(s->estimate_on, q, q2, q4, kind);
 }
 
@@ -338,6 +375,23 @@ int fricreg_structure_set_error_estimate(fricreg_structure *s, int on)
         s->estimate_state = FR_ESTIMATE_NONE;
     }
     s->estimate_on = on;
+    return FRICREG_OK;
+}
+
+int fricreg_structure_set_error_companions(fricreg_structure *s, int which)
+{
+    if (s == NULL)
+        return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, "set_error_companions");
+    if (which != FRICREG_COMPANIONS_FINER && which != FRICREG_COMPANIONS_COARSER)
+        return fr_fail(s, FRICREG_EINVAL,
+                       "set_error_companions: which = %d must be 0 (finer) or 1 (coarser)", which);
+    if (which != s->companions) { /* a companion made at the other levels */
+        companion_free(s);
+        s->estimate_state = FR_ESTIMATE_NONE;
+    }
+    s->companions = which;
     return FRICREG_OK;
 }
 

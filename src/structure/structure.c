@@ -508,6 +508,7 @@ int fricreg_structure_get_value(const fricreg_structure *s, int which, double *v
     case FRICREG_SVALUE_INITIAL: *value = e->initial; break;
     case FRICREG_SVALUE_GROUND_PGV: fr_record_peaks(&s->ground, &(double){0}, value); break;
     case FRICREG_SVALUE_JENKINS: *value = e->jenkins; break;
+    case FRICREG_SVALUE_COMPANION_CPU: *value = s->companion_cpu; break;
     default: return FRICREG_EINVAL;
     }
     return FRICREG_OK;

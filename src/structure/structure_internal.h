@@ -224,6 +224,12 @@ struct fricreg_structure {
     char estimate_msg[256];       /* why the estimate failed (FR_ESTIMATE_FAILED) */
     unsigned companion_pending;   /* enum fr_change: set since the companion last followed */
     double answer_rtol; /* fricreg_structure_set_answer_rtol: the estimate's warning level */
+    /* fricreg_structure_set_error_companions: FRICREG_COMPANIONS_FINER (eps / 2, dt / 2, ...)
+     * or _COARSER (2 eps, 2 dt, ...), the second companion's the same */
+    int companions;
+    /* CPU seconds (clock()) in the companions' runs since the estimate's companion was made
+     * (FRICREG_SVALUE_COMPANION_CPU): the first companion's call, its own companion's inside */
+    double companion_cpu;
 };
 
 enum {
