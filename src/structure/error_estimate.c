@@ -96,6 +96,7 @@ static int copy_structure(fricreg_structure *c, const fricreg_structure *s)
     c->gamma = s->gamma;
     c->newton_tol = s->newton_tol;
     c->newton_max = s->newton_max;
+    c->contact_solver = s->contact_solver;
     c->max_steps = s->max_steps;
     c->tol_scale = s->tol_scale / TOL_SCALE; /* run_ode's rule from eps and set tolerances */
     if (s->ode_atol != NULL)

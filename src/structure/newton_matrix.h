@@ -36,6 +36,7 @@
 #include <gsl/gsl_vector.h>
 
 #include "fricreg.h"
+#include "contact_sparse.h"
 #include "masked_factor.h"
 
 struct fr_newton_matrix {
@@ -54,6 +55,9 @@ struct fr_newton_matrix {
     double *b;                 /* [m] */
     struct fr_masked_factor block; /* W_eff's principal blocks (shifted) */
     enum fr_block_storage storage; /* the blocks' (FR_BLOCK_CHOSEN unless a test forces one) */
+    /* The blocks solved in the structure's space instead (contact_sparse.h; not owned, NULL:
+     * the masked factor's): set by the structure after each prepare. */
+    struct fr_contact_sparse *sparse;
 };
 
 /* Ready for the contacts of a new K_eff: the blocks of W_eff (m x m, upper, sorted) ready in

@@ -1,0 +1,359 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* contact_sparse.c — the near-stick block solved through K_eff + J^T T J (contact_sparse.h). */
+#include <math.h>
+#include <string.h>
+
+#include "base/sparse_factor.h"
+#include "base/sparse_ops.h"
+#include "contact_factor.h"
+#include "contact_sparse.h"
+#include "fricreg.h"
+
+/* The regularization of a row without a shift, relative to its W_eff,ii: sqrt(u), between
+ * the refinement's rate (RHO) and the cancellation's rounding (u / RHO). */
+#define RHO 0x1p-26
+/* The refinement stops when a correction is below REFINE_STOP times the answer, or no longer
+ * halves the last (the rounding of W_eff y: about 1e-14 of the answer), or after REFINE_MAX
+ * corrections; one then above REFINE_FAIL times the answer means a singular block (W_eff,NN's
+ * smallest eigenvalue below about RHO W_eff,ii). */
+#define REFINE_STOP 0x1p-47
+#define REFINE_MAX 30
+#define REFINE_FAIL 1e-8
+
+static size_t nnz_of(const cholmod_sparse *A, size_t ncol)
+{
+    return A ? (size_t)((const SuiteSparse_long *)A->p)[ncol] : 0;
+}
+
+void fr_contact_sparse_free(struct fr_contact_sparse *f, cholmod_common *c)
+{
+    size_t nnz = nnz_of(f->A, f->n), np = f->pptr ? (size_t)f->pptr[f->m] : 0;
+    cholmod_l_free(nnz, sizeof *f->base, f->base, c);
+    cholmod_l_free(f->pptr ? f->m + 1 : 0, sizeof *f->pptr, f->pptr, c);
+    cholmod_l_free(np, sizeof *f->pos, f->pos, c);
+    cholmod_l_free(np, sizeof *f->val, f->val, c);
+    cholmod_l_free(f->n, sizeof *f->perm, f->perm, c);
+    double **mv[] = {&f->t, &f->y, &f->res, &f->dy, &f->u, &f->e, &f->held_shift};
+    for (size_t k = 0; k < sizeof mv / sizeof *mv; k++)
+        cholmod_l_free(f->m, sizeof **mv[k], *mv[k], c);
+    cholmod_l_free(f->n, sizeof *f->v, f->v, c);
+    cholmod_l_free(f->n, sizeof *f->w, f->w, c);
+    cholmod_l_free(f->n, sizeof *f->pv, f->pv, c);
+    cholmod_l_free(f->m, sizeof *f->held_set, f->held_set, c);
+    cholmod_l_free_sparse(&f->A, c);
+    cholmod_l_free_factor(&f->L, c);
+    cholmod_l_free_dense(&f->X, c);
+    cholmod_l_free_dense(&f->Yw, c);
+    cholmod_l_free_dense(&f->Ew, c);
+    memset(f, 0, sizeof *f);
+}
+
+/* The upper triangle of K_eff + J^T J's pattern (values: K_eff's plus J^T J's, unused). */
+static cholmod_sparse *union_pattern(const cholmod_sparse *Keff, const cholmod_sparse *Jt,
+                                     cholmod_common *c)
+{
+    cholmod_sparse *JJ = cholmod_l_aat((cholmod_sparse *)Jt, NULL, 0, 1, c), *JJu = NULL, *U = NULL;
+    if (JJ != NULL)
+        JJu = cholmod_l_copy(JJ, 1, 1, c);
+    if (JJu != NULL)
+        U = cholmod_l_add((cholmod_sparse *)Keff, JJu, (double[2]){1.0, 0.0}, (double[2]){1.0, 0.0},
+                          1, 1, c);
+    cholmod_l_free_sparse(&JJ, c);
+    cholmod_l_free_sparse(&JJu, c);
+    return U;
+}
+
+/* A fill-reducing order of U (as contact_factor.c orders K_eff) into f->perm. */
+static int order(struct fr_contact_sparse *f, cholmod_sparse *U, cholmod_common *c)
+{
+    fr_cholmod_ordering(c, f->n >= FR_CFACTOR_NESTED_FROM ? CHOLMOD_NESDIS : CHOLMOD_AMD, 0);
+    cholmod_factor *L = cholmod_l_analyze(U, c);
+    f->perm = cholmod_l_malloc(f->n, sizeof *f->perm, c);
+    int ok = L != NULL && f->perm != NULL;
+    if (ok)
+        memcpy(f->perm, L->Perm, f->n * sizeof *f->perm);
+    cholmod_l_free_factor(&L, c);
+    return ok;
+}
+
+/* f->A = the lower triangle of P U P^T, and at[e] its entry of U's entry e: the permutation is
+ * done on a copy of U whose values are its entries' own positions (masked_factor.c). */
+static int permute(struct fr_contact_sparse *f, const cholmod_sparse *U, SuiteSparse_long at[],
+                   cholmod_common *c)
+{
+    size_t nnz = nnz_of(U, f->n);
+    cholmod_sparse *index = cholmod_l_copy_sparse((cholmod_sparse *)U, c), *full = NULL, *P = NULL;
+    if (index != NULL) {
+        for (size_t p = 0; p < nnz; p++)
+            ((double *)index->x)[p] = (double)p;
+        full = cholmod_l_copy(index, 0, 1, c);
+    }
+    if (full != NULL)
+        P = cholmod_l_submatrix(full, f->perm, (SuiteSparse_long)f->n, f->perm,
+                                (SuiteSparse_long)f->n, 1, 1, c);
+    if (P != NULL)
+        f->A = cholmod_l_copy(P, -1, 1, c);
+    cholmod_l_free_sparse(&index, c);
+    cholmod_l_free_sparse(&full, c);
+    cholmod_l_free_sparse(&P, c);
+    if (f->A == NULL)
+        return 0;
+    const double *ax = f->A->x;
+    for (size_t q = 0; q < nnz_of(f->A, f->n); q++)
+        at[(SuiteSparse_long)ax[q]] = (SuiteSparse_long)q;
+    return 1;
+}
+
+/* U's entry (i, j), i <= j, by bisection of its sorted column j (it is there: U holds it). */
+static SuiteSparse_long find(const cholmod_sparse *U, SuiteSparse_long i, SuiteSparse_long j)
+{
+    const SuiteSparse_long *Up = U->p, *Ui = U->i;
+    SuiteSparse_long lo = Up[j], hi = Up[j + 1] - 1;
+    while (lo < hi) {
+        SuiteSparse_long mid = lo + (hi - lo) / 2;
+        if (Ui[mid] < i)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+/* K_eff's values into f->base, in A's layout. */
+static int base_values(struct fr_contact_sparse *f, const cholmod_sparse *Keff,
+                       const cholmod_sparse *U, const SuiteSparse_long at[], cholmod_common *c)
+{
+    size_t nnz = nnz_of(f->A, f->n);
+    f->base = cholmod_l_calloc(nnz > 0 ? nnz : 1, sizeof *f->base, c);
+    if (f->base == NULL)
+        return 0;
+    const SuiteSparse_long *Kp = Keff->p, *Ki = Keff->i;
+    const double *Kx = Keff->x;
+    for (SuiteSparse_long j = 0; j < (SuiteSparse_long)f->n; j++)
+        for (SuiteSparse_long p = Kp[j]; p < Kp[j + 1]; p++)
+            if (Ki[p] <= j)
+                f->base[at[find(U, Ki[p], j)]] += Kx[p];
+    return 1;
+}
+
+/* Each contact's products J_ai J_bi, a <= b, and their entries of A. */
+static int products(struct fr_contact_sparse *f, const cholmod_sparse *U,
+                    const SuiteSparse_long at[], cholmod_common *c)
+{
+    const SuiteSparse_long *Jp = f->Jt->p, *Ji = f->Jt->i;
+    const double *Jx = f->Jt->x;
+    f->pptr = cholmod_l_malloc(f->m + 1, sizeof *f->pptr, c);
+    if (f->pptr == NULL)
+        return 0;
+    f->pptr[0] = 0;
+    for (size_t i = 0; i < f->m; i++) {
+        SuiteSparse_long k = Jp[i + 1] - Jp[i];
+        f->pptr[i + 1] = f->pptr[i] + k * (k + 1) / 2;
+    }
+    size_t np = (size_t)f->pptr[f->m];
+    f->pos = cholmod_l_malloc(np > 0 ? np : 1, sizeof *f->pos, c);
+    f->val = cholmod_l_malloc(np > 0 ? np : 1, sizeof *f->val, c);
+    if (f->pos == NULL || f->val == NULL)
+        return 0;
+    for (size_t i = 0; i < f->m; i++) {
+        SuiteSparse_long q = f->pptr[i];
+        for (SuiteSparse_long p = Jp[i]; p < Jp[i + 1]; p++)
+            for (SuiteSparse_long r = p; r < Jp[i + 1]; r++, q++) {
+                SuiteSparse_long a = Ji[p] < Ji[r] ? Ji[p] : Ji[r];
+                SuiteSparse_long b = Ji[p] < Ji[r] ? Ji[r] : Ji[p];
+                f->pos[q] = at[find(U, a, b)];
+                /* a repeated row of J: its cross term lands on the diagonal twice */
+                f->val[q] = Jx[p] * Jx[r] * (a == b && p != r ? 2.0 : 1.0);
+            }
+    }
+    return 1;
+}
+
+static int vectors(struct fr_contact_sparse *f, cholmod_common *c)
+{
+    size_t m = f->m > 0 ? f->m : 1;
+    double **mv[] = {&f->t, &f->y, &f->res, &f->dy, &f->u, &f->e, &f->held_shift};
+    int ok = 1;
+    for (size_t k = 0; k < sizeof mv / sizeof *mv; k++)
+        ok &= (*mv[k] = cholmod_l_calloc(m, sizeof **mv[k], c)) != NULL;
+    f->v = cholmod_l_calloc(f->n, sizeof *f->v, c);
+    f->w = cholmod_l_calloc(f->n, sizeof *f->w, c);
+    f->pv = cholmod_l_calloc(f->n, sizeof *f->pv, c);
+    f->held_set = cholmod_l_calloc(m, 1, c);
+    return ok && f->v && f->w && f->pv && f->held_set;
+}
+
+/* A's values for the rows' T (f->t), and its factor. */
+static int refactor(struct fr_contact_sparse *f, cholmod_common *c)
+{
+    double *Ax = f->A->x;
+    memcpy(Ax, f->base, nnz_of(f->A, f->n) * sizeof *Ax);
+    for (size_t i = 0; i < f->m; i++)
+        if (f->t[i] != 0.0)
+            for (SuiteSparse_long q = f->pptr[i]; q < f->pptr[i + 1]; q++)
+                Ax[f->pos[q]] += f->t[i] * f->val[q];
+    if (!cholmod_l_factorize(f->A, f->L, c) || c->status < CHOLMOD_OK)
+        return FRICREG_ENOMEM;
+    return c->status == CHOLMOD_NOT_POSDEF ? FRICREG_ESINGULAR : FRICREG_OK;
+}
+
+/* w = (K_eff + J^T T J)^-1 v, both [n] in the structure's order. */
+static int sparse_solve(struct fr_contact_sparse *f, const double v[], double w[],
+                        cholmod_common *c)
+{
+    double *pv = f->pv;
+    for (size_t k = 0; k < f->n; k++)
+        pv[k] = v[f->perm[k]];
+    cholmod_dense B = {.nrow = f->n,
+                       .ncol = 1,
+                       .nzmax = f->n,
+                       .d = f->n,
+                       .x = pv,
+                       .xtype = CHOLMOD_REAL,
+                       .dtype = CHOLMOD_DOUBLE};
+    if (!f->L->is_super)
+        fr_cholmod_keep_workspace(f->Yw);
+    if (!cholmod_l_solve2(CHOLMOD_A, f->L, &B, NULL, &f->X, NULL, &f->Yw, &f->Ew, c))
+        return FRICREG_ENOMEM;
+    const double *sol = f->X->x;
+    for (size_t k = 0; k < f->n; k++)
+        w[f->perm[k]] = sol[k];
+    return FRICREG_OK;
+}
+
+int fr_contact_sparse_prepare(struct fr_contact_sparse *f, const cholmod_sparse *Keff,
+                              const cholmod_sparse *Jt, cholmod_common *c)
+{
+    memset(f, 0, sizeof *f);
+    f->n = Keff->ncol;
+    f->m = Jt->ncol;
+    f->Jt = Jt;
+    cholmod_sparse *U = union_pattern(Keff, Jt, c);
+    size_t unz = nnz_of(U, f->n);
+    SuiteSparse_long *at = U ? cholmod_l_malloc(unz > 0 ? unz : 1, sizeof *at, c) : NULL;
+    int ok = at != NULL && order(f, U, c) && permute(f, U, at, c) &&
+             base_values(f, Keff, U, at, c) && products(f, U, at, c) && vectors(f, c);
+    cholmod_l_free(unz > 0 ? unz : 1, sizeof *at, at, c);
+    cholmod_l_free_sparse(&U, c);
+    if (ok) { /* analysed in the natural order: A is permuted already, and stays in place */
+        fr_cholmod_ordering(c, CHOLMOD_NATURAL, 0);
+        f->L = cholmod_l_analyze(f->A, c);
+        ok = f->L != NULL;
+        f->flops = c->fl;
+    }
+    /* T = 0 once: K_eff's factor, so that CHOLMOD sizes its storage and workspaces now */
+    ok = ok && refactor(f, c) == FRICREG_OK && sparse_solve(f, f->v, f->w, c) == FRICREG_OK;
+    if (!ok)
+        fr_contact_sparse_free(f, c);
+    return ok ? FRICREG_OK : FRICREG_ENOMEM;
+}
+
+/* The block and shifts of the factor held (masked_factor.c's holds and hold). */
+static int holds(const struct fr_contact_sparse *f, const unsigned char *set, const double *shift)
+{
+    if (!f->held)
+        return 0;
+    for (size_t i = 0; i < f->m; i++) {
+        unsigned char in = set != NULL && set[i];
+        if (in != f->held_set[i] || (in && (shift ? shift[i] : 0.0) != f->held_shift[i]))
+            return 0;
+    }
+    return 1;
+}
+
+static void hold(struct fr_contact_sparse *f, const unsigned char *set, const double *shift)
+{
+    for (size_t i = 0; i < f->m; i++) {
+        f->held_set[i] = set != NULL && set[i];
+        f->held_shift[i] = f->held_set[i] && shift ? shift[i] : 0.0;
+    }
+    f->held = 1;
+}
+
+/* W_eff,ii: the last entry of column i of the sorted upper triangle, if it is the diagonal. */
+static double diagonal(const cholmod_sparse *Weff, size_t i)
+{
+    const SuiteSparse_long *Wp = Weff->p, *Wi = Weff->i;
+    SuiteSparse_long p = Wp[i + 1] - 1;
+    return p >= Wp[i] && Wi[p] == (SuiteSparse_long)i ? ((const double *)Weff->x)[p] : 0.0;
+}
+
+/* T = 1 / s~ on the rows of set (contact_sparse.h), 0 off them; FRICREG_ESINGULAR where a row
+ * without a shift has no positive W_eff,ii. */
+static int rows_t(struct fr_contact_sparse *f, const cholmod_sparse *Weff, const unsigned char *set,
+                  const double *shift)
+{
+    for (size_t i = 0; i < f->m; i++) {
+        double s = shift ? shift[i] : 0.0;
+        f->t[i] = 0.0;
+        if (set == NULL || !set[i])
+            continue;
+        if (!(s > 0.0)) {
+            double d = diagonal(Weff, i);
+            if (!(d > 0.0))
+                return FRICREG_ESINGULAR;
+            s = RHO * d;
+        }
+        f->t[i] = 1.0 / s;
+    }
+    return FRICREG_OK;
+}
+
+/* dy = T (r - J (K_eff + J^T T J)^-1 J^T T r) on the rows of T (0 off them). */
+static int woodbury(struct fr_contact_sparse *f, const double r[], double dy[], cholmod_common *c)
+{
+    for (size_t i = 0; i < f->m; i++)
+        f->u[i] = f->t[i] * r[i];
+    memset(f->v, 0, f->n * sizeof *f->v);
+    fr_csc_mult_add(f->Jt, 1.0, f->u, f->v);
+    int status = sparse_solve(f, f->v, f->w, c);
+    if (status != FRICREG_OK)
+        return status;
+    fr_csc_mult_t(f->Jt, f->w, f->e);
+    for (size_t i = 0; i < f->m; i++)
+        dy[i] = f->t[i] * (r[i] - f->e[i]);
+    return FRICREG_OK;
+}
+
+int fr_contact_sparse_solve(struct fr_contact_sparse *f, const cholmod_sparse *Weff,
+                            const unsigned char *set, const double *shift, const double b[],
+                            double x[], cholmod_common *c)
+{
+    int status;
+    if (!holds(f, set, shift)) {
+        f->held = 0;
+        if ((status = rows_t(f, Weff, set, shift)) != FRICREG_OK ||
+            (status = refactor(f, c)) != FRICREG_OK)
+            return status;
+        hold(f, set, shift);
+    }
+    size_t m = f->m;
+    double *y = f->y, *res = f->res;
+    memset(y, 0, m * sizeof *y);
+    double change = INFINITY, size = 0.0;
+    for (int k = 0; k < REFINE_MAX; k++) {
+        /* the residual b - (W_eff + diag(shift)) y on the rows (0 off them) */
+        fr_sym_mult(Weff, -1.0, y, 0.0, res);
+        for (size_t i = 0; i < m; i++)
+            res[i] = set && set[i] ? b[i] + res[i] - (shift ? shift[i] : 0.0) * y[i] : 0.0;
+        if ((status = woodbury(f, res, f->dy, c)) != FRICREG_OK)
+            return status;
+        double last = change;
+        change = size = 0.0;
+        for (size_t i = 0; i < m; i++) {
+            y[i] += f->dy[i];
+            change = fmax(change, fabs(f->dy[i]));
+            size = fmax(size, fabs(y[i]));
+        }
+        if (!isfinite(change))
+            return FRICREG_ESINGULAR;
+        if (change <= REFINE_STOP * size || change >= 0.5 * last)
+            break;
+    }
+    if (change > REFINE_FAIL * size)
+        return FRICREG_ESINGULAR;
+    for (size_t i = 0; i < m; i++)
+        if (set && set[i])
+            x[i] = y[i];
+    return FRICREG_OK;
+}
