@@ -25,6 +25,7 @@ struct structure_options {
     int output;         /* enum cli_output, as an int: the option table writes ints */
     int error_estimate; /* --error-estimate on|off|one: enum fricreg_error_estimate (summary only) */
     double answer_rtol; /* --answer-rtol X (fricreg_structure_set_answer_rtol) */
+    int contact_solver; /* --contact-solver: enum fricreg_contact_solver */
     int output_every;   /* --output-every K: the trajectory's every K-th step (1: every step) */
     int output_every_given;
 };

@@ -12,11 +12,14 @@
 /* The regularization of a row without a shift, relative to its W_eff,ii: sqrt(u), between
  * the refinement's rate (RHO) and the cancellation's rounding (u / RHO). */
 #define RHO 0x1p-26
-/* The refinement stops when a correction is below REFINE_STOP times the answer, or no longer
- * halves the last (the rounding of W_eff y: about 1e-14 of the answer), or after REFINE_MAX
- * corrections; one then above REFINE_FAIL times the answer means a singular block (W_eff,NN's
- * smallest eigenvalue below about RHO W_eff,ii). */
-#define REFINE_STOP 0x1p-47
+/* The refinement stops when the residual of the block's equations is below REFINE_STOP times
+ * the right-hand side (rounding: dpotrf's backward error is about m u), or when it no longer
+ * halves (at the rounding of W_eff y), or after REFINE_MAX corrections; a residual then above
+ * REFINE_FAIL times the right-hand side means a singular block (W_eff,NN's smallest eigenvalue
+ * below about RHO W_eff,ii). A correction costs a solve with the factor of K_eff + J^T T J and
+ * a product with W_eff: two in all, typically (the first leaves the regularization's error,
+ * about RHO). */
+#define REFINE_STOP 0x1p-43
 #define REFINE_MAX 30
 #define REFINE_FAIL 1e-8
 
@@ -315,6 +318,20 @@ static int woodbury(struct fr_contact_sparse *f, const double r[], double dy[], 
     return FRICREG_OK;
 }
 
+/* res = b - (W_eff + diag(shift)) y on the rows of set (0 off them), y = f->y; its largest
+ * entry (infinite if not a number: the refinement then stops, singular). */
+static double residual(struct fr_contact_sparse *f, const cholmod_sparse *Weff,
+                       const unsigned char *set, const double *shift, const double b[])
+{
+    double *res = f->res, big = 0.0;
+    fr_sym_mult(Weff, -1.0, f->y, 0.0, res);
+    for (size_t i = 0; i < f->m; i++) {
+        res[i] = set && set[i] ? b[i] + res[i] - (shift ? shift[i] : 0.0) * f->y[i] : 0.0;
+        big = isnan(res[i]) ? INFINITY : fmax(big, fabs(res[i]));
+    }
+    return big;
+}
+
 int fr_contact_sparse_solve(struct fr_contact_sparse *f, const cholmod_sparse *Weff,
                             const unsigned char *set, const double *shift, const double b[],
                             double x[], cholmod_common *c)
@@ -328,30 +345,28 @@ int fr_contact_sparse_solve(struct fr_contact_sparse *f, const cholmod_sparse *W
         hold(f, set, shift);
     }
     size_t m = f->m;
-    double *y = f->y, *res = f->res;
+    double *y = f->y, *res = f->res, bnorm = 0.0, last = INFINITY;
     memset(y, 0, m * sizeof *y);
-    double change = INFINITY, size = 0.0;
-    for (int k = 0; k < REFINE_MAX; k++) {
-        /* the residual b - (W_eff + diag(shift)) y on the rows (0 off them) */
-        fr_sym_mult(Weff, -1.0, y, 0.0, res);
-        for (size_t i = 0; i < m; i++)
-            res[i] = set && set[i] ? b[i] + res[i] - (shift ? shift[i] : 0.0) * y[i] : 0.0;
+    for (size_t i = 0; i < m; i++)
+        bnorm = set && set[i] ? fmax(bnorm, fabs(b[i])) : bnorm;
+    for (int k = 0;; k++) {
+        double rnorm = k > 0 ? residual(f, Weff, set, shift, b) : bnorm;
+        if (k == 0)
+            for (size_t i = 0; i < m; i++)
+                res[i] = set && set[i] ? b[i] : 0.0; /* at y = 0 */
+        if (k > 0 && rnorm <= REFINE_STOP * bnorm)
+            break;
+        if (k == REFINE_MAX || rnorm >= 0.5 * last) { /* stalled: at rounding, or singular */
+            if (rnorm > REFINE_FAIL * bnorm)
+                return FRICREG_ESINGULAR;
+            break;
+        }
+        last = rnorm;
         if ((status = woodbury(f, res, f->dy, c)) != FRICREG_OK)
             return status;
-        double last = change;
-        change = size = 0.0;
-        for (size_t i = 0; i < m; i++) {
+        for (size_t i = 0; i < m; i++)
             y[i] += f->dy[i];
-            change = fmax(change, fabs(f->dy[i]));
-            size = fmax(size, fabs(y[i]));
-        }
-        if (!isfinite(change))
-            return FRICREG_ESINGULAR;
-        if (change <= REFINE_STOP * size || change >= 0.5 * last)
-            break;
     }
-    if (change > REFINE_FAIL * size)
-        return FRICREG_ESINGULAR;
     for (size_t i = 0; i < m; i++)
         if (set && set[i])
             x[i] = y[i];
