@@ -44,8 +44,8 @@ expect_in() {
 }
 
 # expect_same TOL ARGS-A -- ARGS-B: two runs print the same JSON summary, every number within
-# TOL relative (of 1e-300 at least), all but cpu_seconds, the element kind and sliders and the
-# 2-D elements' forces (which a 1-D run does not print).
+# TOL relative (of 1e-300 at least), all but cpu_seconds, the element kind and sliders, the
+# 2-D elements' forces (which a 1-D run does not print) and the contact solver's name.
 expect_same() {
     total=$((total + 1))
     tol=$1; shift
@@ -55,6 +55,7 @@ expect_same() {
     for run in a b; do
         if [ $run = a ]; then "$sim" $first >"$tmp/$run" 2>"$tmp/err"; else "$sim" "$@" >"$tmp/$run" 2>"$tmp/err"; fi
         sed -e 's/"cpu_seconds": [0-9.e+-]*//; s/, "element_kind": "[^"]*"//; s/, "sliders_per_element": [0-9]*//' \
+            -e 's/"contact_solver": "[a-z]*", //' \
             -e 's/, "jenkins_forces": \[[][0-9.e+, -]*\]//' \
             "$tmp/$run" | tr -s ',:[]{} ' '\n' >"$tmp/$run.tokens"
     done
@@ -270,6 +271,12 @@ expect_output '"peak_displacement_error_estimate": \[[0-9.]+e-1[3-9]\], "peak_di
 expect_output '"code": "error_estimate", "message": "the error estimate [0-9.e-]+ of the largest peak displacement [0-9.]+ \(kind bound\) exceeds the answer tolerance 1e-15 of it: halve eps and dt, or raise --answer-rtol' $block --integrator newmark --dt 0.01 --answer-rtol 1e-15
 expect_usage_error "--answer-rtol" $block --integrator newmark --dt 0.01 --answer-rtol 0
 expect_usage_error "--answer-rtol" $block --integrator newmark --dt 0.01 --answer-rtol inf
+# --contact-solver (fricreg_structure_set_contact_solver): the summary names the path in force
+# (auto: dense for now), and the sparse path's run is the dense one's
+expect_output '"integrator": "newmark", "contact_solver": "dense", ' $block --integrator newmark --dt 0.01
+expect_output '"integrator": "hht", "alpha": [0-9.e-]+, "contact_solver": "sparse", ' $block --integrator hht --dt 0.01 --contact-solver sparse
+expect_same 1e-10 $block --integrator newmark --dt 0.01 --contact-solver dense -- $block --integrator newmark --dt 0.01 --contact-solver sparse
+expect_usage_error "--contact-solver" $block --integrator newmark --dt 0.01 --contact-solver cholesky
 total=$((total + 1))
 if "$sim" $block --integrator newmark --dt 0.01 --error-estimate off 2>&1 | grep -q error_estimate; then
     echo "FAIL: structure --error-estimate off still estimates"; fails=$((fails + 1))
