@@ -349,14 +349,18 @@ enum fricreg_contact_solver {
  *    (J_N K_eff^-1 J_N^T + S)^-1 r = T (r - J_N (K_eff + J_N^T T J_N)^-1 J_N^T T r),
  *  S = diag(s~_N), T = S^-1, with one sparse Cholesky factor (CHOLMOD) of the n x n matrix
  *  K_eff + J^T T J: its pattern, K_eff + J^T J's, is ordered and analysed once per K_eff (once
- *  per run at a fixed dt) and refactored numerically only when N or the shifts change. s~_i is
- *  shift_i where positive; where a row has none (a constraint on J_i's motion) s~_i =
- *  2^-26 W_eff,ii, and the answer is refined against the exact block (iterative refinement,
- *  products with W_eff), so that both paths give the same steps to rounding (within 1e-10 of
- *  each other: tests/test_contact_solver.c). Neither path allocates in a step after the first
- *  (CHOLMOD's supernodal refactorization aside, which takes its update workspace each time).
- *  FRICREG_CONTACT_SOLVER_AUTO, the default, takes the dense path for now: the rule from
- *  CHOLMOD's flop count against |N|^3 / 3 awaits the benchmark on both BLAS.
+ *  per run at a fixed dt) and refactored numerically only when N changes, or when the shifts
+ *  moved so far that the held factor, used as a chord, does not converge within 6
+ *  refinements. s~_i is shift_i where positive; where a row has none (a constraint on J_i's
+ *  motion) s~_i = 2^-26 W_eff,ii. Every answer is refined against the exact block (iterative
+ *  refinement, products with W_eff, until the block's residual is below 2^-43 of its
+ *  right-hand side), so that both paths give the same steps to rounding (within 1e-10 of each
+ *  other: tests/test_contact_solver.c); a block that is not positive definite is
+ *  FRICREG_ESINGULAR on both (then no stick guess, as before). The sparse path's storage is
+ *  allocated with K_eff's factor, but CHOLMOD's supernodal refactorization takes workspace of
+ *  its own each time (two blocks: docs/benchmark.md). FRICREG_CONTACT_SOLVER_AUTO, the default,
+ *  takes the dense path for now: the rule from CHOLMOD's flop count against |N|^3 / 3 awaits
+ *  the benchmark on both BLAS (docs/benchmark.md).
  *  The setting is kept by the error estimate's companion. Since 1.8 (FRICREG_1.8).
  *
  *  solver   enum fricreg_contact_solver.

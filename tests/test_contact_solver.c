@@ -4,10 +4,14 @@
  * identity and refinement: src/structure/contact_sparse.h) against the dense path (the block
  * of W_eff itself, test_masked_factor's reference):
  *   - a small membrane's coupled edge contacts (bench/membrane_contacts.c in small) stepped
- *     both ways give the same forces and displacements to 1e-10 relative: all stuck (a weak
+ *     both ways, Newton to 1e-13, give the same forces and displacements to 1e-10 relative: all stuck (a weak
  *     shake), mostly slipping (a strong one), mixed on a stiff interface (K = 3e6 N/m: W_eff
  *     dense), mixed on a soft one (K = 1e4 N/m), and with the tanh law (rows with a shift,
  *     no constraint rows);
+ *   - the block solves themselves, white box, against the masked factor's LAPACK storage:
+ *     blocks with and without shifts, then the same rows with shifts moved (the held factor as
+ *     a chord, refined, or refactored), to 1e-10 of the largest |x|; a singular block (twin
+ *     contacts, built by hand: the law refuses them) FRICREG_ESINGULAR both ways, x untouched;
  *   - the setter's statuses: NULL, values outside the enum (the setting unchanged), the getter's
  *     NULLs, and AUTO read as the dense path. */
 #include <check.h>
@@ -18,6 +22,10 @@
 
 #include "fricreg.h"
 #include "fricreg_structure.h"
+#include "base/sparse_factor.h"
+#include "structure/contact_factor.h"
+#include "structure/contact_sparse.h"
+#include "structure/masked_factor.h"
 #include "structure/structure_internal.h"
 
 #define SIDE 8
@@ -168,6 +176,130 @@ START_TEST(mixed_tanh)
 }
 END_TEST
 
+/* ---- The block solves themselves ---------------------------------------------------------- */
+
+static double uniform(unsigned long *state)
+{
+    *state = *state * 6364136223846793005UL + 1442695040888963407UL;
+    return (double)(*state >> 11) / 9007199254740992.0;
+}
+
+/* x by both solvers of one block (rows set, shifts shift) of the structure's W_eff after a
+ * step; their statuses, and the largest difference over the largest |x| into *diff. */
+static void both_solves(fricreg_structure *s, const unsigned char set[], const double *shift,
+                        const double b[], int status[2], double *diff)
+{
+    double x[2][NCON];
+    for (int k = 0; k < 2; k++)
+        for (int i = 0; i < NCON; i++)
+            x[k][i] = -7.0; /* left alone off the block, and on failure */
+    status[0] = fr_masked_factor_solve(&s->newton.block, s->step.D, set, shift, b, x[0], &s->cc);
+    status[1] = fr_contact_sparse_solve(&s->sparse, s->step.D, set, shift, b, x[1], &s->cc);
+    double big = 0.0, worst = 0.0;
+    for (int i = 0; i < NCON; i++) {
+        big = fmax(big, fabs(x[0][i]));
+        worst = fmax(worst, fabs(x[1][i] - x[0][i]));
+        if (!set[i] || status[1] != FRICREG_OK)
+            ck_assert_double_eq(x[1][i], -7.0);
+    }
+    *diff = worst / big;
+}
+
+/* Blocks of a stiff membrane's W_eff (dense: the masked factor's LAPACK storage), with and
+ * without shifts, then the same rows with shifts moved a little (the held factor as a chord)
+ * and much (refactored): the sparse path's x is the dense one's to 1e-10 of the largest. */
+START_TEST(block_solves_equal_dense_ones)
+{
+    struct membrane_case mc = {"blocks", 3e6, 0.35, FRICREG_LAW_QUINN};
+    fricreg_structure *s = membrane(&mc);
+    ck_assert_int_eq(fricreg_structure_set_contact_solver(s, FRICREG_CONTACT_SOLVER_SPARSE),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_step(s, DT), FRICREG_OK);
+    unsigned long state = 55;
+    unsigned char set[NCON];
+    double b[NCON], shift[NCON], d00 = ((double *)s->step.D->x)[0]; /* W_eff,00 */
+    const double scales[] = {1.0, 1.0, 1.5, 100.0, 1e-3};
+    for (int trial = 0; trial < 5; trial++) {
+        for (int i = 0; i < NCON; i++) {
+            if (trial == 0 || trial == 1)
+                set[i] = trial == 0 || uniform(&state) < 0.7;
+            b[i] = 2.0 * uniform(&state) - 1.0;
+            if (trial <= 1)
+                shift[i] = uniform(&state) < 0.5 ? 0.0 : d00 * uniform(&state);
+            else
+                shift[i] *= scales[trial];
+        }
+        int status[2];
+        double diff;
+        both_solves(s, set, trial == 0 ? NULL : shift, b, status, &diff);
+        printf("block %d: sparse against dense %.2e of the largest |x|\n", trial, diff);
+        ck_assert_int_eq(status[0], FRICREG_OK);
+        ck_assert_int_eq(status[1], FRICREG_OK);
+        ck_assert_double_le(diff, 1e-10);
+    }
+    fricreg_structure_free(s);
+}
+END_TEST
+
+/* Twin contacts (equal rows of J), which the structure's law refuses before any block is
+ * solved, built here by hand: K_eff a path of 8 unknowns (diagonal 3, off-diagonal -1), four
+ * contacts e_0 - e_2, e_3, e_5, and e_0 - e_2 again. A block holding both twins without shifts
+ * is singular: the sparse path says so as the dense one does (FRICREG_ESINGULAR, x untouched);
+ * with a shift on one twin it is regular again, and solved alike. */
+#define TN 8
+#define TM 4
+START_TEST(singular_block_is_esingular)
+{
+    cholmod_common c;
+    ck_assert_int_eq(fr_cholmod_start(&c), FRICREG_OK);
+    cholmod_sparse *K = cholmod_l_allocate_sparse(TN, TN, 2 * TN, 1, 1, 1, CHOLMOD_REAL, &c);
+    SuiteSparse_long *Kp = K->p, *Ki = K->i, q = 0;
+    double *Kx = K->x;
+    for (SuiteSparse_long j = 0; j < TN; j++) {
+        Kp[j] = q;
+        if (j > 0)
+            Ki[q] = j - 1, Kx[q++] = -1.0;
+        Ki[q] = j, Kx[q++] = 3.0;
+    }
+    Kp[TN] = q;
+    cholmod_sparse *Jt = cholmod_l_allocate_sparse(TN, TM, 2 * TM, 1, 1, 0, CHOLMOD_REAL, &c);
+    const SuiteSparse_long jp[TM + 1] = {0, 2, 3, 4, 6}, ji[6] = {0, 2, 3, 5, 0, 2};
+    const double jx[6] = {1.0, -1.0, 1.0, 1.0, 1.0, -1.0};
+    memcpy(Jt->p, jp, sizeof jp);
+    memcpy(Jt->i, ji, sizeof ji);
+    memcpy(Jt->x, jx, sizeof jx);
+    struct fr_cfactor cf = {0};
+    struct fr_error err = {0};
+    ck_assert_int_eq(fr_cfactor_build(&cf, K, Jt, 0.0, &c, &err, "test", "K"), FRICREG_OK);
+    struct fr_masked_factor mf = {0};
+    struct fr_contact_sparse sp = {0};
+    ck_assert_int_eq(fr_masked_factor_prepare(&mf, cf.D, FR_BLOCK_DENSE, &c), FRICREG_OK);
+    ck_assert_int_eq(fr_contact_sparse_prepare(&sp, K, Jt, &c), FRICREG_OK);
+    unsigned char set[TM] = {1, 1, 1, 1};
+    double b[TM] = {1.0, 0.5, -0.25, 2.0}, shift[TM] = {0.0, 0.0, 0.0, 0.0}, x[2][TM];
+    for (int pass = 0; pass < 2; pass++) {
+        for (int i = 0; i < TM; i++)
+            x[0][i] = x[1][i] = -7.0;
+        int sd = fr_masked_factor_solve(&mf, cf.D, set, shift, b, x[0], &c);
+        int ss = fr_contact_sparse_solve(&sp, cf.D, set, shift, b, x[1], &c);
+        ck_assert_int_eq(sd, pass == 0 ? FRICREG_ESINGULAR : FRICREG_OK);
+        ck_assert_int_eq(ss, sd);
+        double big = 0.0;
+        for (int i = 0; i < TM; i++)
+            big = fmax(big, fabs(x[0][i]));
+        for (int i = 0; i < TM; i++)
+            ck_assert_double_eq_tol(x[1][i], x[0][i], 1e-10 * big); /* -7 both on failure */
+        shift[TM - 1] = ((double *)cf.D->x)[0];                     /* W_eff,00: the twin regular */
+    }
+    fr_contact_sparse_free(&sp, &c);
+    fr_masked_factor_free(&mf, &c);
+    fr_cfactor_free(&cf, &c);
+    cholmod_l_free_sparse(&K, &c);
+    cholmod_l_free_sparse(&Jt, &c);
+    fr_cholmod_finish(&c);
+}
+END_TEST
+
 START_TEST(setter_statuses)
 {
     struct membrane_case mc = {"statuses", 3e6, 0.35, FRICREG_LAW_QUINN};
@@ -206,6 +338,8 @@ int main(void)
     tcase_add_test(tc, mixed_stiff);
     tcase_add_test(tc, mixed_soft);
     tcase_add_test(tc, mixed_tanh);
+    tcase_add_test(tc, block_solves_equal_dense_ones);
+    tcase_add_test(tc, singular_block_is_esingular);
     tcase_add_test(tc, setter_statuses);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);

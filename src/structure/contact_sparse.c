@@ -21,6 +21,10 @@
  * about RHO). */
 #define REFINE_STOP 0x1p-43
 #define REFINE_MAX 30
+/* A chord (the factor of other shifts on the same rows) is refined at most this many times
+ * before the block is refactored: each correction costs a tenth of a refactorization, or less
+ * (supernodal, a stiff membrane of 10^5 unknowns). */
+#define CHORD_MAX 6
 #define REFINE_FAIL 1e-8
 
 static size_t nnz_of(const cholmod_sparse *A, size_t ncol)
@@ -332,43 +336,86 @@ static double residual(struct fr_contact_sparse *f, const cholmod_sparse *Weff,
     return big;
 }
 
+/* The held factor's rows are set's (its shifts may differ: a chord). */
+static int holds_rows(const struct fr_contact_sparse *f, const unsigned char *set)
+{
+    if (!f->held)
+        return 0;
+    for (size_t i = 0; i < f->m; i++)
+        if ((set != NULL && set[i]) != f->held_set[i])
+            return 0;
+    return 1;
+}
+
+/* Refines f->y (its residual in f->res, of largest entry *rnorm) with the factor held, at most
+ * max corrections: *done when the residual is below REFINE_STOP |b| (the answer), or when it
+ * stalls (no longer halves) at most REFINE_FAIL |b| and stall_ok (rounding, on a fresh
+ * factor). FRICREG_OK or the solve's failure. */
+static int refine(struct fr_contact_sparse *f, const cholmod_sparse *Weff, const unsigned char *set,
+                  const double *shift, const double b[], double bnorm, int max, int stall_ok,
+                  double *rnorm, int *done, cholmod_common *c)
+{
+    double last = INFINITY;
+    *done = 0;
+    for (int k = 0;; k++) {
+        if (*rnorm <= REFINE_STOP * bnorm) {
+            *done = 1;
+            return FRICREG_OK;
+        }
+        if (k == max || *rnorm >= 0.5 * last) { /* stalled */
+            *done = stall_ok && *rnorm <= REFINE_FAIL * bnorm;
+            return FRICREG_OK;
+        }
+        last = *rnorm;
+        int status = woodbury(f, f->res, f->dy, c);
+        if (status != FRICREG_OK)
+            return status;
+        for (size_t i = 0; i < f->m; i++)
+            f->y[i] += f->dy[i];
+        *rnorm = residual(f, Weff, set, shift, b);
+    }
+}
+
+/* A new factor for the rows and shifts given. */
+static int factor_for(struct fr_contact_sparse *f, const cholmod_sparse *Weff,
+                      const unsigned char *set, const double *shift, cholmod_common *c)
+{
+    f->held = 0;
+    int status = rows_t(f, Weff, set, shift);
+    if (status == FRICREG_OK && (status = refactor(f, c)) == FRICREG_OK)
+        hold(f, set, shift);
+    return status;
+}
+
 int fr_contact_sparse_solve(struct fr_contact_sparse *f, const cholmod_sparse *Weff,
                             const unsigned char *set, const double *shift, const double b[],
                             double x[], cholmod_common *c)
 {
-    int status;
-    if (!holds(f, set, shift)) {
-        f->held = 0;
-        if ((status = rows_t(f, Weff, set, shift)) != FRICREG_OK ||
-            (status = refactor(f, c)) != FRICREG_OK)
-            return status;
-        hold(f, set, shift);
-    }
+    /* the same rows with other shifts: the held factor first (a chord), refined against the
+     * block; refactored if that does not converge within CHORD_MAX corrections */
+    int fresh = !holds_rows(f, set), status, done = 0;
+    if (fresh && (status = factor_for(f, Weff, set, shift, c)) != FRICREG_OK)
+        return status;
+    fresh = fresh || holds(f, set, shift);
     size_t m = f->m;
-    double *y = f->y, *res = f->res, bnorm = 0.0, last = INFINITY;
-    memset(y, 0, m * sizeof *y);
-    for (size_t i = 0; i < m; i++)
-        bnorm = set && set[i] ? fmax(bnorm, fabs(b[i])) : bnorm;
-    for (int k = 0;; k++) {
-        double rnorm = k > 0 ? residual(f, Weff, set, shift, b) : bnorm;
-        if (k == 0)
-            for (size_t i = 0; i < m; i++)
-                res[i] = set && set[i] ? b[i] : 0.0; /* at y = 0 */
-        if (k > 0 && rnorm <= REFINE_STOP * bnorm)
-            break;
-        if (k == REFINE_MAX || rnorm >= 0.5 * last) { /* stalled: at rounding, or singular */
-            if (rnorm > REFINE_FAIL * bnorm)
-                return FRICREG_ESINGULAR;
-            break;
-        }
-        last = rnorm;
-        if ((status = woodbury(f, res, f->dy, c)) != FRICREG_OK)
-            return status;
-        for (size_t i = 0; i < m; i++)
-            y[i] += f->dy[i];
+    double bnorm = 0.0;
+    memset(f->y, 0, m * sizeof *f->y);
+    for (size_t i = 0; i < m; i++) {
+        f->res[i] = set && set[i] ? b[i] : 0.0; /* at y = 0 */
+        bnorm = fmax(bnorm, fabs(f->res[i]));
     }
+    double rnorm = bnorm;
+    status = refine(f, Weff, set, shift, b, bnorm, fresh ? REFINE_MAX : CHORD_MAX, fresh, &rnorm,
+                    &done, c);
+    if (status == FRICREG_OK && !done && !fresh &&
+        (status = factor_for(f, Weff, set, shift, c)) == FRICREG_OK)
+        status = refine(f, Weff, set, shift, b, bnorm, REFINE_MAX, 1, &rnorm, &done, c);
+    if (status != FRICREG_OK)
+        return status;
+    if (!done)
+        return FRICREG_ESINGULAR;
     for (size_t i = 0; i < m; i++)
         if (set && set[i])
-            x[i] = y[i];
+            x[i] = f->y[i];
     return FRICREG_OK;
 }

@@ -9,7 +9,8 @@
  *   (J_N K_eff^-1 J_N^T + diag(s~))^-1 r = T (r - J_N (K_eff + J_N^T T J_N)^-1 J_N^T T r),
  * one sparse factor of the n x n matrix K_eff + J^T T J (T = 0 off N), whose pattern is that
  * of K_eff + J^T J for every N and T: it is ordered and analysed once per K_eff, and refactored
- * numerically only when N or the shifts change (as the masked factor's block). s~_i is the
+ * numerically only when N changes, or the shifts change so much that the held factor, used as
+ * a chord, no longer converges within a few refinements (below). s~_i is the
  * shift where it is positive, 1/(c |s_i|) of the law's slope; on the rows that have none (the
  * consistent law's free contacts, the stick guess: a constraint on J_i x) it is a regularizing
  * RHO W_eff,ii, and the solve is refined against the exact block, iterative refinement with
