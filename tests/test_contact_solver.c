@@ -12,6 +12,8 @@
  *     blocks with and without shifts, then the same rows with shifts moved (the held factor as
  *     a chord, refined, or refactored), to 1e-10 of the largest |x|; a singular block (twin
  *     contacts, built by hand: the law refuses them) FRICREG_ESINGULAR both ways, x untouched;
+ *   - on a simplicial factor the sparse path's steps after the first allocate nothing through
+ *     CHOLMOD (its allocators counted);
  *   - the setter's statuses: NULL, values outside the enum (the setting unchanged), the getter's
  *     NULLs, and AUTO read as the dense path. */
 #include <check.h>
@@ -300,6 +302,63 @@ START_TEST(singular_block_is_esingular)
 }
 END_TEST
 
+/* ---- No allocation in a step -------------------------------------------------------------- */
+#ifdef FRICREG_TEST_COUNT_CHOLMOD
+#include <SuiteSparse_config.h>
+
+static long cholmod_allocations;
+static void *(*real_malloc)(size_t);
+static void *(*real_calloc)(size_t, size_t);
+static void *(*real_realloc)(void *, size_t);
+static void *counted_malloc(size_t n)
+{
+    cholmod_allocations++;
+    return real_malloc(n);
+}
+static void *counted_calloc(size_t n, size_t size)
+{
+    cholmod_allocations++;
+    return real_calloc(n, size);
+}
+static void *counted_realloc(void *p, size_t n)
+{
+    cholmod_allocations++;
+    return real_realloc(p, n);
+}
+
+/* On a simplicial factor (the small membrane) the sparse path's steps after the first take no
+ * memory through CHOLMOD (SuiteSparse_config's allocators counted): A stays in the one
+ * triangle CHOLMOD factors in place, the workspaces are kept. */
+START_TEST(steps_allocate_nothing)
+{
+    struct membrane_case mc = {"allocations", 3e6, 0.35, FRICREG_LAW_QUINN};
+    fricreg_structure *s = membrane(&mc);
+    ck_assert_int_eq(fricreg_structure_set_contact_solver(s, FRICREG_CONTACT_SOLVER_SPARSE),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_step(s, DT), FRICREG_OK);
+    ck_assert(!s->sparse.L->is_super);
+    real_malloc = SuiteSparse_config.malloc_func;
+    real_calloc = SuiteSparse_config.calloc_func;
+    real_realloc = SuiteSparse_config.realloc_func;
+    SuiteSparse_config.malloc_func = counted_malloc;
+    SuiteSparse_config.calloc_func = counted_calloc;
+    SuiteSparse_config.realloc_func = counted_realloc;
+    cholmod_allocations = 0;
+    int64_t before = 0, after = 0;
+    fricreg_structure_get_stat(s, FRICREG_SSTAT_NEWTON_ITERATIONS, &before);
+    for (int step = 1; step < STEPS; step++)
+        ck_assert_int_eq(fricreg_structure_step(s, DT), FRICREG_OK);
+    SuiteSparse_config.malloc_func = real_malloc;
+    SuiteSparse_config.calloc_func = real_calloc;
+    SuiteSparse_config.realloc_func = real_realloc;
+    fricreg_structure_get_stat(s, FRICREG_SSTAT_NEWTON_ITERATIONS, &after);
+    ck_assert_int_gt(after - before, STEPS / 2); /* the blocks were solved */
+    ck_assert_int_eq(cholmod_allocations, 0);
+    fricreg_structure_free(s);
+}
+END_TEST
+#endif
+
 START_TEST(setter_statuses)
 {
     struct membrane_case mc = {"statuses", 3e6, 0.35, FRICREG_LAW_QUINN};
@@ -340,6 +399,9 @@ int main(void)
     tcase_add_test(tc, mixed_tanh);
     tcase_add_test(tc, block_solves_equal_dense_ones);
     tcase_add_test(tc, singular_block_is_esingular);
+#ifdef FRICREG_TEST_COUNT_CHOLMOD
+    tcase_add_test(tc, steps_allocate_nothing);
+#endif
     tcase_add_test(tc, setter_statuses);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);

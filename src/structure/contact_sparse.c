@@ -83,10 +83,11 @@ static int order(struct fr_contact_sparse *f, cholmod_sparse *U, cholmod_common 
     return ok;
 }
 
-/* f->A = the lower triangle of P U P^T, and at[e] its entry of U's entry e: the permutation is
- * done on a copy of U whose values are its entries' own positions (masked_factor.c). */
-static int permute(struct fr_contact_sparse *f, const cholmod_sparse *U, SuiteSparse_long at[],
-                   cholmod_common *c)
+/* f->A = one triangle of P U P^T (stype: 1 upper, -1 lower), and at[e] its entry of U's entry
+ * e: the permutation is done on a copy of U whose values are its entries' own positions
+ * (masked_factor.c). */
+static int permute(struct fr_contact_sparse *f, const cholmod_sparse *U, int stype,
+                   SuiteSparse_long at[], cholmod_common *c)
 {
     size_t nnz = nnz_of(U, f->n);
     cholmod_sparse *index = cholmod_l_copy_sparse((cholmod_sparse *)U, c), *full = NULL, *P = NULL;
@@ -99,7 +100,7 @@ static int permute(struct fr_contact_sparse *f, const cholmod_sparse *U, SuiteSp
         P = cholmod_l_submatrix(full, f->perm, (SuiteSparse_long)f->n, f->perm,
                                 (SuiteSparse_long)f->n, 1, 1, c);
     if (P != NULL)
-        f->A = cholmod_l_copy(P, -1, 1, c);
+        f->A = cholmod_l_copy(P, stype, 1, c);
     cholmod_l_free_sparse(&index, c);
     cholmod_l_free_sparse(&full, c);
     cholmod_l_free_sparse(&P, c);
@@ -228,6 +229,17 @@ static int sparse_solve(struct fr_contact_sparse *f, const double v[], double w[
     return FRICREG_OK;
 }
 
+/* The factor's analysis in the natural order: A is permuted already, and CHOLMOD factors it in
+ * place, a simplicial factor on the upper triangle and a supernodal one on the lower (any other
+ * triangle or order it copies at every factorization). The flop count is kept (Common->fl). */
+static int analyse(struct fr_contact_sparse *f, cholmod_common *c)
+{
+    fr_cholmod_ordering(c, CHOLMOD_NATURAL, 0);
+    f->L = cholmod_l_analyze(f->A, c);
+    f->flops = c->fl;
+    return f->L != NULL;
+}
+
 int fr_contact_sparse_prepare(struct fr_contact_sparse *f, const cholmod_sparse *Keff,
                               const cholmod_sparse *Jt, cholmod_common *c)
 {
@@ -238,16 +250,15 @@ int fr_contact_sparse_prepare(struct fr_contact_sparse *f, const cholmod_sparse 
     cholmod_sparse *U = union_pattern(Keff, Jt, c);
     size_t unz = nnz_of(U, f->n);
     SuiteSparse_long *at = U ? cholmod_l_malloc(unz > 0 ? unz : 1, sizeof *at, c) : NULL;
-    int ok = at != NULL && order(f, U, c) && permute(f, U, at, c) &&
-             base_values(f, Keff, U, at, c) && products(f, U, at, c) && vectors(f, c);
+    int ok = at != NULL && order(f, U, c) && permute(f, U, 1, at, c) && analyse(f, c);
+    if (ok && f->L->is_super) { /* supernodal: on the lower triangle (analyse) */
+        cholmod_l_free_sparse(&f->A, c);
+        cholmod_l_free_factor(&f->L, c);
+        ok = permute(f, U, -1, at, c) && analyse(f, c);
+    }
+    ok = ok && base_values(f, Keff, U, at, c) && products(f, U, at, c) && vectors(f, c);
     cholmod_l_free(unz > 0 ? unz : 1, sizeof *at, at, c);
     cholmod_l_free_sparse(&U, c);
-    if (ok) { /* analysed in the natural order: A is permuted already, and stays in place */
-        fr_cholmod_ordering(c, CHOLMOD_NATURAL, 0);
-        f->L = cholmod_l_analyze(f->A, c);
-        ok = f->L != NULL;
-        f->flops = c->fl;
-    }
     /* T = 0 once: K_eff's factor, so that CHOLMOD sizes its storage and workspaces now */
     ok = ok && refactor(f, c) == FRICREG_OK && sparse_solve(f, f->v, f->w, c) == FRICREG_OK;
     if (!ok)
