@@ -21,7 +21,9 @@
  * pattern (analysed once per K_eff), whose other rows and columns are set to the identity,
  * where W_eff's factor is sparse (contacts far apart on a structure barely interacting over a
  * step: contact_factor.c leaves out entries below the rounding of the diagonal), LAPACK's
- * dpotrf on the block alone where it fills; the rest, R (s_i = 0: sliding contacts), is
+ * dpotrf on the block alone where it fills, or, on fricreg_structure's sparse path
+ * (FRICREG_CONTACT_SOLVER_SPARSE), through CHOLMOD's factor of K_eff + J^T T J
+ * (contact_sparse.h); the rest, R (s_i = 0: sliding contacts), is
  * df_i = -G_i. Otherwise (T not of that form) dense: T_NN from the context's dense tangent, by GSL's
  * QR with column pivoting (which allocates nothing; GSL 2.7's LU allocates its pivots on
  * every call), O(|N|^3). */
