@@ -23,10 +23,13 @@
  * mean stuck fraction over the steps (|f_i| below 0.999 mu N_i, read after every step, so that
  * the run is known to stick and slip); peak resident memory (both sides, one process).
  *
- *   usage: fricreg-bench-membrane-contacts [N [ROWS [STEPS [REPEATS [K]]]]]
- *          (defaults 316 2 400 8 3e6: 10^5 dofs, two coupled rows, 2 s)
- * Prints one line: n m steps run_s linear_run_s run_ratio step_s linear_step_s step_ratio
- * newton_mean stuck_fraction peak_MiB. */
+ * PATHS, the near-stick block's solver (fricreg_structure_set_contact_solver): dense, sparse,
+ * or both, each run in turn in this process against the one frictionless run.
+ *
+ *   usage: fricreg-bench-membrane-contacts [N [ROWS [STEPS [REPEATS [K [PATHS]]]]]]
+ *          (defaults 316 2 400 8 3e6 dense: 10^5 dofs, two coupled rows, 2 s)
+ * Prints one line a path: n m steps run_s linear_run_s run_ratio step_s linear_step_s
+ * step_ratio newton_mean stuck_fraction peak_MiB path (peak_MiB: the process's, all runs). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -179,6 +182,41 @@ static double stuck_fraction(const fricreg_structure *s, const struct membrane *
     return (double)stuck / (double)g->m;
 }
 
+/* One friction run's figures: the whole run, the per-step median (the first batch left out),
+ * Newton iterations per step, the mean stuck fraction. */
+struct friction_run {
+    double run, step, newton, stuck;
+};
+
+static struct friction_run friction_run(const struct membrane *g, int solver, size_t batch,
+                                        size_t repeats)
+{
+    double fr[64], stuck = 0.0, *f = malloc(g->m * sizeof *f);
+    double t0 = bench_cpu_seconds();
+    fricreg_structure *s = structure(g);
+    if (fricreg_structure_set_contact_solver(s, solver) != FRICREG_OK)
+        die("contact solver", s);
+    for (size_t r = 0; r < repeats; r++) {
+        double tb = bench_cpu_seconds();
+        for (size_t k = 0; k < batch; k++) {
+            if (fricreg_structure_step(s, DT) != FRICREG_OK)
+                die("step", s);
+            stuck += stuck_fraction(s, g, f);
+        }
+        fr[r] = (bench_cpu_seconds() - tb) / (double)batch;
+    }
+    struct friction_run out = {.run = bench_cpu_seconds() - t0};
+    int64_t iterations = 0, taken = 0;
+    fricreg_structure_get_stat(s, FRICREG_SSTAT_NEWTON_ITERATIONS, &iterations);
+    fricreg_structure_get_stat(s, FRICREG_SSTAT_STEPS, &taken);
+    fricreg_structure_free(s);
+    free(f);
+    out.stuck = stuck / (double)(batch * repeats);
+    out.newton = (double)iterations / (double)taken;
+    out.step = bench_median(fr + 1, repeats - 1); /* the first batch holds the factorizations */
+    return out;
+}
+
 int main(int argc, char **argv)
 {
     struct membrane g = {.side = argc > 1 ? strtoul(argv[1], NULL, 10) : 316};
@@ -186,9 +224,14 @@ int main(int argc, char **argv)
     size_t steps = argc > 3 ? strtoul(argv[3], NULL, 10) : 400;
     size_t repeats = argc > 4 ? strtoul(argv[4], NULL, 10) : 8;
     double spring_k = argc > 5 ? strtod(argv[5], NULL) : SPRING_K;
+    const char *paths = argc > 6 ? argv[6] : "dense";
+    int dense = !strcmp(paths, "dense") || !strcmp(paths, "both");
+    int sparse = !strcmp(paths, "sparse") || !strcmp(paths, "both");
     if (g.side < 3 || rows < 1 || rows > g.side || repeats < 2 || repeats > 64 || steps < repeats ||
-        !(spring_k > 0.0)) {
-        fprintf(stderr, "usage: %s [N >= 3 [ROWS 1..N [STEPS [REPEATS 2..64 <= STEPS [K]]]]]\n",
+        !(spring_k > 0.0) || !(dense || sparse)) {
+        fprintf(stderr,
+                "usage: %s [N >= 3 [ROWS 1..N [STEPS [REPEATS 2..64 <= STEPS [K "
+                "[dense|sparse|both]]]]]]\n",
                 argv[0]);
         return 2;
     }
@@ -197,27 +240,13 @@ int main(int argc, char **argv)
     membrane_contacts(&g, rows);
     membrane_record(&g, steps);
     size_t batch = steps / repeats;
-    double fr[64], lin[64], stuck = 0.0, *f = malloc(g.m * sizeof *f);
+    struct friction_run runs[2];
+    if (dense)
+        runs[0] = friction_run(&g, FRICREG_CONTACT_SOLVER_DENSE, batch, repeats);
+    if (sparse)
+        runs[1] = friction_run(&g, FRICREG_CONTACT_SOLVER_SPARSE, batch, repeats);
 
-    double t0 = bench_cpu_seconds();
-    fricreg_structure *s = structure(&g);
-    for (size_t r = 0; r < repeats; r++) {
-        double tb = bench_cpu_seconds();
-        for (size_t k = 0; k < batch; k++) {
-            if (fricreg_structure_step(s, DT) != FRICREG_OK)
-                die("step", s);
-            stuck += stuck_fraction(s, &g, f);
-        }
-        fr[r] = (bench_cpu_seconds() - tb) / (double)batch;
-    }
-    double run = bench_cpu_seconds() - t0;
-    stuck /= (double)(batch * repeats);
-    int64_t iterations = 0, taken = 0;
-    fricreg_structure_get_stat(s, FRICREG_SSTAT_NEWTON_ITERATIONS, &iterations);
-    fricreg_structure_get_stat(s, FRICREG_SSTAT_STEPS, &taken);
-    fricreg_structure_free(s);
-
-    t0 = bench_cpu_seconds();
+    double lin[64], t0 = bench_cpu_seconds();
     struct linear_newmark l;
     linear_newmark_start(&l, g.n, g.kp, g.ki, g.kx, MASS, RAYLEIGH_A1, DT);
     for (size_t r = 0; r < repeats; r++)
@@ -226,12 +255,15 @@ int main(int argc, char **argv)
     linear_newmark_free(&l);
     double peak = peak_mib();
     membrane_free(&g);
-    free(f);
 
-    /* the first batch holds the set-up's factorizations: the medians leave it out */
-    double fs = bench_median(fr + 1, repeats - 1), ls = bench_median(lin + 1, repeats - 1);
-    printf("%zu %zu %zu %.3f %.3f %.2f %.4g %.4g %.2f %.2f %.3f %.0f\n", g.n, g.m, batch * repeats,
-           run, linear_run, run / linear_run, fs, ls, fs / ls, (double)iterations / (double)taken,
-           stuck, peak);
+    double ls = bench_median(lin + 1, repeats - 1);
+    for (int k = 0; k < 2; k++) {
+        if (!(k == 0 ? dense : sparse))
+            continue;
+        const struct friction_run *fr = &runs[k];
+        printf("%zu %zu %zu %.3f %.3f %.2f %.4g %.4g %.2f %.2f %.3f %.0f %s\n", g.n, g.m,
+               batch * repeats, fr->run, linear_run, fr->run / linear_run, fr->step, ls,
+               fr->step / ls, fr->newton, fr->stuck, peak, k == 0 ? "dense" : "sparse");
+    }
     return 0;
 }

@@ -4,17 +4,18 @@
 # docs/benchmark.md#coupled-contacts-on-a-continuum): fricreg-bench-membrane-contacts on the
 # 316 x 316 membrane (10^5 dofs) with its edge row alone and with two coupled rows, at three
 # spring stiffnesses (W_eff of the edge banded at 10^4 N/m, mostly dense at 3e6 and 1e7), each
-# in a process of its own, 2 s of shaking (400 steps); with FRICREG_BENCH_BIG=1 also the
+# in a process of its own with both near-stick solvers (dense and sparse, against one
+# frictionless run), 2 s of shaking (400 steps); with FRICREG_BENCH_BIG=1 also the
 # 1000 x 1000 membrane (10^6 dofs) with ten rows (10^4 contacts), 10 steps, at 10^4 N/m.
 # Writes OUT/membrane_contacts.csv and prints a Markdown table.
 # Usage: membrane_contacts.sh BENCH_BINARY OUT_DIR
 set -eu
 bin=$1 out=$2
 csv=$out/membrane_contacts.csv
-echo "spring_k,n,m,steps,run_s,linear_run_s,run_ratio,step_s,linear_step_s,step_ratio,newton_mean,stuck_fraction,peak_mib" >"$csv"
-run() { # N ROWS STEPS REPEATS K
-    line=$("$bin" "$1" "$2" "$3" "$4" "$5") || { echo "N = $1, rows = $2, K = $5 failed" >&2; return; }
-    echo "$5 $line" | tr ' ' ',' >>"$csv"
+echo "spring_k,n,m,steps,run_s,linear_run_s,run_ratio,step_s,linear_step_s,step_ratio,newton_mean,stuck_fraction,peak_mib,path" >"$csv"
+run() { # N ROWS STEPS REPEATS K: one line a path
+    lines=$("$bin" "$1" "$2" "$3" "$4" "$5" both) || { echo "N = $1, rows = $2, K = $5 failed" >&2; return; }
+    printf '%s\n' "$lines" | sed "s/^/$5 /" | tr ' ' ',' >>"$csv"
 }
 for k in 1e4 3e6 1e7; do
     run 316 1 400 8 "$k"
@@ -24,7 +25,7 @@ if [ "${FRICREG_BENCH_BIG:-0}" = 1 ]; then
     run 1000 10 10 5 1e4
 fi
 
-echo "| K (N/m) | n | contacts | whole run (s) | frictionless run (s) | ratio | step (ms) | frictionless step (ms) | ratio | Newton/step | stuck | peak (MiB) |"
-echo "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
-awk -F, 'NR > 1 { printf "| %s | %d | %d | %.3g | %.3g | %.2f | %.3g | %.3g | %.2f | %.2f | %.2f | %.0f |\n",
-                  $1, $2, $3, $5, $6, $7, 1e3 * $8, 1e3 * $9, $10, $11, $12, $13 }' "$csv"
+echo "| K (N/m) | n | contacts | path | whole run (s) | frictionless run (s) | ratio | step (ms) | frictionless step (ms) | ratio | Newton/step | stuck | peak (MiB) |"
+echo "|---:|---:|---:|:---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+awk -F, 'NR > 1 { printf "| %s | %d | %d | %s | %.3g | %.3g | %.2f | %.3g | %.3g | %.2f | %.2f | %.2f | %.0f |\n",
+                  $1, $2, $3, $14, $5, $6, $7, 1e3 * $8, 1e3 * $9, $10, $11, $12, $13 }' "$csv"

@@ -77,6 +77,8 @@ module fricreg_structure_m
     procedure :: set_error_estimate => struct_set_error_estimate
     procedure :: set_answer_rtol => struct_set_answer_rtol
     procedure :: set_error_companions => struct_set_error_companions
+    procedure :: set_contact_solver => struct_set_contact_solver
+    procedure :: contact_solver => struct_contact_solver
     procedure :: get_peak_displacement => struct_get_peak_displacement
     procedure :: get_peak_displacement_error => struct_get_peak_displacement_error
     procedure :: get_dissipation_error => struct_get_dissipation_error
@@ -1183,6 +1185,31 @@ contains
     if (status == FRICREG_OK) &
       status = self%record(fricreg_structure_set_error_companions(self%ptr, which))
   end function struct_set_error_companions
+  !> How Newmark / HHT-alpha steps solve their near-stick block
+  !> (fricreg_structure_set_contact_solver): FRICREG_CONTACT_SOLVER_AUTO (the default: dense for
+  !> now), _DENSE (a factor of the block of J K_eff^-1 J^T) or _SPARSE (one sparse factor of
+  !> K_eff + J^T T J). FRICREG_EINVAL for another value, nothing changed. Since 1.8.
+  function struct_set_contact_solver(self, solver) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    integer, intent(in) :: solver
+    integer(c_int) :: status
+    status = self%ready('set_contact_solver', 'structure')
+    if (status == FRICREG_OK) status = self%record(fricreg_structure_set_contact_solver(self%ptr, &
+                                                     int(solver, c_int)))
+  end function struct_set_contact_solver
+
+  !> The near-stick block's solver of the next step, FRICREG_CONTACT_SOLVER_DENSE or _SPARSE
+  !> (the automatic choice resolved; fricreg_structure_get_contact_solver). Since 1.8.
+  function struct_contact_solver(self, solver) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    integer, intent(inout) :: solver
+    integer(c_int) :: status, k
+    status = self%ready('get_contact_solver', 'structure')
+    k = 0
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_structure_get_contact_solver(self%ptr, k))
+    if (status == FRICREG_OK) solver = int(k)
+  end function struct_contact_solver
 
   !> The peak displacements max |u_i| since set_initial, peak(ndof) (length units): every fixed
   !> step's end and the turning points inside it, every adaptive run_ode call's end

@@ -69,6 +69,8 @@
 !   FRSTEK(H, QUANT, N, KINDS, STAT)             _get_error_kind
 !   FRSTAR(H, RTOL, STAT)                        _set_answer_rtol
 !   FRSTEC(H, WHICH, STAT)                       _set_error_companions (0 finer, 1 coarser)
+!   FRSTCS(H, SOLVER, STAT)                      _set_contact_solver
+!   FRSTCG(H, SOLVER, STAT)                      _get_contact_solver
 !   FRSTOD(H, INTEG, DT, RTOL, ATOL, TEND, STAT) _run_ode (ATOL = -1: tolerances from eps)
 !   FRSTOT(H, N, ATOL, STAT)                     _set_ode_abs_tolerances (N = 0 removes them)
 !   FRSTOG(H, N, ATOL, STAT)                     _get_ode_abs_tolerances
@@ -81,7 +83,7 @@
 !   FRCSTM(H, M, ZS, ZP, AP, FORMAT, WP, WI, WV, EP, EI, EV, C, TOL, MAXIT, FLAGS, F, ITERS,
 !          CONV, STAT)                           fricreg_ctx_solve_step_matrix (any storage)
 ! The getters (FRSTG*, FRSTJS, FRSTS2, FRSTIS, FRSTNF, FRSTPK, FRSTPE, FRSTDE, FRSTJE,
-! FRSTEK, FRSTOG) read a const structure: C records no failure of theirs, so FRSTER still shows the
+! FRSTEK, FRSTOG, FRSTCG) read a const structure: C records no failure of theirs, so FRSTER still shows the
 ! failure before (their STAT is the answer). So do the few refusals made here, before C is
 ! called, of counts that would wrap into size_t: FRSTCR's NDOF or M below 1 (there is no
 ! structure yet to record it), FRSTAG's and FRSTLD's N below 0, FRSTIW's, FRSTIL's and
@@ -90,11 +92,11 @@
 ! Generated, not here: the entry points that are one C call (FRSTMC, FRSTKC, FRSTCC, FRSTJC,
 ! FRSTJR, FRSTMX, FRSTMF, FRSTKF, FRSTCF, FRSTCA, FRSTBD, FRSTLW, FRSTIV, FRSTU0, FRSTNM, FRSTHH,
 ! FRSTCD, FRSTNT, FRSTSP, FRSTTE, FRSTGS, FRSTGF, FRSTGD, FRSTGV, FRSTEE, FRSTPK, FRSTPE,
-! FRSTDE, FRSTJE, FRSTAR, FRSTOD, FRSTOG, FRSTGT, FRSTJS, FRSTS2, FRSTNF) are a line each, with their doc
+! FRSTDE, FRSTJE, FRSTAR, FRSTCS, FRSTOD, FRSTOG, FRSTGT, FRSTJS, FRSTS2, FRSTNF) are a line each, with their doc
 ! comments, in the table fricreg_structure_f77.txt, which fortran/gen_f77.cmake turns into
 ! fricreg_structure_f77_generated.f90 at build time. Those below have logic of their own: a
 ! handle made or released, a refused count, J transposed into a scratch copy, the message, C's
-! ints copied into the caller's INTEGER (FRSTEK).
+! ints copied into the caller's INTEGER (FRSTEK, FRSTCG).
 
 !> FRSTCR(NDOF, M, H, STAT): create a structure of NDOF >= 1 degrees of freedom and M >= 1
 !> contacts into H, with C's defaults (M = I, C = K = 0, J unset, law (4), eps = 1e-3,
@@ -451,6 +453,21 @@ subroutine frstek(h, quant, n, kinds, stat)
              int(max(n, 0), c_size_t), tmp))
   if (stat == FRICREG_OK .and. n > 0) kinds(1:n) = int(tmp(1:n))
 end subroutine frstek
+
+!> FRSTCG(H, SOLVER, STAT): the near-stick block's solver of the next step,
+!> FRICREG_CONTACT_SOLVER_DENSE or _SPARSE (fricreg_structure_get_contact_solver). Since 1.8.
+subroutine frstcg(h, solver, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(inout) :: solver
+  integer, intent(out) :: stat
+  integer(c_int) :: k
+  k = 0
+  stat = int(fricreg_structure_get_contact_solver(fricreg_handle_to_ptr(h), k))
+  if (stat == FRICREG_OK) solver = int(k)
+end subroutine frstcg
 
 !> FRCSTP(H, M, ZS, ZP, AP, W, WEFF, C, TOL, MAXIT, FLAGS, F, ITERS, CONV, STAT): the forces of
 !> one implicit step of the caller's own integrator on a context H (FRCTXC), C's

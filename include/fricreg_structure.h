@@ -329,6 +329,55 @@ FRICREG_API int fricreg_structure_set_central_difference(fricreg_structure *s);
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ENONFINITE; FRICREG_EINVAL. */
 FRICREG_API int fricreg_structure_set_newton(fricreg_structure *s, double tol, int max_iter);
 
+/** How a Newmark / HHT-alpha step solves its near-stick block (fricreg_structure_step):
+ *  the rows N of the Newton direction and of the stick guess,
+ *  (W_eff,NN + diag(shift_N)) y_N = b_N, W_eff = J K_eff^-1 J^T (m x m, dense on a stiff
+ *  continuum), shift_i = 1/(c |s_i|) from the law's slope s_i, 0 on a free contact of the
+ *  consistent law and in the stick guess. */
+enum fricreg_contact_solver {
+    FRICREG_CONTACT_SOLVER_AUTO = 0,  /**< the library's choice: for now the dense path */
+    FRICREG_CONTACT_SOLVER_DENSE = 1, /**< a Cholesky factor of the block itself: CHOLMOD's on
+                                           W_eff's pattern where it stays sparse, LAPACK's dpotrf
+                                           on the block where it fills (O(|N|^3)) */
+    FRICREG_CONTACT_SOLVER_SPARSE = 2 /**< in the structure's n unknowns: CHOLMOD's factor of
+                                           K_eff + J^T T J, T = diag(1/shift_N) (0 off N) */
+};
+
+/** Choose the near-stick block's solver of the next Newmark / HHT-alpha steps (central
+ *  differences and GSL's steppers have none). FRICREG_CONTACT_SOLVER_SPARSE solves the block
+ *  by Woodbury's identity,
+ *    (J_N K_eff^-1 J_N^T + S)^-1 r = T (r - J_N (K_eff + J_N^T T J_N)^-1 J_N^T T r),
+ *  S = diag(s~_N), T = S^-1, with one sparse Cholesky factor (CHOLMOD) of the n x n matrix
+ *  K_eff + J^T T J: its pattern, K_eff + J^T J's, is ordered and analysed once per K_eff (once
+ *  per run at a fixed dt) and refactored numerically only when N changes, or when the shifts
+ *  moved so far that the held factor, used as a chord, does not converge within 6
+ *  refinements. s~_i is shift_i where positive; where a row has none (a constraint on J_i's
+ *  motion) s~_i = 2^-26 W_eff,ii. Every answer is refined against the exact block (iterative
+ *  refinement, products with W_eff, until the block's residual is below 2^-43 of its
+ *  right-hand side), so that both paths give the same steps to rounding (within 1e-10 of each
+ *  other: tests/test_contact_solver.c); a block that is not positive definite is
+ *  FRICREG_ESINGULAR on both (then no stick guess, as before). The sparse path's storage is
+ *  allocated with K_eff's factor, but CHOLMOD's supernodal refactorization takes workspace of
+ *  its own each time (two blocks: docs/benchmark.md). FRICREG_CONTACT_SOLVER_AUTO, the default,
+ *  takes the dense path for now: the rule from CHOLMOD's flop count against |N|^3 / 3 awaits
+ *  the benchmark on both BLAS (docs/benchmark.md).
+ *  The setting is kept by the error estimate's companion. Since 1.8 (FRICREG_1.8).
+ *
+ *  solver   enum fricreg_contact_solver.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if s is NULL; FRICREG_EINVAL if solver is none of the
+ *  enum, or when called from the observer during a run (the setting is then unchanged). */
+FRICREG_API int fricreg_structure_set_contact_solver(fricreg_structure *s, int solver);
+
+/** The near-stick block's solver of the next Newmark / HHT-alpha step:
+ *  FRICREG_CONTACT_SOLVER_DENSE or FRICREG_CONTACT_SOLVER_SPARSE, never _AUTO (the automatic
+ *  choice made). Since 1.8 (FRICREG_1.8).
+ *
+ *  solver   out: enum fricreg_contact_solver.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if s or solver is NULL. */
+FRICREG_API int fricreg_structure_get_contact_solver(const fricreg_structure *s, int *solver);
+
 /** Advance one step of dt > 0 (time units) with the selected scheme (Newmark and HHT-alpha
  *  below; central difference at fricreg_structure_set_central_difference).
  *

@@ -45,8 +45,8 @@ expect_in() {
 
 # expect_same TOL ARGS-A -- ARGS-B: two runs print the same JSON summary, every number within
 # TOL relative (of 1e-300 at least), all but the CPU seconds (cpu_seconds,
-# companion_cpu_seconds), the element kind and sliders and the 2-D elements' forces (which a
-# 1-D run does not print).
+# companion_cpu_seconds), the element kind and sliders, the 2-D elements' forces (which a 1-D
+# run does not print) and the contact solver's name.
 expect_same() {
     total=$((total + 1))
     tol=$1; shift
@@ -56,6 +56,7 @@ expect_same() {
     for run in a b; do
         if [ $run = a ]; then "$sim" $first >"$tmp/$run" 2>"$tmp/err"; else "$sim" "$@" >"$tmp/$run" 2>"$tmp/err"; fi
         sed -e 's/"cpu_seconds": [0-9.e+-]*//; s/"companion_cpu_seconds": [0-9.e+-]*//; s/, "element_kind": "[^"]*"//; s/, "sliders_per_element": [0-9]*//' \
+            -e 's/"contact_solver": "[a-z]*", //' \
             -e 's/, "jenkins_forces": \[[][0-9.e+, -]*\]//' \
             "$tmp/$run" | tr -s ',:[]{} ' '\n' >"$tmp/$run.tokens"
     done
@@ -294,6 +295,12 @@ expect_usage_error "--error-companions" $block --integrator rk4 --dt 0.01 --erro
 expect_output '"x": \[-0\.0044317[0-9]*\], .*"cpu_seconds": [0-9.]+, "warnings"' structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_const.txt --eps 1e-2 --t-end 0.1 --integrator rk4 --dt 1e-3 --error-companions coarser --error-estimate off
 expect_usage_error "--error-companions" $block --integrator newmark --dt 0.01 --error-companions coarse
 expect_output '"error_companions": "coarser"' $block --integrator rkf45 --dt 0.01 --rtol 1e-6 --error-companions coarser
+# --contact-solver (fricreg_structure_set_contact_solver): the summary names the path in force
+# (auto: dense for now), and the sparse path's run is the dense one's
+expect_output '"integrator": "newmark", "contact_solver": "dense", ' $block --integrator newmark --dt 0.01
+expect_output '"integrator": "hht", "alpha": [0-9.e-]+, "contact_solver": "sparse", ' $block --integrator hht --dt 0.01 --contact-solver sparse
+expect_same 1e-10 $block --integrator newmark --dt 0.01 --contact-solver dense -- $block --integrator newmark --dt 0.01 --contact-solver sparse
+expect_usage_error "--contact-solver" $block --integrator newmark --dt 0.01 --contact-solver cholesky
 total=$((total + 1))
 if "$sim" $block --integrator newmark --dt 0.01 --error-estimate off 2>&1 | grep -q error_estimate; then
     echo "FAIL: structure --error-estimate off still estimates"; fails=$((fails + 1))

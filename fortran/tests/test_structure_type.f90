@@ -247,6 +247,7 @@ contains
     integer(c_int) :: kf(3), kc(3)
     integer(c_int64_t) :: nf, nc
     integer(c_int) :: which
+    integer :: solver
     character(len=8) :: tag
     tag = merge('rk4     ', 'hht     ', gsl)
     call check_status(fricreg_structure_create(3_c_size_t, 2_c_size_t, s), FRICREG_OK, 'C create')
@@ -347,6 +348,18 @@ contains
     call check_status(fricreg_structure_get_value(s, FRICREG_SVALUE_COMPANION_CPU, wc), &
                       FRICREG_OK, 'C companion cpu')
     call check(wf > 0.0_c_double .and. wc > 0.0_c_double, trim(tag) // ': companions took time')
+    ! the near-stick block's solver: refused outside the enum (unchanged), read back resolved
+    solver = -1
+    call check_status(st%contact_solver(solver), FRICREG_OK, 'contact_solver')
+    call check(solver == FRICREG_CONTACT_SOLVER_DENSE, trim(tag) // ': auto reads dense')
+    call check_status(st%set_contact_solver(FRICREG_CONTACT_SOLVER_SPARSE), FRICREG_OK, &
+                      'set_contact_solver sparse')
+    call check_status(st%set_contact_solver(7), FRICREG_EINVAL, 'set_contact_solver 7')
+    call check(index(st%errmsg(), 'set_contact_solver') > 0, 'message: ' // st%errmsg())
+    call check_status(st%contact_solver(solver), FRICREG_OK, 'contact_solver sparse')
+    call check(solver == FRICREG_CONTACT_SOLVER_SPARSE, trim(tag) // ': sparse kept')
+    call check_status(st%set_contact_solver(FRICREG_CONTACT_SOLVER_AUTO), FRICREG_OK, &
+                      'set_contact_solver back')
     do which = FRICREG_SVALUE_TIME, FRICREG_SVALUE_INITIAL
       call check_status(st%get_value(which, wf), FRICREG_OK, 'get_value')
       call check_status(fricreg_structure_get_value(s, which, wc), FRICREG_OK, 'C get_value')

@@ -26,6 +26,7 @@ struct structure_options {
     int error_estimate; /* --error-estimate on|off|one: enum fricreg_error_estimate (summary only) */
     double answer_rtol;   /* --answer-rtol X (fricreg_structure_set_answer_rtol) */
     int error_companions; /* --error-companions: enum fricreg_estimate_companions */
+    int contact_solver;   /* --contact-solver: enum fricreg_contact_solver */
     int output_every;     /* --output-every K: the trajectory's every K-th step (1: every step) */
     int output_every_given;
 };

@@ -153,6 +153,11 @@ static const char *integrator_meta(void)
 }
 
 /* The rows over o, its defaults set: the parser's and the help's one table. */
+static const struct cli_word contact_solver_words[] = {{"auto", FRICREG_CONTACT_SOLVER_AUTO},
+                                                       {"dense", FRICREG_CONTACT_SOLVER_DENSE},
+                                                       {"sparse", FRICREG_CONTACT_SOLVER_SPARSE},
+                                                       {NULL, 0}};
+
 static size_t structure_table(struct structure_options *o, struct cli_option table[])
 {
     *o = (struct structure_options){.law = FRICREG_LAW_QUINN,
@@ -248,6 +253,9 @@ static size_t structure_table(struct structure_options *o, struct cli_option tab
          .help = "where the estimate's companions sit: finer (eps/2 at dt/2, eps/4 at dt/4) or "
                  "coarser (2 eps at 2 dt, 4 eps at 4 dt: about 0.7x the run's cost instead of "
                  "6x, bounding the error less often; not with GSL's fixed steps)"},
+        {"--contact-solver", CLI_CHOICE, .slot = &o->contact_solver, .words = contact_solver_words,
+         .help = "newmark and hht: the near-stick block's solver, dense (a factor of the block "
+                 "of J K_eff^-1 J^T) or sparse (one of K_eff + J^T T J); auto: dense for now"},
         {"--answer-rtol", CLI_POSITIVE, .slot = &o->answer_rtol, .meta = "X",
          .help = "warn (error_estimate) where the largest peak's estimate exceeds X times the "
                  "largest peak, or the dissipations' summed estimate X times their sum, "
@@ -315,7 +323,8 @@ static int setup(const struct structure_options *o, const struct structure_input
         fricreg_structure_set_error_estimate(s, o->error_estimate);
         fricreg_structure_set_error_companions(s, o->error_companions); /* the parser's 0, 1 */
     }
-    fricreg_structure_set_answer_rtol(s, o->answer_rtol); /* > 0 and finite: the parser's */
+    fricreg_structure_set_answer_rtol(s, o->answer_rtol);       /* > 0 and finite: the parser's */
+    fricreg_structure_set_contact_solver(s, o->contact_solver); /* one of the words' */
     return set_scheme(s, o);
 }
 
@@ -578,6 +587,12 @@ static void write_summary(FILE *out, const struct structure_options *o,
             fricreg_law_name(o->law), scheme_name(o));
     if (o->scheme == SCHEME_HHT)
         fprintf(out, "\"alpha\": %.17g, ", o->alpha);
+    if (o->scheme == SCHEME_NEWMARK || o->scheme == SCHEME_HHT) { /* the path in force */
+        int solver = FRICREG_CONTACT_SOLVER_DENSE;
+        fricreg_structure_get_contact_solver(s, &solver);
+        fprintf(out, "\"contact_solver\": \"%s\", ",
+                solver == FRICREG_CONTACT_SOLVER_SPARSE ? "sparse" : "dense");
+    }
     int adaptive = o->rtol > 0.0 || o->atol != 0.0;
     fprintf(out, "\"adaptive\": %s, \"dt\": %.17g, \"rtol\": %.17g, \"atol\": ",
             adaptive ? "true" : "false", o->dt, o->rtol);

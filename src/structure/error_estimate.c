@@ -104,6 +104,7 @@ static int copy_structure(fricreg_structure *c, const fricreg_structure *s)
     c->gamma = s->gamma;
     c->newton_tol = s->newton_tol;
     c->newton_max = s->newton_max;
+    c->contact_solver = s->contact_solver;
     c->max_steps = s->max_steps;
     /* run_ode's rule from eps and set tolerances: / 16 finer, x 16 coarser */
     c->tol_scale = s->tol_scale * (level(s) > 1.0 ? TOL_SCALE : 1.0 / TOL_SCALE);

@@ -89,6 +89,22 @@ static int all_finite(const cholmod_sparse *A)
     return 1;
 }
 
+/* The Newton matrix for W_eff = s->step.D and, on the sparse path, the blocks' factor of
+ * K_eff + J^T T J (contact_sparse.h); FRICREG_OK or FRICREG_ENOMEM (s->step then freed). */
+static int prepare_newton(fricreg_structure *s, const cholmod_sparse *Keff)
+{
+    fr_contact_sparse_free(&s->sparse, &s->cc);
+    int dense = s->m <= DENSE_FALLBACK_MAX;
+    int ok = fr_newton_matrix_prepare(&s->newton, s->step.D, dense, &s->cc) == FRICREG_OK;
+    if (ok && s->contact_solver == FRICREG_CONTACT_SOLVER_SPARSE)
+        ok = fr_contact_sparse_prepare(&s->sparse, Keff, s->Jt, &s->cc) == FRICREG_OK;
+    s->newton.sparse = ok && s->contact_solver == FRICREG_CONTACT_SOLVER_SPARSE ? &s->sparse : NULL;
+    if (ok)
+        return FRICREG_OK;
+    fr_cfactor_free(&s->step, &s->cc);
+    return fr_fail(s, FRICREG_ENOMEM, "step: no memory for the Newton matrix");
+}
+
 static int form_step_factor(fricreg_structure *s, double dt)
 {
     if (fabs(dt - s->step_dt) <= STEP_RTOL * s->step_dt)
@@ -109,14 +125,11 @@ static int form_step_factor(fricreg_structure *s, double dt)
     }
     int status = fr_cfactor_build(&s->step, Keff, s->Jt, WEFF_DROP, &s->cc, &s->err, "step",
                                   "K_eff = M + (1 + alpha)(gamma dt C + beta dt^2 K)");
+    if (status == FRICREG_OK)
+        status = prepare_newton(s, Keff);
     cholmod_l_free_sparse(&Keff, &s->cc);
     if (status != FRICREG_OK)
         return status;
-    int dense = s->m <= DENSE_FALLBACK_MAX;
-    if (fr_newton_matrix_prepare(&s->newton, s->step.D, dense, &s->cc) != FRICREG_OK) {
-        fr_cfactor_free(&s->step, &s->cc);
-        return fr_fail(s, FRICREG_ENOMEM, "step: no memory for the Newton matrix");
-    }
     s->step_dt = dt;
     return FRICREG_OK;
 }

@@ -228,6 +228,8 @@ int fr_newton_direction(struct fr_newton_matrix *nm, fricreg_ctx *ctx, double co
     if (status != FRICREG_OK || !rows_split(nm, coef, W, G, df))
         return dense_direction(nm, ctx, coef, W, Weff, G, df);
     rows_rhs(nm, Weff, df);
+    if (nm->sparse != NULL)
+        return fr_contact_sparse_solve(nm->sparse, Weff, nm->in_n, nm->shift, nm->b, df, c);
     return fr_masked_factor_solve(&nm->block, Weff, nm->in_n, nm->shift, nm->b, df, c);
 }
 
@@ -235,6 +237,8 @@ int fr_newton_stick_solve(struct fr_newton_matrix *nm, const cholmod_sparse *Wef
                           const unsigned char set[], const double b[], double x[],
                           cholmod_common *c)
 {
+    if (nm->sparse != NULL)
+        return fr_contact_sparse_solve(nm->sparse, Weff, set, NULL, b, x, c);
     return fr_masked_factor_solve(&nm->block, Weff, set, NULL, b, x, c);
 }
 

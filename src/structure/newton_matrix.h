@@ -21,7 +21,9 @@
  * pattern (analysed once per K_eff), whose other rows and columns are set to the identity,
  * where W_eff's factor is sparse (contacts far apart on a structure barely interacting over a
  * step: contact_factor.c leaves out entries below the rounding of the diagonal), LAPACK's
- * dpotrf on the block alone where it fills; the rest, R (s_i = 0: sliding contacts), is
+ * dpotrf on the block alone where it fills, or, on fricreg_structure's sparse path
+ * (FRICREG_CONTACT_SOLVER_SPARSE), through CHOLMOD's factor of K_eff + J^T T J
+ * (contact_sparse.h); the rest, R (s_i = 0: sliding contacts), is
  * df_i = -G_i. Otherwise (T not of that form) dense: T_NN from the context's dense tangent, by GSL's
  * QR with column pivoting (which allocates nothing; GSL 2.7's LU allocates its pivots on
  * every call), O(|N|^3). */
@@ -36,6 +38,7 @@
 #include <gsl/gsl_vector.h>
 
 #include "fricreg.h"
+#include "contact_sparse.h"
 #include "masked_factor.h"
 
 struct fr_newton_matrix {
@@ -54,6 +57,9 @@ struct fr_newton_matrix {
     double *b;                 /* [m] */
     struct fr_masked_factor block; /* W_eff's principal blocks (shifted) */
     enum fr_block_storage storage; /* the blocks' (FR_BLOCK_CHOSEN unless a test forces one) */
+    /* The blocks solved in the structure's space instead (contact_sparse.h; not owned, NULL:
+     * the masked factor's): set by the structure after each prepare. */
+    struct fr_contact_sparse *sparse;
 };
 
 /* Ready for the contacts of a new K_eff: the blocks of W_eff (m x m, upper, sorted) ready in

@@ -41,6 +41,7 @@ void fricreg_structure_free(fricreg_structure *s)
     fr_cfactor_free(&s->mass, &s->cc);
     fr_cfactor_free(&s->step, &s->cc);
     fr_newton_matrix_free(&s->newton, &s->cc);
+    fr_contact_sparse_free(&s->sparse, &s->cc);
     fr_elements_free(s);
     fr_cholmod_finish(&s->cc);
     fricreg_ctx_free(s->ctx);
@@ -408,6 +409,33 @@ int fricreg_structure_set_newton(fricreg_structure *s, double tol, int max_iter)
     s->newton_tol = tol;
     s->newton_max = max_iter;
     fr_structure_changed(s, FR_CHANGED_NEWTON);
+    return FRICREG_OK;
+}
+
+int fricreg_structure_set_contact_solver(fricreg_structure *s, int solver)
+{
+    if (s == NULL)
+        return FRICREG_ENULL;
+    if (s->running)
+        return fr_structure_busy(s, "set_contact_solver");
+    if (solver != FRICREG_CONTACT_SOLVER_AUTO && solver != FRICREG_CONTACT_SOLVER_DENSE &&
+        solver != FRICREG_CONTACT_SOLVER_SPARSE)
+        return fr_fail(s, FRICREG_EINVAL,
+                       "set_contact_solver: solver = %d is none of FRICREG_CONTACT_SOLVER_AUTO, "
+                       "_DENSE, _SPARSE",
+                       solver);
+    s->contact_solver = solver;
+    fr_structure_changed(s, FR_CHANGED_SCHEME); /* the step's factors anew, the path's */
+    return FRICREG_OK;
+}
+
+int fricreg_structure_get_contact_solver(const fricreg_structure *s, int *solver)
+{
+    if (s == NULL || solver == NULL)
+        return FRICREG_ENULL;
+    /* AUTO is the dense path until the crossover is measured (fricreg_structure.h) */
+    *solver = s->contact_solver == FRICREG_CONTACT_SOLVER_SPARSE ? FRICREG_CONTACT_SOLVER_SPARSE
+                                                                 : FRICREG_CONTACT_SOLVER_DENSE;
     return FRICREG_OK;
 }
 

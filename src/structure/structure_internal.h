@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* structure_internal.h — the structure's layout, shared by its files. Each calls only files
  * above it in this list, never one below (tests/module_layers.sh): busy.c, changed.c (the
- * setters' one hook), contact_factor.c, joint_storage.c, masked_factor.c, step_pattern.c,
- * warn_track.c (what the warnings judge, as the run steps); guard.c (the step guard), model.c
+ * setters' one hook), contact_factor.c, contact_sparse.c, joint_storage.c, masked_factor.c,
+ * step_pattern.c, warn_track.c (what the warnings judge, as the run steps); guard.c (the step guard), model.c
  * (the model matrices), newton_matrix.c, ode_tolerances.c; fundamental_frequency.c, jenkins.c
  * (Jenkins elements), prepare.c (the set-up of a model), step_newton.c, structure_gsl.c;
  * contact_step.c, energy.c (the balance); structure.c (life cycle, setters, getters);
@@ -132,6 +132,7 @@ struct fricreg_structure {
     double alpha, beta, gamma;
     double newton_tol;
     int newton_max;
+    int contact_solver; /* FRICREG_CONTACT_SOLVER_* (fricreg_structure_set_contact_solver) */
 
     /* Long runs: the observer, the bound on a run_ode call's adaptive steps (0: none), and
      * whether run or run_ode is stepping (the observer may then only read). */
@@ -168,6 +169,8 @@ struct fricreg_structure {
     struct fr_cfactor step;
     double step_dt; /* the dt K_eff was factored for (0: none) */
     struct fr_newton_matrix newton;
+    struct fr_contact_sparse sparse; /* the near-stick blocks in the structure's space, for
+                                        step_dt (contact_sparse.h; FRICREG_CONTACT_SOLVER_SPARSE) */
 
     /* State at time t; `ready` when a, f and p~ hold the equation of motion at t. */
     double t;

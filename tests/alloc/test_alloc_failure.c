@@ -1269,7 +1269,8 @@ static const struct script exact_solve_script = {
 /* A 3-storey shear frame (storey masses 2, 2, 1; storey stiffnesses 200) with friction dampers
  * across storeys 1 and 2 (J couples them: W dense), Rayleigh damping, ground motion and a load,
  * each given twice (the second replaces the first: a failed set keeps the first); stepped by
- * one scheme of each family (Newmark, HHT-alpha, central difference) and by a GSL stepper
+ * one scheme of each family (Newmark, HHT-alpha on the sparse near-stick block,
+ * FRICREG_CONTACT_SOLVER_SPARSE, central difference) and by a GSL stepper
  * (fricreg_structure_run_ode). */
 static const double FRAME_M[9] = {2, 0, 0, 0, 2, 0, 0, 0, 1};
 static const double FRAME_K[9] = {400, -200, 0, -200, 400, -200, 0, -200, 200};
@@ -1366,7 +1367,10 @@ static int structure_call(void *obj, int i, struct view *v)
     case 9:
         switch (current_scheme) {
         case SCHEME_NEWMARK: return fricreg_structure_set_newmark(obj, 0.3025, 0.6);
-        case SCHEME_HHT: return fricreg_structure_set_hht(obj, -0.1);
+        case SCHEME_HHT: /* and the near-stick block through K_eff + J^T T J */
+            return fricreg_structure_set_hht(obj, -0.1) == FRICREG_OK
+                       ? fricreg_structure_set_contact_solver(obj, FRICREG_CONTACT_SOLVER_SPARSE)
+                       : fricreg_structure_errcode(obj);
         case SCHEME_CENTRAL: return fricreg_structure_set_central_difference(obj);
         default: return fricreg_structure_set_initial(obj, 3, u0, v0);
         }
