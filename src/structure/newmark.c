@@ -243,8 +243,8 @@ static int iterate(fricreg_structure *s, double tol, int stop_slips, double *phi
         .residual = residual_cb,
     };
     if (fr_step_newton_iterate(&e, tol, stop_slips, 1, phi, rinf, iters) == FRICREG_ENOMEM)
-        return fr_fail(s, FRICREG_ENOMEM,
-                       "step: no memory for the dense Newton matrix (%zu contacts)", s->m);
+        return fr_fail(s, FRICREG_ENOMEM, "step: no memory for the Newton %s (%zu contacts)",
+                       s->newton.sparse != NULL ? "block's sparse factor" : "matrix", s->m);
     return FRICREG_OK;
 }
 
