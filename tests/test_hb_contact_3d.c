@@ -449,14 +449,15 @@ END_TEST
 int main(void)
 {
     Suite *s = suite_create("hb_contact_3d");
-    TCase *tc = tcase_create("core");
+    TCase *tc = tcase_create("core"), *td = tcase_create("time_domain");
     tcase_add_test(tc, one_axis_is_the_liftoff_element);
     tcase_add_test(tc, closed_stuck_is_linear);
     tcase_add_test(tc, continuation_passes_the_point_solves);
     tcase_add_test(tc, backbone_starts_at_the_stuck_mode);
     tcase_add_test(tc, bad_input);
-    tcase_add_test(tc, against_a_long_time_integration);
+    tcase_add_test(td, against_a_long_time_integration);
     suite_add_tcase(s, tc);
+    suite_add_tcase(s, td);
     SRunner *sr = srunner_create(s);
     srunner_run_all(sr, CK_NORMAL);
     int failed = srunner_ntests_failed(sr);

@@ -104,10 +104,11 @@ END_TEST
 static Suite *implicit_suite(void)
 {
     Suite *s = suite_create("implicit");
-    TCase *tc = tcase_create("exact_jacobian");
+    TCase *tc = tcase_create("exact_jacobian"), *tchain = tcase_create("chain");
     tcase_add_test(tc, oscillator_msbdf_and_rk4imp_reach_the_exact_solution);
-    tcase_add_test(tc, chain_msbdf_reaches_the_reference);
+    tcase_add_test(tchain, chain_msbdf_reaches_the_reference);
     suite_add_tcase(s, tc);
+    suite_add_tcase(s, tchain);
     return s;
 }
 
