@@ -7,6 +7,7 @@
 #include "base/sparse_ops.h"
 #include "contact_factor.h"
 #include "contact_sparse.h"
+#include "masked_factor.h"
 #include "fricreg.h"
 
 /* The regularization of a row without a shift, relative to its W_eff,ii: sqrt(u), between
@@ -266,25 +267,15 @@ int fr_contact_sparse_prepare(struct fr_contact_sparse *f, const cholmod_sparse 
     return ok ? FRICREG_OK : FRICREG_ENOMEM;
 }
 
-/* The block and shifts of the factor held (masked_factor.c's holds and hold). */
+/* The block and shifts of the factor held (masked_factor.h's rule). */
 static int holds(const struct fr_contact_sparse *f, const unsigned char *set, const double *shift)
 {
-    if (!f->held)
-        return 0;
-    for (size_t i = 0; i < f->m; i++) {
-        unsigned char in = set != NULL && set[i];
-        if (in != f->held_set[i] || (in && (shift ? shift[i] : 0.0) != f->held_shift[i]))
-            return 0;
-    }
-    return 1;
+    return fr_block_is_held(f->m, f->held, f->held_set, f->held_shift, set, shift);
 }
 
 static void hold(struct fr_contact_sparse *f, const unsigned char *set, const double *shift)
 {
-    for (size_t i = 0; i < f->m; i++) {
-        f->held_set[i] = set != NULL && set[i];
-        f->held_shift[i] = f->held_set[i] && shift ? shift[i] : 0.0;
-    }
+    fr_block_hold(f->m, f->held_set, f->held_shift, set, shift);
     f->held = 1;
 }
 

@@ -154,25 +154,37 @@ static void fill(struct fr_masked_factor *f, const cholmod_sparse *W, const unsi
     }
 }
 
-/* The block and shifts of the factor held: those of the last factorization (f->held). */
-static int holds(const struct fr_masked_factor *f, const unsigned char *set, const double *shift)
+int fr_block_is_held(size_t m, int held, const unsigned char *held_set, const double *held_shift,
+                     const unsigned char *set, const double *shift)
 {
-    if (!f->held)
+    if (!held)
         return 0;
-    for (size_t i = 0; i < f->m; i++) {
+    for (size_t i = 0; i < m; i++) {
         unsigned char in = set != NULL && set[i];
-        if (in != f->held_set[i] || (in && (shift ? shift[i] : 0.0) != f->held_shift[i]))
+        if (in != held_set[i] || (in && (shift ? shift[i] : 0.0) != held_shift[i]))
             return 0;
     }
     return 1;
 }
 
+void fr_block_hold(size_t m, unsigned char *held_set, double *held_shift, const unsigned char *set,
+                   const double *shift)
+{
+    for (size_t i = 0; i < m; i++) {
+        held_set[i] = set != NULL && set[i];
+        held_shift[i] = held_set[i] && shift ? shift[i] : 0.0;
+    }
+}
+
+/* The block and shifts of the factor held: those of the last factorization (f->held). */
+static int holds(const struct fr_masked_factor *f, const unsigned char *set, const double *shift)
+{
+    return fr_block_is_held(f->m, f->held, f->held_set, f->held_shift, set, shift);
+}
+
 static void hold(struct fr_masked_factor *f, const unsigned char *set, const double *shift)
 {
-    for (size_t i = 0; i < f->m; i++) {
-        f->held_set[i] = set != NULL && set[i];
-        f->held_shift[i] = f->held_set[i] && shift ? shift[i] : 0.0;
-    }
+    fr_block_hold(f->m, f->held_set, f->held_shift, set, shift);
     f->held = 1;
 }
 

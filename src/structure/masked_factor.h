@@ -64,4 +64,12 @@ int fr_masked_factor_solve(struct fr_masked_factor *f, const cholmod_sparse *W,
                            const unsigned char *set, const double *shift, const double b[],
                            double x[], cholmod_common *c);
 
+/* Whether the block set[m] with shift[m] (either NULL: none) is the one a factor holds,
+ * held_set[m] and held_shift[m] (held 0: none held); and the block kept as held. The factors
+ * of the near-stick block (this file's and contact_sparse.c's) refactor only when it moves. */
+int fr_block_is_held(size_t m, int held, const unsigned char *held_set, const double *held_shift,
+                     const unsigned char *set, const double *shift);
+void fr_block_hold(size_t m, unsigned char *held_set, double *held_shift, const unsigned char *set,
+                   const double *shift);
+
 #endif
