@@ -87,7 +87,7 @@ extern "C" {
 typedef struct fricreg_element_type fricreg_element_type;
 
 /** The most sliders of an Iwan type (fricreg_element_sliders). */
-#define FRICREG_ELEMENT_MAX_SLIDERS 256
+#define FRICREG_ELEMENT_MAX_SLIDERS 1024
 
 /** The types' codes: code - 1 is the type's index in fricreg_element_at's list, and the code
  *  names it in the Fortran 77 entries (FRELEV's ITYPE; fricreg.fi has these names). Fixed

@@ -36,7 +36,8 @@
 #define FRICREG_STRUCTURE_H
 
 #include "fricreg.h"
-#include "fricreg_types.h" /* enum fricreg_integrator, enum fricreg_error_estimate */
+#include "fricreg_element.h" /* fricreg_structure_add_elements's types */
+#include "fricreg_types.h"   /* enum fricreg_integrator, enum fricreg_error_estimate */
 /* Programs that got fricreg_sim.h's declarations through this header (1.7 and before) keep them. */
 #include "fricreg_sim.h"
 
@@ -634,6 +635,64 @@ enum fricreg_structure_value {
                                           until the next is made. The estimate's cost beside
                                           the run's own (since 1.8) */
 };
+
+/** Add me friction elements of one type (fricreg_element.h: fricreg_element_lookup,
+ *  fricreg_element_sliders, fricreg_element_at) beside those the structure holds, of any types:
+ *  one structure may hold Jenkins, Iwan, 2-D, 3-D contact and lift-off elements together.
+ *  Element i sees the dim = fricreg_element_dim(type) components u_i = J_i u, rows i dim ..
+ *  i dim + dim - 1 of J[me dim * ndof] (row-major; in the type's order: the tangential
+ *  components, then the normal displacement g of a type with a normal law), and pushes back
+ *  with the type's force f_i = F(u_i; its sliders' state) of fricreg_element_eval, so the
+ *  structure gets -J^T f. params[me np] holds each element's np = fricreg_element_nparams(type)
+ *  parameters in the type's layout (fricreg_element.h: kt, mun; k[ns], phi[ns]; then kn, n0,
+ *  gap). Units are the structure's: J dimensionless for displacement dofs, k in force per
+ *  displacement, bounds in force.
+ *
+ *  Each step evaluates every element by its type's kernel, exactly as a host code's call of
+ *  fricreg_element_eval would, inside the step's Newton: Newmark and HHT-alpha solve the
+ *  elements' forces implicitly on the kernels' consistent tangents (the condensed Newton of
+ *  fricreg_structure_set_jenkins, or one Newton with the contacts beside contacts of bound > 0),
+ *  central difference and GSL's steppers explicitly. The elements' dissipation and springs
+ *  enter the energy balance as fricreg_structure_set_jenkins's (FRICREG_SVALUE_JENKINS); their
+ *  states and forces are read back by fricreg_structure_get_elements. A structure of one type
+ *  gives the per-kind setters' answers bit for bit (those setters are this call's wrappers).
+ *
+ *  Copied. Adding elements is a model change, as a setter's: every element, the held ones too,
+ *  starts again with its sliders at 0 and its dissipation at 0, and K_eff is factored again at
+ *  the next step. me = 0 adds nothing (J and params may then be NULL). Allocates
+ *  O(nc^2 + nnz(J)), nc the elements' coordinates, all of them. Since 1.8 (FRICREG_1.8).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL (s, type, or J or params with me > 0); FRICREG_ESIZE if
+ *  ndof is not the structure's; FRICREG_EINVAL if an element's parameters are out of range
+ *  (the message names the element and says why, as fricreg_element_explain), a row of J is
+ *  zero, the elements would number more than 2^24, or the call comes from the observer;
+ *  FRICREG_ENONFINITE (an entry of J or params); FRICREG_ENOMEM. On failure the elements in
+ *  force are unchanged. */
+FRICREG_API int fricreg_structure_add_elements(fricreg_structure *s,
+                                               const fricreg_element_type *type, size_t me,
+                                               size_t ndof, const double J[],
+                                               const double params[]);
+
+/** Remove every element (fricreg_structure_add_elements, the per-kind setters). A model change:
+ *  K_eff is factored again at the next step. Since 1.8 (FRICREG_1.8).
+ *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL from the observer. */
+FRICREG_API int fricreg_structure_clear_elements(fricreg_structure *s);
+
+/** The number of elements the structure holds, of all types (0 for s = NULL). Since 1.8
+ *  (FRICREG_1.8). */
+FRICREG_API size_t fricreg_structure_element_count(const fricreg_structure *s);
+
+/** Copy the elements' forces, states and dissipations at the current time, in the order they
+ *  were added: f[sum dim_i], element i's dim_i = fricreg_element_dim components (tangential
+ *  forces, then the normal force N of a type with a normal law; the force the element exerts,
+ *  the structure receiving -J^T f); state[sum nstate_i], element i's committed state as
+ *  fricreg_element_eval takes it (its sliders' positions, nstate_i = fricreg_element_nstate);
+ *  D[me] each element's dissipation since fricreg_structure_set_initial (force times
+ *  displacement). Any one of f, state, D may be NULL. Since 1.8 (FRICREG_1.8).
+ *  Returns FRICREG_OK; FRICREG_ENULL (s, or all three arrays); FRICREG_ESIZE if me is not
+ *  fricreg_structure_element_count(s). */
+FRICREG_API int fricreg_structure_get_elements(const fricreg_structure *s, size_t me, double f[],
+                                               double state[], double D[]);
 
 /** Attach me Jenkins elements (fricreg_jenkins.h's 1-D element: a spring kt in series with a
  *  Coulomb slider of bound mun) to the structure, on the rows of the element matrix

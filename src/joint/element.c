@@ -65,7 +65,7 @@ int fricreg_element_eval(const fricreg_element_type *type, const double params[]
         return FRICREG_ENULL;
     int status = type->kind->check(type, params, state_in, u, NULL, 0);
     if (status == FRICREG_OK)
-        type->kind->eval(type, params, state_in, u, f, dfdu, dfdp, state_out);
+        type->kind->eval(type, params, state_in, u, f, dfdu, dfdp, state_out, NULL);
     return status;
 }
 

@@ -22,9 +22,12 @@ struct fr_element_kind {
      * parameters and state), a message into msg[len] where msg is not NULL. */
     int (*check)(const fricreg_element_type *type, const double *params, const double *state,
                  const double *u, char *msg, size_t len);
-    /* f, dfdu (or NULL), dfdp (or NULL), state_out (may be state_in) from checked inputs. */
+    /* f, dfdu (or NULL), dfdp (or NULL), state_out (may be state_in) from checked inputs, and
+     * each slider's force (laid out as the state; NULL: not wanted), which a structure books
+     * its energy by. */
     void (*eval)(const fricreg_element_type *type, const double *params, const double *state_in,
-                 const double *u, double *f, double *dfdu, double *dfdp, double *state_out);
+                 const double *u, double *f, double *dfdu, double *dfdp, double *state_out,
+                 double *slider_forces);
 };
 
 /* A type: its kind, its sliders and, for a family, its first member (the type of 1 slider,

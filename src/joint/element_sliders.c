@@ -161,7 +161,8 @@ static void normal_columns(const double *p, size_t ns, int td, double gg, const 
 }
 
 static void eval(const fricreg_element_type *type, const double *p, const double *state_in,
-                 const double *u, double *f, double *dfdu, double *dfdp, double *state_out)
+                 const double *u, double *f, double *dfdu, double *dfdp, double *state_out,
+                 double *slider_forces)
 {
     const struct fr_element_kind *kind = type->kind;
     int dim = kind->dim, td = dim - kind->normal;
@@ -209,6 +210,8 @@ static void eval(const fricreg_element_type *type, const double *p, const double
             ft[a] += fs[a];
             tg[a] += tgs[a];
         }
+        if (slider_forces != NULL)
+            memcpy(&slider_forces[(size_t)td * s], fs, (size_t)td * sizeof *fs);
         for (int a = 0; a < td * td; a++)
             t[a] += ts[a];
     }

@@ -40,12 +40,15 @@ FR_ELEMENT_TABLE(FR_DECLARE, FR_DECLARE)
 #define FR_MEMBERS64(name, i)                                                          \
     FR_MEMBERS16(name, i), FR_MEMBERS16(name, (i) + 16), FR_MEMBERS16(name, (i) + 32), \
         FR_MEMBERS16(name, (i) + 48)
+#define FR_MEMBERS256(name, i)                                                          \
+    FR_MEMBERS64(name, i), FR_MEMBERS64(name, (i) + 64), FR_MEMBERS64(name, (i) + 128), \
+        FR_MEMBERS64(name, (i) + 192)
 #define FR_FAMILY_TYPES(name)                                                       \
     static const fricreg_element_type name##_types[FRICREG_ELEMENT_MAX_SLIDERS] = { \
-        FR_MEMBERS64(name, 0), FR_MEMBERS64(name, 64), FR_MEMBERS64(name, 128),     \
-        FR_MEMBERS64(name, 192)};
-#if FRICREG_ELEMENT_MAX_SLIDERS != 256
-#error "FR_FAMILY_TYPES lists 256 members"
+        FR_MEMBERS256(name, 0), FR_MEMBERS256(name, 256), FR_MEMBERS256(name, 512), \
+        FR_MEMBERS256(name, 768)};
+#if FRICREG_ELEMENT_MAX_SLIDERS != 1024
+#error "FR_FAMILY_TYPES lists 1024 members"
 #endif
 
 FR_ELEMENT_TABLE(FR_FIXED_TYPE, FR_FAMILY_TYPES)

@@ -24,6 +24,7 @@
 #include <string.h>
 
 #include "ctx/ctx_driver.h"
+#include "joint/element_kind.h"
 #include "structure_internal.h"
 
 #define MAGIC "FRCKPT1" /* 8 bytes with its NUL */
@@ -137,11 +138,40 @@ struct fingerprint {
     uint64_t model, excitation;
 };
 
+/* The sum over the elements' parameters: every slider's k, every slider's phi, then the normal
+ * laws' n0 and kn, so that a set of one type without gaps hashes as 1.7's checkpoints did;
+ * then, for any other set, each element's type and gap. */
+static uint64_t hash_elements(uint64_t h, const struct fr_elements *e)
+{
+    for (int half = 0; half < 2; half++) /* the ks, then the phis */
+        for (size_t i = 0; i < e->me; i++)
+            h = fnv1a(h, e->params + e->par[i] + half * e->type[i]->ns,
+                      e->type[i]->ns * sizeof(double));
+    int gap = 0;
+    for (int law = 0; law < 2; law++) /* n0, then kn */
+        for (size_t i = 0; i < e->me; i++)
+            if (e->normal[i] < e->nc) {
+                const double *p = e->params + e->par[i] + 2 * e->type[i]->ns;
+                h = fnv1a(h, &p[law == 0 ? 1 : 0], sizeof(double));
+                gap |= p[2] != 0.0;
+            }
+    if (e->uniform && !gap)
+        return h;
+    for (size_t i = 0; i < e->me; i++) {
+        const char *name = fricreg_element_name(e->type[i]);
+        uint64_t ns = e->type[i]->ns;
+        h = fnv1a(fnv1a(h, name, strlen(name)), &ns, sizeof ns);
+        if (e->normal[i] < e->nc)
+            h = fnv1a(h, e->params + e->par[i] + 2 * e->type[i]->ns + 2, sizeof(double));
+    }
+    return h;
+}
+
 static void fingerprint_of(const fricreg_structure *s, struct fingerprint *fp)
 {
     const struct fr_elements *e = &s->el;
     memset(fp, 0, sizeof *fp);
-    uint64_t counts[NCOUNTS] = {s->n, s->m, e->me, e->ns, e->nc, (uint64_t)e->dim, e->n0 != NULL};
+    uint64_t counts[NCOUNTS] = {s->n, s->m, e->me, e->ns, e->nc, (uint64_t)e->dim, e->nnormal > 0};
     int32_t flags[NFLAGS] = {s->contacts_set,    s->rayleigh,   s->scheme,
                              fr_ctx_law(s->ctx), s->newton_max, s->estimate_on | s->companions << 2,
                              s->unguarded}; /* on: 0 .. 2, companions above it */
@@ -157,16 +187,8 @@ static void fingerprint_of(const fricreg_structure *s, struct fingerprint *fp)
     h = hash_sparse(h, s->Jt);
     h = fnv1a(h, s->r->data, s->n * sizeof(double));
     h = fnv1a(h, s->p->data, s->n * sizeof(double));
-    if (e->me > 0) {
-        size_t sliders = e->me * e->ns;
-        h = hash_sparse(h, e->Jt);
-        h = fnv1a(h, e->k, sliders * sizeof *e->k);
-        h = fnv1a(h, e->phi, sliders * sizeof *e->phi);
-        if (e->n0 != NULL) {
-            h = fnv1a(h, e->n0, e->me * sizeof *e->n0);
-            h = fnv1a(h, e->kn, e->me * sizeof *e->kn);
-        }
-    }
+    if (e->me > 0)
+        h = hash_elements(hash_sparse(h, e->Jt), e);
     fp->model = h;
     h = hash_record(FNV_START, &s->ground);
     h = hash_record(h, &s->load);
@@ -239,7 +261,7 @@ static void elements(struct io *io, struct fr_elements *e)
 {
     if (e->me == 0)
         return;
-    size_t slots = e->me * e->ns * (size_t)e->dim * sizeof(double), nc = e->nc * sizeof(double);
+    size_t slots = e->nslots * sizeof(double), nc = e->nc * sizeof(double);
     double *slot_arrays[] = {e->wc, e->wt, e->fs, e->fs1};
     for (size_t k = 0; k < 4; k++)
         field(io, slot_arrays[k], slots);

@@ -74,9 +74,8 @@ void fr_energy_step(fricreg_structure *s, const gsl_vector *u1, const gsl_vector
     }
     const struct fr_elements *e = &s->el; /* its sliders' slip times the mean force */
     for (size_t i = 0; i < e->me; i++) {
-        double d = 0.0;
-        size_t sl = e->ns * (size_t)e->dim; /* a 2-D slider: dw . (f + f1)/2 */
-        for (size_t j = i * sl; j < (i + 1) * sl; j++)
+        double d = 0.0; /* a 2-D slider: dw . (f + f1)/2 */
+        for (size_t j = e->slot[i]; j < e->slot[i + 1]; j++)
             d += (e->wt[j] - e->wc[j]) * (0.5 * e->fs[j] + 0.5 * e->fs1[j]);
         e->dissipation[i] += d;
         s->energy.jenkins += d;

@@ -168,16 +168,19 @@ static int direction(fricreg_structure *s)
     if (!context_rows(s, c) && (status = dense_rows(s, c)) != FRICREG_OK)
         return status;
     for (size_t k = 0; k < nc; k++) { /* dfe - T_e ce (C^T df - E dfe) = -G_e */
-        double *row = j->T + (m + k) * dim, t = e->tan[k];
-        size_t p = fr_elements_partner(e, k); /* tang: dfe/dg, or the 2-D block's other entry */
-        size_t pn = fr_elements_normal_column(e, k); /* tagn: a 3-D contact's dfe/dg */
-        double tg = p < nc ? e->tang[k] : 0.0, tn = pn < nc ? e->tagn[k] : 0.0;
+        double *row = j->T + (m + k) * dim, t[3] = {0.0, 0.0, 0.0};
+        size_t p[3] = {k, k, k}; /* the tangent's row: its diagonal, then up to two others */
+        int n = fr_elements_tangent_row(e, k, p, t);
+        for (int r = n; r < 3; r++)
+            p[r] = k, t[r] = 0.0;
         for (size_t i = 0; i < m; i++)
-            row[i] = -ce * (t * j->C[i * nc + k] + (tg != 0.0 ? tg * j->C[i * nc + p] : 0.0) +
-                            (tn != 0.0 ? tn * j->C[i * nc + pn] : 0.0));
+            row[i] = -ce *
+                     (t[0] * j->C[i * nc + k] + (t[1] != 0.0 ? t[1] * j->C[i * nc + p[1]] : 0.0) +
+                      (t[2] != 0.0 ? t[2] * j->C[i * nc + p[2]] : 0.0));
         for (size_t l = 0; l < nc; l++)
-            row[m + l] = ce * (t * e->E[k * nc + l] + (tg != 0.0 ? tg * e->E[p * nc + l] : 0.0) +
-                               (tn != 0.0 ? tn * e->E[pn * nc + l] : 0.0));
+            row[m + l] = ce * (t[0] * e->E[k * nc + l] +
+                               (t[1] != 0.0 ? t[1] * e->E[p[1] * nc + l] : 0.0) +
+                               (t[2] != 0.0 ? t[2] * e->E[p[2] * nc + l] : 0.0));
         row[m + k] += 1.0;
         j->rhs[m + k] = -j->ge[k];
     }

@@ -3,8 +3,9 @@
  * above it in this list, never one below (tests/module_layers.sh): busy.c, changed.c (the
  * setters' one hook), contact_factor.c, contact_sparse.c, joint_storage.c, masked_factor.c,
  * step_pattern.c, warn_track.c (what the warnings judge, as the run steps); guard.c (the step guard), model.c
- * (the model matrices), newton_matrix.c, ode_tolerances.c; fundamental_frequency.c, jenkins.c
- * (Jenkins elements), prepare.c (the set-up of a model), step_newton.c, structure_gsl.c;
+ * (the model matrices), newton_matrix.c, ode_tolerances.c; element_step.c (the elements' forces
+ * and Newton), elements.c (the elements of any types), jenkins.c (the per-kind setters);
+ * fundamental_frequency.c, prepare.c (the set-up of a model), step_newton.c, structure_gsl.c;
  * contact_step.c, energy.c (the balance); structure.c (life cycle, setters, getters);
  * forces.c (the forces of a state); central_difference.c, joint_step.c (elements beside
  * contacts); newmark.c; step.c (stepping, plain); structure_ode.c (GSL's steppers, plain);
@@ -23,6 +24,7 @@
 #include "base/error.h"
 #include "base/warning.h"
 #include "contact_factor.h"
+#include "fricreg_element.h"
 #include "fricreg_structure.h"
 #include "newton_matrix.h"
 #include "step_newton.h"
@@ -47,21 +49,17 @@ struct fr_energy {
     double jenkins;      /* the Jenkins elements' dissipation, all of them */
 };
 
-/* Elements on rows of J_e (jenkins.c): me = 0 without any. Each is ns Jenkins sliders in
- * parallel (ns = 1: a Jenkins element, ns > 1: an Iwan element), slider s a spring k_s in
- * series with a slider of bound phi_s at q = J_e u, force k_s (q - w_s); the element's force fe
- * is their sum (so -J_e^T fe on the structure), each returned by slider.h's mapping from its
- * committed wc. Per-slider arrays are [me ns], element i's slider s at i ns + s.
- * With a normal law (n0 != NULL) element i also has the row i of J_n, g = J_n u, the normal
- * force N = max(0, n0 + kn g) and the bound phi_s N (phi holding mu): the element
- * coordinates are then (q, g), nc = 2 me of them, and the forces (fe, N), -J_n^T N acting on
- * the structure too; without, nc = me.
- * 2-D elements (dim = 2, ns = 1) have two coordinates each, rows 2i and 2i + 1 of J_e,
- * nt = 2 me tangential coordinates (nt = me in 1-D): per-slider arrays are then [me ns dim], the
- * tangent a 2x2 block per element, its diagonal in tan and its off-diagonal in tang ([nc]).
- * With a normal law too (the 3-D contact element: x, y, n) the coordinates are the 2 me
- * tangential ones, then the me normal ones (nc = 3 me), and a tangential row k also has
- * dfe/dg in tagn[k] at column fr_elements_normal_column. */
+/* The elements (elements.c): me = 0 without any. Element i is of a type of fricreg_element.h
+ * (its kernel, evaluated on the structure's state arrays as a host evaluates it on its own),
+ * with its parameters at params + par[i] in the type's layout. Its dim components sit at the
+ * element coordinates y = J_e u: its td tangential ones (td = dim without a normal law, dim - 1
+ * with one) at at[i] .. at[i] + td - 1, among the nt tangential coordinates of all elements in
+ * order, and its normal one, if it has one, at normal[i] (nc: none), after them; so the
+ * coordinates of a set of one type are those of 1.x's setters: J_e's rows, then J_n's.
+ * The structure receives -J^T fe, fe the elements' forces at their coordinates.
+ * Each element's ns sliders have td positions each, its state: the slots slot[i] ..
+ * slot[i + 1] - 1 of the slot arrays (wc, wt, fs, fs1: per slider, per axis, as the kernel's
+ * state). Its tangent dfe/dy is the kernel's dfdu, dim x dim row-major at tb + blk[i]. */
 /* The joint step's dense storage (joint_storage.c), for elements beside contacts of bound > 0:
  * m contacts, nc element coordinates, dim = m + nc; row-major. */
 struct fr_joint {
@@ -81,22 +79,27 @@ struct fr_joint {
 };
 
 struct fr_elements {
-    size_t me, ns, nc;
-    int dim;                   /* 1, or 2: each element on two rows of J_e (nt = dim me) */
-    cholmod_sparse *Jt;        /* n x nc: J_e^T, then J_n^T */
-    double *k, *phi;           /* [me ns] */
-    double *n0, *kn;           /* [me] the normal law, or NULL */
-    double *kstick;            /* [nc] sum of k (all sticking), then kn (closed) */
-    double *wc, *wt;           /* [me ns] committed and trial slider positions */
-    double *fs, *fs1;          /* [me ns] slider forces at t and at the step's end */
+    size_t me, nc, nt, nslots;
+    size_t ns;   /* the sliders of every element if they all have as many, else 0 */
+    int dim;     /* the tangential components of every element if they all have as many, else 0 */
+    int uniform; /* every element of one type */
+    size_t nnormal;                    /* the elements with a normal law */
+    const fricreg_element_type **type; /* [me] */
+    size_t *at, *normal;               /* [me] the coordinates: tangential, normal (or nc) */
+    size_t *par, *slot, *blk;          /* [me + 1] offsets into params, the slots, tb */
+    size_t *owner;                     /* [nc] the element of a coordinate */
+    double *params;                    /* [par[me]] */
+    cholmod_sparse *Jt;                /* n x nc: J_e^T, then J_n^T */
+    double *kstick;                    /* [nc] sum of k (all sticking), then kn (closed) */
+    double *wc, *wt;                   /* [nslots] committed and trial slider positions */
+    double *fs, *fs1;                  /* [nslots] slider forces at t and at the step's end */
     double *fe, *fe1;          /* [nc] element (then normal) forces at t and at the step's end */
-    double *wc_held, *fs_held; /* [me ns] before a step's equilibrium, restored if it fails */
+    double *wc_held, *fs_held; /* [nslots] before a step's equilibrium, restored if it fails */
     double *fe_held;           /* [nc] */
     double *dissipation;       /* [me] since set_initial */
-    double *q0, *y, *g, *df, *ft, *gt, *tan; /* [nc] Newton's scratch */
-    double *tang; /* [me] dfe/dg (normal law), [nc] the 2x2 blocks' off-diagonal (dim 2), or NULL */
-    double *tagn; /* [nc] dfe/dg of 2-D elements with a normal law (rows < 2 me), or NULL */
-    double *tau, *norm; /* [nc] the Newton matrix's QR (GSL's, pivoted) */
+    double *q0, *y, *fy, *g, *df, *ft, *gt; /* [nc] Newton's scratch: fy = F(y) */
+    double *tb;                             /* [blk[me]] the tangent blocks */
+    double *tau, *norm;                     /* [nc] the Newton matrix's QR (GSL's, pivoted) */
     double *E, *A; /* [nc nc] J K_eff^-1 J^T for step_dt (J = J_e, or J_e over J_n), Newton's */
     size_t *perm;  /* [nc] its QR's permutation */
     int E_valid;   /* E is K_eff's at step_dt */
@@ -104,7 +107,7 @@ struct fr_elements {
                       exact (warnings.c) */
     struct fr_joint joint; /* beside contacts of bound > 0 (joint_step.c) */
 
-    /* The first 1-D element whose sliders' sums overflowed at the last fr_elements_residual:
+    /* The first element whose sliders' sums overflowed at the last fr_elements_residual:
      * 1 + its index (0: none), which sum ("force", "tangent" or "df/dg") and its value. */
     size_t overflow;
     const char *overflow_what;
@@ -409,7 +412,7 @@ void fr_warn_track_step(fricreg_structure *s, double dt, int ode);
 void fr_warn_track_reset(fricreg_structure *s);
 void fr_warn_track_ode_tolerances(fricreg_structure *s, double rtol, double atol);
 
-/* jenkins.c: the elements' part of the step. elements_equilibrium: fe at q = J_e u from wc
+/* element_step.c: the elements' part of the step. elements_equilibrium: fe at q = J_e u from wc
  * (committed: the mapping is idempotent), w -= J_e^T fe. elements_explicit: fe1, wt at
  * J_e u1, w -= J_e^T fe1 (central difference); both FRICREG_ENONFINITE where an element's
  * sliders' sum overflows. elements_newmark: Newton on fe1 with b[n] the
@@ -417,24 +420,15 @@ void fr_warn_track_ode_tolerances(fricreg_structure *s, double rtol, double atol
  * is within newton_tol times the larger of scale and max |fe|; then b -= (1 + alpha) J_e^T fe1. elements_commit after an accepted step. */
 int fr_elements_compliance(fricreg_structure *s, int joint);
 /* G = fe - F(y) at the coordinates e->y (formed by the caller), into g[nc]; the tangents into
- * e->tan (and e->tang), the trial sliders into e->wt, e->fs1; returns ||G||_2, *rinf its
- * largest entry (NaN propagates). An element whose sliders' sums overflow is recorded in
- * e->overflow (fr_elements_overflow reports it). */
+ * e->tb, the trial sliders into e->wt, e->fs1; returns ||G||_2, *rinf its largest entry (NaN
+ * propagates). An element whose sliders' sums overflow is recorded in e->overflow
+ * (fr_elements_overflow reports it). */
 double fr_elements_residual(struct fr_elements *e, const double fe[], double g[], double *rinf);
-/* The column of coordinate k's second tangent entry (tang[k]): its partner in a 2-D element,
- * its normal coordinate under a normal law; nc if it has none. */
-static inline size_t fr_elements_partner(const struct fr_elements *e, size_t k)
-{
-    if (e->dim == 2)
-        return k < 2 * e->me ? k ^ 1 : e->nc;
-    return k < e->me && e->n0 != NULL ? e->me + k : e->nc;
-}
-/* The column of coordinate k's dfe/dg entry (tagn[k]) in a 2-D element with a normal law: its
- * element's normal coordinate; nc if it has none (1-D elements keep theirs in tang). */
-static inline size_t fr_elements_normal_column(const struct fr_elements *e, size_t k)
-{
-    return e->tagn != NULL && k < 2 * e->me ? 2 * e->me + k / 2 : e->nc;
-}
+/* Row k of the tangent dfe/dy at the last fr_elements_residual, as its nonzero pattern: the
+ * columns into col[] and the entries into val[], the diagonal first, then the element's other
+ * tangential coordinates in order, then its normal one (the order in which the Newton
+ * matrices sum them); returns their count, 1 to 3. */
+int fr_elements_tangent_row(const struct fr_elements *e, size_t k, size_t col[3], double val[3]);
 int fr_elements_equilibrium(fricreg_structure *s, gsl_vector *w);
 int fr_elements_explicit(fricreg_structure *s, const gsl_vector *u1, gsl_vector *w, double t);
 int fr_elements_newmark(fricreg_structure *s, double dt, double scale, gsl_vector *b,
@@ -460,7 +454,7 @@ int fr_elements_joint(const fricreg_structure *s);
 
 /* joint_storage.c: allocate: the dense storage for m contacts and nc coordinates (kept if the
  * sizes hold), 0 when out of memory; compliances: W_eff and W dense from the factors (C and E
- * are jenkins.c's). */
+ * are element_step.c's). */
 int fr_joint_allocate(struct fr_joint *j, size_t m, size_t nc);
 void fr_joint_compliances(fricreg_structure *s);
 void fr_joint_free(struct fr_joint *j);
@@ -494,7 +488,12 @@ int fr_estimate_companion(const fricreg_structure *s, fricreg_structure **out, c
 void fr_estimate_follow(fricreg_structure *s, int integrator, double dt, double rtol, double atol);
 void fr_estimate_sync(fricreg_structure *s);
 void fr_estimate_check(fricreg_structure *s); /* warnings.c's check of the estimate */
-/* jenkins.c: a copy of src's elements on dst (the companion), sliders at w = 0. */
+/* elements.c: the elements of types[me] with their params (each its type's nparams, in order)
+ * on Jt (n x nc in the coordinates' order: taken, freed here on every path), in place of those
+ * s holds, every slider at w = 0. FRICREG_OK; FRICREG_ENOMEM (recorded, under who). */
+int fr_elements_install(fricreg_structure *s, size_t me, const fricreg_element_type *const types[],
+                        const double params[], cholmod_sparse *Jt, const char *who);
+/* elements.c: a copy of src's elements on dst (the companion), sliders at w = 0. */
 int fr_elements_clone(fricreg_structure *dst, const fricreg_structure *src);
 
 #endif
