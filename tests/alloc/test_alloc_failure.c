@@ -1698,6 +1698,64 @@ static const struct script structure_iwan_script = {"structure with Iwan element
                                                     structure_errcode,
                                                     structure_close};
 
+/* The same frame with elements of two types added one after the other
+ * (fricreg_structure_add_elements): a Jenkins element on J's first row, then an Iwan element
+ * of three sliders on its second; a failed add keeps the first. */
+static const double FRAME_MIX_JENKINS[2] = {5, 5}, FRAME_MIX_IWAN[6] = {60, 50, 40, 1, 1.5, 2.5};
+
+static void see_structure_mix(const fricreg_structure *s, struct view *v)
+{
+    double f[2] = {-1, -1}, w[4] = {-1, -1, -1, -1}, D[2] = {-1, -1}, value = -1.0;
+    size_t me = fricreg_structure_element_count(s);
+    see_structure(s, v);
+    see(v, (double)me);
+    see(v, fricreg_structure_get_elements(s, me, f, w, D));
+    see_all(v, f, 2), see_all(v, w, 4), see_all(v, D, 2);
+    see(v, fricreg_structure_get_value(s, FRICREG_SVALUE_JENKINS, &value));
+    see(v, value);
+}
+
+static void structure_mix_observe(void *obj, struct view *v)
+{
+    double t = 0.0;
+    see_structure_mix(obj, v);
+    fricreg_structure_get_value(obj, FRICREG_SVALUE_TIME, &t);
+    see(v, fricreg_structure_run(obj, ST_DT, t + 0.1));
+    see_structure_mix(obj, v);
+}
+
+static const char *const structure_mix_calls[] = {"set_mass",     "set_stiffness",
+                                                  "set_contacts", "set_bounds (0)",
+                                                  "set_load(1)",  "add Jenkins",
+                                                  "the scheme",   "add an Iwan element",
+                                                  "run"};
+
+static int structure_mix_call(void *obj, int i, struct view *v)
+{
+    switch (i) {
+    case 5:
+        return fricreg_structure_add_elements(obj, fricreg_element_lookup("jenkins"), 1, 3, FRAME_J,
+                                              FRAME_MIX_JENKINS);
+    case 7:
+        return fricreg_structure_add_elements(
+            obj, fricreg_element_sliders(fricreg_element_lookup("iwan"), 3), 1, 3, FRAME_J + 3,
+            FRAME_MIX_IWAN);
+    default: return structure_jenkins_call(obj, i, v);
+    }
+}
+
+static const struct script structure_mix_script = {"structure with a mix of element types",
+                                                   9,
+                                                   structure_mix_calls,
+                                                   0,
+                                                   0,
+                                                   structure_open,
+                                                   structure_mix_call,
+                                                   NULL,
+                                                   structure_mix_observe,
+                                                   structure_errcode,
+                                                   structure_close};
+
 /* The same frame with one 2-D Jenkins element on J's two rows: set_jenkins_2d (dense)
  * replaced by set_jenkins_2d_csr (other parameters); the contacts' bounds 0, or > 0 beside it
  * (the joint step, Newmark and HHT-alpha only). */
@@ -3301,6 +3359,19 @@ START_TEST(test_structure_iwan_run)
 }
 END_TEST
 
+START_TEST(test_structure_mix_run)
+{
+    static const char *const names[3] = {"structure newmark, a mix of element types",
+                                         "structure hht, a mix of element types",
+                                         "structure central difference, a mix of element types"};
+    current_scheme = _i;
+    struct script sc = structure_mix_script;
+    sc.name = names[_i];
+    struct tally t = fail_each_allocation(&sc);
+    ck_assert_int_ge(t.enomem, t.cases - 30); /* CHOLMOD's own fallbacks, as above */
+}
+END_TEST
+
 START_TEST(test_structure_jenkins_2d_run)
 {
     static const char *const names[5] = {"structure newmark, 2-D Jenkins elements",
@@ -3497,6 +3568,7 @@ static Suite *alloc_suite(void)
     tcase_add_loop_test(drivers, test_structure_jenkins_run, 0, 3);
     tcase_add_loop_test(drivers, test_structure_joint_run, 0, 2); /* implicit: the joint step */
     tcase_add_loop_test(drivers, test_structure_iwan_run, 0, 3);
+    tcase_add_loop_test(drivers, test_structure_mix_run, 0, 3);
     tcase_add_loop_test(drivers, test_structure_jenkins_2d_run, 0, 5);
     tcase_add_loop_test(drivers, test_structure_normal_run, 0, 3);
     tcase_add_loop_test(drivers, test_structure_contact_3d_run, 0, 3);
