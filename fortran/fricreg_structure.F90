@@ -7,7 +7,7 @@
 module fricreg_structure_m
   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_int64_t, c_ptr, c_funptr, &
                                          c_null_ptr, c_null_funptr, c_associated, c_loc, &
-                                         c_funloc, c_int8_t
+                                         c_funloc, c_int8_t, c_null_char
   use fricreg_c
   use fricreg_sim_c
   use fricreg_base_m, only: fricreg_object, fricreg_error_string, as_size
@@ -33,6 +33,10 @@ module fricreg_structure_m
     procedure :: set_damping => struct_set_damping
     procedure :: set_rayleigh => struct_set_rayleigh
     procedure :: set_contacts => struct_set_contacts
+    procedure :: add_elements => struct_add_elements
+    procedure :: clear_elements => struct_clear_elements
+    procedure :: element_count => struct_element_count
+    procedure :: get_elements => struct_get_elements
     procedure :: set_jenkins => struct_set_jenkins
     procedure :: get_jenkins_state => struct_get_jenkins_state
     procedure :: set_jenkins_2d => struct_set_jenkins_2d
@@ -226,6 +230,83 @@ contains
                                        fricreg_structure_set_contacts(self%ptr, self%m, self%n, &
                                                                       Jc))
   end function struct_set_contacts
+
+  !> Elements of the type called name (fricreg_element_lookup; ns sliders for an Iwan type,
+  !> default 1) beside those the structure holds, of any types (fricreg_structure_add_elements):
+  !> element i's dim components (the type's: tangential, then the normal one) on rows
+  !> (i-1) dim + 1 .. i dim of J(me dim, ndof) in Fortran's order, its parameters params(:, i)
+  !> in the type's layout (fricreg_element.h); me = size(params, 2). Every element, the held
+  !> ones too, starts again at rest. FRICREG_EINVAL for an unknown name or ns; FRICREG_ESIZE
+  !> unless params has the type's nparams rows and J is (me dim, ndof); C's codes.
+  function struct_add_elements(self, name, J, params, ns) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    character(len=*), intent(in) :: name
+    real(c_double), intent(in) :: J(:, :)
+    real(c_double), intent(in), contiguous :: params(:, :)
+    integer, intent(in), optional :: ns
+    integer(c_int) :: status
+    type(c_ptr) :: t
+    integer :: n
+    real(c_double), allocatable :: Jc(:, :) ! J transposed: C's row-major J
+    n = 1
+    if (present(ns)) n = ns
+    status = self%ready('add_elements', 'structure')
+    if (status /= FRICREG_OK) return
+    t = c_null_ptr
+    if (n >= 1) t = fricreg_element_sliders(fricreg_element_lookup(trim(name) // c_null_char), &
+                                            int(n, c_size_t))
+    if (.not. c_associated(t)) then
+      status = self%fail(FRICREG_EINVAL, 'add_elements: no element type "' // trim(name) // &
+                         '" with that many sliders')
+      return
+    end if
+    status = self%check_size('add_elements', 'params, 1', size(params, 1), &
+                             fricreg_element_nparams(t))
+    if (status == FRICREG_OK) status = self%check_size('add_elements', 'J, 1', size(J, 1), &
+                                                       int(size(params, 2), c_size_t) * &
+                                                       int(fricreg_element_dim(t), c_size_t))
+    if (status == FRICREG_OK) status = self%check_size('add_elements', 'J, 2', size(J, 2), self%n)
+    if (status == FRICREG_OK) allocate (Jc, source=transpose(J))
+    if (status == FRICREG_OK) status = self%record( &
+                                       fricreg_structure_add_elements(self%ptr, t, &
+                                                                      int(size(params, 2), &
+                                                                          c_size_t), &
+                                                                      self%n, Jc, params))
+  end function struct_add_elements
+
+  !> Remove every element (fricreg_structure_clear_elements).
+  function struct_clear_elements(self) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    integer(c_int) :: status
+    status = self%ready('clear_elements', 'structure')
+    if (status == FRICREG_OK) status = self%record(fricreg_structure_clear_elements(self%ptr))
+  end function struct_clear_elements
+
+  !> The number of elements held, of all types (fricreg_structure_element_count; 0 before
+  !> create).
+  integer function struct_element_count(self)
+    class(fricreg_structure), intent(in) :: self
+    struct_element_count = 0
+    if (c_associated(self%ptr)) struct_element_count = int(fricreg_structure_element_count(self%ptr))
+  end function struct_element_count
+
+  !> The elements' forces f(sum dim_i), states state(sum nstate_i) and dissipations D(me), in
+  !> the order added (fricreg_structure_get_elements); each optional, at least one given; me =
+  !> element_count(). FRICREG_ESIZE if D is not of size me; FRICREG_ENULL if none is given.
+  function struct_get_elements(self, f, state, D) result(status)
+    class(fricreg_structure), intent(inout) :: self
+    real(c_double), intent(inout), contiguous, optional :: f(:), state(:), D(:)
+    integer(c_int) :: status
+    integer(c_size_t) :: me
+    status = self%ready('get_elements', 'structure')
+    if (status /= FRICREG_OK) return
+    me = fricreg_structure_element_count(self%ptr)
+    if (present(D)) status = self%check_size('get_elements', 'D', size(D), me)
+    if (status == FRICREG_OK) status = self%unrecorded('get_elements', &
+                                                       fricreg_structure_get_elements(self%ptr, &
+                                                                                      me, f, &
+                                                                                      state, D))
+  end function struct_get_elements
 
   !> Jenkins elements on the rows of Je(me, ndof) in Fortran's order (fricreg_structure_set_jenkins:
   !> element i sees q_i = (Je u)_i, a spring kt(i) in series with a slider of bound mun(i));

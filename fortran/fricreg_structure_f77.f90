@@ -71,6 +71,11 @@
 !   FRSTEC(H, WHICH, STAT)                       _set_error_companions (0 finer, 1 coarser)
 !   FRSTCS(H, SOLVER, STAT)                      _set_contact_solver
 !   FRSTCG(H, SOLVER, STAT)                      _get_contact_solver
+!   FRSTAE(H, ITYPE, NS, ME, NDOF, J, PARAMS, STAT)   _add_elements (J(ME IDIM, NDOF)
+!                                                transposed, PARAMS(NPAR, ME); ITYPE as FRELEV's)
+!   FRSTXE(H, STAT)                              _clear_elements
+!   FRSTNE(H, ME, STAT)                          _element_count
+!   FRSTGE(H, ME, F, STATE, D, STAT)             _get_elements
 !   FRSTOD(H, INTEG, DT, RTOL, ATOL, TEND, STAT) _run_ode (ATOL = -1: tolerances from eps)
 !   FRSTOT(H, N, ATOL, STAT)                     _set_ode_abs_tolerances (N = 0 removes them)
 !   FRSTOG(H, N, ATOL, STAT)                     _get_ode_abs_tolerances
@@ -83,7 +88,7 @@
 !   FRCSTM(H, M, ZS, ZP, AP, FORMAT, WP, WI, WV, EP, EI, EV, C, TOL, MAXIT, FLAGS, F, ITERS,
 !          CONV, STAT)                           fricreg_ctx_solve_step_matrix (any storage)
 ! The getters (FRSTG*, FRSTJS, FRSTS2, FRSTIS, FRSTNF, FRSTPK, FRSTPE, FRSTDE, FRSTJE,
-! FRSTEK, FRSTOG, FRSTCG) read a const structure: C records no failure of theirs, so FRSTER still shows the
+! FRSTEK, FRSTOG, FRSTCG, FRSTNE, FRSTGE) read a const structure: C records no failure of theirs, so FRSTER still shows the
 ! failure before (their STAT is the answer). So do the few refusals made here, before C is
 ! called, of counts that would wrap into size_t: FRSTCR's NDOF or M below 1 (there is no
 ! structure yet to record it), FRSTAG's and FRSTLD's N below 0, FRSTIW's, FRSTIL's and
@@ -92,11 +97,12 @@
 ! Generated, not here: the entry points that are one C call (FRSTMC, FRSTKC, FRSTCC, FRSTJC,
 ! FRSTJR, FRSTMX, FRSTMF, FRSTKF, FRSTCF, FRSTCA, FRSTBD, FRSTLW, FRSTIV, FRSTU0, FRSTNM, FRSTHH,
 ! FRSTCD, FRSTNT, FRSTSP, FRSTTE, FRSTGS, FRSTGF, FRSTGD, FRSTGV, FRSTEE, FRSTPK, FRSTPE,
-! FRSTDE, FRSTJE, FRSTAR, FRSTCS, FRSTOD, FRSTOG, FRSTGT, FRSTJS, FRSTS2, FRSTNF) are a line each, with their doc
+! FRSTDE, FRSTJE, FRSTAR, FRSTCS, FRSTXE, FRSTGE, FRSTOD, FRSTOG, FRSTGT, FRSTJS, FRSTS2, FRSTNF) are a line each, with their doc
 ! comments, in the table fricreg_structure_f77.txt, which fortran/gen_f77.cmake turns into
 ! fricreg_structure_f77_generated.f90 at build time. Those below have logic of their own: a
 ! handle made or released, a refused count, J transposed into a scratch copy, the message, C's
-! ints copied into the caller's INTEGER (FRSTEK, FRSTCG).
+! ints copied into the caller's INTEGER (FRSTEK, FRSTCG, FRSTNE), an element type from its code
+! (FRSTAE).
 
 !> FRSTCR(NDOF, M, H, STAT): create a structure of NDOF >= 1 degrees of freedom and M >= 1
 !> contacts into H, with C's defaults (M = I, C = K = 0, J unset, law (4), eps = 1e-3,
@@ -468,6 +474,58 @@ subroutine frstcg(h, solver, stat)
   stat = int(fricreg_structure_get_contact_solver(fricreg_handle_to_ptr(h), k))
   if (stat == FRICREG_OK) solver = int(k)
 end subroutine frstcg
+
+!> FRSTAE(H, ITYPE, NS, ME, NDOF, J, PARAMS, STAT): ME elements of the type of code ITYPE with
+!> NS sliders (FRELEV's codes: 1 jenkins ... 9 iwan_3d; NS 1 but for the Iwan types) beside
+!> those the structure holds, of any types (C's fricreg_structure_add_elements): element I's
+!> IDIM components (FRELSZ; tangential, then the normal one) on rows (I - 1) IDIM + 1 ..
+!> I IDIM of J(ME IDIM, NDOF), its parameters PARAMS(1:NPAR, I) in the type's layout. Every
+!> element, the held ones too, starts again at rest. FRICREG_EINVAL for a code or NS of no
+!> type, or ME below 0 (nothing changed); C's codes. Since 1.8.
+subroutine frstae(h, itype, ns, me, ndof, j, params, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: itype, ns, me, ndof
+  double precision, intent(in) :: j(*), params(*)
+  integer, intent(out) :: stat
+  double precision, allocatable :: jt(:, :)
+  type(c_ptr) :: t
+  integer :: rows, nn, alloc, r, c
+  t = fricreg_f77_element_type(int(itype, c_int64_t), int(ns, c_int64_t))
+  if (.not. c_associated(t) .or. me < 0) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  rows = me * int(fricreg_element_dim(t))
+  nn = max(ndof, 0)
+  allocate (jt(nn, rows), stat=alloc)
+  if (alloc /= 0) then
+    stat = int(FRICREG_ENOMEM)
+    return
+  end if
+  do c = 1, nn ! J(ROWS, NDOF), column-major, into C's row-major
+    do r = 1, rows
+      jt(c, r) = j(r + (c - 1) * rows)
+    end do
+  end do
+  stat = int(fricreg_structure_add_elements(fricreg_handle_to_ptr(h), t, int(me, c_size_t), &
+                                            int(ndof, c_size_t), jt, params))
+end subroutine frstae
+
+!> FRSTNE(H, ME, STAT): ME, the number of elements the structure holds, of all types (C's
+!> fricreg_structure_element_count). Since 1.8.
+subroutine frstne(h, me, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(inout) :: me
+  integer, intent(out) :: stat
+  me = int(fricreg_structure_element_count(fricreg_handle_to_ptr(h)))
+  stat = int(FRICREG_OK)
+end subroutine frstne
 
 !> FRCSTP(H, M, ZS, ZP, AP, W, WEFF, C, TOL, MAXIT, FLAGS, F, ITERS, CONV, STAT): the forces of
 !> one implicit step of the caller's own integrator on a context H (FRCTXC), C's

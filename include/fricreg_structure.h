@@ -743,7 +743,11 @@ FRICREG_API int fricreg_structure_get_elements(const fricreg_structure *s, size_
  *  replaces the previous ones, with every slider at w = 0 and their dissipation at 0, as does
  *  fricreg_structure_set_initial; the next step starts from the return mapping at J_e u.
  *  Like a model setter, K_eff is factored again at the next step. Allocates O(me^2 + nnz(J_e)).
- *  Since 1.6 (FRICREG_1.6).
+ *  Since 1.6 (FRICREG_1.6). Since 1.8 this and the other per-kind setters (_iwan,
+ *  _jenkins_normal, _iwan_normal, _jenkins_2d, _jenkins_2d_normal, the _csr twins) are thin
+ *  wrappers: fricreg_structure_clear_elements, then fricreg_structure_add_elements with the
+ *  kind's type ("jenkins", "iwan", "jenkins_normal", "iwan_normal", "jenkins_2d",
+ *  "contact_3d"), bit for bit; new code may call those, which also mix types.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL (s, or Je, kt or mun with me > 0); FRICREG_ESIZE if ndof
  *  is not the structure's; FRICREG_EINVAL if me > 2^26, a row of J_e is zero, a kt_i <= 0 or
@@ -827,7 +831,8 @@ FRICREG_API int fricreg_structure_set_jenkins_2d_csr(fricreg_structure *s, size_
  *  three. Since 1.6 (FRICREG_1.6).
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if me is not the number of elements set;
  *  FRICREG_EINVAL (me > 0) if they are 1-D elements (fricreg_structure_get_jenkins_state and
- *  fricreg_structure_get_iwan_state read those). */
+ *  fricreg_structure_get_iwan_state read those), or not all 2-D elements of one slider
+ *  (fricreg_structure_get_elements reads any set). */
 FRICREG_API int fricreg_structure_get_jenkins_2d_state(const fricreg_structure *s, size_t me,
                                                        double f[], double w[], double D[]);
 
@@ -840,7 +845,8 @@ FRICREG_API int fricreg_structure_get_jenkins_2d_state(const fricreg_structure *
  *  or w is not NULL and the elements are Iwan elements of ns > 1 sliders
  *  (fricreg_structure_get_iwan_state reads those); FRICREG_EINVAL (me > 0) if f or w is not
  *  NULL and the elements are 2-D (fricreg_structure_get_jenkins_2d_state reads those; D alone
- *  is read here too). */
+ *  is read here too) or of several dimensions (fricreg_structure_add_elements's mixes:
+ *  fricreg_structure_get_elements reads any set). */
 FRICREG_API int fricreg_structure_get_jenkins_state(const fricreg_structure *s, size_t me,
                                                     double f[], double w[], double D[]);
 
@@ -864,7 +870,9 @@ FRICREG_API int fricreg_structure_get_jenkins_state(const fricreg_structure *s, 
  *  me         number of elements (0 removes them: Je, k, phi may then be NULL).
  *  ndof       must be the structure's.
  *  Je         [me*ndof] row-major, as fricreg_structure_set_jenkins.
- *  ns         sliders per element, >= 1; me ns <= 2^26.
+ *  ns         sliders per element, 1 to FRICREG_ELEMENT_MAX_SLIDERS (1024; since 1.8, where
+ *             the elements became the "iwan" type's: fricreg_structure_add_elements); me ns
+ *             <= 2^26.
  *  k[me*ns]   stiffnesses > 0 (finite), force per unit of q; element i's slider s at
  *             k[i ns + s] (row-major; Fortran: a (ns, me) array).
  *  phi[me*ns] slip forces >= 0 (finite), force units, laid out as k (Segalman's
@@ -875,8 +883,8 @@ FRICREG_API int fricreg_structure_get_jenkins_state(const fricreg_structure *s, 
  *  (FRICREG_1.6).
  *
  *  Returns FRICREG_OK; FRICREG_ENULL (s, or Je, k or phi with me > 0); FRICREG_ESIZE if ndof is
- *  not the structure's; FRICREG_EINVAL if ns = 0 with me > 0, me ns > 2^26, a row of J_e is
- *  zero, a k <= 0 or a phi < 0, or the call comes from the observer; FRICREG_ENONFINITE (an
+ *  not the structure's; FRICREG_EINVAL if ns = 0 or ns > FRICREG_ELEMENT_MAX_SLIDERS with
+ *  me > 0, me ns > 2^26, a row of J_e is zero, a k <= 0 or a phi < 0, or the call comes from the observer; FRICREG_ENONFINITE (an
  *  entry of Je, k or phi); FRICREG_ENOMEM. On failure the elements in force are unchanged. */
 FRICREG_API int fricreg_structure_set_iwan(fricreg_structure *s, size_t me, size_t ndof,
                                            const double Je[], size_t ns, const double k[],
@@ -886,8 +894,8 @@ FRICREG_API int fricreg_structure_set_iwan(fricreg_structure *s, size_t me, size
  *  flags FRICREG_SPARSE_ONE_BASED or 0, as fricreg_structure_set_jenkins_csr. Since 1.6
  *  (FRICREG_1.6).
  *  Returns FRICREG_OK; FRICREG_ENULL (s, k, phi, rowptr, or colind or values with nnz > 0);
- *  FRICREG_ESIZE; FRICREG_EINVAL (flags, pointers, indices, a zero row, ns = 0, k <= 0,
- *  phi < 0, me ns > 2^26, from the observer); FRICREG_ENONFINITE; FRICREG_ENOMEM, as
+ *  FRICREG_ESIZE; FRICREG_EINVAL (flags, pointers, indices, a zero row, ns = 0 or above
+ *  FRICREG_ELEMENT_MAX_SLIDERS, k <= 0, phi < 0, me ns > 2^26, from the observer); FRICREG_ENONFINITE; FRICREG_ENOMEM, as
  *  fricreg_structure_set_iwan. */
 FRICREG_API int fricreg_structure_set_iwan_csr(fricreg_structure *s, size_t me, size_t ndof,
                                                int flags, const int64_t rowptr[],
@@ -903,7 +911,8 @@ FRICREG_API int fricreg_structure_set_iwan_csr(fricreg_structure *s, size_t me, 
  *  three. Since 1.6 (FRICREG_1.6).
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE if me is not the number of elements set,
  *  or (me > 0) ns is not their sliders per element; FRICREG_EINVAL (me > 0) if the elements
- *  are 2-D (fricreg_structure_get_jenkins_state reads those). */
+ *  are 2-D (fricreg_structure_get_jenkins_state reads those) or of several dimensions
+ *  (fricreg_structure_get_elements reads any set). */
 FRICREG_API int fricreg_structure_get_iwan_state(const fricreg_structure *s, size_t me, size_t ns,
                                                  double f[], double w[], double D[]);
 
@@ -979,7 +988,7 @@ FRICREG_API int fricreg_structure_set_jenkins_normal(fricreg_structure *s, size_
  *  ndof        must be the structure's.
  *  Je[me*ndof] row-major, one tangential row per element.
  *  Jn[me*ndof] row-major, one normal row per element.
- *  ns          sliders per element, >= 1.
+ *  ns          sliders per element, 1 to FRICREG_ELEMENT_MAX_SLIDERS (1024, since 1.8).
  *  k[me*ns]    slider stiffnesses > 0 (finite), force per unit of q; element i's slider s at
  *              k[i ns + s] (Fortran: a (ns, me) array).
  *  mu[me*ns]   slider friction coefficients >= 0 (finite, nondimensional), laid out as k; the
@@ -989,8 +998,8 @@ FRICREG_API int fricreg_structure_set_jenkins_normal(fricreg_structure *s, size_
  *  kn[me]      normal stiffness > 0 (finite), force per unit of g.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL (s, or Je, Jn, k, mu, n0 or kn with me > 0);
- *  FRICREG_ESIZE if ndof is not the structure's; FRICREG_EINVAL if ns = 0 with me > 0,
- *  me ns > 2^26, a row of J_e or J_n is zero, a k <= 0, mu < 0 or kn <= 0, or the call comes
+ *  FRICREG_ESIZE if ndof is not the structure's; FRICREG_EINVAL if ns = 0 or
+ *  ns > FRICREG_ELEMENT_MAX_SLIDERS with me > 0, me ns > 2^26, a row of J_e or J_n is zero, a k <= 0, mu < 0 or kn <= 0, or the call comes
  *  from the observer; FRICREG_ENONFINITE (an entry of Je, Jn, k, mu, n0 or kn);
  *  FRICREG_ENOMEM. On failure the elements in force are unchanged. */
 FRICREG_API int fricreg_structure_set_iwan_normal(fricreg_structure *s, size_t me, size_t ndof,
@@ -1063,7 +1072,8 @@ FRICREG_API int fricreg_structure_set_jenkins_2d_normal(fricreg_structure *s, si
  *  before the first step); their tangential forces, sliders and dissipation are
  *  fricreg_structure_get_jenkins_state's (_2d_state's). Since 1.6 (FRICREG_1.6).
  *  Returns FRICREG_OK; FRICREG_ENULL if s or N is NULL; FRICREG_ESIZE if me is not the number
- *  of elements set; FRICREG_EINVAL if they have no normal law. */
+ *  of elements set; FRICREG_EINVAL if they, or some of them (fricreg_structure_add_elements's
+ *  mixes: fricreg_structure_get_elements), have no normal law. */
 FRICREG_API int fricreg_structure_get_normal_forces(const fricreg_structure *s, size_t me,
                                                     double N[]);
 

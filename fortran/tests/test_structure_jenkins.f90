@@ -9,7 +9,8 @@
 !     error estimate of its dissipation (get_jenkins_dissipation_error) is the C call's;
 !   - Fortran's size checks (FRICREG_ESIZE naming the array) and C's refusals (kt <= 0);
 !   - an Iwan element of two sliders (set_iwan, get_iwan_state) is two Jenkins elements on
-!     copies of its row: the same run to rounding;
+!     copies of its row: the same run to rounding; those copies added as a "jenkins" and a
+!     one-slider "iwan" element (add_elements, get_elements): set_jenkins's run bit for bit;
 !   - a stuck, closed lift-off element (set_jenkins_normal, get_normal_forces): N = n0 + kn u;
 !     an Iwan element of two stuck sliders with the same normal law (set_iwan_normal) runs the
 !     same to rounding;
@@ -24,7 +25,7 @@ program test_structure_jenkins
   implicit none
   type(fricreg_structure) :: st
   real(c_double) :: u(1), f(1), w(1), D(1), D2(2), residual, input, jenkins, De(1), Dc(1)
-  real(c_double) :: u2(1), w2(2, 1), fj(2), wj(2), Dj(2)
+  real(c_double) :: u2(1), w2(2, 1), fj(2), wj(2), Dj(2), fm(2), sm(2), Dm(2)
   real(c_double), parameter :: Je(1, 1) = reshape([1.0_c_double], [1, 1])
   type(fricreg_structure) :: st2, st3
   real(c_double) :: u3(3), f3(2, 1), N3(1)
@@ -119,6 +120,29 @@ program test_structure_jenkins
                                 reshape([0.03_c_double], [1, 1])), FRICREG_ESIZE, &
                     'phi of 1 slider')
   call check(index(st%errmsg(), 'phi') > 0, 'the message names phi')
+
+  ! ---- add_elements: the copies as a Jenkins element and a one-slider Iwan element, added one
+  ! after the other: set_jenkins's run bit for bit (the same kernel, the same coordinates) -------
+  call check_status(st%clear_elements(), FRICREG_OK, 'clear_elements')
+  call check(st%element_count() == 0, 'none held')
+  call check_status(st%add_elements('jenkins', Je, reshape([150.0_c_double, 0.03_c_double], &
+                                                           [2, 1])), FRICREG_OK, 'add jenkins')
+  call check_status(st%add_elements('iwan', Je, reshape([50.0_c_double, 0.05_c_double], [2, 1]), &
+                                    ns=1), FRICREG_OK, 'add iwan')
+  call check(st%element_count() == 2, 'two held')
+  call check_status(st%set_initial([0.0_c_double], [0.0_c_double]), FRICREG_OK, 'set_initial')
+  call check_status(st%run(0.01_c_double, 1.37_c_double), FRICREG_OK, 'run the mix')
+  call check_status(st%get_state(u=u), FRICREG_OK, 'get_state mix')
+  call check_status(st%get_elements(f=fm, state=sm, D=Dm), FRICREG_OK, 'get_elements')
+  call check(u(1) == u2(1) .and. all(fm == fj) .and. all(sm == wj) .and. all(Dm == Dj), &
+             'the mix is set_jenkins''s copies bit for bit')
+  call check_status(st%add_elements('no such', Je, reshape([1.0_c_double, 0.1_c_double], &
+                                                           [2, 1])), FRICREG_EINVAL, 'unknown type')
+  call check(index(st%errmsg(), 'no such') > 0, 'the message names the type')
+  call check_status(st%add_elements('jenkins', Je, reshape([1.0_c_double], [1, 1])), &
+                    FRICREG_ESIZE, 'params of 1 row')
+  call check_status(st%get_elements(D=Dm(1:1)), FRICREG_ESIZE, 'D of 1')
+  call check(st%element_count() == 2, 'still two')
 
   ! ---- lift-off: stuck and closed, the springs kt and kn and the force -n0 -------------------
   ! one mass, Je = Jn = 1: K 217.3 + 200 + 100 under P - n0; N = n0 + kn u stays > 0 (u

@@ -151,6 +151,9 @@ static int start_setter(fricreg_structure *s, size_t me, size_t ns, int dim, siz
         return fr_fail(s, FRICREG_ESIZE, "%s: ndof = %zu, the structure has %zu", who, ndof, s->n);
     if (ns == 0 && me > 0)
         return fr_fail(s, FRICREG_EINVAL, "%s: ns = 0: an Iwan element needs a slider", who);
+    if (ns > FRICREG_ELEMENT_MAX_SLIDERS && me > 0)
+        return fr_fail(s, FRICREG_EINVAL, "%s: ns = %zu sliders exceed the element types' %d", who,
+                       ns, FRICREG_ELEMENT_MAX_SLIDERS);
     if (me > MAX_ELEMENTS / (size_t)dim || (me > 0 && ns > MAX_ELEMENTS / me))
         return fr_fail(s, FRICREG_EINVAL, "%s: me = %zu elements of %zu sliders exceed 2^%d", who,
                        me, ns, dim == 2 ? 25 : 26);
