@@ -14,7 +14,8 @@ job=$(basename "$deck" .inp)
 export OMP_NUM_THREADS=1 NUMBER_OF_PROCESSORS=1 CCX_NPROC_STIFFNESS=1 CCX_NPROC_RESULTS=1 \
        CCX_NPROC_EQUATION_SOLVER=1 CCX_NPROC_CFD=1 CCX_NPROC_BIOTSAVART=1 CCX_NPROC_SENS=1
 fail() { echo "FAIL: $*"; echo "0 passed, 1 failed"; exit 1; }
-grep -q "^$(printf '%s' "0.2, 1.e5")\$" "$deck" || fail "$deck's *FRICTION is not mu = $mu, k_t = $kt (iwan.sh)"
+grep -qx '0.2, 1.e5' "$deck" || fail "$deck's *FRICTION is not mu = $mu, k_t = $kt (iwan.sh)"
+grep -q "PARAMETER (NS = $ns)" "$(dirname "$0")/frccxi.f" || fail "frccxi.f's NS is not $ns (iwan.sh)"
 rm -rf "$run" && mkdir -p "$run" && cp "$deck" "$run/$job.inp" || exit 1
 start=$(date +%s.%N)
 (cd "$run" && "$ccx_dir/patched-iwan/ccx" -i "$job" >"$job.log" 2>&1)
