@@ -59,7 +59,7 @@ foreach(deck IN LISTS FRICREG_CCX_DECKS FRICREG_CCX_OWN_DECKS)
                        ENVIRONMENT FRICREG_CCX_COUNTER=$<TARGET_FILE:fricreg_ccx_counts>)
 endforeach()
 
-# The Iwan deck (issue 53): fricreg's Iwan law in ccx (build.sh's patched-iwan/ccx) against
+# The Iwan deck: fricreg's Iwan law in ccx (build.sh's patched-iwan/ccx) against
 # the kernel driven alone on the history ccx printed (iwan_alone.c, fricreg only, never ccx):
 # the hysteresis loops' dissipations to 1e-6, and the loops plotted (iwan.sh says where).
 add_executable(fricreg_ccx_iwan_alone ${FRICREG_CCX_SRC}/iwan_alone.c)
