@@ -58,3 +58,16 @@ foreach(deck IN LISTS FRICREG_CCX_DECKS FRICREG_CCX_OWN_DECKS)
                        TIMEOUT 600
                        ENVIRONMENT FRICREG_CCX_COUNTER=$<TARGET_FILE:fricreg_ccx_counts>)
 endforeach()
+
+# The Iwan deck: fricreg's Iwan law in ccx (build.sh's patched-iwan/ccx) against
+# the kernel driven alone on the history ccx printed (iwan_alone.c, fricreg only, never ccx):
+# the hysteresis loops' dissipations to 1e-6, and the loops plotted (iwan.sh says where).
+add_executable(fricreg_ccx_iwan_alone ${FRICREG_CCX_SRC}/iwan_alone.c)
+target_link_libraries(fricreg_ccx_iwan_alone PRIVATE fricreg m)
+target_compile_options(fricreg_ccx_iwan_alone PRIVATE ${FRICREG_WARNINGS})
+add_test(NAME calculix_iwan
+         COMMAND sh ${FRICREG_CCX_SRC}/iwan.sh ${FRICREG_CCX_DIR}
+                 ${FRICREG_CCX_SRC}/decks/iwanloop.inp ${FRICREG_CCX_DIR}/runs/iwanloop
+                 $<TARGET_FILE:fricreg_ccx_iwan_alone>)
+set_tests_properties(calculix_iwan PROPERTIES LABELS calculix FIXTURES_REQUIRED calculix
+                     TIMEOUT 600)

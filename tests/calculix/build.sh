@@ -6,6 +6,9 @@
 #   WORK_DIR/patched/ccx   the same objects with ccx-fricreg.patch applied (its four friction
 #                          blocks call fricreg's FRELEV), relinked with libfricreg_fortran and
 #                          libfricreg; run-path to FRICREG_LIB_DIR
+#   WORK_DIR/patched-iwan/ccx  the same with ccx-iwan.patch on top (the four blocks call
+#                          fricreg's Iwan hook FRCCXI, frccxi.f here, compiled and linked in;
+#                          *CONTACT PRINT with 17 digits): test calculix_iwan's ccx
 # The stock build (about 8 minutes on two cores) is kept between runs; the patched copy is
 # made again from it every run (seconds), so it always holds the patch and the library of
 # this tree. Needs the build dependencies and a deb-src entry (the README's command).
@@ -56,5 +59,25 @@ mkdir -p patched && cp patched-tree/ccx_$version/src/ccx_$version patched/ccx ||
 # The patched binary calls fricreg, and the stock one does not.
 nm -u patched/ccx | grep -q fricreg_element_eval || fail "the patched ccx does not call fricreg"
 nm stock/ccx 2>/dev/null | grep -q fricreg && fail "the stock ccx calls fricreg"
-say "stock and patched ccx in $work"
+
+# The Iwan build: the stock tree with both patches, FRCCXI compiled with fricreg.fi (and
+# without a warning) and linked in through LDFLAGS (an object is linked wherever it stands).
+iwan_patch=$(dirname "$patch")/ccx-iwan.patch
+hook=$(dirname "$patch")/frccxi.f
+say "patching with ccx-iwan.patch and relinking into patched-iwan/ccx"
+rm -rf patched-iwan-tree patched-iwan && cp -a stock-tree patched-iwan-tree &&
+    rm -f patched-iwan-tree/debian/debhelper-build-stamp patched-iwan-tree/ccx_$version/src/ccx_$version &&
+    patch -d patched-iwan-tree -p1 <"$patch" >>"$log" 2>&1 &&
+    patch -d patched-iwan-tree -p1 <"$iwan_patch" >>"$log" 2>&1 || fail "ccx-iwan.patch does not apply"
+mkdir -p patched-iwan &&
+    gfortran -Wall -Werror -O2 -I"$fi_dir" -c "$hook" -o patched-iwan/frccxi.o >>"$log" 2>&1 ||
+    fail "frccxi.f does not compile without warnings"
+(cd patched-iwan-tree &&
+    DEB_BUILD_OPTIONS=parallel=2 DEB_FFLAGS_APPEND="-I$fi_dir" \
+    DEB_LDFLAGS_APPEND="$work/patched-iwan/frccxi.o -L$flib -L$lib -Wl,-rpath,$lib -lfricreg_fortran -lfricreg" \
+    debian/rules build) >>"$log" 2>&1 || fail "the patched-iwan build"
+cp patched-iwan-tree/ccx_$version/src/ccx_$version patched-iwan/ccx || fail "no patched-iwan binary"
+nm patched-iwan/ccx | grep -q ' T frccxi_' || fail "the patched-iwan ccx has no FRCCXI"
+nm -u patched-iwan/ccx | grep -q fricreg_element_eval || fail "the patched-iwan ccx does not call fricreg"
+say "stock, patched and patched-iwan ccx in $work"
 echo "1 passed, 0 failed"
