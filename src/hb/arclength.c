@@ -16,7 +16,8 @@
  * there, once halving ds no longer lowered them by a quarter, or when halving would go below
  * ds_min (a converged residual is a solution). Below ds_min the step is predicted once more
  * along the secant of the last two points before the continuation stops. A branch that runs
- * back along itself (a point near an earlier stretch, heading the same way) stops it. Each
+ * back along itself (a point near an earlier stretch, heading the same way) stops it: a
+ * success onto its first stretches (it came round a closed branch), else a failure. Each
  * point is stored (points.c), and the bifurcations between them located (bifurcations.c). */
 #include <math.h>
 #include <stdio.h>

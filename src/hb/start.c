@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* start.c — the start without a guess of fricreg_hb_solve and fricreg_hb_continue: the
  * solution at Ω followed in the excitation level from the linear regime (where the stuck guess
- * holds) up to λ = 1, or the plain guesses, or a branch in Ω from a nearby frequency. Its own
+ * holds) up to λ = 1, or the plain guesses, or a branch in Ω from a nearby frequency (with
+ * stability on, the first of them whose solution is not unstable). Its own
  * file because it is a client of the continuation loop (arclength.c), not a part of it: its
  * continuations store no points. */
 #include <math.h>
