@@ -559,7 +559,12 @@ FRICREG_API int fricreg_hb_set_max_iterations(fricreg_hb *hb, int64_t total);
  *  in the forcing, e.g. a unilateral spring without gap or preload, whose level branch is a
  *  ray no easier than its end), the continuation in Ω to omega, points not stored, from the
  *  nearest of Ω (1 + d) and Ω / (1 + d), d = 0.05, 0.1, 0.2, 0.4, 0.8, where 1.6's start
- *  converges (since 1.7); on its failure too, 1.6's start's error is returned. For 1.6's
+ *  converges (since 1.7); on its failure too, 1.6's start's error is returned. With
+ *  stability on (fricreg_hb_set_stability), a route whose solution is unstable does not end
+ *  the start: the solution is held while the later routes (1.6's solution at λ = 1, the
+ *  continuation in Ω from a nearby frequency) are tried, and the first stable one is returned
+ *  (the level's branch can end on a closed branch of the response, unstable there, that the
+ *  sweeps from either side never reach); none stable, the held one (since 1.8). For 1.6's
  *  start alone, pass a zero q0 (Newton's first step from zero, where the elements are stuck,
  *  is the stuck response).
  *  The solution is kept for fricreg_hb_displacement and, with stability on
@@ -949,7 +954,11 @@ FRICREG_API int fricreg_hb_nma_crossing(fricreg_hb *hb, size_t i, int *harmonic,
  *  the one fricreg_hb_displacement gives. A branch that doubles back on itself (a new point
  *  within a tenth of a step of an earlier stretch of the branch, heading the same way, after a
  *  way along the branch of more than 3 times the distance between them) would never reach
- *  omega1: the continuation stops there with FRICREG_EWORK.
+ *  omega1: onto its first two stretches, it has come round a closed branch (an isola) and the
+ *  continuation returns FRICREG_OK with the loop's points, the last one (the driver's
+ *  solution) short of omega1, which is how a caller tells (since 1.8); onto a later stretch
+ *  (a jump from one part of the branch onto another, across a sharp peak) it stops there with
+ *  FRICREG_EWORK.
  *
  *  omega0, omega1  the interval's ends, > 0 (finite), omega0 != omega1 (either order), rad/s.
  *  nq, q0          as fricreg_hb_solve (q0 the guess at omega0, or NULL).
@@ -960,7 +969,7 @@ FRICREG_API int fricreg_hb_nma_crossing(fricreg_hb *hb, size_t i, int *harmonic,
  *  if nq is not fricreg_hb_solve's; FRICREG_ESINGULAR,
  *  FRICREG_EWORK, FRICREG_EINTEGRATOR as fricreg_hb_solve at omega0; FRICREG_EINTEGRATOR if
  *  the step fell below ds_min; FRICREG_EWORK if max_points were stored before omega1, or the
- *  branch doubled back on itself (the message says which);
+ *  branch doubled back onto a later stretch of itself (the message says which);
  *  FRICREG_ENOMEM (for the first 64 points before anything changed; for more, later, with the
  *  points so far kept; or KLU's, as fricreg_hb_solve, with the points so far kept);
  *  FRICREG_EWORK if stopped by the monitor or fricreg_hb_set_max_iterations's bound (the points
@@ -999,7 +1008,9 @@ FRICREG_API int fricreg_hb_continue(fricreg_hb *hb, double omega0, double omega1
  *  fricreg_hb_solve); FRICREG_ESIZE if nq is not fricreg_hb_solve's; FRICREG_ESINGULAR,
  *  FRICREG_EWORK, FRICREG_EINTEGRATOR as fricreg_hb_solve at level0; FRICREG_EINTEGRATOR if the
  *  step fell below ds_min; FRICREG_EWORK if max_points were stored before level1, or the
- *  branch doubled back on itself, or it was stopped by the monitor or
+ *  branch doubled back onto a later stretch of itself (onto its first two: FRICREG_OK, the
+ *  closed branch's points, the last short of level1, as fricreg_hb_continue), or it was
+ *  stopped by the monitor or
  *  fricreg_hb_set_max_iterations's bound; FRICREG_ENOMEM; the points reached kept on failure,
  *  all as fricreg_hb_continue. Allocates as fricreg_hb_continue. Since 1.7 (FRICREG_1.7). */
 FRICREG_API int fricreg_hb_continue_level(fricreg_hb *hb, double omega, double level0,

@@ -982,6 +982,29 @@ if [ $? -ne 0 ] || ! awk -F, 'NR == 2 { ok = $1 == 11.5 && $3 > 0.04229974 && $3
         NR > 1 && $5 == "" { rows++; if ($4 != 1) bad++ } END { exit !(ok && rows > 10 && !bad) }' "$d/lp.csv"; then
     echo "FAIL: hb lift-off pair 11.5 to 12.5 by default: $(head -n 3 "$d/lp.csv") $(cat "$d/err")"; fails=$((fails + 1))
 fi
+# The gap pair (that pair turned round: u = x_2, g = -x_1, mu 0.01, N0 -10, kn 500) at 1.5
+# times its excitation, p_c = (3, 1.5), from 3.55 to 4.05 rad/s with every default: the level's
+# branch from the linear regime ends on a closed branch, unstable there, and 1.7 went round it
+# and exited 1 ("doubles back"); the start now takes the stable solution that the sweeps from
+# 2.05 up and 5.05 down reach (test_hb_level's unstable_start_takes_the_stable_branch, to 1e-8):
+# exit 0, rms_2 at 3.55 within 1e-8 of the measured 0.0084168958, every point stable, the end
+# reached, "isola": false. At twice the excitation, p_c = (4, 2), from 5 the start lies on an
+# isola, stable there (test_hb_continuation's closed_branch_is_returned): exit 0 with its
+# points, "isola": true, the last point short of 5.5.
+printf '%s\n' "%%MatrixMarket matrix coordinate real general" "1 2 1" "1 2 1" >"$d/gpJ.mtx"
+printf '%s\n' "%%MatrixMarket matrix coordinate real general" "1 2 1" "1 1 -1" >"$d/gpJn.mtx"
+echo "40 0.01 -10 500" >"$d/gpQ.txt"
+printf '%s\n' "3 0" "1.5 0" >"$d/gpF15.txt"
+printf '%s\n' "4 0" "2 0" >"$d/gpF2.txt"
+gp="hb --mass $d/lpM.mtx --stiffness $d/lpK.mtx --rayleigh 0,0.002 --jenkins $d/gpJ.mtx --normal $d/gpJn.mtx --normal-params $d/gpQ.txt"
+expect_output '"omega_reached": 4.0499999999999998, .*"isola": false, ' $gp --excitation $d/gpF15.txt --omega-start 3.55 --omega-end 4.05
+total=$((total + 1))
+"$sim" $gp --excitation $d/gpF15.txt --omega-start 3.55 --omega-end 4.05 --output frf >"$d/gp.csv" 2>"$d/err"
+if [ $? -ne 0 ] || ! awk -F, 'NR == 2 { ok = $1 == 3.55 && $3 > 0.00841689578 && $3 < 0.00841689580 }
+        NR > 1 && $5 == "" { rows++; last = $1; if ($4 != 1) bad++ } END { exit !(ok && rows > 5 && !bad && last == 4.05) }' "$d/gp.csv"; then
+    echo "FAIL: hb gap pair 3.55 to 4.05 by default: $(head -n 3 "$d/gp.csv") $(cat "$d/err")"; fails=$((fails + 1))
+fi
+expect_output '"omega_start": 5, "omega_end": 5.5, "points": [0-9]+, .*"omega_reached": 4\.9[0-9]*, .*"isola": true, ' $gp --excitation $d/gpF2.txt --omega-start 5 --omega-end 5.5
 echo "1.5 0.1 3 -1" >"$d/Q_bad.txt"
 expect_usage_error "^fricreg-sim: --normal-params $d/Q_bad.txt: .*kn" $hbs --omega-start 1 --omega-end 2 --normal $d/J.mtx --normal-params $d/Q_bad.txt
 expect_usage_error "^fricreg-sim: --iwan-params $d/P1.txt: line 1: 1 numbers: give pairs" $hbs --omega-start 1 --omega-end 2 --iwan-params $d/P1.txt

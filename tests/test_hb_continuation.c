@@ -385,6 +385,84 @@ START_TEST(contact_pair_default_start_stable)
 }
 END_TEST
 
+/* The gap pair of test_hb_stability.c (the contact pair turned round: tangential along dof 2,
+ * normal g = −x_1, mu = 0.01, N0 = −10, kn = 500: a unilateral spring with a gap) at twice
+ * its excitation, p_c = (4, 2). */
+static struct jenkins_model gap_pair_doubled(void)
+{
+    struct jenkins_model s = contact_pair();
+    s.J[0] = 0.0, s.J[1] = 1.0;
+    s.Jn[0] = -1.0, s.Jn[1] = 0.0;
+    s.mu[0] = 0.01, s.n0[0] = -10.0, s.kn[0] = 500.0;
+    s.pc[0] = 4.0, s.pc[1] = 2.0;
+    return s;
+}
+
+/* The last point's dof RMS of a continuation from w0 to w1 at H = 7, stability on. */
+static void sweep_end(const struct jenkins_model *s, double w0, double w1, double *rms)
+{
+    fricreg_hb *hb = branch(s, 7, w0, w1, 2000);
+    ck_assert_int_eq(fricreg_hb_point(hb, fricreg_hb_points(hb) - 1, &w0, s->n, rms), FRICREG_OK);
+    fricreg_hb_free(hb);
+}
+
+/* At 5 rad/s (H = 7) the start without a guess of the doubled gap pair lands on a closed
+ * branch, stable there (measured rms_2 0.012549, mu_max 0.80): the continuation towards 5.5
+ * goes round it (4.840 to 5.111 rad/s, 53 points) back to its start, and returns FRICREG_OK
+ * with the loop, its last point short of Omega1 (1.7 stopped with FRICREG_EWORK, "doubles
+ * back"). An isola: the sweeps from 4 up and from 5.5 down agree at 5 (rms_2 0.012242) to
+ * 1e-8, off the loop's first point by more than 1e-3; the loop turns in Omega at both ends
+ * (a TP located above 5.1 and one below 4.85) and ends within 0.05 rad/s of its start. */
+START_TEST(closed_branch_is_returned)
+{
+    struct jenkins_model s = gap_pair_doubled();
+    double up[MAXN], down[MAXN], first[MAXN], last[MAXN], om0, om1, lo = INFINITY, hi = 0.0;
+    sweep_end(&s, 4.0, 5.0, up);
+    sweep_end(&s, 5.5, 5.0, down);
+    fricreg_hb *hb = make(&s, 7);
+    ck_assert_int_eq(fricreg_hb_set_stability(hb, 1), FRICREG_OK);
+    int status = fricreg_hb_continue(hb, 5.0, 5.5, rows(&s) * 15, NULL), stable = 0;
+    ck_assert_msg(status == FRICREG_OK, "%s", fricreg_hb_errmsg(hb));
+    size_t np = fricreg_hb_points(hb), tp_lo = 0, tp_hi = 0;
+    ck_assert_uint_gt(np, 20);
+    ck_assert_uint_lt(np, 400);
+    for (size_t k = 0; k < np; k++) {
+        ck_assert_int_eq(fricreg_hb_point(hb, k, &om1, s.n, last), FRICREG_OK);
+        lo = fmin(lo, om1), hi = fmax(hi, om1);
+    }
+    ck_assert_int_eq(fricreg_hb_point(hb, 0, &om0, s.n, first), FRICREG_OK);
+    double mu_max = 0.0;
+    ck_assert_int_eq(fricreg_hb_point_stability(hb, 0, &stable, &mu_max), FRICREG_OK);
+    if (getenv("HB_PRINT"))
+        fprintf(stderr,
+                "closed: %zu points, %.6g .. %.6g, back at %.6g; rms_2 %.10g (mu_max %.3g), "
+                "sweeps %.10g %.10g\n",
+                np, lo, hi, om1, first[1], mu_max, up[1], down[1]);
+    ck_assert_double_eq(om0, 5.0);
+    ck_assert_int_eq(stable, 1);
+    ck_assert_double_ne(om1, 5.5);
+    ck_assert_double_le(fabs(om1 - om0), 0.05);
+    ck_assert_double_lt(lo, 4.85);
+    ck_assert_double_gt(hi, 5.1);
+    ck_assert_double_lt(hi, 5.5);
+    for (size_t i = 0; i < fricreg_hb_bifurcations(hb); i++) {
+        int type = 0;
+        double om = 0.0, rms[MAXN];
+        size_t k = 0;
+        ck_assert_int_eq(fricreg_hb_bifurcation(hb, i, &type, &om, &k, s.n, rms), FRICREG_OK);
+        tp_lo += type == FRICREG_HB_TP && om < 4.85;
+        tp_hi += type == FRICREG_HB_TP && om > 5.1;
+    }
+    ck_assert_uint_ge(tp_lo, 1);
+    ck_assert_uint_ge(tp_hi, 1);
+    for (size_t k = 0; k < s.n; k++) {
+        ck_assert_double_le(fabs(up[k] - down[k]), 1e-8 * up[k]);
+        ck_assert_double_gt(fabs(first[k] - up[k]), 1e-3 * up[k]);
+    }
+    fricreg_hb_free(hb);
+}
+END_TEST
+
 /* At the located peak, the steady state in time: the contact opens and closes there. */
 START_TEST(contact_pair_time_domain)
 {
@@ -548,6 +626,7 @@ int main(void)
     tcase_add_test(tc, contact_pair_every_route);
     tcase_add_test(tc, contact_pair_default_start_stable);
     tcase_add_test(tc, doubling_back_stops);
+    tcase_add_test(tc, closed_branch_is_returned);
     tcase_add_test(tc, elements_change_between_branches);
     tcase_add_test(tc, peak_bad_input);
     tcase_add_test(td, contact_pair_time_domain);

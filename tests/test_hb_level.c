@@ -35,6 +35,7 @@
  *     does not reach it, the branch in Omega from a nearby frequency does). */
 #include <check.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -283,6 +284,75 @@ START_TEST(point_solve_follows_the_level)
 }
 END_TEST
 
+/* The last stored point's dof RMS into rms[2] and its stability; its Ω returned. */
+static double last_point(fricreg_hb *hb, double *rms, int *stable, double *mu_max)
+{
+    size_t np = fricreg_hb_points(hb);
+    double w = 0.0;
+    ck_assert_uint_gt(np, 0);
+    ck_assert_int_eq(fricreg_hb_point(hb, np - 1, &w, 2, rms), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_point_stability(hb, np - 1, stable, mu_max), FRICREG_OK);
+    return w;
+}
+
+/* The gap pair at 1.5 times its excitation, at 3.55 rad/s: the level's branch from the linear
+ * regime ends on a closed branch, at an unstable solution (measured rms_2 0.008543, mu_max
+ * 1.052), which 1.7's default start took: its continuation went round the closed branch and
+ * stopped, "doubles back". The sweeps from 2.05 up and from 5.05 down agree on a stable
+ * solution there (rms_2 0.008417, mu_max 0.756), and the start without a guess now takes it,
+ * to 1e-8, the continuation then reaching 4.05; the solve without a guess too. Without
+ * stability there is no verdict to go by: the start is the level branch's end, as before. */
+START_TEST(unstable_start_takes_the_stable_branch)
+{
+    const double omega = 3.55, rms_tol = 1e-8;
+    double up[2], down[2], level_end[2], first[2], r[2], mu_max = 0.0, w = 0.0, q[2 * NC];
+    int stable = -1;
+    fricreg_hb *hb = gap_pair(1);
+    scale_excitation(hb, 2, gap_pc, gap_ps, 1.5);
+    /* the level's branch: its end unstable */
+    ck_assert_int_eq(fricreg_hb_continue_level(hb, omega, 1e-3, 1.0, 2 * NC, NULL), FRICREG_OK);
+    last_point(hb, level_end, &stable, &mu_max);
+    ck_assert_int_eq(stable, 0);
+    ck_assert_double_gt(mu_max, 1.0);
+    /* the independent sweeps, both ending stable on one solution */
+    ck_assert_int_eq(fricreg_hb_continue(hb, 2.05, omega, 2 * NC, NULL), FRICREG_OK);
+    ck_assert_double_eq(last_point(hb, up, &stable, &mu_max), omega);
+    ck_assert_int_eq(stable, 1);
+    ck_assert_int_eq(fricreg_hb_continue(hb, 5.05, omega, 2 * NC, NULL), FRICREG_OK);
+    ck_assert_double_eq(last_point(hb, down, &stable, &mu_max), omega);
+    ck_assert_int_eq(stable, 1);
+    for (int k = 0; k < 2; k++) {
+        ck_assert_double_le(fabs(up[k] - down[k]), rms_tol * up[k]);
+        ck_assert_double_gt(fabs(level_end[k] - up[k]), 1e-3 * up[k]); /* another solution */
+    }
+    /* the start without a guess: the sweeps' solution, stable, and on to Omega1 */
+    ck_assert_msg(fricreg_hb_continue(hb, omega, 4.05, 2 * NC, NULL) == FRICREG_OK, "%s",
+                  fricreg_hb_errmsg(hb));
+    ck_assert_double_eq(last_point(hb, r, &stable, &mu_max), 4.05);
+    ck_assert_int_eq(fricreg_hb_point(hb, 0, &w, 2, first), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_point_stability(hb, 0, &stable, &mu_max), FRICREG_OK);
+    if (getenv("HB_PRINT"))
+        fprintf(stderr, "rms_2 at %g: level %.10g, start %.10g (mu_max %.4f), sweeps %.10g %.10g\n",
+                omega, level_end[1], first[1], mu_max, up[1], down[1]);
+    ck_assert_int_eq(stable, 1);
+    ck_assert_double_le(mu_max, 1.0);
+    for (int k = 0; k < 2; k++)
+        ck_assert_double_le(fabs(first[k] - up[k]), rms_tol * up[k]);
+    ck_assert_int_eq(fricreg_hb_solve(hb, omega, 2 * NC, NULL, q), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_point_stability(hb, FRICREG_HB_SOLUTION, &stable, &mu_max),
+                     FRICREG_OK);
+    ck_assert_int_eq(stable, 1);
+    ck_assert_double_le(fabs(solution_rms(hb, 2, 1) - up[1]), rms_tol * up[1]);
+    fricreg_hb_free(hb);
+    /* stability off: the level branch's end */
+    hb = gap_pair(0);
+    scale_excitation(hb, 2, gap_pc, gap_ps, 1.5);
+    ck_assert_int_eq(fricreg_hb_solve(hb, omega, 2 * NC, NULL, q), FRICREG_OK);
+    ck_assert_double_le(fabs(solution_rms(hb, 2, 1) - level_end[1]), rms_tol * level_end[1]);
+    fricreg_hb_free(hb);
+}
+END_TEST
+
 /* The bilinear oscillator of test_hb_stability.c: m = 1, k = 1, c = 0.04, a unilateral spring
  * kn = 9 at x < 0 without gap or preload (mu = 0), p_c = 1. Its response is homogeneous in
  * the forcing, so the level's branch is a ray that is no easier to follow than its end. */
@@ -370,6 +440,7 @@ static Suite *suite(void)
     tcase_add_test(tc, jenkins_against_point_solves);
     tcase_add_test(tc, fold_in_level);
     tcase_add_test(tc, point_solve_follows_the_level);
+    tcase_add_test(tc, unstable_start_takes_the_stable_branch);
     tcase_add_test(tc, homogeneous_response_from_a_nearby_frequency);
     tcase_add_test(tc, bad_input);
     suite_add_tcase(s, tc);

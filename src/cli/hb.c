@@ -154,7 +154,8 @@ static size_t hb_table(struct hb_options *o, struct cli_option table[])
          .help = "a JSON summary (each dof's peak RMS and its frequency, the estimate of its "
                  "error from truncating at H harmonics at the largest stored point, by a solve "
                  "at 2H + 1 harmonics: null where H > 19 or that solve failed, the "
-                 "bifurcations), or the "
+                 "bifurcations, isola: true where the branch closed on itself before the end), "
+                 "or the "
                  "frequency response: a CSV row omega,rms_1,...,rms_n,stable,bifurcation,mu_max "
                  "per point (stable 1/0 and mu_max the largest |Floquet multiplier| by "
                  "--stability's method, empty without), and a row at each located bifurcation "
@@ -424,6 +425,9 @@ static void write_summary(fricreg_hb *hb, FILE *out, const struct hb_options *o,
     fprintf(out, "]");
     cli_json_array(out, "peak_rms_error_estimate", n, peak_err);
     write_bifurcations(hb, out, level, n);
+    /* a continuation that succeeded short of its end came round to its start (fricreg_hb.h) */
+    double end = level ? o->level_end : o->omega_end;
+    fprintf(out, ", \"isola\": %s", K > 0 && omega[K - 1] != end ? "true" : "false");
     fprintf(out, ", \"cpu_seconds\": %.6f}\n", cpu);
 }
 

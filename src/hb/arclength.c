@@ -16,7 +16,8 @@
  * there, once halving ds no longer lowered them by a quarter, or when halving would go below
  * ds_min (a converged residual is a solution). Below ds_min the step is predicted once more
  * along the secant of the last two points before the continuation stops. A branch that runs
- * back along itself (a point near an earlier stretch, heading the same way) stops it. Each
+ * back along itself (a point near an earlier stretch, heading the same way) stops it: a
+ * success onto its first stretches (it came round a closed branch), else a failure. Each
  * point is stored (points.c), and the bifurcations between them located (bifurcations.c). */
 #include <math.h>
 #include <stdio.h>
@@ -68,8 +69,9 @@ static void rescale(fricreg_hb *hb, struct fr_hb_branch *b)
 /* The new point y (scaled; yc the last point) runs back along the branch: within a tenth of
  * a step of an earlier stretch [point k − 1, point k], heading the same way (cosine > 1/2),
  * after a way along the branch since that stretch of more than 3 times the straight distance
- * (so not the branch's latest stretches, however it curves). */
-static int doubles_back(const fricreg_hb *hb, const struct fr_hb_branch *b, const double *y)
+ * (so not the branch's latest stretches, however it curves). Returns that k, the latest such,
+ * or 0 if none. */
+static size_t doubles_back(const fricreg_hb *hb, const struct fr_hb_branch *b, const double *y)
 {
     size_t nq = hb->nq, ld = nq + 1;
     double cq = 1.0 / b->qs, cw = 1.0 / b->ws, hs = fr_hb_dist(y, b->yc, ld), arc = hs;
@@ -93,10 +95,15 @@ static int doubles_back(const fricreg_hb *hb, const struct fr_hb_branch *b, cons
             d += e * e;
         }
         if (sqrt(d) <= 0.1 * fmax(ll, hs))
-            return 1;
+            return k;
     }
     return 0;
 }
+
+/* A branch that runs back onto its first stretches has come round to where it began: nothing
+ * on it precedes the first point, so it is a closed curve (an isola, or a loop of a branch
+ * whose start lay on it), not a jump from one part of an open branch onto another. */
+#define CLOSED_STRETCHES 2
 
 /* One step's outcome from yc with ds along dir: 0 accepted (qw the point, tn its tangent,
  * *alpha the angle between the tangents), 1 rejected (the message in b->why), or a status
@@ -234,7 +241,10 @@ static int follow(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, double
             return fr_hb_store_point(hb, fn, b, p1, hb->dir[nq],
                                      b->keep ? hb->xpts[(hb->npts - 1) * hb->xpts_stride + 1] : 0.0,
                                      1);
-        if (b->keep && doubles_back(hb, b, hb->qw))
+        size_t onto = b->keep ? doubles_back(hb, b, hb->qw) : 0;
+        if (onto > 0 && onto <= CLOSED_STRETCHES)
+            return FRICREG_OK; /* once round: the points stored are the whole branch */
+        if (onto > 0)
             return fr_fail(hb, FRICREG_EWORK,
                            "%s: the branch doubles back on itself at %s = %g (after %zu "
                            "points): it would not reach %s1 = %g",

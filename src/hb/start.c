@@ -1,10 +1,12 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* start.c — the start without a guess of fricreg_hb_solve and fricreg_hb_continue: the
  * solution at Ω followed in the excitation level from the linear regime (where the stuck guess
- * holds) up to λ = 1, or the plain guesses, or a branch in Ω from a nearby frequency. Its own
+ * holds) up to λ = 1, or the plain guesses, or a branch in Ω from a nearby frequency (with
+ * stability on, the first of them whose solution is not unstable). Its own
  * file because it is a client of the continuation loop (arclength.c), not a part of it: its
  * continuations store no points. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "arclength.h"
@@ -94,19 +96,64 @@ static int frequency_start(fricreg_hb *hb, const char *fn, double omega)
     return status;
 }
 
+/* The start's routes, in the order tried: the level's branch, the plain guesses, the branch
+ * in Ω from a nearby frequency; each keeps its solution as fr_hb_solve_at's. */
+static int plain_start(fricreg_hb *hb, const char *fn, double omega)
+{
+    return fr_hb_solve_at(hb, fn, omega, NULL, 1);
+}
+
+typedef int (*start_route)(fricreg_hb *hb, const char *fn, double omega);
+static const start_route START_ROUTES[] = {level_start, plain_start, frequency_start};
+#define START_ROUTE_COUNT (sizeof START_ROUTES / sizeof START_ROUTES[0])
+
+/* Whether the kept solution is unstable by the stability in force (none: not unstable). */
+static int kept_unstable(const fricreg_hb *hb)
+{
+    return hb->stability && hb->xsol[2] == 0.0;
+}
+
+/* The routes in turn until one reaches a solution that is not unstable: a route can land on
+ * another branch at omega than the one the others and a sweep follow (a closed branch,
+ * unstable there, that a continuation would go round), so an unstable solution is held (the
+ * first, in q_held) while the later routes are tried; none stable: the held one, solved once
+ * more to be kept. On failure of all, the plain guesses' error. */
 int fr_hb_default_start(fricreg_hb *hb, const char *fn, double omega)
 {
-    int status = level_start(hb, fn, omega);
-    if (status == FRICREG_OK || status == FRICREG_ENOMEM || hb->stopped)
-        return status;
-    if ((status = fr_hb_solve_at(hb, fn, omega, NULL, 1)) == FRICREG_OK ||
-        status == FRICREG_ENOMEM || hb->stopped)
-        return status;
-    struct fr_error plain = hb->err; /* the failure reported should all three fail */
-    int plain_status = status;
-    if ((status = frequency_start(hb, fn, omega)) == FRICREG_OK || status == FRICREG_ENOMEM ||
-        hb->stopped)
-        return status;
-    hb->err = plain;
-    return plain_status;
+    size_t nq = hb->nq;
+    double *q_held = NULL;
+    struct fr_error plain = hb->err;
+    int status = FRICREG_EWORK, plain_status = FRICREG_EWORK;
+    for (size_t r = 0; r < START_ROUTE_COUNT; r++) {
+        status = START_ROUTES[r](hb, fn, omega);
+        if (status == FRICREG_ENOMEM || hb->stopped)
+            break;
+        if (START_ROUTES[r] == plain_start && status != FRICREG_OK) {
+            plain = hb->err; /* the failure reported should all fail */
+            plain_status = status;
+        }
+        if (status != FRICREG_OK)
+            continue;
+        if (!kept_unstable(hb))
+            break;
+        if (q_held == NULL) { /* the first unstable solution, kept should no route be stable */
+            if ((q_held = malloc(nq * sizeof(double))) == NULL) {
+                status = fr_fail(hb, FRICREG_ENOMEM, "%s: out of memory", fn);
+                break;
+            }
+            memcpy(q_held, hb->qsol, nq * sizeof(double));
+        }
+        status = FRICREG_EWORK; /* not this one: the next route */
+    }
+    if (status != FRICREG_OK && status != FRICREG_ENOMEM && !hb->stopped) {
+        if (q_held != NULL) {
+            hb->level = 1.0;
+            status = fr_hb_solve_at(hb, fn, omega, q_held, 1);
+        } else {
+            hb->err = plain;
+            status = plain_status;
+        }
+    }
+    free(q_held);
+    return status;
 }

@@ -6,8 +6,9 @@
 #include "hb_internal.h"
 
 /* The level start; should it fail, the plain guesses at omega; then the branch in Ω from a
- * nearby frequency where those converge. The solution kept as fr_hb_solve_at's; on failure the
- * plain guesses' error. */
+ * nearby frequency where those converge. With stability on, an unstable solution is held
+ * while the later routes are tried: the first stable one, else the held one. The solution kept
+ * as fr_hb_solve_at's; on failure the plain guesses' error. */
 int fr_hb_default_start(fricreg_hb *hb, const char *fn, double omega);
 
 #endif
