@@ -8,7 +8,7 @@
  * (CHOLMOD's factor, its row updates, the tangent's product, a redundant pair), one with Stribeck
  * friction (both partitions), a 2-D context with Stribeck friction (dense W, then anisotropic
  * blocks: eval and tangent), a structure (Newmark or HHT-alpha, then run_ode with rkf45 or
- * rk4), a simulation (a different system and stepper family per thread: fricreg's rk4, GSL's
+ * rk4, then elements of two types added and run), a simulation (a different system and stepper family per thread: fricreg's rk4, GSL's
  * rkf45, rk4imp, msbdf), an exact solution, a harmonic-balance driver (dense or sparse, with
  * Hill's stability, a monitor, a continuation, the truncation error and a backbone), an Iwan
  * element, an AFT object and an element type on the thread's own arrays; every result and status must equal, bit for
@@ -259,6 +259,19 @@ static void structure_work(int k, struct results *r)
     expect(r, fricreg_structure_get_state(s, 2, u, v, NULL), FRICREG_OK);
     expect(r, fricreg_structure_get_dissipation(s, 1, D), FRICREG_OK);
     put_all(r, u, 2), put_all(r, v, 2), put(r, D[0]);
+    /* then elements of two types (each stepped by its kernel) to t = 3 */
+    const double Jj[2] = {0.0, 1.0}, Pj[2] = {20.0, 0.2 + 0.01 * k}, Ji[2] = {1.0, -1.0};
+    const double Pi[6] = {10.0, 8.0, 6.0, 0.05, 0.1, 0.2};
+    double fe[2], we[4], De[2];
+    expect(r, fricreg_structure_add_elements(s, fricreg_element_lookup("jenkins"), 1, 2, Jj, Pj),
+           FRICREG_OK);
+    expect(r,
+           fricreg_structure_add_elements(
+               s, fricreg_element_sliders(fricreg_element_lookup("iwan"), 3), 1, 2, Ji, Pi),
+           FRICREG_OK);
+    expect(r, fricreg_structure_run(s, 0.01, 3.0), FRICREG_OK);
+    expect(r, fricreg_structure_get_elements(s, 2, fe, we, De), FRICREG_OK);
+    put_all(r, fe, 2), put_all(r, we, 4), put_all(r, De, 2);
     fricreg_structure_free(s);
 }
 
@@ -459,10 +472,10 @@ START_TEST(threads_match_one_thread)
         /* results per thread: context 3 f + 3 Fz_ii + lambda = 7; sparse context 2 x 12 f +
          * 12 df + lambda = 37; Stribeck context 3 f + 2 x 9 tangent + lambda + 3 f = 25; 2-D
          * context 2 x (6 f + 2 x 36 tangent) = 156; structure 2 x (2 u + 2 v + D) + the
-         * residual = 11; simulation 4; exact 7; harmonic balance 4 q + 3 x + 3 errors +
+         * residual + its elements' 2 f + 4 w + 2 D = 19; simulation 4; exact 7; harmonic balance 4 q + 3 x + 3 errors +
          * points + Omega + 3 rms + omega + zeta + monitor's calls = 18; Iwan 4 x 2 f, AFT
          * 3 x (3 f + jac) + 3 nf and contact_3d's 3 f = 26 */
-        ck_assert_int_eq(reference[k].n, 7 + 37 + 25 + 156 + 11 + 4 + 7 + 18 + 26);
+        ck_assert_int_eq(reference[k].n, 7 + 37 + 25 + 156 + 19 + 4 + 7 + 18 + 26);
         ck_assert_msg(reference[k].unexpected == 0, "thread %d: %d unexpected statuses", k,
                       reference[k].unexpected);
     }
