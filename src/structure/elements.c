@@ -184,10 +184,9 @@ static int check_new(fricreg_structure *s, const fricreg_element_type *type, siz
     size_t dim = (size_t)type->kind->dim, np = type->kind->nparams(type->ns);
     for (size_t i = 0; i < me; i++) {
         char msg[200];
-        if (fricreg_element_explain(type, params + i * np, NULL, NULL, msg, sizeof msg) !=
-            FRICREG_OK)
-            return fr_fail(s, fricreg_element_explain(type, params + i * np, NULL, NULL, NULL, 0),
-                           "%s: element %zu: %s", who, i, msg);
+        int status = fricreg_element_explain(type, params + i * np, NULL, NULL, msg, sizeof msg);
+        if (status != FRICREG_OK)
+            return fr_fail(s, status, "%s: element %zu: %s", who, i, msg);
     }
     for (size_t r = 0; r < me * dim; r++) {
         int moves = 0;
