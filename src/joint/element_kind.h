@@ -28,6 +28,20 @@ struct fr_element_kind {
     void (*eval)(const fricreg_element_type *type, const double *params, const double *state_in,
                  const double *u, double *f, double *dfdu, double *dfdp, double *state_out,
                  double *slider_forces);
+    /* What a structure (src/structure/) needs besides eval, on checked parameters. Its state
+     * is the positions of sliders whose forces eval gives, so that a step dissipates
+     * sum dw . (f_s + f_s1) / 2 (a law without sliders has no state and dissipates nothing).
+     * elastic: the stiffness of each of the dim components with every slider sticking and
+     * the normal law closed, into k[dim] (the step guard, the fundamental frequency).
+     * project: a force f[dim] (a Newton iterate) onto the forces the element can carry at
+     * its own normal force f[dim - 1], in place (a slider's bound). stored: sum plus the
+     * energy its springs hold at the slider forces fs (laid out as the state) and the force
+     * f[dim], its tangential springs (normal = 0) or its normal one (1), added term by term
+     * so that a structure's sum runs in one order whatever the elements. */
+    void (*elastic)(const fricreg_element_type *type, const double *params, double *k);
+    void (*project)(const fricreg_element_type *type, const double *params, double *f);
+    double (*stored)(const fricreg_element_type *type, const double *params, const double *fs,
+                     const double *f, int normal, double sum);
 };
 
 /* A type: its kind, its sliders and, for a family, its first member (the type of 1 slider,

@@ -235,10 +235,56 @@ static void eval(const fricreg_element_type *type, const double *p, const double
     memcpy(state_out, w_new, nstate * sizeof *state_out);
 }
 
+static void elastic(const fricreg_element_type *type, const double *p, double *k)
+{
+    size_t ns = type->ns;
+    int td = type->kind->dim - type->kind->normal;
+    for (int a = 0; a < td; a++) {
+        k[a] = 0.0;
+        for (size_t s = 0; s < ns; s++)
+            k[a] += p[s];
+    }
+    if (type->kind->normal)
+        k[td] = p[2 * ns];
+}
+
+/* |f| <= sum_s phi_s N (N = 1 without a normal law, else f's normal force, first raised to 0
+ * if below), radially for 2 or 3 components: the return's projection. */
+static void project(const fricreg_element_type *type, const double *p, double *f)
+{
+    size_t ns = type->ns;
+    int td = type->kind->dim - type->kind->normal;
+    double bound = 0.0;
+    for (size_t s = 0; s < ns; s++)
+        bound += p[ns + s];
+    if (type->kind->normal) {
+        if (f[td] < 0.0)
+            f[td] = 0.0;
+        bound *= f[td];
+    }
+    if (td == 1 && fabs(f[0]) > bound)
+        f[0] = copysign(bound, f[0]);
+    double r = td > 1 ? fr_slider_norm(f, td) : 0.0;
+    for (int a = 0; a < td && r > bound; a++)
+        f[a] *= bound / r;
+}
+
+/* Each slider's spring |f_s|^2 / (2 k_s), or the normal spring's N^2 / (2 kn). */
+static double stored(const fricreg_element_type *type, const double *p, const double *fs,
+                     const double *f, int normal, double sum)
+{
+    size_t ns = type->ns, td = (size_t)(type->kind->dim - type->kind->normal);
+    if (normal)
+        return type->kind->normal ? sum + 0.5 * f[td] * (f[td] / p[2 * ns]) : sum;
+    for (size_t j = 0; j < ns * td; j++)
+        sum += 0.5 * fs[j] * (fs[j] / p[j / td]);
+    return sum;
+}
+
 /* One kind per line: name, dim, normal, family, sizes. */
-#define FR_SLIDER_KIND(id, dim, normal, family, params, state)                     \
-    const struct fr_element_kind fr_element_##id = {#id,    dim,   normal, family, \
-                                                    params, state, check,  eval};
+#define FR_SLIDER_KIND(id, dim, normal, family, params, state)                                    \
+    const struct fr_element_kind fr_element_##id = {#id,   dim,  normal,  family,  params, state, \
+                                                    check, eval, elastic, project, stored};
 
 FR_SLIDER_KIND(jenkins, 1, 0, 0, params_plain, state_1)
 FR_SLIDER_KIND(jenkins_2d, 2, 0, 0, params_plain, state_2)

@@ -138,33 +138,16 @@ struct fingerprint {
     uint64_t model, excitation;
 };
 
-/* The sum over the elements' parameters: every slider's k, every slider's phi, then the normal
- * laws' n0 and kn, so that a set of one type without gaps hashes as 1.7's checkpoints did;
- * then, for any other set, each element's type and gap. */
+/* The elements' types (name and sliders, in order) and parameters (a checkpoint is for the
+ * same library version: nothing older to match). */
 static uint64_t hash_elements(uint64_t h, const struct fr_elements *e)
 {
-    for (int half = 0; half < 2; half++) /* the ks, then the phis */
-        for (size_t i = 0; i < e->me; i++)
-            h = fnv1a(h, e->params + e->par[i] + half * e->type[i]->ns,
-                      e->type[i]->ns * sizeof(double));
-    int gap = 0;
-    for (int law = 0; law < 2; law++) /* n0, then kn */
-        for (size_t i = 0; i < e->me; i++)
-            if (e->normal[i] < e->nc) {
-                const double *p = e->params + e->par[i] + 2 * e->type[i]->ns;
-                h = fnv1a(h, &p[law == 0 ? 1 : 0], sizeof(double));
-                gap |= p[2] != 0.0;
-            }
-    if (e->uniform && !gap)
-        return h;
     for (size_t i = 0; i < e->me; i++) {
         const char *name = fricreg_element_name(e->type[i]);
         uint64_t ns = e->type[i]->ns;
         h = fnv1a(fnv1a(h, name, strlen(name)), &ns, sizeof ns);
-        if (e->normal[i] < e->nc)
-            h = fnv1a(h, e->params + e->par[i] + 2 * e->type[i]->ns + 2, sizeof(double));
     }
-    return h;
+    return fnv1a(h, e->params, e->par[e->me] * sizeof *e->params);
 }
 
 static void fingerprint_of(const fricreg_structure *s, struct fingerprint *fp)

@@ -28,7 +28,6 @@
 #include "base/newton_loop.h"
 #include "base/sparse_ops.h"
 #include "joint/element_kind.h"
-#include "joint/slider.h"
 #include "structure_internal.h"
 
 /* Element i at the coordinates y: its forces into x at its coordinates (x may be NULL), its
@@ -40,10 +39,7 @@ static void element_at(struct fr_elements *e, size_t i, const double y[], double
     int dim = T->kind->dim, td = dim - T->kind->normal;
     const double *p = e->params + e->par[i];
     double u[3], f[3], *dfdu = tangent ? e->tb + e->blk[i] : NULL;
-    for (int a = 0; a < td; a++)
-        u[a] = y[e->at[i] + (size_t)a];
-    if (td < dim)
-        u[td] = y[e->normal[i]];
+    fr_elements_gather(e, i, y, u);
     T->kind->eval(T, p, e->wc + e->slot[i], u, f, dfdu, NULL, e->wt + e->slot[i],
                   e->fs1 + e->slot[i]);
     if (tangent && td < dim) {
@@ -51,10 +47,8 @@ static void element_at(struct fr_elements *e, size_t i, const double y[], double
         double kn = p[2 * ns], N = p[2 * ns + 1] + kn * (u[td] - p[2 * ns + 2]);
         dfdu[dim * td + td] = N > 0.0 ? kn : 0.0;
     }
-    for (int a = 0; a < td && x != NULL; a++)
-        x[e->at[i] + (size_t)a] = f[a];
-    if (td < dim && x != NULL)
-        x[e->normal[i]] = f[td];
+    if (x != NULL)
+        fr_elements_scatter(e, i, f, x);
 }
 
 /* The forces x[nc] at the coordinates y[nc] from the committed wc (the sliders' trial state as
@@ -277,21 +271,10 @@ void fr_elements_bound(const struct fr_elements *e, double f[])
 {
     for (size_t i = 0; i < e->me; i++) {
         const fricreg_element_type *T = e->type[i];
-        size_t ns = T->ns, td = (size_t)(T->kind->dim - T->kind->normal), at = e->at[i];
-        const double *p = e->params + e->par[i];
-        double bound = 0.0;
-        for (size_t j = 0; j < ns; j++)
-            bound += p[ns + j];
-        if (e->normal[i] < e->nc) { /* the normal law's range N >= 0, then the bound mu N */
-            if (f[e->normal[i]] < 0.0)
-                f[e->normal[i]] = 0.0;
-            bound *= f[e->normal[i]];
-        }
-        if (td == 1 && fabs(f[at]) > bound)
-            f[at] = copysign(bound, f[at]);
-        double r = td > 1 ? fr_slider_norm(f + at, (int)td) : 0.0;
-        for (size_t a = 0; a < td && r > bound; a++) /* radially onto the ball, as the return */
-            f[at + a] *= bound / r;
+        double fi[3];
+        fr_elements_gather(e, i, f, fi);
+        T->kind->project(T, e->params + e->par[i], fi);
+        fr_elements_scatter(e, i, fi, f);
     }
 }
 

@@ -29,6 +29,24 @@ static int tangential(const fricreg_element_type *type)
     return type->kind->dim - type->kind->normal;
 }
 
+void fr_elements_gather(const struct fr_elements *e, size_t i, const double x[], double out[])
+{
+    int td = tangential(e->type[i]);
+    for (int a = 0; a < td; a++)
+        out[a] = x[e->at[i] + (size_t)a];
+    if (e->normal[i] < e->nc)
+        out[td] = x[e->normal[i]];
+}
+
+void fr_elements_scatter(const struct fr_elements *e, size_t i, const double in[], double x[])
+{
+    int td = tangential(e->type[i]);
+    for (int a = 0; a < td; a++)
+        x[e->at[i] + (size_t)a] = in[a];
+    if (e->normal[i] < e->nc)
+        x[e->normal[i]] = in[td];
+}
+
 void fr_elements_free(fricreg_structure *s)
 {
     struct fr_elements *e = &s->el;
@@ -55,7 +73,6 @@ static void lay_out(struct fr_elements *e, const fricreg_element_type *const typ
     e->par[0] = e->slot[0] = e->blk[0] = 0;
     e->ns = types[0]->ns;
     e->dim = tangential(types[0]);
-    e->uniform = 1;
     for (size_t i = 0; i < me; i++) {
         const fricreg_element_type *T = types[i];
         size_t td = (size_t)tangential(T), dim = (size_t)T->kind->dim;
@@ -70,7 +87,6 @@ static void lay_out(struct fr_elements *e, const fricreg_element_type *const typ
             e->ns = 0;
         if ((int)td != e->dim)
             e->dim = 0;
-        e->uniform &= T == types[0];
     }
     e->nt = nt;
     e->nnormal = nnormal;
@@ -123,20 +139,17 @@ static int allocate(struct fr_elements *e, const fricreg_element_type *const typ
            e->A != NULL && e->perm != NULL;
 }
 
-/* The stiffness of each coordinate with every slider sticking and every normal law closed:
- * the sum of the element's slider springs k_s, its normal spring kn. */
+/* The stiffness of each coordinate with every element elastic (its type's). */
 static void stick_stiffness(struct fr_elements *e)
 {
     for (size_t i = 0; i < e->me; i++) {
-        const double *p = e->params + e->par[i];
-        size_t ns = e->type[i]->ns;
-        for (size_t a = 0; a < (size_t)tangential(e->type[i]); a++) {
-            e->kstick[e->at[i] + a] = 0.0;
-            for (size_t j = 0; j < ns; j++)
-                e->kstick[e->at[i] + a] += p[j];
-        }
+        const fricreg_element_type *T = e->type[i];
+        double k[3];
+        T->kind->elastic(T, e->params + e->par[i], k);
+        for (int a = 0; a < tangential(T); a++)
+            e->kstick[e->at[i] + (size_t)a] = k[a];
         if (e->normal[i] < e->nc)
-            e->kstick[e->normal[i]] = p[2 * ns];
+            e->kstick[e->normal[i]] = k[tangential(T)];
     }
 }
 
@@ -366,12 +379,8 @@ int fricreg_structure_get_elements(const fricreg_structure *s, size_t me, double
     const struct fr_elements *e = &s->el;
     if (me != e->me)
         return FRICREG_ESIZE;
-    for (size_t i = 0, k = 0; i < me && f != NULL; i++) {
-        for (size_t a = 0; a < (size_t)tangential(e->type[i]); a++)
-            f[k++] = e->fe[e->at[i] + a];
-        if (e->normal[i] < e->nc)
-            f[k++] = e->fe[e->normal[i]];
-    }
+    for (size_t i = 0, k = 0; i < me && f != NULL; k += (size_t)e->type[i]->kind->dim, i++)
+        fr_elements_gather(e, i, e->fe, f + k);
     if (state != NULL && me > 0)
         memcpy(state, e->wc, e->nslots * sizeof *state);
     if (D != NULL && me > 0)
@@ -415,23 +424,18 @@ void fr_elements_reset(fricreg_structure *s)
     memset(e->fe, 0, e->nc * sizeof *e->fe);
 }
 
-/* The springs' energy: each slider's |f_s|^2 / (2 k_s), then each normal spring's N^2 / (2 kn),
- * summed in that order (1.x's). */
+/* The springs' energy, by the types: every element's tangential springs, then every normal
+ * spring (1.x's order). */
 double fr_elements_strain(const fricreg_structure *s)
 {
     const struct fr_elements *e = &s->el;
-    double energy = 0.0;
-    for (size_t i = 0; i < e->me; i++) {
-        size_t td = (size_t)tangential(e->type[i]);
-        for (size_t j = e->slot[i]; j < e->slot[i + 1]; j++) {
-            double k = e->params[e->par[i] + (j - e->slot[i]) / td];
-            energy += 0.5 * e->fs[j] * (e->fs[j] / k);
-        }
-    }
-    for (size_t i = 0; i < e->me; i++)
-        if (e->normal[i] < e->nc) {
-            double N = e->fe[e->normal[i]], kn = e->params[e->par[i] + 2 * e->type[i]->ns];
-            energy += 0.5 * N * (N / kn);
+    double energy = 0.0, f[3];
+    for (int normal = 0; normal < 2; normal++)
+        for (size_t i = 0; i < e->me; i++) {
+            const fricreg_element_type *T = e->type[i];
+            fr_elements_gather(e, i, e->fe, f);
+            energy = T->kind->stored(T, e->params + e->par[i], e->fs + e->slot[i], f, normal,
+                                     energy);
         }
     return energy;
 }

@@ -80,9 +80,8 @@ struct fr_joint {
 
 struct fr_elements {
     size_t me, nc, nt, nslots;
-    size_t ns;   /* the sliders of every element if they all have as many, else 0 */
-    int dim;     /* the tangential components of every element if they all have as many, else 0 */
-    int uniform; /* every element of one type */
+    size_t ns; /* the sliders of every element if they all have as many, else 0 */
+    int dim;   /* the tangential components of every element if they all have as many, else 0 */
     size_t nnormal;                    /* the elements with a normal law */
     const fricreg_element_type **type; /* [me] */
     size_t *at, *normal;               /* [me] the coordinates: tangential, normal (or nc) */
@@ -493,6 +492,10 @@ void fr_estimate_check(fricreg_structure *s); /* warnings.c's check of the estim
  * s holds, every slider at w = 0. FRICREG_OK; FRICREG_ENOMEM (recorded, under who). */
 int fr_elements_install(fricreg_structure *s, size_t me, const fricreg_element_type *const types[],
                         const double params[], cholmod_sparse *Jt, const char *who);
+/* elements.c: element i's dim components of the coordinates' array x[nc] into out[dim]
+ * (tangential, then normal), and back. */
+void fr_elements_gather(const struct fr_elements *e, size_t i, const double x[], double out[]);
+void fr_elements_scatter(const struct fr_elements *e, size_t i, const double in[], double x[]);
 /* elements.c: a copy of src's elements on dst (the companion), sliders at w = 0. */
 int fr_elements_clone(fricreg_structure *dst, const fricreg_structure *src);
 
