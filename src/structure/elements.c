@@ -123,8 +123,8 @@ static int allocate(struct fr_elements *e, const fricreg_element_type *const typ
     double **slots[] = {&e->wc, &e->wt, &e->fs, &e->fs1, &e->wc_held, &e->fs_held};
     double **coordinates[] = {&e->kstick, &e->fe, &e->fe1, &e->fe_held, &e->q0,  &e->y,   &e->fy,
                               &e->g,      &e->df, &e->ft,  &e->gt,      &e->tau, &e->norm};
-    for (size_t k = 0; k < sizeof slots / sizeof *slots; k++)
-        if ((*slots[k] = calloc(e->nslots, sizeof(double))) == NULL)
+    for (size_t k = 0; k < sizeof slots / sizeof *slots; k++) /* none for a law without state */
+        if ((*slots[k] = calloc(e->nslots > 0 ? e->nslots : 1, sizeof(double))) == NULL)
             return 0;
     for (size_t k = 0; k < sizeof coordinates / sizeof *coordinates; k++)
         if ((*coordinates[k] = calloc(nc, sizeof(double))) == NULL)
