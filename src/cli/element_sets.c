@@ -22,6 +22,24 @@ static const char *type_names(char *buf, size_t len)
     return buf;
 }
 
+const char *cli_element_set_help(void)
+{
+    static char help[1024];
+    if (help[0] == '\0') {
+        char names[256];
+        snprintf(help, sizeof help,
+                 "an element set of any type, repeatable (each set added in the order given): "
+                 "TYPE one of %s (fricreg_element.h); J.mtx Matrix Market (me dim) x n, element "
+                 "i's dim rows consecutive (tangential components, then the normal); P.txt a "
+                 "line per element in the kernel's layout: kt mun; kt mu kn n0 gap "
+                 "(jenkins_normal, contact_3d); k_1 .. k_ns phi_1 .. phi_ns (Iwan; ns from the "
+                 "line's length); k_1 .. k_ns mu_1 .. mu_ns kn n0 gap (iwan_normal). Not with "
+                 "the element options above",
+                 type_names(names, sizeof names));
+    }
+    return help;
+}
+
 int cli_parse_element_set(const struct cli_option *row, const char *text)
 {
     struct cli_element_set_options *o = row->slot;

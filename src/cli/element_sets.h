@@ -34,17 +34,10 @@ struct cli_element_set_options {
  * cli_element_set_options, the value TYPE:J.mtx:P.txt appended after TYPE is looked up. */
 int cli_parse_element_set(const struct cli_option *row, const char *text);
 
-/* The placeholder and the help of the --elements row: one text for its parser's help, the
- * man page and docs/structural.md. */
+/* The --elements row's placeholder, and its help with the kernel's type names as the library
+ * lists them (fricreg_element_at), so that a new type is in the help once it is in the library. */
 #define CLI_ELEMENT_SET_META "TYPE:J.mtx:P.txt"
-#define CLI_ELEMENT_SET_HELP                                                                    \
-    "an element set of any type, repeatable (each set added in the order given): TYPE one of "  \
-    "jenkins, jenkins_2d, jenkins_3d, jenkins_normal, contact_3d, iwan, iwan_2d, iwan_3d, "     \
-    "iwan_normal (fricreg_element.h); J.mtx Matrix Market (me dim) x n, element i's dim rows "  \
-    "consecutive (tangential components, then the normal); P.txt a line per element in the "    \
-    "kernel's layout: kt mun; kt mu kn n0 gap (jenkins_normal, contact_3d); k_1 .. k_ns phi_1 " \
-    ".. phi_ns (Iwan; ns from the line's length); k_1 .. k_ns mu_1 .. mu_ns kn n0 gap "         \
-    "(iwan_normal). Not with the element options above"
+const char *cli_element_set_help(void);
 
 /* One set as read: me elements of type (its ns set) of dim components and np parameters, J
  * dense row-major [me dim * n], params[me np], line[me] each element's line in P.txt; the

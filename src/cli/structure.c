@@ -215,7 +215,7 @@ static size_t structure_table(struct structure_options *o, struct cli_option tab
          .dflt = "g = 1 at all times: a constant load from t = 0"},
         CLI_ELEMENT_OPTIONS(&o->elements),
         {"--elements", CLI_CUSTOM, .slot = &o->element_sets, .parse = cli_parse_element_set,
-         .repeatable = 1, .meta = CLI_ELEMENT_SET_META, .help = CLI_ELEMENT_SET_HELP,
+         .repeatable = 1, .meta = CLI_ELEMENT_SET_META, .help = cli_element_set_help(),
          .dflt = "none"},
         {"--rayleigh", CLI_CUSTOM, .slot = o, .parse = parse_rayleigh, .given = &o->rayleigh_given,
          .meta = "A0,A1", .help = "Rayleigh damping C = A0 M + A1 K (A0 in 1/s, A1 in s, >= 0)"},
