@@ -48,13 +48,15 @@ int cli_parse_element_set(const struct cli_option *row, const char *text)
         return cli_usage_error(row->name, "expected TYPE:J.mtx:P.txt");
     if (o->n == CLI_MAX_ELEMENT_SETS) {
         char what[64];
-        snprintf(what, sizeof what, "more than %d sets", CLI_MAX_ELEMENT_SETS);
+        snprintf(what, sizeof what, "at most %d sets", CLI_MAX_ELEMENT_SETS);
         return cli_usage_error(row->name, what);
     }
-    char name[32] = "", names[256], what[400];
+    char name[32] = "", names[256], what[400]; /* a longer TYPE is no type's name */
     size_t len = (size_t)(first - text);
-    if (len < sizeof name)
-        memcpy(name, text, len), name[len] = '\0';
+    if (len < sizeof name) {
+        memcpy(name, text, len);
+        name[len] = '\0';
+    }
     const fricreg_element_type *type = fricreg_element_lookup(name);
     if (type == NULL) {
         snprintf(what, sizeof what, "unknown element type '%.*s' (%s)", (int)len, text,
