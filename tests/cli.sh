@@ -563,6 +563,85 @@ expect_usage_error "^fricreg-sim: --normal-params $d/Q_kn0.txt: .*kn > 0" $c3 --
 expect_usage_error "^fricreg-sim: --normal-params: missing" $c3
 expect_usage_error "^fricreg-sim: --jenkins-2d: 2-D elements take --jenkins-params or --normal" $c3 --iwan-params $d/I_slip.txt
 
+# Element sets of any types in one run (--elements TYPE:J.mtx:P.txt, repeatable, each added by
+# fricreg_structure_add_elements in order). es_as_old FILE: a summary with --elements in the
+# old options' words (nelements, dissipation_per_element, element_dissipation; the sets' list
+# and forces, which the old 1-D summary does not print, dropped), the CPU times dropped.
+es_as_old() {
+    sed -e 's/"cpu_seconds": [0-9.e+-]*//; s/"companion_cpu_seconds": [0-9.e+-]*//' \
+        -e 's/"nelements"/"njenkins"/; s/"dissipation_per_element/"dissipation_per_jenkins/g' \
+        -e 's/"element_dissipation"/"jenkins_dissipation"/; s/, "element_sets": \[[^]]*\]//' \
+        -e 's/, "element_forces": \[\[[^]]*\]\]//' "$1"
+}
+# (1) One set is the old option's run: the slipping Jenkins element of the oscillator above
+# (--jenkins J1.mtx --jenkins-params P_slip.txt) as --elements jenkins, the same summary to the
+# last digit (one structure of one type is the per-kind setter, bit for bit).
+"$sim" $jk --jenkins-params $d/P_slip.txt --integrator newmark >"$d/es_old.json" 2>"$tmp/err"
+"$sim" ${jk%% --jenkins *} --elements jenkins:$d/J1.mtx:$d/P_slip.txt --dt 0.01 --t-end 1.37 --integrator newmark >"$d/es_new.json" 2>>"$tmp/err"
+total=$((total + 1))
+es_as_old "$d/es_old.json" >"$d/es_old.txt"
+es_as_old "$d/es_new.json" >"$d/es_new.txt"
+if ! grep -Eq '"element_kind": "jenkins", "element_sets": \[\{"type": "jenkins", "nelements": 1, "sliders_per_element": 1\}\], "element_forces": \[\[-?[0-9.e-]+\]\]' "$d/es_new.json" ||
+   ! grep -q '"dissipation_per_jenkins": \[0\.0[0-9]*[1-9]' "$d/es_old.txt" || ! cmp -s "$d/es_old.txt" "$d/es_new.txt"; then
+    echo "FAIL: --elements jenkins is not --jenkins with --jenkins-params: $(head -c 600 "$d/es_new.json") | $(head -c 300 "$d/es_old.json") $(cat "$tmp/err")"; fails=$((fails + 1))
+fi
+# (2) Two sets of different types: two decoupled copies of that oscillator (dof 2 the same mass
+# and spring, on the same ground), the slipping Jenkins element on dof 1 and an Iwan element of
+# 3 sliders on dof 2, its line in the kernel's layout (k_1 k_2 k_3 phi_1 phi_2 phi_3, where
+# --iwan-params takes pairs). Each element's dissipation is the same element's alone by the old
+# options in the same model (dof 1: --jenkins, dof 2: --jenkins with --iwan-params), and the
+# energy balance's jenkins entry their sum, to 1e-12 (the one Newton over both elements may
+# stop an iteration apart from each one's; equal to the last digit on x86-64 with GCC).
+mtx M22.mtx symmetric "2 2 2" "1 1 2.385" "2 2 2.385"
+mtx K22.mtx symmetric "2 2 2" "1 1 217.3" "2 2 217.3"
+mtx J1of2.mtx general "1 2 1" "1 1 1"
+mtx J2of2.mtx general "1 2 1" "1 2 1"
+echo "100 60 40 0.02 0.03 0.04" >"$d/E_iwan3.txt"
+echo "100 0.02 60 0.03 40 0.04" >"$d/I_iwan3.txt"
+es="structure --mass $d/M22.mtx --stiffness $d/K22.mtx --contacts $d/J1of2.mtx --mun $d/mun0.txt --ground-accel $d/ag_osc.txt --dt 0.01 --t-end 1.37 --integrator newmark"
+"$sim" $es --elements jenkins:$d/J1of2.mtx:$d/P_slip.txt --elements iwan:$d/J2of2.mtx:$d/E_iwan3.txt >"$d/es_mix.json" 2>"$tmp/err"
+"$sim" $es --jenkins $d/J1of2.mtx --jenkins-params $d/P_slip.txt >"$d/es_j.json" 2>>"$tmp/err"
+"$sim" $es --jenkins $d/J2of2.mtx --iwan-params $d/I_iwan3.txt >"$d/es_i.json" 2>>"$tmp/err"
+total=$((total + 1))
+per_element=$(sed -n 's/.*"dissipation_per_element": \[\([^]]*\)\].*"jenkins": \([^,]*\),.*/\1, \2/p' "$d/es_mix.json")
+alone=$(sed -n 's/.*"dissipation_per_jenkins": \[\([^]]*\)\].*/\1/p' "$d/es_j.json" "$d/es_i.json" | tr '\n' ' ')
+if ! grep -Eq '"nelements": 2, .*"element_kind": "mixed", "element_sets": \[\{"type": "jenkins", "nelements": 1, "sliders_per_element": 1\}, \{"type": "iwan", "nelements": 1, "sliders_per_element": 3\}\], "element_forces": \[\[-?[0-9.e-]+\], \[-?[0-9.e-]+\]\]' "$d/es_mix.json" ||
+   ! echo "$per_element $alone" | tr -d ',' | awk '{ for (k = 1; k <= 2; k++) { d = $k - $(k + 3); if (d < 0) d = -d; if (!($k > 1e-4 && d <= 1e-12 * $k)) exit 1 }
+        d = $3 - $4 - $5; if (d < 0) d = -d; exit !(d <= 1e-12 * $3) }'; then
+    echo "FAIL: --elements jenkins and iwan: dissipations $per_element, alone $alone: $(head -c 600 "$d/es_mix.json") $(cat "$tmp/err")"; fails=$((fails + 1))
+fi
+# (3) A type with a normal law: the 3-D contact element above (--jenkins-2d with --normal, its
+# line kt mu n0 kn) as --elements contact_3d, its three rows in one matrix and its line in the
+# kernel's layout kt mu kn n0 gap: its forces [f_x, f_y, N] are the old run's jenkins_forces and
+# normal_forces, its dissipation the old one's, to the last digit.
+mtx Jc33.mtx general "3 3 3" "1 1 1" "2 2 1" "3 3 1"
+echo "200.0 1e27 40 1000 0" >"$d/E_c3.txt"
+"$sim" $c3 --normal-params $d/Q_stuck.txt >"$d/es_c3_old.json" 2>"$tmp/err"
+"$sim" ${c3%% --jenkins-2d *} --elements contact_3d:$d/Jc33.mtx:$d/E_c3.txt --dt 0.01 --t-end 1.37 --integrator newmark >"$d/es_c3_new.json" 2>>"$tmp/err"
+total=$((total + 1))
+old_f=$(sed -n 's/.*"jenkins_forces": \[\[\([^]]*\)\]\], "normal_forces": \[\([^]]*\)\].*/\1, \2/p' "$d/es_c3_old.json")
+new_f=$(sed -n 's/.*"element_forces": \[\[\([^]]*\)\]\].*/\1/p' "$d/es_c3_new.json")
+if [ -z "$old_f" ] || [ "$old_f" != "$new_f" ] ||
+   [ "$(sed -n 's/.*"dissipation_per_jenkins": \(\[[^]]*\]\).*/\1/p' "$d/es_c3_old.json")" != "$(sed -n 's/.*"dissipation_per_element": \(\[[^]]*\]\).*/\1/p' "$d/es_c3_new.json")" ]; then
+    echo "FAIL: --elements contact_3d: forces [$new_f], --jenkins-2d --normal's [$old_f] $(cat "$tmp/err")"; fails=$((fails + 1))
+fi
+# Its usage errors name the option, the file and the line.
+echo "200.0 0.05 1" >"$d/E_three.txt"
+printf '100 60 40 0.02 0.03 0.04\n# a comment\n100 60 0.02 0.03\n' >"$d/E_uneven.txt"
+echo "-1 0.05" >"$d/E_bad.txt"
+mtx J3of2.mtx general "3 2 3" "1 1 1" "2 2 1" "3 1 1"
+mtx J2rows.mtx general "2 2 2" "1 1 1" "2 2 1"
+expect_usage_error "^fricreg-sim: --elements: unknown element type 'jenkin' (jenkins, jenkins_2d, contact_3d, iwan" $es --elements jenkin:$d/J1of2.mtx:$d/P_slip.txt
+expect_usage_error "^fricreg-sim: --elements: expected TYPE:J.mtx:P.txt" $es --elements jenkins:$d/J1of2.mtx
+expect_usage_error "^fricreg-sim: --elements $d/E_three.txt: line 1: 3 numbers: jenkins takes 2 parameters" $es --elements jenkins:$d/J1of2.mtx:$d/E_three.txt
+expect_usage_error "^fricreg-sim: --elements $d/E_three.txt: line 1: 3 numbers: iwan takes 2 ns parameters" $es --elements iwan:$d/J1of2.mtx:$d/E_three.txt
+expect_usage_error "^fricreg-sim: --elements $d/E_uneven.txt: line 3: 4 numbers, line 1 has 6: every element of a set takes the same parameters" $es --elements iwan:$d/J2rows.mtx:$d/E_uneven.txt
+expect_usage_error "^fricreg-sim: --elements $d/E_bad.txt: line 1: jenkins: kt = -1 must be > 0" $es --elements jenkins:$d/J1of2.mtx:$d/E_bad.txt
+expect_usage_error "^fricreg-sim: --elements $d/J3of2.mtx: 3 rows: jenkins_2d takes 2 per element (its components), a multiple of 2" $es --elements jenkins_2d:$d/J3of2.mtx:$d/P_slip.txt
+expect_usage_error "^fricreg-sim: --elements $d/P_slip.txt: 1 lines, $d/J2rows.mtx has 2 elements" $es --elements jenkins:$d/J2rows.mtx:$d/P_slip.txt
+expect_usage_error "^fricreg-sim: --elements: give --elements or the element options" $es --elements jenkins:$d/J1of2.mtx:$d/P_slip.txt --jenkins $d/J2of2.mtx --jenkins-params $d/P_slip.txt
+expect_usage_error "^fricreg-sim: --elements: elements are integrated by newmark, hht or central only" ${es%% --integrator *} --integrator rk4 --elements jenkins:$d/J1of2.mtx:$d/P_slip.txt
+
 # Two storeys (m 1.7, 2.3 kg; k 311, 187 N/m), a damper on each drift, a shaken ground:
 # symmetric storage (lower triangle) and the full general matrix are the same model, and
 # Rayleigh damping given as a0,a1 the same as C = a0 M + a1 K given as a file.
@@ -905,6 +984,9 @@ expect_output '^  hb          ' --help
 expect_usage_error "^fricreg-sim: --omega-end: missing" hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --jenkins $d/J.mtx --jenkins-params $d/P.txt --omega-start 1
 expect_usage_error "^fricreg-sim: --jenkins-params: missing" hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --jenkins $d/J.mtx --omega-start 1 --omega-end 2
 expect_usage_error "^fricreg-sim: --jenkins-2d: harmonic balance has 2-D elements with a normal law only" hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --jenkins-2d $d/J.mtx --jenkins-params $d/P.txt --omega-start 1 --omega-end 2
+# structure's element sets (--elements) are refused: harmonic balance takes one kind per run
+expect_usage_error "^fricreg-sim: --elements: harmonic balance takes one kind of element per run" hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --elements jenkins:$d/J.mtx:$d/P.txt --omega-start 1 --omega-end 2
+expect_usage_error "^fricreg-sim: --elements: harmonic balance takes one kind of element per run" nma --mass $d/M.mtx --stiffness $d/M.mtx --elements jenkins:$d/J.mtx:$d/P.txt --amplitude-start 0.5 --amplitude-end 500
 expect_usage_error "^fricreg-sim: --jenkins-params $d/P1.txt: line 1: " hb --mass $d/M.mtx --stiffness $d/K.mtx --excitation $d/F.txt --jenkins $d/J.mtx --jenkins-params $d/P1.txt --omega-start 1 --omega-end 2
 expect_usage_error "^fricreg-sim: --harmonics: " ${hb%% --harmonics *} --omega-start 0.5 --omega-end 3 --harmonics 41
 expect_usage_error "^fricreg-sim: --newton-tol: .*tol" $hb --newton-tol 2

@@ -12,7 +12,8 @@ trap 'rm -rf "$tmp"' EXIT
 fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
 
 # Known to the parser only to be refused with a reason (the rows marked hidden): twoblock's
-# --partition elsewhere, the integration options of the closed-form exact, hb's and nma's --jenkins-2d.
+# --partition elsewhere, the integration options of the closed-form exact, hb's and nma's
+# --jenkins-2d and --elements (structure's element sets).
 refused_only() { # COMMAND OPTION
     case "$1 $2" in
     "oscillator --partition" | "chain --partition" | "exact --partition") return 0 ;;
@@ -20,7 +21,7 @@ refused_only() { # COMMAND OPTION
     "exact --eps" | "exact --extrapolate" | "exact --extrapolate-order") return 0 ;;
     "exact --extrapolate-window" | "exact --max-steps" | "exact --kink-location") return 0 ;;
     "exact --error-estimate" | "exact --answer-rtol") return 0 ;;
-    "hb --jenkins-2d" | "nma --jenkins-2d") return 0 ;;
+    "hb --jenkins-2d" | "nma --jenkins-2d" | "hb --elements" | "nma --elements") return 0 ;;
     esac
     return 1
 }

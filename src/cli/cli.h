@@ -98,7 +98,9 @@ struct cli_option {
      * its units, and the default where the slot's value before parsing does not show it
      * (derived, or a value meaning "not given"; "" shows none). */
     const char *meta, *help, *dflt;
-    int hidden; /* known by name only to be refused with a reason: not in the help */
+    int hidden;     /* known by name only to be refused with a reason: not in the help */
+    int repeatable; /* may be given more than once, each value parsed in turn (a list's
+                     * CLI_CUSTOM parse appends it) */
 };
 
 /* The most rows a table has (with room for a subcommand's further options). */
@@ -144,7 +146,7 @@ void cli_print_man(FILE *out);
 int cli_parse_rayleigh(const char *option, const char *text, double *a0, double *a1);
 
 /* Parses argv (after the subcommand) against table[n] (n <= CLI_MAX_ROWS): each option's
- * value by its row, each option at most once. Returns 0, or CLI_EXIT_USAGE after one line on
+ * value by its row, each option at most once (a repeatable row's as often as given). Returns 0, or CLI_EXIT_USAGE after one line on
  * stderr naming the option: "unknown option for COMMAND" (also as the last argument), "given
  * twice", "missing value", or its value's fault. */
 int cli_parse_options(int argc, char **argv, const struct cli_option table[], size_t n,

@@ -5,6 +5,7 @@
 #define FRICREG_CLI_STRUCTURE_H
 
 #include "cli.h"
+#include "element_sets.h"
 #include "jenkins_input.h"
 
 enum scheme { SCHEME_NONE, SCHEME_NEWMARK, SCHEME_HHT, SCHEME_CENTRAL, SCHEME_GSL };
@@ -16,6 +17,7 @@ struct structure_options {
     const char *output_contacts;     /* --output-contacts LIST or "none" as given, or NULL */
     const char *checkpoint_in, *checkpoint_out; /* fricreg_structure_save's blob, or NULL */
     struct cli_element_files elements; /* --jenkins with its parameters (jenkins_input.h) */
+    struct cli_element_set_options element_sets; /* --elements, in order (element_sets.h) */
     int rayleigh_given, alpha_given, atol_given, law_given, eps_given, law, integrator;
     enum scheme scheme;
     double a0, a1, eps, alpha, dt, t_end, rtol;

@@ -12,6 +12,14 @@ int cli_hb_parse_rayleigh(const struct cli_option *row, const char *text)
     return cli_parse_rayleigh(row->name, text, &o->a0, &o->a1);
 }
 
+int cli_hb_refuse_element_sets(const struct cli_option *row, const char *text)
+{
+    (void)text;
+    return cli_usage_error(row->name, "harmonic balance takes one kind of element per run: give "
+                                      "--jenkins or --jenkins-2d with one parameter file "
+                                      "(fricreg-sim structure mixes element sets)");
+}
+
 void cli_hb_model_defaults(struct cli_hb_model_options *o)
 {
     *o = (struct cli_hb_model_options){0};

@@ -30,6 +30,9 @@ struct cli_hb_model {
 /* --rayleigh's parser: the row's slot is the struct cli_hb_model_options. */
 int cli_hb_parse_rayleigh(const struct cli_option *row, const char *text);
 
+/* --elements (structure's element sets), known here only to be refused with the reason. */
+int cli_hb_refuse_element_sets(const struct cli_option *row, const char *text);
+
 /* The model's option rows over o (a struct cli_hb_model_options *). */
 /* clang-format off */
 #define CLI_HB_MODEL_OPTIONS(o)                                                                 \
@@ -42,7 +45,9 @@ int cli_hb_parse_rayleigh(const struct cli_option *row, const char *text);
     CLI_ELEMENT_OPTIONS(&(o)->elements),                                                        \
     {"--rayleigh", CLI_CUSTOM, .slot = (o), .parse = cli_hb_parse_rayleigh,                    \
      .given = &(o)->rayleigh_given, .meta = "A0,A1",                                            \
-     .help = "Rayleigh damping C = A0 M + A1 K (both >= 0)"}
+     .help = "Rayleigh damping C = A0 M + A1 K (both >= 0)"},                                 \
+    {"--elements", CLI_CUSTOM, .parse = cli_hb_refuse_element_sets, .hidden = 1,                \
+     .help = "structure's element sets: refused, harmonic balance takes one kind per run"}
 /* clang-format on */
 
 /* The defaults (the elements'). */

@@ -56,3 +56,17 @@ int cli_read_index(const char *text, char **end, long max, long *value)
     return *end != text && errno == 0 && *value >= 1 && *value <= max &&
            (**end == '\0' || strchr(" \t\r\n", **end) != NULL);
 }
+
+int cli_line_numbers(const char *option, const char *path, long line, char *p, double *v,
+                     size_t cap, size_t *count)
+{
+    char *end;
+    *count = 0;
+    for (p += strspn(p, " \t,"); !cli_blank(p); p = end + strspn(end, " \t,")) {
+        if (*count == cap)
+            return cli_file_error(option, path, line, "more than %zu numbers", cap);
+        if (!cli_read_number(p, &end, &v[(*count)++]))
+            return cli_file_error(option, path, line, "number %zu is not a finite number", *count);
+    }
+    return 0;
+}

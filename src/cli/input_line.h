@@ -9,6 +9,9 @@
 
 /* The longest line read, its end included: a longer one is an error, not two lines. */
 #define CLI_LINE_MAX 512
+/* The longest line of an element's parameters, 2 ns numbers and a few: 1024 sliders (the
+ * kernels' and fricreg_hb's limit) written to 17 digits fit. */
+#define CLI_SLIDER_LINE_MAX 65536
 
 /* Prints "fricreg-sim: OPTION PATH: line LINE: WHAT" (without "line LINE: " when line is 0)
  * on stderr, WHAT formatted as printf does, and returns CLI_EXIT_USAGE. */
@@ -34,4 +37,8 @@ int cli_read_number(const char *text, char **end, double *value);
  * string's end); *end after it. 1 if read, else 0. */
 int cli_read_index(const char *text, char **end, long max, long *value);
 
+/* The numbers of the line p (line LINE of option's file path) into v[*count], room for cap,
+ * separated by blanks or commas: 0, or CLI_EXIT_USAGE after the line's message. */
+int cli_line_numbers(const char *option, const char *path, long line, char *p, double *v,
+                     size_t cap, size_t *count);
 #endif

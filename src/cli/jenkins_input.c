@@ -13,10 +13,6 @@
 #include "jenkins_input.h"
 #include "matrix_market.h"
 
-/* An --iwan-params line holds 2 ns numbers: 1024 sliders (fricreg_hb's limit) written to 17
- * digits fit. */
-#define SLIDER_LINE_MAX 65536
-
 void cli_element_defaults(struct cli_element_files *e)
 {
     *e = (struct cli_element_files){.sliders = 50, .resolution = 1e-6};
@@ -90,10 +86,8 @@ void cli_free_elements(struct cli_elements *el)
     memset(el, 0, sizeof *el);
 }
 
-/* The rows x cols matrix of option's file (J), dense row-major into *out (a symmetric file's
- * lower triangle mirrored). */
-static int read_dense(const char *option, const char *path, size_t rows, size_t cols, size_t *nrows,
-                      size_t *ncols, double **out)
+int cli_read_dense(const char *option, const char *path, size_t rows, size_t cols, size_t *nrows,
+                   size_t *ncols, double **out)
 {
     struct cli_sparse A = {0};
     int status = cli_read_mtx(option, path, rows, cols, &A);
@@ -155,22 +149,6 @@ int cli_read_pairs(const char *option, const char *path, size_t rows, const char
     return status;
 }
 
-/* The numbers of one line into v[*count] (room for cap): 0, or CLI_EXIT_USAGE after the
- * line's message. */
-static int line_numbers(const char *option, const char *path, long line, char *p, double *v,
-                        size_t cap, size_t *count)
-{
-    char *end;
-    *count = 0;
-    for (p += strspn(p, " \t,"); !cli_blank(p); p = end + strspn(end, " \t,")) {
-        if (*count == cap)
-            return cli_file_error(option, path, line, "more than %zu numbers", cap);
-        if (!cli_read_number(p, &end, &v[(*count)++]))
-            return cli_file_error(option, path, line, "number %zu is not a finite number", *count);
-    }
-    return 0;
-}
-
 /* --iwan-params (lead 0: m lines of k_1 phi_1 ... k_ns phi_ns) or --iwan-normal-params (lead
  * 2: n0 kn, then k_1 mu_1 ... k_ns mu_ns), the same ns on each line: the pairs into k[m ns] and
  * phi[m ns], the lead numbers into head[m lead] (lead > 0). */
@@ -180,8 +158,8 @@ static int read_sliders(const char *option, const char *path, size_t m, size_t l
     FILE *f = fopen(path, "r");
     if (f == NULL)
         return cli_file_error(option, path, 0, "cannot open: %s", strerror(errno));
-    const size_t cap = SLIDER_LINE_MAX / 2;
-    char *buf = malloc(SLIDER_LINE_MAX);
+    const size_t cap = CLI_SLIDER_LINE_MAX / 2;
+    char *buf = malloc(CLI_SLIDER_LINE_MAX);
     double *v = malloc(cap * sizeof *v);
     long line = 0, first = 0;
     int too_long = 0, status = 0;
@@ -189,11 +167,11 @@ static int read_sliders(const char *option, const char *path, size_t m, size_t l
     if (buf == NULL || v == NULL ||
         (lead > 0 && (*head = malloc(m * lead * sizeof **head)) == NULL))
         status = cli_file_error(option, path, 0, "out of memory");
-    while (status == 0 && cli_next_line(f, buf, SLIDER_LINE_MAX, &line, &too_long)) {
+    while (status == 0 && cli_next_line(f, buf, CLI_SLIDER_LINE_MAX, &line, &too_long)) {
         if (buf[0] == '#' || buf[0] == '%' || cli_blank(buf))
             continue;
         size_t count = 0;
-        if ((status = line_numbers(option, path, line, buf, v, cap, &count)) != 0)
+        if ((status = cli_line_numbers(option, path, line, buf, v, cap, &count)) != 0)
             break;
         if (count < lead + 2 || (count - lead) % 2 != 0)
             status = cli_file_error(option, path, line,
@@ -230,7 +208,7 @@ static int read_sliders(const char *option, const char *path, size_t m, size_t l
     free(v);
     if (status == 0 && too_long)
         status = cli_file_error(option, path, line, "line too long (%d characters at most)",
-                                SLIDER_LINE_MAX - 2);
+                                CLI_SLIDER_LINE_MAX - 2);
     if (status == 0 && rows != m)
         status = cli_file_error(option, path, 0,
                                 "%zu lines, the model has %zu elements (rows of --jenkins)", rows,
@@ -275,7 +253,7 @@ static int read_normal(const struct cli_element_files *e, size_t n, struct cli_e
 {
     size_t m = el->m, rows = 0, cols = 0;
     double *v = NULL;
-    int status = read_dense("--normal", e->normal, m, n, &rows, &cols, &el->Jn);
+    int status = cli_read_dense("--normal", e->normal, m, n, &rows, &cols, &el->Jn);
     if (status == 0)
         status = read_rows("--normal-params", e->normal_params, m, 4,
                            "elements (rows of --jenkins)", &v);
@@ -292,7 +270,7 @@ static int read_iwan_normal(const struct cli_element_files *e, size_t n, struct 
 {
     size_t m = el->m, rows = 0, cols = 0;
     double *head = NULL;
-    int status = read_dense("--normal", e->normal, m, n, &rows, &cols, &el->Jn);
+    int status = cli_read_dense("--normal", e->normal, m, n, &rows, &cols, &el->Jn);
     if (status == 0)
         status = read_sliders("--iwan-normal-params", e->iwan_normal, m, 2, &el->ns, &el->k,
                               &el->mu, &head);
@@ -307,7 +285,7 @@ static int read_iwan_normal(const struct cli_element_files *e, size_t n, struct 
 static int read_planar(const struct cli_element_files *e, size_t n, struct cli_elements *el)
 {
     size_t rows = 0, cols = 0;
-    int status = read_dense("--jenkins-2d", e->rows_2d, 0, n, &rows, &cols, &el->J);
+    int status = cli_read_dense("--jenkins-2d", e->rows_2d, 0, n, &rows, &cols, &el->J);
     if (status != 0)
         return status;
     if (rows % 2 != 0)
@@ -335,7 +313,7 @@ int cli_read_elements(const struct cli_element_files *e, size_t n, struct cli_el
     if (e->rows == NULL)
         return 0;
     size_t cols = 0;
-    int status = read_dense("--jenkins", e->rows, 0, n, &el->m, &cols, &el->J);
+    int status = cli_read_dense("--jenkins", e->rows, 0, n, &el->m, &cols, &el->J);
     if (status != 0)
         return status;
     el->ns = 1;

@@ -105,6 +105,12 @@ void cli_free_elements(struct cli_elements *el);
  * summaries' element_kind. */
 const char *cli_element_kind_name(const struct cli_elements *el);
 
+/* The matrix of option's Matrix Market file path (rows x cols; 0: any), dense row-major into
+ * *out[*nrows * *ncols] (a symmetric file's lower triangle mirrored), the caller's to free.
+ * 0, or CLI_EXIT_USAGE after one line on stderr naming the option, the file and the line. */
+int cli_read_dense(const char *option, const char *path, size_t rows, size_t cols, size_t *nrows,
+                   size_t *ncols, double **out);
+
 /* Two columns per row, one row per entity (rows of them: dofs or elements, named by what in
  * the message): into a[rows], b[rows], the caller's to free. 0, or CLI_EXIT_USAGE after one
  * line on stderr naming the option, the file and the line. */

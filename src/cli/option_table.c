@@ -253,7 +253,7 @@ int cli_parse_options(int argc, char **argv, const struct cli_option table[], si
             return cli_usage_error(option, what);
         }
         size_t index = (size_t)(row - table);
-        if (index < CLI_MAX_ROWS && seen[index])
+        if (index < CLI_MAX_ROWS && seen[index] && !row->repeatable)
             return cli_usage_error(option, "given twice (give each option once)");
         if (index < CLI_MAX_ROWS)
             seen[index] = 1;

@@ -77,6 +77,18 @@ static int parse_output_contacts(const struct cli_option *row, const char *text)
     return strcmp(text, "none") == 0 ? 0 : cli_check_dof_list(row->name, &cli_contact_list, text);
 }
 
+/* Whether any of the element options of one kind per run is given (--elements sets are
+ * added on their own: the two ways do not mix). */
+static int element_options_given(const struct cli_element_files *e)
+{
+    const char *files[] = {e->rows,     e->rows_2d, e->jenkins,       e->iwan,
+                           e->segalman, e->normal,  e->normal_params, e->iwan_normal};
+    for (size_t k = 0; k < sizeof files / sizeof files[0]; k++)
+        if (files[k] != NULL)
+            return 1;
+    return e->sliders_given || e->resolution_given;
+}
+
 /* Options that need others, or exclude them. */
 static int check_options(const struct structure_options *o)
 {
@@ -112,6 +124,12 @@ static int check_options(const struct structure_options *o)
         return cli_usage_error("--rayleigh", "give --damping or --rayleigh, not both");
     if (o->alpha_given && o->scheme != SCHEME_HHT)
         return cli_usage_error("--alpha", "only --integrator hht has alpha");
+    if (o->element_sets.n > 0 && element_options_given(&o->elements))
+        return cli_usage_error("--elements", "give --elements or the element options (--jenkins, "
+                                             "--jenkins-2d and their parameter files), not both");
+    if (o->element_sets.n > 0 && o->scheme == SCHEME_GSL)
+        return cli_usage_error("--elements", "elements are integrated by newmark, hht or central "
+                                             "only");
     int status = cli_check_elements(&o->elements, 0);
     if (status != 0)
         return status;
@@ -196,6 +214,9 @@ static size_t structure_table(struct structure_options *o, struct cli_option tab
                  "linear between samples, 0 outside, as --ground-accel",
          .dflt = "g = 1 at all times: a constant load from t = 0"},
         CLI_ELEMENT_OPTIONS(&o->elements),
+        {"--elements", CLI_CUSTOM, .slot = &o->element_sets, .parse = cli_parse_element_set,
+         .repeatable = 1, .meta = CLI_ELEMENT_SET_META, .help = cli_element_set_help(),
+         .dflt = "none"},
         {"--rayleigh", CLI_CUSTOM, .slot = o, .parse = parse_rayleigh, .given = &o->rayleigh_given,
          .meta = "A0,A1", .help = "Rayleigh damping C = A0 M + A1 K (A0 in 1/s, A1 in s, >= 0)"},
         {"--integrator", CLI_CUSTOM, .slot = o, .parse = parse_integrator,
@@ -333,7 +354,8 @@ static int setup(const struct structure_options *o, const struct structure_input
 /* What a run collects beside the structure's own records. */
 struct structure_run {
     double *u, *v, *f, *peak; /* [n], [n], [mlib], [n] */
-    double *De; /* [2 me]: the elements' dissipation, the 2-D forces (NULL without elements) */
+    double *De; /* [2 me]: the elements' dissipation, the 2-D forces; --elements: [me + the
+                 * sets' forces] (NULL without elements) */
     FILE *rows; /* CSV rows, or NULL */
     /* What the output shows: the dofs dof[ndof] (0-based; NULL: all n in order), and in the
      * trajectory the contacts contact[ncontact] (NULL: all m in order) of the m of the files
@@ -574,6 +596,42 @@ static void json_atol(FILE *out, const struct structure_input *in, const fricreg
     free(atol);
 }
 
+/* The --elements sets' fields, in the order of the old options' (njenkins ...
+ * jenkins_dissipation, element_kind): their count, each element's dissipation (and its error
+ * estimate), the sum, the kind, each set's type and sliders, and each element's force, its
+ * dim components. De[me + nforces] is room for the dissipations and forces. */
+static void write_element_sets(FILE *out, const fricreg_structure *s,
+                               const struct cli_element_sets *sets, double *De,
+                               const struct structure_estimate *est, struct cli_kind_counts *kinds)
+{
+    double *f = De + sets->me;
+    fricreg_structure_get_elements(s, sets->me, f, NULL, De);
+    fprintf(out, ", \"nelements\": %zu", sets->me);
+    cli_json_array(out, "dissipation_per_element", sets->me, De);
+    if (est->De_err != NULL) {
+        cli_json_array(out, "dissipation_per_element_error_estimate", sets->me, est->De_err);
+        cli_json_kinds(out, "dissipation_per_element_error_kind", sets->me, est->De_kind);
+        cli_count_kinds(kinds, sets->me, est->De_kind);
+    }
+    fprintf(out, ", \"element_dissipation\": %.17g, \"element_kind\": \"%s\", \"element_sets\": [",
+            svalue(s, FRICREG_SVALUE_JENKINS), cli_element_sets_kind(sets));
+    for (size_t k = 0; k < sets->n; k++)
+        fprintf(out, "%s{\"type\": \"%s\", \"nelements\": %zu, \"sliders_per_element\": %zu}",
+                k > 0 ? ", " : "", fricreg_element_name(sets->set[k].type), sets->set[k].me,
+                fricreg_element_nsliders(sets->set[k].type));
+    fputs("], \"element_forces\": [", out);
+    for (size_t k = 0, i = 0; k < sets->n; k++)
+        for (size_t e = 0; e < sets->set[k].me; e++, i++) { /* element i's dim components */
+            fputs(i > 0 ? ", [" : "[", out);
+            for (size_t c = 0; c < sets->set[k].dim; c++, f++) {
+                fputs(c > 0 ? ", " : "", out);
+                cli_json_number(out, *f);
+            }
+            fputs("]", out);
+        }
+    fputs("]", out);
+}
+
 static void write_summary(FILE *out, const struct structure_options *o,
                           const struct structure_input *in, const fricreg_structure *s,
                           const struct structure_run *run, double eps, double cpu_seconds,
@@ -659,6 +717,8 @@ static void write_summary(FILE *out, const struct structure_options *o,
             cli_json_array(out, "normal_forces", el->m, run->De);
         }
     }
+    if (in->sets.me > 0)
+        write_element_sets(out, s, &in->sets, run->De, est, &kinds);
     if (est->peak_err != NULL)
         cli_json_kind_counts(out, &kinds);
     fprintf(out,
@@ -667,7 +727,7 @@ static void write_summary(FILE *out, const struct structure_options *o,
             svalue(s, FRICREG_SVALUE_INITIAL), svalue(s, FRICREG_SVALUE_INPUT),
             svalue(s, FRICREG_SVALUE_KINETIC), svalue(s, FRICREG_SVALUE_STRAIN),
             svalue(s, FRICREG_SVALUE_VISCOUS), svalue(s, FRICREG_SVALUE_FRICTION));
-    if (el->m > 0)
+    if (el->m > 0 || in->sets.me > 0) /* every element's, whatever its type */
         fprintf(out, "\"jenkins\": %.17g, ", svalue(s, FRICREG_SVALUE_JENKINS));
     fprintf(out, "\"residual\": %.17g}", svalue(s, FRICREG_SVALUE_RESIDUAL));
     int64_t iterations = sstat(s, FRICREG_SSTAT_NEWTON_ITERATIONS);
@@ -690,7 +750,7 @@ static void write_summary(FILE *out, const struct structure_options *o,
 static void read_estimate(const fricreg_structure *s, const struct structure_input *in,
                           struct structure_estimate *est)
 {
-    size_t n = in->n, m = in->mlib, me = in->el.m;
+    size_t n = in->n, m = in->mlib, me = in->el.m + in->sets.me; /* one of them 0 */
     double *buf = malloc((n + m + me + 1) * sizeof *buf);
     int *kind = malloc((n + m + me + 1) * sizeof *kind);
     if (buf != NULL && kind != NULL &&
@@ -837,7 +897,9 @@ static int run_structure(fricreg_structure *s, const struct structure_options *o
     int listed = select_output(o, in, &run, &dof, &contact);
     if (listed != 0)
         return listed;
-    double *buf = calloc(3 * in->n + in->mlib + 2 * in->el.m, sizeof *buf);
+    /* De: the old options' 2 me, or the sets' D[me] and forces[nforces] */
+    double *buf = calloc(3 * in->n + in->mlib + 2 * in->el.m + in->sets.me + in->sets.nforces,
+                         sizeof *buf);
     if (buf == NULL) {
         free(dof);
         free(contact);
@@ -847,7 +909,7 @@ static int run_structure(fricreg_structure *s, const struct structure_options *o
     run.v = buf + in->n;
     run.peak = buf + 2 * in->n;
     run.f = buf + 3 * in->n;
-    run.De = in->el.m > 0 ? buf + 3 * in->n + in->mlib : NULL;
+    run.De = in->el.m > 0 || in->sets.me > 0 ? buf + 3 * in->n + in->mlib : NULL;
     if (o->output == CLI_TRAJECTORY) {
         if ((run.rows = tmpfile()) == NULL) {
             free(buf);
@@ -933,7 +995,9 @@ const struct cli_command cli_structure_command = {
     "(ELEMENTS: "
     "--jenkins J.mtx with --jenkins-params, --iwan-params or --iwan-segalman, or --normal "
     "with --normal-params; --jenkins-2d J2.mtx with --jenkins-params, or with --normal and "
-    "--normal-params for 3-D contact elements), run with Newmark, HHT-alpha, central differences "
+    "--normal-params for 3-D contact elements; or --elements TYPE:J.mtx:P.txt, repeatable, sets "
+    "of the kernel's types mixed in one structure), run with Newmark, HHT-alpha, central "
+    "differences "
     "or a GSL stepper; "
     "a JSON summary with the energy balance, or a CSV row per step (--output-dofs, "
     "--output-contacts and --output-every select the columns and the rows; "

@@ -31,6 +31,7 @@ void cli_free_model(struct structure_input *in)
     free(in->p);
     free(in->g);
     cli_free_elements(&in->el);
+    cli_free_element_sets(&in->sets);
 }
 
 /* --influence or --load: an n x 1 file as the vector r[n], n from the mass matrix's file. */
@@ -94,6 +95,8 @@ int cli_read_model(const struct structure_options *o, struct structure_input *in
                                  &in->nload, &in->g);
     if (status == 0)
         status = cli_read_elements(&o->elements, in->n, &in->el);
+    if (status == 0)
+        status = cli_read_element_sets(&o->element_sets, in->n, &in->sets);
     return status;
 }
 
@@ -313,5 +316,7 @@ int cli_set_model(const struct structure_options *o, const struct structure_inpu
                              o->load_history != NULL ? o->load_history : o->load, NULL);
     if (status == 0 && in->el.m > 0)
         status = set_elements(s, in);
+    if (status == 0)
+        status = cli_add_element_sets(s, in->n, &in->sets);
     return status;
 }

@@ -10,7 +10,7 @@
 
 /* The model as read: M, K, C (no columns: Rayleigh or none) n x n and J m x n in compressed
  * sparse columns (m = 0 without --contacts); the joint elements (jenkins_input.h, their rows
- * dense as for fricreg-sim hb; el.m = 0: none); the influence r[n] (NULL: not given), the
+ * dense as for fricreg-sim hb; el.m = 0: none) or the element sets of --elements; the influence r[n] (NULL: not given), the
  * bounds mun[m] and the ground record ag[nrec] (NULL: none) from t0 every dt_rec; the load
  * pattern p[n] (NULL: none) and its time function g[nload] from load_t0 every load_dt
  * (NULL: g = 1). The library's structure has mlib = m contacts, or without any one of bound
@@ -19,6 +19,7 @@
 struct structure_input {
     size_t n, m, mlib, nrec, nload;
     struct cli_elements el;
+    struct cli_element_sets sets; /* --elements (element_sets.h); sets.n = 0: none */
     struct cli_sparse M, K, C, J;
     double *mun, *r, *ag, *p, *g;
     double t0, dt_rec, load_t0, load_dt;
