@@ -20,8 +20,6 @@
 
 #define MAX_ELEMENTS ((size_t)1 << 26)
 
-#define MAX_ELEMENTS ((size_t)1 << 26)
-
 /* Every element moves: no zero column of J^T (me of J_e, then J_n's; 2 me of J_e in 2-D). */
 static int check_rows(fricreg_structure *s, const cholmod_sparse *Jt, size_t me, int dim,
                       const char *who)
