@@ -80,7 +80,8 @@
 #define FRICREG_HB_H
 
 #include "fricreg.h"
-#include "fricreg_aft.h" /* FRICREG_AFT_MAX_HARMONICS */
+#include "fricreg_aft.h"     /* FRICREG_AFT_MAX_HARMONICS */
+#include "fricreg_element.h" /* fricreg_hb_add_elements's types */
 
 #ifdef __cplusplus
 extern "C" {
@@ -245,8 +246,13 @@ FRICREG_API int fricreg_hb_set_rayleigh(fricreg_hb *hb, double a0, double a1);
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if hb, J, kt or mun is NULL; FRICREG_ESIZE if m or ndof
  *  is not the driver's; FRICREG_ENONFINITE if an entry is NaN or infinite; FRICREG_EINVAL if
- *  a row of J is zero, some kt[i] <= 0 or mun[i] < 0. All inputs are checked before anything
- *  changes. Since 1.6. */
+ *  a row of J is zero, some kt[i] <= 0 or mun[i] < 0; FRICREG_ENOMEM (since 1.8: 2 m doubles).
+ *  All inputs are checked before anything changes. Since 1.6. Since 1.8 this and the other
+ *  per-kind setters (set_jenkins, set_iwan, set_normal_elements, set_jenkins_normal,
+ *  set_iwan_normal, set_jenkins_2d_normal) are thin wrappers kept for the ABI: each checks its
+ *  arguments, then replaces the elements held by m elements of its one kind, as
+ *  fricreg_hb_clear_elements and fricreg_hb_add_elements would, with the same answers bit for
+ *  bit as before; new code may use fricreg_hb_add_elements, which also mixes kinds. */
 FRICREG_API int fricreg_hb_set_elements(fricreg_hb *hb, size_t m, size_t ndof, const double J[],
                                         const double kt[], const double mun[]);
 
@@ -428,6 +434,58 @@ FRICREG_API int fricreg_hb_set_jenkins_2d_normal(fricreg_hb *hb, size_t m, size_
                                                  const double Je[], const double Jn[],
                                                  const double kt[], const double mu[],
                                                  const double n0[], const double kn[]);
+
+/** Add me friction elements of one type (fricreg_element.h: fricreg_element_lookup,
+ *  fricreg_element_sliders) beside those the driver holds, of any types: one model may hold
+ *  Jenkins, Iwan, lift-off and 3-D contact elements together, each evaluated by its own kind's
+ *  AFT (the exact one of fricreg_hb_set_iwan, _set_jenkins_normal, _set_iwan_normal, or the
+ *  3-D contact element's sampled one with its extrapolation, fricreg_hb_set_jenkins_2d_normal).
+ *  The driver's model is whole, and can be solved, once it holds fricreg_hb_create's m
+ *  elements; the solves refuse it before (FRICREG_EINVAL).
+ *
+ *  HB takes the types jenkins (1 row: kt, mun), iwan (1 row: k[ns], phi[ns], any ns up to
+ *  FRICREG_HB_MAX_SLIDERS), jenkins_normal (2 rows, tangential then normal: kt, mu, kn, n0, gap),
+ *  iwan_normal (2 rows: k[ns], mu[ns], kn, n0, gap) and contact_3d (3 rows, x, y, then normal:
+ *  kt, mu, kn, n0, gap); any other FRICREG_EINVAL with a message. HB's normal law is
+ *  N = max(0, n0 + kn g): gap must be 0 (the preload in n0; FRICREG_EINVAL otherwise, a gap
+ *  not being folded into n0 − kn gap, which would round).
+ *
+ *  Element i sees the dim = fricreg_element_dim(type) rows i dim .. i dim + dim − 1 of
+ *  J[me dim * ndof] (row-major, dimensionless for displacement dofs; in the type's order: the
+ *  tangential components, then the normal displacement g), appended after the rows of the
+ *  elements held: the unknowns q are the elements' rows in the order they were added, each row
+ *  its 2H + 1 coefficients (nq = rows (2H + 1)). params[me np] holds each element's
+ *  np = fricreg_element_nparams(type) parameters in the type's layout, units the model's
+ *  (stiffnesses force per displacement, slip bounds force, mu nondimensional, n0 force).
+ *
+ *  A model of one kind gives the answers of its per-kind setter bit for bit. A mix works with
+ *  every solve, continuation, nonlinear mode and Hill's stability; the exact monodromy takes
+ *  models of one kind only (under FRICREG_HB_STABILITY_AUTO a mix gets Hill's method, as a 3-D
+ *  contact model does; FRICREG_HB_STABILITY_MONODROMY refuses it with FRICREG_EINVAL).
+ *
+ *  Copied. Adding elements is a model change: the solution, branch and backbone are dropped.
+ *  me = 0 adds nothing (J and params may then be NULL). Allocates the sliders' 2 S doubles (S
+ *  of all the elements held) and, the first time the elements' rows outgrow them, the buffers
+ *  sized by the rows (as fricreg_hb_set_normal_elements says), which stay. Since 1.8
+ *  (FRICREG_1.8).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL (hb, type, or J or params with me > 0); FRICREG_ESIZE if
+ *  ndof is not the driver's or the elements would number more than fricreg_hb_create's m;
+ *  FRICREG_EINVAL if the type is not one of HB's, an element's parameters are out of range (the
+ *  message names the element and says why, as fricreg_element_explain), a gap is not 0, a row
+ *  of J is zero, or the call comes from the monitor; FRICREG_ENONFINITE (an entry of J or
+ *  params); FRICREG_ENOMEM. On failure the elements held are unchanged. */
+FRICREG_API int fricreg_hb_add_elements(fricreg_hb *hb, const fricreg_element_type *type, size_t me,
+                                        size_t ndof, const double J[], const double params[]);
+
+/** Remove every element (fricreg_hb_add_elements's, the per-kind setters'); the buffers stay. A
+ *  model change. Since 1.8 (FRICREG_1.8). Returns FRICREG_OK; FRICREG_ENULL; FRICREG_EINVAL
+ *  from the monitor. */
+FRICREG_API int fricreg_hb_clear_elements(fricreg_hb *hb);
+
+/** The number of elements the driver holds, of all types (0 for hb = NULL). Since 1.8
+ *  (FRICREG_1.8). */
+FRICREG_API size_t fricreg_hb_element_count(const fricreg_hb *hb);
 
 /** Set the harmonic excitation of the fundamental, p(t) = pc cos Ωt + ps sin Ωt.
  *

@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "base/sparse_factor.h"
-#include "elements.h"
+#include "element_store.h"
 #include "hb_internal.h"
 #include "rows.h"
 #include "stability_method.h"
@@ -47,10 +47,17 @@ int fricreg_hb_create(size_t ndof, size_t m, int harmonics, fricreg_hb **out)
     hb->M = dense ? calloc(3 * n * n, sizeof(double)) : NULL;  /* untouched until set */
     hb->D = dense ? malloc(2 * n * n * sizeof(double)) : NULL; /* n >= 1 */
     hb->piv = dense ? malloc(n * sizeof *hb->piv) : NULL;
+    /* the elements' tables and normal laws; the buffers for m elements of one row */
+    hb->erow = calloc(3 * (m + 1), sizeof *hb->erow);
+    hb->kind = calloc(m, sizeof *hb->kind);
+    hb->nl = calloc(4 * m, sizeof *hb->nl);
     struct fr_hb_rows b;
-    int rows = fr_hb_rows_alloc(hb, m, &b);
-    if (rows == FRICREG_OK)
-        fr_hb_rows_install(hb, m, &b);
+    int rows = hb->erow && hb->kind && hb->nl ? fr_hb_rows_alloc(hb, m, m, &b) : FRICREG_ENOMEM;
+    if (rows == FRICREG_OK) {
+        hb->ejq = hb->erow + m + 1;
+        hb->eso = hb->ejq + m + 1;
+        fr_hb_rows_install(hb, m, m, &b);
+    }
     int status = fricreg_aft_create(harmonics, 0, &hb->aft);
     int started = fr_cholmod_start(&hb->cc) == FRICREG_OK;
     if ((dense && (!hb->M || !hb->D || !hb->piv)) || rows != FRICREG_OK || status != FRICREG_OK ||
@@ -64,7 +71,7 @@ int fricreg_hb_create(size_t ndof, size_t m, int harmonics, fricreg_hb **out)
         for (size_t k = 0; k < n; k++)
             hb->M[k * n + k] = 1.0;
     }
-    fr_hb_rows_set(hb, 1);
+    fr_hb_rows_set(hb);
     *out = hb;
     return FRICREG_OK;
 }
@@ -92,6 +99,8 @@ void fricreg_hb_free(fricreg_hb *hb)
     free(hb->half);
     free(hb->sk);
     free(hb->nl);
+    free(hb->erow);
+    free(hb->kind);
     fr_hb_nma_free(hb->nma);
     fr_hb_sparse_free(hb);
     fr_cholmod_finish(&hb->cc);
@@ -108,36 +117,17 @@ int fr_hb_clone(const fricreg_hb *src, int harmonics, fricreg_hb **out)
     int status = fricreg_hb_create(n, me, harmonics, &hb);
     if (status != FRICREG_OK)
         return status;
-    struct fr_hb_rows b = {0};
-    double *nl = src->nl ? malloc(4 * me * sizeof *nl) : NULL;
-    size_t sliders = fr_hb_slider_doubles(me, src->ns, src->nl != NULL, 2 * (size_t)harmonics + 1);
-    double *sk = src->sk ? malloc(sliders * sizeof *sk) : NULL;
-    if ((src->nl && (!nl || fr_hb_rows_alloc(hb, src->rpe * me, &b) != FRICREG_OK)) ||
-        (src->sk && !sk) || (src->rpe == 3 && fr_hb_sampled_aft(hb) != FRICREG_OK) ||
+    if (fr_hb_store_copy(hb, src) != FRICREG_OK ||
         (src->sparse && fr_hb_sparse_copy(hb, src) != FRICREG_OK)) {
-        free(nl);
-        free(sk);
         fricreg_hb_free(hb);
         return FRICREG_ENOMEM;
     }
-    if (b.J != NULL)
-        fr_hb_rows_install(hb, src->rpe * me, &b);
     if (!src->sparse) /* M, C, K: one block */
         memcpy(hb->M, src->M, 3 * n * n * sizeof(double));
     hb->rayleigh = src->rayleigh;
     hb->a0 = src->a0;
     hb->a1 = src->a1;
-    memcpy(hb->J, src->J, src->m * n * sizeof(double));
-    memcpy(hb->kt, src->kt, (2 * me + 2 * n) * sizeof(double)); /* kt, mun, pc, ps */
-    if (nl != NULL)
-        memcpy(nl, src->nl, 4 * me * sizeof *nl);
-    if (sk != NULL)
-        memcpy(sk, src->sk, 2 * me * src->ns * sizeof *sk);
-    hb->nl = nl;
-    hb->sk = sk;
-    hb->ns = src->ns;
-    fr_hb_rows_set(hb, src->rpe);
-    hb->have_elements = src->have_elements;
+    memcpy(hb->pc, src->pc, 2 * n * sizeof(double)); /* pc, ps */
     hb->tol = src->tol;
     hb->max_iter = src->max_iter;
     hb->monitor = src->monitor;

@@ -34,24 +34,39 @@
 struct fr_hb_lu;   /* sparse.c: one harmonic's LU factor */
 struct fr_hb_mono; /* monodromy.c: the exact monodromy's workspace */
 
+/* The kinds of element the driver holds, each its number of rows of J and its AFT
+ * (residual.c). */
+enum fr_hb_kind {
+    FR_HB_SLIDERS = 1,   /* Jenkins or Iwan: one row, fricreg_aft_iwan_exact */
+    FR_HB_LIFTOFF = 2,   /* Jenkins or Iwan with lift-off: tangential row, then normal row */
+    FR_HB_CONTACT_3D = 3 /* x, y, normal: the sampled AFT with Richardson's extrapolation */
+};
+
 struct fricreg_hb {
     size_t n, m;       /* dofs, rows of J (the condensation's coordinates) */
-    size_t me, rpe;    /* elements, rows per element: 1, 2 (tangential, normal) on lift-off, or
-                          3 (x, y, normal) for the 3-D contact element */
-    size_t rows_cap;   /* rows the buffers below hold: me, or rpe me once elements of rpe rows
-                          were set */
+    size_t me, rpe;    /* elements (fricreg_hb_create's m), rows per element when all the
+                        elements are of one kind (1, 2 or 3, enum fr_hb_kind), 0 for a mix */
+    size_t count;      /* elements held (element_store.c): the model is whole at count = me */
+    int *kind;         /* [me] each element's enum fr_hb_kind */
+    size_t *erow;      /* [me + 1] element e's first row of J (erow[count] = m) */
+    size_t *ejq;       /* [me + 1] its Jacobian block's offset in jq, in units of nc² */
+    size_t *eso;       /* [me + 1] its first slider (eso[count] = nsl) */
+    size_t rows_cap;   /* rows the buffers below hold (grown by elements of more rows, kept) */
+    size_t sq_cap;     /* units of nc² the Jacobian blocks jq hold */
     int H;             /* harmonics */
     size_t nc, nq;     /* 2H + 1 coefficients, m nc unknowns */
     double *M, *C, *K; /* [n n] each, row-major, symmetric (dense models; NULL above 4096) */
     int rayleigh;      /* C = a0 M + a1 K instead of the matrix C */
     double a0, a1;
-    double *J, *kt, *mun; /* [m n] (room for rows_cap rows), [me], [me] */
-    size_t ns;            /* sliders per element: 1 (Jenkins, kt and mun) or set_iwan's */
-    double *sk; /* set_iwan's [me ns] stiffnesses then [me ns] slip forces (set_iwan_normal's:
-                   friction coefficients, then one slider's AFT, fr_hb_slider_doubles); NULL:
-                   Jenkins elements */
-    double *nl; /* set_normal_elements' and set_jenkins_2d_normal's [4 me]: kt, mu, n0, kn (Iwan:
-                   kt and mu summed over the sliders); NULL: none */
+    double *J;  /* [m n] (room for rows_cap rows) */
+    size_t ns;  /* sliders per element when alike (1: Jenkins), 0 when they differ */
+    size_t nsl; /* sliders held */
+    double *sk; /* the sliders' [nsl] stiffnesses then [nsl] slip forces (with lift-off:
+                   friction coefficients), element e's from eso[e]; then, with an Iwan element
+                   with lift-off (scratch), room for one slider's AFT */
+    int scratch;
+    double *nl; /* [4 me]: kt, mu, n0, kn of each element with a normal law (an Iwan element's
+                   kt and mu summed over its sliders) */
     int have_elements;
     double *pc, *ps; /* [n] excitation of the fundamental */
     /* the excitation's factor in force, λ: 1 but along a continuation in the level
@@ -111,7 +126,8 @@ struct fricreg_hb {
 
     /* Newton (residual.c, newton.c, corrector.c, arclength.c) */
     double *fq;     /* [nq] element force coefficients at the last evaluation */
-    double *jq;     /* [me (rpe nc)²] their Jacobians, one block per element */
+    double *jq;     /* [ejq[count] nc²] their Jacobians, element e's block [(rows nc)²] at
+                       fr_hb_block_of */
     double *R;      /* [nq + 1] residual (continuation: the arclength equation last) */
     double *A;      /* [(nq + 1)^2] Newton's matrix, LU-factored in place */
     double *rw;     /* [nq + 1] dR/dΩ, then scratch */
@@ -186,18 +202,25 @@ struct fricreg_hb {
  * exponents). */
 #define FR_HB_XW(hb) ((hb)->stability ? 4 + 4 * (hb)->n : 2)
 
-/* Element e's sliders: their count, stiffnesses and slip forces (Jenkins: kt[e], mun[e]). */
+/* Element e's sliders: their count, stiffnesses and slip forces (friction coefficients with
+ * lift-off). */
 static inline size_t fr_hb_sliders(const fricreg_hb *hb, size_t e, const double **k,
                                    const double **phi)
 {
-    if (hb->sk == NULL) {
-        *k = &hb->kt[e];
-        *phi = &hb->mun[e];
-        return 1;
-    }
-    *k = hb->sk + e * hb->ns;
-    *phi = hb->sk + (hb->me + e) * hb->ns;
-    return hb->ns;
+    *k = hb->sk + hb->eso[e];
+    *phi = hb->sk + hb->nsl + hb->eso[e];
+    return hb->eso[e + 1] - hb->eso[e];
+}
+
+/* Element e's rows of J and its Jacobian block in jq, [(rows nc)²]. */
+static inline size_t fr_hb_rows_of(const fricreg_hb *hb, size_t e)
+{
+    return (size_t)hb->kind[e];
+}
+
+static inline double *fr_hb_block_of(const fricreg_hb *hb, size_t e)
+{
+    return hb->jq + hb->ejq[e] * hb->nc * hb->nc;
 }
 
 /* Factors D_h(omega) for h = 0..H and forms Y, G, ql (and dG, dql when deriv); keeps them

@@ -65,7 +65,7 @@ void fr_hb_monodromy_free(fricreg_hb *hb)
 
 int fr_hb_monodromy_reserve(fricreg_hb *hb, const char *fn)
 {
-    size_t n = hb->n, m = hb->rpe * hb->me, S = hb->me * hb->ns, P = 2 * n + S;
+    size_t n = hb->n, m = hb->m, S = hb->nsl, P = 2 * n + S;
     struct fr_hb_mono *w = hb->mono;
     if (w != NULL && w->n == n && w->m == m && w->S == S && w->H == hb->H)
         return FRICREG_OK;
@@ -101,7 +101,8 @@ int fr_hb_monodromy_reserve(fricreg_hb *hb, const char *fn)
 
 int fr_hb_monodromy_applies(const fricreg_hb *hb)
 {
-    return hb->have_elements && (hb->rpe == 1 || hb->rpe == 2);
+    /* elements all of one kind (rpe), of as many sliders each (ns): not a mix */
+    return hb->have_elements && (hb->rpe == 1 || hb->rpe == 2) && hb->ns > 0;
 }
 
 /* The model's M, C (or Rayleigh's a0 M + a1 K) and K into Mlu, MiC, MiK, dense (symmetric:

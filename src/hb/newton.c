@@ -40,23 +40,27 @@ int fr_hb_guess(fricreg_hb *hb, const char *fn, int stuck)
         return FRICREG_OK;
     /* the centred stick: f_h = kt q_h for h >= 1, f_0 = 0 (fricreg_aft.h); with lift-off
      * closed too, N = N0 + kn g on every harmonic */
-    size_t b = hb->rpe * nc, me = hb->me;
-    memset(hb->jq, 0, me * b * b * sizeof(double));
-    size_t normal_row = hb->rpe - 1; /* with lift-off, the last row of each element */
-    for (size_t e = 0; e < me && hb->nl != NULL; e++)
-        for (size_t r = 0; r < hb->rpe; r++)
+    size_t me = hb->me;
+    memset(hb->jq, 0, hb->ejq[hb->count] * nc * nc * sizeof(double));
+    for (size_t e = 0; e < me; e++) {
+        size_t rows = fr_hb_rows_of(hb, e), b = rows * nc;
+        double *J = fr_hb_block_of(hb, e);
+        if (hb->kind[e] == FR_HB_SLIDERS) {
+            const double *k, *phi;
+            size_t ns = fr_hb_sliders(hb, e, &k, &phi);
+            double kt = 0.0;
+            for (size_t s = 0; s < ns; s++)
+                kt += k[s];
+            for (size_t c = 1; c < nc; c++)
+                J[c * nc + c] = kt;
+            continue;
+        }
+        size_t normal_row = rows - 1; /* with lift-off, the last row of each element */
+        for (size_t r = 0; r < rows; r++)
             for (size_t c = r == normal_row ? 0 : 1; c < nc; c++) {
                 size_t i = r * nc + c;
-                hb->jq[e * b * b + i * b + i] = r == normal_row ? hb->nl[3 * me + e] : hb->nl[e];
+                J[i * b + i] = r == normal_row ? hb->nl[3 * me + e] : hb->nl[e];
             }
-    for (size_t e = 0; e < me && hb->nl == NULL; e++) {
-        const double *k, *phi;
-        size_t ns = fr_hb_sliders(hb, e, &k, &phi);
-        double kt = 0.0;
-        for (size_t s = 0; s < ns; s++)
-            kt += k[s];
-        for (size_t c = 1; c < nc; c++)
-            hb->jq[e * nc * nc + c * nc + c] = kt;
     }
     fr_hb_matrix(hb, hb->jq, hb->A, nq);
     return fr_hb_lu_solve(hb, fn, nq, hb->qw, hb->qw);
@@ -183,7 +187,10 @@ int fr_hb_check_start(fricreg_hb *hb, const char *fn, double omega, size_t nq, c
     if (!(omega > 0.0))
         return fr_fail(hb, FRICREG_EINVAL, "%s: Omega = %g must be > 0", fn, omega);
     if (!hb->have_elements)
-        return fr_fail(hb, FRICREG_EINVAL, "%s: no elements (fricreg_hb_set_elements)", fn);
+        return fr_fail(hb, FRICREG_EINVAL,
+                       "%s: %zu of the driver's %zu elements held (fricreg_hb_set_elements, "
+                       "fricreg_hb_add_elements)",
+                       fn, hb->count, hb->me);
     if (nq != hb->nq)
         return fr_fail(hb, FRICREG_ESIZE,
                        "%s: nq = %zu, the driver has %zu (%zu rows of J times 2H + 1)", fn, nq,

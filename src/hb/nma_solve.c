@@ -147,16 +147,19 @@ int fr_hb_nma_system(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, cons
     modal(hb, nma->dgx + 2 * m, s);
     A[nq * nd + nq + 1] = c * s[0];
     A[(nq + 1) * nd + nq + 1] = c * s[1];
-    size_t nc = hb->nc, rpe = hb->rpe, b = rpe * nc;
+    size_t nc = hb->nc;
     for (size_t j = 0; j < nq; j++)
         A[nq * nd + j] = A[(nq + 1) * nd + j] = 0.0;
-    for (size_t r = 0; r < m; r++) {
-        size_t e = r / rpe, sr = r % rpe;
-        const double *g = hb->ql + 2 * (m + r), *Ja = hb->jq + e * b * b + (sr * nc + 1) * b,
-                     *Jb = Ja + b;
-        for (size_t j = 0; j < b; j++) { /* ∂(−g F)/∂q_j, F = fa − i fb */
-            A[nq * nd + e * b + j] -= c * (g[0] * Ja[j] + g[1] * Jb[j]);
-            A[(nq + 1) * nd + e * b + j] -= c * (g[1] * Ja[j] - g[0] * Jb[j]);
+    for (size_t e = 0; e < hb->me; e++) {
+        size_t rows = fr_hb_rows_of(hb, e), b = rows * nc, at = hb->erow[e] * nc;
+        for (size_t sr = 0; sr < rows; sr++) {
+            size_t r = hb->erow[e] + sr;
+            const double *g = hb->ql + 2 * (m + r), *Ja = fr_hb_block_of(hb, e) + (sr * nc + 1) * b,
+                         *Jb = Ja + b;
+            for (size_t j = 0; j < b; j++) { /* ∂(−g F)/∂q_j, F = fa − i fb */
+                A[nq * nd + at + j] -= c * (g[0] * Ja[j] + g[1] * Jb[j]);
+                A[(nq + 1) * nd + at + j] -= c * (g[1] * Ja[j] - g[0] * Jb[j]);
+            }
         }
     }
     return FRICREG_OK;

@@ -8,32 +8,41 @@
 
 #include "nma_internal.h"
 
+/* The element whose rows hold row r of J. */
+static size_t element_of_row(const fricreg_hb *hb, size_t r)
+{
+    size_t e = 0;
+    while (hb->erow[e + 1] <= r)
+        e++;
+    return e;
+}
+
 void fr_hb_nma_row(const fricreg_hb *hb, size_t r, double *k, double *limit)
 {
-    size_t e = r / hb->rpe;
+    size_t e = element_of_row(hb, r), rows = fr_hb_rows_of(hb, e);
     *k = 0.0;
     *limit = INFINITY;
-    double scale = 1.0;   /* a slider's slip force per unit of phi */
-    if (hb->nl != NULL) { /* kt, mu, n0, kn: closed at rest when N0 > 0 */
+    double scale = 1.0; /* a slider's slip force per unit of phi */
+    const double *ks, *phi;
+    size_t ns = fr_hb_sliders(hb, e, &ks, &phi);
+    if (hb->kind[e] != FR_HB_SLIDERS) { /* kt, mu, n0, kn: closed at rest when N0 > 0 */
         size_t me = hb->me;
         double kt = hb->nl[e], mu = hb->nl[me + e], n0 = hb->nl[2 * me + e],
                kn = hb->nl[3 * me + e];
         if (!(n0 > 0.0))
             return;
-        if (r % hb->rpe == hb->rpe - 1) { /* the normal row */
+        if (r - hb->erow[e] == rows - 1) { /* the normal row */
             *k = kn;
             *limit = kn > 0.0 ? n0 / kn : INFINITY;
             return;
         }
-        if (hb->sk == NULL) {
+        if (hb->kind[e] == FR_HB_CONTACT_3D || ns == 1) { /* one slider: kt, mu */
             *k = mu > 0.0 ? kt : 0.0;
             *limit = mu > 0.0 ? mu * n0 / kt : INFINITY;
             return;
         }
         scale = n0; /* Iwan sliders: phi holds mu */
     }
-    const double *ks, *phi;
-    size_t ns = fr_hb_sliders(hb, e, &ks, &phi);
     for (size_t s = 0; s < ns; s++)
         if (phi[s] > 0.0) { /* a slider of slip force 0 carries nothing */
             *k += ks[s];

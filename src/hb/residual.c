@@ -10,7 +10,7 @@
  * fricreg_aft_jenkins_normal_exact (two rows: the tangential force f on u, the normal force N on
  * g, one Jacobian block coupling them; an Iwan element's sliders summed on the tangential row),
  * one element at a time; the 3-D contact element's (three rows: x, y, normal) from
- * fricreg_aft_jenkins_2d_normal_sampled. */
+ * fricreg_aft_jenkins_2d_normal_sampled. Each element by its own kind: a model may mix them. */
 #include <math.h>
 #include <string.h>
 
@@ -56,7 +56,7 @@ static int iwan_normal(fricreg_hb *hb, size_t e, const double *u, double *f, dou
     size_t nc = hb->nc, me = hb->me, b = 2 * nc;
     const double *k, *mu;
     size_t ns = fr_hb_sliders(hb, e, &k, &mu);
-    double *fs = hb->sk + 2 * me * ns, *js = fs + b;
+    double *fs = hb->sk + 2 * hb->nsl, *js = fs + b;
     for (size_t s = 0; s < ns; s++) {
         int status = fricreg_aft_jenkins_normal_exact(hb->aft, k[s], mu[s], hb->nl[2 * me + e],
                                                       hb->nl[3 * me + e], nc, u, u + nc, fs,
@@ -97,29 +97,28 @@ static int contact_3d(fricreg_hb *hb, size_t e, const double *u, double *f, doub
     return FRICREG_OK;
 }
 
+/* Element e's forces into fq and, with jac, its Jacobian block, by its kind's AFT. */
+static int element(fricreg_hb *hb, size_t e, const double *q, int jac)
+{
+    size_t nc = hb->nc, me = hb->me, at = hb->erow[e] * nc;
+    const double *u = q + at, *p = hb->nl;
+    double *f = hb->fq + at, *J = jac ? fr_hb_block_of(hb, e) : NULL;
+    if (hb->kind[e] == FR_HB_CONTACT_3D)
+        return contact_3d(hb, e, u, f, J);
+    const double *k, *phi;
+    size_t ns = fr_hb_sliders(hb, e, &k, &phi);
+    if (hb->kind[e] == FR_HB_LIFTOFF && ns > 1)
+        return iwan_normal(hb, e, u, f, J);
+    if (hb->kind[e] == FR_HB_LIFTOFF)
+        return fricreg_aft_jenkins_normal_exact(hb->aft, p[e], p[me + e], p[2 * me + e],
+                                                p[3 * me + e], nc, u, u + nc, f, f + nc, J);
+    return fricreg_aft_iwan_exact(hb->aft, ns, k, phi, nc, u, f, J);
+}
+
 int fr_hb_residual(fricreg_hb *hb, const char *fn, const double *q, double *R, int jac)
 {
-    size_t nc = hb->nc, me = hb->me;
-    for (size_t e = 0; e < me; e++) {
-        int status;
-        if (hb->rpe == 3) {
-            status = contact_3d(hb, e, q + 3 * e * nc, hb->fq + 3 * e * nc,
-                                jac ? hb->jq + 9 * e * nc * nc : NULL);
-        } else if (hb->nl != NULL && hb->sk != NULL) {
-            status = iwan_normal(hb, e, q + 2 * e * nc, hb->fq + 2 * e * nc,
-                                 jac ? hb->jq + 4 * e * nc * nc : NULL);
-        } else if (hb->nl != NULL) {
-            const double *u = q + 2 * e * nc, *p = hb->nl;
-            double *f = hb->fq + 2 * e * nc;
-            status = fricreg_aft_jenkins_normal_exact(hb->aft, p[e], p[me + e], p[2 * me + e],
-                                                      p[3 * me + e], nc, u, u + nc, f, f + nc,
-                                                      jac ? hb->jq + 4 * e * nc * nc : NULL);
-        } else {
-            const double *k, *phi;
-            size_t ns = fr_hb_sliders(hb, e, &k, &phi);
-            status = fricreg_aft_iwan_exact(hb->aft, ns, k, phi, nc, q + e * nc, hb->fq + e * nc,
-                                            jac ? hb->jq + e * nc * nc : NULL);
-        }
+    for (size_t e = 0; e < hb->me; e++) {
+        int status = element(hb, e, q, jac);
         if (status != FRICREG_OK)
             return fr_fail(hb, status, "%s: the AFT of element %zu failed: %s", fn, e,
                            fricreg_aft_errmsg(hb->aft));
@@ -154,19 +153,21 @@ void fr_hb_dlevel(const fricreg_hb *hb, double *out)
 
 void fr_hb_matrix(fricreg_hb *hb, const double *jac, double *A, size_t ld)
 {
-    /* row r of J against element e2's block: its rows r2 = rpe e2 + s, its Jacobian's rows
-     * (s nc + c) and columns the block's rpe nc unknowns */
-    size_t m = hb->m, nc = hb->nc, rpe = hb->rpe, b = rpe * nc;
+    /* row r of J against element e2's block: its rows r2 = erow[e2] + s, its Jacobian's rows
+     * (s nc + c) and columns the block's rows nc unknowns, from erow[e2] nc on */
+    size_t m = hb->m, nc = hb->nc;
     for (size_t r = 0; r < m; r++)
-        for (size_t e2 = 0; e2 < hb->me; e2++)
+        for (size_t e2 = 0; e2 < hb->me; e2++) {
+            size_t rows = fr_hb_rows_of(hb, e2), b = rows * nc, r2 = hb->erow[e2], at = r2 * nc;
+            const double *block = jac + hb->ejq[e2] * nc * nc;
             for (int h = 0; h <= hb->H; h++) {
                 size_t ca = h == 0 ? 0 : 2 * (size_t)h - 1, cb = ca + 1;
-                double *ra = A + (r * nc + ca) * ld + e2 * b, *rb = A + (r * nc + cb) * ld + e2 * b;
+                double *ra = A + (r * nc + ca) * ld + at, *rb = A + (r * nc + cb) * ld + at;
                 for (size_t j = 0; j < b; j++) {
                     double sa = 0.0, sb = 0.0;
-                    for (size_t s = 0; s < rpe; s++) {
-                        const double *g = hb->G + 2 * ((size_t)h * m * m + r * m + rpe * e2 + s);
-                        const double *J2 = jac + e2 * b * b + s * nc * b;
+                    for (size_t s = 0; s < rows; s++) {
+                        const double *g = hb->G + 2 * ((size_t)h * m * m + r * m + r2 + s);
+                        const double *J2 = block + s * nc * b;
                         if (h == 0) {
                             sa += g[0] * J2[j];
                             continue;
@@ -179,6 +180,7 @@ void fr_hb_matrix(fricreg_hb *hb, const double *jac, double *A, size_t ld)
                         rb[j] = sb;
                 }
             }
+        }
     for (size_t j = 0; j < hb->nq; j++)
         A[j * ld + j] += 1.0;
 }

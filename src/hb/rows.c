@@ -25,32 +25,33 @@ void fr_hb_rows_free(struct fr_hb_rows *b)
     *b = (struct fr_hb_rows){0};
 }
 
-int fr_hb_rows_alloc(const fricreg_hb *hb, size_t cap, struct fr_hb_rows *b)
+int fr_hb_rows_alloc(const fricreg_hb *hb, size_t cap, size_t sq, struct fr_hb_rows *b)
 {
-    size_t n = hb->n, me = hb->me, H1 = (size_t)hb->H + 1, nc = hb->nc, nq = cap * nc;
+    size_t n = hb->n, H1 = (size_t)hb->H + 1, nc = hb->nc, nq = cap * nc;
     *b = (struct fr_hb_rows){0};
-    b->J = alloc_doubles(cap * n + 2 * me + 2 * n);
+    b->J = alloc_doubles(cap * n + 2 * n);
     b->Y = alloc_doubles(2 * H1 * n * (cap + 1));
     b->Z = alloc_doubles(2 * n * (cap + 1) + 2 * n);
     b->G = alloc_doubles(4 * H1 * cap * cap + 4 * H1 * cap);
-    b->fq = alloc_doubles(nq + cap * (cap / me) * nc * nc + (nq + 1) * (nq + 1) + 12 * (nq + 1) +
-                          2 * nq);
+    b->fq = alloc_doubles(nq + sq * nc * nc + (nq + 1) * (nq + 1) + 12 * (nq + 1) + 2 * nq);
     b->piv2 = malloc((nq + 1) * sizeof *b->piv2);
     if (!b->J || !b->Y || !b->Z || !b->G || !b->fq || !b->piv2) {
         fr_hb_rows_free(b);
         return FRICREG_ENOMEM;
     }
-    memset(b->J, 0, (cap * n + 2 * me + 2 * n) * sizeof(double));
+    memset(b->J, 0, (cap * n + 2 * n) * sizeof(double));
     return FRICREG_OK;
 }
 
-/* Installs b (room for cap rows), the excitation and the Jenkins parameters carried over from
- * the buffers it replaces, if any. */
-void fr_hb_rows_install(fricreg_hb *hb, size_t cap, struct fr_hb_rows *b)
+/* Installs b (room for cap rows, sq units of nc² of Jacobian blocks), J's rows held and the
+ * excitation carried over from the buffers it replaces, if any. */
+void fr_hb_rows_install(fricreg_hb *hb, size_t cap, size_t sq, struct fr_hb_rows *b)
 {
-    size_t n = hb->n, me = hb->me;
-    if (hb->J != NULL)
-        memcpy(b->J + cap * n, hb->kt, (2 * me + 2 * n) * sizeof(double));
+    size_t n = hb->n;
+    if (hb->J != NULL) {
+        memcpy(b->J, hb->J, hb->m * n * sizeof(double));
+        memcpy(b->J + cap * n, hb->pc, 2 * n * sizeof(double));
+    }
     free(hb->J);
     free(hb->Y);
     free(hb->Z);
@@ -64,18 +65,16 @@ void fr_hb_rows_install(fricreg_hb *hb, size_t cap, struct fr_hb_rows *b)
     hb->fq = b->fq;
     hb->piv2 = b->piv2;
     hb->rows_cap = cap;
-    hb->kt = hb->J + cap * n;
-    hb->mun = hb->kt + me;
-    hb->pc = hb->mun + me;
+    hb->sq_cap = sq;
+    hb->pc = hb->J + cap * n;
     hb->ps = hb->pc + n;
 }
 
-/* The views into the buffers for rpe rows per element (m = rpe me rows, nq = m nc). */
-void fr_hb_rows_set(fricreg_hb *hb, size_t rpe)
+/* The views into the buffers for the rows of the elements held (m = erow[count], nq = m nc). */
+void fr_hb_rows_set(fricreg_hb *hb)
 {
     size_t n = hb->n, H1 = (size_t)hb->H + 1, nc = hb->nc;
-    size_t m = rpe * hb->me, nq = m * nc;
-    hb->rpe = rpe;
+    size_t m = hb->erow[hb->count], nq = m * nc;
     hb->m = m;
     hb->nq = nq;
     hb->colw = hb->Z + 2 * n * (m + 1);
@@ -83,7 +82,7 @@ void fr_hb_rows_set(fricreg_hb *hb, size_t rpe)
     hb->dG = hb->ql + 2 * H1 * m;
     hb->dql = hb->dG + 2 * H1 * m * m;
     hb->jq = hb->fq + nq;
-    hb->A = hb->jq + m * rpe * nc * nc;
+    hb->A = hb->jq + hb->ejq[hb->count] * nc * nc;
     hb->R = hb->A + (nq + 1) * (nq + 1);
     hb->rw = hb->R + (nq + 1);
     hb->dy = hb->rw + (nq + 1);

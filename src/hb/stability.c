@@ -118,18 +118,20 @@ static void linear_blocks(fricreg_hb *hb, double omega)
 }
 
 /* J^T (∂F/∂q) J added to S: element e's Jacobian block (rows s nc + c, columns s2 nc + c2 of
- * its rpe rows) between J's rows rpe e + s and rpe e + s2. */
+ * its rows) between J's rows erow[e] + s and erow[e] + s2. */
 static void element_blocks(fricreg_hb *hb)
 {
-    size_t n = hb->n, nc = hb->nc, N = n * nc, rpe = hb->rpe, b = rpe * nc;
+    size_t n = hb->n, nc = hb->nc, N = n * nc;
     gsl_matrix *A = hb->hill;
-    for (size_t e = 0; e < hb->me; e++)
-        for (size_t s = 0; s < rpe; s++)
-            for (size_t s2 = 0; s2 < rpe; s2++) {
-                const double *Jr = hb->J + (rpe * e + s) * n, *Jr2 = hb->J + (rpe * e + s2) * n;
+    for (size_t e = 0; e < hb->me; e++) {
+        size_t rows = fr_hb_rows_of(hb, e), b = rows * nc, r0 = hb->erow[e];
+        const double *block = fr_hb_block_of(hb, e);
+        for (size_t s = 0; s < rows; s++)
+            for (size_t s2 = 0; s2 < rows; s2++) {
+                const double *Jr = hb->J + (r0 + s) * n, *Jr2 = hb->J + (r0 + s2) * n;
                 for (size_t c = 0; c < nc; c++)
                     for (size_t c2 = 0; c2 < nc; c2++) {
-                        double v = hb->jq[e * b * b + (s * nc + c) * b + s2 * nc + c2];
+                        double v = block[(s * nc + c) * b + s2 * nc + c2];
                         if (v == 0.0)
                             continue;
                         for (size_t k = 0; k < n; k++)
@@ -139,6 +141,7 @@ static void element_blocks(fricreg_hb *hb)
                                                                                        Jr2[l];
                     }
             }
+    }
 }
 
 /* The lower blocks times −Δ2⁻¹ = −M⁻¹ ⊗ I (M's LU, checked), and the identity above. */

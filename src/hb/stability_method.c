@@ -14,7 +14,7 @@ int fr_hb_stability_in_force(const fricreg_hb *hb)
     if (hb->stability_method != FRICREG_HB_STABILITY_AUTO)
         return hb->stability_method;
     /* the monodromy is dense in 2n + sliders: past its bound, Hill's (dense in n (2H + 1)) */
-    int small = 2 * hb->n + hb->me * hb->ns <= FRICREG_HB_MAX_MONODROMY;
+    int small = 2 * hb->n + hb->nsl <= FRICREG_HB_MAX_MONODROMY;
     return fr_hb_monodromy_applies(hb) && small ? FRICREG_HB_STABILITY_MONODROMY
                                                 : FRICREG_HB_STABILITY_HILL;
 }
@@ -26,7 +26,8 @@ int fr_hb_stability(fricreg_hb *hb, const char *fn, double omega, double *out)
     if (!fr_hb_monodromy_applies(hb))
         return fr_fail(hb, FRICREG_EINVAL,
                        "%s: stability: the exact monodromy needs piecewise-linear elements (1-D "
-                       "Jenkins or Iwan elements, with or without lift-off); these are not: choose "
+                       "Jenkins or Iwan elements, with or without lift-off) all of one kind; these "
+                       "are not (a mix, or 3-D contact elements): choose "
                        "FRICREG_HB_STABILITY_HILL or _AUTO",
                        fn);
     return fr_hb_monodromy(hb, fn, omega, out);

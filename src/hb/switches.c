@@ -30,7 +30,7 @@ void fr_hb_schedule_free(struct fr_hb_schedule *sc)
 
 int fr_hb_schedule_alloc(const fricreg_hb *hb, struct fr_hb_schedule *sc)
 {
-    size_t me = hb->me, S = me * hb->ns, H2 = 2 * (size_t)hb->H, cap = liftoff_cap(hb->H);
+    size_t me = hb->me, S = hb->nsl, H2 = 2 * (size_t)hb->H, cap = liftoff_cap(hb->H);
     memset(sc, 0, sizeof *sc);
     sc->sw = malloc((S * cap + H2 * me + 1) * sizeof *sc->sw);
     sc->element = malloc((2 * S + 1) * sizeof *sc->element);
@@ -92,7 +92,8 @@ static int jenkins(fricreg_hb *hb, const char *fn, struct fr_hb_schedule *sc, si
     sc->kn[e] = 0.0;
     for (size_t s = 0; s < ns; s++) {
         struct fr_aft_slips sl = {.on = sc->scratch, .off = sc->scratch + H2};
-        int status = fr_aft_exact_slips(hb->aft, fn, k[s], phi[s], hb->qjac + e * hb->nc, &sl);
+        int status = fr_aft_exact_slips(hb->aft, fn, k[s], phi[s], hb->qjac + hb->erow[e] * hb->nc,
+                                        &sl);
         if (status != FRICREG_OK)
             return status;
         if (sl.kind == FR_AFT_STUCK)
@@ -113,9 +114,9 @@ static int jenkins(fricreg_hb *hb, const char *fn, struct fr_hb_schedule *sc, si
 static int liftoff(fricreg_hb *hb, const char *fn, struct fr_hb_schedule *sc, size_t e)
 {
     size_t me = hb->me, nc = hb->nc;
-    const double *k, *mu, *nl = hb->nl, *u = hb->qjac + 2 * e * nc;
-    size_t ns = hb->sk != NULL ? fr_hb_sliders(hb, e, &k, &mu) : 1;
-    if (hb->sk == NULL)
+    const double *k, *mu, *nl = hb->nl, *u = hb->qjac + hb->erow[e] * nc;
+    size_t ns = fr_hb_sliders(hb, e, &k, &mu);
+    if (ns == 1) /* a Jenkins element: the normal law's kt, mu */
         k = &nl[e], mu = &nl[me + e];
     double n0 = nl[2 * me + e], kn = nl[3 * me + e];
     sc->kn[e] = kn;
@@ -158,7 +159,7 @@ int fr_hb_schedule(fricreg_hb *hb, const char *fn, struct fr_hb_schedule *sc)
 {
     sc->S = sc->nstuck = sc->count = 0;
     for (size_t e = 0; e < hb->me; e++) {
-        int status = hb->rpe == 1 ? jenkins(hb, fn, sc, e) : liftoff(hb, fn, sc, e);
+        int status = hb->kind[e] == FR_HB_SLIDERS ? jenkins(hb, fn, sc, e) : liftoff(hb, fn, sc, e);
         if (status != FRICREG_OK)
             return fr_fail(hb, status, "%s: stability: the AFT of element %zu failed: %s", fn, e,
                            fricreg_aft_errmsg(hb->aft));
