@@ -2324,6 +2324,50 @@ static const struct script hb_contact_3d = {
     "hb set_jenkins_2d_normal", 2,    hb_contact_3d_calls,   1,          0,       hb_iwan_open,
     hb_contact_3d_call,         NULL, hb_contact_3d_observe, hb_errcode, hb_close};
 
+/* A mix by type: add_elements of a Jenkins element (the sliders' array), then of a 3-D contact
+ * element beside it (the buffers grown to four rows, the sampled AFT, the sliders again, the
+ * held ones copied); the view solves the whole model at one frequency (nq = 4 (2H + 1)), or
+ * reads the refusal of an incomplete one. */
+static const char *const hb_add_calls[] = {"add_elements(jenkins)", "add_elements(contact_3d)"};
+
+static int hb_add_open(void **obj)
+{
+    const double M[4] = {1.3, 0.0, 0.0, 0.9}, K[4] = {4.2, -1.7, -1.7, 2.385};
+    const double pc[2] = {0.6, 0.0}, ps[2] = {0.0, 0.125};
+    fricreg_hb *hb = SENTINEL;
+    int status = fricreg_hb_create(2, 2, 3, &hb);
+    *obj = status == FRICREG_OK ? hb : NULL;
+    if (status == FRICREG_OK && (fricreg_hb_set_mass(hb, 2, M) != FRICREG_OK ||
+                                 fricreg_hb_set_stiffness(hb, 2, K) != FRICREG_OK ||
+                                 fricreg_hb_set_rayleigh(hb, 0.05, 0.01) != FRICREG_OK ||
+                                 fricreg_hb_set_excitation(hb, 2, pc, ps) != FRICREG_OK))
+        NOTE("a dense setter failed");
+    return status;
+}
+
+static int hb_add_call(void *obj, int i, struct view *v)
+{
+    (void)v;
+    const double J[2] = {0.0, 1.0}, jenkins[2] = {1.5, 0.25};
+    const double J3[6] = {1.0, 0.0, 0.0, 1.0, 0.4, -0.3}, contact[5] = {1.5, 0.4, 2.0, 0.5, 0.0};
+    return i == 0
+               ? fricreg_hb_add_elements(obj, fricreg_element_lookup("jenkins"), 1, 2, J, jenkins)
+               : fricreg_hb_add_elements(obj, fricreg_element_lookup("contact_3d"), 1, 2, J3,
+                                         contact);
+}
+
+static void hb_add_observe(void *obj, struct view *v)
+{
+    double q[28] = {0}; /* a failed call leaves it: the view must read the same */
+    see(v, (double)fricreg_hb_element_count(obj));
+    see(v, fricreg_hb_solve(obj, 1.1, 28, NULL, q));
+    see_all(v, q, 28);
+}
+
+static const struct script hb_add = {
+    "hb add_elements", 2,    hb_add_calls,   0,          0,       hb_add_open,
+    hb_add_call,       NULL, hb_add_observe, hb_errcode, hb_close};
+
 /* Hill's method turned on: set_stability's allocations (the companion matrix, the eigenvalues,
  * GSL's workspace on fricreg's memory, M's LU); the view solves with Jenkins elements and reads
  * the solution's stability (FRICREG_EINVAL when set_stability failed: it stayed off). */
@@ -3073,6 +3117,14 @@ START_TEST(test_hb_contact_3d)
 }
 END_TEST
 
+/* add_elements's allocations fail cleanly: ENOMEM and the elements as before */
+START_TEST(test_hb_add_elements)
+{
+    struct tally t = fail_each_allocation(&hb_add);
+    ck_assert_int_eq(t.enomem, t.cases);
+}
+END_TEST
+
 START_TEST(test_aft_eval_does_not_allocate)
 {
     fricreg_aft *a = NULL;
@@ -3562,6 +3614,7 @@ static Suite *alloc_suite(void)
     tcase_add_test(drivers, test_hb_normal);
     tcase_add_test(drivers, test_hb_iwan_normal);
     tcase_add_test(drivers, test_hb_contact_3d);
+    tcase_add_test(drivers, test_hb_add_elements);
     tcase_add_test(drivers, test_hb_stability);
     tcase_add_loop_test(drivers, test_structure_run, 0, N_SCHEMES);
     tcase_add_loop_test(drivers, test_structure_estimate_run, 0, N_SCHEMES);
