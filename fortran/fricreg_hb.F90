@@ -6,7 +6,8 @@
 ! callers need from here and whose header states the conventions every type follows.
 module fricreg_hb_m
   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_int64_t, c_ptr, c_funptr, &
-                                         c_null_ptr, c_null_funptr, c_associated, c_funloc
+                                         c_null_ptr, c_null_funptr, c_associated, c_funloc, &
+                                         c_null_char
   use fricreg_c
   use fricreg_sim_c
   use fricreg_base_m, only: fricreg_object, fricreg_error_string, as_size
@@ -38,6 +39,9 @@ module fricreg_hb_m
     procedure :: set_jenkins_normal => hb_set_jenkins_normal
     procedure :: set_iwan_normal => hb_set_iwan_normal
     procedure :: set_jenkins_2d_normal => hb_set_jenkins_2d_normal
+    procedure :: add_elements => hb_add_elements
+    procedure :: clear_elements => hb_clear_elements
+    procedure :: element_count => hb_element_count
     procedure, private :: hb_set_matrix_dense, hb_set_matrix_compressed
     generic :: set_matrix => hb_set_matrix_dense, hb_set_matrix_compressed
     procedure :: set_excitation => hb_set_excitation
@@ -354,6 +358,66 @@ contains
                                                           kt, mu, n0, kn))
     if (status == FRICREG_OK) self%rows = 3 * self%m
   end function hb_set_jenkins_2d_normal
+
+  !> Elements of the type called name (fricreg_element_lookup; ns sliders for an Iwan type,
+  !> default 1) beside those the driver holds, of any of HB's types (fricreg_hb_add_elements:
+  !> jenkins, iwan, jenkins_normal, iwan_normal, contact_3d): element i's dim rows (the type's:
+  !> tangential, then the normal one) (i-1) dim + 1 .. i dim of J(me dim, ndof) in Fortran's
+  !> order, its parameters params(:, i) in the type's layout (gap 0); me = size(params, 2). q's
+  !> columns are the rows of the elements in the order added. FRICREG_EINVAL for an unknown
+  !> name or ns; FRICREG_ESIZE unless params has the type's nparams rows and J is (me dim,
+  !> ndof); C's codes. Since 1.8.
+  function hb_add_elements(self, name, J, params, ns) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    character(len=*), intent(in) :: name
+    real(c_double), intent(in) :: J(:, :)
+    real(c_double), intent(in), contiguous :: params(:, :)
+    integer, intent(in), optional :: ns
+    integer(c_int) :: status
+    character(len=*), parameter :: fn = 'add_elements'
+    type(c_ptr) :: t
+    integer :: n
+    integer(c_size_t) :: me, rows
+    real(c_double), allocatable :: Jc(:, :) ! J transposed: C's row-major J
+    n = 1
+    if (present(ns)) n = ns
+    status = self%ready(fn, 'HB driver')
+    if (status /= FRICREG_OK) return
+    t = c_null_ptr
+    if (n >= 1) t = fricreg_element_sliders(fricreg_element_lookup(trim(name) // c_null_char), &
+                                            int(n, c_size_t))
+    if (.not. c_associated(t)) then
+      status = self%fail(FRICREG_EINVAL, fn // ': no element type "' // trim(name) // &
+                         '" with that many sliders')
+      return
+    end if
+    me = int(size(params, 2), c_size_t)
+    rows = me * int(fricreg_element_dim(t), c_size_t)
+    status = self%hb_shape(fn, 'params', params, fricreg_element_nparams(t), me)
+    if (status == FRICREG_OK) status = self%hb_shape(fn, 'J', J, rows, self%n)
+    if (status /= FRICREG_OK) return
+    if (fricreg_hb_element_count(self%ptr) == 0) self%rows = 0 ! q's columns: the held rows
+    allocate (Jc, source=transpose(J))
+    status = self%record(fricreg_hb_add_elements(self%ptr, t, me, self%n, Jc, params))
+    if (status == FRICREG_OK) self%rows = self%rows + rows
+  end function hb_add_elements
+
+  !> Remove every element (fricreg_hb_clear_elements). Since 1.8.
+  function hb_clear_elements(self) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    integer(c_int) :: status
+    status = self%ready('clear_elements', 'HB driver')
+    if (status == FRICREG_OK) status = self%record(fricreg_hb_clear_elements(self%ptr))
+    if (status == FRICREG_OK) self%rows = self%m
+  end function hb_clear_elements
+
+  !> The number of elements held, of all types (fricreg_hb_element_count; 0 before create).
+  !> Since 1.8.
+  integer function hb_element_count(self)
+    class(fricreg_hb_driver), intent(in) :: self
+    hb_element_count = 0
+    if (c_associated(self%ptr)) hb_element_count = int(fricreg_hb_element_count(self%ptr))
+  end function hb_element_count
 
   !> One setter of M, K and C, in any storage (C's fricreg_hb_set_matrix), a generic of two
   !> forms, as fricreg_structure's set_matrix (the contacts aside: J is set with the elements):

@@ -23,6 +23,10 @@
 !   FRHBLO(H, M, NDOF, JT, JN, KT, MU, N0, KN, STAT)  _set_normal_elements (JT, JN transposed)
 !   FRHBIL(H, M, NDOF, JT, JN, NS, K, MU, N0, KN, STAT)  _set_iwan_normal (K, MU (NS, M))
 !   FRHBL2(H, M, NDOF, JE, JN, KT, MU, N0, KN, STAT)  _set_jenkins_2d_normal (JE(2M, NDOF))
+!   FRHBAE(H, ITYPE, NS, ME, NDOF, J, PARAMS, STAT)  _add_elements (J(ME IDIM, NDOF) transposed,
+!                                                     PARAMS(NPAR, ME))
+!   FRHBXE(H, STAT)                                   _clear_elements
+!   FRHBEC(H, ME, STAT)                               _element_count
 !   FRHBPF(H, NDOF, PC, PS, STAT)                     _set_excitation
 !   FRHBNT(H, TOL, MAXIT, STAT)                       _set_newton
 !   FRHBCT(H, DS, DSMIN, DSMAX, MAXPT, STAT)          _set_continuation
@@ -57,7 +61,7 @@
 ! Refused here, before C sees them, with FRICREG_EINVAL: FRHBCR's NDOF or M below 1, a
 ! negative MAXPT, IGUESS other than 0 or 1, and a K or IDOF below 1 (counts that would wrap
 ! into size_t or C's 0-based index; FRHBSB's K below 0), FRHBIW's and FRHBIL's NS below 1,
-! FRHBNM's MODE below 1 or negative NP,
+! FRHBNM's MODE below 1 or negative NP, FRHBAE's code or NS of no type or ME below 0,
 ! FRHBNQ's I below 1.
 !
 ! A monitor is the caller's INTEGER FUNCTION MONITR(ITERS, PARAM, RESID), INTEGER*8 ITERS (the
@@ -68,7 +72,7 @@
 ! pass through a void*).
 !
 ! Generated, not here: the entry points that are one C call (FRHBMF, FRHBKF, FRHBCF, FRHBMX,
-! FRHBCA, FRHBPF, FRHBNT, FRHBXD, FRHBST) are a line each, with their doc comments, in the table
+! FRHBCA, FRHBPF, FRHBNT, FRHBXD, FRHBST, FRHBXE) are a line each, with their doc comments, in the table
 ! fricreg_hb_f77.txt, which fortran/gen_f77.cmake turns into fricreg_hb_f77_generated.f90 at
 ! build time; those below have logic of their own.
 
@@ -235,6 +239,59 @@ subroutine frhbil(h, m, ndof, jt, jn, ns, k, mu, n0, kn, stat)
                                         int(ndof, c_size_t), ct, cn, int(ns, c_size_t), k, mu, &
                                         n0, kn))
 end subroutine frhbil
+
+!> FRHBAE(H, ITYPE, NS, ME, NDOF, J, PARAMS, STAT): ME elements of the type of code ITYPE with
+!> NS sliders (FRELEV's codes; HB takes jenkins, iwan, jenkins_normal, iwan_normal and
+!> contact_3d; NS 1 but for the Iwan types) beside those the driver holds, of any of those
+!> types (C's fricreg_hb_add_elements): element I's IDIM rows (FRELSZ; tangential, then the
+!> normal one) (I - 1) IDIM + 1 .. I IDIM of J(ME IDIM, NDOF), its parameters PARAMS(1:NPAR, I)
+!> in the type's layout (gap 0). Q's columns are the elements' rows in the order added.
+!> FRICREG_EINVAL for a code or NS of no type, or ME below 0 (nothing changed); C's codes.
+!> Since 1.8.
+subroutine frhbae(h, itype, ns, me, ndof, j, params, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: itype, ns, me, ndof
+  double precision, intent(in) :: j(*), params(*)
+  integer, intent(out) :: stat
+  double precision, allocatable :: jt(:, :)
+  type(c_ptr) :: t
+  integer :: rows, nn, alloc, r, c
+  t = fricreg_f77_element_type(int(itype, c_int64_t), int(ns, c_int64_t))
+  if (.not. c_associated(t) .or. me < 0) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  rows = me * int(fricreg_element_dim(t))
+  nn = max(ndof, 0)
+  allocate (jt(nn, rows), stat=alloc)
+  if (alloc /= 0) then
+    stat = int(FRICREG_ENOMEM)
+    return
+  end if
+  do c = 1, nn ! J(ROWS, NDOF), column-major, into C's row-major
+    do r = 1, rows
+      jt(c, r) = j(r + (c - 1) * rows)
+    end do
+  end do
+  stat = int(fricreg_hb_add_elements(fricreg_handle_to_ptr(h), t, int(me, c_size_t), &
+                                     int(ndof, c_size_t), jt, params))
+end subroutine frhbae
+
+!> FRHBEC(H, ME, STAT): ME, the number of elements the driver holds, of all types (C's
+!> fricreg_hb_element_count). Since 1.8.
+subroutine frhbec(h, me, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(inout) :: me
+  integer, intent(out) :: stat
+  me = int(fricreg_hb_element_count(fricreg_handle_to_ptr(h)))
+  stat = int(FRICREG_OK)
+end subroutine frhbec
 
 !> FRHBCT(H, DS, DSMIN, DSMAX, MAXPT, STAT): the continuation's step control and its most
 !> points MAXPT >= 1.

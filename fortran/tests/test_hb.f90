@@ -14,6 +14,7 @@
 ! (set_iwan_normal with one slider too, with two halves of the slider to 1e-12);
 ! set_matrix dense gives set_mass's and set_stiffness's bit for bit, compressed (a sparse model)
 ! to Newton's tolerance; which = FRICREG_CONTACTS, 0 and a dense format with values(:) refused.
+! add_elements of a jenkins_normal gives set_normal_elements' solution bit for bit;
 ! set_jenkins_2d_normal (Je(2, 2) in Fortran's order, q with 3 columns) equals C's function
 ! called through bind(C) with Je's rows by hand, bit for bit.
 program test_hb
@@ -192,6 +193,23 @@ program test_hb
                     'set_jenkins_normal')
   call check_status(chain%solve(1.1_c_double, qn2), FRICREG_OK, 'set_jenkins_normal solve')
   call check(all(qn2 == qn), 'set_jenkins_normal is set_normal_elements bit for bit')
+  ! by type: add_elements of a jenkins_normal (its rows t, n in J(2, ndof), params kt, mu, kn,
+  ! n0, gap) is the setter bit for bit
+  call check_status(chain%clear_elements(), FRICREG_OK, 'clear_elements')
+  call check(chain%element_count() == 0, 'no elements after clear')
+  call check_status(chain%add_elements('jenkins_normal', reshape([J2(1, :), Jn2(1, :)], [2, 2], &
+                                                                 order=[2, 1]), &
+                                       reshape([4.0_c_double, 0.2_c_double, 0.0_c_double, &
+                                                0.5_c_double], [4, 1])), FRICREG_ESIZE, &
+                    'add_elements with 4 parameters of 5')
+  call check_status(chain%add_elements('jenkins_normal', reshape([J2(1, :), Jn2(1, :)], [2, 2], &
+                                                                 order=[2, 1]), &
+                                       reshape([4.0_c_double, 0.2_c_double, 0.0_c_double, &
+                                                0.5_c_double, 0.0_c_double], [5, 1])), &
+                    FRICREG_OK, 'add_elements jenkins_normal')
+  call check(chain%element_count() == 1, 'one element added')
+  call check_status(chain%solve(1.1_c_double, qn2), FRICREG_OK, 'add_elements solve')
+  call check(all(qn2 == qn), 'add_elements is set_normal_elements bit for bit')
   ! Iwan elements with lift-off: one slider is the Jenkins element bit for bit, two halves of
   ! it (kt/2, mu/2 each) it to rounding; k and mu are (ns, m)
   call check_status(chain%set_iwan_normal(J2, Jn2, reshape([4.0_c_double], [1, 1]), &
