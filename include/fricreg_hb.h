@@ -46,6 +46,8 @@
  * Elements with a normal load and lift-off (fricreg_hb_set_normal_elements) have two rows of J
  * each, tangential and normal, and the same equations with F_h = (f_h, N_h) on both; 3-D
  * contact elements (fricreg_hb_set_jenkins_2d_normal) three, with F_h = (fx_h, fy_h, N_h).
+ * One model may hold these kinds together (fricreg_hb_add_elements, since 1.8): each element
+ * has its own rows, in the order added.
  *
  * Cost per frequency: H + 1 complex LU factors of ndof x ndof and (H + 1)(m + 1) solves, then
  * per Newton iteration m AFTs (O(H³) each) and a real LU of order m (2H + 1). A dense model
@@ -307,7 +309,7 @@ FRICREG_API int fricreg_hb_set_iwan(fricreg_hb *hb, size_t m, size_t ndof, const
  *  the load −Jn^T N_0: K x0 = −Jt^T f_0 − Jn^T N_0.
  *
  *  Replaces the elements of fricreg_hb_set_elements and fricreg_hb_set_iwan, which replace
- *  these in turn (back to m rows, nq = m (2H + 1)); one kind of element per driver.
+ *  these in turn (back to m rows, nq = m (2H + 1)); a mix of kinds is fricreg_hb_add_elements's.
  *
  *  m            must equal the driver's element count.
  *  ndof         must equal the driver's degrees of freedom.
