@@ -4,7 +4,6 @@
  * fricreg_hb_clear_elements; fricreg_hb_element_count. The types' parameters are read into
  * the layout the per-kind setters fill (element_store.c), so that one model may mix Jenkins,
  * Iwan, lift-off and 3-D contact elements and a model of one type answers as its setter. */
-#include <math.h>
 #include <string.h>
 
 #include "element_store.h"

@@ -5,8 +5,6 @@
  * by one block of its kind (element_store.c); and the check of J's rows that
  * fricreg_hb_add_elements (element_types.c) shares. */
 #include <math.h>
-#include <stdlib.h>
-#include <string.h>
 
 #include "element_store.h"
 #include "elements.h"
