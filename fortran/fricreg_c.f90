@@ -29,7 +29,8 @@ module fricreg_c
   public :: fricreg_f77_transposed_rows
   ! For module fricreg and the F77 entry points (module fricreg does not re-export them).
   public :: fricreg_free_fn, fricreg_errcode_fn, fricreg_errmsg_fn, fricreg_f77_created, &
-            fricreg_f77_release, fricreg_f77_last_error, fricreg_f77_element_type
+            fricreg_f77_release, fricreg_f77_last_error, fricreg_f77_element_type, &
+            fricreg_f77_element_rows
 
   interface
     include 'fricreg_h.inc'
@@ -155,6 +156,33 @@ contains
     if (itype < 1 .or. ns < 1) return
     t = fricreg_element_sliders(fricreg_element_at(int(itype - 1, c_size_t)), int(ns, c_size_t))
   end function fricreg_f77_element_type
+
+  !> The element type of F77 code itype with ns sliders into t, and me elements' rows of
+  !> j(me dim, ndof) (Fortran's order; dim the type's) transposed into jt(ndof, me dim), C's
+  !> row-major J of the add_elements calls. FRICREG_EINVAL for a code or ns of no type, or
+  !> me < 0; FRICREG_ENOMEM. (64-bit arguments, as fricreg_f77_element_type's.)
+  integer(c_int) function fricreg_f77_element_rows(itype, ns, me, ndof, j, t, jt) result(stat)
+    integer(c_int64_t), intent(in) :: itype, ns, me, ndof
+    real(c_double), intent(in) :: j(*)
+    type(c_ptr), intent(out) :: t
+    real(c_double), allocatable, intent(out) :: jt(:, :)
+    integer(c_int64_t) :: rows, nn, r, c
+    integer :: alloc
+    t = fricreg_f77_element_type(itype, ns)
+    stat = FRICREG_EINVAL
+    if (.not. c_associated(t) .or. me < 0) return
+    rows = me * int(fricreg_element_dim(t), c_int64_t)
+    nn = max(ndof, 0_c_int64_t)
+    allocate (jt(nn, rows), stat=alloc)
+    stat = FRICREG_ENOMEM
+    if (alloc /= 0) return
+    do c = 1, nn
+      do r = 1, rows
+        jt(c, r) = j(r + (c - 1) * rows)
+      end do
+    end do
+    stat = FRICREG_OK
+  end function fricreg_f77_element_rows
 
   !> Release the object of handle h with free (its C release; h = 0 does nothing) and set
   !> h = 0. Returns FRICREG_OK, for STAT.

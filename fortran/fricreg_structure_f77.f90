@@ -490,26 +490,11 @@ subroutine frstae(h, itype, ns, me, ndof, j, params, stat)
   integer, intent(in) :: itype, ns, me, ndof
   double precision, intent(in) :: j(*), params(*)
   integer, intent(out) :: stat
-  double precision, allocatable :: jt(:, :)
+  real(c_double), allocatable :: jt(:, :)
   type(c_ptr) :: t
-  integer :: rows, nn, alloc, r, c
-  t = fricreg_f77_element_type(int(itype, c_int64_t), int(ns, c_int64_t))
-  if (.not. c_associated(t) .or. me < 0) then
-    stat = int(FRICREG_EINVAL)
-    return
-  end if
-  rows = me * int(fricreg_element_dim(t))
-  nn = max(ndof, 0)
-  allocate (jt(nn, rows), stat=alloc)
-  if (alloc /= 0) then
-    stat = int(FRICREG_ENOMEM)
-    return
-  end if
-  do c = 1, nn ! J(ROWS, NDOF), column-major, into C's row-major
-    do r = 1, rows
-      jt(c, r) = j(r + (c - 1) * rows)
-    end do
-  end do
+  stat = int(fricreg_f77_element_rows(int(itype, c_int64_t), int(ns, c_int64_t), &
+                                      int(me, c_int64_t), int(ndof, c_int64_t), j, t, jt))
+  if (stat /= FRICREG_OK) return
   stat = int(fricreg_structure_add_elements(fricreg_handle_to_ptr(h), t, int(me, c_size_t), &
                                             int(ndof, c_size_t), jt, params))
 end subroutine frstae
