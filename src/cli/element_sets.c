@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* element_sets.c — the --elements sets of `fricreg-sim structure` (element_sets.h): parsed,
- * read with the CLI's readers (matrix_market.c through cli_read_dense, input_line.c), each
- * element's parameters judged by its kernel so that a bad one is named by its line, and added
- * to the structure in order. */
+/* element_sets.c — the --elements sets of `fricreg-sim structure`, `hb` and `nma`
+ * (element_sets.h): parsed, read with the CLI's readers (matrix_market.c through cli_read_dense,
+ * input_line.c), each element's parameters judged by its kernel so that a bad one is named by
+ * its line, added to the model in order and listed in the summary. */
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
@@ -224,12 +224,27 @@ int cli_read_element_sets(const struct cli_element_set_options *o, size_t n,
     return status;
 }
 
-int cli_add_element_sets(fricreg_structure *s, size_t n, const struct cli_element_sets *sets)
+int cli_check_element_sets_alone(const struct cli_element_set_options *o,
+                                 const struct cli_element_files *e)
+{
+    const char *files[] = {e->rows,     e->rows_2d, e->jenkins,       e->iwan,
+                           e->segalman, e->normal,  e->normal_params, e->iwan_normal};
+    int given = e->sliders_given || e->resolution_given;
+    for (size_t k = 0; k < sizeof files / sizeof files[0]; k++)
+        given |= files[k] != NULL;
+    if (o->n > 0 && given)
+        return cli_usage_error("--elements", "give --elements or the element options (--jenkins, "
+                                             "--jenkins-2d and their parameter files), not both");
+    return 0;
+}
+
+int cli_add_element_sets(void *model, cli_element_set_adder *add, size_t n,
+                         const struct cli_element_sets *sets)
 {
     for (size_t k = 0; k < sets->n; k++) {
-        const struct cli_element_set *e = &sets->set[k];
-        if (fricreg_structure_add_elements(s, e->type, e->me, n, e->J, e->params) != FRICREG_OK)
-            return cli_file_error("--elements", e->rows_path, 0, "%s", fricreg_structure_errmsg(s));
+        const char *why = add(model, &sets->set[k], n);
+        if (why != NULL)
+            return cli_file_error("--elements", sets->set[k].rows_path, 0, "%s", why);
     }
     return 0;
 }
@@ -241,4 +256,14 @@ const char *cli_element_sets_kind(const struct cli_element_sets *sets)
         if (strcmp(fricreg_element_name(sets->set[k].type), name) != 0)
             return "mixed";
     return name;
+}
+
+void cli_json_element_sets(FILE *out, const struct cli_element_sets *sets)
+{
+    fprintf(out, ", \"element_kind\": \"%s\", \"element_sets\": [", cli_element_sets_kind(sets));
+    for (size_t k = 0; k < sets->n; k++)
+        fprintf(out, "%s{\"type\": \"%s\", \"nelements\": %zu, \"sliders_per_element\": %zu}",
+                k > 0 ? ", " : "", fricreg_element_name(sets->set[k].type), sets->set[k].me,
+                fricreg_element_nsliders(sets->set[k].type));
+    fputs("]", out);
 }

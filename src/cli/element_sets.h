@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* element_sets.h — `fricreg-sim structure --elements TYPE:J.mtx:P.txt`, repeatable: element
- * sets of any of the kernel's types (fricreg_element.h) in one structure, each added by
- * fricreg_structure_add_elements in the order given (element_sets.c). TYPE is a name of
+/* element_sets.h — `fricreg-sim structure`, `hb` and `nma --elements TYPE:J.mtx:P.txt`,
+ * repeatable: element sets of any of the kernel's types (fricreg_element.h) in one model, each
+ * added by the model's add_elements (fricreg_structure_add_elements, fricreg_hb_add_elements) in
+ * the order given (element_sets.c). TYPE is a name of
  * fricreg_element_lookup; J.mtx a Matrix Market (me dim) x n matrix, element i's dim rows
  * consecutive in the type's order; P.txt a line per element of the type's parameters in the
  * kernel's layout, every line the same count (an Iwan type's ns from it). */
@@ -9,9 +10,11 @@
 #define FRICREG_CLI_ELEMENT_SETS_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "cli.h"
-#include "fricreg_structure.h"
+#include "fricreg_element.h"
+#include "jenkins_input.h"
 
 /* The most --elements one run takes. */
 #define CLI_MAX_ELEMENT_SETS 32
@@ -65,11 +68,25 @@ int cli_read_element_sets(const struct cli_element_set_options *o, size_t n,
                           struct cli_element_sets *sets);
 void cli_free_element_sets(struct cli_element_sets *sets);
 
-/* Adds the sets to s in order (fricreg_structure_add_elements). 0, or CLI_EXIT_USAGE after one
- * line naming the set's file and the library's reason. */
-int cli_add_element_sets(fricreg_structure *s, size_t n, const struct cli_element_sets *sets);
+/* --elements given beside the element options of one kind per run (the two ways do not mix):
+ * CLI_EXIT_USAGE after one line on stderr, else 0. */
+int cli_check_element_sets_alone(const struct cli_element_set_options *o,
+                                 const struct cli_element_files *e);
+
+/* Adds set e to model for n dofs by the model's add_elements: NULL, or the library's reason
+ * (the structure's or the HB driver's errmsg), so that one loop serves either model. */
+typedef const char *cli_element_set_adder(void *model, const struct cli_element_set *e, size_t n);
+
+/* Adds the sets to model in order by add. 0, or CLI_EXIT_USAGE after one line naming the set's
+ * file and the library's reason. */
+int cli_add_element_sets(void *model, cli_element_set_adder *add, size_t n,
+                         const struct cli_element_sets *sets);
 
 /* The summary's element_kind: the type's name for one set's type, else "mixed". */
 const char *cli_element_sets_kind(const struct cli_element_sets *sets);
+
+/* The summaries' fields of the sets: , "element_kind": the kind, "element_sets": per set its
+ * type, nelements and sliders_per_element, in the order given. */
+void cli_json_element_sets(FILE *out, const struct cli_element_sets *sets);
 
 #endif

@@ -77,18 +77,6 @@ static int parse_output_contacts(const struct cli_option *row, const char *text)
     return strcmp(text, "none") == 0 ? 0 : cli_check_dof_list(row->name, &cli_contact_list, text);
 }
 
-/* Whether any of the element options of one kind per run is given (--elements sets are
- * added on their own: the two ways do not mix). */
-static int element_options_given(const struct cli_element_files *e)
-{
-    const char *files[] = {e->rows,     e->rows_2d, e->jenkins,       e->iwan,
-                           e->segalman, e->normal,  e->normal_params, e->iwan_normal};
-    for (size_t k = 0; k < sizeof files / sizeof files[0]; k++)
-        if (files[k] != NULL)
-            return 1;
-    return e->sliders_given || e->resolution_given;
-}
-
 /* Options that need others, or exclude them. */
 static int check_options(const struct structure_options *o)
 {
@@ -124,9 +112,8 @@ static int check_options(const struct structure_options *o)
         return cli_usage_error("--rayleigh", "give --damping or --rayleigh, not both");
     if (o->alpha_given && o->scheme != SCHEME_HHT)
         return cli_usage_error("--alpha", "only --integrator hht has alpha");
-    if (o->element_sets.n > 0 && element_options_given(&o->elements))
-        return cli_usage_error("--elements", "give --elements or the element options (--jenkins, "
-                                             "--jenkins-2d and their parameter files), not both");
+    if (cli_check_element_sets_alone(&o->element_sets, &o->elements) != 0)
+        return CLI_EXIT_USAGE;
     if (o->element_sets.n > 0 && o->scheme == SCHEME_GSL)
         return cli_usage_error("--elements", "elements are integrated by newmark, hht or central "
                                              "only");
@@ -613,13 +600,9 @@ static void write_element_sets(FILE *out, const fricreg_structure *s,
         cli_json_kinds(out, "dissipation_per_element_error_kind", sets->me, est->De_kind);
         cli_count_kinds(kinds, sets->me, est->De_kind);
     }
-    fprintf(out, ", \"element_dissipation\": %.17g, \"element_kind\": \"%s\", \"element_sets\": [",
-            svalue(s, FRICREG_SVALUE_JENKINS), cli_element_sets_kind(sets));
-    for (size_t k = 0; k < sets->n; k++)
-        fprintf(out, "%s{\"type\": \"%s\", \"nelements\": %zu, \"sliders_per_element\": %zu}",
-                k > 0 ? ", " : "", fricreg_element_name(sets->set[k].type), sets->set[k].me,
-                fricreg_element_nsliders(sets->set[k].type));
-    fputs("], \"element_forces\": [", out);
+    fprintf(out, ", \"element_dissipation\": %.17g", svalue(s, FRICREG_SVALUE_JENKINS));
+    cli_json_element_sets(out, sets);
+    fputs(", \"element_forces\": [", out);
     for (size_t k = 0, i = 0; k < sets->n; k++)
         for (size_t e = 0; e < sets->set[k].me; e++, i++) { /* element i's dim components */
             fputs(i > 0 ? ", [" : "[", out);

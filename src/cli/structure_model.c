@@ -244,6 +244,15 @@ static int set_influence(fricreg_structure *s, const struct structure_options *o
     return status == FRICREG_OK ? 0 : model_error(s, status, "--influence", o->influence, NULL);
 }
 
+/* One --elements set into the structure (cli_element_set_adder): NULL, or its reason. */
+static const char *add_set(void *model, const struct cli_element_set *e, size_t n)
+{
+    fricreg_structure *s = model;
+    return fricreg_structure_add_elements(s, e->type, e->me, n, e->J, e->params) == FRICREG_OK
+               ? NULL
+               : fricreg_structure_errmsg(s);
+}
+
 /* The elements (beside the contacts, whatever their bounds: one step solves both); what the
  * library refuses in them, named by their parameter file. */
 static int set_elements(fricreg_structure *s, const struct structure_input *in)
@@ -317,6 +326,6 @@ int cli_set_model(const struct structure_options *o, const struct structure_inpu
     if (status == 0 && in->el.m > 0)
         status = set_elements(s, in);
     if (status == 0)
-        status = cli_add_element_sets(s, in->n, &in->sets);
+        status = cli_add_element_sets(s, add_set, in->n, &in->sets);
     return status;
 }
