@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* hb.c — `fricreg-sim hb`: the frequency response of a linear structure with Jenkins, Iwan or
- * lift-off elements (jenkins_input.h) by harmonic balance (fricreg_hb.h) from Matrix Market
+ * lift-off elements (jenkins_input.h; or --elements sets of several kinds, element_sets.h) by
+ * harmonic balance (fricreg_hb.h) from Matrix Market
  * files, continued in the excitation frequency from --omega-start to --omega-end (or, with
  * --continue-in level, in the excitation level from --level-start to --level-end at --omega),
  * each point's
@@ -41,7 +42,6 @@ static const struct cli_word hb_stabilities[] = {{"auto", FRICREG_HB_STABILITY_A
 struct hb_model {
     struct cli_hb_model s;
     size_t n, m;
-    struct cli_elements el; /* s.el's view, for the summary */
     double *pc, *ps;
 };
 
@@ -146,7 +146,8 @@ static size_t hb_table(struct hb_options *o, struct cli_option table[])
          .help = "points stored at most: reaching it stops the continuation"},
         {"--stability", CLI_CHOICE, .slot = &o->stability, .words = hb_stabilities,
          .help = "each point's stability: by the exact monodromy of the orbit (1-D Jenkins and "
-                 "Iwan elements, with or without lift-off), by Hill's method (any element, ndof "
+                 "Iwan elements, with or without lift-off, all of one kind: a mix of --elements "
+                 "sets is refused), by Hill's method (any element, ndof "
                  "(2H + 1) "
                  "<= 1024), auto (the monodromy where the elements allow it, else Hill's where "
                  "the size allows it, else none), or off"},
@@ -178,7 +179,6 @@ static int read_model(const struct hb_options *o, struct hb_model *md)
     int status = cli_hb_read_model(&o->model, &md->s);
     md->n = md->s.n;
     md->m = md->s.m;
-    md->el = md->s.el;
     if (status == 0)
         status = cli_read_pairs("--excitation", o->excitation, md->n, "degrees of freedom", &md->pc,
                                 &md->ps);
@@ -375,9 +375,6 @@ static int set_stability(fricreg_hb *hb, const struct hb_options *o, size_t n)
     if (o->stability == FRICREG_HB_STABILITY_AUTO && method == FRICREG_HB_STABILITY_HILL &&
         coefficients > FRICREG_HB_MAX_HILL)
         return 0;
-    if (o->stability == FRICREG_HB_STABILITY_MONODROMY && method != o->stability)
-        return cli_usage_error("--stability", "monodromy needs 1-D Jenkins or Iwan elements (with "
-                                              "or without lift-off), not the 3-D contact");
     if (fricreg_hb_set_stability(hb, 1) != FRICREG_OK)
         return cli_usage_error("--stability", fricreg_hb_errmsg(hb));
     return 0;
@@ -411,9 +408,7 @@ static void write_summary(fricreg_hb *hb, FILE *out, const struct hb_options *o,
     else
         fprintf(out, "\"omega_start\": %.17g, \"omega_end\": %.17g, \"points\": %zu",
                 o->omega_start, o->omega_end, K);
-    fprintf(out, ", \"element_kind\": \"%s\"", cli_element_kind_name(&md->el));
-    if (md->el.kind == CLI_ELEMENTS_IWAN || md->el.kind == CLI_ELEMENTS_IWAN_NORMAL)
-        fprintf(out, ", \"sliders_per_element\": %zu", md->el.ns);
+    cli_hb_json_elements(out, &md->s);
     fprintf(out, ", \"stability_method\": \"%s\"", stability_name(hb));
     fprintf(out, ", \"%s_reached\": %.17g, \"peaks\": \"%s\", \"dofs\": [",
             level ? "level" : "omega",
@@ -445,6 +440,10 @@ static int run_hb(fricreg_hb *hb, struct hb_options *o, const struct hb_model *m
     status = level ? fricreg_hb_continue_level(hb, o->omega, o->level_start, o->level_end, nq, NULL)
                    : fricreg_hb_continue(hb, o->omega_start, o->omega_end, nq, NULL);
     double cpu = (double)(clock() - start) / CLOCKS_PER_SEC;
+    /* the monodromy's refusal of the elements (a mix, the 3-D contact) comes with the first
+     * point's stability: the library's reason, as a bad option */
+    if (status == FRICREG_EINVAL && o->stability == FRICREG_HB_STABILITY_MONODROMY)
+        return cli_usage_error("--stability", fricreg_hb_errmsg(hb));
     if (status != FRICREG_OK) {
         char progress[128];
         snprintf(progress, sizeof progress, "the continuation from %s = %g had reached %zu points",
@@ -513,7 +512,8 @@ static size_t hb_help_table(struct cli_option table[])
 const struct cli_command cli_hb_command = {
     "hb",
     "--mass M.mtx --stiffness K.mtx [--damping C.mtx | --rayleigh A0,A1] --excitation F.txt "
-    "--jenkins J.mtx ELEMENTS {--omega-start W0 --omega-end W1 | --continue-in level --omega W "
+    "{--jenkins J.mtx ELEMENTS | --elements TYPE:J.mtx:P.txt...} {--omega-start W0 --omega-end "
+    "W1 | --continue-in level --omega W "
     "--level-start L0 --level-end L1} [OPTION]...",
     "frequency response of a structure with joints (harmonic balance)",
     "The frequency response of a linear structure M x'' + C x' + K x + J^T f(q) = pc cos(omega t) "
@@ -524,5 +524,9 @@ const struct cli_command cli_hb_command = {
     "ELEMENTS is one parameter file, a line per row of J.mtx: --jenkins-params, --iwan-params "
     "or --iwan-segalman, or --normal with --normal-params (lift-off); or --jenkins-2d J2.mtx "
     "instead of --jenkins with --normal and --normal-params (3-D contact: rows x, y of J2.mtx "
-    "and n of the normal file per element, a line kt mu n0 kn).",
+    "and n of the normal file per element, a line kt mu n0 kn). Or, instead, --elements "
+    "TYPE:J.mtx:P.txt, repeatable: sets of any of the types harmonic balance takes, mixed in "
+    "one model, each added in the order given, in the files fricreg-sim structure takes "
+    "(docs/structural.md); the library decides the types (fricreg_hb_add_elements, "
+    "fricreg_hb.h), a type it refuses a usage error with its reason, naming the set's file.",
     hb_help_table};

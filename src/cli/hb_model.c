@@ -12,14 +12,6 @@ int cli_hb_parse_rayleigh(const struct cli_option *row, const char *text)
     return cli_parse_rayleigh(row->name, text, &o->a0, &o->a1);
 }
 
-int cli_hb_refuse_element_sets(const struct cli_option *row, const char *text)
-{
-    (void)text;
-    return cli_usage_error(row->name, "harmonic balance takes one kind of element per run: give "
-                                      "--jenkins or --jenkins-2d with one parameter file "
-                                      "(fricreg-sim structure mixes element sets)");
-}
-
 void cli_hb_model_defaults(struct cli_hb_model_options *o)
 {
     *o = (struct cli_hb_model_options){0};
@@ -32,12 +24,14 @@ int cli_hb_check_model(const struct cli_hb_model_options *o)
         return cli_usage_error("--mass", "missing (a file is required)");
     if (o->stiffness == NULL)
         return cli_usage_error("--stiffness", "missing (a file is required)");
+    if (cli_check_element_sets_alone(&o->element_sets, &o->elements) != 0)
+        return CLI_EXIT_USAGE;
     if (o->elements.rows_2d != NULL && o->elements.normal == NULL) /* 2-D: the 3-D contact only */
         return cli_usage_error("--jenkins-2d",
                                "harmonic balance has 2-D elements with a normal law "
                                "only (--normal with --normal-params: the 3-D "
                                "contact); fricreg-sim structure takes the others");
-    int status = cli_check_elements(&o->elements, 1);
+    int status = cli_check_elements(&o->elements, o->element_sets.n == 0);
     if (status != 0)
         return status;
     if (o->damping != NULL && o->rayleigh_given)
@@ -48,6 +42,7 @@ int cli_hb_check_model(const struct cli_hb_model_options *o)
 void cli_hb_free_model(struct cli_hb_model *md)
 {
     cli_free_elements(&md->el);
+    cli_free_element_sets(&md->sets);
     cli_sparse_free(&md->M);
     cli_sparse_free(&md->K);
     cli_sparse_free(&md->C);
@@ -67,8 +62,10 @@ int cli_hb_read_model(const struct cli_hb_model_options *o, struct cli_hb_model 
         status = cli_read_mtx_sized("--damping", o->damping, n, n, &mass, &md->C);
     if (status == 0)
         status = cli_read_elements(&o->elements, n, &md->el);
+    if (status == 0)
+        status = cli_read_element_sets(&o->element_sets, n, &md->sets);
     md->n = n;
-    md->m = md->el.m;
+    md->m = md->el.m + md->sets.me; /* one of them 0 */
     return status;
 }
 
@@ -103,6 +100,16 @@ static int set_elements(fricreg_hb *hb, size_t n, const struct cli_elements *el)
     return fricreg_hb_set_elements(hb, el->m, n, el->J, el->k, el->phi);
 }
 
+/* One --elements set into the driver (cli_element_set_adder): NULL, or the library's reason,
+ * which decides the types harmonic balance takes. */
+static const char *add_set(void *model, const struct cli_element_set *e, size_t n)
+{
+    fricreg_hb *hb = model;
+    return fricreg_hb_add_elements(hb, e->type, e->me, n, e->J, e->params) == FRICREG_OK
+               ? NULL
+               : fricreg_hb_errmsg(hb);
+}
+
 int cli_hb_set_model(const struct cli_hb_model_options *o, const struct cli_hb_model *md,
                      fricreg_hb *hb)
 {
@@ -116,6 +123,8 @@ int cli_hb_set_model(const struct cli_hb_model_options *o, const struct cli_hb_m
         return refused(hb, "--damping", o->damping);
     if (o->rayleigh_given && fricreg_hb_set_rayleigh(hb, o->a0, o->a1) != FRICREG_OK)
         return cli_usage_error("--rayleigh", fricreg_hb_errmsg(hb));
+    if (md->sets.n > 0)
+        return cli_add_element_sets(hb, add_set, n, &md->sets);
     if (set_elements(hb, n, &md->el) != FRICREG_OK)
         return refused(hb, md->el.option, md->el.path);
     return 0;
@@ -123,8 +132,21 @@ int cli_hb_set_model(const struct cli_hb_model_options *o, const struct cli_hb_m
 
 size_t cli_hb_rows(const struct cli_hb_model *md)
 {
+    if (md->sets.n > 0)
+        return md->sets.nforces;
     if (md->el.kind == CLI_ELEMENTS_CONTACT_3D)
         return 3 * md->m;
     int normal = md->el.kind == CLI_ELEMENTS_NORMAL || md->el.kind == CLI_ELEMENTS_IWAN_NORMAL;
     return normal ? 2 * md->m : md->m;
+}
+
+void cli_hb_json_elements(FILE *out, const struct cli_hb_model *md)
+{
+    if (md->sets.n > 0) {
+        cli_json_element_sets(out, &md->sets);
+        return;
+    }
+    fprintf(out, ", \"element_kind\": \"%s\"", cli_element_kind_name(&md->el));
+    if (md->el.kind == CLI_ELEMENTS_IWAN || md->el.kind == CLI_ELEMENTS_IWAN_NORMAL)
+        fprintf(out, ", \"sliders_per_element\": %zu", md->el.ns);
 }

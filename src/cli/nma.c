@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* nma.c — `fricreg-sim nma`: the backbone of a nonlinear mode (its natural frequency and
  * damping ratio against its modal amplitude) of a linear structure with Jenkins, Iwan or
- * lift-off elements, by harmonic balance and the extended periodic motion concept
+ * lift-off elements (or --elements sets of several kinds), by harmonic balance and the extended periodic motion concept
  * (fricreg_hb_nma), from the Matrix Market files of `hb` (hb_model.h); a JSON summary (with the
  * folds and the crossings k omega = omega_r) or a CSV row amplitude,omega,zeta,e_h1..e_hH (the
  * harmonics' kinetic energy shares) per point on stdout. Every bad option or file is one line
@@ -164,10 +164,10 @@ static void write_summary(FILE *out, fricreg_hb *hb, const struct nma_options *o
     for (size_t k = 1; k < K; k++)
         if (pts[w * k + 2] > pts[w * top + 2])
             top = k;
-    fprintf(out,
-            "{\"command\": \"nma\", \"ndof\": %zu, \"elements\": %zu, \"element_kind\": \"%s\", "
-            "\"harmonics\": %d, \"mode\": %d, \"linear_damping\": \"%s\", \"points\": %zu",
-            md->n, md->m, cli_element_kind_name(&md->el), o->harmonics, o->mode,
+    fprintf(out, "{\"command\": \"nma\", \"ndof\": %zu, \"elements\": %zu", md->n, md->m);
+    cli_hb_json_elements(out, md);
+    fprintf(out, ", \"harmonics\": %d, \"mode\": %d, \"linear_damping\": \"%s\", \"points\": %zu",
+            o->harmonics, o->mode,
             o->linear_damping == FRICREG_HB_NMA_DAMPING_MODAL ? "modal" : "matrix", K);
     const char *names[3] = {"first", "last", "zeta_max"};
     size_t at[3] = {0, K - 1, top};
@@ -259,8 +259,9 @@ static size_t nma_help_table(struct cli_option table[])
 
 const struct cli_command cli_nma_command = {
     "nma",
-    "--mass M.mtx --stiffness K.mtx [--damping C.mtx | --rayleigh A0,A1] --jenkins J.mtx "
-    "ELEMENTS --amplitude-start A0 --amplitude-end A1 [OPTION]...",
+    "--mass M.mtx --stiffness K.mtx [--damping C.mtx | --rayleigh A0,A1] {--jenkins J.mtx "
+    "ELEMENTS | --elements TYPE:J.mtx:P.txt...} --amplitude-start A0 --amplitude-end A1 "
+    "[OPTION]...",
     "backbone of a nonlinear mode of a structure with joints (EPMC)",
     "The backbone of mode K of a linear structure M x'' + C x' + K x + J^T f(q) = 0 with "
     "Jenkins, Iwan or lift-off elements on q = J x: its natural frequency omega and damping "
@@ -277,5 +278,7 @@ const struct cli_command cli_nma_command = {
     "the structure with its elements stuck (\"crossings\", sparse models up to 256 dofs: "
     "fricreg_hb_nma_crossings).\n\n"
     "ELEMENTS is one parameter file, a line per row of J.mtx: --jenkins-params, --iwan-params "
-    "or --iwan-segalman, or --normal with --normal-params (lift-off).",
+    "or --iwan-segalman, or --normal with --normal-params (lift-off). Or, instead, --elements "
+    "TYPE:J.mtx:P.txt, repeatable: sets of any types harmonic balance takes, mixed in one "
+    "model, as for fricreg-sim hb.",
     nma_help_table};

@@ -5,7 +5,8 @@
  * subcommand (even: hb, odd: nma); the rest is argv, one argument per line. Contract: the
  * status is 0 or CLI_EXIT_USAGE (2), never a crash, undefined behaviour (UBSan) or leak
  * (ASan); on success the options are complete and consistent: --mass and --stiffness, one
- * element file set (--jenkins with exactly one parameter file, no 2-D rows), not both --damping
+ * element file set (--jenkins with exactly one parameter file, no 2-D rows) or --elements sets
+ * (each of a known type) without the element options, not both --damping
  * and --rayleigh (two numbers >= 0), 1 <= H <= FRICREG_HB_MAX_HARMONICS, Newton's tolerance
  * > 0 finite with 1 to 1000 iterations, --max-seconds finite >= 0 where given; hb: --excitation,
  * the continued parameter's own options only (omega: both ends > 0, finite and distinct;
@@ -26,10 +27,18 @@ static void check_model(const struct cli_hb_model_options *m, int harmonics, dou
                      (isfinite(m->a0) && isfinite(m->a1) && m->a0 >= 0.0 && m->a1 >= 0.0),
                  "rayleigh %g %g", m->a0, m->a1);
     const struct cli_element_files *e = &m->elements;
-    FUZZ_REQUIRE(e->rows != NULL && e->rows_2d == NULL, "element rows");
     int files = (e->jenkins != NULL) + (e->iwan != NULL) + (e->segalman != NULL) +
                 (e->normal != NULL || e->normal_params != NULL);
-    FUZZ_REQUIRE(files == 1, "%d element parameter files", files);
+    if (m->element_sets.n > 0) { /* --elements: sets of known types, no element option beside */
+        FUZZ_REQUIRE(e->rows == NULL && e->rows_2d == NULL && files == 0 &&
+                         e->iwan_normal == NULL && !e->sliders_given && !e->resolution_given,
+                     "--elements beside the element options");
+        for (size_t k = 0; k < m->element_sets.n; k++)
+            FUZZ_REQUIRE(m->element_sets.set[k].type != NULL, "set %zu without a type", k);
+    } else {
+        FUZZ_REQUIRE(e->rows != NULL && e->rows_2d == NULL, "element rows");
+        FUZZ_REQUIRE(files == 1, "%d element parameter files", files);
+    }
     FUZZ_REQUIRE(harmonics >= 1 && harmonics <= FRICREG_HB_MAX_HARMONICS, "H %d", harmonics);
     FUZZ_REQUIRE(isfinite(newton_tol) && newton_tol > 0.0 && newton_max >= 1 && newton_max <= 1000,
                  "newton %g %d", newton_tol, newton_max);
