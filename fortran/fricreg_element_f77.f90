@@ -9,7 +9,7 @@
 ! FRICREG_ELEMENT_JENKINS, ... as C's enum fricreg_element_code), and its number of sliders NS
 ! (1 but for the Iwan types):
 !   1 jenkins   2 jenkins_2d   3 contact_3d   4 iwan   5 iwan_normal   6 jenkins_3d
-!   7 jenkins_normal   8 iwan_2d   9 iwan_3d
+!   7 jenkins_normal   8 iwan_2d   9 iwan_3d   10 spring
 ! (ITYPE - 1 is fricreg_element_at's index). A code out of range or an NS the type does not
 ! take is FRICREG_EINVAL.
 !

@@ -476,7 +476,7 @@ subroutine frstcg(h, solver, stat)
 end subroutine frstcg
 
 !> FRSTAE(H, ITYPE, NS, ME, NDOF, J, PARAMS, STAT): ME elements of the type of code ITYPE with
-!> NS sliders (FRELEV's codes: 1 jenkins ... 9 iwan_3d; NS 1 but for the Iwan types) beside
+!> NS sliders (FRELEV's codes: 1 jenkins ... 10 spring; NS 1 but for the Iwan types) beside
 !> those the structure holds, of any types (C's fricreg_structure_add_elements): element I's
 !> IDIM components (FRELSZ; tangential, then the normal one) on rows (I - 1) IDIM + 1 ..
 !> I IDIM of J(ME IDIM, NDOF), its parameters PARAMS(1:NPAR, I) in the type's layout. Every

@@ -32,8 +32,12 @@
  *   iwan_2d          2   k[ns], phi[ns] (2 ns)                      w[2 ns], slider s at 2 s
  *   iwan_3d          3   k[ns], phi[ns] (2 ns)                      w[3 ns], slider s at 3 s
  *   iwan_normal      2   k[ns], mu[ns], kn, n0, gap (2 ns + 3)      w[ns]
+ *   spring           1   k (1)                                      none (0)
  *
- * Every one is ns Jenkins sliders in parallel (ns = 1 but for the Iwan types; their ns is
+ * spring is a linear spring, f = k u, df/du = k, df/dk = u (k > 0, finite): a joint's linear
+ * stiffness beside its friction elements, and the table's simplest law (a new law is one file
+ * and one line of the library's table: src/joint/element_spring.c). Every other one is ns
+ * Jenkins sliders in parallel (ns = 1 but for the Iwan types; their ns is
  * fricreg_element_sliders'), slider s a spring k_s in series with a Coulomb slider of bound
  * b_s, returned from its old position w_s (Simo & Hughes, Computational Inelasticity, 1998,
  * Ch. 1 and 3; in 1-D exact for a path that does not reverse within the increment):
@@ -101,7 +105,8 @@ enum fricreg_element_code {
     FRICREG_ELEMENT_JENKINS_3D = 6,     /**< jenkins_3d */
     FRICREG_ELEMENT_JENKINS_NORMAL = 7, /**< jenkins_normal */
     FRICREG_ELEMENT_IWAN_2D = 8,        /**< iwan_2d */
-    FRICREG_ELEMENT_IWAN_3D = 9         /**< iwan_3d (the ball of jenkins_3d per slider) */
+    FRICREG_ELEMENT_IWAN_3D = 9,        /**< iwan_3d (the ball of jenkins_3d per slider) */
+    FRICREG_ELEMENT_SPRING = 10         /**< spring (a linear spring, no state) */
 };
 
 /** The type called name (the table at the top of this header; the Iwan types with ns = 1).

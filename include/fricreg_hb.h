@@ -46,8 +46,9 @@
  * Elements with a normal load and lift-off (fricreg_hb_set_normal_elements) have two rows of J
  * each, tangential and normal, and the same equations with F_h = (f_h, N_h) on both; 3-D
  * contact elements (fricreg_hb_set_jenkins_2d_normal) three, with F_h = (fx_h, fy_h, N_h).
- * One model may hold these kinds together (fricreg_hb_add_elements, since 1.8): each element
- * has its own rows, in the order added.
+ * One model may hold these kinds together, and elements of every other type of
+ * fricreg_element.h, each marched by its own eval (fricreg_hb_add_elements, since 1.8): each
+ * element has its own rows, in the order added.
  *
  * Cost per frequency: H + 1 complex LU factors of ndof x ndof and (H + 1)(m + 1) solves, then
  * per Newton iteration m AFTs (O(H³) each) and a real LU of order m (2H + 1). A dense model
@@ -439,18 +440,28 @@ FRICREG_API int fricreg_hb_set_jenkins_2d_normal(fricreg_hb *hb, size_t m, size_
 
 /** Add me friction elements of one type (fricreg_element.h: fricreg_element_lookup,
  *  fricreg_element_sliders) beside those the driver holds, of any types: one model may hold
- *  Jenkins, Iwan, lift-off and 3-D contact elements together, each evaluated by its own kind's
- *  AFT (the exact one of fricreg_hb_set_iwan, _set_jenkins_normal, _set_iwan_normal, or the
- *  3-D contact element's sampled one with its extrapolation, fricreg_hb_set_jenkins_2d_normal).
+ *  elements of every type of fricreg_element.h together, each evaluated by its own kind's AFT.
  *  The driver's model is whole, and can be solved, once it holds fricreg_hb_create's m
  *  elements; the solves refuse it before (FRICREG_EINVAL).
  *
- *  HB takes the types jenkins (1 row: kt, mun), iwan (1 row: k[ns], phi[ns], any ns up to
- *  FRICREG_HB_MAX_SLIDERS), jenkins_normal (2 rows, tangential then normal: kt, mu, kn, n0, gap),
- *  iwan_normal (2 rows: k[ns], mu[ns], kn, n0, gap) and contact_3d (3 rows, x, y, then normal:
- *  kt, mu, kn, n0, gap); any other FRICREG_EINVAL with a message. HB's normal law is
- *  N = max(0, n0 + kn g): gap must be 0 (the preload in n0; FRICREG_EINVAL otherwise, a gap
- *  not being folded into n0 − kn gap, which would round).
+ *  The AFTs. jenkins (1 row: kt, mun) and iwan (1 row: k[ns], phi[ns], any ns up to
+ *  FRICREG_HB_MAX_SLIDERS) run the exact AFT of fricreg_hb_set_iwan; jenkins_normal (2 rows,
+ *  tangential then normal: kt, mu, kn, n0, gap) and iwan_normal (2 rows: k[ns], mu[ns], kn, n0,
+ *  gap) the exact one of fricreg_hb_set_jenkins_normal and _set_iwan_normal; contact_3d (3
+ *  rows, x, y, then normal: kt, mu, kn, n0, gap) the sampled one of
+ *  fricreg_hb_set_jenkins_2d_normal. Their normal law is N = max(0, n0 + kn g): gap must be 0
+ *  (the preload in n0; FRICREG_EINVAL otherwise, a gap not being folded into n0 − kn gap,
+ *  which would round). Every other type (jenkins_2d, jenkins_3d, iwan_2d, iwan_3d, spring, and
+ *  any law added to the table) runs the march of its fricreg_element_eval: its dim components
+ *  at N = 64 (2H + 1) samples of the period, rounded up to a power of two, marched from the
+ *  law's initial state until the state repeats (a slow contraction found by Newton's method
+ *  on the periodic state), the coefficients by FFT; a law with state extrapolated by
+ *  Richardson over N and N/2 samples (its samples lag by a term in 1/N: 4e-5 of the scale for
+ *  jenkins_2d moved along one axis against the exact 1-D Jenkins at H = 3) and its Jacobian by
+ *  central differences through the implicit function theorem on the periodic state, a law
+ *  without state's Jacobian from its tangent. A marched step costs about 2 (dim (2H + 1) +
+ *  nstate) periods of eval a Newton iteration: from a solution nearby a solve takes a few
+ *  hundredths of a second, but the default start (no q0) may take seconds (test hb_march).
  *
  *  Element i sees the dim = fricreg_element_dim(type) rows i dim .. i dim + dim − 1 of
  *  J[me dim * ndof] (row-major, dimensionless for displacement dofs; in the type's order: the
@@ -473,8 +484,8 @@ FRICREG_API int fricreg_hb_set_jenkins_2d_normal(fricreg_hb *hb, size_t m, size_
  *
  *  Returns FRICREG_OK; FRICREG_ENULL (hb, type, or J or params with me > 0); FRICREG_ESIZE if
  *  ndof is not the driver's or the elements would number more than fricreg_hb_create's m;
- *  FRICREG_EINVAL if the type is not one of HB's, an element's parameters are out of range (the
- *  message names the element and says why, as fricreg_element_explain), a gap is not 0, a row
+ *  FRICREG_EINVAL if an element's parameters are out of range (the message names the element
+ *  and says why, as fricreg_element_explain), a gap is not 0 on an exact AFT's type, a row
  *  of J is zero, or the call comes from the monitor; FRICREG_ENONFINITE (an entry of J or
  *  params); FRICREG_ENOMEM. On failure the elements held are unchanged. */
 FRICREG_API int fricreg_hb_add_elements(fricreg_hb *hb, const fricreg_element_type *type, size_t me,

@@ -1146,13 +1146,14 @@ if ! grep -q '"ndof": 2, "elements": 2, .*"element_kind": "mixed", "element_sets
     echo "FAIL: hb --elements jenkins and iwan against each alone: peaks $mixed | $alone; rows $rows; $(head -c 400 "$d/mix.json") $(cat "$d/err")"; fails=$((fails + 1))
 fi
 # (d) Its usage errors: beside the old options; a type the kernel does not know; a type harmonic
-# balance does not take (the library's reason, naming the set's file; jenkins_2d, 2-D without a
-# normal law); the exact monodromy on a mix (the library's reason, naming --stability), as on
+# balance does not take (the library's reason, naming the set's file: a gap on jenkins_normal,
+# whose normal law HB's exact AFT takes as n0 + kn g); the exact monodromy on a mix (the library's reason, naming --stability), as on
 # the 3-D contact element.
 mtx hbJ2d.mtx general "2 2 2" "1 1 1" "2 2 1"
 expect_usage_error "^fricreg-sim: --elements: give --elements or the element options" $hb2 --omega-start 0.5 $mix --jenkins $d/hbJ1of2.mtx --jenkins-params $d/P_slip.txt
 expect_usage_error "^fricreg-sim: --elements: unknown element type 'jenkin' (jenkins, " $hb2 --omega-start 0.5 --elements jenkin:$d/hbJ1of2.mtx:$d/P_slip.txt
-expect_usage_error "^fricreg-sim: --elements $d/hbJ2d.mtx: add_elements: .*not jenkins_2d" $hb2 --omega-start 0.5 --elements jenkins_2d:$d/hbJ2d.mtx:$d/P_slip.txt
+printf '1 0.3 2 0 0.1\n' > "$d/P_gap.txt"
+expect_usage_error "^fricreg-sim: --elements $d/hbJ2d.mtx: add_elements: element 0 (jenkins_normal): gap = 0.1" $hb2 --omega-start 0.5 --elements jenkins_normal:$d/hbJ2d.mtx:$d/P_gap.txt
 expect_usage_error "^fricreg-sim: --elements $d/E_iwan3.txt: line 1: 6 numbers: jenkins takes 2 parameters" $hb2 --omega-start 0.5 --elements jenkins:$d/hbJ1of2.mtx:$d/E_iwan3.txt
 expect_usage_error "^fricreg-sim: --stability: .*monodromy needs .* all of one kind" $hb2 --omega-start 0.5 $mix --stability monodromy
 expect_usage_error "^fricreg-sim: --stability: .*monodromy needs " $hb3 --jenkins-2d $d/J2.mtx --normal-params $d/Q3.txt --stability monodromy
@@ -1282,7 +1283,8 @@ expect_output '"ndof": 2, "elements": 2, "element_kind": "mixed", "element_sets"
 expect_usage_error "^fricreg-sim: --elements: give --elements or the element options" $nm2 --jenkins-params $d/P.txt
 expect_usage_error "^fricreg-sim: --elements $d/nmJ1of2.mtx: 1 rows: jenkins_normal takes 2 per element" nma --mass $d/nmM22.mtx --stiffness $d/nmK22.mtx --elements jenkins_normal:$d/nmJ1of2.mtx:$d/P.txt --amplitude-start 0.5 --amplitude-end 50
 mtx nmJ2d.mtx general "2 2 2" "1 1 1" "2 2 1"
-expect_usage_error "^fricreg-sim: --elements $d/nmJ2d.mtx: add_elements: .*not jenkins_2d" nma --mass $d/nmM22.mtx --stiffness $d/nmK22.mtx --elements jenkins_2d:$d/nmJ2d.mtx:$d/P.txt --amplitude-start 0.5 --amplitude-end 50
+printf '1 0.3 2 0 0.1\n' > "$d/P_gap.txt"
+expect_usage_error "^fricreg-sim: --elements $d/nmJ2d.mtx: add_elements: element 0 (jenkins_normal): gap = 0.1" nma --mass $d/nmM22.mtx --stiffness $d/nmK22.mtx --elements jenkins_normal:$d/nmJ2d.mtx:$d/P_gap.txt --amplitude-start 0.5 --amplitude-end 50
 
 # ---- hold, belt, disk: the reference problems beyond the paper (src/problems/, the code the
 # benchmarks run; docs/laws2d.md). Values against the bench and tests/test_hold.c.

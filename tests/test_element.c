@@ -75,7 +75,7 @@ static const struct {
              {"jenkins_3d", 3, 1, 2, 3}, {"jenkins_normal", 2, 1, 5, 1},
              {"contact_3d", 3, 1, 5, 2}, {"iwan", 1, 3, 6, 3},
              {"iwan_2d", 2, 3, 6, 6},    {"iwan_normal", 2, 3, 9, 3},
-             {"iwan_3d", 3, 3, 6, 9}};
+             {"iwan_3d", 3, 3, 6, 9}}; /* the slider types; spring has its own test */
 #define NTYPES (sizeof TYPES / sizeof TYPES[0])
 
 START_TEST(test_table)
@@ -89,14 +89,14 @@ START_TEST(test_table)
         ck_assert_uint_eq(fricreg_element_nsliders(t), TYPES[i].ns);
     }
     /* the list: every type once, found by its name; the F77 codes of fricreg_element_f77.f90 */
-    static const char *const codes[] = {"jenkins",        "jenkins_2d",  "contact_3d",
-                                        "iwan",           "iwan_normal", "jenkins_3d",
-                                        "jenkins_normal", "iwan_2d",     "iwan_3d"};
+    static const char *const codes[] = {"jenkins",     "jenkins_2d", "contact_3d",     "iwan",
+                                        "iwan_normal", "jenkins_3d", "jenkins_normal", "iwan_2d",
+                                        "iwan_3d",     "spring"};
     static const int code_of[] = {FRICREG_ELEMENT_JENKINS,        FRICREG_ELEMENT_JENKINS_2D,
                                   FRICREG_ELEMENT_CONTACT_3D,     FRICREG_ELEMENT_IWAN,
                                   FRICREG_ELEMENT_IWAN_NORMAL,    FRICREG_ELEMENT_JENKINS_3D,
                                   FRICREG_ELEMENT_JENKINS_NORMAL, FRICREG_ELEMENT_IWAN_2D,
-                                  FRICREG_ELEMENT_IWAN_3D};
+                                  FRICREG_ELEMENT_IWAN_3D,        FRICREG_ELEMENT_SPRING};
     ck_assert_uint_ge(fricreg_element_count(), NTYPES);
     for (size_t i = 0; i < sizeof codes / sizeof codes[0]; i++) {
         ck_assert_str_eq(fricreg_element_name(fricreg_element_at(i)), codes[i]);
@@ -593,6 +593,37 @@ START_TEST(test_jenkins_3d_plane)
 }
 END_TEST
 
+/* spring: f = k u, df/du = k, df/dk = u, no state; k <= 0, NaN and an overflowing k u refused
+ * with nothing written. */
+START_TEST(test_spring)
+{
+    const fricreg_element_type *t = fricreg_element_lookup("spring");
+    ck_assert_int_eq(fricreg_element_dim(t), 1);
+    ck_assert_uint_eq(fricreg_element_nparams(t), 1);
+    ck_assert_uint_eq(fricreg_element_nstate(t), 0);
+    ck_assert_uint_eq(fricreg_element_nsliders(t), 1);
+    double k = 0.7, u = 0.3, f = -1.0, dfdu = -1.0, dfdp = -1.0, none[1] = {42.0};
+    ck_assert_int_eq(fricreg_element_init(t, &k, none), FRICREG_OK);
+    ck_assert_double_eq(none[0], 42.0); /* no state to write */
+    ck_assert_int_eq(fricreg_element_eval(t, &k, none, &u, &f, &dfdu, &dfdp, none), FRICREG_OK);
+    ck_assert_double_eq(f, 0.7 * 0.3);
+    ck_assert_double_eq(dfdu, 0.7);
+    ck_assert_double_eq(dfdp, 0.3);
+    static const double bad_k[3] = {0.0, -1.0, NAN};
+    static const int want[3] = {FRICREG_EINVAL, FRICREG_EINVAL, FRICREG_ENONFINITE};
+    for (int i = 0; i < 3; i++) {
+        f = -1.0;
+        ck_assert_int_eq(fricreg_element_eval(t, &bad_k[i], none, &u, &f, NULL, NULL, none),
+                         want[i]);
+        ck_assert_double_eq(f, -1.0);
+    }
+    double huge = 1e300, big_u = 1e10;
+    ck_assert_int_eq(fricreg_element_eval(t, &huge, none, &big_u, &f, NULL, NULL, none),
+                     FRICREG_ENONFINITE);
+    ck_assert_double_eq(f, -1.0);
+}
+END_TEST
+
 /* iwan_3d on u = (u1, u2, 0) is iwan_2d on (u1, u2), bit for bit (the ball's norm of
  * (d1, d2, 0) is the disk's exactly: hypot(r, 0) = r), with f3 = 0 and each slider's third
  * state component 0; on a tilted plane, f and the sliders' state stay in it. */
@@ -658,6 +689,7 @@ static Suite *element_suite(void)
     tcase_add_test(tc, test_contact_3d);
     tcase_add_test(tc, test_jenkins_3d_plane);
     tcase_add_test(tc, test_iwan_3d);
+    tcase_add_test(tc, test_spring);
     suite_add_tcase(s, tc);
     return s;
 }

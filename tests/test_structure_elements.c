@@ -14,7 +14,8 @@
  *   - types no per-kind setter has: "iwan_2d" of one slider is "jenkins_2d" (the same return
  *     to rounding); a "contact_3d" with a gap g0 is the one with the preload n0 = -kn g0 (to
  *     rounding); "jenkins_3d"'s energy balance closes (average-acceleration Newmark books the
- *     sliders' dissipation exactly, as fricreg_structure_set_jenkins's);
+ *     sliders' dissipation exactly, as fricreg_structure_set_jenkins's); "spring" is a
+ *     Jenkins element that never slips (f = kt u from w = 0), to 1e-14, its balance closed;
  *   - bad input: the statuses fricreg_structure.h promises, the element count and the run
  *     unchanged after each failure. */
 #include <check.h>
@@ -338,6 +339,19 @@ START_TEST(types_beyond_setters)
     ck_assert_msg(D > 1e-3 && fabs(residual) <= 1e-12 * fabs(input), "D %g residual %g input %g", D,
                   residual, input);
     fricreg_structure_free(a);
+
+    /* spring (a law of one file and a table line) on x is a Jenkins element that never slips,
+     * f = kt (u - 0); its stored energy closes the balance */
+    const double Jx[3] = {1, 0, 0}, Pspring[1] = {0.8}, Pstuck[2] = {0.8, 1e6};
+    a = block_b_with(fricreg_element_lookup("spring"), Jx, Pspring, 10.0);
+    b = block_b_with(fricreg_element_lookup("jenkins"), Jx, Pstuck, 10.0);
+    assert_close(a, b, 1e-14);
+    ck_assert_int_eq(fricreg_structure_get_value(a, FRICREG_SVALUE_INPUT, &input), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_value(a, FRICREG_SVALUE_RESIDUAL, &residual),
+                     FRICREG_OK);
+    ck_assert_msg(fabs(residual) <= 1e-12 * fabs(input), "residual %g input %g", residual, input);
+    fricreg_structure_free(a);
+    fricreg_structure_free(b);
 }
 END_TEST
 

@@ -16,6 +16,9 @@
  * friction coefficients) phi[i pstride + s]; with a normal law n0[i nstride], kn[i nstride]. */
 struct fr_hb_block {
     int kind; /* enum fr_hb_kind */
+    /* FR_HB_MARCH: the elements' type (ra its dim rows, no sliders: ns 0), element i's
+     * parameters at k + i pstride */
+    const fricreg_element_type *type;
     size_t me, ns, ra;
     const double *Ja, *Jb;
     const double *k, *phi;

@@ -1,39 +1,31 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* element_types.c — the driver's elements by fricreg_element.h's types (fricreg_hb.h):
  * fricreg_hb_add_elements, a block of one type beside the elements held, whatever their kinds;
- * fricreg_hb_clear_elements; fricreg_hb_element_count. The types' parameters are read into
- * the layout the per-kind setters fill (element_store.c), so that one model may mix Jenkins,
- * Iwan, lift-off and 3-D contact elements and a model of one type answers as its setter. */
-#include <string.h>
-
+ * fricreg_hb_clear_elements; fricreg_hb_element_count. A type whose kind names one of HB's own
+ * AFTs (Jenkins, Iwan, lift-off, 3-D contact) has its parameters read into the layout the
+ * per-kind setters fill (element_store.c), so that a model of one type answers as its setter;
+ * any other type keeps its parameters and is marched by its eval. */
 #include "element_store.h"
 #include "elements.h"
 #include "joint/element_kind.h"
 #include "model.h"
 
-/* The block of type's elements over J and params (the layouts of fricreg_element.h), or
- * FRICREG_EINVAL for a type HB does not take. */
-static int block_of(fricreg_hb *hb, const char *fn, const fricreg_element_type *type,
-                    struct fr_hb_block *blk)
+/* The block of type's elements over J and params (the layouts of fricreg_element.h): by the
+ * AFT its kind names, HB's own exact ones or the march of its eval (joint/aft_march.h). */
+static void block_of(const fricreg_element_type *type, struct fr_hb_block *blk)
 {
-    const char *name = type->kind->name;
-    size_t ns = type->ns, np = fricreg_element_nparams(type);
-    *blk = (struct fr_hb_block){.ns = ns, .ra = (size_t)type->kind->dim, .pstride = np};
-    if (strcmp(name, "jenkins") == 0 || strcmp(name, "iwan") == 0) {
-        blk->kind = FR_HB_SLIDERS;
-        return FRICREG_OK; /* k[ns], then phi[ns] */
-    }
-    if (strcmp(name, "jenkins_normal") == 0 || strcmp(name, "iwan_normal") == 0)
-        blk->kind = FR_HB_LIFTOFF;
-    else if (strcmp(name, "contact_3d") == 0)
-        blk->kind = FR_HB_CONTACT_3D;
-    else
-        return fr_fail(hb, FRICREG_EINVAL,
-                       "%s: HB takes jenkins, iwan, jenkins_normal, iwan_normal and contact_3d "
-                       "elements, not %s",
-                       fn, name);
-    blk->nstride = np; /* k[ns], mu[ns], kn, n0, gap */
-    return FRICREG_OK;
+    size_t np = fricreg_element_nparams(type);
+    static const int kind_of[] = {[FR_ELEMENT_AFT_MARCH] = FR_HB_MARCH,
+                                  [FR_ELEMENT_AFT_SLIDERS] = FR_HB_SLIDERS,
+                                  [FR_ELEMENT_AFT_LIFTOFF] = FR_HB_LIFTOFF,
+                                  [FR_ELEMENT_AFT_CONTACT_3D] = FR_HB_CONTACT_3D};
+    int kind = kind_of[type->kind->aft];
+    *blk = (struct fr_hb_block){.kind = kind,
+                                .type = type,
+                                .ns = kind == FR_HB_MARCH ? 0 : type->ns,
+                                .ra = (size_t)type->kind->dim,
+                                .pstride = np,
+                                .nstride = kind == FR_HB_SLIDERS ? 0 : np};
 }
 
 /* The block's arrays on J and params. */
@@ -44,14 +36,15 @@ static void point_block(struct fr_hb_block *blk, size_t me, const double *J, con
     blk->Ja = J;
     blk->k = params;
     blk->phi = params + ns;
-    if (blk->kind != FR_HB_SLIDERS) {
+    if (blk->kind == FR_HB_LIFTOFF || blk->kind == FR_HB_CONTACT_3D) {
         blk->kn = params + 2 * ns;
         blk->n0 = params + 2 * ns + 1;
     }
 }
 
-/* Each element's parameters in range (fricreg_element_explain's message), gap 0 (HB's normal
- * law is n0 + kn g: a gap is not taken, not even as n0 − kn gap, which rounds). */
+/* Each element's parameters in range (fricreg_element_explain's message), gap 0 where HB's
+ * own AFT runs a normal law (it is n0 + kn g: a gap is not taken, not even as n0 − kn gap,
+ * which rounds; a marched law takes its gap as it is). */
 static int check_params(fricreg_hb *hb, const char *fn, const fricreg_element_type *type, size_t me,
                         const double *params)
 {
@@ -63,7 +56,7 @@ static int check_params(fricreg_hb *hb, const char *fn, const fricreg_element_ty
         int status = fricreg_element_explain(type, p, NULL, NULL, msg, sizeof msg);
         if (status != FRICREG_OK)
             return fr_fail(hb, status, "%s: element %zu (%s): %s", fn, i, name, msg);
-        if (type->kind->normal && p[np - 1] != 0.0)
+        if (type->kind->normal && type->kind->aft != FR_ELEMENT_AFT_MARCH && p[np - 1] != 0.0)
             return fr_fail(hb, FRICREG_EINVAL,
                            "%s: element %zu (%s): gap = %g: HB's normal law is n0 + kn g without "
                            "a gap (give gap = 0, the preload in n0)",
@@ -83,9 +76,9 @@ int fricreg_hb_add_elements(fricreg_hb *hb, const fricreg_element_type *type, si
     if (type == NULL)
         return fr_fail(hb, FRICREG_ENULL, "%s: type is NULL", fn);
     struct fr_hb_block blk;
-    int status = block_of(hb, fn, type, &blk);
-    if (status != FRICREG_OK || me == 0)
-        return status;
+    block_of(type, &blk);
+    if (me == 0)
+        return FRICREG_OK;
     if (J == NULL || params == NULL)
         return fr_fail(hb, FRICREG_ENULL, "%s: %s is NULL", fn, J == NULL ? "J" : "params");
     if (fr_hb_check_ndof(hb, fn, ndof) != FRICREG_OK)
@@ -97,6 +90,7 @@ int fricreg_hb_add_elements(fricreg_hb *hb, const fricreg_element_type *type, si
     if (blk.ns > FRICREG_HB_MAX_SLIDERS)
         return fr_fail(hb, FRICREG_EINVAL, "%s: %zu sliders an element, at most %d", fn, blk.ns,
                        FRICREG_HB_MAX_SLIDERS);
+    int status;
     if ((status = fr_hb_check_entries(hb, fn, me * blk.ra, ndof, J, "J")) != FRICREG_OK ||
         (status = check_params(hb, fn, type, me, params)) != FRICREG_OK)
         return status;

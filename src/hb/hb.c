@@ -10,6 +10,7 @@
 #include "base/sparse_factor.h"
 #include "element_store.h"
 #include "hb_internal.h"
+#include "joint/aft_march.h"
 #include "rows.h"
 #include "stability_method.h"
 
@@ -48,14 +49,17 @@ int fricreg_hb_create(size_t ndof, size_t m, int harmonics, fricreg_hb **out)
     hb->D = dense ? malloc(2 * n * n * sizeof(double)) : NULL; /* n >= 1 */
     hb->piv = dense ? malloc(n * sizeof *hb->piv) : NULL;
     /* the elements' tables and normal laws; the buffers for m elements of one row */
-    hb->erow = calloc(3 * (m + 1), sizeof *hb->erow);
+    hb->erow = calloc(4 * (m + 1), sizeof *hb->erow);
     hb->kind = calloc(m, sizeof *hb->kind);
+    hb->etype = calloc(m, sizeof *hb->etype);
     hb->nl = calloc(4 * m, sizeof *hb->nl);
     struct fr_hb_rows b;
-    int rows = hb->erow && hb->kind && hb->nl ? fr_hb_rows_alloc(hb, m, m, &b) : FRICREG_ENOMEM;
+    int rows = hb->erow && hb->kind && hb->etype && hb->nl ? fr_hb_rows_alloc(hb, m, m, &b)
+                                                           : FRICREG_ENOMEM;
     if (rows == FRICREG_OK) {
         hb->ejq = hb->erow + m + 1;
         hb->eso = hb->ejq + m + 1;
+        hb->epo = hb->eso + m + 1;
         fr_hb_rows_install(hb, m, m, &b);
     }
     int status = fricreg_aft_create(harmonics, 0, &hb->aft);
@@ -101,6 +105,9 @@ void fricreg_hb_free(fricreg_hb *hb)
     free(hb->nl);
     free(hb->erow);
     free(hb->kind);
+    free(hb->etype);
+    free(hb->ep);
+    fr_aft_march_free(hb->march);
     fr_hb_nma_free(hb->nma);
     fr_hb_sparse_free(hb);
     fr_cholmod_finish(&hb->cc);

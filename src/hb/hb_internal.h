@@ -31,26 +31,35 @@
  * multipliers' rounding, far below the damping of any model worth a stability verdict. */
 #define FR_HB_STABLE_TOL 1e-6
 
-struct fr_hb_lu;   /* sparse.c: one harmonic's LU factor */
-struct fr_hb_mono; /* monodromy.c: the exact monodromy's workspace */
+struct fr_hb_lu;     /* sparse.c: one harmonic's LU factor */
+struct fr_hb_mono;   /* monodromy.c: the exact monodromy's workspace */
+struct fr_aft_march; /* joint/aft_march.h: the march's workspace */
 
 /* The kinds of element the driver holds, each its number of rows of J and its AFT
  * (residual.c). */
 enum fr_hb_kind {
-    FR_HB_SLIDERS = 1,   /* Jenkins or Iwan: one row, fricreg_aft_iwan_exact */
-    FR_HB_LIFTOFF = 2,   /* Jenkins or Iwan with lift-off: tangential row, then normal row */
-    FR_HB_CONTACT_3D = 3 /* x, y, normal: the sampled AFT with Richardson's extrapolation */
+    FR_HB_SLIDERS = 1,    /* Jenkins or Iwan: one row, fricreg_aft_iwan_exact */
+    FR_HB_LIFTOFF = 2,    /* Jenkins or Iwan with lift-off: tangential row, then normal row */
+    FR_HB_CONTACT_3D = 3, /* x, y, normal: the sampled AFT with Richardson's extrapolation */
+    FR_HB_MARCH = 4       /* any other type of fricreg_element.h: its dim rows, the march of its
+                             eval (joint/aft_march.h), with Richardson's for a law with state */
 };
 
 struct fricreg_hb {
-    size_t n, m;       /* dofs, rows of J (the condensation's coordinates) */
-    size_t me, rpe;    /* elements (fricreg_hb_create's m), rows per element when all the
-                        elements are of one kind (1, 2 or 3, enum fr_hb_kind), 0 for a mix */
-    size_t count;      /* elements held (element_store.c): the model is whole at count = me */
-    int *kind;         /* [me] each element's enum fr_hb_kind */
-    size_t *erow;      /* [me + 1] element e's first row of J (erow[count] = m) */
-    size_t *ejq;       /* [me + 1] its Jacobian block's offset in jq, in units of nc² */
-    size_t *eso;       /* [me + 1] its first slider (eso[count] = nsl) */
+    size_t n, m;    /* dofs, rows of J (the condensation's coordinates) */
+    size_t me, rpe; /* elements (fricreg_hb_create's m), their kind when all are of one
+                        (enum fr_hb_kind: 1 and 2 are also the rows per element), 0 for a mix */
+    size_t count;   /* elements held (element_store.c): the model is whole at count = me */
+    int *kind;      /* [me] each element's enum fr_hb_kind */
+    size_t *erow;   /* [me + 1] element e's first row of J (erow[count] = m) */
+    size_t *ejq;    /* [me + 1] its Jacobian block's offset in jq, in units of nc² */
+    size_t *eso;    /* [me + 1] its first slider (eso[count] = nsl) */
+    size_t *epo;    /* [me + 1] a marched element's parameters at ep + epo[e] (others: none) */
+    const fricreg_element_type **etype; /* [me] a marched element's type, NULL for the others */
+    double *ep;                         /* [epo[count]] the marched elements' parameters */
+    struct fr_aft_march *march;         /* their AFT's workspace (N of fr_hb_contact_samples),
+                                           NULL: none held yet */
+    size_t march_nstate;                /* the most states it has room for */
     size_t rows_cap;   /* rows the buffers below hold (grown by elements of more rows, kept) */
     size_t sq_cap;     /* units of nc² the Jacobian blocks jq hold */
     int H;             /* harmonics */
@@ -215,7 +224,7 @@ static inline size_t fr_hb_sliders(const fricreg_hb *hb, size_t e, const double 
 /* Element e's rows of J and its Jacobian block in jq, [(rows nc)²]. */
 static inline size_t fr_hb_rows_of(const fricreg_hb *hb, size_t e)
 {
-    return (size_t)hb->kind[e];
+    return hb->erow[e + 1] - hb->erow[e];
 }
 
 static inline double *fr_hb_block_of(const fricreg_hb *hb, size_t e)

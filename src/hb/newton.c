@@ -9,6 +9,7 @@
 #include "base/line_search.h"
 #include "base/newton_loop.h"
 #include "hb_internal.h"
+#include "joint/element_kind.h"
 #include "stability_method.h"
 
 static double norm2(const double *v, size_t n)
@@ -25,6 +26,20 @@ static double norm_inf(const double *v, size_t n)
     for (size_t j = 0; j < n; j++)
         s = fmax(s, fabs(v[j]));
     return s;
+}
+
+/* A marched element's block of the stuck guess: its law's elastic stiffness on each
+ * component's harmonics, and on its normal component's mean too (a closed normal spring),
+ * as the other kinds' below. */
+static void stuck_march(const fricreg_hb *hb, size_t e, double *J)
+{
+    const fricreg_element_type *type = hb->etype[e];
+    size_t nc = hb->nc, rows = fr_hb_rows_of(hb, e), b = rows * nc;
+    double k[3];
+    type->kind->elastic(type, hb->ep + hb->epo[e], k);
+    for (size_t r = 0; r < rows; r++)
+        for (size_t c = type->kind->normal && r == rows - 1 ? 0 : 1; c < nc; c++)
+            J[(r * nc + c) * b + r * nc + c] = k[r];
 }
 
 int fr_hb_guess(fricreg_hb *hb, const char *fn, int stuck)
@@ -45,6 +60,10 @@ int fr_hb_guess(fricreg_hb *hb, const char *fn, int stuck)
     for (size_t e = 0; e < me; e++) {
         size_t rows = fr_hb_rows_of(hb, e), b = rows * nc;
         double *J = fr_hb_block_of(hb, e);
+        if (hb->kind[e] == FR_HB_MARCH) {
+            stuck_march(hb, e, J);
+            continue;
+        }
         if (hb->kind[e] == FR_HB_SLIDERS) {
             const double *k, *phi;
             size_t ns = fr_hb_sliders(hb, e, &k, &phi);

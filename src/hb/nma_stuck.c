@@ -6,6 +6,7 @@
  * (nma_sparse_mode.c) alike. */
 #include <math.h>
 
+#include "joint/element_kind.h"
 #include "nma_internal.h"
 
 /* The element whose rows hold row r of J. */
@@ -22,7 +23,14 @@ void fr_hb_nma_row(const fricreg_hb *hb, size_t r, double *k, double *limit)
     size_t e = element_of_row(hb, r), rows = fr_hb_rows_of(hb, e);
     *k = 0.0;
     *limit = INFINITY;
-    double scale = 1.0; /* a slider's slip force per unit of phi */
+    double scale = 1.0;               /* a slider's slip force per unit of phi */
+    if (hb->kind[e] == FR_HB_MARCH) { /* its elastic stiffness, no slip limit known */
+        const fricreg_element_type *type = hb->etype[e];
+        double kr[3];
+        type->kind->elastic(type, hb->ep + hb->epo[e], kr);
+        *k = kr[r - hb->erow[e]];
+        return;
+    }
     const double *ks, *phi;
     size_t ns = fr_hb_sliders(hb, e, &ks, &phi);
     if (hb->kind[e] != FR_HB_SLIDERS) { /* kt, mu, n0, kn: closed at rest when N0 > 0 */

@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "hb_internal.h"
+#include "joint/aft_march.h"
 
 /* out[nq] = G F − load ql in the real form above, from the forces f[nq] and the complex
  * G[(H+1) m m], ql[(H+1) m] (the condensation or its Ω derivative; NULL: no load). */
@@ -72,6 +73,16 @@ static int iwan_normal(fricreg_hb *hb, size_t e, const double *u, double *f, dou
     return FRICREG_OK;
 }
 
+/* Richardson's extrapolation 2 F(N) - F(N/2) of forces f[w] and, with jac, their Jacobian
+ * [w x w], in place, from the half-sampled fh, jh. */
+static void richardson(size_t w, const double *fh, const double *jh, double *f, double *jac)
+{
+    for (size_t i = 0; i < w; i++)
+        f[i] = 2.0 * f[i] - fh[i];
+    for (size_t i = 0; jac != NULL && i < w * w; i++)
+        jac[i] = 2.0 * jac[i] - jh[i];
+}
+
 /* 3-D contact element e at its coefficients u[3 nc] (ux, uy, g): forces f[3 nc] and, with jac,
  * their Jacobian [3nc x 3nc] by Richardson's extrapolation of the sampled AFT over N and N/2
  * samples, 2 F(N) - F(N/2): the return mapping at samples lags the continuous element by a
@@ -90,19 +101,38 @@ static int contact_3d(fricreg_hb *hb, size_t e, const double *u, double *f, doub
                                                        fh + 2 * nc, jac ? jh : NULL);
     if (status != FRICREG_OK)
         return status;
-    for (size_t i = 0; i < w; i++)
-        f[i] = 2.0 * f[i] - fh[i];
-    for (size_t i = 0; jac != NULL && i < w * w; i++)
-        jac[i] = 2.0 * jac[i] - jh[i];
+    richardson(w, fh, jh, f, jac);
+    return FRICREG_OK;
+}
+
+/* Marched element e (joint/aft_march.h) at its coefficients u[dim nc]: forces f and, with jac,
+ * their Jacobian; a law with state by Richardson's extrapolation over N and N/2 samples, as
+ * contact_3d (its samples lag the continuous law by a term in 1/N), its differences' step
+ * 2^-20 of the displacements' scale. */
+static int march(fricreg_hb *hb, size_t e, const double *u, double scale, double *f, double *jac)
+{
+    const fricreg_element_type *type = hb->etype[e];
+    const double *p = hb->ep + hb->epo[e];
+    size_t w = (size_t)fricreg_element_dim(type) * hb->nc;
+    double h = 0x1p-20 * scale, *fh = hb->half, *jh = hb->half + w;
+    int status = fr_aft_march(hb->aft, hb->march, type, p, u, h, f, jac);
+    if (status != FRICREG_OK || fricreg_element_nstate(type) == 0)
+        return status;
+    if ((status = fr_aft_march(hb->aft_half, hb->march, type, p, u, h, fh, jac ? jh : NULL)) !=
+        FRICREG_OK)
+        return status;
+    richardson(w, fh, jh, f, jac);
     return FRICREG_OK;
 }
 
 /* Element e's forces into fq and, with jac, its Jacobian block, by its kind's AFT. */
-static int element(fricreg_hb *hb, size_t e, const double *q, int jac)
+static int element(fricreg_hb *hb, size_t e, const double *q, double scale, int jac)
 {
     size_t nc = hb->nc, me = hb->me, at = hb->erow[e] * nc;
     const double *u = q + at, *p = hb->nl;
     double *f = hb->fq + at, *J = jac ? fr_hb_block_of(hb, e) : NULL;
+    if (hb->kind[e] == FR_HB_MARCH)
+        return march(hb, e, u, scale, f, J);
     if (hb->kind[e] == FR_HB_CONTACT_3D)
         return contact_3d(hb, e, u, f, J);
     const double *k, *phi;
@@ -117,8 +147,14 @@ static int element(fricreg_hb *hb, size_t e, const double *q, int jac)
 
 int fr_hb_residual(fricreg_hb *hb, const char *fn, const double *q, double *R, int jac)
 {
+    double scale = jac && hb->march != NULL ? fr_hb_scale(hb, q) : 0.0;
     for (size_t e = 0; e < hb->me; e++) {
-        int status = element(hb, e, q, jac);
+        int status = element(hb, e, q, scale, jac);
+        if (status != FRICREG_OK && hb->kind[e] == FR_HB_MARCH)
+            return fr_fail(hb, status,
+                           "%s: element %zu (%s) refused its displacement at a sample of the "
+                           "period (%s)",
+                           fn, e, fricreg_element_name(hb->etype[e]), fricreg_strerror(status));
         if (status != FRICREG_OK)
             return fr_fail(hb, status, "%s: the AFT of element %zu failed: %s", fn, e,
                            fricreg_aft_errmsg(hb->aft));

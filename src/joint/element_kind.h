@@ -9,6 +9,16 @@
 
 #include "fricreg_element.h"
 
+/* The harmonic-balance AFT a law runs on (src/hb/): its own exact one for 1-D sliders
+ * (fricreg_aft_iwan_exact), for sliders with lift-off (fricreg_aft_jenkins_normal_exact), the
+ * 3-D contact's sampled one, or, for any other law, the march of its eval (aft_march.h). */
+enum fr_element_aft {
+    FR_ELEMENT_AFT_MARCH = 0,
+    FR_ELEMENT_AFT_SLIDERS,
+    FR_ELEMENT_AFT_LIFTOFF,
+    FR_ELEMENT_AFT_CONTACT_3D
+};
+
 /* One law. check and eval see only arrays of the sizes nparams and nstate give for the type's
  * ns; check has vetted eval's inputs, so eval cannot fail. */
 struct fr_element_kind {
@@ -16,6 +26,7 @@ struct fr_element_kind {
     int dim;    /* components of u and f */
     int normal; /* 1: u's last component is the normal displacement g, f's the force N */
     int family; /* 1: a family of 1..FRICREG_ELEMENT_MAX_SLIDERS sliders in parallel */
+    int aft;    /* enum fr_element_aft */
     size_t (*nparams)(size_t ns);
     size_t (*nstate)(size_t ns);
     /* The status of eval on these inputs (state and u NULL: the parameters alone; u NULL: the

@@ -281,17 +281,18 @@ static double stored(const fricreg_element_type *type, const double *p, const do
     return sum;
 }
 
-/* One kind per line: name, dim, normal, family, sizes. */
-#define FR_SLIDER_KIND(id, dim, normal, family, params, state)                                    \
-    const struct fr_element_kind fr_element_##id = {#id,   dim,  normal,  family,  params, state, \
-                                                    check, eval, elastic, project, stored};
+/* One kind per line: name, dim, normal, family, sizes, harmonic balance's AFT. */
+#define FR_SLIDER_KIND(id, dim, normal, family, params, state, aft)                 \
+    const struct fr_element_kind fr_element_##id = {                                \
+        #id,  dim,     normal,  family, FR_ELEMENT_AFT_##aft, params, state, check, \
+        eval, elastic, project, stored};
 
-FR_SLIDER_KIND(jenkins, 1, 0, 0, params_plain, state_1)
-FR_SLIDER_KIND(jenkins_2d, 2, 0, 0, params_plain, state_2)
-FR_SLIDER_KIND(jenkins_3d, 3, 0, 0, params_plain, state_3)
-FR_SLIDER_KIND(jenkins_normal, 2, 1, 0, params_normal, state_1)
-FR_SLIDER_KIND(contact_3d, 3, 1, 0, params_normal, state_2)
-FR_SLIDER_KIND(iwan, 1, 0, 1, params_plain, state_1)
-FR_SLIDER_KIND(iwan_2d, 2, 0, 1, params_plain, state_2)
-FR_SLIDER_KIND(iwan_3d, 3, 0, 1, params_plain, state_3)
-FR_SLIDER_KIND(iwan_normal, 2, 1, 1, params_normal, state_1)
+FR_SLIDER_KIND(jenkins, 1, 0, 0, params_plain, state_1, SLIDERS)
+FR_SLIDER_KIND(jenkins_2d, 2, 0, 0, params_plain, state_2, MARCH)
+FR_SLIDER_KIND(jenkins_3d, 3, 0, 0, params_plain, state_3, MARCH)
+FR_SLIDER_KIND(jenkins_normal, 2, 1, 0, params_normal, state_1, LIFTOFF)
+FR_SLIDER_KIND(contact_3d, 3, 1, 0, params_normal, state_2, CONTACT_3D)
+FR_SLIDER_KIND(iwan, 1, 0, 1, params_plain, state_1, SLIDERS)
+FR_SLIDER_KIND(iwan_2d, 2, 0, 1, params_plain, state_2, MARCH)
+FR_SLIDER_KIND(iwan_3d, 3, 0, 1, params_plain, state_3, MARCH)
+FR_SLIDER_KIND(iwan_normal, 2, 1, 1, params_normal, state_1, LIFTOFF)

@@ -18,7 +18,8 @@
     FIXED(jenkins_3d)                   \
     FIXED(jenkins_normal)               \
     FAMILY(iwan_2d)                     \
-    FAMILY(iwan_3d)
+    FAMILY(iwan_3d)                     \
+    FIXED(spring)
 
 #define FR_DECLARE(name) extern const struct fr_element_kind fr_element_##name;
 FR_ELEMENT_TABLE(FR_DECLARE, FR_DECLARE)

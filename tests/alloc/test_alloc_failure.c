@@ -2326,16 +2326,18 @@ static const struct script hb_contact_3d = {
 
 /* A mix by type: add_elements of a Jenkins element (the sliders' array), then of a 3-D contact
  * element beside it (the buffers grown to four rows, the sampled AFT, the sliders again, the
- * held ones copied); the view solves the whole model at one frequency (nq = 4 (2H + 1)), or
- * reads the refusal of an incomplete one. */
-static const char *const hb_add_calls[] = {"add_elements(jenkins)", "add_elements(contact_3d)"};
+ * held ones copied), then of a spring (marched: its parameters' array and the march's
+ * workspace); the view solves the whole model at one frequency (nq = 5 (2H + 1)), or reads the
+ * refusal of an incomplete one. */
+static const char *const hb_add_calls[] = {"add_elements(jenkins)", "add_elements(contact_3d)",
+                                           "add_elements(spring)"};
 
 static int hb_add_open(void **obj)
 {
     const double M[4] = {1.3, 0.0, 0.0, 0.9}, K[4] = {4.2, -1.7, -1.7, 2.385};
     const double pc[2] = {0.6, 0.0}, ps[2] = {0.0, 0.125};
     fricreg_hb *hb = SENTINEL;
-    int status = fricreg_hb_create(2, 2, 3, &hb);
+    int status = fricreg_hb_create(2, 3, 3, &hb);
     *obj = status == FRICREG_OK ? hb : NULL;
     if (status == FRICREG_OK && (fricreg_hb_set_mass(hb, 2, M) != FRICREG_OK ||
                                  fricreg_hb_set_stiffness(hb, 2, K) != FRICREG_OK ||
@@ -2350,22 +2352,25 @@ static int hb_add_call(void *obj, int i, struct view *v)
     (void)v;
     const double J[2] = {0.0, 1.0}, jenkins[2] = {1.5, 0.25};
     const double J3[6] = {1.0, 0.0, 0.0, 1.0, 0.4, -0.3}, contact[5] = {1.5, 0.4, 2.0, 0.5, 0.0};
-    return i == 0
-               ? fricreg_hb_add_elements(obj, fricreg_element_lookup("jenkins"), 1, 2, J, jenkins)
-               : fricreg_hb_add_elements(obj, fricreg_element_lookup("contact_3d"), 1, 2, J3,
-                                         contact);
+    const double Js[2] = {1.0, -1.0}, spring[1] = {0.8};
+    if (i == 0)
+        return fricreg_hb_add_elements(obj, fricreg_element_lookup("jenkins"), 1, 2, J, jenkins);
+    if (i == 1)
+        return fricreg_hb_add_elements(obj, fricreg_element_lookup("contact_3d"), 1, 2, J3,
+                                       contact);
+    return fricreg_hb_add_elements(obj, fricreg_element_lookup("spring"), 1, 2, Js, spring);
 }
 
 static void hb_add_observe(void *obj, struct view *v)
 {
-    double q[28] = {0}; /* a failed call leaves it: the view must read the same */
+    double q[35] = {0}; /* a failed call leaves it: the view must read the same */
     see(v, (double)fricreg_hb_element_count(obj));
-    see(v, fricreg_hb_solve(obj, 1.1, 28, NULL, q));
-    see_all(v, q, 28);
+    see(v, fricreg_hb_solve(obj, 1.1, 35, NULL, q));
+    see_all(v, q, 35);
 }
 
 static const struct script hb_add = {
-    "hb add_elements", 2,    hb_add_calls,   0,          0,       hb_add_open,
+    "hb add_elements", 3,    hb_add_calls,   0,          0,       hb_add_open,
     hb_add_call,       NULL, hb_add_observe, hb_errcode, hb_close};
 
 /* Hill's method turned on: set_stability's allocations (the companion matrix, the eigenvalues,

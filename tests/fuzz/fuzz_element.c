@@ -16,7 +16,7 @@ enum { MAX_SLIDERS = 8, MAX_PARAMS = 2 * MAX_SLIDERS + 3, MAX_STATE = 3 * MAX_SL
 
 #define SUBNORMAL_QUANTUM 4.9406564584124654e-324
 
-/* The bound of the tangential force: sum_s b_s, times N with a normal law (f[dim - 1]), plus
+/* The bound of the tangential force of a slider type: sum_s b_s, times N with a normal law (f[dim - 1]), plus
  * its rounding (fricreg_element_eval's docstring): 1e-12 of it, and 4 k_s subnormal quanta a
  * slider (|u - w| below DBL_MIN keeps only absolute precision: a stick judged on it may hold
  * k_s |u - w| a few quanta of k_s above b_s, as fricreg_aft.h's rounding of kt u). */
@@ -24,6 +24,8 @@ static double tangential_bound(const fricreg_element_type *t, const double *p, c
                                int normal)
 {
     size_t ns = fricreg_element_nsliders(t);
+    if (fricreg_element_nstate(t) == 0) /* a law without sliders (spring): no bound */
+        return INFINITY;
     double b = 0.0, k = 0.0;
     for (size_t s = 0; s < ns; s++) {
         b += p[ns + s];
