@@ -1427,7 +1427,7 @@ FRICREG_API int fricreg_structure_set_warning_handler(fricreg_structure *s,
  *  elements' committed and trial sliders, forces and dissipation, the context's warm start and
  *  cached factor (a coupled W), and the error estimate with its companions, each saved the same
  *  way, nested. What is not: the model and the settings (checked by restore against a
- *  fingerprint: sizes, kinds, scheme, law and their parameters one by one, the matrices, the
+ *  fingerprint: sizes, kinds, scheme, law, contact solver and their parameters one by one, the matrices, the
  *  records, the bounds and the set tolerances hashed), the observer and the warning handler,
  *  the bound on adaptive steps (fricreg_structure_set_max_steps: the restored structure's own)
  *  and the last error. GSL's steppers carry nothing between fricreg_structure_run_ode calls
@@ -1455,7 +1455,9 @@ FRICREG_API int fricreg_structure_save(fricreg_structure *s, void *buf, size_t *
 /** Restore a checkpoint of fricreg_structure_save into s, which must be set up as the saved
  *  structure was when it was saved: the same sizes, model matrices, influence, load pattern,
  *  records, bounds, law and eps, scheme and its parameters, Newton's settings, elements,
- *  error estimate (on or off) and run_ode tolerances set (since 1.7, FRICREG_1.7). Its state
+ *  error estimate (on or off, its companions), contact solver (as set:
+ *  fricreg_structure_set_contact_solver, since 1.8) and run_ode tolerances set (since 1.7,
+ *  FRICREG_1.7). Its state
  *  then becomes the saved one (fricreg_structure_save lists it), whatever it was, and a run
  *  from here gives, bit for bit, what the saved structure would have given. With the steps of
  *  fricreg_structure_run that is also the uninterrupted run: a run of dt to T1, saved,

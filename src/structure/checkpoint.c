@@ -121,9 +121,9 @@ static const char *const count_names[] = {"ndof",
                                           "element dimension",
                                           "elements with a normal law"};
 static const char *const flag_names[] = {
-    "J set",          "Rayleigh damping",  "scheme",
-    "friction law",   "Newton's max_iter", "error estimate (on + 4 x companions)",
-    "unguarded steps"};
+    "J set",           "Rayleigh damping",  "scheme",
+    "friction law",    "Newton's max_iter", "error estimate (on + 4 x companions)",
+    "unguarded steps", "contact solver"};
 static const char *const param_names[] = {"alpha",       "beta",           "gamma",
                                           "eps",         "Newton's tol",   "Rayleigh a0",
                                           "Rayleigh a1", "tolerance scale"};
@@ -133,7 +133,7 @@ static const char *const param_names[] = {"alpha",       "beta",           "gamm
 
 struct fingerprint {
     uint64_t count[NCOUNTS];
-    int32_t flag[NFLAGS + 1]; /* + 1: eight, no padding */
+    int32_t flag[NFLAGS + NFLAGS % 2]; /* an even count: no padding */
     double param[NPARAMS];
     uint64_t model, excitation;
 };
@@ -155,9 +155,10 @@ static void fingerprint_of(const fricreg_structure *s, struct fingerprint *fp)
     const struct fr_elements *e = &s->el;
     memset(fp, 0, sizeof *fp);
     uint64_t counts[NCOUNTS] = {s->n, s->m, e->me, e->ns, e->nc, (uint64_t)e->dim, e->nnormal > 0};
-    int32_t flags[NFLAGS] = {s->contacts_set,    s->rayleigh,   s->scheme,
-                             fr_ctx_law(s->ctx), s->newton_max, s->estimate_on | s->companions << 2,
-                             s->unguarded}; /* on: 0 .. 2, companions above it */
+    int32_t flags[NFLAGS] = {s->contacts_set, s->rayleigh,
+                             s->scheme,       fr_ctx_law(s->ctx),
+                             s->newton_max,   s->estimate_on | s->companions << 2,
+                             s->unguarded,    s->contact_solver}; /* on: 0 .. 2, companions above */
     double params[NPARAMS] = {s->alpha,      s->beta, s->gamma, fr_ctx_eps(s->ctx),
                               s->newton_tol, s->a0,   s->a1,    s->tol_scale};
     memcpy(fp->count, counts, sizeof counts);
