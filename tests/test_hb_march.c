@@ -14,7 +14,9 @@
  *   - jenkins_2d on a 2-D orbit equals HB's own sampled 3-D contact element (contact_3d with
  *     kn = 0 and n0 mu = mun: the same disk at a constant normal force, its normal row on a
  *     dof of its own) to 1e-9 of the scale: the same return mapping at the same samples, one
- *     marched by eval, the other by fricreg_aft_jenkins_2d_normal_sampled;
+ *     marched by eval, the other by fricreg_aft_jenkins_2d_normal_sampled; and its Jacobian is
+ *     Newton's: a solve from the solution at a nearby Ω converges in 6 iterations (5 measured,
+ *     34 without the periodic state's term of the implicit function theorem);
  *   - a model mixing a spring, a marched jenkins_2d and an exact Jenkins element on decoupled
  *     blocks: each block equals its own model to 1e-12 of its scale;
  *   - stability of a marched model is Hill's method (the monodromy refused with a message), a
@@ -155,6 +157,13 @@ START_TEST(disk_is_contact_at_fixed_normal)
         ck_assert_msg(d <= 1e-9 * scale, "Omega %g: %g of %g", omega, d, scale);
     }
     printf("disk_is_contact_at_fixed_normal: worst %.3g of the scale\n", worst);
+    /* the marched Jacobian is Newton's: from the solution at 1.3, the one at 1.4 within 6
+     * iterations to 1e-12 (measured 5; without the periodic state's term G_s (I - P_s)^-1 P_u,
+     * 34) */
+    double q13[2 * NC];
+    ck_assert_int_eq(fricreg_hb_solve(marched, 1.3, 2 * NC, q, q13), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_max_iterations(marched, 6), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_solve(marched, 1.4, 2 * NC, q13, q), FRICREG_OK);
     fricreg_hb_free(marched);
     fricreg_hb_free(sampled);
 }

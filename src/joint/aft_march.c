@@ -13,9 +13,12 @@
  *
  * The Jacobian: a law without state has f(theta_n) = f(u(theta_n)), so column j of component
  * d2 is the transform of df/du_d2 (theta_n) phi_j(theta_n), exact. A law with state has
- * forces that depend on the samples before (a slider's anchor): its Jacobian is taken by
- * central differences of the whole march, u_j ± h, each march started from the settled state
- * of u's own, which keeps an element stuck all period on u's anchor. */
+ * forces that depend on the samples before (a slider's anchor) through its periodic state
+ * s = P(s, u): by the implicit function theorem dF/du = G_u + G_s (I - P_s)^-1 P_u, G the
+ * forces of one period from s, each derivative by central differences of one period (with at
+ * most MAX_NEWTON_STATES states). Where I - P_s is singular (a slider stuck all period: any
+ * state is periodic) or the states are more, by central differences of the whole march,
+ * u_j ± h, each started from u's settled state, which keeps a stuck slider on u's anchor. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -45,6 +48,7 @@ struct fr_aft_march {
     double *state;        /* [nstate] the march's state */
     double *start;        /* [nstate] the state at the period's start */
     double *settled;      /* [nstate] u's settled state, where the differences start */
+    double *kept;         /* [nstate] the march's state before Newton's, kept if it fails */
     double *up;           /* [3 nc] u moved by h */
     double *fp, *fm;      /* [3 nc] the forces at u + h, u - h */
     double *fu;           /* [3 nc] the forces at u */
@@ -60,7 +64,7 @@ int fr_aft_march_create(size_t N, size_t nc, size_t nstate, struct fr_aft_march 
     *out = NULL;
     struct fr_aft_march *w = calloc(1, sizeof *w);
     size_t nn = nstate < MAX_NEWTON_STATES ? nstate : MAX_NEWTON_STATES;
-    size_t doubles = (3 + 3 + 9 + 1) * N + 5 * nstate + 4 * MAX_DIM * nc + nn * nn +
+    size_t doubles = (3 + 3 + 9 + 1) * N + 6 * nstate + 4 * MAX_DIM * nc + nn * nn +
                      2 * MAX_DIM * nc * nn;
     double *buf = w ? malloc(doubles * sizeof *buf) : NULL;
     int *piv = buf ? malloc((nn + 1) * sizeof *piv) : NULL;
@@ -76,7 +80,8 @@ int fr_aft_march_create(size_t N, size_t nc, size_t nstate, struct fr_aft_march 
     w->state = w->x + N;
     w->start = w->state + nstate;
     w->settled = w->start + nstate;
-    w->up = w->settled + nstate;
+    w->kept = w->settled + nstate;
+    w->up = w->kept + nstate;
     w->fp = w->up + MAX_DIM * nc;
     w->fm = w->fp + MAX_DIM * nc;
     w->fu = w->fm + MAX_DIM * nc;
@@ -179,7 +184,7 @@ static int newton(const fricreg_element_type *type, const double *params, struct
         if (r <= tol)
             return 1;
         for (size_t j = 0; j < nstate; j++) { /* column j of I - P'(s) */
-            double sj = w->start[j], delta = 0x1p-26 * fmax(fabs(sj), 0x1p26 * tol);
+            double sj = w->start[j], delta = 0x1p-26 * fmax(fabs(sj), 0x1p46 * tol);
             memcpy(w->state, w->start, nstate * sizeof *w->state);
             w->state[j] = sj + delta;
             delta = w->state[j] - sj;
@@ -214,10 +219,11 @@ static int march(const fricreg_element_type *type, const double *params, struct 
             return FRICREG_OK;
         if (p + 1 == PLAIN && nstate <= MAX_NEWTON_STATES) {
             memcpy(w->start, w->state, nstate * sizeof *w->state);
+            memcpy(w->kept, w->state, nstate * sizeof *w->state);
             int found = newton(type, params, w, dim, nstate, tangent);
             if (found != 0)
                 return found > 0 ? FRICREG_OK : -found;
-            memcpy(w->state, w->start, nstate * sizeof *w->state);
+            memcpy(w->state, w->kept, nstate * sizeof *w->state);
         }
     }
     return FRICREG_OK;
