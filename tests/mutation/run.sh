@@ -186,6 +186,7 @@ programs_of() { # names...
         case $t in
         alloc_failure_*) t=alloc_failure ;;
         hb_stability_sweeps) t=hb_stability ;;
+        hb_march_orbit) t=hb_march ;;
         esac
         echo "test_$t"
     done | sort -u | tr '\n' ' '
