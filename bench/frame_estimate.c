@@ -23,7 +23,10 @@
  *     (fricreg_structure_set_error_companions): per mode, the estimates that bound the error,
  *     the median estimate / error (all, and of kind asymptotic), the warnings, and the CPU of
  *     a run with each against one without, all in this process
- *   FRAME_GRID=1 fricreg-bench-frame-estimate         D on a grid of eps and dt */
+ *   FRAME_GRID=1 fricreg-bench-frame-estimate         D on a grid of eps and dt
+ *   --ground sweep|random   problems the estimators were not derived on: a sine sweep, or
+ *     Gaussian samples (ground_record); --jenkins the dampers as Jenkins elements (Newmark and
+ *     HHT only: run_ode does not take elements). eps follows the record (1 % of its PGV). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -85,16 +88,62 @@ static void rayleigh(double *a0, double *a1)
     *a1 = 2.0 * ZETA / (w1 + w3);
 }
 
+/* The ground motion (--ground): the harmonic one above; "sweep", a linear sine sweep of 0.3 g
+ * from 0.5 to 8 Hz over the 8 s (through the three modes); "random", Gaussian samples every
+ * 20 ms from a fixed seed, linear between them, scaled to a peak of 0.3 g. */
+static const char *ground = "sine";
+
+/* Uniform (0, 1) from a fixed-seed 64-bit LCG (Knuth's MMIX constants): the same record on
+ * every machine. */
+static double uniform(unsigned long long *x)
+{
+    *x = *x * 6364136223846793005ULL + 1442695040888963407ULL;
+    return ((double)(*x >> 11) + 0.5) / 9007199254740992.0;
+}
+
+static void ground_record(double ag[NREC])
+{
+    if (strcmp(ground, "sweep") == 0) {
+        for (size_t k = 0; k < NREC; k++) {
+            double t = (double)k * REC_DT;
+            ag[k] = AG * sin(2.0 * PI * (0.5 * t + (8.0 - 0.5) * t * t / (2.0 * T_END)));
+        }
+    } else if (strcmp(ground, "random") == 0) {
+        enum { EVERY = 80, NS = (NREC - 1) / EVERY + 1 }; /* a sample every 20 ms */
+        double g[NS], peak = 0.0;
+        unsigned long long x = 20261126ULL;
+        for (int i = 0; i < NS; i++) { /* Box-Muller */
+            double u1 = uniform(&x), u2 = uniform(&x);
+            g[i] = sqrt(-2.0 * log(u1)) * cos(2.0 * PI * u2);
+        }
+        for (size_t k = 0; k < NREC; k++) {
+            size_t i = k / EVERY;
+            double f = (double)(k % EVERY) / EVERY;
+            ag[k] = i + 1 < NS ? (1.0 - f) * g[i] + f * g[i + 1] : g[i];
+            peak = fmax(peak, fabs(ag[k]));
+        }
+        for (size_t k = 0; k < NREC; k++)
+            ag[k] *= AG / peak;
+    } else {
+        for (size_t k = 0; k < NREC; k++)
+            ag[k] = AG * sin(2.0 * PI * F_G * (double)k * REC_DT);
+    }
+}
+
+/* --jenkins: the dampers are Jenkins elements on the same rows (kt = k, slip force mu N), the
+ * contacts left at bound 0 (no force, no dissipation; a structure has at least one); the
+ * elements' dissipations are the D's, their errors dt's alone. */
+static int jenkins = 0;
+
 static fricreg_structure *frame(void)
 {
     static double ag[NREC];
     size_t nrec = NREC;
-    for (size_t k = 0; k < nrec; k++)
-        ag[k] = AG * sin(2.0 * PI * F_G * (double)k * REC_DT);
+    ground_record(ag);
     double M[9] = {MASS, 0, 0, 0, MASS, 0, 0, 0, MASS};
     double K[9] = {2 * STIFF, -STIFF, 0, -STIFF, 2 * STIFF, -STIFF, 0, -STIFF, STIFF};
     double J[6] = {1, 0, 0, -1, 1, 0}, mun[2] = {MUN, MUN}, zero[3] = {0, 0, 0}, one[3] = {1, 1, 1},
-           a0, a1;
+           kt[2] = {STIFF, STIFF}, a0, a1;
     rayleigh(&a0, &a1);
     fricreg_structure *s = NULL;
     if (fricreg_structure_create(NDOF, M_C, &s) != FRICREG_OK)
@@ -103,7 +152,8 @@ static fricreg_structure *frame(void)
         fricreg_structure_set_rayleigh(s, a0, a1) ||
         fricreg_structure_set_influence(s, NDOF, one) ||
         fricreg_structure_set_contacts(s, M_C, NDOF, J) ||
-        fricreg_structure_set_bounds(s, M_C, mun) ||
+        fricreg_structure_set_bounds(s, M_C, jenkins ? zero : mun) ||
+        (jenkins && fricreg_structure_set_jenkins(s, M_C, NDOF, J, kt, mun)) ||
         fricreg_structure_set_ground_accel(s, 0.0, REC_DT, nrec, ag) ||
         fricreg_structure_set_initial(s, NDOF, zero, zero)) {
         fricreg_structure_free(s);
@@ -144,11 +194,17 @@ static int run(int scheme, double eps, double dt, int estimate, struct frame_run
                                            FRICREG_ATOL_FROM_EPS, k == n ? T_END : (double)k * dt);
     r->cpu = cpu_now() - t0;
     if (status == FRICREG_OK) {
-        fricreg_structure_get_dissipation(s, M_C, r->D);
+        if (jenkins)
+            fricreg_structure_get_jenkins_state(s, M_C, NULL, NULL, r->D);
+        else
+            fricreg_structure_get_dissipation(s, M_C, r->D);
         fricreg_structure_get_peak_displacement(s, NDOF, r->peak);
     }
     if (status == FRICREG_OK && estimate) {
-        fricreg_structure_get_dissipation_error(s, M_C, r->D_err);
+        if (jenkins)
+            fricreg_structure_get_jenkins_dissipation_error(s, M_C, r->D_err);
+        else
+            fricreg_structure_get_dissipation_error(s, M_C, r->D_err);
         fricreg_structure_get_peak_displacement_error(s, NDOF, r->peak_err);
         size_t nw = fricreg_structure_warning_count(s);
         for (size_t k = 0; k < nw; k++) {
@@ -156,7 +212,10 @@ static int run(int scheme, double eps, double dt, int estimate, struct frame_run
             fricreg_structure_get_warning(s, k, &code, NULL, 0);
             r->warned |= code == FRICREG_WARN_ERROR_ESTIMATE;
         }
-        fricreg_structure_get_error_kind(s, FRICREG_EST_DISSIPATION, M_C, r->D_kind);
+        fricreg_structure_get_error_kind(s,
+                                         jenkins ? FRICREG_EST_ELEMENT_DISSIPATION
+                                                 : FRICREG_EST_DISSIPATION,
+                                         M_C, r->D_kind);
         fricreg_structure_get_error_kind(s, FRICREG_EST_PEAK_DISPLACEMENT, NDOF, r->peak_kind);
         for (int j = 0; j < M_C; j++)
             r->bound |= r->D_kind[j] == FRICREG_EST_KIND_BOUND;
@@ -286,8 +345,8 @@ static int compare_companions(double eps0, const struct reference *ref)
         double ratio[RUNS * NQ], asym[RUNS * NQ];
         int n = 0, na = 0, bounded = 0, warned = 0;
         companions = mode;
-        for (int scheme = NEWMARK; scheme <= RKF45; scheme++)
-            for (int k = 0; k < 3; k++) {
+        for (int scheme = NEWMARK; scheme <= (jenkins ? HHT : RKF45); scheme++)
+            for (int k = 0; k < 3; k++) { /* the elements: fricreg_structure_step's schemes */
                 struct frame_run r;
                 double dt = scheme == RKF45 ? samples[k] : dts[k];
                 if (run(scheme, eps0, dt, 1, &r) != FRICREG_OK)
@@ -311,7 +370,7 @@ static int compare_companions(double eps0, const struct reference *ref)
         qsort(ratio, (size_t)n, sizeof ratio[0], by_value);
         qsort(asym, (size_t)na, sizeof asym[0], by_value);
         printf("| %s | %d | %d | %.3g | %d | %.3g | %d of %d | %.2f |\n", names[mode], n, bounded,
-               ratio[n / 2], na, na > 0 ? asym[na / 2] : NAN, warned, RUNS,
+               ratio[n / 2], na, na > 0 ? asym[na / 2] : NAN, warned, n / NQ,
                cost[mode + 1][REPS / 2] / cost[0][REPS / 2]);
     }
     printf("\ncost: Newmark at 2.5 ms, median of %d interleaved runs: none %.4f s\n", REPS,
@@ -321,7 +380,7 @@ static int compare_companions(double eps0, const struct reference *ref)
 
 int main(int argc, char **argv)
 {
-    double eps0 = default_eps();
+    double eps0;
     struct reference ref;
     int ladder = 0, compare = 0;
     for (int k = 1; k < argc; k++) {
@@ -331,7 +390,12 @@ int main(int argc, char **argv)
             compare = 1;
         else if (strcmp(argv[k], "--mun") == 0 && k + 1 < argc)
             mun_fraction = atof(argv[++k]);
+        else if (strcmp(argv[k], "--ground") == 0 && k + 1 < argc)
+            ground = argv[++k];
+        else if (strcmp(argv[k], "--jenkins") == 0)
+            jenkins = 1;
     }
+    eps0 = default_eps(); /* the record's, as the CLI's */
     printf("frame: eps = %.6g m/s (1 %% of the PGV), mu N = %.4g N per damper\n", eps0, MUN);
     if (getenv("FRAME_GRID") != NULL) {
         for (int a = 4; a <= 10; a += 2)

@@ -1161,9 +1161,10 @@ enum fricreg_estimate_companions {
      *  default, calibrated (docs/structural.md, "Error estimate"); about 7x a run's cost (6.5x
      *  on the frame of bench/frame_estimate.c, 7.1x on a 10^5-dof chain) */
     FRICREG_COMPANIONS_FINER = 0,
-    /** 2 eps at 2 dt and 4 eps at 4 dt (adaptive: the tolerances x 16, x 256): the run's error
-     *  from the coarser levels, about 0.7x a run's cost; bounds the error less often (the
-     *  frame of bench/frame_estimate.c: 83 of 90 against 90), so not the default */
+    /** 2 eps at 2 dt and 4 eps at 4 dt (adaptive: the tolerances x 2, x 4): the run's error
+     *  from the coarser levels, about 0.7x a run's cost; not the default: it bounds the error
+     *  less often on problems it was not derived on (docs/structural.md, "Error estimate"), and
+     *  fails near an explicit scheme's step bound (the companions' steps exceed it) */
     FRICREG_COMPANIONS_COARSER = 1
 };
 
@@ -1172,14 +1173,18 @@ enum fricreg_estimate_companions {
  *  (FRICREG_COMPANIONS_COARSER). Since 1.8 (FRICREG_1.8).
  *
  *  Coarser: the companions run at (2 eps, 2 dt) and (4 eps, 4 dt), adaptive ones at the same
- *  output interval with rtol, atol x 16 and x 256 (the rule from eps, or the set tolerances,
- *  likewise), every other rule of the companions as set_error_estimate says. From the run's q
+ *  output interval with rtol, atol x 2 and x 4 (the rule from eps, or the set tolerances,
+ *  likewise: the path's own factor, so that the tolerances' share of the error follows the
+ *  law's lower order), every other rule of the companions as set_error_estimate says. From the run's q
  *  and the companions' q2, q4, with d1 = q - q2 and d2 = q2 - q4: in the asymptotic range
  *  d2 / d1 = 2^p (law (4)'s error c eps^p along dt / eps fixed), so the run's own error is
  *  Richardson's from the coarser levels, |d1| / (2^p - 1); where r = d2 / d1 lies in
- *  [2^0.5, 2^3] the estimate is 2 |d1| / (r - 1) (the factor 2 the finer estimator's), kind
- *  FRICREG_EST_KIND_ASYMPTOTIC; otherwise (a stall: d1 small against d2; an order above the
- *  range, which a stall imitates; differences that change sign) 4.83 (|d1| + |d2|), kind
+ *  [2^0.5, 2^2] the estimate is 2 |d1| / (r - 1) (the factor 2 the finer estimator's), kind
+ *  FRICREG_EST_KIND_ASYMPTOTIC: on law (4)'s two orders, e = a eps + b eps^2 with a, b of one
+ *  sign, Richardson's is at worst 3/4 of the error (at r = 3), so 2 bounds it; above 2^2 the
+ *  two of opposite signs can put Richardson's any factor under (7x at r = 8). Otherwise (a
+ *  stall: d1 small against d2; an order above the law's, which a stall and those opposite
+ *  signs imitate; differences that change sign) 4.83 (|d1| + |d2|), kind
  *  FRICREG_EST_KIND_BOUND (both differences below 1e-9 of q: 4 (|d1| + |d2|)); with one
  *  companion (FRICREG_ESTIMATE_ONE_COMPANION) 3 |d1|, ASSUMED. The run's results are
  *  unchanged: the estimate only costs less, the coarser levels being further from the

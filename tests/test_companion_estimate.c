@@ -12,11 +12,13 @@
  *     Richardson tail 2), of kind BOUND (no order read from noise);
  *   - one companion: 3 |d1|, of kind ASSUMED;
  *   - an estimate that could not be formed (a non-finite value): BOUND;
- *   - coarser companions, q2 = q(2 eps), q4 = q(4 eps): r = d2 / d1 = 2^p in [2^(1/2), 2^3]
+ *   - coarser companions, q2 = q(2 eps), q4 = q(4 eps): r = d2 / d1 = 2^p in [2^(1/2), 2^2]
  *     gives 2 |d1| / (r - 1), twice the run's own error, of kind ASYMPTOTIC; outside it (a
- *     stall below, where d1 is small against d2; an order above 3, which a stall imitates;
+ *     stall below, where d1 is small against d2; an order above 2, which a stall imitates;
  *     opposite signs) 4.83 (|d1| + |d2|), BOUND; noise 4 (|d1| + |d2|), BOUND; one companion
- *     3 |d1|, ASSUMED. */
+ *     3 |d1|, ASSUMED. On law (4)'s two orders, q = q0 + a eps + b eps^2: with a, b of one
+ *     sign the worst Richardson quotient, 4/3 at r = 3, is bounded 1.5x; of opposite signs at
+ *     r = 8, where Richardson's |d1| / 7 is 7x under, the bound. */
 #include <check.h>
 #include <math.h>
 #include <stdlib.h>
@@ -109,7 +111,7 @@ static double coarser(int estimator, double q0, double c, double p, int *flag)
 
 START_TEST(coarser_in_range_is_richardson_times_two)
 {
-    const double orders[4] = {0.6, 1.0, 2.0, 2.9}; /* inside the band [1/2, 3] */
+    const double orders[4] = {0.6, 1.0, 1.5, 2.0}; /* inside the band [1/2, 2] */
     for (int k = 0; k < 4; k++) {
         int flag;
         double c = 0.013, e = coarser(FRICREG_ESTIMATE_TWO_COMPANIONS, -3.0, c, orders[k], &flag);
@@ -126,6 +128,12 @@ START_TEST(coarser_out_of_range_is_the_bound)
     double e = coarser(FRICREG_ESTIMATE_TWO_COMPANIONS, 2.0, 0.01, 4.0, &flag);
     ck_assert_int_eq(flag, FRICREG_EST_KIND_BOUND);
     ck_assert_double_eq_tol(e, OUT_COARSER * (0.01 * 15.0 + 0.01 * 240.0), 1e-12);
+    /* order 2.9 (r = 7.46): above the law's higher order, where no factor on Richardson's is
+     * safe (coarser_two_orders) */
+    e = coarser(FRICREG_ESTIMATE_TWO_COMPANIONS, 2.0, 0.01, 2.9, &flag);
+    ck_assert_int_eq(flag, FRICREG_EST_KIND_BOUND);
+    ck_assert_double_eq_tol(e, OUT_COARSER * 0.01 * (pow(2.0, 2.9) - 1.0) * (1.0 + pow(2.0, 2.9)),
+                            1e-12);
     /* order 0.26 (r = 1.2): below it */
     e = coarser(FRICREG_ESTIMATE_TWO_COMPANIONS, 2.0, 0.01, log2(1.2), &flag);
     ck_assert_int_eq(flag, FRICREG_EST_KIND_BOUND);
@@ -141,6 +149,31 @@ START_TEST(coarser_out_of_range_is_the_bound)
     e = fr_companion_estimate_coarser(FRICREG_ESTIMATE_TWO_COMPANIONS, 1.0, 1.1, 1.05, &flag);
     ck_assert_int_eq(flag, FRICREG_EST_KIND_BOUND);
     ck_assert_double_eq_tol(e, OUT_COARSER * (0.1 + 0.05), 1e-12);
+}
+END_TEST
+
+/* Law (4)'s two orders, q(h) = q0 + a h + b h^2 at h = 1, 2, 4 (the run's error a + b):
+ *   - a = 0.03, b = 0.01 (one sign, b / a = 1/3): q - q0 = 0.04, 0.10, 0.28, so d1 = -0.06,
+ *     d2 = -0.18, r = 3, the worst case of one sign (companion_estimate.c): Richardson's
+ *     |d1| / 2 = 0.03 is 3/4 of the error, the estimate 2 |d1| / 2 = 0.06 is 1.5x it;
+ *   - a = 0.03, b = -0.015 (opposite signs, b / a = -1/2): q - q0 = 0.015, 0, -0.12, so
+ *     d1 = 0.015, d2 = 0.12, r = 8: Richardson's |d1| / 7 is 7x under the error 0.015 (the
+ *     range up to 2^3 made it asymptotic at 2 |d1| / 7, 0.29x the error); the bound
+ *     4.83 (0.015 + 0.12) = 0.652 >= 0.015. */
+START_TEST(coarser_two_orders)
+{
+    int flag = 0;
+    double q0 = 1.0;
+    double e = fr_companion_estimate_coarser(FRICREG_ESTIMATE_TWO_COMPANIONS, q0 + 0.04, q0 + 0.10,
+                                             q0 + 0.28, &flag);
+    ck_assert_int_eq(flag, FRICREG_EST_KIND_ASYMPTOTIC);
+    ck_assert_double_eq_tol(e / 0.04, 1.5, 1e-12);
+    flag = 0;
+    e = fr_companion_estimate_coarser(FRICREG_ESTIMATE_TWO_COMPANIONS, q0 + 0.015, q0, q0 - 0.12,
+                                      &flag);
+    ck_assert_int_eq(flag, FRICREG_EST_KIND_BOUND);
+    ck_assert_double_eq_tol(e, OUT_COARSER * (0.015 + 0.12), 1e-12);
+    ck_assert(e >= 0.015);
 }
 END_TEST
 
@@ -186,6 +219,7 @@ int main(void)
     tcase_add_test(tc, no_estimate_is_a_bound);
     tcase_add_test(tc, coarser_in_range_is_richardson_times_two);
     tcase_add_test(tc, coarser_out_of_range_is_the_bound);
+    tcase_add_test(tc, coarser_two_orders);
     tcase_add_test(tc, coarser_noise_one_companion_and_no_estimate);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);

@@ -274,10 +274,38 @@ START_TEST(test_loose_tolerances_warn)
 }
 END_TEST
 
+/* The companion of s's one-companion estimate, run to T_END at msbdf, rtol 1e-6 and the rule
+ * from eps: at eps times `level` with tolerances times `scale`, its levels are the closed form
+ * there (the cap rtol x scale not reached), and the estimate 3 |D - D_c| is, bit for bit, that
+ * of a structure run by hand at that eps and rtol with the same scale (white box: the scale is
+ * internal). */
+static void check_companion(const fricreg_structure *s, double level, double scale)
+{
+    double D[NC], err[NC], got[DIM], want[DIM], Dc[NC];
+    ck_assert_int_eq(fricreg_structure_get_dissipation(s, NC, D), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_dissipation_error(s, NC, err), FRICREG_OK);
+    ck_assert_ptr_nonnull(s->companion);
+    ck_assert_int_eq(fricreg_structure_get_ode_abs_tolerances(s->companion, DIM, got), FRICREG_OK);
+    for (size_t k = 0; k < DIM; k++)
+        want[k] = 1e-6 * scale;
+    want[NDOF] = 1e-3 * (level * EPS) * scale;
+    want[NDOF + 1] = want[NDOF + 2] = 1e-3 * (level * EPS) / 2.0 * scale;
+    for (size_t k = 0; k < DIM; k++)
+        ck_assert_double_eq_tol(got[k], want[k], 1e-25);
+    fricreg_structure *c = chain();
+    ck_assert_int_eq(fricreg_structure_set_law(c, FRICREG_LAW_QUINN, level * EPS), FRICREG_OK);
+    c->tol_scale = scale;
+    ck_assert_int_eq(fricreg_structure_run_ode(c, FRICREG_INT_MSBDF, 1e-3, 1e-6 * scale,
+                                               FRICREG_ATOL_FROM_EPS, T_END),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_dissipation(c, NC, Dc), FRICREG_OK);
+    for (size_t i = 0; i < NC; i++)
+        ck_assert_double_eq(err[i], 3.0 * fabs(D[i] - Dc[i]));
+    fricreg_structure_free(c);
+}
+
 /* The companion of the error estimate runs the rule at its eps / 2 with tolerances / 16, as
- * fricreg_sim's (rule_scale): its levels are the closed form at eps / 2 scaled by 1 / 16 (its
- * cap rtol / 16), and its dissipation equals, bit for bit, a structure at eps / 2 run by hand
- * at rtol / 16 with the same scale (white box: the scale is internal). */
+ * fricreg_sim's (rule_scale); set tolerances reach it at the next call, at / 16 too. */
 START_TEST(test_companion)
 {
     fricreg_structure *s = chain();
@@ -288,30 +316,9 @@ START_TEST(test_companion)
     ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_MSBDF, 1e-3, 1e-6,
                                                FRICREG_ATOL_FROM_EPS, T_END),
                      FRICREG_OK);
-    double D[NC], err[NC], got[DIM];
-    ck_assert_int_eq(fricreg_structure_get_dissipation(s, NC, D), FRICREG_OK);
-    ck_assert_int_eq(fricreg_structure_get_dissipation_error(s, NC, err), FRICREG_OK);
-    ck_assert_ptr_nonnull(s->companion);
-    ck_assert_int_eq(fricreg_structure_get_ode_abs_tolerances(s->companion, DIM, got), FRICREG_OK);
-    double want[DIM]; /* the closed form at eps / 2, / 16; the cap rtol / 16 not reached */
-    for (size_t k = 0; k < DIM; k++)
-        want[k] = 1e-6 / 16.0;
-    want[NDOF] = 1e-3 * (EPS / 2.0) / 16.0;
-    want[NDOF + 1] = want[NDOF + 2] = 1e-3 * (EPS / 2.0) / 2.0 / 16.0;
-    for (size_t k = 0; k < DIM; k++)
-        ck_assert_double_eq_tol(got[k], want[k], 1e-25);
-    fricreg_structure *c = chain();
-    ck_assert_int_eq(fricreg_structure_set_law(c, FRICREG_LAW_QUINN, EPS / 2.0), FRICREG_OK);
-    c->tol_scale = 1.0 / 16.0;
-    ck_assert_int_eq(fricreg_structure_run_ode(c, FRICREG_INT_MSBDF, 1e-3, 1e-6 / 16.0,
-                                               FRICREG_ATOL_FROM_EPS, T_END),
-                     FRICREG_OK);
-    double Dc[NC];
-    ck_assert_int_eq(fricreg_structure_get_dissipation(c, NC, Dc), FRICREG_OK);
-    for (size_t i = 0; i < NC; i++)
-        ck_assert_double_eq(err[i], 3.0 * fabs(D[i] - Dc[i]));
+    check_companion(s, 0.5, 1.0 / 16.0);
     /* set tolerances reach the companion at the next call, applied at / 16 there */
-    double mine[DIM];
+    double mine[DIM], got[DIM];
     for (size_t k = 0; k < DIM; k++)
         mine[k] = 1e-7 * (double)(k + 1);
     ck_assert_int_eq(fricreg_structure_set_ode_abs_tolerances(s, DIM, mine), FRICREG_OK);
@@ -321,7 +328,23 @@ START_TEST(test_companion)
     ck_assert_int_eq(fricreg_structure_get_ode_abs_tolerances(s->companion, DIM, got), FRICREG_OK);
     for (size_t k = 0; k < DIM; k++)
         ck_assert_double_eq(got[k], mine[k] / 16.0);
-    fricreg_structure_free(c);
+    fricreg_structure_free(s);
+}
+END_TEST
+
+/* Coarser companions (fricreg_structure_set_error_companions) run the rule at 2 eps with
+ * tolerances x 2, the path's own factor (src/structure/error_estimate.c, TOL_COARSER). */
+START_TEST(test_coarser_companion)
+{
+    fricreg_structure *s = chain();
+    ck_assert_int_eq(fricreg_structure_set_error_estimate(s, FRICREG_ESTIMATE_ONE_COMPANION),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_error_companions(s, FRICREG_COMPANIONS_COARSER),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_MSBDF, 1e-3, 1e-6,
+                                               FRICREG_ATOL_FROM_EPS, T_END),
+                     FRICREG_OK);
+    check_companion(s, 2.0, 2.0);
     fricreg_structure_free(s);
 }
 END_TEST
@@ -335,6 +358,7 @@ int main(void)
     tcase_add_test(tc, test_rule_values);
     tcase_add_test(tc, test_set_tolerances);
     tcase_add_test(tc, test_companion);
+    tcase_add_test(tc, test_coarser_companion);
     tcase_add_test(tc, test_loose_tolerances_warn);
     tcase_add_test(tc, test_loose_tolerances_any_unit);
     suite_add_tcase(suite, tc);

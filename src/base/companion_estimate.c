@@ -68,12 +68,20 @@ double fr_companion_estimate(int estimator, double q, double q2, double q4, int 
 
 /* Coarser companions: q2 = q(2 eps), q4 = q(4 eps) along 2 dt, 4 dt. In the asymptotic range
  * d1 = q - q2 = -c eps^p (2^p - 1) and d2 = q2 - q4 = 2^p d1, so r = d2 / d1 = 2^p and the
- * run's own error is Richardson's from the coarser levels, |d1| / (r - 1). The range is
- * bounded on both sides: r far above the law's orders is the run and its nearer companion
- * agreeing much better than the levels above them, which a stall does too (finer companions
- * read that case from d1 itself; here d1 is the smaller difference). */
-#define P_HI 2.0    /* law (4)'s higher order */
-#define BAND_HI 1.0 /* the observed order accepted up to P_HI + BAND_HI */
+ * run's own error is Richardson's from the coarser levels, |d1| / (r - 1).
+ *
+ * The accepted range of r is what makes SAFETY enough. Law (4)'s error is the sum of its two
+ * orders, e = A eps + B eps^2 (P_LO, P_HI). With a = A eps, b = 3 B eps^2: d1 = -(a + b),
+ * d2 = -(2 a + 4 b), so r = 4 - 2 w with w = a / (a + b), and e / (|d1| / (r - 1)) =
+ * (3 - 2 w)(w + (1 - w) / 3). Where A and B have one sign (w in [0, 1], r in [2, 4]) its
+ * largest value is at w = 1/2 (r = 3): (rho1 + rho2 - 2)^2 / (4 (rho1 - 1)(rho2 - 1)) = 4/3
+ * for the ratios rho1 = 2, rho2 = 4, so SAFETY = 2 bounds it with a margin of 1.5. Of opposite
+ * signs (w > 1, r < 2) it is below 1: the band's r >= 2^0.5 is safe too. But r above 4 is
+ * w < 0, opposite signs the other way, where the quotient grows without bound as the two
+ * terms cancel in d1: 7 at r = 8 (w = -2; the error |d1| against Richardson's |d1| / 7). So
+ * the range ends at the law's higher order, 2^P_HI: above it, no factor on Richardson's is safe,
+ * and the estimate is the bound (as where a stall makes d1 small against d2). */
+#define P_HI 2.0 /* law (4)'s higher order: r accepted up to 2^P_HI */
 #define OUT_COARSER (SAFETY * 2.414213562373095) /* SAFETY / (2^0.5 - 1): the band's lowest p */
 
 static double two_coarser(double q, double q2, double q4, int *kind)
@@ -85,7 +93,7 @@ static double two_coarser(double q, double q2, double q4, int *kind)
         return NOISE_FACTOR * (fabs(d1) + fabs(d2));
     if (fabs(d1) > floor) {
         double r = d2 / d1;
-        if (r >= exp2(P_LO - BAND) && r <= exp2(P_HI + BAND_HI)) {
+        if (r >= exp2(P_LO - BAND) && r <= exp2(P_HI)) {
             *kind = FRICREG_EST_KIND_ASYMPTOTIC;
             return SAFETY * fabs(d1) / (r - 1.0);
         }

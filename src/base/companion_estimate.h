@@ -24,8 +24,8 @@ double fr_companion_estimate(int estimator, double q, double q2, double q4, int 
 
 /* The estimate of q's error from coarser companions, q2 = q(2 eps) at 2 dt and q4 = q(4 eps)
  * at 4 dt (fricreg_structure_set_error_companions): with d1 = q - q2, d2 = q2 - q4 and
- * r = d2 / d1 = 2^p in [2^0.5, 2^3], 2 |d1| / (r - 1) of kind ASYMPTOTIC (Richardson's from
- * the coarser levels); otherwise 4.83 (|d1| + |d2|) of kind BOUND (both differences at a
+ * r = d2 / d1 = 2^p in [2^0.5, 2^2] (up to the law's higher order: companion_estimate.c says
+ * why), 2 |d1| / (r - 1) of kind ASYMPTOTIC (Richardson's from the coarser levels); otherwise 4.83 (|d1| + |d2|) of kind BOUND (both differences at a
  * solver's noise: 4 (|d1| + |d2|)); one companion: 3 |d1|, ASSUMED. */
 double fr_companion_estimate_coarser(int estimator, double q, double q2, double q4, int *kind);
 
