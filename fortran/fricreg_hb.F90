@@ -360,10 +360,11 @@ contains
   end function hb_set_jenkins_2d_normal
 
   !> Elements of the type called name (fricreg_element_lookup; ns sliders for an Iwan type,
-  !> default 1) beside those the driver holds, of any of HB's types (fricreg_hb_add_elements:
-  !> jenkins, iwan, jenkins_normal, iwan_normal, contact_3d): element i's dim rows (the type's:
-  !> tangential, then the normal one) (i-1) dim + 1 .. i dim of J(me dim, ndof) in Fortran's
-  !> order, its parameters params(:, i) in the type's layout (gap 0); me = size(params, 2). q's
+  !> default 1) beside those the driver holds, of any types (fricreg_hb_add_elements: HB's own
+  !> AFTs for jenkins, iwan, jenkins_normal, iwan_normal, contact_3d, their gap 0; the march of
+  !> its eval for any other): element i's dim rows (the type's: tangential, then the normal
+  !> one) (i-1) dim + 1 .. i dim of J(me dim, ndof) in Fortran's order, its parameters
+  !> params(:, i) in the type's layout; me = size(params, 2). q's
   !> columns are the rows of the elements in the order added. FRICREG_EINVAL for an unknown
   !> name or ns; FRICREG_ESIZE unless params has the type's nparams rows and J is (me dim,
   !> ndof); C's codes. Since 1.8.
