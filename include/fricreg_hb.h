@@ -453,15 +453,17 @@ FRICREG_API int fricreg_hb_set_jenkins_2d_normal(fricreg_hb *hb, size_t m, size_
  *  (the preload in n0; FRICREG_EINVAL otherwise, a gap not being folded into n0 − kn gap,
  *  which would round). Every other type (jenkins_2d, jenkins_3d, iwan_2d, iwan_3d, spring, and
  *  any law added to the table) runs the march of its fricreg_element_eval: its dim components
- *  at N = 64 (2H + 1) samples of the period, rounded up to a power of two, marched from the
- *  law's initial state until the state repeats (a slow contraction found by Newton's method
- *  on the periodic state), the coefficients by FFT; a law with state extrapolated by
- *  Richardson over N and N/2 samples (its samples lag by a term in 1/N: 4e-5 of the scale for
- *  jenkins_2d moved along one axis against the exact 1-D Jenkins at H = 3) and its Jacobian by
- *  central differences through the implicit function theorem on the periodic state, a law
- *  without state's Jacobian from its tangent. A marched step costs about 2 (dim (2H + 1) +
- *  nstate) periods of eval a Newton iteration: from a solution nearby a solve takes a few
- *  hundredths of a second, but the default start (no q0) may take seconds (test hb_march).
+ *  at N = 64 (2H + 1) samples of the period, rounded up to a power of two, marched from its
+ *  sliders at the middle of u's range (a slider stuck all period then equals the exact AFT's
+ *  centred one) until the state repeats (a slow contraction found by Newton's method on the
+ *  periodic state), the coefficients by FFT; a law with state extrapolated by Richardson over
+ *  N and N/2 samples (its samples lag by a term in 1/N: 4e-5 of the scale for jenkins_2d moved
+ *  along one axis against the exact 1-D Jenkins at H = 3), its Jacobian the exact one of the
+ *  sampled march (its sliders' sensitivities carried through the period, started periodic);
+ *  a law without state's Jacobian from its tangent. A marched step costs about three periods
+ *  of eval a Newton iteration: the continuation of NLvib's chain with two jenkins_2d elements
+ *  at H = 7 takes 9 s (test hb_march; the exact jenkins run 0.05 s), and the default start
+ *  (no q0) costs most; pass q0 where a solution nearby is known.
  *
  *  Element i sees the dim = fricreg_element_dim(type) rows i dim .. i dim + dim − 1 of
  *  J[me dim * ndof] (row-major, dimensionless for displacement dofs; in the type's order: the
@@ -537,7 +539,10 @@ FRICREG_API int fricreg_hb_set_newton(fricreg_hb *hb, double tol, int max_iter);
  *  the branch (where the elements' stick/slip or contact pattern changes, the exact AFT's
  *  Jacobian is not smooth): a converged corrector whose tangent turned by less than 90° is
  *  accepted once halving ds did not lower the angle and the contraction by a quarter, or when
- *  halving would take ds below ds_min. Below ds_min the step is tried once more along the
+ *  halving would take ds below ds_min; there, since 1.8, also one that the jump or the chord
+ *  refused but that converged within 100 ds_min of the last point with its chord turned by
+ *  less than 90° (a fold or kink finer than ds_min resolves, such as a sampled AFT's where a
+ *  slider starts to stick). Below ds_min the step is tried once more along the
  *  secant of the last two points; then the continuation stops with
  *  FRICREG_EINTEGRATOR. (Until 1.6: grown by 1.5 after at most 4 corrector iterations, halved
  *  after a failure or a corrector that ended farther than ds/2 from its predictor; the

@@ -16,12 +16,14 @@
  *     kn = 0 and n0 mu = mun: the same disk at a constant normal force, its normal row on a
  *     dof of its own) to 1e-9 of the scale: the same return mapping at the same samples, one
  *     marched by eval, the other by fricreg_aft_jenkins_2d_normal_sampled; and its Jacobian is
- *     Newton's: a solve from the solution at a nearby Ω converges in 6 iterations (5 measured,
- *     34 without the periodic state's term of the implicit function theorem);
+ *     Newton's: a solve from the solution at a nearby Ω converges in 6 iterations (5 measured;
+ *     test_aft_march checks the Jacobian itself against differences);
  *   - a model mixing a spring, a marched jenkins_2d and an exact Jenkins element on decoupled
  *     blocks: each block equals its own model to 1e-12 of its scale;
  *   - stability of a marched model is Hill's method (the monodromy refused with a message), a
- *     continuation, a truncation error (the clone at 2H + 1) and a backbone run. */
+ *     continuation, a truncation error (the clone at 2H + 1) and a backbone run;
+ *   - NLvib's chain with jenkins_2d elements continued through the onset of stick: each dof's
+ *     peak equals the exact jenkins run's to 2e-4 in RMS (chain_through_stick). */
 #include <check.h>
 #include <complex.h>
 #include <math.h>
@@ -184,8 +186,8 @@ START_TEST(disk_is_contact_at_fixed_normal)
     }
     printf("disk_is_contact_at_fixed_normal: worst %.3g of the scale\n", worst);
     /* the marched Jacobian is Newton's: from the solution at 1.3, the one at 1.4 within 6
-     * iterations to 1e-12 (measured 5; without the periodic state's term G_s (I - P_s)^-1 P_u,
-     * 34) */
+     * iterations to 1e-12 (measured 5, as with 1.8's earlier Jacobian by differences, which
+     * took 34 without the implicit function theorem's term) */
     double q13[2 * NC];
     ck_assert_int_eq(fricreg_hb_solve(marched, 1.3, 2 * NC, q, q13), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_set_max_iterations(marched, 6), FRICREG_OK);
@@ -282,6 +284,75 @@ START_TEST(stability_and_truncation)
 }
 END_TEST
 
+/* NLvib's chain (bench/nlvib/chain_jenkins.m: unit masses and springs ground-1-2-3, C =
+ * 0.02 K, cos(Omega t) on dof 2, kt = 20, mu N = 1 between dof 1 and the ground and between
+ * dofs 1 and 2) at H = 7: with jenkins on the 3 dofs (exact), or with jenkins_2d whose second
+ * components sit on dofs 4 and 5 of their own (unit mass and spring, unforced: at rest). */
+#define CHAIN_H 7
+static fricreg_hb *chain(int marched)
+{
+    size_t n = marched ? 5 : 3;
+    double M[25] = {0}, K[25] = {0}, C[25], pc[5] = {0, 1, 0, 0, 0}, ps[5] = {0};
+    double J[20] = {0}, p[4] = {20, 1, 20, 1};
+    for (size_t i = 0; i < n; i++) {
+        M[i * n + i] = 1.0;
+        K[i * n + i] = i < 3 ? 2.0 : 1.0;
+        if (i > 0 && i < 3)
+            K[i * n + i - 1] = K[(i - 1) * n + i] = -1.0;
+    }
+    for (size_t i = 0; i < n * n; i++)
+        C[i] = 0.02 * K[i];
+    size_t dim = marched ? 2 : 1; /* element e's rows e dim .. */
+    J[0] = 1.0;
+    J[dim * n] = -1.0;
+    J[dim * n + 1] = 1.0;
+    if (marched) {
+        J[n + 3] = 1.0;
+        J[3 * n + 4] = 1.0;
+    }
+    fricreg_hb *hb = NULL;
+    ck_assert_int_eq(fricreg_hb_create(n, 2, CHAIN_H, &hb), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_mass(hb, n, M), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, n, K), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_damping(hb, n, C), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_excitation(hb, n, pc, ps), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stability(hb, 0), FRICREG_OK);
+    ck_assert_int_eq(
+        fricreg_hb_add_elements(hb, fricreg_element_lookup(marched ? "jenkins_2d" : "jenkins"), 2,
+                                n, J, p),
+        FRICREG_OK);
+    return hb;
+}
+
+/* The default continuation from 0.5 to 2 rad/s crosses the onset of stick near 1.3938, where
+ * the march's exact Jacobian and centred stuck sliders (and the continuation's acceptance of
+ * a fold finer than ds_min, fricreg_hb_set_continuation) carry it through; each dof's peak
+ * then equals the exact AFT's to 2e-4 in RMS and 1e-3 in Omega (measured 6.3e-5 and 3.7e-4:
+ * the samples' lag, as disk_on_a_line_is_jenkins's). Until 1.8 it stopped at 1.39377. */
+START_TEST(chain_through_stick)
+{
+    fricreg_hb *marched = chain(1), *exact = chain(0);
+    const size_t nc = 2 * CHAIN_H + 1;
+    double worst_rms = 0.0, worst_omega = 0.0;
+    ck_assert_int_eq(fricreg_hb_continue(exact, 0.5, 2.0, 2 * nc, NULL), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_continue(marched, 0.5, 2.0, 4 * nc, NULL), FRICREG_OK);
+    for (size_t dof = 0; dof < 3; dof++) {
+        double om_m, rms_m, om_e, rms_e;
+        ck_assert_int_eq(fricreg_hb_peak(marched, dof, &om_m, &rms_m), FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_peak(exact, dof, &om_e, &rms_e), FRICREG_OK);
+        worst_rms = fmax(worst_rms, fabs(rms_m - rms_e) / rms_e);
+        worst_omega = fmax(worst_omega, fabs(om_m - om_e) / om_e);
+        ck_assert_msg(fabs(rms_m - rms_e) <= 2e-4 * rms_e && fabs(om_m - om_e) <= 1e-3 * om_e,
+                      "dof %zu: peak %.9g at %.9g, exact %.9g at %.9g", dof, rms_m, om_m, rms_e,
+                      om_e);
+    }
+    printf("chain_through_stick: peaks within %.3g in RMS, %.3g in Omega\n", worst_rms,
+           worst_omega);
+    fricreg_hb_free(marched);
+    fricreg_hb_free(exact);
+}
+END_TEST
+
 START_TEST(bad_law_refused)
 {
     fricreg_hb *hb = NULL;
@@ -307,7 +378,8 @@ static Suite *suite(void)
                  {"axis", disk_on_a_line_is_jenkins},
                  {"orbit", disk_is_contact_at_fixed_normal},
                  {"mix", mix_equals_blocks},
-                 {"stability", stability_and_truncation}};
+                 {"stability", stability_and_truncation},
+                 {"chain", chain_through_stick}};
     Suite *s = suite_create("hb_march");
     TCase *tc = NULL;
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {

@@ -14,7 +14,10 @@
  * contact pattern changes, and there the branch has a kink: the angle and the contraction do
  * not fall with ds. A converged corrector whose tangent turned by less than 90° is accepted
  * there, once halving ds no longer lowered them by a quarter, or when halving would go below
- * ds_min (a converged residual is a solution). Below ds_min the step is predicted once more
+ * ds_min (a converged residual is a solution), as is then one that the jump or the chord
+ * refused within NEAR_REACH ds_min of the last point (a fold or kink finer than ds_min: the
+ * sampled march's, aft_march.c, turns a kink of the exact AFT into a tiny fold where a slider
+ * starts to stick). Below ds_min the step is predicted once more
  * along the secant of the last two points before the continuation stops. A branch that runs
  * back along itself (a point near an earlier stretch, heading the same way) stops it: a
  * success onto its first stretches (it came round a closed branch), else a failure. Each
@@ -111,13 +114,13 @@ static size_t doubles_back(const fricreg_hb *hb, const struct fr_hb_branch *b, c
  * max(κ/KAPPA_MAX, α/ALPHA_MAX) (above 1: rejected, unless a kink), 0 if it failed or left
  * the branch; sev_before the last rejected attempt's from the same point at twice the step. */
 static int attempt(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, double ds, int *its,
-                   double *alpha, double *sev, double sev_before, int *kink)
+                   double *alpha, double *sev, double sev_before, int *kink, int *near)
 {
     size_t nq = hb->nq, ld = nq + 1;
     for (size_t j = 0; j < ld; j++)
         b->yp[j] = b->yc[j] + ds * hb->dir[j];
     *alpha = *sev = 0.0;
-    *kink = 0;
+    *kink = *near = 0;
     int status = fr_hb_corrector(hb, fn, b, b->yp, b->yp, hb->dir, its);
     if (status == FRICREG_OK)
         status = fr_hb_tangent(hb, fn, hb->tn);
@@ -129,18 +132,20 @@ static int attempt(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, doubl
     }
     double h = fr_hb_dist(hb->qw, b->yc, ld), deg = 57.29577951308232;
     *alpha = acos(fmax(-1.0, fmin(1.0, fr_hb_dot(hb->tn, hb->tan, ld))));
-    if (h > JUMP * ds) {
-        snprintf(b->why, sizeof b->why,
-                 "%s: the corrector ended %g from the last point, beyond %g ds = %g", fn, h, JUMP,
-                 JUMP * ds);
-        return -1;
-    }
     /* on a smooth arc the chord lies half way between the tangents, at a kink between them:
      * a chord that turned by much more than the tangents did joined another part of the
      * branch (two flanks of a sharp peak, nearly parallel, a tiny Ω apart) */
     double chord = acos(
         fmax(-1.0,
              fmin(1.0, (fr_hb_dot(hb->qw, hb->tan, ld) - fr_hb_dot(b->yc, hb->tan, ld)) / h)));
+    /* this close to the last point, the branch is finer than the continuation resolves */
+    *near = h <= NEAR_REACH * hb->ds_min && chord < KINK_MAX;
+    if (h > JUMP * ds) {
+        snprintf(b->why, sizeof b->why,
+                 "%s: the corrector ended %g from the last point, beyond %g ds = %g", fn, h, JUMP,
+                 JUMP * ds);
+        return -1;
+    }
     if (chord > 2.0 * *alpha + CHORD_SLACK) {
         snprintf(b->why, sizeof b->why,
                  "%s: the chord turned by %.3g degrees from the tangent, which turned by %.3g", fn,
@@ -192,7 +197,7 @@ static int follow(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, double
         /* the step from yc: along the tangent, halved on rejection; below ds_min once more
          * along the secant of the last two points (the tangent of a non-smooth Jacobian may
          * point off the branch), from the last accepted step */
-        int its = 0, kink = 0, secant = 0, accepted = 0, last = 0;
+        int its = 0, kink = 0, near = 0, secant = 0, accepted = 0, last = 0;
         double alpha = 0.0, sev = 0.0, sev_before = 0.0, ds_start = ds;
         memcpy(hb->dir, hb->tan, ld * sizeof(double));
         while (!accepted) {
@@ -208,7 +213,7 @@ static int follow(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, double
                 snprintf(b->why, sizeof b->why, "%s", hb->err.msg);
                 last = 0;
             } else {
-                int r = attempt(hb, fn, b, ds, &its, &alpha, &sev, sev_before, &kink);
+                int r = attempt(hb, fn, b, ds, &its, &alpha, &sev, sev_before, &kink, &near);
                 if (r > 0)
                     return r;
                 if (r == 0) {
@@ -218,8 +223,11 @@ static int follow(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, double
                 sev_before = sev; /* 0 unless the corrector converged near the branch */
             }
             /* a converged corrector near the last point whose tangent turned (but not
-             * back) is a solution: accepted rather than the step halved below ds_min */
-            if (sev > 0.0 && alpha < KINK_MAX && 0.5 * ds < hb->ds_min) {
+             * back), or one within NEAR_REACH ds_min that the chord or the jump refused (a
+             * fold or kink finer than ds_min: the march's near the onset of stick,
+             * aft_march.c), is a solution: accepted rather than the step halved below
+             * ds_min */
+            if ((sev > 0.0 || near) && alpha < KINK_MAX && 0.5 * ds < hb->ds_min) {
                 kink = accepted = 1;
                 break;
             }

@@ -107,18 +107,17 @@ static int contact_3d(fricreg_hb *hb, size_t e, const double *u, double *f, doub
 
 /* Marched element e (joint/aft_march.h) at its coefficients u[dim nc]: forces f and, with jac,
  * their Jacobian; a law with state by Richardson's extrapolation over N and N/2 samples, as
- * contact_3d (its samples lag the continuous law by a term in 1/N), its differences' step
- * 2^-20 of the displacements' scale. */
-static int march(fricreg_hb *hb, size_t e, const double *u, double scale, double *f, double *jac)
+ * contact_3d (its samples lag the continuous law by a term in 1/N). */
+static int march(fricreg_hb *hb, size_t e, const double *u, double *f, double *jac)
 {
     const fricreg_element_type *type = hb->etype[e];
     const double *p = hb->ep + hb->epo[e];
     size_t w = (size_t)fricreg_element_dim(type) * hb->nc;
-    double h = 0x1p-20 * scale, *fh = hb->half, *jh = hb->half + w;
-    int status = fr_aft_march(hb->aft, hb->march, type, p, u, h, f, jac);
+    double *fh = hb->half, *jh = hb->half + w;
+    int status = fr_aft_march(hb->aft, hb->march, type, p, u, f, jac);
     if (status != FRICREG_OK || fricreg_element_nstate(type) == 0)
         return status;
-    if ((status = fr_aft_march(hb->aft_half, hb->march, type, p, u, h, fh, jac ? jh : NULL)) !=
+    if ((status = fr_aft_march(hb->aft_half, hb->march, type, p, u, fh, jac ? jh : NULL)) !=
         FRICREG_OK)
         return status;
     richardson(w, fh, jh, f, jac);
@@ -126,13 +125,13 @@ static int march(fricreg_hb *hb, size_t e, const double *u, double scale, double
 }
 
 /* Element e's forces into fq and, with jac, its Jacobian block, by its kind's AFT. */
-static int element(fricreg_hb *hb, size_t e, const double *q, double scale, int jac)
+static int element(fricreg_hb *hb, size_t e, const double *q, int jac)
 {
     size_t nc = hb->nc, me = hb->me, at = hb->erow[e] * nc;
     const double *u = q + at, *p = hb->nl;
     double *f = hb->fq + at, *J = jac ? fr_hb_block_of(hb, e) : NULL;
     if (hb->kind[e] == FR_HB_MARCH)
-        return march(hb, e, u, scale, f, J);
+        return march(hb, e, u, f, J);
     if (hb->kind[e] == FR_HB_CONTACT_3D)
         return contact_3d(hb, e, u, f, J);
     const double *k, *phi;
@@ -147,9 +146,8 @@ static int element(fricreg_hb *hb, size_t e, const double *q, double scale, int 
 
 int fr_hb_residual(fricreg_hb *hb, const char *fn, const double *q, double *R, int jac)
 {
-    double scale = jac && hb->march != NULL ? fr_hb_scale(hb, q) : 0.0;
     for (size_t e = 0; e < hb->me; e++) {
-        int status = element(hb, e, q, scale, jac);
+        int status = element(hb, e, q, jac);
         if (status != FRICREG_OK && hb->kind[e] == FR_HB_MARCH)
             return fr_fail(hb, status,
                            "%s: element %zu (%s) refused its displacement at a sample of the "

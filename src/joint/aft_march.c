@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* aft_march.c — the sampled AFT of any element type (aft_march.h): u at N equidistant samples
- * of the period, the type's fricreg_element_eval marched over them from the law's initial
- * state (fricreg_element_init's) at theta = 0 until the state at a period's end equals its
- * start (to 2^-46 of the largest u or state), and the last period's forces to coefficients
+ * of the period, the type's fricreg_element_eval marched over them from the centred state at
+ * theta = 0 until the state at a period's end equals its start (to 2^-46 of the largest u or
+ * state), and the last period's forces to coefficients
  * by GSL's real radix-2 FFT (aft_sampled.c's fr_aft_sample_coefficients), as NLvib's AFT
  * marches a hysteretic law (Krack & Gross, Harmonic Balance for Nonlinear Vibration Problems,
  * 2019, Sec. 3.3; it marches two periods). A state still moving after PLAIN periods is a slow
@@ -11,28 +11,47 @@
  * differences and LAPACK's dgesv, finds it (as aft_2d.c does with its own chain); otherwise,
  * or if Newton fails, the march goes on to MAX_PERIODS periods and gives its last.
  *
- * The Jacobian: a law without state has f(theta_n) = f(u(theta_n)), so column j of component
- * d2 is the transform of df/du_d2 (theta_n) phi_j(theta_n), exact. A law with state has
- * forces that depend on the samples before (a slider's anchor) through its periodic state
- * s = P(s, u): by the implicit function theorem dF/du = G_u + G_s (I - P_s)^-1 P_u, G the
- * forces of one period from s, each derivative by central differences of one period (with at
- * most MAX_NEWTON_STATES states). Where I - P_s is singular (a slider stuck all period: any
- * state is periodic) or the states are more, by central differences of the whole march,
- * u_j ± h, each started from u's settled state, which keeps a stuck slider on u's anchor. */
+ * The centred state: a slider stuck all period has a periodic state wherever it sits, so the
+ * march chooses by where it starts. It starts every slider at the middle of u's range, each
+ * tangential component's (max + min) / 2 over the samples (the table's laws hold their
+ * sliders' positions as state, element_kind.h), the choice of the exact AFT of 1-D sliders
+ * (aft_exact.c), which it then equals. A slider that slips leaves it for its own periodic
+ * state, which is unique; one that barely slips sits near that middle, so the forces are
+ * continuous in u through the onset of stick.
+ *
+ * The Jacobian, exact for the sampled march: a law without state has f(theta_n) = f(u(theta_n)),
+ * so column j of component d2 is the transform of df/du_d2 (theta_n) phi_j(theta_n). A law with
+ * state is Jenkins sliders (element_kind.h), whose force f_s depends on u - w_s alone: from each
+ * sample's slider tangents t_s = d f_s / d u and T_s = d w_s' / d w_s (the kind's
+ * slider_tangents), the sensitivity S_s = d w_s / d u of every slider's position to u's
+ * coefficients goes forward with the march, V = Phi_n - S_s, d f_n / d u = sum_s t_s V,
+ * S_s' = Phi_n - T_s V, and the forces' derivatives are transformed as they come. The
+ * settled period's start is periodic: a first pass from S = 0 gives S_s(N) = R_s and the
+ * period's map Psi_s = prod T_s, and a slider that slipped (Psi_s a contraction) starts the
+ * second pass from S_s = (I - Psi_s)^-1 R_s, the implicit function theorem on s = P(s, u); a
+ * slider stuck all period sits at the centred state, whose derivative is the middle's,
+ * (phi(theta_max) + phi(theta_min)) / 2. (A 2-D slider that settles stuck after slipping in
+ * the march's first periods, on an orbit whose middle is not a valid stuck state, is given the
+ * middle's derivative too: then the derivative is approximate, by how far it moved.) */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "aft_internal.h"
 #include "aft_march.h"
+#include "element_kind.h"
 
 #define MAX_PERIODS 64
 #define PLAIN 4
 #define MAX_NEWTON_STATES 64
 #define MAX_NEWTON 20
 #define MAX_DIM 3
+#define BLOCK 64 /* samples whose derivatives are transformed by one dgemm */
 
-/* LAPACK by Fortran's calling convention (lu.c says more). */
+/* BLAS and LAPACK by Fortran's calling convention (lu.c says more). */
+void dgemm_(const char *transa, const char *transb, const int *m, const int *n, const int *k,
+            const double *alpha, const double *a, const int *lda, const double *b, const int *ldb,
+            const double *beta, double *c, const int *ldc, size_t transa_len, size_t transb_len);
 void dgesv_(const int *n, const int *nrhs, double *a, const int *lda, int *ipiv, double *b,
             const int *ldb, int *info);
 
@@ -40,56 +59,62 @@ struct fr_aft_march {
     size_t N, nc, nstate; /* the room */
     size_t samples;       /* this call's N (aft's) */
     int dim;              /* this call's type's */
-    size_t nstate_now;    /* this call's type's */
     double *us;           /* [3 N] u at the samples, component d's from d N */
     double *fs;           /* [3 N] f at the samples */
     double *ts;           /* [9 N] df/du at the samples, entry (a, c) from (3 a + c) N */
     double *x;            /* [N] one transform's samples */
     double *state;        /* [nstate] the march's state */
     double *start;        /* [nstate] the state at the period's start */
-    double *settled;      /* [nstate] u's settled state, where the differences start */
     double *kept;         /* [nstate] the march's state before Newton's, kept if it fails */
-    double *up;           /* [3 nc] u moved by h */
-    double *fp, *fm;      /* [3 nc] the forces at u + h, u - h */
     double *fu;           /* [3 nc] the forces at u */
     double *ps, *pd;      /* [nstate] P(s); Newton's step */
     double *A;            /* [nn nn] I - P'(s), nn = min(nstate, MAX_NEWTON_STATES), by columns */
-    int *piv;             /* [nn] its pivots */
-    double *gs;           /* [3 nc nn] dF/ds at the settled state, row-major */
-    double *pu;           /* [nn 3 nc] dP/du, by columns (dgesv's right-hand sides) */
+    int *piv;             /* [max(nn, 3)] its pivots, or a slider's */
+    double *sens;         /* [nstate 3 nc] S = d state / d u, row-major */
+    double *psi;          /* [nstate 3] each slider's Psi_s, its td x td block from td td s */
+    double *tsl, *twl;    /* [nstate 3] the sample's slider tangents t_s, T_s, laid out as psi */
+    double *v;            /* [3 3 nc] V = Phi_n - S_s, or (I - Psi_s)'s right-hand sides */
+    double *g;            /* [BLOCK 3 3 nc] d f_n / d u of a block's samples, one a row */
+    double *wb;           /* [nc BLOCK] the transform's weights at those samples, by rows */
+    double *phi;          /* [nc] the basis at a sample */
+    int *slipped;         /* [nstate] 1 where slider s slipped in the settled period */
+    size_t hi[MAX_DIM], lo[MAX_DIM]; /* the samples of u's largest and smallest components */
 };
 
 int fr_aft_march_create(size_t N, size_t nc, size_t nstate, struct fr_aft_march **out)
 {
     *out = NULL;
     struct fr_aft_march *w = calloc(1, sizeof *w);
-    size_t nn = nstate < MAX_NEWTON_STATES ? nstate : MAX_NEWTON_STATES;
-    size_t doubles = (3 + 3 + 9 + 1) * N + 6 * nstate + 4 * MAX_DIM * nc + nn * nn +
-                     2 * MAX_DIM * nc * nn;
+    size_t nn = nstate < MAX_NEWTON_STATES ? nstate : MAX_NEWTON_STATES, b = MAX_DIM * nc;
+    size_t doubles = (3 + 3 + 9 + 1) * N + 5 * nstate + MAX_DIM * nc + nn * nn + nstate * b +
+                     3 * MAX_DIM * nstate + MAX_DIM * b + BLOCK * MAX_DIM * b + nc * BLOCK + nc;
     double *buf = w ? malloc(doubles * sizeof *buf) : NULL;
-    int *piv = buf ? malloc((nn + 1) * sizeof *piv) : NULL;
+    int *piv = buf ? malloc((nn + MAX_DIM + nstate) * sizeof *piv) : NULL;
     if (piv == NULL) {
         free(buf);
         free(w);
         return FRICREG_ENOMEM;
     }
     *w = (struct fr_aft_march){.N = N, .nc = nc, .nstate = nstate, .us = buf, .piv = piv};
+    w->slipped = piv + nn + MAX_DIM;
     w->fs = w->us + 3 * N;
     w->ts = w->fs + 3 * N;
     w->x = w->ts + 9 * N;
     w->state = w->x + N;
     w->start = w->state + nstate;
-    w->settled = w->start + nstate;
-    w->kept = w->settled + nstate;
-    w->up = w->kept + nstate;
-    w->fp = w->up + MAX_DIM * nc;
-    w->fm = w->fp + MAX_DIM * nc;
-    w->fu = w->fm + MAX_DIM * nc;
-    w->ps = w->fu + MAX_DIM * nc;
+    w->kept = w->start + nstate;
+    w->ps = w->kept + nstate;
     w->pd = w->ps + nstate;
-    w->A = w->pd + nstate;
-    w->gs = w->A + nn * nn;
-    w->pu = w->gs + MAX_DIM * nc * nn;
+    w->fu = w->pd + nstate;
+    w->A = w->fu + MAX_DIM * nc;
+    w->sens = w->A + nn * nn;
+    w->psi = w->sens + nstate * b;
+    w->tsl = w->psi + MAX_DIM * nstate;
+    w->twl = w->tsl + MAX_DIM * nstate;
+    w->v = w->twl + MAX_DIM * nstate;
+    w->g = w->v + MAX_DIM * b;
+    w->wb = w->g + BLOCK * MAX_DIM * b;
+    w->phi = w->wb + nc * BLOCK;
     *out = w;
     return FRICREG_OK;
 }
@@ -134,6 +159,26 @@ static double moved_by(const struct fr_aft_march *w, const double *a, const doub
     }
     *tol = 0x1p-46 * scale;
     return moved;
+}
+
+/* The centred state into w->state: state i, a slider's position along tangential component
+ * i % td, at the middle of that component's samples in w->us, whose largest and smallest
+ * samples go into w->hi, w->lo. */
+static void centre(const fricreg_element_type *type, struct fr_aft_march *w, size_t nstate)
+{
+    size_t N = w->samples, td = (size_t)(w->dim - type->kind->normal);
+    for (size_t a = 0; a < td; a++) {
+        const double *ua = w->us + a * N;
+        w->hi[a] = w->lo[a] = 0;
+        for (size_t n = 1; n < N; n++) {
+            w->lo[a] = ua[n] < ua[w->lo[a]] ? n : w->lo[a];
+            w->hi[a] = ua[n] > ua[w->hi[a]] ? n : w->hi[a];
+        }
+    }
+    for (size_t i = 0; i < nstate; i++) {
+        const double *ua = w->us + (i % td) * N;
+        w->state[i] = 0.5 * ua[w->lo[i % td]] + 0.5 * ua[w->hi[i % td]];
+    }
 }
 
 /* One period over w->us from w->state (left at the period's end): the forces in w->fs and,
@@ -239,106 +284,146 @@ static void coefficients(const fricreg_aft *a, struct fr_aft_march *w, int dim, 
     }
 }
 
-/* The march of u moved by dh in its coefficient col, from the settled state, into f. */
-static int moved(const fricreg_aft *a, struct fr_aft_march *w, const fricreg_element_type *type,
-                 const double *params, const double *u, size_t col, double dh, double *f)
+/* One sample's step of the sensitivities, slider by slider (the file's comment): V = Phi_n -
+ * S_s into w->v, t_s V added into g[td td nc], S_s' = Phi_n - T_s V; in the first pass Psi_s' =
+ * T_s Psi_s and whether the slider slipped (T_s not I). */
+static void sensitivity_step(struct fr_aft_march *w, size_t td, size_t ns, size_t nc, int first,
+                             double *g)
 {
-    int dim = fricreg_element_dim(type);
-    size_t nstate = fricreg_element_nstate(type);
-    memcpy(w->up, u, (size_t)dim * a->nc * sizeof *u);
-    w->up[col] += dh;
-    sample(a, w, w->up, dim);
-    memcpy(w->state, w->settled, nstate * sizeof *w->state);
-    int status = march(type, params, w, dim, nstate, 0);
-    if (status == FRICREG_OK)
-        coefficients(a, w, dim, f);
-    return status;
+    size_t b = td * nc, blk = td * td;
+    memset(g, 0, td * b * sizeof *g);
+    for (size_t s = 0; s < ns; s++) {
+        double *S = w->sens + td * s * b;
+        const double *t = w->tsl + blk * s, *T = w->twl + blk * s;
+        for (size_t r = 0; r < td; r++)
+            for (size_t col = 0; col < b; col++)
+                w->v[r * b + col] = (col / nc == r ? w->phi[col % nc] : 0.0) - S[r * b + col];
+        for (size_t r = 0; r < td; r++)
+            for (size_t col = 0; col < b; col++)
+                S[r * b + col] = col / nc == r ? w->phi[col % nc] : 0.0;
+        for (size_t r = 0; r < td; r++)
+            for (size_t c = 0; c < td; c++)
+                for (size_t col = 0; col < b; col++) {
+                    g[r * b + col] += t[r * td + c] * w->v[c * b + col];
+                    S[r * b + col] -= T[r * td + c] * w->v[c * b + col];
+                }
+        if (!first)
+            continue;
+        double *P = w->psi + blk * s, next[MAX_DIM * MAX_DIM] = {0.0};
+        for (size_t a = 0; a < blk; a++) {
+            w->slipped[s] |= T[a] != (double)(a / td == a % td);
+            for (size_t c = 0; c < td; c++)
+                next[a] += T[(a / td) * td + c] * P[c * td + a % td];
+        }
+        memcpy(P, next, blk * sizeof *P);
+    }
 }
 
-/* The Jacobian of a law with state, by central differences of the march. */
-static int differences(const fricreg_aft *a, struct fr_aft_march *w,
-                       const fricreg_element_type *type, const double *params, const double *u,
-                       double h, double *jac)
+/* The transform of the block's k samples' derivatives in w->g, weighted by w->wb, added into
+ * jac: for each component a, jac's rows a nc .. by one dgemm (row-major C = W G, as BLAS's
+ * column-major C^T = G^T W^T). */
+static void transform_block(struct fr_aft_march *w, int td, int nc, int k, double *jac)
 {
-    size_t b = (size_t)fricreg_element_dim(type) * a->nc;
-    for (size_t col = 0; col < b; col++) {
-        double up = u[col] + h, um = u[col] - h, span = up - um; /* as rounded */
-        int status = moved(a, w, type, params, u, col, up - u[col], w->fp);
-        if (status == FRICREG_OK)
-            status = moved(a, w, type, params, u, col, um - u[col], w->fm);
+    int b = td * nc, ldg = td * b, ldw = BLOCK;
+    double one = 1.0;
+    for (int a = 0; a < td; a++)
+        dgemm_("N", "N", &b, &nc, &k, &one, w->g + (size_t)(a * b), &ldg, w->wb, &ldw, &one,
+               jac + (size_t)(a * nc * b), &b, 1, 1);
+}
+
+/* One period from the settled state w->start over the samples in w->us, the sensitivities
+ * w->sens going with it; in the first pass Psi and the slips, in the second the transform of
+ * d f_n / d u added into jac (the coefficients' sums, as the FFT's: 1/N for the mean, 2/N for
+ * the harmonics). */
+static int sensitive_period(const fricreg_aft *a, struct fr_aft_march *w,
+                            const fricreg_element_type *type, const double *params, int first,
+                            double *jac)
+{
+    size_t N = a->N, nc = a->nc, td = (size_t)w->dim, b = td * nc, k = 0;
+    size_t ns = fricreg_element_nstate(type) / td;
+    memcpy(w->state, w->start, ns * td * sizeof *w->state);
+    for (size_t n = 0; n < N; n++) {
+        double u[MAX_DIM], f[MAX_DIM];
+        for (size_t d = 0; d < td; d++)
+            u[d] = w->us[d * N + n];
+        for (size_t j = 0; j < nc; j++)
+            w->phi[j] = fr_aft_sample_basis(a, j, n);
+        type->kind->slider_tangents(type, params, w->state, u, w->tsl, w->twl);
+        int status = fricreg_element_eval(type, params, w->state, u, f, NULL, NULL, w->state);
         if (status != FRICREG_OK)
             return status;
-        for (size_t row = 0; row < b; row++)
-            jac[row * b + col] = (w->fp[row] - w->fm[row]) / span;
-    }
-    return FRICREG_OK;
-}
-
-/* One period from s = settled + dh e_j (j < nstate) over the samples in w->us: P(s) into
- * w->state, the forces' coefficients into f. */
-static int from_state(const fricreg_aft *a, struct fr_aft_march *w,
-                      const fricreg_element_type *type, const double *params, size_t j, double dh,
-                      double *f)
-{
-    memcpy(w->state, w->settled, w->nstate_now * sizeof *w->state);
-    if (j < w->nstate_now)
-        w->state[j] += dh;
-    int status = period(type, params, w, w->dim, 0);
-    if (status == FRICREG_OK)
-        coefficients(a, w, w->dim, f);
-    return status;
-}
-
-/* The Jacobian of a law with state by the implicit function theorem on the settled state s,
- * s = P(s, u): dF/du = G_u + G_s (I - P_s)^-1 P_u, G the forces of one period from s, each
- * derivative by central differences of one period (aft_2d.c's chain, by differences). 1
- * when I - P_s is singular (a slider stuck all period: its state is any, the march's
- * differences hold it), else a status. */
-static int implicit(const fricreg_aft *a, struct fr_aft_march *w, const fricreg_element_type *type,
-                    const double *params, const double *u, double h, double *jac)
-{
-    size_t ns = w->nstate_now, b = (size_t)w->dim * a->nc;
-    int n = (int)ns, nrhs = (int)b, info, status;
-    sample(a, w, u, w->dim);
-    double tol;
-    moved_by(w, w->settled, w->settled, ns, &tol);
-    for (size_t j = 0; j < ns; j++) { /* G_s and I - P_s, column j */
-        double sj = w->settled[j], dh = 0x1p-20 * fmax(fabs(sj), 0x1p46 * tol);
-        double span = (sj + dh) - (sj - dh);
-        if ((status = from_state(a, w, type, params, j, dh, w->fp)) != FRICREG_OK)
-            return status;
-        memcpy(w->ps, w->state, ns * sizeof *w->ps);
-        if ((status = from_state(a, w, type, params, j, -dh, w->fm)) != FRICREG_OK)
-            return status;
-        for (size_t i = 0; i < ns; i++)
-            w->A[j * ns + i] = (i == j) - (w->ps[i] - w->state[i]) / span;
-        for (size_t r = 0; r < b; r++)
-            w->gs[r * ns + j] = (w->fp[r] - w->fm[r]) / span;
-    }
-    for (size_t col = 0; col < b; col++) { /* G_u into jac, P_u into pu, column col */
-        double span = (u[col] + h) - (u[col] - h);
-        for (int side = 0; side < 2; side++) {
-            memcpy(w->up, u, b * sizeof *u);
-            w->up[col] += side == 0 ? h : -h;
-            sample(a, w, w->up, w->dim);
-            if ((status = from_state(a, w, type, params, ns, 0.0, side == 0 ? w->fp : w->fm)) !=
-                FRICREG_OK)
-                return status;
-            memcpy(side == 0 ? w->ps : w->pd, w->state, ns * sizeof *w->ps);
+        sensitivity_step(w, td, ns, nc, first, w->g + k * td * b);
+        if (first)
+            continue;
+        for (size_t j = 0; j < nc; j++)
+            w->wb[j * BLOCK + k] = w->phi[j] * (j == 0 ? 1.0 : 2.0) / (double)N;
+        if (++k == BLOCK || n + 1 == N) {
+            transform_block(w, (int)td, (int)nc, (int)k, jac);
+            k = 0;
         }
-        for (size_t r = 0; r < b; r++)
-            jac[r * b + col] = (w->fp[r] - w->fm[r]) / span;
-        for (size_t i = 0; i < ns; i++)
-            w->pu[col * ns + i] = (w->ps[i] - w->pd[i]) / span;
     }
-    dgesv_(&n, &nrhs, w->A, &n, w->piv, w->pu, &n, &info);
-    if (info != 0)
-        return 1;
-    for (size_t r = 0; r < b; r++)
-        for (size_t col = 0; col < b; col++)
-            for (size_t j = 0; j < ns; j++)
-                jac[r * b + col] += w->gs[r * ns + j] * w->pu[col * ns + j];
     return FRICREG_OK;
+}
+
+/* d m_r / d u_col of the middle m_r = (u_r(hi) + u_r(lo)) / 2 of component r: the basis at
+ * its largest and smallest samples; a component constant over the samples (at rest) moves
+ * with its mean alone (a pure harmonic's largest and smallest samples cancel). */
+static double middle_derivative(const fricreg_aft *a, const struct fr_aft_march *w, size_t r,
+                                size_t col)
+{
+    size_t nc = a->nc, j = col % nc;
+    if (col / nc != r)
+        return 0.0;
+    if (w->hi[r] == w->lo[r])
+        return j == 0 ? 1.0 : 0.0;
+    return 0.5 * fr_aft_sample_basis(a, j, w->hi[r]) + 0.5 * fr_aft_sample_basis(a, j, w->lo[r]);
+}
+
+/* The periodic start of the sensitivities in w->sens from the first pass's R_s (there) and
+ * Psi_s: (I - Psi_s)^-1 R_s for a slider that slipped, else the middle's derivative. */
+static void periodic_start(const fricreg_aft *a, struct fr_aft_march *w, size_t ns)
+{
+    int td = w->dim, nc = (int)a->nc, b = td * nc, info;
+    for (size_t s = 0; s < ns; s++) {
+        double *S = w->sens + (size_t)(td * b) * s, A[MAX_DIM * MAX_DIM];
+        if (!w->slipped[s]) {
+            for (int r = 0; r < td; r++)
+                for (int col = 0; col < b; col++)
+                    S[r * b + col] = middle_derivative(a, w, (size_t)r, (size_t)col);
+            continue;
+        }
+        const double *P = w->psi + (size_t)(td * td) * s;
+        for (int r = 0; r < td; r++) /* by columns, as dgesv takes them */
+            for (int c = 0; c < td; c++)
+                A[c * td + r] = (r == c) - P[r * td + c];
+        for (int r = 0; r < td; r++)
+            for (int col = 0; col < b; col++)
+                w->v[col * td + r] = S[r * b + col];
+        dgesv_(&td, &b, A, &td, w->piv, w->v, &td, &info);
+        for (int r = 0; r < td; r++) /* info != 0 cannot be: Psi_s contracts */
+            for (int col = 0; col < b; col++)
+                S[r * b + col] = w->v[col * td + r];
+    }
+}
+
+/* The exact Jacobian of a law with state (the file's comment) into jac. */
+static int sensitivities(const fricreg_aft *a, struct fr_aft_march *w,
+                         const fricreg_element_type *type, const double *params, double *jac)
+{
+    size_t td = (size_t)w->dim, b = td * a->nc, ns = fricreg_element_nstate(type) / td;
+    memset(w->sens, 0, ns * td * b * sizeof *w->sens);
+    memset(w->psi, 0, ns * td * td * sizeof *w->psi);
+    for (size_t s = 0; s < ns; s++) {
+        w->slipped[s] = 0;
+        for (size_t r = 0; r < td; r++)
+            w->psi[(td * s + r) * td + r] = 1.0;
+    }
+    int status = sensitive_period(a, w, type, params, 1, NULL);
+    if (status != FRICREG_OK)
+        return status;
+    periodic_start(a, w, ns);
+    memset(jac, 0, b * b * sizeof *jac);
+    return sensitive_period(a, w, type, params, 0, jac);
 }
 
 /* The Jacobian of a law without state: column j of component c, the transform of
@@ -358,27 +443,24 @@ static void tangents(const fricreg_aft *a, struct fr_aft_march *w, int dim, doub
 }
 
 int fr_aft_march(const fricreg_aft *aft, struct fr_aft_march *w, const fricreg_element_type *type,
-                 const double *params, const double *u, double h, double *f, double *jac)
+                 const double *params, const double *u, double *f, double *jac)
 {
     int dim = fricreg_element_dim(type);
     size_t nstate = fricreg_element_nstate(type), b = (size_t)dim * aft->nc;
+    if (nstate > 0 && type->kind->slider_tangents == NULL)
+        return FRICREG_EINVAL;
     w->samples = aft->N;
     w->dim = dim;
     sample(aft, w, u, dim);
-    memset(w->state, 0, nstate * sizeof *w->state);
+    centre(type, w, nstate);
     int status = march(type, params, w, dim, nstate, jac != NULL && nstate == 0);
     if (status != FRICREG_OK)
         return status;
     coefficients(aft, w, dim, w->fu);
     if (jac != NULL && nstate == 0)
         tangents(aft, w, dim, jac);
-    if (jac != NULL && nstate > 0) {
-        memcpy(w->settled, w->start, nstate * sizeof *w->start);
-        w->nstate_now = nstate;
-        status = nstate <= MAX_NEWTON_STATES ? implicit(aft, w, type, params, u, h, jac) : 1;
-        if (status == 1)
-            status = differences(aft, w, type, params, u, h, jac);
-    }
+    if (jac != NULL && nstate > 0)
+        status = sensitivities(aft, w, type, params, jac);
     if (status == FRICREG_OK)
         memcpy(f, w->fu, b * sizeof *f);
     return status;

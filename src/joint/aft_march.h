@@ -23,11 +23,11 @@ void fr_aft_march_free(struct fr_aft_march *w);
 /* The coefficients f[dim nc] (component d's at d nc, the layout of fricreg_aft.h) of the
  * element of the given type and params (checked by fricreg_element_explain) under the
  * displacement of coefficients u[dim nc], on aft's N samples (fricreg_aft_create with N at
- * most the workspace's); with jac, their Jacobian [dim nc x dim nc] row-major, d f / d u.
- * h is the step of the central differences of a law with state, in units of u. w's N and nc
- * cover aft's. FRICREG_OK, or a status of the law's check at a sample (u beyond its range),
- * with nothing written. */
+ * most the workspace's); with jac, their Jacobian [dim nc x dim nc] row-major, d f / d u,
+ * exact for the samples. w's N and nc cover aft's. FRICREG_OK, a status of the law's check at
+ * a sample (u beyond its range), or FRICREG_EINVAL for a law with state but no slider
+ * tangents (element_kind.h: none in the table), with nothing written. */
 int fr_aft_march(const fricreg_aft *aft, struct fr_aft_march *w, const fricreg_element_type *type,
-                 const double *params, const double *u, double h, double *f, double *jac);
+                 const double *params, const double *u, double *f, double *jac);
 
 #endif

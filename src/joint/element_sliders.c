@@ -281,18 +281,36 @@ static double stored(const fricreg_element_type *type, const double *p, const do
     return sum;
 }
 
-/* One kind per line: name, dim, normal, family, sizes, harmonic balance's AFT. */
-#define FR_SLIDER_KIND(id, dim, normal, family, params, state, aft)                 \
-    const struct fr_element_kind fr_element_##id = {                                \
-        #id,  dim,     normal,  family, FR_ELEMENT_AFT_##aft, params, state, check, \
-        eval, elastic, project, stored};
+/* Each slider's return-mapping tangent t_s and t_s / k_s, the sliders of a law without a
+ * normal law (slider.h: d w_s' / d w_s = t_s / k_s, k_s I in a stick, a contraction in a
+ * slip). */
+static void slider_tangents(const fricreg_element_type *type, const double *p, const double *state,
+                            const double *u, double *ts, double *tw)
+{
+    int td = type->kind->dim;
+    size_t ns = type->ns, block = (size_t)(td * td);
+    for (size_t s = 0; s < ns; s++) {
+        double f[3], w[3];
+        fr_slider_return(p[s], p[ns + s], 0.0, td, u, &state[(size_t)td * s], f, w, &ts[block * s],
+                         NULL);
+        for (size_t a = 0; a < block; a++)
+            tw[block * s + a] = ts[block * s + a] / p[s];
+    }
+}
 
-FR_SLIDER_KIND(jenkins, 1, 0, 0, params_plain, state_1, SLIDERS)
-FR_SLIDER_KIND(jenkins_2d, 2, 0, 0, params_plain, state_2, MARCH)
-FR_SLIDER_KIND(jenkins_3d, 3, 0, 0, params_plain, state_3, MARCH)
-FR_SLIDER_KIND(jenkins_normal, 2, 1, 0, params_normal, state_1, LIFTOFF)
-FR_SLIDER_KIND(contact_3d, 3, 1, 0, params_normal, state_2, CONTACT_3D)
-FR_SLIDER_KIND(iwan, 1, 0, 1, params_plain, state_1, SLIDERS)
-FR_SLIDER_KIND(iwan_2d, 2, 0, 1, params_plain, state_2, MARCH)
-FR_SLIDER_KIND(iwan_3d, 3, 0, 1, params_plain, state_3, MARCH)
-FR_SLIDER_KIND(iwan_normal, 2, 1, 1, params_normal, state_1, LIFTOFF)
+/* One kind per line: name, dim, normal, family, sizes, harmonic balance's AFT, and the slider
+ * tangents of the march (MARCH's only). */
+#define FR_SLIDER_KIND(id, dim, normal, family, params, state, aft, tangents)                \
+    const struct fr_element_kind fr_element_##id = {                                         \
+        #id,     dim,     normal, family,  FR_ELEMENT_AFT_##aft, params, state, check, eval, \
+        elastic, project, stored, tangents};
+
+FR_SLIDER_KIND(jenkins, 1, 0, 0, params_plain, state_1, SLIDERS, NULL)
+FR_SLIDER_KIND(jenkins_2d, 2, 0, 0, params_plain, state_2, MARCH, slider_tangents)
+FR_SLIDER_KIND(jenkins_3d, 3, 0, 0, params_plain, state_3, MARCH, slider_tangents)
+FR_SLIDER_KIND(jenkins_normal, 2, 1, 0, params_normal, state_1, LIFTOFF, NULL)
+FR_SLIDER_KIND(contact_3d, 3, 1, 0, params_normal, state_2, CONTACT_3D, NULL)
+FR_SLIDER_KIND(iwan, 1, 0, 1, params_plain, state_1, SLIDERS, NULL)
+FR_SLIDER_KIND(iwan_2d, 2, 0, 1, params_plain, state_2, MARCH, slider_tangents)
+FR_SLIDER_KIND(iwan_3d, 3, 0, 1, params_plain, state_3, MARCH, slider_tangents)
+FR_SLIDER_KIND(iwan_normal, 2, 1, 1, params_normal, state_1, LIFTOFF, NULL)

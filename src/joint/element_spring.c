@@ -73,4 +73,5 @@ static double stored(const fricreg_element_type *type, const double *p, const do
 }
 
 const struct fr_element_kind fr_element_spring = {
-    "spring", 1, 0, 0, FR_ELEMENT_AFT_MARCH, one, none, check, eval, elastic, project, stored};
+    "spring", 1,       0,      0,   FR_ELEMENT_AFT_MARCH, one, none, check, eval,
+    elastic,  project, stored, NULL};
