@@ -540,10 +540,10 @@ FRICREG_API int fricreg_hb_set_newton(fricreg_hb *hb, double tol, int max_iter);
  *  Jacobian is not smooth): a converged corrector whose tangent turned by less than 90° is
  *  accepted once halving ds did not lower the angle and the contraction by a quarter, or when
  *  halving would take ds below ds_min; there, since 1.8, also one that the jump or the chord
- *  refused but that converged within 100 ds_min of the last point with its chord turned by
- *  less than 90° (a fold or kink finer than ds_min resolves, such as a sampled AFT's where a
- *  slider starts to stick). Below ds_min the step is tried once more along the
- *  secant of the last two points; then the continuation stops with
+ *  refused but that converged within 1e-4 of the last point (in the scaled unknowns) with its
+ *  chord turned by less than 90°: a fold or kink too fine to resolve, such as a sampled AFT's
+ *  where a slider starts to stick. Below ds_min the step is tried once more along the secant
+ *  of the last two points; then the continuation stops with
  *  FRICREG_EINTEGRATOR. (Until 1.6: grown by 1.5 after at most 4 corrector iterations, halved
  *  after a failure or a corrector that ended farther than ds/2 from its predictor; the
  *  defaults are unchanged.)

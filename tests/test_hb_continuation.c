@@ -618,9 +618,11 @@ int main(void)
 {
     Suite *s = suite_create("hb_continuation");
     TCase *tc = tcase_create("core"), *td = tcase_create("time_domain");
+    TCase *th = tcase_create("harmonics"); /* eight branches: half the program's time */
     tcase_set_timeout(tc, 120);
     tcase_set_timeout(td, 120);
-    tcase_add_test(tc, chain_every_harmonic);
+    tcase_set_timeout(th, 120);
+    tcase_add_test(th, chain_every_harmonic);
     tcase_add_test(tc, chain_coarse_ds_min);
     tcase_add_test(tc, peak_against_fixed_omega);
     tcase_add_test(tc, contact_pair_every_route);
@@ -631,6 +633,7 @@ int main(void)
     tcase_add_test(tc, peak_bad_input);
     tcase_add_test(td, contact_pair_time_domain);
     suite_add_tcase(s, tc);
+    suite_add_tcase(s, th);
     suite_add_tcase(s, td);
     SRunner *sr = srunner_create(s);
     srunner_run_all(sr, CK_NORMAL);

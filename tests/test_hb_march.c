@@ -326,7 +326,7 @@ static fricreg_hb *chain(int marched)
 
 /* The default continuation from 0.5 to 2 rad/s crosses the onset of stick near 1.3938, where
  * the march's exact Jacobian and centred stuck sliders (and the continuation's acceptance of
- * a fold finer than ds_min, fricreg_hb_set_continuation) carry it through; each dof's peak
+ * a fold too fine to resolve, fricreg_hb_set_continuation) carry it through; each dof's peak
  * then equals the exact AFT's to 2e-4 in RMS and 1e-3 in Omega (measured 6.3e-5 and 3.7e-4:
  * the samples' lag, as disk_on_a_line_is_jenkins's). Until 1.8 it stopped at 1.39377. */
 START_TEST(chain_through_stick)

@@ -352,16 +352,19 @@ END_TEST
 int main(void)
 {
     Suite *suite = suite_create("structure_ode_tolerances");
-    TCase *tc = tcase_create("core");
+    TCase *tc = tcase_create("core"), *sweeps = tcase_create("sweeps");
     tcase_set_timeout(tc, 60);
-    tcase_add_test(tc, test_rule_holds_the_dissipation);
+    tcase_set_timeout(sweeps, 60);
     tcase_add_test(tc, test_rule_values);
     tcase_add_test(tc, test_set_tolerances);
     tcase_add_test(tc, test_companion);
     tcase_add_test(tc, test_coarser_companion);
     tcase_add_test(tc, test_loose_tolerances_warn);
-    tcase_add_test(tc, test_loose_tolerances_any_unit);
+    /* the rule's runs over tolerances and units: two thirds of the program's time */
+    tcase_add_test(sweeps, test_rule_holds_the_dissipation);
+    tcase_add_test(sweeps, test_loose_tolerances_any_unit);
     suite_add_tcase(suite, tc);
+    suite_add_tcase(suite, sweeps);
     SRunner *sr = srunner_create(suite);
     srunner_run_all(sr, CK_NORMAL);
     int failed = srunner_ntests_failed(sr);

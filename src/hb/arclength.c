@@ -15,7 +15,7 @@
  * not fall with ds. A converged corrector whose tangent turned by less than 90° is accepted
  * there, once halving ds no longer lowered them by a quarter, or when halving would go below
  * ds_min (a converged residual is a solution), as is then one that the jump or the chord
- * refused within NEAR_REACH ds_min of the last point (a fold or kink finer than ds_min: the
+ * refused within NEAR_REACH of the last point (a fold or kink too fine to resolve: the
  * sampled march's, aft_march.c, turns a kink of the exact AFT into a tiny fold where a slider
  * starts to stick). Below ds_min the step is predicted once more
  * along the secant of the last two points before the continuation stops. A branch that runs
@@ -139,7 +139,7 @@ static int attempt(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, doubl
         fmax(-1.0,
              fmin(1.0, (fr_hb_dot(hb->qw, hb->tan, ld) - fr_hb_dot(b->yc, hb->tan, ld)) / h)));
     /* this close to the last point, the branch is finer than the continuation resolves */
-    *near = h <= NEAR_REACH * hb->ds_min && chord < KINK_MAX;
+    *near = h <= NEAR_REACH && chord < KINK_MAX;
     if (h > JUMP * ds) {
         snprintf(b->why, sizeof b->why,
                  "%s: the corrector ended %g from the last point, beyond %g ds = %g", fn, h, JUMP,
@@ -223,8 +223,8 @@ static int follow(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, double
                 sev_before = sev; /* 0 unless the corrector converged near the branch */
             }
             /* a converged corrector near the last point whose tangent turned (but not
-             * back), or one within NEAR_REACH ds_min that the chord or the jump refused (a
-             * fold or kink finer than ds_min: the march's near the onset of stick,
+             * back), or one within NEAR_REACH that the chord or the jump refused (a
+             * fold or kink too fine to resolve: the march's near the onset of stick,
              * aft_march.c), is a solution: accepted rather than the step halved below
              * ds_min */
             if ((sev > 0.0 || near) && alpha < KINK_MAX && 0.5 * ds < hb->ds_min) {

@@ -22,7 +22,8 @@
 #define KAPPA_MAX 0.5
 #define KINK_MAX 1.5707963267948966 /* 90°: a larger turn goes back along the branch */
 #define JUMP 4.0
-#define NEAR_REACH 100.0 /* ds_min: a fold or kink finer than the continuation resolves */
+#define NEAR_REACH \
+    1e-4 /* scaled: a fold or kink finer than a plot shows or a sampled AFT's error */
 #define CHORD_SLACK 1e-3 /* rad: above the chord's rounding, about tol/ds_min = 1e-4 */
 
 /* The next step after an accepted one of length ds: Allgower & Georg's factor on the
