@@ -489,9 +489,9 @@ int cli_hb(int argc, char **argv, FILE *out)
         return status;
     }
     fricreg_hb *hb = NULL;
-    if (fricreg_hb_create(md.n, md.m, o.harmonics, &hb) != FRICREG_OK) {
+    if ((status = cli_hb_create("hb", &md.s, o.harmonics, &hb)) != 0) {
         free_model(&md);
-        return cli_usage_error("hb", "cannot create the harmonic-balance driver (out of memory)");
+        return status;
     }
     status = set_model(&o, &md, hb);
     if (status == 0)

@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* hb_model.c — the structure and its elements for `fricreg-sim hb` and `nma` (hb_model.h). */
+#include <stdio.h>
 #include <string.h>
 
 #include "cli_input.h"
@@ -108,6 +109,23 @@ static const char *add_set(void *model, const struct cli_element_set *e, size_t 
     return fricreg_hb_add_elements(hb, e->type, e->me, n, e->J, e->params) == FRICREG_OK
                ? NULL
                : fricreg_hb_errmsg(hb);
+}
+
+int cli_hb_create(const char *cmd, const struct cli_hb_model *md, int harmonics, fricreg_hb **hb)
+{
+    int status = fricreg_hb_create(md->n, md->m, harmonics, hb);
+    if (status == FRICREG_OK)
+        return 0;
+    char what[200];
+    if (status == FRICREG_EINVAL)
+        snprintf(what, sizeof what,
+                 "%zu elements in all, %zu dofs, H = %d: harmonic balance takes 1 to 256 "
+                 "elements, up to 2^24 dofs (fricreg_hb_create)",
+                 md->m, md->n, harmonics);
+    else
+        snprintf(what, sizeof what, "cannot create the harmonic-balance driver (%s)",
+                 fricreg_strerror(status));
+    return cli_usage_error(cmd, what);
 }
 
 int cli_hb_set_model(const struct cli_hb_model_options *o, const struct cli_hb_model *md,

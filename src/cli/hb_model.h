@@ -25,7 +25,7 @@ struct cli_hb_model_options {
 
 /* The model: M, K, C (C.colptr NULL: Rayleigh or none) n x n as the files' compressed columns;
  * the elements of one kind (el) or the --elements sets (sets.n > 0), their rows dense; m
- * elements in all (<= 256). */
+ * elements in all (cli_hb_create refuses more than harmonic balance's 256). */
 struct cli_hb_model {
     size_t n, m;
     struct cli_sparse M, K, C;
@@ -66,6 +66,11 @@ int cli_hb_check_model(const struct cli_hb_model_options *o);
  * after one line on stderr naming the option and the file. */
 int cli_hb_read_model(const struct cli_hb_model_options *o, struct cli_hb_model *md);
 void cli_hb_free_model(struct cli_hb_model *md);
+
+/* fricreg_hb_create for the model at H harmonics into *hb: 0, or CLI_EXIT_USAGE after one line
+ * on stderr for cmd, naming the limits where the model is beyond them (more than 256 elements
+ * over all sets) or the status. */
+int cli_hb_create(const char *cmd, const struct cli_hb_model *md, int harmonics, fricreg_hb **hb);
 
 /* The matrices, Rayleigh's damping and the elements into hb; 0, or CLI_EXIT_USAGE after one line
  * on stderr with the library's reason. */

@@ -235,9 +235,9 @@ int cli_nma(int argc, char **argv, FILE *out)
         return status;
     }
     fricreg_hb *hb = NULL;
-    if (fricreg_hb_create(md.n, md.m, o.harmonics, &hb) != FRICREG_OK) {
+    if ((status = cli_hb_create("nma", &md, o.harmonics, &hb)) != 0) {
         cli_hb_free_model(&md);
-        return cli_usage_error("nma", "cannot create the harmonic-balance driver (out of memory)");
+        return status;
     }
     status = cli_hb_set_model(&o.model, &md, hb);
     if (status == 0 && fricreg_hb_set_newton(hb, o.newton_tol, o.newton_max) != FRICREG_OK)
