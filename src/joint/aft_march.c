@@ -400,7 +400,7 @@ static void periodic_start(const fricreg_aft *a, struct fr_aft_march *w, size_t 
             for (int col = 0; col < b; col++)
                 w->v[col * td + r] = S[r * b + col];
         dgesv_(&td, &b, A, &td, w->piv, w->v, &td, &info);
-        for (int r = 0; r < td; r++) /* info != 0 cannot be: Psi_s contracts */
+        for (int r = 0; r < td; r++) /* info != 0 only where a slip rounded T_s to I: S_s = R_s */
             for (int col = 0; col < b; col++)
                 S[r * b + col] = w->v[col * td + r];
     }
