@@ -223,11 +223,13 @@ int main(void)
 {
     Suite *s = suite_create("hb_sparse");
     TCase *tc = tcase_create("hb_sparse");
+    TCase *branches = tcase_create("branches"); /* dense against sparse: 80 % of the time */
     tcase_add_test(tc, dense_and_sparse_forms_agree);
-    tcase_add_test(tc, two_hundred_dofs);
+    tcase_add_test(branches, two_hundred_dofs);
     tcase_add_test(tc, ten_thousand_dofs);
     tcase_add_test(tc, bad_csc_input);
     suite_add_tcase(s, tc);
+    suite_add_tcase(s, branches);
     SRunner *sr = srunner_create(s);
     srunner_run_all(sr, CK_NORMAL);
     int failed = srunner_ntests_failed(sr);
