@@ -1,11 +1,9 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* hb_march.c — the cost of harmonic balance on a law it knows only by its eval (the march of
  * src/joint/aft_march.c) against the exact AFT of the same element, in one process: NLvib's
- * chain (bench/nlvib/chain_jenkins.m: unit masses and springs ground-1-2-3, C = 0.02 K,
- * cos(Omega t) on dof 2, kt = 20, mu N = 1 between dof 1 and the ground and between dofs 1 and
- * 2, H = 7) with jenkins elements (exact) or jenkins_2d elements whose second components sit on
- * dofs 4 and 5 of their own (marched), continued from 0.5 to 2 rad/s with the defaults, with
- * and without stability: points, median seconds, the ratio, and each dof's located peak.
+ * chain (tests/support/hb_chain.h, H = 7) with jenkins elements (exact) or jenkins_2d elements
+ * (marched), continued from 0.5 to 2 rad/s with the defaults, with and without stability:
+ * points, median seconds, the ratio, and each dof's located peak.
  * Usage: fricreg-bench-hb-march [repeats]. */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime */
 #include <math.h>
@@ -13,10 +11,8 @@
 #include <stdlib.h>
 #include <time.h>
 
-#include "fricreg_element.h"
 #include "fricreg_hb.h"
-
-#define H 7
+#include "hb_chain.h"
 
 static double now(void)
 {
@@ -31,42 +27,6 @@ static int cmp(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-static fricreg_hb *chain(int marched, int stability)
-{
-    size_t n = marched ? 5 : 3, dim = marched ? 2 : 1;
-    double M[25] = {0}, K[25] = {0}, C[25], pc[5] = {0, 1, 0, 0, 0}, ps[5] = {0};
-    double J[20] = {0}, p[4] = {20, 1, 20, 1};
-    for (size_t i = 0; i < n; i++) {
-        M[i * n + i] = 1.0;
-        K[i * n + i] = i < 3 ? 2.0 : 1.0;
-        if (i > 0 && i < 3)
-            K[i * n + i - 1] = K[(i - 1) * n + i] = -1.0;
-    }
-    for (size_t i = 0; i < n * n; i++)
-        C[i] = 0.02 * K[i];
-    J[0] = 1.0; /* element 0 on dof 1; element 1 on dof 2 - dof 1 */
-    J[dim * n] = -1.0;
-    J[dim * n + 1] = 1.0;
-    if (marched) { /* their second components on dofs 4 and 5 */
-        J[n + 3] = 1.0;
-        J[3 * n + 4] = 1.0;
-    }
-    fricreg_hb *hb = NULL;
-    if (fricreg_hb_create(n, 2, H, &hb) != FRICREG_OK)
-        return NULL;
-    fricreg_hb_set_mass(hb, n, M);
-    fricreg_hb_set_stiffness(hb, n, K);
-    fricreg_hb_set_damping(hb, n, C);
-    fricreg_hb_set_excitation(hb, n, pc, ps);
-    fricreg_hb_set_stability(hb, stability);
-    if (fricreg_hb_add_elements(hb, fricreg_element_lookup(marched ? "jenkins_2d" : "jenkins"), 2,
-                                n, J, p) != FRICREG_OK) {
-        fricreg_hb_free(hb);
-        return NULL;
-    }
-    return hb;
-}
-
 int main(int argc, char **argv)
 {
     int repeats = argc > 1 ? atoi(argv[1]) : 3;
@@ -75,10 +35,10 @@ int main(int argc, char **argv)
     for (int stability = 0; stability <= 1; stability++) {
         double seconds[2], peaks[2][3][2], t[64];
         for (int marched = 0; marched <= 1; marched++) {
-            fricreg_hb *hb = chain(marched, stability);
+            fricreg_hb *hb = hb_chain(marched, stability);
             if (hb == NULL)
                 return 1;
-            size_t nq = (size_t)(marched ? 4 : 2) * (2 * H + 1);
+            size_t nq = hb_chain_nq(marched);
             int status = 0;
             for (int r = 0; r < repeats; r++) {
                 double t0 = now();

@@ -33,6 +33,7 @@
 
 #include "fricreg_element.h"
 #include "fricreg_hb.h"
+#include "hb_chain.h"
 
 #define H 3
 #define NC (2 * H + 1)
@@ -284,58 +285,20 @@ START_TEST(stability_and_truncation)
 }
 END_TEST
 
-/* NLvib's chain (bench/nlvib/chain_jenkins.m: unit masses and springs ground-1-2-3, C =
- * 0.02 K, cos(Omega t) on dof 2, kt = 20, mu N = 1 between dof 1 and the ground and between
- * dofs 1 and 2) at H = 7: with jenkins on the 3 dofs (exact), or with jenkins_2d whose second
- * components sit on dofs 4 and 5 of their own (unit mass and spring, unforced: at rest). */
-#define CHAIN_H 7
-static fricreg_hb *chain(int marched)
-{
-    size_t n = marched ? 5 : 3;
-    double M[25] = {0}, K[25] = {0}, C[25], pc[5] = {0, 1, 0, 0, 0}, ps[5] = {0};
-    double J[20] = {0}, p[4] = {20, 1, 20, 1};
-    for (size_t i = 0; i < n; i++) {
-        M[i * n + i] = 1.0;
-        K[i * n + i] = i < 3 ? 2.0 : 1.0;
-        if (i > 0 && i < 3)
-            K[i * n + i - 1] = K[(i - 1) * n + i] = -1.0;
-    }
-    for (size_t i = 0; i < n * n; i++)
-        C[i] = 0.02 * K[i];
-    size_t dim = marched ? 2 : 1; /* element e's rows e dim .. */
-    J[0] = 1.0;
-    J[dim * n] = -1.0;
-    J[dim * n + 1] = 1.0;
-    if (marched) {
-        J[n + 3] = 1.0;
-        J[3 * n + 4] = 1.0;
-    }
-    fricreg_hb *hb = NULL;
-    ck_assert_int_eq(fricreg_hb_create(n, 2, CHAIN_H, &hb), FRICREG_OK);
-    ck_assert_int_eq(fricreg_hb_set_mass(hb, n, M), FRICREG_OK);
-    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, n, K), FRICREG_OK);
-    ck_assert_int_eq(fricreg_hb_set_damping(hb, n, C), FRICREG_OK);
-    ck_assert_int_eq(fricreg_hb_set_excitation(hb, n, pc, ps), FRICREG_OK);
-    ck_assert_int_eq(fricreg_hb_set_stability(hb, 0), FRICREG_OK);
-    ck_assert_int_eq(
-        fricreg_hb_add_elements(hb, fricreg_element_lookup(marched ? "jenkins_2d" : "jenkins"), 2,
-                                n, J, p),
-        FRICREG_OK);
-    return hb;
-}
-
-/* The default continuation from 0.5 to 2 rad/s crosses the onset of stick near 1.3938, where
+/* NLvib's chain (hb_chain.h), marched and exact, at H = 7: the default continuation from 0.5
+ * to 2 rad/s crosses the onset of stick near 1.3938, where
  * the march's exact Jacobian and centred stuck sliders (and the continuation's acceptance of
  * a fold too fine to resolve, fricreg_hb_set_continuation) carry it through; each dof's peak
  * then equals the exact AFT's to 2e-4 in RMS and 1e-3 in Omega (measured 6.3e-5 and 3.7e-4:
  * the samples' lag, as disk_on_a_line_is_jenkins's). Until 1.8 it stopped at 1.39377. */
 START_TEST(chain_through_stick)
 {
-    fricreg_hb *marched = chain(1), *exact = chain(0);
-    const size_t nc = 2 * CHAIN_H + 1;
+    fricreg_hb *marched = hb_chain(1, 0), *exact = hb_chain(0, 0);
     double worst_rms = 0.0, worst_omega = 0.0;
-    ck_assert_int_eq(fricreg_hb_continue(exact, 0.5, 2.0, 2 * nc, NULL), FRICREG_OK);
-    ck_assert_int_eq(fricreg_hb_continue(marched, 0.5, 2.0, 4 * nc, NULL), FRICREG_OK);
+    ck_assert_ptr_nonnull(marched);
+    ck_assert_ptr_nonnull(exact);
+    ck_assert_int_eq(fricreg_hb_continue(exact, 0.5, 2.0, hb_chain_nq(0), NULL), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_continue(marched, 0.5, 2.0, hb_chain_nq(1), NULL), FRICREG_OK);
     for (size_t dof = 0; dof < 3; dof++) {
         double om_m, rms_m, om_e, rms_e;
         ck_assert_int_eq(fricreg_hb_peak(marched, dof, &om_m, &rms_m), FRICREG_OK);
