@@ -454,9 +454,10 @@ FRICREG_API int fricreg_hb_set_jenkins_2d_normal(fricreg_hb *hb, size_t m, size_
  *  which would round). Every other type (jenkins_2d, jenkins_3d, iwan_2d, iwan_3d, spring, and
  *  any law added to the table) runs the march of its fricreg_element_eval: its dim components
  *  at N = 64 (2H + 1) samples of the period, rounded up to a power of two, marched from its
- *  sliders at the middle of u's range (a slider stuck all period then equals the exact AFT's
- *  centred one) until the state repeats (a slow contraction found by Newton's method on the
- *  periodic state), the coefficients by FFT; a law with state extrapolated by Richardson over
+ *  sliders at the middle of the orbit (a slider stuck all period then equals the exact 1-D
+ *  AFT's centred one, a 2-D one the 3-D contact's, in its orbit's enclosing circle) until the
+ *  state repeats (a slow contraction found by Newton's method on the periodic state), the
+ *  coefficients by FFT; a law with state extrapolated by Richardson over
  *  N and N/2 samples (its samples lag by a term in 1/N: 4e-5 of the scale for jenkins_2d moved
  *  along one axis against the exact 1-D Jenkins at H = 3), its Jacobian the exact one of the
  *  sampled march (its sliders' sensitivities carried through the period, started periodic);

@@ -5,6 +5,9 @@
  * Where the numbers come from:
  *   - a slider stuck all period is centred: f = kt (u - (u_max + u_min) / 2) at the samples,
  *     the exact 1-D AFT's choice (aft_exact.c), a closed form the march meets to 1e-14 of kt u;
+ *     a 2-D slider at its orbit's enclosing circle's centre, the 3-D contact's sampled AFT's
+ *     choice at a constant normal force, which the march equals (forces to 1e-14 of kt, the
+ *     Jacobian to 1e-12);
  *   - the Jacobian is the exact derivative of the sampled march: it equals central differences
  *     of the march's own forces (step 1e-7) to 1e-8 of the sliders' stiffness (measured 5.4e-10:
  *     the differences' own error), on orbits
@@ -91,6 +94,38 @@ START_TEST(stuck_slider_is_centred)
 }
 END_TEST
 
+/* jenkins_2d stuck on a 2-D orbit whose per-component middle is not its centre: the march
+ * centres the slider in the orbit's smallest enclosing circle, as the 3-D contact's sampled AFT
+ * does at a constant normal force (kn = 0, mu n0 = mun), which it then equals, forces and
+ * Jacobian. */
+START_TEST(stuck_disk_is_the_contacts)
+{
+    struct bench b = bench_new();
+    const fricreg_element_type *T = fricreg_element_lookup("jenkins_2d");
+    const double p[2] = {20.0, 1.0}, mu = 0.5, n0 = 2.0;
+    double u[2 * NC], g[NC] = {0}, f[2 * NC], fc[2 * NC], nf[NC];
+    double *J = malloc(4 * NC * NC * sizeof *J), *Jc = malloc(9 * NC * NC * sizeof *Jc);
+    ck_assert_ptr_nonnull(J);
+    ck_assert_ptr_nonnull(Jc);
+    orbit(2, 0.05, u); /* kt r = 0.88 mun: stuck, the circle's centre off each component's middle */
+    ck_assert_int_eq(fr_aft_march(b.aft, b.w, T, p, u, f, J), FRICREG_OK);
+    ck_assert_int_eq(fricreg_aft_jenkins_2d_normal_sampled(b.aft, p[0], mu, n0, 0.0, NC, u, g, fc,
+                                                           nf, Jc),
+                     FRICREG_OK);
+    double worst = 0.0, worst_jac = 0.0;
+    for (int i = 0; i < 2 * NC; i++) {
+        worst = fmax(worst, fabs(f[i] - fc[i]));
+        for (int j = 0; j < 2 * NC; j++)
+            worst_jac = fmax(worst_jac, fabs(J[i * 2 * NC + j] - Jc[i * 3 * NC + j]));
+    }
+    ck_assert_msg(worst <= 1e-14 * p[0] && worst_jac <= 1e-12 * p[0],
+                  "forces %g, Jacobian %g from the contact's", worst, worst_jac);
+    free(J);
+    free(Jc);
+    bench_free(b);
+}
+END_TEST
+
 /* The largest |J - central differences| over the Jacobian of type at u. */
 static double jacobian_error(struct bench b, const fricreg_element_type *T, const double *p,
                              const double *u)
@@ -149,6 +184,7 @@ int main(void)
     Suite *s = suite_create("aft_march");
     TCase *tc = tcase_create("march");
     tcase_add_test(tc, stuck_slider_is_centred);
+    tcase_add_test(tc, stuck_disk_is_the_contacts);
     tcase_add_test(tc, jacobian_is_the_marchs);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);

@@ -35,6 +35,7 @@
 #include <string.h>
 
 #include "aft_internal.h"
+#include "enclosing_circle.h"
 #include "slider.h"
 
 #define PLAIN 4       /* periods marched from the enclosing circle's centre before Newton */
@@ -194,107 +195,15 @@ static void solve_periodic(const double psi[4], const double r[2], double x[2])
     }
 }
 
-/* ---- the smallest enclosing circle of the sampled orbit ------------------------------- */
-
-struct circle {
-    double c[2], r2;
-    size_t sup[3]; /* the samples on it that define it */
-    int nsup;
-};
-
-static double dist2(const struct samples *s, size_t n, const double c[2])
-{
-    double dx = s->ux[n] - c[0], dy = s->uy[n] - c[1];
-    return dx * dx + dy * dy;
-}
-
-static struct circle through2(const struct samples *s, size_t i, size_t j)
-{
-    struct circle k = {.c = {0.5 * (s->ux[i] + s->ux[j]), 0.5 * (s->uy[i] + s->uy[j])},
-                       .sup = {i, j},
-                       .nsup = 2};
-    k.r2 = fmax(dist2(s, i, k.c), dist2(s, j, k.c));
-    return k;
-}
-
-/* The circle through three samples; nearly collinear, the widest pair's. */
-static struct circle through3(const struct samples *s, size_t i, size_t j, size_t k)
-{
-    double bx = s->ux[j] - s->ux[i], by = s->uy[j] - s->uy[i];
-    double cx = s->ux[k] - s->ux[i], cy = s->uy[k] - s->uy[i];
-    double det = 2.0 * (bx * cy - by * cx), b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
-    if (!(fabs(det) > 1e-12 * (b2 + c2))) {
-        struct circle p = through2(s, i, j), q = through2(s, i, k), t = through2(s, j, k);
-        return p.r2 >= q.r2 && p.r2 >= t.r2 ? p : q.r2 >= t.r2 ? q : t;
-    }
-    struct circle out = {.c = {s->ux[i] + (cy * b2 - by * c2) / det,
-                               s->uy[i] + (bx * c2 - cx * b2) / det},
-                         .sup = {i, j, k},
-                         .nsup = 3};
-    out.r2 = fmax(dist2(s, i, out.c), fmax(dist2(s, j, out.c), dist2(s, k, out.c)));
-    return out;
-}
-
-static int outside(const struct samples *s, size_t n, const struct circle *k)
-{
-    return dist2(s, n, k->c) > k->r2 * (1.0 + 1e-12);
-}
-
-/* Welzl's incremental algorithm (expected O(N) in a random order) in the scrambled order
- * n -> (n * 2654435761) mod N, a permutation for N a power of two. */
-static struct circle enclosing_circle(const fricreg_aft *a, const struct samples *s)
-{
-    size_t N = a->N;
-#define ORDER(i) (((size_t)(i) * (size_t)2654435761u) & (N - 1))
-    struct circle k = {.c = {s->ux[0], s->uy[0]}, .r2 = 0.0, .sup = {0}, .nsup = 1};
-    for (size_t i = 1; i < N; i++) {
-        size_t pi = ORDER(i);
-        if (!outside(s, pi, &k))
-            continue;
-        k = (struct circle){.c = {s->ux[pi], s->uy[pi]}, .r2 = 0.0, .sup = {pi}, .nsup = 1};
-        for (size_t j = 0; j < i; j++) {
-            size_t pj = ORDER(j);
-            if (!outside(s, pj, &k))
-                continue;
-            k = through2(s, pi, pj);
-            for (size_t l = 0; l < j; l++)
-                if (outside(s, ORDER(l), &k))
-                    k = through3(s, pi, pj, ORDER(l));
-        }
-    }
-#undef ORDER
-    return k;
-}
-
-/* The centre's derivative along column j: the support points move with u. */
-static void circle_derivative(const fricreg_aft *a, const struct samples *s, const struct circle *k,
-                              size_t j, double dc[2])
+/* The enclosing circle's centre's derivative along column j (enclosing_circle.h): its support
+ * points move with u. */
+static void circle_derivative(const fricreg_aft *a, const struct samples *s,
+                              const struct fr_circle *k, size_t j, double dc[2])
 {
     double dp[3][2], dg;
     for (int i = 0; i < k->nsup; i++)
         input(a, j, k->sup[i], dp[i], &dg);
-    if (k->nsup == 1) {
-        dc[0] = dp[0][0];
-        dc[1] = dp[0][1];
-        return;
-    }
-    if (k->nsup == 2) {
-        dc[0] = 0.5 * (dp[0][0] + dp[1][0]);
-        dc[1] = 0.5 * (dp[0][1] + dp[1][1]);
-        return;
-    }
-    /* |c - p_i|^2 equal for the three: (p_b - p_a).dc = (c - p_a).dp_a - (c - p_b).dp_b */
-    double A[4], rhs[2];
-    for (int r = 0; r < 2; r++) {
-        size_t pa = k->sup[0], pb = k->sup[r + 1];
-        A[2 * r] = s->ux[pb] - s->ux[pa];
-        A[2 * r + 1] = s->uy[pb] - s->uy[pa];
-        rhs[r] = (k->c[0] - s->ux[pa]) * dp[0][0] + (k->c[1] - s->uy[pa]) * dp[0][1] -
-                 (k->c[0] - s->ux[pb]) * dp[r + 1][0] - (k->c[1] - s->uy[pb]) * dp[r + 1][1];
-    }
-    double det = A[0] * A[3] - A[1] * A[2];
-    dc[0] = (A[3] * rhs[0] - A[1] * rhs[1]) / det;
-    dc[1] = (A[0] * rhs[1] - A[2] * rhs[0]) / det;
+    fr_circle_centre_derivative(k, s->ux, s->uy, (const double(*)[2])dp, dc);
 }
 
 /* ---- the periodic march ------------------------------------------------------------------ */
@@ -305,7 +214,7 @@ struct periodic {
     enum start_kind kind;
     size_t start; /* the sample the recorded period starts after */
     int periods;  /* STUCK_FROM_CIRCLE: periods marched from the centre */
-    struct circle circle;
+    struct fr_circle circle;
 };
 
 /* Newton's method on the slider at the start of a period, from w (the PLAIN periods' end),
@@ -353,7 +262,7 @@ static struct periodic march(const fricreg_aft *a, const struct samples *s, cons
         return out;
     }
     out.start = N - 1;
-    out.circle = enclosing_circle(a, s);
+    out.circle = fr_enclosing_circle(s->ux, s->uy, a->N);
     double w[2] = {out.circle.c[0], out.circle.c[1]};
     for (out.periods = 1; out.periods <= PLAIN; out.periods++) {
         double w0[2] = {w[0], w[1]};

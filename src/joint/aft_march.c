@@ -12,12 +12,14 @@
  * or if Newton fails, the march goes on to MAX_PERIODS periods and gives its last.
  *
  * The centred state: a slider stuck all period has a periodic state wherever it sits, so the
- * march chooses by where it starts. It starts every slider at the middle of u's range, each
- * tangential component's (max + min) / 2 over the samples (the table's laws hold their
- * sliders' positions as state, element_kind.h), the choice of the exact AFT of 1-D sliders
- * (aft_exact.c), which it then equals. A slider that slips leaves it for its own periodic
- * state, which is unique; one that barely slips sits near that middle, so the forces are
- * continuous in u through the onset of stick.
+ * march chooses by where it starts. It starts every slider at the middle of the orbit (the
+ * table's laws hold their sliders' positions as state, element_kind.h): for two tangential
+ * components the centre of the orbit's smallest enclosing circle (enclosing_circle.h), the one
+ * place from which a slider that can stick never slips, and the 3-D contact's choice
+ * (aft_2d.c); for one, its (max + min) / 2, the exact 1-D AFT's choice (aft_exact.c); for
+ * three, each component's (max + min) / 2. It then equals those AFTs where the slider sticks.
+ * A slider that slips leaves the middle for its own periodic state, which is unique; one that
+ * barely slips sits near it, so the forces are continuous in u through the onset of stick.
  *
  * The Jacobian, exact for the sampled march: a law without state has f(theta_n) = f(u(theta_n)),
  * so column j of component d2 is the transform of df/du_d2 (theta_n) phi_j(theta_n). A law with
@@ -29,10 +31,11 @@
  * settled period's start is periodic: a first pass from S = 0 gives S_s(N) = R_s and the
  * period's map Psi_s = prod T_s, and a slider that slipped (Psi_s a contraction) starts the
  * second pass from S_s = (I - Psi_s)^-1 R_s, the implicit function theorem on s = P(s, u); a
- * slider stuck all period sits at the centred state, whose derivative is the middle's,
- * (phi(theta_max) + phi(theta_min)) / 2. (A 2-D slider that settles stuck after slipping in
- * the march's first periods, on an orbit whose middle is not a valid stuck state, is given the
- * middle's derivative too: then the derivative is approximate, by how far it moved.) */
+ * slider stuck all period sits at the centred state, whose derivative is the middle's: the
+ * circle's centre moved with its support samples, or (phi(theta_max) + phi(theta_min)) / 2. (A
+ * 3-D slider that settles stuck after slipping in the march's first periods, on an orbit whose
+ * middle is not a stuck state, is given the middle's derivative too: then the derivative is
+ * approximate, by how far it moved.) */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,6 +43,7 @@
 #include "aft_internal.h"
 #include "aft_march.h"
 #include "element_kind.h"
+#include "enclosing_circle.h"
 
 #define MAX_PERIODS 64
 #define PLAIN 4
@@ -79,6 +83,7 @@ struct fr_aft_march {
     double *phi;          /* [nc] the basis at a sample */
     int *slipped;         /* [nstate] 1 where slider s slipped in the settled period */
     size_t hi[MAX_DIM], lo[MAX_DIM]; /* the samples of u's largest and smallest components */
+    struct fr_circle circle;         /* two tangential components: the orbit's enclosing circle */
 };
 
 int fr_aft_march_create(size_t N, size_t nc, size_t nstate, struct fr_aft_march **out)
@@ -162,8 +167,9 @@ static double moved_by(const struct fr_aft_march *w, const double *a, const doub
 }
 
 /* The centred state into w->state: state i, a slider's position along tangential component
- * i % td, at the middle of that component's samples in w->us, whose largest and smallest
- * samples go into w->hi, w->lo. */
+ * i % td, at the middle of the orbit: the centre of its smallest enclosing circle for two
+ * components (w->circle), else each component's middle between its largest and smallest
+ * samples (w->hi, w->lo). */
 static void centre(const fricreg_element_type *type, struct fr_aft_march *w, size_t nstate)
 {
     size_t N = w->samples, td = (size_t)(w->dim - type->kind->normal);
@@ -175,9 +181,12 @@ static void centre(const fricreg_element_type *type, struct fr_aft_march *w, siz
             w->hi[a] = ua[n] > ua[w->hi[a]] ? n : w->hi[a];
         }
     }
+    if (td == 2)
+        w->circle = fr_enclosing_circle(w->us, w->us + N, N);
     for (size_t i = 0; i < nstate; i++) {
         const double *ua = w->us + (i % td) * N;
-        w->state[i] = 0.5 * ua[w->lo[i % td]] + 0.5 * ua[w->hi[i % td]];
+        w->state[i] = td == 2 ? w->circle.c[i % 2]
+                              : 0.5 * ua[w->lo[i % td]] + 0.5 * ua[w->hi[i % td]];
     }
 }
 
@@ -365,17 +374,27 @@ static int sensitive_period(const fricreg_aft *a, struct fr_aft_march *w,
     return FRICREG_OK;
 }
 
-/* d m_r / d u_col of the middle m_r = (u_r(hi) + u_r(lo)) / 2 of component r: the basis at
- * its largest and smallest samples; a component constant over the samples (at rest) moves
- * with its mean alone (a pure harmonic's largest and smallest samples cancel). */
+/* d m_r / d u_col of the middle m of the orbit (centre()), component r: for two components the
+ * enclosing circle's centre moved with its support samples, else the basis at component r's
+ * largest and smallest samples. An orbit that is one point (at rest) moves with its mean
+ * alone (a pure harmonic's extremes cancel). */
 static double middle_derivative(const fricreg_aft *a, const struct fr_aft_march *w, size_t r,
                                 size_t col)
 {
-    size_t nc = a->nc, j = col % nc;
-    if (col / nc != r)
+    size_t nc = a->nc, j = col % nc, c = col / nc;
+    int rest = w->dim == 2 ? w->circle.nsup == 1 : w->hi[r] == w->lo[r];
+    if (rest)
+        return c == r && j == 0 ? 1.0 : 0.0;
+    if (w->dim == 2) {
+        double dp[3][2] = {{0.0}}, dc[2];
+        for (int i = 0; i < w->circle.nsup; i++)
+            dp[i][c] = fr_aft_sample_basis(a, j, w->circle.sup[i]);
+        fr_circle_centre_derivative(&w->circle, w->us, w->us + w->samples, (const double(*)[2])dp,
+                                    dc);
+        return dc[r];
+    }
+    if (c != r)
         return 0.0;
-    if (w->hi[r] == w->lo[r])
-        return j == 0 ? 1.0 : 0.0;
     return 0.5 * fr_aft_sample_basis(a, j, w->hi[r]) + 0.5 * fr_aft_sample_basis(a, j, w->lo[r]);
 }
 
