@@ -3,29 +3,15 @@
  * src/joint/aft_march.c) against the exact AFT of the same element, in one process: NLvib's
  * chain (tests/support/hb_chain.h, H = 7) with jenkins elements (exact) or jenkins_2d elements
  * (marched), continued from 0.5 to 2 rad/s with the defaults, with and without stability:
- * points, median seconds, the ratio, and each dof's located peak.
+ * points, median CPU seconds, the ratio, and each dof's located peak.
  * Usage: fricreg-bench-hb-march [repeats]. */
-#define _POSIX_C_SOURCE 200809L /* clock_gettime */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <time.h>
 
+#include "bench.h"
 #include "fricreg_hb.h"
 #include "hb_chain.h"
-
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-static int cmp(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
 
 int main(int argc, char **argv)
 {
@@ -41,12 +27,11 @@ int main(int argc, char **argv)
             size_t nq = hb_chain_nq(marched);
             int status = 0;
             for (int r = 0; r < repeats; r++) {
-                double t0 = now();
+                double t0 = bench_cpu_seconds();
                 status = fricreg_hb_continue(hb, 0.5, 2.0, nq, NULL);
-                t[r] = now() - t0;
+                t[r] = bench_cpu_seconds() - t0;
             }
-            qsort(t, (size_t)repeats, sizeof *t, cmp);
-            seconds[marched] = t[repeats / 2];
+            seconds[marched] = bench_median(t, (size_t)repeats);
             for (size_t dof = 0; dof < 3; dof++)
                 if (status != FRICREG_OK || fricreg_hb_peak(hb, dof, &peaks[marched][dof][0],
                                                             &peaks[marched][dof][1]) != FRICREG_OK)

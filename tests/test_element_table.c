@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_element_table.c — white box: the element table's slider tangents (src/joint/
  * element_kind.h), which the march of harmonic balance chains its exact Jacobian with,
- * against the law's own eval: every law with state that marches has them; summed over the
- * sliders, d f_s / d u is eval's consistent tangent (the same terms in the same order: to the
+ * against the law's own eval: every law with state that marches has them; the state after the
+ * call is eval's, bit for bit; summed over the sliders, d f_s / d u is eval's consistent tangent (the same terms in the same order: to the
  * last bit but the sum's rounding, 1e-15 of kt); d w_s' / d w_s agrees with central differences
  * of eval's state_out in state_in to 1e-7 of 1, in a stick (the identity) and in a slip. */
 #include <check.h>
@@ -43,8 +43,12 @@ static void check_type(const fricreg_element_type *T, double reach)
     }
     for (size_t j = 0; j < nst; j++)
         w[j] = 0.01 * (double)(j + 1);
-    T->kind->slider_tangents(T, p, w, u, ts, tw);
+    double wt[MAXST];
+    T->kind->slider_tangents(T, p, w, u, ts, tw, wt);
     ck_assert_int_eq(fricreg_element_eval(T, p, w, u, f, dfdu, NULL, ws), FRICREG_OK);
+    for (size_t j = 0; j < nst; j++) /* the state after the call: eval's, bit for bit */
+        ck_assert_msg(wt[j] == ws[j], "%s state %zu: %.17g, eval's %.17g", T->kind->name, j, wt[j],
+                      ws[j]);
     for (size_t a = 0; a < blk; a++) {
         double sum = 0.0;
         for (size_t s = 0; s < ns; s++)

@@ -56,11 +56,14 @@ struct fr_element_kind {
     /* What the march of harmonic balance (aft_march.c) chains its exact Jacobian with: at
      * checked params, state and u, each slider's d f_s / d u into ts and d w_s' / d w_s (its
      * position after the call by its position before) into tw, td x td blocks (row-major,
-     * slider s's from td td s, td = dim - normal). A slider's force depends on u - w_s alone,
-     * so these two give every derivative of f and the state (d f_s / d w_s = -ts, d w_s' / d u
-     * = I - tw). Required of a law with state that marches (aft MARCH); NULL otherwise. */
+     * slider s's from td td s, td = dim - normal), and the state after the call into
+     * state_out (eval's, bit for bit; it may be state). A slider's force depends on u - w_s
+     * alone, so these two give every derivative of f and the state (d f_s / d w_s = -ts,
+     * d w_s' / d u = I - tw). Required of a law with state that marches (aft MARCH); NULL
+     * otherwise. */
     void (*slider_tangents)(const fricreg_element_type *type, const double *params,
-                            const double *state, const double *u, double *ts, double *tw);
+                            const double *state, const double *u, double *ts, double *tw,
+                            double *state_out);
 };
 
 /* A type: its kind, its sliders and, for a family, its first member (the type of 1 slider,

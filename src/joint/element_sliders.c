@@ -281,11 +281,11 @@ static double stored(const fricreg_element_type *type, const double *p, const do
     return sum;
 }
 
-/* Each slider's return-mapping tangent t_s and t_s / k_s, the sliders of a law without a
- * normal law (slider.h: d w_s' / d w_s = t_s / k_s, k_s I in a stick, a contraction in a
- * slip). */
+/* Each slider's return-mapping tangent t_s, t_s / k_s and position after the call, the sliders
+ * of a law without a normal law (slider.h: d w_s' / d w_s = t_s / k_s, k_s I in a stick, a
+ * contraction in a slip). */
 static void slider_tangents(const fricreg_element_type *type, const double *p, const double *state,
-                            const double *u, double *ts, double *tw)
+                            const double *u, double *ts, double *tw, double *state_out)
 {
     int td = type->kind->dim;
     size_t ns = type->ns, block = (size_t)(td * td);
@@ -295,6 +295,7 @@ static void slider_tangents(const fricreg_element_type *type, const double *p, c
                          NULL);
         for (size_t a = 0; a < block; a++)
             tw[block * s + a] = ts[block * s + a] / p[s];
+        memcpy(&state_out[(size_t)td * s], w, (size_t)td * sizeof *w);
     }
 }
 
