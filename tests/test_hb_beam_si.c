@@ -181,8 +181,9 @@ static fricreg_hb *response(int H, double mun)
 }
 
 /* (b) The forced response, the same similarity: at H = 7 and 15 the 1000 N branch is the 10 N
- * one scaled, point by point (the same points, Ω to 1e-10, each dof's RMS by s to 1e-8;
- * measured 6.6e-11 and 2.8e-10). */
+ * one scaled, point by point (the same points, Ω to 1e-9, each dof's RMS by s to 1e-8). The
+ * two branches differ by rounding carried along 94 points: measured Ω 6.6e-11 and RMS 2.8e-10
+ * on the reference BLAS, 1.0e-10 and 3.9e-10 on OpenBLAS with two threads. */
 START_TEST(responses_scale)
 {
     const int Hs[2] = {7, 15};
@@ -201,7 +202,7 @@ START_TEST(responses_scale)
         }
         if (getenv("HB_PRINT"))
             fprintf(stderr, "H = %d: %zu points, omega %.2e rms %.2e\n", Hs[h], n, dw, dr);
-        ck_assert_double_le(dw, 1e-10);
+        ck_assert_double_le(dw, 1e-9);
         ck_assert_double_le(dr, 1e-8);
         fricreg_hb_free(ref);
         fricreg_hb_free(hb);
