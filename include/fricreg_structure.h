@@ -68,9 +68,7 @@ typedef struct fricreg_structure fricreg_structure;
  *  scheme) factors K_eff, and the step guard's first use computes the model's rates (dense
  *  eigenvalues up to 2048 degrees of freedom), and the first Newmark/HHT step that finds
  *  elements (fricreg_structure_set_jenkins) beside a contact of bound > 0 allocates the joint
- *  Newton's dense storage: those steps allocate. The other steps never do (but for a falling
- *  Stribeck branch with more than 64 contacts, whose dense Newton matrix is allocated at its
- *  first use).
+ *  Newton's dense storage: those steps allocate. The other steps never do.
  *
  *  ndof  number of degrees of freedom, 1 <= ndof <= 2^40 (memory runs out first).
  *  m     number of friction contacts, 1 <= m <= 2^26 (a structure without friction: one
@@ -1571,9 +1569,12 @@ enum fricreg_step_flags {
  *  a stick set are those of the last factorization, no refactorization either. Another
  *  pattern rebuilds it, as the first call. The results are the same, bit for bit, whether the
  *  solver was kept or built. Its memory (O(m + nnz(L)), L W_eff's Cholesky factor; a dense
- *  m x m Newton matrix too for m <= 64) is held until fricreg_ctx_free, fricreg_ctx_set_law
- *  or a coupling setter (fricreg_ctx_set_coupling_*); a call that fails with FRICREG_ENOMEM
- *  releases it (the next call builds one).
+ *  m x m Newton matrix too, three m x m arrays, for m <= 64 and wherever the law's tangent may
+ *  need it: Stribeck friction, or the paper's partition on a coupled W) is held until
+ *  fricreg_ctx_free, fricreg_ctx_set_law or a coupling setter (fricreg_ctx_set_coupling_*); a
+ *  call that fails with FRICREG_ENOMEM releases it (the next call builds one). A kept solver
+ *  without the dense matrix is built again at the first call that may need it (after
+ *  fricreg_ctx_set_stribeck or fricreg_ctx_set_partition), so that no later call allocates.
  *
  *  Returns FRICREG_OK (converged or not: read info[1]); FRICREG_ENULL if ctx or an array is
  *  NULL; FRICREG_ESIZE if m differs from the context's; FRICREG_ENONFINITE if c, tol or an

@@ -38,6 +38,12 @@ const double *fr_ctx_coupling_diagonal(const fricreg_ctx *ctx);
  * (recorded). */
 int fr_ctx_tangent_rows(fricreg_ctx *ctx, unsigned char implicit[], double coef[]);
 
+/* 1 when fr_ctx_tangent_rows can leave a driver the dense tangent instead (its refusal, or a
+ * row of a falling bound, coef > 0 or 1 + c coef <= 0): Stribeck friction, or the paper's
+ * partition on a coupled W with a law that reads f_eq; 0 when its rows always serve. A driver
+ * that must not allocate in a step reserves its dense storage up front when this is 1. */
+int fr_ctx_tangent_may_be_dense(const fricreg_ctx *ctx);
+
 /* lambda * eps, finite where lambda = mun/eps overflows, so that the step guard can still name
  * the eps that passes (eps >= dt lambda eps / bound). chord = 0: the stick-zone stiffness of
  * fricreg_ctx_stick_stiffness. chord = 1: the chord stiffness of (1), (2) and Karnopp, their

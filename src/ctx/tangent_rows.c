@@ -52,3 +52,9 @@ int fr_ctx_tangent_rows(fricreg_ctx *ctx, unsigned char implicit[], double coef[
     }
     return FRICREG_OK;
 }
+
+int fr_ctx_tangent_may_be_dense(const fricreg_ctx *ctx)
+{
+    return ctx->stribeck || (fr_coupled(ctx) && fr_law_uses_feq(ctx->law) &&
+                             ctx->partition == FRICREG_PARTITION_PAPER);
+}

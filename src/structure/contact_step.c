@@ -78,6 +78,7 @@ struct step_solver {
     unsigned char *stopped;
     SuiteSparse_long *next;           /* [m] refill's cursor per column */
     struct fr_step_pattern pw, pweff; /* the compressed inputs' maps (_csr, _csc calls only) */
+    int dense; /* the Newton matrix's dense form reserved (fr_ctx_tangent_may_be_dense) */
 };
 
 /* W and W_eff as the caller gave them: dense row-major, or compressed (then dense is NULL). */
@@ -399,7 +400,7 @@ static int allocate(struct step_solver *s, const struct step_inputs *in)
                                           &s->at_guess};
     for (size_t k = 0; k < 5; k++)
         *pairs[k] = (struct fr_compliance_pair){&s->v[V_PAIRS + 2 * k], &s->v[V_PAIRS + 2 * k + 1]};
-    return fr_newton_matrix_prepare(&s->nm, s->Weff, m <= DENSE_FALLBACK_MAX, &s->cc);
+    return fr_newton_matrix_prepare(&s->nm, s->Weff, s->dense, &s->cc);
 }
 
 static void release(void *p)
@@ -425,6 +426,11 @@ static void release(void *p)
 static struct step_solver *solver_for(fricreg_ctx *ctx, size_t m, const struct step_inputs *in)
 {
     struct step_solver *s = fr_ctx_workspace(ctx);
+    /* The dense form for a tangent without rows, reserved here, so that no step allocates
+     * it; a kept solver without it, once the context can need it, is built again. */
+    int dense = m <= DENSE_FALLBACK_MAX || fr_ctx_tangent_may_be_dense(ctx);
+    if (s != NULL && dense && !s->dense)
+        s = NULL;
     if (s != NULL && s->m == m && in->sw != NULL && fr_step_pattern_same(&s->pw, in->sw) &&
         fr_step_pattern_same(&s->pweff, in->sweff))
         return s;
@@ -440,6 +446,7 @@ static struct step_solver *solver_for(fricreg_ctx *ctx, size_t m, const struct s
     if (s == NULL)
         return NULL;
     s->m = m;
+    s->dense = dense;
     if (allocate(s, in) != FRICREG_OK) {
         release(s);
         return NULL;

@@ -94,7 +94,7 @@ static int all_finite(const cholmod_sparse *A)
 static int prepare_newton(fricreg_structure *s, const cholmod_sparse *Keff)
 {
     fr_contact_sparse_free(&s->sparse, &s->cc);
-    int dense = s->m <= DENSE_FALLBACK_MAX;
+    int dense = s->m <= DENSE_FALLBACK_MAX || fr_ctx_tangent_may_be_dense(s->ctx);
     int ok = fr_newton_matrix_prepare(&s->newton, s->step.D, dense, &s->cc) == FRICREG_OK;
     if (ok && s->contact_solver == FRICREG_CONTACT_SOLVER_SPARSE)
         ok = fr_contact_sparse_prepare(&s->sparse, Keff, s->Jt, &s->cc) == FRICREG_OK;

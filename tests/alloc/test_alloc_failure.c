@@ -3025,6 +3025,75 @@ START_TEST(test_sparse_eval_does_not_allocate)
 }
 END_TEST
 
+/* fricreg_ctx_solve_step with a tangent that has no rows (the paper's partition on a coupled W,
+ * a near-stick set): the dense Newton matrix goes dense, above 64 contacts too, and a call
+ * after the first allocates nothing (fricreg_structure.h: the dense matrix is reserved "wherever
+ * the law's tangent may need it"). Two ways in: a context on the paper's partition from its
+ * first call, which slides everywhere (rows serve); and one whose kept solver was built on the
+ * consistent partition, then switched to the paper's. In both, the armed call is the first
+ * near stick. */
+enum { M_STEP = 80 };
+
+static void step_inputs(double W[M_STEP * M_STEP], double Weff[M_STEP * M_STEP], double mun[M_STEP])
+{
+    for (size_t i = 0; i < M_STEP; i++) {
+        mun[i] = 0.5 + 0.01 * (double)i;
+        for (size_t j = 0; j < M_STEP; j++) {
+            double w = i == j ? 2.0 : (i + 1 == j || j + 1 == i ? -0.5 : 0.0);
+            W[i * M_STEP + j] = w;
+            Weff[i * M_STEP + j] = 0.25 * w;
+        }
+    }
+}
+
+static int step_at(fricreg_ctx *ctx, const double W[], const double Weff[], double speed,
+                   double f[M_STEP])
+{
+    double z0[M_STEP], ap[M_STEP];
+    int info[2];
+    for (size_t i = 0; i < M_STEP; i++) {
+        z0[i] = (i % 2 ? speed : -speed) * (1.0 + 0.01 * (double)i);
+        ap[i] = 0.1 * (double)(i % 5) - 0.2;
+    }
+    return fricreg_ctx_solve_step(ctx, M_STEP, z0, z0, ap, W, Weff, 0.005, 1e-10, 30, 0, f, info);
+}
+
+static fricreg_ctx *step_context(int partition, const double W[], const double mun[])
+{
+    fricreg_ctx *ctx = NULL;
+    ck_assert_int_eq(fricreg_ctx_create(M_STEP, &ctx), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_coupling_dense(ctx, M_STEP, W), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_bounds(ctx, M_STEP, mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_law(ctx, FRICREG_LAW_QUINN, 1e-3), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_partition(ctx, partition), FRICREG_OK);
+    return ctx;
+}
+
+START_TEST(test_solve_step_dense_tangent_does_not_allocate)
+{
+    static double W[M_STEP * M_STEP], Weff[M_STEP * M_STEP];
+    double mun[M_STEP], f[M_STEP];
+    step_inputs(W, Weff, mun);
+    fricreg_ctx *paper = step_context(FRICREG_PARTITION_PAPER, W, mun);
+    fricreg_ctx *switched = step_context(FRICREG_PARTITION_CONSISTENT, W, mun);
+    memcpy(f, mun, sizeof f);
+    ck_assert_int_eq(step_at(paper, W, Weff, 0.5, f), FRICREG_OK); /* builds the solver */
+    ck_assert_int_eq(step_at(switched, W, Weff, 1e-5, f), FRICREG_OK);
+    ck_assert_int_eq(fricreg_ctx_set_partition(switched, FRICREG_PARTITION_PAPER), FRICREG_OK);
+    ck_assert_int_eq(step_at(switched, W, Weff, 0.5, f), FRICREG_OK); /* may rebuild it */
+    fricreg_ctx *ctxs[2] = {paper, switched};
+    for (int k = 0; k < 2; k++) {
+        memcpy(f, mun, sizeof f);
+        hook_arm(1); /* the first request would fail: none may be made */
+        int status = step_at(ctxs[k], W, Weff, 1e-5, f);
+        hook_disarm();
+        ck_assert_msg(status == FRICREG_OK && n_allocs == 0,
+                      "context %d: status %d after %ld allocations", k, status, n_allocs);
+        fricreg_ctx_free(ctxs[k]);
+    }
+}
+END_TEST
+
 START_TEST(test_disk_ctx_set_coupling)
 {
     struct tally t = fail_each_allocation(_i == 0 ? &disk_dense : &disk_blocks_script);
@@ -3587,6 +3656,7 @@ static Suite *alloc_suite(void)
     tcase_add_test(core, test_eval_does_not_allocate);
     tcase_add_test(core, test_ctx_set_coupling_sparse);
     tcase_add_test(core, test_sparse_eval_does_not_allocate);
+    tcase_add_test(core, test_solve_step_dense_tangent_does_not_allocate);
     tcase_add_test(core, test_structure_steps_do_not_allocate);
     tcase_add_test(core, test_structure_jenkins_steps_do_not_allocate);
     tcase_add_test(core, test_structure_iwan_steps_do_not_allocate);
