@@ -7,8 +7,8 @@
  * (dense W: eval, tangent, stick stiffness, and a singular W), a 1-D context with a sparse W
  * (CHOLMOD's factor, its row updates, the tangent's product, a redundant pair), one with Stribeck
  * friction (both partitions), a 2-D context with Stribeck friction (dense W, then anisotropic
- * blocks: eval and tangent), a structure (Newmark or HHT-alpha, then run_ode with rkf45 or
- * rk4, then elements of two types added and run), a simulation (a different system and stepper family per thread: fricreg's rk4, GSL's
+ * blocks: eval and tangent), a structure (Newmark or HHT-alpha, its near-stick block by LAPACK
+ * or in the structure's space by CHOLMOD, then run_ode with rkf45 or rk4, then elements of two types added and run), a simulation (a different system and stepper family per thread: fricreg's rk4, GSL's
  * rkf45, rk4imp, msbdf), an exact solution, a harmonic-balance driver (dense or sparse, with
  * Hill's stability, a monitor, a continuation, the truncation error and a backbone), an Iwan
  * element, an AFT object and an element type on the thread's own arrays; every result and status must equal, bit for
@@ -246,6 +246,9 @@ static void structure_work(int k, struct results *r)
     expect(r, fricreg_structure_set_load(s, 2, p, 0.0, 0.5, 3, load), FRICREG_OK);
     if (k % 2)
         expect(r, fricreg_structure_set_hht(s, -0.05 * (k % 4)), FRICREG_OK);
+    if (k % 4 >= 2) /* the near-stick block in the structure's space (contact_sparse.c) */
+        expect(r, fricreg_structure_set_contact_solver(s, FRICREG_CONTACT_SOLVER_SPARSE),
+               FRICREG_OK);
     expect(r, fricreg_structure_run(s, 0.01, 1.0), FRICREG_OK);
     expect(r, fricreg_structure_get_state(s, 2, u, v, NULL), FRICREG_OK);
     expect(r, fricreg_structure_get_dissipation(s, 1, D), FRICREG_OK);
