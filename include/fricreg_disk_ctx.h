@@ -113,8 +113,10 @@ FRICREG_API int fricreg_disk_ctx_set_coupling_blocks(fricreg_disk_ctx *ctx, size
  *  eigenvalue of D^-1/2 W D^-1/2 (D = diag W; GSL's gsl_eigen_symm, O(m^3) once here) below
  *  -2m 1e-12 (FRICREG_ENOTPSD). A singular W (redundant contacts) is accepted here; an
  *  evaluation that meets it may return FRICREG_ESINGULAR. The context also holds W by its
- *  non-zero 2x2 blocks and the storage of their sparse factor (eval's Newton method), set up
- *  here: memory O(m^2) in all, as W's copy.
+ *  non-zero 2x2 blocks and the storage of their factor (eval's Newton method), set up here:
+ *  CHOLMOD's sparse one, or where that one would fill (at least half a dense triangle, as a
+ *  dense W's does; since 1.8) a dense (2m)^2 buffer for LAPACK's dpotrf, blocked on the BLAS:
+ *  memory O(m^2) in all, a few times W's copy.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE (also if (2m)^2 overflows);
  *  FRICREG_ENONFINITE; FRICREG_EINVAL (an entry beyond 1e250 in magnitude); FRICREG_ENOTSYM;

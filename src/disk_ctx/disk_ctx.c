@@ -321,7 +321,7 @@ int fricreg_disk_ctx_set_coupling_dense(fricreg_disk_ctx *ctx, size_t m, const d
     struct fr_disk_coupled *cpl = fr_disk_coupled_new(m);
     double *copy = malloc(n * n * sizeof *copy);
     if (cpl == NULL || copy == NULL || fr_disk_coupling_from_dense(&cpl->w, m, W) != FRICREG_OK ||
-        fr_disk_factor_setup(&cpl->F, &cpl->w) != FRICREG_OK ||
+        fr_disk_factor_setup(&cpl->F, &cpl->w, FR_DISK_STORAGE_CHOSEN) != FRICREG_OK ||
         alloc_kkt(ctx, 3 * m) != FRICREG_OK) {
         free(copy);
         fr_disk_coupled_free(cpl);

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* disk_factor.c — the reduced Hessian of the near-stick QP on W's block pattern and its
  * CHOLMOD LDL^T factor (disk_factor.h). */
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -11,6 +12,13 @@
 #include "fricreg.h"
 
 #define PIVOT_RTOL 1e-12 /* d_k / H_kk of LDL^T, as the 1-D context's factor (docs/coupled.md) */
+#define DENSE_FILL 0.5   /* dense where nnz(L) >= DENSE_FILL n (n + 1) / 2 (disk_factor.h) */
+
+/* LAPACK by Fortran's calling convention (as src/hb/lu.c): every argument by reference, a
+ * CHARACTER's length appended as a size_t. */
+void dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info, size_t uplo_len);
+void dpotrs_(const char *uplo, const int *n, const int *nrhs, const double *a, const int *lda,
+             double *b, const int *ldb, int *info, size_t uplo_len);
 
 void fr_disk_factor_free(struct fr_disk_factor *F)
 {
@@ -24,6 +32,7 @@ void fr_disk_factor_free(struct fr_disk_factor *F)
     }
     fr_cholmod_finish(&F->c);
     free(F->order), free(F->pos), free(F->src), free(F->held);
+    free(F->D), free(F->hd), free(F->bc), free(F->unk), free(F->at);
     memset(F, 0, sizeof *F);
 }
 
@@ -141,7 +150,32 @@ static int analyse(struct fr_disk_factor *F)
     return F->L->ordering == CHOLMOD_NATURAL && !F->L->is_super ? FRICREG_OK : FRICREG_EINVAL;
 }
 
-int fr_disk_factor_setup(struct fr_disk_factor *F, const struct fr_disk_coupling *w)
+/* The storage the fill rule gives the analysed factor (F->L's column counts), or the one
+ * asked; dense needs its order to fit LAPACK's int. */
+static int storage_is_dense(const struct fr_disk_factor *F, enum fr_disk_storage storage)
+{
+    size_t n = 2 * F->m;
+    if (storage != FR_DISK_STORAGE_CHOSEN || n > (size_t)INT_MAX)
+        return storage == FR_DISK_STORAGE_DENSE && n <= (size_t)INT_MAX;
+    double lnz = 0.0;
+    for (size_t j = 0; j < n; j++)
+        lnz += (double)((const SuiteSparse_long *)F->L->ColCount)[j];
+    return lnz >= DENSE_FILL * (double)n * ((double)n + 1.0) / 2.0;
+}
+
+static int dense_allocate(struct fr_disk_factor *F)
+{
+    size_t n = 2 * F->m;
+    F->D = malloc(n * n * sizeof *F->D);
+    F->hd = malloc(n * sizeof *F->hd);
+    F->bc = malloc(n * sizeof *F->bc);
+    F->unk = malloc(n * sizeof *F->unk);
+    F->at = malloc(n * sizeof *F->at);
+    return F->D && F->hd && F->bc && F->unk && F->at ? FRICREG_OK : FRICREG_ENOMEM;
+}
+
+int fr_disk_factor_setup(struct fr_disk_factor *F, const struct fr_disk_coupling *w,
+                         enum fr_disk_storage storage)
 {
     size_t m = w->m, longest = 1;
     memset(F, 0, sizeof *F);
@@ -159,6 +193,9 @@ int fr_disk_factor_setup(struct fr_disk_factor *F, const struct fr_disk_coupling
     if (F->order && F->pos && F->held && refs && contact_order(F, w) == FRICREG_OK &&
         pattern(F, w, refs) == FRICREG_OK) {
         status = analyse(F);
+        F->dense = status == FRICREG_OK && storage_is_dense(F, storage);
+        if (F->dense)
+            status = dense_allocate(F);
         F->B = status == FRICREG_OK ? cholmod_l_zeros(2 * m, 1, CHOLMOD_REAL, &F->c) : NULL;
         if (status == FRICREG_OK && F->B == NULL)
             status = FRICREG_ENOMEM;
@@ -264,6 +301,54 @@ static int check_pivots(const struct fr_disk_factor *F, size_t *pivot)
     return FRICREG_ESINGULAR;
 }
 
+/* Dense: the coupled unknowns of the kinds (position order) numbered into F->unk, F->at. */
+static void number_coupled(struct fr_disk_factor *F, const signed char kind[])
+{
+    F->nc = 0;
+    for (size_t u = 0; u < 2 * F->m; u++) {
+        signed char k = kind[F->order[u / 2]];
+        int coupled = u % 2 == 0 ? k == FR_DISK_FREE : k != FR_DISK_FIXED; /* frame()'s */
+        F->at[u] = coupled ? (int64_t)F->nc : -1;
+        if (coupled)
+            F->unk[F->nc++] = (int64_t)u;
+    }
+}
+
+/* Dense: A's entries among the coupled unknowns into F->D (upper, column-major, order nc) and
+ * their diagonal into F->hd; dpotrf; the pivot test of check_pivots on U_cc^2. */
+static int dense_factor(struct fr_disk_factor *F, size_t *pivot)
+{
+    const SuiteSparse_long *Ap = F->A->p, *Ai = F->A->i;
+    const double *Ax = F->A->x;
+    size_t nc = F->nc;
+    for (size_t c = 0; c < nc; c++)
+        memset(F->D + c * nc, 0, (c + 1) * sizeof *F->D);
+    for (size_t k = 0; k < 2 * F->m; k++) {
+        int64_t col = F->at[k];
+        if (col < 0)
+            continue;
+        for (SuiteSparse_long e = Ap[k]; e < Ap[k + 1]; e++) {
+            int64_t row = F->at[Ai[e]];
+            if (row >= 0)
+                F->D[(size_t)row + (size_t)col * nc] = Ax[e];
+        }
+        F->hd[col] = Ax[Ap[k + 1] - 1]; /* the diagonal: last in A's column */
+    }
+    int order = (int)nc, info = 0;
+    if (nc > 0)
+        dpotrf_("U", &order, F->D, &order, &info, 1);
+    size_t bad = info > 0 ? (size_t)info - 1 : nc; /* a pivot <= 0 stopped dpotrf there */
+    for (size_t c = 0; c < bad; c++) {
+        double u = F->D[c * (nc + 1)];
+        if (!(u * u > PIVOT_RTOL * F->hd[c]))
+            bad = c;
+    }
+    if (bad >= nc)
+        return FRICREG_OK;
+    *pivot = (size_t)F->order[F->unk[bad] / 2];
+    return FRICREG_ESINGULAR;
+}
+
 int fr_disk_factor_build(struct fr_disk_factor *F, const struct fr_disk_coupling *w,
                          const signed char kind[], const double n[], const double lam[],
                          size_t *pivot)
@@ -275,10 +360,16 @@ int fr_disk_factor_build(struct fr_disk_factor *F, const struct fr_disk_coupling
     }
     F->reusable = 0;
     assemble(F, w, kind, n, lam);
-    cholmod_l_factorize(F->A, F->L, &F->c); /* a zero pivot ends it early: L->minor */
-    if (F->L->xtype == CHOLMOD_PATTERN)     /* only at set-up: later ones allocate nothing */
-        return FRICREG_ENOMEM;
-    int status = check_pivots(F, pivot);
+    int status;
+    if (F->dense) {
+        number_coupled(F, kind);
+        status = dense_factor(F, pivot);
+    } else {
+        cholmod_l_factorize(F->A, F->L, &F->c); /* a zero pivot ends it early: L->minor */
+        if (F->L->xtype == CHOLMOD_PATTERN)     /* only at set-up: later ones allocate nothing */
+            return FRICREG_ENOMEM;
+        status = check_pivots(F, pivot);
+    }
     F->reusable = status == FRICREG_OK && !circle;
     return status;
 }
@@ -305,6 +396,19 @@ static void keep_solve_buffer(struct fr_disk_factor *F)
         Y->nrow = Y->d = 4;
 }
 
+/* Dense: b (position order) solved in place, the decoupled unknowns' unit rows as they are. */
+static void dense_solve(struct fr_disk_factor *F, double b[])
+{
+    size_t nc = F->nc;
+    for (size_t c = 0; c < nc; c++)
+        F->bc[c] = b[F->unk[c]];
+    int order = (int)nc, one = 1, info = 0;
+    if (nc > 0)
+        dpotrs_("U", &order, &one, F->D, &order, F->bc, &order, &info, 1);
+    for (size_t c = 0; c < nc; c++)
+        b[F->unk[c]] = F->bc[c];
+}
+
 int fr_disk_factor_solve(struct fr_disk_factor *F, const double rhs[], double x[])
 {
     double *b = F->B->x;
@@ -313,10 +417,15 @@ int fr_disk_factor_solve(struct fr_disk_factor *F, const double rhs[], double x[
         b[2 * p] = rhs[2 * i];
         b[2 * p + 1] = rhs[2 * i + 1];
     }
-    if (!cholmod_l_solve2(CHOLMOD_LDLt, F->L, F->B, NULL, &F->X, NULL, &F->Y, &F->E, &F->c))
-        return FRICREG_ENOMEM;
-    keep_solve_buffer(F);
-    const double *y = F->X->x;
+    const double *y = b;
+    if (F->dense) {
+        dense_solve(F, b);
+    } else {
+        if (!cholmod_l_solve2(CHOLMOD_LDLt, F->L, F->B, NULL, &F->X, NULL, &F->Y, &F->E, &F->c))
+            return FRICREG_ENOMEM;
+        keep_solve_buffer(F);
+        y = F->X->x;
+    }
     for (size_t p = 0; p < F->m; p++) {
         int64_t i = F->order[p];
         x[2 * i] = y[2 * p];

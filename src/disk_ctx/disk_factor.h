@@ -15,7 +15,14 @@
  * fill-reducing order of the contacts (CHOLMOD's choice, on the contacts' graph) chosen once,
  * analysed once with CHOLMOD's natural ordering and simplicial LDL^T, and factored once at
  * set-up, so that later factorizations and solves allocate nothing: CHOLMOD factors a
- * pre-ordered upper triangle in place, and its solve reuses its buffers. */
+ * pre-ordered upper triangle in place, and its solve reuses its buffers.
+ *
+ * Where that factor fills (a dense W: nnz(L) at least half a dense triangle, the 1-D near-stick
+ * block's rule, structure/masked_factor.h), its simplicial LDL^T does without the BLAS what
+ * LAPACK's blocked dpotrf does with it: then H's coupled unknowns are copied, in the same order,
+ * into a dense buffer allocated at set-up and factored there by dpotrf, solved by dpotrs. The
+ * decoupled unknowns' unit rows do not touch the others, so the pivots are LDL^T's (d_k =
+ * L_kk^2) and the pivot test the same. */
 #ifndef FRICREG_DISK_FACTOR_H
 #define FRICREG_DISK_FACTOR_H
 
@@ -25,6 +32,9 @@
 #include <cholmod.h>
 
 #include "disk_coupling.h"
+
+/* The storage of H's factor: by the fill rule, or forced (the tests compare the two). */
+enum fr_disk_storage { FR_DISK_STORAGE_CHOSEN = 0, FR_DISK_STORAGE_SPARSE, FR_DISK_STORAGE_DENSE };
 
 struct fr_disk_factor {
     size_t m;
@@ -38,11 +48,21 @@ struct fr_disk_factor {
     cholmod_dense *B, *X, *Y, *E; /* the right-hand side (caller's) and CHOLMOD's buffers */
     signed char *held;            /* [m] the kinds of the matrix in L */
     int reusable;                 /* L holds the matrix of `held`, which has no circle */
+    /* Dense: H on its nc coupled unknowns, column-major nc x nc (upper), then its factor. */
+    int dense;
+    size_t nc;
+    double *D;    /* [(2m)^2] */
+    double *hd;   /* [2m] H's diagonal on the coupled unknowns, for the pivot test */
+    double *bc;   /* [2m] a solve's right-hand side on them */
+    int64_t *unk; /* [2m] coupled unknown c -> its position in A (2 p or 2 p + 1) */
+    int64_t *at;  /* [2m] position in A -> its coupled unknown, -1 decoupled */
 };
 
-/* The pattern of w, its order, analysis and a first factorization (of the identity, which
- * every pattern admits). FRICREG_OK or FRICREG_ENOMEM (nothing held). */
-int fr_disk_factor_setup(struct fr_disk_factor *F, const struct fr_disk_coupling *w);
+/* The pattern of w, its order, analysis, the storage (FR_DISK_STORAGE_CHOSEN: by the fill rule
+ * above) and a first factorization (of the identity, which every pattern admits). FRICREG_OK
+ * or FRICREG_ENOMEM (nothing held). */
+int fr_disk_factor_setup(struct fr_disk_factor *F, const struct fr_disk_coupling *w,
+                         enum fr_disk_storage storage);
 
 /* Releases everything; safe on a zeroed struct. */
 void fr_disk_factor_free(struct fr_disk_factor *F);

@@ -89,7 +89,7 @@ static int check_entries(fricreg_disk_ctx *ctx, const char *who, const struct fr
  * eigenvalue of D^-1/2 W D^-1/2 above -2m 1e-12, the dense setter's test. */
 static int check_semidefinite(fricreg_disk_ctx *ctx, const char *who, struct fr_disk_coupled *cpl)
 {
-    if (fr_disk_factor_setup(&cpl->F, &cpl->w) != FRICREG_OK)
+    if (fr_disk_factor_setup(&cpl->F, &cpl->w, FR_DISK_STORAGE_CHOSEN) != FRICREG_OK)
         return fr_fail(ctx, FRICREG_ENOMEM, "%s: out of memory for m = %zu", who, ctx->m);
     int pd = fr_disk_factor_scaled_pd(&cpl->F, &cpl->w, PSD_RTOL * 2.0 * (double)ctx->m);
     if (pd < 0)
