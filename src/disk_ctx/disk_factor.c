@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* disk_factor.c — the reduced Hessian of the near-stick QP on W's block pattern and its
- * CHOLMOD LDL^T factor (disk_factor.h). */
+ * CHOLMOD LDL^T factor, or LAPACK's dense Cholesky one where that would fill (disk_factor.h). */
 #include <limits.h>
+#include <stdint.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -151,12 +152,13 @@ static int analyse(struct fr_disk_factor *F)
 }
 
 /* The storage the fill rule gives the analysed factor (F->L's column counts), or the one
- * asked; dense needs its order to fit LAPACK's int. */
+ * asked; dense needs its order to fit LAPACK's int and its n^2 doubles a size_t. */
 static int storage_is_dense(const struct fr_disk_factor *F, enum fr_disk_storage storage)
 {
     size_t n = 2 * F->m;
-    if (storage != FR_DISK_STORAGE_CHOSEN || n > (size_t)INT_MAX)
-        return storage == FR_DISK_STORAGE_DENSE && n <= (size_t)INT_MAX;
+    int fits = n <= (size_t)INT_MAX && n <= SIZE_MAX / n / sizeof(double);
+    if (storage != FR_DISK_STORAGE_CHOSEN || !fits)
+        return storage == FR_DISK_STORAGE_DENSE && fits;
     double lnz = 0.0;
     for (size_t j = 0; j < n; j++)
         lnz += (double)((const SuiteSparse_long *)F->L->ColCount)[j];
