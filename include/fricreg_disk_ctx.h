@@ -115,8 +115,8 @@ FRICREG_API int fricreg_disk_ctx_set_coupling_blocks(fricreg_disk_ctx *ctx, size
  *  evaluation that meets it may return FRICREG_ESINGULAR. The context also holds W by its
  *  non-zero 2x2 blocks and the storage of their factor (eval's Newton method), set up here:
  *  CHOLMOD's sparse one, or where that one would fill (at least half a dense triangle, as a
- *  dense W's does; since 1.8) a dense (2m)^2 buffer for LAPACK's dpotrf, blocked on the BLAS:
- *  memory O(m^2) in all, a few times W's copy.
+ *  W without zero blocks does; since 1.8) a dense (2m)^2 buffer for LAPACK's dpotrf, blocked
+ *  on the BLAS: memory O(m^2) in all, a few times W's copy.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE (also if (2m)^2 overflows);
  *  FRICREG_ENONFINITE; FRICREG_EINVAL (an entry beyond 1e250 in magnitude); FRICREG_ENOTSYM;
