@@ -4,6 +4,10 @@
  *   - D = Y^T Y is J A^-1 J^T: every 7th column (both rows of contacts), each entry against
  *     J x_j, x_j = A^-1 J^T e_j by the factor's two halves, to 1e-12 of sqrt(D_ii D_jj)
  *     (drop = 0: D exact);
+ *   - D's rows that every contact shares (the top separators) go through BLAS: D equals
+ *     CHOLMOD's sparse product Y^T Y on every entry to 1e-13 of sqrt(D_ii D_jj), full so
+ *     stored packed, its BLAS products equal to fr_sym_mult's loops to 1e-13, and with W_eff's
+ *     drop (2^-53) the same to 1e-15;
  *   - project and lift are J A^-1 b and A^-1 (b + J^T g) through the halves;
  *   - forming Y leaves the factor as CHOLMOD made it: a supernodal factor stays supernodal
  *     (CHOLMOD's sparse right-hand-side solve converts the factor it is given to a simplicial
@@ -19,6 +23,7 @@
 
 #include "base/error.h"
 #include "base/sparse_factor.h"
+#include "base/sparse_ops.h"
 #include "fricreg.h"
 #include "structure/contact_factor.h"
 
@@ -154,6 +159,58 @@ START_TEST(compliance_is_j_a_inverse_jt)
 }
 END_TEST
 
+/* D against CHOLMOD's sparse product Y^T Y on every entry, and its products: the edge's
+ * contacts share the top separators' rows of Y, which go through BLAS (contact_factor.c), and
+ * D, full, is stored packed, its products by BLAS equal to fr_sym_mult's loops on the same
+ * storage. With W_eff's drop (2^-53) the same D to that rounding. */
+START_TEST(shared_rows_through_blas_equal_the_sparse_product)
+{
+    struct setup s;
+    set_up(&s);
+    ck_assert_uint_gt(s.f.shared_rows, 0);
+    ck_assert(fr_delassus_packed(s.f.D));
+    cholmod_sparse *Yt = cholmod_l_transpose(s.f.Y, 1, &s.c);
+    cholmod_sparse *G = cholmod_l_ssmult(Yt, s.f.Y, 0, 1, 1, &s.c);
+    ck_assert_ptr_nonnull(G);
+    const SuiteSparse_long *Gp = G->p, *Gi = G->i;
+    const double *Gx = G->x;
+    static double diag[M];
+    for (size_t j = 0; j < M; j++)
+        diag[j] = d_entry(s.f.D, j, j);
+    size_t entries = 0;
+    for (size_t j = 0; j < M; j++)
+        for (SuiteSparse_long q = Gp[j]; q < Gp[j + 1]; q++, entries++)
+            ck_assert_double_eq_tol(d_entry(s.f.D, (size_t)Gi[q], j), Gx[q],
+                                    1e-13 * sqrt(diag[Gi[q]] * diag[j]));
+    ck_assert_uint_eq(entries, (size_t)M * M); /* G full: every entry of D checked */
+    double g[M], blas[M], loops[M];
+    for (size_t j = 0; j < M; j++) {
+        g[j] = cos(0.9 * (double)j);
+        blas[j] = NAN; /* beta = 0: not read */
+        loops[j] = 0.0;
+    }
+    fr_delassus_mult(s.f.D, 2.0, g, 0.0, blas);
+    fr_sym_mult(s.f.D, 2.0, g, 0.0, loops);
+    for (size_t j = 0; j < M; j++)
+        ck_assert_double_eq_tol(blas[j], loops[j], 1e-13 * (1.0 + fabs(loops[j])));
+    fr_delassus_mult(s.f.D, -1.0, g, 0.5, blas);
+    fr_sym_mult(s.f.D, -1.0, g, 0.5, loops);
+    for (size_t j = 0; j < M; j++)
+        ck_assert_double_eq_tol(blas[j], loops[j], 1e-13 * (1.0 + fabs(loops[j])));
+    struct fr_cfactor dropped = {0};
+    ck_assert_int_eq(fr_cfactor_build(&dropped, s.A, s.Jt, 0x1p-53, &s.c, &s.err, "test", "A"),
+                     FRICREG_OK);
+    for (size_t j = 0; j < M; j += 5)
+        for (size_t i = 0; i <= j; i++)
+            ck_assert_double_eq_tol(d_entry(dropped.D, i, j), d_entry(s.f.D, i, j),
+                                    1e-15 * sqrt(diag[i] * diag[j]));
+    fr_cfactor_free(&dropped, &s.c);
+    cholmod_l_free_sparse(&Yt, &s.c);
+    cholmod_l_free_sparse(&G, &s.c);
+    tear_down(&s);
+}
+END_TEST
+
 START_TEST(project_and_lift_through_the_halves)
 {
     struct setup s;
@@ -200,6 +257,7 @@ int main(void)
     Suite *s = suite_create("contact_factor");
     TCase *tc = tcase_create("core");
     tcase_add_test(tc, compliance_is_j_a_inverse_jt);
+    tcase_add_test(tc, shared_rows_through_blas_equal_the_sparse_product);
     tcase_add_test(tc, project_and_lift_through_the_halves);
     tcase_add_test(tc, forming_y_keeps_the_factor_supernodal);
     suite_add_tcase(s, tc);

@@ -8,6 +8,8 @@
  *     pattern, with and without shifts, refactored and held;
  *   - a block that is not positive definite (indefinite, or singular: a zero pivot) is
  *     FRICREG_ESINGULAR both ways, x untouched, and the next block is factored afresh;
+ *   - the dense factor keeps the leading rows of the last one that a block keeps with their
+ *     shifts, and those alone (a sequence of blocks, each against the sparse factor to 1e-10);
  *   - fricreg_structure's steps on a stiff membrane's edge (W_eff dense, the rule's choice) give
  *     the same forces and displacements with either storage forced, to 1e-10 relative. */
 #include <check.h>
@@ -184,6 +186,81 @@ START_TEST(not_positive_definite_is_esingular_both_ways)
 }
 END_TEST
 
+/* One block of the sequence below: dense solve (the factor kept from the last block where it
+ * can be) against CHOLMOD's sparse factor of the same block, to 1e-10 of the largest |x|, and
+ * the rows the dense factorization kept. */
+static void kept_block(struct fr_masked_factor *dense, struct fr_masked_factor *sparse,
+                       const cholmod_sparse *W, const unsigned char set[], const double shift[],
+                       size_t kept, cholmod_common *c)
+{
+    size_t m = dense->m;
+    double b[MMAX], xs[MMAX], xd[MMAX], scale = 0.0;
+    for (size_t i = 0; i < m; i++) {
+        b[i] = sin(1.7 * (double)i + 0.3) + 0.2;
+        xs[i] = xd[i] = -7.5;
+    }
+    ck_assert_int_eq(fr_masked_factor_solve(sparse, W, set, shift, b, xs, c), FRICREG_OK);
+    ck_assert_int_eq(fr_masked_factor_solve(dense, W, set, shift, b, xd, c), FRICREG_OK);
+    ck_assert_uint_eq(dense->kept, kept);
+    for (size_t i = 0; i < m; i++)
+        scale = fmax(scale, fabs(xs[i]));
+    for (size_t i = 0; i < m; i++)
+        ck_assert_double_eq_tol(xd[i], xs[i], 1e-10 * scale);
+}
+
+/* The dense factor's leading rows kept (masked_factor.h): a block that grows keeps all the
+ * last one's rows, one that loses its last rows keeps the rest, a shift that moves keeps the
+ * rows before it, one that loses its first row keeps none; shifted rows are ordered last; a
+ * trailing part that is not positive definite is FRICREG_ESINGULAR, x untouched, and the next
+ * block is factored afresh. */
+START_TEST(dense_factor_keeps_its_leading_rows)
+{
+    const size_t m = 40;
+    static double A[MMAX * MMAX];
+    unsigned long state = 5113;
+    dominant(m, 1.0, &state, A);
+    cholmod_common c;
+    ck_assert_int_eq(fr_cholmod_start(&c), FRICREG_OK);
+    cholmod_sparse *W = upper(m, A, &c);
+    struct fr_masked_factor sparse, dense;
+    ck_assert_int_eq(fr_masked_factor_prepare(&sparse, W, FR_BLOCK_SPARSE, &c), FRICREG_OK);
+    ck_assert_int_eq(fr_masked_factor_prepare(&dense, W, FR_BLOCK_DENSE, &c), FRICREG_OK);
+    unsigned char set[MMAX] = {0};
+    double shift[MMAX] = {0.0};
+    for (size_t i = 0; i < 20; i++)
+        set[i] = 1;
+    kept_block(&dense, &sparse, W, set, shift, 0, &c);
+    for (size_t i = 20; i < 30; i++) /* grows: rows 20..29 after 0..19 */
+        set[i] = 1;
+    kept_block(&dense, &sparse, W, set, shift, 20, &c);
+    for (size_t i = 25; i < 30; i++) /* loses its last five */
+        set[i] = 0;
+    kept_block(&dense, &sparse, W, set, shift, 25, &c);
+    shift[22] = 3.5; /* a shift moves at the factor's row 22 */
+    kept_block(&dense, &sparse, W, set, shift, 22, &c);
+    ck_assert_int_eq(dense.rows[24], 22); /* the shifted row now last */
+    set[0] = 0;
+    kept_block(&dense, &sparse, W, set, shift, 0, &c);
+    ck_assert_int_eq(dense.rows[0], 1);
+    for (size_t i = 30; i < 33; i++) /* a trailing part that is not positive definite */
+        set[i] = 1;
+    shift[31] = -1e3;
+    double b[MMAX], x[MMAX];
+    for (size_t i = 0; i < m; i++)
+        b[i] = x[i] = -7.5;
+    ck_assert_int_eq(fr_masked_factor_solve(&dense, W, set, shift, b, x, &c), FRICREG_ESINGULAR);
+    ck_assert_uint_eq(dense.kept, 24);
+    for (size_t i = 0; i < m; i++)
+        ck_assert_double_eq(x[i], -7.5);
+    shift[31] = 0.0;
+    kept_block(&dense, &sparse, W, set, shift, 0, &c);
+    fr_masked_factor_free(&sparse, &c);
+    fr_masked_factor_free(&dense, &c);
+    cholmod_l_free_sparse(&W, &c);
+    fr_cholmod_finish(&c);
+}
+END_TEST
+
 /* ---- A structure's steps ------------------------------------------------------------------ */
 
 /* bench/membrane_contacts.c in small: a SIDE x SIDE grid of 1 kg nodes, springs of 3e6 N/m
@@ -298,6 +375,7 @@ int main(void)
     tcase_add_test(tc, fill_rule_picks_the_storage);
     tcase_add_test(tc, dense_solves_equal_sparse_ones);
     tcase_add_test(tc, not_positive_definite_is_esingular_both_ways);
+    tcase_add_test(tc, dense_factor_keeps_its_leading_rows);
     tcase_add_test(tc, structure_steps_equal_in_both_storages);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);

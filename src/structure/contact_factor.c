@@ -3,14 +3,26 @@
  *
  * Y's columns are sparse triangular solves: contact i's column of P J^T, solved with L on the
  * rows it reaches only (cholmod_l_solve2 with a sparse right-hand side, Bset), O(|reach|) each
- * instead of O(nnz(L)). D = Y^T Y by CHOLMOD's sparse product. */
+ * instead of O(nnz(L)). D = Y^T Y by CHOLMOD's sparse product, the rows of Y that most contacts
+ * share (a stiff continuum's top separators) by BLAS's dsyrk; a D that at least half fills is
+ * stored whole, LAPACK's packed triangle, and its products are BLAS's dspmv. */
+#include <limits.h>
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "base/sparse_factor.h"
 #include "base/sparse_ops.h"
 #include "contact_factor.h"
 #include "fricreg.h"
+
+/* BLAS by Fortran's calling convention (as masked_factor.c's LAPACK): every argument by
+ * reference, a CHARACTER's length appended as a size_t. */
+void dsyrk_(const char *uplo, const char *trans, const int *n, const int *k, const double *alpha,
+            const double *a, const int *lda, const double *beta, double *c, const int *ldc,
+            size_t uplo_len, size_t trans_len);
+void dspmv_(const char *uplo, const int *n, const double *alpha, const double *ap, const double *x,
+            const int *incx, const double *beta, double *y, const int *incy, size_t uplo_len);
 
 static int failed(cholmod_common *c, struct fr_error *err, const char *who, const char *name)
 {
@@ -193,27 +205,165 @@ static cholmod_sparse *significant(const cholmod_sparse *Y, double drop, cholmod
     return S;
 }
 
+/* Y^T Y's upper triangle by CHOLMOD's sparse product, sorted. */
+static cholmod_sparse *sparse_gram(cholmod_sparse *Y, cholmod_common *c)
+{
+    cholmod_sparse *Yt = cholmod_l_transpose(Y, 1, c);
+    cholmod_sparse *G = Yt == NULL ? NULL : cholmod_l_ssmult(Yt, Y, 1, 1, 1, c);
+    cholmod_l_free_sparse(&Yt, c);
+    if (G != NULL && G->stype != 1) { /* CHOLMOD may hand back the lower triangle */
+        cholmod_sparse *U = cholmod_l_copy(G, 1, 1, c);
+        cholmod_l_free_sparse(&G, c);
+        G = U;
+    }
+    if (G != NULL && !cholmod_l_sort(G, c))
+        cholmod_l_free_sparse(&G, c);
+    return G;
+}
+
+/* The rows of Y that at least m / SHARED_ROW_SHARE contacts reach (on a stiff continuum the
+ * top separators, which every contact's path to the root crosses): copied into R (d x m,
+ * column-major; d returned), the rest of Y into *rest. Their part of Y^T Y, R^T R, is then
+ * BLAS's dsyrk, where a sparse product spends count^2 scattered operations on each. Only where
+ * D is at least half full anyway: m from SHARED_ROWS_FROM on and one row reaching at least
+ * m / sqrt(2) contacts (its pairs alone fill half of D's triangle), so that the dense m x m
+ * array costs no more than D itself; and where d m fits LAPACK's int. 0 (R and rest NULL)
+ * elsewhere; -1 without memory. */
+#define SHARED_ROW_SHARE 4
+#define SHARED_ROWS_FROM 256
+static long split_shared_rows(const cholmod_sparse *Y, cholmod_dense **R, cholmod_sparse **rest,
+                              cholmod_common *c)
+{
+    size_t n = Y->nrow, m = Y->ncol;
+    const SuiteSparse_long *Yp = Y->p, *Yi = Y->i;
+    const double *Yx = Y->x;
+    *R = NULL;
+    *rest = NULL;
+    if (m < SHARED_ROWS_FROM)
+        return 0;
+    SuiteSparse_long *at = cholmod_l_calloc(n, sizeof *at, c); /* row count, then R's row */
+    if (at == NULL)
+        return -1;
+    for (SuiteSparse_long p = 0; p < Yp[m]; p++)
+        at[Yi[p]]++;
+    size_t d = 0, moved = 0, most = 0;
+    for (size_t i = 0; i < n; i++) {
+        most = (size_t)at[i] > most ? (size_t)at[i] : most;
+        moved += at[i] * SHARED_ROW_SHARE >= (SuiteSparse_long)m ? (size_t)at[i] : 0;
+        at[i] = at[i] * SHARED_ROW_SHARE >= (SuiteSparse_long)m ? (SuiteSparse_long)d++ : -1;
+    }
+    if (2.0 * (double)most * (double)most < (double)m * (double)m || d > (size_t)INT_MAX / m)
+        d = 0;
+    if (d > 0) {
+        *R = cholmod_l_zeros(d, m, CHOLMOD_REAL, c);
+        *rest = cholmod_l_allocate_sparse(n, m, (size_t)Yp[m] - moved, 1, 1, 0, CHOLMOD_REAL, c);
+    }
+    if (*R != NULL && *rest != NULL) {
+        SuiteSparse_long *rp = (*rest)->p, *ri = (*rest)->i, q = 0;
+        double *rx = (*rest)->x, *Rx = (*R)->x;
+        for (size_t j = 0; j < m; j++) {
+            rp[j] = q;
+            for (SuiteSparse_long p = Yp[j]; p < Yp[j + 1]; p++)
+                if (at[Yi[p]] >= 0) {
+                    Rx[(size_t)at[Yi[p]] + j * d] = Yx[p];
+                } else {
+                    ri[q] = Yi[p];
+                    rx[q++] = Yx[p];
+                }
+        }
+        rp[m] = q;
+    }
+    cholmod_l_free(n, sizeof *at, at, c);
+    if (d > 0 && (*R == NULL || *rest == NULL)) {
+        cholmod_l_free_dense(R, c);
+        cholmod_l_free_sparse(rest, c);
+        return -1;
+    }
+    return (long)d;
+}
+
+/* Whether D's entry w_ij (w_ii, w_jj its diagonal's) is kept: drop_small's rule; with drop 0
+ * every entry but an exact zero (the sparse product would keep those of its pattern: the same
+ * D as a matrix). */
+static int kept(size_t i, size_t j, double w, double wii, double wjj, double drop)
+{
+    return i == j || (drop > 0.0 ? fabs(w) > drop * sqrt(wii) * sqrt(wjj) : w != 0.0);
+}
+
+/* The upper triangle of W (m x m, column-major) as CHOLMOD's sorted upper triangle, without
+ * the entries kept() leaves out; where at least half of the triangle is kept, whole
+ * (every entry, zeros too): LAPACK's packed storage, which fr_delassus_mult hands to BLAS. */
+static cholmod_sparse *upper_of_dense(const double *W, size_t m, double drop, cholmod_common *c)
+{
+    size_t count = 0, whole = m * (m + 1) / 2;
+    for (size_t j = 0; j < m; j++)
+        for (size_t i = 0; i <= j; i++)
+            count += kept(i, j, W[i + j * m], W[i + i * m], W[j + j * m], drop);
+    int packed = 2 * count >= whole;
+    cholmod_sparse *D = cholmod_l_allocate_sparse(m, m, packed ? whole : count, 1, 1, 1,
+                                                  CHOLMOD_REAL, c);
+    if (D == NULL)
+        return NULL;
+    SuiteSparse_long *Dp = D->p, *Di = D->i, q = 0;
+    double *Dx = D->x;
+    for (size_t j = 0; j < m; j++) {
+        Dp[j] = q;
+        for (size_t i = 0; i <= j; i++)
+            if (packed || kept(i, j, W[i + j * m], W[i + i * m], W[j + j * m], drop)) {
+                Di[q] = (SuiteSparse_long)i;
+                Dx[q++] = W[i + j * m];
+            }
+    }
+    Dp[m] = q;
+    return D;
+}
+
+/* D = R^T R + S (S the sparse rest's upper triangle), through a dense m x m array. */
+static cholmod_sparse *dense_gram(const cholmod_dense *R, const cholmod_sparse *S, double drop,
+                                  cholmod_common *c)
+{
+    size_t m = S->ncol;
+    int order = (int)m, depth = (int)R->nrow;
+    double one = 1.0, zero = 0.0;
+    cholmod_dense *W = m <= (size_t)INT_MAX && m <= SIZE_MAX / m
+                           ? cholmod_l_allocate_dense(m, m, m, CHOLMOD_REAL, c)
+                           : NULL;
+    if (W == NULL)
+        return NULL;
+    double *Wx = W->x;
+    dsyrk_("U", "T", &order, &depth, &one, R->x, &depth, &zero, Wx, &order, 1, 1);
+    const SuiteSparse_long *Sp = S->p, *Si = S->i;
+    const double *Sx = S->x;
+    for (size_t j = 0; j < m; j++)
+        for (SuiteSparse_long p = Sp[j]; p < Sp[j + 1]; p++)
+            Wx[(size_t)Si[p] + j * m] += Sx[p];
+    cholmod_sparse *D = upper_of_dense(Wx, m, drop / (double)m, c);
+    cholmod_l_free_dense(&W, c);
+    return D;
+}
+
 /* D = Y^T Y, upper triangle, sorted; with drop > 0 from Y's significant entries, and its own
- * small entries left out. */
+ * small entries left out. Rows of Y shared by many contacts go through BLAS (above). */
 static int form_d(struct fr_cfactor *f, double drop, cholmod_common *c)
 {
-    cholmod_sparse *Ys = drop > 0.0 ? significant(f->Y, drop, c) : f->Y;
-    cholmod_sparse *Yt = Ys == NULL ? NULL : cholmod_l_transpose(Ys, 1, c);
-    cholmod_sparse *D = Yt == NULL ? NULL : cholmod_l_ssmult(Yt, Ys, 1, 1, 1, c);
-    cholmod_l_free_sparse(&Yt, c);
+    cholmod_sparse *Ys = drop > 0.0 ? significant(f->Y, drop, c) : f->Y, *rest = NULL;
+    cholmod_dense *R = NULL;
+    long d = Ys == NULL ? -1 : split_shared_rows(Ys, &R, &rest, c);
+    cholmod_sparse *S = d < 0 ? NULL : sparse_gram(d > 0 ? rest : Ys, c);
     if (Ys != f->Y)
         cholmod_l_free_sparse(&Ys, c);
-    if (D != NULL && D->stype != 1) { /* CHOLMOD may hand back the lower triangle */
-        f->D = cholmod_l_copy(D, 1, 1, c);
-        cholmod_l_free_sparse(&D, c);
+    cholmod_l_free_sparse(&rest, c);
+    if (S != NULL && d > 0) {
+        f->shared_rows = (size_t)d;
+        f->D = dense_gram(R, S, drop, c);
+        cholmod_l_free_sparse(&S, c);
     } else {
-        f->D = D;
+        f->D = S;
+        if (f->D != NULL && drop > 0.0)
+            drop_small(f->D, drop / (double)f->m);
     }
-    if (f->D == NULL || !cholmod_l_sort(f->D, c))
-        return 0;
-    if (drop > 0.0)
-        drop_small(f->D, drop / (double)f->m);
-    return 1;
+    cholmod_l_free_dense(&R, c);
+    return f->D != NULL;
 }
 
 int fr_cfactor_build(struct fr_cfactor *f, cholmod_sparse *A, cholmod_sparse *Jt, double drop,
@@ -333,7 +483,29 @@ void fr_cfactor_lift(struct fr_cfactor *f, double alpha, const double g[], doubl
     }
 }
 
+int fr_delassus_packed(const cholmod_sparse *D)
+{
+    size_t m = D->ncol;
+    return D->sorted && D->packed && D->stype == 1 && m <= (size_t)INT_MAX &&
+           (size_t)((const SuiteSparse_long *)D->p)[m] == m * (m + 1) / 2;
+}
+
+void fr_delassus_mult(const cholmod_sparse *D, double alpha, const double x[], double beta,
+                      double y[])
+{
+    if (!fr_delassus_packed(D)) {
+        fr_sym_mult(D, alpha, x, beta, y);
+        return;
+    }
+    int order = (int)D->ncol, one = 1;
+    if (beta == 0.0) { /* y's old values unread, as fr_sym_mult's */
+        memset(y, 0, D->ncol * sizeof *y);
+        beta = 1.0;
+    }
+    dspmv_("U", &order, &alpha, D->x, x, &one, &beta, y, &one, 1);
+}
+
 void fr_cfactor_compliance(const struct fr_cfactor *f, const double g[], double out[])
 {
-    fr_sym_mult(f->D, 1.0, g, 0.0, out);
+    fr_delassus_mult(f->D, 1.0, g, 0.0, out);
 }

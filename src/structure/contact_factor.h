@@ -35,7 +35,9 @@ struct fr_cfactor {
                              * products go through triangular solves (by_solves) */
     const cholmod_sparse *Jt; /* n x m, the caller's J^T (kept for by_solves) */
     int by_solves;            /* Y's products as triangular solves with J: nnz(Y) > nnz(L) + n */
-    cholmod_sparse *D;        /* m x m, the upper triangle (stype 1) of Y^T Y, sorted */
+    cholmod_sparse *D;        /* m x m, the upper triangle (stype 1) of Y^T Y, sorted; whole
+                             * (fr_delassus_packed) where it at least half fills */
+    size_t shared_rows;       /* rows of Y whose part of D went through BLAS (contact_factor.c) */
     /* Solve scratch, sized at build so that a solve never allocates. */
     cholmod_dense *X, *Ywork, *Ework;
     double *pb, *work; /* [n] */
@@ -71,7 +73,18 @@ void fr_cfactor_project(struct fr_cfactor *f, const double y[], double out[], ch
 void fr_cfactor_lift(struct fr_cfactor *f, double alpha, const double g[], double y[],
                      cholmod_common *c);
 
-/* out[m] = D g[m], O(nnz(D)). */
+/* out[m] = D g[m], O(nnz(D)): fr_delassus_mult. */
 void fr_cfactor_compliance(const struct fr_cfactor *f, const double g[], double out[]);
+
+/* Whether D (m x m, CHOLMOD's upper triangle, sorted) holds every entry of that triangle, as
+ * fr_cfactor_build stores a D that at least half fills: D->x is then LAPACK's packed upper
+ * storage (column j's rows 0..j in order). */
+int fr_delassus_packed(const cholmod_sparse *D);
+
+/* y[m] = alpha D x[m] + beta y[m] (beta 0: y's old values unread) for D as above: BLAS's
+ * dspmv where D is packed (one pass over m(m+1)/2 values, no indices), fr_sym_mult
+ * otherwise; the two agree to rounding. */
+void fr_delassus_mult(const cholmod_sparse *D, double alpha, const double x[], double beta,
+                      double y[]);
 
 #endif

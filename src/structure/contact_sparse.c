@@ -330,7 +330,7 @@ static double residual(struct fr_contact_sparse *f, const cholmod_sparse *Weff,
                        const unsigned char *set, const double *shift, const double b[])
 {
     double *res = f->res, big = 0.0;
-    fr_sym_mult(Weff, -1.0, f->y, 0.0, res);
+    fr_delassus_mult(Weff, -1.0, f->y, 0.0, res);
     for (size_t i = 0; i < f->m; i++) {
         res[i] = set && set[i] ? b[i] + res[i] - (shift ? shift[i] : 0.0) * f->y[i] : 0.0;
         big = isnan(res[i]) ? INFINITY : fmax(big, fabs(res[i]));

@@ -37,7 +37,7 @@
 #include "base/error.h"
 #include "base/matrix_input.h"
 #include "base/sparse_factor.h"
-#include "base/sparse_ops.h"
+#include "contact_factor.h"
 #include "ctx/ctx_driver.h"
 #include "fricreg_structure.h"
 #include "newton_matrix.h"
@@ -194,8 +194,8 @@ static int all_finite(const double x[], size_t n)
 
 static void products_of(struct step_solver *s, const double f[], struct fr_compliance_pair *p)
 {
-    fr_sym_mult(s->Weff, 1.0, f, 0.0, p->weff->data);
-    fr_sym_mult(s->W, 1.0, f, 0.0, p->w->data);
+    fr_delassus_mult(s->Weff, 1.0, f, 0.0, p->weff->data);
+    fr_delassus_mult(s->W, 1.0, f, 0.0, p->w->data);
 }
 
 /* G = f - F(zdot(f), a_free(f)) from f and its products, the merit sqrt(G^T W G) into *phi
@@ -218,7 +218,7 @@ static int residual(struct step_solver *s, const gsl_vector *fv, const struct fr
         G[i] = f[i] - s->F[i];
         big = fmax(big, fabs(G[i]));
     }
-    fr_sym_mult(s->W, 1.0, G, 0.0, s->wg);
+    fr_delassus_mult(s->W, 1.0, G, 0.0, s->wg);
     for (size_t i = 0; i < m; i++)
         q += G[i] * s->wg[i];
     *phi = sqrt(fmax(q, 0.0));

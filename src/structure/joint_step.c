@@ -34,7 +34,6 @@
 #include <gsl/gsl_linalg.h>
 
 #include "base/line_search.h"
-#include "base/sparse_ops.h"
 #include "ctx/ctx_driver.h"
 #include "base/newton_loop.h"
 #include "structure_internal.h"
@@ -130,7 +129,7 @@ static int context_rows(fricreg_structure *s, double c)
         any_implicit |= j->implicit[i];
     }
     if (any_implicit)
-        fr_sym_mult(s->mass.D, 1.0, j->gc, 0.0, j->wg); /* [W G] */
+        fr_delassus_mult(s->mass.D, 1.0, j->gc, 0.0, j->wg); /* [W G] */
     for (size_t i = 0; i < m; i++) {
         double *row = j->T + i * dim, k = j->coef[i];
         const double *weff = j->Weff + i * m, *cross = j->C + i * nc;

@@ -14,6 +14,12 @@
 void dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info, size_t uplo_len);
 void dpotrs_(const char *uplo, const int *n, const int *nrhs, const double *a, const int *lda,
              double *b, const int *ldb, int *info, size_t uplo_len);
+void dtrsm_(const char *side, const char *uplo, const char *transa, const char *diag, const int *m,
+            const int *n, const double *alpha, const double *a, const int *lda, double *b,
+            const int *ldb, size_t side_len, size_t uplo_len, size_t transa_len, size_t diag_len);
+void dsyrk_(const char *uplo, const char *trans, const int *n, const int *k, const double *alpha,
+            const double *a, const int *lda, const double *beta, double *c, const int *ldc,
+            size_t uplo_len, size_t trans_len);
 
 void fr_masked_factor_free(struct fr_masked_factor *f, cholmod_common *c)
 {
@@ -30,6 +36,7 @@ void fr_masked_factor_free(struct fr_masked_factor *f, cholmod_common *c)
     cholmod_l_free_dense(&f->Ew, c);
     cholmod_l_free(f->m * f->m > 0 ? f->m * f->m : 1, sizeof *f->D, f->D, c);
     cholmod_l_free(f->m, sizeof *f->at, f->at, c);
+    cholmod_l_free(f->m, sizeof *f->rows, f->rows, c);
     memset(f, 0, sizeof *f);
 }
 
@@ -98,12 +105,14 @@ static int analyse(struct fr_masked_factor *f, cholmod_common *c)
     return f->L != NULL && f->L->ordering == CHOLMOD_NATURAL;
 }
 
-/* Dense: the buffer of the largest block, W itself, and the map to a block's rows. */
+/* Dense: the buffer of the largest block, W itself, and the maps between W's rows and the
+ * factor's. */
 static int dense_allocate(struct fr_masked_factor *f, cholmod_common *c)
 {
     f->D = cholmod_l_malloc(f->m * f->m > 0 ? f->m * f->m : 1, sizeof *f->D, c);
     f->at = cholmod_l_malloc(f->m, sizeof *f->at, c);
-    return f->D != NULL && f->at != NULL;
+    f->rows = cholmod_l_malloc(f->m, sizeof *f->rows, c);
+    return f->D != NULL && f->at != NULL && f->rows != NULL;
 }
 
 int fr_masked_factor_prepare(struct fr_masked_factor *f, const cholmod_sparse *W,
@@ -188,57 +197,113 @@ static void hold(struct fr_masked_factor *f, const unsigned char *set, const dou
     f->held = 1;
 }
 
-/* D = the upper triangle of W_SS + diag(shift_S), column-major, k = |S| (f->at numbers S).
- * Entries of W below the diagonal are not read, as CHOLMOD reads an upper (stype 1) W. */
-static void dense_fill(struct fr_masked_factor *f, const cholmod_sparse *W, size_t k,
+static double shift_of(const double *shift, size_t i)
+{
+    return shift ? shift[i] : 0.0;
+}
+
+/* The leading rows of the held factor that the block set, shift keeps: in S, same shift. */
+static size_t kept_rows(const struct fr_masked_factor *f, const unsigned char *set,
+                        const double *shift)
+{
+    size_t r = 0;
+    while (f->held && r < f->order) {
+        size_t i = (size_t)f->rows[r];
+        if (!(set && set[i]) || shift_of(shift, i) != f->held_shift[i])
+            break;
+        r++;
+    }
+    return r;
+}
+
+/* The factor's rows: its first p kept, then S's others without a shift, then the shifted
+ * ones, each in W's order; f->at numbers them. Returns |S|. */
+static size_t order_rows(struct fr_masked_factor *f, const unsigned char *set, const double *shift,
+                         size_t p)
+{
+    for (size_t i = 0; i < f->m; i++)
+        f->at[i] = -1;
+    for (size_t r = 0; r < p; r++)
+        f->at[f->rows[r]] = (SuiteSparse_long)r;
+    size_t k = p;
+    for (int shifted = 0; shifted <= 1; shifted++)
+        for (size_t i = 0; set && i < f->m; i++)
+            if (set[i] && f->at[i] < 0 && (shift_of(shift, i) != 0.0) == shifted) {
+                f->rows[k] = (SuiteSparse_long)i;
+                f->at[i] = (SuiteSparse_long)k++;
+            }
+    return k;
+}
+
+/* Columns p..k-1 of the upper triangle of W_SS + diag(shift_S) in the factor's order, into D
+ * (leading dimension m). Entries of W below the diagonal are not read, as CHOLMOD reads an
+ * upper (stype 1) W. */
+static void dense_fill(struct fr_masked_factor *f, const cholmod_sparse *W, size_t p, size_t k,
                        const double *shift)
 {
     const SuiteSparse_long *Wp = W->p, *Wi = W->i;
     const double *Wx = W->x;
-    for (size_t q = 0; q < k; q++)
-        memset(f->D + q * k, 0, (q + 1) * sizeof *f->D);
-    for (size_t j = 0; j < f->m; j++) {
-        SuiteSparse_long col = f->at[j];
-        if (col < 0)
+    size_t m = f->m;
+    for (size_t col = p; col < k; col++)
+        memset(f->D + col * m, 0, (col + 1) * sizeof *f->D);
+    for (size_t j = 0; j < m; j++) {
+        if (f->at[j] < 0)
             continue;
-        for (SuiteSparse_long p = Wp[j]; p < Wp[j + 1]; p++) {
-            size_t i = (size_t)Wi[p];
-            if (i <= j && f->at[i] >= 0)
-                f->D[(size_t)f->at[i] + (size_t)col * k] = Wx[p];
+        for (SuiteSparse_long q = Wp[j]; q < Wp[j + 1]; q++) {
+            SuiteSparse_long i = Wi[q], lo = f->at[i], hi = f->at[j];
+            if ((size_t)i > j || lo < 0)
+                continue;
+            if (lo > hi) {
+                lo = hi;
+                hi = f->at[i];
+            }
+            if ((size_t)hi >= p)
+                f->D[(size_t)lo + (size_t)hi * m] = Wx[q];
         }
-        if (shift)
-            f->D[(size_t)col * (k + 1)] += shift[j];
     }
+    for (size_t col = p; col < k; col++)
+        f->D[col * (m + 1)] += shift_of(shift, (size_t)f->rows[col]);
 }
 
-/* The sparse solve's dense twin: W_SS's Cholesky factor by dpotrf in f->D, then dpotrs. A
- * pivot that is not positive (W_SS not positive definite, or not a number) stops dpotrf with
- * info > 0, CHOLMOD's CHOLMOD_NOT_POSDEF. */
+/* U's rows p..k-1 given its leading p: U12 = U11^-T A12, then U22 the factor of
+ * A22 - U12^T U12. A pivot that is not positive (W_SS not positive definite, or not a number)
+ * stops dpotrf with info > 0, CHOLMOD's CHOLMOD_NOT_POSDEF: 0. */
+static int factor_trailing(struct fr_masked_factor *f, size_t p, size_t k)
+{
+    int lda = (int)f->m, lead = (int)p, trail = (int)(k - p), info = 0;
+    double one = 1.0, minus_one = -1.0, *U12 = f->D + p * f->m, *A22 = U12 + p;
+    if (p > 0 && k > p) {
+        dtrsm_("L", "U", "T", "N", &lead, &trail, &one, f->D, &lda, U12, &lda, 1, 1, 1, 1);
+        dsyrk_("U", "T", &trail, &lead, &minus_one, U12, &lda, &one, A22, &lda, 1, 1);
+    }
+    if (k > p)
+        dpotrf_("U", &trail, A22, &lda, &info, 1);
+    return info == 0;
+}
+
+/* The sparse solve's dense twin: W_SS's Cholesky factor by LAPACK in f->D, its leading rows
+ * kept from the last one where the block keeps them (masked_factor.h), then dpotrs. */
 static int dense_solve(struct fr_masked_factor *f, const cholmod_sparse *W,
                        const unsigned char *set, const double *shift, const double b[], double x[])
 {
-    size_t k = 0;
-    for (size_t i = 0; i < f->m; i++) {
-        f->at[i] = set && set[i] ? (SuiteSparse_long)k : -1;
-        if (set && set[i])
-            f->b[k++] = b[i];
-    }
-    int order = (int)k, one = 1, info = 0;
     if (!holds(f, set, shift)) {
+        size_t p = kept_rows(f, set, shift);
         f->held = 0;
-        dense_fill(f, W, k, shift);
-        if (k > 0)
-            dpotrf_("U", &order, f->D, &order, &info, 1);
-        if (info != 0)
+        f->order = order_rows(f, set, shift, p);
+        f->kept = p;
+        dense_fill(f, W, p, f->order, shift);
+        if (!factor_trailing(f, p, f->order))
             return FRICREG_ESINGULAR;
         hold(f, set, shift);
     }
-    if (k == 0)
+    if (f->order == 0)
         return FRICREG_OK;
-    dpotrs_("U", &order, &one, f->D, &order, f->b, &order, &info, 1);
-    for (size_t i = 0; i < f->m; i++)
-        if (f->at[i] >= 0)
-            x[i] = f->b[f->at[i]];
+    for (size_t r = 0; r < f->order; r++)
+        f->b[r] = b[f->rows[r]];
+    int order = (int)f->order, lda = (int)f->m, one = 1, info = 0;
+    dpotrs_("U", &order, &one, f->D, &lda, f->b, &order, &info, 1);
+    for (size_t r = 0; r < f->order; r++)
+        x[f->rows[r]] = f->b[r];
     return FRICREG_OK;
 }
 

@@ -11,7 +11,15 @@
  * allocated here and factored there by LAPACK's dpotrf (blocked, BLAS 3), solved by dpotrs.
  * CHOLMOD's simplicial factor uses no BLAS and works on the whole pattern whatever S is; where
  * W's factor fills, the dense one of W_SS alone is cheaper (measured: docs/benchmark.md).
- * A solve on the block and shifts of the last factorization makes none. */
+ * A solve on the block and shifts of the last factorization makes none.
+ *
+ * A dense factor keeps the leading rows of the last one that the new block holds with the same
+ * shifts: a leading principal block's Cholesky factor is the leading block of the whole's, so
+ * only the trailing rows are factored (dtrsm, dsyrk and dpotrf on them, O(q p^2 + q^2 p + q^3/3)
+ * for p kept rows and q new ones instead of (p + q)^3 / 3). The rows are ordered for that: the
+ * kept ones, then those without a shift, then the shifted ones (a contact in the law's band,
+ * whose slope moves with every iterate) last. A near-stick set that grows and shrinks from the
+ * end of its history (a stick zone's edge that advances and recedes) refactors only that edge. */
 #ifndef FRICREG_MASKED_FACTOR_H
 #define FRICREG_MASKED_FACTOR_H
 
@@ -38,9 +46,14 @@ struct fr_masked_factor {
     SuiteSparse_long *perm; /* [m] row k of P W P^T is row perm[k] of W */
     cholmod_factor *L;
     cholmod_dense *X, *Yw, *Ew;
-    double *b;            /* [m] */
-    double *D;            /* dense: [m * m] W_SS + diag(shift_S), column-major, then its factor */
-    SuiteSparse_long *at; /* dense: [m] row i of W is row at[i] of W_SS, -1 outside S */
+    double *b; /* [m] */
+    /* Dense: W_SS + diag(shift_S) in the factor's row order, then its upper factor U
+     * (W_SS = U^T U), column-major with leading dimension m, of order rows. */
+    double *D;              /* [m * m] */
+    SuiteSparse_long *at;   /* [m] row i of W is row at[i] of the factor, -1 outside S */
+    SuiteSparse_long *rows; /* [m] row r of the factor is row rows[r] of W */
+    size_t order;           /* |S| of the factor */
+    size_t kept;            /* the leading rows the last factorization kept (below) */
     /* The block and shifts of the last factorization: a solve on the same ones reuses it
      * (a stick set that holds from one Newton iteration, or one step, to the next). */
     unsigned char *held_set; /* [m] */

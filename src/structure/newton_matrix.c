@@ -8,7 +8,7 @@
 #include <gsl/gsl_linalg.h>
 
 #include "base/gsl_mem.h"
-#include "base/sparse_ops.h"
+#include "contact_factor.h"
 #include "ctx/ctx_driver.h"
 #include "newton_matrix.h"
 
@@ -182,7 +182,7 @@ static int rows_split(struct fr_newton_matrix *nm, double coef, const cholmod_sp
     for (size_t i = 0; i < m; i++)
         any_implicit |= nm->implicit[i];
     if (any_implicit)
-        fr_sym_mult(W, 1.0, G, 0.0, nm->wg); /* [W G] */
+        fr_delassus_mult(W, 1.0, G, 0.0, nm->wg); /* [W G] */
     for (size_t i = 0; i < m; i++) {
         double k = nm->coef[i];
         nm->fz[i] = nm->implicit[i] ? -k : k; /* zero where F_i does not move with zdot_i */
@@ -205,9 +205,18 @@ static int rows_split(struct fr_newton_matrix *nm, double coef, const cholmod_sp
     return 1;
 }
 
-/* b_N -= W_eff,NR df_R. */
-static void rows_rhs(struct fr_newton_matrix *nm, const cholmod_sparse *Weff, const double df[])
+/* b_N -= W_eff,NR df_R. A packed W_eff (contact_factor.h) takes one BLAS product over all
+ * of it, with df_N zeroed (the block's solve writes df_N) and nm->wg as its scratch. */
+static void rows_rhs(struct fr_newton_matrix *nm, const cholmod_sparse *Weff, double df[])
 {
+    if (fr_delassus_packed(Weff)) {
+        for (size_t i = 0; i < nm->m; i++)
+            df[i] = nm->in_n[i] ? 0.0 : df[i];
+        fr_delassus_mult(Weff, 1.0, df, 0.0, nm->wg);
+        for (size_t i = 0; i < nm->m; i++)
+            nm->b[i] -= nm->in_n[i] ? nm->wg[i] : 0.0;
+        return;
+    }
     const SuiteSparse_long *Wp = Weff->p, *Wi = Weff->i;
     const double *Wx = Weff->x;
     for (size_t j = 0; j < nm->m; j++)

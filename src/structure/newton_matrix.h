@@ -51,7 +51,7 @@ struct fr_newton_matrix {
     /* Contact by contact: the context's rows, and W_eff's pattern with the identity where the
      * rows are not in N. */
     double *fz;                /* [m] d F_i/d zdot_i's sign (0: F_i does not move with zdot_i) */
-    double *coef, *wg, *shift; /* [m] s_i or k_i; [W G]; the shifts */
+    double *coef, *wg, *shift; /* [m] s_i or k_i; [W G], then scratch; the shifts */
     unsigned char *implicit;   /* [m] */
     unsigned char *in_n;       /* [m] */
     double *b;                 /* [m] */
