@@ -3,10 +3,12 @@
 # bench/membrane_contacts.sh — coupled contacts on a continuum (method:
 # docs/benchmark.md#coupled-contacts-on-a-continuum): fricreg-bench-membrane-contacts on the
 # 316 x 316 membrane (10^5 dofs) with its edge row alone and with two coupled rows, at three
-# spring stiffnesses (W_eff of the edge banded at 10^4 N/m, mostly dense at 3e6 and 1e7), each
-# in a process of its own with both near-stick solvers (dense and sparse, against one
-# frictionless run), 2 s of shaking (400 steps); with FRICREG_BENCH_BIG=1 also the
-# 1000 x 1000 membrane (10^6 dofs) with ten rows (10^4 contacts), 10 steps, at 10^4 N/m.
+# spring stiffnesses (W_eff of the edge banded at 10^4 N/m, mostly dense at 3e6 and 1e7), and
+# with eight rows (2528 contacts) at 3e6, each in a process of its own with both near-stick
+# solvers (dense and sparse, against one frictionless run), 2 s of shaking (400 steps); with
+# FRICREG_BENCH_BIG=1 also the 1000 x 1000 membrane (10^6 dofs) with ten rows (10^4
+# contacts), 10 steps at 10^4 N/m and 40 steps at 3e6 (minutes: the stiff set-up forms a
+# dense 10^4 x 10^4 W_eff).
 # Writes OUT/membrane_contacts.csv and prints a Markdown table.
 # Usage: membrane_contacts.sh BENCH_BINARY OUT_DIR
 set -eu
@@ -21,8 +23,10 @@ for k in 1e4 3e6 1e7; do
     run 316 1 400 8 "$k"
     run 316 2 400 8 "$k"
 done
+run 316 8 400 8 3e6
 if [ "${FRICREG_BENCH_BIG:-0}" = 1 ]; then
     run 1000 10 10 5 1e4
+    run 1000 10 40 5 3e6
 fi
 
 echo "| K (N/m) | n | contacts | path | whole run (s) | frictionless run (s) | ratio | step (ms) | frictionless step (ms) | ratio | Newton/step | stuck | peak (MiB) |"

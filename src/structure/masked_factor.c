@@ -250,15 +250,12 @@ static void dense_fill(struct fr_masked_factor *f, const cholmod_sparse *W, size
         if (f->at[j] < 0)
             continue;
         for (SuiteSparse_long q = Wp[j]; q < Wp[j + 1]; q++) {
-            SuiteSparse_long i = Wi[q], lo = f->at[i], hi = f->at[j];
-            if ((size_t)i > j || lo < 0)
+            SuiteSparse_long ri = f->at[Wi[q]], rj = f->at[j]; /* their rows of the factor */
+            if ((size_t)Wi[q] > j || ri < 0)
                 continue;
-            if (lo > hi) {
-                lo = hi;
-                hi = f->at[i];
-            }
-            if ((size_t)hi >= p)
-                f->D[(size_t)lo + (size_t)hi * m] = Wx[q];
+            size_t lo = (size_t)(ri < rj ? ri : rj), hi = (size_t)(ri < rj ? rj : ri);
+            if (hi >= p)
+                f->D[lo + hi * m] = Wx[q];
         }
     }
     for (size_t col = p; col < k; col++)
