@@ -8,6 +8,8 @@
  *     CHOLMOD's sparse product Y^T Y on every entry to 1e-13 of sqrt(D_ii D_jj), full so
  *     stored packed, its BLAS products equal to fr_sym_mult's loops to 1e-13, and with W_eff's
  *     drop (2^-53) the same to 1e-15;
+ *   - every allocation of a build that takes the shared rows through BLAS (a 32 x 32 grid, 64
+ *     contacts) may fail: FRICREG_ENOMEM, the factor freed, no CHOLMOD allocation left;
  *   - project and lift are J A^-1 b and A^-1 (b + J^T g) through the halves;
  *   - forming Y leaves the factor as CHOLMOD made it: a supernodal factor stays supernodal
  *     (CHOLMOD's sparse right-hand-side solve converts the factor it is given to a simplicial
@@ -18,8 +20,11 @@
  * against the edge. */
 #include <check.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include <SuiteSparse_config.h>
 
 #include "base/error.h"
 #include "base/sparse_factor.h"
@@ -31,18 +36,20 @@
 #define N (SIDE * SIDE)
 #define M (2 * SIDE)
 
-/* A's upper triangle: column j holds the nodes above and left of it, then itself. */
-static cholmod_sparse *membrane(cholmod_common *c)
+/* A's upper triangle on a side x side grid: column j holds the nodes above and left of it,
+ * then itself. */
+static cholmod_sparse *membrane(SuiteSparse_long side, cholmod_common *c)
 {
-    cholmod_sparse *A = cholmod_l_allocate_sparse(N, N, 3 * N, 1, 1, 1, CHOLMOD_REAL, c);
+    SuiteSparse_long n = side * side;
+    cholmod_sparse *A = cholmod_l_allocate_sparse(n, n, 3 * n, 1, 1, 1, CHOLMOD_REAL, c);
     SuiteSparse_long *Ap = A->p, *Ai = A->i, q = 0;
     double *Ax = A->x;
-    for (SuiteSparse_long j = 0; j < N; j++) {
-        SuiteSparse_long r = j / SIDE, col = j % SIDE;
-        double degree = (r > 0) + (r + 1 < SIDE) + (col > 0) + (col + 1 < SIDE);
+    for (SuiteSparse_long j = 0; j < n; j++) {
+        SuiteSparse_long r = j / side, col = j % side;
+        double degree = (r > 0) + (r + 1 < side) + (col > 0) + (col + 1 < side);
         Ap[j] = q;
         if (r > 0) {
-            Ai[q] = j - SIDE;
+            Ai[q] = j - side;
             Ax[q++] = -0.25;
         }
         if (col > 0) {
@@ -52,26 +59,28 @@ static cholmod_sparse *membrane(cholmod_common *c)
         Ai[q] = j;
         Ax[q++] = 1.0 + 0.25 * (degree + 1.0);
     }
-    Ap[N] = q;
+    Ap[n] = q;
     return A;
 }
 
-/* J^T (N x M): contact j < SIDE on node j, contact SIDE + c on node SIDE + c against node c. */
-static cholmod_sparse *contacts(cholmod_common *c)
+/* J^T (side^2 x 2 side): contact j < side on node j, contact side + c on node side + c against
+ * node c. */
+static cholmod_sparse *contacts(SuiteSparse_long side, cholmod_common *c)
 {
-    cholmod_sparse *Jt = cholmod_l_allocate_sparse(N, M, 2 * M, 1, 1, 0, CHOLMOD_REAL, c);
+    SuiteSparse_long m = 2 * side;
+    cholmod_sparse *Jt = cholmod_l_allocate_sparse(side * side, m, 2 * m, 1, 1, 0, CHOLMOD_REAL, c);
     SuiteSparse_long *Jp = Jt->p, *Ji = Jt->i, q = 0;
     double *Jx = Jt->x;
-    for (SuiteSparse_long j = 0; j < M; j++) {
+    for (SuiteSparse_long j = 0; j < m; j++) {
         Jp[j] = q;
-        if (j >= SIDE) {
-            Ji[q] = j - SIDE;
+        if (j >= side) {
+            Ji[q] = j - side;
             Jx[q++] = -1.0;
         }
         Ji[q] = j;
         Jx[q++] = 1.0;
     }
-    Jp[M] = q;
+    Jp[m] = q;
     return Jt;
 }
 
@@ -86,8 +95,8 @@ static void set_up(struct setup *s)
 {
     memset(s, 0, sizeof *s);
     ck_assert_int_eq(fr_cholmod_start(&s->c), FRICREG_OK);
-    s->A = membrane(&s->c);
-    s->Jt = contacts(&s->c);
+    s->A = membrane(SIDE, &s->c);
+    s->Jt = contacts(SIDE, &s->c);
     ck_assert_int_eq(fr_cfactor_build(&s->f, s->A, s->Jt, 0.0, &s->c, &s->err, "test", "A"),
                      FRICREG_OK);
 }
@@ -211,6 +220,78 @@ START_TEST(shared_rows_through_blas_equal_the_sparse_product)
 }
 END_TEST
 
+/* SuiteSparse's allocator (CHOLMOD's, and contact_factor.c's through cholmod_l_malloc), failing
+ * once `allowed` allocations have been made (-1: never). */
+static long allowed = -1;
+
+static int allow(void)
+{
+    if (allowed == 0)
+        return 0;
+    if (allowed > 0)
+        allowed--;
+    return 1;
+}
+static void *failing_malloc(size_t n)
+{
+    return allow() ? malloc(n) : NULL;
+}
+static void *failing_calloc(size_t n, size_t size)
+{
+    return allow() ? calloc(n, size) : NULL;
+}
+static void *failing_realloc(void *p, size_t n)
+{
+    return allow() ? realloc(p, n) : NULL;
+}
+
+/* Every allocation of a build that takes the shared rows through BLAS (a 32 x 32 grid, 64
+ * contacts), failed in turn: FRICREG_ENOMEM, the factor left freed, and none of CHOLMOD's
+ * allocations outstanding but its common's workspace; then the build that succeeds. */
+START_TEST(every_allocation_of_the_build_may_fail)
+{
+    cholmod_common c;
+    ck_assert_int_eq(fr_cholmod_start(&c), FRICREG_OK);
+    cholmod_sparse *A = membrane(32, &c), *Jt = contacts(32, &c);
+    cholmod_l_free_work(&c); /* the common's workspace is not the build's: counted apart */
+    long outstanding = (long)c.malloc_count;
+    SuiteSparse_config.malloc_func = failing_malloc;
+    SuiteSparse_config.calloc_func = failing_calloc;
+    SuiteSparse_config.realloc_func = failing_realloc;
+    struct fr_cfactor f = {0};
+    struct fr_error err = {0};
+    int status = FRICREG_ENOMEM;
+    long k = 0;
+    for (; status != FRICREG_OK; k++) {
+        allowed = k;
+        status = fr_cfactor_build(&f, A, Jt, 0x1p-53, &c, &err, "test", "A");
+        allowed = -1;
+        if (status != FRICREG_OK) {
+            ck_assert_int_eq(status, FRICREG_ENOMEM);
+            ck_assert_ptr_null(f.L);
+            ck_assert_ptr_null(f.D);
+            cholmod_l_free_work(&c);
+            ck_assert_msg((long)c.malloc_count == outstanding,
+                          "allocation %ld failed: %ld blocks outstanding, %ld before", k,
+                          (long)c.malloc_count, outstanding);
+        }
+    }
+    SuiteSparse_config.malloc_func = malloc;
+    SuiteSparse_config.calloc_func = calloc;
+    SuiteSparse_config.realloc_func = realloc;
+    printf("every_allocation_of_the_build_may_fail: %ld allocations, %zu shared rows\n", k - 1,
+           f.shared_rows);
+    ck_assert_uint_gt(f.shared_rows, 0);
+    ck_assert_int_gt(k, 20);
+    fr_cfactor_free(&f, &c);
+    cholmod_l_free_work(&c);
+    ck_assert_int_eq((long)c.malloc_count, outstanding);
+    cholmod_l_free_sparse(&A, &c);
+    cholmod_l_free_sparse(&Jt, &c);
+    fr_cholmod_finish(&c);
+}
+END_TEST
+
 START_TEST(project_and_lift_through_the_halves)
 {
     struct setup s;
@@ -258,6 +339,7 @@ int main(void)
     TCase *tc = tcase_create("core");
     tcase_add_test(tc, compliance_is_j_a_inverse_jt);
     tcase_add_test(tc, shared_rows_through_blas_equal_the_sparse_product);
+    tcase_add_test(tc, every_allocation_of_the_build_may_fail);
     tcase_add_test(tc, project_and_lift_through_the_halves);
     tcase_add_test(tc, forming_y_keeps_the_factor_supernodal);
     suite_add_tcase(s, tc);

@@ -228,9 +228,9 @@ static cholmod_sparse *sparse_gram(cholmod_sparse *Y, cholmod_common *c)
  * D is at least half full anyway: m from SHARED_ROWS_FROM on and one row reaching at least
  * m / sqrt(2) contacts (its pairs alone fill half of D's triangle), so that the dense m x m
  * array costs no more than D itself; and where d m fits LAPACK's int. 0 (R and rest NULL)
- * elsewhere; -1 without memory. */
+ * elsewhere; -1 without memory. The caller frees R and rest whatever the result. */
 #define SHARED_ROW_SHARE 4
-#define SHARED_ROWS_FROM 256
+#define SHARED_ROWS_FROM 64
 static long split_shared_rows(const cholmod_sparse *Y, cholmod_dense **R, cholmod_sparse **rest,
                               cholmod_common *c)
 {
@@ -274,12 +274,7 @@ static long split_shared_rows(const cholmod_sparse *Y, cholmod_dense **R, cholmo
         rp[m] = q;
     }
     cholmod_l_free(n, sizeof *at, at, c);
-    if (d > 0 && (*R == NULL || *rest == NULL)) {
-        cholmod_l_free_dense(R, c);
-        cholmod_l_free_sparse(rest, c);
-        return -1;
-    }
-    return (long)d;
+    return d > 0 && (*R == NULL || *rest == NULL) ? -1 : (long)d;
 }
 
 /* Whether D's entry w_ij (w_ii, w_jj its diagonal's) is kept: drop_small's rule; with drop 0
