@@ -358,10 +358,10 @@ enum fricreg_contact_solver {
  *  FRICREG_ESINGULAR on both (then no stick guess, as before). The sparse path's storage is
  *  allocated with K_eff's factor, but CHOLMOD's supernodal refactorization takes workspace of
  *  its own each time (two blocks: docs/benchmark.md). FRICREG_CONTACT_SOLVER_AUTO, the default,
- *  takes the dense path: on every case of the benchmark (docs/benchmark.md: 316 to 10^4
- *  contacts, 10^5 and 10^6 dofs, OpenBLAS and the reference BLAS) it is the faster, or the
- *  slower by less than 3 %; CHOLMOD's flop count against |N|^3 / 3 would choose the sparse
- *  path where OpenBLAS makes the dense one 3x faster.
+ *  takes the dense path: on every case of the benchmark (docs/benchmark.md: 316 to 2528
+ *  contacts on 10^5 dofs with OpenBLAS and the reference BLAS, 10^4 on 10^6 dofs with
+ *  OpenBLAS) it is the faster, or the slower by less than 3 %; CHOLMOD's flop count against
+ *  |N|^3 / 3 would choose the sparse path where OpenBLAS makes the dense one 3x faster.
  *  The setting is kept by the error estimate's companion. Since 1.8 (FRICREG_1.8).
  *
  *  solver   enum fricreg_contact_solver.
