@@ -826,7 +826,7 @@ END_TEST
 /* The method's choice: the monodromy for lift-off, Hill's for the 3-D contact element (not
  * piecewise linear in the monodromy's sense: a disk), the monodromy refused there when chosen,
  * bad methods and NULLs refused with nothing changed, and no size limit for the monodromy (40
- * dofs at H = 15: 1240 coefficients, over Hill's 1024). */
+ * dofs at H = 15: 1240 coefficients, over Hill's 1024, whose refusal names the monodromy). */
 START_TEST(method_choice)
 {
     struct model s = contact_pair();
@@ -876,6 +876,8 @@ START_TEST(method_choice)
     ck_assert_int_eq(fricreg_hb_set_elements(hb, 1, n, J, &k40, &mun40), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_set_stability_method(hb, FRICREG_HB_STABILITY_HILL), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_set_stability(hb, 1), FRICREG_EINVAL);
+    /* the refusal names the method that has no limit, since these elements have it */
+    ck_assert(strstr(fricreg_hb_errmsg(hb), "FRICREG_HB_STABILITY_MONODROMY first") != NULL);
     ck_assert_int_eq(fricreg_hb_set_stability_method(hb, FRICREG_HB_STABILITY_AUTO), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_set_stability(hb, 1), FRICREG_OK);
     fricreg_hb_free(hb);

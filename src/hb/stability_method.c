@@ -53,8 +53,13 @@ int fricreg_hb_set_stability(fricreg_hb *hb, int enable)
     if (enable && fr_hb_stability_in_force(hb) == FRICREG_HB_STABILITY_HILL &&
         hb->n * hb->nc > FRICREG_HB_MAX_HILL)
         return fr_fail(hb, FRICREG_EINVAL,
-                       "%s: ndof (2H + 1) = %zu, Hill's method is limited to %d coefficients", fn,
-                       hb->n * hb->nc, FRICREG_HB_MAX_HILL);
+                       "%s: ndof (2H + 1) = %zu, Hill's method is limited to %d coefficients%s", fn,
+                       hb->n * hb->nc, FRICREG_HB_MAX_HILL,
+                       fr_hb_monodromy_applies(hb)
+                           ? " (these elements have the exact monodromy, of any order: "
+                             "fricreg_hb_set_stability_method FRICREG_HB_STABILITY_MONODROMY "
+                             "first)"
+                           : "");
     if (enable == hb->stability)
         return FRICREG_OK;
     if (enable) {
