@@ -103,19 +103,40 @@ START_TEST(fill_rule_picks_the_storage)
 }
 END_TEST
 
+/* A random W (dominant(), m x m, the density given, from *state on) with both storages
+ * prepared on it. */
+struct factor_pair {
+    cholmod_common c;
+    cholmod_sparse *W;
+    struct fr_masked_factor sparse, dense;
+};
+
+static void pair_open(struct factor_pair *p, size_t m, double density, unsigned long *state)
+{
+    static double A[MMAX * MMAX];
+    dominant(m, density, state, A);
+    ck_assert_int_eq(fr_cholmod_start(&p->c), FRICREG_OK);
+    p->W = upper(m, A, &p->c);
+    ck_assert_int_eq(fr_masked_factor_prepare(&p->sparse, p->W, FR_BLOCK_SPARSE, &p->c),
+                     FRICREG_OK);
+    ck_assert_int_eq(fr_masked_factor_prepare(&p->dense, p->W, FR_BLOCK_DENSE, &p->c), FRICREG_OK);
+}
+
+static void pair_close(struct factor_pair *p)
+{
+    fr_masked_factor_free(&p->sparse, &p->c);
+    fr_masked_factor_free(&p->dense, &p->c);
+    cholmod_l_free_sparse(&p->W, &p->c);
+    fr_cholmod_finish(&p->c);
+}
+
 START_TEST(dense_solves_equal_sparse_ones)
 {
     const size_t m = 37;
-    static double A[MMAX * MMAX];
     unsigned long state = 7411;
-    dominant(m, 0.4, &state, A);
-    cholmod_common c;
-    ck_assert_int_eq(fr_cholmod_start(&c), FRICREG_OK);
-    cholmod_sparse *W = upper(m, A, &c);
-    struct fr_masked_factor sparse, dense;
-    ck_assert_int_eq(fr_masked_factor_prepare(&sparse, W, FR_BLOCK_SPARSE, &c), FRICREG_OK);
-    ck_assert_int_eq(fr_masked_factor_prepare(&dense, W, FR_BLOCK_DENSE, &c), FRICREG_OK);
-    ck_assert(!sparse.dense && dense.dense);
+    struct factor_pair pr;
+    pair_open(&pr, m, 0.4, &state);
+    ck_assert(!pr.sparse.dense && pr.dense.dense);
     double b[MMAX], shift[MMAX], xs[MMAX], xd[MMAX];
     unsigned char set[MMAX];
     for (int trial = 0; trial < 24; trial++) {
@@ -129,8 +150,10 @@ START_TEST(dense_solves_equal_sparse_ones)
             xs[i] = xd[i] = -7.5; /* outside the block: untouched */
         }
         const double *sh = trial % 2 ? NULL : shift;
-        ck_assert_int_eq(fr_masked_factor_solve(&sparse, W, set, sh, b, xs, &c), FRICREG_OK);
-        ck_assert_int_eq(fr_masked_factor_solve(&dense, W, set, sh, b, xd, &c), FRICREG_OK);
+        ck_assert_int_eq(fr_masked_factor_solve(&pr.sparse, pr.W, set, sh, b, xs, &pr.c),
+                         FRICREG_OK);
+        ck_assert_int_eq(fr_masked_factor_solve(&pr.dense, pr.W, set, sh, b, xd, &pr.c),
+                         FRICREG_OK);
         double scale = 0.0;
         for (size_t i = 0; i < m; i++)
             scale = fmax(scale, fabs(xs[i]));
@@ -140,10 +163,7 @@ START_TEST(dense_solves_equal_sparse_ones)
                 ck_assert_double_eq(xd[i], -7.5);
         }
     }
-    fr_masked_factor_free(&sparse, &c);
-    fr_masked_factor_free(&dense, &c);
-    cholmod_l_free_sparse(&W, &c);
-    fr_cholmod_finish(&c);
+    pair_close(&pr);
 }
 END_TEST
 
@@ -216,48 +236,40 @@ static void kept_block(struct fr_masked_factor *dense, struct fr_masked_factor *
 START_TEST(dense_factor_keeps_its_leading_rows)
 {
     const size_t m = 40;
-    static double A[MMAX * MMAX];
     unsigned long state = 5113;
-    dominant(m, 1.0, &state, A);
-    cholmod_common c;
-    ck_assert_int_eq(fr_cholmod_start(&c), FRICREG_OK);
-    cholmod_sparse *W = upper(m, A, &c);
-    struct fr_masked_factor sparse, dense;
-    ck_assert_int_eq(fr_masked_factor_prepare(&sparse, W, FR_BLOCK_SPARSE, &c), FRICREG_OK);
-    ck_assert_int_eq(fr_masked_factor_prepare(&dense, W, FR_BLOCK_DENSE, &c), FRICREG_OK);
+    struct factor_pair pr;
+    pair_open(&pr, m, 1.0, &state);
     unsigned char set[MMAX] = {0};
     double shift[MMAX] = {0.0};
     for (size_t i = 0; i < 20; i++)
         set[i] = 1;
-    kept_block(&dense, &sparse, W, set, shift, 0, &c);
+    kept_block(&pr.dense, &pr.sparse, pr.W, set, shift, 0, &pr.c);
     for (size_t i = 20; i < 30; i++) /* grows: rows 20..29 after 0..19 */
         set[i] = 1;
-    kept_block(&dense, &sparse, W, set, shift, 20, &c);
+    kept_block(&pr.dense, &pr.sparse, pr.W, set, shift, 20, &pr.c);
     for (size_t i = 25; i < 30; i++) /* loses its last five */
         set[i] = 0;
-    kept_block(&dense, &sparse, W, set, shift, 25, &c);
+    kept_block(&pr.dense, &pr.sparse, pr.W, set, shift, 25, &pr.c);
     shift[22] = 3.5; /* a shift moves at the factor's row 22 */
-    kept_block(&dense, &sparse, W, set, shift, 22, &c);
-    ck_assert_int_eq(dense.rows[24], 22); /* the shifted row now last */
+    kept_block(&pr.dense, &pr.sparse, pr.W, set, shift, 22, &pr.c);
+    ck_assert_int_eq(pr.dense.rows[24], 22); /* the shifted row now last */
     set[0] = 0;
-    kept_block(&dense, &sparse, W, set, shift, 0, &c);
-    ck_assert_int_eq(dense.rows[0], 1);
+    kept_block(&pr.dense, &pr.sparse, pr.W, set, shift, 0, &pr.c);
+    ck_assert_int_eq(pr.dense.rows[0], 1);
     for (size_t i = 30; i < 33; i++) /* a trailing part that is not positive definite */
         set[i] = 1;
     shift[31] = -1e3;
     double b[MMAX], x[MMAX];
     for (size_t i = 0; i < m; i++)
         b[i] = x[i] = -7.5;
-    ck_assert_int_eq(fr_masked_factor_solve(&dense, W, set, shift, b, x, &c), FRICREG_ESINGULAR);
-    ck_assert_uint_eq(dense.kept, 24);
+    ck_assert_int_eq(fr_masked_factor_solve(&pr.dense, pr.W, set, shift, b, x, &pr.c),
+                     FRICREG_ESINGULAR);
+    ck_assert_uint_eq(pr.dense.kept, 24);
     for (size_t i = 0; i < m; i++)
         ck_assert_double_eq(x[i], -7.5);
     shift[31] = 0.0;
-    kept_block(&dense, &sparse, W, set, shift, 0, &c);
-    fr_masked_factor_free(&sparse, &c);
-    fr_masked_factor_free(&dense, &c);
-    cholmod_l_free_sparse(&W, &c);
-    fr_cholmod_finish(&c);
+    kept_block(&pr.dense, &pr.sparse, pr.W, set, shift, 0, &pr.c);
+    pair_close(&pr);
 }
 END_TEST
 
