@@ -226,9 +226,10 @@ static int residual(struct step_solver *s, const gsl_vector *fv, const struct fr
     return FRICREG_OK;
 }
 
-static void products_cb(void *user, const double x[], struct fr_compliance_pair *p)
+static void w_product_cb(void *user, const double x[], double w_x[])
 {
-    products_of(user, x, p);
+    struct step_solver *s = user;
+    fr_delassus_mult(s->W, 1.0, x, 0.0, w_x);
 }
 
 static int residual_cb(void *user, const gsl_vector *f, const struct fr_compliance_pair *p,
@@ -272,7 +273,8 @@ static int stick_guess(struct step_solver *s, const double zstart[])
     fr_newton_stick_rhs(m, exact, s->c, fr_ctx_eps(s->ctx), s->mun,
                         fr_ctx_coupling_diagonal(s->ctx), s->z0, s->a0, s->at_start.weff->data,
                         zstart, s->zdot, s->b);
-    if (fr_newton_stick_solve(&s->nm, s->Weff, s->stopped, s->b, s->df, &s->cc) != FRICREG_OK)
+    if (fr_newton_stick_solve(&s->nm, s->Weff, s->stopped, s->b, s->df, s->at_guess.weff->data,
+                              &s->cc) != FRICREG_OK)
         return 0;
     double *guess = s->v[V_FT].data;
     for (size_t i = 0; i < m; i++) {
@@ -280,7 +282,7 @@ static int stick_guess(struct step_solver *s, const double zstart[])
         if (!isfinite(guess[i]))
             return 0; /* beyond the range (a tiny c): no guess, Newton from f0 */
     }
-    products_of(s, s->df, &s->at_guess);
+    fr_delassus_mult(s->W, 1.0, s->df, 0.0, s->at_guess.w->data);
     fr_step_combine(&s->at_start, 1.0, &s->at_guess, &s->at_guess);
     return exact ? 2 : 1;
 }
@@ -312,7 +314,7 @@ static int iterate(struct step_solver *s, double tol, int max_iter, int stops, i
         .stopped = s->stopped,
         .cuts = NULL,
         .user = s,
-        .products = products_cb,
+        .w_product = w_product_cb,
         .residual = residual_cb,
     };
     return fr_step_newton_iterate(&e, tol, stops, search, phi, rinf, iters);

@@ -190,10 +190,11 @@ static double force_scale(fricreg_structure *s)
     return scale > 0.0 ? scale : 1e-300;
 }
 
-/* The engine's callbacks (step_newton.h): the products and the residual above. */
-static void products_cb(void *user, const double x[], struct fr_compliance_pair *p)
+/* The engine's callbacks (step_newton.h): W x and the residual above. */
+static void w_product_cb(void *user, const double x[], double w_x[])
 {
-    form_products(user, x, p);
+    fricreg_structure *s = user;
+    fr_cfactor_compliance(&s->mass, x, w_x);
 }
 
 static int residual_cb(void *user, const gsl_vector *f, const struct fr_compliance_pair *p,
@@ -239,7 +240,7 @@ static int iterate(fricreg_structure *s, double tol, int stop_slips, double *phi
         .stopped = s->stopped,
         .cuts = &s->stats[FRICREG_SSTAT_LINE_SEARCH_CUTS],
         .user = s,
-        .products = products_cb,
+        .w_product = w_product_cb,
         .residual = residual_cb,
     };
     if (fr_step_newton_iterate(&e, tol, stop_slips, 1, phi, rinf, iters) == FRICREG_ENOMEM)
@@ -316,9 +317,12 @@ static int band_guess(fricreg_structure *s, size_t k)
     double c = (1.0 + s->alpha) * s->gamma * s->step_dt;
     fr_newton_stick_rhs(m, 1, c, fr_ctx_eps(s->ctx), s->mun, fr_ctx_coupling_diagonal(s->ctx),
                         s->z0->data, s->af0->data, weff_r, NULL, NULL, b);
-    if (fr_newton_stick_solve(&s->newton, s->step.D, set, b, guess, &s->cc) != FRICREG_OK)
-        return 0; /* guess_S is then not read */
-    form_products(s, guess, &s->at_ft);
+    double *weff_g = s->at_ft.weff->data;
+    if (fr_newton_stick_solve(&s->newton, s->step.D, set, b, guess, weff_g, &s->cc) != FRICREG_OK)
+        return 0;                  /* guess_S is then not read */
+    for (size_t i = 0; i < m; i++) /* W_eff [guess_S; 0] + W_eff [0; f_R] */
+        weff_g[i] += weff_r[i];
+    fr_cfactor_compliance(&s->mass, guess, s->at_ft.w->data);
     return 1;
 }
 
@@ -335,11 +339,12 @@ static int hold_guess(fricreg_structure *s)
     fr_csc_mult_t(s->Jt, s->v->data, b); /* zdot(t) */
     fr_newton_stick_rhs(m, 0, c, fr_ctx_eps(s->ctx), s->mun, NULL, NULL, NULL, NULL, b,
                         s->zdot->data, b);
-    if (fr_newton_stick_solve(&s->newton, s->step.D, s->stopped, b, df, &s->cc) != FRICREG_OK)
+    if (fr_newton_stick_solve(&s->newton, s->step.D, s->stopped, b, df, s->at_ft.weff->data,
+                              &s->cc) != FRICREG_OK)
         return 0;
     for (size_t i = 0; i < m; i++)
         guess[i] = f[i] + df[i];
-    form_products(s, df, &s->at_ft);
+    fr_cfactor_compliance(&s->mass, df, s->at_ft.w->data);
     fr_step_combine(&s->at_start, 1.0, &s->at_ft, &s->at_ft);
     return 1;
 }

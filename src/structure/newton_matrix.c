@@ -10,13 +10,14 @@
 #include "base/gsl_mem.h"
 #include "contact_factor.h"
 #include "ctx/ctx_driver.h"
+#include "delassus_runs.h"
 #include "newton_matrix.h"
 
 void fr_newton_matrix_free(struct fr_newton_matrix *nm, cholmod_common *c)
 {
-    void *blocks[] = {nm->Fz,   nm->Fa,    nm->T,    nm->row,  nm->perm,    nm->tau,
-                      nm->norm, nm->rhs,   nm->sol,  nm->rows, nm->fz,      nm->coef,
-                      nm->wg,   nm->shift, nm->in_n, nm->b,    nm->implicit};
+    void *blocks[] = {nm->Fz,   nm->Fa,    nm->T,    nm->row,  nm->perm,     nm->tau,
+                      nm->norm, nm->rhs,   nm->sol,  nm->rows, nm->fz,       nm->coef,
+                      nm->wg,   nm->shift, nm->in_n, nm->b,    nm->implicit, nm->runs};
     for (size_t k = 0; k < sizeof blocks / sizeof *blocks; k++)
         free(blocks[k]); /* gsl_mem.h: one block each */
     fr_masked_factor_free(&nm->block, c);
@@ -161,7 +162,9 @@ int fr_newton_matrix_prepare(struct fr_newton_matrix *nm, const cholmod_sparse *
         nm->b = malloc(m * sizeof *nm->b);
         nm->implicit = malloc(m);
         nm->in_n = malloc(m);
-        if (!(nm->fz && nm->coef && nm->wg && nm->shift && nm->b && nm->implicit && nm->in_n)) {
+        nm->runs = malloc(3 * (m + 1) * sizeof *nm->runs);
+        if (!(nm->fz && nm->coef && nm->wg && nm->shift && nm->b && nm->implicit && nm->in_n &&
+              nm->runs)) {
             fr_newton_matrix_free(nm, c); /* none kept: the next call allocates them all */
             return FRICREG_ENOMEM;
         }
@@ -205,21 +208,30 @@ static int rows_split(struct fr_newton_matrix *nm, double coef, const cholmod_sp
     return 1;
 }
 
-/* b_N -= W_eff,NR df_R. A packed W_eff (contact_factor.h) takes one BLAS product over all
- * of it, with df_N zeroed (the block's solve writes df_N) and nm->wg as its scratch. */
-static void rows_rhs(struct fr_newton_matrix *nm, const cholmod_sparse *Weff, double df[])
+/* b_N -= W_eff,NR df_R, with u = W_eff [0; df_R] (all rows) into nm->wg where W_eff is packed
+ * (contact_factor.h): through R's runs where they are few (delassus_runs.h), else one BLAS
+ * product over all of W_eff with df_N zeroed (the block's solve writes df_N). Returns whether
+ * u was formed. */
+static int rows_rhs(struct fr_newton_matrix *nm, const cholmod_sparse *Weff, double df[])
 {
+    size_t m = nm->m;
     if (fr_delassus_packed(Weff)) {
-        for (size_t i = 0; i < nm->m; i++)
-            df[i] = nm->in_n[i] ? 0.0 : df[i];
-        fr_delassus_mult(Weff, 1.0, df, 0.0, nm->wg);
-        for (size_t i = 0; i < nm->m; i++)
+        size_t *r_runs = nm->runs, all[2] = {0, m}, in_r;
+        size_t nr = fr_runs_of(nm->in_n, 0, m, r_runs, &in_r);
+        if (fr_delassus_runs_cheaper(Weff, m, 1, in_r, nr)) {
+            fr_delassus_mult_runs(Weff, r_runs, nr, df, all, 1, nm->wg);
+        } else {
+            for (size_t i = 0; i < m; i++)
+                df[i] = nm->in_n[i] ? 0.0 : df[i];
+            fr_delassus_mult(Weff, 1.0, df, 0.0, nm->wg);
+        }
+        for (size_t i = 0; i < m; i++)
             nm->b[i] -= nm->in_n[i] ? nm->wg[i] : 0.0;
-        return;
+        return 1;
     }
     const SuiteSparse_long *Wp = Weff->p, *Wi = Weff->i;
     const double *Wx = Weff->x;
-    for (size_t j = 0; j < nm->m; j++)
+    for (size_t j = 0; j < m; j++)
         for (SuiteSparse_long p = Wp[j]; p < Wp[j + 1]; p++) {
             size_t i = (size_t)Wi[p];
             if (nm->in_n[i] && !nm->in_n[j])
@@ -227,28 +239,86 @@ static void rows_rhs(struct fr_newton_matrix *nm, const cholmod_sparse *Weff, do
             else if (nm->in_n[j] && !nm->in_n[i])
                 nm->b[j] -= Wx[p] * df[i];
         }
+    return 0;
+}
+
+/* weff_df = W_eff df after the block's solve, with u = W_eff [0; df_R] from rows_rhs. On the
+ * implicit rows the solve's own equations give it: [W_eff df]_i = b_i + u_i (b after
+ * rows_rhs, shift 0). The other rows E (R, and the shifted rows, where b_i - shift_i df_i
+ * would cancel) take W_eff,EN df_N + u_E through the runs of E and N where those are few;
+ * otherwise the whole product. */
+static void direction_product(struct fr_newton_matrix *nm, const cholmod_sparse *Weff,
+                              const double df[], double weff_df[])
+{
+    size_t m = nm->m, in_e, in_n;
+    size_t *e_runs = nm->runs + (m + 1), *n_runs = nm->runs + 2 * (m + 1);
+    size_t ne = fr_runs_of(nm->implicit, 0, m, e_runs, &in_e);
+    size_t nn = fr_runs_of(nm->in_n, 1, m, n_runs, &in_n);
+    if (!fr_delassus_runs_cheaper(Weff, in_e, ne, in_n, nn)) {
+        fr_delassus_mult(Weff, 1.0, df, 0.0, weff_df);
+        return;
+    }
+    fr_delassus_mult_runs(Weff, n_runs, nn, df, e_runs, ne, weff_df);
+    for (size_t i = 0; i < m; i++)
+        weff_df[i] = nm->implicit[i] ? nm->b[i] + nm->wg[i] : weff_df[i] + nm->wg[i];
 }
 
 int fr_newton_direction(struct fr_newton_matrix *nm, fricreg_ctx *ctx, double coef,
                         const cholmod_sparse *W, const cholmod_sparse *Weff, const double G[],
-                        double df[], cholmod_common *c)
+                        double df[], double weff_df[], cholmod_common *c)
 {
     int status = fr_ctx_tangent_rows(ctx, nm->implicit, nm->coef);
-    if (status != FRICREG_OK || !rows_split(nm, coef, W, G, df))
-        return dense_direction(nm, ctx, coef, W, Weff, G, df);
-    rows_rhs(nm, Weff, df);
+    if (status != FRICREG_OK || !rows_split(nm, coef, W, G, df)) {
+        status = dense_direction(nm, ctx, coef, W, Weff, G, df);
+        if (status == FRICREG_OK)
+            fr_delassus_mult(Weff, 1.0, df, 0.0, weff_df);
+        return status;
+    }
+    int formed_u = rows_rhs(nm, Weff, df);
     if (nm->sparse != NULL)
-        return fr_contact_sparse_solve(nm->sparse, Weff, nm->in_n, nm->shift, nm->b, df, c);
-    return fr_masked_factor_solve(&nm->block, Weff, nm->in_n, nm->shift, nm->b, df, c);
+        status = fr_contact_sparse_solve(nm->sparse, Weff, nm->in_n, nm->shift, nm->b, df, c);
+    else
+        status = fr_masked_factor_solve(&nm->block, Weff, nm->in_n, nm->shift, nm->b, df, c);
+    if (status != FRICREG_OK)
+        return status;
+    if (formed_u && nm->sparse == NULL) /* the sparse path's solve may be a chord's */
+        direction_product(nm, Weff, df, weff_df);
+    else
+        fr_delassus_mult(Weff, 1.0, df, 0.0, weff_df);
+    return FRICREG_OK;
+}
+
+/* weff_x = W_eff [x_S; 0] after the stick block's solve W_eff,SS x_S = b_S: b_S on S, and
+ * W_eff,RS x_S on the others through the runs of S and R where they are few; otherwise the
+ * whole product of [x_S; 0] (nm->wg its scratch). */
+static void stick_product(struct fr_newton_matrix *nm, const cholmod_sparse *Weff,
+                          const unsigned char set[], const double b[], const double x[],
+                          double weff_x[])
+{
+    size_t m = nm->m, in_s, in_r;
+    size_t *s_runs = nm->runs, *r_runs = nm->runs + (m + 1);
+    size_t ns = fr_runs_of(set, 1, m, s_runs, &in_s);
+    size_t nr = fr_runs_of(set, 0, m, r_runs, &in_r);
+    if (nm->sparse != NULL || !fr_delassus_runs_cheaper(Weff, in_r, nr, in_s, ns)) {
+        for (size_t i = 0; i < m; i++)
+            nm->wg[i] = set[i] ? x[i] : 0.0;
+        fr_delassus_mult(Weff, 1.0, nm->wg, 0.0, weff_x);
+        return;
+    }
+    fr_delassus_mult_runs(Weff, s_runs, ns, x, r_runs, nr, weff_x);
+    for (size_t i = 0; i < m; i++)
+        weff_x[i] = set[i] ? b[i] : weff_x[i];
 }
 
 int fr_newton_stick_solve(struct fr_newton_matrix *nm, const cholmod_sparse *Weff,
-                          const unsigned char set[], const double b[], double x[],
+                          const unsigned char set[], const double b[], double x[], double weff_x[],
                           cholmod_common *c)
 {
-    if (nm->sparse != NULL)
-        return fr_contact_sparse_solve(nm->sparse, Weff, set, NULL, b, x, c);
-    return fr_masked_factor_solve(&nm->block, Weff, set, NULL, b, x, c);
+    int status = nm->sparse != NULL ? fr_contact_sparse_solve(nm->sparse, Weff, set, NULL, b, x, c)
+                                    : fr_masked_factor_solve(&nm->block, Weff, set, NULL, b, x, c);
+    if (status == FRICREG_OK)
+        stick_product(nm, Weff, set, b, x, weff_x);
+    return status;
 }
 
 double fr_newton_first_stop(size_t m, const double zdot[], const double weff_df[], double coef,

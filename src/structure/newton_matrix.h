@@ -54,6 +54,7 @@ struct fr_newton_matrix {
     double *coef, *wg, *shift; /* [m] s_i or k_i; [W G], then scratch; the shifts */
     unsigned char *implicit;   /* [m] */
     unsigned char *in_n;       /* [m] */
+    size_t *runs;              /* [3 (m + 1)] runs of rows for W_eff's products (delassus_runs.h) */
     double *b;                 /* [m] */
     struct fr_masked_factor block; /* W_eff's principal blocks (shifted) */
     enum fr_block_storage storage; /* the blocks' (FR_BLOCK_CHOSEN unless a test forces one) */
@@ -72,17 +73,21 @@ int fr_newton_matrix_prepare(struct fr_newton_matrix *nm, const cholmod_sparse *
 void fr_newton_matrix_free(struct fr_newton_matrix *nm, cholmod_common *c);
 
 /* The direction df[m] = -T^-1 G[m] at the context's last evaluation, with coef = c above,
- * W and W_eff m x m upper triangles (stype 1, sorted). FRICREG_OK; FRICREG_ESINGULAR (T singular);
- * FRICREG_ENOMEM (the dense form could not be allocated); the context's tangent's status. */
+ * W and W_eff m x m upper triangles (stype 1, sorted), and its product weff_df[m] = W_eff df:
+ * on the block's implicit rows from the solve's own equations, on the others by a product
+ * over those rows alone where W_eff is packed (delassus_runs.h); equal to the whole product
+ * to the solve's rounding. FRICREG_OK; FRICREG_ESINGULAR (T singular); FRICREG_ENOMEM (the
+ * dense form could not be allocated); the context's tangent's status. */
 int fr_newton_direction(struct fr_newton_matrix *nm, fricreg_ctx *ctx, double coef,
                         const cholmod_sparse *W, const cholmod_sparse *Weff, const double G[],
-                        double df[], cholmod_common *c);
+                        double df[], double weff_df[], cholmod_common *c);
 
 /* x_S = W_eff,SS^-1 b_S for the contacts marked in set[m] (x elsewhere untouched), through
- * the same sparse factor: FRICREG_OK, FRICREG_ESINGULAR (W_eff,SS singular: contacts that
- * depend on each other), or CHOLMOD's failure. */
+ * the same factor, and weff_x[m] = W_eff [x_S; 0] (b_S on S, a product over the other rows
+ * alone where W_eff is packed and they are few). FRICREG_OK, FRICREG_ESINGULAR (W_eff,SS
+ * singular: contacts that depend on each other), or CHOLMOD's failure. */
 int fr_newton_stick_solve(struct fr_newton_matrix *nm, const cholmod_sparse *Weff,
-                          const unsigned char set[], const double b[], double x[],
+                          const unsigned char set[], const double b[], double x[], double weff_x[],
                           cholmod_common *c);
 
 /* The first trial fraction of a Newton direction (Newmark's stop of a slipping contact,

@@ -76,9 +76,9 @@ static int step_direction(void *user)
 {
     struct fr_step_newton *e = ((struct step_loop *)user)->e;
     int status = fr_newton_direction(e->nm, e->ctx, e->coef, e->W, e->Weff, e->G->data, e->df->data,
-                                     e->cc);
+                                     e->at_df->weff->data, e->cc);
     if (status == FRICREG_OK)
-        e->products(e->user, e->df->data, e->at_df);
+        e->w_product(e->user, e->df->data, e->at_df->w->data);
     return status;
 }
 

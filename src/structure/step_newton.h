@@ -9,8 +9,8 @@
  * direction df = -T^-1 G (fr_newton_direction), then a backtracking line search along it,
  * from the first trial (a slipping contact stopped at zdot = 0, fr_newton_first_stop) or the
  * full step, halved at most FR_STEP_HALVINGS times until the caller's merit phi decreases by Armijo's
- * 1e-4; plain (no search): the full step, whatever it gives. The caller supplies the products
- * (W_eff x, W x) and the residual (G, its merit phi and its largest entry rinf), which is
+ * 1e-4; plain (no search): the full step, whatever it gives. The caller supplies the product
+ * W x (fr_newton_direction gives W_eff df) and the residual (G, its merit phi and its largest entry rinf), which is
  * where the two callers differ: the structure measures R = w J^T G on its degrees of freedom,
  * fricreg_ctx_solve_step sqrt(G^T W G). */
 #ifndef FRICREG_STEP_NEWTON_H
@@ -52,7 +52,8 @@ struct fr_step_newton {
     unsigned char *stopped; /* [m] the contacts stopped this step */
     int64_t *cuts;          /* counts the line search's halvings (NULL: not counted) */
     void *user;
-    void (*products)(void *user, const double x[], struct fr_compliance_pair *p);
+    void (*w_product)(void *user, const double x[],
+                      double w_x[]); /* W x (W_eff x: the direction's) */
     int (*residual)(void *user, const gsl_vector *f, const struct fr_compliance_pair *p,
                     gsl_vector *G, double *phi, double *rinf);
 };
