@@ -21,6 +21,11 @@ void dtrsm_(const char *side, const char *uplo, const char *transa, const char *
 void dsyrk_(const char *uplo, const char *trans, const int *n, const int *k, const double *alpha,
             const double *a, const int *lda, const double *beta, double *c, const int *ldc,
             size_t uplo_len, size_t trans_len);
+void dtpqrt_(const int *m, const int *n, const int *l, const int *nb, double *a, const int *lda,
+             double *b, const int *ldb, double *t, const int *ldt, double *work, int *info);
+
+/* dtpqrt's block size: its T and work take 2 DELETE_NB m doubles (f->qr_work). */
+#define DELETE_NB 32
 
 void fr_masked_factor_free(struct fr_masked_factor *f, cholmod_common *c)
 {
@@ -36,6 +41,7 @@ void fr_masked_factor_free(struct fr_masked_factor *f, cholmod_common *c)
     cholmod_l_free_dense(&f->Yw, c);
     cholmod_l_free_dense(&f->Ew, c);
     cholmod_l_free(f->m * f->m > 0 ? f->m * f->m : 1, sizeof *f->D, f->D, c);
+    cholmod_l_free(2 * DELETE_NB * (f->m > 0 ? f->m : 1), sizeof *f->qr_work, f->qr_work, c);
     cholmod_l_free(f->m, sizeof *f->at, f->at, c);
     cholmod_l_free(f->m, sizeof *f->rows, f->rows, c);
     memset(f, 0, sizeof *f);
@@ -113,7 +119,8 @@ static int dense_allocate(struct fr_masked_factor *f, cholmod_common *c)
     f->D = cholmod_l_malloc(f->m * f->m > 0 ? f->m * f->m : 1, sizeof *f->D, c);
     f->at = cholmod_l_malloc(f->m, sizeof *f->at, c);
     f->rows = cholmod_l_malloc(f->m, sizeof *f->rows, c);
-    return f->D != NULL && f->at != NULL && f->rows != NULL;
+    f->qr_work = cholmod_l_malloc(2 * DELETE_NB * (f->m > 0 ? f->m : 1), sizeof *f->qr_work, c);
+    return f->D != NULL && f->at != NULL && f->rows != NULL && f->qr_work != NULL;
 }
 
 int fr_masked_factor_prepare(struct fr_masked_factor *f, const cholmod_sparse *W,
@@ -279,6 +286,80 @@ static int factor_trailing(struct fr_masked_factor *f, size_t p, size_t k)
     return info == 0;
 }
 
+/* Whether row r of the held factor stays in the block set, shift (in it, same shift). */
+static int stays(const struct fr_masked_factor *f, size_t r, const unsigned char *set,
+                 const double *shift)
+{
+    size_t i = (size_t)f->rows[r];
+    return set && set[i] && shift_of(shift, i) == f->held_shift[i];
+}
+
+/* factor_trailing's flops with p rows kept and q new ones. */
+static double trailing_flops(double p, double q)
+{
+    return p * p * q + p * q * q + q * q * q / 3.0;
+}
+
+/* Whether the held factor's rows after the first p that stay are cheaper kept by deleting
+ * the others (delete_rows: 2 q t^2 flops for q rows deleted before t staying ones) than
+ * factored again with the new rows. */
+static int deletion_cheaper(const struct fr_masked_factor *f, const unsigned char *set,
+                            const double *shift, size_t p)
+{
+    if (!f->held || p == f->order)
+        return 0;
+    size_t t = 0, q = 0, k = 0;
+    for (size_t r = p; r < f->order; r++) {
+        t += stays(f, r, set, shift);
+        q += !stays(f, r, set, shift);
+    }
+    for (size_t i = 0; set && i < f->m; i++)
+        k += set[i] != 0;
+    double again = trailing_flops((double)p, (double)(k - p));
+    double keep = 2.0 * (double)q * (double)t * (double)t +
+                  trailing_flops((double)(p + t), (double)(k - p - t));
+    return t > 0 && keep < again;
+}
+
+/* The held factor without its rows after the first p that leave the block or change their
+ * shift: returns the rows it keeps, p + t. With U's staying rows T and deleted rows Q after
+ * the first p, the block of T has the factor R of [U_TT; U_QT] (R^T R = U_TT^T U_TT +
+ * U_QT^T U_QT, the rows of Q put back into T's columns), by LAPACK's dtpqrt (the QR of a
+ * triangle on a rectangle, BLAS 3); the rows above keep U_:T. In place: T's columns are moved
+ * left to p.., each with its rows p.. in the order T then Q (zero where U's row follows its
+ * column). */
+static size_t delete_rows(struct fr_masked_factor *f, const unsigned char *set, const double *shift,
+                          size_t p)
+{
+    size_t m = f->m, order = f->order, t = 0, q = 0;
+    for (size_t r = p; r < order; r++) /* the new row of each old one, T's then Q's */
+        if (stays(f, r, set, shift))
+            f->at[f->rows[r]] = (SuiteSparse_long)t++;
+    for (size_t r = p; r < order; r++)
+        if (!stays(f, r, set, shift))
+            f->at[f->rows[r]] = (SuiteSparse_long)(t + q++);
+    double *scratch = f->b;
+    for (size_t r = p, col = p; r < order; r++) {
+        if (!stays(f, r, set, shift))
+            continue;
+        double *from = f->D + r * m, *to = f->D + col++ * m;
+        memmove(to, from, p * sizeof *to);
+        for (size_t s = p; s < order; s++)
+            scratch[f->at[f->rows[s]]] = s <= r ? from[s] : 0.0;
+        memcpy(to + p, scratch, (order - p) * sizeof *to);
+    }
+    for (size_t r = p, k = p; r < order; r++) /* T's rows of W, in their order */
+        if (stays(f, r, set, shift))
+            f->rows[k++] = f->rows[r];
+    int rows_q = (int)q, cols_t = (int)t, zero = 0, lda = (int)m, info = 0;
+    int nb = t < DELETE_NB ? (int)t : DELETE_NB;
+    double *R = f->D + p * (m + 1); /* its diagonal may be negative: R^T R is the same */
+    dtpqrt_(&rows_q, &cols_t, &zero, &nb, R, &lda, R + t, &lda, f->qr_work, &nb,
+            f->qr_work + (size_t)nb * t, &info);
+    f->deleted = q;
+    return p + t;
+}
+
 /* The sparse solve's dense twin: W_SS's Cholesky factor by LAPACK in f->D, its leading rows
  * kept from the last one where the block keeps them (masked_factor.h), then dpotrs. */
 static int dense_solve(struct fr_masked_factor *f, const cholmod_sparse *W,
@@ -286,6 +367,9 @@ static int dense_solve(struct fr_masked_factor *f, const cholmod_sparse *W,
 {
     if (!holds(f, set, shift)) {
         size_t p = kept_rows(f, set, shift);
+        f->deleted = 0;
+        if (deletion_cheaper(f, set, shift, p))
+            p = delete_rows(f, set, shift, p);
         f->held = 0;
         f->order = order_rows(f, set, shift, p);
         f->kept = p;
