@@ -8,7 +8,7 @@
  * permuted, so that each numeric factorization is CHOLMOD's simplicial one on a matrix in natural
  * order, which allocates nothing (cholmod_l_factorize permutes a matrix in any other order into
  * new storage every call). Dense: W_SS is copied into a column-major buffer of m x m doubles
- * allocated here and factored there by LAPACK's dpotrf (blocked, BLAS 3), solved by dpotrs.
+ * allocated here and factored there by LAPACK's dpotrf (blocked, BLAS 3), solved by two dtrsv.
  * CHOLMOD's simplicial factor uses no BLAS and works on the whole pattern whatever S is; where
  * W's factor fills, the dense one of W_SS alone is cheaper (measured: docs/benchmark.md).
  * A solve on the block and shifts of the last factorization makes none.
@@ -19,7 +19,11 @@
  * for p kept rows and q new ones instead of (p + q)^3 / 3). The rows are ordered for that: the
  * kept ones, then those without a shift, then the shifted ones (a contact in the law's band,
  * whose slope moves with every iterate) last. A near-stick set that grows and shrinks from the
- * end of its history (a stick zone's edge that advances and recedes) refactors only that edge. */
+ * end of its history (a stick zone's edge that advances and recedes) refactors only that edge.
+ * Rows that leave from inside (or whose shift moves) are deleted where that is cheaper than
+ * factoring the rows after them again: with U's staying rows T and leaving rows Q after the
+ * kept ones, the block of T has the factor R of [U_TT; U_QT] (R^T R = U_TT^T U_TT +
+ * U_QT^T U_QT), LAPACK's dtpqrt, 2 |Q| |T|^2 flops; the rows above keep their columns of U. */
 #ifndef FRICREG_MASKED_FACTOR_H
 #define FRICREG_MASKED_FACTOR_H
 
