@@ -1098,7 +1098,9 @@ FRICREG_API int fricreg_structure_get_value(const fricreg_structure *s, int whic
  *  p = log2(d1 / d2) is at least 0.5, err = 2 |d1| 2^p / (2^p - 1) (Richardson's correction
  *  with the observed order, times 2; about 2 |d1| where p is above the law's orders); below
  *  (a stall: the run and the first companion agree on a wrong value; or differences that
- *  grow or change sign) err = 6.83 (|d1| + |d2|); d2 below 1e-9 of q gives 2 |d1| + |d2|, d1
+ *  grow or change sign) err = 6.83 (|d1| + |d2|), but 2 (|d1| + 2 |d2|) where they have
+ *  opposite signs and |d2| <= |d1| / 8 (law (4)'s two orders give the error as
+ *  (2/3) d1 + (8/3) d2; since 1.8); d2 below 1e-9 of q gives 2 |d1| + |d2|, d1
  *  and d2 both below it 4 (|d1| + |d2|) (the factor 2 and p = 1's tail; their bare sum before
  *  1.8). With on = FRICREG_ESTIMATE_ONE_COMPANION (2), 1.6's estimator: err = 3 |d1|
  *  (fricreg_sim_set_error_estimate's, with its calibration), which cannot see a stall

@@ -7,7 +7,10 @@
  *     than the law's orders), twice the true error; with d2 below 1e-9 of the quantity,
  *     2 |d1| + |d2|, ASYMPTOTIC too;
  *   - below it (a stall, 1 <= d1 / d2 < 2^(1/2), or differences of opposite signs): the bound
- *     6.83 (|d1| + |d2|), of kind BOUND;
+ *     6.83 (|d1| + |d2|), of kind BOUND; but with opposite signs and |d2| <= |d1| / 8, on law
+ *     (4)'s two orders q = q0 + a eps + b eps^2 (b / a in (-4/3, -10/9]), 2 (|d1| + 2 |d2|),
+ *     of kind BOUND, at least twice the error (q - q0 = (2/3) d1 + (8/3) d2 exactly), and the
+ *     frame's storey-2 peak of bench/frame_estimate.c at 5 ms (d1 = 7.35e-4, d2 = -4.3e-5);
  *   - differences both below 1e-9 of the quantity: 4 (|d1| + |d2|) (the factor 2 and p = 1's
  *     Richardson tail 2), of kind BOUND (no order read from noise);
  *   - one companion: 3 |d1|, of kind ASSUMED;
@@ -63,6 +66,44 @@ START_TEST(a_stall_gets_the_bound_of_kind_bound)
     e = fr_companion_estimate(FRICREG_ESTIMATE_TWO_COMPANIONS, 1.0, 1.1, 1.05, &flag);
     ck_assert_int_eq(flag, FRICREG_EST_KIND_BOUND);
     ck_assert_double_eq_tol(e, OUT_BOUND * (0.1 + 0.05), 1e-12);
+}
+END_TEST
+
+/* Law (4)'s two orders at eps, eps/2, eps/4 with a = 1, b = beta: where d1 / d2 <= -8
+ * (beta in (-4/3, -10/9]) the estimate is 2 (|d1| + 2 |d2|), of kind BOUND, at least twice the
+ * error a + b; at d1 / d2 = -4 still the bound 6.83 (|d1| + |d2|). */
+static double two_orders(double beta, double *err, double *d1, double *d2, int *flag)
+{
+    double q = 1.0 + beta, q2 = 0.5 + beta / 4.0, q4 = 0.25 + beta / 16.0;
+    *err = q, *d1 = q - q2, *d2 = q2 - q4;
+    *flag = 0;
+    return fr_companion_estimate(FRICREG_ESTIMATE_TWO_COMPANIONS, q, q2, q4, flag);
+}
+
+START_TEST(opposite_signs_near_the_limit)
+{
+    int flag, cases = 0;
+    double err, d1, d2;
+    for (double beta = -4.0 / 3.0 + 1e-3; beta <= -10.0 / 9.0 - 1e-9; beta += 1e-3) {
+        double e = two_orders(beta, &err, &d1, &d2, &flag);
+        ck_assert_double_le(d1 / d2, -8.0);
+        ck_assert_int_eq(flag, FRICREG_EST_KIND_BOUND);
+        ck_assert_double_eq_tol(e, 2.0 * (fabs(d1) + 2.0 * fabs(d2)), 1e-14);
+        ck_assert_double_eq_tol(err, 2.0 / 3.0 * d1 + 8.0 / 3.0 * d2, 1e-14);
+        ck_assert_double_ge(e, 2.0 * fabs(err));
+        cases++;
+    }
+    ck_assert_int_ge(cases, 200);
+    double e = two_orders(-1.0, &err, &d1, &d2, &flag); /* d1 / d2 = -4: no order */
+    ck_assert_double_eq_tol(d1 / d2, -4.0, 1e-12);
+    ck_assert_int_eq(flag, FRICREG_EST_KIND_BOUND);
+    ck_assert_double_eq_tol(e, OUT_BOUND * (fabs(d1) + fabs(d2)), 1e-14);
+    /* the differences of the frame's storey-2 peak at 5 ms (a peak of 0.1 m taken here) */
+    double q = 0.1, q2 = q - 7.35e-4, q4 = q2 + 4.3e-5;
+    flag = 0;
+    e = fr_companion_estimate(FRICREG_ESTIMATE_TWO_COMPANIONS, q, q2, q4, &flag);
+    ck_assert_int_eq(flag, FRICREG_EST_KIND_BOUND);
+    ck_assert_double_eq_tol(e, 2.0 * (7.35e-4 + 2.0 * 4.3e-5), 1e-15);
 }
 END_TEST
 
@@ -213,6 +254,7 @@ int main(void)
     TCase *tc = tcase_create("core");
     tcase_add_test(tc, in_range_it_is_richardson_times_two);
     tcase_add_test(tc, a_stall_gets_the_bound_of_kind_bound);
+    tcase_add_test(tc, opposite_signs_near_the_limit);
     tcase_add_test(tc, above_the_law_s_orders_still_richardson);
     tcase_add_test(tc, noise_keeps_the_factor_and_the_tail);
     tcase_add_test(tc, one_companion_is_three_times_the_difference);
