@@ -361,7 +361,8 @@ static size_t delete_rows(struct fr_masked_factor *f, const unsigned char *set, 
 }
 
 /* The sparse solve's dense twin: W_SS's Cholesky factor by LAPACK in f->D, its leading rows
- * kept from the last one where the block keeps them (masked_factor.h), then dpotrs. */
+ * kept from the last one where the block keeps them, the rows after them kept too where
+ * deleting the others is cheaper (masked_factor.h), then its two triangles. */
 static int dense_solve(struct fr_masked_factor *f, const cholmod_sparse *W,
                        const unsigned char *set, const double *shift, const double b[], double x[])
 {
