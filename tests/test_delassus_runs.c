@@ -149,9 +149,9 @@ START_TEST(cheaper_rule)
     cholmod_l_start(&c);
     uint64_t state = 7;
     cholmod_sparse *D = packed_upper(M, &state, &c);
-    /* 12 rows in one run against the other 85: 1 020 + 2 * 97 against 97 * 98 / 2 = 4 753 */
+    /* 12 rows in one run against the other 85 in two: 1 020 + 3 * 97 against 97 * 98 / 2 */
     ck_assert(fr_delassus_runs_cheaper(D, 12, 1, M - 12, 2));
-    /* all against all: 9 409 + 97 */
+    /* all against all: 9 409 + 2 * 97 */
     ck_assert(!fr_delassus_runs_cheaper(D, M, 1, M, 1));
     /* every other row, 48 runs: 48 * 49 + 97 * 97 */
     ck_assert(!fr_delassus_runs_cheaper(D, 48, 48, 49, 49));

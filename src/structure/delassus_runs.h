@@ -22,8 +22,9 @@ size_t fr_runs_of(const unsigned char mask[], int on, size_t m, size_t runs[], s
 
 /* y_i = sum over j in the column runs of D_ij x_j, for every i in the row runs (y's other
  * entries are not written, x's outside the column runs not read). D m x m, packed
- * (fr_delassus_packed). Each entry of D with one index in each set is read once: about
- * |rows| |cols| reads against dspmv's m (m + 1) / 2, plus a BLAS call per run of a column. */
+ * (fr_delassus_packed). Only entries of D with one index in each set are read (once, or
+ * twice where both indices are in both sets): about |rows| |cols| reads against dspmv's
+ * m (m + 1) / 2, plus a BLAS call per run of a column. */
 void fr_delassus_mult_runs(const cholmod_sparse *D, const size_t col_runs[], size_t ncol_runs,
                            const double x[], const size_t row_runs[], size_t nrow_runs, double y[]);
 
