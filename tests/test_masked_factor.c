@@ -23,7 +23,7 @@
 #include "structure/masked_factor.h"
 #include "structure/structure_internal.h"
 
-#define MMAX 48
+#define MMAX 760
 
 static double uniform(unsigned long *state)
 {
@@ -315,6 +315,30 @@ START_TEST(dense_factor_deletes_rows_inside)
 }
 END_TEST
 
+/* Many rows deleted at once, as a whole row of an interface starts to slip: of 760 rows, the
+ * 400 after the first 300 leave and the last 60 stay, so dtpqrt runs in blocks of 50 (q / 8)
+ * where a few rows take 32: the block against CHOLMOD's factor to 1e-10, all 360 staying rows
+ * kept, then the 400 back, appended after them. */
+START_TEST(dense_factor_deletes_many_rows_in_blocks)
+{
+    const size_t m = 760;
+    unsigned long state = 4242;
+    struct factor_pair pr;
+    pair_open(&pr, m, 0.02, &state);
+    unsigned char set[MMAX];
+    double shift[MMAX] = {0.0};
+    memset(set, 1, m);
+    kept_block(&pr.dense, &pr.sparse, pr.W, set, shift, 0, 0, &pr.c);
+    memset(set + 300, 0, 400);
+    kept_block(&pr.dense, &pr.sparse, pr.W, set, shift, 360, 400, &pr.c);
+    ck_assert_int_eq(pr.dense.rows[300], 700);
+    memset(set + 300, 1, 400);
+    kept_block(&pr.dense, &pr.sparse, pr.W, set, shift, 360, 0, &pr.c);
+    ck_assert_int_eq(pr.dense.rows[360], 300);
+    pair_close(&pr);
+}
+END_TEST
+
 /* ---- A structure's steps ------------------------------------------------------------------ */
 
 /* bench/membrane_contacts.c in small: a SIDE x SIDE grid of 1 kg nodes, springs of 3e6 N/m
@@ -431,6 +455,7 @@ int main(void)
     tcase_add_test(tc, not_positive_definite_is_esingular_both_ways);
     tcase_add_test(tc, dense_factor_keeps_its_leading_rows);
     tcase_add_test(tc, dense_factor_deletes_rows_inside);
+    tcase_add_test(tc, dense_factor_deletes_many_rows_in_blocks);
     tcase_add_test(tc, structure_steps_equal_in_both_storages);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);
