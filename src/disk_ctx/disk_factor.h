@@ -20,7 +20,7 @@
  * Where that factor fills (a W without zero blocks: nnz(L) at least half a dense triangle, the
  * 1-D near-stick block's rule, structure/masked_factor.h), its simplicial LDL^T does without the
  * BLAS what LAPACK's blocked dpotrf does with it: then H's coupled unknowns are copied, in the same order,
- * into a dense buffer allocated at set-up and factored there by dpotrf, solved by dpotrs. The
+ * into a dense buffer allocated at set-up and factored there by dpotrf, solved by two dtrsv. The
  * decoupled unknowns' unit rows do not touch the others, so the pivots are LDL^T's (d_k =
  * L_kk^2) and the pivot test the same. */
 #ifndef FRICREG_DISK_FACTOR_H
