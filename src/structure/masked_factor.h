@@ -59,7 +59,7 @@ struct fr_masked_factor {
     size_t order;           /* |S| of the factor */
     size_t kept;            /* the leading rows the last factorization kept (below) */
     size_t deleted;         /* the held rows it deleted to keep those after them (below) */
-    double *qr_work;        /* [2 * 32 * m] dtpqrt's T and work */
+    double *qr_work;        /* [2 * 128 * m] dtpqrt's T and work (its block at most 128) */
     /* The block and shifts of the last factorization: a solve on the same ones reuses it
      * (a stick set that holds from one Newton iteration, or one step, to the next). */
     unsigned char *held_set; /* [m] */
