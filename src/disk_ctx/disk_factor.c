@@ -7,20 +7,14 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/lapack.h"
+#include "base/sparse_factor.h"
 #include "disk_factor.h"
 #include "disk_kind.h"
-#include "base/sparse_factor.h"
 #include "fricreg.h"
 
 #define PIVOT_RTOL 1e-12 /* d_k / H_kk of LDL^T, as the 1-D context's factor (docs/coupled.md) */
 #define DENSE_FILL 0.5   /* dense where nnz(L) >= DENSE_FILL n (n + 1) / 2 (disk_factor.h) */
-
-/* LAPACK by Fortran's calling convention (as src/hb/lu.c): every argument by reference, a
- * CHARACTER's length appended as a size_t. */
-void dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info, size_t uplo_len);
-void dtrsv_(const char *uplo, const char *trans, const char *diag, const int *n, const double *a,
-            const int *lda, double *x, const int *incx, size_t uplo_len, size_t trans_len,
-            size_t diag_len);
 
 void fr_disk_factor_free(struct fr_disk_factor *F)
 {

@@ -9,13 +9,8 @@
 #include <limits.h>
 #include <math.h>
 
+#include "base/lapack.h"
 #include "hb_internal.h"
-
-/* LAPACK by Fortran's calling convention (lu.c): arguments by reference, each CHARACTER's
- * length appended as a size_t. */
-void dgeev_(const char *jobvl, const char *jobvr, const int *n, double *a, const int *lda,
-            double *wr, double *wi, double *vl, const int *ldvl, double *vr, const int *ldvr,
-            double *work, const int *lwork, int *info, size_t jobvl_len, size_t jobvr_len);
 
 size_t fr_hb_eigenvalues_work(size_t n)
 {

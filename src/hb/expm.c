@@ -13,14 +13,8 @@
 #include <math.h>
 #include <string.h>
 
+#include "base/lapack.h"
 #include "expm.h"
-
-/* BLAS and LAPACK by Fortran's calling convention (lu.c). */
-void dgemm_(const char *transa, const char *transb, const int *m, const int *n, const int *k,
-            const double *alpha, const double *a, const int *lda, const double *b, const int *ldb,
-            const double *beta, double *c, const int *ldc, size_t transa_len, size_t transb_len);
-void dgesv_(const int *n, const int *nrhs, double *a, const int *lda, int *ipiv, double *b,
-            const int *ldb, int *info);
 
 /* θ₁₃ and the coefficients b₀ .. b₁₃ of the [13/13] Padé approximant (Higham 2005, Table 2.3
  * and eq. 2.4). */

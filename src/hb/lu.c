@@ -14,17 +14,8 @@
 #include <math.h>
 #include <stddef.h>
 
+#include "base/lapack.h"
 #include "hb_internal.h"
-
-/* LAPACK by Fortran's calling convention: every argument by reference, a CHARACTER's length
- * appended as a size_t (gfortran's, which Debian's LAPACK and OpenBLAS are built with); complex
- * numbers as (re, im) pairs of doubles. */
-void dgetrf_(const int *m, const int *n, double *a, const int *lda, int *ipiv, int *info);
-void dgetrs_(const char *trans, const int *n, const int *nrhs, const double *a, const int *lda,
-             const int *ipiv, double *b, const int *ldb, int *info, size_t trans_len);
-void zgetrf_(const int *m, const int *n, double *a, const int *lda, int *ipiv, int *info);
-void zgetrs_(const char *trans, const int *n, const int *nrhs, const double *a, const int *lda,
-             const int *ipiv, double *b, const int *ldb, int *info, size_t trans_len);
 
 void fr_hb_lu_factor(double *A, size_t n, int *piv)
 {

@@ -42,6 +42,7 @@
 
 #include "aft_internal.h"
 #include "aft_march.h"
+#include "base/lapack.h"
 #include "element_kind.h"
 #include "enclosing_circle.h"
 
@@ -51,13 +52,6 @@
 #define MAX_NEWTON 20
 #define MAX_DIM 3
 #define BLOCK 64 /* samples whose derivatives are transformed by one dgemm */
-
-/* BLAS and LAPACK by Fortran's calling convention (lu.c says more). */
-void dgemm_(const char *transa, const char *transb, const int *m, const int *n, const int *k,
-            const double *alpha, const double *a, const int *lda, const double *b, const int *ldb,
-            const double *beta, double *c, const int *ldc, size_t transa_len, size_t transb_len);
-void dgesv_(const int *n, const int *nrhs, double *a, const int *lda, int *ipiv, double *b,
-            const int *ldb, int *info);
 
 struct fr_aft_march {
     size_t N, nc, nstate; /* the room */

@@ -11,18 +11,11 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "base/lapack.h"
 #include "base/sparse_factor.h"
 #include "base/sparse_ops.h"
 #include "contact_factor.h"
 #include "fricreg.h"
-
-/* BLAS by Fortran's calling convention (as masked_factor.c's LAPACK): every argument by
- * reference, a CHARACTER's length appended as a size_t. */
-void dsyrk_(const char *uplo, const char *trans, const int *n, const int *k, const double *alpha,
-            const double *a, const int *lda, const double *beta, double *c, const int *ldc,
-            size_t uplo_len, size_t trans_len);
-void dspmv_(const char *uplo, const int *n, const double *alpha, const double *ap, const double *x,
-            const int *incx, const double *beta, double *y, const int *incy, size_t uplo_len);
 
 static int failed(cholmod_common *c, struct fr_error *err, const char *who, const char *name)
 {

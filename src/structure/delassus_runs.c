@@ -1,13 +1,9 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* delassus_runs.c — products with a packed W_eff restricted to runs of rows and columns
  * (delassus_runs.h). */
+#include "base/lapack.h"
 #include "contact_factor.h"
 #include "delassus_runs.h"
-
-/* BLAS by Fortran's calling convention (as contact_factor.c). */
-double ddot_(const int *n, const double *x, const int *incx, const double *y, const int *incy);
-void daxpy_(const int *n, const double *alpha, const double *x, const int *incx, double *y,
-            const int *incy);
 
 size_t fr_runs_of(const unsigned char mask[], int on, size_t m, size_t runs[], size_t *members)
 {

@@ -5,24 +5,10 @@
 #include <math.h>
 #include <string.h>
 
+#include "base/lapack.h"
 #include "base/sparse_factor.h"
 #include "fricreg.h"
 #include "masked_factor.h"
-
-/* LAPACK by Fortran's calling convention (as src/hb/lu.c): every argument by reference, a
- * CHARACTER's length appended as a size_t. */
-void dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info, size_t uplo_len);
-void dtrsv_(const char *uplo, const char *trans, const char *diag, const int *n, const double *a,
-            const int *lda, double *x, const int *incx, size_t uplo_len, size_t trans_len,
-            size_t diag_len);
-void dtrsm_(const char *side, const char *uplo, const char *transa, const char *diag, const int *m,
-            const int *n, const double *alpha, const double *a, const int *lda, double *b,
-            const int *ldb, size_t side_len, size_t uplo_len, size_t transa_len, size_t diag_len);
-void dsyrk_(const char *uplo, const char *trans, const int *n, const int *k, const double *alpha,
-            const double *a, const int *lda, const double *beta, double *c, const int *ldc,
-            size_t uplo_len, size_t trans_len);
-void dtpqrt_(const int *m, const int *n, const int *l, const int *nb, double *a, const int *lda,
-             double *b, const int *ldb, double *t, const int *ldt, double *work, int *info);
 
 /* dtpqrt's block size, q / 8 for q rows deleted within these bounds: with OpenBLAS 0.3.21, 32
  * is best for a few hundred rows, and 128 runs 10-25 % faster from a thousand on (1000 or 3000
