@@ -1432,8 +1432,10 @@ FRICREG_API int fricreg_structure_set_warning_handler(fricreg_structure *s,
  *  it are taken with it), the energy balance, each contact's dissipation, the counters, the
  *  peak displacements, the warnings' trackers, list and what the handler was given, the
  *  elements' committed and trial sliders, forces and dissipation, the context's warm start and
- *  cached factor (a coupled W), and the error estimate with its companions, each saved the same
- *  way, nested. What is not: the model and the settings (checked by restore against a
+ *  cached factor (a coupled W), Newmark's near-stick block as its next step would find it
+ *  (the dense path's held factor, whose last bits depend on the blocks before it, or the
+ *  sparse path's block and shifts; since 1.8), and the error estimate with its companions,
+ *  each saved the same way, nested. What is not: the model and the settings (checked by restore against a
  *  fingerprint: sizes, kinds, scheme, law, contact solver and their parameters one by one, the matrices, the
  *  records, the bounds and the set tolerances hashed), the observer and the warning handler,
  *  the bound on adaptive steps (fricreg_structure_set_max_steps: the restored structure's own)
@@ -1444,8 +1446,9 @@ FRICREG_API int fricreg_structure_set_warning_handler(fricreg_structure *s,
  *  The blob is for the same build on the same machine: native byte order and type sizes, with
  *  a header (magic, format version, byte-order mark, the library version, the payload's length
  *  and hash) that fricreg_structure_restore checks. Its size is about 8 (6 ndof + 4 m) bytes
- *  plus the elements' state, a few kB of fixed fields (the warnings' messages) and, with a
- *  coupled dense W, 8 m^2 at most; each companion adds its own.
+ *  plus the elements' state, a few kB of fixed fields (the warnings' messages), with a
+ *  coupled dense W 8 m^2 at most, and the near-stick block's factor, 4 q (q + 5) for a dense
+ *  one of q rows (q <= m) or 9 m for the sparse path's; each companion adds its own.
  *
  *  s     in: the structure (not changed but for its last error).
  *  buf   out: the checkpoint, *size bytes; NULL to ask for the size.
@@ -1477,8 +1480,9 @@ FRICREG_API int fricreg_structure_save(fricreg_structure *s, void *buf, size_t *
  *  buf   in: size bytes from fricreg_structure_save, of the same build on the same machine.
  *
  *  Cost: the set-up of the model (M's factor, W) and K_eff's factor at the saved dt, as the
- *  first step after a model setter (they allocate), and with the error estimate on, the
- *  companions made as a run's first step makes them.
+ *  first step after a model setter (they allocate), the sparse path's near-stick block
+ *  factored as the saved structure held it, and with the error estimate on, the companions
+ *  made as a run's first step makes them.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if s or buf is NULL; FRICREG_EINVAL if buf is not a
  *  checkpoint (magic), is truncated or corrupted (length, hash or a field out of range), was
@@ -1487,9 +1491,11 @@ FRICREG_API int fricreg_structure_save(fricreg_structure *s, void *buf, size_t *
  *  structure has ndof = 3, this one 4", or the model or the excitation as a whole), or when
  *  called from the observer or the warning handler during a run; the statuses of the set-up
  *  and of K_eff's factor (FRICREG_ENOMEM, FRICREG_ENOTPSD, ... as fricreg_structure_step); a
- *  companion's failure (its message after "the error estimate's companion: "). On failure the
- *  state of s is unchanged (the set-up and K_eff's factor may have been made: they are what
- *  its next step makes). */
+ *  companion's failure (its message after "the error estimate's companion: "); the sparse
+ *  path's near-stick block factor's (FRICREG_ENOMEM, FRICREG_ESINGULAR). On failure the state
+ *  of s is unchanged (the set-up and K_eff's factor may have been made: they are what its
+ *  next step makes; a near-stick block factor held may have been dropped, so that its next
+ *  step factors the block afresh, the same answers to rounding). */
 FRICREG_API int fricreg_structure_restore(fricreg_structure *s, const void *buf, size_t size);
 
 /* ---- Your own implicit integrator: the contact-space step on a context --------------------- */

@@ -13,22 +13,24 @@
  *            is read; then the state: t, u, v, a, p~, f, the flags of the equation at t, the
  *            dt K_eff was factored for, the run's grid, the energy balance, the counters, the
  *            peaks, the warnings' trackers and list, the elements' sliders and forces, what the
- *            context carries (ctx_carried.c) and the error estimate with its companion's blob
- *            (nested, the same format).
+ *            context carries (ctx_carried.c), the near-stick block's held factor
+ *            (blocks_carried.c) and the error estimate with its companion's blob (nested, the
+ *            same format).
  * One function (state_fields) lists the state for the three passes: save, check (the blob read
  * and checked, nothing written) and load (after the check and after the fallible steps:
- * prepare, K_eff's factor, the companion, the context's part), so that a failed restore leaves
- * the structure as it was and a load cannot fail. */
+ * prepare, K_eff's factor, the context's part, the companion, the near-stick block's factor),
+ * so that a failed restore leaves the structure as it was and a load cannot fail. */
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
+#include "blocks_carried.h"
 #include "ctx/ctx_driver.h"
 #include "joint/element_kind.h"
 #include "structure_internal.h"
 
 #define MAGIC "FRCKPT1" /* 8 bytes with its NUL */
-#define FORMAT 1u
+#define FORMAT 2u       /* 2 since 1.8: the near-stick block's factor */
 #define BYTE_ORDER_MARK 0x01020304u
 #define TYPE_SIZES ((uint32_t)(sizeof(double) | sizeof(size_t) << 8))
 #define HEADER_BYTES (8 + 4 * 4 + 2 * 8)
@@ -218,7 +220,8 @@ static int fingerprint_compare(fricreg_structure *s, const struct fingerprint *b
 
 /* Where check found the nested parts (load reads them before its own pass). */
 struct nested {
-    size_t ctx_at, ctx_len; /* what the context carries (0: nothing) */
+    size_t ctx_at, ctx_len;       /* what the context carries (0: nothing) */
+    size_t blocks_at, blocks_len; /* the near-stick block's held factor (blocks_carried.h) */
     size_t companion_at, companion_len;
     int32_t estimate_state;
     uint8_t prepared, ready, fresh;
@@ -303,6 +306,12 @@ static void put_ctx(const fricreg_structure *s, void *out, size_t len)
     fr_ctx_carried_save(s->ctx, s->prepared, out);
 }
 
+static void put_blocks(const fricreg_structure *s, void *out, size_t len)
+{
+    (void)len;
+    fr_blocks_carried_save(s, out);
+}
+
 static void put_companion(const fricreg_structure *s, void *out, size_t len)
 {
     fricreg_structure_save(s->companion, out, &len);
@@ -355,6 +364,8 @@ static void state_fields(struct io *io, fricreg_structure *s, struct nested *fou
 
     size_t ctx_len = io->mode == IO_SAVE ? fr_ctx_carried_size(s->ctx, s->prepared) : 0;
     part(io, ctx_len, put_ctx, s, &found->ctx_at, &found->ctx_len);
+    part(io, io->mode == IO_SAVE ? fr_blocks_carried_size(s) : 0, put_blocks, s, &found->blocks_at,
+         &found->blocks_len);
     int32_t state = s->estimate_state;
     value(io, &state, sizeof state);
     found->estimate_state = state;
@@ -480,8 +491,9 @@ static int read_header(fricreg_structure *s, const unsigned char *buf, size_t si
     return FRICREG_OK;
 }
 
-/* The fallible steps before the load: the set-up, K_eff's factor, the context's part and a
- * new companion (into *companion) from its blob. */
+/* The fallible steps before the load: the set-up, K_eff's factor, the context's part, a new
+ * companion (into *companion) from its blob, and last the near-stick block's factor (on its
+ * failure the companion is freed). */
 static int rebuild(fricreg_structure *s, const unsigned char *payload, const struct nested *found,
                    fricreg_structure **companion)
 {
@@ -497,16 +509,26 @@ static int rebuild(fricreg_structure *s, const unsigned char *payload, const str
     if (fr_ctx_carried_restore(s->ctx, payload + found->ctx_at, found->ctx_len, found->prepared) !=
         FRICREG_OK)
         return refuse(s, "the context's part of the checkpoint does not fit the contacts");
-    if (found->companion_len == 0)
-        return FRICREG_OK;
-    char msg[256];
-    if ((status = fr_estimate_companion(s, companion, msg)) != FRICREG_OK)
-        return fr_fail(s, status, "restore: %s", msg);
-    status = fricreg_structure_restore(*companion, payload + found->companion_at,
-                                       found->companion_len);
+    if (found->companion_len > 0) {
+        char msg[256];
+        if ((status = fr_estimate_companion(s, companion, msg)) != FRICREG_OK)
+            return fr_fail(s, status, "restore: %s", msg);
+        status = fricreg_structure_restore(*companion, payload + found->companion_at,
+                                           found->companion_len);
+        if (status != FRICREG_OK)
+            fr_fail(s, status, "restore: the error estimate's companion: %s",
+                    fricreg_structure_errmsg(*companion));
+    }
+    if (status == FRICREG_OK) {
+        status = fr_blocks_carried_restore(s, payload + found->blocks_at, found->blocks_len,
+                                           found->step_dt > 0.0);
+        if (status == FRICREG_EINVAL)
+            refuse(s, "the near-stick block's part of the checkpoint does not fit this structure");
+        else if (status != FRICREG_OK)
+            fr_fail(s, status, "restore: the near-stick block's factor: %s",
+                    fricreg_strerror(status));
+    }
     if (status != FRICREG_OK) {
-        fr_fail(s, status, "restore: the error estimate's companion: %s",
-                fricreg_structure_errmsg(*companion));
         fricreg_structure_free(*companion);
         *companion = NULL;
     }

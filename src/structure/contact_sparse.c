@@ -389,6 +389,12 @@ static int factor_for(struct fr_contact_sparse *f, const cholmod_sparse *Weff,
     return status;
 }
 
+int fr_contact_sparse_hold(struct fr_contact_sparse *f, const cholmod_sparse *Weff,
+                           const unsigned char *set, const double *shift, cholmod_common *c)
+{
+    return factor_for(f, Weff, set, shift, c);
+}
+
 int fr_contact_sparse_solve(struct fr_contact_sparse *f, const cholmod_sparse *Weff,
                             const unsigned char *set, const double *shift, const double b[],
                             double x[], cholmod_common *c)

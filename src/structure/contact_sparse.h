@@ -65,4 +65,12 @@ int fr_contact_sparse_solve(struct fr_contact_sparse *f, const cholmod_sparse *W
                             const unsigned char *set, const double *shift, const double b[],
                             double x[], cholmod_common *c);
 
+/* The block of set and shift (as above) factored and held, as a solve on them would leave it,
+ * so that the next solves continue from that factor (a checkpoint's restore: blocks_carried.h).
+ * set and shift may be f->held_set and f->held_shift. FRICREG_OK; FRICREG_ESINGULAR (a row
+ * without a shift has no positive W_eff,ii, or the matrix is not positive definite);
+ * FRICREG_ENOMEM; on failure no block is held. */
+int fr_contact_sparse_hold(struct fr_contact_sparse *f, const cholmod_sparse *Weff,
+                           const unsigned char *set, const double *shift, cholmod_common *c);
+
 #endif

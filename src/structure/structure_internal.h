@@ -9,7 +9,8 @@
  * contact_step.c, energy.c (the balance); structure.c (life cycle, setters, getters);
  * forces.c (the forces of a state); central_difference.c, joint_step.c (elements beside
  * contacts); newmark.c; step.c (stepping, plain); structure_ode.c (GSL's steppers, plain);
- * error_estimate.c (the companions, stepped plain); checkpoint.c, warnings.c (the checks);
+ * error_estimate.c (the companions, stepped plain); blocks_carried.c (the near-stick block's
+ * factor in a checkpoint); checkpoint.c, warnings.c (the checks);
  * run.c (the public stepping calls). */
 #ifndef FRICREG_STRUCTURE_INTERNAL_H
 #define FRICREG_STRUCTURE_INTERNAL_H

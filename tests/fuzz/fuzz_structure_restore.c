@@ -6,9 +6,11 @@
  * FRICREG_OK, FRICREG_EINVAL or FRICREG_ENOMEM, a failure is recorded and leaves everything a
  * getter shows unchanged bit for bit, and a restored structure steps (any documented status, no
  * crash) and saves again to a blob that restores into a new structure of the same set-up.
- * With the first byte's bit 0 the harness writes the header's length and hash for the bytes
- * given, so that mutated payloads reach the parser behind the hash (a corrupted blob without
- * it is refused at the hash). The rest of the input is the blob. */
+ * With the first byte's bit 0 the harness writes the header's fields after the magic as this
+ * build's own checkpoint has them (format, byte order, library version, type sizes) and the
+ * length and hash of the bytes given, so that mutated payloads reach the parser behind the
+ * hash (a corrupted blob without it is refused at the hash), and the corpus still does after
+ * a version or a format changes. The rest of the input is the blob. */
 #include "fuzz_input.h"
 
 #include "fricreg.h"
@@ -17,6 +19,7 @@
 #define N 3
 #define MC 2
 #define HEADER 40 /* checkpoint.c's: magic 8, four uint32, the payload's length and hash */
+#define FIELDS 8  /* where the four uint32 start */
 
 static fricreg_structure *scene(int coupled)
 {
@@ -85,15 +88,19 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (blob == NULL)
         return 0;
     memcpy(blob, data + 1, len);
-    if ((mode & 1) && len >= HEADER) {
-        uint64_t payload = len - HEADER, hash = fnv1a(blob + HEADER, len - HEADER);
-        memcpy(blob + 24, &payload, sizeof payload);
-        memcpy(blob + 32, &hash, sizeof hash);
-    }
     fricreg_structure *s = scene(mode & 2);
     if (s == NULL) {
         free(blob);
         return 0;
+    }
+    if ((mode & 1) && len >= HEADER) {
+        uint8_t own[HEADER + 4096];
+        size_t own_len = sizeof own;
+        if (fricreg_structure_save(s, own, &own_len) == FRICREG_OK)
+            memcpy(blob + FIELDS, own + FIELDS, 4 * sizeof(uint32_t));
+        uint64_t payload = len - HEADER, hash = fnv1a(blob + HEADER, len - HEADER);
+        memcpy(blob + 24, &payload, sizeof payload);
+        memcpy(blob + 32, &hash, sizeof hash);
     }
     fricreg_structure_run(s, 0.01, 0.03); /* a state of its own to keep */
     struct shown before, after;
