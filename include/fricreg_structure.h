@@ -356,10 +356,13 @@ enum fricreg_contact_solver {
  *  right-hand side), so that both paths give the same steps to rounding (within 1e-10 of each
  *  other: tests/test_contact_solver.c); a block that is not positive definite is
  *  FRICREG_ESINGULAR on both (then no stick guess, as before). The sparse path's storage is
- *  allocated with K_eff's factor, but CHOLMOD's supernodal refactorization takes workspace of
- *  its own each time (two blocks: docs/benchmark.md). FRICREG_CONTACT_SOLVER_AUTO, the default,
- *  takes the dense path: on every case of the benchmark (docs/benchmark.md: 316 to 2528
- *  contacts on 10^5 dofs with OpenBLAS and the reference BLAS, 10^4 on 10^6 dofs with
+ *  allocated with K_eff's factor and its factor is CHOLMOD's simplicial one, factored in place,
+ *  so that its steps allocate nothing either (a supernodal factorization allocates its update
+ *  matrix at every call). On the benchmark's 10^5-dof membrane the simplicial factor costs no
+ *  more; on 10^6 dofs its refactorizations are slower, and the run's first steps, where the
+ *  stick zone forms, took twice as long (docs/benchmark.md). FRICREG_CONTACT_SOLVER_AUTO, the
+ *  default, takes the dense path: on every case of the benchmark (docs/benchmark.md: 316 to
+ *  2528 contacts on 10^5 dofs with OpenBLAS and the reference BLAS, 10^4 on 10^6 dofs with
  *  OpenBLAS) it is the faster, or the slower by less than 3 %; CHOLMOD's flop count against
  *  |N|^3 / 3 would choose the sparse path where OpenBLAS makes the dense one 3x faster.
  *  The setting is kept by the error estimate's companion. Since 1.8 (FRICREG_1.8).
@@ -1435,9 +1438,10 @@ FRICREG_API int fricreg_structure_set_warning_handler(fricreg_structure *s,
  *  cached factor (a coupled W), Newmark's near-stick block as its next step would find it
  *  (the dense path's held factor, whose last bits depend on the blocks before it, or the
  *  sparse path's block and shifts; since 1.8), and the error estimate with its companions,
- *  each saved the same way, nested. What is not: the model and the settings (checked by restore against a
- *  fingerprint: sizes, kinds, scheme, law, contact solver and their parameters one by one, the matrices, the
- *  records, the bounds and the set tolerances hashed), the observer and the warning handler,
+ *  each saved the same way, nested. What is not: the model and the settings (checked by
+ *  restore against a fingerprint: sizes, kinds, scheme, law, contact solver and their
+ *  parameters one by one, the matrices, the records, the bounds and the set tolerances
+ *  hashed), the observer and the warning handler,
  *  the bound on adaptive steps (fricreg_structure_set_max_steps: the restored structure's own)
  *  and the last error. GSL's steppers carry nothing between fricreg_structure_run_ode calls
  *  (each call starts its driver anew), so a checkpoint between two calls continues an adaptive

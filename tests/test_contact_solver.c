@@ -12,8 +12,8 @@
  *     blocks with and without shifts, then the same rows with shifts moved (the held factor as
  *     a chord, refined, or refactored), to 1e-10 of the largest |x|; a singular block (twin
  *     contacts, built by hand: the law refuses them) FRICREG_ESINGULAR both ways, x untouched;
- *   - on a simplicial factor the sparse path's steps after the first allocate nothing through
- *     CHOLMOD (its allocators counted);
+ *   - the sparse path's steps after the first allocate nothing through CHOLMOD (its allocators
+ *     counted), on a membrane where CHOLMOD would have chosen a supernodal factor;
  *   - the setter's statuses: NULL, values outside the enum (the setting unchanged), the getter's
  *     NULLs, and AUTO read as the dense path. */
 #include <check.h>
@@ -24,6 +24,7 @@
 
 #include "fricreg.h"
 #include "fricreg_structure.h"
+#include "membrane.h"
 #include "base/sparse_factor.h"
 #include "structure/contact_factor.h"
 #include "structure/contact_sparse.h"
@@ -326,17 +327,33 @@ static void *counted_realloc(void *p, size_t n)
     return real_realloc(p, n);
 }
 
-/* On a simplicial factor (the small membrane) the sparse path's steps after the first take no
- * memory through CHOLMOD (SuiteSparse_config's allocators counted): A stays in the one
- * triangle CHOLMOD factors in place, the workspaces are kept. */
+/* Whether CHOLMOD left to itself would factor A supernodally (its flops per entry of L at
+ * least Common->supernodal_switch), in A's own order. */
+static int cholmod_would_go_supernodal(cholmod_sparse *A)
+{
+    cholmod_common c;
+    ck_assert_int_eq(fr_cholmod_start(&c), FRICREG_OK);
+    fr_cholmod_ordering(&c, CHOLMOD_NATURAL, 0);
+    cholmod_factor *L = cholmod_l_analyze(A, &c);
+    ck_assert_ptr_nonnull(L);
+    int super = L->is_super;
+    cholmod_l_free_factor(&L, &c);
+    fr_cholmod_finish(&c);
+    return super;
+}
+
+/* The sparse path's steps after the first take no memory through CHOLMOD (SuiteSparse_config's
+ * allocators counted), on a membrane where CHOLMOD would choose a supernodal factor of
+ * K_eff + J^T T J (96 x 96 nodes, two rows of contacts: tests/support/membrane.h), whose every
+ * numeric factorization allocates its update matrix: the path's factor is simplicial, A stays
+ * in the one triangle CHOLMOD factors in place, the workspaces are kept. */
 START_TEST(steps_allocate_nothing)
 {
-    struct membrane_case mc = {"allocations", 3e6, 0.35, FRICREG_LAW_QUINN};
-    fricreg_structure *s = membrane(&mc);
-    ck_assert_int_eq(fricreg_structure_set_contact_solver(s, FRICREG_CONTACT_SOLVER_SPARSE),
-                     FRICREG_OK);
-    ck_assert_int_eq(fricreg_structure_step(s, DT), FRICREG_OK);
+    fricreg_structure *s = test_membrane(96, 2, 3e6, FRICREG_CONTACT_SOLVER_SPARSE);
+    ck_assert_ptr_nonnull(s);
+    ck_assert_int_eq(fricreg_structure_step(s, TEST_MEMBRANE_DT), FRICREG_OK);
     ck_assert(!s->sparse.L->is_super);
+    ck_assert_msg(cholmod_would_go_supernodal(s->sparse.A), "the membrane is too small here");
     real_malloc = SuiteSparse_config.malloc_func;
     real_calloc = SuiteSparse_config.calloc_func;
     real_realloc = SuiteSparse_config.realloc_func;
@@ -347,7 +364,7 @@ START_TEST(steps_allocate_nothing)
     int64_t before = 0, after = 0;
     fricreg_structure_get_stat(s, FRICREG_SSTAT_NEWTON_ITERATIONS, &before);
     for (int step = 1; step < STEPS; step++)
-        ck_assert_int_eq(fricreg_structure_step(s, DT), FRICREG_OK);
+        ck_assert_int_eq(fricreg_structure_step(s, TEST_MEMBRANE_DT), FRICREG_OK);
     SuiteSparse_config.malloc_func = real_malloc;
     SuiteSparse_config.calloc_func = real_calloc;
     SuiteSparse_config.realloc_func = real_realloc;

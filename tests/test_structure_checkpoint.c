@@ -19,6 +19,7 @@
 
 #include "fricreg.h"
 #include "fricreg_structure.h"
+#include "membrane.h"
 
 #define N 3
 #define MC 2
@@ -342,80 +343,30 @@ START_TEST(test_before_first_step)
 END_TEST
 
 /* ---- The near-stick block's factor ---------------------------------------------------------
- * A 16 x 16 membrane (bench/membrane_contacts.c in small: 1 kg nodes, springs of spring_k N/m
- * between neighbours and 10^3 N/m to the ground, C = 0.002 s K, shaken at 0.35 g, 4 Hz) with
- * contacts on four rows, 64 in all (the most that couple through W in a checkpoint): the
- * edge's against the ground (mu N = 20 N), each further row's against the row before (4 N).
- * Newmark's near-stick block keeps its factor from one step to the next, and that factor's
- * last bits depend on the blocks before it: the dense path keeps leading rows and deletes
- * others, the sparse path refines other shifts' solves on it (a chord). Restored without it
- * (before checkpoints carried it), the runs below left the uninterrupted ones by rounding: 816
- * and 749 of the 832 outputs differed (restored into a fresh structure, 256 and 203 of the
- * 256 displacements, by up to 3.6e-16 and 6.9e-18 m). */
+ * A 16 x 16 membrane with contacts on four rows, 64 in all, the most that couple through W in
+ * a checkpoint (tests/support/membrane.h: bench/membrane_contacts.c in small). Newmark's
+ * near-stick block keeps its factor from one step to the next, and that factor's last bits
+ * depend on the blocks before it: the dense path keeps leading rows and deletes others, the
+ * sparse path refines other shifts' solves on it (a chord). Restored without it (before
+ * checkpoints carried it), the runs below left the uninterrupted ones by rounding: 816 and 749
+ * of the 832 outputs differed (restored into a fresh structure, 256 and 203 of the 256
+ * displacements, by up to 3.6e-16 and 6.9e-18 m). */
 #define MSIDE 16
 #define MROWS 4
 #define MN (MSIDE * MSIDE)
 #define MM (MROWS * MSIDE)
-#define MDT 0.005
 
 static fricreg_structure *membrane(double spring_k, int solver)
 {
-    static int64_t kp[MN + 1], ki[3 * MN], mp[MN + 1], jp[MM + 1], ji[2 * MM];
-    static double kx[3 * MN], mx[MN], jx[2 * MM], mun[MM], ones[MN], ag[400];
-    size_t q = 0;
-    for (size_t j = 0; j < MN; j++) { /* K's upper triangle: the neighbours above and left */
-        size_t r = j / MSIDE, c = j % MSIDE;
-        double neighbours = (r > 0) + (r + 1 < MSIDE) + (c > 0) + (c + 1 < MSIDE);
-        kp[j] = (int64_t)q;
-        if (r > 0) {
-            ki[q] = (int64_t)(j - MSIDE);
-            kx[q++] = -spring_k;
-        }
-        if (c > 0) {
-            ki[q] = (int64_t)(j - 1);
-            kx[q++] = -spring_k;
-        }
-        ki[q] = (int64_t)j;
-        kx[q++] = neighbours * spring_k + 1e3;
-        mp[j] = (int64_t)j;
-        mx[j] = 1.0;
-        ones[j] = 1.0;
-    }
-    kp[MN] = (int64_t)q;
-    mp[MN] = MN;
-    q = 0;
-    for (size_t j = 0; j < MM; j++) { /* J's rows: node j, less the node before it */
-        jp[j] = (int64_t)q;
-        if (j >= MSIDE) {
-            ji[q] = (int64_t)(j - MSIDE);
-            jx[q++] = -1.0;
-        }
-        ji[q] = (int64_t)j;
-        jx[q++] = 1.0;
-        mun[j] = j < MSIDE ? 20.0 : 4.0;
-    }
-    jp[MM] = (int64_t)q;
-    for (size_t k = 0; k < 400; k++)
-        ag[k] = 0.35 * 9.81 * sin(6.283185307179586 * 4.0 * (double)k * MDT);
-    fricreg_structure *s = NULL;
-    ck_assert_int_eq(fricreg_structure_create(MN, MM, &s), FRICREG_OK);
-    ck_assert_int_eq(fricreg_structure_set_mass_csc(s, MN, 0, mp, mp, mx), FRICREG_OK);
-    ck_assert_int_eq(fricreg_structure_set_stiffness_csc(s, MN, FRICREG_SPARSE_UPPER, kp, ki, kx),
-                     FRICREG_OK);
-    ck_assert_int_eq(fricreg_structure_set_rayleigh(s, 0.0, 0.002), FRICREG_OK);
-    ck_assert_int_eq(fricreg_structure_set_contacts_csr(s, MM, MN, 0, jp, ji, jx), FRICREG_OK);
-    ck_assert_int_eq(fricreg_structure_set_bounds(s, MM, mun), FRICREG_OK);
-    ck_assert_int_eq(fricreg_structure_set_law(s, FRICREG_LAW_QUINN, 1e-3), FRICREG_OK);
-    ck_assert_int_eq(fricreg_structure_set_influence(s, MN, ones), FRICREG_OK);
-    ck_assert_int_eq(fricreg_structure_set_ground_accel(s, 0.0, MDT, 400, ag), FRICREG_OK);
-    ck_assert_int_eq(fricreg_structure_set_contact_solver(s, solver), FRICREG_OK);
+    fricreg_structure *s = test_membrane(MSIDE, MROWS, spring_k, solver);
+    ck_assert_ptr_nonnull(s);
     return s;
 }
 
 static void membrane_steps(fricreg_structure *s, int steps)
 {
     for (int k = 0; k < steps; k++)
-        ck_assert_int_eq(fricreg_structure_step(s, MDT), FRICREG_OK);
+        ck_assert_int_eq(fricreg_structure_step(s, TEST_MEMBRANE_DT), FRICREG_OK);
 }
 
 /* u, v, a and the forces after `saved` steps and `more` further ones, uninterrupted and

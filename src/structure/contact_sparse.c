@@ -24,7 +24,7 @@
 #define REFINE_MAX 30
 /* A chord (the factor of other shifts on the same rows) is refined at most this many times
  * before the block is refactored: each correction costs a tenth of a refactorization, or less
- * (supernodal, a stiff membrane of 10^5 unknowns). */
+ * (a stiff membrane of 10^5 unknowns). */
 #define CHORD_MAX 6
 #define REFINE_FAIL 1e-8
 
@@ -84,11 +84,10 @@ static int order(struct fr_contact_sparse *f, cholmod_sparse *U, cholmod_common 
     return ok;
 }
 
-/* f->A = one triangle of P U P^T (stype: 1 upper, -1 lower), and at[e] its entry of U's entry
- * e: the permutation is done on a copy of U whose values are its entries' own positions
- * (masked_factor.c). */
-static int permute(struct fr_contact_sparse *f, const cholmod_sparse *U, int stype,
-                   SuiteSparse_long at[], cholmod_common *c)
+/* f->A = the upper triangle of P U P^T, and at[e] its entry of U's entry e: the permutation
+ * is done on a copy of U whose values are its entries' own positions (masked_factor.c). */
+static int permute(struct fr_contact_sparse *f, const cholmod_sparse *U, SuiteSparse_long at[],
+                   cholmod_common *c)
 {
     size_t nnz = nnz_of(U, f->n);
     cholmod_sparse *index = cholmod_l_copy_sparse((cholmod_sparse *)U, c), *full = NULL, *P = NULL;
@@ -101,7 +100,7 @@ static int permute(struct fr_contact_sparse *f, const cholmod_sparse *U, int sty
         P = cholmod_l_submatrix(full, f->perm, (SuiteSparse_long)f->n, f->perm,
                                 (SuiteSparse_long)f->n, 1, 1, c);
     if (P != NULL)
-        f->A = cholmod_l_copy(P, stype, 1, c);
+        f->A = cholmod_l_copy(P, 1, 1, c);
     cholmod_l_free_sparse(&index, c);
     cholmod_l_free_sparse(&full, c);
     cholmod_l_free_sparse(&P, c);
@@ -220,8 +219,7 @@ static int sparse_solve(struct fr_contact_sparse *f, const double v[], double w[
                        .x = pv,
                        .xtype = CHOLMOD_REAL,
                        .dtype = CHOLMOD_DOUBLE};
-    if (!f->L->is_super)
-        fr_cholmod_keep_workspace(f->Yw);
+    fr_cholmod_keep_workspace(f->Yw);
     if (!cholmod_l_solve2(CHOLMOD_A, f->L, &B, NULL, &f->X, NULL, &f->Yw, &f->Ew, c))
         return FRICREG_ENOMEM;
     const double *sol = f->X->x;
@@ -230,12 +228,13 @@ static int sparse_solve(struct fr_contact_sparse *f, const double v[], double w[
     return FRICREG_OK;
 }
 
-/* The factor's analysis in the natural order: A is permuted already, and CHOLMOD factors it in
- * place, a simplicial factor on the upper triangle and a supernodal one on the lower (any other
- * triangle or order it copies at every factorization). The flop count is kept (Common->fl). */
+/* The factor's analysis in the natural order: A is permuted already, and CHOLMOD factors its
+ * upper triangle in place, simplicial (a supernodal factorization allocates its update matrix
+ * at every call, and on the benchmark's membranes costs as much: docs/benchmark.md). The flop
+ * count is kept (Common->fl). */
 static int analyse(struct fr_contact_sparse *f, cholmod_common *c)
 {
-    fr_cholmod_ordering(c, CHOLMOD_NATURAL, 0);
+    fr_cholmod_ordering(c, CHOLMOD_NATURAL, 1);
     f->L = cholmod_l_analyze(f->A, c);
     f->flops = c->fl;
     return f->L != NULL;
@@ -251,12 +250,7 @@ int fr_contact_sparse_prepare(struct fr_contact_sparse *f, const cholmod_sparse 
     cholmod_sparse *U = union_pattern(Keff, Jt, c);
     size_t unz = nnz_of(U, f->n);
     SuiteSparse_long *at = U ? cholmod_l_malloc(unz > 0 ? unz : 1, sizeof *at, c) : NULL;
-    int ok = at != NULL && order(f, U, c) && permute(f, U, 1, at, c) && analyse(f, c);
-    if (ok && f->L->is_super) { /* supernodal: on the lower triangle (analyse) */
-        cholmod_l_free_sparse(&f->A, c);
-        cholmod_l_free_factor(&f->L, c);
-        ok = permute(f, U, -1, at, c) && analyse(f, c);
-    }
+    int ok = at != NULL && order(f, U, c) && permute(f, U, at, c) && analyse(f, c);
     ok = ok && base_values(f, Keff, U, at, c) && products(f, U, at, c) && vectors(f, c);
     cholmod_l_free(unz > 0 ? unz : 1, sizeof *at, at, c);
     cholmod_l_free_sparse(&U, c);

@@ -28,8 +28,8 @@
 struct fr_contact_sparse {
     size_t n, m;
     const cholmod_sparse *Jt; /* n x m, the structure's J^T (not owned) */
-    cholmod_sparse *A;        /* P (K_eff + J^T T J) P^T in natural order: its upper triangle for a
-                          simplicial factor, its lower for a supernodal one */
+    cholmod_sparse *A;        /* P (K_eff + J^T T J) P^T in natural order, its upper triangle
+                                 (CHOLMOD's simplicial factor works on it in place) */
     double *base;             /* [nnz(A)] K_eff's values in A's layout */
     SuiteSparse_long *pptr;   /* [m + 1] contact i's products J_ai J_bi: pos/val[pptr[i]..] */
     SuiteSparse_long *pos;    /* A's entry of each product */
