@@ -1451,8 +1451,9 @@ FRICREG_API int fricreg_structure_set_warning_handler(fricreg_structure *s,
  *  a header (magic, format version, byte-order mark, the library version, the payload's length
  *  and hash) that fricreg_structure_restore checks. Its size is about 8 (6 ndof + 4 m) bytes
  *  plus the elements' state, a few kB of fixed fields (the warnings' messages), with a
- *  coupled dense W 8 m^2 at most, and the near-stick block's factor, 4 q (q + 5) for a dense
- *  one of q rows (q <= m) or 9 m for the sparse path's; each companion adds its own.
+ *  coupled dense W 8 m^2 at most, and the near-stick block's factor, at most 8 q (q + 3) for a
+ *  dense one of q rows (q <= m: its factor and kept complement) or 9 m for the sparse path's;
+ *  each companion adds its own.
  *
  *  s     in: the structure (not changed but for its last error).
  *  buf   out: the checkpoint, *size bytes; NULL to ask for the size.

@@ -11,7 +11,8 @@
  *   - the dense factor keeps the leading rows of the last one that a block keeps with their
  *     shifts, and those alone (a sequence of blocks, each against the sparse factor to 1e-10);
  *   - fricreg_structure's steps on a stiff membrane's edge (W_eff dense, the rule's choice) give
- *     the same forces and displacements with either storage forced, to 1e-10 relative. */
+ *     the same forces and displacements with either storage forced, to 1e-10 relative;
+ *   - a checkpoint carries the dense block a step holds, its kept complement too. */
 #include <check.h>
 #include <math.h>
 #include <stdlib.h>
@@ -280,6 +281,55 @@ START_TEST(dense_factor_keeps_its_leading_rows)
 }
 END_TEST
 
+/* A block of the held rows whose shifts changed only on the last factorization's new rows is
+ * factored from their kept Schur complement (masked_factor.h): rows 0..29, then 30..39 added,
+ * 30..37 with shifts (30 kept); those shifts moved: 30 kept again, none deleted, against
+ * CHOLMOD's factor to 1e-10 and bit for bit against a factor that reached the same block by
+ * its trailing factorization (0..29, then 30..39 with the moved shifts, in the same order);
+ * then one shift to none and an unshifted row given one, from the complement again; then a
+ * shift moved before row 30: its row deleted, as before. */
+START_TEST(dense_factor_from_the_kept_complement)
+{
+    const size_t m = 40;
+    unsigned long state = 777;
+    struct factor_pair pr;
+    pair_open(&pr, m, 1.0, &state);
+    struct fr_masked_factor direct = {0};
+    ck_assert_int_eq(fr_masked_factor_prepare(&direct, pr.W, FR_BLOCK_DENSE, &pr.c), FRICREG_OK);
+    unsigned char set[MMAX] = {0};
+    double shift[MMAX] = {0.0}, moved[MMAX] = {0.0};
+    memset(set, 1, 30);
+    kept_block(&pr.dense, &pr.sparse, pr.W, set, shift, 0, 0, &pr.c);
+    kept_block(&direct, &pr.sparse, pr.W, set, moved, 0, 0, &pr.c);
+    memset(set, 1, m);
+    for (size_t i = 30; i < 38; i++) {
+        shift[i] = 0.5 + 0.1 * (double)i;
+        moved[i] = 2.0 - 0.03 * (double)i;
+    }
+    kept_block(&pr.dense, &pr.sparse, pr.W, set, shift, 30, 0, &pr.c);
+    ck_assert_uint_eq(pr.dense.schur_from, 30);
+    kept_block(&pr.dense, &pr.sparse, pr.W, set, moved, 30, 0, &pr.c);
+    kept_block(&direct, &pr.sparse, pr.W, set, moved, 30, 0, &pr.c);
+    ck_assert_int_eq(memcmp(pr.dense.rows, direct.rows, m * sizeof *direct.rows), 0);
+    double b[MMAX], from_complement[MMAX], trailing[MMAX];
+    for (size_t i = 0; i < m; i++)
+        b[i] = cos(0.9 * (double)i);
+    ck_assert_int_eq(fr_masked_factor_solve(&pr.dense, pr.W, set, moved, b, from_complement, &pr.c),
+                     FRICREG_OK);
+    ck_assert_int_eq(fr_masked_factor_solve(&direct, pr.W, set, moved, b, trailing, &pr.c),
+                     FRICREG_OK);
+    ck_assert_int_eq(memcmp(from_complement, trailing, m * sizeof *b), 0);
+    moved[33] = 0.0; /* to none, and an unshifted row given one: the complement still serves */
+    moved[39] = 0.25;
+    kept_block(&pr.dense, &pr.sparse, pr.W, set, moved, 30, 0, &pr.c);
+    moved[5] = 1.5; /* before the complement's rows: deleted and put last */
+    kept_block(&pr.dense, &pr.sparse, pr.W, set, moved, 39, 1, &pr.c);
+    ck_assert_int_eq(pr.dense.rows[39], 5);
+    fr_masked_factor_free(&direct, &pr.c);
+    pair_close(&pr);
+}
+END_TEST
+
 /* Rows deleted from the middle of the dense factor (delete_rows), as a stick zone's rows
  * leave in any order: all 40 rows, some shifted; then five rows at scattered places leave,
  * one staying row's shift moves, rows come back and others leave, each block against
@@ -415,6 +465,46 @@ static void membrane_run(enum fr_block_storage storage, double (*f)[NCON], doubl
     fricreg_structure_free(s);
 }
 
+/* The dense block a step holds, as a checkpoint carries it (src/structure/blocks_carried.c):
+ * the membrane stepped until its held factor keeps a complement (the rows of its last
+ * factorization), saved, restored into another that stepped on its own: the same rows, shifts,
+ * factor and complement, bit for bit. */
+START_TEST(checkpoint_carries_the_dense_block)
+{
+    fricreg_structure *s = membrane(), *r = membrane();
+    const struct fr_masked_factor *f = &s->newton.block, *g = &r->newton.block;
+    int step = 0;
+    do
+        ck_assert_int_eq(fricreg_structure_step(s, 0.005), FRICREG_OK);
+    while (++step < STEPS && !(f->dense && f->held && f->schur_from + 1 < f->order));
+    ck_assert_msg(step < STEPS, "no complement of two rows or more kept");
+    for (int k = 0; k < 7; k++)
+        ck_assert_int_eq(fricreg_structure_step(r, 0.005), FRICREG_OK);
+    size_t len = 0;
+    ck_assert_int_eq(fricreg_structure_save(s, NULL, &len), FRICREG_OK);
+    unsigned char *blob = malloc(len);
+    ck_assert_int_eq(fricreg_structure_save(s, blob, &len), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_restore(r, blob, len), FRICREG_OK);
+    size_t m = f->m, n = f->order;
+    ck_assert(g->held);
+    ck_assert_uint_eq(g->order, n);
+    ck_assert_uint_eq(g->schur_from, f->schur_from);
+    ck_assert_int_eq(memcmp(g->rows, f->rows, n * sizeof *f->rows), 0);
+    ck_assert_int_eq(memcmp(g->held_set, f->held_set, m), 0);
+    ck_assert_int_eq(memcmp(g->held_shift, f->held_shift, m * sizeof *f->held_shift), 0);
+    for (size_t col = 0; col < n; col++)
+        ck_assert_int_eq(memcmp(g->D + col * m, f->D + col * m, (col + 1) * sizeof *f->D), 0);
+    for (size_t col = f->schur_from; col < n; col++) {
+        ck_assert(g->schur_diag[col] == f->schur_diag[col]);
+        for (size_t row = f->schur_from; row < col; row++)
+            ck_assert(g->D[col + row * m] == f->D[col + row * m]);
+    }
+    free(blob);
+    fricreg_structure_free(s);
+    fricreg_structure_free(r);
+}
+END_TEST
+
 START_TEST(structure_steps_equal_in_both_storages)
 {
     static double f[3][STEPS][NCON], u[3][STEPS][NDOF];
@@ -455,8 +545,10 @@ int main(void)
     tcase_add_test(tc, not_positive_definite_is_esingular_both_ways);
     tcase_add_test(tc, dense_factor_keeps_its_leading_rows);
     tcase_add_test(tc, dense_factor_deletes_rows_inside);
+    tcase_add_test(tc, dense_factor_from_the_kept_complement);
     tcase_add_test(tc, dense_factor_deletes_many_rows_in_blocks);
     tcase_add_test(tc, structure_steps_equal_in_both_storages);
+    tcase_add_test(tc, checkpoint_carries_the_dense_block);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);
     srunner_run_all(sr, CK_NORMAL);

@@ -3,8 +3,10 @@
  *
  * Layout, native byte order (the checkpoint is for the same build): a kind byte, then
  *   NONE    nothing (no block held, or K_eff not factored);
- *   DENSE   uint64 order, rows[order] (int64, W's row of each factor row), shift[order] and the
- *           factor U's upper triangle column by column, order (order + 1) / 2 doubles;
+ *   DENSE   uint64 order, rows[order] (int64, W's row of each factor row), shift[order], the
+ *           factor U's upper triangle column by column, order (order + 1) / 2 doubles, then
+ *           uint64 schur_from and the kept Schur complement's upper triangle of the rows from
+ *           there (masked_factor.h), column by column;
  *   SPARSE  set[m] (bytes, 0 or 1) and shift[m] (doubles, 0 off the set).
  * The dense path's held block is its factor rows' set; the sparse path's factor is formed from
  * its set and shifts alone, so those are all it needs. */
@@ -29,16 +31,23 @@ static int kind_of(const fricreg_structure *s)
     return f->dense && f->held ? DENSE : NONE;
 }
 
-static size_t dense_bytes(size_t order)
+/* The dense part before schur_from, and the whole with it. */
+static size_t dense_head_bytes(size_t order)
 {
     return sizeof(uint64_t) + order * (sizeof(int64_t) + sizeof(double)) +
            order * (order + 1) / 2 * sizeof(double);
 }
 
+static size_t dense_bytes(size_t order, size_t schur_from)
+{
+    size_t q = order - schur_from;
+    return dense_head_bytes(order) + sizeof(uint64_t) + q * (q + 1) / 2 * sizeof(double);
+}
+
 size_t fr_blocks_carried_size(const fricreg_structure *s)
 {
     switch (kind_of(s)) {
-    case DENSE: return 1 + dense_bytes(s->newton.block.order);
+    case DENSE: return 1 + dense_bytes(s->newton.block.order, s->newton.block.schur_from);
     case SPARSE: return 1 + s->m * (1 + sizeof(double));
     default: return 1;
     }
@@ -62,6 +71,13 @@ static void save_dense(const struct fr_masked_factor *f, unsigned char *out)
         out = put(out, &f->held_shift[f->rows[r]], sizeof(double));
     for (size_t col = 0; col < f->order; col++)
         out = put(out, f->D + col * f->m, (col + 1) * sizeof(double));
+    uint64_t from = f->schur_from;
+    out = put(out, &from, sizeof from);
+    for (size_t col = f->schur_from; col < f->order; col++) {
+        for (size_t row = f->schur_from; row < col; row++) /* kept transposed */
+            out = put(out, &f->D[col + row * f->m], sizeof(double));
+        out = put(out, &f->schur_diag[col], sizeof(double));
+    }
 }
 
 static void save_sparse(const struct fr_contact_sparse *f, unsigned char *out)
@@ -97,11 +113,14 @@ static int shift_valid(double shift)
  * copied; FRICREG_EINVAL without a change but to f->at, the factorization's scratch. */
 static int restore_dense(struct fr_masked_factor *f, const unsigned char *in, size_t len)
 {
-    uint64_t order;
+    uint64_t order, from;
     if (!f->dense || len < sizeof order)
         return FRICREG_EINVAL;
     memcpy(&order, in, sizeof order);
-    if (order > f->m || len != dense_bytes((size_t)order))
+    if (order > f->m || len < dense_head_bytes((size_t)order) + sizeof from)
+        return FRICREG_EINVAL;
+    memcpy(&from, in + dense_head_bytes((size_t)order), sizeof from);
+    if (from > order || len != dense_bytes((size_t)order, (size_t)from))
         return FRICREG_EINVAL;
     size_t n = (size_t)order;
     const unsigned char *rows = in + sizeof order, *shifts = rows + n * sizeof(int64_t);
@@ -128,6 +147,13 @@ static int restore_dense(struct fr_masked_factor *f, const unsigned char *in, si
     }
     for (size_t col = 0, at = 0; col < n; at += col + 1, col++)
         memcpy(f->D + col * f->m, U + at * sizeof(double), (col + 1) * sizeof(double));
+    const unsigned char *S = in + dense_head_bytes(n) + sizeof from;
+    f->schur_from = (size_t)from;
+    for (size_t col = f->schur_from, at = 0; col < n; col++) {
+        for (size_t row = f->schur_from; row < col; row++)
+            f->D[col + row * f->m] = double_at(S, at++);
+        f->schur_diag[col] = double_at(S, at++);
+    }
     f->order = n;
     f->kept = 0;
     f->deleted = 0;

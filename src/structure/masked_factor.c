@@ -33,6 +33,7 @@ void fr_masked_factor_free(struct fr_masked_factor *f, cholmod_common *c)
     cholmod_l_free(2 * DELETE_NB_MAX * (f->m > 0 ? f->m : 1), sizeof *f->qr_work, f->qr_work, c);
     cholmod_l_free(f->m, sizeof *f->at, f->at, c);
     cholmod_l_free(f->m, sizeof *f->rows, f->rows, c);
+    cholmod_l_free(f->m, sizeof *f->schur_diag, f->schur_diag, c);
     memset(f, 0, sizeof *f);
 }
 
@@ -109,7 +110,9 @@ static int dense_allocate(struct fr_masked_factor *f, cholmod_common *c)
     f->at = cholmod_l_malloc(f->m, sizeof *f->at, c);
     f->rows = cholmod_l_malloc(f->m, sizeof *f->rows, c);
     f->qr_work = cholmod_l_malloc(2 * DELETE_NB_MAX * (f->m > 0 ? f->m : 1), sizeof *f->qr_work, c);
-    return f->D != NULL && f->at != NULL && f->rows != NULL && f->qr_work != NULL;
+    f->schur_diag = cholmod_l_malloc(f->m, sizeof *f->schur_diag, c);
+    return f->D != NULL && f->at != NULL && f->rows != NULL && f->qr_work != NULL &&
+           f->schur_diag != NULL;
 }
 
 int fr_masked_factor_prepare(struct fr_masked_factor *f, const cholmod_sparse *W,
@@ -232,11 +235,10 @@ static size_t order_rows(struct fr_masked_factor *f, const unsigned char *set, c
     return k;
 }
 
-/* Columns p..k-1 of the upper triangle of W_SS + diag(shift_S) in the factor's order, into D
- * (leading dimension m). Entries of W below the diagonal are not read, as CHOLMOD reads an
- * upper (stype 1) W. */
-static void dense_fill(struct fr_masked_factor *f, const cholmod_sparse *W, size_t p, size_t k,
-                       const double *shift)
+/* Columns p..k-1 of the upper triangle of W_SS in the factor's order, into D (leading
+ * dimension m); the shifts come after the Schur complement (factor_trailing). Entries of W
+ * below the diagonal are not read, as CHOLMOD reads an upper (stype 1) W. */
+static void dense_fill(struct fr_masked_factor *f, const cholmod_sparse *W, size_t p, size_t k)
 {
     const SuiteSparse_long *Wp = W->p, *Wi = W->i;
     const double *Wx = W->x;
@@ -255,24 +257,66 @@ static void dense_fill(struct fr_masked_factor *f, const cholmod_sparse *W, size
                 f->D[lo + hi * m] = Wx[q];
         }
     }
+}
+
+/* Rows p..k-1 of D's upper triangle plus diag(shift) factored by dpotrf. A pivot that is not
+ * positive (W_SS not positive definite, or not a number) stops it with info > 0, CHOLMOD's
+ * CHOLMOD_NOT_POSDEF: 0. */
+static int factor_shifted(struct fr_masked_factor *f, size_t p, size_t k, const double *shift)
+{
+    int lda = (int)f->m, trail = (int)(k - p), info = 0;
     for (size_t col = p; col < k; col++)
-        f->D[col * (m + 1)] += shift_of(shift, (size_t)f->rows[col]);
+        f->D[col * (f->m + 1)] += shift_of(shift, (size_t)f->rows[col]);
+    if (k > p)
+        dpotrf_("U", &trail, f->D + p * (f->m + 1), &lda, &info, 1);
+    return info == 0;
 }
 
 /* U's rows p..k-1 given its leading p: U12 = U11^-T A12, then U22 the factor of
- * A22 - U12^T U12. A pivot that is not positive (W_SS not positive definite, or not a number)
- * stops dpotrf with info > 0, CHOLMOD's CHOLMOD_NOT_POSDEF: 0. */
-static int factor_trailing(struct fr_masked_factor *f, size_t p, size_t k)
+ * A22 - U12^T U12 + diag(shift), the complement before the shifts kept (masked_factor.h). */
+static int factor_trailing(struct fr_masked_factor *f, size_t p, size_t k, const double *shift)
 {
-    int lda = (int)f->m, lead = (int)p, trail = (int)(k - p), info = 0;
-    double one = 1.0, minus_one = -1.0, *U12 = f->D + p * f->m, *A22 = U12 + p;
+    size_t m = f->m;
+    int lda = (int)m, lead = (int)p, trail = (int)(k - p);
+    double one = 1.0, minus_one = -1.0, *U12 = f->D + p * m, *A22 = U12 + p;
     if (p > 0 && k > p) {
         dtrsm_("L", "U", "T", "N", &lead, &trail, &one, f->D, &lda, U12, &lda, 1, 1, 1, 1);
         dsyrk_("U", "T", &trail, &lead, &minus_one, U12, &lda, &one, A22, &lda, 1, 1);
     }
-    if (k > p)
-        dpotrf_("U", &trail, A22, &lda, &info, 1);
-    return info == 0;
+    for (size_t col = p; col < k; col++) {
+        f->schur_diag[col] = f->D[col * (m + 1)];
+        for (size_t row = p; row < col; row++)
+            f->D[col + row * m] = f->D[row + col * m];
+    }
+    f->schur_from = p;
+    return factor_shifted(f, p, k, shift);
+}
+
+/* Whether set holds the held rows and shift differs from the held shifts only on rows from
+ * schur_from on: then refactor_from_schur gives its factor. */
+static int schur_applies(const struct fr_masked_factor *f, const unsigned char *set,
+                         const double *shift)
+{
+    if (!f->held || kept_rows(f, set, shift) < f->schur_from)
+        return 0;
+    for (size_t i = 0; i < f->m; i++)
+        if ((set != NULL && set[i]) != f->held_set[i])
+            return 0;
+    return 1;
+}
+
+/* The held factor's rows from schur_from on, from their kept complement and the new shifts. */
+static int refactor_from_schur(struct fr_masked_factor *f, const double *shift)
+{
+    size_t m = f->m, p = f->schur_from;
+    for (size_t col = p; col < f->order; col++) {
+        for (size_t row = p; row < col; row++)
+            f->D[row + col * m] = f->D[col + row * m];
+        f->D[col * (m + 1)] = f->schur_diag[col];
+    }
+    f->kept = p;
+    f->deleted = 0;
+    return factor_shifted(f, p, f->order, shift);
 }
 
 /* Whether row r of the held factor stays in the block set, shift (in it, same shift). */
@@ -351,22 +395,35 @@ static size_t delete_rows(struct fr_masked_factor *f, const unsigned char *set, 
     return p + t;
 }
 
-/* The sparse solve's dense twin: W_SS's Cholesky factor by LAPACK in f->D, its leading rows
- * kept from the last one where the block keeps them, the rows after them kept too where
- * deleting the others is cheaper (masked_factor.h), then its two triangles. */
+/* The factor of the block set, shift in f->D (masked_factor.h): from the kept complement where
+ * only the last new rows' shifts changed; else its leading rows kept, the rows after them too
+ * where deleting the others is cheaper, the rest factored. 0 if not positive definite (then
+ * nothing is held). */
+static int dense_refactor(struct fr_masked_factor *f, const cholmod_sparse *W,
+                          const unsigned char *set, const double *shift)
+{
+    if (schur_applies(f, set, shift)) {
+        f->held = 0;
+        return refactor_from_schur(f, shift);
+    }
+    size_t p = kept_rows(f, set, shift);
+    f->deleted = 0;
+    if (deletion_cheaper(f, set, shift, p))
+        p = delete_rows(f, set, shift, p);
+    f->held = 0;
+    f->order = order_rows(f, set, shift, p);
+    f->kept = p;
+    dense_fill(f, W, p, f->order);
+    return factor_trailing(f, p, f->order, shift);
+}
+
+/* The sparse solve's dense twin: W_SS's Cholesky factor by LAPACK in f->D (dense_refactor),
+ * then its two triangles. */
 static int dense_solve(struct fr_masked_factor *f, const cholmod_sparse *W,
                        const unsigned char *set, const double *shift, const double b[], double x[])
 {
     if (!holds(f, set, shift)) {
-        size_t p = kept_rows(f, set, shift);
-        f->deleted = 0;
-        if (deletion_cheaper(f, set, shift, p))
-            p = delete_rows(f, set, shift, p);
-        f->held = 0;
-        f->order = order_rows(f, set, shift, p);
-        f->kept = p;
-        dense_fill(f, W, p, f->order, shift);
-        if (!factor_trailing(f, p, f->order))
+        if (!dense_refactor(f, W, set, shift))
             return FRICREG_ESINGULAR;
         hold(f, set, shift);
     }

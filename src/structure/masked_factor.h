@@ -23,7 +23,13 @@
  * Rows that leave from inside (or whose shift moves) are deleted where that is cheaper than
  * factoring the rows after them again: with U's staying rows T and leaving rows Q after the
  * kept ones, the block of T has the factor R of [U_TT; U_QT] (R^T R = U_TT^T U_TT +
- * U_QT^T U_QT), LAPACK's dtpqrt, 2 |Q| |T|^2 flops; the rows above keep their columns of U. */
+ * U_QT^T U_QT), LAPACK's dtpqrt, 2 |Q| |T|^2 flops; the rows above keep their columns of U.
+ * A block of the held rows whose shifts changed only on the last factorization's new rows (a
+ * band contact's slope, a row of contacts between stick and the band) is factored from those
+ * rows' Schur complement before their shifts, kept from that factorization: q^3 / 3 flops for
+ * its q new rows, not the p^2 q of their products with the p kept ones. A trailing
+ * factorization adds the shifts after the complement too, so that both ways give the same
+ * factor to the bit. */
 #ifndef FRICREG_MASKED_FACTOR_H
 #define FRICREG_MASKED_FACTOR_H
 
@@ -60,6 +66,12 @@ struct fr_masked_factor {
     size_t kept;            /* the leading rows the last factorization kept (below) */
     size_t deleted;         /* the held rows it deleted to keep those after them (below) */
     double *qr_work;        /* [2 * 128 * m] dtpqrt's T and work (its block at most 128) */
+    /* The Schur complement, before their shifts, of the rows the last factorization factored
+     * (from schur_from on) given the rows before them: a block of the same rows whose shifts
+     * alone changed there is factored from it (below). Its strict upper triangle is kept
+     * transposed in D's strictly lower part, its diagonal here. */
+    size_t schur_from;
+    double *schur_diag; /* [m] */
     /* The block and shifts of the last factorization: a solve on the same ones reuses it
      * (a stick set that holds from one Newton iteration, or one step, to the next). */
     unsigned char *held_set; /* [m] */
