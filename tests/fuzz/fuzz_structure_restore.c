@@ -10,7 +10,7 @@
  * build's own checkpoint has them (format, byte order, library version, type sizes) and the
  * length and hash of the bytes given, so that mutated payloads reach the parser behind the
  * hash (a corrupted blob without it is refused at the hash), and the corpus still does after
- * a version or a format changes. The rest of the input is the blob. */
+ * a change of version or format. The rest of the input is the blob. */
 #include "fuzz_input.h"
 
 #include "fricreg.h"
