@@ -8,9 +8,9 @@
  *
  * Layout, native byte order (the checkpoint is for the same build): side[m] (signed char);
  * then, with a dense W, uint64 n, valid, updates, fragile, set[n] (uint64), d[n] and the n x n
- * block of U row by row (doubles). The factor only with `factor` set (the driver's model set
- * up: the coupling is its model's; otherwise the next coupling setter forgets the factor, while
- * the warm start stays). A sparse W's factor (CHOLMOD's, updated row by row) is not carried:
+ * block of U row by row (doubles; zeros below its diagonal, which the factor never writes).
+ * The factor only with `factor` set (the driver's model set up: the coupling is its model's;
+ * otherwise the next coupling setter forgets the factor, while the warm start stays). A sparse W's factor (CHOLMOD's, updated row by row) is not carried:
  * fr_ctx_carried_size says so. */
 #include <stdint.h>
 #include <string.h>
@@ -59,8 +59,10 @@ void fr_ctx_carried_save(const fricreg_ctx *ctx, int factor, unsigned char out[]
         p = put_u64(p, fa->set[k]);
     memcpy(p, fa->d, n * sizeof *fa->d);
     p += n * sizeof *fa->d;
-    for (size_t i = 0; i < n; i++, p += n * sizeof(double))
-        memcpy(p, fa->U + i * ctx->m, n * sizeof(double));
+    for (size_t i = 0; i < n; i++, p += n * sizeof(double)) { /* row i: zeros, then U's */
+        memset(p, 0, i * sizeof(double)); /* never written by factor.c: not read */
+        memcpy(p + i * sizeof(double), fa->U + i * ctx->m + i, (n - i) * sizeof(double));
+    }
 }
 
 /* A working-set mark: FR_LOWER, FR_FREE, FR_UPPER or partition_consistent.c's mark of a
