@@ -361,10 +361,12 @@ enum fricreg_contact_solver {
  *  matrix at every call). On the benchmark's 10^5-dof membrane the simplicial factor costs no
  *  more; on 10^6 dofs its refactorizations are slower, and the run's first steps, where the
  *  stick zone forms, took twice as long (docs/benchmark.md). FRICREG_CONTACT_SOLVER_AUTO, the
- *  default, takes the dense path: on every case of the benchmark (docs/benchmark.md: 316 to
+ *  default, takes the dense path: on every case of the benchmark (docs/benchmark.md: 632 and
  *  2528 contacts on 10^5 dofs with OpenBLAS and the reference BLAS, 10^4 on 10^6 dofs with
- *  OpenBLAS) it is the faster, or the slower by less than 3 %; CHOLMOD's flop count against
- *  |N|^3 / 3 would choose the sparse path where OpenBLAS makes the dense one 3x faster.
+ *  OpenBLAS) it is the faster, but for 2528 contacts on the reference BLAS, where the sparse
+ *  path's simplicial factor, which calls no BLAS, runs the whole run in 0.85 of its time;
+ *  CHOLMOD's flop count against |N|^3 / 3 would choose the sparse path where OpenBLAS makes
+ *  the dense one 3x faster.
  *  The setting is kept by the error estimate's companion. Since 1.8 (FRICREG_1.8).
  *
  *  solver   enum fricreg_contact_solver.
