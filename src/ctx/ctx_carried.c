@@ -10,7 +10,8 @@
  * then, with a dense W, uint64 n, valid, updates, fragile, set[n] (uint64), d[n] and the n x n
  * block of U row by row (doubles; zeros below its diagonal, which the factor never writes).
  * The factor only with `factor` set (the driver's model set up: the coupling is its model's;
- * otherwise the next coupling setter forgets the factor, while the warm start stays). A sparse W's factor (CHOLMOD's, updated row by row) is not carried:
+ * otherwise the next coupling setter forgets the factor, while the warm start stays). A sparse
+ * W's factor (CHOLMOD's, updated row by row) is not carried:
  * fr_ctx_carried_size says so. */
 #include <stdint.h>
 #include <string.h>

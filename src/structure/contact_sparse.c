@@ -332,17 +332,6 @@ static double residual(struct fr_contact_sparse *f, const cholmod_sparse *Weff,
     return big;
 }
 
-/* The held factor's rows are set's (its shifts may differ: a chord). */
-static int holds_rows(const struct fr_contact_sparse *f, const unsigned char *set)
-{
-    if (!f->held)
-        return 0;
-    for (size_t i = 0; i < f->m; i++)
-        if ((set != NULL && set[i]) != f->held_set[i])
-            return 0;
-    return 1;
-}
-
 /* Refines f->y (its residual in f->res, of largest entry *rnorm) with the factor held, at most
  * max corrections: *done when the residual is below REFINE_STOP |b| (the answer), or when it
  * stalls (no longer halves) at most REFINE_FAIL |b| and stall_ok (rounding, on a fresh
@@ -372,9 +361,8 @@ static int refine(struct fr_contact_sparse *f, const cholmod_sparse *Weff, const
     }
 }
 
-/* A new factor for the rows and shifts given. */
-static int factor_for(struct fr_contact_sparse *f, const cholmod_sparse *Weff,
-                      const unsigned char *set, const double *shift, cholmod_common *c)
+int fr_contact_sparse_hold(struct fr_contact_sparse *f, const cholmod_sparse *Weff,
+                           const unsigned char *set, const double *shift, cholmod_common *c)
 {
     f->held = 0;
     int status = rows_t(f, Weff, set, shift);
@@ -383,20 +371,15 @@ static int factor_for(struct fr_contact_sparse *f, const cholmod_sparse *Weff,
     return status;
 }
 
-int fr_contact_sparse_hold(struct fr_contact_sparse *f, const cholmod_sparse *Weff,
-                           const unsigned char *set, const double *shift, cholmod_common *c)
-{
-    return factor_for(f, Weff, set, shift, c);
-}
-
 int fr_contact_sparse_solve(struct fr_contact_sparse *f, const cholmod_sparse *Weff,
                             const unsigned char *set, const double *shift, const double b[],
                             double x[], cholmod_common *c)
 {
     /* the same rows with other shifts: the held factor first (a chord), refined against the
      * block; refactored if that does not converge within CHORD_MAX corrections */
-    int fresh = !holds_rows(f, set), status, done = 0;
-    if (fresh && (status = factor_for(f, Weff, set, shift, c)) != FRICREG_OK)
+    /* the held factor's rows are set's: its shifts may differ (a chord) */
+    int fresh = !fr_block_holds_rows(f->m, f->held, f->held_set, set), status, done = 0;
+    if (fresh && (status = fr_contact_sparse_hold(f, Weff, set, shift, c)) != FRICREG_OK)
         return status;
     fresh = fresh || holds(f, set, shift);
     size_t m = f->m;
@@ -410,7 +393,7 @@ int fr_contact_sparse_solve(struct fr_contact_sparse *f, const cholmod_sparse *W
     status = refine(f, Weff, set, shift, b, bnorm, fresh ? REFINE_MAX : CHORD_MAX, fresh, &rnorm,
                     &done, c);
     if (status == FRICREG_OK && !done && !fresh &&
-        (status = factor_for(f, Weff, set, shift, c)) == FRICREG_OK)
+        (status = fr_contact_sparse_hold(f, Weff, set, shift, c)) == FRICREG_OK)
         status = refine(f, Weff, set, shift, b, bnorm, REFINE_MAX, 1, &rnorm, &done, c);
     if (status != FRICREG_OK)
         return status;

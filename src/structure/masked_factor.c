@@ -176,6 +176,16 @@ int fr_block_is_held(size_t m, int held, const unsigned char *held_set, const do
     return 1;
 }
 
+int fr_block_holds_rows(size_t m, int held, const unsigned char *held_set, const unsigned char *set)
+{
+    if (!held)
+        return 0;
+    for (size_t i = 0; i < m; i++)
+        if ((set != NULL && set[i]) != held_set[i])
+            return 0;
+    return 1;
+}
+
 void fr_block_hold(size_t m, unsigned char *held_set, double *held_shift, const unsigned char *set,
                    const double *shift)
 {
@@ -297,12 +307,8 @@ static int factor_trailing(struct fr_masked_factor *f, size_t p, size_t k, const
 static int schur_applies(const struct fr_masked_factor *f, const unsigned char *set,
                          const double *shift)
 {
-    if (!f->held || kept_rows(f, set, shift) < f->schur_from)
-        return 0;
-    for (size_t i = 0; i < f->m; i++)
-        if ((set != NULL && set[i]) != f->held_set[i])
-            return 0;
-    return 1;
+    return fr_block_holds_rows(f->m, f->held, f->held_set, set) &&
+           kept_rows(f, set, shift) >= f->schur_from;
 }
 
 /* The held factor's rows from schur_from on, from their kept complement and the new shifts. */

@@ -100,6 +100,10 @@ int fr_masked_factor_solve(struct fr_masked_factor *f, const cholmod_sparse *W,
  * of the near-stick block (this file's and contact_sparse.c's) refactor only when it moves. */
 int fr_block_is_held(size_t m, int held, const unsigned char *held_set, const double *held_shift,
                      const unsigned char *set, const double *shift);
+/* Whether set[m] (NULL: none) holds the same rows as held_set[m], whatever the shifts (held 0:
+ * none held). */
+int fr_block_holds_rows(size_t m, int held, const unsigned char *held_set,
+                        const unsigned char *set);
 void fr_block_hold(size_t m, unsigned char *held_set, double *held_shift, const unsigned char *set,
                    const double *shift);
 
