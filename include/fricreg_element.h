@@ -194,6 +194,39 @@ FRICREG_API int fricreg_element_eval(const fricreg_element_type *type, const dou
                                      const double state_in[], const double u[], double f[],
                                      double dfdu[], double dfdp[], double state_out[]);
 
+/** fricreg_element_eval at npoints points of one type at once: the same numbers bit for bit as
+ *  npoints calls, for a host's integration points or a binding's arrays (one call across a
+ *  language boundary in place of npoints).
+ *
+ *  Point i's arrays start at (row-major, contiguous, point after point):
+ *  params[params_stride i]  its parameters[nparams]: params_stride 0 shares one set among all
+ *                   points, params_stride >= nparams gives each point its own (nparams: a
+ *                   table of npoints rows).
+ *  state_in[nstate i], u[dim i]   its old state and displacement (the table's shapes:
+ *                   (npoints, nstate) and (npoints, dim)).
+ *  f[dim i]         out: its force.
+ *  dfdu[dim dim i]  out, or NULL: its consistent tangent, row-major as eval's.
+ *  dfdp[dim nparams i] out, or NULL: its derivatives in the parameters, as eval's.
+ *  state_out[nstate i] out: its new state. May be state_in (the same array); no other output
+ *                   may overlap an input.
+ *  bad_point        out, or NULL: on failure, the first point whose inputs fail (npoints where
+ *                   the failure is not a point's: a NULL array or the stride). Not written on
+ *                   success.
+ *
+ *  Every point is checked before any output is written, so a failed call writes nothing but
+ *  *bad_point; fricreg_element_explain on that point's inputs says why. npoints = 0 does
+ *  nothing and returns FRICREG_OK (the arrays may then be NULL).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if type, params, state_in, u, f or state_out is NULL
+ *  (npoints > 0); FRICREG_EINVAL if params_stride is neither 0 nor >= nparams, or a point's
+ *  parameter is out of its range; FRICREG_ENONFINITE as for fricreg_element_eval, at any
+ *  point. Cost O(npoints ns dim^2); no allocation; thread-safe. Since 1.8. */
+FRICREG_API int fricreg_element_eval_batch(const fricreg_element_type *type, size_t npoints,
+                                           const double params[], size_t params_stride,
+                                           const double state_in[], const double u[], double f[],
+                                           double dfdu[], double dfdp[], double state_out[],
+                                           size_t *bad_point);
+
 /** Why fricreg_element_eval (state_in and u given) or fricreg_element_init (both NULL) fails
  *  on these inputs: the status it returns, and a message naming the argument and its value.
  *
