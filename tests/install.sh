@@ -7,9 +7,11 @@
 # with the installed module sources. Runs the installed fricreg-sim (when the drivers were
 # built) from its prefix, and from the prefix moved elsewhere, with no LD_LIBRARY_PATH; checks
 # the documentation (with fortran/README.md and the example sources its links and paths name)
-# and fricreg-sim's man page are installed and man renders the page.
-# Usage: install.sh BUILD_DIR SOURCE_DIR C_COMPILER FORTRAN_COMPILER|-
-build=$1 src=$2 cc=$3 fc=$4
+# and fricreg-sim's man page are installed and man renders the page. With the Python binding
+# built: the installed package imports from the prefix (and the moved prefix) with no
+# LD_LIBRARY_PATH, and python/setup.py builds it against the installed library (pkg-config).
+# Usage: install.sh BUILD_DIR SOURCE_DIR C_COMPILER FORTRAN_COMPILER|- [PYTHON|-]
+build=$1 src=$2 cc=$3 fc=$4 python=${5:--}
 work=$(mktemp -d "${TMPDIR:-/tmp}/fricreg-install.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 prefix=$work/prefix
@@ -33,6 +35,18 @@ sim_runs() { # PREFIX: runs its fricreg-sim, and checks it loaded that prefix's 
 }
 if [ -x "$prefix/bin/fricreg-sim" ]; then
     check "installed fricreg-sim runs from its prefix" sim_runs "$prefix"
+fi
+# 0a. The Python package from the prefix alone (its module's RPATH, $ORIGIN-relative): a
+#     Jenkins element stuck below mun/kt is the spring kt u.
+python_runs() { # PREFIX
+    site=$(cd "$1" && dirname "$(find . -path '*/fricreg/__init__.py' | head -n 1)")
+    (cd "$work" && env -u LD_LIBRARY_PATH PYTHONPATH="$1/$(dirname "$site")" "$python" -c '
+import fricreg
+r = fricreg.Element("jenkins", [2.0, 0.5]).eval([0.1], [0.0])
+assert r.f[0] == 0.2 and fricreg.__file__.startswith("'"$1"'"), (r, fricreg.__file__)')
+}
+if [ "$python" != - ]; then
+    check "installed Python package imports from its prefix" python_runs "$prefix"
 fi
 export LD_LIBRARY_PATH="$libdir${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 
@@ -157,10 +171,29 @@ if [ "$fc" != "-" ]; then
     check "Fortran consumer from the sources" "$work/f_src_consumer"
 fi
 
+# 4b. The Python package built by setuptools (python/setup.py) against the installed library,
+#     found by pkg-config; its element and law tests pass on it. Needs python3-setuptools.
+if [ "$python" != - ] && "$python" -c 'import setuptools' 2>/dev/null; then
+    cp -r "$src/python" "$work/pysrc"
+    pc=$(dirname "$(find "$prefix" -name fricreg.pc | head -n 1)")
+    check "setup.py builds the binding against the installed fricreg" sh -c "cd '$work/pysrc' &&
+        PKG_CONFIG_PATH='$pc' '$python' setup.py -q build_ext --inplace"
+    check "the binding built by setup.py passes its tests" sh -c "cd '$work/pysrc/tests' &&
+        PYTHONPATH='$work/pysrc' PYTHONDONTWRITEBYTECODE=1 '$python' -m pytest -q \
+        -p no:cacheprovider test_laws.py test_element.py"
+elif [ "$python" != - ]; then
+    echo "python3-setuptools absent: setup.py's build is not checked"
+fi
+
 # 5. The prefix moved elsewhere: fricreg-sim still runs, on the moved library (relative RPATH).
-if [ -x "$prefix/bin/fricreg-sim" ]; then
+if [ -x "$prefix/bin/fricreg-sim" ] || [ "$python" != - ]; then
     check "move the prefix" mv "$prefix" "$work/moved"
+fi
+if [ -x "$work/moved/bin/fricreg-sim" ]; then
     check "installed fricreg-sim runs from a moved prefix" sim_runs "$work/moved"
+fi
+if [ "$python" != - ]; then
+    check "installed Python package imports from a moved prefix" python_runs "$work/moved"
 fi
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -113,13 +113,13 @@ START_TEST(test_jenkins_loops_at_once)
         if (s > 0)
             for (int i = 0; i < N; i++)
                 diss[i] += f[i] * (w[i] - w0[i]); /* f = +-mun wherever w moves */
-        if (s == STEPS / 4) /* at the first turn */
+        if (s == STEPS / 4)                       /* at the first turn */
             memset(diss, 0, sizeof diss);
     }
     for (int i = 0; i < N; i++) {
         double exact = 4.0 * mun * (amp[i] - mun / kt);
-        ck_assert_msg(fabs(diss[i] - exact) <= 1e-12 * exact, "A = %g: %.17g against %.17g",
-                      amp[i], diss[i], exact);
+        ck_assert_msg(fabs(diss[i] - exact) <= 1e-12 * exact, "A = %g: %.17g against %.17g", amp[i],
+                      diss[i], exact);
     }
 }
 END_TEST
@@ -169,7 +169,8 @@ START_TEST(test_failures_write_nothing)
     ck_assert_uint_eq(bad, 0);
 
     bad = 99;
-    QUIET_OK(fricreg_element_eval_batch(NULL, 0, NULL, 0, NULL, NULL, NULL, NULL, NULL, NULL, &bad));
+    QUIET_OK(
+        fricreg_element_eval_batch(NULL, 0, NULL, 0, NULL, NULL, NULL, NULL, NULL, NULL, &bad));
     ck_assert_uint_eq(bad, 99);
 }
 END_TEST

@@ -22,7 +22,8 @@ rm -rf "$reports" && mkdir -p "$reports"
 log=$work/log
 # Without the warning gate, as sanitize.sh's tree (the instrumentation misleads GCC's warnings).
 cmake -S "$src" -B "$work/tree" -DCMAKE_C_COMPILER="$cc" -DFRICREG_FORTRAN=OFF -DFRICREG_WERROR=OFF \
-      -DFRICREG_SANITIZE_TREE=ON -DFRICREG_PETSC=OFF -DCMAKE_C_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="$flags" \
+      -DFRICREG_SANITIZE_TREE=ON -DFRICREG_PETSC=OFF -DFRICREG_PYTHON=OFF -DCMAKE_C_FLAGS="$flags" \
+      -DCMAKE_EXE_LINKER_FLAGS="$flags" \
       -DCMAKE_SHARED_LINKER_FLAGS="$flags" >"$log" 2>&1 &&
     cmake --build "$work/tree" -j2 --target test_threads >>"$log" 2>&1
 built=$?

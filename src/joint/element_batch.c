@@ -22,9 +22,9 @@ static size_t first_bad_point(const fricreg_element_type *type, size_t npoints,
 }
 
 int fricreg_element_eval_batch(const fricreg_element_type *type, size_t npoints,
-                               const double params[], size_t params_stride,
-                               const double state_in[], const double u[], double f[],
-                               double dfdu[], double dfdp[], double state_out[], size_t *bad_point)
+                               const double params[], size_t params_stride, const double state_in[],
+                               const double u[], double f[], double dfdu[], double dfdp[],
+                               double state_out[], size_t *bad_point)
 {
     if (npoints == 0)
         return FRICREG_OK;

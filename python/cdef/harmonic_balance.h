@@ -1,0 +1,71 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* harmonic_balance.h — fricreg_hb.h's harmonic-balance driver: the model, the solves, the
+ * continuation with stability and bifurcations, the nonlinear modes, in the syntax of cffi's
+ * cdef (python/build_ffi.py); and the monitor through which Python stops a solve
+ * (harmonic_balance.py: Ctrl-C). */
+typedef struct fricreg_hb fricreg_hb;
+typedef int (*fricreg_hb_monitor)(void *user, int64_t iterations, double parameter,
+                                  double residual);
+#define FRICREG_HB_MAX_HARMONICS 40
+enum fricreg_hb_nma_damping { FRICREG_HB_NMA_DAMPING_MATRIX = 0, FRICREG_HB_NMA_DAMPING_MODAL = 1 };
+enum fricreg_hb_stability_method {
+    FRICREG_HB_STABILITY_AUTO = 0,
+    FRICREG_HB_STABILITY_HILL = 1,
+    FRICREG_HB_STABILITY_MONODROMY = 2
+};
+enum fricreg_hb_bifurcation_type {
+    FRICREG_HB_TP = 1,
+    FRICREG_HB_BP = 2,
+    FRICREG_HB_PD = 3,
+    FRICREG_HB_NS = 4
+};
+
+int fricreg_hb_create(size_t ndof, size_t m, int harmonics, fricreg_hb **out);
+void fricreg_hb_free(fricreg_hb *hb);
+int fricreg_hb_set_matrix(fricreg_hb *hb, int which, size_t nrows, size_t ncols, int format,
+                          const int64_t ptr[], const int64_t ind[], const double values[]);
+int fricreg_hb_set_rayleigh(fricreg_hb *hb, double a0, double a1);
+int fricreg_hb_add_elements(fricreg_hb *hb, const fricreg_element_type *type, size_t me,
+                            size_t ndof, const double J[], const double params[]);
+int fricreg_hb_set_excitation(fricreg_hb *hb, size_t ndof, const double pc[], const double ps[]);
+int fricreg_hb_set_newton(fricreg_hb *hb, double tol, int max_iter);
+int fricreg_hb_set_continuation(fricreg_hb *hb, double ds, double ds_min, double ds_max,
+                                size_t max_points);
+int fricreg_hb_set_monitor(fricreg_hb *hb, fricreg_hb_monitor fn, void *user);
+int fricreg_hb_solve(fricreg_hb *hb, double omega, size_t nq, const double q0[], double q[]);
+int fricreg_hb_displacement(fricreg_hb *hb, size_t ndof, size_t nc, double x[]);
+int fricreg_hb_continue(fricreg_hb *hb, double omega0, double omega1, size_t nq, const double q0[]);
+int fricreg_hb_continue_level(fricreg_hb *hb, double omega, double level0, double level1, size_t nq,
+                              const double q0[]);
+size_t fricreg_hb_points(const fricreg_hb *hb);
+int fricreg_hb_point(fricreg_hb *hb, size_t k, double *omega, size_t ndof, double rms[]);
+int fricreg_hb_point_level(fricreg_hb *hb, size_t k, double *level);
+int fricreg_hb_peak(fricreg_hb *hb, size_t dof, double *omega, double *rms);
+int fricreg_hb_set_stability(fricreg_hb *hb, int enable);
+int fricreg_hb_point_stability(fricreg_hb *hb, size_t k, int *stable, double *mu_max);
+int fricreg_hb_set_stability_method(fricreg_hb *hb, int method);
+int fricreg_hb_get_stability_method(fricreg_hb *hb, int *method);
+size_t fricreg_hb_bifurcations(const fricreg_hb *hb);
+int fricreg_hb_bifurcation(fricreg_hb *hb, size_t i, int *type, double *omega, size_t *point,
+                           size_t ndof, double rms[]);
+int fricreg_hb_bifurcation_level(fricreg_hb *hb, size_t i, double *level);
+int fricreg_hb_nma(fricreg_hb *hb, size_t mode, int damping, double a0, double a1, size_t npoints);
+int fricreg_hb_nma_continue(fricreg_hb *hb, size_t mode, int damping, double a0, double a1,
+                            size_t npoints);
+size_t fricreg_hb_nma_points(const fricreg_hb *hb);
+int fricreg_hb_nma_point(fricreg_hb *hb, size_t i, double *amplitude, double *omega, double *zeta,
+                         size_t ndof, size_t nc, double x[]);
+size_t fricreg_hb_nma_folds(const fricreg_hb *hb);
+int fricreg_hb_nma_fold(fricreg_hb *hb, size_t i, double *amplitude, double *omega, double *zeta);
+int fricreg_hb_nma_harmonic_energy(fricreg_hb *hb, size_t i, size_t nh, double fraction[]);
+int fricreg_hb_nma_modal_participation(fricreg_hb *hb, size_t i, int harmonic, size_t nmodes,
+                                       double fraction[]);
+size_t fricreg_hb_nma_crossings(const fricreg_hb *hb);
+int fricreg_hb_nma_crossing(fricreg_hb *hb, size_t i, int *harmonic, size_t *mode,
+                            double *amplitude, double *omega);
+const char *fricreg_hb_errmsg(const fricreg_hb *hb);
+
+/* Python's monitor (harmonic_balance.py), installed on every driver: it stops a solve on
+ * Ctrl-C. */
+extern "Python" int fricreg_py_hb_monitor(void *user, int64_t iterations, double parameter,
+                                          double residual);

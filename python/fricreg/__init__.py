@@ -1,0 +1,26 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""fricreg: dry (Coulomb) friction with stick-slip, from Python.
+
+A binding (cffi, API mode) of the C library fricreg: D. D. Quinn's regularization of Coulomb
+friction (J. Vib. Acoust. 126 (2004) 391-397) and the paper's comparison laws on numpy arrays,
+the friction elements of joints (Jenkins, Iwan, 3-D contact with lift-off), many points in one
+C call, and the objects built on them. Every call that fails raises :class:`fricreg.Error`
+(bad input: :class:`fricreg.InputError`, also a ``ValueError``) with the library's message.
+The guide is ``docs/python.md``.
+"""
+from . import aft, context, element, errors, harmonic_balance, laws, structure
+from ._fricreg import ffi as _ffi, lib as _lib
+from .aft import *  # noqa: F401,F403
+from .context import *  # noqa: F401,F403
+from .element import *  # noqa: F401,F403
+from .errors import *  # noqa: F401,F403
+from .harmonic_balance import *  # noqa: F401,F403
+from .laws import *  # noqa: F401,F403
+from .structure import *  # noqa: F401,F403
+
+#: The C library's version, "MAJOR.MINOR.PATCH" (``fricreg_version()``).
+__version__ = _ffi.string(_lib.fricreg_version()).decode()
+
+__all__ = sorted(set(aft.__all__ + context.__all__ + element.__all__ + errors.__all__
+                     + harmonic_balance.__all__ + laws.__all__ + structure.__all__)) + [
+                         "__version__"]

@@ -1,0 +1,30 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Arrays handed to the C library: float64, C-contiguous, of the shape a call needs; anything
+else converted (a copy) or refused with a message that names the argument."""
+import numpy as np
+
+from ._fricreg import ffi
+
+
+def as_doubles(value, name, ndim=None):
+    """value as a C-contiguous float64 array (a copy only where it is not one already).
+
+    Raises ValueError naming ``name`` where value is not real numbers (complex, strings,
+    objects) or has not ``ndim`` dimensions."""
+    try:
+        array = np.asarray(value)
+    except Exception as exc:  # ragged lists and the like
+        raise ValueError("%s: not an array of numbers (%s)" % (name, exc)) from None
+    if array.dtype.kind not in "biuf":
+        raise ValueError("%s: dtype %s is not real numbers" % (name, array.dtype))
+    array = np.ascontiguousarray(array, dtype=np.float64)
+    if ndim is not None and array.ndim != ndim:
+        raise ValueError("%s: %d dimensions, shape %s; expected %d"
+                         % (name, array.ndim, array.shape, ndim))
+    return array
+
+
+def pointer(array):
+    """A ``double[]`` view of a C-contiguous float64 array for a C call (it keeps the array
+    alive while the view is)."""
+    return ffi.from_buffer("double[]", array)

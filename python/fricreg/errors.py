@@ -1,0 +1,86 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Errors and warnings: a nonzero status of the C library raised as an exception.
+
+Every fricreg function returns a status (``enum fricreg_status`` of ``fricreg.h``); the
+binding raises it as :class:`Error`, or as one of its subclasses that are also Python's own
+``ValueError`` (bad input) and ``MemoryError`` (allocation failure), so that callers catch
+them either way. The message is the library's, prefixed by the call that failed.
+"""
+from ._fricreg import ffi, lib
+
+__all__ = ["Error", "InputError", "OutOfMemoryError", "AccuracyWarning", "Interrupted"]
+
+
+class Error(Exception):
+    """A fricreg call failed.
+
+    Attributes
+    ----------
+    status : int
+        The library's status code (``enum fricreg_status``: ``FRICREG_ESINGULAR`` = 8, ...).
+    name : str
+        The code's name, e.g. ``"FRICREG_ESINGULAR"``.
+    result : object
+        What a long call had computed when it failed, where the library keeps it (a
+        continuation's points reached, a backbone's points), as the call would have returned
+        it; None otherwise.
+    """
+
+    def __init__(self, status, message):
+        super().__init__(message)
+        self.status = status
+        self.name = _STATUS_NAMES.get(status, "FRICREG_E%d" % status)
+        self.result = None
+
+
+class InputError(Error, ValueError):
+    """An argument was refused: NULL, out of range, NaN or infinite, of the wrong size, or a
+    coupling matrix not symmetric or not positive semidefinite (``FRICREG_ENULL``,
+    ``EINVAL``, ``ENONFINITE``, ``ESIZE``, ``ENOTSYM``, ``ENOTPSD``); also a ``ValueError``."""
+
+
+class OutOfMemoryError(Error, MemoryError):
+    """The library could not allocate (``FRICREG_ENOMEM``); also a ``MemoryError``."""
+
+
+class AccuracyWarning(UserWarning):
+    """A run's result may be less accurate than asked: the library's warnings
+    (``enum fricreg_warning``: a coarse step, an error estimate above its tolerance, ...)."""
+
+
+class Interrupted(KeyboardInterrupt):
+    """Ctrl-C (SIGINT) stopped a long call through the library's own cancellation; a
+    ``KeyboardInterrupt``, so that ``except KeyboardInterrupt`` catches it.
+
+    Attributes
+    ----------
+    result : object
+        What the call had computed when it stopped (a continuation's points so far, a
+        backbone's points), as the call would have returned it; None where it had nothing.
+    """
+
+    def __init__(self, result):
+        super().__init__("interrupted (Ctrl-C); the points computed so far are in .result")
+        self.result = result
+
+
+_STATUS_NAMES = {
+    getattr(lib, name): name for name in dir(lib) if name.startswith("FRICREG_E")
+    or name == "FRICREG_OK"
+}
+_INPUT = {lib.FRICREG_ENULL, lib.FRICREG_EINVAL, lib.FRICREG_ENONFINITE, lib.FRICREG_ESIZE,
+          lib.FRICREG_ENOTSYM, lib.FRICREG_ENOTPSD}
+
+
+def raise_status(status, where, detail=""):
+    """Raise the exception of a nonzero status of the call ``where``: the detail (the
+    library's own message) followed by the status's name, or without one the library's text
+    for the status."""
+    text = ffi.string(lib.fricreg_strerror(status)).decode()
+    name = _STATUS_NAMES.get(status, "FRICREG_E%d" % status)
+    message = "%s: %s (%s)" % (where, detail, name) if detail else "%s: %s" % (where, text)
+    if status in _INPUT:
+        raise InputError(status, message)
+    if status == lib.FRICREG_ENOMEM:
+        raise OutOfMemoryError(status, message)
+    raise Error(status, message)

@@ -1,0 +1,542 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Harmonic balance of a linear structure with friction elements (``fricreg_hb.h``): the
+periodic response at one frequency, branches in the frequency or the excitation level with
+Floquet stability and bifurcations, and nonlinear modes' backbones.
+
+M. Krack and J. Gross, *Harmonic Balance for Nonlinear Vibration Problems*, Springer 2019:
+the model M x'' + C x' + K x + J^T f(J x) = p_c cos Ωt + p_s sin Ωt, solved for H harmonics,
+condensed on the elements' coordinates q = J x (Ch. 4), continued by pseudo-arclength (Ch. 5).
+"""
+import threading
+
+import numpy as np
+
+from ._fricreg import ffi, lib
+from .arrays import as_doubles, pointer
+from .element import Element
+from .errors import Error, Interrupted, raise_status
+from .hb_results import Backbone, Bifurcation, Crossing, Fold, Response, Solution
+from .matrices import MatrixArgs
+
+__all__ = ["HarmonicBalance", "Solution", "Response", "Bifurcation", "Backbone", "Fold",
+           "Crossing"]
+
+_STABILITY_METHODS = {"auto": lib.FRICREG_HB_STABILITY_AUTO,
+                      "hill": lib.FRICREG_HB_STABILITY_HILL,
+                      "monodromy": lib.FRICREG_HB_STABILITY_MONODROMY}
+_DAMPING = {"matrix": lib.FRICREG_HB_NMA_DAMPING_MATRIX,
+            "modal": lib.FRICREG_HB_NMA_DAMPING_MODAL}
+_BIFURCATIONS = {lib.FRICREG_HB_TP: "TP", lib.FRICREG_HB_BP: "BP", lib.FRICREG_HB_PD: "PD",
+                 lib.FRICREG_HB_NS: "NS"}
+
+# The call in progress on each thread: where the monitor leaves an exception (Ctrl-C).
+_calls = threading.local()
+
+
+@ffi.def_extern(onerror=lambda exception, value, traceback: _stop(value))
+def fricreg_py_hb_monitor(user, iterations, parameter, residual):
+    """Before each Newton step: 0 goes on. A KeyboardInterrupt raised here (Python runs its
+    SIGINT handler when the callback starts) goes to _stop, which stops the call."""
+    return 0
+
+
+def _stop(exception):
+    """Keep the exception for the caller and stop the solve (the monitor's nonzero return)."""
+    _calls.exception = exception
+    return 1
+
+
+def _choice(table, value, name):
+    """table[value], or ValueError naming the argument and the choices."""
+    if value not in table:
+        raise ValueError("%s: %r is not one of %s" % (name, value, ", ".join(map(repr, table))))
+    return table[value]
+
+
+class HarmonicBalance:
+    """The periodic steady state of a linear structure with friction elements, by harmonic
+    balance (``fricreg_hb``).
+
+    Parameters
+    ----------
+    M, K : array_like, shape (ndof, ndof), or scipy.sparse matrix
+        Mass (e.g. kg) and stiffness (N/m), symmetric; K nonsingular. Dense arrays are
+        row-major; a sparse matrix (CSR or CSC kept, other formats converted to CSR) makes the
+        model sparse (KLU).
+    C : array_like or scipy.sparse matrix, shape (ndof, ndof), optional
+        Damping (N s/m), symmetric. Give C or ``rayleigh``; a model without damping has no
+        finite response at its linear resonances.
+    elements : sequence
+        The friction elements, in the order of their rows of q: each entry ``(element, J)``
+        with ``element`` a :class:`fricreg.Element` (its parameters shared by the block) and
+        ``J`` of shape (me * dim, ndof), me elements of dim rows each (tangential components,
+        then the normal displacement); or ``(name, J, params)`` with params of shape
+        (me, nparams), one row per element. At most 256 elements in all.
+    harmonics : int
+        H, 1..40.
+    rayleigh : (float, float), optional
+        Rayleigh damping C = a0 M + a1 K (a0 in 1/s, a1 in s), in place of C.
+    excitation : (array_like, array_like), optional
+        (p_c, p_s), each of shape (ndof,): the force p_c cos Ωt + p_s sin Ωt (N).
+
+    Raises
+    ------
+    ValueError
+        A shape does not fit, or ``elements`` is not as described.
+    fricreg.InputError
+        (a ``ValueError``) a matrix is not symmetric, an entry is NaN, a parameter is out of
+        range (the library's message names it).
+    fricreg.OutOfMemoryError
+
+    Notes
+    -----
+    The driver is ``fricreg_hb`` (``fricreg_hb_create``, ``fricreg_hb_set_matrix``,
+    ``fricreg_hb_add_elements``, ``fricreg_hb_set_excitation``); every result equals the C
+    library's on the same inputs bit for bit. The C calls release the GIL; one driver serves one
+    thread at a time. Ctrl-C during a solve stops it through the library's monitor
+    (``fricreg_hb_set_monitor``) and raises :class:`fricreg.Interrupted` with what was computed.
+    """
+
+    def __init__(self, M, K, C=None, *, elements, harmonics, rayleigh=None, excitation=None):
+        matrices = [(lib.FRICREG_MASS, MatrixArgs(M, "M")),
+                    (lib.FRICREG_STIFFNESS, MatrixArgs(K, "K"))]
+        if C is not None:
+            matrices.append((lib.FRICREG_DAMPING, MatrixArgs(C, "C")))
+        ndof = matrices[0][1].shape[0]
+        for which, args in matrices:
+            if args.shape != (ndof, ndof):
+                raise ValueError("%s: shape %s; expected (%d, %d) as M"
+                                 % ("MKC"[which - 1], args.shape, ndof, ndof))
+        blocks = [self._block(entry, ndof, i) for i, entry in enumerate(elements)]
+        count = sum(block[1] for block in blocks)
+        self.ndof, self.harmonics, self.nelements = ndof, int(harmonics), count
+        self._J = np.vstack([block[2] for block in blocks])
+        self.nrows = self._J.shape[0]
+        out = ffi.new("fricreg_hb **")
+        status = lib.fricreg_hb_create(ndof, count, self.harmonics, out)
+        if status != lib.FRICREG_OK:
+            raise_status(status, "HarmonicBalance", "ndof = %d, %d elements, harmonics = %d: "
+                         "ndof 1..2^24, 1..256 elements, harmonics 1..40" %
+                         (ndof, count, self.harmonics))
+        self._hb = ffi.gc(out[0], lib.fricreg_hb_free)
+        for which, args in matrices:
+            self._check(lib.fricreg_hb_set_matrix(self._hb, which, ndof, ndof, args.format,
+                                                  args.ptr, args.ind, args.values),
+                        "HarmonicBalance")
+        if rayleigh is not None:
+            a0, a1 = rayleigh
+            self._check(lib.fricreg_hb_set_rayleigh(self._hb, a0, a1), "HarmonicBalance")
+        for typ, me, J, params in blocks:
+            self._check(lib.fricreg_hb_add_elements(self._hb, typ, me, ndof, pointer(J),
+                                                    pointer(params)), "HarmonicBalance")
+        self._check(lib.fricreg_hb_set_monitor(self._hb, lib.fricreg_py_hb_monitor, ffi.NULL),
+                    "HarmonicBalance")
+        self._stability = False
+        if excitation is not None:
+            self.set_excitation(*excitation)
+
+    @staticmethod
+    def _block(entry, ndof, i):
+        """(type, me, J, params) of one entry of ``elements``."""
+        if len(entry) == 2 and isinstance(entry[0], Element):
+            element, J = entry
+            params = None
+        elif len(entry) == 3:
+            name, J, params = entry
+            element = Element(name, as_doubles(params, "elements[%d] params" % i, ndim=2)[0])
+        else:
+            raise ValueError("elements[%d]: expected (Element, J) or (name, J, params)" % i)
+        J = as_doubles(J, "elements[%d] J" % i, ndim=2)
+        if J.shape[1] != ndof or J.shape[0] % element.dim or J.shape[0] == 0:
+            raise ValueError("elements[%d] J: shape %s; expected (me * %d, %d) for %s"
+                             % (i, J.shape, element.dim, ndof, element.name))
+        me = J.shape[0] // element.dim
+        if params is None:
+            params = np.tile(element.params, (me, 1))
+        params = as_doubles(params, "elements[%d] params" % i, ndim=2)
+        if params.shape != (me, element.nparams):
+            raise ValueError("elements[%d] params: shape %s; expected (%d, %d)"
+                             % (i, params.shape, me, element.nparams))
+        return element._type, me, J, params
+
+    def _check(self, status, where):
+        """Raise with the driver's message where status is not FRICREG_OK."""
+        if status != lib.FRICREG_OK:
+            raise_status(status, where, ffi.string(lib.fricreg_hb_errmsg(self._hb)).decode())
+
+    def _run(self, where, call, partial):
+        """A solving call with Ctrl-C armed: Interrupted raised with partial() if the monitor
+        stopped it, and a failure's Error carrying partial() as its result."""
+        _calls.exception = None
+        status = call()
+        exception, _calls.exception = _calls.exception, None
+        if isinstance(exception, KeyboardInterrupt):
+            raise Interrupted(partial()) from None
+        if exception is not None:
+            raise exception
+        if status != lib.FRICREG_OK:
+            try:
+                self._check(status, where)
+            except Error as error:
+                error.result = partial()
+                raise
+
+    # ---- settings ---------------------------------------------------------------------
+
+    def set_excitation(self, pc, ps=None):
+        """The force p_c cos Ωt + p_s sin Ωt.
+
+        Parameters
+        ----------
+        pc, ps : array_like, shape (ndof,)
+            Cosine and sine amplitudes (N); ps zero when omitted.
+
+        Raises
+        ------
+        ValueError
+            A shape is not (ndof,).
+        fricreg.InputError
+            An entry is NaN or infinite (``fricreg_hb_set_excitation``).
+        """
+        pc = as_doubles(pc, "pc", ndim=1)
+        ps = np.zeros(self.ndof) if ps is None else as_doubles(ps, "ps", ndim=1)
+        for name, array in (("pc", pc), ("ps", ps)):
+            if array.shape != (self.ndof,):
+                raise ValueError("%s: shape %s; expected (%d,)" % (name, array.shape, self.ndof))
+        self._check(lib.fricreg_hb_set_excitation(self._hb, self.ndof, pointer(pc), pointer(ps)),
+                    "set_excitation")
+
+    def set_newton(self, tol=1e-10, max_iter=50):
+        """Newton's stopping rule (``fricreg_hb_set_newton``): the largest residual entry at
+        most tol times the displacement scale, after at most max_iter iterations a solve.
+
+        Raises
+        ------
+        fricreg.InputError
+            Not 0 < tol < 1, or max_iter outside 1..1000.
+        """
+        self._check(lib.fricreg_hb_set_newton(self._hb, tol, int(max_iter)), "set_newton")
+
+    def set_continuation(self, ds=0.02, ds_min=1e-6, ds_max=0.1, max_points=2000):
+        """The continuation's step control in the scaled arclength
+        (``fricreg_hb_set_continuation``, whose defaults these are).
+
+        Raises
+        ------
+        fricreg.InputError
+            Not ds_min <= ds <= ds_max <= 1, ds_min <= 0, or max_points < 2.
+        """
+        self._check(lib.fricreg_hb_set_continuation(self._hb, ds, ds_min, ds_max,
+                                                    int(max_points)), "set_continuation")
+
+    def set_stability(self, enable=True, method="auto"):
+        """Floquet stability of every later solution (``fricreg_hb_set_stability``).
+
+        Parameters
+        ----------
+        enable : bool
+        method : {"auto", "hill", "monodromy"}
+            ``"monodromy"``: the orbit's exact monodromy (1-D Jenkins and Iwan elements, with or
+            without lift-off); ``"hill"``: Hill's method, any element, its verdict only;
+            ``"auto"``: the monodromy where the elements allow it, up to order 512.
+
+        Raises
+        ------
+        ValueError
+            An unknown method.
+        fricreg.InputError
+            Hill's method on a model beyond ndof (2H + 1) = 1024.
+        """
+        code = _choice(_STABILITY_METHODS, method, "method")
+        self._check(lib.fricreg_hb_set_stability_method(self._hb, code), "set_stability")
+        self._check(lib.fricreg_hb_set_stability(self._hb, int(bool(enable))), "set_stability")
+        self._stability = bool(enable)
+
+    # ---- solves -----------------------------------------------------------------------
+
+    def _guess(self, guess):
+        """The C guess pointer (NULL for None), the array kept alive by the caller."""
+        if guess is None:
+            return None, ffi.NULL
+        q0 = as_doubles(guess, "guess")
+        if q0.shape != (self.nrows, 2 * self.harmonics + 1):
+            raise ValueError("guess: shape %s; expected (%d, %d)"
+                             % (q0.shape, self.nrows, 2 * self.harmonics + 1))
+        return q0, pointer(q0)
+
+    def _stability_of(self, k):
+        """(stable, mu_max) of stored point k or of the solution (None, nan with it off)."""
+        if not self._stability:
+            return None, float("nan")
+        stable, mu = ffi.new("int *"), ffi.new("double *")
+        self._check(lib.fricreg_hb_point_stability(self._hb, k, stable, mu), "stability")
+        return bool(stable[0]), mu[0]
+
+    def _solution(self, omega, q):
+        """The driver's last solution as a Solution; without q (a branch's last point, whose
+        unknowns the C API does not give), q = J x, the solver's own to Newton's tolerance."""
+        x = np.empty((self.ndof, 2 * self.harmonics + 1))
+        self._check(lib.fricreg_hb_displacement(self._hb, self.ndof, x.shape[1], pointer(x)),
+                    "displacement")
+        if q is None:
+            q = self._J @ x
+        stable, mu = self._stability_of(ffi.cast("size_t", -1))
+        return Solution(omega, q, x, stable, mu)
+
+    def solve(self, omega, guess=None):
+        """The periodic response at the excitation frequency omega (``fricreg_hb_solve``).
+
+        Parameters
+        ----------
+        omega : float
+            Excitation circular frequency Ω > 0, rad/s.
+        guess : array_like, shape (nrows, 2H + 1), optional
+            The elements' coordinates to start from; without one the solution reached
+            continuously from the linear regime along the excitation level.
+
+        Returns
+        -------
+        Solution
+
+        Raises
+        ------
+        ValueError
+            guess has the wrong shape.
+        fricreg.InputError
+            omega <= 0 or not finite, a NaN in guess.
+        fricreg.Error
+            FRICREG_ESINGULAR (K or some D_h singular), FRICREG_EWORK (Newton did not
+            converge), FRICREG_EINTEGRATOR; the message is the driver's.
+        fricreg.Interrupted
+            Ctrl-C (its result is None: nothing is written).
+        """
+        q0, q0_ptr = self._guess(guess)
+        q = np.empty((self.nrows, 2 * self.harmonics + 1))
+        self._run("solve", lambda: lib.fricreg_hb_solve(self._hb, omega, q.size, q0_ptr,
+                                                         pointer(q)), lambda: None)
+        return self._solution(float(omega), q)
+
+    def _response(self):
+        """The stored branch as a Response."""
+        n = lib.fricreg_hb_points(self._hb)
+        omega, level = np.empty(n), np.empty(n)
+        rms = np.empty((n, self.ndof))
+        stable = np.empty(n, dtype=bool) if self._stability else None
+        mu_max = np.empty(n) if self._stability else None
+        w, lv = ffi.new("double *"), ffi.new("double *")
+        for k in range(n):
+            self._check(lib.fricreg_hb_point(self._hb, k, w, self.ndof, pointer(rms[k])), "point")
+            self._check(lib.fricreg_hb_point_level(self._hb, k, lv), "point")
+            omega[k], level[k] = w[0], lv[0]
+            if self._stability:
+                stable[k], mu_max[k] = self._stability_of(k)
+        solution = self._solution(omega[-1], None) if n else None  # its q: J x
+        return Response(omega, level, rms, stable, mu_max, self._bifurcations(), solution)
+
+    def _bifurcations(self):
+        """The located bifurcations of the stored branch."""
+        found = []
+        kind, w, level = ffi.new("int *"), ffi.new("double *"), ffi.new("double *")
+        point = ffi.new("size_t *")
+        for i in range(lib.fricreg_hb_bifurcations(self._hb)):
+            rms = np.empty(self.ndof)
+            self._check(lib.fricreg_hb_bifurcation(self._hb, i, kind, w, point, self.ndof,
+                                                   pointer(rms)), "bifurcation")
+            self._check(lib.fricreg_hb_bifurcation_level(self._hb, i, level), "bifurcation")
+            found.append(Bifurcation(_BIFURCATIONS[kind[0]], w[0], level[0], point[0], rms))
+        return tuple(found)
+
+    def frequency_response(self, omega0, omega1, guess=None):
+        """The periodic response from omega0 to omega1 by pseudo-arclength continuation in Ω
+        (``fricreg_hb_continue``), through turning points; with stability on, each point's
+        Floquet stability and the bifurcations between them.
+
+        Parameters
+        ----------
+        omega0, omega1 : float
+            The interval's ends, > 0, different (either order), rad/s.
+        guess : array_like, shape (nrows, 2H + 1), optional
+            The elements' coordinates at omega0, as for :meth:`solve`.
+
+        Returns
+        -------
+        Response
+            The branch's points; ``solution`` is its last, at omega1 (short of it where the
+            branch is a closed loop, which the C library returns as such).
+
+        Raises
+        ------
+        ValueError, fricreg.InputError
+            As :meth:`solve`, and omega0 == omega1.
+        fricreg.Error
+            As :meth:`solve`; FRICREG_EINTEGRATOR if the step fell below ds_min, FRICREG_EWORK
+            if max_points were stored before omega1. Its ``result`` is the Response of the
+            points reached (None if the solve at omega0 failed).
+        fricreg.Interrupted
+            Ctrl-C; its result is the Response of the points computed so far (the first points
+            of the uninterrupted branch, bit for bit).
+        """
+        q0, q0_ptr = self._guess(guess)
+        nq = self.nrows * (2 * self.harmonics + 1)
+        self._run("frequency_response",
+                  lambda: lib.fricreg_hb_continue(self._hb, omega0, omega1, nq, q0_ptr),
+                  self._partial_response)
+        return self._response()
+
+    def level_response(self, omega, level0, level1, guess=None):
+        """The periodic response at the fixed frequency omega from the excitation level
+        λ = level0 to level1, the force λ (p_c, p_s) (``fricreg_hb_continue_level``): the
+        S-curve of the amplitude against the level.
+
+        Parameters
+        ----------
+        omega : float
+            Ω > 0, rad/s.
+        level0, level1 : float
+            The levels' ends, >= 0, different, nondimensional.
+        guess : array_like, shape (nrows, 2H + 1), optional
+            The elements' coordinates at level0.
+
+        Returns
+        -------
+        Response
+            ``level`` holds each point's λ; ``TP`` bifurcations are folds in λ.
+
+        Raises
+        ------
+        As :meth:`frequency_response`.
+        """
+        q0, q0_ptr = self._guess(guess)
+        nq = self.nrows * (2 * self.harmonics + 1)
+        self._run("level_response",
+                  lambda: lib.fricreg_hb_continue_level(self._hb, omega, level0, level1, nq,
+                                                        q0_ptr),
+                  self._partial_response)
+        return self._response()
+
+    def _partial_response(self):
+        """The points a stopped continuation kept (no bifurcations are located then)."""
+        return self._response() if lib.fricreg_hb_points(self._hb) else None
+
+    def peak(self, dof):
+        """The largest RMS of one dof along the last frequency response, located between its
+        points (``fricreg_hb_peak``: Brent's method on the branch).
+
+        Parameters
+        ----------
+        dof : int
+            0 <= dof < ndof.
+
+        Returns
+        -------
+        omega, rms : float
+            The frequency (rad/s) and RMS (displacement units) of the peak.
+
+        Raises
+        ------
+        fricreg.InputError
+            dof out of range, or no frequency response computed (or a level response).
+        fricreg.Error
+            FRICREG_EWORK if a corrector did not converge.
+        fricreg.Interrupted
+            Ctrl-C (result None).
+        """
+        omega, rms = ffi.new("double *"), ffi.new("double *")
+        self._run("peak", lambda: lib.fricreg_hb_peak(self._hb, int(dof), omega, rms),
+                  lambda: None)
+        return omega[0], rms[0]
+
+    # ---- nonlinear modes --------------------------------------------------------------
+
+    def backbone(self, mode, a0, a1, npoints=50, damping="matrix", through_folds=False):
+        """A nonlinear mode's backbone ω(a), ζ(a) by the extended periodic motion concept
+        (``fricreg_hb_nma``, or ``fricreg_hb_nma_continue`` with through_folds): Krack,
+        Computers & Structures 154 (2015) 59-71.
+
+        Parameters
+        ----------
+        mode : int
+            k, 0 <= k < ndof, in ascending order of the stuck structure's natural frequencies.
+        a0, a1 : float
+            Modal amplitudes, 0 < a0 < a1 (displacement times sqrt(mass)).
+        npoints : int
+            Points stored: geometric in a (through_folds False), or at equal arclength.
+        damping : {"matrix", "modal"}
+            The linear damping as set, or the mode's own modal damping.
+        through_folds : bool
+            Continue by pseudo-arclength through the folds in a (internal resonances), which
+            the natural-parameter march stops at.
+
+        Returns
+        -------
+        Backbone
+
+        Raises
+        ------
+        ValueError
+            An unknown damping.
+        fricreg.InputError
+            mode out of range, not 0 < a0 < a1, npoints out of 2..max_points.
+        fricreg.Error
+            FRICREG_ESINGULAR, FRICREG_EWORK (Newton did not converge, or the march met a
+            fold: try through_folds), FRICREG_EINTEGRATOR. Its ``result`` is the Backbone of
+            the points reached.
+        fricreg.Interrupted
+            Ctrl-C; its result is the Backbone of the points reached.
+        """
+        code = _choice(_DAMPING, damping, "damping")
+        solve = lib.fricreg_hb_nma_continue if through_folds else lib.fricreg_hb_nma
+        self._run("backbone", lambda: solve(self._hb, int(mode), code, a0, a1, int(npoints)),
+                  self._backbone)
+        return self._backbone()
+
+    def _backbone(self):
+        """The stored backbone as a Backbone."""
+        n, nc = lib.fricreg_hb_nma_points(self._hb), 2 * self.harmonics + 1
+        a, w, z = np.empty(n), np.empty(n), np.empty(n)
+        energy = np.empty((n, self.harmonics + 1))
+        x = np.empty((n, self.ndof, nc))
+        pa, pw, pz = ffi.new("double *"), ffi.new("double *"), ffi.new("double *")
+        for i in range(n):
+            self._check(lib.fricreg_hb_nma_point(self._hb, i, pa, pw, pz, self.ndof, nc,
+                                                 pointer(x[i])), "backbone")
+            a[i], w[i], z[i] = pa[0], pw[0], pz[0]
+            self._check(lib.fricreg_hb_nma_harmonic_energy(self._hb, i, self.harmonics + 1,
+                                                           pointer(energy[i])), "backbone")
+        folds = []
+        for i in range(lib.fricreg_hb_nma_folds(self._hb)):
+            self._check(lib.fricreg_hb_nma_fold(self._hb, i, pa, pw, pz), "backbone")
+            folds.append(Fold(pa[0], pw[0], pz[0]))
+        crossings = []
+        k, r = ffi.new("int *"), ffi.new("size_t *")
+        for i in range(lib.fricreg_hb_nma_crossings(self._hb)):
+            self._check(lib.fricreg_hb_nma_crossing(self._hb, i, k, r, pa, pw), "backbone")
+            crossings.append(Crossing(k[0], r[0], pa[0], pw[0]))
+        return Backbone(a, w, z, energy, tuple(folds), tuple(crossings), x)
+
+    def modal_participation(self, point, harmonic):
+        """Each stuck linear mode's share in one harmonic of a point of the last backbone
+        (``fricreg_hb_nma_modal_participation``): which mode a harmonic excites.
+
+        Parameters
+        ----------
+        point : int
+            The backbone point, 0 <= point < npoints.
+        harmonic : int
+            h, 0 <= h <= H.
+
+        Returns
+        -------
+        fraction : ndarray, shape (ndof,)
+            fraction[r], the share of mode r (from the lowest), summing to 1.
+
+        Raises
+        ------
+        fricreg.InputError
+            point or harmonic out of range, no backbone, a sparse model of more than 256 dofs.
+        """
+        fraction = np.empty(self.ndof)
+        self._check(lib.fricreg_hb_nma_modal_participation(self._hb, int(point), int(harmonic),
+                                                           self.ndof, pointer(fraction)),
+                    "modal_participation")
+        return fraction

@@ -1,0 +1,95 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""What harmonic balance returns (harmonic_balance.py): a solution, a branch of the frequency
+(or level) response with its stability and bifurcations, a nonlinear mode's backbone. Plain
+arrays, so a result outlives the driver that computed it.
+
+Fourier coefficients are laid out as fricreg_hb.h's: a periodic function of θ = Ω t is
+x0 + Σ_{h=1..H} (a_h cos hθ + b_h sin hθ), stored as the 2H + 1 numbers
+(x0, a_1, b_1, ..., a_H, b_H) along the last axis (tmdsimpy's and pyHarm's order per dof).
+"""
+from collections import namedtuple
+
+__all__ = ["Solution", "Response", "Bifurcation", "Backbone", "Fold", "Crossing"]
+
+Solution = namedtuple("Solution", "omega q x stable mu_max")
+Solution.__doc__ = """A periodic steady state (:meth:`HarmonicBalance.solve`).
+
+omega : float
+    Excitation circular frequency Ω, rad/s.
+q : ndarray, shape (nrows, 2H + 1)
+    The elements' coordinates q = J x, one row per row of the elements' J, each its Fourier
+    coefficients (displacement units).
+x : ndarray, shape (ndof, 2H + 1)
+    The displacements' Fourier coefficients, one row per dof.
+stable : bool or None
+    Every Floquet multiplier within the unit circle (|μ| <= 1 + 1e-6); None with stability off.
+mu_max : float
+    The largest |μ| (nan with stability off).
+"""
+
+Bifurcation = namedtuple("Bifurcation", "kind omega level point rms")
+Bifurcation.__doc__ = """A bifurcation located along a branch (``fricreg_hb_bifurcation``).
+
+kind : str
+    ``"TP"`` turning point (a fold in the continued parameter), ``"BP"`` branch point,
+    ``"PD"`` period doubling (a multiplier crosses -1), ``"NS"`` Neimark-Sacker (a complex
+    pair crosses the unit circle); PD and NS need stability on.
+omega : float
+    Its excitation frequency, rad/s.
+level : float
+    Its excitation level λ (1 on a branch in Ω).
+point : int
+    The index of the stored point before it (it lies between point and point + 1).
+rms : ndarray, shape (ndof,)
+    Each dof's RMS there (displacement units).
+"""
+
+Response = namedtuple("Response", "omega level rms stable mu_max bifurcations solution")
+Response.__doc__ = """A branch of the periodic response (:meth:`HarmonicBalance.frequency_response`,
+:meth:`HarmonicBalance.level_response`), its points in the branch's order.
+
+omega : ndarray, shape (npoints,)
+    Excitation frequency of each point, rad/s (constant along a level branch).
+level : ndarray, shape (npoints,)
+    Excitation level λ of each point (1 along a frequency branch).
+rms : ndarray, shape (npoints, ndof)
+    Each dof's RMS over a period, sqrt(x0² + Σ_h (a_h² + b_h²)/2) (displacement units).
+stable : ndarray of bool, shape (npoints,), or None
+    Each point's stability; None with stability off.
+mu_max : ndarray, shape (npoints,), or None
+    Each point's largest |Floquet multiplier|; None with stability off.
+bifurcations : tuple of Bifurcation
+    Located between the points, in the branch's order.
+solution : Solution or None
+    The branch's last point with its coefficients (None if the continuation stored none); its
+    q is J x, equal to the solver's unknowns to Newton's tolerance: a guess to go on from.
+"""
+
+Fold = namedtuple("Fold", "amplitude omega zeta")
+Fold.__doc__ = """A fold of a backbone in the amplitude (``fricreg_hb_nma_fold``): modal amplitude
+a, natural frequency ω (rad/s) and damping ratio ζ there."""
+
+Crossing = namedtuple("Crossing", "harmonic mode amplitude omega")
+Crossing.__doc__ = """Where a harmonic k ω of the backbone crosses another stuck linear mode's
+frequency ω_r (``fricreg_hb_nma_crossing``): harmonic k, mode r (from 0, ascending), the
+modal amplitude a and the backbone's ω (rad/s) there: where an internal resonance can start."""
+
+Backbone = namedtuple("Backbone", "amplitude omega zeta harmonic_energy folds crossings x")
+Backbone.__doc__ = """A nonlinear mode's backbone by the extended periodic motion concept (Krack,
+Computers & Structures 154 (2015) 59-71): :meth:`HarmonicBalance.backbone`.
+
+amplitude : ndarray, shape (npoints,)
+    Modal amplitude a of each point (displacement times the square root of mass: φ^T M X_1,
+    φ mass-normalized).
+omega : ndarray, shape (npoints,)
+    Natural frequency ω(a), rad/s.
+zeta : ndarray, shape (npoints,)
+    Damping ratio ζ(a), nondimensional.
+harmonic_energy : ndarray, shape (npoints, H + 1)
+    Each harmonic's share of the kinetic energy averaged over a period (row sums 1;
+    ``fricreg_hb_nma_harmonic_energy``).
+folds : tuple of Fold
+crossings : tuple of Crossing
+x : ndarray, shape (npoints, ndof, 2H + 1)
+    The displacements' Fourier coefficients of each point's periodic motion.
+"""

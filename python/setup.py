@@ -1,0 +1,24 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Builds the binding against an installed fricreg found by pkg-config (no network):
+
+    PKG_CONFIG_PATH=PREFIX/lib/pkgconfig python3 setup.py build_ext --inplace
+    PKG_CONFIG_PATH=PREFIX/lib/pkgconfig python3 -m pip install --no-build-isolation .
+
+The CMake build (cmake/python.cmake) builds the same module beside the library it builds."""
+import subprocess
+
+from setuptools import setup
+
+version = subprocess.run(["pkg-config", "--modversion", "fricreg"], check=True,
+                         capture_output=True, text=True).stdout.strip()
+setup(
+    name="fricreg",
+    version=version,
+    description="Dry (Coulomb) friction with stick-slip: Quinn's regularization, joints' elements",
+    license="GPL-3.0-or-later",
+    packages=["fricreg"],
+    python_requires=">=3.7",
+    install_requires=["numpy"],
+    setup_requires=["cffi>=1.12"],
+    cffi_modules=["build_ffi.py:ffibuilder"],
+)
