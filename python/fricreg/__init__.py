@@ -8,9 +8,10 @@ C call, and the objects built on them. Every call that fails raises :class:`fric
 (bad input: :class:`fricreg.InputError`, also a ``ValueError``) with the library's message.
 The guide is ``docs/python.md``.
 """
-from . import aft, context, element, errors, harmonic_balance, laws, structure
+from . import aft, aft_layouts, context, element, errors, harmonic_balance, laws, structure
 from ._fricreg import ffi as _ffi, lib as _lib
 from .aft import *  # noqa: F401,F403
+from .aft_layouts import *  # noqa: F401,F403
 from .context import *  # noqa: F401,F403
 from .element import *  # noqa: F401,F403
 from .errors import *  # noqa: F401,F403
@@ -21,6 +22,5 @@ from .structure import *  # noqa: F401,F403
 #: The C library's version, "MAJOR.MINOR.PATCH" (``fricreg_version()``).
 __version__ = _ffi.string(_lib.fricreg_version()).decode()
 
-__all__ = sorted(set(aft.__all__ + context.__all__ + element.__all__ + errors.__all__
-                     + harmonic_balance.__all__ + laws.__all__ + structure.__all__)) + [
-                         "__version__"]
+_MODULES = (aft, aft_layouts, context, element, errors, harmonic_balance, laws, structure)
+__all__ = sorted(set(name for module in _MODULES for name in module.__all__)) + ["__version__"]

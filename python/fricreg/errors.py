@@ -64,10 +64,7 @@ class Interrupted(KeyboardInterrupt):
         self.result = result
 
 
-_STATUS_NAMES = {
-    getattr(lib, name): name for name in dir(lib) if name.startswith("FRICREG_E")
-    or name == "FRICREG_OK"
-}
+_STATUS_NAMES = dict(ffi.typeof("enum fricreg_status").elements)  # value: name
 _INPUT = {lib.FRICREG_ENULL, lib.FRICREG_EINVAL, lib.FRICREG_ENONFINITE, lib.FRICREG_ESIZE,
           lib.FRICREG_ENOTSYM, lib.FRICREG_ENOTPSD}
 

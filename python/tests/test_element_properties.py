@@ -1,7 +1,10 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """Property tests of fricreg.Element with hypothesis (python3-hypothesis; skipped where it is
 absent): the call is pure, its tangent matches centred differences away from the stick/slip
-border, and the force stays within the sliders' bounds."""
+border, and the force stays within the sliders' bounds. Derandomized: the same examples at
+every run, so that CI is reproducible."""
+import math
+
 import numpy as np
 import pytest
 
@@ -16,7 +19,7 @@ stiffness = st.floats(0.5, 5.0)
 bound = st.floats(0.0, 2.0)
 
 
-@settings(max_examples=200, deadline=None, database=None)
+@settings(max_examples=200, deadline=None, database=None, derandomize=True)
 @given(kt=stiffness, mun=bound, w=st.tuples(finite, finite), u=st.tuples(finite, finite))
 def test_jenkins_2d_is_pure_and_bounded(kt, mun, w, u):
     element = fricreg.Element("jenkins_2d", [kt, mun])
@@ -25,10 +28,11 @@ def test_jenkins_2d_is_pure_and_bounded(kt, mun, w, u):
     again = element.eval([u], state, derivatives=True)
     for a, b in zip(first, again):
         assert a.tobytes() == b.tobytes()
-    assert np.linalg.norm(first.f) <= mun * (1 + 1e-12) + 1e-300
+    # hypot, not the norm's sum of squares, which loses digits below 1e-154 (subnormal squares)
+    assert math.hypot(*first.f[0]) <= mun * (1 + 1e-12) + 1e-300
 
 
-@settings(max_examples=200, deadline=None, database=None)
+@settings(max_examples=200, deadline=None, database=None, derandomize=True)
 @given(kt=stiffness, mun=st.floats(0.1, 2.0), w=finite, u=finite)
 def test_jenkins_tangent_matches_differences(kt, mun, w, u):
     element = fricreg.Element("jenkins", [kt, mun])
