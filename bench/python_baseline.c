@@ -58,8 +58,7 @@ done:
 }
 
 /* 10^4 jenkins points; returns 1 on success. */
-static int element_points(const double *u, const double *w, double *f, double *dfdu,
-                          double *w_new)
+static int element_points(const double *u, const double *w, double *f, double *dfdu, double *w_new)
 {
     const fricreg_element_type *t = fricreg_element_lookup("jenkins");
     const double p[2] = {2.0, 0.5};
