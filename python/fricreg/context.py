@@ -18,6 +18,7 @@ from ._fricreg import ffi, lib
 from .arrays import as_doubles, pointer
 from .errors import raise_status
 from .laws import LAWS, _law_code
+from .matrices import MatrixArgs, is_sparse
 
 __all__ = ["Context", "PARTITIONS", "StepResult"]
 
@@ -40,38 +41,11 @@ converged : bool
 """
 
 
-def _is_sparse(matrix):
-    """Whether matrix is a scipy.sparse matrix or array (without importing scipy)."""
-    return hasattr(matrix, "tocsr") and type(matrix).__module__.startswith("scipy.sparse")
-
-
-def _compressed(matrix, name, m, fmt=None):
-    """A scipy.sparse matrix as (format code, ptr, ind, values) for C: CSR or CSC kept as it
-    is (or converted to fmt, "csr" or "csc"), any other format converted to CSR; int64 indices,
-    float64 values, shape (m, m) checked."""
-    if matrix.shape != (m, m):
-        raise ValueError("%s: shape %s; expected (%d, %d)" % (name, matrix.shape, m, m))
-    fmt = fmt or (matrix.format if matrix.format in ("csr", "csc") else "csr")
-    matrix = matrix.tocsc() if fmt == "csc" else matrix.tocsr()
-    code = lib.FRICREG_MATRIX_CSC if fmt == "csc" else lib.FRICREG_MATRIX_CSR
-    return (code, np.ascontiguousarray(matrix.indptr, dtype=np.int64),
-            np.ascontiguousarray(matrix.indices, dtype=np.int64),
-            as_doubles(matrix.data, name + ".data", ndim=1))
-
-
 def _scalar(value, name):
     """value as a float; ValueError naming it where it is not one real number."""
     if np.ndim(value) != 0:
         raise ValueError("%s: shape %s; expected a number" % (name, np.shape(value)))
     return float(as_doubles(value, name)[0])
-
-
-def _c_matrix(matrix):
-    """C's (ptr, ind, values) of a matrix from _compressed's, or (None, None, dense values):
-    NULL for the absent index arrays."""
-    ptr, ind, values = matrix
-    indices = [ffi.NULL if a is None else ffi.from_buffer("int64_t[]", a) for a in (ptr, ind)]
-    return indices + [pointer(values)]
 
 
 class Context:
@@ -149,7 +123,7 @@ class Context:
         """m, or W's or mun's length; ValueError naming m otherwise."""
         if m is None:
             if W is not None:
-                m = W.shape[0] if _is_sparse(W) else len(np.atleast_1d(np.asarray(W)))
+                m = W.shape[0] if is_sparse(W) else len(np.atleast_1d(np.asarray(W)))
             elif mun is not None and np.ndim(mun) == 1:
                 m = len(mun)
             else:
@@ -160,7 +134,7 @@ class Context:
         return m
 
     def __repr__(self):
-        kind = "sparse" if _is_sparse(self._W) else "diagonal" if self._W.ndim == 1 else "dense"
+        kind = "sparse" if is_sparse(self._W) else "diagonal" if self._W.ndim == 1 else "dense"
         return "Context(m=%d, law=%r, eps=%r, partition=%r, W=<%s>)" % (
             self.m, self._law, self._eps, self._partition, kind)
 
@@ -243,13 +217,13 @@ class Context:
 
     @W.setter
     def W(self, W):
-        if _is_sparse(W):
-            code, ptr, ind, values = _compressed(W, "W", self.m)
-            setter = (lib.fricreg_ctx_set_coupling_csc if code == lib.FRICREG_MATRIX_CSC
+        if is_sparse(W):
+            args = self._square(W, "W")
+            setter = (lib.fricreg_ctx_set_coupling_csc if args.format == lib.FRICREG_MATRIX_CSC
                       else lib.fricreg_ctx_set_coupling_csr)
-            status = setter(self._ctx, self.m, lib.FRICREG_SPARSE_ZERO_BASED,
-                            *_c_matrix((ptr, ind, values)))
-            stored = (W.tocsc() if code == lib.FRICREG_MATRIX_CSC else W.tocsr()).astype(float)
+            status = setter(self._ctx, self.m, lib.FRICREG_SPARSE_ZERO_BASED, args.ptr, args.ind,
+                            args.values)
+            stored = args.matrix.astype(float)
         else:
             stored = as_doubles(W, "W").copy()
             if stored.shape == (self.m,):
@@ -555,27 +529,32 @@ class Context:
         vectors = [self._vector(v, name) for v, name in (
             (zdot_start, "zdot_start"), (zdot_pred, "zdot_pred"), (a_pred, "a_pred"))]
         f = np.zeros(self.m) if f is None else self._vector(f, "f").copy()
-        fmt, w, weff = self._step_matrices(W_eff)
+        w, weff = self._step_matrices(W_eff)
         info = ffi.new("int[2]")
         self._check(lib.fricreg_ctx_solve_step_matrix(
-            self._ctx, self.m, *[pointer(v) for v in vectors], fmt, *_c_matrix(w),
-            *_c_matrix(weff), _scalar(c, "c"), _scalar(tol, "tol"), operator.index(max_iter),
+            self._ctx, self.m, *[pointer(v) for v in vectors], weff.format, w.ptr, w.ind,
+            w.values, weff.ptr, weff.ind, weff.values, _scalar(c, "c"), _scalar(tol, "tol"),
+            operator.index(max_iter),
             lib.FRICREG_STEP_PLAIN if plain else 0, pointer(f), info), "Context.solve_step")
         return StepResult(f, int(info[0]), bool(info[1]))
 
+    def _square(self, matrix, name, form=None):
+        """MatrixArgs of an (m, m) matrix; ValueError naming it for another shape."""
+        args = MatrixArgs(matrix, name, form)
+        if args.shape != (self.m, self.m):
+            raise ValueError("%s: shape %s; expected (%d, %d)"
+                             % (name, args.shape, self.m, self.m))
+        return args
+
     def _step_matrices(self, W_eff):
-        """The format code (enum fricreg_matrix_format) and the (ptr, ind, values) of the
-        context's W and of W_eff, both in W_eff's storage, for fricreg_ctx_solve_step_matrix."""
+        """MatrixArgs of the context's W and of W_eff, both in W_eff's storage, for
+        fricreg_ctx_solve_step_matrix."""
         W = self._W
-        if _is_sparse(W_eff):
-            fmt, *weff = _compressed(W_eff, "W_eff", self.m)
-            if not _is_sparse(W):
+        if is_sparse(W_eff):
+            weff = self._square(W_eff, "W_eff")
+            if not is_sparse(W):
                 import scipy.sparse  # W_eff is sparse: scipy is there
                 W = scipy.sparse.diags(W) if W.ndim == 1 else scipy.sparse.csr_matrix(W)
-            _, *w = _compressed(W, "W", self.m, "csc" if fmt == lib.FRICREG_MATRIX_CSC else "csr")
-            return fmt, w, weff
-        weff = as_doubles(W_eff, "W_eff")
-        if weff.shape != (self.m, self.m):
-            raise ValueError("W_eff: shape %s; expected (%d, %d)" % (weff.shape, self.m, self.m))
-        w = W.toarray() if _is_sparse(W) else np.diag(W) if W.ndim == 1 else W
-        return lib.FRICREG_MATRIX_DENSE, (None, None, as_doubles(w, "W")), (None, None, weff)
+            return self._square(W, "W", weff.matrix.format), weff
+        w = W.toarray() if is_sparse(W) else np.diag(W) if W.ndim == 1 else W
+        return self._square(w, "W"), self._square(W_eff, "W_eff")

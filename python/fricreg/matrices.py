@@ -19,12 +19,14 @@ def is_sparse(matrix):
 
 class MatrixArgs:
     """A matrix as the setter's arguments (format, ptr, ind, values, shape), holding the arrays
-    the pointers point into."""
+    the pointers point into: a sparse matrix in CSR or CSC as it is (``form``, "csr" or "csc",
+    converts it to that one), any other sparse format as CSR; a dense one row-major."""
 
-    def __init__(self, matrix, name):
+    def __init__(self, matrix, name, form=None):
         if is_sparse(matrix):
-            form = matrix.format if matrix.format in ("csr", "csc") else "csr"
+            form = form or (matrix.format if matrix.format in ("csr", "csc") else "csr")
             compressed = matrix.asformat(form)
+            self.matrix = compressed
             self.shape = compressed.shape
             self.format = lib.FRICREG_MATRIX_CSR if form == "csr" else lib.FRICREG_MATRIX_CSC
             self._ptr = np.ascontiguousarray(compressed.indptr, dtype=np.int64)
@@ -35,6 +37,7 @@ class MatrixArgs:
             self.values = pointer(self._values) if self._values.size else ffi.NULL
         else:
             self._values = as_doubles(matrix, name, ndim=2)
+            self.matrix = self._values
             self.shape = self._values.shape
             self.format = lib.FRICREG_MATRIX_DENSE
             self.ptr = self.ind = ffi.NULL
