@@ -8,20 +8,28 @@ medians, measured in one run on one machine.
   hb       NLvib's chain swept with stability: HarmonicBalance + frequency_response
            against fricreg_hb_create .. fricreg_hb_continue and the points read (target <= 1.1);
   element  10^4 jenkins points: one Element.eval on arrays against 10^4 fricreg_element_eval
-           calls (target <= 1.5).
+           calls (target <= 1.5);
+  structure  the README's ten-storey building (examples/building, its error estimate on):
+           Structure + run against fricreg-sim structure's own CPU clock (cpu_seconds) on the
+           same model's Matrix Market files (target <= 1.05).
 
-Usage: PYTHONPATH=BUILD/python python3 bench/python_speed.py BUILD-BENCH/bench/fricreg-bench-python-baseline [ROUNDS]
+Usage: PYTHONPATH=BUILD/python python3 bench/python_speed.py BUILD [ROUNDS], BUILD a tree
+configured with -DFRICREG_BENCH=ON (its bench/fricreg-bench-python-baseline, fricreg-sim and
+examples/make_building).
 """
+import json
+import os
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 
 import numpy as np
 
 import fricreg
 
-TARGETS = {"hb": 1.1, "element": 1.5}
+TARGETS = {"hb": 1.1, "element": 1.5, "structure": 1.05}
 K = np.array([[2.0, -1.0, 0.0], [-1.0, 2.0, -1.0], [0.0, -1.0, 2.0]])
 J = np.array([[1.0, 0.0, 0.0], [-1.0, 1.0, 0.0]])
 N = 10000
@@ -42,13 +50,43 @@ def element_points():
     return JENKINS.eval(U, W)
 
 
-PYTHON = {"hb": hb_sweep, "element": element_points}
+def building():
+    """examples/python/structure_building.py's model and run (make_building's numbers)."""
+    n, mass, k, g = 10, 1e5, 1e8, 9.81
+    K = 2 * k * np.eye(n) - k * np.eye(n, k=1) - k * np.eye(n, k=-1)
+    K[-1, -1] = k
+    t = 1e-3 * np.arange(10001)
+    ag = 0.3 * g * np.sin(np.pi * t / 10) * np.sin(2 * np.pi * t)
+    w0 = 2 * np.sqrt(k / mass)
+    w1, w2 = (w0 * np.sin(j * np.pi / (2 * (2 * n + 1))) for j in (1, 3))
+    s = fricreg.Structure(mass * np.eye(n), K, rayleigh=(0.1 * w1 * w2 / (w1 + w2), 0.1 / (w1 + w2)),
+                          J=np.eye(n) - np.eye(n, k=-1), mun=0.05 * g * mass * (n - np.arange(n)),
+                          eps=0.01, ground_accel=(0.0, 1e-3, ag), error_estimate="on")
+    return s.run("newmark", dt=0.01, t_end=15.0)
 
 
-def c_seconds(baseline, task, reps):
-    out = subprocess.run([baseline, task, str(reps)], check=True, capture_output=True,
-                         text=True).stdout
-    return [float(line.split()[1]) for line in out.splitlines()]
+PYTHON = {"hb": hb_sweep, "element": element_points, "structure": building}
+
+
+def c_seconds(build, task, reps, files):
+    """The C side's CPU seconds per repetition: the baseline's own clock, or fricreg-sim's
+    (its summary's cpu_seconds: the model set up from its arrays and the run, the files read
+    before it) for the structure."""
+    if task != "structure":
+        out = subprocess.run([os.path.join(build, "bench", "fricreg-bench-python-baseline"),
+                              task, str(reps)], check=True, capture_output=True, text=True).stdout
+        return [float(line.split()[1]) for line in out.splitlines()]
+    rayleigh = open(os.path.join(files, "rayleigh.txt")).read().strip()
+    command = [os.path.join(build, "fricreg-sim"), "structure", "--mass", files + "/M.mtx",
+               "--stiffness", files + "/K.mtx", "--rayleigh", rayleigh, "--contacts",
+               files + "/J.mtx", "--mun", files + "/mun.txt", "--ground-accel",
+               files + "/ground.txt", "--eps", "0.01", "--integrator", "newmark", "--dt", "0.01",
+               "--t-end", "15"]
+    times = []
+    for _ in range(reps):
+        out = subprocess.run(command, check=True, capture_output=True, text=True).stdout
+        times.append(json.loads(out)["cpu_seconds"])
+    return times
 
 
 def python_seconds(task, reps):
@@ -61,17 +99,20 @@ def python_seconds(task, reps):
 
 
 def main():
-    baseline = sys.argv[1]
+    build = sys.argv[1]
     rounds = int(sys.argv[2]) if len(sys.argv) > 2 else 7
-    reps = {"hb": 3, "element": 50}
-    print("task      C median (s)   Python median (s)   ratio   target")
+    reps = {"hb": 3, "element": 50, "structure": 2}
+    files = tempfile.mkdtemp(prefix="fricreg-building.")
+    subprocess.run([os.path.join(build, "examples", "make_building"), files], check=True,
+                   capture_output=True)
+    print("task        C median (s)   Python median (s)   ratio   target")
     for task, target in TARGETS.items():
         c, py = [], []
         for _ in range(rounds):  # alternate, so that the machine's load falls on both
-            c += c_seconds(baseline, task, reps[task])
+            c += c_seconds(build, task, reps[task], files)
             py += python_seconds(task, reps[task])
         ratio = statistics.median(py) / statistics.median(c)
-        print("%-8s  %12.6f   %17.6f   %5.2f   <= %.1f %s" % (
+        print("%-10s  %12.6f   %17.6f   %5.2f   <= %.2f %s" % (
             task, statistics.median(c), statistics.median(py), ratio, target,
             "" if ratio <= target else "(above)"))
 
