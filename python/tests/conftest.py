@@ -1,9 +1,15 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """Shared helpers of the binding's tests: the C library's own single-point calls, which every
-batch of the binding must equal bit for bit."""
-import numpy as np
+batch of the binding must equal bit for bit, and the command line beside the package."""
+import os
 
+import numpy as np
+import pytest
+
+import fricreg
 from fricreg._fricreg import ffi, lib
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 
 
 def c_doubles(values):
@@ -29,3 +35,15 @@ def c_law_eval(code, v, f_eq, mun, eps):
     f = ffi.new("double *")
     status = lib.fricreg_law_eval(code, v, f_eq, mun, eps, f)
     return status, f[0]
+
+
+def fricreg_sim():
+    """fricreg-sim: FRICREG_SIM (ctest sets it), beside the package (build/python/fricreg), or
+    the source tree's build; the test is skipped where there is none."""
+    package = os.path.dirname(os.path.abspath(fricreg.__file__))
+    for path in (os.environ.get("FRICREG_SIM", ""),
+                 os.path.join(package, "..", "..", "fricreg-sim"),
+                 os.path.join(ROOT, "build", "fricreg-sim")):
+        if path and os.access(path, os.X_OK):
+            return path
+    pytest.skip("fricreg-sim not found (set FRICREG_SIM)")

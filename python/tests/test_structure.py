@@ -18,19 +18,10 @@ import pytest
 import fricreg
 from fricreg import structure_result
 from fricreg._fricreg import ffi, lib
+from conftest import fricreg_sim
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 
-
-def fricreg_sim():
-    """The CLI beside the package (ctest: build/python/fricreg), or the source tree's build."""
-    package = os.path.dirname(os.path.abspath(fricreg.__file__))
-    for path in (os.environ.get("FRICREG_SIM", ""),
-                 os.path.join(package, "..", "..", "fricreg-sim"),
-                 os.path.join(ROOT, "build", "fricreg-sim")):
-        if path and os.access(path, os.X_OK):
-            return path
-    pytest.skip("fricreg-sim not found (set FRICREG_SIM)")
 
 
 # ---- the ten-storey building of examples/building (building_model.h), in numpy ----------------
