@@ -190,7 +190,8 @@ class Element:
         dfdu = np.empty((npoints, self.dim, self.dim)) if tangent else None
         dfdp = np.empty((npoints, self.dim, self.nparams)) if derivatives else None
         state_out = np.empty((npoints, self.nstate))
-        # a zero-size array's buffer is a valid pointer for the C call, which reads nothing
+        # a type without state (spring): the C call wants non-NULL state arrays and reads
+        # none of them, so one double stands in
         state_in = state if state.size else np.zeros(1)
         state_out_c = state_out if state_out.size else np.zeros(1)
         bad = ffi.new("size_t *")
