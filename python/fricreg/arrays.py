@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Arrays handed to the C library: float64, C-contiguous, of the shape a call needs; anything
-else converted (a copy) or refused with a message that names the argument."""
+"""Arguments handed to the C library: arrays as float64, C-contiguous, of the shape a call
+needs, anything else converted (a copy) or refused with a message that names the argument;
+and names chosen from a fixed table (a method, a damping)."""
 import numpy as np
 
 from ._fricreg import ffi
@@ -28,3 +29,11 @@ def pointer(array):
     """A ``double[]`` view of a C-contiguous float64 array for a C call (it keeps the array
     alive while the view is)."""
     return ffi.from_buffer("double[]", array)
+
+
+def choice(table, value, name):
+    """table[value] for an argument that names one of table's keys; ValueError naming the
+    argument and the choices otherwise."""
+    if value not in table:
+        raise ValueError("%s: %r is not one of %s" % (name, value, ", ".join(map(repr, table))))
+    return table[value]

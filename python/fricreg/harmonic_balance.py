@@ -12,7 +12,7 @@ import threading
 import numpy as np
 
 from ._fricreg import ffi, lib
-from .arrays import as_doubles, pointer
+from .arrays import as_doubles, choice, pointer
 from .element import Element
 from .errors import Error, Interrupted, raise_status
 from .hb_results import Backbone, Bifurcation, Crossing, Fold, Response, Solution
@@ -44,13 +44,6 @@ def _stop(exception):
     """Keep the exception for the caller and stop the solve (the monitor's nonzero return)."""
     _calls.exception = exception
     return 1
-
-
-def _choice(table, value, name):
-    """table[value], or ValueError naming the argument and the choices."""
-    if value not in table:
-        raise ValueError("%s: %r is not one of %s" % (name, value, ", ".join(map(repr, table))))
-    return table[value]
 
 
 class HarmonicBalance:
@@ -247,7 +240,7 @@ class HarmonicBalance:
         fricreg.InputError
             Hill's method on a model beyond ndof (2H + 1) = 1024.
         """
-        code = _choice(_STABILITY_METHODS, method, "method")
+        code = choice(_STABILITY_METHODS, method, "method")
         self._check(lib.fricreg_hb_set_stability_method(self._hb, code), "set_stability")
         self._check(lib.fricreg_hb_set_stability(self._hb, int(bool(enable))), "set_stability")
         self._stability = bool(enable)
@@ -484,7 +477,7 @@ class HarmonicBalance:
         fricreg.Interrupted
             Ctrl-C; its result is the Backbone of the points reached.
         """
-        code = _choice(_DAMPING, damping, "damping")
+        code = choice(_DAMPING, damping, "damping")
         solve = lib.fricreg_hb_nma_continue if through_folds else lib.fricreg_hb_nma
         self._run("backbone", lambda: solve(self._hb, int(mode), code, a0, a1, int(npoints)),
                   self._backbone)

@@ -18,7 +18,7 @@ import numpy as np
 
 from . import structure_result
 from ._fricreg import ffi, lib
-from .arrays import as_doubles, pointer
+from .arrays import as_doubles, choice, pointer
 from .element import Element, _type_for
 from .errors import AccuracyWarning, Error, Interrupted, raise_status
 from .laws import _law_code
@@ -64,12 +64,6 @@ def _record(record, name):
     if samples.size < 2:
         raise ValueError("%s: %d samples; a record needs at least 2" % (name, samples.size))
     return float(t0), float(dt_rec), samples
-
-
-def _choice(value, name, table):
-    if value not in table:
-        raise ValueError("%s: %r is not one of %s" % (name, value, ", ".join(table)))
-    return table[value]
 
 
 class Structure:
@@ -207,11 +201,11 @@ class Structure:
                 self._s, 1e-10 if newton_tol is None else float(newton_tol),
                 50 if newton_max_iter is None else int(newton_max_iter)), "newton_tol")
         self._check(lib.fricreg_structure_set_contact_solver(
-            self._s, _choice(contact_solver, "contact_solver", _SOLVERS)), "contact_solver")
+            self._s, choice(_SOLVERS, contact_solver, "contact_solver")), "contact_solver")
         self._check(lib.fricreg_structure_set_error_estimate(
-            self._s, _choice(error_estimate, "error_estimate", _ESTIMATES)), "error_estimate")
+            self._s, choice(_ESTIMATES, error_estimate, "error_estimate")), "error_estimate")
         self._check(lib.fricreg_structure_set_error_companions(
-            self._s, _choice(error_companions, "error_companions", _COMPANIONS)),
+            self._s, choice(_COMPANIONS, error_companions, "error_companions")),
             "error_companions")
         if answer_rtol is not None:
             self._check(lib.fricreg_structure_set_answer_rtol(self._s, float(answer_rtol)),

@@ -401,8 +401,8 @@ def test_inputs_are_never_modified():
     (dict(u0=np.ones(3)), ValueError, r"u0: shape \(3,\)"),
     (dict(v0=np.full(10, np.nan)), fricreg.InputError, "u0, v0: set_initial"),
     (dict(newton_tol=2.0), fricreg.InputError, "newton_tol: set_newton"),
-    (dict(contact_solver="lu"), ValueError, "contact_solver: 'lu' is not one of auto, dense"),
-    (dict(error_estimate=True), ValueError, "error_estimate: True is not one of off, on, one"),
+    (dict(contact_solver="lu"), ValueError, "contact_solver: 'lu' is not one of 'auto', 'dense'"),
+    (dict(error_estimate=True), ValueError, "error_estimate: True is not one of 'off', 'on', 'one'"),
     (dict(error_companions="both"), ValueError, "error_companions: 'both' is not one of"),
     (dict(answer_rtol=0.0), fricreg.InputError, "answer_rtol: set_answer_rtol"),
 ])
