@@ -4,6 +4,7 @@
 # makes that an error. The interpreter is the first of Python3_EXECUTABLE (if given), the one
 # CMake's FindPython3 finds, and Debian's /usr/bin/python3 that imports cffi and numpy: a
 # python3 earlier on PATH (pyenv, a virtualenv) may not see Debian's python3-cffi.
+# It needs FRICREG_DRIVERS (harmonic balance and structures are drivers).
 set(FRICREG_PYTHON AUTO CACHE STRING "Build the Python binding (AUTO, ON or OFF)")
 set_property(CACHE FRICREG_PYTHON PROPERTY STRINGS AUTO ON OFF)
 set(FRICREG_PYTHON_BUILT OFF)
@@ -18,7 +19,14 @@ function(fricreg_python_usable exe result)
   endif()
 endfunction()
 
-if(NOT FRICREG_PYTHON STREQUAL "OFF")
+if(NOT FRICREG_PYTHON STREQUAL "OFF" AND NOT FRICREG_DRIVERS)
+  # the package wraps the drivers' harmonic balance and structures too
+  set(missing "FRICREG_DRIVERS is OFF (the binding wraps harmonic balance and structures)")
+  if(FRICREG_PYTHON STREQUAL "ON")
+    message(FATAL_ERROR "FRICREG_PYTHON=ON, but ${missing}")
+  endif()
+  message(STATUS "Python binding not built: ${missing}")
+elseif(NOT FRICREG_PYTHON STREQUAL "OFF")
   set(missing "")
   if(NOT DEFINED Python3_EXECUTABLE)
     find_package(Python3 3.7 COMPONENTS Interpreter QUIET)
