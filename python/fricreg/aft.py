@@ -30,7 +30,7 @@ from collections import namedtuple
 import numpy as np
 
 from ._fricreg import ffi, lib
-from .arrays import as_doubles, pointer
+from .arrays import as_doubles, as_scalar, pointer
 from .element import Element
 from .errors import raise_status
 
@@ -72,14 +72,6 @@ def _integer(value, name):
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
         raise ValueError("%s: %r is not an integer" % (name, value))
     return int(value)
-
-
-def _scalar(value, name):
-    """value as a Python float (a real number, or a 0-d array of one), or ValueError."""
-    array = np.asarray(value) if not isinstance(value, (str, bytes)) else None
-    if array is None or array.shape != () or array.dtype.kind not in "biuf":
-        raise ValueError("%s: %r is not a real number" % (name, value))
-    return float(array)
 
 
 def _aft_type(element, exact):
@@ -224,7 +216,7 @@ class AFT:
         f = np.empty(self.n)
         jac, jac_c = self._jac(self.n, jacobian)
         call = lib.fricreg_aft_jenkins_exact if exact else lib.fricreg_aft_jenkins_sampled
-        status = call(self._aft, _scalar(kt, "kt"), _scalar(mun, "mun"), self.n, pointer(u),
+        status = call(self._aft, as_scalar(kt, "kt"), as_scalar(mun, "mun"), self.n, pointer(u),
                       pointer(f), jac_c)
         self._check(status, "AFT.jenkins")
         return AFTResult(f, jac)
@@ -324,8 +316,8 @@ class AFT:
         jac, jac_c = self._jac(2 * self.n, jacobian)
         call = (lib.fricreg_aft_jenkins_normal_exact if exact
                 else lib.fricreg_aft_jenkins_normal_sampled)
-        status = call(self._aft, _scalar(kt, "kt"), _scalar(mu, "mu"), _scalar(n0, "n0"),
-                      _scalar(kn, "kn"), self.n, pointer(u), pointer(g), pointer(f),
+        status = call(self._aft, as_scalar(kt, "kt"), as_scalar(mu, "mu"), as_scalar(n0, "n0"),
+                      as_scalar(kn, "kn"), self.n, pointer(u), pointer(g), pointer(f),
                       pointer(nf), jac_c)
         self._check(status, "AFT.jenkins_normal")
         return AFTNormalResult(f, nf, jac)
@@ -371,8 +363,8 @@ class AFT:
         f, nf = np.empty((2, self.n)), np.empty(self.n)
         jac, jac_c = self._jac(3 * self.n, jacobian)
         status = lib.fricreg_aft_jenkins_2d_normal_sampled(
-            self._aft, _scalar(kt, "kt"), _scalar(mu, "mu"), _scalar(n0, "n0"),
-            _scalar(kn, "kn"), self.n, pointer(u), pointer(g), pointer(f), pointer(nf), jac_c)
+            self._aft, as_scalar(kt, "kt"), as_scalar(mu, "mu"), as_scalar(n0, "n0"),
+            as_scalar(kn, "kn"), self.n, pointer(u), pointer(g), pointer(f), pointer(nf), jac_c)
         self._check(status, "AFT.jenkins_2d_normal")
         return AFTNormalResult(f, nf, jac)
 

@@ -25,6 +25,19 @@ def as_doubles(value, name, ndim=None):
     return array
 
 
+def as_scalar(value, name):
+    """value as a Python float; ValueError naming the argument where it is not one real
+    number (an array of another shape, a string, a complex)."""
+    if isinstance(value, (str, bytes)):
+        raise ValueError("%s: %r is not a real number" % (name, value))
+    array = np.asarray(value)
+    if array.shape != ():
+        raise ValueError("%s: shape %s; expected a number" % (name, array.shape))
+    if array.dtype.kind not in "biuf":
+        raise ValueError("%s: %r is not a real number" % (name, value))
+    return float(array)
+
+
 def pointer(array):
     """A ``double[]`` view of a C-contiguous float64 array for a C call (it keeps the array
     alive while the view is)."""

@@ -15,7 +15,7 @@ from collections import namedtuple
 import numpy as np
 
 from ._fricreg import ffi, lib
-from .arrays import as_doubles, pointer
+from .arrays import as_doubles, as_scalar, pointer
 from .errors import raise_status
 from .laws import LAWS, _law_code
 from .matrices import MatrixArgs, is_sparse
@@ -39,13 +39,6 @@ iterations : int
 converged : bool
     Whether max_i |G_i| <= tol (``info[1]``); a step that did not converge raises nothing.
 """
-
-
-def _scalar(value, name):
-    """value as a float; ValueError naming it where it is not one real number."""
-    if np.ndim(value) != 0:
-        raise ValueError("%s: shape %s; expected a number" % (name, np.shape(value)))
-    return float(as_doubles(value, name)[0])
 
 
 class Context:
@@ -171,7 +164,7 @@ class Context:
             ``eps`` below DBL_MIN, NaN or infinite.
         """
         code = _law_code(law)
-        eps = self._eps if eps is None else _scalar(eps, "eps")
+        eps = self._eps if eps is None else as_scalar(eps, "eps")
         self._check(lib.fricreg_ctx_set_law(self._ctx, code, eps), "Context.set_law")
         self._law, self._eps = LAWS[code - 1], eps
 
@@ -202,7 +195,7 @@ class Context:
 
     @mun.setter
     def mun(self, mun):
-        mun = np.full(self.m, _scalar(mun, "mun")) if np.ndim(mun) == 0 \
+        mun = np.full(self.m, as_scalar(mun, "mun")) if np.ndim(mun) == 0 \
             else self._vector(mun, "mun")
         self._check(lib.fricreg_ctx_set_bounds(self._ctx, self.m, pointer(mun)), "Context.mun")
         self._mun = mun.copy()
@@ -533,7 +526,7 @@ class Context:
         info = ffi.new("int[2]")
         self._check(lib.fricreg_ctx_solve_step_matrix(
             self._ctx, self.m, *[pointer(v) for v in vectors], weff.format, w.ptr, w.ind,
-            w.values, weff.ptr, weff.ind, weff.values, _scalar(c, "c"), _scalar(tol, "tol"),
+            w.values, weff.ptr, weff.ind, weff.values, as_scalar(c, "c"), as_scalar(tol, "tol"),
             operator.index(max_iter),
             lib.FRICREG_STEP_PLAIN if plain else 0, pointer(f), info), "Context.solve_step")
         return StepResult(f, int(info[0]), bool(info[1]))

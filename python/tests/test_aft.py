@@ -359,7 +359,7 @@ def test_errors_name_the_argument():
     cases = [
         (lambda: exact.jenkins(1, 1, [0.1, 1.0]), ValueError, r"u: shape \(2,\); expected \(3,\)"),
         (lambda: exact.jenkins("1", 1, u), ValueError, "kt: '1' is not a real number"),
-        (lambda: exact.jenkins(1, [1, 2], u), ValueError, "mun: .* is not a real number"),
+        (lambda: exact.jenkins(1, [1, 2], u), ValueError, r"mun: shape \(2,\); expected a number"),
         (lambda: exact.jenkins(0.0, 1, u), fricreg.InputError, "stiffness.*must be > 0"),
         (lambda: exact.jenkins(1, -0.5, u), fricreg.InputError, "bound.*-0.5"),
         (lambda: exact.jenkins(np.nan, 1, u), fricreg.InputError, r"stiffness\[0\] = nan"),
