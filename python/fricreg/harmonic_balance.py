@@ -29,6 +29,10 @@ _DAMPING = {"matrix": lib.FRICREG_HB_NMA_DAMPING_MATRIX,
 _BIFURCATIONS = {lib.FRICREG_HB_TP: "TP", lib.FRICREG_HB_BP: "BP", lib.FRICREG_HB_PD: "PD",
                  lib.FRICREG_HB_NS: "NS"}
 
+# FRICREG_HB_SOLUTION, ((size_t)-1): the index of the last solution (a cast, which cffi's
+# cdef cannot declare as a constant).
+_SOLUTION = ffi.cast("size_t", -1)
+
 # The call in progress on each thread: where the monitor leaves an exception (Ctrl-C).
 _calls = threading.local()
 
@@ -273,7 +277,7 @@ class HarmonicBalance:
                     "displacement")
         if q is None:
             q = self._J @ x
-        stable, mu = self._stability_of(ffi.cast("size_t", -1))
+        stable, mu = self._stability_of(_SOLUTION)
         return Solution(omega, q, x, stable, mu)
 
     def solve(self, omega, guess=None):
