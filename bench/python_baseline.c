@@ -24,7 +24,8 @@ static double cpu_seconds(void)
     return (double)clock() / CLOCKS_PER_SEC;
 }
 
-/* The chain's sweep; returns the points read (0 on failure). */
+/* The chain's sweep, each point read as the binding reads it (Ω, RMS, coefficients,
+ * stability); returns the points read (0 on failure). */
 static size_t chain_sweep(void)
 {
     const double M[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, K[9] = {2, -1, 0, -1, 2, -1, 0, -1, 2};
@@ -45,9 +46,10 @@ static size_t chain_sweep(void)
         fricreg_hb_continue(hb, 0.5, 2.0, 2 * (2 * H + 1), NULL))
         goto done;
     for (size_t k = 0; k < fricreg_hb_points(hb); k++) {
-        double omega, rms[3], mu;
+        double omega, rms[3], mu, x[3 * (2 * H + 1)];
         int stable;
         if (fricreg_hb_point(hb, k, &omega, 3, rms) ||
+            fricreg_hb_point_displacement(hb, k, 3, 2 * H + 1, x) ||
             fricreg_hb_point_stability(hb, k, &stable, &mu))
             goto done;
     }

@@ -56,6 +56,7 @@ module fricreg_hb_m
     procedure :: points => hb_points
     procedure :: point => hb_point
     procedure :: point_level => hb_point_level
+    procedure :: point_displacement => hb_point_displacement
     procedure :: peak => hb_peak
     procedure :: set_stability => hb_set_stability
     procedure :: set_stability_method => hb_set_stability_method
@@ -638,6 +639,24 @@ contains
     if (status == FRICREG_OK) &
       status = self%record(fricreg_hb_point_level(self%ptr, as_size(k - 1), level))
   end function hb_point_level
+
+  !> The displacements' coefficients x(2H+1, ndof) of point k (1 <= k <= points()),
+  !> recomputed from its unknowns, or with k = 0 of the last solution
+  !> (fricreg_hb_point_displacement). Its statuses; FRICREG_EINVAL for k < 0; FRICREG_ESIZE.
+  function hb_point_displacement(self, k, x) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    integer, intent(in) :: k
+    real(c_double), intent(inout), contiguous :: x(:, :)
+    integer(c_int) :: status
+    integer(c_size_t) :: idx
+    status = self%hb_shape('point_displacement', 'x', x, self%nc, self%n)
+    if (status == FRICREG_OK .and. k < 0) status = self%fail(FRICREG_EINVAL, &
+      'point_displacement: k must be >= 0 (0: the last solution)')
+    if (status /= FRICREG_OK) return
+    idx = -1_c_size_t ! FRICREG_HB_SOLUTION, (size_t)-1
+    if (k > 0) idx = as_size(k - 1)
+    status = self%record(fricreg_hb_point_displacement(self%ptr, idx, self%n, self%nc, x))
+  end function hb_point_displacement
 
   !> The largest RMS of dof `dof` (1 <= dof <= ndof) along the last continuation's branch,
   !> located between its points (fricreg_hb_peak): its frequency omega and that RMS.

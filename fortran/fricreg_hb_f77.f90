@@ -54,13 +54,14 @@
 !   FRHBNY(H, I, K, MODE, A, OMEGA, STAT)             _nma_crossing (I, MODE from 1)
 !   FRHBGL(H, OMEGA, L0, L1, NQ, IGUESS, Q0, STAT)    _continue_level (IGUESS = 1: Q0 the guess)
 !   FRHBPL(H, K, LEVEL, STAT)                         _point_level (K from 1)
+!   FRHBPX(H, K, NDOF, NC, X, STAT)                   _point_displacement (K from 1; 0: solution)
 !   FRHBBL(H, I, LEVEL, STAT)                         _bifurcation_level (I from 1)
 !   FRHBMS(H, MONITR, STAT), FRHBMU(H, STAT)          _set_monitor (MONITR below; FRHBMU removes it)
 !   FRHBMI(H, MAXIT, STAT)                            _set_max_iterations (INTEGER*8 MAXIT)
 !   FRHBER(H, CODE, MSG, STAT)                        _errcode, _errmsg
 ! Refused here, before C sees them, with FRICREG_EINVAL: FRHBCR's NDOF or M below 1, a
 ! negative MAXPT, IGUESS other than 0 or 1, and a K or IDOF below 1 (counts that would wrap
-! into size_t or C's 0-based index; FRHBSB's K below 0), FRHBIW's and FRHBIL's NS below 1,
+! into size_t or C's 0-based index; FRHBSB's and FRHBPX's K below 0), FRHBIW's and FRHBIL's NS below 1,
 ! FRHBNM's MODE below 1 or negative NP, FRHBAE's code or NS of no type or ME below 0,
 ! FRHBNQ's I below 1.
 !
@@ -417,6 +418,27 @@ subroutine frhbpl(h, k, level, stat)
   end if
   stat = int(fricreg_hb_point_level(fricreg_handle_to_ptr(h), int(k - 1, c_size_t), level))
 end subroutine frhbpl
+
+!> FRHBPX(H, K, NDOF, NC, X, STAT): the displacements' coefficients X(NC, NDOF) of point K
+!> (1 <= K <= NP), recomputed from its unknowns, or with K = 0 of the last solution (as FRHBXD).
+subroutine frhbpx(h, k, ndof, nc, x, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: k, ndof, nc
+  double precision, intent(inout) :: x(*)
+  integer, intent(out) :: stat
+  integer(c_size_t) :: idx
+  if (k < 0) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  idx = -1_c_size_t ! FRICREG_HB_SOLUTION, (size_t)-1
+  if (k > 0) idx = int(k - 1, c_size_t)
+  stat = int(fricreg_hb_point_displacement(fricreg_handle_to_ptr(h), idx, int(ndof, c_size_t), &
+                                           int(nc, c_size_t), x))
+end subroutine frhbpx
 
 !> FRHBPK(H, IDOF, OMEGA, RMS, STAT): the largest RMS of dof IDOF (1 <= IDOF <= NDOF) along
 !> the last continuation's branch, located between its points, and its frequency OMEGA.

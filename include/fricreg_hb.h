@@ -1120,6 +1120,25 @@ FRICREG_API int fricreg_hb_point(fricreg_hb *hb, size_t k, double *omega, size_t
  *  range. Since 1.7 (FRICREG_1.7). */
 FRICREG_API int fricreg_hb_point_level(fricreg_hb *hb, size_t k, double *level);
 
+/** The displacements' Fourier coefficients of a stored continuation point, or of the last
+ *  solution, from (HB): X_h = D_h^-1 (P_h − J^T F_h(q)) at the point's unknowns q, Ω and
+ *  level, recomputed (one factorization of D_h and one force evaluation); the points keep
+ *  their unknowns only, so a branch's memory does not grow with 2H + 1.
+ *
+ *  k             point index, 0 <= k < fricreg_hb_points(hb), in the order of the branch, or
+ *                FRICREG_HB_SOLUTION for the last solution (then as fricreg_hb_displacement).
+ *  ndof          must equal the driver's degrees of freedom.
+ *  nc            must equal 2H + 1.
+ *  x[ndof nc]    out: dof j's coefficients (x0, a_1, b_1, ..., a_H, b_H) at x[nc j ..
+ *                nc j + 2H], displacement units; their RMS is fricreg_hb_point's rms.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb or x is NULL; FRICREG_ESIZE if ndof or nc is not
+ *  the driver's; FRICREG_EINVAL if k is out of range, the model or elements changed since
+ *  the branch (k = FRICREG_HB_SOLUTION: no solution yet, or the model changed since), or
+ *  called from the monitor; otherwise as fricreg_hb_displacement. Since 1.8 (FRICREG_1.8). */
+FRICREG_API int fricreg_hb_point_displacement(fricreg_hb *hb, size_t k, size_t ndof, size_t nc,
+                                              double x[]);
+
 /** The largest RMS of one dof along the last fricreg_hb_continue's branch, located between the
  *  stored points rather than sampled at them: the stored point of the largest RMS and its two
  *  neighbours bracket it, and Brent's minimization without derivatives (R. P. Brent,

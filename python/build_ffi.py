@@ -31,6 +31,8 @@ def make_builder(**compile_args):
         with open(os.path.join(HERE, "cdef", name), encoding="utf-8") as cdef:
             builder.cdef(cdef.read())
     source = "".join('#include "%s"\n' % h for h in HEADERS)
+    with open(os.path.join(HERE, "callbacks.c"), encoding="utf-8") as callbacks:
+        source += callbacks.read()
     builder.set_source("fricreg._fricreg", source, **compile_args)
     return builder
 

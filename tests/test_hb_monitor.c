@@ -80,7 +80,8 @@ static int monitor(void *user, int64_t iterations, double parameter, double resi
                       fricreg_hb_continue_level(hb, 1.0, 0.0, 1.0, NQ, NULL) == FRICREG_EINVAL &&
                       fricreg_hb_nma(hb, 0, 0, 0.1, 1.0, 3) == FRICREG_EINVAL &&
                       fricreg_hb_peak(hb, 0, &om, &rms[0]) == FRICREG_EINVAL &&
-                      fricreg_hb_displacement(hb, 2, NC, x) == FRICREG_EINVAL;
+                      fricreg_hb_displacement(hb, 2, NC, x) == FRICREG_EINVAL &&
+                      fricreg_hb_point_displacement(hb, 0, 2, NC, x) == FRICREG_EINVAL;
         w->refused += refused;
         /* a getter answers (the points stored so far) */
         size_t k = fricreg_hb_points(hb);

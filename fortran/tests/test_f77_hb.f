@@ -95,6 +95,13 @@ C     C ACCEPTS.
    10 CONTINUE
       CALL CHK(BIG .LE. 1.0D-8, 'FRHBPT RMS', NFAIL)
       CALL CHK(OMEGA .EQ. 3.0D0, 'FRHBPT LAST OMEGA', NFAIL)
+      CALL FRHBPX(IH, NP, 1, 7, X, IST)
+      CALL CHK(IST .EQ. FRICREG_OK .AND.
+     &         ABS(X(2) - 0.5D0 * D / (D * D + C * C)) .LE. 1.0D-8 .AND.
+     &         ABS(X(3) - 0.5D0 * C / (D * D + C * C)) .LE. 1.0D-8,
+     &         'FRHBPX LAST POINT', NFAIL)
+      CALL FRHBPX(IH, -1, 1, 7, X, IST)
+      CALL CHK(IST .EQ. FRICREG_EINVAL, 'FRHBPX K = -1', NFAIL)
       CALL FRHBPK(IH, 1, PW, PR, IST)
       CALL CHK(IST .EQ. FRICREG_OK .AND.
      &         ABS(PW / 1.49984999250D0 - 1.0D0) .LE. 1.0D-8 .AND.

@@ -24,7 +24,7 @@ program test_hb
   type(fricreg_hb_driver) :: hb, chain
   type(c_ptr) :: p
   real(c_double), parameter :: w = 1.2_c_double
-  real(c_double) :: lev, q(7, 1), x(7, 1), d, c, rms(1), omega, big, qc(7, 1), q2(7, 1), bad(5, 1)
+  real(c_double) :: lev, q(7, 1), x(7, 1), d, c, rms(1), omega, big, big2, qc(7, 1), q2(7, 1), bad(5, 1)
   real(c_double) :: M2(2, 2), K2(2, 2), J2(1, 2), Jrow(2), Jn2(1, 2), qn(7, 2), pw, pr
   real(c_double) :: ec(2), ea(2), et(2), eat(2), qn2(7, 2), q3(7, 3), q3c(7, 3), Je2(2, 2)
   type(fricreg_hb_driver) :: sparse
@@ -53,13 +53,22 @@ program test_hb
   call check_status(hb%continue(0.5_c_double, 3.0_c_double), FRICREG_OK, 'continue')
   call check(hb%points() >= 20, 'points')
   big = 0.0_c_double
+  big2 = 0.0_c_double
   do k = 1, hb%points()
     call check_status(hb%point(k, omega, rms), FRICREG_OK, 'point')
     d = 4.5_c_double - 2.0_c_double * omega * omega
     c = 0.06_c_double * omega
     big = max(big, abs(rms(1) * sqrt(2.0_c_double) * sqrt(d * d + c * c) / 0.5_c_double - 1.0_c_double))
+    call check_status(hb%point_displacement(k, x), FRICREG_OK, 'point_displacement')
+    big2 = max(big2, abs(x(2, 1) - 0.5_c_double * d / (d * d + c * c)) * sqrt(d * d + c * c), &
+               abs(x(3, 1) - 0.5_c_double * c / (d * d + c * c)) * sqrt(d * d + c * c))
   end do
   call check(big < 1e-8_c_double, 'RMS along the branch against the closed form')
+  call check(big2 < 1e-8_c_double, 'a_1, b_1 along the branch against the closed form')
+  call check_status(hb%point_displacement(-1, x), FRICREG_EINVAL, 'point_displacement -1')
+  call check_status(hb%point_displacement(0, q2), FRICREG_OK, 'point_displacement 0')
+  call check_status(hb%displacement(x), FRICREG_OK, 'displacement after the branch')
+  call check(all(x == q2), 'point 0 is the last solution')
   call check_status(hb%point(1, omega, rms), FRICREG_OK, 'first point')
   call check_close(omega, 0.5_c_double, 1e-15_c_double, 'the branch starts at omega0')
   call check_status(hb%point(hb%points(), omega, rms), FRICREG_OK, 'last point')

@@ -40,6 +40,7 @@ int fricreg_hb_continue_level(fricreg_hb *hb, double omega, double level0, doubl
 size_t fricreg_hb_points(const fricreg_hb *hb);
 int fricreg_hb_point(fricreg_hb *hb, size_t k, double *omega, size_t ndof, double rms[]);
 int fricreg_hb_point_level(fricreg_hb *hb, size_t k, double *level);
+int fricreg_hb_point_displacement(fricreg_hb *hb, size_t k, size_t ndof, size_t nc, double x[]);
 int fricreg_hb_peak(fricreg_hb *hb, size_t dof, double *omega, double *rms);
 int fricreg_hb_set_stability(fricreg_hb *hb, int enable);
 int fricreg_hb_point_stability(fricreg_hb *hb, size_t k, int *stable, double *mu_max);

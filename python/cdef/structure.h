@@ -3,8 +3,8 @@
  * (python/fricreg/structure.py), fricreg_types.h's estimators and kinds, fricreg_sim.h's
  * integrator names and fricreg.h's warning names (the dense setters for the tests, which compare
  * fricreg_structure_set_matrix with them), in the syntax of cffi's cdef (no macros, no
- * includes; python/build_ffi.py). The observer is a callback into Python (cffi's extern
- * "Python"): it records the time series and stops a run on Ctrl-C. */
+ * includes; python/build_ffi.py). The observer that records the time series and stops a run
+ * on Ctrl-C is the binding's own C (callbacks.h). */
 enum fricreg_error_estimate {
     FRICREG_ESTIMATE_OFF = 0,
     FRICREG_ESTIMATE_TWO_COMPANIONS = 1,
@@ -55,9 +55,6 @@ int fricreg_structure_run(fricreg_structure *s, double dt, double t_end);
 typedef int (*fricreg_structure_observer)(void *user, double t, size_t ndof, const double u[],
                                           const double v[], size_t m, const double f[]);
 int fricreg_structure_set_observer(fricreg_structure *s, fricreg_structure_observer fn, void *user);
-extern "Python" int fricreg_py_structure_observer(void *user, double t, size_t ndof,
-                                                  const double u[], const double v[], size_t m,
-                                                  const double f[]);
 int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, double rtol,
                               double atol, double t_end);
 int fricreg_structure_get_state(const fricreg_structure *s, size_t ndof, double u[], double v[],

@@ -33,14 +33,19 @@ _BIFURCATIONS = {lib.FRICREG_HB_TP: "TP", lib.FRICREG_HB_BP: "BP", lib.FRICREG_H
 # cdef cannot declare as a constant).
 _SOLUTION = ffi.cast("size_t", -1)
 
+# Seconds of wall time between two calls of the monitor into Python (Ctrl-C's latency): each
+# takes the GIL back, at a cost near a small model's Newton step.
+WATCH_INTERVAL = 0.02
+
 # The call in progress on each thread: where the monitor leaves an exception (Ctrl-C).
 _calls = threading.local()
 
 
 @ffi.def_extern(onerror=lambda exception, value, traceback: _stop(value))
 def fricreg_py_hb_monitor(user, iterations, parameter, residual):
-    """Before each Newton step: 0 goes on. A KeyboardInterrupt raised here (Python runs its
-    SIGINT handler when the callback starts) goes to _stop, which stops the call."""
+    """Before a Newton step, once per WATCH_INTERVAL (callbacks.c): 0 goes on. A
+    KeyboardInterrupt raised here (Python runs its SIGINT handler when the callback starts)
+    goes to _stop, which stops the call."""
     return 0
 
 
@@ -126,8 +131,10 @@ class HarmonicBalance:
         for typ, me, J, params in blocks:
             self._check(lib.fricreg_hb_add_elements(self._hb, typ, me, ndof, pointer(J),
                                                     pointer(params)), "HarmonicBalance")
-        self._check(lib.fricreg_hb_set_monitor(self._hb, lib.fricreg_py_hb_monitor, ffi.NULL),
-                    "HarmonicBalance")
+        # the monitor is C (callbacks.c), asking Python about Ctrl-C once per WATCH_INTERVAL
+        self._watch = ffi.new("struct fricreg_py_watch *", {"interval": WATCH_INTERVAL})
+        self._check(lib.fricreg_hb_set_monitor(self._hb, ffi.addressof(lib, "fricreg_py_hb_watch"),
+                                               self._watch), "HarmonicBalance")
         self._stability = False
         if excitation is not None:
             self.set_excitation(*excitation)
@@ -269,12 +276,14 @@ class HarmonicBalance:
         self._check(lib.fricreg_hb_point_stability(self._hb, k, stable, mu), "stability")
         return bool(stable[0]), mu[0]
 
-    def _solution(self, omega, q):
-        """The driver's last solution as a Solution; without q (a branch's last point, whose
-        unknowns the C API does not give), q = J x, the solver's own to Newton's tolerance."""
-        x = np.empty((self.ndof, 2 * self.harmonics + 1))
-        self._check(lib.fricreg_hb_displacement(self._hb, self.ndof, x.shape[1], pointer(x)),
-                    "displacement")
+    def _solution(self, omega, q, x=None):
+        """The driver's last solution as a Solution (x: its coefficients if known); without q
+        (a branch's last point, whose unknowns the C API does not give), q = J x, the
+        solver's own to Newton's tolerance."""
+        if x is None:
+            x = np.empty((self.ndof, 2 * self.harmonics + 1))
+            self._check(lib.fricreg_hb_displacement(self._hb, self.ndof, x.shape[1],
+                                                    pointer(x)), "displacement")
         if q is None:
             q = self._J @ x
         stable, mu = self._stability_of(_SOLUTION)
@@ -318,17 +327,20 @@ class HarmonicBalance:
         n = lib.fricreg_hb_points(self._hb)
         omega, level = np.empty(n), np.empty(n)
         rms = np.empty((n, self.ndof))
+        x = np.empty((n, self.ndof, 2 * self.harmonics + 1))
         stable = np.empty(n, dtype=bool) if self._stability else None
         mu_max = np.empty(n) if self._stability else None
         w, lv = ffi.new("double *"), ffi.new("double *")
         for k in range(n):
             self._check(lib.fricreg_hb_point(self._hb, k, w, self.ndof, pointer(rms[k])), "point")
             self._check(lib.fricreg_hb_point_level(self._hb, k, lv), "point")
+            self._check(lib.fricreg_hb_point_displacement(self._hb, k, self.ndof, x.shape[2],
+                                                          pointer(x[k])), "point")
             omega[k], level[k] = w[0], lv[0]
             if self._stability:
                 stable[k], mu_max[k] = self._stability_of(k)
-        solution = self._solution(omega[-1], None) if n else None  # its q: J x
-        return Response(omega, level, rms, stable, mu_max, self._bifurcations(), solution)
+        solution = self._solution(omega[-1], None, x[-1].copy()) if n else None  # its q: J x
+        return Response(omega, level, rms, x, stable, mu_max, self._bifurcations(), solution)
 
     def _bifurcations(self):
         """The located bifurcations of the stored branch."""

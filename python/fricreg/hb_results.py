@@ -44,7 +44,7 @@ rms : ndarray, shape (ndof,)
     Each dof's RMS there (displacement units).
 """
 
-Response = namedtuple("Response", "omega level rms stable mu_max bifurcations solution")
+Response = namedtuple("Response", "omega level rms x stable mu_max bifurcations solution")
 Response.__doc__ = """A branch of the periodic response (:meth:`HarmonicBalance.frequency_response`,
 :meth:`HarmonicBalance.level_response`), its points in the branch's order.
 
@@ -54,6 +54,9 @@ level : ndarray, shape (npoints,)
     Excitation level λ of each point (1 along a frequency branch).
 rms : ndarray, shape (npoints, ndof)
     Each dof's RMS over a period, sqrt(x0² + Σ_h (a_h² + b_h²)/2) (displacement units).
+x : ndarray, shape (npoints, ndof, 2H + 1)
+    The displacements' Fourier coefficients of each point (``fricreg_hb_point_displacement``:
+    recomputed from the point's unknowns by (HB), one factorization of D_h per point).
 stable : ndarray of bool, shape (npoints,), or None
     Each point's stability; None with stability off.
 mu_max : ndarray, shape (npoints,), or None

@@ -149,7 +149,8 @@ class Structure:
     contact of bound 0 on dof 0, whose force is exactly 0 (``fricreg_structure_create``), as
     ``fricreg-sim structure`` without ``--contacts``; it is not shown. One structure must not
     be used from two threads at once; separate ones may run side by side (cffi releases the
-    GIL during the C calls, and the observer of a run takes it back at each step).
+    GIL during the C calls; a run's observer, in C, takes it back once per 20 ms of wall time,
+    for Ctrl-C).
     """
 
     def __init__(self, M, K, *, damping=None, rayleigh=None, J=None, mun=None, law=None,
@@ -483,13 +484,12 @@ class Structure:
         if every < 1 or every != output_every:
             raise ValueError("output_every: %r must be a whole number >= 1" % (output_every,))
         recorder = structure_result.Recorder(self._output_dofs(output_dofs), self.ndof,
-                                             self.ncontacts, dt, t_end, every)
+                                             self.ncontacts, t, dt, t_end, every)
         recorder.observe_now(self._s)
         structure_result.take_pending()
         interrupt = None
         if code == 0:
-            handle = ffi.new_handle(recorder)
-            lib.fricreg_structure_set_observer(self._s, lib.fricreg_py_structure_observer, handle)
+            lib.fricreg_structure_set_observer(self._s, *recorder.observer())
             try:
                 status = lib.fricreg_structure_run(self._s, dt, t_end)
             finally:

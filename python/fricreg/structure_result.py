@@ -101,41 +101,66 @@ def take_pending():
 
 
 @ffi.def_extern(error=1, onerror=_keep_exception)
-def fricreg_py_structure_observer(user, t, ndof, u, v, m, f):
-    """fricreg_structure_run's observer: record the step's state; an exception stops the run."""
-    ffi.from_handle(user).observe(t, u, v, f)
+def fricreg_py_rows_grow(handle):
+    """The observer's rows are full: twice the room (a MemoryError stops the run)."""
+    ffi.from_handle(handle).grow()
     return 0
 
 
-def _doubles(cdata, n):
-    """A numpy view of n doubles at a C pointer (valid while the pointer is)."""
-    return np.frombuffer(ffi.buffer(cdata, 8 * n), dtype=np.float64)
+@ffi.def_extern(error=1, onerror=_keep_exception)
+def fricreg_py_rows_check(handle):
+    """Python's turn during a run (Recorder.CHECK_INTERVAL): a KeyboardInterrupt raised here
+    (Python runs its SIGINT handler as the callback starts) stops the run."""
+    ffi.from_handle(handle).check()
+    return 0
 
 
 class Recorder:
     """The rows of a run: the first, the last and every K-th step time k dt (the CLI's
-    ``row_due``), u and v at the output dofs, the first m forces."""
+    ``row_due``), u and v at the output dofs, the first m forces, in arrays that double when
+    full. fricreg_structure_run's observer is C (callbacks.c) copying into them, which calls
+    back into Python at most once per CHECK_INTERVAL seconds of wall time."""
 
-    def __init__(self, dofs, ndof, m, dt, t_end, every):
+    CHECK_INTERVAL = 0.02  # s: Ctrl-C's latency, against the cost of taking the GIL back
+
+    def __init__(self, dofs, ndof, m, t0, dt, t_end, every):
         self.dofs, self.ndof, self.m = dofs, ndof, m
-        self.dt, self.t_end, self.every = dt, t_end, every
-        self.times, self.u, self.v, self.f = [], [], [], []
+        self._handle = ffi.new_handle(self)
+        self._dofs = np.ascontiguousarray(dofs, dtype=np.int64)
+        all_dofs = len(dofs) == ndof and bool(np.all(dofs == np.arange(ndof)))
+        self.rows = ffi.new("struct fricreg_py_rows *", {
+            "dt": dt, "t_end": t_end, "interval": self.CHECK_INTERVAL, "every": every,
+            "nout": len(dofs), "m": m, "handle": self._handle,
+            "dofs": ffi.NULL if all_dofs else ffi.from_buffer("int64_t[]", self._dofs)})
+        self._arrays = ()
+        rows = (t_end - t0) / dt / every + 3  # the run's rows, if it ends at t_end
+        self._resize(int(min(rows, 1 << 16)))
 
-    def due(self, t):
-        if self.every <= 1 or not self.times or not t < self.t_end:
-            return True
-        return int(np.floor(t / self.dt + 0.5)) % self.every == 0
+    @property
+    def count(self):
+        return self.rows.count
 
-    def observe(self, t, u, v, f):
-        """The observer's call after a step: a row where one is due."""
-        if self.due(t):
-            self.append(t, u, v, f)
+    def _resize(self, capacity):
+        """Room for capacity rows, the rows so far kept."""
+        k, width = self.rows.count, len(self.dofs)
+        arrays = (np.empty(capacity), np.empty((capacity, width)), np.empty((capacity, width)),
+                  np.empty((capacity, self.m)))
+        for new, old in zip(arrays, self._arrays):
+            new[:k] = old[:k]
+        self._arrays = arrays
+        r = self.rows
+        r.times, r.u, r.v, r.f = (ffi.from_buffer("double[]", a) for a in arrays)
+        r.capacity = capacity
 
-    def append(self, t, u, v, f):
-        self.times.append(t)
-        self.u.append(_doubles(u, self.ndof)[self.dofs])
-        self.v.append(_doubles(v, self.ndof)[self.dofs])
-        self.f.append(_doubles(f, self.m).copy() if self.m else np.zeros(0))
+    def grow(self):
+        self._resize(2 * self.rows.capacity)
+
+    def check(self):
+        """Python's turn during a run: its signal handlers run here."""
+
+    def observer(self):
+        """(fn, user) of fricreg_structure_set_observer."""
+        return ffi.addressof(lib, "fricreg_py_rows_observer"), self.rows
 
     def observe_now(self, s, last=False):
         """A row of the structure's current state: at the start and after each run_ode call
@@ -143,20 +168,22 @@ class Recorder:
         stopped or failed between rows)."""
         t = ffi.new("double *")
         lib.fricreg_structure_get_value(s, lib.FRICREG_SVALUE_TIME, t)
-        if (self.times[-1] != t[0]) if last else self.due(t[0]):
-            u, v = ffi.new("double[]", self.ndof), ffi.new("double[]", self.ndof)
-            f = ffi.new("double[]", max(self.m, 1))
-            lib.fricreg_structure_get_state(s, self.ndof, u, v, ffi.NULL)
-            lib.fricreg_structure_get_forces(s, max(self.m, 1), f)
-            self.append(t[0], u, v, f)
+        r = self.rows
+        due = (self._arrays[0][r.count - 1] != t[0]) if last else lib.fricreg_py_rows_due(r, t[0])
+        if not due:
+            return
+        u, v = ffi.new("double[]", self.ndof), ffi.new("double[]", self.ndof)
+        f = ffi.new("double[]", max(self.m, 1))
+        lib.fricreg_structure_get_state(s, self.ndof, u, v, ffi.NULL)
+        lib.fricreg_structure_get_forces(s, max(self.m, 1), f)
+        if r.count == r.capacity:
+            self.grow()
+        lib.fricreg_py_rows_append(r, t[0], u, v, f)
 
     def arrays(self):
-        """times, u, v, f as arrays of rows (the complete rows: Ctrl-C may have come between
-        two appends of a GSL run's row)."""
-        k = min(len(self.times), len(self.u), len(self.v), len(self.f))
-        shape = lambda rows, width: np.array(rows[:k]).reshape(k, width)
-        return (np.array(self.times[:k]), shape(self.u, len(self.dofs)),
-                shape(self.v, len(self.dofs)), shape(self.f, self.m))
+        """times, u, v, f: the rows recorded (views: the recorder is done with them)."""
+        k = self.rows.count
+        return tuple(a[:k] for a in self._arrays)
 
 
 def _estimate(s, getter, quantity, n):

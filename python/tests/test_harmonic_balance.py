@@ -50,18 +50,20 @@ def c_chain():
 
 
 def c_branch(hb, stability):
-    """omega, rms, stable, mu_max of the C driver's stored branch."""
+    """omega, rms, stable, mu_max and coefficients x of the C driver's stored branch."""
     n = lib.fricreg_hb_points(hb)
     omega, rms, stable, mu = np.empty(n), np.empty((n, 3)), np.empty(n, bool), np.empty(n)
+    x = np.empty((n, 3, NC))
     w, s, m = ffi.new("double *"), ffi.new("int *"), ffi.new("double *")
     for k in range(n):
-        r = ffi.new("double[]", 3)
+        r, xk = ffi.new("double[]", 3), ffi.new("double[]", 3 * NC)
         assert lib.fricreg_hb_point(hb, k, w, 3, r) == 0
-        omega[k], rms[k] = w[0], list(r)
+        assert lib.fricreg_hb_point_displacement(hb, k, 3, NC, xk) == 0
+        omega[k], rms[k], x[k] = w[0], list(r), np.reshape(list(xk), (3, NC))
         if stability:
             assert lib.fricreg_hb_point_stability(hb, k, s, m) == 0
             stable[k], mu[k] = s[0], m[0]
-    return omega, rms, stable, mu
+    return omega, rms, stable, mu, x
 
 
 def test_chain_sweep_with_stability_equals_the_c_library():
@@ -71,9 +73,13 @@ def test_chain_sweep_with_stability_equals_the_c_library():
     c = c_chain()
     assert lib.fricreg_hb_set_stability(c, 1) == 0
     assert lib.fricreg_hb_continue(c, 0.5, 2.0, 2 * NC, ffi.NULL) == 0
-    omega, rms, stable, mu = c_branch(c, True)
+    omega, rms, stable, mu, x = c_branch(c, True)
     assert r.omega.tobytes() == omega.tobytes()
     assert r.rms.tobytes() == rms.tobytes()
+    assert r.x.tobytes() == x.tobytes() and r.solution.x.tobytes() == x[-1].tobytes()
+    # each point's coefficients give its RMS, sqrt(x0² + Σ (a_h² + b_h²)/2)
+    weights = np.r_[1.0, np.full(NC - 1, 0.5)]
+    np.testing.assert_allclose(np.sqrt((r.x ** 2) @ weights), r.rms, rtol=1e-14, atol=0)
     assert np.array_equal(r.stable, stable) and r.mu_max.tobytes() == mu.tobytes()
     assert np.all(r.level == 1.0)
     assert r.solution.omega == 2.0 and r.solution.x.shape == (3, NC)

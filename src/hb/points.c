@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* points.c — the continuation's points: the getters of fricreg_hb.h (fricreg_hb_points,
- * fricreg_hb_point, fricreg_hb_point_level), then the store they read. Each point keeps its Ω
- * and RMS (pts), its unknowns and parameter (qpts: the peak search and the bisections start
- * from them) and its extras (xpts: the bifurcation tests). A file apart from the loop that
- * fills it, since the getters, the bifurcations and the peak search read it too. */
+ * fricreg_hb_point, fricreg_hb_point_level, the coefficients of a point or of the last
+ * solution), then the store they read. Each point keeps its Ω and RMS (pts), its unknowns and
+ * parameter (qpts: its coefficients, the peak search and the bisections start from them) and
+ * its extras (xpts: the bifurcation tests). A file apart from the loop that fills it, since
+ * the getters, the bifurcations and the peak search read it too. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -41,6 +42,70 @@ int fricreg_hb_point_level(fricreg_hb *hb, size_t k, double *level)
         return fr_fail(hb, FRICREG_EINVAL, "point_level: k = %zu, %zu points stored", k, hb->npts);
     *level = hb->branch_level ? hb->qpts[k * hb->qpts_stride + hb->qpts_stride - 1] : 1.0;
     return FRICREG_OK;
+}
+
+/* The last solution (k = FRICREG_HB_SOLUTION) or stored point k: its unknowns q, Ω and
+ * excitation level; FRICREG_EINVAL when there is none or the model changed since. */
+int fr_hb_stored_solution(fricreg_hb *hb, const char *fn, size_t k, const double **q, double *omega,
+                          double *level)
+{
+    if (k == FRICREG_HB_SOLUTION) {
+        if (!hb->have_solution)
+            return fr_fail(hb, FRICREG_EINVAL,
+                           "%s: no solution (none yet, or the model changed since)", fn);
+        *q = hb->qsol;
+        *omega = hb->omega_sol;
+        *level = hb->level_sol;
+        return FRICREG_OK;
+    }
+    if (k >= hb->npts)
+        return fr_fail(hb, FRICREG_EINVAL, "%s: k = %zu, %zu points stored", fn, k, hb->npts);
+    if (!hb->have_branch)
+        return fr_fail(hb, FRICREG_EINVAL, "%s: the model or elements changed since the branch",
+                       fn);
+    *q = hb->qpts + k * hb->qpts_stride;
+    *omega = hb->pts[k * (1 + hb->n)];
+    *level = hb->branch_level ? (*q)[hb->nq] : 1.0;
+    return FRICREG_OK;
+}
+
+/* The coefficients x[n nc] of the last solution or stored point k (fr_hb_stored_solution),
+ * recomputed from its unknowns: later calls move the driver's factors and forces. */
+static int displacement_of(fricreg_hb *hb, const char *fn, size_t k, size_t ndof, size_t nc,
+                           double x[])
+{
+    if (hb == NULL)
+        return FRICREG_ENULL;
+    if (hb->busy)
+        return fr_hb_busy(hb, fn);
+    if (x == NULL)
+        return fr_fail(hb, FRICREG_ENULL, "%s: x is NULL", fn);
+    if (ndof != hb->n || nc != hb->nc)
+        return fr_fail(hb, FRICREG_ESIZE,
+                       "%s: ndof = %zu, nc = %zu, the driver has %zu and 2H + 1 = %zu", fn, ndof,
+                       nc, hb->n, hb->nc);
+    const double *q = NULL;
+    double omega = 0.0, level = 1.0;
+    int status = fr_hb_stored_solution(hb, fn, k, &q, &omega, &level);
+    if (status == FRICREG_OK)
+        status = fr_hb_factor(hb, fn, omega, 0);
+    hb->level = level;
+    if (status == FRICREG_OK)
+        status = fr_hb_residual(hb, fn, q, hb->rw, 0);
+    if (status == FRICREG_OK)
+        fr_hb_recover(hb, x);
+    hb->level = 1.0;
+    return status;
+}
+
+int fricreg_hb_displacement(fricreg_hb *hb, size_t ndof, size_t nc, double x[])
+{
+    return displacement_of(hb, "displacement", FRICREG_HB_SOLUTION, ndof, nc, x);
+}
+
+int fricreg_hb_point_displacement(fricreg_hb *hb, size_t k, size_t ndof, size_t nc, double x[])
+{
+    return displacement_of(hb, "point_displacement", k, ndof, nc, x);
 }
 
 /* Room for `want` points (at most max_points), kept on failure: FRICREG_ENOMEM. The unknowns'

@@ -18,4 +18,9 @@ int fr_hb_points_reserve(fricreg_hb *hb, size_t want);
 int fr_hb_store_point(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, double p, double tw,
                       double det, int hill_done);
 
+/* The last solution (k = FRICREG_HB_SOLUTION) or stored point k: its unknowns q, Ω and
+ * excitation level; FRICREG_EINVAL when there is none or the model changed since. */
+int fr_hb_stored_solution(fricreg_hb *hb, const char *fn, size_t k, const double **q, double *omega,
+                          double *level);
+
 #endif

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* recover.c — the displacements from the elements' forces by (HB) of fricreg_hb.h,
  * X_h = D_h^-1 P_h − (D_h^-1 J^T) F_h, with the solves Y_h of the factored frequency, the RMS
- * per dof, and fricreg_hb_displacement. */
+ * per dof (points.c has the getters of the coefficients). */
 #include <math.h>
 #include <string.h>
 
@@ -69,31 +69,4 @@ void fr_hb_rms_upto(const fricreg_hb *hb, int harmonics, double *rms, double *am
 void fr_hb_rms(const fricreg_hb *hb, double *rms)
 {
     fr_hb_rms_upto(hb, hb->H, rms, NULL);
-}
-
-int fricreg_hb_displacement(fricreg_hb *hb, size_t ndof, size_t nc, double x[])
-{
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    if (hb->busy)
-        return fr_hb_busy(hb, "displacement");
-    if (x == NULL)
-        return fr_fail(hb, FRICREG_ENULL, "displacement: x is NULL");
-    if (ndof != hb->n || nc != hb->nc)
-        return fr_fail(hb, FRICREG_ESIZE,
-                       "displacement: ndof = %zu, nc = %zu, the driver has %zu and 2H + 1 = %zu",
-                       ndof, nc, hb->n, hb->nc);
-    if (!hb->have_solution)
-        return fr_fail(hb, FRICREG_EINVAL,
-                       "displacement: no solution (none yet, or the model changed since)");
-    /* the factors and forces of the solution's frequency: a later failed call may have moved
-     * them */
-    int status = fr_hb_factor(hb, "displacement", hb->omega_sol, 0);
-    hb->level = hb->level_sol; /* a level branch's last point */
-    if (status == FRICREG_OK)
-        status = fr_hb_residual(hb, "displacement", hb->qsol, hb->rw, 0);
-    if (status == FRICREG_OK)
-        fr_hb_recover(hb, x);
-    hb->level = 1.0;
-    return status;
 }

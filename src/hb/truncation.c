@@ -10,7 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "hb_internal.h"
+#include "points.h"
 
 /* The estimate's safety factor on |rms(2H + 1) − rms(H)| (the header's docstring). */
 #define SAFETY 2.0
@@ -21,31 +21,6 @@ static void pad(const fricreg_hb *hb, fricreg_hb *c, const double *q)
     memset(c->qw, 0, c->nq * sizeof(double));
     for (size_t r = 0; r < hb->m; r++)
         memcpy(c->qw + r * c->nc, q + r * hb->nc, hb->nc * sizeof(double));
-}
-
-/* The solution to check: the last one (k = FRICREG_HB_SOLUTION) or stored point k, its q,
- * Ω and excitation level. */
-static int solution(fricreg_hb *hb, const char *fn, size_t k, const double **q, double *omega,
-                    double *level)
-{
-    if (k == FRICREG_HB_SOLUTION) {
-        if (!hb->have_solution)
-            return fr_fail(hb, FRICREG_EINVAL,
-                           "%s: no solution (none yet, or the model changed since)", fn);
-        *q = hb->qsol;
-        *omega = hb->omega_sol;
-        *level = hb->level_sol;
-        return FRICREG_OK;
-    }
-    if (k >= hb->npts)
-        return fr_fail(hb, FRICREG_EINVAL, "%s: k = %zu, %zu points stored", fn, k, hb->npts);
-    if (!hb->have_branch)
-        return fr_fail(hb, FRICREG_EINVAL, "%s: the model or elements changed since the branch",
-                       fn);
-    *q = hb->qpts + k * hb->qpts_stride;
-    *omega = hb->pts[k * (1 + hb->n)];
-    *level = hb->branch_level ? (*q)[hb->nq] : 1.0;
-    return FRICREG_OK;
 }
 
 /* The companion c's solve at omega from q padded: the H solution's RMS and |X_1| into
@@ -86,7 +61,7 @@ int fricreg_hb_truncation_error(fricreg_hb *hb, size_t k, size_t ndof, double rm
                        fn, hb->H, H2, FRICREG_HB_MAX_HARMONICS, (FRICREG_HB_MAX_HARMONICS - 1) / 2);
     const double *q = NULL;
     double omega = 0.0, level = 1.0;
-    int status = solution(hb, fn, k, &q, &omega, &level);
+    int status = fr_hb_stored_solution(hb, fn, k, &q, &omega, &level);
     if (status != FRICREG_OK)
         return status;
     size_t n = hb->n;
