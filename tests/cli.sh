@@ -352,6 +352,9 @@ printf '0 1\n1e-310 1\n2e-310 1\n' >"$d/ag_subnormal_times.txt"
 expect_usage_error '^fricreg-sim: --ground-accel: the default eps, 1 % of the record.s peak ground velocity, is 2e-312' structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_subnormal_times.txt --t-end 1 --integrator newmark --dt 0.01
 printf '# t a_g\n0 2.41\n2.5 2.41\n5 1e-310\n' >"$d/ag_subnormal.txt"
 expect_output '"x": \[-1\.95438123028[34][0-9]*\]' structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_subnormal.txt --eps 1e-6 --t-end 2.1 --integrator newmark --dt 0.01
+# without --integrator: Newmark, the summary naming it, the same numbers bit for bit
+expect_output '"integrator": "newmark"' structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_g.txt --eps 1e-6 --t-end 2.1 --dt 0.01
+expect_same 0 structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_g.txt --eps 1e-6 --t-end 2.1 --dt 0.01 -- structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_g.txt --eps 1e-6 --t-end 2.1 --dt 0.01 --integrator newmark
 # Its energy balance: input m A |u| = 14.9308862850 J, kinetic m (0.886341 T)^2/2 = 5.49122494 J.
 # Newton needs no iteration: the step's start forces (sliding, -mu N) are its solution exactly.
 expect_output '"input": 14\.930886285[0-9]*, "kinetic": 5\.4912249[0-9]*, "strain": 0, "viscous": 0, "friction": 9\.43966134[0-9]*, "residual": -?[0-9.]+e-1[3-9]\}, "newton_iterations": \{"mean": 0, "max": 0\}, "newton_failures": 0' $block --integrator newmark --dt 0.01
@@ -482,6 +485,24 @@ expect_usage_error "^fricreg-sim: --checkpoint-in $tmp/ck.bin: restore: .*alpha"
 expect_usage_error "^fricreg-sim: --t-end: must be after the checkpoint's time 0.5" $ck --integrator newmark --t-end 0.4 --checkpoint-in "$tmp/ck.bin"
 head -c 100 "$tmp/ck.bin" >"$tmp/ck_cut.bin"
 expect_usage_error "^fricreg-sim: --checkpoint-in $tmp/ck_cut.bin: restore: .*truncated" $ck --integrator newmark --t-end 1 --checkpoint-in "$tmp/ck_cut.bin"
+# A --checkpoint-out that cannot be written (a file-size limit of 0, SIGXFSZ ignored so that
+# the write fails with EFBIG; stderr through a pipe, which the limit spares) says why, and
+# leaves the previous checkpoint as it was and no temporary file; a device is never replaced.
+cp "$tmp/ck.bin" "$tmp/ck_before.bin"
+total=$((total + 1))
+msg=$( (trap '' XFSZ; ulimit -f 0; "$sim" $ck --integrator newmark --t-end 0.7 --checkpoint-out "$tmp/ck.bin" 2>&1 >/dev/null); echo "exit $?")
+if ! echo "$msg" | grep -q "^fricreg-sim: --checkpoint-out $tmp/ck.bin: cannot write: File too large$" ||
+   [ "$(echo "$msg" | tail -n 1)" != "exit 2" ] ||
+   ! cmp -s "$tmp/ck.bin" "$tmp/ck_before.bin" || ls "$tmp"/.ck.bin.* >/dev/null 2>&1; then
+    echo "FAIL: a failed --checkpoint-out: $msg; the checkpoint kept: $(cmp "$tmp/ck.bin" "$tmp/ck_before.bin"); left: $(ls -a "$tmp" | grep '^\.ck')"
+    fails=$((fails + 1))
+fi
+total=$((total + 1))
+"$sim" $ck --integrator newmark --t-end 0.5 --checkpoint-out /dev/full >"$tmp/out" 2>"$tmp/err"
+if [ $? -ne 2 ] || [ -s "$tmp/out" ] ||
+   ! grep -q "^fricreg-sim: --checkpoint-out /dev/full: not a regular file: not replaced$" "$tmp/err"; then
+    echo "FAIL: --checkpoint-out /dev/full: $(cat "$tmp/err")"; fails=$((fails + 1))
+fi
 # Iwan elements (--iwan-params: a line k_1 phi_1 ... k_ns phi_ns per element): four equal
 # sliders of 50.0 and 0.0125 N are the slipping Jenkins element of 200.0 and 0.05 N above, to
 # rounding; Segalman's model (--iwan-segalman: F_S K_T chi beta) in one slider with beta = 0 is
@@ -770,7 +791,6 @@ expect_usage_error "^fricreg-sim: --influence $d/R3.mtx: the matrix is 2 x 1, ex
 # Bad options.
 expect_usage_error "--mass" structure $ok
 base="--mass $d/M3.mtx --stiffness $d/K3s.mtx --contacts $d/J3.mtx --mun $d/mun3.txt"
-expect_usage_error "--integrator" structure $base --dt 0.01 --t-end 1
 expect_usage_error "newmark, hht, central, rk2, rk4" structure $base --dt 0.01 --t-end 1 --integrator verlet
 # "central" is the structure's own central differences: listed once, not again as a stepper.
 total=$((total + 1))

@@ -1,7 +1,8 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-3.0-or-later
 # The README's "Layout" table is true: every path it lists exists, and every top-level entry
-# of the repository (tracked files and folders) is listed. Usage: readme_layout.sh ROOT
+# of the repository (tracked files and folders) is listed; and the README names every public
+# header of include/ (X.h.in by the X.h the build makes of it). Usage: readme_layout.sh ROOT
 root=$1
 cd "$root" || exit 1
 listed=$(awk '/^## / {inside = ($0 == "## Layout"); next}
@@ -25,6 +26,12 @@ for entry in $top; do
     *"$nl$entry$nl"*) ;;
     *) echo "FAIL: top-level $entry is not in the README's Layout"; fails=$((fails + 1)) ;;
     esac
+done
+for header in include/*.h include/*.h.in; do
+    checked=$((checked + 1))
+    name=$(basename "$header" .in)
+    grep -q "\`$name\`" README.md ||
+        { echo "FAIL: the README does not name the public header $name"; fails=$((fails + 1)); }
 done
 echo "$((checked - fails)) passed, $fails failed"
 [ $fails -eq 0 ]

@@ -32,13 +32,16 @@
  *     regime.
  *   - the bilinear oscillator's point solve without a guess against warm-started point solves
  *     walked down from 2 rad/s (its response is homogeneous in the forcing: the level's branch
- *     does not reach it, the branch in Omega from a nearby frequency does). */
+ *     does not reach it, the branch in Omega from a nearby frequency does).
+ *   - an undamped pair at its linear resonances (K − Ω² M singular in closed form):
+ *     FRICREG_ESINGULAR before a bound of 10 Newton steps would stop the solve. */
 #include <check.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "fricreg_element.h"
 #include "fricreg_hb.h"
 
 #define H 7
@@ -431,6 +434,33 @@ START_TEST(bad_input)
 }
 END_TEST
 
+/* An undamped pair with a marched jenkins_2d element, solved without a guess at each of its
+ * linear resonances (1 and sqrt(3) rad/s), where D_1 is singular: FRICREG_ESINGULAR before
+ * any Newton step (the routes crept up on the resonance for 4 602 steps and a minute before;
+ * the bound of 10 would have stopped them with FRICREG_EWORK). */
+START_TEST(singular_start_fails_at_once)
+{
+    const double M[4] = {1, 0, 0, 1}, K[4] = {2, -1, -1, 2}, J[4] = {1, 0, 0, 1};
+    const double params[2] = {1.0, 0.5}, pc[2] = {1, 0}, ps[2] = {0, 0};
+    const double resonances[2] = {1.0, sqrt(3.0)};
+    for (int i = 0; i < 2; i++) {
+        fricreg_hb *hb = NULL;
+        double q[2 * NC];
+        ck_assert_int_eq(fricreg_hb_create(2, 1, H, &hb), FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_set_mass(hb, 2, M), FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 2, K), FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_add_elements(hb, fricreg_element_lookup("jenkins_2d"), 1, 2, J,
+                                                 params),
+                         FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_set_excitation(hb, 2, pc, ps), FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_set_max_iterations(hb, 10), FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_solve(hb, resonances[i], 2 * NC, NULL, q), FRICREG_ESINGULAR);
+        ck_assert_ptr_nonnull(strstr(fricreg_hb_errmsg(hb), "singular"));
+        fricreg_hb_free(hb);
+    }
+}
+END_TEST
+
 static Suite *suite(void)
 {
     Suite *s = suite_create("hb_level");
@@ -443,6 +473,7 @@ static Suite *suite(void)
     tcase_add_test(tc, unstable_start_takes_the_stable_branch);
     tcase_add_test(tc, homogeneous_response_from_a_nearby_frequency);
     tcase_add_test(tc, bad_input);
+    tcase_add_test(tc, singular_start_fails_at_once);
     suite_add_tcase(s, tc);
     return s;
 }

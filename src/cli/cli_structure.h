@@ -8,7 +8,7 @@
 #include "element_sets.h"
 #include "jenkins_input.h"
 
-enum scheme { SCHEME_NONE, SCHEME_NEWMARK, SCHEME_HHT, SCHEME_CENTRAL, SCHEME_GSL };
+enum scheme { SCHEME_NEWMARK, SCHEME_HHT, SCHEME_CENTRAL, SCHEME_GSL };
 
 struct structure_options {
     const char *mass, *stiffness, *damping, *contacts, *mun, *influence, *ground;

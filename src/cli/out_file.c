@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* out_file.c — reproduce's output files, written without losing the user's (out_file.h). */
+/* out_file.c — output files written without losing the user's (out_file.h): reproduce's, and
+ * one file replaced whole (the structure's checkpoint). */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <stdlib.h>
@@ -122,4 +123,52 @@ int cli_out_write_manifest(const char *dir, const char *const names[], size_t n)
     for (size_t k = 0; k < n; k++)
         fprintf(o.f, "%s\n", names[k]);
     return cli_out_commit(&o);
+}
+
+/* A temporary file beside path, in tmp (of CLI_OUT_PATH bytes), open for writing with the mode
+ * fopen would give; NULL with errno set. */
+static FILE *open_beside(const char *path, char *tmp)
+{
+    const char *slash = strrchr(path, '/');
+    int n = slash != NULL ? snprintf(tmp, CLI_OUT_PATH, "%.*s/.%s.XXXXXX", (int)(slash - path),
+                                     path, slash + 1)
+                          : snprintf(tmp, CLI_OUT_PATH, ".%s.XXXXXX", path);
+    if (n < 0 || n >= CLI_OUT_PATH) {
+        errno = ENAMETOOLONG;
+        return NULL;
+    }
+    int fd = mkstemp(tmp);
+    if (fd < 0)
+        return NULL;
+    mode_t mask = umask(0);
+    umask(mask);
+    fchmod(fd, 0666 & ~mask);
+    FILE *f = fdopen(fd, "wb");
+    if (f == NULL) {
+        int saved = errno;
+        close(fd);
+        unlink(tmp);
+        errno = saved;
+    }
+    return f;
+}
+
+int cli_replace_file(const char *path, const void *data, size_t len)
+{
+    struct stat st;
+    if (lstat(path, &st) == 0 && !S_ISREG(st.st_mode))
+        return -1;
+    char tmp[CLI_OUT_PATH];
+    FILE *f = open_beside(path, tmp);
+    if (f == NULL)
+        return errno;
+    errno = 0;
+    int failed = fwrite(data, 1, len, f) != len || fflush(f) != 0 || fsync(fileno(f)) != 0;
+    int saved = errno; /* before fclose, which may set it again */
+    failed |= fclose(f) != 0;
+    if (!failed && rename(tmp, path) == 0)
+        return 0;
+    saved = saved ? saved : errno ? errno : EIO;
+    unlink(tmp);
+    return saved;
 }

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* out_file.h — files that `fricreg-sim reproduce` writes into a directory the user names,
- * without ever losing the user's data there.
+ * without ever losing the user's data there; and one file replaced whole
+ * (cli_replace_file).
  *
  * Each file is written under a temporary name made with mkstemp (O_CREAT|O_EXCL: never an
  * existing file, never through a symlink), every write, flush and close is checked, and only
@@ -44,5 +45,11 @@ int cli_out_install(const char *from, const char *dir, const char *name);
 
 /* Writes the manifest: the n names written. Returns 0 or 1 (message printed). */
 int cli_out_write_manifest(const char *dir, const char *const names[], size_t n);
+
+/* Writes data[len] to path through a temporary file beside it, renamed to path once complete:
+ * a failed write (a full disk, a file-size limit) leaves an existing path as it was. Returns 0;
+ * an errno value (the temporary file removed); or -1 if path exists and is not a regular file
+ * (a device, a directory, a symbolic link: not replaced). */
+int cli_replace_file(const char *path, const void *data, size_t len);
 
 #endif

@@ -14,6 +14,7 @@
 #include "cli_structure.h"
 #include "dof_list.h"
 #include "input_line.h"
+#include "out_file.h"
 #include "structure_model.h"
 
 /* --rayleigh A0,A1: two numbers >= 0 (cli_parse_rayleigh). */
@@ -100,8 +101,6 @@ static int check_options(const struct structure_options *o)
     if (o->output_contacts != NULL && o->output != CLI_TRAJECTORY)
         return cli_usage_error("--output-contacts",
                                "only --output trajectory writes force columns");
-    if (o->scheme == SCHEME_NONE)
-        return cli_usage_error("--integrator", "missing (newmark, hht, central or a GSL stepper)");
     if (o->dt == 0.0)
         return cli_usage_error("--dt", "missing");
     if (o->t_end == 0.0)
@@ -166,6 +165,7 @@ static const struct cli_word contact_solver_words[] = {{"auto", FRICREG_CONTACT_
 static size_t structure_table(struct structure_options *o, struct cli_option table[])
 {
     *o = (struct structure_options){.law = FRICREG_LAW_QUINN,
+                                    .scheme = SCHEME_NEWMARK,
                                     .alpha = -0.05,
                                     .output = CLI_SUMMARY,
                                     .max_steps = -1,
@@ -209,7 +209,8 @@ static size_t structure_table(struct structure_options *o, struct cli_option tab
         {"--integrator", CLI_CUSTOM, .slot = o, .parse = parse_integrator,
          .meta = integrator_meta(),
          .help = "newmark (average acceleration), hht (HHT-alpha, --alpha), central (explicit "
-                 "central difference), or a GSL stepper (required)"},
+                 "central difference), or a GSL stepper",
+         .dflt = "newmark"},
         {"--law", CLI_NAME, .slot = &o->law, .names = &cli_law_names, .given = &o->law_given,
          .help = "the contacts' friction law"},
         {"--output", CLI_CHOICE, .slot = &o->output, .words = cli_output_words,
@@ -251,7 +252,8 @@ static size_t structure_table(struct structure_options *o, struct cli_option tab
                  "from its time to --t-end",
          .dflt = "none: from t = 0"},
         {"--checkpoint-out", CLI_FILE, .slot = &o->checkpoint_out, .meta = "FILE",
-         .help = "save the run's state at --t-end into FILE (this build and machine only)",
+         .help = "save the run's state at --t-end into FILE (this build and machine only); an "
+                 "existing FILE is replaced, once the new one is complete",
          .dflt = "none"},
         {"--error-estimate", CLI_CHOICE, .slot = &o->error_estimate, .words = cli_estimator_words,
          .help = "companion runs at eps/2 and eps/4 add an error estimate to the summary "
@@ -263,7 +265,9 @@ static size_t structure_table(struct structure_options *o, struct cli_option tab
                  "6x, bounding the error less often; not with GSL's fixed steps)"},
         {"--contact-solver", CLI_CHOICE, .slot = &o->contact_solver, .words = contact_solver_words,
          .help = "newmark and hht: the near-stick block's solver, dense (a factor of the block "
-                 "of J K_eff^-1 J^T) or sparse (one of K_eff + J^T T J); auto: dense for now"},
+                 "of J K_eff^-1 J^T) or sparse (one of K_eff + J^T T J); auto takes the dense "
+                 "path, the faster on every case measured but one (docs/benchmark.md)",
+         .dflt = "auto"},
         {"--answer-rtol", CLI_POSITIVE, .slot = &o->answer_rtol, .meta = "X",
          .help = "warn (error_estimate) where the largest peak's estimate exceeds X times the "
                  "largest peak, or the dissipations' summed estimate X times their sum, "
@@ -513,7 +517,7 @@ static void structure_warnings(fricreg_structure *s, struct cli_warnings *w)
 
 static const char *scheme_name(const struct structure_options *o)
 {
-    static const char *const names[] = {"", "newmark", "hht", "central"};
+    static const char *const names[] = {"newmark", "hht", "central"};
     return o->scheme == SCHEME_GSL ? fricreg_integrator_name(o->integrator) : names[o->scheme];
 }
 
@@ -818,8 +822,8 @@ static int checkpoint_in(fricreg_structure *s, const struct structure_options *o
     return 0;
 }
 
-/* --checkpoint-out: the state at the run's end into the file. 0, or a message naming it and
- * exit 2. */
+/* --checkpoint-out: the state at the run's end into the file, replaced only once the new one
+ * is complete (cli_replace_file). 0, or a message naming it and exit 2. */
 static int checkpoint_out(fricreg_structure *s, const char *path)
 {
     size_t len = 0;
@@ -833,12 +837,13 @@ static int checkpoint_out(fricreg_structure *s, const char *path)
         free(buf);
         return cli_file_error("--checkpoint-out", path, 0, "%s", fricreg_structure_errmsg(s));
     }
-    FILE *f = fopen(path, "wb");
-    int ok = f != NULL && fwrite(buf, 1, len, f) == len;
-    int err = errno;
-    ok = f != NULL && fclose(f) == 0 && ok;
+    int err = cli_replace_file(path, buf, len);
     free(buf);
-    return ok ? 0 : cli_file_error("--checkpoint-out", path, 0, "cannot write: %s", strerror(err));
+    if (err < 0)
+        return cli_file_error("--checkpoint-out", path, 0, "not a regular file: not replaced");
+    return err == 0
+               ? 0
+               : cli_file_error("--checkpoint-out", path, 0, "cannot write: %s", strerror(err));
 }
 
 /* The dofs and contacts the output shows (--output-dofs, --output-contacts) into run, their
@@ -970,7 +975,7 @@ const struct cli_command cli_structure_command = {
     "structure",
     "--mass M.mtx --stiffness K.mtx [--damping C.mtx | --rayleigh A0,A1] [--contacts J.mtx "
     "--mun MUN.txt] [--ground-accel FILE] [--load P.mtx [--load-history FILE]] [ELEMENTS] "
-    "--integrator I --dt STEP --t-end T [OPTION]...",
+    "--dt STEP --t-end T [--integrator I] [OPTION]...",
     "a structure from Matrix Market files: contacts, joint elements",
     "A linear structure M u'' + C u' + K u = P g(t) - M r a_g(t) + J^T f with friction contacts "
     "(fricreg_structure.h; none without --contacts: plain linear dynamics), an external load "
@@ -979,9 +984,8 @@ const struct cli_command cli_structure_command = {
     "--jenkins J.mtx with --jenkins-params, --iwan-params or --iwan-segalman, or --normal "
     "with --normal-params; --jenkins-2d J2.mtx with --jenkins-params, or with --normal and "
     "--normal-params for 3-D contact elements; or --elements TYPE:J.mtx:P.txt, repeatable, sets "
-    "of the kernel's types mixed in one structure), run with Newmark, HHT-alpha, central "
-    "differences "
-    "or a GSL stepper; "
+    "of the kernel's types mixed in one structure), run with Newmark (the default), HHT-alpha, "
+    "central differences or a GSL stepper; "
     "a JSON summary with the energy balance, or a CSV row per step (--output-dofs, "
     "--output-contacts and --output-every select the columns and the rows; "
     "docs/structural.md).",

@@ -117,13 +117,18 @@ static int kept_unstable(const fricreg_hb *hb)
  * another branch at omega than the one the others and a sweep follow (a closed branch,
  * unstable there, that a continuation would go round), so an unstable solution is held (the
  * first, in q_held) while the later routes are tried; none stable: the held one, solved once
- * more to be kept. On failure of all, the plain guesses' error. */
+ * more to be kept. On failure of all, the plain guesses' error. A singular D_h at omega fails
+ * first. */
 int fr_hb_default_start(fricreg_hb *hb, const char *fn, double omega)
 {
     size_t nq = hb->nq;
     double *q_held = NULL;
     struct fr_error plain = hb->err;
-    int status = FRICREG_EWORK, plain_status = FRICREG_EWORK;
+    /* every route ends in a solve at omega: a singular D_h there fails now, not after a
+     * frequency route has crept up on an undamped resonance */
+    int status = fr_hb_factor(hb, fn, omega, 0), plain_status = FRICREG_EWORK;
+    if (status == FRICREG_ESINGULAR || status == FRICREG_ENONFINITE)
+        return status;
     for (size_t r = 0; r < START_ROUTE_COUNT; r++) {
         status = START_ROUTES[r](hb, fn, omega);
         if (status == FRICREG_ENOMEM || hb->stopped)
