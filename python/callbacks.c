@@ -78,7 +78,7 @@ static int fricreg_py_rows_append(struct fricreg_py_rows *r, double t, const dou
         return 1;
     size_t k = r->count, n = r->nout;
     r->times[k] = t;
-    if (r->dofs == NULL) {
+    if (r->dofs == NULL && n > 0) {
         memcpy(r->u + k * n, u, n * sizeof(double));
         memcpy(r->v + k * n, v, n * sizeof(double));
     } else {
@@ -87,7 +87,8 @@ static int fricreg_py_rows_append(struct fricreg_py_rows *r, double t, const dou
             r->v[k * n + j] = v[r->dofs[j]];
         }
     }
-    memcpy(r->f + k * r->m, f, r->m * sizeof(double));
+    if (r->m > 0) /* none: f's array may have no storage */
+        memcpy(r->f + k * r->m, f, r->m * sizeof(double));
     r->count = k + 1;
     return 0;
 }
