@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* aft.c — fricreg-bench-aft: the exact AFT of a Jenkins element against the sampled one
- * (fricreg_aft.h, docs/joints.md section AFT).
+ * (fricreg_aft.h, docs/aft.md).
  *
  * Error: the largest |f_sampled[j] − f_exact[j]|/mun over the coefficients, the envelope over
  * eight phases ψ of u = 0.1 + 1.3 cos(θ − ψ) + 0.25 cos(3θ − 2ψ) (H = 3; kt = 2.385,

@@ -11,7 +11,7 @@ module fricreg_aft_m
   private
   public :: fricreg_aft_workspace
 
-  !> The AFT of 1-D Jenkins and Iwan elements (fricreg_aft.h, docs/joints.md): from the
+  !> The AFT of 1-D Jenkins and Iwan elements (fricreg_aft.h, docs/aft.md): from the
   !> Fourier coefficients u(2H+1) = (u0, a_1, b_1, ..., a_H, b_H) of a periodic displacement,
   !> those of the stabilized hysteresis force, f(2H+1), and their Jacobian in Fortran's order,
   !> jac(i, j) = d f(i) / d u(j), exact or sampled at N points.

@@ -15,7 +15,7 @@ module fricreg_hb_m
   private
   public :: fricreg_hb_driver
 
-  !> Harmonic balance of a structure with 1-D Jenkins elements (fricreg_hb.h, docs/joints.md):
+  !> Harmonic balance of a structure with 1-D Jenkins elements (fricreg_hb.h, docs/harmonic_balance.md):
   !> M, C, K (ndof, ndof) symmetric, J(m, ndof) in Fortran's order, the elements' coordinates'
   !> coefficients q(2H+1, m) (column i element i: q0, a_1, b_1, ..., a_H, b_H) and the
   !> displacements' x(2H+1, ndof); continuation points counted from 1.

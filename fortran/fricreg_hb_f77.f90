@@ -1,6 +1,6 @@
 ! SPDX-License-Identifier: GPL-3.0-or-later
 ! fricreg_hb_f77.f90 — module-free entry points for Fortran 77 callers: harmonic balance of a
-! linear structure with 1-D Jenkins elements (fricreg_hb.h; docs/joints.md), the
+! linear structure with 1-D Jenkins elements (fricreg_hb.h; docs/harmonic_balance.md), the
 ! frequency-domain side of a legacy joint code. Built with the drivers, like
 ! fricreg_structure_f77.f90, whose conventions it shares: external subroutines, every argument
 ! by reference, INTEGER*8 handle H (0: none), INTEGER STAT last (the C status, FRICREG_OK = 0),

@@ -1,7 +1,7 @@
 ! SPDX-License-Identifier: GPL-3.0-or-later
 ! fricreg_joints_f77.f90 — module-free entry points for Fortran 77 callers: joints, the Jenkins
 ! and Iwan elements with trial/commit and normal load (fricreg_jenkins.h, fricreg_iwan.h), and
-! the AFT of the 1-D elements for harmonic balance (fricreg_aft.h); docs/joints.md.
+! the AFT of the 1-D elements for harmonic balance (fricreg_aft.h); docs/joints.md, docs/aft.md.
 ! Conventions of fricreg_f77.f90: external subroutines, every argument by reference, INTEGER*8
 ! handle H (0: none), INTEGER STAT last (the C status, FRICREG_OK = 0), DOUBLE PRECISION reals,
 ! nothing changed on failure; counts are checked by the C library against the object

@@ -5,7 +5,7 @@
  * elements: from the Fourier coefficients of a periodic relative displacement, the Fourier
  * coefficients of the element force of the stabilized (periodic) hysteresis and their
  * Jacobian, for harmonic balance. Beyond the paper: the frequency-domain side of "joints"
- * (docs/joints.md, section AFT). AFT after M. Krack and J. Gross, "Harmonic Balance for
+ * (docs/aft.md). AFT after M. Krack and J. Gross, "Harmonic Balance for
  * Nonlinear Vibration Problems", Springer 2019, Sec. 3.3 (their NLvib's elasticDryFriction,
  * the Jenkins element, is sampled and marched over two periods).
  *
@@ -56,7 +56,7 @@
  *     stabilized state at the sampled maximum (the state a march of any number of periods
  *     reaches there, so the march is already periodic), and the coefficients by GSL's real
  *     radix-2 FFT. Its error comes from the kinks of f (a stick–slip switch inside a sampling
- *     interval): O(N^-2) for the coefficients (docs/joints.md measures it). The Jacobian is the
+ *     interval): O(N^-2) for the coefficients (docs/aft.md measures it). The Jacobian is the
  *     chain rule through the sampled return mapping (tangent kt in a stick, 0 in a slip) and
  *     the DFT. The sampled path is the one to extend to laws without a closed form (a
  *     velocity-only law of fricreg.h needs only f(u'(θ)) at the samples); here it serves the
@@ -88,7 +88,7 @@ extern "C" {
  *  An opaque workspace for the AFT of the 1-D Jenkins and Iwan elements: the Fourier
  *  coefficients of the stabilized hysteresis force and their Jacobian, exactly (switch points
  *  as roots of trigonometric polynomials, pieces integrated in closed form) or sampled (the
- *  return mapping at N points and GSL's FFT), docs/joints.md.
+ *  return mapping at N points and GSL's FFT), docs/aft.md.
  *  \{ */
 
 /** Opaque AFT workspace for H harmonics and N samples: every buffer of both paths, the last
@@ -96,7 +96,7 @@ extern "C" {
 typedef struct fricreg_aft fricreg_aft;
 
 /** Largest number of harmonics H of fricreg_aft_create: as far as the exact path is tested
- *  against the sampled one (docs/joints.md); its polynomial in t = tan(θ/2) has binomial
+ *  against the sampled one (docs/aft.md); its polynomial in t = tan(θ/2) has binomial
  *  coefficients up to C(2H, H). */
 #define FRICREG_AFT_MAX_HARMONICS 40
 

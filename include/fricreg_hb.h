@@ -4,7 +4,7 @@
  * fricreg_hb.h — harmonic balance (HB) for the periodic steady state of a linear structure with
  * 1-D Jenkins or Iwan elements (fricreg_hb_set_iwan) under harmonic excitation, at one frequency
  * or along a branch in the excitation frequency by pseudo-arclength continuation. Beyond the
- * paper: the frequency-domain driver of "joints" (docs/joints.md, section Harmonic balance), on
+ * paper: the frequency-domain driver of "joints" (docs/harmonic_balance.md), on
  * the exact AFT of fricreg_aft.h. After M. Krack and J. Gross, "Harmonic Balance for Nonlinear Vibration
  * Problems", Springer 2019 (Ch. 2 the method, Ch. 4 the condensation on the nonlinear
  * coordinates, Ch. 5 the continuation).
@@ -67,7 +67,7 @@
  * done, so one factor, O(nnz(L + U)), lives at a time. Y_h of
  * every harmonic, (H + 1) ndof (m + 1) complex numbers, is kept (the displacements need no
  * factor). Its cost follows the factors' fill, O(H ndof) on a banded model (measured:
- * docs/joints.md). The solves' forward error grows with the condition of D_h (on a rod of
+ * docs/harmonic_balance.md). The solves' forward error grows with the condition of D_h (on a rod of
  * ndof elements as ndof²: about 3e-8 of q at 10^4 dofs): Newton's tolerance must lie above it
  * for a continuation to converge (fricreg_hb_set_newton: 1e-7 there).
  *
@@ -94,7 +94,7 @@ extern "C" {
  *  An opaque harmonic-balance driver: a linear structure M, C, K with m 1-D Jenkins elements
  *  on rows of J, excited at the fundamental, solved for H harmonics at one frequency or along
  *  a frequency branch by pseudo-arclength continuation, condensed on the elements'
- *  coordinates (docs/joints.md).
+ *  coordinates (docs/harmonic_balance.md).
  *  \{ */
 
 /** Opaque harmonic-balance driver: the model, the excitation, the solver settings, the

@@ -279,7 +279,7 @@ static double long_chain_contraction(double omega)
 /* (c) The 60-dof chain at Ω = 0.1 (H = 3): the monodromy's largest multiplier 0.921, and the
  * time domain's transient contracts by 0.913 a period (measured) to a periodic steady state:
  * stable, the rate within 3e-2 of the multiplier. (Hill's method says 7.14 there, unstable:
- * its exponents' selection is not reliable for the chain's higher modes at H = 3; docs/joints.md.) */
+ * its exponents' selection is not reliable for the chain's higher modes at H = 3; docs/stability.md.) */
 START_TEST(long_chain_against_time_domain)
 {
     double mu = long_chain_hb(0.1), rate = long_chain_contraction(0.1);

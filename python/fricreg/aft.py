@@ -5,7 +5,7 @@ coefficients of the element force over its stabilized (periodic) hysteresis and 
 Jacobian, for a harmonic-balance solver; exactly (switch points as roots of trigonometric
 polynomials, pieces integrated in closed form) or sampled (the return mapping at N points and
 an FFT). AFT after M. Krack and J. Gross, *Harmonic Balance for Nonlinear Vibration Problems*,
-Springer 2019, Sec. 3.3; fricreg's ``docs/joints.md``, section AFT.
+Springer 2019, Sec. 3.3; fricreg's ``docs/aft.md``.
 
 **Coefficient order** (fricreg's, every array of this module unless a function says
 otherwise). A periodic quantity over one period, theta = Omega t in [0, 2 pi),

@@ -520,7 +520,7 @@ const struct cli_command cli_hb_command = {
     "+ ps sin(omega t) with Jenkins, Iwan, lift-off or 3-D contact elements on q = J x, by "
     "harmonic balance (fricreg_hb.h), continued in omega from --omega-start to --omega-end, or "
     "with --continue-in level in the excitation level (the excitation times a factor) from "
-    "--level-start to --level-end at --omega (docs/joints.md).\n\n"
+    "--level-start to --level-end at --omega (docs/harmonic_balance.md).\n\n"
     "ELEMENTS is one parameter file, a line per row of J.mtx: --jenkins-params, --iwan-params "
     "or --iwan-segalman, or --normal with --normal-params (lift-off); or --jenkins-2d J2.mtx "
     "instead of --jenkins with --normal and --normal-params (3-D contact: rows x, y of J2.mtx "

@@ -334,7 +334,8 @@ void cli_print_man(FILE *out)
     roff(out, FRICREG_DOCDIR "/docs");
     fputs(
         "\nthe documentation: integrators.md (choosing an integrator and eps),\n"
-        "structural.md (\\fBstructure\\fR), joints.md (\\fBhb\\fR), laws2d.md (\\fBhold\\fR,\n"
+        "structural.md (\\fBstructure\\fR), joints.md (the elements), harmonic_balance.md\n"
+        "(\\fBhb\\fR), nonlinear_modes.md (\\fBnma\\fR), laws2d.md (\\fBhold\\fR,\n"
         "\\fBbelt\\fR, \\fBdisk\\fR), reproduction.md (\\fBreproduce\\fR), usage.md (the library\n"
         "from C), install.md and the others\n"
         ".SH SEE ALSO\n"
@@ -342,6 +343,7 @@ void cli_print_man(FILE *out)
         ".IR integrators.md ,\n"
         ".IR structural.md ,\n"
         ".IR joints.md ,\n"
+        ".IR harmonic_balance.md ,\n"
         ".I laws2d.md\n"
         "in the documentation folder above.\n",
         out);

@@ -266,7 +266,7 @@ const struct cli_command cli_nma_command = {
     "The backbone of mode K of a linear structure M x'' + C x' + K x + J^T f(q) = 0 with "
     "Jenkins, Iwan or lift-off elements on q = J x: its natural frequency omega and damping "
     "ratio zeta against its modal amplitude, by harmonic balance and the extended periodic "
-    "motion concept (fricreg_hb_nma_continue, fricreg_hb.h; docs/joints.md, Nonlinear modes), "
+    "motion concept (fricreg_hb_nma_continue, fricreg_hb.h; docs/nonlinear_modes.md), "
     "from the linear mode with the elements stuck, followed from --amplitude-start to "
     "--amplitude-end by pseudo-arclength continuation: it passes the folds of the backbone in "
     "the amplitude (internal resonances), which the summary lists (\"folds\"), and writes "

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* reproduce_beyond.c — the part of `fricreg-sim reproduce` beyond the paper: the reference
  * problems (src/problems/, docs/laws2d.md) and a frequency response by harmonic balance
- * (docs/joints.md), one CSV each beside the paper's figures, and their rows in the table.
+ * (docs/harmonic_balance.md), one CSV each beside the paper's figures, and their rows in the table.
  * Small runs: a few seconds in all. */
 #include <math.h>
 #include <stdlib.h>
