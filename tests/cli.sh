@@ -446,7 +446,7 @@ expect_output '"x": \[-1\.95438123028[34][0-9]*\].*"dissipation_per_contact": \[
 # the slipping element's dissipation carries its error estimate (the companions at dt/2, dt/4)
 expect_output '"dissipation_per_contact": \[9\.[0-9]+\],.*"njenkins": 1, "dissipation_per_jenkins": \[0\.09[0-9]+\], "dissipation_per_jenkins_error_estimate": \[[0-9.]+e-[0-9]+\].*"residual": -?[0-9.]+e-(1[3-9]|[2-9][0-9])' $block --jenkins $d/J1.mtx --jenkins-params $d/P_slip.txt --integrator newmark --dt 0.01
 echo "-1 0.05" >"$d/P_bad.txt"
-expect_usage_error "^fricreg-sim: --jenkins-params $d/P_bad.txt: .*kt > 0" $jk --jenkins-params $d/P_bad.txt --integrator newmark
+expect_usage_error "^fricreg-sim: --jenkins-params $d/P_bad.txt: .*kt = -1 must be > 0" $jk --jenkins-params $d/P_bad.txt --integrator newmark
 # Checkpoints (--checkpoint-out, --checkpoint-in; fricreg_structure_save/_restore): the run to
 # 0.5 s saved and continued to 1 s in another process is the run to 1 s, byte for byte: its
 # trajectory (the continued run's rows after its first, which repeats the checkpoint's time) and

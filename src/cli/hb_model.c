@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "cli_input.h"
+#include "element_table.h"
 #include "input_line.h"
 #include "hb_model.h"
 
@@ -84,24 +85,7 @@ static int set_square(fricreg_hb *hb, int which, size_t n, const struct cli_spar
     return fricreg_hb_set_matrix(hb, which, n, n, format, A->colptr, A->rowind, A->values);
 }
 
-/* The elements by their kind's setter: a status. */
-static int set_elements(fricreg_hb *hb, size_t n, const struct cli_elements *el)
-{
-    if (el->kind == CLI_ELEMENTS_NORMAL)
-        return fricreg_hb_set_normal_elements(hb, el->m, n, el->J, el->Jn, el->k, el->mu, el->n0,
-                                              el->kn);
-    if (el->kind == CLI_ELEMENTS_IWAN_NORMAL)
-        return fricreg_hb_set_iwan_normal(hb, el->m, n, el->J, el->Jn, el->ns, el->k, el->mu,
-                                          el->n0, el->kn);
-    if (el->kind == CLI_ELEMENTS_IWAN)
-        return fricreg_hb_set_iwan(hb, el->m, n, el->J, el->ns, el->k, el->phi);
-    if (el->kind == CLI_ELEMENTS_CONTACT_3D)
-        return fricreg_hb_set_jenkins_2d_normal(hb, el->m, n, el->J, el->Jn, el->k, el->mu, el->n0,
-                                                el->kn);
-    return fricreg_hb_set_elements(hb, el->m, n, el->J, el->k, el->phi);
-}
-
-/* One --elements set into the driver (cli_element_set_adder): NULL, or the library's reason,
+/* One element set into the driver (cli_element_set_adder): NULL, or the library's reason,
  * which decides the types harmonic balance takes. */
 static const char *add_set(void *model, const struct cli_element_set *e, size_t n)
 {
@@ -143,9 +127,7 @@ int cli_hb_set_model(const struct cli_hb_model_options *o, const struct cli_hb_m
         return cli_usage_error("--rayleigh", fricreg_hb_errmsg(hb));
     if (md->sets.n > 0)
         return cli_add_element_sets(hb, add_set, n, &md->sets);
-    if (set_elements(hb, n, &md->el) != FRICREG_OK)
-        return refused(hb, md->el.option, md->el.path);
-    return 0;
+    return cli_add_elements(hb, add_set, n, &md->el);
 }
 
 size_t cli_hb_rows(const struct cli_hb_model *md)

@@ -9,6 +9,7 @@
 #include "out_file.h"
 
 #include "cli.h"
+#include "fricreg_element.h"
 #include "fricreg_hb.h"
 #include "problems.h"
 
@@ -187,14 +188,15 @@ static int hb_chain(double scale, int curve, struct rows *rows, double *peak, do
 {
     const double M[9] = {1.1, 0, 0, 0, 0.9, 0, 0, 0, 1.25};
     const double K[9] = {5.3, -2.1, 0, -2.1, 3.7, -1.6, 0, -1.6, 1.6};
-    const double J[6] = {0, 0, 1, -1, 1, 0}, kt[2] = {2.5, 1.4}, pc[3] = {0.8, 0, 0};
-    const double ps[3] = {0.25, 0, 0}, mun[2] = {0.3 * scale, 0.12 * scale};
+    const double J[6] = {0, 0, 1, -1, 1, 0}, pc[3] = {0.8, 0, 0}, ps[3] = {0.25, 0, 0};
+    const double params[4] = {2.5, 0.3 * scale, 1.4, 0.12 * scale}; /* kt mun per element */
     fricreg_hb *hb = NULL;
     int status = fricreg_hb_create(3, 2, 7, &hb);
     if (status == FRICREG_OK && (status = fricreg_hb_set_mass(hb, 3, M)) == FRICREG_OK &&
         (status = fricreg_hb_set_stiffness(hb, 3, K)) == FRICREG_OK &&
         (status = fricreg_hb_set_rayleigh(hb, 0.03, 0.01)) == FRICREG_OK &&
-        (status = fricreg_hb_set_elements(hb, 2, 3, J, kt, mun)) == FRICREG_OK &&
+        (status = fricreg_hb_add_elements(hb, fricreg_element_lookup("jenkins"), 2, 3, J,
+                                          params)) == FRICREG_OK &&
         (status = fricreg_hb_set_excitation(hb, 3, pc, ps)) == FRICREG_OK &&
         (status = fricreg_hb_set_continuation(hb, 0.01, 1e-6, 0.02, 2000)) == FRICREG_OK)
         status = fricreg_hb_continue(hb, 0.5, 1.38, 2 * 15, NULL);
@@ -247,8 +249,9 @@ static int hb(const char *dir)
 
 static int hb_gap_pair(fricreg_hb **out)
 {
-    const double M[4] = {1, 0, 0, 1}, K[4] = {140, -20, -20, 180}, J[2] = {0, 1};
-    const double Jn[2] = {-1, 0}, kt = 40.0, mu = 0.01, n0 = -10.0, kn = 500.0;
+    const double M[4] = {1, 0, 0, 1}, K[4] = {140, -20, -20, 180};
+    const double J[4] = {0, 1, -1, 0};                        /* the tangential row, the normal */
+    const double params[5] = {40.0, 0.01, 500.0, -10.0, 0.0}; /* kt mu kn n0 gap */
     const double pc[2] = {2.0, 1.0}, ps[2] = {0.0, 0.0};
     double C[4];
     for (int i = 0; i < 4; i++)
@@ -257,8 +260,8 @@ static int hb_gap_pair(fricreg_hb **out)
     if (status == FRICREG_OK && (status = fricreg_hb_set_mass(*out, 2, M)) == FRICREG_OK &&
         (status = fricreg_hb_set_stiffness(*out, 2, K)) == FRICREG_OK &&
         (status = fricreg_hb_set_damping(*out, 2, C)) == FRICREG_OK &&
-        (status = fricreg_hb_set_normal_elements(*out, 1, 2, J, Jn, &kt, &mu, &n0, &kn)) ==
-            FRICREG_OK &&
+        (status = fricreg_hb_add_elements(*out, fricreg_element_lookup("jenkins_normal"), 1, 2, J,
+                                          params)) == FRICREG_OK &&
         (status = fricreg_hb_set_excitation(*out, 2, pc, ps)) == FRICREG_OK &&
         (status = fricreg_hb_set_stability(*out, 1)) == FRICREG_OK)
         status = fricreg_hb_continue(*out, 11.0, 17.0, 2 * 31, NULL);

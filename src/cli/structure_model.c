@@ -8,6 +8,7 @@
 #include <stdlib.h>
 
 #include "cli_input.h"
+#include "element_table.h"
 #include "input_line.h"
 #include "jenkins_input.h"
 #include "structure_model.h"
@@ -244,7 +245,7 @@ static int set_influence(fricreg_structure *s, const struct structure_options *o
     return status == FRICREG_OK ? 0 : model_error(s, status, "--influence", o->influence, NULL);
 }
 
-/* One --elements set into the structure (cli_element_set_adder): NULL, or its reason. */
+/* One element set into the structure (cli_element_set_adder): NULL, or its reason. */
 static const char *add_set(void *model, const struct cli_element_set *e, size_t n)
 {
     fricreg_structure *s = model;
@@ -253,30 +254,17 @@ static const char *add_set(void *model, const struct cli_element_set *e, size_t 
                : fricreg_structure_errmsg(s);
 }
 
-/* The elements (beside the contacts, whatever their bounds: one step solves both); what the
- * library refuses in them, named by their parameter file. */
+/* The elements (beside the contacts, whatever their bounds: one step solves both) by the
+ * element table; what the library refuses in them, named by their parameter file. A normal law
+ * needs kn > 0 here, as the structure's per-kind setters did (the kernel takes kn = 0). */
 static int set_elements(fricreg_structure *s, const struct structure_input *in)
 {
     const struct cli_elements *el = &in->el;
-    int status;
-    if (el->kind == CLI_ELEMENTS_NORMAL)
-        status = fricreg_structure_set_jenkins_normal(s, el->m, in->n, el->J, el->Jn, el->k, el->mu,
-                                                      el->n0, el->kn);
-    else if (el->kind == CLI_ELEMENTS_CONTACT_3D)
-        status = fricreg_structure_set_jenkins_2d_normal(s, el->m, in->n, el->J, el->Jn, el->k,
-                                                         el->mu, el->n0, el->kn);
-    else if (el->kind == CLI_ELEMENTS_JENKINS_2D)
-        status = fricreg_structure_set_jenkins_2d(s, el->m, in->n, el->J, el->k, el->phi);
-    else if (el->kind == CLI_ELEMENTS_IWAN_NORMAL)
-        status = fricreg_structure_set_iwan_normal(s, el->m, in->n, el->J, el->Jn, el->ns, el->k,
-                                                   el->mu, el->n0, el->kn);
-    else if (el->kind == CLI_ELEMENTS_IWAN)
-        status = fricreg_structure_set_iwan(s, el->m, in->n, el->J, el->ns, el->k, el->phi);
-    else
-        status = fricreg_structure_set_jenkins(s, el->m, in->n, el->J, el->k, el->phi);
-    if (status != FRICREG_OK)
-        return cli_file_error(el->option, el->path, 0, "%s", fricreg_structure_errmsg(s));
-    return 0;
+    for (size_t i = 0; el->kn != NULL && i < el->m; i++)
+        if (!(el->kn[i] > 0.0))
+            return cli_file_error(el->option, el->path, 0, "element %zu needs kn > 0 (kn = %g)", i,
+                                  el->kn[i]);
+    return cli_add_elements(s, add_set, in->n, el);
 }
 
 /* Without --contacts: the library's structure has at least one contact (fricreg_structure.h:
