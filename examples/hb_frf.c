@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* hb_frf.c — harmonic balance (fricreg_hb.h): the steady state of an oscillator with a Jenkins
  * element, m x'' + c x' + k x + f = F cos Ωt, f a spring kt in series with a slider of bound
- * mun, at one frequency and along a resonance by continuation. Build: cc hb_frf.c
+ * mun (the element table's "jenkins" type, fricreg_element.h, added by fricreg_hb_add_elements),
+ * at one frequency and along a resonance by continuation. Build: cc hb_frf.c
  * $(pkg-config --cflags --libs fricreg) or with CMake (fricreg::fricreg). */
 #include <math.h>
 #include <stdio.h>
@@ -21,6 +22,8 @@ static int check(fricreg_hb *hb, int status)
 int main(void)
 {
     const double m = 1.0, c = 0.1, k = 3.0, J = 1.0, kt = 1.0, mun = 1.0;
+    const double params[2] = {kt, mun}; /* the "jenkins" type's parameters: kt, mun */
+    const fricreg_element_type *jenkins = fricreg_element_lookup("jenkins");
     double pc = 0.1, ps = 0.0, q[NC], x[NC];
     fricreg_hb *hb = NULL;
     if (fricreg_hb_create(1, 1, H, &hb) != FRICREG_OK)
@@ -28,7 +31,7 @@ int main(void)
     if (check(hb, fricreg_hb_set_mass(hb, 1, &m)) ||
         check(hb, fricreg_hb_set_stiffness(hb, 1, &k)) ||
         check(hb, fricreg_hb_set_damping(hb, 1, &c)) ||
-        check(hb, fricreg_hb_set_elements(hb, 1, 1, &J, &kt, &mun)) ||
+        check(hb, fricreg_hb_add_elements(hb, jenkins, 1, 1, &J, params)) ||
         check(hb, fricreg_hb_set_excitation(hb, 1, &pc, &ps)))
         return 1;
 
