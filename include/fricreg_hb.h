@@ -1123,7 +1123,8 @@ FRICREG_API int fricreg_hb_point_level(fricreg_hb *hb, size_t k, double *level);
 /** The displacements' Fourier coefficients of a stored continuation point, or of the last
  *  solution, from (HB): X_h = D_h^-1 (P_h − J^T F_h(q)) at the point's unknowns q, Ω and
  *  level, recomputed (one factorization of D_h and one force evaluation); the points keep
- *  their unknowns only, so a branch's memory does not grow with 2H + 1.
+ *  their unknowns only, so a branch's memory does not grow with 2H + 1. Reading changes no
+ *  later result of the driver.
  *
  *  k             point index, 0 <= k < fricreg_hb_points(hb), in the order of the branch, or
  *                FRICREG_HB_SOLUTION for the last solution (then as fricreg_hb_displacement).

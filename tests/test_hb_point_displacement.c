@@ -15,7 +15,9 @@
  *     parameter walk: none of the continuation's machinery), both converged to Newton's 1e-10:
  *     to 1e-8 of the largest coefficient;
  *   - stuck, (HB) is linear: each point of a branch in the level λ is λ times the point solve
- *     at λ = 1, to 1e-10. */
+ *     at λ = 1, to 1e-10;
+ *   - a driver that read every point against one that read none: the same peak and later
+ *     solve, bit for bit. */
 #include <check.h>
 #include <math.h>
 #include <stdlib.h>
@@ -112,6 +114,26 @@ START_TEST(level_branch_stuck)
 }
 END_TEST
 
+/* A getter changes no later result: the located peak and a later solve from the branch's
+ * end, after every point's coefficients were read, equal those of a driver that read none, bit
+ * for bit. */
+START_TEST(reading_changes_no_result)
+{
+    double peak[2][2], q[2][NC], x[NC];
+    for (int read = 0; read < 2; read++) {
+        fricreg_hb *hb = oscillator(0.5);
+        ck_assert_int_eq(fricreg_hb_continue(hb, 1.2, 1.8, NC, NULL), FRICREG_OK);
+        for (size_t k = 0; read && k < fricreg_hb_points(hb); k++)
+            ck_assert_int_eq(fricreg_hb_point_displacement(hb, k, 1, NC, x), FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_peak(hb, 0, &peak[read][0], &peak[read][1]), FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_solve(hb, 1.5, NC, NULL, q[read]), FRICREG_OK);
+        fricreg_hb_free(hb);
+    }
+    ck_assert_mem_eq(peak[0], peak[1], sizeof peak[0]);
+    ck_assert_mem_eq(q[0], q[1], sizeof q[0]);
+}
+END_TEST
+
 static void assert_untouched(const double *x)
 {
     for (int c = 0; c < NC; c++)
@@ -152,6 +174,7 @@ static Suite *suite(void)
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, omega_branch);
     tcase_add_test(tc, level_branch_stuck);
+    tcase_add_test(tc, reading_changes_no_result);
     tcase_add_test(tc, bad_input);
     suite_add_tcase(s, tc);
     return s;
