@@ -51,26 +51,40 @@ int cli_out_may_replace(const char *dir, const char *name)
     return 0;
 }
 
+/* A temporary file beside path, its name in tmp (of CLI_OUT_PATH bytes), open for writing with
+ * the mode fopen would give; NULL with errno set. */
+static FILE *open_beside(const char *path, char *tmp)
+{
+    const char *slash = strrchr(path, '/');
+    int n = slash != NULL ? snprintf(tmp, CLI_OUT_PATH, "%.*s/.%s.XXXXXX", (int)(slash - path),
+                                     path, slash + 1)
+                          : snprintf(tmp, CLI_OUT_PATH, ".%s.XXXXXX", path);
+    if (n < 0 || n >= CLI_OUT_PATH) {
+        errno = ENAMETOOLONG;
+        return NULL;
+    }
+    int fd = mkstemp(tmp);
+    if (fd < 0)
+        return NULL;
+    mode_t mask = umask(0); /* mkstemp makes 0600: give the file the mode fopen would */
+    umask(mask);
+    fchmod(fd, 0666 & ~mask);
+    FILE *f = fdopen(fd, "wb");
+    if (f == NULL) {
+        int saved = errno;
+        close(fd);
+        unlink(tmp);
+        errno = saved;
+    }
+    return f;
+}
+
 int cli_out_open(struct cli_out *o, const char *dir, const char *name)
 {
     *o = (struct cli_out){.dir = dir, .name = name};
     snprintf(o->path, sizeof o->path, "%s/%s", dir, name);
-    snprintf(o->tmp, sizeof o->tmp, "%s/.%s.XXXXXX", dir, name);
-    int fd = mkstemp(o->tmp);
-    if (fd < 0)
-        return io_error("cannot create a temporary file for", o->path);
-    mode_t mask = umask(0); /* mkstemp makes 0600: give the file the mode fopen would */
-    umask(mask);
-    fchmod(fd, 0666 & ~mask);
-    o->f = fdopen(fd, "w");
-    if (o->f == NULL) {
-        int saved = errno;
-        close(fd);
-        unlink(o->tmp);
-        errno = saved;
-        return io_error("cannot open", o->tmp);
-    }
-    return 0;
+    o->f = open_beside(o->path, o->tmp);
+    return o->f == NULL ? io_error("cannot create a temporary file for", o->path) : 0;
 }
 
 void cli_out_discard(struct cli_out *o)
@@ -123,34 +137,6 @@ int cli_out_write_manifest(const char *dir, const char *const names[], size_t n)
     for (size_t k = 0; k < n; k++)
         fprintf(o.f, "%s\n", names[k]);
     return cli_out_commit(&o);
-}
-
-/* A temporary file beside path, in tmp (of CLI_OUT_PATH bytes), open for writing with the mode
- * fopen would give; NULL with errno set. */
-static FILE *open_beside(const char *path, char *tmp)
-{
-    const char *slash = strrchr(path, '/');
-    int n = slash != NULL ? snprintf(tmp, CLI_OUT_PATH, "%.*s/.%s.XXXXXX", (int)(slash - path),
-                                     path, slash + 1)
-                          : snprintf(tmp, CLI_OUT_PATH, ".%s.XXXXXX", path);
-    if (n < 0 || n >= CLI_OUT_PATH) {
-        errno = ENAMETOOLONG;
-        return NULL;
-    }
-    int fd = mkstemp(tmp);
-    if (fd < 0)
-        return NULL;
-    mode_t mask = umask(0);
-    umask(mask);
-    fchmod(fd, 0666 & ~mask);
-    FILE *f = fdopen(fd, "wb");
-    if (f == NULL) {
-        int saved = errno;
-        close(fd);
-        unlink(tmp);
-        errno = saved;
-    }
-    return f;
 }
 
 int cli_replace_file(const char *path, const void *data, size_t len)
