@@ -5,7 +5,7 @@
  * Times (wall-clock medians of repeats): the backbone of mode 0, 100 points from a = 1e-3
  * (every element stuck) to a = 0.4 (slipping: ζ from 0.022 to 0.14; at this tolerance Newton
  * fails near a = 0.42, on 2000 dofs too); a call of 2 stuck points, the linear mode (the
- * subspace iteration on K_0's sparse factor, src/hb/nma_sparse_mode.c) and two Newton solves;
+ * subspace iteration on K_0's sparse factor, src/nma/nma_sparse_mode.c) and two Newton solves;
  * and the baseline measured in the same run, one forced-response point solve (fricreg_hb_solve
  * at 1.3 rad/s from the stuck guess, its H + 1 factors included). Usage:
  * fricreg-bench-nma-sparse [repeats]. */

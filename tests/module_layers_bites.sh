@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # The layering check can fail: on copies of src/ with one arrow run back up (an include, a
 # call), ctx_internal.h included outside src/ctx/, a folder missing from the module table, or
-# a circle of calls inside a folder, or inside hb/ a file unlisted by floor, an include or a
+# a circle of calls inside a folder, or inside forced/ a file unlisted by floor, an include or a
 # call up its floors, it must fail and name the break. Usage: module_layers_bites.sh CHECK SRC_DIR C_COMPILER
 check=$1 src=$2 cc=$3
 work=$(mktemp -d "${TMPDIR:-/tmp}/fricreg-layers-bites.XXXXXX")
@@ -60,29 +60,29 @@ mkdir -p "$objects/base"
     { echo "FAIL: $cc did not compile the probe"; exit 1; }
 expect "a circle inside a folder" "src/base/circle_a.c is on a circle of calls (it calls base/circle_b.c)" "$work/build"
 
-# Inside hb/, whose files src/README.md lists by floor: a file not listed, an include up.
+# Inside forced/, whose files src/README.md lists by floor: a file not listed, an include up.
 fresh
-echo 'int fr_hb_unlisted;' >"$work/src/hb/unlisted.c"
-expect "an hb/ file not listed" "src/hb/unlisted.c is not in src/README.md's table of hb/'s files"
+echo 'int fr_hb_unlisted;' >"$work/src/forced/unlisted.c"
+expect "a forced/ file not listed" "src/forced/unlisted.c is not in src/README.md's table of forced/'s files"
 
 fresh
-echo '#include "arclength.h"' >>"$work/src/hb/corrector.c"
-expect "an include up inside hb/" "src/hb/corrector.c (hb/ floor 3) includes arclength.h of hb/arclength (floor 5)"
+echo '#include "arclength.h"' >>"$work/src/forced/corrector.c"
+expect "an include up inside forced/" "src/forced/corrector.c (forced/ floor 0) includes arclength.h of forced/arclength (floor 2)"
 
-# A call up inside hb/: a file of floor 0 calling one of floor 7.
+# A call up inside forced/: a file of floor 0 calling one of floor 4.
 fresh
 # shellcheck disable=SC2016 # the backquotes are the table's, not a command
-sed -e 's/^| `hb\/` | 0 | /| `hb\/` | 0 | `layers_low` /' -e 's/^| `hb\/` | 7 | /| `hb\/` | 7 | `layers_high` /' \
-    "$src/README.md" >"$work/src/README.md"
+sed -e 's/^| `forced\/` | 0 | /| `forced\/` | 0 | `layers_low` /' \
+    -e 's/^| `forced\/` | 4 | /| `forced\/` | 4 | `layers_high` /' "$src/README.md" >"$work/src/README.md"
 printf 'int fr_hb_layers_high(void);\nint fr_hb_layers_low(void) { return fr_hb_layers_high(); }\n' \
-    >"$work/src/hb/layers_low.c"
-printf 'int fr_hb_layers_high(void) { return 1; }\n' >"$work/src/hb/layers_high.c"
+    >"$work/src/forced/layers_low.c"
+printf 'int fr_hb_layers_high(void) { return 1; }\n' >"$work/src/forced/layers_high.c"
 objects=$work/build/CMakeFiles/fricreg_objects.dir/src
-mkdir -p "$objects/hb"
-"$cc" -c "$work/src/hb/layers_low.c" -o "$objects/hb/layers_low.c.o" &&
-    "$cc" -c "$work/src/hb/layers_high.c" -o "$objects/hb/layers_high.c.o" ||
+mkdir -p "$objects/forced"
+"$cc" -c "$work/src/forced/layers_low.c" -o "$objects/forced/layers_low.c.o" &&
+    "$cc" -c "$work/src/forced/layers_high.c" -o "$objects/forced/layers_high.c.o" ||
     { echo "FAIL: $cc did not compile the probe"; exit 1; }
-expect "a call up inside hb/" "src/hb/layers_low.c (hb/ floor 0) calls src/hb/layers_high.c (floor 7)" "$work/build"
+expect "a call up inside forced/" "src/forced/layers_low.c (forced/ floor 0) calls src/forced/layers_high.c (floor 4)" "$work/build"
 
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -65,7 +65,7 @@ gsl_error_handler_t *gsl_set_error_handler_off(void)
 }
 
 /* LAPACK's dgeev reports a QR that does not converge by INFO > 0 (Hill's eigenvalues,
- * src/hb/eigenvalues.c): no finite balanced matrix is known to provoke it, so this program's
+ * src/floquet/eigenvalues.c): no finite balanced matrix is known to provoke it, so this program's
  * interposed copy (exported, as the pair above) returns INFO = 1 without converging when
  * nonsymm_fails is set; otherwise it passes on. */
 static int nonsymm_fails;

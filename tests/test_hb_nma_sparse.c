@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_hb_nma_sparse.c — Check suite for the nonlinear modes' linear mode on a sparse model
- * (fricreg_hb_nma; src/hb/nma_sparse_mode.c: shift-invert subspace iteration on CHOLMOD's
+ * (fricreg_hb_nma; src/nma/nma_sparse_mode.c: shift-invert subspace iteration on CHOLMOD's
  * factor of K_0 = K + J^T diag(k) J).
  *
  * (a) The membrane of NX x NY = 100 x 50 = 5000 unit masses on unit springs to their four

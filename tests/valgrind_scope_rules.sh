@@ -20,7 +20,7 @@ check() { # what, expected, actual
     fi
 }
 t=$work/tree
-mkdir -p "$t/src/base" "$t/src/joint" "$t/src/hb" "$t/src/structure" "$t/include" \
+mkdir -p "$t/src/base" "$t/src/joint" "$t/src/hb" "$t/src/forced" "$t/src/structure" "$t/include" \
     "$t/tests/support" "$t/docs"
 g() { git -C "$t" -c user.name=t -c user.email=t@t -c commit.gpgsign=false "$@" >/dev/null; }
 cat >"$t/src/README.md" <<'TABLE'
@@ -30,8 +30,9 @@ cat >"$t/src/README.md" <<'TABLE'
 | 2 | `joint/` | sliders |
 | 3 | `structure/` | structures |
 | 3 | `hb/` | harmonic balance |
+| 5 | `forced/` | the forced response |
 TABLE
-for f in src/base/error.c src/joint/slider.c src/hb/newton.c src/structure/step.c \
+for f in src/base/error.c src/joint/slider.c src/hb/newton.c src/forced/solve.c src/structure/step.c \
     include/fricreg_hb.h include/fricreg_structure.h tests/support/rod.c docs/hb.md \
     tests/valgrind.sh CMakeLists.txt; do
     echo "/* $f */" >"$t/$f"
@@ -54,6 +55,7 @@ touched() { # FILE: the programs that run with FILE changed (then restored)
 check "nothing changed" "" "$(runs)"
 check "its module" "hb" "$(touched src/hb/newton.c)"
 check "the other module of its floor" "structure" "$(touched src/structure/step.c)"
+check "a module over hb/ behind fricreg_hb.h" "hb" "$(touched src/forced/solve.c)"
 check "a module on a lower floor" "hb structure" "$(touched src/joint/slider.c)"
 check "the bottom floor" "hb structure" "$(touched src/base/error.c)"
 check "its module's public header" "hb" "$(touched include/fricreg_hb.h)"

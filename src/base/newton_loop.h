@@ -2,8 +2,8 @@
 /* newton_loop.h — internal: the one Newton iteration of the library's implicit problems: a
  * structure's step (the contacts alone, step_newton.c, also for the public
  * fricreg_ctx_solve_step; the elements alone, jenkins.c; both in one, joint_step.c) and
- * harmonic balance's three (hb/newton.c at a frequency, hb/corrector.c on the arclength,
- * hb/nma_solve.c for a nonlinear mode). Each brings its direction (its tangent's solve), its
+ * harmonic balance's three (hb/newton.c at a frequency, forced/corrector.c on the arclength,
+ * nma/nma_solve.c for a nonlinear mode). Each brings its direction (its tangent's solve), its
  * line search (base/line_search.h, on its merit) and its measure of the residual; the loop,
  * its stopping rules and its counting are here. */
 #ifndef FRICREG_NEWTON_LOOP_H

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* hb.c — the harmonic-balance driver's life cycle (fricreg_hb.h): create with the defaults of
- * every setting, free, the clone at other harmonics (truncation.c), the solver's settings that
+ * every setting, free, the clone at other harmonics (forced/truncation.c), the solver's settings that
  * change those defaults, and the error record. The model is set in model.c, the elements in
  * elements.c. */
 #include <math.h>
@@ -12,7 +12,6 @@
 #include "hb_internal.h"
 #include "joint/aft_march.h"
 #include "rows.h"
-#include "stability_method.h"
 
 #define MAX_DENSE_DOFS 4096
 #define MAX_DOFS ((size_t)1 << 24)
@@ -97,7 +96,9 @@ void fricreg_hb_free(fricreg_hb *hb)
     free(hb->qpts);
     free(hb->xpts);
     free(hb->bifs);
-    fr_hb_stability_free(hb);
+    for (int part = 0; part < FR_HB_PARTS; part++)
+        if (hb->release[part] != NULL)
+            hb->release[part](hb);
     fricreg_aft_free(hb->aft);
     fricreg_aft_free(hb->aft_half);
     free(hb->half);
@@ -108,7 +109,6 @@ void fricreg_hb_free(fricreg_hb *hb)
     free(hb->etype);
     free(hb->ep);
     fr_aft_march_free(hb->march);
-    fr_hb_nma_free(hb->nma);
     fr_hb_sparse_free(hb);
     fr_cholmod_finish(&hb->cc);
     free(hb);

@@ -2,8 +2,9 @@
 /* hb_internal.h — the harmonic-balance driver's layout (fricreg_hb.h) and the kernels its files
  * share: dynamic.c factors the dynamic stiffnesses and condenses them on the elements
  * (G_h = J D_h^-1 J^T), residual.c evaluates (R), its Jacobian and its Ω derivative, newton.c
- * solves at one Ω, arclength.c follows a branch, recover.c gives the displacements. Complex
- * numbers are stored as (re, im) pairs of doubles. Included only inside src/hb/. */
+ * solves at one Ω, recover.c gives the displacements. Complex numbers are stored as (re, im)
+ * pairs of doubles. Included inside src/hb/ and by the three modules built on the driver:
+ * floquet/ (stability), nma/ (nonlinear modes), forced/ (the forced response). */
 #ifndef FRICREG_HB_INTERNAL_H
 #define FRICREG_HB_INTERNAL_H
 
@@ -12,9 +13,6 @@
 
 #include <cholmod.h>
 #include <klu.h>
-
-#include <gsl/gsl_eigen.h>
-#include <gsl/gsl_matrix.h>
 
 #include "base/error.h"
 #include "fricreg_aft.h"
@@ -27,13 +25,13 @@
  * iteration bound ending it). */
 #define FR_HB_HALVINGS 10
 
-/* Re λ T above which a solution is unstable (log |μ|, Hill's and the monodromy's alike): the
- * multipliers' rounding, far below the damping of any model worth a stability verdict. */
-#define FR_HB_STABLE_TOL 1e-6
-
 struct fr_hb_lu;     /* sparse.c: one harmonic's LU factor */
-struct fr_hb_mono;   /* monodromy.c: the exact monodromy's workspace */
+struct fr_hb_hill;   /* floquet/hill.c: Hill's matrices */
+struct fr_hb_mono;   /* floquet/monodromy.c: the exact monodromy's workspace */
 struct fr_aft_march; /* joint/aft_march.h: the march's workspace */
+
+/* The parts of the driver that modules above it own (its release table). */
+enum fr_hb_part { FR_HB_PART_STABILITY, FR_HB_PART_NMA, FR_HB_PARTS };
 
 /* The kinds of element the driver holds, each its number of rows of J and its AFT
  * (residual.c). */
@@ -83,7 +81,7 @@ struct fricreg_hb {
      * its Ω derivative and the displacements' load term are multiplied by it (fr_hb_load) */
     double level;
 
-    /* The nonlinear modes (nma.c, fricreg_hb_nma): while one is solved, D_h's damping is
+    /* The nonlinear modes (nma/nma.c, fricreg_hb_nma): while one is solved, D_h's damping is
      * C − xi M (C left out when no_c: the modal-damping option), and free_vibration says that
      * the load column of Y_1 holds the normalization's M φ rather than a load: (R), its Ω
      * derivative and the displacements leave it out. 0 otherwise. */
@@ -133,7 +131,7 @@ struct fricreg_hb {
     klu_l_symbolic *symbolic; /* klu_l_analyze's, NULL: none yet */
     struct fr_hb_lu *lu;      /* [H + 1]: each harmonic's factor (sparse.c) */
 
-    /* Newton (residual.c, newton.c, corrector.c, arclength.c) */
+    /* Newton (residual.c, newton.c; forced/corrector.c, forced/arclength.c) */
     double *fq;     /* [nq] element force coefficients at the last evaluation */
     double *jq;     /* [ejq[count] nc²] their Jacobians, element e's block [(rows nc)²] at
                        fr_hb_block_of */
@@ -153,27 +151,20 @@ struct fricreg_hb {
     int *piv2;      /* [nq + 1] A's row interchanges (lu.c: LAPACK's) */
     int iterations; /* of the last Newton solve */
 
-    /* the last solution, and its stability (stability.c) when that is on: XW(hb) numbers as a
+    /* the last solution, and its stability (floquet/) when that is on: XW(hb) numbers as a
      * point's below */
     int have_solution;
     double omega_sol, level_sol; /* its Ω and excitation level λ */
     double *qsol;                /* [nq] */
     double *xsol;                /* [XW] */
 
-    /* Stability, on with fricreg_hb_set_stability. Hill's method (stability.c), its matrices
-     * made at the first solution that needs them: N = n nc Fourier coefficients of x; the
-     * companion matrix of the quadratic eigenproblem [2N 2N], its eigenvalues [2N] complex,
-     * LAPACK's workspace; M's LU [n n] and pivots [n], a column [n] */
+    /* Stability (floquet/), on with fricreg_hb_set_stability: Hill's method's workspace, made
+     * at the first solution that needs it */
     int stability;
-    gsl_matrix *hill;
-    double *hill_eval;
-    double *hill_work; /* [hill_lwork] LAPACK dgeev's workspace, then [2N2] its wr, wi */
-    size_t hill_lwork;
-    double *hill_mlu, *hill_col;
-    double *hill_x; /* [XW]: a trial point's stability, for bifurcations (xsol's block) */
-    int *hill_piv;
-    /* how (enum fricreg_hb_stability_method, stability_method.c): Hill's, or the exact monodromy
-     * (monodromy.c) with its workspace, grown at the first solution that needs more */
+    struct fr_hb_hill *hill; /* floquet/hill.c: Hill's matrices, NULL: none yet */
+    double *hill_x;          /* [XW]: a trial point's stability, for bifurcations (xsol's block) */
+    /* how (enum fricreg_hb_stability_method, floquet/stability_method.c): Hill's, or the exact
+     * monodromy (floquet/monodromy.c) with its workspace, grown at the first solution that needs more */
     int stability_method;
     struct fr_hb_mono *mono;
 
@@ -202,6 +193,11 @@ struct fricreg_hb {
     int busy, stopped;
     int report_omega; /* the monitor's parameter is the factored Ω, else the level λ */
     struct fr_error stop_err;
+
+    /* What the modules above the driver hang on it (floquet/'s stability, nma/'s backbone),
+     * each with the function that frees it, set by the module that made it: the driver's free
+     * calls them, so no module frees the objects of another. NULL: nothing hung. */
+    void (*release[FR_HB_PARTS])(fricreg_hb *hb);
 
     struct fr_error err;
 };
@@ -277,22 +273,12 @@ int fr_hb_set_compressed(fricreg_hb *hb, const char *fn, int which, size_t ndof,
 void fr_hb_project(const fricreg_hb *hb, const double *left, const double *B, double s, double *G,
                    double *q);
 
-/* The nonlinear modes' state (nma.c), freed with the driver. */
-void fr_hb_nma_free(struct fr_hb_nma *nma);
-
 /* The dense LU factors (lu.c, LAPACK's getrf): A[n n] row-major (complex: (re, im) pairs)
  * factored in place with partial pivoting, its pivots U_kk at A's diagonal, the row
  * interchanges into piv[n]; no allocation, no GSL; n < 2^31. The solves overwrite x[n]
  * (complex: [2n]) with A^-1 x from the factor and piv; every pivot must be nonzero (the callers
  * check them first). */
 void fr_hb_lu_factor(double *A, size_t n, int *piv);
-/* The eigenvalues of a dense real matrix (eigenvalues.c, LAPACK's dgeev): A[n n] row-major,
- * destroyed; the real and imaginary parts into wr[n] and wi[n] (a complex pair together, the
- * positive imaginary part first); work[lwork] with lwork = fr_hb_eigenvalues_work(n) (at least
- * 3n, LAPACK's optimum where it says). Returns dgeev's INFO: 0, or > 0 when the QR iteration
- * did not converge (wr, wi then hold only the eigenvalues from INFO on); n < 2^31. */
-size_t fr_hb_eigenvalues_work(size_t n);
-int fr_hb_eigenvalues(double *A, size_t n, double *wr, double *wi, double *work, size_t lwork);
 void fr_hb_lu_solve_factored(const double *LU, size_t n, const int *piv, double *x);
 void fr_hb_zlu_factor(double *A, size_t n, int *piv);
 void fr_hb_zlu_solve_factored(const double *LU, size_t n, const int *piv, double *x);
@@ -356,36 +342,11 @@ int fr_hb_end(fricreg_hb *hb, int status);
 /* FRICREG_EINVAL (message recorded, with fn) for a call from the monitor during a solve. */
 int fr_hb_busy(fricreg_hb *hb, const char *fn);
 
-/* The checks of omega, nq and q0 that fricreg_hb_solve and fricreg_hb_continue share. */
-int fr_hb_check_start(fricreg_hb *hb, const char *fn, double omega, size_t nq, const double *q0);
-
-/* Factors at omega and solves (R) from q0, or from the stuck guess and then the slipping one:
- * the solution in qw (R, fq, jq at it), with keep its stability computed (when on) and kept as
- * the driver's last solution (at the level in force). */
-int fr_hb_solve_at(fricreg_hb *hb, const char *fn, double omega, const double *q0, int keep);
-
 /* The starting guess into qw: every element stuck (stuck) or slipping freely (F = 0). */
 int fr_hb_guess(fricreg_hb *hb, const char *fn, int stuck);
 
 /* The displacements' coefficients x[n nc] from the forces fq at the factored Ω. */
 void fr_hb_recover(const fricreg_hb *hb, double *x);
-
-/* Hill's method at the solution whose element Jacobians jq are in hb (the last residual's, with
- * jac) at omega: into out[2n + 2] stable (1.0/0.0), the largest |Floquet multiplier| and the 2n
- * exponents (re, im); its matrices made at the first call. FRICREG_OK, FRICREG_EINVAL (ndof
- * (2H + 1) > FRICREG_HB_MAX_HILL), FRICREG_ENOMEM, FRICREG_ESINGULAR (M), FRICREG_ENONFINITE,
- * FRICREG_EINTEGRATOR (LAPACK's QR), messages recorded with fn. */
-int fr_hb_hill(fricreg_hb *hb, const char *fn, double omega, double *out);
-
-/* Whether some exponent of exps[4n] (re, im) at omega of kind which (0 real, 1 at ±Ω/2, 2
- * complex; −1 any) is unstable; the kind of the exponent of largest real part. */
-int fr_hb_hill_unstable(const fricreg_hb *hb, double omega, const double *exps, int which);
-int fr_hb_hill_crossing(const fricreg_hb *hb, double omega, const double *exps);
-
-/* Hill's matrices made (if not yet): FRICREG_OK or FRICREG_ENOMEM (message recorded, with fn;
- * nothing allocated then); freed (a second call does nothing). */
-int fr_hb_hill_reserve(fricreg_hb *hb, const char *fn);
-void fr_hb_hill_free(fricreg_hb *hb);
 
 /* Each dof's RMS over a period from the forces fq at the factored Ω, into rms[n]. */
 void fr_hb_rms(const fricreg_hb *hb, double *rms);

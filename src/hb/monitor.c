@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* monitor.c — the solving calls' monitor and work bound (fricreg_hb_set_monitor,
  * fricreg_hb_set_max_iterations): one hook, fr_hb_tick, at each of the three Newton iterations
- * every solve goes through (newton.c's at one frequency, corrector.c's corrector, the
- * nonlinear modes' in nma_solve.c), so that a call of any size can be watched and stopped. */
+ * every solve goes through (newton.c's at one frequency, forced/corrector.c's corrector, the
+ * nonlinear modes' in nma/nma_solve.c), so that a call of any size can be watched and stopped. */
 #include <inttypes.h>
 
 #include "hb_internal.h"

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* recover.c — the displacements from the elements' forces by (HB) of fricreg_hb.h,
  * X_h = D_h^-1 P_h − (D_h^-1 J^T) F_h, with the solves Y_h of the factored frequency, the RMS
- * per dof (points.c has the getters of the coefficients). */
+ * per dof (forced/points.c has the getters of the coefficients). */
 #include <math.h>
 #include <string.h>
 

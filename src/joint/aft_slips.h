@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* aft_slips.h — when a Jenkins slider slips over the stabilized period of the exact AFT
- * (aft_exact.c): the switch instants that harmonic balance's exact monodromy (hb/monodromy.c)
+ * (aft_exact.c): the switch instants that harmonic balance's exact monodromy (floquet/monodromy.c)
  * integrates between. */
 #ifndef FRICREG_JOINT_AFT_SLIPS_H
 #define FRICREG_JOINT_AFT_SLIPS_H

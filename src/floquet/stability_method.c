@@ -70,6 +70,7 @@ int fricreg_hb_set_stability(fricreg_hb *hb, int enable)
             return fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for the stability of %zu dofs", fn,
                            hb->n);
         hb->hill_x = hb->xsol + xw;
+        hb->release[FR_HB_PART_STABILITY] = fr_hb_stability_free;
         int status = fr_hb_stability_in_force(hb) == FRICREG_HB_STABILITY_HILL
                          ? fr_hb_hill_reserve(hb, fn)
                          : fr_hb_monodromy_reserve(hb, fn);

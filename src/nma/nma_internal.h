@@ -6,7 +6,7 @@
 #ifndef FRICREG_HB_NMA_INTERNAL_H
 #define FRICREG_HB_NMA_INTERNAL_H
 
-#include "hb_internal.h"
+#include "hb/hb_internal.h"
 
 struct fr_hb_nma {
     size_t n, nq, nd; /* dofs, the condensed unknowns q, nd = nq + 2 with ω and ξ */

@@ -3,7 +3,7 @@
 #ifndef FRICREG_HB_STABILITY_METHOD_H
 #define FRICREG_HB_STABILITY_METHOD_H
 
-#include "hb_internal.h"
+#include "floquet_internal.h"
 
 /* The method that computes the next solution's stability: FRICREG_HB_STABILITY_HILL or
  * FRICREG_HB_STABILITY_MONODROMY (the automatic choice made for the elements set now). */

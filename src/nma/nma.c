@@ -18,7 +18,7 @@
 
 #define MAX_HALVINGS 10
 
-void fr_hb_nma_free(struct fr_hb_nma *nma)
+static void nma_free(struct fr_hb_nma *nma)
 {
     if (nma == NULL)
         return;
@@ -31,6 +31,13 @@ void fr_hb_nma_free(struct fr_hb_nma *nma)
     free(nma->cross);
     free(nma->modes);
     free(nma);
+}
+
+/* The driver's release of its nonlinear modes (fricreg_hb_free). */
+static void nma_release(fricreg_hb *hb)
+{
+    nma_free(hb->nma);
+    hb->nma = NULL;
 }
 
 /* The state for the driver's sizes and npoints points, all or nothing. */
@@ -48,7 +55,7 @@ static struct fr_hb_nma *alloc_state(const fricreg_hb *hb, size_t npoints)
     s->piv = malloc(nd * sizeof *s->piv);
     s->pts = malloc(npoints * s->stride * sizeof(double));
     if (!s->phi || !s->dGx || !s->A || !s->piv || !s->pts) {
-        fr_hb_nma_free(s);
+        nma_free(s);
         return NULL;
     }
     s->w = s->phi + n;
@@ -206,8 +213,9 @@ int fr_hb_nma_run(fricreg_hb *hb, const char *fn, size_t mode, int damping, doub
     struct fr_hb_nma *s = alloc_state(hb, npoints);
     if (s == NULL)
         return fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for %zu points", fn, npoints);
-    fr_hb_nma_free(hb->nma);
+    nma_free(hb->nma);
     hb->nma = s;
+    hb->release[FR_HB_PART_NMA] = nma_release;
     hb->have_backbone = 1;
     s->modal = damping == FRICREG_HB_NMA_DAMPING_MODAL;
     s->mode = mode;

@@ -5,10 +5,10 @@
 #ifndef FRICREG_HB_CORRECTOR_H
 #define FRICREG_HB_CORRECTOR_H
 
-#include <math.h>
 #include <stddef.h>
 
-#include "hb_internal.h"
+#include "hb/hb_internal.h"
+#include "hb/step_control.h"
 
 /* A branch being followed: its parameter and scales, and the points the loop moves along it
  * (views into the driver's yp and yo); the peak search sets only the scales. */
@@ -31,22 +31,6 @@ struct fr_hb_branch {
 static inline double fr_hb_branch_omega(const struct fr_hb_branch *b, double p)
 {
     return b->level ? b->omega : p;
-}
-
-static inline double fr_hb_dot(const double *a, const double *b, size_t n)
-{
-    double s = 0.0;
-    for (size_t j = 0; j < n; j++)
-        s += a[j] * b[j];
-    return s;
-}
-
-static inline double fr_hb_dist(const double *a, const double *b, size_t n)
-{
-    double s = 0.0;
-    for (size_t j = 0; j < n; j++)
-        s += (a[j] - b[j]) * (a[j] - b[j]);
-    return sqrt(s);
 }
 
 /* The sign of the determinant of the LU factor in A (order ld, pivots piv2). */

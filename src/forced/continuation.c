@@ -9,6 +9,7 @@
  * guess), peak.c (fricreg_hb_peak); this file on top. */
 #include <math.h>
 
+#include "solve_at.h"
 #include "arclength.h"
 #include "start.h"
 

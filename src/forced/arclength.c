@@ -26,6 +26,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "solve_at.h"
 #include "arclength.h"
 #include "bifurcations.h"
 #include "points.h"

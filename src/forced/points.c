@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "points.h"
-#include "stability_method.h"
+#include "floquet/stability_method.h"
 
 size_t fricreg_hb_points(const fricreg_hb *hb)
 {

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* stability.c — the stability of a periodic solution by Hill's method (G. W. Hill 1886; Krack &
+/* hill.c — the stability of a periodic solution by Hill's method (G. W. Hill 1886; Krack &
  * Gross 2019, Sec. 5.3; L. Peletan et al., Nonlinear Dyn. 2013): a perturbation
  * y(t) = e^{λt} p(t), p periodic with the real Fourier coefficients P (the layout of fricreg_hb.h,
  * dof k's at P[nc k ..]), of M x'' + C x' + K x + J^T f(J x) = p(t) solves the quadratic
@@ -25,7 +25,7 @@
 #include <string.h>
 
 #include "base/gsl_mem.h"
-#include "hb_internal.h"
+#include "floquet_internal.h"
 
 static const double TWO_PI = 6.283185307179586;
 
@@ -34,32 +34,37 @@ int fr_hb_hill_reserve(fricreg_hb *hb, const char *fn)
     size_t n = hb->n, N2 = 2 * n * hb->nc;
     if (hb->hill != NULL)
         return FRICREG_OK;
-    hb->hill = fr_gsl_matrix_new(N2, N2);
-    hb->hill_eval = malloc(2 * N2 * sizeof(double));
-    hb->hill_lwork = fr_hb_eigenvalues_work(N2);
-    hb->hill_work = malloc((hb->hill_lwork + 2 * N2) * sizeof(double));
-    hb->hill_mlu = malloc((n * n + n) * sizeof(double));
-    hb->hill_piv = malloc(n * sizeof *hb->hill_piv);
-    if (!hb->hill || !hb->hill_eval || !hb->hill_work || !hb->hill_mlu || !hb->hill_piv) {
+    struct fr_hb_hill *w = calloc(1, sizeof *w);
+    if (w != NULL) {
+        w->A = fr_gsl_matrix_new(N2, N2);
+        w->eval = malloc(2 * N2 * sizeof(double));
+        w->lwork = fr_hb_eigenvalues_work(N2);
+        w->work = malloc((w->lwork + 2 * N2) * sizeof(double));
+        w->mlu = malloc((n * n + n) * sizeof(double));
+        w->piv = malloc(n * sizeof *w->piv);
+    }
+    hb->hill = w;
+    if (!w || !w->A || !w->eval || !w->work || !w->mlu || !w->piv) {
         fr_hb_hill_free(hb);
         return fr_fail(hb, FRICREG_ENOMEM,
                        "%s: stability: no memory for Hill's matrix of order %zu", fn, N2);
     }
-    hb->hill_col = hb->hill_mlu + n * n;
+    w->col = w->mlu + n * n;
     return FRICREG_OK;
 }
 
 void fr_hb_hill_free(fricreg_hb *hb)
 {
-    free(hb->hill); /* one block each (gsl_mem.h) */
-    free(hb->hill_eval);
-    free(hb->hill_work);
-    free(hb->hill_mlu);
-    free(hb->hill_piv);
+    struct fr_hb_hill *w = hb->hill;
+    if (w == NULL)
+        return;
+    free(w->A); /* one block (gsl_mem.h) */
+    free(w->eval);
+    free(w->work);
+    free(w->mlu);
+    free(w->piv);
+    free(w);
     hb->hill = NULL;
-    hb->hill_eval = hb->hill_mlu = hb->hill_col = NULL;
-    hb->hill_work = NULL;
-    hb->hill_piv = NULL;
 }
 
 /* The dense model's damping entry: C, or a0 M + a1 K. */
@@ -76,7 +81,7 @@ static void linear_entry(fricreg_hb *hb, double omega, size_t k, size_t l, doubl
                          double kk)
 {
     size_t nc = hb->nc, N = hb->n * nc, r = N + k * nc, col = l * nc;
-    gsl_matrix *A = hb->hill;
+    gsl_matrix *A = hb->hill->A;
     *gsl_matrix_ptr(A, r, col) += kk;
     *gsl_matrix_ptr(A, r, N + col) += c;
     for (int h = 1; h <= hb->H; h++) {
@@ -103,17 +108,17 @@ static void linear_blocks(fricreg_hb *hb, double omega)
             for (size_t l = 0; l < n; l++) {
                 size_t i = k * n + l;
                 linear_entry(hb, omega, k, l, hb->M[i], damping(hb, i), hb->K[i]);
-                hb->hill_mlu[i] = hb->M[i];
+                hb->hill->mlu[i] = hb->M[i];
             }
         return;
     }
-    memset(hb->hill_mlu, 0, n * n * sizeof(double));
+    memset(hb->hill->mlu, 0, n * n * sizeof(double));
     for (size_t l = 0; l < n; l++)
         for (int64_t p = hb->Dp[l]; p < hb->Dp[l + 1]; p++) {
             size_t k = (size_t)hb->Di[p];
             double c = hb->rayleigh ? hb->a0 * hb->vM[p] + hb->a1 * hb->vK[p] : hb->vC[p];
             linear_entry(hb, omega, k, l, hb->vM[p], c, hb->vK[p]);
-            hb->hill_mlu[k * n + l] = hb->vM[p];
+            hb->hill->mlu[k * n + l] = hb->vM[p];
         }
 }
 
@@ -122,7 +127,7 @@ static void linear_blocks(fricreg_hb *hb, double omega)
 static void element_blocks(fricreg_hb *hb)
 {
     size_t n = hb->n, nc = hb->nc, N = n * nc;
-    gsl_matrix *A = hb->hill;
+    gsl_matrix *A = hb->hill->A;
     for (size_t e = 0; e < hb->me; e++) {
         size_t rows = fr_hb_rows_of(hb, e), b = rows * nc, r0 = hb->erow[e];
         const double *block = fr_hb_block_of(hb, e);
@@ -148,18 +153,18 @@ static void element_blocks(fricreg_hb *hb)
 static int companion(fricreg_hb *hb, const char *fn)
 {
     size_t n = hb->n, nc = hb->nc, N = n * nc;
-    gsl_matrix *A = hb->hill;
+    gsl_matrix *A = hb->hill->A;
     /* hill_mlu holds M (linear_blocks) */
-    int status = fr_hb_mass_lu(hb, fn, "Hill's method", hb->hill_mlu, hb->hill_piv);
+    int status = fr_hb_mass_lu(hb, fn, "Hill's method", hb->hill->mlu, hb->hill->piv);
     if (status != FRICREG_OK)
         return status;
     for (size_t j = 0; j < 2 * N; j++)
         for (size_t c = 0; c < nc; c++) {
             for (size_t k = 0; k < n; k++)
-                hb->hill_col[k] = gsl_matrix_get(A, N + k * nc + c, j);
-            fr_hb_lu_solve_factored(hb->hill_mlu, n, hb->hill_piv, hb->hill_col);
+                hb->hill->col[k] = gsl_matrix_get(A, N + k * nc + c, j);
+            fr_hb_lu_solve_factored(hb->hill->mlu, n, hb->hill->piv, hb->hill->col);
             for (size_t k = 0; k < n; k++)
-                gsl_matrix_set(A, N + k * nc + c, j, -hb->hill_col[k]);
+                gsl_matrix_set(A, N + k * nc + c, j, -hb->hill->col[k]);
         }
     for (size_t j = 0; j < N; j++)
         gsl_matrix_set(A, j, N + j, 1.0);
@@ -189,7 +194,7 @@ static double selection_key(double im, double omega, int *second)
 static void select_exponents(const fricreg_hb *hb, double omega, double *out)
 {
     size_t N2 = 2 * hb->n * hb->nc, want = 2 * hb->n;
-    const double *ev = hb->hill_eval;
+    const double *ev = hb->hill->eval;
     double last = -1.0;
     int last_second = 0;
     size_t last_at = 0;
@@ -226,25 +231,25 @@ int fr_hb_hill(fricreg_hb *hb, const char *fn, double omega, double *out)
     int status = fr_hb_hill_reserve(hb, fn);
     if (status != FRICREG_OK)
         return status;
-    gsl_matrix_set_zero(hb->hill);
+    gsl_matrix_set_zero(hb->hill->A);
     linear_blocks(hb, omega);
     element_blocks(hb);
     status = companion(hb, fn);
     if (status != FRICREG_OK)
         return status;
     for (size_t k = 0; k < N2 * N2; k++)
-        if (!isfinite(hb->hill->data[k]))
+        if (!isfinite(hb->hill->A->data[k]))
             return fr_fail(hb, FRICREG_ENONFINITE,
                            "%s: stability: Hill's matrix overflows at Omega = %g", fn, omega);
-    double *wr = hb->hill_work + hb->hill_lwork, *wi = wr + N2;
-    if (fr_hb_eigenvalues(hb->hill->data, N2, wr, wi, hb->hill_work, hb->hill_lwork) != 0)
+    double *wr = hb->hill->work + hb->hill->lwork, *wi = wr + N2;
+    if (fr_hb_eigenvalues(hb->hill->A->data, N2, wr, wi, hb->hill->work, hb->hill->lwork) != 0)
         return fr_fail(hb, FRICREG_EINTEGRATOR,
                        "%s: stability: the QR iteration on Hill's matrix did not converge at "
                        "Omega = %g",
                        fn, omega);
     for (size_t i = 0; i < N2; i++) { /* (re, im) pairs, as select_exponents reads them */
-        hb->hill_eval[2 * i] = wr[i];
-        hb->hill_eval[2 * i + 1] = wi[i];
+        hb->hill->eval[2 * i] = wr[i];
+        hb->hill->eval[2 * i + 1] = wi[i];
     }
     select_exponents(hb, omega, out + 2);
     double T = TWO_PI / omega, top = -INFINITY;

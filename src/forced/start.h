@@ -3,7 +3,7 @@
 #ifndef FRICREG_HB_START_H
 #define FRICREG_HB_START_H
 
-#include "hb_internal.h"
+#include "hb/hb_internal.h"
 
 /* The level start; should it fail, the plain guesses at omega; then the branch in Ω from a
  * nearby frequency where those converge. With stability on, an unstable solution is held

@@ -10,7 +10,7 @@
 #include <math.h>
 
 #include "base/lapack.h"
-#include "hb_internal.h"
+#include "floquet_internal.h"
 
 size_t fr_hb_eigenvalues_work(size_t n)
 {

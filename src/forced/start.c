@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "solve_at.h"
 #include "arclength.h"
 #include "start.h"
 

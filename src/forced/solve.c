@@ -5,7 +5,8 @@
  * nearby frequency). Above both. */
 #include <string.h>
 
-#include "hb_internal.h"
+#include "solve_at.h"
+#include "hb/hb_internal.h"
 #include "start.h"
 
 int fricreg_hb_solve(fricreg_hb *hb, double omega, size_t nq, const double q0[], double q[])

@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "bifurcations.h"
-#include "stability_method.h"
+#include "floquet/stability_method.h"
 
 size_t fricreg_hb_bifurcations(const fricreg_hb *hb)
 {

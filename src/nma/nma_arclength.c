@@ -24,7 +24,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "arclength.h"
+#include "hb/step_control.h"
 #include "base/line_search.h"
 #include "base/newton_loop.h"
 #include "nma_internal.h"

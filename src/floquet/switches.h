@@ -4,7 +4,7 @@
 #ifndef FRICREG_HB_SWITCHES_H
 #define FRICREG_HB_SWITCHES_H
 
-#include "hb_internal.h"
+#include "hb/hb_internal.h"
 
 /* One switch at the angle θ = Ω t in [0, 2π): a slider of the state (index: its place among
  * them) entering mode (joint/aft_slips.h: FR_AFT_OPEN, _STICK, _SLIP) in direction dir, its

@@ -4,7 +4,7 @@
 #ifndef FRICREG_HB_MONODROMY_H
 #define FRICREG_HB_MONODROMY_H
 
-#include "hb_internal.h"
+#include "floquet_internal.h"
 
 /* Whether the elements are piecewise linear in the sense of the monodromy: 1-D Jenkins and
  * Iwan elements under a constant normal load or with lift-off (not the 3-D contact), and some

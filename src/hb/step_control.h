@@ -1,11 +1,14 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* arclength.h — one branch followed by pseudo-arclength continuation from p0 to p1
- * (arclength.c): the public continuations (continuation.c) and the default start (start.c)
- * both run it. */
-#ifndef FRICREG_HB_ARCLENGTH_H
-#define FRICREG_HB_ARCLENGTH_H
+/* step_control.h — the pseudo-arclength step control that the forced response's continuation
+ * (forced/arclength.c) and the nonlinear modes' (nma/nma_arclength.c) share: its nominal
+ * values, the next step's length, and the scaled vectors' dot product and distance. */
+#ifndef FRICREG_HB_STEP_CONTROL_H
+#define FRICREG_HB_STEP_CONTROL_H
 
-#include "corrector.h"
+#include <math.h>
+#include <stddef.h>
+
+#include "hb_internal.h"
 
 /* The step control's nominal values (Allgower & Georg give the form; these were chosen on
  * tests/test_hb_continuation.c's chains and lift-off pair): the corrector's contraction, its
@@ -29,7 +32,7 @@
 /* The next step after an accepted one of length ds: Allgower & Georg's factor on the
  * corrector's contraction kappa, its first step delta, the tangents' angle alpha (0 at a kink)
  * and its iterations, within [1/2, 2], the step then within [ds_min, ds_max]. The forced
- * response's (arclength.c) and the backbone's (nma_arclength.c). */
+ * response's (forced/arclength.c) and the backbone's (nma/nma_arclength.c). */
 static inline double fr_hb_next_step(const fricreg_hb *hb, double ds, double kappa, double delta,
                                      double alpha, int its)
 {
@@ -38,11 +41,20 @@ static inline double fr_hb_next_step(const fricreg_hb *hb, double ds, double kap
     return fmin(fmax(ds / f, hb->ds_min), hb->ds_max);
 }
 
-/* The branch of b's parameter (Ω, or λ at b->omega; b's kind, par and keep set) from p0 to p1,
- * its first point solved from q0 (NULL: fr_hb_solve_at's guesses); with keep the points stored
- * (the earlier ones dropped) and the bifurcations between them located. The last point kept as
- * the driver's solution. */
-int fr_hb_arclength(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, double p0, double p1,
-                    const double *q0);
+static inline double fr_hb_dot(const double *a, const double *b, size_t n)
+{
+    double s = 0.0;
+    for (size_t j = 0; j < n; j++)
+        s += a[j] * b[j];
+    return s;
+}
+
+static inline double fr_hb_dist(const double *a, const double *b, size_t n)
+{
+    double s = 0.0;
+    for (size_t j = 0; j < n; j++)
+        s += (a[j] - b[j]) * (a[j] - b[j]);
+    return sqrt(s);
+}
 
 #endif
