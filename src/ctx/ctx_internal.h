@@ -104,4 +104,10 @@ double fr_stribeck_bound_slope(const fricreg_ctx *ctx, size_t i, double v);
 void fr_stribeck_refresh(fricreg_ctx *ctx);
 void fr_stribeck_off(fricreg_ctx *ctx);
 
+/* c_i = 2 zdot_i/eps for (4), 0 for Karnopp and (2): where contact i sits in the band. */
+static inline double fr_band_position(const fricreg_ctx *ctx, double zdot)
+{
+    return ctx->law == FRICREG_LAW_QUINN ? zdot * (2.0 / ctx->eps) : 0.0;
+}
+
 #endif

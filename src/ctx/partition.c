@@ -14,6 +14,8 @@
 #include "coupling.h"
 #include "law/law.h"
 #include "partition.h"
+#include "partition_consistent.h"
+#include "partition_paper.h"
 #include "law/contact_check.h"
 #include "law/plausible.h"
 

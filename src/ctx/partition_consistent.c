@@ -10,7 +10,7 @@
  * solved by box_qp.c from the previous evaluation's working set. */
 #include "coupling.h"
 #include "law/law.h"
-#include "partition.h"
+#include "partition_consistent.h"
 
 /* ctx->side of a contact outside S after an evaluation (S's working set holds FR_LOWER,
  * FR_FREE, FR_UPPER): it has no working set to warm-start from when it enters S. */

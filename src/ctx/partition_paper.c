@@ -6,7 +6,7 @@
 #include "coupling.h"
 #include "factor.h"
 #include "law/law.h"
-#include "partition.h"
+#include "partition_paper.h"
 
 /* Lists the slipping contacts L (the complement of the ascending S) and their forces, packed:
  * W_SL f_L then reads only L's columns. The QP's scratch is free under this partition. */

@@ -23,7 +23,7 @@
 #include <string.h>
 
 #include "ctx_internal.h"
-#include "partition.h"
+#include "partition_consistent.h"
 #include "sparse_coupling.h"
 #include "base/matrix_input.h"
 #include "base/sparse_factor.h"

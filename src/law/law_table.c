@@ -4,7 +4,7 @@
  * benchmarks, the step guard and the partition read it here instead of keeping copies. */
 #include <string.h>
 
-#include "law.h"
+#include "law_table.h"
 
 /* Indexed by enum fricreg_law; row 0 is no law. */
 const struct fr_law_row fr_law_table[] = {
