@@ -3,8 +3,8 @@
 # The modules of src/ are layered as src/README.md's table says: a file may include, and an
 # object file may call, only its own module and the modules on lower floors. So no arrow runs
 # back up and every circle stays inside one folder; and inside a folder, no circle of calls
-# between its files either (a file calls only files that do not call it back, directly or
-# round about); and a folder that lists its files by floor (src/README.md's second table) lists
+# and includes between its files either (a file uses only files that do not use it back,
+# directly or round about; its module's *_internal.h, the layout, aside); and a folder that lists its files by floor (src/README.md's second table) lists
 # every .c of it, and its files include the headers of, and call, only its files on lower
 # floors. Also: every folder of src/ is in the table, and ctx_internal.h is included
 # only inside src/ctx/.
@@ -138,9 +138,28 @@ END {
     exit fails > 0
 }' "$work/floors" "$work/dirs" "$work/files" "$work/sources" "$work/calls" "$work/edges" || status=1
 
-# Circles of calls between the files of one folder: the files left once every file that calls
-# no file still left, or that no file still left calls, is taken away, round after round, are
-# those on a circle; each is named with the files it calls among them.
+# Includes between the files of one folder, as edges like the calls' ("dir/x.c dir/y.c", a
+# header standing for the .c beside it): a file that includes the header of a file that calls
+# it is on a circle too. A module's *_internal.h, its object's layout, is below its files and
+# left out.
+awk -v files="$work/files" '
+BEGIN { while ((getline f < files) > 0) exists[f] = 1 }
+function node(path,    c) { c = path; sub(/\.h$/, ".c", c); return (c in exists) ? c : path }
+{
+    file = $0; dir = file; if (!sub(/\/[^\/]*$/, "", dir)) next
+    if (file ~ /_internal\.h$/) next
+    while ((getline line < file) > 0) {
+        if (!match(line, /^#include "[a-z_0-9]+\.h"/)) continue
+        inc = dir "/" substr(line, 11, RLENGTH - 11)
+        if (!(inc in exists) || inc ~ /_internal\.h$/) continue
+        if (node(inc) != node(file)) print node(file), node(inc)
+    }
+    close(file)
+}' "$work/sources" >>"$work/edges"
+
+# Circles of calls and includes between the files of one folder: the files left once every
+# file that uses no file still left, or that no file still left uses, is taken away, round
+# after round, are those on a circle; each is named with the files it uses among them.
 sort -u "$work/edges" | awk '
 { out[$1] = out[$1] " " $2; node[$1] = 1; node[$2] = 1; from[NR] = $1; to_[NR] = $2 }
 END {
@@ -155,7 +174,7 @@ END {
     for (f in node) {
         list = ""; k = split(out[f], to, " ")
         for (i = 1; i <= k; i++) if (to[i] in node) list = list " " to[i]
-        print "FAIL: src/" f " is on a circle of calls (it calls" list ")"
+        print "FAIL: src/" f " is on a circle of calls and includes (it uses" list ")"
         fails++
     }
     exit fails > 0

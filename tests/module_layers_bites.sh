@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # The layering check can fail: on copies of src/ with one arrow run back up (an include, a
 # call), ctx_internal.h included outside src/ctx/, a folder missing from the module table, or
-# a circle of calls inside a folder, or inside forced/ a file unlisted by floor, an include or a
+# a circle of calls or includes inside a folder, or inside forced/ a file unlisted by floor, an include or a
 # call up its floors, it must fail and name the break. Usage: module_layers_bites.sh CHECK SRC_DIR C_COMPILER
 check=$1 src=$2 cc=$3
 work=$(mktemp -d "${TMPDIR:-/tmp}/fricreg-layers-bites.XXXXXX")
@@ -58,7 +58,14 @@ mkdir -p "$objects/base"
 "$cc" -c "$work/src/base/circle_a.c" -o "$objects/base/circle_a.c.o" &&
     "$cc" -c "$work/src/base/circle_b.c" -o "$objects/base/circle_b.c.o" ||
     { echo "FAIL: $cc did not compile the probe"; exit 1; }
-expect "a circle inside a folder" "src/base/circle_a.c is on a circle of calls (it calls base/circle_b.c)" "$work/build"
+expect "a circle inside a folder" "src/base/circle_a.c is on a circle of calls and includes (it uses base/circle_b.c)" "$work/build"
+
+# A circle of includes: each of two files includes the other's header.
+fresh
+for x in a b; do echo "int fr_include_$x;" >"$work/src/base/include_$x.h"; done
+echo '#include "include_b.h"' >"$work/src/base/include_a.c"
+echo '#include "include_a.h"' >"$work/src/base/include_b.c"
+expect "a circle of includes inside a folder" "src/base/include_a.c is on a circle of calls and includes (it uses base/include_b.c)"
 
 # Inside forced/, whose files src/README.md lists by floor: a file not listed, an include up.
 fresh

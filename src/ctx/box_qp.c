@@ -22,6 +22,7 @@
 #include <string.h>
 
 #include "box_qp.h"
+#include "box_qp_bulk.h"
 #include "ctx_internal.h"
 #include "factor.h"
 #include "law/law.h"

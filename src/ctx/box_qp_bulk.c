@@ -20,7 +20,7 @@
  * Both run in O(nnz) per iteration, by W's rows, on vectors scattered by contact. */
 #include <math.h>
 
-#include "box_qp.h"
+#include "box_qp_bulk.h"
 #include "ctx_internal.h"
 #include "sparse_coupling.h"
 

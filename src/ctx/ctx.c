@@ -7,7 +7,9 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "box_qp.h"
 #include "ctx_internal.h"
+#include "sparse_block.h"
 #include "sparse_coupling.h"
 #include "base/eigen.h"
 #include "law/contact_check.h"
@@ -48,6 +50,7 @@ void fr_ctx_free_coupling(fricreg_ctx *ctx)
     fr_factor_free(&ctx->fac);
     fr_box_qp_free(&ctx->qp);
     if (ctx->sp != NULL) {
+        fr_sparse_block_free(ctx->sp);
         fr_sparse_coupling_free(ctx->sp);
         free(ctx->sp);
         ctx->sp = NULL;

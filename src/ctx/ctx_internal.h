@@ -7,7 +7,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "box_qp.h"
+#include "box_qp_state.h"
 #include "ctx_driver.h"
 #include "base/error.h"
 #include "factor.h"
@@ -103,6 +103,12 @@ void fr_stribeck_bounds(fricreg_ctx *ctx, const double zdot[]);
 double fr_stribeck_bound_slope(const fricreg_ctx *ctx, size_t i, double v);
 void fr_stribeck_refresh(fricreg_ctx *ctx);
 void fr_stribeck_off(fricreg_ctx *ctx);
+
+/* The singularity bound of the dense (factor.c) and sparse (sparse_block.c) factors: a block
+ * with a pivot ratio d_k / W_kk below this (in a fresh factorization, contacts in the callers'
+ * ascending order) is singular. For two contacts the ratio is 1 - rho^2, rho their correlation
+ * W_ij / sqrt(W_ii W_jj). */
+#define FR_PIVOT_MIN 1e-12
 
 /* c_i = 2 zdot_i/eps for (4), 0 for Karnopp and (2): where contact i sits in the band. */
 static inline double fr_band_position(const fricreg_ctx *ctx, double zdot)

@@ -42,6 +42,7 @@
 
 #include "ctx_internal.h"
 #include "factor.h"
+#include "sparse_block.h"
 
 #define FR_NOT_HELD SIZE_MAX
 /* An update adding a contact with a smaller pivot ratio refactors afresh instead. */

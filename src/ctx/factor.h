@@ -18,11 +18,6 @@
 
 struct fricreg_ctx;
 
-/* A block with a pivot ratio d_k / W_kk below this (in a fresh factorization, contacts in the
- * callers' ascending order) is singular. For two contacts the ratio is 1 - rho^2, rho their
- * correlation W_ij / sqrt(W_ii W_jj). */
-#define FR_PIVOT_MIN 1e-12
-
 struct fr_factor {
     size_t *set;        /* [m] contact index of each factor position 0..n-1, in order of entry */
     size_t n;           /* the block's size */
@@ -56,10 +51,5 @@ int fr_factor_ensure(struct fricreg_ctx *ctx, const size_t set[], size_t n, cons
  * to the last fr_factor_ensure, counted in FRICREG_STAT_SOLVES. Cannot fail: Returns
  * FRICREG_OK. */
 int fr_factor_solve(struct fricreg_ctx *ctx, double r[], const char *who);
-
-/* Their sparse twins (sparse_block.c), to which the two above hand over when W is sparse:
- * the same contract, with the singularity test in the sparse factor's order. */
-int fr_sparse_block_ensure(struct fricreg_ctx *ctx, const size_t set[], size_t n, const char *who);
-int fr_sparse_block_solve(struct fricreg_ctx *ctx, double r[]);
 
 #endif

@@ -8,6 +8,7 @@
  *   f_S = argmin_{lo <= f <= hi} 1/2 f^T W_SS f + b^T f,  b_i = a_free,i + W_ii c_i mun_i
  *                                                                + (W_SL f_L)_i,
  * solved by box_qp.c from the previous evaluation's working set. */
+#include "box_qp.h"
 #include "coupling.h"
 #include "law/law.h"
 #include "partition_consistent.h"

@@ -51,8 +51,7 @@
 #include <string.h>
 
 #include "ctx_internal.h"
-#include "factor.h"
-#include "sparse_coupling.h"
+#include "sparse_block.h"
 
 /* As factor.c: an update that adds a contact with a smaller pivot ratio (on its own or on
  * any downdated ancestor) refactors afresh instead; the largest relative drift of the

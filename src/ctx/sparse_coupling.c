@@ -131,8 +131,6 @@ int fr_sparse_coupling_build(struct fr_sparse_coupling *sp, cholmod_sparse *W)
     int status = order(sp);
     if (status == FRICREG_OK)
         status = permute(sp);
-    if (status == FRICREG_OK)
-        status = fr_sparse_block_alloc(sp);
     return status;
 }
 
@@ -140,7 +138,6 @@ void fr_sparse_coupling_free(struct fr_sparse_coupling *sp)
 {
     cholmod_common *c = &sp->c;
     size_t m = sp->m > 0 ? sp->m : 1;
-    fr_sparse_block_free(sp);
     cholmod_l_free_sparse(&sp->W, c);
     cholmod_l_free_sparse(&sp->C, c);
     sp->perm = cholmod_l_free(m, sizeof *sp->perm, sp->perm, c);

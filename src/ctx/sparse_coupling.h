@@ -66,16 +66,13 @@ double fr_sparse_gershgorin(const struct fr_sparse_coupling *sp, const double s[
 double fr_sparse_max_abs(const struct fr_sparse_coupling *sp);
 
 /* Builds the coupling in sp (zeroed but for its workspace sp->c, started) from W (whole, m x m,
- * sorted columns, checked: sparse_setup.c), which it takes over: the ordering, C, the block
- * factor's storage and every CHOLMOD workspace, so that no later call allocates. FRICREG_OK
- * or FRICREG_ENOMEM; either way fr_sparse_coupling_free releases what was built. */
+ * sorted columns, checked: sparse_setup.c), which it takes over: the ordering, C and their
+ * scratch (the block factor's storage follows: fr_sparse_block_alloc). FRICREG_OK or
+ * FRICREG_ENOMEM; either way fr_sparse_coupling_free releases what was built. */
 int fr_sparse_coupling_build(struct fr_sparse_coupling *sp, cholmod_sparse *W);
 
-/* Releases everything, the workspace last; safe on a zeroed struct. */
+/* Releases everything but the block factor (fr_sparse_block_free, first), the workspace last;
+ * safe on a zeroed struct. */
 void fr_sparse_coupling_free(struct fr_sparse_coupling *sp);
-
-/* The block factor (sparse_block.c): allocation inside fr_sparse_coupling_build. */
-int fr_sparse_block_alloc(struct fr_sparse_coupling *sp);
-void fr_sparse_block_free(struct fr_sparse_coupling *sp);
 
 #endif

@@ -22,8 +22,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "box_qp.h"
 #include "ctx_internal.h"
 #include "partition_consistent.h"
+#include "sparse_block.h"
 #include "sparse_coupling.h"
 #include "base/matrix_input.h"
 #include "base/sparse_factor.h"
@@ -234,6 +236,8 @@ static int set_sparse(fricreg_ctx *ctx, const struct fr_compressed *a, const cha
         status = fr_sparse_coupling_build(sp, W); /* sp owns W from here */
         W = NULL;
         if (status == FRICREG_OK)
+            status = fr_sparse_block_alloc(sp);
+        if (status == FRICREG_OK)
             status = allocate_solver(ctx, &qp, &rhs);
         if (status != FRICREG_OK)
             status = out_of_memory(ctx, who);
@@ -245,6 +249,7 @@ static int set_sparse(fricreg_ctx *ctx, const struct fr_compressed *a, const cha
     }
     if (sp != NULL) {
         cholmod_l_free_sparse(&W, &sp->c);
+        fr_sparse_block_free(sp);
         fr_sparse_coupling_free(sp);
     }
     free(sp);
