@@ -6,8 +6,8 @@
 # and includes between its files either (a file uses only files that do not use it back,
 # directly or round about; its module's *_internal.h, the layout, aside); and a folder that lists its files by floor (src/README.md's second table) lists
 # every .c of it, and its files include the headers of, and call, only its files on lower
-# floors. Also: every folder of src/ is in the table, and ctx_internal.h is included
-# only inside src/ctx/.
+# floors. Also: every folder of src/ is in the table, ctx_internal.h is included only inside
+# src/ctx/, and no file of src/ is over 600 lines.
 # Includes are read from the sources; calls from the object files of a built tree (nm), when
 # BUILD_DIR is given. A fixed handful of processes (find, two nm, a few awk) however many
 # files, includes and symbols: an awk per lookup took a minute.
@@ -179,4 +179,10 @@ END {
     }
     exit fails > 0
 }' || status=1
+# One concept per file: no source of src/ over 600 lines (the house rule, docs/contributing.md).
+# shellcheck disable=SC2046 # the sources are words
+wc -l $(cat "$work/sources") | awk '$2 != "total" && $1 > 600 {
+    print "FAIL: src/" $2 " has " $1 " lines, over 600: split it by concept"; fails++ }
+    END { exit fails > 0 }' || status=1
+
 exit "${status:-0}"

@@ -91,5 +91,10 @@ mkdir -p "$objects/forced"
     { echo "FAIL: $cc did not compile the probe"; exit 1; }
 expect "a call up inside forced/" "src/forced/layers_low.c (forced/ floor 0) calls src/forced/layers_high.c (floor 4)" "$work/build"
 
+# A file over 600 lines.
+fresh
+seq 601 | sed 's|.*|/* line */|' >"$work/src/base/long.c"
+expect "a file over 600 lines" "src/base/long.c has 601 lines, over 600"
+
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]
