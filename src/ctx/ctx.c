@@ -355,17 +355,4 @@ void fricreg_ctx_reset_stats(fricreg_ctx *ctx)
         memset(ctx->stats, 0, sizeof ctx->stats);
 }
 
-int fricreg_ctx_errcode(const fricreg_ctx *ctx)
-{
-    return ctx ? ctx->err.code : FRICREG_OK;
-}
-
-const char *fricreg_ctx_errmsg(const fricreg_ctx *ctx)
-{
-    return ctx ? ctx->err.msg : "NULL context";
-}
-
-size_t fricreg_ctx_errmsg_copy(const fricreg_ctx *ctx, char *buf, size_t len)
-{
-    return fr_error_copy(fricreg_ctx_errmsg(ctx), buf, len);
-}
+FR_ERROR_GETTERS(fricreg_ctx, "NULL context")

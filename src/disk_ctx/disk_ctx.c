@@ -347,17 +347,4 @@ void fr_disk_install_coupled(fricreg_disk_ctx *ctx, struct fr_disk_coupled *cpl,
     ctx->last_valid = 0;
 }
 
-int fricreg_disk_ctx_errcode(const fricreg_disk_ctx *ctx)
-{
-    return ctx ? ctx->err.code : FRICREG_OK;
-}
-
-const char *fricreg_disk_ctx_errmsg(const fricreg_disk_ctx *ctx)
-{
-    return ctx ? ctx->err.msg : "NULL context";
-}
-
-size_t fricreg_disk_ctx_errmsg_copy(const fricreg_disk_ctx *ctx, char *buf, size_t len)
-{
-    return fr_error_copy(fricreg_disk_ctx_errmsg(ctx), buf, len);
-}
+FR_ERROR_GETTERS(fricreg_disk_ctx, "NULL context")

@@ -183,17 +183,4 @@ int fricreg_hb_set_continuation(fricreg_hb *hb, double ds, double ds_min, double
     return FRICREG_OK;
 }
 
-int fricreg_hb_errcode(const fricreg_hb *hb)
-{
-    return hb ? hb->err.code : FRICREG_OK;
-}
-
-const char *fricreg_hb_errmsg(const fricreg_hb *hb)
-{
-    return hb ? hb->err.msg : "NULL HB driver";
-}
-
-size_t fricreg_hb_errmsg_copy(const fricreg_hb *hb, char *buf, size_t len)
-{
-    return fr_error_copy(fricreg_hb_errmsg(hb), buf, len);
-}
+FR_ERROR_GETTERS(fricreg_hb, "NULL HB driver")

@@ -301,17 +301,4 @@ int fricreg_aft_jenkins_normal_exact(fricreg_aft *aft, double kt, double mu, dou
     return fr_aft_exact_normal(aft, fn, kt, mu, n0, kn, u, g, f, nf, jac);
 }
 
-int fricreg_aft_errcode(const fricreg_aft *aft)
-{
-    return aft ? aft->err.code : FRICREG_OK;
-}
-
-const char *fricreg_aft_errmsg(const fricreg_aft *aft)
-{
-    return aft ? aft->err.msg : "NULL AFT workspace";
-}
-
-size_t fricreg_aft_errmsg_copy(const fricreg_aft *aft, char *buf, size_t len)
-{
-    return fr_error_copy(fricreg_aft_errmsg(aft), buf, len);
-}
+FR_ERROR_GETTERS(fricreg_aft, "NULL AFT workspace")

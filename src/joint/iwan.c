@@ -386,17 +386,4 @@ int fricreg_iwan_get_slider(fricreg_iwan *iw, size_t n, size_t ns, double w[])
     return FRICREG_OK;
 }
 
-int fricreg_iwan_errcode(const fricreg_iwan *iw)
-{
-    return iw ? iw->err.code : FRICREG_OK;
-}
-
-const char *fricreg_iwan_errmsg(const fricreg_iwan *iw)
-{
-    return iw ? iw->err.msg : "NULL Iwan elements";
-}
-
-size_t fricreg_iwan_errmsg_copy(const fricreg_iwan *iw, char *buf, size_t len)
-{
-    return fr_error_copy(fricreg_iwan_errmsg(iw), buf, len);
-}
+FR_ERROR_GETTERS(fricreg_iwan, "NULL Iwan elements")

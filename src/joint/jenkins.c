@@ -258,17 +258,4 @@ int fricreg_jenkins_get_slider(fricreg_jenkins *j, size_t n, double w[])
     return FRICREG_OK;
 }
 
-int fricreg_jenkins_errcode(const fricreg_jenkins *j)
-{
-    return j ? j->err.code : FRICREG_OK;
-}
-
-const char *fricreg_jenkins_errmsg(const fricreg_jenkins *j)
-{
-    return j ? j->err.msg : "NULL Jenkins elements";
-}
-
-size_t fricreg_jenkins_errmsg_copy(const fricreg_jenkins *j, char *buf, size_t len)
-{
-    return fr_error_copy(fricreg_jenkins_errmsg(j), buf, len);
-}
+FR_ERROR_GETTERS(fricreg_jenkins, "NULL Jenkins elements")

@@ -552,17 +552,4 @@ int fricreg_structure_get_stat(const fricreg_structure *s, int which, int64_t *v
     return FRICREG_OK;
 }
 
-int fricreg_structure_errcode(const fricreg_structure *s)
-{
-    return s ? s->err.code : FRICREG_OK;
-}
-
-const char *fricreg_structure_errmsg(const fricreg_structure *s)
-{
-    return s ? s->err.msg : "NULL structure";
-}
-
-size_t fricreg_structure_errmsg_copy(const fricreg_structure *s, char *buf, size_t len)
-{
-    return fr_error_copy(fricreg_structure_errmsg(s), buf, len);
-}
+FR_ERROR_GETTERS(fricreg_structure, "NULL structure")
