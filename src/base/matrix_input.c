@@ -8,6 +8,7 @@
 #include "fricreg.h"
 #include "matrix_input.h"
 #include "sparse_factor.h"
+#include "sparse_ops.h"
 
 #define SYMMETRY_RTOL 1e-12
 #define KNOWN_FLAGS (FRICREG_SPARSE_ONE_BASED | FRICREG_SPARSE_UPPER | FRICREG_SPARSE_LOWER)
@@ -129,22 +130,6 @@ cholmod_triplet *fr_triplet_new(size_t nrows, size_t ncols, size_t nnz, cholmod_
     return cholmod_l_allocate_triplet(nrows, ncols, nnz > 0 ? nnz : 1, 0, CHOLMOD_REAL, c);
 }
 
-/* The value of entry (i, j) of the sorted A (0 if absent). */
-static double entry(const cholmod_sparse *A, SuiteSparse_long i, SuiteSparse_long j)
-{
-    const SuiteSparse_long *Ap = A->p, *Ai = A->i;
-    const double *Ax = A->x;
-    SuiteSparse_long lo = Ap[j], hi = Ap[j + 1];
-    while (lo < hi) {
-        SuiteSparse_long mid = lo + (hi - lo) / 2;
-        if (Ai[mid] < i)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo < Ap[j + 1] && Ai[lo] == i ? Ax[lo] : 0.0;
-}
-
 /* sqrt of each row's largest magnitude into scale[n] (the square root: no overflow of the
  * product of two scales). */
 static void row_scales(const cholmod_sparse *A, double scale[])
@@ -195,8 +180,8 @@ static int symmetric_part(cholmod_sparse *A, cholmod_common *c, cholmod_sparse *
             status = fr_error_set(err, FRICREG_ENOTSYM,
                                   "%s: entries (%ld, %ld) = %g and (%ld, %ld) = %g differ: the "
                                   "matrix is not symmetric",
-                                  who, (long)i, (long)j, entry(A, i, j), (long)j, (long)i,
-                                  entry(A, j, i));
+                                  who, (long)i, (long)j, fr_csc_entry(A, i, j), (long)j, (long)i,
+                                  fr_csc_entry(A, j, i));
     }
     if (status == FRICREG_OK) {
         S = cholmod_l_add(A, At, (double[2]){0.5, 0.0}, (double[2]){0.5, 0.0}, 1, 1, c);

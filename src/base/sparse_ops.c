@@ -95,3 +95,23 @@ void fr_csc_mult_add(const cholmod_sparse *A, double alpha, const double x[], do
                 y[Ai[p]] += Ax[p] * xj;
     }
 }
+
+SuiteSparse_long fr_csc_position(const cholmod_sparse *A, SuiteSparse_long i, SuiteSparse_long j)
+{
+    const SuiteSparse_long *Ap = A->p, *Ai = A->i;
+    SuiteSparse_long lo = Ap[j], hi = Ap[j + 1];
+    while (lo < hi) {
+        SuiteSparse_long mid = lo + (hi - lo) / 2;
+        if (Ai[mid] < i)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo < Ap[j + 1] && Ai[lo] == i ? lo : -1;
+}
+
+double fr_csc_entry(const cholmod_sparse *A, SuiteSparse_long i, SuiteSparse_long j)
+{
+    SuiteSparse_long at = fr_csc_position(A, i, j);
+    return at < 0 ? 0.0 : ((const double *)A->x)[at];
+}

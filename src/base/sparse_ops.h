@@ -30,4 +30,11 @@ void fr_csc_mult_t(const cholmod_sparse *A, const double x[], double y[]);
 /* y[nrow] += alpha A x[ncol] (A unsymmetric). */
 void fr_csc_mult_add(const cholmod_sparse *A, double alpha, const double x[], double y[]);
 
+/* The position of entry (i, j) in A's column j, whose row indices are sorted (by bisection),
+ * or -1 if the column holds no row i. */
+SuiteSparse_long fr_csc_position(const cholmod_sparse *A, SuiteSparse_long i, SuiteSparse_long j);
+
+/* Entry (i, j) of A, whose columns' row indices are sorted: 0 if absent. */
+double fr_csc_entry(const cholmod_sparse *A, SuiteSparse_long i, SuiteSparse_long j);
+
 #endif

@@ -29,6 +29,7 @@
 #include "sparse_coupling.h"
 #include "base/matrix_input.h"
 #include "base/sparse_factor.h"
+#include "base/sparse_ops.h"
 
 #define SYMMETRY_RTOL 1e-12
 #define PSD_RTOL 1e-12
@@ -41,28 +42,13 @@ static int out_of_memory(fricreg_ctx *ctx, const char *who)
     return fr_fail(ctx, FRICREG_ENOMEM, "%s: out of memory for m = %zu", who, ctx->m);
 }
 
-/* Entry (i, j) of the sorted A, 0 if absent. */
-static double entry(const cholmod_sparse *A, SuiteSparse_long i, SuiteSparse_long j)
-{
-    const SuiteSparse_long *Ap = A->p, *Ai = A->i;
-    SuiteSparse_long lo = Ap[j], hi = Ap[j + 1];
-    while (lo < hi) {
-        SuiteSparse_long mid = lo + (hi - lo) / 2;
-        if (Ai[mid] < i)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo < Ap[j + 1] && Ai[lo] == i ? ((const double *)A->x)[lo] : 0.0;
-}
-
 /* diag[j] = A_jj, each >= DBL_MIN: a mobility whose inverse, the scale of the tangent, does
  * not overflow (as the dense setter). */
 static int check_diagonal(fricreg_ctx *ctx, const cholmod_sparse *A, long long base, double diag[],
                           const char *who)
 {
     for (size_t j = 0; j < ctx->m; j++) {
-        diag[j] = entry(A, (SuiteSparse_long)j, (SuiteSparse_long)j);
+        diag[j] = fr_csc_entry(A, (SuiteSparse_long)j, (SuiteSparse_long)j);
         if (!(diag[j] >= DBL_MIN))
             return fr_fail(ctx, FRICREG_ENOTPSD, "%s: W(%lld, %lld) = %g must be >= %g", who,
                            SHOWN(j), SHOWN(j), diag[j], DBL_MIN);
@@ -83,8 +69,8 @@ static int check_symmetry(fricreg_ctx *ctx, const cholmod_sparse *A, const cholm
                 fabs(Dx[p]) / sqrt(diag[i]) / sqrt(diag[j]) > SYMMETRY_RTOL)
                 return fr_fail(ctx, FRICREG_ENOTSYM,
                                "%s: W(%lld, %lld) = %g but W(%lld, %lld) = %g", who, SHOWN(i),
-                               SHOWN(j), entry(A, i, (SuiteSparse_long)j), SHOWN(j), SHOWN(i),
-                               entry(A, (SuiteSparse_long)j, i));
+                               SHOWN(j), fr_csc_entry(A, i, (SuiteSparse_long)j), SHOWN(j),
+                               SHOWN(i), fr_csc_entry(A, (SuiteSparse_long)j, i));
         }
     return FRICREG_OK;
 }

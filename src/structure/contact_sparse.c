@@ -112,21 +112,6 @@ static int permute(struct fr_contact_sparse *f, const cholmod_sparse *U, SuiteSp
     return 1;
 }
 
-/* U's entry (i, j), i <= j, by bisection of its sorted column j (it is there: U holds it). */
-static SuiteSparse_long find(const cholmod_sparse *U, SuiteSparse_long i, SuiteSparse_long j)
-{
-    const SuiteSparse_long *Up = U->p, *Ui = U->i;
-    SuiteSparse_long lo = Up[j], hi = Up[j + 1] - 1;
-    while (lo < hi) {
-        SuiteSparse_long mid = lo + (hi - lo) / 2;
-        if (Ui[mid] < i)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo;
-}
-
 /* K_eff's values into f->base, in A's layout. */
 static int base_values(struct fr_contact_sparse *f, const cholmod_sparse *Keff,
                        const cholmod_sparse *U, const SuiteSparse_long at[], cholmod_common *c)
@@ -140,7 +125,7 @@ static int base_values(struct fr_contact_sparse *f, const cholmod_sparse *Keff,
     for (SuiteSparse_long j = 0; j < (SuiteSparse_long)f->n; j++)
         for (SuiteSparse_long p = Kp[j]; p < Kp[j + 1]; p++)
             if (Ki[p] <= j)
-                f->base[at[find(U, Ki[p], j)]] += Kx[p];
+                f->base[at[fr_csc_position(U, Ki[p], j)]] += Kx[p];
     return 1;
 }
 
@@ -169,7 +154,7 @@ static int products(struct fr_contact_sparse *f, const cholmod_sparse *U,
             for (SuiteSparse_long r = p; r < Jp[i + 1]; r++, q++) {
                 SuiteSparse_long a = Ji[p] < Ji[r] ? Ji[p] : Ji[r];
                 SuiteSparse_long b = Ji[p] < Ji[r] ? Ji[r] : Ji[p];
-                f->pos[q] = at[find(U, a, b)];
+                f->pos[q] = at[fr_csc_position(U, a, b)];
                 /* a repeated row of J: its cross term lands on the diagonal twice */
                 f->val[q] = Jx[p] * Jx[r] * (a == b && p != r ? 2.0 : 1.0);
             }
