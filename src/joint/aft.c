@@ -242,6 +242,22 @@ static int check_excursion(fricreg_aft *a, const char *fn, double kt, double mu,
     return FRICREG_OK;
 }
 
+/* The checks of the 1-D Jenkins element with a normal law: its displacements u[n] and forces
+ * f[n] as check's for one slider of stiffness kt (the normal law checked apart), then the
+ * normal law's; sampled: the excursion too. */
+static int check_jenkins_normal(fricreg_aft *aft, const char *fn, int sampled, double kt, double mu,
+                                double n0, double kn, size_t n, const double u[], const double g[],
+                                double f[], double nf[])
+{
+    double unit = 1.0; /* check() reads a slider bound: the normal law is checked apart */
+    int status = check(aft, fn, sampled, 1, &kt, &unit, n, u, f);
+    if (status == FRICREG_OK)
+        status = check_normal(aft, fn, mu, n0, kn, g, nf);
+    if (status == FRICREG_OK && sampled)
+        status = check_excursion(aft, fn, kt, mu, n0, kn, g);
+    return status;
+}
+
 int fricreg_aft_jenkins_normal_sampled(fricreg_aft *aft, double kt, double mu, double n0, double kn,
                                        size_t n, const double u[], const double g[], double f[],
                                        double nf[], double jac[])
@@ -249,13 +265,8 @@ int fricreg_aft_jenkins_normal_sampled(fricreg_aft *aft, double kt, double mu, d
     static const char fn[] = "jenkins_normal_sampled";
     if (aft == NULL)
         return FRICREG_ENULL;
-    double unit = 1.0; /* check() reads a slider bound: the normal law is checked apart */
-    int status = check(aft, fn, 1, 1, &kt, &unit, n, u, f);
-    if (status == FRICREG_OK)
-        status = check_normal(aft, fn, mu, n0, kn, g, nf);
+    int status = check_jenkins_normal(aft, fn, 1, kt, mu, n0, kn, n, u, g, f, nf);
     if (status != FRICREG_OK)
-        return status;
-    if ((status = check_excursion(aft, fn, kt, mu, n0, kn, g)) != FRICREG_OK)
         return status;
     fr_aft_sampled_normal(aft, kt, mu, n0, kn, u, g, f, nf, jac);
     return FRICREG_OK;
@@ -292,10 +303,7 @@ int fricreg_aft_jenkins_normal_exact(fricreg_aft *aft, double kt, double mu, dou
     static const char fn[] = "jenkins_normal_exact";
     if (aft == NULL)
         return FRICREG_ENULL;
-    double unit = 1.0; /* check() reads a slider bound: the normal law is checked apart */
-    int status = check(aft, fn, 0, 1, &kt, &unit, n, u, f);
-    if (status == FRICREG_OK)
-        status = check_normal(aft, fn, mu, n0, kn, g, nf);
+    int status = check_jenkins_normal(aft, fn, 0, kt, mu, n0, kn, n, u, g, f, nf);
     if (status != FRICREG_OK)
         return status;
     return fr_aft_exact_normal(aft, fn, kt, mu, n0, kn, u, g, f, nf, jac);
