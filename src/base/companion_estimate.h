@@ -2,7 +2,7 @@
 /* companion_estimate.h — the one decision of the a-posteriori error estimates against the
  * Coulomb problem (eps -> 0) from companion runs along (eps, dt) -> (eps/2, dt/2) ->
  * (eps/4, dt/4): fricreg_sim's (src/sim/error_estimate.c), fricreg_structure's
- * (src/structure/error_estimate.c) and fricreg-sim's hold, belt and disk (src/cli/problems.c,
+ * (src/structure/error_estimate.c) and fricreg-sim's hold, belt and disk (src/cli/problem_estimate.c,
  * which compiles this file in as it does the RK4: the library does not export it). Pure. */
 #ifndef FRICREG_COMPANION_ESTIMATE_H
 #define FRICREG_COMPANION_ESTIMATE_H

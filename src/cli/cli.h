@@ -247,11 +247,11 @@ fricreg_sim *cli_make_sim(const struct cli_run *run);
 int cli_parse_exact(int argc, char **argv, struct cli_run *run);
 int cli_exact_summary(const struct cli_run *run, FILE *out);
 
-/* structure.c: `fricreg-sim structure`, a linear structure from Matrix Market files
+/* structure_run.c: `fricreg-sim structure`, a linear structure from Matrix Market files
  * (fricreg_structure.h); argv after the subcommand. Returns the exit status. */
 int cli_structure(int argc, char **argv, FILE *out);
 
-/* problems.c: `fricreg-sim hold|belt|disk`, the reference problems beyond the paper
+/* problem_runs.c: `fricreg-sim hold|belt|disk`, the reference problems beyond the paper
  * (src/problems/); argv after the subcommand. Returns the exit status, or -1 if command is
  * none of them. */
 int cli_problem(const char *command, int argc, char **argv, FILE *out);
