@@ -637,6 +637,29 @@ if ! grep -Eq '"nelements": 2, .*"element_kind": "mixed", "element_sets": \[\{"t
         d = $3 - $4 - $5; if (d < 0) d = -d; exit !(d <= 1e-12 * $3) }'; then
     echo "FAIL: --elements jenkins and iwan: dissipations $per_element, alone $alone: $(head -c 600 "$d/es_mix.json") $(cat "$tmp/err")"; fails=$((fails + 1))
 fi
+# --output-elements LIST: the trajectory's columns of the elements listed, in its order: each
+# one's forces eI_f.. and its sliders' slips eI_s.. (fricreg_structure_get_elements). On the run
+# above with elements 2,1: the Jenkins element's force is kt (u1 - s) and the Iwan element's
+# sum_j k_j (u2 - s_j) at every row, each slider's within its slip force, the Jenkins element
+# reaching its 0.05 N (it slips), to rounding; the other columns are those of the run without.
+"$sim" $es --elements jenkins:$d/J1of2.mtx:$d/P_slip.txt --elements iwan:$d/J2of2.mtx:$d/E_iwan3.txt --output trajectory --output-elements 2,1 >"$d/es_cols.csv" 2>"$tmp/err"
+"$sim" $es --elements jenkins:$d/J1of2.mtx:$d/P_slip.txt --elements iwan:$d/J2of2.mtx:$d/E_iwan3.txt --output trajectory >"$d/es_nocols.csv" 2>>"$tmp/err"
+total=$((total + 1))
+if [ "$(head -n 1 "$d/es_cols.csv")" != "t,u1,u2,v1,v2,f1,e2_f1,e2_s1,e2_s2,e2_s3,e1_f1,e1_s1" ] ||
+   [ "$(cut -d, -f1-6 "$d/es_cols.csv" | cksum)" != "$(cksum <"$d/es_nocols.csv")" ] ||
+   ! awk -F, 'function abs(x) { return x < 0 ? -x : x }
+        NR > 1 { if (abs($11 - 200 * ($2 - $12)) > 1e-12 || abs($11) > 0.05 * (1 + 1e-12)) exit 1
+                 split("100 60 40", k, " "); split("0.02 0.03 0.04", phi, " "); sum = 0
+                 for (j = 1; j <= 3; j++) { fj = k[j] * ($3 - $(7 + j)); sum += fj
+                                            if (abs(fj) > phi[j] * (1 + 1e-12)) exit 1 }
+                 if (abs($7 - sum) > 1e-12) exit 1
+                 if (abs($11) > top) top = abs($11) }
+        END { exit !(NR > 100 && top >= 0.05 * (1 - 1e-12)) }' "$d/es_cols.csv"; then
+    echo "FAIL: --output-elements 2,1: $(head -n 3 "$d/es_cols.csv") $(cat "$tmp/err")"; fails=$((fails + 1))
+fi
+expect_usage_error "^fricreg-sim: --output-elements: element 3 is beyond the model's 2 (the run adds 2 elements)" $es --elements jenkins:$d/J1of2.mtx:$d/P_slip.txt --elements iwan:$d/J2of2.mtx:$d/E_iwan3.txt --output trajectory --output-elements 1,3
+expect_usage_error "^fricreg-sim: --output-elements: only --output trajectory" $es --elements jenkins:$d/J1of2.mtx:$d/P_slip.txt --output-elements 1
+expect_usage_error "^fricreg-sim: --output-elements: '0' is not an element" $es --elements jenkins:$d/J1of2.mtx:$d/P_slip.txt --output trajectory --output-elements 0
 # (3) A type with a normal law: the 3-D contact element above (--jenkins-2d with --normal, its
 # line kt mu n0 kn) as --elements contact_3d, its three rows in one matrix and its line in the
 # kernel's layout kt mu kn n0 gap: its forces [f_x, f_y, N] are the old run's jenkins_forces and

@@ -15,6 +15,7 @@ struct structure_options {
     const char *load, *load_history; /* --load P.mtx and its time function g (NULL: g = 1) */
     const char *output_dofs;         /* --output-dofs LIST as given (dof_list.h), or NULL */
     const char *output_contacts;     /* --output-contacts LIST or "none" as given, or NULL */
+    const char *output_elements;     /* --output-elements LIST or "none" as given, or NULL */
     const char *checkpoint_in, *checkpoint_out; /* fricreg_structure_save's blob, or NULL */
     struct cli_element_files elements; /* --jenkins with its parameters (jenkins_input.h) */
     struct cli_element_set_options element_sets; /* --elements, in order (element_sets.h) */

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* dof_list.c — the lists of --output-dofs and --output-contacts (dof_list.h): "A" or "A-B"
+/* dof_list.c — the lists of --output-dofs, --output-contacts and --output-elements (dof_list.h): "A" or "A-B"
  * items between commas,
  * whole numbers from 1 written in decimal digits only (no sign, no blank), read by strtoull.
  * Checked twice: its syntax when the options are parsed, its range against the model once
@@ -9,12 +9,14 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "cli.h"
 #include "dof_list.h"
 
 const struct cli_list_kind cli_dof_list = {"dof", "(--mass is %zu x %zu)"},
-                           cli_contact_list = {"contact", "(--contacts has %zu rows)"};
+                           cli_contact_list = {"contact", "(--contacts has %zu rows)"},
+                           cli_element_list = {"element", "(the run adds %zu elements)"};
 
 /* One number at *text, digits only, >= 1; *text moved past it. 1 if read, else 0. */
 static int read_dof(const char **text, unsigned long long *value)
@@ -49,8 +51,8 @@ static int read_item(const char *option, const struct cli_list_kind *kind, const
     char what[128];
     if (!ok) {
         snprintf(what, sizeof what,
-                 "'%.*s' is not a %s from 1 or a range A-B of them (LIST: e.g. 1-10,57)", len,
-                 start, kind->noun);
+                 "'%.*s' is not %s %s from 1 or a range A-B of them (LIST: e.g. 1-10,57)", len,
+                 start, strchr("aeiou", kind->noun[0]) ? "an" : "a", kind->noun);
         return cli_usage_error(option, what);
     }
     if (*lo > *hi) {

@@ -1,19 +1,20 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* dof_list.h — the lists of `fricreg-sim structure --output-dofs LIST` and `--output-contacts
- * LIST`: dofs or contacts numbered from 1 as the Matrix Market files number them (a contact is
- * a row of J), comma-separated, each a number or a range A-B (A <= B), e.g. "1-10,57". */
+/* dof_list.h — the lists of `fricreg-sim structure --output-dofs LIST`, `--output-contacts
+ * LIST` and `--output-elements LIST`: dofs or contacts numbered from 1 as the Matrix Market
+ * files number them (a contact is a row of J), elements from 1 in the order the run adds them,
+ * comma-separated, each a number or a range A-B (A <= B), e.g. "1-10,57". */
 #ifndef FRICREG_CLI_DOF_LIST_H
 #define FRICREG_CLI_DOF_LIST_H
 
 #include <stddef.h>
 
-/* What a list names, for its messages: "dof" beyond "the model's" n ("--mass is n x n"), or
- * "contact" beyond n ("--contacts has n rows"). */
+/* What a list names, for its messages: "dof" beyond "the model's" n ("--mass is n x n"),
+ * "contact" beyond n ("--contacts has n rows"), or "element" ("the run adds n elements"). */
 struct cli_list_kind {
     const char *noun;      /* "dof", "contact" */
     const char *size_says; /* a printf format of n (%zu twice) naming where n comes from */
 };
-extern const struct cli_list_kind cli_dof_list, cli_contact_list;
+extern const struct cli_list_kind cli_dof_list, cli_contact_list, cli_element_list;
 
 /* Checks LIST's syntax (no model needed: the parser's check). 0, or CLI_EXIT_USAGE after one
  * line on stderr naming option and what is wrong. */

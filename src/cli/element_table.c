@@ -18,7 +18,7 @@ static int has_normal(const struct cli_elements *el)
 
 /* The type as the setters chose it: two tangential rows the 2-D types, one slider the Jenkins
  * types, else the Iwan family's of ns sliders (NULL beyond the kernel's most). */
-static const fricreg_element_type *type_of(const struct cli_elements *el)
+const fricreg_element_type *cli_elements_type(const struct cli_elements *el)
 {
     int normal = has_normal(el);
     if (el->kind == CLI_ELEMENTS_JENKINS_2D || el->kind == CLI_ELEMENTS_CONTACT_3D)
@@ -36,7 +36,9 @@ static int elements_as_set(const struct cli_elements *el, size_t n, struct cli_e
 {
     int normal = has_normal(el);
     size_t m = el->m, ns = el->ns;
-    *set = (struct cli_element_set){.type = type_of(el), .me = m, .params_path = el->path};
+    *set = (struct cli_element_set){.type = cli_elements_type(el),
+                                    .me = m,
+                                    .params_path = el->path};
     if (set->type == NULL)
         return cli_file_error(el->option, el->path, 0, "%zu sliders an element: at most %d", ns,
                               FRICREG_ELEMENT_MAX_SLIDERS);

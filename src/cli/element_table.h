@@ -11,6 +11,9 @@
 #include "element_sets.h"
 #include "jenkins_input.h"
 
+/* The type el's elements are added as (below); NULL beyond the kernel's most sliders. */
+const fricreg_element_type *cli_elements_type(const struct cli_elements *el);
+
 /* Adds el's m elements (none: nothing) for n dofs to model by add (the model's
  * cli_element_set_adder) as one set of the type the per-kind setters of 1.x installed: the
  * Jenkins types for one slider (an Iwan element of one slider too), the Iwan family of el->ns

@@ -71,6 +71,14 @@ static int parse_output_contacts(const struct cli_option *row, const char *text)
     return strcmp(text, "none") == 0 ? 0 : cli_check_dof_list(row->name, &cli_contact_list, text);
 }
 
+/* --output-elements LIST or none: its syntax now, its range once the elements are read. */
+static int parse_output_elements(const struct cli_option *row, const char *text)
+{
+    struct structure_options *o = row->slot;
+    o->output_elements = text;
+    return strcmp(text, "none") == 0 ? 0 : cli_check_dof_list(row->name, &cli_element_list, text);
+}
+
 /* Options that need others, or exclude them. */
 static int check_options(const struct structure_options *o)
 {
@@ -94,6 +102,9 @@ static int check_options(const struct structure_options *o)
     if (o->output_contacts != NULL && o->output != CLI_TRAJECTORY)
         return cli_usage_error("--output-contacts",
                                "only --output trajectory writes force columns");
+    if (o->output_elements != NULL && o->output != CLI_TRAJECTORY)
+        return cli_usage_error("--output-elements",
+                               "only --output trajectory writes element columns");
     if (o->dt == 0.0)
         return cli_usage_error("--dt", "missing");
     if (o->t_end == 0.0)
@@ -216,6 +227,11 @@ static size_t structure_table(struct structure_options *o, struct cli_option tab
          .help = "the contacts (rows of J) whose force columns the trajectory shows, numbered "
                  "from 1 as --output-dofs's dofs, or none",
          .dflt = "all"},
+        {"--output-elements", CLI_CUSTOM, .slot = o, .parse = parse_output_elements, .meta = "LIST",
+         .help = "the elements whose columns the trajectory shows, numbered from 1 in the order "
+                 "added, as --output-dofs's dofs: each one's forces eI_f1.. (tangential, then "
+                 "normal) and its sliders' slips eI_s1..",
+         .dflt = "none"},
         {"--output-every", CLI_WHOLE, .slot = &o->output_every, .lo = 1, .hi = 1e9,
          .given = &o->output_every_given, .meta = "K",
          .help = "trajectory only: a row every K-th step (step times k dt, k a multiple of K), "

@@ -129,17 +129,25 @@ static int run_structure(fricreg_structure *s, const struct structure_options *o
                                 .m = in->m,
                                 .dt = o->dt,
                                 .t_end = o->t_end,
-                                .every = o->output_every};
+                                .every = o->output_every,
+                                .s = s};
     size_t *dof = NULL, *contact = NULL;
     int listed = select_output(o, in, &run, &dof, &contact);
-    if (listed != 0)
+    if (listed == 0)
+        listed = cli_element_columns_make(o->output_elements, in, &run.elements);
+    if (listed != 0) {
+        cli_element_columns_free(&run.elements);
+        free(dof);
+        free(contact);
         return listed;
+    }
     /* De: the old options' 2 me, or the sets' D[me] and forces[nforces] */
     double *buf = calloc(3 * in->n + in->mlib + 2 * in->el.m + in->sets.me + in->sets.nforces,
                          sizeof *buf);
     if (buf == NULL) {
         free(dof);
         free(contact);
+        cli_element_columns_free(&run.elements);
         return cli_usage_error("structure", "out of memory");
     }
     run.u = buf;
@@ -152,6 +160,7 @@ static int run_structure(fricreg_structure *s, const struct structure_options *o
             free(buf);
             free(dof);
             free(contact);
+            cli_element_columns_free(&run.elements);
             fprintf(stderr, "fricreg-sim: cannot create a temporary file\n");
             return CLI_EXIT_RUN;
         }
@@ -181,6 +190,7 @@ static int run_structure(fricreg_structure *s, const struct structure_options *o
     free(buf);
     free(dof);
     free(contact);
+    cli_element_columns_free(&run.elements);
     return status;
 }
 

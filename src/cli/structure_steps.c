@@ -27,6 +27,7 @@ void cli_structure_csv_header(const struct structure_run *run)
         fprintf(out, ",v%zu", cli_structure_shown(run, k) + 1);
     for (size_t k = 0; k < run->ncontact; k++)
         fprintf(out, ",f%zu", contact_shown(run, k) + 1);
+    cli_element_columns_header(&run->elements, out);
     fputc('\n', out);
 }
 
@@ -39,7 +40,7 @@ static int row_due(const struct structure_run *run, double t)
     return (int64_t)floor(t / run->dt + 0.5) % run->every == 0;
 }
 
-/* A CSV row of the state (t, u and v at the dofs shown, f[m]). */
+/* A CSV row of the state (t, u and v at the dofs shown, f[m], the elements' columns). */
 static void csv_row(struct structure_run *run, double t, const double u[], const double v[],
                     const double f[])
 {
@@ -51,6 +52,7 @@ static void csv_row(struct structure_run *run, double t, const double u[], const
         fprintf(out, ",%.17g", v[cli_structure_shown(run, k)]);
     for (size_t k = 0; k < run->ncontact; k++)
         fprintf(out, ",%.17g", f[contact_shown(run, k)]);
+    cli_element_columns_row(&run->elements, run->s, out);
     fputc('\n', out);
     run->rows_written++;
 }

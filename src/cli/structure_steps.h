@@ -10,6 +10,7 @@
 #include <stdio.h>
 
 #include "cli_structure.h"
+#include "element_columns.h"
 #include "fricreg_structure.h"
 #include "structure_model.h"
 
@@ -24,6 +25,9 @@ struct structure_run {
      * (0 without --contacts: not the one of bound 0 standing in). */
     const size_t *dof, *contact;
     size_t ndof, ncontact, m;
+    /* --output-elements: the elements' columns of the trajectory, read from s */
+    struct cli_element_columns elements;
+    const fricreg_structure *s;
     /* --output-every K: a row at step times k dt with k a multiple of every, and at the run's
      * first (rows = 0) and last (t = t_end) */
     double dt, t_end;
@@ -37,7 +41,7 @@ size_t cli_structure_shown(const struct structure_run *run, size_t k);
 double cli_structure_value(const fricreg_structure *s, int which);
 
 /* The trajectory's header into run->rows: t, u and v at the dofs shown, f at the contacts
- * shown. */
+ * shown, the elements' columns. */
 void cli_structure_csv_header(const struct structure_run *run);
 
 /* Steps of dt to t_end, the last one shortened, the state observed after each: the
