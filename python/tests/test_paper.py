@@ -49,7 +49,7 @@ def rk4(t, y, h):
 
 def dissipation_per_cycle(cycles):
     """fricreg-sim's fixed-step rk4: each step of 2 dt two classical steps of dt, the last step
-    of a cycle shortened to end on it (src/sim/sim.c, advance)."""
+    of a cycle shortened to end on it (src/sim/integrate.c)."""
     period, step = 2 * np.pi / OMEGA, 2 * DT
     y, t, D = np.zeros(2 * N + 1), 0.0, []
     for cycle in range(1, cycles + 1):

@@ -53,7 +53,7 @@ int fr_ctx_tangent_may_be_dense(const fricreg_ctx *ctx);
 int fr_stiffness_times_eps(fricreg_ctx *ctx, int chord, double *rate);
 
 /* A workspace a driver keeps in the context between its calls (fricreg_ctx_solve_step's
- * solver, contact_step.c), so that a run of calls allocates and analyses once. The context
+ * solver, contact_step_solver.c), so that a run of calls allocates and analyses once. The context
  * holds one: fr_ctx_workspace returns it (NULL: none); fr_ctx_keep_workspace hands one over
  * with the function that frees it (the one held before, if any, freed first);
  * fr_ctx_drop_workspace frees it. The context drops it itself in fricreg_ctx_free and in the

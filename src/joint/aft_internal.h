@@ -20,7 +20,7 @@ struct fricreg_aft {
 
     /* exact path */
     double *qre, *qim; /* [(H+1)(2H+1)]: (1 + i t)^(D+h) (1 - i t)^(D-h), coefficient of t^k
-                          at [(2D+1) h + k]: the half-angle form of e^{i h phi} (aft_exact.c),
+                          at [(2D+1) h + k]: the half-angle form of e^{i h phi} (aft_roots.c),
                           for the degree D = table_H <= H of the last root solve */
     int table_H;
     double *poly;                  /* [2H+1] the real polynomial in t handed to GSL */
@@ -74,7 +74,7 @@ double fr_aft_trig_eval(int H, const double *co, double theta, double *dg);
 /* The sign changes of the trigonometric polynomial co (not constant, entries of order 1) in
  * [0, 2pi), sorted, into roots[], the sign of co after each into dir[], their count into *m
  * (0: co keeps one sign). Grid isolation with GSL's Brent, the companion matrix where the grid
- * cannot certify (aft_exact.c). FRICREG_OK, or FRICREG_EINTEGRATOR (message recorded). Uses
+ * cannot certify (aft_roots.c). FRICREG_OK, or FRICREG_EINTEGRATOR (message recorded). Uses
  * cand, cim, poly, roots, qre, qim as scratch. */
 int fr_aft_sign_changes(fricreg_aft *a, const char *fn, const double *co, double *roots, int *dir,
                         int *m);

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* aft_normal_exact.c — the exact AFT of a 1-D Jenkins element under normal load with lift-off
  * (fricreg_aft_jenkins_normal_exact): the pieces of the periodic response located as roots of
- * trigonometric polynomials and integrated in closed form (aft_exact.c's root isolation, Brent
+ * trigonometric polynomials and integrated in closed form (aft_roots.c's root isolation, Brent
  * and Gram matrices), the counterpart of aft_normal.c's sampled march.
  *
  * With the gap P(θ) = N0 + kn g(θ), the bound is mu max(0, P). Three kinds of piece:

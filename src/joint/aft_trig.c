@@ -2,7 +2,7 @@
 /* aft_trig.c — the trigonometric polynomials of the AFT's coefficient layout (aft_internal.h):
  * the basis phi_j(theta) = 1, cos theta, sin theta, cos 2 theta, ..., and the half-angle table
  * that turns a polynomial of degree D in theta into an algebraic one in t = tan(theta/2), whose
- * roots the exact paths isolate (aft_exact.c). Below both AFT paths and the workspace. */
+ * roots the exact paths isolate (aft_roots.c). Below both AFT paths and the workspace. */
 #include <math.h>
 #include <string.h>
 

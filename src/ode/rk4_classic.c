@@ -108,7 +108,7 @@ static int rk4_apply(void *vstate, size_t dim, double t, double h, double y[], d
         status = classical_step(s, dim, t + 0.5 * h, 0.5 * h, s->mid, y, sys);
     if (status != GSL_SUCCESS)
         return status;
-    if (yerr != NULL) /* NULL: sim.c's direct call, which reads no estimate */
+    if (yerr != NULL) /* NULL: integrate.c's direct call, which reads no estimate */
         memset(yerr, 0, dim * sizeof *yerr);
     return GSL_SUCCESS;
 }

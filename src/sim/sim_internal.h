@@ -13,13 +13,13 @@
 #include "richardson.h"
 #include "system.h"
 
-/* |state| beyond this: diverged, an unstable step on its way to overflow (sim.c's after-step
+/* |state| beyond this: diverged, an unstable step on its way to overflow (integrate.c's after-step
  * check; central_step.c's fused pass). */
 #define FR_SIM_STATE_LIMIT 1e100
 
 struct fr_kinks; /* kinks.c */
 
-/* The rule from eps's velocity tolerance, per unit of eps (sim.c, default tolerances; and the
+/* The rule from eps's velocity tolerance, per unit of eps (tolerances.c; and the
  * warning against looser ones, warnings.c). */
 #define FR_SIM_ATOL_V_PER_EPS 1e-3
 
@@ -34,7 +34,7 @@ struct fricreg_sim {
     int integrator;
     double dt, rtol, atol;
     /* The absolute tolerances of an adaptive run, one of: atol for every component (atol_vec
-     * NULL, atol_from_eps 0); fricreg's rule from eps (atol_from_eps 1: sim.c, default_atol);
+     * NULL, atol_from_eps 0); fricreg's rule from eps (atol_from_eps 1: tolerances.c);
      * the caller's per component (atol_vec [atol_n = 2 ndof + 1], owned). The rule's velocity
      * tolerance is scaled by rule_scale: 1, or an error estimate's companion's tolerance scale,
      * so that all of the companion's tolerances are tightened together (fr_sim_level). */
@@ -116,7 +116,7 @@ int fr_sim_eval_friction(fricreg_sim *sim, double t, const double y[], int want_
  * have neither. */
 int fr_sim_run_plain(fricreg_sim *sim, double t_end);
 
-/* sim.c: a setter or a run called from the observer would free or replace the state the run
+/* settings.c: a setter or a run called from the observer would free or replace the state the run
  * is stepping: refused (FRICREG_EINVAL, recorded), and the run goes on. `who` names the
  * call. */
 int fr_sim_refuse_during_run(fricreg_sim *sim, const char *who);
@@ -147,7 +147,7 @@ struct fr_extrap {
     int64_t rhs_evals; /* all levels */
 };
 
-/* sim.c: releases an extrapolation (NULL: nothing), as free_run discards it. */
+/* settings.c: releases an extrapolation (NULL: nothing), as fr_sim_free_run discards it. */
 void fr_extrap_free(struct fr_extrap *x);
 
 /* level.c: a new simulation with every setting of sim at level k: eps / 2^k, a fixed
@@ -160,9 +160,9 @@ int fr_sim_level(const fricreg_sim *sim, int k, double tol_scale, fricreg_sim **
  * and the estimate per cycle (a failed companion leaves +infinity and its message for the
  * warning); fr_sim_check_estimate raises the estimate's warnings (warnings.c). */
 void fr_sim_error_estimate(fricreg_sim *sim);
-/* The rule from eps's absolute tolerance of a velocity at eps (sim.c). */
+/* The rule from eps's absolute tolerance of a velocity at eps (tolerances.c). */
 double fr_sim_rule_atol_v(const fricreg_sim *sim, double eps);
-/* What an adaptive run's tolerances ask of the dissipation D: atol_D + rtol |D| (sim.c). */
+/* What an adaptive run's tolerances ask of the dissipation D: atol_D + rtol |D| (tolerances.c). */
 double fr_sim_dissipation_tolerance(const fricreg_sim *sim, double D);
 void fr_sim_check_estimate(fricreg_sim *sim);
 

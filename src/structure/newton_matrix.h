@@ -91,7 +91,7 @@ int fr_newton_stick_solve(struct fr_newton_matrix *nm, const cholmod_sparse *Wef
                           cholmod_common *c);
 
 /* The first trial fraction of a Newton direction (Newmark's stop of a slipping contact,
- * newmark.c and contact_step.c): with zdot[m] the velocities at the iterate, weff_df[m] =
+ * newmark.c and contact_step_newton.c): with zdot[m] the velocities at the iterate, weff_df[m] =
  * W_eff df, coef = c, fz[m] the slopes' signs of the last direction (nm->fz), the largest
  * lambda in (0, 1] at which a slipping contact (mun_i > 0, fz_i = 0) not yet stopped this step
  * reaches zdot_i = 0 where the full step takes it from one side across the whole band

@@ -2,7 +2,7 @@
 /* ode_tolerances.c — the absolute tolerances of fricreg_structure_run_ode per component of its
  * state y = (u, v, W_in, E_visc, D_1 … D_m): set by the caller
  * (fricreg_structure_set_ode_abs_tolerances), one scalar, or the rule from eps
- * (FRICREG_ATOL_FROM_EPS), fricreg_sim's rule (src/sim/sim.c) carried through J.
+ * (FRICREG_ATOL_FROM_EPS), fricreg_sim's rule (src/sim/tolerances.c) carried through J.
  *
  * Law (4) reads the contact velocity zdot_i = sum_j J_ij v_j, which lies inside its band
  * |zdot_i| < eps at a stick while the v_j may be of order 1: a relative tolerance on v, or
