@@ -244,20 +244,30 @@ size_t fricreg_hb_nma_points(const fricreg_hb *hb)
     return hb && hb->nma ? hb->nma->npts : 0;
 }
 
+int fr_hb_nma_point_args(fricreg_hb *hb, const char *fn, const double *amplitude,
+                         const double *omega, const double *zeta, size_t i, size_t n,
+                         const char *what)
+{
+    if (amplitude == NULL || omega == NULL || zeta == NULL)
+        return fr_fail(hb, FRICREG_ENULL, "%s: %s is NULL", fn,
+                       amplitude == NULL ? "amplitude"
+                       : omega == NULL   ? "omega"
+                                         : "zeta");
+    if (i >= n)
+        return fr_fail(hb, FRICREG_EINVAL, "%s: i = %zu, %zu %s stored", fn, i, n, what);
+    return FRICREG_OK;
+}
+
 int fricreg_hb_nma_point(fricreg_hb *hb, size_t i, double *amplitude, double *omega, double *zeta,
                          size_t ndof, size_t nc, double x[])
 {
     static const char fn[] = "nma_point";
     if (hb == NULL)
         return FRICREG_ENULL;
-    if (amplitude == NULL || omega == NULL || zeta == NULL)
-        return fr_fail(hb, FRICREG_ENULL, "%s: %s is NULL", fn,
-                       amplitude == NULL ? "amplitude"
-                       : omega == NULL   ? "omega"
-                                         : "zeta");
-    size_t npts = fricreg_hb_nma_points(hb);
-    if (i >= npts)
-        return fr_fail(hb, FRICREG_EINVAL, "%s: i = %zu, %zu points stored", fn, i, npts);
+    int status = fr_hb_nma_point_args(hb, fn, amplitude, omega, zeta, i, fricreg_hb_nma_points(hb),
+                                      "points");
+    if (status != FRICREG_OK)
+        return status;
     struct fr_hb_nma *s = hb->nma;
     if (x != NULL && (ndof != hb->n || nc != hb->nc))
         return fr_fail(hb, FRICREG_ESIZE,
@@ -268,7 +278,6 @@ int fricreg_hb_nma_point(fricreg_hb *hb, size_t i, double *amplitude, double *om
     if (x != NULL && (!hb->have_backbone || s->nq != hb->nq))
         return fr_fail(hb, FRICREG_EINVAL, "%s: the model changed since fricreg_hb_nma", fn);
     const double *p = s->pts + i * s->stride;
-    int status = FRICREG_OK;
     if (x != NULL) {
         memcpy(s->y, p + 3, s->nq * sizeof(double));
         s->y[s->nq] = p[1];

@@ -577,14 +577,10 @@ int fricreg_hb_nma_fold(fricreg_hb *hb, size_t i, double *amplitude, double *ome
     static const char fn[] = "nma_fold";
     if (hb == NULL)
         return FRICREG_ENULL;
-    if (amplitude == NULL || omega == NULL || zeta == NULL)
-        return fr_fail(hb, FRICREG_ENULL, "%s: %s is NULL", fn,
-                       amplitude == NULL ? "amplitude"
-                       : omega == NULL   ? "omega"
-                                         : "zeta");
-    size_t n = fricreg_hb_nma_folds(hb);
-    if (i >= n)
-        return fr_fail(hb, FRICREG_EINVAL, "%s: i = %zu, %zu folds stored", fn, i, n);
+    int status = fr_hb_nma_point_args(hb, fn, amplitude, omega, zeta, i, fricreg_hb_nma_folds(hb),
+                                      "folds");
+    if (status != FRICREG_OK)
+        return status;
     const double *f = hb->nma->folds + 3 * i;
     *amplitude = f[0];
     *omega = f[1];

@@ -124,4 +124,11 @@ typedef int (*fr_hb_nma_backbone)(fricreg_hb *hb, const char *fn, struct fr_hb_n
 int fr_hb_nma_run(fricreg_hb *hb, const char *fn, size_t mode, int damping, double a0, double a1,
                   size_t npoints, fr_hb_nma_backbone body);
 
+/* The getters' shared checks of a stored backbone point or fold (nma.c): amplitude, omega
+ * and zeta not NULL (FRICREG_ENULL), i < n, the count of what (FRICREG_EINVAL "i = .., n
+ * <what> stored"); messages recorded with fn. FRICREG_OK otherwise. */
+int fr_hb_nma_point_args(fricreg_hb *hb, const char *fn, const double *amplitude,
+                         const double *omega, const double *zeta, size_t i, size_t n,
+                         const char *what);
+
 #endif
