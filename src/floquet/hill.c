@@ -26,6 +26,7 @@
 
 #include "base/gsl_mem.h"
 #include "floquet_internal.h"
+#include "hb/lu.h"
 
 static const double TWO_PI = 6.283185307179586;
 

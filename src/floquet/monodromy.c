@@ -36,6 +36,7 @@
 #include "joint/aft_slips.h"
 #include "monodromy.h"
 #include "switches.h"
+#include "hb/lu.h"
 
 /* The workspace, sized for n dofs, m rows of J, S sliders and H harmonics; column-major
  * matrices of the order P = 2n + S at most. */

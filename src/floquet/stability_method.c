@@ -8,6 +8,7 @@
 
 #include "monodromy.h"
 #include "stability_method.h"
+#include "hb/busy.h"
 
 int fr_hb_stability_in_force(const fricreg_hb *hb)
 {

@@ -30,6 +30,7 @@
 #include "arclength.h"
 #include "bifurcations.h"
 #include "points.h"
+#include "hb/residual.h"
 
 /* The last step: the point at p1 by Newton at fixed parameter, from the direction's line
  * there; kept as the driver's solution. */

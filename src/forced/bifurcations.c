@@ -9,6 +9,7 @@
 
 #include "bifurcations.h"
 #include "floquet/stability_method.h"
+#include "hb/recover.h"
 
 size_t fricreg_hb_bifurcations(const fricreg_hb *hb)
 {

@@ -12,6 +12,8 @@
 #include "solve_at.h"
 #include "arclength.h"
 #include "start.h"
+#include "hb/monitor.h"
+#include "hb/busy.h"
 
 int fricreg_hb_continue(fricreg_hb *hb, double omega0, double omega1, size_t nq, const double q0[])
 {

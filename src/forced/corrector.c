@@ -11,6 +11,9 @@
 #include "base/line_search.h"
 #include "base/newton_loop.h"
 #include "corrector.h"
+#include "hb/dynamic.h"
+#include "hb/residual.h"
+#include "hb/monitor.h"
 
 /* The sign of the determinant of the LU factor in A (order ld, pivots piv2): det A = det A^T,
  * U's diagonal's signs times -1 for each interchange (LAPACK's pivots count from 1). */

@@ -7,6 +7,9 @@
 #include <string.h>
 
 #include "corrector.h"
+#include "hb/monitor.h"
+#include "hb/busy.h"
+#include "hb/recover.h"
 
 static int brent_peak(fricreg_hb *hb, struct fr_hb_branch *b, size_t k, const double *y3[3],
                       double sb, double fb, double *omega, double *rms);

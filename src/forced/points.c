@@ -10,6 +10,10 @@
 
 #include "points.h"
 #include "floquet/stability_method.h"
+#include "hb/dynamic.h"
+#include "hb/residual.h"
+#include "hb/busy.h"
+#include "hb/recover.h"
 
 size_t fricreg_hb_points(const fricreg_hb *hb)
 {

@@ -8,6 +8,8 @@
 #include "solve_at.h"
 #include "hb/hb_internal.h"
 #include "start.h"
+#include "hb/monitor.h"
+#include "hb/busy.h"
 
 int fricreg_hb_solve(fricreg_hb *hb, double omega, size_t nq, const double q0[], double q[])
 {

@@ -8,6 +8,8 @@
 #include "floquet/stability_method.h"
 #include "hb/hb_internal.h"
 #include "solve_at.h"
+#include "hb/dynamic.h"
+#include "hb/newton.h"
 
 /* The arguments every solve shares: omega, nq, q0. */
 int fr_hb_check_start(fricreg_hb *hb, const char *fn, double omega, size_t nq, const double *q0)

@@ -12,6 +12,8 @@
 #include "solve_at.h"
 #include "arclength.h"
 #include "start.h"
+#include "hb/dynamic.h"
+#include "hb/residual.h"
 
 /* The excitation level where fricreg_hb_solve's start begins: small enough for every element
  * to stay in the regime of the stuck guess (a Jenkins element slips once kt |q| > mu N, its

@@ -11,6 +11,13 @@
 #include <string.h>
 
 #include "points.h"
+#include "hb/dynamic.h"
+#include "hb/hb.h"
+#include "hb/residual.h"
+#include "hb/newton.h"
+#include "hb/monitor.h"
+#include "hb/busy.h"
+#include "hb/recover.h"
 
 /* The estimate's safety factor on |rms(2H + 1) − rms(H)| (the header's docstring). */
 #define SAFETY 2.0

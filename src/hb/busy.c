@@ -3,6 +3,7 @@
  * under way (fricreg_hb_set_monitor): one message for the setters, the solves and the
  * outputs. At the bottom of hb/, below the sparse model and the monitor alike. */
 #include "hb_internal.h"
+#include "busy.h"
 
 int fr_hb_busy(fricreg_hb *hb, const char *fn)
 {

@@ -10,6 +10,9 @@
 #include <string.h>
 
 #include "hb_internal.h"
+#include "dynamic.h"
+#include "sparse.h"
+#include "lu.h"
 
 /* (a + ib)(c + id) accumulated into out[0..1] with the sign s. */
 static inline void cmac(double *out, double s, double a, double b, double c, double d)

@@ -9,6 +9,7 @@
 #include "elements.h"
 #include "joint/element_kind.h"
 #include "model.h"
+#include "busy.h"
 
 /* The block of type's elements over J and params (the layouts of fricreg_element.h): by the
  * AFT its kind names, HB's own exact ones or the march of its eval (joint/aft_march.h). */

@@ -9,6 +9,7 @@
 #include "element_store.h"
 #include "elements.h"
 #include "model.h"
+#include "busy.h"
 
 int fr_hb_check_entries(fricreg_hb *hb, const char *fn, size_t rows, size_t ndof, const double *J,
                         const char *name)

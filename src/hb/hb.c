@@ -12,6 +12,9 @@
 #include "hb_internal.h"
 #include "joint/aft_march.h"
 #include "rows.h"
+#include "sparse.h"
+#include "hb.h"
+#include "busy.h"
 
 #define MAX_DENSE_DOFS 4096
 #define MAX_DOFS ((size_t)1 << 24)

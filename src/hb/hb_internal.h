@@ -1,10 +1,11 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* hb_internal.h — the harmonic-balance driver's layout (fricreg_hb.h) and the kernels its files
- * share: dynamic.c factors the dynamic stiffnesses and condenses them on the elements
- * (G_h = J D_h^-1 J^T), residual.c evaluates (R), its Jacobian and its Ω derivative, newton.c
- * solves at one Ω, recover.c gives the displacements. Complex numbers are stored as (re, im)
- * pairs of doubles. Included inside src/hb/ and by the three modules built on the driver:
- * floquet/ (stability), nma/ (nonlinear modes), forced/ (the forced response). */
+/* hb_internal.h — the harmonic-balance driver's layout (fricreg_hb.h) and its inline
+ * accessors. The kernels its files share have headers of their own beside it: dynamic.h
+ * factors the dynamic stiffnesses and condenses them on the elements (G_h = J D_h^-1 J^T),
+ * residual.h evaluates (R), its Jacobian and its Ω derivative, newton.h solves at one Ω,
+ * recover.h gives the displacements. Complex numbers are stored as (re, im) pairs of doubles.
+ * Included inside src/hb/ and by the three modules built on the driver: floquet/ (stability),
+ * nma/ (nonlinear modes), forced/ (the forced response). */
 #ifndef FRICREG_HB_INTERNAL_H
 #define FRICREG_HB_INTERNAL_H
 
@@ -228,134 +229,10 @@ static inline double *fr_hb_block_of(const fricreg_hb *hb, size_t e)
     return hb->jq + hb->ejq[e] * hb->nc * hb->nc;
 }
 
-/* Factors D_h(omega) for h = 0..H and forms Y, G, ql (and dG, dql when deriv); keeps them
- * while omega stays. FRICREG_OK or FRICREG_ESINGULAR (message recorded, with fn). */
-int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv);
-
-/* Factors the sparse D_h at omega (its values formed from vM, vC, vK) and solves for Y_h's
- * columns, the factor then freed. FRICREG_OK, FRICREG_ESINGULAR, FRICREG_ENONFINITE,
- * FRICREG_ENOMEM (message recorded, with fn). */
-int fr_hb_sparse_solve(fricreg_hb *hb, const char *fn, int h, double omega);
-
-/* Z = D_h' Y_h on the sparse pattern, D_h' = −2 h² Ω M + i h C. */
-void fr_hb_sparse_derivative(fricreg_hb *hb, int h, double omega);
-
-/* Switches a dense driver to the sparse model (its M, C, K converted) and sets the model's
- * defaults for a sparse-only one; frees the sparse state. */
-int fr_hb_sparse_defaults(fricreg_hb *hb);
-void fr_hb_sparse_free(fricreg_hb *hb);
-/* Frees the harmonics' LU factors (kept from one frequency to the next within a solving call),
- * so that a call's results do not depend on the pivots of the calls before it. */
-void fr_hb_sparse_release(fricreg_hb *hb);
-
-/* dst's model becomes a copy of the sparse src's M, C, K (dst turned sparse): FRICREG_OK or
- * FRICREG_ENOMEM, dst's model unchanged then. */
-int fr_hb_sparse_copy(fricreg_hb *dst, const fricreg_hb *src);
-
-/* A new driver at harmonics H (1 <= H <= FRICREG_HB_MAX_HARMONICS) with src's model, elements,
- * excitation, Newton's settings, monitor and bound (hb.c); no solution, stability off.
- * FRICREG_OK or FRICREG_ENOMEM. */
-int fr_hb_clone(const fricreg_hb *src, int harmonics, fricreg_hb **out);
-
-/* The dense setters' path on a sparse model: the checked, symmetric dense A installed as
- * matrix which (0 M, 1 C, 2 K). */
-int fr_hb_sparse_set_dense(fricreg_hb *hb, const char *fn, int which, const double *A);
-/* A model matrix (which: 0 M, 1 C, 2 K) from compressed sparse columns (by_columns) or rows,
- * with enum fricreg_sparse_flags; C replaces Rayleigh's. The checks and results of
- * fricreg_hb_set_mass_csc, whose messages name fn. */
-int fr_hb_set_compressed(fricreg_hb *hb, const char *fn, int which, size_t ndof, int by_columns,
-                         int flags, const int64_t ptr[], const int64_t ind[],
-                         const double values[]);
-
-/* out[e (m+1) + c] (complex, c <= m) = s sum_k L(e, k) B[k (m+1) + c] into G (c < m) and q
- * (c = m), L(e, k) = J(e, k) when left is NULL, else left[k (m+1) + e] (a column of Y as a row):
- * the condensation J Y_h, or with left = Y_h the derivative −Y_h^T D' Y_h from Z = D' Y_h. */
-void fr_hb_project(const fricreg_hb *hb, const double *left, const double *B, double s, double *G,
-                   double *q);
-
-/* The dense LU factors (lu.c, LAPACK's getrf): A[n n] row-major (complex: (re, im) pairs)
- * factored in place with partial pivoting, its pivots U_kk at A's diagonal, the row
- * interchanges into piv[n]; no allocation, no GSL; n < 2^31. The solves overwrite x[n]
- * (complex: [2n]) with A^-1 x from the factor and piv; every pivot must be nonzero (the callers
- * check them first). */
-void fr_hb_lu_factor(double *A, size_t n, int *piv);
-void fr_hb_lu_solve_factored(const double *LU, size_t n, const int *piv, double *x);
-void fr_hb_zlu_factor(double *A, size_t n, int *piv);
-void fr_hb_zlu_solve_factored(const double *LU, size_t n, const int *piv, double *x);
-/* The stability's M^-1 (lu.c): Mlu[n n] holding M factored in place into piv[n], every pivot
- * above 1e-14 of M's largest entry; else FRICREG_ESINGULAR, the message naming the method that
- * needs it. */
-int fr_hb_mass_lu(fricreg_hb *hb, const char *fn, const char *method, double *Mlu, int *piv);
-
-/* The real LU solve of Newton's matrix A[nd nd] (factored in place) for rhs[nd] into sol[nd]
- * (may alias rhs). FRICREG_OK or FRICREG_ESINGULAR (a pivot below 1e-14 of the matrix's
- * largest entry; message recorded). */
-int fr_hb_lu_solve(fricreg_hb *hb, const char *fn, size_t nd, double *rhs, double *sol);
-
-/* The forces and, with jac, Jacobians of every element at q[nq] (fq, jq), then the residual
- * (R) into R[nq] at the factored Ω. FRICREG_OK or FRICREG_EINTEGRATOR (the AFT). */
-int fr_hb_residual(fricreg_hb *hb, const char *fn, const double *q, double *R, int jac);
-
-/* Newton's matrix I + G ∂F/∂q from the Jacobian blocks jac[me (rpe nc)²], into A with leading
- * dimension ld (rows and columns 0..nq-1). */
-void fr_hb_matrix(fricreg_hb *hb, const double *jac, double *A, size_t ld);
-
-/* dR/dΩ at the forces fq: dG F − dql, into out[nq] (needs the derivatives factored). */
-void fr_hb_domega(fricreg_hb *hb, double *out);
-
-/* out[nq] = G F − load ql in (R)'s real form from the forces f[nq] and a complex
- * G[(H+1) m m], ql[(H+1) m] (ql NULL: none), e.g. a derivative of the condensation. */
-void fr_hb_apply(const fricreg_hb *hb, const double *G, const double *ql, double load,
-                 const double *f, double *out);
-
 /* The load's factor in (R) and the displacements: λ, 0 in a nonlinear mode (no load). */
 static inline double fr_hb_load(const fricreg_hb *hb)
 {
     return hb->free_vibration ? 0.0 : hb->level;
 }
-
-/* dR/dλ = −ql in (R)'s real form, into out[nq] (the excitation level's derivative). */
-void fr_hb_dlevel(const fricreg_hb *hb, double *out);
-
-/* The displacement scale of the convergence test: max(|q|_inf, |ql|_inf), or 1 if both 0. */
-double fr_hb_scale(const fricreg_hb *hb, const double *q);
-
-/* Newton's method at the factored Ω from qw (in place), tolerance relative to the scale.
- * FRICREG_OK, FRICREG_ESINGULAR, FRICREG_EWORK, FRICREG_EINTEGRATOR (message recorded). */
-int fr_hb_newton(fricreg_hb *hb, const char *fn);
-
-/* The monitor's hook (monitor.c), called at every Newton iterate of every solve: counts it,
- * enforces fricreg_hb_set_max_iterations's bound and calls the monitor with the continued
- * parameter's value and the iterate's residual relative to Newton's bound. FRICREG_OK, or
- * FRICREG_EWORK with hb->stopped set (message recorded, with fn): the call is over. */
-int fr_hb_tick(fricreg_hb *hb, const char *fn, double parameter, double residual);
-
-/* The monitor's parameter at the factored iterate of fr_hb_newton and the corrector: Ω or λ
- * (fr_hb_begin's report_omega). */
-double fr_hb_parameter(const fricreg_hb *hb);
-
-/* A solving call's start (busy, its count reset, the parameter the monitor sees) and end: the status it returns, FRICREG_EWORK
- * with the stop's message once stopped, whatever a fallback made of it. */
-void fr_hb_begin(fricreg_hb *hb, int report_omega);
-int fr_hb_end(fricreg_hb *hb, int status);
-
-/* FRICREG_EINVAL (message recorded, with fn) for a call from the monitor during a solve. */
-int fr_hb_busy(fricreg_hb *hb, const char *fn);
-
-/* The starting guess into qw: every element stuck (stuck) or slipping freely (F = 0). */
-int fr_hb_guess(fricreg_hb *hb, const char *fn, int stuck);
-
-/* The displacements' coefficients x[n nc] from the forces fq at the factored Ω. */
-void fr_hb_recover(const fricreg_hb *hb, double *x);
-
-/* Each dof's RMS over a period from the forces fq at the factored Ω, into rms[n]. */
-void fr_hb_rms(const fricreg_hb *hb, double *rms);
-
-/* As fr_hb_rms over the harmonics 0..harmonics (<= H) only, and each dof's amplitude of the
- * fundamental |X_1| into amplitude[n] (NULL: not wanted). */
-void fr_hb_rms_upto(const fricreg_hb *hb, int harmonics, double *rms, double *amplitude);
-
-/* Dof k's RMS over a period from the forces fq at the factored Ω. */
-double fr_hb_rms_dof(const fricreg_hb *hb, size_t k);
 
 #endif

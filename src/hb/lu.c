@@ -16,6 +16,7 @@
 
 #include "base/lapack.h"
 #include "hb_internal.h"
+#include "lu.h"
 
 void fr_hb_lu_factor(double *A, size_t n, int *piv)
 {

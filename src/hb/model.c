@@ -9,6 +9,8 @@
 
 #include "base/matrix_input.h"
 #include "model.h"
+#include "sparse.h"
+#include "busy.h"
 
 /* A model change: the factors, the kept solution and the branch's unknowns no longer hold. */
 void fr_hb_invalidate(fricreg_hb *hb)

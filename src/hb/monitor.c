@@ -6,6 +6,9 @@
 #include <inttypes.h>
 
 #include "hb_internal.h"
+#include "sparse.h"
+#include "monitor.h"
+#include "busy.h"
 
 int fricreg_hb_set_monitor(fricreg_hb *hb, fricreg_hb_monitor fn, void *user)
 {

@@ -10,6 +10,9 @@
 #include "base/newton_loop.h"
 #include "hb_internal.h"
 #include "joint/element_kind.h"
+#include "residual.h"
+#include "newton.h"
+#include "monitor.h"
 
 static double norm2(const double *v, size_t n)
 {

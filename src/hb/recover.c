@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "hb_internal.h"
+#include "recover.h"
 
 /* X_h of dof k (complex, into out[2]) from the forces fq. */
 static void coefficient(const fricreg_hb *hb, int h, size_t k, double *out)

@@ -16,6 +16,8 @@
 
 #include "hb_internal.h"
 #include "joint/aft_march.h"
+#include "lu.h"
+#include "residual.h"
 
 /* out[nq] = G F − load ql in the real form above, from the forces f[nq] and the complex
  * G[(H+1) m m], ql[(H+1) m] (the condensation or its Ω derivative; NULL: no load). */

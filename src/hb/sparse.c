@@ -16,6 +16,8 @@
 #include "base/matrix_input.h"
 #include "base/sparse_factor.h"
 #include "hb_internal.h"
+#include "sparse.h"
+#include "busy.h"
 
 /* ---- The pattern --------------------------------------------------------------------------- */
 

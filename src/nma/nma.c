@@ -15,6 +15,9 @@
 #include <string.h>
 
 #include "nma_internal.h"
+#include "hb/monitor.h"
+#include "hb/busy.h"
+#include "hb/recover.h"
 
 #define MAX_HALVINGS 10
 

@@ -28,6 +28,8 @@
 #include "base/line_search.h"
 #include "base/newton_loop.h"
 #include "nma_internal.h"
+#include "hb/lu.h"
+#include "hb/monitor.h"
 
 struct backbone {
     fricreg_hb *hb;

@@ -28,6 +28,10 @@
 #include "base/line_search.h"
 #include "base/newton_loop.h"
 #include "nma_internal.h"
+#include "hb/dynamic.h"
+#include "hb/lu.h"
+#include "hb/residual.h"
+#include "hb/monitor.h"
 
 void fr_hb_nma_enter(fricreg_hb *hb, struct fr_hb_nma *nma)
 {

@@ -1,0 +1,22 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* lu.h — internal: the dense LU factors (LAPACK's getrf) of the dynamic stiffnesses, Newton's matrix and M (lu.c). */
+#ifndef FRICREG_HB_LU_H
+#define FRICREG_HB_LU_H
+
+#include "hb_internal.h"
+
+/* The dense LU factors (lu.c, LAPACK's getrf): A[n n] row-major (complex: (re, im) pairs)
+ * factored in place with partial pivoting, its pivots U_kk at A's diagonal, the row
+ * interchanges into piv[n]; no allocation, no GSL; n < 2^31. The solves overwrite x[n]
+ * (complex: [2n]) with A^-1 x from the factor and piv; every pivot must be nonzero (the callers
+ * check them first). */
+void fr_hb_lu_factor(double *A, size_t n, int *piv);
+void fr_hb_lu_solve_factored(const double *LU, size_t n, const int *piv, double *x);
+void fr_hb_zlu_factor(double *A, size_t n, int *piv);
+void fr_hb_zlu_solve_factored(const double *LU, size_t n, const int *piv, double *x);
+/* The stability's M^-1 (lu.c): Mlu[n n] holding M factored in place into piv[n], every pivot
+ * above 1e-14 of M's largest entry; else FRICREG_ESINGULAR, the message naming the method that
+ * needs it. */
+int fr_hb_mass_lu(fricreg_hb *hb, const char *fn, const char *method, double *Mlu, int *piv);
+
+#endif
