@@ -4,9 +4,11 @@
 # -fsanitize=address,undefined -fno-sanitize-recover=all and without the AVX2 kernels
 # (FRICREG_AVX2=OFF: on an AVX2 machine the main tree never runs the portable loops, and their
 # results must be the same bits), and its ctest run (the packaging, ABI
-# and source-tree (docs) labels left out: they test files, not memory). Any sanitizer report fails the test, also
-# one from a program whose non-zero exit a test expects: reports go to files, which must stay
-# absent. Exits 77 (ctest: skipped) when the compiler cannot build and run with the sanitizers.
+# and source-tree (docs) labels left out: they test files, not memory), its entries with the long
+# cases the plain quick tier leaves to the release tier (FRICREG_QUICK_LONG_CASES; not the
+# guard's long sweep, guard_long, which runs natively only). Any sanitizer report fails the
+# test, also one from a program whose non-zero exit a test expects: reports go to files, which
+# must stay absent. Exits 77 (ctest: skipped) when the compiler cannot build and run with the sanitizers.
 # Usage: sanitize.sh SOURCE_DIR WORK_DIR C_COMPILER FORTRAN_COMPILER|-
 src=$1 work=$2 cc=$3 fc=$4
 flags="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
@@ -26,6 +28,7 @@ log=$work/log
 # No Python binding: an instrumented library cannot be loaded into an uninstrumented python3.
 # shellcheck disable=SC2086 # $fortran is two words or one, on purpose
 cmake -S "$src" -B "$work/tree" -DCMAKE_C_COMPILER="$cc" $fortran -DFRICREG_SANITIZE_TREE=ON -DFRICREG_PETSC=OFF \
+      -DFRICREG_QUICK_LONG_CASES=ON \
       -DFRICREG_PYTHON=OFF -DFRICREG_AVX2=OFF -DFRICREG_WERROR=OFF \
       -DCMAKE_C_FLAGS="$flags" -DCMAKE_Fortran_FLAGS="$flags" \
       -DCMAKE_EXE_LINKER_FLAGS="$flags" -DCMAKE_SHARED_LINKER_FLAGS="$flags" >"$log" 2>&1 &&

@@ -749,8 +749,10 @@ static Suite *disk_ctx_suite(void)
     Suite *s = suite_create("disk_ctx");
     TCase *tc = tcase_create("core");
     /* the two comparisons with the test's own FISTA over random cases (500 evaluations, half
-     * the program's time in the reference): natively and under ASan, not valgrind */
+     * the program's time in the reference): natively and under ASan, not valgrind; 5 s, the
+     * release tier's (disk_ctx_release) */
     TCase *sweeps = tcase_create("sweeps");
+    tcase_set_tags(sweeps, "release");
     tcase_set_timeout(tc, 120);
     tcase_set_timeout(sweeps, 120);
     tcase_add_test(tc, test_isotropic_blocks_are_the_scalar_law);

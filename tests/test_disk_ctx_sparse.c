@@ -615,9 +615,11 @@ static Suite *disk_ctx_sparse_suite(void)
     tcase_add_test(tc, test_sparse_refused_keeps_the_context);
     suite_add_tcase(s, tc);
     /* the collinear chains up to m = 2000 against a dense 1-D context: seconds natively,
-     * too long under valgrind (tests/CMakeLists.txt runs "cases" only there) */
+     * too long under valgrind (tests/CMakeLists.txt runs "cases" only there); 6 s, the release
+     * tier's (disk_ctx_sparse_release): "cases" runs the same comparison at m = 250 */
     TCase *large = tcase_create("chains");
     tcase_set_timeout(large, 120);
+    tcase_set_tags(large, "release");
     tcase_add_test(large, test_collinear_chain_is_the_1d_context);
     suite_add_tcase(s, large);
     return s;

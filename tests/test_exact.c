@@ -1356,7 +1356,10 @@ static Suite *exact_suite(void)
     tcase_add_test(switching, test_no_stick_case_two_reversals_per_cycle);
     suite_add_tcase(s, switching);
 
+    /* Simulations at small dt against the exact solution (4 s): the release tier's
+     * (exact_release); the quick tier checks the solution against its closed forms above. */
     TCase *brute = tcase_create("brute_force");
+    tcase_set_tags(brute, "release");
     tcase_add_test(brute, test_quinn_converges_to_exact_as_dt_squared);
     tcase_add_test(brute, test_coulomb_converges_to_exact);
     tcase_add_test(brute, test_stick_fraction_matches_simulation);
@@ -1381,8 +1384,10 @@ static Suite *exact_suite(void)
     tcase_add_test(object, test_out_of_memory);
     suite_add_tcase(s, object);
 
+    /* Runs up to the work limits (5 s): the release tier's (exact_release) */
     TCase *work = tcase_create("work");
     tcase_set_timeout(work, 300.0); /* 2e6 switches: ~3 s alone, the machine may be shared */
+    tcase_set_tags(work, "release");
     tcase_add_test(work, test_work_is_bounded_slow_forcing);
     tcase_add_test(work, test_work_is_bounded_fast_forcing);
     tcase_add_test(work, test_work_is_bounded_cycle_cap);

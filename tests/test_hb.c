@@ -451,11 +451,19 @@ int main(void)
     TCase *tc = tcase_create("hb");
     tcase_add_test(tc, linear_stuck_closed_form);
     tcase_add_test(tc, harmonics_converge);
-    tcase_add_test(tc, continuation_over_resonance);
     tcase_add_test(tc, bad_input);
     suite_add_tcase(s, tc);
-    /* The Newmark references, 10^5 steps a frequency: native and ASan (tests/CMakeLists.txt) */
+    /* The chain's branch over its resonance (2 s): the release tier's (hb_release); the quick
+     * tier continues branches and locates their peaks in test_hb_continuation and
+     * test_hb_nma_peaks. */
+    TCase *tr = tcase_create("resonance");
+    tcase_set_tags(tr, "release");
+    tcase_add_test(tr, continuation_over_resonance);
+    suite_add_tcase(s, tr);
+    /* The Newmark references, 10^5 steps a frequency: native and ASan (tests/CMakeLists.txt);
+     * 2 s, the release tier's (hb_release) */
     TCase *td = tcase_create("time_domain");
+    tcase_set_tags(td, "release");
     tcase_add_test(td, oscillator_against_time_domain);
     tcase_add_test(td, chain_against_time_domain);
     suite_add_tcase(s, td);

@@ -215,9 +215,15 @@ int main(void)
     Suite *s = suite_create("hb_beam_si");
     TCase *tc = tcase_create("core");
     tcase_set_timeout(tc, 300);
-    tcase_add_test(tc, backbones_scale);
     tcase_add_test(tc, responses_scale);
     suite_add_tcase(s, tc);
+    /* (a), six backbones (2 s): the release tier's (hb_beam_si_release); (b) is the same
+     * similarity on the forced branches */
+    TCase *backbones = tcase_create("backbones");
+    tcase_set_timeout(backbones, 300);
+    tcase_set_tags(backbones, "release");
+    tcase_add_test(backbones, backbones_scale);
+    suite_add_tcase(s, backbones);
     SRunner *sr = srunner_create(s);
     srunner_run_all(sr, CK_NORMAL);
     int failed = srunner_ntests_failed(sr);

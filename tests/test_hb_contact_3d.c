@@ -456,6 +456,9 @@ int main(void)
     tcase_add_test(tc, backbone_starts_at_the_stuck_mode);
     tcase_add_test(tc, bad_input);
     tcase_add_test(td, against_a_long_time_integration);
+    /* HB at H = 15 and a time march to the settled period at two frequencies (12 s): the
+     * release tier's (hb_contact_3d_release) */
+    tcase_set_tags(td, "release");
     suite_add_tcase(s, tc);
     suite_add_tcase(s, td);
     SRunner *sr = srunner_create(s);

@@ -622,9 +622,8 @@ int main(void)
     tcase_set_timeout(tc, 120);
     tcase_set_timeout(td, 120);
     tcase_set_timeout(th, 120);
+    tcase_set_tags(th, "release"); /* 4 s: hb_continuation_release; core continues the chain */
     tcase_add_test(th, chain_every_harmonic);
-    tcase_add_test(tc, chain_coarse_ds_min);
-    tcase_add_test(tc, peak_against_fixed_omega);
     tcase_add_test(tc, contact_pair_every_route);
     tcase_add_test(tc, contact_pair_default_start_stable);
     tcase_add_test(tc, doubling_back_stops);
@@ -632,7 +631,15 @@ int main(void)
     tcase_add_test(tc, elements_change_between_branches);
     tcase_add_test(tc, peak_bad_input);
     tcase_add_test(td, contact_pair_time_domain);
+    /* the chain at H = 15 with a coarse ds_min, and each dof's peak against golden section
+     * (2 s): the release tier's (hb_continuation_release) */
+    TCase *tk = tcase_create("kinks_and_peak");
+    tcase_set_timeout(tk, 120);
+    tcase_set_tags(tk, "release");
+    tcase_add_test(tk, chain_coarse_ds_min);
+    tcase_add_test(tk, peak_against_fixed_omega);
     suite_add_tcase(s, tc);
+    suite_add_tcase(s, tk);
     suite_add_tcase(s, th);
     suite_add_tcase(s, td);
     SRunner *sr = srunner_create(s);

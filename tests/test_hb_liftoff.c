@@ -561,9 +561,15 @@ int main(void)
     tcase_add_test(tc, sparse_model_equals_dense);
     tcase_add_test(tc, iwan_normal_is_jenkins_normal);
     tcase_add_test(tc, iwan_normal_backbone_is_jenkins_normal);
-    tcase_add_test(tc, iwan_partial_liftoff_against_time_domain);
     tcase_add_test(tc, bad_input);
     suite_add_tcase(s, tc);
+    /* the Iwan element's lift-off against Newmark (2 s): the release tier's (hb_liftoff_release);
+     * the quick tier's partial_liftoff_against_time_domain is the Jenkins element's */
+    TCase *td = tcase_create("time_domain");
+    tcase_set_timeout(td, 60);
+    tcase_set_tags(td, "release");
+    tcase_add_test(td, iwan_partial_liftoff_against_time_domain);
+    suite_add_tcase(s, td);
     SRunner *sr = srunner_create(s);
     srunner_run_all(sr, CK_NORMAL);
     int failed = srunner_ntests_failed(sr);

@@ -297,9 +297,15 @@ Suite *hb_monodromy_suite(void)
     TCase *tc = tcase_create("core");
     tcase_set_timeout(tc, 300);
     tcase_add_test(tc, jenkins_pair_converges_in_h);
-    tcase_add_test(tc, frequencies_converge_in_h);
-    tcase_add_test(tc, long_chain_against_time_domain);
     suite_add_tcase(s, tc);
+    /* (b) and (c): the shootings at more frequencies (7 s) and the 60-dof chain's
+     * transient (2 s): the release tier's (hb_monodromy_release) */
+    TCase *more = tcase_create("more");
+    tcase_set_timeout(more, 300);
+    tcase_set_tags(more, "release");
+    tcase_add_test(more, frequencies_converge_in_h);
+    tcase_add_test(more, long_chain_against_time_domain);
+    suite_add_tcase(s, more);
     return s;
 }
 

@@ -149,6 +149,7 @@ int main(void)
     Suite *s = suite_create("hb_nma_shooting");
     TCase *tc = tcase_create("core");
     tcase_set_timeout(tc, 300);
+    tcase_set_tags(tc, "release"); /* 6 s: the release tier's (hb_nma_shooting_release) */
     tcase_add_test(tc, frequency_converges_in_h);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);

@@ -224,6 +224,8 @@ int main(void)
     Suite *s = suite_create("hb_sparse");
     TCase *tc = tcase_create("hb_sparse");
     TCase *branches = tcase_create("branches"); /* dense against sparse: 80 % of the time */
+    /* 3 s: the release tier's (hb_sparse_release); the sparse paths run at 10^4 dofs */
+    tcase_set_tags(branches, "release");
     tcase_add_test(tc, dense_and_sparse_forms_agree);
     tcase_add_test(branches, two_hundred_dofs);
     tcase_add_test(tc, ten_thousand_dofs);

@@ -899,9 +899,12 @@ Suite *hb_stability_suite(void)
     tcase_add_test(tc, sparse_as_dense);
     suite_add_tcase(s, tc);
 
-    /* The long sweeps (the contact pair's 200 points, the bisections): native and ASan only. */
+    /* The long sweeps (the contact pair's 200 points, the bisections): native and ASan only;
+     * 16 s, the release tier's (hb_stability_release; ctest hb_stability_sweeps where the quick
+     * entries run the release cases, tests/CMakeLists.txt). */
     TCase *sweeps = tcase_create("sweeps");
     tcase_set_timeout(sweeps, 300);
+    tcase_set_tags(sweeps, "release");
     tcase_add_test(sweeps, contact_pair_against_shooting);
     tcase_add_test(sweeps, gap_pair_bifurcations);
     tcase_add_test(sweeps, bilinear_period_doubling);

@@ -360,7 +360,9 @@ int main(void)
     tcase_add_test(tc, test_companion);
     tcase_add_test(tc, test_coarser_companion);
     tcase_add_test(tc, test_loose_tolerances_warn);
-    /* the rule's runs over tolerances and units: two thirds of the program's time */
+    /* the rule's runs over tolerances and units: two thirds of the program's time (3 s), the
+     * release tier's (structure_ode_tolerances_release); core runs them at one tolerance each */
+    tcase_set_tags(sweeps, "release");
     tcase_add_test(sweeps, test_rule_holds_the_dissipation);
     tcase_add_test(sweeps, test_loose_tolerances_any_unit);
     suite_add_tcase(suite, tc);

@@ -512,6 +512,8 @@ int main(void)
     Suite *s = suite_create("threads");
     TCase *tc = tcase_create("threads");
     tcase_set_timeout(tc, 600.0); /* under ThreadSanitizer, on a shared machine */
+    /* 10 s: the release tier's (threads_release, and tsan) */
+    tcase_set_tags(tc, "release");
     tcase_add_test(tc, threads_match_one_thread);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);

@@ -180,7 +180,8 @@ if [ $check -eq 1 ]; then
 fi
 
 # The programs of quick-tier ctest names: test_<name>, and test_alloc_failure for
-# alloc_failure_<case>, test_hb_stability for hb_stability_sweeps (one Check case each).
+# alloc_failure_<case>, test_hb_stability for hb_stability_sweeps, test_hb_march for
+# hb_march_orbit (one Check case each).
 programs_of() { # names...
     for t in "$@"; do
         case $t in
@@ -199,8 +200,11 @@ targets=$(programs_of $ctests)
 grep -q tsan "$blocks"/*/tests && targets="$targets test_threads"
 echo "building the copy: $targets"
 # Without the warning gate: a mutant may leave a variable unused, which must not make it
-# stillborn.
-if ! cmake -S "$tree" -B "$build" -DCMAKE_C_COMPILER="$cc" -DFRICREG_FORTRAN=OFF -DFRICREG_WERROR=OFF >>"$log" 2>&1 ||
+# stillborn. The quick entries the list names run their long cases too (the Check cases tagged
+# release, the CLI's long runs, every allocation failure: FRICREG_QUICK_LONG_CASES), which the
+# quick tier leaves to the release tier: a mutant that only a long case catches is caught here.
+if ! cmake -S "$tree" -B "$build" -DCMAKE_C_COMPILER="$cc" -DFRICREG_FORTRAN=OFF -DFRICREG_WERROR=OFF \
+        -DFRICREG_QUICK_LONG_CASES=ON >>"$log" 2>&1 ||
     ! cmake --build "$build" -j2 --target $targets >>"$log" 2>&1; then
     tail -n 30 "$log"
     echo "run.sh: the unmutated copy does not build" >&2
