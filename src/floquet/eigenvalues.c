@@ -2,7 +2,7 @@
 /* eigenvalues.c — the eigenvalues of a dense real nonsymmetric matrix by LAPACK's dgeev,
  * eigenvalues only (hb_internal.h): balancing, Hessenberg reduction and the multishift QR
  * with aggressive early deflation of dhseqr, blocked (BLAS 3), in the caller's workspace (no
- * allocation, no GSL error handler). Hill's method (stability.c) takes its exponents from
+ * allocation, no GSL error handler). Hill's method (hill.c) takes its exponents from
  * them.
  *
  * The matrix is row-major, LAPACK's column-major: dgeev sees A^T, whose eigenvalues are A's. */

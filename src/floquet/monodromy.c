@@ -25,7 +25,7 @@
  * in K; one that slips throughout (or has no bound) exerts a fixed force and stays out too.
  * Each slider in z forgets its offset at its onsets, which gives Φ one zero multiplier per
  * such slider: as many of the smallest |μ| are dropped, and the 2n left are the multipliers,
- * λ = log μ / T (Im λ in (−Ω/2, Ω/2]) the exponents, in the layout of Hill's (stability.c). */
+ * λ = log μ / T (Im λ in (−Ω/2, Ω/2]) the exponents, in the layout of Hill's (hill.c). */
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>

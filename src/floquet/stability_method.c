@@ -2,7 +2,7 @@
 /* stability_method.c — the stability of periodic solutions (fricreg_hb_set_stability,
  * fricreg_hb_set_stability_method): on or off, and by which method, the exact monodromy of
  * the orbit (monodromy.c) where every element is piecewise linear and Hill's method
- * (stability.c) elsewhere, unless chosen; the one entry point of the solves, the points and
+ * (hill.c) elsewhere, unless chosen; the one entry point of the solves, the points and
  * the bifurcations; the points' stability. */
 #include <stdlib.h>
 
