@@ -4,7 +4,7 @@
 # one COMMAND's parser knows, and every option name in src/cli that a parser knows is in that
 # command's help, but for the few it knows only to refuse with a reason (below). The man page
 # the build wrote is the program's own, and groff and man render it without a warning.
-# Each option name against each command (some 800 calls of the 1000, 12 s) with
+# Each option name against each command (some 800 calls of the 1000, most of its time) with
 # FRICREG_CLI_LONG=1 only (the release tier's cli_help_options_release); the quick tier tries
 # the listed options, and test_cli_help.c checks from the option tables that every row is listed.
 # Usage: cli_help.sh PATH/TO/fricreg-sim SOURCE_DIR PATH/TO/fricreg-sim.1
