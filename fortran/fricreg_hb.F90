@@ -70,12 +70,10 @@ module fricreg_hb_m
     procedure :: nma_points => hb_nma_points
     procedure :: nma_point => hb_nma_point
     procedure :: nma_continue => hb_nma_continue
-    procedure :: nma_folds => hb_nma_folds
-    procedure :: nma_fold => hb_nma_fold
     procedure :: nma_harmonic_energy => hb_nma_harmonic_energy
     procedure :: nma_modal_participation => hb_nma_modal_participation
-    procedure :: nma_crossings => hb_nma_crossings
-    procedure :: nma_crossing => hb_nma_crossing
+    procedure :: nma_special_points => hb_nma_special_points
+    procedure :: nma_special_point => hb_nma_special_point
     procedure, private :: hb_shape
     final :: hb_final
   end type
@@ -868,27 +866,6 @@ contains
                                                    as_size(npoints)))
   end function hb_nma_continue
 
-  !> Number of folds of the last nma_continue's backbone (0 if none).
-  integer function hb_nma_folds(self)
-    class(fricreg_hb_driver), intent(in) :: self
-    hb_nma_folds = int(fricreg_hb_nma_folds(self%ptr))
-  end function hb_nma_folds
-
-  !> Fold i (1 <= i <= nma_folds()) of the last nma_continue, in arclength order: its modal
-  !> amplitude, natural frequency omega (rad/s) and damping ratio zeta (fricreg_hb_nma_fold).
-  !> Its statuses.
-  function hb_nma_fold(self, i, amplitude, omega, zeta) result(status)
-    class(fricreg_hb_driver), intent(inout) :: self
-    integer, intent(in) :: i
-    real(c_double), intent(inout) :: amplitude, omega, zeta
-    integer(c_int) :: status
-    status = self%ready('nma_fold', 'HB driver')
-    if (status == FRICREG_OK .and. i < 1) &
-      status = self%fail(FRICREG_EINVAL, 'nma_fold: i must be >= 1 (Fortran counts from 1)')
-    if (status == FRICREG_OK) &
-      status = self%record(fricreg_hb_nma_fold(self%ptr, as_size(i - 1), amplitude, omega, zeta))
-  end function hb_nma_fold
-
   !> The share of each harmonic in the kinetic energy of point i (1 <= i <= nma_points()) of the
   !> last backbone: fraction(h + 1) harmonic h's, h = 0..H (size H + 1; fraction(1), the mean's,
   !> is 0), adding up to 1 (fricreg_hb_nma_harmonic_energy). Its statuses.
@@ -925,33 +902,39 @@ contains
                                                               as_size(size(fraction)), fraction))
   end function hb_nma_modal_participation
 
-  !> Number of crossings of a harmonic k omega (k >= 2) with another linear mode's frequency
-  !> along the last backbone (0 if none; fricreg_hb_nma_crossings).
-  integer function hb_nma_crossings(self)
+  !> Number of special points of the last backbone, its folds and crossings in one list (0 if
+  !> none; fricreg_hb_nma_special_points).
+  integer function hb_nma_special_points(self)
     class(fricreg_hb_driver), intent(in) :: self
-    hb_nma_crossings = int(fricreg_hb_nma_crossings(self%ptr))
-  end function hb_nma_crossings
+    hb_nma_special_points = int(fricreg_hb_nma_special_points(self%ptr))
+  end function hb_nma_special_points
 
-  !> Crossing i (1 <= i <= nma_crossings()) of the last backbone: the harmonic k, the linear
-  !> mode crossed (from 1, as nma's mode), the modal amplitude and the backbone's omega (rad/s)
-  !> there, k omega = omega_mode (fricreg_hb_nma_crossing). Its statuses.
-  function hb_nma_crossing(self, i, harmonic, mode, amplitude, omega) result(status)
+  !> Special point i (1 <= i <= nma_special_points()) of the last backbone, in the branch's
+  !> order: its type (FRICREG_HB_NMA_FOLD, where the amplitude turns, or FRICREG_HB_NMA_CROSSING,
+  !> where a harmonic k omega crosses another stuck linear mode's frequency), the modal amplitude,
+  !> the backbone's omega (rad/s) and damping ratio zeta there, the harmonic k (1 for a fold) and
+  !> the mode (from 1, as nma's mode: the mode crossed, or the backbone's own for a fold)
+  !> (fricreg_hb_nma_special_point). FRICREG_EINVAL for i out of range.
+  function hb_nma_special_point(self, i, type, amplitude, omega, zeta, harmonic, mode) &
+      result(status)
     class(fricreg_hb_driver), intent(inout) :: self
     integer, intent(in) :: i
-    integer, intent(inout) :: harmonic, mode
-    real(c_double), intent(inout) :: amplitude, omega
-    integer(c_int) :: status, k
+    integer, intent(inout) :: type, harmonic, mode
+    real(c_double), intent(inout) :: amplitude, omega, zeta
+    integer(c_int) :: status, t, k
     integer(c_size_t) :: r
-    status = self%ready('nma_crossing', 'HB driver')
+    status = self%ready('nma_special_point', 'HB driver')
     if (status == FRICREG_OK .and. i < 1) &
-      status = self%fail(FRICREG_EINVAL, 'nma_crossing: i must be >= 1 (Fortran counts from 1)')
+      status = self%fail(FRICREG_EINVAL, 'nma_special_point: i must be >= 1 (Fortran counts '// &
+                         'from 1)')
     if (status == FRICREG_OK) &
-      status = self%record(fricreg_hb_nma_crossing(self%ptr, as_size(i - 1), k, r, amplitude, &
-                                                   omega))
+      status = self%record(fricreg_hb_nma_special_point(self%ptr, as_size(i - 1), t, amplitude, &
+                                                        omega, zeta, k, r))
     if (status == FRICREG_OK) then
+      type = int(t)
       harmonic = int(k)
       mode = int(r) + 1
     end if
-  end function hb_nma_crossing
+  end function hb_nma_special_point
 
 end module fricreg_hb_m

@@ -46,12 +46,10 @@
 !   FRHBNN(H, NP, STAT)                               _nma_points
 !   FRHBNQ(H, I, A, OMEGA, ZETA, NDOF, NC, X, STAT)   _nma_point (I from 1)
 !   FRHBNC(H, MODE, IDAMP, A0, A1, NP, STAT)          _nma_continue (MODE from 1)
-!   FRHBNF(H, NF, STAT)                               _nma_folds
-!   FRHBNG(H, I, A, OMEGA, ZETA, STAT)                _nma_fold (I from 1)
 !   FRHBNE(H, I, NH, FRAC, STAT)                      _nma_harmonic_energy (I from 1)
 !   FRHBNR(H, I, IHARM, NM, FRAC, STAT)               _nma_modal_participation (I from 1)
-!   FRHBNX(H, NX, STAT)                               _nma_crossings
-!   FRHBNY(H, I, K, MODE, A, OMEGA, STAT)             _nma_crossing (I, MODE from 1)
+!   FRHBNS(H, NS, STAT)                               _nma_special_points
+!   FRHBNK(H, I, ITYPE, A, OMEGA, ZETA, K, MODE, STAT) _nma_special_point (I, MODE from 1)
 !   FRHBGL(H, OMEGA, L0, L1, NQ, IGUESS, Q0, STAT)    _continue_level (IGUESS = 1: Q0 the guess)
 !   FRHBPL(H, K, LEVEL, STAT)                         _point_level (K from 1)
 !   FRHBPX(H, K, NDOF, NC, X, STAT)                   _point_displacement (K from 1; 0: solution)
@@ -63,7 +61,7 @@
 ! negative MAXPT, IGUESS other than 0 or 1, and a K or IDOF below 1 (counts that would wrap
 ! into size_t or C's 0-based index; FRHBSB's and FRHBPX's K below 0), FRHBIW's and FRHBIL's NS below 1,
 ! FRHBNM's MODE below 1 or negative NP, FRHBAE's code or NS of no type or ME below 0,
-! FRHBNQ's I below 1.
+! FRHBNQ's and FRHBNK's I below 1.
 !
 ! A monitor is the caller's INTEGER FUNCTION MONITR(ITERS, PARAM, RESID), INTEGER*8 ITERS (the
 ! Newton steps of this call so far), DOUBLE PRECISION PARAM (the continued parameter), RESID
@@ -606,17 +604,6 @@ subroutine frhbnc(h, mode, idamp, a0, a1, np, stat)
                                      int(idamp, c_int), a0, a1, int(np, c_size_t)))
 end subroutine frhbnc
 
-!> FRHBNF(H, NF, STAT): the number of folds NF of the last FRHBNC's backbone.
-subroutine frhbnf(h, nf, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(out) :: nf, stat
-  nf = int(fricreg_hb_nma_folds(fricreg_handle_to_ptr(h)))
-  stat = int(FRICREG_OK)
-end subroutine frhbnf
-
 !> FRHBGM(H, METHOD, STAT): the method that computes the next solution's stability,
 !> FRICREG_HB_STABILITY_HILL or _MONODROMY (fricreg_hb_get_stability_method). Since 1.8.
 subroutine frhbgm(h, method, stat)
@@ -631,23 +618,6 @@ subroutine frhbgm(h, method, stat)
   stat = int(fricreg_hb_get_stability_method(fricreg_handle_to_ptr(h), m))
   if (stat == FRICREG_OK) method = int(m)
 end subroutine frhbgm
-
-!> FRHBNG(H, I, A, OMEGA, ZETA, STAT): fold I (from 1) of the last FRHBNC, in arclength order:
-!> its modal amplitude A, natural frequency OMEGA and damping ratio ZETA (fricreg_hb_nma_fold).
-subroutine frhbng(h, i, a, omega, zeta, stat)
-  use fricreg_c
-  use fricreg_sim_c
-  implicit none
-  integer(c_int64_t), intent(in) :: h
-  integer, intent(in) :: i
-  double precision, intent(inout) :: a, omega, zeta
-  integer, intent(out) :: stat
-  if (i < 1) then
-    stat = int(FRICREG_EINVAL)
-    return
-  end if
-  stat = int(fricreg_hb_nma_fold(fricreg_handle_to_ptr(h), int(i - 1, c_size_t), a, omega, zeta))
-end subroutine frhbng
 
 !> The C monitor of FRHBMS: calls the caller's MONITR, whose address user holds, with copies
 !> of the arguments. Not for callers: FRHBMS installs it.
@@ -774,40 +744,43 @@ subroutine frhbnr(h, i, iharm, nm, frac, stat)
                                                 int(iharm, c_int), int(nm, c_size_t), frac))
 end subroutine frhbnr
 
-!> FRHBNX(H, NX, STAT): the number NX of crossings of a harmonic K OMEGA with another linear
-!> mode's frequency along the last backbone (fricreg_hb_nma_crossings).
-subroutine frhbnx(h, nx, stat)
+!> FRHBNS(H, NS, STAT): the number NS of special points of the last backbone, its folds and
+!> crossings in one list (fricreg_hb_nma_special_points). Since 1.8.
+subroutine frhbns(h, ns, stat)
   use fricreg_c
   use fricreg_sim_c
   implicit none
   integer(c_int64_t), intent(in) :: h
-  integer, intent(out) :: nx, stat
-  nx = int(fricreg_hb_nma_crossings(fricreg_handle_to_ptr(h)))
+  integer, intent(out) :: ns, stat
+  ns = int(fricreg_hb_nma_special_points(fricreg_handle_to_ptr(h)))
   stat = int(FRICREG_OK)
-end subroutine frhbnx
+end subroutine frhbns
 
-!> FRHBNY(H, I, K, MODE, A, OMEGA, STAT): crossing I (from 1) of the last backbone: harmonic K,
-!> the linear mode MODE crossed (from 1), the modal amplitude A and the backbone's OMEGA there,
-!> K OMEGA = OMEGA_MODE (fricreg_hb_nma_crossing).
-subroutine frhbny(h, i, k, mode, a, omega, stat)
+!> FRHBNK(H, I, ITYPE, A, OMEGA, ZETA, K, MODE, STAT): special point I (from 1) of the last
+!> backbone, in the branch's order: ITYPE FRICREG_HB_NMA_FOLD (the amplitude turns; K = 1, MODE
+!> the backbone's) or FRICREG_HB_NMA_CROSSING (harmonic K OMEGA crosses the frequency of the
+!> linear mode MODE, from 1), the modal amplitude A, the backbone's OMEGA and damping ratio ZETA
+!> there (fricreg_hb_nma_special_point). Since 1.8.
+subroutine frhbnk(h, i, itype, a, omega, zeta, k, mode, stat)
   use fricreg_c
   use fricreg_sim_c
   implicit none
   integer(c_int64_t), intent(in) :: h
   integer, intent(in) :: i
-  integer, intent(inout) :: k, mode
-  double precision, intent(inout) :: a, omega
+  integer, intent(inout) :: itype, k, mode
+  double precision, intent(inout) :: a, omega, zeta
   integer, intent(out) :: stat
-  integer(c_int) :: kc
+  integer(c_int) :: tc, kc
   integer(c_size_t) :: rc
   if (i < 1) then
     stat = int(FRICREG_EINVAL)
     return
   end if
-  stat = int(fricreg_hb_nma_crossing(fricreg_handle_to_ptr(h), int(i - 1, c_size_t), kc, rc, a, &
-                                     omega))
+  stat = int(fricreg_hb_nma_special_point(fricreg_handle_to_ptr(h), int(i - 1, c_size_t), tc, a, &
+                                          omega, zeta, kc, rc))
   if (stat == FRICREG_OK) then
+    itype = int(tc)
     k = int(kc)
     mode = int(rc) + 1
   end if
-end subroutine frhbny
+end subroutine frhbnk

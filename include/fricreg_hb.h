@@ -795,8 +795,8 @@ enum fricreg_hb_nma_damping {
  *  it). The points are stored (fricreg_hb_nma_points, fricreg_hb_nma_point), replacing those
  *  of an earlier call; the forced response's solution and branch are not changed. Since 1.8
  *  the crossings of a harmonic k ω with another stuck mode's frequency are found on the stored
- *  points (fricreg_hb_nma_crossings; a sparse model of at most 256 dofs then solves its dense
- *  eigenproblem too).
+ *  points (fricreg_hb_nma_special_points; a sparse model of at most 256 dofs then solves its
+ *  dense eigenproblem too).
  *
  *  Cost per Newton iteration: the H + 1 factors of the forced response and a real LU of order
  *  m (2H + 1) + 2; once per call the linear mode: a dense model's dense eigenproblem of order
@@ -879,8 +879,8 @@ FRICREG_API int fricreg_hb_nma_point(fricreg_hb *hb, size_t i, double *amplitude
  *
  *  A fold is where the tangent's log a component changes sign between two points; it is
  *  located by the linear interpolation of that component there, the point corrected onto the
- *  branch (on the hyperplane normal to the chord), and stored (fricreg_hb_nma_folds,
- *  fricreg_hb_nma_fold). The stored points (fricreg_hb_nma_points, fricreg_hb_nma_point, in
+ *  branch (on the hyperplane normal to the chord), and stored (fricreg_hb_nma_special_point,
+ *  FRICREG_HB_NMA_FOLD). The stored points (fricreg_hb_nma_points, fricreg_hb_nma_point, in
  *  arclength order: the amplitude falls between two folds) are npoints at equal arclength in z
  *  along the branch, the first at a0 and the last at a1 the branch's own, the others each
  *  corrected onto the branch on the hyperplane normal to its stretch (so each a solution to
@@ -907,24 +907,6 @@ FRICREG_API int fricreg_hb_nma_point(fricreg_hb *hb, size_t i, double *amplitude
  *  and its folds. Since 1.8 (FRICREG_1.8). */
 FRICREG_API int fricreg_hb_nma_continue(fricreg_hb *hb, size_t mode, int damping, double a0,
                                         double a1, size_t npoints);
-
-/** Number of folds of the backbone found by the last fricreg_hb_nma_continue (0 after
- *  fricreg_hb_nma, if none, or hb is NULL). Returns that number, not a status. Since 1.8
- *  (FRICREG_1.8). */
-FRICREG_API size_t fricreg_hb_nma_folds(const fricreg_hb *hb);
-
-/** Fold i of the last fricreg_hb_nma_continue, in arclength order: the point of the branch
- *  where its amplitude turns (fricreg_hb_nma_continue's comment says how it is located).
- *
- *  i           0 <= i < fricreg_hb_nma_folds(hb).
- *  amplitude   out: its modal amplitude a (fricreg_hb_nma's units).
- *  omega       out: its natural frequency ω, rad/s.
- *  zeta        out: its damping ratio ζ = ξ/(2ω), nondimensional.
- *
- *  Returns FRICREG_OK; FRICREG_ENULL if hb, amplitude, omega or zeta is NULL; FRICREG_EINVAL
- *  if i is out of range. Nothing is written on failure. Since 1.8 (FRICREG_1.8). */
-FRICREG_API int fricreg_hb_nma_fold(fricreg_hb *hb, size_t i, double *amplitude, double *omega,
-                                    double *zeta);
 
 /** The share of each harmonic in the kinetic energy of point i of the last backbone
  *  (fricreg_hb_nma or fricreg_hb_nma_continue): where it rises above the fundamental's
@@ -984,37 +966,63 @@ FRICREG_API int fricreg_hb_nma_harmonic_energy(fricreg_hb *hb, size_t i, size_t 
 FRICREG_API int fricreg_hb_nma_modal_participation(fricreg_hb *hb, size_t i, int harmonic,
                                                    size_t nmodes, double fraction[]);
 
-/** Number of crossings found along the last backbone (fricreg_hb_nma or
- *  fricreg_hb_nma_continue, on the points it stored, also when it failed): places where a
- *  harmonic k ω of the mode (k = 2..H) crosses the frequency ω_r of another linear mode r of the
- *  structure with its elements stuck (fricreg_hb_nma_modal_participation's modes, r not the
- *  backbone's mode), where an internal resonance can start. Between two consecutive stored
- *  points a crossing is a change of sign of g = k ω − ω_r (g >= 0 at one, g < 0 at the other),
- *  placed at the fraction t = g_i / (g_i − g_{i+1}) of the stretch with a and ω linear in t
- *  (along the stretch's arclength after fricreg_hb_nma_continue, its log a after
- *  fricreg_hb_nma: the chord's accuracy, so k ω = ω_r there to rounding while a is off by the
- *  branch's curvature times the stretch²). Found at the backbone's end, in the points' order,
- *  by k then r within a stretch. A sparse model's ω_r are found densified up to 256 dofs (its
- *  subspace iteration finds its own mode only; fricreg_hb_nma and fricreg_hb_nma_continue then
- *  also allocate 4 ndof² doubles and solve the dense eigenproblem, O(ndof³)); above, it has
- *  none. 0 if none, no backbone or hb is NULL. Returns that number, not a status. Since 1.8
- *  (FRICREG_1.8). */
-FRICREG_API size_t fricreg_hb_nma_crossings(const fricreg_hb *hb);
+/** The kinds of special point along a backbone (fricreg_hb_nma_special_point). Values are fixed
+ *  forever. Since 1.8. */
+enum fricreg_hb_nma_special_type {
+    /** a fold in the amplitude: the tangent's log a component changes sign (found by
+     *  fricreg_hb_nma_continue only; fricreg_hb_nma stops before one) */
+    FRICREG_HB_NMA_FOLD = 1,
+    /** a harmonic k ω of the mode (k = 2..H) crosses another stuck linear mode's frequency ω_r,
+     *  where an internal resonance can start */
+    FRICREG_HB_NMA_CROSSING = 2
+};
 
-/** Crossing i of the last backbone (fricreg_hb_nma_crossings says where they are found).
+/** Number of special points of the last backbone (fricreg_hb_nma or fricreg_hb_nma_continue,
+ *  also when it failed: those of the branch reached), its folds and crossings in one list
+ *  (fricreg_hb_nma_special_point); 0 if none, no backbone or hb is NULL. Returns that number,
+ *  not a status. Since 1.8 (FRICREG_1.8). */
+FRICREG_API size_t fricreg_hb_nma_special_points(const fricreg_hb *hb);
+
+/** Special point i of the last backbone, in the branch's order (by arclength after
+ *  fricreg_hb_nma_continue, by amplitude after fricreg_hb_nma), its kind an out-argument as
+ *  fricreg_hb_bifurcation's type:
  *
- *  i           0 <= i < fricreg_hb_nma_crossings(hb).
- *  harmonic    out: k, 2 <= k <= H.
- *  mode        out: r, the linear mode crossed, from 0 in ascending order of ω_r (as the
- *              backbone's mode argument).
+ *  - FRICREG_HB_NMA_FOLD, where the backbone's amplitude turns (found by
+ *    fricreg_hb_nma_continue only, whose comment says how it is located: the tangent's log a
+ *    component interpolated linearly to its zero, the point there corrected onto the branch);
+ *    a, ω and ζ are that solution's, harmonic 1 and mode the backbone's.
+ *  - FRICREG_HB_NMA_CROSSING, where a harmonic k ω of the mode (k = 2..H) crosses the frequency
+ *    ω_r of another linear mode r of the structure with its elements stuck
+ *    (fricreg_hb_nma_modal_participation's modes, r not the backbone's mode): an internal
+ *    resonance can start there. Between two consecutive stored points a crossing is a change of
+ *    sign of g = k ω − ω_r (g >= 0 at one, g < 0 at the other), placed at the fraction
+ *    t = g_i / (g_i − g_{i+1}) of the stretch, with a, ω and ζ each linear in t between the two
+ *    points' values (t along the stretch's arclength after fricreg_hb_nma_continue, its log a
+ *    after fricreg_hb_nma: the chord's accuracy, so k ω = ω_r there to rounding while a and ζ
+ *    are off by the branch's curvature times the stretch²). Found on the points stored, at the
+ *    backbone's end. A sparse model's ω_r are found densified up to 256 dofs (its subspace
+ *    iteration finds its own mode only; fricreg_hb_nma and fricreg_hb_nma_continue then also
+ *    allocate 4 ndof² doubles and solve the dense eigenproblem, O(ndof³)); above, it has none.
+ *
+ *  The order: a crossing's place along the stored points is its stretch's index plus t, a
+ *  fold's its arclength in the stored points' spacing (they are at equal arclength), ties a
+ *  fold first, then by k, then by r.
+ *
+ *  i           0 <= i < fricreg_hb_nma_special_points(hb).
+ *  type        out: an enum fricreg_hb_nma_special_type.
  *  amplitude   out: the modal amplitude a there (fricreg_hb_nma's units).
- *  omega       out: the backbone's natural frequency ω there, rad/s (k ω = ω_r).
+ *  omega       out: the backbone's natural frequency ω there, rad/s (a crossing: k ω = ω_r).
+ *  zeta        out: its damping ratio ζ = ξ/(2ω) there, nondimensional.
+ *  harmonic    out: k, 2 <= k <= H for a crossing; 1 for a fold.
+ *  mode        out: r, the linear mode crossed, from 0 in ascending order of ω_r (as the
+ *              backbone's mode argument); for a fold the backbone's own mode.
  *
- *  Returns FRICREG_OK; FRICREG_ENULL if hb, harmonic, mode, amplitude or omega is NULL;
- *  FRICREG_EINVAL if i is out of range. Nothing is written on failure. Since 1.8
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb, type, amplitude, omega, zeta, harmonic or mode is
+ *  NULL; FRICREG_EINVAL if i is out of range. Nothing is written on failure. Since 1.8
  *  (FRICREG_1.8). */
-FRICREG_API int fricreg_hb_nma_crossing(fricreg_hb *hb, size_t i, int *harmonic, size_t *mode,
-                                        double *amplitude, double *omega);
+FRICREG_API int fricreg_hb_nma_special_point(fricreg_hb *hb, size_t i, int *type, double *amplitude,
+                                             double *omega, double *zeta, int *harmonic,
+                                             size_t *mode);
 
 /** \} */
 

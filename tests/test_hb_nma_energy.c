@@ -1,10 +1,11 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_hb_nma_energy.c — Check suite for what a backbone point is made of
  * (fricreg_hb_nma_harmonic_energy, fricreg_hb_nma_modal_participation; fricreg_hb.h) and where
- * a harmonic k ω crosses another linear mode's frequency (fricreg_hb_nma_crossings,
- * fricreg_hb_nma_crossing), on tests/test_hb_nma_fold.c's two-mass model: dof 1 grounded by
- * k1 = 1, coupled by kc = 1/4 to dof 2, grounded by k2 = 1/5 and a Jenkins element kt, μN = 1,
- * unit masses, no viscous damping, H = 3. With kt = 10 its backbone (mode 0) folds twice in the
+ * a harmonic k ω crosses another linear mode's frequency (the special points of type
+ * FRICREG_HB_NMA_CROSSING, fricreg_hb_nma_special_points, fricreg_hb_nma_special_point), on
+ * tests/test_hb_nma_fold.c's two-mass model: dof 1 grounded by k1 = 1, coupled by kc = 1/4 to
+ * dof 2, grounded by k2 = 1/5 and a Jenkins element kt, μN = 1, unit masses, no viscous damping,
+ * H = 3. With kt = 10 its backbone (mode 0) folds twice in the
  * amplitude, at a = 4.4324 and 4.4168.
  *
  * Where the numbers come from:
@@ -27,7 +28,10 @@
  * (stuck) down to 3.3431 at the folds and up to 3.4490, always above ω_1 = 3.2337 (the ratio
  * ω_1/ω_0 = 2.90): the fold is near, not at, a 3:1 resonance with the stuck mode, and no crossing
  * is reported there. With kt = 11, ω_1 = 3.3847 lies inside 3ω's range, and the crossing is found
- * at a = 5.04, ω = 1.12823 (after that model's S, at a = 4.49). */
+ * at a = 5.04, ω = 1.12823 (after that model's S, at a = 4.49): the special points list its folds
+ * first, then the crossing (and before the S a pair of folds at the slip onset, a = 3.71264, 5.5e-5
+ * above δ/φ_2 = 3.71243 of the closed form: the tangent's log a component turns twice at the
+ * stick–slip kink). */
 #include <check.h>
 #include <math.h>
 #include <stdint.h>
@@ -44,6 +48,15 @@
 #define NC (2 * H + 1)
 
 static const double pi = 3.14159265358979323846;
+
+/* Special point i: its kind, a, ω, ζ, k, r (asserting the status). */
+static int special(fricreg_hb *hb, size_t i, double *a, double *omega, double *zeta, int *k,
+                   size_t *r)
+{
+    int type = 0;
+    ck_assert_int_eq(fricreg_hb_nma_special_point(hb, i, &type, a, omega, zeta, k, r), FRICREG_OK);
+    return type;
+}
 
 static fricreg_hb *model(double kt)
 {
@@ -108,9 +121,11 @@ START_TEST(energy_through_the_fold)
     const size_t np = 400;
     ck_assert_int_eq(fricreg_hb_nma_continue(hb, 0, FRICREG_HB_NMA_DAMPING_MATRIX, 0.05, 1e4, np),
                      FRICREG_OK);
-    ck_assert_uint_eq(fricreg_hb_nma_folds(hb), 2);
+    ck_assert_uint_eq(fricreg_hb_nma_special_points(hb), 2);
     double a_fold, w_fold, z_fold;
-    ck_assert_int_eq(fricreg_hb_nma_fold(hb, 0, &a_fold, &w_fold, &z_fold), FRICREG_OK);
+    int kf;
+    size_t rf;
+    ck_assert_int_eq(special(hb, 0, &a_fold, &w_fold, &z_fold, &kf, &rf), FRICREG_HB_NMA_FOLD);
     double e[H + 1], ref[H + 1], p[2], first3 = 0.0, last3 = 0.0, peak3 = -1.0, a_peak = 0.0;
     double worst_sum = 0.0, worst_ref = 0.0;
     for (size_t i = 0; i < np; i++) {
@@ -193,19 +208,28 @@ START_TEST(participation_closed_form)
 }
 END_TEST
 
-/* (c) The crossings: the fold model has none (3ω stays above ω_1 = 3.2337 at every point: the
- * file's comment), which is checked point by point; with kt = 11, ω_1 = 3.3847 is crossed by
- * 3ω once (measured a = 5.04, ω = 1.12823): harmonic 3, mode 1, 3ω = ω_1 of the closed form
- * to 1e-12, ω and a within the two stored points around it. */
+/* (c) The special points, folds and crossings in one list: the fold model has no crossing (3ω
+ * stays above ω_1 = 3.2337 at every point: the file's comment), which is checked point by point,
+ * and its two special points are its folds (harmonic 1, the backbone's mode 0); with kt = 11,
+ * ω_1 = 3.3847 is crossed by 3ω once (measured a = 5.04, ω = 1.12823): the last special point,
+ * after every fold in the branch's order (its S at a = 4.49, measured 4.4942 and 4.4802, the
+ * upper fold first), harmonic 3, mode 1, 3ω = ω_1 of the closed form to 1e-12, and its a and ζ
+ * the linear interpolation of the two stored points around it at the fraction t where 3ω
+ * crosses ω_1 (the documented rule, to 1e-12). */
 START_TEST(crossings)
 {
     fricreg_hb *hb = model(10.0);
     double v[2], a, omega, zeta;
+    int k = 0;
+    size_t r = 9;
     double w1 = sqrt(eigen2(K1 + KC, -KC, KC + K2 + 10.0, 1, v));
     ck_assert_int_eq(fricreg_hb_nma_continue(hb, 0, FRICREG_HB_NMA_DAMPING_MATRIX, 0.05, 100.0, 80),
                      FRICREG_OK);
-    ck_assert_uint_eq(fricreg_hb_nma_folds(hb), 2);
-    ck_assert_uint_eq(fricreg_hb_nma_crossings(hb), 0);
+    ck_assert_uint_eq(fricreg_hb_nma_special_points(hb), 2);
+    for (size_t i = 0; i < 2; i++) {
+        ck_assert_int_eq(special(hb, i, &a, &omega, &zeta, &k, &r), FRICREG_HB_NMA_FOLD);
+        ck_assert(k == 1 && r == 0);
+    }
     for (size_t i = 0; i < 80; i++) {
         ck_assert_int_eq(fricreg_hb_nma_point(hb, i, &a, &omega, &zeta, 0, 0, NULL), FRICREG_OK);
         ck_assert_double_gt(3.0 * omega, w1 + 0.1);
@@ -217,26 +241,43 @@ START_TEST(crossings)
     const size_t np = 100;
     ck_assert_int_eq(fricreg_hb_nma_continue(hb, 0, FRICREG_HB_NMA_DAMPING_MATRIX, 0.05, 1e3, np),
                      FRICREG_OK);
-    ck_assert_uint_eq(fricreg_hb_nma_crossings(hb), 1);
-    int k = 0;
-    size_t r = 9;
-    double ac, wc;
-    ck_assert_int_eq(fricreg_hb_nma_crossing(hb, 0, &k, &r, &ac, &wc), FRICREG_OK);
+    size_t n = fricreg_hb_nma_special_points(hb);
+    ck_assert_uint_ge(n, 3);
+    double ac, wc, zc, af[2];
+    ck_assert_int_eq(special(hb, n - 1, &ac, &wc, &zc, &k, &r), FRICREG_HB_NMA_CROSSING);
     ck_assert_int_eq(k, 3);
     ck_assert_uint_eq(r, 1);
     ck_assert_double_eq_tol(3.0 * wc, w1, 1e-12 * w1);
     ck_assert_double_eq_tol(ac, 5.04, 0.01 * 5.04);
+    for (size_t i = 0; i + 1 < n; i++) { /* every fold before it */
+        int kf = 0;
+        size_t rf = 9;
+        ck_assert_int_eq(special(hb, i, &a, &omega, &zeta, &kf, &rf), FRICREG_HB_NMA_FOLD);
+        ck_assert(kf == 1 && rf == 0);
+        ck_assert_double_lt(a, ac);
+        if (i + 3 >= n) /* the S's two */
+            af[i + 3 - n] = a;
+        else /* the slip onset's pair: δ/φ_2 = 3.71243 (the file's comment), to 1e-4 */
+            ck_assert_double_eq_tol(a, 3.71243, 1e-4 * 3.71243);
+    }
+    ck_assert_double_eq_tol(af[0], 4.4942, 0.01 * 4.4942);
+    ck_assert_double_eq_tol(af[1], 4.4802, 0.01 * 4.4802);
+    ck_assert_double_gt(af[0], af[1]);
     int brackets = 0;
-    double ao = 0.0, wo = 0.0;
+    double ao = 0.0, wo = 0.0, zo = 0.0;
     for (size_t i = 0; i < np; i++) {
         ck_assert_int_eq(fricreg_hb_nma_point(hb, i, &a, &omega, &zeta, 0, 0, NULL), FRICREG_OK);
         if (i > 0 && (3.0 * wo >= w1) != (3.0 * omega >= w1)) {
+            double t = (3.0 * wo - w1) / (3.0 * wo - 3.0 * omega);
             brackets++;
             ck_assert(wc >= fmin(wo, omega) && wc <= fmax(wo, omega));
             ck_assert(ac >= fmin(ao, a) && ac <= fmax(ao, a));
+            ck_assert_double_eq_tol(ac, ao + t * (a - ao), 1e-12 * ac);
+            ck_assert_double_eq_tol(zc, zo + t * (zeta - zo), 1e-12 * zc);
         }
         ao = a;
         wo = omega;
+        zo = zeta;
     }
     ck_assert_int_eq(brackets, 1);
     fricreg_hb_free(hb);
@@ -319,7 +360,7 @@ START_TEST(sparse_model_shares)
         ck_assert_double_eq_tol(ps[1], pd[1], 1e-10);
     }
     ck_assert_double_gt(es[3], 1e-6); /* a = 10 slips: the comparison is not of zeros */
-    ck_assert_uint_eq(fricreg_hb_nma_crossings(hs), fricreg_hb_nma_crossings(hd));
+    ck_assert_uint_eq(fricreg_hb_nma_special_points(hs), fricreg_hb_nma_special_points(hd));
     fricreg_hb_free(hs);
     fricreg_hb_free(hd);
 
@@ -328,7 +369,7 @@ START_TEST(sparse_model_shares)
     p[0] = -1.0;
     ck_assert_int_eq(fricreg_hb_nma(hs, 0, FRICREG_HB_NMA_DAMPING_MATRIX, 1e-3, 2e-3, 2),
                      FRICREG_OK);
-    ck_assert_uint_eq(fricreg_hb_nma_crossings(hs), 0);
+    ck_assert_uint_eq(fricreg_hb_nma_special_points(hs), 0);
     ck_assert_int_eq(fricreg_hb_nma_modal_participation(hs, 0, 1, 257, p), FRICREG_EINVAL);
     ck_assert_double_eq(p[0], -1.0);
     ck_assert_int_eq(fricreg_hb_nma_harmonic_energy(hs, 0, H + 1, e), FRICREG_OK);
@@ -337,22 +378,85 @@ START_TEST(sparse_model_shares)
 }
 END_TEST
 
-/* (e) Every status of the four getters; nothing written on failure. */
+/* (e) The branch's order with folds and crossings interleaved: NLvib's 3-dof chain with two
+ * Jenkins elements (bench/nlvib/chain_jenkins.m, examples/python/backbone.py: unit masses and
+ * springs ground-1-2-3, C = 0.02 K, kt = 20, μN = 1 at dof 1 and between dofs 1 and 2, H = 7,
+ * modal damping), mode 0 from a = 0.01 to 3 by arclength, 120 points: its special points
+ * (measured: 14, 8 folds and 6 crossings of k = 2 with mode 1 and k = 5 with mode 2) are mixed
+ * in kind, a fold after a crossing, so the list is no concatenation by kind; each crossing lies in the stretch of the stored points whose ω brackets its own, its a
+ * the linear interpolation at the same fraction t (to 1e-9), and the crossings' places, the
+ * stretch's index plus t, rise along the list (the folds lie between them, placed by the
+ * continuation's arclength). */
+START_TEST(special_points_in_branch_order)
+{
+    fricreg_hb *hb = NULL;
+    ck_assert_int_eq(fricreg_hb_create(3, 2, 7, &hb), FRICREG_OK);
+    const double M[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, K[9] = {2, -1, 0, -1, 2, -1, 0, -1, 2};
+    const double C[9] = {0.04, -0.02, 0, -0.02, 0.04, -0.02, 0, -0.02, 0.04};
+    const double J[6] = {1, 0, 0, -1, 1, 0}, kt[2] = {20, 20}, mun[2] = {1, 1};
+    ck_assert_int_eq(fricreg_hb_set_mass(hb, 3, M), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 3, K), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_damping(hb, 3, C), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_elements(hb, 2, 3, J, kt, mun), FRICREG_OK);
+    enum { NP = 120 };
+    ck_assert_int_eq(fricreg_hb_nma_continue(hb, 0, FRICREG_HB_NMA_DAMPING_MODAL, 0.01, 3.0, NP),
+                     FRICREG_OK);
+    double pa[NP], pw[NP], zeta, last = -1.0;
+    for (size_t j = 0; j < NP; j++)
+        ck_assert_int_eq(fricreg_hb_nma_point(hb, j, &pa[j], &pw[j], &zeta, 0, 0, NULL),
+                         FRICREG_OK);
+    size_t n = fricreg_hb_nma_special_points(hb), folds = 0, crossings = 0;
+    int fold_after_crossing = 0;
+    for (size_t i = 0; i < n; i++) {
+        double a, w, z;
+        int k;
+        size_t r;
+        int type = special(hb, i, &a, &w, &z, &k, &r);
+        if (type == FRICREG_HB_NMA_FOLD) {
+            ck_assert(k == 1 && r == 0);
+            fold_after_crossing |= crossings > 0;
+            folds++;
+            continue;
+        }
+        ck_assert_int_eq(type, FRICREG_HB_NMA_CROSSING);
+        ck_assert(k >= 2 && k <= 7 && r >= 1 && r <= 2);
+        crossings++;
+        double place = -1.0;
+        for (size_t j = 0; j + 1 < NP && place < 0.0; j++) {
+            if (w < fmin(pw[j], pw[j + 1]) || w > fmax(pw[j], pw[j + 1]) || pw[j] == pw[j + 1])
+                continue;
+            double t = (w - pw[j]) / (pw[j + 1] - pw[j]);
+            if (fabs(a - (pa[j] + t * (pa[j + 1] - pa[j]))) <= 1e-9 * a)
+                place = (double)j + t;
+        }
+        ck_assert_double_ge(place, 0.0); /* found */
+        ck_assert_double_ge(place, last);
+        last = place;
+    }
+    ck_assert_uint_eq(n, 14);
+    ck_assert_uint_eq(folds, 8);
+    ck_assert(crossings == 6 && fold_after_crossing);
+    fricreg_hb_free(hb);
+}
+END_TEST
+
+/* (f) Every status of the two getters, and of the special points' getter (test_hb_nma_fold's
+ * fold_getters provokes each of its NULL arguments); nothing written on failure. */
 START_TEST(getters_statuses)
 {
-    double e[H + 1] = {-1, -1, -1, -1}, p[2] = {-1, -1}, a = -1.0, w = -1.0;
-    int k = -1;
+    double e[H + 1] = {-1, -1, -1, -1}, p[2] = {-1, -1}, a = -1.0, w = -1.0, z = -1.0;
+    int k = -1, t = -1;
     size_t r = 7;
     ck_assert_int_eq(fricreg_hb_nma_harmonic_energy(NULL, 0, H + 1, e), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_hb_nma_modal_participation(NULL, 0, 1, 2, p), FRICREG_ENULL);
-    ck_assert_uint_eq(fricreg_hb_nma_crossings(NULL), 0);
-    ck_assert_int_eq(fricreg_hb_nma_crossing(NULL, 0, &k, &r, &a, &w), FRICREG_ENULL);
+    ck_assert_uint_eq(fricreg_hb_nma_special_points(NULL), 0);
+    ck_assert_int_eq(fricreg_hb_nma_special_point(NULL, 0, &t, &a, &w, &z, &k, &r), FRICREG_ENULL);
     fricreg_hb *hb = model(10.0);
     /* no backbone yet */
     ck_assert_int_eq(fricreg_hb_nma_harmonic_energy(hb, 0, H + 1, e), FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_hb_nma_modal_participation(hb, 0, 1, 2, p), FRICREG_EINVAL);
-    ck_assert_uint_eq(fricreg_hb_nma_crossings(hb), 0);
-    ck_assert_int_eq(fricreg_hb_nma_crossing(hb, 0, &k, &r, &a, &w), FRICREG_EINVAL);
+    ck_assert_uint_eq(fricreg_hb_nma_special_points(hb), 0);
+    ck_assert_int_eq(fricreg_hb_nma_special_point(hb, 0, &t, &a, &w, &z, &k, &r), FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_hb_nma(hb, 0, FRICREG_HB_NMA_DAMPING_MATRIX, 1.0, 4.0, 4), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_nma_harmonic_energy(hb, 0, H + 1, NULL), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_hb_nma_harmonic_energy(hb, 0, H, e), FRICREG_ESIZE);
@@ -362,12 +466,12 @@ START_TEST(getters_statuses)
     ck_assert_int_eq(fricreg_hb_nma_modal_participation(hb, 0, H + 1, 2, p), FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_hb_nma_modal_participation(hb, 0, -1, 2, p), FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_hb_nma_modal_participation(hb, 4, 1, 2, p), FRICREG_EINVAL);
-    ck_assert_int_eq(fricreg_hb_nma_crossing(hb, 0, NULL, &r, &a, &w), FRICREG_ENULL);
-    ck_assert_int_eq(fricreg_hb_nma_crossing(hb, 0, &k, &r, &a, NULL), FRICREG_ENULL);
-    ck_assert_int_eq(fricreg_hb_nma_crossing(hb, 0, &k, &r, &a, &w), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_hb_nma_special_point(hb, 0, &t, &a, &w, &z, NULL, &r), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_hb_nma_special_point(hb, 0, &t, &a, &w, &z, &k, NULL), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_hb_nma_special_point(hb, 0, &t, &a, &w, &z, &k, &r), FRICREG_EINVAL);
     ck_assert_double_eq(e[0], -1.0);
     ck_assert_double_eq(p[0], -1.0);
-    ck_assert(k == -1 && r == 7 && a == -1.0 && w == -1.0);
+    ck_assert(t == -1 && k == -1 && r == 7 && a == -1.0 && w == -1.0 && z == -1.0);
     /* the model changed since the backbone */
     const double K[4] = {K1 + KC, -KC, -KC, KC + K2 + 0.1};
     ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 2, K), FRICREG_OK);
@@ -388,6 +492,7 @@ int main(void)
     tcase_add_test(tc, participation_closed_form);
     tcase_add_test(tc, crossings);
     tcase_add_test(tc, sparse_model_shares);
+    tcase_add_test(tc, special_points_in_branch_order);
     tcase_add_test(tc, getters_statuses);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);

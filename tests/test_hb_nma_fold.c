@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_hb_nma_fold.c — Check suite for the backbone by pseudo-arclength continuation
- * (fricreg_hb_nma_continue, fricreg_hb_nma_folds, fricreg_hb_nma_fold; fricreg_hb.h) on a
- * backbone that folds in the amplitude: an internal resonance through the third harmonic.
+ * (fricreg_hb_nma_continue, its folds as special points: fricreg_hb_nma_special_points,
+ * fricreg_hb_nma_special_point; fricreg_hb.h) on a backbone that folds in the amplitude: an
+ * internal resonance through the third harmonic.
  *
  * The model: two unit masses, dof 1 grounded by k1 = 1, the two coupled by kc = 1/4, dof 2
  * grounded by k2 = 1/5 and by a Jenkins element kt = 10, mu N = 1 (J = [0 1]), no viscous
@@ -10,7 +11,8 @@
  * amplitude, so the element slips from a = δ/φ_2 = 3.68 (δ = mu N/kt); slipping, it softens
  * dof 2 towards k2 + kc = 0.45. Near the 3:1 ratio the element's third harmonic drives mode 1
  * (3 ω = 3.34 there, 3 % above mode 1's 3.2337: near, never crossing, as test_hb_nma_energy
- * measures) and the backbone of mode 0 folds in the amplitude (at
+ * measures: so every special point of this model is a fold, for any H, since 2 ω < ω_1 < 3 ω all
+ * along) and the backbone of mode 0 folds in the amplitude (at
  * a ≈ 4.43, 20 % above the slip onset: found first by a scan of this family, where
  * fricreg_hb_nma stops with "line search found no decrease" at a = 4.4325).
  *
@@ -32,6 +34,7 @@
  *   amplitude: the two agree to Newton's tolerance. */
 #include <check.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -55,6 +58,33 @@ static fricreg_hb *model(int harmonics)
     ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 2, K), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_set_elements(hb, 1, 2, J, &kt, &mun), FRICREG_OK);
     return hb;
+}
+
+/* The model's special points (every one a fold: the file's comment): their number, each
+ * checked to be a fold of the backbone's mode 0 at harmonic 1. */
+static size_t folds(fricreg_hb *hb)
+{
+    size_t n = fricreg_hb_nma_special_points(hb);
+    for (size_t i = 0; i < n; i++) {
+        int type = 0, harmonic = 0;
+        size_t mode = 9;
+        double a, omega, zeta;
+        ck_assert_int_eq(fricreg_hb_nma_special_point(hb, i, &type, &a, &omega, &zeta, &harmonic,
+                                                      &mode),
+                         FRICREG_OK);
+        ck_assert_int_eq(type, FRICREG_HB_NMA_FOLD);
+        ck_assert_int_eq(harmonic, 1);
+        ck_assert_uint_eq(mode, 0);
+    }
+    return n;
+}
+
+/* Fold i's a, ω, ζ (special point i: every one a fold). */
+static int fold(fricreg_hb *hb, size_t i, double *a, double *omega, double *zeta)
+{
+    int type, harmonic;
+    size_t mode;
+    return fricreg_hb_nma_special_point(hb, i, &type, a, omega, zeta, &harmonic, &mode);
 }
 
 /* The symmetric 2x2 [[p, r], [r, s]]'s eigenvalue (upper or lower) and its unit eigenvector. */
@@ -138,10 +168,10 @@ START_TEST(fold_reported)
     ck_assert_int_eq(fricreg_hb_nma_continue(hb, 0, FRICREG_HB_NMA_DAMPING_MATRIX, 0.05, 1e4, np),
                      FRICREG_OK);
     ck_assert_uint_eq(fricreg_hb_nma_points(hb), np);
-    ck_assert_uint_eq(fricreg_hb_nma_folds(hb), 2);
+    ck_assert_uint_eq(folds(hb), 2);
     double a1, w1, z1, a2, w2, z2;
-    ck_assert_int_eq(fricreg_hb_nma_fold(hb, 0, &a1, &w1, &z1), FRICREG_OK);
-    ck_assert_int_eq(fricreg_hb_nma_fold(hb, 1, &a2, &w2, &z2), FRICREG_OK);
+    ck_assert_int_eq(fold(hb, 0, &a1, &w1, &z1), FRICREG_OK);
+    ck_assert_int_eq(fold(hb, 1, &a2, &w2, &z2), FRICREG_OK);
     ck_assert_double_eq_tol(a1, 4.4324, 2e-3 * 4.4324);
     ck_assert_double_eq_tol(a2, 4.4168, 2e-3 * 4.4168);
     ck_assert(a1 > a2);
@@ -176,7 +206,7 @@ START_TEST(every_point_solves)
     const size_t np = 120;
     ck_assert_int_eq(fricreg_hb_nma_continue(hb, 0, FRICREG_HB_NMA_DAMPING_MATRIX, 2.0, 10.0, np),
                      FRICREG_OK);
-    ck_assert_uint_eq(fricreg_hb_nma_folds(hb), 2);
+    ck_assert_uint_eq(folds(hb), 2);
     double worst = 0.0;
     for (size_t i = 0; i < np; i++)
         worst = fmax(worst, independent_residual(hb, i, 3));
@@ -224,10 +254,10 @@ START_TEST(march_agrees_before_fold)
     ck_assert_int_eq(fricreg_hb_nma(hb, 0, FRICREG_HB_NMA_DAMPING_MATRIX, 0.05, 4.4, 12),
                      FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_nma_point(hb, 11, &am, &wm, &zm, 0, 0, NULL), FRICREG_OK);
-    ck_assert_uint_eq(fricreg_hb_nma_folds(hb), 0);
+    ck_assert_uint_eq(folds(hb), 0);
     ck_assert_int_eq(fricreg_hb_nma_continue(hb, 0, FRICREG_HB_NMA_DAMPING_MATRIX, 0.05, 4.4, 12),
                      FRICREG_OK);
-    ck_assert_uint_eq(fricreg_hb_nma_folds(hb), 0);
+    ck_assert_uint_eq(folds(hb), 0);
     ck_assert_int_eq(fricreg_hb_nma_point(hb, 11, &ac, &wc, &zc, 0, 0, NULL), FRICREG_OK);
     ck_assert_double_eq_tol(ac, am, 1e-12 * am);
     ck_assert_double_eq_tol(wc, wm, 1e-9 * wm);
@@ -245,9 +275,9 @@ START_TEST(fold_h7)
     fricreg_hb *hb = model(7);
     ck_assert_int_eq(fricreg_hb_nma_continue(hb, 0, FRICREG_HB_NMA_DAMPING_MATRIX, 0.05, 100.0, 50),
                      FRICREG_OK);
-    ck_assert_uint_eq(fricreg_hb_nma_folds(hb), 2);
+    ck_assert_uint_eq(folds(hb), 2);
     double a, omega, zeta;
-    ck_assert_int_eq(fricreg_hb_nma_fold(hb, 0, &a, &omega, &zeta), FRICREG_OK);
+    ck_assert_int_eq(fold(hb, 0, &a, &omega, &zeta), FRICREG_OK);
     ck_assert_double_eq_tol(a, 4.4324, 0.01 * 4.4324);
     fricreg_hb_free(hb);
 }
@@ -260,26 +290,55 @@ START_TEST(fold_h15)
     fricreg_hb *hb = model(15);
     ck_assert_int_eq(fricreg_hb_nma_continue(hb, 0, FRICREG_HB_NMA_DAMPING_MATRIX, 0.05, 100.0, 50),
                      FRICREG_OK);
-    ck_assert_uint_eq(fricreg_hb_nma_folds(hb), 2);
+    ck_assert_uint_eq(folds(hb), 2);
     double a, omega, zeta, a_lower;
-    ck_assert_int_eq(fricreg_hb_nma_fold(hb, 0, &a, &omega, &zeta), FRICREG_OK);
+    ck_assert_int_eq(fold(hb, 0, &a, &omega, &zeta), FRICREG_OK);
     ck_assert_double_eq_tol(a, 4.4324, 0.01 * 4.4324);
-    ck_assert_int_eq(fricreg_hb_nma_fold(hb, 1, &a_lower, &omega, &zeta), FRICREG_OK);
+    ck_assert_int_eq(fold(hb, 1, &a_lower, &omega, &zeta), FRICREG_OK);
     ck_assert_double_lt(a_lower, a);
     fricreg_hb_free(hb);
 }
 END_TEST
 
-/* (g) The getters' statuses; a fold out of range writes nothing. */
+/* (g) The special points' getters: every status, one NULL argument at a time (the message
+ * names it), i out of range (none before a backbone, and one past the two folds after it);
+ * nothing written on failure. */
 START_TEST(fold_getters)
 {
     double a = -1.0, omega = -1.0, zeta = -1.0;
-    ck_assert_uint_eq(fricreg_hb_nma_folds(NULL), 0);
-    ck_assert_int_eq(fricreg_hb_nma_fold(NULL, 0, &a, &omega, &zeta), FRICREG_ENULL);
+    int type = -1, harmonic = -1;
+    size_t mode = 7;
+    ck_assert_uint_eq(fricreg_hb_nma_special_points(NULL), 0);
+    ck_assert_int_eq(fricreg_hb_nma_special_point(NULL, 0, &type, &a, &omega, &zeta, &harmonic,
+                                                  &mode),
+                     FRICREG_ENULL);
     fricreg_hb *hb = model(3);
-    ck_assert_int_eq(fricreg_hb_nma_fold(hb, 0, NULL, &omega, &zeta), FRICREG_ENULL);
-    ck_assert_int_eq(fricreg_hb_nma_fold(hb, 0, &a, &omega, &zeta), FRICREG_EINVAL);
-    ck_assert_double_eq(a, -1.0);
+    const char *names[6] = {"type", "amplitude", "omega", "zeta", "harmonic", "mode"};
+    for (int j = 0; j < 6; j++) {
+        ck_assert_int_eq(fricreg_hb_nma_special_point(hb, 0, j == 0 ? NULL : &type,
+                                                      j == 1 ? NULL : &a, j == 2 ? NULL : &omega,
+                                                      j == 3 ? NULL : &zeta,
+                                                      j == 4 ? NULL : &harmonic,
+                                                      j == 5 ? NULL : &mode),
+                         FRICREG_ENULL);
+        ck_assert_ptr_nonnull(strstr(fricreg_hb_errmsg(hb), names[j]));
+    }
+    ck_assert_uint_eq(fricreg_hb_nma_special_points(hb), 0);
+    ck_assert_int_eq(fricreg_hb_nma_special_point(hb, 0, &type, &a, &omega, &zeta, &harmonic,
+                                                  &mode),
+                     FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_hb_nma_continue(hb, 0, FRICREG_HB_NMA_DAMPING_MATRIX, 2.0, 10.0, 40),
+                     FRICREG_OK);
+    ck_assert_uint_eq(folds(hb), 2);
+    ck_assert_int_eq(fricreg_hb_nma_special_point(hb, 2, &type, &a, &omega, &zeta, &harmonic,
+                                                  &mode),
+                     FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_hb_nma_special_point(hb, SIZE_MAX, &type, &a, &omega, &zeta, &harmonic,
+                                                  &mode),
+                     FRICREG_EINVAL);
+    ck_assert_ptr_nonnull(strstr(fricreg_hb_errmsg(hb), "2 special points"));
+    ck_assert(a == -1.0 && omega == -1.0 && zeta == -1.0);
+    ck_assert(type == -1 && harmonic == -1 && mode == 7);
     ck_assert_int_eq(fricreg_hb_nma_continue(hb, 2, FRICREG_HB_NMA_DAMPING_MATRIX, 0.05, 1.0, 4),
                      FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_hb_nma_continue(hb, 0, FRICREG_HB_NMA_DAMPING_MATRIX, 1.0, 0.5, 4),

@@ -29,10 +29,13 @@ mode = hb.backbone(0, 0.01, 3.0, npoints=120, damping="modal", through_folds=Tru
 stuck = np.sqrt(np.linalg.eigvalsh(K + 20.0 * J.T @ J)[0])
 print("stuck linear mode %.6f rad/s, backbone starts at %.6f" % (stuck, mode.omega[0]))
 assert abs(mode.omega[0] - stuck) <= 1e-9 * stuck
-for fold in mode.folds:
-    print("fold at a = %.5f: omega = %.5f, zeta = %.5f" % fold)
-for c in mode.crossings:
-    print("%d omega meets mode %d at a = %.5f (omega = %.5f)" % c)
+folds = [p for p in mode.special_points if p.kind == "fold"]
+for p in mode.special_points:  # in the branch's order
+    if p.kind == "fold":
+        print("fold at a = %.5f: omega = %.5f, zeta = %.5f" % (p.amplitude, p.omega, p.zeta))
+    else:
+        print("%d omega meets mode %d at a = %.5f (omega = %.5f)"
+              % (p.harmonic, p.mode, p.amplitude, p.omega))
 
 np.savetxt("backbone.csv", np.column_stack([mode.amplitude, mode.omega, mode.zeta]),
            delimiter=",", header="amplitude,omega,zeta", comments="")
@@ -46,7 +49,7 @@ else:
     fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(6, 5))
     top.semilogx(mode.amplitude, mode.omega)
     bottom.semilogx(mode.amplitude, mode.zeta)
-    for fold in mode.folds:
+    for fold in folds:
         top.plot(fold.amplitude, fold.omega, "ko")
         bottom.plot(fold.amplitude, fold.zeta, "ko")
     top.set_ylabel("natural frequency (rad/s)")

@@ -1,8 +1,8 @@
 ! SPDX-License-Identifier: GPL-3.0-or-later
 ! test_hb_nma.f90 — nonlinear modes (fricreg_hb_nma, fricreg_hb_nma_continue) from Fortran:
-! hb%nma, hb%nma_points, hb%nma_point, hb%nma_continue, hb%nma_folds, hb%nma_fold,
-! hb%nma_harmonic_energy, hb%nma_modal_participation, hb%nma_crossings, hb%nma_crossing of the
-! type fricreg_hb_driver.
+! hb%nma, hb%nma_points, hb%nma_point, hb%nma_continue, hb%nma_harmonic_energy,
+! hb%nma_modal_participation, hb%nma_special_points, hb%nma_special_point of the type
+! fricreg_hb_driver.
 !
 ! Values: the oscillator m = 1, k = 1 with one Jenkins element kt = 2, mu N = 3 at H = 1 (the
 ! C suite's tests/test_hb_nma.c derives its closed form): stuck for a <= 1.5, omega^2 = 3,
@@ -15,7 +15,7 @@ program test_hb_nma
   type(fricreg_hb_driver) :: hb
   real(c_double), parameter :: pi = 3.14159265358979323846_c_double
   real(c_double) :: a, omega, zeta, beta, w2, z, x(3, 1), bad(3, 2), e(4), p(2), w1, sums
-  integer :: i, k, r
+  integer :: i, k, r, t, n
 
   call check_status(hb%create(1, 1, 1), FRICREG_OK, 'create')
   call check_status(hb%set_stiffness(reshape([1.0_c_double], [1, 1])), FRICREG_OK, 'stiffness')
@@ -51,7 +51,8 @@ program test_hb_nma
   ! The backbone by arclength: no fold on this one, each stored point a solution
   call check_status(hb%nma_continue(1, 0.5_c_double, 200.0_c_double, 10), FRICREG_OK, &
                     'nma_continue')
-  call check(hb%nma_points() == 10 .and. hb%nma_folds() == 0, 'ten points, no fold')
+  call check(hb%nma_points() == 10 .and. hb%nma_special_points() == 0, &
+             'ten points, no fold (no other mode to cross)')
   do i = 1, hb%nma_points()
     call check_status(hb%nma_point(i, a, omega, zeta), FRICREG_OK, 'nma_point, continued')
     w2 = 3.0_c_double
@@ -61,7 +62,8 @@ program test_hb_nma
     end if
     call check_close(omega * omega, w2, 1e-9_c_double * w2, 'omega^2 continued, closed form')
   end do
-  call check_status(hb%nma_fold(1, a, omega, zeta), FRICREG_EINVAL, 'fold 1 of 0')
+  call check_status(hb%nma_special_point(1, t, a, omega, zeta, k, r), FRICREG_EINVAL, &
+                    'special point 1 of 0')
   call hb%destroy()
 
   ! tests/test_hb_nma_fold.c's two masses (k1 = 1, kc = 0.25, k2 = 0.2; kt = 10, mu N = 1 on
@@ -73,13 +75,18 @@ program test_hb_nma
                                     [10.0_c_double], [1.0_c_double]), FRICREG_OK, 'element')
   call check_status(hb%nma_continue(1, 0.05_c_double, 1e4_c_double, 60), FRICREG_OK, &
                     'nma_continue through the folds')
-  call check(hb%nma_folds() == 2, 'two folds')
-  call check_status(hb%nma_fold(1, a, omega, zeta), FRICREG_OK, 'fold 1')
+  ! (3 omega stays above the second stuck mode's 3.2337, so its special points are the folds)
+  call check(hb%nma_special_points() == 2, 'two special points: the folds')
+  call check_status(hb%nma_special_point(1, t, a, omega, zeta, k, r), FRICREG_OK, 'fold 1')
+  call check(t == FRICREG_HB_NMA_FOLD .and. k == 1 .and. r == 1, 'fold 1: harmonic 1, mode 1')
   call check_close(a, 4.4324_c_double, 2e-3_c_double * 4.4324_c_double, 'fold 1 amplitude')
-  call check_status(hb%nma_fold(2, a, omega, zeta), FRICREG_OK, 'fold 2')
+  call check_status(hb%nma_special_point(2, t, a, omega, zeta, k, r), FRICREG_OK, 'fold 2')
+  call check(t == FRICREG_HB_NMA_FOLD, 'fold 2: a fold')
   call check_close(a, 4.4168_c_double, 2e-3_c_double * 4.4168_c_double, 'fold 2 amplitude')
-  call check_status(hb%nma_fold(0, a, omega, zeta), FRICREG_EINVAL, 'fold 0')
-  call check_status(hb%nma_fold(3, a, omega, zeta), FRICREG_EINVAL, 'fold 3 of 2')
+  call check_status(hb%nma_special_point(0, t, a, omega, zeta, k, r), FRICREG_EINVAL, &
+                    'special point 0')
+  call check_status(hb%nma_special_point(3, t, a, omega, zeta, k, r), FRICREG_EINVAL, &
+                    'special point 3 of 2')
   ! what each point is made of: the harmonics' shares of the kinetic energy add up to 1 (the
   ! mean's is 0); the first point, stuck, is the linear mode 1 (tests/test_hb_nma_energy.c);
   ! 3 omega stays above the second stuck mode's 3.2337, so no crossing
@@ -97,12 +104,11 @@ program test_hb_nma
   call check_status(hb%nma_harmonic_energy(1, e(1:3)), FRICREG_ESIZE, 'energy, size 3')
   call check_status(hb%nma_modal_participation(1, 4, p), FRICREG_EINVAL, 'harmonic 4 of 3')
   call check_status(hb%nma_harmonic_energy(0, e), FRICREG_EINVAL, 'energy, point 0')
-  call check(hb%nma_crossings() == 0, 'no crossing')
-  call check_status(hb%nma_crossing(1, k, r, a, omega), FRICREG_EINVAL, 'crossing 1 of 0')
   call hb%destroy()
 
   ! with kt = 11 the second stuck mode, omega_2^2 = 6.35 + sqrt(5.1^2 + 0.25^2), lies in 3
-  ! omega's range along the backbone: one crossing, 3 omega = omega_2 there
+  ! omega's range along the backbone: one crossing, 3 omega = omega_2 there, after the S's folds
+  ! (tests/test_hb_nma_energy.c): the last special point
   call check_status(hb%create(2, 1, 3), FRICREG_OK, 'create, kt = 11')
   call check_status(hb%set_stiffness(reshape([1.25_c_double, -0.25_c_double, -0.25_c_double, &
                                               0.45_c_double], [2, 2])), FRICREG_OK, 'K, kt = 11')
@@ -110,8 +116,16 @@ program test_hb_nma
                                     [11.0_c_double], [1.0_c_double]), FRICREG_OK, 'element 11')
   call check_status(hb%nma_continue(1, 0.05_c_double, 1e3_c_double, 100), FRICREG_OK, &
                     'nma_continue, kt = 11')
-  call check(hb%nma_crossings() == 1, 'one crossing')
-  call check_status(hb%nma_crossing(1, k, r, a, omega), FRICREG_OK, 'crossing 1')
+  n = hb%nma_special_points()
+  call check(n >= 3, 'the folds and one crossing')
+  call check_status(hb%nma_special_point(n, t, a, omega, zeta, k, r), FRICREG_OK, 'crossing')
+  call check(t == FRICREG_HB_NMA_CROSSING, 'the last: a crossing')
+  z = a
+  do i = 1, n - 1
+    call check_status(hb%nma_special_point(i, t, a, omega, zeta, k, r), FRICREG_OK, 'fold')
+    call check(t == FRICREG_HB_NMA_FOLD .and. a < z, 'a fold, before the crossing')
+  end do
+  call check_status(hb%nma_special_point(n, t, a, omega, zeta, k, r), FRICREG_OK, 'crossing')
   w1 = sqrt(6.35_c_double + sqrt(5.1_c_double**2 + 0.25_c_double**2))
   call check(k == 3 .and. r == 2, 'harmonic 3, mode 2')
   call check_close(3.0_c_double * omega, w1, 1e-12_c_double * w1, '3 omega = omega_2')

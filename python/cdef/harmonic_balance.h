@@ -19,6 +19,7 @@ enum fricreg_hb_bifurcation_type {
     FRICREG_HB_PD = 3,
     FRICREG_HB_NS = 4
 };
+enum fricreg_hb_nma_special_type { FRICREG_HB_NMA_FOLD = 1, FRICREG_HB_NMA_CROSSING = 2 };
 
 int fricreg_hb_create(size_t ndof, size_t m, int harmonics, fricreg_hb **out);
 void fricreg_hb_free(fricreg_hb *hb);
@@ -56,14 +57,12 @@ int fricreg_hb_nma_continue(fricreg_hb *hb, size_t mode, int damping, double a0,
 size_t fricreg_hb_nma_points(const fricreg_hb *hb);
 int fricreg_hb_nma_point(fricreg_hb *hb, size_t i, double *amplitude, double *omega, double *zeta,
                          size_t ndof, size_t nc, double x[]);
-size_t fricreg_hb_nma_folds(const fricreg_hb *hb);
-int fricreg_hb_nma_fold(fricreg_hb *hb, size_t i, double *amplitude, double *omega, double *zeta);
 int fricreg_hb_nma_harmonic_energy(fricreg_hb *hb, size_t i, size_t nh, double fraction[]);
 int fricreg_hb_nma_modal_participation(fricreg_hb *hb, size_t i, int harmonic, size_t nmodes,
                                        double fraction[]);
-size_t fricreg_hb_nma_crossings(const fricreg_hb *hb);
-int fricreg_hb_nma_crossing(fricreg_hb *hb, size_t i, int *harmonic, size_t *mode,
-                            double *amplitude, double *omega);
+size_t fricreg_hb_nma_special_points(const fricreg_hb *hb);
+int fricreg_hb_nma_special_point(fricreg_hb *hb, size_t i, int *type, double *amplitude,
+                                 double *omega, double *zeta, int *harmonic, size_t *mode);
 const char *fricreg_hb_errmsg(const fricreg_hb *hb);
 
 /* Python's monitor (harmonic_balance.py), installed on every driver: it stops a solve on

@@ -15,11 +15,11 @@ from ._fricreg import ffi, lib
 from .arrays import as_doubles, choice, pointer
 from .element import Element
 from .errors import Error, Interrupted, raise_status
-from .hb_results import Backbone, Bifurcation, Crossing, Fold, Response, Solution
+from .hb_results import Backbone, Bifurcation, Response, Solution, SpecialPoint
 from .matrices import MatrixArgs
 
-__all__ = ["HarmonicBalance", "Solution", "Response", "Bifurcation", "Backbone", "Fold",
-           "Crossing"]
+__all__ = ["HarmonicBalance", "Solution", "Response", "Bifurcation", "Backbone",
+           "SpecialPoint"]
 
 _STABILITY_METHODS = {"auto": lib.FRICREG_HB_STABILITY_AUTO,
                       "hill": lib.FRICREG_HB_STABILITY_HILL,
@@ -28,6 +28,7 @@ _DAMPING = {"matrix": lib.FRICREG_HB_NMA_DAMPING_MATRIX,
             "modal": lib.FRICREG_HB_NMA_DAMPING_MODAL}
 _BIFURCATIONS = {lib.FRICREG_HB_TP: "TP", lib.FRICREG_HB_BP: "BP", lib.FRICREG_HB_PD: "PD",
                  lib.FRICREG_HB_NS: "NS"}
+_SPECIAL_POINTS = {lib.FRICREG_HB_NMA_FOLD: "fold", lib.FRICREG_HB_NMA_CROSSING: "crossing"}
 
 # FRICREG_HB_SOLUTION, ((size_t)-1): the index of the last solution (a cast, which cffi's
 # cdef cannot declare as a constant).
@@ -512,16 +513,13 @@ class HarmonicBalance:
             a[i], w[i], z[i] = pa[0], pw[0], pz[0]
             self._check(lib.fricreg_hb_nma_harmonic_energy(self._hb, i, self.harmonics + 1,
                                                            pointer(energy[i])), "backbone")
-        folds = []
-        for i in range(lib.fricreg_hb_nma_folds(self._hb)):
-            self._check(lib.fricreg_hb_nma_fold(self._hb, i, pa, pw, pz), "backbone")
-            folds.append(Fold(pa[0], pw[0], pz[0]))
-        crossings = []
-        k, r = ffi.new("int *"), ffi.new("size_t *")
-        for i in range(lib.fricreg_hb_nma_crossings(self._hb)):
-            self._check(lib.fricreg_hb_nma_crossing(self._hb, i, k, r, pa, pw), "backbone")
-            crossings.append(Crossing(k[0], r[0], pa[0], pw[0]))
-        return Backbone(a, w, z, energy, tuple(folds), tuple(crossings), x)
+        special = []
+        kind, k, r = ffi.new("int *"), ffi.new("int *"), ffi.new("size_t *")
+        for i in range(lib.fricreg_hb_nma_special_points(self._hb)):
+            self._check(lib.fricreg_hb_nma_special_point(self._hb, i, kind, pa, pw, pz, k, r),
+                        "backbone")
+            special.append(SpecialPoint(_SPECIAL_POINTS[kind[0]], pa[0], pw[0], pz[0], k[0], r[0]))
+        return Backbone(a, w, z, energy, tuple(special), x)
 
     def modal_participation(self, point, harmonic):
         """Each stuck linear mode's share in one harmonic of a point of the last backbone

@@ -9,7 +9,7 @@ x0 + Σ_{h=1..H} (a_h cos hθ + b_h sin hθ), stored as the 2H + 1 numbers
 """
 from collections import namedtuple
 
-__all__ = ["Solution", "Response", "Bifurcation", "Backbone", "Fold", "Crossing"]
+__all__ = ["Solution", "Response", "Bifurcation", "Backbone", "SpecialPoint"]
 
 Solution = namedtuple("Solution", "omega q x stable mu_max")
 Solution.__doc__ = """A periodic steady state (:meth:`HarmonicBalance.solve`).
@@ -68,16 +68,27 @@ solution : Solution or None
     q is J x, equal to the solver's unknowns to Newton's tolerance: a guess to go on from.
 """
 
-Fold = namedtuple("Fold", "amplitude omega zeta")
-Fold.__doc__ = """A fold of a backbone in the amplitude (``fricreg_hb_nma_fold``): modal amplitude
-a, natural frequency ω (rad/s) and damping ratio ζ there."""
+SpecialPoint = namedtuple("SpecialPoint", "kind amplitude omega zeta harmonic mode")
+SpecialPoint.__doc__ = """A special point of a backbone (``fricreg_hb_nma_special_point``), in the
+branch's order among its folds and crossings.
 
-Crossing = namedtuple("Crossing", "harmonic mode amplitude omega")
-Crossing.__doc__ = """Where a harmonic k ω of the backbone crosses another stuck linear mode's
-frequency ω_r (``fricreg_hb_nma_crossing``): harmonic k, mode r (from 0, ascending), the
-modal amplitude a and the backbone's ω (rad/s) there: where an internal resonance can start."""
+kind : str
+    ``"fold"``: the backbone's amplitude turns (an internal resonance; through_folds only);
+    ``"crossing"``: a harmonic k ω of the backbone crosses another stuck linear mode's
+    frequency ω_r, where an internal resonance can start.
+amplitude : float
+    The modal amplitude a there.
+omega : float
+    The backbone's natural frequency ω there, rad/s (a crossing: k ω = ω_r).
+zeta : float
+    Its damping ratio ζ there (a crossing: interpolated between the two points around it).
+harmonic : int
+    k, 2 <= k <= H for a crossing; 1 for a fold.
+mode : int
+    r, the stuck linear mode crossed (from 0, ascending); a fold's the backbone's own.
+"""
 
-Backbone = namedtuple("Backbone", "amplitude omega zeta harmonic_energy folds crossings x")
+Backbone = namedtuple("Backbone", "amplitude omega zeta harmonic_energy special_points x")
 Backbone.__doc__ = """A nonlinear mode's backbone by the extended periodic motion concept (Krack,
 Computers & Structures 154 (2015) 59-71): :meth:`HarmonicBalance.backbone`.
 
@@ -91,8 +102,9 @@ zeta : ndarray, shape (npoints,)
 harmonic_energy : ndarray, shape (npoints, H + 1)
     Each harmonic's share of the kinetic energy averaged over a period (row sums 1;
     ``fricreg_hb_nma_harmonic_energy``).
-folds : tuple of Fold
-crossings : tuple of Crossing
+special_points : tuple of SpecialPoint
+    Its folds and crossings in one list, in the branch's order (by arclength through_folds,
+    by amplitude otherwise).
 x : ndarray, shape (npoints, ndof, 2H + 1)
     The displacements' Fourier coefficients of each point's periodic motion.
 """

@@ -123,7 +123,7 @@ def test_backbone_closed_form_and_c_library():
         assert abs(w * w - w2) <= 1e-9 * w2 and abs(z - zeta) <= 1e-9 * max(zeta, 1e-3)
     np.testing.assert_allclose(b.harmonic_energy[:, 1], 1.0, rtol=1e-12)
     np.testing.assert_allclose(b.x[:, 0, 1], b.amplitude, rtol=1e-9)
-    assert b.folds == () and b.crossings == ()
+    assert b.special_points == ()
     np.testing.assert_allclose(hb.modal_participation(3, 1), [1.0], rtol=1e-12)
     # the same through the C API
     out = ffi.new("fricreg_hb **")
@@ -139,6 +139,27 @@ def test_backbone_closed_form_and_c_library():
     for i in range(16):
         assert lib.fricreg_hb_nma_point(c, i, a, w, z, 0, 0, ffi.NULL) == 0
         assert (a[0], w[0], z[0]) == (b.amplitude[i], b.omega[i], b.zeta[i])
+
+
+def test_backbone_special_points_in_the_branchs_order():
+    """tests/test_hb_nma_energy.c's two masses with kt = 11 (H = 3): the folds of its S (a = 4.49)
+    and then, the last special point, 3 ω crossing the stuck structure's second mode,
+    ω_1² = 6.35 + sqrt(5.1² + 0.25²) (the 2x2 closed form), at a = 5.04; every fold harmonic 1
+    of the backbone's mode 0."""
+    K = [[1.25, -0.25], [-0.25, 0.45]]
+    hb = fricreg.HarmonicBalance(np.eye(2), K, elements=[("jenkins", [[0.0, 1.0]], [[11.0, 1.0]])],
+                                 harmonics=3)
+    b = hb.backbone(0, 0.05, 1e3, 100, through_folds=True)
+    *folds, last = b.special_points
+    w1 = np.sqrt(6.35 + np.hypot(5.1, 0.25))
+    assert last.kind == "crossing" and (last.harmonic, last.mode) == (3, 1)
+    assert abs(3 * last.omega - w1) <= 1e-12 * w1 and abs(last.amplitude - 5.04) <= 0.01 * 5.04
+    assert min(b.zeta) <= last.zeta <= max(b.zeta)
+    assert len(folds) >= 2
+    for fold in folds:
+        assert fold.kind == "fold" and (fold.harmonic, fold.mode) == (1, 0)
+        assert fold.amplitude < last.amplitude
+    assert abs(folds[-2].amplitude - 4.4942) <= 0.01 * 4.4942
 
 
 def test_level_response_and_bifurcation_fields():

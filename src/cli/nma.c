@@ -101,24 +101,30 @@ int cli_parse_nma(int argc, char **argv, struct nma_options *o)
 
 /* The backbone's points: per point a, omega, zeta and the shares e_h1..e_hH of the harmonics
  * in its kinetic energy (fricreg_hb_nma_harmonic_energy; e_h0 is 0 by definition), stride
- * 3 + H, then its folds' a, omega, zeta, stride 3, into one array the caller frees. */
+ * 3 + H, then its folds' a, omega, zeta (the special points of type FRICREG_HB_NMA_FOLD),
+ * stride 3, into one array the caller frees. */
 static int collect(fricreg_hb *hb, int H, size_t *npoints, size_t *nfolds, double **pts)
 {
-    size_t K = fricreg_hb_nma_points(hb), F = fricreg_hb_nma_folds(hb), w = 3 + (size_t)H;
-    *pts = malloc((K * w + 3 * F + (size_t)H + 2) * sizeof **pts);
+    size_t K = fricreg_hb_nma_points(hb), S = fricreg_hb_nma_special_points(hb), F = 0;
+    size_t w = 3 + (size_t)H;
+    *pts = malloc((K * w + 3 * S + (size_t)H + 2) * sizeof **pts);
     if (*pts == NULL)
         return cli_usage_error("nma", "out of memory");
-    double *e = *pts + K * w + 3 * F; /* H + 1 shares */
-    for (size_t k = 0; k < K + F; k++) {
-        double *p = k < K ? *pts + w * k : *pts + K * w + 3 * (k - K);
+    double *e = *pts + K * w + 3 * S; /* H + 1 shares */
+    for (size_t k = 0; k < K + S; k++) {
+        double *p = k < K ? *pts + w * k : *pts + K * w + 3 * F;
+        int type = FRICREG_HB_NMA_FOLD, harmonic;
+        size_t mode;
         int status = k < K ? fricreg_hb_nma_point(hb, k, &p[0], &p[1], &p[2], 0, 0, NULL)
-                           : fricreg_hb_nma_fold(hb, k - K, &p[0], &p[1], &p[2]);
+                           : fricreg_hb_nma_special_point(hb, k - K, &type, &p[0], &p[1], &p[2],
+                                                          &harmonic, &mode);
         if (status == FRICREG_OK && k < K &&
             (status = fricreg_hb_nma_harmonic_energy(hb, k, (size_t)H + 1, e)) == FRICREG_OK)
             for (int h = 1; h <= H; h++)
                 p[2 + h] = e[h];
         if (status != FRICREG_OK)
             return cli_usage_error("nma", fricreg_hb_errmsg(hb));
+        F += k >= K && type == FRICREG_HB_NMA_FOLD;
     }
     *npoints = K;
     *nfolds = F;
@@ -138,18 +144,22 @@ static void write_backbone(FILE *out, int H, size_t K, const double pts[])
 }
 
 /* The crossings of a harmonic k omega with another linear mode's frequency, the mode from 1 as
- * --mode (fricreg_hb_nma_crossings). */
+ * --mode (the special points of type FRICREG_HB_NMA_CROSSING, fricreg_hb_nma_special_point). */
 static void write_crossings(FILE *out, fricreg_hb *hb)
 {
+    const char *sep = "";
     fputs(", \"crossings\": [", out);
-    for (size_t i = 0; i < fricreg_hb_nma_crossings(hb); i++) {
-        int k;
+    for (size_t i = 0; i < fricreg_hb_nma_special_points(hb); i++) {
+        int type, k;
         size_t r;
-        double a, w;
-        if (fricreg_hb_nma_crossing(hb, i, &k, &r, &a, &w) == FRICREG_OK)
+        double a, w, z;
+        if (fricreg_hb_nma_special_point(hb, i, &type, &a, &w, &z, &k, &r) == FRICREG_OK &&
+            type == FRICREG_HB_NMA_CROSSING) {
             fprintf(out,
                     "%s{\"harmonic\": %d, \"mode\": %zu, \"amplitude\": %.17g, \"omega\": %.17g}",
-                    i ? ", " : "", k, r + 1, a, w);
+                    sep, k, r + 1, a, w);
+            sep = ", ";
+        }
     }
     fputs("]", out);
 }
@@ -276,7 +286,7 @@ const struct cli_command cli_nma_command = {
     "harmonic's share rising is energy flowing into it, fricreg_hb_nma_harmonic_energy); the "
     "summary lists where a harmonic k omega (k >= 2) crosses the frequency of another mode of "
     "the structure with its elements stuck (\"crossings\", sparse models up to 256 dofs: "
-    "fricreg_hb_nma_crossings).\n\n"
+    "fricreg_hb_nma_special_points).\n\n"
     "ELEMENTS is one parameter file, a line per row of J.mtx: --jenkins-params, --iwan-params "
     "or --iwan-segalman, or --normal with --normal-params (lift-off). Or, instead, --elements "
     "TYPE:J.mtx:P.txt, repeatable: sets of any types harmonic balance takes, mixed in one "

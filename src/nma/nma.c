@@ -31,7 +31,7 @@ static void nma_free(struct fr_hb_nma *nma)
     free(nma->piv);
     free(nma->pts);
     free(nma->folds);
-    free(nma->cross);
+    free(nma->special);
     free(nma->modes);
     free(nma);
 }
@@ -230,8 +230,8 @@ int fr_hb_nma_run(fricreg_hb *hb, const char *fn, size_t mode, int damping, doub
     fr_hb_begin(hb, 0);
     status = fr_hb_end(hb, body(hb, fn, s, a0, a1, npoints));
     fr_hb_nma_leave(hb, s);
-    if (fr_hb_nma_find_crossings(s) != FRICREG_OK && status == FRICREG_OK) /* points reached */
-        status = fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for the backbone's crossings", fn);
+    if (fr_hb_nma_find_special(s) != FRICREG_OK && status == FRICREG_OK) /* points reached */
+        status = fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for the backbone's special points", fn);
     if (status == FRICREG_OK)
         hb->err = before;
     return status;

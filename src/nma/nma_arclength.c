@@ -434,25 +434,30 @@ static void between(struct backbone *b, size_t i, double th)
 }
 
 /* The folds: where the tangent's log a component changes sign between two points, located
- * by its linear interpolation there. */
+ * by its linear interpolation there; each one's arclength along the chords (in z) into f[3],
+ * made a place among the stored points by resample. */
 static int find_folds(struct backbone *b)
 {
     struct fr_hb_nma *s = b->s;
     size_t st = b->nz + 1;
+    double along = 0.0;
     s->nfolds = 0;
     if (b->npts < 2)
         return FRICREG_OK;
-    if ((s->folds = malloc(3 * (b->npts - 1) * sizeof(double))) == NULL)
+    if ((s->folds = malloc(4 * (b->npts - 1) * sizeof(double))) == NULL)
         return fr_fail(b->hb, FRICREG_ENOMEM, "%s: no memory for the folds", b->fn);
     for (size_t i = 0; i + 1 < b->npts; i++) {
-        double t0 = b->pts[i * st + b->nz], t1 = b->pts[(i + 1) * st + b->nz];
-        if (!((t0 > 0.0 && t1 < 0.0) || (t0 < 0.0 && t1 > 0.0)))
-            continue;
-        double *f = s->folds + 3 * s->nfolds++, *y = b->y;
-        between(b, i, t0 / (t0 - t1));
-        f[0] = unscale(b, b->w, y, b->cs);
-        f[1] = y[s->nq];
-        f[2] = y[s->nq + 1];
+        const double *p0 = b->pts + i * st, *p1 = p0 + st;
+        double t0 = p0[b->nz], t1 = p1[b->nz], h = fr_hb_dist(p0, p1, b->nz);
+        if ((t0 > 0.0 && t1 < 0.0) || (t0 < 0.0 && t1 > 0.0)) {
+            double *f = s->folds + 4 * s->nfolds++, *y = b->y, th = t0 / (t0 - t1);
+            between(b, i, th);
+            f[0] = unscale(b, b->w, y, b->cs);
+            f[1] = y[s->nq];
+            f[2] = y[s->nq + 1];
+            f[3] = along + th * h;
+        }
+        along += h;
     }
     return FRICREG_OK;
 }
@@ -482,6 +487,10 @@ static int resample(struct backbone *b, size_t n)
         between(b, k, h > 0.0 ? (at - len[k]) / h : 0.0);
         store_point(b, b->w, p);
     }
+    double total = len[b->npts - 1]; /* the stored points are at equal arclength: each fold's */
+    for (size_t f = 0; f < s->nfolds; f++) /* place among them, index plus fraction */
+        s->folds[4 * f + 3] = n > 1 && total > 0.0 ? s->folds[4 * f + 3] / total * (double)(n - 1)
+                                                   : 0.0;
     free(len);
     return FRICREG_OK;
 }
@@ -567,25 +576,4 @@ int fricreg_hb_nma_continue(fricreg_hb *hb, size_t mode, int damping, double a0,
                             size_t npoints)
 {
     return fr_hb_nma_run(hb, "nma_continue", mode, damping, a0, a1, npoints, arclength);
-}
-
-size_t fricreg_hb_nma_folds(const fricreg_hb *hb)
-{
-    return hb && hb->nma ? hb->nma->nfolds : 0;
-}
-
-int fricreg_hb_nma_fold(fricreg_hb *hb, size_t i, double *amplitude, double *omega, double *zeta)
-{
-    static const char fn[] = "nma_fold";
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    int status = fr_hb_nma_point_args(hb, fn, amplitude, omega, zeta, i, fricreg_hb_nma_folds(hb),
-                                      "folds");
-    if (status != FRICREG_OK)
-        return status;
-    const double *f = hb->nma->folds + 3 * i;
-    *amplitude = f[0];
-    *omega = f[1];
-    *zeta = f[2] / (2.0 * f[1]);
-    return FRICREG_OK;
 }

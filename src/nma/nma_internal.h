@@ -31,15 +31,17 @@ struct fr_hb_nma {
     /* the backbone: per point a, ω, ξ, then the unknowns q */
     size_t npts, cap, stride;
     double *pts;
-    /* the folds of the last continuation (nma_arclength.c): per fold a, ω, ξ */
+    /* the folds of the last continuation (nma_arclength.c): per fold a, ω, ξ and its place,
+     * the stored points' index plus the fraction of the stretch (its arclength until the
+     * points are resampled), 4 doubles */
     size_t nfolds;
     double *folds;
-    size_t mode;    /* the backbone's mode k */
-    size_t nlambda; /* n for a dense model (every stuck mode's ω² known), 0 for a sparse one */
-    double *lambda; /* [n] the stuck structure's ω_r², ascending (nma_linear.c) */
-    size_t ncross;  /* the crossings k ω = ω_r along the backbone (nma_crossings.c) */
-    double *cross;  /* per crossing k, r, a, ω */
-    double *modes;  /* [n n] the stuck modes φ_r (row r), mass-normalized; NULL until first
+    size_t mode;     /* the backbone's mode k */
+    size_t nlambda;  /* n for a dense model (every stuck mode's ω² known), 0 for a sparse one */
+    double *lambda;  /* [n] the stuck structure's ω_r², ascending (nma_linear.c) */
+    size_t nspecial; /* the special points, folds and crossings k ω = ω_r (nma_crossings.c) */
+    double *special; /* per point FR_HB_NMA_SPECIAL_STRIDE doubles: place, type, k, r, a, ω, ζ */
+    double *modes;   /* [n n] the stuck modes φ_r (row r), mass-normalized; NULL until first
                         asked for (nma_energy.c) */
 };
 
@@ -82,10 +84,12 @@ void fr_hb_nma_back(const double *L, const double *V, size_t n, size_t c, double
  * fn). */
 int fr_hb_nma_modes(fricreg_hb *hb, const char *fn, double *Phi);
 
-/* The crossings k ω = ω_r (k = 2..H, r every stuck mode but the backbone's) between the
- * backbone's consecutive points into s->cross (nma_crossings.c); none for a sparse model
- * (s->nlambda 0). FRICREG_OK, FRICREG_ENOMEM (no message: the caller records it). */
-int fr_hb_nma_find_crossings(struct fr_hb_nma *s);
+/* The special points into s->special in the branch's order (nma_crossings.c): the crossings
+ * k ω = ω_r (k = 2..H, r every stuck mode but the backbone's; none for a sparse model,
+ * s->nlambda 0) between the backbone's consecutive points, merged with the folds of
+ * s->folds. FRICREG_OK, FRICREG_ENOMEM (no message: the caller records it). */
+#define FR_HB_NMA_SPECIAL_STRIDE 7
+int fr_hb_nma_find_special(struct fr_hb_nma *s);
 
 /* Row r of J's stiffness with its elements stuck and its amplitude of first slip (or opening):
  * *k (0: the row carries no force at rest), *limit (infinite: none). */
@@ -124,7 +128,7 @@ typedef int (*fr_hb_nma_backbone)(fricreg_hb *hb, const char *fn, struct fr_hb_n
 int fr_hb_nma_run(fricreg_hb *hb, const char *fn, size_t mode, int damping, double a0, double a1,
                   size_t npoints, fr_hb_nma_backbone body);
 
-/* The getters' shared checks of a stored backbone point or fold (nma.c): amplitude, omega
+/* The getters' shared checks of a stored backbone point (nma.c): amplitude, omega
  * and zeta not NULL (FRICREG_ENULL), i < n, the count of what (FRICREG_EINVAL "i = .., n
  * <what> stored"); messages recorded with fn. FRICREG_OK otherwise. */
 int fr_hb_nma_point_args(fricreg_hb *hb, const char *fn, const double *amplitude,
