@@ -61,28 +61,37 @@ end subroutine frelin
 
 !> FRELEV(ITYPE, NS, PARAMS, STATEI, U, F, DFDU, DFDP, STATEO, STAT): the force F(IDIM), the
 !> consistent tangent DFDU(IDIM, IDIM), the parameter derivatives DFDP(IDIM, NPAR) and the new
-!> state STATEO(NSTATE) at U(IDIM) from STATEI(NSTATE).
-subroutine frelev(itype, ns, params, statei, u, f, dfdu, dfdp, stateo, stat)
+!> state STATEO(NSTATE) at U(IDIM) from STATEI(NSTATE). Allocates nothing: C writes DFDU in
+!> its row order, turned here in place, and DFDP into a scratch on the stack (RECURSIVE keeps
+!> it there, off static memory, so that threads may call at once) of the largest IDIM NPAR of
+!> the table: iwan_3d's 3 (2 FRICREG_ELEMENT_MAX_SLIDERS) = 6144 (iwan_normal's 2 (2 1024 + 3)
+!> = 4102, the fixed types' at most 3 5); a type beyond it would be FRICREG_ESIZE, writing
+!> nothing (test_f77_element runs iwan_3d at NS = 1024).
+recursive subroutine frelev(itype, ns, params, statei, u, f, dfdu, dfdp, stateo, stat)
   use fricreg_c
   implicit none
   integer, intent(in) :: itype, ns
   double precision, intent(in) :: params(*), statei(*), u(*)
   double precision, intent(inout) :: f(*), dfdu(*), dfdp(*), stateo(*)
   integer, intent(out) :: stat
+  integer, parameter :: max_dfdp = 3 * 2 * 1024
   type(c_ptr) :: t
   integer :: d, np, a, j
-  real(c_double), allocatable :: tu(:), tp(:)
+  real(c_double) :: tp(max_dfdp), x
   t = fricreg_f77_element_type(int(itype, c_int64_t), int(ns, c_int64_t))
   stat = int(FRICREG_EINVAL)
   if (.not. c_associated(t)) return
   d = int(fricreg_element_dim(t))
   np = int(fricreg_element_nparams(t))
-  allocate (tu(d * d), tp(d * np))
-  stat = int(fricreg_element_eval(t, params, statei, u, f, tu, tp, stateo))
+  stat = int(FRICREG_ESIZE)
+  if (d * np > max_dfdp) return
+  stat = int(fricreg_element_eval(t, params, statei, u, f, dfdu, tp, stateo))
   if (stat /= FRICREG_OK) return
   do a = 1, d
-    do j = 1, d
-      dfdu(a + d * (j - 1)) = tu(j + d * (a - 1))
+    do j = a + 1, d
+      x = dfdu(a + d * (j - 1))
+      dfdu(a + d * (j - 1)) = dfdu(j + d * (a - 1))
+      dfdu(j + d * (a - 1)) = x
     end do
     do j = 1, np
       dfdp(a + d * (j - 1)) = tp(j + np * (a - 1))

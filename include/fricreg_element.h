@@ -63,7 +63,14 @@
  *
  * with df_t/dg = sum over slipping sliders of mu_s kn n_s and dN/dg = kn while closed. The
  * normal law is a preload n0 at g = 0 or a gap: a positive gap (closing at g = gap) with
- * n0 = 0, or n0 with gap = 0, not both.
+ * n0 = 0, or n0 with gap = 0, not both. Either sign and kn = 0 are taken, and mean:
+ *
+ *     gap < 0 (n0 = 0): an interference, closed at g = 0 with N = kn |gap| (the preload
+ *                       form's n0 = -kn gap, to rounding);
+ *     n0 < 0 (gap = 0): a clearance, open while g < -n0/kn (the gap form's gap = -n0/kn);
+ *     kn = 0:           a normal force given by the host, N = max(0, n0) whatever g (dN/dg = 0,
+ *                       df_t/dg = 0): n0 > 0 presses, n0 < 0 (a tension) opens, and n0 = 0
+ *                       (the gap form too) carries no force.
  *
  * The parameters' ranges: k_s (kt) > 0; b_s (mun, phi_s) >= 0; mu_s >= 0; kn >= 0; n0 and gap
  * finite, not both nonzero; ns <= FRICREG_ELEMENT_MAX_SLIDERS; all finite. The state: any
@@ -176,7 +183,15 @@ FRICREG_API int fricreg_element_init(const fricreg_element_type *type, const dou
  *                   stick df/dk_s = d_s, in slip df/db_s = n_s (df_t/dmu_s = N n_s); for a
  *                   normal type df/dn0 = (sum_slip mu_s n_s, 1), df/dkn = (g - gap) df/dn0 and
  *                   df/dgap = -kn df/dn0 while closed, 0 where open. At the stick/slip border
- *                   (k_s |d_s| = b_s) the stick side's.
+ *                   (k_s |d_s| = b_s) the stick side's, at lift-off (n0 + kn (g - gap) = 0)
+ *                   the closed side's, and at a range's end (kn = 0, b_s or mu_s = 0) the
+ *                   side inside it: one-sided there. The n0 and gap columns are the formula
+ *                   n0 + kn (g - gap)'s, but a normal type takes only one of n0 and gap
+ *                   nonzero (EINVAL otherwise): in the preload form (gap = 0, n0 != 0) the
+ *                   gap column, and in the gap form (n0 = 0, gap != 0) the n0 column, have no
+ *                   valid neighbour on either side, so no difference checks them; each is the
+ *                   derivative along the other form (a gap h is the preload -kn h: df/dgap =
+ *                   -kn df/dn0). With n0 = gap = 0 both are two-sided.
  *  state_out[nstate] out: the state at the end of the increment. May be state_in (the same
  *                   array, not a partial overlap); no other output may overlap an input.
  *

@@ -266,7 +266,8 @@ START_TEST(test_tangents)
                                  dfdu[dim * a + c], col[a]);
             }
             for (size_t j = 0; j < np; j++) {
-                if (p[j] == 0.0) /* n0 = 0 with a gap, or gap = 0 with n0: one-sided */
+                if (p[j] == 0.0) /* n0 = 0 with a gap, or gap = 0 with n0: no valid
+                                  * neighbour (test_contact_3d_one_form_columns) */
                     continue;
                 centred(t, p, w, u, p, j, 1e-6, col);
                 for (int a = 0; a < dim; a++)
@@ -674,6 +675,180 @@ START_TEST(test_iwan_3d)
 }
 END_TEST
 
+/* explain's NULLs (fricreg_element.h): one of state_in and u NULL is eval's call with that
+ * argument NULL, so FRICREG_ENULL and a message naming it, even with bad parameters (eval
+ * checks its NULLs first); both NULL is init's check of the parameters alone. */
+START_TEST(test_explain_nulls)
+{
+    for (size_t i = 0; i < NTYPES; i++) {
+        const fricreg_element_type *t = type_of(TYPES[i].name, TYPES[i].ns);
+        size_t np = TYPES[i].nparams;
+        unsigned long seed = 21;
+        double p[MAXP], q[MAXP], w[MAXP] = {0.0}, u[3] = {0.3, -0.2, 0.1}, f[3], wo[MAXP];
+        some_params(t, &seed, 0, p);
+        memcpy(q, p, np * sizeof *p);
+        q[0] = 0.0; /* a stiffness out of range */
+        char msg[200];
+        for (int bad = 0; bad < 2; bad++) {
+            const double *pp = bad ? q : p;
+            ck_assert_int_eq(fricreg_element_eval(t, pp, w, NULL, f, NULL, NULL, wo),
+                             FRICREG_ENULL);
+            ck_assert_int_eq(fricreg_element_explain(t, pp, w, NULL, msg, sizeof msg),
+                             FRICREG_ENULL);
+            ck_assert_msg(strncmp(msg, "u is NULL", 9) == 0, "message '%s'", msg);
+            ck_assert_int_eq(fricreg_element_eval(t, pp, NULL, u, f, NULL, NULL, wo),
+                             FRICREG_ENULL);
+            ck_assert_int_eq(fricreg_element_explain(t, pp, NULL, u, msg, sizeof msg),
+                             FRICREG_ENULL);
+            ck_assert_msg(strncmp(msg, "state_in is NULL", 16) == 0, "message '%s'", msg);
+        }
+        strcpy(msg, "x");
+        ck_assert_int_eq(fricreg_element_explain(t, p, NULL, NULL, msg, sizeof msg), FRICREG_OK);
+        ck_assert_str_eq(msg, "");
+        ck_assert_int_eq(fricreg_element_explain(t, q, NULL, NULL, msg, sizeof msg),
+                         FRICREG_EINVAL);
+        ck_assert_int_eq(fricreg_element_init(t, q, wo), FRICREG_EINVAL);
+        ck_assert_int_eq(fricreg_element_explain(NULL, p, w, u, msg, sizeof msg), FRICREG_ENULL);
+        ck_assert_str_eq(msg, "type is NULL");
+        ck_assert_int_eq(fricreg_element_explain(t, NULL, w, u, msg, sizeof msg), FRICREG_ENULL);
+        ck_assert_str_eq(msg, "params is NULL");
+        ck_assert_int_eq(fricreg_element_explain(t, p, w, NULL, NULL, 0), FRICREG_ENULL);
+    }
+}
+END_TEST
+
+/* The message of a parameter out of its range names the one condition it fails, the
+ * parameter's name and its index, whatever else is wrong after it (issue 74). */
+static void says(const char *name, size_t ns, const double *p, const char *expected)
+{
+    const fricreg_element_type *t = type_of(name, ns);
+    char msg[200];
+    ck_assert_int_eq(fricreg_element_explain(t, p, NULL, NULL, msg, sizeof msg), FRICREG_EINVAL);
+    ck_assert_str_eq(msg, expected);
+}
+
+START_TEST(test_messages)
+{
+    const double jk[2] = {1000.0, -0.3}, jk0[2] = {0.0, -0.3}, sp[1] = {-2.5};
+    says("jenkins", 1, jk, "jenkins: mun = -0.3 must be >= 0 (params[1])");
+    says("jenkins", 1, jk0, "jenkins: kt = 0 must be > 0 (params[0])");
+    says("spring", 1, sp, "spring: k = -2.5 must be > 0 (params[0])");
+    const double iw[6] = {1.0, 2.0, 3.0, 0.5, 0.25, -0.125}; /* k[3], phi[3] */
+    says("iwan", 3, iw, "iwan: phi[2] = -0.125 must be >= 0 (params[5])");
+    const double iwk[6] = {1.0, -2.0, 3.0, 0.5, -0.25, 0.125};
+    says("iwan_2d", 3, iwk, "iwan_2d: k[1] = -2 must be > 0 (params[1])");
+    const double c_mu[5] = {1000.0, -0.3, 4.0, 2.0, 0.0}, c_kn[5] = {1000.0, 0.3, -4.0, 2.0, 0.0},
+                 c_both[5] = {1000.0, 0.3, 4.0, 2.0, 0.5};
+    says("contact_3d", 1, c_mu, "contact_3d: mu = -0.3 must be >= 0 (params[1])");
+    says("contact_3d", 1, c_kn, "contact_3d: kn = -4 must be >= 0 (params[2])");
+    says("contact_3d", 1, c_both,
+         "contact_3d: n0 = 2 (params[3]) and gap = 0.5 (params[4]) must not both be nonzero: a "
+         "preload or a gap");
+    const double in[9] = {1.0, 1.0, 1.0, 0.5, -0.5, 0.5, -1.0, 2.0, 0.0}; /* mu[1] and kn bad */
+    says("iwan_normal", 3, in, "iwan_normal: mu[1] = -0.5 must be >= 0 (params[4])");
+}
+END_TEST
+
+/* contact_3d's normal law with a negative gap, a negative n0 and kn = 0, each taken as the
+ * header says. The numbers are exact in binary: kn = 4, gap = -0.25 at g = 0.5 gives
+ * N = 4 (0.5 + 0.25) = 3, the preload form's 1 + 4 0.5 = 3; n0 = -1 opens below
+ * g = -n0/kn = 0.25, as the gap form with gap = 0.25; kn = 0 gives N = n0 whatever g. */
+START_TEST(test_contact_3d_normal_law)
+{
+    const fricreg_element_type *t = type_of("contact_3d", 1);
+    double w[2] = {0.0, 0.0}, f[3], f2[3], dfdu[9], wo[2], wo2[2], st[2];
+    double inter[5] = {10.0, 0.5, 4.0, 0.0, -0.25}, pre[5] = {10.0, 0.5, 4.0, 1.0, 0.0};
+    ck_assert_int_eq(fricreg_element_init(t, inter, st), FRICREG_OK);
+    double u0[3] = {0.01, -0.02, 0.0}, u[3] = {0.03, 0.01, 0.5};
+    ck_assert_int_eq(fricreg_element_eval(t, inter, w, u0, f, NULL, NULL, wo), FRICREG_OK);
+    ck_assert_double_eq(f[2], 1.0); /* closed at g = 0: the interference's preload kn |gap| */
+    ck_assert_int_eq(fricreg_element_eval(t, inter, w, u, f, NULL, NULL, wo), FRICREG_OK);
+    ck_assert_int_eq(fricreg_element_eval(t, pre, w, u, f2, NULL, NULL, wo2), FRICREG_OK);
+    ck_assert_double_eq(f[2], 3.0);
+    for (int a = 0; a < 3; a++)
+        ck_assert_double_eq(f[a], f2[a]);
+    ck_assert(wo[0] == wo2[0] && wo[1] == wo2[1]);
+    /* a clearance: n0 = -1 is the gap 0.25 */
+    double clear[5] = {10.0, 0.5, 4.0, -1.0, 0.0}, gapf[5] = {10.0, 0.5, 4.0, 0.0, 0.25};
+    ck_assert_int_eq(fricreg_element_init(t, clear, st), FRICREG_OK);
+    double uo[3] = {0.03, 0.01, 0.125}, uc[3] = {0.03, 0.01, 0.75};
+    ck_assert_int_eq(fricreg_element_eval(t, clear, w, uo, f, dfdu, NULL, wo), FRICREG_OK);
+    for (int a = 0; a < 3; a++)
+        ck_assert_double_eq(f[a], 0.0); /* open: -1 + 4 0.125 = -0.5 < 0 */
+    ck_assert_double_eq(dfdu[8], 0.0);
+    ck_assert_int_eq(fricreg_element_eval(t, clear, w, uc, f, NULL, NULL, wo), FRICREG_OK);
+    ck_assert_int_eq(fricreg_element_eval(t, gapf, w, uc, f2, NULL, NULL, wo2), FRICREG_OK);
+    ck_assert_double_eq(f[2], 2.0); /* -1 + 4 0.75 = 4 (0.75 - 0.25) = 2 */
+    for (int a = 0; a < 3; a++)
+        ck_assert_double_eq(f[a], f2[a]);
+    /* kn = 0: the host's normal force n0, whatever g; in slip |f_t| = mu n0 */
+    double given[5] = {10.0, 0.5, 0.0, 2.0, 0.0};
+    ck_assert_int_eq(fricreg_element_init(t, given, st), FRICREG_OK);
+    const double gs[3] = {-5.2, 0.0, 0.37};
+    for (int k = 0; k < 3; k++) {
+        double ug[3] = {0.8, 0.3, gs[k]};
+        ck_assert_int_eq(fricreg_element_eval(t, given, w, ug, f, dfdu, NULL, wo), FRICREG_OK);
+        ck_assert_double_eq(f[2], 2.0);
+        ck_assert_double_eq_tol(hypot(f[0], f[1]), 1.0, 1e-15);
+        ck_assert_double_eq(dfdu[2], 0.0); /* df_t/dg */
+        ck_assert_double_eq(dfdu[5], 0.0);
+        ck_assert_double_eq(dfdu[8], 0.0); /* dN/dg */
+    }
+    double tension[5] = {10.0, 0.5, 0.0, -2.0, 0.0}, none[5] = {10.0, 0.5, 0.0, 0.0, 0.1};
+    double ut[3] = {0.8, 0.3, 100.0};
+    ck_assert_int_eq(fricreg_element_eval(t, tension, w, ut, f, NULL, NULL, wo), FRICREG_OK);
+    ck_assert(f[0] == 0.0 && f[1] == 0.0 && f[2] == 0.0 && wo[0] == 0.8 && wo[1] == 0.3);
+    ck_assert_int_eq(fricreg_element_eval(t, none, w, ut, f, NULL, NULL, wo), FRICREG_OK);
+    ck_assert(f[0] == 0.0 && f[1] == 0.0 && f[2] == 0.0);
+}
+END_TEST
+
+/* dfdp's n0 and gap columns where only one form is valid: the other parameter's step is
+ * refused on both sides (EINVAL), and the column is the centred difference along the other
+ * form (a gap step h is the preload step -kn h), as the header says. */
+START_TEST(test_contact_3d_one_form_columns)
+{
+    const fricreg_element_type *t = type_of("contact_3d", 1);
+    const double h = 1e-6, kn = 3.7;
+    double w[2] = {0.11, -0.04}, u[3] = {0.9, 0.35, 0.42}, f[3], fp[3], fm[3], wo[2];
+    double dfdp[15];
+    /* the preload form n0 = 1.3: its gap column */
+    double p[5] = {8.5, 0.45, kn, 1.3, 0.0}, q[5];
+    ck_assert_int_eq(fricreg_element_eval(t, p, w, u, f, NULL, dfdp, wo), FRICREG_OK);
+    memcpy(q, p, sizeof p);
+    q[4] = h;
+    ck_assert_int_eq(fricreg_element_eval(t, q, w, u, fp, NULL, NULL, wo), FRICREG_EINVAL);
+    q[4] = -h;
+    ck_assert_int_eq(fricreg_element_eval(t, q, w, u, fp, NULL, NULL, wo), FRICREG_EINVAL);
+    memcpy(q, p, sizeof p);
+    q[3] = p[3] - kn * h;
+    ck_assert_int_eq(fricreg_element_eval(t, q, w, u, fp, NULL, NULL, wo), FRICREG_OK);
+    q[3] = p[3] + kn * h;
+    ck_assert_int_eq(fricreg_element_eval(t, q, w, u, fm, NULL, NULL, wo), FRICREG_OK);
+    for (int a = 0; a < 3; a++) {
+        ck_assert_double_eq_tol((fp[a] - fm[a]) / (2 * h), dfdp[5 * a + 4], 1e-7);
+        ck_assert_double_eq_tol(dfdp[5 * a + 4], -kn * dfdp[5 * a + 3], 1e-15);
+    }
+    ck_assert(fabs(dfdp[5 * 0 + 4]) > 0.1); /* slipping: the tangential column is not 0 */
+    /* the gap form gap = 0.2: its n0 column (an n0 step h is the gap step -h/kn) */
+    double g[5] = {8.5, 0.45, kn, 0.0, 0.2};
+    ck_assert_int_eq(fricreg_element_eval(t, g, w, u, f, NULL, dfdp, wo), FRICREG_OK);
+    memcpy(q, g, sizeof g);
+    q[3] = h;
+    ck_assert_int_eq(fricreg_element_eval(t, q, w, u, fp, NULL, NULL, wo), FRICREG_EINVAL);
+    q[3] = -h;
+    ck_assert_int_eq(fricreg_element_eval(t, q, w, u, fp, NULL, NULL, wo), FRICREG_EINVAL);
+    memcpy(q, g, sizeof g);
+    q[4] = g[4] - h / kn;
+    ck_assert_int_eq(fricreg_element_eval(t, q, w, u, fp, NULL, NULL, wo), FRICREG_OK);
+    q[4] = g[4] + h / kn;
+    ck_assert_int_eq(fricreg_element_eval(t, q, w, u, fm, NULL, NULL, wo), FRICREG_OK);
+    for (int a = 0; a < 3; a++)
+        ck_assert_double_eq_tol((fp[a] - fm[a]) / (2 * h), dfdp[5 * a + 3], 1e-7);
+    ck_assert_double_eq(dfdp[5 * 2 + 3], 1.0); /* dN/dn0 */
+}
+END_TEST
+
 static Suite *element_suite(void)
 {
     Suite *s = suite_create("element");
@@ -687,6 +862,10 @@ static Suite *element_suite(void)
     tcase_add_test(tc, test_segalman);
     tcase_add_test(tc, test_errors);
     tcase_add_test(tc, test_contact_3d);
+    tcase_add_test(tc, test_explain_nulls);
+    tcase_add_test(tc, test_messages);
+    tcase_add_test(tc, test_contact_3d_normal_law);
+    tcase_add_test(tc, test_contact_3d_one_form_columns);
     tcase_add_test(tc, test_jenkins_3d_plane);
     tcase_add_test(tc, test_iwan_3d);
     tcase_add_test(tc, test_spring);

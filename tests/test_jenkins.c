@@ -340,6 +340,15 @@ START_TEST(bad_input)
         bad[1] = 0.0;
         ck_assert_int_eq(fricreg_jenkins_set_params(j, 2, kt, bad), mun_code[k]);
     }
+    /* the message names the one condition that fails (issue 74): mun[1] < 0 beside a good kt */
+    bad[0] = 0.5;
+    bad[1] = -0.25;
+    ck_assert_int_eq(fricreg_jenkins_set_params(j, 2, kt, bad), FRICREG_EINVAL);
+    ck_assert_str_eq(fricreg_jenkins_errmsg(j), "set_params: mun[1] = -0.25 must be >= 0");
+    bad[0] = 1.0;
+    bad[1] = -2.0;
+    ck_assert_int_eq(fricreg_jenkins_set_params(j, 2, bad, mun), FRICREG_EINVAL);
+    ck_assert_str_eq(fricreg_jenkins_errmsg(j), "set_params: kt[1] = -2 must be > 0");
     /* nothing changed: the defaults of make() still hold (u = (0.1, 0.2) sticks with KT) */
     ck_assert_int_eq(fricreg_jenkins_trial(j, 2, u, out, NULL), FRICREG_OK);
     ck_assert_double_eq(out[0], KT * 0.1);

@@ -132,10 +132,10 @@ static int check(fricreg_aft *a, const char *fn, int sampled, size_t ns, const d
         if (!isfinite(k[s]) || !isfinite(phi[s]))
             return fr_fail(a, FRICREG_ENONFINITE, "%s: stiffness[%zu] = %g, bound[%zu] = %g", fn, s,
                            k[s], s, phi[s]);
-        if (!(k[s] > 0.0) || !(phi[s] >= 0.0))
-            return fr_fail(a, FRICREG_EINVAL,
-                           "%s: stiffness[%zu] = %g must be > 0, bound[%zu] = %g >= 0", fn, s, k[s],
-                           s, phi[s]);
+        if (!(k[s] > 0.0))
+            return fr_fail(a, FRICREG_EINVAL, "%s: stiffness[%zu] = %g must be > 0", fn, s, k[s]);
+        if (!(phi[s] >= 0.0))
+            return fr_fail(a, FRICREG_EINVAL, "%s: bound[%zu] = %g must be >= 0", fn, s, phi[s]);
         ksum += k[s];
     }
     for (size_t j = 0; j < n; j++) {
@@ -214,8 +214,10 @@ static int check_normal(fricreg_aft *a, const char *fn, double mu, double n0, do
         return fr_fail(a, FRICREG_ENULL, "%s: %s is NULL", fn, g == NULL ? "g" : "nf");
     if (!isfinite(mu) || !isfinite(n0) || !isfinite(kn))
         return fr_fail(a, FRICREG_ENONFINITE, "%s: mu = %g, n0 = %g, kn = %g", fn, mu, n0, kn);
-    if (!(mu >= 0.0) || !(kn >= 0.0))
-        return fr_fail(a, FRICREG_EINVAL, "%s: mu = %g and kn = %g must be >= 0", fn, mu, kn);
+    if (!(mu >= 0.0))
+        return fr_fail(a, FRICREG_EINVAL, "%s: mu = %g must be >= 0", fn, mu);
+    if (!(kn >= 0.0))
+        return fr_fail(a, FRICREG_EINVAL, "%s: kn = %g must be >= 0", fn, kn);
     for (size_t j = 0; j < a->nc; j++)
         if (!isfinite(g[j]))
             return fr_fail(a, FRICREG_ENONFINITE, "%s: g[%zu] = %g", fn, j, g[j]);
@@ -227,7 +229,7 @@ static int check_normal(fricreg_aft *a, const char *fn, double mu, double n0, do
     return FRICREG_OK;
 }
 
-/* The sampled marches hold the slider's place w = u - mu N/kt (slider.c), beyond the double
+/* The sampled marches hold the slider's place w = u - mu N/kt (slider.h), beyond the double
  * range for a spring far weaker than its bound (kt = 5e-324 against mu N = 2 gave f not
  * finite); the exact path carries the slider as the force kt w and takes such a kt. */
 static int check_excursion(fricreg_aft *a, const char *fn, double kt, double mu, double n0,

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* aft_2d.c — the sampled AFT of the 3-D contact element (fricreg_aft_jenkins_2d_normal_sampled):
- * a 2-D Jenkins element in the tangential plane (isotropic Coulomb disk, radial return; slider.c)
+ * a 2-D Jenkins element in the tangential plane (isotropic Coulomb disk, radial return; slider.h)
  * under the normal law N = max(0, N0 + kn g) with lift-off, the tangential displacement (ux, uy)
  * and the normal one g at N equidistant samples, the element marched to its periodic state, and
  * the coefficients of fx, fy and N by GSL's real radix-2 FFT (aft_sampled.c's).
@@ -21,7 +21,7 @@
  *
  * The Jacobian by the chain rule through the samples, carrying dw, the slider's derivative
  * along one input column (a coefficient of ux, uy or g): open, dw = du, df = 0; stick,
- * df = kt (du - dw); slip, with d = u - w, e = d/|d| and T = (mu N/|d|)(I - e e^T) (slider.c),
+ * df = kt (du - dw); slip, with d = u - w, e = d/|d| and T = (mu N/|d|)(I - e e^T) (slider.h),
  * df = T (du - dw) + mu kn dg e and dw = du - df/kt; dN = kn dg where closed. At a periodic
  * slip, dw at the start solves (I - Psi) dw = Phi_u (Psi = dPhi/dw, the product of the slips'
  * T/kt, a contraction); a march opened in the period starts at du of the last open sample; a
@@ -82,7 +82,7 @@ static int step(const struct samples *s, const struct law *p, size_t n, double *
         double b = p->mu * s->load[n], d[2] = {u[0] - w[0], u[1] - w[1]};
         double r = fr_slider_norm(d, 2);
         fr_slider_return(p->kt, b, 0.0, 2, u, w, f, wn, NULL, NULL);
-        s->kind[n] = p->kt * r <= b ? STICK : SLIP; /* slider.c's test */
+        s->kind[n] = p->kt * r <= b ? STICK : SLIP; /* slider.h's test */
         if (s->kind[n] == SLIP) {
             s->ex[n] = d[0] / r;
             s->ey[n] = d[1] / r;

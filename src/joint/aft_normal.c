@@ -2,7 +2,7 @@
 /* aft_normal.c — the sampled AFT of a 1-D Jenkins element under normal load with lift-off
  * (fricreg_aft_jenkins_normal_sampled): the tangential displacement u and the normal one g at
  * N equidistant samples, the element's return mapping with the bound mu N, N = max(0, N0 +
- * kn g) (fricreg_jenkins.h, slider.c), marched to its periodic state, and the coefficients of
+ * kn g) (fricreg_jenkins.h, slider.h), marched to its periodic state, and the coefficients of
  * f and N by GSL's real radix-2 FFT (aft_sampled.c's).
  *
  * The periodic state. Where the contact opens in the period (N0 + kn g < 0 at some sample) the

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* aft_sampled.c — the sampled AFT of 1-D Jenkins sliders (fricreg_aft.h): u at N equidistant
- * samples, each slider's return mapping (slider.c, the one the Jenkins and Iwan elements use)
+ * samples, each slider's return mapping (slider.h, the one the Jenkins and Iwan elements use)
  * marched over one period, the coefficients by GSL's real radix-2 FFT.
  *
  * The march starts at the sampled maximum of u with the slider at u_max − r (r = mun/kt):
@@ -12,7 +12,7 @@
  *
  * The Jacobian by the chain rule: at sample n a slider in a stick has f = kt (u_n − w) with w
  * set at its last slip sample m (w = u_m − s r), so ∂f_n/∂u_j = kt (φ_j(θ_n) − φ_j(θ_m)); in a
- * slip ∂f_n/∂u_j = 0 (the 1-D tangent of slider.c); centred, φ_j(θ_m) is replaced by the mean
+ * slip ∂f_n/∂u_j = 0 (the 1-D tangent of slider.h); centred, φ_j(θ_m) is replaced by the mean
  * of φ_j at the sampled maximum and minimum. Each column, summed over the sliders, goes
  * through the same FFT as f. */
 #include <float.h>

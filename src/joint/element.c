@@ -63,6 +63,9 @@ int fricreg_element_eval(const fricreg_element_type *type, const double params[]
     if (type == NULL || params == NULL || state_in == NULL || u == NULL || f == NULL ||
         state_out == NULL)
         return FRICREG_ENULL;
+    size_t bad;
+    if (type->kind->batch != NULL) /* the law's own check and eval, inlined */
+        return type->kind->batch(type, 1, params, 0, state_in, u, f, dfdu, dfdp, state_out, &bad);
     int status = type->kind->check(type, params, state_in, u, NULL, 0);
     if (status == FRICREG_OK)
         type->kind->eval(type, params, state_in, u, f, dfdu, dfdp, state_out, NULL);
@@ -77,5 +80,10 @@ int fricreg_element_explain(const fricreg_element_type *type, const double param
     if (type == NULL || params == NULL)
         return fr_element_say(FRICREG_ENULL, msg, len, "%s is NULL",
                               type == NULL ? "type" : "params");
-    return type->kind->check(type, params, state_in, state_in != NULL ? u : NULL, msg, len);
+    /* One of state_in and u: eval's call, which refuses the missing one before any value. */
+    if ((state_in == NULL) != (u == NULL))
+        return fr_element_say(FRICREG_ENULL, msg, len,
+                              "%s is NULL (eval needs state_in and u; both NULL explain init)",
+                              state_in == NULL ? "state_in" : "u");
+    return type->kind->check(type, params, state_in, u, msg, len);
 }

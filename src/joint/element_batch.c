@@ -39,7 +39,15 @@ int fricreg_element_eval_batch(const fricreg_element_type *type, size_t npoints,
             *bad_point = npoints;
         return status;
     }
-    size_t bad = first_bad_point(type, npoints, params, params_stride, state_in, u, &status);
+    size_t bad = npoints;
+    if (type->kind->batch != NULL) { /* the law's own loop */
+        status = type->kind->batch(type, npoints, params, params_stride, state_in, u, f, dfdu, dfdp,
+                                   state_out, &bad);
+        if (status != FRICREG_OK && bad_point != NULL)
+            *bad_point = bad;
+        return status;
+    }
+    bad = first_bad_point(type, npoints, params, params_stride, state_in, u, &status);
     if (status != FRICREG_OK) {
         if (bad_point != NULL)
             *bad_point = bad;

@@ -59,12 +59,31 @@ struct fr_element_kind {
      * slider s's from td td s, td = dim - normal), and the state after the call into
      * state_out (eval's, bit for bit; it may be state). A slider's force depends on u - w_s
      * alone, so these two give every derivative of f and the state (d f_s / d w_s = -ts,
-     * d w_s' / d u = I - tw). Required of a law with state that marches (aft MARCH); NULL
-     * otherwise. */
+     * d w_s' / d u = I - tw). Required of a law of sliders that marches (aft MARCH); NULL
+     * otherwise (a law with other state gives state_tangents). */
     void (*slider_tangents)(const fricreg_element_type *type, const double *params,
                             const double *state, const double *u, double *ts, double *tw,
                             double *state_out);
+    /* fricreg_element_eval_batch once its arrays and stride are vetted (fricreg_element_eval
+     * is its npoints = 1): check's status at the first point it refuses (its index into *bad,
+     * nothing else written), else eval at every point, bit for bit; point i's params at
+     * params + params_stride i. A law's own loop, eval inlined; NULL: check and eval per point
+     * (element_batch.c). */
+    int (*batch)(const fricreg_element_type *type, size_t npoints, const double *params,
+                 size_t params_stride, const double *state_in, const double *u, double *f,
+                 double *dfdu, double *dfdp, double *state_out, size_t *bad);
+    /* The march's tangents of a law with state that is not sliders' (at most
+     * FR_STATE_TANGENTS_MAX states; slider_tangents NULL), at checked params, state and u:
+     * d f / d u into fu[dim dim], d f / d state into fs[dim nstate], d state' / d u into
+     * su[nstate dim] and d state' / d state into ss[nstate nstate] (row-major), and the state
+     * after the call into state_out (eval's, bit for bit; it may be state). NULL otherwise. */
+    void (*state_tangents)(const fricreg_element_type *type, const double *params,
+                           const double *state, const double *u, double *fu, double *fs, double *su,
+                           double *ss, double *state_out);
 };
+
+/* The most states of a law with state_tangents. */
+#define FR_STATE_TANGENTS_MAX 8
 
 /* A type: its kind, its sliders and, for a family, its first member (the type of 1 slider,
  * whose array holds the members in the order of ns). */

@@ -2,8 +2,9 @@
 /* element_sliders.c — the element types made of Jenkins sliders (fricreg_element.h): jenkins,
  * jenkins_2d, jenkins_3d, jenkins_normal, contact_3d and the Iwan families (iwan, iwan_2d,
  * iwan_3d, iwan_normal), all ns sliders in parallel on the tangential components, each slider
- * slider.c's return mapping, with or without the normal law of lift-off. The sums run over the sliders in order, as fricreg_iwan
+ * slider.h's return mapping, with or without the normal law of lift-off. The sums run over the sliders in order, as fricreg_iwan
  * and the structure's elements sum them, so that their answers agree bit for bit. */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -59,18 +60,20 @@ static int check_params(const fricreg_element_type *type, const double *p, char 
 {
     const struct fr_element_kind *kind = type->kind;
     size_t ns = type->ns, np = kind->nparams(ns);
-    char buf[32], buf2[32];
+    char buf[32];
     for (size_t j = 0; j < np; j++)
         if (!isfinite(p[j]))
             return fr_element_say(FRICREG_ENONFINITE, msg, len, "%s: %s = %g (params[%zu])",
                                   kind->name, param_name(type, j, buf), p[j], j);
     double sum_k = 0.0, sum_b = 0.0;
     for (size_t s = 0; s < ns; s++) {
-        if (!(p[s] > 0.0) || !(p[ns + s] >= 0.0))
+        if (!(p[s] > 0.0))
+            return fr_element_say(FRICREG_EINVAL, msg, len, "%s: %s = %g must be > 0 (params[%zu])",
+                                  kind->name, param_name(type, s, buf), p[s], s);
+        if (!(p[ns + s] >= 0.0))
             return fr_element_say(FRICREG_EINVAL, msg, len,
-                                  "%s: %s = %g must be > 0 and %s = %g >= 0", kind->name,
-                                  param_name(type, s, buf), p[s], param_name(type, ns + s, buf2),
-                                  p[ns + s]);
+                                  "%s: %s = %g must be >= 0 (params[%zu])", kind->name,
+                                  param_name(type, ns + s, buf), p[ns + s], ns + s);
         sum_k += p[s];
         sum_b += p[ns + s];
     }
@@ -83,11 +86,13 @@ static int check_params(const fricreg_element_type *type, const double *p, char 
         return FRICREG_OK;
     double kn = p[2 * ns], n0 = p[2 * ns + 1], gap = p[2 * ns + 2];
     if (!(kn >= 0.0))
-        return fr_element_say(FRICREG_EINVAL, msg, len, "%s: kn = %g must be >= 0", kind->name, kn);
+        return fr_element_say(FRICREG_EINVAL, msg, len, "%s: kn = %g must be >= 0 (params[%zu])",
+                              kind->name, kn, 2 * ns);
     if (n0 != 0.0 && gap != 0.0)
         return fr_element_say(FRICREG_EINVAL, msg, len,
-                              "%s: n0 = %g and gap = %g: a preload or a gap, not both", kind->name,
-                              n0, gap);
+                              "%s: n0 = %g (params[%zu]) and gap = %g (params[%zu]) must not both "
+                              "be nonzero: a preload or a gap",
+                              kind->name, n0, 2 * ns + 1, gap, 2 * ns + 2);
     if (!isfinite(sum_b * kn))
         return fr_element_say(FRICREG_ENONFINITE, msg, len,
                               "%s: the bounds' slope sum(mu) kn = %g overflows", kind->name,
@@ -160,16 +165,55 @@ static void normal_columns(const double *p, size_t ns, int td, double gg, const 
     }
 }
 
-static void eval(const fricreg_element_type *type, const double *p, const double *state_in,
-                 const double *u, double *f, double *dfdu, double *dfdp, double *state_out,
-                 double *slider_forces)
+#if defined(__GNUC__)
+#define FR_ALWAYS_INLINE static inline __attribute__((always_inline))
+#else
+#define FR_ALWAYS_INLINE static inline
+#endif
+
+/* 1 where check surely accepts these inputs of ns sliders on td tangential components, with
+ * the normal law or not (0: check decides, and says why): check's tests without their
+ * messages, each slider's independent of the others' (a loop without branches), with
+ * bounds that imply check's: |u_a - w_a| < 2^1022 for each component in place of |u_t - w_s|
+ * finite (the norm is then below sqrt(3) 2^1022), k_s and b_s below 2^1012 in place of their
+ * sums finite (ns <= 2^10 terms), and the normal law's products bounded through ns max b_s,
+ * which bounds sum b_s (rounding aside: the bounds keep a factor 2^3 in hand). */
+FR_ALWAYS_INLINE int fast_ok(size_t ns, int td, int normal, const double *p, const double *w,
+                             const double *u)
 {
-    const struct fr_element_kind *kind = type->kind;
-    int dim = kind->dim, td = dim - kind->normal;
-    size_t ns = type->ns, np = kind->nparams(ns), nstate = kind->nstate(ns);
+    int ok = 1;
+    double max_b = 0.0;
+    for (int a = 0; a < td + normal; a++)
+        ok &= fabs(u[a]) <= DBL_MAX;
+    for (size_t s = 0; s < ns; s++) {
+        double k = p[s], b = p[ns + s];
+        ok &= (k > 0.0) & (k < 0x1p1012) & (b >= 0.0) & (b < 0x1p1012);
+        max_b = b > max_b ? b : max_b;
+        for (int a = 0; a < td; a++) {
+            double wa = w[(size_t)td * s + (size_t)a];
+            ok &= (fabs(wa) <= DBL_MAX) & (fabs(u[a] - wa) < 0x1p1022);
+        }
+    }
+    if (!normal || !ok)
+        return ok;
+    double kn = p[2 * ns], n0 = p[2 * ns + 1], gap = p[2 * ns + 2], gg = u[td] - gap;
+    double nc = n0 + kn * gg, bound = (double)ns * max_b; /* >= sum b_s to rounding */
+    return kn >= 0.0 && kn <= DBL_MAX && fabs(n0) <= DBL_MAX && fabs(gap) <= DBL_MAX &&
+           (n0 == 0.0 || gap == 0.0) && fabs(gg) <= DBL_MAX && fabs(nc) <= DBL_MAX &&
+           bound * kn < 0x1p1020 && bound * fabs(nc) < 0x1p1020 && bound * fabs(gg) < 0x1p1020;
+}
+
+/* eval's work for ns sliders on td tangential components, with the normal law or not: the
+ * callers pass constants, which specialize it per kind (the sums run in the same order). */
+FR_ALWAYS_INLINE void eval_sliders(size_t ns, int td, int normal, const double *p,
+                                   const double *state_in, const double *u, double *f, double *dfdu,
+                                   double *dfdp, double *state_out, double *slider_forces)
+{
+    int dim = td + normal;
+    size_t np = 2 * ns + (normal ? 3 : 0);
     double N = 1.0, kn = 0.0, gg = 0.0;
     int open = 0;
-    if (kind->normal) {
+    if (normal) {
         kn = p[2 * ns];
         gg = u[td] - p[2 * ns + 2];
         double nc = p[2 * ns + 1] + kn * gg;
@@ -178,27 +222,28 @@ static void eval(const fricreg_element_type *type, const double *p, const double
     }
     double ft[3] = {0.0, 0.0, 0.0}, t[9] = {0.0}, tg[3] = {0.0, 0.0, 0.0},
            sum_n[3] = {0.0, 0.0, 0.0};
-    double w_new[3 * FRICREG_ELEMENT_MAX_SLIDERS];
     if (dfdp != NULL)
         memset(dfdp, 0, (size_t)dim * np * sizeof *dfdp);
     for (size_t s = 0; s < ns; s++) {
+        /* slider s's old and new positions: the same place where state_out is state_in, each
+         * read before it is written */
         const double *wc = &state_in[(size_t)td * s];
+        double *wn = &state_out[(size_t)td * s];
         double fs[3], ts[9], tgs[3];
         if (open) {
-            fr_slider_separated(td, u, fs, &w_new[(size_t)td * s], ts, tgs);
+            fr_slider_separated(td, u, fs, wn, ts, tgs);
         } else {
-            double b = kind->normal ? p[ns + s] * N : p[ns + s];
-            double dbdg = kind->normal ? p[ns + s] * kn : 0.0;
-            int slip = fr_slider_return(p[s], b, dbdg, td, u, wc, fs, &w_new[(size_t)td * s], ts,
-                                        tgs);
+            double b = normal ? p[ns + s] * N : p[ns + s];
+            double dbdg = normal ? p[ns + s] * kn : 0.0;
+            double d[3] = {0.0, 0.0, 0.0};
+            for (int a = 0; a < td; a++)
+                d[a] = u[a] - wc[a];
+            int slip = fr_slider_return(p[s], b, dbdg, td, u, wc, fs, wn, ts, tgs);
             if (dfdp != NULL) {
-                double d[3] = {0.0, 0.0, 0.0};
-                for (int a = 0; a < td; a++)
-                    d[a] = u[a] - wc[a];
-                double r = fr_slider_norm(d, td);
+                double r = fr_slider_norm_inline(d, td);
                 for (int a = 0; a < td; a++) {
                     if (slip) {
-                        dfdp[np * (size_t)a + ns + s] = kind->normal ? N * (d[a] / r) : d[a] / r;
+                        dfdp[np * (size_t)a + ns + s] = normal ? N * (d[a] / r) : d[a] / r;
                         sum_n[a] += p[ns + s] * (d[a] / r);
                     } else {
                         dfdp[np * (size_t)a + s] = d[a];
@@ -215,25 +260,107 @@ static void eval(const fricreg_element_type *type, const double *p, const double
         for (int a = 0; a < td * td; a++)
             t[a] += ts[a];
     }
-    if (dfdp != NULL && kind->normal && !open)
+    if (dfdp != NULL && normal && !open)
         normal_columns(p, ns, td, gg, sum_n, dfdp);
     for (int a = 0; a < td; a++)
         f[a] = ft[a];
-    if (kind->normal)
+    if (normal)
         f[td] = N;
     if (dfdu != NULL) {
         memset(dfdu, 0, (size_t)(dim * dim) * sizeof *dfdu);
         for (int a = 0; a < td; a++) {
             for (int c = 0; c < td; c++)
                 dfdu[dim * a + c] = t[td * a + c];
-            if (kind->normal)
+            if (normal)
                 dfdu[dim * a + td] = tg[a];
         }
-        if (kind->normal)
+        if (normal)
             dfdu[dim * td + td] = open ? 0.0 : kn;
     }
-    memcpy(state_out, w_new, nstate * sizeof *state_out);
 }
+
+/* fricreg_element_eval_batch's work once the arrays and the stride are vetted (element_batch.c;
+ * fricreg_element_eval's at npoints = 1): every point checked, fast_ok first and check where
+ * it doubts, then every point evaluated. On failure *bad is the first bad point. */
+FR_ALWAYS_INLINE int batch_sliders(const fricreg_element_type *type, size_t ns, int td, int normal,
+                                   size_t npoints, const double *p, size_t p_stride,
+                                   const double *state_in, const double *u, double *f, double *dfdu,
+                                   double *dfdp, double *state_out, size_t *bad)
+{
+    size_t dim = (size_t)(td + normal), nstate = (size_t)td * ns;
+    size_t np = 2 * ns + (normal ? 3 : 0);
+    for (size_t i = 0; i < npoints; i++) {
+        const double *pi = p + p_stride * i, *wi = state_in + nstate * i, *ui = u + dim * i;
+        int status = fast_ok(ns, td, normal, pi, wi, ui) ? FRICREG_OK
+                                                         : check(type, pi, wi, ui, NULL, 0);
+        if (status != FRICREG_OK) {
+            *bad = i;
+            return status;
+        }
+    }
+    if (dfdp == NULL) /* the usual call: its own loop, the derivatives in p compiled out */
+        for (size_t i = 0; i < npoints; i++)
+            eval_sliders(ns, td, normal, p + p_stride * i, state_in + nstate * i, u + dim * i,
+                         f + dim * i, dfdu != NULL ? dfdu + dim * dim * i : NULL, NULL,
+                         state_out + nstate * i, NULL);
+    else
+        for (size_t i = 0; i < npoints; i++)
+            eval_sliders(ns, td, normal, p + p_stride * i, state_in + nstate * i, u + dim * i,
+                         f + dim * i, dfdu != NULL ? dfdu + dim * dim * i : NULL,
+                         dfdp + dim * np * i, state_out + nstate * i, NULL);
+    return FRICREG_OK;
+}
+
+/* batch_sliders at one point of one slider (fricreg_element_eval's call of a Jenkins type): the
+ * same work without the loops. */
+FR_ALWAYS_INLINE int point_slider(const fricreg_element_type *type, int td, int normal,
+                                  const double *p, const double *state_in, const double *u,
+                                  double *f, double *dfdu, double *dfdp, double *state_out,
+                                  size_t *bad)
+{
+    if (!fast_ok(1, td, normal, p, state_in, u)) {
+        int status = check(type, p, state_in, u, NULL, 0);
+        if (status != FRICREG_OK) {
+            *bad = 0;
+            return status;
+        }
+    }
+    eval_sliders(1, td, normal, p, state_in, u, f, dfdu, dfdp, state_out, NULL);
+    return FRICREG_OK;
+}
+
+/* eval and batch of one shape: td tangential components, the normal law or not (the kinds'
+ * table below names them by dim and normal); batch unrolled for one slider, and for one
+ * point of one slider. */
+#define FR_SLIDER_SHAPE(dim, normal)                                                               \
+    static void eval_##dim##_##normal(const fricreg_element_type *type, const double *p,           \
+                                      const double *state_in, const double *u, double *f,          \
+                                      double *dfdu, double *dfdp, double *state_out,               \
+                                      double *slider_forces)                                       \
+    {                                                                                              \
+        eval_sliders(type->ns, (dim) - (normal), normal, p, state_in, u, f, dfdu, dfdp, state_out, \
+                     slider_forces);                                                               \
+    }                                                                                              \
+    static int batch_##dim##_##normal(const fricreg_element_type *type, size_t npoints,            \
+                                      const double *p, size_t p_stride, const double *state_in,    \
+                                      const double *u, double *f, double *dfdu, double *dfdp,      \
+                                      double *state_out, size_t *bad)                              \
+    {                                                                                              \
+        if (type->ns == 1 && npoints == 1)                                                         \
+            return point_slider(type, (dim) - (normal), normal, p, state_in, u, f, dfdu, dfdp,     \
+                                state_out, bad);                                                   \
+        if (type->ns == 1)                                                                         \
+            return batch_sliders(type, 1, (dim) - (normal), normal, npoints, p, p_stride,          \
+                                 state_in, u, f, dfdu, dfdp, state_out, bad);                      \
+        return batch_sliders(type, type->ns, (dim) - (normal), normal, npoints, p, p_stride,       \
+                             state_in, u, f, dfdu, dfdp, state_out, bad);                          \
+    }
+
+FR_SLIDER_SHAPE(1, 0)
+FR_SLIDER_SHAPE(2, 0)
+FR_SLIDER_SHAPE(3, 0)
+FR_SLIDER_SHAPE(2, 1)
+FR_SLIDER_SHAPE(3, 1)
 
 static void elastic(const fricreg_element_type *type, const double *p, double *k)
 {
@@ -269,13 +396,15 @@ static void project(const fricreg_element_type *type, const double *p, double *f
         f[a] *= bound / r;
 }
 
-/* Each slider's spring |f_s|^2 / (2 k_s), or the normal spring's N^2 / (2 kn). */
+/* Each slider's spring |f_s|^2 / (2 k_s), or the normal spring's N^2 / (2 kn) (kn = 0: a
+ * constant normal load n0, no spring to hold energy). */
 static double stored(const fricreg_element_type *type, const double *p, const double *fs,
                      const double *f, int normal, double sum)
 {
     size_t ns = type->ns, td = (size_t)(type->kind->dim - type->kind->normal);
     if (normal)
-        return type->kind->normal ? sum + 0.5 * f[td] * (f[td] / p[2 * ns]) : sum;
+        return type->kind->normal && p[2 * ns] > 0.0 ? sum + 0.5 * f[td] * (f[td] / p[2 * ns])
+                                                     : sum;
     for (size_t j = 0; j < ns * td; j++)
         sum += 0.5 * fs[j] * (fs[j] / p[j / td]);
     return sum;
@@ -300,11 +429,22 @@ static void slider_tangents(const fricreg_element_type *type, const double *p, c
 }
 
 /* One kind per line: name, dim, normal, family, sizes, harmonic balance's AFT, and the slider
- * tangents of the march (MARCH's only). */
-#define FR_SLIDER_KIND(id, dim, normal, family, params, state, aft, tangents)                \
-    const struct fr_element_kind fr_element_##id = {                                         \
-        #id,     dim,     normal, family,  FR_ELEMENT_AFT_##aft, params, state, check, eval, \
-        elastic, project, stored, tangents};
+ * tangents of the march (MARCH's only); eval and batch are its shape's (dim, normal). */
+#define FR_SLIDER_KIND(id, dim_, normal_, family_, params, state, aft_, tangents)    \
+    const struct fr_element_kind fr_element_##id = {.name = #id,                     \
+                                                    .dim = dim_,                     \
+                                                    .normal = normal_,               \
+                                                    .family = family_,               \
+                                                    .aft = FR_ELEMENT_AFT_##aft_,    \
+                                                    .nparams = params,               \
+                                                    .nstate = state,                 \
+                                                    .check = check,                  \
+                                                    .eval = eval_##dim_##_##normal_, \
+                                                    .elastic = elastic,              \
+                                                    .project = project,              \
+                                                    .stored = stored,                \
+                                                    .slider_tangents = tangents,     \
+                                                    .batch = batch_##dim_##_##normal_};
 
 FR_SLIDER_KIND(jenkins, 1, 0, 0, params_plain, state_1, SLIDERS, NULL)
 FR_SLIDER_KIND(jenkins_2d, 2, 0, 0, params_plain, state_2, MARCH, slider_tangents)

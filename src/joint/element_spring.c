@@ -27,7 +27,8 @@ static int check(const fricreg_element_type *type, const double *p, const double
     if (!isfinite(p[0]))
         return fr_element_say(FRICREG_ENONFINITE, msg, len, "spring: k = %g (params[0])", p[0]);
     if (!(p[0] > 0.0))
-        return fr_element_say(FRICREG_EINVAL, msg, len, "spring: k = %g must be > 0", p[0]);
+        return fr_element_say(FRICREG_EINVAL, msg, len, "spring: k = %g must be > 0 (params[0])",
+                              p[0]);
     if (u != NULL && !(isfinite(u[0]) && isfinite(p[0] * u[0])))
         return fr_element_say(FRICREG_ENONFINITE, msg, len, "spring: u[0] = %g, k u = %g", u[0],
                               p[0] * u[0]);
@@ -73,5 +74,5 @@ static double stored(const fricreg_element_type *type, const double *p, const do
 }
 
 const struct fr_element_kind fr_element_spring = {
-    "spring", 1,       0,      0,   FR_ELEMENT_AFT_MARCH, one, none, check, eval,
-    elastic,  project, stored, NULL};
+    "spring", 1,    0,    0,   FR_ELEMENT_AFT_MARCH, one, none, check, eval, elastic, project,
+    stored,   NULL, NULL, NULL};

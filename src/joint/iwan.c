@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* iwan.c — n Iwan elements of ns parallel Jenkins sliders each, 1-D or 2-D (fricreg_iwan.h):
- * the sum of the sliders' return mappings (slider.c, shared with the Jenkins elements), their
+ * the sum of the sliders' return mappings (slider.h, shared with the Jenkins elements), their
  * trial/commit, Segalman's four-parameter model on the moment rule's geometric grid, and the
  * normal load with lift-off (slip forces phi N/N0).
  *
@@ -123,10 +123,10 @@ int fricreg_iwan_set_params(fricreg_iwan *iw, size_t n, size_t ns, const double 
         if (!isfinite(k[i]) || !isfinite(phi[i]))
             return fr_fail(iw, FRICREG_ENONFINITE, "set_params: k[%zu] = %g, phi[%zu] = %g", i,
                            k[i], i, phi[i]);
-        if (!(k[i] > 0.0) || !(phi[i] >= 0.0))
-            return fr_fail(iw, FRICREG_EINVAL,
-                           "set_params: k[%zu] = %g must be > 0, phi[%zu] = %g >= 0", i, k[i], i,
-                           phi[i]);
+        if (!(k[i] > 0.0))
+            return fr_fail(iw, FRICREG_EINVAL, "set_params: k[%zu] = %g must be > 0", i, k[i]);
+        if (!(phi[i] >= 0.0))
+            return fr_fail(iw, FRICREG_EINVAL, "set_params: phi[%zu] = %g must be >= 0", i, phi[i]);
     }
     memcpy(iw->k, k, n * ns * sizeof *k);
     memcpy(iw->phi, phi, n * ns * sizeof *phi);
@@ -197,10 +197,10 @@ int fricreg_iwan_set_normal(fricreg_iwan *iw, size_t n, const double n0[], const
         if (!isfinite(n0[e]) || !isfinite(kn[e]))
             return fr_fail(iw, FRICREG_ENONFINITE, "set_normal: n0[%zu] = %g, kn[%zu] = %g", e,
                            n0[e], e, kn[e]);
-        if (!(n0[e] > 0.0) || !(kn[e] >= 0.0))
-            return fr_fail(iw, FRICREG_EINVAL,
-                           "set_normal: n0[%zu] = %g must be > 0, kn[%zu] = %g >= 0", e, n0[e], e,
-                           kn[e]);
+        if (!(n0[e] > 0.0))
+            return fr_fail(iw, FRICREG_EINVAL, "set_normal: n0[%zu] = %g must be > 0", e, n0[e]);
+        if (!(kn[e] >= 0.0))
+            return fr_fail(iw, FRICREG_EINVAL, "set_normal: kn[%zu] = %g must be >= 0", e, kn[e]);
         if (!isfinite(kn[e] / n0[e]))
             return fr_fail(iw, FRICREG_ENONFINITE, "set_normal: kn[%zu]/n0[%zu] = %g overflows", e,
                            e, kn[e] / n0[e]);

@@ -3,7 +3,7 @@
  * or 2-D: the elastic predictor, the return onto |f| <= mun and its consistent tangent
  * (fricreg_jenkins.h; Simo & Hughes 1998, Ch. 1 and 3), with trial/commit of the sliders, and
  * the normal load with lift-off: the bound mu max(0, N0 + kn g). The one slider's return
- * mapping is slider.c's, shared with the Iwan elements.
+ * mapping is slider.h's, shared with the Iwan elements.
  *
  * A fixed bound mun (set_params) is the normal law mu = 1, N0 = mun, kn = 0: the bound is then
  * 1 * max(0, mun + 0 g) = mun to the bit and never separates, so fricreg_jenkins_trial keeps
@@ -96,10 +96,10 @@ int fricreg_jenkins_set_params(fricreg_jenkins *j, size_t n, const double kt[], 
         if (!isfinite(kt[i]) || !isfinite(mun[i]))
             return fr_fail(j, FRICREG_ENONFINITE, "set_params: kt[%zu] = %g, mun[%zu] = %g", i,
                            kt[i], i, mun[i]);
-        if (!(kt[i] > 0.0) || !(mun[i] >= 0.0))
-            return fr_fail(j, FRICREG_EINVAL,
-                           "set_params: kt[%zu] = %g must be > 0, mun[%zu] = %g >= 0", i, kt[i], i,
-                           mun[i]);
+        if (!(kt[i] > 0.0))
+            return fr_fail(j, FRICREG_EINVAL, "set_params: kt[%zu] = %g must be > 0", i, kt[i]);
+        if (!(mun[i] >= 0.0))
+            return fr_fail(j, FRICREG_EINVAL, "set_params: mun[%zu] = %g must be >= 0", i, mun[i]);
     }
     memcpy(j->kt, kt, n * sizeof *kt);
     memcpy(j->n0, mun, n * sizeof *mun);
@@ -128,10 +128,10 @@ int fricreg_jenkins_set_normal(fricreg_jenkins *j, size_t n, const double mu[], 
             return fr_fail(j, FRICREG_ENONFINITE,
                            "set_normal: mu[%zu] = %g, n0[%zu] = %g, kn[%zu] = %g", i, mu[i], i,
                            n0[i], i, kn[i]);
-        if (!(mu[i] >= 0.0) || !(kn[i] >= 0.0))
-            return fr_fail(j, FRICREG_EINVAL,
-                           "set_normal: mu[%zu] = %g and kn[%zu] = %g must be >= 0", i, mu[i], i,
-                           kn[i]);
+        if (!(mu[i] >= 0.0))
+            return fr_fail(j, FRICREG_EINVAL, "set_normal: mu[%zu] = %g must be >= 0", i, mu[i]);
+        if (!(kn[i] >= 0.0))
+            return fr_fail(j, FRICREG_EINVAL, "set_normal: kn[%zu] = %g must be >= 0", i, kn[i]);
         if (!isfinite(mu[i] * n0[i]) || !isfinite(mu[i] * kn[i]))
             return fr_fail(j, FRICREG_ENONFINITE,
                            "set_normal: mu[%zu] n0[%zu] = %g or mu[%zu] kn[%zu] = %g overflows", i,

@@ -46,10 +46,14 @@ int fr_segalman_check_params(double fs, double kt, double chi, double beta, doub
         return fr_element_say(FRICREG_ENONFINITE, msg, len,
                               "fs = %g, kt = %g, chi = %g, beta = %g, resolution = %g", fs, kt, chi,
                               beta, resolution);
-    if (!(fs > 0.0) || !(kt > 0.0) || !(chi > -1.0 && chi <= 1.0) || !(beta >= 0.0))
-        return fr_element_say(FRICREG_EINVAL, msg, len,
-                              "fs = %g and kt = %g must be > 0, -1 < chi = %g <= 1, beta = %g >= 0",
-                              fs, kt, chi, beta);
+    if (!(fs > 0.0))
+        return fr_element_say(FRICREG_EINVAL, msg, len, "fs = %g must be > 0", fs);
+    if (!(kt > 0.0))
+        return fr_element_say(FRICREG_EINVAL, msg, len, "kt = %g must be > 0", kt);
+    if (!(chi > -1.0 && chi <= 1.0))
+        return fr_element_say(FRICREG_EINVAL, msg, len, "chi = %g must be in (-1, 1]", chi);
+    if (!(beta >= 0.0))
+        return fr_element_say(FRICREG_EINVAL, msg, len, "beta = %g must be >= 0", beta);
     if (beta > 0.0 && ns < 2)
         return fr_element_say(FRICREG_EINVAL, msg, len, "beta = %g > 0 needs ns >= 2 (ns = %zu)",
                               beta, ns);
