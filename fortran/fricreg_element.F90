@@ -25,6 +25,7 @@ module fricreg_element_m
     procedure :: nstate => el_nstate
     procedure :: init => el_init
     procedure :: eval => el_eval
+    procedure :: energy => el_energy
     procedure :: errmsg => el_errmsg
   end type
 
@@ -185,6 +186,32 @@ contains
       if (present(dfdp)) dfdp(a, :) = tp(np * (a - 1) + 1:np * a)
     end do
   end function el_eval
+
+  !> The energies of the increment eval makes on the same inputs (fricreg_element_energy):
+  !> dissipated, what the sliders dissipate, and stored, what the springs hold at its end.
+  !> Written only on success. FRICREG_ESIZE; FRICREG_EINVAL; FRICREG_ENONFINITE.
+  function el_energy(self, params, state_in, u, dissipated, stored) result(status)
+    class(fricreg_element), intent(inout) :: self
+    real(c_double), intent(in), contiguous :: params(:), state_in(:), u(:)
+    real(c_double), intent(inout) :: dissipated, stored
+    integer(c_int) :: status
+    ! a type without state still needs an array to pass: C asks state_in not NULL
+    real(c_double) :: none(1)
+    status = el_ready(self, 'energy', params)
+    if (status /= FRICREG_OK) return
+    if (size(state_in) /= self%nstate() .or. size(u) /= self%dim()) then
+      status = FRICREG_ESIZE
+      self%msg = 'energy: sizes: u (dim), state_in (nstate)'
+      return
+    end if
+    none = 0
+    if (size(state_in) > 0) then
+      status = fricreg_element_energy(self%t, params, state_in, u, dissipated, stored)
+    else
+      status = fricreg_element_energy(self%t, params, none, u, dissipated, stored)
+    end if
+    if (status /= FRICREG_OK) status = el_explained(self, 'energy', params, state_in, u)
+  end function el_energy
 
   !> The message of the last failed call ('' if none failed).
   function el_errmsg(self) result(msg)

@@ -9,7 +9,7 @@
 ! FRICREG_ELEMENT_JENKINS, ... as C's enum fricreg_element_code), and its number of sliders NS
 ! (1 but for the Iwan types):
 !   1 jenkins   2 jenkins_2d   3 contact_3d   4 iwan   5 iwan_normal   6 jenkins_3d
-!   7 jenkins_normal   8 iwan_2d   9 iwan_3d   10 spring
+!   7 jenkins_normal   8 iwan_2d   9 iwan_3d   10 spring   11 dahl
 ! (ITYPE - 1 is fricreg_element_at's index). A code out of range or an NS the type does not
 ! take is FRICREG_EINVAL.
 !
@@ -23,6 +23,7 @@
 !                                                               _nstate
 !   FRELIN(ITYPE, NS, PARAMS, STATE, STAT)                      fricreg_element_init
 !   FRELEV(ITYPE, NS, PARAMS, STATEI, U, F, DFDU, DFDP, STATEO, STAT)   fricreg_element_eval
+!   FRELEN(ITYPE, NS, PARAMS, STATEI, U, DISS, STORED, STAT)    fricreg_element_energy
 !   FRELMS(ITYPE, NS, PARAMS, STATEI, U, MSG, STAT)             fricreg_element_explain
 !   FRELSG(NS, FS, KT, CHI, BETA, RES, K, PHI, STAT)            fricreg_element_segalman
 ! STATEO must be an array of its own: Fortran forbids one array as two arguments when one of
@@ -99,8 +100,26 @@ recursive subroutine frelev(itype, ns, params, statei, u, f, dfdu, dfdp, stateo,
   end do
 end subroutine frelev
 
+!> FRELEN(ITYPE, NS, PARAMS, STATEI, U, DISS, STORED, STAT): the energies of the increment
+!> FRELEV makes on the same inputs: DISS what the sliders dissipate in it (FRIC's SFD
+!> increment), STORED what the springs hold at its end (FRIC's SED).
+subroutine frelen(itype, ns, params, statei, u, diss, stored, stat)
+  use fricreg_c
+  implicit none
+  integer, intent(in) :: itype, ns
+  double precision, intent(in) :: params(*), statei(*), u(*)
+  double precision, intent(inout) :: diss, stored
+  integer, intent(out) :: stat
+  type(c_ptr) :: t
+  t = fricreg_f77_element_type(int(itype, c_int64_t), int(ns, c_int64_t))
+  stat = int(FRICREG_EINVAL)
+  if (c_associated(t)) stat = int(fricreg_element_energy(t, params, statei, u, diss, stored))
+end subroutine frelen
+
 !> FRELMS(ITYPE, NS, PARAMS, STATEI, U, MSG, STAT): STAT and the message MSG (blank-padded,
-!> blank on success) of FRELEV's failure on the same inputs.
+!> blank on success) of FRELEV's failure on the same inputs. Fortran 77 passes every argument,
+!> so this is always fricreg_element_explain's eval case (state and U given), never init's or
+!> a NULL's; FRELEV's outputs F, DFDU, DFDP and STATEO are not its arguments.
 subroutine frelms(itype, ns, params, statei, u, msg, stat)
   use fricreg_c
   implicit none

@@ -33,10 +33,23 @@
  *   iwan_3d          3   k[ns], phi[ns] (2 ns)                      w[3 ns], slider s at 3 s
  *   iwan_normal      2   k[ns], mu[ns], kn, n0, gap (2 ns + 3)      w[ns]
  *   spring           1   k (1)                                      none (0)
+ *   dahl             1   sigma, fc (2)                              w, u0 (2)
  *
  * spring is a linear spring, f = k u, df/du = k, df/dk = u (k > 0, finite): a joint's linear
  * stiffness beside its friction elements, and the table's simplest law (a new law is one file
- * and one line of the library's table: src/joint/element_spring.c). Every other one is ns
+ * and one line of the library's table: src/joint/element_spring.c). dahl is Dahl's model with
+ * exponent 1 (P. R. Dahl 1968), dF/du = sigma (1 - sgn(du) F / fc), a law with state that is
+ * not built from sliders: along an increment that does not reverse it is integrated exactly,
+ *
+ *     F = s fc - (s fc - F0) exp(-sigma |u - u0| / fc),   s = sgn(u - u0),
+ *     df/du = sigma (1 - s F0 / fc) exp(-sigma |u - u0| / fc)
+ *
+ * from the force F0 = sigma (u0 - w) at the displacement u0 the last call ended at (state: the
+ * bristles' root w and u0; state_out = (u - F/sigma, u)); at u = u0 the tangent is the
+ * reversal's, s = -sgn F0 (s = 1 at F0 = 0). sigma > 0 (the stiffness at rest), fc > 0 (the
+ * force it tends to under sliding), both finite with sigma / fc finite; structures and
+ * harmonic balance (the march of its eval, through the orbit's turns) take it. Every other
+ * one is ns
  * Jenkins sliders in parallel (ns = 1 but for the Iwan types; their ns is
  * fricreg_element_sliders'), slider s a spring k_s in series with a Coulomb slider of bound
  * b_s, returned from its old position w_s (Simo & Hughes, Computational Inelasticity, 1998,
@@ -113,7 +126,8 @@ enum fricreg_element_code {
     FRICREG_ELEMENT_JENKINS_NORMAL = 7, /**< jenkins_normal */
     FRICREG_ELEMENT_IWAN_2D = 8,        /**< iwan_2d */
     FRICREG_ELEMENT_IWAN_3D = 9,        /**< iwan_3d (the ball of jenkins_3d per slider) */
-    FRICREG_ELEMENT_SPRING = 10         /**< spring (a linear spring, no state) */
+    FRICREG_ELEMENT_SPRING = 10,        /**< spring (a linear spring, no state) */
+    FRICREG_ELEMENT_DAHL = 11           /**< dahl (Dahl's model: state, no slider) */
 };
 
 /** The type called name (the table at the top of this header; the Iwan types with ns = 1).
@@ -242,17 +256,52 @@ FRICREG_API int fricreg_element_eval_batch(const fricreg_element_type *type, siz
                                            double dfdu[], double dfdp[], double state_out[],
                                            size_t *bad_point);
 
-/** Why fricreg_element_eval (state_in and u given) or fricreg_element_init (both NULL) fails
- *  on these inputs: the status it returns, and a message naming the argument and its value.
+/** The energies of the increment fricreg_element_eval makes on the same inputs, as a host
+ *  reports them (Abaqus FRIC's SFD and SED; docs/hosts.md): the sliders' dissipation and the
+ *  springs' stored energy, in the host's force times displacement units.
  *
- *  params[nparams], state_in[nstate] (or NULL), u[dim] (or NULL): as for fricreg_element_eval;
- *  with state_in NULL only the parameters are checked, with u NULL the parameters and state.
+ *      dissipated = sum_s f_s' . (w_s' - w_s),
+ *      stored     = sum_s |f_s'|^2 / (2 k_s)  (+ N'^2 / (2 kn) for a normal type, kn > 0)
+ *
+ *  with w_s the state_in's slider positions, w_s' and f_s' the slider's position and force
+ *  after the return mapping (the header's top; spring: f^2 / (2 k) stored, nothing
+ *  dissipated). The slip happens at the force the increment ends on, so the dissipation is
+ *  the return mapping's own (backward Euler; Simo & Hughes 1998, Ch. 1), never negative, and
+ *  a closed 1-D loop whose increments reach its turning points dissipates exactly the
+ *  closed form: 4 b (A - b/k) per cycle of amplitude A >= b/k for one slider, summed over the
+ *  slipping sliders of an Iwan type. On opening (a normal type's lift-off) the tangential
+ *  springs' energy is released with the memory reset: neither dissipated nor stored.
+ *
+ *  params, state_in, u  as for fricreg_element_eval.
+ *  dissipated       out: the energy the sliders dissipate in the increment (>= 0).
+ *  stored           out: the energy the springs hold at its end (>= 0).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if type, params, state_in, u, dissipated or stored is
+ *  NULL; FRICREG_ENONFINITE, FRICREG_EINVAL as fricreg_element_eval, and FRICREG_ENONFINITE if
+ *  an energy overflows (numbers near 1e154). Nothing is written on failure. Cost: one
+ *  fricreg_element_eval without tangents, plus O(ns dim); no allocation; thread-safe.
+ *  Since 1.8. */
+FRICREG_API int fricreg_element_energy(const fricreg_element_type *type, const double params[],
+                                       const double state_in[], const double u[],
+                                       double *dissipated, double *stored);
+
+/** Why fricreg_element_eval or fricreg_element_init fails on these inputs: the status that
+ *  call returns, and a message naming the argument and its value.
+ *
+ *  Which call: state_in and u both given, eval's (params, state_in, u checked); both NULL,
+ *  init's (params checked). One of them NULL is eval's call with that argument NULL:
+ *  FRICREG_ENULL and "u is NULL (...)" or "state_in is NULL (...)", whatever the other inputs,
+ *  as eval checks its NULLs first. f, dfdu, dfdp and state_out (init's state) are not
+ *  arguments here: eval's FRICREG_ENULL for f or state_out NULL (stated there) is not judged.
+ *
+ *  params[nparams], state_in[nstate] (or NULL), u[dim] (or NULL): as for fricreg_element_eval.
  *  msg[len]  out, or NULL with len = 0: the message, NUL-terminated and cut to len - 1
- *            characters ("" on success).
+ *            characters ("" on success): "<type>: <name> = <value> must be ... (params[j])" for
+ *            a parameter out of its range, naming the one condition it fails.
  *
- *  Returns the status of that call: FRICREG_OK where it succeeds, else FRICREG_ENONFINITE,
- *  FRICREG_EINVAL as listed there, and FRICREG_ENULL if type or params is NULL (the other
- *  NULLs of that call are not judged here). Since 1.8. */
+ *  Returns the status of that call: FRICREG_OK where it succeeds; FRICREG_ENULL if type or
+ *  params is NULL ("type is NULL", "params is NULL") or one of state_in and u is;
+ *  FRICREG_ENONFINITE, FRICREG_EINVAL as listed there. Since 1.8. */
 FRICREG_API int fricreg_element_explain(const fricreg_element_type *type, const double params[],
                                         const double state_in[], const double u[], char *msg,
                                         size_t len);

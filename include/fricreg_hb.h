@@ -452,15 +452,19 @@ FRICREG_API int fricreg_hb_set_jenkins_2d_normal(fricreg_hb *hb, size_t m, size_
  *  fricreg_hb_set_jenkins_2d_normal. Their normal law is N = max(0, n0 + kn g): gap must be 0
  *  (the preload in n0; FRICREG_EINVAL otherwise, a gap not being folded into n0 − kn gap,
  *  which would round). Every other type (jenkins_2d, jenkins_3d, iwan_2d, iwan_3d, spring, and
- *  any law added to the table) runs the march of its fricreg_element_eval: its dim components
+ *  dahl, and any law added to the table) runs the march of its fricreg_element_eval: its dim
+ *  components
  *  at N = 64 (2H + 1) samples of the period, rounded up to a power of two, marched from its
  *  sliders at the middle of the orbit (a slider stuck all period then equals the exact 1-D
  *  AFT's centred one, a 2-D one the 3-D contact's, in its orbit's enclosing circle) until the
  *  state repeats (a slow contraction found by Newton's method on the periodic state), the
- *  coefficients by FFT; a law with state extrapolated by Richardson over
+ *  coefficients by FFT; a 1-D law with state marched through the orbit's turns between the
+ *  samples too (dahl: its loop energy equals a time-domain march of the same orbit to 1e-8), a
+ *  law with state on more components extrapolated by Richardson over
  *  N and N/2 samples (its samples lag by a term in 1/N: 4e-5 of the scale for jenkins_2d moved
  *  along one axis against the exact 1-D Jenkins at H = 3), its Jacobian the exact one of the
- *  sampled march (its sliders' sensitivities carried through the period, started periodic);
+ *  sampled march (its sliders' or its state's sensitivities carried through the period, started
+ *  periodic);
  *  a law without state's Jacobian from its tangent. A marched step costs about three periods
  *  of eval a Newton iteration: the continuation of NLvib's chain with two jenkins_2d elements
  *  at H = 7 takes 9 s (test hb_march; the exact jenkins run 0.05 s), and the default start
@@ -489,8 +493,10 @@ FRICREG_API int fricreg_hb_set_jenkins_2d_normal(fricreg_hb *hb, size_t m, size_
  *  ndof is not the driver's or the elements would number more than fricreg_hb_create's m;
  *  FRICREG_EINVAL if an element's parameters are out of range (the message names the element
  *  and says why, as fricreg_element_explain), a gap is not 0 on an exact AFT's type, a row
- *  of J is zero, or the call comes from the monitor; FRICREG_ENONFINITE (an entry of J or
- *  params); FRICREG_ENOMEM. On failure the elements held are unchanged. */
+ *  of J is zero, the type is marched and has state but no tangents for the march to chain its
+ *  Jacobian through (a law added to the table without its slider or state tangents; the
+ *  message says so, even with me = 0), or the call comes from the monitor;
+ *  FRICREG_ENONFINITE (an entry of J or params); FRICREG_ENOMEM. On failure the elements held are unchanged. */
 FRICREG_API int fricreg_hb_add_elements(fricreg_hb *hb, const fricreg_element_type *type, size_t me,
                                         size_t ndof, const double J[], const double params[]);
 

@@ -13,7 +13,9 @@
  *     the differences' own error), on orbits
  *     where every slider sticks, where one barely slips (its periodic state contracts slowly,
  *     so the implicit function theorem's (I - Psi)^-1 matters), where all slip, and on an Iwan
- *     element whose sliders do some of each; for jenkins_2d, iwan_2d and jenkins_3d. */
+ *     element whose sliders do some of each; for jenkins_2d, iwan_2d and jenkins_3d; and for
+ *     dahl, whose state is not a slider's (its own state tangents chained), on a soft and a
+ *     saturated loop. */
 #include <check.h>
 #include <math.h>
 #include <stdio.h>
@@ -153,6 +155,7 @@ START_TEST(jacobian_is_the_marchs)
 {
     struct bench b = bench_new();
     const double disk[2] = {20.0, 1.0}, iwan[6] = {20.0, 10.0, 5.0, 0.2, 1.0, 3.0};
+    const double dahl[2] = {20.0, 1.0}; /* sigma, fc */
     const struct {
         const char *name;
         size_t ns;
@@ -162,7 +165,9 @@ START_TEST(jacobian_is_the_marchs)
                  {"jenkins_2d", 1, disk, 0.066, 20.0}, /* barely slipping */
                  {"jenkins_2d", 1, disk, 1.0, 20.0},   /* slipping */
                  {"jenkins_3d", 1, disk, 0.04, 20.0},  {"jenkins_3d", 1, disk, 1.0, 20.0},
-                 {"iwan_2d", 3, iwan, 0.2, 35.0}}; /* some sliders stick, some slip */
+                 {"iwan_2d", 3, iwan, 0.2, 35.0}, /* some sliders stick, some slip */
+                 {"dahl", 1, dahl, 0.04, 20.0},   /* sigma A / fc near 1: a soft loop */
+                 {"dahl", 1, dahl, 1.0, 20.0}};   /* saturated near fc */
     double worst = 0.0;
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         const fricreg_element_type *T =

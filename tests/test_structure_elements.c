@@ -16,6 +16,7 @@
  *     rounding); "jenkins_3d"'s energy balance closes (average-acceleration Newmark books the
  *     sliders' dissipation exactly, as fricreg_structure_set_jenkins's); "spring" is a
  *     Jenkins element that never slips (f = kt u from w = 0), to 1e-14, its balance closed;
+ *     "dahl" (state not built from sliders) dissipates, its balance closed;
  *   - bad input: the statuses fricreg_structure.h promises, the element count and the run
  *     unchanged after each failure. */
 #include <check.h>
@@ -352,6 +353,20 @@ START_TEST(types_beyond_setters)
     ck_assert_msg(fabs(residual) <= 1e-12 * fabs(input), "residual %g input %g", residual, input);
     fricreg_structure_free(a);
     fricreg_structure_free(b);
+
+    /* dahl (state not built from sliders) on x: its bristles dissipate, and average-acceleration
+     * Newmark's balance closes with that dissipation (its force is linear in the bristles'
+     * deflection u - w, so the trapezoid's work splits exactly into F dw and the stored F^2 /
+     * (2 sigma)) */
+    const double Pdahl[2] = {0.8, 0.1};
+    a = block_b_with(fricreg_element_lookup("dahl"), Jx, Pdahl, 10.0);
+    ck_assert_int_eq(fricreg_structure_get_value(a, FRICREG_SVALUE_INPUT, &input), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_value(a, FRICREG_SVALUE_RESIDUAL, &residual),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_get_value(a, FRICREG_SVALUE_JENKINS, &D), FRICREG_OK);
+    ck_assert_msg(D > 1e-3 && fabs(residual) <= 1e-12 * fabs(input), "D %g residual %g input %g", D,
+                  residual, input);
+    fricreg_structure_free(a);
 }
 END_TEST
 

@@ -8,7 +8,8 @@
 ! F(u_r) - F(u) = 2 F((u_r - u)/2), exactly for any sliders; here the sliders are Segalman's
 ! (fricreg_element_segalman, F_S = 2, K_T = 10, chi = -0.5, beta = 0, 6 sliders). The
 ! contact_3d tangent in slip: dfdu(1, 3) = df_x/dg = mu kn n_x /= 0 while dfdu(3, 1) = dN/du_x
-! = 0, which C gives at [2] and [6] of its row-major block.
+! = 0, which C gives at [2] and [6] of its row-major block. Its energies in that slip from
+! rest: the slider's f . dw and the springs' f**2 / (2 k) (fricreg_element_energy).
 program test_element
   use fricreg
   use ftest
@@ -60,6 +61,13 @@ program test_element
   call check_close(dfdp(1, 2), 3.0_c_double * 0.8_c_double / hypot(0.8_c_double, 0.3_c_double), &
                    1e-15_c_double, 'df_x/dmu = N n_x')
   call check_close(hypot(f(1), f(2)), 0.5_c_double * 3.0_c_double, 1e-15_c_double, 'slip mu N')
+  ! its energies: the slider slips by |u_t| - mu N / kt at the force mu N = 1.5 (N = n0 + kn g
+  ! = 3), and the springs hold (mu N)**2 / (2 kt) + N**2 / (2 kn)
+  call check_status(ct%energy(pc, wc, u, ur, fr), FRICREG_OK, 'energy contact_3d')
+  call check_close(ur, 1.5_c_double * (hypot(0.8_c_double, 0.3_c_double) - 0.15_c_double), &
+                   1e-15_c_double, 'dissipated mu N slip')
+  call check_close(fr, 1.5_c_double**2 / 20 + 3.0_c_double**2 / 8, 1e-15_c_double, 'stored')
+  call check_status(ct%energy(pc, wc, u(1:2), ur, fr), FRICREG_ESIZE, 'energy u size')
 
   ! errors: nothing written, a message
   call check_status(none%lookup('coulomb'), FRICREG_EINVAL, 'lookup unknown')

@@ -116,8 +116,8 @@ def test_type_from_params_and_sizes():
 
 
 def test_errors_name_the_argument():
-    with pytest.raises(ValueError, match="'dahl' is not an element type"):
-        fricreg.Element("dahl", [1.0])
+    with pytest.raises(ValueError, match="'lugre' is not an element type"):
+        fricreg.Element("lugre", [1.0])
     with pytest.raises(ValueError, match="jenkins takes 2 parameters, not 3"):
         fricreg.Element("jenkins", [1.0, 2.0, 3.0])
     with pytest.raises(ValueError, match=r"iwan takes 0 \+ 2 ns parameters"):

@@ -78,6 +78,13 @@ int fricreg_hb_add_elements(fricreg_hb *hb, const fricreg_element_type *type, si
         return fr_fail(hb, FRICREG_ENULL, "%s: type is NULL", fn);
     struct fr_hb_block blk;
     block_of(type, &blk);
+    if (blk.kind == FR_HB_MARCH && fricreg_element_nstate(type) > 0 &&
+        type->kind->slider_tangents == NULL && type->kind->state_tangents == NULL)
+        return fr_fail(hb, FRICREG_EINVAL,
+                       "%s: %s has state but neither slider nor state tangents "
+                       "(element_kind.h): the march of harmonic balance chains its Jacobian "
+                       "through them",
+                       fn, type->kind->name);
     if (me == 0)
         return FRICREG_OK;
     if (J == NULL || params == NULL)

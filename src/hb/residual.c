@@ -108,8 +108,9 @@ static int contact_3d(fricreg_hb *hb, size_t e, const double *u, double *f, doub
 }
 
 /* Marched element e (joint/aft_march.h) at its coefficients u[dim nc]: forces f and, with jac,
- * their Jacobian; a law with state by Richardson's extrapolation over N and N/2 samples, as
- * contact_3d (its samples lag the continuous law by a term in 1/N). */
+ * their Jacobian; a law whose march lags (state on more than one component) by Richardson's
+ * extrapolation over N and N/2 samples, as contact_3d (its samples lag the continuous law by a
+ * term in 1/N); a 1-D one is marched through its turns, exact at the samples. */
 static int march(fricreg_hb *hb, size_t e, const double *u, double *f, double *jac)
 {
     const fricreg_element_type *type = hb->etype[e];
@@ -117,7 +118,7 @@ static int march(fricreg_hb *hb, size_t e, const double *u, double *f, double *j
     size_t w = (size_t)fricreg_element_dim(type) * hb->nc;
     double *fh = hb->half, *jh = hb->half + w;
     int status = fr_aft_march(hb->aft, hb->march, type, p, u, f, jac);
-    if (status != FRICREG_OK || fricreg_element_nstate(type) == 0)
+    if (status != FRICREG_OK || !fr_aft_march_lags(type))
         return status;
     if ((status = fr_aft_march(hb->aft_half, hb->march, type, p, u, fh, jac ? jh : NULL)) !=
         FRICREG_OK)

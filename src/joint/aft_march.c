@@ -21,64 +21,22 @@
  * A slider that slips leaves the middle for its own periodic state, which is unique; one that
  * barely slips sits near it, so the forces are continuous in u through the onset of stick.
  *
- * The Jacobian, exact for the sampled march: a law without state has f(theta_n) = f(u(theta_n)),
- * so column j of component d2 is the transform of df/du_d2 (theta_n) phi_j(theta_n). A law with
- * state is Jenkins sliders (element_kind.h), whose force f_s depends on u - w_s alone: from each
- * sample's slider tangents t_s = d f_s / d u and T_s = d w_s' / d w_s (the kind's
- * slider_tangents), the sensitivity S_s = d w_s / d u of every slider's position to u's
- * coefficients goes forward with the march, V = Phi_n - S_s, d f_n / d u = sum_s t_s V,
- * S_s' = Phi_n - T_s V, and the forces' derivatives are transformed as they come. The
- * settled period's start is periodic: a first pass from S = 0 gives S_s(N) = R_s and the
- * period's map Psi_s = prod T_s, and a slider that slipped (Psi_s a contraction) starts the
- * second pass from S_s = (I - Psi_s)^-1 R_s, the implicit function theorem on s = P(s, u); a
- * slider stuck all period sits at the centred state, whose derivative is the middle's: the
- * circle's centre moved with its support samples, or (phi(theta_max) + phi(theta_min)) / 2. (A
- * 3-D slider that settles stuck after slipping in the march's first periods, on an orbit whose
- * middle is not a stuck state, is given the middle's derivative too: then the derivative is
- * approximate, by how far it moved.) */
+ * The Jacobian: aft_march_jacobian.c. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "aft_internal.h"
 #include "aft_march.h"
+#include "aft_march_internal.h"
 #include "base/lapack.h"
 #include "element_kind.h"
-#include "enclosing_circle.h"
 
 #define MAX_PERIODS 64
 #define PLAIN 4
 #define MAX_NEWTON_STATES 64
 #define MAX_NEWTON 20
-#define MAX_DIM 3
-#define BLOCK 64 /* samples whose derivatives are transformed by one dgemm */
-
-struct fr_aft_march {
-    size_t N, nc, nstate; /* the room */
-    size_t samples;       /* this call's N (aft's) */
-    int dim;              /* this call's type's */
-    double *us;           /* [3 N] u at the samples, component d's from d N */
-    double *fs;           /* [3 N] f at the samples */
-    double *ts;           /* [9 N] df/du at the samples, entry (a, c) from (3 a + c) N */
-    double *x;            /* [N] one transform's samples */
-    double *state;        /* [nstate] the march's state */
-    double *start;        /* [nstate] the state at the period's start */
-    double *kept;         /* [nstate] the march's state before Newton's, kept if it fails */
-    double *fu;           /* [3 nc] the forces at u */
-    double *ps, *pd;      /* [nstate] P(s); Newton's step */
-    double *A;            /* [nn nn] I - P'(s), nn = min(nstate, MAX_NEWTON_STATES), by columns */
-    int *piv;             /* [max(nn, 3)] its pivots, or a slider's */
-    double *sens;         /* [nstate 3 nc] S = d state / d u, row-major */
-    double *psi;          /* [nstate 3] each slider's Psi_s, its td x td block from td td s */
-    double *tsl, *twl;    /* [nstate 3] the sample's slider tangents t_s, T_s, laid out as psi */
-    double *v;            /* [3 3 nc] V = Phi_n - S_s, or (I - Psi_s)'s right-hand sides */
-    double *g;            /* [BLOCK 3 3 nc] d f_n / d u of a block's samples, one a row */
-    double *wb;           /* [nc BLOCK] the transform's weights at those samples, by rows */
-    double *phi;          /* [nc] the basis at a sample */
-    int *slipped;         /* [nstate] 1 where slider s slipped in the settled period */
-    size_t hi[MAX_DIM], lo[MAX_DIM]; /* the samples of u's largest and smallest components */
-    struct fr_circle circle;         /* two tangential components: the orbit's enclosing circle */
-};
+#define NOISE 64.0 /* Newton's stall, within 2^-40 of the scale: the period's rounding */
 
 int fr_aft_march_create(size_t N, size_t nc, size_t nstate, struct fr_aft_march **out)
 {
@@ -86,7 +44,8 @@ int fr_aft_march_create(size_t N, size_t nc, size_t nstate, struct fr_aft_march 
     struct fr_aft_march *w = calloc(1, sizeof *w);
     size_t nn = nstate < MAX_NEWTON_STATES ? nstate : MAX_NEWTON_STATES, b = MAX_DIM * nc;
     size_t doubles = (3 + 3 + 9 + 1) * N + 5 * nstate + MAX_DIM * nc + nn * nn + nstate * b +
-                     3 * MAX_DIM * nstate + MAX_DIM * b + BLOCK * MAX_DIM * b + nc * BLOCK + nc;
+                     3 * MAX_DIM * nstate + MAX_DIM * b + BLOCK * MAX_DIM * b + nc * BLOCK + nc +
+                     FR_STATE_TANGENTS_MAX * b + 2 * N;
     double *buf = w ? malloc(doubles * sizeof *buf) : NULL;
     int *piv = buf ? malloc((nn + MAX_DIM + nstate) * sizeof *piv) : NULL;
     if (piv == NULL) {
@@ -114,6 +73,9 @@ int fr_aft_march_create(size_t N, size_t nc, size_t nstate, struct fr_aft_march 
     w->g = w->v + MAX_DIM * b;
     w->wb = w->g + BLOCK * MAX_DIM * b;
     w->phi = w->wb + nc * BLOCK;
+    w->snext = w->phi + nc;
+    w->tturn = w->snext + FR_STATE_TANGENTS_MAX * b;
+    w->uturn = w->tturn + N;
     *out = w;
     return FRICREG_OK;
 }
@@ -192,9 +154,14 @@ static int period(const fricreg_element_type *type, const double *params, struct
     size_t N = w->samples;
     for (size_t n = 0; n < N; n++) {
         double u[MAX_DIM], f[MAX_DIM], t[MAX_DIM * MAX_DIM];
+        int status = FRICREG_OK;
+        if (!isnan(w->tturn[n])) /* through the turn first: each piece is monotone */
+            status = fricreg_element_eval(type, params, w->state, &w->uturn[n], f, NULL, NULL,
+                                          w->state);
         for (int d = 0; d < dim; d++)
             u[d] = w->us[(size_t)d * N + n];
-        int status = fricreg_element_eval(type, params, w->state, u, f, tangent ? t : NULL, NULL,
+        if (status == FRICREG_OK)
+            status = fricreg_element_eval(type, params, w->state, u, f, tangent ? t : NULL, NULL,
                                           w->state);
         if (status != FRICREG_OK)
             return status;
@@ -224,13 +191,17 @@ static int newton(const fricreg_element_type *type, const double *params, struct
                   int dim, size_t nstate, int tangent)
 {
     int n = (int)nstate, one = 1, info;
+    double last = INFINITY;
     for (int it = 0; it < MAX_NEWTON; it++) {
         int status = period_map(type, params, w, dim, nstate, tangent);
         double tol, r = moved_by(w, w->ps, w->start, nstate, &tol);
         if (status != FRICREG_OK)
             return -status;
-        if (r <= tol)
+        /* converged, or at the period's rounding noise: a state that moves at every sample
+         * (dahl's) gathers some ulps a sample, above 2^-46 of the scale at N = 512 */
+        if (r <= tol || (r > 0.5 * last && r <= NOISE * tol))
             return 1;
+        last = r;
         for (size_t j = 0; j < nstate; j++) { /* column j of I - P'(s) */
             double sj = w->start[j], delta = 0x1p-26 * fmax(fabs(sj), 0x1p46 * tol);
             memcpy(w->state, w->start, nstate * sizeof *w->state);
@@ -287,153 +258,6 @@ static void coefficients(const fricreg_aft *a, struct fr_aft_march *w, int dim, 
     }
 }
 
-/* One sample's step of the sensitivities, slider by slider (the file's comment): V = Phi_n -
- * S_s into w->v, t_s V added into g[td td nc], S_s' = Phi_n - T_s V; in the first pass Psi_s' =
- * T_s Psi_s and whether the slider slipped (T_s not I). */
-static void sensitivity_step(struct fr_aft_march *w, size_t td, size_t ns, size_t nc, int first,
-                             double *g)
-{
-    size_t b = td * nc, blk = td * td;
-    memset(g, 0, td * b * sizeof *g);
-    for (size_t s = 0; s < ns; s++) {
-        double *S = w->sens + td * s * b;
-        const double *t = w->tsl + blk * s, *T = w->twl + blk * s;
-        for (size_t r = 0; r < td; r++)
-            for (size_t col = 0; col < b; col++)
-                w->v[r * b + col] = (col / nc == r ? w->phi[col % nc] : 0.0) - S[r * b + col];
-        for (size_t r = 0; r < td; r++)
-            for (size_t col = 0; col < b; col++)
-                S[r * b + col] = col / nc == r ? w->phi[col % nc] : 0.0;
-        for (size_t r = 0; r < td; r++)
-            for (size_t c = 0; c < td; c++)
-                for (size_t col = 0; col < b; col++) {
-                    g[r * b + col] += t[r * td + c] * w->v[c * b + col];
-                    S[r * b + col] -= T[r * td + c] * w->v[c * b + col];
-                }
-        if (!first)
-            continue;
-        double *P = w->psi + blk * s, next[MAX_DIM * MAX_DIM] = {0.0};
-        for (size_t a = 0; a < blk; a++) {
-            w->slipped[s] |= T[a] != (double)(a / td == a % td);
-            for (size_t c = 0; c < td; c++)
-                next[a] += T[(a / td) * td + c] * P[c * td + a % td];
-        }
-        memcpy(P, next, blk * sizeof *P);
-    }
-}
-
-/* The transform of the block's k samples' derivatives in w->g, weighted by w->wb, added into
- * jac: for each component a, jac's rows a nc .. by one dgemm (row-major C = W G, as BLAS's
- * column-major C^T = G^T W^T). */
-static void transform_block(struct fr_aft_march *w, int td, int nc, int k, double *jac)
-{
-    int b = td * nc, ldg = td * b, ldw = BLOCK;
-    double one = 1.0;
-    for (int a = 0; a < td; a++)
-        dgemm_("N", "N", &b, &nc, &k, &one, w->g + (size_t)(a * b), &ldg, w->wb, &ldw, &one,
-               jac + (size_t)(a * nc * b), &b, 1, 1);
-}
-
-/* One period from the settled state w->start over the samples in w->us, the sensitivities
- * w->sens going with it; in the first pass Psi and the slips, in the second the transform of
- * d f_n / d u added into jac (the coefficients' sums, as the FFT's: 1/N for the mean, 2/N for
- * the harmonics). */
-static void sensitive_period(const fricreg_aft *a, struct fr_aft_march *w,
-                             const fricreg_element_type *type, const double *params, int first,
-                             double *jac)
-{
-    size_t N = a->N, nc = a->nc, td = (size_t)w->dim, b = td * nc, k = 0;
-    size_t ns = fricreg_element_nstate(type) / td;
-    memcpy(w->state, w->start, ns * td * sizeof *w->state);
-    for (size_t n = 0; n < N; n++) {
-        double u[MAX_DIM];
-        for (size_t d = 0; d < td; d++)
-            u[d] = w->us[d * N + n];
-        for (size_t j = 0; j < nc; j++)
-            w->phi[j] = fr_aft_sample_basis(a, j, n);
-        /* the state as eval's, whose checks the march's period passed at these samples */
-        type->kind->slider_tangents(type, params, w->state, u, w->tsl, w->twl, w->state);
-        sensitivity_step(w, td, ns, nc, first, w->g + k * td * b);
-        if (first)
-            continue;
-        for (size_t j = 0; j < nc; j++)
-            w->wb[j * BLOCK + k] = w->phi[j] * (j == 0 ? 1.0 : 2.0) / (double)N;
-        if (++k == BLOCK || n + 1 == N) {
-            transform_block(w, (int)td, (int)nc, (int)k, jac);
-            k = 0;
-        }
-    }
-}
-
-/* d m_r / d u_col of the middle m of the orbit (centre()), component r: for two components the
- * enclosing circle's centre moved with its support samples, else the basis at component r's
- * largest and smallest samples. An orbit that is one point (at rest) moves with its mean
- * alone (a pure harmonic's extremes cancel). */
-static double middle_derivative(const fricreg_aft *a, const struct fr_aft_march *w, size_t r,
-                                size_t col)
-{
-    size_t nc = a->nc, j = col % nc, c = col / nc;
-    int rest = w->dim == 2 ? w->circle.nsup == 1 : w->hi[r] == w->lo[r];
-    if (rest)
-        return c == r && j == 0 ? 1.0 : 0.0;
-    if (w->dim == 2) {
-        double dp[3][2] = {{0.0}}, dc[2];
-        for (int i = 0; i < w->circle.nsup; i++)
-            dp[i][c] = fr_aft_sample_basis(a, j, w->circle.sup[i]);
-        fr_circle_centre_derivative(&w->circle, w->us, w->us + w->samples, (const double(*)[2])dp,
-                                    dc);
-        return dc[r];
-    }
-    if (c != r)
-        return 0.0;
-    return 0.5 * fr_aft_sample_basis(a, j, w->hi[r]) + 0.5 * fr_aft_sample_basis(a, j, w->lo[r]);
-}
-
-/* The periodic start of the sensitivities in w->sens from the first pass's R_s (there) and
- * Psi_s: (I - Psi_s)^-1 R_s for a slider that slipped, else the middle's derivative. */
-static void periodic_start(const fricreg_aft *a, struct fr_aft_march *w, size_t ns)
-{
-    int td = w->dim, nc = (int)a->nc, b = td * nc, info;
-    for (size_t s = 0; s < ns; s++) {
-        double *S = w->sens + (size_t)(td * b) * s, A[MAX_DIM * MAX_DIM];
-        if (!w->slipped[s]) {
-            for (int r = 0; r < td; r++)
-                for (int col = 0; col < b; col++)
-                    S[r * b + col] = middle_derivative(a, w, (size_t)r, (size_t)col);
-            continue;
-        }
-        const double *P = w->psi + (size_t)(td * td) * s;
-        for (int r = 0; r < td; r++) /* by columns, as dgesv takes them */
-            for (int c = 0; c < td; c++)
-                A[c * td + r] = (r == c) - P[r * td + c];
-        for (int r = 0; r < td; r++)
-            for (int col = 0; col < b; col++)
-                w->v[col * td + r] = S[r * b + col];
-        dgesv_(&td, &b, A, &td, w->piv, w->v, &td, &info);
-        for (int r = 0; r < td; r++) /* info != 0 only where a slip rounded T_s to I: S_s = R_s */
-            for (int col = 0; col < b; col++)
-                S[r * b + col] = w->v[col * td + r];
-    }
-}
-
-/* The exact Jacobian of a law with state (the file's comment) into jac. */
-static void sensitivities(const fricreg_aft *a, struct fr_aft_march *w,
-                          const fricreg_element_type *type, const double *params, double *jac)
-{
-    size_t td = (size_t)w->dim, b = td * a->nc, ns = fricreg_element_nstate(type) / td;
-    memset(w->sens, 0, ns * td * b * sizeof *w->sens);
-    memset(w->psi, 0, ns * td * td * sizeof *w->psi);
-    for (size_t s = 0; s < ns; s++) {
-        w->slipped[s] = 0;
-        for (size_t r = 0; r < td; r++)
-            w->psi[(td * s + r) * td + r] = 1.0;
-    }
-    sensitive_period(a, w, type, params, 1, NULL);
-    periodic_start(a, w, ns);
-    memset(jac, 0, b * b * sizeof *jac);
-    sensitive_period(a, w, type, params, 0, jac);
-}
-
 /* The Jacobian of a law without state: column j of component c, the transform of
  * df_a/du_c phi_j at the samples. */
 static void tangents(const fricreg_aft *a, struct fr_aft_march *w, int dim, double *jac)
@@ -455,11 +279,12 @@ int fr_aft_march(const fricreg_aft *aft, struct fr_aft_march *w, const fricreg_e
 {
     int dim = fricreg_element_dim(type);
     size_t nstate = fricreg_element_nstate(type), b = (size_t)dim * aft->nc;
-    if (nstate > 0 && type->kind->slider_tangents == NULL)
+    if (nstate > 0 && type->kind->slider_tangents == NULL && type->kind->state_tangents == NULL)
         return FRICREG_EINVAL;
     w->samples = aft->N;
     w->dim = dim;
     sample(aft, w, u, dim);
+    fr_aft_march_turns(aft, w, u, dim == 1 && nstate > 0);
     centre(type, w, nstate);
     int status = march(type, params, w, dim, nstate, jac != NULL && nstate == 0);
     if (status != FRICREG_OK)
@@ -468,7 +293,12 @@ int fr_aft_march(const fricreg_aft *aft, struct fr_aft_march *w, const fricreg_e
     if (jac != NULL && nstate == 0)
         tangents(aft, w, dim, jac);
     if (jac != NULL && nstate > 0)
-        sensitivities(aft, w, type, params, jac);
+        fr_aft_march_sensitivities(aft, w, type, params, jac);
     memcpy(f, w->fu, b * sizeof *f);
     return FRICREG_OK;
+}
+
+int fr_aft_march_lags(const fricreg_element_type *type)
+{
+    return fricreg_element_nstate(type) > 0 && fricreg_element_dim(type) > 1;
 }

@@ -22,12 +22,19 @@ void fr_aft_march_free(struct fr_aft_march *w);
 
 /* The coefficients f[dim nc] (component d's at d nc, the layout of fricreg_aft.h) of the
  * element of the given type and params (checked by fricreg_element_explain) under the
- * displacement of coefficients u[dim nc], on aft's N samples (fricreg_aft_create with N at
+ * displacement of coefficients u[dim nc], on aft's N samples (a 1-D law with state also at
+ * the turns of u between them) (fricreg_aft_create with N at
  * most the workspace's); with jac, their Jacobian [dim nc x dim nc] row-major, d f / d u,
  * exact for the samples. w's N and nc cover aft's. FRICREG_OK, a status of the law's check at
- * a sample (u beyond its range), or FRICREG_EINVAL for a law with state but no slider
- * tangents (element_kind.h: none in the table), with nothing written. */
+ * a sample (u beyond its range), or FRICREG_EINVAL for a law with state but neither slider
+ * nor state tangents (element_kind.h: none in the table), with nothing written. */
 int fr_aft_march(const fricreg_aft *aft, struct fr_aft_march *w, const fricreg_element_type *type,
                  const double *params, const double *u, double *f, double *jac);
+
+/* 1 where the march's forces lag the law's by a term in 1/N (a law with state of more than one
+ * component: a return mapping from sample to sample, whose turns it does not step through), so
+ * that Richardson's extrapolation over N and N/2 removes it; 0 where the march is exact at
+ * the samples (no state, or one component: it steps through each turn). */
+int fr_aft_march_lags(const fricreg_element_type *type);
 
 #endif

@@ -19,7 +19,8 @@
     FIXED(jenkins_normal)               \
     FAMILY(iwan_2d)                     \
     FAMILY(iwan_3d)                     \
-    FIXED(spring)
+    FIXED(spring)                       \
+    FIXED(dahl)
 
 #define FR_DECLARE(name) extern const struct fr_element_kind fr_element_##name;
 FR_ELEMENT_TABLE(FR_DECLARE, FR_DECLARE)
