@@ -197,9 +197,12 @@ contains
     integer(c_int) :: status
     ! a type without state still needs an array to pass: C asks state_in not NULL
     real(c_double) :: none(1)
+    integer :: d, nst
     status = el_ready(self, 'energy', params)
     if (status /= FRICREG_OK) return
-    if (size(state_in) /= self%nstate() .or. size(u) /= self%dim()) then
+    d = self%dim()
+    nst = self%nstate()
+    if (size(state_in) /= nst .or. size(u) /= d) then
       status = FRICREG_ESIZE
       self%msg = 'energy: sizes: u (dim), state_in (nstate)'
       return
