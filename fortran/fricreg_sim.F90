@@ -219,7 +219,8 @@ contains
   end function sim_set_error_estimate
 
   !> The answer tolerance rtol (finite, > 0; default 1e-2): FRICREG_WARN_ERROR_ESTIMATE where
-  !> the last whole cycle's error estimate exceeds rtol |D|, whatever its kind; kept across runs
+  !> the last whole cycle's error estimate exceeds rtol |D| (and a round-off floor, 1e-12 of
+  !> sum mun eps T), whatever its kind; kept across runs
   !> (fricreg_sim_set_answer_rtol). FRICREG_EINVAL otherwise, nothing changed. Since 1.8.
   function sim_set_answer_rtol(self, rtol) result(status)
     class(fricreg_simulation), intent(inout) :: self

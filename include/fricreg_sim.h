@@ -473,7 +473,9 @@ FRICREG_API int fricreg_sim_get_dissipation_error_kind(const fricreg_sim *sim, s
 /** Set the run's answer tolerance: fricreg_sim_warning_count raises
  *  FRICREG_WARN_ERROR_ESTIMATE where the error estimate of the last whole cycle's D (the total
  *  D's without a whole cycle) exceeds rtol |D|, whatever its kind (fricreg_sim_set_error_estimate;
- *  the error a caller accepts in the answer, relative, dimensionless). Default 1e-2; until
+ *  the error a caller accepts in the answer, relative, dimensionless), and 1e-12 of the band's
+ *  work sum_i mun_i eps T over that time T (a D whose exact value is 0, a stuck contact's, is
+ *  round-off and so is its estimate; docs/integrators.md, "Warnings"). Default 1e-2; until
  *  1.7 the level was a fixed 10%, which rtol = 0.1 roughly restores. Kept across runs; it
  *  changes no result, only the warning, judged on the value in force when the warnings are
  *  judged (the run's end and fricreg_sim_warning_count).

@@ -256,6 +256,30 @@ START_TEST(test_warnings)
 }
 END_TEST
 
+/* A quantity whose exact value is 0: the oscillator from x0 = 0.5 under a = 0.5 sticks for good
+ * (the spring's and the forcing's force never exceed mun = 1), so D is 0 in every cycle; under
+ * central-imex it is round-off, about 1e-18, and so is its estimate. The estimate is below 1e-12
+ * of the band's work mun eps T = 0.126 (fr_estimate_exceeds' floor): no warning, though it is
+ * above the answer tolerance's share of |D| at 1e-9 (the relative rule alone warned). */
+START_TEST(test_stuck_estimate_is_not_warned)
+{
+    fricreg_sim *sim = oscillator(0.5, 1.0, FRICREG_INT_CENTRAL_IMEX, 0.01, 0.0, 0.0, 0.02);
+    ck_assert_int_eq(fricreg_sim_set_param(sim, FRICREG_PARAM_X0, 0.5), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_set_answer_rtol(sim, 1e-9), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_run_cycles(sim, CYCLES), FRICREG_OK);
+    double D[CYCLES], err[CYCLES], band = 1.0 * 0.02 * 6.283185307179586; /* mun eps T */
+    ck_assert_int_eq(fricreg_sim_get_dissipation(sim, CYCLES, D), FRICREG_OK);
+    ck_assert_int_eq(fricreg_sim_get_dissipation_error(sim, CYCLES, err), FRICREG_OK);
+    for (int c = 0; c < CYCLES; c++)
+        ck_assert_msg(fabs(D[c]) < 1e-15 && err[c] < 1e-12 * band,
+                      "cycle %d: D %.3g, estimate %.3g", c + 1, D[c], err[c]);
+    ck_assert_msg(err[CYCLES - 1] > 1e-9 * fabs(D[CYCLES - 1]), "estimate %.3g of D %.3g",
+                  err[CYCLES - 1], D[CYCLES - 1]);
+    ck_assert_uint_eq(fricreg_sim_warning_count(sim), 0);
+    fricreg_sim_free(sim);
+}
+END_TEST
+
 /* fricreg_sim_get_dissipation_error_kind's errors as fricreg_sim_get_dissipation_error's,
  * FRICREG_VALUE_DISS_ERROR_KIND's, and fricreg_sim_set_answer_rtol's: each refusal leaves the
  * output and the tolerance as they were. */
@@ -304,6 +328,7 @@ int main(void)
     tcase_add_test(tc, test_warnings);
     tcase_add_test(tc, test_estimators_are_their_formulas);
     tcase_add_test(tc, test_bound_kind);
+    tcase_add_test(tc, test_stuck_estimate_is_not_warned);
     tcase_add_test(tc, test_kind_and_rtol_refusals);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);

@@ -127,6 +127,11 @@ double fr_companion_estimate_coarser(int estimator, double q, double q2, double 
     return err;
 }
 
+int fr_estimate_exceeds(double err, double q, double answer_rtol, double scale)
+{
+    return err > answer_rtol * fabs(q) && err > FR_ESTIMATE_ROUNDOFF * scale;
+}
+
 const char *fr_estimate_kind_name(int kind)
 {
     switch (kind) {

@@ -29,6 +29,16 @@ double fr_companion_estimate(int estimator, double q, double q2, double q4, int 
  * solver's noise: 4 (|d1| + |d2|)); one companion: 3 |d1|, ASSUMED. */
 double fr_companion_estimate_coarser(int estimator, double q, double q2, double q4, int *kind);
 
+/* An estimate's share of its quantity's scale below which it is round-off (fr_estimate_exceeds). */
+#define FR_ESTIMATE_ROUNDOFF 1e-12
+
+/* 1 where the estimate err of q is above the answer tolerance answer_rtol: err > answer_rtol |q|
+ * and err > FR_ESTIMATE_ROUNDOFF scale, scale (>= 0, in q's units) a size of q that the run
+ * knows; else 0 (also for a NaN err). The absolute floor is for a quantity whose exact value is
+ * 0, such as a stuck contact's dissipation: its estimate is round-off, and the relative rule
+ * alone warned on it. */
+int fr_estimate_exceeds(double err, double q, double answer_rtol, double scale);
+
 /* The JSON and messages' name of an enum fricreg_estimate_kind: "asymptotic", "bound",
  * "assumed"; "unknown" for another value. */
 const char *fr_estimate_kind_name(int kind);
