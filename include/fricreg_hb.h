@@ -717,7 +717,9 @@ FRICREG_API int fricreg_hb_displacement(fricreg_hb *hb, size_t ndof, size_t nc, 
  *  Cost: the companion's creation and H' + 1 factors of D_h at the point's Ω, and its Newton
  *  solve at order m (2H' + 1) = m (4H + 3), which from the padded start takes typically 2
  *  iterations (1 where every element sticks): its first step is the classical "one Newton
- *  step" estimate, the second confirms it. Each iteration costs about 8 times one at H (an LU
+ *  step" estimate, the second confirms it; where H truncates much, more (65 on a chain with
+ *  Dahl elements 3% off at H = 7), so its bound is 4 times fricreg_hb_set_newton's (since
+ *  1.8; 1.7 used that bound). Each iteration costs about 8 times one at H (an LU
  *  of twice the order; m AFTs at twice the harmonics). Measured (bench/hb_truncation.c, H = 3
  *  to 19, on the 3-dof chain and a 200-dof sparse rod): 2.4 to 6.3 times a continuation step
  *  at H (fricreg_hb_solve from the solution at Ω − 0.01: the H + 1 factors and its Newton

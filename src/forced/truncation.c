@@ -21,6 +21,10 @@
 
 /* The estimate's safety factor on |rms(2H + 1) − rms(H)| (the header's docstring). */
 #define SAFETY 2.0
+/* The companion's Newton bound, in the driver's (fricreg_hb_set_newton): from the padded start
+ * Newton takes 2 iterations where the series has converged, but where H truncates much (a dahl
+ * chain at 3% off, whose kinked force keeps its steps damped) 65 against the default bound 50. */
+#define COMPANION_ITER_FACTOR 4
 
 /* The unknowns q[m nc] of h's driver padded with zeros into c's iterate qw[m nc'] (nc' > nc). */
 static void pad(const fricreg_hb *hb, fricreg_hb *c, const double *q)
@@ -80,6 +84,7 @@ int fricreg_hb_truncation_error(fricreg_hb *hb, size_t k, size_t ndof, double rm
                        fn, H2);
     }
     c->level = level;
+    c->max_iter = COMPANION_ITER_FACTOR * hb->max_iter;
     /* the monitor sees Ω; the caller's driver takes only the getters' calls meanwhile */
     fr_hb_begin(hb, 1);
     fr_hb_begin(c, 1);
