@@ -71,9 +71,9 @@
 ! pass through a void*).
 !
 ! Generated, not here: the entry points that are one C call (FRHBMF, FRHBKF, FRHBCF, FRHBMX,
-! FRHBCA, FRHBPF, FRHBNT, FRHBXD, FRHBST, FRHBXE) are a line each, with their doc comments, in the table
-! fricreg_hb_f77.txt, which fortran/gen_f77.cmake turns into fricreg_hb_f77_generated.f90 at
-! build time; those below have logic of their own.
+! FRHBCA, FRHBPF, FRHBNT, FRHBXD, FRHBST, FRHBSM, FRHBXE) are a line each, with their doc
+! comments, in the table fricreg_hb_f77.txt, which fortran/gen_f77.cmake turns into
+! fricreg_hb_f77_generated.f90 at build time; those below have logic of their own.
 
 !> FRHBCR(NDOF, M, NH, H, STAT): a driver for NDOF >= 1 degrees of freedom, M >= 1 Jenkins
 !> elements and NH harmonics (1 <= NH <= FRICREG_HB_MAX_HARMONICS) into H.

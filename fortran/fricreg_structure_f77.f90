@@ -97,8 +97,9 @@
 ! Generated, not here: the entry points that are one C call (FRSTMC, FRSTKC, FRSTCC, FRSTJC,
 ! FRSTJR, FRSTMX, FRSTMF, FRSTKF, FRSTCF, FRSTCA, FRSTBD, FRSTLW, FRSTIV, FRSTU0, FRSTNM, FRSTHH,
 ! FRSTCD, FRSTNT, FRSTSP, FRSTTE, FRSTGS, FRSTGF, FRSTGD, FRSTGV, FRSTEE, FRSTPK, FRSTPE,
-! FRSTDE, FRSTJE, FRSTAR, FRSTCS, FRSTXE, FRSTGE, FRSTOD, FRSTOG, FRSTGT, FRSTJS, FRSTS2, FRSTNF) are a line each, with their doc
-! comments, in the table fricreg_structure_f77.txt, which fortran/gen_f77.cmake turns into
+! FRSTDE, FRSTJE, FRSTAR, FRSTEC, FRSTCS, FRSTXE, FRSTGE, FRSTOD, FRSTOG, FRSTGT, FRSTJS,
+! FRSTS2, FRSTNF) are a line each, with their doc comments, in the table
+! fricreg_structure_f77.txt, which fortran/gen_f77.cmake turns into
 ! fricreg_structure_f77_generated.f90 at build time. Those below have logic of their own: a
 ! handle made or released, a refused count, J transposed into a scratch copy, the message, C's
 ! ints copied into the caller's INTEGER (FRSTEK, FRSTCG, FRSTNE), an element type from its code

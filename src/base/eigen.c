@@ -11,6 +11,7 @@
 
 #include "eigen.h"
 #include "fricreg.h"
+#include "base/free_all.h"
 
 int fr_eigen_alloc(struct fr_eigen *e, size_t m)
 {
@@ -29,10 +30,7 @@ int fr_eigen_alloc(struct fr_eigen *e, size_t m)
 
 void fr_eigen_free(struct fr_eigen *e)
 {
-    free(e->a);
-    free(e->eval);
-    free(e->d);
-    free(e->sd);
+    FR_FREE_ALL(e->a, e->eval, e->d, e->sd);
     memset(e, 0, sizeof *e);
 }
 

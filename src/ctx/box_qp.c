@@ -27,6 +27,7 @@
 #include "factor.h"
 #include "law/law.h"
 #include "sparse_coupling.h"
+#include "base/free_all.h"
 
 #define NONE SIZE_MAX
 /* A held bound is released only if its multiplier is below -MULT_RTOL times the size of the
@@ -60,17 +61,8 @@ int fr_box_qp_alloc(struct fr_box_qp *qp, size_t m)
 
 void fr_box_qp_free(struct fr_box_qp *qp)
 {
-    free(qp->lo);
-    free(qp->hi);
-    free(qp->b);
-    free(qp->x);
-    free(qp->y);
-    free(qp->side);
-    free(qp->free_pos);
-    free(qp->free_set);
-    free(qp->held_pos);
-    free(qp->released);
-    free(qp->released_side);
+    FR_FREE_ALL(qp->lo, qp->hi, qp->b, qp->x, qp->y, qp->side, qp->free_pos, qp->free_set,
+                qp->held_pos, qp->released, qp->released_side);
     memset(qp, 0, sizeof *qp);
 }
 

@@ -14,6 +14,7 @@
 #include "base/eigen.h"
 #include "law/contact_check.h"
 #include "law/law.h"
+#include "base/free_all.h"
 
 #define SYMMETRY_RTOL 1e-12
 #define PSD_RTOL 1e-12
@@ -69,18 +70,8 @@ void fricreg_ctx_free(fricreg_ctx *ctx)
     if (ctx == NULL)
         return;
     fr_ctx_free_coupling(ctx);
-    free(ctx->mun);
-    free(ctx->w_diag);
-    free(ctx->f);
-    free(ctx->f_eq);
-    free(ctx->stick);
-    free(ctx->side);
-    free(ctx->last_zdot);
-    free(ctx->last_afree);
-    free(ctx->strib);
-    free(ctx->strib_keps);
-    free(ctx->strib_bound);
-    free(ctx);
+    FR_FREE_ALL(ctx->mun, ctx->w_diag, ctx->f, ctx->f_eq, ctx->stick, ctx->side, ctx->last_zdot,
+                ctx->last_afree, ctx->strib, ctx->strib_keps, ctx->strib_bound, ctx);
 }
 
 int fricreg_ctx_create(size_t m, fricreg_ctx **out)

@@ -43,6 +43,7 @@
 #include "ctx_internal.h"
 #include "factor.h"
 #include "sparse_block.h"
+#include "base/free_all.h"
 
 #define FR_NOT_HELD SIZE_MAX
 /* An update adding a contact with a smaller pivot ratio refactors afresh instead. */
@@ -79,13 +80,7 @@ int fr_factor_alloc(struct fr_factor *fa, size_t m)
 
 void fr_factor_free(struct fr_factor *fa)
 {
-    free(fa->set);
-    free(fa->U);
-    free(fa->d);
-    free(fa->pos);
-    free(fa->order);
-    free(fa->work);
-    free(fa->hit);
+    FR_FREE_ALL(fa->set, fa->U, fa->d, fa->pos, fa->order, fa->work, fa->hit);
     memset(fa, 0, sizeof *fa);
 }
 

@@ -13,6 +13,7 @@
 #include "exact_internal.h"
 #include "fricreg_exact.h"
 #include "phases.h"
+#include "base/free_all.h"
 
 #define MAX_CYCLES 1e6
 
@@ -34,9 +35,7 @@ int fricreg_exact_create(double a, double omega, double mun, double x0, double v
     ex->brent = malloc(sizeof *ex->brent);
     void *state = malloc(gsl_root_fsolver_brent->size);
     if (ex->brent == NULL || state == NULL) {
-        free(ex->brent);
-        free(state);
-        free(ex);
+        FR_FREE_ALL(ex->brent, state, ex);
         return FRICREG_ENOMEM;
     }
     *ex->brent = (gsl_root_fsolver){.type = gsl_root_fsolver_brent, .state = state};
@@ -119,10 +118,7 @@ void fricreg_exact_free(fricreg_exact *ex)
 {
     if (ex == NULL)
         return;
-    free(ex->brent->state);
-    free(ex->brent);
-    free(ex->ph);
-    free(ex);
+    FR_FREE_ALL(ex->brent->state, ex->brent, ex->ph, ex);
 }
 
 FR_ERROR_GETTERS(fricreg_exact, "NULL exact solution")

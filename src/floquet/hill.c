@@ -27,6 +27,7 @@
 #include "base/gsl_mem.h"
 #include "floquet_internal.h"
 #include "hb/lu.h"
+#include "base/free_all.h"
 
 static const double TWO_PI = 6.283185307179586;
 
@@ -60,11 +61,7 @@ void fr_hb_hill_free(fricreg_hb *hb)
     if (w == NULL)
         return;
     free(w->A); /* one block (gsl_mem.h) */
-    free(w->eval);
-    free(w->work);
-    free(w->mlu);
-    free(w->piv);
-    free(w);
+    FR_FREE_ALL(w->eval, w->work, w->mlu, w->piv, w);
     hb->hill = NULL;
 }
 

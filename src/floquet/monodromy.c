@@ -37,6 +37,7 @@
 #include "monodromy.h"
 #include "switches.h"
 #include "hb/lu.h"
+#include "base/free_all.h"
 
 /* The workspace, sized for n dofs, m rows of J, S sliders and H harmonics; column-major
  * matrices of the order P = 2n + S at most. */
@@ -56,9 +57,7 @@ void fr_hb_monodromy_free(fricreg_hb *hb)
     struct fr_hb_mono *w = hb->mono;
     if (w == NULL)
         return;
-    free(w->Mlu);
-    free(w->eig_work);
-    free(w->piv);
+    FR_FREE_ALL(w->Mlu, w->eig_work, w->piv);
     fr_hb_schedule_free(&w->sc);
     free(w);
     hb->mono = NULL;

@@ -45,10 +45,8 @@ void fr_hb_stability_free(fricreg_hb *hb)
 int fricreg_hb_set_stability(fricreg_hb *hb, int enable)
 {
     static const char fn[] = "set_stability";
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    if (hb->busy)
-        return fr_hb_busy(hb, fn);
+    if (hb == NULL || hb->busy)
+        return fr_hb_refuse(hb, fn);
     if (enable != 0 && enable != 1)
         return fr_fail(hb, FRICREG_EINVAL, "%s: enable = %d must be 0 or 1", fn, enable);
     if (enable && fr_hb_stability_in_force(hb) == FRICREG_HB_STABILITY_HILL &&
@@ -94,10 +92,8 @@ int fricreg_hb_set_stability(fricreg_hb *hb, int enable)
 int fricreg_hb_set_stability_method(fricreg_hb *hb, int method)
 {
     static const char fn[] = "set_stability_method";
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    if (hb->busy)
-        return fr_hb_busy(hb, fn);
+    if (hb == NULL || hb->busy)
+        return fr_hb_refuse(hb, fn);
     if (method != FRICREG_HB_STABILITY_AUTO && method != FRICREG_HB_STABILITY_HILL &&
         method != FRICREG_HB_STABILITY_MONODROMY)
         return fr_fail(hb, FRICREG_EINVAL,

@@ -11,6 +11,7 @@
 #include "base/fr_math.h"
 #include "joint/aft_slips.h"
 #include "switches.h"
+#include "base/free_all.h"
 
 /* Switches a slider with lift-off may make in one period (aft_slips.h). */
 static size_t liftoff_cap(int H)
@@ -20,11 +21,7 @@ static size_t liftoff_cap(int H)
 
 void fr_hb_schedule_free(struct fr_hb_schedule *sc)
 {
-    free(sc->sw);
-    free(sc->element);
-    free(sc->k);
-    free(sc->mode);
-    free(sc->lo);
+    FR_FREE_ALL(sc->sw, sc->element, sc->k, sc->mode, sc->lo);
     memset(sc, 0, sizeof *sc);
 }
 

@@ -21,7 +21,7 @@ int fricreg_hb_continue(fricreg_hb *hb, double omega0, double omega1, size_t nq,
         return FRICREG_ENULL;
     const char *fn = "continue";
     if (hb->busy)
-        return fr_hb_busy(hb, fn);
+        return fr_hb_refuse(hb, fn);
     int status = fr_hb_check_start(hb, fn, omega0, nq, q0);
     if (status == FRICREG_OK && !isfinite(omega1))
         status = fr_fail(hb, FRICREG_ENONFINITE, "%s: Omega1 = %g", fn, omega1);
@@ -55,7 +55,7 @@ int fricreg_hb_continue_level(fricreg_hb *hb, double omega, double level0, doubl
         return FRICREG_ENULL;
     const char *fn = "continue_level";
     if (hb->busy)
-        return fr_hb_busy(hb, fn);
+        return fr_hb_refuse(hb, fn);
     int status = fr_hb_check_start(hb, fn, omega, nq, q0);
     if (status == FRICREG_OK && (!isfinite(level0) || !isfinite(level1)))
         status = fr_fail(hb, FRICREG_ENONFINITE, "%s: level0 = %g, level1 = %g", fn, level0,

@@ -21,7 +21,7 @@ int fricreg_hb_peak(fricreg_hb *hb, size_t dof, double *omega, double *rms)
     if (omega == NULL || rms == NULL)
         return fr_fail(hb, FRICREG_ENULL, "peak: %s is NULL", omega == NULL ? "omega" : "rms");
     if (hb->busy)
-        return fr_hb_busy(hb, "peak");
+        return fr_hb_refuse(hb, "peak");
     if (dof >= hb->n)
         return fr_fail(hb, FRICREG_EINVAL, "peak: dof = %zu, the driver has %zu", dof, hb->n);
     if (hb->npts == 0 || !hb->have_branch)

@@ -78,10 +78,8 @@ int fr_hb_stored_solution(fricreg_hb *hb, const char *fn, size_t k, const double
 static int displacement_of(fricreg_hb *hb, const char *fn, size_t k, size_t ndof, size_t nc,
                            double x[])
 {
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    if (hb->busy)
-        return fr_hb_busy(hb, fn);
+    if (hb == NULL || hb->busy)
+        return fr_hb_refuse(hb, fn);
     if (x == NULL)
         return fr_fail(hb, FRICREG_ENULL, "%s: x is NULL", fn);
     if (ndof != hb->n || nc != hb->nc)

@@ -18,7 +18,7 @@ int fricreg_hb_solve(fricreg_hb *hb, double omega, size_t nq, const double q0[],
     if (q == NULL)
         return fr_fail(hb, FRICREG_ENULL, "solve: q is NULL");
     if (hb->busy)
-        return fr_hb_busy(hb, "solve");
+        return fr_hb_refuse(hb, "solve");
     struct fr_error before = hb->err; /* a success keeps it: a first guess's failure is not
                                          the call's */
     int status = fr_hb_check_start(hb, "solve", omega, nq, q0);

@@ -56,10 +56,8 @@ int fricreg_hb_truncation_error(fricreg_hb *hb, size_t k, size_t ndof, double rm
                                 double amplitude_error[])
 {
     static const char fn[] = "truncation_error";
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    if (hb->busy)
-        return fr_hb_busy(hb, fn);
+    if (hb == NULL || hb->busy)
+        return fr_hb_refuse(hb, fn);
     if (rms_error == NULL)
         return fr_fail(hb, FRICREG_ENULL, "%s: rms_error is NULL", fn);
     if (ndof != hb->n)

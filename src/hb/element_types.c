@@ -70,10 +70,8 @@ int fricreg_hb_add_elements(fricreg_hb *hb, const fricreg_element_type *type, si
                             size_t ndof, const double J[], const double params[])
 {
     static const char fn[] = "add_elements";
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    if (hb->busy)
-        return fr_hb_busy(hb, fn);
+    if (hb == NULL || hb->busy)
+        return fr_hb_refuse(hb, fn);
     if (type == NULL)
         return fr_fail(hb, FRICREG_ENULL, "%s: type is NULL", fn);
     struct fr_hb_block blk;
@@ -112,10 +110,8 @@ int fricreg_hb_add_elements(fricreg_hb *hb, const fricreg_element_type *type, si
 
 int fricreg_hb_clear_elements(fricreg_hb *hb)
 {
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    if (hb->busy)
-        return fr_hb_busy(hb, "clear_elements");
+    if (hb == NULL || hb->busy)
+        return fr_hb_refuse(hb, "clear_elements");
     fr_hb_store_clear(hb);
     fr_hb_invalidate(hb);
     return FRICREG_OK;

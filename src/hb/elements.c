@@ -68,10 +68,8 @@ static int check_sliders(fricreg_hb *hb, const char *fn, size_t count, const dou
 static int set_jenkins(fricreg_hb *hb, const char *fn, size_t m, size_t ndof, const double J[],
                        const double kt[], const double mun[])
 {
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    if (hb->busy)
-        return fr_hb_busy(hb, fn);
+    if (hb == NULL || hb->busy)
+        return fr_hb_refuse(hb, fn);
     if (J == NULL || kt == NULL || mun == NULL)
         return fr_fail(hb, FRICREG_ENULL, "%s: %s is NULL", fn,
                        J == NULL    ? "J"
@@ -109,10 +107,8 @@ int fricreg_hb_set_iwan(fricreg_hb *hb, size_t m, size_t ndof, const double J[],
                         const double k[], const double phi[])
 {
     static const char fn[] = "set_iwan";
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    if (hb->busy)
-        return fr_hb_busy(hb, fn);
+    if (hb == NULL || hb->busy)
+        return fr_hb_refuse(hb, fn);
     if (J == NULL || k == NULL || phi == NULL)
         return fr_fail(hb, FRICREG_ENULL, "%s: %s is NULL", fn,
                        J == NULL   ? "J"
@@ -180,10 +176,8 @@ static int set_normal(fricreg_hb *hb, const char *fn, size_t m, size_t ndof, con
                       const double Jn[], size_t ns, const double k[], const double mu[],
                       const double n0[], const double kn[])
 {
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    if (hb->busy)
-        return fr_hb_busy(hb, fn);
+    if (hb == NULL || hb->busy)
+        return fr_hb_refuse(hb, fn);
     const void *args[6] = {Jt, Jn, k, mu, n0, kn};
     static const char *const names[6] = {"Jt", "Jn", "kt", "mu", "n0", "kn"};
     for (int a = 0; a < 6; a++)
@@ -241,10 +235,8 @@ int fricreg_hb_set_jenkins_2d_normal(fricreg_hb *hb, size_t m, size_t ndof, cons
                                      const double n0[], const double kn[])
 {
     static const char fn[] = "set_jenkins_2d_normal";
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    if (hb->busy)
-        return fr_hb_busy(hb, fn);
+    if (hb == NULL || hb->busy)
+        return fr_hb_refuse(hb, fn);
     const void *args[6] = {Je, Jn, kt, mu, n0, kn};
     static const char *const names[6] = {"Je", "Jn", "kt", "mu", "n0", "kn"};
     for (int a = 0; a < 6; a++)

@@ -15,6 +15,7 @@
 #include "sparse.h"
 #include "hb.h"
 #include "busy.h"
+#include "base/free_all.h"
 
 #define MAX_DENSE_DOFS 4096
 #define MAX_DOFS ((size_t)1 << 24)
@@ -86,31 +87,14 @@ void fricreg_hb_free(fricreg_hb *hb)
 {
     if (hb == NULL)
         return;
-    free(hb->M);
-    free(hb->J);
-    free(hb->D);
-    free(hb->Y);
-    free(hb->Z);
-    free(hb->G);
-    free(hb->fq);
-    free(hb->piv);
-    free(hb->piv2);
-    free(hb->pts);
-    free(hb->qpts);
-    free(hb->xpts);
-    free(hb->bifs);
+    FR_FREE_ALL(hb->M, hb->J, hb->D, hb->Y, hb->Z, hb->G, hb->fq, hb->piv, hb->piv2, hb->pts,
+                hb->qpts, hb->xpts, hb->bifs);
     for (int part = 0; part < FR_HB_PARTS; part++)
         if (hb->release[part] != NULL)
             hb->release[part](hb);
     fricreg_aft_free(hb->aft);
     fricreg_aft_free(hb->aft_half);
-    free(hb->half);
-    free(hb->sk);
-    free(hb->nl);
-    free(hb->erow);
-    free(hb->kind);
-    free(hb->etype);
-    free(hb->ep);
+    FR_FREE_ALL(hb->half, hb->sk, hb->nl, hb->erow, hb->kind, hb->etype, hb->ep);
     fr_aft_march_free(hb->march);
     fr_hb_sparse_free(hb);
     fr_cholmod_finish(&hb->cc);
@@ -149,10 +133,8 @@ int fr_hb_clone(const fricreg_hb *src, int harmonics, fricreg_hb **out)
 
 int fricreg_hb_set_newton(fricreg_hb *hb, double tol, int max_iter)
 {
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    if (hb->busy)
-        return fr_hb_busy(hb, "set_newton");
+    if (hb == NULL || hb->busy)
+        return fr_hb_refuse(hb, "set_newton");
     if (!isfinite(tol))
         return fr_fail(hb, FRICREG_ENONFINITE, "set_newton: tol = %g", tol);
     if (!(tol > 0.0 && tol < 1.0) || max_iter < 1 || max_iter > 1000)
@@ -167,10 +149,8 @@ int fricreg_hb_set_newton(fricreg_hb *hb, double tol, int max_iter)
 int fricreg_hb_set_continuation(fricreg_hb *hb, double ds, double ds_min, double ds_max,
                                 size_t max_points)
 {
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    if (hb->busy)
-        return fr_hb_busy(hb, "set_continuation");
+    if (hb == NULL || hb->busy)
+        return fr_hb_refuse(hb, "set_continuation");
     if (!isfinite(ds) || !isfinite(ds_min) || !isfinite(ds_max))
         return fr_fail(hb, FRICREG_ENONFINITE,
                        "set_continuation: ds = %g, ds_min = %g, ds_max = %g", ds, ds_min, ds_max);

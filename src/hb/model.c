@@ -33,10 +33,8 @@ int fr_hb_check_ndof(fricreg_hb *hb, const char *fn, size_t ndof)
  * of the sparse one. */
 static int set_symmetric(fricreg_hb *hb, const char *fn, size_t ndof, const double *A, int which)
 {
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    if (hb->busy)
-        return fr_hb_busy(hb, fn);
+    if (hb == NULL || hb->busy)
+        return fr_hb_refuse(hb, fn);
     if (A == NULL)
         return fr_fail(hb, FRICREG_ENULL, "%s: the matrix is NULL", fn);
     if (fr_hb_check_ndof(hb, fn, ndof) != FRICREG_OK)
@@ -90,10 +88,8 @@ int fricreg_hb_set_matrix(fricreg_hb *hb, int which, size_t nrows, size_t ncols,
                           const int64_t ptr[], const int64_t ind[], const double values[])
 {
     static const char fn[] = "set_matrix";
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    if (hb->busy)
-        return fr_hb_busy(hb, fn);
+    if (hb == NULL || hb->busy)
+        return fr_hb_refuse(hb, fn);
     if (!(which >= FRICREG_MASS && which <= FRICREG_DAMPING))
         return fr_fail(hb, FRICREG_EINVAL,
                        "%s: which = %d is not a model matrix of the driver (FRICREG_MASS, "
@@ -117,10 +113,8 @@ int fricreg_hb_set_matrix(fricreg_hb *hb, int which, size_t nrows, size_t ncols,
 
 int fricreg_hb_set_rayleigh(fricreg_hb *hb, double a0, double a1)
 {
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    if (hb->busy)
-        return fr_hb_busy(hb, "set_rayleigh");
+    if (hb == NULL || hb->busy)
+        return fr_hb_refuse(hb, "set_rayleigh");
     if (!isfinite(a0) || !isfinite(a1))
         return fr_fail(hb, FRICREG_ENONFINITE, "set_rayleigh: a0 = %g, a1 = %g", a0, a1);
     if (a0 < 0.0 || a1 < 0.0)
@@ -135,10 +129,8 @@ int fricreg_hb_set_rayleigh(fricreg_hb *hb, double a0, double a1)
 
 int fricreg_hb_set_excitation(fricreg_hb *hb, size_t ndof, const double pc[], const double ps[])
 {
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    if (hb->busy)
-        return fr_hb_busy(hb, "set_excitation");
+    if (hb == NULL || hb->busy)
+        return fr_hb_refuse(hb, "set_excitation");
     if (pc == NULL || ps == NULL)
         return fr_fail(hb, FRICREG_ENULL, "set_excitation: %s is NULL", pc == NULL ? "pc" : "ps");
     if (fr_hb_check_ndof(hb, "set_excitation", ndof) != FRICREG_OK)

@@ -12,10 +12,8 @@
 
 int fricreg_hb_set_monitor(fricreg_hb *hb, fricreg_hb_monitor fn, void *user)
 {
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    if (hb->busy)
-        return fr_hb_busy(hb, "set_monitor");
+    if (hb == NULL || hb->busy)
+        return fr_hb_refuse(hb, "set_monitor");
     hb->monitor = fn;
     hb->monitor_user = user;
     return FRICREG_OK;
@@ -23,10 +21,8 @@ int fricreg_hb_set_monitor(fricreg_hb *hb, fricreg_hb_monitor fn, void *user)
 
 int fricreg_hb_set_max_iterations(fricreg_hb *hb, int64_t total)
 {
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    if (hb->busy)
-        return fr_hb_busy(hb, "set_max_iterations");
+    if (hb == NULL || hb->busy)
+        return fr_hb_refuse(hb, "set_max_iterations");
     if (total < 0)
         return fr_fail(hb, FRICREG_EINVAL, "set_max_iterations: total = %" PRId64 " must be >= 0",
                        total);

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "rows.h"
+#include "base/free_all.h"
 
 static void *alloc_doubles(size_t count)
 {
@@ -16,12 +17,7 @@ static void *alloc_doubles(size_t count)
 /* Frees b and empties it (a second call does nothing). */
 void fr_hb_rows_free(struct fr_hb_rows *b)
 {
-    free(b->J);
-    free(b->Y);
-    free(b->Z);
-    free(b->G);
-    free(b->fq);
-    free(b->piv2);
+    FR_FREE_ALL(b->J, b->Y, b->Z, b->G, b->fq, b->piv2);
     *b = (struct fr_hb_rows){0};
 }
 
@@ -52,12 +48,7 @@ void fr_hb_rows_install(fricreg_hb *hb, size_t cap, size_t sq, struct fr_hb_rows
         memcpy(b->J, hb->J, hb->m * n * sizeof(double));
         memcpy(b->J + cap * n, hb->pc, 2 * n * sizeof(double));
     }
-    free(hb->J);
-    free(hb->Y);
-    free(hb->Z);
-    free(hb->G);
-    free(hb->fq);
-    free(hb->piv2);
+    FR_FREE_ALL(hb->J, hb->Y, hb->Z, hb->G, hb->fq, hb->piv2);
     hb->J = b->J;
     hb->Y = b->Y;
     hb->Z = b->Z;

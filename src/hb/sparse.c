@@ -18,6 +18,7 @@
 #include "hb_internal.h"
 #include "sparse.h"
 #include "busy.h"
+#include "base/free_all.h"
 
 /* ---- The pattern --------------------------------------------------------------------------- */
 
@@ -52,10 +53,7 @@ struct fr_hb_lu {
 
 static void pattern_free(struct pattern *p)
 {
-    free(p->Dp);
-    free(p->Di);
-    free(p->v);
-    free(p->lu);
+    FR_FREE_ALL(p->Dp, p->Di, p->v, p->lu);
 }
 
 /* The union of X[0..2]'s patterns (upper triangles, stype 1) with both triangles, rows sorted
@@ -86,9 +84,7 @@ static int build_pattern(size_t n, int H, cholmod_sparse *const X[3], struct pat
     struct entry *e = malloc((total ? total : 1) * sizeof *e);
     int64_t *fill = malloc((n ? n : 1) * sizeof *fill);
     if (e == NULL || fill == NULL) {
-        free(start);
-        free(e);
-        free(fill);
+        FR_FREE_ALL(start, e, fill);
         return FRICREG_ENOMEM;
     }
     memcpy(fill, start, n * sizeof *fill);
@@ -145,10 +141,7 @@ static void free_factors(fricreg_hb *hb)
         for (int h = 0; h <= hb->H; h++)
             klu_zl_free_numeric(&hb->lu[h].numeric, &hb->klu);
     klu_l_free_symbolic(&hb->symbolic, &hb->klu);
-    free(hb->Dp);
-    free(hb->Di);
-    free(hb->vM);
-    free(hb->lu);
+    FR_FREE_ALL(hb->Dp, hb->Di, hb->vM, hb->lu);
     hb->Dp = hb->Di = NULL;
     hb->vM = hb->vC = hb->vK = hb->Dv = NULL;
     hb->lu = NULL;
@@ -174,9 +167,7 @@ static int install(fricreg_hb *hb, const char *fn, cholmod_sparse *X[3])
             *own[x] = X[x];
         }
     if (!hb->sparse) { /* for good: the dense model's memory is not needed again */
-        free(hb->M);
-        free(hb->D);
-        free(hb->piv);
+        FR_FREE_ALL(hb->M, hb->D, hb->piv);
         hb->M = hb->C = hb->K = hb->D = NULL;
         hb->piv = NULL;
         klu_l_defaults(&hb->klu);
@@ -277,10 +268,8 @@ int fr_hb_sparse_set_dense(fricreg_hb *hb, const char *fn, int which, const doub
 int fr_hb_set_compressed(fricreg_hb *hb, const char *fn, int which, size_t ndof, int by_columns,
                          int flags, const int64_t ptr[], const int64_t ind[], const double values[])
 {
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    if (hb->busy)
-        return fr_hb_busy(hb, fn);
+    if (hb == NULL || hb->busy)
+        return fr_hb_refuse(hb, fn);
     if (ndof != hb->n)
         return fr_fail(hb, FRICREG_ESIZE, "%s: ndof = %zu, the driver has %zu", fn, ndof, hb->n);
     struct fr_compressed a = {ndof, ndof, by_columns, flags, ptr, ind, values};

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "aft_internal.h"
+#include "base/free_all.h"
 
 int fricreg_aft_create(int harmonics, size_t samples, fricreg_aft **out)
 {
@@ -83,16 +84,8 @@ void fricreg_aft_free(fricreg_aft *aft)
 {
     if (aft == NULL)
         return;
-    free(aft->qre);
-    free(aft->poly);
-    free(aft->roots);
-    free(aft->ws.matrix);
-    free(aft->cand);
-    free(aft->rdir);
-    free(aft->cm);
-    free(aft->fout);
-    free(aft->ctab);
-    free(aft->anchor);
+    FR_FREE_ALL(aft->qre, aft->poly, aft->roots, aft->ws.matrix, aft->cand, aft->rdir, aft->cm,
+                aft->fout, aft->ctab, aft->anchor);
     if (aft->brent != NULL)
         free(aft->brent->state);
     free(aft->brent);

@@ -18,6 +18,7 @@
 #include "hb/monitor.h"
 #include "hb/busy.h"
 #include "hb/recover.h"
+#include "base/free_all.h"
 
 #define MAX_HALVINGS 10
 
@@ -25,15 +26,8 @@ static void nma_free(struct fr_hb_nma *nma)
 {
     if (nma == NULL)
         return;
-    free(nma->phi);
-    free(nma->dGx);
-    free(nma->A);
-    free(nma->piv);
-    free(nma->pts);
-    free(nma->folds);
-    free(nma->special);
-    free(nma->modes);
-    free(nma);
+    FR_FREE_ALL(nma->phi, nma->dGx, nma->A, nma->piv, nma->pts, nma->folds, nma->special,
+                nma->modes, nma);
 }
 
 /* The driver's release of its nonlinear modes (fricreg_hb_free). */
@@ -206,10 +200,8 @@ static int backbone(fricreg_hb *hb, const char *fn, struct fr_hb_nma *s, double 
 int fr_hb_nma_run(fricreg_hb *hb, const char *fn, size_t mode, int damping, double a0, double a1,
                   size_t npoints, fr_hb_nma_backbone body)
 {
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    if (hb->busy)
-        return fr_hb_busy(hb, fn);
+    if (hb == NULL || hb->busy)
+        return fr_hb_refuse(hb, fn);
     int status = check_args(hb, fn, mode, damping, a0, a1, npoints);
     if (status != FRICREG_OK)
         return status;
@@ -277,7 +269,7 @@ int fricreg_hb_nma_point(fricreg_hb *hb, size_t i, double *amplitude, double *om
                        "%s: ndof = %zu, nc = %zu, the driver has %zu and 2H + 1 = %zu", fn, ndof,
                        nc, hb->n, hb->nc);
     if (x != NULL && hb->busy) /* the evaluation would move the solve's factors */
-        return fr_hb_busy(hb, fn);
+        return fr_hb_refuse(hb, fn);
     if (x != NULL && (!hb->have_backbone || s->nq != hb->nq))
         return fr_fail(hb, FRICREG_EINVAL, "%s: the model changed since fricreg_hb_nma", fn);
     const double *p = s->pts + i * s->stride;

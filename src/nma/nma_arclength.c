@@ -30,6 +30,7 @@
 #include "nma_internal.h"
 #include "hb/lu.h"
 #include "hb/monitor.h"
+#include "base/free_all.h"
 
 struct backbone {
     fricreg_hb *hb;
@@ -497,9 +498,7 @@ static int resample(struct backbone *b, size_t n)
 
 static void bb_free(struct backbone *b)
 {
-    free(b->B);
-    free(b->piv);
-    free(b->pts);
+    FR_FREE_ALL(b->B, b->piv, b->pts);
 }
 
 static int bb_alloc(struct backbone *b)

@@ -9,6 +9,7 @@
 #include <gsl/gsl_machine.h>
 
 #include "step_control.h"
+#include "base/free_all.h"
 
 #define SAFETY 0.9    /* GSL's S: the step aimed at 0.9 of the one the estimate allows */
 #define REJECT 1.1    /* a step is rejected above 1.1 of the level ... */
@@ -104,9 +105,7 @@ gsl_odeiv2_control *fr_step_control_new(size_t dim, const double atol[], double 
     struct step_control *state = control_alloc();
     double *levels = malloc(2 * dim * sizeof *levels);
     if (c == NULL || state == NULL || levels == NULL) {
-        free(c);
-        free(state);
-        free(levels);
+        FR_FREE_ALL(c, state, levels);
         return NULL;
     }
     for (size_t i = 0; i < dim; i++) {

@@ -38,6 +38,7 @@
 #include "ode/central.h"
 #include "ode/integrator.h"
 #include "sim_internal.h"
+#include "base/free_all.h"
 
 struct central_state {
     double *dydt;  /* [dim] (v, a, D') at the start of the step: the last step's end */
@@ -58,13 +59,7 @@ static void central_free(void *vstate)
     struct central_state *s = vstate;
     if (s == NULL)
         return;
-    free(s->dydt);
-    free(s->next);
-    free(s->arg);
-    free(s->f);
-    free(s->zdot);
-    free(s->coef);
-    free(s);
+    FR_FREE_ALL(s->dydt, s->next, s->arg, s->f, s->zdot, s->coef, s);
 }
 
 static void *central_alloc(size_t dim)

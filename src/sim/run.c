@@ -7,9 +7,7 @@
 /* A run's warnings go to the handler once each, at the end, whether or not it failed. */
 int fricreg_sim_run(fricreg_sim *sim, double t_end)
 {
-    if (sim == NULL)
-        return FRICREG_ENULL;
-    if (sim->running)
+    if (sim == NULL || sim->running)
         return fr_sim_refuse_during_run(sim, "run");
     fr_warnings_forget_delivered(&sim->warnings);
     int status = fr_sim_run_plain(sim, t_end);

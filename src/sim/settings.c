@@ -13,29 +13,21 @@
 #include "ode/integrator.h"
 #include "settings.h"
 #include "sim_internal.h"
+#include "base/free_all.h"
 
 /* extrapolate.c's results, held by the simulation until its next run. */
 void fr_extrap_free(struct fr_extrap *x)
 {
     if (x == NULL)
         return;
-    free(x->D);
-    free(x->D_err);
-    free(x);
+    FR_FREE_ALL(x->D, x->D_err, x);
 }
 
 void fr_sim_free_run(fricreg_sim *sim)
 {
     fricreg_ctx_free(sim->ctx);
-    free(sim->y);
-    free(sim->zdot_buf);
-    free(sim->a_free);
-    free(sim->f);
-    free(sim->f_eq);
-    free(sim->stick_time);
-    free(sim->stick_fraction);
-    free(sim->D);
-    free(sim->jac_work);
+    FR_FREE_ALL(sim->y, sim->zdot_buf, sim->a_free, sim->f, sim->f_eq, sim->stick_time,
+                sim->stick_fraction, sim->D, sim->jac_work);
     fr_jacobian_free(sim->jac);
     fr_extrap_free(sim->extrap);
     sim->extrap = NULL;
@@ -113,6 +105,8 @@ static int reject_param(fricreg_sim *sim, int param, double value, const struct 
 
 int fr_sim_refuse_during_run(fricreg_sim *sim, const char *who)
 {
+    if (sim == NULL)
+        return FRICREG_ENULL;
     return fr_fail(sim, FRICREG_EINVAL,
                    "%s: not allowed during a run (called from the observer or the warning "
                    "handler)",
@@ -121,9 +115,7 @@ int fr_sim_refuse_during_run(fricreg_sim *sim, const char *who)
 
 int fricreg_sim_set_param(fricreg_sim *sim, int param, double value)
 {
-    if (sim == NULL)
-        return FRICREG_ENULL;
-    if (sim->running)
+    if (sim == NULL || sim->running)
         return fr_sim_refuse_during_run(sim, "set_param");
     size_t slot = 0;
     const struct fr_param_spec *spec = fr_system_param(sim->sys.type, param, &slot);
@@ -147,9 +139,7 @@ int fricreg_sim_get_param(const fricreg_sim *sim, int param, double *value)
 
 int fricreg_sim_set_law(fricreg_sim *sim, int law, double eps)
 {
-    if (sim == NULL)
-        return FRICREG_ENULL;
-    if (sim->running)
+    if (sim == NULL || sim->running)
         return fr_sim_refuse_during_run(sim, "set_law");
     if (!fr_law_known(law))
         return fr_fail(sim, FRICREG_EINVAL, "set_law: unknown law %d", law);
@@ -165,9 +155,7 @@ int fricreg_sim_set_law(fricreg_sim *sim, int law, double eps)
 
 int fricreg_sim_set_partition(fricreg_sim *sim, int partition)
 {
-    if (sim == NULL)
-        return FRICREG_ENULL;
-    if (sim->running)
+    if (sim == NULL || sim->running)
         return fr_sim_refuse_during_run(sim, "set_partition");
     if (partition != FRICREG_PARTITION_CONSISTENT && partition != FRICREG_PARTITION_PAPER)
         return fr_fail(sim, FRICREG_EINVAL, "set_partition: unknown partition %d", partition);
@@ -179,9 +167,7 @@ int fricreg_sim_set_partition(fricreg_sim *sim, int partition)
 int fricreg_sim_set_integrator(fricreg_sim *sim, int integrator, double dt, double rtol,
                                double atol)
 {
-    if (sim == NULL)
-        return FRICREG_ENULL;
-    if (sim->running)
+    if (sim == NULL || sim->running)
         return fr_sim_refuse_during_run(sim, "set_integrator");
     if (fr_integrator_find(integrator) == NULL)
         return fr_fail(sim, FRICREG_EINVAL, "set_integrator: unknown integrator %d", integrator);
@@ -260,9 +246,7 @@ int fricreg_sim_set_abs_tolerances(fricreg_sim *sim, size_t n, const double atol
 
 int fricreg_sim_set_max_steps(fricreg_sim *sim, int64_t max_steps)
 {
-    if (sim == NULL)
-        return FRICREG_ENULL;
-    if (sim->running)
+    if (sim == NULL || sim->running)
         return fr_sim_refuse_during_run(sim, "set_max_steps");
     if (max_steps < 0)
         return fr_fail(sim, FRICREG_EINVAL,
@@ -274,9 +258,7 @@ int fricreg_sim_set_max_steps(fricreg_sim *sim, int64_t max_steps)
 
 int fricreg_sim_set_kink_location(fricreg_sim *sim, int on)
 {
-    if (sim == NULL)
-        return FRICREG_ENULL;
-    if (sim->running)
+    if (sim == NULL || sim->running)
         return fr_sim_refuse_during_run(sim, "set_kink_location");
     if (on != 0 && on != 1)
         return fr_fail(sim, FRICREG_EINVAL, "set_kink_location: on = %d must be 0 or 1", on);
@@ -286,9 +268,7 @@ int fricreg_sim_set_kink_location(fricreg_sim *sim, int on)
 
 int fricreg_sim_set_observer(fricreg_sim *sim, fricreg_sim_observer fn, void *user)
 {
-    if (sim == NULL)
-        return FRICREG_ENULL;
-    if (sim->running)
+    if (sim == NULL || sim->running)
         return fr_sim_refuse_during_run(sim, "set_observer");
     sim->observer = fn;
     sim->observer_user = user;

@@ -118,7 +118,7 @@ int fr_sim_run_plain(fricreg_sim *sim, double t_end);
 
 /* settings.c: a setter or a run called from the observer would free or replace the state the run
  * is stepping: refused (FRICREG_EINVAL, recorded), and the run goes on. `who` names the
- * call. */
+ * call. For sim NULL: FRICREG_ENULL, nothing recorded. */
 int fr_sim_refuse_during_run(fricreg_sim *sim, const char *who);
 
 /* sim_jacobian.c: the Jacobian dfdy [dim x dim, row-major] and dfdt [dim] of fr_sim_rhs, for

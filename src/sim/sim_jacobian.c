@@ -27,6 +27,7 @@
 
 #include "ode/fd_jacobian.h"
 #include "sim_internal.h"
+#include "base/free_all.h"
 
 struct fr_jacobian {
     size_t n, m;
@@ -43,20 +44,8 @@ void fr_jacobian_free(struct fr_jacobian *J)
 {
     if (J == NULL)
         return;
-    free(J->Zv);
-    free(J->Ax);
-    free(J->Cx);
-    free(J->Cf);
-    free(J->Tz);
-    free(J->Ta);
-    free(J->TaAx);
-    free(J->TzZv);
-    free(J->zdot_t);
-    free(J->afree_t);
-    free(J->g);
-    free(J->acc_t);
-    free(J->dydt);
-    free(J);
+    FR_FREE_ALL(J->Zv, J->Ax, J->Cx, J->Cf, J->Tz, J->Ta, J->TaAx, J->TzZv, J->zdot_t, J->afree_t,
+                J->g, J->acc_t, J->dydt, J);
 }
 
 /* The maps of `sys` and scratch for n bodies and m contacts; NULL if out of memory. */

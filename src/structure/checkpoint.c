@@ -408,7 +408,7 @@ int fricreg_structure_save(fricreg_structure *s, void *buf, size_t *size)
     if (size == NULL)
         return fr_fail(s, FRICREG_ENULL, "save: size is NULL");
     if (s->running)
-        return fr_structure_busy(s, "save");
+        return fr_structure_refuse(s, "save");
     if (fr_ctx_carried_size(s->ctx, s->prepared) == 0)
         return fr_fail(s, FRICREG_EINVAL,
                        "save: not supported for a structure whose %zu contacts couple through a "
@@ -542,7 +542,7 @@ int fricreg_structure_restore(fricreg_structure *s, const void *buf, size_t size
     if (buf == NULL)
         return fr_fail(s, FRICREG_ENULL, "restore: buf is NULL");
     if (s->running)
-        return fr_structure_busy(s, "restore");
+        return fr_structure_refuse(s, "restore");
     struct io io;
     int status = read_header(s, buf, size, &io);
     if (status != FRICREG_OK)

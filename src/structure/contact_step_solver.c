@@ -18,6 +18,7 @@
 #include "base/sparse_factor.h"
 #include "contact_step_solver.h"
 #include "ctx/ctx_driver.h"
+#include "base/free_all.h"
 
 #define DENSE_FALLBACK_MAX 64
 
@@ -126,9 +127,7 @@ static void release(void *p)
     fr_newton_matrix_free(&s->nm, &s->cc);
     cholmod_l_free_sparse(&s->W, &s->cc);
     cholmod_l_free_sparse(&s->Weff, &s->cc);
-    free(s->block);
-    free(s->stopped);
-    free(s->next);
+    FR_FREE_ALL(s->block, s->stopped, s->next);
     fr_step_pattern_free(&s->pw);
     fr_step_pattern_free(&s->pweff);
     fr_cholmod_finish(&s->cc);

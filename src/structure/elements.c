@@ -321,10 +321,8 @@ int fricreg_structure_add_elements(fricreg_structure *s, const fricreg_element_t
                                    size_t me, size_t ndof, const double J[], const double params[])
 {
     static const char who[] = "add_elements";
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, who);
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, who);
     if (type == NULL || (me > 0 && (J == NULL || params == NULL)))
         return fr_fail(s, FRICREG_ENULL, "%s: %s is NULL", who,
                        type == NULL ? "type"
@@ -356,10 +354,8 @@ int fricreg_structure_add_elements(fricreg_structure *s, const fricreg_element_t
 
 int fricreg_structure_clear_elements(fricreg_structure *s)
 {
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, "clear_elements");
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, "clear_elements");
     fr_elements_free(s);
     fr_structure_changed(s, FR_CHANGED_MODEL);
     fr_structure_rates_stale(s);

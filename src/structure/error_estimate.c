@@ -370,10 +370,8 @@ int fricreg_structure_set_answer_rtol(fricreg_structure *s, double rtol)
 
 int fricreg_structure_set_error_estimate(fricreg_structure *s, int on)
 {
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, "set_error_estimate");
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, "set_error_estimate");
     if (on != FRICREG_ESTIMATE_OFF && on != FRICREG_ESTIMATE_TWO_COMPANIONS &&
         on != FRICREG_ESTIMATE_ONE_COMPANION)
         return fr_fail(s, FRICREG_EINVAL,
@@ -388,10 +386,8 @@ int fricreg_structure_set_error_estimate(fricreg_structure *s, int on)
 
 int fricreg_structure_set_error_companions(fricreg_structure *s, int which)
 {
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, "set_error_companions");
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, "set_error_companions");
     if (which != FRICREG_COMPANIONS_FINER && which != FRICREG_COMPANIONS_COARSER)
         return fr_fail(s, FRICREG_EINVAL,
                        "set_error_companions: which = %d must be 0 (finer) or 1 (coarser)", which);

@@ -144,7 +144,7 @@ static int start_setter(fricreg_structure *s, size_t me, size_t ns, int dim, siz
                         const char *who)
 {
     if (s->running)
-        return fr_structure_busy(s, who);
+        return fr_structure_refuse(s, who);
     if (ndof != s->n)
         return fr_fail(s, FRICREG_ESIZE, "%s: ndof = %zu, the structure has %zu", who, ndof, s->n);
     if (ns == 0 && me > 0)

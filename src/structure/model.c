@@ -82,10 +82,8 @@ int fr_structure_install(fricreg_structure *s, int which, cholmod_sparse *A, con
 static int set_dense(fricreg_structure *s, int which, const char *who, size_t nrows, size_t ncols,
                      const double A[])
 {
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, who);
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, who);
     int contacts = which == FR_CONTACTS;
     if (A == NULL)
         return fr_fail(s, FRICREG_ENULL, contacts ? "%s: J is NULL" : "%s: the matrix is NULL",
@@ -106,10 +104,8 @@ static int set_compressed(fricreg_structure *s, int which, const char *who, size
                           size_t ncols, int by_columns, int flags, const int64_t ptr[],
                           const int64_t ind[], const double values[])
 {
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, who);
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, who);
     size_t need = which == FR_CONTACTS ? s->m : s->n;
     if (nrows != need || ncols != s->n)
         return fr_fail(s, FRICREG_ESIZE,
@@ -133,10 +129,8 @@ int fricreg_structure_set_matrix(fricreg_structure *s, int which, size_t nrows, 
                                [FRICREG_DAMPING] = FR_DAMPING,
                                [FRICREG_CONTACTS] = FR_CONTACTS};
     const char *who = "set_matrix";
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, who);
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, who);
     if (!(which >= FRICREG_MASS && which <= FRICREG_CONTACTS))
         return fr_fail(s, FRICREG_EINVAL,
                        "%s: which = %d is not a model matrix (FRICREG_MASS, FRICREG_STIFFNESS, "

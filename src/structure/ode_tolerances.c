@@ -77,10 +77,8 @@ void fr_ode_tolerances(const fricreg_structure *s, double rtol, double atol, dou
 
 int fricreg_structure_set_ode_abs_tolerances(fricreg_structure *s, size_t n, const double atol[])
 {
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, "set_ode_abs_tolerances");
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, "set_ode_abs_tolerances");
     size_t dim = state_length(s);
     if (atol == NULL && n != 0)
         return fr_fail(s, FRICREG_ENULL, "set_ode_abs_tolerances: atol is NULL with n = %zu", n);

@@ -7,10 +7,8 @@
 
 int fricreg_structure_step(fricreg_structure *s, double dt)
 {
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, "step");
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, "step");
     fr_estimate_begin(s);
     int status = fr_structure_step_plain(s, dt);
     fr_estimate_follow(s, 0, dt, 0.0, 0.0);
@@ -20,10 +18,8 @@ int fricreg_structure_step(fricreg_structure *s, double dt)
 /* The run's warnings go to the handler at its end, whether or not it failed. */
 int fricreg_structure_run(fricreg_structure *s, double dt, double t_end)
 {
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, "run");
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, "run");
     fr_estimate_begin(s);
     int status = fr_structure_run_plain(s, dt, t_end);
     fr_estimate_follow(s, 0, dt, 0.0, 0.0); /* to where the run ended, failed or stopped */
@@ -34,10 +30,8 @@ int fricreg_structure_run(fricreg_structure *s, double dt, double t_end)
 int fricreg_structure_run_ode(fricreg_structure *s, int integrator, double dt, double rtol,
                               double atol, double t_end)
 {
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, "run_ode");
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, "run_ode");
     fr_estimate_begin(s);
     int status = fr_structure_run_ode_plain(s, integrator, dt, rtol, atol, t_end);
     fr_estimate_follow(s, integrator, dt, rtol, atol);

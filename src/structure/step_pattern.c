@@ -11,6 +11,7 @@
 
 #include "fricreg.h"
 #include "step_pattern.h"
+#include "base/free_all.h"
 
 #define SYM_TOL 1e-12 /* as contact_step.c's dense check */
 #define TRIANGLES (FRICREG_SPARSE_UPPER | FRICREG_SPARSE_LOWER)
@@ -156,10 +157,6 @@ int fr_step_pattern_store(const struct fr_step_pattern *p, cholmod_sparse *S)
 
 void fr_step_pattern_free(struct fr_step_pattern *p)
 {
-    free(p->ptr);
-    free(p->ind);
-    free(p->slot);
-    free(p->upper);
-    free(p->lower);
+    FR_FREE_ALL(p->ptr, p->ind, p->slot, p->upper, p->lower);
     memset(p, 0, sizeof *p);
 }

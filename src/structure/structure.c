@@ -11,6 +11,7 @@
 #include "base/sparse_factor.h"
 #include "law/law.h"
 #include "structure_internal.h"
+#include "base/free_all.h"
 
 /* Sanity bounds: 2^40 degrees of freedom (memory runs out long before), and the context's
  * 2^26 contacts. */
@@ -45,13 +46,8 @@ void fricreg_structure_free(fricreg_structure *s)
     fr_elements_free(s);
     fr_cholmod_finish(&s->cc);
     fricreg_ctx_free(s->ctx);
-    free(s->mun);
-    free(s->stopped);
-    free(s->ground.x);
-    free(s->load.x);
-    free(s->energy.per_contact);
-    free(s->peak);
-    free(s->ode_atol);
+    FR_FREE_ALL(s->mun, s->stopped, s->ground.x, s->load.x, s->energy.per_contact, s->peak,
+                s->ode_atol);
     fricreg_structure_free(s->companion);
     free(s);
 }
@@ -129,10 +125,8 @@ int fricreg_structure_create(size_t ndof, size_t m, fricreg_structure **out)
 
 int fricreg_structure_set_observer(fricreg_structure *s, fricreg_structure_observer fn, void *user)
 {
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, "set_observer");
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, "set_observer");
     s->observer = fn;
     s->observer_user = user;
     return FRICREG_OK;
@@ -140,10 +134,8 @@ int fricreg_structure_set_observer(fricreg_structure *s, fricreg_structure_obser
 
 int fricreg_structure_set_max_steps(fricreg_structure *s, int64_t max_steps)
 {
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, "set_max_steps");
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, "set_max_steps");
     if (max_steps < 0)
         return fr_fail(s, FRICREG_EINVAL,
                        "set_max_steps: max_steps = %lld must be >= 0 (0: no bound)",
@@ -169,10 +161,8 @@ static int all_finite(const double x[], size_t len, size_t *bad)
 
 int fricreg_structure_set_rayleigh(fricreg_structure *s, double a0, double a1)
 {
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, "set_rayleigh");
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, "set_rayleigh");
     if (!isfinite(a0) || !isfinite(a1))
         return fr_fail(s, FRICREG_ENONFINITE, "set_rayleigh: a0 = %g or a1 = %g is not finite", a0,
                        a1);
@@ -194,10 +184,8 @@ static int ctx_failed(fricreg_structure *s, int status)
 
 int fricreg_structure_set_bounds(fricreg_structure *s, size_t m, const double mun[])
 {
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, "set_bounds");
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, "set_bounds");
     int status = fricreg_ctx_set_bounds(s->ctx, m, mun);
     if (status != FRICREG_OK)
         return ctx_failed(s, status);
@@ -208,10 +196,8 @@ int fricreg_structure_set_bounds(fricreg_structure *s, size_t m, const double mu
 
 int fricreg_structure_set_law(fricreg_structure *s, int law, double eps)
 {
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, "set_law");
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, "set_law");
     int status = fricreg_ctx_set_law(s->ctx, law, eps);
     if (status != FRICREG_OK)
         return ctx_failed(s, status);
@@ -234,10 +220,8 @@ static int check_vector(fricreg_structure *s, const char *name, size_t ndof, con
 
 int fricreg_structure_set_influence(fricreg_structure *s, size_t ndof, const double r[])
 {
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, "set_influence");
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, "set_influence");
     int status = check_vector(s, "set_influence", ndof, r);
     if (status != FRICREG_OK)
         return status;
@@ -279,10 +263,8 @@ static int set_record(fricreg_structure *s, const char *name, struct fr_record *
 int fricreg_structure_set_ground_accel(fricreg_structure *s, double t0, double dt_rec, size_t n,
                                        const double ag[])
 {
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, "set_ground_accel");
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, "set_ground_accel");
     /* The step's start keeps the load it began with (a holds the equation there): the
      * record is read at step ends only, so a caller may feed it step by step. */
     int status = set_record(s, "set_ground_accel", &s->ground, t0, dt_rec, n, ag);
@@ -294,10 +276,8 @@ int fricreg_structure_set_ground_accel(fricreg_structure *s, double t0, double d
 int fricreg_structure_set_load(fricreg_structure *s, size_t ndof, const double p[], double t0,
                                double dt_rec, size_t n, const double g[])
 {
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, "set_load");
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, "set_load");
     int status = check_vector(s, "set_load", ndof, p);
     if (status != FRICREG_OK)
         return status;
@@ -312,10 +292,8 @@ int fricreg_structure_set_load(fricreg_structure *s, size_t ndof, const double p
 int fricreg_structure_set_initial(fricreg_structure *s, size_t ndof, const double u0[],
                                   const double v0[])
 {
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, "set_initial");
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, "set_initial");
     int status = check_vector(s, "set_initial", ndof, u0);
     if (status == FRICREG_OK)
         status = check_vector(s, "set_initial", ndof, v0);
@@ -342,10 +320,8 @@ int fricreg_structure_set_initial(fricreg_structure *s, size_t ndof, const doubl
 
 int fricreg_structure_set_newmark(fricreg_structure *s, double beta, double gamma)
 {
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, "set_newmark");
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, "set_newmark");
     if (!isfinite(beta) || !isfinite(gamma))
         return fr_fail(s, FRICREG_ENONFINITE,
                        "set_newmark: beta = %g or gamma = %g is not "
@@ -366,10 +342,8 @@ int fricreg_structure_set_newmark(fricreg_structure *s, double beta, double gamm
 
 int fricreg_structure_set_hht(fricreg_structure *s, double alpha)
 {
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, "set_hht");
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, "set_hht");
     if (!isfinite(alpha))
         return fr_fail(s, FRICREG_ENONFINITE, "set_hht: alpha is not finite");
     if (!(alpha >= -1.0 / 3.0 && alpha <= 0.0))
@@ -384,10 +358,8 @@ int fricreg_structure_set_hht(fricreg_structure *s, double alpha)
 
 int fricreg_structure_set_central_difference(fricreg_structure *s)
 {
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, "set_central_difference");
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, "set_central_difference");
     s->scheme = FR_SCHEME_CENTRAL;
     fr_structure_changed(s, FR_CHANGED_SCHEME);
     return FRICREG_OK;
@@ -395,10 +367,8 @@ int fricreg_structure_set_central_difference(fricreg_structure *s)
 
 int fricreg_structure_set_newton(fricreg_structure *s, double tol, int max_iter)
 {
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, "set_newton");
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, "set_newton");
     if (!isfinite(tol))
         return fr_fail(s, FRICREG_ENONFINITE, "set_newton: tol is not finite");
     if (!(tol > 0.0 && tol < 1.0) || max_iter < 1 || max_iter > 1000)
@@ -414,10 +384,8 @@ int fricreg_structure_set_newton(fricreg_structure *s, double tol, int max_iter)
 
 int fricreg_structure_set_contact_solver(fricreg_structure *s, int solver)
 {
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, "set_contact_solver");
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, "set_contact_solver");
     if (solver != FRICREG_CONTACT_SOLVER_AUTO && solver != FRICREG_CONTACT_SOLVER_DENSE &&
         solver != FRICREG_CONTACT_SOLVER_SPARSE)
         return fr_fail(s, FRICREG_EINVAL,

@@ -36,10 +36,8 @@ static void position(const gsl_spmatrix *S, size_t k, size_t *row, size_t *col)
 static int set_sparse(fricreg_structure *s, int which, const char *who, const gsl_spmatrix *S,
                       size_t nrows, size_t ncols)
 {
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, who);
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, who);
     if (S == NULL)
         return fr_fail(s, FRICREG_ENULL, "%s: the matrix is NULL", who);
     if (S->size1 != nrows || S->size2 != ncols)

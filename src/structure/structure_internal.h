@@ -252,8 +252,9 @@ void fr_ode_tolerances(const fricreg_structure *s, double rtol, double atol, dou
                        double w[]);
 
 /* structure.c */
-/* The refusal of a call `who` made from the observer during a run: FRICREG_EINVAL, recorded. */
-int fr_structure_busy(fricreg_structure *s, const char *who);
+/* The status of a refused call `who`: FRICREG_ENULL for s NULL (nothing recorded), FRICREG_EINVAL
+ * (recorded) for a call made from the observer during a run. */
+int fr_structure_refuse(fricreg_structure *s, const char *who);
 
 /* With a warning handler installed, judges the checks now (fricreg_structure_warning_count),
  * which hands the handler the warnings it has not had since set_initial (warnings.c). */

@@ -22,6 +22,7 @@
 #include "fricreg_sim.h"
 #include "ode/ode_driver.h"
 #include "structure_internal.h"
+#include "base/free_all.h"
 
 #define MAX_GSL_STEPS 2147483648.0
 #define MAX_HALVINGS 10
@@ -276,9 +277,7 @@ int fr_structure_run_ode_plain(fricreg_structure *s, int integrator, double dt, 
     /* per component: the levels, then the weights of rtol (ode_tolerances.c) */
     double *tol = per_component ? malloc(2 * run.dim * sizeof *tol) : NULL;
     if (y == NULL || run.jac_work == NULL || (per_component && tol == NULL)) {
-        free(y);
-        free(run.jac_work);
-        free(tol);
+        FR_FREE_ALL(y, run.jac_work, tol);
         return fr_fail(s, FRICREG_ENOMEM, "run_ode: no memory for a state of %zu", run.dim);
     }
     gsl_odeiv2_system sys = {rhs, jacobian, run.dim, &run};

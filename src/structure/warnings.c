@@ -256,10 +256,8 @@ size_t fricreg_structure_warning_count(fricreg_structure *s)
 int fricreg_structure_set_warning_handler(fricreg_structure *s, fricreg_warning_handler fn,
                                           void *user_data)
 {
-    if (s == NULL)
-        return FRICREG_ENULL;
-    if (s->running)
-        return fr_structure_busy(s, "set_warning_handler");
+    if (s == NULL || s->running)
+        return fr_structure_refuse(s, "set_warning_handler");
     fr_warnings_set_handler(&s->warnings, fn, user_data);
     return FRICREG_OK;
 }
