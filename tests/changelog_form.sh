@@ -1,7 +1,7 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-3.0-or-later
-# CHANGELOG.md's newest section (the first "## [" heading up to the next) stays a changelog a
-# user reads: at most 150 lines, headings and blank lines included, and no entry (a line
+# CHANGELOG.md's newest section with entries (from the first "## [" heading up to the next, or
+# the release below an [Unreleased] left empty by a release) stays a changelog a user reads: at most 150 lines, headings and blank lines included, and no entry (a line
 # starting "- " with its indented continuation lines) longer than three lines. Test names,
 # tolerances and measurements belong in docs/, commit messages and bench/.
 # Usage: changelog_form.sh ROOT
@@ -24,10 +24,10 @@ function close_entry() {
     }
     start = 0
 }
-/^## \[/ { if (inside) exit; inside = 1; head = NR; title = $0 }
+/^## \[/ { if (inside && entries) exit; inside = 1; head = NR; title = $0; lines = 0 }
 !inside { next }
 { lines++ }
-/^- / { close_entry(); start = NR; len = 1; first = words($0); next }
+/^- / { close_entry(); entries++; start = NR; len = 1; first = words($0); next }
 /^[ \t]+[^ \t]/ { if (start) len++; next }
 { close_entry() }
 END {
