@@ -687,8 +687,8 @@ contains
 
   !> How the stability of the next solutions is computed (fricreg_hb_set_stability_method):
   !> FRICREG_HB_STABILITY_AUTO (the default: the exact monodromy where the elements are piecewise
-  !> linear, Hill's method otherwise), _HILL or _MONODROMY. FRICREG_EINVAL for another value.
-  !> Since 1.8.
+  !> linear, condensed onto their dofs where they touch few, Hill's method otherwise), _HILL,
+  !> _MONODROMY or _CONDENSED (since 1.9). FRICREG_EINVAL for another value. Since 1.8.
   function hb_set_stability_method(self, method) result(status)
     class(fricreg_hb_driver), intent(inout) :: self
     integer, intent(in) :: method
@@ -698,8 +698,9 @@ contains
                                                      int(method, c_int)))
   end function hb_set_stability_method
 
-  !> The method that computes the next solution's stability, FRICREG_HB_STABILITY_HILL or
-  !> _MONODROMY (the automatic choice resolved; fricreg_hb_get_stability_method). Since 1.8.
+  !> The method that computes the next solution's stability, FRICREG_HB_STABILITY_HILL,
+  !> _MONODROMY or _CONDENSED (the automatic choice resolved; fricreg_hb_get_stability_method).
+  !> Since 1.8.
   function hb_stability_method(self, method) result(status)
     class(fricreg_hb_driver), intent(inout) :: self
     integer, intent(inout) :: method

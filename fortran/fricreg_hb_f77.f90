@@ -605,7 +605,8 @@ subroutine frhbnc(h, mode, idamp, a0, a1, np, stat)
 end subroutine frhbnc
 
 !> FRHBGM(H, METHOD, STAT): the method that computes the next solution's stability,
-!> FRICREG_HB_STABILITY_HILL or _MONODROMY (fricreg_hb_get_stability_method). Since 1.8.
+!> FRICREG_HB_STABILITY_HILL, _MONODROMY or _CONDENSED (fricreg_hb_get_stability_method).
+!> Since 1.8.
 subroutine frhbgm(h, method, stat)
   use fricreg_c
   use fricreg_sim_c

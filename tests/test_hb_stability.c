@@ -849,7 +849,7 @@ START_TEST(method_choice)
     ck_assert_int_eq(fricreg_hb_set_stability(hb, 1), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_get_stability_method(hb, &method), FRICREG_OK);
     ck_assert_int_eq(method, FRICREG_HB_STABILITY_HILL);
-    ck_assert_int_eq(fricreg_hb_set_stability_method(hb, 3), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_hb_set_stability_method(hb, 4), FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_hb_set_stability_method(hb, -1), FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_hb_set_stability_method(NULL, 0), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_hb_get_stability_method(NULL, &method), FRICREG_ENULL);

@@ -11,7 +11,8 @@ enum fricreg_hb_nma_damping { FRICREG_HB_NMA_DAMPING_MATRIX = 0, FRICREG_HB_NMA_
 enum fricreg_hb_stability_method {
     FRICREG_HB_STABILITY_AUTO = 0,
     FRICREG_HB_STABILITY_HILL = 1,
-    FRICREG_HB_STABILITY_MONODROMY = 2
+    FRICREG_HB_STABILITY_MONODROMY = 2,
+    FRICREG_HB_STABILITY_CONDENSED = 3
 };
 enum fricreg_hb_bifurcation_type {
     FRICREG_HB_TP = 1,

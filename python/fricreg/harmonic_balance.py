@@ -23,7 +23,8 @@ __all__ = ["HarmonicBalance", "Solution", "Response", "Bifurcation", "Backbone",
 
 _STABILITY_METHODS = {"auto": lib.FRICREG_HB_STABILITY_AUTO,
                       "hill": lib.FRICREG_HB_STABILITY_HILL,
-                      "monodromy": lib.FRICREG_HB_STABILITY_MONODROMY}
+                      "monodromy": lib.FRICREG_HB_STABILITY_MONODROMY,
+                      "condensed": lib.FRICREG_HB_STABILITY_CONDENSED}
 _DAMPING = {"matrix": lib.FRICREG_HB_NMA_DAMPING_MATRIX,
             "modal": lib.FRICREG_HB_NMA_DAMPING_MODAL}
 _BIFURCATIONS = {lib.FRICREG_HB_TP: "TP", lib.FRICREG_HB_BP: "BP", lib.FRICREG_HB_PD: "PD",
@@ -240,10 +241,13 @@ class HarmonicBalance:
         Parameters
         ----------
         enable : bool
-        method : {"auto", "hill", "monodromy"}
+        method : {"auto", "hill", "monodromy", "condensed"}
             ``"monodromy"``: the orbit's exact monodromy (1-D Jenkins and Iwan elements, with or
-            without lift-off); ``"hill"``: Hill's method, any element, its verdict only;
-            ``"auto"``: the monodromy where the elements allow it, up to order 512.
+            without lift-off); ``"condensed"``: the same on the model condensed onto the dofs
+            the elements touch (Craig-Bampton, the interior modes in band); ``"hill"``: Hill's
+            method, any element, its verdict only; ``"auto"``: the condensed monodromy where
+            the elements touch at most a quarter of 32 to 1024 dofs, else the monodromy up to
+            order 512, else Hill's.
 
         Raises
         ------

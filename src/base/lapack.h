@@ -42,8 +42,13 @@ void zgetrf_(const int *m, const int *n, double *a, const int *lda, int *ipiv, i
 void zgetrs_(const char *trans, const int *n, const int *nrhs, const double *a, const int *lda,
              const int *ipiv, double *b, const int *ldb, int *info, size_t trans_len);
 void dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info, size_t uplo_len);
+void dpotrs_(const char *uplo, const int *n, const int *nrhs, const double *a, const int *lda,
+             double *b, const int *ldb, int *info, size_t uplo_len);
 
 /* LAPACK: QR and eigenvalues */
+void dsygvd_(const int *itype, const char *jobz, const char *uplo, const int *n, double *a,
+             const int *lda, double *b, const int *ldb, double *w, double *work, const int *lwork,
+             int *iwork, const int *liwork, int *info, size_t jobz_len, size_t uplo_len);
 void dtpqrt_(const int *m, const int *n, const int *l, const int *nb, double *a, const int *lda,
              double *b, const int *ldb, double *t, const int *ldt, double *work, int *info);
 void dgeev_(const char *jobvl, const char *jobvr, const int *n, double *a, const int *lda,

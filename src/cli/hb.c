@@ -34,6 +34,7 @@ static const struct cli_word hb_parameters[] = {{"omega", HB_IN_OMEGA},
 static const struct cli_word hb_stabilities[] = {{"auto", FRICREG_HB_STABILITY_AUTO},
                                                  {"hill", FRICREG_HB_STABILITY_HILL},
                                                  {"monodromy", FRICREG_HB_STABILITY_MONODROMY},
+                                                 {"condensed", FRICREG_HB_STABILITY_CONDENSED},
                                                  {"off", HB_STABILITY_OFF},
                                                  {NULL, 0}};
 
@@ -147,10 +148,11 @@ static size_t hb_table(struct hb_options *o, struct cli_option table[])
         {"--stability", CLI_CHOICE, .slot = &o->stability, .words = hb_stabilities,
          .help = "each point's stability: by the exact monodromy of the orbit (1-D Jenkins and "
                  "Iwan elements, with or without lift-off, all of one kind: a mix of --elements "
-                 "sets is refused), by Hill's method (any element, ndof "
-                 "(2H + 1) "
-                 "<= 1024), auto (the monodromy where the elements allow it, else Hill's where "
-                 "the size allows it, else none), or off"},
+                 "sets is refused), condensed (the same on the model condensed onto the dofs "
+                 "the elements touch), by Hill's method (any element, ndof (2H + 1) <= 1024), "
+                 "auto (the condensed monodromy where the elements touch at most a quarter of "
+                 "32 to 1024 dofs, else the monodromy up to order 512, else Hill's where the "
+                 "size allows it, else none), or off"},
         {"--output", CLI_CHOICE, .slot = &o->output, .words = hb_outputs,
          .help = "a JSON summary (each dof's peak RMS and its frequency, the estimate of its "
                  "error from truncating at H harmonics at the largest stored point, by a solve "
@@ -380,7 +382,7 @@ static int set_stability(fricreg_hb *hb, const struct hb_options *o, size_t n)
     return 0;
 }
 
-/* The stability's method as the summary names it: "monodromy", "hill" or "off". */
+/* The stability's method as the summary names it: "monodromy", "condensed", "hill" or "off". */
 static const char *stability_name(fricreg_hb *hb)
 {
     int stable = 0, method = 0;
@@ -388,7 +390,9 @@ static const char *stability_name(fricreg_hb *hb)
     if (fricreg_hb_point_stability(hb, FRICREG_HB_SOLUTION, &stable, &mu) != FRICREG_OK ||
         fricreg_hb_get_stability_method(hb, &method) != FRICREG_OK)
         return "off";
-    return method == FRICREG_HB_STABILITY_MONODROMY ? "monodromy" : "hill";
+    if (method == FRICREG_HB_STABILITY_HILL)
+        return "hill";
+    return method == FRICREG_HB_STABILITY_MONODROMY ? "monodromy" : "condensed";
 }
 
 static void write_summary(fricreg_hb *hb, FILE *out, const struct hb_options *o,
@@ -442,7 +446,8 @@ static int run_hb(fricreg_hb *hb, struct hb_options *o, const struct hb_model *m
     double cpu = (double)(clock() - start) / CLOCKS_PER_SEC;
     /* the monodromy's refusal of the elements (a mix, the 3-D contact) comes with the first
      * point's stability: the library's reason, as a bad option */
-    if (status == FRICREG_EINVAL && o->stability == FRICREG_HB_STABILITY_MONODROMY)
+    if (status == FRICREG_EINVAL && (o->stability == FRICREG_HB_STABILITY_MONODROMY ||
+                                     o->stability == FRICREG_HB_STABILITY_CONDENSED))
         return cli_usage_error("--stability", fricreg_hb_errmsg(hb));
     if (status != FRICREG_OK) {
         char progress[128];

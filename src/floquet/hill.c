@@ -153,7 +153,7 @@ static int companion(fricreg_hb *hb, const char *fn)
     size_t n = hb->n, nc = hb->nc, N = n * nc;
     gsl_matrix *A = hb->hill->A;
     /* hill_mlu holds M (linear_blocks) */
-    int status = fr_hb_mass_lu(hb, fn, "Hill's method", hb->hill->mlu, hb->hill->piv);
+    int status = fr_hb_mass_lu(hb, fn, "Hill's method", hb->n, hb->hill->mlu, hb->hill->piv);
     if (status != FRICREG_OK)
         return status;
     for (size_t j = 0; j < 2 * N; j++)

@@ -35,15 +35,18 @@
 #include "expm.h"
 #include "joint/aft_slips.h"
 #include "monodromy.h"
+#include "reduction.h"
 #include "switches.h"
 #include "hb/lu.h"
 #include "base/free_all.h"
 
-/* The workspace, sized for n dofs, m rows of J, S sliders and H harmonics; column-major
- * matrices of the order P = 2n + S at most. */
+/* The workspace, sized for a model of order n (the driver's dofs, or the condensed model's), m
+ * rows of J, S sliders and H harmonics; column-major matrices of the order P = 2n + S at most;
+ * J, the model's, row-major [m n]. */
 struct fr_hb_mono {
     size_t n, m, S, P;
     int H;
+    const double *J;
     double *Mlu, *MiK, *MiC, *MiJ; /* [n n] each, MiJ [n m]: M's LU, M^-1 K, M^-1 C, M^-1 J^T */
     double *A, *E, *Phi, *T, *expm_work; /* [P P] each, expm's [6 P P] */
     double *eig_work, *wr, *wi;          /* [lwork], [P], [P] */
@@ -63,9 +66,10 @@ void fr_hb_monodromy_free(fricreg_hb *hb)
     hb->mono = NULL;
 }
 
-int fr_hb_monodromy_reserve(fricreg_hb *hb, const char *fn)
+/* The workspace for a model of order n: FRICREG_OK or FRICREG_ENOMEM (recorded, with fn). */
+static int reserve_order(fricreg_hb *hb, const char *fn, size_t n)
 {
-    size_t n = hb->n, m = hb->m, S = hb->nsl, P = 2 * n + S;
+    size_t m = hb->m, S = hb->nsl, P = 2 * n + S;
     struct fr_hb_mono *w = hb->mono;
     if (w != NULL && w->n == n && w->m == m && w->S == S && w->H == hb->H)
         return FRICREG_OK;
@@ -99,39 +103,39 @@ int fr_hb_monodromy_reserve(fricreg_hb *hb, const char *fn)
     return FRICREG_OK;
 }
 
+int fr_hb_monodromy_reserve(fricreg_hb *hb, const char *fn)
+{
+    return reserve_order(hb, fn, hb->n);
+}
+
 int fr_hb_monodromy_applies(const fricreg_hb *hb)
 {
     /* elements all of one kind (rpe), of as many sliders each (ns): not a mix */
     return hb->have_elements && (hb->rpe == 1 || hb->rpe == 2) && hb->ns > 0;
 }
 
-/* The model's M, C (or Rayleigh's a0 M + a1 K) and K into Mlu, MiC, MiK, dense (symmetric:
- * row- and column-major alike), from the dense arrays or the sparse pattern of D_h. */
-static void dense_model(const fricreg_hb *hb, struct fr_hb_mono *w)
+/* The model's M, C and K into Mlu, MiC, MiK: the driver's, dense (lm NULL), or the condensed
+ * model's. */
+static void model_matrices(const fricreg_hb *hb, struct fr_hb_mono *w,
+                           const struct fr_hb_linear_model *lm)
 {
-    size_t n = hb->n;
-    if (!hb->sparse) {
-        memcpy(w->Mlu, hb->M, n * n * sizeof(double));
-        memcpy(w->MiK, hb->K, n * n * sizeof(double));
-        for (size_t i = 0; i < n * n; i++)
-            w->MiC[i] = hb->rayleigh ? hb->a0 * hb->M[i] + hb->a1 * hb->K[i] : hb->C[i];
+    if (lm == NULL) {
+        fr_hb_dense_model(hb, w->Mlu, w->MiC, w->MiK);
+        w->J = hb->J;
         return;
     }
-    memset(w->Mlu, 0, 3 * n * n * sizeof(double));
-    for (size_t l = 0; l < n; l++)
-        for (int64_t p = hb->Dp[l]; p < hb->Dp[l + 1]; p++) {
-            size_t i = (size_t)hb->Di[p] + l * n;
-            w->Mlu[i] = hb->vM[p];
-            w->MiK[i] = hb->vK[p];
-            w->MiC[i] = hb->rayleigh ? hb->a0 * hb->vM[p] + hb->a1 * hb->vK[p] : hb->vC[p];
-        }
+    size_t bytes = lm->n * lm->n * sizeof(double);
+    memcpy(w->Mlu, lm->M, bytes);
+    memcpy(w->MiK, lm->K, bytes);
+    memcpy(w->MiC, lm->C, bytes);
+    w->J = lm->J;
 }
 
 /* M^-1 K, M^-1 C in place and M^-1 J^T into MiJ, by M's LU (its pivots checked as Hill's). */
 static int mass_solves(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w)
 {
-    size_t n = hb->n;
-    int status = fr_hb_mass_lu(hb, fn, "the monodromy", w->Mlu, w->piv);
+    size_t n = w->n;
+    int status = fr_hb_mass_lu(hb, fn, "the monodromy", n, w->Mlu, w->piv);
     if (status != FRICREG_OK)
         return status;
     for (size_t l = 0; l < n; l++) { /* columns; K, C symmetric */
@@ -139,18 +143,18 @@ static int mass_solves(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w)
         fr_hb_lu_solve_factored(w->Mlu, n, w->piv, w->MiC + l * n);
     }
     for (size_t r = 0; r < hb->m; r++) {
-        memcpy(w->MiJ + r * n, hb->J + r * n, n * sizeof(double));
+        memcpy(w->MiJ + r * n, w->J + r * n, n * sizeof(double));
         fr_hb_lu_solve_factored(w->Mlu, n, w->piv, w->MiJ + r * n);
     }
     return FRICREG_OK;
 }
 
 /* out[n n] −= k (M^-1 J_a^T) J_b, rows a and b of J (the spring k J_a^T J_b in M^-1's image). */
-static void sub_rank_one(const fricreg_hb *hb, const struct fr_hb_mono *w, size_t a, size_t b,
-                         double k, double *out, size_t ld)
+static void sub_rank_one(const struct fr_hb_mono *w, size_t a, size_t b, double k, double *out,
+                         size_t ld)
 {
-    size_t n = hb->n;
-    const double *Jb = hb->J + b * n, *ma = w->MiJ + a * n;
+    size_t n = w->n;
+    const double *Jb = w->J + b * n, *ma = w->MiJ + a * n;
     for (size_t l = 0; l < n; l++)
         if (Jb[l] != 0.0)
             for (size_t i = 0; i < n; i++)
@@ -158,10 +162,11 @@ static void sub_rank_one(const fricreg_hb *hb, const struct fr_hb_mono *w, size_
 }
 
 /* The row J_t − r J_n of element e (r = 0 or no normal row: J_t) into out[n]. */
-static void slider_row(const fricreg_hb *hb, size_t e, double r, double *out)
+static void slider_row(const fricreg_hb *hb, const struct fr_hb_mono *w, size_t e, double r,
+                       double *out)
 {
-    size_t n = hb->n, rpe = hb->rpe;
-    const double *Jt = hb->J + rpe * e * n;
+    size_t n = w->n, rpe = hb->rpe;
+    const double *Jt = w->J + rpe * e * n;
     for (size_t l = 0; l < n; l++)
         out[l] = Jt[l] - (rpe == 2 && r != 0.0 ? r * Jt[n + l] : 0.0);
 }
@@ -171,7 +176,7 @@ static void slider_row(const fricreg_hb *hb, size_t e, double r, double *out)
 static void piece_matrix(const fricreg_hb *hb, struct fr_hb_mono *w, double dt)
 {
     const struct fr_hb_schedule *sc = &w->sc;
-    size_t n = hb->n, S = sc->S, P = 2 * n + S, rpe = hb->rpe;
+    size_t n = w->n, S = sc->S, P = 2 * n + S, rpe = hb->rpe;
     double *A = w->A, *row = w->wr; /* wr: free until the eigenvalues */
     memset(A, 0, P * P * sizeof *A);
     for (size_t i = 0; i < n; i++)
@@ -183,22 +188,22 @@ static void piece_matrix(const fricreg_hb *hb, struct fr_hb_mono *w, double dt)
         }
     for (size_t e = 0; e < hb->me; e++) /* the closed contacts' normal springs */
         if (rpe == 2 && sc->closed[e])
-            sub_rank_one(hb, w, 2 * e + 1, 2 * e + 1, sc->kn[e], A + n, P);
+            sub_rank_one(w, 2 * e + 1, 2 * e + 1, sc->kn[e], A + n, P);
     for (size_t j = 0; j < S; j++) {
         size_t e = sc->element[j], t = rpe * e;
         double k = sc->k[j];
         if (!sc->closed[e] || sc->mode[j] == FR_AFT_OPEN)
             continue;
         if (sc->mode[j] == FR_AFT_STICK) { /* k (J_t δx − δw) */
-            sub_rank_one(hb, w, t, t, k, A + n, P);
+            sub_rank_one(w, t, t, k, A + n, P);
             for (size_t i = 0; i < n; i++)
                 A[(2 * n + j) * P + n + i] = k * w->MiJ[t * n + i];
             continue;
         }
         double d = sc->dir[j], c = sc->c[j]; /* slip: d mu kn J_n δx, the offset following */
         if (c != 0.0)
-            sub_rank_one(hb, w, t, t + 1, d * c, A + n, P);
-        slider_row(hb, e, d * c / k, row);
+            sub_rank_one(w, t, t + 1, d * c, A + n, P);
+        slider_row(hb, w, e, d * c / k, row);
         for (size_t l = 0; l < n; l++)
             A[(n + l) * P + 2 * n + j] = row[l];
     }
@@ -209,7 +214,7 @@ static void piece_matrix(const fricreg_hb *hb, struct fr_hb_mono *w, double dt)
 /* Φ = e^{dt A} Φ over a piece of the period. */
 static int advance(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w, double dt)
 {
-    size_t P = 2 * hb->n + w->sc.S;
+    size_t P = 2 * w->n + w->sc.S;
     piece_matrix(hb, w, dt);
     int info = fr_hb_expm(w->A, P, w->E, w->expm_work, w->piv);
     if (info != 0)
@@ -232,13 +237,13 @@ static void apply(const fricreg_hb *hb, struct fr_hb_mono *w, const struct fr_hb
         sc->closed[s->index] = s->mode;
         return;
     }
-    size_t j = s->index, n = hb->n, P = 2 * n + sc->S;
+    size_t j = s->index, n = w->n, P = 2 * n + sc->S;
     sc->mode[j] = s->mode;
     sc->dir[j] = s->dir;
     if (s->reset == FR_AFT_KEEP)
         return;
     double r = s->reset == FR_AFT_TOUCHDOWN ? s->ratio : s->dir * sc->c[j] / sc->k[j], *row = w->wr;
-    slider_row(hb, sc->element[j], r, row);
+    slider_row(hb, w, sc->element[j], r, row);
     for (size_t c = 0; c < P; c++) {
         double v = 0.0;
         for (size_t l = 0; l < n; l++)
@@ -251,7 +256,7 @@ static void apply(const fricreg_hb *hb, struct fr_hb_mono *w, const struct fr_hb
 static int monodromy_matrix(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w, double omega)
 {
     const struct fr_hb_schedule *sc = &w->sc;
-    size_t P = 2 * hb->n + sc->S;
+    size_t P = 2 * w->n + sc->S;
     memset(w->Phi, 0, P * P * sizeof(double));
     for (size_t i = 0; i < P; i++)
         w->Phi[i * P + i] = 1.0;
@@ -268,12 +273,13 @@ static int monodromy_matrix(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w
     return FRICREG_OK;
 }
 
-/* The 2n multipliers of Φ [P P] (destroyed) as exponents into out[2 + 4n], with the verdict and
- * the largest |μ| in out[0], out[1]: the S smallest |μ|, the sliders' zeros, dropped. */
+/* The 2n multipliers of Φ [P P] (destroyed) as exponents into out[2 + 4n], n the model's order,
+ * with the verdict and the largest |μ| in out[0], out[1]: the S smallest |μ|, the sliders'
+ * zeros, dropped; and after them the condensed model's truncated modes' (reduced). */
 static int multipliers(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w, double omega,
-                       double *out)
+                       int reduced, double *out)
 {
-    size_t S = w->sc.S, P = 2 * hb->n + S;
+    size_t S = w->sc.S, P = 2 * w->n + S;
     for (size_t i = 0; i < P * P; i++)
         if (!isfinite(w->Phi[i]))
             return fr_fail(hb, FRICREG_ENONFINITE,
@@ -302,26 +308,32 @@ static int multipliers(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w, dou
         exps[2 * kept + 1] = atan2(w->wi[i], w->wr[i]) / T;
         kept++;
     }
+    size_t left_out = reduced ? fr_hb_reduction_truncated(hb, omega, exps + 2 * kept) : 0;
+    for (size_t i = kept; i < kept + left_out; i++)
+        top = fmax(top, exp(exps[2 * i] * T));
     out[0] = log(top) <= FR_HB_STABLE_TOL ? 1.0 : 0.0;
     out[1] = top;
     return FRICREG_OK;
 }
 
-int fr_hb_monodromy(fricreg_hb *hb, const char *fn, double omega, double *out)
+int fr_hb_monodromy(fricreg_hb *hb, const char *fn, double omega, int condensed, double *out)
 {
-    int status = fr_hb_monodromy_reserve(hb, fn);
+    struct fr_hb_linear_model lm;
+    int status = condensed ? fr_hb_reduction_update(hb, fn, omega, &lm) : FRICREG_OK;
+    if (status == FRICREG_OK)
+        status = reserve_order(hb, fn, condensed ? lm.n : hb->n);
     if (status != FRICREG_OK)
         return status;
     struct fr_hb_mono *w = hb->mono;
-    dense_model(hb, w);
+    model_matrices(hb, w, condensed ? &lm : NULL);
     if ((status = mass_solves(hb, fn, w)) != FRICREG_OK ||
         (status = fr_hb_schedule(hb, fn, &w->sc)) != FRICREG_OK)
         return status;
     for (size_t i = 0; i < w->sc.nstuck; i++) { /* the sliders stuck throughout: springs */
         size_t t = hb->rpe * w->sc.stuck_element[i];
-        sub_rank_one(hb, w, t, t, -w->sc.stuck_k[i], w->MiK, hb->n);
+        sub_rank_one(w, t, t, -w->sc.stuck_k[i], w->MiK, w->n);
     }
     if ((status = monodromy_matrix(hb, fn, w, omega)) != FRICREG_OK)
         return status;
-    return multipliers(hb, fn, w, omega, out);
+    return multipliers(hb, fn, w, omega, condensed, out);
 }

@@ -1,28 +1,41 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* stability_method.c — the stability of periodic solutions (fricreg_hb_set_stability,
  * fricreg_hb_set_stability_method): on or off, and by which method, the exact monodromy of
- * the orbit (monodromy.c) where every element is piecewise linear and Hill's method
- * (hill.c) elsewhere, unless chosen; the one entry point of the solves, the points and
- * the bifurcations; the points' stability. */
+ * the orbit (monodromy.c) where every element is piecewise linear, of the model condensed onto
+ * the elements' dofs (reduction.c) where they touch few, and Hill's method (hill.c) elsewhere,
+ * unless chosen; the one entry point of the solves, the points and the bifurcations; the
+ * points' stability. */
 #include <stdlib.h>
 
 #include "monodromy.h"
+#include "reduction.h"
 #include "stability_method.h"
 #include "hb/busy.h"
+
+/* The condensed model pays where the elements touch at most a quarter of the dofs of a model
+ * of some size (its order is theirs plus the interior modes in band), up to a size whose dense
+ * modes, computed once, take seconds (O(ndof³)). */
+#define CONDENSED_MIN_DOFS 32
+#define CONDENSED_AUTO_MAX_DOFS 1024
 
 int fr_hb_stability_in_force(const fricreg_hb *hb)
 {
     if (hb->stability_method != FRICREG_HB_STABILITY_AUTO)
         return hb->stability_method;
+    if (!fr_hb_monodromy_applies(hb))
+        return FRICREG_HB_STABILITY_HILL;
+    if (hb->n >= CONDENSED_MIN_DOFS && hb->n <= CONDENSED_AUTO_MAX_DOFS &&
+        4 * fr_hb_boundary_dofs(hb) <= hb->n)
+        return FRICREG_HB_STABILITY_CONDENSED;
     /* the monodromy is dense in 2n + sliders: past its bound, Hill's (dense in n (2H + 1)) */
-    int small = 2 * hb->n + hb->nsl <= FRICREG_HB_MAX_MONODROMY;
-    return fr_hb_monodromy_applies(hb) && small ? FRICREG_HB_STABILITY_MONODROMY
-                                                : FRICREG_HB_STABILITY_HILL;
+    return 2 * hb->n + hb->nsl <= FRICREG_HB_MAX_MONODROMY ? FRICREG_HB_STABILITY_MONODROMY
+                                                           : FRICREG_HB_STABILITY_HILL;
 }
 
 int fr_hb_stability(fricreg_hb *hb, const char *fn, double omega, double *out)
 {
-    if (fr_hb_stability_in_force(hb) == FRICREG_HB_STABILITY_HILL)
+    int method = fr_hb_stability_in_force(hb);
+    if (method == FRICREG_HB_STABILITY_HILL)
         return fr_hb_hill(hb, fn, omega, out);
     if (!fr_hb_monodromy_applies(hb))
         return fr_fail(hb, FRICREG_EINVAL,
@@ -31,13 +44,14 @@ int fr_hb_stability(fricreg_hb *hb, const char *fn, double omega, double *out)
                        "are not (a mix, or 3-D contact elements): choose "
                        "FRICREG_HB_STABILITY_HILL or _AUTO",
                        fn);
-    return fr_hb_monodromy(hb, fn, omega, out);
+    return fr_hb_monodromy(hb, fn, omega, method == FRICREG_HB_STABILITY_CONDENSED, out);
 }
 
 void fr_hb_stability_free(fricreg_hb *hb)
 {
     fr_hb_hill_free(hb);
     fr_hb_monodromy_free(hb);
+    fr_hb_reduction_free(hb);
     free(hb->xsol);
     hb->xsol = hb->hill_x = NULL;
 }
@@ -63,16 +77,19 @@ int fricreg_hb_set_stability(fricreg_hb *hb, int enable)
         return FRICREG_OK;
     if (enable) {
         /* the last solution's and a trial point's, and the workspace of the method in force:
-         * the solves then allocate nothing unless the elements change the method */
+         * the solves then allocate nothing unless the elements change the method (the
+         * condensed method's, whose order depends on Ω, is made and grown by the solves) */
         size_t xw = 4 + 4 * hb->n;
         if ((hb->xsol = malloc(2 * xw * sizeof(double))) == NULL)
             return fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for the stability of %zu dofs", fn,
                            hb->n);
         hb->hill_x = hb->xsol + xw;
         hb->release[FR_HB_PART_STABILITY] = fr_hb_stability_free;
-        int status = fr_hb_stability_in_force(hb) == FRICREG_HB_STABILITY_HILL
-                         ? fr_hb_hill_reserve(hb, fn)
-                         : fr_hb_monodromy_reserve(hb, fn);
+        int method = fr_hb_stability_in_force(hb), status = FRICREG_OK;
+        if (method == FRICREG_HB_STABILITY_HILL)
+            status = fr_hb_hill_reserve(hb, fn);
+        else if (method == FRICREG_HB_STABILITY_MONODROMY)
+            status = fr_hb_monodromy_reserve(hb, fn);
         if (status != FRICREG_OK) {
             fr_hb_stability_free(hb);
             return status;
@@ -95,10 +112,10 @@ int fricreg_hb_set_stability_method(fricreg_hb *hb, int method)
     if (hb == NULL || hb->busy)
         return fr_hb_refuse(hb, fn);
     if (method != FRICREG_HB_STABILITY_AUTO && method != FRICREG_HB_STABILITY_HILL &&
-        method != FRICREG_HB_STABILITY_MONODROMY)
+        method != FRICREG_HB_STABILITY_MONODROMY && method != FRICREG_HB_STABILITY_CONDENSED)
         return fr_fail(hb, FRICREG_EINVAL,
                        "%s: method = %d is none of FRICREG_HB_STABILITY_AUTO (0), _HILL (1), "
-                       "_MONODROMY (2)",
+                       "_MONODROMY (2), _CONDENSED (3)",
                        fn, method);
     hb->stability_method = method;
     return FRICREG_OK;

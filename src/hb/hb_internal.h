@@ -26,10 +26,11 @@
  * iteration bound ending it). */
 #define FR_HB_HALVINGS 10
 
-struct fr_hb_lu;     /* sparse.c: one harmonic's LU factor */
-struct fr_hb_hill;   /* floquet/hill.c: Hill's matrices */
-struct fr_hb_mono;   /* floquet/monodromy.c: the exact monodromy's workspace */
-struct fr_aft_march; /* joint/aft_march.h: the march's workspace */
+struct fr_hb_lu;        /* sparse.c: one harmonic's LU factor */
+struct fr_hb_hill;      /* floquet/hill.c: Hill's matrices */
+struct fr_hb_mono;      /* floquet/monodromy.c: the exact monodromy's workspace */
+struct fr_hb_reduction; /* floquet/reduction.c: the condensed stability's reduced model */
+struct fr_aft_march;    /* joint/aft_march.h: the march's workspace */
 
 /* The parts of the driver that modules above it own (its release table). */
 enum fr_hb_part { FR_HB_PART_STABILITY, FR_HB_PART_NMA, FR_HB_PARTS };
@@ -168,6 +169,8 @@ struct fricreg_hb {
      * monodromy (floquet/monodromy.c) with its workspace, grown at the first solution that needs more */
     int stability_method;
     struct fr_hb_mono *mono;
+    struct fr_hb_reduction *reduction; /* the condensed method's, built for model_serial */
+    unsigned long model_serial;        /* counts the model's changes (fr_hb_invalidate) */
 
     /* the continuation's points: [npts (1 + n)], Ω then the n RMS values; each point's
      * unknowns (q, then Ω) in qpts [npts (nq + 1)], for fricreg_hb_peak; the branch's scales,

@@ -42,9 +42,9 @@ void fr_hb_zlu_solve_factored(const double *LU, size_t n, const int *piv, double
     zgetrs_("T", &order, &one, LU, &order, piv, x, &order, &info, 1);
 }
 
-int fr_hb_mass_lu(fricreg_hb *hb, const char *fn, const char *method, double *Mlu, int *piv)
+int fr_hb_mass_lu(fricreg_hb *hb, const char *fn, const char *method, size_t n, double *Mlu,
+                  int *piv)
 {
-    size_t n = hb->n;
     double mmax = 0.0;
     for (size_t i = 0; i < n * n; i++)
         mmax = fmax(mmax, fabs(Mlu[i]));

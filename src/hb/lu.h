@@ -14,9 +14,10 @@ void fr_hb_lu_factor(double *A, size_t n, int *piv);
 void fr_hb_lu_solve_factored(const double *LU, size_t n, const int *piv, double *x);
 void fr_hb_zlu_factor(double *A, size_t n, int *piv);
 void fr_hb_zlu_solve_factored(const double *LU, size_t n, const int *piv, double *x);
-/* The stability's M^-1 (lu.c): Mlu[n n] holding M factored in place into piv[n], every pivot
- * above 1e-14 of M's largest entry; else FRICREG_ESINGULAR, the message naming the method that
- * needs it. */
-int fr_hb_mass_lu(fricreg_hb *hb, const char *fn, const char *method, double *Mlu, int *piv);
+/* The stability's M^-1 (lu.c): Mlu[n n] holding a mass matrix (the driver's, or a reduced one)
+ * factored in place into piv[n], every pivot above 1e-14 of M's largest entry; else
+ * FRICREG_ESINGULAR, the message naming the method that needs it. */
+int fr_hb_mass_lu(fricreg_hb *hb, const char *fn, const char *method, size_t n, double *Mlu,
+                  int *piv);
 
 #endif

@@ -19,6 +19,7 @@ void fr_hb_invalidate(fricreg_hb *hb)
     hb->have_solution = 0;
     hb->have_branch = 0;
     hb->have_backbone = 0;
+    hb->model_serial++;
 }
 
 int fr_hb_check_ndof(fricreg_hb *hb, const char *fn, size_t ndof)

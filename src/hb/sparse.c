@@ -187,6 +187,7 @@ static int install(fricreg_hb *hb, const char *fn, cholmod_sparse *X[3])
     hb->have_solution = 0;
     hb->have_branch = 0;
     hb->have_backbone = 0;
+    hb->model_serial++;
     return FRICREG_OK;
 }
 
