@@ -90,6 +90,22 @@ def test_chain_sweep_with_stability_equals_the_c_library():
     assert 0.76 < peak_omega < 1.7 and peak_rms >= r.rms[:, 1].max()
 
 
+def test_condensed_stability_is_the_c_librarys_by_name():
+    # "condensed" names FRICREG_HB_STABILITY_CONDENSED; on the 3-dof chain (one dof no element
+    # touches, kept below 20 H Omega) its multipliers are the whole model's; the C library's
+    # tests/test_hb_condensed.c checks larger models
+    hb = chain()
+    hb.set_stability(True, "condensed")
+    out = ffi.new("int *")
+    assert lib.fricreg_hb_get_stability_method(hb._hb, out) == 0
+    assert out[0] == lib.FRICREG_HB_STABILITY_CONDENSED
+    condensed = hb.solve(1.2)
+    hb.set_stability(True, "monodromy")
+    whole = hb.solve(1.2, guess=condensed.q)
+    assert condensed.stable == whole.stable
+    assert abs(condensed.mu_max - whole.mu_max) <= 1e-9
+
+
 def test_stuck_response_is_linear():
     # one dof, m = 1, c = 0.1, k = 3 and a stuck Jenkins element kt = 1 (examples/hb_frf.c):
     # |X| = F / |k + kt - m Ω² + i c Ω| = 0.1 / |3 + 0.1 i| at Ω = 1
