@@ -243,8 +243,10 @@ int fr_hb_reduction_update(fricreg_hb *hb, const char *fn, double omega,
                            struct fr_hb_linear_model *out)
 {
     struct fr_hb_reduction *r = hb->reduction;
-    if (r != NULL && (r->serial != hb->model_serial || r->n != hb->n || r->m != hb->m))
-        fr_hb_reduction_free(hb), r = NULL;
+    if (r != NULL && (r->serial != hb->model_serial || r->n != hb->n || r->m != hb->m)) {
+        fr_hb_reduction_free(hb); /* built for another model */
+        r = NULL;
+    }
     if (r == NULL) {
         size_t nb = fr_hb_boundary_dofs(hb);
         if (hb->n > FR_HB_REDUCTION_MAX_DOFS)
