@@ -62,6 +62,7 @@ module fricreg_hb_m
     procedure :: set_stability_method => hb_set_stability_method
     procedure :: stability_method => hb_stability_method
     procedure :: stability => hb_stability
+    procedure :: exponents => hb_exponents
     procedure :: truncation_error => hb_truncation_error
     procedure :: bifurcations => hb_bifurcations
     procedure :: bifurcation => hb_bifurcation
@@ -731,6 +732,25 @@ contains
     status = self%record(fricreg_hb_point_stability(self%ptr, idx, flag, mu_max))
     if (status == FRICREG_OK) stable = flag /= 0
   end function hb_stability
+
+  !> The Floquet exponents of point k (1 <= k <= points()), or with k = 0 of the last solution
+  !> (fricreg_hb_point_exponents): exponents(2, 2 ndof), (Re, Im) of each in rad/s, the
+  !> multipliers exp(2 pi lambda / Omega). FRICREG_EINVAL for stability off, k out of range or
+  !> no solution; FRICREG_ESIZE.
+  function hb_exponents(self, k, exponents) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    integer, intent(in) :: k
+    real(c_double), intent(inout), contiguous :: exponents(:, :)
+    integer(c_int) :: status
+    integer(c_size_t) :: idx
+    status = self%hb_shape('point_exponents', 'exponents', exponents, 2_c_size_t, 2 * self%n)
+    if (status == FRICREG_OK .and. k < 0) status = self%fail(FRICREG_EINVAL, &
+      'point_exponents: k must be >= 0 (0: the last solution)')
+    if (status /= FRICREG_OK) return
+    idx = -1_c_size_t ! FRICREG_HB_SOLUTION, (size_t)-1
+    if (k > 0) idx = as_size(k - 1)
+    status = self%record(fricreg_hb_point_exponents(self%ptr, idx, 2 * self%n, exponents))
+  end function hb_exponents
 
   !> The estimate of each dof's error from truncating at H harmonics, rms_error(ndof), and of
   !> its fundamental's amplitude, amplitude_error(ndof) (optional), at point k (1 <= k <=

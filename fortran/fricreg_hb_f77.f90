@@ -40,6 +40,7 @@
 !   FRHBSM(H, METHOD, STAT)                           _set_stability_method
 !   FRHBGM(H, METHOD, STAT)                           _get_stability_method
 !   FRHBSB(H, K, ISTAB, MUMAX, STAT)                  _point_stability (K from 1; 0: solution)
+!   FRHBEX(H, K, NEXP, EXPS, STAT)                    _point_exponents (K from 1; 0: solution)
 !   FRHBBN(H, NB, STAT)                               _bifurcations
 !   FRHBBF(H, I, ITYPE, OMEGA, K, NDOF, RMS, STAT)    _bifurcation (I, K from 1)
 !   FRHBNM(H, MODE, IDAMP, A0, A1, NP, STAT)          _nma (MODE from 1)
@@ -59,7 +60,7 @@
 !   FRHBER(H, CODE, MSG, STAT)                        _errcode, _errmsg
 ! Refused here, before C sees them, with FRICREG_EINVAL: FRHBCR's NDOF or M below 1, a
 ! negative MAXPT, IGUESS other than 0 or 1, and a K or IDOF below 1 (counts that would wrap
-! into size_t or C's 0-based index; FRHBSB's and FRHBPX's K below 0), FRHBIW's and FRHBIL's NS below 1,
+! into size_t or C's 0-based index; FRHBSB's, FRHBEX's and FRHBPX's K below 0, FRHBEX's NEXP below 0), FRHBIW's and FRHBIL's NS below 1,
 ! FRHBNM's MODE below 1 or negative NP, FRHBAE's code or NS of no type or ME below 0,
 ! FRHBNQ's and FRHBNK's I below 1.
 !
@@ -478,6 +479,26 @@ subroutine frhbsb(h, k, istab, mumax, stat)
   stat = int(fricreg_hb_point_stability(fricreg_handle_to_ptr(h), idx, flag, mumax))
   if (stat == FRICREG_OK) istab = int(flag)
 end subroutine frhbsb
+
+!> FRHBEX(H, K, NEXP, EXPS, STAT): the Floquet exponents EXPS(2, NEXP), (Re, Im) in rad/s, of
+!> point K (from 1; 0 the last solution); NEXP must be 2 NDOF.
+subroutine frhbex(h, k, nexp, exps, stat)
+  use fricreg_c
+  use fricreg_sim_c
+  implicit none
+  integer(c_int64_t), intent(in) :: h
+  integer, intent(in) :: k, nexp
+  double precision, intent(inout) :: exps(*)
+  integer, intent(out) :: stat
+  integer(c_size_t) :: idx
+  if (k < 0 .or. nexp < 0) then
+    stat = int(FRICREG_EINVAL)
+    return
+  end if
+  idx = -1_c_size_t ! FRICREG_HB_SOLUTION, (size_t)-1
+  if (k > 0) idx = int(k - 1, c_size_t)
+  stat = int(fricreg_hb_point_exponents(fricreg_handle_to_ptr(h), idx, int(nexp, c_size_t), exps))
+end subroutine frhbex
 
 !> FRHBBN(H, NB, STAT): the number of bifurcations the last continuation located.
 subroutine frhbbn(h, nb, stat)

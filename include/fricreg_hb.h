@@ -1269,6 +1269,23 @@ FRICREG_API int fricreg_hb_set_stability(fricreg_hb *hb, int enable);
  *  since stability was turned on, or the model changed since). Since 1.7 (FRICREG_1.7). */
 FRICREG_API int fricreg_hb_point_stability(fricreg_hb *hb, size_t k, int *stable, double *mu_max);
 
+/** The Floquet exponents of a stored continuation point, or of the last solution, as the
+ *  method in force computed them (fricreg_hb_set_stability_method; see fricreg_hb_set_stability).
+ *
+ *  k          the point's index, 0 <= k < fricreg_hb_points(hb), or FRICREG_HB_SOLUTION.
+ *  nexp       must equal 2 ndof, the number of exponents.
+ *  exponents  out: [nexp][2] row-major, (Re λ, Im λ) per exponent, rad/s, Im λ in
+ *             (−Ω/2, Ω/2], in no particular order; the multipliers are μ = exp(2π λ/Ω), and a
+ *             solution is unstable by as many as have Re λ 2π/Ω > 1e-6 (a real negative μ
+ *             has Im λ = Ω/2). With FRICREG_HB_STABILITY_CONDENSED, the last of them are the
+ *             left-out modes' (fricreg_hb_set_stability).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb or exponents is NULL; FRICREG_ESIZE if nexp is not
+ *  2 ndof; FRICREG_EINVAL as fricreg_hb_point_stability (stability off, k out of range, no
+ *  solution); exponents is untouched on failure. Since 1.9 (FRICREG_1.9). */
+FRICREG_API int fricreg_hb_point_exponents(fricreg_hb *hb, size_t k, size_t nexp,
+                                           double exponents[]);
+
 /** Largest order 2 ndof + sliders of the exact monodromy that FRICREG_HB_STABILITY_AUTO takes
  *  (fricreg_hb_set_stability_method): its matrices are dense, each switch costing a few times
  *  that order cubed (past it a solution takes seconds to minutes, a continuation of hundreds

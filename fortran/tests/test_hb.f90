@@ -25,6 +25,7 @@ program test_hb
   type(c_ptr) :: p
   real(c_double), parameter :: w = 1.2_c_double
   real(c_double) :: lev, q(7, 1), x(7, 1), d, c, rms(1), omega, big, big2, qc(7, 1), q2(7, 1), bad(5, 1)
+  real(c_double) :: lam(2, 2), lam3(2, 3)
   real(c_double) :: M2(2, 2), K2(2, 2), J2(1, 2), Jrow(2), Jn2(1, 2), qn(7, 2), pw, pr
   real(c_double) :: ec(2), ea(2), et(2), eat(2), qn2(7, 2), q3(7, 3), q3c(7, 3), Je2(2, 2)
   type(fricreg_hb_driver) :: sparse
@@ -88,6 +89,12 @@ program test_hb
   call check_close(mu, exp(-0.015_c_double * 2.0_c_double * acos(-1.0_c_double) / 3.0_c_double), &
                    1e-9_c_double, 'mu_max, closed form')
   call check_status(hb%stability(0, stable, mu), FRICREG_OK, 'stability of the last solution')
+  ! its two exponents: Re lambda = -c/(2m) = -0.015 each
+  call check_status(hb%exponents(0, lam), FRICREG_OK, 'exponents of the last solution')
+  call check_close(lam(1, 1), -0.015_c_double, 1e-9_c_double, 'Re lambda 1, closed form')
+  call check_close(lam(1, 2), -0.015_c_double, 1e-9_c_double, 'Re lambda 2, closed form')
+  call check_status(hb%exponents(0, lam3), FRICREG_ESIZE, 'exponents(2, 3) of 1 dof')
+  call check_status(hb%exponents(-1, lam), FRICREG_EINVAL, 'exponents of point -1')
   ! by the exact monodromy (the automatic choice for a Jenkins element), then by Hill's method:
   ! the same closed form
   call check_status(hb%stability_method(method), FRICREG_OK, 'stability_method')

@@ -46,6 +46,7 @@ int fricreg_hb_point_displacement(fricreg_hb *hb, size_t k, size_t ndof, size_t 
 int fricreg_hb_peak(fricreg_hb *hb, size_t dof, double *omega, double *rms);
 int fricreg_hb_set_stability(fricreg_hb *hb, int enable);
 int fricreg_hb_point_stability(fricreg_hb *hb, size_t k, int *stable, double *mu_max);
+int fricreg_hb_point_exponents(fricreg_hb *hb, size_t k, size_t nexp, double exponents[]);
 int fricreg_hb_set_stability_method(fricreg_hb *hb, int method);
 int fricreg_hb_get_stability_method(fricreg_hb *hb, int *method);
 size_t fricreg_hb_bifurcations(const fricreg_hb *hb);

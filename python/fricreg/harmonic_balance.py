@@ -273,13 +273,19 @@ class HarmonicBalance:
                              % (q0.shape, self.nrows, 2 * self.harmonics + 1))
         return q0, pointer(q0)
 
-    def _stability_of(self, k):
-        """(stable, mu_max) of stored point k or of the solution (None, nan with it off)."""
+    def _stability_of(self, k, omega):
+        """(stable, mu_max, multipliers by decreasing modulus) of stored point k or of the
+        solution, at its frequency omega (None, nan, None with stability off)."""
         if not self._stability:
-            return None, float("nan")
+            return None, float("nan"), None
         stable, mu = ffi.new("int *"), ffi.new("double *")
         self._check(lib.fricreg_hb_point_stability(self._hb, k, stable, mu), "stability")
-        return bool(stable[0]), mu[0]
+        exponents = np.empty((2 * self.ndof, 2))
+        self._check(lib.fricreg_hb_point_exponents(self._hb, k, exponents.shape[0],
+                                                   pointer(exponents)), "stability")
+        multipliers = np.exp(2.0 * np.pi / omega * (exponents[:, 0] + 1j * exponents[:, 1]))
+        return bool(stable[0]), mu[0], multipliers[np.argsort(-np.abs(multipliers),
+                                                              kind="stable")]
 
     def _solution(self, omega, q, x=None):
         """The driver's last solution as a Solution (x: its coefficients if known); without q
@@ -291,8 +297,8 @@ class HarmonicBalance:
                                                     pointer(x)), "displacement")
         if q is None:
             q = self._J @ x
-        stable, mu = self._stability_of(_SOLUTION)
-        return Solution(omega, q, x, stable, mu)
+        stable, mu, multipliers = self._stability_of(_SOLUTION, omega)
+        return Solution(omega, q, x, stable, mu, multipliers)
 
     def solve(self, omega, guess=None):
         """The periodic response at the excitation frequency omega (``fricreg_hb_solve``).
@@ -335,6 +341,7 @@ class HarmonicBalance:
         x = np.empty((n, self.ndof, 2 * self.harmonics + 1))
         stable = np.empty(n, dtype=bool) if self._stability else None
         mu_max = np.empty(n) if self._stability else None
+        multipliers = np.empty((n, 2 * self.ndof), complex) if self._stability else None
         w, lv = ffi.new("double *"), ffi.new("double *")
         for k in range(n):
             self._check(lib.fricreg_hb_point(self._hb, k, w, self.ndof, pointer(rms[k])), "point")
@@ -343,9 +350,10 @@ class HarmonicBalance:
                                                           pointer(x[k])), "point")
             omega[k], level[k] = w[0], lv[0]
             if self._stability:
-                stable[k], mu_max[k] = self._stability_of(k)
+                stable[k], mu_max[k], multipliers[k] = self._stability_of(k, omega[k])
         solution = self._solution(omega[-1], None, x[-1].copy()) if n else None  # its q: J x
-        return Response(omega, level, rms, x, stable, mu_max, self._bifurcations(), solution)
+        return Response(omega, level, rms, x, stable, mu_max, self._bifurcations(), solution,
+                        multipliers)
 
     def _bifurcations(self):
         """The located bifurcations of the stored branch."""

@@ -11,7 +11,7 @@ from collections import namedtuple
 
 __all__ = ["Solution", "Response", "Bifurcation", "Backbone", "SpecialPoint"]
 
-Solution = namedtuple("Solution", "omega q x stable mu_max")
+Solution = namedtuple("Solution", "omega q x stable mu_max multipliers")
 Solution.__doc__ = """A periodic steady state (:meth:`HarmonicBalance.solve`).
 
 omega : float
@@ -25,6 +25,9 @@ stable : bool or None
     Every Floquet multiplier within the unit circle (|μ| <= 1 + 1e-6); None with stability off.
 mu_max : float
     The largest |μ| (nan with stability off).
+multipliers : ndarray of complex, shape (2 ndof,), or None
+    The Floquet multipliers μ = exp(2π λ/Ω) by decreasing |μ| (``fricreg_hb_point_exponents``);
+    None with stability off.
 """
 
 Bifurcation = namedtuple("Bifurcation", "kind omega level point rms")
@@ -44,7 +47,8 @@ rms : ndarray, shape (ndof,)
     Each dof's RMS there (displacement units).
 """
 
-Response = namedtuple("Response", "omega level rms x stable mu_max bifurcations solution")
+Response = namedtuple("Response",
+                      "omega level rms x stable mu_max bifurcations solution multipliers")
 Response.__doc__ = """A branch of the periodic response (:meth:`HarmonicBalance.frequency_response`,
 :meth:`HarmonicBalance.level_response`), its points in the branch's order.
 
@@ -66,6 +70,8 @@ bifurcations : tuple of Bifurcation
 solution : Solution or None
     The branch's last point with its coefficients (None if the continuation stored none); its
     q is J x, equal to the solver's unknowns to Newton's tolerance: a guess to go on from.
+multipliers : ndarray of complex, shape (npoints, 2 ndof), or None
+    Each point's Floquet multipliers by decreasing |μ|; None with stability off.
 """
 
 SpecialPoint = namedtuple("SpecialPoint", "kind amplitude omega zeta harmonic mode")

@@ -106,6 +106,31 @@ def test_condensed_stability_is_the_c_librarys_by_name():
     assert abs(condensed.mu_max - whole.mu_max) <= 1e-9
 
 
+def test_stuck_multipliers_are_the_linear_oscillators():
+    # one dof, m = 1, c = 0.1, k = 3 and a Jenkins element kt = 1 that sticks throughout: the
+    # multipliers are exp(λ T) of λ² + c λ + k + kt = 0, by decreasing modulus (equal here),
+    # on a solution and on each point of a branch
+    hb = fricreg.HarmonicBalance([[1.0]], [[3.0]], [[0.1]],
+                                 elements=[(fricreg.Element("jenkins", [1.0, 1.0]), [[1.0]])],
+                                 harmonics=H, excitation=([0.1], None))
+    hb.set_stability(True, "monodromy")
+    lam = np.roots([1.0, 0.1, 4.0])
+    s = hb.solve(1.0)
+    expected = np.exp(2.0 * np.pi / 1.0 * lam)
+    assert s.multipliers.shape == (2,) and s.stable
+    np.testing.assert_allclose(np.sort_complex(s.multipliers), np.sort_complex(expected),
+                               rtol=0, atol=1e-12)
+    assert abs(np.abs(s.multipliers[0]) - s.mu_max) <= 1e-15
+    r = hb.frequency_response(0.9, 1.1)
+    assert r.multipliers.shape == (r.omega.size, 2)
+    for omega, mu in zip(r.omega, r.multipliers):
+        np.testing.assert_allclose(np.sort_complex(mu),
+                                   np.sort_complex(np.exp(2.0 * np.pi / omega * lam)),
+                                   rtol=0, atol=1e-12)
+    hb.set_stability(False)
+    assert hb.solve(1.0).multipliers is None
+
+
 def test_stuck_response_is_linear():
     # one dof, m = 1, c = 0.1, k = 3 and a stuck Jenkins element kt = 1 (examples/hb_frf.c):
     # |X| = F / |k + kt - m Ω² + i c Ω| = 0.1 / |3 + 0.1 i| at Ω = 1
