@@ -1233,14 +1233,18 @@ FRICREG_API int fricreg_hb_peak(fricreg_hb *hb, size_t dof, double *omega, doubl
  *
  *  The condensed monodromy (since 1.9): the same on the model condensed onto the dofs B some row
  *  of J touches (R. R. Craig, M. C. C. Bampton 1968): x_I = Ψ x_B + Φ_k η, Ψ = −K_II^-1 K_IB,
- *  Φ_k the fixed-interface modes below 20 H Ω; the modes left out keep the multipliers of the
- *  structure's highest modes (from ω² and φ^T C φ), so all 2 ndof are reported. Its modes are
- *  computed once per model (LAPACK's dsygvd, O(ndof³)), its workspace made and grown by the
- *  solves (its order depends on Ω). K_II must be positive definite (FRICREG_ESINGULAR from the
- *  solve otherwise) and the model at most 4096 dofs (FRICREG_EINVAL; dense: 8 ndof² doubles).
- *  On a 60-dof chain with 10 Jenkins elements at H = 3 its largest multiplier is within 1.2e-5
- *  of the whole model's; at 300 dofs a solution's stability takes 0.012-0.05 s against
- *  1.0-1.5 s (docs/stability.md).
+ *  Φ_k the fixed-interface modes below 50 Ω (not H's: the orbit's monodromy does not depend on
+ *  it; the error is about (Ω/ω_r)^4 of the first mode left out); the modes left out keep the
+ *  multipliers of the structure's highest modes (from ω² and φ^T C φ), so all 2 ndof are
+ *  reported. Its modes are computed once per model (LAPACK's dsygvd, O(ndof³)), its workspace
+ *  made and grown by the solves (its order depends on Ω). K_II must be positive definite
+ *  (FRICREG_ESINGULAR from the solve otherwise) and the model at most 4096 dofs
+ *  (FRICREG_EINVAL; dense: 8 ndof² doubles).
+ *  Along continuations on chains of 60 and 300 dofs with 10 Jenkins elements, and on a gap
+ *  chain with folds and Neimark–Sacker points, every point's count of unstable multipliers is
+ *  the whole model's and the largest within 3e-4 of it, at 2-6x a point's cost without
+ *  stability (60 dofs), 1.5-2.5x (300 and 1000 dofs) where the whole model's takes 6-22x and
+ *  80-830x (bench/hb_stability_size.c, docs/stability.md).
  *
  *  Either way a solution is stable when every multiplier has |μ| <= 1 + 1e-6 (Re λ 2π/Ω <=
  *  1e-6), and each stored point then keeps 4 + 4 ndof numbers. The workspace of the method in

@@ -92,7 +92,7 @@ def test_chain_sweep_with_stability_equals_the_c_library():
 
 def test_condensed_stability_is_the_c_librarys_by_name():
     # "condensed" names FRICREG_HB_STABILITY_CONDENSED; on the 3-dof chain (one dof no element
-    # touches, kept below 20 H Omega) its multipliers are the whole model's; the C library's
+    # touches, kept below 50 Omega) its multipliers are the whole model's; the C library's
     # tests/test_hb_condensed.c checks larger models
     hb = chain()
     hb.set_stability(True, "condensed")

@@ -51,7 +51,8 @@ struct fr_hb_mono {
     double *A, *E, *Phi, *T, *expm_work; /* [P P] each, expm's [6 P P] */
     double *eig_work, *wr, *wi;          /* [lwork], [P], [P] */
     size_t lwork;
-    int *piv; /* [P] */
+    int *piv;     /* [P] */
+    double sigma; /* the pieces' velocities in units of σ (piece_matrix) */
     struct fr_hb_schedule sc;
 };
 
@@ -207,8 +208,27 @@ static void piece_matrix(const fricreg_hb *hb, struct fr_hb_mono *w, double dt)
         for (size_t l = 0; l < n; l++)
             A[(n + l) * P + 2 * n + j] = row[l];
     }
-    for (size_t i = 0; i < P * P; i++)
-        A[i] *= dt;
+    /* in the state (δx, δv/σ, δw), σ near the fastest mode's frequency, A's blocks are of
+     * one size (ω, not ω²): the same multipliers, and its norm, which sets the exponential's
+     * squarings, is the fastest mode's ω dt instead of ω² dt */
+    for (size_t c = 0; c < P; c++) {
+        double fc = dt * (c >= n && c < 2 * n ? w->sigma : 1.0);
+        for (size_t r = 0; r < P; r++)
+            A[c * P + r] *= r >= n && r < 2 * n ? fc / w->sigma : fc;
+    }
+}
+
+/* σ of piece_matrix: the square root of M^-1 K's norm (its largest column sum), or 1. */
+static double velocity_scale(const struct fr_hb_mono *w)
+{
+    double norm = 0.0;
+    for (size_t l = 0; l < w->n; l++) {
+        double sum = 0.0;
+        for (size_t i = 0; i < w->n; i++)
+            sum += fabs(w->MiK[l * w->n + i]);
+        norm = fmax(norm, sum);
+    }
+    return norm > 0.0 && isfinite(norm) ? sqrt(norm) : 1.0;
 }
 
 /* Φ = e^{dt A} Φ over a piece of the period. */
@@ -333,6 +353,7 @@ int fr_hb_monodromy(fricreg_hb *hb, const char *fn, double omega, int condensed,
         size_t t = hb->rpe * w->sc.stuck_element[i];
         sub_rank_one(w, t, t, -w->sc.stuck_k[i], w->MiK, w->n);
     }
+    w->sigma = velocity_scale(w);
     if ((status = monodromy_matrix(hb, fn, w, omega)) != FRICREG_OK)
         return status;
     return multipliers(hb, fn, w, omega, condensed, out);

@@ -265,7 +265,7 @@ int fr_hb_reduction_update(fricreg_hb *hb, const char *fn, double omega,
             return status;
         }
     }
-    double cut = FR_HB_REDUCTION_CUT * hb->H * omega;
+    double cut = FR_HB_REDUCTION_CUT * omega;
     size_t k = 0;
     while (k < r->ni && r->w2[k] < cut * cut)
         k++;
