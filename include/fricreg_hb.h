@@ -1243,8 +1243,8 @@ FRICREG_API int fricreg_hb_peak(fricreg_hb *hb, size_t dof, double *omega, doubl
  *  Along continuations on chains of 60 and 300 dofs with 10 Jenkins elements, and on a gap
  *  chain with folds and Neimark–Sacker points, every point's count of unstable multipliers is
  *  the whole model's and the largest within 3e-4 of it, at 2-6x a point's cost without
- *  stability (60 dofs), 1.5-2.5x (300 and 1000 dofs) where the whole model's takes 6-22x and
- *  80-830x (bench/hb_stability_size.c, docs/stability.md).
+ *  stability at 60 dofs and 1.4-2.4x at 300 and 1000 dofs, where the whole model's takes 6-22x
+ *  (60 dofs) and 290-830x (300 dofs) (bench/hb_stability_size.c, docs/stability.md).
  *
  *  Either way a solution is stable when every multiplier has |μ| <= 1 + 1e-6 (Re λ 2π/Ω <=
  *  1e-6), and each stored point then keeps 4 + 4 ndof numbers. The workspace of the method in
@@ -1281,8 +1281,8 @@ FRICREG_API int fricreg_hb_point_stability(fricreg_hb *hb, size_t k, int *stable
  *  exponents  out: [nexp][2] row-major, (Re λ, Im λ) per exponent, rad/s, Im λ in
  *             (−Ω/2, Ω/2], in no particular order; the multipliers are μ = exp(2π λ/Ω), and a
  *             solution is unstable by as many as have Re λ 2π/Ω > 1e-6 (a real negative μ
- *             has Im λ = Ω/2). With FRICREG_HB_STABILITY_CONDENSED, the last of them are the
- *             left-out modes' (fricreg_hb_set_stability).
+ *             has Im λ = Ω/2). By the condensed method (chosen, or the automatic choice),
+ *             the last of them are the left-out modes' (fricreg_hb_set_stability).
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if hb or exponents is NULL; FRICREG_ESIZE if nexp is not
  *  2 ndof; FRICREG_EINVAL as fricreg_hb_point_stability (stability off, k out of range, no
