@@ -1278,11 +1278,9 @@ FRICREG_API int fricreg_hb_point_stability(fricreg_hb *hb, size_t k, int *stable
  *
  *  k          the point's index, 0 <= k < fricreg_hb_points(hb), or FRICREG_HB_SOLUTION.
  *  nexp       must equal 2 ndof, the number of exponents.
- *  exponents  out: [nexp][2] row-major, (Re λ, Im λ) per exponent, rad/s, Im λ in
- *             (−Ω/2, Ω/2], in no particular order; the multipliers are μ = exp(2π λ/Ω), and a
- *             solution is unstable by as many as have Re λ 2π/Ω > 1e-6 (a real negative μ
- *             has Im λ = Ω/2). By the condensed method (chosen, or the automatic choice),
- *             the last of them are the left-out modes' (fricreg_hb_set_stability).
+ *  exponents  out: [nexp][2] row-major, (Re λ, Im λ) per exponent, rad/s, |Im λ| <= Ω/2,
+ *             in no particular order; the multipliers are μ = exp(2π λ/Ω), and a solution is
+ *             unstable by as many as have Re λ 2π/Ω > 1e-6.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if hb or exponents is NULL; FRICREG_ESIZE if nexp is not
  *  2 ndof; FRICREG_EINVAL as fricreg_hb_point_stability (stability off, k out of range, no
