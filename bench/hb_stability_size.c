@@ -164,8 +164,8 @@ static void branch_free(struct branch *b)
     free(b->omega), free(b->mu_max), free(b->unstable);
 }
 
-/* The branch of the chain (n, H) without stability (method < 0) or with the method; 0 on
- * success. */
+/* The branch of the model (kind, n, H) without stability (method < 0) or with the method; 0 on
+ * success (b to be freed either way). */
 static int run(int kind, size_t n, int H, int method, struct branch *b)
 {
     double w0 = 0.0, w1 = 0.0;
@@ -186,7 +186,6 @@ static int run(int kind, size_t n, int H, int method, struct branch *b)
     b->seconds = now() - t0;
     b->points = fricreg_hb_points(hb);
     b->bifurcations = fricreg_hb_bifurcations(hb);
-
     b->omega = malloc((b->points + 1) * sizeof(double));
     b->mu_max = malloc((b->points + 1) * sizeof(double));
     b->unstable = malloc((b->points + 1) * sizeof(int));
@@ -250,8 +249,11 @@ static int row(int kind, size_t n, int H, int repeats, size_t max_ref_dofs)
     for (int r = 0; r < repeats; r++) {
         if (r > 0)
             branch_free(&off), branch_free(&on);
-        if (run(kind, n, H, -1, &off) != 0 || run(kind, n, H, FRICREG_HB_STABILITY_AUTO, &on) != 0)
+        if (run(kind, n, H, -1, &off) != 0 ||
+            run(kind, n, H, FRICREG_HB_STABILITY_AUTO, &on) != 0) {
+            branch_free(&off), branch_free(&on);
             return -1;
+        }
         t_off[r] = off.seconds / (double)off.points;
         t_on[r] = on.seconds / (double)on.points;
     }
