@@ -3,6 +3,7 @@
 numpy with fricreg.law_eval as its friction, gives fricreg-sim chain's dissipation per cycle
 bit for bit, and the paper's D = 0.0105."""
 import json
+import math
 import subprocess
 
 import numpy as np
@@ -19,7 +20,8 @@ def rhs(t, y):
     """u' = v, v' = a_free + f, D' = -(1/n) v . f (src/sim/systems/chain.c's scaling)."""
     u, v = y[:N], y[N:2 * N]
     a_free = np.empty(N)
-    a_free[0] = -N * N * (u[0] - u[1]) + N * A * np.sin(OMEGA * t)
+    # math.sin is libm's, as chain.c's; numpy's sin may use its own SIMD code (AVX-512), ulps apart
+    a_free[0] = -N * N * (u[0] - u[1]) + N * A * math.sin(OMEGA * t)
     a_free[1:-1] = -N * N * (-u[:-2] + 2 * u[1:-1] - u[2:])
     a_free[-1] = -N * N * (-u[-2] + 2 * u[-1])
     f = fricreg.law_eval("quinn", v, -a_free, 1.0, EPS)  # W = I: f_eq = -a_free
