@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* element_kernel.c — fricreg-bench-element-kernel [count]: the element types' kernel
+/* element_kernel.c — fricreg-bench-element-kernel [count CASE ITEM]: the element types' kernel
  * (fricreg_element_eval, fricreg_element_eval_batch) against hand-written return mappings.
  *
  * Three cases, each over NPOINTS points with their own parameters (a host's integration
@@ -8,12 +8,17 @@
  *   contact_3d  the radial return in the contact plane under the normal law of lift-off (a
  *               few points open), the 3x3 tangent;
  *   iwan        NS sliders of one displacement, summed in order.
- * The hand loops are what a host's friction routine would write: no validation, the same
+ * The hand routines are what a host's friction routine would write: no validation, the same
  * operations as the library's (hypot for the norms, the same sums), so that their results
  * agree bit for bit; the program checks they do before timing. dfdu is asked for, dfdp not.
- * Each figure is the median of REPEATS interleaved timings, in ns per point; the ratios are
- * to the hand loop of the same case. "count CASE ITEM" runs one item alone, for instruction
- * counts (bench/element_kernel.sh: callgrind's total less that of ITEM none). */
+ * Each library item is timed against the hand item of the same shape:
+ *   batch          against the hand loop (the routine inlined into a loop over the points);
+ *   batch, shared  the same with every point on point 0's parameters (params_stride 0);
+ *   eval           against the hand routine called per point through a non-inlined call,
+ *                  as a host calls its friction routine at each point.
+ * Each figure is the median of REPEATS interleaved timings, in ns per point. "count CASE ITEM"
+ * runs one item (its name in item_names, or none) alone, for instruction counts
+ * (bench/element_kernel.sh: callgrind's total less that of ITEM none). */
 #define _POSIX_C_SOURCE 199309L /* clock_gettime */
 #include <math.h>
 #include <stdint.h>
@@ -70,92 +75,131 @@ struct element_case {
     double *lf, *lt, *lwn; /* the library's */
 };
 
-/* ---- The hand-written loops ---------------------------------------------------------------- */
+/* ---- The hand-written return mappings ------------------------------------------------------ */
 
-static NOINLINE void hand_jenkins(size_t n, const double *p, const double *w, const double *u,
-                                  double *f, double *t, double *wn)
+/* One point each, inline: the loops below inline them (the hand loop), and hand_point calls
+ * them through a non-inlined routine per point, as a host calls its own friction routine. */
+
+/* kt, b; w; u; f; t; wn. */
+static inline void hand_jenkins(const double *p, const double *w, const double *u, double *f,
+                                double *t, double *wn)
 {
-    for (size_t i = 0; i < n; i++) {
-        double kt = p[2 * i], b = p[2 * i + 1], d = u[i] - w[i], r = fabs(d);
-        if (kt * r <= b) {
-            f[i] = kt * d;
-            t[i] = kt;
-            wn[i] = w[i];
-        } else {
-            f[i] = b * (d / r);
-            t[i] = 0.0;
-            wn[i] = u[i] - f[i] / kt;
-        }
+    double kt = p[0], b = p[1], d = u[0] - w[0], r = fabs(d);
+    if (kt * r <= b) {
+        f[0] = kt * d;
+        t[0] = kt;
+        wn[0] = w[0];
+    } else {
+        f[0] = b * (d / r);
+        t[0] = 0.0;
+        wn[0] = u[0] - f[0] / kt;
     }
 }
 
-/* kt, mu, kn, n0, gap; w[2]; u = (u_t[2], g); f = (f_t[2], N); t[3x3]. */
-static NOINLINE void hand_contact_3d(size_t n, const double *p, const double *w, const double *u,
-                                     double *f, double *t, double *wn)
+/* kt, mu, kn, n0, gap; w[2]; u = (u_t[2], g); f = (f_t[2], N); t[3x3]; wn[2]. */
+static inline void hand_contact_3d(const double *p, const double *w, const double *u, double *f,
+                                   double *t, double *wn)
 {
-    for (size_t i = 0; i < n; i++) {
-        const double *pi = p + 5 * i, *wi = w + 2 * i, *ui = u + 3 * i;
-        double *fi = f + 3 * i, *ti = t + 9 * i, *wni = wn + 2 * i;
-        double kt = pi[0], mu = pi[1], kn = pi[2], gg = ui[2] - pi[4], nc = pi[3] + kn * gg;
-        if (nc < 0.0) {
-            wni[0] = ui[0];
-            wni[1] = ui[1];
-            fi[0] = fi[1] = fi[2] = 0.0;
-            for (int a = 0; a < 9; a++)
-                ti[a] = 0.0;
-            continue;
-        }
-        double N = fmax(0.0, nc), b = mu * N, d0 = ui[0] - wi[0], d1 = ui[1] - wi[1];
-        double r = hypot(d0, d1);
-        fi[2] = N;
-        ti[6] = ti[7] = 0.0;
-        ti[8] = kn;
-        if (kt * r <= b) {
-            fi[0] = kt * d0;
-            fi[1] = kt * d1;
-            wni[0] = wi[0];
-            wni[1] = wi[1];
-            ti[0] = ti[4] = kt;
-            ti[1] = ti[3] = ti[2] = ti[5] = 0.0;
-        } else {
-            double n0 = d0 / r, n1 = d1 / r, s = b / r, dbdg = mu * kn;
-            fi[0] = b * n0;
-            fi[1] = b * n1;
-            wni[0] = ui[0] - fi[0] / kt;
-            wni[1] = ui[1] - fi[1] / kt;
-            ti[0] = s * (1.0 - n0 * n0);
-            ti[1] = s * (0.0 - n0 * n1);
-            ti[3] = s * (0.0 - n1 * n0);
-            ti[4] = s * (1.0 - n1 * n1);
-            ti[2] = dbdg * n0;
-            ti[5] = dbdg * n1;
-        }
+    double kt = p[0], mu = p[1], kn = p[2], gg = u[2] - p[4], nc = p[3] + kn * gg;
+    if (nc < 0.0) {
+        wn[0] = u[0];
+        wn[1] = u[1];
+        f[0] = f[1] = f[2] = 0.0;
+        for (int a = 0; a < 9; a++)
+            t[a] = 0.0;
+        return;
+    }
+    double N = 0.0 > nc ? 0.0 : nc, b = mu * N, d0 = u[0] - w[0], d1 = u[1] - w[1];
+    double r = hypot(d0, d1);
+    f[2] = N;
+    t[6] = t[7] = 0.0;
+    t[8] = kn;
+    if (kt * r <= b) {
+        f[0] = kt * d0;
+        f[1] = kt * d1;
+        wn[0] = w[0];
+        wn[1] = w[1];
+        t[0] = t[4] = kt;
+        t[1] = t[3] = t[2] = t[5] = 0.0;
+    } else {
+        double n0 = d0 / r, n1 = d1 / r, s = b / r, dbdg = mu * kn;
+        f[0] = b * n0;
+        f[1] = b * n1;
+        wn[0] = u[0] - f[0] / kt;
+        wn[1] = u[1] - f[1] / kt;
+        t[0] = s * (1.0 - n0 * n0);
+        t[1] = s * (0.0 - n0 * n1);
+        t[3] = s * (0.0 - n1 * n0);
+        t[4] = s * (1.0 - n1 * n1);
+        t[2] = dbdg * n0;
+        t[5] = dbdg * n1;
     }
 }
 
 /* NS sliders k[NS], phi[NS] on one displacement; f and t summed in the sliders' order. */
-static NOINLINE void hand_iwan(size_t n, const double *p, const double *w, const double *u,
-                               double *f, double *t, double *wn)
+static inline void hand_iwan(const double *p, const double *w, const double *u, double *f,
+                             double *t, double *wn)
 {
-    for (size_t i = 0; i < n; i++) {
-        const double *k = p + 2 * NS * i, *phi = k + NS, *wi = w + NS * i;
-        double ui = u[i], fs = 0.0, ts = 0.0;
-        for (size_t s = 0; s < NS; s++) {
-            double d = ui - wi[s], r = fabs(d);
-            if (k[s] * r <= phi[s]) {
-                fs += k[s] * d;
-                ts += k[s];
-                wn[NS * i + s] = wi[s];
-            } else {
-                double fsl = phi[s] * (d / r);
-                fs += fsl;
-                ts += 0.0;
-                wn[NS * i + s] = ui - fsl / k[s];
-            }
+    const double *k = p, *phi = p + NS;
+    double ui = u[0], fs = 0.0, ts = 0.0;
+    for (size_t s = 0; s < NS; s++) {
+        double d = ui - w[s], r = fabs(d);
+        if (k[s] * r <= phi[s]) {
+            fs += k[s] * d;
+            ts += k[s];
+            wn[s] = w[s];
+        } else {
+            double fsl = phi[s] * (d / r);
+            fs += fsl;
+            ts += 0.0;
+            wn[s] = ui - fsl / k[s];
         }
-        f[i] = fs;
-        t[i] = ts;
     }
+    f[0] = fs;
+    t[0] = ts;
+}
+
+typedef void hand_fn(const double *p, const double *w, const double *u, double *f, double *t,
+                     double *wn);
+
+/* Case c's points through one, inlined (the loop of each case is its own function). */
+#define HAND_LOOP(one)                                                                             \
+    static NOINLINE void loop_##one(const struct element_case *c, size_t p_stride)                 \
+    {                                                                                              \
+        for (size_t i = 0; i < NPOINTS; i++)                                                       \
+            one(c->p + p_stride * i, c->w + c->nstate * i, c->u + c->dim * i, c->f + c->dim * i,   \
+                c->t + c->dim * c->dim * i, c->wn + c->nstate * i);                                \
+    }                                                                                              \
+    static NOINLINE void point_##one(const double *p, const double *w, const double *u, double *f, \
+                                     double *t, double *wn)                                        \
+    {                                                                                              \
+        one(p, w, u, f, t, wn);                                                                    \
+    }
+HAND_LOOP(hand_jenkins)
+HAND_LOOP(hand_contact_3d)
+HAND_LOOP(hand_iwan)
+
+/* The hand loop of case which (0, 1, 2); p_stride 0: every point on the first point's
+ * parameters. */
+static void hand(const struct element_case *c, int which, size_t p_stride)
+{
+    if (which == 0)
+        loop_hand_jenkins(c, p_stride);
+    else if (which == 1)
+        loop_hand_contact_3d(c, p_stride);
+    else
+        loop_hand_iwan(c, p_stride);
+}
+
+/* The hand routine called per point, as lib_eval calls fricreg_element_eval. */
+static NOINLINE void hand_point(const struct element_case *c, int which)
+{
+    hand_fn *one = which == 0   ? point_hand_jenkins
+                   : which == 1 ? point_hand_contact_3d
+                                : point_hand_iwan;
+    for (size_t i = 0; i < NPOINTS; i++)
+        one(c->p + c->np * i, c->w + c->nstate * i, c->u + c->dim * i, c->f + c->dim * i,
+            c->t + c->dim * c->dim * i, c->wn + c->nstate * i);
 }
 
 /* ---- The library ----------------------------------------------------------------------------- */
@@ -170,20 +214,30 @@ static NOINLINE int lib_eval(const struct element_case *c)
     return status;
 }
 
-static NOINLINE int lib_batch(const struct element_case *c)
+/* p_stride 0: every point on the first point's parameters, checked once. */
+static NOINLINE int lib_batch(const struct element_case *c, size_t p_stride)
 {
-    return fricreg_element_eval_batch(c->type, NPOINTS, c->p, c->np, c->w, c->u, c->lf, c->lt, NULL,
-                                      c->lwn, NULL);
+    return fricreg_element_eval_batch(c->type, NPOINTS, c->p, p_stride, c->w, c->u, c->lf, c->lt,
+                                      NULL, c->lwn, NULL);
 }
 
-static NOINLINE void hand(const struct element_case *c, int which)
+/* The items timed, each over a case's NPOINTS points: the hand loop and fricreg_element_eval_batch
+ * with parameters per point and shared, the hand routine per point and fricreg_element_eval. */
+enum item { HAND_LOOP, BATCH, HAND_SHARED, BATCH_SHARED, HAND_POINT, EVAL, NITEMS };
+static const char *const item_names[NITEMS] = {"hand",         "batch",      "hand_shared",
+                                               "batch_shared", "hand_point", "eval"};
+
+/* Item `item` of case which; its status (the hand items' is FRICREG_OK). */
+static int run_item(const struct element_case *c, int which, int item)
 {
-    if (which == 0)
-        hand_jenkins(NPOINTS, c->p, c->w, c->u, c->f, c->t, c->wn);
-    else if (which == 1)
-        hand_contact_3d(NPOINTS, c->p, c->w, c->u, c->f, c->t, c->wn);
-    else
-        hand_iwan(NPOINTS, c->p, c->w, c->u, c->f, c->t, c->wn);
+    switch (item) {
+    case HAND_LOOP: hand(c, which, c->np); return FRICREG_OK;
+    case BATCH: return lib_batch(c, c->np);
+    case HAND_SHARED: hand(c, which, 0); return FRICREG_OK;
+    case BATCH_SHARED: return lib_batch(c, 0);
+    case HAND_POINT: hand_point(c, which); return FRICREG_OK;
+    default: return lib_eval(c);
+    }
 }
 
 /* ---- The inputs -------------------------------------------------------------------------------- */
@@ -248,36 +302,37 @@ static size_t mismatches(const struct element_case *c)
     return bad;
 }
 
+/* Each library item's results equal those of its hand item, bit for bit. */
 static int check_case(struct element_case *c, int which)
 {
-    hand(c, which);
-    for (int pass = 0; pass < 2; pass++) {
+    static const int pairs[3][2] = {{HAND_LOOP, BATCH},
+                                    {HAND_SHARED, BATCH_SHARED},
+                                    {HAND_POINT, EVAL}};
+    for (int k = 0; k < 3; k++) {
+        run_item(c, which, pairs[k][0]);
         memset(c->lf, 0xff, c->dim * NPOINTS * sizeof *c->lf);
-        int status = pass == 0 ? lib_eval(c) : lib_batch(c);
+        int status = run_item(c, which, pairs[k][1]);
         size_t bad = mismatches(c);
         if (status != FRICREG_OK || bad != 0) {
-            fprintf(stderr, "%s: %s: status %d, %zu numbers differ from the hand loop\n", c->name,
-                    pass == 0 ? "eval" : "eval_batch", status, bad);
+            fprintf(stderr, "%s: %s: status %d, %zu numbers differ from %s\n", c->name,
+                    item_names[pairs[k][1]], status, bad, item_names[pairs[k][0]]);
             return 1;
         }
     }
     return 0;
 }
 
-/* "count CASE ITEM": ITEM (hand, eval, batch or none) of case CASE (0, 1, 2) COUNT_SWEEPS
- * times, for an instruction count: (count(ITEM) - count(none)) / (COUNT_SWEEPS NPOINTS). */
-static int count(struct element_case *c, int k, const char *item)
+/* "count CASE ITEM": ITEM (an item's name, or none) of case CASE (0, 1, 2) COUNT_SWEEPS times,
+ * for an instruction count: (count(ITEM) - count(none)) / (COUNT_SWEEPS NPOINTS). */
+static int count(struct element_case *c, int k, const char *name)
 {
-    for (int sweep = 0; sweep < COUNT_SWEEPS; sweep++) {
-        if (strcmp(item, "hand") == 0)
-            hand(&c[k], k);
-        else if (strcmp(item, "eval") == 0)
-            lib_eval(&c[k]);
-        else if (strcmp(item, "batch") == 0)
-            lib_batch(&c[k]);
-        else if (strcmp(item, "none") != 0)
-            return 1;
-    }
+    int item = 0;
+    while (item < NITEMS && strcmp(name, item_names[item]) != 0)
+        item++;
+    if (item == NITEMS)
+        return strcmp(name, "none") != 0;
+    for (int sweep = 0; sweep < COUNT_SWEEPS; sweep++)
+        run_item(&c[k], k, item);
     return 0;
 }
 
@@ -292,27 +347,27 @@ int main(int argc, char **argv)
             return 1;
     if (argc == 4 && strcmp(argv[1], "count") == 0)
         return count(c, atoi(argv[2]) % NCASES, argv[3]);
-    double times[NCASES][3][REPEATS];
+    static double times[NCASES][NITEMS][REPEATS];
     for (int r = 0; r < REPEATS; r++)
         for (int k = 0; k < NCASES; k++)
-            for (int item = 0; item < 3; item++) {
+            for (int item = 0; item < NITEMS; item++) {
                 double t0 = cpu_seconds();
-                for (int sweep = 0; sweep < SWEEPS; sweep++) {
-                    if (item == 0)
-                        hand(&c[k], k);
-                    else if (item == 1)
-                        lib_eval(&c[k]);
-                    else
-                        lib_batch(&c[k]);
-                }
+                for (int sweep = 0; sweep < SWEEPS; sweep++)
+                    run_item(&c[k], k, item);
                 times[k][item][r] = (cpu_seconds() - t0) * 1e9 / (SWEEPS * (double)NPOINTS);
             }
-    printf("%-12s %10s %10s %10s %8s %8s   (ns per point, median of %d; iwan: %d sliders)\n",
-           "case", "hand", "eval", "batch", "eval/h", "batch/h", REPEATS, NS);
+    printf("ns per point, median of %d interleaved runs (iwan: %d sliders); ratios: the library "
+           "to its hand item\n",
+           REPEATS, NS);
+    printf("%-11s %6s %6s %6s %6s %6s %6s %8s %8s %8s\n", "case", "loop", "batch", "loop_s",
+           "batch_s", "point", "eval", "batch/h", "batch_s/h", "eval/h");
     for (int k = 0; k < NCASES; k++) {
-        double h = median(times[k][0], REPEATS), e = median(times[k][1], REPEATS),
-               b = median(times[k][2], REPEATS);
-        printf("%-12s %10.2f %10.2f %10.2f %8.2f %8.2f\n", c[k].name, h, e, b, e / h, b / h);
+        double m[NITEMS];
+        for (int item = 0; item < NITEMS; item++)
+            m[item] = median(times[k][item], REPEATS);
+        printf("%-11s %6.2f %6.2f %6.2f %6.2f %6.2f %6.2f %8.2f %8.2f %8.2f\n", c[k].name,
+               m[HAND_LOOP], m[BATCH], m[HAND_SHARED], m[BATCH_SHARED], m[HAND_POINT], m[EVAL],
+               m[BATCH] / m[HAND_LOOP], m[BATCH_SHARED] / m[HAND_SHARED], m[EVAL] / m[HAND_POINT]);
     }
     return 0;
 }

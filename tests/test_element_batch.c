@@ -8,7 +8,9 @@
  *   - jenkins under u = A sin t at several amplitudes at once: the dissipation per cycle
  *     4 mun (A - mun/kt) (test_element.c derives it; the samples hit the turns, so it holds to
  *     rounding);
- *   - the header's failure promises: the status, the point named, and nothing written. */
+ *   - the header's failure promises: the status, the point named, and nothing written;
+ *   - fricreg_element_explain, whose full check is the authority on what is refused: eval's and
+ *     the batch's faster checks agree with it at every border value of every input. */
 #include <check.h>
 #include <math.h>
 #include <string.h>
@@ -175,6 +177,96 @@ START_TEST(test_failures_write_nothing)
 }
 END_TEST
 
+/* The values at the borders of eval's checks: NaN, the infinities, signed zeros, the
+ * smallest subnormal, powers of 2 around the bounds its fast check uses (2^1012, 2^1020,
+ * 2^1022) and the largest double. */
+static const double BORDER_VALUES[] = {NAN,
+                                       INFINITY,
+                                       -INFINITY,
+                                       0.0,
+                                       -0.0,
+                                       -1.0,
+                                       0x1p-1074,
+                                       0x1p1011,
+                                       0x1p1012,
+                                       0x1p1013,
+                                       0x1p1020,
+                                       0x1p1021,
+                                       0x1p1022,
+                                       -0x1p1022,
+                                       0x1p1023,
+                                       1.7976931348623157e308,
+                                       -1.7976931348623157e308};
+#define NBORDER (sizeof BORDER_VALUES / sizeof BORDER_VALUES[0])
+
+/* eval, and the batch with the point at index BAD_AT among copies of the good point good
+ * (params, state and u in a row), parameters per point and (where shared is set) shared, give
+ * explain's status on the same inputs, the batch naming its bad point. */
+#define BAD_AT 3
+static void agrees_with_explain(const fricreg_element_type *t, const double *good, const double *p,
+                                const double *w, const double *u, int shared)
+{
+    size_t dim = (size_t)fricreg_element_dim(t), np = fricreg_element_nparams(t);
+    size_t nst = fricreg_element_nstate(t);
+    int status = fricreg_element_explain(t, p, w, u, NULL, 0);
+    double f[NPOINTS * 3], wn[NPOINTS * MAXS + 1];
+    ck_assert_msg(fricreg_element_eval(t, p, w, u, f, NULL, NULL, wn) == status,
+                  "%s: eval's status is not explain's %d", fricreg_element_name(t), status);
+    double pp[NPOINTS * MAXP], ww[NPOINTS * MAXS + 1], uu[NPOINTS * 3];
+    for (size_t i = 0; i < NPOINTS; i++) {
+        int at = i == BAD_AT;
+        memcpy(pp + np * i, at ? p : good, np * sizeof *p);
+        memcpy(ww + nst * i, at ? w : good + np, nst * sizeof *w);
+        memcpy(uu + dim * i, at ? u : good + np + nst, dim * sizeof *u);
+    }
+    for (int mode = 0; mode < 1 + shared; mode++) {
+        size_t bad = 99, stride = mode == 0 ? np : 0;
+        int got = fricreg_element_eval_batch(t, NPOINTS, mode == 0 ? pp : p, stride, ww, uu, f,
+                                             NULL, NULL, wn, &bad);
+        ck_assert_msg(got == status, "%s: the batch's status %d is not explain's %d (stride %zu)",
+                      fricreg_element_name(t), got, status, stride);
+        if (status != FRICREG_OK)
+            ck_assert_uint_eq(bad, mode == 0 ? BAD_AT : 0);
+    }
+}
+
+/* Every input of every slider type, one at a time, and every slider's stiffness, every
+ * slider's bound and every component of u at once, at each border value: the checks eval and the batch run for speed (element_sliders.c's
+ * fast check, then check where it doubts) refuse exactly what explain's full check refuses. */
+START_TEST(test_checks_agree_with_explain_at_the_borders)
+{
+    for (size_t k = 0; k < fricreg_element_count(); k++)
+        for (size_t ns = 1; ns <= NS; ns += NS - 1) {
+            const fricreg_element_type *t = fricreg_element_sliders(fricreg_element_at(k), ns);
+            if (t == NULL)
+                continue;
+            unsigned long seed = 99;
+            size_t dim = (size_t)fricreg_element_dim(t), np = fricreg_element_nparams(t);
+            size_t nst = fricreg_element_nstate(t), n = np + nst + dim;
+            double base[MAXP + MAXS + 3], x[MAXP + MAXS + 3];
+            point_params(t, &seed, base);
+            for (size_t j = np; j < n; j++)
+                base[j] = uniform(&seed, -0.5, 0.5);
+            for (size_t v = 0; v < NBORDER; v++) {
+                /* j = n, n + 1, n + 2: every k_s, every b_s, every component of u */
+                for (size_t j = 0; j <= n + 2; j++) {
+                    memcpy(x, base, n * sizeof *x);
+                    if (j < n)
+                        x[j] = BORDER_VALUES[v];
+                    else if (j == n + 2)
+                        for (size_t a = 0; a < dim; a++)
+                            x[np + nst + a] = BORDER_VALUES[v];
+                    else if (np > 1)
+                        for (size_t s = 0; s < ns; s++)
+                            x[(j - n) * ns + s] = BORDER_VALUES[v];
+                    agrees_with_explain(t, base, x, x + np, x + np + nst,
+                                        j < np || j == n || j == n + 1);
+                }
+            }
+        }
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("element_batch");
@@ -182,6 +274,7 @@ int main(void)
     tcase_add_test(tc, test_every_type_equals_its_points);
     tcase_add_test(tc, test_jenkins_loops_at_once);
     tcase_add_test(tc, test_failures_write_nothing);
+    tcase_add_test(tc, test_checks_agree_with_explain_at_the_borders);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);
     srunner_run_all(sr, CK_NORMAL);

@@ -64,14 +64,18 @@ struct fr_element_kind {
     void (*slider_tangents)(const fricreg_element_type *type, const double *params,
                             const double *state, const double *u, double *ts, double *tw,
                             double *state_out);
-    /* fricreg_element_eval_batch once its arrays and stride are vetted (fricreg_element_eval
-     * is its npoints = 1): check's status at the first point it refuses (its index into *bad,
+    /* fricreg_element_eval_batch once its arrays and stride are vetted: check's status at the first point it refuses (its index into *bad,
      * nothing else written), else eval at every point, bit for bit; point i's params at
      * params + params_stride i. A law's own loop, eval inlined; NULL: check and eval per point
      * (element_batch.c). */
     int (*batch)(const fricreg_element_type *type, size_t npoints, const double *params,
                  size_t params_stride, const double *state_in, const double *u, double *f,
                  double *dfdu, double *dfdp, double *state_out, size_t *bad);
+    /* fricreg_element_eval once its pointers are vetted: check's status, nothing written if it
+     * refuses, else eval's results. The law's own check and eval in one call; NULL: check,
+     * then eval (element.c). */
+    int (*point)(const fricreg_element_type *type, const double *params, const double *state_in,
+                 const double *u, double *f, double *dfdu, double *dfdp, double *state_out);
     /* The march's tangents of a law with state that is not sliders' (at most
      * FR_STATE_TANGENTS_MAX states; slider_tangents NULL), at checked params, state and u:
      * d f / d u into fu[dim dim], d f / d state into fs[dim nstate], d state' / d u into

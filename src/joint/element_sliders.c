@@ -4,8 +4,8 @@
  * iwan_3d, iwan_normal), all ns sliders in parallel on the tangential components, each slider
  * slider.h's return mapping, with or without the normal law of lift-off. The sums run over the sliders in order, as fricreg_iwan
  * and the structure's elements sum them, so that their answers agree bit for bit. */
-#include <float.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -167,40 +167,87 @@ static void normal_columns(const double *p, size_t ns, int td, double gg, const 
 
 #if defined(__GNUC__)
 #define FR_ALWAYS_INLINE static inline __attribute__((always_inline))
+#define FR_NOINLINE __attribute__((noinline))
 #else
 #define FR_ALWAYS_INLINE static inline
+#define FR_NOINLINE
 #endif
 
-/* 1 where check surely accepts these inputs of ns sliders on td tangential components, with
- * the normal law or not (0: check decides, and says why): check's tests without their
- * messages, each slider's independent of the others' (a loop without branches), with
- * bounds that imply check's: |u_a - w_a| < 2^1022 for each component in place of |u_t - w_s|
- * finite (the norm is then below sqrt(3) 2^1022), k_s and b_s below 2^1012 in place of their
- * sums finite (ns <= 2^10 terms), and the normal law's products bounded through ns max b_s,
- * which bounds sum b_s (rounding aside: the bounds keep a factor 2^3 in hand). */
-FR_ALWAYS_INLINE int fast_ok(size_t ns, int td, int normal, const double *p, const double *w,
-                             const double *u)
+/* The fast check: a word whose bit 63 is clear where check surely accepts these parameters of
+ * ns sliders, with the normal law or not, and these inputs (set: check decides, and says why).
+ * It is check's tests without their messages, each slider's independent of the others', with
+ * bounds that imply check's: k_s and b_s below 2^1012 in place of their sums finite (ns <= 2^10
+ * terms), |u_a - w_a| < 2^1022 for each component in place of |u_t - w_s| finite (the norm is
+ * then below sqrt(3) 2^1022, and u_a and w_a are finite), and the normal law's products
+ * bounded through ns max b_s, which bounds sum b_s (rounding aside: the bounds keep a factor
+ * 2^3 in hand). The range tests compare a double's bits as an integer, so that loops or-ing
+ * them vectorize (floating comparisons that honour NaN do not): a nonnegative double orders as
+ * its bits, below +inf's and NaN's, and a negative one, -0 included, has bit 63 set. */
+static inline uint64_t bits_of(double x)
 {
-    int ok = 1;
+    uint64_t bits;
+    memcpy(&bits, &x, sizeof bits);
+    return bits;
+}
+
+#define FR_SIGN_BIT (UINT64_C(1) << 63)
+#define FR_BITS_2_1012 (UINT64_C(2035) << 52) /* bits_of(0x1p1012) */
+#define FR_BITS_2_1022 (UINT64_C(2045) << 52) /* bits_of(0x1p1022) */
+
+/* Bit 63 set unless 0 <= x < c, c a positive double's bits (x = -0 and NaN set it). */
+static inline uint64_t doubt_nonneg_below(double x, uint64_t c)
+{
+    uint64_t b = bits_of(x);
+    return b | (b + (FR_SIGN_BIT - c));
+}
+
+/* Bit 63 set unless 0 < x < c. */
+static inline uint64_t doubt_positive_below(double x, uint64_t c)
+{
+    uint64_t b = bits_of(x);
+    return b | (b - 1) | (b + (FR_SIGN_BIT - c));
+}
+
+/* Bit 63 set unless |x| < c. */
+static inline uint64_t doubt_abs_below(double x, uint64_t c)
+{
+    return (bits_of(x) & ~FR_SIGN_BIT) + (FR_SIGN_BIT - c);
+}
+
+/* The parameters' part, once for parameters that points share; with the normal law, *bound
+ * is ns max b_s, which the displacements' part needs (left alone without it). */
+FR_ALWAYS_INLINE uint64_t fast_params_doubt(size_t ns, int normal, const double *p, double *bound)
+{
+    uint64_t doubt = 0;
+    for (size_t s = 0; s < ns; s++)
+        doubt |= doubt_positive_below(p[s], FR_BITS_2_1012) |
+                 doubt_nonneg_below(p[ns + s], FR_BITS_2_1012);
+    if (!normal)
+        return doubt;
     double max_b = 0.0;
-    for (int a = 0; a < td + normal; a++)
-        ok &= fabs(u[a]) <= DBL_MAX;
-    for (size_t s = 0; s < ns; s++) {
-        double k = p[s], b = p[ns + s];
-        ok &= (k > 0.0) & (k < 0x1p1012) & (b >= 0.0) & (b < 0x1p1012);
-        max_b = b > max_b ? b : max_b;
-        for (int a = 0; a < td; a++) {
-            double wa = w[(size_t)td * s + (size_t)a];
-            ok &= (fabs(wa) <= DBL_MAX) & (fabs(u[a] - wa) < 0x1p1022);
-        }
-    }
-    if (!normal || !ok)
-        return ok;
-    double kn = p[2 * ns], n0 = p[2 * ns + 1], gap = p[2 * ns + 2], gg = u[td] - gap;
-    double nc = n0 + kn * gg, bound = (double)ns * max_b; /* >= sum b_s to rounding */
-    return kn >= 0.0 && kn <= DBL_MAX && fabs(n0) <= DBL_MAX && fabs(gap) <= DBL_MAX &&
-           (n0 == 0.0 || gap == 0.0) && fabs(gg) <= DBL_MAX && fabs(nc) <= DBL_MAX &&
-           bound * kn < 0x1p1020 && bound * fabs(nc) < 0x1p1020 && bound * fabs(gg) < 0x1p1020;
+    for (size_t s = 0; s < ns; s++)
+        max_b = p[ns + s] > max_b ? p[ns + s] : max_b;
+    *bound = (double)ns * max_b; /* >= sum b_s to rounding */
+    double kn = p[2 * ns], n0 = p[2 * ns + 1], gap = p[2 * ns + 2];
+    int ok = (kn >= 0.0) & (*bound * kn < 0x1p1020) & ((n0 == 0.0) | (gap == 0.0));
+    return doubt | (uint64_t)!ok << 63;
+}
+
+/* The displacements' part at the parameters' bound. bound |g - gap| and bound |n0 + kn (g -
+ * gap)| below 2^1020 also say that g, gap, n0 and the normal force are finite (an infinite or
+ * NaN factor makes the product infinite or NaN, 0 times it too). */
+FR_ALWAYS_INLINE uint64_t fast_u_doubt(size_t ns, int td, int normal, const double *p, double bound,
+                                       const double *w, const double *u)
+{
+    uint64_t doubt = 0;
+    for (size_t s = 0; s < ns; s++)
+        for (int a = 0; a < td; a++)
+            doubt |= doubt_abs_below(u[a] - w[(size_t)td * s + (size_t)a], FR_BITS_2_1022);
+    if (!normal)
+        return doubt;
+    double kn = p[2 * ns], n0 = p[2 * ns + 1], gg = u[td] - p[2 * ns + 2], nc = n0 + kn * gg;
+    int ok = (bound * fabs(gg) < 0x1p1020) & (bound * fabs(nc) < 0x1p1020);
+    return doubt | (uint64_t)!ok << 63;
 }
 
 /* eval's work for ns sliders on td tangential components, with the normal law or not: the
@@ -218,7 +265,7 @@ FR_ALWAYS_INLINE void eval_sliders(size_t ns, int td, int normal, const double *
         gg = u[td] - p[2 * ns + 2];
         double nc = p[2 * ns + 1] + kn * gg;
         open = nc < 0.0;
-        N = fmax(0.0, nc);
+        N = 0.0 > nc ? 0.0 : nc; /* fmax(0, nc) of a finite nc, inline */
     }
     double ft[3] = {0.0, 0.0, 0.0}, t[9] = {0.0}, tg[3] = {0.0, 0.0, 0.0},
            sum_n[3] = {0.0, 0.0, 0.0};
@@ -279,9 +326,26 @@ FR_ALWAYS_INLINE void eval_sliders(size_t ns, int td, int normal, const double *
     }
 }
 
-/* fricreg_element_eval_batch's work once the arrays and the stride are vetted (element_batch.c;
- * fricreg_element_eval's at npoints = 1): every point checked, fast_ok first and check where
- * it doubts, then every point evaluated. On failure *bad is the first bad point. */
+/* 1 where the fast check vouches for every point: one pass without branches (the shared
+ * parameters' part once), which the compiler can vectorize. */
+FR_ALWAYS_INLINE int all_fast_ok(size_t ns, int td, int normal, size_t npoints, const double *p,
+                                 size_t p_stride, const double *state_in, const double *u)
+{
+    size_t dim = (size_t)(td + normal), nstate = (size_t)td * ns;
+    double bound = 0.0;
+    uint64_t doubt = p_stride == 0 ? fast_params_doubt(ns, normal, p, &bound) : 0;
+    for (size_t i = 0; i < npoints; i++) {
+        const double *pi = p + p_stride * i;
+        if (p_stride != 0)
+            doubt |= fast_params_doubt(ns, normal, pi, &bound);
+        doubt |= fast_u_doubt(ns, td, normal, pi, bound, state_in + nstate * i, u + dim * i);
+    }
+    return !(doubt >> 63);
+}
+
+/* fricreg_element_eval_batch's work once the arrays and the stride are vetted
+ * (element_batch.c): every point checked, the fast check of them all first and check point by
+ * point where it doubts, then every point evaluated. On failure *bad is the first bad point. */
 FR_ALWAYS_INLINE int batch_sliders(const fricreg_element_type *type, size_t ns, int td, int normal,
                                    size_t npoints, const double *p, size_t p_stride,
                                    const double *state_in, const double *u, double *f, double *dfdu,
@@ -289,15 +353,15 @@ FR_ALWAYS_INLINE int batch_sliders(const fricreg_element_type *type, size_t ns, 
 {
     size_t dim = (size_t)(td + normal), nstate = (size_t)td * ns;
     size_t np = 2 * ns + (normal ? 3 : 0);
-    for (size_t i = 0; i < npoints; i++) {
-        const double *pi = p + p_stride * i, *wi = state_in + nstate * i, *ui = u + dim * i;
-        int status = fast_ok(ns, td, normal, pi, wi, ui) ? FRICREG_OK
-                                                         : check(type, pi, wi, ui, NULL, 0);
-        if (status != FRICREG_OK) {
-            *bad = i;
-            return status;
+    if (!all_fast_ok(ns, td, normal, npoints, p, p_stride, state_in, u))
+        for (size_t i = 0; i < npoints; i++) { /* the first point check refuses, if any */
+            const double *pi = p + p_stride * i, *wi = state_in + nstate * i, *ui = u + dim * i;
+            int status = check(type, pi, wi, ui, NULL, 0);
+            if (status != FRICREG_OK) {
+                *bad = i;
+                return status;
+            }
         }
-    }
     if (dfdp == NULL) /* the usual call: its own loop, the derivatives in p compiled out */
         for (size_t i = 0; i < npoints; i++)
             eval_sliders(ns, td, normal, p + p_stride * i, state_in + nstate * i, u + dim * i,
@@ -311,27 +375,36 @@ FR_ALWAYS_INLINE int batch_sliders(const fricreg_element_type *type, size_t ns, 
     return FRICREG_OK;
 }
 
-/* batch_sliders at one point of one slider (fricreg_element_eval's call of a Jenkins type): the
- * same work without the loops. */
-FR_ALWAYS_INLINE int point_slider(const fricreg_element_type *type, int td, int normal,
-                                  const double *p, const double *state_in, const double *u,
-                                  double *f, double *dfdu, double *dfdp, double *state_out,
-                                  size_t *bad)
+/* A point the fast check doubts: check's status, and eval's work where it accepts. Out of line,
+ * so that the fast path saves no registers for its calls. */
+static FR_NOINLINE int check_then_eval(const fricreg_element_type *type, const double *p,
+                                       const double *state_in, const double *u, double *f,
+                                       double *dfdu, double *dfdp, double *state_out)
 {
-    if (!fast_ok(1, td, normal, p, state_in, u)) {
-        int status = check(type, p, state_in, u, NULL, 0);
-        if (status != FRICREG_OK) {
-            *bad = 0;
-            return status;
-        }
-    }
-    eval_sliders(1, td, normal, p, state_in, u, f, dfdu, dfdp, state_out, NULL);
+    int status = check(type, p, state_in, u, NULL, 0);
+    if (status == FRICREG_OK)
+        type->kind->eval(type, p, state_in, u, f, dfdu, dfdp, state_out, NULL);
+    return status;
+}
+
+/* fricreg_element_eval's work once the pointers are vetted (element.c): batch_sliders at one
+ * point, without the loops. */
+FR_ALWAYS_INLINE int point_sliders(const fricreg_element_type *type, size_t ns, int td, int normal,
+                                   const double *p, const double *state_in, const double *u,
+                                   double *f, double *dfdu, double *dfdp, double *state_out)
+{
+    double bound = 0.0;
+    uint64_t doubt = fast_params_doubt(ns, normal, p, &bound);
+    if ((doubt | fast_u_doubt(ns, td, normal, p, bound, state_in, u)) >> 63)
+        return check_then_eval(type, p, state_in, u, f, dfdu, dfdp, state_out);
+    eval_sliders(ns, td, normal, p, state_in, u, f, dfdu, dfdp, state_out, NULL);
     return FRICREG_OK;
 }
 
-/* eval and batch of one shape: td tangential components, the normal law or not (the kinds'
- * table below names them by dim and normal); batch unrolled for one slider, and for one
- * point of one slider. */
+/* eval, batch and point of one shape: td tangential components, the normal law or not (the
+ * kinds' table below names them by dim and normal); batch and point unrolled for one slider,
+ * the point's two forms in functions of their own, so that one slider's call pays for no
+ * registers the loop over sliders needs. */
 #define FR_SLIDER_SHAPE(dim, normal)                                                               \
     static void eval_##dim##_##normal(const fricreg_element_type *type, const double *p,           \
                                       const double *state_in, const double *u, double *f,          \
@@ -346,14 +419,35 @@ FR_ALWAYS_INLINE int point_slider(const fricreg_element_type *type, int td, int 
                                       const double *u, double *f, double *dfdu, double *dfdp,      \
                                       double *state_out, size_t *bad)                              \
     {                                                                                              \
-        if (type->ns == 1 && npoints == 1)                                                         \
-            return point_slider(type, (dim) - (normal), normal, p, state_in, u, f, dfdu, dfdp,     \
-                                state_out, bad);                                                   \
         if (type->ns == 1)                                                                         \
             return batch_sliders(type, 1, (dim) - (normal), normal, npoints, p, p_stride,          \
                                  state_in, u, f, dfdu, dfdp, state_out, bad);                      \
         return batch_sliders(type, type->ns, (dim) - (normal), normal, npoints, p, p_stride,       \
                              state_in, u, f, dfdu, dfdp, state_out, bad);                          \
+    }                                                                                              \
+    static FR_NOINLINE int point1_##dim##_##normal(const fricreg_element_type *type,               \
+                                                   const double *p, const double *state_in,        \
+                                                   const double *u, double *f, double *dfdu,       \
+                                                   double *dfdp, double *state_out)                \
+    {                                                                                              \
+        return point_sliders(type, 1, (dim) - (normal), normal, p, state_in, u, f, dfdu, dfdp,     \
+                             state_out);                                                           \
+    }                                                                                              \
+    static FR_NOINLINE int pointn_##dim##_##normal(const fricreg_element_type *type,               \
+                                                   const double *p, const double *state_in,        \
+                                                   const double *u, double *f, double *dfdu,       \
+                                                   double *dfdp, double *state_out)                \
+    {                                                                                              \
+        return point_sliders(type, type->ns, (dim) - (normal), normal, p, state_in, u, f, dfdu,    \
+                             dfdp, state_out);                                                     \
+    }                                                                                              \
+    static int point_##dim##_##normal(const fricreg_element_type *type, const double *p,           \
+                                      const double *state_in, const double *u, double *f,          \
+                                      double *dfdu, double *dfdp, double *state_out)               \
+    {                                                                                              \
+        return (type->ns == 1                                                                      \
+                    ? point1_##dim##_##normal                                                      \
+                    : pointn_##dim##_##normal)(type, p, state_in, u, f, dfdu, dfdp, state_out);    \
     }
 
 FR_SLIDER_SHAPE(1, 0)
@@ -430,21 +524,22 @@ static void slider_tangents(const fricreg_element_type *type, const double *p, c
 
 /* One kind per line: name, dim, normal, family, sizes, harmonic balance's AFT, and the slider
  * tangents of the march (MARCH's only); eval and batch are its shape's (dim, normal). */
-#define FR_SLIDER_KIND(id, dim_, normal_, family_, params, state, aft_, tangents)    \
-    const struct fr_element_kind fr_element_##id = {.name = #id,                     \
-                                                    .dim = dim_,                     \
-                                                    .normal = normal_,               \
-                                                    .family = family_,               \
-                                                    .aft = FR_ELEMENT_AFT_##aft_,    \
-                                                    .nparams = params,               \
-                                                    .nstate = state,                 \
-                                                    .check = check,                  \
-                                                    .eval = eval_##dim_##_##normal_, \
-                                                    .elastic = elastic,              \
-                                                    .project = project,              \
-                                                    .stored = stored,                \
-                                                    .slider_tangents = tangents,     \
-                                                    .batch = batch_##dim_##_##normal_};
+#define FR_SLIDER_KIND(id, dim_, normal_, family_, params, state, aft_, tangents)      \
+    const struct fr_element_kind fr_element_##id = {.name = #id,                       \
+                                                    .dim = dim_,                       \
+                                                    .normal = normal_,                 \
+                                                    .family = family_,                 \
+                                                    .aft = FR_ELEMENT_AFT_##aft_,      \
+                                                    .nparams = params,                 \
+                                                    .nstate = state,                   \
+                                                    .check = check,                    \
+                                                    .eval = eval_##dim_##_##normal_,   \
+                                                    .elastic = elastic,                \
+                                                    .project = project,                \
+                                                    .stored = stored,                  \
+                                                    .slider_tangents = tangents,       \
+                                                    .batch = batch_##dim_##_##normal_, \
+                                                    .point = point_##dim_##_##normal_};
 
 FR_SLIDER_KIND(jenkins, 1, 0, 0, params_plain, state_1, SLIDERS, NULL)
 FR_SLIDER_KIND(jenkins_2d, 2, 0, 0, params_plain, state_2, MARCH, slider_tangents)

@@ -73,6 +73,13 @@ static double stored(const fricreg_element_type *type, const double *p, const do
     return normal ? sum : sum + 0.5 * f[0] * (f[0] / p[0]);
 }
 
-const struct fr_element_kind fr_element_spring = {
-    "spring", 1,    0,    0,   FR_ELEMENT_AFT_MARCH, one, none, check, eval, elastic, project,
-    stored,   NULL, NULL, NULL};
+const struct fr_element_kind fr_element_spring = {.name = "spring",
+                                                  .dim = 1,
+                                                  .aft = FR_ELEMENT_AFT_MARCH,
+                                                  .nparams = one,
+                                                  .nstate = none,
+                                                  .check = check,
+                                                  .eval = eval,
+                                                  .elastic = elastic,
+                                                  .project = project,
+                                                  .stored = stored};

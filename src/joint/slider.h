@@ -54,17 +54,24 @@ static inline int fr_slider_return(double kt, double b, double dbdg, int dim, co
                 t[a] = (a % (dim + 1) == 0) ? kt : 0.0;
         return 0;
     }
-    double nrm[3] = {d[0] / r, d[1] / r, d[2] / r}, s = b / r;
+    double nrm[3] = {0.0, 0.0, 0.0};
+    for (int a = 0; a < dim;
+         a++) /* dim's divisions only: the caller's constant dim drops the rest */
+        nrm[a] = d[a] / r;
     for (int a = 0; a < dim; a++) {
         f[a] = b * nrm[a];
         w[a] = ui[a] - f[a] / kt;
         if (dfdg != NULL)
             dfdg[a] = dbdg * nrm[a];
     }
-    if (t != NULL) /* kt (b/|f_tr|)(I - n n^T) = (b/|d|)(I - n n^T); 0 in 1-D */
+    if (t != NULL && dim == 1) /* kt (b/|f_tr|)(I - n n^T) = (b/|d|)(I - n n^T): 0 in 1-D */
+        t[0] = 0.0;
+    else if (t != NULL) {
+        double s = b / r;
         for (int a = 0; a < dim; a++)
             for (int c = 0; c < dim; c++)
-                t[dim * a + c] = dim == 1 ? 0.0 : s * ((a == c) - nrm[a] * nrm[c]);
+                t[dim * a + c] = s * ((a == c) - nrm[a] * nrm[c]);
+    }
     return 1;
 }
 
