@@ -244,8 +244,8 @@ FRICREG_API int fricreg_element_eval(const fricreg_element_type *type, const dou
  *
  *  Every point is checked before any output is written, so a failed call writes nothing but
  *  *bad_point; fricreg_element_explain on that point's inputs says why. Shared parameters
- *  (params_stride 0) are checked once a call. npoints = 0 does
- *  nothing and returns FRICREG_OK (the arrays may then be NULL).
+ *  (params_stride 0) are checked once a call. npoints = 0 does nothing and returns FRICREG_OK
+ *  (the arrays may then be NULL).
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if type, params, state_in, u, f or state_out is NULL
  *  (npoints > 0); FRICREG_EINVAL if params_stride is neither 0 nor >= nparams, or a point's

@@ -64,10 +64,10 @@ struct fr_element_kind {
     void (*slider_tangents)(const fricreg_element_type *type, const double *params,
                             const double *state, const double *u, double *ts, double *tw,
                             double *state_out);
-    /* fricreg_element_eval_batch once its arrays and stride are vetted: check's status at the first point it refuses (its index into *bad,
-     * nothing else written), else eval at every point, bit for bit; point i's params at
-     * params + params_stride i. A law's own loop, eval inlined; NULL: check and eval per point
-     * (element_batch.c). */
+    /* fricreg_element_eval_batch once its arrays and stride are vetted: check's status at the
+     * first point it refuses (its index into *bad, nothing else written), else eval at every
+     * point, bit for bit; point i's params at params + params_stride i. A law's own loop, eval
+     * inlined; NULL: check and eval per point (element_batch.c). */
     int (*batch)(const fricreg_element_type *type, size_t npoints, const double *params,
                  size_t params_stride, const double *state_in, const double *u, double *f,
                  double *dfdu, double *dfdp, double *state_out, size_t *bad);

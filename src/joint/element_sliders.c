@@ -2,8 +2,9 @@
 /* element_sliders.c — the element types made of Jenkins sliders (fricreg_element.h): jenkins,
  * jenkins_2d, jenkins_3d, jenkins_normal, contact_3d and the Iwan families (iwan, iwan_2d,
  * iwan_3d, iwan_normal), all ns sliders in parallel on the tangential components, each slider
- * slider.h's return mapping, with or without the normal law of lift-off. The sums run over the sliders in order, as fricreg_iwan
- * and the structure's elements sum them, so that their answers agree bit for bit. */
+ * slider.h's return mapping, with or without the normal law of lift-off. The sums run over the
+ * sliders in order, as fricreg_iwan and the structure's elements sum them, so that their
+ * answers agree bit for bit. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -523,7 +524,7 @@ static void slider_tangents(const fricreg_element_type *type, const double *p, c
 }
 
 /* One kind per line: name, dim, normal, family, sizes, harmonic balance's AFT, and the slider
- * tangents of the march (MARCH's only); eval and batch are its shape's (dim, normal). */
+ * tangents of the march (MARCH's only); eval, batch and point are its shape's (dim, normal). */
 #define FR_SLIDER_KIND(id, dim_, normal_, family_, params, state, aft_, tangents)      \
     const struct fr_element_kind fr_element_##id = {.name = #id,                       \
                                                     .dim = dim_,                       \
