@@ -3,17 +3,17 @@
 # The CalculiX tier's set-up (fixture calculix): Debian's source of ccx 2.20, built twice in
 # WORK_DIR, privately (ccx is GPL-2.0-only: never installed, never shipped; README.md here):
 #   WORK_DIR/stock/ccx     debian/rules build, unchanged (the reference)
-#   WORK_DIR/patched/ccx   the same objects with ccx-fricreg.patch applied (its four friction
-#                          blocks call fricreg's FRELEV), relinked with libfricreg_fortran and
+#   WORK_DIR/patched/ccx   the same objects with ccx-fricreg.patch applied (each surface
+#                          interaction's law from the job's laws file, JOB.fricreg, through
+#                          fricreg's hook frccx.c here, compiled and linked in), relinked with
 #                          libfricreg; run-path to FRICREG_LIB_DIR
-#   WORK_DIR/patched-iwan/ccx  the same with ccx-iwan.patch on top (the four blocks call
-#                          fricreg's Iwan hook FRCCXI, frccxi.f here, compiled and linked in;
-#                          *CONTACT PRINT with 17 digits): test calculix_iwan's ccx
-# The stock build (about 8 minutes on two cores) is kept between runs; the patched copy is
-# made again from it every run (seconds), so it always holds the patch and the library of
-# this tree. Needs the build dependencies and a deb-src entry (the README's command).
-# Usage: build.sh WORK_DIR PATCH FRICREG_FI_DIR FRICREG_LIB_DIR FRICREG_FORTRAN_LIB_DIR
-work=$1 patch=$2 fi_dir=$3 lib=$4 flib=$5
+# The stock build (about 8 minutes on two busy cores, 80 s on an idle fast machine) is kept
+# between runs; the patched copy is made again from it every run (seconds), so it always holds
+# the patch and the library of this tree. Needs the build dependencies and a deb-src entry (the
+# README's command).
+# Usage: build.sh WORK_DIR PATCH HOOK FRICREG_INCLUDE_DIR FRICREG_GENERATED_INCLUDE_DIR
+#                 FRICREG_LIB_DIR
+work=$1 patch=$2 hook=$3 inc=$4 geninc=$5 lib=$6
 version=2.20
 src=calculix-ccx-$version
 mkdir -p "$work" || exit 1
@@ -23,7 +23,7 @@ log=$work/build.log
 say() { echo "$*"; echo "$*" >>"$log"; }
 fail() { echo "FAIL: $*"; tail -n 30 "$log"; echo "0 passed, 1 failed"; exit 1; }
 
-for tool in apt-get dpkg-source gfortran patch make; do
+for tool in apt-get dpkg-source gfortran gcc patch make; do
     command -v $tool >/dev/null || fail "no $tool: install the build dependencies (README.md)"
 done
 if [ ! -d source/$src ]; then
@@ -43,41 +43,25 @@ if [ ! -x stock/ccx ]; then
     say "stock ccx built in $(($(date +%s) - start)) s"
 fi
 
-# The patched copy: the stock tree's objects, the four patched files newer than theirs, so
-# debian/rules build (its stamp removed) recompiles those four and relinks. fricreg.fi comes
-# through FFLAGS, the libraries through LDFLAGS (dpkg-buildflags' _APPEND variables, read by
-# debian/rules); ccx's link line puts LDFLAGS after its own libraries.
+# The patched copy: the stock tree's objects, the patched files newer than theirs, so
+# debian/rules build (its stamp removed) recompiles those and relinks. The hook's object and the
+# library come through LDFLAGS (dpkg-buildflags' _APPEND variable, read by debian/rules); ccx's
+# link line puts LDFLAGS after its own objects and libraries.
 say "patching and relinking ccx against $lib/libfricreg"
 rm -rf patched-tree patched && cp -a stock-tree patched-tree &&
     rm -f patched-tree/debian/debhelper-build-stamp patched-tree/ccx_$version/src/ccx_$version &&
     patch -d patched-tree -p1 <"$patch" >>"$log" 2>&1 || fail "the patch does not apply"
+mkdir -p patched &&
+    gcc -std=c99 -O2 -Wall -Wextra -Wpedantic -Werror -I"$inc" -I"$geninc" -c "$hook" \
+        -o patched/frccx.o >>"$log" 2>&1 || fail "frccx.c does not compile without warnings"
 (cd patched-tree &&
-    DEB_BUILD_OPTIONS=parallel=2 DEB_FFLAGS_APPEND="-I$fi_dir" \
-    DEB_LDFLAGS_APPEND="-L$flib -L$lib -Wl,-rpath,$lib -lfricreg_fortran -lfricreg" \
+    DEB_BUILD_OPTIONS=parallel=2 \
+    DEB_LDFLAGS_APPEND="$work/patched/frccx.o -L$lib -Wl,-rpath,$lib -lfricreg" \
     debian/rules build) >>"$log" 2>&1 || fail "the patched build"
-mkdir -p patched && cp patched-tree/ccx_$version/src/ccx_$version patched/ccx || fail "no patched binary"
-# The patched binary calls fricreg, and the stock one does not.
+cp patched-tree/ccx_$version/src/ccx_$version patched/ccx || fail "no patched binary"
+# The patched binary calls fricreg through the hook, and the stock one does not.
+nm patched/ccx | grep -q ' T frccxl_' || fail "the patched ccx has no frccxl"
 nm -u patched/ccx | grep -q fricreg_element_eval || fail "the patched ccx does not call fricreg"
 nm stock/ccx 2>/dev/null | grep -q fricreg && fail "the stock ccx calls fricreg"
-
-# The Iwan build: the stock tree with both patches, FRCCXI compiled with fricreg.fi (and
-# without a warning) and linked in through LDFLAGS (an object is linked wherever it stands).
-iwan_patch=$(dirname "$patch")/ccx-iwan.patch
-hook=$(dirname "$patch")/frccxi.f
-say "patching with ccx-iwan.patch and relinking into patched-iwan/ccx"
-rm -rf patched-iwan-tree patched-iwan && cp -a stock-tree patched-iwan-tree &&
-    rm -f patched-iwan-tree/debian/debhelper-build-stamp patched-iwan-tree/ccx_$version/src/ccx_$version &&
-    patch -d patched-iwan-tree -p1 <"$patch" >>"$log" 2>&1 &&
-    patch -d patched-iwan-tree -p1 <"$iwan_patch" >>"$log" 2>&1 || fail "ccx-iwan.patch does not apply"
-mkdir -p patched-iwan &&
-    gfortran -Wall -Werror -O2 -I"$fi_dir" -c "$hook" -o patched-iwan/frccxi.o >>"$log" 2>&1 ||
-    fail "frccxi.f does not compile without warnings"
-(cd patched-iwan-tree &&
-    DEB_BUILD_OPTIONS=parallel=2 DEB_FFLAGS_APPEND="-I$fi_dir" \
-    DEB_LDFLAGS_APPEND="$work/patched-iwan/frccxi.o -L$flib -L$lib -Wl,-rpath,$lib -lfricreg_fortran -lfricreg" \
-    debian/rules build) >>"$log" 2>&1 || fail "the patched-iwan build"
-cp patched-iwan-tree/ccx_$version/src/ccx_$version patched-iwan/ccx || fail "no patched-iwan binary"
-nm patched-iwan/ccx | grep -q ' T frccxi_' || fail "the patched-iwan ccx has no FRCCXI"
-nm -u patched-iwan/ccx | grep -q fricreg_element_eval || fail "the patched-iwan ccx does not call fricreg"
-say "stock, patched and patched-iwan ccx in $work"
+say "stock and patched ccx in $work"
 echo "1 passed, 0 failed"

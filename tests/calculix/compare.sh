@@ -1,23 +1,27 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-3.0-or-later
 # One deck through the stock and the patched ccx (build.sh), one thread each, and their
-# outputs compared: the same iterations (the .sta files, equal line for line), and every
-# number of the .dat and .frd files within TOL of its range (compare.awk). The runs stay in
-# RUN_DIR/stock and RUN_DIR/patched.
+# outputs compared. The patched run gets LAWS as its laws file (JOB.fricreg: each surface
+# interaction's law, README.md); then the same iterations (the .sta files, equal line for line)
+# and every number of the .dat and .frd files within TOL of its range (compare.awk). With LAWS
+# "-" the patched run has no laws file, so ccx's own code runs everywhere: its .dat and .sta
+# must equal stock's byte for byte, and its .frd too but for the date and time it records.
+# The runs stay in RUN_DIR/stock and RUN_DIR/patched.
 # With FRICREG_CCX_COUNTER (count_calls.c's module) the patched run counts its calls to fricreg.
-# Usage: compare.sh CCX_DIR DECK RUN_DIR [TOL]   (DECK: a .inp or .inp.gz file)
-ccx_dir=$1 deck=$2 run=$3 tol=${4:-1e-6}
+# Usage: compare.sh CCX_DIR DECK RUN_DIR LAWS [TOL]   (DECK: a .inp or .inp.gz file)
+ccx_dir=$1 deck=$2 run=$3 laws=$4 tol=${5:-1e-6}
 here=$(cd "$(dirname "$0")" && pwd)
 job=$(basename "$deck" .gz)
 job=${job%.inp}
-# One thread: two change ccx's own results by ~1e-7 (OpenMP and its CCX_NPROC_* pools).
-export OMP_NUM_THREADS=1 NUMBER_OF_PROCESSORS=1 CCX_NPROC_STIFFNESS=1 CCX_NPROC_RESULTS=1 \
-       CCX_NPROC_EQUATION_SOLVER=1 CCX_NPROC_CFD=1 CCX_NPROC_BIOTSAVART=1 CCX_NPROC_SENS=1
+. "$(dirname "$0")/one_thread.sh"
 fails=0
 for build in stock patched; do
     dir=$run/$build
     rm -rf "$dir" && mkdir -p "$dir" || exit 1
     zcat -f "$deck" >"$dir/$job.inp" || exit 1
+    if [ $build = patched ] && [ "$laws" != - ]; then
+        cp "$laws" "$dir/$job.fricreg" || exit 1
+    fi
     start=$(date +%s.%N)
     if [ $build = patched ] && [ -n "$FRICREG_CCX_COUNTER" ]; then
         (cd "$dir" && FRICREG_CCX_COUNTS=$dir/counts LD_PRELOAD=$FRICREG_CCX_COUNTER \
@@ -40,6 +44,24 @@ fi
     awk -v job="$job" '{printf "%s: fricreg_element_eval called %d times, sliding in %d, on the stick/slip border in %d\n", job, $2, $4, $6}' "$run/patched/counts"
 
 s=$run/stock/$job p=$run/patched/$job
+if [ "$laws" = - ]; then # ccx's own code in both: the same bytes
+    undated() { grep -v '^    1U\(DATE\|TIME\) ' "$1" | cksum; }
+    for ext in sta dat frd; do
+        [ -e "$s.$ext" ] || [ -e "$p.$ext" ] || continue
+        if [ "$(undated "$s.$ext")" = "$(undated "$p.$ext")" ]; then
+            echo "$job: no laws file: the .$ext file is stock's"
+        else
+            echo "FAIL: $job: no laws file, yet the .$ext file differs from stock's"
+            fails=$((fails + 1))
+        fi
+    done
+    if [ -s "$run/patched/counts" ]; then
+        echo "FAIL: $job: fricreg called without a laws file"
+        fails=$((fails + 1))
+    fi
+    [ $fails -eq 0 ] && echo "1 passed, 0 failed" || echo "0 passed, 1 failed"
+    exit $fails
+fi
 # the iterations: every increment's attempts and iterations, line for line
 if cmp -s "$s.sta" "$p.sta"; then
     echo "$job: the same increments and iterations ($(grep -c '^ *[0-9]' "$s.sta") increments)"
