@@ -1,11 +1,12 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* expm.c — the matrix exponential by scaling and squaring with the [13/13] Padé approximant
- * (N. J. Higham, "The scaling and squaring method for the matrix exponential revisited", SIAM
- * J. Matrix Anal. Appl. 26(4), 2005, Alg. 2.3 at its largest degree; MATLAB's expm to R2015):
- * A is scaled by 2^-s, s = max(0, ⌈log2(‖A‖₁/θ₁₃)⌉), θ₁₃ = 5.37, where the approximant
- * r₁₃ = (V − U)⁻¹ (V + U) is exact to the unit roundoff in backward error, and the result
- * squared s times. Six products and one solve, then the s squarings: BLAS dgemm and LAPACK
- * dgesv, in the caller's workspace.
+/* expm.c — the matrix exponential by scaling and squaring with Padé approximants (N. J. Higham,
+ * "The scaling and squaring method for the matrix exponential revisited", SIAM J. Matrix Anal.
+ * Appl. 26(4), 2005, Alg. 2.3; MATLAB's expm to R2015): for ‖A‖₁ ≤ θ_m, m = 3, 5, 7 or 9, the
+ * [m/m] approximant r_m(A) = (V − U)⁻¹ (V + U), exact to the unit roundoff in backward error;
+ * beyond θ₉, A scaled by 2^-s, s = max(0, ⌈log2(‖A‖₁/θ₁₃)⌉), the [13/13] one and the result
+ * squared s times. m = 3, 5, 7, 9, 13 take 2, 3, 4, 5, 6 products and one solve (BLAS dgemm,
+ * LAPACK dgesv) in the caller's workspace: a short piece of the monodromy, of small norm, costs
+ * a third of a long one's approximant.
  *
  * Why not a library's: LAPACK has no matrix exponential, and GSL's gsl_linalg_exponential_ss (a
  * Taylor series) allocates its scratch through GSL, whose failure reaches the process-wide
@@ -16,8 +17,18 @@
 #include "base/lapack.h"
 #include "expm.h"
 
-/* θ₁₃ and the coefficients b₀ .. b₁₃ of the [13/13] Padé approximant (Higham 2005, Table 2.3
- * and eq. 2.4). */
+/* The degrees m below 13, their θ_m, and the coefficients b₀ .. b_m of their [m/m] Padé
+ * approximants (Higham 2005, Table 2.3 and eq. 2.4). */
+static const double THETA[4] = {1.495585217958292e-2, 2.539398330063230e-1, 9.504178996162932e-1,
+                                2.097847961257068};
+static const double PADE_LOW[4][10] = {{120.0, 60.0, 12.0, 1.0},
+                                       {30240.0, 15120.0, 3360.0, 420.0, 30.0, 1.0},
+                                       {17297280.0, 8648640.0, 1995840.0, 277200.0, 25200.0, 1512.0,
+                                        56.0, 1.0},
+                                       {17643225600.0, 8821612800.0, 2075673600.0, 302702400.0,
+                                        30270240.0, 2162160.0, 110880.0, 3960.0, 90.0, 1.0}};
+
+/* θ₁₃ and the coefficients b₀ .. b₁₃ of the [13/13] Padé approximant. */
 static const double THETA13 = 5.371920351148152;
 static const double PADE[14] = {64764752532480000.0,
                                 32382376266240000.0,
@@ -61,19 +72,72 @@ size_t fr_hb_expm_work(size_t p)
     return 6 * p * p;
 }
 
-int fr_hb_expm(const double *A, size_t p, double *E, double *work, int *piv)
+/* E = r(A) = (V − U)⁻¹ (V + U) from V and U (A2 and E as scratch): dgesv's INFO. */
+static int pade_solve(int n, double *U, double *V, double *A2, double *E, int *piv)
 {
-    size_t pp = p * p;
-    int n = (int)p, info = 0;
-    double norm = 0.0; /* ‖A‖₁, the largest column sum (of A^T's rows alike: the bound holds) */
+    size_t pp = (size_t)n * (size_t)n;
+    int info = 0;
+    for (size_t i = 0; i < pp; i++) { /* (V − U) X = V + U: X into E */
+        A2[i] = V[i] - U[i];
+        E[i] = V[i] + U[i];
+    }
+    dgesv_(&n, &n, A2, &n, piv, E, &n, &info);
+    return info;
+}
+
+/* r_m(A) into E for m = 3, 5, 7, 9 (degree index d = 0 .. 3): the even powers A², .., A^(m−1),
+ * V = Σ b_2k A^2k and U = A Σ b_(2k+1) A^2k (Higham 2005, eq. 2.4 and Alg. 2.3). */
+static int pade_low(const double *A, size_t p, int d, double *E, double *work, int *piv)
+{
+    size_t pp = p * p, top = (size_t)d + 1; /* the even powers A^2 .. A^(2 top) */
+    int n = (int)p;
+    const double *b = PADE_LOW[d];
+    double *pow = work, *U = work + 4 * pp, *V = work + 5 * pp; /* pow: A², A⁴, A⁶, A⁸ */
+    product(n, A, A, pow);
+    for (size_t k = 1; k < top; k++) /* A^(2k+2) = A^2k A² */
+        product(n, pow + (k - 1) * pp, pow, pow + k * pp);
+    for (size_t i = 0; i < pp; i++) {
+        double v = 0.0, u = 0.0;
+        for (size_t k = 0; k < top; k++) {
+            v += b[2 * k + 2] * pow[k * pp + i];
+            u += b[2 * k + 3] * pow[k * pp + i];
+        }
+        V[i] = v;
+        E[i] = u;
+    }
+    for (size_t i = 0; i < p; i++) {
+        V[i * p + i] += b[0];
+        E[i * p + i] += b[1];
+    }
+    product(n, A, E, U);
+    return pade_solve(n, U, V, pow, E, piv);
+}
+
+/* ‖A‖₁, the largest column sum (of A^T's rows alike: the bounds hold), or infinity. */
+static double norm1(const double *A, size_t p)
+{
+    double norm = 0.0;
     for (size_t j = 0; j < p; j++) {
         double sum = 0.0;
         for (size_t i = 0; i < p; i++)
             sum += fabs(A[j * p + i]);
         if (!(sum < INFINITY))
-            return -1;
+            return INFINITY;
         norm = fmax(norm, sum);
     }
+    return norm;
+}
+
+int fr_hb_expm(const double *A, size_t p, double *E, double *work, int *piv)
+{
+    size_t pp = p * p;
+    int n = (int)p;
+    double norm = norm1(A, p);
+    if (!(norm < INFINITY))
+        return -1;
+    for (int d = 0; d < 4; d++)
+        if (norm <= THETA[d])
+            return pade_low(A, p, d, E, work, piv);
     int s = norm > THETA13 ? (int)ceil(log2(norm / THETA13)) : 0;
     double *A1 = work, *A2 = A1 + pp, *A4 = A2 + pp, *A6 = A4 + pp, *U = A6 + pp, *V = U + pp;
     for (size_t i = 0; i < pp; i++)
@@ -98,11 +162,7 @@ int fr_hb_expm(const double *A, size_t p, double *E, double *work, int *piv)
     for (size_t i = 0; i < pp; i++)
         E[i] += U[i];
     product(n, A1, E, U);
-    for (size_t i = 0; i < pp; i++) { /* (V − U) X = V + U: X into E */
-        A2[i] = V[i] - U[i];
-        E[i] = V[i] + U[i];
-    }
-    dgesv_(&n, &n, A2, &n, piv, E, &n, &info);
+    int info = pade_solve(n, U, V, A2, E, piv);
     if (info != 0)
         return info;
     for (int k = 0; k < s; k++) {

@@ -51,6 +51,10 @@ struct fr_hb_mono {
     double *A, *E, *Phi, *T, *expm_work; /* [P P] each, expm's [6 P P] */
     double *eig_work, *wr, *wi;          /* [lwork], [P], [P] */
     size_t lwork;
+    /* linear_multipliers' last one-piece matrix (dt 1) [P P] and its eigenvalues [P], [P]:
+     * the all-stuck points of a branch share them (lin_order 0: none kept) */
+    double *lin_A, *lin_re, *lin_im;
+    size_t lin_order;
     int *piv;     /* [P] */
     double sigma; /* the pieces' velocities in units of σ (piece_matrix) */
     struct fr_hb_schedule sc;
@@ -76,7 +80,7 @@ static int reserve_order(fricreg_hb *hb, const char *fn, size_t n)
         return FRICREG_OK;
     fr_hb_monodromy_free(hb);
     w = calloc(1, sizeof *w);
-    size_t lwork = fr_hb_eigenvalues_work(P), mats = 3 * n * n + n * m + 10 * P * P;
+    size_t lwork = fr_hb_eigenvalues_work(P), mats = 3 * n * n + n * m + 11 * P * P + 2 * P;
     int ok = w != NULL;
     if (ok) {
         *w = (struct fr_hb_mono){.n = n, .m = m, .S = S, .P = P, .H = hb->H, .lwork = lwork};
@@ -99,6 +103,9 @@ static int reserve_order(fricreg_hb *hb, const char *fn, size_t n)
     w->Phi = w->E + P * P;
     w->T = w->Phi + P * P;
     w->expm_work = w->T + P * P;
+    w->lin_A = w->expm_work + 6 * P * P;
+    w->lin_re = w->lin_A + P * P;
+    w->lin_im = w->lin_re + P;
     w->wr = w->eig_work + lwork;
     w->wi = w->wr + P;
     return FRICREG_OK;
@@ -293,9 +300,31 @@ static int monodromy_matrix(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w
     return FRICREG_OK;
 }
 
-/* The 2n multipliers of Φ [P P] (destroyed) as exponents into out[2 + 4n], n the model's order,
- * with the verdict and the largest |μ| in out[0], out[1]: the S smallest |μ|, the sliders'
- * zeros, dropped; and after them the condensed model's truncated modes' (reduced). */
+/* The exponents into out[2 + 4n] from the kept multipliers' logarithms, log|μ| in re[P] and
+ * arg μ in im[P] (a NaN re: dropped), and after them the condensed model's truncated modes'
+ * (reduced); the verdict and the largest |μ| in out[0], out[1]. */
+static void exponents(fricreg_hb *hb, size_t P, const double *re, const double *im, double omega,
+                      int reduced, double *out)
+{
+    double T = FR_TWO_PI / omega, top = -INFINITY, *exps = out + 2; /* top: log max |μ| */
+    size_t kept = 0;
+    for (size_t i = 0; i < P; i++) {
+        if (isnan(re[i]))
+            continue;
+        top = fmax(top, re[i]);
+        exps[2 * kept] = re[i] / T;
+        exps[2 * kept + 1] = im[i] / T;
+        kept++;
+    }
+    size_t left_out = reduced ? fr_hb_reduction_truncated(hb, omega, exps + 2 * kept) : 0;
+    for (size_t i = kept; i < kept + left_out; i++)
+        top = fmax(top, exps[2 * i] * T);
+    out[0] = top <= FR_HB_STABLE_TOL ? 1.0 : 0.0;
+    out[1] = exp(top);
+}
+
+/* The 2n multipliers of Φ [P P] (destroyed) as exponents (exponents above): the S smallest
+ * |μ|, the sliders' zeros, dropped. */
 static int multipliers(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w, double omega,
                        int reduced, double *out)
 {
@@ -317,22 +346,48 @@ static int multipliers(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w, dou
                 low = i;
         w->wr[low] = NAN;
     }
-    double T = FR_TWO_PI / omega, top = 0.0, *exps = out + 2;
-    size_t kept = 0;
-    for (size_t i = 0; i < P; i++) {
+    for (size_t i = 0; i < P; i++) { /* μ into (log|μ|, arg μ), in place */
         if (isnan(w->wr[i]))
             continue;
-        double mod = hypot(w->wr[i], w->wi[i]);
-        top = fmax(top, mod);
-        exps[2 * kept] = log(fmax(mod, DBL_MIN)) / T;
-        exps[2 * kept + 1] = atan2(w->wi[i], w->wr[i]) / T;
-        kept++;
+        double mod = hypot(w->wr[i], w->wi[i]), arg = atan2(w->wi[i], w->wr[i]);
+        w->wr[i] = log(fmax(mod, DBL_MIN));
+        w->wi[i] = arg;
     }
-    size_t left_out = reduced ? fr_hb_reduction_truncated(hb, omega, exps + 2 * kept) : 0;
-    for (size_t i = kept; i < kept + left_out; i++)
-        top = fmax(top, exp(exps[2 * i] * T));
-    out[0] = log(top) <= FR_HB_STABLE_TOL ? 1.0 : 0.0;
-    out[1] = top;
+    exponents(hb, P, w->wr, w->wi, omega, reduced, out);
+    return FRICREG_OK;
+}
+
+/* An orbit without switches: Φ = e^{A T}, A the one piece's, whose multipliers are e^{λ T} for
+ * A's eigenvalues λ: the exponents from A's eigenvalues directly, without the exponential (its
+ * products and log2 ‖A T‖ squarings) and its rounding of the damped modes. A is the same at
+ * every point of a branch where the same sliders stick throughout (the same model, springs and
+ * σ): its eigenvalues are kept, and a point whose A equals the last one's reuses them. */
+static int linear_multipliers(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w, double omega,
+                              int reduced, double *out)
+{
+    size_t P = 2 * w->n; /* no slider switches: none in the state */
+    piece_matrix(hb, w, 1.0);
+    if (w->lin_order != P || memcmp(w->A, w->lin_A, P * P * sizeof *w->A) != 0) {
+        for (size_t i = 0; i < P * P; i++)
+            if (!isfinite(w->A[i]))
+                return fr_fail(hb, FRICREG_ENONFINITE,
+                               "%s: stability: the model's matrix overflows at Omega = %g", fn,
+                               omega);
+        w->lin_order = 0;
+        memcpy(w->lin_A, w->A, P * P * sizeof *w->A);
+        if (fr_hb_eigenvalues(w->A, P, w->lin_re, w->lin_im, w->eig_work, w->lwork) != 0)
+            return fr_fail(hb, FRICREG_EINTEGRATOR,
+                           "%s: stability: the QR iteration on the model's matrix did not "
+                           "converge at Omega = %g",
+                           fn, omega);
+        w->lin_order = P;
+    }
+    double T = FR_TWO_PI / omega;
+    for (size_t i = 0; i < P; i++) { /* λ T = (log|μ|, arg μ + 2π k): arg μ into (−π, π] */
+        w->wr[i] = w->lin_re[i] * T;
+        w->wi[i] = atan2(sin(w->lin_im[i] * T), cos(w->lin_im[i] * T));
+    }
+    exponents(hb, P, w->wr, w->wi, omega, reduced, out);
     return FRICREG_OK;
 }
 
@@ -354,6 +409,8 @@ int fr_hb_monodromy(fricreg_hb *hb, const char *fn, double omega, int condensed,
         sub_rank_one(w, t, t, -w->sc.stuck_k[i], w->MiK, w->n);
     }
     w->sigma = velocity_scale(w);
+    if (w->sc.count == 0)
+        return linear_multipliers(hb, fn, w, omega, condensed, out);
     if ((status = monodromy_matrix(hb, fn, w, omega)) != FRICREG_OK)
         return status;
     return multipliers(hb, fn, w, omega, condensed, out);
