@@ -500,6 +500,71 @@ START_TEST(jenkins_pair_exponents_against_shooting)
 }
 END_TEST
 
+/* The exponents of the linear pair M x'' + C x' + (K + k J^T J) x = 0 into lambda[2 n] as
+ * (Re, Im) pairs sorted by Re then Im: GSL's eigenvalues of its first-order matrix, the
+ * reference of the one-piece orbits below. */
+static void linear_exponents(const struct model *s, double k, double *lambda)
+{
+    size_t n = s->n, dz = 2 * n;
+    double A[4 * MAXN * MAXN] = {0};
+    for (size_t i = 0; i < n; i++) {
+        A[i * dz + n + i] = 1.0;
+        for (size_t j = 0; j < n; j++) { /* M diagonal */
+            double kij = s->K[i * n + j] + k * s->J[i] * s->J[j];
+            A[(n + i) * dz + j] = -kij / s->M[i * n + i];
+            A[(n + i) * dz + n + j] = -s->C[i * n + j] / s->M[i * n + i];
+        }
+    }
+    gsl_matrix_view Av = gsl_matrix_view_array(A, dz, dz);
+    gsl_vector_complex *ev = gsl_vector_complex_alloc(dz);
+    gsl_eigen_nonsymm_workspace *w = gsl_eigen_nonsymm_alloc(dz);
+    ck_assert_int_eq(gsl_eigen_nonsymm(&Av.matrix, ev, w), 0);
+    gsl_eigen_nonsymm_free(w);
+    for (size_t e = 0; e < dz; e++) {
+        lambda[2 * e] = GSL_REAL(gsl_vector_complex_get(ev, e));
+        lambda[2 * e + 1] = GSL_IMAG(gsl_vector_complex_get(ev, e));
+    }
+    gsl_vector_complex_free(ev);
+}
+
+static int by_re_im(const void *a, const void *b)
+{
+    const double *x = a, *y = b;
+    return x[0] != y[0] ? (x[0] > y[0]) - (x[0] < y[0]) : (x[1] > y[1]) - (x[1] < y[1]);
+}
+
+/* Orbits on which nothing switches, one after the other on one object whose model changes in
+ * between: the Jenkins pair with a slider that sticks throughout (slip force 100), then with
+ * none (slip force 0: it slides throughout, a fixed force of 0). Each orbit's exponents are its
+ * linear system's (the slider's spring in, then out), within 1e-9: the one-piece shortcut
+ * (monodromy.c) keeps the last matrix's eigenvalues and must not reuse them for a new matrix of
+ * the same order. Exponents wrap into Im in (−Ω/2, Ω/2]: the reference's too, at Ω = 3 above
+ * both pairs' frequencies (1 to 2.7 rad/s) only by whole multiples of Ω. */
+START_TEST(one_piece_orbits_follow_the_model)
+{
+    struct model s = jenkins_pair();
+    const double omega = 3.0, T = 2.0 * PI / omega, bounds[2] = {100.0, 0.0};
+    s.method = FRICREG_HB_STABILITY_MONODROMY;
+    fricreg_hb *hb = make(&s);
+    for (int k = 0; k < 2; k++) {
+        double mun[1] = {bounds[k]}, lambda[4 * MAXN], want[4 * MAXN], q[NC];
+        ck_assert_int_eq(fricreg_hb_set_elements(hb, s.ne, s.n, s.J, s.kt, mun), FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_solve(hb, omega, NC, NULL, q), FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_point_exponents(hb, FRICREG_HB_SOLUTION, 2 * s.n, lambda),
+                         FRICREG_OK);
+        linear_exponents(&s, k == 0 ? s.kt[0] : 0.0, want);
+        for (size_t e = 0; e < 2 * s.n; e++) /* the reference's Im wrapped as the exponents' */
+            want[2 * e + 1] = atan2(sin(want[2 * e + 1] * T), cos(want[2 * e + 1] * T)) / T;
+        qsort(lambda, 2 * s.n, 2 * sizeof *lambda, by_re_im);
+        qsort(want, 2 * s.n, 2 * sizeof *want, by_re_im);
+        for (size_t e = 0; e < 4 * s.n; e++)
+            ck_assert_msg(fabs(lambda[e] - want[e]) <= 1e-9, "slip force %g: %.12g against %.12g",
+                          bounds[k], lambda[e], want[e]);
+    }
+    fricreg_hb_free(hb);
+}
+END_TEST
+
 /* An Iwan element of two sliders (kt 2 and 1, slip forces 0.15 and 0.35) on the Jenkins pair's
  * dof 1, by the exact monodromy against the shooting with the sliders as two Jenkins elements:
  * each slider's offset its own state, its own switches. */
@@ -970,6 +1035,7 @@ Suite *hb_stability_suite(void)
     tcase_set_timeout(tc, 300);
     tcase_add_test(tc, jenkins_pair_against_shooting);
     tcase_add_test(tc, jenkins_pair_exponents_against_shooting);
+    tcase_add_test(tc, one_piece_orbits_follow_the_model);
     tcase_add_test(tc, iwan_pair_against_shooting);
     tcase_add_test(tc, gap_pair_against_shooting);
     tcase_add_test(tc, bilinear_against_shooting);
