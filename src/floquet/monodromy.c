@@ -409,7 +409,7 @@ int fr_hb_monodromy(fricreg_hb *hb, const char *fn, double omega, int condensed,
         sub_rank_one(w, t, t, -w->sc.stuck_k[i], w->MiK, w->n);
     }
     w->sigma = velocity_scale(w);
-    if (w->sc.count == 0)
+    if (w->sc.count == 0 && w->sc.S == 0) /* nothing switches: one piece */
         return linear_multipliers(hb, fn, w, omega, condensed, out);
     if ((status = monodromy_matrix(hb, fn, w, omega)) != FRICREG_OK)
         return status;
