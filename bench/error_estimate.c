@@ -50,8 +50,16 @@ struct config {
     double dt, rtol, atol, eps; /* rtol = 0: fixed step; eps = 0: the rule */
 };
 
+/* The runs' answer tolerance, the library's default (fricreg_sim_set_answer_rtol): a warning
+ * is right where the last cycle's D is off by more than it times |D|, beyond the reference's
+ * uncertainty, and a run more than 3 times off must warn (the warnings' precision and recall;
+ * a run warns for any cycle or the total, the count judges the last cycle). */
+#define ANSWER_RTOL 1e-2
+
 struct tally {
     int runs, failed, bounded, within10, warned, unbounded_unwarned, infinite;
+    int warned_right;    /* warned, and truly off by more than the answer tolerance */
+    int far, far_warned; /* truly off by more than 3 times it, and of those the warned */
 };
 
 /* The tallies by family: [0] fixed steps, central-imex and one-step adaptive; [1] GSL's
@@ -66,6 +74,9 @@ static void add(struct tally *to, const struct tally *t)
     to->within10 += t->within10;
     to->warned += t->warned;
     to->unbounded_unwarned += t->unbounded_unwarned;
+    to->warned_right += t->warned_right;
+    to->far += t->far;
+    to->far_warned += t->far_warned;
     to->infinite += t->infinite;
 }
 
@@ -127,6 +138,10 @@ static void run_one(const struct bench_problem *p, const struct bench_reference 
     one.within10 = within;
     one.warned = w;
     one.unbounded_unwarned = !bounded && !w;
+    double off = truth - ref->uncertainty; /* surely off by this much */
+    one.warned_right = w && off > ANSWER_RTOL * fabs(ref->D);
+    one.far = off > 3.0 * ANSWER_RTOL * fabs(ref->D);
+    one.far_warned = one.far && w;
     one.infinite = isinf(est);
     add(t, &one);
     if (strcmp(part, "main") == 0)
@@ -142,10 +157,13 @@ static void run_one(const struct bench_problem *p, const struct bench_reference 
 static void report(const char *what, const struct tally *t)
 {
     printf("# %s: %d runs (+%d failed): bounded %d (%.1f%%), within 10x %d (%.1f%%), warned %d, "
-           "unbounded without a warning %d, no estimate (companion failed) %d\n",
+           "unbounded without a warning %d, no estimate (companion failed) %d; warnings right "
+           "(the true error above the answer tolerance %g) %d of %d, runs more than 3x it off "
+           "warned %d of %d\n",
            what, t->runs, t->failed, t->bounded, 100.0 * t->bounded / (t->runs ? t->runs : 1),
            t->within10, 100.0 * t->within10 / (t->runs ? t->runs : 1), t->warned,
-           t->unbounded_unwarned, t->infinite);
+           t->unbounded_unwarned, t->infinite, ANSWER_RTOL, t->warned_right, t->warned,
+           t->far_warned, t->far);
 }
 
 /* The configurations of problem p: fixed steps under the rule and at set eps, adaptive
