@@ -7,8 +7,10 @@
 #include <string.h>
 
 #include <gsl/gsl_errno.h>
-#include <gsl/gsl_linalg.h>
 #include <gsl/gsl_odeiv2.h>
+
+#include "event_period.h"
+#include "orbit_state.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -47,62 +49,35 @@ static int rhs(double t, const double y[], double dy[], void *params)
 
 /* The switch function of the mode at y: negative until the switch (stick: the margin to
  * either bound; slip: the velocity against the slip's direction). */
-static double switch_function(const struct phase *ph, const double y[])
+static double until_switch(void *params, const double y[])
 {
+    const struct phase *ph = params;
     const struct jenkins_system *s = ph->sys;
     if (ph->mode == STICK)
         return fabs(s->kt * (row(s, y) - y[2 * s->n])) - s->mun;
     return -ph->mode * row(s, y + s->n);
 }
 
-/* One rk8pd step of h from (t, y) into out. */
-static void step(gsl_odeiv2_step *s, gsl_odeiv2_system *sys, double t, const double y[], double h,
-                 double out[])
+/* Stick to slip towards the bound reached, the offset on it; slip to stick. */
+static void switch_mode(void *params, double y[])
 {
-    double err[JENKINS_MAXZ];
-    memcpy(out, y, sys->dimension * sizeof *out);
-    gsl_odeiv2_step_reset(s);
-    ck_assert_int_eq(gsl_odeiv2_step_apply(s, t, h, out, err, NULL, NULL, sys), GSL_SUCCESS);
+    struct phase *ph = params;
+    const struct jenkins_system *sys = ph->sys;
+    if (ph->mode != STICK) {
+        ph->mode = STICK;
+        return;
+    }
+    double u = row(sys, y);
+    ph->mode = u - y[2 * sys->n] > 0.0 ? SLIP_UP : SLIP_DOWN;
+    y[2 * sys->n] = u - ph->mode * sys->mun / sys->kt;
 }
 
 void jenkins_period(const struct jenkins_system *sys, double t0, const double *z0, double *z)
 {
-    const size_t nz = 2 * sys->n + 1;
-    const double T = 2.0 * PI / sys->omega, h0 = T / 2000.0;
     struct phase ph = {sys, STICK};
-    gsl_odeiv2_system ode = {rhs, NULL, nz, &ph};
-    gsl_odeiv2_step *s = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, nz);
-    double y[JENKINS_MAXZ], yn[JENKINS_MAXZ], t = t0, end = t0 + T;
-    memcpy(y, z0, nz * sizeof *y);
-    while (t < end) {
-        double h = fmin(h0, end - t);
-        step(s, &ode, t, y, h, yn);
-        if (switch_function(&ph, yn) >= 0.0 && switch_function(&ph, y) < 0.0) {
-            double lo = 0.0, hi = h; /* the switch within the step, by bisection */
-            while (hi - lo > 1e-14 * T) {
-                double mid = 0.5 * (lo + hi);
-                step(s, &ode, t, y, mid, yn);
-                if (switch_function(&ph, yn) < 0.0)
-                    lo = mid;
-                else
-                    hi = mid;
-            }
-            step(s, &ode, t, y, hi, yn);
-            h = hi;
-            if (ph.mode == STICK) { /* slips towards the bound reached, the offset on it */
-                double u = row(sys, yn);
-                ph.mode = u - yn[nz - 1] > 0.0 ? SLIP_UP : SLIP_DOWN;
-                yn[nz - 1] = u - ph.mode * sys->mun / sys->kt;
-            } else {
-                ph.mode = STICK;
-            }
-        }
-        t += h;
-        memcpy(y, yn, nz * sizeof *y);
-    }
-    gsl_odeiv2_step_free(s);
+    struct event_system es = {{rhs, NULL, 2 * sys->n + 1, &ph}, until_switch, switch_mode};
+    event_period(&es, t0, 2.0 * PI / sys->omega, z0, z);
     ck_assert_int_eq(ph.mode, STICK); /* the period ends where it started */
-    memcpy(z, y, nz * sizeof *z);
 }
 
 void jenkins_monodromy(const struct jenkins_system *sys, double t0, const double *z, double *Phi)
@@ -120,21 +95,6 @@ void jenkins_monodromy(const struct jenkins_system *sys, double t0, const double
     }
 }
 
-/* x_k(t) and v_k(t) into z[2n] from the coefficients x[n (2H + 1)] at Ω. */
-static void displacement_at(size_t n, int H, const double *x, double omega, double t, double *z)
-{
-    size_t nc = 2 * (size_t)H + 1;
-    for (size_t k = 0; k < n; k++) {
-        const double *c = x + k * nc;
-        z[k] = c[0], z[n + k] = 0.0;
-        for (int h = 1; h <= H; h++) {
-            double a = h * omega * t;
-            z[k] += c[2 * h - 1] * cos(a) + c[2 * h] * sin(a);
-            z[n + k] += h * omega * (c[2 * h] * cos(a) - c[2 * h - 1] * sin(a));
-        }
-    }
-}
-
 void jenkins_start(const struct jenkins_system *sys, int H, const double *x, double *t0, double *z)
 {
     const int samples = 20000;
@@ -143,7 +103,7 @@ void jenkins_start(const struct jenkins_system *sys, int H, const double *x, dou
     double w = 0.0, best = -1.0, y[2 * JENKINS_MAXN];
     for (int i = 0; i <= 2 * samples; i++) {
         double t = T * i / samples;
-        displacement_at(n, H, x, sys->omega, t, y);
+        orbit_state_at(n, H, x, sys->omega, t, y);
         double u = row(sys, y);
         if (i == 0)
             w = u;
@@ -164,8 +124,7 @@ void jenkins_start(const struct jenkins_system *sys, int H, const double *x, dou
 void jenkins_shoot(const struct jenkins_system *sys, double t0, double *z)
 {
     const size_t nz = 2 * sys->n + 1;
-    double zn[JENKINS_MAXZ], r[JENKINS_MAXZ], Phi[JENKINS_MAXZ * JENKINS_MAXZ], dz[JENKINS_MAXZ];
-    gsl_permutation *p = gsl_permutation_alloc(nz);
+    double zn[JENKINS_MAXZ], r[JENKINS_MAXZ], Phi[JENKINS_MAXZ * JENKINS_MAXZ];
     for (int it = 0;; it++) {
         ck_assert_int_lt(it, 20);
         jenkins_period(sys, t0, z, zn);
@@ -175,15 +134,6 @@ void jenkins_shoot(const struct jenkins_system *sys, double t0, double *z)
         if (res <= 1e-13)
             break;
         jenkins_monodromy(sys, t0, z, Phi);
-        for (size_t j = 0; j < nz; j++)
-            Phi[(nz + 1) * j] -= 1.0;
-        gsl_matrix_view A = gsl_matrix_view_array(Phi, nz, nz);
-        gsl_vector_view b = gsl_vector_view_array(r, nz), xv = gsl_vector_view_array(dz, nz);
-        int sg;
-        gsl_linalg_LU_decomp(&A.matrix, p, &sg);
-        gsl_linalg_LU_solve(&A.matrix, p, &b.vector, &xv.vector);
-        for (size_t j = 0; j < nz; j++)
-            z[j] -= dz[j];
+        shooting_newton_step(nz, Phi, r, z);
     }
-    gsl_permutation_free(p);
 }
