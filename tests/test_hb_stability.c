@@ -468,24 +468,36 @@ static double event_mu_max(const struct model *s, fricreg_hb *hb, double omega, 
 }
 
 /* A slider that sticks after a touchdown (the touchdown's saltation δw = (J_t − (u'/g') J_n) δx
- * at work): the contact pair at mu = 1 and 3 and its forcing scaled, where the contact opens
- * and closes once a period. The exact monodromy's mu_max against an event-driven shooting that
- * locates every switch to 1e-14 T (liftoff_events.h), to 2e-5 (measured 7.5e-7 at most). The
- * step-resolved shooting above, whose touchdown errs by a step for the whole stick after it,
- * is 4.9e-3 and 5.9e-3 off at these points. */
+ * at work), and orbits whose slider grazes its bound: the contact pair at mu = 1 and 3 and its
+ * forcing scaled. The exact monodromy's mu_max against an event-driven shooting that locates
+ * every switch to 1e-14 T (liftoff_events.h), to 2e-5 (measured 7.5e-7 at most), and the
+ * orbit's touchdowns. Where the contact opens and closes once a period (mu = 3 at 12.5 and
+ * 11.5 rad/s), the step-resolved shooting above, whose touchdown errs by a step for the whole
+ * stick after it, is 4.9e-3 and 5.9e-3 off. Where the force only touches the bound (the other
+ * three), the HB's march reports switches into the state the slider is in and slips of no
+ * duration: the monodromy took them for slips and said 1.0 to 1.055 (an unstable verdict at
+ * 1.055) where the slider sticks throughout, 0.926 to 0.935 (switches.c's effective_switches).
+ * Points whose slip lasts about the graze's bound are left out: at mu = 1, half the forcing,
+ * 11 rad/s, the reference BLAS's HB orbit slips for 1.35e-8 rad (OpenBLAS's not at all), and
+ * the monodromy says 0.953 against 0.926. */
 START_TEST(contact_pair_touchdown_against_event_shooting)
 {
     const struct {
         double mu, force, omega;
-    } at[2] = {{3.0, 0.5, 12.5}, {3.0, 1.0, 11.5}};
-    for (int i = 0; i < 2; i++) {
+        int touchdowns;
+    } at[5] = {{3.0, 0.5, 12.5, 1},
+               {3.0, 1.0, 11.5, 1},
+               {1.0, 0.2, 12.5, 0},
+               {3.0, 1.0, 11.0, 0},
+               {3.0, 0.5, 12.25, 0}};
+    for (int i = 0; i < 5; i++) {
         struct model s = contact_pair();
         s.mu[0] = at[i].mu;
         s.pc[0] *= at[i].force, s.pc[1] *= at[i].force;
         s.method = FRICREG_HB_STABILITY_MONODROMY;
         fricreg_hb *hb = make(&s);
         double q[2 * NC], mu = 0.0, z[MAXZ];
-        int stable = -1, touchdowns = 0;
+        int stable = -1, touchdowns = -1;
         ck_assert_int_eq(fricreg_hb_solve(hb, at[i].omega, 2 * NC, NULL, q), FRICREG_OK);
         ck_assert_int_eq(fricreg_hb_point_stability(hb, FRICREG_HB_SOLUTION, &stable, &mu),
                          FRICREG_OK);
@@ -497,7 +509,7 @@ START_TEST(contact_pair_touchdown_against_event_shooting)
                     "mu %g, force x%g, Omega %g: monodromy %.7f, event-driven shooting %.7f "
                     "(%d touchdown), step-resolved %.7f\n",
                     at[i].mu, at[i].force, at[i].omega, mu, ref, touchdowns, step_ref);
-        ck_assert_int_eq(touchdowns, 1);
+        ck_assert_int_eq(touchdowns, at[i].touchdowns);
         ck_assert_int_eq(stable, 1);
         ck_assert_double_le(fabs(mu - ref), 2e-5 * ref);
         fricreg_hb_free(hb);

@@ -106,6 +106,42 @@ static int jenkins(fricreg_hb *hb, const char *fn, struct fr_hb_schedule *sc, si
     return FRICREG_OK;
 }
 
+/* Two switches closer than this in θ are one instant: the march's roots are not resolved
+ * finer. */
+#define FR_GRAZE_THETA 1e-8
+
+/* A slider's switches that its perturbations see, in place (lo->nsw and lo->sw): the march
+ * reports a switch into the state the slider is in (its start's, a stop while it sticks, a
+ * second onset while it slides) and, where the force grazes the bound, a slip of no duration, an
+ * onset and its stop at one instant. Neither changes the orbit, and a graze's onset would reset
+ * the offset that the perturbed orbits, which do not slip, keep. Returns the state the slider
+ * is in throughout where none is left. */
+static int effective_switches(struct fr_aft_liftoff *lo)
+{
+    int throughout = lo->nsw > 0 ? lo->sw[lo->nsw - 1].mode : FR_AFT_STICK;
+    for (int changed = 1; changed && lo->nsw > 0;) {
+        changed = 0;
+        int now = lo->sw[lo->nsw - 1].mode, kept = 0; /* periodic: the state before the first */
+        for (int i = 0; i < lo->nsw; i++) {
+            if (lo->sw[i].mode == now && lo->sw[i].reset != FR_AFT_TOUCHDOWN) {
+                changed = 1;
+                continue;
+            }
+            now = lo->sw[i].mode;
+            lo->sw[kept++] = lo->sw[i];
+        }
+        lo->nsw = kept;
+        for (int i = 0; i + 1 < lo->nsw && !changed; i++)
+            if (lo->sw[i].mode == FR_AFT_SLIP &&
+                fabs(lo->sw[i + 1].theta - lo->sw[i].theta) <= FR_GRAZE_THETA) {
+                memmove(&lo->sw[i], &lo->sw[i + 2], (size_t)(lo->nsw - i - 2) * sizeof *lo->sw);
+                lo->nsw -= 2;
+                changed = 1;
+            }
+    }
+    return throughout;
+}
+
 /* Element e with lift-off: its contact's switches (from the first slider's march), and each
  * slider's. */
 static int liftoff(fricreg_hb *hb, const char *fn, struct fr_hb_schedule *sc, size_t e)
@@ -131,7 +167,11 @@ static int liftoff(fricreg_hb *hb, const char *fn, struct fr_hb_schedule *sc, si
             for (int i = 0; i < lo.count; i++)
                 add(sc, (struct fr_hb_switch){lo.at[i], 0.0, e, 0, 1, lo.dir[i] > 0, 0, 0});
         }
-        if (lo.kind == FR_AFT_STUCK)
+        /* a slider whose switches all vanish sticks throughout where the contact never opens */
+        int throughout = lo.kind == FR_AFT_SLIPS ? effective_switches(&lo) : FR_AFT_OPEN;
+        int closed_throughout = lo.count == 0 && lo.sign > 0;
+        if (lo.kind == FR_AFT_STUCK || (lo.kind == FR_AFT_SLIPS && lo.nsw == 0 &&
+                                        throughout == FR_AFT_STICK && closed_throughout))
             stuck(sc, e, k[s]);
         if (lo.kind != FR_AFT_SLIPS || lo.nsw == 0)
             continue;
