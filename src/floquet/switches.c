@@ -131,13 +131,15 @@ static int effective_switches(struct fr_aft_liftoff *lo)
             lo->sw[kept++] = lo->sw[i];
         }
         lo->nsw = kept;
-        for (int i = 0; i + 1 < lo->nsw && !changed; i++)
-            if (lo->sw[i].mode == FR_AFT_SLIP &&
+        for (int i = 0; i + 1 < lo->nsw && !changed; i++) { /* a slip back where it came from */
+            int before = lo->sw[i > 0 ? i - 1 : lo->nsw - 1].mode;
+            if (lo->sw[i].mode == FR_AFT_SLIP && lo->sw[i + 1].mode == before &&
                 fabs(lo->sw[i + 1].theta - lo->sw[i].theta) <= FR_GRAZE_THETA) {
                 memmove(&lo->sw[i], &lo->sw[i + 2], (size_t)(lo->nsw - i - 2) * sizeof *lo->sw);
                 lo->nsw -= 2;
                 changed = 1;
             }
+        }
     }
     return throughout;
 }
