@@ -56,14 +56,9 @@ int fricreg_element_init(const fricreg_element_type *type, const double params[]
     return FRICREG_OK;
 }
 
-/* fricreg_element_eval of a law without its own point: its check, then its eval. Out of
- * line, so that the laws' own points are reached by a tail call. */
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
-static int
-check_then_eval(const fricreg_element_type *type, const double params[], const double state_in[],
-                const double u[], double f[], double dfdu[], double dfdp[], double state_out[])
+int fr_element_check_then_eval(const fricreg_element_type *type, const double params[],
+                               const double state_in[], const double u[], double f[], double dfdu[],
+                               double dfdp[], double state_out[])
 {
     int status = type->kind->check(type, params, state_in, u, NULL, 0);
     if (status == FRICREG_OK)
@@ -78,9 +73,9 @@ int fricreg_element_eval(const fricreg_element_type *type, const double params[]
     if (type == NULL || params == NULL || state_in == NULL || u == NULL || f == NULL ||
         state_out == NULL)
         return FRICREG_ENULL;
-    return (type->kind->point != NULL ? type->kind->point : check_then_eval)(type, params, state_in,
-                                                                             u, f, dfdu, dfdp,
-                                                                             state_out);
+    return (type->kind->point != NULL
+                ? type->kind->point
+                : fr_element_check_then_eval)(type, params, state_in, u, f, dfdu, dfdp, state_out);
 }
 
 int fricreg_element_explain(const fricreg_element_type *type, const double params[],

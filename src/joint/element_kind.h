@@ -97,6 +97,17 @@ struct fricreg_element_type {
     const struct fricreg_element_type *family;
 };
 
+/* fricreg_element_eval's work on vetted pointers for a law without its own point, and the
+ * points' way where their fast check doubts: the kind's check, then its eval where it accepts;
+ * check's status. Out of line (element.c), so that the points' usual path saves no registers
+ * for it and fricreg_element_eval reaches them by a tail call. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+int fr_element_check_then_eval(const fricreg_element_type *type, const double params[],
+                               const double state_in[], const double u[], double f[],
+                               double dfdu[], double dfdp[], double state_out[]);
+
 /* Writes the message of a failed check into msg[len] (nothing if msg is NULL or len is 0) and
  * returns status. */
 int fr_element_say(int status, char *msg, size_t len, const char *fmt, ...)

@@ -376,18 +376,6 @@ FR_ALWAYS_INLINE int batch_sliders(const fricreg_element_type *type, size_t ns, 
     return FRICREG_OK;
 }
 
-/* A point the fast check doubts: check's status, and eval's work where it accepts. Out of line,
- * so that the fast path saves no registers for its calls. */
-static FR_NOINLINE int check_then_eval(const fricreg_element_type *type, const double *p,
-                                       const double *state_in, const double *u, double *f,
-                                       double *dfdu, double *dfdp, double *state_out)
-{
-    int status = check(type, p, state_in, u, NULL, 0);
-    if (status == FRICREG_OK)
-        type->kind->eval(type, p, state_in, u, f, dfdu, dfdp, state_out, NULL);
-    return status;
-}
-
 /* fricreg_element_eval's work once the pointers are vetted (element.c): batch_sliders at one
  * point, without the loops. */
 FR_ALWAYS_INLINE int point_sliders(const fricreg_element_type *type, size_t ns, int td, int normal,
@@ -397,7 +385,7 @@ FR_ALWAYS_INLINE int point_sliders(const fricreg_element_type *type, size_t ns, 
     double bound = 0.0;
     uint64_t doubt = fast_params_doubt(ns, normal, p, &bound);
     if ((doubt | fast_u_doubt(ns, td, normal, p, bound, state_in, u)) >> 63)
-        return check_then_eval(type, p, state_in, u, f, dfdu, dfdp, state_out);
+        return fr_element_check_then_eval(type, p, state_in, u, f, dfdu, dfdp, state_out);
     eval_sliders(ns, td, normal, p, state_in, u, f, dfdu, dfdp, state_out, NULL);
     return FRICREG_OK;
 }
