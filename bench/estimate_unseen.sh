@@ -8,7 +8,9 @@
 # chain of 1000 under central-imex at eps = 2.5 dt (D on cycle 1 against 0.00862894623, RK4
 # under the paper's rule extrapolated over 5 levels and rk8pd at rtol 1e-10 over 4, agreeing
 # to 3.5e-11). One CSV row per quantity, then the counts: bounded (estimate >= error), within
-# 10x, and misses without a warning. The frame is bench/frame_estimate.c's. About 30 s.
+# 10x, and misses without a warning; per run, the warnings and how many of them are right (the
+# error above the answer tolerance, 1e-2), and the runs off by more without one. The frame is
+# bench/frame_estimate.c's. About 30 s.
 #   usage: bench/estimate_unseen.sh [FRICREG_SIM]
 set -eu
 sim=${1:-fricreg-sim}
@@ -24,7 +26,7 @@ rows=$(mktemp)
 trap 'rm -f "$out" "$rows"' EXIT
 # row PROBLEM SETTING QUANTITY VALUE REFERENCE ESTIMATE
 row() {
-    warned=$(grep -c '"warnings": \[{' "$out" || true)
+    warned=$(grep -c '"code": "error_estimate"' "$out" || true)
     echo "$1,$2,$3,$4,$5,$6,$warned" >>"$rows"
 }
 echo "problem,setting,quantity,value,reference,error,estimate,ratio,warned"
@@ -60,7 +62,20 @@ awk -F, '{
            (err > 0 ? sprintf("%.3g", ratio) : "inf"), $7
     n++; b += ($6 >= err); w += ($6 >= err && $6 <= 10 * err); warned += ($7 > 0)
     if ($6 < err && $7 == 0) silent++
+    # per run (problem and setting): warned, and its error above the answer tolerance (1e-2)
+    run = $1 "," $2; ref = $5 < 0 ? -$5 : $5
+    if (!(run in seen)) { seen[run] = 1; runs++ }
+    if ($7 > 0) run_warned[run] = 1
+    if (err > 1e-2 * ref) off[run] = 1
+    if (err > 3e-2 * ref) far[run] = 1
 } END {
     printf "# %d quantities: %d bounded (%.1f%%), %d within 10x (%.1f%%), %d warned, " \
            "%d missed without a warning\n", n, b, 100 * b / n, w, 100 * w / n, warned, silent
+    for (r in seen) {
+        rw += (r in run_warned); right += (r in run_warned) && (r in off)
+        unwarned += !(r in run_warned) && (r in off); unwarned3 += !(r in run_warned) && (r in far)
+    }
+    printf "# %d runs: %d warned, %d of them off by more than the answer tolerance (1e-2); " \
+           "%d off by more without a warning (%d by more than 3x)\n", runs, rw, right, \
+           unwarned, unwarned3
 }' "$rows"

@@ -21,8 +21,10 @@
  *   fricreg-bench-frame-estimate [--mun F] --ladder   the reference's runs only
  *   fricreg-bench-frame-estimate [--mun F] --companions   finer against coarser companions
  *     (fricreg_structure_set_error_companions): per mode, the estimates that bound the error,
- *     the median estimate / error (all, and of kind asymptotic), the warnings, and the CPU of
- *     a run with each against one without, all in this process
+ *     the median estimate / error (all, and of kind asymptotic), the runs warned, those of them
+ *     whose error is surely above the answer tolerance (1e-2; the warnings' precision), the
+ *     runs surely off by more than it (and 3x it) without a warning (their recall), and the CPU
+ *     of a run with each against one without, all in this process
  *   FRAME_GRID=1 fricreg-bench-frame-estimate         D on a grid of eps and dt
  *   --ground sweep|random   problems the estimators were not derived on: a sine sweep, or
  *     Gaussian samples (ground_record); --jenkins the dampers as Jenkins elements (Newmark and
@@ -319,6 +321,23 @@ static int table_rows(int scheme, double eps0, double dt, const struct reference
     return 0;
 }
 
+/* Whether run r's error is surely above factor times the default answer tolerance (1e-2) by the
+ * warning's measures: the largest peak's error against the largest peak, or the summed
+ * dissipations' errors against their sum, each less the reference's uncertainty. */
+static int truly_off(const struct frame_run *r, const struct reference *ref, double factor)
+{
+    double peak = 0.0, peak_err = 0.0, D = 0.0, D_err = 0.0;
+    for (int i = 0; i < NDOF; i++) {
+        peak = fmax(peak, fabs(r->peak[i]));
+        peak_err = fmax(peak_err, fabs(r->peak[i] - ref->peak[i]) - ref->peak_unc[i]);
+    }
+    for (int j = 0; j < M_C; j++) {
+        D += fabs(r->D[j]);
+        D_err += fabs(r->D[j] - ref->D[j]) - ref->D_unc[j];
+    }
+    return peak_err > factor * 1e-2 * peak || D_err > factor * 1e-2 * D;
+}
+
 /* --companions: each mode's estimates on the table's runs (Newmark and HHT at 10, 5, 2.5 ms)
  * and adaptive RKF45 sampled at 20, 10, 5 ms against the reference, and its cost against no
  * estimate (Newmark at 2.5 ms, medians of interleaved runs). */
@@ -329,8 +348,9 @@ static int compare_companions(double eps0, const struct reference *ref)
     const double samples[] = {2e-2, 1e-2, 5e-3}; /* RKF45's */
     enum { RUNS = 3 * 3, REPS = 7 };
     printf("\n| companions | estimates | bounded | median est/err | asymptotic | median "
-           "est/err (asymptotic) | runs warned | cost / run without |\n"
-           "|---|---|---|---|---|---|---|---|\n");
+           "est/err (asymptotic) | runs warned | warnings right | off, unwarned (> 3x) | cost / "
+           "run without |\n"
+           "|---|---|---|---|---|---|---|---|---|---|\n");
     double cost[3][REPS];
     for (int k = 0; k < REPS; k++)
         for (int e = -1; e <= FRICREG_COMPANIONS_COARSER; e++) {
@@ -343,7 +363,7 @@ static int compare_companions(double eps0, const struct reference *ref)
         qsort(cost[e], REPS, sizeof cost[e][0], by_value);
     for (int mode = FRICREG_COMPANIONS_FINER; mode <= FRICREG_COMPANIONS_COARSER; mode++) {
         double ratio[RUNS * NQ], asym[RUNS * NQ];
-        int n = 0, na = 0, bounded = 0, warned = 0;
+        int n = 0, na = 0, bounded = 0, warned = 0, right = 0, missed = 0, missed3 = 0;
         companions = mode;
         for (int scheme = NEWMARK; scheme <= (jenkins ? HHT : RKF45); scheme++)
             for (int k = 0; k < 3; k++) { /* the elements: fricreg_structure_step's schemes */
@@ -352,6 +372,9 @@ static int compare_companions(double eps0, const struct reference *ref)
                 if (run(scheme, eps0, dt, 1, &r) != FRICREG_OK)
                     return 1;
                 warned += r.warned;
+                right += r.warned && truly_off(&r, ref, 1.0);
+                missed += !r.warned && truly_off(&r, ref, 1.0);
+                missed3 += !r.warned && truly_off(&r, ref, 3.0);
                 for (int j = 0; j < NQ; j++) {
                     double err = j < M_C ? fabs(r.D[j] - ref->D[j])
                                          : fabs(r.peak[j - M_C] - ref->peak[j - M_C]);
@@ -369,9 +392,9 @@ static int compare_companions(double eps0, const struct reference *ref)
             }
         qsort(ratio, (size_t)n, sizeof ratio[0], by_value);
         qsort(asym, (size_t)na, sizeof asym[0], by_value);
-        printf("| %s | %d | %d | %.3g | %d | %.3g | %d of %d | %.2f |\n", names[mode], n, bounded,
-               ratio[n / 2], na, na > 0 ? asym[na / 2] : NAN, warned, n / NQ,
-               cost[mode + 1][REPS / 2] / cost[0][REPS / 2]);
+        printf("| %s | %d | %d | %.3g | %d | %.3g | %d of %d | %d | %d (%d) | %.2f |\n",
+               names[mode], n, bounded, ratio[n / 2], na, na > 0 ? asym[na / 2] : NAN, warned,
+               n / NQ, right, missed, missed3, cost[mode + 1][REPS / 2] / cost[0][REPS / 2]);
     }
     printf("\ncost: Newmark at 2.5 ms, median of %d interleaved runs: none %.4f s\n", REPS,
            cost[0][REPS / 2]);

@@ -102,10 +102,12 @@ enum fricreg_warning {
     FRICREG_WARN_STRIBECK_EPS = 11,   /**< Stribeck delta < 1: band error (fs-fk)/fs (eps/vs)^delta
                                        *   above 1e-2 */
     /** an error estimate (fricreg_sim_set_error_estimate, fricreg_structure_set_error_estimate)
-     *  could not be formed, or exceeds the run's answer tolerance (fricreg_sim_set_answer_rtol,
-     *  fricreg_structure_set_answer_rtol: 1e-2 of its quantity by default, whatever the
-     *  estimate's kind; 10% until 1.7), or (msadams, msbdf) what the tolerances ask. Since
-     *  1.6. */
+     *  could not be formed, or puts the error above the run's answer tolerance: its central
+     *  value, half the estimate (which bounds the error at about twice its size), above the
+     *  tolerance (fricreg_sim_set_answer_rtol, fricreg_structure_set_answer_rtol: 1e-2 of its
+     *  quantity by default, whatever the estimate's kind; until 1.8 the whole estimate, until
+     *  1.7 against 10%), or (msadams, msbdf) the estimate is above what the tolerances ask.
+     *  Since 1.6. */
     FRICREG_WARN_ERROR_ESTIMATE = 12,
     /** a run far past the end of its ground or load record (10 times its duration): its time
      *  step in ms where s was meant? Since 1.7. */

@@ -425,9 +425,9 @@ FRICREG_API int fricreg_sim_get_stick_fraction(const fricreg_sim *sim, size_t m,
  *  Where a companion fails (e.g. FRICREG_EWORK, FRICREG_ESTEP at dt / 2) the run still
  *  succeeds, its estimates are +infinity, and fricreg_sim_warning_count raises
  *  FRICREG_WARN_ERROR_ESTIMATE with the companion's message; it raises it too where the last
- *  whole cycle's estimate (the total's without one) exceeds the answer tolerance times |D|
- *  (fricreg_sim_set_answer_rtol, 1e-2 by default; until 1.7: 10% of D), whatever its kind, and
- *  for msadams and msbdf (above). An
+ *  whole cycle's estimate (the total's without one) exceeds twice the answer tolerance times
+ *  |D| (fricreg_sim_set_answer_rtol, 1e-2 by default; until 1.8 the tolerance itself, until
+ *  1.7 10% of D), whatever its kind, and for msadams and msbdf (above). An
  *  adaptive run with velocity tolerances loose against eps also raises
  *  FRICREG_WARN_TOL_LOOSE: with any tolerances, a run either meets its error estimate or warns
  *  (the calibration sweep, over the caller's atol 1e-2 … 1e-10, found none).
@@ -472,11 +472,13 @@ FRICREG_API int fricreg_sim_get_dissipation_error_kind(const fricreg_sim *sim, s
 
 /** Set the run's answer tolerance: fricreg_sim_warning_count raises
  *  FRICREG_WARN_ERROR_ESTIMATE where the error estimate of the last whole cycle's D (the total
- *  D's without a whole cycle) exceeds rtol |D|, whatever its kind (fricreg_sim_set_error_estimate;
- *  the error a caller accepts in the answer, relative, dimensionless), and 1e-12 of the band's
- *  work sum_i mun_i eps T over that time T (a D whose exact value is 0, a stuck contact's, is
- *  round-off and so is its estimate; docs/integrators.md, "Warnings"). Default 1e-2; until
- *  1.7 the level was a fixed 10%, which rtol = 0.1 roughly restores. Kept across runs; it
+ *  D's without a whole cycle) puts D's error above rtol |D|: its central value, half the
+ *  estimate (the estimate bounds the error at about twice its size), above rtol |D|, whatever
+ *  its kind (fricreg_sim_set_error_estimate; rtol the error a caller accepts in the answer,
+ *  relative, dimensionless), and the estimate above 1e-12 of the band's work sum_i mun_i eps T
+ *  over that time T (a D whose exact value is 0, a stuck contact's, is round-off and so is its
+ *  estimate; docs/integrators.md, "Warnings"). Default 1e-2. Until 1.8 the whole estimate was
+ *  compared, which rtol / 2 restores; until 1.7 the level was a fixed 10%. Kept across runs; it
  *  changes no result, only the warning, judged on the value in force when the warnings are
  *  judged (the run's end and fricreg_sim_warning_count).
  *  sim   in/out: the simulation.

@@ -1144,11 +1144,12 @@ FRICREG_API int fricreg_structure_get_value(const fricreg_structure *s, int whic
  *  Where a companion fails (e.g. FRICREG_ESTEP or FRICREG_EWORK at its finer setting, or no
  *  memory) s's run still succeeds, the estimates become +infinity until the next set_initial, and
  *  fricreg_structure_warning_count raises FRICREG_WARN_ERROR_ESTIMATE with the companion's
- *  message; it raises it too, whatever the kinds, where the largest peak's estimate exceeds
- *  the answer tolerance times the largest peak (max_i err_i > rtol max_i peak_i), or the
+ *  message; it raises it too, whatever the kinds, where half the largest peak's estimate (its
+ *  central value: the estimate bounds the error at about twice its size) exceeds the answer
+ *  tolerance times the largest peak (max_i err_i / 2 > rtol max_i peak_i), or half the
  *  dissipations' summed estimates (contacts' and joint elements' together) the tolerance times
- *  their summed magnitudes (fricreg_structure_set_answer_rtol: rtol = 1e-2 by default; 10%
- *  until 1.7).
+ *  their summed magnitudes (fricreg_structure_set_answer_rtol: rtol = 1e-2 by default; until
+ *  1.8 the whole estimates, until 1.7 against 10%).
  *  Cost: each companion's run, about 2x and 4x s's for fixed steps (twice and four times the
  *  steps), 1.4x ... 3x each for adaptive ones (fricreg_sim_set_error_estimate); one or two more
  *  structures in memory, allocated at the run's first step (a failed allocation is a failed
@@ -1295,11 +1296,14 @@ FRICREG_API int fricreg_structure_get_error_kind(const fricreg_structure *s, int
                                                  int kind[]);
 
 /** Set the run's answer tolerance: fricreg_structure_warning_count raises
- *  FRICREG_WARN_ERROR_ESTIMATE where max_i peak_err_i > rtol max_i |peak_i| or
- *  sum_j D_err_j > rtol sum_j |D_j| (contacts and joint elements together), whatever the
- *  estimates' kinds (fricreg_structure_set_error_estimate; the relative error a caller
- *  accepts in the answer, dimensionless). Default 1e-2; until 1.7 a fixed 10%, which
- *  rtol = 0.1 roughly restores. Kept across runs and set_initial; not passed to the
+ *  FRICREG_WARN_ERROR_ESTIMATE where the estimates' central values, half the estimates (which
+ *  bound the errors at about twice their size), exceed it: max_i peak_err_i / 2 >
+ *  rtol max_i |peak_i| or sum_j D_err_j / 2 > rtol sum_j |D_j| (contacts and joint elements
+ *  together), whatever the estimates' kinds (fricreg_structure_set_error_estimate; rtol the
+ *  relative error a caller accepts in the answer, dimensionless), and the estimate above
+ *  1e-12 of a scale the run knows (a structure at rest: eps t for the peaks, sum_j mun_j eps t
+ *  for the dissipations). Default 1e-2. Until 1.8 the whole estimates were compared, which
+ *  rtol / 2 restores; until 1.7 the level was a fixed 10%. Kept across runs and set_initial; not passed to the
  *  companions (they raise no warning); it changes no result, only the warning, judged on the
  *  value in force when the warnings are judged (fricreg_structure_warning_count).
  *  s     in/out: the structure.

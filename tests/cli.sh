@@ -228,7 +228,7 @@ fi
 # exceeds X |D| (fricreg_sim_set_answer_rtol), naming it and its kind (cycle 1: 3.6e-5 of D;
 # the oscillator sticks after it, D = 0 is exact); X finite and > 0.
 expect_output '"dissipation_error_kind": \["(asymptotic|bound)", "(asymptotic|bound)", "(asymptotic|bound)"\], .*"error_estimate_kinds": \{"asymptotic": [0-3], "bound": [0-3], "assumed": 0\}, "cpu_seconds": [0-9.]+, "warnings": \[\]' oscillator --cycles 3
-expect_output '"code": "error_estimate", "message": "the error estimate [0-9.e-]+ of cycle 1.s dissipation [0-9.]+ \(asymptotic\) exceeds the answer tolerance 1e-05 of it: halve eps and dt, or raise --answer-rtol' oscillator --cycles 1 --answer-rtol 1e-5
+expect_output '"code": "error_estimate", "message": "the error estimate [0-9.e-]+ of cycle 1.s dissipation [0-9.]+ \(asymptotic\) exceeds twice the answer tolerance 1e-05 of it \(the estimate bounds the error at about twice its size\): halve eps and dt, or raise --answer-rtol' oscillator --cycles 1 --answer-rtol 1e-5
 expect_usage_error "--answer-rtol" oscillator --answer-rtol 0
 # msbdf warns only when its estimate exceeds what the tolerances ask of D (atol + rtol |D|): at
 # rtol 1e-6 the estimate 7.1e-5 is above 2.4e-6; at rtol 1e-4, 4.1e-5 is below 2.4e-4.
@@ -282,7 +282,7 @@ expect_output '"dissipation_per_contact": \[9\.4396613422[67][0-9]*\]' $block --
 expect_output '"peak_displacement_error_estimate": \[[0-9.]+e-1[3-9]\], "peak_displacement_error_kind": \["bound"\], "dissipation_per_contact": \[9\.4396613422[67][0-9]*\], "dissipation_per_contact_error_estimate": \[[0-9.]+e-1[2-9]\], "dissipation_per_contact_error_kind": \["bound"\], "error_estimate_kinds": \{"asymptotic": 0, "bound": 2, "assumed": 0\}.*"warnings": \[\]' $block --integrator newmark --dt 0.01
 # --answer-rtol (fricreg_structure_set_answer_rtol): an estimate above X times its quantity
 # warns error_estimate whatever its kind, here rounding against X = 1e-15; X finite and > 0.
-expect_output '"code": "error_estimate", "message": "the error estimate [0-9.e-]+ of the largest peak displacement [0-9.]+ \(kind bound\) exceeds the answer tolerance 1e-15 of it: halve eps and dt, or raise --answer-rtol' $block --integrator newmark --dt 0.01 --answer-rtol 1e-15
+expect_output '"code": "error_estimate", "message": "the error estimate [0-9.e-]+ of the largest peak displacement [0-9.]+ \(kind bound\) exceeds twice the answer tolerance 1e-15 of it \(the estimate bounds the error at about twice its size\): halve eps and dt, or raise --answer-rtol' $block --integrator newmark --dt 0.01 --answer-rtol 1e-15
 expect_usage_error "--answer-rtol" $block --integrator newmark --dt 0.01 --answer-rtol 0
 expect_usage_error "--answer-rtol" $block --integrator newmark --dt 0.01 --answer-rtol inf
 # The companions' CPU seconds (FRICREG_SVALUE_COMPANION_CPU) and where they sit
@@ -1459,7 +1459,7 @@ if [ "$long" = 1 ]; then
 fi
 expect_output '"dissipation_per_cycle_error_estimate": [0-9.]+e-0[56], "dissipation_per_cycle_error_kind": "assumed", "error_estimate_kinds": \{"asymptotic": 0, "bound": 0, "assumed": 1\}, "cpu_seconds": [0-9.]+, "warnings": \[\]}$' disk --ref-eps 0 --error-estimate one
 # ... its estimate, 4e-6 of D, exceeds an answer tolerance of 1e-6: the warning, kind named.
-expect_output '"code": "error_estimate", "message": "the error estimate [0-9.e-]+ of dissipation_per_cycle 10\.0[0-9]* \(assumed\) exceeds the answer tolerance 1e-06 of it: halve eps and dt, or raise --answer-rtol"' disk --ref-eps 0 --error-estimate one --answer-rtol 1e-6
+expect_output '"code": "error_estimate", "message": "the error estimate [0-9.e-]+ of dissipation_per_cycle 10\.0[0-9]* \(assumed\) exceeds twice the answer tolerance 1e-06 of it \(the estimate bounds the error at about twice its size\): halve eps and dt, or raise --answer-rtol"' disk --ref-eps 0 --error-estimate one --answer-rtol 1e-6
 total=$((total + 1))
 if "$sim" disk --ref-eps 0 --error-estimate off | grep -q error_estimate; then
     echo "FAIL: disk --error-estimate off still estimates"; fails=$((fails + 1))

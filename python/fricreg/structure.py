@@ -122,7 +122,7 @@ class Structure:
         Where the companions sit: finer (default) or at (2 eps, 2 dt), (4 eps, 4 dt).
     answer_rtol : float, optional
         The relative error above which the estimate raises the warning ``error_estimate``
-        (default 1e-2).
+        (default 1e-2): half the estimate, its central value, is compared with it.
 
     Attributes
     ----------

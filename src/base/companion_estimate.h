@@ -32,11 +32,20 @@ double fr_companion_estimate_coarser(int estimator, double q, double q2, double 
 /* An estimate's share of its quantity's scale below which it is round-off (fr_estimate_exceeds). */
 #define FR_ESTIMATE_ROUNDOFF 1e-12
 
-/* 1 where the estimate err of q is above the answer tolerance answer_rtol: err > answer_rtol |q|
- * and err > FR_ESTIMATE_ROUNDOFF scale, scale (>= 0, in q's units) a size of q that the run
- * knows; else 0 (also for a NaN err). The absolute floor is for a quantity whose exact value is
- * 0, such as a stuck contact's dissipation: its estimate is round-off, and the relative rule
- * alone warned on it. */
+/* An estimate's central value, the error it expects: every two-companion estimate above is
+ * twice one (Richardson's correction or the geometric tail, times the margin 2 that makes it a
+ * bound; companion_estimate.c's SAFETY), and one companion's 3 |d1| is twice 1.5 |d1|, between
+ * the law's orders' |d1| 2^p / (2^p - 1) (2 |d1| and 4/3 |d1|). The warning compares that
+ * value with the answer tolerance: the estimates bound the errors at about twice their size
+ * (median 2.0 of the asymptotic ones), and compared whole they warned on errors from half the
+ * tolerance up. */
+#define FR_ESTIMATE_CENTRAL 0.5
+
+/* 1 where the estimate err of q puts q's error above the answer tolerance answer_rtol: its
+ * central value FR_ESTIMATE_CENTRAL err > answer_rtol |q|, and err > FR_ESTIMATE_ROUNDOFF scale,
+ * scale (>= 0, in q's units) a size of q that the run knows; else 0 (also for a NaN err). The
+ * absolute floor is for a quantity whose exact value is 0, such as a stuck contact's
+ * dissipation: its estimate is round-off, and the relative rule alone warned on it. */
 int fr_estimate_exceeds(double err, double q, double answer_rtol, double scale);
 
 /* The JSON and messages' name of an enum fricreg_estimate_kind: "asymptotic", "bound",

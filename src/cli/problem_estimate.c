@@ -42,11 +42,12 @@ void cli_problem_estimate(cli_problem_level run, const void *problem,
     for (size_t i = 0; i < n; i++) {
         err[i] = fr_companion_estimate(opt->estimator, q[i], q2[i], q4[i], &kind[i]);
         char *m = NULL;
-        if (err[i] > opt->answer_rtol * fabs(q[i]) && q[i] != 0.0 &&
+        if (fr_estimate_exceeds(err[i], q[i], opt->answer_rtol, 0.0) && q[i] != 0.0 &&
             (m = slot(w, FRICREG_WARN_ERROR_ESTIMATE)) != NULL)
             snprintf(m, sizeof w->message[0],
-                     "the error estimate %.3g of %s %.7g (%s) exceeds the answer tolerance %.3g "
-                     "of it: halve eps and dt, or raise --answer-rtol",
+                     "the error estimate %.3g of %s %.7g (%s) exceeds twice the answer tolerance "
+                     "%.3g of it (the estimate bounds the error at about twice its size): halve "
+                     "eps and dt, or raise --answer-rtol",
                      err[i], names[i], q[i], fr_estimate_kind_name(kind[i]), opt->answer_rtol);
     }
 }

@@ -181,8 +181,9 @@ void fr_sim_check_estimate(fricreg_sim *sim)
         if (sim->cycles > 0)
             snprintf(which, sizeof which, "cycle %zu's dissipation", sim->cycles);
         fr_warn(&sim->warnings, FRICREG_WARN_ERROR_ESTIMATE,
-                "the error estimate %.3g of %s %.7g (%s) exceeds the answer tolerance %.3g of "
-                "it: halve eps and dt, or raise --answer-rtol (set_answer_rtol)",
+                "the error estimate %.3g of %s %.7g (%s) exceeds twice the answer tolerance "
+                "%.3g of it (the estimate bounds the error at about twice its size): halve eps "
+                "and dt, or raise --answer-rtol (set_answer_rtol)",
                 err, which, D, fr_estimate_kind_name(sim->D_kind[c]), sim->answer_rtol);
     } else if (multistep(sim) && err > fr_sim_dissipation_tolerance(sim, D))
         fr_warn(&sim->warnings, FRICREG_WARN_ERROR_ESTIMATE,
