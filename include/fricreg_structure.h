@@ -1303,9 +1303,10 @@ FRICREG_API int fricreg_structure_get_error_kind(const fricreg_structure *s, int
  *  relative error a caller accepts in the answer, dimensionless), and the estimate above
  *  1e-12 of a scale the run knows (a structure at rest: eps t for the peaks, sum_j mun_j eps t
  *  for the dissipations). Default 1e-2. Until 1.8 the whole estimates were compared, which
- *  rtol / 2 restores; until 1.7 the level was a fixed 10%. Kept across runs and set_initial; not passed to the
- *  companions (they raise no warning); it changes no result, only the warning, judged on the
- *  value in force when the warnings are judged (fricreg_structure_warning_count).
+ *  rtol / 2 restores; until 1.7 the level was a fixed 10%. Kept across runs and set_initial;
+ *  not passed to the companions (they raise no warning); it changes no result, only the
+ *  warning, judged on the value in force when the warnings are judged
+ *  (fricreg_structure_warning_count).
  *  s     in/out: the structure.
  *  rtol  in: the tolerance, finite and > 0.
  *  Returns FRICREG_OK; FRICREG_ENULL if s is NULL; FRICREG_EINVAL if rtol is not finite or

@@ -9,9 +9,9 @@
  * The estimate of each quantity from q, q2 = q(eps / 2), q4 = q(eps / 4) is
  * base/companion_estimate.c's, fricreg_sim's too: Richardson's correction with the observed
  * order in range (kind ASYMPTOTIC), a safe bound below it (kind BOUND); one companion (1.6's):
- * 3 |q - q2| (kind ASSUMED). FRICREG_WARN_ERROR_ESTIMATE where the largest peak's or the summed
- * dissipations' estimate exceeds the answer tolerance (fricreg_structure_set_answer_rtol),
- * whatever the kind.
+ * 3 |q - q2| (kind ASSUMED). FRICREG_WARN_ERROR_ESTIMATE where half the largest peak's or
+ * the summed dissipations' estimate (its central value, fr_estimate_exceeds) exceeds the answer
+ * tolerance (fricreg_structure_set_answer_rtol), whatever the kind.
  *
  * The second companion is the first's own companion: the first runs with the estimate on and
  * one companion, so every change passed on to the first reaches the second the same way. It
