@@ -8,7 +8,9 @@
  * block [[λ, 1], [0, λ]] (e^(tB) = e^(λt) [[1, t], [0, 1]]), so e^(tA) = Q e^(tB) Qᵀ; at values
  * of t that put ‖tA‖₁ in each approximant's range (Higham 2005: degree 3, 5, 7, 9 up to θ₉ =
  * 2.1, then degree 13 and its squarings). Higham's approximants are exact to the unit roundoff
- * in backward error: the forward error here is bounded by a few hundred ulps of ‖e^(tA)‖. */
+ * in backward error: the forward error here is bounded by a few hundred ulps of ‖e^(tA)‖. The
+ * same closed forms from the powers of A kept once (fr_hb_expm_at, the monodromy's pieces met
+ * again at another duration). */
 #include <check.h>
 #include <math.h>
 #include <string.h>
@@ -89,12 +91,45 @@ START_TEST(test_closed_forms_in_every_approximant)
 }
 END_TEST
 
+/* e^(tA) from A's powers at t = 1, kept once, over the same t: every approximant again. */
+START_TEST(test_closed_forms_from_kept_powers)
+{
+    const double ts[] = {0.0, 0.001, 0.05, 0.2, 0.6, 1.5, 3.0, 40.0, 300.0};
+    double Q[P][P], B[P][P], expB[P][P], a[P * P], pow[5 * P * P], want[P * P], got[P * P],
+        work[6 * P * P];
+    int piv[P];
+    rotation(Q);
+    blocks(1.0, B, expB);
+    conjugate(Q, B, a);
+    double nu = fr_hb_expm_powers(a, P, pow);
+    ck_assert_double_eq_tol(nu, 3.108, 1e-3);
+    for (size_t k = 0; k < sizeof ts / sizeof ts[0]; k++) {
+        blocks(ts[k], B, expB);
+        conjugate(Q, expB, want);
+        ck_assert_int_eq(fr_hb_expm_at(pow, nu, P, ts[k], got, work, piv), 0);
+        double scale = 0.0, err = 0.0;
+        for (int i = 0; i < P * P; i++) {
+            scale = fmax(scale, fabs(want[i]));
+            err = fmax(err, fabs(got[i] - want[i]));
+        }
+        ck_assert_msg(err <= 500 * 0x1p-52 * scale * (1.0 + ts[k]),
+                      "t = %g: e^(tA) from the kept powers off by %.3g of %.3g", ts[k], err, scale);
+    }
+}
+END_TEST
+
 /* A non-finite entry: −1 and E not written. */
 START_TEST(test_not_finite)
 {
     double a[4] = {1.0, 0.0, INFINITY, 1.0}, e[4] = {7.0, 7.0, 7.0, 7.0}, work[24];
     int piv[2];
     ck_assert_int_eq(fr_hb_expm(a, 2, e, work, piv), -1);
+    for (int i = 0; i < 4; i++)
+        ck_assert(e[i] == 7.0);
+    double pow[20] = {0}, b[4] = {1.0, 0.0, 0.0, 1.0};
+    ck_assert(fr_hb_expm_powers(a, 2, pow) == INFINITY);
+    double nu = fr_hb_expm_powers(b, 2, pow);
+    ck_assert_int_eq(fr_hb_expm_at(pow, nu, 2, INFINITY, e, work, piv), -1);
     for (int i = 0; i < 4; i++)
         ck_assert(e[i] == 7.0);
 }
@@ -105,6 +140,7 @@ int main(void)
     Suite *s = suite_create("expm");
     TCase *tc = tcase_create("core");
     tcase_add_test(tc, test_closed_forms_in_every_approximant);
+    tcase_add_test(tc, test_closed_forms_from_kept_powers);
     tcase_add_test(tc, test_not_finite);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);

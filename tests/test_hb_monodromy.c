@@ -76,18 +76,16 @@ static double largest(double *Phi, size_t nz)
     return top;
 }
 
-/* The HB solution of sys with H harmonics by method: its mu_max, and its displacement's
- * coefficients x[n (2H + 1)] when x is not NULL. */
-static double hb_mu(const struct jenkins_system *sys, int H, int method, double *x)
+/* An HB object of sys with H harmonics, stability on by method. */
+static fricreg_hb *system_hb(const struct jenkins_system *sys, int H, int method)
 {
     const double M[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, ps[3] = {0, 0, 0};
-    size_t n = sys->n, nc = 2 * (size_t)H + 1;
-    double Mn[9], q[2 * FRICREG_HB_MAX_HARMONICS + 1], mu = 0.0;
+    size_t n = sys->n;
+    double Mn[9];
     for (size_t i = 0; i < n; i++)
         for (size_t k = 0; k < n; k++)
             Mn[n * i + k] = M[3 * i + k];
     fricreg_hb *hb = NULL;
-    int stable = 0;
     ck_assert_int_eq(fricreg_hb_create(n, 1, H, &hb), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_set_mass(hb, n, Mn), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_set_stiffness(hb, n, sys->K), FRICREG_OK);
@@ -97,10 +95,36 @@ static double hb_mu(const struct jenkins_system *sys, int H, int method, double 
     ck_assert_int_eq(fricreg_hb_set_newton(hb, 1e-12, 50), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_set_stability_method(hb, method), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_set_stability(hb, 1), FRICREG_OK);
+    return hb;
+}
+
+/* The HB solution of sys with H harmonics by method: its mu_max, and its displacement's
+ * coefficients x[n (2H + 1)] when x is not NULL. */
+static double hb_mu(const struct jenkins_system *sys, int H, int method, double *x)
+{
+    size_t nc = 2 * (size_t)H + 1;
+    double q[2 * FRICREG_HB_MAX_HARMONICS + 1], mu = 0.0;
+    int stable = 0;
+    fricreg_hb *hb = system_hb(sys, H, method);
     ck_assert_int_eq(fricreg_hb_solve(hb, sys->omega, nc, NULL, q), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_point_stability(hb, FRICREG_HB_SOLUTION, &stable, &mu), FRICREG_OK);
     if (x != NULL)
-        ck_assert_int_eq(fricreg_hb_displacement(hb, n, nc, x), FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_displacement(hb, sys->n, nc, x), FRICREG_OK);
+    fricreg_hb_free(hb);
+    return mu;
+}
+
+/* hb_mu's largest |multiplier| at sys->omega (the monodromy) on an object that solved at first
+ * before: its pieces' matrices kept from there (src/floquet/piece_powers.c). */
+static double hb_mu_after(const struct jenkins_system *sys, int H, double first)
+{
+    size_t nc = 2 * (size_t)H + 1;
+    double q[2 * FRICREG_HB_MAX_HARMONICS + 1], mu = 0.0;
+    int stable = 0;
+    fricreg_hb *hb = system_hb(sys, H, FRICREG_HB_STABILITY_MONODROMY);
+    ck_assert_int_eq(fricreg_hb_solve(hb, first, nc, NULL, q), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_solve(hb, sys->omega, nc, q, q), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_point_stability(hb, FRICREG_HB_SOLUTION, &stable, &mu), FRICREG_OK);
     fricreg_hb_free(hb);
     return mu;
 }
@@ -150,6 +174,19 @@ START_TEST(jenkins_pair_converges_in_h)
     ck_assert_double_lt(err[2], err[1]);
     ck_assert_double_lt(err[2], 2e-5);
     ck_assert_double_gt(hill, 0.5); /* 0.44 of 0.589 */
+}
+END_TEST
+
+/* (a') The pieces' matrices kept from another point: the pair at Ω = 0.68 after a solve at
+ * 0.66 (the slider's states the same, their durations not) has the fresh object's largest
+ * multiplier to rounding (1e-12 relative asserted; the exponentials differ in their products'
+ * order only). */
+START_TEST(kept_pieces_give_the_fresh_multipliers)
+{
+    struct jenkins_system s = pair(0.68);
+    double fresh = hb_mu(&s, 10, FRICREG_HB_STABILITY_MONODROMY, NULL);
+    double kept = hb_mu_after(&s, 10, 0.66);
+    ck_assert_double_eq_tol(kept, fresh, 1e-12 * fresh);
 }
 END_TEST
 
@@ -297,6 +334,7 @@ Suite *hb_monodromy_suite(void)
     TCase *tc = tcase_create("core");
     tcase_set_timeout(tc, 300);
     tcase_add_test(tc, jenkins_pair_converges_in_h);
+    tcase_add_test(tc, kept_pieces_give_the_fresh_multipliers);
     suite_add_tcase(s, tc);
     /* (b) and (c): the shootings at more frequencies (7 s) and the 60-dof chain's
      * transient (2 s): the release tier's (hb_monodromy_release) */

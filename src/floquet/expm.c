@@ -171,3 +171,97 @@ int fr_hb_expm(const double *A, size_t p, double *E, double *work, int *piv)
     }
     return 0;
 }
+
+double fr_hb_expm_powers(const double *A, size_t p, double *pow)
+{
+    size_t pp = p * p;
+    int n = (int)p;
+    double nu = norm1(A, p);
+    if (!(nu < INFINITY) || nu == 0.0)
+        return nu;
+    double *N = pow, *N2 = N + pp, *N4 = N2 + pp, *N6 = N4 + pp, *N8 = N6 + pp;
+    for (size_t i = 0; i < pp; i++)
+        N[i] = A[i] / nu;
+    product(n, N, N, N2);
+    product(n, N2, N2, N4);
+    product(n, N2, N4, N6);
+    product(n, N4, N4, N8);
+    return nu;
+}
+
+/* out = Σ_k c[k] N^(2k) over N^0 = I, N², N⁴, .., N^(2 top) (pow's). */
+static void power_sum(size_t p, const double *pow, size_t top, const double *c, double *out)
+{
+    size_t pp = p * p;
+    memset(out, 0, pp * sizeof *out);
+    for (size_t k = 1; k <= top; k++)
+        for (size_t i = 0; i < pp; i++)
+            out[i] += c[k] * pow[k * pp + i];
+    for (size_t i = 0; i < p; i++)
+        out[i * p + i] += c[0];
+}
+
+int fr_hb_expm_at(const double *pow, double nu, size_t p, double t, double *E, double *work,
+                  int *piv)
+{
+    size_t pp = p * p;
+    int n = (int)p;
+    double tau = t * nu; /* ‖t Â‖₁: e^(t Â) = e^(τ N) */
+    if (!(tau < INFINITY))
+        return -1;
+    double *U = work, *V = U + pp, *W = V + pp, *S = W + pp;
+    double cv[7], cu[7];
+    if (tau == 0.0) {
+        memset(E, 0, pp * sizeof *E);
+        for (size_t i = 0; i < p; i++)
+            E[i * p + i] = 1.0;
+        return 0;
+    }
+    for (int d = 0; d < 4; d++) {
+        if (tau > THETA[d])
+            continue;
+        /* V = Σ b_2k τ^2k N^2k, U = τ N Σ b_(2k+1) τ^2k N^2k (pade_low's with X = τ N) */
+        const double *b = PADE_LOW[d];
+        double x = 1.0;
+        for (int k = 0; k <= d + 1; k++, x *= tau * tau) {
+            cv[k] = b[2 * k] * x;
+            cu[k] = b[2 * k + 1] * x;
+        }
+        power_sum(p, pow, (size_t)d + 1, cv, V);
+        power_sum(p, pow, (size_t)d + 1, cu, W);
+        product(n, pow, W, U);
+        for (size_t i = 0; i < pp; i++)
+            U[i] *= tau;
+        return pade_solve(n, U, V, S, E, piv);
+    }
+    /* X = c N, c = τ/2^s: the [13/13] approximant as fr_hb_expm's, the scalars folded into the
+     * sums (X⁶ (b12 X⁶ + ..) = N⁶ (b12 c¹² N⁶ + ..)), then s squarings */
+    int s = tau > THETA13 ? (int)ceil(log2(tau / THETA13)) : 0;
+    double c = ldexp(tau, -s), c2 = c * c, c4 = c2 * c2, c6 = c4 * c2, c8 = c4 * c4;
+    const double vh[4] = {0.0, PADE[8] * c8, PADE[10] * c8 * c2, PADE[12] * c8 * c4},
+                 vl[4] = {PADE[0], PADE[2] * c2, PADE[4] * c4, PADE[6] * c6},
+                 uh[4] = {0.0, PADE[9] * c8, PADE[11] * c8 * c2, PADE[13] * c8 * c4},
+                 ul[4] = {PADE[1], PADE[3] * c2, PADE[5] * c4, PADE[7] * c6};
+    const double *N6 = pow + 3 * pp;
+    power_sum(p, pow, 3, vh, W);
+    product(n, N6, W, V);
+    power_sum(p, pow, 3, vl, W);
+    for (size_t i = 0; i < pp; i++)
+        V[i] += W[i];
+    power_sum(p, pow, 3, uh, W);
+    product(n, N6, W, U);
+    power_sum(p, pow, 3, ul, W);
+    for (size_t i = 0; i < pp; i++)
+        W[i] += U[i];
+    product(n, pow, W, U);
+    for (size_t i = 0; i < pp; i++)
+        U[i] *= c;
+    int info = pade_solve(n, U, V, S, E, piv);
+    if (info != 0)
+        return info;
+    for (int k = 0; k < s; k++) {
+        product(n, E, E, U);
+        memcpy(E, U, pp * sizeof *E);
+    }
+    return 0;
+}

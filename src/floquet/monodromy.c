@@ -35,6 +35,7 @@
 #include "expm.h"
 #include "joint/aft_slips.h"
 #include "monodromy.h"
+#include "piece_powers.h"
 #include "reduction.h"
 #include "switches.h"
 #include "hb/lu.h"
@@ -58,6 +59,7 @@ struct fr_hb_mono {
     int *piv;     /* [P] */
     double sigma; /* the pieces' velocities in units of σ (piece_matrix) */
     struct fr_hb_schedule sc;
+    struct fr_hb_pieces pieces; /* the pieces' matrices met before, with their powers */
 };
 
 void fr_hb_monodromy_free(fricreg_hb *hb)
@@ -67,6 +69,7 @@ void fr_hb_monodromy_free(fricreg_hb *hb)
         return;
     FR_FREE_ALL(w->Mlu, w->eig_work, w->piv);
     fr_hb_schedule_free(&w->sc);
+    fr_hb_pieces_free(&w->pieces);
     free(w);
     hb->mono = NULL;
 }
@@ -87,7 +90,8 @@ static int reserve_order(fricreg_hb *hb, const char *fn, size_t n)
         w->Mlu = malloc(mats * sizeof(double));
         w->eig_work = malloc((lwork + 2 * P) * sizeof(double));
         w->piv = malloc(P * sizeof *w->piv);
-        ok = w->Mlu && w->eig_work && w->piv && fr_hb_schedule_alloc(hb, &w->sc) == FRICREG_OK;
+        ok = w->Mlu && w->eig_work && w->piv && fr_hb_schedule_alloc(hb, &w->sc) == FRICREG_OK &&
+             fr_hb_pieces_init(&w->pieces, P) == 0;
     }
     hb->mono = w;
     if (!ok) {
@@ -139,21 +143,16 @@ static void model_matrices(const fricreg_hb *hb, struct fr_hb_mono *w,
     w->J = lm->J;
 }
 
-/* M^-1 K, M^-1 C in place and M^-1 J^T into MiJ, by M's LU (its pivots checked as Hill's). */
+/* M^-1 K, M^-1 C in place and M^-1 J^T into MiJ, by M's LU (its pivots checked as Hill's): one
+ * solve of the 2n + m columns, which lie in a row (K, C symmetric: their rows are columns). */
 static int mass_solves(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w)
 {
     size_t n = w->n;
     int status = fr_hb_mass_lu(hb, fn, "the monodromy", n, w->Mlu, w->piv);
     if (status != FRICREG_OK)
         return status;
-    for (size_t l = 0; l < n; l++) { /* columns; K, C symmetric */
-        fr_hb_lu_solve_factored(w->Mlu, n, w->piv, w->MiK + l * n);
-        fr_hb_lu_solve_factored(w->Mlu, n, w->piv, w->MiC + l * n);
-    }
-    for (size_t r = 0; r < hb->m; r++) {
-        memcpy(w->MiJ + r * n, w->J + r * n, n * sizeof(double));
-        fr_hb_lu_solve_factored(w->Mlu, n, w->piv, w->MiJ + r * n);
-    }
+    memcpy(w->MiJ, w->J, hb->m * n * sizeof(double));
+    fr_hb_lu_solve_many(w->Mlu, n, w->piv, 2 * n + hb->m, w->MiK);
     return FRICREG_OK;
 }
 
@@ -238,12 +237,21 @@ static double velocity_scale(const struct fr_hb_mono *w)
     return norm > 0.0 && isfinite(norm) ? sqrt(norm) : 1.0;
 }
 
-/* Φ = e^{dt A} Φ over a piece of the period. */
+/* Φ = e^{dt A} Φ over a piece of the period: A's exponential from its kept powers where the
+ * piece's matrix was met before (piece_powers.h), else afresh. */
 static int advance(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w, double dt)
 {
     size_t P = 2 * w->n + w->sc.S;
-    piece_matrix(hb, w, dt);
-    int info = fr_hb_expm(w->A, P, w->E, w->expm_work, w->piv);
+    piece_matrix(hb, w, 1.0);
+    int info;
+    const struct fr_hb_piece *kept = fr_hb_pieces_find(&w->pieces, w->A, P);
+    if (kept != NULL)
+        info = fr_hb_expm_at(kept->pow, kept->nu, P, dt, w->E, w->expm_work, w->piv);
+    else {
+        for (size_t i = 0; i < P * P; i++)
+            w->A[i] *= dt;
+        info = fr_hb_expm(w->A, P, w->E, w->expm_work, w->piv);
+    }
     if (info != 0)
         return fr_fail(hb, FRICREG_ENONFINITE,
                        "%s: stability: the monodromy's piece of %g s has no finite exponential", fn,
@@ -279,25 +287,48 @@ static void apply(const fricreg_hb *hb, struct fr_hb_mono *w, const struct fr_hb
     }
 }
 
-/* (Φ) over the period T = 2π/Ω from the sorted switches. */
-static int monodromy_matrix(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w, double omega)
+/* The angle of switch i of the schedule taken cyclically: i − count's, a period on. */
+static double cyclic_theta(const struct fr_hb_schedule *sc, size_t i)
+{
+    return i < sc->count ? sc->sw[i].theta : sc->sw[i - sc->count].theta + FR_TWO_PI;
+}
+
+/* Φ over the switches first .. first + nsw − 1 (cyclically), each applied at its angle, and
+ * the pieces between them, to the angle end. (Φ)'s product started at a switch instead of
+ * θ = 0: Φ's first and last pieces, of one state, become one piece, and the product is Φ's
+ * conjugate by the first piece (the same multipliers), one exponential less. */
+static int product_from(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w, double omega,
+                        size_t first, size_t nsw, double end)
 {
     const struct fr_hb_schedule *sc = &w->sc;
     size_t P = 2 * w->n + sc->S;
     memset(w->Phi, 0, P * P * sizeof(double));
     for (size_t i = 0; i < P; i++)
         w->Phi[i * P + i] = 1.0;
-    double theta = 0.0;
-    for (size_t i = 0; i <= sc->count; i++) {
-        double next = i < sc->count ? sc->sw[i].theta : FR_TWO_PI;
+    double theta = cyclic_theta(sc, first);
+    for (size_t i = first; i <= first + nsw; i++) {
+        double next = i < first + nsw ? cyclic_theta(sc, i) : end;
         int status = next > theta ? advance(hb, fn, w, (next - theta) / omega) : FRICREG_OK;
         if (status != FRICREG_OK)
             return status;
         theta = fmax(theta, next);
-        if (i < sc->count)
-            apply(hb, w, &sc->sw[i]);
+        if (i < first + nsw)
+            apply(hb, w, &sc->sw[i % sc->count]);
     }
     return FRICREG_OK;
+}
+
+/* (Φ) over the period T = 2π/Ω from the sorted switches, or over its first half where the
+ * second repeats it (*power 2: Φ = Φ_h², the multipliers the squares of Φ_h's), from the first
+ * switch on (there is one: a slider in the state switches, fr_hb_monodromy's one-piece orbits
+ * aside). */
+static int monodromy_matrix(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w, double omega,
+                            int *power)
+{
+    const struct fr_hb_schedule *sc = &w->sc;
+    *power = fr_hb_schedule_half_wave(hb, sc) ? 2 : 1;
+    size_t nsw = sc->count / (size_t)*power;
+    return product_from(hb, fn, w, omega, 0, nsw, sc->sw[0].theta + FR_TWO_PI / *power);
 }
 
 /* The exponents into out[2 + 4n] from the kept multipliers' logarithms, log|μ| in re[P] and
@@ -323,10 +354,10 @@ static void exponents(fricreg_hb *hb, size_t P, const double *re, const double *
     out[1] = exp(top);
 }
 
-/* The 2n multipliers of Φ [P P] (destroyed) as exponents (exponents above): the S smallest
- * |μ|, the sliders' zeros, dropped. */
+/* The 2n multipliers of Φ = Φ_h^power, Φ_h in w->Phi [P P] (destroyed), as exponents
+ * (exponents above): the S smallest |μ|, the sliders' zeros, dropped. */
 static int multipliers(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w, double omega,
-                       int reduced, double *out)
+                       int power, int reduced, double *out)
 {
     size_t S = w->sc.S, P = 2 * w->n + S;
     for (size_t i = 0; i < P * P; i++)
@@ -346,12 +377,12 @@ static int multipliers(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w, dou
                 low = i;
         w->wr[low] = NAN;
     }
-    for (size_t i = 0; i < P; i++) { /* μ into (log|μ|, arg μ), in place */
+    for (size_t i = 0; i < P; i++) { /* μ = ν^power into (log|μ|, arg μ), in place */
         if (isnan(w->wr[i]))
             continue;
         double mod = hypot(w->wr[i], w->wi[i]), arg = atan2(w->wi[i], w->wr[i]);
-        w->wr[i] = log(fmax(mod, DBL_MIN));
-        w->wi[i] = arg;
+        w->wr[i] = power * log(fmax(mod, DBL_MIN));
+        w->wi[i] = power == 1 ? arg : atan2(sin(power * arg), cos(power * arg));
     }
     exponents(hb, P, w->wr, w->wi, omega, reduced, out);
     return FRICREG_OK;
@@ -411,7 +442,8 @@ int fr_hb_monodromy(fricreg_hb *hb, const char *fn, double omega, int condensed,
     w->sigma = velocity_scale(w);
     if (w->sc.count == 0 && w->sc.S == 0) /* nothing switches: one piece */
         return linear_multipliers(hb, fn, w, omega, condensed, out);
-    if ((status = monodromy_matrix(hb, fn, w, omega)) != FRICREG_OK)
+    int power = 1;
+    if ((status = monodromy_matrix(hb, fn, w, omega, &power)) != FRICREG_OK)
         return status;
-    return multipliers(hb, fn, w, omega, condensed, out);
+    return multipliers(hb, fn, w, omega, power, condensed, out);
 }

@@ -213,3 +213,21 @@ int fr_hb_schedule(fricreg_hb *hb, const char *fn, struct fr_hb_schedule *sc)
     }
     return FRICREG_OK;
 }
+
+int fr_hb_schedule_half_wave(const fricreg_hb *hb, const struct fr_hb_schedule *sc)
+{
+    size_t h = sc->count / 2;
+    if (hb->rpe != 1 || sc->count == 0 || sc->count % 2 != 0)
+        return 0;
+    for (size_t j = 0; j < sc->S; j++)
+        if (sc->c[j] != 0.0)
+            return 0;
+    for (size_t i = 0; i < h; i++) {
+        const struct fr_hb_switch *a = &sc->sw[i], *b = &sc->sw[i + h];
+        double shift = b->theta - a->theta - 0.5 * FR_TWO_PI;
+        if (a->contact || b->contact || a->index != b->index || a->mode != b->mode ||
+            a->reset != b->reset || !(fabs(shift) <= FR_HB_HALF_WAVE_TOL))
+            return 0;
+    }
+    return 1;
+}

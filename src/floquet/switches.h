@@ -4,6 +4,7 @@
 #ifndef FRICREG_HB_SWITCHES_H
 #define FRICREG_HB_SWITCHES_H
 
+#include "base/fr_math.h"
 #include "hb/hb_internal.h"
 
 /* One switch at the angle θ = Ω t in [0, 2π): a slider of the state (index: its place among
@@ -44,5 +45,14 @@ void fr_hb_schedule_free(struct fr_hb_schedule *sc);
  * elements, with or without lift-off: rpe 1 or 2). FRICREG_OK or FRICREG_EINTEGRATOR (the AFT,
  * message recorded with fn). */
 int fr_hb_schedule(fricreg_hb *hb, const char *fn, struct fr_hb_schedule *sc);
+
+/* Whether the orbit's second half period repeats its first: a 1-D slider without a normal
+ * law (hb->rpe 1, mu kn = 0) has the same piece matrices and saltations in either direction,
+ * so where switch i + count/2 is switch i's half a period on (to FR_HB_HALF_WAVE_TOL), for the
+ * same slider, mode and reset, the period's product is the square of the first half's (Φ =
+ * Φ_h², monodromy.c). These are the odd orbits, x(t + T/2) = −x(t), of forces odd in x under a
+ * harmonic load: every orbit of such a model that keeps HB's symmetry. 1 if so, else 0. */
+#define FR_HB_HALF_WAVE_TOL (1e-12 * FR_TWO_PI)
+int fr_hb_schedule_half_wave(const fricreg_hb *hb, const struct fr_hb_schedule *sc);
 
 #endif

@@ -12,6 +12,8 @@
  * check them first). */
 void fr_hb_lu_factor(double *A, size_t n, int *piv);
 void fr_hb_lu_solve_factored(const double *LU, size_t n, const int *piv, double *x);
+/* The same for nrhs right-hand sides at once, X[nrhs n] (each x contiguous), one LAPACK call. */
+void fr_hb_lu_solve_many(const double *LU, size_t n, const int *piv, size_t nrhs, double *X);
 void fr_hb_zlu_factor(double *A, size_t n, int *piv);
 void fr_hb_zlu_solve_factored(const double *LU, size_t n, const int *piv, double *x);
 /* The stability's M^-1 (lu.c): Mlu[n n] holding a mass matrix (the driver's, or a reduced one)
