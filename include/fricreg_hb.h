@@ -1239,12 +1239,12 @@ FRICREG_API int fricreg_hb_peak(fricreg_hb *hb, size_t dof, double *omega, doubl
  *  reported. Its modes are computed once per model (LAPACK's dsygvd, O(ndof³)), its workspace
  *  made and grown by the solves (its order depends on Ω). K_II must be positive definite
  *  (FRICREG_ESINGULAR from the solve otherwise) and the model at most 4096 dofs
- *  (FRICREG_EINVAL; dense: 8 ndof² doubles).
+ *  (FRICREG_EINVAL; dense: about 9 ndof² doubles, 290 MB and 1.4 s of modes at 1500 dofs).
  *  Along continuations on chains of 60 and 300 dofs with 10 Jenkins elements, and on a gap
  *  chain with folds and Neimark–Sacker points, every point's count of unstable multipliers is
- *  the whole model's and the largest within 3e-4 of it, at 2-6x a point's cost without
- *  stability at 60 dofs and 1.4-2.4x at 300 and 1000 dofs, where the whole model's takes 6-22x
- *  (60 dofs) and 290-830x (300 dofs) (bench/hb_stability_size.c, docs/stability.md).
+ *  the whole model's and the largest within 3e-4 of it, at 1.7-2.8x a point's cost without
+ *  stability at 60 dofs and 1.3-1.9x at 300 and 1000 dofs, where the whole model's takes
+ *  3.9-9.8x (60 dofs) and 190-410x (300 dofs) (bench/hb_stability_size.c, docs/stability.md).
  *
  *  Either way a solution is stable when every multiplier has |μ| <= 1 + 1e-6 (Re λ 2π/Ω <=
  *  1e-6), and each stored point then keeps 4 + 4 ndof numbers. The workspace of the method in
@@ -1302,8 +1302,9 @@ enum fricreg_hb_stability_method {
                                              32 <= ndof <= 1024 and the elements touch at most
                                              ndof/4 dofs (since 1.9), else the exact monodromy
                                              where its order 2 ndof + sliders is at most
-                                             FRICREG_HB_MAX_MONODROMY; Hill's method otherwise
-                                             (the default) */
+                                             FRICREG_HB_MAX_MONODROMY, else the condensed one
+                                             up to 4096 dofs (since 1.9); Hill's method
+                                             otherwise (the default) */
     FRICREG_HB_STABILITY_HILL = 1,      /**< Hill's method, for any element */
     FRICREG_HB_STABILITY_MONODROMY = 2, /**< the exact monodromy of the orbit, at any order */
     FRICREG_HB_STABILITY_CONDENSED = 3  /**< the exact monodromy of the model condensed onto

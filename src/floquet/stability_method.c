@@ -15,7 +15,7 @@
 
 /* The condensed model pays where the elements touch at most a quarter of the dofs of a model
  * of some size (its order is theirs plus the interior modes in band), up to a size whose dense
- * modes, computed once, take seconds (O(ndof³)). */
+ * modes, computed once, take well under a second (O(ndof³)). */
 #define CONDENSED_MIN_DOFS 32
 #define CONDENSED_AUTO_MAX_DOFS 1024
 
@@ -28,9 +28,13 @@ int fr_hb_stability_in_force(const fricreg_hb *hb)
     if (hb->n >= CONDENSED_MIN_DOFS && hb->n <= CONDENSED_AUTO_MAX_DOFS &&
         4 * fr_hb_boundary_dofs(hb) <= hb->n)
         return FRICREG_HB_STABILITY_CONDENSED;
-    /* the monodromy is dense in 2n + sliders: past its bound, Hill's (dense in n (2H + 1)) */
-    return 2 * hb->n + hb->nsl <= FRICREG_HB_MAX_MONODROMY ? FRICREG_HB_STABILITY_MONODROMY
-                                                           : FRICREG_HB_STABILITY_HILL;
+    /* the monodromy is dense in 2n + sliders; past its bound the condensed one, never more
+     * (its order at most the monodromy's), up to its own dense bound: Hill's, dense in
+     * n (2H + 1), would refuse such a model for its size */
+    if (2 * hb->n + hb->nsl <= FRICREG_HB_MAX_MONODROMY)
+        return FRICREG_HB_STABILITY_MONODROMY;
+    return hb->n <= FR_HB_REDUCTION_MAX_DOFS ? FRICREG_HB_STABILITY_CONDENSED
+                                             : FRICREG_HB_STABILITY_HILL;
 }
 
 int fr_hb_stability(fricreg_hb *hb, const char *fn, double omega, double *out)
