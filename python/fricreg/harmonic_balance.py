@@ -247,7 +247,7 @@ class HarmonicBalance:
             the elements touch (Craig-Bampton, the interior modes in band); ``"hill"``: Hill's
             method, any element, its verdict only; ``"auto"``: the condensed monodromy where
             the elements touch at most a quarter of 32 to 1024 dofs, else the monodromy up to
-            order 512, else Hill's.
+            order 512, else the condensed one up to 4096 dofs, else Hill's.
 
         Raises
         ------

@@ -151,8 +151,8 @@ static size_t hb_table(struct hb_options *o, struct cli_option table[])
                  "sets is refused), condensed (the same on the model condensed onto the dofs "
                  "the elements touch), by Hill's method (any element, ndof (2H + 1) <= 1024), "
                  "auto (the condensed monodromy where the elements touch at most a quarter of "
-                 "32 to 1024 dofs, else the monodromy up to order 512, else Hill's where the "
-                 "size allows it, else none), or off"},
+                 "32 to 1024 dofs, else the monodromy up to order 512, else the condensed one "
+                 "up to 4096 dofs, else Hill's where the size allows it, else none), or off"},
         {"--output", CLI_CHOICE, .slot = &o->output, .words = hb_outputs,
          .help = "a JSON summary (each dof's peak RMS and its frequency, the estimate of its "
                  "error from truncating at H harmonics at the largest stored point, by a solve "
