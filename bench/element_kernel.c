@@ -2,7 +2,7 @@
 /* element_kernel.c — fricreg-bench-element-kernel [count CASE ITEM]: the element types' kernel
  * (fricreg_element_eval, fricreg_element_eval_batch) against hand-written return mappings.
  *
- * Three cases, each over NPOINTS points with their own parameters (a host's integration
+ * Three cases, each over a set of points with their own parameters (a host's integration
  * points), about half of them sticking and half slipping, fixed seed:
  *   jenkins     the 1-D return mapping and its tangent;
  *   contact_3d  the radial return in the contact plane under the normal law of lift-off (a
@@ -23,9 +23,13 @@
  *   batch, shared  the same with every point on point 0's parameters (params_stride 0);
  *   eval           against the hand routine called per point through a non-inlined call,
  *                  as a host calls its friction routine at each point.
- * Each figure is the median of REPEATS interleaved timings, in ns per point. "count CASE ITEM"
- * runs one item (its name in item_names, or none) alone, for instruction counts
- * (bench/element_kernel.sh: callgrind's total less that of ITEM none). */
+ * Each figure is the median of REPEATS interleaved timings, in ns per point, on two sets: 1000
+ * points, swept again and again, whose every stick/slip branch the processor learns (the hand
+ * loop's ~3 cycles a point), and a host's mesh of 65 536 points, which no branch predictor
+ * holds, so that the branches cost what they cost in a host (and the memory what it costs:
+ * the mesh's arrays are 2 to 30 MB). "count CASE ITEM" runs one item (its name in item_names,
+ * or none) alone on the 1000 points, for instruction counts (bench/element_kernel.sh:
+ * callgrind's total less that of ITEM none). */
 #define _POSIX_C_SOURCE 199309L /* clock_gettime */
 #include <math.h>
 #include <stdint.h>
@@ -36,7 +40,11 @@
 
 #include <fricreg_element.h>
 
-enum { NPOINTS = 1000, NS = 10, REPEATS = 21, SWEEPS = 200, NCASES = 3, COUNT_SWEEPS = 10 };
+/* The point sets timed: 1000 points, whose stick/slip branches the processor learns point by
+ * point over the sweeps, and a host's mesh of 65 536, which no branch predictor holds; each
+ * timing evaluates WORK points (sweeps of a set). */
+enum { NSETS = 2, WORK = 200000, NS = 10, REPEATS = 21, NCASES = 3, COUNT_SWEEPS = 10 };
+static const size_t set_points[NSETS] = {1000, 65536};
 
 #if defined(__GNUC__)
 #define NOINLINE __attribute__((noinline))
@@ -76,7 +84,7 @@ static double uniform(double lo, double hi)
 struct element_case {
     const char *name;
     const fricreg_element_type *type;
-    size_t dim, np, nstate;
+    size_t npoints, dim, np, nstate;
     double *p, *w, *u;     /* inputs */
     double *f, *t, *wn;    /* the hand loop's outputs */
     double *lf, *lt, *lwn; /* the library's */
@@ -173,7 +181,7 @@ typedef void hand_fn(const double *p, const double *w, const double *u, double *
 #define HAND_LOOP(one)                                                                             \
     static NOINLINE void loop_##one(const struct element_case *c, size_t p_stride)                 \
     {                                                                                              \
-        for (size_t i = 0; i < NPOINTS; i++)                                                       \
+        for (size_t i = 0; i < c->npoints; i++)                                                    \
             one(c->p + p_stride * i, c->w + c->nstate * i, c->u + c->dim * i, c->f + c->dim * i,   \
                 c->t + c->dim * c->dim * i, c->wn + c->nstate * i);                                \
     }                                                                                              \
@@ -204,7 +212,7 @@ static NOINLINE void hand_point(const struct element_case *c, int which)
     hand_fn *one = which == 0   ? point_hand_jenkins
                    : which == 1 ? point_hand_contact_3d
                                 : point_hand_iwan;
-    for (size_t i = 0; i < NPOINTS; i++)
+    for (size_t i = 0; i < c->npoints; i++)
         one(c->p + c->np * i, c->w + c->nstate * i, c->u + c->dim * i, c->f + c->dim * i,
             c->t + c->dim * c->dim * i, c->wn + c->nstate * i);
 }
@@ -214,7 +222,7 @@ static NOINLINE void hand_point(const struct element_case *c, int which)
 static NOINLINE int lib_eval(const struct element_case *c)
 {
     int status = FRICREG_OK;
-    for (size_t i = 0; i < NPOINTS && status == FRICREG_OK; i++)
+    for (size_t i = 0; i < c->npoints && status == FRICREG_OK; i++)
         status = fricreg_element_eval(c->type, c->p + c->np * i, c->w + c->nstate * i,
                                       c->u + c->dim * i, c->lf + c->dim * i,
                                       c->lt + c->dim * c->dim * i, NULL, c->lwn + c->nstate * i);
@@ -224,11 +232,11 @@ static NOINLINE int lib_eval(const struct element_case *c)
 /* p_stride 0: every point on the first point's parameters, checked once. */
 static NOINLINE int lib_batch(const struct element_case *c, size_t p_stride)
 {
-    return fricreg_element_eval_batch(c->type, NPOINTS, c->p, p_stride, c->w, c->u, c->lf, c->lt,
+    return fricreg_element_eval_batch(c->type, c->npoints, c->p, p_stride, c->w, c->u, c->lf, c->lt,
                                       NULL, c->lwn, NULL);
 }
 
-/* The items timed, each over a case's NPOINTS points: the hand loop and fricreg_element_eval_batch
+/* The items timed, each over a case's points: the hand loop and fricreg_element_eval_batch
  * with parameters per point and shared, the hand routine per point and fricreg_element_eval. */
 enum item { HAND_LOOP, BATCH, HAND_SHARED, BATCH_SHARED, HAND_POINT, EVAL, NITEMS };
 static const char *const item_names[NITEMS] = {"hand",         "batch",      "hand_shared",
@@ -259,23 +267,24 @@ static double *array(size_t n)
     return a;
 }
 
-static void make_case(struct element_case *c, const char *name, size_t ns)
+static void make_case(struct element_case *c, const char *name, size_t ns, size_t npoints)
 {
     c->name = name;
+    c->npoints = npoints;
     c->type = fricreg_element_sliders(fricreg_element_lookup(name), ns);
     c->dim = (size_t)fricreg_element_dim(c->type);
     c->np = fricreg_element_nparams(c->type);
     c->nstate = fricreg_element_nstate(c->type);
-    c->p = array(c->np * NPOINTS);
-    c->w = array(c->nstate * NPOINTS);
-    c->u = array(c->dim * NPOINTS);
-    c->f = array(c->dim * NPOINTS);
-    c->lf = array(c->dim * NPOINTS);
-    c->t = array(c->dim * c->dim * NPOINTS);
-    c->lt = array(c->dim * c->dim * NPOINTS);
-    c->wn = array(c->nstate * NPOINTS);
-    c->lwn = array(c->nstate * NPOINTS);
-    for (size_t i = 0; i < NPOINTS; i++) {
+    c->p = array(c->np * npoints);
+    c->w = array(c->nstate * npoints);
+    c->u = array(c->dim * npoints);
+    c->f = array(c->dim * npoints);
+    c->lf = array(c->dim * npoints);
+    c->t = array(c->dim * c->dim * npoints);
+    c->lt = array(c->dim * c->dim * npoints);
+    c->wn = array(c->nstate * npoints);
+    c->lwn = array(c->nstate * npoints);
+    for (size_t i = 0; i < npoints; i++) {
         double *p = c->p + c->np * i, *w = c->w + c->nstate * i, *u = c->u + c->dim * i;
         /* slip starts at |u - w| = b / k, about 0.01 (N about 1 for the contact): about half
          * stick; the Iwan sliders' b / k from 0.002 to 0.04 in order, one reversal's offsets */
@@ -302,11 +311,11 @@ static void make_case(struct element_case *c, const char *name, size_t ns)
 static size_t mismatches(const struct element_case *c)
 {
     size_t bad = 0;
-    for (size_t i = 0; i < c->dim * NPOINTS; i++)
+    for (size_t i = 0; i < c->dim * c->npoints; i++)
         bad += c->f[i] != c->lf[i];
-    for (size_t i = 0; i < c->dim * c->dim * NPOINTS; i++)
+    for (size_t i = 0; i < c->dim * c->dim * c->npoints; i++)
         bad += c->t[i] != c->lt[i];
-    for (size_t i = 0; i < c->nstate * NPOINTS; i++)
+    for (size_t i = 0; i < c->nstate * c->npoints; i++)
         bad += c->wn[i] != c->lwn[i];
     return bad;
 }
@@ -319,7 +328,7 @@ static int check_case(struct element_case *c, int which)
                                     {HAND_POINT, EVAL}};
     for (int k = 0; k < 3; k++) {
         run_item(c, which, pairs[k][0]);
-        memset(c->lf, 0xff, c->dim * NPOINTS * sizeof *c->lf);
+        memset(c->lf, 0xff, c->dim * c->npoints * sizeof *c->lf);
         int status = run_item(c, which, pairs[k][1]);
         size_t bad = mismatches(c);
         if (status != FRICREG_OK || bad != 0) {
@@ -332,7 +341,8 @@ static int check_case(struct element_case *c, int which)
 }
 
 /* "count CASE ITEM": ITEM (an item's name, or none) of case CASE (0, 1, 2) COUNT_SWEEPS times,
- * for an instruction count: (count(ITEM) - count(none)) / (COUNT_SWEEPS NPOINTS). */
+ * for an instruction count: (count(ITEM) - count(none)) / (COUNT_SWEEPS 1000), on the set of
+ * 1000 points. */
 static int count(struct element_case *c, int k, const char *name)
 {
     int item = 0;
@@ -345,32 +355,44 @@ static int count(struct element_case *c, int k, const char *name)
     return 0;
 }
 
-int main(int argc, char **argv)
+static void free_case(struct element_case *c)
 {
-    struct element_case c[NCASES];
-    make_case(&c[0], "jenkins", 1);
-    make_case(&c[1], "contact_3d", 1);
-    make_case(&c[2], "iwan", NS);
+    double *arrays[] = {c->p, c->w, c->u, c->f, c->lf, c->t, c->lt, c->wn, c->lwn};
+    for (size_t k = 0; k < sizeof arrays / sizeof *arrays; k++)
+        free(arrays[k]);
+}
+
+/* The three cases on a set of npoints: 0, or 1 when a library item's results differ. */
+static int make_cases(struct element_case c[NCASES], size_t npoints)
+{
+    make_case(&c[0], "jenkins", 1, npoints);
+    make_case(&c[1], "contact_3d", 1, npoints);
+    make_case(&c[2], "iwan", NS, npoints);
     for (int k = 0; k < NCASES; k++)
         if (check_case(&c[k], k) != 0)
             return 1;
-    if (argc == 4 && strcmp(argv[1], "count") == 0)
-        return count(c, atoi(argv[2]) % NCASES, argv[3]);
+    return 0;
+}
+
+/* Every item of every case, REPEATS interleaved timings of WORK points each; the table. */
+static void time_set(struct element_case c[NCASES])
+{
     static double times[NCASES][NITEMS][REPEATS];
-    double ratio_to_jenkins = 0.0;
+    int sweeps = (int)(WORK / c[0].npoints) + 1;
     for (int r = 0; r < REPEATS; r++)
         for (int k = 0; k < NCASES; k++)
             for (int item = 0; item < NITEMS; item++) {
                 double t0 = cpu_seconds();
-                for (int sweep = 0; sweep < SWEEPS; sweep++)
+                for (int sweep = 0; sweep < sweeps; sweep++)
                     run_item(&c[k], k, item);
-                times[k][item][r] = (cpu_seconds() - t0) * 1e9 / (SWEEPS * (double)NPOINTS);
+                times[k][item][r] = (cpu_seconds() - t0) * 1e9 / (sweeps * (double)c[k].npoints);
             }
-    printf("ns per point, median of %d interleaved runs (iwan: %d sliders); ratios: the library "
-           "to its hand item\n",
-           REPEATS, NS);
+    printf("%zu points: ns per point, median of %d interleaved runs (iwan: %d sliders); ratios: "
+           "the library to its hand item\n",
+           c[0].npoints, REPEATS, NS);
     printf("%-11s %6s %6s %6s %6s %6s %6s %8s %8s %8s\n", "case", "loop", "batch", "loop_s",
            "batch_s", "point", "eval", "batch/h", "batch_s/h", "eval/h");
+    double jenkins_eval = median(times[0][EVAL], REPEATS);
     for (int k = 0; k < NCASES; k++) {
         double m[NITEMS];
         for (int item = 0; item < NITEMS; item++)
@@ -379,8 +401,24 @@ int main(int argc, char **argv)
                m[HAND_LOOP], m[BATCH], m[HAND_SHARED], m[BATCH_SHARED], m[HAND_POINT], m[EVAL],
                m[BATCH] / m[HAND_LOOP], m[BATCH_SHARED] / m[HAND_SHARED], m[EVAL] / m[HAND_POINT]);
         if (k == 2)
-            ratio_to_jenkins = m[EVAL] / (NS * median(times[0][EVAL], REPEATS));
+            printf("iwan eval / %d jenkins evals: %.2f\n", NS, m[EVAL] / (NS * jenkins_eval));
     }
-    printf("iwan eval / %d jenkins evals: %.2f\n", NS, ratio_to_jenkins);
+}
+
+int main(int argc, char **argv)
+{
+    struct element_case c[NCASES];
+    int counting = argc == 4 && strcmp(argv[1], "count") == 0;
+    for (int set = 0; set < (counting ? 1 : NSETS); set++) {
+        int status = make_cases(c, set_points[set]);
+        if (status == 0 && counting)
+            status = count(c, atoi(argv[2]) % NCASES, argv[3]);
+        else if (status == 0)
+            time_set(c);
+        for (int k = 0; k < NCASES; k++)
+            free_case(&c[k]);
+        if (status != 0 || counting)
+            return status;
+    }
     return 0;
 }
