@@ -178,9 +178,10 @@ static void slider_row(const fricreg_hb *hb, const struct fr_hb_mono *w, size_t 
         out[l] = Jt[l] - (rpe == 2 && r != 0.0 ? r * Jt[n + l] : 0.0);
 }
 
-/* dt A of the piece with the schedule's sliders and contacts in their current states,
- * column-major [P P]; the x rows of the velocity block in A's columns 0..n-1. */
-static void piece_matrix(const fricreg_hb *hb, struct fr_hb_mono *w, double dt)
+/* A of the piece with the schedule's sliders and contacts in their current states (its
+ * exponential at the piece's duration dt is e^{dt A}), column-major [P P]; the x rows of the
+ * velocity block in A's columns 0..n-1. */
+static void piece_matrix(const fricreg_hb *hb, struct fr_hb_mono *w)
 {
     const struct fr_hb_schedule *sc = &w->sc;
     size_t n = w->n, S = sc->S, P = 2 * n + S, rpe = hb->rpe;
@@ -218,7 +219,7 @@ static void piece_matrix(const fricreg_hb *hb, struct fr_hb_mono *w, double dt)
      * one size (ω, not ω²): the same multipliers, and its norm, which sets the exponential's
      * squarings, is the fastest mode's ω dt instead of ω² dt */
     for (size_t c = 0; c < P; c++) {
-        double fc = dt * (c >= n && c < 2 * n ? w->sigma : 1.0);
+        double fc = c >= n && c < 2 * n ? w->sigma : 1.0;
         for (size_t r = 0; r < P; r++)
             A[c * P + r] *= r >= n && r < 2 * n ? fc / w->sigma : fc;
     }
@@ -242,7 +243,7 @@ static double velocity_scale(const struct fr_hb_mono *w)
 static int advance(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w, double dt)
 {
     size_t P = 2 * w->n + w->sc.S;
-    piece_matrix(hb, w, 1.0);
+    piece_matrix(hb, w);
     int info;
     const struct fr_hb_piece *kept = fr_hb_pieces_find(&w->pieces, w->A, P);
     if (kept != NULL)
@@ -397,7 +398,7 @@ static int linear_multipliers(fricreg_hb *hb, const char *fn, struct fr_hb_mono 
                               int reduced, double *out)
 {
     size_t P = 2 * w->n; /* no slider switches: none in the state */
-    piece_matrix(hb, w, 1.0);
+    piece_matrix(hb, w);
     if (w->lin_order != P || memcmp(w->A, w->lin_A, P * P * sizeof *w->A) != 0) {
         for (size_t i = 0; i < P * P; i++)
             if (!isfinite(w->A[i]))

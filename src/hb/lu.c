@@ -24,16 +24,15 @@ void fr_hb_lu_factor(double *A, size_t n, int *piv)
     dgetrf_(&order, &order, A, &order, piv, &info);
 }
 
-void fr_hb_lu_solve_factored(const double *LU, size_t n, const int *piv, double *x)
-{
-    int order = (int)n, one = 1, info;
-    dgetrs_("T", &order, &one, LU, &order, piv, x, &order, &info, 1);
-}
-
 void fr_hb_lu_solve_many(const double *LU, size_t n, const int *piv, size_t nrhs, double *X)
 {
     int order = (int)n, cols = (int)nrhs, info;
     dgetrs_("T", &order, &cols, LU, &order, piv, X, &order, &info, 1);
+}
+
+void fr_hb_lu_solve_factored(const double *LU, size_t n, const int *piv, double *x)
+{
+    fr_hb_lu_solve_many(LU, n, piv, 1, x);
 }
 
 void fr_hb_zlu_factor(double *A, size_t n, int *piv)
