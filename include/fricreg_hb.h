@@ -68,8 +68,8 @@
  * every harmonic, (H + 1) ndof (m + 1) complex numbers, is kept (the displacements need no
  * factor). Its cost follows the factors' fill, O(H ndof) on a banded model (measured:
  * docs/harmonic_balance.md). The solves' forward error grows with the condition of D_h (on a rod of
- * ndof elements as ndof²: about 3e-8 of q at 10^4 dofs): Newton's tolerance must lie above it
- * for a continuation to converge (fricreg_hb_set_newton: 1e-7 there).
+ * ndof elements as ndof²: about 3e-8 of q at 10^4 dofs); a continuation's corrector stops at
+ * it where it lies above Newton's tolerance (fricreg_hb_set_newton).
  *
  * Conventions are those of fricreg.h: int results are fricreg_status codes, nothing is
  * printed, a failed call leaves the caller's arrays untouched, one object per thread. The
@@ -523,6 +523,17 @@ FRICREG_API int fricreg_hb_set_excitation(fricreg_hb *hb, size_t ndof, const dou
 /** Newton's stopping rule: converged when the largest entry of the residual (R) is at most
  *  tol times the problem's displacement scale (the largest |q| of the iterate and of the
  *  response with the elements removed, J D_h^-1 P_h), after at least one iteration.
+ *  A continuation's corrector (fricreg_hb_continue) also stops where the solves' rounding
+ *  keeps the residual above that: where an iteration from the second on does not halve the
+ *  largest |R_j|, and that entry is at most DBL_EPSILON κ₁(D_h) times the scale, κ₁ the
+ *  largest over h of D_h's 1-norm condition number at the iterate's Ω, estimated from its
+ *  LU factor (KLU's klu_condest, or LAPACK's zgecon on a dense model; N. J. Higham, Accuracy
+ *  and Stability of Numerical Algorithms, 2nd ed., SIAM 2002, Ch. 7 and 15). The corrector
+ *  moves Ω, so D_h is factored anew at each iteration and the solves' forward error, up to
+ *  about u κ₁ of q, is noise in (R) that no iteration lowers: a tolerance below it failed
+ *  such continuations until 1.9 ("the corrector did not converge": a 1000-dof chain at the
+ *  default 1e-10). The estimate is only made at such a stall, so a corrector that converges
+ *  is unchanged. Point solves (fricreg_hb_solve) keep Ω fixed and converge below it.
  *
  *  tol       0 < tol < 1 (finite), relative.
  *  max_iter  1 <= max_iter <= 1000 iterations per solve (and per continuation step).

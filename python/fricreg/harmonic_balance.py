@@ -214,7 +214,9 @@ class HarmonicBalance:
 
     def set_newton(self, tol=1e-10, max_iter=50):
         """Newton's stopping rule (``fricreg_hb_set_newton``): the largest residual entry at
-        most tol times the displacement scale, after at most max_iter iterations a solve.
+        most tol times the displacement scale, after at most max_iter iterations a solve. A
+        continuation's corrector also stops where it stalls at the solves' rounding, DBL_EPSILON
+        times D_h's condition number of that scale (the C function's documentation).
 
         Raises
         ------

@@ -31,18 +31,26 @@ static double damping(const fricreg_hb *hb, size_t idx)
     return c - hb->xi * hb->M[idx];
 }
 
-/* Forms and factors D_h in hb->D; FRICREG_ESINGULAR if a pivot is below 1e-14 of the largest
- * entry of |K| + w² |M| + w |C| (or not finite). */
-static int factor_one(fricreg_hb *hb, const char *fn, int h, double omega)
+/* D_h into hb->D; returns the largest |K| + w² |M| + w |C| of an entry: the scale of the terms,
+ * not of their sum (K − w² M cancels at a resonance). */
+static double form_one(fricreg_hb *hb, int h, double omega)
 {
     size_t n = hb->n;
     double w = h * omega, dmax = 0.0;
     for (size_t k = 0; k < n * n; k++) {
         hb->D[2 * k] = hb->K[k] - w * w * hb->M[k];
         hb->D[2 * k + 1] = w * damping(hb, k);
-        /* the scale of the terms, not of their sum: K − w² M cancels at a resonance */
         dmax = fmax(dmax, fabs(hb->K[k]) + w * w * fabs(hb->M[k]) + fabs(hb->D[2 * k + 1]));
     }
+    return dmax;
+}
+
+/* Forms and factors D_h in hb->D; FRICREG_ESINGULAR if a pivot is below 1e-14 of the largest
+ * entry of |K| + w² |M| + w |C| (or not finite). */
+static int factor_one(fricreg_hb *hb, const char *fn, int h, double omega)
+{
+    size_t n = hb->n;
+    double dmax = form_one(hb, h, omega);
     if (!isfinite(dmax))
         return fr_fail(hb, FRICREG_ENONFINITE,
                        "%s: the dynamic stiffness D_%d overflows at Omega = %g (|K| + w^2 |M| + w "
@@ -56,6 +64,44 @@ static int factor_one(fricreg_hb *hb, const char *fn, int h, double omega)
                            "%s: %s is singular at Omega = %g (pivot %zu of its LU factor: %g, "
                            "the matrices' scale %g)",
                            fn, h == 0 ? "K" : "the dynamic stiffness D_h", omega, k, p, dmax);
+    }
+    return FRICREG_OK;
+}
+
+/* The 1-norm condition number of the dense D_h at omega, estimated by zgecon from a factor
+ * formed again (hb->D holds the last harmonic's only): D_h is symmetric, so its 1-norm is the
+ * largest row sum, and zgecon's of the transpose that LAPACK factors is the same. */
+static int dense_condition(fricreg_hb *hb, const char *fn, int h, double omega, double *kappa)
+{
+    size_t n = hb->n;
+    form_one(hb, h, omega);
+    double norm1 = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        double sum = 0.0;
+        for (size_t j = 0; j < n; j++)
+            sum += hypot(hb->D[2 * (i * n + j)], hb->D[2 * (i * n + j) + 1]);
+        norm1 = fmax(norm1, sum);
+    }
+    int status = factor_one(hb, fn, h, omega);
+    if (status != FRICREG_OK)
+        return status;
+    /* Z holds n (m + 1) >= 2 n complex numbers, colw n: zgecon's work and rwork */
+    double rcond = fr_hb_zlu_rcond(hb->D, n, norm1, hb->Z, hb->colw);
+    *kappa = rcond > 0.0 ? 1.0 / rcond : INFINITY;
+    return FRICREG_OK;
+}
+
+int fr_hb_condition(fricreg_hb *hb, const char *fn, double *kappa)
+{
+    double omega = hb->factored_omega;
+    *kappa = 0.0;
+    for (int h = 0; h <= hb->H && isfinite(omega); h++) {
+        double k = 0.0;
+        int status = hb->sparse ? fr_hb_sparse_condition(hb, fn, h, omega, &k)
+                                : dense_condition(hb, fn, h, omega, &k);
+        if (status != FRICREG_OK)
+            return status;
+        *kappa = fmax(*kappa, k);
     }
     return FRICREG_OK;
 }

@@ -47,6 +47,14 @@ void fr_hb_zlu_solve_factored(const double *LU, size_t n, const int *piv, double
     zgetrs_("T", &order, &one, LU, &order, piv, x, &order, &info, 1);
 }
 
+double fr_hb_zlu_rcond(const double *LU, size_t n, double norm1, double *work, double *rwork)
+{
+    int order = (int)n, info;
+    double rcond = 0.0;
+    zgecon_("1", &order, LU, &order, &norm1, &rcond, work, rwork, &info, 1);
+    return rcond;
+}
+
 int fr_hb_mass_lu(fricreg_hb *hb, const char *fn, const char *method, size_t n, double *Mlu,
                   int *piv)
 {

@@ -16,6 +16,10 @@ void fr_hb_lu_solve_factored(const double *LU, size_t n, const int *piv, double 
 void fr_hb_lu_solve_many(const double *LU, size_t n, const int *piv, size_t nrhs, double *X);
 void fr_hb_zlu_factor(double *A, size_t n, int *piv);
 void fr_hb_zlu_solve_factored(const double *LU, size_t n, const int *piv, double *x);
+/* The reciprocal 1-norm condition number of the complex matrix whose zlu factor LU[n n] is,
+ * estimated from the factor and the matrix's 1-norm norm1 (LAPACK's zgecon: Higham's
+ * estimator, O(n²)); work[4 n] and rwork[2 n] scratch. 0 where the factor is singular. */
+double fr_hb_zlu_rcond(const double *LU, size_t n, double norm1, double *work, double *rwork);
 /* The stability's M^-1 (lu.c): Mlu[n n] holding a mass matrix (the driver's, or a reduced one)
  * factored in place into piv[n], every pivot above 1e-14 of M's largest entry; else
  * FRICREG_ESINGULAR, the message naming the method that needs it. */

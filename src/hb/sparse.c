@@ -389,7 +389,8 @@ static void solve(fricreg_hb *hb, int h, struct fr_hb_lu *lu)
         }
 }
 
-int fr_hb_sparse_solve(fricreg_hb *hb, const char *fn, int h, double omega)
+/* D_h(omega)'s values into hb->Dv; returns the largest |K| + w² |M| + w |C| of an entry. */
+static double form_values(fricreg_hb *hb, int h, double omega)
 {
     double wh = h * omega, dmax = 0.0;
     for (size_t p = 0; p < hb->dnz; p++) {
@@ -398,6 +399,18 @@ int fr_hb_sparse_solve(fricreg_hb *hb, const char *fn, int h, double omega)
         hb->Dv[2 * p + 1] = im;
         dmax = fmax(dmax, fabs(hb->vK[p]) + wh * wh * fabs(hb->vM[p]) + fabs(im));
     }
+    return dmax;
+}
+
+/* The harmonics' factors are freed after their solves once they hold more than this. */
+static int too_many_entries(const fricreg_hb *hb, const struct fr_hb_lu *lu)
+{
+    return (double)(lu->numeric->lnz + lu->numeric->unz) * (hb->H + 1) > KEPT_LU_ENTRIES_MAX;
+}
+
+int fr_hb_sparse_solve(fricreg_hb *hb, const char *fn, int h, double omega)
+{
+    double dmax = form_values(hb, h, omega);
     if (!isfinite(dmax))
         return fr_fail(hb, FRICREG_ENONFINITE,
                        "%s: the dynamic stiffness D_%d overflows at Omega = %g (|K| + w^2 |M| + w "
@@ -425,8 +438,24 @@ int fr_hb_sparse_solve(fricreg_hb *hb, const char *fn, int h, double omega)
                        fn, h == 0 ? "K" : "the dynamic stiffness D_h", omega, rcond);
     }
     solve(hb, h, lu);
-    double entries = (double)(lu->numeric->lnz + lu->numeric->unz) * (hb->H + 1);
-    if (entries > KEPT_LU_ENTRIES_MAX)
+    if (too_many_entries(hb, lu))
+        klu_zl_free_numeric(&lu->numeric, &hb->klu);
+    return FRICREG_OK;
+}
+
+int fr_hb_sparse_condition(fricreg_hb *hb, const char *fn, int h, double omega, double *kappa)
+{
+    form_values(hb, h, omega);
+    struct fr_hb_lu *lu = &hb->lu[h];
+    int status = lu->numeric == NULL ? factor_fresh(hb, fn, lu) : FRICREG_OK;
+    if (status != FRICREG_OK)
+        return status;
+    if (lu->numeric == NULL) /* fr_hb_sparse_solve refused it as singular at omega */
+        return fr_fail(hb, FRICREG_ESINGULAR, "%s: D_%d is singular at Omega = %g", fn, h, omega);
+    if (!klu_zl_condest((SuiteSparse_long *)hb->Dp, hb->Dv, hb->symbolic, lu->numeric, &hb->klu))
+        return klu_failed(hb, fn, "condition estimate");
+    *kappa = hb->klu.condest;
+    if (too_many_entries(hb, lu))
         klu_zl_free_numeric(&lu->numeric, &hb->klu);
     return FRICREG_OK;
 }

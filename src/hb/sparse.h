@@ -10,6 +10,12 @@
  * FRICREG_ENOMEM (message recorded, with fn). */
 int fr_hb_sparse_solve(fricreg_hb *hb, const char *fn, int h, double omega);
 
+/* KLU's estimate of the 1-norm condition number of D_h at omega (klu_condest: Hager's and
+ * Higham's estimator, a few solves with the factor) into *kappa, from the factor that
+ * fr_hb_sparse_solve left at omega, or a fresh one where it was freed. FRICREG_OK,
+ * FRICREG_ESINGULAR, FRICREG_ENOMEM (message recorded, with fn). */
+int fr_hb_sparse_condition(fricreg_hb *hb, const char *fn, int h, double omega, double *kappa);
+
 /* Z = D_h' Y_h on the sparse pattern, D_h' = −2 h² Ω M + i h C. */
 void fr_hb_sparse_derivative(fricreg_hb *hb, int h, double omega);
 
