@@ -85,7 +85,7 @@ static int dense_condition(fricreg_hb *hb, const char *fn, int h, double omega, 
     int status = factor_one(hb, fn, h, omega);
     if (status != FRICREG_OK)
         return status;
-    /* Z holds n (m + 1) >= 2 n complex numbers, colw n: zgecon's work and rwork */
+    /* Z holds n (m + 1) >= 2 n complex numbers (m >= 1), colw n: zgecon's work and rwork */
     double rcond = fr_hb_zlu_rcond(hb->D, n, norm1, hb->Z, hb->colw);
     *kappa = rcond > 0.0 ? 1.0 / rcond : INFINITY;
     return FRICREG_OK;
@@ -95,7 +95,7 @@ int fr_hb_condition(fricreg_hb *hb, const char *fn, double *kappa)
 {
     double omega = hb->factored_omega;
     *kappa = 0.0;
-    for (int h = 0; h <= hb->H && isfinite(omega); h++) {
+    for (int h = 0; h <= hb->H && isfinite(omega) && hb->m > 0; h++) { /* m = 0: no (R) */
         double k = 0.0;
         int status = hb->sparse ? fr_hb_sparse_condition(hb, fn, h, omega, &k)
                                 : dense_condition(hb, fn, h, omega, &k);
