@@ -163,7 +163,7 @@ static int corrector_converged(void *user)
         return c->converged;
     double kappa = 0.0;
     l->status = fr_hb_condition(c->hb, c->fn, &kappa);
-    if (l->status != FRICREG_OK) /* no memory for a fresh factor: the loop ends with it */
+    if (l->status != FRICREG_OK) /* a failed estimate (no memory for a fresh factor) ends it */
         return 1;
     c->converged = c->r <= ROUNDING_FLOOR * DBL_EPSILON * kappa * (c->bound / c->hb->tol);
     return c->converged;

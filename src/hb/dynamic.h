@@ -12,11 +12,10 @@ int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv);
 /* The largest over h of D_h's 1-norm condition number at the factored frequency, estimated
  * from its LU factor (KLU's klu_condest, or LAPACK's zgecon for a dense model: Higham's
  * estimator, a few solves a harmonic), into *kappa; 0 when nothing is factored or there are
- * no elements. u kappa bounds
- * the relative forward error of the solves Y_h (Higham, Accuracy and Stability of Numerical
- * Algorithms, 2nd ed., Thm. 7.2 and 9.3), the level below which the residual of (R) is noise
- * as Ω moves. hb->D (dense) holds D_H's factor again after it. FRICREG_OK, FRICREG_ESINGULAR,
- * FRICREG_ENOMEM (message recorded, with fn). */
+ * no elements. u kappa bounds the relative forward error of the solves Y_h (Higham, Accuracy
+ * and Stability of Numerical Algorithms, 2nd ed., Thm. 7.2 and 9.3), the level below which
+ * the residual of (R) is noise as Ω moves. hb->D (dense) holds D_H's factor again after it.
+ * FRICREG_OK, FRICREG_ESINGULAR, FRICREG_ENOMEM (message recorded, with fn). */
 int fr_hb_condition(fricreg_hb *hb, const char *fn, double *kappa);
 
 /* out[e (m+1) + c] (complex, c <= m) = s sum_k L(e, k) B[k (m+1) + c] into G (c < m) and q
