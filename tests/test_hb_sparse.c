@@ -164,10 +164,11 @@ START_TEST(ten_thousand_dofs)
 END_TEST
 
 /* A tolerance below the solves' rounding: at 1e-14 on the 200-dof rod (their forward error
- * about 1e-11 of q) the corrector stalls at every point, and stops there (fricreg_hb_set_newton): the
- * continuation over the resonance completes, on the sparse path and on the dense one, and its
- * points are those a solve at their frequency gives at 1e-10 (no rounding floor at a fixed
- * Ω, where the factors do not change) to 1e-9. Until 1.9 it failed ("did not converge"). */
+ * about 1e-11 of q) the corrector stalls at every point, and stops there
+ * (fricreg_hb_set_newton): the continuation over the resonance completes, on the sparse path
+ * and on the dense one, and its points are those a solve at their frequency gives at 1e-10
+ * (no rounding floor at a fixed Ω, where the factors do not change) to 1e-9. Until 1.9 it
+ * failed ("did not converge"). */
 START_TEST(tolerance_below_rounding)
 {
     enum { N = 200, H7 = 7, NC7 = 2 * H7 + 1 };
