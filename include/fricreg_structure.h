@@ -615,22 +615,22 @@ FRICREG_API int fricreg_structure_get_dissipation(const fricreg_structure *s, si
  *  Newmark makes the residual vanish to Newton's tolerance (its discrete balance is exact);
  *  HHT-alpha's numerical damping shows in it. */
 enum fricreg_structure_value {
-    FRICREG_SVALUE_TIME = 0,          /**< time reached */
-    FRICREG_SVALUE_INPUT = 1,         /**< work of p - M r a_g since t = 0 */
-    FRICREG_SVALUE_KINETIC = 2,       /**< kinetic energy now */
-    FRICREG_SVALUE_STRAIN = 3,        /**< strain energy now */
-    FRICREG_SVALUE_VISCOUS = 4,       /**< energy dissipated by C since t = 0 */
-    FRICREG_SVALUE_FRICTION = 5,      /**< energy dissipated by all contacts since t = 0 */
-    FRICREG_SVALUE_RESIDUAL = 6,      /**< the balance's residual */
-    FRICREG_SVALUE_INITIAL = 7,       /**< kinetic + strain energy at t = 0 */
-    FRICREG_SVALUE_GROUND_PGV = 8,    /**< the ground record's peak velocity max |integral of a_g
+    FRICREG_SVALUE_TIME = 0,             /**< time reached */
+    FRICREG_SVALUE_INPUT = 1,            /**< work of p - M r a_g since t = 0 */
+    FRICREG_SVALUE_KINETIC = 2,          /**< kinetic energy now */
+    FRICREG_SVALUE_STRAIN = 3,           /**< strain energy now */
+    FRICREG_SVALUE_VISCOUS = 4,          /**< energy dissipated by C since t = 0 */
+    FRICREG_SVALUE_FRICTION = 5,         /**< energy dissipated by all contacts since t = 0 */
+    FRICREG_SVALUE_RESIDUAL = 6,         /**< the balance's residual */
+    FRICREG_SVALUE_INITIAL = 7,          /**< kinetic + strain energy at t = 0 */
+    FRICREG_SVALUE_GROUND_PGV = 8,       /**< the ground record's peak velocity max |integral of a_g
                                        dt| (trapezoidal from the record's start; 0 without a
                                        record): the scale of fricreg-sim's default eps and of
                                        the eps warnings (since 1.6) */
-    FRICREG_SVALUE_JENKINS = 9,       /**< energy dissipated by all Jenkins or Iwan elements
+    FRICREG_SVALUE_JENKINS = 9,          /**< energy dissipated by all Jenkins or Iwan elements
                                        since t = 0 (fricreg_structure_get_jenkins_state,
                                        fricreg_structure_get_iwan_state; since 1.6) */
-    FRICREG_SVALUE_COMPANION_CPU = 10 /**< CPU seconds (C's clock(): the process's, other
+    FRICREG_SVALUE_COMPANION_CPU = 10,   /**< CPU seconds (C's clock(): the process's, other
                                           threads' work in the same intervals included) spent
                                           stepping the error estimate's companions since they
                                           were made (fricreg_structure_set_error_estimate: the
@@ -639,6 +639,22 @@ enum fricreg_structure_value {
                                           estimate is made, the last one's after it ends
                                           until the next is made. The estimate's cost beside
                                           the run's own (since 1.8) */
+    FRICREG_SVALUE_COMPANIONS_USED = 11, /**< the companions that gave the error estimate
+                                          now, as enum fricreg_estimate_companions: 0
+                                          (finer) or 1 (coarser); with
+                                          FRICREG_COMPANIONS_AUTO, 1 while the screen is
+                                          quiet and 0 once the finer confirmed it; -1
+                                          without an estimate (off, not yet made, ended or
+                                          failed) (since 1.9) */
+    FRICREG_SVALUE_SCREEN_PEAK_ERR = 12, /**< with FRICREG_COMPANIONS_AUTO, once the finer
+                                          companions confirmed: what the screen had said, its
+                                          estimate of the largest peak's error (the largest
+                                          over the dofs; length units) at the call's end where
+                                          it doubted, +infinity where it failed; NaN where no
+                                          confirmation ran (since 1.9) */
+    FRICREG_SVALUE_SCREEN_DISS_ERR = 13  /**< likewise, the screen's estimate of the
+                                          summed dissipations' error (contacts' and joint
+                                          elements'; energy units) (since 1.9) */
 };
 
 /** Add me friction elements of one type (fricreg_element.h: fricreg_element_lookup,
@@ -1165,20 +1181,27 @@ FRICREG_API int fricreg_structure_set_error_estimate(fricreg_structure *s, int o
 
 /** Where the error estimate's companions sit on the path (fricreg_structure_set_error_companions). */
 enum fricreg_estimate_companions {
-    /** eps / 2 at dt / 2 and eps / 4 at dt / 4 (adaptive: the tolerances / 16, / 256): the
-     *  default, calibrated (docs/structural.md, "Error estimate"); about 7x a run's cost (6.5x
-     *  on the frame of bench/frame_estimate.c, 7.1x on a 10^5-dof chain) */
+    /** eps / 2 at dt / 2 and eps / 4 at dt / 4 (adaptive: the tolerances / 16, / 256):
+     *  calibrated (docs/structural.md, "Error estimate"); about 7x a run's cost (6.5x on the
+     *  frame of bench/frame_estimate.c, 7.1x on a 10^5-dof chain); the default until 1.8 */
     FRICREG_COMPANIONS_FINER = 0,
     /** 2 eps at 2 dt and 4 eps at 4 dt (adaptive: the tolerances x 2, x 4): the run's error
-     *  from the coarser levels, about 0.7x a run's cost; not the default: it bounds the error
-     *  less often on problems it was not derived on (docs/structural.md, "Error estimate"), and
-     *  fails near an explicit scheme's step bound (the companions' steps exceed it) */
-    FRICREG_COMPANIONS_COARSER = 1
+     *  from the coarser levels, about 0.7x a run's cost; it bounds the error less often on
+     *  problems it was not derived on and warns on many runs within the tolerance
+     *  (docs/structural.md, "Error estimate"), and fails near an explicit scheme's step bound
+     *  (the companions' steps exceed it) */
+    FRICREG_COMPANIONS_COARSER = 1,
+    /** screened, the default since 1.9: the coarser companions run; where their estimate would
+     *  warn (FRICREG_WARN_ERROR_ESTIMATE) or could not be formed, the finer companions run from
+     *  the start and theirs is the estimate (since 1.9) */
+    FRICREG_COMPANIONS_AUTO = 2
 };
 
 /** Choose where the error estimate's companions (fricreg_structure_set_error_estimate) sit:
- *  finer than the run (FRICREG_COMPANIONS_FINER, the default) or coarser
- *  (FRICREG_COMPANIONS_COARSER). Since 1.8 (FRICREG_1.8).
+ *  finer than the run (FRICREG_COMPANIONS_FINER), coarser (FRICREG_COMPANIONS_COARSER), or
+ *  coarser first and finer where they doubt (FRICREG_COMPANIONS_AUTO, the default since 1.9).
+ *  Since 1.8 (FRICREG_1.8); FRICREG_COMPANIONS_AUTO and the default since 1.9 (1.8's default
+ *  was FRICREG_COMPANIONS_FINER).
  *
  *  Coarser: the companions run at (2 eps, 2 dt) and (4 eps, 4 dt), adaptive ones at the same
  *  output interval with rtol, atol x 2 and x 4 (the rule from eps, or the set tolerances,
@@ -1200,13 +1223,37 @@ enum fricreg_estimate_companions {
  *  run_ode without tolerances) to span 4 dt, the coarsest companion's step (2 dt with one
  *  companion): a shorter call fails the estimate (+infinity, FRICREG_WARN_ERROR_ESTIMATE
  *  saying why), since a companion stepping one call of dt at 2 dt would take s's own step.
+ *
+ *  Auto (screen, then confirm): the coarser companions run as above (the screen), and a
+ *  finer pair is made beside them at the run's start, a copy as set_error_estimate says, but
+ *  not stepped. At the end of each stepping call, where the screen's estimate would raise
+ *  FRICREG_WARN_ERROR_ESTIMATE (half the largest peak's estimate above the answer tolerance
+ *  times the largest peak, or half the summed dissipations' likewise: the warning's own test)
+ *  or where the screen failed (a call shorter than 4 dt, a companion's failure), the finer
+ *  companions are stepped from the start to s's time, as s's calls stepped s, and from then on
+ *  they are the estimate (every getter and the warning, exactly the finer estimator's) and the
+ *  screen is freed. The screen decides at each call's end: a run made in several calls may be
+ *  confirmed (the screen doubted at a call's end) where the same run in one call is not. Where the run was one stepping call, the finer estimates are bit for bit
+ *  FRICREG_COMPANIONS_FINER's; over many calls they follow the calls as finer companions do
+ *  except where consecutive calls share dt, the integrator and its tolerances, which the finer
+ *  pair takes as one call (its steps the same, its time reached to rounding; an adaptive one
+ *  chooses its own steps). A setter passed on to the companions (set_bounds, set_law, the
+ *  records, ...) first steps the finer pair to the time of the change, so a run that changes
+ *  such a setting between its steps pays the finer companions' cost as well as the screen's.
+ *  The getters say which gave the estimate and what the screen had said
+ *  (fricreg_structure_get_value: FRICREG_SVALUE_COMPANIONS_USED,
+ *  FRICREG_SVALUE_SCREEN_PEAK_ERR, FRICREG_SVALUE_SCREEN_DISS_ERR). Cost: the
+ *  screen's about 0.7x a run where it is quiet; where it doubts, that plus the finer
+ *  companions' (docs/structural.md, "Error estimate"); memory: one more structure beside the
+ *  screen's, not set up until it steps.
+ *
  *  A change ends the estimate made, which starts anew at the next set_initial, as a change
  *  of on (set_error_estimate).
  *
  *  s      in/out: the structure.
- *  which  in: enum fricreg_estimate_companions, 0 (finer) or 1 (coarser).
+ *  which  in: enum fricreg_estimate_companions, 0 (finer), 1 (coarser) or 2 (auto).
  *  Returns FRICREG_OK; FRICREG_ENULL if s is NULL; FRICREG_EINVAL, s unchanged, if which is
- *  not 0 or 1, or if called from the observer during a run. */
+ *  not 0, 1 or 2, or if called from the observer during a run. */
 FRICREG_API int fricreg_structure_set_error_companions(fricreg_structure *s, int which);
 
 /** Copy the peak displacements since fricreg_structure_set_initial (or creation),

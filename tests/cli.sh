@@ -59,7 +59,7 @@ expect_same() {
     shift
     for run in a b; do
         if [ $run = a ]; then "$sim" $first >"$tmp/$run" 2>"$tmp/err"; else "$sim" "$@" >"$tmp/$run" 2>"$tmp/err"; fi
-        sed -e 's/"cpu_seconds": [0-9.e+-]*//; s/"companion_cpu_seconds": [0-9.e+-]*//; s/, "element_kind": "[^"]*"//; s/, "sliders_per_element": [0-9]*//' \
+        sed -e 's/"cpu_seconds": [0-9.e+-]*//; s/"companion_cpu_seconds": [0-9.e+-]*//; s/"companion_cpu_share": [0-9.e+-]*//; s/, "element_kind": "[^"]*"//; s/, "sliders_per_element": [0-9]*//' \
             -e 's/"contact_solver": "[a-z]*", //' \
             -e 's/, "jenkins_forces": \[[][0-9.e+, -]*\]//' \
             "$tmp/$run" | tr -s ',:[]{} ' '\n' >"$tmp/$run.tokens"
@@ -288,9 +288,11 @@ expect_usage_error "--answer-rtol" $block --integrator newmark --dt 0.01 --answe
 # The companions' CPU seconds (FRICREG_SVALUE_COMPANION_CPU) and where they sit
 # (--error-companions, fricreg_structure_set_error_companions), beside cpu_seconds: a share of
 # the run's CPU time, so never above it; neither without an estimate. Coarser companions step
-# 4 dt per call at least: GSL's fixed steps, called per --dt, are refused.
+# 4 dt per call at least: GSL's fixed steps, called per --dt, are refused. Auto, the default,
+# says which gave the estimate: the coarser where quiet (this block at --answer-rtol 1), the
+# finer where the screen doubted (at 1e-15), and then what the screen had said.
 for companions in finer coarser; do
-    expect_output "\"cpu_seconds\": [0-9.]+, \"error_companions\": \"$companions\", \"companion_cpu_seconds\": [0-9.]+, \"warnings\"" $block --integrator newmark --dt 0.01 --error-companions $companions
+    expect_output "\"cpu_seconds\": [0-9.]+, \"error_companions\": \"$companions\", \"estimate_companions\": \"$companions\", \"companion_cpu_seconds\": [0-9.]+, \"companion_cpu_share\": [0-9.e-]+, \"warnings\"" $block --integrator newmark --dt 0.01 --error-companions $companions
     total=$((total + 1))
     if ! "$sim" $block --integrator newmark --dt 0.001 --error-companions $companions >"$tmp/out" ||
        ! sed 's/.*"cpu_seconds": \([0-9.]*\).*"companion_cpu_seconds": \([0-9.]*\).*/\1 \2/' "$tmp/out" |
@@ -303,6 +305,9 @@ if "$sim" $block --integrator newmark --dt 0.01 --error-estimate off | grep -q c
     echo "FAIL: structure --error-estimate off reports companion_cpu_seconds"; fails=$((fails + 1))
 fi
 expect_usage_error "--error-companions" $block --integrator rk4 --dt 0.01 --error-companions coarser
+expect_output '"error_companions": "auto", "estimate_companions": "coarser", "companion_cpu_seconds": [0-9.]+, "companion_cpu_share": [0-9.e-]+, "warnings": \[\]' $block --integrator newmark --dt 0.01 --answer-rtol 1
+expect_output '"error_companions": "auto", "estimate_companions": "finer", "companion_cpu_seconds": [0-9.]+, "companion_cpu_share": [0-9.e-]+, "screen": \{"failed": false, "peak_displacement_error": [0-9.e-]+, "dissipation_error": [0-9.e-]+\}, "warnings": \[\{"code": "error_estimate"' $block --integrator newmark --dt 0.01 --answer-rtol 1e-15
+expect_output '"error_companions": "auto", "estimate_companions": "finer", .*"screen": \{"failed": true, "peak_displacement_error": null, "dissipation_error": null\}' structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_const.txt --eps 1e-2 --t-end 0.1 --integrator rk4 --dt 1e-3
 # without an estimate the choice is moot, so not refused: the block's x = -(2.41 - 4.83/3.17)
 # t^2 / 2 = -0.0044317 at 0.1 s, no estimate fields
 expect_output '"x": \[-0\.0044317[0-9]*\], .*"cpu_seconds": [0-9.]+, "warnings"' structure --mass $d/M1.mtx --stiffness $d/K0.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_const.txt --eps 1e-2 --t-end 0.1 --integrator rk4 --dt 1e-3 --error-companions coarser --error-estimate off
@@ -458,13 +463,17 @@ expect_usage_error "^fricreg-sim: --jenkins-params $d/P_bad.txt: .*kt = -1 must 
 # dt = 0.01 (the rounded 50 dt is 0.5), so the uninterrupted run steps through it. The scene
 # slips and sticks: a contact of 0.3 N beside a slipping Jenkins element under the step of
 # 0.731 m/s^2 slides back and forth through 0.5 s and sticks from 0.62 s (eps = 1e-3 m/s; the
-# explicit schemes need 0.05 for their step guard).
+# explicit schemes need 0.05 for their step guard). The finer companions: the default, auto,
+# decides at each call's end, so a run split in two may confirm at 0.5 s where the run in one
+# call is quiet at 1 s; auto's own case after the loop keeps its screen quiet (--answer-rtol
+# 1), its finer pair parked through the checkpoint.
 echo 0.3 >"$d/mun_ck.txt"
 ck="structure --mass $d/M2.mtx --stiffness $d/K2a.mtx --contacts $d/J1.mtx --mun $d/mun_ck.txt --ground-accel $d/ag_osc.txt --dt 0.01"
-for integ in "newmark --eps 1e-3 --jenkins $d/J1.mtx --jenkins-params $d/P_slip.txt" \
-    "hht --eps 1e-3 --jenkins $d/J1.mtx --jenkins-params $d/P_slip.txt" \
-    "central --eps 0.05 --jenkins $d/J1.mtx --jenkins-params $d/P_slip.txt" "rk4 --eps 0.05" \
-    "rkf45 --eps 1e-3 --rtol 1e-6"; do
+fin="--error-companions finer"
+for integ in "newmark --eps 1e-3 --jenkins $d/J1.mtx --jenkins-params $d/P_slip.txt $fin" \
+    "hht --eps 1e-3 --jenkins $d/J1.mtx --jenkins-params $d/P_slip.txt $fin" \
+    "central --eps 0.05 --jenkins $d/J1.mtx --jenkins-params $d/P_slip.txt $fin" \
+    "rk4 --eps 0.05 $fin" "rkf45 --eps 1e-3 --rtol 1e-6 $fin"; do
     for out in trajectory summary; do
         rm -f "$tmp/ck.bin"
         "$sim" $ck --integrator $integ --output $out --t-end 1 >"$tmp/full" 2>/dev/null &&
@@ -474,14 +483,25 @@ for integ in "newmark --eps 1e-3 --jenkins $d/J1.mtx --jenkins-params $d/P_slip.
         if [ $out = trajectory ]; then
             { cat "$tmp/part1"; tail -n +3 "$tmp/part2"; } >"$tmp/split"
         else
-            sed 's/"cpu_seconds": [0-9.]*//; s/"companion_cpu_seconds": [0-9.]*//' "$tmp/part2" >"$tmp/split"
-            sed -i 's/"cpu_seconds": [0-9.]*//; s/"companion_cpu_seconds": [0-9.]*//' "$tmp/full"
+            sed 's/"cpu_seconds": [0-9.]*//; s/"companion_cpu_seconds": [0-9.]*//; s/"companion_cpu_share": [0-9.e+-]*//' "$tmp/part2" >"$tmp/split"
+            sed -i 's/"cpu_seconds": [0-9.]*//; s/"companion_cpu_seconds": [0-9.]*//; s/"companion_cpu_share": [0-9.e+-]*//' "$tmp/full"
         fi
         if [ $status -ne 0 ] || [ ! -s "$tmp/full" ] || ! cmp -s "$tmp/full" "$tmp/split"; then
             echo "FAIL: structure --integrator $integ --output $out: split at 0.5 s != the run to 1 s (status $status: $(cat "$tmp/err"))"; fails=$((fails + 1))
         fi
     done
 done
+# Auto's quiet screen, split: at dt = 0.0125 s, 0.5 s is a step time of the coarsest companion
+# too (4 dt; at 0.01 s its grid, and so the coarser estimate, differs in the two halves).
+ck_auto="structure --mass $d/M2.mtx --stiffness $d/K2a.mtx --contacts $d/J1.mtx --mun $d/mun_ck.txt --ground-accel $d/ag_osc.txt --dt 0.0125 --integrator newmark --eps 1e-3 --jenkins $d/J1.mtx --jenkins-params $d/P_slip.txt --answer-rtol 1"
+strip_cpu() { sed 's/"cpu_seconds": [0-9.]*//; s/"companion_cpu_seconds": [0-9.]*//; s/"companion_cpu_share": [0-9.e+-]*//' "$1"; }
+total=$((total + 1))
+if ! "$sim" $ck_auto --t-end 1 >"$tmp/full" || ! grep -q '"estimate_companions": "coarser"' "$tmp/full" ||
+   ! "$sim" $ck_auto --t-end 0.5 --checkpoint-out "$tmp/ck.bin" >/dev/null ||
+   ! "$sim" $ck_auto --t-end 1 --checkpoint-in "$tmp/ck.bin" >"$tmp/part2" ||
+   [ "$(strip_cpu "$tmp/full")" != "$(strip_cpu "$tmp/part2")" ]; then
+    echo "FAIL: structure --error-companions auto: split at 0.5 s != the run to 1 s"; fails=$((fails + 1))
+fi
 "$sim" $ck --integrator newmark --t-end 0.5 --checkpoint-out "$tmp/ck.bin" >/dev/null 2>&1
 expect_usage_error "^fricreg-sim: --checkpoint-in $d/none.bin: cannot open" $ck --integrator newmark --t-end 1 --checkpoint-in "$d/none.bin"
 expect_usage_error "^fricreg-sim: --checkpoint-in $tmp/ck.bin: restore: .*bounds mun .* not the checkpoint's" structure --mass $d/M2.mtx --stiffness $d/K2a.mtx --contacts $d/J1.mtx --mun $d/mun1.txt --ground-accel $d/ag_osc.txt --dt 0.01 --integrator newmark --t-end 1 --checkpoint-in "$tmp/ck.bin"
@@ -602,7 +622,7 @@ expect_usage_error "^fricreg-sim: --jenkins-2d: 2-D elements take --jenkins-para
 # old options' words (nelements, dissipation_per_element, element_dissipation; the sets' list
 # and forces, which the old 1-D summary does not print, dropped), the CPU times dropped.
 es_as_old() {
-    sed -e 's/"cpu_seconds": [0-9.e+-]*//; s/"companion_cpu_seconds": [0-9.e+-]*//' \
+    sed -e 's/"cpu_seconds": [0-9.e+-]*//; s/"companion_cpu_seconds": [0-9.e+-]*//; s/"companion_cpu_share": [0-9.e+-]*//' \
         -e 's/"nelements"/"njenkins"/; s/"dissipation_per_element/"dissipation_per_jenkins/g' \
         -e 's/"element_dissipation"/"jenkins_dissipation"/; s/, "element_sets": \[[^]]*\]//' \
         -e 's/, "element_forces": \[\[[^]]*\]\]//' "$1"
@@ -850,7 +870,7 @@ three="--contacts $d/Jc.mtx --mun $d/munc.txt --ground-accel $d/ag3.txt --eps 0.
 "$sim" structure --mass "$d/Mc.mtx" --stiffness "$d/Kc.mtx" --damping "$d/Cc.mtx" $three >"$d/lower.json" 2>&1
 "$sim" structure --mass "$d/Mcg.mtx" --stiffness "$d/Kcg.mtx" --damping "$d/Ccg.mtx" $three >"$d/whole.json" 2>&1
 total=$((total + 1))
-same_run() { sed -e 's/"cpu_seconds": [0-9.]*//; s/"companion_cpu_seconds": [0-9.]*//' "$1"; }
+same_run() { sed -e 's/"cpu_seconds": [0-9.]*//; s/"companion_cpu_seconds": [0-9.]*//; s/"companion_cpu_share": [0-9.e+-]*//' "$1"; }
 if ! grep -q '"ndof": 3, "ncontacts": 2' "$d/lower.json" || [ "$(same_run "$d/lower.json")" != "$(same_run "$d/whole.json")" ]; then
     echo "FAIL: a lower triangle and the whole matrix differ: $(cat "$d/lower.json" "$d/whole.json")"; fails=$((fails + 1))
 fi

@@ -2809,8 +2809,8 @@ START_TEST(edges_of_documented_ranges)
         {"structure_run_ode integrator known", e_st_run, 1, FRICREG_INT_RK4_GSL,
          FRICREG_INT_CENTRAL_IMEX + 1, 'i', ST_REC},
         {"structure_run_ode rk4imp: K semidefinite", e_st_run, 2, 0.0, 1.0, 'i', ST_REC},
-        {"structure_get_value <= companion cpu", e_st_run, 3, FRICREG_SVALUE_COMPANION_CPU,
-         FRICREG_SVALUE_COMPANION_CPU + 1, 'i', NONE},
+        {"structure_get_value <= screen's dissipation error", e_st_run, 3,
+         FRICREG_SVALUE_SCREEN_DISS_ERR, FRICREG_SVALUE_SCREEN_DISS_ERR + 1, 'i', NONE},
         {"structure_get_stat <= line-search cuts", e_st_run, 4, FRICREG_SSTAT_LINE_SEARCH_CUTS,
          FRICREG_SSTAT_LINE_SEARCH_CUTS + 1, 'i', NONE},
     };

@@ -548,6 +548,8 @@ START_TEST(structure_error_estimate_companion)
                      FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_set_error_estimate(s, FRICREG_ESTIMATE_ONE_COMPANION),
                      FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_error_companions(s, FRICREG_COMPANIONS_FINER),
+                     FRICREG_OK); /* the finer estimator, not the default's screen */
     ck_assert_int_eq(fricreg_structure_run(s, dt, nsteps * dt), FRICREG_OK);
     double t = 0.0;
     ck_assert_int_eq(fricreg_structure_get_value(s, FRICREG_SVALUE_TIME, &t), FRICREG_OK);

@@ -1303,7 +1303,7 @@ START_TEST(every_error_code)
     ck_assert_int_eq(fricreg_structure_get_state(s, 2, NULL, NULL, NULL), FRICREG_ENULL);
     ck_assert_int_eq(fricreg_structure_get_forces(s, 2, u), FRICREG_ESIZE);
     ck_assert_int_eq(fricreg_structure_get_dissipation(s, 2, u), FRICREG_ESIZE);
-    ck_assert_int_eq(fricreg_structure_get_value(s, FRICREG_SVALUE_COMPANION_CPU + 1, &x),
+    ck_assert_int_eq(fricreg_structure_get_value(s, FRICREG_SVALUE_SCREEN_DISS_ERR + 1, &x),
                      FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_structure_get_stat(s, 5, &c), FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_structure_get_stat(NULL, 0, &c), FRICREG_ENULL);

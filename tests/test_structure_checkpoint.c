@@ -30,10 +30,12 @@ enum scheme { NEWMARK, HHT, CENTRAL, RK4_FIXED, RKF45_ADAPTIVE };
 
 struct setup {
     enum scheme scheme;
-    int coupled;  /* a consistent mass: W couples the contacts (the context's dense factor) */
-    int jenkins;  /* a Jenkins element on dof 2 */
-    int estimate; /* enum fricreg_error_estimate */
-    double k22;   /* K(2, 2): another model where it differs */
+    int coupled;        /* a consistent mass: W couples the contacts (the context's dense factor) */
+    int jenkins;        /* a Jenkins element on dof 2 */
+    int estimate;       /* enum fricreg_error_estimate */
+    double k22;         /* K(2, 2): another model where it differs */
+    int companions;     /* enum fricreg_estimate_companions (0, finer, where not given) */
+    int doubt_after_t1; /* auto's answer tolerance (1 until T1) at 1e-9 from T1: confirmed later */
 };
 
 static fricreg_structure *make(const struct setup *c)
@@ -71,6 +73,9 @@ static fricreg_structure *make(const struct setup *c)
     if (c->scheme == CENTRAL)
         ck_assert_int_eq(fricreg_structure_set_central_difference(s), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_set_error_estimate(s, c->estimate), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_error_companions(s, c->companions), FRICREG_OK);
+    if (c->companions == FRICREG_COMPANIONS_AUTO) /* the screen quiet until T1 */
+        ck_assert_int_eq(fricreg_structure_set_answer_rtol(s, 1.0), FRICREG_OK);
     return s;
 }
 
@@ -110,8 +115,9 @@ static size_t outputs(fricreg_structure *s, const struct setup *c, double out[OU
     k += MC;
     ck_assert_int_eq(fricreg_structure_get_dissipation(s, MC, out + k), FRICREG_OK);
     k += MC;
-    for (int v = FRICREG_SVALUE_TIME; v <= FRICREG_SVALUE_JENKINS; v++)
-        ck_assert_int_eq(fricreg_structure_get_value(s, v, &out[k++]), FRICREG_OK);
+    for (int v = FRICREG_SVALUE_TIME; v <= FRICREG_SVALUE_SCREEN_DISS_ERR; v++)
+        if (v != FRICREG_SVALUE_COMPANION_CPU) /* a clock's reading */
+            ck_assert_int_eq(fricreg_structure_get_value(s, v, &out[k++]), FRICREG_OK);
     for (int st = FRICREG_SSTAT_STEPS; st <= FRICREG_SSTAT_LINE_SEARCH_CUTS; st++) {
         int64_t x = 0;
         ck_assert_int_eq(fricreg_structure_get_stat(s, st, &x), FRICREG_OK);
@@ -163,11 +169,20 @@ static unsigned char *saved_at_t1(const struct setup *c, size_t *len, double dis
     return blob;
 }
 
+/* From T1 on: the answer tolerance lowered where the setup asks. */
+static void second_half(fricreg_structure *s, const struct setup *c)
+{
+    if (c->doubt_after_t1)
+        ck_assert_int_eq(fricreg_structure_set_answer_rtol(s, 1e-9), FRICREG_OK);
+    advance(s, c, T2);
+}
+
 static void split_equals_uninterrupted(const struct setup *c)
 {
     double full[OUT_LEN], split[OUT_LEN], d1[MC];
     fricreg_structure *s = make(c);
-    advance(s, c, T2);
+    advance(s, c, T1);
+    second_half(s, c);
     size_t n_full = outputs(s, c, full);
     fricreg_structure_free(s);
 
@@ -178,7 +193,7 @@ static void split_equals_uninterrupted(const struct setup *c)
     double t = 0.0;
     fricreg_structure_get_value(r, FRICREG_SVALUE_TIME, &t);
     ck_assert(t == T1);
-    advance(r, c, T2);
+    second_half(r, c);
     size_t n_split = outputs(r, c, split);
     fricreg_structure_free(r);
     free(blob);
@@ -212,6 +227,34 @@ START_TEST(test_central_contacts_jenkins)
 {
     struct setup c = {CENTRAL, 0, 1, FRICREG_ESTIMATE_TWO_COMPANIONS, 30.0};
     split_equals_uninterrupted(&c);
+}
+END_TEST
+
+/* The screened estimate (FRICREG_COMPANIONS_AUTO): saved while the screen is quiet, its finer
+ * pair parked at the start, and confirmed after the restore where the answer tolerance drops
+ * at T1 (the finer pair stepped from the start through the restore), Newmark and adaptive. */
+START_TEST(test_screened_estimate)
+{
+    const struct setup cases[] = {
+        {NEWMARK, 0, 1, FRICREG_ESTIMATE_TWO_COMPANIONS, 30.0, FRICREG_COMPANIONS_AUTO, 0},
+        {NEWMARK, 0, 1, FRICREG_ESTIMATE_TWO_COMPANIONS, 30.0, FRICREG_COMPANIONS_AUTO, 1},
+        {RKF45_ADAPTIVE, 0, 0, FRICREG_ESTIMATE_ONE_COMPANION, 30.0, FRICREG_COMPANIONS_AUTO, 1}};
+    for (size_t k = 0; k < sizeof cases / sizeof *cases; k++) {
+        fricreg_structure *s = make(&cases[k]);
+        advance(s, &cases[k], T1);
+        double used = -7.0;
+        ck_assert_int_eq(fricreg_structure_get_value(s, FRICREG_SVALUE_COMPANIONS_USED, &used),
+                         FRICREG_OK);
+        ck_assert_msg(used == FRICREG_COMPANIONS_COARSER, "case %zu: the screen quiet at T1", k);
+        second_half(s, &cases[k]);
+        ck_assert_int_eq(fricreg_structure_get_value(s, FRICREG_SVALUE_COMPANIONS_USED, &used),
+                         FRICREG_OK);
+        ck_assert_msg(used == (cases[k].doubt_after_t1 ? FRICREG_COMPANIONS_FINER
+                                                       : FRICREG_COMPANIONS_COARSER),
+                      "case %zu: confirmed after T1 where the tolerance dropped", k);
+        fricreg_structure_free(s);
+        split_equals_uninterrupted(&cases[k]);
+    }
 }
 END_TEST
 
@@ -420,6 +463,7 @@ static Suite *checkpoint_suite(void)
     Suite *s = suite_create("structure_checkpoint");
     TCase *tc = tcase_create("checkpoint");
     tcase_add_test(tc, test_newmark_contacts_jenkins);
+    tcase_add_test(tc, test_screened_estimate);
     tcase_add_test(tc, test_hht_contacts_jenkins);
     tcase_add_test(tc, test_central_contacts_jenkins);
     tcase_add_test(tc, test_newmark_coupled);

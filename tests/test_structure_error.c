@@ -81,6 +81,8 @@ static void check_bounds(int integrator, double eps, double dt, double rtol, dou
 {
     fricreg_structure *s = oscillator(eps);
     ck_assert_int_eq(fricreg_structure_set_error_estimate(s, 1), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_error_companions(s, FRICREG_COMPANIONS_FINER),
+                     FRICREG_OK); /* the finer estimator, not the default's screen */
     run(s, integrator, dt, rtol, atol);
     double D, peak, D_err, peak_err, D_ref, peak_ref;
     ck_assert_int_eq(fricreg_structure_get_dissipation(s, 1, &D), FRICREG_OK);
@@ -267,6 +269,8 @@ START_TEST(test_jenkins_bounds)
         if (r % 2)
             ck_assert_int_eq(fricreg_structure_set_hht(s, -0.1), FRICREG_OK);
         ck_assert_int_eq(fricreg_structure_set_error_estimate(s, 1), FRICREG_OK);
+        ck_assert_int_eq(fricreg_structure_set_error_companions(s, FRICREG_COMPANIONS_FINER),
+                         FRICREG_OK); /* the finer estimator, not the default's screen */
         run(s, 0, dt, 0.0, 0.0);
         ck_assert_int_eq(fricreg_structure_get_jenkins_state(s, 1, NULL, NULL, &D), FRICREG_OK);
         ck_assert_int_eq(fricreg_structure_get_jenkins_dissipation_error(s, 1, &err), FRICREG_OK);
@@ -322,6 +326,8 @@ static void check_companion(int by_steps, int hht, int one)
     ck_assert_int_eq(fricreg_structure_set_error_estimate(s, one ? FRICREG_ESTIMATE_ONE_COMPANION
                                                                  : FRICREG_ESTIMATE_TWO_COMPANIONS),
                      FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_error_companions(s, FRICREG_COMPANIONS_FINER),
+                     FRICREG_OK); /* the finer estimator, not the default's screen */
     if (by_steps) {
         for (int k = 0; k < 300; k++)
             ck_assert_int_eq(fricreg_structure_step(s, dt), FRICREG_OK);
@@ -499,7 +505,7 @@ START_TEST(test_coarser_calls)
     ck_assert_int_eq(fricreg_structure_run(s, 1e-2, 0.1), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_get_dissipation_error(s, 1, &err), FRICREG_OK);
     ck_assert(isfinite(err));
-    ck_assert_int_eq(fricreg_structure_set_error_companions(s, 2), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_structure_set_error_companions(s, 3), FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_structure_set_error_companions(s, -1), FRICREG_EINVAL);
     ck_assert_int_eq(fricreg_structure_errcode(s), FRICREG_EINVAL);
     double again = 0.0;
@@ -560,6 +566,8 @@ START_TEST(test_life_cycle)
     ck_assert_int_eq(fricreg_structure_get_dissipation_error(s, 1, &err), FRICREG_EINVAL);
     /* one companion: its estimate is checked against a structure at eps / 2 below */
     ck_assert_int_eq(fricreg_structure_set_error_estimate(s, FRICREG_ESTIMATE_ONE_COMPANION),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_error_companions(s, FRICREG_COMPANIONS_FINER),
                      FRICREG_OK);
     /* turned on in a run: from the next set_initial */
     ck_assert_int_eq(fricreg_structure_run(s, 1e-2, 2.0), FRICREG_OK);
@@ -726,6 +734,8 @@ START_TEST(test_warnings)
     fricreg_structure_free(s);
     s = oscillator(1e-2);
     ck_assert_int_eq(fricreg_structure_set_error_estimate(s, 1), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_error_companions(s, FRICREG_COMPANIONS_FINER),
+                     FRICREG_OK); /* the default's screen, at tolerances x 2, stays within */
     ck_assert_int_eq(fricreg_structure_set_max_steps(s, steps), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_RKF45, 1e-2, 1e-8, 1e-10, 2.0),
                      FRICREG_OK);

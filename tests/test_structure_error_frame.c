@@ -84,6 +84,8 @@ static fricreg_structure *frame(double mun_fraction, int scheme, int estimate)
     if (scheme == HHT)
         ck_assert_int_eq(fricreg_structure_set_hht(s, -0.05), FRICREG_OK);
     ck_assert_int_eq(fricreg_structure_set_error_estimate(s, estimate), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_error_companions(s, FRICREG_COMPANIONS_FINER),
+                     FRICREG_OK); /* the finer estimator, not the default's screen */
     ck_assert_int_eq(fricreg_structure_set_initial(s, NDOF, zero, zero), FRICREG_OK);
     return s;
 }

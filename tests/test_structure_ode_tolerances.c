@@ -313,6 +313,8 @@ START_TEST(test_companion)
      * estimate from the same first companion: test_structure_error.c) */
     ck_assert_int_eq(fricreg_structure_set_error_estimate(s, FRICREG_ESTIMATE_ONE_COMPANION),
                      FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_set_error_companions(s, FRICREG_COMPANIONS_FINER),
+                     FRICREG_OK); /* the finer estimator, not the default's screen */
     ck_assert_int_eq(fricreg_structure_run_ode(s, FRICREG_INT_MSBDF, 1e-3, 1e-6,
                                                FRICREG_ATOL_FROM_EPS, T_END),
                      FRICREG_OK);

@@ -341,8 +341,8 @@ contains
     call check_status(st%set_answer_rtol(1.0_c_double), FRICREG_OK, 'set_answer_rtol 1')
     call check(count_code(FRICREG_WARN_ERROR_ESTIMATE) == 0, trim(tag) // ': 1 does not')
     call check_status(st%set_answer_rtol(1e-2_c_double), FRICREG_OK, 'set_answer_rtol back')
-    ! the companions' place: 2 refused, the estimate kept; the CPU seconds they took
-    call check_status(st%set_error_companions(2_c_int), FRICREG_EINVAL, 'set_error_companions 2')
+    ! the companions' place: 3 refused, the estimate kept; the CPU seconds they took
+    call check_status(st%set_error_companions(3_c_int), FRICREG_EINVAL, 'set_error_companions 3')
     call check_status(st%get_dissipation_error(Def), FRICREG_OK, 'kept after a refusal ' // tag)
     call check_status(st%get_value(FRICREG_SVALUE_COMPANION_CPU, wf), FRICREG_OK, 'companion cpu')
     call check_status(fricreg_structure_get_value(s, FRICREG_SVALUE_COMPANION_CPU, wc), &

@@ -66,7 +66,7 @@ struct cli_word {
 extern const struct cli_word cli_output_words[]; /* summary, trajectory */
 /* --error-estimate on|off|one: enum fricreg_error_estimate's values (two companions, none, one) */
 extern const struct cli_word cli_estimator_words[];
-/* --error-companions finer|coarser: enum fricreg_estimate_companions (structure only) */
+/* --error-companions auto|finer|coarser: enum fricreg_estimate_companions (structure only) */
 extern const struct cli_word cli_companions_words[];
 /* --answer-rtol's default: the library's (fricreg_sim_set_answer_rtol) */
 #define CLI_ANSWER_RTOL 1e-2

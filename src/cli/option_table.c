@@ -20,7 +20,8 @@ const struct cli_word cli_estimator_words[] = {{"on", FRICREG_ESTIMATE_TWO_COMPA
                                                {"off", FRICREG_ESTIMATE_OFF},
                                                {"one", FRICREG_ESTIMATE_ONE_COMPANION},
                                                {NULL, 0}};
-const struct cli_word cli_companions_words[] = {{"finer", FRICREG_COMPANIONS_FINER},
+const struct cli_word cli_companions_words[] = {{"auto", FRICREG_COMPANIONS_AUTO},
+                                                {"finer", FRICREG_COMPANIONS_FINER},
                                                 {"coarser", FRICREG_COMPANIONS_COARSER},
                                                 {NULL, 0}};
 

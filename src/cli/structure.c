@@ -174,6 +174,7 @@ static size_t structure_table(struct structure_options *o, struct cli_option tab
                                     .output = CLI_SUMMARY,
                                     .max_steps = -1,
                                     .error_estimate = 1,
+                                    .error_companions = FRICREG_COMPANIONS_AUTO,
                                     .answer_rtol = CLI_ANSWER_RTOL,
                                     .output_every = 1};
     cli_element_defaults(&o->elements);
@@ -269,9 +270,12 @@ static size_t structure_table(struct structure_options *o, struct cli_option tab
                  "(one: 1.6's single companion at eps/2)"},
         {"--error-companions", CLI_CHOICE, .slot = &o->error_companions,
          .words = cli_companions_words,
-         .help = "where the estimate's companions sit: finer (eps/2 at dt/2, eps/4 at dt/4) or "
-                 "coarser (2 eps at 2 dt, 4 eps at 4 dt: about 0.7x the run's cost instead of "
-                 "6x, bounding the error less often; not with GSL's fixed steps)"},
+         .help = "where the estimate's companions sit: auto screens with the coarser and "
+                 "confirms with the finer where the screen would warn or fails; finer (eps/2 at "
+                 "dt/2, eps/4 at dt/4: about 6x the run's cost); coarser (2 eps at 2 dt, 4 eps "
+                 "at 4 dt: about 0.7x, bounding the error less often and warning on many runs "
+                 "within the tolerance; not with GSL's fixed steps)",
+         .dflt = "auto"},
         {"--contact-solver", CLI_CHOICE, .slot = &o->contact_solver, .words = contact_solver_words,
          .help = "newmark and hht: the near-stick block's solver, dense (a factor of the block "
                  "of J K_eff^-1 J^T) or sparse (one of K_eff + J^T T J); auto takes the dense "

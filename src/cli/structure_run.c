@@ -59,7 +59,7 @@ static int setup(const struct structure_options *o, const struct structure_input
      * no place for it. */
     if (o->error_estimate && o->output == CLI_SUMMARY) {
         fricreg_structure_set_error_estimate(s, o->error_estimate);
-        fricreg_structure_set_error_companions(s, o->error_companions); /* the parser's 0, 1 */
+        fricreg_structure_set_error_companions(s, o->error_companions); /* the parser's */
     }
     fricreg_structure_set_answer_rtol(s, o->answer_rtol);       /* > 0 and finite: the parser's */
     fricreg_structure_set_contact_solver(s, o->contact_solver); /* one of the words' */

@@ -2,6 +2,7 @@
 /* structure_summary.c — the JSON summary of `fricreg-sim structure` (structure_summary.h): the
  * library's warnings and estimates read once the run has ended, the per-dof arrays at the dofs
  * shown, the contacts' and the elements' dissipations and forces, the energy balance. */
+#include <math.h>
 #include <stdlib.h>
 
 #include "base/companion_estimate.h" /* fr_estimate_kind_name */
@@ -121,6 +122,37 @@ static void write_element_sets(FILE *out, const fricreg_structure *s,
     fputs("]", out);
 }
 
+static const char *companions_name(int which)
+{
+    return which == FRICREG_COMPANIONS_AUTO      ? "auto"
+           : which == FRICREG_COMPANIONS_COARSER ? "coarser"
+                                                 : "finer";
+}
+
+/* The estimate's companions: the choice, those that gave the estimate, their CPU seconds and
+ * share of cpu_seconds; where auto's finer companions confirmed, what the screen had said
+ * (its largest peak's and summed dissipations' estimates, null where it failed). */
+static void json_companions(FILE *out, const fricreg_structure *s,
+                            const struct structure_options *o, double cpu_seconds)
+{
+    double cpu = cli_structure_value(s, FRICREG_SVALUE_COMPANION_CPU);
+    double used = cli_structure_value(s, FRICREG_SVALUE_COMPANIONS_USED);
+    fprintf(out,
+            ", \"error_companions\": \"%s\", \"estimate_companions\": \"%s\", "
+            "\"companion_cpu_seconds\": %.6f, \"companion_cpu_share\": ",
+            companions_name(o->error_companions), companions_name((int)used), cpu);
+    cli_json_number(out, cpu_seconds > 0.0 ? cpu / cpu_seconds : NAN);
+    if (o->error_companions != FRICREG_COMPANIONS_AUTO || used != FRICREG_COMPANIONS_FINER)
+        return;
+    double peak = cli_structure_value(s, FRICREG_SVALUE_SCREEN_PEAK_ERR);
+    fprintf(out, ", \"screen\": {\"failed\": %s, \"peak_displacement_error\": ",
+            isinf(peak) ? "true" : "false");
+    cli_json_number(out, peak);
+    fputs(", \"dissipation_error\": ", out);
+    cli_json_number(out, cli_structure_value(s, FRICREG_SVALUE_SCREEN_DISS_ERR));
+    fputs("}", out);
+}
+
 void cli_structure_summary(FILE *out, const struct structure_options *o,
                            const struct structure_input *in, const fricreg_structure *s,
                            const struct structure_run *run, double eps, double cpu_seconds,
@@ -231,9 +263,7 @@ void cli_structure_summary(FILE *out, const struct structure_options *o,
             (long long)sstat(s, FRICREG_SSTAT_NEWTON_MAX),
             (long long)sstat(s, FRICREG_SSTAT_NEWTON_FAILURES), cpu_seconds);
     if (est->peak_err != NULL) /* the estimate's share of cpu_seconds */
-        fprintf(out, ", \"error_companions\": \"%s\", \"companion_cpu_seconds\": %.6f",
-                o->error_companions == FRICREG_COMPANIONS_COARSER ? "coarser" : "finer",
-                cli_structure_value(s, FRICREG_SVALUE_COMPANION_CPU));
+        json_companions(out, s, o, cpu_seconds);
     cli_json_warnings(out, warnings);
     fputs("}\n", out);
 }

@@ -15,7 +15,8 @@
  *            peaks, the warnings' trackers and list, the elements' sliders and forces, what the
  *            context carries (ctx_carried.c), the near-stick block's held factor
  *            (blocks_carried.c) and the error estimate with its companion's blob (nested, the
- *            same format).
+ *            same format) and, with FRICREG_COMPANIONS_AUTO before the finer pair confirmed, the
+ *            parked finer pair's blob and the calls it has still to take.
  * One function (state_fields) lists the state for the three passes: save, check (the blob read
  * and checked, nothing written) and load (after the check and after the fallible steps:
  * prepare, K_eff's factor, the context's part, the companion, the near-stick block's factor),
@@ -25,12 +26,12 @@
 #include <string.h>
 
 #include "blocks_carried.h"
+#include "checkpoint_fingerprint.h"
 #include "ctx/ctx_driver.h"
-#include "joint/element_kind.h"
 #include "structure_internal.h"
 
 #define MAGIC "FRCKPT1" /* 8 bytes with its NUL */
-#define FORMAT 2u       /* 2 since 1.8: the near-stick block's factor */
+#define FORMAT 3u /* 2 since 1.8: the near-stick block's factor; 3 since 1.9: auto companions */
 #define BYTE_ORDER_MARK 0x01020304u
 #define TYPE_SIZES ((uint32_t)(sizeof(double) | sizeof(size_t) << 8))
 #define HEADER_BYTES (8 + 4 * 4 + 2 * 8)
@@ -79,143 +80,6 @@ static void value(struct io *io, void *x, size_t len)
     }
 }
 
-static uint64_t fnv1a(uint64_t h, const void *bytes, size_t len)
-{
-    const unsigned char *b = bytes;
-    for (size_t k = 0; k < len; k++)
-        h = (h ^ b[k]) * 0x100000001b3ull;
-    return h;
-}
-
-#define FNV_START 0xcbf29ce484222325ull
-
-static uint64_t hash_sparse(uint64_t h, const cholmod_sparse *A)
-{
-    if (A == NULL)
-        return fnv1a(h, "-", 1);
-    const SuiteSparse_long *Ap = A->p;
-    size_t nnz = (size_t)Ap[A->ncol];
-    h = fnv1a(h, &A->nrow, sizeof A->nrow);
-    h = fnv1a(h, &A->ncol, sizeof A->ncol);
-    h = fnv1a(h, A->p, (A->ncol + 1) * sizeof(SuiteSparse_long));
-    h = fnv1a(h, A->i, nnz * sizeof(SuiteSparse_long));
-    return fnv1a(h, A->x, nnz * sizeof(double));
-}
-
-static uint64_t hash_record(uint64_t h, const struct fr_record *rec)
-{
-    h = fnv1a(h, &rec->n, sizeof rec->n);
-    h = fnv1a(h, &rec->t0, sizeof rec->t0);
-    h = fnv1a(h, &rec->dt, sizeof rec->dt);
-    return rec->n > 0 ? fnv1a(h, rec->x, rec->n * sizeof *rec->x) : h;
-}
-
-/* ---- The fingerprint ----------------------------------------------------------------------- */
-
-/* What a checkpoint's structure and the one restored into must share: sizes and kinds, the
- * scheme and the law with their parameters one by one (a mismatch is named), the matrices
- * and the excitation hashed. The names of the entries: */
-static const char *const count_names[] = {"ndof",
-                                          "contacts",
-                                          "elements",
-                                          "sliders per element",
-                                          "element coordinates",
-                                          "element dimension",
-                                          "elements with a normal law"};
-static const char *const flag_names[] = {
-    "J set",           "Rayleigh damping",  "scheme",
-    "friction law",    "Newton's max_iter", "error estimate (on + 4 x companions)",
-    "unguarded steps", "contact solver"};
-static const char *const param_names[] = {"alpha",       "beta",           "gamma",
-                                          "eps",         "Newton's tol",   "Rayleigh a0",
-                                          "Rayleigh a1", "tolerance scale"};
-#define NCOUNTS (sizeof count_names / sizeof *count_names)
-#define NFLAGS (sizeof flag_names / sizeof *flag_names)
-#define NPARAMS (sizeof param_names / sizeof *param_names)
-
-struct fingerprint {
-    uint64_t count[NCOUNTS];
-    int32_t flag[NFLAGS + NFLAGS % 2]; /* an even count: no padding */
-    double param[NPARAMS];
-    uint64_t model, excitation;
-};
-
-/* The elements' types (name and sliders, in order) and parameters (a checkpoint is for the
- * same library version: nothing older to match). */
-static uint64_t hash_elements(uint64_t h, const struct fr_elements *e)
-{
-    for (size_t i = 0; i < e->me; i++) {
-        const char *name = fricreg_element_name(e->type[i]);
-        uint64_t ns = e->type[i]->ns;
-        h = fnv1a(fnv1a(h, name, strlen(name)), &ns, sizeof ns);
-    }
-    return fnv1a(h, e->params, e->par[e->me] * sizeof *e->params);
-}
-
-static void fingerprint_of(const fricreg_structure *s, struct fingerprint *fp)
-{
-    const struct fr_elements *e = &s->el;
-    memset(fp, 0, sizeof *fp);
-    uint64_t counts[NCOUNTS] = {s->n, s->m, e->me, e->ns, e->nc, (uint64_t)e->dim, e->nnormal > 0};
-    int32_t flags[NFLAGS] = {s->contacts_set, s->rayleigh,
-                             s->scheme,       fr_ctx_law(s->ctx),
-                             s->newton_max,   s->estimate_on | s->companions << 2,
-                             s->unguarded,    s->contact_solver}; /* on: 0 .. 2, companions above */
-    double params[NPARAMS] = {s->alpha,      s->beta, s->gamma, fr_ctx_eps(s->ctx),
-                              s->newton_tol, s->a0,   s->a1,    s->tol_scale};
-    memcpy(fp->count, counts, sizeof counts);
-    memcpy(fp->flag, flags, sizeof flags);
-    memcpy(fp->param, params, sizeof params);
-    uint64_t h = FNV_START;
-    h = hash_sparse(h, s->M);
-    h = hash_sparse(h, s->K);
-    h = hash_sparse(h, s->C);
-    h = hash_sparse(h, s->Jt);
-    h = fnv1a(h, s->r->data, s->n * sizeof(double));
-    h = fnv1a(h, s->p->data, s->n * sizeof(double));
-    if (e->me > 0)
-        h = hash_elements(hash_sparse(h, e->Jt), e);
-    fp->model = h;
-    h = hash_record(FNV_START, &s->ground);
-    h = hash_record(h, &s->load);
-    h = fnv1a(h, s->mun, s->m * sizeof *s->mun);
-    size_t ode_n = s->ode_atol != NULL ? 2 * s->n + 2 + s->m : 0;
-    h = fnv1a(h, &ode_n, sizeof ode_n);
-    fp->excitation = ode_n > 0 ? fnv1a(h, s->ode_atol, ode_n * sizeof *s->ode_atol) : h;
-}
-
-/* FRICREG_OK, or FRICREG_EINVAL naming the first difference (recorded). */
-static int fingerprint_compare(fricreg_structure *s, const struct fingerprint *blob)
-{
-    struct fingerprint own;
-    fingerprint_of(s, &own);
-    for (size_t k = 0; k < NCOUNTS; k++)
-        if (blob->count[k] != own.count[k])
-            return fr_fail(s, FRICREG_EINVAL,
-                           "restore: the checkpoint's structure has %s = %llu, this one %llu",
-                           count_names[k], (unsigned long long)blob->count[k],
-                           (unsigned long long)own.count[k]);
-    for (size_t k = 0; k < NFLAGS; k++)
-        if (blob->flag[k] != own.flag[k])
-            return fr_fail(s, FRICREG_EINVAL,
-                           "restore: the checkpoint's %s is %d, this structure's %d", flag_names[k],
-                           (int)blob->flag[k], (int)own.flag[k]);
-    for (size_t k = 0; k < NPARAMS; k++)
-        if (memcmp(&blob->param[k], &own.param[k], sizeof(double)) != 0)
-            return fr_fail(s, FRICREG_EINVAL,
-                           "restore: the checkpoint's %s = %.17g, this structure's %.17g",
-                           param_names[k], blob->param[k], own.param[k]);
-    if (blob->model != own.model)
-        return fr_fail(s, FRICREG_EINVAL,
-                       "restore: the model (M, K, C, J, r, the load pattern or the elements' "
-                       "matrices and parameters) is not the checkpoint's");
-    if (blob->excitation != own.excitation)
-        return fr_fail(s, FRICREG_EINVAL,
-                       "restore: the ground or load record, the bounds mun or the run_ode "
-                       "tolerances set are not the checkpoint's");
-    return FRICREG_OK;
-}
-
 /* ---- The state ----------------------------------------------------------------------------- */
 
 /* Where check found the nested parts (load reads them before its own pass). */
@@ -223,7 +87,8 @@ struct nested {
     size_t ctx_at, ctx_len;       /* what the context carries (0: nothing) */
     size_t blocks_at, blocks_len; /* the near-stick block's held factor (blocks_carried.h) */
     size_t companion_at, companion_len;
-    int32_t estimate_state;
+    size_t confirm_at, confirm_len; /* FRICREG_COMPANIONS_AUTO's parked finer pair */
+    int32_t estimate_state, companion_level;
     uint8_t prepared, ready, fresh;
     double step_dt;
 };
@@ -317,12 +182,41 @@ static void put_companion(const fricreg_structure *s, void *out, size_t len)
     fricreg_structure_save(s->companion, out, &len);
 }
 
-static size_t companion_bytes(const fricreg_structure *s)
+static void put_confirm(const fricreg_structure *s, void *out, size_t len)
+{
+    fricreg_structure_save(s->confirm, out, &len);
+}
+
+/* The bytes of a companion c of s's active estimate (a stale one is not the run's). */
+static size_t companion_bytes(const fricreg_structure *s, fricreg_structure *c)
 {
     size_t len = 0;
-    if (s->estimate_state == FR_ESTIMATE_ACTIVE) /* a stale one is not the run's */
-        fricreg_structure_save(s->companion, NULL, &len);
+    if (s->estimate_state == FR_ESTIMATE_ACTIVE && c != NULL)
+        fricreg_structure_save(c, NULL, &len);
     return len;
+}
+
+/* What FRICREG_COMPANIONS_AUTO keeps beside the companions: their levels, the parked pair's
+ * calls and what the screen said. */
+static void screen_fields(struct io *io, fricreg_structure *s, struct nested *found)
+{
+    int32_t level = s->companion_level, integrator = s->parked.integrator, calls = s->parked_calls;
+    value(io, &level, sizeof level);
+    value(io, &integrator, sizeof integrator);
+    value(io, &calls, sizeof calls);
+    found->companion_level = level;
+    if ((level != FRICREG_COMPANIONS_FINER && level != FRICREG_COMPANIONS_COARSER) ||
+        (calls != 0 && calls != 1))
+        io->bad = 1;
+    if (io->mode == IO_LOAD) {
+        s->companion_level = level;
+        s->parked.integrator = integrator;
+        s->parked_calls = calls;
+    }
+    double *values[] = {&s->parked.dt, &s->parked.rtol, &s->parked.atol, &s->screen_peak_err,
+                        &s->screen_dissipation_err};
+    for (size_t k = 0; k < sizeof values / sizeof *values; k++)
+        field(io, values[k], sizeof *values[k]);
 }
 
 /* The state, in one order for the three passes; *found what check and save saw. */
@@ -380,10 +274,17 @@ static void state_fields(struct io *io, fricreg_structure *s, struct nested *fou
         memcpy(s->estimate_msg, msg, sizeof msg);
         s->estimate_msg[sizeof msg - 1] = '\0';
     }
-    part(io, io->mode == IO_SAVE ? companion_bytes(s) : 0, put_companion, s, &found->companion_at,
-         &found->companion_len);
-    if (io->mode != IO_SAVE && (found->companion_len > 0) != (state == FR_ESTIMATE_ACTIVE))
-        io->bad = 1; /* a companion exactly while the estimate is active */
+    screen_fields(io, s, found);
+    part(io, io->mode == IO_SAVE ? companion_bytes(s, s->companion) : 0, put_companion, s,
+         &found->companion_at, &found->companion_len);
+    part(io, io->mode == IO_SAVE ? companion_bytes(s, s->confirm) : 0, put_confirm, s,
+         &found->confirm_at, &found->confirm_len);
+    int parked = state == FR_ESTIMATE_ACTIVE && s->companions == FRICREG_COMPANIONS_AUTO &&
+                 found->companion_level == FRICREG_COMPANIONS_COARSER;
+    if (io->mode != IO_SAVE && ((found->companion_len > 0) != (state == FR_ESTIMATE_ACTIVE) ||
+                                (found->confirm_len > 0) != parked))
+        io->bad = 1; /* a companion exactly while the estimate is active, a parked pair while
+                      * auto's screen is */
     if (io->mode != IO_SAVE &&
         (found->ready > found->prepared || (found->step_dt != 0.0 && !found->prepared)))
         io->bad = 1; /* the equation at t needs the set-up, so does K_eff */
@@ -417,11 +318,12 @@ int fricreg_structure_save(fricreg_structure *s, void *buf, size_t *size)
                        s->m);
     fr_estimate_sync(s); /* the companion takes the setters' changes it has not had */
     if (s->estimate_state == FR_ESTIMATE_ACTIVE &&
-        fr_ctx_carried_size(s->companion->ctx, s->companion->prepared) == 0)
+        (fr_ctx_carried_size(s->companion->ctx, s->companion->prepared) == 0 ||
+         (s->confirm != NULL && fr_ctx_carried_size(s->confirm->ctx, s->confirm->prepared) == 0)))
         return fr_fail(s, FRICREG_EINVAL, "save: not supported for this structure's companion");
     struct nested found;
     struct fingerprint fp;
-    fingerprint_of(s, &fp);
+    fr_fingerprint_of(s, &fp);
     struct io count = {.mode = IO_SAVE};
     value(&count, &fp, sizeof fp);
     state_fields(&count, s, &found);
@@ -441,7 +343,7 @@ int fricreg_structure_save(fricreg_structure *s, void *buf, size_t *size)
     value(&io, &fp, sizeof fp);
     state_fields(&io, s, &found);
     uint32_t fields[4] = {FORMAT, BYTE_ORDER_MARK, (uint32_t)FRICREG_VERSION_NUMBER, TYPE_SIZES};
-    uint64_t payload = io.pos, hash = fnv1a(FNV_START, io.out, io.pos);
+    uint64_t payload = io.pos, hash = fr_fnv1a(FNV_START, io.out, io.pos);
     char magic[8] = MAGIC;
     struct io head = {.mode = IO_SAVE, .out = out, .cap = HEADER_BYTES};
     header(&head, fields, &payload, &hash, magic);
@@ -485,17 +387,32 @@ static int read_header(fricreg_structure *s, const unsigned char *buf, size_t si
         return fr_fail(s, FRICREG_EINVAL,
                        "restore: the blob has %zu bytes, its header says %llu (truncated?)", size,
                        (unsigned long long)(len + HEADER_BYTES));
-    if (fnv1a(FNV_START, buf + HEADER_BYTES, (size_t)len) != hash)
+    if (fr_fnv1a(FNV_START, buf + HEADER_BYTES, (size_t)len) != hash)
         return refuse(s, "the checkpoint is corrupted (its hash does not match)");
     *payload = (struct io){.mode = IO_CHECK, .in = buf + HEADER_BYTES, .cap = (size_t)len};
     return FRICREG_OK;
 }
 
-/* The fallible steps before the load: the set-up, K_eff's factor, the context's part, a new
- * companion (into *companion) from its blob, and last the near-stick block's factor (on its
- * failure the companion is freed). */
+/* A new companion of s at `level` into *c, restored from blob[len]. */
+static int companion_from(fricreg_structure *s, int level, const unsigned char *blob, size_t len,
+                          fricreg_structure **c)
+{
+    char msg[256];
+    int status = fr_estimate_companion(s, level, c, msg);
+    if (status != FRICREG_OK)
+        return fr_fail(s, status, "restore: %s", msg);
+    status = fricreg_structure_restore(*c, blob, len);
+    if (status != FRICREG_OK)
+        fr_fail(s, status, "restore: the error estimate's companion: %s",
+                fricreg_structure_errmsg(*c));
+    return status;
+}
+
+/* The fallible steps before the load: the set-up, K_eff's factor, the context's part, the new
+ * companions (into companion[2]: the estimate's, auto's parked finer pair) from their blobs,
+ * and last the near-stick block's factor (on its failure the companions are freed). */
 static int rebuild(fricreg_structure *s, const unsigned char *payload, const struct nested *found,
-                   fricreg_structure **companion)
+                   fricreg_structure *companion[2])
 {
     int status = FRICREG_OK;
     if (found->prepared && (status = fr_structure_prepare(s)) != FRICREG_OK)
@@ -509,16 +426,12 @@ static int rebuild(fricreg_structure *s, const unsigned char *payload, const str
     if (fr_ctx_carried_restore(s->ctx, payload + found->ctx_at, found->ctx_len, found->prepared) !=
         FRICREG_OK)
         return refuse(s, "the context's part of the checkpoint does not fit the contacts");
-    if (found->companion_len > 0) {
-        char msg[256];
-        if ((status = fr_estimate_companion(s, companion, msg)) != FRICREG_OK)
-            return fr_fail(s, status, "restore: %s", msg);
-        status = fricreg_structure_restore(*companion, payload + found->companion_at,
-                                           found->companion_len);
-        if (status != FRICREG_OK)
-            fr_fail(s, status, "restore: the error estimate's companion: %s",
-                    fricreg_structure_errmsg(*companion));
-    }
+    if (found->companion_len > 0)
+        status = companion_from(s, found->companion_level, payload + found->companion_at,
+                                found->companion_len, &companion[0]);
+    if (status == FRICREG_OK && found->confirm_len > 0)
+        status = companion_from(s, FRICREG_COMPANIONS_FINER, payload + found->confirm_at,
+                                found->confirm_len, &companion[1]);
     if (status == FRICREG_OK) {
         status = fr_blocks_carried_restore(s, payload + found->blocks_at, found->blocks_len,
                                            found->step_dt > 0.0);
@@ -529,8 +442,9 @@ static int rebuild(fricreg_structure *s, const unsigned char *payload, const str
                     fricreg_strerror(status));
     }
     if (status != FRICREG_OK) {
-        fricreg_structure_free(*companion);
-        *companion = NULL;
+        fricreg_structure_free(companion[0]);
+        fricreg_structure_free(companion[1]);
+        companion[0] = companion[1] = NULL;
     }
     return status;
 }
@@ -551,15 +465,15 @@ int fricreg_structure_restore(fricreg_structure *s, const void *buf, size_t size
     value(&io, &fp, sizeof fp);
     if (io.bad)
         return refuse(s, "the checkpoint is truncated");
-    if ((status = fingerprint_compare(s, &fp)) != FRICREG_OK)
+    if ((status = fr_fingerprint_compare(s, &fp)) != FRICREG_OK)
         return status;
     size_t state_at = io.pos;
     struct nested found;
     state_fields(&io, s, &found);
     if (io.bad || io.pos != io.cap)
         return refuse(s, "the checkpoint's state does not fit this structure (corrupted?)");
-    fricreg_structure *companion = NULL;
-    if ((status = rebuild(s, io.in, &found, &companion)) != FRICREG_OK)
+    fricreg_structure *companion[2] = {NULL, NULL};
+    if ((status = rebuild(s, io.in, &found, companion)) != FRICREG_OK)
         return status;
     /* From here nothing fails. */
     io.mode = IO_LOAD;
@@ -570,7 +484,9 @@ int fricreg_structure_restore(fricreg_structure *s, const void *buf, size_t size
         s->prepared = 0; /* the saved one sets its model up at its next step: so does this */
     s->stick_valid = 0;
     fricreg_structure_free(s->companion);
-    s->companion = companion;
+    fricreg_structure_free(s->confirm);
+    s->companion = companion[0];
+    s->confirm = companion[1];
     s->companion_pending = 0; /* the saved companion had every change (save passed them on) */
     return FRICREG_OK;
 }

@@ -49,6 +49,7 @@ void fricreg_structure_free(fricreg_structure *s)
     FR_FREE_ALL(s->mun, s->stopped, s->ground.x, s->load.x, s->energy.per_contact, s->peak,
                 s->ode_atol);
     fricreg_structure_free(s->companion);
+    fricreg_structure_free(s->confirm);
     free(s);
 }
 
@@ -118,6 +119,8 @@ int fricreg_structure_create(size_t ndof, size_t m, fricreg_structure **out)
     s->max_steps = -1; /* the law's default (fr_law_max_adaptive_steps) */
     s->tol_scale = 1.0;
     s->answer_rtol = FR_ANSWER_RTOL;
+    s->companions = FRICREG_COMPANIONS_AUTO;
+    s->screen_peak_err = s->screen_dissipation_err = NAN;
     s->fresh = 1;
     *out = s;
     return FRICREG_OK;
@@ -505,6 +508,11 @@ int fricreg_structure_get_value(const fricreg_structure *s, int which, double *v
     case FRICREG_SVALUE_GROUND_PGV: fr_record_peaks(&s->ground, &(double){0}, value); break;
     case FRICREG_SVALUE_JENKINS: *value = e->jenkins; break;
     case FRICREG_SVALUE_COMPANION_CPU: *value = s->companion_cpu; break;
+    case FRICREG_SVALUE_COMPANIONS_USED:
+        *value = s->estimate_state == FR_ESTIMATE_ACTIVE && !s->fresh ? s->companion_level : -1;
+        break;
+    case FRICREG_SVALUE_SCREEN_PEAK_ERR: *value = s->screen_peak_err; break;
+    case FRICREG_SVALUE_SCREEN_DISS_ERR: *value = s->screen_dissipation_err; break;
     default: return FRICREG_EINVAL;
     }
     return FRICREG_OK;

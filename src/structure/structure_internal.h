@@ -230,9 +230,24 @@ struct fricreg_structure {
     char estimate_msg[256];       /* why the estimate failed (FR_ESTIMATE_FAILED) */
     unsigned companion_pending;   /* enum fr_change: set since the companion last followed */
     double answer_rtol; /* fricreg_structure_set_answer_rtol: the estimate's warning level */
-    /* fricreg_structure_set_error_companions: FRICREG_COMPANIONS_FINER (eps / 2, dt / 2, ...)
-     * or _COARSER (2 eps, 2 dt, ...), the second companion's the same */
+    /* fricreg_structure_set_error_companions: FRICREG_COMPANIONS_FINER (eps / 2, dt / 2, ...),
+     * _COARSER (2 eps, 2 dt, ...) or _AUTO (coarser, then finer where they doubt) */
     int companions;
+    /* The levels of `companion` and its own, FINER or COARSER: with AUTO, COARSER (the screen)
+     * until the finer pair confirms. */
+    int companion_level;
+    /* AUTO's finer pair, made with the screen, kept at its start until the screen doubts or a
+     * change is passed on (NULL otherwise); `parked` the stepping calls since its time (all
+     * alike: a new kind of call first steps it to where the last ended). */
+    fricreg_structure *confirm;
+    struct fr_stepping_call {
+        int integrator; /* 0: fixed steps (step, run) */
+        double dt, rtol, atol;
+    } parked;
+    int parked_calls; /* 0: no call since the finer pair's time */
+    /* What the screen had said where the finer pair confirmed it: its estimates of the largest
+     * peak's and of the summed dissipations' errors (+infinity: it failed; NaN: no confirmation) */
+    double screen_peak_err, screen_dissipation_err;
     /* CPU seconds (clock()) in the companions' runs since the estimate's companion was made
      * (FRICREG_SVALUE_COMPANION_CPU): the first companion's call, its own companion's inside */
     double companion_cpu;
@@ -475,20 +490,27 @@ void fr_energy_step(fricreg_structure *s, const gsl_vector *u1, const gsl_vector
 double fr_energy_kinetic(const fricreg_structure *s);
 double fr_energy_strain(const fricreg_structure *s);
 
-/* error_estimate.c. estimate_begin: at a stepping call's start, makes the companion if the
+/* estimate_companions.c. estimate_begin: at a stepping call's start, makes the companion if the
  * estimate is on and the run starts there (and frees a stale one). estimate_follow: at the
  * call's end, passes the setters' changes on (estimate_sync) and steps the companion to the
  * structure's time with the call's scheme: fixed steps dt / 2 (integrator 0: the structure's
  * own scheme), an adaptive GSL run the tolerances / 16; a refusal or a failure makes the
  * estimate a failed one. estimate_sync: checkpoint.c's too, before a save. */
 void fr_estimate_begin(fricreg_structure *s);
-/* A new companion of s, a copy of its configuration and state as fr_estimate_begin makes it,
+/* A new companion of s at the levels `level` (FRICREG_COMPANIONS_FINER or _COARSER), a copy
+ * of its configuration and state as fr_estimate_begin makes it,
  * into *out: FRICREG_OK, or FRICREG_ENOMEM and the companion's failure's message into
  * msg[256] (nothing made). */
-int fr_estimate_companion(const fricreg_structure *s, fricreg_structure **out, char msg[]);
+int fr_estimate_companion(const fricreg_structure *s, int level, fricreg_structure **out,
+                          char msg[]);
 void fr_estimate_follow(fricreg_structure *s, int integrator, double dt, double rtol, double atol);
 void fr_estimate_sync(fricreg_structure *s);
 void fr_estimate_check(fricreg_structure *s); /* warnings.c's check of the estimate */
+/* 1 where the estimate now would raise FRICREG_WARN_ERROR_ESTIMATE (fr_estimate_check's test),
+ * else 0; the largest peak's and the summed dissipations' estimates into *peak_err and
+ * *dissipation_err. For an active estimate only. */
+int fr_estimate_doubts(const fricreg_structure *s, double *peak_err, double *dissipation_err);
+
 /* elements.c: the elements of types[me] with their params (each its type's nparams, in order)
  * on Jt (n x nc in the coordinates' order: taken, freed here on every path), in place of those
  * s holds, every slider at w = 0. FRICREG_OK; FRICREG_ENOMEM (recorded, under who). */
