@@ -19,8 +19,10 @@
  *
  *   fricreg-bench-frame-estimate [--mun F]            the table (seconds)
  *   fricreg-bench-frame-estimate [--mun F] --ladder   the reference's runs only
- *   fricreg-bench-frame-estimate [--mun F] --companions   finer against coarser companions
- *     (fricreg_structure_set_error_companions): per mode, the estimates that bound the error,
+ *   fricreg-bench-frame-estimate [--mun F] --companions   finer, coarser and auto companions
+ *     (fricreg_structure_set_error_companions; auto: the coarser screen, the finer confirming
+ *     where it would warn): per mode, the estimates that bound the error, the runs the finer
+ *     confirmed (auto),
  *     the median estimate / error (all, and of kind asymptotic), the runs warned, those of them
  *     whose error is surely above the answer tolerance (1e-2; the warnings' precision), the
  *     runs surely off by more than it (and 3x it) without a warning (their recall), and the CPU
@@ -66,6 +68,7 @@ struct frame_run {
                                         * "not asymptotic" warning) */
     int D_kind[M_C], peak_kind[NDOF];  /* every estimate's kind */
     double companion_cpu;              /* FRICREG_SVALUE_COMPANION_CPU */
+    double used;                       /* FRICREG_SVALUE_COMPANIONS_USED */
     double cpu;                        /* seconds */
 };
 
@@ -222,6 +225,7 @@ static int run(int scheme, double eps, double dt, int estimate, struct frame_run
         for (int j = 0; j < M_C; j++)
             r->bound |= r->D_kind[j] == FRICREG_EST_KIND_BOUND;
         fricreg_structure_get_value(s, FRICREG_SVALUE_COMPANION_CPU, &r->companion_cpu);
+        fricreg_structure_get_value(s, FRICREG_SVALUE_COMPANIONS_USED, &r->used);
     }
     if (status != FRICREG_OK)
         fprintf(stderr, "run eps %g dt %g: %s\n", eps, dt, fricreg_structure_errmsg(s));
@@ -343,27 +347,28 @@ static int truly_off(const struct frame_run *r, const struct reference *ref, dou
  * estimate (Newmark at 2.5 ms, medians of interleaved runs). */
 static int compare_companions(double eps0, const struct reference *ref)
 {
-    static const char *const names[] = {"finer", "coarser"};
+    static const char *const names[] = {"finer", "coarser", "auto"};
     const double dts[] = {1e-2, 5e-3, 2.5e-3};
     const double samples[] = {2e-2, 1e-2, 5e-3}; /* RKF45's */
     enum { RUNS = 3 * 3, REPS = 7 };
     printf("\n| companions | estimates | bounded | median est/err | asymptotic | median "
            "est/err (asymptotic) | runs warned | warnings right | off, unwarned (> 3x) | cost / "
-           "run without |\n"
-           "|---|---|---|---|---|---|---|---|---|---|\n");
-    double cost[3][REPS];
+           "run without | runs confirmed |\n"
+           "|---|---|---|---|---|---|---|---|---|---|---|\n");
+    double cost[4][REPS];
     for (int k = 0; k < REPS; k++)
-        for (int e = -1; e <= FRICREG_COMPANIONS_COARSER; e++) {
+        for (int e = -1; e <= FRICREG_COMPANIONS_AUTO; e++) {
             struct frame_run r;
             companions = e < 0 ? FRICREG_COMPANIONS_FINER : e;
             run(NEWMARK, eps0, 2.5e-3, e < 0 ? 0 : 1, &r);
             cost[e + 1][k] = r.cpu;
         }
-    for (int e = 0; e < 3; e++)
+    for (int e = 0; e < 4; e++)
         qsort(cost[e], REPS, sizeof cost[e][0], by_value);
-    for (int mode = FRICREG_COMPANIONS_FINER; mode <= FRICREG_COMPANIONS_COARSER; mode++) {
+    for (int mode = FRICREG_COMPANIONS_FINER; mode <= FRICREG_COMPANIONS_AUTO; mode++) {
         double ratio[RUNS * NQ], asym[RUNS * NQ];
         int n = 0, na = 0, bounded = 0, warned = 0, right = 0, missed = 0, missed3 = 0;
+        int confirmed = 0;
         companions = mode;
         for (int scheme = NEWMARK; scheme <= (jenkins ? HHT : RKF45); scheme++)
             for (int k = 0; k < 3; k++) { /* the elements: fricreg_structure_step's schemes */
@@ -372,6 +377,7 @@ static int compare_companions(double eps0, const struct reference *ref)
                 if (run(scheme, eps0, dt, 1, &r) != FRICREG_OK)
                     return 1;
                 warned += r.warned;
+                confirmed += r.used == FRICREG_COMPANIONS_FINER && mode == FRICREG_COMPANIONS_AUTO;
                 right += r.warned && truly_off(&r, ref, 1.0);
                 missed += !r.warned && truly_off(&r, ref, 1.0);
                 missed3 += !r.warned && truly_off(&r, ref, 3.0);
@@ -385,16 +391,19 @@ static int compare_companions(double eps0, const struct reference *ref)
                     if (kind == FRICREG_EST_KIND_ASYMPTOTIC)
                         asym[na++] = est / err;
                     if (getenv("FRAME_PRINT") != NULL)
-                        printf("%s %s %g ms q%d: error %.3g estimate %.3g (%.3g) %s\n", names[mode],
-                               scheme_names[scheme], 1e3 * dt, j, err, est, est / err,
-                               kind == FRICREG_EST_KIND_ASYMPTOTIC ? "asymptotic" : "bound");
+                        printf("%s %s %g ms q%d: error %.3g estimate %.3g (%.3g) %s%s%s\n",
+                               names[mode], scheme_names[scheme], 1e3 * dt, j, err, est, est / err,
+                               kind == FRICREG_EST_KIND_ASYMPTOTIC ? "asymptotic" : "bound",
+                               r.warned ? ", warned" : "",
+                               r.used == FRICREG_COMPANIONS_FINER ? ", by the finer" : "");
                 }
             }
         qsort(ratio, (size_t)n, sizeof ratio[0], by_value);
         qsort(asym, (size_t)na, sizeof asym[0], by_value);
-        printf("| %s | %d | %d | %.3g | %d | %.3g | %d of %d | %d | %d (%d) | %.2f |\n",
+        printf("| %s | %d | %d | %.3g | %d | %.3g | %d of %d | %d | %d (%d) | %.2f | %d |\n",
                names[mode], n, bounded, ratio[n / 2], na, na > 0 ? asym[na / 2] : NAN, warned,
-               n / NQ, right, missed, missed3, cost[mode + 1][REPS / 2] / cost[0][REPS / 2]);
+               n / NQ, right, missed, missed3, cost[mode + 1][REPS / 2] / cost[0][REPS / 2],
+               confirmed);
     }
     printf("\ncost: Newmark at 2.5 ms, median of %d interleaved runs: none %.4f s\n", REPS,
            cost[0][REPS / 2]);

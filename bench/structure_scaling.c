@@ -17,8 +17,8 @@
  *
  *   usage: fricreg-bench-structure-scaling N K [STEPS [REPEATS [estimate]]]
  * Prints one line: n k steps setup_s fricreg_step_s linear_step_s ratio newton_mean peak_MiB.
- * With `estimate`, the error estimate's cost instead: three structures, without an estimate,
- * with finer and with coarser companions (fricreg_structure_set_error_companions), each a
+ * With `estimate`, the error estimate's cost instead: four structures, without an estimate,
+ * with finer, coarser and auto companions (fricreg_structure_set_error_companions), each a
  * first batch from the start (the companions made and factored there), then batches
  * interleaved; one line: n k steps, each one's CPU seconds per step (median of the batches,
  * the first batch's apart) and the ratios against none. */
@@ -165,13 +165,14 @@ static double ground_accel(double t)
     return GROUND_A * sin(TWO_PI * t);
 }
 
-/* The estimate's cost: CPU per step without an estimate, with finer and with coarser
- * companions, measured in turns in this one process. */
+/* The estimate's cost: CPU per step without an estimate, with finer, coarser and auto
+ * companions (enum fricreg_estimate_companions), measured in turns in this one process. */
 static int estimate_cost(const struct chain *c, size_t steps, size_t repeats)
 {
-    fricreg_structure *s[3];
-    double first[3], per[3][64], med[3];
-    for (int e = 0; e < 3; e++) {
+    enum { MODES = 4 }; /* none, then the companions e - 1 */
+    fricreg_structure *s[MODES];
+    double first[MODES], per[MODES][64], med[MODES], cpu[MODES] = {0}, used = -1.0;
+    for (int e = 0; e < MODES; e++) {
         s[e] = structure(c);
         if (e > 0 && (fricreg_structure_set_error_estimate(s[e], 1) != FRICREG_OK ||
                       fricreg_structure_set_error_companions(s[e], e - 1) != FRICREG_OK))
@@ -179,19 +180,22 @@ static int estimate_cost(const struct chain *c, size_t steps, size_t repeats)
         first[e] = fricreg_batch(s[e], steps); /* the set-up and the companions' */
     }
     for (size_t r = 0; r < repeats; r++)
-        for (int e = 0; e < 3; e++)
+        for (int e = 0; e < MODES; e++)
             per[e][r] = fricreg_batch(s[e], steps);
-    double cpu[3] = {0};
-    for (int e = 0; e < 3; e++) {
+    for (int e = 0; e < MODES; e++) {
         med[e] = bench_median(per[e], repeats);
         fricreg_structure_get_value(s[e], FRICREG_SVALUE_COMPANION_CPU, &cpu[e]);
-        fricreg_structure_free(s[e]);
     }
+    fricreg_structure_get_value(s[MODES - 1], FRICREG_SVALUE_COMPANIONS_USED, &used);
+    for (int e = 0; e < MODES; e++)
+        fricreg_structure_free(s[e]);
     printf("n %zu k %zu steps %zu: per step none %.4g s, finer %.4g s (%.2fx), coarser %.4g s "
-           "(%.2fx); first batch none %.4g, finer %.4g, coarser %.4g s/step; companions' CPU "
-           "finer %.3g s, coarser %.3g s\n",
-           c->n, c->k, steps, med[0], med[1], med[1] / med[0], med[2], med[2] / med[0], first[0],
-           first[1], first[2], cpu[1], cpu[2]);
+           "(%.2fx), auto %.4g s (%.2fx, its estimate the %s companions'); first batch none "
+           "%.4g, finer %.4g, coarser %.4g, auto %.4g s/step; companions' CPU finer %.3g s, "
+           "coarser %.3g s, auto %.3g s\n",
+           c->n, c->k, steps, med[0], med[1], med[1] / med[0], med[2], med[2] / med[0], med[3],
+           med[3] / med[0], used == FRICREG_COMPANIONS_COARSER ? "coarser" : "finer", first[0],
+           first[1], first[2], first[3], cpu[1], cpu[2], cpu[3]);
     return 0;
 }
 

@@ -1253,11 +1253,15 @@ contains
       status = self%record(fricreg_structure_set_answer_rtol(self%ptr, rtol))
   end function struct_set_answer_rtol
 
-  !> Where the error estimate's companions sit: FRICREG_COMPANIONS_FINER (0, the default:
-  !> eps/2 at dt/2, eps/4 at dt/4) or FRICREG_COMPANIONS_COARSER (1: 2 eps at 2 dt, 4 eps at
-  !> 4 dt, about 0.75x the run's cost; fixed steps need calls spanning 4 dt)
-  !> (fricreg_structure_set_error_companions). A change ends the estimate made until the next
-  !> set_initial. FRICREG_EINVAL if which is not 0 or 1, nothing changed. Since 1.8.
+  !> Where the error estimate's companions sit: FRICREG_COMPANIONS_AUTO (2, the default since
+  !> 1.9: the coarser screen, confirmed by the finer where it would warn or fails; which gave the
+  !> estimate: get_value(FRICREG_SVALUE_COMPANIONS_USED, x), what the screen said:
+  !> FRICREG_SVALUE_SCREEN_PEAK_ERR and FRICREG_SVALUE_SCREEN_DISS_ERR),
+  !> FRICREG_COMPANIONS_FINER (0: eps/2 at dt/2, eps/4 at dt/4; 1.8's default) or
+  !> FRICREG_COMPANIONS_COARSER (1: 2 eps at 2 dt, 4 eps at 4 dt, about 0.75x the run's cost;
+  !> fixed steps need calls spanning 4 dt) (fricreg_structure_set_error_companions). A change
+  !> ends the estimate made until the next set_initial. FRICREG_EINVAL if which is not 0, 1 or
+  !> 2, nothing changed. Since 1.8; 2 since 1.9.
   function struct_set_error_companions(self, which) result(status)
     class(fricreg_structure), intent(inout) :: self
     integer(c_int), intent(in) :: which

@@ -68,7 +68,7 @@
 !   FRSTJE(H, ME, ERR, STAT)                     _get_jenkins_dissipation_error
 !   FRSTEK(H, QUANT, N, KINDS, STAT)             _get_error_kind
 !   FRSTAR(H, RTOL, STAT)                        _set_answer_rtol
-!   FRSTEC(H, WHICH, STAT)                       _set_error_companions (0 finer, 1 coarser)
+!   FRSTEC(H, WHICH, STAT)                       _set_error_companions (0 finer, 1 coarser, 2 auto)
 !   FRSTCS(H, SOLVER, STAT)                      _set_contact_solver
 !   FRSTCG(H, SOLVER, STAT)                      _get_contact_solver
 !   FRSTAE(H, ITYPE, NS, ME, NDOF, J, PARAMS, STAT)   _add_elements (J(ME IDIM, NDOF)

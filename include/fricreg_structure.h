@@ -1226,26 +1226,29 @@ enum fricreg_estimate_companions {
  *
  *  Auto (screen, then confirm): the coarser companions run as above (the screen), and a
  *  finer pair is made beside them at the run's start, a copy as set_error_estimate says, but
- *  not stepped. At the end of each stepping call, where the screen's estimate would raise
- *  FRICREG_WARN_ERROR_ESTIMATE (half the largest peak's estimate above the answer tolerance
- *  times the largest peak, or half the summed dissipations' likewise: the warning's own test)
- *  or where the screen failed (a call shorter than 4 dt, a companion's failure), the finer
- *  companions are stepped from the start to s's time, as s's calls stepped s, and from then on
- *  they are the estimate (every getter and the warning, exactly the finer estimator's) and the
- *  screen is freed. The screen decides at each call's end: a run made in several calls may be
- *  confirmed (the screen doubted at a call's end) where the same run in one call is not. Where the run was one stepping call, the finer estimates are bit for bit
+ *  not stepped. Where the estimate is read (the *_error getters, get_error_kind,
+ *  get_value's estimate values, fricreg_structure_warning_count) and the screen's estimate
+ *  would raise FRICREG_WARN_ERROR_ESTIMATE there (half the largest peak's estimate above the
+ *  answer tolerance times the largest peak, or half the summed dissipations' likewise: the
+ *  warning's own test), the finer companions are stepped from the start to s's time, as s's
+ *  calls stepped s, and from then on they are the estimate (every getter and the warning,
+ *  exactly the finer estimator's) and the screen is freed; where the screen fails (a fixed-step
+ *  call shorter than 4 dt, a companion's failure) they are stepped at once. So a run of many
+ *  calls is judged where it is read, not at its first calls, whose small quantities a bound
+ *  doubts; a read between calls settles it there. The getters are logically const: the read
+ *  that settles may take the finer companions' time, and the structure's results do not
+ *  change. Where the run was one stepping call, the finer estimates are bit for bit
  *  FRICREG_COMPANIONS_FINER's; over many calls they follow the calls as finer companions do
  *  except where consecutive calls share dt, the integrator and its tolerances, which the finer
  *  pair takes as one call (its steps the same, its time reached to rounding; an adaptive one
  *  chooses its own steps). A setter passed on to the companions (set_bounds, set_law, the
  *  records, ...) first steps the finer pair to the time of the change, so a run that changes
  *  such a setting between its steps pays the finer companions' cost as well as the screen's.
- *  The getters say which gave the estimate and what the screen had said
- *  (fricreg_structure_get_value: FRICREG_SVALUE_COMPANIONS_USED,
- *  FRICREG_SVALUE_SCREEN_PEAK_ERR, FRICREG_SVALUE_SCREEN_DISS_ERR). Cost: the
- *  screen's about 0.7x a run where it is quiet; where it doubts, that plus the finer
- *  companions' (docs/structural.md, "Error estimate"); memory: one more structure beside the
- *  screen's, not set up until it steps.
+ *  What the screen said and which companions gave the estimate: fricreg_structure_get_value's
+ *  FRICREG_SVALUE_COMPANIONS_USED, FRICREG_SVALUE_SCREEN_PEAK_ERR,
+ *  FRICREG_SVALUE_SCREEN_DISS_ERR. Cost: the screen's, about 0.7x a run, where it is quiet;
+ *  where it doubts, that plus the finer companions' (docs/structural.md, "Error estimate");
+ *  memory: one more structure beside the screen's, not set up until it steps.
  *
  *  A change ends the estimate made, which starts anew at the next set_initial, as a change
  *  of on (set_error_estimate).

@@ -207,6 +207,34 @@ START_TEST(test_changes_between_calls)
 }
 END_TEST
 
+/* The screen is judged where the estimate is read, not at each call's end: the run in calls of
+ * 50 dt, read at its end only, keeps the coarser estimate (bit for bit the coarser estimator's
+ * in the same calls), although a read after its first call, at 0.1 s, where its quantities are
+ * small and the coarser bounds doubt them, confirms with the finer companions. */
+START_TEST(test_judged_where_read)
+{
+    fricreg_structure *s = scene(FRICREG_COMPANIONS_AUTO, 1);
+    fricreg_structure *coarser = scene(FRICREG_COMPANIONS_COARSER, 1);
+    fricreg_structure *early = scene(FRICREG_COMPANIONS_AUTO, 1);
+    const int calls = (int)lround(T_END / (50 * DT));
+    for (int k = 1; k <= calls; k++) {
+        double t = k == calls ? T_END : 50 * DT * k;
+        ck_assert_int_eq(fricreg_structure_run(s, DT, t), FRICREG_OK);
+        ck_assert_int_eq(fricreg_structure_run(coarser, DT, t), FRICREG_OK);
+        ck_assert_int_eq(fricreg_structure_run(early, DT, t), FRICREG_OK);
+        if (k == 1)
+            ck_assert_double_eq(value(early, FRICREG_SVALUE_COMPANIONS_USED),
+                                FRICREG_COMPANIONS_FINER);
+    }
+    same_estimates(s, coarser, 1, "read at the end only");
+    ck_assert_double_eq(value(s, FRICREG_SVALUE_COMPANIONS_USED), FRICREG_COMPANIONS_COARSER);
+    ck_assert_double_eq(value(early, FRICREG_SVALUE_COMPANIONS_USED), FRICREG_COMPANIONS_FINER);
+    fricreg_structure_free(early);
+    fricreg_structure_free(coarser);
+    fricreg_structure_free(s);
+}
+END_TEST
+
 /* A new run (set_initial) starts with the screen again; which = 2 is accepted, 3 refused. */
 START_TEST(test_new_run_screens_again)
 {
@@ -236,6 +264,7 @@ int main(void)
     tcase_add_test(tc, test_doubting_screen_is_confirmed);
     tcase_add_test(tc, test_failed_screen_is_confirmed);
     tcase_add_test(tc, test_changes_between_calls);
+    tcase_add_test(tc, test_judged_where_read);
     tcase_add_test(tc, test_new_run_screens_again);
     suite_add_tcase(suite, tc);
     SRunner *sr = srunner_create(suite);

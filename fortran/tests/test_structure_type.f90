@@ -348,6 +348,12 @@ contains
     call check_status(fricreg_structure_get_value(s, FRICREG_SVALUE_COMPANION_CPU, wc), &
                       FRICREG_OK, 'C companion cpu')
     call check(wf > 0.0_c_double .and. wc > 0.0_c_double, trim(tag) // ': companions took time')
+    ! which companions gave the estimate (the default, auto: the coarser or the finer), as C reads
+    call check_status(st%get_value(FRICREG_SVALUE_COMPANIONS_USED, wf), FRICREG_OK, 'used')
+    call check_status(fricreg_structure_get_value(s, FRICREG_SVALUE_COMPANIONS_USED, wc), &
+                      FRICREG_OK, 'C used')
+    call check(wf == wc .and. (wf == FRICREG_COMPANIONS_FINER .or. &
+                               wf == FRICREG_COMPANIONS_COARSER), trim(tag) // ': companions used')
     ! the near-stick block's solver: refused outside the enum (unchanged), read back resolved
     solver = -1
     call check_status(st%contact_solver(solver), FRICREG_OK, 'contact_solver')

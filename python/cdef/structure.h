@@ -72,7 +72,10 @@ enum fricreg_structure_value {
     FRICREG_SVALUE_INITIAL = 7,
     FRICREG_SVALUE_GROUND_PGV = 8,
     FRICREG_SVALUE_JENKINS = 9,
-    FRICREG_SVALUE_COMPANION_CPU = 10
+    FRICREG_SVALUE_COMPANION_CPU = 10,
+    FRICREG_SVALUE_COMPANIONS_USED = 11,
+    FRICREG_SVALUE_SCREEN_PEAK_ERR = 12,
+    FRICREG_SVALUE_SCREEN_DISS_ERR = 13
 };
 int fricreg_structure_add_elements(fricreg_structure *s, const fricreg_element_type *type,
                                    size_t me, size_t ndof, const double J[], const double params[]);
@@ -81,7 +84,11 @@ int fricreg_structure_get_elements(const fricreg_structure *s, size_t me, double
                                    double state[], double D[]);
 int fricreg_structure_get_value(const fricreg_structure *s, int which, double *value);
 int fricreg_structure_set_error_estimate(fricreg_structure *s, int on);
-enum fricreg_estimate_companions { FRICREG_COMPANIONS_FINER = 0, FRICREG_COMPANIONS_COARSER = 1 };
+enum fricreg_estimate_companions {
+    FRICREG_COMPANIONS_FINER = 0,
+    FRICREG_COMPANIONS_COARSER = 1,
+    FRICREG_COMPANIONS_AUTO = 2
+};
 int fricreg_structure_set_error_companions(fricreg_structure *s, int which);
 int fricreg_structure_get_peak_displacement(const fricreg_structure *s, size_t ndof, double peak[]);
 int fricreg_structure_get_peak_displacement_error(const fricreg_structure *s, size_t ndof,

@@ -23,9 +23,9 @@ from .element import Element, _type_for
 from .errors import AccuracyWarning, Error, Interrupted, raise_status
 from .laws import _law_code
 from .matrices import MatrixArgs, is_sparse
-from .structure_result import ErrorEstimate, StructureResult
+from .structure_result import ErrorEstimate, EstimateCompanions, StructureResult
 
-__all__ = ["INTEGRATORS", "Structure", "StructureResult", "ErrorEstimate"]
+__all__ = ["INTEGRATORS", "Structure", "StructureResult", "ErrorEstimate", "EstimateCompanions"]
 
 _SCHEMES = ("newmark", "hht", "central")
 #: The integrators of :meth:`Structure.run`: the structure's own schemes, then GSL's steppers
@@ -36,7 +36,8 @@ INTEGRATORS = _SCHEMES + tuple(
     and not ffi.string(lib.fricreg_integrator_name(k)).startswith(b"central"))
 _ESTIMATES = {"off": lib.FRICREG_ESTIMATE_OFF, "on": lib.FRICREG_ESTIMATE_TWO_COMPANIONS,
               "one": lib.FRICREG_ESTIMATE_ONE_COMPANION}
-_COMPANIONS = {"finer": lib.FRICREG_COMPANIONS_FINER, "coarser": lib.FRICREG_COMPANIONS_COARSER}
+_COMPANIONS = {"auto": lib.FRICREG_COMPANIONS_AUTO, "finer": lib.FRICREG_COMPANIONS_FINER,
+               "coarser": lib.FRICREG_COMPANIONS_COARSER}
 _SOLVERS = {"auto": lib.FRICREG_CONTACT_SOLVER_AUTO, "dense": lib.FRICREG_CONTACT_SOLVER_DENSE,
             "sparse": lib.FRICREG_CONTACT_SOLVER_SPARSE}
 
@@ -118,8 +119,13 @@ class Structure:
         The error estimate against eps -> 0: two companion runs at (eps/2, dt/2) and
         (eps/4, dt/4) (``"on"``, about 7x a run's cost), 1.6's one companion (``"one"``), or
         none (default).
-    error_companions : {"finer", "coarser"}
-        Where the companions sit: finer (default) or at (2 eps, 2 dt), (4 eps, 4 dt).
+    error_companions : {"auto", "finer", "coarser"}
+        Where the companions sit: ``"auto"`` (default) screens with the coarser ones and,
+        where their estimate would warn or fails, runs the finer ones from the start and
+        reports theirs (``fricreg_structure_set_error_companions``; the result's
+        ``estimate_companions`` says which gave it); ``"finer"`` at (eps/2, dt/2),
+        (eps/4, dt/4), about 7x a run's cost (1.8's default); ``"coarser"`` at (2 eps, 2 dt),
+        (4 eps, 4 dt), about 0.7x, warning on many runs within the tolerance.
     answer_rtol : float, optional
         The relative error above which the estimate raises the warning ``error_estimate``
         (default 1e-2): half the estimate, its central value, is compared with it.
@@ -156,7 +162,7 @@ class Structure:
     def __init__(self, M, K, *, damping=None, rayleigh=None, J=None, mun=None, law=None,
                  eps=None, influence=None, ground_accel=None, load=None, load_history=None,
                  elements=(), u0=None, v0=None, newton_tol=None, newton_max_iter=None,
-                 contact_solver="auto", error_estimate="off", error_companions="finer",
+                 contact_solver="auto", error_estimate="off", error_companions="auto",
                  answer_rtol=None):
         shape = _shape(M)
         if len(shape) != 2 or shape[0] != shape[1] or shape[0] < 1:

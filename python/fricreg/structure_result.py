@@ -9,7 +9,7 @@ import numpy as np
 
 from ._fricreg import ffi, lib
 
-__all__ = ["ErrorEstimate", "StructureResult"]
+__all__ = ["ErrorEstimate", "EstimateCompanions", "StructureResult"]
 
 ErrorEstimate = namedtuple("ErrorEstimate", "error kind")
 ErrorEstimate.__doc__ = """An error estimate against the Coulomb problem (eps -> 0), from the
@@ -24,11 +24,30 @@ kind : ndarray of str, shape (n,)
     ``"assumed"`` (one companion, the order assumed).
 """
 
+EstimateCompanions = namedtuple(
+    "EstimateCompanions", "used cpu_seconds screen_peak_displacement_error screen_dissipation_error")
+EstimateCompanions.__doc__ = """Which companions gave a structure's error estimate, what they cost, and
+what the coarser screen had said where the finer confirmed it
+(``fricreg_structure_set_error_companions``, ``fricreg_structure_get_value``).
+
+used : str
+    ``"coarser"`` or ``"finer"``: the companions whose estimate the result reports (with
+    ``error_companions="auto"``: ``"coarser"`` where the screen was quiet, ``"finer"`` where
+    it doubted or failed).
+cpu_seconds : float
+    The CPU seconds the companions took (``FRICREG_SVALUE_COMPANION_CPU``), the screen's and
+    the finer ones' together; their share of the run is this over the run's own CPU time.
+screen_peak_displacement_error, screen_dissipation_error : float
+    Where ``"auto"``'s finer companions confirmed: the screen's estimate of the largest peak's
+    error (m) and of the summed dissipations' error (J) when it doubted, inf where it failed;
+    nan where no confirmation ran.
+"""
+
 StructureResult = namedtuple(
     "StructureResult",
     "times displacements velocities forces output_dofs t peak_displacement dissipation "
     "element_dissipation element_forces energy stats peak_displacement_error "
-    "dissipation_error element_dissipation_error warnings")
+    "dissipation_error element_dissipation_error warnings estimate_companions")
 StructureResult.__doc__ = """The result of :meth:`fricreg.Structure.run`.
 
 Rows of the time series are samples, in time order: the state at the run's start, then at
@@ -69,6 +88,9 @@ peak_displacement_error, dissipation_error, element_dissipation_error : ErrorEst
 warnings : list of (str, str)
     The library's warnings on the model and the run since the last reset, ``(name,
     message)``, name as ``fricreg_warning_name`` gives it (``"eps_large"``, ...).
+estimate_companions : EstimateCompanions or None
+    Which companions gave the error estimates and what the screen said; None without an
+    estimate (new in 1.9, the last field: unpacking by position takes one more name).
 """
 
 _KINDS = {lib.FRICREG_EST_KIND_ASYMPTOTIC: "asymptotic", lib.FRICREG_EST_KIND_BOUND: "bound",
@@ -197,6 +219,21 @@ def _estimate(s, getter, quantity, n):
                                            dtype=str))
 
 
+def _companions(s):
+    """The EstimateCompanions of the estimate now, or None without one."""
+    value = ffi.new("double *")
+    lib.fricreg_structure_get_value(s, lib.FRICREG_SVALUE_COMPANIONS_USED, value)
+    if value[0] < 0:
+        return None
+    used = "coarser" if value[0] == lib.FRICREG_COMPANIONS_COARSER else "finer"
+    read = []
+    for which in (lib.FRICREG_SVALUE_COMPANION_CPU, lib.FRICREG_SVALUE_SCREEN_PEAK_ERR,
+                  lib.FRICREG_SVALUE_SCREEN_DISS_ERR):
+        lib.fricreg_structure_get_value(s, which, value)
+        read.append(value[0])
+    return EstimateCompanions(used, *read)
+
+
 def judge_warnings(s):
     """fricreg_structure_warning_count's list, judged now: [(name, message), ...]."""
     found = []
@@ -245,4 +282,4 @@ def read_result(s, recorder, ndof, m, sets, warnings):
     times, u, v, f = recorder.arrays()
     return StructureResult(times, u, v, f, np.array(recorder.dofs, dtype=np.int64), value[0],
                            peak, D[:m], De[:me], forces, energy, stats, peak_err, D_err, De_err,
-                           warnings)
+                           warnings, _companions(s))

@@ -106,6 +106,12 @@ def test_summary_equals_the_cli_bit_for_bit(cli):
     assert r.stats["newton_failures"] == summary["newton_failures"] == 0
     assert r.warnings == summary["warnings"] == []
     assert r.element_dissipation.shape == (0,) and r.element_dissipation_error.error.shape == (0,)
+    # the screen (coarser) doubted the building and the finer confirmed it, as the CLI says
+    used = r.estimate_companions
+    assert used.used == summary["estimate_companions"] == "finer"
+    assert used.screen_peak_displacement_error == summary["screen"]["peak_displacement_error"]
+    assert used.screen_dissipation_error == summary["screen"]["dissipation_error"]
+    assert 0 < used.cpu_seconds and summary["error_companions"] == "auto"
     # docs/structural.md's table: 0.2224 m and 1.542 MJ (its record from libm's sin)
     assert abs(r.peak_displacement[-1] - 0.2223898) < 1e-6
     assert abs(r.energy["friction"] - 1.542442e6) < 2.0

@@ -2,7 +2,8 @@
 /* error_estimate.c — fricreg_structure_set_error_estimate: an a-posteriori estimate of the
  * error of the peak displacements and of each contact's dissipation against the Coulomb
  * problem (eps -> 0) read from companion structures (estimate_companions.c, which also holds
- * the settings) at finer or coarser levels of (eps, dt): the estimates, the warning, the getters.
+ * the settings) at finer or coarser levels of (eps, dt): the estimates and the warning (the
+ * public getters: estimate_read.c).
  *
  * The estimate of each quantity from q, q2 = q(eps / 2), q4 = q(eps / 4) (coarser: q(2 eps),
  * q(4 eps)) is base/companion_estimate.c's, fricreg_sim's too: Richardson's correction with the
@@ -38,12 +39,12 @@ static const fricreg_structure *second(const fricreg_structure *s)
 
 /* Every step's peak takes in the turning points between its ends (peak.c), so a peak
  * converges at an order as a dissipation does, and its kind is read the same way. */
-static double peak_estimate(const fricreg_structure *s, size_t i, int *kind)
+double fr_estimate_peak(const fricreg_structure *s, size_t i, int *kind)
 {
     return estimate_of(s, s->peak[i], s->companion->peak[i], second(s)->peak[i], kind);
 }
 
-static double dissipation_estimate(const fricreg_structure *s, size_t j, int *kind)
+double fr_estimate_dissipation(const fricreg_structure *s, size_t j, int *kind)
 {
     return estimate_of(s, s->energy.per_contact[j], s->companion->energy.per_contact[j],
                        second(s)->energy.per_contact[j], kind);
@@ -51,7 +52,7 @@ static double dissipation_estimate(const fricreg_structure *s, size_t j, int *ki
 
 /* The estimate of joint element i's dissipation (the elements have no eps: their error is
  * dt's, along the same path). */
-static double element_dissipation_estimate(const fricreg_structure *s, size_t i, int *kind)
+double fr_estimate_element_dissipation(const fricreg_structure *s, size_t i, int *kind)
 {
     return estimate_of(s, s->el.dissipation[i], s->companion->el.dissipation[i],
                        second(s)->el.dissipation[i], kind);
@@ -93,19 +94,19 @@ static void judge(const fricreg_structure *s, struct judged *peak, struct judged
     *D = (struct judged){0};
     for (size_t i = 0; i < s->n; i++) {
         int kind;
-        double err = peak_estimate(s, i, &kind);
+        double err = fr_estimate_peak(s, i, &kind);
         peak->q = fmax(peak->q, fabs(s->peak[i]));
         if (err > peak->err || peak->kind == 0)
             peak->err = err, peak->kind = kind;
     }
     for (size_t j = 0; j < s->m; j++) {
         int kind;
-        double err = dissipation_estimate(s, j, &kind);
+        double err = fr_estimate_dissipation(s, j, &kind);
         add_estimate(D, s->energy.per_contact[j], err, kind);
     }
     for (size_t i = 0; i < s->el.me; i++) {
         int kind;
-        double err = element_dissipation_estimate(s, i, &kind);
+        double err = fr_estimate_element_dissipation(s, i, &kind);
         add_estimate(D, s->el.dissipation[i], err, kind);
     }
     *band = fr_ctx_eps(s->ctx) * s->t;
@@ -161,85 +162,5 @@ int fricreg_structure_get_peak_displacement(const fricreg_structure *s, size_t n
     if (ndof != s->n)
         return FRICREG_ESIZE;
     memcpy(peak, s->peak, ndof * sizeof *peak);
-    return FRICREG_OK;
-}
-
-/* FRICREG_OK when the estimate can be read (a run made one, the companion at s's time). */
-static int estimate_ready(const fricreg_structure *s, size_t len, size_t expected, const void *out)
-{
-    if (s == NULL || out == NULL)
-        return FRICREG_ENULL;
-    if (s->estimate_state == FR_ESTIMATE_NONE || s->fresh || s->running)
-        return FRICREG_EINVAL; /* no step since set_initial with the estimate on, or in a run */
-    return len == expected ? FRICREG_OK : FRICREG_ESIZE;
-}
-
-int fricreg_structure_get_peak_displacement_error(const fricreg_structure *s, size_t ndof,
-                                                  double err[])
-{
-    int status = estimate_ready(s, ndof, s != NULL ? s->n : 0, err);
-    if (status != FRICREG_OK)
-        return status;
-    for (size_t i = 0; i < ndof; i++)
-        err[i] = s->estimate_state == FR_ESTIMATE_FAILED ? INFINITY
-                                                         : peak_estimate(s, i, &(int){0});
-    return FRICREG_OK;
-}
-
-int fricreg_structure_get_dissipation_error(const fricreg_structure *s, size_t m, double err[])
-{
-    int status = estimate_ready(s, m, s != NULL ? s->m : 0, err);
-    if (status != FRICREG_OK)
-        return status;
-    for (size_t j = 0; j < m; j++)
-        err[j] = s->estimate_state == FR_ESTIMATE_FAILED ? INFINITY
-                                                         : dissipation_estimate(s, j, &(int){0});
-    return FRICREG_OK;
-}
-
-int fricreg_structure_get_jenkins_dissipation_error(const fricreg_structure *s, size_t me,
-                                                    double err[])
-{
-    int status = estimate_ready(s, me, s != NULL ? s->el.me : 0, err);
-    if (status != FRICREG_OK)
-        return status;
-    for (size_t i = 0; i < me; i++)
-        err[i] = s->estimate_state == FR_ESTIMATE_FAILED
-                     ? INFINITY
-                     : element_dissipation_estimate(s, i, &(int){0});
-    return FRICREG_OK;
-}
-
-/* The kind of quantity `quantity`'s i-th estimate (enum fricreg_estimated_quantity). */
-static int kind_of(const fricreg_structure *s, int quantity, size_t i)
-{
-    int kind = FRICREG_EST_KIND_BOUND; /* a failed estimate: +infinity, a bound */
-    if (s->estimate_state == FR_ESTIMATE_FAILED)
-        return kind;
-    if (quantity == FRICREG_EST_PEAK_DISPLACEMENT)
-        peak_estimate(s, i, &kind);
-    else if (quantity == FRICREG_EST_DISSIPATION)
-        dissipation_estimate(s, i, &kind);
-    else
-        element_dissipation_estimate(s, i, &kind);
-    return kind;
-}
-
-int fricreg_structure_get_error_kind(const fricreg_structure *s, int quantity, size_t n, int kind[])
-{
-    if (s == NULL || kind == NULL)
-        return FRICREG_ENULL; /* before the quantity is read, as the *_error getters */
-    size_t expected;
-    switch (quantity) {
-    case FRICREG_EST_PEAK_DISPLACEMENT: expected = s->n; break;
-    case FRICREG_EST_DISSIPATION: expected = s->m; break;
-    case FRICREG_EST_ELEMENT_DISSIPATION: expected = s->el.me; break;
-    default: return FRICREG_EINVAL;
-    }
-    int status = estimate_ready(s, n, expected, kind);
-    if (status != FRICREG_OK)
-        return status;
-    for (size_t i = 0; i < n; i++)
-        kind[i] = kind_of(s, quantity, i);
     return FRICREG_OK;
 }

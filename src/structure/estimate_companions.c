@@ -300,14 +300,23 @@ static void park(fricreg_structure *s, const struct fr_stepping_call *call)
  * place, its estimator the finer one from here on. */
 static void confirm(fricreg_structure *s)
 {
+    if (!catch_up(s, s->t))
+        return;
     fricreg_structure_free(s->companion);
     s->companion = s->confirm;
     s->confirm = NULL;
     s->companion_level = FRICREG_COMPANIONS_FINER;
-    char msg[256];
-    if (step_companion(s, s->companion, FRICREG_COMPANIONS_FINER, &s->parked, s->t, msg) !=
-        FRICREG_OK)
-        estimate_failed(s, "the finer companions, confirming the coarser: %s", msg);
+}
+
+void fr_estimate_settle(fricreg_structure *s)
+{
+    double peak_err, dissipation_err;
+    if (s->estimate_state != FR_ESTIMATE_ACTIVE || s->confirm == NULL || s->fresh || s->running ||
+        !fr_estimate_doubts(s, &peak_err, &dissipation_err))
+        return;
+    s->screen_peak_err = peak_err;
+    s->screen_dissipation_err = dissipation_err;
+    confirm(s);
 }
 
 void fr_estimate_follow(fricreg_structure *s, int integrator, double dt, double rtol, double atol)
@@ -321,18 +330,13 @@ void fr_estimate_follow(fricreg_structure *s, int integrator, double dt, double 
     if (s->estimate_state != FR_ESTIMATE_ACTIVE)
         return;
     char msg[256];
-    int status = step_companion(s, s->companion, s->companion_level, &call, s->t, msg);
+    if (step_companion(s, s->companion, s->companion_level, &call, s->t, msg) == FRICREG_OK)
+        return; /* a screen is judged where its estimate is read (fr_estimate_settle) */
     if (s->confirm == NULL) {
-        if (status != FRICREG_OK)
-            estimate_failed(s, "%s", msg);
+        estimate_failed(s, "%s", msg);
         return;
     }
-    s->screen_peak_err = s->screen_dissipation_err = INFINITY; /* where it failed */
-    if (status == FRICREG_OK &&
-        !fr_estimate_doubts(s, &s->screen_peak_err, &s->screen_dissipation_err)) {
-        s->screen_peak_err = s->screen_dissipation_err = NAN; /* quiet */
-        return;
-    }
+    s->screen_peak_err = s->screen_dissipation_err = INFINITY; /* the screen failed */
     confirm(s);
 }
 

@@ -510,6 +510,16 @@ void fr_estimate_check(fricreg_structure *s); /* warnings.c's check of the estim
  * else 0; the largest peak's and the summed dissipations' estimates into *peak_err and
  * *dissipation_err. For an active estimate only. */
 int fr_estimate_doubts(const fricreg_structure *s, double *peak_err, double *dissipation_err);
+/* The estimates of s's peak i, contact j's dissipation and joint element i's dissipation, their
+ * kinds into *kind (enum fricreg_estimate_kind), from the companions of an active estimate. */
+double fr_estimate_peak(const fricreg_structure *s, size_t i, int *kind);
+double fr_estimate_dissipation(const fricreg_structure *s, size_t j, int *kind);
+double fr_estimate_element_dissipation(const fricreg_structure *s, size_t i, int *kind);
+/* estimate_companions.c: where FRICREG_COMPANIONS_AUTO's screen doubts now (fr_estimate_doubts)
+ * and the run is not under way, the parked finer pair steps to s's time and gives the estimate
+ * from here on (a failure fails the estimate); otherwise nothing. Every read of the estimate
+ * calls it first (estimate_read.c, values.c, warnings.c). */
+void fr_estimate_settle(fricreg_structure *s);
 
 /* elements.c: the elements of types[me] with their params (each its type's nparams, in order)
  * on Jt (n x nc in the coordinates' order: taken, freed here on every path), in place of those

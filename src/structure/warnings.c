@@ -246,6 +246,7 @@ size_t fricreg_structure_warning_count(fricreg_structure *s)
     check_newton(s);
     check_energy(s);
     check_tolerances(s);
+    fr_estimate_settle(s); /* auto's screen judged at this read (estimate_read.c) */
     fr_estimate_check(s);
     s->running = 1; /* the handler may read, not change, the structure */
     fr_warnings_deliver(&s->warnings);
