@@ -169,6 +169,11 @@ static int run_structure(fricreg_structure *s, const struct structure_options *o
     clock_t start = clock();
     int status = cli_structure_advance(s, o, in, &run);
     double cpu_seconds = (double)(clock() - start) / CLOCKS_PER_SEC;
+    /* The checkpoint before the reads below, which settle auto's screen (the finer companions
+     * where it doubts now): the continued run is judged where it is read, as the run in one. */
+    int saved = status == FRICREG_OK && o->checkpoint_out != NULL
+                    ? cli_checkpoint_out(s, o->checkpoint_out)
+                    : 0;
     struct cli_warnings warnings;
     cli_structure_warnings(s, &warnings);
     struct structure_estimate est = {0};
@@ -177,8 +182,8 @@ static int run_structure(fricreg_structure *s, const struct structure_options *o
         cli_structure_estimate(s, in, &est);
     if (status != FRICREG_OK)
         status = run_failed(s, status);
-    else if (o->checkpoint_out != NULL) /* the run's output only with its checkpoint */
-        status = cli_checkpoint_out(s, o->checkpoint_out);
+    else
+        status = saved; /* the run's output only with its checkpoint */
     if (status == 0 && run.rows != NULL)
         copy_stream(run.rows, out);
     else if (status == 0)
