@@ -22,7 +22,7 @@
  *   fricreg-bench-frame-estimate [--mun F] --companions   finer, coarser and auto companions
  *     (fricreg_structure_set_error_companions; auto: the coarser screen, the finer confirming
  *     where it would warn): per mode, the estimates that bound the error, the runs the finer
- *     confirmed (auto),
+ *     confirmed (auto), each run's CPU against the same run without an estimate (their mean),
  *     the median estimate / error (all, and of kind asymptotic), the runs warned, those of them
  *     whose error is surely above the answer tolerance (1e-2; the warnings' precision), the
  *     runs surely off by more than it (and 3x it) without a warning (their recall), and the CPU
@@ -197,6 +197,8 @@ static int run(int scheme, double eps, double dt, int estimate, struct frame_run
          k++) /* sampled every dt, as fricreg-sim's adaptive runs: the tolerances from eps */
         status = fricreg_structure_run_ode(s, FRICREG_INT_RKF45, dt, RKF45_RTOL,
                                            FRICREG_ATOL_FROM_EPS, k == n ? T_END : (double)k * dt);
+    if (status == FRICREG_OK && estimate) /* the first read settles auto's screen: its cost */
+        fricreg_structure_get_peak_displacement_error(s, NDOF, r->peak_err);
     r->cpu = cpu_now() - t0;
     if (status == FRICREG_OK) {
         if (jenkins)
@@ -353,8 +355,8 @@ static int compare_companions(double eps0, const struct reference *ref)
     enum { RUNS = 3 * 3, REPS = 7 };
     printf("\n| companions | estimates | bounded | median est/err | asymptotic | median "
            "est/err (asymptotic) | runs warned | warnings right | off, unwarned (> 3x) | cost / "
-           "run without | runs confirmed |\n"
-           "|---|---|---|---|---|---|---|---|---|---|---|\n");
+           "run without | runs confirmed | mean cost / run without |\n"
+           "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     double cost[4][REPS];
     for (int k = 0; k < REPS; k++)
         for (int e = -1; e <= FRICREG_COMPANIONS_AUTO; e++) {
@@ -369,13 +371,17 @@ static int compare_companions(double eps0, const struct reference *ref)
         double ratio[RUNS * NQ], asym[RUNS * NQ];
         int n = 0, na = 0, bounded = 0, warned = 0, right = 0, missed = 0, missed3 = 0;
         int confirmed = 0;
+        double cost_ratio = 0.0; /* summed over the runs: each against the same run without */
         companions = mode;
         for (int scheme = NEWMARK; scheme <= (jenkins ? HHT : RKF45); scheme++)
             for (int k = 0; k < 3; k++) { /* the elements: fricreg_structure_step's schemes */
                 struct frame_run r;
                 double dt = scheme == RKF45 ? samples[k] : dts[k];
-                if (run(scheme, eps0, dt, 1, &r) != FRICREG_OK)
+                struct frame_run bare;
+                if (run(scheme, eps0, dt, 1, &r) != FRICREG_OK ||
+                    run(scheme, eps0, dt, 0, &bare) != FRICREG_OK)
                     return 1;
+                cost_ratio += r.cpu / bare.cpu;
                 warned += r.warned;
                 confirmed += r.used == FRICREG_COMPANIONS_FINER && mode == FRICREG_COMPANIONS_AUTO;
                 right += r.warned && truly_off(&r, ref, 1.0);
@@ -400,10 +406,10 @@ static int compare_companions(double eps0, const struct reference *ref)
             }
         qsort(ratio, (size_t)n, sizeof ratio[0], by_value);
         qsort(asym, (size_t)na, sizeof asym[0], by_value);
-        printf("| %s | %d | %d | %.3g | %d | %.3g | %d of %d | %d | %d (%d) | %.2f | %d |\n",
+        printf("| %s | %d | %d | %.3g | %d | %.3g | %d of %d | %d | %d (%d) | %.2f | %d | %.2f |\n",
                names[mode], n, bounded, ratio[n / 2], na, na > 0 ? asym[na / 2] : NAN, warned,
                n / NQ, right, missed, missed3, cost[mode + 1][REPS / 2] / cost[0][REPS / 2],
-               confirmed);
+               confirmed, cost_ratio / (n / NQ));
     }
     printf("\ncost: Newmark at 2.5 ms, median of %d interleaved runs: none %.4f s\n", REPS,
            cost[0][REPS / 2]);

@@ -1112,7 +1112,9 @@ FRICREG_API int fricreg_structure_get_value(const fricreg_structure *s, int whic
  *  (FRICREG_1.6); two companions and on = 2 since 1.7.
  *
  *  The estimator (docs/structural.md, "Error estimate"): companion runs along the path
- *  (eps, dt) -> (eps / 2, dt / 2) -> (eps / 4, dt / 4) give q2 and q4 beside the run's q. Law
+ *  (eps, dt) -> (eps / 2, dt / 2) -> (eps / 4, dt / 4) give q2 and q4 beside the run's q (the
+ *  finer companions described here; since 1.9 by default screened by coarser ones and run only
+ *  where those doubt: fricreg_structure_set_error_companions). Law
  *  (4)'s error is c eps^p, p = 1 or 2, and along dt / eps fixed a fixed step's error follows
  *  eps, so in the asymptotic range d1 = q - q2 and d2 = q2 - q4 have one sign and
  *  d1 / d2 = 2^p. With on = FRICREG_ESTIMATE_TWO_COMPANIONS (1): where the observed order
