@@ -643,7 +643,10 @@ enum fricreg_structure_value {
                                           now, as enum fricreg_estimate_companions: 0
                                           (finer) or 1 (coarser); with
                                           FRICREG_COMPANIONS_AUTO, 1 while the screen is
-                                          quiet and 0 once the finer confirmed it; -1
+                                          quiet and 0 once the finer confirmed it (reading
+                                          this, or _COMPANION_CPU or the _SCREEN_ values,
+                                          settles the screen as the estimate's getters do:
+                                          fricreg_structure_set_error_companions); -1
                                           without an estimate (off, not yet made, ended or
                                           failed) (since 1.9) */
     FRICREG_SVALUE_SCREEN_PEAK_ERR = 12, /**< with FRICREG_COMPANIONS_AUTO, once the finer

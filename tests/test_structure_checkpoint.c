@@ -169,7 +169,8 @@ static unsigned char *saved_at_t1(const struct setup *c, size_t *len, double dis
     return blob;
 }
 
-/* From T1 on: the answer tolerance lowered where the setup asks. */
+/* The answer tolerance lowered where the setup asks (it is read where the estimate is, at the
+ * end: the screen settles there, not at T1), then on to T2. */
 static void second_half(fricreg_structure *s, const struct setup *c)
 {
     if (c->doubt_after_t1)
@@ -181,8 +182,9 @@ static void split_equals_uninterrupted(const struct setup *c)
 {
     double full[OUT_LEN], split[OUT_LEN], d1[MC];
     fricreg_structure *s = make(c);
-    advance(s, c, T1);
-    second_half(s, c);
+    if (c->companions == FRICREG_COMPANIONS_AUTO)
+        advance(s, c, T1); /* the coarser screen's 4 dt do not divide T1: the split's calls */
+    second_half(s, c);     /* else in one call: the run's grid continued through T1 */
     size_t n_full = outputs(s, c, full);
     fricreg_structure_free(s);
 
