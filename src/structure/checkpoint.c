@@ -196,22 +196,19 @@ static size_t companion_bytes(const fricreg_structure *s, fricreg_structure *c)
     return len;
 }
 
-/* What FRICREG_COMPANIONS_AUTO keeps beside the companions: their levels, the parked pair's
- * calls and what the screen said. */
+/* What FRICREG_COMPANIONS_AUTO keeps beside the companions: their levels, the kind of call the
+ * parked pair has still to take and what the screen said. */
 static void screen_fields(struct io *io, fricreg_structure *s, struct nested *found)
 {
-    int32_t level = s->companion_level, integrator = s->parked.integrator, calls = s->parked_calls;
+    int32_t level = s->companion_level, integrator = s->parked.integrator;
     value(io, &level, sizeof level);
     value(io, &integrator, sizeof integrator);
-    value(io, &calls, sizeof calls);
     found->companion_level = level;
-    if ((level != FRICREG_COMPANIONS_FINER && level != FRICREG_COMPANIONS_COARSER) ||
-        (calls != 0 && calls != 1))
+    if (level != FRICREG_COMPANIONS_FINER && level != FRICREG_COMPANIONS_COARSER)
         io->bad = 1;
     if (io->mode == IO_LOAD) {
         s->companion_level = level;
         s->parked.integrator = integrator;
-        s->parked_calls = calls;
     }
     double *values[] = {&s->parked.dt, &s->parked.rtol, &s->parked.atol, &s->screen_peak_err,
                         &s->screen_dissipation_err};

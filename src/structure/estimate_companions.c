@@ -153,7 +153,7 @@ void fr_estimate_begin(fricreg_structure *s)
         return;
     s->companion_level = s->companions == FRICREG_COMPANIONS_FINER ? FRICREG_COMPANIONS_FINER
                                                                    : FRICREG_COMPANIONS_COARSER;
-    s->parked_calls = 0;
+    s->parked = (struct fr_stepping_call){0}; /* no call yet: the pair is at s's time */
     s->screen_peak_err = s->screen_dissipation_err = NAN;
     char msg[256];
     if (fr_estimate_companion(s, s->companion_level, &s->companion, msg) != FRICREG_OK ||
@@ -259,7 +259,7 @@ static int step_companion(fricreg_structure *s, fricreg_structure *c, int level,
 static int catch_up(fricreg_structure *s, double t)
 {
     char msg[256];
-    if (s->parked_calls == 0 || !(t > s->confirm->t) ||
+    if (!(t > s->confirm->t) ||
         step_companion(s, s->confirm, FRICREG_COMPANIONS_FINER, &s->parked, t, msg) == FRICREG_OK)
         return 1;
     estimate_failed(s, "the finer companions, confirming the coarser: %s", msg);
@@ -289,10 +289,9 @@ static int same_call(const struct fr_stepping_call *a, const struct fr_stepping_
  * where the calls of the last kind ended, the screen's time. */
 static void park(fricreg_structure *s, const struct fr_stepping_call *call)
 {
-    if (s->parked_calls > 0 && !same_call(&s->parked, call) && !catch_up(s, s->companion->t))
-        return;
+    if (!same_call(&s->parked, call) && !catch_up(s, s->companion->t))
+        return; /* before the first call the pair is at the screen's time: nothing to step */
     s->parked = *call;
-    s->parked_calls = 1;
 }
 
 /* The screen doubts (its estimate would warn, or it failed: screen_peak_err and

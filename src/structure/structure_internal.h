@@ -244,7 +244,6 @@ struct fricreg_structure {
         int integrator; /* 0: fixed steps (step, run) */
         double dt, rtol, atol;
     } parked;
-    int parked_calls; /* 0: no call since the finer pair's time */
     /* What the screen had said where the finer pair confirmed it: its estimates of the largest
      * peak's and of the summed dissipations' errors (+infinity: it failed; NaN: no confirmation) */
     double screen_peak_err, screen_dissipation_err;
