@@ -56,3 +56,12 @@ gsl_eigen_symm_workspace *fr_gsl_eigen_symm_new(size_t n)
     }
     return w;
 }
+
+gsl_root_fsolver *fr_gsl_brent_new(void)
+{
+    size_t state = gsl_root_fsolver_brent->size;
+    gsl_root_fsolver *s = block(sizeof *s, (state + sizeof(double) - 1) / sizeof(double));
+    if (s != NULL)
+        *s = (gsl_root_fsolver){.type = gsl_root_fsolver_brent, .state = s + 1};
+    return s;
+}

@@ -11,6 +11,7 @@
 #include <gsl/gsl_eigen.h>
 #include <gsl/gsl_matrix.h>
 #include <gsl/gsl_permutation.h>
+#include <gsl/gsl_roots.h>
 #include <gsl/gsl_vector.h>
 
 /* A zeroed n1 x n2 matrix, or NULL. */
@@ -21,6 +22,9 @@ gsl_vector *fr_gsl_vector_new(size_t n);
 
 /* The identity permutation of n, or NULL. */
 gsl_permutation *fr_gsl_permutation_new(size_t n);
+
+/* Brent's bracketing root solver (gsl_root_fsolver_brent), or NULL. */
+gsl_root_fsolver *fr_gsl_brent_new(void);
 
 /* The workspace gsl_eigen_symm needs for an n x n matrix, or NULL. */
 gsl_eigen_symm_workspace *fr_gsl_eigen_symm_new(size_t n);

@@ -9,6 +9,7 @@
 
 #include "disk_ctx_internal.h"
 #include "base/eigen.h"
+#include "base/gsl_mem.h"
 #include "law/contact_check.h"
 #include "law/law.h"
 #include "law/law_disk.h"
@@ -16,32 +17,6 @@
 #define SYMMETRY_RTOL 1e-12
 #define BLOCK_PD_RTOL 1e-12 /* smallest eigenvalue of a block over its largest */
 #define PSD_RTOL 1e-12
-
-/* Brent's solver on fricreg's memory: gsl_root_fsolver_alloc reports a failed malloc through
- * GSL's process-wide error handler (which aborts by default), as gsl_mem.h explains. The
- * struct's layout is public in gsl_roots.h. */
-static gsl_root_fsolver *brent_new(void)
-{
-    gsl_root_fsolver *s = malloc(sizeof *s);
-    if (s == NULL)
-        return NULL;
-    s->type = gsl_root_fsolver_brent;
-    s->function = NULL;
-    s->root = s->x_lower = s->x_upper = 0.0;
-    s->state = malloc(gsl_root_fsolver_brent->size);
-    if (s->state == NULL) {
-        free(s);
-        return NULL;
-    }
-    return s;
-}
-
-static void brent_free(gsl_root_fsolver *s)
-{
-    if (s != NULL)
-        free(s->state);
-    free(s);
-}
 
 static void free_kkt(fricreg_disk_ctx *ctx)
 {
@@ -79,7 +54,7 @@ void fricreg_disk_ctx_free(fricreg_disk_ctx *ctx)
     free(ctx->bound), free(ctx->strib), free(ctx->strib_keps);
     free(ctx->last_zdot), free(ctx->last_afree);
     free(ctx->row), free(ctx->mrow);
-    brent_free(ctx->brent);
+    free(ctx->brent);
     free(ctx);
 }
 
@@ -113,7 +88,7 @@ int fricreg_disk_ctx_create(size_t m, fricreg_disk_ctx **out)
     ctx->mrow = malloc(m * sizeof *ctx->mrow);
     ctx->last_zdot = malloc(2 * m * sizeof *ctx->last_zdot);
     ctx->last_afree = malloc(2 * m * sizeof *ctx->last_afree);
-    ctx->brent = brent_new();
+    ctx->brent = fr_gsl_brent_new();
     if (!ctx->mun || !ctx->eig || !ctx->blk || !ctx->f || !ctx->f_last || !ctx->g || !ctx->p ||
         !ctx->u || !ctx->r || !ctx->radius || !ctx->lam || !ctx->bound || !ctx->kind ||
         !ctx->near || !ctx->row || !ctx->mrow || !ctx->last_zdot || !ctx->last_afree ||

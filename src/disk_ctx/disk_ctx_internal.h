@@ -86,7 +86,7 @@ struct fricreg_disk_ctx {
     struct fr_stribeck *strib; /* [m] each contact's fs, fk, vs, delta */
     double *strib_keps;        /* [m] k(eps), refreshed when eps changes */
 
-    gsl_root_fsolver *brent; /* on fricreg's memory (disk_ctx.c): no GSL allocator */
+    gsl_root_fsolver *brent; /* on fricreg's memory (base/gsl_mem.h): no GSL allocator */
     struct fr_error err;
 };
 

@@ -1,0 +1,335 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/**
+ * \file
+ * fricreg_fit.h — a joint's parameters from a test: the fit of a mode's measured natural
+ * frequency and damping ratio at several response levels (a stepped-sine test's backbone),
+ * with exact sensitivities, covariance, 95 % intervals and identifiability (docs/identification.md).
+ *
+ * The model (the "modal Iwan" of the literature): one mass-normalized mode, modal coordinate q,
+ * a linear modal stiffness K0 in parallel with Segalman's four-parameter Iwan joint (D. J.
+ * Segalman, "A four-parameter Iwan model for lap-type joints", J. Appl. Mech. 72 (2005)
+ * 752-760; the density of fricreg_iwan.h) and a linear modal damping ratio zeta0. With
+ *
+ *     c = beta + (chi + 1)/(chi + 2),   phi_max = F_S (1 + beta)/(K_T c),   x = a/phi_max
+ *
+ * the joint's backbone force and its dissipation per cycle (Masing's rule) at the modal
+ * amplitude a are, in closed form,
+ *
+ *     x < 1:  F = (F_S/c) ((1 + beta) x - x^(chi+2)/(chi + 2))
+ *             D = 4 F_S phi_max (chi + 1) x^(chi+3) / (c (chi + 2)(chi + 3))
+ *     x >= 1: F = F_S
+ *             D = (4 F_S phi_max/c) ((chi + 1)(x/(chi + 2) - 1/(chi + 3)) + beta (x - 1))
+ *
+ * and the quasi-static modal analysis (QSMA: R. M. Lacayo, M. S. Allen, "Updating structural
+ * models containing nonlinear Iwan joints using quasi-static modal analysis", MSSP 118 (2019)
+ * 133-157) gives the mode's frequency and damping ratio by
+ * the secant stiffness and the energy balance of one cycle:
+ *
+ *     k_sec = K0 + F/a,   omega = sqrt(k_sec) (rad/s),   f = omega/(2 pi) (Hz)
+ *     zeta = zeta0 + D/(2 pi k_sec a^2)
+ *
+ * A level's measured amplitude A is the response at a sensor of mode shape value s (mass
+ * normalized, fricreg_fit_set_sensor) of a kind: displacement A = |s| a, velocity
+ * A = |s| omega a, acceleration A = |s| omega^2 a; its modal amplitude a solves that equation
+ * (Brent's method on GSL; the right-hand sides grow monotonically in a), and the sensitivities
+ * follow a through it by the implicit function theorem. Every derivative is exact (forward
+ * differentiation of the closed forms), no finite differences.
+ *
+ * Units: consistent, mass-normalized modal units: q in m sqrt(kg) when A is in m and s in
+ * 1/sqrt(kg) (s = 1: A is the modal amplitude itself); K0, K_T in 1/s^2 (modal stiffness),
+ * F_S in modal force (K_T times modal displacement), chi and beta nondimensional; frequencies
+ * in Hz; damping ratios nondimensional.
+ *
+ * The fit: weighted least squares over the levels' frequencies and damping ratios,
+ *
+ *     r = ((f_i - f_i,meas)/sd_f,i,  (zeta_i - zeta_i,meas)/sd_zeta,i),   i = 1..n
+ *
+ * with the standard deviations given (fricreg_fit_set_deviations; the covariance is then
+ * (J^T J)^-1, the intervals normal), or relative residuals (sd = the measured value; the
+ * covariance scaled by the residual variance r^T r/(2n - p) and the intervals Student's t
+ * with 2n - p degrees of freedom, as SciPy's curve_fit without absolute_sigma). The free
+ * parameters are solved in transformed coordinates theta that keep them inside their bounds:
+ * p = lo + exp(theta) with a lower bound only (so a positive parameter is log-scaled),
+ * hi - exp(theta) with an upper bound only, lo + (hi - lo)/(1 + exp(-theta)) with both, theta
+ * with neither. GSL's trust-region Levenberg-Marquardt (gsl_multifit_nlinear, with the exact
+ * Jacobian) runs from each start of a deterministic set (fricreg_fit_set_starts); the best
+ * converged one is the fit. Its covariance is the transformed one mapped by dp/dtheta (the
+ * delta method); its 95 % intervals are theta's mapped back, so a log-scaled parameter's is
+ * asymmetric and never crosses its bound. Identifiability: the singular values of the
+ * Jacobian in theta (log-scaled parameters: relative changes) and their right singular
+ * vectors, the parameter combinations each determines.
+ *
+ * Conventions are those of fricreg.h: int results are fricreg_status codes, nothing is printed,
+ * a failed call leaves the caller's arrays and the object's settings untouched, one object per
+ * thread. The object keeps the status and a message of its last failed call
+ * (fricreg_fit_errcode, fricreg_fit_errmsg, fricreg_fit_errmsg_copy). A fit's results are
+ * readable only after a run that returned FRICREG_OK, until a setter changes the problem: a
+ * failed run reports nothing as a fit. GSL's multifit workspace reports a failed malloc
+ * through GSL's error handler, as gsl_odeiv2_step_alloc does (docs/reliability.md).
+ * Since 1.9 (FRICREG_1.9).
+ */
+#ifndef FRICREG_FIT_H
+#define FRICREG_FIT_H
+
+#include "fricreg.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** \defgroup fit Identification: a joint's parameters from measured frequency and damping (fricreg_fit)
+ *  An opaque fit of the modal Iwan model to a mode's measured frequency and damping ratio at
+ *  several levels: exact sensitivities, GSL's trust-region least squares from several starts,
+ *  covariance, intervals, identifiability (docs/identification.md).
+ *  \{ */
+
+/** Opaque fit: the levels, their deviations, the sensor, each parameter's start, bounds and
+ *  whether it is free, the result of the last successful run, the last error. */
+typedef struct fricreg_fit fricreg_fit;
+
+/** The modal Iwan model's parameters: indices into every parameter array of this header
+ *  (length FRICREG_FIT_NPARAMS). Values are fixed forever. Since 1.9. */
+enum fricreg_fit_param {
+    FRICREG_FIT_FS = 0,    /**< F_S, the joint's macroslip force (modal force), > 0 */
+    FRICREG_FIT_KT = 1,    /**< K_T, the joint's stiffness before any slip (1/s^2), > 0 */
+    FRICREG_FIT_CHI = 2,   /**< chi, the exponent of the slip-force density, > -1 */
+    FRICREG_FIT_BETA = 3,  /**< beta, the weight of the density's delta at phi_max, >= 0 */
+    FRICREG_FIT_ZETA0 = 4, /**< zeta0, the linear modal damping ratio, >= 0 */
+    FRICREG_FIT_K0 = 5,    /**< K0, the linear modal stiffness beside the joint (1/s^2), >= 0 */
+    FRICREG_FIT_NPARAMS = 6 /**< the number of parameters */
+};
+
+/** What a level's measured amplitude is (at the sensor of fricreg_fit_set_sensor). Values are
+ *  fixed forever. Since 1.9. */
+enum fricreg_fit_amplitude {
+    FRICREG_FIT_DISPLACEMENT = 0, /**< A = |s| a */
+    FRICREG_FIT_VELOCITY = 1,     /**< A = |s| omega a */
+    FRICREG_FIT_ACCELERATION = 2  /**< A = |s| omega^2 a */
+};
+
+/** The numbers of a fit that fricreg_fit_get_value reads. Values are fixed forever. Since 1.9. */
+enum fricreg_fit_value {
+    FRICREG_FIT_COST = 0,          /**< r^T r at the fit (chi-square with deviations given) */
+    FRICREG_FIT_RESIDUAL_VARIANCE = 1, /**< r^T r/(2n - p); 0 where 2n = p */
+    FRICREG_FIT_NFEV = 2,          /**< residual evaluations, over every start */
+    FRICREG_FIT_NJEV = 3,          /**< Jacobian evaluations, over every start */
+    FRICREG_FIT_ITERATIONS = 4,    /**< iterations of the start that gave the fit */
+    FRICREG_FIT_BEST_START = 5,    /**< which start gave the fit (0: the first) */
+    FRICREG_FIT_STARTS_CONVERGED = 6, /**< how many starts converged */
+    FRICREG_FIT_NFREE = 7,         /**< the number of free parameters p */
+    FRICREG_FIT_CONDITION = 8      /**< largest over smallest singular value of the Jacobian */
+};
+
+/** Create a fit of the modal Iwan model, with no levels.
+ *
+ *  Defaults: every parameter free, with the bounds of enum fricreg_fit_param (so each is
+ *  log-scaled: F_S, K_T, zeta0 and K0 on (0, inf), chi + 1 and beta on (0, inf)) and a start
+ *  made from the levels at the run (docs/identification.md, "Starts"); the sensor s = 1; no
+ *  deviations (relative residuals); 8 starts.
+ *
+ *  out  out: the new fit, released with fricreg_fit_free. Written only on success.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if out is NULL; FRICREG_ENOMEM. Since 1.9. */
+FRICREG_API int fricreg_fit_create(fricreg_fit **out);
+
+/** Release the fit. fricreg_fit_free(NULL) does nothing. Since 1.9. */
+FRICREG_API void fricreg_fit_free(fricreg_fit *fit);
+
+/** Set the measured levels (replacing any), and forget the deviations.
+ *
+ *  n             number of levels, >= 1 (a run needs at least as many as free parameters).
+ *  kind          what amplitude[] is: a value of enum fricreg_fit_amplitude.
+ *  amplitude[n]  the levels' response amplitudes at the sensor, > 0 (finite): m, m/s or
+ *                m/s^2 by kind (any consistent unit). Any order.
+ *  freq_hz[n]    the measured natural frequencies, Hz, > 0 (finite).
+ *  zeta[n]       the measured damping ratios, > 0 (finite), nondimensional.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if fit or an array is NULL; FRICREG_EINVAL if n is 0 or
+ *  above 1e6, kind is unknown or a value is <= 0; FRICREG_ENONFINITE if a value is NaN or
+ *  infinite; FRICREG_ENOMEM. Since 1.9. */
+FRICREG_API int fricreg_fit_set_levels(fricreg_fit *fit, size_t n, int kind,
+                                       const double amplitude[], const double freq_hz[],
+                                       const double zeta[]);
+
+/** Set the levels' standard deviations (absolute, in the units of the measurements): the
+ *  residuals are weighted by them and the covariance is not rescaled. Both NULL: relative
+ *  residuals again, the covariance scaled by the residual variance.
+ *
+ *  n              must equal the levels' count.
+ *  sd_freq_hz[n]  the frequencies' standard deviations, Hz, > 0 (finite).
+ *  sd_zeta[n]     the damping ratios' standard deviations, > 0 (finite).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if fit is NULL or only one array is; FRICREG_ESIZE if n
+ *  differs from the levels' count; FRICREG_EINVAL if a value is <= 0; FRICREG_ENONFINITE if a
+ *  value is NaN or infinite. Since 1.9. */
+FRICREG_API int fricreg_fit_set_deviations(fricreg_fit *fit, size_t n, const double sd_freq_hz[],
+                                           const double sd_zeta[]);
+
+/** Set the mode shape's value s at the sensor (mass normalized, 1/sqrt(kg) in SI): the
+ *  measured amplitude is |s| times the modal one (times omega or omega^2 by kind).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if fit is NULL; FRICREG_ENONFINITE if s is NaN or
+ *  infinite; FRICREG_EINVAL if s = 0. Since 1.9. */
+FRICREG_API int fricreg_fit_set_sensor(fricreg_fit *fit, double s);
+
+/** Make a parameter free, with a start and bounds.
+ *
+ *  which  a value of enum fricreg_fit_param.
+ *  start  the first start's value, lower < start < upper (finite); NaN: made from the levels
+ *         at the run (the default).
+ *  lower  lower bound, -INFINITY for none, not below the parameter's own (0 for F_S, K_T,
+ *         beta, zeta0 and K0, -1 for chi).
+ *  upper  upper bound, INFINITY for none, > lower.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if fit is NULL; FRICREG_EINVAL if which is unknown, a bound
+ *  lies below the parameter's own or upper <= lower, or start is outside (lower, upper);
+ *  FRICREG_ENONFINITE if lower or upper is NaN. Since 1.9. */
+FRICREG_API int fricreg_fit_set_free(fricreg_fit *fit, int which, double start, double lower,
+                                     double upper);
+
+/** Fix a parameter at a value (beta = 0: the three-parameter model with no delta; K0 = 0: the
+ *  joint alone).
+ *
+ *  which  a value of enum fricreg_fit_param.
+ *  value  finite, in the parameter's range (F_S, K_T > 0; chi > -1; beta, zeta0, K0 >= 0).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if fit is NULL; FRICREG_EINVAL if which is unknown or value
+ *  is outside the parameter's range; FRICREG_ENONFINITE if value is NaN or infinite.
+ *  Since 1.9. */
+FRICREG_API int fricreg_fit_set_fixed(fricreg_fit *fit, int which, double value);
+
+/** Set the number of starts, 1..1000 (default 8): the first start, then starts moved from it
+ *  in theta along a Halton sequence (docs/identification.md, "Starts").
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if fit is NULL; FRICREG_EINVAL if nstarts is 0 or above
+ *  1000. Since 1.9. */
+FRICREG_API int fricreg_fit_set_starts(fricreg_fit *fit, size_t nstarts);
+
+/** Fit the free parameters to the levels.
+ *
+ *  Returns FRICREG_OK, the fit then readable by the getters below; else nothing is reported as
+ *  a fit, and: FRICREG_ENULL if fit is NULL; FRICREG_EINVAL if no levels are set, there are
+ *  fewer levels than free parameters, no parameter is free, a start is outside its bounds, a
+ *  fixed K0 = 0 leaves a measured acceleration beyond the backbone's reach (the message names
+ *  the level), or the best fit ends at a bound (the message names the parameter and the bound:
+ *  fix it there, or widen the bound); FRICREG_ESINGULAR if the Jacobian at the fit is
+ *  rank deficient (smallest over largest singular value below 1e-12: the message names the
+ *  combination the levels do not determine); FRICREG_EWORK if no start converged within 500
+ *  iterations; FRICREG_ENOMEM. Since 1.9. */
+FRICREG_API int fricreg_fit_run(fricreg_fit *fit);
+
+/** Copy the fitted parameters (the fixed ones as fixed).
+ *
+ *  np           must be FRICREG_FIT_NPARAMS.
+ *  p[np]        out: the parameters, indexed by enum fricreg_fit_param.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if fit or p is NULL; FRICREG_ESIZE if np is not
+ *  FRICREG_FIT_NPARAMS; FRICREG_EINVAL if no run has succeeded since the last setter.
+ *  Since 1.9. */
+FRICREG_API int fricreg_fit_get_params(const fricreg_fit *fit, size_t np, double p[]);
+
+/** Copy the fitted parameters' covariance (row major, symmetric; a fixed parameter's row and
+ *  column are 0) and their 95 % intervals.
+ *
+ *  np              must be FRICREG_FIT_NPARAMS.
+ *  cov[np np]      out, or NULL: cov[i np + j] the covariance of parameters i and j, in their
+ *                  units' product (the delta method through dp/dtheta).
+ *  lower[np], upper[np]  out, or NULL (both or neither): the 95 % intervals (a fixed
+ *                  parameter's is its value twice).
+ *
+ *  Returns as fricreg_fit_get_params; FRICREG_ENULL also if only one of lower and upper is
+ *  NULL. Since 1.9. */
+FRICREG_API int fricreg_fit_get_covariance(const fricreg_fit *fit, size_t np, double cov[],
+                                           double lower[], double upper[]);
+
+/** Copy the identifiability: the singular values of the Jacobian in the transformed free
+ *  parameters (theta; log-scaled for a bound on one side) and their right singular vectors,
+ *  largest first.
+ *
+ *  np              must be FRICREG_FIT_NPARAMS.
+ *  sv[np]          out: the p singular values first (p = FRICREG_FIT_NFREE), then zeros.
+ *  vectors[np np]  out, or NULL: row k the k-th right singular vector over all parameters
+ *                  (0 on fixed ones; rows past p all 0): the combination of the thetas that
+ *                  sv[k] determines; a small sv[k] is a poorly determined combination.
+ *
+ *  Returns as fricreg_fit_get_params; FRICREG_ENULL also if sv is NULL. Since 1.9. */
+FRICREG_API int fricreg_fit_get_identifiability(const fricreg_fit *fit, size_t np, double sv[],
+                                                double vectors[]);
+
+/** Copy the levels' weighted residuals at the fit, (model - measured)/sd (sd the measured
+ *  value without deviations), in the order the levels were set.
+ *
+ *  n            must equal the levels' count.
+ *  r_freq[n]    out: the frequencies' residuals.
+ *  r_zeta[n]    out: the damping ratios' residuals.
+ *
+ *  Returns as fricreg_fit_get_params (FRICREG_ESIZE if n differs from the levels' count);
+ *  FRICREG_ENULL also if r_freq or r_zeta is NULL. Since 1.9. */
+FRICREG_API int fricreg_fit_get_residuals(const fricreg_fit *fit, size_t n, double r_freq[],
+                                          double r_zeta[]);
+
+/** Read one number of the fit: a value of enum fricreg_fit_value (counts as doubles).
+ *
+ *  Returns as fricreg_fit_get_params; FRICREG_ENULL also if value is NULL; FRICREG_EINVAL if
+ *  which is unknown. Since 1.9. */
+FRICREG_API int fricreg_fit_get_value(const fricreg_fit *fit, int which, double *value);
+
+/** The model's backbone at amplitudes of a kind, with its exact sensitivities: for any
+ *  parameters (the fit is not needed, only its sensor).
+ *
+ *  p[FRICREG_FIT_NPARAMS]  the parameters, in their ranges (as fricreg_fit_set_fixed).
+ *  kind              a value of enum fricreg_fit_amplitude.
+ *  n                 number of amplitudes, >= 1.
+ *  amplitude[n]      > 0, finite, as in fricreg_fit_set_levels.
+ *  freq_hz[n]        out: the natural frequencies, Hz.
+ *  zeta[n]           out: the damping ratios.
+ *  modal[n]          out, or NULL: the modal amplitudes a.
+ *  dfreq_dp[n np]    out, or NULL: dfreq_hz[i]/dp[j] at i np + j (np = FRICREG_FIT_NPARAMS),
+ *                    the amplitude held (a moves with p as its equation says).
+ *  dzeta_dp[n np]    out, or NULL: dzeta[i]/dp[j], laid out as dfreq_dp.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if fit, p, amplitude, freq_hz or zeta is NULL;
+ *  FRICREG_EINVAL if kind is unknown, n is 0, a parameter is out of its range or an amplitude
+ *  <= 0 or beyond the backbone's reach (an acceleration with K0 = 0); FRICREG_ENONFINITE if an
+ *  input is NaN or infinite. On failure nothing is written. Since 1.9. */
+FRICREG_API int fricreg_fit_eval(fricreg_fit *fit, const double p[], int kind, size_t n,
+                                 const double amplitude[], double freq_hz[], double zeta[],
+                                 double modal[], double dfreq_dp[], double dzeta_dp[]);
+
+/** The fitted backbone at amplitudes of the levels' kind, with its standard deviations by the
+ *  delta method (g^T cov g, g the sensitivities of fricreg_fit_eval): the 95 % band is
+ *  value +- 1.96 sd (or Student's t, as the intervals).
+ *
+ *  n               number of amplitudes, >= 1.
+ *  amplitude[n]    > 0, finite.
+ *  freq_hz[n], zeta[n]   out: the fitted backbone.
+ *  sd_freq_hz[n], sd_zeta[n]  out, or NULL (both or neither): their standard deviations.
+ *
+ *  Returns as fricreg_fit_get_params and fricreg_fit_eval. Since 1.9. */
+FRICREG_API int fricreg_fit_curve(fricreg_fit *fit, size_t n, const double amplitude[],
+                                  double freq_hz[], double zeta[], double sd_freq_hz[],
+                                  double sd_zeta[]);
+
+/** The quantile the 95 % intervals and bands take: 1.96 with deviations given, else Student's
+ *  t at 0.975 with 2n - p degrees of freedom. Returns FRICREG_OK; FRICREG_ENULL if fit or q is
+ *  NULL; FRICREG_EINVAL if no run has succeeded since the last setter. Since 1.9. */
+FRICREG_API int fricreg_fit_get_quantile(const fricreg_fit *fit, double *q);
+
+/** The last error's status, FRICREG_OK if none (or fit is NULL). Since 1.9. */
+FRICREG_API int fricreg_fit_errcode(const fricreg_fit *fit);
+
+/** The last error's message, "" if none; for NULL, "NULL fit". Owned by the fit, valid until
+ *  its next call. Since 1.9. */
+FRICREG_API const char *fricreg_fit_errmsg(const fricreg_fit *fit);
+
+/** Copy the last error's message into buf[len], truncated and NUL-terminated; returns its
+ *  length (as snprintf), or 0 and writes nothing if buf is NULL or len is 0. Since 1.9. */
+FRICREG_API size_t fricreg_fit_errmsg_copy(const fricreg_fit *fit, char *buf, size_t len);
+
+/** \} */
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,171 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* fit_run.c — fricreg_fit_run: GSL's trust-region Levenberg-Marquardt (gsl_multifit_nlinear,
+ * the exact Jacobian of residuals.c) from each start; the best converged solution reported
+ * (fit_stats.c). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gsl/gsl_blas.h>
+#include <gsl/gsl_multifit_nlinear.h>
+
+#include "base/gsl_mem.h"
+#include "fit_stats.h"
+#include "params.h"
+#include "starts.h"
+
+#define MAX_ITER 500
+#define XTOL 1e-10
+#define GTOL 1e-12
+#define STATIONARY_GTOL 1e-8 /* a start no step improves: a solution if this stationary */
+#define BAD_RESIDUAL 1e100   /* where the model cannot be evaluated: a step GSL rejects */
+
+struct run {
+    struct fr_fit_problem pb;
+    gsl_vector *r;  /* scratch for the Jacobian's evaluation */
+    int failed;     /* an evaluation since the last init failed */
+};
+
+static int residual_cb(const gsl_vector *x, void *params, gsl_vector *f)
+{
+    struct run *run = params;
+    if (fr_fit_residuals(&run->pb, gsl_vector_const_ptr(x, 0), f, NULL) != 0) {
+        gsl_vector_set_all(f, BAD_RESIDUAL);
+        run->failed = 1;
+    }
+    return GSL_SUCCESS;
+}
+
+static int jacobian_cb(const gsl_vector *x, void *params, gsl_matrix *J)
+{
+    struct run *run = params;
+    if (fr_fit_residuals(&run->pb, gsl_vector_const_ptr(x, 0), run->r, J) != 0) {
+        gsl_matrix_set_zero(J);
+        run->failed = 1;
+    }
+    return GSL_SUCCESS;
+}
+
+/* max_k |g_k| max(|x_k|, 1), the gradient GSL's test scales. */
+static double scaled_gradient(const gsl_multifit_nlinear_workspace *w)
+{
+    double g = 0.0;
+    for (size_t k = 0; k < w->x->size; k++)
+        g = fmax(g, fabs(gsl_vector_get(w->g, k)) * fmax(fabs(gsl_vector_get(w->x, k)), 1.0));
+    return g;
+}
+
+/* Iterates from the initialized point; 1 if it converged, 0 if not (GSL's driver's loop, but a
+ * start no step can improve is a solution where its gradient vanishes). */
+static int iterate(gsl_multifit_nlinear_workspace *w, size_t *iters)
+{
+    int status = GSL_CONTINUE, info;
+    size_t iter = 0;
+    while (status == GSL_CONTINUE && iter < MAX_ITER) {
+        status = gsl_multifit_nlinear_iterate(w);
+        if (status == GSL_ENOPROG && iter == 0) {
+            double phi = 0.5 * gsl_blas_dnrm2(w->f) * gsl_blas_dnrm2(w->f);
+            *iters = 0;
+            return scaled_gradient(w) <= STATIONARY_GTOL * fmax(phi, 1.0);
+        }
+        iter++;
+        status = gsl_multifit_nlinear_test(XTOL, GTOL, 0.0, &info, w);
+    }
+    *iters = iter;
+    return status == GSL_SUCCESS || status == GSL_ETOLF || status == GSL_ETOLX ||
+           status == GSL_ETOLG;
+}
+
+/* The checks a run makes before it solves. */
+static int check_problem(fricreg_fit *fit, const struct fr_fit_problem *pb)
+{
+    if (fit->n == 0)
+        return fr_fail(fit, FRICREG_EINVAL, "run: no levels are set");
+    if (pb->nfree == 0)
+        return fr_fail(fit, FRICREG_EINVAL, "run: no parameter is free");
+    if (fit->n < pb->nfree)
+        return fr_fail(fit, FRICREG_EINVAL, "run: %zu levels for %zu free parameters: at least "
+                       "as many levels as free parameters are needed", fit->n, pb->nfree);
+    if (!fit->has_sd && 2 * fit->n == pb->nfree)
+        return fr_fail(fit, FRICREG_EINVAL, "run: %zu levels leave no degree of freedom for "
+                       "the residual variance: give the deviations", fit->n);
+    return FRICREG_OK;
+}
+
+/* The best converged start's theta into best (its start in best0); returns how many
+ * converged, or (size_t)-1 if out of memory. */
+static size_t solve_starts(fricreg_fit *fit, struct run *run, double best[], double best0[])
+{
+    size_t m = run->pb.nfree, rows = 2 * fit->n, converged = 0;
+    gsl_multifit_nlinear_fdf fdf = {residual_cb, jacobian_cb, NULL, rows, m, run, 0, 0, 0};
+    gsl_multifit_nlinear_parameters params = gsl_multifit_nlinear_default_parameters();
+    gsl_vector *x = fr_gsl_vector_new(m);
+    run->r = fr_gsl_vector_new(rows);
+    gsl_multifit_nlinear_workspace *w =
+        x && run->r ? gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &params, rows, m)
+                    : NULL;
+    double best_cost = INFINITY;
+    struct fr_fit_result *res = &fit->result;
+    res->nfev = res->njev = 0;
+    for (size_t s = 0; w != NULL && s < fit->nstarts; s++) {
+        fr_fit_start(&run->pb, s, gsl_vector_ptr(x, 0));
+        run->failed = 0;
+        gsl_multifit_nlinear_init(x, &fdf, w);
+        size_t iters = 0;
+        int ok = !run->failed && iterate(w, &iters);
+        double cost = gsl_blas_dnrm2(w->f);
+        res->nfev += fdf.nevalf;
+        res->njev += fdf.nevaldf;
+        if (!ok || !(cost < BAD_RESIDUAL))
+            continue;
+        converged++;
+        if (cost < best_cost) {
+            best_cost = cost;
+            memcpy(best, gsl_vector_const_ptr(w->x, 0), m * sizeof *best);
+            memcpy(best0, gsl_vector_const_ptr(x, 0), m * sizeof *best0);
+            res->iterations = iters;
+            res->best_start = s;
+        }
+    }
+    int nomem = w == NULL;
+    if (w != NULL)
+        gsl_multifit_nlinear_free(w);
+    free(x);
+    free(run->r);
+    return nomem ? (size_t)-1 : converged;
+}
+
+int fricreg_fit_run(fricreg_fit *fit)
+{
+    if (fit == NULL)
+        return FRICREG_ENULL;
+    fit->have_fit = 0;
+    struct run run;
+    fr_fit_problem_init(&run.pb, fit);
+    int st = check_problem(fit, &run.pb);
+    if (st != FRICREG_OK)
+        return st;
+    double best[FR_FIT_NP], best0[FR_FIT_NP];
+    size_t converged = solve_starts(fit, &run, best, best0);
+    if (converged == (size_t)-1)
+        return fr_fail(fit, FRICREG_ENOMEM, "run: out of memory for the least-squares workspace");
+    if (converged == 0 && run.pb.unreachable)
+        return fr_fail(fit, FRICREG_EINVAL, "run: level %zu (amplitude %g) is beyond the "
+                       "backbone's reach (K0 = 0 with accelerations): no start converged",
+                       run.pb.bad_level, fit->amp[run.pb.bad_level]);
+    if (converged == 0)
+        return fr_fail(fit, FRICREG_EWORK, "run: none of %zu starts converged within %d "
+                       "iterations", fit->nstarts, MAX_ITER);
+    size_t nfev = fit->result.nfev, njev = fit->result.njev;
+    size_t iters = fit->result.iterations, start = fit->result.best_start;
+    st = fr_fit_finish(&run.pb, best, best0);
+    if (st != FRICREG_OK)
+        return st;
+    fit->result.nfev = nfev;
+    fit->result.njev = njev;
+    fit->result.iterations = iters;
+    fit->result.best_start = start;
+    fit->result.converged = converged;
+    fit->have_fit = 1;
+    return FRICREG_OK;
+}

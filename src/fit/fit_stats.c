@@ -1,0 +1,154 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* fit_stats.c — what a fit reports at its solution (fit_stats.h): the covariance from the
+ * singular value decomposition of the Jacobian in theta, J = U S V^T, as V S^-2 V^T (scaled by
+ * the residual variance without deviations), mapped to the parameters by dp/dtheta; the 95 %
+ * intervals in theta mapped back; the identifiability as S and V. */
+#include <math.h>
+#include <stdlib.h>
+
+#include <stdio.h>
+
+#include <gsl/gsl_blas.h>
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_linalg.h>
+
+#include "base/gsl_mem.h"
+#include "fit_stats.h"
+#include "params.h"
+
+#define RANK_RTOL 1e-12     /* smallest over largest singular value: rank deficient below */
+#define AT_BOUND_RTOL 1e-6  /* a bound this much closer than from the first start: reached */
+
+/* FRICREG_EINVAL if a free parameter ended at one of its bounds: its distance to the bound
+ * shrank below AT_BOUND_RTOL of the first start's (the data push it past the bound). */
+static int check_bounds(struct fr_fit_problem *pb, const double p[], const double p0[])
+{
+    for (size_t k = 0; k < pb->nfree; k++) {
+        int j = pb->idx[k];
+        const struct fr_fit_param *q = &pb->fit->par[j];
+        int low = isfinite(q->lo) && p[j] - q->lo <= AT_BOUND_RTOL * (p0[j] - q->lo);
+        int high = isfinite(q->hi) && q->hi - p[j] <= AT_BOUND_RTOL * (q->hi - p0[j]);
+        if (low || high)
+            return fr_fail(pb->fit, FRICREG_EINVAL,
+                           "run: %s ended at its %s bound %g: the levels push it beyond; fix "
+                           "it there or widen the bound (no fit is reported)",
+                           fr_fit_param_name(j), low ? "lower" : "upper", low ? q->lo : q->hi);
+    }
+    return FRICREG_OK;
+}
+
+/* The message of a rank-deficient Jacobian: the combination of its last singular vector. */
+static int rank_deficient(struct fr_fit_problem *pb, const gsl_matrix *V, double ratio)
+{
+    size_t last = pb->nfree - 1;
+    char combo[160] = "";
+    size_t used = 0;
+    for (size_t k = 0; k < pb->nfree && used < sizeof combo - 24; k++) {
+        double c = gsl_matrix_get(V, k, last);
+        if (fabs(c) >= 0.1)
+            used += (size_t)snprintf(combo + used, sizeof combo - used, " %+.2f %s", c,
+                                     fr_fit_param_name(pb->idx[k]));
+    }
+    return fr_fail(pb->fit, FRICREG_ESINGULAR,
+                   "run: the levels do not determine the parameters (singular value ratio "
+                   "%.1e): the combination%s of their thetas is free; fix one of them",
+                   ratio, combo);
+}
+
+/* The covariance and intervals from V and S (theta's covariance scaled by `scale`). */
+static void covariance(struct fr_fit_problem *pb, const double theta[], const gsl_matrix *V,
+                       const gsl_vector *S, double scale, struct fr_fit_result *res)
+{
+    size_t m = pb->nfree;
+    double p[FR_FIT_NP], dp[FR_FIT_NP], ct[FR_FIT_NP * FR_FIT_NP] = {0};
+    fr_fit_params_at(pb, theta, p, dp);
+    for (size_t a = 0; a < m; a++)
+        for (size_t b = 0; b < m; b++)
+            for (size_t k = 0; k < m; k++) {
+                double s = gsl_vector_get(S, k);
+                ct[a * m + b] += scale * gsl_matrix_get(V, a, k) * gsl_matrix_get(V, b, k) / (s * s);
+            }
+    for (int j = 0; j < FR_FIT_NP; j++) {
+        res->p[j] = res->lower[j] = res->upper[j] = p[j];
+        for (int i = 0; i < FR_FIT_NP; i++)
+            res->cov[j * FR_FIT_NP + i] = 0.0;
+    }
+    for (size_t a = 0; a < m; a++) {
+        int ja = pb->idx[a];
+        for (size_t b = 0; b < m; b++)
+            res->cov[ja * FR_FIT_NP + pb->idx[b]] = dp[a] * dp[b] * ct[a * m + b];
+        const struct fr_fit_param *q = &pb->fit->par[ja];
+        double half = res->quantile * sqrt(ct[a * m + a]), d;
+        double x = fr_fit_from_theta(theta[a] - half, q->lo, q->hi, &d);
+        double y = fr_fit_from_theta(theta[a] + half, q->lo, q->hi, &d);
+        res->lower[ja] = fmin(x, y);
+        res->upper[ja] = fmax(x, y);
+    }
+}
+
+static void identifiability(struct fr_fit_problem *pb, const gsl_matrix *V, const gsl_vector *S,
+                            struct fr_fit_result *res)
+{
+    for (int k = 0; k < FR_FIT_NP; k++) {
+        res->sv[k] = (size_t)k < pb->nfree ? gsl_vector_get(S, (size_t)k) : 0.0;
+        for (int j = 0; j < FR_FIT_NP; j++)
+            res->vectors[k * FR_FIT_NP + j] = 0.0;
+    }
+    for (size_t k = 0; k < pb->nfree; k++)
+        for (size_t a = 0; a < pb->nfree; a++)
+            res->vectors[k * FR_FIT_NP + pb->idx[a]] = gsl_matrix_get(V, a, k);
+}
+
+/* Everything past the residuals and the Jacobian (in J) at theta. */
+static int report(struct fr_fit_problem *pb, const double theta[], const double theta0[],
+                  const gsl_vector *r, gsl_matrix *J, gsl_matrix *V, gsl_vector *S,
+                  gsl_vector *work)
+{
+    fricreg_fit *fit = pb->fit;
+    struct fr_fit_result res = {0};
+    double p[FR_FIT_NP], p0[FR_FIT_NP], dp[FR_FIT_NP];
+    fr_fit_params_at(pb, theta, p, dp);
+    fr_fit_params_at(pb, theta0, p0, dp);
+    int st = check_bounds(pb, p, p0);
+    if (st != FRICREG_OK)
+        return st;
+    size_t m = pb->nfree, dof = 2 * fit->n - m;
+    gsl_linalg_SV_decomp(J, V, S, work); /* 2n >= m, checked by the run: no GSL error */
+    double ratio = gsl_vector_get(S, m - 1) / gsl_vector_get(S, 0);
+    if (!(ratio > RANK_RTOL))
+        return rank_deficient(pb, V, ratio);
+    gsl_blas_ddot(r, r, &res.cost);
+    res.variance = dof > 0 ? res.cost / (double)dof : 0.0;
+    res.condition = 1.0 / ratio;
+    res.nfree = m;
+    res.quantile = fit->has_sd ? gsl_cdf_ugaussian_Pinv(0.975) : gsl_cdf_tdist_Pinv(0.975, (double)dof);
+    covariance(pb, theta, V, S, fit->has_sd ? 1.0 : res.variance, &res);
+    identifiability(pb, V, S, &res);
+    for (size_t i = 0; i < fit->n; i++) {
+        fit->res_freq[i] = gsl_vector_get(r, i);
+        fit->res_zeta[i] = gsl_vector_get(r, fit->n + i);
+    }
+    fit->result = res;
+    return FRICREG_OK;
+}
+
+int fr_fit_finish(struct fr_fit_problem *pb, const double theta[], const double theta0[])
+{
+    size_t rows = 2 * pb->fit->n, m = pb->nfree;
+    gsl_vector *r = fr_gsl_vector_new(rows), *S = fr_gsl_vector_new(m);
+    gsl_vector *work = fr_gsl_vector_new(m);
+    gsl_matrix *J = fr_gsl_matrix_new(rows, m), *V = fr_gsl_matrix_new(m, m);
+    int st;
+    if (!r || !S || !work || !J || !V)
+        st = fr_fail(pb->fit, FRICREG_ENOMEM, "run: out of memory for the fit's statistics");
+    else if (fr_fit_residuals(pb, theta, r, J) != 0)
+        st = fr_fail(pb->fit, FRICREG_EINVAL, "run: the model cannot be evaluated at the fit");
+    else
+        st = report(pb, theta, theta0, r, J, V, S, work);
+    free(r);
+    free(S);
+    free(work);
+    free(J);
+    free(V);
+    return st;
+}

@@ -1,0 +1,35 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* residuals.h — a fit's weighted residuals and their exact Jacobian in the transformed free
+ * parameters theta (fricreg_fit.h, "The fit"), as GSL's least squares and the statistics
+ * read them. */
+#ifndef FRICREG_FIT_RESIDUALS_H
+#define FRICREG_FIT_RESIDUALS_H
+
+#include <gsl/gsl_matrix.h>
+#include <gsl/gsl_vector.h>
+
+#include "fit_internal.h"
+
+/* The free parameters of a run: which they are and their bounds, from the fit's settings. */
+struct fr_fit_problem {
+    fricreg_fit *fit;
+    int idx[FR_FIT_NP]; /* the k-th free parameter is idx[k] */
+    size_t nfree;
+    size_t bad_level;   /* the last level out of reach, where unreachable */
+    int unreachable;
+};
+
+/* The free parameters of fit, in the order of enum fricreg_fit_param. */
+void fr_fit_problem_init(struct fr_fit_problem *pb, fricreg_fit *fit);
+
+/* Every parameter p[FR_FIT_NP] at theta[nfree] (the fixed as fixed), and dp/dtheta[nfree]. */
+void fr_fit_params_at(const struct fr_fit_problem *pb, const double theta[], double p[],
+                      double dp_dtheta[]);
+
+/* The residuals r[2n] (the frequencies' n, then the damping ratios') and, where J is not NULL,
+ * J[2n x nfree] = dr/dtheta, at theta. Returns 0, or -1 where the model cannot be evaluated
+ * (a parameter out of range, or a level out of reach: pb->unreachable, pb->bad_level). */
+int fr_fit_residuals(struct fr_fit_problem *pb, const double theta[], gsl_vector *r,
+                     gsl_matrix *J);
+
+#endif
