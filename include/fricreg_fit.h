@@ -90,12 +90,12 @@ typedef struct fricreg_fit fricreg_fit;
 /** The modal Iwan model's parameters: indices into every parameter array of this header
  *  (length FRICREG_FIT_NPARAMS). Values are fixed forever. Since 1.9. */
 enum fricreg_fit_param {
-    FRICREG_FIT_FS = 0,    /**< F_S, the joint's macroslip force (modal force), > 0 */
-    FRICREG_FIT_KT = 1,    /**< K_T, the joint's stiffness before any slip (1/s^2), > 0 */
-    FRICREG_FIT_CHI = 2,   /**< chi, the exponent of the slip-force density, > -1 */
-    FRICREG_FIT_BETA = 3,  /**< beta, the weight of the density's delta at phi_max, >= 0 */
-    FRICREG_FIT_ZETA0 = 4, /**< zeta0, the linear modal damping ratio, >= 0 */
-    FRICREG_FIT_K0 = 5,    /**< K0, the linear modal stiffness beside the joint (1/s^2), >= 0 */
+    FRICREG_FIT_FS = 0,     /**< F_S, the joint's macroslip force (modal force), > 0 */
+    FRICREG_FIT_KT = 1,     /**< K_T, the joint's stiffness before any slip (1/s^2), > 0 */
+    FRICREG_FIT_CHI = 2,    /**< chi, the exponent of the slip-force density, > -1 */
+    FRICREG_FIT_BETA = 3,   /**< beta, the weight of the density's delta at phi_max, >= 0 */
+    FRICREG_FIT_ZETA0 = 4,  /**< zeta0, the linear modal damping ratio, >= 0 */
+    FRICREG_FIT_K0 = 5,     /**< K0, the linear modal stiffness beside the joint (1/s^2), >= 0 */
     FRICREG_FIT_NPARAMS = 6 /**< the number of parameters */
 };
 
@@ -109,15 +109,15 @@ enum fricreg_fit_amplitude {
 
 /** The numbers of a fit that fricreg_fit_get_value reads. Values are fixed forever. Since 1.9. */
 enum fricreg_fit_value {
-    FRICREG_FIT_COST = 0,          /**< r^T r at the fit (chi-square with deviations given) */
+    FRICREG_FIT_COST = 0,              /**< r^T r at the fit (chi-square with deviations given) */
     FRICREG_FIT_RESIDUAL_VARIANCE = 1, /**< r^T r/(2n - p); 0 where 2n = p */
-    FRICREG_FIT_NFEV = 2,          /**< residual evaluations, over every start */
-    FRICREG_FIT_NJEV = 3,          /**< Jacobian evaluations, over every start */
-    FRICREG_FIT_ITERATIONS = 4,    /**< iterations of the start that gave the fit */
-    FRICREG_FIT_BEST_START = 5,    /**< which start gave the fit (0: the first) */
-    FRICREG_FIT_STARTS_CONVERGED = 6, /**< how many starts converged */
-    FRICREG_FIT_NFREE = 7,         /**< the number of free parameters p */
-    FRICREG_FIT_CONDITION = 8      /**< largest over smallest singular value of the Jacobian */
+    FRICREG_FIT_NFEV = 2,              /**< residual evaluations, over every start */
+    FRICREG_FIT_NJEV = 3,              /**< Jacobian evaluations, over every start */
+    FRICREG_FIT_ITERATIONS = 4,        /**< iterations of the start that gave the fit */
+    FRICREG_FIT_BEST_START = 5,        /**< which start gave the fit (0: the first) */
+    FRICREG_FIT_STARTS_CONVERGED = 6,  /**< how many starts converged */
+    FRICREG_FIT_NFREE = 7,             /**< the number of free parameters p */
+    FRICREG_FIT_CONDITION = 8          /**< largest over smallest singular value of the Jacobian */
 };
 
 /** Create a fit of the modal Iwan model, with no levels.
@@ -209,10 +209,11 @@ FRICREG_API int fricreg_fit_set_starts(fricreg_fit *fit, size_t nstarts);
  *
  *  Returns FRICREG_OK, the fit then readable by the getters below; else nothing is reported as
  *  a fit, and: FRICREG_ENULL if fit is NULL; FRICREG_EINVAL if no levels are set, there are
- *  fewer levels than free parameters, no parameter is free, a start is outside its bounds, a
+ *  fewer levels than free parameters, no parameter is free, a
  *  fixed K0 = 0 leaves a measured acceleration beyond the backbone's reach (the message names
- *  the level), or the best fit ends at a bound (the message names the parameter and the bound:
- *  fix it there, or widen the bound); FRICREG_ESINGULAR if the Jacobian at the fit is
+ *  the level), no degree of freedom is left for the residual variance (2n = p without
+ *  deviations), or the best fit ends at a bound (the message names the parameter and the
+ *  bound: fix it there, or widen the bound); FRICREG_ESINGULAR if the Jacobian at the fit is
  *  rank deficient (smallest over largest singular value below 1e-12: the message names the
  *  combination the levels do not determine); FRICREG_EWORK if no start converged within 500
  *  iterations; FRICREG_ENOMEM. Since 1.9. */
@@ -237,8 +238,9 @@ FRICREG_API int fricreg_fit_get_params(const fricreg_fit *fit, size_t np, double
  *  lower[np], upper[np]  out, or NULL (both or neither): the 95 % intervals (a fixed
  *                  parameter's is its value twice).
  *
- *  Returns as fricreg_fit_get_params; FRICREG_ENULL also if only one of lower and upper is
- *  NULL. Since 1.9. */
+ *  Returns FRICREG_OK; FRICREG_ENULL if fit is NULL or only one of lower and upper is;
+ *  FRICREG_ESIZE if np is not FRICREG_FIT_NPARAMS; FRICREG_EINVAL if no run has succeeded
+ *  since the last setter. Since 1.9. */
 FRICREG_API int fricreg_fit_get_covariance(const fricreg_fit *fit, size_t np, double cov[],
                                            double lower[], double upper[]);
 
@@ -252,7 +254,9 @@ FRICREG_API int fricreg_fit_get_covariance(const fricreg_fit *fit, size_t np, do
  *                  (0 on fixed ones; rows past p all 0): the combination of the thetas that
  *                  sv[k] determines; a small sv[k] is a poorly determined combination.
  *
- *  Returns as fricreg_fit_get_params; FRICREG_ENULL also if sv is NULL. Since 1.9. */
+ *  Returns FRICREG_OK; FRICREG_ENULL if fit or sv is NULL; FRICREG_ESIZE if np is not
+ *  FRICREG_FIT_NPARAMS; FRICREG_EINVAL if no run has succeeded since the last setter.
+ *  Since 1.9. */
 FRICREG_API int fricreg_fit_get_identifiability(const fricreg_fit *fit, size_t np, double sv[],
                                                 double vectors[]);
 
@@ -263,15 +267,16 @@ FRICREG_API int fricreg_fit_get_identifiability(const fricreg_fit *fit, size_t n
  *  r_freq[n]    out: the frequencies' residuals.
  *  r_zeta[n]    out: the damping ratios' residuals.
  *
- *  Returns as fricreg_fit_get_params (FRICREG_ESIZE if n differs from the levels' count);
- *  FRICREG_ENULL also if r_freq or r_zeta is NULL. Since 1.9. */
+ *  Returns FRICREG_OK; FRICREG_ENULL if fit, r_freq or r_zeta is NULL; FRICREG_EINVAL if no
+ *  run has succeeded since the last setter; FRICREG_ESIZE if n differs from the levels'
+ *  count. Since 1.9. */
 FRICREG_API int fricreg_fit_get_residuals(const fricreg_fit *fit, size_t n, double r_freq[],
                                           double r_zeta[]);
 
 /** Read one number of the fit: a value of enum fricreg_fit_value (counts as doubles).
  *
- *  Returns as fricreg_fit_get_params; FRICREG_ENULL also if value is NULL; FRICREG_EINVAL if
- *  which is unknown. Since 1.9. */
+ *  Returns FRICREG_OK; FRICREG_ENULL if fit or value is NULL; FRICREG_EINVAL if no run has
+ *  succeeded since the last setter or which is unknown. Since 1.9. */
 FRICREG_API int fricreg_fit_get_value(const fricreg_fit *fit, int which, double *value);
 
 /** The model's backbone at amplitudes of a kind, with its exact sensitivities: for any
@@ -291,7 +296,7 @@ FRICREG_API int fricreg_fit_get_value(const fricreg_fit *fit, int which, double 
  *  Returns FRICREG_OK; FRICREG_ENULL if fit, p, amplitude, freq_hz or zeta is NULL;
  *  FRICREG_EINVAL if kind is unknown, n is 0, a parameter is out of its range or an amplitude
  *  <= 0 or beyond the backbone's reach (an acceleration with K0 = 0); FRICREG_ENONFINITE if an
- *  input is NaN or infinite. On failure nothing is written. Since 1.9. */
+ *  input is NaN or infinite; FRICREG_ENOMEM. On failure nothing is written. Since 1.9. */
 FRICREG_API int fricreg_fit_eval(fricreg_fit *fit, const double p[], int kind, size_t n,
                                  const double amplitude[], double freq_hz[], double zeta[],
                                  double modal[], double dfreq_dp[], double dzeta_dp[]);
@@ -305,7 +310,10 @@ FRICREG_API int fricreg_fit_eval(fricreg_fit *fit, const double p[], int kind, s
  *  freq_hz[n], zeta[n]   out: the fitted backbone.
  *  sd_freq_hz[n], sd_zeta[n]  out, or NULL (both or neither): their standard deviations.
  *
- *  Returns as fricreg_fit_get_params and fricreg_fit_eval. Since 1.9. */
+ *  Returns FRICREG_OK; FRICREG_ENULL if fit, amplitude, freq_hz or zeta is NULL, or only one
+ *  of sd_freq_hz and sd_zeta is; FRICREG_EINVAL if no run has succeeded since the last setter,
+ *  n is 0, or an amplitude is <= 0 or beyond the fitted backbone's reach; FRICREG_ENONFINITE if
+ *  an amplitude is NaN or infinite; FRICREG_ENOMEM. On failure nothing is written. Since 1.9. */
 FRICREG_API int fricreg_fit_curve(fricreg_fit *fit, size_t n, const double amplitude[],
                                   double freq_hz[], double zeta[], double sd_freq_hz[],
                                   double sd_zeta[]);
@@ -315,7 +323,8 @@ FRICREG_API int fricreg_fit_curve(fricreg_fit *fit, size_t n, const double ampli
  *  NULL; FRICREG_EINVAL if no run has succeeded since the last setter. Since 1.9. */
 FRICREG_API int fricreg_fit_get_quantile(const fricreg_fit *fit, double *q);
 
-/** The last error's status, FRICREG_OK if none (or fit is NULL). Since 1.9. */
+/** The last error's status. Returns the fricreg_status code of the fit's last failed call,
+ *  FRICREG_OK if none (or fit is NULL). Since 1.9. */
 FRICREG_API int fricreg_fit_errcode(const fricreg_fit *fit);
 
 /** The last error's message, "" if none; for NULL, "NULL fit". Owned by the fit, valid until

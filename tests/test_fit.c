@@ -76,8 +76,9 @@ static void true_levels(fricreg_fit *fit, double A[], double f[], double z[])
     double pm = phi_max_of(truth);
     for (int i = 0; i < NL; i++)
         A[i] = SENSOR * pm * 0.03 * pow(50.0, i / 7.0) * pow(TWO_PI * 165.0, 2);
-    ck_assert_int_eq(fricreg_fit_eval(fit, truth, FRICREG_FIT_ACCELERATION, NL, A, f, z, NULL,
-                                      NULL, NULL), FRICREG_OK);
+    ck_assert_int_eq(fricreg_fit_eval(fit, truth, FRICREG_FIT_ACCELERATION, NL, A, f, z, NULL, NULL,
+                                      NULL),
+                     FRICREG_OK);
 }
 
 /* Every parameter free, started 10x off (chi + 1 by 10). */
@@ -85,7 +86,8 @@ static void free_10x_off(fricreg_fit *fit)
 {
     const double factor[NP] = {10.0, 0.1, 10.0, 10.0, 0.1, 10.0};
     for (int j = 0; j < NP; j++) {
-        double start = j == FRICREG_FIT_CHI ? factor[j] * (truth[j] + 1.0) - 1.0 : truth[j] * factor[j];
+        double start = j == FRICREG_FIT_CHI ? factor[j] * (truth[j] + 1.0) - 1.0
+                                            : truth[j] * factor[j];
         double lower = j == FRICREG_FIT_CHI ? -1.0 : 0.0;
         ck_assert_int_eq(fricreg_fit_set_free(fit, j, start, lower, INFINITY), FRICREG_OK);
     }
@@ -142,8 +144,10 @@ START_TEST(test_sensitivities_central_differences)
                 big_z = fmax(big_z, fabs(dz[i * NP + j]));
             }
             for (int i = 0; i < NL; i++) {
-                ck_assert_double_eq_tol((fp[i] - fm[i]) / (2.0 * h), df[i * NP + j], 1e-6 * big_f + 1e-300);
-                ck_assert_double_eq_tol((zp[i] - zm[i]) / (2.0 * h), dz[i * NP + j], 1e-6 * big_z + 1e-300);
+                ck_assert_double_eq_tol((fp[i] - fm[i]) / (2.0 * h), df[i * NP + j],
+                                        1e-6 * big_f + 1e-300);
+                ck_assert_double_eq_tol((zp[i] - zm[i]) / (2.0 * h), dz[i * NP + j],
+                                        1e-6 * big_z + 1e-300);
             }
         }
     }
@@ -243,7 +247,8 @@ START_TEST(test_relative_residuals)
     ck_assert_int_eq(fricreg_fit_run(fit), FRICREG_OK);
     ck_assert_int_eq(fricreg_fit_get_covariance(fit, NP, cov_abs, NULL, NULL), FRICREG_OK);
     for (int k = 0; k < NP * NP; k++)
-        ck_assert_double_eq_tol(cov_rel[k], var * cov_abs[k], 1e-6 * fabs(var * cov_abs[k]) + 1e-300);
+        ck_assert_double_eq_tol(cov_rel[k], var * cov_abs[k],
+                                1e-6 * fabs(var * cov_abs[k]) + 1e-300);
     fricreg_fit_free(fit);
 }
 END_TEST
@@ -294,7 +299,8 @@ START_TEST(test_bad_input)
         out[i] = keep[i] = 2.385 + i;
     memcpy(p, truth, sizeof p);
     p[FRICREG_FIT_CHI] = -1.5;
-    ck_assert_int_eq(fricreg_fit_eval(fit, p, 0, NL, A, out, out, NULL, NULL, NULL), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_fit_eval(fit, p, 0, NL, A, out, out, NULL, NULL, NULL),
+                     FRICREG_EINVAL);
     p[FRICREG_FIT_CHI] = NAN;
     ck_assert_int_eq(fricreg_fit_eval(fit, p, 0, NL, A, out, out, NULL, NULL, NULL),
                      FRICREG_ENONFINITE);
@@ -360,7 +366,8 @@ START_TEST(test_fit_failures)
     memcpy(p0, truth, sizeof p0);
     p0[FRICREG_FIT_BETA] = 0.0;
     ck_assert_int_eq(fricreg_fit_eval(fit, p0, FRICREG_FIT_ACCELERATION, NL, A, f, z, NULL, NULL,
-                                      NULL), FRICREG_OK);
+                                      NULL),
+                     FRICREG_OK);
     ck_assert_int_eq(fricreg_fit_set_levels(fit, NL, FRICREG_FIT_ACCELERATION, A, f, z), 0);
     ck_assert_int_eq(fricreg_fit_set_starts(fit, 8), FRICREG_OK);
     ck_assert_int_eq(fricreg_fit_run(fit), FRICREG_EINVAL);
@@ -375,7 +382,8 @@ START_TEST(test_fit_failures)
     for (int i = 0; i < NL; i++)
         same[i] = A[4];
     ck_assert_int_eq(fricreg_fit_eval(fit, truth, FRICREG_FIT_ACCELERATION, NL, same, f, z, NULL,
-                                      NULL, NULL), FRICREG_OK);
+                                      NULL, NULL),
+                     FRICREG_OK);
     ck_assert_int_eq(fricreg_fit_set_levels(fit, NL, FRICREG_FIT_ACCELERATION, same, f, z), 0);
     for (int j = 0; j < NP; j++)
         if (j == FRICREG_FIT_CHI || j == FRICREG_FIT_BETA || j == FRICREG_FIT_ZETA0)
@@ -387,7 +395,8 @@ START_TEST(test_fit_failures)
     memcpy(p0, truth, sizeof p0);
     p0[FRICREG_FIT_K0] = 0.0;
     ck_assert_int_eq(fricreg_fit_eval(fit, p0, FRICREG_FIT_ACCELERATION, 1, &far, &ff, &zf, NULL,
-                                      NULL, NULL), FRICREG_EINVAL);
+                                      NULL, NULL),
+                     FRICREG_EINVAL);
     ck_assert_ptr_nonnull(strstr(fricreg_fit_errmsg(fit), "reach"));
     fricreg_fit_free(fit);
 }
@@ -410,7 +419,8 @@ START_TEST(test_curve_band)
     ck_assert_int_eq(fricreg_fit_curve(fit, NL, A, cf, cz, bf, bz), FRICREG_OK);
     ck_assert_int_eq(fricreg_fit_get_params(fit, NP, p), FRICREG_OK);
     ck_assert_int_eq(fricreg_fit_get_covariance(fit, NP, cov, NULL, NULL), FRICREG_OK);
-    ck_assert_int_eq(fricreg_fit_eval(fit, p, FRICREG_FIT_ACCELERATION, NL, A, sf, sz, NULL, df, dz),
+    ck_assert_int_eq(fricreg_fit_eval(fit, p, FRICREG_FIT_ACCELERATION, NL, A, sf, sz, NULL, df,
+                                      dz),
                      FRICREG_OK);
     double r_f[NL], r_z[NL];
     ck_assert_int_eq(fricreg_fit_get_residuals(fit, NL, r_f, r_z), FRICREG_OK);
@@ -422,8 +432,8 @@ START_TEST(test_curve_band)
         ck_assert_double_eq(cf[i], sf[i]);
         ck_assert_double_eq(cz[i], sz[i]);
         ck_assert_double_eq_tol(bf[i], sqrt(vf), 1e-12 * sqrt(vf));
-        ck_assert_double_eq_tol(r_f[i], (cf[i] - f[i]) / (5e-4 * f[i] / (1.0 + 4e-4 * sin(2.1 * i))),
-                                1e-9);
+        ck_assert_double_eq_tol(r_f[i],
+                                (cf[i] - f[i]) / (5e-4 * f[i] / (1.0 + 4e-4 * sin(2.1 * i))), 1e-9);
     }
     fricreg_fit_free(fit);
 }

@@ -42,8 +42,14 @@ static inline fr_dual fr_dual_lin(double a, fr_dual x, double b, fr_dual y)
     return z;
 }
 
-static inline fr_dual fr_dual_add(fr_dual x, fr_dual y) { return fr_dual_lin(1.0, x, 1.0, y); }
-static inline fr_dual fr_dual_sub(fr_dual x, fr_dual y) { return fr_dual_lin(1.0, x, -1.0, y); }
+static inline fr_dual fr_dual_add(fr_dual x, fr_dual y)
+{
+    return fr_dual_lin(1.0, x, 1.0, y);
+}
+static inline fr_dual fr_dual_sub(fr_dual x, fr_dual y)
+{
+    return fr_dual_lin(1.0, x, -1.0, y);
+}
 
 static inline fr_dual fr_dual_add_c(fr_dual x, double c)
 {
@@ -79,7 +85,10 @@ static inline fr_dual fr_dual_chain(fr_dual x, double f, double df)
     return z;
 }
 
-static inline fr_dual fr_dual_log(fr_dual x) { return fr_dual_chain(x, log(x.v), 1.0 / x.v); }
+static inline fr_dual fr_dual_log(fr_dual x)
+{
+    return fr_dual_chain(x, log(x.v), 1.0 / x.v);
+}
 
 static inline fr_dual fr_dual_sqrt(fr_dual x)
 {

@@ -54,8 +54,7 @@ static int check_positive(fricreg_fit *fit, const char *who, const char *what, s
         if (!isfinite(x[i]))
             return fr_fail(fit, FRICREG_ENONFINITE, "%s: %s[%zu] is not finite", who, what, i);
         if (!(x[i] > 0.0))
-            return fr_fail(fit, FRICREG_EINVAL, "%s: %s[%zu] = %g is not > 0", who, what, i,
-                           x[i]);
+            return fr_fail(fit, FRICREG_EINVAL, "%s: %s[%zu] = %g is not > 0", who, what, i, x[i]);
     }
     return FRICREG_OK;
 }
@@ -68,8 +67,7 @@ int fricreg_fit_set_levels(fricreg_fit *fit, size_t n, int kind, const double am
     if (amplitude == NULL || freq_hz == NULL || zeta == NULL)
         return fr_fail(fit, FRICREG_ENULL, "set_levels: amplitude, freq_hz or zeta is NULL");
     if (n == 0 || n > MAX_LEVELS)
-        return fr_fail(fit, FRICREG_EINVAL, "set_levels: n = %zu levels, not 1..%d", n,
-                       MAX_LEVELS);
+        return fr_fail(fit, FRICREG_EINVAL, "set_levels: n = %zu levels, not 1..%d", n, MAX_LEVELS);
     if (kind < FRICREG_FIT_DISPLACEMENT || kind > FRICREG_FIT_ACCELERATION)
         return fr_fail(fit, FRICREG_EINVAL, "set_levels: unknown amplitude kind %d", kind);
     int st = check_positive(fit, "set_levels", "amplitude", n, amplitude);
@@ -109,11 +107,12 @@ int fricreg_fit_set_deviations(fricreg_fit *fit, size_t n, const double sd_freq_
     if (fit == NULL)
         return FRICREG_ENULL;
     if ((sd_freq_hz == NULL) != (sd_zeta == NULL))
-        return fr_fail(fit, FRICREG_ENULL, "set_deviations: only one of sd_freq_hz, sd_zeta "
-                                           "is NULL");
+        return fr_fail(fit, FRICREG_ENULL,
+                       "set_deviations: only one of sd_freq_hz, sd_zeta "
+                       "is NULL");
     if (n != fit->n)
-        return fr_fail(fit, FRICREG_ESIZE, "set_deviations: n = %zu, but %zu levels are set",
-                       n, fit->n);
+        return fr_fail(fit, FRICREG_ESIZE, "set_deviations: n = %zu, but %zu levels are set", n,
+                       fit->n);
     if (sd_freq_hz != NULL) {
         int st = check_positive(fit, "set_deviations", "sd_freq_hz", n, sd_freq_hz);
         if (st == FRICREG_OK)
@@ -159,8 +158,10 @@ int fricreg_fit_set_free(fricreg_fit *fit, int which, double start, double lower
     if (isnan(lower) || isnan(upper))
         return fr_fail(fit, FRICREG_ENONFINITE, "set_free: a bound of %s is NaN", name);
     if (lower < fr_fit_param_floor(which) || !(upper > lower))
-        return fr_fail(fit, FRICREG_EINVAL, "set_free: bounds [%g, %g] of %s: lower must be "
-                       ">= %g and upper > lower", lower, upper, name, fr_fit_param_floor(which));
+        return fr_fail(fit, FRICREG_EINVAL,
+                       "set_free: bounds [%g, %g] of %s: lower must be "
+                       ">= %g and upper > lower",
+                       lower, upper, name, fr_fit_param_floor(which));
     if (!isnan(start) && !(start > lower && start < upper && isfinite(start)))
         return fr_fail(fit, FRICREG_EINVAL, "set_free: start %g of %s is not inside (%g, %g)",
                        start, name, lower, upper);
@@ -180,7 +181,7 @@ int fricreg_fit_set_fixed(fricreg_fit *fit, int which, double value)
         return fr_fail(fit, FRICREG_ENONFINITE, "set_fixed: %s is not finite",
                        fr_fit_param_name(which));
     if (!fr_fit_param_in_range(which, value))
-        return fr_fail(fit, FRICREG_EINVAL, "set_fixed: %s = %g is out of its range", 
+        return fr_fail(fit, FRICREG_EINVAL, "set_fixed: %s = %g is out of its range",
                        fr_fit_param_name(which), value);
     fit->par[which] = (struct fr_fit_param){0, value, fr_fit_param_floor(which), INFINITY};
     fit->have_fit = 0;

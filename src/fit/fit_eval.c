@@ -33,8 +33,10 @@ static int levels(fricreg_fit *fit, const char *who, const double p[], int kind,
     for (size_t i = 0; i < n; i++)
         if (fr_modal_iwan_level(p, kind, fit->sensor, amp[i], fit->brent, &m[i]) != 0) {
             free(m);
-            return fr_fail(fit, FRICREG_EINVAL, "%s: amplitude[%zu] = %g is beyond the "
-                           "backbone's reach (K0 = 0 with accelerations)", who, i, amp[i]);
+            return fr_fail(fit, FRICREG_EINVAL,
+                           "%s: amplitude[%zu] = %g is beyond the "
+                           "backbone's reach (K0 = 0 with accelerations)",
+                           who, i, amp[i]);
         }
     *out = m;
     return FRICREG_OK;
@@ -52,8 +54,7 @@ int fricreg_fit_eval(fricreg_fit *fit, const double p[], int kind, size_t n,
         return fr_fail(fit, FRICREG_EINVAL, "eval: unknown amplitude kind %d", kind);
     for (int j = 0; j < FR_FIT_NP; j++) {
         if (!isfinite(p[j]))
-            return fr_fail(fit, FRICREG_ENONFINITE, "eval: %s is not finite",
-                           fr_fit_param_name(j));
+            return fr_fail(fit, FRICREG_ENONFINITE, "eval: %s is not finite", fr_fit_param_name(j));
         if (!fr_fit_param_in_range(j, p[j]))
             return fr_fail(fit, FRICREG_EINVAL, "eval: %s = %g is out of its range",
                            fr_fit_param_name(j), p[j]);
@@ -100,8 +101,9 @@ int fricreg_fit_curve(fricreg_fit *fit, size_t n, const double amplitude[], doub
     if ((sd_freq_hz == NULL) != (sd_zeta == NULL))
         return fr_fail(fit, FRICREG_ENULL, "curve: only one of sd_freq_hz, sd_zeta is NULL");
     if (!fit->have_fit)
-        return fr_fail(fit, FRICREG_EINVAL, "curve: no fit (no run has succeeded since the "
-                                            "last setter)");
+        return fr_fail(fit, FRICREG_EINVAL,
+                       "curve: no fit (no run has succeeded since the "
+                       "last setter)");
     struct fr_level_model *m;
     int st = check_amplitudes(fit, "curve", n, amplitude);
     if (st == FRICREG_OK)

@@ -31,8 +31,8 @@ struct fr_fit_result {
 
 struct fricreg_fit {
     struct fr_error err;
-    size_t n;               /* levels */
-    int kind;               /* enum fricreg_fit_amplitude */
+    size_t n;                    /* levels */
+    int kind;                    /* enum fricreg_fit_amplitude */
     double *amp, *freq, *zeta;   /* the levels, n each, in one block with the next four */
     double *sd_freq, *sd_zeta;   /* their deviations where has_sd */
     double *res_freq, *res_zeta; /* the fit's weighted residuals */

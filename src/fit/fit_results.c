@@ -9,8 +9,10 @@ static int check_fit(const fricreg_fit *cfit, const char *who, size_t np)
 {
     fricreg_fit *fit = (fricreg_fit *)cfit; /* the error record only: logically const */
     if (!fit->have_fit)
-        return fr_fail(fit, FRICREG_EINVAL, "%s: no fit (no run has succeeded since the last "
-                                            "setter)", who);
+        return fr_fail(fit, FRICREG_EINVAL,
+                       "%s: no fit (no run has succeeded since the last "
+                       "setter)",
+                       who);
     if (np != FR_FIT_NP)
         return fr_fail(fit, FRICREG_ESIZE, "%s: np = %zu, not FRICREG_FIT_NPARAMS = %d", who, np,
                        FR_FIT_NP);
@@ -79,8 +81,10 @@ int fricreg_fit_get_residuals(const fricreg_fit *fit, size_t n, double r_freq[],
     if (st != FRICREG_OK)
         return st;
     if (n != fit->n)
-        return fr_fail((fricreg_fit *)fit, FRICREG_ESIZE, "get_residuals: n = %zu, but %zu "
-                       "levels are set", n, fit->n);
+        return fr_fail((fricreg_fit *)fit, FRICREG_ESIZE,
+                       "get_residuals: n = %zu, but %zu "
+                       "levels are set",
+                       n, fit->n);
     memcpy(r_freq, fit->res_freq, n * sizeof *r_freq);
     memcpy(r_zeta, fit->res_zeta, n * sizeof *r_zeta);
     return FRICREG_OK;

@@ -22,8 +22,8 @@
 
 struct run {
     struct fr_fit_problem pb;
-    gsl_vector *r;  /* scratch for the Jacobian's evaluation */
-    int failed;     /* an evaluation since the last init failed */
+    gsl_vector *r; /* scratch for the Jacobian's evaluation */
+    int failed;    /* an evaluation since the last init failed */
 };
 
 static int residual_cb(const gsl_vector *x, void *params, gsl_vector *f)
@@ -84,11 +84,15 @@ static int check_problem(fricreg_fit *fit, const struct fr_fit_problem *pb)
     if (pb->nfree == 0)
         return fr_fail(fit, FRICREG_EINVAL, "run: no parameter is free");
     if (fit->n < pb->nfree)
-        return fr_fail(fit, FRICREG_EINVAL, "run: %zu levels for %zu free parameters: at least "
-                       "as many levels as free parameters are needed", fit->n, pb->nfree);
+        return fr_fail(fit, FRICREG_EINVAL,
+                       "run: %zu levels for %zu free parameters: at least "
+                       "as many levels as free parameters are needed",
+                       fit->n, pb->nfree);
     if (!fit->has_sd && 2 * fit->n == pb->nfree)
-        return fr_fail(fit, FRICREG_EINVAL, "run: %zu levels leave no degree of freedom for "
-                       "the residual variance: give the deviations", fit->n);
+        return fr_fail(fit, FRICREG_EINVAL,
+                       "run: %zu levels leave no degree of freedom for "
+                       "the residual variance: give the deviations",
+                       fit->n);
     return FRICREG_OK;
 }
 
@@ -101,9 +105,10 @@ static size_t solve_starts(fricreg_fit *fit, struct run *run, double best[], dou
     gsl_multifit_nlinear_parameters params = gsl_multifit_nlinear_default_parameters();
     gsl_vector *x = fr_gsl_vector_new(m);
     run->r = fr_gsl_vector_new(rows);
-    gsl_multifit_nlinear_workspace *w =
-        x && run->r ? gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &params, rows, m)
-                    : NULL;
+    gsl_multifit_nlinear_workspace *w = x && run->r
+                                            ? gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust,
+                                                                         &params, rows, m)
+                                            : NULL;
     double best_cost = INFINITY;
     struct fr_fit_result *res = &fit->result;
     res->nfev = res->njev = 0;
@@ -150,12 +155,15 @@ int fricreg_fit_run(fricreg_fit *fit)
     if (converged == (size_t)-1)
         return fr_fail(fit, FRICREG_ENOMEM, "run: out of memory for the least-squares workspace");
     if (converged == 0 && run.pb.unreachable)
-        return fr_fail(fit, FRICREG_EINVAL, "run: level %zu (amplitude %g) is beyond the "
+        return fr_fail(fit, FRICREG_EINVAL,
+                       "run: level %zu (amplitude %g) is beyond the "
                        "backbone's reach (K0 = 0 with accelerations): no start converged",
                        run.pb.bad_level, fit->amp[run.pb.bad_level]);
     if (converged == 0)
-        return fr_fail(fit, FRICREG_EWORK, "run: none of %zu starts converged within %d "
-                       "iterations", fit->nstarts, MAX_ITER);
+        return fr_fail(fit, FRICREG_EWORK,
+                       "run: none of %zu starts converged within %d "
+                       "iterations",
+                       fit->nstarts, MAX_ITER);
     size_t nfev = fit->result.nfev, njev = fit->result.njev;
     size_t iters = fit->result.iterations, start = fit->result.best_start;
     st = fr_fit_finish(&run.pb, best, best0);

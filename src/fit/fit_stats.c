@@ -16,8 +16,8 @@
 #include "fit_stats.h"
 #include "params.h"
 
-#define RANK_RTOL 1e-12     /* smallest over largest singular value: rank deficient below */
-#define AT_BOUND_RTOL 1e-6  /* a bound this much closer than from the first start: reached */
+#define RANK_RTOL 1e-12    /* smallest over largest singular value: rank deficient below */
+#define AT_BOUND_RTOL 1e-6 /* a bound this much closer than from the first start: reached */
 
 /* FRICREG_EINVAL if a free parameter ended at one of its bounds: its distance to the bound
  * shrank below AT_BOUND_RTOL of the first start's (the data push it past the bound). */
@@ -66,7 +66,8 @@ static void covariance(struct fr_fit_problem *pb, const double theta[], const gs
         for (size_t b = 0; b < m; b++)
             for (size_t k = 0; k < m; k++) {
                 double s = gsl_vector_get(S, k);
-                ct[a * m + b] += scale * gsl_matrix_get(V, a, k) * gsl_matrix_get(V, b, k) / (s * s);
+                ct[a * m + b] += scale * gsl_matrix_get(V, a, k) * gsl_matrix_get(V, b, k) /
+                                 (s * s);
             }
     for (int j = 0; j < FR_FIT_NP; j++) {
         res->p[j] = res->lower[j] = res->upper[j] = p[j];
@@ -121,7 +122,8 @@ static int report(struct fr_fit_problem *pb, const double theta[], const double 
     res.variance = dof > 0 ? res.cost / (double)dof : 0.0;
     res.condition = 1.0 / ratio;
     res.nfree = m;
-    res.quantile = fit->has_sd ? gsl_cdf_ugaussian_Pinv(0.975) : gsl_cdf_tdist_Pinv(0.975, (double)dof);
+    res.quantile = fit->has_sd ? gsl_cdf_ugaussian_Pinv(0.975)
+                               : gsl_cdf_tdist_Pinv(0.975, (double)dof);
     covariance(pb, theta, V, S, fit->has_sd ? 1.0 : res.variance, &res);
     identifiability(pb, V, S, &res);
     for (size_t i = 0; i < fit->n; i++) {

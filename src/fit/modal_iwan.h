@@ -14,7 +14,7 @@ void fr_modal_iwan_backbone(const double p[], double a, fr_dual *omega, fr_dual 
 
 /* The model at one measured level. */
 struct fr_level_model {
-    double freq_hz, zeta, modal;                                    /* f (Hz), zeta, a */
+    double freq_hz, zeta, modal;                                   /* f (Hz), zeta, a */
     double dfreq[FRICREG_FIT_NPARAMS], dzeta[FRICREG_FIT_NPARAMS]; /* d/dp, the level held */
 };
 

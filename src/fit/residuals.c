@@ -28,8 +28,7 @@ void fr_fit_params_at(const struct fr_fit_problem *pb, const double theta[], dou
     }
 }
 
-int fr_fit_residuals(struct fr_fit_problem *pb, const double theta[], gsl_vector *r,
-                     gsl_matrix *J)
+int fr_fit_residuals(struct fr_fit_problem *pb, const double theta[], gsl_vector *r, gsl_matrix *J)
 {
     const fricreg_fit *fit = pb->fit;
     double p[FR_FIT_NP], dp[FR_FIT_NP];

@@ -15,7 +15,7 @@ struct fr_fit_problem {
     fricreg_fit *fit;
     int idx[FR_FIT_NP]; /* the k-th free parameter is idx[k] */
     size_t nfree;
-    size_t bad_level;   /* the last level out of reach, where unreachable */
+    size_t bad_level; /* the last level out of reach, where unreachable */
     int unreachable;
 };
 
@@ -29,7 +29,6 @@ void fr_fit_params_at(const struct fr_fit_problem *pb, const double theta[], dou
 /* The residuals r[2n] (the frequencies' n, then the damping ratios') and, where J is not NULL,
  * J[2n x nfree] = dr/dtheta, at theta. Returns 0, or -1 where the model cannot be evaluated
  * (a parameter out of range, or a level out of reach: pb->unreachable, pb->bad_level). */
-int fr_fit_residuals(struct fr_fit_problem *pb, const double theta[], gsl_vector *r,
-                     gsl_matrix *J);
+int fr_fit_residuals(struct fr_fit_problem *pb, const double theta[], gsl_vector *r, gsl_matrix *J);
 
 #endif
