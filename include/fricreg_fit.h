@@ -52,7 +52,8 @@
  * p = lo + exp(theta) with a lower bound only (so a positive parameter is log-scaled),
  * hi - exp(theta) with an upper bound only, lo + (hi - lo)/(1 + exp(-theta)) with both, theta
  * with neither. GSL's trust-region Levenberg-Marquardt (gsl_multifit_nlinear, with the exact
- * Jacobian) runs from each start of a deterministic set (fricreg_fit_set_starts); the best
+ * Jacobian) runs from each start of a deterministic set (fricreg_fit_set_starts): the least
+ * squares has local minima where a level sits on phi_max's kink, so many starts; the best
  * converged one is the fit. Its covariance is the transformed one mapped by dp/dtheta (the
  * delta method); its 95 % intervals are theta's mapped back, so a log-scaled parameter's is
  * asymmetric and never crosses its bound. Identifiability: the singular values of the
@@ -125,7 +126,7 @@ enum fricreg_fit_value {
  *  Defaults: every parameter free, with the bounds of enum fricreg_fit_param (so each is
  *  log-scaled: F_S, K_T, zeta0 and K0 on (0, inf), chi + 1 and beta on (0, inf)) and a start
  *  made from the levels at the run (docs/identification.md, "Starts"); the sensor s = 1; no
- *  deviations (relative residuals); 8 starts.
+ *  deviations (relative residuals); 32 starts.
  *
  *  out  out: the new fit, released with fricreg_fit_free. Written only on success.
  *
@@ -198,8 +199,9 @@ FRICREG_API int fricreg_fit_set_free(fricreg_fit *fit, int which, double start, 
  *  Since 1.9. */
 FRICREG_API int fricreg_fit_set_fixed(fricreg_fit *fit, int which, double value);
 
-/** Set the number of starts, 1..1000 (default 8): the first start, then starts moved from it
- *  in theta along a Halton sequence (docs/identification.md, "Starts").
+/** Set the number of starts, 1..1000 (default 32): the caller's start where given, then
+ *  starts about the one made from the levels, moved in theta along a Halton sequence
+ *  (docs/identification.md, "Starts").
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if fit is NULL; FRICREG_EINVAL if nstarts is 0 or above
  *  1000. Since 1.9. */

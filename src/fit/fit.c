@@ -11,7 +11,7 @@
 
 #define MAX_LEVELS 1000000
 #define MAX_STARTS 1000
-#define DEFAULT_STARTS 8
+#define DEFAULT_STARTS 32
 #define LEVEL_ARRAYS 7 /* amp, freq, zeta, sd_freq, sd_zeta, res_freq, res_zeta */
 
 FR_ERROR_GETTERS(fricreg_fit, "NULL fit")
