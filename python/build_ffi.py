@@ -19,7 +19,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 # The public headers the module compiles against, and the declarations it calls: one cdef
 # file per surface in cdef/, base.h first (the status codes every other one uses).
 HEADERS = ("fricreg.h", "fricreg_element.h", "fricreg_aft.h", "fricreg_hb.h",
-           "fricreg_structure.h")
+           "fricreg_structure.h", "fricreg_fit.h")
 CDEFS = ["base.h"] + sorted(name for name in os.listdir(os.path.join(HERE, "cdef"))
                             if name.endswith(".h") and name != "base.h")
 
