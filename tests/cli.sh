@@ -1603,5 +1603,39 @@ if [ "${FRICREG_CLI_FULL:-0}" = 1 ]; then
     fi
 fi
 
+# ---- fit: a joint's parameters from measured levels (fricreg_fit.h). The levels: a modal Iwan
+# joint's backbone (F_S 30, K_T 3e5, chi 0.3, beta 0.5, zeta0 0.002, K0 8.4e5; accelerations at
+# a sensor of shape 0.37; fricreg_fit_eval, 12 digits), noise-free, with the deviations of
+# tests/test_fit.c: the fit recovers every parameter to 1e-9 and each interval holds it.
+d=$tmp/fit
+mkdir -p "$d"
+printf '%s\n' "accel,freq_hz,zeta,sd_freq_hz,sd_zeta" \
+    "2,169.851961701,0.00223339284128,0.084926,2.23339e-05" \
+    "3.49735724318,169.767329853,0.00248373353687,0.0848837,2.48373e-05" \
+    "6.11575384321,169.591486138,0.00300507745189,0.0847957,3.00508e-05" \
+    "10.6944880005,169.224220423,0.00409919866067,0.0846121,4.0992e-05" \
+    "18.7012225354,168.448543153,0.00643358205117,0.0842243,6.43358e-05" \
+    "32.7024280452,166.768877709,0.0116005942518,0.0833844,0.000116006" \
+    "57.1860367968,162.487551061,0.0270901181635,0.0812438,0.000270901" \
+    "100,154.706618696,0.043470015913,0.0773533,0.0004347" >"$d/levels.csv"
+expect_output '"fs": \{"value": (29\.99999999|30\.00000000)[0-9]*, "lower": 29\.[0-9]*, "upper": 30\.[0-9]*, "free": true\}.*"chi": \{"value": 0\.2999999|0\.3000000' \
+    fit --levels "$d/levels.csv" --sensor 0.37
+expect_output '"beta": \{"value": 0\.5, "lower": 0\.5, "upper": 0\.5, "free": false\}' \
+    fit --levels "$d/levels.csv" --sensor 0.37 --fix beta=0.5 --start fs=20
+expect_usage_error "^fricreg-sim: --levels: missing$" fit --sensor 0.37
+expect_usage_error "^fricreg-sim: --fix: expected NAME=VALUE" fit --levels "$d/levels.csv" --fix mu=0.3
+expect_usage_error "^fricreg-sim: --start: a parameter also fixed" fit --levels "$d/levels.csv" --fix beta=0 --start beta=1
+expect_usage_error "^fricreg-sim: --sensor: must not be 0" fit --levels "$d/levels.csv" --sensor 0
+printf '%s\n' "1,170,0.002" "2,169,0.003,0.1" >"$d/ragged.csv"
+expect_usage_error "^fricreg-sim: --levels .*ragged.csv: line 2: 4 numbers: expected 3" fit --levels "$d/ragged.csv"
+printf '%s\n' "1,170,-0.002" "2,169,0.003" "3,168,0.004" "4,167,0.005" "5,166,0.006" "6,165,0.007" >"$d/negative.csv"
+expect_usage_error "^fricreg-sim: --levels: set_levels: zeta\[0\] = -0.002 is not > 0" fit --levels "$d/negative.csv"
+# Eight levels at one amplitude with three free parameters: exit 1, the library's reason.
+yes "57.1860367968,162.487551061,0.0270901181635,0.0812438,0.000270901" | head -n 8 >"$d/same.csv"
+expect "levels that do not determine the parameters exit 1 with the reason" \
+    '"$sim" fit --levels "$d/same.csv" --sensor 0.37 --fix chi=0.3 --fix beta=0.5 --fix zeta0=0.002 >"$d/out" 2>"$d/err"; [ $? -eq 1 ] && [ ! -s "$d/out" ] && grep -q "^fricreg-sim: fit: run: the levels do not determine the parameters" "$d/err"'
+expect "--curve writes 100 rows and a header" \
+    '"$sim" fit --levels "$d/levels.csv" --sensor 0.37 --curve "$d/curve.csv" >/dev/null 2>"$d/err" && [ "$(head -n 1 "$d/curve.csv")" = "amplitude,freq_hz,zeta,freq_lo,freq_hi,zeta_lo,zeta_hi" ] && [ "$(wc -l <"$d/curve.csv")" -eq 101 ]'
+
 echo "$((total - fails)) passed, $fails failed"
 [ $fails -eq 0 ]

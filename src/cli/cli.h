@@ -123,10 +123,10 @@ struct cli_command {
 };
 
 /* Each subcommand's, next to its table (options.c: oscillator, chain, twoblock and exact;
- * reproduce.c, structure.c, hb.c, nma.c, problems.c). */
+ * reproduce.c, structure.c, hb.c, nma.c, fit.c, problems.c). */
 extern const struct cli_command cli_oscillator_command, cli_chain_command, cli_twoblock_command,
     cli_exact_command, cli_reproduce_command, cli_structure_command, cli_hb_command,
-    cli_nma_command, cli_hold_command, cli_belt_command, cli_disk_command;
+    cli_nma_command, cli_fit_command, cli_hold_command, cli_belt_command, cli_disk_command;
 
 /* help.c: the subcommands in the order the help lists them, ending with NULL. */
 extern const struct cli_command *const cli_commands[];
@@ -269,6 +269,10 @@ int cli_reproduce_beyond(const char *dir);
 /* `fricreg-sim hb` (hb.c): the frequency response of a structure with Jenkins elements by
  * harmonic balance. Returns the exit status. */
 int cli_hb(int argc, char **argv, FILE *out);
+
+/* `fricreg-sim fit` (fit.c): a joint's parameters from a test's measured levels (fricreg_fit.h);
+ * the JSON summary on out. 0, CLI_EXIT_USAGE or CLI_EXIT_RUN (message printed). */
+int cli_fit(int argc, char **argv, FILE *out);
 
 /* `fricreg-sim nma` (nma.c): the backbone of a nonlinear mode of a structure with joint elements
  * by harmonic balance. Returns the exit status. */

@@ -15,6 +15,7 @@ const struct cli_command *const cli_commands[] = {&cli_oscillator_command, &cli_
                                                   &cli_twoblock_command,   &cli_exact_command,
                                                   &cli_reproduce_command,  &cli_structure_command,
                                                   &cli_hb_command,         &cli_nma_command,
+                                                  &cli_fit_command,
                                                   &cli_hold_command,       &cli_belt_command,
                                                   &cli_disk_command,       NULL};
 

@@ -88,6 +88,8 @@ static int dispatch(int argc, char **argv)
         return cli_hb(argc - 2, argv + 2, stdout);
     if (strcmp(argv[1], "nma") == 0)
         return cli_nma(argc - 2, argv + 2, stdout);
+    if (strcmp(argv[1], "fit") == 0)
+        return cli_fit(argc - 2, argv + 2, stdout);
     int problem = cli_problem(argv[1], argc - 2, argv + 2, stdout);
     if (problem >= 0)
         return problem;
