@@ -53,6 +53,9 @@ void dsygvd_(const int *itype, const char *jobz, const char *uplo, const int *n,
              int *iwork, const int *liwork, int *info, size_t jobz_len, size_t uplo_len);
 void dtpqrt_(const int *m, const int *n, const int *l, const int *nb, double *a, const int *lda,
              double *b, const int *ldb, double *t, const int *ldt, double *work, int *info);
+void dgesvd_(const char *jobu, const char *jobvt, const int *m, const int *n, double *a,
+             const int *lda, double *s, double *u, const int *ldu, double *vt, const int *ldvt,
+             double *work, const int *lwork, int *info, size_t jobu_len, size_t jobvt_len);
 void dgeev_(const char *jobvl, const char *jobvr, const int *n, double *a, const int *lda,
             double *wr, double *wi, double *vl, const int *ldvl, double *vr, const int *ldvr,
             double *work, const int *lwork, int *info, size_t jobvl_len, size_t jobvr_len);

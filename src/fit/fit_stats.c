@@ -1,18 +1,18 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* fit_stats.c — what a fit reports at its solution (fit_stats.h): the covariance from the
- * singular value decomposition of the Jacobian in theta, J = U S V^T, as V S^-2 V^T (scaled by
- * the residual variance without deviations), mapped to the parameters by dp/dtheta; the 95 %
- * intervals in theta mapped back; the identifiability as S and V. */
+ * singular value decomposition of the Jacobian in theta, J = U S V^T (LAPACK's dgesvd, its
+ * workspace on fricreg's memory: GSL's SV_decomp allocates unchecked inside), as V S^-2 V^T
+ * (scaled by the residual variance without deviations), mapped to the parameters by
+ * dp/dtheta; the 95 % intervals in theta mapped back; the identifiability as S and V. */
 #include <math.h>
-#include <stdlib.h>
-
 #include <stdio.h>
+#include <stdlib.h>
 
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_cdf.h>
-#include <gsl/gsl_linalg.h>
 
 #include "base/gsl_mem.h"
+#include "base/lapack.h"
 #include "fit_stats.h"
 #include "params.h"
 
@@ -38,13 +38,13 @@ static int check_bounds(struct fr_fit_problem *pb, const double p[], const doubl
 }
 
 /* The message of a rank-deficient Jacobian: the combination of its last singular vector. */
-static int rank_deficient(struct fr_fit_problem *pb, const gsl_matrix *V, double ratio)
+static int rank_deficient(struct fr_fit_problem *pb, const double V[], double ratio)
 {
-    size_t last = pb->nfree - 1;
+    size_t m = pb->nfree, last = m - 1;
     char combo[160] = "";
     size_t used = 0;
-    for (size_t k = 0; k < pb->nfree && used < sizeof combo - 24; k++) {
-        double c = gsl_matrix_get(V, k, last);
+    for (size_t k = 0; k < m && used < sizeof combo - 24; k++) {
+        double c = V[last * m + k];
         if (fabs(c) >= 0.1)
             used += (size_t)snprintf(combo + used, sizeof combo - used, " %+.2f %s", c,
                                      fr_fit_param_name(pb->idx[k]));
@@ -55,20 +55,35 @@ static int rank_deficient(struct fr_fit_problem *pb, const gsl_matrix *V, double
                    ratio, combo);
 }
 
+/* The singular values S[m] of J (rows x m, row major), largest first, and its right singular
+ * vectors, V[k m + a] the a-th entry of the k-th: LAPACK's SVD of J^T (column major, m x rows,
+ * the same memory), whose left vectors are J's right ones. J is overwritten. Returns 0, or -1
+ * out of memory, or LAPACK's info. */
+static int svd(gsl_matrix *J, double S[], double V[])
+{
+    int m = (int)J->size2, rows = (int)J->size1, one = 1, query = -1, info = 0;
+    double best = 0.0, vt;
+    dgesvd_("A", "N", &m, &rows, J->data, &m, S, V, &m, &vt, &one, &best, &query, &info, 1, 1);
+    int lwork = info == 0 ? (int)best : 5 * (m + rows);
+    double *work = malloc((size_t)lwork * sizeof *work);
+    if (work == NULL)
+        return -1;
+    dgesvd_("A", "N", &m, &rows, J->data, &m, S, V, &m, &vt, &one, work, &lwork, &info, 1, 1);
+    free(work);
+    return info;
+}
+
 /* The covariance and intervals from V and S (theta's covariance scaled by `scale`). */
-static void covariance(struct fr_fit_problem *pb, const double theta[], const gsl_matrix *V,
-                       const gsl_vector *S, double scale, struct fr_fit_result *res)
+static void covariance(struct fr_fit_problem *pb, const double theta[], const double V[],
+                       const double S[], double scale, struct fr_fit_result *res)
 {
     size_t m = pb->nfree;
     double p[FR_FIT_NP], dp[FR_FIT_NP], ct[FR_FIT_NP * FR_FIT_NP] = {0};
     fr_fit_params_at(pb, theta, p, dp);
     for (size_t a = 0; a < m; a++)
         for (size_t b = 0; b < m; b++)
-            for (size_t k = 0; k < m; k++) {
-                double s = gsl_vector_get(S, k);
-                ct[a * m + b] += scale * gsl_matrix_get(V, a, k) * gsl_matrix_get(V, b, k) /
-                                 (s * s);
-            }
+            for (size_t k = 0; k < m; k++)
+                ct[a * m + b] += scale * V[k * m + a] * V[k * m + b] / (S[k] * S[k]);
     for (int j = 0; j < FR_FIT_NP; j++) {
         res->p[j] = res->lower[j] = res->upper[j] = p[j];
         for (int i = 0; i < FR_FIT_NP; i++)
@@ -87,36 +102,38 @@ static void covariance(struct fr_fit_problem *pb, const double theta[], const gs
     }
 }
 
-static void identifiability(struct fr_fit_problem *pb, const gsl_matrix *V, const gsl_vector *S,
+static void identifiability(struct fr_fit_problem *pb, const double V[], const double S[],
                             struct fr_fit_result *res)
 {
+    size_t m = pb->nfree;
     for (int k = 0; k < FR_FIT_NP; k++) {
-        res->sv[k] = (size_t)k < pb->nfree ? gsl_vector_get(S, (size_t)k) : 0.0;
+        res->sv[k] = (size_t)k < m ? S[k] : 0.0;
         for (int j = 0; j < FR_FIT_NP; j++)
             res->vectors[k * FR_FIT_NP + j] = 0.0;
     }
-    for (size_t k = 0; k < pb->nfree; k++)
-        for (size_t a = 0; a < pb->nfree; a++)
-            res->vectors[k * FR_FIT_NP + pb->idx[a]] = gsl_matrix_get(V, a, k);
+    for (size_t k = 0; k < m; k++)
+        for (size_t a = 0; a < m; a++)
+            res->vectors[k * FR_FIT_NP + pb->idx[a]] = V[k * m + a];
 }
 
-/* Everything past the residuals and the Jacobian (in J) at theta. */
+/* Everything past the residuals and the Jacobian (in J, overwritten) at theta. */
 static int report(struct fr_fit_problem *pb, const double theta[], const double theta0[],
-                  const gsl_vector *r, gsl_matrix *J, gsl_matrix *V, gsl_vector *S,
-                  gsl_vector *work)
+                  const gsl_vector *r, gsl_matrix *J)
 {
     fricreg_fit *fit = pb->fit;
     struct fr_fit_result res = {0};
-    double p[FR_FIT_NP], p0[FR_FIT_NP], dp[FR_FIT_NP];
+    double p[FR_FIT_NP], p0[FR_FIT_NP], dp[FR_FIT_NP], S[FR_FIT_NP], V[FR_FIT_NP * FR_FIT_NP];
     fr_fit_params_at(pb, theta, p, dp);
     fr_fit_params_at(pb, theta0, p0, dp);
     int st = check_bounds(pb, p, p0);
     if (st != FRICREG_OK)
         return st;
     size_t m = pb->nfree, dof = 2 * fit->n - m;
-    gsl_linalg_SV_decomp(J, V, S, work); /* 2n >= m, checked by the run: no GSL error */
-    double ratio = gsl_vector_get(S, m - 1) / gsl_vector_get(S, 0);
-    if (!(ratio > RANK_RTOL))
+    int info = svd(J, S, V);
+    if (info < 0)
+        return fr_fail(fit, FRICREG_ENOMEM, "run: out of memory for the SVD's workspace");
+    double ratio = S[m - 1] / S[0];
+    if (info > 0 || !(ratio > RANK_RTOL))
         return rank_deficient(pb, V, ratio);
     gsl_blas_ddot(r, r, &res.cost);
     res.variance = dof > 0 ? res.cost / (double)dof : 0.0;
@@ -137,20 +154,16 @@ static int report(struct fr_fit_problem *pb, const double theta[], const double 
 int fr_fit_finish(struct fr_fit_problem *pb, const double theta[], const double theta0[])
 {
     size_t rows = 2 * pb->fit->n, m = pb->nfree;
-    gsl_vector *r = fr_gsl_vector_new(rows), *S = fr_gsl_vector_new(m);
-    gsl_vector *work = fr_gsl_vector_new(m);
-    gsl_matrix *J = fr_gsl_matrix_new(rows, m), *V = fr_gsl_matrix_new(m, m);
+    gsl_vector *r = fr_gsl_vector_new(rows);
+    gsl_matrix *J = fr_gsl_matrix_new(rows, m);
     int st;
-    if (!r || !S || !work || !J || !V)
+    if (!r || !J)
         st = fr_fail(pb->fit, FRICREG_ENOMEM, "run: out of memory for the fit's statistics");
     else if (fr_fit_residuals(pb, theta, r, J) != 0)
         st = fr_fail(pb->fit, FRICREG_EINVAL, "run: the model cannot be evaluated at the fit");
     else
-        st = report(pb, theta, theta0, r, J, V, S, work);
+        st = report(pb, theta, theta0, r, J);
     free(r);
-    free(S);
-    free(work);
     free(J);
-    free(V);
     return st;
 }
