@@ -81,9 +81,11 @@ static void covariance(struct fr_fit_problem *pb, const double theta[], const do
     double p[FR_FIT_NP], dp[FR_FIT_NP], ct[FR_FIT_NP * FR_FIT_NP] = {0};
     fr_fit_params_at(pb, theta, p, dp);
     for (size_t a = 0; a < m; a++)
-        for (size_t b = 0; b < m; b++)
+        for (size_t b = 0; b <= a; b++) { /* one triangle, mirrored: symmetric to the bit */
             for (size_t k = 0; k < m; k++)
                 ct[a * m + b] += scale * V[k * m + a] * V[k * m + b] / (S[k] * S[k]);
+            ct[b * m + a] = ct[a * m + b];
+        }
     for (int j = 0; j < FR_FIT_NP; j++) {
         res->p[j] = res->lower[j] = res->upper[j] = p[j];
         for (int i = 0; i < FR_FIT_NP; i++)

@@ -46,11 +46,17 @@ int fr_fit_residuals(struct fr_fit_problem *pb, const double theta[], gsl_vector
         }
         double sf = fit->has_sd ? fit->sd_freq[i] : fit->freq[i];
         double sz = fit->has_sd ? fit->sd_zeta[i] : fit->zeta[i];
-        gsl_vector_set(r, i, (m.freq_hz - fit->freq[i]) / sf);
-        gsl_vector_set(r, n + i, (m.zeta - fit->zeta[i]) / sz);
+        double rf = (m.freq_hz - fit->freq[i]) / sf, rz = (m.zeta - fit->zeta[i]) / sz;
+        if (!isfinite(rf) || !isfinite(rz)) /* parameters beyond what doubles hold */
+            return -1;
+        gsl_vector_set(r, i, rf);
+        gsl_vector_set(r, n + i, rz);
         for (size_t k = 0; J != NULL && k < pb->nfree; k++) {
-            gsl_matrix_set(J, i, k, m.dfreq[pb->idx[k]] * dp[k] / sf);
-            gsl_matrix_set(J, n + i, k, m.dzeta[pb->idx[k]] * dp[k] / sz);
+            double jf = m.dfreq[pb->idx[k]] * dp[k] / sf, jz = m.dzeta[pb->idx[k]] * dp[k] / sz;
+            if (!isfinite(jf) || !isfinite(jz))
+                return -1;
+            gsl_matrix_set(J, i, k, jf);
+            gsl_matrix_set(J, n + i, k, jz);
         }
     }
     return 0;

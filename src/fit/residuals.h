@@ -28,7 +28,8 @@ void fr_fit_params_at(const struct fr_fit_problem *pb, const double theta[], dou
 
 /* The residuals r[2n] (the frequencies' n, then the damping ratios') and, where J is not NULL,
  * J[2n x nfree] = dr/dtheta, at theta. Returns 0, or -1 where the model cannot be evaluated
- * (a parameter out of range, or a level out of reach: pb->unreachable, pb->bad_level). */
+ * (a parameter out of range, a residual or derivative not finite, or a level out of reach:
+ * pb->unreachable, pb->bad_level). */
 int fr_fit_residuals(struct fr_fit_problem *pb, const double theta[], gsl_vector *r, gsl_matrix *J);
 
 #endif
