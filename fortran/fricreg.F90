@@ -26,8 +26,8 @@
 !   - the idiomatic layer below: the types fricreg_context, fricreg_disk_context,
 !     fricreg_jenkins_elements, fricreg_iwan_elements, fricreg_element (an element type of
 !     fricreg_element.h: no C object behind it), fricreg_aft_workspace, fricreg_simulation,
-!     fricreg_exact_solution, fricreg_structure and fricreg_hb_driver (the last four with the
-!     drivers), their
+!     fricreg_exact_solution, fricreg_structure, fricreg_hb_driver and fricreg_backbone_fit (the
+!     last five with the drivers), their
 !     common parent fricreg_object, the generics law_eval, disk_eval, stribeck_eval and
 !     stribeck_disk_eval, and fricreg_error_string, fricreg_warning_string, fricreg_version_string,
 !     fricreg_law_string, fricreg_law_id, fricreg_disk_law_string, fricreg_disk_law_id,
@@ -56,7 +56,8 @@
 ! (modules fricreg_<file>_m): fricreg_base.F90 (fricreg_object, its error record, the string
 ! helpers), fricreg_laws.F90 (the law generics), fricreg_ctx.F90, fricreg_disk_ctx.F90,
 ! fricreg_jenkins.F90, fricreg_iwan.F90, fricreg_element.F90, fricreg_aft.F90 and, with the
-! drivers, fricreg_sim.F90, fricreg_exact.F90, fricreg_structure.F90 and fricreg_hb.F90. Callers use this module only:
+! drivers, fricreg_sim.F90, fricreg_exact.F90, fricreg_structure.F90, fricreg_hb.F90 and
+! fricreg_fit.F90. Callers use this module only:
 ! the names of those are not an interface, nor are fricreg_object's component ptr and its
 ! helper bindings (adopt, ready, fail, ...), public for the object modules alone.
 module fricreg
@@ -80,6 +81,7 @@ module fricreg
   use fricreg_exact_m
   use fricreg_structure_m
   use fricreg_hb_m
+  use fricreg_fit_m
 #endif
   implicit none
   private
@@ -104,7 +106,7 @@ module fricreg
   public :: fricreg_hb_monitor
   public :: fricreg_simulation, fricreg_exact_solution, fricreg_structure, &
             fricreg_integrator_string, fricreg_integrator_id
-  public :: fricreg_hb_driver
+  public :: fricreg_hb_driver, fricreg_backbone_fit
 #endif
 
 end module fricreg

@@ -11,13 +11,19 @@
 #define FRICREG_DOCDIR "/usr/local/share/doc/fricreg"
 #endif
 
-const struct cli_command *const cli_commands[] = {&cli_oscillator_command, &cli_chain_command,
-                                                  &cli_twoblock_command,   &cli_exact_command,
-                                                  &cli_reproduce_command,  &cli_structure_command,
-                                                  &cli_hb_command,         &cli_nma_command,
+const struct cli_command *const cli_commands[] = {&cli_oscillator_command,
+                                                  &cli_chain_command,
+                                                  &cli_twoblock_command,
+                                                  &cli_exact_command,
+                                                  &cli_reproduce_command,
+                                                  &cli_structure_command,
+                                                  &cli_hb_command,
+                                                  &cli_nma_command,
                                                   &cli_fit_command,
-                                                  &cli_hold_command,       &cli_belt_command,
-                                                  &cli_disk_command,       NULL};
+                                                  &cli_hold_command,
+                                                  &cli_belt_command,
+                                                  &cli_disk_command,
+                                                  NULL};
 
 const struct cli_command *cli_find_command(const char *name)
 {

@@ -27,9 +27,8 @@ static int in_range(int j, double v)
 static void check_fit(fricreg_fit *fit, int status)
 {
     double p[NP], cov[NP * NP], lo[NP], hi[NP], sv[NP];
-    FUZZ_REQUIRE(status == FRICREG_OK || status == FRICREG_EINVAL ||
-                     status == FRICREG_ENONFINITE || status == FRICREG_ESINGULAR ||
-                     status == FRICREG_EWORK,
+    FUZZ_REQUIRE(status == FRICREG_OK || status == FRICREG_EINVAL || status == FRICREG_ENONFINITE ||
+                     status == FRICREG_ESINGULAR || status == FRICREG_EWORK,
                  "run status %d", status);
     int got = fricreg_fit_get_params(fit, NP, p);
     if (status != FRICREG_OK) {
