@@ -10,6 +10,8 @@
 # and fricreg-sim's man page are installed and man renders the page. With the Python binding
 # built: the installed package imports from the prefix (and the moved prefix) with no
 # LD_LIBRARY_PATH, and python/setup.py builds it against the installed library (pkg-config).
+# With the MATLAB/Octave gateway built and octave-cli present: it runs from the prefix (and the
+# moved prefix) with no LD_LIBRARY_PATH.
 # Usage: install.sh BUILD_DIR SOURCE_DIR C_COMPILER FORTRAN_COMPILER|- [PYTHON|-]
 build=$1 src=$2 cc=$3 fc=$4 python=${5:--}
 work=$(mktemp -d "${TMPDIR:-/tmp}/fricreg-install.XXXXXX")
@@ -47,6 +49,20 @@ assert r.f[0] == 0.2 and fricreg.__file__.startswith("'"$1"'"), (r, fricreg.__fi
 }
 if [ "$python" != - ]; then
     check "installed Python package imports from its prefix" python_runs "$prefix"
+fi
+# 0b. The MATLAB/Octave gateway from the prefix alone (the .mex's RPATH, $ORIGIN-relative),
+#     where it was built (FRICREG_OCTAVE) and octave-cli is there: the same Jenkins element.
+octave=$(cd "$prefix" && find . -name fricreg_mex.mex | head -n 1)
+octave=${octave#./}
+command -v octave-cli >/dev/null 2>&1 || octave=
+octave_runs() { # PREFIX
+    dir=$1/$(dirname "$octave")
+    (cd "$work" && env -u LD_LIBRARY_PATH octave-cli --no-gui --norc --eval "
+addpath('$dir'); f = fricreg_element_eval('jenkins', [2 0.5], 0.1);
+assert(f == 0.2 && strncmp(which('fricreg_mex'), '$dir', numel('$dir')))")
+}
+if [ -n "$octave" ]; then
+    check "installed Octave gateway runs from its prefix" octave_runs "$prefix"
 fi
 export LD_LIBRARY_PATH="$libdir${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 
@@ -186,7 +202,7 @@ elif [ "$python" != - ]; then
 fi
 
 # 5. The prefix moved elsewhere: fricreg-sim still runs, on the moved library (relative RPATH).
-if [ -x "$prefix/bin/fricreg-sim" ] || [ "$python" != - ]; then
+if [ -x "$prefix/bin/fricreg-sim" ] || [ "$python" != - ] || [ -n "$octave" ]; then
     check "move the prefix" mv "$prefix" "$work/moved"
 fi
 if [ -x "$work/moved/bin/fricreg-sim" ]; then
@@ -194,6 +210,9 @@ if [ -x "$work/moved/bin/fricreg-sim" ]; then
 fi
 if [ "$python" != - ]; then
     check "installed Python package imports from a moved prefix" python_runs "$work/moved"
+fi
+if [ -n "$octave" ]; then
+    check "installed Octave gateway runs from a moved prefix" octave_runs "$work/moved"
 fi
 echo "$passes passed, $fails failed"
 [ $fails -eq 0 ]

@@ -25,11 +25,12 @@ rm -rf "$reports" && mkdir -p "$reports"
 log=$work/log
 # Without the warning gate: GCC's flow warnings (-Wmaybe-uninitialized) are unreliable under the
 # sanitizers' instrumentation (GCC's manual, -fsanitize=address); the plain builds hold the gate.
-# No Python binding: an instrumented library cannot be loaded into an uninstrumented python3.
+# No Python binding nor Octave gateway: an instrumented library cannot be loaded into an
+# uninstrumented python3 or octave-cli.
 # shellcheck disable=SC2086 # $fortran is two words or one, on purpose
 cmake -S "$src" -B "$work/tree" -DCMAKE_C_COMPILER="$cc" $fortran -DFRICREG_SANITIZE_TREE=ON -DFRICREG_PETSC=OFF \
       -DFRICREG_QUICK_LONG_CASES=ON \
-      -DFRICREG_PYTHON=OFF -DFRICREG_AVX2=OFF -DFRICREG_WERROR=OFF \
+      -DFRICREG_PYTHON=OFF -DFRICREG_OCTAVE=OFF -DFRICREG_AVX2=OFF -DFRICREG_WERROR=OFF \
       -DCMAKE_C_FLAGS="$flags" -DCMAKE_Fortran_FLAGS="$flags" \
       -DCMAKE_EXE_LINKER_FLAGS="$flags" -DCMAKE_SHARED_LINKER_FLAGS="$flags" >"$log" 2>&1 &&
     cmake --build "$work/tree" -j2 >>"$log" 2>&1

@@ -1,8 +1,9 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Every tracked source file names its licence in an SPDX line: C (.c, .h), Fortran (.f90, .F90,
-# .f, .F), CMake (CMakeLists.txt, .cmake), shell scripts (.sh or a #! first line) and .in
-# templates, within their first 3 lines; a script on the line right after its shebang.
+# .f, .F), CMake (CMakeLists.txt, .cmake), MATLAB/Octave (.m), shell scripts (.sh or a #!
+# first line) and .in templates, within their first 3 lines; a script on the line right after
+# its shebang.
 # Markdown, LICENSE, the ABI baseline and data files are not checked.
 # One awk reads the first lines of every file (thousands, the fuzz corpora among them): a
 # process or two per file took a minute.
@@ -37,7 +38,7 @@ list | while IFS= read -r file; do [ -f "$file" ] && printf '%s\n' "$file"; done
     if (!found) fail(file)
 }
 function is_source(f) {
-    return f ~ /\.(c|h|f90|F90|f|F|cmake|in|sh)$/ || f ~ /(^|\/)CMakeLists\.txt$/
+    return f ~ /\.(c|h|f90|F90|f|F|cmake|in|sh|m)$/ || f ~ /(^|\/)CMakeLists\.txt$/
 }
 function fail(f) { printf "FAIL: no '\''%s'\'' line: %s\n", tag, f; fails++ }
 END {
