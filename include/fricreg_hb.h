@@ -879,6 +879,98 @@ FRICREG_API size_t fricreg_hb_nma_points(const fricreg_hb *hb);
 FRICREG_API int fricreg_hb_nma_point(fricreg_hb *hb, size_t i, double *amplitude, double *omega,
                                      double *zeta, size_t ndof, size_t nc, double x[]);
 
+/** What a parameter of fricreg_hb_nma_point_sensitivities is. Values are fixed forever. Since
+ *  1.9. */
+enum fricreg_hb_nma_param {
+    /** Parameter index of fricreg_element.h's layout of the elements' type (jenkins,
+     *  jenkins_2d, jenkins_3d: 0 kt, 1 mun; iwan, iwan_2d, iwan_3d: k[ns], phi[ns]; spring: 0 k;
+     *  dahl: 0 sigma, 1 fc; jenkins_normal and contact_3d: 0 kt, 1 mu, 2 kn, 3 n0;
+     *  iwan_normal: k[ns], mu[ns], kn, n0), one value shared by a range of elements. */
+    FRICREG_HB_NMA_PARAM_ELEMENT = 0,
+    /** The linear damping: index 0 the linear mode's modal damping ratio ζ_k (at fixed ω_k)
+     *  of FRICREG_HB_NMA_DAMPING_MODAL, 1 and 2 Rayleigh's a0 and a1 (fricreg_hb_set_rayleigh). */
+    FRICREG_HB_NMA_PARAM_DAMPING = 1,
+    /** The modal amplitude a: the derivatives along the backbone. */
+    FRICREG_HB_NMA_PARAM_AMPLITUDE = 2
+};
+
+/** The exact derivatives of point i of the last backbone (fricreg_hb_nma or
+ *  fricreg_hb_nma_continue) in np parameters of the model: its natural frequency ω, its damping
+ *  ratio ζ and each dof's first-harmonic amplitude |X_1| at the point's fixed modal amplitude a
+ *  (or along the backbone for the amplitude itself). The point solves the section's equations
+ *  R(y, p) = 0 (the condensed (R), the amplitude and phase conditions) in y = (q, ω, ξ); by the
+ *  implicit function theorem
+ *
+ *      dy/dp = −(∂R/∂y)^-1 ∂R/∂p,      dζ/dp = (dξ/dp)/(2ω) − ξ (dω/dp)/(2ω²),
+ *
+ *  with ∂R/∂y Newton's matrix at the point (the point evaluated again, as fricreg_hb_nma_point
+ *  with x, and factored once) and every parameter's ∂R/∂p one right-hand side of one solve. An
+ *  element's ∂F/∂p is exact from the forces F and their Jacobian J = ∂F/∂U at the point, no
+ *  other AFT, by the laws' homogeneity (f(u; λk, λφ) = λ f(u; k, φ) and f(λu; k, λφ) =
+ *  λ f(u; k, φ) of a slider, the AFT's the same): dF/dk = J U/k, dF/dφ = (F − J U)/φ; with a
+ *  normal law N = max(0, n0 + kn g), dF/dn0 = J[:, g_0]/kn (g_0 the mean of g; kn = 0:
+ *  (F − J (U, G))/n0), dF_t/dkt = J_tt U/kt, dF_t/dmu = (F_t − J_tt U)/mu, dF/dkn = (F − J_tt U −
+ *  n0 dF/dn0)/kn; an Iwan element's slider s by these identities on its own exact AFT or
+ *  march, F_s and J_s (one AFT a parameter); a marched type's stiffness and bound (jenkins_2d,
+ *  jenkins_3d, spring, dahl's sigma and fc) as a slider's, on the march's forces and Jacobian
+ *  (exact for its samples). A stiffness of the stuck structure K_0 = K + J^T diag(k_r) J
+ *  (kt and k_s of a slider of positive slip force, kn on a normal row closed by n0 > 0, a
+ *  marched element's elastic stiffness) also
+ *  moves the mode shape φ_k of the amplitude condition φ_k^T M X_1 = a (and ξ_k = φ_k^T C φ_k
+ *  of the modal damping): with the bordered B = [K_0 − ω_k² M, M φ_k; φ_k^T M, 0] (symmetric,
+ *  nonsingular for a simple ω_k), b^T dφ_k/dp = −Σ_r (dk_r/dp)(J_r z)(J_r φ_k) for B (z, ·) =
+ *  (b, 0), b = M Re X_1, M Im X_1, C φ_k: a dense LU of order ndof + 1, so up to 256 dofs. ζ_k
+ *  and a0 move ξ by 2 ω_k and 1 (D_h holds ξ − ξ_k, or a0 − ξ) and nothing else (so dω/dζ_k = 0,
+ *  dζ/dζ_k = ω_k/ω); a1 enters D_h as i hω a1 K (dG_h/da1 = −Y_h^T (i hω K) Y_h), or with modal
+ *  damping ξ_k by φ_k^T K φ_k. The amplitudes: dX_1 = −Y_1 dF_1 − D_1^-1 (dD_1) X_1, two or three
+ *  solves with D_1 for all the parameters, d|X_1| = (Re X_1 Re dX_1 + Im X_1 Im dX_1)/|X_1|
+ *  (0 at a dof where X_1 = 0). The derivatives are those of the HB solution at H harmonics,
+ *  exact to Newton's tolerance on the point; at a stick–slip onset (the point where an element
+ *  starts to slip or open) they are one-sided. Cost: one Newton iteration of the backbone, and
+ *  per parameter O(H m² + (nq + 2)²) (an Iwan slider's parameter one AFT more), with stiffness
+ *  parameters a dense LU of order ndof + 1.
+ *
+ *  i          point index, as fricreg_hb_nma_point's.
+ *  np         the parameters, >= 0 (0: only the arguments are checked).
+ *  kind[np]   each an enum fricreg_hb_nma_param.
+ *  first[np], count[np]  ELEMENT: the elements first .. first + count − 1 (from 0, in the order
+ *             they were set or added), count >= 1: one value that all of them share (the sum of
+ *             the per-element derivatives); ignored for the other kinds.
+ *  index[np]  ELEMENT: the parameter's index in each element's layout (enum
+ *             fricreg_hb_nma_param); DAMPING: 0 ζ_k, 1 a0, 2 a1; ignored for AMPLITUDE.
+ *  domega[np] out: dω/dp_k, rad/s per unit of p_k.
+ *  dzeta[np]  out: dζ/dp_k (ζ as fricreg_hb_nma_point's), per unit of p_k.
+ *  ndof       with damp: the driver's degrees of freedom; ignored when damp is NULL.
+ *  damp[np ndof]  out, or NULL: d|X_1,j|/dp_k at damp[ndof k + j], |X_1,j| = the first harmonic's
+ *             amplitude of dof j (hypot of x[nc j + 1], x[nc j + 2] of fricreg_hb_nma_point),
+ *             displacement units per unit of p_k.
+ *
+ *  Not supported (FRICREG_EINVAL, the message says which): a marched type other than those
+ *  above (a law added to the table later), a normal law's gap (HB's has none), a parameter
+ *  whose identity divides by a value that is 0 (a slip force, mu or fc of 0, kn = 0 for kn,
+ *  kn = n0 = 0 for n0), and a stiffness that moves φ_k on a model of more than 256 dofs. A
+ *  sampled AFT (contact_3d, the marched types) makes the backbone piecewise smooth, its kinks
+ *  where a sample's stick or slip changes: there the derivatives are one-sided.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb, domega or dzeta is NULL, or kind, first, count or
+ *  index with np > 0; FRICREG_EINVAL if i is out of range, the model or elements changed since
+ *  the backbone, called from the monitor, a kind or index is not one of the above, an element
+ *  range is empty or beyond the elements, ζ_k is asked of a backbone with the matrix damping or
+ *  a0, a1 of a model without Rayleigh damping, or a parameter is not supported (above);
+ *  FRICREG_ESIZE if damp is given and ndof is not the driver's; FRICREG_ESINGULAR at a fold of
+ *  the backbone in a (Newton's matrix singular: a pivot below 1e-14 of its largest entry,
+ *  where the derivatives at fixed a are infinite), or if the stuck mode k is repeated (B
+ *  singular), or as fricreg_hb_nma_point; FRICREG_EINTEGRATOR as fricreg_hb_nma_point (an Iwan
+ *  slider's AFT or march); FRICREG_ENOMEM (np (nq + 2 + nq + m + ndof + 7) + O(ndof + H² + nq) doubles,
+ *  and with stiffness parameters (ndof + 1)² + 3 ndof², during the call). Nothing is written on
+ *  failure; the backbone and the driver's other results are left as they were. Since 1.9
+ *  (FRICREG_1.9). */
+FRICREG_API int fricreg_hb_nma_point_sensitivities(fricreg_hb *hb, size_t i, size_t np,
+                                                   const int kind[], const size_t first[],
+                                                   const size_t count[], const size_t index[],
+                                                   double domega[], double dzeta[], size_t ndof,
+                                                   double damp[]);
+
 /** The backbone of mode k from the modal amplitude a0 to a1 by pseudo-arclength continuation
  *  (Keller's, Krack & Gross Ch. 5, as fricreg_hb_continue's), so that it passes the folds of
  *  the backbone in the amplitude (an S in a(ω): an internal resonance, where a harmonic k ω of

@@ -222,3 +222,14 @@ int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv)
     hb->factored_deriv = deriv;
     return FRICREG_OK;
 }
+
+int fr_hb_harmonic_solve(fricreg_hb *hb, const char *fn, int h, double omega, size_t nrhs,
+                         double *B)
+{
+    if (hb->sparse)
+        return fr_hb_sparse_solve_many(hb, fn, h, omega, nrhs, B);
+    int status = factor_one(hb, fn, h, omega);
+    for (size_t c = 0; c < nrhs && status == FRICREG_OK; c++)
+        fr_hb_zlu_solve_factored(hb->D, hb->n, hb->piv, B + 2 * c * hb->n);
+    return status;
+}

@@ -24,4 +24,11 @@ int fr_hb_condition(fricreg_hb *hb, const char *fn, double *kappa);
 void fr_hb_project(const fricreg_hb *hb, const double *left, const double *B, double s, double *G,
                    double *q);
 
+/* D_h(omega)^-1 B in place for nrhs complex right-hand sides B[nrhs n] (each contiguous), with
+ * the damping in force (hb->xi, no_c): a dense model's D_h factored again into hb->D (the
+ * scratch of one harmonic's factor), a sparse one's by KLU (sparse.c). FRICREG_OK,
+ * FRICREG_ESINGULAR, FRICREG_ENONFINITE, FRICREG_ENOMEM (message recorded, with fn). */
+int fr_hb_harmonic_solve(fricreg_hb *hb, const char *fn, int h, double omega, size_t nrhs,
+                         double *B);
+
 #endif

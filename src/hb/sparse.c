@@ -408,7 +408,9 @@ static int too_many_entries(const fricreg_hb *hb, const struct fr_hb_lu *lu)
     return (double)(lu->numeric->lnz + lu->numeric->unz) * (hb->H + 1) > KEPT_LU_ENTRIES_MAX;
 }
 
-int fr_hb_sparse_solve(fricreg_hb *hb, const char *fn, int h, double omega)
+/* D_h(omega) formed and factored in hb->lu[h] (KLU's analysis first if none), its pivots
+ * checked: FRICREG_OK, FRICREG_ESINGULAR, FRICREG_ENONFINITE, FRICREG_ENOMEM. */
+static int factor_at(fricreg_hb *hb, const char *fn, int h, double omega)
 {
     double dmax = form_values(hb, h, omega);
     if (!isfinite(dmax))
@@ -437,7 +439,31 @@ int fr_hb_sparse_solve(fricreg_hb *hb, const char *fn, int h, double omega)
                        "pivot %g)",
                        fn, h == 0 ? "K" : "the dynamic stiffness D_h", omega, rcond);
     }
+    return FRICREG_OK;
+}
+
+int fr_hb_sparse_solve(fricreg_hb *hb, const char *fn, int h, double omega)
+{
+    int status = factor_at(hb, fn, h, omega);
+    if (status != FRICREG_OK)
+        return status;
+    struct fr_hb_lu *lu = &hb->lu[h];
     solve(hb, h, lu);
+    if (too_many_entries(hb, lu))
+        klu_zl_free_numeric(&lu->numeric, &hb->klu);
+    return FRICREG_OK;
+}
+
+int fr_hb_sparse_solve_many(fricreg_hb *hb, const char *fn, int h, double omega, size_t nrhs,
+                            double *B)
+{
+    int status = factor_at(hb, fn, h, omega);
+    if (status != FRICREG_OK)
+        return status;
+    struct fr_hb_lu *lu = &hb->lu[h];
+    if (nrhs > 0)
+        klu_zl_solve(hb->symbolic, lu->numeric, (SuiteSparse_long)hb->n, (SuiteSparse_long)nrhs, B,
+                     &hb->klu);
     if (too_many_entries(hb, lu))
         klu_zl_free_numeric(&lu->numeric, &hb->klu);
     return FRICREG_OK;

@@ -16,6 +16,12 @@ int fr_hb_sparse_solve(fricreg_hb *hb, const char *fn, int h, double omega);
  * FRICREG_ESINGULAR, FRICREG_ENOMEM (message recorded, with fn). */
 int fr_hb_sparse_condition(fricreg_hb *hb, const char *fn, int h, double omega, double *kappa);
 
+/* D_h(omega)^-1 B in place for nrhs complex right-hand sides B[nrhs n] (each contiguous, KLU's
+ * layout), from the factor kept at omega or a fresh one (freed after as fr_hb_sparse_solve's).
+ * Statuses as fr_hb_sparse_solve's. */
+int fr_hb_sparse_solve_many(fricreg_hb *hb, const char *fn, int h, double omega, size_t nrhs,
+                            double *B);
+
 /* Z = D_h' Y_h on the sparse pattern, D_h' = −2 h² Ω M + i h C. */
 void fr_hb_sparse_derivative(fricreg_hb *hb, int h, double omega);
 

@@ -95,6 +95,17 @@ int fr_hb_nma_find_special(struct fr_hb_nma *s);
  * *k (0: the row carries no force at rest), *limit (infinite: none). */
 void fr_hb_nma_row(const fricreg_hb *hb, size_t r, double *k, double *limit);
 
+/* d k_r / d p for row erow[e] + sr of J (fr_hb_nma_row's k) and parameter j of element e in
+ * fricreg_element.h's layout of its type (element_params.h): 1 for a slider's stiffness of
+ * positive slip force (a normal law's kt or k_s, and kn on the normal row, while N0 > 0 closes
+ * it), else 0; a marched element's the derivative of its elastic stiffness (linear in its
+ * parameters: its value at the unit vector e_j). */
+double fr_hb_nma_row_dk(const fricreg_hb *hb, size_t e, size_t j, size_t sr);
+
+/* The model's M, the stuck structure's K_0 = K + J^T diag(k_r) J and the damping C (or
+ * Rayleigh's a0 M + a1 K) as n x n row-major, densified (nma_linear.c). */
+void fr_hb_nma_stuck_model(const fricreg_hb *hb, double *M, double *K0, double *C);
+
 /* Sets up the driver for a mode's solves (the damping C − ξ M, the load column M φ) and back. */
 void fr_hb_nma_enter(fricreg_hb *hb, struct fr_hb_nma *nma);
 void fr_hb_nma_leave(fricreg_hb *hb, struct fr_hb_nma *nma);
@@ -111,10 +122,38 @@ int fr_hb_nma_newton(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, doub
 int fr_hb_nma_system(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, const double *y,
                      double *R, int jac);
 
+/* −g^T F_1 (complex, into s[2]) for a first harmonic's column g[m] (complex: the load column's
+ * J D_1^-1 M φ, or a derivative of it) and forces f[nq] in (R)'s real form (nma_solve.c): the
+ * amplitude and phase conditions' s = φ^T M X_1, or its derivative in f. */
+void fr_hb_nma_modal(const fricreg_hb *hb, const double *g, const double *f, double *s);
+
+/* The derivatives of the condensation in the damping at the factored omega into nma->dGx and
+ * nma->dgx: in ξ, dD_h/dξ = −i hω M (stiffness 0), or in Rayleigh's a1, dD_h/da1 = i hω K
+ * (stiffness 1): dG_h = −Y_h^T dD_h Y_h, the same for the load column. */
+void fr_hb_nma_damping_derivatives(fricreg_hb *hb, struct fr_hb_nma *nma, double omega,
+                                   int stiffness);
+
 /* The driver's factors, forces and (R) into R[nq] at the unknowns y (q, ω, ξ), with the forces'
  * Jacobians: the displacements (fr_hb_recover) of a stored point follow. */
 int fr_hb_nma_evaluate(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, const double *y,
                        double *R);
+
+/* The parameter sensitivities' terms beyond Newton's matrix (nma_sensitivity_terms.c).
+ * fr_hb_nma_first_harmonic: −Y_1 F_1 (complex, X[2n]) for forces f[nq] in (R)'s real form at
+ * the factored ω: the displacements' first harmonic, or its change with f a change of forces.
+ * fr_hb_nma_shape_terms: per parameter k of np, from its d k_r/dp dk[np m], the mode shape's
+ * derivative against M Re X_1, M Im X_1 and C φ into t[3 k ..] (−Σ_r dk_r (J_r z)(J_r φ), z the
+ * bordered solves'); FRICREG_OK, FRICREG_ESINGULAR (a repeated stuck mode), FRICREG_ENOMEM
+ * ((n + 1)² + 3 n² doubles). fr_hb_nma_amplitude_terms: d|X_1| of each dof into damp[np n]
+ * from X1, each parameter's dy[k nd ..] (dq, dω, and ξ less its shift), ∂F/∂p df[np nq] and
+ * Rayleigh a1's flag da1[np]; work: 10 n + nq doubles; FRICREG_OK or D_1's solve's status.
+ * Messages recorded with fn. */
+void fr_hb_nma_first_harmonic(const fricreg_hb *hb, const double *f, double *X);
+int fr_hb_nma_shape_terms(fricreg_hb *hb, const char *fn, const struct fr_hb_nma *nma,
+                          const double *X1, size_t np, const double *dk, double *t);
+int fr_hb_nma_amplitude_terms(fricreg_hb *hb, const char *fn, double omega, const double *X1,
+                              size_t np, const double *dy, size_t nd, const double *df,
+                              const double *da1, double *work, double *damp);
 
 /* The march from the linear mode to the amplitude a0 (nma.c): nma->yc the solution there. */
 int fr_hb_nma_march_to(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, double a0);

@@ -54,6 +54,12 @@ static void add_stuck(const fricreg_hb *hb, double *K)
     }
 }
 
+void fr_hb_nma_stuck_model(const fricreg_hb *hb, double *M, double *K0, double *C)
+{
+    densify(hb, M, K0, C);
+    add_stuck(hb, K0);
+}
+
 /* The smallest modal amplitude at which a row of J reaches its first slip (or opening) along
  * φ: min_r limit_r / |J_r φ|; infinite if none does. */
 static double stick_amplitude(const fricreg_hb *hb, const double *phi)

@@ -54,18 +54,20 @@ void fr_hb_nma_leave(fricreg_hb *hb, struct fr_hb_nma *nma)
     hb->factored_omega = NAN; /* the factors were the mode's */
 }
 
-/* Z = (dD_h/dξ) Y_h = −i hω M Y_h, dense or on the sparse pattern. */
-static void xi_times_y(fricreg_hb *hb, int h, double omega)
+/* Z = (dD_h/dξ) Y_h = −i hω M Y_h (stiffness 0), or (dD_h/da1) Y_h = i hω K Y_h (stiffness 1:
+ * Rayleigh's a1), dense or on the sparse pattern. */
+static void damping_times_y(fricreg_hb *hb, int h, double omega, int stiffness)
 {
     size_t n = hb->n, w = hb->m + 1;
     const double *Y = hb->Y + 2 * (size_t)h * n * w;
-    double s = -h * omega;
+    const double *X = stiffness ? hb->K : hb->M, *vX = stiffness ? hb->vK : hb->vM;
+    double s = stiffness ? h * omega : -h * omega;
     memset(hb->Z, 0, 2 * n * w * sizeof(double));
     for (size_t j = 0; j < n; j++) {
         int64_t p0 = hb->sparse ? hb->Dp[j] : 0, p1 = hb->sparse ? hb->Dp[j + 1] : (int64_t)n;
         for (int64_t p = p0; p < p1; p++) {
             size_t i = hb->sparse ? (size_t)hb->Di[p] : (size_t)p;
-            double mij = hb->sparse ? hb->vM[p] : hb->M[i * n + j];
+            double mij = hb->sparse ? vX[p] : X[i * n + j];
             if (mij == 0.0)
                 continue;
             for (size_t c = 0; c < w; c++) { /* z += i s mij y */
@@ -78,26 +80,25 @@ static void xi_times_y(fricreg_hb *hb, int h, double omega)
     }
 }
 
-/* The ξ derivatives of the condensation, dGx and dgx, at the factored ω. */
-static void xi_derivatives(fricreg_hb *hb, struct fr_hb_nma *nma, double omega)
+void fr_hb_nma_damping_derivatives(fricreg_hb *hb, struct fr_hb_nma *nma, double omega,
+                                   int stiffness)
 {
     size_t m = hb->m;
     memset(nma->dGx, 0, 2 * m * m * sizeof(double)); /* h = 0: D_0 = K */
     memset(nma->dgx, 0, 2 * m * sizeof(double));
     for (int h = 1; h <= hb->H; h++) {
-        xi_times_y(hb, h, omega);
+        damping_times_y(hb, h, omega, stiffness);
         fr_hb_project(hb, hb->Y + 2 * (size_t)h * hb->n * (m + 1), hb->Z, -1.0,
                       nma->dGx + 2 * (size_t)h * m * m, nma->dgx + 2 * (size_t)h * m);
     }
 }
 
-/* −g^T F_1 (complex, into s[2]) for the first harmonic's column g[m] (complex) and the forces fq. */
-static void modal(const fricreg_hb *hb, const double *g, double *s)
+void fr_hb_nma_modal(const fricreg_hb *hb, const double *g, const double *f, double *s)
 {
     size_t nc = hb->nc;
     s[0] = s[1] = 0.0;
     for (size_t r = 0; r < hb->m; r++) { /* F = fa − i fb */
-        double gr = g[2 * r], gi = g[2 * r + 1], fa = hb->fq[r * nc + 1], fb = hb->fq[r * nc + 2];
+        double gr = g[2 * r], gi = g[2 * r + 1], fa = f[r * nc + 1], fb = f[r * nc + 2];
         s[0] -= gr * fa + gi * fb;
         s[1] -= gi * fa - gr * fb;
     }
@@ -130,13 +131,13 @@ int fr_hb_nma_system(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, cons
     if (status != FRICREG_OK)
         return status;
     double c = nma->scale / nma->amplitude, s[2];
-    modal(hb, hb->ql + 2 * m, s);
+    fr_hb_nma_modal(hb, hb->ql + 2 * m, hb->fq, s);
     R[nq] = c * (s[0] - nma->amplitude);
     R[nq + 1] = c * s[1];
     if (!jac)
         return FRICREG_OK;
     double *A = nma->A;
-    xi_derivatives(hb, nma, y[nq]);
+    fr_hb_nma_damping_derivatives(hb, nma, y[nq], 0);
     fr_hb_matrix(hb, hb->jq, A, nd);
     fr_hb_domega(hb, nma->col);
     for (size_t j = 0; j < nq; j++)
@@ -145,10 +146,10 @@ int fr_hb_nma_system(fricreg_hb *hb, const char *fn, struct fr_hb_nma *nma, cons
     for (size_t j = 0; j < nq; j++)
         A[j * nd + nq + 1] = nma->col[j];
     /* the amplitude rows: ∂s/∂ω, ∂s/∂ξ from g's derivatives, ∂s/∂q from the forces' Jacobian */
-    modal(hb, hb->dql + 2 * m, s);
+    fr_hb_nma_modal(hb, hb->dql + 2 * m, hb->fq, s);
     A[nq * nd + nq] = c * s[0];
     A[(nq + 1) * nd + nq] = c * s[1];
-    modal(hb, nma->dgx + 2 * m, s);
+    fr_hb_nma_modal(hb, nma->dgx + 2 * m, hb->fq, s);
     A[nq * nd + nq + 1] = c * s[0];
     A[(nq + 1) * nd + nq + 1] = c * s[1];
     size_t nc = hb->nc;

@@ -5,6 +5,7 @@
  * it first slips or opens. Used by the dense linear mode (nma_linear.c) and the sparse one
  * (nma_sparse_mode.c) alike. */
 #include <math.h>
+#include <string.h>
 
 #include "joint/element_kind.h"
 #include "nma_internal.h"
@@ -56,4 +57,28 @@ void fr_hb_nma_row(const fricreg_hb *hb, size_t r, double *k, double *limit)
             *k += ks[s];
             *limit = fmin(*limit, scale * phi[s] / ks[s]);
         }
+}
+
+double fr_hb_nma_row_dk(const fricreg_hb *hb, size_t e, size_t j, size_t sr)
+{
+    if (hb->kind[e] == FR_HB_MARCH) { /* its elastic stiffness, linear in the parameters */
+        const fricreg_element_type *type = hb->etype[e];
+        size_t np = fricreg_element_nparams(type);
+        double unit[2 * FRICREG_ELEMENT_MAX_SLIDERS + 3], kr[3];
+        if (j >= np)
+            return 0.0;
+        memset(unit, 0, np * sizeof *unit);
+        unit[j] = 1.0;
+        type->kind->elastic(type, unit, kr);
+        return kr[sr];
+    }
+    const double *ks, *phi;
+    size_t ns = fr_hb_sliders(hb, e, &ks, &phi), rows = fr_hb_rows_of(hb, e);
+    if (hb->kind[e] != FR_HB_SLIDERS) { /* closed at rest when N0 > 0: kt (or k_s), kn */
+        if (!(hb->nl[2 * hb->me + e] > 0.0))
+            return 0.0;
+        if (sr == rows - 1) /* the normal row: kn */
+            return j == 2 * ns ? 1.0 : 0.0;
+    }
+    return j < ns && phi[j] > 0.0 ? 1.0 : 0.0; /* a slider of positive slip force (or mu) */
 }
