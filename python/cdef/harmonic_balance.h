@@ -62,6 +62,15 @@ int fricreg_hb_nma_point(fricreg_hb *hb, size_t i, double *amplitude, double *om
 int fricreg_hb_nma_harmonic_energy(fricreg_hb *hb, size_t i, size_t nh, double fraction[]);
 int fricreg_hb_nma_modal_participation(fricreg_hb *hb, size_t i, int harmonic, size_t nmodes,
                                        double fraction[]);
+enum fricreg_hb_nma_param {
+    FRICREG_HB_NMA_PARAM_ELEMENT = 0,
+    FRICREG_HB_NMA_PARAM_DAMPING = 1,
+    FRICREG_HB_NMA_PARAM_AMPLITUDE = 2
+};
+int fricreg_hb_nma_point_sensitivities(fricreg_hb *hb, size_t i, size_t np, const int kind[],
+                                       const size_t first[], const size_t count[],
+                                       const size_t index[], double domega[], double dzeta[],
+                                       size_t ndof, double damp[]);
 size_t fricreg_hb_nma_special_points(const fricreg_hb *hb);
 int fricreg_hb_nma_special_point(fricreg_hb *hb, size_t i, int *type, double *amplitude,
                                  double *omega, double *zeta, int *harmonic, size_t *mode);

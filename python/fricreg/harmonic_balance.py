@@ -535,6 +535,72 @@ class HarmonicBalance:
             special.append(SpecialPoint(_SPECIAL_POINTS[kind[0]], pa[0], pw[0], pz[0], k[0], r[0]))
         return Backbone(a, w, z, energy, tuple(special), x)
 
+    def backbone_sensitivities(self, point, params, amplitudes=False):
+        """Exact derivatives of a point of the last backbone in model parameters
+        (``fricreg_hb_nma_point_sensitivities``): by the implicit function theorem on the
+        point's converged residual, one solve for all the parameters (docs/nonlinear_modes.md,
+        "Sensitivities").
+
+        Parameters
+        ----------
+        point : int
+            The backbone point, 0 <= point < npoints.
+        params : sequence
+            Each parameter one of ``("element", first, count, index)`` (elements first ..
+            first + count - 1 in the order added, sharing one value of their type's parameter
+            ``index`` of fricreg_element.h's layout: jenkins 0 kt, 1 mun; contact_3d 0 kt, 1 mu,
+            2 kn, 3 n0; ...), ``("damping", index)`` (0 the mode's modal damping ratio with
+            damping="modal", 1 and 2 Rayleigh's a0 and a1) or ``("amplitude",)`` (along the
+            backbone).
+        amplitudes : bool
+            Also each dof's first-harmonic amplitude's derivatives.
+
+        Returns
+        -------
+        domega, dzeta : ndarray, shape (np,)
+            dω/dp (rad/s per unit) and dζ/dp.
+        damp : ndarray, shape (np, ndof)
+            Only with ``amplitudes``: d|X_1,j|/dp.
+
+        Raises
+        ------
+        ValueError
+            A parameter not of those forms.
+        fricreg.InputError
+            point out of range, a kind, range or index the library refuses (the message says
+            which: a parameter whose identity divides by 0, a stiffness on a model of more than
+            256 dofs, ...).
+        fricreg.Error
+            FRICREG_ESINGULAR at a fold or a repeated stuck mode.
+        """
+        kinds = {"element": lib.FRICREG_HB_NMA_PARAM_ELEMENT,
+                 "damping": lib.FRICREG_HB_NMA_PARAM_DAMPING,
+                 "amplitude": lib.FRICREG_HB_NMA_PARAM_AMPLITUDE}
+        rows = []
+        for p in params:
+            p = tuple(p)
+            if not p or p[0] not in kinds:
+                raise ValueError("params: %r is not ('element', first, count, index), "
+                                 "('damping', index) or ('amplitude',)" % (p,))
+            if p[0] == "element" and len(p) == 4:
+                rows.append((kinds["element"], int(p[1]), int(p[2]), int(p[3])))
+            elif p[0] == "damping" and len(p) == 2:
+                rows.append((kinds["damping"], 0, 0, int(p[1])))
+            elif p[0] == "amplitude" and len(p) == 1:
+                rows.append((kinds["amplitude"], 0, 0, 0))
+            else:
+                raise ValueError("params: %r has the wrong number of entries" % (p,))
+        n = len(rows)
+        kind = ffi.new("int[]", [r[0] for r in rows] or [0])
+        first, count, index = (ffi.new("size_t[]", [r[j] for r in rows] or [0])
+                               for j in (1, 2, 3))
+        domega, dzeta = np.empty(n), np.empty(n)
+        damp = np.empty((n, self.ndof)) if amplitudes else None
+        self._check(lib.fricreg_hb_nma_point_sensitivities(
+            self._hb, int(point), n, kind, first, count, index, pointer(domega), pointer(dzeta),
+            self.ndof, pointer(damp) if amplitudes else ffi.NULL), "backbone_sensitivities")
+        return (domega, dzeta, damp) if amplitudes else (domega, dzeta)
+
     def modal_participation(self, point, harmonic):
         """Each stuck linear mode's share in one harmonic of a point of the last backbone
         (``fricreg_hb_nma_modal_participation``): which mode a harmonic excites.

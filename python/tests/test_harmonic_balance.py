@@ -182,6 +182,36 @@ def test_backbone_closed_form_and_c_library():
         assert (a[0], w[0], z[0]) == (b.amplitude[i], b.omega[i], b.zeta[i])
 
 
+def test_backbone_sensitivities_against_the_closed_form():
+    """dω/dp, dζ/dp of the describing function's closed form (differentiated here by central
+    differences of the formula itself, step 1e-6), for kt, mun, the amplitude; and a
+    parameter of a single element shared (count 1) is the same as per element."""
+    hb = fricreg.HarmonicBalance([[1.0]], [[1.0]], elements=[("jenkins", [[1.0]], [[2.0, 3.0]])],
+                                 harmonics=1)
+    b = hb.backbone(0, 0.5, 1000.0, 16)
+    i = 8
+    a = b.amplitude[i]
+    assert a > 1.5  # slipping: mun/kt = 1.5
+    dw, dz, damp = hb.backbone_sensitivities(
+        i, [("element", 0, 1, 0), ("element", 0, 1, 1), ("amplitude",)], amplitudes=True)
+
+    def closed(kt=2.0, mun=3.0, amp=a):
+        w2, zeta = describing_function(amp, kt, mun)
+        return np.sqrt(w2), zeta
+
+    steps = [("kt", 2.0), ("mun", 3.0), ("amp", a)]
+    for k, (name, value) in enumerate(steps):
+        h = 1e-6 * value
+        up, down = closed(**{name: value + h}), closed(**{name: value - h})
+        assert dw[k] == pytest.approx((up[0] - down[0]) / (2 * h), rel=1e-7, abs=1e-12)
+        assert dz[k] == pytest.approx((up[1] - down[1]) / (2 * h), rel=1e-7, abs=1e-12)
+    assert damp.shape == (3, 1) and damp[2, 0] == pytest.approx(1.0, rel=1e-9)  # |X_1| = a
+    with pytest.raises(ValueError, match="params"):
+        hb.backbone_sensitivities(i, [("stiffness", 0)])
+    with pytest.raises(fricreg.InputError):
+        hb.backbone_sensitivities(i, [("element", 0, 2, 0)])  # one element only
+
+
 def test_backbone_special_points_in_the_branchs_order():
     """tests/test_hb_nma_energy.c's two masses with kt = 11 (H = 3): the folds of its S (a = 4.49)
     and then, the last special point, 3 ω crossing the stuck structure's second mode,
