@@ -852,6 +852,25 @@ enum fricreg_hb_nma_damping {
 FRICREG_API int fricreg_hb_nma(fricreg_hb *hb, size_t mode, int damping, double a0, double a1,
                                size_t npoints);
 
+/** The backbone of mode k at the caller's modal amplitudes: fricreg_hb_nma's march (from the
+ *  linear mode below the first slip, the step halved where the corrector fails) through
+ *  amplitude[0] < amplitude[1] < ..., a point stored at each (at exp(log a): the amplitude to
+ *  its last bit or so), read as fricreg_hb_nma's (fricreg_hb_nma_point,
+ *  fricreg_hb_nma_point_sensitivities, ...). For the amplitudes of a test's levels, which a
+ *  geometric grid does not hold; a fold in a stops the march as fricreg_hb_nma's.
+ *
+ *  mode, damping  as fricreg_hb_nma's.
+ *  n              the amplitudes, 1 to the driver's max_points (fricreg_hb_set_continuation).
+ *  amplitude[n]   modal amplitudes φ_k^T M x_1, finite, > 0, strictly increasing; not kept.
+ *
+ *  Returns FRICREG_OK, or as fricreg_hb_nma (FRICREG_EINVAL for the elements, mode, damping;
+ *  FRICREG_EWORK, FRICREG_ESINGULAR, ... for the march, the points reached kept); FRICREG_ENULL
+ *  if hb or amplitude is NULL; FRICREG_EINVAL if n is 0 or above max_points or the amplitudes
+ *  are not > 0 and increasing; FRICREG_ENONFINITE if one is NaN or infinite. Since 1.9
+ *  (FRICREG_1.9). */
+FRICREG_API int fricreg_hb_nma_at(fricreg_hb *hb, size_t mode, int damping, size_t n,
+                                  const double amplitude[]);
+
 /** Number of points stored by the last fricreg_hb_nma; 0 if none or hb is NULL. Returns that
  *  number, not a status. Since 1.7 (FRICREG_1.7). */
 FRICREG_API size_t fricreg_hb_nma_points(const fricreg_hb *hb);

@@ -22,7 +22,9 @@
  * Where the other numbers come from: at H = 7 the stuck mode is still the linear one (the
  * element's force is kt x exactly, no higher harmonics), so the backbone starts at √3, ζ = 0. */
 #include <check.h>
+#include <float.h>
 #include <math.h>
+#include <string.h>
 #include <stdlib.h>
 
 #include "fricreg_hb.h"
@@ -86,6 +88,55 @@ START_TEST(oscillator_closed_form)
     }
     ck_assert_double_le(worst_w, 1e-9);
     ck_assert_double_le(worst_z, 1e-9);
+    fricreg_hb_free(hb);
+}
+END_TEST
+
+/* (a') fricreg_hb_nma_at: the oscillator at the caller's amplitudes (a test's levels, off any
+ * geometric grid; one below the first slip) against the closed form to 1e-9, each stored at
+ * its amplitude to 4 ulps; at a geometric grid's own amplitudes the points equal
+ * fricreg_hb_nma's to 1e-12 (the same march, its targets through log and exp); and its
+ * refusals. */
+START_TEST(oscillator_at_amplitudes)
+{
+    fricreg_hb *hb = oscillator(1);
+    const double levels[5] = {0.7, 2.385, 3.1, 41.7, 997.0};
+    ck_assert_int_eq(fricreg_hb_nma_at(hb, 0, FRICREG_HB_NMA_DAMPING_MATRIX, 5, levels),
+                     FRICREG_OK);
+    ck_assert_uint_eq(fricreg_hb_nma_points(hb), 5);
+    for (size_t i = 0; i < 5; i++) {
+        double a, omega, zeta, w2, z;
+        ck_assert_int_eq(fricreg_hb_nma_point(hb, i, &a, &omega, &zeta, 0, 0, NULL), FRICREG_OK);
+        ck_assert_double_eq_tol(a, levels[i], 4.0 * DBL_EPSILON * levels[i]);
+        closed_form(a, &w2, &z);
+        ck_assert_double_eq_tol(omega * omega, w2, 1e-9 * w2);
+        ck_assert_double_eq_tol(zeta, z, 1e-9 * fmax(z, 1e-3));
+    }
+    const size_t np = 9;
+    double grid[9], g[9][3];
+    ck_assert_int_eq(fricreg_hb_nma(hb, 0, FRICREG_HB_NMA_DAMPING_MATRIX, 0.5, 1000.0, np),
+                     FRICREG_OK);
+    for (size_t i = 0; i < np; i++)
+        ck_assert_int_eq(fricreg_hb_nma_point(hb, i, &grid[i], &g[i][1], &g[i][2], 0, 0, NULL),
+                         FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_nma_at(hb, 0, FRICREG_HB_NMA_DAMPING_MATRIX, np, grid), FRICREG_OK);
+    for (size_t i = 0; i < np; i++) {
+        double a, omega, zeta;
+        ck_assert_int_eq(fricreg_hb_nma_point(hb, i, &a, &omega, &zeta, 0, 0, NULL), FRICREG_OK);
+        ck_assert_double_eq_tol(omega, g[i][1], 1e-12 * omega);
+        ck_assert_double_eq_tol(zeta, g[i][2], 1e-12);
+    }
+    const double down[2] = {2.0, 1.0}, neg[2] = {-1.0, 1.0}, nan_[2] = {1.0, NAN};
+    ck_assert_int_eq(fricreg_hb_nma_at(NULL, 0, 0, 2, levels), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_hb_nma_at(hb, 0, 0, 2, NULL), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_hb_nma_at(hb, 0, 0, 0, levels), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_hb_nma_at(hb, 0, 0, 2, down), FRICREG_EINVAL);
+    ck_assert_ptr_nonnull(strstr(fricreg_hb_errmsg(hb), "increase"));
+    ck_assert_int_eq(fricreg_hb_nma_at(hb, 0, 0, 2, neg), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_hb_nma_at(hb, 0, 0, 2, nan_), FRICREG_ENONFINITE);
+    ck_assert_int_eq(fricreg_hb_nma_at(hb, 1, 0, 2, levels), FRICREG_EINVAL); /* mode 1 of 1 */
+    ck_assert_int_eq(fricreg_hb_nma_at(hb, 0, 7, 2, levels), FRICREG_EINVAL); /* damping */
+    ck_assert_uint_eq(fricreg_hb_nma_points(hb), np); /* refused before: the last kept */
     fricreg_hb_free(hb);
 }
 END_TEST
@@ -210,6 +261,7 @@ int main(void)
     TCase *tc = tcase_create("core");
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, oscillator_closed_form);
+    tcase_add_test(tc, oscillator_at_amplitudes);
     tcase_add_test(tc, oscillator_h7_starts_linear);
     tcase_add_test(tc, bad_input);
     tcase_add_test(tc, modal_damping_closed_form);

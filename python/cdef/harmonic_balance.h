@@ -56,6 +56,7 @@ int fricreg_hb_bifurcation_level(fricreg_hb *hb, size_t i, double *level);
 int fricreg_hb_nma(fricreg_hb *hb, size_t mode, int damping, double a0, double a1, size_t npoints);
 int fricreg_hb_nma_continue(fricreg_hb *hb, size_t mode, int damping, double a0, double a1,
                             size_t npoints);
+int fricreg_hb_nma_at(fricreg_hb *hb, size_t mode, int damping, size_t n, const double amplitude[]);
 size_t fricreg_hb_nma_points(const fricreg_hb *hb);
 int fricreg_hb_nma_point(fricreg_hb *hb, size_t i, double *amplitude, double *omega, double *zeta,
                          size_t ndof, size_t nc, double x[]);

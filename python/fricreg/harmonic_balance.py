@@ -514,6 +514,38 @@ class HarmonicBalance:
                   self._backbone)
         return self._backbone()
 
+    def backbone_at(self, mode, amplitudes, damping="matrix"):
+        """The backbone at the caller's modal amplitudes (``fricreg_hb_nma_at``): the march of
+        :meth:`backbone` through them, a point at each (a test's levels, which a geometric
+        grid does not hold).
+
+        Parameters
+        ----------
+        mode : int
+            As :meth:`backbone`.
+        amplitudes : array_like, shape (n,)
+            Modal amplitudes, > 0 and strictly increasing.
+        damping : {"matrix", "modal"}
+            As :meth:`backbone`.
+
+        Returns
+        -------
+        Backbone
+
+        Raises
+        ------
+        fricreg.InputError
+            Amplitudes not > 0 and increasing, n out of 1..max_points, mode out of range.
+        fricreg.Error
+            As :meth:`backbone` (its ``result`` the points reached).
+        """
+        code = choice(_DAMPING, damping, "damping")
+        a = as_doubles(amplitudes, "amplitudes", ndim=1)
+        self._run("backbone_at",
+                  lambda: lib.fricreg_hb_nma_at(self._hb, int(mode), code, a.size, pointer(a)),
+                  self._backbone)
+        return self._backbone()
+
     def _backbone(self):
         """The stored backbone as a Backbone."""
         n, nc = lib.fricreg_hb_nma_points(self._hb), 2 * self.harmonics + 1

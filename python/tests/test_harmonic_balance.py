@@ -206,6 +206,13 @@ def test_backbone_sensitivities_against_the_closed_form():
         assert dw[k] == pytest.approx((up[0] - down[0]) / (2 * h), rel=1e-7, abs=1e-12)
         assert dz[k] == pytest.approx((up[1] - down[1]) / (2 * h), rel=1e-7, abs=1e-12)
     assert damp.shape == (3, 1) and damp[2, 0] == pytest.approx(1.0, rel=1e-9)  # |X_1| = a
+    at = hb.backbone_at(0, [0.7, 2.385, 41.7])  # a test's levels, off the grid
+    for a_i, w, z in zip(at.amplitude, at.omega, at.zeta):
+        w2, zeta = describing_function(a_i)
+        assert abs(w * w - w2) <= 1e-9 * w2 and abs(z - zeta) <= 1e-9 * max(zeta, 1e-3)
+    np.testing.assert_allclose(at.amplitude, [0.7, 2.385, 41.7], rtol=1e-15)
+    with pytest.raises(fricreg.InputError, match="increase"):
+        hb.backbone_at(0, [2.0, 1.0])
     with pytest.raises(ValueError, match="params"):
         hb.backbone_sensitivities(i, [("stiffness", 0)])
     with pytest.raises(fricreg.InputError):

@@ -96,6 +96,7 @@ struct fricreg_hb {
     int max_iter;
     double ds0, ds_min, ds_max;
     size_t max_points;
+    const double *nma_targets; /* during fricreg_hb_nma_at: its amplitudes (nma/nma.c) */
 
     fricreg_aft *aft; /* exact paths; with fr_hb_contact_samples' N once 3-D elements were set */
     /* the 3-D contact element's AFT at N/2 samples and its results, [3 nc + 9 nc²]: the

@@ -79,6 +79,8 @@ static int check_args(fricreg_hb *hb, const char *fn, size_t mode, int damping, 
                        "%s: damping = %d is not one of enum "
                        "fricreg_hb_nma_damping",
                        fn, damping);
+    if (hb->nma_targets != NULL) /* fricreg_hb_nma_at: its amplitudes checked there */
+        return FRICREG_OK;
     if (!isfinite(a0) || !isfinite(a1))
         return fr_fail(hb, FRICREG_ENONFINITE, "%s: a0 = %g, a1 = %g", fn, a0, a1);
     if (!(a0 > 0.0 && a1 > a0))
@@ -214,6 +216,7 @@ int fr_hb_nma_run(fricreg_hb *hb, const char *fn, size_t mode, int damping, doub
     hb->have_backbone = 1;
     s->modal = damping == FRICREG_HB_NMA_DAMPING_MODAL;
     s->mode = mode;
+    s->targets = hb->nma_targets;
     struct fr_error before = hb->err; /* a success keeps it: halved steps' failures are not
                                          the call's */
     if ((status = fr_hb_nma_linear(hb, fn, mode, s)) != FRICREG_OK)
@@ -232,6 +235,51 @@ int fr_hb_nma_run(fricreg_hb *hb, const char *fn, size_t mode, int damping, doub
 int fricreg_hb_nma(fricreg_hb *hb, size_t mode, int damping, double a0, double a1, size_t npoints)
 {
     return fr_hb_nma_run(hb, "nma", mode, damping, a0, a1, npoints, backbone);
+}
+
+/* The march through the caller's amplitudes s->targets[npoints] (fricreg_hb_nma_at), each
+ * stored at exp(log a), as the grid's points are. */
+static int at_targets(fricreg_hb *hb, const char *fn, struct fr_hb_nma *s, double a0, double a1,
+                      size_t npoints)
+{
+    (void)a1;
+    struct march mc;
+    int status = march_start(hb, fn, s, &mc, a0);
+    for (size_t i = 0; status == FRICREG_OK && i < npoints; i++) {
+        double t = log(s->targets[i]);
+        if (t > mc.tc)
+            status = advance(hb, fn, s, &mc, t);
+        if (status == FRICREG_OK)
+            store(s, exp(t));
+    }
+    return status;
+}
+
+int fricreg_hb_nma_at(fricreg_hb *hb, size_t mode, int damping, size_t n, const double amplitude[])
+{
+    static const char fn[] = "nma_at";
+    if (hb == NULL || hb->busy)
+        return fr_hb_refuse(hb, fn);
+    if (amplitude == NULL)
+        return fr_fail(hb, FRICREG_ENULL, "%s: amplitude is NULL", fn);
+    if (n == 0 || n > hb->max_points)
+        return fr_fail(hb, FRICREG_EINVAL, "%s: n = %zu must be in [1, max_points = %zu]", fn, n,
+                       hb->max_points);
+    for (size_t i = 0; i < n; i++) {
+        if (!isfinite(amplitude[i]))
+            return fr_fail(hb, FRICREG_ENONFINITE, "%s: amplitude[%zu] is not finite", fn, i);
+        if (!(amplitude[i] > (i ? amplitude[i - 1] : 0.0)))
+            return fr_fail(hb, FRICREG_EINVAL,
+                           "%s: amplitude[%zu] = %g: the amplitudes must be > 0 and increase", fn,
+                           i, amplitude[i]);
+    }
+    hb->nma_targets = amplitude;
+    int status = fr_hb_nma_run(hb, fn, mode, damping, amplitude[0], amplitude[n - 1], n,
+                               at_targets);
+    hb->nma_targets = NULL;
+    if (hb->nma != NULL)
+        hb->nma->targets = NULL; /* the caller's array is not kept */
+    return status;
 }
 
 size_t fricreg_hb_nma_points(const fricreg_hb *hb)

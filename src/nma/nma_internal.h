@@ -36,7 +36,8 @@ struct fr_hb_nma {
      * points are resampled), 4 doubles */
     size_t nfolds;
     double *folds;
-    size_t mode;     /* the backbone's mode k */
+    size_t mode;           /* the backbone's mode k */
+    const double *targets; /* the caller's amplitudes of fricreg_hb_nma_at (npoints), else NULL */
     size_t nlambda;  /* n for a dense model (every stuck mode's ω² known), 0 for a sparse one */
     double *lambda;  /* [n] the stuck structure's ω_r², ascending (nma_linear.c) */
     size_t nspecial; /* the special points, folds and crossings k ω = ω_r (nma_crossings.c) */
