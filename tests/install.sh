@@ -173,6 +173,7 @@ if [ "$fc" != "-" ]; then
     order="fricreg_constants.f90 fricreg_c.f90 $objects fricreg.F90 $f77" sim=""
     if [ -f "$fsrc/fricreg_sim_c.f90" ]; then
         objects="$objects fricreg_sim.F90 fricreg_exact.F90 fricreg_structure.F90 fricreg_hb.F90"
+        objects="$objects fricreg_fit.F90"
         order="fricreg_constants.f90 fricreg_c.f90 fricreg_sim_c.f90 $objects fricreg.F90"
         order="$order $f77 fricreg_sim_f77.f90 fricreg_sim_f77_generated.f90"
         order="$order fricreg_structure_f77.f90 fricreg_structure_f77_generated.f90"
