@@ -509,6 +509,37 @@ FRICREG_API int fricreg_hb_clear_elements(fricreg_hb *hb);
  *  (FRICREG_1.8). */
 FRICREG_API size_t fricreg_hb_element_count(const fricreg_hb *hb);
 
+/** Set parameter index of the elements first .. first + count − 1 to one value, in place: a
+ *  parameter study or a fit (fricreg_fit_set_model_hb) moves a value without adding the
+ *  elements again. index is in fricreg_element.h's layout of each element's type, as
+ *  fricreg_hb_nma_point_sensitivities's FRICREG_HB_NMA_PARAM_ELEMENT: jenkins 0 kt, 1 the slip
+ *  force; iwan k[ns] then the slip forces phi[ns]; jenkins_normal and contact_3d 0 kt, 1 mu,
+ *  2 kn, 3 n0, 4 gap; iwan_normal k[ns], mu[ns], kn, n0, gap; a marched type (any other) its own
+ *  layout. The per-kind setters' elements (fricreg_hb_set_jenkins, ...) have their types'
+ *  layouts. The value is checked as fricreg_hb_add_elements checks it (a stiffness > 0, a slip
+ *  force, mu or kn >= 0; a marched type's by fricreg_element_explain; a gap only 0, HB's normal
+ *  law has none). A model change, as fricreg_hb_set_stiffness's: a backbone's points are read
+ *  only without x after it (fricreg_hb_nma_point), the elements' earlier values gone.
+ *
+ *  first, count  the elements, from 0 in the order they were set or added, count >= 1.
+ *  index         the parameter, < each element's parameter count.
+ *  value         its new value, in the parameter's units.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb is NULL; FRICREG_EINVAL if the range is empty or
+ *  beyond the elements held, index is beyond an element's parameters, the value is out of its
+ *  range for an element of the range (the message names it), or the call comes from the
+ *  monitor; FRICREG_ENONFINITE if value is NaN or infinite. On failure no element changes.
+ *  Cost O(count), no allocation. Since 1.9 (FRICREG_1.9). */
+FRICREG_API int fricreg_hb_set_element_param(fricreg_hb *hb, size_t first, size_t count,
+                                             size_t index, double value);
+
+/** Read parameter index of element e (fricreg_hb_set_element_param's layout; a gap reads 0).
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb or value is NULL; FRICREG_EINVAL if e is not an
+ *  element held or index is beyond its parameters. Nothing is written on failure. Since 1.9
+ *  (FRICREG_1.9). */
+FRICREG_API int fricreg_hb_get_element_param(fricreg_hb *hb, size_t e, size_t index, double *value);
+
 /** Set the harmonic excitation of the fundamental, p(t) = pc cos Ωt + ps sin Ωt.
  *
  *  ndof      must equal the driver's degrees of freedom.
