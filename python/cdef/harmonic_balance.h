@@ -27,6 +27,9 @@ void fricreg_hb_free(fricreg_hb *hb);
 int fricreg_hb_set_matrix(fricreg_hb *hb, int which, size_t nrows, size_t ncols, int format,
                           const int64_t ptr[], const int64_t ind[], const double values[]);
 int fricreg_hb_set_rayleigh(fricreg_hb *hb, double a0, double a1);
+int fricreg_hb_set_element_param(fricreg_hb *hb, size_t first, size_t count, size_t index,
+                                 double value);
+int fricreg_hb_get_element_param(fricreg_hb *hb, size_t e, size_t index, double *value);
 int fricreg_hb_add_elements(fricreg_hb *hb, const fricreg_element_type *type, size_t me,
                             size_t ndof, const double J[], const double params[]);
 int fricreg_hb_set_excitation(fricreg_hb *hb, size_t ndof, const double pc[], const double ps[]);

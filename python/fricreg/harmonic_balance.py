@@ -212,6 +212,40 @@ class HarmonicBalance:
         self._check(lib.fricreg_hb_set_excitation(self._hb, self.ndof, pointer(pc), pointer(ps)),
                     "set_excitation")
 
+    def set_element_param(self, first, count, index, value):
+        """Move one parameter of the elements first .. first + count - 1 (in the order given
+        to the constructor) to one value, in place (``fricreg_hb_set_element_param``): a
+        parameter study or a fit without building the model again. ``index`` is in
+        fricreg_element.h's layout of each element's type (jenkins 0 kt, 1 mun; iwan k[ns] then
+        phi[ns]; jenkins_normal and contact_3d 0 kt, 1 mu, 2 kn, 3 n0; a marched type its own),
+        as ``backbone_sensitivities``'s ``("element", first, count, index)``. A model change:
+        the last solution, branch and backbone are forgotten.
+
+        Raises
+        ------
+        fricreg.InputError
+            An empty range or one beyond the elements, an index beyond an element's parameters,
+            a value out of its range (a stiffness <= 0, a slip force or mu < 0; a gap other
+            than 0), NaN or infinite. No element changes.
+        """
+        self._check(lib.fricreg_hb_set_element_param(self._hb, int(first), int(count),
+                                                     int(index), float(value)),
+                    "set_element_param")
+
+    def element_param(self, element, index):
+        """Parameter ``index`` of element ``element`` (``fricreg_hb_get_element_param``; the
+        layout of ``set_element_param``; a gap reads 0).
+
+        Raises
+        ------
+        fricreg.InputError
+            element or index out of range.
+        """
+        value = ffi.new("double *")
+        self._check(lib.fricreg_hb_get_element_param(self._hb, int(element), int(index), value),
+                    "element_param")
+        return value[0]
+
     def set_newton(self, tol=1e-10, max_iter=50):
         """Newton's stopping rule (``fricreg_hb_set_newton``): the largest residual entry at
         most tol times the displacement scale, after at most max_iter iterations a solve. A

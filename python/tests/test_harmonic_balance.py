@@ -219,6 +219,27 @@ def test_backbone_sensitivities_against_the_closed_form():
         hb.backbone_sensitivities(i, [("element", 0, 2, 0)])  # one element only
 
 
+def test_element_param_set_in_place_is_the_model_built_so():
+    """A parameter moved in place gives the backbone of the oscillator built with it (bit for
+    bit), and that backbone is the describing function's at the new mun."""
+    hb = fricreg.HarmonicBalance([[1.0]], [[1.0]], elements=[("jenkins", [[1.0]], [[2.0, 3.0]])],
+                                 harmonics=1)
+    hb.set_element_param(0, 1, 1, 4.5)
+    assert (hb.element_param(0, 0), hb.element_param(0, 1)) == (2.0, 4.5)
+    built = fricreg.HarmonicBalance([[1.0]], [[1.0]],
+                                    elements=[("jenkins", [[1.0]], [[2.0, 4.5]])], harmonics=1)
+    moved, fresh = hb.backbone(0, 0.5, 1000.0, 16), built.backbone(0, 0.5, 1000.0, 16)
+    assert (moved.omega == fresh.omega).all() and (moved.zeta == fresh.zeta).all()
+    for a, w in zip(moved.amplitude, moved.omega):
+        w2, _ = describing_function(a, 2.0, 4.5)
+        assert abs(w * w - w2) <= 1e-9 * w2
+    with pytest.raises(fricreg.InputError, match="must be > 0"):
+        hb.set_element_param(0, 1, 0, -1.0)
+    with pytest.raises(fricreg.InputError, match="parameters"):
+        hb.element_param(0, 2)
+    assert hb.element_param(0, 0) == 2.0
+
+
 def test_backbone_special_points_in_the_branchs_order():
     """tests/test_hb_nma_energy.c's two masses with kt = 11 (H = 3): the folds of its S (a = 4.49)
     and then, the last special point, 3 ω crossing the stuck structure's second mode,
