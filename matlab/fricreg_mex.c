@@ -7,9 +7,12 @@
  *
  *   fricreg_mex('version')                       -> [text, number]
  *   fricreg_mex('law_names'), ('element_types')  -> cell arrays of names
+ *   fricreg_mex('element_info', name)            -> [dim, nparams, nstate]
  *   fricreg_mex('law_eval', law, v, f_eq, mun, eps)            -> f
  *   fricreg_mex('element_eval', name, params, u [, state])     -> [f, dfdu, state_out, dfdp]
  *   fricreg_mex('fit_create') -> handle; fit_set_*, fit_run, fit_params, ... (mex_fit.c)
+ *   fricreg_mex('hb_create', ndof, m, H) -> handle; hb_set_*, hb_add_elements (mex_hb.c);
+ *     hb_solve, hb_continue, hb_nma, hb_peak (mex_hb_results.c)
  *   fricreg_mex('free', handle), ('free_all'), ('handles') -> the live objects' count
  *
  * Layout: MATLAB stores arrays column-major; the library takes tables of points row-major,
@@ -24,8 +27,10 @@
 #include <string.h>
 
 #include "mex_args.h"
+#include "mex_element.h"
 #include "mex_fit.h"
 #include "mex_handles.h"
+#include "mex_hb.h"
 #include "fricreg.h"
 #include "fricreg_element.h"
 
@@ -83,6 +88,20 @@ static void cmd_handles(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs
     (void)prhs;
     mexa_nargs("handles", nrhs, 0, 0, nlhs, 1);
     plhs[0] = mxCreateDoubleScalar((double)mexh_count());
+}
+
+/* [dim, nparams, nstate] = element_info(name): a type's components, its parameters (an Iwan
+ * type's with one slider) and its state variables. */
+static void cmd_element_info(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    const fricreg_element_type *type;
+    mxArray *out[3];
+    mexa_nargs("element_info", nrhs, 1, 1, nlhs, 3);
+    type = mexe_first(prhs[0], "element_info");
+    out[0] = mxCreateDoubleScalar((double)fricreg_element_dim(type));
+    out[1] = mxCreateDoubleScalar((double)fricreg_element_nparams(type));
+    out[2] = mxCreateDoubleScalar((double)fricreg_element_nstate(type));
+    mexa_outputs(nlhs, plhs, out, 3);
 }
 
 /* ---- the laws on arrays (fricreg_law_eval_batch) ------------------------------------------ */
@@ -201,37 +220,6 @@ static void cmd_law_eval(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prh
 
 /* ---- elements on many points (fricreg_element_eval_batch) --------------------------------- */
 
-/* The member of name's family with nparams parameters (an Iwan type's slider count follows
- * from it), or NULL where none has that many. */
-static const fricreg_element_type *element_member(const fricreg_element_type *first, size_t nparams)
-{
-    const fricreg_element_type *second = fricreg_element_sliders(first, 2);
-    size_t one = fricreg_element_nparams(first), per;
-    if (second == NULL) /* not a family */
-        return nparams == one ? first : NULL;
-    per = fricreg_element_nparams(second) - one;
-    if (nparams < one || (nparams - one) % per != 0)
-        return NULL;
-    return fricreg_element_sliders(first, (nparams - one) / per + 1);
-}
-
-static const fricreg_element_type *element_first(const mxArray *a, const char *cmd)
-{
-    char name[64], list[256] = "";
-    const fricreg_element_type *first;
-    mexa_string(a, cmd, "name", name, sizeof name);
-    first = fricreg_element_lookup(name);
-    if (first != NULL)
-        return first;
-    for (size_t i = 0; i < fricreg_element_count(); i++) {
-        mexa_append(list, sizeof list, i ? ", " : "");
-        mexa_append(list, sizeof list, fricreg_element_name(fricreg_element_at(i)));
-    }
-    mexa_error("fricreg:EINVAL", "%s: '%s' is not an element type (one of %s) (FRICREG_EINVAL)",
-               cmd, name, list);
-    return NULL;
-}
-
 /* dst, MATLAB's n x d1 x d2 (column-major), from src, C's [n][d1][d2] (row-major): the
  * boundary copy of the tangents and the derivatives. */
 static void to_cols3(const double *src, double *dst, size_t n, size_t d1, size_t d2)
@@ -260,7 +248,7 @@ static void cmd_element_eval(int nlhs, mxArray *plhs[], int nrhs, const mxArray 
     size_t npoints, dim, np = 0, ns, stride = 0, bad = 0;
     int status, nout = nlhs < 3 ? 3 : nlhs;
     mexa_nargs(cmd, nrhs, 3, 4, nlhs, 4);
-    first = element_first(prhs[0], cmd);
+    first = mexe_first(prhs[0], cmd);
     pa = prhs[1];
     ua = prhs[2];
     mexa_real(pa, cmd, "params");
@@ -272,11 +260,11 @@ static void cmd_element_eval(int nlhs, mxArray *plhs[], int nrhs, const mxArray 
                    (int)mxGetN(ua));
     npoints = (size_t)mxGetM(ua);
     if (mexa_is_vector(pa) &&
-        (type = element_member(first, (size_t)mxGetNumberOfElements(pa))) != NULL) {
+        (type = mexe_member(first, (size_t)mxGetNumberOfElements(pa))) != NULL) {
         np = (size_t)mxGetNumberOfElements(pa); /* shared: stride 0, the vector as it lies */
         params = mxGetPr(pa);
     } else if (mxGetNumberOfDimensions(pa) == 2 && (size_t)mxGetM(pa) == npoints && npoints > 0 &&
-               (type = element_member(first, (size_t)mxGetN(pa))) != NULL) {
+               (type = mexe_member(first, (size_t)mxGetN(pa))) != NULL) {
         np = stride = (size_t)mxGetN(pa);
         if (np == 1) {
             params = mxGetPr(pa);
@@ -286,19 +274,10 @@ static void cmd_element_eval(int nlhs, mxArray *plhs[], int nrhs, const mxArray 
             params = rows;
         }
     } else {
-        const fricreg_element_type *second = fricreg_element_sliders(first, 2);
-        size_t one = fricreg_element_nparams(first);
-        char takes[96];
-        if (second == NULL)
-            snprintf(takes, sizeof takes, "%lu", (unsigned long)one);
-        else /* a family: one slider's count plus the rest per slider */
-            snprintf(takes, sizeof takes, "%lu + %lu (ns - 1) for ns = 1..%d sliders",
-                     (unsigned long)one, (unsigned long)(fricreg_element_nparams(second) - one),
-                     FRICREG_ELEMENT_MAX_SLIDERS);
-        mexa_error("fricreg:size",
-                   "%s: params must be a vector of nparams (shared by the points) or npoints x "
-                   "nparams (a row each), %s taking nparams = %s; not %dx%d",
-                   cmd, fricreg_element_name(first), takes, (int)mxGetM(pa), (int)mxGetN(pa));
+        mexe_bad_params(first, cmd,
+                        "params must be a vector of nparams (shared by the points) or npoints x "
+                        "nparams (a row each)",
+                        (size_t)mxGetM(pa), (size_t)mxGetN(pa));
         return;
     }
     ns = fricreg_element_nstate(type);
@@ -375,6 +354,7 @@ static const struct {
     {"version", cmd_version},
     {"law_names", cmd_law_names},
     {"element_types", cmd_element_types},
+    {"element_info", cmd_element_info},
     {"law_eval", cmd_law_eval},
     {"element_eval", cmd_element_eval},
     {"fit_create", mexfit_create},
@@ -392,6 +372,20 @@ static const struct {
     {"fit_value", mexfit_value},
     {"fit_quantile", mexfit_quantile},
     {"fit_eval", mexfit_eval},
+    {"hb_create", mexhb_create},
+    {"hb_set_matrix", mexhb_set_matrix},
+    {"hb_set_rayleigh", mexhb_set_rayleigh},
+    {"hb_set_jenkins", mexhb_set_jenkins},
+    {"hb_add_elements", mexhb_add_elements},
+    {"hb_set_excitation", mexhb_set_excitation},
+    {"hb_set_newton", mexhb_set_newton},
+    {"hb_set_continuation", mexhb_set_continuation},
+    {"hb_set_stability", mexhb_set_stability},
+    {"hb_info", mexhb_info},
+    {"hb_solve", mexhb_solve},
+    {"hb_continue", mexhb_continue},
+    {"hb_nma", mexhb_nma},
+    {"hb_peak", mexhb_peak},
     {"free", cmd_free},
     {"free_all", cmd_free_all},
     {"handles", cmd_handles},

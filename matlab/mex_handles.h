@@ -17,7 +17,8 @@
 
 /** The kinds of objects the table holds. */
 enum mexh_kind {
-    MEXH_FIT = 1 /**< a fricreg_fit (fricreg_fit.h) */
+    MEXH_FIT = 1, /**< a fricreg_fit (fricreg_fit.h) */
+    MEXH_HB = 2   /**< a harmonic-balance driver with its sizes (mex_hb.h) */
 };
 
 /** Add an object of a kind; returns its new handle. On failure (memory) the object is freed
