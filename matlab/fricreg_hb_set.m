@@ -14,6 +14,9 @@ function fricreg_hb_set(h, varargin)
 %                      mu_max in the results, and period-doubling and Neimark-Sacker
 %                      bifurcations along a branch). Default false.
 %      'method'        how: 'auto' (default), 'hill', 'monodromy', 'condensed'.
+%      'max_iterations'  the Newton steps one solve, branch or backbone may take in all (0, the
+%                      default: no bound); a call that would take more raises fricreg:EWORK.
+%                      The way to bound a call's time: Ctrl-C does not stop it (docs/matlab.md).
 %   H is a handle of FRICREG_HARMONIC_BALANCE.
 %
 %   Errors (identifiers):
@@ -24,9 +27,10 @@ function fricreg_hb_set(h, varargin)
 %      fricreg:ENONFINITE  a NaN or infinite value
 %
 %   Source: fricreg_hb_set_excitation, fricreg_hb_set_newton, fricreg_hb_set_continuation,
-%   fricreg_hb_set_stability_method, fricreg_hb_set_stability (include/fricreg_hb.h), through
-%   fricreg_mex (matlab/mex_hb.c). Python: HarmonicBalance.set_excitation, .set_newton,
-%   .set_continuation, .set_stability.
+%   fricreg_hb_set_stability_method, fricreg_hb_set_stability, fricreg_hb_set_max_iterations
+%   (include/fricreg_hb.h), through fricreg_mex (matlab/mex_hb.c). Python:
+%   HarmonicBalance.set_excitation, .set_newton, .set_continuation, .set_stability (Python's
+%   Ctrl-C stops a call through the library's monitor instead of max_iterations).
 %
 %   See also FRICREG_HARMONIC_BALANCE.
 if nargin < 1
@@ -69,9 +73,11 @@ for k = 1:2:numel(varargin)
         end
     case 'method'
         method = value;
+    case 'max_iterations'
+        fricreg_mex('hb_set_max_iterations', h, value);
     otherwise
         error('fricreg:option', ['fricreg_hb_set: unknown option ''%s'' (excitation, newton, ' ...
-                                 'continuation, stability, method)'], name);
+                                 'continuation, stability, method, max_iterations)'], name);
     end
 end
 if ~isempty(method)

@@ -381,6 +381,7 @@ static const struct {
     {"hb_set_newton", mexhb_set_newton},
     {"hb_set_continuation", mexhb_set_continuation},
     {"hb_set_stability", mexhb_set_stability},
+    {"hb_set_max_iterations", mexhb_set_max_iterations},
     {"hb_info", mexhb_info},
     {"hb_solve", mexhb_solve},
     {"hb_continue", mexhb_continue},

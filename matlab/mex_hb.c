@@ -280,6 +280,20 @@ void mexhb_set_continuation(int nlhs, mxArray *plhs[], int nrhs, const mxArray *
                 cmd);
 }
 
+/* hb_set_max_iterations(h, total): the Newton steps one solving call may take (0: no bound). */
+void mexhb_set_max_iterations(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    const char *cmd = "hb_set_max_iterations";
+    mexhb *d;
+    (void)plhs;
+    mexa_nargs(cmd, nrhs, 2, 2, nlhs, 0);
+    d = mexhb_of(prhs[0], cmd);
+    mexhb_check(d,
+                fricreg_hb_set_max_iterations(d->hb, (int64_t)mexa_count(prhs[1], cmd, "total", 0,
+                                                                         (size_t)1 << 52)),
+                cmd);
+}
+
 /* hb_set_stability(h, enable, method): enable 0 or 1 (true, false), method 'auto', 'hill',
  * 'monodromy' or 'condensed' (enum fricreg_hb_stability_method's order). */
 void mexhb_set_stability(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])

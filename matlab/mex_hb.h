@@ -33,6 +33,7 @@ void mexhb_free(void *object);
 
 mex_command mexhb_create, mexhb_set_matrix, mexhb_set_rayleigh, mexhb_set_jenkins,
     mexhb_add_elements, mexhb_set_excitation, mexhb_set_newton, mexhb_set_continuation,
-    mexhb_set_stability, mexhb_info, mexhb_solve, mexhb_continue, mexhb_nma, mexhb_peak;
+    mexhb_set_stability, mexhb_set_max_iterations, mexhb_info, mexhb_solve, mexhb_continue,
+    mexhb_nma, mexhb_peak;
 
 #endif

@@ -35,6 +35,7 @@ calls = {@() fricreg_mex('hb_set_matrix', h, 'mass', 1)
          @() fricreg_mex('hb_set_newton', h, 1e-10, 50)
          @() fricreg_mex('hb_set_continuation', h, 0.02, 1e-6, 0.1, 100)
          @() fricreg_mex('hb_set_stability', h, true, 'auto')
+         @() fricreg_mex('hb_set_max_iterations', h, 0)
          @() fricreg_mex('hb_info', h)
          @() fricreg_mex('hb_solve', h, 1.5)
          @() fricreg_mex('hb_continue', h, 1, 2)
@@ -209,6 +210,12 @@ r('fricreg:EINVAL', @() fricreg_hb_backbone_at(h, 1, [0.2 0.1]));
 r('fricreg:EINVAL', @() fricreg_hb_peak(h, 1)); % no branch yet
 r('fricreg:EINVAL', @() fricreg_hb_peak(h, 2), 'dof');
 r('fricreg:EINVAL', @() fricreg_mex('hb_set_matrix', h, 'inertia', 1), 'stiffness');
+r('fricreg:EINVAL', @() fricreg_hb_set(h, 'max_iterations', -1));
+% a bound on the Newton steps stops a call with fricreg:EWORK (MATLAB's stand-in for Ctrl-C)
+fricreg_hb_set(h, 'max_iterations', 3);
+r('fricreg:EWORK', @() fricreg_hb_frequency_response(h, 1, 2), 'Newton');
+fricreg_hb_set(h, 'max_iterations', 0);
+fricreg_hb_frequency_response(h, 1, 2);
 % a driver made for two elements holding one: the solves refuse it
 g = fricreg_mex('hb_create', 1, 2, 3);
 cg = onCleanup(@() fricreg_mex('free', g));
