@@ -30,9 +30,9 @@ from collections import namedtuple
 import numpy as np
 
 from ._fricreg import ffi, lib
-from .arrays import as_doubles, as_scalar, pointer
+from .arrays import as_doubles, as_integer, as_scalar, pointer
 from .element import Element
-from .errors import raise_status
+from .errors import raise_status, refused
 
 __all__ = ["AFT", "AFTResult", "AFTNormalResult", "AFT_ELEMENT_TYPES"]
 
@@ -67,24 +67,17 @@ AFT_ELEMENT_TYPES = {
 }
 
 
-def _integer(value, name):
-    """value as a Python int, or ValueError naming the argument."""
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
-        raise ValueError("%s: %r is not an integer" % (name, value))
-    return int(value)
-
-
 def _aft_type(element, exact):
     """The C type name of a fricreg.Element that has an AFT; ValueError otherwise."""
     if not isinstance(element, Element):
-        raise ValueError("element: %r is not a fricreg.Element" % (element,))
+        raise refused("element: %r is not a fricreg.Element" % (element,))
     name = ffi.string(lib.fricreg_element_name(element._type)).decode()
     if name not in AFT_ELEMENT_TYPES:
-        raise ValueError("element: %s has no AFT in fricreg_aft.h (the types that have: %s)"
-                         % (name, ", ".join(AFT_ELEMENT_TYPES)))
+        raise refused("element: %s has no AFT in fricreg_aft.h (the types that have: %s)"
+                      % (name, ", ".join(AFT_ELEMENT_TYPES)))
     if exact and AFT_ELEMENT_TYPES[name][0] is None:
-        raise ValueError("exact: %s has only the sampled AFT (%s); pass exact=False"
-                         % (name, AFT_ELEMENT_TYPES[name][1]))
+        raise refused("exact: %s has only the sampled AFT (%s); pass exact=False"
+                      % (name, AFT_ELEMENT_TYPES[name][1]))
     return name
 
 
@@ -111,10 +104,9 @@ class AFT:
 
     Raises
     ------
-    ValueError
-        ``harmonics`` or ``samples`` is not an integer, or ``samples`` is negative.
     fricreg.InputError
-        (a ``ValueError``) H or N out of the ranges above.
+        (a ``ValueError``) ``harmonics`` or ``samples`` is not an integer, or ``samples`` is
+        negative. Refused by the library: H or N out of the ranges above.
     fricreg.OutOfMemoryError
         The workspace could not be allocated.
 
@@ -129,10 +121,10 @@ class AFT:
     """
 
     def __init__(self, harmonics, samples=0):
-        H = _integer(harmonics, "harmonics")
-        N = _integer(samples, "samples")
+        H = as_integer(harmonics, "harmonics")
+        N = as_integer(samples, "samples")
         if N < 0:
-            raise ValueError("samples: %d is negative" % N)
+            raise refused("samples: %d is negative" % N)
         out = ffi.new("fricreg_aft **")
         fits = 1 <= H <= lib.FRICREG_AFT_MAX_HARMONICS and N <= lib.FRICREG_AFT_MAX_SAMPLES
         status = lib.fricreg_aft_create(H, N, out) if fits else lib.FRICREG_EINVAL
@@ -160,8 +152,8 @@ class AFT:
         array = as_doubles(value, name)
         shape = (self.n,) if rows is None else (rows, self.n)
         if array.shape != shape:
-            raise ValueError("%s: shape %s; expected %s (n = 2H + 1 = %d)"
-                             % (name, array.shape, shape, self.n))
+            raise refused("%s: shape %s; expected %s (n = 2H + 1 = %d)"
+                          % (name, array.shape, shape, self.n))
         return array
 
     def _jac(self, size, jacobian):
@@ -197,11 +189,11 @@ class AFT:
 
         Raises
         ------
-        ValueError
-            ``u`` is not of shape (n,) or not real numbers; a scalar is not a real number.
         fricreg.InputError
-            (a ``ValueError``) kt <= 0, mun < 0, a NaN or infinite input, or a sampled call
-            on a workspace with samples = 0; the message is ``fricreg_aft_errmsg``'s.
+            (a ``ValueError``) ``u`` is not of shape (n,) or not real numbers; a scalar is not a
+            real number. Refused by the library: kt <= 0, mun < 0, a NaN or infinite input, or a
+            sampled call on a workspace with samples = 0; the message is
+            ``fricreg_aft_errmsg``'s.
         fricreg.Error
             ``FRICREG_EINTEGRATOR``: GSL's polynomial root solver did not converge.
 
@@ -242,11 +234,11 @@ class AFT:
 
         Raises
         ------
-        ValueError
-            ``k`` or ``phi`` is not 1-D or their shapes differ; ``u`` is not of shape (n,).
         fricreg.InputError
-            (a ``ValueError``) no slider, some k <= 0 or phi < 0, a NaN or infinite input,
-            or a sampled call with samples = 0 (``fricreg_aft_errmsg``'s message).
+            (a ``ValueError``) ``k`` or ``phi`` is not 1-D or their shapes differ; ``u`` is not
+            of shape (n,). Refused by the library: no slider, some k <= 0 or phi < 0, a NaN or
+            infinite input, or a sampled call with samples = 0 (``fricreg_aft_errmsg``'s
+            message).
         fricreg.Error
             ``FRICREG_EINTEGRATOR`` as :meth:`jenkins`.
 
@@ -258,7 +250,7 @@ class AFT:
         k = as_doubles(k, "k", ndim=1)
         phi = as_doubles(phi, "phi", ndim=1)
         if phi.shape != k.shape:
-            raise ValueError("phi: shape %s; expected k's %s" % (phi.shape, k.shape))
+            raise refused("phi: shape %s; expected k's %s" % (phi.shape, k.shape))
         u = self._coefficients(u, "u")
         f = np.empty(self.n)
         jac, jac_c = self._jac(self.n, jacobian)
@@ -297,11 +289,10 @@ class AFT:
 
         Raises
         ------
-        ValueError
-            ``u`` or ``g`` is not of shape (n,); a scalar is not a real number.
         fricreg.InputError
-            (a ``ValueError``) kt <= 0, mu < 0, kn < 0, a NaN or infinite input or an
-            overflowing scale, or a sampled call with samples = 0 (``fricreg_aft_errmsg``).
+            (a ``ValueError``) ``u`` or ``g`` is not of shape (n,); a scalar is not a real
+            number. Refused by the library: kt <= 0, mu < 0, kn < 0, a NaN or infinite input or
+            an overflowing scale, or a sampled call with samples = 0 (``fricreg_aft_errmsg``).
         fricreg.Error
             ``FRICREG_EINTEGRATOR`` (the exact path's root solver).
 
@@ -345,11 +336,10 @@ class AFT:
 
         Raises
         ------
-        ValueError
-            ``u`` is not of shape (2, n) or ``g`` of shape (n,).
         fricreg.InputError
-            (a ``ValueError``) the workspace has samples = 0, kt <= 0, mu < 0, kn < 0, or a
-            NaN or infinite input (``fricreg_aft_errmsg``).
+            (a ``ValueError``) ``u`` is not of shape (2, n) or ``g`` of shape (n,). Refused by
+            the library: the workspace has samples = 0, kt <= 0, mu < 0, kn < 0, or a NaN or
+            infinite input (``fricreg_aft_errmsg``).
 
         Notes
         -----
@@ -392,9 +382,9 @@ class AFT:
 
         Raises
         ------
-        ValueError
-            ``element`` is no Element or of a type without an AFT; exact=True for
-            contact_3d; ``coefficients`` of another shape.
+        fricreg.InputError
+            (a ``ValueError``) ``element`` is no Element or of a type without an AFT; exact=True
+            for contact_3d; ``coefficients`` of another shape.
         fricreg.InputError, fricreg.Error
             As the method called.
 
@@ -409,9 +399,9 @@ class AFT:
         dim, p = element.dim, element.params
         c = as_doubles(coefficients, "coefficients")
         if not (c.shape == (dim, self.n) or (dim == 1 and c.shape == (self.n,))):
-            raise ValueError("coefficients: shape %s; %s expects (%d, %d)%s"
-                             % (c.shape, name, dim, self.n,
-                                " or (%d,)" % self.n if dim == 1 else ""))
+            raise refused("coefficients: shape %s; %s expects (%d, %d)%s"
+                          % (c.shape, name, dim, self.n,
+                             " or (%d,)" % self.n if dim == 1 else ""))
         if name == "jenkins":
             r = self.jenkins(p[0], p[1], c.reshape(self.n), exact, jacobian)
         elif name == "iwan":

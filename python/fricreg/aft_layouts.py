@@ -10,8 +10,9 @@ fricreg's bit for bit.
 """
 import numpy as np
 
-from .aft import AFT, _aft_type, _integer
-from .arrays import as_doubles
+from .aft import AFT, _aft_type
+from .arrays import as_doubles, as_integer
+from .errors import refused
 
 __all__ = ["TmdsimpyForce", "to_tmdsimpy", "from_tmdsimpy", "jacobian_to_tmdsimpy",
            "to_pyharm", "from_pyharm", "jacobian_to_pyharm"]
@@ -21,9 +22,9 @@ def _harmonics(h):
     """h as a sorted array of distinct harmonics >= 0 (tmdsimpy's list); ValueError."""
     array = np.asarray(h)
     if array.ndim != 1 or array.size == 0 or array.dtype.kind not in "iu":
-        raise ValueError("h: %r is not a nonempty 1-D list of integer harmonics" % (h,))
+        raise refused("h: %r is not a nonempty 1-D list of integer harmonics" % (h,))
     if array[0] < 0 or np.any(np.diff(array) <= 0):
-        raise ValueError("h: %s is not sorted, distinct harmonics >= 0" % array.tolist())
+        raise refused("h: %s is not sorted, distinct harmonics >= 0" % array.tolist())
     return array
 
 
@@ -37,9 +38,9 @@ def _index(h, ndof, n):
 
 
 def _ndof(value, name):
-    ndof = _integer(value, name)
+    ndof = as_integer(value, name)
     if ndof < 1:
-        raise ValueError("%s: %d; expected >= 1" % (name, ndof))
+        raise refused("%s: %d; expected >= 1" % (name, ndof))
     return ndof
 
 
@@ -63,9 +64,9 @@ def to_tmdsimpy(coefficients, h):
 
     Raises
     ------
-    ValueError
-        ``coefficients`` not 1-D or 2-D with an odd length; ``h`` not sorted distinct
-        integers >= 0, or above H.
+    fricreg.InputError
+        (a ``ValueError``) ``coefficients`` not 1-D or 2-D with an odd length; ``h`` not sorted
+        distinct integers >= 0, or above H.
 
     Notes
     -----
@@ -76,12 +77,12 @@ def to_tmdsimpy(coefficients, h):
     c = as_doubles(coefficients, "coefficients")
     c2 = c.reshape(1, -1) if c.ndim == 1 else c
     if c2.ndim != 2 or c2.shape[1] % 2 == 0:
-        raise ValueError("coefficients: shape %s; expected (ndof, 2H + 1) or (2H + 1,)"
-                         % (c.shape,))
+        raise refused("coefficients: shape %s; expected (ndof, 2H + 1) or (2H + 1,)"
+                      % (c.shape,))
     h = _harmonics(h)
     if 2 * h[-1] + 1 > c2.shape[1]:
-        raise ValueError("h: harmonic %d above the coefficients' H = %d"
-                         % (h[-1], c2.shape[1] // 2))
+        raise refused("h: harmonic %d above the coefficients' H = %d"
+                      % (h[-1], c2.shape[1] // 2))
     return c2.ravel()[_index(h, c2.shape[0], c2.shape[1])]
 
 
@@ -104,8 +105,9 @@ def from_tmdsimpy(U, h, ndof=1):
 
     Raises
     ------
-    ValueError
-        ``U`` not of shape (ndof Nhc,); ``h`` as :func:`to_tmdsimpy`; ``ndof`` < 1.
+    fricreg.InputError
+        (a ``ValueError``) ``U`` not of shape (ndof Nhc,); ``h`` as :func:`to_tmdsimpy`;
+        ``ndof`` < 1.
 
     Notes
     -----
@@ -116,8 +118,8 @@ def from_tmdsimpy(U, h, ndof=1):
     index = _index(h, ndof, 2 * int(h[-1]) + 1)
     U = as_doubles(U, "U")
     if U.shape != index.shape:
-        raise ValueError("U: shape %s; expected (%d,) = (ndof Nhc,) for ndof = %d, h = %s"
-                         % (U.shape, index.size, ndof, h.tolist()))
+        raise refused("U: shape %s; expected (%d,) = (ndof Nhc,) for ndof = %d, h = %s"
+                      % (U.shape, index.size, ndof, h.tolist()))
     out = np.zeros(ndof * (2 * int(h[-1]) + 1))
     out[index] = U
     return out.reshape(ndof, -1)
@@ -143,8 +145,9 @@ def jacobian_to_tmdsimpy(jacobian, h, ndof=1):
 
     Raises
     ------
-    ValueError
-        ``jacobian`` not square of a size ndof (2H + 1); ``h`` or ``ndof`` as above.
+    fricreg.InputError
+        (a ``ValueError``) ``jacobian`` not square of a size ndof (2H + 1); ``h`` or ``ndof`` as
+        above.
 
     Notes
     -----
@@ -155,11 +158,11 @@ def jacobian_to_tmdsimpy(jacobian, h, ndof=1):
     jac = as_doubles(jacobian, "jacobian", ndim=2)
     n = jac.shape[0] // ndof
     if jac.shape[0] != jac.shape[1] or jac.shape[0] != n * ndof or n % 2 == 0:
-        raise ValueError("jacobian: shape %s; expected (ndof (2H + 1), ndof (2H + 1)) for"
-                         " ndof = %d" % (jac.shape, ndof))
+        raise refused("jacobian: shape %s; expected (ndof (2H + 1), ndof (2H + 1)) for"
+                      " ndof = %d" % (jac.shape, ndof))
     h = _harmonics(h)
     if 2 * h[-1] + 1 > n:
-        raise ValueError("h: harmonic %d above the Jacobian's H = %d" % (h[-1], n // 2))
+        raise refused("h: harmonic %d above the Jacobian's H = %d" % (h[-1], n // 2))
     index = _index(h, ndof, n)
     return jac[np.ix_(index, index)]
 
@@ -179,8 +182,8 @@ def to_pyharm(coefficients):
 
     Raises
     ------
-    ValueError
-        As :func:`to_tmdsimpy`.
+    fricreg.InputError
+        (a ``ValueError``) As :func:`to_tmdsimpy`.
 
     Notes
     -----
@@ -196,7 +199,7 @@ def to_pyharm(coefficients):
 def _pyharm_h(size, ndof, name):
     """The harmonics 0..H of a pyHarm array of size ndof (2H + 1)."""
     if size % ndof or (size // ndof) % 2 == 0:
-        raise ValueError("%s: %d entries are not ndof (2H + 1) for ndof = %d" % (name, size, ndof))
+        raise refused("%s: %d entries are not ndof (2H + 1) for ndof = %d" % (name, size, ndof))
     return np.arange((size // ndof) // 2 + 1)
 
 
@@ -214,8 +217,8 @@ def from_pyharm(x, ndof=1):
 
     Raises
     ------
-    ValueError
-        ``x`` not 1-D of a size ndof (2H + 1); ``ndof`` < 1.
+    fricreg.InputError
+        (a ``ValueError``) ``x`` not 1-D of a size ndof (2H + 1); ``ndof`` < 1.
 
     Notes
     -----
@@ -240,8 +243,8 @@ def jacobian_to_pyharm(jacobian, ndof=1):
 
     Raises
     ------
-    ValueError
-        As :func:`jacobian_to_tmdsimpy`.
+    fricreg.InputError
+        (a ``ValueError``) As :func:`jacobian_to_tmdsimpy`.
 
     Notes
     -----
@@ -274,9 +277,9 @@ class TmdsimpyForce:
 
     Raises
     ------
-    ValueError
-        ``element`` has no AFT (or exact=True for contact_3d); Q, T of other shapes, or one
-        without the other.
+    fricreg.InputError
+        (a ``ValueError``) ``element`` has no AFT (or exact=True for contact_3d); Q, T of other
+        shapes, or one without the other.
 
     Notes
     -----
@@ -288,7 +291,7 @@ class TmdsimpyForce:
         _aft_type(element, exact)
         self.element, self.exact = element, bool(exact)
         if (Q is None) != (T is None):
-            raise ValueError("Q, T: give both or neither")
+            raise refused("Q, T: give both or neither")
         if Q is None:
             self.Q = self.T = None
             self.nnl = self.ndof = element.dim
@@ -297,11 +300,11 @@ class TmdsimpyForce:
             self.nnl, self.ndof = self.Q.shape
             self.T = as_doubles(T, "T", ndim=2).copy()
             if self.T.shape != (self.ndof, self.nnl):
-                raise ValueError("T: shape %s; expected Q's transpose shape %s"
-                                 % (self.T.shape, (self.ndof, self.nnl)))
+                raise refused("T: shape %s; expected Q's transpose shape %s"
+                              % (self.T.shape, (self.ndof, self.nnl)))
             if self.nnl == 0 or self.nnl % element.dim:
-                raise ValueError("Q: %d local dofs are not a multiple of %s's %d"
-                                 % (self.nnl, element.name, element.dim))
+                raise refused("Q: %d local dofs are not a multiple of %s's %d"
+                              % (self.nnl, element.name, element.dim))
         self._workspaces = {}
 
     def nl_force_type(self):
@@ -345,14 +348,14 @@ class TmdsimpyForce:
 
         Raises
         ------
-        ValueError
-            ``U`` or ``h`` do not fit; ``Nt`` not an integer.
+        fricreg.InputError
+            (a ``ValueError``) ``U`` or ``h`` do not fit; ``Nt`` not an integer.
         fricreg.InputError, fricreg.Error
             From :class:`AFT` (max(h) or Nt out of range) and :meth:`AFT.element`.
         """
         h = _harmonics(h)
         H = max(1, int(h[-1]))
-        samples = 0 if self.exact else _integer(Nt, "Nt")
+        samples = 0 if self.exact else as_integer(Nt, "Nt")
         key = (H, samples)
         if key not in self._workspaces:
             self._workspaces[key] = AFT(H, samples)
@@ -360,8 +363,8 @@ class TmdsimpyForce:
         nhc = 2 * h.size - (h[0] == 0)  # tmdsimpy's Nhc
         U = as_doubles(U, "U")
         if U.shape != (nhc * self.ndof,):
-            raise ValueError("U: shape %s; expected (%d,) = (N Nhc,) for N = %d, h = %s"
-                             % (U.shape, nhc * self.ndof, self.ndof, h.tolist()))
+            raise refused("U: shape %s; expected (%d,) = (N Nhc,) for N = %d, h = %s"
+                          % (U.shape, nhc * self.ndof, self.ndof, h.tolist()))
         local = U.reshape(nhc, self.ndof)
         if self.Q is not None:
             local = local @ self.Q.T

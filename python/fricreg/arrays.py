@@ -5,6 +5,7 @@ and names chosen from a fixed table (a method, a damping)."""
 import numpy as np
 
 from ._fricreg import ffi
+from .errors import refused
 
 
 def as_doubles(value, name, ndim=None):
@@ -15,13 +16,13 @@ def as_doubles(value, name, ndim=None):
     try:
         array = np.asarray(value)
     except Exception as exc:  # ragged lists and the like
-        raise ValueError("%s: not an array of numbers (%s)" % (name, exc)) from None
+        raise refused("%s: not an array of numbers (%s)" % (name, exc)) from None
     if array.dtype.kind not in "biuf":
-        raise ValueError("%s: dtype %s is not real numbers" % (name, array.dtype))
+        raise refused("%s: dtype %s is not real numbers" % (name, array.dtype))
     array = np.ascontiguousarray(array, dtype=np.float64)
     if ndim is not None and array.ndim != ndim:
-        raise ValueError("%s: %d dimensions, shape %s; expected %d"
-                         % (name, array.ndim, array.shape, ndim))
+        raise refused("%s: %d dimensions, shape %s; expected %d"
+                      % (name, array.ndim, array.shape, ndim))
     return array
 
 
@@ -29,13 +30,21 @@ def as_scalar(value, name):
     """value as a Python float; ValueError naming the argument where it is not one real
     number (an array of another shape, a string, a complex)."""
     if isinstance(value, (str, bytes)):
-        raise ValueError("%s: %r is not a real number" % (name, value))
+        raise refused("%s: %r is not a real number" % (name, value))
     array = np.asarray(value)
     if array.shape != ():
-        raise ValueError("%s: shape %s; expected a number" % (name, array.shape))
+        raise refused("%s: shape %s; expected a number" % (name, array.shape))
     if array.dtype.kind not in "biuf":
-        raise ValueError("%s: %r is not a real number" % (name, value))
+        raise refused("%s: %r is not a real number" % (name, value))
     return float(array)
+
+
+def as_integer(value, name):
+    """value as a Python int; InputError naming the argument where it is not an integer (a
+    float, even 3.0, a string, a bool)."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise refused("%s: %r is not an integer" % (name, value))
+    return int(value)
 
 
 def pointer(array):
@@ -48,5 +57,5 @@ def choice(table, value, name):
     """table[value] for an argument that names one of table's keys; ValueError naming the
     argument and the choices otherwise."""
     if value not in table:
-        raise ValueError("%s: %r is not one of %s" % (name, value, ", ".join(map(repr, table))))
+        raise refused("%s: %r is not one of %s" % (name, value, ", ".join(map(repr, table))))
     return table[value]

@@ -15,8 +15,8 @@ from collections import namedtuple
 import numpy as np
 
 from ._fricreg import ffi, lib
-from .arrays import as_doubles, as_scalar, pointer
-from .errors import raise_status
+from .arrays import as_doubles, as_integer, as_scalar, pointer
+from .errors import raise_status, refused
 from .laws import LAWS, _law_code
 from .matrices import MatrixArgs, is_sparse
 
@@ -73,13 +73,12 @@ class Context:
 
     Raises
     ------
-    ValueError
-        ``m`` is missing and cannot be inferred, an argument has the wrong shape or dtype,
-        or ``law`` or ``partition`` names none.
     fricreg.InputError
-        (a ``ValueError``) the C library refused a value (m out of range, a bound < 0, eps
-        below DBL_MIN, W not symmetric, not semidefinite, NaN, ...); the message names the
-        property and is the context's own (``fricreg_ctx_errmsg``).
+        (a ``ValueError``) ``m`` is missing and cannot be inferred, an argument has the wrong
+        shape or dtype, or ``law`` or ``partition`` names none. Refused by the library: the C
+        library refused a value (m out of range, a bound < 0, eps below DBL_MIN, W not
+        symmetric, not semidefinite, NaN, ...); the message names the property and is the
+        context's own (``fricreg_ctx_errmsg``).
     fricreg.OutOfMemoryError
         The context or W's factor could not be allocated.
 
@@ -120,8 +119,8 @@ class Context:
             elif mun is not None and np.ndim(mun) == 1:
                 m = len(mun)
             else:
-                raise ValueError("m: not given, and neither W nor an array mun gives it")
-        m = operator.index(m)
+                raise refused("m: not given, and neither W nor an array mun gives it")
+        m = as_integer(m, "m")
         if m < 1:
             raise_status(lib.FRICREG_EINVAL, "Context", "m = %d: not 1 <= m <= 2^26" % m)
         return m
@@ -140,7 +139,7 @@ class Context:
         """value as a float64 array of shape (m,); ValueError naming it otherwise."""
         array = as_doubles(value, name)
         if array.shape != (self.m,):
-            raise ValueError("%s: shape %s; expected (%d,)" % (name, array.shape, self.m))
+            raise refused("%s: shape %s; expected (%d,)" % (name, array.shape, self.m))
         return array
 
     # ---- settings ------------------------------------------------------------------------
@@ -158,10 +157,9 @@ class Context:
 
         Raises
         ------
-        ValueError
-            ``law`` names no law.
         fricreg.InputError
-            ``eps`` below DBL_MIN, NaN or infinite.
+            (a ``ValueError``) ``law`` names no law. Refused by the library: ``eps`` below
+            DBL_MIN, NaN or infinite.
         """
         code = _law_code(law)
         eps = self._eps if eps is None else as_scalar(eps, "eps")
@@ -224,8 +222,8 @@ class Context:
             elif stored.shape == (self.m, self.m):
                 status = lib.fricreg_ctx_set_coupling_dense(self._ctx, self.m, pointer(stored))
             else:
-                raise ValueError("W: shape %s; expected (%d,) (diagonal) or (%d, %d)"
-                                 % (stored.shape, self.m, self.m, self.m))
+                raise refused("W: shape %s; expected (%d,) (diagonal) or (%d, %d)"
+                              % (stored.shape, self.m, self.m, self.m))
         self._check(status, "Context.W")
         self._W = stored
 
@@ -238,8 +236,8 @@ class Context:
     @partition.setter
     def partition(self, partition):
         if not isinstance(partition, str) or partition not in _PARTITION_CODES:
-            raise ValueError("partition: %r is not a partition (one of %s)"
-                             % (partition, ", ".join(PARTITIONS)))
+            raise refused("partition: %r is not a partition (one of %s)"
+                          % (partition, ", ".join(PARTITIONS)))
         self._check(lib.fricreg_ctx_set_partition(self._ctx, _PARTITION_CODES[partition]),
                     "Context.partition")
         self._partition = partition
@@ -280,11 +278,10 @@ class Context:
 
         Raises
         ------
-        ValueError
-            An argument's shape or dtype does not fit.
         fricreg.InputError
-            A NaN or infinite input, or (dense W) a near-stick contact beyond the solve's
-            range, ~1e280: the context's message names the argument and the contact.
+            (a ``ValueError``) An argument's shape or dtype does not fit. Refused by the
+            library: A NaN or infinite input, or (dense W) a near-stick contact beyond the
+            solve's range, ~1e280: the context's message names the argument and the contact.
         fricreg.Error
             ``FRICREG_ESINGULAR``: the near-stick block of W is singular (redundant contacts,
             whose forces are not unique).
@@ -350,10 +347,10 @@ class Context:
 
         Raises
         ------
-        ValueError
-            An argument's shape or dtype does not fit.
         fricreg.InputError
-            A NaN or infinite direction or result, or ``FRICREG_EINVAL`` as :meth:`tangent`.
+            (a ``ValueError``) An argument's shape or dtype does not fit. Refused by the
+            library: A NaN or infinite direction or result, or ``FRICREG_EINVAL`` as
+            :meth:`tangent`.
         fricreg.Error
             ``FRICREG_ESINGULAR`` as :meth:`tangent`.
 
@@ -390,10 +387,9 @@ class Context:
 
         Raises
         ------
-        ValueError
-            An argument's shape or dtype does not fit.
         fricreg.InputError
-            A NaN or infinite input.
+            (a ``ValueError``) An argument's shape or dtype does not fit. Refused by the
+            library: A NaN or infinite input.
 
         Notes
         -----
@@ -499,11 +495,10 @@ class Context:
 
         Raises
         ------
-        ValueError
-            An argument's shape or dtype does not fit.
         fricreg.InputError
-            c, tol or an entry NaN or infinite, c <= 0, tol <= 0, max_iter < 1, W_eff not
-            symmetric (``FRICREG_ENOTSYM``) or a diagonal entry below DBL_MIN
+            (a ``ValueError``) An argument's shape or dtype does not fit. Refused by the
+            library: c, tol or an entry NaN or infinite, c <= 0, tol <= 0, max_iter < 1, W_eff
+            not symmetric (``FRICREG_ENOTSYM``) or a diagonal entry below DBL_MIN
             (``FRICREG_ENOTPSD``); the context's message.
         fricreg.Error
             ``FRICREG_EDIVERGED`` if the residual became NaN or infinite, ``FRICREG_ESINGULAR``
@@ -535,8 +530,8 @@ class Context:
         """MatrixArgs of an (m, m) matrix; ValueError naming it for another shape."""
         args = MatrixArgs(matrix, name, form)
         if args.shape != (self.m, self.m):
-            raise ValueError("%s: shape %s; expected (%d, %d)"
-                             % (name, args.shape, self.m, self.m))
+            raise refused("%s: shape %s; expected (%d, %d)"
+                          % (name, args.shape, self.m, self.m))
         return args
 
     def _step_matrices(self, W_eff):

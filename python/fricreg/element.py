@@ -13,8 +13,8 @@ from collections import namedtuple
 import numpy as np
 
 from ._fricreg import ffi, lib
-from .arrays import as_doubles, pointer
-from .errors import raise_status
+from .arrays import as_doubles, as_integer, as_scalar, pointer
+from .errors import raise_status, refused
 
 __all__ = ["ELEMENT_TYPES", "Element", "ElementResult", "segalman"]
 
@@ -42,24 +42,24 @@ def _type_for(name, nparams):
     """The C type called name whose parameter count is nparams (a family's slider count
     follows from it); ValueError naming the types or the counts otherwise."""
     if not isinstance(name, str):
-        raise ValueError("name: %r is not a string (one of %s)" % (name, ", ".join(ELEMENT_TYPES)))
+        raise refused("name: %r is not a string (one of %s)" % (name, ", ".join(ELEMENT_TYPES)))
     first = lib.fricreg_element_lookup(name.encode())
     if first == ffi.NULL:
-        raise ValueError("name: %r is not an element type (one of %s)"
-                         % (name, ", ".join(ELEMENT_TYPES)))
+        raise refused("name: %r is not an element type (one of %s)"
+                      % (name, ", ".join(ELEMENT_TYPES)))
     one = lib.fricreg_element_nparams(first)
     second = lib.fricreg_element_sliders(first, 2)
     if second == ffi.NULL:  # not a family: one count only
         if nparams != one:
-            raise ValueError("params: %s takes %d parameters, not %d" % (name, one, nparams))
+            raise refused("params: %s takes %d parameters, not %d" % (name, one, nparams))
         return first
     per_slider = lib.fricreg_element_nparams(second) - one
     ns, rest = divmod(nparams - one, per_slider)
     typ = lib.fricreg_element_sliders(first, ns + 1) if rest == 0 and nparams >= one else ffi.NULL
     if typ == ffi.NULL:
-        raise ValueError("params: %s takes %d + %d ns parameters for ns = 1..%d sliders, not %d"
-                         % (name, one - per_slider, per_slider,
-                            lib.FRICREG_ELEMENT_MAX_SLIDERS, nparams))
+        raise refused("params: %s takes %d + %d ns parameters for ns = 1..%d sliders, not %d"
+                      % (name, one - per_slider, per_slider,
+                         lib.FRICREG_ELEMENT_MAX_SLIDERS, nparams))
     return typ
 
 
@@ -90,11 +90,10 @@ class Element:
 
     Raises
     ------
-    ValueError
-        ``name`` names no type, or ``params`` has a length no member of the type takes.
     fricreg.InputError
-        (a ``ValueError``) a parameter is NaN, infinite or out of its range (kt > 0, mun >= 0,
-        ...); the message is ``fricreg_element_explain``'s.
+        (a ``ValueError``) ``name`` names no type, or ``params`` has a length no member of the
+        type takes. Refused by the library: a parameter is NaN, infinite or out of its range (kt
+        > 0, mun >= 0, ...); the message is ``fricreg_element_explain``'s.
     """
 
     def __init__(self, name, params):
@@ -135,9 +134,9 @@ class Element:
         -------
         state : ndarray of float64, shape (npoints, nstate), or (nstate,) for None
         """
-        shape = (self.nstate,) if npoints is None else (int(npoints), self.nstate)
+        shape = (self.nstate,) if npoints is None else (as_integer(npoints, "npoints"), self.nstate)
         if npoints is not None and shape[0] < 0:
-            raise ValueError("npoints: %d is negative" % npoints)
+            raise refused("npoints: %d is negative" % npoints)
         return np.zeros(shape)
 
     def eval(self, u, state, params=None, tangent=True, derivatives=False):
@@ -167,23 +166,22 @@ class Element:
 
         Raises
         ------
-        ValueError
-            An argument's shape or dtype does not fit.
         fricreg.InputError
-            (a ``ValueError``) a point's u, state or parameter is NaN, infinite or out of its
-            range: the message names the point and the value (``fricreg_element_explain``).
-            Nothing is computed then.
+            (a ``ValueError``) An argument's shape or dtype does not fit. Refused by the
+            library: a point's u, state or parameter is NaN, infinite or out of its range: the
+            message names the point and the value (``fricreg_element_explain``). Nothing is
+            computed then.
         """
         u = as_doubles(u, "u")
         single = u.ndim == 1
         u2 = u.reshape(1, -1) if single else u
         if u2.ndim != 2 or u2.shape[1] != self.dim:
-            raise ValueError("u: shape %s; %s expects (npoints, %d) or (%d,)"
-                             % (u.shape, self.name, self.dim, self.dim))
+            raise refused("u: shape %s; %s expects (npoints, %d) or (%d,)"
+                          % (u.shape, self.name, self.dim, self.dim))
         npoints = u2.shape[0]
         state = as_doubles(state, "state")
         if state.shape != ((self.nstate,) if single else (npoints, self.nstate)):
-            raise ValueError("state: shape %s; expected %s" % (
+            raise refused("state: shape %s; expected %s" % (
                 state.shape, (self.nstate,) if single else (npoints, self.nstate)))
         params, stride = self._params_for(params, npoints, single)
         f = np.empty((npoints, self.dim))
@@ -219,8 +217,8 @@ class Element:
             return params, 0
         if not single and params.shape == (npoints, self.nparams):
             return params, self.nparams
-        raise ValueError("params: shape %s; expected (%d,) or (npoints, %d) = (%d, %d)"
-                         % (params.shape, self.nparams, self.nparams, npoints, self.nparams))
+        raise refused("params: shape %s; expected (%d,) or (npoints, %d) = (%d, %d)"
+                      % (params.shape, self.nparams, self.nparams, npoints, self.nparams))
 
 
 def segalman(ns, fs, kt, chi, beta, resolution):
@@ -256,9 +254,11 @@ def segalman(ns, fs, kt, chi, beta, resolution):
     fricreg.InputError
         (a ``ValueError``) a parameter out of the ranges above, NaN or infinite.
     """
-    ns = int(ns)
+    ns = as_integer(ns, "ns")
     if ns <= 0:
         raise_status(lib.FRICREG_EINVAL, "segalman", "ns = %d must be >= 1" % ns)
+    fs, kt, chi = as_scalar(fs, "fs"), as_scalar(kt, "kt"), as_scalar(chi, "chi")
+    beta, resolution = as_scalar(beta, "beta"), as_scalar(resolution, "resolution")
     params = np.empty(2 * ns)
     status = lib.fricreg_element_segalman(ns, fs, kt, chi, beta, resolution,
                                           pointer(params[:ns]), pointer(params[ns:]))

@@ -36,7 +36,10 @@ class Error(Exception):
 class InputError(Error, ValueError):
     """An argument was refused: NULL, out of range, NaN or infinite, of the wrong size, or a
     coupling matrix not symmetric or not positive semidefinite (``FRICREG_ENULL``,
-    ``EINVAL``, ``ENONFINITE``, ``ESIZE``, ``ENOTSYM``, ``ENOTPSD``); also a ``ValueError``."""
+    ``EINVAL``, ``ENONFINITE``, ``ESIZE``, ``ENOTSYM``, ``ENOTPSD``); also a ``ValueError``.
+    The binding's own refusals before any call (a shape, a dtype, an unknown name, a value
+    out of range) are this class too, of status ``FRICREG_EINVAL``, their message naming the
+    argument: ``except fricreg.Error`` catches every refusal."""
 
 
 class OutOfMemoryError(Error, MemoryError):
@@ -67,6 +70,13 @@ class Interrupted(KeyboardInterrupt):
 _STATUS_NAMES = dict(ffi.typeof("enum fricreg_status").elements)  # value: name
 _INPUT = {lib.FRICREG_ENULL, lib.FRICREG_EINVAL, lib.FRICREG_ENONFINITE, lib.FRICREG_ESIZE,
           lib.FRICREG_ENOTSYM, lib.FRICREG_ENOTPSD}
+
+
+def refused(message):
+    """The binding's own refusal of an argument, before any C call: an :class:`InputError`
+    (a ``ValueError`` too) of status ``FRICREG_EINVAL``; ``message`` begins with the
+    argument's name."""
+    return InputError(lib.FRICREG_EINVAL, message)
 
 
 def raise_status(status, where, detail=""):

@@ -14,7 +14,7 @@ import numpy as np
 
 from ._fricreg import ffi, lib
 from .arrays import as_doubles, as_scalar, choice, pointer
-from .errors import raise_status
+from .errors import raise_status, refused
 
 __all__ = ["FIT_PARAMS", "FitResult", "fit_backbone", "backbone"]
 
@@ -100,8 +100,8 @@ def _by_name(mapping, name):
     mapping = dict(mapping or {})
     unknown = sorted(set(mapping) - set(FIT_PARAMS))
     if unknown:
-        raise ValueError("%s: unknown parameters %s; expected some of %s"
-                         % (name, unknown, ", ".join(FIT_PARAMS)))
+        raise refused("%s: unknown parameters %s; expected some of %s"
+                      % (name, unknown, ", ".join(FIT_PARAMS)))
     return mapping
 
 
@@ -167,20 +167,20 @@ def fit_backbone(amplitude, freq_hz, zeta, *, kind="acceleration", sensor=1.0,
     f = as_doubles(freq_hz, "freq_hz", ndim=1)
     z = as_doubles(zeta, "zeta", ndim=1)
     if not a.shape == f.shape == z.shape:
-        raise ValueError("amplitude, freq_hz, zeta: shapes %s, %s, %s differ"
-                         % (a.shape, f.shape, z.shape))
+        raise refused("amplitude, freq_hz, zeta: shapes %s, %s, %s differ"
+                      % (a.shape, f.shape, z.shape))
     fit = _new_fit(sensor)
     status = lib.fricreg_fit_set_levels(fit, a.size, choice(_KINDS, kind, "kind"), pointer(a),
                                         pointer(f), pointer(z))
     _check(fit, status, "levels")
     if (sd_freq_hz is None) != (sd_zeta is None):
-        raise ValueError("sd_freq_hz, sd_zeta: give both or neither")
+        raise refused("sd_freq_hz, sd_zeta: give both or neither")
     if sd_freq_hz is not None:
         sf = as_doubles(sd_freq_hz, "sd_freq_hz", ndim=1)
         sz = as_doubles(sd_zeta, "sd_zeta", ndim=1)
         if sf.shape != a.shape or sz.shape != a.shape:
-            raise ValueError("sd_freq_hz, sd_zeta: shapes %s, %s; expected %s"
-                             % (sf.shape, sz.shape, a.shape))
+            raise refused("sd_freq_hz, sd_zeta: shapes %s, %s; expected %s"
+                          % (sf.shape, sz.shape, a.shape))
         _check(fit, lib.fricreg_fit_set_deviations(fit, a.size, pointer(sf), pointer(sz)),
                "deviations")
     free = _set_params(fit, x0, bounds, fixed)
@@ -246,11 +246,11 @@ def backbone(params, amplitude, *, kind="displacement", sensor=1.0, sensitivitie
         names = _by_name(params, "params")
         missing = [name for name in FIT_PARAMS if name not in names]
         if missing:
-            raise ValueError("params: missing %s" % ", ".join(missing))
+            raise refused("params: missing %s" % ", ".join(missing))
         params = [names[name] for name in FIT_PARAMS]
     p = as_doubles(params, "params", ndim=1)
     if p.shape != (_NP,):
-        raise ValueError("params: shape %s; expected (%d,)" % (p.shape, _NP))
+        raise refused("params: shape %s; expected (%d,)" % (p.shape, _NP))
     a = as_doubles(amplitude, "amplitude", ndim=1)
     fit = _new_fit(sensor)
     f, z, modal = np.empty_like(a), np.empty_like(a), np.empty_like(a)

@@ -12,9 +12,9 @@ import threading
 import numpy as np
 
 from ._fricreg import ffi, lib
-from .arrays import as_doubles, choice, pointer
+from .arrays import as_doubles, as_integer, as_scalar, choice, pointer
 from .element import Element
-from .errors import Error, Interrupted, raise_status
+from .errors import Error, InputError, Interrupted, raise_status, refused
 from .hb_results import Backbone, Bifurcation, Response, Solution, SpecialPoint
 from .matrices import MatrixArgs
 
@@ -41,6 +41,23 @@ WATCH_INTERVAL = 0.02
 
 # The call in progress on each thread: where the monitor leaves an exception (Ctrl-C).
 _calls = threading.local()
+
+
+def _check_mass(args):
+    """A negative mass refused: a diagonal entry of M below 0 (the C driver takes any symmetric
+    M, and only the backbone's linear mode would find it)."""
+    diagonal = np.asarray(args.matrix.diagonal())
+    if diagonal.size and diagonal.min() < 0:
+        i = int(np.argmin(diagonal))
+        raise refused("M: M[%d, %d] = %g; a mass is >= 0" % (i, i, diagonal[i]))
+
+
+def _pair(value, name):
+    """value as the two numbers (a, b)."""
+    pair = as_doubles(value, name, ndim=1)
+    if pair.shape != (2,):
+        raise refused("%s: shape %s; expected 2 numbers" % (name, pair.shape))
+    return float(pair[0]), float(pair[1])
 
 
 @ffi.def_extern(onerror=lambda exception, value, traceback: _stop(value))
@@ -85,11 +102,10 @@ class HarmonicBalance:
 
     Raises
     ------
-    ValueError
-        A shape does not fit, or ``elements`` is not as described.
     fricreg.InputError
-        (a ``ValueError``) a matrix is not symmetric, an entry is NaN, a parameter is out of
-        range (the library's message names it).
+        (a ``ValueError``) A shape does not fit, or ``elements`` is not as described. Refused by
+        the library: a matrix is not symmetric, an entry is NaN, a parameter is out of range
+        (the library's message names it).
     fricreg.OutOfMemoryError
 
     Notes
@@ -109,11 +125,17 @@ class HarmonicBalance:
         ndof = matrices[0][1].shape[0]
         for which, args in matrices:
             if args.shape != (ndof, ndof):
-                raise ValueError("%s: shape %s; expected (%d, %d) as M"
-                                 % ("MKC"[which - 1], args.shape, ndof, ndof))
+                raise refused("%s: shape %s; expected (%d, %d) as M"
+                              % ("MKC"[which - 1], args.shape, ndof, ndof))
+        _check_mass(matrices[0][1])
+        if C is not None and rayleigh is not None:
+            raise refused("C, rayleigh: give one damping, the matrix C or Rayleigh's (a0, a1)")
+        if len(elements) == 0:
+            raise refused("elements: none given; harmonic balance needs at least one element")
         blocks = [self._block(entry, ndof, i) for i, entry in enumerate(elements)]
         count = sum(block[1] for block in blocks)
-        self.ndof, self.harmonics, self.nelements = ndof, int(harmonics), count
+        self.ndof, self.harmonics = ndof, as_integer(harmonics, "harmonics")
+        self.nelements = count
         self._J = np.vstack([block[2] for block in blocks])
         self.nrows = self._J.shape[0]
         out = ffi.new("fricreg_hb **")
@@ -126,10 +148,10 @@ class HarmonicBalance:
         for which, args in matrices:
             self._check(lib.fricreg_hb_set_matrix(self._hb, which, ndof, ndof, args.format,
                                                   args.ptr, args.ind, args.values),
-                        "HarmonicBalance")
+                        "HarmonicBalance " + "MKC"[which - 1])
         if rayleigh is not None:
-            a0, a1 = rayleigh
-            self._check(lib.fricreg_hb_set_rayleigh(self._hb, a0, a1), "HarmonicBalance")
+            a0, a1 = _pair(rayleigh, "rayleigh")
+            self._check(lib.fricreg_hb_set_rayleigh(self._hb, a0, a1), "HarmonicBalance rayleigh")
         for typ, me, J, params in blocks:
             self._check(lib.fricreg_hb_add_elements(self._hb, typ, me, ndof, pointer(J),
                                                     pointer(params)), "HarmonicBalance")
@@ -149,20 +171,23 @@ class HarmonicBalance:
             params = None
         elif len(entry) == 3:
             name, J, params = entry
-            element = Element(name, as_doubles(params, "elements[%d] params" % i, ndim=2)[0])
+            try:
+                element = Element(name, as_doubles(params, "elements[%d] params" % i, ndim=2)[0])
+            except InputError as error:
+                raise refused("elements[%d]: %s" % (i, error)) from None
         else:
-            raise ValueError("elements[%d]: expected (Element, J) or (name, J, params)" % i)
+            raise refused("elements[%d]: expected (Element, J) or (name, J, params)" % i)
         J = as_doubles(J, "elements[%d] J" % i, ndim=2)
         if J.shape[1] != ndof or J.shape[0] % element.dim or J.shape[0] == 0:
-            raise ValueError("elements[%d] J: shape %s; expected (me * %d, %d) for %s"
-                             % (i, J.shape, element.dim, ndof, element.name))
+            raise refused("elements[%d] J: shape %s; expected (me * %d, %d) for %s"
+                          % (i, J.shape, element.dim, ndof, element.name))
         me = J.shape[0] // element.dim
         if params is None:
             params = np.tile(element.params, (me, 1))
         params = as_doubles(params, "elements[%d] params" % i, ndim=2)
         if params.shape != (me, element.nparams):
-            raise ValueError("elements[%d] params: shape %s; expected (%d, %d)"
-                             % (i, params.shape, me, element.nparams))
+            raise refused("elements[%d] params: shape %s; expected (%d, %d)"
+                          % (i, params.shape, me, element.nparams))
         return element._type, me, J, params
 
     def _check(self, status, where):
@@ -199,16 +224,15 @@ class HarmonicBalance:
 
         Raises
         ------
-        ValueError
-            A shape is not (ndof,).
         fricreg.InputError
-            An entry is NaN or infinite (``fricreg_hb_set_excitation``).
+            (a ``ValueError``) A shape is not (ndof,). Refused by the library: An entry is NaN
+            or infinite (``fricreg_hb_set_excitation``).
         """
         pc = as_doubles(pc, "pc", ndim=1)
         ps = np.zeros(self.ndof) if ps is None else as_doubles(ps, "ps", ndim=1)
         for name, array in (("pc", pc), ("ps", ps)):
             if array.shape != (self.ndof,):
-                raise ValueError("%s: shape %s; expected (%d,)" % (name, array.shape, self.ndof))
+                raise refused("%s: shape %s; expected (%d,)" % (name, array.shape, self.ndof))
         self._check(lib.fricreg_hb_set_excitation(self._hb, self.ndof, pointer(pc), pointer(ps)),
                     "set_excitation")
 
@@ -228,9 +252,9 @@ class HarmonicBalance:
             a value out of its range (a stiffness <= 0, a slip force or mu < 0; a gap other
             than 0), NaN or infinite. No element changes.
         """
-        self._check(lib.fricreg_hb_set_element_param(self._hb, int(first), int(count),
-                                                     int(index), float(value)),
-                    "set_element_param")
+        self._check(lib.fricreg_hb_set_element_param(
+            self._hb, as_integer(first, "first"), as_integer(count, "count"),
+            as_integer(index, "index"), as_scalar(value, "value")), "set_element_param")
 
     def element_param(self, element, index):
         """Parameter ``index`` of element ``element`` (``fricreg_hb_get_element_param``; the
@@ -242,7 +266,8 @@ class HarmonicBalance:
             element or index out of range.
         """
         value = ffi.new("double *")
-        self._check(lib.fricreg_hb_get_element_param(self._hb, int(element), int(index), value),
+        self._check(lib.fricreg_hb_get_element_param(self._hb, as_integer(element, "element"),
+                                                     as_integer(index, "index"), value),
                     "element_param")
         return value[0]
 
@@ -257,7 +282,8 @@ class HarmonicBalance:
         fricreg.InputError
             Not 0 < tol < 1, or max_iter outside 1..1000.
         """
-        self._check(lib.fricreg_hb_set_newton(self._hb, tol, int(max_iter)), "set_newton")
+        self._check(lib.fricreg_hb_set_newton(self._hb, as_scalar(tol, "tol"),
+                                              as_integer(max_iter, "max_iter")), "set_newton")
 
     def set_continuation(self, ds=0.02, ds_min=1e-6, ds_max=0.1, max_points=2000):
         """The continuation's step control in the scaled arclength
@@ -268,8 +294,9 @@ class HarmonicBalance:
         fricreg.InputError
             Not ds_min <= ds <= ds_max <= 1, ds_min <= 0, or max_points < 2.
         """
-        self._check(lib.fricreg_hb_set_continuation(self._hb, ds, ds_min, ds_max,
-                                                    int(max_points)), "set_continuation")
+        self._check(lib.fricreg_hb_set_continuation(
+            self._hb, as_scalar(ds, "ds"), as_scalar(ds_min, "ds_min"), as_scalar(ds_max, "ds_max"),
+            as_integer(max_points, "max_points")), "set_continuation")
 
     def set_stability(self, enable=True, method="auto"):
         """Floquet stability of every later solution (``fricreg_hb_set_stability``).
@@ -287,10 +314,9 @@ class HarmonicBalance:
 
         Raises
         ------
-        ValueError
-            An unknown method.
         fricreg.InputError
-            Hill's method on a model beyond ndof (2H + 1) = 1024.
+            (a ``ValueError``) An unknown method. Refused by the library: Hill's method on a
+            model beyond ndof (2H + 1) = 1024.
         """
         code = choice(_STABILITY_METHODS, method, "method")
         self._check(lib.fricreg_hb_set_stability_method(self._hb, code), "set_stability")
@@ -305,8 +331,8 @@ class HarmonicBalance:
             return None, ffi.NULL
         q0 = as_doubles(guess, "guess")
         if q0.shape != (self.nrows, 2 * self.harmonics + 1):
-            raise ValueError("guess: shape %s; expected (%d, %d)"
-                             % (q0.shape, self.nrows, 2 * self.harmonics + 1))
+            raise refused("guess: shape %s; expected (%d, %d)"
+                          % (q0.shape, self.nrows, 2 * self.harmonics + 1))
         return q0, pointer(q0)
 
     def _stability_of(self, k, omega):
@@ -353,21 +379,21 @@ class HarmonicBalance:
 
         Raises
         ------
-        ValueError
-            guess has the wrong shape.
         fricreg.InputError
-            omega <= 0 or not finite, a NaN in guess.
+            (a ``ValueError``) guess has the wrong shape. Refused by the library: omega <= 0 or
+            not finite, a NaN in guess.
         fricreg.Error
             FRICREG_ESINGULAR (K or some D_h singular), FRICREG_EWORK (Newton did not
             converge), FRICREG_EINTEGRATOR; the message is the driver's.
         fricreg.Interrupted
             Ctrl-C (its result is None: nothing is written).
         """
+        omega = as_scalar(omega, "omega")
         q0, q0_ptr = self._guess(guess)
         q = np.empty((self.nrows, 2 * self.harmonics + 1))
         self._run("solve", lambda: lib.fricreg_hb_solve(self._hb, omega, q.size, q0_ptr,
                                                          pointer(q)), lambda: None)
-        return self._solution(float(omega), q)
+        return self._solution(omega, q)
 
     def _response(self):
         """The stored branch as a Response."""
@@ -434,6 +460,7 @@ class HarmonicBalance:
             Ctrl-C; its result is the Response of the points computed so far (the first points
             of the uninterrupted branch, bit for bit).
         """
+        omega0, omega1 = as_scalar(omega0, "omega0"), as_scalar(omega1, "omega1")
         q0, q0_ptr = self._guess(guess)
         nq = self.nrows * (2 * self.harmonics + 1)
         self._run("frequency_response",
@@ -464,6 +491,8 @@ class HarmonicBalance:
         ------
         As :meth:`frequency_response`.
         """
+        omega = as_scalar(omega, "omega")
+        level0, level1 = as_scalar(level0, "level0"), as_scalar(level1, "level1")
         q0, q0_ptr = self._guess(guess)
         nq = self.nrows * (2 * self.harmonics + 1)
         self._run("level_response",
@@ -500,7 +529,8 @@ class HarmonicBalance:
             Ctrl-C (result None).
         """
         omega, rms = ffi.new("double *"), ffi.new("double *")
-        self._run("peak", lambda: lib.fricreg_hb_peak(self._hb, int(dof), omega, rms),
+        dof = as_integer(dof, "dof")
+        self._run("peak", lambda: lib.fricreg_hb_peak(self._hb, dof, omega, rms),
                   lambda: None)
         return omega[0], rms[0]
 
@@ -531,10 +561,9 @@ class HarmonicBalance:
 
         Raises
         ------
-        ValueError
-            An unknown damping.
         fricreg.InputError
-            mode out of range, not 0 < a0 < a1, npoints out of 2..max_points.
+            (a ``ValueError``) An unknown damping. Refused by the library: mode out of range,
+            not 0 < a0 < a1, npoints out of 2..max_points.
         fricreg.Error
             FRICREG_ESINGULAR, FRICREG_EWORK (Newton did not converge, or the march met a
             fold: try through_folds), FRICREG_EINTEGRATOR. Its ``result`` is the Backbone of
@@ -544,7 +573,9 @@ class HarmonicBalance:
         """
         code = choice(_DAMPING, damping, "damping")
         solve = lib.fricreg_hb_nma_continue if through_folds else lib.fricreg_hb_nma
-        self._run("backbone", lambda: solve(self._hb, int(mode), code, a0, a1, int(npoints)),
+        mode, npoints = as_integer(mode, "mode"), as_integer(npoints, "npoints")
+        a0, a1 = as_scalar(a0, "a0"), as_scalar(a1, "a1")
+        self._run("backbone", lambda: solve(self._hb, mode, code, a0, a1, npoints),
                   self._backbone)
         return self._backbone()
 
@@ -576,7 +607,8 @@ class HarmonicBalance:
         code = choice(_DAMPING, damping, "damping")
         a = as_doubles(amplitudes, "amplitudes", ndim=1)
         self._run("backbone_at",
-                  lambda: lib.fricreg_hb_nma_at(self._hb, int(mode), code, a.size, pointer(a)),
+                  lambda: lib.fricreg_hb_nma_at(self._hb, as_integer(mode, "mode"), code, a.size,
+                                                pointer(a)),
                   self._backbone)
         return self._backbone()
 
@@ -630,12 +662,11 @@ class HarmonicBalance:
 
         Raises
         ------
-        ValueError
-            A parameter not of those forms.
         fricreg.InputError
-            point out of range, a kind, range or index the library refuses (the message says
-            which: a parameter whose identity divides by 0, a stiffness on a model of more than
-            256 dofs, ...).
+            (a ``ValueError``) A parameter not of those forms. Refused by the library: point out
+            of range, a kind, range or index the library refuses (the message says which: a
+            parameter whose identity divides by 0, a stiffness on a model of more than 256 dofs,
+            ...).
         fricreg.Error
             FRICREG_ESINGULAR at a fold or a repeated stuck mode.
         """
@@ -646,8 +677,8 @@ class HarmonicBalance:
         for p in params:
             p = tuple(p)
             if not p or p[0] not in kinds:
-                raise ValueError("params: %r is not ('element', first, count, index), "
-                                 "('damping', index) or ('amplitude',)" % (p,))
+                raise refused("params: %r is not ('element', first, count, index), "
+                              "('damping', index) or ('amplitude',)" % (p,))
             if p[0] == "element" and len(p) == 4:
                 rows.append((kinds["element"], int(p[1]), int(p[2]), int(p[3])))
             elif p[0] == "damping" and len(p) == 2:
@@ -655,7 +686,7 @@ class HarmonicBalance:
             elif p[0] == "amplitude" and len(p) == 1:
                 rows.append((kinds["amplitude"], 0, 0, 0))
             else:
-                raise ValueError("params: %r has the wrong number of entries" % (p,))
+                raise refused("params: %r has the wrong number of entries" % (p,))
         n = len(rows)
         kind = ffi.new("int[]", [r[0] for r in rows] or [0])
         first, count, index = (ffi.new("size_t[]", [r[j] for r in rows] or [0])
@@ -663,7 +694,8 @@ class HarmonicBalance:
         domega, dzeta = np.empty(n), np.empty(n)
         damp = np.empty((n, self.ndof)) if amplitudes else None
         self._check(lib.fricreg_hb_nma_point_sensitivities(
-            self._hb, int(point), n, kind, first, count, index, pointer(domega), pointer(dzeta),
+            self._hb, as_integer(point, "point"), n, kind, first, count, index, pointer(domega),
+            pointer(dzeta),
             self.ndof, pointer(damp) if amplitudes else ffi.NULL), "backbone_sensitivities")
         return (domega, dzeta, damp) if amplitudes else (domega, dzeta)
 
@@ -689,7 +721,8 @@ class HarmonicBalance:
             point or harmonic out of range, no backbone, a sparse model of more than 256 dofs.
         """
         fraction = np.empty(self.ndof)
-        self._check(lib.fricreg_hb_nma_modal_participation(self._hb, int(point), int(harmonic),
+        self._check(lib.fricreg_hb_nma_modal_participation(self._hb, as_integer(point, "point"),
+                                                           as_integer(harmonic, "harmonic"),
                                                            self.ndof, pointer(fraction)),
                     "modal_participation")
         return fraction

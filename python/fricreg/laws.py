@@ -7,8 +7,8 @@ Coulomb (1), force balance at rest (2), Karnopp, velocity-limited (3), tanh and 
 import numpy as np
 
 from ._fricreg import ffi, lib
-from .arrays import as_doubles, pointer
-from .errors import raise_status
+from .arrays import as_doubles, as_scalar, pointer
+from .errors import raise_status, refused
 
 __all__ = ["LAWS", "law_eval"]
 
@@ -28,8 +28,8 @@ def _law_code(law):
     else:
         code = 0
     if code == 0:
-        raise ValueError("law: %r is not a law (one of %s, or its code 1..%d)"
-                         % (law, ", ".join(LAWS), len(LAWS)))
+        raise refused("law: %r is not a law (one of %s, or its code 1..%d)"
+                      % (law, ", ".join(LAWS), len(LAWS)))
     return code
 
 
@@ -61,11 +61,10 @@ def law_eval(law, v, f_eq, mun, eps):
 
     Raises
     ------
-    ValueError
-        ``law`` names no law, or an argument is not real numbers or does not broadcast.
     fricreg.InputError
-        (a ``ValueError``) ``f_eq`` is None for a law that needs it, a bound is negative,
-        ``eps`` is below DBL_MIN, or an input is NaN or infinite.
+        (a ``ValueError``) ``law`` names no law, or an argument is not real numbers or does not
+        broadcast. Refused by the library: ``f_eq`` is None for a law that needs it, a bound is
+        negative, ``eps`` is below DBL_MIN, or an input is NaN or infinite.
 
     Notes
     -----
@@ -74,13 +73,14 @@ def law_eval(law, v, f_eq, mun, eps):
     else -mun sgn(v - xi). Calls ``fricreg_law_eval_batch`` once.
     """
     code = _law_code(law)
+    eps = as_scalar(eps, "eps")
     arrays = [as_doubles(v, "v"), as_doubles(mun, "mun")]
     if f_eq is not None:
         arrays.append(as_doubles(f_eq, "f_eq"))
     try:
         broadcast = np.broadcast_arrays(*arrays)
     except ValueError as exc:
-        raise ValueError("v, f_eq and mun do not broadcast: %s" % exc) from None
+        raise refused("v, f_eq and mun do not broadcast: %s" % exc) from None
     v_b, mun_b = (np.ascontiguousarray(a) for a in broadcast[:2])
     f_eq_b = np.ascontiguousarray(broadcast[2]) if f_eq is not None else None
     f = np.empty(v_b.shape)

@@ -18,9 +18,9 @@ import numpy as np
 
 from . import structure_result
 from ._fricreg import ffi, lib
-from .arrays import as_doubles, choice, pointer
+from .arrays import as_doubles, as_scalar, choice, pointer
 from .element import Element, _type_for
-from .errors import AccuracyWarning, Error, Interrupted, raise_status
+from .errors import AccuracyWarning, Error, Interrupted, raise_status, refused
 from .laws import _law_code
 from .matrices import MatrixArgs, is_sparse
 from .structure_result import ErrorEstimate, EstimateCompanions, StructureResult
@@ -46,7 +46,7 @@ def _vector(a, name, n):
     """a as float64 of shape (n,); ValueError naming it otherwise."""
     a = as_doubles(a, name, ndim=1)
     if a.shape != (n,):
-        raise ValueError("%s: shape %s; expected (%d,)" % (name, a.shape, n))
+        raise refused("%s: shape %s; expected (%d,)" % (name, a.shape, n))
     return a
 
 
@@ -60,10 +60,10 @@ def _record(record, name):
     try:
         t0, dt_rec, samples = record
     except (TypeError, ValueError):
-        raise ValueError("%s: expected (t0, dt_rec, samples)" % name) from None
+        raise refused("%s: expected (t0, dt_rec, samples)" % name) from None
     samples = as_doubles(samples, name + " samples", ndim=1)
     if samples.size < 2:
-        raise ValueError("%s: %d samples; a record needs at least 2" % (name, samples.size))
+        raise refused("%s: %d samples; a record needs at least 2" % (name, samples.size))
     return float(t0), float(dt_rec), samples
 
 
@@ -140,12 +140,11 @@ class Structure:
 
     Raises
     ------
-    ValueError
-        An argument's shape, dtype or choice does not fit; the message names it.
     fricreg.InputError
-        (a ``ValueError``) the library refused an argument: not symmetric, M not positive
-        definite, a zero row of J, a negative bound, a parameter out of range, NaN or infinite;
-        the message names the argument and the library's reason.
+        (a ``ValueError``) An argument's shape, dtype or choice does not fit; the message names
+        it. Refused by the library: the library refused an argument: not symmetric, M not
+        positive definite, a zero row of J, a negative bound, a parameter out of range, NaN or
+        infinite; the message names the argument and the library's reason.
     fricreg.OutOfMemoryError
 
     Notes
@@ -166,16 +165,16 @@ class Structure:
                  answer_rtol=None):
         shape = _shape(M)
         if len(shape) != 2 or shape[0] != shape[1] or shape[0] < 1:
-            raise ValueError("M: shape %s; expected (ndof, ndof), ndof >= 1" % (shape,))
+            raise refused("M: shape %s; expected (ndof, ndof), ndof >= 1" % (shape,))
         n = self.ndof = shape[0]
         if (J is None) != (mun is None):
-            raise ValueError("%s: J and mun come together (neither: no friction contacts)"
-                             % ("mun" if mun is None else "J"))
+            raise refused("%s: J and mun come together (neither: no friction contacts)"
+                          % ("mun" if mun is None else "J"))
         if J is None and (law is not None or eps is not None):
-            raise ValueError("%s: the contacts' friction law: without J there is none"
-                             % ("eps" if eps is not None else "law"))
+            raise refused("%s: the contacts' friction law: without J there is none"
+                          % ("eps" if eps is not None else "law"))
         if damping is not None and rayleigh is not None:
-            raise ValueError("rayleigh: give damping or rayleigh, not both")
+            raise refused("rayleigh: give damping or rayleigh, not both")
         m = self.ncontacts = 0 if J is None else (_shape(J) + (0,))[0]
         out = ffi.new("fricreg_structure **")
         self._check(lib.fricreg_structure_create(n, max(m, 1), out), "ndof")
@@ -237,7 +236,7 @@ class Structure:
         """M, K, C or J (which: enum fricreg_model_matrix), dense or sparse, as it is."""
         args = MatrixArgs(a, name)
         if args.shape != shape:
-            raise ValueError("%s: shape %s; expected %s" % (name, args.shape, shape))
+            raise refused("%s: shape %s; expected %s as M's" % (name, args.shape, shape))
         self._check(lib.fricreg_structure_set_matrix(self._s, which, shape[0], shape[1],
                                                      args.format, args.ptr, args.ind,
                                                      args.values), name)
@@ -262,7 +261,7 @@ class Structure:
     def _set_load(self, load, load_history):
         if load is None:
             if load_history is not None:
-                raise ValueError("load_history: the time function of load: give both")
+                raise refused("load_history: the time function of load: give both")
             return
         p = _vector(load, "load", self.ndof)
         t0, dt_rec, g = (0.0, 0.0, None) if load_history is None else \
@@ -275,7 +274,7 @@ class Structure:
     def _add_elements(self, element_set, name):
         """One element set, fricreg_structure_add_elements."""
         if not isinstance(element_set, (tuple, list)) or len(element_set) not in (2, 3):
-            raise ValueError("%s: expected (element, J) or (element, J, params)" % name)
+            raise refused("%s: expected (element, J) or (element, J, params)" % name)
         element, J = element_set[:2]
         params = element_set[2] if len(element_set) == 3 else None
         if isinstance(element, Element):
@@ -283,27 +282,27 @@ class Structure:
         elif isinstance(element, str):
             type_name, own = element, None
         else:
-            raise ValueError("%s: %r is neither an Element nor a type name" % (name, element))
+            raise refused("%s: %r is neither an Element nor a type name" % (name, element))
         if params is None and own is None:
-            raise ValueError("%s: the parameters of %s elements are missing" % (name, type_name))
+            raise refused("%s: the parameters of %s elements are missing" % (name, type_name))
         params = as_doubles(own if params is None else params, name + " params")
         if params.ndim not in (1, 2):
-            raise ValueError("%s params: shape %s; expected (me, nparams) or (nparams,)"
-                             % (name, params.shape))
+            raise refused("%s params: shape %s; expected (me, nparams) or (nparams,)"
+                          % (name, params.shape))
         try:
             typ = _type_for(type_name, params.shape[-1])
         except ValueError as exc:
-            raise ValueError("%s: %s" % (name, exc)) from None
+            raise refused("%s: %s" % (name, exc)) from None
         dim = lib.fricreg_element_dim(typ)
         J = as_doubles(J.toarray() if is_sparse(J) else J, name + " J", ndim=2)
         if J.shape[0] == 0 or J.shape[0] % dim or J.shape[1] != self.ndof:
-            raise ValueError("%s J: shape %s; expected (me * %d, %d), %s's %d rows per element"
-                             % (name, J.shape, dim, self.ndof, type_name, dim))
+            raise refused("%s J: shape %s; expected (me * %d, %d), %s's %d rows per element"
+                          % (name, J.shape, dim, self.ndof, type_name, dim))
         me = J.shape[0] // dim
         if params.ndim == 1:
             params = np.tile(params, (me, 1))
         if params.shape[0] != me:
-            raise ValueError("%s params: shape %s; expected (%d, %d) or (%d,)" % (
+            raise refused("%s params: shape %s; expected (%d, %d) or (%d,)" % (
                 name, params.shape, me, params.shape[1], params.shape[1]))
         self._check(lib.fricreg_structure_add_elements(self._s, typ, me, self.ndof, pointer(J),
                                                        pointer(params)), name)
@@ -357,10 +356,9 @@ class Structure:
 
         Raises
         ------
-        ValueError
-            A shape does not fit.
         fricreg.InputError
-            NaN or infinite entries.
+            (a ``ValueError``) A shape does not fit. Refused by the library: NaN or infinite
+            entries.
         """
         u0 = np.zeros(self.ndof) if u0 is None else _vector(u0, "u0", self.ndof)
         v0 = np.zeros(self.ndof) if v0 is None else _vector(v0, "v0", self.ndof)
@@ -388,14 +386,14 @@ class Structure:
     def _integrator(self, integrator, alpha, rtol, atol):
         """The GSL stepper's code, or 0 for the structure's own schemes (selected here)."""
         if integrator not in INTEGRATORS:
-            raise ValueError("integrator: %r is not one of %s" % (integrator,
-                                                                  ", ".join(INTEGRATORS)))
+            raise refused("integrator: %r is not one of %s" % (integrator,
+                                                               ", ".join(INTEGRATORS)))
         if alpha is not None and integrator != "hht":
-            raise ValueError("alpha: only integrator 'hht' has alpha")
+            raise refused("alpha: only integrator 'hht' has alpha")
         if integrator in _SCHEMES:
             if rtol != 0.0 or atol is not None:
-                raise ValueError("%s: only GSL's steppers are adaptive"
-                                 % ("rtol" if rtol != 0.0 else "atol"))
+                raise refused("%s: only GSL's steppers are adaptive"
+                              % ("rtol" if rtol != 0.0 else "atol"))
             self._set_scheme(integrator, alpha)
             return 0
         return lib.fricreg_integrator_from_name(integrator.encode())
@@ -405,11 +403,11 @@ class Structure:
             return np.arange(self.ndof)
         dofs = np.asarray(output_dofs)
         if dofs.ndim != 1 or dofs.dtype.kind not in "iu":
-            raise ValueError("output_dofs: expected a sequence of dof numbers from 0, not %r"
-                             % (output_dofs,))
+            raise refused("output_dofs: expected a sequence of dof numbers from 0, not %r"
+                          % (output_dofs,))
         bad = dofs[(dofs < 0) | (dofs >= self.ndof)]
         if bad.size:
-            raise ValueError("output_dofs: dof %d is not in 0 .. %d" % (bad[0], self.ndof - 1))
+            raise refused("output_dofs: dof %d is not in 0 .. %d" % (bad[0], self.ndof - 1))
         return dofs.astype(np.int64)
 
     def run(self, integrator="newmark", *, dt, t_end, output_dofs=None, output_every=1,
@@ -448,10 +446,9 @@ class Structure:
 
         Raises
         ------
-        ValueError
-            An argument out of its range or choice; the message names it.
         fricreg.InputError
-            (a ``ValueError``) the library refused an argument (hht's alpha out of range, a
+            (a ``ValueError``) An argument out of its range or choice; the message names it.
+            Refused by the library: the library refused an argument (hht's alpha out of range, a
             step too long for the model's numbers, elements with a GSL stepper, ...).
         fricreg.Error
             The run failed (``FRICREG_ESTEP``: a central or explicit fixed step beyond its
@@ -480,15 +477,15 @@ class Structure:
         structure's state: two runs to T1 and T2 take the steps of one run to T2.
         """
         code = self._integrator(integrator, alpha, rtol, atol)
-        dt, t_end, t = float(dt), float(t_end), self.t
+        dt, t_end, t = as_scalar(dt, "dt"), as_scalar(t_end, "t_end"), self.t
         if not 0.0 < dt < np.inf:
-            raise ValueError("dt: %r must be finite and > 0" % dt)
+            raise refused("dt: %r must be finite and > 0" % dt)
         if not t < t_end < np.inf:
-            raise ValueError("t_end: %r must be finite and after the structure's time %r"
-                             % (t_end, t))
+            raise refused("t_end: %r must be finite and after the structure's time %r"
+                          % (t_end, t))
         every = int(output_every)
         if every < 1 or every != output_every:
-            raise ValueError("output_every: %r must be a whole number >= 1" % (output_every,))
+            raise refused("output_every: %r must be a whole number >= 1" % (output_every,))
         recorder = structure_result.Recorder(self._output_dofs(output_dofs), self.ndof,
                                              self.ncontacts, t, dt, t_end, every)
         recorder.observe_now(self._s)
@@ -597,22 +594,21 @@ class Structure:
 
         Raises
         ------
-        TypeError
-            ``data`` is not bytes-like.
-        ValueError
-            ``integrator`` is not one of the structure's own schemes.
         fricreg.InputError
-            Not a checkpoint, truncated or corrupted, of another build, or of a structure set
-            up otherwise (the message names the first difference). The state is unchanged.
+            (a ``ValueError``) ``data`` is not bytes-like (a ``TypeError`` before 1.9), or
+            ``integrator`` is not one of the structure's own schemes. Refused
+            by the library: Not a checkpoint, truncated or corrupted, of another build, or of a
+            structure set up otherwise (the message names the first difference). The state is
+            unchanged.
         """
         try:
             buf = ffi.from_buffer(data)
         except TypeError:
-            raise TypeError("data: a %s is not bytes-like" % type(data).__name__) from None
+            raise refused("data: a %s is not bytes-like" % type(data).__name__) from None
         if integrator is not None:
             if integrator not in _SCHEMES:
-                raise ValueError("integrator: %r is not one of %s"
-                                 % (integrator, ", ".join(_SCHEMES)))
+                raise refused("integrator: %r is not one of %s"
+                              % (integrator, ", ".join(_SCHEMES)))
             self._set_scheme(integrator, alpha)
         self._check(lib.fricreg_structure_restore(self._s, buf, len(buf)), "data",
                     "Structure.restore")

@@ -22,12 +22,13 @@ int fricreg_hb_continue(fricreg_hb *hb, double omega0, double omega1, size_t nq,
     const char *fn = "continue";
     if (hb->busy)
         return fr_hb_refuse(hb, fn);
-    int status = fr_hb_check_start(hb, fn, omega0, nq, q0);
+    int status = fr_hb_check_start(hb, fn, "omega0", omega0, nq, q0);
     if (status == FRICREG_OK && !isfinite(omega1))
-        status = fr_fail(hb, FRICREG_ENONFINITE, "%s: Omega1 = %g", fn, omega1);
+        status = fr_fail(hb, FRICREG_ENONFINITE, "%s: omega1 = %g", fn, omega1);
     if (status == FRICREG_OK && (!(omega1 > 0.0) || omega1 == omega0))
-        status = fr_fail(hb, FRICREG_EINVAL, "%s: Omega1 = %g must be > 0 and differ from %g", fn,
-                         omega1, omega0);
+        status = fr_fail(hb, FRICREG_EINVAL,
+                         "%s: omega1 = %g must be > 0 and differ from omega0 = %g", fn, omega1,
+                         omega0);
     if (status != FRICREG_OK)
         return status;
     struct fr_error before = hb->err; /* a success keeps it: a failed start is not the call's */
@@ -56,7 +57,7 @@ int fricreg_hb_continue_level(fricreg_hb *hb, double omega, double level0, doubl
     const char *fn = "continue_level";
     if (hb->busy)
         return fr_hb_refuse(hb, fn);
-    int status = fr_hb_check_start(hb, fn, omega, nq, q0);
+    int status = fr_hb_check_start(hb, fn, "omega", omega, nq, q0);
     if (status == FRICREG_OK && (!isfinite(level0) || !isfinite(level1)))
         status = fr_fail(hb, FRICREG_ENONFINITE, "%s: level0 = %g, level1 = %g", fn, level0,
                          level1);

@@ -21,7 +21,7 @@ int fricreg_hb_solve(fricreg_hb *hb, double omega, size_t nq, const double q0[],
         return fr_hb_refuse(hb, "solve");
     struct fr_error before = hb->err; /* a success keeps it: a first guess's failure is not
                                          the call's */
-    int status = fr_hb_check_start(hb, "solve", omega, nq, q0);
+    int status = fr_hb_check_start(hb, "solve", "omega", omega, nq, q0);
     if (status != FRICREG_OK)
         return status;
     fr_hb_begin(hb, 0); /* Ω is fixed: the monitor sees the level of the start's branch */

@@ -11,13 +11,14 @@
 #include "hb/dynamic.h"
 #include "hb/newton.h"
 
-/* The arguments every solve shares: omega, nq, q0. */
-int fr_hb_check_start(fricreg_hb *hb, const char *fn, double omega, size_t nq, const double *q0)
+/* The arguments every solve shares: omega (named as the caller's header names it), nq, q0. */
+int fr_hb_check_start(fricreg_hb *hb, const char *fn, const char *name, double omega, size_t nq,
+                      const double *q0)
 {
     if (!isfinite(omega))
-        return fr_fail(hb, FRICREG_ENONFINITE, "%s: Omega = %g", fn, omega);
+        return fr_fail(hb, FRICREG_ENONFINITE, "%s: %s = %g", fn, name, omega);
     if (!(omega > 0.0))
-        return fr_fail(hb, FRICREG_EINVAL, "%s: Omega = %g must be > 0", fn, omega);
+        return fr_fail(hb, FRICREG_EINVAL, "%s: %s = %g must be > 0", fn, name, omega);
     if (!hb->have_elements)
         return fr_fail(hb, FRICREG_EINVAL,
                        "%s: %zu of the driver's %zu elements held (fricreg_hb_set_elements, "

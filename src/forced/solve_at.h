@@ -6,7 +6,8 @@
 #include "hb/hb_internal.h"
 
 /* The checks of omega, nq and q0 that fricreg_hb_solve and fricreg_hb_continue share. */
-int fr_hb_check_start(fricreg_hb *hb, const char *fn, double omega, size_t nq, const double *q0);
+int fr_hb_check_start(fricreg_hb *hb, const char *fn, const char *name, double omega, size_t nq,
+                      const double *q0);
 
 /* Factors at omega and solves (R) from q0, or from the stuck guess and then the slipping one:
  * the solution in qw (R, fq, jq at it), with keep its stability computed (when on) and kept as

@@ -58,18 +58,20 @@ static int check_value(fricreg_hb *hb, const char *fn, size_t e, size_t j, doubl
         p[j] = old;
         return status == FRICREG_OK
                    ? FRICREG_OK
-                   : fr_fail(hb, status, "%s: element %zu (%s): %s", fn, e, name_of(hb, e), msg);
+                   : fr_fail(hb, status, "%s: value = %g as parameter %zu of element %zu (%s): %s",
+                             fn, value, j, e, name_of(hb, e), msg);
     }
     if (slot_of(hb, e, j) == NULL)
         return value == 0.0 ? FRICREG_OK
                             : fr_fail(hb, FRICREG_EINVAL,
-                                      "%s: element %zu (%s): gap = %g: HB's normal law is n0 + "
-                                      "kn g without a gap (the preload is n0)",
-                                      fn, e, name_of(hb, e), value);
+                                      "%s: value = %g as element %zu's gap (%s): HB's normal "
+                                      "law is n0 + kn g without a gap (the preload is n0)",
+                                      fn, value, e, name_of(hb, e));
     int positive = j < ns, nonnegative = j < 2 * ns + 1 && !positive;
     if ((positive && !(value > 0.0)) || (nonnegative && !(value >= 0.0)))
-        return fr_fail(hb, FRICREG_EINVAL, "%s: element %zu (%s): parameter %zu = %g must be %s",
-                       fn, e, name_of(hb, e), j, value, positive ? "> 0" : ">= 0");
+        return fr_fail(hb, FRICREG_EINVAL,
+                       "%s: value = %g as parameter %zu of element %zu (%s) must be %s", fn, value,
+                       j, e, name_of(hb, e), positive ? "> 0" : ">= 0");
     return FRICREG_OK;
 }
 
@@ -85,17 +87,14 @@ static void resum(fricreg_hb *hb, size_t e)
     hb->nl[hb->me + e] = musum;
 }
 
-/* The range's and index's checks common to both calls. */
-static int check_range(fricreg_hb *hb, const char *fn, size_t first, size_t count, size_t index)
+/* The index's check over the elements first .. first + count - 1, held. */
+static int check_index(fricreg_hb *hb, const char *fn, size_t first, size_t count, size_t index)
 {
-    if (count == 0 || first >= hb->count || count > hb->count - first)
-        return fr_fail(hb, FRICREG_EINVAL, "%s: elements %zu .. %zu + %zu - 1: %zu are held", fn,
-                       first, first, count, hb->count);
     for (size_t e = first; e < first + count; e++)
         if (index >= params_of(hb, e))
             return fr_fail(hb, FRICREG_EINVAL,
-                           "%s: index %zu, element %zu (%s) has %zu parameters (from 0)", fn, index,
-                           e, name_of(hb, e), params_of(hb, e));
+                           "%s: index = %zu: element %zu (%s) has %zu parameters (from 0)", fn,
+                           index, e, name_of(hb, e), params_of(hb, e));
     return FRICREG_OK;
 }
 
@@ -105,7 +104,11 @@ int fricreg_hb_set_element_param(fricreg_hb *hb, size_t first, size_t count, siz
     static const char fn[] = "set_element_param";
     if (hb == NULL || hb->busy)
         return fr_hb_refuse(hb, fn);
-    int status = check_range(hb, fn, first, count, index);
+    if (count == 0 || first >= hb->count || count > hb->count - first)
+        return fr_fail(hb, FRICREG_EINVAL,
+                       "%s: first = %zu, count = %zu: not a range of the %zu elements held", fn,
+                       first, count, hb->count);
+    int status = check_index(hb, fn, first, count, index);
     if (status != FRICREG_OK)
         return status;
     if (!isfinite(value))
@@ -132,7 +135,9 @@ int fricreg_hb_get_element_param(fricreg_hb *hb, size_t e, size_t index, double 
         return fr_hb_refuse(hb, fn);
     if (value == NULL)
         return fr_fail(hb, FRICREG_ENULL, "%s: value is NULL", fn);
-    int status = check_range(hb, fn, e, 1, index);
+    if (e >= hb->count)
+        return fr_fail(hb, FRICREG_EINVAL, "%s: e = %zu: %zu elements are held", fn, e, hb->count);
+    int status = check_index(hb, fn, e, 1, index);
     if (status != FRICREG_OK)
         return status;
     const double *slot = slot_of(hb, e, index);

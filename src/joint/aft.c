@@ -4,6 +4,7 @@
  * The two paths are aft_exact.c and aft_sampled.c. */
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -102,6 +103,19 @@ size_t fricreg_aft_samples(const fricreg_aft *aft)
     return aft ? aft->N : 0;
 }
 
+/* Slider s's stiffness and bound as fn's header names them: kt and mun of a Jenkins call (with
+ * a normal law the bound is the law's, checked apart), k[s] and phi[s] of an Iwan call. */
+static void slider_names(const char *fn, size_t s, char kname[32], char pname[32])
+{
+    if (strncmp(fn, "jenkins", 7) == 0) {
+        strcpy(kname, "kt");
+        strcpy(pname, "mun");
+        return;
+    }
+    snprintf(kname, 32, "k[%zu]", s);
+    snprintf(pname, 32, "phi[%zu]", s);
+}
+
 /* The checks every evaluation shares: the pointers, n, the sliders and u, in that order. */
 static int check(fricreg_aft *a, const char *fn, int sampled, size_t ns, const double *k,
                  const double *phi, size_t n, const double *u, const double *f)
@@ -121,14 +135,16 @@ static int check(fricreg_aft *a, const char *fn, int sampled, size_t ns, const d
     if (ns == 0)
         return fr_fail(a, FRICREG_EINVAL, "%s: ns = 0 sliders", fn);
     double ksum = 0.0, usum = 0.0;
+    char kname[32], pname[32]; /* the header's names: kt and mun of a Jenkins call, else k[s] */
     for (size_t s = 0; s < ns; s++) {
+        slider_names(fn, s, kname, pname);
         if (!isfinite(k[s]) || !isfinite(phi[s]))
-            return fr_fail(a, FRICREG_ENONFINITE, "%s: stiffness[%zu] = %g, bound[%zu] = %g", fn, s,
-                           k[s], s, phi[s]);
+            return fr_fail(a, FRICREG_ENONFINITE, "%s: %s = %g, %s = %g", fn, kname, k[s], pname,
+                           phi[s]);
         if (!(k[s] > 0.0))
-            return fr_fail(a, FRICREG_EINVAL, "%s: stiffness[%zu] = %g must be > 0", fn, s, k[s]);
+            return fr_fail(a, FRICREG_EINVAL, "%s: %s = %g must be > 0", fn, kname, k[s]);
         if (!(phi[s] >= 0.0))
-            return fr_fail(a, FRICREG_EINVAL, "%s: bound[%zu] = %g must be >= 0", fn, s, phi[s]);
+            return fr_fail(a, FRICREG_EINVAL, "%s: %s = %g must be >= 0", fn, pname, phi[s]);
         ksum += k[s];
     }
     for (size_t j = 0; j < n; j++) {
