@@ -51,20 +51,21 @@ class AccuracyWarning(UserWarning):
     (``enum fricreg_warning``: a coarse step, an error estimate above its tolerance, ...)."""
 
 
-class Interrupted(KeyboardInterrupt):
-    """Ctrl-C (SIGINT) stopped a long call through the library's own cancellation; a
-    ``KeyboardInterrupt``, so that ``except KeyboardInterrupt`` catches it.
+#: Ctrl-C (SIGINT) stopped a long call through the library's own cancellation: Python's own
+#: ``KeyboardInterrupt`` (since 1.9 the class itself, not a subclass: CPython exits with
+#: status 130, as a shell expects of Ctrl-C, only for that exact class), raised with a
+#: ``result`` attribute holding what the call had computed when it stopped (a continuation's
+#: points so far, a backbone's points, a structure's run so far; None where it had nothing).
+#: ``except fricreg.Interrupted`` and ``except KeyboardInterrupt`` catch it alike.
+Interrupted = KeyboardInterrupt
 
-    Attributes
-    ----------
-    result : object
-        What the call had computed when it stopped (a continuation's points so far, a
-        backbone's points), as the call would have returned it; None where it had nothing.
-    """
 
-    def __init__(self, result):
-        super().__init__("interrupted (Ctrl-C); the points computed so far are in .result")
-        self.result = result
+def interrupted(result):
+    """The KeyboardInterrupt of a call Ctrl-C stopped, its ``result`` what the call had
+    computed."""
+    error = KeyboardInterrupt("interrupted (Ctrl-C); the points computed so far are in .result")
+    error.result = result
+    return error
 
 
 _STATUS_NAMES = dict(ffi.typeof("enum fricreg_status").elements)  # value: name

@@ -14,7 +14,7 @@ import numpy as np
 from ._fricreg import ffi, lib
 from .arrays import as_doubles, as_integer, as_scalar, choice, pointer
 from .element import Element
-from .errors import Error, InputError, Interrupted, raise_status, refused
+from .errors import Error, InputError, interrupted, raise_status, refused
 from .hb_results import Backbone, Bifurcation, Response, Solution, SpecialPoint
 from .matrices import MatrixArgs
 
@@ -202,7 +202,7 @@ class HarmonicBalance:
         status = call()
         exception, _calls.exception = _calls.exception, None
         if isinstance(exception, KeyboardInterrupt):
-            raise Interrupted(partial()) from None
+            raise interrupted(partial()) from None
         if exception is not None:
             raise exception
         if status != lib.FRICREG_OK:

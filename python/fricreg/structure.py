@@ -20,7 +20,7 @@ from . import structure_result
 from ._fricreg import ffi, lib
 from .arrays import as_doubles, as_scalar, choice, pointer
 from .element import Element, _type_for
-from .errors import AccuracyWarning, Error, Interrupted, raise_status, refused
+from .errors import AccuracyWarning, Error, interrupted, raise_status, refused
 from .laws import _law_code
 from .matrices import MatrixArgs, is_sparse
 from .structure_result import ErrorEstimate, EstimateCompanions, StructureResult
@@ -514,7 +514,7 @@ class Structure:
                 exc.result = result
                 raise
         if isinstance(interrupt, KeyboardInterrupt):
-            raise Interrupted(result) from None
+            raise interrupted(result) from None
         if interrupt is not None:  # an error of the recording itself
             raise interrupt
         return result

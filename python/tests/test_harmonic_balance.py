@@ -2,6 +2,9 @@
 """fricreg.HarmonicBalance against the C library driven directly on the same inputs (bit for
 bit), the closed forms of a Jenkins oscillator (its stuck linear response, its backbone's
 describing function), and its Ctrl-C and thread promises."""
+import signal
+import subprocess
+import sys
 import threading
 import _thread
 import time
@@ -334,6 +337,26 @@ def test_ctrl_c_keeps_the_points_computed():
         bounded.frequency_response(0.5, 2.0)
     assert failed.value.result.omega.tobytes() == partial.omega.tobytes()
     assert failed.value.result.rms.tobytes() == partial.rms.tobytes()
+
+
+def test_uncaught_ctrl_c_exits_as_sigint():
+    """A script a Ctrl-C stops inside a sweep, uncaught, ends as Python ends on Ctrl-C: killed
+    by SIGINT (a shell's status 130), not exit status 1 (CPython does so for the exact class
+    KeyboardInterrupt only)."""
+    script = (
+        "import _thread, threading, numpy as np, fricreg\n"
+        "K = np.array([[2.0, -1.0, 0.0], [-1.0, 2.0, -1.0], [0.0, -1.0, 2.0]])\n"
+        "J = np.array([[1.0, 0.0, 0.0], [-1.0, 1.0, 0.0]])\n"
+        "hb = fricreg.HarmonicBalance(np.eye(3), K, 0.02 * K, harmonics=7,\n"
+        "    elements=[(fricreg.Element('jenkins', [20.0, 1.0]), J)],\n"
+        "    excitation=([0.0, 1.0, 0.0], None))\n"
+        "hb.set_continuation(ds=5e-4, ds_max=5e-4, max_points=100000)\n"
+        "threading.Timer(0.2, _thread.interrupt_main).start()\n"
+        "hb.frequency_response(0.5, 2.0)\n"
+        "import time; time.sleep(5)\n")
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, timeout=60)
+    assert done.returncode in (-signal.SIGINT, 128 + signal.SIGINT), done.stderr.decode()
+    assert b"KeyboardInterrupt" in done.stderr
 
 
 def test_four_threads_give_the_serial_answers():
