@@ -133,6 +133,11 @@ class Element:
         Returns
         -------
         state : ndarray of float64, shape (npoints, nstate), or (nstate,) for None
+
+        Raises
+        ------
+        fricreg.InputError
+            (a ``ValueError``) npoints is not an integer, or is negative.
         """
         shape = (self.nstate,) if npoints is None else (as_integer(npoints, "npoints"), self.nstate)
         if npoints is not None and shape[0] < 0:

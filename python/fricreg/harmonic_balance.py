@@ -289,6 +289,20 @@ class HarmonicBalance:
         """The continuation's step control in the scaled arclength
         (``fricreg_hb_set_continuation``, whose defaults these are).
 
+        Parameters
+        ----------
+        ds : float
+            The first step, ds_min <= ds <= ds_max, in the arclength of the scaled unknowns
+            (q by its largest entry so far, Ω by |omega1 - omega0|: ds = 0.01 is about a
+            hundredth of the interval on a flat branch); nondimensional.
+        ds_min, ds_max : float
+            The smallest step, > 0 (a rejected step is halved down to it; below it the
+            continuation stops with FRICREG_EINTEGRATOR) and the largest, <= 1 (the step
+            follows the corrector's convergence and the branch's curvature up to it).
+        max_points : int
+            The most points a branch stores, >= 2; a continuation that would store more stops
+            with FRICREG_EWORK, the points reached kept.
+
         Raises
         ------
         fricreg.InputError
