@@ -13,7 +13,10 @@ function [X, info] = fricreg_nlvib_frf(system, H, Om_s, Om_e, varargin)
 %           struct array; [] or absent for none). The element types with a fricreg element:
 %              elasticDryFriction  fricreg's 'jenkins' (exact, not sampled at N): stiffness,
 %                                  friction_limit_force, force_direction (the row of J).
-%           Any other type (cubicSpring, unilateralSpring, tanhDryFriction, quadraticDamper,
+%              unilateralSpring    stiffness max(q - gap, 0): fricreg's 'jenkins_normal' with
+%                                  mu = 0 (no friction), kn = stiffness, n0 = -stiffness gap,
+%                                  two rows w' of J (its tangential row carries no force).
+%           Any other type (cubicSpring, tanhDryFriction, quadraticDamper,
 %           polynomialStiffness, ...) raises fricreg:nlvib naming it.
 %   H       the harmonics, 1..40.
 %   OM_S, OM_E  the start and end frequencies, rad/s (> 0, either order).
@@ -72,7 +75,8 @@ for k = 1:2:numel(varargin)
     case {'x0', 'stability'}
         opts.(varargin{k}) = varargin{k + 1};
     case 'ds'
-        rest = [rest, {'continuation', [varargin{k + 1} 1e-6 max(0.1, varargin{k + 1}) 2000]}]; %#ok<AGROW>
+        ds = varargin{k + 1};
+        rest = [rest, {'continuation', [ds 1e-6 max(0.1, ds) 2000]}]; %#ok<AGROW>
     case {'newton', 'continuation', 'method'}
         rest = [rest, varargin(k:k + 1)]; %#ok<AGROW>
     otherwise
@@ -135,19 +139,16 @@ for i = 1:numel(list)
     if isfield(e, 'islocal') && ~e.islocal
         bad{end + 1} = sprintf('%s (element %d, global)', type, i); %#ok<AGROW>
     elseif strcmpi(type, 'elasticDryFriction')
-        for field = {'stiffness', 'friction_limit_force', 'force_direction'}
-            if ~isfield(e, field{1})
-                error('fricreg:nlvib', ['fricreg_nlvib_frf: nonlinear_elements{%d} ' ...
-                                        '(elasticDryFriction) has no field %s'], i, field{1});
-            end
-        end
-        w = e.force_direction;
-        if ~isnumeric(w) || numel(w) ~= n
-            error('fricreg:nlvib', ['fricreg_nlvib_frf: nonlinear_elements{%d}.force_direction ' ...
-                                    'must have ndof = %d elements'], i, n);
-        end
-        elements(end + 1) = struct('type', 'jenkins', 'J', reshape(w, 1, n), ...
+        w = direction(e, i, n, {'stiffness', 'friction_limit_force', 'force_direction'});
+        elements(end + 1) = struct('type', 'jenkins', 'J', w, ...
                                    'params', [e.stiffness, e.friction_limit_force]); %#ok<AGROW>
+    elseif strcmpi(type, 'unilateralSpring')
+        w = direction(e, i, n, {'stiffness', 'gap', 'force_direction'});
+        % k max(q - gap, 0) = max(0, n0 + kn q), n0 = -k gap: jenkins_normal's normal law,
+        % its friction off (mu = 0: no tangential force on its tangential row, q's too)
+        k = e.stiffness;
+        elements(end + 1) = struct('type', 'jenkins_normal', 'J', [w; w], ...
+                                   'params', [k, 0, k, -k * e.gap, 0]); %#ok<AGROW>
     else
         if isempty(type)
             type = '(no type)';
@@ -157,9 +158,26 @@ for i = 1:numel(list)
 end
 if ~isempty(bad)
     error('fricreg:nlvib', ['fricreg_nlvib_frf: NLvib element type with no fricreg element: ' ...
-                            '%s; supported: elasticDryFriction (fricreg''s jenkins)'], ...
+                            '%s; supported: elasticDryFriction (fricreg''s jenkins), ' ...
+                            'unilateralSpring (jenkins_normal without friction)'], ...
           strjoin(bad, ', '));
 end
+end
+
+function w = direction(e, i, n, fields)
+% Element i's force_direction as a row of J, its fields checked.
+for field = fields
+    if ~isfield(e, field{1})
+        error('fricreg:nlvib', 'fricreg_nlvib_frf: nonlinear_elements{%d} (%s) has no field %s', ...
+              i, e.type, field{1});
+    end
+end
+w = e.force_direction;
+if ~isnumeric(w) || numel(w) ~= n
+    error('fricreg:nlvib', ['fricreg_nlvib_frf: nonlinear_elements{%d}.force_direction must ' ...
+                            'have ndof = %d elements'], i, n);
+end
+w = reshape(double(w), 1, n);
 end
 
 function yes = isprop_(object, name)

@@ -1,7 +1,8 @@
 % SPDX-License-Identifier: GPL-3.0-or-later
 function sys = fricreg_test_nlvib_chain(all_elements)
-%FRICREG_TEST_NLVIB_CHAIN  NLvib's example 07 (EXAMPLES/07_multiDOFoscillator_multipleNonlinearities,
-%   M. Krack and J. Gross, https://github.com/maltekrack/NLvib) as the struct its
+%FRICREG_TEST_NLVIB_CHAIN  NLvib's example 07 (M. Krack and J. Gross,
+%   https://github.com/maltekrack/NLvib: EXAMPLES/07_multiDOFoscillator_multipleNonlinearities)
+%   as the struct its
 %   ChainOfOscillators(mi, di, ki, nonlinear_elements, Fex1) holds: unit masses, springs ki =
 %   [1 1 1 1] ground-1-2-3-ground, dampers di = 0.02 ki, Fex1 = [0; 1; 0]; its two
 %   elasticDryFriction elements (knl = 20, muN = 1, between dof 1 and the ground and between

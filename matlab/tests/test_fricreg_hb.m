@@ -8,7 +8,10 @@ function failures = test_fricreg_hb()
 %   damping: Krack 2015, Sec. 3), its motion a phi cos(omega t). NLvib's 3-dof chain through
 %   fricreg_nlvib_frf equals the same model built through the gateway's lower-level commands
 %   (fricreg_mex 'hb_*', with fricreg_hb_set_jenkins rather than fricreg_hb_add_elements) bit
-%   for bit, its layout NLvib's (SRC/HB_residual.m: [X0; Xc1; Xs1; ...; Om], n rows a block).
+%   for bit, its layout NLvib's (SRC/HB_residual.m: [X0; Xc1; Xs1; ...; Om], n rows a block); its
+%   unilateral spring against the linear closed forms where it never or always touches; and,
+%   where the environment's FRICREG_NLVIB names an NLvib checkout, NLvib's own HB_residual at
+%   the adapter's X.
 cases = {'stuck_solve_is_linear', @stuck_solve_is_linear
          'stuck_branch_is_linear', @stuck_branch_is_linear
          'sparse_equals_dense', @sparse_equals_dense
@@ -17,7 +20,9 @@ cases = {'stuck_solve_is_linear', @stuck_solve_is_linear
          'chain_stability_and_peak', @chain_stability_and_peak
          'nlvib_chain_bit_for_bit', @nlvib_chain_bit_for_bit
          'nlvib_guess_and_object', @nlvib_guess_and_object
-         'nlvib_layout', @nlvib_layout};
+         'nlvib_layout', @nlvib_layout
+         'nlvib_unilateral_spring', @nlvib_unilateral_spring
+         'nlvib_residual', @nlvib_residual};
 failures = fricreg_test_run('hb', cases);
 end
 
@@ -271,5 +276,82 @@ for k = 1:n
     Qk = X(k:n:end - 1, :); % NLvib's example: Q1 = X(1:n:end-1, :), ...
     rms = sqrt(Qk(1, :).^2 + sum(Qk(2:end, :).^2) / 2);
     fricreg_test_check(rms, info.rms(k, :), 1e-14, sprintf('rms of dof %d', k));
+end
+end
+
+function sys = example_03(gap)
+% NLvib's example 03 (EXAMPLES/03_twoDOFoscillator_unilateralSpring): masses [1 1], springs
+% ki = [0 1 1], dampers 0.03 ki, Fex1 = [0; 0.1], a unilateral spring of stiffness 100 on dof 1.
+K = [1 -1; -1 2];
+sys = struct('M', eye(2), 'K', K, 'D', 0.03 * K, 'Fex1', [0; 0.1]);
+sys.nonlinear_elements = struct('type', 'unilateralSpring', 'stiffness', 1e2, 'gap', gap, ...
+                                'force_direction', [1; 0]);
+end
+
+function nlvib_unilateral_spring()
+% Never touching (gap 50): the linear response without the spring. Always pressed (gap -50:
+% the force k (q - gap) > 0 all period): the linear response with it, and the mean
+% (K + k w w') x0 = k gap w from the preload -k gap.
+w = [1; 0];
+k = 1e2;
+for gap = [50 -50]
+    sys = example_03(gap);
+    [X, info] = fricreg_nlvib_frf(sys, 5, 0.8, 0.5);
+    K0 = sys.K + (gap < 0) * k * (w * w');
+    x0 = K0 \ ((gap < 0) * k * gap * w);
+    for p = 1:size(X, 2)
+        Om = X(end, p);
+        Q1 = (K0 - Om^2 * sys.M + 1i * Om * sys.D) \ sys.Fex1;
+        fricreg_test_check(X(1:2, p), x0, 1e-12, sprintf('gap %g: X0', gap), max(abs(x0)) + 1);
+        fricreg_test_check(X(3:6, p), [real(Q1); -imag(Q1)], 1e-9, sprintf('gap %g: X1', gap), ...
+                           max(abs(Q1)));
+        fricreg_test_check(X(7:end - 1, p), zeros(size(X, 1) - 7, 1), 1e-9, ...
+                           sprintf('gap %g: higher harmonics', gap), max(abs(Q1)));
+    end
+end
+% touching part of the period (gap 1, example 03's): the lower-level build, bit for bit
+sys = example_03(1);
+X = fricreg_nlvib_frf(sys, 9, 0.8, 0.5);
+h = fricreg_mex('hb_create', 2, 1, 9);
+cleanup = onCleanup(@() fricreg_mex('free', h));
+fricreg_mex('hb_set_matrix', h, 'mass', sys.M);
+fricreg_mex('hb_set_matrix', h, 'stiffness', sys.K);
+fricreg_mex('hb_set_matrix', h, 'damping', sys.D);
+fricreg_mex('hb_add_elements', h, 'jenkins_normal', [1 0; 1 0], [1e2 0 1e2 -1e2 0]);
+fricreg_mex('hb_set_excitation', h, [0; 0.1], [0; 0]);
+[omega, ~, ~, x] = fricreg_mex('hb_continue', h, 0.8, 0.5);
+if ~same_bits(X, nlvib_layout_of(omega, x)) || max(abs(X(1, :))) < 1e-3
+    error('test:hb', 'example 03: the adapter differs from the lower-level build, or no contact');
+end
+end
+
+function nlvib_residual()
+% NLvib's own residual (SRC/HB_residual.m, its AFT at 2^12 samples a period) at the adapter's
+% X, on NLvib's own ChainOfOscillators, with a complex Fex1: small as the samples' error where
+% the conventions (layout, signs, Fex1's phase) agree, O(1) where one does not. Only where
+% FRICREG_NLVIB names an NLvib checkout (it is not part of fricreg).
+root = getenv('FRICREG_NLVIB');
+if isempty(root)
+    fprintf('     (skipped: FRICREG_NLVIB is not set)\n');
+    return;
+end
+addpath(fullfile(root, 'SRC'), fullfile(root, 'SRC', 'MechanicalSystems'));
+c = fricreg_test_nlvib_chain();
+sys = ChainOfOscillators([1 1 1], 0.02 * [1 1 1 1], [1 1 1 1], c.nonlinear_elements, ...
+                         [0; 0.6 - 0.8i; 0.3i]);
+X = fricreg_nlvib_frf(sys, 7, 0.5, 2);
+e3 = example_03(1);
+osc = ChainOfOscillators([1 1], 0.03 * [0 1 1], [0 1 1], e3.nonlinear_elements, e3.Fex1);
+X3 = fricreg_nlvib_frf(osc, 21, 0.8, 0.5);
+worst = [0 0];
+for p = 1:size(X, 2)
+    worst(1) = max(worst(1), max(abs(HB_residual(X(:, p), sys, 7, 2^12, 'FRF'))));
+end
+for p = 1:size(X3, 2)
+    worst(2) = max(worst(2), max(abs(HB_residual(X3(:, p), osc, 21, 2^12, 'FRF'))));
+end
+fprintf('     NLvib''s residual at fricreg''s X: %.3g (chain), %.3g (example 03)\n', worst);
+if any(worst > 1e-4)
+    error('test:hb', 'NLvib''s residual %g, %g', worst);
 end
 end
