@@ -550,7 +550,7 @@ class HarmonicBalance:
 
     # ---- nonlinear modes --------------------------------------------------------------
 
-    def backbone(self, mode, a0, a1, npoints=50, damping="matrix", through_folds=False):
+    def backbone(self, mode, a0, a1, npoints=50, damping="matrix", through_folds=True):
         """A nonlinear mode's backbone ω(a), ζ(a) by the extended periodic motion concept
         (``fricreg_hb_nma``, or ``fricreg_hb_nma_continue`` with through_folds): Krack,
         Computers & Structures 154 (2015) 59-71.
@@ -566,8 +566,9 @@ class HarmonicBalance:
         damping : {"matrix", "modal"}
             The linear damping as set, or the mode's own modal damping.
         through_folds : bool
-            Continue by pseudo-arclength through the folds in a (internal resonances), which
-            the natural-parameter march stops at.
+            Continue by pseudo-arclength through the folds in a (internal resonances), the
+            default since 1.9 as ``fricreg-sim nma``'s; False: the natural-parameter march in
+            log a, which stops at a fold (1.8's default).
 
         Returns
         -------

@@ -161,7 +161,7 @@ def describing_function(a, kt=2.0, mun=3.0):
 def test_backbone_closed_form_and_c_library():
     hb = fricreg.HarmonicBalance([[1.0]], [[1.0]], elements=[("jenkins", [[1.0]], [[2.0, 3.0]])],
                                  harmonics=1)
-    b = hb.backbone(0, 0.5, 1000.0, 16)
+    b = hb.backbone(0, 0.5, 1000.0, 16, through_folds=False)  # fricreg_hb_nma
     for a, w, z in zip(b.amplitude, b.omega, b.zeta):
         w2, zeta = describing_function(a)
         assert abs(w * w - w2) <= 1e-9 * w2 and abs(z - zeta) <= 1e-9 * max(zeta, 1e-3)
