@@ -130,7 +130,45 @@ CASES = [
     ("TmdsimpyForce", call(fricreg.TmdsimpyForce,
                            element=fricreg.Element("jenkins", [2.0, 1.0])),
      [("element", "jenkins"), ("Q", np.eye(2))]),
+    ("HarmonicBalance.frequency_response",
+     method(lambda: hb(excitation=([0.0, 1.0], None)), "frequency_response", omega0=0.5,
+            omega1=0.6),
+     [("omega0", -1.0), ("omega1", "x"), ("guess", np.zeros(2))]),
+    ("HarmonicBalance.level_response",
+     method(lambda: hb(excitation=([0.0, 1.0], None)), "level_response", omega=1.0, level0=0.1,
+            level1=0.2),
+     [("omega", np.nan), ("level0", -1.0), ("level1", [1.0, 2.0])]),
+    ("HarmonicBalance.peak", method(lambda: _swept(), "peak", dof=1),
+     [("dof", 7), ("dof", 1.0)]),
+    ("HarmonicBalance.modal_participation",
+     method(solved_hb, "modal_participation", point=1, harmonic=1),
+     [("point", 99), ("harmonic", 9), ("harmonic", "1")]),
+    ("HarmonicBalance.element_param", method(hb, "element_param", element=0, index=0),
+     [("element", 3), ("index", 9), ("element", 0.0)]),
+    ("FitResult.curve", method(lambda: fricreg.fit_backbone(kind="displacement", **LEVELS),
+                               "curve", amplitude=[1e-4, 2e-4]),
+     [("amplitude", [[1e-4]]), ("amplitude", [-1e-4]), ("amplitude", ["a"])]),
+    ("to_pyharm", call(fricreg.to_pyharm, coefficients=U7), [("coefficients", np.zeros(6))]),
+    ("from_pyharm", call(fricreg.from_pyharm, x=np.zeros(7)),
+     [("x", np.zeros(6)), ("ndof", 0), ("ndof", "1")]),
+    ("jacobian_to_tmdsimpy", call(fricreg.jacobian_to_tmdsimpy, jacobian=np.zeros((7, 7)),
+                                  h=[0, 1, 2, 3]),
+     [("jacobian", np.zeros((6, 6))), ("h", [3, 1])]),
+    ("jacobian_to_pyharm", call(fricreg.jacobian_to_pyharm, jacobian=np.zeros((7, 7))),
+     [("jacobian", np.zeros((7, 6))), ("ndof", -1)]),
+    ("TmdsimpyForce.aft", method(lambda: fricreg.TmdsimpyForce(
+        fricreg.Element("jenkins", [2.0, 1.0])), "aft", U=np.zeros(7), w=1.0, h=[0, 1, 2, 3]),
+     [("U", np.zeros(5)), ("h", [2, 1])]),
+    ("Context.set_law", method(lambda: fricreg.Context(2, W=K, mun=[1.0, 1.0]), "set_law",
+                               law="karnopp"),
+     [("law", "nosuch"), ("eps", -1.0)]),
 ]
+
+
+def _swept():
+    h = hb(excitation=([0.0, 1.0], None))
+    h.frequency_response(0.5, 0.6)
+    return h
 
 
 def refusal(make, argument, value):
