@@ -60,6 +60,19 @@
  * Jacobian in theta (log-scaled parameters: relative changes) and their right singular
  * vectors, the parameter combinations each determines.
  *
+ * The harmonic-balance model (since 1.9, fricreg_fit_set_model_hb): a nonlinear mode of any
+ * model the harmonic-balance driver holds (fricreg_hb.h), its backbone by the extended periodic
+ * motion concept (fricreg_hb_nma_at: M. Krack, "Nonlinear modal analysis of nonconservative
+ * systems: extension of the periodic motion concept", Comput. Struct. 154 (2015) 59-71), and
+ * the caller's np parameters of the driver (element values shared by ranges of elements,
+ * Rayleigh's coefficients) in place of the modal Iwan's six. A level's modal amplitude a solves
+ * |s| omega^kind a = A at the modal sensor, or |X_1,dof| omega^kind = A at a dof
+ * (fricreg_fit_set_sensor_dof), by Newton's method on log a over repeated backbones; the exact
+ * sensitivities of the backbone's points (fricreg_hb_nma_point_sensitivities) are carried to
+ * the measured level by the implicit function theorem (docs/identification.md, "Any HB
+ * model"). Each evaluation of the model is one or more backbone marches: the residuals and the
+ * Jacobian come from one (cached), and the default is one start.
+ *
  * Conventions are those of fricreg.h: int results are fricreg_status codes, nothing is printed,
  * a failed call leaves the caller's arrays and the object's settings untouched, one object per
  * thread. The object keeps the status and a message of its last failed call
@@ -73,6 +86,7 @@
 #define FRICREG_FIT_H
 
 #include "fricreg.h"
+#include "fricreg_hb.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -118,10 +132,16 @@ enum fricreg_fit_value {
     FRICREG_FIT_BEST_START = 5,        /**< which start gave the fit (0: the first) */
     FRICREG_FIT_STARTS_CONVERGED = 6,  /**< how many starts converged */
     FRICREG_FIT_NFREE = 7,             /**< the number of free parameters p */
-    FRICREG_FIT_CONDITION = 8          /**< largest over smallest singular value of the Jacobian */
+    FRICREG_FIT_CONDITION = 8,         /**< largest over smallest singular value of the Jacobian */
+    /** the model's evaluations over every start (residuals and Jacobian at one point are one:
+     *  a backbone model's cache): each a backbone at every level */
+    FRICREG_FIT_NMODEL = 9,
+    /** the HB model's backbone marches (fricreg_hb_nma_at calls; several an evaluation where
+     *  the levels' modal amplitudes are solved for); 0 for the modal Iwan model */
+    FRICREG_FIT_NMARCH = 10
 };
 
-/** Create a fit of the modal Iwan model, with no levels.
+/** Create a fit of the modal Iwan model (fricreg_fit_set_model_hb for another), with no levels.
  *
  *  Defaults: every parameter free, with the bounds of enum fricreg_fit_param (so each is
  *  log-scaled: F_S, K_T, zeta0 and K0 on (0, inf), chi + 1 and beta on (0, inf)) and a start
@@ -175,11 +195,12 @@ FRICREG_API int fricreg_fit_set_sensor(fricreg_fit *fit, double s);
 
 /** Make a parameter free, with a start and bounds.
  *
- *  which  a value of enum fricreg_fit_param.
- *  start  the first start's value, lower < start < upper (finite); NaN: made from the levels
- *         at the run (the default).
+ *  which  a value of enum fricreg_fit_param; an HB model's: 0 .. np - 1.
+ *  start  the first start's value, lower < start < upper (finite); NaN: the model's (the
+ *         default): made from the levels at the run (modal Iwan; an HB model's Rayleigh
+ *         coefficients), or the driver's value at fricreg_fit_set_model_hb (an element's).
  *  lower  lower bound, -INFINITY for none, not below the parameter's own (0 for F_S, K_T,
- *         beta, zeta0 and K0, -1 for chi).
+ *         beta, zeta0 and K0, -1 for chi; 0 for every HB model parameter).
  *  upper  upper bound, INFINITY for none, > lower.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if fit is NULL; FRICREG_EINVAL if which is unknown, a bound
@@ -191,16 +212,19 @@ FRICREG_API int fricreg_fit_set_free(fricreg_fit *fit, int which, double start, 
 /** Fix a parameter at a value (beta = 0: the three-parameter model with no delta; K0 = 0: the
  *  joint alone).
  *
- *  which  a value of enum fricreg_fit_param.
- *  value  finite, in the parameter's range (F_S, K_T > 0; chi > -1; beta, zeta0, K0 >= 0).
+ *  which  a value of enum fricreg_fit_param; an HB model's: 0 .. np - 1.
+ *  value  finite, in the parameter's range (F_S, K_T > 0; chi > -1; beta, zeta0, K0 >= 0; an
+ *         HB model's >= 0, the driver checking the rest at the run, e.g. a stiffness > 0).
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if fit is NULL; FRICREG_EINVAL if which is unknown or value
  *  is outside the parameter's range; FRICREG_ENONFINITE if value is NaN or infinite.
  *  Since 1.9. */
 FRICREG_API int fricreg_fit_set_fixed(fricreg_fit *fit, int which, double value);
 
-/** Set the number of starts, 1..1000 (default 32): the caller's start where given, then
- *  starts about the one made from the levels, moved in theta along a Halton sequence
+/** Set the number of starts, 1..1000 (default 32; 1 for an HB model, each of whose starts
+ *  costs a backbone march or more per iteration: raise it where the levels may hold several
+ *  minima): the caller's start where given, then starts about the model's (made from the
+ *  levels, or an HB model's driver values), moved in theta along a Halton sequence
  *  (docs/identification.md, "Starts").
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if fit is NULL; FRICREG_EINVAL if nstarts is 0 or above
@@ -212,36 +236,45 @@ FRICREG_API int fricreg_fit_set_starts(fricreg_fit *fit, size_t nstarts);
  *  Returns FRICREG_OK, the fit then readable by the getters below; else nothing is reported as
  *  a fit, and: FRICREG_ENULL if fit is NULL; FRICREG_EINVAL if no levels are set, there are
  *  fewer levels than free parameters, no parameter is free, a
- *  fixed K0 = 0 leaves a measured acceleration beyond the backbone's reach (the message names
+ *  fixed K0 = 0 leaves a measured acceleration beyond the backbone's reach, or an HB model's
+ *  backbone stops before a level or its measured amplitude folds there (the message names
  *  the level), no degree of freedom is left for the residual variance (2n = p without
  *  deviations), or the best fit ends at a bound (the message names the parameter and the
  *  bound: fix it there, or widen the bound); FRICREG_ESINGULAR if the Jacobian at the fit is
  *  rank deficient (smallest over largest singular value below 1e-12: the message names the
  *  combination the levels do not determine); FRICREG_EWORK if no start converged within 500
- *  iterations; FRICREG_ENOMEM. Since 1.9. */
+ *  iterations (an HB model: also where the driver refused every evaluation, e.g. from its
+ *  monitor, or with a wrong fricreg_fit_set_sensor_dof size; the message ends with the
+ *  model's last reason); FRICREG_ENOMEM. An HB model's driver holds the fitted parameters after
+ *  a successful run, and the values it held at the run's start after a failed one (its
+ *  elements'; Rayleigh's coefficients, which the driver does not report, stay at the last
+ *  evaluation's); its stored backbone is the last one marched, not necessarily the fit's
+ *  (fricreg_fit_curve or fricreg_hb_nma_at march it). Since 1.9. */
 FRICREG_API int fricreg_fit_run(fricreg_fit *fit);
 
 /** Copy the fitted parameters (the fixed ones as fixed).
  *
- *  np           must be FRICREG_FIT_NPARAMS.
- *  p[np]        out: the parameters, indexed by enum fricreg_fit_param.
+ *  np           must be the model's parameter count: FRICREG_FIT_NPARAMS for the modal Iwan
+ *               model, fricreg_fit_set_model_hb's np for an HB model (so below).
+ *  p[np]        out: the parameters, indexed by enum fricreg_fit_param (an HB model: in the
+ *               order of its description).
  *
- *  Returns FRICREG_OK; FRICREG_ENULL if fit or p is NULL; FRICREG_ESIZE if np is not
- *  FRICREG_FIT_NPARAMS; FRICREG_EINVAL if no run has succeeded since the last setter.
+ *  Returns FRICREG_OK; FRICREG_ENULL if fit or p is NULL; FRICREG_ESIZE if np is not the
+ *  model's count; FRICREG_EINVAL if no run has succeeded since the last setter.
  *  Since 1.9. */
 FRICREG_API int fricreg_fit_get_params(const fricreg_fit *fit, size_t np, double p[]);
 
 /** Copy the fitted parameters' covariance (row major, symmetric; a fixed parameter's row and
  *  column are 0) and their 95 % intervals.
  *
- *  np              must be FRICREG_FIT_NPARAMS.
+ *  np              must be the model's parameter count (as fricreg_fit_get_params).
  *  cov[np np]      out, or NULL: cov[i np + j] the covariance of parameters i and j, in their
  *                  units' product (the delta method through dp/dtheta).
  *  lower[np], upper[np]  out, or NULL (both or neither): the 95 % intervals (a fixed
  *                  parameter's is its value twice).
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if fit is NULL or only one of lower and upper is;
- *  FRICREG_ESIZE if np is not FRICREG_FIT_NPARAMS; FRICREG_EINVAL if no run has succeeded
+ *  FRICREG_ESIZE if np is not the model's count; FRICREG_EINVAL if no run has succeeded
  *  since the last setter. Since 1.9. */
 FRICREG_API int fricreg_fit_get_covariance(const fricreg_fit *fit, size_t np, double cov[],
                                            double lower[], double upper[]);
@@ -250,14 +283,14 @@ FRICREG_API int fricreg_fit_get_covariance(const fricreg_fit *fit, size_t np, do
  *  parameters (theta; log-scaled for a bound on one side) and their right singular vectors,
  *  largest first.
  *
- *  np              must be FRICREG_FIT_NPARAMS.
+ *  np              must be the model's parameter count (as fricreg_fit_get_params).
  *  sv[np]          out: the p singular values first (p = FRICREG_FIT_NFREE), then zeros.
  *  vectors[np np]  out, or NULL: row k the k-th right singular vector over all parameters
  *                  (0 on fixed ones; rows past p all 0): the combination of the thetas that
  *                  sv[k] determines; a small sv[k] is a poorly determined combination.
  *
- *  Returns FRICREG_OK; FRICREG_ENULL if fit or sv is NULL; FRICREG_ESIZE if np is not
- *  FRICREG_FIT_NPARAMS; FRICREG_EINVAL if no run has succeeded since the last setter.
+ *  Returns FRICREG_OK; FRICREG_ENULL if fit or sv is NULL; FRICREG_ESIZE if np is not the
+ *  model's count; FRICREG_EINVAL if no run has succeeded since the last setter.
  *  Since 1.9. */
 FRICREG_API int fricreg_fit_get_identifiability(const fricreg_fit *fit, size_t np, double sv[],
                                                 double vectors[]);
@@ -282,23 +315,28 @@ FRICREG_API int fricreg_fit_get_residuals(const fricreg_fit *fit, size_t n, doub
 FRICREG_API int fricreg_fit_get_value(const fricreg_fit *fit, int which, double *value);
 
 /** The model's backbone at amplitudes of a kind, with its exact sensitivities: for any
- *  parameters (the fit is not needed, only its sensor).
+ *  parameters (the fit is not needed, only its model and sensor). An HB model: the driver is
+ *  left at p, its backbone through the amplitudes' modal ones (in increasing order).
  *
- *  p[FRICREG_FIT_NPARAMS]  the parameters, in their ranges (as fricreg_fit_set_fixed).
+ *  p[np]             the parameters, in their ranges (as fricreg_fit_set_fixed); np the
+ *                    model's count (FRICREG_FIT_NPARAMS, or fricreg_fit_set_model_hb's).
  *  kind              a value of enum fricreg_fit_amplitude.
  *  n                 number of amplitudes, >= 1.
  *  amplitude[n]      > 0, finite, as in fricreg_fit_set_levels.
  *  freq_hz[n]        out: the natural frequencies, Hz.
  *  zeta[n]           out: the damping ratios.
  *  modal[n]          out, or NULL: the modal amplitudes a.
- *  dfreq_dp[n np]    out, or NULL: dfreq_hz[i]/dp[j] at i np + j (np = FRICREG_FIT_NPARAMS),
- *                    the amplitude held (a moves with p as its equation says).
+ *  dfreq_dp[n np]    out, or NULL: dfreq_hz[i]/dp[j] at i np + j, the amplitude held (a
+ *                    moves with p as its equation says).
  *  dzeta_dp[n np]    out, or NULL: dzeta[i]/dp[j], laid out as dfreq_dp.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if fit, p, amplitude, freq_hz or zeta is NULL;
  *  FRICREG_EINVAL if kind is unknown, n is 0, a parameter is out of its range or an amplitude
- *  <= 0 or beyond the backbone's reach (an acceleration with K0 = 0); FRICREG_ENONFINITE if an
- *  input is NaN or infinite; FRICREG_ENOMEM. On failure nothing is written. Since 1.9. */
+ *  <= 0 or beyond the backbone's reach (an acceleration with K0 = 0; an HB model's backbone
+ *  stops before it or its measured amplitude folds); FRICREG_ENONFINITE if an input is NaN or
+ *  infinite; FRICREG_ENOMEM; an HB model: the driver's status where it refuses a value or the
+ *  call (from its monitor: FRICREG_EINVAL; a wrong sensor size: FRICREG_ESIZE; the message
+ *  says which). On failure nothing is written (an HB model's driver may hold p). Since 1.9. */
 FRICREG_API int fricreg_fit_eval(fricreg_fit *fit, const double p[], int kind, size_t n,
                                  const double amplitude[], double freq_hz[], double zeta[],
                                  double modal[], double dfreq_dp[], double dzeta_dp[]);
@@ -324,6 +362,63 @@ FRICREG_API int fricreg_fit_curve(fricreg_fit *fit, size_t n, const double ampli
  *  t at 0.975 with 2n - p degrees of freedom. Returns FRICREG_OK; FRICREG_ENULL if fit or q is
  *  NULL; FRICREG_EINVAL if no run has succeeded since the last setter. Since 1.9. */
 FRICREG_API int fricreg_fit_get_quantile(const fricreg_fit *fit, double *q);
+
+/** Fit a nonlinear mode of a harmonic-balance driver (fricreg_hb.h) in place of the modal Iwan
+ *  model: mode `mode`'s backbone (fricreg_hb_nma_at, EPMC) at the levels, with np parameters of
+ *  the driver, each described as fricreg_hb_nma_point_sensitivities describes one. Every
+ *  parameter starts free with bounds (0, inf) (log-scaled), at the driver's value (an element
+ *  range's; NaN start) or, for Rayleigh's coefficients, which the driver does not report, at
+ *  half the smallest level's linear damping 2 omega zeta (split between a0 and a1 omega^2 if
+ *  both are parameters); one start (fricreg_fit_set_starts); the levels' amplitudes modal
+ *  (times |s| of fricreg_fit_set_sensor; fricreg_fit_set_sensor_dof for a dof's). The fit's
+ *  parameter setters and getters then take which in 0 .. np - 1 and np. Each evaluation sets
+ *  the driver's values (fricreg_hb_set_element_param; fricreg_hb_set_rayleigh (a0, a1), the one
+ *  not among the parameters 0, replacing a damping matrix) and marches its backbone.
+ *
+ *  hb       the driver, borrowed: kept alive by the caller, not used by it during the fit's
+ *           calls, and changed by them (fricreg_fit_run). NULL: back to the modal Iwan model
+ *           (as fricreg_fit_set_model_modal_iwan; the other arguments ignored).
+ *  mode, damping  as fricreg_hb_nma's (mode checked by the driver at the run).
+ *  np       the parameters, 1 .. 16.
+ *  kind[np] FRICREG_HB_NMA_PARAM_ELEMENT or FRICREG_HB_NMA_PARAM_DAMPING.
+ *  first[np], count[np]  ELEMENT: the elements first .. first + count - 1 (count >= 1), held by
+ *           the driver, sharing one value of the parameter; ignored for DAMPING.
+ *  index[np]  ELEMENT: the parameter's index in each element's layout (fricreg_element.h; e.g.
+ *           jenkins 0 kt, 1 mu N); DAMPING: 1 Rayleigh's a0 (1/s), 2 a1 (s). The modal damping
+ *           ratio zeta_k (DAMPING 0) has no setter on the driver: fit a0 with
+ *           FRICREG_HB_NMA_DAMPING_MODAL and a1 = 0 instead (then xi_k = a0).
+ *
+ *  Forgets the parameters' settings and the last fit; keeps the levels, deviations and sensor.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if fit is NULL, or kind, first, count or index is NULL
+ *  with hb given; FRICREG_EINVAL if np is 0 or above 16, damping is unknown, a kind is neither
+ *  ELEMENT nor DAMPING, an element range is empty or beyond the driver's elements, an index is
+ *  beyond an element's parameters, a range's elements differ in the value, a DAMPING index is
+ *  0 (zeta_k) or above 2, or two parameters move one value; FRICREG_ENOMEM. Nothing changes on
+ *  failure. Since 1.9 (FRICREG_1.9). */
+FRICREG_API int fricreg_fit_set_model_hb(fricreg_fit *fit, fricreg_hb *hb, size_t mode, int damping,
+                                         size_t np, const int kind[], const size_t first[],
+                                         const size_t count[], const size_t index[]);
+
+/** Fit the modal Iwan model again (fricreg_fit_create's): its six parameters with their
+ *  defaults, 32 starts; the levels, deviations and sensor value kept, the last fit forgotten.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if fit is NULL. Since 1.9 (FRICREG_1.9). */
+FRICREG_API int fricreg_fit_set_model_modal_iwan(fricreg_fit *fit);
+
+/** Measure an HB model's levels at a dof of its driver: the amplitude |X_1,dof| of the
+ *  displacement's first harmonic (kind displacement), omega |X_1,dof| (velocity) or
+ *  omega^2 |X_1,dof| (acceleration). fricreg_fit_set_sensor makes them modal again.
+ *
+ *  ndof       the driver's degrees of freedom (checked by the driver at the run:
+ *             FRICREG_ESIZE there if it is not).
+ *  harmonics  the driver's H (fricreg_hb_create's), >= 1 (checked likewise).
+ *  dof        the sensor's dof, < ndof.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if fit is NULL; FRICREG_EINVAL if the model is the modal
+ *  Iwan one, harmonics < 1 or dof >= ndof. Since 1.9 (FRICREG_1.9). */
+FRICREG_API int fricreg_fit_set_sensor_dof(fricreg_fit *fit, size_t ndof, int harmonics,
+                                           size_t dof);
 
 /** The last error's status. Returns the fricreg_status code of the fit's last failed call,
  *  FRICREG_OK if none (or fit is NULL). Since 1.9. */

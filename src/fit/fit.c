@@ -6,12 +6,10 @@
 #include <string.h>
 
 #include "base/gsl_mem.h"
-#include "fit_internal.h"
-#include "params.h"
+#include "hb_model.h"
 
 #define MAX_LEVELS 1000000
 #define MAX_STARTS 1000
-#define DEFAULT_STARTS 32
 #define LEVEL_ARRAYS 7 /* amp, freq, zeta, sd_freq, sd_zeta, res_freq, res_zeta */
 
 FR_ERROR_GETTERS(fricreg_fit, "NULL fit")
@@ -30,9 +28,7 @@ int fricreg_fit_create(fricreg_fit **out)
     fit->brent = brent;
     fit->kind = FRICREG_FIT_DISPLACEMENT;
     fit->sensor = 1.0;
-    fit->nstarts = DEFAULT_STARTS;
-    for (int j = 0; j < FR_FIT_NP; j++)
-        fit->par[j] = (struct fr_fit_param){1, NAN, fr_fit_param_floor(j), INFINITY};
+    fr_fit_use_modal_iwan(fit);
     *out = fit;
     return FRICREG_OK;
 }
@@ -43,6 +39,7 @@ void fricreg_fit_free(fricreg_fit *fit)
         return;
     free(fit->amp);
     free(fit->brent);
+    fr_fit_hb_free(fit->hb);
     free(fit);
 }
 
@@ -136,14 +133,17 @@ int fricreg_fit_set_sensor(fricreg_fit *fit, double s)
     if (s == 0.0)
         return fr_fail(fit, FRICREG_EINVAL, "set_sensor: s = 0 (the sensor sees no mode)");
     fit->sensor = s;
+    if (fit->hb != NULL) /* the HB model's levels modal again */
+        fit->hb->has_dof = 0;
     fit->have_fit = 0;
     return FRICREG_OK;
 }
 
 static int check_which(fricreg_fit *fit, const char *who, int which)
 {
-    if (which < 0 || which >= FR_FIT_NP)
-        return fr_fail(fit, FRICREG_EINVAL, "%s: unknown parameter %d", who, which);
+    if (which < 0 || (size_t)which >= fit->np)
+        return fr_fail(fit, FRICREG_EINVAL, "%s: unknown parameter %d (the model has %zu)", who,
+                       which, fit->np);
     return FRICREG_OK;
 }
 
@@ -154,14 +154,15 @@ int fricreg_fit_set_free(fricreg_fit *fit, int which, double start, double lower
     int st = check_which(fit, "set_free", which);
     if (st != FRICREG_OK)
         return st;
-    const char *name = fr_fit_param_name(which);
+    const char *name = fit->model->name(fit, which);
+    double floor = fit->model->floor(which);
     if (isnan(lower) || isnan(upper))
         return fr_fail(fit, FRICREG_ENONFINITE, "set_free: a bound of %s is NaN", name);
-    if (lower < fr_fit_param_floor(which) || !(upper > lower))
+    if (lower < floor || !(upper > lower))
         return fr_fail(fit, FRICREG_EINVAL,
                        "set_free: bounds [%g, %g] of %s: lower must be "
                        ">= %g and upper > lower",
-                       lower, upper, name, fr_fit_param_floor(which));
+                       lower, upper, name, floor);
     if (!isnan(start) && !(start > lower && start < upper && isfinite(start)))
         return fr_fail(fit, FRICREG_EINVAL, "set_free: start %g of %s is not inside (%g, %g)",
                        start, name, lower, upper);
@@ -177,13 +178,12 @@ int fricreg_fit_set_fixed(fricreg_fit *fit, int which, double value)
     int st = check_which(fit, "set_fixed", which);
     if (st != FRICREG_OK)
         return st;
+    const char *name = fit->model->name(fit, which);
     if (!isfinite(value))
-        return fr_fail(fit, FRICREG_ENONFINITE, "set_fixed: %s is not finite",
-                       fr_fit_param_name(which));
-    if (!fr_fit_param_in_range(which, value))
-        return fr_fail(fit, FRICREG_EINVAL, "set_fixed: %s = %g is out of its range",
-                       fr_fit_param_name(which), value);
-    fit->par[which] = (struct fr_fit_param){0, value, fr_fit_param_floor(which), INFINITY};
+        return fr_fail(fit, FRICREG_ENONFINITE, "set_fixed: %s is not finite", name);
+    if (!fit->model->in_range(which, value))
+        return fr_fail(fit, FRICREG_EINVAL, "set_fixed: %s = %g is out of its range", name, value);
+    fit->par[which] = (struct fr_fit_param){0, value, fit->model->floor(which), INFINITY};
     fit->have_fit = 0;
     return FRICREG_OK;
 }

@@ -1,12 +1,11 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* fit_eval.c — the model's backbone for the caller (fricreg_fit_eval) and the fitted one with
- * its band (fricreg_fit_curve), both on modal_iwan.c's levels. */
+ * its band (fricreg_fit_curve), both on the model's levels (model.h). */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
-#include "fit_internal.h"
-#include "modal_iwan.h"
-#include "params.h"
+#include "model.h"
 
 /* FRICREG_OK if amplitude[n] are all finite and > 0, else the status (recorded). */
 static int check_amplitudes(fricreg_fit *fit, const char *who, size_t n, const double amp[])
@@ -23,23 +22,24 @@ static int check_amplitudes(fricreg_fit *fit, const char *who, size_t n, const d
     return FRICREG_OK;
 }
 
-/* The levels' models into m[n] (allocated here), or the status (recorded). */
+/* The model at p at amp[n] of kind into *m (its block in *block, freed by the caller), or the
+ * status (recorded). */
 static int levels(fricreg_fit *fit, const char *who, const double p[], int kind, size_t n,
-                  const double amp[], struct fr_level_model **out)
+                  const double amp[], struct fr_fit_levels *m, double **block)
 {
-    struct fr_level_model *m = malloc(n * sizeof *m);
-    if (m == NULL)
+    double *guess;
+    *block = fr_fit_levels_alloc(n, fit->np, m, &guess);
+    if (*block == NULL)
         return fr_fail(fit, FRICREG_ENOMEM, "%s: out of memory for %zu amplitudes", who, n);
-    for (size_t i = 0; i < n; i++)
-        if (fr_modal_iwan_level(p, kind, fit->sensor, amp[i], fit->brent, &m[i]) != 0) {
-            free(m);
-            return fr_fail(fit, FRICREG_EINVAL,
-                           "%s: amplitude[%zu] = %g is beyond the "
-                           "backbone's reach (K0 = 0 with accelerations)",
-                           who, i, amp[i]);
-        }
-    *out = m;
-    return FRICREG_OK;
+    size_t bad = FR_FIT_REACHED;
+    int st = fit->model->eval(fit, p, kind, n, amp, guess, m, &bad);
+    if (st == FRICREG_OK)
+        return st;
+    free(*block);
+    if (bad != FR_FIT_REACHED)
+        return fr_fail(fit, st, "%s: amplitude[%zu] = %g is beyond the backbone's reach (%s)", who,
+                       bad, amp[bad], fit->reason);
+    return fr_fail(fit, st, "%s: the model cannot be evaluated: %s", who, fit->reason);
 }
 
 int fricreg_fit_eval(fricreg_fit *fit, const double p[], int kind, size_t n,
@@ -52,42 +52,42 @@ int fricreg_fit_eval(fricreg_fit *fit, const double p[], int kind, size_t n,
         return fr_fail(fit, FRICREG_ENULL, "eval: p, amplitude, freq_hz or zeta is NULL");
     if (kind < FRICREG_FIT_DISPLACEMENT || kind > FRICREG_FIT_ACCELERATION)
         return fr_fail(fit, FRICREG_EINVAL, "eval: unknown amplitude kind %d", kind);
-    for (int j = 0; j < FR_FIT_NP; j++) {
+    size_t np = fit->np;
+    for (size_t j = 0; j < np; j++) {
+        const char *name = fit->model->name(fit, (int)j);
         if (!isfinite(p[j]))
-            return fr_fail(fit, FRICREG_ENONFINITE, "eval: %s is not finite", fr_fit_param_name(j));
-        if (!fr_fit_param_in_range(j, p[j]))
-            return fr_fail(fit, FRICREG_EINVAL, "eval: %s = %g is out of its range",
-                           fr_fit_param_name(j), p[j]);
+            return fr_fail(fit, FRICREG_ENONFINITE, "eval: %s is not finite", name);
+        if (!fit->model->in_range((int)j, p[j]))
+            return fr_fail(fit, FRICREG_EINVAL, "eval: %s = %g is out of its range", name, p[j]);
     }
-    struct fr_level_model *m;
+    struct fr_fit_levels m;
+    double *block;
     int st = check_amplitudes(fit, "eval", n, amplitude);
     if (st == FRICREG_OK)
-        st = levels(fit, "eval", p, kind, n, amplitude, &m);
+        st = levels(fit, "eval", p, kind, n, amplitude, &m, &block);
     if (st != FRICREG_OK)
         return st;
     for (size_t i = 0; i < n; i++) {
-        freq_hz[i] = m[i].freq_hz;
-        zeta[i] = m[i].zeta;
+        freq_hz[i] = m.freq_hz[i];
+        zeta[i] = m.zeta[i];
         if (modal != NULL)
-            modal[i] = m[i].modal;
-        for (int j = 0; j < FR_FIT_NP; j++) {
-            if (dfreq_dp != NULL)
-                dfreq_dp[i * FR_FIT_NP + j] = m[i].dfreq[j];
-            if (dzeta_dp != NULL)
-                dzeta_dp[i * FR_FIT_NP + j] = m[i].dzeta[j];
-        }
+            modal[i] = m.modal[i];
     }
-    free(m);
+    if (dfreq_dp != NULL)
+        memcpy(dfreq_dp, m.dfreq, n * np * sizeof *dfreq_dp);
+    if (dzeta_dp != NULL)
+        memcpy(dzeta_dp, m.dzeta, n * np * sizeof *dzeta_dp);
+    free(block);
     return FRICREG_OK;
 }
 
-/* g^T C g over the parameters, C the fit's covariance. */
-static double variance_along(const double g[], const double cov[])
+/* g^T C g over the np parameters, C the fit's covariance. */
+static double variance_along(size_t np, const double g[], const double cov[])
 {
     double v = 0.0;
-    for (int i = 0; i < FR_FIT_NP; i++)
-        for (int j = 0; j < FR_FIT_NP; j++)
-            v += g[i] * cov[i * FR_FIT_NP + j] * g[j];
+    for (size_t i = 0; i < np; i++)
+        for (size_t j = 0; j < np; j++)
+            v += g[i] * cov[i * np + j] * g[j];
     return v > 0.0 ? v : 0.0;
 }
 
@@ -104,20 +104,22 @@ int fricreg_fit_curve(fricreg_fit *fit, size_t n, const double amplitude[], doub
         return fr_fail(fit, FRICREG_EINVAL,
                        "curve: no fit (no run has succeeded since the "
                        "last setter)");
-    struct fr_level_model *m;
+    struct fr_fit_levels m;
+    double *block;
+    size_t np = fit->np;
     int st = check_amplitudes(fit, "curve", n, amplitude);
     if (st == FRICREG_OK)
-        st = levels(fit, "curve", fit->result.p, fit->kind, n, amplitude, &m);
+        st = levels(fit, "curve", fit->result.p, fit->kind, n, amplitude, &m, &block);
     if (st != FRICREG_OK)
         return st;
     for (size_t i = 0; i < n; i++) {
-        freq_hz[i] = m[i].freq_hz;
-        zeta[i] = m[i].zeta;
+        freq_hz[i] = m.freq_hz[i];
+        zeta[i] = m.zeta[i];
         if (sd_freq_hz != NULL) {
-            sd_freq_hz[i] = sqrt(variance_along(m[i].dfreq, fit->result.cov));
-            sd_zeta[i] = sqrt(variance_along(m[i].dzeta, fit->result.cov));
+            sd_freq_hz[i] = sqrt(variance_along(np, m.dfreq + i * np, fit->result.cov));
+            sd_zeta[i] = sqrt(variance_along(np, m.dzeta + i * np, fit->result.cov));
         }
     }
-    free(m);
+    free(block);
     return FRICREG_OK;
 }

@@ -13,9 +13,9 @@ static int check_fit(const fricreg_fit *cfit, const char *who, size_t np)
                        "%s: no fit (no run has succeeded since the last "
                        "setter)",
                        who);
-    if (np != FR_FIT_NP)
-        return fr_fail(fit, FRICREG_ESIZE, "%s: np = %zu, not FRICREG_FIT_NPARAMS = %d", who, np,
-                       FR_FIT_NP);
+    if (np != fit->np)
+        return fr_fail(fit, FRICREG_ESIZE, "%s: np = %zu, not the model's %zu parameters%s", who,
+                       np, fit->np, fit->hb != NULL ? "" : " (FRICREG_FIT_NPARAMS)");
     return FRICREG_OK;
 }
 
@@ -32,7 +32,7 @@ int fricreg_fit_get_params(const fricreg_fit *fit, size_t np, double p[])
         return fail_null(fit, "get_params", "p is NULL");
     int st = check_fit(fit, "get_params", np);
     if (st == FRICREG_OK)
-        memcpy(p, fit->result.p, sizeof fit->result.p);
+        memcpy(p, fit->result.p, np * sizeof *p);
     return st;
 }
 
@@ -47,10 +47,10 @@ int fricreg_fit_get_covariance(const fricreg_fit *fit, size_t np, double cov[], 
     if (st != FRICREG_OK)
         return st;
     if (cov != NULL)
-        memcpy(cov, fit->result.cov, sizeof fit->result.cov);
+        memcpy(cov, fit->result.cov, np * np * sizeof *cov);
     if (lower != NULL) {
-        memcpy(lower, fit->result.lower, sizeof fit->result.lower);
-        memcpy(upper, fit->result.upper, sizeof fit->result.upper);
+        memcpy(lower, fit->result.lower, np * sizeof *lower);
+        memcpy(upper, fit->result.upper, np * sizeof *upper);
     }
     return FRICREG_OK;
 }
@@ -65,9 +65,9 @@ int fricreg_fit_get_identifiability(const fricreg_fit *fit, size_t np, double sv
     int st = check_fit(fit, "get_identifiability", np);
     if (st != FRICREG_OK)
         return st;
-    memcpy(sv, fit->result.sv, sizeof fit->result.sv);
+    memcpy(sv, fit->result.sv, np * sizeof *sv);
     if (vectors != NULL)
-        memcpy(vectors, fit->result.vectors, sizeof fit->result.vectors);
+        memcpy(vectors, fit->result.vectors, np * np * sizeof *vectors);
     return FRICREG_OK;
 }
 
@@ -77,7 +77,7 @@ int fricreg_fit_get_residuals(const fricreg_fit *fit, size_t n, double r_freq[],
         return FRICREG_ENULL;
     if (r_freq == NULL || r_zeta == NULL)
         return fail_null(fit, "get_residuals", "r_freq or r_zeta is NULL");
-    int st = check_fit(fit, "get_residuals", FR_FIT_NP);
+    int st = check_fit(fit, "get_residuals", fit->np);
     if (st != FRICREG_OK)
         return st;
     if (n != fit->n)
@@ -96,7 +96,7 @@ int fricreg_fit_get_value(const fricreg_fit *fit, int which, double *value)
         return FRICREG_ENULL;
     if (value == NULL)
         return fail_null(fit, "get_value", "value is NULL");
-    int st = check_fit(fit, "get_value", FR_FIT_NP);
+    int st = check_fit(fit, "get_value", fit->np);
     if (st != FRICREG_OK)
         return st;
     const struct fr_fit_result *r = &fit->result;
@@ -110,6 +110,8 @@ int fricreg_fit_get_value(const fricreg_fit *fit, int which, double *value)
     case FRICREG_FIT_STARTS_CONVERGED: *value = (double)r->converged; break;
     case FRICREG_FIT_NFREE: *value = (double)r->nfree; break;
     case FRICREG_FIT_CONDITION: *value = r->condition; break;
+    case FRICREG_FIT_NMODEL: *value = (double)r->nmodel; break;
+    case FRICREG_FIT_NMARCH: *value = (double)r->marches; break;
     default:
         return fr_fail((fricreg_fit *)fit, FRICREG_EINVAL, "get_value: unknown value %d", which);
     }
@@ -122,7 +124,7 @@ int fricreg_fit_get_quantile(const fricreg_fit *fit, double *q)
         return FRICREG_ENULL;
     if (q == NULL)
         return fail_null(fit, "get_quantile", "q is NULL");
-    int st = check_fit(fit, "get_quantile", FR_FIT_NP);
+    int st = check_fit(fit, "get_quantile", fit->np);
     if (st == FRICREG_OK)
         *q = fit->result.quantile;
     return st;

@@ -11,6 +11,7 @@
 
 #include "base/gsl_mem.h"
 #include "fit_stats.h"
+#include "hb_model.h"
 #include "params.h"
 #include "starts.h"
 
@@ -79,6 +80,8 @@ static int iterate(gsl_multifit_nlinear_workspace *w, size_t *iters)
 /* The checks a run makes before it solves. */
 static int check_problem(fricreg_fit *fit, const struct fr_fit_problem *pb)
 {
+    if (fit->hb != NULL && fit->np == 0)
+        return fr_fail(fit, FRICREG_EINVAL, "run: the model has no parameters");
     if (fit->n == 0)
         return fr_fail(fit, FRICREG_EINVAL, "run: no levels are set");
     if (pb->nfree == 0)
@@ -140,40 +143,65 @@ static size_t solve_starts(fricreg_fit *fit, struct run *run, double best[], dou
     return nomem ? (size_t)-1 : converged;
 }
 
-int fricreg_fit_run(fricreg_fit *fit)
+/* The best converged start's solution reported; or the status of the first thing that failed. */
+static int solve(fricreg_fit *fit, struct run *run)
 {
-    if (fit == NULL)
-        return FRICREG_ENULL;
-    fit->have_fit = 0;
-    struct run run;
-    fr_fit_problem_init(&run.pb, fit);
-    int st = check_problem(fit, &run.pb);
-    if (st != FRICREG_OK)
-        return st;
-    double best[FR_FIT_NP], best0[FR_FIT_NP];
-    size_t converged = solve_starts(fit, &run, best, best0);
+    double best[FR_FIT_MAXP], best0[FR_FIT_MAXP];
+    size_t converged = solve_starts(fit, run, best, best0);
     if (converged == (size_t)-1)
         return fr_fail(fit, FRICREG_ENOMEM, "run: out of memory for the least-squares workspace");
-    if (converged == 0 && run.pb.unreachable)
+    if (converged == 0 && run->pb.unreachable)
         return fr_fail(fit, FRICREG_EINVAL,
                        "run: level %zu (amplitude %g) is beyond the "
-                       "backbone's reach (K0 = 0 with accelerations): no start converged",
-                       run.pb.bad_level, fit->amp[run.pb.bad_level]);
+                       "backbone's reach (%s): no start converged",
+                       run->pb.bad_level, fit->amp[run->pb.bad_level], fit->reason);
+    if (converged == 0 && fit->hb != NULL)
+        return fr_fail(fit, FRICREG_EWORK,
+                       "run: none of %zu starts converged within %d iterations (the model's "
+                       "last failure: %s)",
+                       fit->nstarts, MAX_ITER, fit->reason);
     if (converged == 0)
         return fr_fail(fit, FRICREG_EWORK,
                        "run: none of %zu starts converged within %d "
                        "iterations",
                        fit->nstarts, MAX_ITER);
-    size_t nfev = fit->result.nfev, njev = fit->result.njev;
-    size_t iters = fit->result.iterations, start = fit->result.best_start;
-    st = fr_fit_finish(&run.pb, best, best0);
+    struct fr_fit_result kept = fit->result;
+    int st = fr_fit_finish(&run->pb, best, best0);
     if (st != FRICREG_OK)
         return st;
-    fit->result.nfev = nfev;
-    fit->result.njev = njev;
-    fit->result.iterations = iters;
-    fit->result.best_start = start;
+    fit->result.nfev = kept.nfev;
+    fit->result.njev = kept.njev;
+    fit->result.iterations = kept.iterations;
+    fit->result.best_start = kept.best_start;
     fit->result.converged = converged;
-    fit->have_fit = 1;
+    fit->result.nmodel = run->pb.nmodel;
+    fit->result.marches = fit->marches;
     return FRICREG_OK;
+}
+
+int fricreg_fit_run(fricreg_fit *fit)
+{
+    if (fit == NULL)
+        return FRICREG_ENULL;
+    fit->have_fit = 0;
+    fit->marches = 0;
+    struct run run;
+    int st = fr_fit_problem_init(&run.pb, fit);
+    if (st != FRICREG_OK)
+        return st;
+    double saved[FR_FIT_MAXP];
+    if (fit->hb != NULL)
+        fr_fit_hb_save(fit, saved);
+    st = check_problem(fit, &run.pb);
+    if (st == FRICREG_OK)
+        st = solve(fit, &run);
+    fr_fit_problem_free(&run.pb);
+    if (fit->hb != NULL && st == FRICREG_OK) /* the driver at the fit */
+        st = fr_fit_hb_apply(fit, fit->result.p) == FRICREG_OK
+                 ? FRICREG_OK
+                 : fr_fail(fit, FRICREG_EINVAL, "run: the driver refuses the fit: %s", fit->reason);
+    if (fit->hb != NULL && st != FRICREG_OK)
+        fr_fit_hb_restore(fit, saved);
+    fit->have_fit = st == FRICREG_OK;
+    return st;
 }

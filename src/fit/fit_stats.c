@@ -32,7 +32,8 @@ static int check_bounds(struct fr_fit_problem *pb, const double p[], const doubl
             return fr_fail(pb->fit, FRICREG_EINVAL,
                            "run: %s ended at its %s bound %g: the levels push it beyond; fix "
                            "it there or widen the bound (no fit is reported)",
-                           fr_fit_param_name(j), low ? "lower" : "upper", low ? q->lo : q->hi);
+                           pb->fit->model->name(pb->fit, j), low ? "lower" : "upper",
+                           low ? q->lo : q->hi);
     }
     return FRICREG_OK;
 }
@@ -47,7 +48,7 @@ static int rank_deficient(struct fr_fit_problem *pb, const double V[], double ra
         double c = V[last * m + k];
         if (fabs(c) >= 0.1)
             used += (size_t)snprintf(combo + used, sizeof combo - used, " %+.2f %s", c,
-                                     fr_fit_param_name(pb->idx[k]));
+                                     pb->fit->model->name(pb->fit, pb->idx[k]));
     }
     return fr_fail(pb->fit, FRICREG_ESINGULAR,
                    "run: the levels do not determine the parameters (singular value ratio "
@@ -77,8 +78,8 @@ static int svd(gsl_matrix *J, double S[], double V[])
 static void covariance(struct fr_fit_problem *pb, const double theta[], const double V[],
                        const double S[], double scale, struct fr_fit_result *res)
 {
-    size_t m = pb->nfree;
-    double p[FR_FIT_NP], dp[FR_FIT_NP], ct[FR_FIT_NP * FR_FIT_NP] = {0};
+    size_t m = pb->nfree, np = pb->fit->np;
+    double p[FR_FIT_MAXP], dp[FR_FIT_MAXP], ct[FR_FIT_MAXP * FR_FIT_MAXP] = {0};
     fr_fit_params_at(pb, theta, p, dp);
     for (size_t a = 0; a < m; a++)
         for (size_t b = 0; b <= a; b++) { /* one triangle, mirrored: symmetric to the bit */
@@ -86,15 +87,15 @@ static void covariance(struct fr_fit_problem *pb, const double theta[], const do
                 ct[a * m + b] += scale * V[k * m + a] * V[k * m + b] / (S[k] * S[k]);
             ct[b * m + a] = ct[a * m + b];
         }
-    for (int j = 0; j < FR_FIT_NP; j++) {
+    for (size_t j = 0; j < np; j++) {
         res->p[j] = res->lower[j] = res->upper[j] = p[j];
-        for (int i = 0; i < FR_FIT_NP; i++)
-            res->cov[j * FR_FIT_NP + i] = 0.0;
+        for (size_t i = 0; i < np; i++)
+            res->cov[j * np + i] = 0.0;
     }
     for (size_t a = 0; a < m; a++) {
-        int ja = pb->idx[a];
+        size_t ja = (size_t)pb->idx[a];
         for (size_t b = 0; b < m; b++)
-            res->cov[ja * FR_FIT_NP + pb->idx[b]] = dp[a] * dp[b] * ct[a * m + b];
+            res->cov[ja * np + (size_t)pb->idx[b]] = dp[a] * dp[b] * ct[a * m + b];
         const struct fr_fit_param *q = &pb->fit->par[ja];
         double half = res->quantile * sqrt(ct[a * m + a]), d;
         double x = fr_fit_from_theta(theta[a] - half, q->lo, q->hi, &d);
@@ -107,15 +108,15 @@ static void covariance(struct fr_fit_problem *pb, const double theta[], const do
 static void identifiability(struct fr_fit_problem *pb, const double V[], const double S[],
                             struct fr_fit_result *res)
 {
-    size_t m = pb->nfree;
-    for (int k = 0; k < FR_FIT_NP; k++) {
-        res->sv[k] = (size_t)k < m ? S[k] : 0.0;
-        for (int j = 0; j < FR_FIT_NP; j++)
-            res->vectors[k * FR_FIT_NP + j] = 0.0;
+    size_t m = pb->nfree, np = pb->fit->np;
+    for (size_t k = 0; k < np; k++) {
+        res->sv[k] = k < m ? S[k] : 0.0;
+        for (size_t j = 0; j < np; j++)
+            res->vectors[k * np + j] = 0.0;
     }
     for (size_t k = 0; k < m; k++)
         for (size_t a = 0; a < m; a++)
-            res->vectors[k * FR_FIT_NP + pb->idx[a]] = V[k * m + a];
+            res->vectors[k * np + (size_t)pb->idx[a]] = V[k * m + a];
 }
 
 /* Everything past the residuals and the Jacobian (in J, overwritten) at theta. */
@@ -124,7 +125,8 @@ static int report(struct fr_fit_problem *pb, const double theta[], const double 
 {
     fricreg_fit *fit = pb->fit;
     struct fr_fit_result res = {0};
-    double p[FR_FIT_NP], p0[FR_FIT_NP], dp[FR_FIT_NP], S[FR_FIT_NP], V[FR_FIT_NP * FR_FIT_NP];
+    double p[FR_FIT_MAXP], p0[FR_FIT_MAXP], dp[FR_FIT_MAXP], S[FR_FIT_MAXP];
+    double V[FR_FIT_MAXP * FR_FIT_MAXP];
     fr_fit_params_at(pb, theta, p, dp);
     fr_fit_params_at(pb, theta0, p0, dp);
     int st = check_bounds(pb, p, p0);

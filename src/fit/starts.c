@@ -1,13 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* starts.c — a fit's starts (starts.h). The first start's parameters the caller did not give
- * come from the levels, read as the model would make them:
- *   K0 + K_T = omega^2 at the smallest amplitude (the joint stuck);
- *   K_T = 2 (omega_lo^2 - omega_hi^2), within 0.1 .. 0.9 of it (the joint's share of the drop);
- *   F_S = K_T a_max, a_max the largest level's modal amplitude (macroslip near the top level);
- *   zeta0 = half the smallest measured zeta; chi + 1 = the slope of log(zeta - zeta0) against
- *   log a between the smallest and largest levels (D/(k a^2) ~ a^(chi+1) below macroslip),
- *   within -0.9 .. 3; beta = 1.
- * A start outside the caller's bounds is moved inside. Where the caller gave starts, the first
+ * come from the model (model.h: the modal Iwan's from the levels, modal_iwan_model.c; the HB
+ * model's the driver's values, hb_model.c). A start outside the caller's bounds is moved inside. Where the caller gave starts, the first
  * start is theirs, alone; every other start is about the levels' centre: the least squares has
  * a local minimum wherever a level's amplitude sits on phi_max's kink (the stiffness drops by
  * F_S beta/(c phi_max) there), so the centre in the right regime with many starts about it
@@ -20,11 +14,12 @@
 #include <math.h>
 
 #include "fricreg_fit.h"
-#include "base/fr_math.h"
+#include "model.h"
 #include "params.h"
 #include "starts.h"
 
-static const unsigned primes[FR_FIT_NP] = {2, 3, 5, 7, 11, 13};
+static const unsigned primes[FR_FIT_MAXP] = {2,  3,  5,  7,  11, 13, 17, 19,
+                                             23, 29, 31, 37, 41, 43, 47, 53};
 
 /* The van der Corput radical inverse of s in base b, in (0, 1) for s >= 1. */
 static double halton(size_t s, unsigned b)
@@ -33,45 +28,6 @@ static double halton(size_t s, unsigned b)
     for (; s > 0; s /= b, f /= b)
         h += f * (double)(s % b);
     return h;
-}
-
-static double clamp(double v, double lo, double hi)
-{
-    return v < lo ? lo : v > hi ? hi : v;
-}
-
-/* Indices of the smallest and largest amplitude levels. */
-static void extremes(const fricreg_fit *fit, size_t *lo, size_t *hi)
-{
-    *lo = *hi = 0;
-    for (size_t i = 1; i < fit->n; i++) {
-        if (fit->amp[i] < fit->amp[*lo])
-            *lo = i;
-        if (fit->amp[i] > fit->amp[*hi])
-            *hi = i;
-    }
-}
-
-/* The first start's parameters made from the levels (the header comment's rules). */
-static void from_levels(const fricreg_fit *fit, double p[])
-{
-    size_t lo, hi;
-    extremes(fit, &lo, &hi);
-    double w_lo = FR_TWO_PI * fit->freq[lo], w_hi = FR_TWO_PI * fit->freq[hi];
-    double k_lo = w_lo * w_lo, k_hi = w_hi * w_hi;
-    double kt = clamp(2.0 * (k_lo - k_hi), 0.1 * k_lo, 0.9 * k_lo);
-    double a_lo = fit->amp[lo] / (fabs(fit->sensor) * pow(w_lo, fit->kind));
-    double a_hi = fit->amp[hi] / (fabs(fit->sensor) * pow(w_hi, fit->kind));
-    double zeta0 = 0.5 * fmin(fit->zeta[lo], fit->zeta[hi]);
-    double slope = 1.0;
-    if (a_hi > a_lo && fit->zeta[lo] > zeta0 && fit->zeta[hi] > zeta0)
-        slope = log((fit->zeta[hi] - zeta0) / (fit->zeta[lo] - zeta0)) / log(a_hi / a_lo);
-    p[FRICREG_FIT_FS] = kt * a_hi;
-    p[FRICREG_FIT_KT] = kt;
-    p[FRICREG_FIT_CHI] = clamp(slope - 1.0, -0.9, 3.0);
-    p[FRICREG_FIT_BETA] = 1.0;
-    p[FRICREG_FIT_ZETA0] = zeta0;
-    p[FRICREG_FIT_K0] = k_lo - kt;
 }
 
 /* v moved inside (lo, hi) if it is not. */
@@ -96,8 +52,8 @@ static int caller_started(const struct fr_fit_problem *pb)
 void fr_fit_start(const struct fr_fit_problem *pb, size_t s, double theta[])
 {
     const fricreg_fit *fit = pb->fit;
-    double guess[FR_FIT_NP];
-    from_levels(fit, guess);
+    double guess[FR_FIT_MAXP];
+    fit->model->start(fit, guess);
     /* The caller's start first, where given; every other start about the levels'. */
     int caller = caller_started(pb), levels_centre = !caller || s > 0;
     size_t h = caller && s > 0 ? s - 1 : s;
