@@ -41,7 +41,8 @@ function h = fricreg_harmonic_balance(M, K, C, elements, harmonics, varargin)
 %                          the type does not take
 %      fricreg:option      an unknown option, or one without its value
 %      fricreg:EINVAL      NDOF, the elements' count or HARMONICS out of range; a parameter out
-%                          of its range (the message names the element); an unknown type
+%                          of its range (the message names the element); an unknown type; a
+%                          negative mass on M's diagonal; both C and 'rayleigh'
 %      fricreg:ENOTSYM     M, K or C not symmetric (the message names the entry)
 %      fricreg:ENONFINITE  a NaN or infinite entry
 %   The driver made is freed before any error is raised.
@@ -92,6 +93,17 @@ for i = 1:numel(elements)
     m = m + size(e.J, 1) / dim;
 end
 [options, rest] = split_options(varargin, {'rayleigh', 'excitation'});
+if isfield(options, 'rayleigh') && ~isempty(C)
+    error('fricreg:EINVAL', ['fricreg_harmonic_balance: C, rayleigh: give one damping, the ' ...
+                             'matrix C or Rayleigh''s [a0 a1] (FRICREG_EINVAL)']);
+end
+if isnumeric(M) && ismatrix(M) && size(M, 1) == size(M, 2)
+    bad = find(diag(M) < 0, 1);
+    if ~isempty(bad) % the C driver takes any symmetric M: a negative mass is the binding's check
+        error('fricreg:EINVAL', ['fricreg_harmonic_balance: M(%d, %d) = %g; a mass is >= 0 ' ...
+                                 '(FRICREG_EINVAL)'], bad, bad, full(M(bad, bad)));
+    end
+end
 h = fricreg_mex('hb_create', size(M, 1), m, harmonics);
 try
     fricreg_mex('hb_set_matrix', h, 'mass', M);
