@@ -68,7 +68,6 @@ if iscell(elements)
     if ~all(cellfun(@isstruct, elements))
         error('fricreg:type', 'fricreg_harmonic_balance: elements must be structs');
     end
-    elements = cellfun(@(e) {e}, elements); % each a struct: fields may differ
 elseif isstruct(elements)
     elements = num2cell(elements);
 else

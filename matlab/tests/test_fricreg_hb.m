@@ -15,6 +15,7 @@ function failures = test_fricreg_hb()
 cases = {'stuck_solve_is_linear', @stuck_solve_is_linear
          'stuck_branch_is_linear', @stuck_branch_is_linear
          'sparse_equals_dense', @sparse_equals_dense
+         'elements_as_cell', @elements_as_cell
          'backbone_linear_limit', @backbone_linear_limit
          'backbone_at_amplitudes', @backbone_at_amplitudes
          'chain_stability_and_peak', @chain_stability_and_peak
@@ -102,6 +103,22 @@ b = fricreg_hb_solve(sp, 3.3);
 fricreg_test_check(b.x, a.x, 1e-10, 'sparse x', max(abs(a.x(:))));
 if max(max(abs(a.x(:, 6:7)))) < 1e-4 % a_3, b_3: Jenkins gives odd harmonics
     error('test:hb', 'the element does not slip: no third harmonic');
+end
+end
+
+function elements_as_cell()
+% A cell of blocks of two types (fields in other orders): a Jenkins element that sticks and a
+% linear spring (a marched type), both on dof 2 - dof 1: the linear response with kt + k.
+[M, K, C, J, kt, mun] = two_masses();
+blocks = {struct('type', 'jenkins', 'J', J, 'params', [kt mun]), ...
+          struct('params', 0.45, 'J', 2 * J, 'type', 'spring')};
+h = fricreg_harmonic_balance(M, K, C, blocks, 3, 'excitation', {[0; 2e-4], [1e-4; 0]});
+cleanup = onCleanup(@() fricreg_hb_free(h));
+s = fricreg_hb_solve(h, 2.1);
+X = (K + (kt + 4 * 0.45) * (J' * J) - 2.1^2 * M + 2.1i * C) \ ([0; 2e-4] - 1i * [1e-4; 0]);
+fricreg_test_check(s.x(:, 2:3), [real(X), -imag(X)], 1e-10, 'x_1', max(abs(X)));
+if ~isequal(size(s.q), [2 7])
+    error('test:hb', 'q: a row per block''s row');
 end
 end
 
