@@ -340,7 +340,7 @@ START_TEST(bad_input)
         bad[1] = 0.0;
         ck_assert_int_eq(fricreg_jenkins_set_params(j, 2, kt, bad), mun_code[k]);
     }
-    /* the message names the one condition that fails (issue 74): mun[1] < 0 beside a good kt */
+    /* the message names the one condition that fails (a host code reads it): mun[1] < 0 beside a good kt */
     bad[0] = 0.5;
     bad[1] = -0.25;
     ck_assert_int_eq(fricreg_jenkins_set_params(j, 2, kt, bad), FRICREG_EINVAL);

@@ -47,16 +47,6 @@ gsl_permutation *fr_gsl_permutation_new(size_t n)
     return p;
 }
 
-gsl_eigen_symm_workspace *fr_gsl_eigen_symm_new(size_t n)
-{
-    gsl_eigen_symm_workspace *w = block(sizeof *w, 2 * n);
-    if (w != NULL) {
-        double *d = (double *)(w + 1);
-        *w = (gsl_eigen_symm_workspace){.size = n, .d = d, .sd = d + n};
-    }
-    return w;
-}
-
 gsl_root_fsolver *fr_gsl_brent_new(void)
 {
     size_t state = gsl_root_fsolver_brent->size;

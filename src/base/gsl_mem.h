@@ -26,7 +26,4 @@ gsl_permutation *fr_gsl_permutation_new(size_t n);
 /* Brent's bracketing root solver (gsl_root_fsolver_brent), or NULL. */
 gsl_root_fsolver *fr_gsl_brent_new(void);
 
-/* The workspace gsl_eigen_symm needs for an n x n matrix, or NULL. */
-gsl_eigen_symm_workspace *fr_gsl_eigen_symm_new(size_t n);
-
 #endif

@@ -21,12 +21,6 @@ struct fr_disk_coupling {
     double *blk;   /* [4 nb] W_ij row-major: blk[4k + 2a + b] = W(2i + a, 2j + b) */
 };
 
-/* Block k of a row as W_ij (row-major); the transpose W_ji is blk[4k + 2b + a]. */
-static inline const double *fr_disk_coupling_block(const struct fr_disk_coupling *w, int64_t k)
-{
-    return w->blk + 4 * k;
-}
-
 /* From a dense row-major W of order 2m (checked symmetric): the blocks that are not all zero,
  * and every diagonal block. FRICREG_OK or FRICREG_ENOMEM (nothing held). */
 int fr_disk_coupling_from_dense(struct fr_disk_coupling *w, size_t m, const double W[]);

@@ -175,11 +175,6 @@ int fr_structure_stable(const fricreg_structure *s)
     return s->stable;
 }
 
-double fr_structure_omega_max(const fricreg_structure *s)
-{
-    return s->omega_max;
-}
-
 double fr_structure_newton_rate(const fricreg_structure *s)
 {
     double slope = 0.0;

@@ -14,13 +14,6 @@
 
 #include "structure_internal.h"
 
-void fr_peak_sample(fricreg_structure *s)
-{
-    const double *u = s->u->data;
-    for (size_t i = 0; i < s->n; i++)
-        s->peak[i] = fmax(s->peak[i], fabs(u[i]));
-}
-
 /* The largest |u| at the turning points in (0, 1) of the cubic Hermite interpolant
  * p(theta) = u0 + h v0 theta + b theta^2 + c theta^3 with p(1) = u1, p'(1) = h v1. */
 static double turning_peak(double u0, double v0, double u1, double v1, double h)

@@ -342,9 +342,8 @@ static inline double fr_merit_pair(double a, double b)
  * checks and results but the error estimate and the warning handler (run.c). */
 int fr_structure_step_plain(fricreg_structure *s, double dt);
 int fr_structure_run_plain(fricreg_structure *s, double dt, double t_end);
-/* peak.c: the peaks take in the current state (sample), or a fixed step of length h from the
- * current state to u1[n], v1[n], its turning points included (step). */
-void fr_peak_sample(fricreg_structure *s);
+/* peak.c: the peaks take in a fixed step of length h from the current state to u1[n], v1[n],
+ * its turning points included (step). */
 void fr_peak_step(fricreg_structure *s, const double u1[], const double v1[], double h);
 /* The observer (if any) at time t with u[n], v[n], f[m]: 1 if it asks to stop. */
 int fr_structure_observe(fricreg_structure *s, double t, const double u[], const double v[],
@@ -398,7 +397,6 @@ int fr_central_solve(fricreg_structure *s, double dt);
  * 2048 degrees of freedom the eigenvalues themselves; beyond, Gershgorin bounds (guard.c). */
 struct fr_integrator;
 int fr_structure_rates(fricreg_structure *s, const char *who);
-double fr_structure_omega_max(const fricreg_structure *s);
 int fr_structure_stable(const fricreg_structure *s);
 /* K + J^T diag(kstick) J, the stiffness with every element sticking and closed (its upper
  * triangle), or NULL when out of memory. */
