@@ -25,10 +25,10 @@ of freedom harmonic-major (all dofs' a0, then all dofs' a1, all b1, ...), and tm
 only the harmonics listed in ``h``: ``aft_layouts.py`` converts, and makes an element a
 tmdsimpy force.
 """
-from collections import namedtuple
 
 import numpy as np
 
+from ._record import record
 from ._fricreg import ffi, lib
 from .arrays import as_doubles, as_integer, as_scalar, pointer
 from .element import Element
@@ -36,17 +36,17 @@ from .errors import raise_status, refused
 
 __all__ = ["AFT", "AFTResult", "AFTNormalResult", "AFT_ELEMENT_TYPES"]
 
-AFTResult = namedtuple("AFTResult", "f jac")
-AFTResult.__doc__ = """The result of :meth:`AFT.jenkins`, :meth:`AFT.iwan` and :meth:`AFT.element`.
+AFTResult = record("AFTResult", "f jac", """\
+The result of :meth:`AFT.jenkins`, :meth:`AFT.iwan` and :meth:`AFT.element`.
 
 f : ndarray of float64, shape (n,), or (dim, n) for :meth:`AFT.element` on a normal type
     The force's coefficients in fricreg's order (a normal type's rows: the tangential
     forces, then the normal force N).
 jac : ndarray of float64, shape (dim n, dim n) (row-major, d f[i] / d u[j]), or None
-"""
+""")
 
-AFTNormalResult = namedtuple("AFTNormalResult", "f nf jac")
-AFTNormalResult.__doc__ = """The result of :meth:`AFT.jenkins_normal` and
+AFTNormalResult = record("AFTNormalResult", "f nf jac", """\
+The result of :meth:`AFT.jenkins_normal` and
 :meth:`AFT.jenkins_2d_normal`.
 
 f : ndarray of float64, shape (n,) (1-D) or (2, n) (rows fx, fy)
@@ -55,7 +55,7 @@ nf : ndarray of float64, shape (n,)
     The normal force's coefficients, N(theta) = max(0, N0 + kn g(theta)).
 jac : ndarray of float64, shape (2n, 2n) or (3n, 3n), or None
     Row-major, rows (f, nf) or (fx, fy, nf), columns (u, g) or (ux, uy, g); d nf / d u = 0.
-"""
+""")
 
 #: The element types of :class:`fricreg.Element` that :meth:`AFT.element` takes, with the C
 #: functions it calls (contact_3d: the sampled path only).

@@ -10,10 +10,10 @@ the paper is ``docs/coupled.md``'s, the step ``docs/structural.md``'s ("Your own
 fricreg").
 """
 import operator
-from collections import namedtuple
 
 import numpy as np
 
+from ._record import record
 from ._fricreg import ffi, lib
 from .arrays import as_doubles, as_integer, as_scalar, pointer
 from .errors import raise_status, refused
@@ -29,8 +29,8 @@ _PARTITION_CODES = {"consistent": lib.FRICREG_PARTITION_CONSISTENT,
                     "paper": lib.FRICREG_PARTITION_PAPER}
 _STATS = ("evals", "feq_contacts", "factorizations", "solves", "qp_iterations", "factor_updates")
 
-StepResult = namedtuple("StepResult", "f iterations converged")
-StepResult.__doc__ = """The result of :meth:`Context.solve_step`.
+StepResult = record("StepResult", "f iterations converged", """\
+The result of :meth:`Context.solve_step`.
 
 f : ndarray of float64, shape (m,)
     The step's friction forces (force units); the best iterate when not converged.
@@ -38,7 +38,7 @@ iterations : int
     The Newton iterations made (``info[0]``).
 converged : bool
     Whether max_i |G_i| <= tol (``info[1]``); a step that did not converge raises nothing.
-"""
+""")
 
 
 class Context:

@@ -8,10 +8,10 @@ position w (Simo & Hughes, *Computational Inelasticity*, 1998, Ch. 1 and 3): sti
 k |u_t - w| <= b (f = k (u_t - w)), else slip at |f| = b and w' = u_t - f/k. The header's
 table lists every type's parameters and state.
 """
-from collections import namedtuple
 
 import numpy as np
 
+from ._record import record
 from ._fricreg import ffi, lib
 from .arrays import as_doubles, as_integer, as_scalar, pointer
 from .errors import raise_status, refused
@@ -24,8 +24,8 @@ ELEMENT_TYPES = tuple(
     for i in range(lib.fricreg_element_count())
 )
 
-ElementResult = namedtuple("ElementResult", "f dfdu dfdp state")
-ElementResult.__doc__ = """The result of :meth:`Element.eval`.
+ElementResult = record("ElementResult", "f dfdu dfdp state", """\
+The result of :meth:`Element.eval`.
 
 f : ndarray, shape (npoints, dim), or (dim,) for one point
     The element's force (the normal force N last for a normal type).
@@ -35,7 +35,7 @@ dfdp : ndarray, shape (npoints, dim, nparams), or None
     The force's derivative in each parameter, ``dfdp[i, a, j]`` = df_a/dp_j.
 state : ndarray, shape (npoints, nstate), or (nstate,) for one point
     The state at the end of the increment (the input state is never modified).
-"""
+""")
 
 
 def _type_for(name, nparams):

@@ -7,12 +7,12 @@ Fourier coefficients are laid out as fricreg_hb.h's: a periodic function of θ =
 x0 + Σ_{h=1..H} (a_h cos hθ + b_h sin hθ), stored as the 2H + 1 numbers
 (x0, a_1, b_1, ..., a_H, b_H) along the last axis (tmdsimpy's and pyHarm's order per dof).
 """
-from collections import namedtuple
+from ._record import record
 
 __all__ = ["Solution", "Response", "Bifurcation", "Backbone", "SpecialPoint"]
 
-Solution = namedtuple("Solution", "omega q x stable mu_max multipliers")
-Solution.__doc__ = """A periodic steady state (:meth:`HarmonicBalance.solve`).
+Solution = record("Solution", "omega q x stable mu_max multipliers", """\
+A periodic steady state (:meth:`HarmonicBalance.solve`).
 
 omega : float
     Excitation circular frequency Ω, rad/s.
@@ -28,10 +28,10 @@ mu_max : float
 multipliers : ndarray of complex, shape (2 ndof,), or None
     The Floquet multipliers μ = exp(2π λ/Ω) by decreasing |μ| (``fricreg_hb_point_exponents``);
     None with stability off.
-"""
+""")
 
-Bifurcation = namedtuple("Bifurcation", "kind omega level point rms")
-Bifurcation.__doc__ = """A bifurcation located along a branch (``fricreg_hb_bifurcation``).
+Bifurcation = record("Bifurcation", "kind omega level point rms", """\
+A bifurcation located along a branch (``fricreg_hb_bifurcation``).
 
 kind : str
     ``"TP"`` turning point (a fold in the continued parameter), ``"BP"`` branch point,
@@ -45,11 +45,13 @@ point : int
     The index of the stored point before it (it lies between point and point + 1).
 rms : ndarray, shape (ndof,)
     Each dof's RMS there (displacement units).
-"""
+""")
 
-Response = namedtuple("Response",
-                      "omega level rms x stable mu_max bifurcations solution multipliers")
-Response.__doc__ = """A branch of the periodic response (:meth:`HarmonicBalance.frequency_response`,
+Response = record(
+    "Response",
+    "omega level rms x stable mu_max bifurcations solution multipliers",
+    """\
+A branch of the periodic response (:meth:`HarmonicBalance.frequency_response`,
 :meth:`HarmonicBalance.level_response`), its points in the branch's order.
 
 omega : ndarray, shape (npoints,)
@@ -72,10 +74,10 @@ solution : Solution or None
     q is J x, equal to the solver's unknowns to Newton's tolerance: a guess to go on from.
 multipliers : ndarray of complex, shape (npoints, 2 ndof), or None
     Each point's Floquet multipliers by decreasing |μ|; None with stability off.
-"""
+""")
 
-SpecialPoint = namedtuple("SpecialPoint", "kind amplitude omega zeta harmonic mode")
-SpecialPoint.__doc__ = """A special point of a backbone (``fricreg_hb_nma_special_point``), in the
+SpecialPoint = record("SpecialPoint", "kind amplitude omega zeta harmonic mode", """\
+A special point of a backbone (``fricreg_hb_nma_special_point``), in the
 branch's order among its folds and crossings.
 
 kind : str
@@ -92,10 +94,10 @@ harmonic : int
     k, 2 <= k <= H for a crossing; 1 for a fold.
 mode : int
     r, the stuck linear mode crossed (from 0, ascending); a fold's the backbone's own.
-"""
+""")
 
-Backbone = namedtuple("Backbone", "amplitude omega zeta harmonic_energy special_points x")
-Backbone.__doc__ = """A nonlinear mode's backbone by the extended periodic motion concept (Krack,
+Backbone = record("Backbone", "amplitude omega zeta harmonic_energy special_points x", """\
+A nonlinear mode's backbone by the extended periodic motion concept (Krack,
 Computers & Structures 154 (2015) 59-71): :meth:`HarmonicBalance.backbone`.
 
 amplitude : ndarray, shape (npoints,)
@@ -113,4 +115,4 @@ special_points : tuple of SpecialPoint
     by amplitude otherwise).
 x : ndarray, shape (npoints, ndof, 2H + 1)
     The displacements' Fourier coefficients of each point's periodic motion.
-"""
+""")

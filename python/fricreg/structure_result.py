@@ -3,16 +3,16 @@
 the structure's getters report at the run's end (``fricreg_structure.h``): peaks, dissipation,
 the energy balance, the counters, the error estimates with their kinds and the warnings."""
 import threading
-from collections import namedtuple
 
 import numpy as np
 
 from ._fricreg import ffi, lib
+from ._record import record
 
 __all__ = ["ErrorEstimate", "EstimateCompanions", "StructureResult"]
 
-ErrorEstimate = namedtuple("ErrorEstimate", "error kind")
-ErrorEstimate.__doc__ = """An error estimate against the Coulomb problem (eps -> 0), from the
+ErrorEstimate = record("ErrorEstimate", "error kind", """\
+An error estimate against the Coulomb problem (eps -> 0), from the
 companion runs of ``fricreg_structure_set_error_estimate`` (docs/structural.md, "Error
 estimate").
 
@@ -22,11 +22,13 @@ kind : ndarray of str, shape (n,)
     Each estimate's kind (``enum fricreg_estimate_kind``): ``"asymptotic"`` (Richardson's with
     the observed order, expected 1 ... 3x the error), ``"bound"`` (a safe upper bound) or
     ``"assumed"`` (one companion, the order assumed).
-"""
+""")
 
-EstimateCompanions = namedtuple(
-    "EstimateCompanions", "used cpu_seconds screen_peak_displacement_error screen_dissipation_error")
-EstimateCompanions.__doc__ = """Which companions gave a structure's error estimate, what they cost, and
+EstimateCompanions = record(
+    "EstimateCompanions",
+    "used cpu_seconds screen_peak_displacement_error screen_dissipation_error",
+    """\
+Which companions gave a structure's error estimate, what they cost, and
 what the coarser screen had said where the finer confirmed it
 (``fricreg_structure_set_error_companions``, ``fricreg_structure_get_value``).
 
@@ -41,14 +43,16 @@ screen_peak_displacement_error, screen_dissipation_error : float
     Where ``"auto"``'s finer companions confirmed: the screen's estimate of the largest peak's
     error (m) and of the summed dissipations' error (J) when it doubted, inf where it failed;
     nan where no confirmation ran.
-"""
+""")
 
-StructureResult = namedtuple(
+StructureResult = record(
     "StructureResult",
-    "times displacements velocities forces output_dofs t peak_displacement dissipation "
-    "element_dissipation element_forces energy stats peak_displacement_error "
-    "dissipation_error element_dissipation_error warnings estimate_companions")
-StructureResult.__doc__ = """The result of :meth:`fricreg.Structure.run`.
+    "times displacements velocities forces output_dofs t peak_displacement "
+    "dissipation element_dissipation element_forces energy stats "
+    "peak_displacement_error dissipation_error element_dissipation_error warnings "
+    "estimate_companions",
+    """\
+The result of :meth:`fricreg.Structure.run`.
 
 Rows of the time series are samples, in time order: the state at the run's start, then at
 every ``output_every``-th step time k dt and at the run's end (``fricreg-sim structure
@@ -91,7 +95,7 @@ warnings : list of (str, str)
 estimate_companions : EstimateCompanions or None
     Which companions gave the error estimates and what the screen said; None without an
     estimate (new in 1.9, the last field: unpacking by position takes one more name).
-"""
+""")
 
 _KINDS = {lib.FRICREG_EST_KIND_ASYMPTOTIC: "asymptotic", lib.FRICREG_EST_KIND_BOUND: "bound",
           lib.FRICREG_EST_KIND_ASSUMED: "assumed"}
