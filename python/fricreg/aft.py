@@ -30,7 +30,7 @@ import numpy as np
 
 from ._record import record
 from ._fricreg import ffi, lib
-from .arrays import as_doubles, as_integer, as_scalar, pointer
+from ._arrays import as_doubles, as_integer, as_scalar, pointer
 from .element import Element
 from .errors import raise_status, refused
 

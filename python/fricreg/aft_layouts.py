@@ -11,7 +11,7 @@ fricreg's bit for bit.
 import numpy as np
 
 from .aft import AFT, _aft_type
-from .arrays import as_doubles, as_integer
+from ._arrays import as_doubles, as_integer
 from .errors import refused
 
 __all__ = ["TmdsimpyForce", "to_tmdsimpy", "from_tmdsimpy", "jacobian_to_tmdsimpy",

@@ -15,10 +15,10 @@ import numpy as np
 
 from ._record import record
 from ._fricreg import ffi, lib
-from .arrays import as_doubles, as_integer, as_scalar, pointer
+from ._arrays import as_doubles, as_integer, as_scalar, pointer
 from .errors import raise_status, refused
 from .laws import LAWS, _law_code
-from .matrices import MatrixArgs, is_sparse
+from ._matrices import MatrixArgs, is_sparse
 
 __all__ = ["Context", "PARTITIONS", "StepResult"]
 

@@ -13,7 +13,7 @@ F and D the joint's backbone force and Masing dissipation at the modal amplitude
 import numpy as np
 
 from ._fricreg import ffi, lib
-from .arrays import as_doubles, as_scalar, choice, pointer
+from ._arrays import as_doubles, as_scalar, choice, pointer
 from .errors import raise_status, refused
 
 __all__ = ["FIT_PARAMS", "FitResult", "fit_backbone", "backbone"]

@@ -12,11 +12,11 @@ import threading
 import numpy as np
 
 from ._fricreg import ffi, lib
-from .arrays import as_doubles, as_integer, as_scalar, choice, pointer
+from ._arrays import as_doubles, as_integer, as_scalar, choice, pointer
 from .element import Element
 from .errors import Error, InputError, interrupted, raise_status, refused
-from .hb_results import Backbone, Bifurcation, Response, Solution, SpecialPoint
-from .matrices import MatrixArgs
+from ._hb_results import Backbone, Bifurcation, Response, Solution, SpecialPoint
+from ._matrices import MatrixArgs
 
 __all__ = ["HarmonicBalance", "Solution", "Response", "Bifurcation", "Backbone",
            "SpecialPoint"]

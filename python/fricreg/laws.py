@@ -7,7 +7,7 @@ Coulomb (1), force balance at rest (2), Karnopp, velocity-limited (3), tanh and 
 import numpy as np
 
 from ._fricreg import ffi, lib
-from .arrays import as_doubles, as_scalar, pointer
+from ._arrays import as_doubles, as_scalar, pointer
 from .errors import raise_status, refused
 
 __all__ = ["LAWS", "law_eval"]

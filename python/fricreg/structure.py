@@ -16,14 +16,14 @@ import warnings
 
 import numpy as np
 
-from . import structure_result
+from . import _structure_result as structure_result
 from ._fricreg import ffi, lib
-from .arrays import as_doubles, as_scalar, choice, pointer
+from ._arrays import as_doubles, as_scalar, choice, pointer
 from .element import Element, _type_for
 from .errors import AccuracyWarning, Error, interrupted, raise_status, refused
 from .laws import _law_code
-from .matrices import MatrixArgs, is_sparse
-from .structure_result import ErrorEstimate, EstimateCompanions, StructureResult
+from ._matrices import MatrixArgs, is_sparse
+from ._structure_result import ErrorEstimate, EstimateCompanions, StructureResult
 
 __all__ = ["INTEGRATORS", "Structure", "StructureResult", "ErrorEstimate", "EstimateCompanions"]
 

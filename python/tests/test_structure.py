@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 import fricreg
-from fricreg import structure_result
+from fricreg import _structure_result as structure_result
 from fricreg._fricreg import ffi, lib
 from conftest import fricreg_sim
 

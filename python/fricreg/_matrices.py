@@ -7,7 +7,7 @@ with 64-bit indices. scipy itself is never imported: a sparse matrix is known by
 import numpy as np
 
 from ._fricreg import ffi, lib
-from .arrays import as_doubles, pointer
+from ._arrays import as_doubles, pointer
 
 __all__ = []
 
