@@ -11,14 +11,11 @@ from setuptools import setup
 
 version = subprocess.run(["pkg-config", "--modversion", "fricreg"], check=True,
                          capture_output=True, text=True).stdout.strip()
+# The rest of the metadata is pyproject.toml's [project] table (PEP 621); the version is
+# dynamic there, the library's own.
 setup(
-    name="fricreg",
     version=version,
-    description="Dry (Coulomb) friction with stick-slip: Quinn's regularization, joints' elements",
-    license="GPL-3.0-or-later",
     packages=["fricreg"],
-    python_requires=">=3.7",
-    install_requires=["numpy"],
     setup_requires=["cffi>=1.12"],
     cffi_modules=["build_ffi.py:ffibuilder"],
 )
