@@ -15,7 +15,8 @@ function [X, info] = fricreg_nlvib_frf(system, H, Om_s, Om_e, varargin)
 %                                  friction_limit_force, force_direction (the row of J).
 %              unilateralSpring    stiffness max(q - gap, 0): fricreg's 'jenkins_normal' with
 %                                  mu = 0 (no friction), kn = stiffness, n0 = -stiffness gap,
-%                                  two rows w' of J (its tangential row carries no force).
+%                                  two rows w' of J (its tangential row carries no force);
+%                                  with 'stability', Hill's method unless 'method' is given.
 %           Any other type (cubicSpring, tanhDryFriction, quadraticDamper,
 %           polynomialStiffness, ...) raises fricreg:nlvib naming it.
 %   H       the harmonics, 1..40.
@@ -79,6 +80,7 @@ for k = 1:2:numel(varargin)
         rest = [rest, {'continuation', [ds 1e-6 max(0.1, ds) 2000]}]; %#ok<AGROW>
     case {'newton', 'continuation', 'method'}
         rest = [rest, varargin(k:k + 1)]; %#ok<AGROW>
+        opts.method_given = true;
     otherwise
         error('fricreg:option', ['fricreg_nlvib_frf: unknown option ''%s'' (x0, stability, ' ...
                                  'ds, newton, continuation, method)'], num2str(varargin{k}));
@@ -87,6 +89,12 @@ end
 n = size(system.M, 1);
 nc = 2 * H + 1;
 elements = nlvib_elements(system, n);
+unilateral = any(strcmp({elements.type}, 'jenkins_normal'));
+if opts.stability && unilateral && ~isfield(opts, 'method_given')
+    % a unilateral spring: Hill's method, whose verdict NLvib's shooting confirms on example
+    % 03's middle branch, where the exact monodromy (the default's choice) finds a stable stretch
+    rest = [rest, {'method', 'hill'}];
+end
 Fex1 = system.Fex1;
 if numel(Fex1) ~= n
     error('fricreg:size', 'fricreg_nlvib_frf: Fex1 must have ndof = %d elements, not %d', n, ...

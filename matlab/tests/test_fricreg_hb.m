@@ -23,6 +23,7 @@ cases = {'stuck_solve_is_linear', @stuck_solve_is_linear
          'nlvib_guess_and_object', @nlvib_guess_and_object
          'nlvib_layout', @nlvib_layout
          'nlvib_unilateral_spring', @nlvib_unilateral_spring
+         'nlvib_unilateral_stability', @nlvib_unilateral_stability
          'nlvib_residual', @nlvib_residual};
 failures = fricreg_test_run('hb', cases);
 end
@@ -339,6 +340,22 @@ fricreg_mex('hb_set_excitation', h, [0; 0.1], [0; 0]);
 [omega, ~, ~, x] = fricreg_mex('hb_continue', h, 0.8, 0.5);
 if ~same_bits(X, nlvib_layout_of(omega, x)) || max(abs(X(1, :))) < 1e-3
     error('test:hb', 'example 03: the adapter differs from the lower-level build, or no contact');
+end
+end
+
+function nlvib_unilateral_stability()
+% Example 03's branch from 0.8 down to 0.5 rad/s folds twice (a hardening overhang): every
+% point strictly between the two turning points is unstable (a saddle's multiplier past +1),
+% as NLvib's own shooting finds there; the lower branch before the first fold is stable.
+[X, info] = fricreg_nlvib_frf(example_03(1), 21, 0.8, 0.5, 'stability', true);
+b = info.bifurcations;
+tp = [b(strcmp({b.kind}, 'TP')).point];
+if numel(tp) ~= 2 || ~all(info.stable(1:tp(1) - 1)) || any(info.stable(tp(1) + 1:tp(2)))
+    error('test:hb', 'example 03: turning points after %s, stability %s', mat2str(tp), ...
+          mat2str(find(diff(info.stable))));
+end
+if abs(X(end, tp(1)) - 0.6534) > 2e-3 || abs(X(end, tp(2)) - 0.7556) > 2e-3
+    error('test:hb', 'example 03: folds at %g and %g', X(end, tp(1)), X(end, tp(2)));
 end
 end
 
