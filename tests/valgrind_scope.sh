@@ -49,7 +49,8 @@ while [ -n "$todo" ]; do
         fricreg_disk.h | fricreg_stribeck.h) modules="$modules law" ;;
         fricreg_disk_ctx.h) modules="$modules disk_ctx" ;;
         fricreg_exact.h) modules="$modules exact" ;;
-        fricreg_hb.h) modules="$modules hb" above="floquet nma forced" ;;
+        fricreg_hb.h | fricreg_hb_forced.h | fricreg_hb_stability.h | fricreg_hb_nma.h)
+            modules="$modules hb" above="floquet nma forced" ;;
         fricreg_sim.h) modules="$modules sim" ;;
         fricreg_structure.h | fricreg_structure_gsl.h) modules="$modules structure" ;;
         fricreg_petsc.h) modules="$modules petsc" ;;
@@ -101,7 +102,7 @@ for file in $(printf '%s\n' "$changes" | grep -E '^(src/[a-z_]+/|include/fricreg
     include/fricreg_disk.h | include/fricreg_stribeck.h) m=law ;;
     include/fricreg_disk_ctx.h) m=disk_ctx ;;
     include/fricreg_exact.h) m=exact ;;
-    include/fricreg_hb.h) m=hb ;;
+    include/fricreg_hb.h | include/fricreg_hb_*.h) m=hb ;;
     include/fricreg_sim.h) m=sim ;;
     include/fricreg_structure.h | include/fricreg_structure_gsl.h) m=structure ;;
     include/fricreg_petsc.h) m=petsc ;;
