@@ -52,7 +52,7 @@ while [ -n "$todo" ]; do
         fricreg_hb.h | fricreg_hb_forced.h | fricreg_hb_stability.h | fricreg_hb_nma.h)
             modules="$modules hb" above="floquet nma forced" ;;
         fricreg_sim.h) modules="$modules sim" ;;
-        fricreg_structure.h | fricreg_structure_gsl.h) modules="$modules structure" ;;
+        fricreg_structure*.h | fricreg_ctx_step.h) modules="$modules structure" ;;
         fricreg_petsc.h) modules="$modules petsc" ;;
         fricreg*.h) modules="$modules unknown" ;;
         esac
@@ -104,7 +104,7 @@ for file in $(printf '%s\n' "$changes" | grep -E '^(src/[a-z_]+/|include/fricreg
     include/fricreg_exact.h) m=exact ;;
     include/fricreg_hb.h | include/fricreg_hb_*.h) m=hb ;;
     include/fricreg_sim.h) m=sim ;;
-    include/fricreg_structure.h | include/fricreg_structure_gsl.h) m=structure ;;
+    include/fricreg_structure*.h | include/fricreg_ctx_step.h) m=structure ;;
     include/fricreg_petsc.h) m=petsc ;;
     *) m=base ;; # fricreg.h, fricreg_types.h, the version: every program's
     esac
