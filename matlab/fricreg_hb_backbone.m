@@ -4,12 +4,14 @@ function b = fricreg_hb_backbone(h, mode, a0, a1, npoints, varargin)
 %   B = FRICREG_HB_BACKBONE(H, MODE, A0, A1, NPOINTS) follows the backbone of mode MODE (1 the
 %   lowest natural frequency of the structure with its elements stuck) of the driver H
 %   (FRICREG_HARMONIC_BALANCE) from the modal amplitude A0 to A1 (0 < A0 < A1), NPOINTS points
-%   (default 50, geometric in the amplitude), by the extended periodic motion concept: the
+%   (default 50, at equal arclength), by the extended periodic motion concept: the
 %   free motion with the dissipation made up by a negative mass-proportional damping xi M,
 %   zeta = xi / (2 omega); the excitation is not used.
 %   FRICREG_HB_BACKBONE(..., 'damping', D) with D 'matrix' (default: C as set) or 'modal'
-%   (the mode's own modal damping); 'through_folds', true continues by pseudo-arclength
-%   through the folds in the amplitude (internal resonances), the points at equal arclength.
+%   (the mode's own modal damping); 'through_folds' true (the default, as Python's and the
+%   CLI's) continues by pseudo-arclength through the folds in the amplitude (internal
+%   resonances); false is the natural march in the amplitude, the points geometric in it,
+%   which stops at a fold.
 %
 %   The amplitude a is modal, phi' M X_1 with phi the stuck mode mass-normalized: displacement
 %   units times the square root of mass units.
@@ -33,8 +35,9 @@ function b = fricreg_hb_backbone(h, mode, a0, a1, npoints, varargin)
 %      fricreg:ENONFINITE   A0 or A1 not finite
 %      fricreg:ENOTPSD      M not positive definite
 %      fricreg:ESINGULAR    a dynamic stiffness or Newton's matrix singular
-%      fricreg:EWORK        Newton did not converge (or the march met a fold: try
-%                           'through_folds')
+%      fricreg:EWORK        Newton did not converge (or, 'through_folds' false, the march
+%                           met a fold)
+%      fricreg:EINTEGRATOR  the continuation's step fell below ds_min
 %
 %   Source: fricreg_hb_nma, fricreg_hb_nma_continue, fricreg_hb_nma_point,
 %   fricreg_hb_nma_harmonic_energy, fricreg_hb_nma_special_point (include/fricreg_hb.h;
@@ -50,7 +53,7 @@ if nargin < 5 || isempty(npoints)
     npoints = 50;
 end
 damping = 'matrix';
-folds = false;
+folds = true;
 if mod(numel(varargin), 2) ~= 0
     error('fricreg:option', 'fricreg_hb_backbone: options come in name/value pairs');
 end

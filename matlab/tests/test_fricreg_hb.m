@@ -138,7 +138,8 @@ cleanup = onCleanup(@() fricreg_hb_free(h));
 top = [200 5]; % J phi is -0.0103 for mode 1, -1.48 for mode 2: the slip at |J phi| a = mun/kt
 for mode = 1:2
     [phi, wk] = stuck_mode(M, K + kt * (J' * J), mode);
-    b = fricreg_hb_backbone(h, mode, 1e-3, top(mode), 12, 'damping', 'modal');
+    b = fricreg_hb_backbone(h, mode, 1e-3, top(mode), 12, 'damping', 'modal', ...
+                            'through_folds', false);
     if ~isequal(size(b.amplitude), [12 1]) || ~isequal(size(b.x), [12 2 11]) || ...
        ~isequal(size(b.harmonic_energy), [12 6]) || ~isstruct(b.special_points)
         error('test:hb', 'backbone shapes');
@@ -156,6 +157,11 @@ for mode = 1:2
         error('test:hb', 'mode %d: no slip at a = %g (omega %g of %g)', mode, top(mode), ...
               b.omega(end), wk);
     end
+    % through the folds (the default): the same ends, its first point the stuck mode's
+    c = fricreg_hb_backbone(h, mode, 1e-3, top(mode), 12, 'damping', 'modal');
+    fricreg_test_check(c.amplitude([1 end]), b.amplitude([1 end]), 1e-12, 'ends');
+    fricreg_test_check(c.omega(1), wk, 1e-13, 'omega_k, through folds');
+    fricreg_test_check(c.omega(end), b.omega(end), 1e-8, 'omega at a1, through folds');
 end
 end
 
