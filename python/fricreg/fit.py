@@ -9,11 +9,15 @@ quasi-static modal analysis's (Lacayo and Allen, MSSP 118 (2019) 133-157)::
     k_sec = K0 + F(a)/a,   f = sqrt(k_sec)/(2 pi),   zeta = zeta0 + D(a)/(2 pi k_sec a^2)
 
 F and D the joint's backbone force and Masing dissipation at the modal amplitude a.
+
+Or any harmonic-balance model's nonlinear mode (``model=``, a :class:`HarmonicBalance`): its
+EPMC backbone at the levels, the parameters its elements' values and Rayleigh's damping,
+differentiated exactly through the backbone (``fricreg_fit_set_model_hb``).
 """
 import numpy as np
 
 from ._fricreg import ffi, lib
-from ._arrays import as_doubles, as_scalar, choice, pointer
+from ._arrays import as_doubles, as_integer, as_scalar, choice, pointer
 from .errors import raise_status, refused
 
 __all__ = ["FIT_PARAMS", "FitResult", "fit_backbone", "backbone"]
@@ -35,19 +39,20 @@ class FitResult(dict):
 
     Attributes
     ----------
-    x : ndarray, shape (6,)
-        The parameters, in the order of :data:`FIT_PARAMS` (the fixed ones as fixed).
+    x : ndarray, shape (np,)
+        The parameters, in the order of :data:`FIT_PARAMS` (np = 6), or of ``params`` for a
+        harmonic-balance model (the fixed ones as fixed).
     params : dict
-        The same by name.
-    cov : ndarray, shape (6, 6)
+        The same by name, or by description for a harmonic-balance model.
+    cov : ndarray, shape (np, np)
         Their covariance (a fixed parameter's row and column 0).
-    lower, upper : ndarray, shape (6,)
+    lower, upper : ndarray, shape (np,)
         The 95 % intervals (asymmetric for a log-scaled parameter, inside its bounds).
-    free : ndarray of bool, shape (6,)
+    free : ndarray of bool, shape (np,)
     sv : ndarray, shape (p,)
         The singular values of the Jacobian in the transformed free parameters (log-scaled:
         relative changes), largest first.
-    vectors : ndarray, shape (p, 6)
+    vectors : ndarray, shape (p, np)
         Row k: the parameter combination sv[k] determines (0 on fixed parameters).
     residuals_freq, residuals_zeta : ndarray, shape (n,)
         The levels' weighted residuals (model - measured)/sd.
@@ -105,9 +110,27 @@ def _by_name(mapping, name):
     return mapping
 
 
-def _set_params(fit, x0, bounds, fixed):
-    x0, bounds, fixed = _by_name(x0, "x0"), _by_name(bounds, "bounds"), _by_name(fixed, "fixed")
-    for j, name in enumerate(FIT_PARAMS):
+def _by_index(mapping, name, names):
+    """mapping (dict by parameter description or index into params) as a dict by description."""
+    out = {}
+    for key, value in dict(mapping or {}).items():
+        if isinstance(key, (int, np.integer)) and 0 <= key < len(names):
+            key = names[key]
+        if key not in names:
+            raise refused("%s: %r is not one of params (nor an index into them)" % (name, key))
+        out[key] = value
+    return out
+
+
+def _set_params(fit, x0, bounds, fixed, names=None):
+    """Each parameter free (start, bounds) or fixed; names: an HB model's descriptions."""
+    if names is not None:
+        x0, bounds, fixed = (_by_index(m, n, names) for m, n in
+                             ((x0, "x0"), (bounds, "bounds"), (fixed, "fixed")))
+    else:
+        x0, bounds = _by_name(x0, "x0"), _by_name(bounds, "bounds")
+        fixed = _by_name(fixed, "fixed")
+    for j, name in enumerate(names or FIT_PARAMS):
         if name in fixed:
             status = lib.fricreg_fit_set_fixed(fit, j, as_scalar(fixed[name], "fixed"))
             _check(fit, status, "fixed[%r]" % name)
@@ -116,13 +139,15 @@ def _set_params(fit, x0, bounds, fixed):
         start = as_scalar(x0[name], "x0") if name in x0 else np.nan
         status = lib.fricreg_fit_set_free(fit, j, start, as_scalar(lo, "bounds"),
                                           as_scalar(hi, "bounds"))
-        _check(fit, status, "parameter %r" % name)
-    return np.array([name not in fixed for name in FIT_PARAMS])
+        _check(fit, status, "parameter %r" % (name,))
+    return np.array([name not in fixed for name in names or FIT_PARAMS])
 
 
 def fit_backbone(amplitude, freq_hz, zeta, *, kind="acceleration", sensor=1.0,
-                 sd_freq_hz=None, sd_zeta=None, x0=None, bounds=None, fixed=None, starts=32):
-    """Fit the modal Iwan model to measured levels (``fricreg_fit_run``).
+                 sd_freq_hz=None, sd_zeta=None, x0=None, bounds=None, fixed=None, starts=None,
+                 model=None, params=None, mode=0, damping="matrix", dof=None):
+    """Fit the modal Iwan model, or a harmonic-balance model's nonlinear mode, to measured
+    levels (``fricreg_fit_run``).
 
     Parameters
     ----------
@@ -142,13 +167,28 @@ def fit_backbone(amplitude, freq_hz, zeta, *, kind="acceleration", sensor=1.0,
         variance, Student's t intervals.
     x0 : dict, optional
         Starts by name (:data:`FIT_PARAMS`); a parameter without one takes the levels'
-        (docs/identification.md, "Starts").
+        (docs/identification.md, "Starts"). With ``model``: by description or index into
+        ``params``; default the driver's value.
     bounds : dict of (lower, upper), optional
         Bounds by name, not below the parameter's own (0; -1 for chi); default (own, inf).
     fixed : dict, optional
         Parameters fixed at values (``{"beta": 0.0}``: the model without the delta).
-    starts : int
-        How many starts, 1 ... 1000 (default 32).
+    starts : int, optional
+        How many starts, 1 ... 1000: default 32 for the modal Iwan model, 1 with ``model``
+        (each start marches backbones).
+    model : HarmonicBalance, optional
+        Fit this driver's nonlinear mode instead (EPMC, ``fricreg_fit_set_model_hb``): its
+        element values and Rayleigh's coefficients that ``params`` names, set in the driver
+        at each evaluation; after the fit the driver holds the fitted values.
+    params : sequence, with ``model``
+        The parameters, as :meth:`HarmonicBalance.backbone_sensitivities` describes them:
+        ``("element", first, count, index)`` (one value shared by elements first ..
+        first + count - 1) or ``("damping", 1)`` / ``("damping", 2)`` (Rayleigh's a0, a1).
+    mode, damping : with ``model``
+        The mode (from 0) and its linear damping, as :meth:`HarmonicBalance.backbone`'s.
+    dof : int, optional, with ``model``
+        The levels' amplitudes are the first harmonic's at this dof (``kind`` displacement,
+        velocity or acceleration); without it, modal amplitudes times ``sensor``.
 
     Returns
     -------
@@ -183,10 +223,37 @@ def fit_backbone(amplitude, freq_hz, zeta, *, kind="acceleration", sensor=1.0,
                           % (sf.shape, sz.shape, a.shape))
         _check(fit, lib.fricreg_fit_set_deviations(fit, a.size, pointer(sf), pointer(sz)),
                "deviations")
-    free = _set_params(fit, x0, bounds, fixed)
-    _check(fit, lib.fricreg_fit_set_starts(fit, int(starts)), "starts")
+    names = None
+    if model is not None:
+        names = _set_model(fit, model, params, mode, damping, dof)
+    elif params is not None or dof is not None:
+        raise refused("params, dof: only with model (a HarmonicBalance)")
+    free = _set_params(fit, x0, bounds, fixed, names)
+    if starts is not None:
+        _check(fit, lib.fricreg_fit_set_starts(fit, as_integer(starts, "starts")), "starts")
     _check(fit, lib.fricreg_fit_run(fit), "fit_backbone")
-    return _result(fit, a.size, free)
+    result = _result(fit, a.size, free, names)
+    result["_model"] = model  # the driver a curve marches, kept alive with the result
+    return result
+
+
+def _set_model(fit, model, params, mode, damping, dof):
+    """An HB model's nonlinear mode as the fit's model; the parameters' descriptions."""
+    from .harmonic_balance import HarmonicBalance, _DAMPING, model_params
+    if not isinstance(model, HarmonicBalance):
+        raise refused("model: %r is not a fricreg.HarmonicBalance" % (model,))
+    if params is None or len(params) == 0:
+        raise refused("params: the model's parameters to fit are missing")
+    rows = model_params(params)
+    columns = [ffi.new("int[]", [r[0] for r in rows])] + [
+        ffi.new("size_t[]", [r[j] for r in rows]) for j in (1, 2, 3)]
+    _check(fit, lib.fricreg_fit_set_model_hb(fit, model._hb, as_integer(mode, "mode"),
+                                              choice(_DAMPING, damping, "damping"), len(rows),
+                                              *columns), "model")
+    if dof is not None:
+        _check(fit, lib.fricreg_fit_set_sensor_dof(fit, model.ndof, model.harmonics,
+                                                    as_integer(dof, "dof")), "dof")
+    return [tuple(p) for p in params]
 
 
 def _value(fit, which):
@@ -195,21 +262,23 @@ def _value(fit, which):
     return out[0]
 
 
-def _result(fit, n, free):
-    x, lower, upper, sv = (np.empty(_NP) for _ in range(4))
-    cov, vectors = np.empty((_NP, _NP)), np.empty((_NP, _NP))
+def _result(fit, n, free, names=None):
+    names = names or FIT_PARAMS
+    npar = len(names)
+    x, lower, upper, sv = (np.empty(npar) for _ in range(4))
+    cov, vectors = np.empty((npar, npar)), np.empty((npar, npar))
     rf, rz = np.empty(n), np.empty(n)
-    _check(fit, lib.fricreg_fit_get_params(fit, _NP, pointer(x)), "fit_backbone")
-    _check(fit, lib.fricreg_fit_get_covariance(fit, _NP, pointer(cov), pointer(lower),
+    _check(fit, lib.fricreg_fit_get_params(fit, npar, pointer(x)), "fit_backbone")
+    _check(fit, lib.fricreg_fit_get_covariance(fit, npar, pointer(cov), pointer(lower),
                                                pointer(upper)), "fit_backbone")
-    _check(fit, lib.fricreg_fit_get_identifiability(fit, _NP, pointer(sv), pointer(vectors)),
+    _check(fit, lib.fricreg_fit_get_identifiability(fit, npar, pointer(sv), pointer(vectors)),
            "fit_backbone")
     _check(fit, lib.fricreg_fit_get_residuals(fit, n, pointer(rf), pointer(rz)), "fit_backbone")
     q = ffi.new("double *")
     _check(fit, lib.fricreg_fit_get_quantile(fit, q), "fit_backbone")
     p = int(_value(fit, lib.FRICREG_FIT_NFREE))
     return FitResult(
-        x=x, params=dict(zip(FIT_PARAMS, x.tolist())), cov=cov, lower=lower, upper=upper,
+        x=x, params=dict(zip(names, x.tolist())), cov=cov, lower=lower, upper=upper,
         free=free, sv=sv[:p].copy(), vectors=vectors[:p].copy(),
         residuals_freq=rf, residuals_zeta=rz, cost=_value(fit, lib.FRICREG_FIT_COST),
         residual_variance=_value(fit, lib.FRICREG_FIT_RESIDUAL_VARIANCE), quantile=q[0],

@@ -43,6 +43,31 @@ WATCH_INTERVAL = 0.02
 _calls = threading.local()
 
 
+def model_params(params, amplitude=False):
+    """The rows (kind, first, count, index) of parameter descriptions: ``("element", first,
+    count, index)``, ``("damping", index)`` and, where allowed, ``("amplitude",)``."""
+    kinds = {"element": lib.FRICREG_HB_NMA_PARAM_ELEMENT,
+             "damping": lib.FRICREG_HB_NMA_PARAM_DAMPING,
+             "amplitude": lib.FRICREG_HB_NMA_PARAM_AMPLITUDE}
+    forms = "('element', first, count, index), ('damping', index)" + (
+        " or ('amplitude',)" if amplitude else "")
+    rows = []
+    for p in params:
+        p = tuple(p)
+        if not p or p[0] not in kinds or (p[0] == "amplitude" and not amplitude):
+            raise refused("params: %r is not %s" % (p, forms))
+        if p[0] == "element" and len(p) == 4:
+            rows.append((kinds["element"], as_integer(p[1], "params first"),
+                         as_integer(p[2], "params count"), as_integer(p[3], "params index")))
+        elif p[0] == "damping" and len(p) == 2:
+            rows.append((kinds["damping"], 0, 0, as_integer(p[1], "params index")))
+        elif p[0] == "amplitude" and len(p) == 1:
+            rows.append((kinds["amplitude"], 0, 0, 0))
+        else:
+            raise refused("params: %r has the wrong number of entries" % (p,))
+    return rows
+
+
 def _check_mass(args):
     """A negative mass refused: a diagonal entry of M below 0 (the C driver takes any symmetric
     M, and only the backbone's linear mode would find it)."""
@@ -685,23 +710,7 @@ class HarmonicBalance:
         fricreg.Error
             FRICREG_ESINGULAR at a fold or a repeated stuck mode.
         """
-        kinds = {"element": lib.FRICREG_HB_NMA_PARAM_ELEMENT,
-                 "damping": lib.FRICREG_HB_NMA_PARAM_DAMPING,
-                 "amplitude": lib.FRICREG_HB_NMA_PARAM_AMPLITUDE}
-        rows = []
-        for p in params:
-            p = tuple(p)
-            if not p or p[0] not in kinds:
-                raise refused("params: %r is not ('element', first, count, index), "
-                              "('damping', index) or ('amplitude',)" % (p,))
-            if p[0] == "element" and len(p) == 4:
-                rows.append((kinds["element"], int(p[1]), int(p[2]), int(p[3])))
-            elif p[0] == "damping" and len(p) == 2:
-                rows.append((kinds["damping"], 0, 0, int(p[1])))
-            elif p[0] == "amplitude" and len(p) == 1:
-                rows.append((kinds["amplitude"], 0, 0, 0))
-            else:
-                raise refused("params: %r has the wrong number of entries" % (p,))
+        rows = model_params(params, amplitude=True)
         n = len(rows)
         kind = ffi.new("int[]", [r[0] for r in rows] or [0])
         first, count, index = (ffi.new("size_t[]", [r[j] for r in rows] or [0])

@@ -110,3 +110,39 @@ def test_failures_raise_with_the_library_message():
         fricreg.fit_backbone(same, fs, zs, sensor=SENSOR, sd_freq_hz=fs * 1e-4, sd_zeta=zs * 0.01,
                              fixed={"chi": 0.3, "beta": 0.5, "zeta0": 0.002})
     assert info.value.name == "FRICREG_ESINGULAR"
+
+
+def describing_function(a, kt, mun):
+    """ω² and ζ of x'' + x + f = 0 at x = a cos θ, f a Jenkins element, H = 1 (the
+    oscillator's backbone in closed form; tests/test_hb_nma.c derives it)."""
+    delta = mun / kt
+    beta = np.arccos(1 - 2 * delta / a)
+    w2 = 1 + kt / np.pi * (beta - 0.5 * np.sin(2 * beta))
+    return w2, 4 * mun * (a - delta) / (2 * np.pi * a * a * w2)
+
+
+def test_a_harmonic_balance_models_fit_recovers_the_closed_forms_parameters():
+    """Levels made by the describing function's closed form (kt = 2, mu N = 3), fitted on the
+    HB model of the same oscillator from starts 2x off: the parameters back to the fit's
+    tolerance, the driver left at them, and the fitted curve through the levels."""
+    a = np.array([2.0, 3.0, 5.0, 9.0, 20.0])  # all slipping: mun/kt = 1.5
+    w2, zeta = describing_function(a, 2.0, 3.0)
+    hb = fricreg.HarmonicBalance([[1.0]], [[1.0]], elements=[("jenkins", [[1.0]], [[4.0, 1.5]])],
+                                 harmonics=1)
+    params = [("element", 0, 1, 0), ("element", 0, 1, 1)]
+    res = fricreg.fit_backbone(a, np.sqrt(w2) / (2 * np.pi), zeta, kind="displacement",
+                               model=hb, params=params)
+    np.testing.assert_allclose(res.x, [2.0, 3.0], rtol=1e-7)
+    assert res.params[params[1]] == res.x[1] and res.success and res.x.shape == (2,)
+    assert (hb.element_param(0, 0), hb.element_param(0, 1)) == tuple(res.x)
+    f, z, sf, sz = res.curve(a)
+    np.testing.assert_allclose(f, np.sqrt(w2) / (2 * np.pi), rtol=1e-7)
+    np.testing.assert_allclose(z, zeta, rtol=1e-6)
+    with pytest.raises(fricreg.InputError, match="params"):
+        fricreg.fit_backbone(a, np.sqrt(w2) / (2 * np.pi), zeta, model=hb,
+                             params=[("amplitude",)])
+    with pytest.raises(fricreg.InputError, match="model"):
+        fricreg.fit_backbone(a, np.sqrt(w2) / (2 * np.pi), zeta, model="hb", params=params)
+    with pytest.raises(fricreg.InputError, match="x0"):
+        fricreg.fit_backbone(a, np.sqrt(w2) / (2 * np.pi), zeta, model=hb, params=params,
+                             x0={("element", 0, 1, 2): 1.0})
