@@ -261,14 +261,18 @@ FRICREG_API int fricreg_hb_set_rayleigh(fricreg_hb *hb, double a0, double a1);
  *  set_iwan_normal, set_jenkins_2d_normal) are thin wrappers kept for the ABI: each checks its
  *  arguments, then replaces the elements held by m elements of its one kind, as
  *  fricreg_hb_clear_elements and fricreg_hb_add_elements would, with the same answers bit for
- *  bit as before; new code may use fricreg_hb_add_elements, which also mixes kinds. */
+ *  bit as before; new code may use fricreg_hb_add_elements, which also mixes kinds.
+ *  \deprecated Since 1.9, a wrapper kept for the ABI: new code calls fricreg_hb_add_elements (the
+ *  equivalence bit for bit: docs/joints.md, "The per-kind setters"). */
 FRICREG_API int fricreg_hb_set_elements(fricreg_hb *hb, size_t m, size_t ndof, const double J[],
                                         const double kt[], const double mun[]);
 
 /** fricreg_hb_set_elements under the structure's name (fricreg_structure_set_jenkins: the
  *  same arguments and meaning), its messages naming set_jenkins. Since 1.7 (FRICREG_1.7).
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_EINVAL, as
- *  fricreg_hb_set_elements. */
+ *  fricreg_hb_set_elements.
+ *  \deprecated Since 1.9, a wrapper kept for the ABI: new code calls fricreg_hb_add_elements (the
+ *  equivalence bit for bit: docs/joints.md, "The per-kind setters"). */
 FRICREG_API int fricreg_hb_set_jenkins(fricreg_hb *hb, size_t m, size_t ndof, const double J[],
                                        const double kt[], const double mun[]);
 
@@ -295,7 +299,9 @@ FRICREG_API int fricreg_hb_set_jenkins(fricreg_hb *hb, size_t m, size_t ndof, co
  *  Returns FRICREG_OK; FRICREG_ENULL if hb, J, k or phi is NULL; FRICREG_ESIZE if m or ndof is
  *  not the driver's; FRICREG_ENONFINITE if an entry is NaN or infinite; FRICREG_EINVAL if a row
  *  of J is zero, ns is out of its range, some k <= 0 or phi < 0; FRICREG_ENOMEM. All inputs are
- *  checked before anything changes, and nothing changes on failure. Since 1.6. */
+ *  checked before anything changes, and nothing changes on failure. Since 1.6.
+ *  \deprecated Since 1.9, a wrapper kept for the ABI: new code calls fricreg_hb_add_elements (the
+ *  equivalence bit for bit: docs/joints.md, "The per-kind setters"). */
 FRICREG_API int fricreg_hb_set_iwan(fricreg_hb *hb, size_t m, size_t ndof, const double J[],
                                     size_t ns, const double k[], const double phi[]);
 
@@ -336,7 +342,9 @@ FRICREG_API int fricreg_hb_set_iwan(fricreg_hb *hb, size_t m, size_t ndof, const
  *  m or ndof is not the driver's; FRICREG_ENONFINITE if an entry is NaN or infinite;
  *  FRICREG_EINVAL if a row of Jt or Jn is zero, some kt[i] <= 0, mu[i] < 0 or kn[i] < 0;
  *  FRICREG_ENOMEM. All inputs are checked before anything changes, and nothing changes on
- *  failure. Since 1.6 (FRICREG_1.6). */
+ *  failure. Since 1.6 (FRICREG_1.6).
+ *  \deprecated Since 1.9, a wrapper kept for the ABI: new code calls fricreg_hb_add_elements (the
+ *  equivalence bit for bit: docs/joints.md, "The per-kind setters"). */
 FRICREG_API int fricreg_hb_set_normal_elements(fricreg_hb *hb, size_t m, size_t ndof,
                                                const double Jt[], const double Jn[],
                                                const double kt[], const double mu[],
@@ -346,7 +354,9 @@ FRICREG_API int fricreg_hb_set_normal_elements(fricreg_hb *hb, size_t m, size_t 
  *  (fricreg_structure_set_jenkins_normal: the same arguments and meaning), its messages naming
  *  set_jenkins_normal. Since 1.7 (FRICREG_1.7).
  *  Returns FRICREG_OK; FRICREG_ENULL; FRICREG_ESIZE; FRICREG_ENONFINITE; FRICREG_EINVAL;
- *  FRICREG_ENOMEM, as fricreg_hb_set_normal_elements. */
+ *  FRICREG_ENOMEM, as fricreg_hb_set_normal_elements.
+ *  \deprecated Since 1.9, a wrapper kept for the ABI: new code calls fricreg_hb_add_elements (the
+ *  equivalence bit for bit: docs/joints.md, "The per-kind setters"). */
 FRICREG_API int fricreg_hb_set_jenkins_normal(fricreg_hb *hb, size_t m, size_t ndof,
                                               const double Jt[], const double Jn[],
                                               const double kt[], const double mu[],
@@ -388,7 +398,9 @@ FRICREG_API int fricreg_hb_set_jenkins_normal(fricreg_hb *hb, size_t m, size_t n
  *  or ndof is not the driver's; FRICREG_ENONFINITE if an entry is NaN or infinite;
  *  FRICREG_EINVAL if a row of Jt or Jn is zero, ns is out of its range, some k <= 0, mu < 0 or
  *  kn < 0; FRICREG_ENOMEM. All inputs are checked before anything changes, and nothing changes
- *  on failure. Since 1.7 (FRICREG_1.7). */
+ *  on failure. Since 1.7 (FRICREG_1.7).
+ *  \deprecated Since 1.9, a wrapper kept for the ABI: new code calls fricreg_hb_add_elements (the
+ *  equivalence bit for bit: docs/joints.md, "The per-kind setters"). */
 FRICREG_API int fricreg_hb_set_iwan_normal(fricreg_hb *hb, size_t m, size_t ndof, const double Jt[],
                                            const double Jn[], size_t ns, const double k[],
                                            const double mu[], const double n0[], const double kn[]);
@@ -438,7 +450,9 @@ FRICREG_API int fricreg_hb_set_iwan_normal(fricreg_hb *hb, size_t m, size_t ndof
  *  or ndof is not the driver's; FRICREG_ENONFINITE if an entry is NaN or infinite;
  *  FRICREG_EINVAL if a row of Je or Jn is zero, some kt <= 0, mu < 0 or kn < 0; FRICREG_ENOMEM.
  *  All inputs are checked before anything changes, and nothing changes on failure. Since 1.7
- *  (FRICREG_1.7). */
+ *  (FRICREG_1.7).
+ *  \deprecated Since 1.9, a wrapper kept for the ABI: new code calls fricreg_hb_add_elements (the
+ *  equivalence bit for bit: docs/joints.md, "The per-kind setters"). */
 FRICREG_API int fricreg_hb_set_jenkins_2d_normal(fricreg_hb *hb, size_t m, size_t ndof,
                                                  const double Je[], const double Jn[],
                                                  const double kt[], const double mu[],

@@ -137,7 +137,10 @@ FRICREG_API int fricreg_structure_get_elements(const fricreg_structure *s, size_
  *  Returns FRICREG_OK; FRICREG_ENULL (s, or Je, kt or mun with me > 0); FRICREG_ESIZE if ndof
  *  is not the structure's; FRICREG_EINVAL if me > 2^26, a row of J_e is zero, a kt_i <= 0 or
  *  a mun_i < 0, or the call comes from the observer; FRICREG_ENONFINITE (an entry of Je, kt or
- *  mun); FRICREG_ENOMEM. On failure the elements in force are unchanged. */
+ *  mun); FRICREG_ENOMEM. On failure the elements in force are unchanged.
+ *  \deprecated Since 1.9, a wrapper kept for the ABI: new code calls
+ *  fricreg_structure_add_elements (the equivalence bit for bit: docs/joints.md, "The per-kind
+ *  setters"). */
 FRICREG_API int fricreg_structure_set_jenkins(fricreg_structure *s, size_t me, size_t ndof,
                                               const double Je[], const double kt[],
                                               const double mun[]);
@@ -148,7 +151,10 @@ FRICREG_API int fricreg_structure_set_jenkins(fricreg_structure *s, size_t me, s
  *  Returns FRICREG_OK; FRICREG_ENULL (s, kt, mun, rowptr, or colind or values with nnz > 0);
  *  FRICREG_ESIZE; FRICREG_EINVAL (flags, pointers, indices, a zero row, kt_i <= 0, mun_i < 0,
  *  me > 2^26, from the observer); FRICREG_ENONFINITE; FRICREG_ENOMEM, as
- *  fricreg_structure_set_jenkins. */
+ *  fricreg_structure_set_jenkins.
+ *  \deprecated Since 1.9, a wrapper kept for the ABI: new code calls
+ *  fricreg_structure_add_elements (the equivalence bit for bit: docs/joints.md, "The per-kind
+ *  setters"). */
 FRICREG_API int fricreg_structure_set_jenkins_csr(fricreg_structure *s, size_t me, size_t ndof,
                                                   int flags, const int64_t rowptr[],
                                                   const int64_t colind[], const double values[],
@@ -189,7 +195,10 @@ FRICREG_API int fricreg_structure_set_jenkins_csr(fricreg_structure *s, size_t m
  *  is not the structure's; FRICREG_EINVAL if 2 me > 2^26, a row of J_e is zero (either axis of
  *  an element), a kt_i <= 0 or a mun_i < 0, or the call comes from the observer;
  *  FRICREG_ENONFINITE (an entry of Je, kt or mun); FRICREG_ENOMEM. On failure the elements in
- *  force are unchanged. */
+ *  force are unchanged.
+ *  \deprecated Since 1.9, a wrapper kept for the ABI: new code calls
+ *  fricreg_structure_add_elements (the equivalence bit for bit: docs/joints.md, "The per-kind
+ *  setters"). */
 FRICREG_API int fricreg_structure_set_jenkins_2d(fricreg_structure *s, size_t me, size_t ndof,
                                                  const double Je[], const double kt[],
                                                  const double mun[]);
@@ -200,7 +209,10 @@ FRICREG_API int fricreg_structure_set_jenkins_2d(fricreg_structure *s, size_t me
  *  Returns FRICREG_OK; FRICREG_ENULL (s, kt, mun, rowptr, or colind or values with nnz > 0);
  *  FRICREG_ESIZE; FRICREG_EINVAL (flags, pointers, indices, a zero row, kt_i <= 0, mun_i < 0,
  *  2 me > 2^26, from the observer); FRICREG_ENONFINITE; FRICREG_ENOMEM, as
- *  fricreg_structure_set_jenkins_2d. */
+ *  fricreg_structure_set_jenkins_2d.
+ *  \deprecated Since 1.9, a wrapper kept for the ABI: new code calls
+ *  fricreg_structure_add_elements (the equivalence bit for bit: docs/joints.md, "The per-kind
+ *  setters"). */
 FRICREG_API int fricreg_structure_set_jenkins_2d_csr(fricreg_structure *s, size_t me, size_t ndof,
                                                      int flags, const int64_t rowptr[],
                                                      const int64_t colind[], const double values[],
@@ -270,7 +282,10 @@ FRICREG_API int fricreg_structure_get_jenkins_state(const fricreg_structure *s, 
  *  Returns FRICREG_OK; FRICREG_ENULL (s, or Je, k or phi with me > 0); FRICREG_ESIZE if ndof is
  *  not the structure's; FRICREG_EINVAL if ns = 0 or ns > FRICREG_ELEMENT_MAX_SLIDERS with
  *  me > 0, me ns > 2^26, a row of J_e is zero, a k <= 0 or a phi < 0, or the call comes from the observer; FRICREG_ENONFINITE (an
- *  entry of Je, k or phi); FRICREG_ENOMEM. On failure the elements in force are unchanged. */
+ *  entry of Je, k or phi); FRICREG_ENOMEM. On failure the elements in force are unchanged.
+ *  \deprecated Since 1.9, a wrapper kept for the ABI: new code calls
+ *  fricreg_structure_add_elements (the equivalence bit for bit: docs/joints.md, "The per-kind
+ *  setters"). */
 FRICREG_API int fricreg_structure_set_iwan(fricreg_structure *s, size_t me, size_t ndof,
                                            const double Je[], size_t ns, const double k[],
                                            const double phi[]);
@@ -281,7 +296,10 @@ FRICREG_API int fricreg_structure_set_iwan(fricreg_structure *s, size_t me, size
  *  Returns FRICREG_OK; FRICREG_ENULL (s, k, phi, rowptr, or colind or values with nnz > 0);
  *  FRICREG_ESIZE; FRICREG_EINVAL (flags, pointers, indices, a zero row, ns = 0 or above
  *  FRICREG_ELEMENT_MAX_SLIDERS, k <= 0, phi < 0, me ns > 2^26, from the observer); FRICREG_ENONFINITE; FRICREG_ENOMEM, as
- *  fricreg_structure_set_iwan. */
+ *  fricreg_structure_set_iwan.
+ *  \deprecated Since 1.9, a wrapper kept for the ABI: new code calls
+ *  fricreg_structure_add_elements (the equivalence bit for bit: docs/joints.md, "The per-kind
+ *  setters"). */
 FRICREG_API int fricreg_structure_set_iwan_csr(fricreg_structure *s, size_t me, size_t ndof,
                                                int flags, const int64_t rowptr[],
                                                const int64_t colind[], const double values[],
@@ -337,7 +355,10 @@ FRICREG_API int fricreg_structure_get_iwan_state(const fricreg_structure *s, siz
  *  FRICREG_ESIZE if ndof is not the structure's; FRICREG_EINVAL if me > 2^26, a row of J_e or
  *  J_n is zero, a kt <= 0, mu < 0 or kn <= 0, or the call comes from the observer;
  *  FRICREG_ENONFINITE (an entry of Je, Jn, kt, mu, n0 or kn); FRICREG_ENOMEM. On failure the
- *  elements in force are unchanged. */
+ *  elements in force are unchanged.
+ *  \deprecated Since 1.9, a wrapper kept for the ABI: new code calls
+ *  fricreg_structure_add_elements (the equivalence bit for bit: docs/joints.md, "The per-kind
+ *  setters"). */
 FRICREG_API int fricreg_structure_set_jenkins_normal(fricreg_structure *s, size_t me, size_t ndof,
                                                      const double Je[], const double Jn[],
                                                      const double kt[], const double mu[],
@@ -386,7 +407,10 @@ FRICREG_API int fricreg_structure_set_jenkins_normal(fricreg_structure *s, size_
  *  FRICREG_ESIZE if ndof is not the structure's; FRICREG_EINVAL if ns = 0 or
  *  ns > FRICREG_ELEMENT_MAX_SLIDERS with me > 0, me ns > 2^26, a row of J_e or J_n is zero, a k <= 0, mu < 0 or kn <= 0, or the call comes
  *  from the observer; FRICREG_ENONFINITE (an entry of Je, Jn, k, mu, n0 or kn);
- *  FRICREG_ENOMEM. On failure the elements in force are unchanged. */
+ *  FRICREG_ENOMEM. On failure the elements in force are unchanged.
+ *  \deprecated Since 1.9, a wrapper kept for the ABI: new code calls
+ *  fricreg_structure_add_elements (the equivalence bit for bit: docs/joints.md, "The per-kind
+ *  setters"). */
 FRICREG_API int fricreg_structure_set_iwan_normal(fricreg_structure *s, size_t me, size_t ndof,
                                                   const double Je[], const double Jn[], size_t ns,
                                                   const double k[], const double mu[],
@@ -445,7 +469,10 @@ FRICREG_API int fricreg_structure_set_iwan_normal(fricreg_structure *s, size_t m
  *  FRICREG_ESIZE if ndof is not the structure's; FRICREG_EINVAL if 2 me > 2^26, a row of J_e
  *  (either axis) or of J_n is zero, a kt <= 0, mu < 0 or kn <= 0, or the call comes from the
  *  observer; FRICREG_ENONFINITE (an entry of Je, Jn, kt, mu, n0 or kn); FRICREG_ENOMEM. On
- *  failure the elements in force are unchanged. */
+ *  failure the elements in force are unchanged.
+ *  \deprecated Since 1.9, a wrapper kept for the ABI: new code calls
+ *  fricreg_structure_add_elements (the equivalence bit for bit: docs/joints.md, "The per-kind
+ *  setters"). */
 FRICREG_API int fricreg_structure_set_jenkins_2d_normal(fricreg_structure *s, size_t me,
                                                         size_t ndof, const double Je[],
                                                         const double Jn[], const double kt[],
