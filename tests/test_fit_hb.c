@@ -167,7 +167,7 @@ static void check_recovery(int dof, int kind, const double factor[NPAR])
     for (int j = 0; j < NPAR; j++)
         ck_assert_int_eq(fricreg_fit_set_free(fit, j, truth[j] * factor[j], 0.0, INFINITY),
                          FRICREG_OK);
-    ck_assert_int_eq(fricreg_fit_run(fit), FRICREG_OK);
+    ck_assert_msg(fricreg_fit_run(fit) == FRICREG_OK, "%s", fricreg_fit_errmsg(fit));
     ck_assert_int_eq(fricreg_fit_get_params(fit, NPAR, p), FRICREG_OK);
     for (int j = 0; j < NPAR; j++)
         ck_assert_double_le(fabs(p[j] - truth[j]), 1e-6 * truth[j]);
