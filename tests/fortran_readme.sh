@@ -1,6 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-3.0-or-later
-# fortran/README.md names every binding: each type-bound procedure of module fricreg (its
+# fortran/README.md and fortran/F77.md name every binding: each type-bound procedure of module fricreg (its
 # types are in the object files fortran/*.F90 beside fricreg.F90, which re-exports them) in its
 # type's rows of the table (those from the row that names the type in bold to the next bold
 # row), as `name(` or `obj%name(`, and each named generic binding likewise; each name of the
@@ -15,8 +15,12 @@
 # silently take the first). One awk reads the README, the module and the F77 files: a grep per
 # name took half a minute. Usage: fortran_readme.sh ROOT
 root=$1
-readme=$root/fortran/README.md module=$root/fortran/fricreg.F90
-[ -f "$readme" ] && [ -f "$module" ] || { echo "FAIL: no $readme or $module"; exit 1; }
+module=$root/fortran/fricreg.F90
+[ -f "$root/fortran/README.md" ] && [ -f "$root/fortran/F77.md" ] && [ -f "$module" ] ||
+    { echo "FAIL: no fortran/README.md, fortran/F77.md or $module"; exit 1; }
+# The guide is README.md (the module) and F77.md (the module-free entry points), read as one.
+readme=$(mktemp) && trap 'rm -f "$readme"' EXIT
+cat "$root/fortran/README.md" "$root/fortran/F77.md" >"$readme"
 # The object files of module fricreg, after fricreg.F90: every other .F90 of fortran/.
 objects=
 for f in "$root"/fortran/*.F90; do [ "$f" = "$module" ] || objects="$objects $f"; done
@@ -108,7 +112,7 @@ END {
     }
     for (i = 1; i <= nf77; i++) {
         checked++
-        if (!index_in_readme("`" f77[i] "(")) fail("F77 entry point " f77[i] " is not in fortran/README.md")
+        if (!index_in_readme("`" f77[i] "(")) fail("F77 entry point " f77[i] " is not in fortran/README.md or F77.md")
     }
     printf "%s", fails_text
     printf "%d passed, %d failed\n", checked - fails, fails
