@@ -1,0 +1,149 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/**
+ * \file
+ * fricreg_qsma.h — quasi-static modal analysis (QSMA) of a harmonic-balance driver's model: a
+ * mode's amplitude-dependent natural frequency and damping ratio from static solves along the
+ * mode's load direction and Masing's rule for the loop, with their exact sensitivities. The
+ * cheap route to the backbone where the nonlinear mode (fricreg_hb_nma, EPMC) is the full one.
+ *
+ * The model is the driver's (fricreg_hb.h: M, K, C or Rayleigh's, J and the elements); its
+ * excitation, Newton settings and results are neither used nor changed. Since 1.9.
+ */
+#ifndef FRICREG_QSMA_H
+#define FRICREG_QSMA_H
+
+#include <stddef.h>
+
+#include "fricreg_hb.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** \defgroup hb_qsma Joints: quasi-static modal analysis (fricreg_qsma.h)
+ *  \{ */
+
+/** \name Quasi-static modal analysis
+ *  R. M. Lacayo, M. S. Allen, "Updating structural models containing nonlinear Iwan joints using
+ *  quasi-static modal analysis", Mechanical Systems and Signal Processing 118 (2019) 133–157.
+ *  Mode k of the structure with its elements stuck, K_0 φ_k = ω_k² M φ_k (K_0 = K + J^T diag(k)
+ *  J, φ_k^T M φ_k = 1, its largest entry positive: fricreg_hb_nma's mode), is loaded statically
+ *  from rest (every slider stuck, unloaded) along its inertia load,
+ *
+ *      K x + J^T F(J x) = λ M φ_k,      q = φ_k^T M x,
+ *
+ *  λ increasing; the modal amplitude q and λ trace the virgin loading curve λ(q). The secant
+ *  frequency and Masing's loop (the unloading branch the virgin curve doubled in size) give
+ *
+ *      ω(a)² = λ(a)/a,    D(a) = 8 ∫_0^a λ(s) ds − 4 a λ(a),    ζ(a) = ζ_k + D / (2π λ(a) a),
+ *
+ *  D the dissipation per cycle of modal amplitude a, ζ_k = φ_k^T C φ_k / (2 ω_k) the linear
+ *  mode's damping ratio (C or Rayleigh's a0 M + a1 K). Below the first slip ω = ω_k, ζ = ζ_k.
+ *
+ *  The elements must be jenkins or iwan (fricreg_hb_set_elements, fricreg_hb_set_iwan_elements
+ *  or fricreg_hb_add_elements with those types): sliders of stiffness k_s and slip force φ_s,
+ *  whose forces under a monotone load are piecewise linear. The path is then piecewise linear
+ *  and is followed exactly from event to event (each a slider reaching its slip force: the
+ *  tangent K_t = K + Σ_stuck k_s J_r^T J_r refactored, LAPACK's dense Cholesky), so λ(q) and its
+ *  integral are exact to rounding, not approximated. The model is taken dense (a sparse one
+ *  spread out), up to 4096 dofs; each event costs a Cholesky factor, O(ndof³).
+ *
+ *  Valid where QSMA is: one mode (its loading does not excite others: the mode shape may
+ *  change with the slip, but the load stays M φ_k), Masing behaviour (every slider loads
+ *  monotonically along the virgin curve; a slider that would reverse is refused, below), and
+ *  light damping (the energy of one cycle at the secant stiffness). Where the joint couples modes
+ *  (internal resonances), where a slider's force turns back along the load, for elements with
+ *  lift-off, 3-D contact or other laws, or where the damping is not light, the nonlinear mode
+ *  (fricreg_hb_nma, EPMC) is needed. Measured against EPMC's backbone at ζ_k = 0.1 % (modal
+ *  damping; docs/identification.md): within 1e-3 in ω and 1.3 % in ζ on NLvib's 3-dof chain,
+ *  and 1e-3 and 1.5 % on a 60-dof chain with ten Jenkins elements.
+ *  \{ */
+
+/** The natural frequency and damping ratio of mode k at the modal amplitudes amplitude[] by
+ *  quasi-static modal analysis (the section's equations), on the driver's model.
+ *
+ *  mode          k, 0 <= k < ndof, in ascending order of the stuck structure's frequencies.
+ *  n             the amplitudes, >= 1.
+ *  amplitude[n]  modal amplitudes a = φ_k^T M x (fricreg_hb_nma's units: displacement times the
+ *                square root of mass), finite, > 0, strictly increasing.
+ *  omega[n]      out: ω(a), rad/s.
+ *  zeta[n]       out: ζ(a), nondimensional.
+ *
+ *  Cost: a dense generalized eigenproblem of order ndof, then a Cholesky factor of order ndof
+ *  per slider that slips before the last amplitude. Thread safety: one driver per thread.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb, amplitude, omega or zeta is NULL; FRICREG_EINVAL if
+ *  the elements were not set, an element is not jenkins or iwan (the message names its type),
+ *  no slider has a positive slip force, the model has more than 4096 dofs, mode >= ndof, n is 0,
+ *  an amplitude is not > 0 or they do not increase, the stuck mode k has ω_k² <= 0, a slipping
+ *  slider's row would move back against its slip before the last amplitude (the message names
+ *  it and the amplitude: beyond Masing's virgin loading, use fricreg_hb_nma), or if called from
+ *  the monitor; FRICREG_ENONFINITE if an amplitude is NaN or infinite, or K_0 or M is not
+ *  finite, or an intermediate overflows; FRICREG_ENOTPSD if M is not positive definite;
+ *  FRICREG_ESINGULAR if K_0 is singular, or if the tangent becomes singular before the last
+ *  amplitude: the sliders slipping leave a rigid-body motion (macroslip: λ cannot grow, the
+ *  amplitude is beyond reach; the message gives the amplitude where it happens); FRICREG_ENOMEM
+ *  (about 6 ndof² doubles during the call). Nothing is written on failure; the driver's
+ *  results (solution, branch, backbone) are not changed. Since 1.9 (FRICREG_1.9). */
+FRICREG_API int fricreg_hb_qsma_at(fricreg_hb *hb, size_t mode, size_t n, const double amplitude[],
+                                   double omega[], double zeta[]);
+
+/** The exact derivatives of fricreg_hb_qsma_at's ω and ζ at each amplitude in np parameters,
+ *  each described as fricreg_hb_nma_point_sensitivities describes one (enum
+ *  fricreg_hb_nma_param): an element parameter shared by a range of elements (jenkins: 0 kt,
+ *  1 mun; iwan: k[ns], phi[ns]), the linear damping (index 0 ζ_k at fixed ω_k, 1 and 2
+ *  Rayleigh's a0 and a1) or the amplitude itself (along the backbone).
+ *
+ *  On a piece of the path (its pattern of stuck and slipping sliders fixed) the point at fixed q
+ *  solves K_t x + g = λ M φ_k, φ_k^T M x = q linearly (g = Σ_slipping σ_s φ_s J_r^T), so
+ *
+ *      dλ/dp = (−db^T x − v^T (−dK_t x − dg + λ db)) / (b^T v),    b = M φ_k,  v = K_t^-1 b,
+ *
+ *  one dot product a parameter (dK_t = J_r^T J_r for a stuck slider's stiffness, dg = σ_s J_r^T
+ *  for a slipping slider's slip force). A stiffness also moves φ_k: db = M dφ_k/dp from the
+ *  bordered [K_0 − ω_k² M, M φ_k; φ_k^T M, 0] (dφ_k, −dω_k²) = (−dK_0 φ_k, 0) (one dense LU of
+ *  order ndof + 1), and ζ_k with it. dλ/dp is affine in q on a piece, so its integral is exact
+ *  by the trapezoid rule on each piece; the events' own motion adds nothing (λ continuous across
+ *  them). Then, at fixed a,
+ *
+ *      dω/dp = (dλ/dp) / (2 ω a),   dD/dp = 8 ∫_0^a (dλ/dp) ds − 4 a dλ/dp,
+ *      dζ/dp = dζ_k/dp + (dD/dp) / (2π λ a) − (ζ − ζ_k) (dλ/dp) / λ.
+ *
+ *  At an amplitude where a slider starts to slip the derivatives are one-sided (the piece below).
+ *
+ *  mode, n, amplitude  as fricreg_hb_qsma_at's.
+ *  np         the parameters, >= 0 (0: only the arguments are checked).
+ *  kind[np]   each an enum fricreg_hb_nma_param.
+ *  first[np], count[np]  ELEMENT: the elements first .. first + count − 1 (from 0, in the order
+ *             they were set or added), count >= 1: one value that all of them share; ignored
+ *             for the other kinds.
+ *  index[np]  ELEMENT: the parameter's index in each element's layout (jenkins 0 kt, 1 mun;
+ *             iwan of ns sliders: 0 .. ns − 1 the stiffnesses, ns .. 2 ns − 1 the slip forces);
+ *             DAMPING: 0 ζ_k, 1 a0, 2 a1; ignored for AMPLITUDE.
+ *  domega[n np]  out: dω/dp_k at amplitude i in domega[np i + k], rad/s per unit of p_k.
+ *  dzeta[n np]   out: dζ/dp_k, the same layout, per unit of p_k.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb, amplitude, domega or dzeta is NULL, or kind, first,
+ *  count or index with np > 0; FRICREG_EINVAL as fricreg_hb_qsma_at, or if a kind or index is not
+ *  one of the above, an element range is empty or beyond the elements, a parameter is a slider's
+ *  of slip force 0 (it carries nothing: no derivative), or a0, a1 is asked of a model without
+ *  Rayleigh damping; FRICREG_ENONFINITE, FRICREG_ENOTPSD, FRICREG_ESINGULAR as
+ *  fricreg_hb_qsma_at, and FRICREG_ESINGULAR if a stiffness moves φ_k and the stuck mode k is
+ *  repeated (the bordered matrix singular: a pivot below 1e-14 of its largest entry);
+ *  FRICREG_ENOMEM (with stiffness parameters (ndof + 1)² + ndof² doubles more, and np (n +
+ *  ndof + sliders + ...) doubles). Nothing is written on failure; the driver's results are not
+ *  changed. Since 1.9 (FRICREG_1.9). */
+FRICREG_API int fricreg_hb_qsma_sensitivities(fricreg_hb *hb, size_t mode, size_t n,
+                                              const double amplitude[], size_t np, const int kind[],
+                                              const size_t first[], const size_t count[],
+                                              const size_t index[], double domega[],
+                                              double dzeta[]);
+
+/** \} */
+/** \} */
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,535 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* test_hb_qsma.c — Check suite for quasi-static modal analysis (fricreg_hb_qsma_at,
+ * fricreg_hb_qsma_sensitivities, fricreg_qsma.h). Where the numbers come from:
+ *
+ *   - the 1-dof Jenkins oscillator (m = k = 1, kt, mun, C = c M): stuck below a = mun/kt,
+ *     ω² = 1 + kt; above, λ(a) = a + mun, ω² = 1 + mun/a, and Masing's loop is the Jenkins
+ *     element's own, D = 4 mun (a − mun/kt); ζ = c/(2 ω_k) + D/(2π λ a). To 1e-12;
+ *   - Segalman's four-parameter Iwan joint discretized into sliders (fricreg_iwan_set_segalman)
+ *     on a unit modal mass beside K0: exactly the discrete sliders' sums (F = Σ min(k_j a, φ_j),
+ *     D = Σ 4 φ_j (a − φ_j/k_j) over the slipped ones) to 1e-12, and the continuous model's
+ *     closed form (the fit's modal Iwan, fricreg_fit_eval) to the discretization's error,
+ *     measured and bounded below;
+ *   - the EPMC backbone (fricreg_hb_nma_at, modal damping ζ_k = 0.1 % by Rayleigh's a0) of
+ *     NLvib's 3-dof Jenkins chain (tests/support/hb_chain.h) and of the 60-dof chain with ten
+ *     Jenkins elements (test_hb_nma_sensitivity.c's): the measured differences in ω and ζ,
+ *     bounded with a margin (docs/identification.md states them);
+ *   - the sensitivities against central differences of whole QSMA runs (relative step 1e-6:
+ *     the path is exact, so the difference's error is its h² term and rounding), to 1e-6 of
+ *     each derivative's largest magnitude, on those models, the Iwan one per slider, and the
+ *     amplitude and damping parameters;
+ *   - every status, nothing written on failure.
+ *
+ * HB_PRINT=1 prints the measured agreements. */
+#include <check.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fricreg_element.h"
+#include "fricreg_fit.h"
+#include "fricreg_iwan.h"
+#include "fricreg_qsma.h"
+#include "hb_chain.h"
+
+#define SENTINEL (-777.125)
+#define LONG_N 60
+#define LONG_M 10
+#define NS 200 /* the Iwan joint's sliders */
+
+static const double pi = 3.14159265358979323846;
+
+enum {
+    ELEMENT = FRICREG_HB_NMA_PARAM_ELEMENT,
+    DAMPING = FRICREG_HB_NMA_PARAM_DAMPING,
+    AMPLITUDE = FRICREG_HB_NMA_PARAM_AMPLITUDE
+};
+
+static int print(void)
+{
+    return getenv("HB_PRINT") != NULL;
+}
+
+/* ---- The models --------------------------------------------------------------------------- */
+
+/* m = k = 1, one Jenkins element (kt, mun), C = c M. */
+static fricreg_hb *oscillator(double kt, double mun, double c)
+{
+    const double one = 1.0, cc = c;
+    fricreg_hb *hb = NULL;
+    ck_assert_int_eq(fricreg_hb_create(1, 1, 1, &hb), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_mass(hb, 1, &one), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 1, &one), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_damping(hb, 1, &cc), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_elements(hb, 1, 1, &one, &kt, &mun), FRICREG_OK);
+    return hb;
+}
+
+/* A unit modal mass beside K0 with Segalman's joint (F_S, K_T, χ, β) in NS sliders. */
+static fricreg_hb *modal_iwan(const double *p, double K0, double *k, double *phi)
+{
+    fricreg_iwan *iw = NULL;
+    ck_assert_int_eq(fricreg_iwan_create(1, 1, NS, &iw), FRICREG_OK);
+    ck_assert_int_eq(fricreg_iwan_set_segalman(iw, 1, p, p + 1, p + 2, p + 3, 1e-6), FRICREG_OK);
+    ck_assert_int_eq(fricreg_iwan_get_params(iw, 1, NS, k, phi), FRICREG_OK);
+    fricreg_iwan_free(iw);
+    double params[2 * NS];
+    memcpy(params, k, NS * sizeof *k);
+    memcpy(params + NS, phi, NS * sizeof *phi);
+    const double one = 1.0, zero = 0.0;
+    fricreg_hb *hb = NULL;
+    ck_assert_int_eq(fricreg_hb_create(1, 1, 1, &hb), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_mass(hb, 1, &one), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 1, &K0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_damping(hb, 1, &zero), FRICREG_OK);
+    ck_assert_int_eq(
+        fricreg_hb_add_elements(hb, fricreg_element_sliders(fricreg_element_lookup("iwan"), NS), 1,
+                                1, &one, params),
+        FRICREG_OK);
+    return hb;
+}
+
+/* test_hb_nma_sensitivity.c's 60-dof chain: unit masses and springs, fixed at one end, ten
+ * Jenkins elements to the ground at dofs 3, 9, ..., 57 (kt, mun), H = 3. */
+static fricreg_hb *long_chain(double kt, double mun)
+{
+    static double M[LONG_N * LONG_N], K[LONG_N * LONG_N], J[LONG_M * LONG_N];
+    const size_t n = LONG_N;
+    memset(M, 0, sizeof M);
+    memset(K, 0, sizeof K);
+    memset(J, 0, sizeof J);
+    for (size_t i = 0; i < n; i++) {
+        M[i * n + i] = 1.0;
+        K[i * n + i] = i + 1 < n ? 2.0 : 1.0;
+        if (i > 0)
+            K[i * n + i - 1] = K[(i - 1) * n + i] = -1.0;
+    }
+    double kts[LONG_M], muns[LONG_M];
+    for (size_t e = 0; e < LONG_M; e++) {
+        J[e * n + 6 * e + 3] = 1.0;
+        kts[e] = kt;
+        muns[e] = mun;
+    }
+    fricreg_hb *hb = NULL;
+    ck_assert_int_eq(fricreg_hb_create(n, LONG_M, 3, &hb), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_mass(hb, n, M), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, n, K), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_elements(hb, LONG_M, n, J, kts, muns), FRICREG_OK);
+    return hb;
+}
+
+/* ---- Closed forms ------------------------------------------------------------------------- */
+
+START_TEST(oscillator_closed_form)
+{
+    /* kt = 2.385, mun = 0.7: slip from a = 0.2935; c = 0.013 */
+    const double kt = 2.385, mun = 0.7, c = 0.013, d = mun / kt, wk = sqrt(1.0 + kt);
+    const double a[6] = {0.01, 0.2, 0.2935, 0.5, 3.7, 250.0};
+    double w[6], z[6];
+    fricreg_hb *hb = oscillator(kt, mun, c);
+    ck_assert_int_eq(fricreg_hb_qsma_at(hb, 0, 6, a, w, z), FRICREG_OK);
+    for (int i = 0; i < 6; i++) {
+        double lam = a[i] <= d ? (1.0 + kt) * a[i] : a[i] + mun;
+        double D = a[i] <= d ? 0.0 : 4.0 * mun * (a[i] - d);
+        double we = sqrt(lam / a[i]), ze = c / (2.0 * wk) + D / (2.0 * pi * lam * a[i]);
+        ck_assert_double_eq_tol(w[i], we, 1e-12 * we);
+        ck_assert_double_eq_tol(z[i], ze, 1e-12 * fmax(ze, 1e-3));
+    }
+    fricreg_hb_free(hb);
+}
+END_TEST
+
+/* The continuous joint's backbone by the fit's closed form, ω and ζ at modal amplitudes. */
+static void continuous_iwan(const double *p, double K0, size_t n, const double *a, double *w,
+                            double *z)
+{
+    fricreg_fit *fit = NULL;
+    ck_assert_int_eq(fricreg_fit_create(&fit), FRICREG_OK);
+    const double pf[FRICREG_FIT_NPARAMS] = {
+        [FRICREG_FIT_FS] = p[0],   [FRICREG_FIT_KT] = p[1],   [FRICREG_FIT_CHI] = p[2],
+        [FRICREG_FIT_BETA] = p[3], [FRICREG_FIT_ZETA0] = 0.0, [FRICREG_FIT_K0] = K0};
+    ck_assert_int_eq(fricreg_fit_eval(fit, pf, FRICREG_FIT_DISPLACEMENT, n, a, w, z, NULL, NULL,
+                                      NULL),
+                     FRICREG_OK);
+    for (size_t i = 0; i < n; i++)
+        w[i] *= 2.0 * pi;
+    fricreg_fit_free(fit);
+}
+
+START_TEST(iwan_closed_forms)
+{
+    /* F_S 1.3, K_T 2.385, χ −0.4, β 0.6; K0 0.8: φ_max = F_S (1 + β)/(K_T c) = 0.998 */
+    const double p[4] = {1.3, 2.385, -0.4, 0.6}, K0 = 0.8;
+    enum { N = 9 };
+    const double a[N] = {1e-3, 3e-3, 0.01, 0.03, 0.1, 0.3, 0.7, 1.5, 4.0};
+    double k[NS], phi[NS], w[N], z[N], wc[N], zc[N], ew = 0.0, ez = 0.0;
+    fricreg_hb *hb = modal_iwan(p, K0, k, phi);
+    ck_assert_int_eq(fricreg_hb_qsma_at(hb, 0, N, a, w, z), FRICREG_OK);
+    continuous_iwan(p, K0, N, a, wc, zc);
+    for (int i = 0; i < N; i++) {
+        double F = 0.0, D = 0.0; /* the discrete sliders' own sums */
+        for (int j = 0; j < NS; j++) {
+            F += fmin(k[j] * a[i], phi[j]);
+            if (phi[j] > 0.0 && k[j] * a[i] > phi[j])
+                D += 4.0 * phi[j] * (a[i] - phi[j] / k[j]);
+        }
+        double lam = K0 * a[i] + F, we = sqrt(lam / a[i]), ze = D / (2.0 * pi * lam * a[i]);
+        ck_assert_double_eq_tol(w[i], we, 1e-12 * we);
+        ck_assert_double_eq_tol(z[i], ze, 1e-11 * ze + 1e-15);
+        ew = fmax(ew, fabs(w[i] - wc[i]) / wc[i]);
+        ez = fmax(ez, fabs(z[i] - zc[i]) / zc[i]);
+    }
+    if (print())
+        printf("Iwan, %d sliders, against the continuous closed form: omega %.2e, zeta %.2e\n", NS,
+               ew, ez);
+    ck_assert_double_le(ew, 1.5e-4);
+    ck_assert_double_le(ez, 2e-2);
+    fricreg_hb_free(hb);
+}
+END_TEST
+
+/* ---- Against EPMC ------------------------------------------------------------------------- */
+
+/* The largest relative differences of QSMA against EPMC (modal damping) at n amplitudes from
+ * a0 to a1, geometric (EPMC's march at ratios 1.1 apart: with longer steps it may land on
+ * another branch). */
+static void against_epmc(const char *name, fricreg_hb *hb, size_t mode, double a0, double a1,
+                         size_t n, double *dw, double *dz)
+{
+    double a[64], w[64], z[64];
+    for (size_t i = 0; i < n; i++)
+        a[i] = a0 * pow(a1 / a0, (double)i / (double)(n - 1));
+    ck_assert_int_eq(fricreg_hb_qsma_at(hb, mode, n, a, w, z), FRICREG_OK);
+    int status = fricreg_hb_nma_at(hb, mode, FRICREG_HB_NMA_DAMPING_MODAL, n, a);
+    if (status != FRICREG_OK)
+        printf("%s: %s\n", name, fricreg_hb_errmsg(hb));
+    ck_assert_int_eq(status, FRICREG_OK);
+    double dza = 0.0;
+    *dw = *dz = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        double ai, we, ze;
+        ck_assert_int_eq(fricreg_hb_nma_point(hb, i, &ai, &we, &ze, 0, 0, NULL), FRICREG_OK);
+        *dw = fmax(*dw, fabs(w[i] - we) / we);
+        *dz = fmax(*dz, fabs(z[i] - ze) / ze);
+        dza = fmax(dza, fabs(z[i] - ze));
+        if (getenv("HB_PRINT_ALL"))
+            printf("%s a %.4g: omega %.8g %.8g zeta %.6g %.6g\n", name, a[i], w[i], we, z[i], ze);
+    }
+    if (print())
+        printf("%s: QSMA against EPMC, omega %.2e, zeta %.2e (%.2e absolute)\n", name, *dw, *dz,
+               dza);
+}
+
+/* Rayleigh's a0 for ζ_k = 0.1 % of mode k (ω_k from QSMA below any slip). */
+static void light_damping(fricreg_hb *hb, size_t mode)
+{
+    double a = 1e-9, w, z;
+    ck_assert_int_eq(fricreg_hb_qsma_at(hb, mode, 1, &a, &w, &z), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_rayleigh(hb, 2e-3 * w, 0.0), FRICREG_OK);
+}
+
+START_TEST(epmc_chain)
+{
+    fricreg_hb *hb = hb_chain(0, 0);
+    ck_assert_ptr_nonnull(hb);
+    light_damping(hb, 0);
+    ck_assert_int_eq(fricreg_hb_set_newton(hb, 1e-12, 50), FRICREG_OK);
+    double dw, dz;
+    /* from below the first slip (a = 0.87) to 0.97: beyond 0.975 EPMC's backbone folds (an
+     * internal resonance, which QSMA has no counterpart of). Measured: ω 1.36e-2, ζ 1.95 of
+     * EPMC's (1.31e-2 absolute): the stiff elements (kt = 20 beside unit springs) slipping
+     * change the mode's shape, the slipped structure's lowest mode far below ω_k. */
+    against_epmc("3-dof chain", hb, 0, 0.5, 0.97, 30, &dw, &dz);
+    ck_assert_double_le(dw, 1.7e-2);
+    ck_assert_double_le(dz, 2.4);
+    fricreg_hb_free(hb);
+}
+END_TEST
+
+START_TEST(epmc_long_chain)
+{
+    fricreg_hb *hb = long_chain(0.2, 0.02);
+    light_damping(hb, 2);
+    ck_assert_int_eq(fricreg_hb_set_newton(hb, 1e-12, 50), FRICREG_OK);
+    double dw, dz;
+    /* mode 2 from below the first slip (a = 0.62) to a = 4, where ζ reaches 0.15 (not light):
+     * measured ω 3.15e-2, ζ 0.235 of EPMC's (7.0e-3 absolute; the largest relative one just
+     * past the onset, within 5 % from a = 0.78 to 2.5) */
+    against_epmc("60-dof chain", hb, 2, 0.3, 4.0, 28, &dw, &dz);
+    ck_assert_double_le(dw, 4e-2);
+    ck_assert_double_le(dz, 0.3);
+    fricreg_hb_free(hb);
+}
+END_TEST
+
+/* ---- Sensitivities against central differences --------------------------------------------- */
+
+struct par {
+    int kind;
+    size_t first, count, index;
+};
+
+/* QSMA's ω, ζ with parameter P moved to value (an element's, Rayleigh's a0, or the amplitudes
+ * scaled by value). */
+static void run_at(fricreg_hb *hb, size_t mode, size_t n, const double *a, const struct par *P,
+                   double value, double *w, double *z)
+{
+    double as[32];
+    for (size_t i = 0; i < n; i++)
+        as[i] = P->kind == AMPLITUDE ? a[i] * value : a[i];
+    if (P->kind == ELEMENT)
+        ck_assert_int_eq(fricreg_hb_set_element_param(hb, P->first, P->count, P->index, value),
+                         FRICREG_OK);
+    if (P->kind == DAMPING)
+        ck_assert_int_eq(fricreg_hb_set_rayleigh(hb, value, 0.0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_qsma_at(hb, mode, n, as, w, z), FRICREG_OK);
+}
+
+/* Each parameter's exact derivatives against central differences, to tol of the largest. */
+static void check_differences(const char *name, fricreg_hb *hb, size_t mode, size_t n,
+                              const double *a, size_t np, const struct par *P, const double *p0,
+                              double tol)
+{
+    int kind[8];
+    size_t first[8], count[8], index[8];
+    double dw[32 * 8], dz[32 * 8], worst = 0.0;
+    for (size_t k = 0; k < np; k++) {
+        kind[k] = P[k].kind;
+        first[k] = P[k].first;
+        count[k] = P[k].count;
+        index[k] = P[k].index;
+    }
+    ck_assert_int_eq(fricreg_hb_qsma_sensitivities(hb, mode, n, a, np, kind, first, count, index,
+                                                   dw, dz),
+                     FRICREG_OK);
+    for (size_t k = 0; k < np; k++) {
+        double h = 1e-6 * p0[k], wp[32], zp[32], wm[32], zm[32], mw = 0.0, mz = 0.0, ew = 0.0,
+               ez = 0.0;
+        run_at(hb, mode, n, a, &P[k], p0[k] + h, wp, zp);
+        run_at(hb, mode, n, a, &P[k], p0[k] - h, wm, zm);
+        run_at(hb, mode, n, a, &P[k], p0[k], wm + 16, zm + 16); /* back */
+        for (size_t i = 0; i < n; i++) {
+            /* the amplitude's difference is in the scale s of a s: d/ds = a d/da */
+            double sw = P[k].kind == AMPLITUDE ? a[i] : 1.0;
+            double cw = (wp[i] - wm[i]) / (2.0 * h), cz = (zp[i] - zm[i]) / (2.0 * h);
+            mw = fmax(mw, fabs(cw));
+            mz = fmax(mz, fabs(cz));
+            ew = fmax(ew, fabs(sw * dw[i * np + k] - cw));
+            ez = fmax(ez, fabs(sw * dz[i * np + k] - cz));
+        }
+        if (getenv("HB_PRINT_ALL"))
+            printf("%s parameter %zu: omega %.2e of %.3g, zeta %.2e of %.3g\n", name, k, ew, mw, ez,
+                   mz);
+        ck_assert_double_le(ew, tol * mw + 1e-13);
+        ck_assert_double_le(ez, tol * mz + 1e-13);
+        worst = fmax(worst, fmax(ew / fmax(mw, 1e-300), ez / fmax(mz, 1e-300)));
+    }
+    if (print())
+        printf("%s: sensitivities against central differences within %.2e\n", name, worst);
+}
+
+START_TEST(sensitivities_oscillator)
+{
+    /* the closed form's derivatives: above slip ω² = 1 + mun/a, dω/dmun = 1/(2 ω a) */
+    const double kt = 2.385, mun = 0.7, a = 3.7;
+    fricreg_hb *hb = oscillator(kt, mun, 0.0);
+    int kind[3] = {ELEMENT, ELEMENT, AMPLITUDE};
+    size_t first[3] = {0, 0, 0}, count[3] = {1, 1, 1}, index[3] = {0, 1, 0};
+    double dw[3], dz[3], w = sqrt(1.0 + mun / a);
+    ck_assert_int_eq(fricreg_hb_qsma_sensitivities(hb, 0, 1, &a, 3, kind, first, count, index, dw,
+                                                   dz),
+                     FRICREG_OK);
+    ck_assert_double_eq_tol(dw[1], 1.0 / (2.0 * w * a), 1e-12);
+    ck_assert_double_eq_tol(dw[2], -mun / (a * a) / (2.0 * w), 1e-12);
+    /* ζ = 4 mun (a − mun/kt) / (2π (a + mun) a): dζ/dkt = 4 mun² / kt² / (2π (a + mun) a) */
+    ck_assert_double_eq_tol(dz[0], 4.0 * mun * mun / (kt * kt) / (2.0 * pi * (a + mun) * a), 1e-12);
+    ck_assert_double_eq_tol(dw[0], 0.0, 1e-15);
+    fricreg_hb_free(hb);
+}
+END_TEST
+
+START_TEST(sensitivities_chain)
+{
+    fricreg_hb *hb = hb_chain(0, 0);
+    ck_assert_ptr_nonnull(hb);
+    ck_assert_int_eq(fricreg_hb_set_rayleigh(hb, 0.004, 0.0), FRICREG_OK);
+    const double a[6] = {0.02, 0.07, 0.15, 0.4, 1.3, 4.0};
+    const struct par P[5] = {{ELEMENT, 0, 2, 0},
+                             {ELEMENT, 0, 2, 1},
+                             {ELEMENT, 1, 1, 0},
+                             {DAMPING, 0, 0, 1},
+                             {AMPLITUDE, 0, 0, 0}};
+    const double p0[5] = {20.0, 1.0, 20.0, 0.004, 1.0};
+    check_differences("3-dof chain", hb, 0, 6, a, 5, P, p0, 1e-6);
+    check_differences("3-dof chain mode 1", hb, 1, 6, a, 5, P, p0, 1e-6);
+    fricreg_hb_free(hb);
+}
+END_TEST
+
+START_TEST(sensitivities_long_chain)
+{
+    fricreg_hb *hb = long_chain(0.2, 0.02);
+    ck_assert_int_eq(fricreg_hb_set_rayleigh(hb, 0.001, 0.0), FRICREG_OK);
+    const double a[6] = {0.3, 0.8, 1.3, 2.1, 3.3, 4.0};
+    const struct par P[5] = {{ELEMENT, 0, LONG_M, 0},
+                             {ELEMENT, 0, LONG_M, 1},
+                             {ELEMENT, 4, 3, 0},
+                             {DAMPING, 0, 0, 1},
+                             {AMPLITUDE, 0, 0, 0}};
+    const double p0[5] = {0.2, 0.02, 0.2, 0.001, 1.0};
+    check_differences("60-dof chain", hb, 2, 6, a, 5, P, p0, 1e-6);
+    fricreg_hb_free(hb);
+}
+END_TEST
+
+START_TEST(sensitivities_iwan)
+{
+    const double p[4] = {1.3, 2.385, -0.4, 0.6}, K0 = 0.8;
+    double k[NS], phi[NS];
+    fricreg_hb *hb = modal_iwan(p, K0, k, phi);
+    const double a[5] = {0.004, 0.04, 0.3, 0.7, 2.5};
+    /* a slider slipping early (its slip force), one late (its stiffness), the delta's */
+    const struct par P[4] = {{ELEMENT, 0, 1, NS + 150},
+                             {ELEMENT, 0, 1, 190},
+                             {ELEMENT, 0, 1, 2 * NS - 1},
+                             {AMPLITUDE, 0, 0, 0}};
+    const double p0[4] = {phi[150], k[190], phi[NS - 1], 1.0};
+    check_differences("Iwan", hb, 0, 5, a, 4, P, p0, 1e-6);
+    fricreg_hb_free(hb);
+}
+END_TEST
+
+/* ---- Statuses ------------------------------------------------------------------------------ */
+
+static void unwritten(const double *v, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        ck_assert_double_eq(v[i], SENTINEL);
+}
+
+START_TEST(statuses)
+{
+    fricreg_hb *hb = oscillator(2.385, 0.7, 0.0);
+    double a[3] = {0.1, 0.5, 1.0}, w[3] = {SENTINEL, SENTINEL, SENTINEL},
+           z[3] = {SENTINEL, SENTINEL, SENTINEL};
+    ck_assert_int_eq(fricreg_hb_qsma_at(NULL, 0, 3, a, w, z), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_hb_qsma_at(hb, 0, 3, NULL, w, z), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_hb_qsma_at(hb, 0, 3, a, NULL, z), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_hb_qsma_at(hb, 0, 3, a, w, NULL), FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_hb_qsma_at(hb, 1, 3, a, w, z), FRICREG_EINVAL);
+    ck_assert_int_eq(fricreg_hb_qsma_at(hb, 0, 0, a, w, z), FRICREG_EINVAL);
+    a[1] = 0.05; /* not increasing */
+    ck_assert_int_eq(fricreg_hb_qsma_at(hb, 0, 3, a, w, z), FRICREG_EINVAL);
+    a[1] = NAN;
+    ck_assert_int_eq(fricreg_hb_qsma_at(hb, 0, 3, a, w, z), FRICREG_ENONFINITE);
+    a[1] = 0.5;
+    a[0] = 0.0;
+    ck_assert_int_eq(fricreg_hb_qsma_at(hb, 0, 3, a, w, z), FRICREG_EINVAL);
+    a[0] = 0.1;
+    unwritten(w, 3);
+    unwritten(z, 3);
+    /* sensitivities: NULLs, a kind, an index, a range, a0 without Rayleigh */
+    int kind[1] = {ELEMENT};
+    size_t first[1] = {0}, count[1] = {1}, index[1] = {0};
+    double dw[3] = {SENTINEL, SENTINEL, SENTINEL}, dz[3] = {SENTINEL, SENTINEL, SENTINEL};
+    ck_assert_int_eq(fricreg_hb_qsma_sensitivities(hb, 0, 3, a, 1, NULL, first, count, index, dw,
+                                                   dz),
+                     FRICREG_ENULL);
+    ck_assert_int_eq(fricreg_hb_qsma_sensitivities(hb, 0, 3, a, 1, kind, first, count, index, NULL,
+                                                   dz),
+                     FRICREG_ENULL);
+    index[0] = 2;
+    ck_assert_int_eq(fricreg_hb_qsma_sensitivities(hb, 0, 3, a, 1, kind, first, count, index, dw,
+                                                   dz),
+                     FRICREG_EINVAL);
+    index[0] = 0;
+    count[0] = 2;
+    ck_assert_int_eq(fricreg_hb_qsma_sensitivities(hb, 0, 3, a, 1, kind, first, count, index, dw,
+                                                   dz),
+                     FRICREG_EINVAL);
+    count[0] = 1;
+    kind[0] = 7;
+    ck_assert_int_eq(fricreg_hb_qsma_sensitivities(hb, 0, 3, a, 1, kind, first, count, index, dw,
+                                                   dz),
+                     FRICREG_EINVAL);
+    kind[0] = DAMPING;
+    index[0] = 1;
+    ck_assert_int_eq(fricreg_hb_qsma_sensitivities(hb, 0, 3, a, 1, kind, first, count, index, dw,
+                                                   dz),
+                     FRICREG_EINVAL);
+    unwritten(dw, 3);
+    unwritten(dz, 3);
+    ck_assert_int_eq(fricreg_hb_qsma_sensitivities(hb, 0, 3, a, 0, NULL, NULL, NULL, NULL, dw, dz),
+                     FRICREG_OK);
+    fricreg_hb_free(hb);
+}
+END_TEST
+
+START_TEST(refusals)
+{
+    double a[2] = {0.1, 3.0}, w[2] = {SENTINEL, SENTINEL}, z[2] = {SENTINEL, SENTINEL};
+    /* macroslip: no spring beside the element, K_t = 0 once it slips at a = 0.2935 */
+    const double one = 1.0, zero = 0.0, kt = 2.385, mun = 0.7;
+    fricreg_hb *hb = NULL;
+    ck_assert_int_eq(fricreg_hb_create(1, 1, 1, &hb), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_qsma_at(hb, 0, 2, a, w, z), FRICREG_EINVAL); /* no elements */
+    ck_assert_int_eq(fricreg_hb_set_mass(hb, 1, &one), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 1, &zero), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_elements(hb, 1, 1, &one, &kt, &mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_qsma_at(hb, 0, 2, a, w, z), FRICREG_ESINGULAR);
+    ck_assert_ptr_nonnull(strstr(fricreg_hb_errmsg(hb), "macroslip"));
+    ck_assert_int_eq(fricreg_hb_qsma_at(hb, 0, 1, a, w, z), FRICREG_OK); /* below it */
+    ck_assert_double_eq_tol(w[0], sqrt(kt), 1e-14);
+    ck_assert_double_eq(w[1], SENTINEL);
+    fricreg_hb_free(hb);
+    /* a type it does not take: contact_3d, named */
+    const double Je[6] = {1.0, 0.0, 0.0, 1.0, 0.4, -0.3}, pc[5] = {2.0, 0.3, 1.5, 1.0, 0.0};
+    ck_assert_int_eq(fricreg_hb_create(2, 1, 3, &hb), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 2, (const double[4]){2.0, -0.3, -0.3, 1.5}),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_add_elements(hb, fricreg_element_lookup("contact_3d"), 1, 2, Je,
+                                             pc),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_qsma_at(hb, 0, 2, a, w, z), FRICREG_EINVAL);
+    ck_assert_ptr_nonnull(strstr(fricreg_hb_errmsg(hb), "contact_3d"));
+    fricreg_hb_free(hb);
+    ck_assert_double_eq(w[1], SENTINEL);
+    ck_assert_double_eq(z[1], SENTINEL);
+}
+END_TEST
+
+static Suite *qsma_suite(void)
+{
+    Suite *s = suite_create("hb_qsma");
+    TCase *tc = tcase_create("closed_forms");
+    tcase_add_test(tc, oscillator_closed_form);
+    tcase_add_test(tc, iwan_closed_forms);
+    suite_add_tcase(s, tc);
+    tc = tcase_create("epmc");
+    tcase_set_timeout(tc, 60);
+    tcase_add_test(tc, epmc_chain);
+    tcase_add_test(tc, epmc_long_chain);
+    suite_add_tcase(s, tc);
+    tc = tcase_create("sensitivities");
+    tcase_set_timeout(tc, 60);
+    tcase_add_test(tc, sensitivities_oscillator);
+    tcase_add_test(tc, sensitivities_chain);
+    tcase_add_test(tc, sensitivities_long_chain);
+    tcase_add_test(tc, sensitivities_iwan);
+    suite_add_tcase(s, tc);
+    tc = tcase_create("statuses");
+    tcase_add_test(tc, statuses);
+    tcase_add_test(tc, refusals);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+int main(void)
+{
+    SRunner *sr = srunner_create(qsma_suite());
+    srunner_run_all(sr, CK_NORMAL);
+    int failed = srunner_ntests_failed(sr);
+    srunner_free(sr);
+    return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
