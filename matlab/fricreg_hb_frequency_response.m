@@ -18,6 +18,8 @@ function r = fricreg_hb_frequency_response(h, omega0, omega1, guess)
 %                    (x0, a_1, b_1, ..., a_H, b_H) of each point
 %      stable        NPOINTS x 1 logical, each point's stability; [] with stability off
 %      mu_max        NPOINTS x 1, each point's largest |Floquet multiplier|; [] when off
+%      multipliers   NPOINTS x (2 NDOF) complex, each point's Floquet multipliers by
+%                    decreasing modulus (FRICREG_HB_SOLVE's); [] when off
 %      bifurcations  1 x NB struct array: kind ('TP' turning point, 'BP' branch point, 'PD'
 %                    period doubling, 'NS' Neimark-Sacker: the last two with stability on),
 %                    omega (rad/s), level, point (it lies between points point and point + 1),
@@ -31,11 +33,13 @@ function r = fricreg_hb_frequency_response(h, omega0, omega1, guess)
 %   A failed continuation's points are not returned.
 %
 %   Source: fricreg_hb_continue, fricreg_hb_point, fricreg_hb_point_displacement,
-%   fricreg_hb_point_stability, fricreg_hb_bifurcation (include/fricreg_hb.h; Krack & Gross
-%   2019, Ch. 5), through fricreg_mex (matlab/mex_hb_results.c). Python:
+%   fricreg_hb_point_stability, fricreg_hb_point_exponents, fricreg_hb_bifurcation
+%   (include/fricreg_hb.h; Krack & Gross 2019, Ch. 5), through fricreg_mex
+%   (matlab/mex_hb_results.c). Python:
 %   HarmonicBalance.frequency_response(omega0, omega1, guess).
 %
-%   See also FRICREG_HB_SOLVE, FRICREG_HB_PEAK, FRICREG_NLVIB_FRF.
+%   See also FRICREG_HB_SOLVE, FRICREG_HB_PEAK, FRICREG_HB_LEVEL_RESPONSE,
+%   FRICREG_HB_TRUNCATION_ERROR, FRICREG_NLVIB_FRF.
 if nargin < 3
     error('fricreg:nargs', ['fricreg_hb_frequency_response: takes a handle, omega0, omega1 ' ...
                             'and optionally a guess']);
@@ -43,9 +47,9 @@ end
 if nargin < 4
     guess = [];
 end
-[omega, level, rms, x, stable, mu_max, bif] = fricreg_mex('hb_continue', h, omega0, omega1, ...
-                                                          guess);
+[omega, level, rms, x, stable, mu_max, bif, mult] = fricreg_mex('hb_continue', h, omega0, ...
+                                                                omega1, guess);
 r = struct('omega', omega, 'level', level, 'rms', rms, 'x', x, 'stable', stable, ...
-           'mu_max', mu_max);
+           'mu_max', mu_max, 'multipliers', mult);
 r.bifurcations = bif;
 end

@@ -15,6 +15,9 @@ function s = fricreg_hb_solve(h, omega, guess)
 %      stable  true if every Floquet multiplier has |mu| <= 1 + 1e-6; [] with stability off
 %              (FRICREG_HB_SET(H, 'stability', true))
 %      mu_max  the largest |Floquet multiplier|; NaN with stability off
+%      multipliers  1 x (2 NDOF) complex: the Floquet multipliers mu = exp(2 pi lambda /
+%              OMEGA) of the exponents lambda the stability's method computed, by decreasing
+%              modulus; [] with stability off
 %
 %   Errors (identifiers):
 %      fricreg:handle       H is not a live driver
@@ -27,9 +30,9 @@ function s = fricreg_hb_solve(h, omega, guess)
 %      fricreg:EINTEGRATOR  the AFT's root solver, or the stability's eigensolver, failed
 %   The messages are the library's (fricreg_hb_errmsg).
 %
-%   Source: fricreg_hb_solve, fricreg_hb_displacement, fricreg_hb_point_stability
-%   (include/fricreg_hb.h), through fricreg_mex (matlab/mex_hb_results.c). Python:
-%   HarmonicBalance.solve(omega, guess).
+%   Source: fricreg_hb_solve, fricreg_hb_displacement, fricreg_hb_point_stability,
+%   fricreg_hb_point_exponents (include/fricreg_hb.h), through fricreg_mex
+%   (matlab/mex_hb_results.c). Python: HarmonicBalance.solve(omega, guess).
 %
 %   See also FRICREG_HARMONIC_BALANCE, FRICREG_HB_FREQUENCY_RESPONSE.
 if nargin < 2
@@ -38,6 +41,7 @@ end
 if nargin < 3
     guess = [];
 end
-[q, x, stable, mu_max] = fricreg_mex('hb_solve', h, omega, guess);
-s = struct('omega', omega, 'q', q, 'x', x, 'stable', stable, 'mu_max', mu_max);
+[q, x, stable, mu_max, multipliers] = fricreg_mex('hb_solve', h, omega, guess);
+s = struct('omega', omega, 'q', q, 'x', x, 'stable', stable, 'mu_max', mu_max, ...
+           'multipliers', multipliers);
 end

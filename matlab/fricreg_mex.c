@@ -12,7 +12,9 @@
  *   fricreg_mex('element_eval', name, params, u [, state])     -> [f, dfdu, state_out, dfdp]
  *   fricreg_mex('fit_create') -> handle; fit_set_*, fit_run, fit_params, ... (mex_fit.c)
  *   fricreg_mex('hb_create', ndof, m, H) -> handle; hb_set_*, hb_add_elements (mex_hb.c);
- *     hb_solve, hb_continue, hb_nma, hb_peak (mex_hb_results.c)
+ *     hb_set_element_param, hb_get_element_param (mex_hb.c); hb_solve, hb_continue,
+ *     hb_continue_level, hb_nma, hb_peak (mex_hb_results.c); hb_truncation_error,
+ *     hb_nma_sensitivities (mex_hb_estimates.c)
  *   fricreg_mex('free', handle), ('free_all'), ('handles') -> the live objects' count
  *
  * Layout: MATLAB stores arrays column-major; the library takes tables of points row-major,
@@ -382,11 +384,16 @@ static const struct {
     {"hb_set_continuation", mexhb_set_continuation},
     {"hb_set_stability", mexhb_set_stability},
     {"hb_set_max_iterations", mexhb_set_max_iterations},
+    {"hb_set_element_param", mexhb_set_element_param},
+    {"hb_get_element_param", mexhb_get_element_param},
     {"hb_info", mexhb_info},
     {"hb_solve", mexhb_solve},
     {"hb_continue", mexhb_continue},
+    {"hb_continue_level", mexhb_continue_level},
     {"hb_nma", mexhb_nma},
     {"hb_peak", mexhb_peak},
+    {"hb_truncation_error", mexhb_truncation_error},
+    {"hb_nma_sensitivities", mexhb_nma_sensitivities},
     {"free", cmd_free},
     {"free_all", cmd_free_all},
     {"handles", cmd_handles},

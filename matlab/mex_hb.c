@@ -329,3 +329,39 @@ void mexhb_info(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
     out[4] = mxCreateLogicalScalar(d->stability != 0);
     mexa_outputs(nlhs, plhs, out, 5);
 }
+
+/* hb_set_element_param(h, first, count, index, value): parameter index (from 1, in the
+ * elements' types' layouts) of the elements first .. first + count - 1 (from 1, in the order
+ * added) to value (fricreg_hb_set_element_param). */
+void mexhb_set_element_param(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    const char *cmd = "hb_set_element_param";
+    size_t first, count, index;
+    mexhb *d;
+    (void)plhs;
+    mexa_nargs(cmd, nrhs, 5, 5, nlhs, 0);
+    d = mexhb_of(prhs[0], cmd);
+    first = mexa_count(prhs[1], cmd, "first", 1, (size_t)1 << 40) - 1; /* MATLAB's from 1 */
+    count = mexa_count(prhs[2], cmd, "count", 0, (size_t)1 << 40);
+    index = mexa_count(prhs[3], cmd, "index", 1, (size_t)1 << 40) - 1;
+    mexhb_check(d,
+                fricreg_hb_set_element_param(d->hb, first, count, index,
+                                             mexa_scalar(prhs[4], cmd, "value")),
+                cmd);
+}
+
+/* value = hb_get_element_param(h, element, index): parameter index (from 1) of element (from
+ * 1) (fricreg_hb_get_element_param). */
+void mexhb_get_element_param(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    const char *cmd = "hb_get_element_param";
+    size_t element, index;
+    double value = 0.0;
+    mexhb *d;
+    mexa_nargs(cmd, nrhs, 3, 3, nlhs, 1);
+    d = mexhb_of(prhs[0], cmd);
+    element = mexa_count(prhs[1], cmd, "element", 1, (size_t)1 << 40) - 1;
+    index = mexa_count(prhs[2], cmd, "index", 1, (size_t)1 << 40) - 1;
+    mexhb_check(d, fricreg_hb_get_element_param(d->hb, element, index, &value), cmd);
+    plhs[0] = mxCreateDoubleScalar(value);
+}

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* mex_hb.h — the gateway's commands on a harmonic-balance driver (fricreg_hb.h), held in the
  * handle table (mex_handles.h) with the sizes the commands need beside it (mex_hb.c: the model,
- * its elements, the settings; mex_hb_results.c: the solves and what they return). Each command
+ * its elements, the settings; mex_hb_results.c: the solves and what they return;
+ * mex_hb_estimates.c: a solved point's truncation error and sensitivities). Each command
  * takes the arguments after the command string; the .m files (fricreg_harmonic_balance.m,
  * fricreg_hb_*.m, fricreg_nlvib_frf.m) put them together. */
 #ifndef FRICREG_MEX_HB_H
@@ -33,7 +34,8 @@ void mexhb_free(void *object);
 
 mex_command mexhb_create, mexhb_set_matrix, mexhb_set_rayleigh, mexhb_set_jenkins,
     mexhb_add_elements, mexhb_set_excitation, mexhb_set_newton, mexhb_set_continuation,
-    mexhb_set_stability, mexhb_set_max_iterations, mexhb_info, mexhb_solve, mexhb_continue,
-    mexhb_nma, mexhb_peak;
+    mexhb_set_stability, mexhb_set_max_iterations, mexhb_set_element_param, mexhb_get_element_param,
+    mexhb_info, mexhb_solve, mexhb_continue, mexhb_continue_level, mexhb_nma, mexhb_peak,
+    mexhb_truncation_error, mexhb_nma_sensitivities;
 
 #endif

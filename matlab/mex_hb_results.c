@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* mex_hb_results.c — the gateway's solving commands on a harmonic-balance driver
- * (fricreg_hb.h) and what they return: a solution at one frequency, a branch of the frequency
- * response with its stability and bifurcations, a nonlinear mode's backbone, a peak. One C
+ * (fricreg_hb.h) and what they return: a solution at one frequency, a branch in the frequency
+ * or in the excitation level with its stability, Floquet multipliers and bifurcations, a
+ * nonlinear mode's backbone, a peak. One C
  * solving call per command, then its getters; a failed call raises fricreg:<NAME> with the
  * driver's message (the points a failed continuation kept stay in the driver, unread).
  *
@@ -9,6 +10,8 @@
  * a row; MATLAB gets them as arrays whose last dimension is the coefficient: q rows x (2H + 1),
  * x ndof x (2H + 1), a branch's x npoints x ndof x (2H + 1), copied at the boundary. Indices
  * are MATLAB's, from 1: a mode, a dof, the point before a bifurcation. */
+#include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "mex_args.h"
@@ -49,17 +52,68 @@ static void stability_of(const mexhb *d, size_t k, mxLogical *stable, double *mu
     *mu_max = mu;
 }
 
-/* [q, x, stable, mu_max] = hb_solve(h, omega [, q0]): q rows x nc, x ndof x nc; stable a
- * logical and mu_max the largest |Floquet multiplier| with stability on, else [] and NaN. */
+/* A multiplier's modulus and its place in the library's order: the sort key. */
+typedef struct {
+    double modulus;
+    size_t at;
+} ranked;
+
+/* By decreasing modulus, ties in the library's order (Python's stable argsort of -|mu|). */
+static int by_modulus(const void *a, const void *b)
+{
+    const ranked *x = a, *y = b;
+    if (x->modulus != y->modulus)
+        return x->modulus < y->modulus ? 1 : -1;
+    return x->at < y->at ? -1 : x->at > y->at;
+}
+
+/* Scratch for the multipliers of one point: 2 ndof exponents (Re, Im) and their ranks. */
+typedef struct {
+    double *exponents;
+    ranked *rank;
+} floquet;
+
+static floquet floquet_scratch(const mexhb *d)
+{
+    floquet f;
+    f.exponents = mexa_scratch(4 * d->ndof);
+    f.rank = mxCalloc(2 * d->ndof, sizeof *f.rank);
+    return f;
+}
+
+/* The Floquet multipliers mu = exp(2 pi lambda / omega) of stored point k (or the solution,
+ * FRICREG_HB_SOLUTION) at its frequency omega, from fricreg_hb_point_exponents, by decreasing
+ * modulus, into row `row` of the complex n x (2 ndof) array (re, im): column-major. */
+static void multipliers_of(const mexhb *d, size_t k, double omega, floquet f, double *re,
+                           double *im, size_t n, size_t row, const char *cmd)
+{
+    size_t ne = 2 * d->ndof;
+    const double period = 2.0 * 3.14159265358979323846 / omega;
+    mexhb_check(d, fricreg_hb_point_exponents(d->hb, k, ne, f.exponents), cmd);
+    for (size_t j = 0; j < ne; j++) {
+        f.rank[j].modulus = exp(period * f.exponents[2 * j]);
+        f.rank[j].at = j;
+    }
+    qsort(f.rank, ne, sizeof *f.rank, by_modulus);
+    for (size_t j = 0; j < ne; j++) {
+        const double *e = f.exponents + 2 * f.rank[j].at;
+        re[row + n * j] = f.rank[j].modulus * cos(period * e[1]);
+        im[row + n * j] = f.rank[j].modulus * sin(period * e[1]);
+    }
+}
+
+/* [q, x, stable, mu_max, multipliers] = hb_solve(h, omega [, q0]): q rows x nc, x ndof x nc;
+ * stable a logical, mu_max the largest |Floquet multiplier| and multipliers the 1 x (2 ndof)
+ * complex multipliers by decreasing modulus with stability on, else [], NaN and []. */
 void mexhb_solve(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
     const char *cmd = "hb_solve";
     const double *q0;
     double omega, *q, *x;
     size_t nc;
-    mxArray *out[4];
+    mxArray *out[5];
     mexhb *d;
-    mexa_nargs(cmd, nrhs, 2, 3, nlhs, 4);
+    mexa_nargs(cmd, nrhs, 2, 3, nlhs, 5);
     d = mexhb_of(prhs[0], cmd);
     omega = mexa_scalar(prhs[1], cmd, "omega");
     q0 = guess(d, nrhs, prhs, 2, cmd);
@@ -76,11 +130,15 @@ void mexhb_solve(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
         out[2] = mxCreateLogicalMatrix(1, 1);
         out[3] = mexa_matrix(1, 1);
         stability_of(d, FRICREG_HB_SOLUTION, mxGetLogicals(out[2]), mxGetPr(out[3]), cmd);
+        out[4] = mxCreateDoubleMatrix(1, (mwSize)(2 * d->ndof), mxCOMPLEX);
+        multipliers_of(d, FRICREG_HB_SOLUTION, omega, floquet_scratch(d), mxGetPr(out[4]),
+                       mxGetPi(out[4]), 1, 0, cmd);
     } else {
         out[2] = mexa_matrix(0, 0);
         out[3] = mxCreateDoubleScalar(mxGetNaN());
+        out[4] = mexa_matrix(0, 0);
     }
-    mexa_outputs(nlhs, plhs, out, 4);
+    mexa_outputs(nlhs, plhs, out, 5);
 }
 
 /* The coefficients c[ndof nc] (row-major) of point k into xs, npoints x ndof x nc. */
@@ -117,37 +175,34 @@ static mxArray *bifurcations(const mexhb *d, const char *cmd)
     return s;
 }
 
-/* [omega, level, rms, x, stable, mu_max, bifurcations] = hb_continue(h, omega0, omega1 [, q0]):
- * the branch of fricreg_hb_continue, npoints points: omega, level npoints x 1, rms
- * npoints x ndof, x npoints x ndof x nc (recomputed per point: only when asked), stable
- * (logical) and mu_max npoints x 1 with stability on (else []), bifurcations a struct array. */
-void mexhb_continue(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+/* The stored branch (fricreg_hb_continue's or fricreg_hb_continue_level's), npoints points, as
+ * the outputs [omega, level, rms, x, stable, mu_max, bifurcations, multipliers]: omega, level
+ * npoints x 1, rms npoints x ndof, x npoints x ndof x nc (recomputed per point: only when
+ * asked), stable (logical), mu_max npoints x 1 and multipliers npoints x (2 ndof) complex (only
+ * when asked) with stability on (else []), bifurcations a struct array. */
+static void branch_outputs(const mexhb *d, int nlhs, mxArray *plhs[], const char *cmd)
 {
-    const char *cmd = "hb_continue";
-    const double *q0;
-    double omega0, omega1, *rms, *c = NULL;
-    size_t n, nc;
-    mxArray *out[7];
-    mexhb *d;
-    mexa_nargs(cmd, nrhs, 3, 4, nlhs, 7);
-    d = mexhb_of(prhs[0], cmd);
-    omega0 = mexa_scalar(prhs[1], cmd, "omega0");
-    omega1 = mexa_scalar(prhs[2], cmd, "omega1");
-    q0 = guess(d, nrhs, prhs, 3, cmd);
-    nc = (size_t)(2 * d->harmonics + 1);
-    mexhb_check(d, fricreg_hb_continue(d->hb, omega0, omega1, d->rows * nc, q0), cmd);
-    n = fricreg_hb_points(d->hb);
+    size_t n = fricreg_hb_points(d->hb), nc = (size_t)(2 * d->harmonics + 1);
+    int floquet_asked = d->stability && nlhs >= 8;
+    double *rms, *c = NULL;
+    mxArray *out[8];
+    floquet f = {NULL, NULL};
     out[0] = mexa_matrix(n, 1);
     out[1] = mexa_matrix(n, 1);
     out[2] = mexa_matrix(n, d->ndof);
     out[3] = nlhs >= 4 ? mexa_array3(n, d->ndof, nc) : mexa_matrix(0, 0);
     out[4] = d->stability ? mxCreateLogicalMatrix((mwSize)n, 1) : mexa_matrix(0, 0);
     out[5] = d->stability ? mexa_matrix(n, 1) : mexa_matrix(0, 0);
+    out[7] = floquet_asked ? mxCreateDoubleMatrix((mwSize)n, (mwSize)(2 * d->ndof), mxCOMPLEX)
+                           : mexa_matrix(0, 0);
     rms = mexa_scratch(d->ndof);
     if (nlhs >= 4)
         c = mexa_scratch(d->ndof * nc);
+    if (floquet_asked)
+        f = floquet_scratch(d);
     for (size_t k = 0; k < n; k++) {
-        mexhb_check(d, fricreg_hb_point(d->hb, k, mxGetPr(out[0]) + k, d->ndof, rms), cmd);
+        double *omega = mxGetPr(out[0]) + k;
+        mexhb_check(d, fricreg_hb_point(d->hb, k, omega, d->ndof, rms), cmd);
         mexhb_check(d, fricreg_hb_point_level(d->hb, k, mxGetPr(out[1]) + k), cmd);
         for (size_t j = 0; j < d->ndof; j++)
             mxGetPr(out[2])[k + n * j] = rms[j];
@@ -157,9 +212,53 @@ void mexhb_continue(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
         }
         if (d->stability)
             stability_of(d, k, mxGetLogicals(out[4]) + k, mxGetPr(out[5]) + k, cmd);
+        if (floquet_asked)
+            multipliers_of(d, k, *omega, f, mxGetPr(out[7]), mxGetPi(out[7]), n, k, cmd);
     }
     out[6] = bifurcations(d, cmd);
-    mexa_outputs(nlhs, plhs, out, 7);
+    mexa_outputs(nlhs, plhs, out, 8);
+}
+
+/* [omega, level, rms, x, stable, mu_max, bifurcations, multipliers] = hb_continue(h, omega0,
+ * omega1 [, q0]): the branch of fricreg_hb_continue in the frequency (branch_outputs). */
+void mexhb_continue(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    const char *cmd = "hb_continue";
+    const double *q0;
+    double omega0, omega1;
+    mexhb *d;
+    mexa_nargs(cmd, nrhs, 3, 4, nlhs, 8);
+    d = mexhb_of(prhs[0], cmd);
+    omega0 = mexa_scalar(prhs[1], cmd, "omega0");
+    omega1 = mexa_scalar(prhs[2], cmd, "omega1");
+    q0 = guess(d, nrhs, prhs, 3, cmd);
+    mexhb_check(d,
+                fricreg_hb_continue(d->hb, omega0, omega1, d->rows * (size_t)(2 * d->harmonics + 1),
+                                    q0),
+                cmd);
+    branch_outputs(d, nlhs, plhs, cmd);
+}
+
+/* [omega, level, ...] = hb_continue_level(h, omega, level0, level1 [, q0]): the branch of
+ * fricreg_hb_continue_level in the excitation level at the fixed omega (branch_outputs; level
+ * each point's lambda). */
+void mexhb_continue_level(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    const char *cmd = "hb_continue_level";
+    const double *q0;
+    double omega, level0, level1;
+    mexhb *d;
+    mexa_nargs(cmd, nrhs, 4, 5, nlhs, 8);
+    d = mexhb_of(prhs[0], cmd);
+    omega = mexa_scalar(prhs[1], cmd, "omega");
+    level0 = mexa_scalar(prhs[2], cmd, "level0");
+    level1 = mexa_scalar(prhs[3], cmd, "level1");
+    q0 = guess(d, nrhs, prhs, 4, cmd);
+    mexhb_check(d,
+                fricreg_hb_continue_level(d->hb, omega, level0, level1,
+                                          d->rows * (size_t)(2 * d->harmonics + 1), q0),
+                cmd);
+    branch_outputs(d, nlhs, plhs, cmd);
 }
 
 /* The backbone's special points as a 1 x ns struct array: kind ('fold', 'crossing'),

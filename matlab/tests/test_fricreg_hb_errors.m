@@ -15,7 +15,11 @@ cases = {'handles', @handles
          'options', @options
          'nlvib', @nlvib
          'failed_construction_frees', @failed_construction_frees
-         'clear_frees_drivers', @clear_frees_drivers};
+         'clear_frees_drivers', @clear_frees_drivers
+         'level_and_multipliers', @level_and_multipliers
+         'truncation_error', @truncation_error
+         'element_params', @element_params
+         'sensitivities', @sensitivities};
 failures = fricreg_test_run('hb_errors', cases);
 end
 
@@ -42,6 +46,16 @@ calls = {@() fricreg_mex('hb_set_matrix', h, 'mass', 1)
          @() fricreg_mex('hb_nma', h, 1, 'matrix', 0.01, 1, 5, false)
          @() fricreg_mex('hb_nma', h, 1, 'matrix', [0.1 0.2])
          @() fricreg_mex('hb_peak', h, 1)
+         @() fricreg_mex('hb_continue_level', h, 1.5, 0.5, 1)
+         @() fricreg_mex('hb_truncation_error', h, 0)
+         @() fricreg_mex('hb_nma_sensitivities', h, 1, 0, 1, 1, 1, false)
+         @() fricreg_mex('hb_set_element_param', h, 1, 1, 1, 20)
+         @() fricreg_mex('hb_get_element_param', h, 1, 1)
+         @() fricreg_hb_level_response(h, 1.5, 0.5, 1)
+         @() fricreg_hb_truncation_error(h)
+         @() fricreg_hb_backbone_sensitivities(h, 1, {{'amplitude'}})
+         @() fricreg_hb_set_element_param(h, 1, 1, 20)
+         @() fricreg_hb_element_param(h, 1, 1)
          @() fricreg_hb_solve(h, 1.5)
          @() fricreg_hb_frequency_response(h, 1, 2)
          @() fricreg_hb_backbone(h, 1, 0.01, 1)
@@ -303,4 +317,121 @@ if fricreg_mex('handles') ~= 0
 end
 fricreg_test_raises('fricreg:handle', @() fricreg_hb_solve(old(1), 1.5));
 fricreg_test_raises('fricreg:handle', @() fricreg_hb_free(old(2)));
+end
+
+function level_and_multipliers()
+r = @fricreg_test_raises;
+h = oscillator();
+cleanup = onCleanup(@() fricreg_hb_free(h));
+r('fricreg:nargs', @() fricreg_hb_level_response(h, 1.5, 0.5));
+r('fricreg:nargs', @() fricreg_mex('hb_continue_level', h, 1.5, 0.5));
+r('fricreg:nargs', @() fricreg_mex('hb_continue_level', h, 1.5, 0.5, 1, [], 1));
+r('fricreg:EINVAL', @() fricreg_hb_level_response(h, 1.5, 1, 1));
+r('fricreg:EINVAL', @() fricreg_hb_level_response(h, 1.5, -0.5, 1));
+r('fricreg:EINVAL', @() fricreg_hb_level_response(h, 0, 0.5, 1));
+r('fricreg:ENONFINITE', @() fricreg_hb_level_response(h, 1.5, 0.5, Inf));
+r('fricreg:ENONFINITE', @() fricreg_hb_level_response(h, NaN, 0.5, 1));
+r('fricreg:size', @() fricreg_hb_level_response(h, 1.5, 0.5, 1, zeros(2, 7)), 'guess');
+r('fricreg:size', @() fricreg_hb_level_response(h, 1.5, [0.5 1], 2), 'level0');
+r('fricreg:type', @() fricreg_hb_level_response(h, 1.5, 0.5, int8(1)), 'level1');
+fricreg_hb_set(h, 'max_iterations', 2);
+r('fricreg:EWORK', @() fricreg_hb_level_response(h, 1.5, 0.5, 1));
+fricreg_hb_set(h, 'max_iterations', 0);
+r('fricreg:nargs', @() six_outputs('hb_solve', h, 1.5));
+end
+
+function six_outputs(varargin)
+[a, b, c, d, e, f] = fricreg_mex(varargin{:}); %#ok<ASGLU>
+end
+
+function truncation_error()
+r = @fricreg_test_raises;
+h = oscillator();
+cleanup = onCleanup(@() fricreg_hb_free(h));
+r('fricreg:nargs', @() fricreg_hb_truncation_error());
+r('fricreg:nargs', @() fricreg_mex('hb_truncation_error', h));
+r('fricreg:EINVAL', @() fricreg_hb_truncation_error(h), 'solution'); % none yet
+fricreg_hb_frequency_response(h, 1, 1.2);
+r('fricreg:EINVAL', @() fricreg_hb_truncation_error(h, 1e6));
+r('fricreg:EINVAL', @() fricreg_hb_truncation_error(h, 0), 'from 1');
+r('fricreg:EINVAL', @() fricreg_hb_truncation_error(h, 1.5), 'whole number');
+r('fricreg:EINVAL', @() fricreg_hb_truncation_error(h, -1));
+r('fricreg:size', @() fricreg_hb_truncation_error(h, [1 2]));
+fricreg_hb_set_element_param(h, 1, 1, 21); % a model change: the branch is gone
+r('fricreg:EINVAL', @() fricreg_hb_truncation_error(h, 1));
+g = fricreg_harmonic_balance(1, 1, 0.02, struct('type', 'jenkins', 'J', 1, 'params', [20 1]), ...
+                             20, 'excitation', 0.5);
+cg = onCleanup(@() fricreg_hb_free(g));
+fricreg_hb_solve(g, 1.5);
+r('fricreg:EINVAL', @() fricreg_hb_truncation_error(g), 'H');
+end
+
+function element_params()
+r = @fricreg_test_raises;
+h = oscillator();
+cleanup = onCleanup(@() fricreg_hb_free(h));
+r('fricreg:nargs', @() fricreg_hb_set_element_param(h, 1, 1));
+r('fricreg:nargs', @() fricreg_hb_element_param(h, 1));
+r('fricreg:nargs', @() fricreg_mex('hb_set_element_param', h, 1, 1, 1));
+r('fricreg:nargs', @() fricreg_mex('hb_get_element_param', h, 1));
+r('fricreg:EINVAL', @() fricreg_hb_set_element_param(h, 2, 1, 20));
+r('fricreg:EINVAL', @() fricreg_hb_set_element_param(h, 1:2, 1, 20));
+r('fricreg:EINVAL', @() fricreg_hb_set_element_param(h, 1, 3, 20));
+r('fricreg:EINVAL', @() fricreg_hb_set_element_param(h, 1, 1, -20));
+r('fricreg:EINVAL', @() fricreg_hb_set_element_param(h, 1, 0, 20), 'index');
+r('fricreg:EINVAL', @() fricreg_hb_set_element_param(h, 0, 1, 20), 'first');
+r('fricreg:EINVAL', @() fricreg_mex('hb_set_element_param', h, 1, 0, 1, 20)); % count 0
+r('fricreg:ENONFINITE', @() fricreg_hb_set_element_param(h, 1, 1, NaN));
+r('fricreg:size', @() fricreg_hb_set_element_param(h, [1 3], 1, 20), 'consecutive');
+r('fricreg:size', @() fricreg_hb_set_element_param(h, [], 1, 20));
+r('fricreg:size', @() fricreg_hb_set_element_param(h, 1, 1, [20 21]), 'value');
+r('fricreg:type', @() fricreg_hb_set_element_param(h, 1, 1, '20'));
+r('fricreg:EINVAL', @() fricreg_hb_element_param(h, 2, 1));
+r('fricreg:EINVAL', @() fricreg_hb_element_param(h, 1, 3));
+r('fricreg:EINVAL', @() fricreg_hb_element_param(h, 0, 1), 'element');
+r('fricreg:EINVAL', @() fricreg_hb_element_param(h, 1, 1.5), 'index');
+if fricreg_hb_element_param(h, 1, 1) ~= 20
+    error('test:hb', 'a refused value changed the element');
+end
+end
+
+function sensitivities()
+r = @fricreg_test_raises;
+h = oscillator();
+cleanup = onCleanup(@() fricreg_hb_free(h));
+r('fricreg:EINVAL', @() fricreg_hb_backbone_sensitivities(h, 1, {{'amplitude'}}), 'point');
+fricreg_hb_backbone_at(h, 1, [0.01 0.2]);
+r('fricreg:nargs', @() fricreg_hb_backbone_sensitivities(h, 1));
+r('fricreg:nargs', @() fricreg_mex('hb_nma_sensitivities', h, 1, 0, 1, 1, 1));
+r('fricreg:type', @() fricreg_hb_backbone_sensitivities(h, 1, {'element', 1, 1}));
+r('fricreg:type', @() fricreg_hb_backbone_sensitivities(h, 1, [1 2]), 'cell');
+r('fricreg:type', @() fricreg_hb_backbone_sensitivities(h, 1, {{'stiffness', 1}}), 'stiffness');
+r('fricreg:type', @() fricreg_hb_backbone_sensitivities(h, 1, {{'element', 1}}));
+r('fricreg:type', @() fricreg_hb_backbone_sensitivities(h, 1, {{'element', [1 3], 1}}), ...
+  'consecutive');
+r('fricreg:type', @() fricreg_hb_backbone_sensitivities(h, 1, {{'damping', 'xi'}}), 'zeta');
+r('fricreg:type', @() fricreg_hb_backbone_sensitivities(h, 1, {{'amplitude', 1}}));
+r('fricreg:type', @() fricreg_hb_backbone_sensitivities(h, 1, {{}}));
+r('fricreg:EINVAL', @() fricreg_hb_backbone_sensitivities(h, 3, {{'amplitude'}}));
+r('fricreg:EINVAL', @() fricreg_hb_backbone_sensitivities(h, 0, {{'amplitude'}}), 'point');
+r('fricreg:EINVAL', @() fricreg_hb_backbone_sensitivities(h, 1, {{'element', 2, 1}}));
+r('fricreg:EINVAL', @() fricreg_hb_backbone_sensitivities(h, 1, {{'element', 1, 3}}));
+r('fricreg:EINVAL', @() fricreg_hb_backbone_sensitivities(h, 1, {{'element', 1, 0}}), 'index');
+r('fricreg:EINVAL', @() fricreg_hb_backbone_sensitivities(h, 1, {{'element', 1, 1.5}}));
+r('fricreg:EINVAL', @() fricreg_hb_backbone_sensitivities(h, 1, {{'damping', 'zeta'}}));
+r('fricreg:EINVAL', @() fricreg_hb_backbone_sensitivities(h, 1, {{'damping', 'a0'}}));
+r('fricreg:EINVAL', @() fricreg_mex('hb_nma_sensitivities', h, 1, 7, 1, 1, 1, false));
+r('fricreg:EINVAL', @() fricreg_mex('hb_nma_sensitivities', h, 1, -1, 1, 1, 1, false), 'kind');
+r('fricreg:EINVAL', @() fricreg_mex('hb_nma_sensitivities', h, 1, 0, 1, 1, 1, 2), 'amplitudes');
+r('fricreg:size', @() fricreg_mex('hb_nma_sensitivities', h, 1, [0 0], 1, [1 1], [1 1], 0), ...
+  'first');
+r('fricreg:type', @() fricreg_mex('hb_nma_sensitivities', h, 1, 0, {1}, 1, 1, 0));
+r('fricreg:EINVAL', @() fricreg_mex('hb_nma_sensitivities', h, 1, 0, NaN, 1, 1, 0), 'whole');
+% none asked: empty results; then the backbone forgotten by a model change
+[dw, dz, da] = fricreg_hb_backbone_sensitivities(h, 1, {});
+if ~isempty(dw) || ~isempty(dz) || ~isempty(da)
+    error('test:hb', 'no parameters: empty results');
+end
+fricreg_hb_set_element_param(h, 1, 2, 1.1);
+r('fricreg:EINVAL', @() fricreg_hb_backbone_sensitivities(h, 1, {{'amplitude'}}));
 end
