@@ -40,23 +40,29 @@ extern "C" {
  *  D the dissipation per cycle of modal amplitude a, ζ_k = φ_k^T C φ_k / (2 ω_k) the linear
  *  mode's damping ratio (C or Rayleigh's a0 M + a1 K). Below the first slip ω = ω_k, ζ = ζ_k.
  *
- *  The elements must be jenkins or iwan (fricreg_hb_set_elements, fricreg_hb_set_iwan_elements
+ *  The elements must be jenkins or iwan (fricreg_hb_set_elements, fricreg_hb_set_iwan
  *  or fricreg_hb_add_elements with those types): sliders of stiffness k_s and slip force φ_s,
  *  whose forces under a monotone load are piecewise linear. The path is then piecewise linear
  *  and is followed exactly from event to event (each a slider reaching its slip force: the
  *  tangent K_t = K + Σ_stuck k_s J_r^T J_r refactored, LAPACK's dense Cholesky), so λ(q) and its
- *  integral are exact to rounding, not approximated. The model is taken dense (a sparse one
- *  spread out), up to 4096 dofs; each event costs a Cholesky factor, O(ndof³).
+ *  integral are exact to rounding, not approximated. A slider slipping whose row then moves
+ *  back against its slip (a later slip elsewhere can turn it) sticks again at its bound, and the
+ *  pattern is solved anew until no slider does (a cycle that does not settle: FRICREG_EINVAL).
+ *  The model is taken dense (a sparse one spread out), up to 4096 dofs; each event costs a
+ *  Cholesky factor, O(ndof³).
  *
  *  Valid where QSMA is: one mode (its loading does not excite others: the mode shape may
- *  change with the slip, but the load stays M φ_k), Masing behaviour (every slider loads
- *  monotonically along the virgin curve; a slider that would reverse is refused, below), and
- *  light damping (the energy of one cycle at the secant stiffness). Where the joint couples modes
- *  (internal resonances), where a slider's force turns back along the load, for elements with
+ *  change with the slip, but the load stays M φ_k), Masing behaviour (exact where every slider
+ *  loads monotonically; where one sticks again on the way, Masing's rule on the modal curve is
+ *  QSMA's assumption, not each slider's own loop), and light damping (the energy of one cycle
+ *  at the secant stiffness). Where the joint couples modes (internal resonances), for elements with
  *  lift-off, 3-D contact or other laws, or where the damping is not light, the nonlinear mode
- *  (fricreg_hb_nma, EPMC) is needed. Measured against EPMC's backbone at ζ_k = 0.1 % (modal
- *  damping; docs/identification.md): within 1e-3 in ω and 1.3 % in ζ on NLvib's 3-dof chain,
- *  and 1e-3 and 1.5 % on a 60-dof chain with ten Jenkins elements.
+ *  (fricreg_hb_nma, EPMC) is needed: also where the slip changes the mode's shape much (stiff
+ *  joints, whose slipped structure has its modes far from the stuck ones). Measured against
+ *  EPMC's backbone at ζ_k = 0.1 % (modal damping; docs/identification.md): on a 60-dof chain
+ *  with ten soft Jenkins elements within 3.2 % in ω and 24 % of ζ (5.2 % from 1.25 times
+ *  the first slip's amplitude to where ζ reaches 0.15); on NLvib's 3-dof chain of stiff
+ *  elements 1.4 % in ω but ζ up to 3 times EPMC's, between the first slip and EPMC's fold.
  *  \{ */
 
 /** The natural frequency and damping ratio of mode k at the modal amplitudes amplitude[] by
@@ -75,10 +81,9 @@ extern "C" {
  *  Returns FRICREG_OK; FRICREG_ENULL if hb, amplitude, omega or zeta is NULL; FRICREG_EINVAL if
  *  the elements were not set, an element is not jenkins or iwan (the message names its type),
  *  no slider has a positive slip force, the model has more than 4096 dofs, mode >= ndof, n is 0,
- *  an amplitude is not > 0 or they do not increase, the stuck mode k has ω_k² <= 0, a slipping
- *  slider's row would move back against its slip before the last amplitude (the message names
- *  it and the amplitude: beyond Masing's virgin loading, use fricreg_hb_nma), or if called from
- *  the monitor; FRICREG_ENONFINITE if an amplitude is NaN or infinite, or K_0 or M is not
+ *  an amplitude is not > 0 or they do not increase, the stuck mode k has ω_k² <= 0, the sliders
+ *  sticking again at an event settle on no pattern (each round turning another back; the
+ *  message gives the amplitude), or if called from the monitor; FRICREG_ENONFINITE if an amplitude is NaN or infinite, or K_0 or M is not
  *  finite, or an intermediate overflows; FRICREG_ENOTPSD if M is not positive definite;
  *  FRICREG_ESINGULAR if K_0 is singular, or if the tangent becomes singular before the last
  *  amplitude: the sliders slipping leave a rigid-body motion (macroslip: λ cannot grow, the
@@ -110,6 +115,8 @@ FRICREG_API int fricreg_hb_qsma_at(fricreg_hb *hb, size_t mode, size_t n, const 
  *      dζ/dp = dζ_k/dp + (dD/dp) / (2π λ a) − (ζ − ζ_k) (dλ/dp) / λ.
  *
  *  At an amplitude where a slider starts to slip the derivatives are one-sided (the piece below).
+ *  Cost: fricreg_hb_qsma_at's, and per parameter and piece O(ndof + sliders); with stiffness
+ *  parameters one dense LU of order ndof + 1.
  *
  *  mode, n, amplitude  as fricreg_hb_qsma_at's.
  *  np         the parameters, >= 0 (0: only the arguments are checked).
@@ -126,8 +133,9 @@ FRICREG_API int fricreg_hb_qsma_at(fricreg_hb *hb, size_t mode, size_t n, const 
  *  Returns FRICREG_OK; FRICREG_ENULL if hb, amplitude, domega or dzeta is NULL, or kind, first,
  *  count or index with np > 0; FRICREG_EINVAL as fricreg_hb_qsma_at, or if a kind or index is not
  *  one of the above, an element range is empty or beyond the elements, a parameter is a slider's
- *  of slip force 0 (it carries nothing: no derivative), or a0, a1 is asked of a model without
- *  Rayleigh damping; FRICREG_ENONFINITE, FRICREG_ENOTPSD, FRICREG_ESINGULAR as
+ *  of slip force 0 (it carries nothing: no derivative), a0, a1 is asked of a model without
+ *  Rayleigh damping, or a slider sticks again before the last amplitude (its slip then moves
+ *  with the parameters through its event: not implemented; the message says where); FRICREG_ENONFINITE, FRICREG_ENOTPSD, FRICREG_ESINGULAR as
  *  fricreg_hb_qsma_at, and FRICREG_ESINGULAR if a stiffness moves φ_k and the stuck mode k is
  *  repeated (the bordered matrix singular: a pivot below 1e-14 of its largest entry);
  *  FRICREG_ENOMEM (with stiffness parameters (ndof + 1)² + ndof² doubles more, and np (n +

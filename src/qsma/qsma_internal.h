@@ -22,7 +22,9 @@ struct fr_qsma {
     double *ur, *vr, *kr;     /* [m]: J x, J v, each row's stuck stiffness */
     size_t *row, *elem, *loc; /* [nsl]: its row, element and place among the element's sliders */
     double *ks, *fs;          /* [nsl]: its stiffness and slip force */
+    double *z;                /* [nsl]: its slip (0 until it slips; set when it sticks again) */
     int *sigma;               /* [nsl]: 0 stuck, ±1 slipping in that direction */
+    int restuck;              /* some slider stuck again on the path so far */
     double omega_k, zeta_k;   /* the stuck mode's ω_k and ζ_k = φ^T C φ / (2 ω_k) */
     double phik;              /* φ_k^T K φ_k (Rayleigh's a1 derivative) */
 };
@@ -78,7 +80,8 @@ void fr_qsma_dlambda(const struct fr_qsma *s, const struct fr_qsma_sens *p, cons
 /* The loading path from rest through the na increasing amplitudes amp[] (qsma_path.c), its
  * results into out; with p (or NULL) the sensitivities too; work[4 np + n + m]. FRICREG_OK,
  * FRICREG_ESINGULAR (macroslip: the tangent singular before the last amplitude),
- * FRICREG_EINVAL (a slipping slider would reverse), FRICREG_ENONFINITE (message recorded, with
+ * FRICREG_EINVAL (no consistent pattern of stuck and slipping sliders at an event; with p, a
+ * slider stuck again before the last amplitude), FRICREG_ENONFINITE (message recorded, with
  * fn). */
 int fr_qsma_path(fricreg_hb *hb, const char *fn, struct fr_qsma *s, size_t na, const double *amp,
                  const struct fr_qsma_sens *p, double *work, struct fr_qsma_out *out);

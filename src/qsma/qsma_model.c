@@ -85,7 +85,7 @@ static struct fr_qsma *alloc(size_t n, size_t m, size_t nsl)
     struct fr_qsma *s = calloc(1, sizeof *s);
     if (s == NULL)
         return NULL;
-    s->K = malloc((4 * n * n + 5 * n + 3 * m + 2 * nsl + 1) * sizeof *s->K);
+    s->K = malloc((4 * n * n + 5 * n + 3 * m + 3 * nsl + 1) * sizeof *s->K);
     s->row = malloc((3 * nsl + 1) * sizeof *s->row);
     s->sigma = malloc((nsl + 1) * sizeof *s->sigma);
     if (s->K == NULL || s->row == NULL || s->sigma == NULL) {
@@ -105,6 +105,7 @@ static struct fr_qsma *alloc(size_t n, size_t m, size_t nsl)
     s->kr = s->vr + m;
     s->ks = s->kr + m;
     s->fs = s->ks + nsl;
+    s->z = s->fs + nsl;
     s->elem = s->row + nsl;
     s->loc = s->elem + nsl;
     return s;

@@ -1,16 +1,19 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* qsma_path.c — the static loading path of quasi-static modal analysis (qsma_internal.h):
  * K x + J^T F(J x) = λ M φ_k from rest, λ increasing. Every slider is a spring of stiffness
- * k_s in series with a Coulomb slider of slip force φ_s, so along a monotone loading the path is
- * piecewise linear: on a piece the pattern of stuck and slipping sliders is fixed, x moves as
- * dx/dλ = v = K_t^-1 M φ_k (K_t = K + Σ_stuck k_s J_r^T J_r), the modal amplitude q = φ_k^T M x
- * as dq/dλ = b^T v, and the piece ends where the next stuck slider's force k_s J_r x reaches its
- * slip force (an event, stepped to exactly). So λ(q) is piecewise linear and its integral is
- * exact by the trapezoid rule on each piece. A slider slipping whose row then moves back (J_r v
- * against its slip) would stick again: the virgin curve would no longer give the loop by
- * Masing's rule, and the path stops there (FRICREG_EINVAL). With sensitivities, λ's derivative
- * at fixed q (qsma_dlambda.c) is affine in q on a piece, so its integral is the trapezoid's
- * too; the events' own motion adds nothing, λ being continuous across them (Leibniz). */
+ * k_s in series with a Coulomb slider of slip force φ_s, its force k_s (J_r x − z_s) while it
+ * sticks (z_s its slip so far), σ_s φ_s while it slips; so the path is piecewise linear: on a
+ * piece the pattern of stuck and slipping sliders is fixed, x moves as dx/dλ = v = K_t^-1 M φ_k
+ * (K_t = K + Σ_stuck k_s J_r^T J_r), the modal amplitude q = φ_k^T M x as dq/dλ = b^T v, and
+ * the piece ends where the next stuck slider's force reaches its slip force (an event, stepped
+ * to exactly). So λ(q) is piecewise linear and its integral is exact by the trapezoid rule on
+ * each piece. A slider slipping whose row then moves back (J_r v against its slip) sticks again
+ * at its bound (z_s = J_r x − σ_s φ_s/k_s), the pattern solved anew until none does: then the
+ * loop by Masing's rule on the modal curve is QSMA's assumption, no longer each slider's own
+ * loop. With sensitivities, λ's derivative at fixed q (qsma_dlambda.c) is affine in q on a
+ * piece, so its integral is the trapezoid's too; the events' own motion adds nothing, λ being
+ * continuous across them (Leibniz). A slider stuck again has a slip z_s that moves with the
+ * parameters through its event: those sensitivities are refused. */
 #include <math.h>
 #include <string.h>
 
@@ -43,7 +46,7 @@ static double next_event(const struct fr_qsma *s)
     for (size_t j = 0; j < s->nsl; j++) {
         double df = s->ks[j] * s->vr[s->row[j]];
         if (s->sigma[j] == 0 && df != 0.0) {
-            double f = s->ks[j] * s->ur[s->row[j]];
+            double f = s->ks[j] * (s->ur[s->row[j]] - s->z[j]);
             step = fmin(step, fmax(0.0, (copysign(s->fs[j], df) - f) / df));
         }
     }
@@ -56,26 +59,33 @@ static void slip_at_event(struct fr_qsma *s)
     memset(s->kr, 0, s->m * sizeof *s->kr);
     for (size_t j = 0; j < s->nsl; j++) {
         size_t r = s->row[j];
-        double df = s->ks[j] * s->vr[r];
+        double df = s->ks[j] * s->vr[r], f = s->ks[j] * (s->ur[r] - s->z[j]);
         /* sliders reaching their bound at the same λ (to rounding) slip together */
-        if (s->sigma[j] == 0 && df != 0.0 &&
-            copysign(1.0, df) * s->ks[j] * s->ur[r] >= s->fs[j] * (1.0 - 1e-12))
+        if (s->sigma[j] == 0 && df != 0.0 && copysign(1.0, df) * f >= s->fs[j] * (1.0 - 1e-12))
             s->sigma[j] = df > 0.0 ? 1 : -1;
         if (s->sigma[j] == 0)
             s->kr[r] += s->ks[j];
     }
 }
 
-/* A slipping slider whose row moves against its slip on the new piece, or the count. */
-static size_t reversing(const struct fr_qsma *s)
+/* The slipping sliders whose rows move against their slip on the new piece stick again at
+ * their bound; how many. */
+static size_t restick(struct fr_qsma *s)
 {
     double vmax = 0.0;
+    size_t count = 0;
     for (size_t j = 0; j < s->nsl; j++)
         vmax = fmax(vmax, fabs(s->vr[s->row[j]]));
-    for (size_t j = 0; j < s->nsl; j++)
-        if (s->sigma[j] != 0 && s->sigma[j] * s->vr[s->row[j]] < -1e-10 * vmax)
-            return j;
-    return s->nsl;
+    for (size_t j = 0; j < s->nsl; j++) {
+        size_t r = s->row[j];
+        if (s->sigma[j] != 0 && s->sigma[j] * s->vr[r] < -1e-10 * vmax) {
+            s->z[j] = s->ur[r] - s->sigma[j] * s->fs[j] / s->ks[j];
+            s->sigma[j] = 0;
+            s->kr[r] += s->ks[j];
+            count++;
+        }
+    }
+    return count;
 }
 
 /* The targets on the current piece (from q, λ, ∫ = I, up to the step): their results. */
@@ -105,16 +115,34 @@ static size_t targets(const struct fr_qsma *s, const struct fr_qsma_sens *p, siz
     return i;
 }
 
+/* The pattern after an event: the tangent of the sliders slipping there, then of those that
+ * stick again, until none does. FRICREG_OK, FRICREG_ESINGULAR (the tangent), FRICREG_EINVAL
+ * (re-sticking does not settle: more rounds than sliders). */
+static int settle(fricreg_hb *hb, struct fr_qsma *s)
+{
+    for (size_t round = 0; round <= s->nsl; round++) {
+        if (fr_qsma_tangent(s, hb->J) != FRICREG_OK)
+            return FRICREG_ESINGULAR;
+        rows_of(hb, s->v, s->vr);
+        if (restick(s) == 0)
+            return FRICREG_OK;
+        s->restuck = 1;
+    }
+    return FRICREG_EINVAL;
+}
+
 int fr_qsma_path(fricreg_hb *hb, const char *fn, struct fr_qsma *s, size_t na, const double *amp,
                  const struct fr_qsma_sens *p, double *work, struct fr_qsma_out *out)
 {
-    size_t n = s->n, np = p ? p->np : 0, i = 0;
+    size_t n = s->n, np = p ? p->np : 0, i = 0, idle = 0;
     double lambda = 0.0, q = 0.0, I = 0.0, *dl0 = work, *dl1 = dl0 + np, *dI = dl1 + np;
     memset(s->x, 0, n * sizeof *s->x);
+    memset(s->z, 0, s->nsl * sizeof *s->z);
     memset(s->sigma, 0, s->nsl * sizeof *s->sigma);
     memset(dI, 0, np * sizeof *dI);
     memset(s->ur, 0, s->m * sizeof *s->ur);
     memset(s->vr, 0, s->m * sizeof *s->vr);
+    s->restuck = 0;
     slip_at_event(s); /* at rest: every slider stuck, the rows' stiffnesses summed */
     if (fr_qsma_tangent(s, hb->J) != FRICREG_OK)
         return fr_fail(hb, FRICREG_ESINGULAR, "%s: the stuck structure's K_0 is singular", fn);
@@ -124,11 +152,24 @@ int fr_qsma_path(fricreg_hb *hb, const char *fn, struct fr_qsma *s, size_t na, c
         double bv = dot(s->b, s->v, n), step = next_event(s);
         if (!(bv > 0.0) || !isfinite(bv))
             return fr_fail(hb, FRICREG_ENONFINITE, "%s: dq/dlambda = %g at q = %g", fn, bv, q);
+        if (p != NULL && s->restuck)
+            return fr_fail(hb, FRICREG_EINVAL,
+                           "%s: a slider sticks again at the modal amplitude %g, below "
+                           "amplitude %g: the sensitivities through it are not implemented",
+                           fn, q, amp[i]);
         if (p != NULL)
             fr_qsma_dlambda(s, p, s->x, s->ur, lambda, dl0);
         i = targets(s, p, i, na, amp, q, lambda, I, step, dl0, dI, dl1 + 2 * np, out);
         if (i == na)
             return FRICREG_OK;
+        /* a pattern that loads a slider just stuck again past its bound at once cycles */
+        if (!(step > 0.0) && ++idle > s->nsl)
+            return fr_fail(hb, FRICREG_EINVAL,
+                           "%s: no consistent pattern of stuck and slipping sliders at the modal "
+                           "amplitude %g",
+                           fn, q);
+        if (step > 0.0)
+            idle = 0;
         for (size_t k = 0; k < n; k++) /* to the event */
             s->x[k] += step * s->v[k];
         for (size_t r = 0; r < s->m; r++)
@@ -143,19 +184,17 @@ int fr_qsma_path(fricreg_hb *hb, const char *fn, struct fr_qsma *s, size_t na, c
         q = qn;
         lambda = ln;
         slip_at_event(s);
-        if (fr_qsma_tangent(s, hb->J) != FRICREG_OK)
+        int status = settle(hb, s);
+        if (status == FRICREG_ESINGULAR)
             return fr_fail(hb, FRICREG_ESINGULAR,
                            "%s: macroslip at the modal amplitude %g (lambda = %g): the sliders "
                            "slipping leave the structure without stiffness, the amplitude %g is "
                            "beyond reach",
                            fn, q, lambda, amp[i]);
-        rows_of(hb, s->v, s->vr);
-        size_t j = reversing(s);
-        if (j < s->nsl)
+        if (status != FRICREG_OK)
             return fr_fail(hb, FRICREG_EINVAL,
-                           "%s: slider %zu of element %zu would reverse at the modal amplitude "
-                           "%g (its row moves back against its slip): beyond Masing's virgin "
-                           "loading, fricreg_hb_nma applies",
-                           fn, s->loc[j], s->elem[j], q);
+                           "%s: the sliders sticking again at the modal amplitude %g do not settle "
+                           "on a pattern",
+                           fn, q);
     }
 }
