@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* python_baseline.c — the C side of the Python binding's speed ratios (bench/python_speed.py,
- * docs/python.md): the same work as the Python benchmark's, from C, each repetition timed on
- * the process CPU clock and printed as "TASK SECONDS" lines.
+ * docs/python.md) and of the Octave gateway's (bench/octave_speed.m, docs/matlab.md): the same
+ * work as those benchmarks', from C, each repetition timed on the process CPU clock and printed
+ * as "TASK SECONDS" lines.
  *
  *   hb       NLvib's 3-dof chain with two Jenkins elements (bench/nlvib/chain_jenkins.m) at
  *            H = 7: the driver built, its frequency response continued from 0.5 to 2 rad/s

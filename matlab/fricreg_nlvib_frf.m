@@ -116,12 +116,9 @@ if ~isempty(opts.x0)
     guess = J * reshape(opts.x0, n, nc); % the elements' q = J x, from NLvib's blocks
 end
 r = fricreg_hb_frequency_response(h, Om_s, Om_e, guess);
-npoints = numel(r.omega);
-X = zeros(n * nc + 1, npoints);
-for p = 1:npoints
-    X(1:end - 1, p) = reshape(r.x(p, :, :), n * nc, 1); % NLvib's [X0; Xc1; Xs1; ...]
-end
-X(end, :) = r.omega';
+% NLvib's [X0; Xc1; Xs1; ...] a column per point: each point's NDOF x (2H + 1) coefficients
+% column by column; one permute for the branch, not a loop over its points (bench/octave_speed.m)
+X = [reshape(permute(r.x, [2 3 1]), n * nc, numel(r.omega)); r.omega'];
 info = struct('rms', r.rms', 'stable', r.stable', 'mu_max', r.mu_max');
 info.bifurcations = r.bifurcations;
 end
