@@ -528,6 +528,37 @@ START_TEST(sensitivities_iwan)
 }
 END_TEST
 
+/* ---- A sparse model ---------------------------------------------------------------------- */
+
+START_TEST(sparse_as_dense)
+{
+    /* NLvib's chain with Rayleigh damping, its M and K given by compressed columns (the model
+     * sparse), against the dense one: the same numbers to rounding */
+    const int64_t mp[4] = {0, 1, 2, 3}, mi[3] = {0, 1, 2}, kp[4] = {0, 2, 5, 7},
+                  ki[7] = {0, 1, 0, 1, 2, 1, 2};
+    const double mv[3] = {1.0, 1.0, 1.0}, kv[7] = {2.0, -1.0, -1.0, 2.0, -1.0, -1.0, 2.0};
+    const double J[6] = {1.0, 0.0, 0.0, -1.0, 1.0, 0.0}, kt[2] = {20.0, 20.0}, mun[2] = {1.0, 1.0};
+    const double a[4] = {0.5, 0.95, 2.0, 7.0};
+    double w[4], z[4], ws[4], zs[4];
+    fricreg_hb *hb = hb_chain(0, 0), *sp = NULL;
+    ck_assert_ptr_nonnull(hb);
+    ck_assert_int_eq(fricreg_hb_set_rayleigh(hb, 0.01, 0.003), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_create(3, 2, 3, &sp), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_mass_csc(sp, 3, 0, mp, mi, mv), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stiffness_csc(sp, 3, 0, kp, ki, kv), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_rayleigh(sp, 0.01, 0.003), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_elements(sp, 2, 3, J, kt, mun), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_qsma_at(hb, 0, 4, a, w, z), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_qsma_at(sp, 0, 4, a, ws, zs), FRICREG_OK);
+    for (int i = 0; i < 4; i++) {
+        ck_assert_double_eq_tol(ws[i], w[i], 1e-13 * w[i]);
+        ck_assert_double_eq_tol(zs[i], z[i], 1e-13 * z[i]);
+    }
+    fricreg_hb_free(hb);
+    fricreg_hb_free(sp);
+}
+END_TEST
+
 /* ---- Statuses ------------------------------------------------------------------------------ */
 
 static void unwritten(const double *v, size_t n)
@@ -634,6 +665,7 @@ static Suite *qsma_suite(void)
     tcase_add_test(tc, oscillator_closed_form);
     tcase_add_test(tc, iwan_closed_forms);
     tcase_add_test(tc, restick_against_load_steps);
+    tcase_add_test(tc, sparse_as_dense);
     suite_add_tcase(s, tc);
     tc = tcase_create("epmc");
     tcase_set_timeout(tc, 60);

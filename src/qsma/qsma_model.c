@@ -32,7 +32,7 @@ static void densify(const fricreg_hb *hb, struct fr_qsma *s)
                 size_t i = (size_t)hb->Di[p];
                 s->M[i * n + j] = hb->vM[p];
                 s->K[i * n + j] = hb->vK[p];
-                s->C[i * n + j] = hb->vC[p];
+                s->C[i * n + j] = hb->rayleigh ? 0.0 : hb->vC[p]; /* Rayleigh's: below */
             }
     } else {
         memcpy(s->M, hb->M, n * n * sizeof *s->M);
