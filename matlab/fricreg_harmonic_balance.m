@@ -8,8 +8,8 @@ function h = fricreg_harmonic_balance(M, K, C, elements, harmonics, varargin)
 %   for HARMONICS harmonics and returns its handle H, which FRICREG_HB_SOLVE,
 %   FRICREG_HB_FREQUENCY_RESPONSE, FRICREG_HB_LEVEL_RESPONSE, FRICREG_HB_BACKBONE,
 %   FRICREG_HB_BACKBONE_AT, FRICREG_HB_PEAK, FRICREG_HB_TRUNCATION_ERROR,
-%   FRICREG_HB_BACKBONE_SENSITIVITIES, FRICREG_HB_SET, FRICREG_HB_SET_ELEMENT_PARAM and
-%   FRICREG_HB_ELEMENT_PARAM take. Free it with FRICREG_HB_FREE (or it is freed when fricreg_mex
+%   FRICREG_HB_BACKBONE_SENSITIVITIES, FRICREG_HB_MODAL_PARTICIPATION, FRICREG_HB_SET,
+%   FRICREG_HB_SET_ELEMENT_PARAM and FRICREG_HB_ELEMENT_PARAM take. Free it with FRICREG_HB_FREE (or it is freed when fricreg_mex
 %   is cleared or the session ends).
 %   FRICREG_HARMONIC_BALANCE(..., NAME, VALUE, ...) also sets:
 %      'rayleigh'    [a0 a1]: C = a0 M + a1 K (a0 in 1/s, a1 in s), in place of C (give C = []).

@@ -14,7 +14,7 @@
  *   fricreg_mex('hb_create', ndof, m, H) -> handle; hb_set_*, hb_add_elements (mex_hb.c);
  *     hb_set_element_param, hb_get_element_param (mex_hb.c); hb_solve, hb_continue,
  *     hb_continue_level, hb_nma, hb_peak (mex_hb_results.c); hb_truncation_error,
- *     hb_nma_sensitivities (mex_hb_estimates.c)
+ *     hb_nma_sensitivities, hb_modal_participation (mex_hb_estimates.c)
  *   fricreg_mex('free', handle), ('free_all'), ('handles') -> the live objects' count
  *
  * Layout: MATLAB stores arrays column-major; the library takes tables of points row-major,
@@ -394,6 +394,7 @@ static const struct {
     {"hb_peak", mexhb_peak},
     {"hb_truncation_error", mexhb_truncation_error},
     {"hb_nma_sensitivities", mexhb_nma_sensitivities},
+    {"hb_modal_participation", mexhb_modal_participation},
     {"free", cmd_free},
     {"free_all", cmd_free_all},
     {"handles", cmd_handles},

@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* mex_hb_estimates.c — the gateway's commands that judge a solved point of a harmonic-balance
  * driver (fricreg_hb.h) rather than solve anew: the truncation error of a point of the forced
- * response (fricreg_hb_truncation_error) and the exact sensitivities of a backbone point in
- * the model's parameters (fricreg_hb_nma_point_sensitivities). A failed call raises
+ * response (fricreg_hb_truncation_error), the exact sensitivities of a backbone point in the
+ * model's parameters (fricreg_hb_nma_point_sensitivities) and the stuck modes' shares in one of
+ * its harmonics (fricreg_hb_nma_modal_participation). A failed call raises
  * fricreg:<NAME> with the driver's message.
  *
  * Indices are MATLAB's, from 1: points, elements, and an element's parameter in its type's
@@ -94,4 +95,25 @@ void mexhb_nma_sensitivities(int nlhs, mxArray *plhs[], int nrhs, const mxArray 
     if (amplitudes) /* a copy: np x ndof row-major to column-major */
         mexa_to_cols(damp, mxGetPr(out[2]), np, d->ndof);
     mexa_outputs(nlhs, plhs, out, 3);
+}
+
+/* fraction = hb_modal_participation(h, point, harmonic): each stuck linear mode's share (1 x
+ * ndof, the lowest first, summing to 1) in harmonic h (0..H) of backbone point `point` (from
+ * 1) (fricreg_hb_nma_modal_participation). */
+void mexhb_modal_participation(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    const char *cmd = "hb_modal_participation";
+    size_t point;
+    int harmonic;
+    mxArray *out;
+    mexhb *d;
+    mexa_nargs(cmd, nrhs, 3, 3, nlhs, 1);
+    d = mexhb_of(prhs[0], cmd);
+    point = mexa_count(prhs[1], cmd, "point", 1, (size_t)1 << 40) - 1; /* MATLAB's from 1 */
+    harmonic = (int)mexa_count(prhs[2], cmd, "harmonic", 0, 1000000);
+    out = mexa_matrix(1, d->ndof);
+    mexhb_check(d,
+                fricreg_hb_nma_modal_participation(d->hb, point, harmonic, d->ndof, mxGetPr(out)),
+                cmd);
+    plhs[0] = out;
 }

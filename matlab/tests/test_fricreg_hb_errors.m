@@ -56,6 +56,8 @@ calls = {@() fricreg_mex('hb_set_matrix', h, 'mass', 1)
          @() fricreg_hb_backbone_sensitivities(h, 1, {{'amplitude'}})
          @() fricreg_hb_set_element_param(h, 1, 1, 20)
          @() fricreg_hb_element_param(h, 1, 1)
+         @() fricreg_mex('hb_modal_participation', h, 1, 1)
+         @() fricreg_hb_modal_participation(h, 1, 1)
          @() fricreg_hb_solve(h, 1.5)
          @() fricreg_hb_frequency_response(h, 1, 2)
          @() fricreg_hb_backbone(h, 1, 0.01, 1)
@@ -432,6 +434,14 @@ r('fricreg:EINVAL', @() fricreg_mex('hb_nma_sensitivities', h, 1, 0, NaN, 1, 1, 
 if ~isempty(dw) || ~isempty(dz) || ~isempty(da)
     error('test:hb', 'no parameters: empty results');
 end
+r('fricreg:nargs', @() fricreg_hb_modal_participation(h, 1));
+r('fricreg:nargs', @() fricreg_mex('hb_modal_participation', h, 1));
+r('fricreg:EINVAL', @() fricreg_hb_modal_participation(h, 3, 1), 'point');
+r('fricreg:EINVAL', @() fricreg_hb_modal_participation(h, 0, 1), 'point');
+r('fricreg:EINVAL', @() fricreg_hb_modal_participation(h, 1, 4)); % H = 3
+r('fricreg:EINVAL', @() fricreg_hb_modal_participation(h, 1, -1), 'harmonic');
+r('fricreg:size', @() fricreg_hb_modal_participation(h, 1, [1 2]), 'harmonic');
 fricreg_hb_set_element_param(h, 1, 2, 1.1);
 r('fricreg:EINVAL', @() fricreg_hb_backbone_sensitivities(h, 1, {{'amplitude'}}));
+r('fricreg:EINVAL', @() fricreg_hb_modal_participation(h, 1, 1));
 end

@@ -9,14 +9,16 @@ function failures = test_fricreg_hb_estimates()
 %   read back and a solve after a change against a driver built with the new value; the
 %   backbone's sensitivities against the stuck mode's closed form d omega / dk_t =
 %   (J phi)^2 / (2 omega) and against central differences of backbones through
-%   fricreg_hb_set_element_param.
+%   fricreg_hb_set_element_param; the modal participation against the stuck mode's own (1 in
+%   its mode, 0 in the other) and against its definition from the point's coefficients.
 cases = {'multipliers_closed_form', @multipliers_closed_form
          'level_response_linear', @level_response_linear
          'level_response_sliding', @level_response_sliding
          'truncation_error_definition', @truncation_error_definition
          'element_param_roundtrip', @element_param_roundtrip
          'sensitivities_stuck_mode', @sensitivities_stuck_mode
-         'sensitivities_differences', @sensitivities_differences};
+         'sensitivities_differences', @sensitivities_differences
+         'modal_participation', @modal_participation};
 failures = fricreg_test_run('hb_estimates', cases);
 end
 
@@ -262,4 +264,27 @@ fricreg_test_check(dz(4), (c.zeta(3) - c.zeta(2)) / (2 * da), 1e-5, 'amplitude z
 fricreg_hb_backbone_at(h, 1, [1 a]);
 [dw2, dz2] = fricreg_hb_backbone_sensitivities(h, 2, {{'element', 1, 1}});
 fricreg_test_check([dw2 dz2], [dw(1) dz(1)], 1e-14, 'two outputs');
+end
+
+function modal_participation()
+[M, K, C, J, kt, mun] = two_masses();
+h = fricreg_harmonic_balance(M, K, C, struct('type', 'jenkins', 'J', J, 'params', [kt mun]), 5);
+cleanup = onCleanup(@() fricreg_hb_free(h));
+b = fricreg_hb_backbone_at(h, 2, [1e-3 1], 'damping', 'modal');
+fricreg_test_check(fricreg_hb_modal_participation(h, 1, 1), [0 1], 1e-12, 'stuck mode 2', 1);
+fricreg_test_check(fricreg_hb_modal_participation(h, 1, 3), [0 0], 0, 'stuck: no 3rd harmonic');
+% sliding: the definition from the point's coefficients and the stuck modes
+[V, D] = eig(K + kt * (J' * J), M);
+[~, order] = sort(diag(D));
+phi = V(:, order) ./ sqrt(diag(V(:, order)' * M * V(:, order)))';
+for harmonic = [1 3]
+    x = squeeze(b.x(2, :, :));
+    ab = x(:, 2 * harmonic:2 * harmonic + 1);
+    p = sum((phi' * M * ab).^2, 2)';
+    got = fricreg_hb_modal_participation(h, 2, harmonic);
+    fricreg_test_check(got, p / sum(p), 1e-10, sprintf('harmonic %d', harmonic), 1);
+    if ~(abs(sum(got) - 1) < 1e-14 && got(1) > 0)
+        error('test:hb', 'harmonic %d: %s', harmonic, mat2str(got));
+    end
+end
 end
