@@ -88,7 +88,7 @@ extern "C" {
  *  FRICREG_ESINGULAR if K_0 is singular, or if the tangent becomes singular before the last
  *  amplitude: the sliders slipping leave a rigid-body motion (macroslip: λ cannot grow, the
  *  amplitude is beyond reach; the message gives the amplitude where it happens); FRICREG_ENOMEM
- *  (about 6 ndof² doubles during the call). Nothing is written on failure; the driver's
+ *  (about 8 ndof² doubles during the call). Nothing is written on failure; the driver's
  *  results (solution, branch, backbone) are not changed. Since 1.9 (FRICREG_1.9). */
 FRICREG_API int fricreg_hb_qsma_at(fricreg_hb *hb, size_t mode, size_t n, const double amplitude[],
                                    double omega[], double zeta[]);
