@@ -80,8 +80,6 @@ static int iterate(gsl_multifit_nlinear_workspace *w, size_t *iters)
 /* The checks a run makes before it solves. */
 static int check_problem(fricreg_fit *fit, const struct fr_fit_problem *pb)
 {
-    if (fit->hb != NULL && fit->np == 0)
-        return fr_fail(fit, FRICREG_EINVAL, "run: the model has no parameters");
     if (fit->n == 0)
         return fr_fail(fit, FRICREG_EINVAL, "run: no levels are set");
     if (pb->nfree == 0)
