@@ -35,6 +35,7 @@
 #include "expm.h"
 #include "joint/aft_slips.h"
 #include "monodromy.h"
+#include "orbit.h"
 #include "piece_powers.h"
 #include "reduction.h"
 #include "switches.h"
@@ -60,6 +61,8 @@ struct fr_hb_mono {
     double sigma; /* the pieces' velocities in units of σ (piece_matrix) */
     struct fr_hb_schedule sc;
     struct fr_hb_pieces pieces; /* the pieces' matrices met before, with their powers */
+    double *orbit_work;         /* orbit.h's workspace, made at its first use, then M^-1 p [2n] */
+    int *orbit_piv;
 };
 
 void fr_hb_monodromy_free(fricreg_hb *hb)
@@ -67,7 +70,7 @@ void fr_hb_monodromy_free(fricreg_hb *hb)
     struct fr_hb_mono *w = hb->mono;
     if (w == NULL)
         return;
-    FR_FREE_ALL(w->Mlu, w->eig_work, w->piv);
+    FR_FREE_ALL(w->Mlu, w->eig_work, w->piv, w->orbit_work, w->orbit_piv);
     fr_hb_schedule_free(&w->sc);
     fr_hb_pieces_free(&w->pieces);
     free(w);
@@ -423,6 +426,54 @@ static int linear_multipliers(fricreg_hb *hb, const char *fn, struct fr_hb_mono 
     return FRICREG_OK;
 }
 
+/* Whether only contacts act on the orbit: elements with a normal law and no friction (mu 0),
+ * so that no slider is in the state and the model between switches is affine in x. */
+static int contacts_only(const fricreg_hb *hb, const struct fr_hb_mono *w)
+{
+    if (hb->rpe != 2 || w->sc.S != 0 || w->sc.nstuck != 0 || w->sc.count == 0)
+        return 0;
+    for (size_t e = 0; e < hb->me; e++)
+        if (hb->nl[hb->me + e] != 0.0)
+            return 0;
+    return 1;
+}
+
+/* The contact switches moved onto the exact orbit nearest the HB's (orbit.h), where only
+ * contacts act on the whole model: M^-1 p from M's LU (mass_solves' pivots, before the
+ * exponentials reuse them), the workspace made at the first such orbit. */
+static int exact_switches(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w, double omega)
+{
+    size_t n = w->n, me = hb->me, R = 2 * n + 3;
+    if (n > FR_HB_ORBIT_MAX_N || w->sc.count > FR_HB_ORBIT_MAX_SWITCHES)
+        return FRICREG_OK;
+    if (w->orbit_work == NULL) {
+        w->orbit_work = malloc((fr_hb_orbit_work(n) + 2 * n) * sizeof(double));
+        w->orbit_piv = malloc((R + FR_HB_ORBIT_MAX_SWITCHES) * sizeof(int));
+        if (w->orbit_work == NULL || w->orbit_piv == NULL) {
+            FR_FREE_ALL(w->orbit_work, w->orbit_piv);
+            return fr_fail(hb, FRICREG_ENOMEM,
+                           "%s: stability: no memory for the orbit's switches (order %zu)", fn, R);
+        }
+    }
+    double *Mip = w->orbit_work + fr_hb_orbit_work(n), level = fr_hb_load(hb);
+    for (size_t i = 0; i < n; i++)
+        Mip[i] = level * hb->pc[i], Mip[n + i] = level * hb->ps[i];
+    fr_hb_lu_solve_many(w->Mlu, n, w->piv, 2, Mip);
+    struct fr_hb_orbit_model om = {.n = n,
+                                   .m = hb->m,
+                                   .me = me,
+                                   .MiK = w->MiK,
+                                   .MiC = w->MiC,
+                                   .MiJ = w->MiJ,
+                                   .J = w->J,
+                                   .n0 = hb->nl + 2 * me,
+                                   .kn = hb->nl + 3 * me,
+                                   .Mip = Mip,
+                                   .omega = omega};
+    fr_hb_orbit_refine(&om, &w->sc, w->orbit_work, w->orbit_piv);
+    return FRICREG_OK;
+}
+
 int fr_hb_monodromy(fricreg_hb *hb, const char *fn, double omega, int condensed, double *out)
 {
     struct fr_hb_linear_model lm;
@@ -435,6 +486,11 @@ int fr_hb_monodromy(fricreg_hb *hb, const char *fn, double omega, int condensed,
     model_matrices(hb, w, condensed ? &lm : NULL);
     if ((status = mass_solves(hb, fn, w)) != FRICREG_OK ||
         (status = fr_hb_schedule(hb, fn, &w->sc)) != FRICREG_OK)
+        return status;
+    /* the HB orbit's instants err by its truncation over the velocity at the surface: taken
+     * from the exact orbit where only contacts act (orbit.c says why) */
+    if (!condensed && contacts_only(hb, w) &&
+        (status = exact_switches(hb, fn, w, omega)) != FRICREG_OK)
         return status;
     for (size_t i = 0; i < w->sc.nstuck; i++) { /* the sliders stuck throughout: springs */
         size_t t = hb->rpe * w->sc.stuck_element[i];
