@@ -105,7 +105,10 @@ FRICREG_API int fricreg_hb_qsma_at(fricreg_hb *hb, size_t mode, size_t n, const 
  *      dλ/dp = (−db^T x − v^T (−dK_t x − dg + λ db)) / (b^T v),    b = M φ_k,  v = K_t^-1 b,
  *
  *  one dot product a parameter (dK_t = J_r^T J_r for a stuck slider's stiffness, dg = σ_s J_r^T
- *  for a slipping slider's slip force). A stiffness also moves φ_k: db = M dφ_k/dp from the
+ *  for a slipping slider's slip force). A slider stuck again carries k_s (J_r x − z_s) with its
+ *  slip z_s = J_r x* − σ_s φ_s/k_s set at its event x*, which moves with p: dx* = dx|_λ + v dλ_e,
+ *  K_t dx|_λ = −dK_t x − dg + λ db on the piece's factor (one solve a parameter and event) and
+ *  dλ_e from the slip condition of the slider that made the event. A stiffness also moves φ_k: db = M dφ_k/dp from the
  *  bordered [K_0 − ω_k² M, M φ_k; φ_k^T M, 0] (dφ_k, −dω_k²) = (−dK_0 φ_k, 0) (one dense LU of
  *  order ndof + 1), and ζ_k with it. dλ/dp is affine in q on a piece, so its integral is exact
  *  by the trapezoid rule on each piece; the events' own motion adds nothing (λ continuous across
@@ -115,8 +118,8 @@ FRICREG_API int fricreg_hb_qsma_at(fricreg_hb *hb, size_t mode, size_t n, const 
  *      dζ/dp = dζ_k/dp + (dD/dp) / (2π λ a) − (ζ − ζ_k) (dλ/dp) / λ.
  *
  *  At an amplitude where a slider starts to slip the derivatives are one-sided (the piece below).
- *  Cost: fricreg_hb_qsma_at's, and per parameter and piece O(ndof + sliders); with stiffness
- *  parameters one dense LU of order ndof + 1.
+ *  Cost: fricreg_hb_qsma_at's, and per parameter and event a solve on the tangent's factor,
+ *  O(ndof²); with stiffness parameters one dense LU of order ndof + 1.
  *
  *  mode, n, amplitude  as fricreg_hb_qsma_at's.
  *  np         the parameters, >= 0 (0: only the arguments are checked).
@@ -134,8 +137,7 @@ FRICREG_API int fricreg_hb_qsma_at(fricreg_hb *hb, size_t mode, size_t n, const 
  *  count or index with np > 0; FRICREG_EINVAL as fricreg_hb_qsma_at, or if a kind or index is not
  *  one of the above, an element range is empty or beyond the elements, a parameter is a slider's
  *  of slip force 0 (it carries nothing: no derivative), a0, a1 is asked of a model without
- *  Rayleigh damping, or a slider sticks again before the last amplitude (its slip then moves
- *  with the parameters through its event: not implemented; the message says where); FRICREG_ENONFINITE, FRICREG_ENOTPSD, FRICREG_ESINGULAR as
+ *  Rayleigh damping; FRICREG_ENONFINITE, FRICREG_ENOTPSD, FRICREG_ESINGULAR as
  *  fricreg_hb_qsma_at, and FRICREG_ESINGULAR if a stiffness moves φ_k and the stuck mode k is
  *  repeated (the bordered matrix singular: a pivot below 1e-14 of its largest entry);
  *  FRICREG_ENOMEM (with stiffness parameters (ndof + 1)² + ndof² doubles more, and np (n +

@@ -24,18 +24,20 @@ struct fr_qsma {
     double *ks, *fs;          /* [nsl]: its stiffness and slip force */
     double *z;                /* [nsl]: its slip (0 until it slips; set when it sticks again) */
     int *sigma;               /* [nsl]: 0 stuck, ±1 slipping in that direction */
-    int restuck;              /* some slider stuck again on the path so far */
     double omega_k, zeta_k;   /* the stuck mode's ω_k and ζ_k = φ^T C φ / (2 ω_k) */
     double phik;              /* φ_k^T K φ_k (Rayleigh's a1 derivative) */
 };
 
 /* The sensitivities' inputs (qsma_dlambda.c): np parameters, role[np nsl] what each is to
  * each slider (0 none, 1 its stiffness, 2 its slip force), w[np n] M dφ_k/dp (0 if p does not
- * move φ_k). */
+ * move φ_k); and their state along the path: dz[np nsl] each slider's slip's derivative (0 but
+ * for a slider stuck again), dur[np m] the last event's J x* differentiated, dx[np n]
+ * scratch. */
 struct fr_qsma_sens {
     size_t np;
     const signed char *role;
     const double *w;
+    double *dz, *dur, *dx;
 };
 
 /* The path's results at each target amplitude (qsma_path.c): λ, ∫_0^a λ ds, dλ/dq on the
@@ -77,12 +79,17 @@ int fr_qsma_shape(fricreg_hb *hb, const char *fn, const struct fr_qsma *s, size_
 void fr_qsma_dlambda(const struct fr_qsma *s, const struct fr_qsma_sens *p, const double *x,
                      const double *ur, double lambda, double *dl);
 
+/* The event at λ where slider t reaches its slip force, moved by the parameters: on the piece's
+ * factor (before the pattern changes) dx* = dx|_λ + v dλ_e, dλ_e from t's condition
+ * k_t (J_t x − z_t) = ±φ_t; J dx* into p->dur. */
+void fr_qsma_devent(const struct fr_qsma *s, const struct fr_qsma_sens *p, const double *J,
+                    size_t t, double lambda);
+
 /* The loading path from rest through the na increasing amplitudes amp[] (qsma_path.c), its
  * results into out; with p (or NULL) the sensitivities too; work[4 np + n + m]. FRICREG_OK,
  * FRICREG_ESINGULAR (macroslip: the tangent singular before the last amplitude),
- * FRICREG_EINVAL (no consistent pattern of stuck and slipping sliders at an event; with p, a
- * slider stuck again before the last amplitude), FRICREG_ENONFINITE (message recorded, with
- * fn). */
+ * FRICREG_EINVAL (no consistent pattern of stuck and slipping sliders at an event),
+ * FRICREG_ENONFINITE (message recorded, with fn). */
 int fr_qsma_path(fricreg_hb *hb, const char *fn, struct fr_qsma *s, size_t na, const double *amp,
                  const struct fr_qsma_sens *p, double *work, struct fr_qsma_out *out);
 

@@ -13,7 +13,7 @@
  * loop. With sensitivities, λ's derivative at fixed q (qsma_dlambda.c) is affine in q on a
  * piece, so its integral is the trapezoid's too; the events' own motion adds nothing, λ being
  * continuous across them (Leibniz). A slider stuck again has a slip z_s that moves with the
- * parameters through its event: those sensitivities are refused. */
+ * parameters through its event (qsma_dlambda.c's fr_qsma_devent). */
 #include <math.h>
 #include <string.h>
 
@@ -39,15 +39,20 @@ static double dot(const double *a, const double *b, size_t n)
     return t;
 }
 
-/* The λ step to the next stuck slider's slip force (infinite: none loads). */
-static double next_event(const struct fr_qsma *s)
+/* The λ step to the next stuck slider's slip force (infinite: none loads), that slider into
+ * *t. */
+static double next_event(const struct fr_qsma *s, size_t *t)
 {
     double step = INFINITY;
     for (size_t j = 0; j < s->nsl; j++) {
         double df = s->ks[j] * s->vr[s->row[j]];
         if (s->sigma[j] == 0 && df != 0.0) {
             double f = s->ks[j] * (s->ur[s->row[j]] - s->z[j]);
-            step = fmin(step, fmax(0.0, (copysign(s->fs[j], df) - f) / df));
+            double d = fmax(0.0, (copysign(s->fs[j], df) - f) / df);
+            if (d < step) {
+                step = d;
+                *t = j;
+            }
         }
     }
     return step;
@@ -69,8 +74,9 @@ static void slip_at_event(struct fr_qsma *s)
 }
 
 /* The slipping sliders whose rows move against their slip on the new piece stick again at
- * their bound; how many. */
-static size_t restick(struct fr_qsma *s)
+ * their bound, z_s = J_r x* − σ_s φ_s/k_s (with p its derivative, from the event's J dx*);
+ * how many. */
+static size_t restick(struct fr_qsma *s, const struct fr_qsma_sens *p)
 {
     double vmax = 0.0;
     size_t count = 0;
@@ -80,6 +86,13 @@ static size_t restick(struct fr_qsma *s)
         size_t r = s->row[j];
         if (s->sigma[j] != 0 && s->sigma[j] * s->vr[r] < -1e-10 * vmax) {
             s->z[j] = s->ur[r] - s->sigma[j] * s->fs[j] / s->ks[j];
+            for (size_t k = 0; p != NULL && k < p->np; k++) {
+                signed char role = p->role[k * s->nsl + j];
+                p->dz[k * s->nsl + j] = p->dur[k * s->m + r] -
+                                        s->sigma[j] * (role == 2) / s->ks[j] +
+                                        s->sigma[j] * s->fs[j] * (role == 1) /
+                                            (s->ks[j] * s->ks[j]);
+            }
             s->sigma[j] = 0;
             s->kr[r] += s->ks[j];
             count++;
@@ -118,15 +131,14 @@ static size_t targets(const struct fr_qsma *s, const struct fr_qsma_sens *p, siz
 /* The pattern after an event: the tangent of the sliders slipping there, then of those that
  * stick again, until none does. FRICREG_OK, FRICREG_ESINGULAR (the tangent), FRICREG_EINVAL
  * (re-sticking does not settle: more rounds than sliders). */
-static int settle(fricreg_hb *hb, struct fr_qsma *s)
+static int settle(fricreg_hb *hb, struct fr_qsma *s, const struct fr_qsma_sens *p)
 {
     for (size_t round = 0; round <= s->nsl; round++) {
         if (fr_qsma_tangent(s, hb->J) != FRICREG_OK)
             return FRICREG_ESINGULAR;
         rows_of(hb, s->v, s->vr);
-        if (restick(s) == 0)
+        if (restick(s, p) == 0)
             return FRICREG_OK;
-        s->restuck = 1;
     }
     return FRICREG_EINVAL;
 }
@@ -134,29 +146,25 @@ static int settle(fricreg_hb *hb, struct fr_qsma *s)
 int fr_qsma_path(fricreg_hb *hb, const char *fn, struct fr_qsma *s, size_t na, const double *amp,
                  const struct fr_qsma_sens *p, double *work, struct fr_qsma_out *out)
 {
-    size_t n = s->n, np = p ? p->np : 0, i = 0, idle = 0;
+    size_t n = s->n, np = p ? p->np : 0, i = 0, idle = 0, t = 0;
     double lambda = 0.0, q = 0.0, I = 0.0, *dl0 = work, *dl1 = dl0 + np, *dI = dl1 + np;
     memset(s->x, 0, n * sizeof *s->x);
     memset(s->z, 0, s->nsl * sizeof *s->z);
     memset(s->sigma, 0, s->nsl * sizeof *s->sigma);
     memset(dI, 0, np * sizeof *dI);
+    if (p != NULL)
+        memset(p->dz, 0, np * s->nsl * sizeof *p->dz);
     memset(s->ur, 0, s->m * sizeof *s->ur);
     memset(s->vr, 0, s->m * sizeof *s->vr);
-    s->restuck = 0;
     slip_at_event(s); /* at rest: every slider stuck, the rows' stiffnesses summed */
     if (fr_qsma_tangent(s, hb->J) != FRICREG_OK)
         return fr_fail(hb, FRICREG_ESINGULAR, "%s: the stuck structure's K_0 is singular", fn);
     for (;;) {
         rows_of(hb, s->v, s->vr);
         rows_of(hb, s->x, s->ur);
-        double bv = dot(s->b, s->v, n), step = next_event(s);
+        double bv = dot(s->b, s->v, n), step = next_event(s, &t);
         if (!(bv > 0.0) || !isfinite(bv))
             return fr_fail(hb, FRICREG_ENONFINITE, "%s: dq/dlambda = %g at q = %g", fn, bv, q);
-        if (p != NULL && s->restuck)
-            return fr_fail(hb, FRICREG_EINVAL,
-                           "%s: a slider sticks again at the modal amplitude %g, below "
-                           "amplitude %g: the sensitivities through it are not implemented",
-                           fn, q, amp[i]);
         if (p != NULL)
             fr_qsma_dlambda(s, p, s->x, s->ur, lambda, dl0);
         i = targets(s, p, i, na, amp, q, lambda, I, step, dl0, dI, dl1 + 2 * np, out);
@@ -183,8 +191,10 @@ int fr_qsma_path(fricreg_hb *hb, const char *fn, struct fr_qsma *s, size_t na, c
         }
         q = qn;
         lambda = ln;
+        if (p != NULL) /* on this piece's factor, before the pattern changes */
+            fr_qsma_devent(s, p, hb->J, t, lambda);
         slip_at_event(s);
-        int status = settle(hb, s);
+        int status = settle(hb, s, p);
         if (status == FRICREG_ESINGULAR)
             return fr_fail(hb, FRICREG_ESINGULAR,
                            "%s: macroslip at the modal amplitude %g (lambda = %g): the sliders "

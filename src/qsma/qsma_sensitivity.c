@@ -121,7 +121,8 @@ static int run(fricreg_hb *hb, const char *fn, struct fr_qsma *s, size_t na, con
                const struct params *P, double *domega, double *dzeta)
 {
     size_t np = P->np, n = s->n, m = s->m, nsl = s->nsl;
-    size_t nbuf = np * (n + m + 2) + 4 * np + n + m + 3 * na + 2 * na * np + 1;
+    size_t nbuf = np * (n + m + 2) + 4 * np + n + m + 3 * na + 2 * na * np + 1 +
+                  np * (nsl + m + n); /* the path's dz, dur, dx */
     double *buf = calloc(nbuf, sizeof *buf);
     signed char *role = calloc(np * nsl + 1, sizeof *role);
     if (buf == NULL || role == NULL) {
@@ -140,7 +141,9 @@ static int run(fricreg_hb *hb, const char *fn, struct fr_qsma *s, size_t na, con
     roles(hb, s, P, role, dk, &shape);
     if (shape)
         status = fr_qsma_shape(hb, fn, s, np, dk, w, domk, dzk);
-    struct fr_qsma_sens sens = {.np = np, .role = role, .w = w};
+    double *dz = o + 3 * na + 2 * na * np;
+    struct fr_qsma_sens sens = {
+        .np = np, .role = role, .w = w, .dz = dz, .dur = dz + np * nsl, .dx = dz + np * (nsl + m)};
     if (status == FRICREG_OK)
         status = fr_qsma_path(hb, fn, s, na, amp, &sens, work, &out);
     for (size_t i = 0; i < na && status == FRICREG_OK; i++)
