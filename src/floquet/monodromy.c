@@ -61,7 +61,7 @@ struct fr_hb_mono {
     double sigma; /* the pieces' velocities in units of σ (piece_matrix) */
     struct fr_hb_schedule sc;
     struct fr_hb_pieces pieces; /* the pieces' matrices met before, with their powers */
-    double *orbit_work;         /* orbit.h's workspace, made at its first use, then M^-1 p [2n] */
+    double *orbit_work;         /* orbit.h's workspace, then M^-1 p [2n]; NULL where none applies */
     int *orbit_piv;
 };
 
@@ -82,7 +82,9 @@ static int reserve_order(fricreg_hb *hb, const char *fn, size_t n)
 {
     size_t m = hb->m, S = hb->nsl, P = 2 * n + S;
     struct fr_hb_mono *w = hb->mono;
-    if (w != NULL && w->n == n && w->m == m && w->S == S && w->H == hb->H)
+    int orbit = hb->rpe == 2 && n <= FR_HB_ORBIT_MAX_N; /* contacts' instants may be refined */
+    if (w != NULL && w->n == n && w->m == m && w->S == S && w->H == hb->H &&
+        (w->orbit_work != NULL) == orbit)
         return FRICREG_OK;
     fr_hb_monodromy_free(hb);
     w = calloc(1, sizeof *w);
@@ -93,7 +95,13 @@ static int reserve_order(fricreg_hb *hb, const char *fn, size_t n)
         w->Mlu = malloc(mats * sizeof(double));
         w->eig_work = malloc((lwork + 2 * P) * sizeof(double));
         w->piv = malloc(P * sizeof *w->piv);
-        ok = w->Mlu && w->eig_work && w->piv && fr_hb_schedule_alloc(hb, &w->sc) == FRICREG_OK &&
+        if (orbit) {
+            w->orbit_work = malloc((fr_hb_orbit_work(n) + 2 * n) * sizeof(double));
+            w->orbit_piv = malloc((2 * n + 3 + FR_HB_ORBIT_MAX_SWITCHES) * sizeof(int));
+            ok = w->orbit_work && w->orbit_piv;
+        }
+        ok = ok && w->Mlu && w->eig_work && w->piv &&
+             fr_hb_schedule_alloc(hb, &w->sc) == FRICREG_OK &&
              fr_hb_pieces_init(&w->pieces, P) == 0;
     }
     hb->mono = w;
@@ -440,21 +448,12 @@ static int contacts_only(const fricreg_hb *hb, const struct fr_hb_mono *w)
 
 /* The contact switches moved onto the exact orbit nearest the HB's (orbit.h), where only
  * contacts act on the whole model: M^-1 p from M's LU (mass_solves' pivots, before the
- * exponentials reuse them), the workspace made at the first such orbit. */
-static int exact_switches(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w, double omega)
+ * exponentials reuse them). 1 where the instants were moved, else 0 (the HB's kept). */
+static int exact_switches(fricreg_hb *hb, struct fr_hb_mono *w, double omega)
 {
-    size_t n = w->n, me = hb->me, R = 2 * n + 3;
-    if (n > FR_HB_ORBIT_MAX_N || w->sc.count > FR_HB_ORBIT_MAX_SWITCHES)
-        return FRICREG_OK;
-    if (w->orbit_work == NULL) {
-        w->orbit_work = malloc((fr_hb_orbit_work(n) + 2 * n) * sizeof(double));
-        w->orbit_piv = malloc((R + FR_HB_ORBIT_MAX_SWITCHES) * sizeof(int));
-        if (w->orbit_work == NULL || w->orbit_piv == NULL) {
-            FR_FREE_ALL(w->orbit_work, w->orbit_piv);
-            return fr_fail(hb, FRICREG_ENOMEM,
-                           "%s: stability: no memory for the orbit's switches (order %zu)", fn, R);
-        }
-    }
+    size_t n = w->n, me = hb->me;
+    if (w->orbit_work == NULL || w->sc.count > FR_HB_ORBIT_MAX_SWITCHES)
+        return 0;
     double *Mip = w->orbit_work + fr_hb_orbit_work(n), level = fr_hb_load(hb);
     for (size_t i = 0; i < n; i++)
         Mip[i] = level * hb->pc[i], Mip[n + i] = level * hb->ps[i];
@@ -470,8 +469,7 @@ static int exact_switches(fricreg_hb *hb, const char *fn, struct fr_hb_mono *w, 
                                    .kn = hb->nl + 3 * me,
                                    .Mip = Mip,
                                    .omega = omega};
-    fr_hb_orbit_refine(&om, &w->sc, w->orbit_work, w->orbit_piv);
-    return FRICREG_OK;
+    return fr_hb_orbit_refine(&om, &w->sc, w->orbit_work, w->orbit_piv);
 }
 
 int fr_hb_monodromy(fricreg_hb *hb, const char *fn, double omega, int condensed, double *out)
@@ -489,9 +487,8 @@ int fr_hb_monodromy(fricreg_hb *hb, const char *fn, double omega, int condensed,
         return status;
     /* the HB orbit's instants err by its truncation over the velocity at the surface: taken
      * from the exact orbit where only contacts act (orbit.c says why) */
-    if (!condensed && contacts_only(hb, w) &&
-        (status = exact_switches(hb, fn, w, omega)) != FRICREG_OK)
-        return status;
+    if (!condensed && contacts_only(hb, w))
+        exact_switches(hb, w, omega);
     for (size_t i = 0; i < w->sc.nstuck; i++) { /* the sliders stuck throughout: springs */
         size_t t = hb->rpe * w->sc.stuck_element[i];
         sub_rank_one(w, t, t, -w->sc.stuck_k[i], w->MiK, w->n);

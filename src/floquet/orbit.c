@@ -15,7 +15,8 @@
  * Y = (x, v, 1, cos θ, sin θ) each piece is exactly Y ← e^{Â Δt} Y (expm.c). For given angles
  * the periodic orbit's start solves (I − Φ) z0 = β, Φ and β the period's product's blocks, and
  * Newton moves the angles until each contact's g meets its surface there (its Jacobian by
- * differences: a few switches per period). Where only contacts switch, this orbit is the one
+ * differences, afresh at each step: a chord method with the HB angles' Jacobian stalls, the
+ * product being far from linear in the contact's duration; 3 to 5 steps of count + 1 products). Where only contacts switch, this orbit is the one
  * an event-driven shooting finds, and its multipliers are the shooting's. */
 #include <math.h>
 #include <string.h>
@@ -40,7 +41,7 @@ size_t fr_hb_orbit_work(size_t n)
 struct orbit_ws {
     size_t R, K;
     double *A, *E, *Pi, *T, *expm, *rho, *Mz, *z, *Y, *jac, *r, *rp, *theta, *theta0, *step;
-    int *piv;
+    int *piv, *jpiv; /* [R]: the exponentials' and the period's solve; [K]: the Jacobian's */
 };
 
 /* Â·dt of the piece with contacts closed[] (column-major [R R]). */
@@ -165,7 +166,7 @@ int fr_hb_orbit_refine(const struct fr_hb_orbit_model *om, struct fr_hb_schedule
     for (size_t i = 0; i < K; i++)
         if (!sc->sw[i].contact || !(om->kn[sc->sw[i].index] > 0.0))
             return 0;
-    struct orbit_ws ws = {.R = R, .K = K, .piv = piv};
+    struct orbit_ws ws = {.R = R, .K = K, .piv = piv, .jpiv = piv + R};
     double *p = work;
     double **carve[] = {&ws.A, &ws.E, &ws.Pi, &ws.T};
     for (size_t i = 0; i < 4; i++)
@@ -197,10 +198,11 @@ int fr_hb_orbit_refine(const struct fr_hb_orbit_model *om, struct fr_hb_schedule
                 ws.jac[j * K + i] = (ws.rp[i] - ws.r[i]) / ANGLE_DIFF;
         }
         int Ki = (int)K, one = 1, info = 0;
-        memcpy(ws.step, ws.r, K * sizeof(double));
-        dgesv_(&Ki, &one, ws.jac, &Ki, ws.piv, ws.step, &Ki, &info);
+        dgetrf_(&Ki, &Ki, ws.jac, &Ki, ws.jpiv, &info);
         if (info != 0)
             return 0;
+        memcpy(ws.step, ws.r, K * sizeof(double));
+        dgetrs_("N", &Ki, &one, ws.jac, &Ki, ws.jpiv, ws.step, &Ki, &info, 1);
         double largest = 0.0;
         for (size_t i = 0; i < K; i++) {
             ws.theta[i] -= ws.step[i];

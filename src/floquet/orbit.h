@@ -19,9 +19,10 @@ struct fr_hb_orbit_model {
     double omega;
 };
 
-/* The sizes it refines: larger models and schedules keep the HB's instants (its cost grows as
- * count² (2n + 3)³ a Newton step). */
-#define FR_HB_ORBIT_MAX_N 64
+/* The sizes it refines: larger models and schedules keep the HB's instants (a Newton step
+ * costs count + 1 products of count exponentials of order 2n + 3, and a solution 3 to 5 steps:
+ * about 10 to 20 times the monodromy's own product). */
+#define FR_HB_ORBIT_MAX_N 32
 #define FR_HB_ORBIT_MAX_SWITCHES 16
 
 /* Doubles of fr_hb_orbit_refine's workspace for n dofs. */
@@ -30,11 +31,11 @@ size_t fr_hb_orbit_work(size_t n);
 /* Newton on the angles of sc's contact switches (sc->S = 0: no slider in the state), from the
  * HB's, so that the piecewise-affine model's periodic orbit through them (its start solved
  * from the period's affine map) meets each contact's surface n0 + kn J_n x = 0 at its switch.
- * Converged (to 1e-13 rad), the angles replace sc's, wrapped into [0, 2π) and sorted, and the
+ * Converged (a step below 1e-12 rad), the angles replace sc's, wrapped into [0, 2π) and sorted, and the
  * state at θ = 0 (sc->closed) follows them: returns 1. Else (sizes past the bounds above, a
  * singular step, no convergence in 8 steps, a switch moving past its neighbour or by more than
- * 0.2 rad) sc is left as it was: returns 0. work[fr_hb_orbit_work(n)], piv[2n + 3]; no
- * allocation. */
+ * 0.2 rad) sc is left as it was: returns 0. work[fr_hb_orbit_work(n)],
+ * piv[2n + 3 + FR_HB_ORBIT_MAX_SWITCHES]; no allocation. */
 int fr_hb_orbit_refine(const struct fr_hb_orbit_model *om, struct fr_hb_schedule *sc, double *work,
                        int *piv);
 
