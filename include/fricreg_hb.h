@@ -82,8 +82,8 @@
  * This header declares the driver, its model, elements and settings, and the monitor; since 1.9
  * each of the driver's other objects has a header of its own, which this one includes:
  * fricreg_hb_forced.h (the solve, the continuation, its points, peak and bifurcations),
- * fricreg_hb_stability.h (Floquet multipliers and exponents) and fricreg_hb_nma.h (nonlinear
- * modes).
+ * fricreg_hb_stability.h (Floquet multipliers and exponents), fricreg_hb_nma.h (nonlinear
+ * modes) and fricreg_hb_qsma.h (quasi-static modal analysis).
  */
 #ifndef FRICREG_HB_H
 #define FRICREG_HB_H
@@ -715,5 +715,6 @@ FRICREG_API size_t fricreg_hb_errmsg_copy(const fricreg_hb *hb, char *buf, size_
 #include "fricreg_hb_forced.h"
 #include "fricreg_hb_stability.h"
 #include "fricreg_hb_nma.h"
+#include "fricreg_hb_qsma.h"
 
 #endif /* FRICREG_HB_H */

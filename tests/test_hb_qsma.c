@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_hb_qsma.c — Check suite for quasi-static modal analysis (fricreg_hb_qsma_at,
- * fricreg_hb_qsma_sensitivities, fricreg_qsma.h). Where the numbers come from:
+ * fricreg_hb_qsma_sensitivities, fricreg_hb_qsma.h). Where the numbers come from:
  *
  *   - the 1-dof Jenkins oscillator (m = k = 1, kt, mun, C = c M): stuck below a = mun/kt,
  *     ω² = 1 + kt; above, λ(a) = a + mun, ω² = 1 + mun/a, and Masing's loop is the Jenkins
@@ -34,7 +34,7 @@
 #include "fricreg_element.h"
 #include "fricreg_fit.h"
 #include "fricreg_iwan.h"
-#include "fricreg_qsma.h"
+#include "fricreg_hb_qsma.h"
 #include "hb_chain.h"
 
 #define SENTINEL (-777.125)

@@ -51,7 +51,7 @@ while [ -n "$todo" ]; do
         fricreg_exact.h) modules="$modules exact" ;;
         fricreg_hb.h | fricreg_hb_forced.h | fricreg_hb_stability.h | fricreg_hb_nma.h)
             modules="$modules hb" above="floquet nma forced" ;;
-        fricreg_qsma.h) modules="$modules qsma" ;;
+        fricreg_hb_qsma.h) modules="$modules qsma" ;;
         fricreg_sim.h) modules="$modules sim" ;;
         fricreg_structure*.h | fricreg_ctx_step.h) modules="$modules structure" ;;
         fricreg_petsc.h) modules="$modules petsc" ;;

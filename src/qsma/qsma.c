@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* qsma.c — quasi-static modal analysis's backbone (fricreg_hb_qsma_at, fricreg_qsma.h): the
+/* qsma.c — quasi-static modal analysis's backbone (fricreg_hb_qsma_at, fricreg_hb_qsma.h): the
  * arguments' checks, the model and its mode, the loading path through the amplitudes
  * (qsma_path.c), and the secant frequency and Masing's damping from it (Lacayo & Allen, MSSP
  * 118 (2019) 133–157):
@@ -8,7 +8,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "fricreg_qsma.h"
+#include "fricreg_hb_qsma.h"
 #include "base/fr_math.h"
 #include "hb/busy.h"
 #include "qsma_internal.h"

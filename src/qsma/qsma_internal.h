@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* qsma_internal.h — quasi-static modal analysis (fricreg_qsma.h): the model of the driver
+/* qsma_internal.h — quasi-static modal analysis (fricreg_hb_qsma.h): the model of the driver
  * densified with its sliders (qsma_model.c), the stuck mode and its derivative in the
  * stiffnesses (qsma_mode.c), the event-driven loading path (qsma_path.c) and a point's λ
  * differentiated in the parameters (qsma_dlambda.c). Included only inside src/qsma/. */

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* qsma_sensitivity.c — the exact derivatives of quasi-static modal analysis's ω and ζ
- * (fricreg_hb_qsma_sensitivities, fricreg_qsma.h). The parameters are described as
+ * (fricreg_hb_qsma_sensitivities, fricreg_hb_qsma.h). The parameters are described as
  * fricreg_hb_nma_point_sensitivities's; each is what it is to each slider (its stiffness, its
  * slip force, nothing), and a stiffness also moves K_0 and so φ_k, ω_k and ζ_k (qsma_mode.c).
  * The path gives dλ/dp and d∫λ/dp at every amplitude (qsma_path.c, qsma_dlambda.c); here they
@@ -13,7 +13,7 @@
 #include <string.h>
 
 #include "base/fr_math.h"
-#include "fricreg_qsma.h"
+#include "fricreg_hb_qsma.h"
 #include "hb/busy.h"
 #include "qsma_internal.h"
 

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /**
  * \file
- * fricreg_qsma.h — quasi-static modal analysis (QSMA) of a harmonic-balance driver's model: a
+ * fricreg_hb_qsma.h — quasi-static modal analysis (QSMA) of a harmonic-balance driver's model: a
  * mode's amplitude-dependent natural frequency and damping ratio from static solves along the
  * mode's load direction and Masing's rule for the loop, with their exact sensitivities. The
  * cheap route to the backbone where the nonlinear mode (fricreg_hb_nma, EPMC) is the full one.
@@ -9,8 +9,8 @@
  * The model is the driver's (fricreg_hb.h: M, K, C or Rayleigh's, J and the elements); its
  * excitation, Newton settings and results are neither used nor changed. Since 1.9.
  */
-#ifndef FRICREG_QSMA_H
-#define FRICREG_QSMA_H
+#ifndef FRICREG_HB_QSMA_H
+#define FRICREG_HB_QSMA_H
 
 #include <stddef.h>
 
@@ -20,7 +20,7 @@
 extern "C" {
 #endif
 
-/** \defgroup hb_qsma Joints: quasi-static modal analysis (fricreg_qsma.h)
+/** \defgroup hb_qsma Joints: quasi-static modal analysis (fricreg_hb_qsma.h)
  *  \{ */
 
 /** \name Quasi-static modal analysis
