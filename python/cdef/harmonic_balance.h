@@ -84,3 +84,9 @@ const char *fricreg_hb_errmsg(const fricreg_hb *hb);
  * Ctrl-C. */
 extern "Python" int fricreg_py_hb_monitor(void *user, int64_t iterations, double parameter,
                                           double residual);
+int fricreg_hb_qsma_at(fricreg_hb *hb, size_t mode, size_t n, const double amplitude[],
+                       double omega[], double zeta[]);
+int fricreg_hb_qsma_sensitivities(fricreg_hb *hb, size_t mode, size_t n, const double amplitude[],
+                                  size_t np, const int kind[], const size_t first[],
+                                  const size_t count[], const size_t index[], double domega[],
+                                  double dzeta[]);

@@ -723,6 +723,57 @@ class HarmonicBalance:
             self.ndof, pointer(damp) if amplitudes else ffi.NULL), "backbone_sensitivities")
         return (domega, dzeta, damp) if amplitudes else (domega, dzeta)
 
+    def qsma(self, mode, amplitudes, params=None):
+        """A mode's frequency and damping ratio by quasi-static modal analysis
+        (``fricreg_hb_qsma_at``; Lacayo and Allen, MSSP 118 (2019) 133-157): the static
+        loading path along M φ_k with the elements' hysteresis, exact for Jenkins and Iwan
+        elements, and Masing's rule for the loop; the cheap route beside :meth:`backbone`
+        (EPMC) for one mode with Masing behaviour (docs/identification.md, "QSMA").
+
+        Parameters
+        ----------
+        mode : int
+            k, 0 <= k < ndof, as :meth:`backbone`'s.
+        amplitudes : array_like, shape (n,)
+            Modal amplitudes φ_k^T M x, > 0, increasing.
+        params : sequence, optional
+            Also the exact derivatives in these parameters, described as
+            :meth:`backbone_sensitivities` describes them.
+
+        Returns
+        -------
+        omega, zeta : ndarray, shape (n,)
+            ω = sqrt(λ/a) (rad/s) and ζ = ζ_k + D/(2π λ a).
+        domega, dzeta : ndarray, shape (n, np)
+            Only with ``params``: d/dp at each amplitude.
+
+        Raises
+        ------
+        fricreg.InputError
+            Bad amplitudes, a mode out of range, an element type QSMA does not take (lift-off,
+            contact_3d, marched types: the message names it), a parameter it refuses.
+        fricreg.Error
+            ``FRICREG_ESINGULAR``: macroslip below an amplitude (the message gives it), or a
+            repeated stuck mode.
+        """
+        mode = as_integer(mode, "mode")
+        a = as_doubles(amplitudes, "amplitudes", ndim=1)
+        omega, zeta = np.empty_like(a), np.empty_like(a)
+        self._check(lib.fricreg_hb_qsma_at(self._hb, mode, a.size, pointer(a), pointer(omega),
+                                           pointer(zeta)), "qsma")
+        if params is None:
+            return omega, zeta
+        rows = model_params(params, amplitude=True)
+        n = len(rows)
+        kind = ffi.new("int[]", [r[0] for r in rows] or [0])
+        first, count, index = (ffi.new("size_t[]", [r[j] for r in rows] or [0])
+                               for j in (1, 2, 3))
+        domega, dzeta = np.empty((a.size, n)), np.empty((a.size, n))
+        self._check(lib.fricreg_hb_qsma_sensitivities(
+            self._hb, mode, a.size, pointer(a), n, kind, first, count, index, pointer(domega),
+            pointer(dzeta)), "qsma")
+        return omega, zeta, domega, dzeta
+
     def modal_participation(self, point, harmonic):
         """Each stuck linear mode's share in one harmonic of a point of the last backbone
         (``fricreg_hb_nma_modal_participation``): which mode a harmonic excites.

@@ -373,3 +373,19 @@ def test_four_threads_give_the_serial_answers():
         t.join()
     for a, b in zip(serial, results):
         assert a.omega.tobytes() == b.omega.tobytes() and a.rms.tobytes() == b.rms.tobytes()
+
+
+def test_qsma_of_the_jenkins_oscillator_is_its_closed_form():
+    """The Jenkins oscillator's static loading path (m = k = 1, kt = 2, mu N = 3): lambda(a) =
+    a + mun past the slip at a = mun/kt, so omega^2 = 1 + mun/a and zeta = D/(2 pi lambda a),
+    D = 4 mun (a - mun/kt) (the Jenkins loop); d omega/d mun by the formula's own derivative."""
+    hb = fricreg.HarmonicBalance([[1.0]], [[1.0]], elements=[("jenkins", [[1.0]], [[2.0, 3.0]])],
+                                 harmonics=1)
+    a = np.array([2.0, 3.0, 10.0])
+    omega, zeta, dw, dz = hb.qsma(0, a, params=[("element", 0, 1, 1)])
+    np.testing.assert_allclose(omega, np.sqrt(1 + 3.0 / a), rtol=1e-12)
+    np.testing.assert_allclose(zeta, 4 * 3.0 * (a - 1.5) / (2 * np.pi * (a + 3.0) * a), rtol=1e-12)
+    np.testing.assert_allclose(dw[:, 0], 0.5 / np.sqrt(1 + 3.0 / a) / a, rtol=1e-10)
+    assert dz.shape == (3, 1)
+    with pytest.raises(fricreg.InputError, match="amplitude"):
+        hb.qsma(0, [2.0, 1.0])
