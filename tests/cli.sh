@@ -1637,5 +1637,54 @@ expect "levels that do not determine the parameters exit 1 with the reason" \
 expect "--curve writes 100 rows and a header" \
     '"$sim" fit --levels "$d/levels.csv" --sensor 0.37 --curve "$d/curve.csv" >/dev/null 2>"$d/err" && [ "$(head -n 1 "$d/curve.csv")" = "amplitude,freq_hz,zeta,freq_lo,freq_hi,zeta_lo,zeta_hi" ] && [ "$(wc -l <"$d/curve.csv")" -eq 101 ]'
 
+# ---- fit --model hb: a harmonic-balance model's nonlinear mode (fricreg_fit_set_model_hb).
+# One unit mass on a unit spring with a Jenkins element kt = 1.7, mu N = 0.26 at H = 1: the
+# describing function's closed form (as nma's above), delta = mun/kt, cos(beta) = 1 - 2 delta/a,
+# omega^2 = 1 + kt/pi (beta - sin(2 beta)/2), zeta = 4 mun (a - delta)/(2 pi a^2 omega^2), at six
+# modal amplitudes past the slip (delta = 0.153). From the driver's values 2x off (kt 3.4,
+# mu N 0.13), or the caller's --start with the levels at dof 1 (the unit mass's |X_1| = a), the
+# fit recovers both to 1e-6.
+d=$tmp/fithb
+mkdir -p "$d"
+printf '%s\n' "%%MatrixMarket matrix coordinate real symmetric" "1 1 1" "1 1 1" >"$d/M.mtx"
+printf '%s\n' "%%MatrixMarket matrix coordinate real general" "1 1 1" "1 1 1" >"$d/J.mtx"
+echo "3.4 0.13" >"$d/P_off.txt"
+echo "1.7 0.26" >"$d/P.txt"
+awk -v kt=1.7 -v mun=0.26 'BEGIN { pi = atan2(0, -1); d = mun / kt; print "a,freq_hz,zeta"
+    n = split("0.21 0.33 0.52 0.86 1.37 2.2", A, " ")
+    for (i = 1; i <= n; i++) { a = A[i]; c = 1 - 2 * d / a; b = atan2(sqrt(1 - c * c), c)
+        w2 = 1 + kt / pi * (b - sin(2 * b) / 2); z = 4 * mun * (a - d) / (2 * pi * a * a * w2)
+        printf "%s,%.15g,%.15g\n", a, sqrt(w2) / (2 * pi), z } }' >"$d/levels.csv"
+fithb="fit --model hb --levels $d/levels.csv --kind displacement --mass $d/M.mtx --stiffness $d/M.mtx --jenkins $d/J.mtx --harmonics 1 --param element:1:1:1 --param element:1:1:2"
+# recovered FILE: the summary's kt and mu N within 1e-6 of 1.7 and 0.26, both free.
+recovered() {
+    sed -n 's/.*"element:1:1:1": {"value": \([^,]*\),.*"free": true}, "element:1:1:2": {"value": \([^,]*\),.*"free": true}.*/\1 \2/p' "$1" |
+        awk '{ e1 = $1 / 1.7 - 1; e2 = $2 / 0.26 - 1; if (e1 < 0) e1 = -e1; if (e2 < 0) e2 = -e2
+               ok = NF == 2 && e1 < 1e-6 && e2 < 1e-6 } END { exit !ok }'
+}
+expect "fit --model hb recovers the Jenkins oscillator's kt and mu N from the driver's values 2x off" \
+    '"$sim" $fithb --jenkins-params "$d/P_off.txt" >"$d/off.json" 2>"$tmp/err" && recovered "$d/off.json" && grep -q "\"model\": \"hb\", \"ndof\": 1, \"elements\": 1, \"element_kind\": \"jenkins\", \"mode\": 1, \"harmonics\": 1, .*\"nmodel\": [1-9]" "$d/off.json"'
+expect "fit --model hb --dof 1 --start recovers them from the caller's starts 2x off" \
+    '"$sim" $fithb --jenkins-params "$d/P.txt" --dof 1 --start 1=3.4 --start 2=0.13 --curve "$d/curve.csv" >"$d/dof.json" 2>"$tmp/err" && recovered "$d/dof.json" && grep -q "\"dof\": 1, " "$d/dof.json" && [ "$(wc -l <"$d/curve.csv")" -eq 101 ]'
+expect_output '"element:1:1:1": \{"value": 1\.7, "lower": 1\.7, "upper": 1\.7, "free": false\}, "element:1:1:2": \{"value": 0\.2(5999999|6000000)' \
+    $fithb --jenkins-params "$d/P_off.txt" --fix 1=1.7
+# The levels hold no viscous damping: a0 runs to its bound 0, exit 1 with the library's reason.
+expect "fit --model hb that ends at a bound exits 1 with the reason" \
+    '"$sim" $fithb --jenkins-params "$d/P.txt" --param damping:1 >"$d/out" 2>"$tmp/err"; [ $? -eq 1 ] && [ ! -s "$d/out" ] && grep -q "^fricreg-sim: fit: run: Rayleigh a0 ended at its lower bound 0" "$tmp/err"'
+expect_output '^usage: fricreg-sim fit --levels LEVELS\.csv \[OPTION\]\.\.\. \| --model hb' fit --help
+expect_usage_error "^fricreg-sim: --fix: --model hb takes its parameters by position" $fithb --jenkins-params "$d/P.txt" --fix kt=1
+expect_usage_error "^fricreg-sim: --start: POSITION=VALUE only with --model hb" fit --levels "$d/levels.csv" --start 1=3
+expect_usage_error "^fricreg-sim: --mass: only with --model hb$" fit --levels "$d/levels.csv" --mass "$d/M.mtx"
+expect_usage_error "^fricreg-sim: --param: missing" fit --model hb --levels "$d/levels.csv" --mass "$d/M.mtx" --stiffness "$d/M.mtx" --jenkins "$d/J.mtx" --jenkins-params "$d/P.txt"
+expect_usage_error "^fricreg-sim: --param: expected element:FIRST:COUNT:INDEX" $fithb --jenkins-params "$d/P.txt" --param element:0:1:1
+expect_usage_error "^fricreg-sim: --param: expected element:FIRST:COUNT:INDEX" $fithb --jenkins-params "$d/P.txt" --param damping:0
+expect_usage_error "^fricreg-sim: --param: element:2:1:1: elements 2 to 2, but the model has 1$" $fithb --jenkins-params "$d/P.txt" --param element:2:1:1
+expect_usage_error "^fricreg-sim: --param: element:1:1:3: element 1 has no parameter 3$" $fithb --jenkins-params "$d/P.txt" --param element:1:1:3
+expect_usage_error "^fricreg-sim: --param: element:1:1:2 moves the value of parameter 2 (element:1:1:2) again" $fithb --jenkins-params "$d/P.txt" --param element:1:1:2
+expect_usage_error "^fricreg-sim: --fix: position 3 beyond the 2 --param given$" $fithb --jenkins-params "$d/P.txt" --fix 3=1
+expect_usage_error "^fricreg-sim: --dof: dof 2 beyond the structure's 1$" $fithb --jenkins-params "$d/P.txt" --dof 2
+expect_usage_error "^fricreg-sim: --dof: give --sensor" $fithb --jenkins-params "$d/P.txt" --dof 1 --sensor 2
+expect_usage_error "^fricreg-sim: --mode: beyond" $fithb --jenkins-params "$d/P.txt" --mode 2
+
 echo "$((total - fails)) passed, $fails failed"
 [ $fails -eq 0 ]

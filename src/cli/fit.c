@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* fit.c — `fricreg-sim fit`: a joint's parameters from a test's measured levels (the modal
- * Iwan model, fricreg_fit.h; docs/identification.md): a JSON summary on stdout (each parameter
+ * Iwan model, or with --model hb a harmonic-balance model's nonlinear mode, fit_hb.c;
+ * fricreg_fit.h; docs/identification.md): a JSON summary on stdout (each parameter
  * with its 95 % interval, the identifiability, the residuals), the fitted backbone with its
  * band as a CSV (--curve) and a PNG of measured against fitted (--plot, through gnuplot).
  * Every bad option or file is one line on stderr naming it, exit 2, nothing on stdout; a fit
@@ -14,21 +15,33 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "fit_hb.h"
 #include "fit_levels.h"
 #include "fricreg_fit.h"
 #include "out_file.h"
 
 #define NP FRICREG_FIT_NPARAMS
+#define MAXP CLI_FIT_MAX_PARAMS
 #define CURVE_POINTS 100
 
 static const char *const param_names[NP] = {"fs", "kt", "chi", "beta", "zeta0", "k0"};
 
+enum { MODEL_MODAL_IWAN = 0, MODEL_HB = 1 };
+static const struct cli_word models[] = {{"modal-iwan", MODEL_MODAL_IWAN},
+                                         {"hb", MODEL_HB},
+                                         {NULL, 0}};
+
+/* --fix and --start by index: the modal Iwan model's by name, an HB model's by position (from
+ * 1 on the command line); by_name and by_position say which the user wrote (an option's name,
+ * or NULL), checked against --model once every option is read. */
 struct fit_options {
     const char *levels, *curve, *plot;
-    int kind, starts;
+    int kind, starts, starts_given, sensor_given, model;
     double sensor;
-    double fixed[NP], start[NP];
-    int is_fixed[NP], has_start[NP];
+    double fixed[MAXP], start[MAXP];
+    int is_fixed[MAXP], has_start[MAXP];
+    const char *by_name, *by_position;
+    struct cli_fit_hb_options hb;
 };
 
 static const struct cli_word kinds[] = {{"acceleration", FRICREG_FIT_ACCELERATION},
@@ -36,29 +49,46 @@ static const struct cli_word kinds[] = {{"acceleration", FRICREG_FIT_ACCELERATIO
                                         {"displacement", FRICREG_FIT_DISPLACEMENT},
                                         {NULL, 0}};
 
-/* NAME=VALUE, NAME one of param_names: the index and the value, or CLI_EXIT_USAGE. */
-static int name_value(const char *option, const char *text, int *which, double *value)
+/* NAME=VALUE, NAME one of param_names, or POSITION=VALUE, POSITION from 1 to MAXP (an HB
+ * model's parameter by its --param's place): the index from 0, whether by name, and the value;
+ * or CLI_EXIT_USAGE. */
+static int name_value(const char *option, const char *text, int *which, int *named, double *value)
 {
     const char *eq = strchr(text, '=');
     for (int j = 0; eq != NULL && j < NP; j++)
         if ((size_t)(eq - text) == strlen(param_names[j]) &&
             strncmp(text, param_names[j], strlen(param_names[j])) == 0) {
             *which = j;
+            *named = 1;
             return cli_parse_number(option, eq + 1, value);
         }
+    char *end = NULL;
+    long pos = eq != NULL && eq > text && strspn(text, "0123456789") == (size_t)(eq - text)
+                   ? strtol(text, &end, 10)
+                   : 0;
+    if (pos >= 1 && pos <= MAXP) {
+        *which = (int)pos - 1;
+        *named = 0;
+        return cli_parse_number(option, eq + 1, value);
+    }
     return cli_usage_error(option, "expected NAME=VALUE, NAME one of fs, kt, chi, beta, zeta0, "
-                                   "k0");
+                                   "k0, or with --model hb POSITION=VALUE, POSITION a --param's "
+                                   "place from 1");
 }
 
 /* --fix NAME=VALUE and --start NAME=VALUE (row->arg 1 and 0), repeatable. */
 static int parse_param(const struct cli_option *row, const char *text)
 {
     struct fit_options *o = row->slot;
-    int j = 0;
+    int j = 0, named = 0;
     double v;
-    int status = name_value(row->name, text, &j, &v);
+    int status = name_value(row->name, text, &j, &named, &v);
     if (status != 0)
         return status;
+    if (named)
+        o->by_name = row->name;
+    else
+        o->by_position = row->name;
     if (row->arg) {
         o->fixed[j] = v;
         o->is_fixed[j] = 1;
@@ -72,7 +102,12 @@ static int parse_param(const struct cli_option *row, const char *text)
 static size_t fit_table(struct fit_options *o, struct cli_option table[])
 {
     *o = (struct fit_options){.kind = FRICREG_FIT_ACCELERATION, .starts = 32, .sensor = 1.0};
+    cli_fit_hb_defaults(&o->hb);
     const struct cli_option opts[] = {
+        {"--model", CLI_CHOICE, .slot = &o->model, .words = models,
+         .help = "the model fitted: the modal Iwan model's closed forms, or a nonlinear mode of a "
+                 "harmonic-balance model (EPMC) of the files and options of fricreg-sim nma, "
+                 "its parameters by --param"},
         {"--levels", CLI_FILE, .slot = &o->levels, .meta = "LEVELS.csv",
          .help = "the measured levels, a line each: amplitude, freq_hz, zeta, and optionally "
                  "sd_freq_hz, sd_zeta (standard deviations: without them the residuals are "
@@ -81,16 +116,22 @@ static size_t fit_table(struct fit_options *o, struct cli_option table[])
          .dflt = ""},
         {"--kind", CLI_CHOICE, .slot = &o->kind, .words = kinds,
          .help = "what the amplitudes are, at the sensor"},
-        {"--sensor", CLI_NUMBER, .slot = &o->sensor, .meta = "S",
+        {"--sensor", CLI_NUMBER, .slot = &o->sensor, .given = &o->sensor_given, .meta = "S",
          .help = "the mass-normalized mode shape's value at the sensor (1: modal amplitudes)"},
         {"--fix", CLI_CUSTOM, .slot = o, .parse = parse_param, .arg = 1, .repeatable = 1,
          .meta = "NAME=VALUE",
-         .help = "a parameter fixed: fs, kt, chi, beta, zeta0 or k0 (beta=0: no delta)",
+         .help = "a parameter fixed: fs, kt, chi, beta, zeta0 or k0 (beta=0: no delta); with "
+                 "--model hb POSITION=VALUE, the --param at that place from 1 (2=0.01)",
          .dflt = "all free"},
         {"--start", CLI_CUSTOM, .slot = o, .parse = parse_param, .arg = 0, .repeatable = 1,
-         .meta = "NAME=VALUE", .help = "a free parameter's first start", .dflt = "from the levels"},
-        {"--starts", CLI_WHOLE, .slot = &o->starts, .lo = 1, .hi = 1000, .meta = "N",
-         .help = "starts of the least squares, 1 to 1000"},
+         .meta = "NAME=VALUE",
+         .help = "a free parameter's first start (--model hb: POSITION=VALUE as --fix)",
+         .dflt = "from the levels; --model hb: the model's values, Rayleigh's from the levels"},
+        {"--starts", CLI_WHOLE, .slot = &o->starts, .given = &o->starts_given, .lo = 1, .hi = 1000,
+         .meta = "N",
+         .help = "starts of the least squares, 1 to 1000 (--model hb: each a backbone march or "
+                 "more an iteration)",
+         .dflt = "32; 1 with --model hb"},
         {"--curve", CLI_FILE, .slot = &o->curve, .meta = "CURVE.csv",
          .help = "write the fitted backbone at 100 amplitudes from half the smallest level to "
                  "twice the largest: amplitude,freq_hz,zeta and their 95 % bands",
@@ -98,7 +139,8 @@ static size_t fit_table(struct fit_options *o, struct cli_option table[])
         {"--plot", CLI_FILE, .slot = &o->plot, .meta = "PLOT.png",
          .help = "draw measured against fitted frequency and damping with the 95 % band "
                  "(needs gnuplot)",
-         .dflt = "none"}};
+         .dflt = "none"},
+        CLI_FIT_HB_OPTIONS(&o->hb)};
     return cli_copy_rows(table, opts, sizeof opts / sizeof opts[0]);
 }
 
@@ -109,8 +151,11 @@ static size_t fit_help_table(struct cli_option table[])
 }
 
 const struct cli_command cli_fit_command = {
-    "fit", "--levels LEVELS.csv [OPTION]...",
-    "a joint's parameters from a test's measured levels (modal Iwan)",
+    "fit",
+    "--levels LEVELS.csv [OPTION]... | --model hb --levels LEVELS.csv --mass M.mtx --stiffness "
+    "K.mtx {--jenkins J.mtx ELEMENTS | --elements TYPE:J.mtx:P.txt...} --param PARAM... "
+    "[OPTION]...",
+    "a joint's parameters from measured levels (modal Iwan, HB model)",
     "The parameters of the modal Iwan model (Segalman's four-parameter joint F_S, K_T, chi, "
     "beta beside a linear modal stiffness K0 and damping ratio zeta0; fricreg_fit.h, "
     "docs/identification.md) that make its backbone match a mode's measured natural "
@@ -119,10 +164,24 @@ const struct cli_command cli_fit_command = {
     "with its 95 % interval, the singular values of the Jacobian in the log-scaled parameters "
     "(small ones: combinations the levels hardly determine), the levels' residuals and the "
     "cost.\n\n"
+    "--model hb fits a nonlinear mode's backbone instead (fricreg_fit_set_model_hb: EPMC, "
+    "its exact sensitivities): the structure and its elements as fricreg-sim nma reads them, "
+    "the mode --mode at --harmonics, and the parameters --param names, each a value shared by "
+    "a range of elements (element:FIRST:COUNT:INDEX) or Rayleigh's a0 or a1 (damping:1, "
+    "damping:2), every one free on (0, inf) from the model's value; --fix and --start take "
+    "them by their place among the --param, from 1 (--fix 2=0.01). The levels' amplitudes are "
+    "modal (times --sensor) or the first harmonic's at dof --dof. The summary keys the "
+    "parameters by their --param.\n\n"
     "A fit that cannot be made (a parameter at its bound, levels that do not determine the "
-    "parameters, no start converged) exits 1 with the library's reason: fix a parameter "
-    "(--fix beta=0) or add levels.",
+    "parameters, no start converged, a level beyond the backbone's reach) exits 1 with the "
+    "library's reason: fix a parameter (--fix beta=0) or add levels.",
     fit_help_table};
+
+/* The model's parameter count: six, or the --param given. */
+static size_t param_count(const struct fit_options *o)
+{
+    return o->model == MODEL_HB ? o->hb.np : NP;
+}
 
 static int check_options(const struct fit_options *o)
 {
@@ -130,7 +189,25 @@ static int check_options(const struct fit_options *o)
         return cli_usage_error("--levels", "missing");
     if (o->sensor == 0.0)
         return cli_usage_error("--sensor", "must not be 0");
-    for (int j = 0; j < NP; j++)
+    int status = cli_fit_hb_check(&o->hb, o->model == MODEL_HB);
+    if (status != 0)
+        return status;
+    if (o->model == MODEL_HB && o->by_name != NULL)
+        return cli_usage_error(o->by_name, "--model hb takes its parameters by position "
+                                           "(POSITION=VALUE, the --param's place from 1)");
+    if (o->model != MODEL_HB && o->by_position != NULL)
+        return cli_usage_error(o->by_position, "POSITION=VALUE only with --model hb (the modal "
+                                               "Iwan model's parameters by name)");
+    if (o->hb.dof_given && o->sensor_given)
+        return cli_usage_error("--dof", "give --sensor (modal amplitudes) or --dof, not both");
+    for (size_t j = param_count(o); j < MAXP; j++)
+        if (o->is_fixed[j] || o->has_start[j]) {
+            char what[96];
+            snprintf(what, sizeof what, "position %zu beyond the %zu --param given", j + 1,
+                     o->hb.np);
+            return cli_usage_error(o->is_fixed[j] ? "--fix" : "--start", what);
+        }
+    for (int j = 0; j < MAXP; j++)
         if (o->is_fixed[j] && o->has_start[j])
             return cli_usage_error("--start", "a parameter also fixed with --fix");
     if (o->plot != NULL && (strchr(o->plot, '\'') != NULL || strchr(o->plot, '"') != NULL))
@@ -144,31 +221,40 @@ static int refused(fricreg_fit *fit, const char *option)
     return cli_usage_error(option, fricreg_fit_errmsg(fit));
 }
 
-/* The fit set up from o and the levels (rows of cols). 0 or CLI_EXIT_USAGE. */
+/* The fit set up from o and the levels (rows of cols), an HB model's driver into h. 0 or
+ * CLI_EXIT_USAGE. */
 static int set_up(fricreg_fit *fit, const struct fit_options *o, size_t n, size_t cols,
-                  const double rows[])
+                  const double rows[], struct cli_fit_hb *h)
 {
+    /* the sensor before --dof, which it would undo */
+    int status = fricreg_fit_set_sensor(fit, o->sensor) == FRICREG_OK ? 0
+                                                                      : refused(fit, "--sensor");
+    if (status == 0 && o->model == MODEL_HB)
+        status = cli_fit_hb_set_up(fit, &o->hb, h);
+    if (status != 0)
+        return status;
     double *col = malloc(5 * n * sizeof *col);
     if (col == NULL)
         return cli_usage_error("--levels", "out of memory");
     for (size_t i = 0; i < n; i++)
         for (size_t c = 0; c < cols; c++)
             col[c * n + i] = rows[i * cols + c];
-    int status = 0;
-    if (fricreg_fit_set_sensor(fit, o->sensor) != FRICREG_OK)
-        status = refused(fit, "--sensor");
-    else if (fricreg_fit_set_levels(fit, n, o->kind, col, col + n, col + 2 * n) != FRICREG_OK ||
-             (cols == 5 && fricreg_fit_set_deviations(fit, n, col + 3 * n, col + 4 * n)))
+    if (fricreg_fit_set_levels(fit, n, o->kind, col, col + n, col + 2 * n) != FRICREG_OK ||
+        (cols == 5 && fricreg_fit_set_deviations(fit, n, col + 3 * n, col + 4 * n)))
         status = refused(fit, "--levels");
     free(col);
-    for (int j = 0; status == 0 && j < NP; j++) {
+    /* chi's own bound is -1; every other parameter's (an HB model's all) 0 */
+    for (int j = 0; status == 0 && j < (int)param_count(o); j++) {
+        double lower = o->model != MODEL_HB && j == FRICREG_FIT_CHI ? -1.0 : 0.0;
         int st = o->is_fixed[j] ? fricreg_fit_set_fixed(fit, j, o->fixed[j])
                                 : fricreg_fit_set_free(fit, j, o->has_start[j] ? o->start[j] : NAN,
-                                                       j == FRICREG_FIT_CHI ? -1.0 : 0.0, INFINITY);
+                                                       lower, INFINITY);
         if (st != FRICREG_OK)
             status = refused(fit, o->is_fixed[j] ? "--fix" : "--start");
     }
-    if (status == 0 && fricreg_fit_set_starts(fit, (size_t)o->starts) != FRICREG_OK)
+    /* an HB model keeps the library's one start unless told: each start costs marches */
+    if (status == 0 && (o->model != MODEL_HB || o->starts_given) &&
+        fricreg_fit_set_starts(fit, (size_t)o->starts) != FRICREG_OK)
         status = refused(fit, "--starts");
     return status;
 }
@@ -181,20 +267,36 @@ static const char *kind_word(int kind)
     return "?";
 }
 
-static void write_summary(FILE *out, fricreg_fit *fit, const struct fit_options *o, size_t n,
-                          double cpu)
+/* An HB model's fields: its size, mode, harmonics, damping and sensor dof (from 1). */
+static void write_hb_model(FILE *out, const struct fit_options *o, const struct cli_fit_hb *h)
 {
-    double p[NP], lo[NP], hi[NP], sv[NP], v;
+    fprintf(out, ", \"ndof\": %zu, \"elements\": %zu", h->md.n, h->md.m);
+    cli_hb_json_elements(out, &h->md);
+    fprintf(out, ", \"mode\": %d, \"harmonics\": %d, \"linear_damping\": \"%s\"", o->hb.mode,
+            o->hb.harmonics,
+            o->hb.linear_damping == FRICREG_HB_NMA_DAMPING_MODAL ? "modal" : "matrix");
+    if (o->hb.dof_given)
+        fprintf(out, ", \"dof\": %d", o->hb.dof);
+}
+
+static void write_summary(FILE *out, fricreg_fit *fit, const struct fit_options *o,
+                          const struct cli_fit_hb *h, size_t n, double cpu)
+{
+    size_t np = param_count(o);
+    double p[MAXP], lo[MAXP], hi[MAXP], sv[MAXP], v;
     double *r = malloc(2 * n * sizeof *r);
-    fricreg_fit_get_params(fit, NP, p);
-    fricreg_fit_get_covariance(fit, NP, NULL, lo, hi);
-    fricreg_fit_get_identifiability(fit, NP, sv, NULL);
-    fprintf(out,
-            "{\"command\": \"fit\", \"model\": \"modal_iwan\", \"levels\": %zu, \"kind\": ", n);
+    fricreg_fit_get_params(fit, np, p);
+    fricreg_fit_get_covariance(fit, np, NULL, lo, hi);
+    fricreg_fit_get_identifiability(fit, np, sv, NULL);
+    int hb = o->model == MODEL_HB;
+    fprintf(out, "{\"command\": \"fit\", \"model\": \"%s\"", hb ? "hb" : "modal_iwan");
+    if (hb)
+        write_hb_model(out, o, h);
+    fprintf(out, ", \"levels\": %zu, \"kind\": ", n);
     cli_json_string(out, kind_word(o->kind));
     fputs(", \"parameters\": {", out);
-    for (int j = 0; j < NP; j++) {
-        fprintf(out, "%s\"%s\": {\"value\": ", j ? ", " : "", param_names[j]);
+    for (size_t j = 0; j < np; j++) { /* by name, or by the --param as written */
+        fprintf(out, "%s\"%s\": {\"value\": ", j ? ", " : "", hb ? o->hb.name[j] : param_names[j]);
         cli_json_number(out, p[j]);
         fputs(", \"lower\": ", out);
         cli_json_number(out, lo[j]);
@@ -216,9 +318,10 @@ static void write_summary(FILE *out, fricreg_fit *fit, const struct fit_options 
         fprintf(out, ", \"%s\": ", names[k]);
         cli_json_number(out, v);
     }
-    const char *counts[] = {"nfev", "njev", "starts_converged"};
-    const int cwhich[] = {FRICREG_FIT_NFEV, FRICREG_FIT_NJEV, FRICREG_FIT_STARTS_CONVERGED};
-    for (int k = 0; k < 3; k++) {
+    const char *counts[] = {"nfev", "njev", "starts_converged", "nmodel", "nmarch"};
+    const int cwhich[] = {FRICREG_FIT_NFEV, FRICREG_FIT_NJEV, FRICREG_FIT_STARTS_CONVERGED,
+                          FRICREG_FIT_NMODEL, FRICREG_FIT_NMARCH};
+    for (int k = 0; k < (hb ? 5 : 3); k++) {
         fricreg_fit_get_value(fit, cwhich[k], &v);
         fprintf(out, ", \"%s\": %.0f", counts[k], v);
     }
@@ -327,9 +430,9 @@ static int write_plot(const struct fit_options *o, size_t n, size_t cols, const 
 
 /* The fit of the levels, its summary, curve and plot. */
 static int run_fit(fricreg_fit *fit, const struct fit_options *o, size_t n, size_t cols,
-                   const double rows[], FILE *out)
+                   const double rows[], struct cli_fit_hb *h, FILE *out)
 {
-    int status = set_up(fit, o, n, cols, rows);
+    int status = set_up(fit, o, n, cols, rows, h);
     if (status != 0)
         return status;
     clock_t start = clock();
@@ -337,7 +440,7 @@ static int run_fit(fricreg_fit *fit, const struct fit_options *o, size_t n, size
         fprintf(stderr, "fricreg-sim: fit: %s\n", fricreg_fit_errmsg(fit));
         return CLI_EXIT_RUN;
     }
-    write_summary(out, fit, o, n, (double)(clock() - start) / CLOCKS_PER_SEC);
+    write_summary(out, fit, o, h, n, (double)(clock() - start) / CLOCKS_PER_SEC);
     struct curve c;
     if (o->curve == NULL && o->plot == NULL)
         return 0;
@@ -369,8 +472,10 @@ int cli_fit(int argc, char **argv, FILE *out)
         free(rows);
         return cli_usage_error("fit", "out of memory");
     }
-    status = run_fit(fit, &o, n, cols, rows, out);
+    struct cli_fit_hb h = {0}; /* an HB model's driver: borrowed by the fit, freed after it */
+    status = run_fit(fit, &o, n, cols, rows, &h, out);
     fricreg_fit_free(fit);
+    cli_fit_hb_free(&h);
     free(rows);
     return status;
 }
