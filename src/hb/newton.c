@@ -115,9 +115,29 @@ static int hb_trial(void *user, double alpha, int *accept)
     return FRICREG_OK;
 }
 
+/* Newton's direction dy = −A⁻¹ R at qw from the Jacobians in jq (qw's, or a trial's). */
+static int direction(fricreg_hb *hb, const char *fn)
+{
+    fr_hb_matrix(hb, hb->jq, hb->A, hb->nq);
+    for (size_t j = 0; j < hb->nq; j++)
+        hb->dy[j] = -hb->R[j];
+    return fr_hb_lu_solve(hb, fn, hb->nq, hb->dy, hb->dy);
+}
+
 /* Backtracking from qw along dy: the first of alpha = 1, 1/2, ..., 1/1024 whose residual
  * meets Armijo's condition on |R| becomes qw (with R, fq, jq at it). Converged iterates
- * (|R| within the tolerance already) take the full step: rounding decides there. */
+ * (|R| within the tolerance already) take the full step: rounding decides there.
+ *
+ * A kink: where an element's stick/slip pattern changes, R is piecewise smooth, and near the
+ * crossing Newton's direction of the side qw lies on points to that side's linear model's
+ * root beyond the crossing, where R is another function; each step stops short of the
+ * crossing, closer every time, until no trial decreases |R| (the seeded solve of NLvib's chain
+ * at its onset of stick, tests/test_hb_kinks.c: 5 shrinking steps, then none). Then the
+ * shortest trial, past the crossing by at most 1/1024 of the step, left its Jacobian in jq:
+ * the other side's, a limit of Jacobians near qw (an element of the generalized Jacobian of
+ * piecewise-smooth Newton; Qi & Sun, Math. Prog. 58, 1993). Newton's direction from qw with
+ * it, searched once more, reaches the root on that side (there: the full step, then two
+ * more). Only a search that has failed takes it, so the converging iterations are as before. */
 static int line_search(fricreg_hb *hb, const char *fn, int converged)
 {
     struct fr_line_search ls = {FR_ARMIJO, FR_HB_HALVINGS, NULL};
@@ -125,8 +145,15 @@ static int line_search(fricreg_hb *hb, const char *fn, int converged)
     int accepted, status = fr_line_search(&ls, 1.0, hb_trial, &t, &accepted);
     if (status != FRICREG_OK || accepted)
         return status;
-    return fr_fail(hb, FRICREG_EWORK, "%s: Newton's line search found no decrease of |R| = %g", fn,
-                   t.r0);
+    if (direction(hb, fn) == FRICREG_OK) { /* jq: the shortest trial's */
+        status = fr_line_search(&ls, 1.0, hb_trial, &t, &accepted);
+        if (status != FRICREG_OK || accepted)
+            return status;
+    }
+    return fr_fail(hb, FRICREG_EWORK,
+                   "%s: Newton's line search found no decrease of |R| = %g, nor along the "
+                   "direction of the Jacobian past its shortest trial (a kink)",
+                   fn, t.r0);
 }
 
 /* The loop's view of Newton at one frequency (base/newton_loop.h): the iterate qw, converged
@@ -159,11 +186,7 @@ static int hb_progress(void *user, double rinf)
 static int hb_direction(void *user)
 {
     struct hb_loop *l = user;
-    fricreg_hb *hb = l->hb;
-    fr_hb_matrix(hb, hb->jq, hb->A, hb->nq);
-    for (size_t j = 0; j < hb->nq; j++)
-        hb->dy[j] = -hb->R[j];
-    return fr_hb_lu_solve(hb, l->fn, hb->nq, hb->dy, hb->dy);
+    return direction(l->hb, l->fn);
 }
 
 /* A search that accepts nothing is a failure here (FRICREG_EWORK, line_search). */
