@@ -63,7 +63,10 @@ extern "C" {
  *  once adds a 0, dropped. The 2 ndof left are the multipliers μ, λ = log μ Ω/2π the exponents
  *  (Im λ in (−Ω/2, Ω/2]). They are the HB orbit's own multipliers, which converge to an
  *  event-driven shooting's as H grows (8.6e-6 off at H = 40 on a Jenkins pair, where Hill's
- *  stays 0.44 away: tests/test_hb_monodromy.c). Cost per solution: a few (2 ndof +
+ *  stays 0.44 away: tests/test_hb_monodromy.c). With lift-off (Jenkins elements, up to 32
+ *  dofs; since 1.9) the switch instants are moved from the HB orbit's onto the exact orbit's,
+ *  whose multipliers they then are: a stiff contact's product is too sensitive to the HB's
+ *  truncated instants (docs/stability.md, "A stiff unilateral spring"). Cost per solution: a few (2 ndof +
  *  sliders)³ flops per switch, M^-1 applied once; no size limit but memory, 14 (2 ndof +
  *  sliders)² doubles (measured with the reference BLAS on a chain with 10 Jenkins elements at
  *  H = 3: 0.13 s a solution at 60 dofs, 35 s at 300, against 0.7 ms and 0.1 s for a

@@ -82,7 +82,8 @@ static int reserve_order(fricreg_hb *hb, const char *fn, size_t n)
 {
     size_t m = hb->m, S = hb->nsl, P = 2 * n + S;
     struct fr_hb_mono *w = hb->mono;
-    int orbit = hb->rpe == 2 && n <= FR_HB_ORBIT_MAX_N; /* contacts' instants may be refined */
+    int orbit = hb->rpe == 2 && n <= FR_HB_ORBIT_MAX_N && S <= FR_HB_ORBIT_MAX_SLIDERS &&
+                hb->me <= FR_HB_ORBIT_MAX_ELEMENTS; /* the instants may be refined (orbit.h) */
     if (w != NULL && w->n == n && w->m == m && w->S == S && w->H == hb->H &&
         (w->orbit_work != NULL) == orbit)
         return FRICREG_OK;
@@ -96,8 +97,8 @@ static int reserve_order(fricreg_hb *hb, const char *fn, size_t n)
         w->eig_work = malloc((lwork + 2 * P) * sizeof(double));
         w->piv = malloc(P * sizeof *w->piv);
         if (orbit) {
-            w->orbit_work = malloc((fr_hb_orbit_work(n) + 2 * n) * sizeof(double));
-            w->orbit_piv = malloc((2 * n + 3 + FR_HB_ORBIT_MAX_SWITCHES) * sizeof(int));
+            w->orbit_work = malloc((fr_hb_orbit_work(n, S) + 2 * n) * sizeof(double));
+            w->orbit_piv = malloc((2 * n + S + 3 + FR_HB_ORBIT_MAX_SWITCHES) * sizeof(int));
             ok = w->orbit_work && w->orbit_piv;
         }
         ok = ok && w->Mlu && w->eig_work && w->piv &&
@@ -434,33 +435,42 @@ static int linear_multipliers(fricreg_hb *hb, const char *fn, struct fr_hb_mono 
     return FRICREG_OK;
 }
 
-/* Whether only contacts act on the orbit: elements with a normal law and no friction (mu 0),
- * so that no slider is in the state and the model between switches is affine in x. */
-static int contacts_only(const fricreg_hb *hb, const struct fr_hb_mono *w)
+/* Whether the orbit's model between switches is the one orbit.h knows: elements with lift-off
+ * whose sliders are all in the state (Jenkins elements that switch) or carry no force (mu 0),
+ * none stuck throughout (its offset, a constant of the HB's, is no state). */
+static int refinable(const fricreg_hb *hb, const struct fr_hb_mono *w)
 {
-    if (hb->rpe != 2 || w->sc.S != 0 || w->sc.nstuck != 0 || w->sc.count == 0)
+    const struct fr_hb_schedule *sc = &w->sc;
+    if (hb->rpe != 2 || sc->nstuck != 0 || sc->count == 0)
         return 0;
-    for (size_t e = 0; e < hb->me; e++)
-        if (hb->nl[hb->me + e] != 0.0)
+    for (size_t e = 0; e < hb->me; e++) {
+        int in_state = 0;
+        for (size_t j = 0; j < sc->S; j++)
+            in_state |= sc->element[j] == e;
+        if (hb->nl[hb->me + e] != 0.0 && !(hb->ns == 1 && in_state))
             return 0;
+    }
     return 1;
 }
 
-/* The contact switches moved onto the exact orbit nearest the HB's (orbit.h), where only
- * contacts act on the whole model: M^-1 p from M's LU (mass_solves' pivots, before the
+/* The switches moved onto the exact orbit nearest the HB's (orbit.h), on the whole model: M^-1 p from M's LU (mass_solves' pivots, before the
  * exponentials reuse them). 1 where the instants were moved, else 0 (the HB's kept). */
 static int exact_switches(fricreg_hb *hb, struct fr_hb_mono *w, double omega)
 {
     size_t n = w->n, me = hb->me;
     if (w->orbit_work == NULL || w->sc.count > FR_HB_ORBIT_MAX_SWITCHES)
         return 0;
-    double *Mip = w->orbit_work + fr_hb_orbit_work(n), level = fr_hb_load(hb);
+    double *Mip = w->orbit_work + fr_hb_orbit_work(n, w->S), level = fr_hb_load(hb);
     for (size_t i = 0; i < n; i++)
         Mip[i] = level * hb->pc[i], Mip[n + i] = level * hb->ps[i];
     fr_hb_lu_solve_many(w->Mlu, n, w->piv, 2, Mip);
     struct fr_hb_orbit_model om = {.n = n,
                                    .m = hb->m,
                                    .me = me,
+                                   .S = w->sc.S,
+                                   .element = w->sc.element,
+                                   .k = w->sc.k,
+                                   .c = w->sc.c,
                                    .MiK = w->MiK,
                                    .MiC = w->MiC,
                                    .MiJ = w->MiJ,
@@ -486,8 +496,8 @@ int fr_hb_monodromy(fricreg_hb *hb, const char *fn, double omega, int condensed,
         (status = fr_hb_schedule(hb, fn, &w->sc)) != FRICREG_OK)
         return status;
     /* the HB orbit's instants err by its truncation over the velocity at the surface: taken
-     * from the exact orbit where only contacts act (orbit.c says why) */
-    if (!condensed && contacts_only(hb, w))
+     * from the exact orbit where the model is one orbit.c knows (it says why) */
+    if (!condensed && refinable(hb, w))
         exact_switches(hb, w, omega);
     for (size_t i = 0; i < w->sc.nstuck; i++) { /* the sliders stuck throughout: springs */
         size_t t = hb->rpe * w->sc.stuck_element[i];
