@@ -29,9 +29,9 @@
 #include "orbit.h"
 
 #define NEWTON_STEPS 12
-#define ANGLE_TOL \
-    1e-10                /* rad: a step below it is converged (an onset after a short stick
-                         * has a slow residual, its step at 1e-12 rounding) */
+/* rad: a step below it is converged (an onset after a short stick has a slow residual, its
+ * step rounding at 1e-12) */
+#define ANGLE_TOL 1e-10
 #define ANGLE_MOVE 0.2   /* rad: a switch moving further is another orbit's */
 #define ANGLE_DIFF 1e-7  /* rad: the difference quotient's step */
 #define SHORT_STICK 1e-3 /* rad: a stick this short between a stop and an onset moves as one */
@@ -68,7 +68,7 @@ static const double *mrow_of(const struct fr_hb_orbit_model *om, size_t r)
     return om->MiJ + r * om->n;
 }
 
-/* out[r] += s a_l b_i on the velocity rows of column l: A's −s (M^-1 J_a^T) J_b x. */
+/* A spring s J_a^T J_b x between rows a and b of J: −s (M^-1 J_a^T) J_b on A's velocity rows. */
 static void spring(const struct fr_hb_orbit_model *om, size_t a, size_t b, double s, double *A)
 {
     size_t n = om->n, R = 2 * n + om->S + 3;
