@@ -15,6 +15,9 @@
  *     hb_set_element_param, hb_get_element_param (mex_hb.c); hb_solve, hb_continue,
  *     hb_continue_level, hb_nma, hb_peak (mex_hb_results.c); hb_truncation_error,
  *     hb_nma_sensitivities, hb_modal_participation (mex_hb_estimates.c)
+ *   fricreg_mex('aft', kind, samples, params, coefficients) -> [f, jac] (mex_aft.c)
+ *   fricreg_mex('st_create', ndof, m) -> handle; st_set_*, st_add_elements (mex_structure.c);
+ *     st_run (mex_structure_run.c)
  *   fricreg_mex('free', handle), ('free_all'), ('handles') -> the live objects' count
  *
  * Layout: MATLAB stores arrays column-major; the library takes tables of points row-major,
@@ -28,11 +31,13 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "mex_aft.h"
 #include "mex_args.h"
 #include "mex_element.h"
 #include "mex_fit.h"
 #include "mex_handles.h"
 #include "mex_hb.h"
+#include "mex_structure.h"
 #include "fricreg.h"
 #include "fricreg_element.h"
 
@@ -83,6 +88,7 @@ static void cmd_free_all(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prh
     (void)prhs;
     mexa_nargs("free_all", nrhs, 0, 0, nlhs, 0);
     mexh_free_all();
+    mexaft_release();
 }
 
 static void cmd_handles(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
@@ -395,17 +401,38 @@ static const struct {
     {"hb_truncation_error", mexhb_truncation_error},
     {"hb_nma_sensitivities", mexhb_nma_sensitivities},
     {"hb_modal_participation", mexhb_modal_participation},
+    {"aft", mexaft_eval},
+    {"st_create", mexst_create},
+    {"st_set_matrix", mexst_set_matrix},
+    {"st_set_rayleigh", mexst_set_rayleigh},
+    {"st_set_bounds", mexst_set_bounds},
+    {"st_set_law", mexst_set_law},
+    {"st_set_influence", mexst_set_influence},
+    {"st_set_ground_accel", mexst_set_ground_accel},
+    {"st_set_load", mexst_set_load},
+    {"st_add_elements", mexst_add_elements},
+    {"st_set_initial", mexst_set_initial},
+    {"st_set_newton", mexst_set_newton},
+    {"st_set_error_estimate", mexst_set_error_estimate},
+    {"st_run", mexst_run},
     {"free", cmd_free},
     {"free_all", cmd_free_all},
     {"handles", cmd_handles},
 };
+
+/* Every object and the AFT's kept workspace freed: the MEX file cleared or MATLAB leaving. */
+static void at_exit(void)
+{
+    mexh_free_all();
+    mexaft_release();
+}
 
 void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
     static int registered = 0;
     char name[32];
     if (!registered) { /* every object freed when the MEX file is cleared or MATLAB exits */
-        mexAtExit(mexh_free_all);
+        mexAtExit(at_exit);
         registered = 1;
     }
     if (nrhs < 1)

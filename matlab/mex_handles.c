@@ -8,6 +8,7 @@
 #include "mex_args.h"
 #include "mex_handles.h"
 #include "mex_hb.h"
+#include "mex_structure.h"
 #include "fricreg_fit.h"
 
 typedef struct {
@@ -40,6 +41,7 @@ static void free_object(int kind, void *object)
     switch (kind) {
     case MEXH_FIT: fricreg_fit_free(object); break;
     case MEXH_HB: mexhb_free(object); break;
+    case MEXH_STRUCTURE: mexst_free(object); break;
     default: break;
     }
 }

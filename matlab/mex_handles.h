@@ -17,8 +17,9 @@
 
 /** The kinds of objects the table holds. */
 enum mexh_kind {
-    MEXH_FIT = 1, /**< a fricreg_fit (fricreg_fit.h) */
-    MEXH_HB = 2   /**< a harmonic-balance driver with its sizes (mex_hb.h) */
+    MEXH_FIT = 1,      /**< a fricreg_fit (fricreg_fit.h) */
+    MEXH_HB = 2,       /**< a harmonic-balance driver with its sizes (mex_hb.h) */
+    MEXH_STRUCTURE = 3 /**< a structure stepped in time with its sizes (mex_structure.h) */
 };
 
 /** Add an object of a kind; returns its new handle. On failure (memory) the object is freed
