@@ -4,7 +4,8 @@ function failures = test_fricreg_structure()
 %   average-acceleration Newmark's own discrete solution of a linear oscillator, free
 %   (u_n = u0 cos(n phi), tan(phi/2) = omega dt/2), under a constant ground acceleration and a
 %   constant load, and stuck on a Jenkins element; the Coulomb oscillator's decay to rest and
-%   its dissipation; the energy balance; a run continued equal to one run bit for bit; the
+%   its dissipation; the energy balance; the trajectory of fricreg-sim structure (the C library's
+%   numbers by its command line) to the bit; a run continued equal to one run bit for bit; the
 %   accuracy warnings as fricreg:accuracy, once per kind until a reset; the error estimate's
 %   fields; and every error path.
 cases = {'free_vibration', @free_vibration
@@ -13,6 +14,7 @@ cases = {'free_vibration', @free_vibration
          'coulomb_oscillator', @coulomb_oscillator
          'sliding_element_energy', @sliding_element_energy
          'continued_run', @continued_run
+         'against_the_cli', @against_the_cli
          'sparse_and_schemes', @sparse_and_schemes
          'accuracy_warnings', @accuracy_warnings
          'error_estimate', @error_estimate
@@ -122,6 +124,58 @@ assert(a.times(end) == b.times(1))
 assert(isequal([a.displacements; b.displacements(2:end, :)], one.displacements))
 assert(isequal(b.dissipation, one.dissipation) && isequal(b.peak_displacement, one.peak_displacement))
 assert(isequal(c.displacements, one.displacements) && isequal(c.forces, one.forces))
+end
+
+function against_the_cli()
+% The same model through fricreg-sim structure --output trajectory (the build's, beside the
+% gateway's folder; skipped where there is none): its rows are the run's to the bit.
+cli = fullfile(fileparts(which('fricreg_mex')), '..', 'fricreg-sim');
+if ~exist(cli, 'file')
+    fprintf('     (no fricreg-sim beside the gateway: skipped)\n');
+    return;
+end
+dir = tempname(); mkdir(dir);
+cleanup = onCleanup(@() remove(dir));
+mm = @(name, text) write(fullfile(dir, name), ['%%MatrixMarket matrix coordinate real general', ...
+                                               sprintf('\n'), text]);
+mm('M.mtx', sprintf('2 2 2\n1 1 1.3\n2 2 0.7\n'));
+mm('K.mtx', sprintf('2 2 4\n1 1 2385\n1 2 -1100\n2 1 -1100\n2 2 1900\n'));
+mm('J.mtx', sprintf('1 2 2\n1 1 1\n1 2 -1\n'));
+mm('Je.mtx', sprintf('1 2 1\n1 2 1\n'));
+write(fullfile(dir, 'mun.txt'), sprintf('0.4\n'));
+write(fullfile(dir, 'P.txt'), sprintf('2000 0.3\n'));
+t = (0:200) * 0.01; ag = 3 * sin(4 * pi * t);
+write(fullfile(dir, 'ag.txt'), sprintf('%.17g %.17g\n', [t; ag]));
+f = @(name) fullfile(dir, name);
+command = sprintf(['"%s" structure --mass %s --stiffness %s --contacts %s --mun %s --elements ' ...
+                   'jenkins:%s:%s --rayleigh 0.1,1e-4 --ground-accel %s --dt 1e-3 --t-end 0.5 ' ...
+                   '--output trajectory --error-estimate off --output-every 50 > %s 2> %s'], ...
+                  cli, f('M.mtx'), f('K.mtx'), f('J.mtx'), f('mun.txt'), f('Je.mtx'), f('P.txt'), ...
+                  f('ag.txt'), f('out.csv'), f('err.txt'));
+assert(system(command) == 0)
+rows = dlmread(f('out.csv'), ',', 1, 0);            % t, u1, u2, v1, v2, f1
+h = fricreg_structure(diag([1.3 0.7]), [2385 -1100; -1100 1900], 'J', [1 -1], 'mun', 0.4, ...
+                      'elements', struct('type', 'jenkins', 'J', [0 1], 'params', [2000 0.3]), ...
+                      'rayleigh', [0.1 1e-4], 'ground_accel', {0, 0.01, ag});
+state = warning('off', 'fricreg:accuracy');         % the CLI's eps_speed warning, here too
+r = fricreg_structure_run(h, 'newmark', 1e-3, 0.5, 'output_every', 50);
+warning(state);
+fricreg_structure_free(h);
+assert(numel(r.times) == 11 && any(r.forces ~= 0))
+fricreg_test_check([r.times r.displacements r.velocities r.forces], rows, 0, 'trajectory');
+assert(any(strcmp({r.warnings.name}, 'eps_speed')))
+end
+
+function remove(dir)
+% The folder and its files (rmdir(dir, 's') asks first in Octave).
+delete(fullfile(dir, '*'));
+rmdir(dir);
+end
+
+function write(name, text)
+fid = fopen(name, 'w');
+fputs(fid, text);
+fclose(fid);
 end
 
 function sparse_and_schemes()
