@@ -6,7 +6,8 @@ function r = fricreg_structure_run(h, integrator, dt, t_end, varargin)
 %   land on T_END) and returns the result as a struct. A run continues the structure's state:
 %   two runs to T1 and T2 take the steps of one run to T2.
 %   FRICREG_STRUCTURE_RUN(..., 'output_every', K) keeps a row every K-th step of the run (and
-%   the first and the last); 'alpha', A sets HHT's alpha in [-1/3, 0] (default -0.05).
+%   the first and the last); 'output_dofs', D the dofs (from 1) whose u and u' the time series
+%   holds (default all); 'alpha', A sets HHT's alpha in [-1/3, 0] (default -0.05).
 %
 %   INTEGRATOR  'newmark' (average acceleration, the friction implicit: Newton on the exact
 %               tangent), 'hht' (HHT-alpha) or 'central' (explicit central differences, refused
@@ -14,7 +15,8 @@ function r = fricreg_structure_run(h, integrator, dt, t_end, varargin)
 %   DT, T_END   s; DT > 0, T_END after the structure's time.
 %   R           a struct with the fields
 %      times                 NSAMPLES x 1 (s): the run's start, every K-th step, its end
-%      displacements, velocities   NSAMPLES x NDOF (m, m/s)
+%      displacements, velocities   NSAMPLES x NOUT (m, m/s): u and u' at the output dofs
+%      output_dofs           1 x NOUT: the dofs of their columns, from 1
 %      forces                NSAMPLES x M: the contacts' friction forces (N)
 %      t                     the time reached (s)
 %      peak_displacement     1 x NDOF: max |u| since the last reset, turning points inside
@@ -40,7 +42,7 @@ function r = fricreg_structure_run(h, integrator, dt, t_end, varargin)
 %      fricreg:nargs, fricreg:type, fricreg:size, fricreg:option   as FRICREG_STRUCTURE
 %      fricreg:handle      H unknown or freed, or not a structure's
 %      fricreg:EINVAL      DT <= 0, T_END not after the current time, an unknown integrator,
-%                          alpha out of range
+%                          alpha out of range, an output dof not in 1..NDOF
 %      fricreg:ESTEP       a central-difference step beyond its stability bound
 %      fricreg:EDIVERGED, fricreg:ESINGULAR, fricreg:ENOTPSD, fricreg:ENOMEM   the run failed;
 %                          the message says after which time. The structure stays at its last
@@ -58,6 +60,7 @@ if nargin < 4
 end
 every = 1;
 alpha = -0.05;
+dofs = [];
 if mod(numel(varargin), 2) ~= 0
     error('fricreg:option', 'fricreg_structure_run: options come in name/value pairs');
 end
@@ -70,10 +73,12 @@ for k = 1:2:numel(varargin)
             every = varargin{k + 1};
         case 'alpha'
             alpha = varargin{k + 1};
+        case 'output_dofs'
+            dofs = varargin{k + 1};
         otherwise
             error('fricreg:option', ['fricreg_structure_run: unknown option %s (one of ' ...
-                                     'output_every, alpha)'], varargin{k});
+                                     'output_every, output_dofs, alpha)'], varargin{k});
     end
 end
-r = fricreg_mex('st_run', h, integrator, dt, t_end, every, alpha);
+r = fricreg_mex('st_run', h, integrator, dt, t_end, every, alpha, dofs);
 end

@@ -14,18 +14,19 @@
 #include "mex_args.h"
 #include "mex_structure.h"
 
-/* The time series: rows of (t, u[ndof], v[ndof], f[m]), malloc'd (the observer cannot raise a
+/* The time series: rows of (t, u[nout], v[nout], f[m]) at the output dofs, malloc'd (the observer cannot raise a
  * MATLAB error: it runs inside the library), freed before any error or warning is raised. */
 typedef struct {
     double *rows;
-    size_t count, cap, ndof, m;
+    size_t count, cap, nout, m;
+    const size_t *dofs; /* the output dofs, from 0 */
     long steps, every;
     int nomem;
 } recorder;
 
 static size_t width(const recorder *r)
 {
-    return 1 + 2 * r->ndof + r->m;
+    return 1 + 2 * r->nout + r->m;
 }
 
 static int push(recorder *r, double t, const double *u, const double *v, const double *f)
@@ -43,10 +44,12 @@ static int push(recorder *r, double t, const double *u, const double *v, const d
     }
     row = r->rows + width(r) * r->count++;
     row[0] = t;
-    memcpy(row + 1, u, r->ndof * sizeof *row);
-    memcpy(row + 1 + r->ndof, v, r->ndof * sizeof *row);
+    for (size_t j = 0; j < r->nout; j++) {
+        row[1 + j] = u[r->dofs[j]];
+        row[1 + r->nout + j] = v[r->dofs[j]];
+    }
     if (r->m > 0)
-        memcpy(row + 1 + 2 * r->ndof, f, r->m * sizeof *row);
+        memcpy(row + 1 + 2 * r->nout, f, r->m * sizeof *row);
     return 0;
 }
 
@@ -194,15 +197,42 @@ static mxArray *warnings(mexst *d, int raise)
     return out;
 }
 
-/* r = st_run(h, integrator, dt, t_end, every, alpha): integrator 'newmark' (average
- * acceleration), 'hht' (HHT-alpha with alpha) or 'central'; a row every every-th step of the
- * run, and the first and the last. */
+/* The output dofs: [] for all, else a vector of dofs from 1 (whole, in 1..ndof), from 0 in dofs
+ * (mxMalloc'd); returns their count. */
+static size_t output_dofs(const mxArray *a, const mexst *d, const char *cmd, size_t **dofs)
+{
+    const double *x;
+    size_t n = 0;
+    mexa_real(a, cmd, "output_dofs");
+    if (mxIsEmpty(a)) {
+        n = d->ndof;
+        *dofs = mxCalloc(n, sizeof **dofs);
+        for (size_t j = 0; j < n; j++)
+            (*dofs)[j] = j;
+        return n;
+    }
+    x = mexa_vector(a, cmd, "output_dofs", (size_t)-1, &n);
+    *dofs = mxCalloc(n, sizeof **dofs);
+    for (size_t j = 0; j < n; j++) {
+        if (!(x[j] >= 1 && x[j] <= (double)d->ndof && x[j] == (double)(size_t)x[j]))
+            mexa_error("fricreg:EINVAL",
+                       "%s: output_dofs(%lu) = %g is not a dof (1..%lu) (FRICREG_EINVAL)", cmd,
+                       (unsigned long)j + 1, x[j], (unsigned long)d->ndof);
+        (*dofs)[j] = (size_t)x[j] - 1;
+    }
+    return n;
+}
+
+/* r = st_run(h, integrator, dt, t_end, every, alpha, output_dofs): integrator 'newmark'
+ * (average acceleration), 'hht' (HHT-alpha with alpha) or 'central'; a row every every-th step
+ * of the run, and the first and the last, with u and v at the output dofs ([] for all). */
 void mexst_run(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
     static const char *fields[] = {"times",
                                    "displacements",
                                    "velocities",
                                    "forces",
+                                   "output_dofs",
                                    "t",
                                    "peak_displacement",
                                    "dissipation",
@@ -216,13 +246,14 @@ void mexst_run(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
                                    "warnings"};
     const char *cmd = "st_run";
     recorder rec;
+    size_t *dofs;
     mexst *d;
     mxArray *out, *forces, *diss;
     char scheme[16], msg[512];
     double dt, t_end, alpha, t = 0.0, *x;
     static const char *const schemes[] = {"newmark", "hht", "central"};
     int status = FRICREG_OK, which;
-    mexa_nargs(cmd, nrhs, 6, 6, nlhs, 1);
+    mexa_nargs(cmd, nrhs, 7, 7, nlhs, 1);
     d = mexst_of(prhs[0], cmd);
     mexa_string(prhs[1], cmd, "integrator", scheme, sizeof scheme);
     dt = mexa_scalar(prhs[2], cmd, "dt");
@@ -230,6 +261,8 @@ void mexst_run(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
     memset(&rec, 0, sizeof rec);
     rec.every = (long)mexa_count(prhs[4], cmd, "output_every", 1, 1L << 30);
     alpha = mexa_scalar(prhs[5], cmd, "alpha");
+    rec.nout = output_dofs(prhs[6], d, cmd, &dofs);
+    rec.dofs = dofs;
     /* the scheme set only where it changes, as Python's Structure.run: a setter between two
      * runs would start the second one's grid anew (a continued run is one run bit for bit) */
     for (which = 0; which < 3 && strcmp(scheme, schemes[which]) != 0; which++)
@@ -247,7 +280,6 @@ void mexst_run(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
     mexst_check(d, status, cmd);
     d->scheme = which;
     d->alpha = alpha;
-    rec.ndof = d->ndof;
     rec.m = d->m;
     push_now(&rec, d);
     fricreg_structure_set_observer(d->s, observe, &rec);
@@ -263,11 +295,14 @@ void mexst_run(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
                  status != FRICREG_OK ? msg : "out of memory for the time series");
         mexa_status(status != FRICREG_OK ? status : FRICREG_ENOMEM, cmd, detail);
     }
-    out = mxCreateStructMatrix(1, 1, 15, fields);
+    out = mxCreateStructMatrix(1, 1, 16, fields);
     mxSetField(out, 0, "times", series(&rec, 0, 1));
-    mxSetField(out, 0, "displacements", series(&rec, 1, d->ndof));
-    mxSetField(out, 0, "velocities", series(&rec, 1 + d->ndof, d->ndof));
-    mxSetField(out, 0, "forces", series(&rec, 1 + 2 * d->ndof, d->m));
+    mxSetField(out, 0, "displacements", series(&rec, 1, rec.nout));
+    mxSetField(out, 0, "velocities", series(&rec, 1 + rec.nout, rec.nout));
+    mxSetField(out, 0, "forces", series(&rec, 1 + 2 * rec.nout, d->m));
+    mxSetField(out, 0, "output_dofs", row_vector(rec.nout, &x));
+    for (size_t j = 0; j < rec.nout; j++)
+        x[j] = (double)dofs[j] + 1;
     free(rec.rows);
     fricreg_structure_get_value(d->s, FRICREG_SVALUE_TIME, &t);
     mxSetField(out, 0, "t", mxCreateDoubleScalar(t));

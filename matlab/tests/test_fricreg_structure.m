@@ -124,6 +124,12 @@ assert(a.times(end) == b.times(1))
 assert(isequal([a.displacements; b.displacements(2:end, :)], one.displacements))
 assert(isequal(b.dissipation, one.dissipation) && isequal(b.peak_displacement, one.peak_displacement))
 assert(isequal(c.displacements, one.displacements) && isequal(c.forces, one.forces))
+h = fricreg_structure(m, k, args{:});                % the output dofs: the columns chosen
+d = fricreg_structure_run(h, 'newmark', 1e-3, 0.6, 'output_dofs', [2 1 2]);
+fricreg_structure_free(h);
+assert(isequal(d.output_dofs, [2 1 2]) && isequal(one.output_dofs, [1 2]))
+assert(isequal(d.displacements, one.displacements(:, [2 1 2])) && ...
+       isequal(d.velocities, one.velocities(:, [2 1 2])))
 end
 
 function against_the_cli()
@@ -303,6 +309,12 @@ fricreg_test_raises('fricreg:EINVAL', @() fricreg_structure_run(h, 'hht', 1e-3, 
 fricreg_test_raises('fricreg:EINVAL', @() fricreg_structure_run(h, 'newmark', 1e-3, 1, ...
                                                                 'output_every', 0));
 fricreg_test_raises('fricreg:ESTEP', @() fricreg_structure_run(h, 'central', 0.2, 1));
+fricreg_test_raises('fricreg:EINVAL', @() fricreg_structure_run(h, 'newmark', 1e-3, 1, ...
+                                                                'output_dofs', 2), 'not a dof');
+fricreg_test_raises('fricreg:EINVAL', @() fricreg_structure_run(h, 'newmark', 1e-3, 1, ...
+                                                                'output_dofs', 0.5));
+fricreg_test_raises('fricreg:type', @() fricreg_structure_run(h, 'newmark', 1e-3, 1, ...
+                                                              'output_dofs', int32(1)));
 fricreg_test_raises('fricreg:size', @() fricreg_structure_reset(h, [1 2]));
 fricreg_test_raises('fricreg:nargs', @() fricreg_structure_free());
 r = fricreg_structure_run(h, 'newmark', 1e-3, 0.1);  % still usable after the errors
