@@ -22,7 +22,10 @@ function [f, jac] = fricreg_aft_iwan(k, phi, u, varargin)
 if nargin < 3
     error('fricreg:nargs', 'fricreg_aft_iwan: takes k, phi, u');
 end
-N = samples_option('fricreg_aft_iwan', varargin);
+N = 0;
+if ~isempty(varargin) % parsed only where given: a call a few us shorter
+    N = samples_option('fricreg_aft_iwan', varargin);
+end
 if ~isnumeric(k) || ~isnumeric(phi) || numel(k) ~= numel(phi) || ~isvector(k) || ~isvector(phi)
     error('fricreg:size', 'fricreg_aft_iwan: k and phi must be vectors of one length (ns)');
 end

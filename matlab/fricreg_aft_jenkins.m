@@ -50,7 +50,10 @@ function [f, jac] = fricreg_aft_jenkins(kt, mun, u, varargin)
 if nargin < 3
     error('fricreg:nargs', 'fricreg_aft_jenkins: takes kt, mun, u');
 end
-N = samples_option('fricreg_aft_jenkins', varargin);
+N = 0;
+if ~isempty(varargin) % parsed only where given: a call a few us shorter
+    N = samples_option('fricreg_aft_jenkins', varargin);
+end
 if ~isscalar(kt) || ~isscalar(mun)
     error('fricreg:size', 'fricreg_aft_jenkins: kt and mun must be scalars');
 end

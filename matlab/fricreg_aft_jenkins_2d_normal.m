@@ -27,7 +27,10 @@ function [f, nf, jac] = fricreg_aft_jenkins_2d_normal(kt, mu, n0, kn, u, g, vara
 if nargin < 6
     error('fricreg:nargs', 'fricreg_aft_jenkins_2d_normal: takes kt, mu, n0, kn, u, g');
 end
-N = samples_option('fricreg_aft_jenkins_2d_normal', varargin);
+N = 0;
+if ~isempty(varargin) % parsed only where given: a call a few us shorter
+    N = samples_option('fricreg_aft_jenkins_2d_normal', varargin);
+end
 if ~isscalar(kt) || ~isscalar(mu) || ~isscalar(n0) || ~isscalar(kn)
     error('fricreg:size', 'fricreg_aft_jenkins_2d_normal: kt, mu, n0 and kn must be scalars');
 end
