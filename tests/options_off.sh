@@ -10,7 +10,7 @@ work=$(mktemp -d "${TMPDIR:-/tmp}/fricreg-core.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 cmake -S "$src" -B "$work" -DCMAKE_C_COMPILER="$cc" -DFRICREG_DRIVERS=OFF \
       -DFRICREG_FORTRAN=OFF -DFRICREG_EXAMPLES=OFF -DFRICREG_BENCH=OFF -DFRICREG_PETSC=OFF \
-      -DFRICREG_PYTHON=OFF -DFRICREG_OCTAVE=OFF >"$work/log" 2>&1 &&
+      -DFRICREG_PYTHON=OFF -DFRICREG_OCTAVE=OFF -DFRICREG_MATLAB=OFF >"$work/log" 2>&1 &&
     cmake --build "$work" -j2 >>"$work/log" 2>&1 &&
     (cd "$work" && ctest --output-on-failure -LE "docs|sanitize|valgrind") >>"$work/log" 2>&1
 status=$?
