@@ -718,7 +718,7 @@ START_TEST(test_explain_nulls)
 END_TEST
 
 /* The message of a parameter out of its range names the one condition it fails, the
- * parameter's name and its index, whatever else is wrong after it (issue 74). */
+ * parameter's name and its index, whatever else is wrong after it (a host code reads it). */
 static void says(const char *name, size_t ns, const double *p, const char *expected)
 {
     const fricreg_element_type *t = type_of(name, ns);

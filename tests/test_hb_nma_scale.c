@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_hb_nma_scale.c — Check suite for the nonlinear modes' Newton at the model's scale
- * (fricreg_hb_nma, fricreg_hb_nma_continue; fricreg_hb.h; issue 58 item 3): a model in SI
+ * (fricreg_hb_nma, fricreg_hb_nma_continue; fricreg_hb_nma.h): a model in SI
  * units with the default tolerance.
  *
  * The model: a chain of n = 30 masses m = 0.01 kg, springs k = 1e9 N/m, fixed at one end (dof 0
