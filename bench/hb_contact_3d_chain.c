@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* hb_contact_3d_chain.c — a frequency sweep of a chain on 3-D contact elements against the same
- * chain on Jenkins elements (issue 92): points, Newton steps and CPU seconds of each, the start
- * without a guess (fricreg_hb_solve at Ω0, the library's default route) apart from the sweep
- * from its solution (fricreg_hb_continue, the defaults: ds 0.02, ds_min 1e-6, ds_max 0.1,
+ * chain on Jenkins elements: points, Newton steps and CPU seconds of each, the start without a
+ * guess (fricreg_hb_solve at Ω0, the library's default route) apart from the sweep from its
+ * solution (fricreg_hb_continue, the defaults: ds 0.02, ds_min 1e-6, ds_max 0.1,
  * Newton 1e-10).
  *
  * The model: `nodes` = 7 m / 2 unit masses in a chain, 3 dofs each (x, y, z: dofs 3i, 3i + 1,
