@@ -135,6 +135,22 @@ void mexa_string(const mxArray *a, const char *cmd, const char *name, char *buf,
                    (unsigned long)(len - 1));
 }
 
+int mexa_pick(const mxArray *a, const char *cmd, const char *what, const char *const names[],
+              int count)
+{
+    char name[32], list[160] = "";
+    mexa_string(a, cmd, what, name, sizeof name);
+    for (int i = 0; i < count; i++) {
+        if (strcmp(name, names[i]) == 0)
+            return i;
+        mexa_append(list, sizeof list, i ? ", " : "");
+        mexa_append(list, sizeof list, names[i]);
+    }
+    mexa_error("fricreg:EINVAL", "%s: %s '%s' is not one of %s (FRICREG_EINVAL)", cmd, what, name,
+               list);
+    return -1;
+}
+
 mxArray *mexa_matrix(size_t rows, size_t cols)
 {
     return mxCreateDoubleMatrix((mwSize)rows, (mwSize)cols, mxREAL);

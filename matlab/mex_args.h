@@ -54,6 +54,10 @@ const double *mexa_vector(const mxArray *a, const char *cmd, const char *name, s
  *  if it does not fit). */
 void mexa_string(const mxArray *a, const char *cmd, const char *name, char *buf, size_t len);
 
+/** A string naming one of names[count]: its index; fricreg:EINVAL naming the list otherwise. */
+int mexa_pick(const mxArray *a, const char *cmd, const char *what, const char *const names[],
+              int count);
+
 /** Whether a is a 2-D array of rows x cols. */
 int mexa_is_size(const mxArray *a, size_t rows, size_t cols);
 

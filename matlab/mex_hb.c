@@ -37,23 +37,6 @@ void mexhb_free(void *object)
     }
 }
 
-/* A name of a list, its index; raises fricreg:EINVAL naming the list. */
-static int pick(const mxArray *a, const char *cmd, const char *what, const char *const names[],
-                int count)
-{
-    char name[32], list[160] = "";
-    mexa_string(a, cmd, what, name, sizeof name);
-    for (int i = 0; i < count; i++) {
-        if (strcmp(name, names[i]) == 0)
-            return i;
-        mexa_append(list, sizeof list, i ? ", " : "");
-        mexa_append(list, sizeof list, names[i]);
-    }
-    mexa_error("fricreg:EINVAL", "%s: %s '%s' is not one of %s (FRICREG_EINVAL)", cmd, what, name,
-               list);
-    return -1;
-}
-
 /* h = hb_create(ndof, m, harmonics): a driver of ndof dofs, m elements, H harmonics. */
 void mexhb_create(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
@@ -125,7 +108,7 @@ void mexhb_set_matrix(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]
     (void)plhs;
     mexa_nargs(cmd, nrhs, 3, 3, nlhs, 0);
     d = mexhb_of(prhs[0], cmd);
-    which = pick(prhs[1], cmd, "matrix", names, 3);
+    which = mexa_pick(prhs[1], cmd, "matrix", names, 3);
     mexhb_check(d, set_matrix(d, codes[which], prhs[2], cmd, names[which]), cmd);
 }
 
@@ -309,7 +292,7 @@ void mexhb_set_stability(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prh
         enable = mxIsLogicalScalarTrue(prhs[1]) ? 1 : 0;
     else
         enable = (int)mexa_count(prhs[1], cmd, "enable", 0, 1);
-    method = pick(prhs[2], cmd, "method", methods, 4);
+    method = mexa_pick(prhs[2], cmd, "method", methods, 4);
     mexhb_check(d, fricreg_hb_set_stability_method(d->hb, method), cmd);
     mexhb_check(d, fricreg_hb_set_stability(d->hb, enable), cmd);
     d->stability = enable;

@@ -39,23 +39,6 @@ void mexst_free(void *object)
     }
 }
 
-/* A name of a list, its index; raises fricreg:EINVAL naming the list. */
-static int pick(const mxArray *a, const char *cmd, const char *what, const char *const names[],
-                int count)
-{
-    char name[32], list[160] = "";
-    mexa_string(a, cmd, what, name, sizeof name);
-    for (int i = 0; i < count; i++) {
-        if (strcmp(name, names[i]) == 0)
-            return i;
-        mexa_append(list, sizeof list, i ? ", " : "");
-        mexa_append(list, sizeof list, names[i]);
-    }
-    mexa_error("fricreg:EINVAL", "%s: %s '%s' is not one of %s (FRICREG_EINVAL)", cmd, what, name,
-               list);
-    return -1;
-}
-
 /* h = st_create(ndof, m): a structure of ndof dofs and m contacts (m = 0: none shown). */
 void mexst_create(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {
@@ -108,7 +91,7 @@ void mexst_set_matrix(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]
     (void)plhs;
     mexa_nargs(cmd, nrhs, 3, 3, nlhs, 0);
     d = mexst_of(prhs[0], cmd);
-    which = pick(prhs[1], cmd, "matrix", names, 4);
+    which = mexa_pick(prhs[1], cmd, "matrix", names, 4);
     a = prhs[2];
     n = d->ndof;
     rows = which == 3 ? d->m : n;
@@ -357,6 +340,6 @@ void mexst_set_error_estimate(int nlhs, mxArray *plhs[], int nrhs, const mxArray
     d = mexst_of(prhs[0], cmd);
     mexst_check(d,
                 fricreg_structure_set_error_estimate(
-                    d->s, codes[pick(prhs[1], cmd, "error_estimate", names, 3)]),
+                    d->s, codes[mexa_pick(prhs[1], cmd, "error_estimate", names, 3)]),
                 cmd);
 }
