@@ -233,6 +233,11 @@ FRICREG_API int fricreg_fit_set_starts(fricreg_fit *fit, size_t nstarts);
 
 /** Fit the free parameters to the levels.
  *
+ *  Each start runs GSL's trust-region Levenberg-Marquardt (gsl_multifit_nlinear) on the exact
+ *  Jacobian until its step is below 1e-10 relative, its scaled gradient below 1e-12, or a
+ *  Gauss-Newton step would lower r^T r by less than 1e-9 of it (the step left then about 1e-4
+ *  of a standard error: docs/identification.md).
+ *
  *  Returns FRICREG_OK, the fit then readable by the getters below; else nothing is reported as
  *  a fit, and: FRICREG_ENULL if fit is NULL; FRICREG_EINVAL if no levels are set, there are
  *  fewer levels than free parameters, no parameter is free, a

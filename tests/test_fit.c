@@ -15,7 +15,8 @@
  *     at a sensor of shape 0.37); noise-free they are recovered to 1e-6 from starts 10x off;
  *     with 1 % noise in zeta and 0.05 % in f (GSL's MT19937, seed 1, 100 draws) the 95 %
  *     intervals hold the truth in 90-99 % of draws (measured: 93-96 % per parameter; seeds 2-4
- *     gave 89-97 %);
+ *     gave 89-97 %); a run stops once a Gauss-Newton step would take less than 1e-9 of the
+ *     cost off: started at its answer again, the fit moves by 1e-5 standard errors;
  *   - relative residuals: the covariance is the one with deviations equal to the measured
  *     values, scaled by r^T r/(2n - p), and the quantile Student's t (2.1788 at 12 degrees of
  *     freedom);
@@ -221,6 +222,51 @@ START_TEST(test_coverage_of_intervals)
     ck_assert_int_eq(fits, 100);
     for (int j = 0; j < NP; j++)
         ck_assert_msg(inside[j] >= 90 && inside[j] <= 99, "parameter %d: %d of 100", j, inside[j]);
+    fricreg_fit_free(fit);
+}
+END_TEST
+
+/* A run stops where a Gauss-Newton step would lower the cost by less than 1e-9 of it: one noisy
+ * draw from the truth 2x off, one start. Started again at its answer, the fit moves less than
+ * 1e-4 of a standard error, and it took ITERATIONS_WITH_RULE iterations, where GSL's step test
+ * alone (the rule left out) took three more, its answer 1e-5 standard errors away. */
+#define ITERATIONS_WITH_RULE 10
+START_TEST(test_stops_at_negligible_decrement)
+{
+    fricreg_fit *fit = new_fit();
+    double A[NL], f[NL], z[NL], sf[NL], sz[NL], p[NP], again[NP], cov[NP * NP], iters;
+    true_levels(fit, A, f, z);
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    ck_assert_ptr_nonnull(rng);
+    gsl_rng_set(rng, 1);
+    for (int i = 0; i < NL; i++) {
+        sf[i] = 5e-4 * f[i];
+        sz[i] = 0.01 * z[i];
+        f[i] += gsl_ran_gaussian(rng, sf[i]);
+        z[i] += gsl_ran_gaussian(rng, sz[i]);
+    }
+    gsl_rng_free(rng);
+    ck_assert_int_eq(fricreg_fit_set_levels(fit, NL, FRICREG_FIT_ACCELERATION, A, f, z), 0);
+    ck_assert_int_eq(fricreg_fit_set_deviations(fit, NL, sf, sz), FRICREG_OK);
+    ck_assert_int_eq(fricreg_fit_set_starts(fit, 1), FRICREG_OK);
+    for (int j = 0; j < NP; j++)
+        ck_assert_int_eq(fricreg_fit_set_free(fit, j, truth[j] * (j % 2 ? 0.5 : 2.0),
+                                              j == FRICREG_FIT_CHI ? -1.0 : 0.0, INFINITY),
+                         FRICREG_OK);
+    ck_assert_int_eq(fricreg_fit_run(fit), FRICREG_OK);
+    ck_assert_int_eq(fricreg_fit_get_params(fit, NP, p), FRICREG_OK);
+    ck_assert_int_eq(fricreg_fit_get_covariance(fit, NP, cov, NULL, NULL), FRICREG_OK);
+    ck_assert_int_eq(fricreg_fit_get_value(fit, FRICREG_FIT_ITERATIONS, &iters), FRICREG_OK);
+    for (int j = 0; j < NP; j++)
+        ck_assert_int_eq(fricreg_fit_set_free(fit, j, p[j], j == FRICREG_FIT_CHI ? -1.0 : 0.0,
+                                              INFINITY),
+                         FRICREG_OK);
+    ck_assert_int_eq(fricreg_fit_run(fit), FRICREG_OK);
+    ck_assert_int_eq(fricreg_fit_get_params(fit, NP, again), FRICREG_OK);
+    for (int j = 0; j < NP; j++) {
+        ck_assert_double_le(fabs(again[j] - p[j]), 1e-4 * sqrt(cov[j * NP + j]));
+    }
+    ck_assert_double_eq(iters, ITERATIONS_WITH_RULE);
     fricreg_fit_free(fit);
 }
 END_TEST
@@ -449,6 +495,7 @@ int main(void)
     tcase_add_test(tc, test_backbone_closed_forms);
     tcase_add_test(tc, test_sensitivities_central_differences);
     tcase_add_test(tc, test_noise_free_recovery);
+    tcase_add_test(tc, test_stops_at_negligible_decrement);
     tcase_add_test(tc, test_coverage_of_intervals);
     tcase_add_test(tc, test_relative_residuals);
     tcase_add_test(tc, test_bad_input);

@@ -7,8 +7,10 @@
 #include <string.h>
 
 #include <gsl/gsl_blas.h>
+#include <gsl/gsl_linalg.h>
 #include <gsl/gsl_multifit_nlinear.h>
 
+#include "base/free_all.h"
 #include "base/gsl_mem.h"
 #include "fit_stats.h"
 #include "hb_model.h"
@@ -19,12 +21,18 @@
 #define XTOL 1e-10
 #define GTOL 1e-12
 #define STATIONARY_GTOL 1e-8 /* a start no step improves: a solution if this stationary */
-#define BAD_RESIDUAL 1e100   /* where the model cannot be evaluated: a step GSL rejects */
+/* Converged also where a Gauss-Newton step would lower r^T r by less than this share of it: the
+ * step left is then below sqrt(1e-9 dof), about 1e-4 of a standard error (docs/identification.md),
+ * and each further iteration costs an HB model a backbone march. */
+#define DECREMENT_TOL 1e-9
+#define BAD_RESIDUAL 1e100 /* where the model cannot be evaluated: a step GSL rejects */
 
 struct run {
     struct fr_fit_problem pb;
-    gsl_vector *r; /* scratch for the Jacobian's evaluation */
-    int failed;    /* an evaluation since the last init failed */
+    gsl_vector *r;         /* scratch for the Jacobian's evaluation */
+    int failed;            /* an evaluation since the last init failed */
+    gsl_matrix *qr;        /* [rows m] scratch: the Jacobian's Householder QR */
+    gsl_vector *tau, *qtf; /* [m], [rows]: its reflectors, Q^T r */
 };
 
 static int residual_cb(const gsl_vector *x, void *params, gsl_vector *f)
@@ -56,9 +64,27 @@ static double scaled_gradient(const gsl_multifit_nlinear_workspace *w)
     return g;
 }
 
+/* 1 if the Gauss-Newton step at the iterate would lower r^T r by at most DECREMENT_TOL of it:
+ * the decrement |P_J r|^2, r's projection on the Jacobian's range, is the first m entries of
+ * Q^T r (a rank-deficient J's Q spans more than its range: the test errs on going on). */
+static int decrement_small(const gsl_multifit_nlinear_workspace *w, struct run *run)
+{
+    const gsl_vector *r = gsl_multifit_nlinear_residual(w);
+    gsl_matrix_memcpy(run->qr, gsl_multifit_nlinear_jac(w));
+    gsl_vector_memcpy(run->qtf, r);
+    if (gsl_linalg_QR_decomp(run->qr, run->tau) != GSL_SUCCESS ||
+        gsl_linalg_QR_QTvec(run->qr, run->tau, run->qtf) != GSL_SUCCESS)
+        return 0;
+    double rr = gsl_blas_dnrm2(r), d = 0.0;
+    for (size_t k = 0; k < run->tau->size; k++)
+        d += gsl_vector_get(run->qtf, k) * gsl_vector_get(run->qtf, k);
+    return d <= DECREMENT_TOL * rr * rr;
+}
+
 /* Iterates from the initialized point; 1 if it converged, 0 if not (GSL's driver's loop, but a
- * start no step can improve is a solution where its gradient vanishes). */
-static int iterate(gsl_multifit_nlinear_workspace *w, size_t *iters)
+ * start no step can improve is a solution where its gradient vanishes, and one whose
+ * Gauss-Newton decrement is negligible has converged). */
+static int iterate(gsl_multifit_nlinear_workspace *w, struct run *run, size_t *iters)
 {
     int status = GSL_CONTINUE, info;
     size_t iter = 0;
@@ -71,6 +97,8 @@ static int iterate(gsl_multifit_nlinear_workspace *w, size_t *iters)
         }
         iter++;
         status = gsl_multifit_nlinear_test(XTOL, GTOL, 0.0, &info, w);
+        if (status == GSL_CONTINUE && decrement_small(w, run))
+            status = GSL_SUCCESS;
     }
     *iters = iter;
     return status == GSL_SUCCESS || status == GSL_ETOLF || status == GSL_ETOLX ||
@@ -106,7 +134,10 @@ static size_t solve_starts(fricreg_fit *fit, struct run *run, double best[], dou
     gsl_multifit_nlinear_parameters params = gsl_multifit_nlinear_default_parameters();
     gsl_vector *x = fr_gsl_vector_new(m);
     run->r = fr_gsl_vector_new(rows);
-    gsl_multifit_nlinear_workspace *w = x && run->r
+    run->qr = fr_gsl_matrix_new(rows, m);
+    run->tau = fr_gsl_vector_new(m);
+    run->qtf = fr_gsl_vector_new(rows);
+    gsl_multifit_nlinear_workspace *w = x && run->r && run->qr && run->tau && run->qtf
                                             ? gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust,
                                                                          &params, rows, m)
                                             : NULL;
@@ -118,7 +149,7 @@ static size_t solve_starts(fricreg_fit *fit, struct run *run, double best[], dou
         run->failed = 0;
         gsl_multifit_nlinear_init(x, &fdf, w);
         size_t iters = 0;
-        int ok = !run->failed && iterate(w, &iters);
+        int ok = !run->failed && iterate(w, run, &iters);
         double cost = gsl_blas_dnrm2(w->f);
         res->nfev += fdf.nevalf;
         res->njev += fdf.nevaldf;
@@ -136,8 +167,7 @@ static size_t solve_starts(fricreg_fit *fit, struct run *run, double best[], dou
     int nomem = w == NULL;
     if (w != NULL)
         gsl_multifit_nlinear_free(w);
-    free(x);
-    free(run->r);
+    FR_FREE_ALL(x, run->r, run->qr, run->tau, run->qtf);
     return nomem ? (size_t)-1 : converged;
 }
 
