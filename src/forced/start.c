@@ -30,7 +30,8 @@
 static int on_linear_branch(fricreg_hb *hb, const char *fn, double omega, int *yes)
 {
     size_t nq = hb->nq;
-    double *q0 = hb->tan, *q1 = hb->tn, s0, s1;
+    struct fr_hb_vectors v = fr_hb_vectors(hb);
+    double *q0 = v.tan, *q1 = v.tn, s0, s1;
     *yes = 0;
     hb->level = 0.0;
     int status = fr_hb_solve_at(hb, fn, omega, NULL, 0);
@@ -65,7 +66,7 @@ static int level_start(fricreg_hb *hb, const char *fn, double omega)
     int linear = 0, status = on_linear_branch(hb, fn, omega, &linear);
     hb->level = 1.0;
     if (status == FRICREG_OK && linear)
-        return fr_hb_solve_at(hb, fn, omega, hb->tn, 1);
+        return fr_hb_solve_at(hb, fn, omega, fr_hb_vectors(hb).tn, 1);
     if (status == FRICREG_ENOMEM || hb->stopped)
         return status;
     struct fr_hb_branch b = {.level = 1, .omega = omega, .par = "level"};
