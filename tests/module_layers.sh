@@ -145,21 +145,36 @@ END {
 
 # What a module hangs on the driver is its own: each pointer "struct fr_hb_X *field;" of
 # hb/hb_internal.h whose struct a module's *_internal.h lays out ("struct fr_hb_X {") is named
-# ("->field") in no file outside that module's folder. Others reach it through its functions.
+# ("->field") in no file outside that module's folder that sees the driver's layout (includes
+# hb/hb_internal.h, directly or through headers of src/). Others reach it through its
+# functions.
 # shellcheck disable=SC2046 # the sources are words
 awk '
-FNR == 1 { file = FILENAME; dir = file; sub(/\/.*/, "", dir) }
+FNR == 1 { file = FILENAME; dir = file; sub(/\/[^\/]*$/, "", dir); top = file; sub(/\/.*/, "", top) }
+match($0, /^#include "[^"]*"/) {
+    inc = substr($0, 11, RLENGTH - 11)
+    incs[file] = incs[file] " " (inc ~ /\// ? inc : dir "/" inc) }
 file ~ /_internal\.h$/ && match($0, /^struct fr_hb_[a-z_0-9]+ \{/) {
-    name = substr($0, 8, RLENGTH - 9); lays[name] = dir }
+    name = substr($0, 8, RLENGTH - 9); lays[name] = top }
 file == "hb/hb_internal.h" && match($0, /^ *struct fr_hb_[a-z_0-9]+ \*[a-z_0-9]+;/) {
     split(substr($0, RSTART, RLENGTH), w, /[ *;]+/); i = (w[1] == "" ? 2 : 1)
     hung[w[i + 2]] = w[i + 1] }
 { text[file] = text[file] "\n" $0 }
 END {
+    sees["hb/hb_internal.h"] = 1
+    do { # the files that include one that sees it, round after round
+        added = 0
+        for (f in text)
+            if (!(f in sees)) {
+                k = split(incs[f], list, " ")
+                for (i = 1; i <= k; i++)
+                    if (list[i] in sees) { sees[f] = 1; added++; break }
+            }
+    } while (added > 0)
     for (field in hung) {
         owner = lays[hung[field]]
         if (owner == "" || owner == "hb") continue
-        for (f in text) {
+        for (f in sees) {
             d = f; sub(/\/.*/, "", d)
             if (d != owner && text[f] ~ ("->" field "([^a-z_0-9]|$)")) {
                 print "FAIL: src/" f " names ->" field ", the state " owner "/ hangs on the driver, outside src/" owner "/"

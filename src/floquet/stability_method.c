@@ -53,11 +53,14 @@ int fr_hb_stability(fricreg_hb *hb, const char *fn, double omega, double *out)
 
 void fr_hb_stability_free(fricreg_hb *hb)
 {
+    if (hb->stability == NULL)
+        return;
     fr_hb_hill_free(hb);
     fr_hb_monodromy_free(hb);
     fr_hb_reduction_free(hb);
-    free(hb->xsol);
-    hb->xsol = hb->hill_x = NULL;
+    free(hb->stability->xsol);
+    free(hb->stability);
+    hb->stability = NULL;
 }
 
 int fricreg_hb_set_stability(fricreg_hb *hb, int enable)
@@ -77,17 +80,22 @@ int fricreg_hb_set_stability(fricreg_hb *hb, int enable)
                              "fricreg_hb_set_stability_method FRICREG_HB_STABILITY_MONODROMY "
                              "first)"
                            : "");
-    if (enable == hb->stability)
+    if (enable == fr_hb_stability_on(hb))
         return FRICREG_OK;
     if (enable) {
         /* the last solution's and a trial point's, and the workspace of the method in force:
          * the solves then allocate nothing unless the elements change the method (the
          * condensed method's, whose order depends on Ω, is made and grown by the solves) */
         size_t xw = 4 + 4 * hb->n;
-        if ((hb->xsol = malloc(2 * xw * sizeof(double))) == NULL)
+        struct fr_hb_stability *st = calloc(1, sizeof *st);
+        double *x = st != NULL ? malloc(2 * xw * sizeof(double)) : NULL;
+        if (x == NULL) {
+            free(st);
             return fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for the stability of %zu dofs", fn,
                            hb->n);
-        hb->hill_x = hb->xsol + xw;
+        }
+        *st = (struct fr_hb_stability){.xsol = x, .trial = x + xw};
+        hb->stability = st;
         hb->release[FR_HB_PART_STABILITY] = fr_hb_stability_free;
         int method = fr_hb_stability_in_force(hb), status = FRICREG_OK;
         if (method == FRICREG_HB_STABILITY_HILL)
@@ -101,7 +109,6 @@ int fricreg_hb_set_stability(fricreg_hb *hb, int enable)
     } else {
         fr_hb_stability_free(hb);
     }
-    hb->stability = enable;
     /* the stored points' and the last solution's extras have no stability (or another width):
      * the points are dropped (their store counts the serial, forced/) */
     hb->have_solution = 0;

@@ -86,7 +86,7 @@ static int test_at(fricreg_hb *hb, struct fr_hb_branch *b, const double *ya, con
     if (status != FRICREG_OK)
         return status;
     *omega = fr_hb_branch_omega(b, hb->qw[nq] * b->ws);
-    double tx[2], *x = t.kind >= 0 ? hb->hill_x : tx;
+    double tx[2], *x = t.kind >= 0 ? fr_hb_stability_trial(hb) : tx;
     if (t.kind >= 0)
         status = fr_hb_stability(hb, fn, *omega, x + 2);
     else if ((status = fr_hb_tangent(hb, fn, hb->rw)) == FRICREG_OK) {
@@ -174,7 +174,7 @@ void fr_hb_locate_bifurcations(fricreg_hb *hb, struct fr_hb_branch *b)
             t.type = FRICREG_HB_TP;
         else if (x0[1] * x1[1] < 0.0)
             t.type = FRICREG_HB_BP;
-        else if (hb->stability && x0[2] != x1[2]) {
+        else if (fr_hb_stability_on(hb) && x0[2] != x1[2]) {
             /* the exponent that crossed: the largest on the unstable side */
             int up = x1[2] == 0.0;
             const double *xu = up ? x1 : x0;

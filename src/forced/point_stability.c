@@ -6,18 +6,19 @@
 #include <string.h>
 
 #include "forced_internal.h"
+#include "floquet/stability_method.h"
 
 /* The stability record of stored point k or of the last solution (FRICREG_HB_SOLUTION) into
  * *x: x[2] stable, x[3] the largest |μ|, x[4 ..] the 2n exponents (re, im). */
 static int stability_record(fricreg_hb *hb, const char *fn, size_t k, const double **x)
 {
-    if (!hb->stability)
+    if (!fr_hb_stability_on(hb))
         return fr_fail(hb, FRICREG_EINVAL, "%s: stability is off (fricreg_hb_set_stability)", fn);
     if (k == FRICREG_HB_SOLUTION) {
         if (!hb->have_solution)
             return fr_fail(hb, FRICREG_EINVAL,
                            "%s: no solution (none yet, or the model changed since)", fn);
-        *x = hb->xsol;
+        *x = fr_hb_stability_record(hb);
         return FRICREG_OK;
     }
     size_t npts = fr_hb_points_held(hb);

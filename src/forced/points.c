@@ -140,7 +140,7 @@ static int forced_made(fricreg_hb *hb)
  * room follows nq, which the element setters change (1 or 2 rows per element). */
 int fr_hb_points_reserve(fricreg_hb *hb, size_t want)
 {
-    size_t stride = hb->nq + 1, xw = FR_HB_XW(hb);
+    size_t stride = hb->nq + 1, xw = fr_hb_extras_width(hb);
     if (want > hb->max_points)
         want = hb->max_points;
     if (forced_made(hb) != FRICREG_OK)
@@ -176,7 +176,7 @@ int fr_hb_points_reserve(fricreg_hb *hb, size_t want)
 int fr_hb_store_point(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, double p, double tw,
                       double det, int hill_done)
 {
-    size_t w = 1 + hb->n, nq = hb->nq, xw = FR_HB_XW(hb);
+    size_t w = 1 + hb->n, nq = hb->nq, xw = fr_hb_extras_width(hb);
     double omega = fr_hb_branch_omega(b, p);
     b->count++;
     if (!b->keep)
@@ -185,13 +185,15 @@ int fr_hb_store_point(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, do
     int status = f->npts < f->cap ? FRICREG_OK : fr_hb_points_reserve(hb, 2 * f->cap);
     if (status != FRICREG_OK)
         return status;
-    if (hb->stability && !hill_done && (status = fr_hb_stability(hb, fn, omega, hb->xsol + 2)))
+    int stability = fr_hb_stability_on(hb);
+    if (stability && !hill_done &&
+        (status = fr_hb_stability(hb, fn, omega, fr_hb_stability_record(hb) + 2)))
         return status;
     double *x = f->xpts + f->npts * xw;
     x[0] = tw;
     x[1] = det;
-    if (hb->stability)
-        memcpy(x + 2, hb->xsol + 2, (xw - 2) * sizeof(double));
+    if (stability)
+        memcpy(x + 2, fr_hb_stability_record(hb) + 2, (xw - 2) * sizeof(double));
     f->pts[f->npts * w] = omega;
     fr_hb_rms(hb, f->pts + f->npts * w + 1);
     memcpy(f->qpts + f->npts * (nq + 1), hb->qt, nq * sizeof(double));

@@ -14,6 +14,7 @@
 #include "start.h"
 #include "hb/dynamic.h"
 #include "hb/residual.h"
+#include "floquet/stability_method.h"
 
 /* The excitation level where fricreg_hb_solve's start begins: small enough for every element
  * to stay in the regime of the stuck guess (a Jenkins element slips once kt |q| > mu N, its
@@ -114,7 +115,7 @@ static const start_route START_ROUTES[] = {level_start, plain_start, frequency_s
 /* Whether the kept solution is unstable by the stability in force (none: not unstable). */
 static int kept_unstable(const fricreg_hb *hb)
 {
-    return hb->stability && hb->xsol[2] == 0.0;
+    return fr_hb_stability_on(hb) && fr_hb_stability_record(hb)[2] == 0.0;
 }
 
 /* The routes in turn until one reaches a solution that is not unstable: a route can land on

@@ -5,8 +5,9 @@
  * residual.h evaluates (R), its Jacobian and its Ω derivative, newton.h solves at one Ω,
  * recover.h gives the displacements. Complex numbers are stored as (re, im) pairs of doubles.
  * Included inside src/hb/ and by the modules built on the driver: floquet/ (stability), nma/
- * (nonlinear modes), qsma/ (quasi-static modes), forced/ (the forced response); each hangs its
- * own state on the driver (its release table) and names no other's. */
+ * (nonlinear modes) and forced/ (the forced response), which each hang their own state on it
+ * (its release table) and name no other's, and qsma/ (quasi-static modes), which reads its
+ * model. */
 #ifndef FRICREG_HB_INTERNAL_H
 #define FRICREG_HB_INTERNAL_H
 
@@ -28,9 +29,7 @@
 #define FR_HB_HALVINGS 10
 
 struct fr_hb_lu;        /* sparse.c: one harmonic's LU factor */
-struct fr_hb_hill;      /* floquet/hill.c: Hill's matrices */
-struct fr_hb_mono;      /* floquet/monodromy.c: the exact monodromy's workspace */
-struct fr_hb_reduction; /* floquet/reduction.c: the condensed stability's reduced model */
+struct fr_hb_stability; /* floquet/floquet_internal.h: the stability's state */
 struct fr_aft_march;    /* joint/aft_march.h: the march's workspace */
 struct fr_hb_forced;    /* forced/forced_internal.h: the forced response's branch */
 
@@ -156,24 +155,17 @@ struct fricreg_hb {
     int *piv2;      /* [nq + 1] A's row interchanges (lu.c: LAPACK's) */
     int iterations; /* of the last Newton solve */
 
-    /* the last solution, and its stability (floquet/) when that is on: XW(hb) numbers as a
-     * stored point's (forced/forced_internal.h) */
+    /* the last solution (its stability, when on, is floquet/'s) */
     int have_solution;
     double omega_sol, level_sol; /* its Ω and excitation level λ */
     double *qsol;                /* [nq] */
-    double *xsol;                /* [XW] */
 
-    /* Stability (floquet/), on with fricreg_hb_set_stability: Hill's method's workspace, made
-     * at the first solution that needs it */
-    int stability;
-    struct fr_hb_hill *hill; /* floquet/hill.c: Hill's matrices, NULL: none yet */
-    double *hill_x;          /* [XW]: a trial point's stability, for bifurcations (xsol's block) */
-    /* how (enum fricreg_hb_stability_method, floquet/stability_method.c): Hill's, or the exact
-     * monodromy (floquet/monodromy.c) with its workspace, grown at the first solution that needs more */
+    /* Stability (floquet/floquet_internal.h): its state while on (fricreg_hb_set_stability),
+     * NULL: off; and the method chosen (enum fricreg_hb_stability_method,
+     * fricreg_hb_set_stability_method), a setting kept while stability is off */
+    struct fr_hb_stability *stability;
     int stability_method;
-    struct fr_hb_mono *mono;
-    struct fr_hb_reduction *reduction; /* the condensed method's, built for model_serial */
-    unsigned long model_serial;        /* counts the model's changes (fr_hb_invalidate) */
+    unsigned long model_serial; /* counts the model's changes (fr_hb_invalidate) */
 
     /* the forced response's branch, its points and bifurcations (forced/forced_internal.h),
      * NULL: none stored yet */
@@ -201,11 +193,6 @@ struct fricreg_hb {
 
     struct fr_error err;
 };
-
-/* The numbers kept with each point (xpts) and the last solution: 2 (the tangent's Ω component,
- * the determinant's sign), and with stability 2 + 4 n (stable, the largest |multiplier|, the 2n
- * exponents). */
-#define FR_HB_XW(hb) ((hb)->stability ? 4 + 4 * (hb)->n : 2)
 
 /* Element e's sliders: their count, stiffnesses and slip forces (friction coefficients with
  * lift-off). */
