@@ -96,7 +96,6 @@ struct fricreg_hb {
     double xi;
     int no_c, free_vibration;
     struct fr_hb_nma *nma; /* the backbone's points and workspace, NULL: none yet */
-    int have_backbone;     /* the model is still the backbone's (cleared by a model change) */
 
     double tol;
     int max_iter;

@@ -13,13 +13,12 @@
 #include "busy.h"
 
 /* A model change: the factors and the kept solution no longer hold, nor (model_serial counted)
- * what the modules above made on the old model (the forced response's branch, the condensed
- * stability's reduced model). */
+ * what the modules above made on the old model (the forced response's branch, the backbone,
+ * the condensed stability's reduced model). */
 void fr_hb_invalidate(fricreg_hb *hb)
 {
     hb->factored_omega = NAN;
     hb->have_solution = 0;
-    hb->have_backbone = 0;
     hb->model_serial++;
 }
 
