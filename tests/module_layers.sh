@@ -6,8 +6,12 @@
 # and includes between its files either (a file uses only files that do not use it back,
 # directly or round about; its module's *_internal.h, the layout, aside); and a folder that lists its files by floor (src/README.md's second table) lists
 # every .c of it, and its files include the headers of, and call, only its files on lower
-# floors. Also: every folder of src/ is in the table, ctx_internal.h is included only inside
-# src/ctx/, and no file of src/ is over 600 lines.
+# floors. Also: every folder of src/ is in the table, a module's *_internal.h (its object's
+# layout) is included only inside its folder (hb/hb_internal.h, the driver's, aside: the
+# modules built on the driver include it), what a module hangs on the driver (a pointer of
+# hb/hb_internal.h to a struct that the module's *_internal.h lays out, e.g. forced/'s
+# hb->forced) is named only inside that module's folder, and no file of src/ is over 600
+# lines.
 # Includes are read from the sources; calls from the object files of a built tree (nm), when
 # BUILD_DIR is given. A fixed handful of processes (find, two nm, a few awk) however many
 # files, includes and symbols: an awk per lookup took a minute.
@@ -111,7 +115,8 @@ FILENAME == ARGV[4] { # includes of internal headers
         mf = floor_of(module); uf = floor_of(used)
         if (uf == "" || (mf != "" && uf + 0 >= mf + 0))
             fail("src/" file " (floor " mf ") includes " inc " of " used "/ (floor " (uf == "" ? "?" : uf) ")")
-        if (inc ~ /ctx_internal\.h$/) fail("src/" file " includes " inc " outside src/ctx/")
+        if (inc ~ /_internal\.h$/ && inc != "hb/hb_internal.h")
+            fail("src/" file " includes " inc " outside src/" used "/")
     }
     close(file)
     next
@@ -137,6 +142,48 @@ END {
     printf "%d passed, %d failed\n", checked - fails, fails
     exit fails > 0
 }' "$work/floors" "$work/dirs" "$work/files" "$work/sources" "$work/calls" "$work/edges" || status=1
+
+# What a module hangs on the driver is its own: each pointer "struct fr_hb_X *field;" of
+# hb/hb_internal.h whose struct a module's *_internal.h lays out ("struct fr_hb_X {") is named
+# ("->field") in no file outside that module's folder that sees the driver's layout (includes
+# hb/hb_internal.h, directly or through headers of src/). Others reach it through its
+# functions.
+# shellcheck disable=SC2046 # the sources are words
+awk '
+FNR == 1 { file = FILENAME; dir = file; sub(/\/[^\/]*$/, "", dir); top = file; sub(/\/.*/, "", top) }
+match($0, /^#include "[^"]*"/) {
+    inc = substr($0, 11, RLENGTH - 11)
+    incs[file] = incs[file] " " (inc ~ /\// ? inc : dir "/" inc) }
+file ~ /_internal\.h$/ && match($0, /^struct fr_hb_[a-z_0-9]+ \{/) {
+    name = substr($0, 8, RLENGTH - 9); lays[name] = top }
+file == "hb/hb_internal.h" && match($0, /^ *struct fr_hb_[a-z_0-9]+ \*[a-z_0-9]+;/) {
+    split(substr($0, RSTART, RLENGTH), w, /[ *;]+/); i = (w[1] == "" ? 2 : 1)
+    hung[w[i + 2]] = w[i + 1] }
+{ text[file] = text[file] "\n" $0 }
+END {
+    sees["hb/hb_internal.h"] = 1
+    do { # the files that include one that sees it, round after round
+        added = 0
+        for (f in text)
+            if (!(f in sees)) {
+                k = split(incs[f], list, " ")
+                for (i = 1; i <= k; i++)
+                    if (list[i] in sees) { sees[f] = 1; added++; break }
+            }
+    } while (added > 0)
+    for (field in hung) {
+        owner = lays[hung[field]]
+        if (owner == "" || owner == "hb") continue
+        for (f in sees) {
+            d = f; sub(/\/.*/, "", d)
+            if (d != owner && text[f] ~ ("->" field "([^a-z_0-9]|$)")) {
+                print "FAIL: src/" f " names ->" field ", the state " owner "/ hangs on the driver, outside src/" owner "/"
+                fails++
+            }
+        }
+    }
+    exit fails > 0
+}' $(cat "$work/sources") || status=1
 
 # Includes between the files of one folder, as edges like the calls' ("dir/x.c dir/y.c", a
 # header standing for the .c beside it): a file that includes the header of a file that calls

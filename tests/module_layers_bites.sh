@@ -1,9 +1,11 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-3.0-or-later
 # The layering check can fail: on copies of src/ with one arrow run back up (an include, a
-# call), ctx_internal.h included outside src/ctx/, a folder missing from the module table, or
-# a circle of calls or includes inside a folder, or inside forced/ a file unlisted by floor, an include or a
-# call up its floors, it must fail and name the break. Usage: module_layers_bites.sh CHECK SRC_DIR C_COMPILER
+# call), ctx_internal.h included outside src/ctx/, forced_internal.h included from a floor
+# above forced/, forced/'s state on the driver (hb->forced) named outside src/forced/, a
+# folder missing from the module table, or a circle of calls or includes inside a folder, or
+# inside forced/ a file unlisted by floor, an include or a call up its floors, it must fail
+# and name the break. Usage: module_layers_bites.sh CHECK SRC_DIR C_COMPILER
 check=$1 src=$2 cc=$3
 work=$(mktemp -d "${TMPDIR:-/tmp}/fricreg-layers-bites.XXXXXX")
 trap 'rm -rf "$work"' EXIT
@@ -30,6 +32,18 @@ expect "an include between siblings" "src/sim/sim.c (floor 3) includes structure
 fresh
 sed 's|#include "ctx/ctx_driver.h"|#include "ctx/ctx_internal.h"|' "$src/sim/sim.c" >"$work/src/sim/sim.c"
 expect "ctx_internal.h outside the context" "src/sim/sim.c includes ctx/ctx_internal.h outside src/ctx/"
+
+# A module's layout included by a module above it, which the floors allow.
+fresh
+echo '#include "forced/forced_internal.h"' >>"$work/src/fit/fit_run.c"
+expect "forced_internal.h outside forced/" "src/fit/fit_run.c includes forced/forced_internal.h outside src/forced/"
+
+# The forced response's store read below it, through the driver's pointer: floquet/ clearing
+# the points as it once did on a change of stability.
+fresh
+echo 'static void fr_drop(fricreg_hb *hb) { hb->forced->npts = 0; }' \
+    >>"$work/src/floquet/stability_method.c"
+expect "forced/'s state named outside forced/" "src/floquet/stability_method.c names ->forced, the state forced/ hangs on the driver, outside src/forced/"
 
 fresh
 mkdir "$work/src/joints" && echo 'int fr_joint;' >"$work/src/joints/joint.c"

@@ -372,6 +372,11 @@ START_TEST(contact_pair_default_start_stable)
     double om;
     ck_assert_int_eq(fricreg_hb_point(hb, 0, &om, s.n, first), FRICREG_OK);
     ck_assert_double_eq(om, 11.5);
+    /* stability turned off: the points, stored with it, are dropped */
+    ck_assert_uint_gt(fricreg_hb_points(hb), 1);
+    ck_assert_int_eq(fricreg_hb_set_stability(hb, 0), FRICREG_OK);
+    ck_assert_uint_eq(fricreg_hb_points(hb), 0);
+    ck_assert_int_eq(fricreg_hb_point(hb, 0, &om, s.n, up), FRICREG_EINVAL);
     fricreg_hb_free(hb);
     fricreg_hb_free(stable_route(&s, H, 12.5, 11.5, down));
     fricreg_hb_free(stable_route(&s, H, 5.0, 11.5, up));

@@ -13,6 +13,23 @@
  * multipliers' rounding, far below the damping of any model worth a stability verdict. */
 #define FR_HB_STABLE_TOL 1e-6
 
+struct fr_hb_hill;      /* below: Hill's matrices */
+struct fr_hb_mono;      /* monodromy.c: the exact monodromy's workspace */
+struct fr_hb_reduction; /* reduction.c: the condensed stability's reduced model */
+
+/* The stability's state, hung on the driver as hb->stability while stability is on
+ * (stability_method.c, fricreg_hb_set_stability) with its release: the workspace of each
+ * method, made at the first solution that needs it (the method in force's at
+ * fricreg_hb_set_stability), and the records [XW] of the last solution and of a trial point
+ * (the bifurcations' bisection), their stability from x[2] on (fr_hb_stability_record). */
+struct fr_hb_stability {
+    struct fr_hb_hill *hill;           /* Hill's matrices, NULL: none yet */
+    struct fr_hb_mono *mono;           /* grown at the first solution that needs more */
+    struct fr_hb_reduction *reduction; /* the condensed method's, built for model_serial */
+    double *xsol;                      /* [XW] the last solution's */
+    double *trial;                     /* [XW] a trial point's */
+};
+
 /* Hill's method's workspace (hill.c): N = n nc Fourier coefficients of x; the companion matrix
  * A of the quadratic eigenproblem [2N 2N], its eigenvalues eval [2N] complex, LAPACK's
  * workspace work [lwork + 4N]; M's LU mlu [n n] with pivots piv [n], a column col [n]. */

@@ -34,7 +34,7 @@ static const double TWO_PI = 6.283185307179586;
 int fr_hb_hill_reserve(fricreg_hb *hb, const char *fn)
 {
     size_t n = hb->n, N2 = 2 * n * hb->nc;
-    if (hb->hill != NULL)
+    if (hb->stability->hill != NULL)
         return FRICREG_OK;
     struct fr_hb_hill *w = calloc(1, sizeof *w);
     if (w != NULL) {
@@ -45,7 +45,7 @@ int fr_hb_hill_reserve(fricreg_hb *hb, const char *fn)
         w->mlu = malloc((n * n + n) * sizeof(double));
         w->piv = malloc(n * sizeof *w->piv);
     }
-    hb->hill = w;
+    hb->stability->hill = w;
     if (!w || !w->A || !w->eval || !w->work || !w->mlu || !w->piv) {
         fr_hb_hill_free(hb);
         return fr_fail(hb, FRICREG_ENOMEM,
@@ -57,12 +57,12 @@ int fr_hb_hill_reserve(fricreg_hb *hb, const char *fn)
 
 void fr_hb_hill_free(fricreg_hb *hb)
 {
-    struct fr_hb_hill *w = hb->hill;
+    struct fr_hb_hill *w = hb->stability->hill;
     if (w == NULL)
         return;
     free(w->A); /* one block (gsl_mem.h) */
     FR_FREE_ALL(w->eval, w->work, w->mlu, w->piv, w);
-    hb->hill = NULL;
+    hb->stability->hill = NULL;
 }
 
 /* The dense model's damping entry: C, or a0 M + a1 K. */
@@ -79,7 +79,7 @@ static void linear_entry(fricreg_hb *hb, double omega, size_t k, size_t l, doubl
                          double kk)
 {
     size_t nc = hb->nc, N = hb->n * nc, r = N + k * nc, col = l * nc;
-    gsl_matrix *A = hb->hill->A;
+    gsl_matrix *A = hb->stability->hill->A;
     *gsl_matrix_ptr(A, r, col) += kk;
     *gsl_matrix_ptr(A, r, N + col) += c;
     for (int h = 1; h <= hb->H; h++) {
@@ -106,17 +106,17 @@ static void linear_blocks(fricreg_hb *hb, double omega)
             for (size_t l = 0; l < n; l++) {
                 size_t i = k * n + l;
                 linear_entry(hb, omega, k, l, hb->M[i], damping(hb, i), hb->K[i]);
-                hb->hill->mlu[i] = hb->M[i];
+                hb->stability->hill->mlu[i] = hb->M[i];
             }
         return;
     }
-    memset(hb->hill->mlu, 0, n * n * sizeof(double));
+    memset(hb->stability->hill->mlu, 0, n * n * sizeof(double));
     for (size_t l = 0; l < n; l++)
         for (int64_t p = hb->Dp[l]; p < hb->Dp[l + 1]; p++) {
             size_t k = (size_t)hb->Di[p];
             double c = hb->rayleigh ? hb->a0 * hb->vM[p] + hb->a1 * hb->vK[p] : hb->vC[p];
             linear_entry(hb, omega, k, l, hb->vM[p], c, hb->vK[p]);
-            hb->hill->mlu[k * n + l] = hb->vM[p];
+            hb->stability->hill->mlu[k * n + l] = hb->vM[p];
         }
 }
 
@@ -125,7 +125,7 @@ static void linear_blocks(fricreg_hb *hb, double omega)
 static void element_blocks(fricreg_hb *hb)
 {
     size_t n = hb->n, nc = hb->nc, N = n * nc;
-    gsl_matrix *A = hb->hill->A;
+    gsl_matrix *A = hb->stability->hill->A;
     for (size_t e = 0; e < hb->me; e++) {
         size_t rows = fr_hb_rows_of(hb, e), b = rows * nc, r0 = hb->erow[e];
         const double *block = fr_hb_block_of(hb, e);
@@ -151,18 +151,20 @@ static void element_blocks(fricreg_hb *hb)
 static int companion(fricreg_hb *hb, const char *fn)
 {
     size_t n = hb->n, nc = hb->nc, N = n * nc;
-    gsl_matrix *A = hb->hill->A;
+    gsl_matrix *A = hb->stability->hill->A;
     /* hill_mlu holds M (linear_blocks) */
-    int status = fr_hb_mass_lu(hb, fn, "Hill's method", hb->n, hb->hill->mlu, hb->hill->piv);
+    int status = fr_hb_mass_lu(hb, fn, "Hill's method", hb->n, hb->stability->hill->mlu,
+                               hb->stability->hill->piv);
     if (status != FRICREG_OK)
         return status;
     for (size_t j = 0; j < 2 * N; j++)
         for (size_t c = 0; c < nc; c++) {
             for (size_t k = 0; k < n; k++)
-                hb->hill->col[k] = gsl_matrix_get(A, N + k * nc + c, j);
-            fr_hb_lu_solve_factored(hb->hill->mlu, n, hb->hill->piv, hb->hill->col);
+                hb->stability->hill->col[k] = gsl_matrix_get(A, N + k * nc + c, j);
+            fr_hb_lu_solve_factored(hb->stability->hill->mlu, n, hb->stability->hill->piv,
+                                    hb->stability->hill->col);
             for (size_t k = 0; k < n; k++)
-                gsl_matrix_set(A, N + k * nc + c, j, -hb->hill->col[k]);
+                gsl_matrix_set(A, N + k * nc + c, j, -hb->stability->hill->col[k]);
         }
     for (size_t j = 0; j < N; j++)
         gsl_matrix_set(A, j, N + j, 1.0);
@@ -192,7 +194,7 @@ static double selection_key(double im, double omega, int *second)
 static void select_exponents(const fricreg_hb *hb, double omega, double *out)
 {
     size_t N2 = 2 * hb->n * hb->nc, want = 2 * hb->n;
-    const double *ev = hb->hill->eval;
+    const double *ev = hb->stability->hill->eval;
     double last = -1.0;
     int last_second = 0;
     size_t last_at = 0;
@@ -229,25 +231,26 @@ int fr_hb_hill(fricreg_hb *hb, const char *fn, double omega, double *out)
     int status = fr_hb_hill_reserve(hb, fn);
     if (status != FRICREG_OK)
         return status;
-    gsl_matrix_set_zero(hb->hill->A);
+    gsl_matrix_set_zero(hb->stability->hill->A);
     linear_blocks(hb, omega);
     element_blocks(hb);
     status = companion(hb, fn);
     if (status != FRICREG_OK)
         return status;
     for (size_t k = 0; k < N2 * N2; k++)
-        if (!isfinite(hb->hill->A->data[k]))
+        if (!isfinite(hb->stability->hill->A->data[k]))
             return fr_fail(hb, FRICREG_ENONFINITE,
                            "%s: stability: Hill's matrix overflows at Omega = %g", fn, omega);
-    double *wr = hb->hill->work + hb->hill->lwork, *wi = wr + N2;
-    if (fr_hb_eigenvalues(hb->hill->A->data, N2, wr, wi, hb->hill->work, hb->hill->lwork) != 0)
+    double *wr = hb->stability->hill->work + hb->stability->hill->lwork, *wi = wr + N2;
+    if (fr_hb_eigenvalues(hb->stability->hill->A->data, N2, wr, wi, hb->stability->hill->work,
+                          hb->stability->hill->lwork) != 0)
         return fr_fail(hb, FRICREG_EINTEGRATOR,
                        "%s: stability: the QR iteration on Hill's matrix did not converge at "
                        "Omega = %g",
                        fn, omega);
     for (size_t i = 0; i < N2; i++) { /* (re, im) pairs, as select_exponents reads them */
-        hb->hill->eval[2 * i] = wr[i];
-        hb->hill->eval[2 * i + 1] = wi[i];
+        hb->stability->hill->eval[2 * i] = wr[i];
+        hb->stability->hill->eval[2 * i + 1] = wi[i];
     }
     select_exponents(hb, omega, out + 2);
     double T = TWO_PI / omega, top = -INFINITY;

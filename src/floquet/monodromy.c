@@ -67,21 +67,21 @@ struct fr_hb_mono {
 
 void fr_hb_monodromy_free(fricreg_hb *hb)
 {
-    struct fr_hb_mono *w = hb->mono;
+    struct fr_hb_mono *w = hb->stability->mono;
     if (w == NULL)
         return;
     FR_FREE_ALL(w->Mlu, w->eig_work, w->piv, w->orbit_work, w->orbit_piv);
     fr_hb_schedule_free(&w->sc);
     fr_hb_pieces_free(&w->pieces);
     free(w);
-    hb->mono = NULL;
+    hb->stability->mono = NULL;
 }
 
 /* The workspace for a model of order n: FRICREG_OK or FRICREG_ENOMEM (recorded, with fn). */
 static int reserve_order(fricreg_hb *hb, const char *fn, size_t n)
 {
     size_t m = hb->m, S = hb->nsl, P = 2 * n + S;
-    struct fr_hb_mono *w = hb->mono;
+    struct fr_hb_mono *w = hb->stability->mono;
     int orbit = hb->rpe == 2 && n <= FR_HB_ORBIT_MAX_N && S <= FR_HB_ORBIT_MAX_SLIDERS &&
                 hb->me <= FR_HB_ORBIT_MAX_ELEMENTS; /* the instants may be refined (orbit.h) */
     if (w != NULL && w->n == n && w->m == m && w->S == S && w->H == hb->H &&
@@ -105,7 +105,7 @@ static int reserve_order(fricreg_hb *hb, const char *fn, size_t n)
              fr_hb_schedule_alloc(hb, &w->sc) == FRICREG_OK &&
              fr_hb_pieces_init(&w->pieces, P) == 0;
     }
-    hb->mono = w;
+    hb->stability->mono = w;
     if (!ok) {
         fr_hb_monodromy_free(hb);
         return fr_fail(hb, FRICREG_ENOMEM,
@@ -490,7 +490,7 @@ int fr_hb_monodromy(fricreg_hb *hb, const char *fn, double omega, int condensed,
         status = reserve_order(hb, fn, condensed ? lm.n : hb->n);
     if (status != FRICREG_OK)
         return status;
-    struct fr_hb_mono *w = hb->mono;
+    struct fr_hb_mono *w = hb->stability->mono;
     model_matrices(hb, w, condensed ? &lm : NULL);
     if ((status = mass_solves(hb, fn, w)) != FRICREG_OK ||
         (status = fr_hb_schedule(hb, fn, &w->sc)) != FRICREG_OK)

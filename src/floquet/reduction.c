@@ -75,12 +75,12 @@ size_t fr_hb_boundary_dofs(const fricreg_hb *hb)
 
 void fr_hb_reduction_free(fricreg_hb *hb)
 {
-    struct fr_hb_reduction *r = hb->reduction;
+    struct fr_hb_reduction *r = hb->stability->reduction;
     if (r == NULL)
         return;
     FR_FREE_ALL(r->bnd, r->w2);
     free(r);
-    hb->reduction = NULL;
+    hb->stability->reduction = NULL;
 }
 
 /* Block (rows, cols) of the full column-major A [n n] into out [nr nc] column-major. */
@@ -242,7 +242,7 @@ static struct fr_hb_reduction *reduction_new(const fricreg_hb *hb, size_t nb)
 int fr_hb_reduction_update(fricreg_hb *hb, const char *fn, double omega,
                            struct fr_hb_linear_model *out)
 {
-    struct fr_hb_reduction *r = hb->reduction;
+    struct fr_hb_reduction *r = hb->stability->reduction;
     if (r != NULL && (r->serial != hb->model_serial || r->n != hb->n || r->m != hb->m)) {
         fr_hb_reduction_free(hb); /* built for another model */
         r = NULL;
@@ -258,7 +258,7 @@ int fr_hb_reduction_update(fricreg_hb *hb, const char *fn, double omega,
             return fr_fail(hb, FRICREG_ENOMEM,
                            "%s: stability: no memory for the condensed model of %zu dofs", fn,
                            hb->n);
-        hb->reduction = r;
+        hb->stability->reduction = r;
         int status = modes(hb, fn, r);
         if (status != FRICREG_OK) {
             fr_hb_reduction_free(hb);
@@ -285,7 +285,7 @@ static void exponent(double re, double im, double T, double *e)
 
 size_t fr_hb_reduction_truncated(const fricreg_hb *hb, double omega, double *exps)
 {
-    const struct fr_hb_reduction *r = hb->reduction;
+    const struct fr_hb_reduction *r = hb->stability->reduction;
     double T = FR_TWO_PI / omega;
     size_t count = 0;
     for (size_t q = r->nb + r->k; q < r->n; q++) { /* λ² + c λ + ω² = 0 */

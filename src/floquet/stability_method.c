@@ -3,10 +3,9 @@
  * fricreg_hb_set_stability_method): on or off, and by which method, the exact monodromy of
  * the orbit (monodromy.c) where every element is piecewise linear, of the model condensed onto
  * the elements' dofs (reduction.c) where they touch few, and Hill's method (hill.c) elsewhere,
- * unless chosen; the one entry point of the solves, the points and the bifurcations; the
- * points' stability. */
+ * unless chosen; the one entry point of the solves, the points and the bifurcations (the
+ * stored points' stability is read in forced/point_stability.c). */
 #include <stdlib.h>
-#include <string.h>
 
 #include "monodromy.h"
 #include "reduction.h"
@@ -54,11 +53,14 @@ int fr_hb_stability(fricreg_hb *hb, const char *fn, double omega, double *out)
 
 void fr_hb_stability_free(fricreg_hb *hb)
 {
+    if (hb->stability == NULL)
+        return;
     fr_hb_hill_free(hb);
     fr_hb_monodromy_free(hb);
     fr_hb_reduction_free(hb);
-    free(hb->xsol);
-    hb->xsol = hb->hill_x = NULL;
+    free(hb->stability->xsol);
+    free(hb->stability);
+    hb->stability = NULL;
 }
 
 int fricreg_hb_set_stability(fricreg_hb *hb, int enable)
@@ -78,17 +80,22 @@ int fricreg_hb_set_stability(fricreg_hb *hb, int enable)
                              "fricreg_hb_set_stability_method FRICREG_HB_STABILITY_MONODROMY "
                              "first)"
                            : "");
-    if (enable == hb->stability)
+    if (enable == fr_hb_stability_on(hb))
         return FRICREG_OK;
     if (enable) {
         /* the last solution's and a trial point's, and the workspace of the method in force:
          * the solves then allocate nothing unless the elements change the method (the
          * condensed method's, whose order depends on Ω, is made and grown by the solves) */
         size_t xw = 4 + 4 * hb->n;
-        if ((hb->xsol = malloc(2 * xw * sizeof(double))) == NULL)
+        struct fr_hb_stability *st = calloc(1, sizeof *st);
+        double *x = st != NULL ? malloc(2 * xw * sizeof(double)) : NULL;
+        if (x == NULL) {
+            free(st);
             return fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for the stability of %zu dofs", fn,
                            hb->n);
-        hb->hill_x = hb->xsol + xw;
+        }
+        *st = (struct fr_hb_stability){.xsol = x, .trial = x + xw};
+        hb->stability = st;
         hb->release[FR_HB_PART_STABILITY] = fr_hb_stability_free;
         int method = fr_hb_stability_in_force(hb), status = FRICREG_OK;
         if (method == FRICREG_HB_STABILITY_HILL)
@@ -102,12 +109,10 @@ int fricreg_hb_set_stability(fricreg_hb *hb, int enable)
     } else {
         fr_hb_stability_free(hb);
     }
-    hb->stability = enable;
-    /* the stored points' and the last solution's extras have no stability (or another width) */
+    /* the stored points' and the last solution's extras have no stability (or another width):
+     * the points are dropped (their store counts the serial, forced/) */
     hb->have_solution = 0;
-    hb->have_branch = 0;
-    hb->npts = 0;
-    hb->nbif = 0;
+    hb->extras_serial++;
     return FRICREG_OK;
 }
 
@@ -133,59 +138,5 @@ int fricreg_hb_get_stability_method(fricreg_hb *hb, int *method)
     if (method == NULL)
         return fr_fail(hb, FRICREG_ENULL, "get_stability_method: method is NULL");
     *method = fr_hb_stability_in_force(hb);
-    return FRICREG_OK;
-}
-
-/* The stability record of stored point k or of the last solution (FRICREG_HB_SOLUTION) into
- * *x: x[2] stable, x[3] the largest |μ|, x[4 ..] the 2n exponents (re, im). */
-static int stability_record(fricreg_hb *hb, const char *fn, size_t k, const double **x)
-{
-    if (!hb->stability)
-        return fr_fail(hb, FRICREG_EINVAL, "%s: stability is off (fricreg_hb_set_stability)", fn);
-    if (k == FRICREG_HB_SOLUTION) {
-        if (!hb->have_solution)
-            return fr_fail(hb, FRICREG_EINVAL,
-                           "%s: no solution (none yet, or the model changed since)", fn);
-        *x = hb->xsol;
-        return FRICREG_OK;
-    }
-    if (k >= hb->npts)
-        return fr_fail(hb, FRICREG_EINVAL, "%s: k = %zu, %zu points stored", fn, k, hb->npts);
-    *x = hb->xpts + k * hb->xpts_stride;
-    return FRICREG_OK;
-}
-
-int fricreg_hb_point_stability(fricreg_hb *hb, size_t k, int *stable, double *mu_max)
-{
-    static const char fn[] = "point_stability";
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    if (stable == NULL || mu_max == NULL)
-        return fr_fail(hb, FRICREG_ENULL, "%s: %s is NULL", fn,
-                       stable == NULL ? "stable" : "mu_max");
-    const double *x = NULL;
-    int status = stability_record(hb, fn, k, &x);
-    if (status != FRICREG_OK)
-        return status;
-    *stable = x[2] != 0.0;
-    *mu_max = x[3];
-    return FRICREG_OK;
-}
-
-int fricreg_hb_point_exponents(fricreg_hb *hb, size_t k, size_t nexp, double exponents[])
-{
-    static const char fn[] = "point_exponents";
-    if (hb == NULL)
-        return FRICREG_ENULL;
-    if (exponents == NULL)
-        return fr_fail(hb, FRICREG_ENULL, "%s: exponents is NULL", fn);
-    if (nexp != 2 * hb->n)
-        return fr_fail(hb, FRICREG_ESIZE, "%s: nexp = %zu, the driver has 2 ndof = %zu", fn, nexp,
-                       2 * hb->n);
-    const double *x = NULL;
-    int status = stability_record(hb, fn, k, &x);
-    if (status != FRICREG_OK)
-        return status;
-    memcpy(exponents, x + 4, 4 * hb->n * sizeof(double));
     return FRICREG_OK;
 }

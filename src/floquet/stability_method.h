@@ -5,6 +5,32 @@
 
 #include "floquet_internal.h"
 
+/* Whether stability is on (fricreg_hb_set_stability). */
+static inline int fr_hb_stability_on(const fricreg_hb *hb)
+{
+    return hb->stability != NULL;
+}
+
+/* The numbers kept with each stored point and the last solution (XW): 2 for the forced
+ * response's (the tangent's parameter component, the determinant's sign), and with stability
+ * 2 + 4 n more (stable, the largest |multiplier|, the 2n exponents). */
+static inline size_t fr_hb_extras_width(const fricreg_hb *hb)
+{
+    return fr_hb_stability_on(hb) ? 4 + 4 * hb->n : 2;
+}
+
+/* The last solution's record [XW] and a trial point's (stability on): the stability from x[2]
+ * on, written by fr_hb_stability(hb, fn, omega, x + 2). */
+static inline double *fr_hb_stability_record(const fricreg_hb *hb)
+{
+    return hb->stability->xsol;
+}
+
+static inline double *fr_hb_stability_trial(const fricreg_hb *hb)
+{
+    return hb->stability->trial;
+}
+
 /* The method that computes the next solution's stability: FRICREG_HB_STABILITY_HILL or
  * FRICREG_HB_STABILITY_MONODROMY (the automatic choice made for the elements set now). */
 int fr_hb_stability_in_force(const fricreg_hb *hb);

@@ -37,10 +37,11 @@
 static int final_point(fricreg_hb *hb, const char *fn, const struct fr_hb_branch *b, double p1)
 {
     size_t nq = hb->nq;
-    double s = (p1 / b->ws - b->yc[nq]) / hb->dir[nq];
+    const double *dir = fr_hb_vectors(hb).dir;
+    double s = (p1 / b->ws - b->yc[nq]) / dir[nq];
     double *guess = hb->rw; /* free here; fr_hb_solve_at copies it before it uses rw */
     for (size_t j = 0; j < nq; j++)
-        guess[j] = (b->yc[j] + s * hb->dir[j]) * b->qs;
+        guess[j] = (b->yc[j] + s * dir[j]) * b->qs;
     if (b->level)
         hb->level = p1;
     int status = fr_hb_solve_at(hb, fn, fr_hb_branch_omega(b, p1), guess, 1);
@@ -55,7 +56,7 @@ static int final_point(fricreg_hb *hb, const char *fn, const struct fr_hb_branch
 static void rescale(fricreg_hb *hb, struct fr_hb_branch *b)
 {
     size_t nq = hb->nq;
-    double top = 0.0;
+    double top = 0.0, *tan = fr_hb_vectors(hb).tan;
     for (size_t j = 0; j < nq; j++)
         top = fmax(top, fabs(hb->qw[j]));
     if (!(top > 1.0))
@@ -63,11 +64,11 @@ static void rescale(fricreg_hb *hb, struct fr_hb_branch *b)
     for (size_t j = 0; j < nq; j++) {
         hb->qw[j] /= top;
         b->yo[j] /= top;
-        hb->tan[j] /= top;
+        tan[j] /= top;
     }
-    double norm = sqrt(fr_hb_dot(hb->tan, hb->tan, nq + 1));
+    double norm = sqrt(fr_hb_dot(tan, tan, nq + 1));
     for (size_t j = 0; j <= nq; j++)
-        hb->tan[j] /= norm;
+        tan[j] /= norm;
     b->qs *= top;
 }
 
@@ -79,9 +80,10 @@ static void rescale(fricreg_hb *hb, struct fr_hb_branch *b)
 static size_t doubles_back(const fricreg_hb *hb, const struct fr_hb_branch *b, const double *y)
 {
     size_t nq = hb->nq, ld = nq + 1;
+    const struct fr_hb_forced *f = hb->forced;
     double cq = 1.0 / b->qs, cw = 1.0 / b->ws, hs = fr_hb_dist(y, b->yc, ld), arc = hs;
-    for (size_t k = hb->npts - 1; k >= 1; k--) {
-        const double *p0 = hb->qpts + (k - 1) * ld, *p1 = hb->qpts + k * ld;
+    for (size_t k = f->npts - 1; k >= 1; k--) {
+        const double *p0 = f->qpts + (k - 1) * ld, *p1 = f->qpts + k * ld;
         double ll = 0.0, along = 0.0, same = 0.0, d0 = 0.0;
         for (size_t j = 0; j < ld; j++) {
             double c = j < nq ? cq : cw, e = (p1[j] - p0[j]) * c, r = y[j] - p0[j] * c;
@@ -119,13 +121,14 @@ static int attempt(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, doubl
                    double *alpha, double *sev, double sev_before, int *kink, int *near)
 {
     size_t nq = hb->nq, ld = nq + 1;
+    struct fr_hb_vectors v = fr_hb_vectors(hb);
     for (size_t j = 0; j < ld; j++)
-        b->yp[j] = b->yc[j] + ds * hb->dir[j];
+        b->yp[j] = b->yc[j] + ds * v.dir[j];
     *alpha = *sev = 0.0;
     *kink = *near = 0;
-    int status = fr_hb_corrector(hb, fn, b, b->yp, b->yp, hb->dir, its);
+    int status = fr_hb_corrector(hb, fn, b, b->yp, b->yp, v.dir, its);
     if (status == FRICREG_OK)
-        status = fr_hb_tangent(hb, fn, hb->tn);
+        status = fr_hb_tangent(hb, fn, v.tn);
     if (status == FRICREG_ENOMEM || hb->stopped)
         return status;
     if (status != FRICREG_OK) {
@@ -133,13 +136,12 @@ static int attempt(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, doubl
         return -1;
     }
     double h = fr_hb_dist(hb->qw, b->yc, ld), deg = 57.29577951308232;
-    *alpha = acos(fmax(-1.0, fmin(1.0, fr_hb_dot(hb->tn, hb->tan, ld))));
+    *alpha = acos(fmax(-1.0, fmin(1.0, fr_hb_dot(v.tn, v.tan, ld))));
     /* on a smooth arc the chord lies half way between the tangents, at a kink between them:
      * a chord that turned by much more than the tangents did joined another part of the
      * branch (two flanks of a sharp peak, nearly parallel, a tiny Ω apart) */
     double chord = acos(
-        fmax(-1.0,
-             fmin(1.0, (fr_hb_dot(hb->qw, hb->tan, ld) - fr_hb_dot(b->yc, hb->tan, ld)) / h)));
+        fmax(-1.0, fmin(1.0, (fr_hb_dot(hb->qw, v.tan, ld) - fr_hb_dot(b->yc, v.tan, ld)) / h)));
     /* this close to the last point, the branch is finer than the continuation resolves */
     *near = h <= NEAR_REACH && chord < KINK_MAX;
     if (h > JUMP * ds) {
@@ -179,18 +181,20 @@ static int attempt(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, doubl
 static int follow(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, double p1)
 {
     size_t nq = hb->nq, ld = nq + 1;
+    struct fr_hb_vectors v = fr_hb_vectors(hb);
+    struct fr_hb_forced *f = hb->forced; /* the store, when b keeps its points */
     double ds = hb->ds0, dir = p1 > b->yc[nq] * b->ws ? 1.0 : -1.0;
     /* the first tangent, bordered by the direction of p1 */
-    memset(hb->dir, 0, ld * sizeof(double));
-    hb->dir[nq] = dir;
-    int status = fr_hb_bordered(hb, fn, b, b->yc, hb->dir);
+    memset(v.dir, 0, ld * sizeof(double));
+    v.dir[nq] = dir;
+    int status = fr_hb_bordered(hb, fn, b, b->yc, v.dir);
     if (status == FRICREG_OK)
-        status = fr_hb_tangent(hb, fn, hb->tan);
+        status = fr_hb_tangent(hb, fn, v.tan);
     if (status != FRICREG_OK)
         return status;
     if (b->keep) { /* the first point's tangent and determinant */
-        hb->xpts[0] = hb->tan[nq];
-        hb->xpts[1] = fr_hb_det_sign(hb, ld);
+        f->xpts[0] = v.tan[nq];
+        f->xpts[1] = fr_hb_det_sign(hb, ld);
     }
     for (;;) {
         if (b->count >= hb->max_points)
@@ -201,10 +205,10 @@ static int follow(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, double
          * point off the branch), from the last accepted step */
         int its = 0, kink = 0, near = 0, secant = 0, accepted = 0, last = 0;
         double alpha = 0.0, sev = 0.0, sev_before = 0.0, ds_start = ds;
-        memcpy(hb->dir, hb->tan, ld * sizeof(double));
+        memcpy(v.dir, v.tan, ld * sizeof(double));
         while (!accepted) {
             for (size_t j = 0; j <= nq; j++)
-                b->yp[j] = b->yc[j] + ds * hb->dir[j];
+                b->yp[j] = b->yc[j] + ds * v.dir[j];
             last = dir * (b->yp[nq] * b->ws - p1) >= 0.0;
             if (last) {
                 status = final_point(hb, fn, b, p1);
@@ -243,13 +247,13 @@ static int follow(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, double
             secant = 1;
             double h = fr_hb_dist(b->yc, b->yo, ld);
             for (size_t j = 0; j < ld; j++)
-                hb->dir[j] = (b->yc[j] - b->yo[j]) / h;
+                v.dir[j] = (b->yc[j] - b->yo[j]) / h;
             ds = ds_start;
             sev_before = 0.0;
         }
         if (last) /* the direction's sign and the last determinant's sign carried on */
-            return fr_hb_store_point(hb, fn, b, p1, hb->dir[nq],
-                                     b->keep ? hb->xpts[(hb->npts - 1) * hb->xpts_stride + 1] : 0.0,
+            return fr_hb_store_point(hb, fn, b, p1, v.dir[nq],
+                                     b->keep ? f->xpts[(f->npts - 1) * f->xpts_stride + 1] : 0.0,
                                      1);
         size_t onto = b->keep ? doubles_back(hb, b, hb->qw) : 0;
         if (onto > 0 && onto <= CLOSED_STRETCHES)
@@ -258,15 +262,15 @@ static int follow(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, double
             return fr_fail(hb, FRICREG_EWORK,
                            "%s: the branch doubles back on itself at %s = %g (after %zu "
                            "points): it would not reach %s1 = %g",
-                           fn, b->par, hb->qw[nq] * b->ws, hb->npts, b->par, p1);
+                           fn, b->par, hb->qw[nq] * b->ws, f->npts, b->par, p1);
         /* fr_hb_bordered() left qt, the factors, the forces and the level at qw */
-        status = fr_hb_store_point(hb, fn, b, hb->qw[nq] * b->ws, hb->tn[nq],
-                                   fr_hb_det_sign(hb, ld), 0);
+        status = fr_hb_store_point(hb, fn, b, hb->qw[nq] * b->ws, v.tn[nq], fr_hb_det_sign(hb, ld),
+                                   0);
         if (status != FRICREG_OK)
             return status;
         memcpy(b->yo, b->yc, ld * sizeof(double));
         b->have_prev = 1;
-        memcpy(hb->tan, hb->tn, ld * sizeof(double));
+        memcpy(v.tan, v.tn, ld * sizeof(double));
         rescale(hb, b);
         memcpy(b->yc, hb->qw, ld * sizeof(double));
         /* the next step: Allgower & Georg's factor on the corrector and the angle */
@@ -286,20 +290,23 @@ int fr_hb_arclength(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, doub
     int status = b->keep ? fr_hb_points_reserve(hb, 64) : FRICREG_OK;
     if (status != FRICREG_OK)
         return status;
-    if (b->keep) {
-        hb->npts = 0;
-        hb->nbif = 0;
-        hb->have_branch = 1;
-        hb->branch_level = b->level;
+    struct fr_hb_forced *f = hb->forced;
+    if (b->keep) { /* a new branch: on the model and with the extras in force now */
+        f->npts = 0;
+        f->nbif = 0;
+        f->model_serial = hb->model_serial;
+        f->extras_serial = hb->extras_serial;
+        f->branch_level = b->level;
     }
     if (b->level)
         hb->level = p0;
     if ((status = fr_hb_solve_at(hb, fn, fr_hb_branch_omega(b, p0), q0, b->keep)) != FRICREG_OK)
         return status;
     b->ws = fabs(p1 - p0);
-    b->yc = hb->yp;
-    b->yp = hb->yp + nq + 1;
-    b->yo = hb->yo;
+    struct fr_hb_vectors v = fr_hb_vectors(hb);
+    b->yc = v.yp;
+    b->yp = v.yp + nq + 1;
+    b->yo = v.yo;
     b->qs = fr_hb_scale(hb, hb->qw);
     memcpy(hb->qt, hb->qw, nq * sizeof(double));
     if ((status = fr_hb_store_point(hb, fn, b, p0, 0.0, 0.0, 1)) != FRICREG_OK)
@@ -311,8 +318,8 @@ int fr_hb_arclength(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, doub
                                          the call's */
     status = follow(hb, fn, b, p1);
     if (b->keep) {
-        hb->branch_qs = b->qs;
-        hb->branch_ws = b->ws;
+        f->branch_qs = b->qs;
+        f->branch_ws = b->ws;
         struct fr_error after = hb->err; /* the bisections' failed trials are not the call's */
         fr_hb_locate_bifurcations(hb, b);
         hb->err = after;

@@ -13,7 +13,7 @@
 
 size_t fricreg_hb_bifurcations(const fricreg_hb *hb)
 {
-    return hb ? hb->nbif : 0;
+    return hb ? fr_hb_bifurcations_held(hb) : 0;
 }
 
 int fricreg_hb_bifurcation(fricreg_hb *hb, size_t i, int *type, double *omega, size_t *point,
@@ -27,12 +27,12 @@ int fricreg_hb_bifurcation(fricreg_hb *hb, size_t i, int *type, double *omega, s
                        type == NULL    ? "type"
                        : omega == NULL ? "omega"
                                        : "rms");
-    if (i >= hb->nbif)
-        return fr_fail(hb, FRICREG_EINVAL, "%s: i = %zu, %zu bifurcations located", fn, i,
-                       hb->nbif);
+    size_t nbif = fr_hb_bifurcations_held(hb);
+    if (i >= nbif)
+        return fr_fail(hb, FRICREG_EINVAL, "%s: i = %zu, %zu bifurcations located", fn, i, nbif);
     if (ndof != hb->n)
         return fr_fail(hb, FRICREG_ESIZE, "%s: ndof = %zu, the driver has %zu", fn, ndof, hb->n);
-    const double *rec = hb->bifs + i * (4 + hb->n);
+    const double *rec = hb->forced->bifs + i * (4 + hb->n);
     *type = (int)rec[0];
     *omega = rec[1];
     if (point != NULL)
@@ -47,10 +47,11 @@ int fricreg_hb_bifurcation_level(fricreg_hb *hb, size_t i, double *level)
         return FRICREG_ENULL;
     if (level == NULL)
         return fr_fail(hb, FRICREG_ENULL, "bifurcation_level: level is NULL");
-    if (i >= hb->nbif)
+    size_t nbif = fr_hb_bifurcations_held(hb);
+    if (i >= nbif)
         return fr_fail(hb, FRICREG_EINVAL, "bifurcation_level: i = %zu, %zu bifurcations located",
-                       i, hb->nbif);
-    *level = hb->bifs[i * (4 + hb->n) + 3];
+                       i, nbif);
+    *level = hb->forced->bifs[i * (4 + hb->n) + 3];
     return FRICREG_OK;
 }
 
@@ -75,7 +76,8 @@ static int test_at(fricreg_hb *hb, struct fr_hb_branch *b, const double *ya, con
 {
     static const char fn[] = "continue";
     size_t nq = hb->nq, ld = nq + 1;
-    double *normal = hb->dir, *anchor = hb->yo, len = fr_hb_dist(yb, ya, ld);
+    struct fr_hb_vectors v = fr_hb_vectors(hb);
+    double *normal = v.dir, *anchor = v.yo, len = fr_hb_dist(yb, ya, ld);
     for (size_t j = 0; j < ld; j++) {
         normal[j] = (yb[j] - ya[j]) / len;
         anchor[j] = ya[j] + s * (yb[j] - ya[j]);
@@ -84,7 +86,7 @@ static int test_at(fricreg_hb *hb, struct fr_hb_branch *b, const double *ya, con
     if (status != FRICREG_OK)
         return status;
     *omega = fr_hb_branch_omega(b, hb->qw[nq] * b->ws);
-    double tx[2], *x = t.kind >= 0 ? hb->hill_x : tx;
+    double tx[2], *x = t.kind >= 0 ? fr_hb_stability_trial(hb) : tx;
     if (t.kind >= 0)
         status = fr_hb_stability(hb, fn, *omega, x + 2);
     else if ((status = fr_hb_tangent(hb, fn, hb->rw)) == FRICREG_OK) {
@@ -103,18 +105,19 @@ static int test_at(fricreg_hb *hb, struct fr_hb_branch *b, const double *ya, con
  * end nearer to the points' side it came from). */
 static void bisect(fricreg_hb *hb, struct fr_hb_branch *b, size_t k, struct test t)
 {
-    size_t ld = hb->nq + 1, n = hb->n, xw = hb->xpts_stride;
-    double *ya = hb->yp, *yb = hb->yp + ld, lo = 0.0, hi = 1.0;
+    struct fr_hb_forced *f = hb->forced;
+    size_t ld = hb->nq + 1, n = hb->n, xw = f->xpts_stride;
+    double *ya = fr_hb_vectors(hb).yp, *yb = ya + ld, lo = 0.0, hi = 1.0;
     for (size_t j = 0; j < ld; j++) {
         double c = j < hb->nq ? b->qs : b->ws;
-        ya[j] = hb->qpts[k * ld + j] / c;
-        yb[j] = hb->qpts[(k + 1) * ld + j] / c;
+        ya[j] = f->qpts[k * ld + j] / c;
+        yb[j] = f->qpts[(k + 1) * ld + j] / c;
     }
     /* a change of stability's side at point k is its verdict's (an exponent within the
      * verdict's margin of the unit circle there puts the crossing at k itself) */
-    const double *xk = hb->xpts + k * xw;
-    int sa = t.kind >= 0 ? xk[2] == 0.0 : test_sign(hb, t, xk, hb->pts[k * (1 + n)]);
-    double *rec = hb->bifs + hb->nbif * (4 + n);
+    const double *xk = f->xpts + k * xw;
+    int sa = t.kind >= 0 ? xk[2] == 0.0 : test_sign(hb, t, xk, f->pts[k * (1 + n)]);
+    double *rec = f->bifs + f->nbif * (4 + n);
     rec[0] = t.type;
     rec[2] = (double)k;
     double omega = 0.0;
@@ -137,20 +140,21 @@ static void bisect(fricreg_hb *hb, struct fr_hb_branch *b, size_t k, struct test
     }
     if (!found) { /* the stored point nearer to the bracket */
         size_t at = lo > 0.0 ? k + 1 : k;
-        rec[1] = hb->pts[at * (1 + n)];
-        rec[3] = b->level ? hb->qpts[at * ld + hb->nq] : 1.0;
-        memcpy(rec + 4, hb->pts + at * (1 + n) + 1, n * sizeof(double));
+        rec[1] = f->pts[at * (1 + n)];
+        rec[3] = b->level ? f->qpts[at * ld + hb->nq] : 1.0;
+        memcpy(rec + 4, f->pts + at * (1 + n) + 1, n * sizeof(double));
     }
-    hb->nbif++;
+    f->nbif++;
 }
 
 /* Whether the tangent's Ω component or the determinant's sign changes between points i and
  * i + 1 (a turning or branch point there; i may be out of the branch's range: no). */
 static int jacobian_test_changes(const fricreg_hb *hb, size_t i)
 {
-    if (i + 1 >= hb->npts)
+    const struct fr_hb_forced *f = hb->forced;
+    if (i + 1 >= f->npts)
         return 0;
-    const double *x0 = hb->xpts + i * hb->xpts_stride, *x1 = x0 + hb->xpts_stride;
+    const double *x0 = f->xpts + i * f->xpts_stride, *x1 = x0 + f->xpts_stride;
     return (x0[0] > 0.0) != (x1[0] > 0.0) || x0[1] * x1[1] < 0.0;
 }
 
@@ -160,20 +164,21 @@ static int jacobian_test_changes(const fricreg_hb *hb, size_t i)
  * may fall in the neighbouring interval (Hill's, from the Jacobian itself, in the same one). */
 void fr_hb_locate_bifurcations(fricreg_hb *hb, struct fr_hb_branch *b)
 {
-    size_t xw = hb->xpts_stride, w = 1 + hb->n;
-    hb->nbif = 0;
-    for (size_t k = 0; k + 1 < hb->npts && !hb->stopped; k++) {
-        const double *x0 = hb->xpts + k * xw, *x1 = x0 + xw;
+    struct fr_hb_forced *f = hb->forced;
+    size_t xw = f->xpts_stride, w = 1 + hb->n;
+    f->nbif = 0;
+    for (size_t k = 0; k + 1 < f->npts && !hb->stopped; k++) {
+        const double *x0 = f->xpts + k * xw, *x1 = x0 + xw;
         struct test t = {0, -1};
         if ((x0[0] > 0.0) != (x1[0] > 0.0))
             t.type = FRICREG_HB_TP;
         else if (x0[1] * x1[1] < 0.0)
             t.type = FRICREG_HB_BP;
-        else if (hb->stability && x0[2] != x1[2]) {
+        else if (fr_hb_stability_on(hb) && x0[2] != x1[2]) {
             /* the exponent that crossed: the largest on the unstable side */
             int up = x1[2] == 0.0;
             const double *xu = up ? x1 : x0;
-            t.kind = fr_hb_hill_crossing(hb, hb->pts[(k + (size_t)up) * w], xu + 4);
+            t.kind = fr_hb_hill_crossing(hb, f->pts[(k + (size_t)up) * w], xu + 4);
             t.type = t.kind == 1 ? FRICREG_HB_PD : t.kind == 2 ? FRICREG_HB_NS : FRICREG_HB_BP;
             if (t.kind == 0 &&
                 ((k > 0 && jacobian_test_changes(hb, k - 1)) || jacobian_test_changes(hb, k + 1)))

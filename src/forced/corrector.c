@@ -205,7 +205,7 @@ static int corrector_search(void *user, double *phi, double *rinf, int *accepted
     struct corrector_iterate *c = l->c;
     (void)phi;
     (void)rinf;
-    memcpy(c->hb->yl, c->hb->qw, (c->hb->nq + 1) * sizeof(double));
+    memcpy(fr_hb_vectors(c->hb).yl, c->hb->qw, (c->hb->nq + 1) * sizeof(double));
     c->prev = c->norm;
     int found; /* none: on from the shortest trial, evaluated in qw */
     *accepted = 1;
@@ -217,7 +217,8 @@ int fr_hb_corrector(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, cons
 {
     size_t ld = hb->nq + 1;
     struct fr_line_search ls = {FR_ARMIJO, FR_HB_HALVINGS, NULL};
-    struct corrector_iterate c = {hb, fn, b, anchor, border, hb->yl, &ls, 0, 0, 0, 0, 0, 0};
+    struct corrector_iterate c = {hb, fn, b, anchor, border, fr_hb_vectors(hb).yl, &ls, 0,
+                                  0,  0,  0, 0,      0};
     memcpy(hb->qw, start, ld * sizeof(double));
     b->delta = b->kappa = 0.0;
     int status = corrector_evaluate(&c);

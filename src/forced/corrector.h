@@ -7,11 +7,11 @@
 
 #include <stddef.h>
 
-#include "hb/hb_internal.h"
+#include "forced_internal.h"
 #include "hb/step_control.h"
 
 /* A branch being followed: its parameter and scales, and the points the loop moves along it
- * (views into the driver's yp and yo); the peak search sets only the scales. */
+ * (views into the continuation's yp and yo); the peak search sets only the scales. */
 struct fr_hb_branch {
     int level;       /* the parameter p is the excitation level λ at the fixed Ω omega, else Ω */
     double omega;    /* a level branch's Ω */

@@ -24,25 +24,27 @@ int fricreg_hb_peak(fricreg_hb *hb, size_t dof, double *omega, double *rms)
         return fr_hb_refuse(hb, "peak");
     if (dof >= hb->n)
         return fr_fail(hb, FRICREG_EINVAL, "peak: dof = %zu, the driver has %zu", dof, hb->n);
-    if (hb->npts == 0 || !hb->have_branch)
+    if (!fr_hb_branch_holds(hb))
         return fr_fail(hb, FRICREG_EINVAL,
                        "peak: no branch (no fricreg_hb_continue yet, or the model changed since)");
-    if (hb->branch_level)
+    const struct fr_hb_forced *fs = hb->forced;
+    if (fs->branch_level)
         return fr_fail(hb, FRICREG_EINVAL,
                        "peak: the branch is in the excitation level (fricreg_hb_continue_level), "
                        "not in Omega");
     size_t w = 1 + hb->n, ld = hb->nq + 1, best = 0;
-    for (size_t k = 1; k < hb->npts; k++)
-        if (hb->pts[k * w + 1 + dof] > hb->pts[best * w + 1 + dof])
+    for (size_t k = 1; k < fs->npts; k++)
+        if (fs->pts[k * w + 1 + dof] > fs->pts[best * w + 1 + dof])
             best = k;
-    double om = hb->pts[best * w], f = hb->pts[best * w + 1 + dof];
-    if (best > 0 && best + 1 < hb->npts) {
+    double om = fs->pts[best * w], f = fs->pts[best * w + 1 + dof];
+    if (best > 0 && best + 1 < fs->npts) {
         /* the three points around it, scaled */
-        struct fr_hb_branch b = {.qs = hb->branch_qs, .ws = hb->branch_ws};
-        double *y[3] = {hb->yp, hb->yp + ld, hb->tan};
+        struct fr_hb_branch b = {.qs = fs->branch_qs, .ws = fs->branch_ws};
+        struct fr_hb_vectors v = fr_hb_vectors(hb);
+        double *y[3] = {v.yp, v.yp + ld, v.tan};
         for (int i = 0; i < 3; i++)
             for (size_t j = 0; j < ld; j++)
-                y[i][j] = hb->qpts[(best - 1 + (size_t)i) * ld + j] / (j + 1 < ld ? b.qs : b.ws);
+                y[i][j] = fs->qpts[(best - 1 + (size_t)i) * ld + j] / (j + 1 < ld ? b.qs : b.ws);
         const double *y3[3] = {y[0], y[1], y[2]};
         double len = fr_hb_dist(y[2], y[0], ld), sb = 0.0;
         for (size_t j = 0; j < ld; j++)
@@ -83,7 +85,8 @@ static int rms_at(fricreg_hb *hb, struct fr_hb_branch *b, size_t k, const double
                   double s, double *omega, double *f)
 {
     size_t ld = hb->nq + 1;
-    double *normal = hb->dir, *anchor = hb->yo, *start = hb->tn, len = fr_hb_dist(y3[2], y3[0], ld);
+    struct fr_hb_vectors v = fr_hb_vectors(hb);
+    double *normal = v.dir, *anchor = v.yo, *start = v.tn, len = fr_hb_dist(y3[2], y3[0], ld);
     double la = (s - sb) * (s - 1.0) / sb, lb = s * (s - 1.0) / (sb * (sb - 1.0)),
            lc = s * (s - sb) / (1.0 - sb);
     for (size_t j = 0; j < ld; j++) {

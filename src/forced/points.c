@@ -14,10 +14,11 @@
 #include "hb/residual.h"
 #include "hb/busy.h"
 #include "hb/recover.h"
+#include "base/free_all.h"
 
 size_t fricreg_hb_points(const fricreg_hb *hb)
 {
-    return hb ? hb->npts : 0;
+    return hb ? fr_hb_points_held(hb) : 0;
 }
 
 int fricreg_hb_point(fricreg_hb *hb, size_t k, double *omega, size_t ndof, double rms[])
@@ -26,11 +27,12 @@ int fricreg_hb_point(fricreg_hb *hb, size_t k, double *omega, size_t ndof, doubl
         return FRICREG_ENULL;
     if (omega == NULL || rms == NULL)
         return fr_fail(hb, FRICREG_ENULL, "point: %s is NULL", omega == NULL ? "omega" : "rms");
-    if (k >= hb->npts)
-        return fr_fail(hb, FRICREG_EINVAL, "point: k = %zu, %zu points stored", k, hb->npts);
+    size_t npts = fr_hb_points_held(hb);
+    if (k >= npts)
+        return fr_fail(hb, FRICREG_EINVAL, "point: k = %zu, %zu points stored", k, npts);
     if (ndof != hb->n)
         return fr_fail(hb, FRICREG_ESIZE, "point: ndof = %zu, the driver has %zu", ndof, hb->n);
-    const double *p = hb->pts + k * (1 + hb->n);
+    const double *p = hb->forced->pts + k * (1 + hb->n);
     *omega = p[0];
     memcpy(rms, p + 1, hb->n * sizeof(double));
     return FRICREG_OK;
@@ -42,9 +44,11 @@ int fricreg_hb_point_level(fricreg_hb *hb, size_t k, double *level)
         return FRICREG_ENULL;
     if (level == NULL)
         return fr_fail(hb, FRICREG_ENULL, "point_level: level is NULL");
-    if (k >= hb->npts)
-        return fr_fail(hb, FRICREG_EINVAL, "point_level: k = %zu, %zu points stored", k, hb->npts);
-    *level = hb->branch_level ? hb->qpts[k * hb->qpts_stride + hb->qpts_stride - 1] : 1.0;
+    size_t npts = fr_hb_points_held(hb);
+    if (k >= npts)
+        return fr_fail(hb, FRICREG_EINVAL, "point_level: k = %zu, %zu points stored", k, npts);
+    const struct fr_hb_forced *f = hb->forced;
+    *level = f->branch_level ? f->qpts[k * f->qpts_stride + f->qpts_stride - 1] : 1.0;
     return FRICREG_OK;
 }
 
@@ -62,14 +66,16 @@ int fr_hb_stored_solution(fricreg_hb *hb, const char *fn, size_t k, const double
         *level = hb->level_sol;
         return FRICREG_OK;
     }
-    if (k >= hb->npts)
-        return fr_fail(hb, FRICREG_EINVAL, "%s: k = %zu, %zu points stored", fn, k, hb->npts);
-    if (!hb->have_branch)
+    size_t npts = fr_hb_points_held(hb);
+    if (k >= npts)
+        return fr_fail(hb, FRICREG_EINVAL, "%s: k = %zu, %zu points stored", fn, k, npts);
+    if (!fr_hb_branch_holds(hb))
         return fr_fail(hb, FRICREG_EINVAL, "%s: the model or elements changed since the branch",
                        fn);
-    *q = hb->qpts + k * hb->qpts_stride;
-    *omega = hb->pts[k * (1 + hb->n)];
-    *level = hb->branch_level ? (*q)[hb->nq] : 1.0;
+    const struct fr_hb_forced *f = hb->forced;
+    *q = f->qpts + k * f->qpts_stride;
+    *omega = f->pts[k * (1 + hb->n)];
+    *level = f->branch_level ? (*q)[hb->nq] : 1.0;
     return FRICREG_OK;
 }
 
@@ -110,33 +116,56 @@ int fricreg_hb_point_displacement(fricreg_hb *hb, size_t k, size_t ndof, size_t 
     return displacement_of(hb, "point_displacement", k, ndof, nc, x);
 }
 
+static void forced_release(fricreg_hb *hb)
+{
+    struct fr_hb_forced *f = hb->forced;
+    if (f != NULL)
+        FR_FREE_ALL(f->pts, f->qpts, f->xpts, f->bifs);
+    free(f);
+    hb->forced = NULL;
+}
+
+/* The forced response's state hung on the driver at its first branch kept. */
+static int forced_made(fricreg_hb *hb)
+{
+    if (hb->forced != NULL)
+        return FRICREG_OK;
+    if ((hb->forced = calloc(1, sizeof *hb->forced)) == NULL)
+        return FRICREG_ENOMEM;
+    hb->release[FR_HB_PART_FORCED] = forced_release;
+    return FRICREG_OK;
+}
+
 /* Room for `want` points (at most max_points), kept on failure: FRICREG_ENOMEM. The unknowns'
  * room follows nq, which the element setters change (1 or 2 rows per element). */
 int fr_hb_points_reserve(fricreg_hb *hb, size_t want)
 {
-    size_t stride = hb->nq + 1, xw = FR_HB_XW(hb);
+    size_t stride = hb->nq + 1, xw = fr_hb_extras_width(hb);
     if (want > hb->max_points)
         want = hb->max_points;
-    if (want <= hb->cap && hb->qpts_stride == stride && hb->xpts_stride == xw)
-        return FRICREG_OK;
-    if (want < hb->cap)
-        want = hb->cap;
-    double *p = realloc(hb->pts, want * (1 + hb->n) * sizeof(double));
-    if (p != NULL)
-        hb->pts = p;
-    double *q = p == NULL ? NULL : realloc(hb->qpts, want * stride * sizeof(double));
-    if (q != NULL)
-        hb->qpts = q;
-    double *x = q == NULL ? NULL : realloc(hb->xpts, want * xw * sizeof(double));
-    if (x != NULL)
-        hb->xpts = x;
-    double *f = x == NULL ? NULL : realloc(hb->bifs, want * (4 + hb->n) * sizeof(double));
-    if (f == NULL)
+    if (forced_made(hb) != FRICREG_OK)
         return fr_fail(hb, FRICREG_ENOMEM, "continue: no memory for %zu points", want);
-    hb->bifs = f;
-    hb->qpts_stride = stride;
-    hb->xpts_stride = xw;
-    hb->cap = want;
+    struct fr_hb_forced *f = hb->forced;
+    if (want <= f->cap && f->qpts_stride == stride && f->xpts_stride == xw)
+        return FRICREG_OK;
+    if (want < f->cap)
+        want = f->cap;
+    double *p = realloc(f->pts, want * (1 + hb->n) * sizeof(double));
+    if (p != NULL)
+        f->pts = p;
+    double *q = p == NULL ? NULL : realloc(f->qpts, want * stride * sizeof(double));
+    if (q != NULL)
+        f->qpts = q;
+    double *x = q == NULL ? NULL : realloc(f->xpts, want * xw * sizeof(double));
+    if (x != NULL)
+        f->xpts = x;
+    double *g = x == NULL ? NULL : realloc(f->bifs, want * (4 + hb->n) * sizeof(double));
+    if (g == NULL)
+        return fr_fail(hb, FRICREG_ENOMEM, "continue: no memory for %zu points", want);
+    f->bifs = g;
+    f->qpts_stride = stride;
+    f->xpts_stride = xw;
+    f->cap = want;
     return FRICREG_OK;
 }
 
@@ -147,26 +176,29 @@ int fr_hb_points_reserve(fricreg_hb *hb, size_t want)
 int fr_hb_store_point(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, double p, double tw,
                       double det, int hill_done)
 {
-    size_t w = 1 + hb->n, nq = hb->nq, xw = FR_HB_XW(hb);
+    size_t w = 1 + hb->n, nq = hb->nq, xw = fr_hb_extras_width(hb);
     double omega = fr_hb_branch_omega(b, p);
     b->count++;
     if (!b->keep)
         return FRICREG_OK;
-    int status = hb->npts < hb->cap ? FRICREG_OK : fr_hb_points_reserve(hb, 2 * hb->cap);
+    struct fr_hb_forced *f = hb->forced;
+    int status = f->npts < f->cap ? FRICREG_OK : fr_hb_points_reserve(hb, 2 * f->cap);
     if (status != FRICREG_OK)
         return status;
-    if (hb->stability && !hill_done && (status = fr_hb_stability(hb, fn, omega, hb->xsol + 2)))
+    int stability = fr_hb_stability_on(hb);
+    if (stability && !hill_done &&
+        (status = fr_hb_stability(hb, fn, omega, fr_hb_stability_record(hb) + 2)))
         return status;
-    double *x = hb->xpts + hb->npts * xw;
+    double *x = f->xpts + f->npts * xw;
     x[0] = tw;
     x[1] = det;
-    if (hb->stability)
-        memcpy(x + 2, hb->xsol + 2, (xw - 2) * sizeof(double));
-    hb->pts[hb->npts * w] = omega;
-    fr_hb_rms(hb, hb->pts + hb->npts * w + 1);
-    memcpy(hb->qpts + hb->npts * (nq + 1), hb->qt, nq * sizeof(double));
-    hb->qpts[hb->npts * (nq + 1) + nq] = p;
-    hb->npts++;
+    if (stability)
+        memcpy(x + 2, fr_hb_stability_record(hb) + 2, (xw - 2) * sizeof(double));
+    f->pts[f->npts * w] = omega;
+    fr_hb_rms(hb, f->pts + f->npts * w + 1);
+    memcpy(f->qpts + f->npts * (nq + 1), hb->qt, nq * sizeof(double));
+    f->qpts[f->npts * (nq + 1) + nq] = p;
+    f->npts++;
     memcpy(hb->qsol, hb->qt, nq * sizeof(double));
     hb->omega_sol = omega;
     hb->level_sol = hb->level;

@@ -52,8 +52,8 @@ int fr_hb_solve_at(fricreg_hb *hb, const char *fn, double omega, const double *q
     if (!keep)
         return status;
     /* the stability at the solution (the Jacobians jq of its last residual) */
-    if (status == FRICREG_OK && hb->stability)
-        status = fr_hb_stability(hb, fn, omega, hb->xsol + 2);
+    if (status == FRICREG_OK && fr_hb_stability_on(hb))
+        status = fr_hb_stability(hb, fn, omega, fr_hb_stability_record(hb) + 2);
     if (status != FRICREG_OK)
         return status;
     memcpy(hb->qsol, hb->qw, hb->nq * sizeof(double));

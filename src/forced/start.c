@@ -14,6 +14,7 @@
 #include "start.h"
 #include "hb/dynamic.h"
 #include "hb/residual.h"
+#include "floquet/stability_method.h"
 
 /* The excitation level where fricreg_hb_solve's start begins: small enough for every element
  * to stay in the regime of the stuck guess (a Jenkins element slips once kt |q| > mu N, its
@@ -30,7 +31,8 @@
 static int on_linear_branch(fricreg_hb *hb, const char *fn, double omega, int *yes)
 {
     size_t nq = hb->nq;
-    double *q0 = hb->tan, *q1 = hb->tn, s0, s1;
+    struct fr_hb_vectors v = fr_hb_vectors(hb);
+    double *q0 = v.tan, *q1 = v.tn, s0, s1;
     *yes = 0;
     hb->level = 0.0;
     int status = fr_hb_solve_at(hb, fn, omega, NULL, 0);
@@ -65,7 +67,7 @@ static int level_start(fricreg_hb *hb, const char *fn, double omega)
     int linear = 0, status = on_linear_branch(hb, fn, omega, &linear);
     hb->level = 1.0;
     if (status == FRICREG_OK && linear)
-        return fr_hb_solve_at(hb, fn, omega, hb->tn, 1);
+        return fr_hb_solve_at(hb, fn, omega, fr_hb_vectors(hb).tn, 1);
     if (status == FRICREG_ENOMEM || hb->stopped)
         return status;
     struct fr_hb_branch b = {.level = 1, .omega = omega, .par = "level"};
@@ -113,7 +115,7 @@ static const start_route START_ROUTES[] = {level_start, plain_start, frequency_s
 /* Whether the kept solution is unstable by the stability in force (none: not unstable). */
 static int kept_unstable(const fricreg_hb *hb)
 {
-    return hb->stability && hb->xsol[2] == 0.0;
+    return fr_hb_stability_on(hb) && fr_hb_stability_record(hb)[2] == 0.0;
 }
 
 /* The routes in turn until one reaches a solution that is not unstable: a route can land on

@@ -87,8 +87,7 @@ void fricreg_hb_free(fricreg_hb *hb)
 {
     if (hb == NULL)
         return;
-    FR_FREE_ALL(hb->M, hb->J, hb->D, hb->Y, hb->Z, hb->G, hb->fq, hb->piv, hb->piv2, hb->pts,
-                hb->qpts, hb->xpts, hb->bifs);
+    FR_FREE_ALL(hb->M, hb->J, hb->D, hb->Y, hb->Z, hb->G, hb->fq, hb->piv, hb->piv2);
     for (int part = 0; part < FR_HB_PARTS; part++)
         if (hb->release[part] != NULL)
             hb->release[part](hb);

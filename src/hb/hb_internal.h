@@ -4,8 +4,10 @@
  * factors the dynamic stiffnesses and condenses them on the elements (G_h = J D_h^-1 J^T),
  * residual.h evaluates (R), its Jacobian and its Ω derivative, newton.h solves at one Ω,
  * recover.h gives the displacements. Complex numbers are stored as (re, im) pairs of doubles.
- * Included inside src/hb/ and by the three modules built on the driver: floquet/ (stability),
- * nma/ (nonlinear modes), forced/ (the forced response). */
+ * Included inside src/hb/ and by the modules built on the driver: floquet/ (stability), nma/
+ * (nonlinear modes) and forced/ (the forced response), which each hang their own state on it
+ * (its release table) and name no other's, and qsma/ (quasi-static modes), which reads its
+ * model. */
 #ifndef FRICREG_HB_INTERNAL_H
 #define FRICREG_HB_INTERNAL_H
 
@@ -27,13 +29,17 @@
 #define FR_HB_HALVINGS 10
 
 struct fr_hb_lu;        /* sparse.c: one harmonic's LU factor */
-struct fr_hb_hill;      /* floquet/hill.c: Hill's matrices */
-struct fr_hb_mono;      /* floquet/monodromy.c: the exact monodromy's workspace */
-struct fr_hb_reduction; /* floquet/reduction.c: the condensed stability's reduced model */
+struct fr_hb_stability; /* floquet/floquet_internal.h: the stability's state */
 struct fr_aft_march;    /* joint/aft_march.h: the march's workspace */
+struct fr_hb_forced;    /* forced/forced_internal.h: the forced response's branch */
 
 /* The parts of the driver that modules above it own (its release table). */
-enum fr_hb_part { FR_HB_PART_STABILITY, FR_HB_PART_NMA, FR_HB_PARTS };
+enum fr_hb_part { FR_HB_PART_STABILITY, FR_HB_PART_NMA, FR_HB_PART_FORCED, FR_HB_PARTS };
+
+/* Vectors of nq + 1 in the room the driver keeps for the forced response's continuation
+ * (cont): sized here with J's rows, since only the element setters know when those change,
+ * so that a solve allocates nothing; laid out by forced/ (forced_internal.h). */
+#define FR_HB_CONT_VECTORS 7
 
 /* The kinds of element the driver holds, each its number of rows of J and its AFT
  * (residual.c). */
@@ -90,7 +96,6 @@ struct fricreg_hb {
     double xi;
     int no_c, free_vibration;
     struct fr_hb_nma *nma; /* the backbone's points and workspace, NULL: none yet */
-    int have_backbone;     /* the model is still the backbone's (cleared by a model change) */
 
     double tol;
     int max_iter;
@@ -144,49 +149,29 @@ struct fricreg_hb {
     double *dy;     /* [nq + 1] Newton's step */
     double *qw;     /* [nq + 1] iterate (continuation: Ω last) */
     double *qt;     /* [nq + 1] line search trial */
-    double *tan;    /* [nq + 1] continuation tangent */
-    double *yp;     /* [nq + 1] continuation: last point, then predictor */
-    double *yo;     /* [nq + 1] continuation: the point before the last (the secant) */
-    double *tn;     /* [nq + 1] continuation: the tangent at the corrected point */
-    double *dir;    /* [nq + 1] continuation: the predictor's direction and border */
-    double *yl;     /* [nq + 1] continuation: the corrector's line search base */
+    double *cont;   /* [FR_HB_CONT_VECTORS (nq + 1)] the forced response's continuation's room */
     double *qjac;   /* [nq] the q of the last residual with Jacobians (the monodromy's orbit) */
     int *piv2;      /* [nq + 1] A's row interchanges (lu.c: LAPACK's) */
     int iterations; /* of the last Newton solve */
 
-    /* the last solution, and its stability (floquet/) when that is on: XW(hb) numbers as a
-     * point's below */
+    /* the last solution (its stability, when on, is floquet/'s) */
     int have_solution;
     double omega_sol, level_sol; /* its Ω and excitation level λ */
     double *qsol;                /* [nq] */
-    double *xsol;                /* [XW] */
 
-    /* Stability (floquet/), on with fricreg_hb_set_stability: Hill's method's workspace, made
-     * at the first solution that needs it */
-    int stability;
-    struct fr_hb_hill *hill; /* floquet/hill.c: Hill's matrices, NULL: none yet */
-    double *hill_x;          /* [XW]: a trial point's stability, for bifurcations (xsol's block) */
-    /* how (enum fricreg_hb_stability_method, floquet/stability_method.c): Hill's, or the exact
-     * monodromy (floquet/monodromy.c) with its workspace, grown at the first solution that needs more */
+    /* Stability (floquet/floquet_internal.h): its state while on (fricreg_hb_set_stability),
+     * NULL: off; and the method chosen (enum fricreg_hb_stability_method,
+     * fricreg_hb_set_stability_method), a setting kept while stability is off */
+    struct fr_hb_stability *stability;
     int stability_method;
-    struct fr_hb_mono *mono;
-    struct fr_hb_reduction *reduction; /* the condensed method's, built for model_serial */
-    unsigned long model_serial;        /* counts the model's changes (fr_hb_invalidate) */
+    unsigned long model_serial; /* counts the model's changes (fr_hb_invalidate) */
 
-    /* the continuation's points: [npts (1 + n)], Ω then the n RMS values; each point's
-     * unknowns (q, then Ω) in qpts [npts (nq + 1)], for fricreg_hb_peak; the branch's scales,
-     * and whether the model is still the branch's (cleared by a model change) */
-    double *pts, *qpts;
-    size_t npts, cap, qpts_stride; /* qpts holds cap points of qpts_stride = nq + 1 */
-    /* each point's extras [cap XW]: the tangent's Ω component, the sign of the bordered
-     * matrix's determinant, then (stability on) stable (1/0), the largest |multiplier|, and the
-     * 2n Floquet exponents (re, im); and the located bifurcations [cap (2 + n)]: the type
-     * (enum fricreg_hb_bifurcation_type), Ω, the n RMS values */
-    double *xpts, *bifs; /* bifs [cap (4 + n)]: type, Ω, the point before, λ, the n RMS */
-    size_t xpts_stride, nbif;
-    double branch_qs, branch_ws;
-    int have_branch;
-    int branch_level; /* the branch is in the level λ at fixed Ω (qpts's last entry is λ) */
+    /* the forced response's branch, its points and bifurcations (forced/forced_internal.h),
+     * NULL: none stored yet */
+    struct fr_hb_forced *forced;
+    /* counts the changes of what a solution keeps beside its unknowns (stability turned on or
+     * off, floquet/stability_method.c): points stored before one are dropped (forced/) */
+    unsigned long extras_serial;
 
     /* The monitor (monitor.c, fricreg_hb_set_monitor) and the bound on one call's Newton
      * iterations (0: none); while a solving call runs, busy (only the getters are allowed: the
@@ -199,18 +184,14 @@ struct fricreg_hb {
     int report_omega; /* the monitor's parameter is the factored Ω, else the level λ */
     struct fr_error stop_err;
 
-    /* What the modules above the driver hang on it (floquet/'s stability, nma/'s backbone),
-     * each with the function that frees it, set by the module that made it: the driver's free
-     * calls them, so no module frees the objects of another. NULL: nothing hung. */
+    /* What the modules above the driver hang on it (floquet/'s stability, nma/'s backbone,
+     * forced/'s branch), each with the function that frees it, set by the module that made
+     * it: the driver's free calls them, so no module frees the objects of another. NULL:
+     * nothing hung. */
     void (*release[FR_HB_PARTS])(fricreg_hb *hb);
 
     struct fr_error err;
 };
-
-/* The numbers kept with each point (xpts) and the last solution: 2 (the tangent's Ω component,
- * the determinant's sign), and with stability 2 + 4 n (stable, the largest |multiplier|, the 2n
- * exponents). */
-#define FR_HB_XW(hb) ((hb)->stability ? 4 + 4 * (hb)->n : 2)
 
 /* Element e's sliders: their count, stiffnesses and slip forces (friction coefficients with
  * lift-off). */

@@ -12,13 +12,13 @@
 #include "sparse.h"
 #include "busy.h"
 
-/* A model change: the factors, the kept solution and the branch's unknowns no longer hold. */
+/* A model change: the factors and the kept solution no longer hold, nor (model_serial counted)
+ * what the modules above made on the old model (the forced response's branch, the backbone,
+ * the condensed stability's reduced model). */
 void fr_hb_invalidate(fricreg_hb *hb)
 {
     hb->factored_omega = NAN;
     hb->have_solution = 0;
-    hb->have_branch = 0;
-    hb->have_backbone = 0;
     hb->model_serial++;
 }
 

@@ -29,7 +29,9 @@ int fr_hb_rows_alloc(const fricreg_hb *hb, size_t cap, size_t sq, struct fr_hb_r
     b->Y = alloc_doubles(2 * H1 * n * (cap + 1));
     b->Z = alloc_doubles(2 * n * (cap + 1) + 2 * n);
     b->G = alloc_doubles(4 * H1 * cap * cap + 4 * H1 * cap);
-    b->fq = alloc_doubles(nq + sq * nc * nc + (nq + 1) * (nq + 1) + 12 * (nq + 1) + 2 * nq);
+    /* fq, jq, A, five of Newton's vectors (R .. qt), the continuation's room, qsol, qjac */
+    b->fq = alloc_doubles(nq + sq * nc * nc + (nq + 1) * (nq + 1) +
+                          (5 + FR_HB_CONT_VECTORS) * (nq + 1) + 2 * nq);
     b->piv2 = malloc((nq + 1) * sizeof *b->piv2);
     if (!b->J || !b->Y || !b->Z || !b->G || !b->fq || !b->piv2) {
         fr_hb_rows_free(b);
@@ -79,12 +81,7 @@ void fr_hb_rows_set(fricreg_hb *hb)
     hb->dy = hb->rw + (nq + 1);
     hb->qw = hb->dy + (nq + 1);
     hb->qt = hb->qw + (nq + 1);
-    hb->tan = hb->qt + (nq + 1);
-    hb->yp = hb->tan + (nq + 1);
-    hb->yo = hb->yp + 2 * (nq + 1);
-    hb->tn = hb->yo + (nq + 1);
-    hb->dir = hb->tn + (nq + 1);
-    hb->yl = hb->dir + (nq + 1);
-    hb->qsol = hb->yl + (nq + 1);
+    hb->cont = hb->qt + (nq + 1);
+    hb->qsol = hb->cont + FR_HB_CONT_VECTORS * (nq + 1);
     hb->qjac = hb->qsol + nq;
 }

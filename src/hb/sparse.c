@@ -185,8 +185,6 @@ static int install(fricreg_hb *hb, const char *fn, cholmod_sparse *X[3])
     hb->lu = p.lu;
     hb->factored_omega = NAN;
     hb->have_solution = 0;
-    hb->have_branch = 0;
-    hb->have_backbone = 0;
     hb->model_serial++;
     return FRICREG_OK;
 }

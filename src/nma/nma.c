@@ -213,7 +213,7 @@ int fr_hb_nma_run(fricreg_hb *hb, const char *fn, size_t mode, int damping, doub
     nma_free(hb->nma);
     hb->nma = s;
     hb->release[FR_HB_PART_NMA] = nma_release;
-    hb->have_backbone = 1;
+    s->model_serial = hb->model_serial;
     s->modal = damping == FRICREG_HB_NMA_DAMPING_MODAL;
     s->mode = mode;
     s->targets = hb->nma_targets;
@@ -318,7 +318,7 @@ int fricreg_hb_nma_point(fricreg_hb *hb, size_t i, double *amplitude, double *om
                        nc, hb->n, hb->nc);
     if (x != NULL && hb->busy) /* the evaluation would move the solve's factors */
         return fr_hb_refuse(hb, fn);
-    if (x != NULL && (!hb->have_backbone || s->nq != hb->nq))
+    if (x != NULL && (!fr_hb_backbone_holds(hb) || s->nq != hb->nq))
         return fr_fail(hb, FRICREG_EINVAL, "%s: the model changed since fricreg_hb_nma", fn);
     const double *p = s->pts + i * s->stride;
     if (x != NULL) {

@@ -56,7 +56,7 @@ static int point_displacements(fricreg_hb *hb, const char *fn, size_t i, const v
     size_t npts = fricreg_hb_nma_points(hb);
     if (i >= npts)
         return fr_fail(hb, FRICREG_EINVAL, "%s: i = %zu, %zu points stored", fn, i, npts);
-    if (!hb->have_backbone || hb->nma->nq != hb->nq)
+    if (!fr_hb_backbone_holds(hb) || hb->nma->nq != hb->nq)
         return fr_fail(hb, FRICREG_EINVAL, "%s: the model changed since the backbone", fn);
     size_t n = hb->n, nc = hb->nc;
     if ((*x = malloc((n * nc + 3 * n) * sizeof **x)) == NULL)

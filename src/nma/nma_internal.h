@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* nma_internal.h — the nonlinear modes' state (fricreg_hb_nma, fricreg_hb.h): the linear mode
  * the backbone starts from (nma_linear.c), the extended periodic motion concept's equations and
- * their Newton solve (nma_solve.c), the backbone's points (nma.c). Included only inside
- * src/hb/. */
+ * their Newton solve (nma_solve.c), the backbone's points (nma.c), hung on the driver as
+ * hb->nma. Included only inside src/nma/. */
 #ifndef FRICREG_HB_NMA_INTERNAL_H
 #define FRICREG_HB_NMA_INTERNAL_H
 
@@ -44,7 +44,15 @@ struct fr_hb_nma {
     double *special; /* per point FR_HB_NMA_SPECIAL_STRIDE doubles: place, type, k, r, a, ω, ζ */
     double *modes;   /* [n n] the stuck modes φ_r (row r), mass-normalized; NULL until first
                         asked for (nma_energy.c) */
+    unsigned long model_serial; /* the driver's when the backbone was begun: it holds while the
+                                   model is the same (fr_hb_backbone_holds) */
 };
+
+/* Whether a backbone was computed and the model is still its own (no change since). */
+static inline int fr_hb_backbone_holds(const fricreg_hb *hb)
+{
+    return hb->nma != NULL && hb->nma->model_serial == hb->model_serial;
+}
 
 /* The linearized structure's mode k (elements stuck: each row of J a spring of its elements'
  * stiffness, fr_hb_nma_row): φ_k mass-normalized into nma->phi, ω_k, ξ_k, a_stick.

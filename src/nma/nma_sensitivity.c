@@ -127,7 +127,7 @@ static int check_args(fricreg_hb *hb, const char *fn, size_t i, const struct par
         return fr_fail(hb, FRICREG_EINVAL, "%s: i = %zu, %zu points stored", fn, i, npts);
     if (damp != NULL && ndof != hb->n)
         return fr_fail(hb, FRICREG_ESIZE, "%s: ndof = %zu, the driver has %zu", fn, ndof, hb->n);
-    if (!hb->have_backbone || hb->nma->nq != hb->nq)
+    if (!fr_hb_backbone_holds(hb) || hb->nma->nq != hb->nq)
         return fr_fail(hb, FRICREG_EINVAL, "%s: the model changed since the backbone", fn);
     *shape = 0;
     for (size_t k = 0; k < P->np; k++) {
