@@ -121,6 +121,9 @@ class AFT:
     The element is rate-independent: nothing depends on the frequency.
     """
 
+    # every attribute: assigning a misspelt setting raises instead of adding one
+    __slots__ = ("_aft", "_harmonics", "_samples", "_n", "__weakref__")
+
     def __init__(self, harmonics, samples=0):
         H = as_integer(harmonics, "harmonics")
         N = as_integer(samples, "samples")

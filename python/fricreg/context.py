@@ -95,6 +95,9 @@ class Context:
     threads at once; separate contexts may.
     """
 
+    # every attribute: assigning a misspelt setting raises instead of adding one
+    __slots__ = ("_ctx", "_m", "_law", "_eps", "_keep", "_partition", "_W", "_mun", "__weakref__")
+
     def __init__(self, m=None, *, W=None, mun=None, law="quinn", eps=1e-3,
                  partition="consistent"):
         m = self._size_from(m, W, mun)

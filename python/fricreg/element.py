@@ -98,6 +98,10 @@ class Element:
         > 0, mun >= 0, ...); the message is ``fricreg_element_explain``'s.
     """
 
+    # every attribute: assigning a misspelt setting raises instead of adding one
+    __slots__ = ("_type", "_name", "_dim", "_nparams", "_nstate", "_nsliders", "_params",
+                 "__weakref__")
+
     def __init__(self, name, params):
         params = as_doubles(params, "params", ndim=1)
         self._type = _type_for(name, params.size)

@@ -150,6 +150,10 @@ class HarmonicBalance:
     (``fricreg_hb_set_monitor``) and raises :class:`fricreg.Interrupted` with what was computed.
     """
 
+    # every attribute: assigning a misspelt setting raises instead of adding one
+    __slots__ = ("_hb", "_ndof", "_harmonics", "_nelements", "_J", "_nrows", "_watch", "_stability",
+                 "__weakref__")
+
     def __init__(self, M, K, C=None, *, elements, harmonics, rayleigh=None, excitation=None):
         matrices = [(lib.FRICREG_MASS, MatrixArgs(M, "M")),
                     (lib.FRICREG_STIFFNESS, MatrixArgs(K, "K"))]

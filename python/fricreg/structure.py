@@ -162,6 +162,10 @@ class Structure:
     for Ctrl-C).
     """
 
+    # every attribute: assigning a misspelt setting raises instead of adding one
+    __slots__ = ("_s", "_ndof", "_ncontacts", "_mun", "_sets", "_nelements", "_law", "_eps",
+                 "_scheme", "_warned", "__weakref__")
+
     def __init__(self, M, K, *, damping=None, rayleigh=None, J=None, mun=None, law=None,
                  eps=None, influence=None, ground_accel=None, load=None, load_history=None,
                  elements=(), u0=None, v0=None, newton_tol=None, newton_max_iter=None,

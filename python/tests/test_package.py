@@ -67,8 +67,8 @@ ASSIGNED_UNTIL_2_0 = {("Context", name) for name in ("law", "eps", "mun", "W", "
 
 def test_one_settings_style():
     # a setting is changed by a set_* method whose docstring names its refusals, and read by a
-    # read-only property; no public attribute is a plain one that an assignment (or a typo's)
-    # would silently replace
+    # read-only property; no attribute is a plain one that an assignment would silently replace
+    # or a misspelt one add
     J = [[1.0, 0.0]]
     objects = [fricreg.Context(2), fricreg.Element("jenkins", [2.0, 1.0]), fricreg.AFT(3),
                fricreg.HarmonicBalance([[1.0, 0.0], [0.0, 1.0]], [[2.0, -1.0], [-1.0, 2.0]],
@@ -77,7 +77,9 @@ def test_one_settings_style():
                fricreg.Structure([[1.0]], [[1.0]], J=[[1.0]], mun=[0.3])]
     for obj in objects:
         cls = type(obj).__name__
-        assert [name for name in vars(obj) if not name.startswith("_")] == [], cls
+        assert not hasattr(obj, "__dict__"), cls  # its __slots__ are all private
+        with pytest.raises(AttributeError):
+            obj.harmonic = 5  # a misspelt setting is refused, not added
         for name, member in vars(type(obj)).items():
             if isinstance(member, property) and member.fset is not None:
                 assert (cls, name) in ASSIGNED_UNTIL_2_0, "%s.%s is assignable" % (cls, name)
