@@ -33,6 +33,7 @@ from ._fricreg import ffi, lib
 from ._arrays import as_doubles, as_integer, as_scalar, pointer
 from .element import Element
 from .errors import raise_status, refused
+from ._settings import fixed
 
 __all__ = ["AFT", "AFTResult", "AFTNormalResult", "AFT_ELEMENT_TYPES"]
 
@@ -100,7 +101,7 @@ class AFT:
     Attributes
     ----------
     harmonics, samples, n : int
-        H, N and 2H + 1.
+        H, N and 2H + 1 (read-only).
 
     Raises
     ------
@@ -120,6 +121,9 @@ class AFT:
     The element is rate-independent: nothing depends on the frequency.
     """
 
+    # every attribute: assigning a misspelt setting raises instead of adding one
+    __slots__ = ("_aft", "_harmonics", "_samples", "_n", "__weakref__")
+
     def __init__(self, harmonics, samples=0):
         H = as_integer(harmonics, "harmonics")
         N = as_integer(samples, "samples")
@@ -135,9 +139,14 @@ class AFT:
                                         lib.FRICREG_AFT_MAX_SAMPLES))
             raise_status(status, "AFT", detail)
         self._aft = ffi.gc(out[0], lib.fricreg_aft_free)
-        self.harmonics = lib.fricreg_aft_harmonics(self._aft)
-        self.samples = lib.fricreg_aft_samples(self._aft)
-        self.n = 2 * self.harmonics + 1
+        self._harmonics = lib.fricreg_aft_harmonics(self._aft)
+        self._samples = lib.fricreg_aft_samples(self._aft)
+        self._n = 2 * self._harmonics + 1
+
+    harmonics = fixed("harmonics", "int: H, fixed at construction.")
+    samples = fixed("samples", "int: N, the samples a period (0: the exact path only), fixed "
+                    "at construction.")
+    n = fixed("n", "int: 2H + 1, the length of a coefficient array.")
 
     def __repr__(self):
         return "AFT(harmonics=%d, samples=%d)" % (self.harmonics, self.samples)

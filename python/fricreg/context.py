@@ -17,6 +17,7 @@ from ._record import record
 from ._fricreg import ffi, lib
 from ._arrays import as_doubles, as_integer, as_scalar, pointer
 from .errors import raise_status, refused
+from ._settings import assigned, fixed
 from .laws import LAWS, _law_code
 from ._matrices import MatrixArgs, is_sparse
 
@@ -68,8 +69,11 @@ class Context:
     m : int
         The number of contacts (read-only).
     law, eps, mun, W, partition, keep_tangent
-        Properties: reading gives a copy of what was set, setting calls the C setter (which
-        discards the tangent of the last evaluation).
+        Read-only properties: a copy of what was set. Each is set by a method
+        (:meth:`set_law` for law and eps, :meth:`set_bounds`, :meth:`set_coupling`,
+        :meth:`set_partition`, :meth:`set_keep_tangent`), which discards the tangent of the
+        last evaluation. Assigning one (``ctx.mun = ...``) still calls its method but warns
+        (``DeprecationWarning``) and ends in 2.0.
 
     Raises
     ------
@@ -77,7 +81,7 @@ class Context:
         (a ``ValueError``) ``m`` is missing and cannot be inferred, an argument has the wrong
         shape or dtype, or ``law`` or ``partition`` names none. Refused by the library: the C
         library refused a value (m out of range, a bound < 0, eps below DBL_MIN, W not
-        symmetric, not semidefinite, NaN, ...); the message names the property and is the
+        symmetric, not semidefinite, NaN, ...); the message names the argument and is the
         context's own (``fricreg_ctx_errmsg``).
     fricreg.OutOfMemoryError
         The context or W's factor could not be allocated.
@@ -91,6 +95,9 @@ class Context:
     threads at once; separate contexts may.
     """
 
+    # every attribute: assigning a misspelt setting raises instead of adding one
+    __slots__ = ("_ctx", "_m", "_law", "_eps", "_keep", "_partition", "_W", "_mun", "__weakref__")
+
     def __init__(self, m=None, *, W=None, mun=None, law="quinn", eps=1e-3,
                  partition="consistent"):
         m = self._size_from(m, W, mun)
@@ -100,15 +107,17 @@ class Context:
             raise_status(status, "Context", "m = %d: not 1 <= m <= 2^26" % m
                          if status == lib.FRICREG_EINVAL else "")
         self._ctx = ffi.gc(out[0], lib.fricreg_ctx_free)
-        self.m = m
+        self._m = m
         self._law, self._eps, self._keep = "quinn", 1e-3, True
         self._partition, self._W, self._mun = "consistent", np.ones(m), np.ones(m)
         self.set_law(law, eps)
-        self.partition = partition
+        self.set_partition(partition)
         if W is not None:
-            self.W = W
+            self.set_coupling(W)
         if mun is not None:
-            self.mun = mun
+            self.set_bounds(mun)
+
+    m = fixed("m", "int: the number of contacts, fixed at construction.")
 
     @staticmethod
     def _size_from(m, W, mun):
@@ -142,7 +151,7 @@ class Context:
             raise refused("%s: shape %s; expected (%d,)" % (name, array.shape, self.m))
         return array
 
-    # ---- settings ------------------------------------------------------------------------
+    # ---- settings: set_* methods, read-only properties (docs/python.md, "Settings") -----
 
     def set_law(self, law, eps=None):
         """Select the friction law and its regularization (``fricreg_ctx_set_law``).
@@ -158,56 +167,58 @@ class Context:
         Raises
         ------
         fricreg.InputError
-            (a ``ValueError``) ``law`` names no law. Refused by the library: ``eps`` below
-            DBL_MIN, NaN or infinite.
+            (a ``ValueError``) ``law`` names no law, or ``eps`` is not one real number.
+            Refused by the library: ``eps`` below DBL_MIN, NaN or infinite. The law and eps
+            stay as they were.
         """
         code = _law_code(law)
         eps = self._eps if eps is None else as_scalar(eps, "eps")
-        self._check(lib.fricreg_ctx_set_law(self._ctx, code, eps), "Context.set_law")
+        self._check(lib.fricreg_ctx_set_law(self._ctx, code, eps), "Context.set_law: eps")
         self._law, self._eps = LAWS[code - 1], eps
 
-    @property
-    def law(self):
-        """str: the law's name (:data:`fricreg.LAWS`); set with a name or a code."""
-        return self._law
+    def set_bounds(self, mun):
+        """Set the friction bounds mu_i N_i (``fricreg_ctx_set_bounds``): cheap, O(m), may
+        change before every :meth:`eval` (normal forces vary).
 
-    @law.setter
-    def law(self, law):
-        self.set_law(law)
+        Parameters
+        ----------
+        mun : array_like of float, shape (m,), or float
+            The bounds >= 0 (force units); one number sets every contact's.
 
-    @property
-    def eps(self):
-        """float: the regularization eps (velocity units); setting keeps the law."""
-        return self._eps
-
-    @eps.setter
-    def eps(self, eps):
-        self.set_law(self._law, eps)
-
-    @property
-    def mun(self):
-        """ndarray of float64, shape (m,): the bounds mu_i N_i >= 0 (force units), a copy;
-        set with an array of shape (m,) or a scalar for all (``fricreg_ctx_set_bounds``:
-        cheap, may change before every :meth:`eval`)."""
-        return self._mun.copy()
-
-    @mun.setter
-    def mun(self, mun):
+        Raises
+        ------
+        fricreg.InputError
+            (a ``ValueError``) ``mun`` is not real numbers or not of shape (m,). Refused by
+            the library: a bound < 0, NaN or infinite. The bounds stay as they were.
+        """
         mun = np.full(self.m, as_scalar(mun, "mun")) if np.ndim(mun) == 0 \
             else self._vector(mun, "mun")
-        self._check(lib.fricreg_ctx_set_bounds(self._ctx, self.m, pointer(mun)), "Context.mun")
+        self._check(lib.fricreg_ctx_set_bounds(self._ctx, self.m, pointer(mun)),
+                    "Context.set_bounds: mun")
         self._mun = mun.copy()
 
-    @property
-    def W(self):
-        """The coupling, a copy of what was set: ndarray of shape (m,) (diagonal) or (m, m)
-        (dense), or a scipy.sparse CSR or CSC matrix. Set as the constructor's ``W``
-        (``fricreg_ctx_set_coupling_diagonal``, ``_dense``, ``_csr``, ``_csc``); on failure the
-        context keeps its coupling."""
-        return self._W.copy()
+    def set_coupling(self, W):
+        """Set the Delassus matrix W = J M^-1 J^T (``fricreg_ctx_set_coupling_diagonal``,
+        ``_dense``, ``_csr``, ``_csc``, by W's storage).
 
-    @W.setter
-    def W(self, W):
+        Parameters
+        ----------
+        W : array_like or scipy.sparse matrix
+            Symmetric positive semidefinite (acceleration per force): shape (m,) for a
+            diagonal W (every entry > 0), (m, m) dense (``W[i, j]`` = W_ij, row-major), or a
+            scipy.sparse matrix of shape (m, m) (CSR and CSC as they are, other formats
+            converted to CSR; given whole, not by a triangle). Copied.
+
+        Raises
+        ------
+        fricreg.InputError
+            (a ``ValueError``) ``W`` is not real numbers or of another shape. Refused by the
+            library: a diagonal entry <= 0, W not symmetric (``FRICREG_ENOTSYM``) or not
+            semidefinite (``FRICREG_ENOTPSD``), NaN or infinite. The coupling stays as it
+            was.
+        fricreg.OutOfMemoryError
+            W's factor could not be allocated.
+        """
         if is_sparse(W):
             args = self._square(W, "W")
             setter = (lib.fricreg_ctx_set_coupling_csc if args.format == lib.FRICREG_MATRIX_CSC
@@ -224,36 +235,117 @@ class Context:
             else:
                 raise refused("W: shape %s; expected (%d,) (diagonal) or (%d, %d)"
                               % (stored.shape, self.m, self.m, self.m))
-        self._check(status, "Context.W")
+        self._check(status, "Context.set_coupling: W")
         self._W = stored
 
-    @property
-    def partition(self):
-        """str: the near-stick partition, one of :data:`PARTITIONS`
-        (``fricreg_ctx_set_partition``)."""
-        return self._partition
+    def set_partition(self, partition):
+        """Select the near-stick partition (``fricreg_ctx_set_partition``).
 
-    @partition.setter
-    def partition(self, partition):
+        Parameters
+        ----------
+        partition : str
+            One of :data:`PARTITIONS`: ``"consistent"`` (the consistent near-stick law of
+            ``docs/coupled.md``) or ``"paper"`` (Quinn's Sec. 3.3).
+
+        Raises
+        ------
+        fricreg.InputError
+            (a ``ValueError``) ``partition`` names none. The partition stays as it was.
+        """
         if not isinstance(partition, str) or partition not in _PARTITION_CODES:
             raise refused("partition: %r is not a partition (one of %s)"
                           % (partition, ", ".join(PARTITIONS)))
         self._check(lib.fricreg_ctx_set_partition(self._ctx, _PARTITION_CODES[partition]),
-                    "Context.partition")
+                    "Context.set_partition: partition")
         self._partition = partition
+
+    def set_keep_tangent(self, keep):
+        """Whether :meth:`eval` keeps what :meth:`tangent` needs
+        (``fricreg_ctx_set_keep_tangent``); on by default, an explicit integrator that never
+        asks for the tangent may turn it off.
+
+        Parameters
+        ----------
+        keep : bool
+            True or False (a numpy bool, 0 or 1 too).
+
+        Raises
+        ------
+        fricreg.InputError
+            (a ``ValueError``) ``keep`` is not a bool (a string such as ``"no"`` would read
+            as true). The setting stays as it was.
+        """
+        if not isinstance(keep, (bool, np.bool_)) and not (
+                isinstance(keep, (int, np.integer)) and keep in (0, 1)):
+            raise refused("keep: %r is not a bool" % (keep,))
+        keep = bool(keep)
+        self._check(lib.fricreg_ctx_set_keep_tangent(self._ctx, int(keep)),
+                    "Context.set_keep_tangent: keep")
+        self._keep = keep
+
+    @property
+    def law(self):
+        """str: the law's name (:data:`fricreg.LAWS`); set by :meth:`set_law`."""
+        return self._law
+
+    @law.setter
+    def law(self, law):
+        assigned("Context", "law", "set_law")
+        self.set_law(law)
+
+    @property
+    def eps(self):
+        """float: the regularization eps (velocity units); set by :meth:`set_law`."""
+        return self._eps
+
+    @eps.setter
+    def eps(self, eps):
+        assigned("Context", "eps", "set_law")
+        self.set_law(self._law, eps)
+
+    @property
+    def mun(self):
+        """ndarray of float64, shape (m,): the bounds mu_i N_i (force units), a copy; set by
+        :meth:`set_bounds`."""
+        return self._mun.copy()
+
+    @mun.setter
+    def mun(self, mun):
+        assigned("Context", "mun", "set_bounds")
+        self.set_bounds(mun)
+
+    @property
+    def W(self):
+        """The coupling, a copy of what was set: ndarray of shape (m,) (diagonal) or (m, m)
+        (dense), or a scipy.sparse CSR or CSC matrix; set by :meth:`set_coupling`."""
+        return self._W.copy()
+
+    @W.setter
+    def W(self, W):
+        assigned("Context", "W", "set_coupling")
+        self.set_coupling(W)
+
+    @property
+    def partition(self):
+        """str: the near-stick partition, one of :data:`PARTITIONS`; set by
+        :meth:`set_partition`."""
+        return self._partition
+
+    @partition.setter
+    def partition(self, partition):
+        assigned("Context", "partition", "set_partition")
+        self.set_partition(partition)
 
     @property
     def keep_tangent(self):
-        """bool: whether :meth:`eval` keeps what :meth:`tangent` needs (default True; an
-        explicit integrator may turn it off: ``fricreg_ctx_set_keep_tangent``)."""
+        """bool: whether :meth:`eval` keeps what :meth:`tangent` needs (default True); set by
+        :meth:`set_keep_tangent`."""
         return self._keep
 
     @keep_tangent.setter
     def keep_tangent(self, keep):
-        keep = bool(keep)
-        self._check(lib.fricreg_ctx_set_keep_tangent(self._ctx, int(keep)),
-                    "Context.keep_tangent")
-        self._keep = keep
+        assigned("Context", "keep_tangent", "set_keep_tangent")
+        self.set_keep_tangent(bool(keep))
 
     # ---- evaluation ----------------------------------------------------------------------
 

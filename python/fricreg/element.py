@@ -15,6 +15,7 @@ from ._record import record
 from ._fricreg import ffi, lib
 from ._arrays import as_doubles, as_integer, as_scalar, pointer
 from .errors import raise_status, refused
+from ._settings import fixed
 
 __all__ = ["ELEMENT_TYPES", "Element", "ElementResult", "segalman"]
 
@@ -64,7 +65,8 @@ def _type_for(name, nparams):
 
 
 class Element:
-    """One friction element type with its parameters, evaluated at many points at once.
+    """One friction element type with its parameters, evaluated at many points at once; its
+    attributes are read-only, fixed at construction.
 
     Parameters
     ----------
@@ -96,18 +98,30 @@ class Element:
         > 0, mun >= 0, ...); the message is ``fricreg_element_explain``'s.
     """
 
+    # every attribute: assigning a misspelt setting raises instead of adding one
+    __slots__ = ("_type", "_name", "_dim", "_nparams", "_nstate", "_nsliders", "_params",
+                 "__weakref__")
+
     def __init__(self, name, params):
         params = as_doubles(params, "params", ndim=1)
         self._type = _type_for(name, params.size)
-        self.name = name
-        self.dim = lib.fricreg_element_dim(self._type)
-        self.nparams = lib.fricreg_element_nparams(self._type)
-        self.nstate = lib.fricreg_element_nstate(self._type)
-        self.nsliders = lib.fricreg_element_nsliders(self._type)
+        self._name = name
+        self._dim = lib.fricreg_element_dim(self._type)
+        self._nparams = lib.fricreg_element_nparams(self._type)
+        self._nstate = lib.fricreg_element_nstate(self._type)
+        self._nsliders = lib.fricreg_element_nsliders(self._type)
         self._raise_if_refused(params, None, None, "Element")
         params = params.copy()
         params.setflags(write=False)
-        self.params = params
+        self._params = params
+
+    name = fixed("name", "str: the type's name, one of :data:`ELEMENT_TYPES`.")
+    dim = fixed("dim", "int: components of u and f (1, 2 or 3).")
+    nparams = fixed("nparams", "int: the parameters of one element.")
+    nstate = fixed("nstate", "int: the state's entries of one element.")
+    nsliders = fixed("nsliders", "int: the sliders of one element (an Iwan type's ns).")
+    params = fixed("params", "ndarray, shape (nparams,): the parameters, read-only (an "
+                   "element of other parameters is a new Element).")
 
     def __repr__(self):
         return "Element(%r, %r)" % (self.name, self.params.tolist())

@@ -15,6 +15,7 @@ from ._fricreg import ffi, lib
 from ._arrays import as_doubles, as_integer, as_scalar, choice, pointer
 from .element import Element
 from .errors import Error, InputError, interrupted, raise_status, refused
+from ._settings import fixed
 from ._hb_results import Backbone, Bifurcation, Response, Solution, SpecialPoint
 from ._matrices import MatrixArgs
 
@@ -125,6 +126,13 @@ class HarmonicBalance:
     excitation : (array_like, array_like), optional
         (p_c, p_s), each of shape (ndof,): the force p_c cos Ωt + p_s sin Ωt (N).
 
+    Attributes
+    ----------
+    ndof, harmonics, nelements, nrows : int
+        Read-only, fixed with the model: the dofs, H, the elements and q's rows. The settings
+        that may change are methods: :meth:`set_excitation`, :meth:`set_newton`,
+        :meth:`set_continuation`, :meth:`set_stability`, :meth:`set_element_param`.
+
     Raises
     ------
     fricreg.InputError
@@ -141,6 +149,10 @@ class HarmonicBalance:
     thread at a time. Ctrl-C during a solve stops it through the library's monitor
     (``fricreg_hb_set_monitor``) and raises :class:`fricreg.Interrupted` with what was computed.
     """
+
+    # every attribute: assigning a misspelt setting raises instead of adding one
+    __slots__ = ("_hb", "_ndof", "_harmonics", "_nelements", "_J", "_nrows", "_watch", "_stability",
+                 "__weakref__")
 
     def __init__(self, M, K, C=None, *, elements, harmonics, rayleigh=None, excitation=None):
         matrices = [(lib.FRICREG_MASS, MatrixArgs(M, "M")),
@@ -159,10 +171,10 @@ class HarmonicBalance:
             raise refused("elements: none given; harmonic balance needs at least one element")
         blocks = [self._block(entry, ndof, i) for i, entry in enumerate(elements)]
         count = sum(block[1] for block in blocks)
-        self.ndof, self.harmonics = ndof, as_integer(harmonics, "harmonics")
-        self.nelements = count
+        self._ndof, self._harmonics = ndof, as_integer(harmonics, "harmonics")
+        self._nelements = count
         self._J = np.vstack([block[2] for block in blocks])
-        self.nrows = self._J.shape[0]
+        self._nrows = self._J.shape[0]
         out = ffi.new("fricreg_hb **")
         status = lib.fricreg_hb_create(ndof, count, self.harmonics, out)
         if status != lib.FRICREG_OK:
@@ -237,7 +249,14 @@ class HarmonicBalance:
                 error.result = partial()
                 raise
 
-    # ---- settings ---------------------------------------------------------------------
+    # ---- settings: set_* methods (docs/python.md, "Settings") ---------------------------
+
+    ndof = fixed("ndof", "int: the model's degrees of freedom, fixed at construction.")
+    harmonics = fixed("harmonics", "int: H, the harmonics, fixed at construction.")
+    nelements = fixed("nelements", "int: the friction elements of every block, fixed at "
+                      "construction.")
+    nrows = fixed("nrows", "int: the rows of q = J x, every element's dim rows, fixed at "
+                  "construction.")
 
     def set_excitation(self, pc, ps=None):
         """The force p_c cos Ωt + p_s sin Ωt.

@@ -21,6 +21,7 @@ from ._fricreg import ffi, lib
 from ._arrays import as_doubles, as_scalar, choice, pointer
 from .element import Element, _type_for
 from .errors import AccuracyWarning, Error, interrupted, raise_status, refused
+from ._settings import assigned, fixed
 from .laws import _law_code
 from ._matrices import MatrixArgs, is_sparse
 from ._structure_result import ErrorEstimate, EstimateCompanions, StructureResult
@@ -133,10 +134,13 @@ class Structure:
     Attributes
     ----------
     ndof, ncontacts, nelements : int
+        Read-only, fixed at construction.
     law : str or None
-        The contacts' law (None without contacts).
+        The contacts' law (None without contacts); read-only, set by :meth:`set_law`.
     eps : float or None
-        The regularization in force (m/s).
+        The regularization in force (m/s); read-only, set by :meth:`set_law`.
+    mun : ndarray of float64, shape (ncontacts,)
+        A copy of the contacts' bounds (N); read-only, set by :meth:`set_bounds`.
 
     Raises
     ------
@@ -158,6 +162,10 @@ class Structure:
     for Ctrl-C).
     """
 
+    # every attribute: assigning a misspelt setting raises instead of adding one
+    __slots__ = ("_s", "_ndof", "_ncontacts", "_mun", "_sets", "_nelements", "_law", "_eps",
+                 "_scheme", "_warned", "__weakref__")
+
     def __init__(self, M, K, *, damping=None, rayleigh=None, J=None, mun=None, law=None,
                  eps=None, influence=None, ground_accel=None, load=None, load_history=None,
                  elements=(), u0=None, v0=None, newton_tol=None, newton_max_iter=None,
@@ -166,7 +174,7 @@ class Structure:
         shape = _shape(M)
         if len(shape) != 2 or shape[0] != shape[1] or shape[0] < 1:
             raise refused("M: shape %s; expected (ndof, ndof), ndof >= 1" % (shape,))
-        n = self.ndof = shape[0]
+        n = self._ndof = shape[0]
         if (J is None) != (mun is None):
             raise refused("%s: J and mun come together (neither: no friction contacts)"
                           % ("mun" if mun is None else "J"))
@@ -175,7 +183,7 @@ class Structure:
                           % ("eps" if eps is not None else "law"))
         if damping is not None and rayleigh is not None:
             raise refused("rayleigh: give damping or rayleigh, not both")
-        m = self.ncontacts = 0 if J is None else (_shape(J) + (0,))[0]
+        m = self._ncontacts = 0 if J is None else (_shape(J) + (0,))[0]
         out = ffi.new("fricreg_structure **")
         self._check(lib.fricreg_structure_create(n, max(m, 1), out), "ndof")
         self._s = ffi.gc(out[0], lib.fricreg_structure_free)
@@ -198,8 +206,11 @@ class Structure:
         self._sets = []
         for k, element_set in enumerate(elements):
             self._add_elements(element_set, "elements[%d]" % k)
-        self.nelements = sum(me for me, _ in self._sets)
-        self._set_law(law, eps)
+        self._nelements = sum(me for me, _ in self._sets)
+        self._law = self._eps = None
+        if m:
+            self.set_law("quinn" if law is None else law, self._default_eps() if eps is None
+                         else eps)
         if u0 is not None or v0 is not None:
             self.reset(u0, v0)
         if newton_tol is not None or newton_max_iter is not None:
@@ -244,6 +255,7 @@ class Structure:
     def _set_contacts(self, J, mun, m):
         """J and mun, or the library's one contact of bound 0 on dof 0 (no contacts), as
         fricreg-sim structure without --contacts."""
+        self._mun = np.zeros(0)
         if m == 0:
             if J is not None:
                 _vector(mun, "mun", 0)
@@ -255,8 +267,7 @@ class Structure:
                         "mun")
             return
         self._set_matrix(J, "J", lib.FRICREG_CONTACTS, (m, self.ndof))
-        mun = _vector(mun, "mun", m)
-        self._check(lib.fricreg_structure_set_bounds(self._s, m, pointer(mun)), "mun")
+        self.set_bounds(mun)
 
     def _set_load(self, load, load_history):
         if load is None:
@@ -308,19 +319,102 @@ class Structure:
                                                        pointer(params)), name)
         self._sets.append((me, dim))
 
-    def _set_law(self, law, eps):
-        """The contacts' law and eps (None without contacts), eps by default fricreg-sim's:
-        1 % of the ground record's peak velocity, or 1e-3."""
-        self.law = self.eps = None
+    def _default_eps(self):
+        """fricreg-sim's eps: 1 % of the ground record's peak velocity, or 1e-3."""
+        pgv = ffi.new("double *")
+        lib.fricreg_structure_get_value(self._s, lib.FRICREG_SVALUE_GROUND_PGV, pgv)
+        return 0.01 * pgv[0] if pgv[0] > 0.0 else 1e-3
+
+    # ---- settings: set_* methods, read-only properties (docs/python.md, "Settings") ------
+
+    ndof = fixed("ndof", "int: the degrees of freedom, fixed at construction.")
+    ncontacts = fixed("ncontacts", "int: the friction contacts (J's rows, 0 without J), "
+                      "fixed at construction.")
+    nelements = fixed("nelements", "int: the joint elements of every set, fixed at "
+                      "construction.")
+
+    def _has_contacts(self, argument):
+        """Refuse a contacts' setting of a structure built without J."""
         if not self.ncontacts:
-            return
-        code = _law_code("quinn" if law is None else law)
-        if eps is None:
-            pgv = ffi.new("double *")
-            lib.fricreg_structure_get_value(self._s, lib.FRICREG_SVALUE_GROUND_PGV, pgv)
-            eps = 0.01 * pgv[0] if pgv[0] > 0.0 else 1e-3
-        self._check(lib.fricreg_structure_set_law(self._s, code, float(eps)), "eps")
-        self.law, self.eps = ffi.string(lib.fricreg_law_name(code)).decode(), float(eps)
+            raise refused("%s: the structure has no friction contacts (it was built without J "
+                          "and mun)" % argument)
+
+    def set_law(self, law, eps=None):
+        """Select the contacts' friction law and its regularization
+        (``fricreg_structure_set_law``), between runs: the next step starts from the
+        equilibrium acceleration under the new law (an error estimate's companions follow).
+
+        Parameters
+        ----------
+        law : str or int
+            One of :data:`fricreg.LAWS` or its code 1..6.
+        eps : float, optional
+            The regularization > 0 (m/s); the current one when omitted.
+
+        Raises
+        ------
+        fricreg.InputError
+            (a ``ValueError``) The structure has no contacts, ``law`` names no law, or
+            ``eps`` is not one real number. Refused by the library: ``eps`` <= 0, NaN or
+            infinite. The law and eps stay as they were.
+        """
+        self._has_contacts("law")
+        code = _law_code(law)
+        eps = self._eps if eps is None else as_scalar(eps, "eps")
+        self._check(lib.fricreg_structure_set_law(self._s, code, eps), "eps", "Structure.set_law")
+        self._law, self._eps = ffi.string(lib.fricreg_law_name(code)).decode(), eps
+
+    def set_bounds(self, mun):
+        """Set the contacts' friction bounds mu N_i (``fricreg_structure_set_bounds``), between
+        runs (normal forces vary): the next step starts from the equilibrium acceleration with
+        the new bounds.
+
+        Parameters
+        ----------
+        mun : array_like of float, shape (ncontacts,), or float
+            The bounds >= 0 (N); one number sets every contact's.
+
+        Raises
+        ------
+        fricreg.InputError
+            (a ``ValueError``) The structure has no contacts, or ``mun`` is not real numbers
+            or not of shape (ncontacts,). Refused by the library: a bound < 0, NaN or
+            infinite. The bounds stay as they were.
+        """
+        self._has_contacts("mun")
+        mun = np.full(self.ncontacts, as_scalar(mun, "mun")) if np.ndim(mun) == 0 \
+            else _vector(mun, "mun", self.ncontacts)
+        self._check(lib.fricreg_structure_set_bounds(self._s, self.ncontacts, pointer(mun)),
+                    "mun", "Structure.set_bounds")
+        self._mun = mun.copy()
+
+    @property
+    def law(self):
+        """str or None: the contacts' law (:data:`fricreg.LAWS`; None without contacts); set by
+        :meth:`set_law`."""
+        return self._law
+
+    @law.setter
+    def law(self, law):
+        assigned("Structure", "law", "set_law")
+        self.set_law(law)
+
+    @property
+    def eps(self):
+        """float or None: the regularization in force (m/s; None without contacts); set by
+        :meth:`set_law`."""
+        return self._eps
+
+    @eps.setter
+    def eps(self, eps):
+        assigned("Structure", "eps", "set_law")
+        self.set_law(self._law, eps)
+
+    @property
+    def mun(self):
+        """ndarray of float64, shape (ncontacts,): a copy of the contacts' bounds (N); set by
+        :meth:`set_bounds`."""
+        return self._mun.copy()
 
     # ---- state -------------------------------------------------------------------------------
 

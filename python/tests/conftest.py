@@ -10,9 +10,12 @@ import fricreg
 from fricreg._fricreg import ffi, lib
 
 def pytest_configure(config):
-    """The binding's own code and its tests read results by name: a read by position fails."""
+    """The binding's own code and its tests read results by name and change settings by their
+    set_* methods: a read by position or an assignment to a setting fails."""
     config.addinivalue_line("filterwarnings",
                             "error:.*reading a result by position:DeprecationWarning")
+    config.addinivalue_line("filterwarnings",
+                            "error:.*by assignment is deprecated:DeprecationWarning")
 
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")

@@ -101,7 +101,7 @@ def test_partitions_two_blocks_closed_forms():
     f, f_eq = ctx.eval(zdot, a)
     np.testing.assert_allclose(f, [-0.264, 0.2115], atol=1e-14)
     np.testing.assert_allclose(f_eq, [-0.079, 0.134], atol=1e-14)
-    ctx.partition = "consistent"
+    ctx.set_partition("consistent")
     f, f_eq = ctx.eval(zdot, a)
     np.testing.assert_allclose(f, [-0.294, 0.104], atol=1e-14)
     np.testing.assert_allclose(f_eq, [-0.109, 0.0265], atol=1e-14)
@@ -181,7 +181,7 @@ def test_stats_and_keep_tangent():
     stats = ctx.stats(reset=True)
     assert (stats["evals"], stats["factorizations"], stats["qp_iterations"]) == (2, 1, 2)
     assert ctx.stats()["evals"] == 0
-    ctx.keep_tangent = False
+    ctx.set_keep_tangent(False)
     ctx.eval([0.0, 0.0], [0.1, 0.1])
     with pytest.raises(fricreg.InputError,
                        match=r"Context.tangent: .*inputs are not kept \(set_keep_tangent 0\)"):
@@ -307,47 +307,102 @@ def test_failed_setters_keep_the_settings():
     ctx = fricreg.Context(W=W2B, mun=MUN2B, eps=EPS2B, law="karnopp")
     before = ctx.eval([0.0037, -0.0031], [0.213, -0.347])
     bad_W, bad_mun = np.array([[1.0, -1.0], [-0.5, 2.0]]), np.array([0.5, -0.25])
-    for name, value in (("W", bad_W), ("mun", bad_mun), ("eps", 0.0), ("law", "dahl"),
-                        ("partition", "joint")):
-        with pytest.raises(ValueError):
-            setattr(ctx, name, value)
-    assert (ctx.law, ctx.eps, ctx.partition) == ("karnopp", EPS2B, "consistent")
+    # each method refuses with an InputError naming its argument, and changes nothing
+    for call, argument in ((lambda: ctx.set_coupling(bad_W), "W"),
+                           (lambda: ctx.set_coupling(np.eye(3)), "W"),
+                           (lambda: ctx.set_bounds(bad_mun), "mun"),
+                           (lambda: ctx.set_bounds("0.5"), "mun"),
+                           (lambda: ctx.set_law("karnopp", 0.0), "eps"),
+                           (lambda: ctx.set_law("coulomb", [0.1, 0.2]), "eps"),
+                           (lambda: ctx.set_law("dahl", 0.1), "law"),
+                           (lambda: ctx.set_partition("joint"), "partition"),
+                           (lambda: ctx.set_keep_tangent("no"), "keep"),
+                           (lambda: ctx.set_keep_tangent(2), "keep")):
+        with pytest.raises(fricreg.InputError, match=r"(^|: )%s: " % argument):
+            call()
+    assert (ctx.law, ctx.eps, ctx.partition, ctx.keep_tangent) == ("karnopp", EPS2B,
+                                                                   "consistent", True)
     assert ctx.W.tobytes() == W2B.tobytes() and ctx.mun.tobytes() == MUN2B.tobytes()
     assert bad_W[1, 0] == -0.5 and bad_mun[1] == -0.25  # inputs never modified
     after = ctx.eval([0.0037, -0.0031], [0.213, -0.347])
     assert before[0].tobytes() == after[0].tobytes()
-    ctx.mun = 0.5  # a scalar for every contact
+    ctx.set_bounds(0.5)  # a scalar for every contact
     assert ctx.mun.tolist() == [0.5, 0.5]
     mun = np.array([0.3, 0.4])
-    ctx.mun = mun
+    ctx.set_bounds(mun)
     mun[0] = 7.0  # the context keeps its own copy
     assert ctx.mun.tolist() == [0.3, 0.4]
     ctx.W[0, 0] = 9.0  # a copy
     assert ctx.W[0, 0] == 1.0
 
 
+def test_set_methods_set_what_the_properties_read():
+    ctx = fricreg.Context(2)
+    ctx.set_law("tanh", 0.0273)
+    ctx.set_law(3)  # a code; eps kept
+    ctx.set_bounds([0.61, 0.29])
+    ctx.set_coupling(W2B)
+    ctx.set_partition("paper")
+    ctx.set_keep_tangent(False)
+    assert (ctx.law, ctx.eps, ctx.partition, ctx.keep_tangent) == (fricreg.LAWS[2], 0.0273,
+                                                                   "paper", False)
+    assert ctx.mun.tolist() == [0.61, 0.29] and ctx.W.tobytes() == W2B.tobytes()
+    ctx.set_keep_tangent(np.bool_(True))
+    assert ctx.keep_tangent is True
+    # the context's forces are the C library's with the same settings
+    zdot, a_free = [0.0037, -0.0031], [0.213, -0.347]
+    cf, cf_eq = c_eval(c_context(2, fricreg.LAWS[2], 0.0273, [0.61, 0.29], W2B,
+                                 lib.FRICREG_PARTITION_PAPER), 2,
+                       zdot, a_free)
+    assert ctx.eval(zdot, a_free)[0].tobytes() == cf.tobytes()
+    with pytest.raises(AttributeError):
+        ctx.m = 3  # fixed at construction
+    assert ctx.m == 2
+
+
+@pytest.mark.parametrize("name, value, method", [
+    ("law", "coulomb", "set_law"), ("eps", 0.0273, "set_law"),
+    ("mun", [0.61, 0.29], "set_bounds"), ("W", [[2.0, 0.5], [0.5, 1.0]], "set_coupling"),
+    ("partition", "paper", "set_partition"), ("keep_tangent", False, "set_keep_tangent")])
+def test_assigning_a_setting_warns_and_still_sets_it(name, value, method):
+    ctx = fricreg.Context(2)
+    with pytest.warns(DeprecationWarning, match=r"Context: setting %s by assignment is "
+                      r"deprecated and will end in 2.0 .*: call %s\(" % (name, method)) as record:
+        setattr(ctx, name, value)
+    assert record[0].filename == __file__  # the warning points at the assignment
+    read = getattr(ctx, name)
+    assert (read.tolist() if isinstance(read, np.ndarray) else read) == value
+    if name == "keep_tangent":
+        return  # as in 1.8, any value is taken for its truth
+    with pytest.warns(DeprecationWarning), pytest.raises(fricreg.InputError):
+        setattr(ctx, name, "bad")  # refused by the method, which keeps the setting
+    read = getattr(ctx, name)
+    assert (read.tolist() if isinstance(read, np.ndarray) else read) == value
+
+
 def test_errors_name_the_argument():
     ctx = fricreg.Context(W=W2B, mun=MUN2B, eps=EPS2B)
-    with pytest.raises(fricreg.InputError, match=r"Context.W: .*W\[0\]\[1\] = -1 but") as info:
+    with pytest.raises(fricreg.InputError,
+                       match=r"set_coupling: W: .*W\[0\]\[1\] = -1 but") as info:
         fricreg.Context(W=[[1.0, -1.0], [-0.5, 2.0]])
     assert info.value.status == lib.FRICREG_ENOTSYM
-    with pytest.raises(fricreg.InputError, match="Context.W: .*not semidefinite") as info:
-        ctx.W = [[1.0, -2.0], [-2.0, 2.0]]
+    with pytest.raises(fricreg.InputError, match="set_coupling: W: .*not semidefinite") as info:
+        ctx.set_coupling([[1.0, -2.0], [-2.0, 2.0]])
     assert info.value.status == lib.FRICREG_ENOTPSD
-    with pytest.raises(fricreg.InputError, match="Context.W: .*not finite"):
-        ctx.W = [[1.0, np.nan], [np.nan, 2.0]]
-    with pytest.raises(fricreg.InputError, match=r"Context.W: .*w\[1\] = -1 must be > 0"):
-        ctx.W = [1.0, -1.0]
+    with pytest.raises(fricreg.InputError, match="set_coupling: W: .*not finite"):
+        ctx.set_coupling([[1.0, np.nan], [np.nan, 2.0]])
+    with pytest.raises(fricreg.InputError, match=r"set_coupling: W: .*w\[1\] = -1 must be > 0"):
+        ctx.set_coupling([1.0, -1.0])
     with pytest.raises(ValueError, match=r"W: shape \(3, 3\); expected \(2,\) \(diagonal\)"):
-        ctx.W = np.eye(3)
-    with pytest.raises(fricreg.InputError, match=r"Context.mun: .*mun\[1\] = -1 is negative"):
-        ctx.mun = [1.0, -1.0]
+        ctx.set_coupling(np.eye(3))
+    with pytest.raises(fricreg.InputError, match=r"set_bounds: mun: .*mun\[1\] = -1 is negative"):
+        ctx.set_bounds([1.0, -1.0])
     with pytest.raises(ValueError, match=r"mun: shape \(3,\); expected \(2,\)"):
-        ctx.mun = [1.0, 1.0, 1.0]
+        ctx.set_bounds([1.0, 1.0, 1.0])
     with pytest.raises(fricreg.InputError, match="Context.set_law: .*eps = 0 must be >= DBL_MIN"):
-        ctx.eps = 0.0
+        ctx.set_law(ctx.law, 0.0)
     with pytest.raises(fricreg.InputError, match="Context.set_law: .*eps is not finite"):
-        ctx.eps = np.inf
+        ctx.set_law(ctx.law, np.inf)
     with pytest.raises(ValueError, match="law: 'dahl' is not a law"):
         fricreg.Context(2, law="dahl")
     with pytest.raises(ValueError, match="partition: 'joint' is not a partition"):
@@ -404,13 +459,13 @@ def test_solve_step_errors():
 def test_sparse_errors():
     sparse = pytest.importorskip("scipy.sparse")
     ctx = fricreg.Context(W=W2B, mun=MUN2B, eps=EPS2B)
-    with pytest.raises(fricreg.InputError, match=r"Context.W: .*W\(0, 1\) = 0.5 but") as info:
-        ctx.W = sparse.csr_matrix([[1.0, 0.5], [0.0, 2.0]])
+    with pytest.raises(fricreg.InputError, match=r"set_coupling: W: .*W\(0, 1\) = 0.5 but") as info:
+        ctx.set_coupling(sparse.csr_matrix([[1.0, 0.5], [0.0, 2.0]]))
     assert info.value.status == lib.FRICREG_ENOTSYM
-    with pytest.raises(fricreg.InputError, match=r"Context.W: .*W\(0, 1\) = 0.5 but"):
-        ctx.W = sparse.csc_matrix([[1.0, 0.5], [0.0, 2.0]])  # CSC read as CSC
+    with pytest.raises(fricreg.InputError, match=r"set_coupling: W: .*W\(0, 1\) = 0.5 but"):
+        ctx.set_coupling(sparse.csc_matrix([[1.0, 0.5], [0.0, 2.0]]))  # CSC read as CSC
     with pytest.raises(ValueError, match=r"W: shape \(3, 3\); expected \(2, 2\)"):
-        ctx.W = sparse.identity(3, format="csr")
+        ctx.set_coupling(sparse.identity(3, format="csr"))
     with pytest.raises(fricreg.InputError, match="Context.solve_step: ") as info:
         ctx.solve_step([0, 0], [0, 0], [0, 0], sparse.csc_matrix([[0.1, 0.0], [0.05, 0.1]]),
                        0.005, 1e-10)

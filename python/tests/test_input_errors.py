@@ -162,6 +162,20 @@ CASES = [
     ("Context.set_law", method(lambda: fricreg.Context(2, W=K, mun=[1.0, 1.0]), "set_law",
                                law="karnopp"),
      [("law", "nosuch"), ("eps", -1.0)]),
+    ("Context.set_bounds", method(lambda: fricreg.Context(2), "set_bounds", mun=[0.5, 1.0]),
+     [("mun", [0.5]), ("mun", [0.5, -1.0]), ("mun", "0.5"), ("mun", [np.nan, 1.0])]),
+    ("Context.set_coupling", method(lambda: fricreg.Context(2), "set_coupling", W=K),
+     [("W", np.eye(3)), ("W", [[1.0, 2.0], [2.0, 1.0]]), ("W", [0.0, 1.0]), ("W", [["a"]])]),
+    ("Context.set_partition", method(lambda: fricreg.Context(2), "set_partition",
+                                     partition="paper"),
+     [("partition", "nosuch"), ("partition", 1)]),
+    ("Context.set_keep_tangent", method(lambda: fricreg.Context(2), "set_keep_tangent",
+                                        keep=False),
+     [("keep", "no"), ("keep", 2), ("keep", None)]),
+    ("Structure.set_law", method(structure, "set_law", law="tanh", eps=2e-3),
+     [("law", "nosuch"), ("eps", 0.0), ("eps", "small"), ("eps", np.inf)]),
+    ("Structure.set_bounds", method(structure, "set_bounds", mun=[0.3]),
+     [("mun", [0.3, 0.4]), ("mun", [-0.3]), ("mun", ["a"]), ("mun", np.nan)]),
 ]
 
 

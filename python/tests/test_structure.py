@@ -423,6 +423,67 @@ def test_no_contacts_means_no_law():
         fricreg.Structure([[1.0]], [[1.0]], mun=[1.0])
 
 
+def oscillator(**settings):
+    """One mass on a spring with a contact, pushed off at 0.37 m/s."""
+    return fricreg.Structure([[1.0]], [[2.385]], J=[[1.0]], mun=settings.pop("mun", [0.3]),
+                             v0=[0.37], **settings)
+
+
+def test_set_methods_change_the_contacts_between_runs():
+    # set_law and set_bounds then reset: the run is a fresh structure's with those settings
+    s = oscillator(law="quinn", eps=1e-3)
+    s.run(dt=1e-3, t_end=0.05)
+    s.set_law("tanh", 2.5e-3)
+    s.set_bounds(0.21)  # a scalar for every contact
+    s.reset(v0=[0.37])
+    assert (s.law, s.eps, s.mun.tolist()) == ("tanh", 2.5e-3, [0.21])
+    fresh = oscillator(law="tanh", eps=2.5e-3, mun=[0.21])
+    a, b = s.run(dt=1e-3, t_end=0.3), fresh.run(dt=1e-3, t_end=0.3)
+    assert a.displacements.tobytes() == b.displacements.tobytes()
+    assert a.forces.tobytes() == b.forces.tobytes() and a.forces.any()
+    s.set_law("quinn")  # eps kept
+    assert (s.law, s.eps) == ("quinn", 2.5e-3)
+    mun = s.mun
+    mun[0] = 9.0  # a copy
+    assert s.mun.tolist() == [0.21]
+
+
+def test_set_methods_refuse_and_keep_the_settings():
+    s = oscillator(law="karnopp", eps=1e-3)
+    for call, argument in ((lambda: s.set_law("dahl"), "law"),
+                           (lambda: s.set_law("tanh", 0.0), "eps"),
+                           (lambda: s.set_law("tanh", "small"), "eps"),
+                           (lambda: s.set_bounds([-0.3]), "mun"),
+                           (lambda: s.set_bounds([0.3, 0.4]), "mun")):
+        with pytest.raises(fricreg.InputError, match=r"(^|: )%s: " % argument):
+            call()
+    assert (s.law, s.eps, s.mun.tolist()) == ("karnopp", 1e-3, [0.3])
+    kept = s.run(dt=1e-3, t_end=0.2)
+    assert kept.displacements.tobytes() == oscillator(law="karnopp", eps=1e-3).run(
+        dt=1e-3, t_end=0.2).displacements.tobytes()
+    bare = fricreg.Structure([[1.0]], [[1.0]])
+    for call, argument in ((lambda: bare.set_law("quinn", 1e-3), "law"),
+                           (lambda: bare.set_bounds([0.3]), "mun")):
+        with pytest.raises(fricreg.InputError, match="%s: the structure has no friction "
+                           "contacts" % argument):
+            call()
+    for name in ("ndof", "ncontacts", "nelements", "mun"):
+        with pytest.raises(AttributeError):
+            setattr(s, name, 2)  # fixed at construction, or set by a method
+
+
+@pytest.mark.parametrize("name, value", [("law", "tanh"), ("eps", 2.5e-3)])
+def test_assigning_the_law_warns_and_sets_it(name, value):
+    s = oscillator()
+    with pytest.warns(DeprecationWarning, match=r"Structure: setting %s by assignment is "
+                      r"deprecated and will end in 2.0 .*: call set_law\(" % name) as record:
+        setattr(s, name, value)
+    assert record[0].filename == __file__ and getattr(s, name) == value
+    with pytest.warns(DeprecationWarning), pytest.raises(fricreg.InputError):
+        setattr(s, name, "bad")
+    assert getattr(s, name) == value
+
+
 @pytest.mark.parametrize("arguments, error, match", [
     (dict(integrator="euler"), ValueError, "integrator: 'euler' is not one of newmark, hht"),
     (dict(integrator="central-imex"), ValueError, "integrator: 'central-imex' is not one of"),
