@@ -26,7 +26,9 @@
  * PATHS, the near-stick block's solver (fricreg_structure_set_contact_solver): dense, sparse,
  * or both, each run in turn in this process against the one frictionless run.
  *
- *   usage: fricreg-bench-membrane-contacts [N [ROWS [STEPS [REPEATS [K [PATHS]]]]]]
+ * LAYOUT, where the rows lie: stacked (the default), interior, spread or grounded (below).
+ *
+ *   usage: fricreg-bench-membrane-contacts [N [ROWS [STEPS [REPEATS [K [PATHS [LAYOUT]]]]]]]
  *          (defaults 316 2 400 8 3e6 dense: 10^5 dofs, two coupled rows, 2 s)
  * Prints one line a path: n m steps run_s linear_run_s run_ratio step_s linear_step_s
  * step_ratio newton_mean stuck_fraction peak_MiB path (peak_MiB: the process's, all runs). */
@@ -92,8 +94,28 @@ static void membrane_stiffness(struct membrane *g, double spring_k)
     }
 }
 
-/* The edge row's contacts against the ground, then each further row's against the row before. */
-static void membrane_contacts(struct membrane *g, size_t rows)
+/* Where the ROWS rows of contacts lie (LAYOUT): stacked from the edge (the default; each row
+ * against the one before it, so that rows share nodes), stacked in the membrane's middle, spread
+ * evenly from the edge (row k at k N/ROWS, against the grid row before it: rows coupled through
+ * the continuum only), or stacked from the edge with every row against the ground. */
+enum layout { STACKED, INTERIOR, SPREAD, GROUNDED, LAYOUTS };
+static const char *const LAYOUT_NAMES[LAYOUTS] = {"stacked", "interior", "spread", "grounded"};
+
+static size_t grid_row(enum layout layout, size_t k, size_t rows, size_t side)
+{
+    switch (layout) {
+    case INTERIOR: return side / 2 - rows / 2 + k;
+    case SPREAD: return k * (side / rows);
+    case STACKED:
+    case GROUNDED:
+    case LAYOUTS: break;
+    }
+    return k;
+}
+
+/* The first row's contacts against the ground (mu N = EDGE_MUN), then each further row's against
+ * the grid row before it, or the ground (GROUNDED), mu N = ROW_MUN. */
+static void membrane_contacts(struct membrane *g, size_t rows, enum layout layout)
 {
     size_t side = g->side, q = 0;
     g->m = rows * side;
@@ -103,14 +125,15 @@ static void membrane_contacts(struct membrane *g, size_t rows)
     g->mun = malloc(g->m * sizeof *g->mun);
     g->jp[0] = 0;
     for (size_t j = 0; j < g->m; j++) {
-        if (j >= side) { /* node j against the node before it in its column */
-            g->ji[q] = (int64_t)(j - side);
+        size_t k = j / side, node = grid_row(layout, k, rows, side) * side + j % side;
+        if (k > 0 && layout != GROUNDED) { /* against the node before it in its column */
+            g->ji[q] = (int64_t)(node - side);
             g->jx[q++] = -1.0;
         }
-        g->ji[q] = (int64_t)j;
+        g->ji[q] = (int64_t)node;
         g->jx[q++] = 1.0;
         g->jp[j + 1] = (int64_t)q;
-        g->mun[j] = j < side ? EDGE_MUN : ROW_MUN;
+        g->mun[j] = k == 0 ? EDGE_MUN : ROW_MUN;
     }
     g->ones = malloc(g->n * sizeof *g->ones);
     for (size_t i = 0; i < g->n; i++)
@@ -227,17 +250,20 @@ int main(int argc, char **argv)
     const char *paths = argc > 6 ? argv[6] : "dense";
     int dense = !strcmp(paths, "dense") || !strcmp(paths, "both");
     int sparse = !strcmp(paths, "sparse") || !strcmp(paths, "both");
-    if (g.side < 3 || rows < 1 || rows > g.side || repeats < 2 || repeats > 64 || steps < repeats ||
-        !(spring_k > 0.0) || !(dense || sparse)) {
+    enum layout layout = STACKED;
+    while (argc > 7 && layout < LAYOUTS && strcmp(argv[7], LAYOUT_NAMES[layout]) != 0)
+        layout++;
+    if (g.side < 3 || rows < 1 || rows > g.side / 2 || repeats < 2 || repeats > 64 ||
+        steps < repeats || !(spring_k > 0.0) || !(dense || sparse) || layout == LAYOUTS) {
         fprintf(stderr,
-                "usage: %s [N >= 3 [ROWS 1..N [STEPS [REPEATS 2..64 <= STEPS [K "
-                "[dense|sparse|both]]]]]]\n",
+                "usage: %s [N >= 3 [ROWS 1..N/2 [STEPS [REPEATS 2..64 <= STEPS [K "
+                "[dense|sparse|both [stacked|interior|spread|grounded]]]]]]]\n",
                 argv[0]);
         return 2;
     }
     g.n = g.side * g.side;
     membrane_stiffness(&g, spring_k);
-    membrane_contacts(&g, rows);
+    membrane_contacts(&g, rows, layout);
     membrane_record(&g, steps);
     size_t batch = steps / repeats;
     struct friction_run runs[2];
