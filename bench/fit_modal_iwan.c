@@ -29,6 +29,7 @@
 #include <gsl/gsl_rng.h>
 
 #include "bench.h"
+#include "nelder_mead.h"
 #include "fricreg_fit.h"
 
 #define NP FRICREG_FIT_NPARAMS
@@ -75,29 +76,7 @@ static double cost(const gsl_vector *theta, void *params)
 static long nelder_mead(struct objective *o, const double start[], double target, double *best)
 {
     gsl_multimin_function F = {cost, NP, o};
-    gsl_multimin_fminimizer *nm = gsl_multimin_fminimizer_alloc(gsl_multimin_fminimizer_nmsimplex2,
-                                                                NP);
-    gsl_vector *x = gsl_vector_alloc(NP), *step = gsl_vector_alloc(NP);
-    for (int j = 0; j < NP; j++)
-        gsl_vector_set(x, (size_t)j, start[j]);
-    *best = INFINITY;
-    while (o->evals<NM_BUDGET && * best> target) {
-        gsl_vector_set_all(step, log(10.0));
-        gsl_multimin_fminimizer_set(nm, &F, x, step);
-        for (int it = 0; it < 20000 && o->evals < NM_BUDGET; it++) {
-            if (gsl_multimin_fminimizer_iterate(nm) != GSL_SUCCESS)
-                break;
-            if (nm->fval <= target || gsl_multimin_fminimizer_size(nm) < 1e-12)
-                break;
-        }
-        if (nm->fval < *best)
-            *best = nm->fval;
-        gsl_vector_memcpy(x, nm->x); /* restart from the best vertex */
-    }
-    gsl_vector_free(x);
-    gsl_vector_free(step);
-    gsl_multimin_fminimizer_free(nm);
-    return o->evals;
+    return bench_nelder_mead(&F, start, log(10.0), target, NM_BUDGET, &o->evals, best);
 }
 
 int main(int argc, char **argv)
