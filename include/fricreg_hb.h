@@ -128,13 +128,16 @@ typedef struct fricreg_hb fricreg_hb;
  *  and solves allocate the pattern and KLU's factors (header comment).
  *
  *  ndof       degrees of freedom, 1 <= ndof <= 2^24.
- *  m          Jenkins elements, 1 <= m <= 256.
+ *  m          elements, m >= 1: no fixed bound, the memory is the limit (the dense Newton
+ *             matrix of order nq + 1, nq = rows of J times 2H + 1, grows as its square:
+ *             docs/harmonic_balance.md, "Size").
  *  harmonics  H, 1 <= H <= FRICREG_HB_MAX_HARMONICS.
  *  out        out: the new object, released with fricreg_hb_free. Written only on success.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if out is NULL; FRICREG_EINVAL if ndof, m or H is out of
- *  its range; FRICREG_ENOMEM. With no object to keep it, a failure has no message beyond its
- *  status, as for fricreg_ctx_create. Since 1.6. */
+ *  its range; FRICREG_ENOMEM when the memory is short, or when a buffer's size for m
+ *  elements overflows size_t or Newton's order overflows LAPACK's int. With no object to keep
+ *  it, a failure has no message beyond its status, as for fricreg_ctx_create. Since 1.6. */
 FRICREG_API int fricreg_hb_create(size_t ndof, size_t m, int harmonics, fricreg_hb **out);
 
 /** Release the driver. fricreg_hb_free(NULL) does nothing. Since 1.6. */

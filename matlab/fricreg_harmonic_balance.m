@@ -29,7 +29,7 @@ function h = fricreg_harmonic_balance(M, K, C, elements, harmonics, varargin)
 %                        q = J x (tangential components, then the normal one), in order
 %                params  ME x NPARAMS (a row an element) or a vector of NPARAMS shared, in the
 %                        type's layout (jenkins: [kt mun]; iwan: [k_1..k_ns phi_1..phi_ns]; ...).
-%             At most 256 elements in all. The unknowns q are the rows of all the blocks' J,
+%             Any number of elements: memory is the limit. The unknowns q are the rows of all the blocks' J,
 %             in order: ROWS x (2 HARMONICS + 1).
 %   HARMONICS H, 1..40.
 %

@@ -54,7 +54,7 @@ void mexhb_create(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
     if (status != FRICREG_OK)
         mexa_status(status, cmd,
                     status == FRICREG_EINVAL
-                        ? "ndof 1..2^24, m (the elements) 1..256, harmonics 1..40"
+                        ? "ndof 1..2^24, m (the elements) >= 1, harmonics 1..40"
                         : NULL);
     d = malloc(sizeof *d);
     if (d == NULL) {

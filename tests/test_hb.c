@@ -22,6 +22,7 @@
  *     largest of point solves on a grid around it. */
 #include <check.h>
 #include <float.h>
+#include <stdint.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -31,6 +32,7 @@
 #include <gsl/gsl_eigen.h>
 #include <gsl/gsl_linalg.h>
 
+#include "fricreg_element.h"
 #include "fricreg_hb.h"
 #include "fricreg_jenkins.h"
 #include "jenkins_newmark.h"
@@ -445,6 +447,52 @@ START_TEST(bad_input)
 }
 END_TEST
 
+/* No fixed bound on the elements: 300 Jenkins elements on one dof (kt 0.0517, slip force
+ * 0.00731 each) act as one element of 300 times their stiffness and slip force (elements in
+ * parallel on one displacement: their forces add, each the same function of it), so the
+ * oscillator (m 1, k 2.385, c 0.031, 1.7 cos Ωt at Ω = 1.3, every element slipping) answers
+ * as with that one element, to the solves' rounding (1e-9 relative). A driver whose buffers
+ * size_t cannot count is refused with FRICREG_ENOMEM. */
+START_TEST(many_elements)
+{
+    enum { MANY = 300, HM = 3, NCM = 2 * HM + 1 };
+    const fricreg_element_type *jenkins = fricreg_element_lookup("jenkins");
+    double M = 1.0, K = 2.385, C = 0.031, pc = 1.7, ps = 0.0, x[2][NCM];
+    double *J = malloc(MANY * sizeof(double)), *p = malloc(2 * MANY * sizeof(double));
+    double *q = malloc(MANY * NCM * sizeof(double));
+    ck_assert(J != NULL && p != NULL && q != NULL);
+    for (size_t e = 0; e < MANY; e++) {
+        J[e] = 1.0;
+        p[2 * e] = 0.0517;
+        p[2 * e + 1] = 0.00731;
+    }
+    double one[2] = {MANY * 0.0517, MANY * 0.00731};
+    for (int model = 0; model < 2; model++) {
+        size_t m = model == 0 ? MANY : 1;
+        fricreg_hb *hb = NULL;
+        ck_assert_int_eq(fricreg_hb_create(1, m, HM, &hb), FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_set_mass(hb, 1, &M), FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 1, &K), FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_set_damping(hb, 1, &C), FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_set_excitation(hb, 1, &pc, &ps), FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_add_elements(hb, jenkins, m, 1, J, model == 0 ? p : one),
+                         FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_solve(hb, 1.3, m * NCM, NULL, q), FRICREG_OK);
+        ck_assert_int_eq(fricreg_hb_displacement(hb, 1, NCM, x[model]), FRICREG_OK);
+        fricreg_hb_free(hb);
+    }
+    ck_assert_double_gt(fabs(x[1][1]), 0.1);
+    for (int c = 0; c < NCM; c++)
+        ck_assert_double_eq_tol(x[0][c], x[1][c], 1e-9 * fabs(x[1][1]));
+    fricreg_hb *hb = NULL;
+    ck_assert_int_eq(fricreg_hb_create(3, SIZE_MAX / 2, 3, &hb), FRICREG_ENOMEM);
+    ck_assert_ptr_null(hb);
+    free(J);
+    free(p);
+    free(q);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("hb");
@@ -452,6 +500,7 @@ int main(void)
     tcase_add_test(tc, linear_stuck_closed_form);
     tcase_add_test(tc, harmonics_converge);
     tcase_add_test(tc, bad_input);
+    tcase_add_test(tc, many_elements);
     suite_add_tcase(s, tc);
     /* The chain's branch over its resonance (2 s): the release tier's (hb_release); the quick
      * tier continues branches and locates their peaks in test_hb_continuation and

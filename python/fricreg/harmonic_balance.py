@@ -118,7 +118,7 @@ class HarmonicBalance:
         with ``element`` a :class:`fricreg.Element` (its parameters shared by the block) and
         ``J`` of shape (me * dim, ndof), me elements of dim rows each (tangential components,
         then the normal displacement); or ``(name, J, params)`` with params of shape
-        (me, nparams), one row per element. At most 256 elements in all.
+        (me, nparams), one row per element. Any number of elements: memory is the limit.
     harmonics : int
         H, 1..40.
     rayleigh : (float, float), optional
@@ -179,7 +179,7 @@ class HarmonicBalance:
         status = lib.fricreg_hb_create(ndof, count, self.harmonics, out)
         if status != lib.FRICREG_OK:
             raise_status(status, "HarmonicBalance", "ndof = %d, %d elements, harmonics = %d: "
-                         "ndof 1..2^24, 1..256 elements, harmonics 1..40" %
+                         "ndof 1..2^24, at least one element, harmonics 1..40" %
                          (ndof, count, self.harmonics))
         self._hb = ffi.gc(out[0], lib.fricreg_hb_free)
         for which, args in matrices:

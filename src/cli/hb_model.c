@@ -103,8 +103,8 @@ int cli_hb_create(const char *cmd, const struct cli_hb_model *md, int harmonics,
     char what[200];
     if (status == FRICREG_EINVAL)
         snprintf(what, sizeof what,
-                 "%zu elements in all, %zu dofs, H = %d: harmonic balance takes 1 to 256 "
-                 "elements, up to 2^24 dofs (fricreg_hb_create)",
+                 "%zu elements in all, %zu dofs, H = %d: harmonic balance takes at least one "
+                 "element, up to 2^24 dofs (fricreg_hb_create)",
                  md->m, md->n, harmonics);
     else
         snprintf(what, sizeof what, "cannot create the harmonic-balance driver (%s)",

@@ -68,8 +68,8 @@ int cli_hb_read_model(const struct cli_hb_model_options *o, struct cli_hb_model 
 void cli_hb_free_model(struct cli_hb_model *md);
 
 /* fricreg_hb_create for the model at H harmonics into *hb: 0, or CLI_EXIT_USAGE after one line
- * on stderr for cmd, naming the limits where the model is beyond them (more than 256 elements
- * over all sets) or the status. */
+ * on stderr for cmd, naming the limits where the model is beyond them (no element, more than
+ * 2^24 dofs) or the status (FRICREG_ENOMEM where the elements' memory is short). */
 int cli_hb_create(const char *cmd, const struct cli_hb_model *md, int harmonics, fricreg_hb **hb);
 
 /* The matrices, Rayleigh's damping and the elements into hb; 0, or CLI_EXIT_USAGE after one line

@@ -4,6 +4,7 @@
  * change those defaults, and the error record. The model is set in model.c, the elements in
  * elements.c. */
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -19,15 +20,18 @@
 
 #define MAX_DENSE_DOFS 4096
 #define MAX_DOFS ((size_t)1 << 24)
-#define MAX_ELEMENTS 256
 
 int fricreg_hb_create(size_t ndof, size_t m, int harmonics, fricreg_hb **out)
 {
     if (out == NULL)
         return FRICREG_ENULL;
-    if (ndof == 0 || ndof > MAX_DOFS || m == 0 || m > MAX_ELEMENTS || harmonics < 1 ||
+    if (ndof == 0 || ndof > MAX_DOFS || m == 0 || harmonics < 1 ||
         harmonics > FRICREG_HB_MAX_HARMONICS)
         return FRICREG_EINVAL;
+    /* no bound on the elements but the memory: tables that size_t cannot count are none (the
+     * buffers' own sizes are checked in rows.c) */
+    if (m >= SIZE_MAX / (4 * sizeof(size_t)))
+        return FRICREG_ENOMEM;
     fricreg_hb *hb = calloc(1, sizeof *hb);
     if (hb == NULL)
         return FRICREG_ENOMEM;

@@ -43,8 +43,13 @@ void fr_hb_zlu_factor(double *A, size_t n, int *piv)
 
 void fr_hb_zlu_solve_factored(const double *LU, size_t n, const int *piv, double *x)
 {
-    int order = (int)n, one = 1, info;
-    zgetrs_("T", &order, &one, LU, &order, piv, x, &order, &info, 1);
+    fr_hb_zlu_solve_many(LU, n, piv, 1, x);
+}
+
+void fr_hb_zlu_solve_many(const double *LU, size_t n, const int *piv, size_t nrhs, double *X)
+{
+    int order = (int)n, cols = (int)nrhs, info;
+    zgetrs_("T", &order, &cols, LU, &order, piv, X, &order, &info, 1);
 }
 
 double fr_hb_zlu_rcond(const double *LU, size_t n, double norm1, double *work, double *rwork)

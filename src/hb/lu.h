@@ -16,6 +16,9 @@ void fr_hb_lu_solve_factored(const double *LU, size_t n, const int *piv, double 
 void fr_hb_lu_solve_many(const double *LU, size_t n, const int *piv, size_t nrhs, double *X);
 void fr_hb_zlu_factor(double *A, size_t n, int *piv);
 void fr_hb_zlu_solve_factored(const double *LU, size_t n, const int *piv, double *x);
+/* The complex solve for nrhs right-hand sides at once, X[nrhs 2n] (each x contiguous), one
+ * LAPACK call (BLAS 3: the condensation's m + 1 columns). */
+void fr_hb_zlu_solve_many(const double *LU, size_t n, const int *piv, size_t nrhs, double *X);
 /* The reciprocal 1-norm condition number of the complex matrix whose zlu factor LU[n n] is,
  * estimated from the factor and the matrix's 1-norm norm1 (LAPACK's zgecon: Higham's
  * estimator, O(n²)); work[4 n] and rwork[2 n] scratch. 0 where the factor is singular. */

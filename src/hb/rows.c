@@ -3,6 +3,8 @@
  * installed in place of the old ones, and cut into the views the kernels use (hb_internal.h's
  * layout). A file below the life cycle (hb.c) and the element setters (elements.c), which
  * both size them. */
+#include <limits.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -21,23 +23,65 @@ void fr_hb_rows_free(struct fr_hb_rows *b)
     *b = (struct fr_hb_rows){0};
 }
 
+/* a b into *out; 0 when it overflows size_t */
+static int mul(size_t a, size_t b, size_t *out)
+{
+    if (b != 0 && a > SIZE_MAX / b)
+        return 0;
+    *out = a * b;
+    return 1;
+}
+
+/* a + b into *out; 0 when it overflows size_t */
+static int add(size_t a, size_t b, size_t *out)
+{
+    if (a > SIZE_MAX - b)
+        return 0;
+    *out = a + b;
+    return 1;
+}
+
+/* The doubles of J's, Y's, Z's, G's and fq's blocks (rows_alloc's) for cap rows and sq units of
+ * nc², each also countable in bytes; 0 when one overflows size_t or Newton's order nq + 1
+ * overflows LAPACK's int (lu.c): no memory could hold them. No fixed bound on the rows: the
+ * memory is the limit (docs/harmonic_balance.md, "Size"). */
+static int block_sizes(const fricreg_hb *hb, size_t cap, size_t sq, size_t count[5])
+{
+    size_t n = hb->n, H1 = (size_t)hb->H + 1, nc = hb->nc, nq, nq1, t, u;
+    int ok = mul(cap, nc, &nq) && add(nq, 1, &nq1) && nq1 <= INT_MAX;
+    /* J: cap n + 2 n */
+    ok = ok && mul(cap, n, &t) && add(t, 2 * n, &count[0]);
+    /* Y: 2 H1 n (cap + 1); Z: 2 n (cap + 1) + 2 n */
+    ok = ok && add(cap, 1, &u) && mul(2 * H1 * n, u, &count[1]);
+    ok = ok && mul(2 * n, u, &t) && add(t, 2 * n, &count[2]);
+    /* G: 4 H1 cap² + 4 H1 cap */
+    ok = ok && mul(cap, cap, &t) && add(t, cap, &t) && mul(4 * H1, t, &count[3]);
+    /* fq, jq, A, five of Newton's vectors (R .. qt), the continuation's room, qsol, qjac:
+     * nq + sq nc² + (nq + 1)² + (5 + FR_HB_CONT_VECTORS) (nq + 1) + 2 nq */
+    ok = ok && mul(sq, nc * nc, &t) && add(t, 3 * nq, &t) && mul(nq1, nq1, &u) && add(t, u, &t) &&
+         mul(5 + FR_HB_CONT_VECTORS, nq1, &u) && add(t, u, &count[4]);
+    for (int b = 0; ok && b < 5; b++)
+        ok = mul(count[b] ? count[b] : 1, sizeof(double), &t);
+    return ok && mul(nq1, sizeof(int), &t);
+}
+
 int fr_hb_rows_alloc(const fricreg_hb *hb, size_t cap, size_t sq, struct fr_hb_rows *b)
 {
-    size_t n = hb->n, H1 = (size_t)hb->H + 1, nc = hb->nc, nq = cap * nc;
+    size_t count[5];
     *b = (struct fr_hb_rows){0};
-    b->J = alloc_doubles(cap * n + 2 * n);
-    b->Y = alloc_doubles(2 * H1 * n * (cap + 1));
-    b->Z = alloc_doubles(2 * n * (cap + 1) + 2 * n);
-    b->G = alloc_doubles(4 * H1 * cap * cap + 4 * H1 * cap);
-    /* fq, jq, A, five of Newton's vectors (R .. qt), the continuation's room, qsol, qjac */
-    b->fq = alloc_doubles(nq + sq * nc * nc + (nq + 1) * (nq + 1) +
-                          (5 + FR_HB_CONT_VECTORS) * (nq + 1) + 2 * nq);
-    b->piv2 = malloc((nq + 1) * sizeof *b->piv2);
+    if (!block_sizes(hb, cap, sq, count))
+        return FRICREG_ENOMEM;
+    b->J = alloc_doubles(count[0]);
+    b->Y = alloc_doubles(count[1]);
+    b->Z = alloc_doubles(count[2]);
+    b->G = alloc_doubles(count[3]);
+    b->fq = alloc_doubles(count[4]);
+    b->piv2 = malloc((cap * hb->nc + 1) * sizeof *b->piv2);
     if (!b->J || !b->Y || !b->Z || !b->G || !b->fq || !b->piv2) {
         fr_hb_rows_free(b);
         return FRICREG_ENOMEM;
     }
-    memset(b->J, 0, (cap * n + 2 * n) * sizeof(double));
+    memset(b->J, 0, count[0] * sizeof(double));
     return FRICREG_OK;
 }
 
