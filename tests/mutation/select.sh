@@ -4,7 +4,8 @@
 # "landed", the last stop that landed, or "release", the last release): those whose file changed, whose tests' sources changed
 # (tests/<module>/test_<name>.c, in the folder of the module it tests; tests/alloc/
 # test_alloc_failure.c for alloc_failure_*; tests/tsan.sh and tests/reliability/test_threads.c
-# for tsan), or whose entry in the list is new or edited since REF (its
+# for tsan; the program's source for hb_stability_sweeps and hb_march_orbit, entries of one
+# case of test_hb_stability and test_hb_march), or whose entry in the list is new or edited since REF (its
 # lines, comments aside, are not in the list as it was at REF). tests/mutation/run.sh
 # --changed-since runs only these.
 #
@@ -44,6 +45,7 @@ entries <"$list" | while IFS= read -r entry; do
         tsan) sources="tests/tsan.sh tests/reliability/test_threads.c" ;;
         alloc_failure_*) sources=tests/alloc/test_alloc_failure.c ;;
         hb_stability_sweeps) sources=tests/floquet/test_hb_stability.c ;;
+        hb_march_orbit) sources=tests/hb/test_hb_march.c ;;
         *) sources=$(cd "$src" && ls -d tests/*/test_"$t".c 2>/dev/null) ;;
         esac
         for f in $sources; do
