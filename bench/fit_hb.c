@@ -3,10 +3,10 @@
  * mode (fricreg_fit_set_model_hb, fricreg_fit.h) against a derivative-free fit of the same
  * objective.
  *
- * The model: the 60-dof chain of tests/test_hb_monodromy.c (unit masses and springs, the last
+ * The model: the 60-dof chain of tests/floquet/test_hb_monodromy.c (unit masses and springs, the last
  * dof free) with 10 Jenkins elements grounding dofs 3, 9, ..., 57, harmonic balance at H = 5,
  * Rayleigh's a0 with the modal damping (xi_k = a0), mode 2 (its backbone monotone in a:
- * tests/test_hb_nma_sensitivity.c). The truth: the ten elements' shared kt = 0.2 and mu N =
+ * tests/nma/test_hb_nma_sensitivity.c). The truth: the ten elements' shared kt = 0.2 and mu N =
  * 0.02, a0 = 0.004. The levels: 8 modal amplitudes from 0.53 to 3.9 (geometric), their
  * frequencies and damping ratios from the model with 0.05 % noise in f and 1 % in zeta (GSL's
  * MT19937, seeds 1..DRAWS), the deviations given; the three parameters free, started at

@@ -5,7 +5,7 @@
  * The levels: 8 accelerations from 3 % to 150 % of phi_max of a joint near 170 Hz (F_S 30,
  * K_T 3e5, chi 0.3, beta 0.5, zeta0 0.002, K0 8.4e5; sensor 0.37), with 1 % noise in zeta and
  * 0.05 % in f (GSL's MT19937, seeds 1..DRAWS), the deviations given; every parameter free,
- * started 10x off (tests/test_fit.c's problem). For each draw:
+ * started 10x off (tests/fit/test_fit.c's problem). For each draw:
  *   - fricreg_fit_run (32 starts, the default; the exact Jacobian): its CPU time and backbone evaluations
  *     (residuals plus Jacobians, each the 8 levels' backbone), and whether the interval holds
  *     the truth;

@@ -2,7 +2,7 @@
 /* hb_contact_3d.c — the cost of the 3-D contact element in harmonic balance
  * (fricreg_hb_set_jenkins_2d_normal: the sampled 2-D AFT at N and N/2 samples, extrapolated)
  * against the 1-D lift-off element (fricreg_hb_set_jenkins_normal: the exact AFT) in the same
- * run: the 2-dof mass on an inclined contact of tests/test_hb_contact_3d.c, continued in Ω from
+ * run: the 2-dof mass on an inclined contact of tests/hb/test_hb_contact_3d.c, continued in Ω from
  * 0.9 to 1.5 (through slip and lift-off), and the 1-D element on its x row with the same
  * normal law. For each H the median over repeats of the seconds per continuation point and per
  * Newton step (the monitor counts them), and the ratio 3-D / 1-D per step. Usage:

@@ -2,7 +2,7 @@
 /* hb_level.c — the cost of the continuation in the excitation level (fricreg_hb_continue_level)
  * and of the point solve's start along it (fricreg_hb_solve without a guess) against Newton
  * from the stuck response (a zero guess, the start until 1.6): the gap pair of
- * tests/test_hb_level.c (2 dofs, one lift-off element with a gap, H = 15), its S-curve at
+ * tests/forced/test_hb_level.c (2 dofs, one lift-off element with a gap, H = 15), its S-curve at
  * Omega = 15.2 from level 0.05 to 2 with and without stability (points, folds, median time),
  * then point solves at a few frequencies each way (median time, status). Usage:
  * fricreg-bench-hb-level [repeats]. */

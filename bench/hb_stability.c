@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* hb_stability.c — the cost of stability (fricreg_hb_set_stability) per continuation point, by
  * Hill's method and by the exact monodromy (fricreg_hb_set_stability_method): the gap pair of
- * tests/test_hb_stability.c (2 dofs, one lift-off element with a gap, H = 15: Hill's companion
+ * tests/floquet/test_hb_stability.c (2 dofs, one lift-off element with a gap, H = 15: Hill's companion
  * matrix of order 124) and a
  * three-mass Jenkins chain at H = 7 and 15 (orders 90 and 186), the Jenkins pair and the
  * lift-off pair of the same test (Hill's orders 124), each branch followed without

@@ -4,11 +4,11 @@
  * D_h: dense, a 1000-dof continuation takes hours):
  * - the Jenkins chain: n unit masses, springs s = (2n/π)² (first mode near 1 rad/s), fixed at
  *   one end, Rayleigh damping 0.2 ζ ω1 M + 1.8 ζ/ω1 K, ζ = 0.02, 10 Jenkins elements (kt = 1,
- *   μN = 0.05) to the ground (tests/test_hb_condensed.c's), 0.1 n/60 cos Ωt on the free end
+ *   μN = 0.05) to the ground (tests/floquet/test_hb_condensed.c's), 0.1 n/60 cos Ωt on the free end
  *   (the tip's resonance falls as 1/n: the sliders slip at every n), continued over 0.8 to 1.3
  *   times the first mode at H = 3 and 7, Newton's tolerance 1e-9 (the solves' rounding reaches
  *   5e-10 of q at 1000 dofs: fricreg_hb.h's header);
- * - the gap chain: tests/test_hb_stability.c's gap pair joined to a stiff chain (gap_chain),
+ * - the gap chain: tests/floquet/test_hb_stability.c's gap pair joined to a stiff chain (gap_chain),
  *   continued from 11 to 17 rad/s at H = 7, through two folds and two Neimark–Sacker points.
  *
  * Per model: the wall time per stored point without stability and with the default (its
@@ -103,7 +103,7 @@ static fricreg_hb *chain(size_t n, int H, double *w1)
     return hb;
 }
 
-/* The gap pair of tests/test_hb_stability.c (2 dofs: K = [140 −20; −20 180], C = 0.002 K, a
+/* The gap pair of tests/floquet/test_hb_stability.c (2 dofs: K = [140 −20; −20 180], C = 0.002 K, a
  * contact on dof 1's tangential and −x_0 normal, kt = 40, mu = 0.01, N0 = −10, kn = 500, so
  * a gap of 0.02 that closes at large amplitude; p_c = (2, 1)) joined by a spring kc = 5 to a
  * chain of n − 2 dofs fixed at its far end, stiff enough (its springs (40 (n − 2)/π)²) that its

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* hb_truncation.c — the cost of fricreg_hb_truncation_error (one solve at 2H + 1 from the
- * padded H solution) against a solve at H: the 3-dof chain of tests/test_hb_truncation.c at
+ * padded H solution) against a solve at H: the 3-dof chain of tests/forced/test_hb_truncation.c at
  * Ω = 1.2 (every element slipping), and the sparse rod of tests/support/hb_rod.h (200 dofs,
  * Ω = 1.35). For each H the median over repeats of: fricreg_hb_solve from the solution at
  * Ω − 0.01 (a continuation step's corrector: the H + 1 factors at Ω and a few Newton

@@ -3,7 +3,7 @@
 # get AVX2 versions chosen at run time, the way glibc, FFTW and OpenBLAS do: on x86-64 with
 # GCC or clang (target("avx2") and __builtin_cpu_supports). Probed by compiling and linking a
 # program that uses both; elsewhere the portable loops alone. "avx2" adds no FMA, so both versions
-# round identically (tests/test_kernels.c compares them bit for bit with the scalar law).
+# round identically (tests/law/test_kernels.c compares them bit for bit with the scalar law).
 include(CheckCSourceCompiles)
 option(FRICREG_AVX2 "Dispatch the kernels to AVX2 versions at run time where supported" ON)
 if(FRICREG_AVX2)

@@ -15,7 +15,7 @@
  *
  * Run: cvode_twoblock [rtol] (default 1e-6), eps = 1e-6, four belt cycles. It prints D on each
  * cycle and exits with 0 when D on cycle 4 is within 1e-4 of 1.7355132, the converged value of
- * tests/test_kink_location.c (RK4 extrapolated in eps; rkf45, rk8pd and msbdf at rtol 1e-8 …
+ * tests/sim/test_kink_location.c (RK4 extrapolated in eps; rkf45, rk8pd and msbdf at rtol 1e-8 …
  * 1e-11), else 1; 2 when something failed to set up. */
 #include <math.h>
 #include <stdio.h>
@@ -45,7 +45,7 @@ static void quiet_warnings(int code, const char *module, const char *function, c
 }
 #endif
 
-#define D_REFERENCE 1.7355132 /* tests/test_kink_location.c, eps = 1e-6 */
+#define D_REFERENCE 1.7355132 /* tests/sim/test_kink_location.c, eps = 1e-6 */
 #define EPS 1e-6
 #define M 2   /* contacts */
 #define DIM 5 /* x1, x2, v1, v2, D */

@@ -316,7 +316,7 @@ FRICREG_API int fricreg_aft_jenkins_normal_exact(fricreg_aft *aft, double kt, do
  *  through them (the march run again for each column), one that Newton's steps reached holds
  *  its slider (the tangent of a held slider). With uy = 0 and kn = 0,
  *  fx, N and their Jacobian's (u, g) block equal fricreg_aft_jenkins_normal_sampled's (the
- *  forces to the bit where the element slips or the centred slider holds; tests/test_aft_2d.c).
+ *  forces to the bit where the element slips or the centred slider holds; tests/joint/test_aft_2d.c).
  *  Sampling error: the return mapping at the samples drags the slider along chords of a
  *  curved orbit, one sample behind the continuous element (as a time-stepped element is one
  *  step behind), so the error is first order in 1/N where the slip turns: a circular orbit of

@@ -430,7 +430,7 @@ FRICREG_API int fricreg_hb_set_iwan_normal(fricreg_hb *hb, size_t m, size_t ndof
  *  a long Newmark integration of fricreg_structure_set_jenkins_2d_normal, extrapolated in dt,
  *  to 3.0e-6 and 1.9e-6 of each dof's RMS (closed, slipping on a curved path) and 4.1e-6 and
  *  1.1e-6 (lifting off in every period), within the truncation estimate and the reference's
- *  own error (tests/test_hb_contact_3d.c).
+ *  own error (tests/hb/test_hb_contact_3d.c).
  *
  *  m            must equal the driver's element count.
  *  ndof         must equal the driver's degrees of freedom.

@@ -103,7 +103,7 @@ FRICREG_API int fricreg_hb_displacement(fricreg_hb *hb, size_t ndof, size_t nc, 
  *  fricreg_hb_displacement). The factor 2 makes it a bound on the error against the converged
  *  series, |rms_k(H) − rms_k(∞)|, whenever H' harmonics at least halve that error (so at most
  *  3 times it then): friction's kinked forces give algebraic convergence, about H^-3 to H^-4
- *  on the oscillator and the 3-dof chain of tests/test_hb_truncation.c, where the estimate is
+ *  on the oscillator and the 3-dof chain of tests/forced/test_hb_truncation.c, where the estimate is
  *  1.6 to 2.6 times the error against H = 40 for H = 3 .. 19 (and 0, to rounding, where every
  *  element sticks: the response is the linear one, a single harmonic). The driver's solution,
  *  points, factors and error record are not changed on success; the companion is freed before the call returns.

@@ -63,7 +63,7 @@ extern "C" {
  *  once adds a 0, dropped. The 2 ndof left are the multipliers μ, λ = log μ Ω/2π the exponents
  *  (Im λ in (−Ω/2, Ω/2]). They are the HB orbit's own multipliers, which converge to an
  *  event-driven shooting's as H grows (8.6e-6 off at H = 40 on a Jenkins pair, where Hill's
- *  stays 0.44 away: tests/test_hb_monodromy.c). With lift-off (Jenkins elements, up to 32
+ *  stays 0.44 away: tests/floquet/test_hb_monodromy.c). With lift-off (Jenkins elements, up to 32
  *  dofs; since 1.9) the switch instants are moved from the HB orbit's onto the exact orbit's,
  *  whose multipliers they then are: a stiff contact's product is too sensitive to the HB's
  *  truncated instants (docs/stability.md, "A stiff unilateral spring"). Cost per solution: a few (2 ndof +

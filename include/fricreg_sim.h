@@ -269,7 +269,7 @@ FRICREG_API int fricreg_sim_set_kink_location(fricreg_sim *sim, int on);
  *  FRICREG_INT_CENTRAL_IMEX solves the friction implicitly and needs (dt omega/2)^2 < 0.9
  *  whatever eps, and dt omega <= 1/sqrt 2 as well where dt * lambda >= 0.9: with law (4)'s
  *  band not resolved by the step, a reversal within one step can put energy in, as above.
- *  tests/test_guard.c sweeps these limits over every stepper, law and system from 0.5x to 1.5x
+ *  tests/ode/test_guard.c sweeps these limits over every stepper, law and system from 0.5x to 1.5x
  *  the accepted dt: no accepted run leaves a stick or puts energy in beyond 1% of the run's
  *  energy scale (Karnopp with the paper's eps over wide bands excepted: its band pushes).
  *  After every step the state is checked for finiteness and for |y| <= 1e100, which no
@@ -407,7 +407,7 @@ FRICREG_API int fricreg_sim_get_stick_fraction(const fricreg_sim *sim, size_t m,
  *    fricreg_estimate_kind): ASYMPTOTIC where the order was seen (or d2 alone is at the
  *    noise), BOUND below the range or with both at the noise (until 1.7 it raised
  *    FRICREG_WARN_NOT_ASYMPTOTIC, no longer raised). On the oscillator against the exact
- *    solver (tests/test_error_estimate.c) within 1x ... 10x of the error in the asymptotic
+ *    solver (tests/sim/test_error_estimate.c) within 1x ... 10x of the error in the asymptotic
  *    range.
  *  - on = FRICREG_ESTIMATE_ONE_COMPANION (2), 1.6's estimator: the level-1 companion only,
  *    err = 3 |d1|: 2x the difference is p = 1's factor, 3 the margin the calibration of

@@ -360,7 +360,7 @@ enum fricreg_contact_solver {
  *  motion) s~_i = 2^-26 W_eff,ii. Every answer is refined against the exact block (iterative
  *  refinement, products with W_eff, until the block's residual is below 2^-43 of its
  *  right-hand side), so that both paths give the same steps to rounding (within 1e-10 of each
- *  other: tests/test_contact_solver.c); a block that is not positive definite is
+ *  other: tests/structure/test_contact_solver.c); a block that is not positive definite is
  *  FRICREG_ESINGULAR on both (then no stick guess, as before). The sparse path's storage is
  *  allocated with K_eff's factor and its factor is CHOLMOD's simplicial one, factored in place,
  *  so that its steps allocate nothing either (a supernodal factorization allocates its update

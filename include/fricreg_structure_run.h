@@ -150,7 +150,7 @@ FRICREG_API int fricreg_structure_set_max_steps(fricreg_structure *s, int64_t ma
  *  other component (the displacements, velocities no contact reads, W_in, E_visc and the D_i)
  *  keeps rtol + rtol |y_k|, the standard level with atol = rtol in the model's units.
  *  Contacts whose row of J is zero read nothing: with no contact reading any dof the rule is
- *  the standard control with atol = rtol. Measured (tests/test_structure_ode_tolerances.c, a
+ *  the standard control with atol = rtol. Measured (tests/structure/test_structure_ode_tolerances.c, a
  *  3-dof chain with two contacts at eps = 1e-5, 4 load periods, rtol 1e-6): the two
  *  contacts' dissipation errors against a converged run are 5.7e-3 and 1.7e-1 of it (msbdf)
  *  and 1.1e-5, 1.3e-4 (rkf45) with atol = rtol, 1.0e-6, 1.1e-5 (msbdf) and 4.4e-8, 2.2e-9

@@ -81,7 +81,7 @@ expect_usage_error "--dt" oscillator --dt nan
 expect_usage_error "--dt" oscillator --dt inf
 expect_usage_error "--dt" oscillator --dt 1e999
 # --extrapolate LEVELS (fricreg_sim_run_extrapolated): the sticking oscillator observes
-# order 2 (tests/test_extrapolate.c measures it against the exact solution).
+# order 2 (tests/sim/test_extrapolate.c measures it against the exact solution).
 expect_usage_error "--extrapolate" oscillator --extrapolate 1
 expect_usage_error "--extrapolate" oscillator --extrapolate 9
 expect_usage_error "--extrapolate" oscillator --extrapolate 2.5
@@ -91,7 +91,7 @@ expect_output '"extrapolation": \{"levels": 3, "order": 2, "observed_order": 2\.
     oscillator --a 2 --omega 0.5 --x0 0 --integrator rk8pd --rtol 1e-11 --atol 1e-11 --eps 0.04 --cycles 3 --extrapolate 3
 # --extrapolate-order P, --extrapolate-window W (fricreg_sim_run_extrapolated_window): over 12
 # cycles with a window of 4, the first 8 cycles and the window's first are not extrapolated
-# (estimate +infinity: null in JSON), the last three are (tests/test_extrapolate_window.c).
+# (estimate +infinity: null in JSON), the last three are (tests/sim/test_extrapolate_window.c).
 expect_usage_error "--extrapolate-window" oscillator --extrapolate-window 3
 expect_usage_error "--extrapolate-order" oscillator --extrapolate-order 2
 expect_usage_error "--extrapolate-order" oscillator --extrapolate 2 --extrapolate-order 5
@@ -1123,7 +1123,7 @@ if ! awk -F, 'NR > 1 { w = $1; a = 6.5 - 2 * w * w; c = 0.06 * w; x = 0.5 / sqrt
     echo "FAIL: hb 3-D contact against the linear closed form: $(head -n 3 "$d/frf3.csv") $(cat "$d/err")"; fails=$((fails + 1))
 fi
 expect_output '"element_kind": "contact-3d"' $hb3 --jenkins-2d $d/J2.mtx --normal-params $d/Q3.txt
-# The lift-off pair of tests/test_hb_continuation.c (2 unit masses, K = [140 -20; -20 180],
+# The lift-off pair of tests/forced/test_hb_continuation.c (2 unit masses, K = [140 -20; -20 180],
 # C = 0.002 K, kt 40, mu 0.3, N0 2, kn 100, u = x_1, g = -x_2, p_c = (2, 1)) from 11.5 to 12.5
 # rad/s with every default: the start without a guess is on the stable branch that the
 # continuations from 12.5 down and from 5 up reach (the library test, to 1e-8), rms_2 =
@@ -1241,7 +1241,7 @@ expect_output '"elements": 257, "harmonics": 1, .*"omega_reached": 0.59999' hb -
 # One unit mass on a unit spring with a Jenkins element kt = 2, mu N = 3 at H = 1: stuck for
 # a <= 1.5 (omega^2 = 3, zeta = 0); beyond, with cos(beta) = 1 - 3/a, the describing function's
 # omega^2 = 1 + (2/pi)(beta - sin(2 beta)/2), zeta = 12 (a - 1.5) / (2 pi a^2 omega^2)
-# (tests/test_hb_nma.c derives it): every row of --output backbone within 1e-9.
+# (tests/nma/test_hb_nma.c derives it): every row of --output backbone within 1e-9.
 d=$tmp/nma
 mkdir -p "$d"
 printf '%s\n' "%%MatrixMarket matrix coordinate real symmetric" "1 1 1" "1 1 1" >"$d/M.mtx"
@@ -1295,10 +1295,10 @@ total=$((total + 1))
 if ! closed_form_rows "$d/natural.csv" 12; then
     echo "FAIL: nma --continuation natural against the closed form: $(cat "$d/natural.csv" "$d/err")"; fails=$((fails + 1))
 fi
-# A backbone that folds (tests/test_hb_nma_fold.c's two masses, a Jenkins element on dof 2: an
+# A backbone that folds (tests/nma/test_hb_nma_fold.c's two masses, a Jenkins element on dof 2: an
 # internal resonance through the third harmonic at a = 4.43): the summary lists its two folds,
 # and the written points go back in the amplitude between them; 1.7's march stops there. No
-# crossing: 3 omega stays above the second stuck mode's 3.2337 (tests/test_hb_nma_energy.c); the
+# crossing: 3 omega stays above the second stuck mode's 3.2337 (tests/nma/test_hb_nma_energy.c); the
 # third harmonic's share of the kinetic energy peaks near the folds (5.2e-4 at a = 4.47).
 printf '%s\n' "%%MatrixMarket matrix coordinate real symmetric" "2 2 2" "1 1 1" "2 2 1" >"$d/M2.mtx"
 printf '%s\n' "%%MatrixMarket matrix coordinate real symmetric" "2 2 3" "1 1 1.25" "2 1 -0.25" "2 2 0.45" >"$d/K2.mtx"
@@ -1320,7 +1320,7 @@ if ! "$sim" $fold --points 200 --output backbone >"$d/fold.csv" 2>"$d/err" ||
 fi
 # With kt = 11 the second stuck mode's frequency, sqrt(6.35 + sqrt(5.1^2 + 0.25^2)) = 3.38469,
 # lies in 3 omega's range: the summary names the crossing, mode 2 (from 1, as --mode), at
-# a = 5.04, omega = 3.384690/3 = 1.128230 (tests/test_hb_nma_energy.c).
+# a = 5.04, omega = 3.384690/3 = 1.128230 (tests/nma/test_hb_nma_energy.c).
 echo "11 1" >"$d/P3.txt"
 total=$((total + 1))
 if ! "$sim" ${fold%% --jenkins-params *} --jenkins-params $d/P3.txt --harmonics 3 --amplitude-start 2 --amplitude-end 10 --points 60 >"$d/cross.json" 2>"$d/err" ||
@@ -1366,7 +1366,7 @@ printf '1 0.3 2 0 0.1\n' > "$d/P_gap.txt"
 expect_usage_error "^fricreg-sim: --elements $d/nmJ2d.mtx: add_elements: element 0 (jenkins_normal): gap = 0.1" nma --mass $d/nmM22.mtx --stiffness $d/nmK22.mtx --elements jenkins_normal:$d/nmJ2d.mtx:$d/P_gap.txt --amplitude-start 0.5 --amplitude-end 50
 
 # ---- hold, belt, disk: the reference problems beyond the paper (src/problems/, the code the
-# benchmarks run; docs/laws2d.md). Values against the bench and tests/test_hold.c.
+# benchmarks run; docs/laws2d.md). Values against the bench and tests/law/test_hold.c.
 # num FIELD FILE: the number after "FIELD": in a JSON summary.
 num() { sed -n -e "s/.*\"$1\": \(-\{0,1\}[0-9.e+-]*\).*/\1/p" "$2"; }
 # within NAME FILE EXPR: awk's EXPR over the summary's fields (given as variables) is true.
@@ -1605,7 +1605,7 @@ fi
 # ---- fit: a joint's parameters from measured levels (fricreg_fit.h). The levels: a modal Iwan
 # joint's backbone (F_S 30, K_T 3e5, chi 0.3, beta 0.5, zeta0 0.002, K0 8.4e5; accelerations at
 # a sensor of shape 0.37; fricreg_fit_eval, 12 digits), noise-free, with the deviations of
-# tests/test_fit.c: the fit recovers every parameter to 1e-9 and each interval holds it.
+# tests/fit/test_fit.c: the fit recovers every parameter to 1e-9 and each interval holds it.
 d=$tmp/fit
 mkdir -p "$d"
 printf '%s\n' "accel,freq_hz,zeta,sd_freq_hz,sd_zeta" \

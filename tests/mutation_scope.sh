@@ -21,13 +21,13 @@ check() { # what, expected, actual
     fi
 }
 t=$work/tree
-mkdir -p "$t/src" "$t/tests/mutation"
+mkdir -p "$t/src" "$t/tests/mutation" "$t/tests/y"
 g() { git -C "$t" -c user.name=t -c user.email=t@t -c commit.gpgsign=false "$@" >/dev/null; }
 version() { echo "project(fricreg VERSION $1 LANGUAGES C)" >"$t/CMakeLists.txt"; }
 entry() { printf 'mutant %s\ntests %s\nfile %s\nsed s/x/y/\n\n' "$1" "$2" "$3"; }
 g init -q
 version 1.0.0
-echo a >"$t/src/a.c" && echo b >"$t/src/b.c" && echo y >"$t/tests/test_y.c"
+echo a >"$t/src/a.c" && echo b >"$t/src/b.c" && echo y >"$t/tests/y/test_y.c"
 { echo "# the list"; entry m-a x src/a.c; entry m-b y src/b.c; } >"$t/tests/mutation/mutants.txt"
 g add -A && g commit -q -m "release 1.0.0"
 release=$(git -C "$t" rev-parse HEAD)
@@ -44,9 +44,9 @@ echo a2 >"$t/src/a.c" && g commit -q -am "a changed"
 check "a changed file selects its mutant" "m-a" "$(selected "$t")"
 check "the reason" "its file src/a.c changed" \
     "$(sh "$select" "$t" "$t/tests/mutation/mutants.txt" release 2>/dev/null | cut -f2)"
-echo y2 >"$t/tests/test_y.c"
+echo y2 >"$t/tests/y/test_y.c"
 check "a changed test source selects its mutants (uncommitted)" "m-a m-b" "$(selected "$t")"
-git -C "$t" checkout -q -- tests/test_y.c
+git -C "$t" checkout -q -- tests/y/test_y.c
 entry m-c z src/b.c >>"$t/tests/mutation/mutants.txt"
 check "a new entry is selected" "m-a m-c" "$(selected "$t")"
 sed -i 's#^sed s/x/y/$#sed s/x/z/#' "$t/tests/mutation/mutants.txt"

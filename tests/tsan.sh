@@ -33,7 +33,7 @@ if [ $built -eq 0 ]; then
         "$work/tree/tests/test_threads" >>"$log" 2>&1
     status=$?
 fi
-grep -E "Checks|Failures|tests/test_threads.c" "$log" | tail -n 10
+grep -E "Checks|Failures|tests/reliability/test_threads.c" "$log" | tail -n 10
 count=$(ls "$reports" | wc -l)
 if [ "$count" -gt 0 ]; then
     echo "FAIL: $count ThreadSanitizer report(s) in $reports; the first:"

@@ -21,7 +21,7 @@ check() { # what, expected, actual
 }
 t=$work/tree
 mkdir -p "$t/src/base" "$t/src/joint" "$t/src/hb" "$t/src/forced" "$t/src/structure" "$t/include" \
-    "$t/tests/support" "$t/docs"
+    "$t/tests/support" "$t/tests/hb" "$t/tests/structure" "$t/docs"
 g() { git -C "$t" -c user.name=t -c user.email=t@t -c commit.gpgsign=false "$@" >/dev/null; }
 cat >"$t/src/README.md" <<'TABLE'
 | floor | module | what |
@@ -37,14 +37,14 @@ for f in src/base/error.c src/joint/slider.c src/hb/newton.c src/forced/solve.c 
     tests/valgrind.sh CMakeLists.txt; do
     echo "/* $f */" >"$t/$f"
 done
-printf '#include "fricreg_hb.h"\n#include "rod.h"\n' >"$t/tests/test_hb.c"
-printf '#include "fricreg_structure.h"\n' >"$t/tests/test_structure.c"
+printf '#include "fricreg_hb.h"\n#include "rod.h"\n' >"$t/tests/hb/test_hb.c"
+printf '#include "fricreg_structure.h"\n' >"$t/tests/structure/test_structure.c"
 echo '#include "quiet.h"' >"$t/tests/support/rod.h"
 echo '/* quiet */' >"$t/tests/support/quiet.h"
 g init -q && g add -A && g commit -q -m start
 runs() { # the programs that run since HEAD, space-separated
     for p in hb structure; do
-        sh "$scope" "$t" HEAD "tests/test_$p.c" >/dev/null && printf '%s ' "$p"
+        sh "$scope" "$t" HEAD "tests/$p/test_$p.c" >/dev/null && printf '%s ' "$p"
     done | sed 's/ $//'
 }
 touched() { # FILE: the programs that run with FILE changed (then restored)
@@ -59,7 +59,7 @@ check "a module over hb/ behind fricreg_hb.h" "hb" "$(touched src/forced/solve.c
 check "a module on a lower floor" "hb structure" "$(touched src/joint/slider.c)"
 check "the bottom floor" "hb structure" "$(touched src/base/error.c)"
 check "its module's public header" "hb" "$(touched include/fricreg_hb.h)"
-check "its own source" "structure" "$(touched tests/test_structure.c)"
+check "its own source" "structure" "$(touched tests/structure/test_structure.c)"
 check "the .c beside an included test header" "hb" "$(touched tests/support/rod.c)"
 check "a header included by an included one" "hb" "$(touched tests/support/quiet.h)"
 check "the harness" "hb structure" "$(touched tests/valgrind.sh)"
@@ -75,6 +75,6 @@ check "a module outside the table" "hb structure" "$(runs)"
 rm -rf "$t/src/cli" "$t/src/cli.c" "$t/src/sim" && git -C "$t" checkout -q -- src/README.md
 mkdir "$work/plain" && cp -r "$t/src" "$t/tests" "$t/include" "$work/plain/"
 check "no git: every program" "yes" \
-    "$(sh "$scope" "$work/plain" HEAD tests/test_structure.c >/dev/null && echo yes)"
+    "$(sh "$scope" "$work/plain" HEAD tests/structure/test_structure.c >/dev/null && echo yes)"
 echo "$((checks - fails)) passed, $fails failed"
 [ $fails -eq 0 ]

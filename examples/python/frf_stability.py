@@ -3,7 +3,7 @@
 """The frequency response of a two-dof structure with a contact that closes a gap, by harmonic
 balance, with each point's Floquet stability and the bifurcations located on the branch.
 
-The gap pair of tests/test_hb_stability.c: M = I, K = [[140, -20], [-20, 180]] N/m,
+The gap pair of tests/floquet/test_hb_stability.c: M = I, K = [[140, -20], [-20, 180]] N/m,
 C = 0.002 K, a contact element (jenkins_normal: kt = 40 N/m, mu = 0.01, kn = 500 N/m) whose
 normal displacement is -x_1 and which closes at x_1 = -0.02 m (n0 = -10 N: a gap n0/kn), forced
 by (2, 1) cos Ωt N. The hardening contact bends the resonance over: two turning points (TP),
@@ -30,7 +30,8 @@ kinds = [b.kind for b in frf.bifurcations]
 print("%d points, %d unstable; bifurcations: %s" % (len(frf.omega), np.sum(~frf.stable),
                                                    ", ".join("%s at %.5f rad/s" % (b.kind, b.omega)
                                                              for b in frf.bifurcations)))
-assert kinds.count("TP") == 2 and kinds.count("NS") == 2  # as tests/test_hb_stability.c finds
+# as tests/floquet/test_hb_stability.c finds
+assert kinds.count("TP") == 2 and kinds.count("NS") == 2
 
 np.savetxt("frf_stability.csv",
            np.column_stack([frf.omega, frf.rms, frf.stable, frf.mu_max]), delimiter=",",

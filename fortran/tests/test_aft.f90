@@ -1,6 +1,6 @@
 ! SPDX-License-Identifier: GPL-3.0-or-later
 ! test_aft.f90 — the AFT (fricreg_aft.h) from Fortran: the type fricreg_aft_workspace of
-! module fricreg, against the closed form of tests/test_aft.c.
+! module fricreg, against the closed form of tests/joint/test_aft.c.
 !
 ! Values: kt = 2, mun = 3, u = 5 cos(theta): fa_1 = (kt A/pi)(t - sin t cos t) with
 ! cos t = 1 - 2 mun/(kt A) = 0.4, fb_1 = -(4 mun/pi)(1 - mun/(kt A)) = -(12/pi) 0.7;

@@ -6,8 +6,8 @@
 !   cycle 1 (T = 2 pi) slides 3.5, so D = (3.5, 0, 0) over t_end = 20 (3 whole cycles);
 ! - unforced from (-3.1, 0), mun = 0.731: half-cycles about the offset sgn(x) mun end at the
 !   mirror points 1.638 (t = pi, a reversal) and -0.176 (t = 2 pi, a stick, |x| <= mun), so
-!   D of cycle 1 = 0.731 (4.738 + 1.814) = 4.789512 (tests/test_exact.c derives the same).
-! The C test of the same cases is tests/test_exact.c; the tolerances are a few ulps.
+!   D of cycle 1 = 0.731 (4.738 + 1.814) = 4.789512 (tests/exact/test_exact.c derives the same).
+! The C test of the same cases is tests/exact/test_exact.c; the tolerances are a few ulps.
 program test_exact
   use fricreg
   use ftest

@@ -5,13 +5,13 @@
 ! Values. The backbone at a modal amplitude below macroslip against Segalman's closed form in
 ! R and S (../shared/notes/identification.md), written here: F_S = 2.385, K_T = 41.7,
 ! chi = -0.37, beta = 0.81, zeta0 = 0.0031, K0 = 17.3 at a = 0.3 phi_max. Noise-free levels of
-! tests/test_fit.c's joint (accelerations, sensor 0.37) with beta and K0 fixed: the four free
+! tests/fit/test_fit.c's joint (accelerations, sensor 0.37) with beta and K0 fixed: the four free
 ! parameters come back to 1e-6 from starts 10x off, each inside its interval. The failures: a
 ! getter before a run (FRICREG_EINVAL), arrays of different sizes (FRICREG_ESIZE).
 !
 ! The HB model (set_model_hb, set_sensor_dof, set_model_modal_iwan): one unit mass on a unit
 ! spring with a Jenkins element kt = 1.7, mu N = 0.26 at H = 1, whose backbone is the describing
-! function's closed form (tests/cli.sh's fit --model hb, tests/test_hb_nma.c): delta = mun/kt,
+! function's closed form (tests/cli.sh's fit --model hb, tests/nma/test_hb_nma.c): delta = mun/kt,
 ! cos(beta) = 1 - 2 delta/a, omega^2 = 1 + kt/pi (beta - sin(2 beta)/2),
 ! zeta = 4 mun (a - delta)/(2 pi a^2 omega^2), at six amplitudes past the slip, measured at
 ! dof 1 (|X_1| = a for the unit mass). From the driver's values 2x off (kt 3.4, mu N 0.13) the

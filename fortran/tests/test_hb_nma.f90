@@ -5,7 +5,7 @@
 ! fricreg_hb_driver.
 !
 ! Values: the oscillator m = 1, k = 1 with one Jenkins element kt = 2, mu N = 3 at H = 1 (the
-! C suite's tests/test_hb_nma.c derives its closed form): stuck for a <= 1.5, omega^2 = 3,
+! C suite's tests/nma/test_hb_nma.c derives its closed form): stuck for a <= 1.5, omega^2 = 3,
 ! zeta = 0; beyond, with cos(beta) = 1 - 3/a, omega^2 = 1 + (2/pi)(beta - sin(2 beta)/2) and
 ! zeta = 12 (a - 1.5) / (2 pi a^2 omega^2).
 program test_hb_nma
@@ -66,7 +66,7 @@ program test_hb_nma
                     'special point 1 of 0')
   call hb%destroy()
 
-  ! tests/test_hb_nma_fold.c's two masses (k1 = 1, kc = 0.25, k2 = 0.2; kt = 10, mu N = 1 on
+  ! tests/nma/test_hb_nma_fold.c's two masses (k1 = 1, kc = 0.25, k2 = 0.2; kt = 10, mu N = 1 on
   ! dof 2) at H = 3: 3 omega near the second mode (3:1), an S in a(omega) with two folds
   call check_status(hb%create(2, 1, 3), FRICREG_OK, 'create, two masses')
   call check_status(hb%set_stiffness(reshape([1.25_c_double, -0.25_c_double, -0.25_c_double, &
@@ -88,7 +88,7 @@ program test_hb_nma
   call check_status(hb%nma_special_point(3, t, a, omega, zeta, k, r), FRICREG_EINVAL, &
                     'special point 3 of 2')
   ! what each point is made of: the harmonics' shares of the kinetic energy add up to 1 (the
-  ! mean's is 0); the first point, stuck, is the linear mode 1 (tests/test_hb_nma_energy.c);
+  ! mean's is 0); the first point, stuck, is the linear mode 1 (tests/nma/test_hb_nma_energy.c);
   ! 3 omega stays above the second stuck mode's 3.2337, so no crossing
   sums = 0.0_c_double
   do i = 1, hb%nma_points()
@@ -108,7 +108,7 @@ program test_hb_nma
 
   ! with kt = 11 the second stuck mode, omega_2^2 = 6.35 + sqrt(5.1^2 + 0.25^2), lies in 3
   ! omega's range along the backbone: one crossing, 3 omega = omega_2 there, after the S's folds
-  ! (tests/test_hb_nma_energy.c): the last special point
+  ! (tests/nma/test_hb_nma_energy.c): the last special point
   call check_status(hb%create(2, 1, 3), FRICREG_OK, 'create, kt = 11')
   call check_status(hb%set_stiffness(reshape([1.25_c_double, -0.25_c_double, -0.25_c_double, &
                                               0.45_c_double], [2, 2])), FRICREG_OK, 'K, kt = 11')

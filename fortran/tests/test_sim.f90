@@ -148,7 +148,7 @@ program test_sim
   call check_status(sim%run_extrapolated(1.0_c_double, 9), FRICREG_EINVAL, 'levels 9')
   call check(index(sim%errmsg(), 'levels') > 0, 'message: ' // sim%errmsg())
   ! A window of the last 2 of 3 cycles: cycle 1 is level 0's (estimate +infinity), so is the
-  ! window's first; cycle 3 is extrapolated (tests/test_extrapolate_window.c measures it).
+  ! window's first; cycle 3 is extrapolated (tests/sim/test_extrapolate_window.c measures it).
   call check_status(sim%run_extrapolated(3 * 4 * acos(-1.0_c_double), 3, window=2), FRICREG_OK, &
                     'run_extrapolated, window 2')
   call check_status(sim%get_extrapolated_dissipation(D, Derr), FRICREG_OK, 'window: dissipation')

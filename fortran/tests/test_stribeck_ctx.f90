@@ -3,7 +3,7 @@
 ! of the idiomatic layer and the F77 entry point FRSTRC.
 !  - three uncoupled contacts, W = diag(1.5, 0.5, 2), law (4) at eps = 0.04, one in the band,
 !    one sliding, one at rest: the forces equal stribeck_eval (C's batch law, tested against
-!    closed forms in tests/test_stribeck.c) at f_eq = -a_free/W_ii, bit for bit (the C
+!    closed forms in tests/law/test_stribeck.c) at f_eq = -a_free/W_ii, bit for bit (the C
 !    library's contract for a diagonal W), through both layers;
 !  - set_stribeck() with no argument (FRSTRC with M = 0) switches it off: law_eval's law (4)
 !    with the bounds of set_bounds, bit for bit;

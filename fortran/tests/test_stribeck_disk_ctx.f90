@@ -3,8 +3,8 @@
 ! dctx%set_stribeck of the idiomatic layer and the F77 entry point FRDSTR.
 !  - three uncoupled contacts with isotropic blocks w_i I, eps = 0.04, one in the band, one
 !    sliding, one at rest: the forces equal stribeck_disk_eval (C's batch law, tested against
-!    closed forms in tests/test_stribeck.c) at f_eq = -a_free/w_i, bit for bit (what
-!    tests/test_stribeck_disk_ctx.c measures in C), through both layers;
+!    closed forms in tests/law/test_stribeck.c) at f_eq = -a_free/w_i, bit for bit (what
+!    tests/disk_ctx/test_stribeck_disk_ctx.c measures in C), through both layers;
 !  - set_stribeck() with no argument (FRDSTR with M = 0) switches it off: disk_eval's
 !    FRICREG_DISK_QUINN with the bounds of set_bounds, bit for bit;
 !  - a wrong size is FRICREG_ESIZE with a message, some arrays omitted FRICREG_ENULL, fk > fs

@@ -1,7 +1,7 @@
 ! SPDX-License-Identifier: GPL-3.0-or-later
 ! test_structure.f90 — the linear structure with friction (include/fricreg_structure.h) through
-! the thin bind(C) layer, with C's numbers (tests/test_structure.c): two storeys hold a static
-! load, J^T f = -p, so f = (-(p1 + p2), -p2) = (-0.319, 0.412) with no motion; and the paper's
+! the thin bind(C) layer, with C's numbers (tests/structure/test_structure.c): two storeys hold
+! a static load, J^T f = -p, so f = (-(p1 + p2), -p2) = (-0.319, 0.412) with no motion; and the paper's
 ! unforced oscillator as a structure (M = K = J = 1) sticks at -0.75 within eps^2/2, and at
 ! the paper's -0.750090 through run_ode with RK4.
 ! J is m x ndof row-major in C: a Fortran caller with J(m, ndof) passes transpose(J).

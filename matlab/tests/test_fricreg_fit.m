@@ -2,7 +2,7 @@
 function failures = test_fricreg_fit()
 %TEST_FRICREG_FIT  fricreg_backbone against the modal Iwan model's closed forms and its
 %   sensitivities against central differences; fricreg_fit_backbone recovering known
-%   parameters from noise-free levels to 1e-6 (the setup of tests/test_fit.c: a joint near
+%   parameters from noise-free levels to 1e-6 (the setup of tests/fit/test_fit.c: a joint near
 %   170 Hz, F_S 30, K_T 3e5, chi 0.3, beta 0.5, zeta0 0.002, K0 8.4e5; 8 accelerations at a
 %   sensor of shape 0.37 from 3 % to 150 % of phi_max), and the library's failures with
 %   their identifiers.
@@ -27,7 +27,7 @@ pm = p(1) * (1 + p(4)) / (p(2) * c);
 end
 
 function [w2, zeta] = reference(p, a)
-% omega^2 and zeta at the modal amplitude a, by the R, S form of tests/test_fit.c.
+% omega^2 and zeta at the modal amplitude a, by the R, S form of tests/fit/test_fit.c.
 chi = p(3);
 beta = p(4);
 fs = p(1);
@@ -166,7 +166,7 @@ p = truth();
 A = levels(p);
 [f, z] = fricreg_backbone(p, A, 'kind', 'acceleration', 'sensor', 0.37);
 sd = {'sd_freq_hz', 5e-4 * f, 'sd_zeta', 0.01 * z};
-% one start 10x off does not converge within 500 iterations (tests/test_fit.c)
+% one start 10x off does not converge within 500 iterations (tests/fit/test_fit.c)
 x0 = struct('fs', 10 * p(1), 'kt', 0.1 * p(2), 'chi', 10 * (p(3) + 1) - 1, 'beta', 10 * p(4), ...
             'zeta0', 0.1 * p(5), 'k0', 10 * p(6));
 fricreg_test_raises('fricreg:EWORK', @() fricreg_fit_backbone(A, f, z, 'sensor', 0.37, sd{:}, ...

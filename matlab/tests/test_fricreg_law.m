@@ -1,7 +1,7 @@
 % SPDX-License-Identifier: GPL-3.0-or-later
 function failures = test_fricreg_law()
 %TEST_FRICREG_LAW  fricreg_law_eval against the laws' closed forms (Quinn 2004, eqs. (1)-(4);
-%   the reference values of tests/test_law.c, mun = 2.385, eps = 0.0731), one call against
+%   the reference values of tests/law/test_law.c, mun = 2.385, eps = 0.0731), one call against
 %   single-point calls bit for bit, shapes and scalar expansion.
 cases = {'coulomb_closed_form', @coulomb_closed_form
          'quinn_reference_values', @quinn_reference_values
@@ -24,7 +24,7 @@ end
 
 function quinn_reference_values()
 % (4) with f_eq = 1.137 < mun: xi = (eps/2)(1.137/2.385); inside the zone |v - xi| < eps/2
-% f = -(2 mun/eps)(v - xi), values in exact rationals from tests/test_law.c.
+% f = -(2 mun/eps)(v - xi), values in exact rationals from tests/law/test_law.c.
 mun = 2.385;
 eps = 0.0731;
 inside = fricreg_law_eval('quinn', [0 0.0213 -0.0150 0.0539 -0.0191], 1.137, mun, eps);

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """fricreg.AFT against the C functions of fricreg_aft.h called directly, bit for bit; the
-closed forms of tests/test_aft.c (Caughey's describing function of the Jenkins element, the
+closed forms of tests/joint/test_aft.c (Caughey's describing function of the Jenkins element, the
 square wave of full slip, the centred stick); the time-domain element marched to its
 periodic state; the sampled path converging on the exact one at O(N^-2); Jacobians against
 centred differences; the tmdsimpy and pyHarm orders against those packages' own formulas;

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """fricreg.Context against the C library's context called directly (fricreg_ctx_*) bit for bit,
-the closed forms of tests/test_context.c and tests/test_contact_step.c (the README's two
-blocks, the diagonal coupling, the paper's partition, the step of one contact into a stop),
+the closed forms of tests/ctx/test_context.c and tests/structure/test_contact_step.c (the README's
+two blocks, the diagonal coupling, the paper's partition, the step of one contact into a stop),
 dense against sparse W, and every error path."""
 import ast
 import os
@@ -80,7 +80,7 @@ def test_readme_two_blocks_at_rest():
 
 
 def test_defaults_and_diagonal_closed_forms():
-    # tests/test_context.c defaults_quinn_unit_bounds_identity: law (4), eps 1e-3, mun 1, W = I
+    # tests/ctx/test_context.c defaults_quinn_unit_bounds_identity: law (4), eps 1e-3, mun 1, W = I
     f, f_eq = fricreg.Context(3).eval([0.00013, -0.0002, 0.0031], [0.37, -0.81, 2.2])
     np.testing.assert_allclose(f, [-0.63, 1.0, -1.0], rtol=1e-12)
     np.testing.assert_allclose(f_eq[:2], [-0.37, 0.81], rtol=1e-14)
@@ -216,8 +216,8 @@ def test_sparse_W_gives_the_dense_forces(kind):
 
 
 def test_step_of_one_contact_into_a_stop():
-    # tests/test_contact_step.c plain_newton_cycles: W = 2, W_eff = 1, c = 0.005, eps = 1e-3,
-    # zdot_pred = 0, a_pred = 0.3, guess f = -1. Inside the band, with zdot = c W_eff f and
+    # tests/structure/test_contact_step.c plain_newton_cycles: W = 2, W_eff = 1, c = 0.005, eps =
+    # 1e-3, zdot_pred = 0, a_pred = 0.3, guess f = -1. Inside the band, with zdot = c W_eff f and
     # f_eq = -(a_pred - (W - W_eff) f)/W = (f - 0.3)/2: f = -(2/eps)(zdot - (eps/2) f_eq)
     # = -10 f + 0.5 (f - 0.3), so f = -0.15/10.5 = -1/70. Plain Newton 2-cycles between +-1.
     ctx = fricreg.Context(W=[2.0], eps=1e-3)

@@ -114,7 +114,7 @@ def test_failures_raise_with_the_library_message():
 
 def describing_function(a, kt, mun):
     """ω² and ζ of x'' + x + f = 0 at x = a cos θ, f a Jenkins element, H = 1 (the
-    oscillator's backbone in closed form; tests/test_hb_nma.c derives it)."""
+    oscillator's backbone in closed form; tests/nma/test_hb_nma.c derives it)."""
     delta = mun / kt
     beta = np.arccos(1 - 2 * delta / a)
     w2 = 1 + kt / np.pi * (beta - 0.5 * np.sin(2 * beta))

@@ -96,7 +96,7 @@ def test_chain_sweep_with_stability_equals_the_c_library():
 def test_condensed_stability_is_the_c_librarys_by_name():
     # "condensed" names FRICREG_HB_STABILITY_CONDENSED; on the 3-dof chain (one dof no element
     # touches, kept below 50 Omega) its multipliers are the whole model's; the C library's
-    # tests/test_hb_condensed.c checks larger models
+    # tests/floquet/test_hb_condensed.c checks larger models
     hb = chain()
     hb.set_stability(True, "condensed")
     out = ffi.new("int *")
@@ -149,7 +149,7 @@ def test_stuck_response_is_linear():
 
 def describing_function(a, kt=2.0, mun=3.0):
     """ω² and ζ of x'' + x + f = 0 at x = a cos θ, f a Jenkins element, H = 1
-    (tests/test_hb_nma.c derives them)."""
+    (tests/nma/test_hb_nma.c derives them)."""
     delta = mun / kt
     if a <= delta:
         return 1 + kt, 0.0
@@ -244,8 +244,8 @@ def test_element_param_set_in_place_is_the_model_built_so():
 
 
 def test_backbone_special_points_in_the_branchs_order():
-    """tests/test_hb_nma_energy.c's two masses with kt = 11 (H = 3): the folds of its S (a = 4.49)
-    and then, the last special point, 3 ω crossing the stuck structure's second mode,
+    """tests/nma/test_hb_nma_energy.c's two masses with kt = 11 (H = 3): the folds of its S (a =
+    4.49) and then, the last special point, 3 ω crossing the stuck structure's second mode,
     ω_1² = 6.35 + sqrt(5.1² + 0.25²) (the 2x2 closed form), at a = 5.04; every fold harmonic 1
     of the backbone's mode 0."""
     K = [[1.25, -0.25], [-0.25, 0.45]]

@@ -236,8 +236,8 @@ def test_scipy_is_imported_only_for_a_sparse_matrix():
 # ---- closed forms -----------------------------------------------------------------------------
 
 def test_newmark_is_the_trapezoidal_rotation():
-    # tests/test_structure.c: average acceleration on m u'' + k u = 0 from (u0, 0) is the Cayley
-    # transform of [[0, 1], [-w^2, 0]]: u_n = u0 cos(wb t_n), tan(wb dt/2) = w dt/2.
+    # tests/structure/test_structure.c: average acceleration on m u'' + k u = 0 from (u0, 0) is the
+    # Cayley transform of [[0, 1], [-w^2, 0]]: u_n = u0 cos(wb t_n), tan(wb dt/2) = w dt/2.
     mass, w, u0, dt = 2.385, 1.7, 0.0371, 0.137
     s = fricreg.Structure([[mass]], [[mass * w * w]], u0=[u0])
     r = s.run(dt=dt, t_end=400 * dt)
@@ -253,8 +253,8 @@ def test_newmark_is_the_trapezoidal_rotation():
 
 
 def test_the_paper_oscillator_slides_to_rest():
-    # tests/test_structure.c: M = K = J = 1, mun = 1, from x0 = 2.75 the exact motion slides to
-    # -0.75 at t = pi and sticks, dissipating mun * 3.5; law (4) within eps^2/2 (eps = 2 dt).
+    # tests/structure/test_structure.c: M = K = J = 1, mun = 1, from x0 = 2.75 the exact motion
+    # slides to -0.75 at t = pi and sticks, dissipating mun * 3.5; law (4) within eps^2/2 (eps = 2 dt).
     dt = 1e-3
     s = fricreg.Structure([[1.0]], [[1.0]], J=[[1.0]], mun=[1.0], eps=2 * dt, u0=[2.75])
     r = s.run(dt=dt, t_end=8.0, output_every=1000)

@@ -29,7 +29,7 @@
 #define P_LO 1.0 /* law (4)'s lower order in eps along dt / eps fixed */
 #define BAND 0.5 /* the observed order accepted from P_LO - BAND on */
 /* On the observed order's Richardson correction: at 2 the frame of bench/frame_estimate.c is
- * bounded at every dt and scheme, the oscillator of tests/test_structure_error.c within 10x.
+ * bounded at every dt and scheme, the oscillator of tests/structure/test_structure_error.c within 10x.
  * The warning reads the estimate without it (FR_ESTIMATE_CENTRAL). */
 #define SAFETY (1.0 / FR_ESTIMATE_CENTRAL)
 /* Below the range: SAFETY 2^p / (2^p - 1) at the band's lowest order p = 0.5, 6.83. */

@@ -8,7 +8,7 @@
  * ifunc resolver runs while the library is being relocated, before ThreadSanitizer's runtime
  * is set up, and crashed every program of a -fsanitize=thread build. The target "avx2" adds
  * no FMA, so no product is fused into a sum: both versions round every operation alike, and
- * the kernels' elementwise results are the same bit for bit (tests/test_kernels.c).
+ * the kernels' elementwise results are the same bit for bit (tests/law/test_kernels.c).
  * Elsewhere the portable loops alone. */
 #ifndef FRICREG_DISPATCH_H
 #define FRICREG_DISPATCH_H

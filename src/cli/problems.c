@@ -67,7 +67,7 @@ static int law_eps(const char *option, double eps, double upper)
 /* ---- hold ------------------------------------------------------------------------------- */
 
 enum { H_MU, H_MASS, H_G, H_THETA, H_PHI, H_RATE, H_STEPS, H_DT, H_EPS, H_N };
-/* tests/test_hold.c's block; theta and eps 0: derived (cli_parse_hold) */
+/* tests/law/test_hold.c's block; theta and eps 0: derived (cli_parse_hold) */
 static const double hold_defaults[H_N] = {0.5385, 2.385, 9.81, 0.0, 35.4, 0.0, 1e7, 1e-4, 0.0};
 #define DISK_REF_EPS 2e-4
 
@@ -136,7 +136,7 @@ int cli_parse_hold(int argc, char **argv, struct prob_hold *p, enum cli_output *
     if (fmod(v[H_STEPS], 2.0) != 0.0)
         return cli_usage_error("--steps", "must be even (GSL's rk4 takes two classical steps)");
     if (!o.eps_given)
-        v[H_EPS] = 20.0 * v[H_DT]; /* tests/test_hold.c: the stick zone's rate 0.49 / step */
+        v[H_EPS] = 20.0 * v[H_DT]; /* tests/law/test_hold.c: the stick zone's rate 0.49 / step */
     if ((status = law_eps(o.eps_given ? "--eps" : "--dt", v[H_EPS], DISK_MAX)) != 0)
         return status;
     *p = (struct prob_hold){.mass = v[H_MASS],

@@ -91,7 +91,7 @@ static int failed(const char *what, int status)
     return 1;
 }
 
-/* The block on the incline (tests/test_hold.c's): creep from rest inside the disk, then the
+/* The block on the incline (tests/law/test_hold.c's): creep from rest inside the disk, then the
  * incline tilted at 0.02 rad/s from 0.9 atan(mu) through the break-away. */
 static int hold(const char *dir)
 {
@@ -179,7 +179,7 @@ static int disk(const char *dir)
     return 0;
 }
 
-/* The chain of tests/test_hb.c: three masses on springs, Rayleigh damping 0.03 M + 0.01 K,
+/* The chain of tests/hb/test_hb.c: three masses on springs, Rayleigh damping 0.03 M + 0.01 K,
  * a Jenkins element from mass 3 to the ground and one between masses 1 and 2, mass 1 excited
  * at 0.8 cos + 0.25 sin; harmonic balance at H = 7 over its first resonance with slip forces
  * scaled by `scale` (0: the elements slip freely; 1e6: stuck), into rows of curve `curve`:
@@ -240,11 +240,11 @@ static int hb(const char *dir)
     return 0;
 }
 
-/* The gap pair of tests/test_hb_stability.c: two masses, K = [140 -20; -20 180], C = 0.002 K,
+/* The gap pair of tests/floquet/test_hb_stability.c: two masses, K = [140 -20; -20 180], C = 0.002 K,
  * a unilateral spring (kn = 500) behind a gap of 0.02 on dof 1 (normal gap -x_1, N0 = -10)
  * with a weak friction (mu = 0.01) along dof 2, dof 1 excited at 2 cos, dof 2 at 1 cos. It
  * hardens once the gap closes, so its branch from 11 to 17 rad/s overhangs between two
- * turning points (at 16.0666439 rad/s: tests/test_hb_stability.c's fine continuation). */
+ * turning points (at 16.0666439 rad/s: tests/floquet/test_hb_stability.c's fine continuation). */
 #define GAP_PAIR_FOLD 16.0666439
 
 static int hb_gap_pair(fricreg_hb **out)

@@ -96,7 +96,7 @@ static void fill_to(struct work *wk, double a, size_t room)
 
 /* The levels ordered by a (insertion: a few levels) and merged into increasing points, with
  * points between levels farther apart than the ratio: a march's long step may land on another
- * branch (measured on the chain of tests/test_fit_hb.c: a step from a = 1.27 to 2.09 did). */
+ * branch (measured on the chain of tests/fit/test_fit_hb.c: a step from a = 1.27 to 2.09 did). */
 static void points_of_levels(struct work *wk)
 {
     for (size_t i = 0; i < wk->n; i++) {
@@ -148,7 +148,7 @@ static int driver_failed(fricreg_fit *fit, const struct work *wk, int st, size_t
 /* The backbone through the points, each point's omega, zeta and S read. A march that stops
  * short is tried again once on the finer points where `refine`: the march's Newton from its
  * secant predictor fails on some grids and not on others (measured on the chain of
- * tests/test_fit_hb.c: 3 of 60 random 6-level grids at Newton's tolerance 1e-12, none with
+ * tests/fit/test_fit_hb.c: 3 of 60 random 6-level grids at Newton's tolerance 1e-12, none with
  * points 1.2 apart). */
 static int march(fricreg_fit *fit, struct work *wk, int refine, size_t *bad)
 {
@@ -270,7 +270,7 @@ static int first_amplitudes(fricreg_fit *fit, struct work *wk, int kind, const d
 }
 
 /* 1 if a march's error rose where Newton's method was converging: the march took another
- * branch than the last one at nearly the same amplitudes (measured on tests/test_fit_hb.c's
+ * branch than the last one at nearly the same amplitudes (measured on tests/fit/test_fit_hb.c's
  * chain: from 1.8e-5 to 4.0 at a step of 3e-5 in a, the error then cycling between two). */
 static int jumped(double e, double last)
 {

@@ -12,7 +12,7 @@
  * are those of the structure's own highest modes (no element: a slider's stiffness hardly moves
  * them), one damped oscillator each, from ω² and the modal damping φ^T C φ (exact for Rayleigh
  * damping); the fixed-interface modes' own were 5e-3 off where damping falls with frequency,
- * the structure's 1.3e-6 (tests/test_hb_condensed.c). */
+ * the structure's 1.3e-6 (tests/floquet/test_hb_condensed.c). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

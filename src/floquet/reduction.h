@@ -41,7 +41,7 @@ void fr_hb_reduction_free(fricreg_hb *hb);
 
 /* Interior modes kept: those below FR_HB_REDUCTION_CUT times the orbit's frequency Ω; the
  * others answer quasi-statically, which the constraint modes hold. The error is the first
- * left-out mode's, about (Ω/ω_r)^4 on the chains of tests/test_hb_condensed.c and
+ * left-out mode's, about (Ω/ω_r)^4 on the chains of tests/floquet/test_hb_condensed.c and
  * bench/hb_stability_size.c (the largest multiplier 2.4e-2 off with the first at 20 Ω, 1.4e-4
  * at 54 Ω); not H's: the monodromy of the orbit does not depend on how many harmonics found
  * it. */

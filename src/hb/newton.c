@@ -132,7 +132,7 @@ static int direction(fricreg_hb *hb, const char *fn)
  * crossing Newton's direction of the side qw lies on points to that side's linear model's
  * root beyond the crossing, where R is another function; each step stops short of the
  * crossing, closer every time, until no trial decreases |R| (the seeded solve of NLvib's chain
- * at its onset of stick, tests/test_hb_kinks.c: 5 shrinking steps, then none). Then the
+ * at its onset of stick, tests/hb/test_hb_kinks.c: 5 shrinking steps, then none). Then the
  * shortest trial, past the crossing by at most 1/1024 of the step, left its Jacobian in jq:
  * the other side's, a limit of Jacobians near qw (an element of the generalized Jacobian of
  * piecewise-smooth Newton; Qi & Sun, Math. Prog. 58, 1993). Newton's direction from qw with

@@ -11,7 +11,7 @@
 #include "hb_internal.h"
 
 /* The step control's nominal values (Allgower & Georg give the form; these were chosen on
- * tests/test_hb_continuation.c's chains and lift-off pair): the corrector's contraction, its
+ * tests/forced/test_hb_continuation.c's chains and lift-off pair): the corrector's contraction, its
  * first step relative to ds, the angle between successive tangents (rad), the iterations; the
  * bounds on the angle (20°; a kink's 90°), on the contraction (1/2: Newton's convergence is
  * slow beyond) and on the distance from the last point (4 ds: the hyperplane of a kink of up

@@ -75,7 +75,7 @@ static inline double fr_tanh(double v, double mun, double eps)
  * multiplying sat by -mun < 0 mirrors and scales its bounds: -mun sat(c - s) =
  * clamp(-mun (c - s), -mun, mun) = clamp(g - c mun, -mun, mun). So, with no division,
  *   f = clamp(clamp(f_eq, -mun, mun) - c mun, -mun, mun),
- * equal to the sat form within a few roundings of mun (tests/test_law.c); at v = 0, exactly
+ * equal to the sat form within a few roundings of mun (tests/law/test_law.c); at v = 0, exactly
  * g, i.e. (2). For mun = 0 the sat form is 0; here c mun is 0 too, or NaN when c overflowed
  * to +-inf (v/eps > DBL_MAX/2), and fr_clamp maps a NaN to a bound, here +-0: f = 0 either
  * way. c = +-inf with mun > 0 gives -+mun, as the sat form. */
@@ -87,7 +87,7 @@ static inline double fr_quinn_band(double c, double f_eq, double mun)
 /* The scale k of c = k v: 2/eps, rounded up by one ulp where eps (2/eps) rounds below 2, so
  * that |v| >= eps always gives |c| >= 2 (rounding is monotone) and fr_quinn_band gives
  * exactly (1) outside the band, with no test: |c| mun >= 2 mun, so the inner difference is
- * past the bound. One ulp always suffices (tests/test_law.c); eps >= DBL_MIN keeps k finite. */
+ * past the bound. One ulp always suffices (tests/law/test_law.c); eps >= DBL_MIN keeps k finite. */
 static inline double fr_band_scale(double eps)
 {
     double k = 2.0 / eps;

@@ -6,7 +6,7 @@
  * the paper's method, is GSL's rk4 with step 2 dt: `substeps` = 2.
  *
  * The real-axis bounds were measured by applying each GSL stepper with a fixed step to
- * y' = -y (tests/test_integrator.c checks them) and rounded down: rk2 is Kutta's third-order
+ * y' = -y (tests/ode/test_integrator.c checks them) and rounded down: rk2 is Kutta's third-order
  * scheme (2.51), rk4 the classical one per half step (2.785), rkf45 3.67, rkck 3.73,
  * rk8pd 5.16. The imaginary-axis bounds likewise, on y' = i y, where the amplification per
  * step reaches 1 + 1e-4: rk2 1.73, rk4 2.83 per half step, rkf45 0.71, rkck 0.88 (the two
@@ -16,13 +16,13 @@
  * The step guard (step_guard.c) uses a third column, the stick-zone bound on dt*lambda. |R(-z)| <= 1
  * is necessary but not sufficient there: the zone is linear only for |zdot - xi| < eps/2, and a
  * stage that overshoots it meets the saturated (weaker) force, so the step is no longer the
- * linear one. Measured with tests/test_guard.c's sweep (the three systems; (3), tanh and (4);
+ * linear one. Measured with tests/ode/test_guard.c's sweep (the three systems; (3), tanh and (4);
  * both partitions; mun up to (10, 5)), rkf45, whose stages overshoot most (largest stage
  * |Y_i/y0| at z = 2.78: rkf45 9.7, rkck 3.8, rk8pd 1.0), puts energy in from dt*lambda = 2.5
  * (two blocks, mun = (10, 5), eps = 0.02, (4), consistent: 0.58 of 3.4) and leaves a stick from
  * 2.77 (oscillator, mun = 3, eps = 0.05, (3)); at 2.25 it passes everywhere: it gets 2.2.
  * rk8pd, whose |R(-z)| is close to 1 over the last part of its interval, lets the stick zone's
- * velocity ring: the structure sweep (tests/test_guard_structure.c: the paper's oscillator as a
+ * velocity ring: the structure sweep (tests/ode/test_guard_structure.c: the paper's oscillator as a
  * structure, eps = 0.05, under ground motion) leaves the stick from dt*lambda = 4.75 under (3)
  * (near-stick fraction 0 instead of 0.195; 0.19 at 4.7) and at 5.1 under tanh (0.081 for
  * 0.132); it gets 4.5. For the others the first failure lies beyond the real-axis bound (rk2

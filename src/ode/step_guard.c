@@ -106,7 +106,7 @@ static int refuse_reversal(const struct fr_guard_run *run, struct fr_error *err,
  * So the step is stable for (dt omega/2)^2 + dt c < 1: dt omega < 2 undamped (the three-term
  * recurrence), dt lambda < 1 in the linear stick zone (where f_eq screens the spring: c = lambda,
  * omega = 0), and dt < 2/(c + sqrt(c^2 + omega^2)) in between. The friction-reversal bound is
- * kept for the laws that jump only: tests/test_guard.c's sweep finds no energy put in by (3),
+ * kept for the laws that jump only: tests/ode/test_guard.c's sweep finds no energy put in by (3),
  * tanh or (4) up to the linear bound (dt omega up to 2 sqrt(1 - h)), while (1) and (2) put it in
  * from dt omega = 1.36 (two blocks, the paper's eps: 0.12 of an energy scale 3.4; the
  * oscillator from 1.41), a reversal's whole swing within one step.
@@ -142,7 +142,7 @@ static int check_central(const struct fr_guard_run *run, struct fr_error *err, c
  * explicit damping) bound the step's stability, (dt omega/2)^2 + dt c < FR_CENTRAL_STEP_BOUND
  * (its margin as above). Energy is another matter: where dt lambda >= FR_CENTRAL_STEP_BOUND the
  * step no longer resolves law (4)'s band, (4) reverses within one step like a law that jumps,
- * and the reversal bound applies. Measured without it (tests/test_guard.c's sweep): the
+ * and the reversal bound applies. Measured without it (tests/ode/test_guard.c's sweep): the
  * oscillator with eps = 0.02 gained 0.45 of an energy scale of 3.8 at dt omega = 1.9, and with
  * mun = 3, eps = 0.05 from dt omega = 1.42; the paper's eps = 2 dt (dt lambda = 1) gained from
  * dt omega = 1.71. With the band resolved, dt lambda below the explicit scheme's own stick-zone

@@ -66,7 +66,7 @@ struct prob_hold {
     double dt, eps;     /* s, m/s (> 0) */
     double steps;       /* classical steps at most (even, >= 2) */
 };
-/* The block of tests/test_hold.c: M = 2.385 kg, g = 9.81, mu = 0.5385, phi = 0.6180339887,
+/* The block of tests/law/test_hold.c: M = 2.385 kg, g = 9.81, mu = 0.5385, phi = 0.6180339887,
  * tan(theta0) = 0.8 mu (the load at 0.8 of the bound), kappa = 0, law quinn, dt = 1e-4,
  * eps = 2e-3, 1e5 steps. */
 struct prob_hold prob_hold_defaults(void);

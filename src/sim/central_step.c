@@ -20,7 +20,7 @@
  * of kinetic energy, so E + D balances the forcing's work to the scheme's spring-energy error.
  * The trapezoid of D' = -w zdot.f that the right-hand side returns would see v*, which in the
  * stick zone overshoots: at the paper's eps = 2 dt it overcounted D by 1.1 of an energy scale
- * of 3.8 on the unforced oscillator (law (3), dt = 0.71; tests/test_guard.c's balance).
+ * of 3.8 on the unforced oscillator (law (3), dt = 0.71; tests/ode/test_guard.c's balance).
  * So the stepper reads the friction the right-hand side leaves in the simulation
  * (sim_internal.h): it serves fricreg_sim only.
  *

@@ -11,7 +11,7 @@
  * as across iterations. Every vector is written before it is read within a call (valgrind
  * holds the built solver to that), CHOLMOD's analysis depends on the pattern alone and its
  * factorization on the values alone: a kept solver gives the built one's results, bit for
- * bit (tests/test_contact_step.c). */
+ * bit (tests/structure/test_contact_step.c). */
 #include <stdlib.h>
 #include <string.h>
 

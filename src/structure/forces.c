@@ -24,7 +24,7 @@ int fr_structure_contact_forces(fricreg_structure *s, gsl_vector *f)
     int status = fricreg_ctx_eval(s->ctx, s->m, s->zdot->data, s->afree->data, f->data, NULL);
     /* The context's inputs are the structure's own state, from validated data: one that is
      * not finite (or an f_eq beyond range) means the state overflowed, e.g. a finite dt of
-     * 1e200 (tests/test_bad_input.c), which the headers call FRICREG_EDIVERGED. */
+     * 1e200 (tests/reliability/test_bad_input.c), which the headers call FRICREG_EDIVERGED. */
     return status == FRICREG_ENONFINITE ? FRICREG_EDIVERGED : status;
 }
 

@@ -3127,7 +3127,7 @@ END_TEST
 
 /* A fit of the modal Iwan model (fricreg_fit.h): levels, deviations, beta fixed, a run of 4
  * starts; the view is the fit's parameters, covariance and residuals (or the getters' statuses
- * where there is none) and a further eval. The levels: tests/test_fit.c's joint at 6
+ * where there is none) and a further eval. The levels: tests/fit/test_fit.c's joint at 6
  * amplitudes, made by fricreg_fit_eval outside the armed hook. */
 #define FIT_NL 6
 static double fit_amp[FIT_NL], fit_freq[FIT_NL], fit_zeta[FIT_NL], fit_sd_f[FIT_NL],

@@ -2,8 +2,10 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # The mutants of a list that guard what changed since REF (tests/changed_files.sh: a commit,
 # "landed", the last stop that landed, or "release", the last release): those whose file changed, whose tests' sources changed
-# (tests/test_<name>.c; tests/alloc/test_alloc_failure.c for alloc_failure_*; tests/tsan.sh and
-# tests/test_threads.c for tsan), or whose entry in the list is new or edited since REF (its
+# (tests/<module>/test_<name>.c, in the folder of the module it tests; tests/alloc/
+# test_alloc_failure.c for alloc_failure_*; tests/tsan.sh and tests/reliability/test_threads.c
+# for tsan; the program's source for hb_stability_sweeps and hb_march_orbit, entries of one
+# case of test_hb_stability and test_hb_march), or whose entry in the list is new or edited since REF (its
 # lines, comments aside, are not in the list as it was at REF). tests/mutation/run.sh
 # --changed-since runs only these.
 #
@@ -40,10 +42,11 @@ entries <"$list" | while IFS= read -r entry; do
     for t in $tests; do
         [ -z "$why" ] || break
         case $t in
-        tsan) sources="tests/tsan.sh tests/test_threads.c" ;;
+        tsan) sources="tests/tsan.sh tests/reliability/test_threads.c" ;;
         alloc_failure_*) sources=tests/alloc/test_alloc_failure.c ;;
-        hb_stability_sweeps) sources=tests/test_hb_stability.c ;;
-        *) sources=tests/test_$t.c ;;
+        hb_stability_sweeps) sources=tests/floquet/test_hb_stability.c ;;
+        hb_march_orbit) sources=tests/hb/test_hb_march.c ;;
+        *) sources=$(cd "$src" && ls -d tests/*/test_"$t".c 2>/dev/null) ;;
         esac
         for f in $sources; do
             changed "$f" && why="its test's source $f changed"

@@ -18,7 +18,7 @@
 #include "fricreg_sim.h"
 #include "fricreg_structure.h"
 
-#include "../examples/building/building_model.h"
+#include "../../examples/building/building_model.h"
 
 #define N BUILDING_STOREYS
 #define NREC (BUILDING_RECORD_STEPS + 1)

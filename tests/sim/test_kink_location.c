@@ -4,7 +4,7 @@
  *
  * Where the expected values come from:
  *   - the two blocks (paper defaults, Eqs. (7)), eps = 1e-6: D on belt cycle 4 = 1.7355132
- *     within 3e-7 (tests/test_twoblock_adaptive.c derives it: RK4 extrapolated in eps, rkf45
+ *     within 3e-7 (tests/sim/test_twoblock_adaptive.c derives it: RK4 extrapolated in eps, rkf45
  *     and rk8pd at rtol 1e-8, msbdf at rtol 1e-10 and 1e-11); the stick fractions of cycle 4,
  *     0.31816 and 0.42990, from msbdf at rtol 1e-10 / atol 1e-12 and rtol 1e-11 / atol 1e-13
  *     (0.3181419 / 0.4299036 and 0.3181588 / 0.4299031), without kink location;

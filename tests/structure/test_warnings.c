@@ -28,7 +28,7 @@
 #include "fricreg_sim.h"
 #include "fricreg_structure.h"
 
-#include "../examples/building/building_model.h"
+#include "../../examples/building/building_model.h"
 
 #define N BUILDING_STOREYS
 

@@ -5,7 +5,7 @@
  * Where the expected values come from:
  *   - the two blocks (paper defaults, Eqs. (7)) at eps = 1e-6: D on belt cycle 4 = 1.7355132
  *     within 3e-7 and the stick fractions of cycle 4, 0.31816 and 0.42990, as derived in
- *     tests/test_kink_location.c (RK4 extrapolated in eps; rkf45, rk8pd, msbdf at rtol 1e-8 …
+ *     tests/sim/test_kink_location.c (RK4 extrapolated in eps; rkf45, rk8pd, msbdf at rtol 1e-8 …
  *     1e-11);
  *   - the two blocks at eps = 1e-4: D on cycle 4 = 1.7354975267 (msbdf and rkf45 at rtol 1e-11,
  *     atol 1e-13, test_kink_location.c);

@@ -3,7 +3,7 @@
  * (fricreg_hb_nma_harmonic_energy, fricreg_hb_nma_modal_participation; fricreg_hb.h) and where
  * a harmonic k ω crosses another linear mode's frequency (the special points of type
  * FRICREG_HB_NMA_CROSSING, fricreg_hb_nma_special_points, fricreg_hb_nma_special_point), on
- * tests/test_hb_nma_fold.c's two-mass model: dof 1 grounded by k1 = 1, coupled by kc = 1/4 to
+ * tests/nma/test_hb_nma_fold.c's two-mass model: dof 1 grounded by k1 = 1, coupled by kc = 1/4 to
  * dof 2, grounded by k2 = 1/5 and a Jenkins element kt, μN = 1, unit masses, no viscous damping,
  * H = 3. With kt = 10 its backbone (mode 0) folds twice in the
  * amplitude, at a = 4.4324 and 4.4168.
