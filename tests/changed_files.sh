@@ -1,7 +1,8 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-3.0-or-later
 # The files changed since a reference commit, one per line (paths from the top of the tree):
-# the commits since, and what the work tree adds (changed, staged or untracked files). The
+# the commits since, and what the work tree adds (changed, staged or untracked files); a file
+# only moved, or a C file whose comments alone changed, is left out. The
 # release tier's changed scope (FRICREG_RELEASE_SCOPE=changed) runs its slow parts only where
 # they guard these files (tests/mutation/run.sh --changed-since).
 #
@@ -57,7 +58,31 @@ elif [ "$ref" != landed ]; then
         exit 1
     }
 fi
-files=$(git -C "$root" diff --name-only "$commit" --) &&
+# A file moved without a change (git's rename at 100 % similarity), or a C file whose code is
+# the same once its comments are gone (the compiler's preprocessor strips them; runs of white
+# space count as one), is not a change: what it guards, or what guards it, is what it was at
+# REF (a regrouping of tests/ moves files and rewrites the paths their comments name).
+work=$(mktemp -d "${TMPDIR:-/tmp}/fricreg-changed.XXXXXX") || exit 1
+trap 'rm -rf "$work"' EXIT
+code() { # FILE: its C code without comments, or nothing when the compiler cannot read it
+    "${CC:-cc}" -fpreprocessed -dD -E -P -x c "$1" 2>/dev/null | tr -s ' \t\n' '  '
+}
+same_code() { # OLD NEW: whether OLD at the commit and NEW in the work tree hold the same C code
+    case $2 in *.c | *.h) ;; *) return 1 ;; esac
+    [ -f "$root/$2" ] && git -C "$root" show "$commit:$1" >"$work/old" 2>/dev/null || return 1
+    code "$work/old" >"$work/old.code" && code "$root/$2" >"$work/new.code" &&
+        [ -s "$work/old.code" ] && cmp -s "$work/old.code" "$work/new.code"
+}
+tab=$(printf '\t')
+status=$(git -C "$root" diff --name-status -M "$commit" --) &&
+    files=$(printf '%s\n' "$status" | while IFS=$tab read -r st a b; do
+        case $st in
+        R100) continue ;;
+        R* | C*) old=$a new=$b ;;
+        *) old=$a new=$a ;;
+        esac
+        same_code "$old" "$new" || printf '%s\n' "$new"
+    done) &&
     untracked=$(git -C "$root" ls-files --others --exclude-standard) || {
     echo "git diff against $commit failed" >&2
     exit 1

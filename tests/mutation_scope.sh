@@ -4,7 +4,8 @@
 # its own (no tags), tests/changed_files.sh finds the last release by its VERSION (not a
 # development X.Y.90) and the stop that landed by .ci/landed (the release when it names no
 # commit on the way to HEAD), and tests/mutation/select.sh selects a mutant when its file
-# changed, when its test's source changed, when its entry is new, and no other; it gives up
+# changed, when its test's source changed, when its entry is new, and no other (a file moved
+# unchanged, or a C file whose comments alone changed, is no change); it gives up
 # (the run is then full) without git, in a shallow clone and without a release.
 # Usage: mutation_scope.sh SOURCE_DIR
 command -v git >/dev/null 2>&1 || { echo "SKIP: no git"; exit 77; }
@@ -52,6 +53,12 @@ check "a new entry is selected" "m-a m-c" "$(selected "$t")"
 sed -i 's#^sed s/x/y/$#sed s/x/z/#' "$t/tests/mutation/mutants.txt"
 check "an edited entry is selected" "m-a m-b m-c" "$(selected "$t")"
 g checkout -q -- tests/mutation/mutants.txt
+echo 'b /* a comment that names no code */' >"$t/src/b.c"
+check "a C file whose comments alone changed selects nothing more" "m-a" "$(selected "$t")"
+g checkout -q -- src/b.c
+mkdir -p "$t/tests/z" && g mv tests/y/test_y.c tests/z/test_y.c
+check "a test source moved unchanged selects nothing more" "m-a" "$(selected "$t")"
+g mv tests/z/test_y.c tests/y/test_y.c
 check "a commit as REF" "" "$(selected "$t" HEAD)"
 # "landed": the commit .ci/landed names, else the release
 mkdir -p "$t/.ci"
