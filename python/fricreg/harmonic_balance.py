@@ -746,8 +746,9 @@ class HarmonicBalance:
         """A mode's frequency and damping ratio by quasi-static modal analysis
         (``fricreg_hb_qsma_at``; Lacayo and Allen, MSSP 118 (2019) 133-157): the static
         loading path along M φ_k with the elements' hysteresis, exact for Jenkins and Iwan
-        elements, and Masing's rule for the loop; the cheap route beside :meth:`backbone`
-        (EPMC) for one mode with Masing behaviour (docs/identification.md, "QSMA").
+        elements, marched in 256 to 512 steps where contact_3d elements are, and Masing's rule
+        for the loop; the cheap route beside :meth:`backbone` (EPMC) for one mode with Masing
+        behaviour (docs/identification.md, "QSMA").
 
         Parameters
         ----------
@@ -770,10 +771,12 @@ class HarmonicBalance:
         ------
         fricreg.InputError
             Bad amplitudes, a mode out of range, an element type QSMA does not take (lift-off,
-            contact_3d, marched types: the message names it), a parameter it refuses.
+            marched types: the message names it), contacts whose preloads at rest open one
+            another, a parameter it refuses.
         fricreg.Error
             ``FRICREG_ESINGULAR``: macroslip below an amplitude (the message gives it), or a
-            repeated stuck mode.
+            repeated stuck mode; ``FRICREG_EWORK``: with contact_3d elements, a static
+            equilibrium Newton's method does not find (the message gives the amplitude).
         """
         mode = as_integer(mode, "mode")
         a = as_doubles(amplitudes, "amplitudes", ndim=1)

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* qsma.c — quasi-static modal analysis's backbone (fricreg_hb_qsma_at, fricreg_hb_qsma.h): the
  * arguments' checks, the model and its mode, the loading path through the amplitudes
- * (qsma_path.c), and the secant frequency and Masing's damping from it (Lacayo & Allen, MSSP
+ * (qsma_path.c's exact one, or qsma_march.c's where 3-D contacts are), and the secant frequency and Masing's damping from it (Lacayo & Allen, MSSP
  * 118 (2019) 133–157):
  *
  *     ω² = λ(a)/a,   D = 8 ∫_0^a λ ds − 4 a λ(a),   ζ = ζ_k + D / (2π λ(a) a). */
@@ -45,6 +45,26 @@ int fr_qsma_setup(fricreg_hb *hb, const char *fn, size_t mode, struct fr_qsma **
     return status;
 }
 
+int fr_qsma_run(fricreg_hb *hb, const char *fn, struct fr_qsma *s, size_t na, const double *amp,
+                const struct fr_qsma_sens *p, double *work, struct fr_qsma_out *out)
+{
+    if (s->ncon > 0) {
+        int status = fr_qsma_march(hb, fn, s, na, amp, p, out);
+        /* a contact's friction can turn the static load back: no secant frequency there */
+        for (size_t i = 0; i < na && status == FRICREG_OK; i++)
+            if (!(out->lambda[i] > 0.0))
+                return fr_fail(hb, FRICREG_EINVAL,
+                               "%s: the static path's load factor lambda = %g at the modal "
+                               "amplitude %g is not positive: no secant frequency",
+                               fn, out->lambda[i], amp[i]);
+        return status;
+    }
+    int status = fr_qsma_path(hb, fn, s, na, amp, p, work, out);
+    for (size_t i = 0; i < na && status == FRICREG_OK && out->dint_da != NULL; i++)
+        out->dint_da[i] = out->lambda[i]; /* the integral exact */
+    return status;
+}
+
 int fricreg_hb_qsma_at(fricreg_hb *hb, size_t mode, size_t n, const double amplitude[],
                        double omega[], double zeta[])
 {
@@ -68,7 +88,7 @@ int fricreg_hb_qsma_at(fricreg_hb *hb, size_t mode, size_t n, const double ampli
         return fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for %zu amplitudes", fn, n);
     }
     struct fr_qsma_out out = {.lambda = buf, .integral = buf + n, .slope = buf + 2 * n};
-    status = fr_qsma_path(hb, fn, s, n, amplitude, NULL, buf + 3 * n, &out);
+    status = fr_qsma_run(hb, fn, s, n, amplitude, NULL, buf + 3 * n, &out);
     for (size_t i = 0; i < n && status == FRICREG_OK; i++) {
         double a = amplitude[i], l = out.lambda[i], D = 8.0 * out.integral[i] - 4.0 * a * l;
         omega[i] = sqrt(l / a);

@@ -21,6 +21,7 @@ struct fr_qsma {
     double *x, *v;            /* [n]: the displacement and dx/dλ on the current piece */
     double *ur, *vr, *kr;     /* [m]: J x, J v, each row's stuck stiffness */
     size_t *row, *elem, *loc; /* [nsl]: its row, element and place among the element's sliders */
+    size_t ncon, *con;        /* the 3-D contacts: how many, [ncon] their elements */
     double *ks, *fs;          /* [nsl]: its stiffness and slip force */
     double *z;                /* [nsl]: its slip (0 until it slips; set when it sticks again) */
     int *sigma;               /* [nsl]: 0 stuck, ±1 slipping in that direction */
@@ -29,27 +30,32 @@ struct fr_qsma {
 };
 
 /* The sensitivities' inputs (qsma_dlambda.c): np parameters, role[np nsl] what each is to
- * each slider (0 none, 1 its stiffness, 2 its slip force), w[np n] M dφ_k/dp (0 if p does not
+ * each slider (0 none, 1 its stiffness, 2 its slip force) and crole[np ncon] to each 3-D
+ * contact (enum fr_qsma_role), w[np n] M dφ_k/dp (0 if p does not
  * move φ_k); and their state along the path: dz[np nsl] each slider's slip's derivative (0 but
  * for a slider stuck again), dur[np m] the last event's J x* differentiated, dx[np n]
  * scratch. */
 struct fr_qsma_sens {
     size_t np;
-    const signed char *role;
+    const signed char *role, *crole;
     const double *w;
     double *dz, *dur, *dx;
 };
 
 /* The path's results at each target amplitude (qsma_path.c): λ, ∫_0^a λ ds, dλ/dq on the
- * piece there, and with sensitivities dλ/dp [np] and d∫/dp [np] per target. */
+ * piece there, d∫/da (λ where the integral is exact; the marched path's trapezoid moves with
+ * its last point), and with sensitivities dλ/dp [np] and d∫/dp [np] per target. */
 struct fr_qsma_out {
-    double *lambda, *integral, *slope; /* [na] each */
-    double *dlambda, *dintegral;       /* [na np] each, or NULL */
+    double *lambda, *integral, *slope, *dint_da; /* [na] each */
+    double *dlambda, *dintegral;                 /* [na np] each, or NULL */
 };
 
-/* The model of the driver (every element jenkins or iwan, at most FR_QSMA_MAX_DOFS dofs)
- * into a new s. FRICREG_OK, FRICREG_EINVAL (an element of another type, too many dofs, no
- * slider), FRICREG_ENOMEM (message recorded, with fn). fr_qsma_free(NULL) is a no-op. */
+/* The model of the driver (every element jenkins, iwan or contact_3d, at most
+ * FR_QSMA_MAX_DOFS dofs) into a new s, with each row's stuck stiffness in kr (a contact closed
+ * at rest, n0 > 0: kt on its tangential rows where mu > 0, kn on its normal one; as
+ * fricreg_hb_nma's linear mode). FRICREG_OK, FRICREG_EINVAL (an element of another type, too
+ * many dofs, no slider nor contact), FRICREG_ENOMEM (message recorded, with fn).
+ * fr_qsma_free(NULL) is a no-op. */
 int fr_qsma_create(fricreg_hb *hb, const char *fn, struct fr_qsma **out);
 void fr_qsma_free(struct fr_qsma *s);
 
@@ -58,6 +64,10 @@ void fr_qsma_free(struct fr_qsma *s);
  * a pivot squared is not above 1e-14 of the largest diagonal entry. */
 void fr_qsma_assemble(const struct fr_qsma *s, const double *J, double *A);
 int fr_qsma_tangent(struct fr_qsma *s, const double *J);
+
+/* LAPACK's LU (dgetrf) of A, order N, column-major, in place: FRICREG_OK, or FRICREG_ESINGULAR
+ * at a pivot not above 1e-14 of A's largest entry (or an entry not finite). */
+int fr_qsma_lu(double *A, size_t N, int *piv);
 
 /* The stuck mode k of K_0 = K + J^T diag(kr) J (the sliders' stiffnesses summed per row) with
  * M, by LAPACK's dsygvd: φ_k mass-normalized, its largest entry positive (as fricreg_hb_nma's),
@@ -92,6 +102,68 @@ void fr_qsma_devent(const struct fr_qsma *s, const struct fr_qsma_sens *p, const
  * FRICREG_ENONFINITE (message recorded, with fn). */
 int fr_qsma_path(fricreg_hb *hb, const char *fn, struct fr_qsma *s, size_t na, const double *amp,
                  const struct fr_qsma_sens *p, double *work, struct fr_qsma_out *out);
+
+/* The elements as the marched path steps them (qsma_units.c): a slider (dim 1: kt = k_s, phi
+ * its slip force) or a 3-D contact (dim 2, its normal row after its two tangential ones: kt,
+ * mu, kn, n0), its first row of J and its state's place st; what one step records of it; and
+ * what a parameter is to it (a slider's stiffness is KT, its slip force BOUND, a contact's mu
+ * BOUND). */
+enum fr_qsma_mode { FR_QSMA_STICK, FR_QSMA_SLIP, FR_QSMA_OPEN };
+enum fr_qsma_role {
+    FR_QSMA_ROLE_NONE,
+    FR_QSMA_ROLE_KT,
+    FR_QSMA_ROLE_BOUND,
+    FR_QSMA_ROLE_KN,
+    FR_QSMA_ROLE_N0
+};
+struct fr_qsma_unit {
+    size_t row, st;
+    int dim;
+    double kt, phi, mu, kn, n0;
+};
+struct fr_qsma_record {
+    int mode;                      /* enum fr_qsma_mode */
+    double d[2], n[2], f[2], t[4]; /* u − w_old, its direction, the tangential force, tangent */
+    double g, N;                   /* a contact's normal displacement and force */
+};
+
+static inline size_t fr_qsma_unit_rows(const struct fr_qsma_unit *un)
+{
+    return un->dim == 2 ? 3 : 1;
+}
+
+/* One step of unit un at u[rows] from its state wold[dim]: its forces f[rows], df/du D[rows
+ * rows] (row-major, at fixed wold), its state after the step w[dim], and the record the
+ * derivatives below need. */
+void fr_qsma_unit_step(const struct fr_qsma_unit *un, const double *u, const double *wold,
+                       double *f, double *D, double *w, struct fr_qsma_record *rec);
+
+/* The step's force moved by a parameter of role (enum fr_qsma_role) and the state before it by
+ * dwold[dim], at fixed u: df[rows]. */
+void fr_qsma_unit_dforce(const struct fr_qsma_unit *un, const struct fr_qsma_record *rec, int role,
+                         const double *dwold, double *df);
+
+/* The state after the step moved by du[rows], dwold[dim] and a parameter of role: dw[dim]. */
+void fr_qsma_unit_dstate(const struct fr_qsma_unit *un, const struct fr_qsma_record *rec, int role,
+                         const double *du, const double *dwold, double *dw);
+
+/* The loading path marched in the modal amplitude (qsma_march.c), for a model with 3-D
+ * contacts: from the rest state under the contacts' preloads, steps of h = 2^⌊log2(a_max/256)⌋
+ * in q, each a Newton solve of the bordered static equilibrium with the elements' return
+ * mappings from the step before (backward Euler), and each target reached by a step of its own
+ * from the grid point below it. Results into out as fr_qsma_path's, the integral by the
+ * trapezoid over the steps; with p (or NULL) the sensitivities of that discrete path, exact:
+ * forward, through the states. FRICREG_OK, FRICREG_EINVAL (the preloads at rest open a contact
+ * closed by its n0, or close one that n0 leaves open), FRICREG_ESINGULAR (the rest state's
+ * stiffness, or Newton's bordered matrix), FRICREG_EWORK (a step that Newton does not
+ * converge in 12 halvings), FRICREG_ENOMEM (message recorded, with fn). */
+int fr_qsma_march(fricreg_hb *hb, const char *fn, struct fr_qsma *s, size_t na, const double *amp,
+                  const struct fr_qsma_sens *p, struct fr_qsma_out *out);
+
+/* The path for a public call (qsma.c): fr_qsma_march with 3-D contacts, else fr_qsma_path;
+ * out->dint_da (where not NULL) set by either. */
+int fr_qsma_run(fricreg_hb *hb, const char *fn, struct fr_qsma *s, size_t na, const double *amp,
+                const struct fr_qsma_sens *p, double *work, struct fr_qsma_out *out);
 
 /* The model and its mode k for a public call (qsma.c): fr_qsma_create, then fr_qsma_mode. */
 int fr_qsma_setup(fricreg_hb *hb, const char *fn, size_t mode, struct fr_qsma **out);

@@ -76,9 +76,6 @@ static void loads(struct fr_qsma *s)
 int fr_qsma_mode(fricreg_hb *hb, const char *fn, size_t mode, struct fr_qsma *s)
 {
     size_t n = s->n;
-    memset(s->kr, 0, s->m * sizeof *s->kr);
-    for (size_t k = 0; k < s->nsl; k++)
-        s->kr[s->row[k]] += s->ks[k];
     double *buf = malloc((2 * n * n + n) * sizeof *buf);
     if (buf == NULL)
         return fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for the linear modes of %zu dofs", fn, n);
@@ -110,7 +107,7 @@ int fr_qsma_mode(fricreg_hb *hb, const char *fn, size_t mode, struct fr_qsma *s)
 static int bordered(const struct fr_qsma *s, const double *J, double *A, int *piv)
 {
     size_t n = s->n, N = n + 1;
-    double *K0 = A + N * N, w2 = s->omega_k * s->omega_k, amax = 0.0;
+    double *K0 = A + N * N, w2 = s->omega_k * s->omega_k;
     fr_qsma_assemble(s, J, K0);
     for (size_t j = 0; j < n; j++) {
         for (size_t i = 0; i < n; i++)
@@ -119,14 +116,7 @@ static int bordered(const struct fr_qsma *s, const double *J, double *A, int *pi
         A[n * N + j] = s->b[j];
     }
     A[n * N + n] = 0.0;
-    for (size_t k = 0; k < N * N; k++)
-        amax = fmax(amax, fabs(A[k]));
-    int nn = (int)N, info = 0;
-    dgetrf_(&nn, &nn, A, &nn, piv, &info);
-    for (size_t i = 0; i < N && info == 0; i++)
-        if (!(fabs(A[i * N + i]) > 1e-14 * amax))
-            info = 1;
-    return info == 0 ? FRICREG_OK : FRICREG_ESINGULAR;
+    return fr_qsma_lu(A, N, piv);
 }
 
 int fr_qsma_shape(fricreg_hb *hb, const char *fn, const struct fr_qsma *s, size_t np,

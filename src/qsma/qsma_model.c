@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* qsma_model.c — the driver's model as quasi-static modal analysis takes it (qsma_internal.h):
- * M, K and C dense (a sparse model's spread out), its elements as sliders, and the tangent
- * K_t = K + J^T diag(k_r) J of the sliders stuck, factored by LAPACK's Cholesky. Only jenkins
- * and iwan elements: their sliders load piecewise linearly, so that the path is exact; the
- * others (lift-off, 3-D contact, marched laws) are refused by name. */
+ * M, K and C dense (a sparse model's spread out), its elements as sliders and 3-D contacts, and
+ * the tangent K_t = K + J^T diag(k_r) J of the sliders stuck, factored by LAPACK's Cholesky.
+ * Jenkins and iwan elements load piecewise linearly, so that their path is exact (qsma_path.c);
+ * 3-D contacts are marched (qsma_march.c); the others (lift-off, marched laws) are refused by
+ * name. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,7 +18,7 @@ void fr_qsma_free(struct fr_qsma *s)
 {
     if (s == NULL)
         return;
-    FR_FREE_ALL(s->K, s->row, s->sigma);
+    FR_FREE_ALL(s->K, s->row, s->sigma, s->con);
     free(s);
 }
 
@@ -44,28 +45,35 @@ static void densify(const fricreg_hb *hb, struct fr_qsma *s)
             s->C[k] = hb->a0 * s->M[k] + hb->a1 * s->K[k];
 }
 
-/* Every element jenkins or iwan (one row of J, sliders); the first that is not, named. */
+/* Every element jenkins, iwan (one row of J, sliders) or contact_3d; the first that is not,
+ * named. */
 static int check_kinds(fricreg_hb *hb, const char *fn)
 {
     static const char *const names[] = {"", "jenkins/iwan", "jenkins_normal/iwan_normal",
                                         "contact_3d"};
     for (size_t e = 0; e < hb->count; e++)
-        if (hb->kind[e] != FR_HB_SLIDERS)
+        if (hb->kind[e] != FR_HB_SLIDERS && hb->kind[e] != FR_HB_CONTACT_3D)
             return fr_fail(hb, FRICREG_EINVAL,
                            "%s: element %zu is of type %s: quasi-static modal analysis takes "
-                           "jenkins and iwan elements only (fricreg_hb_nma for the others)",
+                           "jenkins, iwan and contact_3d elements only (fricreg_hb_nma for the "
+                           "others)",
                            fn, e,
                            hb->kind[e] == FR_HB_MARCH ? fricreg_element_name(hb->etype[e])
                                                       : names[hb->kind[e]]);
     return FRICREG_OK;
 }
 
-/* The sliders of positive slip force, with their rows, elements and places. */
+/* The sliders of positive slip force, with their rows, elements and places; the contacts. */
 static void list_sliders(const fricreg_hb *hb, struct fr_qsma *s)
 {
     size_t k = 0;
+    s->ncon = 0;
     for (size_t e = 0; e < hb->count; e++) {
         const double *ks, *phi;
+        if (hb->kind[e] == FR_HB_CONTACT_3D) {
+            s->con[s->ncon++] = e;
+            continue;
+        }
         size_t ns = fr_hb_sliders(hb, e, &ks, &phi);
         for (size_t j = 0; j < ns; j++)
             if (phi[j] > 0.0) {
@@ -80,7 +88,24 @@ static void list_sliders(const fricreg_hb *hb, struct fr_qsma *s)
     s->nsl = k;
 }
 
-static struct fr_qsma *alloc(size_t n, size_t m, size_t nsl)
+/* Each row's stiffness with every element stuck (a contact closed by its preload n0 > 0). */
+static void stuck_rows(const fricreg_hb *hb, struct fr_qsma *s)
+{
+    size_t me = hb->me;
+    memset(s->kr, 0, s->m * sizeof *s->kr);
+    for (size_t k = 0; k < s->nsl; k++)
+        s->kr[s->row[k]] += s->ks[k];
+    for (size_t c = 0; c < s->ncon; c++) {
+        size_t e = s->con[c], r = hb->erow[e];
+        if (!(hb->nl[2 * me + e] > 0.0))
+            continue;
+        if (hb->nl[me + e] > 0.0)
+            s->kr[r] = s->kr[r + 1] = hb->nl[e];
+        s->kr[r + 2] = hb->nl[3 * me + e];
+    }
+}
+
+static struct fr_qsma *alloc(size_t n, size_t m, size_t nsl, size_t ncon)
 {
     struct fr_qsma *s = calloc(1, sizeof *s);
     if (s == NULL)
@@ -88,7 +113,8 @@ static struct fr_qsma *alloc(size_t n, size_t m, size_t nsl)
     s->K = malloc((4 * n * n + 5 * n + 3 * m + 3 * nsl + 1) * sizeof *s->K);
     s->row = malloc((3 * nsl + 1) * sizeof *s->row);
     s->sigma = malloc((nsl + 1) * sizeof *s->sigma);
-    if (s->K == NULL || s->row == NULL || s->sigma == NULL) {
+    s->con = malloc((ncon + 1) * sizeof *s->con);
+    if (s->K == NULL || s->row == NULL || s->sigma == NULL || s->con == NULL) {
         fr_qsma_free(s);
         return NULL;
     }
@@ -121,15 +147,19 @@ int fr_qsma_create(fricreg_hb *hb, const char *fn, struct fr_qsma **out)
                        "%s: %zu dofs; quasi-static modal analysis solves the dense tangent, up "
                        "to %d dofs",
                        fn, hb->n, FR_QSMA_MAX_DOFS);
-    struct fr_qsma *s = alloc(hb->n, hb->m, hb->nsl);
+    size_t ncon = 0;
+    for (size_t e = 0; e < hb->count; e++)
+        ncon += hb->kind[e] == FR_HB_CONTACT_3D;
+    struct fr_qsma *s = alloc(hb->n, hb->m, hb->nsl, ncon);
     if (s == NULL)
         return fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for a model of %zu dofs", fn, hb->n);
     densify(hb, s);
     list_sliders(hb, s);
-    if (s->nsl == 0) {
+    if (s->nsl == 0 && s->ncon == 0) {
         fr_qsma_free(s);
         return fr_fail(hb, FRICREG_EINVAL, "%s: no slider of positive slip force", fn);
     }
+    stuck_rows(hb, s);
     *out = s;
     return FRICREG_OK;
 }
@@ -164,4 +194,17 @@ int fr_qsma_tangent(struct fr_qsma *s, const double *J)
     memcpy(s->v, s->b, n * sizeof *s->v);
     dpotrs_("L", &nn, &one, s->Kt, &nn, s->v, &nn, &info, 1);
     return FRICREG_OK;
+}
+
+int fr_qsma_lu(double *A, size_t N, int *piv)
+{
+    double amax = 0.0;
+    for (size_t k = 0; k < N * N; k++)
+        amax = fmax(amax, fabs(A[k]));
+    int nn = (int)N, info = 0;
+    dgetrf_(&nn, &nn, A, &nn, piv, &info);
+    for (size_t i = 0; i < N && info == 0; i++)
+        if (!(fabs(A[i * N + i]) > 1e-14 * amax))
+            info = 1;
+    return info == 0 && isfinite(amax) ? FRICREG_OK : FRICREG_ESINGULAR;
 }

@@ -33,6 +33,14 @@ static int check_element(fricreg_hb *hb, const char *fn, const struct params *P,
     for (size_t e = e0; e < e0 + ne; e++) {
         const double *ks, *phi;
         size_t ns = fr_hb_sliders(hb, e, &ks, &phi);
+        if (hb->kind[e] == FR_HB_CONTACT_3D) { /* kt, mu, kn, n0 (HB's normal law: no gap) */
+            if (j > 3)
+                return fr_fail(hb, FRICREG_EINVAL,
+                               "%s: parameter %zu: index %zu, contact_3d element %zu has kt, mu, "
+                               "kn, n0 (0 to 3)",
+                               fn, k, j, e);
+            continue;
+        }
         if (j >= 2 * ns)
             return fr_fail(hb, FRICREG_EINVAL,
                            "%s: parameter %zu: index %zu, element %zu has %zu parameters", fn, k, j,
@@ -69,15 +77,23 @@ static int check_param(fricreg_hb *hb, const char *fn, const struct params *P, s
     }
 }
 
-/* Each element parameter's role to each slider (role[np nsl]) and d k_r/dp (dk[np m]); *shape
- * whether a stiffness moves K_0. */
-static void roles(const fricreg_hb *hb, const struct fr_qsma *s, const struct params *P,
-                  signed char *role, double *dk, int *shape)
+static int in_range(const struct params *P, size_t k, size_t e)
 {
-    for (size_t k = 0; k < P->np; k++)
-        for (size_t j = 0; j < s->nsl && P->kind[k] == FRICREG_HB_NMA_PARAM_ELEMENT; j++) {
+    return P->kind[k] == FRICREG_HB_NMA_PARAM_ELEMENT && e >= P->first[k] &&
+           e - P->first[k] < P->count[k];
+}
+
+/* Each element parameter's role to each slider (role[np nsl]) and contact (crole[np ncon],
+ * enum fr_qsma_role) and d k_r/dp (dk[np m]); *shape whether a stiffness moves K_0. */
+static void roles(const fricreg_hb *hb, const struct fr_qsma *s, const struct params *P,
+                  signed char *role, signed char *crole, double *dk, int *shape)
+{
+    static const signed char contact_role[4] = {FR_QSMA_ROLE_KT, FR_QSMA_ROLE_BOUND,
+                                                FR_QSMA_ROLE_KN, FR_QSMA_ROLE_N0};
+    for (size_t k = 0; k < P->np; k++) {
+        for (size_t j = 0; j < s->nsl; j++) {
             size_t e = s->elem[j], ns = hb->eso[e + 1] - hb->eso[e], i = P->index[k];
-            if (e < P->first[k] || e - P->first[k] >= P->count[k] || i % ns != s->loc[j])
+            if (!in_range(P, k, e) || i % ns != s->loc[j])
                 continue;
             role[k * s->nsl + j] = i < ns ? 1 : 2;
             if (i < ns) { /* every slider of positive slip force is stuck in K_0 */
@@ -85,6 +101,23 @@ static void roles(const fricreg_hb *hb, const struct fr_qsma *s, const struct pa
                 *shape = 1;
             }
         }
+        for (size_t c = 0; c < s->ncon; c++) {
+            size_t e = s->con[c], r = hb->erow[e], i = P->index[k];
+            if (!in_range(P, k, e))
+                continue;
+            crole[k * s->ncon + c] = contact_role[i];
+            /* K_0's rows: kt where the contact sticks at rest, kn where it is closed */
+            if (i == 0 && s->kr[r] != 0.0) {
+                dk[k * s->m + r] += 1.0;
+                dk[k * s->m + r + 1] += 1.0;
+                *shape = 1;
+            }
+            if (i == 2 && hb->nl[2 * hb->me + e] > 0.0) {
+                dk[k * s->m + r + 2] += 1.0;
+                *shape = 1;
+            }
+        }
+    }
 }
 
 /* Point i's derivatives of parameter k into dw, dz. */
@@ -97,7 +130,7 @@ static void point(const struct fr_qsma *s, const struct params *P, size_t k, dou
            zf = D / (FR_TWO_PI * l * a);
     switch (P->kind[k]) {
     case FRICREG_HB_NMA_PARAM_AMPLITUDE: {
-        double lp = out->slope[i], dD = 4.0 * l - 4.0 * a * lp;
+        double lp = out->slope[i], dD = 8.0 * out->dint_da[i] - 4.0 * l - 4.0 * a * lp;
         *dw = (lp / a - l / (a * a)) / (2.0 * w);
         *dz = dD / (FR_TWO_PI * l * a) - zf * (lp * a + l) / (l * a);
         return;
@@ -121,10 +154,10 @@ static int run(fricreg_hb *hb, const char *fn, struct fr_qsma *s, size_t na, con
                const struct params *P, double *domega, double *dzeta)
 {
     size_t np = P->np, n = s->n, m = s->m, nsl = s->nsl;
-    size_t nbuf = np * (n + m + 2) + 4 * np + n + m + 3 * na + 2 * na * np + 1 +
+    size_t nbuf = np * (n + m + 2) + 4 * np + n + m + 4 * na + 2 * na * np + 1 +
                   np * (nsl + m + n); /* the path's dz, dur, dx */
     double *buf = calloc(nbuf, sizeof *buf);
-    signed char *role = calloc(np * nsl + 1, sizeof *role);
+    signed char *role = calloc(np * (nsl + s->ncon) + 1, sizeof *role);
     if (buf == NULL || role == NULL) {
         free(buf);
         free(role);
@@ -136,16 +169,23 @@ static int run(fricreg_hb *hb, const char *fn, struct fr_qsma *s, size_t na, con
                               .integral = o + na,
                               .slope = o + 2 * na,
                               .dlambda = o + 3 * na,
-                              .dintegral = o + 3 * na + na * np};
+                              .dintegral = o + 3 * na + na * np,
+                              .dint_da = o + 3 * na + 2 * na * np};
     int shape = 0, status = FRICREG_OK;
-    roles(hb, s, P, role, dk, &shape);
+    signed char *crole = role + np * nsl;
+    roles(hb, s, P, role, crole, dk, &shape);
     if (shape)
         status = fr_qsma_shape(hb, fn, s, np, dk, w, domk, dzk);
-    double *dz = o + 3 * na + 2 * na * np;
-    struct fr_qsma_sens sens = {
-        .np = np, .role = role, .w = w, .dz = dz, .dur = dz + np * nsl, .dx = dz + np * (nsl + m)};
+    double *dz = o + 4 * na + 2 * na * np;
+    struct fr_qsma_sens sens = {.np = np,
+                                .role = role,
+                                .crole = crole,
+                                .w = w,
+                                .dz = dz,
+                                .dur = dz + np * nsl,
+                                .dx = dz + np * (nsl + m)};
     if (status == FRICREG_OK)
-        status = fr_qsma_path(hb, fn, s, na, amp, &sens, work, &out);
+        status = fr_qsma_run(hb, fn, s, na, amp, &sens, work, &out);
     for (size_t i = 0; i < na && status == FRICREG_OK; i++)
         for (size_t k = 0; k < np; k++)
             point(s, P, k, amp[i], &out, i, dzk, domega + i * np + k, dzeta + i * np + k);

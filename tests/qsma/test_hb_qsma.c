@@ -17,10 +17,15 @@
  *   - a 2-dof model where a slipping slider is turned back and sticks again: the path against
  *     10^5 load steps with each slider's return mapping (an independent solve), to 1e-6;
  *   - a sparse model against the same model dense, to 1e-13;
+ *   - 3-D contacts (the marched path): a contact loaded along a line at its rest state's normal
+ *     force against the Jenkins oscillator of that slip force (the exact path), ω to 1e-12 and ζ
+ *     within the trapezoid's bound at the kink; the inclined plane against EPMC (measured,
+ *     bounded as above); the preloads' refusals;
  *   - the sensitivities against central differences of whole QSMA runs (relative step 1e-6:
  *     the path is exact, so the difference's error is its h² term and rounding), to 1e-6 of
  *     each derivative's largest magnitude, on those models, the Iwan one per slider, the 2-dof
- *     model through its slider stuck again, and the amplitude and damping parameters;
+ *     model through its slider stuck again, the inclined plane's contact (kt, mu, kn, n0; the
+ *     marched path's own derivatives), and the amplitude and damping parameters;
  *   - every status, nothing written on failure.
  *
  * HB_PRINT=1 prints the measured agreements. */
@@ -297,6 +302,69 @@ START_TEST(restick_against_load_steps)
 }
 END_TEST
 
+/* ---- 3-D contacts: the marched path ------------------------------------------------------- */
+
+/* Three unit masses, K = diag(1, 2, 3), one contact_3d element on them (x, y, normal: J = I):
+ * its lowest stuck mode moves x alone, so that the contact loads along x at the normal force
+ * of its rest state, N = 3 n0/(3 + kn) (the preload pushes the normal dof to g_0 = −n0/(3 +
+ * kn)): the Jenkins oscillator of slip force mu N. */
+static fricreg_hb *contact_line(double kt, double mu, double kn, double n0)
+{
+    const double M[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, K[9] = {1, 0, 0, 0, 2, 0, 0, 0, 3};
+    const double p[5] = {kt, mu, kn, n0, 0.0};
+    fricreg_hb *hb = NULL;
+    ck_assert_int_eq(fricreg_hb_create(3, 1, 1, &hb), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_mass(hb, 3, M), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 3, K), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_add_elements(hb, fricreg_element_lookup("contact_3d"), 1, 3, M, p),
+                     FRICREG_OK);
+    return hb;
+}
+
+/* test_hb_contact_3d.c's inclined plane (test_hb_nma_sensitivity.c's contact model): a 2-dof
+ * mass on one contact_3d element whose normal row (0.4, −0.3) couples both dofs, so that the
+ * normal force moves as the contact slides and the tangential force turns; kt = 1.5, mu = 0.4,
+ * kn = 2, n0 = 0.5 (the HB layout's order: kt, mu, kn, n0). */
+static const double PLANE_P[4] = {1.5, 0.4, 2.0, 0.5};
+static fricreg_hb *contact_plane(void)
+{
+    const double M[4] = {1.0, 0.0, 0.0, 1.2}, K[4] = {2.0, -0.3, -0.3, 1.5};
+    const double J[6] = {1.0, 0.0, 0.0, 1.0, 0.4, -0.3};
+    const double p[5] = {PLANE_P[0], PLANE_P[1], PLANE_P[2], PLANE_P[3], 0.0};
+    fricreg_hb *hb = NULL;
+    ck_assert_int_eq(fricreg_hb_create(2, 1, 5, &hb), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_mass(hb, 2, M), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 2, K), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_add_elements(hb, fricreg_element_lookup("contact_3d"), 1, 2, J, p),
+                     FRICREG_OK);
+    return hb;
+}
+
+START_TEST(contact_line_as_jenkins)
+{
+    /* The march's return mapping is exact along a line, so λ is the exact path's to rounding;
+     * its trapezoid misses the kink at the first slip by at most kt h²/8 in ∫λ (h the step,
+     * 2^floor(log2(a_max/256))), so ζ by kt h² / (2π λ a). */
+    const double kt = 2.5, mu = 0.35, kn = 4.0, n0 = 1.4, N = 3.0 * n0 / (3.0 + kn);
+    const double a[6] = {0.05, 0.19, 0.1961, 0.5, 1.7, 6.0};
+    double w[6], z[6], wj[6], zj[6];
+    fricreg_hb *hb = contact_line(kt, mu, kn, n0), *jk = oscillator(kt, mu * N, 0.0);
+    ck_assert_int_eq(fricreg_hb_qsma_at(hb, 0, 6, a, w, z), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_qsma_at(jk, 0, 6, a, wj, zj), FRICREG_OK);
+    double h = ldexp(1.0, (int)floor(log2(a[5] / 256.0))), worst = 0.0;
+    for (size_t i = 0; i < 6; i++) {
+        double lambda = wj[i] * wj[i] * a[i], bound = kt * h * h / (2.0 * pi * lambda * a[i]);
+        ck_assert_double_eq_tol(w[i], wj[i], 1e-12 * wj[i]);
+        ck_assert_double_le(fabs(z[i] - zj[i]), 1.0001 * bound + 1e-14);
+        worst = fmax(worst, fabs(z[i] - zj[i]) / bound);
+    }
+    if (print())
+        printf("contact_3d on a line: zeta within %.2f of the trapezoid's bound\n", worst);
+    fricreg_hb_free(hb);
+    fricreg_hb_free(jk);
+}
+END_TEST
+
 /* ---- Against EPMC ------------------------------------------------------------------------- */
 
 /* The largest differences of QSMA against EPMC (modal damping) at n amplitudes from a0 to a1,
@@ -379,6 +447,24 @@ START_TEST(epmc_long_chain)
     ck_assert_double_le(g.z, 0.3);
     ck_assert_double_le(g.z_abs, 9e-3);
     ck_assert_double_le(g.z_dev, 6.5e-2);
+    fricreg_hb_free(hb);
+}
+END_TEST
+
+START_TEST(epmc_contact_3d)
+{
+    fricreg_hb *hb = contact_plane();
+    light_damping(hb, 0);
+    ck_assert_int_eq(fricreg_hb_set_newton(hb, 1e-12, 50), FRICREG_OK);
+    /* from stuck (the first slip at a = 0.11) to 3, the normal force moving with the slip and
+     * the contact opening at the top. Measured: ω 3.58e-2, ζ 0.190 of EPMC's from a = 0.3 up
+     * (2.07e-2 absolute; just past the onset, where ζ is small, up to 7.8 times): the static
+     * path presses the contact one way only, where the vibration presses and relieves it in
+     * turn, so Masing's doubled curve is QSMA's assumption here, not the contact's loop */
+    struct agreement g = against_epmc("contact_3d plane", hb, 0, 0.05, 3.0, 30, 0.3);
+    ck_assert_double_le(g.w, 4.5e-2);
+    ck_assert_double_le(g.z_dev, 0.25);
+    ck_assert_double_le(g.z_abs, 2.6e-2);
     fricreg_hb_free(hb);
 }
 END_TEST
@@ -539,6 +625,22 @@ START_TEST(sensitivities_iwan)
 }
 END_TEST
 
+START_TEST(sensitivities_contact_3d)
+{
+    /* the plane from stuck (a = 0.02) through slip with the normal force moving to lift-off;
+     * the marched path's own derivatives, which the differences of whole runs see */
+    fricreg_hb *hb = contact_plane();
+    ck_assert_int_eq(fricreg_hb_set_rayleigh(hb, 0.004, 0.0), FRICREG_OK);
+    const double a[6] = {0.02, 0.15, 0.4, 0.9, 1.6, 3.0};
+    const struct par P[6] = {{ELEMENT, 0, 1, 0}, {ELEMENT, 0, 1, 1}, {ELEMENT, 0, 1, 2},
+                             {ELEMENT, 0, 1, 3}, {DAMPING, 0, 0, 1}, {AMPLITUDE, 0, 0, 0}};
+    const double p0[6] = {PLANE_P[0], PLANE_P[1], PLANE_P[2], PLANE_P[3], 0.004, 1.0};
+    check_differences("contact_3d plane", hb, 0, 6, a, 6, P, p0, 1e-6);
+    check_differences("contact_3d plane mode 1", hb, 1, 6, a, 6, P, p0, 1e-6);
+    fricreg_hb_free(hb);
+}
+END_TEST
+
 /* ---- A sparse model ---------------------------------------------------------------------- */
 
 START_TEST(sparse_as_dense)
@@ -653,16 +755,62 @@ START_TEST(refusals)
     ck_assert_double_eq_tol(w[0], sqrt(kt), 1e-14);
     ck_assert_double_eq(w[1], SENTINEL);
     fricreg_hb_free(hb);
-    /* a type it does not take: contact_3d, named */
-    const double Je[6] = {1.0, 0.0, 0.0, 1.0, 0.4, -0.3}, pc[5] = {2.0, 0.3, 1.5, 1.0, 0.0};
+    /* a type it does not take: jenkins_normal (lift-off), named */
+    const double Je[4] = {1.0, 0.0, 0.4, -0.3}, pc[5] = {2.0, 0.3, 1.5, 1.0, 0.0};
     ck_assert_int_eq(fricreg_hb_create(2, 1, 3, &hb), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 2, (const double[4]){2.0, -0.3, -0.3, 1.5}),
                      FRICREG_OK);
-    ck_assert_int_eq(fricreg_hb_add_elements(hb, fricreg_element_lookup("contact_3d"), 1, 2, Je,
+    ck_assert_int_eq(fricreg_hb_add_elements(hb, fricreg_element_lookup("jenkins_normal"), 1, 2, Je,
                                              pc),
                      FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_qsma_at(hb, 0, 2, a, w, z), FRICREG_EINVAL);
-    ck_assert_ptr_nonnull(strstr(fricreg_hb_errmsg(hb), "contact_3d"));
+    ck_assert_ptr_nonnull(strstr(fricreg_hb_errmsg(hb), "jenkins_normal"));
+    fricreg_hb_free(hb);
+    /* contacts whose preloads at rest open one another: both press dof 0, and contact 0's
+     * n0 = 5 pushes it back by 1.03, past what contact 1's n0 = 0.1 holds (N = −1.45) */
+    const double J2[12] = {1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 1, 0};
+    const double p2[10] = {2.0, 0.3, 1.5, 5.0, 0.0, 2.0, 0.3, 1.5, 0.1, 0.0};
+    ck_assert_int_eq(fricreg_hb_create(2, 2, 3, &hb), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 2, (const double[4]){2.0, -0.3, -0.3, 1.5}),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_add_elements(hb, fricreg_element_lookup("contact_3d"), 2, 2, J2,
+                                             p2),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_qsma_at(hb, 0, 2, a, w, z), FRICREG_EINVAL);
+    ck_assert_ptr_nonnull(strstr(fricreg_hb_errmsg(hb), "contact 1"));
+    ck_assert_ptr_nonnull(strstr(fricreg_hb_errmsg(hb), "open"));
+    /* or close one: contact 1 (n0 = −0.1, open) pressed by contact 0's push from the other side */
+    const double J3[12] = {1, 0, 0, 1, 1, 0, 0, 1, 1, 0, -1, 0};
+    const double p3[10] = {2.0, 0.3, 1.5, 5.0, 0.0, 2.0, 0.3, 1.5, -0.1, 0.0};
+    ck_assert_int_eq(fricreg_hb_clear_elements(hb), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_add_elements(hb, fricreg_element_lookup("contact_3d"), 2, 2, J3,
+                                             p3),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_qsma_at(hb, 0, 2, a, w, z), FRICREG_EINVAL);
+    ck_assert_ptr_nonnull(strstr(fricreg_hb_errmsg(hb), "close"));
+    fricreg_hb_free(hb);
+    /* no rest state: a body held by its contact alone (K = 0), whose preload fixes the normal
+     * dof but not the tangential ones (K + kn J_n^T J_n singular; K_0 is not) */
+    const double I3[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, Z3[9] = {0};
+    ck_assert_int_eq(fricreg_hb_create(3, 1, 3, &hb), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 3, Z3), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_add_elements(hb, fricreg_element_lookup("contact_3d"), 1, 3, I3,
+                                             (const double[5]){2.0, 0.3, 1.5, 1.0, 0.0}),
+                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_qsma_at(hb, 0, 2, a, w, z), FRICREG_ESINGULAR);
+    ck_assert_ptr_nonnull(strstr(fricreg_hb_errmsg(hb), "rest state"));
+    fricreg_hb_free(hb);
+    /* a contact's gap (index 4): HB's normal law has none */
+    hb = contact_plane();
+    int kind = ELEMENT;
+    size_t first = 0, count = 1, gap = 4;
+    double dw[2] = {SENTINEL, SENTINEL}, dz[2] = {SENTINEL, SENTINEL};
+    ck_assert_int_eq(fricreg_hb_qsma_sensitivities(hb, 0, 2, a, 1, &kind, &first, &count, &gap, dw,
+                                                   dz),
+                     FRICREG_EINVAL);
+    ck_assert_ptr_nonnull(strstr(fricreg_hb_errmsg(hb), "kt, mu, kn, n0"));
+    unwritten(dw, 2);
+    unwritten(dz, 2);
     fricreg_hb_free(hb);
     ck_assert_double_eq(w[1], SENTINEL);
     ck_assert_double_eq(z[1], SENTINEL);
@@ -677,11 +825,13 @@ static Suite *qsma_suite(void)
     tcase_add_test(tc, iwan_closed_forms);
     tcase_add_test(tc, restick_against_load_steps);
     tcase_add_test(tc, sparse_as_dense);
+    tcase_add_test(tc, contact_line_as_jenkins);
     suite_add_tcase(s, tc);
     tc = tcase_create("epmc");
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, epmc_chain);
     tcase_add_test(tc, epmc_long_chain);
+    tcase_add_test(tc, epmc_contact_3d);
     suite_add_tcase(s, tc);
     tc = tcase_create("sensitivities");
     tcase_set_timeout(tc, 60);
@@ -690,6 +840,7 @@ static Suite *qsma_suite(void)
     tcase_add_test(tc, sensitivities_long_chain);
     tcase_add_test(tc, sensitivities_iwan);
     tcase_add_test(tc, sensitivities_restick);
+    tcase_add_test(tc, sensitivities_contact_3d);
     suite_add_tcase(s, tc);
     tc = tcase_create("statuses");
     tcase_add_test(tc, statuses);
