@@ -405,6 +405,30 @@ FRICREG_API int fricreg_fit_set_model_hb(fricreg_fit *fit, fricreg_hb *hb, size_
                                          size_t np, const int kind[], const size_t first[],
                                          const size_t count[], const size_t index[]);
 
+/** Fit a harmonic-balance driver's model by quasi-static modal analysis instead
+ *  (fricreg_hb_qsma_sensitivities, fricreg_hb_qsma.h: exact for jenkins and iwan elements, the
+ *  marched path's own for contact_3d ones): mode `mode`'s QSMA backbone at the levels, its
+ *  exact derivatives in the np parameters, each described as fricreg_fit_set_model_hb
+ *  describes one, with the same starts, bounds and settings; the cheap route where QSMA is
+ *  valid (one mode, Masing behaviour, light damping: docs/identification.md), its levels'
+ *  amplitudes modal (times |s| of fricreg_fit_set_sensor). A velocity or acceleration level's
+ *  modal amplitude solves |s| a omega(a)^kind = A by Newton's method on log a. The damping is
+ *  QSMA's, zeta_k = phi_k^T C phi_k / (2 omega_k) held along the backbone.
+ *
+ *  hb       the driver, borrowed as fricreg_fit_set_model_hb's. NULL: back to the modal Iwan
+ *           model (the other arguments ignored).
+ *  mode, np, kind, first, count, index  as fricreg_fit_set_model_hb's.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if fit is NULL, or kind, first, count or index is NULL
+ *  with hb given; FRICREG_EINVAL as fricreg_fit_set_model_hb's; FRICREG_ENOMEM. A run refuses
+ *  a model QSMA refuses (an element type it does not take: the driver's message), and a level
+ *  beyond macroslip is out of reach (FRICREG_EINVAL, as a backbone that stops before it).
+ *  fricreg_fit_set_sensor_dof is refused on this model (its levels are modal). Nothing changes
+ *  on failure. Since 1.9 (FRICREG_1.9). */
+FRICREG_API int fricreg_fit_set_model_qsma(fricreg_fit *fit, fricreg_hb *hb, size_t mode, size_t np,
+                                           const int kind[], const size_t first[],
+                                           const size_t count[], const size_t index[]);
+
 /** Fit the modal Iwan model again (fricreg_fit_create's): its six parameters with their
  *  defaults, 32 starts; the levels, deviations and sensor value kept, the last fit forgotten.
  *
@@ -421,7 +445,7 @@ FRICREG_API int fricreg_fit_set_model_modal_iwan(fricreg_fit *fit);
  *  dof        the sensor's dof, < ndof.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if fit is NULL; FRICREG_EINVAL if the model is the modal
- *  Iwan one, harmonics < 1 or dof >= ndof. Since 1.9 (FRICREG_1.9). */
+ *  Iwan one or QSMA's (fricreg_fit_set_model_qsma), harmonics < 1 or dof >= ndof. Since 1.9 (FRICREG_1.9). */
 FRICREG_API int fricreg_fit_set_sensor_dof(fricreg_fit *fit, size_t ndof, int harmonics,
                                            size_t dof);
 

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* fit_model.c — which model a fit fits (fricreg_fit.h): the modal Iwan's closed forms, or a
- * harmonic-balance driver's nonlinear mode with the caller's parameters (the driver's element
+ * harmonic-balance driver's nonlinear mode (or its quasi-static modal analysis) with the
+ * caller's parameters (the driver's element
  * values and Rayleigh's coefficients), and where its levels' amplitudes are measured. Each
  * setter checks every input before it changes anything. */
 #include <math.h>
@@ -40,26 +41,26 @@ int fricreg_fit_set_model_modal_iwan(fricreg_fit *fit)
 
 /* Element parameter j's range: within the elements, index in each one's layout, one value that
  * all of them share (its value into *value), else the status (recorded). */
-static int check_element(fricreg_fit *fit, fricreg_hb *hb, size_t j, size_t first, size_t count,
-                         size_t index, double *value)
+static int check_element(fricreg_fit *fit, const char *fn, fricreg_hb *hb, size_t j, size_t first,
+                         size_t count, size_t index, double *value)
 {
     size_t held = fricreg_hb_element_count(hb);
     if (count == 0 || first >= held || count > held - first)
         return fr_fail(fit, FRICREG_EINVAL,
-                       "set_model_hb: parameter %zu's elements %zu..%zu+%zu-1 are not within the "
+                       "%s: parameter %zu's elements %zu..%zu+%zu-1 are not within the "
                        "driver's %zu",
-                       j, first, first, count, held);
+                       fn, j, first, first, count, held);
     for (size_t e = first; e < first + count; e++) {
         double v;
         if (fricreg_hb_get_element_param(hb, e, index, &v) != FRICREG_OK)
-            return fr_fail(fit, FRICREG_EINVAL, "set_model_hb: parameter %zu: %s", j,
+            return fr_fail(fit, FRICREG_EINVAL, "%s: parameter %zu: %s", fn, j,
                            fricreg_hb_errmsg(hb));
         if (e > first && v != *value)
             return fr_fail(fit, FRICREG_EINVAL,
-                           "set_model_hb: parameter %zu: element %zu's value %g differs from "
+                           "%s: parameter %zu: element %zu's value %g differs from "
                            "element %zu's %g: a shared parameter needs one value "
                            "(fricreg_hb_set_element_param)",
-                           j, e, v, first, *value);
+                           fn, j, e, v, first, *value);
         *value = v;
     }
     return FRICREG_OK;
@@ -79,30 +80,29 @@ static int same_value(const int kind[], const size_t first[], const size_t count
 
 /* Parameter j's description checked (its value, an element's, into *value; NaN for damping),
  * else the status (recorded). */
-static int check_param(fricreg_fit *fit, fricreg_hb *hb, size_t j, const int kind[],
+static int check_param(fricreg_fit *fit, const char *fn, fricreg_hb *hb, size_t j, const int kind[],
                        const size_t first[], const size_t count[], const size_t index[],
                        double *value)
 {
     *value = NAN;
     for (size_t b = 0; b < j; b++)
         if (same_value(kind, first, count, index, b, j))
-            return fr_fail(fit, FRICREG_EINVAL,
-                           "set_model_hb: parameters %zu and %zu move the same value", b, j);
+            return fr_fail(fit, FRICREG_EINVAL, "%s: parameters %zu and %zu move the same value",
+                           fn, b, j);
     if (kind[j] == FRICREG_HB_NMA_PARAM_ELEMENT)
-        return check_element(fit, hb, j, first[j], count[j], index[j], value);
+        return check_element(fit, fn, hb, j, first[j], count[j], index[j], value);
     if (kind[j] != FRICREG_HB_NMA_PARAM_DAMPING)
-        return fr_fail(fit, FRICREG_EINVAL,
-                       "set_model_hb: parameter %zu's kind %d is not ELEMENT or DAMPING", j,
-                       kind[j]);
+        return fr_fail(fit, FRICREG_EINVAL, "%s: parameter %zu's kind %d is not ELEMENT or DAMPING",
+                       fn, j, kind[j]);
     if (index[j] == 0)
         return fr_fail(fit, FRICREG_EINVAL,
-                       "set_model_hb: parameter %zu: the modal damping ratio zeta_k has no "
+                       "%s: parameter %zu: the modal damping ratio zeta_k has no "
                        "setter on the driver; fit Rayleigh's a0 (DAMPING index 1) with "
                        "FRICREG_HB_NMA_DAMPING_MODAL and a1 = 0 instead (xi_k = a0)",
-                       j);
+                       fn, j);
     if (index[j] > 2)
         return fr_fail(fit, FRICREG_EINVAL,
-                       "set_model_hb: parameter %zu: DAMPING index %zu is not 1 (a0) or 2 (a1)", j,
+                       "%s: parameter %zu: DAMPING index %zu is not 1 (a0) or 2 (a1)", fn, j,
                        index[j]);
     return FRICREG_OK;
 }
@@ -132,6 +132,38 @@ static struct fr_fit_hb *describe(fricreg_hb *hb, size_t mode, int damping, size
     return m;
 }
 
+/* An HB driver's model, EPMC's or QSMA's, with its parameters checked first. */
+static int set_model(fricreg_fit *fit, const char *fn, const struct fr_fit_model *model,
+                     fricreg_hb *hb, size_t mode, int damping, size_t np, const int kind[],
+                     const size_t first[], const size_t count[], const size_t index[])
+{
+    if (kind == NULL || first == NULL || count == NULL || index == NULL)
+        return fr_fail(fit, FRICREG_ENULL, "%s: kind, first, count or index is NULL", fn);
+    if (np == 0 || np > FR_FIT_MAXP)
+        return fr_fail(fit, FRICREG_EINVAL, "%s: np = %zu parameters, not 1..%d", fn, np,
+                       FR_FIT_MAXP);
+    if (damping != FRICREG_HB_NMA_DAMPING_MATRIX && damping != FRICREG_HB_NMA_DAMPING_MODAL)
+        return fr_fail(fit, FRICREG_EINVAL, "%s: unknown damping %d", fn, damping);
+    double value[FR_FIT_MAXP];
+    for (size_t j = 0; j < np; j++) {
+        int st = check_param(fit, fn, hb, j, kind, first, count, index, &value[j]);
+        if (st != FRICREG_OK)
+            return st;
+    }
+    struct fr_fit_hb *m = describe(hb, mode, damping, np, kind, first, count, index, value);
+    if (m == NULL)
+        return fr_fail(fit, FRICREG_ENOMEM, "%s: out of memory", fn);
+    fr_fit_hb_free(fit->hb);
+    fit->hb = m;
+    fit->model = model;
+    fit->np = np;
+    fit->nstarts = HB_STARTS;
+    for (size_t j = 0; j < np; j++)
+        fit->par[j] = (struct fr_fit_param){1, NAN, 0.0, INFINITY};
+    fit->have_fit = 0;
+    return FRICREG_OK;
+}
+
 int fricreg_fit_set_model_hb(fricreg_fit *fit, fricreg_hb *hb, size_t mode, int damping, size_t np,
                              const int kind[], const size_t first[], const size_t count[],
                              const size_t index[])
@@ -140,31 +172,20 @@ int fricreg_fit_set_model_hb(fricreg_fit *fit, fricreg_hb *hb, size_t mode, int 
         return FRICREG_ENULL;
     if (hb == NULL)
         return fricreg_fit_set_model_modal_iwan(fit);
-    if (kind == NULL || first == NULL || count == NULL || index == NULL)
-        return fr_fail(fit, FRICREG_ENULL, "set_model_hb: kind, first, count or index is NULL");
-    if (np == 0 || np > FR_FIT_MAXP)
-        return fr_fail(fit, FRICREG_EINVAL, "set_model_hb: np = %zu parameters, not 1..%d", np,
-                       FR_FIT_MAXP);
-    if (damping != FRICREG_HB_NMA_DAMPING_MATRIX && damping != FRICREG_HB_NMA_DAMPING_MODAL)
-        return fr_fail(fit, FRICREG_EINVAL, "set_model_hb: unknown damping %d", damping);
-    double value[FR_FIT_MAXP];
-    for (size_t j = 0; j < np; j++) {
-        int st = check_param(fit, hb, j, kind, first, count, index, &value[j]);
-        if (st != FRICREG_OK)
-            return st;
-    }
-    struct fr_fit_hb *m = describe(hb, mode, damping, np, kind, first, count, index, value);
-    if (m == NULL)
-        return fr_fail(fit, FRICREG_ENOMEM, "set_model_hb: out of memory");
-    fr_fit_hb_free(fit->hb);
-    fit->hb = m;
-    fit->model = &fr_fit_hb_model;
-    fit->np = np;
-    fit->nstarts = HB_STARTS;
-    for (size_t j = 0; j < np; j++)
-        fit->par[j] = (struct fr_fit_param){1, NAN, 0.0, INFINITY};
-    fit->have_fit = 0;
-    return FRICREG_OK;
+    return set_model(fit, "set_model_hb", &fr_fit_hb_model, hb, mode, damping, np, kind, first,
+                     count, index);
+}
+
+int fricreg_fit_set_model_qsma(fricreg_fit *fit, fricreg_hb *hb, size_t mode, size_t np,
+                               const int kind[], const size_t first[], const size_t count[],
+                               const size_t index[])
+{
+    if (fit == NULL)
+        return FRICREG_ENULL;
+    if (hb == NULL)
+        return fricreg_fit_set_model_modal_iwan(fit);
+    return set_model(fit, "set_model_qsma", &fr_fit_qsma_model, hb, mode,
+                     FRICREG_HB_NMA_DAMPING_MODAL, np, kind, first, count, index);
 }
 
 int fricreg_fit_set_sensor_dof(fricreg_fit *fit, size_t ndof, int harmonics, size_t dof)
@@ -175,6 +196,10 @@ int fricreg_fit_set_sensor_dof(fricreg_fit *fit, size_t ndof, int harmonics, siz
         return fr_fail(fit, FRICREG_EINVAL,
                        "set_sensor_dof: the modal Iwan model has no dofs (fricreg_fit_set_sensor "
                        "sets its mode shape's value)");
+    if (fit->model == &fr_fit_qsma_model)
+        return fr_fail(fit, FRICREG_EINVAL,
+                       "set_sensor_dof: the QSMA model's levels are modal (fricreg_fit_set_sensor "
+                       "sets the mode shape's value at the sensor)");
     if (harmonics < 1)
         return fr_fail(fit, FRICREG_EINVAL, "set_sensor_dof: harmonics = %d, not >= 1", harmonics);
     if (dof >= ndof)

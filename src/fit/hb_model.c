@@ -1,13 +1,15 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* hb_model.c — a harmonic-balance driver's nonlinear mode as the fit's model (model.h): its
- * parameters' names and ranges, its first start (each element parameter the driver's value at
- * fricreg_fit_set_model_hb; Rayleigh's coefficients, which the driver does not report, from the
- * levels), and the driver's values set to a parameter vector before each backbone. */
+/* hb_model.c — a harmonic-balance driver's nonlinear mode, or its quasi-static modal analysis,
+ * as the fit's model (model.h): its parameters' names and ranges, its first start (each element
+ * parameter the driver's value at fricreg_fit_set_model_hb or _qsma; Rayleigh's coefficients,
+ * which the driver does not report, from the levels), and the driver's values set to a
+ * parameter vector before each backbone (EPMC's, hb_levels.c, or QSMA's, qsma_levels.c). */
 #include <math.h>
 #include <stdio.h>
 
 #include "base/fr_math.h"
 #include "hb_levels.h"
+#include "qsma_levels.h"
 #include "hb_model.h"
 
 static const char *name(const fricreg_fit *fit, int j)
@@ -100,4 +102,13 @@ static int eval(fricreg_fit *fit, const double p[], int kind, size_t n, const do
     return st == FRICREG_OK ? fr_fit_hb_levels(fit, kind, n, amp, guess, out, bad) : st;
 }
 
+static int eval_qsma(fricreg_fit *fit, const double p[], int kind, size_t n, const double amp[],
+                     double guess[], const struct fr_fit_levels *out, size_t *bad)
+{
+    *bad = FR_FIT_REACHED;
+    int st = fr_fit_hb_apply(fit, p);
+    return st == FRICREG_OK ? fr_fit_qsma_levels(fit, kind, n, amp, guess, out, bad) : st;
+}
+
 const struct fr_fit_model fr_fit_hb_model = {name, floor0, in_range, start, eval};
+const struct fr_fit_model fr_fit_qsma_model = {name, floor0, in_range, start, eval_qsma};

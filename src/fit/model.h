@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* model.h — what the fit asks of a model (fricreg_fit.h): its parameters' names and ranges, a
  * first start, and the backbone at measured levels with the total derivatives in its np
- * parameters. Two models: the modal Iwan's closed forms (modal_iwan_model.c) and a
- * harmonic-balance driver's nonlinear mode (hb_model.c, hb_levels.c). */
+ * parameters. Three models: the modal Iwan's closed forms (modal_iwan_model.c), a
+ * harmonic-balance driver's nonlinear mode (hb_model.c, hb_levels.c) and its quasi-static modal
+ * analysis (hb_model.c, qsma_levels.c). */
 #ifndef FRICREG_FIT_MODEL_H
 #define FRICREG_FIT_MODEL_H
 
@@ -38,6 +39,7 @@ struct fr_fit_model {
 
 extern const struct fr_fit_model fr_fit_modal_iwan_model;
 extern const struct fr_fit_model fr_fit_hb_model;
+extern const struct fr_fit_model fr_fit_qsma_model; /* the driver's QSMA (qsma_levels.c) */
 
 /* out's arrays for n levels and *guess[n] (NaN each), n (4 + 2 np) doubles in one block, the
  * block returned for free (NULL out of memory: nothing set). */
