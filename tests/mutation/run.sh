@@ -15,16 +15,21 @@
 # (tests/mutation/select.sh: their file, their tests' sources or their entry changed); the
 # release tier's changed scope (FRICREG_RELEASE_SCOPE=changed) passes "release", the last
 # release (tests/changed_files.sh). The run says which ran and why; with no git, a shallow
-# clone or a REF not found, every mutant runs.
+# clone or a REF not found, every mutant runs. With --part K/P (a release in P stops,
+# FRICREG_RELEASE_SCOPE="full K/P") only the K-th of P shares of the list runs
+# (tests/release_part.sh: every P-th mutant in the list's order, so that each test's mutants,
+# which stand together, are spread over the parts).
 #
 # Usage: tests/mutation/run.sh [--src DIR] [--work DIR] [--cc CC] [--list FILE] [--only NAME]...
-#                              [--changed-since REF|release]
+#                              [--changed-since REF|release] [--part K/P] [--names]
 #   --src   the tree to mutate (default: this script's tree)
 #   --work  scratch folder, reused between runs (default: ${TMPDIR:-/tmp}/fricreg-mutation)
 #   --cc    C compiler (default: $CC or cc)
 #   --list  the mutants (default: tests/mutation/mutants.txt beside this script)
 #   --only  run this mutant only (repeatable)
 #   --changed-since  only the mutants that guard a change since REF (a commit, or "release")
+#   --part  only part K of P of the list
+#   --names print the names of the mutants it would run, one a line, and exit (no build)
 #   --check only check that every mutant applies to the source (no build): after an edit
 # Exit status 0 if every mutant was caught, 1 otherwise, 2 on a usage or set-up error.
 set -u
@@ -35,12 +40,19 @@ cc=${CC:-cc}
 list=$here/mutants.txt
 only=""
 since=""
+part=""
 check=0
+names=0
 limit=900 # seconds per mutant's tests: a loosened bound may turn a refusal into a long run
 while [ $# -gt 0 ]; do
     case $1 in
     --check)
         check=1
+        shift
+        continue
+        ;;
+    --names)
+        names=1
         shift
         continue
         ;;
@@ -50,6 +62,7 @@ while [ $# -gt 0 ]; do
     --list) list=$2 ;;
     --only) only="$only $2" ;;
     --changed-since) since=$2 ;;
+    --part) part=$2 ;;
     -h | --help)
         sed -n '2,/^set -u/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//'
         exit 0
@@ -70,6 +83,8 @@ done
     exit 2
 }
 start=$(date +%s)
+# --names: the names alone on the output, the run's other words on stderr
+[ $names -eq 1 ] && exec 3>&1 >&2
 mkdir -p "$work" || exit 2
 work=$(cd "$work" && pwd)
 tree=$work/src build=$work/build log=$work/log
@@ -134,6 +149,29 @@ if [ -n "$since" ] && [ $check -eq 0 ]; then
     else
         echo "changed scope: $(cat "$work/since"): every mutant runs"
     fi
+fi
+
+# ---- A part of the full scope: every mutant costs the same -----------------------------------
+if [ -n "$part" ]; then
+    for dir in "$blocks"/*; do echo "$(cat "$dir/name") 1"; done >"$work/costs"
+    sh "$here/../release_part.sh" "$part" "$work/costs" >"$work/part" || exit 2
+    for dir in "$blocks"/*; do
+        grep -qxF "$(cat "$dir/name")" "$work/part" || rm -rf "$dir"
+    done
+    echo "part $part of the full scope: $(grep -c . "$work/part") of $n mutants run;" \
+        "the other parts run the others"
+    if ! grep -q . "$work/part"; then
+        echo "0 mutants in this part; $(($(date +%s) - start)) s"
+        exit 0
+    fi
+fi
+if [ $names -eq 1 ]; then
+    for dir in "$blocks"/*; do
+        [ -d "$dir" ] || continue
+        name=$(cat "$dir/name")
+        [ -z "$only" ] || echo " $only " | grep -q " $name " && echo "$name" >&3
+    done
+    exit 0
 fi
 
 # ---- The scratch copy and its build ----------------------------------------------------------
