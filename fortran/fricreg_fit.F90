@@ -82,13 +82,17 @@ contains
   !> 1 kt, 2 mu N); or FRICREG_HB_NMA_PARAM_DAMPING, index 1 Rayleigh's a0, 2 a1 (first and
   !> count ignored). damping FRICREG_HB_NMA_DAMPING_MATRIX (absent) or _MODAL. Fortran counts
   !> from 1 here; which of set_free, set_fixed stays C's, 0 .. np - 1. hb is borrowed: keep it
-  !> alive and unused while the fit uses it (the fit's calls change its values). FRICREG_ESIZE
-  !> if the arrays differ in size; FRICREG_EINVAL (a count from 0, C's refusals); FRICREG_ENOMEM.
-  function fit_set_model_hb(self, hb, mode, kind, first, count, index, damping) result(status)
+  !> alive and unused while the fit uses it (the fit's calls change its values). qsma .true.:
+  !> its quasi-static modal analysis instead (fricreg_fit_set_model_qsma; damping ignored, the
+  !> levels modal). FRICREG_ESIZE if the arrays differ in size; FRICREG_EINVAL (a count from 0,
+  !> C's refusals); FRICREG_ENOMEM.
+  function fit_set_model_hb(self, hb, mode, kind, first, count, index, damping, qsma) &
+    result(status)
     class(fricreg_backbone_fit), intent(inout) :: self
     class(fricreg_hb_driver), intent(in) :: hb
     integer, intent(in) :: mode, kind(:), first(:), count(:), index(:)
     integer(c_int), intent(in), optional :: damping
+    logical, intent(in), optional :: qsma
     integer(c_int) :: status, d
     integer(c_int), allocatable :: ck(:)
     integer(c_size_t), allocatable :: cf(:), cc(:), ci(:)
@@ -129,8 +133,18 @@ contains
         ci(j) = as_size(index(j)) ! damping: 1 a0, 2 a1 as in C
       end if
     end do
-    status = self%record(fricreg_fit_set_model_hb(self%ptr, hb%ptr, as_size(mode - 1), d, &
-                                                  as_size(np), ck, cf, cc, ci))
+    if (present(qsma)) then
+      if (qsma) then
+        status = self%record(fricreg_fit_set_model_qsma(self%ptr, hb%ptr, as_size(mode - 1), &
+                                                        as_size(np), ck, cf, cc, ci))
+      else
+        status = self%record(fricreg_fit_set_model_hb(self%ptr, hb%ptr, as_size(mode - 1), d, &
+                                                      as_size(np), ck, cf, cc, ci))
+      end if
+    else
+      status = self%record(fricreg_fit_set_model_hb(self%ptr, hb%ptr, as_size(mode - 1), d, &
+                                                    as_size(np), ck, cf, cc, ci))
+    end if
     if (status /= FRICREG_OK) return
     self%np = np
     self%ndof = as_size(hb%ndof())

@@ -201,7 +201,10 @@ FRICREG_API int fricreg_fit_set_sensor(fricreg_fit *fit, double s);
  *         coefficients), or the driver's value at fricreg_fit_set_model_hb (an element's).
  *  lower  lower bound, -INFINITY for none, not below the parameter's own (0 for F_S, K_T,
  *         beta, zeta0 and K0, -1 for chi; 0 for every HB model parameter).
- *  upper  upper bound, INFINITY for none, > lower.
+ *  upper  upper bound, INFINITY for none, > lower. Bounds both finite are searched through
+ *         the logistic map of (lower, upper), one alone through the log of the distance to
+ *         it; bounds more than 1e300 apart (Fortran's huge(1.0) as "none") as the nearer one
+ *         alone (the logistic map of so wide a range has no digits left for the parameter).
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if fit is NULL; FRICREG_EINVAL if which is unknown, a bound
  *  lies below the parameter's own or upper <= lower, or start is outside (lower, upper);

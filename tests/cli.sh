@@ -1670,6 +1670,16 @@ expect_output '"element:1:1:1": \{"value": 1\.7, "lower": 1\.7, "upper": 1\.7, "
 # The levels hold no viscous damping: a0 runs to its bound 0, exit 1 with the library's reason.
 expect "fit --model hb that ends at a bound exits 1 with the reason" \
     '"$sim" $fithb --jenkins-params "$d/P.txt" --param damping:1 >"$d/out" 2>"$tmp/err"; [ $? -eq 1 ] && [ ! -s "$d/out" ] && grep -q "^fricreg-sim: fit: run: Rayleigh a0 ended at its lower bound 0" "$tmp/err"'
+# --backbone qsma: QSMA's closed form of the same oscillator (slipping, omega^2 = 1 + mun/a,
+# zeta = 4 mun (a - mun/kt)/(2 pi (a + mun) a)) recovered from the driver's values 2x off.
+awk -v kt=1.7 -v mun=0.26 'BEGIN { pi = atan2(0, -1); print "a,freq_hz,zeta"
+    n = split("0.21 0.33 0.52 0.86 1.37 2.2", A, " ")
+    for (i = 1; i <= n; i++) { a = A[i]; z = 4 * mun * (a - mun / kt) / (2 * pi * (a + mun) * a)
+        printf "%s,%.15g,%.15g\n", a, sqrt(1 + mun / a) / (2 * pi), z } }' >"$d/qsma.csv"
+expect "fit --model hb --backbone qsma recovers kt and mu N from QSMA's closed form" \
+    '"$sim" $(echo "$fithb" | sed "s#levels.csv#qsma.csv#") --backbone qsma --jenkins-params "$d/P_off.txt" >"$d/qsma.json" 2>"$tmp/err" && recovered "$d/qsma.json" && grep -q "\"backbone\": \"qsma\"" "$d/qsma.json"'
+expect_usage_error "^fricreg-sim: --dof: not with --backbone qsma" $fithb --jenkins-params "$d/P.txt" --backbone qsma --dof 1
+expect_usage_error "^fricreg-sim: --backbone: only with --model hb$" fit --levels "$d/levels.csv" --backbone qsma
 expect_output '^usage: fricreg-sim fit --levels LEVELS\.csv \[OPTION\]\.\.\. \| --model hb' fit --help
 expect_usage_error "^fricreg-sim: --fix: --model hb takes its parameters by position" $fithb --jenkins-params "$d/P.txt" --fix kt=1
 expect_usage_error "^fricreg-sim: --start: POSITION=VALUE only with --model hb" fit --levels "$d/levels.csv" --start 1=3

@@ -16,7 +16,9 @@
 ! zeta = 4 mun (a - delta)/(2 pi a^2 omega^2), at six amplitudes past the slip, measured at
 ! dof 1 (|X_1| = a for the unit mass). From the driver's values 2x off (kt 3.4, mu N 0.13) the
 ! fit recovers both to 1e-6; the arrays' sizes, counts from 0 and a dof beyond the driver's
-! are refused, and the modal Iwan model comes back with its six parameters.
+! are refused, and the modal Iwan model comes back with its six parameters. With qsma = .true.
+! (set_model_qsma) QSMA's closed form of the same oscillator (slipping, omega^2 = 1 + mun/a,
+! zeta = 4 mun (a - mun/kt)/(2 pi (a + mun) a)) gives kt and mu N back to 1e-6 likewise.
 program test_fit
   use fricreg
   use ftest
@@ -117,6 +119,26 @@ program test_fit
   call check(loh(1) <= qh(1) .and. qh(1) <= hih(1) .and. covh(2, 2) >= 0, 'interval, HB')
   call check_status(fit%value(FRICREG_FIT_NMARCH, v), FRICREG_OK, 'value NMARCH')
   call check(v >= 1.0_c_double, 'backbone marches counted')
+  ! ---- QSMA's closed form of the same oscillator (slipping: omega^2 = 1 + mun/a, zeta =
+  ! 4 mun (a - mun/kt)/(2 pi (a + mun) a)), fitted with qsma = .true. from 2x off
+  do i = 1, 6
+    fh(i) = sqrt(1 + mun / ah(i)) / two_pi
+    zh(i) = 4 * mun * (ah(i) - dl) / (2 * pi * (ah(i) + mun) * ah(i))
+  end do
+  call check_status(fit%set_model_hb(hb, 1, [el, el], [1, 1], [1, 1], [1, 2], qsma=.true.), &
+                    FRICREG_OK, 'set_model_hb, qsma')
+  call check_status(fit%set_free(0, 2 * kt, 0.0_c_double, huge(1.0_c_double)), FRICREG_OK, &
+                    'kt 2x off again')
+  call check_status(fit%set_free(1, mun / 2, 0.0_c_double, huge(1.0_c_double)), FRICREG_OK, &
+                    'mu N 2x off again')
+  call check_status(fit%set_sensor_dof(1), FRICREG_EINVAL, 'set_sensor_dof: QSMA is modal')
+  call check_status(fit%set_sensor(1.0_c_double), FRICREG_OK, 'modal amplitudes (not 0.37)')
+  call check_status(fit%set_levels(FRICREG_FIT_DISPLACEMENT, ah, fh, zh), FRICREG_OK, &
+                    'set_levels, QSMA')
+  call check_status(fit%run(), FRICREG_OK, 'run, QSMA')
+  call check_status(fit%params(qh), FRICREG_OK, 'params, QSMA')
+  call check_close(qh(1), kt, 1e-6_c_double * kt, 'kt recovered by QSMA')
+  call check_close(qh(2), mun, 1e-6_c_double * mun, 'mu N recovered by QSMA')
   call check_status(fit%set_model_modal_iwan(), FRICREG_OK, 'set_model_modal_iwan')
   call check_status(fit%set_sensor_dof(1), FRICREG_EINVAL, 'set_sensor_dof: modal Iwan')
   call check_status(fit%eval(truth, FRICREG_FIT_DISPLACEMENT, a, f, z), FRICREG_OK, &

@@ -49,6 +49,9 @@ int fricreg_fit_get_quantile(const fricreg_fit *fit, double *q);
 int fricreg_fit_set_model_hb(fricreg_fit *fit, struct fricreg_hb *hb, size_t mode, int damping,
                              size_t np, const int kind[], const size_t first[],
                              const size_t count[], const size_t index[]);
+int fricreg_fit_set_model_qsma(fricreg_fit *fit, struct fricreg_hb *hb, size_t mode, size_t np,
+                               const int kind[], const size_t first[], const size_t count[],
+                               const size_t index[]);
 int fricreg_fit_set_model_modal_iwan(fricreg_fit *fit);
 int fricreg_fit_set_sensor_dof(fricreg_fit *fit, size_t ndof, int harmonics, size_t dof);
 int fricreg_fit_eval(fricreg_fit *fit, const double p[], int kind, size_t n,

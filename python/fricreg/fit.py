@@ -31,6 +31,7 @@ _NP = len(FIT_PARAMS)
 _KINDS = {"displacement": lib.FRICREG_FIT_DISPLACEMENT, "velocity": lib.FRICREG_FIT_VELOCITY,
           "acceleration": lib.FRICREG_FIT_ACCELERATION}
 _FLOORS = {"chi": -1.0}
+_BACKBONES = {"epmc": 0, "qsma": 1}  # a driver's model: its nonlinear mode, or QSMA
 
 
 class FitResult(dict):
@@ -145,7 +146,8 @@ def _set_params(fit, x0, bounds, fixed, names=None):
 
 def fit_backbone(amplitude, freq_hz, zeta, *, kind="acceleration", sensor=1.0,
                  sd_freq_hz=None, sd_zeta=None, x0=None, bounds=None, fixed=None, starts=None,
-                 model=None, params=None, mode=0, damping="matrix", dof=None):
+                 model=None, params=None, mode=0, damping="matrix", dof=None,
+                 backbone="epmc"):
     """Fit the modal Iwan model, or a harmonic-balance model's nonlinear mode, to measured
     levels (``fricreg_fit_run``).
 
@@ -189,6 +191,10 @@ def fit_backbone(amplitude, freq_hz, zeta, *, kind="acceleration", sensor=1.0,
     dof : int, optional, with ``model``
         The levels' amplitudes are the first harmonic's at this dof (``kind`` displacement,
         velocity or acceleration); without it, modal amplitudes times ``sensor``.
+    backbone : {"epmc", "qsma"}, with ``model``
+        The model's backbone: its nonlinear mode (EPMC), or its quasi-static modal analysis
+        (``fricreg_fit_set_model_qsma``: the cheap route where QSMA holds, docs/
+        identification.md; ``damping`` is then QSMA's own, φᵀCφ/(2ω_k), and ``dof`` refused).
 
     Returns
     -------
@@ -225,7 +231,7 @@ def fit_backbone(amplitude, freq_hz, zeta, *, kind="acceleration", sensor=1.0,
                "deviations")
     names = None
     if model is not None:
-        names = _set_model(fit, model, params, mode, damping, dof)
+        names = _set_model(fit, model, params, mode, damping, dof, backbone)
     elif params is not None or dof is not None:
         raise refused("params, dof: only with model (a HarmonicBalance)")
     free = _set_params(fit, x0, bounds, fixed, names)
@@ -237,8 +243,9 @@ def fit_backbone(amplitude, freq_hz, zeta, *, kind="acceleration", sensor=1.0,
     return result
 
 
-def _set_model(fit, model, params, mode, damping, dof):
-    """An HB model's nonlinear mode as the fit's model; the parameters' descriptions."""
+def _set_model(fit, model, params, mode, damping, dof, backbone):
+    """An HB model's nonlinear mode (or QSMA) as the fit's model; the parameters'
+    descriptions."""
     from .harmonic_balance import HarmonicBalance, _DAMPING, model_params
     if not isinstance(model, HarmonicBalance):
         raise refused("model: %r is not a fricreg.HarmonicBalance" % (model,))
@@ -247,9 +254,13 @@ def _set_model(fit, model, params, mode, damping, dof):
     rows = model_params(params)
     columns = [ffi.new("int[]", [r[0] for r in rows])] + [
         ffi.new("size_t[]", [r[j] for r in rows]) for j in (1, 2, 3)]
-    _check(fit, lib.fricreg_fit_set_model_hb(fit, model._hb, as_integer(mode, "mode"),
-                                              choice(_DAMPING, damping, "damping"), len(rows),
-                                              *columns), "model")
+    if choice(_BACKBONES, backbone, "backbone"):
+        _check(fit, lib.fricreg_fit_set_model_qsma(fit, model._hb, as_integer(mode, "mode"),
+                                                    len(rows), *columns), "model")
+    else:
+        _check(fit, lib.fricreg_fit_set_model_hb(fit, model._hb, as_integer(mode, "mode"),
+                                                  choice(_DAMPING, damping, "damping"),
+                                                  len(rows), *columns), "model")
     if dof is not None:
         _check(fit, lib.fricreg_fit_set_sensor_dof(fit, model.ndof, model.harmonics,
                                                     as_integer(dof, "dof")), "dof")

@@ -121,6 +121,28 @@ def describing_function(a, kt, mun):
     return w2, 4 * mun * (a - delta) / (2 * np.pi * a * a * w2)
 
 
+def test_a_qsma_fit_recovers_the_oscillators_closed_form():
+    """QSMA's closed form of the Jenkins oscillator (unit mass and spring; slipping,
+    ω² = 1 + mu N/a, ζ = 4 mu N (a − mu N/kt)/(2π (a + mu N) a)), fitted with
+    backbone="qsma" from starts 2x off: kt and mu N back to the fit's tolerance; a dof
+    refused (QSMA's levels are modal)."""
+    kt, mun = 2.0, 3.0
+    a = np.array([2.0, 3.0, 5.0, 9.0, 20.0])
+    freq = np.sqrt(1 + mun / a) / (2 * np.pi)
+    zeta = 4 * mun * (a - mun / kt) / (2 * np.pi * (a + mun) * a)
+    hb = fricreg.HarmonicBalance([[1.0]], [[1.0]], elements=[("jenkins", [[1.0]], [[4.0, 1.5]])],
+                                 harmonics=1)
+    params = [("element", 0, 1, 0), ("element", 0, 1, 1)]
+    res = fricreg.fit_backbone(a, freq, zeta, kind="displacement", model=hb, params=params,
+                               backbone="qsma")
+    np.testing.assert_allclose(res.x, [kt, mun], rtol=1e-7)
+    with pytest.raises(fricreg.InputError, match="modal"):
+        fricreg.fit_backbone(a, freq, zeta, kind="displacement", model=hb, params=params,
+                             backbone="qsma", dof=0)
+    with pytest.raises(fricreg.InputError, match="backbone"):
+        fricreg.fit_backbone(a, freq, zeta, model=hb, params=params, backbone="shooting")
+
+
 def test_a_harmonic_balance_models_fit_recovers_the_closed_forms_parameters():
     """Levels made by the describing function's closed form (kt = 2, mu N = 3), fitted on the
     HB model of the same oscillator from starts 2x off: the parameters back to the fit's

@@ -267,14 +267,17 @@ static const char *kind_word(int kind)
     return "?";
 }
 
-/* An HB model's fields: its size, mode, harmonics, damping and sensor dof (from 1). */
+/* An HB model's fields: its size, mode, harmonics, damping, backbone and sensor dof (from 1). */
 static void write_hb_model(FILE *out, const struct fit_options *o, const struct cli_fit_hb *h)
 {
     fprintf(out, ", \"ndof\": %zu, \"elements\": %zu", h->md.n, h->md.m);
     cli_hb_json_elements(out, &h->md);
     fprintf(out, ", \"mode\": %d, \"harmonics\": %d, \"linear_damping\": \"%s\"", o->hb.mode,
             o->hb.harmonics,
-            o->hb.linear_damping == FRICREG_HB_NMA_DAMPING_MODAL ? "modal" : "matrix");
+            o->hb.backbone == 1                                    ? "qsma"
+            : o->hb.linear_damping == FRICREG_HB_NMA_DAMPING_MODAL ? "modal"
+                                                                   : "matrix");
+    fprintf(out, ", \"backbone\": \"%s\"", o->hb.backbone == 1 ? "qsma" : "epmc");
     if (o->hb.dof_given)
         fprintf(out, ", \"dof\": %d", o->hb.dof);
 }

@@ -15,6 +15,7 @@
 const struct cli_word cli_fit_dampings[] = {{"matrix", FRICREG_HB_NMA_DAMPING_MATRIX},
                                             {"modal", FRICREG_HB_NMA_DAMPING_MODAL},
                                             {NULL, 0}};
+const struct cli_word cli_fit_backbones[] = {{"epmc", 0}, {"qsma", 1}, {NULL, 0}};
 
 void cli_fit_hb_defaults(struct cli_fit_hb_options *o)
 {
@@ -135,7 +136,8 @@ static const char *given_option(const struct cli_fit_hb_options *o)
                 {o->damping_given, "--linear-damping"},
                 {o->dof_given, "--dof"},
                 {o->tol_given, "--newton-tol"},
-                {o->max_given, "--newton-max"}};
+                {o->max_given, "--newton-max"},
+                {o->backbone_given, "--backbone"}};
     for (size_t k = 0; k < sizeof rows / sizeof rows[0]; k++)
         if (rows[k].given)
             return rows[k].name;
@@ -153,6 +155,10 @@ int cli_fit_hb_check(const struct cli_fit_hb_options *o, int hb)
         return status;
     if (o->np == 0)
         return cli_usage_error("--param", "missing (--model hb fits the parameters it names)");
+    if (o->backbone == 1 && (o->dof_given || o->damping_given))
+        return cli_usage_error(o->dof_given ? "--dof" : "--linear-damping",
+                               "not with --backbone qsma (its levels are modal, its damping the "
+                               "linear mode's)");
     return 0;
 }
 
@@ -205,6 +211,17 @@ static int check_values(const struct cli_fit_hb_options *o, fricreg_hb *hb)
     return 0;
 }
 
+/* The driver as the fit's model, by its backbone's route. */
+static int set_model(fricreg_fit *fit, const struct cli_fit_hb_options *o, fricreg_hb *hb)
+{
+    size_t mode = (size_t)o->mode - 1;
+    if (o->backbone == 1)
+        return fricreg_fit_set_model_qsma(fit, hb, mode, o->np, o->kind, o->first, o->count,
+                                          o->index);
+    return fricreg_fit_set_model_hb(fit, hb, mode, o->linear_damping, o->np, o->kind, o->first,
+                                    o->count, o->index);
+}
+
 int cli_fit_hb_set_up(fricreg_fit *fit, const struct cli_fit_hb_options *o, struct cli_fit_hb *h)
 {
     int status = cli_hb_read_model(&o->model, &h->md);
@@ -218,9 +235,7 @@ int cli_fit_hb_set_up(fricreg_fit *fit, const struct cli_fit_hb_options *o, stru
         status = cli_usage_error("--newton-tol", fricreg_hb_errmsg(h->hb));
     if (status == 0)
         status = check_values(o, h->hb);
-    if (status == 0 &&
-        fricreg_fit_set_model_hb(fit, h->hb, (size_t)o->mode - 1, o->linear_damping, o->np, o->kind,
-                                 o->first, o->count, o->index) != FRICREG_OK)
+    if (status == 0 && set_model(fit, o, h->hb) != FRICREG_OK)
         status = cli_usage_error("--param", fricreg_fit_errmsg(fit));
     if (status == 0 && o->dof_given &&
         fricreg_fit_set_sensor_dof(fit, h->md.n, o->harmonics, (size_t)o->dof - 1) != FRICREG_OK)

@@ -24,8 +24,8 @@
  * 0), name as the summary writes them (from 1). */
 struct cli_fit_hb_options {
     struct cli_hb_model_options model;
-    int harmonics, mode, linear_damping, dof, newton_max;
-    int harmonics_given, mode_given, damping_given, dof_given, tol_given, max_given;
+    int harmonics, mode, linear_damping, dof, newton_max, backbone;
+    int harmonics_given, mode_given, damping_given, dof_given, tol_given, max_given, backbone_given;
     double newton_tol;
     size_t np;
     int kind[CLI_FIT_MAX_PARAMS];
@@ -41,11 +41,13 @@ struct cli_fit_hb {
 
 /* --param's parser (repeatable): row->slot is a struct cli_fit_hb_options. */
 int cli_fit_parse_param(const struct cli_option *row, const char *text);
-/* The --linear-damping words (matrix, modal). */
+/* The --linear-damping words (matrix, modal); the --backbone words (epmc 0, qsma 1). */
 extern const struct cli_word cli_fit_dampings[];
+extern const struct cli_word cli_fit_backbones[];
 
 /* The HB model's rows over o (a struct cli_fit_hb_options *): the model's (hb_model.h), then
- * --param, --mode, --harmonics, --linear-damping, --dof, --newton-tol, --newton-max. */
+ * --param, --mode, --harmonics, --linear-damping, --dof, --newton-tol, --newton-max,
+ * --backbone. */
 /* clang-format off */
 #define CLI_FIT_HB_OPTIONS(o)                                                                   \
     CLI_HB_MODEL_OPTIONS(&(o)->model),                                                          \
@@ -76,7 +78,12 @@ extern const struct cli_word cli_fit_dampings[];
                             "the fit differentiates the points)"},                              \
     {"--newton-max", CLI_WHOLE, .slot = &(o)->newton_max, .given = &(o)->max_given,            \
      .lo = 1, .hi = 1000, .meta = "N",                                                         \
-     .help = "--model hb: Newton's iterations at most per backbone point, 1 to 1000"}
+     .help = "--model hb: Newton's iterations at most per backbone point, 1 to 1000"},          \
+    {"--backbone", CLI_CHOICE, .slot = &(o)->backbone, .words = cli_fit_backbones,             \
+     .given = &(o)->backbone_given,                                                             \
+     .help = "--model hb: the backbone fitted: the nonlinear mode (EPMC), or quasi-static "     \
+             "modal analysis (qsma: the cheap route where it holds, its levels modal, its "    \
+             "damping the linear mode's; not with --dof or --linear-damping)"}
 /* clang-format on */
 
 /* The defaults (H = 7, mode 1, the matrix's damping, Newton 1e-12 and 50). */

@@ -36,8 +36,24 @@ int fr_fit_params_in_range(const double p[], int *bad)
     return 1;
 }
 
+/* Bounds further apart than this are taken one-sided (the nearer one's log): the logistic map
+ * of so wide a range puts an O(1) parameter's s = (p − lo)/(hi − lo) among the subnormals,
+ * where it has no digits left (Fortran's huge(1.0) as "no bound" did). */
+#define WIDEST 1e300
+
+static void one_sided_if_wide(double *lo, double *hi)
+{
+    if (isfinite(*lo) && isfinite(*hi) && !(*hi - *lo <= WIDEST)) {
+        if (fabs(*hi) >= fabs(*lo))
+            *hi = INFINITY;
+        else
+            *lo = -INFINITY;
+    }
+}
+
 double fr_fit_from_theta(double theta, double lo, double hi, double *dp_dtheta)
 {
+    one_sided_if_wide(&lo, &hi);
     if (isfinite(lo) && isfinite(hi)) {
         double s = 1.0 / (1.0 + exp(-theta));
         *dp_dtheta = (hi - lo) * s * (1.0 - s);
@@ -54,6 +70,7 @@ double fr_fit_from_theta(double theta, double lo, double hi, double *dp_dtheta)
 
 double fr_fit_to_theta(double p, double lo, double hi)
 {
+    one_sided_if_wide(&lo, &hi);
     if (isfinite(lo) && isfinite(hi))
         return log((p - lo) / (hi - p));
     if (isfinite(lo))
