@@ -17,7 +17,10 @@
  *   - GSL's Nelder-Mead (gsl_multimin_fminimizer_nmsimplex2) on r^T r in the same theta (the
  *     logs of the three; each evaluation one fricreg_fit_eval of the 8 levels), from the same
  *     start (initial steps ln 2), restarted from its best point until its cost is within 1e-6
- *     of the trust-region fit's or BUDGET evaluations are spent.
+ *     of the trust-region fit's or BUDGET evaluations are spent;
+ *   - the same levels fitted by the model's quasi-static modal analysis
+ *     (fricreg_fit_set_model_qsma) from the same start: its CPU time and parameters (QSMA's
+ *     model is not EPMC's: its parameters differ by that model's difference).
  * Prints a line per draw and the medians. Usage: fricreg-bench-fit-hb [DRAWS [BUDGET]]
  * (default 1 draw, budget 2000: about half a minute a draw, Nelder-Mead most). */
 #include <math.h>
@@ -103,8 +106,8 @@ static long nelder_mead(struct objective *o, const double start[], double target
     return bench_nelder_mead(&F, start, log(2.0), target, budget, &o->evals, best);
 }
 
-/* The fit of the model's three parameters, or NULL (printed why). */
-static fricreg_fit *fit_of(fricreg_hb *hb)
+/* The fit of the model's three parameters, by EPMC or QSMA, or NULL (printed why). */
+static fricreg_fit *fit_of(fricreg_hb *hb, int qsma)
 {
     const int kind[NP] = {FRICREG_HB_NMA_PARAM_ELEMENT, FRICREG_HB_NMA_PARAM_ELEMENT,
                           FRICREG_HB_NMA_PARAM_DAMPING};
@@ -112,8 +115,10 @@ static fricreg_fit *fit_of(fricreg_hb *hb)
     fricreg_fit *fit = NULL;
     if (fricreg_fit_create(&fit) != FRICREG_OK)
         return NULL;
-    if (fricreg_fit_set_model_hb(fit, hb, MODE, FRICREG_HB_NMA_DAMPING_MODAL, NP, kind, first,
-                                 count, index) != FRICREG_OK) {
+    int st = qsma ? fricreg_fit_set_model_qsma(fit, hb, MODE, NP, kind, first, count, index)
+                  : fricreg_fit_set_model_hb(fit, hb, MODE, FRICREG_HB_NMA_DAMPING_MODAL, NP, kind,
+                                             first, count, index);
+    if (st != FRICREG_OK) {
         printf("# set_model_hb: %s\n", fricreg_fit_errmsg(fit));
         fricreg_fit_free(fit);
         return NULL;
@@ -126,11 +131,11 @@ int main(int argc, char **argv)
     int draws = argc > 1 ? atoi(argv[1]) : 1;
     long budget = argc > 2 ? atol(argv[2]) : 2000;
     fricreg_hb *hb = chain();
-    fricreg_fit *fit = hb != NULL ? fit_of(hb) : NULL;
+    fricreg_fit *fit = hb != NULL ? fit_of(hb, 0) : NULL, *qs = hb != NULL ? fit_of(hb, 1) : NULL;
     double A[NL], f[NL], z[NL];
     for (int i = 0; i < NL; i++)
         A[i] = 0.53 * pow(3.9 / 0.53, i / (NL - 1.0));
-    if (draws < 1 || fit == NULL ||
+    if (draws < 1 || fit == NULL || qs == NULL ||
         fricreg_fit_eval(fit, truth, FRICREG_FIT_DISPLACEMENT, NL, A, f, z, NULL, NULL, NULL)) {
         printf("# set-up failed: %s\n", fit != NULL ? fricreg_fit_errmsg(fit) : "no model");
         return 1;
@@ -139,8 +144,10 @@ int main(int argc, char **argv)
            *ratio = malloc((size_t)draws * sizeof *ratio);
     double *models = malloc((size_t)draws * sizeof *models);
     double *marches = malloc((size_t)draws * sizeof *marches);
+    double *qcpu = malloc((size_t)draws * sizeof *qcpu);
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    printf("draw,fit_cpu_s,fit_models,fit_marches,nm_evals,nm_reached,nm_cpu_s,kt,mun,a0\n");
+    printf("draw,fit_cpu_s,fit_models,fit_marches,nm_evals,nm_reached,nm_cpu_s,kt,mun,a0,"
+           "qsma_cpu_s,qsma_kt,qsma_mun,qsma_a0\n");
     for (int d = 0; d < draws; d++) {
         double fm[NL], zm[NL], sf[NL], sz[NL], theta0[NP], p[NP], v, best;
         gsl_rng_set(rng, (unsigned long)d + 1);
@@ -171,17 +178,31 @@ int main(int argc, char **argv)
         long n = nelder_mead(&o, theta0, v * (1.0 + 1e-6), budget, &best);
         double nm_cpu = bench_cpu_seconds() - t0;
         ratio[d] = (double)n / models[d];
-        printf("%d,%.4g,%.0f,%.0f,%ld,%d,%.4g,%.6g,%.6g,%.6g\n", d, cpu[d], models[d], marches[d],
-               n, best <= v * (1.0 + 1e-6), nm_cpu, p[0], p[1], p[2]);
+        double q[NP] = {NAN, NAN, NAN}; /* QSMA's fit of the same levels, from the same start */
+        fricreg_fit_set_levels(qs, NL, FRICREG_FIT_DISPLACEMENT, A, fm, zm);
+        fricreg_fit_set_deviations(qs, NL, sf, sz);
+        for (int j = 0; j < NP; j++)
+            fricreg_fit_set_free(qs, j, truth[j] * factor[j], 0.0, INFINITY);
+        t0 = bench_cpu_seconds();
+        if (fricreg_fit_run(qs) == FRICREG_OK)
+            fricreg_fit_get_params(qs, NP, q);
+        qcpu[d] = bench_cpu_seconds() - t0;
+        printf("%d,%.4g,%.0f,%.0f,%ld,%d,%.4g,%.6g,%.6g,%.6g,%.4g,%.6g,%.6g,%.6g\n", d, cpu[d],
+               models[d], marches[d], n, best <= v * (1.0 + 1e-6), nm_cpu, p[0], p[1], p[2],
+               qcpu[d], q[0], q[1], q[2]);
     }
     printf("# fit: median %.3g s CPU, %.0f model evaluations (%.0f backbone marches)\n",
            bench_median(cpu, (size_t)draws), bench_median(models, (size_t)draws),
            bench_median(marches, (size_t)draws));
     printf("# Nelder-Mead (budget %ld): median %.0fx the fit's model evaluations\n", budget,
            bench_median(ratio, (size_t)draws));
+    printf("# QSMA's fit of the same levels: median %.3g s CPU\n",
+           bench_median(qcpu, (size_t)draws));
     gsl_rng_free(rng);
     fricreg_fit_free(fit);
+    fricreg_fit_free(qs);
     fricreg_hb_free(hb);
+    free(qcpu);
     free(cpu);
     free(ratio);
     free(models);
