@@ -3,7 +3,7 @@ function [text, number] = fricreg_version(varargin)
 %FRICREG_VERSION  The version of the fricreg library the MEX gateway runs on.
 %   TEXT = FRICREG_VERSION() is the version 'MAJOR.MINOR.PATCH', a char row vector.
 %   [TEXT, NUMBER] = FRICREG_VERSION() also gives it as the double
-%   MAJOR*10000 + MINOR*100 + PATCH (10890 for 1.8.90).
+%   MAJOR*10000 + MINOR*100 + PATCH (10900 for 1.9.0).
 %
 %   These are the library's that the gateway is linked to at run time (Python:
 %   fricreg.__version__).
