@@ -40,7 +40,7 @@ extern "C" {
  *  D the dissipation per cycle of modal amplitude a, ζ_k = φ_k^T C φ_k / (2 ω_k) the linear
  *  mode's damping ratio (C or Rayleigh's a0 M + a1 K). Below the first slip ω = ω_k, ζ = ζ_k.
  *
- *  The elements must be jenkins, iwan or contact_3d (fricreg_hb_set_elements,
+ *  The elements must be jenkins, iwan, jenkins_normal or contact_3d (fricreg_hb_set_elements,
  *  fricreg_hb_set_iwan, fricreg_hb_set_jenkins_2d_normal or fricreg_hb_add_elements with those
  *  types). Jenkins and iwan elements are sliders of stiffness k_s and slip force φ_s,
  *  whose forces under a monotone load are piecewise linear. The path is then piecewise linear
@@ -50,8 +50,8 @@ extern "C" {
  *  back against its slip (a later slip elsewhere can turn it) sticks again at its bound, and the
  *  pattern is solved anew until no slider does (a cycle that does not settle: FRICREG_EINVAL).
  *
- *  With contact_3d elements (kt, mu, kn, n0: the normal force N = n0 + kn g while positive, the
- *  tangential force on a disk of radius mu N) the force turns as the contact slides and its
+ *  With contact_3d or jenkins_normal elements (kt, mu, kn, n0: the normal force N = n0 + kn g
+ *  while positive, the tangential force on a disk, or an interval, of radius mu N) the force turns as the contact slides and its
  *  bound moves with g, so the path is marched instead: from the rest state under the preloads,
  *  (K + Σ kn J_n^T J_n) x_0 = −Σ n0 J_n^T over the contacts with n0 > 0, each contact's slider
  *  centred there (no tangential force: harmonic balance's stuck contact), q = φ_k^T M (x − x_0)
@@ -74,7 +74,7 @@ extern "C" {
  *  at the secant stiffness). With 3-D contacts whose normal force moves with the mode, the
  *  static path presses each contact one way where the vibration presses and relieves it in
  *  turn: Masing's rule is then QSMA's assumption, not the contact's loop. Where the joint
- *  couples modes (internal resonances), for elements with lift-off on one row or other laws,
+ *  couples modes (internal resonances), for iwan elements with lift-off or other laws,
  *  or where the damping is not light, the nonlinear mode
  *  (fricreg_hb_nma, EPMC) is needed: also where the slip changes the mode's shape much (stiff
  *  joints, whose slipped structure has its modes far from the stuck ones). Measured against
@@ -100,8 +100,9 @@ extern "C" {
  *  per slider that slips before the last amplitude. Thread safety: one driver per thread.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if hb, amplitude, omega or zeta is NULL; FRICREG_EINVAL if
- *  the elements were not set, an element is not jenkins, iwan or contact_3d (the message names
- *  its type), no slider has a positive slip force and no contact_3d element is held, the
+ *  the elements were not set, an element is not jenkins, iwan, jenkins_normal or contact_3d (the
+ *  message names its type), no slider has a positive slip force and no element with a normal
+ *  law is held, the
  *  preloads at rest open a contact whose n0 > 0 or close one whose n0 <= 0 (the message names
  *  it), the marched path's λ is not positive at an amplitude (a contact's friction turning the
  *  load back: no secant frequency), the model has more than 4096 dofs, mode >= ndof, n is 0,
@@ -112,8 +113,8 @@ extern "C" {
  *  FRICREG_ESINGULAR if K_0 is singular, or if the tangent becomes singular before the last
  *  amplitude: the sliders slipping leave a rigid-body motion (macroslip: λ cannot grow, the
  *  amplitude is beyond reach; the message gives the amplitude where it happens), and with
- *  contact_3d elements if K + Σ kn J_n^T J_n or a point's bordered tangent is singular;
- *  FRICREG_EWORK with contact_3d elements if Newton's method finds no static equilibrium at a
+ *  contact_3d or jenkins_normal elements if K + Σ kn J_n^T J_n or a point's bordered tangent is
+ *  singular; FRICREG_EWORK with such elements if Newton's method finds no static equilibrium at a
  *  point in 50 iterations, its step halved 12 times (the message gives the amplitude);
  *  FRICREG_ENOMEM (about 8 ndof² doubles during the call). Nothing is written on failure; the driver's
  *  results (solution, branch, backbone) are not changed. Since 1.9 (FRICREG_1.9). */
@@ -123,7 +124,7 @@ FRICREG_API int fricreg_hb_qsma_at(fricreg_hb *hb, size_t mode, size_t n, const 
 /** The exact derivatives of fricreg_hb_qsma_at's ω and ζ at each amplitude in np parameters,
  *  each described as fricreg_hb_nma_point_sensitivities describes one (enum
  *  fricreg_hb_nma_param): an element parameter shared by a range of elements (jenkins: 0 kt,
- *  1 mun; iwan: k[ns], phi[ns]; contact_3d: 0 kt, 1 mu, 2 kn, 3 n0), the linear damping (index 0 ζ_k at fixed ω_k, 1 and 2
+ *  1 mun; iwan: k[ns], phi[ns]; contact_3d and jenkins_normal: 0 kt, 1 mu, 2 kn, 3 n0), the linear damping (index 0 ζ_k at fixed ω_k, 1 and 2
  *  Rayleigh's a0 and a1) or the amplitude itself (along the backbone).
  *
  *  On a piece of the path (its pattern of stuck and slipping sliders fixed) the point at fixed q
@@ -144,14 +145,14 @@ FRICREG_API int fricreg_hb_qsma_at(fricreg_hb *hb, size_t mode, size_t n, const 
  *      dω/dp = (dλ/dp) / (2 ω a),   dD/dp = 8 ∫_0^a (dλ/dp) ds − 4 a dλ/dp,
  *      dζ/dp = dζ_k/dp + (dD/dp) / (2π λ a) − (ζ − ζ_k) (dλ/dp) / λ.
  *
- *  With contact_3d elements the derivatives are the marched path's, exact for it (not for the
+ *  With contact_3d or jenkins_normal elements the derivatives are the marched path's, exact for it (not for the
  *  continuous path it approximates): at each point the factored bordered tangent gives
  *  (dx, dλ) from the elements' force derivatives in p and in their states before the point,
  *  and the states are carried forward by their return mappings' derivatives (forward
  *  differentiation through the march, one solve a parameter and point); x_0 moves by
  *  (K + Σ kn J_n^T J_n) dx_0 = −Σ J_n^T (dn0 + g_0 dkn); d∫/dp is the trapezoid's.
  *  At an amplitude where a slider starts to slip the derivatives are one-sided (the piece below).
- *  Cost: fricreg_hb_qsma_at's, and per parameter and event (with contact_3d: and point) a solve
+ *  Cost: fricreg_hb_qsma_at's, and per parameter and event (marched: and point) a solve
  *  on the tangent's factor, O(ndof²); with stiffness parameters one dense LU of order ndof + 1.
  *
  *  mode, n, amplitude  as fricreg_hb_qsma_at's.
@@ -162,14 +163,15 @@ FRICREG_API int fricreg_hb_qsma_at(fricreg_hb *hb, size_t mode, size_t n, const 
  *             for the other kinds.
  *  index[np]  ELEMENT: the parameter's index in each element's layout (jenkins 0 kt, 1 mun;
  *             iwan of ns sliders: 0 .. ns − 1 the stiffnesses, ns .. 2 ns − 1 the slip forces;
- *             contact_3d 0 kt, 1 mu, 2 kn, 3 n0: its gap, 4, HB's normal law has none);
+ *             contact_3d, jenkins_normal 0 kt, 1 mu, 2 kn, 3 n0: their gap, 4, HB's normal law
+ *             has none);
  *             DAMPING: 0 ζ_k, 1 a0, 2 a1; ignored for AMPLITUDE.
  *  domega[n np]  out: dω/dp_k at amplitude i in domega[np i + k], rad/s per unit of p_k.
  *  dzeta[n np]   out: dζ/dp_k, the same layout, per unit of p_k.
  *
  *  Returns FRICREG_OK; FRICREG_ENULL if hb, amplitude, domega or dzeta is NULL, or kind, first,
  *  count or index with np > 0; FRICREG_EINVAL as fricreg_hb_qsma_at, or if a kind or index is not
- *  one of the above (a contact_3d index above 3), an element range is empty or beyond the
+ *  one of the above (a normal law's index above 3), an element range is empty or beyond the
  *  elements, a parameter is a slider's of slip force 0 (it carries nothing: no derivative), a0,
  *  a1 is asked of a model without Rayleigh damping; FRICREG_ENONFINITE, FRICREG_ENOTPSD, FRICREG_ESINGULAR, FRICREG_EWORK as
  *  fricreg_hb_qsma_at, and FRICREG_ESINGULAR if a stiffness moves φ_k and the stuck mode k is

@@ -746,7 +746,8 @@ class HarmonicBalance:
         """A mode's frequency and damping ratio by quasi-static modal analysis
         (``fricreg_hb_qsma_at``; Lacayo and Allen, MSSP 118 (2019) 133-157): the static
         loading path along M φ_k with the elements' hysteresis, exact for Jenkins and Iwan
-        elements, marched in 256 to 512 steps where contact_3d elements are, and Masing's rule
+        elements, marched in 256 to 512 steps where contact_3d or jenkins_normal elements are,
+        and Masing's rule
         for the loop; the cheap route beside :meth:`backbone` (EPMC) for one mode with Masing
         behaviour (docs/identification.md, "QSMA").
 
@@ -770,12 +771,12 @@ class HarmonicBalance:
         Raises
         ------
         fricreg.InputError
-            Bad amplitudes, a mode out of range, an element type QSMA does not take (lift-off,
-            marched types: the message names it), contacts whose preloads at rest open one
+            Bad amplitudes, a mode out of range, an element type QSMA does not take
+            (iwan_normal, marched types: the message names it), contacts whose preloads at rest open one
             another, a parameter it refuses.
         fricreg.Error
             ``FRICREG_ESINGULAR``: macroslip below an amplitude (the message gives it), or a
-            repeated stuck mode; ``FRICREG_EWORK``: with contact_3d elements, a static
+            repeated stuck mode; ``FRICREG_EWORK``: with normal-law elements, a static
             equilibrium Newton's method does not find (the message gives the amplitude).
         """
         mode = as_integer(mode, "mode")

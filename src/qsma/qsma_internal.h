@@ -21,7 +21,9 @@ struct fr_qsma {
     double *x, *v;            /* [n]: the displacement and dx/dλ on the current piece */
     double *ur, *vr, *kr;     /* [m]: J x, J v, each row's stuck stiffness */
     size_t *row, *elem, *loc; /* [nsl]: its row, element and place among the element's sliders */
-    size_t ncon, *con;        /* the 3-D contacts: how many, [ncon] their elements */
+    size_t ncon, *con;        /* the elements with a normal law (3-D contacts, Jenkins with
+                                 lift-off): how many, [ncon] their elements */
+    size_t nst;               /* the marched path's states: a slider's one, a contact's dim */
     double *ks, *fs;          /* [nsl]: its stiffness and slip force */
     double *z;                /* [nsl]: its slip (0 until it slips; set when it sticks again) */
     int *sigma;               /* [nsl]: 0 stuck, ±1 slipping in that direction */
@@ -50,7 +52,7 @@ struct fr_qsma_out {
     double *dlambda, *dintegral;                 /* [na np] each, or NULL */
 };
 
-/* The model of the driver (every element jenkins, iwan or contact_3d, at most
+/* The model of the driver (every element jenkins, iwan, jenkins_normal or contact_3d, at most
  * FR_QSMA_MAX_DOFS dofs) into a new s, with each row's stuck stiffness in kr (a contact closed
  * at rest, n0 > 0: kt on its tangential rows where mu > 0, kn on its normal one; as
  * fricreg_hb_nma's linear mode). FRICREG_OK, FRICREG_EINVAL (an element of another type, too
@@ -104,8 +106,9 @@ int fr_qsma_path(fricreg_hb *hb, const char *fn, struct fr_qsma *s, size_t na, c
                  const struct fr_qsma_sens *p, double *work, struct fr_qsma_out *out);
 
 /* The elements as the marched path steps them (qsma_units.c): a slider (dim 1: kt = k_s, phi
- * its slip force) or a 3-D contact (dim 2, its normal row after its two tangential ones: kt,
- * mu, kn, n0), its first row of J and its state's place st; what one step records of it; and
+ * its slip force) or an element with a normal law (normal: its normal row after its dim
+ * tangential ones, kt, mu, kn, n0: a 3-D contact, dim 2, or a Jenkins element with lift-off,
+ * dim 1), its first row of J and its state's place st; what one step records of it; and
  * what a parameter is to it (a slider's stiffness is KT, its slip force BOUND, a contact's mu
  * BOUND). */
 enum fr_qsma_mode { FR_QSMA_STICK, FR_QSMA_SLIP, FR_QSMA_OPEN };
@@ -118,7 +121,7 @@ enum fr_qsma_role {
 };
 struct fr_qsma_unit {
     size_t row, st;
-    int dim;
+    int dim, normal;
     double kt, phi, mu, kn, n0;
 };
 struct fr_qsma_record {
@@ -127,9 +130,23 @@ struct fr_qsma_record {
     double g, N;                   /* a contact's normal displacement and force */
 };
 
+/* Whether element e is stepped as a unit with a normal law (contact_3d, or jenkins_normal: a
+ * lift-off element of one slider), and then its tangential rows. */
+static inline int fr_qsma_has_normal(const fricreg_hb *hb, size_t e)
+{
+    const double *k, *phi;
+    return hb->kind[e] == FR_HB_CONTACT_3D ||
+           (hb->kind[e] == FR_HB_LIFTOFF && fr_hb_sliders(hb, e, &k, &phi) == 1);
+}
+
+static inline int fr_qsma_tangential_rows(const fricreg_hb *hb, size_t e)
+{
+    return (int)fr_hb_rows_of(hb, e) - 1;
+}
+
 static inline size_t fr_qsma_unit_rows(const struct fr_qsma_unit *un)
 {
-    return un->dim == 2 ? 3 : 1;
+    return (size_t)(un->dim + un->normal);
 }
 
 /* One step of unit un at u[rows] from its state wold[dim]: its forces f[rows], df/du D[rows

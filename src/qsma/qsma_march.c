@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* qsma_march.c — quasi-static modal analysis's loading path for a model with 3-D contacts
- * (qsma_internal.h). A contact's tangential force turns as it slides and its bound μ N moves
+/* qsma_march.c — quasi-static modal analysis's loading path for a model with 3-D contacts or
+ * Jenkins elements with lift-off (qsma_internal.h). A contact's tangential force turns as it slides and its bound μ N moves
  * with the normal displacement, so the path is no longer piecewise linear (qsma_path.c's exact
  * stepping): it is marched in the modal amplitude instead, each point the bordered static
  * equilibrium
@@ -75,15 +75,18 @@ static void build_units(struct march *mk)
     for (size_t j = 0; j < s->nsl; j++)
         mk->units[j] = (struct fr_qsma_unit){
             .row = s->row[j], .st = j, .dim = 1, .kt = s->ks[j], .phi = s->fs[j]};
-    for (size_t c = 0; c < s->ncon; c++) {
+    for (size_t c = 0, st = s->nsl; c < s->ncon; c++) {
         size_t e = s->con[c];
+        int dim = fr_qsma_tangential_rows(hb, e);
         mk->units[s->nsl + c] = (struct fr_qsma_unit){.row = hb->erow[e],
-                                                      .st = s->nsl + 2 * c,
-                                                      .dim = 2,
+                                                      .st = st,
+                                                      .dim = dim,
+                                                      .normal = 1,
                                                       .kt = hb->nl[e],
                                                       .mu = hb->nl[me + e],
                                                       .n0 = hb->nl[2 * me + e],
                                                       .kn = hb->nl[3 * me + e]};
+        st += (size_t)dim;
     }
 }
 
@@ -168,7 +171,7 @@ static int rest_state(struct march *mk, struct point *g)
     memset(mk->x0, 0, n * sizeof *mk->x0);
     for (size_t u = nsl; u < mk->nu; u++) {
         const struct fr_qsma_unit *un = &mk->units[u];
-        const double *Jn = J + (un->row + 2) * n;
+        const double *Jn = J + (un->row + (size_t)un->dim) * n;
         if (!(un->n0 > 0.0))
             continue;
         for (size_t i = 0; i < n && un->kn != 0.0; i++)
@@ -187,7 +190,7 @@ static int rest_state(struct march *mk, struct point *g)
     memset(mk->dx0, 0, np * n * sizeof *mk->dx0);
     for (size_t u = nsl; u < mk->nu; u++) {
         const struct fr_qsma_unit *un = &mk->units[u];
-        double g0 = mk->ur[un->row + 2], N0 = un->n0 + un->kn * g0;
+        double g0 = mk->ur[un->row + (size_t)un->dim], N0 = un->n0 + un->kn * g0;
         if ((un->n0 > 0.0) != (N0 > 0.0))
             return fr_fail(mk->hb, FRICREG_EINVAL,
                            "%s: contact %zu's normal force at rest is %g (n0 = %g): the preloads "
@@ -197,7 +200,7 @@ static int rest_state(struct march *mk, struct point *g)
             int role = role_of(mk, k, u);
             double c = (role == FR_QSMA_ROLE_N0) + (role == FR_QSMA_ROLE_KN) * g0;
             for (size_t i = 0; i < n && c != 0.0; i++)
-                mk->dx0[k * n + i] -= c * J[(un->row + 2) * n + i];
+                mk->dx0[k * n + i] -= c * J[(un->row + (size_t)un->dim) * n + i];
         }
     }
     if (np > 0)
@@ -208,13 +211,13 @@ static int rest_state(struct march *mk, struct point *g)
     memset(g->dW, 0, np * mk->nst * sizeof *g->dW);
     for (size_t u = nsl; u < mk->nu; u++) {
         const struct fr_qsma_unit *un = &mk->units[u];
-        for (int a = 0; a < 2; a++) {
-            g->W[un->st + a] = mk->ur[un->row + a];
+        for (int a = 0; a < un->dim; a++) {
+            g->W[un->st + (size_t)a] = mk->ur[un->row + (size_t)a];
             for (size_t k = 0; k < np; k++) {
                 double t = 0.0;
                 for (size_t i = 0; i < n; i++)
-                    t += J[(un->row + a) * n + i] * mk->dx0[k * n + i];
-                g->dW[k * mk->nst + un->st + a] = t;
+                    t += J[(un->row + (size_t)a) * n + i] * mk->dx0[k * n + i];
+                g->dW[k * mk->nst + un->st + (size_t)a] = t;
             }
         }
     }
@@ -459,7 +462,7 @@ int fr_qsma_march(fricreg_hb *hb, const char *fn, struct fr_qsma *s, size_t na, 
                        .n = s->n,
                        .m = s->m,
                        .nu = s->nsl + s->ncon,
-                       .nst = s->nsl + 2 * s->ncon,
+                       .nst = s->nst,
                        .np = p ? p->np : 0};
     int status = alloc_march(&mk);
     if (status != FRICREG_OK) {

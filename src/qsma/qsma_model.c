@@ -3,8 +3,8 @@
  * M, K and C dense (a sparse model's spread out), its elements as sliders and 3-D contacts, and
  * the tangent K_t = K + J^T diag(k_r) J of the sliders stuck, factored by LAPACK's Cholesky.
  * Jenkins and iwan elements load piecewise linearly, so that their path is exact (qsma_path.c);
- * 3-D contacts are marched (qsma_march.c); the others (lift-off, marched laws) are refused by
- * name. */
+ * 3-D contacts and Jenkins elements with lift-off are marched (qsma_march.c); the others (iwan
+ * with lift-off, marched laws) are refused by name. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -45,18 +45,17 @@ static void densify(const fricreg_hb *hb, struct fr_qsma *s)
             s->C[k] = hb->a0 * s->M[k] + hb->a1 * s->K[k];
 }
 
-/* Every element jenkins, iwan (one row of J, sliders) or contact_3d; the first that is not,
- * named. */
+/* Every element jenkins, iwan (one row of J, sliders), jenkins_normal or contact_3d; the first
+ * that is not, named. */
 static int check_kinds(fricreg_hb *hb, const char *fn)
 {
-    static const char *const names[] = {"", "jenkins/iwan", "jenkins_normal/iwan_normal",
-                                        "contact_3d"};
+    static const char *const names[] = {"", "jenkins/iwan", "iwan_normal", "contact_3d"};
     for (size_t e = 0; e < hb->count; e++)
-        if (hb->kind[e] != FR_HB_SLIDERS && hb->kind[e] != FR_HB_CONTACT_3D)
+        if (hb->kind[e] != FR_HB_SLIDERS && !fr_qsma_has_normal(hb, e))
             return fr_fail(hb, FRICREG_EINVAL,
                            "%s: element %zu is of type %s: quasi-static modal analysis takes "
-                           "jenkins, iwan and contact_3d elements only (fricreg_hb_nma for the "
-                           "others)",
+                           "jenkins, iwan, jenkins_normal and contact_3d elements only "
+                           "(fricreg_hb_nma for the others)",
                            fn, e,
                            hb->kind[e] == FR_HB_MARCH ? fricreg_element_name(hb->etype[e])
                                                       : names[hb->kind[e]]);
@@ -68,10 +67,12 @@ static void list_sliders(const fricreg_hb *hb, struct fr_qsma *s)
 {
     size_t k = 0;
     s->ncon = 0;
+    s->nst = 0;
     for (size_t e = 0; e < hb->count; e++) {
         const double *ks, *phi;
-        if (hb->kind[e] == FR_HB_CONTACT_3D) {
+        if (fr_qsma_has_normal(hb, e)) {
             s->con[s->ncon++] = e;
+            s->nst += (size_t)fr_qsma_tangential_rows(hb, e);
             continue;
         }
         size_t ns = fr_hb_sliders(hb, e, &ks, &phi);
@@ -86,9 +87,11 @@ static void list_sliders(const fricreg_hb *hb, struct fr_qsma *s)
             }
     }
     s->nsl = k;
+    s->nst += k;
 }
 
-/* Each row's stiffness with every element stuck (a contact closed by its preload n0 > 0). */
+/* Each row's stiffness with every element stuck (an element with a normal law closed by its
+ * preload n0 > 0: kt on its tangential rows where mu > 0, kn on its normal one). */
 static void stuck_rows(const fricreg_hb *hb, struct fr_qsma *s)
 {
     size_t me = hb->me;
@@ -96,12 +99,12 @@ static void stuck_rows(const fricreg_hb *hb, struct fr_qsma *s)
     for (size_t k = 0; k < s->nsl; k++)
         s->kr[s->row[k]] += s->ks[k];
     for (size_t c = 0; c < s->ncon; c++) {
-        size_t e = s->con[c], r = hb->erow[e];
+        size_t e = s->con[c], r = hb->erow[e], dim = (size_t)fr_qsma_tangential_rows(hb, e);
         if (!(hb->nl[2 * me + e] > 0.0))
             continue;
-        if (hb->nl[me + e] > 0.0)
-            s->kr[r] = s->kr[r + 1] = hb->nl[e];
-        s->kr[r + 2] = hb->nl[3 * me + e];
+        for (size_t a = 0; a < dim && hb->nl[me + e] > 0.0; a++)
+            s->kr[r + a] = hb->nl[e];
+        s->kr[r + dim] = hb->nl[3 * me + e];
     }
 }
 
@@ -149,7 +152,7 @@ int fr_qsma_create(fricreg_hb *hb, const char *fn, struct fr_qsma **out)
                        fn, hb->n, FR_QSMA_MAX_DOFS);
     size_t ncon = 0;
     for (size_t e = 0; e < hb->count; e++)
-        ncon += hb->kind[e] == FR_HB_CONTACT_3D;
+        ncon += (size_t)fr_qsma_has_normal(hb, e);
     struct fr_qsma *s = alloc(hb->n, hb->m, hb->nsl, ncon);
     if (s == NULL)
         return fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for a model of %zu dofs", fn, hb->n);

@@ -33,11 +33,11 @@ static int check_element(fricreg_hb *hb, const char *fn, const struct params *P,
     for (size_t e = e0; e < e0 + ne; e++) {
         const double *ks, *phi;
         size_t ns = fr_hb_sliders(hb, e, &ks, &phi);
-        if (hb->kind[e] == FR_HB_CONTACT_3D) { /* kt, mu, kn, n0 (HB's normal law: no gap) */
+        if (fr_qsma_has_normal(hb, e)) { /* kt, mu, kn, n0 (HB's normal law: no gap) */
             if (j > 3)
                 return fr_fail(hb, FRICREG_EINVAL,
-                               "%s: parameter %zu: index %zu, contact_3d element %zu has kt, mu, "
-                               "kn, n0 (0 to 3)",
+                               "%s: parameter %zu: index %zu, element %zu with a normal law has "
+                               "kt, mu, kn, n0 (0 to 3)",
                                fn, k, j, e);
             continue;
         }
@@ -103,17 +103,17 @@ static void roles(const fricreg_hb *hb, const struct fr_qsma *s, const struct pa
         }
         for (size_t c = 0; c < s->ncon; c++) {
             size_t e = s->con[c], r = hb->erow[e], i = P->index[k];
+            size_t dim = (size_t)fr_qsma_tangential_rows(hb, e);
             if (!in_range(P, k, e))
                 continue;
             crole[k * s->ncon + c] = contact_role[i];
             /* K_0's rows: kt where the contact sticks at rest, kn where it is closed */
-            if (i == 0 && s->kr[r] != 0.0) {
-                dk[k * s->m + r] += 1.0;
-                dk[k * s->m + r + 1] += 1.0;
+            for (size_t a = 0; a < dim && i == 0 && s->kr[r] != 0.0; a++) {
+                dk[k * s->m + r + a] += 1.0;
                 *shape = 1;
             }
             if (i == 2 && hb->nl[2 * hb->me + e] > 0.0) {
-                dk[k * s->m + r + 2] += 1.0;
+                dk[k * s->m + r + dim] += 1.0;
                 *shape = 1;
             }
         }

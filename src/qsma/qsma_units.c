@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* qsma_units.c — the elements as the marched loading path steps them (qsma_internal.h): a
  * slider (jenkins, or one of an iwan element's) or a 3-D contact, each one backward-Euler step
- * of its return mapping from its state before the step (joint/slider.h), with the consistent
+ * of its return mapping from its state before the step (joint/slider.h; a Jenkins element with
+ * lift-off is a 1-D one under the same normal law), with the consistent
  * tangent Newton needs and the forward derivatives that carry the parameters' sensitivities
  * from step to step. With d = u − w_old, n = d/|d| and the bound b (φ_s, or μ N with N = n0 + kn g
  * while the contact is closed):
@@ -22,17 +23,17 @@ void fr_qsma_unit_step(const struct fr_qsma_unit *un, const double *u, const dou
     memset(D, 0, rows * rows * sizeof *D);
     for (int a = 0; a < dim; a++)
         rec->d[a] = u[a] - wold[a];
-    rec->g = dim == 2 ? u[2] : 0.0;
-    rec->N = dim == 2 ? un->n0 + un->kn * rec->g : 1.0;
+    rec->g = un->normal ? u[dim] : 0.0;
+    rec->N = un->normal ? un->n0 + un->kn * rec->g : 1.0;
     if (!(rec->N > 0.0)) { /* open: the slider follows u */
-        fr_slider_separated(2, u, f, w, NULL, NULL);
-        f[2] = 0.0;
+        fr_slider_separated(dim, u, f, w, NULL, NULL);
+        f[dim] = 0.0;
         rec->mode = FR_QSMA_OPEN;
         return;
     }
-    double b = dim == 2 ? un->mu * rec->N : un->phi, t[4], dfdg[2];
-    int slip = fr_slider_return(un->kt, b, dim == 2 ? un->mu * un->kn : 0.0, dim, u, wold, f, w, t,
-                                dfdg);
+    double b = un->normal ? un->mu * rec->N : un->phi, t[4], dfdg[2];
+    int slip = fr_slider_return(un->kt, b, un->normal ? un->mu * un->kn : 0.0, dim, u, wold, f, w,
+                                t, dfdg);
     rec->mode = slip ? FR_QSMA_SLIP : FR_QSMA_STICK;
     double r = fr_slider_norm(rec->d, dim);
     for (int a = 0; a < dim; a++) {
@@ -42,11 +43,11 @@ void fr_qsma_unit_step(const struct fr_qsma_unit *un, const double *u, const dou
             D[a * rows + c] = t[a * dim + c];
     }
     memcpy(rec->t, t, (size_t)(dim * dim) * sizeof *t);
-    if (dim == 2) { /* the bound's dependence on g, and the normal law */
-        D[0 * rows + 2] = dfdg[0];
-        D[1 * rows + 2] = dfdg[1];
-        D[2 * rows + 2] = un->kn;
-        f[2] = rec->N;
+    if (un->normal) { /* the bound's dependence on g, and the normal law */
+        for (int a = 0; a < dim; a++)
+            D[a * rows + (size_t)dim] = dfdg[a];
+        D[(size_t)dim * rows + (size_t)dim] = un->kn;
+        f[dim] = rec->N;
     }
 }
 
@@ -54,7 +55,7 @@ void fr_qsma_unit_step(const struct fr_qsma_unit *un, const double *u, const dou
 static void bound_terms(const struct fr_qsma_unit *un, const struct fr_qsma_record *rec, int role,
                         double dg, double *db, double *dN)
 {
-    if (un->dim == 1) {
+    if (!un->normal) {
         *dN = 0.0;
         *db = role == FR_QSMA_ROLE_BOUND ? 1.0 : 0.0;
         return;
@@ -77,8 +78,8 @@ void fr_qsma_unit_dforce(const struct fr_qsma_unit *un, const struct fr_qsma_rec
             df[a] -= rec->t[a * dim + c] * dwold[c];
         df[a] += rec->mode == FR_QSMA_STICK ? rec->d[a] * dkt : rec->n[a] * db;
     }
-    if (dim == 2)
-        df[2] = dN;
+    if (un->normal)
+        df[dim] = dN;
 }
 
 void fr_qsma_unit_dstate(const struct fr_qsma_unit *un, const struct fr_qsma_record *rec, int role,
@@ -94,7 +95,7 @@ void fr_qsma_unit_dstate(const struct fr_qsma_unit *un, const struct fr_qsma_rec
         return;
     }
     double db, dN, dkt = role == FR_QSMA_ROLE_KT;
-    bound_terms(un, rec, role, dim == 2 ? du[2] : 0.0, &db, &dN);
+    bound_terms(un, rec, role, un->normal ? du[dim] : 0.0, &db, &dN);
     for (int a = 0; a < dim; a++) {
         double df = rec->n[a] * db;
         for (int c = 0; c < dim; c++)

@@ -234,15 +234,16 @@ START_TEST(failures)
     ck_assert_int_eq(fricreg_fit_run(fit), FRICREG_EINVAL);
     ck_assert_ptr_nonnull(strstr(fricreg_fit_errmsg(fit), "level 2"));
     /* a type QSMA does not take, named by the driver at the run */
-    const double e2[5] = {2.0, 0.3, 1.5, 1.0, 0.0}, J2[2] = {1.0, 0.5};
+    const double e2[7] = {2.0, 1.0, 0.3, 0.2, 1.5, 1.0, 0.0}, J2[2] = {1.0, 0.5};
     ck_assert_int_eq(fricreg_hb_clear_elements(hb), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 1, &one), FRICREG_OK);
-    ck_assert_int_eq(fricreg_hb_add_elements(hb, fricreg_element_lookup("jenkins_normal"), 1, 1, J2,
-                                             e2),
+    ck_assert_int_eq(fricreg_hb_add_elements(
+                         hb, fricreg_element_sliders(fricreg_element_lookup("iwan_normal"), 2), 1,
+                         1, J2, e2),
                      FRICREG_OK);
     ck_assert_int_eq(fricreg_fit_set_model_qsma(fit, hb, 0, 1, &el, &z0, &c1, &i1), FRICREG_OK);
     ck_assert_int_eq(fricreg_fit_eval(fit, &p, 0, 3, A, fo, zo, NULL, NULL, NULL), FRICREG_EINVAL);
-    ck_assert_ptr_nonnull(strstr(fricreg_fit_errmsg(fit), "jenkins_normal"));
+    ck_assert_ptr_nonnull(strstr(fricreg_fit_errmsg(fit), "iwan_normal"));
     /* NULL: back to the modal Iwan model */
     ck_assert_int_eq(fricreg_fit_set_model_qsma(fit, NULL, 0, 0, NULL, NULL, NULL, NULL),
                      FRICREG_OK);

@@ -321,6 +321,21 @@ static fricreg_hb *contact_line(double kt, double mu, double kn, double n0)
     return hb;
 }
 
+/* The same with a Jenkins element with lift-off (jenkins_normal) on two unit masses, K =
+ * diag(1, 3): x slides, the second dof presses; the same rest state's N = 3 n0/(3 + kn). */
+static fricreg_hb *liftoff_line(double kt, double mu, double kn, double n0)
+{
+    const double M[4] = {1, 0, 0, 1}, K[4] = {1, 0, 0, 3}, p[5] = {kt, mu, kn, n0, 0.0};
+    fricreg_hb *hb = NULL;
+    ck_assert_int_eq(fricreg_hb_create(2, 1, 1, &hb), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_mass(hb, 2, M), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 2, K), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_add_elements(hb, fricreg_element_lookup("jenkins_normal"), 1, 2, M,
+                                             p),
+                     FRICREG_OK);
+    return hb;
+}
+
 /* test_hb_contact_3d.c's inclined plane (test_hb_nma_sensitivity.c's contact model): a 2-dof
  * mass on one contact_3d element whose normal row (0.4, −0.3) couples both dofs, so that the
  * normal force moves as the contact slides and the tangential force turns; kt = 1.5, mu = 0.4,
@@ -347,21 +362,27 @@ START_TEST(contact_line_as_jenkins)
      * 2^floor(log2(a_max/256))), so ζ by kt h² / (2π λ a). */
     const double kt = 2.5, mu = 0.35, kn = 4.0, n0 = 1.4, N = 3.0 * n0 / (3.0 + kn);
     const double a[6] = {0.05, 0.19, 0.1961, 0.5, 1.7, 6.0};
-    double w[6], z[6], wj[6], zj[6];
+    double w[6], z[6], wj[6], zj[6], wl[6], zl[6];
     fricreg_hb *hb = contact_line(kt, mu, kn, n0), *jk = oscillator(kt, mu * N, 0.0);
+    fricreg_hb *lo = liftoff_line(kt, mu, kn, n0);
     ck_assert_int_eq(fricreg_hb_qsma_at(hb, 0, 6, a, w, z), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_qsma_at(jk, 0, 6, a, wj, zj), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_qsma_at(lo, 0, 6, a, wl, zl), FRICREG_OK);
     double h = ldexp(1.0, (int)floor(log2(a[5] / 256.0))), worst = 0.0;
     for (size_t i = 0; i < 6; i++) {
         double lambda = wj[i] * wj[i] * a[i], bound = kt * h * h / (2.0 * pi * lambda * a[i]);
         ck_assert_double_eq_tol(w[i], wj[i], 1e-12 * wj[i]);
         ck_assert_double_le(fabs(z[i] - zj[i]), 1.0001 * bound + 1e-14);
         worst = fmax(worst, fabs(z[i] - zj[i]) / bound);
+        /* the lift-off element on its line is the contact on its own, to rounding */
+        ck_assert_double_eq_tol(wl[i], w[i], 1e-13 * w[i]);
+        ck_assert_double_eq_tol(zl[i], z[i], 1e-13 * z[i] + 1e-16);
     }
     if (print())
         printf("contact_3d on a line: zeta within %.2f of the trapezoid's bound\n", worst);
     fricreg_hb_free(hb);
     fricreg_hb_free(jk);
+    fricreg_hb_free(lo);
 }
 END_TEST
 
@@ -625,6 +646,28 @@ START_TEST(sensitivities_iwan)
 }
 END_TEST
 
+START_TEST(sensitivities_liftoff)
+{
+    /* test_hb_liftoff.c's contact (dof 0 slides, dof 1 presses, g = −x_1): a jenkins_normal
+     * element kt = 1.7, mu = 0.5, kn = 3, n0 = 0.6, from stuck through slip to lift-off */
+    const double M[4] = {1.3, 0, 0, 0.9}, K[4] = {2.385, -0.3, -0.3, 1.5}, J[4] = {1, 0, 0, -1};
+    const double p[5] = {1.7, 0.5, 3.0, 0.6, 0.0}, a[6] = {0.05, 0.2, 0.45, 0.9, 1.6, 3.0};
+    fricreg_hb *hb = NULL;
+    ck_assert_int_eq(fricreg_hb_create(2, 1, 5, &hb), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_mass(hb, 2, M), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 2, K), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_rayleigh(hb, 0.004, 0.0), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_add_elements(hb, fricreg_element_lookup("jenkins_normal"), 1, 2, J,
+                                             p),
+                     FRICREG_OK);
+    const struct par P[6] = {{ELEMENT, 0, 1, 0}, {ELEMENT, 0, 1, 1}, {ELEMENT, 0, 1, 2},
+                             {ELEMENT, 0, 1, 3}, {DAMPING, 0, 0, 1}, {AMPLITUDE, 0, 0, 0}};
+    const double p0[6] = {p[0], p[1], p[2], p[3], 0.004, 1.0};
+    check_differences("jenkins_normal", hb, 0, 6, a, 6, P, p0, 1e-6);
+    fricreg_hb_free(hb);
+}
+END_TEST
+
 START_TEST(sensitivities_contact_3d)
 {
     /* the plane from stuck (a = 0.02) through slip with the normal force moving to lift-off;
@@ -755,16 +798,16 @@ START_TEST(refusals)
     ck_assert_double_eq_tol(w[0], sqrt(kt), 1e-14);
     ck_assert_double_eq(w[1], SENTINEL);
     fricreg_hb_free(hb);
-    /* a type it does not take: jenkins_normal (lift-off), named */
-    const double Je[4] = {1.0, 0.0, 0.4, -0.3}, pc[5] = {2.0, 0.3, 1.5, 1.0, 0.0};
+    /* a type it does not take: iwan_normal (sliders sharing a normal law), named */
+    const double Je[4] = {1.0, 0.0, 0.4, -0.3}, pc[7] = {2.0, 1.0, 0.3, 0.2, 1.5, 1.0, 0.0};
+    const fricreg_element_type *iwan2 =
+        fricreg_element_sliders(fricreg_element_lookup("iwan_normal"), 2);
     ck_assert_int_eq(fricreg_hb_create(2, 1, 3, &hb), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_set_stiffness(hb, 2, (const double[4]){2.0, -0.3, -0.3, 1.5}),
                      FRICREG_OK);
-    ck_assert_int_eq(fricreg_hb_add_elements(hb, fricreg_element_lookup("jenkins_normal"), 1, 2, Je,
-                                             pc),
-                     FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_add_elements(hb, iwan2, 1, 2, Je, pc), FRICREG_OK);
     ck_assert_int_eq(fricreg_hb_qsma_at(hb, 0, 2, a, w, z), FRICREG_EINVAL);
-    ck_assert_ptr_nonnull(strstr(fricreg_hb_errmsg(hb), "jenkins_normal"));
+    ck_assert_ptr_nonnull(strstr(fricreg_hb_errmsg(hb), "iwan_normal"));
     fricreg_hb_free(hb);
     /* contacts whose preloads at rest open one another: both press dof 0, and contact 0's
      * n0 = 5 pushes it back by 1.03, past what contact 1's n0 = 0.1 holds (N = −1.45) */
@@ -841,6 +884,7 @@ static Suite *qsma_suite(void)
     tcase_add_test(tc, sensitivities_iwan);
     tcase_add_test(tc, sensitivities_restick);
     tcase_add_test(tc, sensitivities_contact_3d);
+    tcase_add_test(tc, sensitivities_liftoff);
     suite_add_tcase(s, tc);
     tc = tcase_create("statuses");
     tcase_add_test(tc, statuses);
