@@ -58,14 +58,16 @@ extern "C" {
  *  in steps h = 2^⌊log2(a_max/256)⌋ (256 to 511 of them up to the largest amplitude), each
  *  point the static equilibrium with every element's return mapping from the point before
  *  (backward Euler, exact along a line), solved by Newton's method on the bordered consistent
- *  tangent (LAPACK's dense LU); each amplitude is reached by a step of its own from the grid
+ *  tangent K_0 + J^T E J (K_0's Cholesky factor once, and Woodbury's capacitance matrix, LAPACK's
+ *  LU, on the rows of the elements not stuck, where E is not 0); each amplitude is reached by a step of its own from the grid
  *  point below it, and ∫λ by the trapezoid over the points (its error at a kink of λ(q) at most
  *  Δλ' h²/8, Δλ' the kink's change of slope). The stuck structure of K_0 has kt on a contact's
  *  tangential rows (where mu > 0) and kn on its normal row where n0 > 0. A contact may open on
  *  the way (N <= 0: no force, its slider following) and close again.
  *
- *  The model is taken dense (a sparse one spread out), up to 4096 dofs; each event, or each
- *  Newton iteration of the marched path, costs a factor of order ndof, O(ndof³).
+ *  The model is taken dense (a sparse one spread out), up to 4096 dofs; each event costs a
+ *  factor of order ndof, O(ndof³); each Newton iteration of the marched path O(a³ + ndof²), a
+ *  the rows of the elements not stuck (a chain of 800 dofs with 100 contacts: 2.3 s).
  *
  *  Valid where QSMA is: one mode (its loading does not excite others: the mode shape may
  *  change with the slip, but the load stays M φ_k), Masing behaviour (exact where every slider

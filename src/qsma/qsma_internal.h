@@ -164,6 +164,27 @@ void fr_qsma_unit_dforce(const struct fr_qsma_unit *un, const struct fr_qsma_rec
 void fr_qsma_unit_dstate(const struct fr_qsma_unit *un, const struct fr_qsma_record *rec, int role,
                          const double *du, const double *dwold, double *dw);
 
+/* The marched path's bordered tangent [K_0 + J^T E J, −b; b^T, 0] solved on K_0's Cholesky
+ * factor and a capacitance matrix on the rows of the elements not stuck (qsma_capacitance.c's
+ * comment). create: K_0 = K + J^T diag(k_r) J factored, Y = K_0^-1 J^T, G = J Y (FRICREG_OK,
+ * FRICREG_ESINGULAR if K_0 is not positive definite, FRICREG_ENOMEM); factor: at the elements'
+ * tangents Ed [m m] (row-major, by rows of J) against k_r (FRICREG_OK, FRICREG_ESINGULAR);
+ * solve: nrhs columns of order n + 1 in place, (c, d) to (z, μ). fr_qsma_cap_free(NULL) is a
+ * no-op. */
+struct fr_qsma_cap {
+    size_t n, m, na;                 /* dofs, rows, active rows */
+    double *L, *Y, *G, *E, *C;       /* [n n], [m n], [m m], [na na] (room m m) each */
+    double *zb, *w, *t, *u, *v, bzb; /* K_t^-1 b, scratch; b^T K_t^-1 b */
+    size_t *act;                     /* [na] the active rows */
+    int *piv;
+};
+int fr_qsma_cap_create(const struct fr_qsma *s, const double *J, struct fr_qsma_cap **out);
+int fr_qsma_cap_factor(struct fr_qsma_cap *c, const double *Ed, const double *kr, const double *J,
+                       const double *b);
+void fr_qsma_cap_solve(struct fr_qsma_cap *c, const double *J, const double *b, size_t nrhs,
+                       double *B);
+void fr_qsma_cap_free(struct fr_qsma_cap *c);
+
 /* The loading path marched in the modal amplitude (qsma_march.c), for a model with 3-D
  * contacts: from the rest state under the contacts' preloads, steps of h = 2^⌊log2(a_max/256)⌋
  * in q, each a Newton solve of the bordered static equilibrium with the elements' return

@@ -50,7 +50,9 @@ struct march {
     struct fr_qsma_unit *units;
     struct fr_qsma_record *rec; /* [nu] of the last evaluation */
     double *x0, *dx0;           /* [n], [np n]: the rest state and its derivatives */
-    double *A, *r, *rhs;        /* [(n+1)²] column-major, [n + 1], [(n + 1) max(np, 1)] */
+    double *A, *r, *rhs;        /* [n²] the rest state's, [n + 1], [(n + 1) max(np, 1)] */
+    double *Ed;                 /* [m m]: the elements' tangents by rows (row-major) */
+    struct fr_qsma_cap *cap;    /* the bordered tangent's solver (qsma_capacitance.c) */
     double *ur, *f, *D, *Wn;    /* [m], [m], [9 nu], [nst] */
     int *piv;                   /* [n + 1] */
     double phimax, bmax;        /* |φ_k|∞: x's scale per unit of q; |M φ_k|∞ */
@@ -99,23 +101,28 @@ static int role_of(const struct march *mk, size_t k, size_t u)
 static void free_march(struct march *mk)
 {
     FR_FREE_ALL(mk->units, mk->rec, mk->x0, mk->piv);
+    fr_qsma_cap_free(mk->cap);
 }
 
 static int alloc_march(struct march *mk)
 {
     size_t n = mk->n, N = n + 1, np = mk->np, nst = mk->nst;
     size_t per_point = n + nst + 2 * np + np * nst;
-    size_t total = n + np * n + N * N + N + N * (np + 1) + 2 * mk->m + 9 * mk->nu + nst +
-                   3 * per_point;
+    size_t total = n + np * n + n * n + N + N * (np + 1) + 2 * mk->m + mk->m * mk->m + 9 * mk->nu +
+                   nst + 3 * per_point;
     mk->units = malloc((mk->nu + 1) * sizeof *mk->units);
     mk->rec = malloc((mk->nu + 1) * sizeof *mk->rec);
     mk->x0 = calloc(total, sizeof *mk->x0);
     mk->piv = malloc(N * sizeof *mk->piv);
     if (!mk->units || !mk->rec || !mk->x0 || !mk->piv)
         return FRICREG_ENOMEM;
+    int st = fr_qsma_cap_create(mk->s, mk->hb->J, &mk->cap);
+    if (st != FRICREG_OK)
+        return st;
     double *c = mk->x0 + n;
     mk->dx0 = take(&c, np * n);
-    mk->A = take(&c, N * N);
+    mk->A = take(&c, n * n);
+    mk->Ed = take(&c, mk->m * mk->m);
     mk->r = take(&c, N);
     mk->rhs = take(&c, N * (np + 1));
     mk->ur = take(&c, mk->m);
@@ -155,10 +162,17 @@ static void add_rows_t(const struct march *mk, const struct fr_qsma_unit *un, co
             out[i] += J[(un->row + a) * mk->n + i] * v[a];
 }
 
-static void solve(const struct march *mk, size_t N, size_t nrhs, double *b)
+/* The rest state's solve, on A's dense LU (order n). */
+static void rest_solve(const struct march *mk, size_t nrhs, double *b)
 {
-    int nn = (int)N, nr = (int)nrhs, info = 0;
+    int nn = (int)mk->n, nr = (int)nrhs, info = 0;
     dgetrs_("N", &nn, &nr, mk->A, &nn, mk->piv, b, &nn, &info, 1);
+}
+
+/* The bordered tangent's solve at the last linearization: nrhs columns of order n + 1. */
+static void solve(const struct march *mk, size_t nrhs, double *B)
+{
+    fr_qsma_cap_solve(mk->cap, mk->hb->J, mk->s->b, nrhs, B);
 }
 
 /* A_rest = K + Σ_closed kn J_n^T J_n, x_0 = A_rest^-1 (−Σ n0 J_n^T) and dx_0 = A_rest^-1
@@ -185,7 +199,7 @@ static int rest_state(struct march *mk, struct point *g)
                        "%s: the structure with its contacts closed, K + sum kn Jn^T Jn, is "
                        "singular: no rest state under the preloads",
                        mk->fn);
-    solve(mk, n, 1, mk->x0);
+    rest_solve(mk, 1, mk->x0);
     rows_of(mk, mk->x0, mk->ur);
     memset(mk->dx0, 0, np * n * sizeof *mk->dx0);
     for (size_t u = nsl; u < mk->nu; u++) {
@@ -204,7 +218,7 @@ static int rest_state(struct march *mk, struct point *g)
         }
     }
     if (np > 0)
-        solve(mk, n, np, mk->dx0);
+        rest_solve(mk, np, mk->dx0);
     /* the sliders unloaded, each contact's centred on its rest displacement */
     memcpy(g->x, mk->x0, n * sizeof *g->x);
     memset(g->W, 0, mk->nst * sizeof *g->W);
@@ -228,47 +242,37 @@ static int rest_state(struct march *mk, struct point *g)
 }
 
 /* The elements at x from the states Wold: forces f, tangents D, states Wn, records; then the
- * bordered residual into r and its matrix into A, factored. */
+ * bordered residual into r and the tangent's solver factored (qsma_capacitance.c). */
 static int linearize(struct march *mk, const double *Wold, const struct point *t)
 {
-    size_t n = mk->n, N = n + 1;
-    const double *b = mk->s->b, *J = mk->hb->J;
+    size_t n = mk->n, m = mk->m;
+    const double *b = mk->s->b;
     rows_of(mk, t->x, mk->ur);
+    memset(mk->Ed, 0, m * m * sizeof *mk->Ed);
     for (size_t u = 0; u < mk->nu; u++) {
         const struct fr_qsma_unit *un = &mk->units[u];
+        size_t rows = fr_qsma_unit_rows(un);
+        const double *D = mk->D + 9 * u;
         fr_qsma_unit_step(un, mk->ur + un->row, Wold + un->st, mk->f + un->row, mk->D + 9 * u,
                           mk->Wn + un->st, &mk->rec[u]);
+        for (size_t a = 0; a < rows; a++)
+            for (size_t c = 0; c < rows; c++)
+                mk->Ed[(un->row + a) * m + un->row + c] += D[a * rows + c];
     }
     double cq = -t->q;
     mk->fscale = 0.0;
     for (size_t i = 0; i < n; i++) {
         double ri = -t->lambda * b[i], kx = 0.0;
-        for (size_t j = 0; j < n; j++) {
+        for (size_t j = 0; j < n; j++)
             kx += mk->s->K[i * n + j] * t->x[j];
-            mk->A[j * N + i] = mk->s->K[i * n + j];
-        }
         mk->fscale = fmax(mk->fscale, fmax(fabs(kx), fabs(ri)));
         mk->r[i] = ri + kx;
-        mk->A[n * N + i] = -b[i];
-        mk->A[i * N + n] = b[i];
         cq += b[i] * (t->x[i] - mk->x0[i]);
     }
     mk->r[n] = cq;
-    mk->A[n * N + n] = 0.0;
-    for (size_t u = 0; u < mk->nu; u++) {
-        const struct fr_qsma_unit *un = &mk->units[u];
-        size_t rows = fr_qsma_unit_rows(un);
-        const double *D = mk->D + 9 * u;
-        add_rows_t(mk, un, mk->f + un->row, mk->r);
-        for (size_t a = 0; a < rows; a++) /* A += J_u^T D J_u, row a of J_u^T D at a time */
-            for (size_t c = 0; c < rows; c++) {
-                const double *Ja = J + (un->row + a) * n, *Jc = J + (un->row + c) * n;
-                for (size_t i = 0; i < n && D[a * rows + c] != 0.0; i++)
-                    for (size_t j = 0; j < n && Ja[i] != 0.0; j++)
-                        mk->A[j * N + i] += Ja[i] * D[a * rows + c] * Jc[j];
-            }
-    }
-    return fr_qsma_lu(mk->A, N, mk->piv);
+    for (size_t u = 0; u < mk->nu; u++)
+        add_rows_t(mk, &mk->units[u], mk->f + mk->units[u].row, mk->r);
+    return fr_qsma_cap_factor(mk->cap, mk->Ed, mk->s->kr, mk->hb->J, b);
 }
 
 /* Newton's method for point t (its q set, x and λ its guess) from the states Wold: FRICREG_OK
@@ -292,7 +296,7 @@ static int newton(struct march *mk, const double *Wold, struct point *t)
         }
         for (size_t i = 0; i <= n; i++)
             mk->r[i] = -mk->r[i];
-        solve(mk, n + 1, 1, mk->r);
+        solve(mk, 1, mk->r);
         last = 0.0;
         for (size_t i = 0; i < n; i++) {
             t->x[i] += mk->r[i];
@@ -329,7 +333,7 @@ static void sensitivities(struct march *mk, const struct point *s, struct point 
         }
     }
     if (np > 0)
-        solve(mk, N, np, mk->rhs);
+        solve(mk, np, mk->rhs);
     for (size_t k = 0; k < np; k++) {
         const double *dx = mk->rhs + k * N;
         t->dl[k] = dx[n];
@@ -402,7 +406,7 @@ static int target(struct march *mk, const struct point *g, double a, size_t i,
     size_t N = mk->n + 1, np = mk->np;
     memset(mk->r, 0, N * sizeof *mk->r); /* dλ/dq on the factor at the target */
     mk->r[mk->n] = 1.0;
-    solve(mk, N, 1, mk->r);
+    solve(mk, 1, mk->r);
     out->lambda[i] = side->lambda;
     out->integral[i] = side->I;
     out->slope[i] = mk->r[mk->n];
@@ -467,8 +471,10 @@ int fr_qsma_march(fricreg_hb *hb, const char *fn, struct fr_qsma *s, size_t na, 
     int status = alloc_march(&mk);
     if (status != FRICREG_OK) {
         free_march(&mk);
-        return fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for the marched path of %zu dofs", fn,
-                       s->n);
+        return status == FRICREG_ESINGULAR
+                   ? fr_fail(hb, status, "%s: the stuck structure's K_0 is singular", fn)
+                   : fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for the marched path of %zu dofs",
+                             fn, s->n);
     }
     for (size_t i = 0; i < s->n; i++) {
         mk.phimax = fmax(mk.phimax, fabs(s->phi[i]));
