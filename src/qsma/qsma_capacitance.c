@@ -35,7 +35,7 @@ int fr_qsma_cap_create(const struct fr_qsma *s, const double *J, struct fr_qsma_
         return FRICREG_ENOMEM;
     c->n = n;
     c->m = m;
-    c->L = malloc((n * n + 2 * n * m + 3 * m * m + 2 * n + 3 * m + 1) * sizeof *c->L);
+    c->L = malloc((n * n + n * m + 3 * m * m + n + 2 * m + 1) * sizeof *c->L);
     c->act = malloc((m + 1) * sizeof *c->act);
     c->piv = malloc((m + 1) * sizeof *c->piv);
     if (c->L == NULL || c->act == NULL || c->piv == NULL) {
@@ -47,10 +47,8 @@ int fr_qsma_cap_create(const struct fr_qsma *s, const double *J, struct fr_qsma_
     c->E = c->G + m * m;
     c->C = c->E + m * m;
     c->zb = c->C + m * m;
-    c->w = c->zb + n;
-    c->t = c->w + n;
+    c->t = c->zb + n;
     c->u = c->t + m;
-    c->v = c->u + m;
     fr_qsma_assemble(s, J, c->L); /* K_0, symmetric: either order */
     int nn = (int)n, mm = (int)m, info = 0;
     dpotrf_("L", &nn, c->L, &nn, &info, 1);

@@ -172,10 +172,10 @@ void fr_qsma_unit_dstate(const struct fr_qsma_unit *un, const struct fr_qsma_rec
  * solve: nrhs columns of order n + 1 in place, (c, d) to (z, μ). fr_qsma_cap_free(NULL) is a
  * no-op. */
 struct fr_qsma_cap {
-    size_t n, m, na;                 /* dofs, rows, active rows */
-    double *L, *Y, *G, *E, *C;       /* [n n], [m n], [m m], [na na] (room m m) each */
-    double *zb, *w, *t, *u, *v, bzb; /* K_t^-1 b, scratch; b^T K_t^-1 b */
-    size_t *act;                     /* [na] the active rows */
+    size_t n, m, na;           /* dofs, rows, active rows */
+    double *L, *Y, *G, *E, *C; /* [n n], [m n], [m m], [na na] (room m m) each */
+    double *zb, *t, *u, bzb;   /* [n] K_t^-1 b, [m] scratch each; b^T K_t^-1 b */
+    size_t *act;               /* [na] the active rows */
     int *piv;
 };
 int fr_qsma_cap_create(const struct fr_qsma *s, const double *J, struct fr_qsma_cap **out);
