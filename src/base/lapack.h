@@ -32,6 +32,10 @@ void dtrsm_(const char *side, const char *uplo, const char *transa, const char *
             const int *n, const double *alpha, const double *a, const int *lda, double *b,
             const int *ldb, size_t side_len, size_t uplo_len, size_t transa_len, size_t diag_len);
 
+void zgemm_(const char *transa, const char *transb, const int *m, const int *n, const int *k,
+            const double *alpha, const double *a, const int *lda, const double *b, const int *ldb,
+            const double *beta, double *c, const int *ldc, size_t transa_len, size_t transb_len);
+
 /* LAPACK: linear systems */
 void dgesv_(const int *n, const int *nrhs, double *a, const int *lda, int *ipiv, double *b,
             const int *ldb, int *info);

@@ -229,6 +229,7 @@ int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv)
         return status;
     hb->factored_omega = omega;
     hb->factored_deriv = deriv;
+    hb->factor_serial++;
     return FRICREG_OK;
 }
 
