@@ -71,8 +71,7 @@ static void *room(size_t count, size_t size)
     return count > 0 && count <= SIZE_MAX / size ? malloc(count * size) : NULL;
 }
 
-/* The room for hb's shape, kept while m and H stay; 0 when there is none. */
-static int reserve(fricreg_hb *hb)
+int fr_hb_capacitance_reserve(fricreg_hb *hb)
 {
     struct fr_hb_capacitance *c = hb->capacitance;
     size_t m = hb->m, H1 = (size_t)hb->H + 1, nq = hb->nq;
@@ -151,9 +150,9 @@ static int in_l(const fricreg_hb *hb, size_t r, int h, size_t e, double *k)
 size_t fr_hb_capacitance_split(fricreg_hb *hb, size_t nd, const double *col, const double *row)
 {
     size_t m = hb->m, nc = hb->nc, nq = hb->nq;
-    if (!reserve(hb))
-        return nq + 1;
     struct fr_hb_capacitance *c = hb->capacitance;
+    if (c == NULL || c->m != m || c->H1 != (size_t)hb->H + 1) /* no room: the dense LU */
+        return nq + 1;
     for (size_t e = 0; e < hb->count; e++)
         for (size_t r = hb->erow[e]; r < hb->erow[e + 1]; r++)
             c->elem[r] = e;

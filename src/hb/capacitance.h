@@ -5,12 +5,16 @@
 
 #include "hb_internal.h"
 
+/* The room for the model's shape (about 32 (H + 1) m² + 16 m² bytes), kept while m and H
+ * stay, so that a solve allocates nothing; 1, or 0 (none: the split says nq + 1). */
+int fr_hb_capacitance_reserve(fricreg_hb *hb);
+
 /* Newton's matrix I + Ĝ Ĵ at the Jacobians in jq and the factored Ω's G_h (nd = nq), or
  * bordered by the column col[nq] and the row row[nq + 1] (nd = nq + 1, col and row copied),
  * split into the rows of Ĵ that are a stiffness on the diagonal (a stuck element's harmonics,
  * a closed contact's normal rows, the rows of no force) and the s others. Returns s, the order
- * of the capacitance matrix it would factor (plus the border); nq + 1 when it has no room
- * (FRICREG_ENOMEM is then the dense path's to meet). Nothing factored yet. */
+ * of the capacitance matrix it would factor (plus the border); nq + 1 without the room
+ * (fr_hb_capacitance_reserve's). Nothing factored yet. */
 size_t fr_hb_capacitance_split(fricreg_hb *hb, size_t nd, const double *col, const double *row);
 
 /* Factors the split's matrix (once; later calls return at once): each harmonic's stuck block

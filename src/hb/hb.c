@@ -134,6 +134,7 @@ int fr_hb_clone(const fricreg_hb *src, int harmonics, fricreg_hb **out)
     hb->max_iter = src->max_iter;
     hb->capacitance_min = src->capacitance_min;
     hb->capacitance_share = src->capacitance_share;
+    fr_hb_newton_matrix_room(hb);
     hb->monitor = src->monitor;
     hb->monitor_user = src->monitor_user;
     hb->max_iterations = src->max_iterations;

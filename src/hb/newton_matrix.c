@@ -22,6 +22,14 @@ static void dense(fricreg_hb *hb, size_t nd, const double *col, const double *ro
     memcpy(hb->A + nq * nd, row, nd * sizeof(double));
 }
 
+void fr_hb_newton_matrix_room(fricreg_hb *hb)
+{
+    if (hb->have_elements && hb->nq >= hb->capacitance_min)
+        (void)fr_hb_capacitance_reserve(hb); /* none: the dense LU serves */
+    else
+        fr_hb_capacitance_free(hb);
+}
+
 void fr_hb_newton_matrix(fricreg_hb *hb, size_t nd, const double *col, const double *row)
 {
     size_t nq = hb->nq;

@@ -98,6 +98,7 @@ static void solve(fricreg_hb *hb, int by_capacitance, size_t nd, const double *c
 {
     hb->capacitance_min = by_capacitance ? 0 : SIZE_MAX;
     hb->capacitance_share = 2.0;
+    fr_hb_newton_matrix_room(hb);
     fr_hb_newton_matrix(hb, nd, col, row);
     ck_assert_int_eq(hb->by_capacitance, by_capacitance);
     memcpy(x, rhs, nd * sizeof(double));
@@ -135,6 +136,10 @@ START_TEST(against_dense)
             col[j] = sin(2.0 + 0.9 * (double)j);
     }
     double sd, sc, scale;
+    ck_assert_ptr_null(hb->capacitance); /* nq = 56 < FR_HB_CAPACITANCE_MIN: no room */
+    hb->capacitance_min = 0;             /* and without the room the dense LU serves */
+    fr_hb_newton_matrix(hb, nd, col, row);
+    ck_assert_int_eq(hb->by_capacitance, 0);
     solve(hb, 0, nd, col, row, rhs, xd, &sd);
     solve(hb, 1, nd, col, row, rhs, xc, &sc);
     double d = distance(xc, xd, nd, &scale);
@@ -170,6 +175,7 @@ START_TEST(continuation_alike)
     for (int k = 0; k < 2; k++) {
         hb[k]->capacitance_min = k ? 0 : SIZE_MAX;
         hb[k]->capacitance_share = 2.0;
+        fr_hb_newton_matrix_room(hb[k]);
         ck_assert_msg(fricreg_hb_continue(hb[k], 0.3, 2.5, hb[k]->nq, NULL) == FRICREG_OK, "%s",
                       fricreg_hb_errmsg(hb[k]));
         points[k] = fricreg_hb_points(hb[k]);
@@ -204,6 +210,7 @@ START_TEST(stuck_singular)
     ck_assert_int_eq(fr_hb_residual(hb, "test", q, hb->R, 1), FRICREG_OK);
     hb->capacitance_min = 0;
     hb->capacitance_share = 2.0;
+    fr_hb_newton_matrix_room(hb);
     fr_hb_newton_matrix(hb, nq, NULL, NULL);
     ck_assert_int_eq(hb->by_capacitance, 1);
     ck_assert_int_eq(fr_hb_newton_solve(hb, "test", x, x), FRICREG_ESINGULAR);
@@ -235,6 +242,8 @@ START_TEST(negative_mean_block)
                           xc[2 * (2 * H + 1)], sd, sc, scale;
     ck_assert_int_eq(fr_hb_factor(hb, "test", 0.7, 0), FRICREG_OK);
     ck_assert_int_eq(fr_hb_residual(hb, "test", q, hb->R, 1), FRICREG_OK);
+    hb->capacitance_min = 0;
+    fr_hb_newton_matrix_room(hb);
     ck_assert_uint_eq(fr_hb_capacitance_split(hb, nq, NULL, NULL), 0);
     solve(hb, 0, nq, NULL, NULL, rhs, xd, &sd);
     solve(hb, 1, nq, NULL, NULL, rhs, xc, &sc);
