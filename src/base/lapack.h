@@ -15,6 +15,9 @@ void daxpy_(const int *n, const double *alpha, const double *x, const int *incx,
             const int *incy);
 
 /* BLAS level 2 */
+void zgemv_(const char *trans, const int *m, const int *n, const double *alpha, const double *a,
+            const int *lda, const double *x, const int *incx, const double *beta, double *y,
+            const int *incy, size_t trans_len);
 void dspmv_(const char *uplo, const int *n, const double *alpha, const double *ap, const double *x,
             const int *incx, const double *beta, double *y, const int *incy, size_t uplo_len);
 void dtrsv_(const char *uplo, const char *trans, const char *diag, const int *n, const double *a,
