@@ -229,6 +229,13 @@ int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv)
     hb->factored_omega = NAN;
     int status = FRICREG_OK;
     for (int h = 0; h <= hb->H; h++) {
+        if (h == 0 && !hb->sparse && hb->k_kept == hb->model_serial + 1) {
+            if (deriv) { /* D_0 = K: Y_0, G_0 kept, their Ω derivatives 0 */
+                memset(hb->dG, 0, 2 * m * m * sizeof(double));
+                memset(hb->dql, 0, 2 * m * sizeof(double));
+            }
+            continue;
+        }
         if (hb->sparse) {
             status = fr_hb_sparse_solve(hb, fn, h, omega);
         } else {
@@ -241,6 +248,8 @@ int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv)
         const double *Y = hb->Y + 2 * (size_t)h * n * w;
         double *G = hb->G + 2 * (size_t)h * m * m, *q = hb->ql + 2 * (size_t)h * m;
         fr_hb_project(hb, NULL, Y, 1.0, G, q);
+        if (h == 0 && !hb->sparse)
+            hb->k_kept = hb->model_serial + 1;
         double *dG = hb->dG + 2 * (size_t)h * m * m, *dq = hb->dql + 2 * (size_t)h * m;
         if (!deriv)
             continue;

@@ -113,6 +113,8 @@ struct fricreg_hb {
     double factored_omega;       /* NaN: none */
     int factored_deriv;          /* the Ω derivatives dG, dql are there too */
     unsigned long factor_serial; /* counts the factorizations: G_h's identity */
+    unsigned long k_kept;        /* model_serial + 1 while Y_0, G_0 hold K's solves (D_0 = K
+                                    at every Ω; dense models), 0: not */
     double *D;                   /* [n n] complex: one D_h at a time, LU-factored in place */
     int *piv;                    /* [n] its row interchanges (lu.c: LAPACK's) */
     double *Y;    /* [(H+1) n (m+1)] complex: D_h^-1 [J^T | P_h], row k of harmonic h at
