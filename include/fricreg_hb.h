@@ -51,7 +51,10 @@
  * element has its own rows, in the order added.
  *
  * Cost per frequency: H + 1 complex LU factors of ndof x ndof and (H + 1)(m + 1) solves, then
- * per Newton iteration m AFTs (O(H³) each) and a real LU of order m (2H + 1). A dense model
+ * per Newton iteration m AFTs (O(H³) each) and a real LU of order m (2H + 1), or from
+ * m (2H + 1) = 512 on, where most rows of the elements' Jacobian are a stiffness on the
+ * diagonal (stuck elements, closed contacts' normal rows), the LU of its capacitance on the
+ * other rows (docs/harmonic_balance.md, "Size"). A dense model
  * (the dense setters) is factored by a complex LU with partial pivoting, O(H ndof³): for small
  * to medium ndof (at most 4096). Both dense LUs are fricreg's own, on memory allocated at
  * create and by the element setters, so a dense solve allocates nothing. A sparse

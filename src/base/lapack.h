@@ -15,6 +15,9 @@ void daxpy_(const int *n, const double *alpha, const double *x, const int *incx,
             const int *incy);
 
 /* BLAS level 2 */
+void zgemv_(const char *trans, const int *m, const int *n, const double *alpha, const double *a,
+            const int *lda, const double *x, const int *incx, const double *beta, double *y,
+            const int *incy, size_t trans_len);
 void dspmv_(const char *uplo, const int *n, const double *alpha, const double *ap, const double *x,
             const int *incx, const double *beta, double *y, const int *incy, size_t uplo_len);
 void dtrsv_(const char *uplo, const char *trans, const char *diag, const int *n, const double *a,
@@ -31,6 +34,10 @@ void dsyrk_(const char *uplo, const char *trans, const int *n, const int *k, con
 void dtrsm_(const char *side, const char *uplo, const char *transa, const char *diag, const int *m,
             const int *n, const double *alpha, const double *a, const int *lda, double *b,
             const int *ldb, size_t side_len, size_t uplo_len, size_t transa_len, size_t diag_len);
+
+void zgemm_(const char *transa, const char *transb, const int *m, const int *n, const int *k,
+            const double *alpha, const double *a, const int *lda, const double *b, const int *ldb,
+            const double *beta, double *c, const int *ldc, size_t transa_len, size_t transb_len);
 
 /* LAPACK: linear systems */
 void dgesv_(const int *n, const int *nrhs, double *a, const int *lda, int *ipiv, double *b,

@@ -15,15 +15,14 @@
 #include "hb/dynamic.h"
 #include "hb/residual.h"
 #include "hb/monitor.h"
+#include "hb/newton_matrix.h"
 
 /* The sign of the determinant of the LU factor in A (order ld, pivots piv2): det A = det A^T,
  * U's diagonal's signs times -1 for each interchange (LAPACK's pivots count from 1). */
 double fr_hb_det_sign(const fricreg_hb *hb, size_t ld)
 {
-    double sign = 1.0;
-    for (size_t k = 0; k < ld; k++)
-        sign *= (hb->A[k * ld + k] < 0.0 ? -1.0 : 1.0) * (hb->piv2[k] != (int)k + 1 ? -1.0 : 1.0);
-    return sign;
+    (void)ld;
+    return fr_hb_newton_det_sign(hb);
 }
 
 /* Residual (scaled) at y into R[nq + 1] (the arclength equation last, when yp is given) and
@@ -50,12 +49,11 @@ int fr_hb_bordered(fricreg_hb *hb, const char *fn, const struct fr_hb_branch *b,
         fr_hb_dlevel(hb, hb->rw);
     else
         fr_hb_domega(hb, hb->rw);
-    fr_hb_matrix(hb, hb->jq, hb->A, ld);
     for (size_t j = 0; j < nq; j++) {
         hb->R[j] /= b->qs;
-        hb->A[j * ld + nq] = hb->rw[j] * b->ws / b->qs;
+        hb->rw[j] *= b->ws / b->qs;
     }
-    memcpy(hb->A + nq * ld, row, ld * sizeof(double));
+    fr_hb_newton_matrix(hb, ld, hb->rw, row);
     return FRICREG_OK;
 }
 
@@ -66,7 +64,7 @@ int fr_hb_tangent(fricreg_hb *hb, const char *fn, double *t)
     size_t ld = hb->nq + 1;
     memset(t, 0, ld * sizeof(double));
     t[ld - 1] = 1.0;
-    int status = fr_hb_lu_solve(hb, fn, ld, t, t);
+    int status = fr_hb_newton_solve(hb, fn, t, t);
     if (status != FRICREG_OK)
         return status;
     double s = sqrt(fr_hb_dot(t, t, ld));
@@ -186,7 +184,7 @@ static int corrector_direction(void *user)
     size_t ld = hb->nq + 1;
     for (size_t j = 0; j < ld; j++)
         hb->dy[j] = -hb->R[j];
-    int status = fr_hb_lu_solve(hb, c->fn, ld, hb->dy, hb->dy);
+    int status = fr_hb_newton_solve(hb, c->fn, hb->dy, hb->dy);
     if (status != FRICREG_OK)
         return status;
     double step = sqrt(fr_hb_dot(hb->dy, hb->dy, ld));

@@ -13,6 +13,7 @@
 #include "dynamic.h"
 #include "sparse.h"
 #include "lu.h"
+#include "base/lapack.h"
 
 /* (a + ib)(c + id) accumulated into out[0..1] with the sign s. */
 static inline void cmac(double *out, double s, double a, double b, double c, double d)
@@ -157,21 +158,50 @@ void fr_hb_project(const fricreg_hb *hb, const double *left, const double *B, do
     }
 }
 
-/* Z = D_h' Y_h, D_h' = dD_h/dΩ = −2 h² Ω M + i h C. */
+/* Z = D_h' Y_h, D_h' = dD_h/dΩ = −2 h² Ω M + i h C_d (C_d the damping in force:
+ * c_C C + c_K K + c_M M), by BLAS on Y_h as the real n × 2 (m + 1) matrix of its interleaved
+ * parts (M, K, C are real): Z = C_d Y_h, then i h Z, then Z += −2 h² Ω M Y_h. Row-major
+ * products A Y are LAPACK's column-major (A Y)^T = Y^T A^T. */
 static void derivative_times_y(fricreg_hb *hb, int h, double omega)
 {
     size_t n = hb->n, w = hb->m + 1;
+    int rows = (int)n, cols = (int)(2 * w);
     const double *Y = hb->Y + 2 * (size_t)h * n * w;
-    memset(hb->Z, 0, 2 * n * w * sizeof(double));
-    for (size_t k = 0; k < n; k++)
-        for (size_t l = 0; l < n; l++) {
-            double re = -2.0 * h * h * omega * hb->M[k * n + l], im = h * damping(hb, k * n + l);
-            if (re == 0.0 && im == 0.0)
-                continue;
-            for (size_t c = 0; c < w; c++)
-                cmac(hb->Z + 2 * (k * w + c), 1.0, re, im, Y[2 * (l * w + c)],
-                     Y[2 * (l * w + c) + 1]);
-        }
+    double cm = -hb->xi, ck = 0.0, cc = 0.0, beta = 0.0, one = 1.0;
+    if (!hb->no_c && hb->rayleigh) {
+        cm += hb->a0;
+        ck = hb->a1;
+    } else if (!hb->no_c) {
+        cc = 1.0;
+    }
+    const double *A[3] = {hb->C, hb->K, hb->M}, coef[3] = {cc, ck, cm};
+    for (int t = 0; t < 3; t++) {
+        if (coef[t] == 0.0)
+            continue;
+        dgemm_("N", "N", &cols, &rows, &rows, &coef[t], Y, &cols, A[t], &rows, &beta, hb->Z, &cols,
+               1, 1);
+        beta = 1.0;
+    }
+    if (beta == 0.0)
+        memset(hb->Z, 0, 2 * n * w * sizeof(double));
+    for (size_t k = 0; k < n * w; k++) { /* i h Z */
+        double re = hb->Z[2 * k];
+        hb->Z[2 * k] = -h * hb->Z[2 * k + 1];
+        hb->Z[2 * k + 1] = h * re;
+    }
+    double a = -2.0 * h * h * omega;
+    dgemm_("N", "N", &cols, &rows, &rows, &a, Y, &cols, hb->M, &rows, &one, hb->Z, &cols, 1, 1);
+}
+
+/* dG_h = −Y_J^T Z_J and dql_h = −Y_J^T z (Y_J, Z_J: the first m columns of Y_h and Z = D_h' Y_h,
+ * z the last), by zgemm and zgemv (not conjugated): the row-major dG is the column-major
+ * (−Z_J^T Y_J), and the row-major n × (m + 1) Y, Z are column-major (m + 1) × n. */
+static void project_derivative(fricreg_hb *hb, const double *Y, double *dG, double *dq)
+{
+    int m = (int)hb->m, n = (int)hb->n, w = m + 1, inc = 1;
+    const double minus[2] = {-1.0, 0.0}, zero[2] = {0.0, 0.0};
+    zgemm_("N", "T", &m, &m, &n, minus, hb->Z, &w, Y, &w, zero, dG, &m, 1, 1);
+    zgemv_("N", &m, &n, minus, Y, &w, hb->Z + 2 * (size_t)m, &w, zero, dq, &inc, 1);
 }
 
 /* The solves and the condensation are finite: a model, element or excitation scale near the
@@ -199,6 +229,13 @@ int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv)
     hb->factored_omega = NAN;
     int status = FRICREG_OK;
     for (int h = 0; h <= hb->H; h++) {
+        if (h == 0 && !hb->sparse && hb->k_kept == hb->model_serial + 1) {
+            if (deriv) { /* D_0 = K: Y_0, G_0 kept, their Ω derivatives 0 */
+                memset(hb->dG, 0, 2 * m * m * sizeof(double));
+                memset(hb->dql, 0, 2 * m * sizeof(double));
+            }
+            continue;
+        }
         if (hb->sparse) {
             status = fr_hb_sparse_solve(hb, fn, h, omega);
         } else {
@@ -211,6 +248,8 @@ int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv)
         const double *Y = hb->Y + 2 * (size_t)h * n * w;
         double *G = hb->G + 2 * (size_t)h * m * m, *q = hb->ql + 2 * (size_t)h * m;
         fr_hb_project(hb, NULL, Y, 1.0, G, q);
+        if (h == 0 && !hb->sparse)
+            hb->k_kept = hb->model_serial + 1;
         double *dG = hb->dG + 2 * (size_t)h * m * m, *dq = hb->dql + 2 * (size_t)h * m;
         if (!deriv)
             continue;
@@ -223,12 +262,13 @@ int fr_hb_factor(fricreg_hb *hb, const char *fn, double omega, int deriv)
             fr_hb_sparse_derivative(hb, h, omega);
         else
             derivative_times_y(hb, h, omega);
-        fr_hb_project(hb, Y, hb->Z, -1.0, dG, dq);
+        project_derivative(hb, Y, dG, dq);
     }
     if ((status = check_finite(hb, fn, omega)) != FRICREG_OK)
         return status;
     hb->factored_omega = omega;
     hb->factored_deriv = deriv;
+    hb->factor_serial++;
     return FRICREG_OK;
 }
 

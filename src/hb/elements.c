@@ -9,6 +9,7 @@
 #include "element_store.h"
 #include "elements.h"
 #include "model.h"
+#include "newton_matrix.h"
 #include "busy.h"
 
 int fr_hb_check_entries(fricreg_hb *hb, const char *fn, size_t rows, size_t ndof, const double *J,
@@ -45,6 +46,7 @@ static int install(fricreg_hb *hb, const char *fn, const struct fr_hb_block *blk
 {
     if (fr_hb_store_add(hb, blk, 1) != FRICREG_OK)
         return fr_fail(hb, FRICREG_ENOMEM, "%s: no memory for %zu %s", fn, blk->me, what);
+    fr_hb_newton_matrix_room(hb);
     fr_hb_invalidate(hb);
     return FRICREG_OK;
 }

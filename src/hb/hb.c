@@ -14,6 +14,8 @@
 #include "joint/aft_march.h"
 #include "rows.h"
 #include "sparse.h"
+#include "capacitance.h"
+#include "newton_matrix.h"
 #include "hb.h"
 #include "busy.h"
 #include "base/free_all.h"
@@ -49,7 +51,9 @@ int fricreg_hb_create(size_t ndof, size_t m, int harmonics, fricreg_hb **out)
                        .max_points = 2000,
                        .level = 1.0,
                        .level_sol = 1.0,
-                       .factored_omega = NAN};
+                       .factored_omega = NAN,
+                       .capacitance_min = FR_HB_CAPACITANCE_MIN,
+                       .capacitance_share = FR_HB_CAPACITANCE_SHARE};
     /* up to 4096 dofs the dense model, as the dense setters leave it; beyond, sparse only */
     int dense = n <= MAX_DENSE_DOFS;
     hb->M = dense ? calloc(3 * n * n, sizeof(double)) : NULL;  /* untouched until set */
@@ -100,6 +104,7 @@ void fricreg_hb_free(fricreg_hb *hb)
     FR_FREE_ALL(hb->half, hb->sk, hb->nl, hb->erow, hb->kind, hb->etype, hb->ep);
     fr_aft_march_free(hb->march);
     fr_hb_sparse_free(hb);
+    fr_hb_capacitance_free(hb);
     fr_cholmod_finish(&hb->cc);
     free(hb);
 }
@@ -127,6 +132,9 @@ int fr_hb_clone(const fricreg_hb *src, int harmonics, fricreg_hb **out)
     memcpy(hb->pc, src->pc, 2 * n * sizeof(double)); /* pc, ps */
     hb->tol = src->tol;
     hb->max_iter = src->max_iter;
+    hb->capacitance_min = src->capacitance_min;
+    hb->capacitance_share = src->capacitance_share;
+    fr_hb_newton_matrix_room(hb);
     hb->monitor = src->monitor;
     hb->monitor_user = src->monitor_user;
     hb->max_iterations = src->max_iterations;

@@ -110,19 +110,22 @@ struct fricreg_hb {
     double *half;
 
     /* The factors of one frequency (dynamic.c), valid while factored_omega is that Ω. */
-    double factored_omega; /* NaN: none */
-    int factored_deriv;    /* the Ω derivatives dG, dql are there too */
-    double *D;             /* [n n] complex: one D_h at a time, LU-factored in place */
-    int *piv;              /* [n] its row interchanges (lu.c: LAPACK's) */
-    double *Y;             /* [(H+1) n (m+1)] complex: D_h^-1 [J^T | P_h], row k of harmonic h at
+    double factored_omega;       /* NaN: none */
+    int factored_deriv;          /* the Ω derivatives dG, dql are there too */
+    unsigned long factor_serial; /* counts the factorizations: G_h's identity */
+    unsigned long k_kept;        /* model_serial + 1 while Y_0, G_0 hold K's solves (D_0 = K
+                                    at every Ω; dense models), 0: not */
+    double *D;                   /* [n n] complex: one D_h at a time, LU-factored in place */
+    int *piv;                    /* [n] its row interchanges (lu.c: LAPACK's) */
+    double *Y;    /* [(H+1) n (m+1)] complex: D_h^-1 [J^T | P_h], row k of harmonic h at
                      Y[(h n + k)(m+1)], column m the load (0 but for h = 1) */
-    double *Z;             /* [n (m+1)] complex scratch: D_h' Y_h, or (sparse.c) the right-hand
+    double *Z;    /* [n (m+1)] complex scratch: D_h' Y_h, or (sparse.c) the right-hand
                               sides of Y_h, solved in place */
-    double *G;             /* [(H+1) m m] complex: G_h = J D_h^-1 J^T */
-    double *ql;            /* [(H+1) m] complex: J D_h^-1 P_h */
-    double *dG;            /* [(H+1) m m] complex: dG_h/dΩ */
-    double *dql;           /* [(H+1) m] complex: dql_h/dΩ */
-    double *colw;          /* [n] complex scratch: one column */
+    double *G;    /* [(H+1) m m] complex: G_h = J D_h^-1 J^T */
+    double *ql;   /* [(H+1) m] complex: J D_h^-1 P_h */
+    double *dG;   /* [(H+1) m m] complex: dG_h/dΩ */
+    double *dql;  /* [(H+1) m] complex: dql_h/dΩ */
+    double *colw; /* [n] complex scratch: one column */
 
     /* The sparse model (sparse.c): M, C, K as the upper triangles of their symmetric parts,
      * and D_h's pattern, the union of theirs with both triangles (compressed columns, rows
@@ -140,18 +143,26 @@ struct fricreg_hb {
     struct fr_hb_lu *lu;      /* [H + 1]: each harmonic's factor (sparse.c) */
 
     /* Newton (residual.c, newton.c; forced/corrector.c, forced/arclength.c) */
-    double *fq;     /* [nq] element force coefficients at the last evaluation */
-    double *jq;     /* [ejq[count] nc²] their Jacobians, element e's block [(rows nc)²] at
+    double *fq;   /* [nq] element force coefficients at the last evaluation */
+    double *jq;   /* [ejq[count] nc²] their Jacobians, element e's block [(rows nc)²] at
                        fr_hb_block_of */
-    double *R;      /* [nq + 1] residual (continuation: the arclength equation last) */
-    double *A;      /* [(nq + 1)^2] Newton's matrix, LU-factored in place */
-    double *rw;     /* [nq + 1] dR/dΩ, then scratch */
-    double *dy;     /* [nq + 1] Newton's step */
-    double *qw;     /* [nq + 1] iterate (continuation: Ω last) */
-    double *qt;     /* [nq + 1] line search trial */
-    double *cont;   /* [FR_HB_CONT_VECTORS (nq + 1)] the forced response's continuation's room */
-    double *qjac;   /* [nq] the q of the last residual with Jacobians (the monodromy's orbit) */
-    int *piv2;      /* [nq + 1] A's row interchanges (lu.c: LAPACK's) */
+    double *R;    /* [nq + 1] residual (continuation: the arclength equation last) */
+    double *A;    /* [(nq + 1)^2] Newton's matrix, LU-factored in place */
+    double *rw;   /* [nq + 1] dR/dΩ, then scratch */
+    double *dy;   /* [nq + 1] Newton's step */
+    double *qw;   /* [nq + 1] iterate (continuation: Ω last) */
+    double *qt;   /* [nq + 1] line search trial */
+    double *cont; /* [FR_HB_CONT_VECTORS (nq + 1)] the forced response's continuation's room */
+    double *qjac; /* [nq] the q of the last residual with Jacobians (the monodromy's orbit) */
+    int *piv2;    /* [nq + 1] A's row interchanges (lu.c: LAPACK's) */
+    /* Newton's matrix recorded (newton_matrix.c): its order, whether by the capacitance
+     * (capacitance.c's room, NULL: none yet) and whether factored; the least nq and the
+     * share of non-diagonal rows for the capacitance (FR_HB_CAPACITANCE_MIN, _SHARE) */
+    size_t newton_nd;
+    int by_capacitance, newton_factored;
+    struct fr_hb_capacitance *capacitance;
+    size_t capacitance_min;
+    double capacitance_share;
     int iterations; /* of the last Newton solve */
 
     /* the last solution (its stability, when on, is floquet/'s) */

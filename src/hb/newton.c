@@ -12,6 +12,7 @@
 #include "joint/element_kind.h"
 #include "residual.h"
 #include "newton.h"
+#include "newton_matrix.h"
 #include "monitor.h"
 
 static double norm2(const double *v, size_t n)
@@ -83,8 +84,8 @@ int fr_hb_guess(fricreg_hb *hb, const char *fn, int stuck)
                 J[i * b + i] = r == normal_row ? hb->nl[3 * me + e] : hb->nl[e];
             }
     }
-    fr_hb_matrix(hb, hb->jq, hb->A, nq);
-    return fr_hb_lu_solve(hb, fn, nq, hb->qw, hb->qw);
+    fr_hb_newton_matrix(hb, nq, NULL, NULL);
+    return fr_hb_newton_solve(hb, fn, hb->qw, hb->qw);
 }
 
 /* A trial qw + alpha dy into qt and its residual rw; accepted by Armijo on |R| (or at once
@@ -118,10 +119,10 @@ static int hb_trial(void *user, double alpha, int *accept)
 /* Newton's direction dy = −A⁻¹ R at qw from the Jacobians in jq (qw's, or a trial's). */
 static int direction(fricreg_hb *hb, const char *fn)
 {
-    fr_hb_matrix(hb, hb->jq, hb->A, hb->nq);
+    fr_hb_newton_matrix(hb, hb->nq, NULL, NULL);
     for (size_t j = 0; j < hb->nq; j++)
         hb->dy[j] = -hb->R[j];
-    return fr_hb_lu_solve(hb, fn, hb->nq, hb->dy, hb->dy);
+    return fr_hb_newton_solve(hb, fn, hb->dy, hb->dy);
 }
 
 /* Backtracking from qw along dy: the first of alpha = 1, 1/2, ..., 1/1024 whose residual
