@@ -10,7 +10,7 @@
  * the disks have a common point the march ends in a stick throughout (any common point is a
  * periodic state), otherwise in a unique periodic slip.
  *   - The contact opens in the period: the slider follows u while open, so one period from the
- *     last open sample is periodic (as aft_normal.c).
+ *     last open sample is periodic (as aft_normal.c), the contact closing between samples.
  *   - Closed throughout: the march starts from the centre of the smallest circle enclosing the
  *     sampled orbit of u (the stuck state of every sample at the threshold of slip, and in 1-D
  *     the centred slider of aft_normal.c, so that the force is continuous across that
