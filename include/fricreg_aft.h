@@ -206,7 +206,9 @@ FRICREG_API int fricreg_aft_iwan_sampled(fricreg_aft *aft, size_t ns, const doub
  *  displacement u and a normal one g (positive pressing) given by their coefficients. Returns
  *  the coefficients of the tangential force f and of the normal force N over the periodic
  *  response, and their Jacobian. Where the contact opens (N0 + kn g < 0) f = 0 and the slider
- *  follows u (its memory reset), so the response is periodic from the last opening; without
+ *  follows u (its memory reset), so the response is periodic from the last opening (the
+ *  contact closes where N0 + kn g, linear between two samples, crosses 0, the slider where u
+ *  is then: since 1.10, not at the last open sample, so f is smooth in u and g); without
  *  an opening the bound moves with g, and the periodic state is marched to (up to 16
  *  periods, until the slider repeats to the bit), with the centred slider of the header
  *  comment for a period that sticks throughout or slips one way only (at the periodic state
@@ -304,7 +306,8 @@ FRICREG_API int fricreg_aft_jenkins_normal_exact(fricreg_aft *aft, double kt, do
  *  their Jacobian, from the return mapping at N samples a period and GSL's FFT.
  *
  *  The periodic response (src/joint/aft_2d.c): where the contact opens in the period the
- *  slider follows u there, so one period from the last opening is periodic. Otherwise the
+ *  slider follows u there, so one period from the last opening is periodic (closing between
+ *  samples as fricreg_aft_jenkins_normal_sampled's). Otherwise the
  *  march starts from the centre of the smallest circle enclosing the sampled orbit (ux, uy)
  *  (1-D: the centred slider (max u + min u)/2 of the header comment, so f is continuous across
  *  the threshold of slip): a period without slip is the periodic state (a stick throughout);

@@ -10,7 +10,7 @@
  * the disks have a common point the march ends in a stick throughout (any common point is a
  * periodic state), otherwise in a unique periodic slip.
  *   - The contact opens in the period: the slider follows u while open, so one period from the
- *     last open sample is periodic (as aft_normal.c).
+ *     last open sample is periodic (as aft_normal.c), the contact closing between samples.
  *   - Closed throughout: the march starts from the centre of the smallest circle enclosing the
  *     sampled orbit of u (the stuck state of every sample at the threshold of slip, and in 1-D
  *     the centred slider of aft_normal.c, so that the force is continuous across that
@@ -49,6 +49,7 @@ struct samples {
     double *fx, *fy;                    /* the forces of the last period marched */
     double *ex, *ey, *sl;               /* a slip's direction e and mu N/|d| */
     double *kind;                       /* STICK, SLIP or OPEN */
+    size_t N;
 };
 
 struct law {
@@ -68,7 +69,21 @@ static struct samples views(const fricreg_aft *a)
                             .ex = b + 4 * N,
                             .ey = b + 5 * N,
                             .sl = b + 6 * N,
-                            .kind = b + 7 * N};
+                            .kind = b + 7 * N,
+                            .N = N};
+}
+
+/* The contact closes between the open sample m and the closed sample n at the fraction
+ * tau = gap_m / (gap_m − gap_n) of the interval (N0 + kn g linear on it), the slider there
+ * where u is: w = u_m + tau (u_n − u_m). At the sample after the opening instead, the slider
+ * would snap to u_m, and the forces' dependence on the inputs would change its slope each
+ * time the last open sample moves (test_aft_2d.c's smooth_between_events). */
+static double closing(const struct samples *s, size_t m, size_t n, double w[2])
+{
+    double tau = s->gap[m] / (s->gap[m] - s->gap[n]);
+    w[0] = s->ux[m] + tau * (s->ux[n] - s->ux[m]);
+    w[1] = s->uy[m] + tau * (s->uy[n] - s->uy[m]);
+    return tau;
 }
 
 /* One sample of the march from the slider w (updated): forces and the record of sample n. */
@@ -79,6 +94,9 @@ static int step(const struct samples *s, const struct law *p, size_t n, double *
         fr_slider_separated(2, u, f, wn, NULL, NULL);
         s->kind[n] = OPEN;
     } else {
+        size_t m = (n + s->N - 1) & (s->N - 1); /* the sample before */
+        if (s->gap[m] < 0.0) /* closed again after m: the slider where the contact closed */
+            closing(s, m, n, w);
         double b = p->mu * s->load[n], d[2] = {u[0] - w[0], u[1] - w[1]};
         double r = fr_slider_norm(d, 2);
         fr_slider_return(p->kt, b, 0.0, 2, u, w, f, wn, NULL, NULL);
@@ -126,6 +144,15 @@ static void chain_sample(const fricreg_aft *a, const struct samples *s, const st
     input(a, j, n, du, &dg);
     df[0] = df[1] = 0.0;
     df[2] = s->kind[n] == OPEN ? 0.0 : p->kn * dg;
+    size_t m = (n + a->N - 1) & (a->N - 1);
+    if (s->kind[n] != OPEN && s->gap[m] < 0.0) { /* closed in the interval: closing()'s w */
+        double dum[2], dgm, w[2], gm = s->gap[m], gn = s->gap[n];
+        input(a, j, m, dum, &dgm);
+        double tau = closing(s, m, n, w), q = gm - gn;
+        double dtau = p->kn * (gm * dg - gn * dgm) / (q * q);
+        dw[0] = dum[0] + tau * (du[0] - dum[0]) + (s->ux[n] - s->ux[m]) * dtau;
+        dw[1] = dum[1] + tau * (du[1] - dum[1]) + (s->uy[n] - s->uy[m]) * dtau;
+    }
     if (s->kind[n] == OPEN) {
         dw[0] = du[0];
         dw[1] = du[1];

@@ -42,6 +42,15 @@ void fr_aft_sample_values(const fricreg_aft *a, const double *c, double *x)
     }
 }
 
+/* The fraction of the interval from the open sample m to the closed sample n where the
+ * contact closes (N0 + kn g linear on it crosses 0): there the slider is where u is, as in
+ * aft_2d.c, rather than at u of the last open sample, whose moves would change the forces'
+ * slope in the inputs (test_aft_2d.c, smooth_between_events). */
+static double closing_fraction(const double *gap, size_t m, size_t n)
+{
+    return gap[m] / (gap[m] - gap[n]);
+}
+
 /* One step of the march at sample n from the slider w: the force into a->fs[n], the tangent
  * mark into a->ts[n] (kt stick, 0 slip, OPEN), and the anchor into a->anchor[n] (n where the
  * slider moved, else *m). Returns the new slider. */
@@ -54,6 +63,9 @@ static double step(fricreg_aft *a, double kt, double mu, const double *gap, cons
         t = OPEN;
         *m = n;
     } else {
+        size_t before = (n + a->N - 1) % a->N;
+        if (gap[before] < 0.0) /* closed again after it */
+            w = a->us[before] + closing_fraction(gap, before, n) * (a->us[n] - a->us[before]);
         fr_slider_return(kt, mu * load[n], 0.0, 1, &a->us[n], &w, &f, &wn, &t, NULL);
         if (t == 0.0)
             *m = n;
@@ -135,6 +147,7 @@ static double sign(double x)
 static void jacobian_column(const fricreg_aft *a, double kt, double mu, double kn, size_t j,
                             int wrt_g, size_t nmax, size_t nmin, double *col)
 {
+    const double *gap = a->ds; /* fr_aft_sampled_normal's layout */
     size_t N = a->N;
     for (size_t n = 0; n < N; n++) {
         double t = a->ts[n], v = 0.0;
@@ -148,7 +161,13 @@ static void jacobian_column(const fricreg_aft *a, double kt, double mu, double k
                     ? 0.0
                     : kt * (fr_aft_sample_basis(a, j, n) - 0.5 * (fr_aft_sample_basis(a, j, nmax) +
                                                                   fr_aft_sample_basis(a, j, nmin)));
-        } else if (wrt_g) { /* stick after a slip at m (after an opening f_m = 0) */
+        } else if (a->ts[m] == OPEN) { /* stick after the contact closed in (m, m1) */
+            size_t m1 = (m + 1) % N;
+            double tau = closing_fraction(gap, m, m1), q = gap[m] - gap[m1];
+            double pm = fr_aft_sample_basis(a, j, m), p1 = fr_aft_sample_basis(a, j, m1);
+            v = wrt_g ? -kt * (a->us[m1] - a->us[m]) * kn * (gap[m] * p1 - gap[m1] * pm) / (q * q)
+                      : kt * (fr_aft_sample_basis(a, j, n) - (1.0 - tau) * pm - tau * p1);
+        } else if (wrt_g) { /* stick after a slip at m */
             v = a->ts[m] == 0.0 ? sign(a->fs[m]) * mu * kn * fr_aft_sample_basis(a, j, m) : 0.0;
         } else {
             v = kt * (fr_aft_sample_basis(a, j, n) - fr_aft_sample_basis(a, j, m));

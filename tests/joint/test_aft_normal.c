@@ -91,6 +91,9 @@ START_TEST(jacobian_against_differences)
     fricreg_aft *a = make(H, NS);
     aft_normal_check_jacobian(a, fricreg_aft_jenkins_normal_sampled, 2.0, 0.5, 1.0, 1.0, u1, g1);
     aft_normal_check_jacobian(a, fricreg_aft_jenkins_normal_sampled, 3.0, 0.4, 2.0, 1.0, u2, g2);
+    /* a stick from where the contact closes again (between two samples) */
+    const double u3[NC] = {0.0, 0.05, 0.02, 0, 0, 0, 0}, g3[NC] = {0.0, -1.5, 0.3, 0, 0, 0, 0};
+    aft_normal_check_jacobian(a, fricreg_aft_jenkins_normal_sampled, 2.0, 0.5, 1.0, 1.0, u3, g3);
     fricreg_aft_free(a);
 }
 END_TEST
