@@ -599,6 +599,34 @@ FRICREG_API int fricreg_hb_set_excitation(fricreg_hb *hb, size_t ndof, const dou
  *  infinite; FRICREG_EINVAL if tol or max_iter is out of its range. Since 1.6. */
 FRICREG_API int fricreg_hb_set_newton(fricreg_hb *hb, double tol, int max_iter);
 
+/** The linear solvers of Newton's matrix I + Ĝ Ĵ (fricreg_hb_set_newton_solver). */
+enum fricreg_hb_newton_solver {
+    FRICREG_HB_NEWTON_AUTO = 0,       /**< by the capacitance where nq >= 512 and at most 0.8 nq
+                                           rows of Ĵ are off its diagonal, else dense (the
+                                           default since 1.10) */
+    FRICREG_HB_NEWTON_DENSE = 1,      /**< LAPACK's LU of the whole matrix, of order nq (+1 on
+                                           a continuation's border): 1.9's solver */
+    FRICREG_HB_NEWTON_CAPACITANCE = 2 /**< by the capacitance at every size and share, dense
+                                           only where the stuck part alone is singular */
+};
+
+/** Choose how Newton's matrix I + Ĝ Ĵ is solved, at the next iteration on. Most rows of Ĵ are
+ *  a stiffness on its diagonal (a stuck element's harmonics, a closed contact's normal rows),
+ *  and with those rows L and the s others, Woodbury's identity solves the matrix through the
+ *  capacitance of order s and one complex LU of the L rows a harmonic (docs/harmonic_balance.md,
+ *  "Size"): 2 s³/3 flops and kept factors against the dense LU's 2 nq³/3. Results agree with
+ *  the dense solver's to rounding (about 1e-10 of their scale measured), not bit for bit:
+ *  FRICREG_HB_NEWTON_DENSE gives 1.9's. The capacitance's room (about 32 (H + 1) m² bytes) is
+ *  allocated here when elements are set, and by the element setters after; where that fails in
+ *  an element setter, the dense LU serves. Since 1.10 (FRICREG_1.10).
+ *
+ *  solver   enum fricreg_hb_newton_solver.
+ *
+ *  Returns FRICREG_OK; FRICREG_ENULL if hb is NULL; FRICREG_EINVAL if solver is none of the
+ *  enum; FRICREG_ENOMEM if the capacitance's room cannot be allocated (the solver then stays
+ *  the one before). */
+FRICREG_API int fricreg_hb_set_newton_solver(fricreg_hb *hb, int solver);
+
 /** The continuation's step control, in the arclength of the scaled unknowns (q divided by the
  *  largest |q| of the starting solution, raised to the largest |q| reached along the branch, Ω
  *  by |Ω1 − Ω0|, so ds = 0.01 is about a hundredth of the interval on a flat branch). Since

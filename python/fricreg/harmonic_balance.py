@@ -26,6 +26,8 @@ _STABILITY_METHODS = {"auto": lib.FRICREG_HB_STABILITY_AUTO,
                       "hill": lib.FRICREG_HB_STABILITY_HILL,
                       "monodromy": lib.FRICREG_HB_STABILITY_MONODROMY,
                       "condensed": lib.FRICREG_HB_STABILITY_CONDENSED}
+_NEWTON_SOLVERS = {"auto": lib.FRICREG_HB_NEWTON_AUTO, "dense": lib.FRICREG_HB_NEWTON_DENSE,
+                   "capacitance": lib.FRICREG_HB_NEWTON_CAPACITANCE}
 _DAMPING = {"matrix": lib.FRICREG_HB_NMA_DAMPING_MATRIX,
             "modal": lib.FRICREG_HB_NMA_DAMPING_MODAL}
 _BIFURCATIONS = {lib.FRICREG_HB_TP: "TP", lib.FRICREG_HB_BP: "BP", lib.FRICREG_HB_PD: "PD",
@@ -315,19 +317,29 @@ class HarmonicBalance:
                     "element_param")
         return value[0]
 
-    def set_newton(self, tol=1e-10, max_iter=50):
+    def set_newton(self, tol=1e-10, max_iter=50, solver="auto"):
         """Newton's stopping rule (``fricreg_hb_set_newton``): the largest residual entry at
         most tol times the displacement scale, after at most max_iter iterations a solve. A
         continuation's corrector also stops where it stalls at the solves' rounding, DBL_EPSILON
         times D_h's condition number of that scale (the C function's documentation).
 
+        solver : {"auto", "dense", "capacitance"}
+            How Newton's matrix is solved (``fricreg_hb_set_newton_solver``): ``"dense"``,
+            LAPACK's LU of the whole (1.9's); ``"capacitance"``, Woodbury's identity on the rows
+            of the elements' Jacobian off its diagonal; ``"auto"``, the capacitance from 512
+            unknowns where those rows are at most 0.8 of them. The results agree to rounding.
+
         Raises
         ------
         fricreg.InputError
-            Not 0 < tol < 1, or max_iter outside 1..1000.
+            Not 0 < tol < 1, max_iter outside 1..1000, or an unknown solver.
+        MemoryError
+            No room for the capacitance.
         """
+        code = choice(_NEWTON_SOLVERS, solver, "solver")
         self._check(lib.fricreg_hb_set_newton(self._hb, as_scalar(tol, "tol"),
                                               as_integer(max_iter, "max_iter")), "set_newton")
+        self._check(lib.fricreg_hb_set_newton_solver(self._hb, code), "set_newton")
 
     def set_continuation(self, ds=0.02, ds_min=1e-6, ds_max=0.1, max_points=2000):
         """The continuation's step control in the scaled arclength

@@ -93,6 +93,20 @@ def test_chain_sweep_with_stability_equals_the_c_library():
     assert 0.76 < peak_omega < 1.7 and peak_rms >= r.rms[:, 1].max()
 
 
+def test_newton_solvers_agree_to_rounding():
+    # "dense" is 1.9's solver and "auto" the same below 512 unknowns, bit for bit; the
+    # capacitance agrees to rounding (tests/hb/test_hb_capacitance.c: 1e-10 on every element)
+    hb = chain()
+    hb.set_newton(solver="dense")
+    dense = hb.solve(1.2)
+    hb.set_newton(solver="auto")
+    assert hb.solve(1.2).q.tobytes() == dense.q.tobytes()
+    hb.set_newton(solver="capacitance")
+    np.testing.assert_allclose(hb.solve(1.2).q, dense.q, rtol=0, atol=1e-10 * np.abs(dense.q).max())
+    with pytest.raises(fricreg.InputError, match="solver"):
+        hb.set_newton(solver="sparse")
+
+
 def test_condensed_stability_is_the_c_librarys_by_name():
     # "condensed" names FRICREG_HB_STABILITY_CONDENSED; on the 3-dof chain (one dof no element
     # touches, kept below 50 Omega) its multipliers are the whole model's; the C library's

@@ -134,7 +134,7 @@ int fr_hb_clone(const fricreg_hb *src, int harmonics, fricreg_hb **out)
     hb->max_iter = src->max_iter;
     hb->capacitance_min = src->capacitance_min;
     hb->capacitance_share = src->capacitance_share;
-    fr_hb_newton_matrix_room(hb);
+    (void)fr_hb_newton_matrix_room(hb); /* none: the dense LU serves */
     hb->monitor = src->monitor;
     hb->monitor_user = src->monitor_user;
     hb->max_iterations = src->max_iterations;
@@ -154,6 +154,33 @@ int fricreg_hb_set_newton(fricreg_hb *hb, double tol, int max_iter)
                        max_iter);
     hb->tol = tol;
     hb->max_iter = max_iter;
+    return FRICREG_OK;
+}
+
+int fricreg_hb_set_newton_solver(fricreg_hb *hb, int solver)
+{
+    /* the least nq solved by the capacitance, and its largest share of rows off Ĵ's diagonal */
+    static const struct {
+        size_t min;
+        double share;
+    } SOLVERS[] = {[FRICREG_HB_NEWTON_AUTO] = {FR_HB_CAPACITANCE_MIN, FR_HB_CAPACITANCE_SHARE},
+                   [FRICREG_HB_NEWTON_DENSE] = {SIZE_MAX, 0.0},
+                   [FRICREG_HB_NEWTON_CAPACITANCE] = {0, 1.0}};
+    if (hb == NULL || hb->busy)
+        return fr_hb_refuse(hb, "set_newton_solver");
+    if (solver < FRICREG_HB_NEWTON_AUTO || solver > FRICREG_HB_NEWTON_CAPACITANCE)
+        return fr_fail(hb, FRICREG_EINVAL,
+                       "set_newton_solver: solver = %d is none of enum fricreg_hb_newton_solver",
+                       solver);
+    size_t min = hb->capacitance_min;
+    double share = hb->capacitance_share;
+    hb->capacitance_min = SOLVERS[solver].min;
+    hb->capacitance_share = SOLVERS[solver].share;
+    if (!fr_hb_newton_matrix_room(hb)) {
+        hb->capacitance_min = min;
+        hb->capacitance_share = share;
+        return fr_fail(hb, FRICREG_ENOMEM, "set_newton_solver: no room for the capacitance");
+    }
     return FRICREG_OK;
 }
 

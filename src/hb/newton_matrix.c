@@ -22,12 +22,12 @@ static void dense(fricreg_hb *hb, size_t nd, const double *col, const double *ro
     memcpy(hb->A + nq * nd, row, nd * sizeof(double));
 }
 
-void fr_hb_newton_matrix_room(fricreg_hb *hb)
+int fr_hb_newton_matrix_room(fricreg_hb *hb)
 {
     if (hb->have_elements && hb->nq >= hb->capacitance_min)
-        (void)fr_hb_capacitance_reserve(hb); /* none: the dense LU serves */
-    else
-        fr_hb_capacitance_free(hb);
+        return fr_hb_capacitance_reserve(hb); /* none: the dense LU serves */
+    fr_hb_capacitance_free(hb);
+    return 1;
 }
 
 void fr_hb_newton_matrix(fricreg_hb *hb, size_t nd, const double *col, const double *row)
@@ -37,6 +37,7 @@ void fr_hb_newton_matrix(fricreg_hb *hb, size_t nd, const double *col, const dou
     hb->by_capacitance = 0;
     hb->newton_factored = 0;
     if (nq >= hb->capacitance_min) {
+        /* without the room s = nq + 1 (+ 1), above any share up to 1 */
         size_t s = fr_hb_capacitance_split(hb, nd, col, row) + (nd > nq);
         hb->by_capacitance = (double)s <= hb->capacitance_share * (double)nd;
     }

@@ -14,8 +14,8 @@
 
 /* The capacitance's room when the model is whole and nq >= capacitance_min (allocated
  * here, at the element setters, so that a solve allocates nothing; without it, the dense
- * LU), else none. */
-void fr_hb_newton_matrix_room(fricreg_hb *hb);
+ * LU), else none. 1, or 0 where the room was wanted and could not be allocated. */
+int fr_hb_newton_matrix_room(fricreg_hb *hb);
 
 /* Newton's matrix at the Jacobians in jq and the factored Ω: I + Ĝ Ĵ (nd = nq), or bordered
  * [I + Ĝ Ĵ, col; row^T] (nd = nq + 1: col[nq], row[nq + 1]), recorded for the next

@@ -2277,6 +2277,25 @@ static const struct script hb_iwan = {
     "hb set_iwan", 2,    hb_iwan_calls,   1,          0,       hb_iwan_open,
     hb_iwan_call,  NULL, hb_iwan_observe, hb_errcode, hb_close};
 
+/* The capacitance solver of Newton's matrix: set_elements (no room at this size by default),
+ * then set_newton_solver(capacitance), whose room is allocated at once; the view solves at one
+ * frequency, by the capacitance where the room was made and densely where it failed. */
+static const char *const hb_newton_solver_calls[] = {"set_elements",
+                                                     "set_newton_solver(capacitance)"};
+
+static int hb_newton_solver_call(void *obj, int i, struct view *v)
+{
+    (void)v;
+    const double J[2] = {0.0, 1.0}, kt[1] = {1.5}, mun[1] = {0.25};
+    if (i == 0)
+        return fricreg_hb_set_elements(obj, 1, 2, J, kt, mun);
+    return fricreg_hb_set_newton_solver(obj, FRICREG_HB_NEWTON_CAPACITANCE);
+}
+
+static const struct script hb_newton_solver = {
+    "hb set_newton_solver", 2,    hb_newton_solver_calls, 0,          0,       hb_iwan_open,
+    hb_newton_solver_call,  NULL, hb_iwan_observe,        hb_errcode, hb_close};
+
 /* Elements with lift-off: set_normal_elements twice (the first grows the buffers sized by the
  * rows of J to two rows an element and allocates the parameters, the second only the
  * parameters, the first's freed after); the view solves at one frequency (nq = 2 (2H + 1)). */
@@ -3273,6 +3292,14 @@ START_TEST(test_hb_iwan)
 }
 END_TEST
 
+/* set_newton_solver's room fails cleanly: ENOMEM and the dense solver as before */
+START_TEST(test_hb_newton_solver)
+{
+    struct tally t = fail_each_allocation(&hb_newton_solver);
+    ck_assert_int_eq(t.enomem, t.cases);
+}
+END_TEST
+
 /* set_stability's allocations fail cleanly: ENOMEM and stability still off */
 START_TEST(test_hb_stability)
 {
@@ -3801,6 +3828,7 @@ static Suite *alloc_suite(void)
     tcase_add_test(drivers, test_fit_run);
     tcase_add_test(drivers, test_hb_sparse);
     tcase_add_test(drivers, test_hb_iwan);
+    tcase_add_test(drivers, test_hb_newton_solver);
     tcase_add_test(drivers, test_hb_normal);
     tcase_add_test(drivers, test_hb_iwan_normal);
     tcase_add_test(drivers, test_hb_contact_3d);

@@ -173,9 +173,9 @@ START_TEST(continuation_alike)
     double rms[2][N], w[2];
     size_t points[2];
     for (int k = 0; k < 2; k++) {
-        hb[k]->capacitance_min = k ? 0 : SIZE_MAX;
-        hb[k]->capacitance_share = 2.0;
-        fr_hb_newton_matrix_room(hb[k]);
+        ck_assert_int_eq(fricreg_hb_set_newton_solver(hb[k], k ? FRICREG_HB_NEWTON_CAPACITANCE
+                                                               : FRICREG_HB_NEWTON_DENSE),
+                         FRICREG_OK);
         ck_assert_msg(fricreg_hb_continue(hb[k], 0.3, 2.5, hb[k]->nq, NULL) == FRICREG_OK, "%s",
                       fricreg_hb_errmsg(hb[k]));
         points[k] = fricreg_hb_points(hb[k]);
@@ -188,6 +188,40 @@ START_TEST(continuation_alike)
     ck_assert_double_le(fabs((double)points[1] - (double)points[0]), 0.1 * (double)points[0]);
     fricreg_hb_free(hb[0]);
     fricreg_hb_free(hb[1]);
+}
+END_TEST
+
+/* The public choice (fricreg_hb_set_newton_solver) at a slipping level, nq = 56: the automatic
+ * one is the dense LU below nq = 512, bit for bit; the capacitance, forced, solves each
+ * iteration by it and agrees to 1e-9 of the response; dense again frees its room. Out of the
+ * enum: FRICREG_EINVAL, with a message, the choice as before. */
+START_TEST(public_choice)
+{
+    const int SOLVERS[3] = {FRICREG_HB_NEWTON_DENSE, FRICREG_HB_NEWTON_AUTO,
+                            FRICREG_HB_NEWTON_CAPACITANCE};
+    fricreg_hb *hb = chain(LEVELS[2]);
+    size_t nq = hb->nq;
+    double *q = calloc(3 * nq, sizeof(double)), scale;
+    for (int k = 0; k < 3; k++) {
+        ck_assert_int_eq(fricreg_hb_set_newton_solver(hb, SOLVERS[k]), FRICREG_OK);
+        ck_assert_msg(fricreg_hb_solve(hb, OMEGA, nq, NULL, q + k * nq) == FRICREG_OK, "%s",
+                      fricreg_hb_errmsg(hb));
+        ck_assert_int_eq(hb->by_capacitance, SOLVERS[k] == FRICREG_HB_NEWTON_CAPACITANCE);
+    }
+    ck_assert_mem_eq(q + nq, q, nq * sizeof(double));
+    double d = distance(q + 2 * nq, q, nq, &scale);
+    ck_assert_msg(d <= 1e-9 * scale, "capacitance against dense %g of %g", d, scale);
+    ck_assert_ptr_nonnull(hb->capacitance);
+    ck_assert_int_eq(fricreg_hb_set_newton_solver(hb, 3), FRICREG_EINVAL);
+    ck_assert_ptr_nonnull(strstr(fricreg_hb_errmsg(hb), "set_newton_solver: solver = 3"));
+    ck_assert_int_eq(fricreg_hb_set_newton_solver(hb, -1), FRICREG_EINVAL);
+    ck_assert_uint_eq(hb->capacitance_min, 0); /* still the capacitance */
+    ck_assert_ptr_nonnull(hb->capacitance);
+    ck_assert_int_eq(fricreg_hb_set_newton_solver(hb, FRICREG_HB_NEWTON_DENSE), FRICREG_OK);
+    ck_assert_ptr_null(hb->capacitance);
+    ck_assert_int_eq(fricreg_hb_set_newton_solver(NULL, FRICREG_HB_NEWTON_DENSE), FRICREG_ENULL);
+    free(q);
+    fricreg_hb_free(hb);
 }
 END_TEST
 
@@ -260,6 +294,7 @@ static Suite *suite(void)
     TCase *tc = tcase_create("core");
     tcase_add_loop_test(tc, against_dense, 0, 2 * NLEVELS);
     tcase_add_loop_test(tc, continuation_alike, 0, 2);
+    tcase_add_test(tc, public_choice);
     tcase_add_test(tc, stuck_singular);
     tcase_add_test(tc, negative_mean_block);
     suite_add_tcase(s, tc);
