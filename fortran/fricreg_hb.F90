@@ -46,6 +46,7 @@ module fricreg_hb_m
     generic :: set_matrix => hb_set_matrix_dense, hb_set_matrix_compressed
     procedure :: set_excitation => hb_set_excitation
     procedure :: set_newton => hb_set_newton
+    procedure :: set_newton_solver => hb_set_newton_solver
     procedure :: set_continuation => hb_set_continuation
     procedure :: set_monitor => hb_set_monitor
     procedure :: set_max_iterations => hb_set_max_iterations
@@ -501,6 +502,18 @@ contains
     if (status == FRICREG_OK) &
       status = self%record(fricreg_hb_set_newton(self%ptr, tol, int(max_iter, c_int)))
   end function hb_set_newton
+
+  !> How Newton's matrix is solved (fricreg_hb_set_newton_solver): FRICREG_HB_NEWTON_AUTO (the
+  !> default: by its capacitance from nq = 512 where few rows are off the diagonal), _DENSE
+  !> (1.9's LU) or _CAPACITANCE. FRICREG_EINVAL for another value; FRICREG_ENOMEM. Since 1.10.
+  function hb_set_newton_solver(self, solver) result(status)
+    class(fricreg_hb_driver), intent(inout) :: self
+    integer, intent(in) :: solver
+    integer(c_int) :: status
+    status = self%ready('set_newton_solver', 'HB driver')
+    if (status == FRICREG_OK) &
+      status = self%record(fricreg_hb_set_newton_solver(self%ptr, int(solver, c_int)))
+  end function hb_set_newton_solver
 
   !> Install a monitor (a bind(C) function with interface fricreg_hb_monitor), called before
   !> every Newton step of every solve; user is passed back to it. With no monitor, removes it

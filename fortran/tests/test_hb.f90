@@ -99,6 +99,9 @@ program test_hb
   ! the same closed form
   call check_status(hb%stability_method(method), FRICREG_OK, 'stability_method')
   call check(method == FRICREG_HB_STABILITY_MONODROMY, 'the monodromy for a Jenkins element')
+  call check_status(hb%set_newton_solver(7), FRICREG_EINVAL, 'set_newton_solver 7')
+  call check_status(hb%set_newton_solver(FRICREG_HB_NEWTON_DENSE), FRICREG_OK, &
+                    'set_newton_solver dense')
   call check_status(hb%set_stability_method(7), FRICREG_EINVAL, 'set_stability_method 7')
   call check_status(hb%set_stability_method(FRICREG_HB_STABILITY_HILL), FRICREG_OK, &
                     'set_stability_method Hill')
