@@ -7,6 +7,10 @@ function fricreg_hb_set(h, varargin)
 %      'newton'        [tol max_iter]: converged when the largest residual is at most tol
 %                      (0 < tol < 1) times the displacement scale, at most max_iter (1..1000)
 %                      iterations a solve. Defaults [1e-10 50].
+%      'solver'        how Newton's matrix is solved: 'auto' (default: by its capacitance from
+%                      512 unknowns where few rows of the elements' Jacobian are off its
+%                      diagonal), 'dense' (LAPACK's LU, 1.9's) or 'capacitance'; the results
+%                      agree to rounding.
 %      'continuation'  [ds ds_min ds_max max_points]: the step in the scaled arclength
 %                      (ds_min <= ds <= ds_max <= 1) and the most points stored (>= 2).
 %                      Defaults [0.02 1e-6 0.1 2000].
@@ -24,9 +28,11 @@ function fricreg_hb_set(h, varargin)
 %      fricreg:option      an unknown name, or one without its value
 %      fricreg:size        a vector of the wrong length
 %      fricreg:EINVAL      a value out of its range (the message names it); an unknown method
+%                          or solver
 %      fricreg:ENONFINITE  a NaN or infinite value
 %
-%   Source: fricreg_hb_set_excitation, fricreg_hb_set_newton, fricreg_hb_set_continuation,
+%   Source: fricreg_hb_set_excitation, fricreg_hb_set_newton, fricreg_hb_set_newton_solver,
+%   fricreg_hb_set_continuation,
 %   fricreg_hb_set_stability_method, fricreg_hb_set_stability, fricreg_hb_set_max_iterations
 %   (include/fricreg_hb.h), through fricreg_mex (matlab/mex_hb.c). Python:
 %   HarmonicBalance.set_excitation, .set_newton, .set_continuation, .set_stability (Python's
@@ -63,6 +69,8 @@ for k = 1:2:numel(varargin)
     case 'newton'
         v = vector(value, 2, name, '[tol max_iter]');
         fricreg_mex('hb_set_newton', h, v(1), v(2));
+    case 'solver'
+        fricreg_mex('hb_set_newton_solver', h, value);
     case 'continuation'
         v = vector(value, 4, name, '[ds ds_min ds_max max_points]');
         fricreg_mex('hb_set_continuation', h, v(1), v(2), v(3), v(4));
@@ -77,7 +85,7 @@ for k = 1:2:numel(varargin)
         fricreg_mex('hb_set_max_iterations', h, value);
     otherwise
         error('fricreg:option', ['fricreg_hb_set: unknown option ''%s'' (excitation, newton, ' ...
-                                 'continuation, stability, method, max_iterations)'], name);
+                                 'solver, continuation, stability, method, max_iterations)'], name);
     end
 end
 if ~isempty(method)

@@ -387,6 +387,7 @@ static const struct {
     {"hb_add_elements", mexhb_add_elements},
     {"hb_set_excitation", mexhb_set_excitation},
     {"hb_set_newton", mexhb_set_newton},
+    {"hb_set_newton_solver", mexhb_set_newton_solver},
     {"hb_set_continuation", mexhb_set_continuation},
     {"hb_set_stability", mexhb_set_stability},
     {"hb_set_max_iterations", mexhb_set_max_iterations},

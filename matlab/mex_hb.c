@@ -244,6 +244,21 @@ void mexhb_set_newton(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]
                 cmd);
 }
 
+/* hb_set_newton_solver(h, solver): solver 'auto', 'dense' or 'capacitance' (enum
+ * fricreg_hb_newton_solver's order). */
+void mexhb_set_newton_solver(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
+{
+    static const char *const solvers[] = {"auto", "dense", "capacitance"};
+    const char *cmd = "hb_set_newton_solver";
+    mexhb *d;
+    (void)plhs;
+    mexa_nargs(cmd, nrhs, 2, 2, nlhs, 0);
+    d = mexhb_of(prhs[0], cmd);
+    mexhb_check(d,
+                fricreg_hb_set_newton_solver(d->hb, mexa_pick(prhs[1], cmd, "solver", solvers, 3)),
+                cmd);
+}
+
 /* hb_set_continuation(h, ds, ds_min, ds_max, max_points) */
 void mexhb_set_continuation(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[])
 {

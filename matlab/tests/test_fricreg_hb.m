@@ -15,6 +15,7 @@ function failures = test_fricreg_hb()
 cases = {'stuck_solve_is_linear', @stuck_solve_is_linear
          'stuck_branch_is_linear', @stuck_branch_is_linear
          'sparse_equals_dense', @sparse_equals_dense
+         'newton_solvers_agree', @newton_solvers_agree
          'elements_as_cell', @elements_as_cell
          'backbone_linear_limit', @backbone_linear_limit
          'backbone_at_amplitudes', @backbone_at_amplitudes
@@ -105,6 +106,20 @@ fricreg_test_check(b.x, a.x, 1e-10, 'sparse x', max(abs(a.x(:))));
 if max(max(abs(a.x(:, 6:7)))) < 1e-4 % a_3, b_3: Jenkins gives odd harmonics
     error('test:hb', 'the element does not slip: no third harmonic');
 end
+end
+
+function newton_solvers_agree()
+% Newton's matrix by its capacitance and by the dense LU, sliding: to 1e-10 (the C library's
+% tests/hb/test_hb_capacitance.c checks every element type).
+[M, K, C, J, kt, mun] = two_masses();
+h = fricreg_harmonic_balance(M, K, C, struct('type', 'jenkins', 'J', J, 'params', [kt mun]), ...
+                             5, 'excitation', [0.9; 0]);
+cleanup = onCleanup(@() fricreg_hb_free(h));
+fricreg_hb_set(h, 'solver', 'dense');
+a = fricreg_hb_solve(h, 3.3);
+fricreg_hb_set(h, 'solver', 'capacitance');
+b = fricreg_hb_solve(h, 3.3);
+fricreg_test_check(b.x, a.x, 1e-10, 'capacitance x', max(abs(a.x(:))));
 end
 
 function elements_as_cell()
