@@ -211,9 +211,10 @@ FRICREG_API int fricreg_aft_iwan_sampled(fricreg_aft *aft, size_t ns, const doub
  *  is then: since 1.10, not at the last open sample, so f is smooth in u and g); without
  *  an opening the bound moves with g, and the periodic state is marched to (up to 16
  *  periods, until the slider repeats to the bit), with the centred slider of the header
- *  comment for a period that sticks throughout or slips one way only (at the periodic state
- *  such a slip has no length: the slider touches the bound, its place a leftover of the
- *  start). With kn = 0 and N0 >= 0 it equals fricreg_aft_jenkins_sampled at mun = mu N0 to
+ *  comment, or the stuck slider nearest it where it does not hold (since 1.10, as
+ *  fricreg_aft_jenkins_normal_exact), for a period that sticks throughout or slips one way
+ *  only (at the periodic state such a slip has no length: the slider touches the bound, its
+ *  place a leftover of the start). With kn = 0 and N0 >= 0 it equals fricreg_aft_jenkins_sampled at mun = mu N0 to
  *  the bit. Sampling error O(N^-2), as the
  *  sampled path; fricreg_aft_jenkins_normal_exact is its exact counterpart.
  *
@@ -263,7 +264,8 @@ FRICREG_API int fricreg_aft_jenkins_normal_sampled(fricreg_aft *aft, double kt, 
  *  otherwise marched from the maximum of u with the slider at the positive bound until the
  *  state there repeats to the bit (up to 16 periods); a period with no slip, or slips one way
  *  only, takes the centred slider w = (max u + min u)/2 where it keeps |f| <= mu N
- *  throughout (else the marched one). Where the bound is far below the rounding of u
+ *  throughout, else the stuck slider nearest it (of [max (u − mu N/kt), min (u + mu N/kt)]:
+ *  since 1.10; 1.9 kept the march's, the least, which jumped where the centre left above). Where the bound is far below the rounding of u
  *  (mu (|N0| + kn sum |g_j|) <= 1e-12 kt sum |u_j|: a stick would last below 1e-6 rad and its
  *  end would be lost in the rounding of u − w), sticks take no time: the slider follows u and
  *  f = s mu P on the slips, so |f(θ)| <= mu max N still holds; and where that bound

@@ -14,7 +14,8 @@
  * and no opening sticks throughout (or slips one way only, which at the periodic state has no
  * length), and its state is not unique: the centred slider
  * w = (max u + min u)/2 is taken where it holds (as fricreg_aft_jenkins_sampled does, which
- * this function equals to the bit when kn = 0).
+ * this function equals to the bit when kn = 0), else the stuck slider nearest it (the march's
+ * least one, or the greatest, min_n u_n + mu N_n/kt), continuous as the centre leaves them.
  *
  * The Jacobian by the chain rule through the samples, with φ_j the basis at a sample: in a
  * stick anchored at the sample m where the slider last moved, f_n = kt (u_n − u_m) + f_m, with
@@ -94,6 +95,20 @@ static int period(fricreg_aft *a, double kt, double mu, const double *gap, const
     return moved;
 }
 
+/* The greatest stuck slider, w = u + mu N/kt at sample nhi (the least of those): a stick
+ * anchored there as after a negative slip, f = kt (u − w), the sample itself on the bound. */
+static void pin_at_greatest(fricreg_aft *a, double kt, double mu, const double *load, size_t nhi)
+{
+    double w = a->us[nhi] + mu * load[nhi] / kt;
+    for (size_t n = 0; n < a->N; n++) {
+        a->fs[n] = kt * (a->us[n] - w);
+        a->ts[n] = kt;
+        a->anchor[n] = nhi;
+    }
+    a->fs[nhi] = -mu * load[nhi];
+    a->ts[nhi] = 0.0;
+}
+
 /* The periodic march (header comment); returns the centred slider's extremes in *nmax, *nmin
  * when the centred rule was taken (anchor N), else leaves them. */
 static void march(fricreg_aft *a, double kt, double mu, const double *gap, const double *load,
@@ -127,11 +142,23 @@ static void march(fricreg_aft *a, double kt, double mu, const double *gap, const
         return;
     /* stuck, or slipping one way only: at the periodic state such a slip has no length (the
      * slider only touches the bound; a net slip would move it from period to period), and the
-     * slider is a leftover of the start: the centred slider where it holds */
-    double wc = 0.5 * (a->us[*nmax] + a->us[*nmin]);
-    for (size_t n = 0; n < N; n++)
-        if (!(kt * fabs(a->us[n] - wc) <= mu * load[n]))
-            return;
+     * slider is a leftover of the start: the centred slider where it holds, else the stuck
+     * slider nearest it (aft_normal_exact.c: the march's is the least, lo) */
+    double wc = 0.5 * (a->us[*nmax] + a->us[*nmin]), top = 0.0;
+    size_t nhi = N; /* where the centre lies farthest above u + mu N/kt */
+    for (size_t n = 0; n < N; n++) {
+        if (!(kt * (a->us[n] - wc) <= mu * load[n]))
+            return; /* below the least stuck slider: the march's */
+        double over = kt * (wc - a->us[n]) - mu * load[n];
+        if (!(over <= top)) {
+            top = over;
+            nhi = n;
+        }
+    }
+    if (nhi < N) {
+        pin_at_greatest(a, kt, mu, load, nhi);
+        return;
+    }
     for (size_t n = 0; n < N; n++) {
         a->fs[n] = kt * (a->us[n] - wc);
         a->anchor[n] = N;

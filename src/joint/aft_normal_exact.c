@@ -23,8 +23,12 @@
  * both ways ends on a slip whose end is a fixed root, so the state repeats from the second
  * period. A period with no slip, or slips one way only (which at the periodic state have no
  * length: the slider touches the bound), takes the centred slider w = (max u + min u)/2 where
- * it holds (the margins c_s <= 0 at their maxima, the sign changes of v_s), as the sampled path
- * does; with kn = 0 this is fricreg_aft_jenkins_exact at mun = mu N0.
+ * it holds (the margins c_s <= 0 at their maxima, the sign changes of v_s), else the stuck
+ * slider nearest it: the stuck sliders are [lo, hi], lo = max (u − mu P/kt), hi =
+ * min (u + mu P/kt), the march's state is lo, and a centre above hi takes hi (anchored where
+ * c_- is largest, as after a negative slip), so that the state is continuous where the centre
+ * leaves [lo, hi]; as the sampled path does; with kn = 0 this is fricreg_aft_jenkins_exact at
+ * mun = mu N0 (the centre is in [lo, hi] whenever that is not empty).
  *
  * The Jacobian. f and N are continuous at every switch point, so the switch points' motion adds
  * nothing: the Jacobian is the integral of the pointwise derivatives. Slip s: ∂f/∂g_j =
@@ -308,20 +312,32 @@ static int changes_of(fricreg_aft *a, const char *fn, double *co, int i, struct 
     return status;
 }
 
-/* Whether the centred slider wc keeps both margins <= 0: at the maxima of c_s, the sign changes
- * of v_s (or anywhere when v_s keeps one sign). */
-static int centred_holds(struct march *s, double wc)
+/* Which margin the centred slider wc breaks, checked at the maxima of c_s (the sign changes of
+ * v_s, or anywhere when v_s keeps one sign): 0 neither; 1 c_+ (wc below the least stuck
+ * slider: the march's own periodic state, from the positive bound, is then that least one);
+ * -1 c_- alone (wc above the greatest stuck slider), with *th where c_- is largest, the greatest
+ * slider's anchor. */
+static int centred_breaks(struct march *s, double wc, double *th)
 {
-    for (int i = 0; i < 2; i++) {
+    int breaks = 0;
+    for (int i = 0; i < 2 && breaks == 0; i++) {
         int dir = i == 0 ? 1 : -1;
+        double top = 0.0;
         margin(s, dir, s->kt * wc);
-        if (s->v[i].m == 0 && eval(s, s->cs, 0.0) > 0.0)
-            return 0;
-        for (int k = 0; k < s->v[i].m; k++)
-            if (eval(s, s->cs, s->v[i].r[k]) > 0.0)
-                return 0;
+        if (s->v[i].m == 0 && eval(s, s->cs, 0.0) > 0.0) {
+            *th = 0.0;
+            breaks = dir;
+        }
+        for (int k = 0; k < s->v[i].m; k++) {
+            double c = eval(s, s->cs, s->v[i].r[k]);
+            if (c > top) {
+                top = c;
+                *th = s->v[i].r[k];
+                breaks = dir;
+            }
+        }
     }
-    return 1;
+    return breaks;
 }
 
 /* The normal force's coefficients and Jacobian block over the closed arcs. */
@@ -452,8 +468,16 @@ static int exact_normal(fricreg_aft *a, const char *fn, double kt, double mu, do
         double wc = constant_u ? uc[0] : 0.5 * (eval(&s, uc, thmax) + eval(&s, uc, thmin));
         /* stuck, or slipping one way only (at the periodic state such a slip has no length:
          * the slider touches the bound, its place a leftover of the start): the centred
-         * slider where it holds */
-        if (s.moved != 3 && centred_holds(&s, wc)) {
+         * slider where it holds, else the stuck slider nearest it, so that the state moves
+         * continuously as the stuck sliders [lo, hi] shrink past it (the march gives lo) */
+        double thhi = 0.0;
+        int breaks = s.moved != 3 ? centred_breaks(&s, wc, &thhi) : 1;
+        if (breaks == -1) { /* wc above hi: the slider at hi, anchored as a negative slip's end */
+            struct state hi = {STICK, -1, 0, kt * eval(&s, uc, thhi) + mu * eval(&s, gap, thhi),
+                               thhi};
+            period(&s, &hi, thmax);
+        }
+        if (breaks == 0) {
             if (rec != NULL)
                 rec->kind = FR_AFT_STUCK;
             a->fout[0] = kt * (uc[0] - wc);

@@ -23,7 +23,11 @@
  *   - Iwan elements: one slider is the Jenkins element bit for bit, four equal sliders it to
  *     1e-12; three sliders against fricreg_structure_set_iwan_normal's Newmark (1024 steps a
  *     period, 100 periods from rest, steady to 1e-7 asserted, lift-off and each slider's slip
- *     in the last period asserted) within 1e-3 relative in each dof's RMS at H = 21. */
+ *     in the last period asserted) within 1e-3 relative in each dof's RMS at H = 21.
+ *   - a branch through the frequency where the centred stick breaks above the stuck sliders
+ *     (an 8-dof chain, the element on two dofs of its middle, H = 3): it reaches Ω1 with the
+ *     defaults (until 1.10 the stuck state jumped there and the step fell below ds_min at
+ *     Ω = 1.02; fricreg_aft.h). */
 #include <check.h>
 #include <math.h>
 #include <stdio.h>
@@ -492,6 +496,44 @@ START_TEST(iwan_partial_liftoff_against_time_domain)
 }
 END_TEST
 
+/* A chain to ground of 8 dofs, forced at its end and two dofs before, a Jenkins element with
+ * lift-off on dofs 5 (tangential) and 6 (normal), kt 1.2, mu 0.3, kn 3, N0 0.6. */
+START_TEST(branch_through_the_centred_sticks_end)
+{
+    enum { N = 8, NC = 7 };
+    double M[N * N] = {0}, K[N * N] = {0}, C[N * N], pc[N] = {0}, ps[N] = {0};
+    double Jt[N] = {0}, Jn[N] = {0}, kt = 1.2, mu = 0.3, n0 = 0.6, kn = 3.0;
+    for (int i = 0; i < N; i++) {
+        M[i * N + i] = 1.0 + 0.1 * i;
+        K[i * N + i] += i + 1 < N ? 3.0 : 2.0;
+        if (i > 0)
+            K[i * N + i] += 1.0;
+        if (i + 1 < N)
+            K[i * N + i + 1] = K[(i + 1) * N + i] = -1.0;
+    }
+    for (int i = 0; i < N * N; i++)
+        C[i] = 0.01 * M[i] + 0.01 * K[i];
+    pc[N - 1] = 0.3;
+    ps[3] = 0.15;
+    pc[4] = 0.09;
+    Jt[5] = Jn[6] = 1.0;
+    fricreg_hb *hb = NULL;
+    ck_assert_int_eq(fricreg_hb_create(N, 1, 3, &hb), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_mass(hb, N, M), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, N, K), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_damping(hb, N, C), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_excitation(hb, N, pc, ps), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_normal_elements(hb, 1, N, Jt, Jn, &kt, &mu, &n0, &kn),
+                     FRICREG_OK);
+    ck_assert_msg(fricreg_hb_continue(hb, 0.3, 2.5, 2 * NC, NULL) == FRICREG_OK, "%s",
+                  fricreg_hb_errmsg(hb));
+    double w, rms[N];
+    ck_assert_int_eq(fricreg_hb_point(hb, fricreg_hb_points(hb) - 1, &w, N, rms), FRICREG_OK);
+    ck_assert_double_eq(w, 2.5);
+    fricreg_hb_free(hb);
+}
+END_TEST
+
 START_TEST(bad_input)
 {
     struct jenkins_model s = contact();
@@ -561,6 +603,7 @@ int main(void)
     tcase_add_test(tc, sparse_model_equals_dense);
     tcase_add_test(tc, iwan_normal_is_jenkins_normal);
     tcase_add_test(tc, iwan_normal_backbone_is_jenkins_normal);
+    tcase_add_test(tc, branch_through_the_centred_sticks_end);
     tcase_add_test(tc, bad_input);
     suite_add_tcase(s, tc);
     /* the Iwan element's lift-off against Newmark (2 s): the release tier's (hb_liftoff_release);

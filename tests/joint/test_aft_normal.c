@@ -98,6 +98,28 @@ START_TEST(jacobian_against_differences)
 }
 END_TEST
 
+/* the stuck slider nearest the centre, continuous where the centre leaves the stuck ones
+ * (aft_normal_checks.h; the samples hold θ = 0 and π, where the extremes lie) */
+START_TEST(nearest_stuck_slider)
+{
+    fricreg_aft *a = make(3, 1024);
+    aft_normal_check_nearest_stuck(a, fricreg_aft_jenkins_normal_sampled, 1e-12);
+    /* the 3-D contact on a line, marched from the centre, stops at the same slider */
+    const double u[14] = {0.0, 1.0, 0, 0, 0, 0, 0}, g[7] = {0.0, 0.5, 0, 0, 0, 0, 0};
+    double f[14], nf[7], f1[7], nf1[7];
+    for (double n0 = 1.0; n0 < 1.75; n0 += 0.1) {
+        ck_assert_int_eq(fricreg_aft_jenkins_2d_normal_sampled(a, 1, 1, n0, 1, 7, u, g, f, nf,
+                                                               NULL),
+                         FRICREG_OK);
+        ck_assert_int_eq(fricreg_aft_jenkins_normal_sampled(a, 1, 1, n0, 1, 7, u, g, f1, nf1, NULL),
+                         FRICREG_OK);
+        for (int i = 0; i < 7; i++)
+            ck_assert_double_le(fabs(f[i] - f1[i]), 1e-12);
+    }
+    fricreg_aft_free(a);
+}
+END_TEST
+
 START_TEST(bad_input)
 {
     const double u[NC] = {0.3, 1.0, 0, 0, 0, 0, 0}, g[NC] = {0.1, 0.2, 0, 0, 0, 0, 0};
@@ -143,6 +165,7 @@ int main(void)
     tcase_add_test(tc, open_throughout_is_zero);
     tcase_add_test(tc, against_the_time_domain_element);
     tcase_add_test(tc, jacobian_against_differences);
+    tcase_add_test(tc, nearest_stuck_slider);
     tcase_add_test(tc, bad_input);
     suite_add_tcase(s, tc);
     SRunner *sr = srunner_create(s);

@@ -362,6 +362,16 @@ START_TEST(outputs_may_alias_inputs)
 }
 END_TEST
 
+/* the stuck slider nearest the centre, continuous where the centre leaves the stuck ones
+ * (aft_normal_checks.h; to rounding) */
+START_TEST(nearest_stuck_slider)
+{
+    fricreg_aft *a = make(3, 0);
+    aft_normal_check_nearest_stuck(a, fricreg_aft_jenkins_normal_exact, 1e-12);
+    fricreg_aft_free(a);
+}
+END_TEST
+
 START_TEST(bad_input)
 {
     fricreg_aft *a = make(H, 0);
@@ -384,6 +394,7 @@ int main(void)
     tcase_add_test(tc, slip_starting_on_a_reversal);
     tcase_add_test(tc, jacobian_against_differences);
     tcase_add_test(tc, outputs_may_alias_inputs);
+    tcase_add_test(tc, nearest_stuck_slider);
     tcase_add_test(tc, bad_input);
     suite_add_tcase(s, tc);
     /* 2^18 time-domain samples and 2^16 sampled ones a case: native and ASan only */

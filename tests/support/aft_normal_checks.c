@@ -143,3 +143,22 @@ void aft_normal_check_bad_input(fricreg_aft *a, aft_normal_fn path, const char *
     }
     ck_assert_int_eq(fricreg_aft_errcode(a), FRICREG_ENONFINITE);
 }
+
+void aft_normal_check_nearest_stuck(fricreg_aft *a, aft_normal_fn path, double tol)
+{
+    enum { NC = 7 };
+    const double n0s[] = {1.0, 1.2, 1.4, 1.5 - 1e-9, 1.5 + 1e-9, 1.7};
+    const double u[NC] = {0.0, 1.0, 0, 0, 0, 0, 0}, g[NC] = {0.0, 0.5, 0, 0, 0, 0, 0};
+    ck_assert_int_eq(fricreg_aft_harmonics(a), 3);
+    for (size_t k = 0; k < sizeof n0s / sizeof n0s[0]; k++) {
+        double f[NC], nf[NC];
+        ck_assert_int_eq(path(a, 1.0, 1.0, n0s[k], 1.0, NC, u, g, f, nf, NULL), FRICREG_OK);
+        double f0 = fmax(0.0, 1.5 - n0s[k]);
+        ck_assert_msg(fabs(f[0] - f0) <= tol && fabs(f[1] - 1.0) <= tol,
+                      "n0 = %.12g: f0 = %.12g, a1 = %.12g; expected %.12g, 1", n0s[k], f[0], f[1],
+                      f0);
+        for (int i = 2; i < NC; i++)
+            ck_assert_double_le(fabs(f[i]), tol);
+    }
+    aft_normal_check_jacobian(a, path, 1.0, 1.0, 1.2, 1.0, u, g);
+}

@@ -41,4 +41,12 @@ void aft_normal_check_jacobian(fricreg_aft *a, aft_normal_fn path, double kt, do
  * (ENONFINITE), each leaving f and nf as they were and the code recorded in a. */
 void aft_normal_check_bad_input(fricreg_aft *a, aft_normal_fn path, const char *name);
 
+/* The stuck slider nearest the centre: u = cos θ, g = cos θ / 2, kt = mu = kn = 1, so the stuck
+ * sliders are [lo, hi] = [0.5 − n0, n0 − 1.5] (n0 >= 1) and the centre 0 lies above hi for
+ * n0 < 1.5: the slider at hi, f = cos θ + 1.5 − n0, continuous into the centred stick
+ * (f = cos θ) at n0 = 1.5 (the march alone gave lo, f0 = n0 − 0.5: a jump of 1 there). f0 and
+ * f's first harmonic to tol at n0 from 1 to 1.7 and 1e-9 either side of 1.5; the Jacobian
+ * at n0 = 1.2 against differences. */
+void aft_normal_check_nearest_stuck(fricreg_aft *a, aft_normal_fn path, double tol);
+
 #endif
