@@ -29,7 +29,13 @@
  * rows' Schur complement before their shifts, kept from that factorization: q^3 / 3 flops for
  * its q new rows, not the p^2 q of their products with the p kept ones. A trailing
  * factorization adds the shifts after the complement too, so that both ways give the same
- * factor to the bit. */
+ * factor to the bit.
+ * Two dense factors are held (a second m x m buffer): a block is factored from whichever of the
+ * two costs fewer flops, and a factor that served as that base is kept rather than replaced
+ * where the new block does not hold all its rows (its kept rows copied into the other buffer,
+ * the new factor made there). Why: a stick zone leaves its block and comes back (a row of
+ * contacts in the law's band for an iterate, or slipping for a step), and with one factor each
+ * return factored again all the rows after the first that had left. */
 #ifndef FRICREG_MASKED_FACTOR_H
 #define FRICREG_MASKED_FACTOR_H
 
@@ -72,6 +78,17 @@ struct fr_masked_factor {
      * transposed in D's strictly lower part, its diagonal here. */
     size_t schur_from;
     double *schur_diag; /* [m] */
+    /* Dense: the other factor held (above), its fields as the current one's, swapped with them
+     * (fr_masked_factor_swap); spare_kept: it is the one kept when a block replaces the
+     * current one. from_spare: the last factorization started from it. */
+    struct fr_spare_factor {
+        double *D, *schur_diag, *held_shift;
+        SuiteSparse_long *rows;
+        unsigned char *held_set;
+        size_t order, schur_from;
+        int held;
+    } spare;
+    int spare_kept, from_spare;
     /* The block and shifts of the last factorization: a solve on the same ones reuses it
      * (a stick set that holds from one Newton iteration, or one step, to the next). */
     unsigned char *held_set; /* [m] */
@@ -94,6 +111,9 @@ void fr_masked_factor_free(struct fr_masked_factor *f, cholmod_common *c);
 int fr_masked_factor_solve(struct fr_masked_factor *f, const cholmod_sparse *W,
                            const unsigned char *set, const double *shift, const double b[],
                            double x[], cholmod_common *c);
+
+/* The dense factor held and the spare exchanged (blocks_carried.c saves and restores both). */
+void fr_masked_factor_swap(struct fr_masked_factor *f);
 
 /* Whether the block set[m] with shift[m] (either NULL: none) is the one a factor holds,
  * held_set[m] and held_shift[m] (held 0: none held); and the block kept as held. The factors
