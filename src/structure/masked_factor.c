@@ -7,6 +7,7 @@
 
 #include "base/lapack.h"
 #include "base/sparse_factor.h"
+#include "contact_factor.h"
 #include "fricreg.h"
 #include "masked_factor.h"
 
@@ -277,7 +278,7 @@ static size_t order_rows(struct fr_masked_factor *f, const unsigned char *set, c
 /* Columns p..k-1 of the upper triangle of W_SS in the factor's order, into D (leading
  * dimension m); the shifts come after the Schur complement (factor_trailing). Entries of W
  * below the diagonal are not read, as CHOLMOD reads an upper (stype 1) W. */
-static void dense_fill(struct fr_masked_factor *f, const cholmod_sparse *W, size_t p, size_t k)
+static void dense_fill_scan(struct fr_masked_factor *f, const cholmod_sparse *W, size_t p, size_t k)
 {
     const SuiteSparse_long *Wp = W->p, *Wi = W->i;
     const double *Wx = W->x;
@@ -296,6 +297,32 @@ static void dense_fill(struct fr_masked_factor *f, const cholmod_sparse *W, size
                 f->D[lo + hi * m] = Wx[q];
         }
     }
+}
+
+/* The same columns where W is packed whole (fr_delassus_packed: entry (i, j), i <= j, at
+ * j (j + 1) / 2 + i): each entry read where it goes, (k^2 - p^2) / 2 reads instead of a pass
+ * over all of W's m^2 / 2 with its rows mapped. The same values: the factor is the same. */
+static void dense_fill_packed(struct fr_masked_factor *f, const cholmod_sparse *W, size_t p,
+                              size_t k)
+{
+    const double *Wx = W->x;
+    for (size_t col = p; col < k; col++) {
+        size_t j = (size_t)f->rows[col];
+        const double *wj = Wx + j * (j + 1) / 2;
+        double *d = f->D + col * f->m;
+        for (size_t r = 0; r <= col; r++) {
+            size_t i = (size_t)f->rows[r];
+            d[r] = i <= j ? wj[i] : Wx[i * (i + 1) / 2 + j];
+        }
+    }
+}
+
+static void dense_fill(struct fr_masked_factor *f, const cholmod_sparse *W, size_t p, size_t k)
+{
+    if (fr_delassus_packed(W))
+        dense_fill_packed(f, W, p, k);
+    else
+        dense_fill_scan(f, W, p, k);
 }
 
 /* Rows p..k-1 of D's upper triangle plus diag(shift) factored by dpotrf. A pivot that is not

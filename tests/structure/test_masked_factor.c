@@ -10,6 +10,9 @@
  *     FRICREG_ESINGULAR both ways, x untouched, and the next block is factored afresh;
  *   - the dense factor keeps the leading rows of the last one that a block keeps with their
  *     shifts, and those alone (a sequence of blocks, each against the sparse factor to 1e-10);
+ *   - a factor that served as a base is kept as the spare, and a block that comes back is
+ *     solved from it with nothing factored, bit for bit as before;
+ *   - a W packed whole gives the same factors as one read by a pass over its pattern;
  *   - fricreg_structure's steps on a stiff membrane's edge (W_eff dense, the rule's choice) give
  *     the same forces and displacements with either storage forced, to 1e-10 relative;
  *   - a checkpoint carries the dense block a step holds, its kept complement too. */
@@ -447,6 +450,55 @@ START_TEST(dense_factor_kept_as_spare)
 }
 END_TEST
 
+/* A W packed whole (every entry of its upper triangle stored, as fr_cfactor_build stores a
+ * W_eff that fills) has its blocks' columns read where they go (dense_fill_packed), any other
+ * by a pass over W: the same entries, so the same factors. A sequence of blocks (fresh, grown,
+ * rows deleted inside, shifted rows, one back from the spare) solved both ways, bit for bit,
+ * the second way on the same W marked unsorted (so not packed, to fr_delassus_packed). */
+START_TEST(dense_fill_packed_equals_the_scan)
+{
+    const size_t m = 40;
+    unsigned long state = 6121;
+    struct factor_pair pr;
+    pair_open(&pr, m, 1.0, &state);
+    ck_assert_uint_eq((size_t)((SuiteSparse_long *)pr.W->p)[m], m * (m + 1) / 2);
+    cholmod_sparse *U = cholmod_l_copy_sparse(pr.W, &pr.c);
+    ck_assert_ptr_nonnull(U);
+    U->sorted = 0;
+    struct fr_masked_factor scan = {0};
+    ck_assert_int_eq(fr_masked_factor_prepare(&scan, U, FR_BLOCK_DENSE, &pr.c), FRICREG_OK);
+    unsigned char set[MMAX] = {0};
+    double shift[MMAX] = {0.0}, b[MMAX], x[MMAX], y[MMAX];
+    for (size_t i = 0; i < m; i++)
+        b[i] = cos(2.385 * (double)i);
+    for (int k = 0; k < 6; k++) {
+        if (k == 0)
+            memset(set, 1, 25);
+        else if (k == 1)
+            memset(set, 1, m);
+        else if (k == 2)
+            set[4] = set[17] = set[30] = 0;
+        else if (k == 3)
+            for (size_t i = 33; i < 38; i++)
+                shift[i] = 0.7 + 0.05 * (double)i;
+        else if (k == 4)
+            set[4] = 1;
+        else
+            memset(shift, 0, sizeof shift);
+        memset(x, 0, sizeof x);
+        memset(y, 0, sizeof y);
+        ck_assert_int_eq(fr_masked_factor_solve(&pr.dense, pr.W, set, shift, b, x, &pr.c),
+                         FRICREG_OK);
+        ck_assert_int_eq(fr_masked_factor_solve(&scan, U, set, shift, b, y, &pr.c), FRICREG_OK);
+        ck_assert_int_eq(memcmp(x, y, m * sizeof *x), 0);
+        ck_assert_uint_eq(pr.dense.kept, scan.kept);
+    }
+    fr_masked_factor_free(&scan, &pr.c);
+    cholmod_l_free_sparse(&U, &pr.c);
+    pair_close(&pr);
+}
+END_TEST
+
 /* ---- A structure's steps ------------------------------------------------------------------ */
 
 /* bench/membrane_contacts.c in small: a SIDE x SIDE grid of 1 kg nodes, springs of 3e6 N/m
@@ -619,6 +671,7 @@ int main(void)
     tcase_add_test(tc, dense_factor_from_the_kept_complement);
     tcase_add_test(tc, dense_factor_deletes_many_rows_in_blocks);
     tcase_add_test(tc, dense_factor_kept_as_spare);
+    tcase_add_test(tc, dense_fill_packed_equals_the_scan);
     tcase_add_test(tc, structure_steps_equal_in_both_storages);
     tcase_add_test(tc, checkpoint_carries_the_dense_block);
     suite_add_tcase(s, tc);
