@@ -43,6 +43,8 @@
 
 #include <cholmod.h>
 
+#include "block_held.h"
+
 /* The storage of the blocks: chosen by the fill rule (fr_masked_factor_prepare), or forced
  * (the tests compare the two). */
 enum fr_block_storage { FR_BLOCK_CHOSEN = 0, FR_BLOCK_SPARSE, FR_BLOCK_DENSE };
@@ -114,17 +116,5 @@ int fr_masked_factor_solve(struct fr_masked_factor *f, const cholmod_sparse *W,
 
 /* The dense factor held and the spare exchanged (blocks_carried.c saves and restores both). */
 void fr_masked_factor_swap(struct fr_masked_factor *f);
-
-/* Whether the block set[m] with shift[m] (either NULL: none) is the one a factor holds,
- * held_set[m] and held_shift[m] (held 0: none held); and the block kept as held. The factors
- * of the near-stick block (this file's and contact_sparse.c's) refactor only when it moves. */
-int fr_block_is_held(size_t m, int held, const unsigned char *held_set, const double *held_shift,
-                     const unsigned char *set, const double *shift);
-/* Whether set[m] (NULL: none) holds the same rows as held_set[m], whatever the shifts (held 0:
- * none held). */
-int fr_block_holds_rows(size_t m, int held, const unsigned char *held_set,
-                        const unsigned char *set);
-void fr_block_hold(size_t m, unsigned char *held_set, double *held_shift, const unsigned char *set,
-                   const double *shift);
 
 #endif
