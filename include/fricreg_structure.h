@@ -343,7 +343,8 @@ enum fricreg_contact_solver {
     FRICREG_CONTACT_SOLVER_AUTO = 0,  /**< the library's choice: for now the dense path */
     FRICREG_CONTACT_SOLVER_DENSE = 1, /**< a Cholesky factor of the block itself: CHOLMOD's on
                                            W_eff's pattern where it stays sparse, LAPACK's dpotrf
-                                           on the block where it fills (O(|N|^3)) */
+                                           on the block where it fills (O(|N|^3); two m x m
+                                           buffers: the factor held and a spare, since 1.10) */
     FRICREG_CONTACT_SOLVER_SPARSE = 2 /**< in the structure's n unknowns: CHOLMOD's factor of
                                            K_eff + J^T T J, T = diag(1/shift_N) (0 off N) */
 };

@@ -3,7 +3,9 @@
  *
  * Layout, native byte order (the checkpoint is for the same build): a kind byte, then
  *   NONE    nothing (no block held, or K_eff not factored);
- *   DENSE   uint64 order, rows[order] (int64, W's row of each factor row), shift[order], the
+ *   DENSE   a flags byte (1: the current factor held, 2: the spare held, 4: the spare is the
+ *           one kept, masked_factor.h), then each factor held, the current one first:
+ *           uint64 order, rows[order] (int64, W's row of each factor row), shift[order], the
  *           factor U's upper triangle column by column, order (order + 1) / 2 doubles, then
  *           uint64 schur_from and the kept Schur complement's upper triangle of the rows from
  *           there (masked_factor.h), column by column;
@@ -28,7 +30,17 @@ static int kind_of(const fricreg_structure *s)
     if (s->newton.sparse != NULL)
         return s->newton.sparse->held ? SPARSE : NONE;
     const struct fr_masked_factor *f = &s->newton.block;
-    return f->dense && f->held ? DENSE : NONE;
+    return f->dense && (f->held || f->spare.held) ? DENSE : NONE;
+}
+
+enum { CURRENT_HELD = 1, SPARE_HELD = 2, SPARE_KEPT = 4 };
+
+/* f with its spare as the current factor (a shallow copy, for reading). */
+static struct fr_masked_factor spare_of(const struct fr_masked_factor *f)
+{
+    struct fr_masked_factor g = *f;
+    fr_masked_factor_swap(&g);
+    return g;
 }
 
 /* The dense part before schur_from, and the whole with it. */
@@ -44,10 +56,17 @@ static size_t dense_bytes(size_t order, size_t schur_from)
     return dense_head_bytes(order) + sizeof(uint64_t) + q * (q + 1) / 2 * sizeof(double);
 }
 
+/* The flags byte and each factor held. */
+static size_t dense_pair_bytes(const struct fr_masked_factor *f)
+{
+    return 1 + (f->held ? dense_bytes(f->order, f->schur_from) : 0) +
+           (f->spare.held ? dense_bytes(f->spare.order, f->spare.schur_from) : 0);
+}
+
 size_t fr_blocks_carried_size(const fricreg_structure *s)
 {
     switch (kind_of(s)) {
-    case DENSE: return 1 + dense_bytes(s->newton.block.order, s->newton.block.schur_from);
+    case DENSE: return 1 + dense_pair_bytes(&s->newton.block);
     case SPARSE: return 1 + s->m * (1 + sizeof(double));
     default: return 1;
     }
@@ -59,7 +78,7 @@ static unsigned char *put(unsigned char *out, const void *bytes, size_t len)
     return out + len;
 }
 
-static void save_dense(const struct fr_masked_factor *f, unsigned char *out)
+static unsigned char *save_dense(const struct fr_masked_factor *f, unsigned char *out)
 {
     uint64_t order = f->order;
     out = put(out, &order, sizeof order);
@@ -78,6 +97,19 @@ static void save_dense(const struct fr_masked_factor *f, unsigned char *out)
             out = put(out, &f->D[col + row * f->m], sizeof(double));
         out = put(out, &f->schur_diag[col], sizeof(double));
     }
+    return out;
+}
+
+static void save_dense_pair(const struct fr_masked_factor *f, unsigned char *out)
+{
+    *out++ = (unsigned char)((f->held ? CURRENT_HELD : 0) | (f->spare.held ? SPARE_HELD : 0) |
+                             (f->spare_kept ? SPARE_KEPT : 0));
+    if (f->held)
+        out = save_dense(f, out);
+    if (f->spare.held) {
+        struct fr_masked_factor g = spare_of(f);
+        save_dense(&g, out);
+    }
 }
 
 static void save_sparse(const struct fr_contact_sparse *f, unsigned char *out)
@@ -91,7 +123,7 @@ void fr_blocks_carried_save(const fricreg_structure *s, unsigned char out[])
     int kind = kind_of(s);
     out[0] = (unsigned char)kind;
     if (kind == DENSE)
-        save_dense(&s->newton.block, out + 1);
+        save_dense_pair(&s->newton.block, out + 1);
     else if (kind == SPARSE)
         save_sparse(s->newton.sparse, out + 1);
 }
@@ -108,20 +140,31 @@ static int shift_valid(double shift)
     return isfinite(shift) && shift >= 0.0;
 }
 
-/* in[len] (after the kind) as f's held factor: checked whole (distinct rows of W, shifts
- * finite and not negative, a finite nonzero diagonal: dtpqrt may leave it negative), then
- * copied; FRICREG_EINVAL without a change but to f->at, the factorization's scratch. */
-static int restore_dense(struct fr_masked_factor *f, const unsigned char *in, size_t len)
+/* The length of the factor's record at in[len], 0 if it cannot be one. */
+static size_t dense_record_len(const struct fr_masked_factor *f, const unsigned char *in,
+                               size_t len)
 {
     uint64_t order, from;
-    if (!f->dense || len < sizeof order)
-        return FRICREG_EINVAL;
+    if (len < sizeof order)
+        return 0;
     memcpy(&order, in, sizeof order);
     if (order > f->m || len < dense_head_bytes((size_t)order) + sizeof from)
-        return FRICREG_EINVAL;
+        return 0;
     memcpy(&from, in + dense_head_bytes((size_t)order), sizeof from);
-    if (from > order || len != dense_bytes((size_t)order, (size_t)from))
+    size_t n = dense_bytes((size_t)order, (size_t)from);
+    return from <= order && len >= n ? n : 0;
+}
+
+/* in[len], one factor's record, as f's held factor (copy) or only checked: distinct rows of
+ * W, shifts finite and not negative, a finite nonzero diagonal (dtpqrt may leave it
+ * negative); FRICREG_EINVAL without a change but to f->at, the factorization's scratch. */
+static int restore_dense(struct fr_masked_factor *f, const unsigned char *in, size_t len, int copy)
+{
+    uint64_t order, from;
+    if (len == 0 || dense_record_len(f, in, len) != len)
         return FRICREG_EINVAL;
+    memcpy(&order, in, sizeof order);
+    memcpy(&from, in + dense_head_bytes((size_t)order), sizeof from);
     size_t n = (size_t)order;
     const unsigned char *rows = in + sizeof order, *shifts = rows + n * sizeof(int64_t);
     const unsigned char *U = shifts + n * sizeof(double);
@@ -136,6 +179,8 @@ static int restore_dense(struct fr_masked_factor *f, const unsigned char *in, si
             return FRICREG_EINVAL;
         f->at[row] = (SuiteSparse_long)r;
     }
+    if (!copy)
+        return FRICREG_OK;
     memset(f->held_set, 0, f->m);
     memset(f->held_shift, 0, f->m * sizeof *f->held_shift);
     for (size_t r = 0; r < n; r++) {
@@ -158,6 +203,33 @@ static int restore_dense(struct fr_masked_factor *f, const unsigned char *in, si
     f->kept = 0;
     f->deleted = 0;
     f->held = 1;
+    return FRICREG_OK;
+}
+
+/* in[len] (after the kind) as f's two factors (save_dense_pair): both checked, then copied. */
+static int restore_dense_pair(struct fr_masked_factor *f, const unsigned char *in, size_t len)
+{
+    if (!f->dense || len < 1 || in[0] > (CURRENT_HELD | SPARE_HELD | SPARE_KEPT))
+        return FRICREG_EINVAL;
+    int flags = in[0];
+    size_t cur = flags & CURRENT_HELD ? dense_record_len(f, in + 1, len - 1) : 0;
+    size_t spare = len - 1 - cur;
+    if (((flags & CURRENT_HELD) && cur == 0) || (!(flags & SPARE_HELD) && spare != 0) ||
+        ((flags & SPARE_KEPT) && !(flags & SPARE_HELD)))
+        return FRICREG_EINVAL;
+    const unsigned char *at = in + 1 + cur;
+    if (((flags & CURRENT_HELD) && restore_dense(f, in + 1, cur, 0) != FRICREG_OK) ||
+        ((flags & SPARE_HELD) && restore_dense(f, at, spare, 0) != FRICREG_OK))
+        return FRICREG_EINVAL;
+    fr_masked_factor_swap(f);
+    f->held = 0;
+    if (flags & SPARE_HELD)
+        restore_dense(f, at, spare, 1);
+    fr_masked_factor_swap(f);
+    f->held = 0;
+    if (flags & CURRENT_HELD)
+        restore_dense(f, in + 1, cur, 1);
+    f->spare_kept = (flags & SPARE_KEPT) != 0;
     return FRICREG_OK;
 }
 
@@ -188,12 +260,13 @@ int fr_blocks_carried_restore(fricreg_structure *s, const unsigned char in[], si
     switch (in[0]) {
     case DENSE:
         return s->newton.sparse != NULL ? FRICREG_EINVAL
-                                        : restore_dense(&s->newton.block, in + 1, len - 1);
+                                        : restore_dense_pair(&s->newton.block, in + 1, len - 1);
     case SPARSE: return restore_sparse(s, in + 1, len - 1);
     default:
         if (len != 1)
             return FRICREG_EINVAL;
         s->newton.block.held = 0;
+        s->newton.block.spare.held = 0;
         if (s->newton.sparse != NULL)
             s->newton.sparse->held = 0;
         return FRICREG_OK;

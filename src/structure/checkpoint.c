@@ -31,7 +31,7 @@
 #include "structure_internal.h"
 
 #define MAGIC "FRCKPT1" /* 8 bytes with its NUL */
-#define FORMAT 3u /* 2 since 1.8: the near-stick block's factor; 3 since 1.9: auto companions */
+#define FORMAT 4u /* 2 since 1.8: the block's factor; 3 since 1.9: auto companions; 4: its spare */
 #define BYTE_ORDER_MARK 0x01020304u
 #define TYPE_SIZES ((uint32_t)(sizeof(double) | sizeof(size_t) << 8))
 #define HEADER_BYTES (8 + 4 * 4 + 2 * 8)

@@ -7,6 +7,7 @@
 
 #include "base/lapack.h"
 #include "base/sparse_factor.h"
+#include "contact_factor.h"
 #include "fricreg.h"
 #include "masked_factor.h"
 
@@ -34,6 +35,12 @@ void fr_masked_factor_free(struct fr_masked_factor *f, cholmod_common *c)
     cholmod_l_free(f->m, sizeof *f->at, f->at, c);
     cholmod_l_free(f->m, sizeof *f->rows, f->rows, c);
     cholmod_l_free(f->m, sizeof *f->schur_diag, f->schur_diag, c);
+    struct fr_spare_factor *g = &f->spare;
+    cholmod_l_free(f->m * f->m > 0 ? f->m * f->m : 1, sizeof *g->D, g->D, c);
+    cholmod_l_free(f->m, sizeof *g->schur_diag, g->schur_diag, c);
+    cholmod_l_free(f->m, sizeof *g->held_shift, g->held_shift, c);
+    cholmod_l_free(f->m, sizeof *g->rows, g->rows, c);
+    cholmod_l_free(f->m, sizeof *g->held_set, g->held_set, c);
     memset(f, 0, sizeof *f);
 }
 
@@ -111,8 +118,31 @@ static int dense_allocate(struct fr_masked_factor *f, cholmod_common *c)
     f->rows = cholmod_l_malloc(f->m, sizeof *f->rows, c);
     f->qr_work = cholmod_l_malloc(2 * DELETE_NB_MAX * (f->m > 0 ? f->m : 1), sizeof *f->qr_work, c);
     f->schur_diag = cholmod_l_malloc(f->m, sizeof *f->schur_diag, c);
+    struct fr_spare_factor *g = &f->spare;
+    g->D = cholmod_l_malloc(f->m * f->m > 0 ? f->m * f->m : 1, sizeof *g->D, c);
+    g->schur_diag = cholmod_l_malloc(f->m, sizeof *g->schur_diag, c);
+    g->held_shift = cholmod_l_malloc(f->m, sizeof *g->held_shift, c);
+    g->rows = cholmod_l_malloc(f->m, sizeof *g->rows, c);
+    g->held_set = cholmod_l_malloc(f->m, sizeof *g->held_set, c);
     return f->D != NULL && f->at != NULL && f->rows != NULL && f->qr_work != NULL &&
-           f->schur_diag != NULL;
+           f->schur_diag != NULL && g->D != NULL && g->schur_diag != NULL &&
+           g->held_shift != NULL && g->rows != NULL && g->held_set != NULL;
+}
+
+void fr_masked_factor_swap(struct fr_masked_factor *f)
+{
+    struct fr_spare_factor cur = {f->D,        f->schur_diag, f->held_shift, f->rows,
+                                  f->held_set, f->order,      f->schur_from, f->held};
+    f->D = f->spare.D;
+    f->schur_diag = f->spare.schur_diag;
+    f->held_shift = f->spare.held_shift;
+    f->rows = f->spare.rows;
+    f->held_set = f->spare.held_set;
+    f->order = f->spare.order;
+    f->schur_from = f->spare.schur_from;
+    f->held = f->spare.held;
+    f->spare = cur;
+    f->spare_kept = !f->spare_kept;
 }
 
 int fr_masked_factor_prepare(struct fr_masked_factor *f, const cholmod_sparse *W,
@@ -160,38 +190,6 @@ static void fill(struct fr_masked_factor *f, const cholmod_sparse *W, const unsi
             else
                 Ax[q] = i == j ? 1.0 : 0.0;
         }
-    }
-}
-
-int fr_block_is_held(size_t m, int held, const unsigned char *held_set, const double *held_shift,
-                     const unsigned char *set, const double *shift)
-{
-    if (!held)
-        return 0;
-    for (size_t i = 0; i < m; i++) {
-        unsigned char in = set != NULL && set[i];
-        if (in != held_set[i] || (in && (shift ? shift[i] : 0.0) != held_shift[i]))
-            return 0;
-    }
-    return 1;
-}
-
-int fr_block_holds_rows(size_t m, int held, const unsigned char *held_set, const unsigned char *set)
-{
-    if (!held)
-        return 0;
-    for (size_t i = 0; i < m; i++)
-        if ((set != NULL && set[i]) != held_set[i])
-            return 0;
-    return 1;
-}
-
-void fr_block_hold(size_t m, unsigned char *held_set, double *held_shift, const unsigned char *set,
-                   const double *shift)
-{
-    for (size_t i = 0; i < m; i++) {
-        held_set[i] = set != NULL && set[i];
-        held_shift[i] = held_set[i] && shift ? shift[i] : 0.0;
     }
 }
 
@@ -248,7 +246,7 @@ static size_t order_rows(struct fr_masked_factor *f, const unsigned char *set, c
 /* Columns p..k-1 of the upper triangle of W_SS in the factor's order, into D (leading
  * dimension m); the shifts come after the Schur complement (factor_trailing). Entries of W
  * below the diagonal are not read, as CHOLMOD reads an upper (stype 1) W. */
-static void dense_fill(struct fr_masked_factor *f, const cholmod_sparse *W, size_t p, size_t k)
+static void dense_fill_scan(struct fr_masked_factor *f, const cholmod_sparse *W, size_t p, size_t k)
 {
     const SuiteSparse_long *Wp = W->p, *Wi = W->i;
     const double *Wx = W->x;
@@ -267,6 +265,32 @@ static void dense_fill(struct fr_masked_factor *f, const cholmod_sparse *W, size
                 f->D[lo + hi * m] = Wx[q];
         }
     }
+}
+
+/* The same columns where W is packed whole (fr_delassus_packed: entry (i, j), i <= j, at
+ * j (j + 1) / 2 + i): each entry read where it goes, (k^2 - p^2) / 2 reads instead of a pass
+ * over all of W's m^2 / 2 with its rows mapped. The same values: the factor is the same. */
+static void dense_fill_packed(struct fr_masked_factor *f, const cholmod_sparse *W, size_t p,
+                              size_t k)
+{
+    const double *Wx = W->x;
+    for (size_t col = p; col < k; col++) {
+        size_t j = (size_t)f->rows[col];
+        const double *wj = Wx + j * (j + 1) / 2;
+        double *d = f->D + col * f->m;
+        for (size_t r = 0; r <= col; r++) {
+            size_t i = (size_t)f->rows[r];
+            d[r] = i <= j ? wj[i] : Wx[i * (i + 1) / 2 + j];
+        }
+    }
+}
+
+static void dense_fill(struct fr_masked_factor *f, const cholmod_sparse *W, size_t p, size_t k)
+{
+    if (fr_delassus_packed(W))
+        dense_fill_packed(f, W, p, k);
+    else
+        dense_fill_scan(f, W, p, k);
 }
 
 /* Rows p..k-1 of D's upper triangle plus diag(shift) factored by dpotrf. A pivot that is not
@@ -339,25 +363,36 @@ static double trailing_flops(double p, double q)
     return p * p * q + p * q * q + q * q * q / 3.0;
 }
 
-/* Whether the held factor's rows after the first p that stay are cheaper kept by deleting
- * the others (delete_rows: 2 q t^2 flops for q rows deleted before t staying ones) than
- * factored again with the new rows. */
-static int deletion_cheaper(const struct fr_masked_factor *f, const unsigned char *set,
-                            const double *shift, size_t p)
+/* The flops of the block set, shift from the held factor with its first p rows kept: the
+ * rows after them factored again (*again), or those that stay kept by deleting the others
+ * (delete_rows: 2 q t^2 flops for q rows deleted before t staying ones) and the new rows
+ * factored (*keep, infinite where none stays). */
+static void refactor_costs(const struct fr_masked_factor *f, const unsigned char *set,
+                           const double *shift, size_t p, double *again, double *keep)
 {
-    if (!f->held || p == f->order)
-        return 0;
     size_t t = 0, q = 0, k = 0;
-    for (size_t r = p; r < f->order; r++) {
+    for (size_t r = p; f->held && r < f->order; r++) {
         t += stays(f, r, set, shift);
         q += !stays(f, r, set, shift);
     }
     for (size_t i = 0; set && i < f->m; i++)
         k += set[i] != 0;
-    double again = trailing_flops((double)p, (double)(k - p));
-    double keep = 2.0 * (double)q * (double)t * (double)t +
-                  trailing_flops((double)(p + t), (double)(k - p - t));
-    return t > 0 && keep < again;
+    *again = trailing_flops((double)p, (double)(k - p));
+    *keep = t > 0 ? 2.0 * (double)q * (double)t * (double)t +
+                        trailing_flops((double)(p + t), (double)(k - p - t))
+                  : INFINITY;
+}
+
+/* Whether the held factor's rows after the first p that stay are cheaper kept by deleting
+ * the others than factored again with the new rows. */
+static int deletion_cheaper(const struct fr_masked_factor *f, const unsigned char *set,
+                            const double *shift, size_t p)
+{
+    if (!f->held || p == f->order)
+        return 0;
+    double again, keep;
+    refactor_costs(f, set, shift, p, &again, &keep);
+    return keep < again;
 }
 
 /* The held factor without its rows after the first p that leave the block or change their
@@ -401,20 +436,79 @@ static size_t delete_rows(struct fr_masked_factor *f, const unsigned char *set, 
     return p + t;
 }
 
-/* The factor of the block set, shift in f->D (masked_factor.h): from the kept complement where
- * only the last new rows' shifts changed; else its leading rows kept, the rows after them too
- * where deleting the others is cheaper, the rest factored. 0 if not positive definite (then
- * nothing is held). */
+/* The flops dense_refactor spends on the block set, shift from the held factor. */
+static double refactor_flops(const struct fr_masked_factor *f, const unsigned char *set,
+                             const double *shift)
+{
+    if (holds(f, set, shift))
+        return 0.0;
+    if (schur_applies(f, set, shift)) {
+        double q = (double)(f->order - f->schur_from);
+        return q * q * q / 3.0;
+    }
+    double again, keep;
+    refactor_costs(f, set, shift, kept_rows(f, set, shift), &again, &keep);
+    return fmin(again, keep);
+}
+
+/* The spare made the current factor where the block costs fewer flops from it (the kept one
+ * where both cost the same): returns whether it was. */
+static int spare_as_base(struct fr_masked_factor *f, const unsigned char *set, const double *shift)
+{
+    if (!f->spare.held)
+        return 0;
+    double here = f->held ? refactor_flops(f, set, shift) : INFINITY;
+    fr_masked_factor_swap(f);
+    double there = refactor_flops(f, set, shift);
+    if (there < here || (there == here && !f->spare_kept))
+        return 1;
+    fr_masked_factor_swap(f);
+    return 0;
+}
+
+/* The held factor's first n columns, rows and held block copied into the spare and the two
+ * swapped: the factor held before stays intact as the spare, kept (masked_factor.h). */
+static void keep_as_spare(struct fr_masked_factor *f, size_t n)
+{
+    struct fr_spare_factor *g = &f->spare;
+    size_t m = f->m;
+    for (size_t col = 0; col < n; col++)
+        memcpy(g->D + col * m, f->D + col * m, (col + 1) * sizeof *f->D);
+    memcpy(g->rows, f->rows, f->order * sizeof *f->rows);
+    memcpy(g->held_set, f->held_set, m * sizeof *f->held_set);
+    memcpy(g->held_shift, f->held_shift, m * sizeof *f->held_shift);
+    g->order = f->order;
+    g->schur_from = f->order; /* no complement: the copy is factored on at once */
+    g->held = f->held;
+    fr_masked_factor_swap(f);
+}
+
+/* The factor of the block set, shift in f->D (masked_factor.h): from the held factor or the
+ * spare, whichever costs fewer flops; from the kept complement where only the last new rows'
+ * shifts changed; else its leading rows kept, the rows after them too where deleting the
+ * others is cheaper, the rest factored; a kept factor that the block does not extend is left
+ * intact as the spare. 0 if not positive definite (then nothing is held). */
 static int dense_refactor(struct fr_masked_factor *f, const cholmod_sparse *W,
                           const unsigned char *set, const double *shift)
 {
+    f->from_spare = spare_as_base(f, set, shift);
+    int base_kept = !f->spare_kept;
+    f->spare_kept = 0;          /* the factor made from a base is kept unless the base is (below) */
+    if (holds(f, set, shift)) { /* the spare's block: nothing to factor */
+        f->kept = f->order;
+        f->deleted = 0;
+        return 1;
+    }
     if (schur_applies(f, set, shift)) {
         f->held = 0;
         return refactor_from_schur(f, shift);
     }
     size_t p = kept_rows(f, set, shift);
     f->deleted = 0;
-    if (deletion_cheaper(f, set, shift, p))
+    int deleting = deletion_cheaper(f, set, shift, p);
+    if (base_kept && f->held && p < f->order)
+        keep_as_spare(f, deleting ? f->order : p);
+    if (deleting)
         p = delete_rows(f, set, shift, p);
     f->held = 0;
     f->order = order_rows(f, set, shift, p);

@@ -29,13 +29,21 @@
  * rows' Schur complement before their shifts, kept from that factorization: q^3 / 3 flops for
  * its q new rows, not the p^2 q of their products with the p kept ones. A trailing
  * factorization adds the shifts after the complement too, so that both ways give the same
- * factor to the bit. */
+ * factor to the bit.
+ * Two dense factors are held (a second m x m buffer): a block is factored from whichever of the
+ * two costs fewer flops, and a factor that served as that base is kept rather than replaced
+ * where the new block does not hold all its rows (its kept rows copied into the other buffer,
+ * the new factor made there). Why: a stick zone leaves its block and comes back (a row of
+ * contacts in the law's band for an iterate, or slipping for a step), and with one factor each
+ * return factored again all the rows after the first that had left. */
 #ifndef FRICREG_MASKED_FACTOR_H
 #define FRICREG_MASKED_FACTOR_H
 
 #include <stddef.h>
 
 #include <cholmod.h>
+
+#include "block_held.h"
 
 /* The storage of the blocks: chosen by the fill rule (fr_masked_factor_prepare), or forced
  * (the tests compare the two). */
@@ -72,6 +80,17 @@ struct fr_masked_factor {
      * transposed in D's strictly lower part, its diagonal here. */
     size_t schur_from;
     double *schur_diag; /* [m] */
+    /* Dense: the other factor held (above), its fields as the current one's, swapped with them
+     * (fr_masked_factor_swap); spare_kept: it is the one kept when a block replaces the
+     * current one. from_spare: the last factorization started from it. */
+    struct fr_spare_factor {
+        double *D, *schur_diag, *held_shift;
+        SuiteSparse_long *rows;
+        unsigned char *held_set;
+        size_t order, schur_from;
+        int held;
+    } spare;
+    int spare_kept, from_spare;
     /* The block and shifts of the last factorization: a solve on the same ones reuses it
      * (a stick set that holds from one Newton iteration, or one step, to the next). */
     unsigned char *held_set; /* [m] */
@@ -95,16 +114,7 @@ int fr_masked_factor_solve(struct fr_masked_factor *f, const cholmod_sparse *W,
                            const unsigned char *set, const double *shift, const double b[],
                            double x[], cholmod_common *c);
 
-/* Whether the block set[m] with shift[m] (either NULL: none) is the one a factor holds,
- * held_set[m] and held_shift[m] (held 0: none held); and the block kept as held. The factors
- * of the near-stick block (this file's and contact_sparse.c's) refactor only when it moves. */
-int fr_block_is_held(size_t m, int held, const unsigned char *held_set, const double *held_shift,
-                     const unsigned char *set, const double *shift);
-/* Whether set[m] (NULL: none) holds the same rows as held_set[m], whatever the shifts (held 0:
- * none held). */
-int fr_block_holds_rows(size_t m, int held, const unsigned char *held_set,
-                        const unsigned char *set);
-void fr_block_hold(size_t m, unsigned char *held_set, double *held_shift, const unsigned char *set,
-                   const double *shift);
+/* The dense factor held and the spare exchanged (blocks_carried.c saves and restores both). */
+void fr_masked_factor_swap(struct fr_masked_factor *f);
 
 #endif

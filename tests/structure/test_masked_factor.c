@@ -10,6 +10,9 @@
  *     FRICREG_ESINGULAR both ways, x untouched, and the next block is factored afresh;
  *   - the dense factor keeps the leading rows of the last one that a block keeps with their
  *     shifts, and those alone (a sequence of blocks, each against the sparse factor to 1e-10);
+ *   - a factor that served as a base is kept as the spare, and a block that comes back is
+ *     solved from it with nothing factored, bit for bit as before;
+ *   - a W packed whole gives the same factors as one read by a pass over its pattern;
  *   - fricreg_structure's steps on a stiff membrane's edge (W_eff dense, the rule's choice) give
  *     the same forces and displacements with either storage forced, to 1e-10 relative;
  *   - a checkpoint carries the dense block a step holds, its kept complement too. */
@@ -236,7 +239,8 @@ static void kept_block(struct fr_masked_factor *dense, struct fr_masked_factor *
  * against factoring the t rows again: 608 against 1 659, then 1 152 against 4 608), the shifted
  * row then last; where deleting costs more (20 of 27 rows: 1 960 against 114) the rows are
  * factored again; a trailing part that is not positive definite is FRICREG_ESINGULAR, x
- * untouched, and the next block is factored afresh. */
+ * untouched, and the next block is factored from the spare (the factor of the block before
+ * the last but one, kept when the first row left: 24 rows kept by deleting row 0). */
 START_TEST(dense_factor_keeps_its_leading_rows)
 {
     const size_t m = 40;
@@ -273,7 +277,8 @@ START_TEST(dense_factor_keeps_its_leading_rows)
     for (size_t i = 0; i < m; i++)
         ck_assert_double_eq(x[i], -7.5);
     shift[31] = 0.0;
-    kept_block(&pr.dense, &pr.sparse, pr.W, set, shift, 0, 0, &pr.c);
+    kept_block(&pr.dense, &pr.sparse, pr.W, set, shift, 24, 1, &pr.c);
+    ck_assert(pr.dense.from_spare);
     for (size_t i = 1; i <= 20; i++) /* 20 of its 27 rows leave: factored again */
         set[i] = 0;
     kept_block(&pr.dense, &pr.sparse, pr.W, set, shift, 0, 0, &pr.c);
@@ -368,7 +373,8 @@ END_TEST
 /* Many rows deleted at once, as a whole row of an interface starts to slip: of 760 rows, the
  * 400 after the first 300 leave and the last 60 stay, so dtpqrt runs in blocks of 50 (q / 8)
  * where a few rows take 32: the block against CHOLMOD's factor to 1e-10, all 360 staying rows
- * kept, then the 400 back, appended after them. */
+ * kept; then the 400 back, whose block the spare holds (the factor of all 760, kept intact):
+ * nothing factored. */
 START_TEST(dense_factor_deletes_many_rows_in_blocks)
 {
     const size_t m = 760;
@@ -383,8 +389,112 @@ START_TEST(dense_factor_deletes_many_rows_in_blocks)
     kept_block(&pr.dense, &pr.sparse, pr.W, set, shift, 360, 400, &pr.c);
     ck_assert_int_eq(pr.dense.rows[300], 700);
     memset(set + 300, 1, 400);
-    kept_block(&pr.dense, &pr.sparse, pr.W, set, shift, 360, 0, &pr.c);
-    ck_assert_int_eq(pr.dense.rows[360], 300);
+    kept_block(&pr.dense, &pr.sparse, pr.W, set, shift, 760, 0, &pr.c);
+    ck_assert(pr.dense.from_spare);
+    ck_assert_int_eq(pr.dense.rows[360], 360);
+    pair_close(&pr);
+}
+END_TEST
+
+/* x = the dense factor's solve of the block set, shift, for kept_block's b. */
+static void dense_x(struct factor_pair *pr, const unsigned char set[], const double shift[],
+                    double x[])
+{
+    double b[MMAX];
+    for (size_t i = 0; i < pr->dense.m; i++) {
+        b[i] = sin(1.7 * (double)i + 0.3) + 0.2;
+        x[i] = 0.0; /* the rows outside the block are not written */
+    }
+    ck_assert_int_eq(fr_masked_factor_solve(&pr->dense, pr->W, set, shift, b, x, &pr->c),
+                     FRICREG_OK);
+}
+
+/* The spare factor (masked_factor.h): all 40 rows A, factored afresh; rows 10..14 leave (A',
+ * their rows deleted: 6 250 flops against 13 958 again), A's factor kept intact as the spare;
+ * A back: solved from the spare with nothing factored, bit for bit as A's first solve; A'
+ * back the same way (A' now the kept one); rows 20..24 leave A' too (A'', made from A', which
+ * stays as the spare: A dropped) and A back once more, from the spare A' by appending rows
+ * 10..14 (7 042 flops, against 12 333 from A''). Each block also against CHOLMOD's factor to
+ * 1e-10, with the rows kept and deleted counted. */
+START_TEST(dense_factor_kept_as_spare)
+{
+    const size_t m = 40;
+    unsigned long state = 2385;
+    struct factor_pair pr;
+    pair_open(&pr, m, 1.0, &state);
+    unsigned char all[MMAX], some[MMAX], fewer[MMAX];
+    double shift[MMAX] = {0.0}, xa[MMAX], xs[MMAX], x[MMAX];
+    memset(all, 1, m);
+    memcpy(some, all, m);
+    memset(some + 10, 0, 5);
+    memcpy(fewer, some, m);
+    memset(fewer + 20, 0, 5);
+    kept_block(&pr.dense, &pr.sparse, pr.W, all, shift, 0, 0, &pr.c);
+    dense_x(&pr, all, shift, xa);
+    kept_block(&pr.dense, &pr.sparse, pr.W, some, shift, 35, 5, &pr.c);
+    ck_assert(!pr.dense.from_spare && pr.dense.spare.held && pr.dense.spare_kept);
+    dense_x(&pr, some, shift, xs);
+    kept_block(&pr.dense, &pr.sparse, pr.W, all, shift, 40, 0, &pr.c);
+    ck_assert(pr.dense.from_spare);
+    dense_x(&pr, all, shift, x);
+    ck_assert_int_eq(memcmp(x, xa, m * sizeof *x), 0);
+    kept_block(&pr.dense, &pr.sparse, pr.W, some, shift, 35, 0, &pr.c);
+    ck_assert(pr.dense.from_spare);
+    dense_x(&pr, some, shift, x);
+    ck_assert_int_eq(memcmp(x, xs, m * sizeof *x), 0);
+    kept_block(&pr.dense, &pr.sparse, pr.W, fewer, shift, 30, 5, &pr.c);
+    ck_assert(!pr.dense.from_spare && pr.dense.spare_kept);
+    kept_block(&pr.dense, &pr.sparse, pr.W, all, shift, 35, 0, &pr.c);
+    ck_assert(pr.dense.from_spare);
+    pair_close(&pr);
+}
+END_TEST
+
+/* A W packed whole (every entry of its upper triangle stored, as fr_cfactor_build stores a
+ * W_eff that fills) has its blocks' columns read where they go (dense_fill_packed), any other
+ * by a pass over W: the same entries, so the same factors. A sequence of blocks (fresh, grown,
+ * rows deleted inside, shifted rows, one back from the spare) solved both ways, bit for bit,
+ * the second way on the same W marked unsorted (so not packed, to fr_delassus_packed). */
+START_TEST(dense_fill_packed_equals_the_scan)
+{
+    const size_t m = 40;
+    unsigned long state = 6121;
+    struct factor_pair pr;
+    pair_open(&pr, m, 1.0, &state);
+    ck_assert_uint_eq((size_t)((SuiteSparse_long *)pr.W->p)[m], m * (m + 1) / 2);
+    cholmod_sparse *U = cholmod_l_copy_sparse(pr.W, &pr.c);
+    ck_assert_ptr_nonnull(U);
+    U->sorted = 0;
+    struct fr_masked_factor scan = {0};
+    ck_assert_int_eq(fr_masked_factor_prepare(&scan, U, FR_BLOCK_DENSE, &pr.c), FRICREG_OK);
+    unsigned char set[MMAX] = {0};
+    double shift[MMAX] = {0.0}, b[MMAX], x[MMAX], y[MMAX];
+    for (size_t i = 0; i < m; i++)
+        b[i] = cos(2.385 * (double)i);
+    for (int k = 0; k < 6; k++) {
+        if (k == 0)
+            memset(set, 1, 25);
+        else if (k == 1)
+            memset(set, 1, m);
+        else if (k == 2)
+            set[4] = set[17] = set[30] = 0;
+        else if (k == 3)
+            for (size_t i = 33; i < 38; i++)
+                shift[i] = 0.7 + 0.05 * (double)i;
+        else if (k == 4)
+            set[4] = 1;
+        else
+            memset(shift, 0, sizeof shift);
+        memset(x, 0, sizeof x);
+        memset(y, 0, sizeof y);
+        ck_assert_int_eq(fr_masked_factor_solve(&pr.dense, pr.W, set, shift, b, x, &pr.c),
+                         FRICREG_OK);
+        ck_assert_int_eq(fr_masked_factor_solve(&scan, U, set, shift, b, y, &pr.c), FRICREG_OK);
+        ck_assert_int_eq(memcmp(x, y, m * sizeof *x), 0);
+        ck_assert_uint_eq(pr.dense.kept, scan.kept);
+    }
+    fr_masked_factor_free(&scan, &pr.c);
+    cholmod_l_free_sparse(&U, &pr.c);
     pair_close(&pr);
 }
 END_TEST
@@ -465,26 +575,9 @@ static void membrane_run(enum fr_block_storage storage, double (*f)[NCON], doubl
     fricreg_structure_free(s);
 }
 
-/* The dense block a step holds, as a checkpoint carries it (src/structure/blocks_carried.c):
- * the membrane stepped until its held factor keeps a complement (the rows of its last
- * factorization), saved, restored into another that stepped on its own: the same rows, shifts,
- * factor and complement, bit for bit. */
-START_TEST(checkpoint_carries_the_dense_block)
+/* g's held factor equal to f's bit for bit: rows, shifts, factor and kept complement. */
+static void same_factor(const struct fr_masked_factor *f, const struct fr_masked_factor *g)
 {
-    fricreg_structure *s = membrane(), *r = membrane();
-    const struct fr_masked_factor *f = &s->newton.block, *g = &r->newton.block;
-    int step = 0;
-    do
-        ck_assert_int_eq(fricreg_structure_step(s, 0.005), FRICREG_OK);
-    while (++step < STEPS && !(f->dense && f->held && f->schur_from + 1 < f->order));
-    ck_assert_msg(step < STEPS, "no complement of two rows or more kept");
-    for (int k = 0; k < 7; k++)
-        ck_assert_int_eq(fricreg_structure_step(r, 0.005), FRICREG_OK);
-    size_t len = 0;
-    ck_assert_int_eq(fricreg_structure_save(s, NULL, &len), FRICREG_OK);
-    unsigned char *blob = malloc(len);
-    ck_assert_int_eq(fricreg_structure_save(s, blob, &len), FRICREG_OK);
-    ck_assert_int_eq(fricreg_structure_restore(r, blob, len), FRICREG_OK);
     size_t m = f->m, n = f->order;
     ck_assert(g->held);
     ck_assert_uint_eq(g->order, n);
@@ -499,6 +592,36 @@ START_TEST(checkpoint_carries_the_dense_block)
         for (size_t row = f->schur_from; row < col; row++)
             ck_assert(g->D[col + row * m] == f->D[col + row * m]);
     }
+}
+
+/* The dense block a step holds, as a checkpoint carries it (src/structure/blocks_carried.c):
+ * the membrane stepped until its held factor keeps a complement (the rows of its last
+ * factorization) and a spare is held, saved, restored into another that stepped on its own:
+ * the same rows, shifts, factor and complement, bit for bit, of both factors, and the same one
+ * kept. */
+START_TEST(checkpoint_carries_the_dense_block)
+{
+    fricreg_structure *s = membrane(), *r = membrane();
+    const struct fr_masked_factor *f = &s->newton.block, *g = &r->newton.block;
+    int step = 0;
+    do
+        ck_assert_int_eq(fricreg_structure_step(s, 0.005), FRICREG_OK);
+    while (++step < STEPS &&
+           !(f->dense && f->held && f->schur_from + 1 < f->order && f->spare.held));
+    ck_assert_msg(step < STEPS, "no complement of two rows or more kept with a spare");
+    for (int k = 0; k < 7; k++)
+        ck_assert_int_eq(fricreg_structure_step(r, 0.005), FRICREG_OK);
+    size_t len = 0;
+    ck_assert_int_eq(fricreg_structure_save(s, NULL, &len), FRICREG_OK);
+    unsigned char *blob = malloc(len);
+    ck_assert_int_eq(fricreg_structure_save(s, blob, &len), FRICREG_OK);
+    ck_assert_int_eq(fricreg_structure_restore(r, blob, len), FRICREG_OK);
+    same_factor(f, g);
+    ck_assert_int_eq(g->spare_kept, f->spare_kept);
+    struct fr_masked_factor fs = *f, gs = *g; /* their spares, as the current factors */
+    fr_masked_factor_swap(&fs);
+    fr_masked_factor_swap(&gs);
+    same_factor(&fs, &gs);
     free(blob);
     fricreg_structure_free(s);
     fricreg_structure_free(r);
@@ -547,6 +670,8 @@ int main(void)
     tcase_add_test(tc, dense_factor_deletes_rows_inside);
     tcase_add_test(tc, dense_factor_from_the_kept_complement);
     tcase_add_test(tc, dense_factor_deletes_many_rows_in_blocks);
+    tcase_add_test(tc, dense_factor_kept_as_spare);
+    tcase_add_test(tc, dense_fill_packed_equals_the_scan);
     tcase_add_test(tc, structure_steps_equal_in_both_storages);
     tcase_add_test(tc, checkpoint_carries_the_dense_block);
     suite_add_tcase(s, tc);
