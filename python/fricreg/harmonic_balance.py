@@ -317,14 +317,15 @@ class HarmonicBalance:
                     "element_param")
         return value[0]
 
-    def set_newton(self, tol=1e-10, max_iter=50, solver="auto"):
+    def set_newton(self, tol=1e-10, max_iter=50, solver=None):
         """Newton's stopping rule (``fricreg_hb_set_newton``): the largest residual entry at
         most tol times the displacement scale, after at most max_iter iterations a solve. A
         continuation's corrector also stops where it stalls at the solves' rounding, DBL_EPSILON
         times D_h's condition number of that scale (the C function's documentation).
 
-        solver : {"auto", "dense", "capacitance"}
-            How Newton's matrix is solved (``fricreg_hb_set_newton_solver``): ``"dense"``,
+        solver : {None, "auto", "dense", "capacitance"}
+            How Newton's matrix is solved (``fricreg_hb_set_newton_solver``; None: as before,
+            ``"auto"`` at first): ``"dense"``,
             LAPACK's LU of the whole (1.9's); ``"capacitance"``, Woodbury's identity on the rows
             of the elements' Jacobian off its diagonal; ``"auto"``, the capacitance from 512
             unknowns where those rows are at most 0.8 of them. The results agree to rounding.
@@ -336,10 +337,11 @@ class HarmonicBalance:
         MemoryError
             No room for the capacitance.
         """
-        code = choice(_NEWTON_SOLVERS, solver, "solver")
+        code = None if solver is None else choice(_NEWTON_SOLVERS, solver, "solver")
         self._check(lib.fricreg_hb_set_newton(self._hb, as_scalar(tol, "tol"),
                                               as_integer(max_iter, "max_iter")), "set_newton")
-        self._check(lib.fricreg_hb_set_newton_solver(self._hb, code), "set_newton")
+        if code is not None:
+            self._check(lib.fricreg_hb_set_newton_solver(self._hb, code), "set_newton")
 
     def set_continuation(self, ds=0.02, ds_min=1e-6, ds_max=0.1, max_points=2000):
         """The continuation's step control in the scaled arclength

@@ -102,6 +102,8 @@ def test_newton_solvers_agree_to_rounding():
     hb.set_newton(solver="auto")
     assert hb.solve(1.2).q.tobytes() == dense.q.tobytes()
     hb.set_newton(solver="capacitance")
+    hb.set_newton(tol=1e-10)  # the tolerance alone leaves the solver chosen
+    assert hb.solve(1.2).q.tobytes() != dense.q.tobytes()
     np.testing.assert_allclose(hb.solve(1.2).q, dense.q, rtol=0, atol=1e-10 * np.abs(dense.q).max())
     with pytest.raises(fricreg.InputError, match="solver"):
         hb.set_newton(solver="sparse")
