@@ -966,12 +966,17 @@ static Suite *suite(void)
     tcase_add_test(tc, scaling_identity);
     tcase_add_test(tc, sparse_against_dense);
     tcase_add_test(tc, long_chain_shared);
-    tcase_add_test(tc, contact_3d_parameters);
     tcase_add_test(tc, iwan_and_liftoff);
-    tcase_add_test(tc, marched_types);
     tcase_add_test(tc, statuses);
     tcase_add_test(tc, unsupported);
     suite_add_tcase(s, tc);
+    /* the sampled and marched AFTs' backbones, differenced (6.7 s native: thousands of marched
+     * periods) */
+    TCase *marched = tcase_create("marched");
+    tcase_set_timeout(marched, 120);
+    tcase_add_test(marched, contact_3d_parameters);
+    tcase_add_test(marched, marched_types);
+    suite_add_tcase(s, marched);
     return s;
 }
 
