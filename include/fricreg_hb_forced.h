@@ -32,11 +32,16 @@ extern "C" {
  *  a set of inequalities linear in λ), the line is the branch and its end is returned.
  *  Otherwise fricreg_hb_continue_level's continuation from λ = 1e-3 to 1, its points not
  *  stored (the branch of fricreg_hb_continue and its bifurcations are kept), and should that
- *  fail, 1.6's solution at λ = 1 if it had one. Should that fail too (a response homogeneous
- *  in the forcing, e.g. a unilateral spring without gap or preload, whose level branch is a
- *  ray no easier than its end), the continuation in Ω to omega, points not stored, from the
- *  nearest of Ω (1 + d) and Ω / (1 + d), d = 0.05, 0.1, 0.2, 0.4, 0.8, where 1.6's start
- *  converges (since 1.7); on its failure too, 1.6's start's error is returned. With
+ *  fail, 1.6's solution at λ = 1 if it had one. Since 1.10 its correctors are given up after
+ *  8 iterations whose steps have not fallen tenfold (a shorter step follows) and the branch
+ *  where it crawls, 50 accepted steps in a row below 100 ds_min (kink after kink of the 3-D
+ *  contact's sampled AFT: docs/harmonic_balance.md), for that solution
+ *  (fricreg_hb_continue_level follows the branch whole, its correctors to max_iter). Should
+ *  that fail too (a response homogeneous in the forcing, e.g. a unilateral spring without gap or
+ *  preload, whose level branch is a ray no easier than its end), the continuation in Ω to
+ *  omega, points not stored, from the nearest of Ω (1 + d) and Ω / (1 + d), d = 0.05, 0.1,
+ *  0.2, 0.4, 0.8, where 1.6's start converges (since 1.7); on its failure too, 1.6's start's
+ *  error is returned. With
  *  stability on (fricreg_hb_set_stability), a route whose solution is unstable does not end
  *  the start: the solution is held while the later routes (1.6's solution at λ = 1, the
  *  continuation in Ω from a nearby frequency) are tried, and the first stable one is returned

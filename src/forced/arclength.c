@@ -107,6 +107,11 @@ static size_t doubles_back(const fricreg_hb *hb, const struct fr_hb_branch *b, c
     return 0;
 }
 
+/* A step this far within ds_min, accepted again and again, is a crawl (a corrector that
+ * converges only close to the last point, kink after kink): a client that only needs the
+ * branch's end (the start) gives up after crawl_limit such steps. */
+#define CRAWL_DS 100.0
+
 /* A branch that runs back onto its first stretches has come round to where it began: nothing
  * on it precedes the first point, so it is a closed curve (an isola, or a loop of a branch
  * whose start lay on it), not a jump from one part of an open branch onto another. */
@@ -196,6 +201,7 @@ static int follow(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, double
         f->xpts[0] = v.tan[nq];
         f->xpts[1] = fr_hb_det_sign(hb, ld);
     }
+    int crawling = 0; /* accepted steps in a row below CRAWL_DS ds_min */
     for (;;) {
         if (b->count >= hb->max_points)
             return fr_fail(hb, FRICREG_EWORK, "%s: %zu points stored before %s1 = %g", fn, b->count,
@@ -255,6 +261,11 @@ static int follow(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, double
             return fr_hb_store_point(hb, fn, b, p1, v.dir[nq],
                                      b->keep ? f->xpts[(f->npts - 1) * f->xpts_stride + 1] : 0.0,
                                      1);
+        crawling = ds < CRAWL_DS * hb->ds_min ? crawling + 1 : 0;
+        if (b->crawl_limit > 0 && crawling >= b->crawl_limit)
+            return fr_fail(hb, FRICREG_EWORK,
+                           "%s: the branch crawls at %s = %g (%d steps in a row below %g ds_min)",
+                           fn, b->par, hb->qw[nq] * b->ws, crawling, CRAWL_DS);
         size_t onto = b->keep ? doubles_back(hb, b, hb->qw) : 0;
         if (onto > 0 && onto <= CLOSED_STRETCHES)
             return FRICREG_OK; /* once round: the points stored are the whole branch */

@@ -37,6 +37,7 @@
  *     FRICREG_ESINGULAR before a bound of 10 Newton steps would stop the solve. */
 #include <check.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -397,6 +398,76 @@ START_TEST(homogeneous_response_from_a_nearby_frequency)
 }
 END_TEST
 
+/* Two models whose level branch the start leaves for the plain guesses at λ = 1, Ω = 0.8,
+ * H = 3, contact_3d elements to the ground (kt 20, mu 0.25, kn 50, n0 4) on nodes of unit
+ * masses in x, y and the normal z, springs S in x and y and 40 S in z, Rayleigh damping
+ * 0.02/√S K (bench/hb_interface_rom.c and bench/hb_contact_3d_chain.c at one contact):
+ *   - one node (S = 4/π²), forced 0.5 cos Ωt on x, 0.3 sin Ωt on y and 7.5 cos Ωt on z: the
+ *     contact lifts off at λ = 1 (least N −21); near λ = 0.07 its sticks turn to slips whose
+ *     sampled AFT's kinks lie closer than the corrector converges, and the branch crawls
+ *     (4051 Newton iterations in 1.9 before ds_min; since 1.10 left after 50 steps in a row
+ *     within 100 ds_min: about 300);
+ *   - three nodes in a chain ground-0-1-2 (S = 36/π²), the contact on node 1, forced 0.5 cos
+ *     Ωt on x, 0.3 sin Ωt on y and 0.5 cos Ωt on z at node 2: past the first slip the
+ *     corrector contracts by 0.75 an iteration (1212 iterations in 1.9, its failed correctors
+ *     50 each; since 1.10 given up after 8 without a tenfold fall: about 350).
+ * Both end at the plain guesses' solution (Newton from a zero guess), to 1e-8. */
+static int count_iterations(void *user, int64_t iterations, double parameter, double residual)
+{
+    (void)parameter, (void)residual;
+    *(int64_t *)user = iterations;
+    return 0;
+}
+
+static fricreg_hb *contact_nodes(size_t nodes, const double load[3])
+{
+    const double PI = 3.14159265358979323846, S = pow(2.0 * (double)nodes / PI, 2.0);
+    const double p[5] = {20, 0.25, 50, 4, 0}, ks[3] = {S, S, 40 * S};
+    size_t n = 3 * nodes, at = 3 * (nodes / 2); /* the contact's node: the middle one */
+    double M[81] = {0}, K[81] = {0}, J[27] = {0}, pc[9] = {0}, ps[9] = {0};
+    for (size_t i = 0; i < n; i++) {
+        size_t d = i % 3;
+        M[i * n + i] = 1.0;
+        K[i * n + i] += ks[d];
+        if (i >= 3) {
+            K[(i - 3) * n + i - 3] += ks[d];
+            K[i * n + i - 3] = K[(i - 3) * n + i] = -ks[d];
+        }
+    }
+    for (size_t r = 0; r < 3; r++)
+        J[r * n + at + r] = 1.0;
+    pc[n - 3] = load[0], ps[n - 2] = load[1], pc[n - 1] = load[2];
+    fricreg_hb *hb = NULL;
+    ck_assert_int_eq(fricreg_hb_create(n, 1, 3, &hb), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_mass(hb, n, M), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_stiffness(hb, n, K), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_rayleigh(hb, 0.0, 0.02 / sqrt(S)), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_set_excitation(hb, n, pc, ps), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_add_elements(hb, fricreg_element_lookup("contact_3d"), 1, n, J, p),
+                     FRICREG_OK);
+    return hb;
+}
+
+START_TEST(crawling_level_branch_gives_way)
+{
+    const size_t nodes[2] = {1, 3};
+    const double loads[2][3] = {{0.5, 0.3, 7.5}, {0.5, 0.3, 0.5}};
+    const int64_t most[2] = {1000, 700}; /* measured 306 and 346 */
+    fricreg_hb *hb = contact_nodes(nodes[_i], loads[_i]);
+    double q[21], plain[21], zero[21] = {0};
+    int64_t iterations = 0;
+    ck_assert_int_eq(fricreg_hb_set_monitor(hb, count_iterations, &iterations), FRICREG_OK);
+    ck_assert_int_eq(fricreg_hb_solve(hb, 0.8, 21, NULL, q), FRICREG_OK);
+    ck_assert_int_le(iterations, most[_i]);
+    ck_assert_int_eq(fricreg_hb_solve(hb, 0.8, 21, zero, plain), FRICREG_OK);
+    double scale = 0.0, diff = 0.0;
+    for (int j = 0; j < 21; j++)
+        scale = fmax(scale, fabs(plain[j])), diff = fmax(diff, fabs(q[j] - plain[j]));
+    ck_assert_double_le(diff, 1e-8 * scale);
+    fricreg_hb_free(hb);
+}
+END_TEST
+
 START_TEST(bad_input)
 {
     fricreg_hb *hb = oscillator(0.5);
@@ -472,6 +543,7 @@ static Suite *suite(void)
     tcase_add_test(tc, point_solve_follows_the_level);
     tcase_add_test(tc, unstable_start_takes_the_stable_branch);
     tcase_add_test(tc, homogeneous_response_from_a_nearby_frequency);
+    tcase_add_loop_test(tc, crawling_level_branch_gives_way, 0, 2);
     tcase_add_test(tc, bad_input);
     tcase_add_test(tc, singular_start_fails_at_once);
     suite_add_tcase(s, tc);
