@@ -107,10 +107,13 @@ static size_t doubles_back(const fricreg_hb *hb, const struct fr_hb_branch *b, c
     return 0;
 }
 
-/* A step this far within ds_min, accepted again and again, is a crawl (a corrector that
- * converges only close to the last point, kink after kink): a client that only needs the
- * branch's end (the start) gives up after crawl_limit such steps. */
+/* CRAWL_STEPS accepted steps in a row within CRAWL_DS ds_min are a crawl (a corrector that
+ * converges only close to the last point, kink after kink of a sampled AFT: an interface
+ * ROM's contacts turning to a periodic slip took thousands of such steps, then ds_min), which
+ * a branch wanted for its end alone (end_only: the start's) gives up for the start's next
+ * route. The starts of the tests that reach their end take none such. */
 #define CRAWL_DS 100.0
+#define CRAWL_STEPS 50
 
 /* A branch that runs back onto its first stretches has come round to where it began: nothing
  * on it precedes the first point, so it is a closed curve (an isola, or a loop of a branch
@@ -262,7 +265,7 @@ static int follow(fricreg_hb *hb, const char *fn, struct fr_hb_branch *b, double
                                      b->keep ? f->xpts[(f->npts - 1) * f->xpts_stride + 1] : 0.0,
                                      1);
         crawling = ds < CRAWL_DS * hb->ds_min ? crawling + 1 : 0;
-        if (b->crawl_limit > 0 && crawling >= b->crawl_limit)
+        if (b->end_only && crawling >= CRAWL_STEPS)
             return fr_fail(hb, FRICREG_EWORK,
                            "%s: the branch crawls at %s = %g (%d steps in a row below %g ds_min)",
                            fn, b->par, hb->qw[nq] * b->ws, crawling, CRAWL_DS);

@@ -177,8 +177,8 @@ static int corrector_progress(void *user, double rinf)
 
 /* A corrector whose steps have not fallen tenfold after this many iterations (contracting by
  * more than 0.75 an iteration: at a kink, or a Jacobian that changes faster than the steps),
- * on a branch that only its end is wanted from (crawl_limit: the start's), is given up for a
- * shorter step rather than run to max_iter. */
+ * on a branch wanted for its end alone (end_only: the start's), is given up for a shorter
+ * step rather than run to max_iter. */
 #define SLOW_ITERATIONS 8
 #define SLOW_RATIO 0.1
 
@@ -199,7 +199,7 @@ static int corrector_direction(void *user)
         l->b->delta = step;
     else if (l->it == 1 && l->b->delta > 0.0)
         l->b->kappa = step / l->b->delta;
-    if (l->b->crawl_limit > 0 && l->it >= SLOW_ITERATIONS && step > SLOW_RATIO * l->b->delta)
+    if (l->b->end_only && l->it >= SLOW_ITERATIONS && step > SLOW_RATIO * l->b->delta)
         return fr_fail(hb, FRICREG_EWORK,
                        "%s: the corrector's steps fell by less than %g in %d iterations", c->fn,
                        1.0 / SLOW_RATIO, l->it);

@@ -17,7 +17,8 @@ struct fr_hb_branch {
     double omega;    /* a level branch's Ω */
     const char *par; /* the parameter's name in messages */
     int keep;        /* the points are stored (a public continuation), else only counted */
-    int crawl_limit; /* > 0: fail after this many steps in a row below CRAWL_DS ds_min */
+    int end_only;    /* only the branch's end is wanted (the start's): slow correctors and a
+                        crawl are given up (arclength.c, corrector.c) */
     size_t count;    /* the points reached */
     double qs, ws;   /* the scales: y = (q/qs, p/ws) */
     double *yc;      /* [nq + 1] the last point, scaled */

@@ -22,13 +22,6 @@
  * the response, reaches rounding. */
 #define LEVEL_START 1e-3
 
-/* The level's branch given up after this many accepted steps in a row within 100 ds_min
- * (arclength.c's crawl), for the next route: where the branch's corrector converges only next
- * to the last point, kink after kink of a sampled AFT (an interface ROM's contacts turning to
- * a periodic slip: thousands of such steps, then ds_min), the plain guesses at λ = 1 answer
- * in tens of iterations. The starts of the tests that reach λ = 1 take none such. */
-#define CRAWL_STEPS 50
-
 /* Whether the old start's solution q1 at λ = 1 lies on the branch from the linear regime:
  * with q0 the solution at λ = 0 (every element in its regime of no load: stuck, or closed
  * under a preload, or open across a gap), the line q0 + λ (q1 − q0) solves (R) at λ = 1e-3 to
@@ -77,10 +70,8 @@ static int level_start(fricreg_hb *hb, const char *fn, double omega)
         return fr_hb_solve_at(hb, fn, omega, fr_hb_vectors(hb).tn, 1);
     if (status == FRICREG_ENOMEM || hb->stopped)
         return status;
-    struct fr_hb_branch b = {.level = 1,
-                             .omega = omega,
-                             .par = "level",
-                             .crawl_limit = CRAWL_STEPS};
+    /* its end alone is wanted: where it crawls, the plain guesses at λ = 1 answer */
+    struct fr_hb_branch b = {.level = 1, .omega = omega, .par = "level", .end_only = 1};
     status = fr_hb_arclength(hb, fn, &b, LEVEL_START, 1.0, NULL);
     hb->level = 1.0;
     return status;
